@@ -1,0 +1,36 @@
+# Two entry points a fresh machine needs: `make run` and `make test` (see README.md).
+PYTHON ?= python3
+VENV   := .venv
+BIN    := $(VENV)/bin
+STAMP  := $(VENV)/.installed
+PLUGINS := $(wildcard plugins/*/pyproject.toml)
+
+.PHONY: install run test bench clean
+
+$(STAMP): pyproject.toml $(PLUGINS)
+	$(PYTHON) -m venv $(VENV)
+	$(BIN)/pip install --quiet --upgrade pip
+	$(BIN)/pip install --quiet -e '.[test,render]' $(foreach p,$(PLUGINS),-e $(dir $(p)))
+	touch $(STAMP)
+
+install: $(STAMP)
+
+run: $(STAMP)
+	@mkdir -p out
+	@for f in examples/*/*.nc; do \
+	  d=$$(basename $$(dirname $$f)); o=out/$$d-$$(basename $$f); \
+	  echo "== postproc translate $$f --from $$d --to $$d --normalize -o $$o"; \
+	  $(BIN)/postproc translate $$f --from $$d --to $$d --normalize -o $$o || exit 1; \
+	  head -n 12 $$o; echo "   ..."; \
+	done
+	@echo "translated programs are in out/"
+
+test: $(STAMP)
+	$(BIN)/python -m pytest
+
+bench: $(STAMP)
+	$(BIN)/pip install --quiet -r benchmarks/requirements.txt
+	$(BIN)/python benchmarks/run.py
+
+clean:
+	rm -rf $(VENV) out .pytest_cache .hypothesis

@@ -1,0 +1,1 @@
+"""Built-in dialect plugins. Each registers through the ``postproc`` entry-point group like any plugin."""

@@ -1,0 +1,38 @@
+"""Fanuc 0i/30i milling dialect: reader, writer, reading pipeline and capability table."""
+
+from __future__ import annotations
+
+from typing import Callable
+
+from postproc.dialect import Dialect
+from postproc.hookspecs import hookimpl
+from postproc.xmlio import XFactory
+
+from .block_syntax import FanucBlockSyntax
+from .reader import FanucReader
+from .writer import FanucWriter
+
+ALL_MILLING_CYCLES = frozenset({
+    "drill", "drill_dwell", "peck_chip", "peck_deep", "tap", "tap_left", "bore_feed", "bore_stop",
+    "bore_dwell_feed", "fine_bore", "back_bore", "bore_manual",
+})
+
+
+class Fanuc(Dialect):
+    NAME = "fanuc"
+    DESCRIPTION = "Fanuc 0i/30i milling (Custom Macro B not yet read)"
+    READER = FanucReader
+    WRITER = FanucWriter
+    PIPELINE_FILE = "fanuc.xml"
+    NATIVE_CYCLES = ALL_MILLING_CYCLES
+    """G73, G74, G76, G81-G89 all run natively."""
+
+
+@hookimpl
+def postproc_register_dialects(register: Callable[[type], None]) -> None:
+    register(Fanuc)
+
+
+@hookimpl
+def postproc_register_xml(factory: XFactory) -> None:
+    FanucBlockSyntax.reg(factory)

@@ -1,0 +1,288 @@
+"""FanucBlockSyntax: gives a lexed Fanuc block its neutral sections.
+
+It applies the decimal-point rule, checks modal-group conflicts and duplicate addresses, maps G and M
+codes to neutral sections and refuses any word that would otherwise be dropped without meaning.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from postproc.errors import ParseError, ProgramError
+from postproc.ir import (
+    Block, Coolant, CutterCompensation, CycleCall, CycleCancel, DistanceMode, Dwell, Feed, FeedMode,
+    MachineCoordinates, Motion, NativeCode, PathControl, Plane, ProgramControl, ReturnLevel,
+    SpindleControl, SpindleOrientation, SpindleSpeed, ToolChange, ToolLengthOffset, ToolSelect, Units,
+    WorkOffset,
+)
+from postproc.syntax import Context, Syntax
+
+from .codes import G_CODES, M_CODES, NATIVE_G, NATIVE_M, g_key
+
+AXIS_LETTERS = frozenset("XYZABCUVW")
+DECIMAL_LETTERS = frozenset("XYZABCUVWIJKRQ")
+"""Addresses that follow the decimal-point rule (no point: least input increments)."""
+INTEGER_LETTERS = frozenset("NOTHDLP")
+CENTER_AXIS = {"I": "X", "J": "Y", "K": "Z"}
+DIALECT = "fanuc"
+
+
+def spell_g(text: str) -> str:
+    return "G" + text
+
+
+class FanucBlockSyntax(Syntax):
+    """Lexed words -> neutral sections, for Fanuc milling controls."""
+
+    XNAME = "FanucBlockSyntax"
+    __slots__ = ()
+
+    def build(self, block: Block, ctx: Context) -> None:
+        words = block.words
+        if not words:
+            return
+        codes: dict[str, tuple[str, str, object, str]] = {}
+        natives: list[str] = []
+        raw: dict[str, str] = {}
+        mcodes: list[tuple[int, str]] = []
+        for letter, num in words:
+            up = letter.upper() if letter.islower() else letter
+            if up == "G":
+                self._g_code(ctx, block, num, codes, natives)
+            elif up == "M":
+                if "." in num:
+                    raise ParseError(f"M code M{num} takes no decimal point", ctx.at(block, ctx.column_of(block, "M")))
+                mcodes.append((int(num), num))
+            elif up in raw:
+                raise ParseError(f"address {up} appears twice in one block", ctx.at(block, _second_col(block, up)))
+            else:
+                raw[up] = num
+        state = ctx.state
+        if natives:
+            self._native(block, ctx, natives, raw)
+            return
+        units = state.units
+        unit = codes.get("06")
+        if unit is not None:
+            units = unit[2]  # type: ignore[assignment]
+        values = block.values
+        cycle_block = "09" in codes and codes["09"][1] == "cycle" or (
+            state.cycle is not None and "01" not in codes and "09" not in codes)
+        divisor = _divisor(ctx, units)
+        for up, num in raw.items():
+            if up in DECIMAL_LETTERS and not (up == "K" and cycle_block):
+                if "." in num:
+                    values[up] = float(num)
+                elif divisor:
+                    values[up] = int(num) / divisor
+                else:
+                    values[up] = float(int(num))
+            elif up in INTEGER_LETTERS or up == "K":
+                if "." in num:
+                    raise ParseError(f"address {up} takes no decimal point ({up}{num})",
+                                     ctx.at(block, ctx.column_of(block, up)))
+                values[up] = int(num)
+            elif up == "F":
+                values[up] = float(num)
+            elif up == "S":
+                values[up] = float(num) if "." in num else int(num)
+            else:
+                raise ParseError(f"address {up} is not used by the Fanuc milling dialect",
+                                 ctx.at(block, ctx.column_of(block, up)))
+        used = {"N", "O"}
+        self._g_sections(block, ctx, codes, values, used, cycle_block)
+        self._m_sections(block, ctx, mcodes)
+        if "F" in values:
+            block.add(Feed(float(values["F"])))
+            used.add("F")
+        if "S" in values:
+            block.add(SpindleSpeed(float(values["S"])))
+            used.add("S")
+        if "T" in values:
+            block.add(ToolSelect(int(values["T"])))
+            used.add("T")
+        unused = [k for k in values if k not in used]
+        if unused:
+            up = unused[0]
+            raise ProgramError(f"address {up} has no meaning in this block", ctx.at(block, ctx.column_of(block, up)))
+
+    def _g_code(self, ctx: Context, block: Block, num: str, codes: dict[str, Any], natives: list[str]) -> None:
+        key = g_key(num)
+        entry = G_CODES.get(key)
+        if entry is None:
+            if key in NATIVE_G:
+                natives.append(key)
+                return
+            raise ParseError(f"unknown G code G{num}", ctx.at(block, _col_of_word(block, "G", num)))
+        group = entry[0]
+        other = codes.get(group)
+        if other is not None:
+            name = group
+            raise ParseError(f"G codes G{other[3]} and G{num} are both in modal group {name}",
+                             ctx.at(block, _col_of_word(block, "G", num)))
+        if group == "09" and "01" in codes or group == "01" and "09" in codes and codes["09"][1] == "cycle":
+            first = codes.get("01") or codes["09"]
+            if entry[1] == "cycle" or first[1] == "cycle":
+                raise ParseError(f"G{first[3]} and G{num} in one block: a motion code and a canned cycle",
+                                 ctx.at(block, _col_of_word(block, "G", num)))
+        codes[group] = (group, entry[1], entry[2], num)
+
+    def _native(self, block: Block, ctx: Context, natives: list[str], raw: dict[str, str]) -> None:
+        """Keep a block with a code the IR does not model verbatim, tagged with its meaning."""
+        key = natives[0]
+        what = f"G{key} ({NATIVE_G[key]})"
+        block.add(NativeCode(DIALECT, what, block.text or ""))
+        for up, num in raw.items():
+            block.values[up] = float(num) if "." in num else int(num)
+
+    def _g_sections(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],
+                    used: set[str], cycle_block: bool) -> None:
+        state = ctx.state
+        motion_mode: str | None = None
+        home: str | None = None
+        for group, kind, arg, num in codes.values():
+            if kind == "motion":
+                motion_mode = arg
+            elif kind == "plane":
+                block.add(Plane(arg))
+            elif kind == "units":
+                block.add(Units(arg))
+            elif kind == "distance":
+                block.add(DistanceMode(arg))
+            elif kind == "feed_mode":
+                block.add(FeedMode(arg))
+            elif kind == "return":
+                block.add(ReturnLevel(arg))
+            elif kind == "offset":
+                block.add(WorkOffset(arg))
+            elif kind == "path":
+                block.add(PathControl(arg))
+            elif kind == "path_once":
+                block.add(PathControl(arg, True))
+            elif kind == "cycle":
+                block.add(CycleCall(arg))
+                used.update("XYZABCUVWRQPFKL" if ctx.setup.input.repeat_address != "K" else "XYZABCUVWRQPFK")
+            elif kind == "cycle_cancel":
+                block.add(CycleCancel())
+            elif kind == "cutter":
+                if arg != "off" and "D" in values:
+                    used.add("D")
+                block.add(CutterCompensation(arg, values.get("D") if arg != "off" else None))
+            elif kind == "length":
+                if arg != "cancel":
+                    if "H" not in values:
+                        raise ProgramError(f"G{num} needs an offset register H", ctx.at(block, _col_of_word(block, "G", num)))
+                    used.add("H")
+                block.add(ToolLengthOffset(arg, values.get("H") if arg != "cancel" else None))
+            elif kind == "dwell":
+                self._dwell(block, ctx, values, used)
+            elif kind == "home":
+                home = arg
+            elif kind == "machine":
+                block.add(MachineCoordinates())
+        if "CycleCall" in block.sections:
+            return
+        if cycle_block and "CycleCancel" not in block.sections:
+            used.update("RQPFK" + ("L" if ctx.setup.input.repeat_address != "K" else ""))
+        axes = {k: v for k, v in values.items() if k in AXIS_LETTERS and k not in used}
+        if home is not None:
+            block.add(Motion(home, axes))
+            used.update(axes)
+            return
+        if "Dwell" in block.sections and motion_mode is None and not axes:
+            return
+        mode = motion_mode
+        if mode is None and axes:
+            if cycle_block and "CycleCancel" not in block.sections:
+                mode = None
+            elif state.motion is None:
+                raise ProgramError("axis words with no motion mode in force (program G00 or G01 first)",
+                                   ctx.at(block, ctx.column_of(block, next(iter(axes)))))
+            else:
+                mode = state.motion
+        if mode is None and not axes:
+            return
+        used.update(axes)
+        center = None
+        radius = None
+        if mode in ("cw", "ccw"):
+            center = {CENTER_AXIS[k]: float(values[k]) for k in "IJK" if k in values}
+            used.update(k for k in "IJK" if k in values)
+            if "R" in values:
+                radius = float(values["R"])
+                used.add("R")
+                if center:
+                    raise ProgramError("an arc takes either I/J/K or R, not both",
+                                       ctx.at(block, ctx.column_of(block, "R")))
+                center = None
+            elif not center:
+                raise ProgramError("an arc needs a centre (I/J/K) or a radius R",
+                                   ctx.at(block, ctx.column_of(block, "G")))
+        block.add(Motion(mode, {k: float(v) for k, v in axes.items()}, center, radius))
+
+    def _dwell(self, block: Block, ctx: Context, values: dict[str, Any], used: set[str]) -> None:
+        if "P" in values:
+            seconds = int(values["P"]) / 1000.0
+            used.add("P")
+        elif "X" in values:
+            seconds = float(values["X"])
+            used.add("X")
+        else:
+            raise ProgramError("G04 needs a dwell time X (seconds) or P (milliseconds)",
+                               ctx.at(block, ctx.column_of(block, "G")))
+        if seconds < 0:
+            raise ProgramError("a dwell time cannot be negative", ctx.at(block, ctx.column_of(block, "G")))
+        block.add(Dwell(seconds))
+
+    def _m_sections(self, block: Block, ctx: Context, mcodes: list[tuple[int, str]]) -> None:
+        seen: dict[str, str] = {}
+        for number, num in mcodes:
+            entry = M_CODES.get(number)
+            if entry is None:
+                if number in NATIVE_M:
+                    what = f"M{num} ({NATIVE_M[number]})"
+                else:
+                    what = f"M{num} (machine-specific M function)"
+                if "NativeCode" in block.sections:
+                    raise ParseError(f"M{num}: only one machine-specific function per block is supported",
+                                     ctx.at(block, _col_of_word(block, "M", num)))
+                block.add(NativeCode(DIALECT, what, f"M{num}"))
+                continue
+            kind, arg = entry
+            if kind in seen:
+                raise ParseError(f"M codes M{seen[kind]} and M{num} conflict in one block",
+                                 ctx.at(block, _col_of_word(block, "M", num)))
+            seen[kind] = num
+            if kind == "program":
+                block.add(ProgramControl(arg))
+            elif kind == "spindle":
+                block.add(SpindleControl(arg))
+            elif kind == "orient":
+                block.add(SpindleOrientation(ctx.setup.cycles.orient_angle))
+            elif kind == "tool_change":
+                block.add(ToolChange())
+            elif kind == "coolant":
+                block.add(Coolant(arg))
+
+
+def _divisor(ctx: Context, units: str) -> int:
+    """Divisor turning a point-less value into program units (0 for calculator-type input)."""
+    inp = ctx.setup.input
+    if inp.decimal_point == "calculator":
+        return 0
+    base = {"IS-A": 100, "IS-B": 1000, "IS-C": 10000}[inp.increment_system]
+    return base if units == "mm" else base * 10
+
+
+def _col_of_word(block: Block, letter: str, num: str) -> int:
+    text = (block.text or "").upper()
+    target = (letter + num).upper()
+    i = text.find(target)
+    return i + 1 if i >= 0 else 1
+
+
+def _second_col(block: Block, letter: str) -> int:
+    text = (block.text or "").upper()
+    first = text.find(letter)
+    second = text.find(letter, first + 1)
+    return second + 1 if second >= 0 else 1

@@ -1,0 +1,17 @@
+"""The core's own plugin: registers the neutral syntax objects and configuration nodes."""
+
+from __future__ import annotations
+
+from .hookspecs import hookimpl
+from .ir import register_sections
+from .setup import MachineSetup
+from .syntax import Pipeline
+from .syntaxes.modal_state import ModalStateSyntax
+from .xmlio import XFactory
+
+
+@hookimpl
+def postproc_register_xml(factory: XFactory) -> None:
+    register_sections(factory)
+    for cls in (Pipeline, MachineSetup, ModalStateSyntax):
+        cls.reg(factory)

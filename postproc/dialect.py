@@ -1,0 +1,136 @@
+"""The dialect base class: one class per controller with a reader, a writer and capabilities.
+
+As in sqlglot, a dialect overrides only what differs; the base never names a concrete dialect.
+Capabilities are UPPER_CASE class attributes, each documented, and lowering transforms are chosen
+from them (``postproc.lower``).
+"""
+
+from __future__ import annotations
+
+from importlib import resources
+from pathlib import Path
+from typing import ClassVar, Iterable, Iterator, TextIO
+
+from .errors import Diagnostics, Location, PostprocError, UnsupportedError
+from .ir import Block
+from .setup import MachineSetup
+from .syntax import Context, Pipeline, load_pipeline
+
+
+class Reader:
+    """Turns text into blocks with raw words and source lines (no meaning yet)."""
+
+    def __init__(self, ctx: Context) -> None:
+        self.ctx = ctx
+
+    def read(self, lines: Iterable[str]) -> Iterator[Block]:
+        raise NotImplementedError(f"{type(self).__name__} must implement read")
+
+
+class Writer:
+    """Turns blocks into text. Subclasses implement ``write_block``."""
+
+    def __init__(self, ctx: Context, source_dialect: str) -> None:
+        self.ctx = ctx
+        self.source_dialect = source_dialect
+
+    def write(self, blocks: Iterable[Block], out: TextIO) -> None:
+        """Write every block. A block the target cannot express is an error, or with
+        ``--on-unsupported warn`` a warning and the source block written as a comment."""
+        write_block = self.write_block
+        emit = out.write
+        for block in blocks:
+            try:
+                text = write_block(block)
+            except UnsupportedError as err:
+                text = self.unsupported_block(block, err)
+            except PostprocError as err:
+                self.ctx.diagnostics.error(err.located(Location(self.ctx.file, block.line, 1)))
+                continue
+            if text is not None:
+                emit(text)
+        tail = self.finish()
+        if tail:
+            emit(tail)
+
+    def unsupported_block(self, block: Block, err: UnsupportedError) -> str | None:
+        err.located(Location(self.ctx.file, block.line, 1))
+        if self.ctx.on_unsupported == "warn":
+            self.ctx.diagnostics.warn(err.message + "; written as a comment", err.location)
+            return self.comment_out(block)
+        self.ctx.diagnostics.error(err)
+        return None
+
+    def comment_out(self, block: Block) -> str:
+        """The source block as a comment line (for ``--on-unsupported warn``)."""
+        text = (block.text or " ".join(a + n for a, n in block.words)).replace("(", "[").replace(")", "]")
+        return f"(UNSUPPORTED LINE {block.line}: {text.strip()})" + (block.eol or "\n")
+
+    def write_block(self, block: Block) -> str | None:
+        raise NotImplementedError(f"{type(self).__name__} must implement write_block")
+
+    def finish(self) -> str:
+        """Text to append after the last block (e.g. a footer)."""
+        return ""
+
+
+class Dialect:
+    """A controller dialect. Subclasses set NAME and override what differs."""
+
+    NAME: ClassVar[str] = ""
+    DESCRIPTION: ClassVar[str] = ""
+    READER: ClassVar[type[Reader] | None] = None
+    """Reader class, or None for a write-only dialect."""
+    WRITER: ClassVar[type[Writer] | None] = None
+    """Writer class, or None for a read-only dialect."""
+    PIPELINE_FILE: ClassVar[str | None] = None
+    """Name of the reading pipeline XML shipped in the dialect's package."""
+    NATIVE_CYCLES: ClassVar[frozenset[str]] = frozenset()
+    """Neutral names of the canned cycles the controller runs natively."""
+    SPINDLE_ORIENTATION: ClassVar[bool] = True
+    """The controller can stop the spindle at an angle (M19)."""
+    ARCS_R: ClassVar[bool] = True
+    """Arcs may be written with a radius R."""
+    INCREMENTAL: ClassVar[bool] = True
+    """Incremental distance mode exists."""
+    DWELL_UNIT: ClassVar[str] = "seconds"
+    """Unit of the dwell word the writer emits."""
+    CUTTER_COMPENSATION: ClassVar[bool] = True
+    """Cutter radius compensation (G41/G42) exists."""
+    TOOL_LENGTH_OFFSET: ClassVar[bool] = True
+    """Tool length offset (G43/G49) exists."""
+
+    @classmethod
+    def capabilities(cls) -> dict[str, object]:
+        """The capability table: every UPPER_CASE attribute that describes the controller."""
+        skip = {"NAME", "DESCRIPTION", "READER", "WRITER", "PIPELINE_FILE"}
+        table: dict[str, object] = {}
+        for klass in reversed(cls.__mro__):
+            for key, value in vars(klass).items():
+                if key.isupper() and key not in skip and not key.startswith("_"):
+                    table[key] = sorted(value) if isinstance(value, frozenset) else value
+        return table
+
+    @classmethod
+    def pipeline(cls, setup: MachineSetup) -> Pipeline:
+        """The reading pipeline: the set-up's override if it names one, else the dialect's own file."""
+        override = setup.pipeline_path()
+        if override is not None:
+            return load_pipeline(override)
+        if cls.PIPELINE_FILE is None:
+            return Pipeline(cls.NAME, [])
+        module = cls.__module__
+        package = module if _is_package(module) else module.rpartition(".")[0]
+        ref = resources.files(package) / cls.PIPELINE_FILE
+        with resources.as_file(ref) as path:
+            return load_pipeline(Path(path))
+
+    @classmethod
+    def context(cls, file: str, setup: MachineSetup, diagnostics: Diagnostics) -> Context:
+        return Context(file, setup, diagnostics, cls.NAME)
+
+
+def _is_package(module: str) -> bool:
+    import sys
+    mod = sys.modules.get(module)
+    return bool(mod is not None and hasattr(mod, "__path__"))

@@ -1,0 +1,132 @@
+"""One error hierarchy and one error level for reading, lowering, writing and configuration.
+
+Every diagnostic carries a location so the command line can print ``FILE:LINE:COL: error: message``.
+Columns are computed only when a diagnostic is raised (see ``Location``), never on the hot path.
+"""
+
+from __future__ import annotations
+
+import enum
+import sys
+from dataclasses import dataclass
+from typing import TextIO
+
+
+@dataclass(frozen=True, slots=True)
+class Location:
+    """Where a diagnostic points: 1-based line and column in a named file."""
+
+    file: str
+    line: int
+    col: int = 1
+
+    def __str__(self) -> str:
+        return f"{self.file}:{self.line}:{self.col}"
+
+
+class PostprocError(Exception):
+    """Root of every error postproc reports to a user."""
+
+    severity = "error"
+
+    def __init__(self, message: str, location: Location | None = None) -> None:
+        super().__init__(message)
+        self.message = message
+        self.location = location
+
+    def located(self, location: Location) -> "PostprocError":
+        """Attach a location if the error has none yet (errors raised deep inside know no file)."""
+        if self.location is None:
+            self.location = location
+        return self
+
+    def __str__(self) -> str:
+        where = f"{self.location}: " if self.location else ""
+        return f"{where}{self.severity}: {self.message}"
+
+
+class ParseError(PostprocError):
+    """Malformed input text: a bad word, an unclosed comment, a conflicting code."""
+
+
+class ProgramError(PostprocError):
+    """Well-formed text that makes no sense: a cycle without its depth, a contradictory level."""
+
+
+class UnsupportedError(PostprocError):
+    """The target dialect or machine cannot express a construct."""
+
+
+class ConfigError(PostprocError):
+    """A machine set-up, pipeline file or template is invalid."""
+
+
+class UsageError(PostprocError):
+    """Wrong command-line usage (exit status 2)."""
+
+
+class ErrorLevel(enum.Enum):
+    """How diagnostics are handled; shared by reading, lowering and writing (as in sqlglot)."""
+
+    IGNORE = "ignore"
+    WARN = "warn"
+    RAISE = "raise"
+    """Collect every error, keep going, raise them together at the end."""
+    IMMEDIATE = "immediate"
+    """Raise at the first error."""
+
+
+class ErrorList(PostprocError):
+    """Several collected errors, raised together."""
+
+    def __init__(self, errors: list[PostprocError]) -> None:
+        super().__init__(f"{len(errors)} error(s)")
+        self.errors = errors
+
+    def __str__(self) -> str:
+        return "\n".join(str(e) for e in self.errors)
+
+
+class Warning_(PostprocError):
+    """A diagnostic that does not change the exit status."""
+
+    severity = "warning"
+
+
+class Diagnostics:
+    """Collects errors and warnings according to an ``ErrorLevel``.
+
+    Readers and writers report through one instance, so a run prints every problem it found
+    (up to ``max_errors``) instead of stopping at the first.
+    """
+
+    def __init__(self, level: ErrorLevel = ErrorLevel.RAISE, max_errors: int = 50,
+                 warn_stream: TextIO | None = None) -> None:
+        self.level = level
+        self.max_errors = max_errors
+        self.errors: list[PostprocError] = []
+        self.warnings: list[PostprocError] = []
+        self._warn_stream = warn_stream
+
+    def error(self, err: PostprocError) -> None:
+        if self.level is ErrorLevel.IMMEDIATE:
+            raise err
+        if self.level is ErrorLevel.IGNORE:
+            return
+        if self.level is ErrorLevel.WARN:
+            self.warn(err.message, err.location)
+            return
+        self.errors.append(err)
+        if len(self.errors) >= self.max_errors:
+            raise ErrorList(self.errors)
+
+    def warn(self, message: str, location: Location | None = None) -> None:
+        w = Warning_(message, location)
+        self.warnings.append(w)
+        stream = self._warn_stream if self._warn_stream is not None else sys.stderr
+        print(w, file=stream)
+
+    def check(self) -> None:
+        """Raise the collected errors, if any."""
+        if self.errors:
+            raise ErrorList(self.errors)

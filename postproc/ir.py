@@ -1,0 +1,322 @@
+"""The intermediate representation: a program is a stream of ``Block``s.
+
+A block keeps its source line, its raw text and words (so unchanged blocks are written back byte for
+byte) and a dict of typed, dialect-neutral sections. No dialect's spelling lives here: a section says
+"rapid motion" or "return to the initial level", never "G00" or "G98". Dialect-specific constructs with
+no neutral meaning travel as ``NativeCode`` tagged with their dialect.
+
+Blocks are plain ``__slots__`` objects without reference cycles and sections are created only for what a
+block actually programs: a million-block program must stream without pressure on the garbage collector.
+"""
+
+from __future__ import annotations
+
+from typing import Any, ClassVar, Iterator
+
+from lxml import etree
+
+from .xmlio import DEFAULT, XAttr, XFactory, XmlNode, decode, encode, where
+
+AXES = ("X", "Y", "Z", "A", "B", "C", "U", "V", "W")
+"""Axis letters a neutral motion may carry, in output order."""
+
+
+class Section(XmlNode):
+    """A typed part of a block. ``KEY`` is its slot in ``Block.sections`` (one of each per block)."""
+
+    __slots__ = ()
+    KEY: ClassVar[str] = ""
+
+
+def _simple(name: str, *attrs: XAttr, doc: str) -> type[Section]:
+    """Make a small section class with the given attributes (one slot each)."""
+    cls = type(name, (Section,), {
+        "__slots__": tuple(a.name for a in attrs), "XNAME": name, "KEY": name,
+        "XATTRS": attrs, "__doc__": doc,
+    })
+    return cls
+
+
+Sequence = _simple("Sequence", XAttr("number", int), doc="Block (sequence) number, N on most controllers.")
+BlockDelete = _simple("BlockDelete", XAttr("level", int, 1), doc="Optional block skip; level 1 is the plain '/'.")
+ProgramStart = _simple("ProgramStart", XAttr("number", int, None), XAttr("name", str, None),
+                       doc="Program number or name (O-number, %name).")
+TapeMark = _simple("TapeMark", doc="Tape start/end marker line.")
+Units = _simple("Units", XAttr("system", str), doc="Length unit of the program: 'mm' or 'inch'.")
+Plane = _simple("Plane", XAttr("plane", str), doc="Working plane: 'XY', 'ZX' or 'YZ'.")
+DistanceMode = _simple("DistanceMode", XAttr("mode", str), doc="'absolute' or 'incremental' coordinates.")
+WorkOffset = _simple("WorkOffset", XAttr("index", int), doc="Work coordinate system, 1 = first (G54 on Fanuc).")
+FeedMode = _simple("FeedMode", XAttr("mode", str), doc="'per_min', 'per_rev' or 'inverse_time'.")
+Feed = _simple("Feed", XAttr("value", float), doc="Feed rate in program units per minute (or per rev).")
+SpindleSpeed = _simple("SpindleSpeed", XAttr("rpm", float), doc="Spindle speed.")
+SpindleControl = _simple("SpindleControl", XAttr("direction", str),
+                         doc="Spindle on clockwise ('cw'), counter-clockwise ('ccw') or 'stop'.")
+SpindleOrientation = _simple("SpindleOrientation", XAttr("angle", float, 0.0),
+                             doc="Oriented spindle stop at an angle in degrees.")
+ToolSelect = _simple("ToolSelect", XAttr("number", int), doc="Tool number prepared or selected.")
+ToolChange = _simple("ToolChange", doc="Change to the selected tool.")
+ToolLengthOffset = _simple("ToolLengthOffset", XAttr("mode", str), XAttr("register", int, None),
+                           doc="'positive', 'negative' or 'cancel', with the offset register.")
+CutterCompensation = _simple("CutterCompensation", XAttr("mode", str), XAttr("register", int, None),
+                             doc="'off', 'left' or 'right', with the offset register.")
+Coolant = _simple("Coolant", XAttr("mode", str), doc="'flood', 'mist' or 'off'.")
+Dwell = _simple("Dwell", XAttr("seconds", float), doc="Dwell for a time in seconds.")
+ProgramControl = _simple("ProgramControl", XAttr("kind", str),
+                         doc="'stop', 'optional_stop', 'end' or 'end_rewind'.")
+PathControl = _simple("PathControl", XAttr("mode", str), XAttr("one_shot", bool, False),
+                      doc="'exact_stop' or 'cutting' path control.")
+ReturnLevel = _simple("ReturnLevel", XAttr("level", str),
+                      doc="Canned-cycle return: 'initial' level or 'r' level.")
+CycleCancel = _simple("CycleCancel", doc="Cancel the active canned cycle.")
+MachineCoordinates = _simple("MachineCoordinates", doc="One-shot: this block's motion is in machine coordinates.")
+CycleCall = _simple("CycleCall", XAttr("kind", str),
+                    doc="A canned cycle programmed in this block, by neutral name (e.g. 'drill', 'back_bore').")
+
+
+class Comments(Section):
+    """The comments written in a block, in order (without delimiters)."""
+
+    XNAME = KEY = "Comments"
+    __slots__ = ("texts",)
+
+    def __init__(self, texts: list[str]) -> None:
+        self.texts = texts
+
+    @classmethod
+    def from_xml(cls, el: etree._Element) -> "Comments":
+        return cls([c.text or "" for c in el if c.tag == "Text"])
+
+    def make_xml_source(self, base_dir: str = ".", rel_file: str = "", exhibition_only: bool = False) -> etree._Element:
+        el = etree.Element(self.XNAME)
+        for t in self.texts:
+            etree.SubElement(el, "Text").text = t
+        return el
+
+    def _key(self) -> tuple[Any, ...]:
+        return (tuple(self.texts),)
+
+
+def _axes_from_xml(el: etree._Element) -> dict[str, float]:
+    return {k: float(v) for k, v in el.attrib.items()}
+
+
+def _axes_to_xml(parent: etree._Element, tag: str, axes: dict[str, float]) -> None:
+    child = etree.SubElement(parent, tag)
+    for k, v in axes.items():
+        child.set(k, repr(float(v)))
+
+
+class Motion(Section):
+    """A programmed move: mode 'rapid', 'linear', 'cw', 'ccw', or 'home'/'home2' (return to the first or
+    second reference point through the programmed intermediate point), axis words as programmed.
+    ``mode`` is None only for a block that repeats the active canned cycle at a new position.
+
+    ``axes`` are in program units and follow the block's distance mode; ``center`` holds the arc
+    centre offsets from the start point (per plane axis letter X/Y/Z) and ``radius`` the R form.
+    """
+
+    XNAME = KEY = "Motion"
+    __slots__ = ("mode", "axes", "center", "radius")
+
+    def __init__(self, mode: str | None, axes: dict[str, float], center: dict[str, float] | None = None,
+                 radius: float | None = None) -> None:
+        self.mode = mode
+        self.axes = axes
+        self.center = center
+        self.radius = radius
+
+    @classmethod
+    def from_xml(cls, el: etree._Element) -> "Motion":
+        axes, center = {}, None
+        for c in el:
+            if c.tag == "Axes":
+                axes = _axes_from_xml(c)
+            elif c.tag == "Center":
+                center = _axes_from_xml(c)
+            elif isinstance(c.tag, str):
+                raise ValueError(f"unexpected <{c.tag}>")
+        r = el.get("radius")
+        return cls(el.get("mode"), axes, center, None if r is None else float(r))
+
+    def make_xml_source(self, base_dir: str = ".", rel_file: str = "", exhibition_only: bool = False) -> etree._Element:
+        el = etree.Element(self.XNAME)
+        if self.mode is not None:
+            el.set("mode", self.mode)
+        if self.radius is not None:
+            el.set("radius", repr(self.radius))
+        _axes_to_xml(el, "Axes", self.axes)
+        if self.center is not None:
+            _axes_to_xml(el, "Center", self.center)
+        return el
+
+    def _key(self) -> tuple[Any, ...]:
+        return (self.mode, self.axes, self.center, self.radius)
+
+    def __repr__(self) -> str:
+        return f"Motion({self.mode!r}, {self.axes!r}, center={self.center!r}, radius={self.radius!r})"
+
+
+class NativeCode(Section):
+    """A construct with no neutral meaning, kept verbatim for its own dialect (e.g. ISG ``#CYL``).
+
+    It round-trips unchanged within ``dialect`` and is an unsupported construct everywhere else.
+    """
+
+    XNAME = KEY = "NativeCode"
+    __slots__ = ("dialect", "what", "text")
+    XATTRS = (XAttr("dialect"), XAttr("what"), XAttr("text"))
+
+    def __init__(self, dialect: str, what: str, text: str) -> None:
+        self.dialect = dialect
+        self.what = what
+        self.text = text
+
+
+SIMPLE_SECTIONS: tuple[type[Section], ...] = (
+    Sequence, BlockDelete, ProgramStart, TapeMark, Units, Plane, DistanceMode, WorkOffset, FeedMode, Feed,
+    SpindleSpeed, SpindleControl, SpindleOrientation, ToolSelect, ToolChange, ToolLengthOffset,
+    CutterCompensation, Coolant, Dwell, ProgramControl, PathControl, ReturnLevel, CycleCancel,
+    MachineCoordinates, CycleCall,
+)
+
+
+class Block:
+    """One block of a program. Not an ``XmlNode`` subclass only to stay lean; it serialises the same way.
+
+    ``text`` is the source line without its end-of-line (``eol``), or None once the block was changed
+    and must be generated from its sections. ``words`` are (letter, number text) pairs as written;
+    ``values`` the numbers they mean once the reading dialect applied its rules (e.g. Fanuc's decimal
+    point rule), keyed by upper-case letter for every address but G and M.
+    """
+
+    XNAME = "Block"
+    __slots__ = ("line", "text", "eol", "words", "values", "sections")
+
+    def __init__(self, line: int, text: str | None, eol: str = "\n",
+                 words: list[tuple[str, str]] | None = None) -> None:
+        self.line = line
+        self.text = text
+        self.eol = eol
+        self.words = words if words is not None else []
+        self.values: dict[str, float | int] = {}
+        self.sections: dict[str, Section] = {}
+
+    def add(self, section: Section) -> Section:
+        self.sections[section.KEY] = section
+        return section
+
+    def get(self, key: str) -> Any:
+        return self.sections.get(key)
+
+    def changed(self) -> None:
+        """Mark the block as rewritten: writers must generate it from its sections."""
+        self.text = None
+
+    def __eq__(self, other: object) -> bool:
+        if not isinstance(other, Block):
+            return NotImplemented
+        return (self.line, self.text, self.eol, self.words, self.values, self.sections) == (
+            other.line, other.text, other.eol, other.words, other.values, other.sections)
+
+    def __repr__(self) -> str:
+        return f"Block(line={self.line}, text={self.text!r}, sections={list(self.sections.values())!r})"
+
+    @classmethod
+    def from_xml(cls, el: etree._Element, factory: XFactory | None = None) -> "Block":
+        factory = factory or DEFAULT
+        text = el.get("text")
+        block = cls(int(el.get("line", "0")), text, decode_eol(el.get("eol", "LF")))
+        for child in el:
+            if not isinstance(child.tag, str):
+                continue
+            if child.tag == "Word":
+                letter, num = child.get("letter", ""), child.get("text", "")
+                block.words.append((letter, num))
+                if "value" in child.attrib:
+                    block.values[letter.upper()] = decode(float if child.get("kind") == "float" else int,
+                                                          child.get("value", ""))
+            else:
+                section = factory.create(child)
+                if not isinstance(section, Section):
+                    from .errors import ConfigError
+                    raise ConfigError(f"<{child.tag}> is not a block section", where(child))
+                block.add(section)
+        return block
+
+    def make_xml_source(self, base_dir: str = ".", rel_file: str = "", exhibition_only: bool = False) -> etree._Element:
+        el = etree.Element(self.XNAME, line=str(self.line))
+        if self.text is not None:
+            el.set("text", self.text)
+        if self.eol != "\n":
+            el.set("eol", encode_eol(self.eol))
+        seen: set[str] = set()
+        for letter, num in self.words:
+            w = etree.SubElement(el, "Word", letter=letter, text=num)
+            key = letter.upper()
+            if key in self.values and key not in seen:
+                seen.add(key)
+                v = self.values[key]
+                w.set("kind", "float" if isinstance(v, float) else "int")
+                w.set("value", encode(v))
+        for section in self.sections.values():
+            el.append(section.make_xml_source(base_dir, rel_file, exhibition_only))
+        return el
+
+
+_EOLS = {"\n": "LF", "\r\n": "CRLF", "\r": "CR", "": "none"}
+_EOLS_BACK = {v: k for k, v in _EOLS.items()}
+
+
+def encode_eol(eol: str) -> str:
+    return _EOLS[eol]
+
+
+def decode_eol(name: str) -> str:
+    if name not in _EOLS_BACK:
+        raise ValueError(f"unknown end of line {name!r}")
+    return _EOLS_BACK[name]
+
+
+def register_sections(factory: XFactory | None = None) -> None:
+    """Register every core section with ``factory``; idempotent."""
+    for cls in iter_sections():
+        cls.reg(factory)
+
+
+def iter_sections() -> Iterator[type[Section]]:
+    yield from (*SIMPLE_SECTIONS, Comments, Motion, NativeCode, CompoundMotion)
+
+
+class CompoundMotion(Section):
+    """The explicit motion a construct stands for (a canned cycle's rapids, feeds, dwells, spindle
+    actions), in execution order. Moves inside are absolute, in program units."""
+
+    XNAME = KEY = "CompoundMotion"
+    __slots__ = ("term", "items")
+
+    def __init__(self, term: str, items: list[Section]) -> None:
+        self.term = term
+        self.items = items
+
+    @classmethod
+    def from_xml(cls, el: etree._Element) -> "CompoundMotion":
+        items = []
+        for child in el:
+            if isinstance(child.tag, str):
+                item = DEFAULT.create(child)
+                if not isinstance(item, Section):
+                    raise ValueError(f"<{child.tag}> is not a section")
+                items.append(item)
+        return cls(el.get("term", ""), items)
+
+    def make_xml_source(self, base_dir: str = ".", rel_file: str = "", exhibition_only: bool = False) -> etree._Element:
+        el = etree.Element(self.XNAME, term=self.term)
+        for item in self.items:
+            el.append(item.make_xml_source(base_dir, rel_file, exhibition_only))
+        return el
+
+    def _key(self) -> tuple[Any, ...]:
+        return (self.term, tuple(self.items))
+
+    def __repr__(self) -> str:
+        return f"CompoundMotion({self.term!r}, {self.items!r})"

@@ -1,0 +1,65 @@
+"""The plugin manager: loads the ``postproc`` entry points lazily and collects dialects.
+
+Nothing here names a concrete dialect; built-ins arrive through their entry points like any plugin.
+"""
+
+from __future__ import annotations
+
+import functools
+from typing import Iterable
+
+import pluggy
+
+from . import hookspecs
+from .dialect import Dialect
+from .errors import UsageError
+from .ir import register_sections
+from .xmlio import DEFAULT, XFactory
+
+PROJECT = "postproc"
+
+
+class Registry:
+    """Dialects and XML node classes contributed by the loaded plugins."""
+
+    def __init__(self, pm: pluggy.PluginManager, factory: XFactory) -> None:
+        self.pm = pm
+        self.factory = factory
+        self.dialects: dict[str, type[Dialect]] = {}
+        pm.hook.postproc_register_dialects(register=self._register_dialect)
+        pm.hook.postproc_register_xml(factory=factory)
+
+    def _register_dialect(self, cls: type) -> None:
+        if not (isinstance(cls, type) and issubclass(cls, Dialect) and cls.NAME):
+            raise TypeError(f"{cls!r} is not a named postproc Dialect")
+        known = self.dialects.get(cls.NAME)
+        if known is not None and known is not cls:
+            raise TypeError(f"dialect {cls.NAME!r} registered twice ({known.__module__}, {cls.__module__})")
+        self.dialects[cls.NAME] = cls
+
+    def dialect(self, name: str) -> type[Dialect]:
+        try:
+            return self.dialects[name]
+        except KeyError:
+            known = ", ".join(sorted(self.dialects)) or "none"
+            raise UsageError(f"unknown dialect {name!r} (installed: {known})") from None
+
+
+def make_plugin_manager(extra: Iterable[object] = (), entry_points: bool = True) -> pluggy.PluginManager:
+    pm = pluggy.PluginManager(PROJECT)
+    pm.add_hookspecs(hookspecs)
+    from . import core_plugin
+    pm.register(core_plugin, name="postproc.core")
+    if entry_points:
+        pm.load_setuptools_entrypoints(PROJECT)
+    for plugin in extra:
+        pm.register(plugin)
+    pm.check_pending()
+    return pm
+
+
+@functools.cache
+def default_registry() -> Registry:
+    """The registry of every installed plugin, built on first use."""
+    register_sections(DEFAULT)
+    return Registry(make_plugin_manager(), DEFAULT)

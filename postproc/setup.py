@@ -1,0 +1,233 @@
+"""Machine set-up: the parameters of one controller installation, validated by pydantic, kept as XML.
+
+A set-up file groups parameters in elements (``<Input>``, ``<Output>``, ``<Cycles>``, ``<Templates>``);
+attributes use the camelCase aliases of the pydantic fields. Loading validates at this boundary (with
+the element's line in every message); the per-block path then reads plain attributes.
+``config dump`` writes a loaded set-up back in canonical form, byte-identical for canonical files.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any, ClassVar, Literal
+
+from lxml import etree
+from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator
+
+from .errors import ConfigError, Location
+from .xmlio import XFactory, XmlNode, parse_xml_file, where
+
+
+def _camel(name: str) -> str:
+    head, *rest = name.split("_")
+    return head + "".join(p.title() for p in rest)
+
+
+class _Group(BaseModel):
+    """A group of parameters stored as the attributes of one element."""
+
+    model_config = ConfigDict(alias_generator=_camel, populate_by_name=True, extra="forbid",
+                              validate_assignment=True, frozen=False)
+    TAG: ClassVar[str] = ""
+
+
+class InputSettings(_Group):
+    TAG = "Input"
+    decimal_point: Literal["least-increment", "calculator"] = "least-increment"
+    """How a value written without a decimal point is read: Fanuc's least input increment (X10 =
+    0.010 mm on IS-B) or calculator-type input (parameter 3401#0 DPI: X10 = 10 mm)."""
+    increment_system: Literal["IS-A", "IS-B", "IS-C"] = "IS-B"
+    machine_type: Literal["mill", "lathe"] = "mill"
+    repeat_address: Literal["K", "L", "K+L"] = "K"
+    """Which address counts canned-cycle repeats (0i/30i: K; 15i and older: L)."""
+
+    def increment(self, units: str) -> float:
+        """Least input increment in program units."""
+        mm = {"IS-A": 0.01, "IS-B": 0.001, "IS-C": 0.0001}[self.increment_system]
+        return mm if units == "mm" else mm / 10.0
+
+
+class OutputSettings(_Group):
+    TAG = "Output"
+    normalize: bool = False
+    """Write every block from its words with explicit decimal points instead of copying it."""
+    decimals: int = Field(3, ge=0, le=6)
+    inch_decimals: int = Field(4, ge=0, le=7)
+    renumber_start: int = Field(0, ge=0)
+    """0 keeps the block numbers as written; otherwise renumber from this value."""
+    renumber_step: int = Field(10, ge=1)
+    leading_zero: bool = True
+    """Write 0.5 rather than .5."""
+
+
+class CycleSettings(_Group):
+    TAG = "Cycles"
+    peck_retract: float = Field(0.5, gt=0)
+    """G73 retract d after each peck, mm (Fanuc parameter 5114)."""
+    peck_clearance: float = Field(0.5, gt=0)
+    """G83 re-approach clearance d above the previous bottom, mm (Fanuc parameter 5115)."""
+    shift_direction: Literal["+X", "-X", "+Y", "-Y"] = "+X"
+    """Direction of the G76/G87 tool shift by Q (Fanuc parameters 5101#4/#5)."""
+    orient_angle: float = 0.0
+    back_boring_levels: Literal["seed", "manual"] = "seed"
+    """G87 level convention. 'seed': rapid down to Z (bottom), cut up to R. 'manual' (Fanuc manual):
+    rapid down to R (below the part), cut up to Z."""
+    expand: str = ""
+    """Cycles to expand even where the target runs them natively (comma-separated neutral names or
+    'all')."""
+    orientation: Literal["error", "m19", "stop"] = "error"
+    """How a target without oriented spindle stop handles one: fail, emit M19 anyway, or program stop
+    for the operator."""
+
+    def expanded(self) -> frozenset[str]:
+        return frozenset(p.strip() for p in self.expand.split(",") if p.strip())
+
+
+class MachineSettings(_Group):
+    TAG = "Machine"
+    axes: str = "XYZ"
+    start_x: float = 0.0
+    start_y: float = 0.0
+    start_z: float = 0.0
+    """Position (mm, work coordinates) assumed at program start for toolpath simulation."""
+
+    @model_validator(mode="after")
+    def _axes_known(self) -> "MachineSettings":
+        bad = set(self.axes) - set("XYZABCUVW")
+        if bad or len(set(self.axes)) != len(self.axes):
+            raise ValueError(f"axes must be distinct letters from XYZABCUVW, got {self.axes!r}")
+        return self
+
+
+class Templates(BaseModel):
+    """jinja2 templates (rendered sandboxed) for the program header and footer."""
+
+    header: str | None = None
+    footer: str | None = None
+
+
+GROUPS: tuple[type[_Group], ...] = (InputSettings, OutputSettings, CycleSettings, MachineSettings)
+
+
+class MachineSetup(XmlNode):
+    """A controller set-up: dialect, pipeline override and parameter groups."""
+
+    XNAME = "MachineSetup"
+    __slots__ = ("name", "dialect", "pipeline", "input", "output", "cycles", "machine", "templates", "source")
+
+    def __init__(self, name: str = "default", dialect: str | None = None, pipeline: str | None = None,
+                 input: InputSettings | None = None, output: OutputSettings | None = None,
+                 cycles: CycleSettings | None = None, machine: MachineSettings | None = None,
+                 templates: Templates | None = None, source: str | None = None) -> None:
+        self.name = name
+        self.dialect = dialect
+        self.pipeline = pipeline
+        """Path of a pipeline XML relative to the set-up file's folder, replacing the dialect's own."""
+        self.input = input or InputSettings()
+        self.output = output or OutputSettings()
+        self.cycles = cycles or CycleSettings()
+        self.machine = machine or MachineSettings()
+        self.templates = templates or Templates()
+        self.source = source
+
+    def _key(self) -> tuple[Any, ...]:
+        return (self.name, self.dialect, self.pipeline, self.input, self.output, self.cycles,
+                self.machine, self.templates)
+
+    def __repr__(self) -> str:
+        return f"MachineSetup(name={self.name!r}, dialect={self.dialect!r})"
+
+    def pipeline_path(self) -> Path | None:
+        if self.pipeline is None:
+            return None
+        base = Path(self.source).parent if self.source else Path(".")
+        return base / self.pipeline
+
+    @classmethod
+    def from_xml(cls, el: etree._Element) -> "MachineSetup":
+        kwargs: dict[str, Any] = {}
+        by_tag = {g.TAG: g for g in GROUPS}
+        attr_of = {InputSettings: "input", OutputSettings: "output", CycleSettings: "cycles",
+                   MachineSettings: "machine"}
+        for child in el:
+            if not isinstance(child.tag, str):
+                continue
+            if child.tag == "Templates":
+                kwargs["templates"] = _templates_from_xml(child)
+                continue
+            group = by_tag.get(child.tag)
+            if group is None:
+                raise ConfigError(f"unknown element <{child.tag}> in <MachineSetup>", where(child))
+            if attr_of[group] in kwargs:
+                raise ConfigError(f"<{child.tag}> appears twice", where(child))
+            kwargs[attr_of[group]] = _group_from_xml(group, child)
+        unknown = set(el.attrib) - {"name", "dialect", "pipeline"}
+        if unknown:
+            raise ConfigError(f"<MachineSetup> has unknown attribute(s) {', '.join(sorted(unknown))}", where(el))
+        return cls(name=el.get("name", "default"), dialect=el.get("dialect"), pipeline=el.get("pipeline"),
+                   source=el.getroottree().docinfo.URL, **kwargs)
+
+    def make_xml_source(self, base_dir: str = ".", rel_file: str = "", exhibition_only: bool = False) -> etree._Element:
+        el = etree.Element(self.XNAME, name=self.name)
+        if self.dialect:
+            el.set("dialect", self.dialect)
+        if self.pipeline:
+            el.set("pipeline", self.pipeline)
+        for group in (self.input, self.output, self.cycles, self.machine):
+            values = group.model_dump(by_alias=True, exclude_defaults=True)
+            if values:
+                child = etree.SubElement(el, group.TAG)
+                for key, value in values.items():
+                    child.set(key, _attr_text(value))
+        if self.templates.header is not None or self.templates.footer is not None:
+            t = etree.SubElement(el, "Templates")
+            for tag, text in (("Header", self.templates.header), ("Footer", self.templates.footer)):
+                if text is not None:
+                    etree.SubElement(t, tag).text = text
+        return el
+
+
+def _attr_text(value: Any) -> str:
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, float) and value.is_integer():
+        return repr(value)
+    return str(value)
+
+
+def _group_from_xml(group: type[_Group], el: etree._Element) -> _Group:
+    if len([c for c in el if isinstance(c.tag, str)]):
+        raise ConfigError(f"<{el.tag}> takes attributes only", where(el))
+    raw: dict[str, Any] = {}
+    for key, value in el.attrib.items():
+        raw[key] = {"true": True, "false": False}.get(value, value)
+    try:
+        return group.model_validate(raw)
+    except ValidationError as exc:
+        first = exc.errors()[0]
+        field_name = ".".join(str(p) for p in first["loc"]) or el.tag
+        msg = first["msg"]
+        if first["type"] == "extra_forbidden":
+            msg = "unknown parameter"
+        raise ConfigError(f"<{el.tag}> {field_name}: {msg}", where(el)) from None
+
+
+def _templates_from_xml(el: etree._Element) -> Templates:
+    values: dict[str, str] = {}
+    for child in el:
+        if not isinstance(child.tag, str):
+            continue
+        if child.tag not in ("Header", "Footer"):
+            raise ConfigError(f"unknown element <{child.tag}> in <Templates>", where(child))
+        values[child.tag.lower()] = child.text or ""
+    return Templates(**values)
+
+
+def load_setup(path: str | Path, factory: XFactory | None = None) -> MachineSetup:
+    """Load and validate a machine set-up file."""
+    root = parse_xml_file(path)
+    if root.tag != MachineSetup.XNAME:
+        raise ConfigError(f"expected <MachineSetup>, found <{root.tag}>", Location(str(path), root.sourceline or 1, 1))
+    setup = MachineSetup.from_xml(root)
+    setup.source = str(path)
+    return setup

@@ -1,0 +1,226 @@
+"""The one XML factory registry and the one safe lxml parser.
+
+Every IR section and every syntax object is an ``XmlNode``: it has an element name (``XNAME``), a
+constructor from an lxml element (``from_xml``), ``make_xml_source(base_dir, rel_file, exhibition_only)``
+and an idempotent ``reg(factory)``. Simple nodes declare their attributes with ``XAttr`` descriptors
+(as python-docx's oxml does) instead of hand-writing ``el.get(...)`` in every class.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any, Callable, ClassVar, Iterator, TypeVar
+
+from lxml import etree
+
+from .errors import ConfigError, Location
+
+_PARSER = etree.XMLParser(
+    resolve_entities=False, no_network=True, load_dtd=False, dtd_validation=False,
+    huge_tree=False, remove_comments=False, remove_blank_text=True,
+)
+"""No entity resolution, no network, no DTD, no huge trees: hostile XML cannot reach out or blow up."""
+
+MAX_XML_BYTES = 64 * 1024 * 1024
+
+T = TypeVar("T", bound="XmlNode")
+
+
+def parse_xml_bytes(data: bytes, file: str) -> etree._Element:
+    """Parse untrusted XML into an element, or raise a located ``ConfigError``."""
+    if len(data) > MAX_XML_BYTES:
+        raise ConfigError(f"XML file is larger than {MAX_XML_BYTES} bytes", Location(file, 1, 1))
+    try:
+        tree = etree.ElementTree(etree.fromstring(data, _PARSER, base_url=file))
+    except etree.XMLSyntaxError as exc:
+        line, col = exc.position if exc.position else (1, 1)
+        raise ConfigError(f"malformed XML: {exc.msg}", Location(file, line or 1, (col or 0) + 1)) from None
+    if tree.docinfo.doctype:
+        raise ConfigError("a DOCTYPE is not allowed in postproc XML", Location(file, 1, 1))
+    root = tree.getroot()
+    for el in root.iter():
+        if isinstance(el, etree._Entity):
+            raise ConfigError("entity references are not allowed", Location(file, el.sourceline or 1, 1))
+    return root
+
+
+def parse_xml_file(path: str | Path) -> etree._Element:
+    p = Path(path)
+    try:
+        data = p.read_bytes()
+    except OSError as exc:
+        raise ConfigError(f"cannot read {p}: {exc.strerror}", Location(str(p), 1, 1)) from None
+    return parse_xml_bytes(data, str(p))
+
+
+def to_bytes(el: etree._Element) -> bytes:
+    """The canonical text of a postproc XML file: UTF-8, declaration, two-space indent."""
+    etree.indent(el, space="  ")
+    return etree.tostring(el, pretty_print=True, xml_declaration=True, encoding="UTF-8")
+
+
+def where(el: etree._Element, file: str | None = None) -> Location:
+    """Location of an element for diagnostics (the file is stamped on the tree by ``XFactory.load``)."""
+    src = file or el.getroottree().docinfo.URL or "<xml>"
+    return Location(str(src), el.sourceline or 1, 1)
+
+
+class XFactory:
+    """Maps element names to constructors. ``reg`` on a node class is idempotent."""
+
+    def __init__(self) -> None:
+        self._ctors: dict[str, Callable[[etree._Element], Any]] = {}
+        self._classes: dict[str, type] = {}
+
+    def register(self, cls: type["XmlNode"]) -> None:
+        known = self._classes.get(cls.XNAME)
+        if known is cls:
+            return
+        if known is not None:
+            raise ConfigError(f"element name {cls.XNAME!r} registered twice ({known.__name__}, {cls.__name__})")
+        self._classes[cls.XNAME] = cls
+        self._ctors[cls.XNAME] = cls.from_xml
+
+    def create(self, el: etree._Element) -> Any:
+        tag = el.tag if isinstance(el.tag, str) else ""
+        ctor = self._ctors.get(tag)
+        if ctor is None:
+            raise ConfigError(f"unknown element <{tag}>", where(el))
+        try:
+            return ctor(el)
+        except ConfigError:
+            raise
+        except (ValueError, KeyError, TypeError) as exc:
+            raise ConfigError(f"invalid <{tag}>: {exc}", where(el)) from None
+
+    def children(self, el: etree._Element) -> Iterator[Any]:
+        for child in el:
+            if isinstance(child.tag, str):
+                yield self.create(child)
+
+    def names(self) -> list[str]:
+        return sorted(self._classes)
+
+    def classes(self) -> list[type]:
+        return [self._classes[n] for n in self.names()]
+
+
+DEFAULT = XFactory()
+
+
+class XAttr:
+    """Declares one XML attribute of a node: Python name, type, optional default and XML name."""
+
+    __slots__ = ("name", "kind", "default", "xml")
+
+    def __init__(self, name: str, kind: type = str, default: Any = ..., xml: str | None = None) -> None:
+        self.name = name
+        self.kind = kind
+        self.default = default
+        self.xml = xml or name
+
+    def parse(self, el: etree._Element) -> Any:
+        raw = el.get(self.xml)
+        if raw is None:
+            if self.default is ...:
+                raise ConfigError(f"<{el.tag}> needs attribute {self.xml!r}", where(el))
+            return self.default
+        try:
+            return decode(self.kind, raw)
+        except ValueError:
+            raise ConfigError(f"<{el.tag}> attribute {self.xml}={raw!r} is not a valid "
+                              f"{self.kind.__name__}", where(el)) from None
+
+    def emit(self, el: etree._Element, value: Any) -> None:
+        if value is None or (self.default is not ... and value == self.default):
+            return
+        el.set(self.xml, encode(value))
+
+
+def decode(kind: type, raw: str) -> Any:
+    if kind is bool:
+        if raw not in ("true", "false"):
+            raise ValueError(raw)
+        return raw == "true"
+    if kind is float:
+        return float(raw)
+    if kind is int:
+        return int(raw)
+    return raw
+
+
+def encode(value: Any) -> str:
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, float):
+        return repr(value)
+    return str(value)
+
+
+class XmlNode:
+    """Base of every XML-serialisable object. Subclasses list their attributes as ``XAttr``s.
+
+    Nodes with children override ``from_xml`` and ``make_xml_source``; simple nodes need neither.
+    """
+
+    XNAME: ClassVar[str] = ""
+    __slots__ = ()
+
+    XATTRS: ClassVar[tuple[XAttr, ...]] = ()
+    """The node's attributes, in XML order; each is also a slot of the same name."""
+
+    @classmethod
+    def xattrs(cls) -> tuple[XAttr, ...]:
+        return cls.XATTRS
+
+    def __init__(self, *args: Any, **kwargs: Any) -> None:
+        """Assign the declared attributes by position or name; hot-path nodes write their own."""
+        attrs = self.XATTRS
+        if len(args) > len(attrs):
+            raise TypeError(f"{type(self).__name__} takes at most {len(attrs)} arguments")
+        for attr, value in zip(attrs, args):
+            setattr(self, attr.name, value)
+        for attr in attrs[len(args):]:
+            if attr.name in kwargs:
+                setattr(self, attr.name, kwargs.pop(attr.name))
+            elif attr.default is ...:
+                raise TypeError(f"{type(self).__name__} needs {attr.name!r}")
+            else:
+                setattr(self, attr.name, attr.default)
+        if kwargs:
+            raise TypeError(f"{type(self).__name__} has no attribute(s) {sorted(kwargs)}")
+
+    @classmethod
+    def from_xml(cls: type[T], el: etree._Element) -> T:
+        return cls(**{a.name: a.parse(el) for a in cls.xattrs()})
+
+    def make_xml_source(self, base_dir: str = ".", rel_file: str = "", exhibition_only: bool = False) -> etree._Element:
+        """Serialise to an element. ``base_dir``/``rel_file`` let nodes that own files store them
+        relative to the configuration folder; ``exhibition_only`` suppresses writing such files."""
+        el = etree.Element(self.XNAME)
+        for attr in self.xattrs():
+            attr.emit(el, self._xvalue(attr.name))
+        return el
+
+    def _xvalue(self, name: str) -> Any:
+        return getattr(self, name)
+
+    @classmethod
+    def reg(cls, factory: XFactory | None = None) -> None:
+        """Register this class's constructor with ``factory`` (the default one if None). Idempotent."""
+        (factory or DEFAULT).register(cls)
+
+    def __eq__(self, other: object) -> bool:
+        if type(other) is not type(self):
+            return NotImplemented
+        return self._key() == other._key()  # type: ignore[attr-defined]
+
+    def __hash__(self) -> int:
+        return hash((type(self), repr(self._key())))
+
+    def _key(self) -> tuple[Any, ...]:
+        return tuple(getattr(self, a.name) for a in self.xattrs())
+
+    def __repr__(self) -> str:
+        inner = ", ".join(f"{a.name}={getattr(self, a.name)!r}" for a in self.xattrs())
+        return f"{type(self).__name__}({inner})"
