@@ -95,6 +95,8 @@ def program(blocks: int, cache: Path) -> Path:
     digest = hashlib.sha1(Path(generate.__file__).read_bytes()).hexdigest()[:10]
     path = cache / f"fanuc-{blocks}-{digest}.nc"
     if not path.exists():
+        for stale in cache.glob(f"fanuc-{blocks}-*.nc"):  # from an older generate.py
+            stale.unlink()
         tmp = path.with_suffix(".tmp")
         with open(tmp, "w", encoding="ascii", newline="\n") as out:
             generate.write(blocks, out)
@@ -131,7 +133,8 @@ def bench_size(blocks: int, cache: Path, work: Path, pygcode_max: int,
     out = work / "out.nc"
     rows.append(measure(PLAIN, [py, str(HERE / "plainloop.py"), str(src), str(out)],
                         blocks, repeats))
-    rows.append(measure(OURS, [py, str(HERE / "plainloop.py"), str(src), str(out)],
+    rows.append(measure(OURS, [py, "-m", "postproc", "translate", str(src), "-o", str(out),
+                               "--from", "fanuc", "--to", "fanuc", "--normalize"],
                         blocks, repeats))
     out.unlink(missing_ok=True)
     return rows
