@@ -29,12 +29,34 @@ class Section(XmlNode):
 
 
 def _simple(name: str, *attrs: XAttr, doc: str) -> type[Section]:
-    """Make a small section class with the given attributes (one slot each)."""
-    cls = type(name, (Section,), {
+    """Make a small section class with the given attributes (one slot each).
+
+    Sections with one attribute get a direct ``__init__``: they are created for most blocks
+    (a block number, a feed) and the generic keyword-matching one costs too much per block.
+    """
+    namespace: dict[str, Any] = {
         "__slots__": tuple(a.name for a in attrs), "XNAME": name, "KEY": name,
         "XATTRS": attrs, "__doc__": doc,
-    })
-    return cls
+    }
+    if len(attrs) == 1:
+        namespace["__init__"] = _one_attribute_init(attrs[0])
+    return type(name, (Section,), namespace)
+
+
+def _one_attribute_init(attr: XAttr) -> Any:
+    slot = attr.name
+    default = attr.default
+
+    def __init__(self: Section, value: Any = default, **named: Any) -> None:
+        if named:
+            if set(named) != {slot}:
+                raise TypeError(f"{type(self).__name__} has no attribute(s) {sorted(set(named) - {slot})}")
+            value = named[slot]
+        if value is ...:
+            raise TypeError(f"{type(self).__name__} needs {slot!r}")
+        object.__setattr__(self, slot, value)
+
+    return __init__
 
 
 Sequence = _simple("Sequence", XAttr("number", int), doc="Block (sequence) number, N on most controllers.")

@@ -8,12 +8,17 @@ and its line (sqlglot's generator order). Dialects override the code tables and 
 
 from __future__ import annotations
 
+import functools
+import re
 from typing import Any, Callable, ClassVar
 
 from .errors import Location, UnsupportedError
 from .ir import Block, CompoundMotion, Motion, Section
 from .syntax import Context
 from .dialect import Writer
+
+MAX_PLACES = 6
+"""Most decimal places any written number carries (0.001 um; finer than any controller's increment)."""
 
 SECTION_ORDER = (
     "BlockDelete", "Sequence", "MachineCoordinates", "PathControl", "Plane", "Units", "DistanceMode",
@@ -68,9 +73,16 @@ class WordWriter(Writer):
 
     # -- numbers -----------------------------------------------------------------------------------
     def number(self, value: float) -> str:
-        """A length or feed with an explicit decimal point, trailing zeros dropped ('10.', '0.5')."""
+        """A length or feed with an explicit decimal point, trailing zeros dropped ('10.', '0.5').
+
+        Rounds to the output decimals, but never silently: a value that would move by more than
+        half a micrometre (or 0.00002 in) keeps up to ``MAX_PLACES`` places instead.
+        """
         places = self.decimals if self.units == "mm" else self.inch_decimals
-        text = f"{value:.{places}f}".rstrip("0")
+        text = f"{value:.{places}f}"
+        if abs(float(text) - value) > 5e-7:
+            text = f"{value:.{MAX_PLACES}f}"
+        text = text.rstrip("0")
         if text == "-0.":
             text = "0."
         if not self.leading_zero:
@@ -111,36 +123,37 @@ class WordWriter(Writer):
     def normalized(self, block: Block) -> str:
         """Rewrite a block from its words: explicit decimal points, optional renumbering."""
         values = block.values
+        sections = block.sections
+        if "TapeMark" in sections:
+            return "%"
         parts: list[str] = []
-        if "BlockDelete" in block.sections:
-            level = block.sections["BlockDelete"].level  # type: ignore[attr-defined]
-            parts.append("/" if level == 1 else f"/{level}")
-        has_words = False
+        skip = sections.get("BlockDelete")
+        if skip is not None:
+            parts.append("/" if skip.level == 1 else f"/{skip.level}")  # type: ignore[attr-defined]
+        renumber = self.renumber
+        canonical = self._canonical
+        number = self.number
         for letter, num in block.words:
-            up = letter.upper()
-            if up == "N":
-                if self.renumber:
-                    continue
-                parts.append("N" + num)
-                continue
-            has_words = True
-            if up in ("G", "M"):
-                parts.append(up + num)
+            up = _UPPER[letter]
+            if up == "N" and renumber:
                 continue
             value = values.get(up)
-            if isinstance(value, float):
-                parts.append(up + self.number(value))
+            if value.__class__ is float and not canonical(num):
+                parts.append(up + number(value))  # type: ignore[arg-type]
             else:
                 parts.append(up + num)
-        if self.renumber and has_words and "ProgramStart" not in block.sections:
-            parts.insert(1 if parts and parts[0].startswith("/") else 0, f"N{self.renumber}")
-            self.renumber += self.renumber_step
-        comments = block.sections.get("Comments")
+        if renumber and block.words and "ProgramStart" not in sections:
+            parts.insert(1 if skip is not None else 0, f"N{renumber}")
+            self.renumber = renumber + self.renumber_step
+        comments = sections.get("Comments")
         if comments is not None:
             parts.extend(self.comment(t) for t in comments.texts)  # type: ignore[attr-defined]
-        if "TapeMark" in block.sections:
-            parts = ["%"]
         return " ".join(parts)
+
+    def _canonical(self, num: str) -> bool:
+        """True when a number as written is already explicit and exact: keep its text (and skip a float
+        round trip). Digits the user wrote are never rounded away by normalising."""
+        return _canonical_re(MAX_PLACES, self.leading_zero).fullmatch(num) is not None
 
     def generate(self, block: Block) -> str:
         """Generate a block (and any lines a compound motion adds) from its sections."""
@@ -358,6 +371,18 @@ class WordWriter(Writer):
             raise UnsupportedError(f"{s.what} from {s.dialect} has no equivalent in {self.DIALECT}",
                                    Location(self.ctx.file, block.line, 1))
         return [s.text]
+
+
+_UPPER = {c: c.upper() for c in "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"}
+
+
+@functools.cache
+def _canonical_re(places: int, leading_zero: bool) -> re.Pattern[str]:
+    """Numbers already in ``number()``'s form: explicit point, no trailing zeros, at most ``places``."""
+    frac = rf"(?:\d{{0,{places - 1}}}[1-9])?" if places > 0 else ""
+    whole = r"(?:0|[1-9]\d*)" if leading_zero else r"(?:[1-9]\d*)?"
+    zero = "0." if leading_zero else r"0\."
+    return re.compile(rf"(?!-0\.$)(?!{zero}$)-?{whole}\.{frac}|0\.")
 
 
 def _snake(key: str) -> str:

@@ -23,6 +23,9 @@ AXIS_LETTERS = frozenset("XYZABCUVW")
 DECIMAL_LETTERS = frozenset("XYZABCUVWIJKRQ")
 """Addresses that follow the decimal-point rule (no point: least input increments)."""
 INTEGER_LETTERS = frozenset("NOTHDLP")
+_PLAIN_LETTERS = frozenset("XYZABCUVWNOFST")
+"""Letters of a block the fast path handles (no I/J/K/R/Q/P/H/D/L, which need context)."""
+_UPPER = {c: c.upper() for c in "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"}
 CENTER_AXIS = {"I": "X", "J": "Y", "K": "Z"}
 DIALECT = "fanuc"
 
@@ -46,7 +49,7 @@ class FanucBlockSyntax(Syntax):
         raw: dict[str, str] = {}
         mcodes: list[tuple[int, str]] = []
         for letter, num in words:
-            up = letter.upper() if letter.islower() else letter
+            up = _UPPER[letter]
             if up == "G":
                 self._g_code(ctx, block, num, codes, natives)
             elif up == "M":
@@ -60,6 +63,9 @@ class FanucBlockSyntax(Syntax):
         state = ctx.state
         if natives:
             self._native(block, ctx, natives, raw)
+            return
+        if not codes and not mcodes and state.cycle is None and raw.keys() <= _PLAIN_LETTERS:
+            self._plain(block, ctx, raw)
             return
         units = state.units
         unit = codes.get("06")
@@ -105,6 +111,48 @@ class FanucBlockSyntax(Syntax):
         if unused:
             up = unused[0]
             raise ProgramError(f"address {up} has no meaning in this block", ctx.at(block, ctx.column_of(block, up)))
+
+    def _plain(self, block: Block, ctx: Context, raw: dict[str, str]) -> None:
+        """The common CAM block: axis words, maybe N/F/S/T, no codes, no active cycle.
+
+        Same meaning as the general path, with the per-block work cut down to what such a block needs.
+        """
+        values = block.values
+        sections = block.sections
+        axes: dict[str, float] = {}
+        divisor = -1
+        for up, num in raw.items():
+            if up in AXIS_LETTERS:
+                if "." in num:
+                    value = float(num)
+                else:
+                    if divisor < 0:
+                        divisor = _divisor(ctx, ctx.state.units)
+                    value = int(num) / divisor if divisor else float(int(num))
+                values[up] = axes[up] = value
+            elif up == "F":
+                values["F"] = value = float(num)
+                sections["Feed"] = Feed(value)
+            elif up == "N" or up == "O":
+                values[up] = int(num)
+            elif up == "S":
+                values["S"] = speed = float(num) if "." in num else int(num)
+                sections["SpindleSpeed"] = SpindleSpeed(float(speed))
+            elif "." in num:
+                raise ParseError(f"address {up} takes no decimal point ({up}{num})",
+                                 ctx.at(block, ctx.column_of(block, up)))
+            else:
+                values["T"] = tool = int(num)
+                sections["ToolSelect"] = ToolSelect(tool)
+        if axes:
+            mode = ctx.state.motion
+            if mode is None:
+                raise ProgramError("axis words with no motion mode in force (program G00 or G01 first)",
+                                   ctx.at(block, ctx.column_of(block, next(iter(axes)))))
+            if mode == "cw" or mode == "ccw":
+                raise ProgramError("an arc needs a centre (I/J/K) or a radius R",
+                                   ctx.at(block, ctx.column_of(block, next(iter(axes)))))
+            sections["Motion"] = Motion(mode, axes)
 
     def _g_code(self, ctx: Context, block: Block, num: str, codes: dict[str, Any], natives: list[str]) -> None:
         key = g_key(num)

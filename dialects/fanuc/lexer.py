@@ -13,9 +13,9 @@ from postproc.errors import Location, ParseError
 from postproc.ir import BlockDelete, Block, Comments, ProgramStart, Sequence, TapeMark
 
 NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)"
-_WORD = re.compile(r"([A-Za-z])[ \t]*(" + NUMBER + ")")
-_WORDS_ONLY = re.compile(r"(?:[ \t]*[A-Za-z][ \t]*" + NUMBER + r")*[ \t]*;?[ \t]*")
-_BAD_WORD = re.compile(r"[A-Za-z][ \t]*[-+.\d]*")
+WORD = re.compile(r"([A-Za-z])[ \t]*(" + NUMBER + ")")
+WORDS_ONLY = re.compile(r"(?:[ \t]*[A-Za-z][ \t]*" + NUMBER + r")*[ \t]*;?[ \t]*")
+_BADWORD = re.compile(r"[A-Za-z][ \t]*[-+.\d]*")
 _SKIP = re.compile(r"[ \t]*/(\d?)")
 _COMMENT = re.compile(r"\(([^()]*)\)")
 
@@ -47,13 +47,13 @@ def lex_block(file: str, number: int, text: str, eol: str) -> Block:
         if m:
             block.add(BlockDelete(int(m.group(1) or 1)))
             code = " " * m.end() + code[m.end():]
-    if not _WORDS_ONLY.fullmatch(code):
+    if not WORDS_ONLY.fullmatch(code):
         stripped = code.strip()
         if stripped == "%":
             block.add(TapeMark())
             return block
         raise ParseError(*_explain(file, number, code))
-    words = _WORD.findall(code)
+    words = WORD.findall(code)
     block.words = words
     if words:
         letter, num = words[0]
@@ -102,8 +102,8 @@ def _explain(file: str, line: int, code: str) -> tuple[str, Location]:
         if ch == ";" and not code[pos + 1:].strip():
             break
         if ch.isalpha():
-            m = _WORD.match(code, pos)
-            bad = _BAD_WORD.match(code, pos)
+            m = WORD.match(code, pos)
+            bad = _BADWORD.match(code, pos)
             assert bad is not None
             if m and m.end() == bad.end():
                 pos = m.end()

@@ -6,16 +6,38 @@ from typing import Iterable, Iterator
 
 from postproc.dialect import Reader
 from postproc.errors import PostprocError
-from postproc.ir import Block
+from postproc.ir import Block, Sequence
 
-from .lexer import lex_block, split_lines
+from .lexer import WORDS_ONLY, WORD, lex_block
 
 
 class FanucReader(Reader):
     def read(self, lines: Iterable[str]) -> Iterator[Block]:
         file = self.ctx.file
         report = self.ctx.diagnostics.error
-        for number, text, eol in split_lines(lines):
+        plain = WORDS_ONLY.fullmatch
+        findall = WORD.findall
+        number = 0
+        for raw in lines:
+            number += 1
+            if raw[-1:] == "\n":
+                if raw[-2:-1] == "\r":
+                    text, eol = raw[:-2], "\r\n"
+                else:
+                    text, eol = raw[:-1], "\n"
+            elif raw[-1:] == "\r":
+                text, eol = raw[:-1], "\r"
+            else:
+                text, eol = raw, ""
+            # Likeliest first: a block of words only, starting with its N number.
+            if text[:1] == "N" and "(" not in text and ")" not in text and "/" not in text and plain(text):
+                words = findall(text)
+                num = words[0][1]
+                if "." not in num and num[0] not in "+-":
+                    block = Block(number, text, eol, words)
+                    block.sections["Sequence"] = Sequence(int(num))
+                    yield block
+                    continue
             try:
                 yield lex_block(file, number, text, eol)
             except PostprocError as err:

@@ -7,7 +7,10 @@ tool is. A position becomes unknown (None) after moves the IR cannot place, such
 
 from __future__ import annotations
 
+from typing import Any, Callable
+
 from postproc.ir import Block, Motion
+from postproc.state import ModalState
 from postproc.syntax import Context, Syntax
 
 _MODAL_MOTION = frozenset(("rapid", "linear", "cw", "ccw"))
@@ -22,37 +25,10 @@ class ModalStateSyntax(Syntax):
         if not sections:
             return
         state = ctx.state
-        s = sections.get("Units")
-        if s is not None:
-            state.set_units(s.system)  # type: ignore[attr-defined]
-        s = sections.get("Plane")
-        if s is not None:
-            state.plane = s.plane  # type: ignore[attr-defined]
-        s = sections.get("DistanceMode")
-        if s is not None:
-            state.distance = s.mode  # type: ignore[attr-defined]
-        s = sections.get("FeedMode")
-        if s is not None:
-            state.feed_mode = s.mode  # type: ignore[attr-defined]
-        s = sections.get("Feed")
-        if s is not None:
-            state.feed = s.value  # type: ignore[attr-defined]
-        s = sections.get("SpindleSpeed")
-        if s is not None:
-            state.spindle_rpm = s.rpm  # type: ignore[attr-defined]
-        s = sections.get("SpindleControl")
-        if s is not None:
-            state.spindle = s.direction  # type: ignore[attr-defined]
-        s = sections.get("ReturnLevel")
-        if s is not None:
-            state.return_level = s.level  # type: ignore[attr-defined]
-        s = sections.get("WorkOffset")
-        if s is not None:
-            state.work_offset = s.index  # type: ignore[attr-defined]
-            _forget(state.position)
-        s = sections.get("ToolSelect")
-        if s is not None:
-            state.tool = s.number  # type: ignore[attr-defined]
+        for key, section in sections.items():
+            apply = _APPLY.get(key)
+            if apply is not None:
+                apply(state, section)
         motion = sections.get("Motion")
         if motion is not None:
             self._move(block, ctx, motion)  # type: ignore[arg-type]
@@ -76,6 +52,26 @@ class ModalStateSyntax(Syntax):
                 pos[axis] = None if old is None else old + value
             else:
                 pos[axis] = value
+
+
+def _work_offset(state: ModalState, s: Any) -> None:
+    state.work_offset = s.index
+    _forget(state.position)
+
+
+_APPLY: dict[str, Callable[[ModalState, Any], None]] = {
+    "Units": lambda st, s: st.set_units(s.system),
+    "Plane": lambda st, s: setattr(st, "plane", s.plane),
+    "DistanceMode": lambda st, s: setattr(st, "distance", s.mode),
+    "FeedMode": lambda st, s: setattr(st, "feed_mode", s.mode),
+    "Feed": lambda st, s: setattr(st, "feed", s.value),
+    "SpindleSpeed": lambda st, s: setattr(st, "spindle_rpm", s.rpm),
+    "SpindleControl": lambda st, s: setattr(st, "spindle", s.direction),
+    "ReturnLevel": lambda st, s: setattr(st, "return_level", s.level),
+    "WorkOffset": _work_offset,
+    "ToolSelect": lambda st, s: setattr(st, "tool", s.number),
+}
+"""How each modal section changes the state; sections not listed change nothing here."""
 
 
 def _forget(position: dict[str, float | None]) -> None:
