@@ -39,6 +39,9 @@ class Writer:
         ``--on-unsupported warn`` a warning and the source block written as a comment."""
         write_block = self.write_block
         emit = out.write
+        header = self.render_template("header")
+        if header:
+            emit(header)
         for block in blocks:
             try:
                 text = write_block(block)
@@ -52,6 +55,21 @@ class Writer:
         tail = self.finish()
         if tail:
             emit(tail)
+        footer = self.render_template("footer")
+        if footer:
+            emit(footer)
+
+    def render_template(self, name: str) -> str:
+        """Render the set-up's header or footer template (sandboxed jinja2), or ''."""
+        setup = self.ctx.setup
+        text = getattr(setup.templates, name)
+        if not text:
+            return ""
+        from .templates import render
+        from pathlib import PurePath
+        variables = {"program": PurePath(self.ctx.file).stem, "source_dialect": self.source_dialect,
+                     "machine": setup.name, "units": self.ctx.state.units}
+        return render(name, text, variables, setup.source)
 
     def unsupported_block(self, block: Block, err: UnsupportedError) -> str | None:
         err.located(Location(self.ctx.file, block.line, 1))

@@ -126,6 +126,11 @@ class WordWriter(Writer):
         sections = block.sections
         if "TapeMark" in sections:
             return "%"
+        text = block.text
+        if (text is not None and not self.renumber and self.leading_zero
+                and "Comments" not in sections and "BlockDelete" not in sections
+                and _NORMAL_BLOCK.fullmatch(text)):
+            return text  # already normal: upper-case words, single spaces, explicit exact numbers
         parts: list[str] = []
         skip = sections.get("BlockDelete")
         if skip is not None:
@@ -374,6 +379,12 @@ class WordWriter(Writer):
 
 
 _UPPER = {c: c.upper() for c in "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"}
+
+
+_NORMAL_NUMBER = r"-?(?:0|[1-9]\d*)\.(?:\d{0,5}[1-9])?"
+_NORMAL_WORD = rf"(?:[XYZABCUVWIJRQF](?!-0\.(?: |$)){_NORMAL_NUMBER}|[GMNOTHDLPS]\d+)"
+_NORMAL_BLOCK = re.compile(rf"{_NORMAL_WORD}(?: {_NORMAL_WORD})*")
+"""A block ``normalized`` would write unchanged (K is left out: its kind depends on the block)."""
 
 
 @functools.cache
