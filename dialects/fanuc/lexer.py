@@ -14,7 +14,8 @@ from postproc.ir import BlockDelete, Block, Comments, ProgramStart, Sequence, Ta
 
 NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)"
 WORD = re.compile(r"([A-Za-z])[ \t]*(" + NUMBER + ")")
-WORDS_ONLY = re.compile(r"(?:[ \t]*[A-Za-z][ \t]*" + NUMBER + r")*[ \t]*;?[ \t]*")
+WORDS_ONLY = re.compile(r"(?:[ \t]*+[A-Za-z][ \t]*+[-+]?+(?:\d++\.?+\d*+|\.\d++))*+[ \t]*+;?+[ \t]*+")
+"""A line of words only; possessive quantifiers: a block has one reading, never backtrack."""
 _BADWORD = re.compile(r"[A-Za-z][ \t]*[-+.\d]*")
 _SKIP = re.compile(r"[ \t]*/(\d?)")
 _COMMENT = re.compile(r"\(([^()]*)\)")
