@@ -59,7 +59,6 @@ def _one_attribute_init(attr: XAttr) -> Any:
     return __init__
 
 
-Sequence = _simple("Sequence", XAttr("number", int), doc="Block (sequence) number, N on most controllers.")
 BlockDelete = _simple("BlockDelete", XAttr("level", int, 1), doc="Optional block skip; level 1 is the plain '/'.")
 ProgramStart = _simple("ProgramStart", XAttr("number", int, None), XAttr("name", str, None),
                        doc="Program number or name (O-number, %name).")
@@ -69,7 +68,6 @@ Plane = _simple("Plane", XAttr("plane", str), doc="Working plane: 'XY', 'ZX' or 
 DistanceMode = _simple("DistanceMode", XAttr("mode", str), doc="'absolute' or 'incremental' coordinates.")
 WorkOffset = _simple("WorkOffset", XAttr("index", int), doc="Work coordinate system, 1 = first (G54 on Fanuc).")
 FeedMode = _simple("FeedMode", XAttr("mode", str), doc="'per_min', 'per_rev' or 'inverse_time'.")
-Feed = _simple("Feed", XAttr("value", float), doc="Feed rate in program units per minute (or per rev).")
 SpindleSpeed = _simple("SpindleSpeed", XAttr("rpm", float), doc="Spindle speed.")
 SpindleControl = _simple("SpindleControl", XAttr("direction", str),
                          doc="Spindle on clockwise ('cw'), counter-clockwise ('ccw') or 'stop'.")
@@ -93,6 +91,28 @@ CycleCancel = _simple("CycleCancel", doc="Cancel the active canned cycle.")
 MachineCoordinates = _simple("MachineCoordinates", doc="One-shot: this block's motion is in machine coordinates.")
 CycleCall = _simple("CycleCall", XAttr("kind", str),
                     doc="A canned cycle programmed in this block, by neutral name (e.g. 'drill', 'back_bore').")
+
+
+class Sequence(Section):
+    """Block (sequence) number, N on most controllers. Written out by hand: it is on most blocks."""
+
+    XNAME = KEY = "Sequence"
+    __slots__ = ("number",)
+    XATTRS = (XAttr("number", int),)
+
+    def __init__(self, number: int) -> None:
+        self.number = number
+
+
+class Feed(Section):
+    """Feed rate in program units per minute (or per rev). Written out by hand: it is frequent."""
+
+    XNAME = KEY = "Feed"
+    __slots__ = ("value",)
+    XATTRS = (XAttr("value", float),)
+
+    def __init__(self, value: float) -> None:
+        self.value = value
 
 
 class Comments(Section):

@@ -8,6 +8,7 @@ A dialect's reading pipeline is an XML file of syntax elements loaded through th
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 from typing import Callable, Iterable, Iterator
 
@@ -37,19 +38,26 @@ class Context:
     def at(self, block: Block, col: int = 1) -> Location:
         return Location(self.file, block.line, col)
 
-    def column_of(self, block: Block, letter: str) -> int:
-        """Column of the first word with ``letter`` in the block's text (computed only for errors)."""
-        text = block.text or ""
-        upper, want = text.upper(), letter.upper()
-        depth = 0
-        for i, ch in enumerate(upper):
-            if ch == "(":
-                depth += 1
-            elif ch == ")":
-                depth = max(0, depth - 1)
-            elif depth == 0 and upper.startswith(want, i):
-                return i + 1
+    def column_of(self, block: Block, letter: str, number: str | None = None, nth: int = 1) -> int:
+        """Column of the ``nth`` word with ``letter`` (and, if given, exactly that number text) in the
+        block's text, comments skipped. Computed only when reporting an error."""
+        want = letter.upper()
+        for col, found, num in word_columns(block.text or ""):
+            if found.upper() == want and (number is None or num == number):
+                nth -= 1
+                if nth == 0:
+                    return col
         return 1
+
+
+_WORD_AT = re.compile(r"([A-Za-z:])[ \t]*([-+]?(?:\d+\.?\d*|\.\d+))")
+_COMMENT_AT = re.compile(r"\([^()]*\)|\([^()]*$|;.*$")
+
+
+def word_columns(text: str) -> list[tuple[int, str, str]]:
+    """(1-based column, letter, number text) of every word outside comments."""
+    masked = _COMMENT_AT.sub(lambda m: " " * len(m.group(0)), text)
+    return [(m.start() + 1, m.group(1), m.group(2)) for m in _WORD_AT.finditer(masked)]
 
 
 class Syntax(XmlNode):

@@ -53,6 +53,12 @@ class WordWriter(Writer):
     """Address and unit of the dwell time: 'X' seconds, 'P' milliseconds, or 'Ps' seconds in P."""
     MACHINE_COORDS: ClassVar[str | None] = "G53"
     CYCLE_CANCEL: ClassVar[str | None] = "G80"
+    CYCLES: ClassVar[dict[str, str]] = {
+        "peck_chip": "G73", "tap_left": "G74", "fine_bore": "G76", "drill": "G81", "drill_dwell": "G82",
+        "peck_deep": "G83", "tap": "G84", "bore_feed": "G85", "bore_stop": "G86", "back_bore": "G87",
+        "bore_manual": "G88", "bore_dwell_feed": "G89",
+    }
+    """Canned cycles the target runs natively, by neutral kind (lowering expands the others)."""
     IGNORED: ClassVar[frozenset[str]] = frozenset()
     """Sections that annotate a block and produce no words of their own."""
     TRANSFORMS: ClassVar[dict[str, Callable[["WordWriter", Any, Block], list[str]]]] = {}
@@ -60,7 +66,8 @@ class WordWriter(Writer):
     def __init__(self, ctx: Context, source_dialect: str) -> None:
         super().__init__(ctx, source_dialect)
         out = ctx.setup.output
-        self.normalize = out.normalize
+        self.normalize = out.normalize or bool(out.renumber_start)
+        """Renumbering rewrites the words, so it implies normalising."""
         self.renumber = out.renumber_start
         self.renumber_step = out.renumber_step
         self.leading_zero = out.leading_zero
@@ -341,6 +348,16 @@ class WordWriter(Writer):
             words.append("R" + self.number(s.radius))
         return words
 
+    def canned_cycle_words(self, s: Any, block: Block) -> list[str]:
+        """A native cycle: its code when the block programs it, then its words as programmed.
+        G98/G99 and F come from the block's own ReturnLevel and Feed sections."""
+        words: list[str] = []
+        if s.call:
+            words.extend(self._code(self.CYCLES, s.kind, f"the {s.kind.replace('_', ' ')} cycle", block))
+        for letter, value in s.words.items():
+            words.append(letter + (str(value) if isinstance(value, int) else self.number(value)))
+        return words
+
     def feed_words(self, s: Any, block: Block) -> list[str]:
         self.feed = s.value
         return ["F" + self.number(s.value)]
@@ -378,7 +395,7 @@ class WordWriter(Writer):
         return [s.text]
 
 
-_UPPER = {c: c.upper() for c in "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"}
+_UPPER = {c: c.upper() for c in "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz:"}
 
 
 _NORMAL_NUMBER = r"-?(?:0|[1-9]\d*)\.(?:\d{0,5}[1-9])?"

@@ -26,6 +26,7 @@ INTEGER_LETTERS = frozenset("NOTHDLP")
 _PLAIN_LETTERS = frozenset("XYZABCUVWNOFST")
 """Letters of a block the fast path handles (no I/J/K/R/Q/P/H/D/L, which need context)."""
 _UPPER = {c: c.upper() for c in "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"}
+_UPPER[":"] = "O"  # ':' is ISO's spelling of the program number address
 CENTER_AXIS = {"I": "X", "J": "Y", "K": "Z"}
 DIALECT = "fanuc"
 
@@ -54,7 +55,7 @@ class FanucBlockSyntax(Syntax):
                 self._g_code(ctx, block, num, codes, natives)
             elif up == "M":
                 if "." in num:
-                    raise ParseError(f"M code M{num} takes no decimal point", ctx.at(block, ctx.column_of(block, "M")))
+                    raise ParseError(f"M code M{num} takes no decimal point", ctx.at(block, _col_of_word(block, "M", num)))
                 mcodes.append((int(num), num))
             elif up in raw:
                 raise ParseError(f"address {up} appears twice in one block", ctx.at(block, _second_col(block, up)))
@@ -97,7 +98,7 @@ class FanucBlockSyntax(Syntax):
                                  ctx.at(block, ctx.column_of(block, up)))
         used = {"N", "O"}
         self._g_sections(block, ctx, codes, values, used, cycle_block)
-        self._m_sections(block, ctx, mcodes)
+        self._m_sections(block, ctx, mcodes, used)
         if "F" in values:
             block.add(Feed(float(values["F"])))
             used.add("F")
@@ -133,7 +134,7 @@ class FanucBlockSyntax(Syntax):
             elif up == "F":
                 values["F"] = value = float(num)
                 sections["Feed"] = Feed(value)
-            elif up == "N" or up == "O":
+            elif (up == "N" or up == "O") and "." not in num:
                 values[up] = int(num)
             elif up == "S":
                 values["S"] = speed = float(num) if "." in num else int(num)
@@ -223,7 +224,7 @@ class FanucBlockSyntax(Syntax):
                     used.add("H")
                 block.add(ToolLengthOffset(arg, values.get("H") if arg != "cancel" else None))
             elif kind == "dwell":
-                self._dwell(block, ctx, values, used)
+                self._dwell(block, ctx, values, used, _col_of_word(block, "G", num))
             elif kind == "home":
                 home = arg
             elif kind == "machine":
@@ -239,6 +240,14 @@ class FanucBlockSyntax(Syntax):
             return
         if "Dwell" in block.sections and motion_mode is None and not axes:
             return
+        if "MachineCoordinates" in block.sections and axes:
+            # G53 positions at rapid whatever the modal motion; a motion code beside it still sets the mode
+            # (ModalStateSyntax leaves the mode alone for machine-coordinate blocks).
+            if motion_mode is not None:
+                state.motion = motion_mode
+            block.add(Motion("rapid", {k: float(v) for k, v in axes.items()}))
+            used.update(axes)
+            return
         mode = motion_mode
         if mode is None and axes:
             if cycle_block and "CycleCancel" not in block.sections:
@@ -253,6 +262,10 @@ class FanucBlockSyntax(Syntax):
         used.update(axes)
         center = None
         radius = None
+        if "01" in codes:
+            motion_col = _col_of_word(block, "G", codes["01"][3])
+        else:
+            motion_col = ctx.column_of(block, next(iter(axes))) if axes else 1
         if mode in ("cw", "ccw"):
             center = {CENTER_AXIS[k]: float(values[k]) for k in "IJK" if k in values}
             used.update(k for k in "IJK" if k in values)
@@ -264,11 +277,10 @@ class FanucBlockSyntax(Syntax):
                                        ctx.at(block, ctx.column_of(block, "R")))
                 center = None
             elif not center:
-                raise ProgramError("an arc needs a centre (I/J/K) or a radius R",
-                                   ctx.at(block, ctx.column_of(block, "G")))
+                raise ProgramError("an arc needs a centre (I/J/K) or a radius R", ctx.at(block, motion_col))
         block.add(Motion(mode, {k: float(v) for k, v in axes.items()}, center, radius))
 
-    def _dwell(self, block: Block, ctx: Context, values: dict[str, Any], used: set[str]) -> None:
+    def _dwell(self, block: Block, ctx: Context, values: dict[str, Any], used: set[str], col: int) -> None:
         if "P" in values:
             seconds = int(values["P"]) / 1000.0
             used.add("P")
@@ -276,13 +288,12 @@ class FanucBlockSyntax(Syntax):
             seconds = float(values["X"])
             used.add("X")
         else:
-            raise ProgramError("G04 needs a dwell time X (seconds) or P (milliseconds)",
-                               ctx.at(block, ctx.column_of(block, "G")))
+            raise ProgramError("G04 needs a dwell time X (seconds) or P (milliseconds)", ctx.at(block, col))
         if seconds < 0:
-            raise ProgramError("a dwell time cannot be negative", ctx.at(block, ctx.column_of(block, "G")))
+            raise ProgramError("a dwell time cannot be negative", ctx.at(block, col))
         block.add(Dwell(seconds))
 
-    def _m_sections(self, block: Block, ctx: Context, mcodes: list[tuple[int, str]]) -> None:
+    def _m_sections(self, block: Block, ctx: Context, mcodes: list[tuple[int, str]], used: set[str]) -> None:
         seen: dict[str, str] = {}
         for number, num in mcodes:
             entry = M_CODES.get(number)
@@ -295,6 +306,7 @@ class FanucBlockSyntax(Syntax):
                     raise ParseError(f"M{num}: only one machine-specific function per block is supported",
                                      ctx.at(block, _col_of_word(block, "M", num)))
                 block.add(NativeCode(DIALECT, what, f"M{num}"))
+                used.update("PL")
                 continue
             kind, arg = entry
             if kind in seen:
@@ -323,14 +335,16 @@ def _divisor(ctx: Context, units: str) -> int:
 
 
 def _col_of_word(block: Block, letter: str, num: str) -> int:
-    text = (block.text or "").upper()
-    target = (letter + num).upper()
-    i = text.find(target)
-    return i + 1 if i >= 0 else 1
+    """Column of the word ``letter``+``num`` as written (comments skipped)."""
+    from postproc.syntax import word_columns
+    for col, found, text in word_columns(block.text or ""):
+        if found.upper() == letter.upper() and text == num:
+            return col
+    return 1
 
 
 def _second_col(block: Block, letter: str) -> int:
-    text = (block.text or "").upper()
-    first = text.find(letter)
-    second = text.find(letter, first + 1)
-    return second + 1 if second >= 0 else 1
+    """Column of the second word with ``letter`` (the one that repeats an address)."""
+    from postproc.syntax import word_columns
+    cols = [col for col, found, _ in word_columns(block.text or "") if found.upper() == letter.upper()]
+    return cols[1] if len(cols) > 1 else 1

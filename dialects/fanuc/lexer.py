@@ -17,6 +17,7 @@ WORD = re.compile(r"([A-Za-z])[ \t]*(" + NUMBER + ")")
 WORDS_ONLY = re.compile(r"(?:[ \t]*+[A-Za-z][ \t]*+[-+]?+(?:\d++\.?+\d*+|\.\d++))*+[ \t]*+;?+[ \t]*+")
 """A line of words only; possessive quantifiers: a block has one reading, never backtrack."""
 _BADWORD = re.compile(r"[A-Za-z][ \t]*[-+.\d]*")
+_COLON = re.compile(r"[ \t]*:(\d+)")
 _SKIP = re.compile(r"[ \t]*/(\d?)")
 _COMMENT = re.compile(r"\(([^()]*)\)")
 
@@ -48,6 +49,14 @@ def lex_block(file: str, number: int, text: str, eol: str) -> Block:
         if m:
             block.add(BlockDelete(int(m.group(1) or 1)))
             code = " " * m.end() + code[m.end():]
+    colon = _COLON.match(code)
+    if colon:
+        block.words = [(":", colon.group(1))]
+        block.add(ProgramStart(int(colon.group(1)), None))
+        code = " " * colon.end() + code[colon.end():]
+        if WORDS_ONLY.fullmatch(code):
+            block.words.extend(WORD.findall(code))
+            return block
     if not WORDS_ONLY.fullmatch(code):
         stripped = code.strip()
         if stripped == "%":
@@ -102,7 +111,14 @@ def _explain(file: str, line: int, code: str) -> tuple[str, Location]:
             continue
         if ch == ";" and not code[pos + 1:].strip():
             break
-        if ch.isalpha():
+        if ch == "#" or ch == "[" or code[pos:pos + 2].upper() in ("IF", "WH", "GO") and not WORD.match(code, pos):
+            return ("macro variables and expressions are not supported by this reader yet",
+                    Location(file, line, pos + 1))
+        if ch.isascii() and ch.isalpha():
+            after = code[pos + 1:].lstrip(" \t")[:1]
+            if after in ("#", "["):
+                return ("macro variables and expressions are not supported by this reader yet",
+                        Location(file, line, pos + 1))
             m = WORD.match(code, pos)
             bad = _BADWORD.match(code, pos)
             assert bad is not None
@@ -113,9 +129,6 @@ def _explain(file: str, line: int, code: str) -> tuple[str, Location]:
             if len(token) == 1:
                 return f"address {token.upper()} needs a value", Location(file, line, pos + 1)
             return f"malformed word {token!r}", Location(file, line, pos + 1)
-        if ch == "#" or ch == "[":
-            return ("macro variables and expressions are not supported by this reader yet",
-                    Location(file, line, pos + 1))
         if ch == "%":
             return "'%' must stand alone on its line", Location(file, line, pos + 1)
         if ch == "/":

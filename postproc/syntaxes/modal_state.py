@@ -36,7 +36,7 @@ class ModalStateSyntax(Syntax):
     def _move(self, block: Block, ctx: Context, motion: Motion) -> None:
         state = ctx.state
         mode = motion.mode
-        if mode in _MODAL_MOTION:
+        if mode in _MODAL_MOTION and "MachineCoordinates" not in block.sections:
             state.motion = mode
         elif mode is None:
             return
@@ -45,13 +45,12 @@ class ModalStateSyntax(Syntax):
             for axis in motion.axes:
                 pos[axis] = None
             return
-        incremental = state.distance == "incremental"
+        if state.distance != "incremental":
+            pos.update(motion.axes)
+            return
         for axis, value in motion.axes.items():
-            if incremental:
-                old = pos.get(axis)
-                pos[axis] = None if old is None else old + value
-            else:
-                pos[axis] = value
+            old = pos.get(axis)
+            pos[axis] = None if old is None else old + value
 
 
 def _work_offset(state: ModalState, s: Any) -> None:
