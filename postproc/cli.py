@@ -12,10 +12,10 @@ from pathlib import Path
 from typing import Callable, Sequence, TextIO
 
 from .api import read_blocks, translate
-from .errors import Diagnostics, ErrorList, PostprocError, UsageError
+from .errors import ConfigError, Diagnostics, ErrorList, Location, PostprocError, UsageError
 from .plugins import default_registry
 from .setup import MachineSetup, load_setup
-from .xmlio import to_bytes
+from .xmlio import parse_xml_file, to_bytes
 
 ENCODING = {"encoding": "utf-8", "errors": "surrogateescape", "newline": ""}
 """Programs are read and written byte-faithfully: undecodable bytes survive as surrogates."""
@@ -115,6 +115,8 @@ def _open_program(path: str) -> TextIO:
 def _atomic_output(path: str | None, write: Callable[[TextIO], None], binary: bool = False) -> None:
     """Write to a temporary file and move it into place only on success (no partial outputs)."""
     target_dir = Path(path).resolve().parent if path else None
+    if target_dir is not None and not target_dir.is_dir():
+        raise UsageError(f"cannot write {path}: no such directory {target_dir}")
     fd, tmp = tempfile.mkstemp(prefix=".postproc-", dir=target_dir)
     try:
         mode = "wb" if binary else "w"
@@ -202,7 +204,7 @@ def cmd_dialects(args: argparse.Namespace) -> int:
         rw = "/".join(x for x, ok in (("read", info["reads"]), ("write", info["writes"])) if ok)
         print(f"{name} ({rw}): {info['description']}")
         for key, value in info["capabilities"].items():  # type: ignore[union-attr]
-            shown = ", ".join(value) if isinstance(value, list) else value
+            shown = (", ".join(value) or "none") if isinstance(value, list) else value
             print(f"  {key}: {shown}")
     return 0
 
@@ -211,7 +213,11 @@ def cmd_config(args: argparse.Namespace) -> int:
     default_registry()
     setup = load_setup(args.file)
     if setup.dialect:
-        default_registry().dialect(setup.dialect)
+        try:
+            default_registry().dialect(setup.dialect)
+        except UsageError as err:  # a set-up naming a missing dialect is a configuration error
+            root = parse_xml_file(args.file)
+            raise ConfigError(err.message, Location(args.file, root.sourceline or 1, 1)) from None
     pipeline = setup.pipeline_path()
     if pipeline is not None:
         from .syntax import load_pipeline

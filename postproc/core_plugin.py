@@ -2,8 +2,11 @@
 
 from __future__ import annotations
 
+from . import cycles
+from .cycles.lowering import expand_canned_cycles
 from .hookspecs import hookimpl
 from .ir import register_sections
+from .lower import register_transform
 from .setup import MachineSetup
 from .syntax import Pipeline
 from .syntaxes.modal_state import ModalStateSyntax
@@ -15,3 +18,7 @@ def postproc_register_xml(factory: XFactory) -> None:
     register_sections(factory)
     for cls in (Pipeline, MachineSetup, ModalStateSyntax):
         cls.reg(factory)
+    cycles.register(factory)
+
+
+register_transform(expand_canned_cycles)

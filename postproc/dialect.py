@@ -36,13 +36,22 @@ class Writer:
 
     def write(self, blocks: Iterable[Block], out: TextIO) -> None:
         """Write every block. A block the target cannot express is an error, or with
-        ``--on-unsupported warn`` a warning and the source block written as a comment."""
+        ``--on-unsupported warn`` a warning and the source block written as a comment.
+        The header goes after an opening tape mark and the footer before the closing one."""
         write_block = self.write_block
         emit = out.write
         header = self.render_template("header")
-        if header:
-            emit(header)
+        footer = self.render_template("footer")
+        started = False
         for block in blocks:
+            tape_mark = "TapeMark" in block.sections
+            if not started and not tape_mark:
+                started = True
+                if header:
+                    emit(header)
+            elif started and tape_mark and footer:
+                emit(footer)
+                footer = ""
             try:
                 text = write_block(block)
             except UnsupportedError as err:
@@ -52,10 +61,11 @@ class Writer:
                 continue
             if text is not None:
                 emit(text)
+        if not started and header:
+            emit(header)
         tail = self.finish()
         if tail:
             emit(tail)
-        footer = self.render_template("footer")
         if footer:
             emit(footer)
 
@@ -69,7 +79,7 @@ class Writer:
         from pathlib import PurePath
         variables = {"program": PurePath(self.ctx.file).stem, "source_dialect": self.source_dialect,
                      "machine": setup.name, "units": self.ctx.state.units}
-        return render(name, text, variables, setup.source)
+        return render(name, text, variables, setup.source, setup.template_lines.get(name, 1))
 
     def unsupported_block(self, block: Block, err: UnsupportedError) -> str | None:
         err.located(Location(self.ctx.file, block.line, 1))

@@ -5,14 +5,15 @@ Written incrementally (lxml's ``xmlfile``), so dumping a long program streams li
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 from typing import BinaryIO, Iterable
 
 from lxml import etree
 
-from .errors import ConfigError, Location
+from .errors import ConfigError, Location, UnsupportedError
 from .ir import Block
-from .xmlio import DEFAULT, XFactory, parse_xml_file
+from .xmlio import XFactory, parse_xml_file
 
 PROGRAM = "Program"
 
@@ -23,13 +24,35 @@ def dump_program(blocks: Iterable[Block], out: BinaryIO, *, dialect: str, file: 
         with xf.element(PROGRAM, dialect=dialect, file=file):
             xf.write("\n")
             for block in blocks:
-                el = block.make_xml_source()
+                try:
+                    el = block.make_xml_source()
+                except ValueError:  # lxml refuses control characters and undecodable bytes (surrogates)
+                    raise _not_xml(block, file) from None
                 etree.indent(el, space="  ", level=1)
                 xf.write("  ", el, "\n")
 
 
+_NOT_XML = re.compile("[^\t\n\r\x20-\ud7ff\ue000-\ufffd\U00010000-\U0010ffff]")
+"""Characters XML 1.0 cannot hold."""
+
+
+def _not_xml(block: Block, file: str) -> UnsupportedError:
+    m = _NOT_XML.search(block.text or "")
+    if m is None:
+        return UnsupportedError("the block cannot be written as XML", Location(file, block.line, 1))
+    ch = m.group(0)
+    code = ord(ch)
+    what = f"undecodable byte 0x{code - 0xDC00:02X}" if 0xDC80 <= code <= 0xDCFF else f"character U+{code:04X}"
+    return UnsupportedError(f"{what} cannot be written to the IR XML", Location(file, block.line, m.start() + 1))
+
+
 def load_program(path: str | Path, factory: XFactory | None = None) -> tuple[str, list[Block]]:
-    """Load a dumped program: (dialect, blocks). Unknown elements are located errors."""
+    """Load a dumped program: (dialect, blocks). Unknown elements are located errors.
+
+    Without a ``factory``, the installed plugins' one (their sections may appear in the program)."""
+    if factory is None:
+        from .plugins import default_registry  # late: the plugin manager imports the IR
+        factory = default_registry().factory
     root = parse_xml_file(path)
     if root.tag != PROGRAM:
         raise ConfigError(f"expected <{PROGRAM}>, found <{root.tag}>", Location(str(path), root.sourceline or 1, 1))
@@ -40,7 +63,7 @@ def load_program(path: str | Path, factory: XFactory | None = None) -> tuple[str
         if el.tag != Block.XNAME:
             raise ConfigError(f"unknown element <{el.tag}> in <{PROGRAM}>", Location(str(path), el.sourceline or 1, 1))
         try:
-            blocks.append(Block.from_xml(el, factory or DEFAULT))
+            blocks.append(Block.from_xml(el, factory))
         except (ValueError, TypeError) as exc:
             raise ConfigError(f"invalid <Block>: {exc}", Location(str(path), el.sourceline or 1, 1)) from None
     return root.get("dialect", ""), blocks

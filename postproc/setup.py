@@ -113,7 +113,8 @@ class MachineSetup(XmlNode):
     """A controller set-up: dialect, pipeline override and parameter groups."""
 
     XNAME = "MachineSetup"
-    __slots__ = ("name", "dialect", "pipeline", "input", "output", "cycles", "machine", "templates", "source")
+    __slots__ = ("name", "dialect", "pipeline", "input", "output", "cycles", "machine", "templates", "source",
+                 "template_lines")
 
     def __init__(self, name: str = "default", dialect: str | None = None, pipeline: str | None = None,
                  input: InputSettings | None = None, output: OutputSettings | None = None,
@@ -129,6 +130,8 @@ class MachineSetup(XmlNode):
         self.machine = machine or MachineSettings()
         self.templates = templates or Templates()
         self.source = source
+        self.template_lines: dict[str, int] = {}
+        """Line of the set-up file each template starts on (for located template errors)."""
 
     def _key(self) -> tuple[Any, ...]:
         return (self.name, self.dialect, self.pipeline, self.input, self.output, self.cycles,
@@ -146,6 +149,7 @@ class MachineSetup(XmlNode):
     @classmethod
     def from_xml(cls, el: etree._Element) -> "MachineSetup":
         kwargs: dict[str, Any] = {}
+        lines: dict[str, int] = {}
         by_tag = {g.TAG: g for g in GROUPS}
         attr_of = {InputSettings: "input", OutputSettings: "output", CycleSettings: "cycles",
                    MachineSettings: "machine"}
@@ -154,6 +158,7 @@ class MachineSetup(XmlNode):
                 continue
             if child.tag == "Templates":
                 kwargs["templates"] = _templates_from_xml(child)
+                lines = {c.tag.lower(): c.sourceline or 1 for c in child if isinstance(c.tag, str)}
                 continue
             group = by_tag.get(child.tag)
             if group is None:
@@ -164,8 +169,10 @@ class MachineSetup(XmlNode):
         unknown = set(el.attrib) - {"name", "dialect", "pipeline"}
         if unknown:
             raise ConfigError(f"<MachineSetup> has unknown attribute(s) {', '.join(sorted(unknown))}", where(el))
-        return cls(name=el.get("name", "default"), dialect=el.get("dialect"), pipeline=el.get("pipeline"),
-                   source=el.getroottree().docinfo.URL, **kwargs)
+        setup = cls(name=el.get("name", "default"), dialect=el.get("dialect"), pipeline=el.get("pipeline"),
+                    source=el.getroottree().docinfo.URL, **kwargs)
+        setup.template_lines = lines
+        return setup
 
     def make_xml_source(self, base_dir: str = ".", rel_file: str = "", exhibition_only: bool = False) -> etree._Element:
         el = etree.Element(self.XNAME, name=self.name)
@@ -205,11 +212,14 @@ def _group_from_xml(group: type[_Group], el: etree._Element) -> _Group:
         return group.model_validate(raw)
     except ValidationError as exc:
         first = exc.errors()[0]
-        field_name = ".".join(str(p) for p in first["loc"]) or el.tag
         msg = first["msg"]
         if first["type"] == "extra_forbidden":
             msg = "unknown parameter"
-        raise ConfigError(f"<{el.tag}> {field_name}: {msg}", where(el)) from None
+        elif first["type"] == "value_error":  # our own validators' messages stand alone
+            msg = str(first.get("ctx", {}).get("error", msg))
+        field_name = ".".join(str(p) for p in first["loc"])
+        raise ConfigError(f"<{el.tag}> {field_name}: {msg}" if field_name else f"<{el.tag}> {msg}",
+                          where(el)) from None
 
 
 def _templates_from_xml(el: etree._Element) -> Templates:

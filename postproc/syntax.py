@@ -18,7 +18,7 @@ from .errors import ConfigError, Diagnostics, Location, PostprocError
 from .ir import Block
 from .setup import MachineSetup
 from .state import ModalState
-from .xmlio import DEFAULT, XFactory, XmlNode, parse_xml_file
+from .xmlio import DEFAULT, XFactory, XmlNode, parse_xml_file, where
 
 
 class Context:
@@ -100,9 +100,12 @@ class Pipeline(XmlNode):
     def from_xml(cls, el: etree._Element, factory: XFactory | None = None) -> "Pipeline":
         factory = factory or DEFAULT
         steps = []
-        for step in factory.children(el):
+        for child in el:
+            if not isinstance(child.tag, str):
+                continue
+            step = factory.create(child)
             if not isinstance(step, Syntax):
-                raise ConfigError(f"<{type(step).XNAME}> is not a syntax step", None)
+                raise ConfigError(f"<{child.tag}> is not a syntax step", where(child))
             steps.append(step)
         return cls(el.get("dialect", ""), steps)
 

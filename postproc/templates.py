@@ -18,14 +18,15 @@ _ENV = SandboxedEnvironment(undefined=StrictUndefined, autoescape=False, keep_tr
 MAX_OUTPUT = 1 << 20
 
 
-def render(name: str, text: str, variables: dict[str, Any], source: str | None) -> str:
+def render(name: str, text: str, variables: dict[str, Any], source: str | None, first_line: int = 1) -> str:
+    """Render one template. ``first_line`` is the line of the set-up file the template text starts on."""
     try:
         result = _ENV.from_string(text).render(**variables)
     except TemplateError as exc:
-        line = getattr(exc, "lineno", None) or 1
-        raise ConfigError(f"template {name}: {exc.message or exc}", Location(source or "<set-up>", line, 1)) from None
+        raise _located(name, exc, source, first_line) from None
     if len(result) > MAX_OUTPUT:
-        raise ConfigError(f"template {name} renders more than {MAX_OUTPUT} characters", Location(source or "<set-up>", 1, 1))
+        raise ConfigError(f"template {name} renders more than {MAX_OUTPUT} characters",
+                          Location(source or "<set-up>", first_line, 1))
     if result and not result.endswith("\n"):
         result += "\n"
     return result
@@ -40,5 +41,17 @@ def check_templates(setup: MachineSetup) -> None:
         try:
             _ENV.parse(text)
         except TemplateError as exc:
-            line = getattr(exc, "lineno", None) or 1
-            raise ConfigError(f"template {name}: {exc.message or exc}", Location(setup.source or "<set-up>", line, 1)) from None
+            raise _located(name, exc, setup.source, setup.template_lines.get(name, 1)) from None
+
+
+def _located(name: str, exc: TemplateError, source: str | None, first_line: int) -> ConfigError:
+    """A template error at its line in the set-up file (runtime errors carry the line only in the
+    traceback jinja2 rewrites to point into the template)."""
+    line = getattr(exc, "lineno", None)
+    tb = exc.__traceback__
+    while line is None and tb is not None:
+        if tb.tb_frame.f_code.co_filename == "<template>":
+            line = tb.tb_lineno
+        tb = tb.tb_next
+    return ConfigError(f"template {name}: {exc.message or exc}",
+                       Location(source or "<set-up>", first_line + (line or 1) - 1, 1))

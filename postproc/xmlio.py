@@ -8,6 +8,7 @@ and an idempotent ``reg(factory)``. Simple nodes declare their attributes with `
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 from typing import Any, Callable, ClassVar, Iterator, TypeVar
 
@@ -34,14 +35,27 @@ def parse_xml_bytes(data: bytes, file: str) -> etree._Element:
         tree = etree.ElementTree(etree.fromstring(data, _PARSER, base_url=file))
     except etree.XMLSyntaxError as exc:
         line, col = exc.position if exc.position else (1, 1)
-        raise ConfigError(f"malformed XML: {exc.msg}", Location(file, line or 1, (col or 0) + 1)) from None
+        msg = _LIBXML_POSITION.sub("", exc.msg or "")  # the location already says where
+        raise ConfigError(f"malformed XML: {msg}", Location(file, line or 1, max(col or 1, 1))) from None
     if tree.docinfo.doctype:
-        raise ConfigError("a DOCTYPE is not allowed in postproc XML", Location(file, 1, 1))
+        where_ = _offset_location(data, data.find(b"<!DOCTYPE"), file)
+        raise ConfigError("a DOCTYPE is not allowed in postproc XML", where_)
     root = tree.getroot()
     for el in root.iter():
         if isinstance(el, etree._Entity):
             raise ConfigError("entity references are not allowed", Location(file, el.sourceline or 1, 1))
     return root
+
+
+_LIBXML_POSITION = re.compile(r", line \d+, column \d+$")
+"""libxml2 repeats the position at the end of its messages; its columns are already 1-based."""
+
+
+def _offset_location(data: bytes, offset: int, file: str) -> Location:
+    if offset < 0:
+        return Location(file, 1, 1)
+    line_start = data.rfind(b"\n", 0, offset) + 1
+    return Location(file, data.count(b"\n", 0, offset) + 1, offset - line_start + 1)
 
 
 def parse_xml_file(path: str | Path) -> etree._Element:

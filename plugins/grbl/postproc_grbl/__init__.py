@@ -1,0 +1,67 @@
+"""grbl 1.1 (and grbl-class) controllers: a dialect plugin written as a third party would write one.
+
+It registers through the ``postproc`` entry points and hooks only. Writing is its purpose; it also
+reads grbl (the RS274/NGC rules with grbl's code tables) so that ``postproc verify`` can simulate a
+translated program from its text.
+
+What grbl 1.1 accepts, from its parser ``grbl/gcode.c`` and ``grbl/protocol.c`` (github.com/gnea/grbl,
+stored commit 0b5604b) and the "Grbl v1.1 Commands" wiki page (github.com/gnea/grbl/wiki):
+
+* G0-G3 (arcs with I/J/K or R), G4 P (dwell in **seconds**), G10 L2/L20, G17-G19, G20/G21,
+  G28/G30 (and .1), G38.2-G38.5, G40 only, G43.1/G49 (dynamic tool length offset only), G53,
+  G54-G59, G61 only (accepted, grbl always blends), G80, G90/G91, G91.1, G92/G92.1, G93/G94.
+* M0, M1 (accepted and ignored: "Optional stop not supported"), M2, M30, M3/M4/M5, M8/M9, and M7
+  only when built with ENABLE_M7. Every other M code is "Unsupported command" (error 20): **M6** (so
+  there is no tool changer: a tool change is written as an M0 pause for a manual change) and **M19**
+  (no oriented spindle stop).
+* Words F I J K L N P R S T X Y Z. **No canned cycles** (G73-G89 and G98/G99 are unsupported, so the
+  lowering expands them: NATIVE_CYCLES is empty), no G41/G42, **no G43 H** (no tool table: an
+  ``UnsupportedError``, which is correct), no G95, no H, D or Q words, no parameters or expressions.
+* T is read and ignored. ``( )`` and ``;`` comments are stripped by the protocol layer; ``/`` block
+  delete is ignored (the block runs); ``%`` is not supported.
+
+G74/G84 expand with M4/M3 spindle reversal (floating-holder tapping); G76/G87 need an oriented stop and
+fail unless the set-up's ``<Cycles orientation="stop"|"m19">`` says how to stand in for it.
+"""
+
+from __future__ import annotations
+
+from typing import Callable
+
+from postproc.dialect import Dialect
+from postproc.hookspecs import hookimpl
+from postproc.xmlio import XFactory
+
+from .block_syntax import GrblBlockSyntax
+from .reader import GrblReader
+from .writer import GrblWriter
+
+
+class Grbl(Dialect):
+    NAME = "grbl"
+    DESCRIPTION = "grbl 1.1 (no canned cycles, no tool changer, no tool table; G4 P in seconds)"
+    READER = GrblReader
+    WRITER = GrblWriter
+    PIPELINE_FILE = "grbl.xml"
+    NATIVE_CYCLES = frozenset()
+    """No canned cycles: every cycle is expanded to G0/G1/G4/M3/M4/M5."""
+    SPINDLE_ORIENTATION = False
+    """No M19: cycles that need an oriented stop follow the set-up's ``Cycles orientation``."""
+    TOOL_CHANGER = False
+    """M6 is rejected: a tool change is written as an M0 pause."""
+    CUTTER_COMPENSATION = False
+    """Only G40."""
+    TOOL_LENGTH_OFFSET = False
+    """No tool table: G43 H is refused (grbl's own G43.1 takes the offset value)."""
+    DWELL_UNIT = "seconds"
+    """G4 P is in seconds."""
+
+
+@hookimpl
+def postproc_register_dialects(register: Callable[[type], None]) -> None:
+    register(Grbl)
+
+
+@hookimpl
+def postproc_register_xml(factory: XFactory) -> None:
+    GrblBlockSyntax.reg(factory)

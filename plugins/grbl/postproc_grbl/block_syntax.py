@@ -1,0 +1,51 @@
+"""GrblBlockSyntax: RS274/NGC block rules with grbl's code tables.
+
+grbl's parser follows the NIST RS274/NGC rules (no decimal-point scaling, G4 P in seconds, G80 leaves
+no motion mode) and accepts a subset of the codes, so this reuses ``NgcBlockSyntax`` with grbl's tables.
+Reading grbl matters for ``verify``: the toolpath of a translated program is simulated from its text.
+"""
+
+from __future__ import annotations
+
+from typing import Any, ClassVar
+
+from postproc.errors import ParseError
+from postproc.ir import Block, ToolChange
+from postproc.syntax import Context
+from dialects.fanuc.block_syntax import _col_of_word
+from postproc_linuxcnc.block_syntax import NgcBlockSyntax
+
+from . import codes
+
+
+class GrblBlockSyntax(NgcBlockSyntax):
+    """Lexed words -> neutral sections, for grbl 1.1."""
+
+    XNAME = "GrblBlockSyntax"
+    __slots__ = ()
+    DIALECT: ClassVar[str] = "grbl"
+    G_CODES = codes.G_CODES
+    NATIVE_G = codes.NATIVE_G
+    REFUSED_G = codes.REFUSED_G
+    M_CODES = {**codes.M_CODES, 19: ("orient", None)}
+    NATIVE_M = codes.NATIVE_M
+    REFUSED_M = {k: v for k, v in codes.REFUSED_M.items() if k != 19}
+    USER_M = codes.USER_M
+    REAL_LETTERS = frozenset("XYZIJKRPF")
+    INTEGER_LETTERS = frozenset("NTL")
+
+    def build(self, block: Block, ctx: Context) -> None:
+        """As RS274/NGC, plus grbl's spelling of a manual tool change: ``T<n> M0`` (grbl ignores T, so a
+        T word on a program pause only says which tool the operator loads) is a tool change."""
+        super().build(block, ctx)
+        sections = block.sections
+        stop = sections.get("ProgramControl")
+        if stop is not None and stop.kind == "stop" and "ToolSelect" in sections:  # type: ignore[attr-defined]
+            del sections["ProgramControl"]
+            block.add(ToolChange())
+
+    def _orient(self, block: Block, ctx: Context, num: str, values: dict[str, Any], used: set[str]) -> None:
+        """M19 exists only on machines whose set-up says so (``<Cycles orientation="m19"/>``)."""
+        if ctx.setup.cycles.orientation != "m19":
+            raise ParseError(codes.REFUSED_M[19], ctx.at(block, _col_of_word(block, "M", num)))
+        super()._orient(block, ctx, num, values, used)

@@ -1,0 +1,218 @@
+"""grbl writer: the RS274 word writer with grbl 1.1's tables and its refusals.
+
+What grbl lacks is an ``UnsupportedError`` naming the construct, except where the target has one
+faithful spelling of the same physical action:
+
+* a tool change (M6, rejected by grbl) becomes ``T<n> M0``, a program pause with a comment naming the
+  tool, so the operator changes it by hand (the grbl reader reads ``T<n> M0`` back as a tool change);
+* an oriented spindle stop follows the set-up's ``<Cycles orientation=...>``: ``m19`` writes M19 anyway
+  (a grbl build that has it), ``stop`` a program pause for the operator, ``error`` (default) refuses;
+  grbl's M0 leaves the spindle turning, so a pause for the operator (also inside a cycle's
+  expansion) stops a running spindle first with M5;
+* G64 (continuous path) writes nothing: grbl always blends; G98/G99 write nothing: grbl runs no cycles
+  (they arrive expanded), so the retract level has no meaning left;
+* ``%`` and an O-number, which grbl's parser rejects, are written as comments.
+
+With ``--on-unsupported warn``, a block whose only problem is a droppable modal word (a tool length
+offset, cutter compensation, block delete, ...) is written without that word after a comment of the
+original block, so its motion is kept; anything else falls back to the whole block as a comment.
+"""
+
+from __future__ import annotations
+
+from typing import Any, ClassVar
+
+from postproc.errors import Location, UnsupportedError
+from postproc.ir import Block, CompoundMotion, DistanceMode, Motion, ProgramControl, Section
+from postproc.state import PLANE_AXES
+from postproc.writer import WordWriter
+
+DROPPABLE = frozenset({
+    "ToolLengthOffset", "CutterCompensation", "BlockDelete", "PathControl", "SpindleOrientation",
+    "ToolChange", "FeedMode", "WorkOffset",
+})
+"""Sections a block can lose in warn mode and still mean the same motion (their loss is warned)."""
+GRBL_AXES = frozenset("XYZ")
+"""Axes of a stock grbl 1.1 build."""
+
+
+class GrblWriter(WordWriter):
+    DIALECT: ClassVar[str] = "grbl"
+    MOTION: ClassVar[dict[str, str]] = {"rapid": "G0", "linear": "G1", "cw": "G2", "ccw": "G3",
+                                        "home": "G28", "home2": "G30"}
+    FEED_MODE: ClassVar[dict[str, str]] = {"per_min": "G94", "inverse_time": "G93"}
+    RETURN_LEVEL: ClassVar[dict[str, str]] = {}
+    CUTTER: ClassVar[dict[str, str]] = {"off": "G40"}
+    LENGTH: ClassVar[dict[str, str]] = {"cancel": "G49"}
+    PATH: ClassVar[dict[str, str]] = {"exact_stop": "G61"}
+    PATH_ONCE: ClassVar[str | None] = None
+    SPINDLE: ClassVar[dict[str, str]] = {"cw": "M3", "ccw": "M4", "stop": "M5"}
+    COOLANT: ClassVar[dict[str, str]] = {"mist": "M7", "flood": "M8", "off": "M9"}
+    PROGRAM: ClassVar[dict[str, str]] = {"stop": "M0", "optional_stop": "M1", "end": "M2", "end_rewind": "M30"}
+    TOOL_CHANGE: ClassVar[str | None] = None
+    ORIENT: ClassVar[str | None] = None
+    DWELL: ClassVar[str] = "G4"
+    DWELL_WORD: ClassVar[str] = "Ps"
+
+    def __init__(self, ctx: Any, source_dialect: str) -> None:
+        super().__init__(ctx, source_dialect)
+        self.tool: int | None = None
+        self.plane = "XY"
+        self.spindle = "stop"
+        self._dropped: list[UnsupportedError] = []
+        self._strict = False
+        """True while writing an expansion: nothing may be dropped from a cycle's motion."""
+
+    # -- blocks ------------------------------------------------------------------------------------
+    def write_block(self, block: Block) -> str | None:
+        if "TapeMark" in block.sections:
+            return self.comment("%") + (block.eol or "\n")
+        self._dropped = []
+        text = super().write_block(block)
+        if not self._dropped:
+            return text
+        where = Location(self.ctx.file, block.line, 1)
+        for err in self._dropped:
+            self.ctx.diagnostics.warn(err.message + "; dropped, the rest of the block is written", where)
+        return self.comment_out(block) + (text or "")
+
+    def generate(self, block: Block) -> str:
+        sections = block.sections
+        motion = sections.get("Motion")
+        if motion is not None and motion.mode in ("cw", "ccw"):  # type: ignore[attr-defined]
+            return self._arc_block(block, motion)  # type: ignore[arg-type]
+        offset = sections.get("ToolLengthOffset")
+        if offset is not None and offset.mode == "cancel" and (  # type: ignore[attr-defined]
+                motion is not None or "CompoundMotion" in sections):
+            # grbl refuses G49 (an axis command of its own) in a block with motion: write it first.
+            first = Block(block.line, None, "\n")
+            first.sections = {"ToolLengthOffset": offset}
+            rest = Block(block.line, None, block.eol)
+            rest.sections = {k: v for k, v in sections.items() if k != "ToolLengthOffset"}
+            return super().generate(first) + super().generate(rest)
+        text = super().generate(block)
+        if block.text is None and block.sections and not text.strip():
+            return ""  # a generated part whose only words grbl does without (G98/G99, G64)
+        return text
+
+    def _arc_block(self, block: Block, arc: Motion) -> str:
+        """grbl needs an end point in the plane of every arc (no full-circle form): a full circle
+        written as ``G3 I-7.`` gets a zero increment, in G91 for this one block."""
+        plane = block.sections.get("Plane")
+        a0, a1, _ = PLANE_AXES[plane.plane if plane is not None else self.plane]  # type: ignore[attr-defined]
+        if a0 in arc.axes or a1 in arc.axes:
+            return super().generate(block)
+        distance = block.sections.get("DistanceMode")
+        absolute = (distance.mode if distance is not None else self.distance) == "absolute"  # type: ignore[attr-defined]
+        if absolute and arc.axes:
+            self.unsupported("a helical full circle with no end point in its plane, in absolute mode", block)
+        fixed = Block(block.line, None, block.eol)
+        fixed.sections = dict(block.sections)
+        fixed.sections["Motion"] = Motion(arc.mode, {a0: 0.0, **arc.axes}, arc.center, arc.radius)
+        if not absolute:
+            return super().generate(fixed)
+        fixed.sections["DistanceMode"] = DistanceMode("incremental")
+        text = super().generate(fixed)
+        return text + self.distance_mode_words(DistanceMode("absolute"), block)[0] + (block.eol or "\n")
+
+    def plane_words(self, s: Any, block: Block) -> list[str]:
+        self.plane = s.plane
+        return super().plane_words(s, block)
+
+    def section_words(self, key: str, section: Section, block: Block) -> list[str]:
+        try:
+            return super().section_words(key, section, block)
+        except UnsupportedError as err:
+            if self._strict or key not in DROPPABLE or self.ctx.on_unsupported != "warn":
+                raise
+            self._dropped.append(err)
+            return []
+
+    def compound(self, block: Block, compound: CompoundMotion) -> str:
+        self._strict = True
+        try:
+            return super().compound(block, compound)
+        finally:
+            self._strict = False
+
+    def item_line(self, item: Section, block: Block) -> str:
+        """A pause inside an expansion is for the operator to work at the tool (orient it by hand, jog it
+        out): grbl's M0 leaves the spindle turning, so a running spindle is stopped first."""
+        line = super().item_line(item, block)
+        if isinstance(item, ProgramControl) and item.kind == "stop" and self.spindle != "stop":  # type: ignore[attr-defined]
+            self.spindle = "stop"
+            return self.SPINDLE["stop"] + "\n" + line
+        return line
+
+    # -- section words -----------------------------------------------------------------------------
+    def program_start(self, s: Any, block: Block) -> str:
+        """grbl's parser rejects the letter O: the program number survives as a comment."""
+        name = f"O{int(s.number):04d}" if s.number is not None else str(s.name)
+        return self.comment(name)
+
+    def block_delete_words(self, s: Any, block: Block) -> list[str]:
+        self.unsupported("block delete '/' (grbl ignores it: the block would always run)", block)
+        return []
+
+    def return_level_words(self, s: Any, block: Block) -> list[str]:
+        """G98/G99 only steer canned cycles, which grbl never runs (they arrive expanded)."""
+        return []
+
+    def path_control_words(self, s: Any, block: Block) -> list[str]:
+        if not s.one_shot and s.mode == "cutting":
+            return []
+        return super().path_control_words(s, block)
+
+    def motion_words(self, s: Any, block: Block) -> list[str]:
+        extra = [a for a in s.axes if a not in GRBL_AXES]
+        if extra:
+            self.unsupported(f"motion of axis {extra[0]} (grbl drives X, Y and Z)", block)
+        return super().motion_words(s, block)
+
+    def tool_length_offset_words(self, s: Any, block: Block) -> list[str]:
+        if s.mode != "cancel":
+            register = f" H{s.register}" if s.register is not None else ""
+            self.unsupported(f"a tool length offset from a table (G43{register}; grbl has only G43.1)", block)
+        return super().tool_length_offset_words(s, block)
+
+    def cutter_compensation_words(self, s: Any, block: Block) -> list[str]:
+        if s.mode != "off":
+            self.unsupported(f"cutter radius compensation ({s.mode})", block)
+        return ["G40"]
+
+    def tool_select_words(self, s: Any, block: Block) -> list[str]:
+        self.tool = s.number
+        return super().tool_select_words(s, block)
+
+    def tool_change_words(self, s: Any, block: Block) -> list[str]:
+        """No tool changer (grbl 1.1 rejects M6): ``T<n> M0``, a pause to change the tool by hand.
+        grbl ignores T, so the T word only names the tool; the grbl reader reads the pair back as a
+        tool change. A running spindle is stopped first, as a tool changer would."""
+        words: list[str] = []
+        if "ToolSelect" not in block.sections and self.tool is not None:
+            words.append(f"T{self.tool}")
+        if self.spindle != "stop" and "SpindleControl" not in block.sections:
+            self.ctx.diagnostics.warn("the spindle is running at a tool change: M5 written before the pause",
+                                      Location(self.ctx.file, block.line, 1))
+            words.append("M5")
+            self.spindle = "stop"
+        tool = f"T{self.tool}" if self.tool is not None else "THE NEXT TOOL"
+        return words + ["M0", self.comment(f"TOOL CHANGE: LOAD {tool}, THEN CYCLE START")]
+
+    def spindle_control_words(self, s: Any, block: Block) -> list[str]:
+        self.spindle = s.direction
+        return super().spindle_control_words(s, block)
+
+    def spindle_orientation_words(self, s: Any, block: Block) -> list[str]:
+        mode = self.ctx.setup.cycles.orientation
+        angle = float(s.angle)
+        if mode == "m19":
+            return ["M19"] + ([f"R{self.number(angle)}"] if angle else [])
+        if mode == "stop":
+            words = [] if self.spindle == "stop" or "SpindleControl" in block.sections else ["M5"]
+            self.spindle = "stop"
+            return words + ["M0", self.comment(f"ORIENT THE SPINDLE TO {self.number(angle)} DEG BY HAND, "
+                                               "THEN CYCLE START")]
+        self.unsupported("an oriented spindle stop (M19); a set-up with <Cycles orientation=\"stop\"/> "
+                         "pauses for the operator instead", block)
+        return []

@@ -1,0 +1,77 @@
+"""LinuxCNC (RS274/NGC) milling dialect, shipped as a separate plugin distribution.
+
+It registers through the ``postproc`` entry-point group and hooks, exactly as a third party would.
+Reading follows the RS274/NGC rules (DIALECTS.md §2.1 "LinuxCNC / RS274-NGC baseline"): numbers
+without decimal-point scaling, ``;`` comments, ``L`` repeats, G98 as "retract to the old Z when it is
+above R", R-plane retract (G99) at start-up as in LinuxCNC's interpreter. Subprograms and control flow
+(O-words, M98/M99), parameters and expressions are refused with a located error.
+"""
+
+from __future__ import annotations
+
+from copy import copy as shallow_copy
+from typing import Callable
+
+from postproc.dialect import Dialect
+from postproc.errors import Diagnostics
+from postproc.hookspecs import hookimpl
+from postproc.setup import MachineSetup
+from postproc.syntax import Context
+from postproc.xmlio import XFactory
+
+from .block_syntax import NgcBlockSyntax
+from .reader import NgcReader
+from .writer import LinuxcncWriter
+
+NATIVE = frozenset({
+    "drill", "drill_dwell", "peck_chip", "peck_deep", "tap", "tap_left", "bore_feed", "bore_stop",
+    "bore_dwell_feed",
+})
+
+
+class Linuxcnc(Dialect):
+    NAME = "linuxcnc"
+    DESCRIPTION = "LinuxCNC 2.9 milling (RS274/NGC; no O-words, parameters or expressions yet)"
+    READER = NgcReader
+    WRITER = LinuxcncWriter
+    PIPELINE_FILE = "linuxcnc.xml"
+    NATIVE_CYCLES = NATIVE
+    """G73, G74, G81-G86, G89. Not G76 (threading here), G87/G88 (RS274/NGC words and motion), and
+    there is no fine boring: those are expanded."""
+    CYCLE_SEMANTICS = "rs274"
+    """How the native cycles move: start below R rises to R first, G98 returns to the old Z only when
+    it is above R, G91 R is measured from the Z at the block's start, G74/G84/G89 feed out to the
+    clear level, G73/G83 clearances are fixed (0.254 mm / 0.010 in)."""
+    DWELL_UNIT = "seconds"
+    """G4 P and a cycle's P are seconds."""
+    START_RETURN_LEVEL = "r"
+    """The retract mode in force at program start (LinuxCNC's interpreter starts in G99)."""
+    PECK_CLEARANCE_MM = 0.254
+    """G73 retract and G83 re-approach clearance: a constant of the interpreter (0.010 in), not a
+    machine parameter, so reading LinuxCNC uses it whatever the set-up's ``Cycles`` say."""
+
+    @classmethod
+    def context(cls, file: str, setup: MachineSetup, diagnostics: Diagnostics) -> Context:
+        ctx = super().context(file, _with_linuxcnc_clearances(setup, cls.PECK_CLEARANCE_MM), diagnostics)
+        ctx.state.return_level = cls.START_RETURN_LEVEL
+        return ctx
+
+
+def _with_linuxcnc_clearances(setup: MachineSetup, mm: float) -> MachineSetup:
+    """A copy of ``setup`` with LinuxCNC's fixed peck clearances (the caller's set-up is not changed)."""
+    cycles = setup.cycles
+    if cycles.peck_retract == mm and cycles.peck_clearance == mm:
+        return setup
+    copy = shallow_copy(setup)
+    copy.cycles = cycles.model_copy(update={"peck_retract": mm, "peck_clearance": mm})
+    return copy
+
+
+@hookimpl
+def postproc_register_dialects(register: Callable[[type], None]) -> None:
+    register(Linuxcnc)
+
+
+@hookimpl
+def postproc_register_xml(factory: XFactory) -> None:
+    NgcBlockSyntax.reg(factory)

@@ -1,0 +1,246 @@
+"""NgcBlockSyntax: gives a lexed RS274/NGC (LinuxCNC) block its neutral sections.
+
+It reuses Fanuc's block logic where the meaning is the same (``FanucBlockSyntax._g_sections``: modal
+sections, motion, arcs, modal cycle repetition) and replaces what RS274/NGC reads differently:
+
+* numbers mean what they say: ``X10`` is 10 units, there is no decimal-point scaling;
+* ``G4 P`` and a cycle's ``P`` are seconds, as a real number;
+* ``L`` is the cycle repeat count; ``K`` in a drilling cycle is an error, as in LinuxCNC;
+* ``G80`` leaves no motion mode in force: axis words after it need a motion code;
+* ``G43`` without ``H`` uses the selected tool; ``M19 R`` gives the orientation angle;
+* its own G/M tables (``codes.py``): codes with no neutral meaning are kept verbatim, tagged
+  ``linuxcnc``; M98/M99 subprograms and G90.1 are refused with a located error.
+"""
+
+from __future__ import annotations
+
+from typing import Any, ClassVar
+
+from dialects.fanuc.block_syntax import FanucBlockSyntax, _col_of_word, _second_col
+from dialects.fanuc.codes import g_key
+from postproc.errors import ParseError, ProgramError
+from postproc.ir import (
+    Block, Coolant, Dwell, Feed, NativeCode, ProgramControl, SpindleControl, SpindleOrientation, SpindleSpeed,
+    ToolChange, ToolSelect,
+)
+from postproc.syntax import Context
+
+from . import codes as ngc
+
+REAL_LETTERS = frozenset("XYZABCUVWIJKRQPF")
+"""Addresses read as real numbers, exactly as written."""
+INTEGER_LETTERS = frozenset("NTHDL")
+_STATE_KEY = "NgcBlockSyntax"
+"""``ctx.state.extra`` key: True while G80 leaves no motion mode in force."""
+_MOTION_GROUP = ("01", "09")
+
+
+class NgcBlockSyntax(FanucBlockSyntax):
+    """Lexed words -> neutral sections, for LinuxCNC milling (RS274/NGC)."""
+
+    XNAME = "NgcBlockSyntax"
+    __slots__ = ()
+    DIALECT: ClassVar[str] = "linuxcnc"
+    """Tag of the verbatim (NativeCode) sections this syntax makes."""
+    G_CODES: ClassVar[dict[str, tuple[str, str, object]]] = ngc.G_CODES
+    NATIVE_G: ClassVar[dict[str, str]] = ngc.NATIVE_G
+    REFUSED_G: ClassVar[dict[str, str]] = ngc.REFUSED_G
+    M_CODES: ClassVar[dict[int, tuple[str, object]]] = ngc.M_CODES
+    NATIVE_M: ClassVar[dict[int, str]] = ngc.NATIVE_M
+    REFUSED_M: ClassVar[dict[int, str]] = ngc.REFUSED_M
+    USER_M: ClassVar[range] = ngc.USER_M
+    REAL_LETTERS: ClassVar[frozenset[str]] = REAL_LETTERS
+    INTEGER_LETTERS: ClassVar[frozenset[str]] = INTEGER_LETTERS
+
+    def build(self, block: Block, ctx: Context) -> None:
+        words = block.words
+        if not words:
+            return
+        codes: dict[str, tuple[str, str, object, str]] = {}
+        natives: list[str] = []
+        raw: dict[str, str] = {}
+        mcodes: list[tuple[int, str]] = []
+        for letter, num in words:
+            up = letter.upper()
+            if up == "G":
+                self._g_code(ctx, block, num, codes, natives)
+            elif up == "M":
+                if "." in num:
+                    raise ParseError(f"M code M{num} takes no decimal point", ctx.at(block, ctx.column_of(block, "M")))
+                number = int(num)
+                if number in self.REFUSED_M:
+                    raise ParseError(self.REFUSED_M[number], ctx.at(block, _col_of_word(block, "M", num)))
+                mcodes.append((number, num))
+            elif up in raw:
+                raise ParseError(f"address {up} appears twice in one block", ctx.at(block, _second_col(block, up)))
+            else:
+                raw[up] = num
+        self._path_tolerance(codes, natives, raw)
+        if natives:
+            self._native(block, ctx, natives, raw)
+            return
+        values = block.values
+        for up, num in raw.items():
+            values[up] = self._value(block, ctx, up, num)
+        state = ctx.state
+        extra = state.extra
+        cycle_block = "09" in codes and codes["09"][1] == "cycle" or (
+            state.cycle is not None and "01" not in codes and "09" not in codes)
+        self._check_cycle_words(block, ctx, codes, values, cycle_block)
+        if "08" in codes and codes["08"][2] == "positive" and "H" not in values:
+            self._loaded_tool(block, ctx, values)
+        no_motion = extra.get(_STATE_KEY, False)
+        if "01" in codes or "09" in codes:
+            no_motion = codes.get("09", ("", ""))[1] == "cycle_cancel" and "01" not in codes
+            extra[_STATE_KEY] = no_motion
+        if no_motion and not cycle_block and "01" not in codes and codes.get("00", ("", ""))[1] != "home":
+            axis = next((k for k in values if k in "XYZABCUVW"), None)
+            if axis is not None:
+                raise ProgramError("axis words with no motion mode in force (G80 cancels it: program G0 or G1)",
+                                   ctx.at(block, ctx.column_of(block, axis)))
+        used = {"N"}
+        if cycle_block:
+            used.add("L")
+        self._g_sections(block, ctx, codes, values, used, cycle_block)
+        if "MachineCoordinates" in block.sections and "Motion" in block.sections:
+            self._machine_move(block, ctx, codes)
+        self._ngc_m_sections(block, ctx, mcodes, values, used)
+        if "F" in values:
+            block.add(Feed(float(values["F"])))
+            used.add("F")
+        if "S" in values:
+            block.add(SpindleSpeed(float(values["S"])))
+            used.add("S")
+        if "T" in values:
+            block.add(ToolSelect(int(values["T"])))
+            used.add("T")
+        unused = [k for k in values if k not in used]
+        if unused:
+            up = unused[0]
+            raise ProgramError(f"address {up} has no meaning in this block", ctx.at(block, ctx.column_of(block, up)))
+
+    def _value(self, block: Block, ctx: Context, up: str, num: str) -> float | int:
+        if up in self.REAL_LETTERS:
+            return float(num)
+        if up in self.INTEGER_LETTERS:
+            if "." in num:
+                raise ParseError(f"address {up} takes a whole number ({up}{num})",
+                                 ctx.at(block, ctx.column_of(block, up)))
+            return int(num)
+        if up == "S":
+            return float(num) if "." in num else int(num)
+        raise ParseError(f"address {up} is not used by the {self.DIALECT} dialect",
+                         ctx.at(block, ctx.column_of(block, up)))
+
+    def _g_code(self, ctx: Context, block: Block, num: str, codes: dict[str, Any], natives: list[str]) -> None:
+        key = g_key(num)
+        refused = self.REFUSED_G.get(key)
+        if refused is not None:
+            raise ParseError(refused, ctx.at(block, _col_of_word(block, "G", num)))
+        entry = self.G_CODES.get(key)
+        if entry is None:
+            if key in self.NATIVE_G:
+                natives.append(key)
+                return
+            raise ParseError(f"unknown G code G{num}", ctx.at(block, _col_of_word(block, "G", num)))
+        group = entry[0]
+        other = codes.get(group)
+        if other is None and group in _MOTION_GROUP:
+            other = codes.get(_MOTION_GROUP[group == "01"])
+        if other is not None:
+            raise ParseError(f"G codes G{other[3]} and G{num} are both in one modal group",
+                             ctx.at(block, _col_of_word(block, "G", num)))
+        codes[group] = (group, entry[1], entry[2], num)
+
+    @staticmethod
+    def _path_tolerance(codes: dict[str, Any], natives: list[str], raw: dict[str, str]) -> None:
+        """``G64 P Q`` (blending with a tolerance) has no neutral meaning: keep it verbatim."""
+        path = codes.get("15")
+        if path is not None and path[2] == "cutting" and ("P" in raw or "Q" in raw):
+            natives.append("64")
+
+    def _native(self, block: Block, ctx: Context, natives: list[str], raw: dict[str, str]) -> None:
+        """Keep a block with a code the IR does not model verbatim, tagged with its meaning."""
+        key = natives[0]
+        what = f"G{key} ({self.NATIVE_G.get(key, 'path blending with a tolerance')})"
+        block.add(NativeCode(self.DIALECT, what, block.text or ""))
+        for up, num in raw.items():
+            block.values[up] = float(num) if "." in num else int(num)
+
+    def _check_cycle_words(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],
+                           cycle_block: bool) -> None:
+        if not cycle_block:
+            if "L" in values:
+                raise ProgramError("L (repeat count) outside a canned cycle", ctx.at(block, ctx.column_of(block, "L")))
+            return
+        if "K" in values:
+            raise ProgramError("K in a drilling cycle: LinuxCNC counts repeats with L",
+                               ctx.at(block, ctx.column_of(block, "K")))
+        if values.get("L", 1) < 1:
+            raise ProgramError("a canned cycle cannot repeat zero times (L must be 1 or more)",
+                               ctx.at(block, ctx.column_of(block, "L")))
+
+    def _loaded_tool(self, block: Block, ctx: Context, values: dict[str, Any]) -> None:
+        """LinuxCNC's G43 without H applies the selected tool's offset."""
+        tool = ctx.state.tool if "T" not in values else values["T"]
+        if tool is None:
+            raise ProgramError("G43 without H uses the loaded tool, which is not known here: program H",
+                               ctx.at(block, ctx.column_of(block, "G")))
+        values["H"] = tool
+
+    def _machine_move(self, block: Block, ctx: Context, codes: dict[str, Any]) -> None:
+        """G53 moves in the motion mode in force, which must be G0 or G1 (Fanuc's G53 always rapids)."""
+        mode = codes["01"][2] if "01" in codes else ctx.state.motion
+        if ctx.state.extra.get(_STATE_KEY) and "01" not in codes:
+            mode = None
+        if mode not in ("rapid", "linear"):
+            raise ProgramError("G53 needs G0 or G1 in force", ctx.at(block, _col_of_word(block, "G", "53")))
+        block.sections["Motion"].mode = mode  # type: ignore[attr-defined]
+
+    def _dwell(self, block: Block, ctx: Context, values: dict[str, Any], used: set[str], col: int = 1) -> None:
+        if "P" not in values:
+            raise ProgramError("G4 needs a dwell time P (seconds)", ctx.at(block, col))
+        seconds = float(values["P"])
+        if seconds < 0:
+            raise ProgramError("a dwell time cannot be negative", ctx.at(block, ctx.column_of(block, "P")))
+        used.add("P")
+        block.add(Dwell(seconds))
+
+    def _ngc_m_sections(self, block: Block, ctx: Context, mcodes: list[tuple[int, str]], values: dict[str, Any],
+                        used: set[str]) -> None:
+        seen: dict[str, str] = {}
+        for number, num in mcodes:
+            entry = self.M_CODES.get(number)
+            if entry is None:
+                if number in self.NATIVE_M:
+                    what = f"M{num} ({self.NATIVE_M[number]})"
+                elif number in self.USER_M:
+                    what = f"M{num} (user M code)"
+                else:
+                    raise ParseError(f"unknown M code M{num}", ctx.at(block, _col_of_word(block, "M", num)))
+                if "NativeCode" in block.sections:
+                    raise ParseError(f"M{num}: only one machine-specific function per block is supported",
+                                     ctx.at(block, _col_of_word(block, "M", num)))
+                block.add(NativeCode(self.DIALECT, what, f"M{num}"))
+                used.update("PQE")
+                continue
+            kind, arg = entry
+            if kind in seen:
+                raise ParseError(f"M codes M{seen[kind]} and M{num} conflict in one block",
+                                 ctx.at(block, _col_of_word(block, "M", num)))
+            seen[kind] = num
+            if kind == "program":
+                block.add(ProgramControl(arg))
+            elif kind == "spindle":
+                block.add(SpindleControl(arg))
+            elif kind == "orient":
+                self._orient(block, ctx, num, values, used)
+            elif kind == "tool_change":
+                block.add(ToolChange())
+            elif kind == "coolant":
+                block.add(Coolant(arg))
+
+    def _orient(self, block: Block, ctx: Context, num: str, values: dict[str, Any], used: set[str]) -> None:
+        """M19: LinuxCNC takes the angle from R (Q is a timeout, P the direction)."""
+        block.add(SpindleOrientation(float(values.get("R", ctx.setup.cycles.orient_angle))))
+        used.update("RQP")

@@ -1,0 +1,212 @@
+"""Backplot: a toolpath drawn as a plan view (XY) and a side view (XZ) side by side, as SVG or PNG.
+
+Streaming-friendly: the whole drawing keeps one flat array of points (three doubles and one byte
+each), never an object per move; arcs are linearised on arrival within ``CHORD_ERROR`` mm. Scaling
+needs the extent of the whole path, so the picture is written at the end. Rapids are dashed, feeds
+solid; both views share one scale so X lines up.
+"""
+
+from __future__ import annotations
+
+import math
+from array import array
+from typing import Any, BinaryIO, Iterable, Sequence, TextIO
+from xml.sax.saxutils import escape
+
+from .errors import UsageError
+from .toolpath import CENTRE_KEYS, arc_points
+
+CHORD_ERROR = 0.01
+"""Largest distance in mm between a drawn chord and the arc it stands for."""
+
+RAPID, FEED = 1, 2
+"""Point codes: the kind of the segment that ends at the point (0: the path's first point)."""
+
+WIDTH, HEIGHT = 1000, 560
+PANEL = 470
+"""Each view is a square panel of this many pixels; the plot inside keeps ``MARGIN`` from its edge."""
+MARGIN = 20
+TOP = 30
+"""Room above the panels for the view titles."""
+COLOURS = {RAPID: "#d62728", FEED: "#1f4e9c"}
+DASH = (6, 4)
+"""Rapid dash pattern in pixels: drawn, gap."""
+STROKE = 1.2
+
+
+class Backplot:
+    """Collects a toolpath's points; ``write_svg``/``write_png`` draw them."""
+
+    def __init__(self, start: dict[str, float]) -> None:
+        self.pos = (start.get("X", 0.0), start.get("Y", 0.0), start.get("Z", 0.0))
+        self.xyz = array("d", self.pos)
+        self.codes = array("B", [0])
+        self.moves = {RAPID: 0, FEED: 0}
+
+    # -- collecting --------------------------------------------------------------------------------
+    def add_all(self, events: Iterable[dict[str, Any]]) -> None:
+        add = self.add
+        for ev in events:
+            if "move" in ev:
+                add(ev)
+
+    def add(self, ev: dict[str, Any]) -> None:
+        """One motion event (other events are ignored)."""
+        kind = ev.get("move")
+        if kind is None:
+            return
+        x, y, z = self.pos
+        end = (float(ev.get("x", x)), float(ev.get("y", y)), float(ev.get("z", z)))
+        code = RAPID if kind == "rapid" else FEED
+        self.moves[code] += 1
+        if kind in ("cw", "ccw"):
+            centre = tuple(float(ev.get(CENTRE_KEYS[a], p)) for a, p in zip("XYZ", self.pos))
+            for p in arc_points(self.pos, end, centre, ev.get("plane", "XY"), kind == "cw",  # type: ignore[arg-type]
+                                CHORD_ERROR):
+                self.xyz.extend(p)
+                self.codes.append(code)
+        else:
+            self.xyz.extend(end)
+            self.codes.append(code)
+        self.pos = end
+
+    # -- layout ------------------------------------------------------------------------------------
+    def bounds(self) -> tuple[float, float, float, float, float, float]:
+        xs, ys, zs = self.xyz[0::3], self.xyz[1::3], self.xyz[2::3]
+        return min(xs), max(xs), min(ys), max(ys), min(zs), max(zs)
+
+    def transforms(self) -> tuple[Any, Any, float]:
+        """Model -> pixel maps for the plan and side views, and the common scale (px per mm)."""
+        x0, x1, y0, y1, z0, z1 = self.bounds()
+        inner = PANEL - 2 * MARGIN
+        spans = [s for s in (x1 - x0, y1 - y0, z1 - z0) if s > 1e-9]
+        scale = inner / max(spans) if spans else 1.0
+        xc, yc, zc = (x0 + x1) / 2, (y0 + y1) / 2, (z0 + z1) / 2
+        cy = TOP + PANEL / 2
+        left_c = MARGIN / 2 + PANEL / 2
+        right_c = WIDTH - MARGIN / 2 - PANEL / 2
+
+        def plan(i: int) -> tuple[float, float]:
+            return left_c + (self.xyz[i] - xc) * scale, cy - (self.xyz[i + 1] - yc) * scale
+
+        def side(i: int) -> tuple[float, float]:
+            return right_c + (self.xyz[i] - xc) * scale, cy - (self.xyz[i + 2] - zc) * scale
+
+        return plan, side, scale
+
+    def polylines(self, kind: int, view: Any) -> Iterable[list[tuple[float, float]]]:
+        """The connected runs of one kind of segment, in pixels."""
+        codes = self.codes
+        run: list[tuple[float, float]] = []
+        for n in range(1, len(codes)):
+            if codes[n] == kind:
+                if not run:
+                    run.append(view(3 * (n - 1)))
+                run.append(view(3 * n))
+            elif run:
+                yield run
+                run = []
+        if run:
+            yield run
+
+    def panels(self) -> list[tuple[str, float]]:
+        """Title and left edge of each view panel."""
+        return [("Plan (XY)", MARGIN / 2), ("Side (XZ)", WIDTH - MARGIN / 2 - PANEL)]
+
+    # -- SVG ---------------------------------------------------------------------------------------
+    def write_svg(self, out: TextIO) -> None:
+        """One <path> per view and kind of move that occurs (at most four), a frame and a legend."""
+        plan, side, scale = self.transforms()
+        w = out.write
+        w(f'<?xml version="1.0" encoding="UTF-8"?>\n<svg xmlns="http://www.w3.org/2000/svg" '
+          f'width="{WIDTH}" height="{HEIGHT}" viewBox="0 0 {WIDTH} {HEIGHT}" font-family="sans-serif" '
+          f'font-size="12">\n<rect width="{WIDTH}" height="{HEIGHT}" fill="white"/>\n')
+        for (title, left), view in zip(self.panels(), (plan, side)):
+            w(f'<g class="view">\n<rect x="{left}" y="{TOP}" width="{PANEL}" height="{PANEL}" fill="none" '
+              f'stroke="#bbbbbb"/>\n<text x="{left + 4}" y="{TOP - 8}">{escape(title)}</text>\n')
+            for kind, cls in ((RAPID, "rapid"), (FEED, "feed")):  # cuts drawn over rapids
+                if not self.moves[kind]:
+                    continue
+                dash = f' stroke-dasharray="{DASH[0]},{DASH[1]}"' if kind == RAPID else ""
+                w(f'<path class="{cls}" fill="none" stroke="{COLOURS[kind]}" stroke-width="{STROKE}"{dash} '
+                  f'stroke-linejoin="round" d="')
+                for run in self.polylines(kind, view):
+                    w("M" + " L".join(f"{px:.2f},{py:.2f}" for px, py in run))
+                    w(" ")
+                w('"/>\n')
+            w("</g>\n")
+        self._svg_legend(w, scale)
+        w("</svg>\n")
+
+    def _svg_legend(self, w: Any, scale: float) -> None:
+        y = TOP + PANEL + 28
+        x = MARGIN / 2
+        w(f'<g class="legend">\n<line x1="{x}" y1="{y - 4}" x2="{x + 30}" y2="{y - 4}" stroke="{COLOURS[FEED]}" '
+          f'stroke-width="{STROKE}"/>\n<text x="{x + 36}" y="{y}">feed ({self.moves[FEED]})</text>\n'
+          f'<line x1="{x + 130}" y1="{y - 4}" x2="{x + 160}" y2="{y - 4}" stroke="{COLOURS[RAPID]}" '
+          f'stroke-width="{STROKE}" stroke-dasharray="{DASH[0]},{DASH[1]}"/>\n'
+          f'<text x="{x + 166}" y="{y}">rapid ({self.moves[RAPID]})</text>\n'
+          f'<text x="{x + 280}" y="{y}">{escape(self._extent_text(scale))}</text>\n</g>\n')
+
+    def _extent_text(self, scale: float) -> str:
+        x0, x1, y0, y1, z0, z1 = self.bounds()
+        return (f"X {x0:g}..{x1:g}  Y {y0:g}..{y1:g}  Z {z0:g}..{z1:g} mm  "
+                f"(1 mm = {scale:.3g} px)")
+
+    # -- PNG ---------------------------------------------------------------------------------------
+    def write_png(self, out: BinaryIO) -> None:
+        """The same drawing rasterised with Pillow (the ``render`` extra)."""
+        try:
+            from PIL import Image, ImageDraw
+        except ImportError:
+            raise UsageError("--format png needs Pillow: pip install 'postproc[render]'") from None
+        plan, side, scale = self.transforms()
+        image = Image.new("RGB", (WIDTH, HEIGHT), "white")
+        draw = ImageDraw.Draw(image)
+        width = max(1, round(STROKE))
+        for (title, left), view in zip(self.panels(), (plan, side)):
+            draw.rectangle((left, TOP, left + PANEL, TOP + PANEL), outline="#bbbbbb")
+            draw.text((left + 4, TOP - 20), title, fill="black")
+            for run in self.polylines(RAPID, view):
+                for seg in dashes(run, DASH):
+                    draw.line(seg, fill=COLOURS[RAPID], width=width)
+            for run in self.polylines(FEED, view):  # cuts drawn over rapids
+                draw.line(run, fill=COLOURS[FEED], width=width, joint="curve")
+        y = TOP + PANEL + 28
+        x = MARGIN / 2
+        draw.line(((x, y - 4), (x + 30, y - 4)), fill=COLOURS[FEED], width=width)
+        draw.text((x + 36, y - 10), f"feed ({self.moves[FEED]})", fill="black")
+        for seg in dashes([(x + 130, y - 4), (x + 160, y - 4)], DASH):
+            draw.line(seg, fill=COLOURS[RAPID], width=width)
+        draw.text((x + 166, y - 10), f"rapid ({self.moves[RAPID]})", fill="black")
+        draw.text((x + 280, y - 10), self._extent_text(scale), fill="black")
+        image.save(out, format="PNG")
+
+
+def dashes(points: Sequence[tuple[float, float]], pattern: tuple[float, float]) -> Iterable[list[tuple[float, float]]]:
+    """Split a polyline into its drawn dashes; the pattern runs on across vertices (PIL has no dashes)."""
+    on, off = pattern
+    period = on + off
+    phase = 0.0  # distance into the current period
+    dash: list[tuple[float, float]] = []
+    for (ax, ay), (bx, by) in zip(points, points[1:]):
+        length = math.hypot(bx - ax, by - ay)
+        done = 0.0
+        while done < length:
+            drawing = phase < on
+            left = (on - phase) if drawing else (period - phase)
+            step = min(left, length - done)
+            t0, t1 = done / length, (done + step) / length
+            if drawing:
+                if not dash:
+                    dash.append((ax + (bx - ax) * t0, ay + (by - ay) * t0))
+                dash.append((ax + (bx - ax) * t1, ay + (by - ay) * t1))
+            done += step
+            phase += step
+            if phase >= period - 1e-9:
+                phase = 0.0
+            if phase >= on and dash:
+                yield dash
+                dash = []
+    if len(dash) > 1:
+        yield dash

@@ -1,0 +1,36 @@
+"""Milling hole cycles (G73, G74, G76, G81-G89): resolution, exact expansion and lowering.
+
+``CannedCycleResolveSyntax`` turns a cycle block into a ``CannedCycle`` section (the neutral record)
+and a ``CompoundMotion`` (the motion the controller makes), one family syntax per cycle family;
+``expand_canned_cycles`` (lowering) keeps the cycle native or writes its expansion for a target.
+"""
+
+from __future__ import annotations
+
+from postproc.xmlio import XFactory
+
+from .back_boring import BackBoringSyntax
+from .boring import BoringSyntax
+from .drilling import DrillingSyntax
+from .expansion import CycleExpansion
+from .fine_boring import FineBoringSyntax
+from .manual_boring import ManualBoringSyntax
+from .peck_drilling import PeckDrillingSyntax
+from .resolve import EXPANSIONS, CannedCycleResolveSyntax
+from .section import CannedCycle
+from .tapping import TappingSyntax
+
+XML_CLASSES = (CannedCycle, CannedCycleResolveSyntax, *EXPANSIONS)
+"""Every XML node class of the package."""
+
+__all__ = [
+    "BackBoringSyntax", "BoringSyntax", "CannedCycle", "CannedCycleResolveSyntax", "CycleExpansion",
+    "DrillingSyntax", "FineBoringSyntax", "ManualBoringSyntax", "PeckDrillingSyntax", "TappingSyntax",
+    "XML_CLASSES", "register",
+]
+
+
+def register(factory: XFactory | None = None) -> None:
+    """Register the package's XML classes with ``factory`` (the default one if None); idempotent."""
+    for cls in XML_CLASSES:
+        cls.reg(factory)

@@ -1,0 +1,40 @@
+"""G85 and G89 boring (feed out) and G86 boring (spindle stop, rapid out)."""
+
+from __future__ import annotations
+
+from .expansion import CycleExpansion, ToolPath
+from .section import CannedCycle
+
+
+class BoringSyntax(CycleExpansion):
+    """Fanuc: G85 feed to the bottom, feed to R, (G98: rapid to the initial level); G89 the same with a
+    dwell P at the bottom; G86 feed, spindle stop, rapid out, spindle CW (no dwell).
+
+    RS274 (LinuxCNC's interpreter): G85 feeds to R and rapids to the clear level; G89 dwells and feeds
+    straight out to the clear level; G86 dwells before the stop and restarts the spindle in the
+    direction it had.
+    """
+
+    XNAME = "BoringSyntax"
+    __slots__ = ()
+    KINDS = frozenset(("bore_feed", "bore_stop", "bore_dwell_feed"))
+
+    def hole(self, path: ToolPath, cycle: CannedCycle, a: float, b: float) -> None:
+        rs274 = cycle.semantics == "rs274"
+        out = self.return_level(cycle)
+        self.position(path, cycle, a, b)
+        path.cut(cycle.bottom, cycle.feed)  # type: ignore[arg-type]
+        if cycle.kind == "bore_stop":
+            if rs274:
+                path.dwell(cycle.dwell, always=True)
+            path.spindle("stop")
+            path.rapid(level=out)
+            path.spindle(cycle.spindle if rs274 and cycle.spindle in ("cw", "ccw") else "cw")
+            return
+        if cycle.kind == "bore_dwell_feed":
+            path.dwell(cycle.dwell, always=rs274)
+            if rs274:
+                path.cut(out, cycle.feed)
+                return
+        path.cut(cycle.r, cycle.feed)  # type: ignore[arg-type]
+        path.rapid(level=out)

@@ -1,0 +1,21 @@
+"""G81 drilling and G82 spot drilling: feed to the bottom, (dwell,) rapid out."""
+
+from __future__ import annotations
+
+from .expansion import CycleExpansion, ToolPath
+from .section import CannedCycle
+
+
+class DrillingSyntax(CycleExpansion):
+    """G81/G82. The rapid out goes straight from the bottom to the return level, not through R."""
+
+    XNAME = "DrillingSyntax"
+    __slots__ = ()
+    KINDS = frozenset(("drill", "drill_dwell"))
+
+    def hole(self, path: ToolPath, cycle: CannedCycle, a: float, b: float) -> None:
+        self.position(path, cycle, a, b)
+        path.cut(cycle.bottom, cycle.feed)  # type: ignore[arg-type]
+        if cycle.kind == "drill_dwell":
+            path.dwell(cycle.dwell, always=cycle.semantics == "rs274")
+        path.rapid(level=self.return_level(cycle))

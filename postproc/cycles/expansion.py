@@ -1,0 +1,160 @@
+"""The base of the cycle expansions: a tool path builder and the per-hole loop they share.
+
+Each family (drilling, pecking, tapping, ...) is a syntax object that turns a resolved ``CannedCycle``
+into a ``CompoundMotion``: absolute rapids and feeds in program units, dwells, spindle actions. The
+builder works in plane coordinates (first and second plane axis, drilling-axis level) so one
+sequence serves G17, G18 and G19, and it drops zero-length moves, as a controller's path does.
+"""
+
+from __future__ import annotations
+
+from typing import ClassVar, Iterator
+
+from lxml import etree
+
+from postproc.errors import ProgramError
+from postproc.ir import Block, CompoundMotion, Dwell, Feed, Motion, ProgramControl, Section, SpindleControl
+from postproc.ir import SpindleOrientation
+from postproc.state import PLANE_AXES
+from postproc.syntax import Context, Syntax
+
+from .section import CannedCycle
+from .semantics import FANUC, SEMANTICS
+
+EPS = 1e-9
+"""Two levels closer than this are the same level (float noise of repeated increments)."""
+
+
+class ToolPath:
+    """Collects the items of one expansion, tracking where the tool is."""
+
+    __slots__ = ("axes", "pos", "items", "feed")
+
+    def __init__(self, cycle: CannedCycle) -> None:
+        self.axes = PLANE_AXES[cycle.plane]
+        self.pos: dict[str, float] = dict(cycle.start)
+        self.items: list[Section] = []
+        self.feed = cycle.feed
+        """Feed in force: the block's own F is already applied, so a Feed item appears only on a change."""
+
+    def level(self) -> float:
+        return self.pos[self.axes[2]]
+
+    def rapid(self, a: float | None = None, b: float | None = None, level: float | None = None) -> None:
+        self._move("rapid", a, b, level)
+
+    def cut(self, level: float, feed: float | None) -> None:
+        """Feed along the drilling axis (down into the hole, or up in back boring)."""
+        if feed is not None and feed != self.feed:
+            self.items.append(Feed(feed))
+            self.feed = feed
+        self._move("linear", None, None, level)
+
+    def _move(self, mode: str, a: float | None, b: float | None, level: float | None) -> None:
+        first, second, normal = self.axes
+        target = dict(self.pos)
+        for axis, value in ((first, a), (second, b), (normal, level)):
+            if value is not None:
+                target[axis] = value
+        missing = [k for k in "XYZ" if k not in target]
+        if not missing and all(k in self.pos and abs(target[k] - self.pos[k]) < EPS for k in "XYZ"):
+            return
+        if missing:
+            raise ProgramError(f"the tool's {missing[0]} position is unknown before the cycle")
+        self.items.append(Motion(mode, {k: target[k] for k in "XYZ"}))
+        self.pos = target
+
+    def dwell(self, seconds: float | None, always: bool = False) -> None:
+        """A dwell; Fanuc emits none without P, LinuxCNC's interpreter always does (``always``)."""
+        if seconds or always:
+            self.items.append(Dwell(float(seconds or 0.0)))
+
+    def spindle(self, direction: str) -> None:
+        self.items.append(SpindleControl(direction))
+
+    def orient(self, angle: float | None) -> None:
+        self.items.append(SpindleOrientation(angle or 0.0))
+
+    def program_stop(self) -> None:
+        self.items.append(ProgramControl("stop"))
+
+    def end(self) -> dict[str, float]:
+        return dict(self.pos)
+
+
+def level(cycle: CannedCycle, name: str) -> float:
+    """A resolved level of the cycle; a record read from XML may lack one, which is a located error."""
+    value = getattr(cycle, name)
+    if value is None:
+        raise ProgramError(f"the {cycle.kind} cycle has no {name} level")
+    return float(value)
+
+
+def holes(cycle: CannedCycle) -> Iterator[tuple[float, float]]:
+    """The plane positions of the holes this block makes: a G91 row, or the same spot K times."""
+    first, second, _ = PLANE_AXES[cycle.plane]
+    a, b = cycle.position[first], cycle.position[second]
+    da, db = cycle.step.get(first, 0.0), cycle.step.get(second, 0.0)
+    for i in range(cycle.repeat):
+        yield a + i * da, b + i * db
+
+
+class CycleExpansion(Syntax):
+    """Base of the per-family expansion syntaxes. Subclasses set ``KINDS`` and implement ``hole``.
+
+    As a pipeline step it gives a block that has a resolved ``CannedCycle`` of its kinds the
+    ``CompoundMotion`` it stands for; ``CannedCycleResolveSyntax`` calls ``expand`` directly.
+    """
+
+    __slots__ = ()
+    KINDS: ClassVar[frozenset[str]] = frozenset()
+
+    def build(self, block: Block, ctx: Context) -> None:
+        cycle = block.sections.get("CannedCycle")
+        if not isinstance(cycle, CannedCycle) or cycle.kind not in self.KINDS:
+            return
+        if "CompoundMotion" not in block.sections:
+            block.add(CompoundMotion(cycle.kind, self.expand(cycle)[0]))
+
+    def expand(self, cycle: CannedCycle) -> tuple[list[Section], dict[str, float]]:
+        """The items of the cycle and where the tool is when it ends."""
+        path = ToolPath(cycle)
+        if cycle.repeat <= 0:
+            return [], path.end()
+        for name in ("initial", "r", "bottom"):
+            level(cycle, name)
+        rules = SEMANTICS.get(cycle.semantics, FANUC)
+        if rules.rise_to_r and level(cycle, "initial") < level(cycle, "r") - EPS:
+            path.rapid(level=cycle.r)
+        for a, b in holes(cycle):
+            self.hole(path, cycle, a, b)
+        return path.items, path.end()
+
+    def hole(self, path: ToolPath, cycle: CannedCycle, a: float, b: float) -> None:
+        raise NotImplementedError(f"{type(self).__name__} must implement hole")
+
+    @classmethod
+    def position(cls, path: ToolPath, cycle: CannedCycle, a: float, b: float) -> None:
+        """Operations 1 and 2: rapid in the plane at the current level (RS274: at least the return
+        level, in one straight traverse), then rapid to R."""
+        if SEMANTICS.get(cycle.semantics, FANUC).position_at_clear:
+            path.rapid(a, b, max(path.level(), cls.return_level(cycle)))
+        else:
+            path.rapid(a, b)
+        path.rapid(level=cycle.r)
+
+    @staticmethod
+    def return_level(cycle: CannedCycle) -> float:
+        """Operation 6: the level a rapid-out goes to (initial in G98, R in G99; RS274's G98 goes to
+        R instead when R is above the initial level)."""
+        r = level(cycle, "r")
+        if cycle.return_level != "initial":
+            return r
+        initial = level(cycle, "initial")
+        return max(initial, r) if SEMANTICS.get(cycle.semantics, FANUC).clear_above_r else initial
+
+    @classmethod
+    def from_xml(cls, el: etree._Element) -> "CycleExpansion":
+        if len(el):
+            raise ValueError(f"<{cls.XNAME}> takes no children")
+        return cls()

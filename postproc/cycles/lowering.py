@@ -1,0 +1,107 @@
+"""expand_canned_cycles: keep a hole cycle native where the target runs it, else write its motion.
+
+A cycle is expanded when the target does not run its kind natively, when the set-up asks for it
+(``<Cycles expand="drill,back_bore"/>`` or ``"all"``), or when the target's controller moves through
+its native cycles by other rules (``CYCLE_SEMANTICS`` on the dialect, default 'fanuc'): the
+expansion is exact, the native cycle there would not be. Once a block of a cycle is expanded, the
+rest of that cycle (up to its cancel) is expanded too: the expansion's own G00/G01 have cancelled the
+cycle on the target, so a later native repeat would no longer drill there.
+
+An expanded block loses its ``CannedCycle`` and is marked changed, so the writer writes its
+``CompoundMotion`` with a comment naming the source line; a native block loses its
+``CompoundMotion``, so nothing is written twice.
+"""
+
+from __future__ import annotations
+
+from typing import Iterator
+
+from postproc.dialect import Dialect
+from postproc.errors import UnsupportedError
+from postproc.ir import Block, Comments, CompoundMotion, Motion, ProgramControl, Section, SpindleOrientation
+from postproc.syntax import Context
+
+from .section import CannedCycle
+from .semantics import CODES
+
+_CANCELS = frozenset(("rapid", "linear", "cw", "ccw"))
+
+
+def expand_canned_cycles(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """Lowering transform (see the module docstring)."""
+    cycles = ctx.setup.cycles
+    forced = cycles.expanded()
+    every = "all" in forced
+    native = target.NATIVE_CYCLES
+    semantics = getattr(target, "CYCLE_SEMANTICS", "fanuc")
+    can_orient = target.SPINDLE_ORIENTATION
+    expanding = False  # from the first expanded block of a cycle to its cancel
+    for block in blocks:
+        sections = block.sections
+        cycle = sections.get("CannedCycle")
+        if cycle is None:
+            if expanding and ("CycleCancel" in sections or getattr(sections.get("Motion"), "mode", None) in _CANCELS):
+                expanding = False
+            yield block
+            continue
+        if not isinstance(cycle, CannedCycle):
+            yield block
+            continue
+        expanding = expanding or every or cycle.kind in forced or cycle.kind not in native \
+            or cycle.semantics != semantics
+        if not expanding:
+            sections.pop("CompoundMotion", None)
+            yield block
+            continue
+        source = (block.text or _source(block)).strip()
+        del sections["CannedCycle"]
+        block.changed()
+        compound = sections.get("CompoundMotion")
+        if isinstance(compound, CompoundMotion):
+            _restore_motion_mode(compound, cycle.motion)
+            if not can_orient and _orients(compound) \
+                    and not _handle_orientation(block, compound, ctx, cycles.orientation, target, source):
+                continue
+        yield block
+
+
+def _restore_motion_mode(compound: CompoundMotion, mode: str | None) -> None:
+    """End the expansion in the group-01 mode the program had, so a plain move after G80 keeps it."""
+    last = next((item for item in reversed(compound.items) if isinstance(item, Motion)), None)
+    if last is not None and mode in ("rapid", "linear") and last.mode != mode:
+        compound.items.append(Motion(mode, {}))
+
+
+def _orients(compound: CompoundMotion) -> bool:
+    return any(isinstance(item, SpindleOrientation) for item in compound.items)
+
+
+def _handle_orientation(block: Block, compound: CompoundMotion, ctx: Context, mode: str,
+                        target: type[Dialect], source: str) -> bool:
+    """Apply ``<Cycles orientation=...>`` to an expansion for a target without oriented stops.
+    Returns False when the block must not be written (an error was reported)."""
+    if mode == "m19":
+        return True
+    if mode == "stop":
+        items: list[Section] = []
+        for item in compound.items:
+            if isinstance(item, SpindleOrientation):
+                items.append(Comments([f"orient the spindle to {item.angle:g} deg by hand, then cycle start"]))
+                items.append(ProgramControl("stop"))
+            else:
+                items.append(item)
+        compound.items = items
+        return True
+    code = CODES.get(compound.term, compound.term)
+    err = UnsupportedError(f"{code} needs an oriented spindle stop, which the {target.NAME} dialect cannot "
+                           f"make (set <Cycles orientation=\"stop\"/> or \"m19\")", ctx.at(block))
+    if ctx.on_unsupported == "warn":
+        ctx.diagnostics.warn(err.message + "; written as a comment", err.location)
+        block.sections = {"Comments": Comments([f"UNSUPPORTED LINE {block.line}: {source}"])}
+        return True
+    ctx.diagnostics.error(err)
+    return False
+
+
+def _source(block: Block) -> str:
+    return " ".join(letter + num for letter, num in block.words)

@@ -1,0 +1,42 @@
+"""G73 high-speed peck and G83 deep-hole peck drilling."""
+
+from __future__ import annotations
+
+from postproc.errors import ProgramError
+
+from .expansion import EPS, CycleExpansion, ToolPath, level
+from .section import CannedCycle
+from .semantics import CODES
+
+
+class PeckDrillingSyntax(CycleExpansion):
+    """G73: feed q, rapid back by d, feed q + d, ... (the tool stays in the hole).
+    G83: feed q, rapid to R, rapid to d above the last bottom, feed q + d, ...
+
+    Both end with a shorter last peck to the bottom and one rapid out. Depths are computed from R
+    (R - k*q), not accumulated, so many pecks carry no float drift. The same rules hold for
+    LinuxCNC, whose d is fixed (0.254 mm): its set-up should say so.
+    """
+
+    XNAME = "PeckDrillingSyntax"
+    __slots__ = ()
+    KINDS = frozenset(("peck_chip", "peck_deep"))
+
+    def hole(self, path: ToolPath, cycle: CannedCycle, a: float, b: float) -> None:
+        self.position(path, cycle, a, b)
+        r, bottom = level(cycle, "r"), level(cycle, "bottom")
+        q = cycle.q
+        if q is None or q <= 0:
+            raise ProgramError(f"{CODES[cycle.kind]} peck depth Q must be positive")
+        d = cycle.clearance or 0.0
+        k = 1
+        depth = r - q
+        while depth > bottom + EPS:
+            path.cut(depth, cycle.feed)
+            if cycle.kind == "peck_deep":
+                path.rapid(level=r)
+            path.rapid(level=depth + d)
+            k += 1
+            depth = r - k * q
+        path.cut(bottom, cycle.feed)
+        path.rapid(level=self.return_level(cycle))

@@ -1,0 +1,365 @@
+"""CannedCycleResolveSyntax: hole cycle words + modal state -> a resolved ``CannedCycle`` and its motion.
+
+Runs after the dialect's block syntax (which gives a cycle block a ``CycleCall`` and leaves the cycle
+words in ``block.values``, and a block repeating an active cycle a ``Motion(None)``) and before
+``ModalStateSyntax``. It applies DIALECTS.md §2.1's common rules: the initial level, G98/G99, G90/G91
+meanings of R and Z, modal cycle data, repetition, cancel, K/L repeats, the three planes, dwell P,
+peck Q and shift Q, and refuses what the controller refuses with a located error. Then it has the
+cycle's family syntax expand it and moves the tracked position to where the tool ends.
+
+The ``semantics`` attribute picks the controller family ('fanuc', the default, or 'rs274' for
+LinuxCNC); ``semantics.py`` lists every rule that differs.
+"""
+
+from __future__ import annotations
+
+import re
+from typing import Any
+
+from lxml import etree
+
+from postproc.errors import Location, PostprocError, ProgramError, UnsupportedError
+from postproc.ir import Block, CompoundMotion
+from postproc.state import MM_PER_INCH, PLANE_AXES, CycleState, ModalState
+from postproc.syntax import Context, Syntax
+from postproc.xmlio import DEFAULT
+
+from .back_boring import BackBoringSyntax
+from .boring import BoringSyntax
+from .drilling import DrillingSyntax
+from .expansion import CycleExpansion
+from .fine_boring import FineBoringSyntax
+from .manual_boring import ManualBoringSyntax
+from .peck_drilling import PeckDrillingSyntax
+from .section import WORD_ORDER, CannedCycle
+from .semantics import CODES, DWELLING, PECK, SEMANTICS, SHIFT, TAP, Semantics
+from .tapping import TappingSyntax
+
+EXPANSIONS: tuple[type[CycleExpansion], ...] = (
+    DrillingSyntax, PeckDrillingSyntax, TappingSyntax, BoringSyntax, FineBoringSyntax, BackBoringSyntax,
+    ManualBoringSyntax,
+)
+"""The built-in family expansions, one per cycle family."""
+
+GROUP_01 = frozenset(("rapid", "linear", "cw", "ccw"))
+"""Motion modes that cancel a canned cycle."""
+AXIS_LETTERS = frozenset("XYZABCUVW")
+MODAL_LETTERS = frozenset("RQP")
+"""Cycle data that stays in force (with the drilling-axis word) until the cycle is cancelled."""
+_STATE_KEY = "CannedCycleResolveSyntax"
+"""``ctx.state.extra`` key: the plane the active cycle was commanded in."""
+_DWELL_KEY = "CannedCycleResolveSyntax.P"
+"""``ctx.state.extra`` key: the last cycle P, which RS274 tapping falls back on even after G80."""
+_SHIFT_AXIS = {"+X": (1.0, 0), "-X": (-1.0, 0), "+Y": (1.0, 1), "-Y": (-1.0, 1)}
+"""Set-up shift direction -> sign and plane axis (first/second), Fanuc's parameter table for G17-G19."""
+
+
+class CannedCycleResolveSyntax(Syntax):
+    """Resolves hole cycles per ``semantics``; child elements replace the built-in family expansions."""
+
+    XNAME = "CannedCycleResolveSyntax"
+    __slots__ = ("semantics", "expansions", "_rules", "_by_kind")
+
+    def __init__(self, semantics: str = "fanuc", expansions: list[CycleExpansion] | None = None) -> None:
+        if semantics not in SEMANTICS:
+            raise ValueError(f"unknown cycle semantics {semantics!r} (use {' or '.join(SEMANTICS)})")
+        self.semantics = semantics
+        self.expansions = list(expansions or [])
+        """Expansions given in XML, overriding the built-in one of their kinds."""
+        self._rules: Semantics = SEMANTICS[semantics]
+        self._by_kind: dict[str, CycleExpansion] = {}
+        for expansion in [cls() for cls in EXPANSIONS] + self.expansions:
+            for kind in expansion.KINDS:
+                self._by_kind[kind] = expansion
+
+    @classmethod
+    def from_xml(cls, el: etree._Element) -> "CannedCycleResolveSyntax":
+        unknown = set(el.attrib) - {"semantics"}
+        if unknown:
+            raise ValueError(f"unknown attribute(s) {', '.join(sorted(unknown))}")
+        expansions = []
+        for child in DEFAULT.children(el):
+            if not isinstance(child, CycleExpansion):
+                raise ValueError(f"<{type(child).XNAME}> is not a cycle expansion")
+            expansions.append(child)
+        return cls(el.get("semantics", "fanuc"), expansions)
+
+    def make_xml_source(self, base_dir: str = ".", rel_file: str = "", exhibition_only: bool = False) -> etree._Element:
+        el = etree.Element(self.XNAME)
+        if self.semantics != "fanuc":
+            el.set("semantics", self.semantics)
+        for expansion in self.expansions:
+            el.append(expansion.make_xml_source(base_dir, rel_file, exhibition_only))
+        return el
+
+    def _key(self) -> tuple[Any, ...]:
+        return (self.semantics, tuple(self.expansions))
+
+    def __repr__(self) -> str:
+        return f"CannedCycleResolveSyntax({self.semantics!r})"
+
+    # -- per block ---------------------------------------------------------------------------------
+    def build(self, block: Block, ctx: Context) -> None:
+        state = ctx.state
+        sections = block.sections
+        if state.cycle is None and "CycleCall" not in sections:
+            return  # the common block: no cycle anywhere (kept first and cheap, it runs on every block)
+        call = sections.get("CycleCall")
+        if call is not None:
+            self._resolve_or_drop(block, ctx, call.kind, True)  # type: ignore[attr-defined]
+            return
+        if state.cycle is None:
+            return
+        motion = sections.get("Motion")
+        if "CycleCancel" in sections or (motion is not None and motion.mode in GROUP_01):  # type: ignore[attr-defined]
+            _cancel(state)
+            return
+        if motion is not None and motion.mode is not None:  # type: ignore[attr-defined]
+            return  # a reference return (group 00) leaves the cycle in force
+        if motion is None and ("Dwell" in sections or "NativeCode" in sections):
+            return  # G04 (its P is the dwell's) or a verbatim code such as M98 P..: not cycle data
+        if any(letter in block.values for letter in self._letters(ctx)):
+            self._resolve_or_drop(block, ctx, state.cycle.kind, False)
+
+    def _resolve_or_drop(self, block: Block, ctx: Context, kind: str, call: bool) -> None:
+        """Resolve; on an error the block's cycle sections go too, so later steps do not report the
+        same block again (the error itself is reported by the pipeline)."""
+        try:
+            self._resolve(block, ctx, kind, call)
+        except PostprocError:
+            block.sections.pop("CycleCall", None)
+            motion = block.sections.get("Motion")
+            if motion is not None and motion.mode is None:  # type: ignore[attr-defined]
+                del block.sections["Motion"]
+            raise
+
+    def _letters(self, ctx: Context) -> str:
+        """The addresses that carry cycle data: axes, R, Q, P and the repeat count."""
+        return "XYZABCUVWRQP" + "".join(self._rules.repeat_letters(ctx.setup.input.repeat_address))
+
+    def _resolve(self, block: Block, ctx: Context, kind: str, call: bool) -> None:
+        rules = self._rules
+        sections = block.sections
+        state = ctx.state
+        code = CODES.get(kind, kind)
+        at_code = ctx.at(block, _code_column(block, code) if call else 1)
+        if kind in rules.unsupported:
+            raise UnsupportedError(f"{code} has no {kind.replace('_', ' ')} meaning under {rules.name} "
+                                   "cycle semantics", at_code)
+        units = sections.get("Units")
+        if units is not None:
+            state.set_units(units.system)  # type: ignore[attr-defined]
+        plane = _modal(sections, "Plane", "plane", state.plane)
+        letters = self._letters(ctx)
+        words = {k: block.values[k] for k in WORD_ORDER if k in block.values and k in letters}
+        fail = _Failer(ctx, block, words, at_code)
+        first, second, normal = PLANE_AXES[plane]
+        for letter in words:
+            if letter in AXIS_LETTERS and letter not in (first, second, normal):
+                raise fail(f"{code} cannot move axis {letter}: only {first}, {second} and {normal} "
+                           "take part in a hole cycle", letter)
+        active = state.cycle
+        if active is not None and state.extra.get(_STATE_KEY, plane) != plane:
+            raise fail(f"the plane cannot change while {code} is active (cancel the cycle first)")
+        same = active is not None and (rules.carry_over or active.kind == kind)
+        modal = dict(active.words) if same and active is not None else {}
+        modal.update({k: v for k, v in words.items() if k in MODAL_LETTERS or k == normal})
+        if "P" in words:
+            state.extra[_DWELL_KEY] = words["P"]
+        elif rules.sticky_tap_dwell and kind in TAP and _DWELL_KEY in state.extra:
+            modal["P"] = state.extra[_DWELL_KEY]
+        holes = self._holes(ctx, words, call, plane, fail)
+        feed = _modal(sections, "Feed", "value", state.feed)
+        return_level = _modal(sections, "ReturnLevel", "level", state.return_level)
+        spindle = _modal(sections, "SpindleControl", "direction", state.spindle)
+        self._check(kind, code, modal, normal, feed, return_level, spindle, call, fail)
+
+        incremental = _modal(sections, "DistanceMode", "mode", state.distance) == "incremental"
+        initial, r, bottom, top = self._levels(ctx, kind, code, modal, normal, incremental, fail)
+        here = {k: v for k, v in state.position.items() if k in "XYZ" and v is not None}
+        position, step = _positions(code, words, here, plane, incremental, holes, fail)
+        if holes and rules.rise_to_r and r > initial and (first not in here or second not in here):
+            missing = first if first not in here else second
+            raise fail(f"{code} rises to R where the tool stands, but its {missing} position is unknown")
+        q = modal.get("Q")
+        cycle = CannedCycle(
+            kind, call=call, semantics=rules.name, return_level=return_level, plane=plane,
+            initial=initial, r=r, bottom=bottom, top=top, q=q if kind in PECK else None,
+            clearance=_clearance(ctx, kind, state.units), dwell=_seconds(modal.get("P"), rules),
+            orient=ctx.setup.cycles.orient_angle if kind in SHIFT else None, feed=feed, repeat=holes,
+            spindle=spindle, motion=state.motion, start=here, position=position, step=step,
+            shift=_shift(ctx, kind, q, first, second), words=words,
+        )
+        items, end = self._by_kind[kind].expand(cycle)
+        block.add(cycle)
+        block.add(CompoundMotion(kind, items))
+        sections.pop("CycleCall", None)
+        motion = sections.get("Motion")
+        if motion is not None and motion.mode is None:  # type: ignore[attr-defined]
+            del sections["Motion"]
+        for axis, value in end.items():
+            state.position[axis] = value
+        if active is not None:
+            active.kind, active.words = kind, modal  # the initial level stays while a cycle is active
+        else:
+            state.cycle = CycleState(kind, modal, initial)
+        state.extra[_STATE_KEY] = plane
+
+    def _holes(self, ctx: Context, words: dict[str, Any], call: bool, plane: str, fail: "_Failer") -> int:
+        """How many holes the block makes: K/L (once without), none without hole position data."""
+        rules = self._rules
+        repeat, letter = 1, None
+        for candidate in rules.repeat_letters(ctx.setup.input.repeat_address):
+            if candidate in words:
+                repeat, letter = int(words[candidate]), candidate
+                break
+        if letter is not None and repeat < 0:
+            raise fail(f"repeat count {letter} cannot be negative", letter)
+        if letter is not None and repeat == 0 and rules.zero_repeat_error:
+            raise fail(f"repeat count {letter} cannot be 0", letter)
+        first, second, normal = PLANE_AXES[plane]
+        position_words = (first, second, normal) if rules.any_axis_repeats else (first, second)
+        return repeat if call or any(k in words for k in position_words) else 0
+
+    def _check(self, kind: str, code: str, modal: dict[str, Any], normal: str, feed: float | None,
+               return_level: str, spindle: str, call: bool, fail: "_Failer") -> None:
+        """The words the cycle needs, and the combinations the controller refuses."""
+        rs274 = self._rules.name == "rs274"
+        if normal not in modal:
+            raise fail(f"{code} needs a hole bottom {normal}")
+        if "R" not in modal:
+            raise fail(f"{code} needs an R level R")
+        p = modal.get("P")
+        if rs274 and kind in DWELLING and p is None:
+            raise fail(f"{code} needs a dwell time P")
+        if p is not None and p < 0:
+            raise fail(f"{code} dwell time P cannot be negative", "P")
+        q = modal.get("Q")
+        if kind in PECK:
+            if q is None:
+                raise fail(f"{code} needs a peck depth Q")
+            if q <= 0:
+                raise fail(f"{code} peck depth Q must be positive", "Q")
+        if kind in SHIFT:
+            if q is None and kind == "back_bore":
+                raise fail(f"{code} needs a shift Q")
+            if q is not None and q < 0:
+                raise fail(f"{code} shift Q cannot be negative: the set-up gives its direction", "Q")
+        if feed is None or feed <= 0:
+            raise fail(f"{code} needs a feed rate F")
+        if kind == "back_bore" and return_level == "r":
+            if call:
+                raise fail(f"{code} cannot be used with G99")
+            where = fail.ctx.at(fail.block, _code_column(fail.block, "G99"))
+            raise ProgramError(f"{code} cannot be used with G99", where)
+        if rs274 and kind in TAP and spindle != ("cw" if kind == "tap" else "ccw"):
+            turning = "clockwise (M3)" if kind == "tap" else "counterclockwise (M4)"
+            raise fail(f"{code} needs the spindle turning {turning}")
+        if rs274 and kind in ("bore_stop", "bore_manual") and spindle not in ("cw", "ccw"):
+            raise fail(f"{code} needs the spindle turning")
+
+    def _levels(self, ctx: Context, kind: str, code: str, modal: dict[str, Any], normal: str,
+                incremental: bool, fail: "_Failer") -> tuple[float, float, float, float | None]:
+        """(initial level, R level, bottom, top of a counterbore) on the drilling axis. The initial
+        level is the one the active cycle started at; G91 R is measured from it."""
+        start = ctx.state.position.get(normal)
+        active = ctx.state.cycle
+        initial = active.initial if active is not None else start
+        if initial is None:
+            raise fail(f"the initial level of {code} is unknown: {normal} was never positioned absolutely")
+        if start is None:
+            raise fail(f"the {normal} position before {code} is unknown: program {normal} absolutely first")
+        r, bottom = float(modal["R"]), float(modal[normal])
+        if incremental:
+            r += initial
+            bottom += r
+        if kind != "back_bore":
+            if bottom > r:
+                raise fail(f"{code} hole bottom {normal} is above the R level", normal)
+            return initial, r, bottom, None
+        if ctx.setup.cycles.back_boring_levels == "seed":
+            if bottom >= r:
+                raise fail(f"{code} {normal} must lie below R (back-boring levels 'seed': {normal} is the "
+                           "bottom, R the top)", normal)
+            return initial, r, bottom, r
+        if r >= bottom:
+            raise fail(f"{code} R must lie below {normal} (back-boring levels 'manual': R is the bottom, "
+                       f"{normal} the top)", "R")
+        return initial, r, r, bottom
+
+
+class _Failer:
+    """Makes a located ProgramError: at the named word when the block has it, else at the cycle's G word."""
+
+    __slots__ = ("ctx", "block", "words", "at_code")
+
+    def __init__(self, ctx: Context, block: Block, words: dict[str, Any], at_code: Location) -> None:
+        self.ctx, self.block, self.words, self.at_code = ctx, block, words, at_code
+
+    def __call__(self, message: str, letter: str | None = None) -> ProgramError:
+        if letter is not None and letter in self.words:
+            return ProgramError(message, self.ctx.at(self.block, self.ctx.column_of(self.block, letter)))
+        return ProgramError(message, self.at_code)
+
+
+def _positions(code: str, words: dict[str, Any], here: dict[str, float], plane: str, incremental: bool,
+               holes: int, fail: _Failer) -> tuple[dict[str, float], dict[str, float]]:
+    """The first hole in the plane and the step to the next (G91: increments from where the tool is)."""
+    position: dict[str, float] = {}
+    step: dict[str, float] = {}
+    for axis in PLANE_AXES[plane][:2]:
+        now = here.get(axis)
+        if incremental:
+            step[axis] = float(words.get(axis, 0.0))
+            if now is not None:
+                position[axis] = now + step[axis]
+        elif axis in words:
+            position[axis] = float(words[axis])
+        elif now is not None:
+            position[axis] = now
+        if holes and axis not in position:
+            raise fail(f"the hole position of {code} is unknown: {axis} was never positioned absolutely")
+    return position, step
+
+
+def _modal(sections: dict[str, Any], key: str, attr: str, default: Any) -> Any:
+    """This block's own modal word if it has one (it applies before the cycle), else the state's."""
+    section = sections.get(key)
+    return default if section is None else getattr(section, attr)
+
+
+def _cancel(state: ModalState) -> None:
+    state.cycle = None
+    state.extra.pop(_STATE_KEY, None)
+
+
+def _clearance(ctx: Context, kind: str, units: str) -> float | None:
+    """G73 retract or G83 clearance d from the set-up (given in mm), in program units."""
+    if kind not in PECK:
+        return None
+    cycles = ctx.setup.cycles
+    d = cycles.peck_retract if kind == "peck_chip" else cycles.peck_clearance
+    return d if units == "mm" else d / MM_PER_INCH
+
+
+def _seconds(p: float | int | None, rules: Semantics) -> float | None:
+    if p is None:
+        return None
+    return p / 1000.0 if rules.dwell_ms else float(p)
+
+
+def _shift(ctx: Context, kind: str, q: float | None, first: str, second: str) -> dict[str, float] | None:
+    if kind not in SHIFT:
+        return None
+    sign, index = _SHIFT_AXIS[ctx.setup.cycles.shift_direction]
+    return {(first, second)[index]: sign * abs(float(q or 0.0))}
+
+
+_COMMENT = re.compile(r"\([^)]*\)?")
+
+
+def _code_column(block: Block, code: str) -> int:
+    """Column of the cycle's G word in the source text (comments blanked, leading zeros allowed)."""
+    text = _COMMENT.sub(lambda m: " " * len(m.group(0)), (block.text or "").upper())
+    m = re.search(r"G\s*0*" + re.escape(code[1:]) + r"(?![\d.])", text)
+    return m.start() + 1 if m else 1

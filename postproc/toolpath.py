@@ -1,0 +1,496 @@
+"""Toolpath simulation: a block stream becomes a stream of motion and machine events (DESIGN.md,
+"Toolpath JSON lines"), so two dialects' programs can be compared and drawn in one neutral frame.
+
+Streaming: the simulator keeps the modal state and one position, never the program. It is a reading
+"target" without native canned cycles: the blocks pass through the registered lowering transforms for
+such a controller first, so cycles arrive expanded as ``CompoundMotion``.
+
+Assumptions (a simulator knows no machine data):
+- Positions are absolute work coordinates in mm from the set-up's start position (``Machine startX``...).
+  Every work offset (G54...) and tool length offset is taken as zero; the path is the programmed point,
+  cutter compensation is not applied.
+- Machine coordinates (G53) are therefore the same as work coordinates; they are always absolute.
+- A reference return (G28/G30) rapids to the intermediate point, then to the reference point, taken as
+  machine zero = work zero on the axes named in the block.
+- Arc centres ``cx, cy, cz`` are absolute; on the axis normal to the plane the centre carries the arc's
+  start value. ``plane`` is the IR's name of the plane: "XY", "ZX" or "YZ".
+- Optional-skip blocks (``/``) are executed, as with the block-delete switch off.
+- After the program end (M02/M30) no more events are emitted; the rest is still read and checked.
+- A T word alone is a preselection on a mill (the ``tool`` event comes with the tool change, M06);
+  on a lathe set-up T indexes the turret and emits the event itself.
+- Zero-length moves (after rounding to 6 decimals) are dropped; a full circle is not zero-length.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from typing import Any, Callable, Iterable, Iterator, TextIO
+
+from .api import gc_paused, read_blocks
+from .dialect import Dialect
+from .errors import Diagnostics, Location, PostprocError, ProgramError, UnsupportedError, UsageError
+from .ir import Block, Motion, Section
+from .lower import lower_for
+from .plugins import Registry, default_registry
+from .setup import MachineSetup
+from .state import MM_PER_INCH, PLANE_AXES
+from .syntax import Context
+
+Event = dict[str, Any]
+
+PLACES = 6
+"""Decimals of every number in a toolpath (1 nm): enough for any controller, stable across float noise."""
+ARC_TOLERANCE_MM = 0.01
+"""Largest difference between the start and end radius of an I/J/K arc (Fanuc parameter 3410's role)."""
+HEADER_LOOKAHEAD = 1000
+"""Events held back at most while waiting for the first feed move to fix the header's feed mode."""
+LINEAR_AXES = frozenset("XYZUVW")
+"""Axes converted from inches; rotary axes (A, B, C) are in degrees whatever the length unit."""
+PLANE_INDEX = {"XY": (0, 1, 2), "ZX": (2, 0, 1), "YZ": (1, 2, 0)}
+"""Per plane, indices into an (x, y, z) point of the first and second plane axis and of the normal."""
+CENTRE_KEYS = {"X": "cx", "Y": "cy", "Z": "cz"}
+
+
+class ToolpathTarget(Dialect):
+    """The simulator as a lowering target: it runs no canned cycle natively, everything else it reads.
+    Never registered as a dialect; it only selects the lowering transforms the simulation needs."""
+
+    NAME = "toolpath"
+    DESCRIPTION = "toolpath simulation (not a dialect)"
+    NATIVE_CYCLES = frozenset()
+
+
+def num(value: float) -> float | int:
+    """A number as written to a toolpath: rounded, integral values as int, never -0."""
+    r = round(value, PLACES)
+    if r == 0:
+        return 0
+    return int(r) if r.is_integer() else r
+
+
+def start_position(setup: MachineSetup) -> dict[str, float]:
+    """Where a program starts, per machine axis, in mm (rotary axes at 0)."""
+    m = setup.machine
+    start = {"X": m.start_x, "Y": m.start_y, "Z": m.start_z}
+    return {a: float(start.get(a, 0.0)) for a in m.axes}
+
+
+# -- arc geometry (also used by the backplot and verify) ----------------------------------------------
+
+def centre_from_radius(s: tuple[float, float], e: tuple[float, float], r: float,
+                       clockwise: bool) -> tuple[float, float]:
+    """Centre of an R-form arc in plane coordinates. Negative R is the long way (over 180 degrees)."""
+    dx, dy = e[0] - s[0], e[1] - s[1]
+    chord = math.hypot(dx, dy)
+    if chord < 10.0 ** -PLACES:
+        raise ProgramError("a full circle cannot be programmed with R (use I/J/K)")
+    half = chord / 2.0
+    radius = abs(r)
+    if radius < half:
+        if half - radius > ARC_TOLERANCE_MM:
+            raise ProgramError(f"arc radius {radius:.4f} mm is too small for a chord of {chord:.4f} mm")
+        radius = half
+    h = math.sqrt(max(radius * radius - half * half, 0.0))
+    # Left normal of the chord: a counter-clockwise arc of up to 180 degrees has its centre on the left.
+    nx, ny = -dy / chord, dx / chord
+    side = 1.0 if clockwise == (r < 0) else -1.0
+    return s[0] + dx / 2.0 + side * h * nx, s[1] + dy / 2.0 + side * h * ny
+
+
+def arc_sweep(s: tuple[float, float], e: tuple[float, float], c: tuple[float, float],
+              clockwise: bool) -> float:
+    """Angle swept from s to e about c, in (0, 2*pi]; coincident end points make a full circle."""
+    a0 = math.atan2(s[1] - c[1], s[0] - c[0])
+    a1 = math.atan2(e[1] - c[1], e[0] - c[0])
+    sweep = (a0 - a1) if clockwise else (a1 - a0)
+    sweep %= 2.0 * math.pi
+    if sweep < 1e-9:
+        sweep = 2.0 * math.pi
+    return sweep
+
+
+def arc_points(start: tuple[float, float, float], end: tuple[float, float, float],
+               centre: tuple[float, float, float], plane: str, clockwise: bool,
+               chord_error: float = 0.01, max_step: float = math.radians(5.0)) -> Iterator[tuple[float, float, float]]:
+    """Points along an arc (helix) after ``start`` up to ``end``, within ``chord_error`` of the curve."""
+    i, j, k = PLANE_INDEX[plane]
+    s, e, c = (start[i], start[j]), (end[i], end[j]), (centre[i], centre[j])
+    sweep = arc_sweep(s, e, c, clockwise)
+    r0 = math.hypot(s[0] - c[0], s[1] - c[1])
+    r1 = math.hypot(e[0] - c[0], e[1] - c[1])
+    rmax = max(r0, r1)
+    step = max_step
+    if rmax > chord_error:
+        step = min(step, 2.0 * math.acos(1.0 - chord_error / rmax))
+    n = max(1, math.ceil(sweep / step))
+    a0 = math.atan2(s[1] - c[1], s[0] - c[0])
+    sign = -1.0 if clockwise else 1.0
+    for q in range(1, n):
+        t = q / n
+        a = a0 + sign * sweep * t
+        r = r0 + (r1 - r0) * t
+        p = [0.0, 0.0, 0.0]
+        p[i] = c[0] + r * math.cos(a)
+        p[j] = c[1] + r * math.sin(a)
+        p[k] = start[k] + (end[k] - start[k]) * t
+        yield p[0], p[1], p[2]
+    yield end
+
+
+# -- the simulator -------------------------------------------------------------------------------------
+
+class Simulator:
+    """Modal state and position of one program run; ``block`` emits the block's events in order."""
+
+    def __init__(self, ctx: Context) -> None:
+        setup = ctx.setup
+        self.ctx = ctx
+        self.axes = tuple(setup.machine.axes)
+        self.keys = tuple((a, a.lower()) for a in self.axes)
+        self.pos = start_position(setup)
+        self.rounded = {a: num(v) for a, v in self.pos.items()}
+        self.scale = 1.0
+        self.plane = "XY"
+        self.incremental = False
+        self.feed_mode = "per_min"
+        self.feed: float | None = None
+        self.header_mode: str | None = None
+        """Feed mode the header states, fixed by the first feed move (None until then)."""
+        self.tool: int | None = None
+        self.lathe = setup.input.machine_type == "lathe"
+        self.ended = False
+        self.current: Block | None = None
+        """The block being simulated (for error locations)."""
+
+    # -- one block ---------------------------------------------------------------------------------
+    def block(self, block: Block, emit: Callable[[Event], None]) -> None:
+        sections = block.sections
+        if not sections or self.ended:
+            return
+        self.current = block
+        get = sections.get
+        native = get("NativeCode")
+        if native is not None:
+            code = native.what.split(" ", 1)[0]
+            raise UnsupportedError(f"{native.what} cannot be simulated", self._at(block, code))
+        keys = sections.keys()
+        if not keys.isdisjoint(_MODAL_KEYS):
+            self.modal(get)
+        line = block.line
+        before = not keys.isdisjoint(_EVENT_KEYS)
+        spindle = get("SpindleControl")
+        coolant = get("Coolant")
+        if before:
+            s = get("ToolSelect")
+            if s is not None:
+                self.tool = s.number
+                if self.lathe and "ToolChange" not in sections:
+                    emit({"line": line, "event": "tool", "number": s.number})
+            if "ToolChange" in sections:
+                emit({"line": line, "event": "tool", "number": self.tool})
+            if spindle is not None and spindle.direction != "stop":
+                emit({"line": line, "event": "spindle", "dir": spindle.direction})
+            if coolant is not None and coolant.mode != "off":
+                emit({"line": line, "event": "coolant", "on": True})
+            s = get("Dwell")
+            if s is not None:
+                emit({"line": line, "event": "dwell", "seconds": num(s.seconds)})
+        compound = get("CompoundMotion")
+        motion = get("Motion")
+        if compound is not None:
+            if motion is not None and motion.mode is not None:
+                self.motion(block, motion, False, emit)
+            for item in compound.items:
+                self.item(block, item, emit)
+        elif motion is not None:
+            if motion.mode is None and "CannedCycle" not in sections:
+                raise UnsupportedError("a canned-cycle repeat cannot be simulated: the cycle was not "
+                                       "resolved to motion", self._at(block))
+            if motion.mode is not None:
+                self.motion(block, motion, False, emit)
+        elif "CycleCall" in sections and "CannedCycle" not in sections:
+            raise UnsupportedError(f"canned cycle '{get('CycleCall').kind}' cannot be simulated: it was not "
+                                   "resolved to motion", self._at(block))
+        if not before:
+            return
+        if spindle is not None and spindle.direction == "stop":
+            emit({"line": line, "event": "spindle", "dir": "stop"})
+        s = get("SpindleOrientation")
+        if s is not None:
+            emit({"line": line, "event": "orient", "angle": num(s.angle)})
+        if coolant is not None and coolant.mode == "off":
+            emit({"line": line, "event": "coolant", "on": False})
+        s = get("ProgramControl")
+        if s is not None:
+            self.program_control(line, s.kind, emit)
+
+    def modal(self, get: Callable[[str], Any]) -> None:
+        """Apply the block's modal settings (before its motion, as a controller does)."""
+        s = get("Units")
+        if s is not None:
+            self.scale = MM_PER_INCH if s.system == "inch" else 1.0
+        s = get("Plane")
+        if s is not None:
+            self.plane = s.plane
+        s = get("DistanceMode")
+        if s is not None:
+            self.incremental = s.mode == "incremental"
+        s = get("FeedMode")
+        if s is not None:
+            self.feed_mode = s.mode
+        s = get("Feed")
+        if s is not None:
+            self._set_feed(s.value)
+
+    def item(self, block: Block, item: Section, emit: Callable[[Event], None]) -> None:
+        """One item of a compound motion (absolute, program units)."""
+        key, line = item.KEY, block.line
+        if key == "Motion":
+            self.motion(block, item, True, emit)  # type: ignore[arg-type]
+        elif key == "Feed":
+            self._set_feed(item.value)  # type: ignore[attr-defined]
+        elif key == "Dwell":
+            emit({"line": line, "event": "dwell", "seconds": num(item.seconds)})  # type: ignore[attr-defined]
+        elif key == "SpindleControl":
+            emit({"line": line, "event": "spindle", "dir": item.direction})  # type: ignore[attr-defined]
+        elif key == "SpindleOrientation":
+            emit({"line": line, "event": "orient", "angle": num(item.angle)})  # type: ignore[attr-defined]
+        elif key == "ProgramControl":
+            self.program_control(line, item.kind, emit)  # type: ignore[attr-defined]
+        else:
+            raise UnsupportedError(f"{key} inside a compound motion cannot be simulated", self._at(block))
+
+    def program_control(self, line: int, kind: str, emit: Callable[[Event], None]) -> None:
+        if kind in ("stop", "optional_stop"):
+            emit({"line": line, "event": "stop", "optional": kind == "optional_stop"})
+        elif kind in ("end", "end_rewind"):
+            emit({"line": line, "event": "end"})
+            self.ended = True
+        else:
+            raise UnsupportedError(f"program control '{kind}' cannot be simulated")
+
+    # -- motion ------------------------------------------------------------------------------------
+    def motion(self, block: Block, m: Motion, absolute: bool, emit: Callable[[Event], None]) -> None:
+        mode, line = m.mode, block.line
+        if mode in ("home", "home2"):
+            if not m.axes:
+                return
+            self.line_move("rapid", self.target(block, m.axes, absolute), line, emit)
+            ref = dict(self.pos)
+            for axis in m.axes:
+                ref[axis] = 0.0
+            self.line_move("rapid", ref, line, emit)
+            return
+        machine = "MachineCoordinates" in block.sections
+        target = self.target(block, m.axes, absolute or machine)
+        if mode == "rapid":
+            self.line_move("rapid", target, line, emit)
+        elif mode == "linear":
+            self.line_move("feed", target, line, emit)
+        elif mode in ("cw", "ccw"):
+            self.arc_move(block, m, target, emit)
+        else:
+            raise UnsupportedError(f"motion '{mode}' cannot be simulated", self._at(block))
+
+    def target(self, block: Block, axes: dict[str, float], absolute: bool) -> dict[str, float]:
+        """End point in mm of programmed axis words (absolute or incremental)."""
+        pos = self.pos
+        out = dict(pos)
+        incremental = self.incremental and not absolute
+        for axis, value in axes.items():
+            if axis not in pos:
+                raise ProgramError(f"axis {axis} is not on this machine (axes {''.join(self.axes)})",
+                                   self._at(block, axis))
+            v = value * self.scale if axis in LINEAR_AXES else value
+            out[axis] = pos[axis] + v if incremental else v
+        return out
+
+    def line_move(self, kind: str, target: dict[str, float], line: int, emit: Callable[[Event], None]) -> None:
+        pos = self.pos
+        rounded = self.rounded.copy()
+        for axis, value in target.items():
+            if value != pos[axis]:
+                rounded[axis] = num(value)
+        if rounded == self.rounded:
+            self.pos = target
+            return
+        ev: Event = {"line": line, "move": kind}
+        for axis, key in self.keys:
+            ev[key] = rounded[axis]
+        if kind != "rapid":
+            self._feed_into(ev)
+        self.pos, self.rounded = target, rounded
+        emit(ev)
+
+    def arc_move(self, block: Block, m: Motion, target: dict[str, float], emit: Callable[[Event], None]) -> None:
+        plane = self.plane
+        a1, a2, normal = PLANE_AXES[plane]
+        pos = self.pos
+        for axis in (a1, a2):
+            if axis not in pos:
+                raise ProgramError(f"an arc in the {plane} plane needs axis {axis}, not on this machine",
+                                   self._at(block))
+        s = (pos[a1], pos[a2])
+        e = (target[a1], target[a2])
+        clockwise = m.mode == "cw"
+        if m.radius is not None:
+            try:
+                c = centre_from_radius(s, e, m.radius * self.scale, clockwise)
+            except ProgramError as err:
+                raise err.located(self._at(block, "R")) from None
+        else:
+            offsets = m.center or {}
+            for axis in offsets:
+                if axis not in (a1, a2):
+                    raise ProgramError(f"arc centre offset along {axis} is outside the {plane} plane",
+                                       self._at(block, _CENTRE_LETTER.get(axis, "G")))
+            c = (s[0] + offsets.get(a1, 0.0) * self.scale, s[1] + offsets.get(a2, 0.0) * self.scale)
+            r0 = math.hypot(s[0] - c[0], s[1] - c[1])
+            r1 = math.hypot(e[0] - c[0], e[1] - c[1])
+            if abs(r0 - r1) > ARC_TOLERANCE_MM:
+                letter = next((_CENTRE_LETTER[a] for a in offsets if a in _CENTRE_LETTER), "G")
+                raise ProgramError(f"arc end point is not on the circle: radius {r0:.4f} mm at the start, "
+                                   f"{r1:.4f} mm at the end", self._at(block, letter))
+            if r0 < 10.0 ** -PLACES:
+                if num(e[0]) == num(s[0]) and num(e[1]) == num(s[1]):
+                    self.line_move("feed", target, block.line, emit)  # zero radius, zero length: dropped
+                    return
+                raise ProgramError("arc centre coincides with its start point", self._at(block))
+        rounded = {a: num(v) for a, v in target.items()}
+        ev: Event = {"line": block.line, "move": m.mode}
+        for axis, key in self.keys:
+            ev[key] = rounded[axis]
+        centre = {a1: c[0], a2: c[1], normal: pos.get(normal, 0.0)}
+        for axis in ("X", "Y", "Z"):
+            if axis in pos:
+                ev[CENTRE_KEYS[axis]] = num(centre[axis])
+        ev["plane"] = plane
+        self._feed_into(ev)
+        self.pos, self.rounded = target, rounded
+        emit(ev)
+
+    # -- feed --------------------------------------------------------------------------------------
+    def _set_feed(self, value: float) -> None:
+        self.feed = value if self.feed_mode == "inverse_time" else value * self.scale
+
+    def _feed_into(self, ev: Event) -> None:
+        if self.feed is None:
+            raise ProgramError("a feed move with no feed rate (program F first)", self._at())
+        ev["f"] = num(self.feed)
+        if self.header_mode is None:
+            self.header_mode = self.feed_mode
+        elif self.feed_mode != self.header_mode:
+            ev["feed_mode"] = self.feed_mode
+
+    # -- locations (computed only for errors) ------------------------------------------------------
+    def _at(self, block: Block | None = None, word: str | None = None) -> Location:
+        """Where ``word`` (a letter, or a code such as 'G68') stands in the block; column 1 if unknown."""
+        block = block or self.current
+        if block is None:
+            return Location(self.ctx.file, 0, 1)
+        if word is None:
+            return self.ctx.at(block)
+        if len(word) > 1:
+            i = (block.text or "").upper().find(word.upper())
+            return self.ctx.at(block, i + 1 if i >= 0 else 1)
+        return self.ctx.at(block, self.ctx.column_of(block, word))
+
+
+_CENTRE_LETTER = {"X": "I", "Y": "J", "Z": "K"}
+_MODAL_KEYS = frozenset(("Units", "Plane", "DistanceMode", "FeedMode", "Feed"))
+_EVENT_KEYS = frozenset(("ToolSelect", "ToolChange", "SpindleControl", "Coolant", "Dwell", "SpindleOrientation",
+                         "ProgramControl"))
+
+
+def header(ctx: Context, feed_mode: str | None) -> Event:
+    """The first line of a toolpath; keys beyond the fixed three only when they apply."""
+    head: Event = {"toolpath": 1, "units": "mm", "dialect": ctx.dialect}
+    if feed_mode is not None and feed_mode != "per_min":
+        head["feed_mode"] = feed_mode
+    return head
+
+
+def simulate(blocks: Iterable[Block], ctx: Context) -> Iterator[Event]:
+    """Blocks (already lowered for ``ToolpathTarget``) -> the header, then events in execution order.
+
+    Errors are reported to ``ctx.diagnostics`` with the block's location and the block is skipped;
+    the caller raises them at the end (``Diagnostics.check``). Events are held back only until the
+    first feed move fixes the header's feed mode (at most ``HEADER_LOOKAHEAD`` of them).
+    """
+    sim = Simulator(ctx)
+    report = ctx.diagnostics.error
+    held: list[Event] = []
+    holding = True
+    out: list[Event] = []
+    for block in blocks:
+        try:
+            sim.block(block, out.append)
+        except PostprocError as err:
+            report(err.located(ctx.at(block)))
+            out.clear()
+            continue
+        if not out:
+            continue
+        if holding:
+            held.extend(out)
+            out.clear()
+            if sim.header_mode is None and len(held) < HEADER_LOOKAHEAD:
+                continue
+            if sim.header_mode is None:
+                sim.header_mode = "per_min"
+            yield header(ctx, sim.header_mode)
+            yield from held
+            held, holding = [], False
+        else:
+            yield from out
+            out.clear()
+    if holding:
+        yield header(ctx, sim.header_mode)
+        yield from held
+
+
+def toolpath_events(lines: Iterable[str], *, file: str, dialect: str | type[Dialect],
+                    setup: MachineSetup | None = None, registry: Registry | None = None,
+                    diagnostics: Diagnostics | None = None, check: bool = True) -> Iterator[Event]:
+    """Read a program in ``dialect`` and yield its toolpath (header first). Raises ``ErrorList`` at the
+    end when the program had errors (unless ``check`` is False: the caller then checks
+    ``diagnostics``); events already yielded then belong to a failed run."""
+    setup = setup or MachineSetup()
+    diagnostics = diagnostics or Diagnostics()
+    if isinstance(dialect, str):
+        dialect = (registry or default_registry()).dialect(dialect)
+    elif registry is None:
+        default_registry()  # make sure every plugin's XML classes and transforms are loaded
+    with gc_paused():
+        ctx, blocks = read_blocks(lines, file, dialect, setup, diagnostics)
+        lowered = lower_for(blocks, ctx, ToolpathTarget, "error")
+        yield from simulate(lowered, ctx)
+    if check:
+        diagnostics.check()
+
+
+def export_toolpath(lines: Iterable[str], out: Any, *, file: str, dialect: str | type[Dialect],
+                    setup: MachineSetup | None = None, fmt: str = "jsonl") -> None:
+    """Write a program's toolpath to ``out``: JSON lines or SVG (text streams), PNG (a binary stream)."""
+    setup = setup or MachineSetup()
+    events = toolpath_events(lines, file=file, dialect=dialect, setup=setup)
+    if fmt == "jsonl":
+        write_jsonl(events, out)
+    elif fmt in ("svg", "png"):
+        from .backplot import Backplot
+        plot = Backplot(start_position(setup))
+        plot.add_all(events)
+        if fmt == "svg":
+            plot.write_svg(out)
+        else:
+            plot.write_png(out)
+    else:
+        raise UsageError(f"unknown toolpath format {fmt!r} (jsonl, svg or png)")
+
+
+def write_jsonl(events: Iterable[Event], out: TextIO) -> None:
+    write = out.write
+    encode = json.JSONEncoder().encode
+    for ev in events:
+        write(encode(ev) + "\n")

@@ -1,0 +1,309 @@
+"""verify: run a program and its translation through their own dialects to toolpaths and compare them.
+
+Both toolpaths stream in lockstep, so memory does not grow with program length. Each is normalised
+first: zero-length moves are dropped (the simulator already does), consecutive straight moves of the
+same kind and feed that continue one line are merged (points within half the tolerance of the line
+count as on it), and so are consecutive arcs on one circle. Then moves are compared pairwise: end
+points, arc centres and arc lengths give the deviation; a different kind of move, feed, plane, or a
+different machine event (dwell, spindle, orientation, tool, coolant, stop, end) is a structural
+mismatch, reported at its first place; after it the two paths no longer line up and comparing stops.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from itertools import zip_longest
+from typing import Any, Iterable, Iterator
+
+from .errors import Diagnostics, ErrorList, UsageError
+from .plugins import Registry
+from .setup import MachineSetup
+from .toolpath import CENTRE_KEYS, PLANE_INDEX, Event, arc_sweep, start_position, toolpath_events
+
+EVENT_TOLERANCE = 1e-6
+"""Numbers in machine events (dwell seconds, angles) compare within this."""
+FEED_TOLERANCE = 1e-4
+"""Relative: feeds agree when within 0.01 % (a converted inch feed written with fewer places)."""
+
+
+@dataclass(slots=True)
+class Move:
+    """A normalised move: possibly several merged moves of one file."""
+
+    kind: str
+    start: dict[str, float]
+    end: dict[str, float]
+    f: float | None
+    first_line: int
+    last_line: int
+    direction: dict[str, float] | None = None
+    """Unit vector of a straight run (None for arcs)."""
+    centre: tuple[float, float] | None = None
+    plane: str | None = None
+    radius: float = 0.0
+    sweep: float = 0.0
+
+
+@dataclass(slots=True)
+class Report:
+    """The outcome of a comparison; ``ok`` only when within tolerance and structurally the same."""
+
+    tolerance: float
+    moves: int = 0
+    max_deviation: float = 0.0
+    where: tuple[int, int] | None = None
+    """Source lines (IN, OUT) of the largest deviation."""
+    mismatch: str | None = None
+    mismatch_at: tuple[int | None, int | None] = (None, None)
+    notes: list[str] = field(default_factory=list)
+
+    @property
+    def ok(self) -> bool:
+        return self.mismatch is None and self.max_deviation <= self.tolerance
+
+    def summary(self) -> str:
+        where = f"IN:{self.where[0]} / OUT:{self.where[1]}" if self.where else "IN:- / OUT:-"
+        if self.mismatch is not None:
+            verdict = "structure differs"
+        elif self.max_deviation > self.tolerance:
+            verdict = f"exceeds tolerance {self.tolerance:g} mm"
+        else:
+            verdict = "ok"
+        text = f"max deviation {self.max_deviation:.4f} mm over {self.moves} moves ({where}): {verdict}"
+        if self.mismatch is not None:
+            a, b = self.mismatch_at
+            text += (f"\nfirst difference at IN:{'-' if a is None else a} / OUT:{'-' if b is None else b}: "
+                     f"{self.mismatch}")
+        return text
+
+
+# -- normalising -------------------------------------------------------------------------------------
+
+def _axes(ev: Event) -> dict[str, float]:
+    return {k: float(v) for k, v in ev.items() if len(k) == 1 and k in "xyzabcuvw"}
+
+
+def _dist(a: dict[str, float], b: dict[str, float]) -> float:
+    return math.sqrt(sum((a[k] - b.get(k, 0.0)) ** 2 for k in a))
+
+
+def _plane_point(p: dict[str, float], plane: str) -> tuple[float, float]:
+    i, j, _ = PLANE_INDEX[plane]
+    return p.get("xyz"[i], 0.0), p.get("xyz"[j], 0.0)
+
+
+def _move(ev: Event, start: dict[str, float]) -> Move:
+    end = _axes(ev)
+    kind = ev["move"]
+    f = ev.get("f")
+    m = Move(kind, start, end, None if f is None else float(f), ev["line"], ev["line"])
+    if kind in ("cw", "ccw"):
+        plane = ev.get("plane", "XY")
+        i, j, _ = PLANE_INDEX[plane]
+        ci, cj = "XYZ"[i], "XYZ"[j]
+        s, e = _plane_point(start, plane), _plane_point(end, plane)
+        c = (float(ev.get(CENTRE_KEYS[ci], s[0])), float(ev.get(CENTRE_KEYS[cj], s[1])))
+        m.plane, m.centre = plane, c
+        m.radius = math.hypot(s[0] - c[0], s[1] - c[1])
+        m.sweep = arc_sweep(s, e, c, kind == "cw")
+    else:
+        length = _dist(end, start)
+        m.direction = {k: (end[k] - start.get(k, 0.0)) / length for k in end} if length > 0 else None
+    return m
+
+
+def _merge(run: Move, m: Move, eps: float) -> bool:
+    """Extend ``run`` by ``m`` when they are one line or one circle (same kind and feed)."""
+    if m.kind != run.kind or not _same_feed(run.f, m.f):
+        return False
+    if run.direction is not None and m.direction is not None:
+        u, s = run.direction, run.start
+        along_old = sum((run.end[k] - s.get(k, 0.0)) * u[k] for k in u)
+        rel = {k: m.end[k] - s.get(k, 0.0) for k in m.end}
+        along = sum(rel[k] * u.get(k, 0.0) for k in rel)
+        off = math.sqrt(max(sum(v * v for v in rel.values()) - along * along, 0.0))
+        if off > eps or along <= along_old:
+            return False
+        run.end, run.last_line = m.end, m.last_line
+        return True
+    if run.centre is not None and m.centre is not None and run.plane == m.plane:
+        if (math.hypot(run.centre[0] - m.centre[0], run.centre[1] - m.centre[1]) > eps
+                or abs(run.radius - m.radius) > eps or not (_flat(run, eps) and _flat(m, eps))):
+            return False
+        run.end, run.last_line = m.end, m.last_line
+        run.sweep += m.sweep
+        return True
+    return False
+
+
+def _flat(m: Move, eps: float) -> bool:
+    """True when only the plane axes move (no helix, no other axis), so arcs may be joined."""
+    i, j, _ = PLANE_INDEX[m.plane or "XY"]
+    plane_keys = {"xyz"[i], "xyz"[j]}
+    return all(abs(m.end[k] - m.start.get(k, 0.0)) <= eps for k in m.end if k not in plane_keys)
+
+
+def _same_feed(a: float | None, b: float | None) -> bool:
+    if a is None or b is None:
+        return a is b
+    return abs(a - b) <= max(1e-9, FEED_TOLERANCE * max(abs(a), abs(b)))
+
+
+def normalise(events: Iterable[Event], start: dict[str, float], eps: float) -> Iterator[Move | Event]:
+    """Moves merged into runs, machine events as they are; the header is skipped."""
+    pos = {k.lower(): v for k, v in start.items()}
+    run: Move | None = None
+    for ev in events:
+        if "toolpath" in ev:
+            continue
+        if "move" not in ev:
+            if run is not None:
+                yield run
+                run = None
+            yield ev
+            continue
+        m = _move(ev, pos)
+        pos = m.end
+        if _dist(m.end, m.start) == 0.0 and m.centre is None:
+            continue
+        if run is not None and _merge(run, m, eps):
+            continue
+        if run is not None:
+            yield run
+        run = m
+    if run is not None:
+        yield run
+
+
+# -- comparing -------------------------------------------------------------------------------------
+
+def describe(item: Move | Event) -> str:
+    """A short human description of a move or event, for mismatch messages."""
+    if isinstance(item, Move):
+        where = " ".join(f"{k.upper()}{v:.4f}".rstrip("0").rstrip(".") for k, v in item.end.items())
+        feed = "" if item.f is None else f" F{item.f:g}"
+        name = {"rapid": "rapid", "feed": "feed", "cw": "cw arc", "ccw": "ccw arc"}.get(item.kind, item.kind)
+        return f"a {name} to {where}{feed}"
+    kind = item.get("event")
+    if kind == "dwell":
+        return f"a dwell of {item.get('seconds')} s"
+    if kind == "spindle":
+        return f"spindle {item.get('dir')}"
+    if kind == "orient":
+        return f"a spindle orientation to {item.get('angle')} deg"
+    if kind == "tool":
+        return f"tool change to T{item.get('number')}"
+    if kind == "coolant":
+        return f"coolant {'on' if item.get('on') else 'off'}"
+    if kind == "stop":
+        return "an optional stop" if item.get("optional") else "a program stop"
+    if kind == "end":
+        return "the program end"
+    return f"event {kind}"
+
+
+def _line(item: Move | Event | None) -> int | None:
+    if item is None:
+        return None
+    return item.first_line if isinstance(item, Move) else item.get("line")
+
+
+def _same_event(a: Event, b: Event) -> bool:
+    keys = (set(a) | set(b)) - {"line"}
+    for k in keys:
+        x, y = a.get(k), b.get(k)
+        if isinstance(x, (int, float)) and isinstance(y, (int, float)) and not isinstance(x, bool):
+            if abs(x - y) > EVENT_TOLERANCE:
+                return False
+        elif x != y:
+            return False
+    return True
+
+
+def compare(events_in: Iterable[Event], events_out: Iterable[Event], *, start_in: dict[str, float],
+            start_out: dict[str, float], tolerance: float) -> Report:
+    """Walk two toolpaths (each with its header first) and report their largest deviation."""
+    report = Report(tolerance)
+    it_in, it_out = iter(events_in), iter(events_out)
+    head_in, head_out = next(it_in, {}), next(it_out, {})
+    for key in ("units", "x_mode", "feed_mode"):
+        if head_in.get(key) != head_out.get(key):
+            report.mismatch = f"the toolpath headers differ in {key}: {head_in.get(key)} vs {head_out.get(key)}"
+            report.mismatch_at = (1, 1)
+    eps = tolerance / 2.0
+    pairs = zip_longest(normalise(it_in, start_in, eps), normalise(it_out, start_out, eps))
+    for a, b in pairs:
+        if report.mismatch is not None:
+            continue  # drain both streams: a program error still has to surface
+        problem = _differ(a, b, report)
+        if problem is not None:
+            report.mismatch = problem
+            report.mismatch_at = (_line(a), _line(b))
+    return report
+
+
+def _differ(a: Move | Event | None, b: Move | Event | None, report: Report) -> str | None:
+    """Record the deviation of a pair; return a description when they differ in structure."""
+    if a is None:
+        return f"IN has no more moves or events, OUT has {describe(b)}"  # type: ignore[arg-type]
+    if b is None:
+        return f"OUT has no more moves or events, IN has {describe(a)}"
+    if not isinstance(a, Move) or not isinstance(b, Move):
+        if isinstance(a, Move) or isinstance(b, Move) or not _same_event(a, b):  # type: ignore[arg-type]
+            return f"IN has {describe(a)}, OUT {describe(b)}"
+        return None
+    if a.kind != b.kind or a.plane != b.plane:
+        return f"IN has {describe(a)}, OUT {describe(b)}"
+    if not _same_feed(a.f, b.f):
+        return f"IN feeds at F{a.f:g}, OUT at F{b.f:g} ({describe(a)})"
+    keys = set(a.end) & set(b.end)
+    dev = math.sqrt(sum((a.end[k] - b.end[k]) ** 2 for k in keys))
+    if a.centre is not None and b.centre is not None:
+        dev = max(dev, math.hypot(a.centre[0] - b.centre[0], a.centre[1] - b.centre[1]),
+                  abs(a.sweep * a.radius - b.sweep * b.radius))
+    report.moves += 1
+    if report.where is None or dev > report.max_deviation:
+        report.max_deviation = dev
+        report.where = (a.last_line, b.last_line)
+    return None
+
+
+# -- files -----------------------------------------------------------------------------------------
+
+def verify_lines(lines_in: Iterable[str], lines_out: Iterable[str], *, file_in: str, file_out: str,
+                 source: str, target: str, setup: MachineSetup | None = None,
+                 target_setup: MachineSetup | None = None, tolerance: float = 0.001,
+                 registry: Registry | None = None) -> Report:
+    """Compare two programs given as lines. Raises ``ErrorList`` with both programs' errors, if any."""
+    if tolerance < 0:
+        raise UsageError(f"the tolerance cannot be negative ({tolerance:g})")
+    setup = setup or MachineSetup()
+    target_setup = target_setup or setup
+    diag_in, diag_out = Diagnostics(), Diagnostics()
+    events_in = toolpath_events(lines_in, file=file_in, dialect=source, setup=setup, registry=registry,
+                                diagnostics=diag_in, check=False)
+    events_out = toolpath_events(lines_out, file=file_out, dialect=target, setup=target_setup,
+                                 registry=registry, diagnostics=diag_out, check=False)
+    report = compare(events_in, events_out, start_in=start_position(setup),
+                     start_out=start_position(target_setup), tolerance=tolerance)
+    errors = diag_in.errors + diag_out.errors
+    if errors:
+        raise ErrorList(errors)
+    return report
+
+
+def verify_files(in_path: str, out_path: str, *, source: str, target: str,
+                 setup: MachineSetup | None = None, target_setup: MachineSetup | None = None,
+                 tolerance: float = 0.001, registry: Registry | None = None) -> Report:
+    """Compare a program file with its translation (the ``postproc verify`` command)."""
+    with _open(in_path) as a, _open(out_path) as b:
+        return verify_lines(a, b, file_in=in_path, file_out=out_path, source=source, target=target,
+                            setup=setup, target_setup=target_setup, tolerance=tolerance, registry=registry)
+
+
+def _open(path: str) -> Any:
+    try:
+        return open(path, "r", encoding="utf-8", errors="surrogateescape", newline="")
+    except OSError as exc:
+        raise UsageError(f"cannot read {path}: {exc.strerror}") from None

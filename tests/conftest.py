@@ -1,0 +1,46 @@
+"""Shared fixtures. Keep this file small: helpers that one test module needs live in that module."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Callable
+
+import pytest
+
+from postproc.cli import main
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+@dataclass
+class CliResult:
+    status: int
+    out: bytes
+    err: str
+
+    @property
+    def err_lines(self) -> list[str]:
+        return self.err.splitlines()
+
+
+@pytest.fixture
+def cli(capsysbinary: pytest.CaptureFixture[bytes]) -> Callable[..., CliResult]:
+    """Run ``postproc ARGS...`` in this process: exit status, stdout bytes, stderr text."""
+
+    def run(*args: object) -> CliResult:
+        capsysbinary.readouterr()
+        try:
+            status = main([str(a) for a in args])
+        except SystemExit as exc:  # argparse reports wrong usage by exiting
+            status = exc.code if isinstance(exc.code, int) else 2
+        captured = capsysbinary.readouterr()
+        return CliResult(status, captured.out, captured.err.decode("utf-8", "replace"))
+
+    return run
+
+
+@pytest.fixture
+def root() -> Path:
+    """The repository root (examples/, tests/golden/)."""
+    return ROOT

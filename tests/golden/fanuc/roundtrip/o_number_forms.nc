@@ -1,0 +1,5 @@
+%
+O1 (ONE DIGIT O NUMBER)
+G21 G90
+M30
+%

@@ -1,0 +1,109 @@
+"""LinuxCNC's own interpreter tests (shared/conformance/linuxcnc) against our linuxcnc reader's toolpath.
+
+Each case's ``.ngc`` is read with the linuxcnc dialect and simulated; its ``expected`` canonical calls
+(printed by LinuxCNC's interpreter) are parsed by ``tests/support/rs274.canonical_moves``; the two are
+compared move by move, within 1.5e-4 program units (the ``expected`` files print 4 decimals).
+
+* G81 in G17/G18/G19 with G98 and G99, incremental rows with L: every move (rapid and feed).
+* G84 in the same six set-ups: the **rapids only** (all three axes). The conformance README says the
+  upstream G18/G19 tapping feeds are wrong, so the feed moves (and the spindle reversals around them)
+  are not trusted; the rapids still check positioning, the rise to R and the return to the clear level.
+* M98/M99 cases are out (subprograms are refused by the reader), and so are the lathe cases.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+from postproc.errors import ErrorList
+from postproc.toolpath import toolpath_events
+from tests.support.rs274 import canonical_moves, motions
+
+CONFORMANCE = Path(os.environ.get("POSTPROC_CONFORMANCE", "/work/shared/conformance")) / "linuxcnc"
+"""The shared conformance cases (POSTPROC_CONFORMANCE names their folder elsewhere)."""
+MM_PER_INCH = 25.4
+TOLERANCE = 1.5e-4
+"""In program units (the cases are inch programs: converted to mm before comparing)."""
+
+SKIPPED = {
+    "m98m99": "subprograms (O-words, M98/M99) are not supported by the linuxcnc reader",
+    "g71": "lathe cycles not modelled yet",
+    "g72": "lathe cycles not modelled yet",
+    "g76": "lathe cycles not modelled yet",
+}
+RAPIDS_ONLY = "g84"
+"""Cases whose feed moves are wrong upstream (conformance README): compare their rapids only."""
+
+
+def _cases() -> list[Any]:
+    if not CONFORMANCE.is_dir():
+        return [pytest.param(None, marks=pytest.mark.skip(reason=f"{CONFORMANCE} is not available"))]
+    params = []
+    for case in sorted(p for p in CONFORMANCE.iterdir() if p.is_dir()):
+        reason = next((why for prefix, why in SKIPPED.items() if case.name.startswith(prefix)), None)
+        marks = [pytest.mark.skip(reason=reason)] if reason else []
+        params.append(pytest.param(case, id=case.name, marks=marks))
+    return params
+
+
+def _program(case: Path) -> Path:
+    programs = sorted(case.glob("*.ngc"))
+    assert len(programs) == 1, f"{case.name}: expected one .ngc, found {programs}"
+    return programs[0]
+
+
+def _ours(program: Path) -> list[dict[str, Any]]:
+    with open(program, encoding="utf-8", newline="") as src:
+        events = list(toolpath_events(src, file=str(program), dialect="linuxcnc"))
+    return [e for e in events[1:] if "move" in e]
+
+
+def _units(program: Path) -> float:
+    """mm per program unit: the cases switch to G20 before their first move."""
+    text = program.read_text(encoding="utf-8").lower()
+    return MM_PER_INCH if "g20" in text else 1.0
+
+
+def _mismatch(ours: list[dict[str, Any]], theirs: list[dict[str, Any]], tol_mm: float) -> str | None:
+    for i, (a, b) in enumerate(zip(ours, theirs)):
+        if a["move"] != b["move"]:
+            return f"move {i}: ours {a}, LinuxCNC {b}"
+        dev = math.dist((a["x"], a["y"], a["z"]), (b["x"], b["y"], b["z"]))
+        if dev > tol_mm:
+            return f"move {i} (line {a['line']}): {dev:.6f} mm apart: ours {a}, LinuxCNC {b}"
+    if len(ours) != len(theirs):
+        longer, name = (ours, "ours") if len(ours) > len(theirs) else (theirs, "LinuxCNC")
+        return f"{name} has {abs(len(ours) - len(theirs))} more move(s), the first: {longer[min(len(ours), len(theirs))]}"
+    return None
+
+
+@pytest.mark.parametrize("case", _cases())
+def test_conformance_case(case: Path) -> None:
+    program = _program(case)
+    expected = motions(canonical_moves((case / "expected").read_text(encoding="utf-8")))
+    ours = _ours(program)
+    if case.name.startswith(RAPIDS_ONLY):
+        expected = [m for m in expected if m["move"] == "rapid"]
+        ours = [m for m in ours if m["move"] == "rapid"]
+    assert expected, f"{case.name}: no moves in the expected file"
+    problem = _mismatch(ours, expected, TOLERANCE * _units(program))
+    assert problem is None, f"{case.name}: {problem}"
+
+
+def test_subprogram_cases_are_refused_with_located_errors() -> None:
+    """The skipped M98/M99 cases must fail loudly, never simulate something else."""
+    cases = sorted(CONFORMANCE.glob("m98m99*")) if CONFORMANCE.is_dir() else []
+    if not cases:
+        pytest.skip(f"{CONFORMANCE} is not available")
+    for case in cases:
+        program = _program(case)
+        with pytest.raises(ErrorList) as info:
+            _ours(program)
+        messages = [str(e) for e in info.value.errors]
+        assert any("M98/M99" in m or "O-words" in m or "parameters" in m for m in messages), messages
+        assert all(m.startswith(f"{program}:") for m in messages), messages

@@ -1,0 +1,313 @@
+"""The IR as XML: every registered node class round-trips, and ``postproc ir`` output loads back.
+
+The four-step round trip (as python-docx tests its oxml): a sample object serialises to the expected
+canonical bytes, those bytes parse back through the factory to an equal object, and that object
+serialises to the same bytes again. ``SAMPLES`` must name every class the installed plugins register:
+a new class without a sample fails ``test_every_registered_class_has_a_round_trip_sample``.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any, Callable
+
+import pytest
+
+from postproc.api import read_program
+from postproc.errors import ConfigError
+from postproc.ir import (
+    Block, BlockDelete, Comments, CompoundMotion, Coolant, CutterCompensation, CycleCall, CycleCancel,
+    DistanceMode, Dwell, Feed, FeedMode, MachineCoordinates, Motion, NativeCode, PathControl, Plane,
+    ProgramControl, ProgramStart, ReturnLevel, Sequence, SpindleControl, SpindleOrientation, SpindleSpeed,
+    Section, TapeMark, ToolChange, ToolLengthOffset, ToolSelect, Units, WorkOffset, iter_sections,
+    register_sections,
+)
+from postproc.plugins import default_registry
+from postproc.program_xml import load_program
+from postproc.setup import InputSettings, MachineSettings, MachineSetup, OutputSettings, CycleSettings, Templates
+from postproc.xmlio import XFactory, parse_xml_bytes, to_bytes
+
+ROOT = Path(__file__).resolve().parents[1]
+DECLARATION = "<?xml version='1.0' encoding='UTF-8'?>\n"
+FACTORY = default_registry().factory
+CLASSES: dict[str, type] = {cls.XNAME: cls for cls in FACTORY.classes()}
+
+Builder = Callable[[dict[str, type]], Any]
+"""Makes a sample from the registered classes (plugin classes are reached through the factory)."""
+
+
+def _empty(name: str) -> list[tuple[Builder, str]]:
+    """The sample of a syntax step without attributes or children."""
+    return [(lambda classes: classes[name](), f"<{name}/>")]
+
+
+SAMPLES: dict[str, list[tuple[Builder, str]]] = {
+    "BlockDelete": [(lambda c: BlockDelete(2), '<BlockDelete level="2"/>'),
+                    (lambda c: BlockDelete(1), "<BlockDelete/>")],
+    "Comments": [(lambda c: Comments(["FIRST", "  spaced  ", "", "a < b & \"c\"", "tab\there"]),
+                  "<Comments>\n  <Text>FIRST</Text>\n  <Text>  spaced  </Text>\n  <Text></Text>\n"
+                  "  <Text>a &lt; b &amp; \"c\"</Text>\n  <Text>tab\there</Text>\n</Comments>")],
+    "CompoundMotion": [(lambda c: CompoundMotion("drill", [Motion("rapid", {"X": 1.0, "Y": 2.0}), Dwell(0.5),
+                                                           Motion("linear", {"Z": -3.0})]),
+                        '<CompoundMotion term="drill">\n  <Motion mode="rapid">\n    <Axes X="1.0" Y="2.0"/>\n'
+                        '  </Motion>\n  <Dwell seconds="0.5"/>\n  <Motion mode="linear">\n    <Axes Z="-3.0"/>\n'
+                        "  </Motion>\n</CompoundMotion>")],
+    "Coolant": [(lambda c: Coolant("flood"), '<Coolant mode="flood"/>')],
+    "CutterCompensation": [(lambda c: CutterCompensation("left", 4), '<CutterCompensation mode="left" register="4"/>'),
+                           (lambda c: CutterCompensation("off"), '<CutterCompensation mode="off"/>')],
+    "CycleCall": [(lambda c: CycleCall("peck_deep"), '<CycleCall kind="peck_deep"/>')],
+    "CycleCancel": [(lambda c: CycleCancel(), "<CycleCancel/>")],
+    "DistanceMode": [(lambda c: DistanceMode("incremental"), '<DistanceMode mode="incremental"/>')],
+    "Dwell": [(lambda c: Dwell(1.5), '<Dwell seconds="1.5"/>')],
+    "Feed": [(lambda c: Feed(250.0), '<Feed value="250.0"/>')],
+    "FeedMode": [(lambda c: FeedMode("per_rev"), '<FeedMode mode="per_rev"/>')],
+    "MachineCoordinates": [(lambda c: MachineCoordinates(), "<MachineCoordinates/>")],
+    "Motion": [
+        (lambda c: Motion("cw", {"X": 10.0, "Y": 0.0}, center={"X": 5.0, "Y": 0.0}),
+         '<Motion mode="cw">\n  <Axes X="10.0" Y="0.0"/>\n  <Center X="5.0" Y="0.0"/>\n</Motion>'),
+        (lambda c: Motion("ccw", {"X": 1.0}, radius=-5.0),
+         '<Motion mode="ccw" radius="-5.0">\n  <Axes X="1.0"/>\n</Motion>'),
+        (lambda c: Motion(None, {"X": 30.0}), '<Motion>\n  <Axes X="30.0"/>\n</Motion>'),
+        (lambda c: Motion("home", {}), '<Motion mode="home">\n  <Axes/>\n</Motion>'),
+        (lambda c: Motion("linear", {"X": 0.1 + 0.2}),
+         '<Motion mode="linear">\n  <Axes X="0.30000000000000004"/>\n</Motion>'),
+    ],
+    "NativeCode": [(lambda c: NativeCode("fanuc", "G68 (coordinate rotation)", 'G68 X0 Y0 R45. (a<b & "c")\t'),
+                    '<NativeCode dialect="fanuc" what="G68 (coordinate rotation)" '
+                    'text="G68 X0 Y0 R45. (a&lt;b &amp; &quot;c&quot;)&#9;"/>')],
+    "PathControl": [(lambda c: PathControl("exact_stop", True), '<PathControl mode="exact_stop" one_shot="true"/>'),
+                    (lambda c: PathControl("cutting"), '<PathControl mode="cutting"/>')],
+    "Plane": [(lambda c: Plane("ZX"), '<Plane plane="ZX"/>')],
+    "ProgramControl": [(lambda c: ProgramControl("end_rewind"), '<ProgramControl kind="end_rewind"/>')],
+    "ProgramStart": [(lambda c: ProgramStart(1234), '<ProgramStart number="1234"/>'),
+                     (lambda c: ProgramStart(None, "MAIN"), '<ProgramStart name="MAIN"/>')],
+    "ReturnLevel": [(lambda c: ReturnLevel("r"), '<ReturnLevel level="r"/>')],
+    "Sequence": [(lambda c: Sequence(10), '<Sequence number="10"/>')],
+    "SpindleControl": [(lambda c: SpindleControl("ccw"), '<SpindleControl direction="ccw"/>')],
+    "SpindleOrientation": [(lambda c: SpindleOrientation(90.0), '<SpindleOrientation angle="90.0"/>'),
+                           (lambda c: SpindleOrientation(), "<SpindleOrientation/>")],
+    "SpindleSpeed": [(lambda c: SpindleSpeed(1200.0), '<SpindleSpeed rpm="1200.0"/>')],
+    "TapeMark": [(lambda c: TapeMark(), "<TapeMark/>")],
+    "ToolChange": [(lambda c: ToolChange(), "<ToolChange/>")],
+    "ToolLengthOffset": [(lambda c: ToolLengthOffset("positive", 1),
+                          '<ToolLengthOffset mode="positive" register="1"/>'),
+                         (lambda c: ToolLengthOffset("cancel"), '<ToolLengthOffset mode="cancel"/>')],
+    "ToolSelect": [(lambda c: ToolSelect(3), '<ToolSelect number="3"/>')],
+    "Units": [(lambda c: Units("inch"), '<Units system="inch"/>')],
+    "WorkOffset": [(lambda c: WorkOffset(2), '<WorkOffset index="2"/>')],
+    "MachineSetup": [
+        (lambda c: MachineSetup(
+            name="VMC 850", dialect="fanuc", pipeline="pipelines/mill.xml",
+            input=InputSettings(decimal_point="calculator", increment_system="IS-C"),
+            output=OutputSettings(normalize=True, decimals=4), cycles=CycleSettings(peck_retract=0.2),
+            machine=MachineSettings(axes="XYZA", start_z=100.0),
+            templates=Templates(header="(PROGRAM {{ program }})\n(FOR {{ machine }})", footer="")),
+         '<MachineSetup name="VMC 850" dialect="fanuc" pipeline="pipelines/mill.xml">\n'
+         '  <Input decimalPoint="calculator" incrementSystem="IS-C"/>\n'
+         '  <Output normalize="true" decimals="4"/>\n'
+         '  <Cycles peckRetract="0.2"/>\n'
+         '  <Machine axes="XYZA" startZ="100.0"/>\n'
+         "  <Templates>\n    <Header>(PROGRAM {{ program }})\n(FOR {{ machine }})</Header>\n    <Footer></Footer>\n"
+         "  </Templates>\n</MachineSetup>"),
+        (lambda c: MachineSetup(), '<MachineSetup name="default"/>'),
+    ],
+    "Pipeline": [(lambda c: c["Pipeline"]("fanuc", [c["FanucBlockSyntax"](), c["ModalStateSyntax"]()]),
+                  '<Pipeline dialect="fanuc">\n  <FanucBlockSyntax/>\n  <ModalStateSyntax/>\n</Pipeline>'),
+                 (lambda c: c["Pipeline"]("empty", []), '<Pipeline dialect="empty"/>')],
+    "CannedCycle": [
+        (lambda c: c["CannedCycle"](
+            "peck_deep", call=True, return_level="r", initial=50.0, r=3.0, bottom=-18.5, q=3.0, clearance=0.3,
+            feed=150.0, spindle="cw", motion="rapid", start={"X": 0.0, "Y": 0.0, "Z": 50.0},
+            position={"X": 15.0, "Y": 15.0}, shift={"X": 1.0},
+            words={"X": 15.0, "Y": 15.0, "Z": -18.5, "R": 3.0, "Q": 3.0, "K": 2}),
+         '<CannedCycle kind="peck_deep" call="true" return_level="r" initial="50.0" r="3.0" bottom="-18.5" '
+         'q="3.0" clearance="0.3" feed="150.0" spindle="cw" motion="rapid">\n'
+         '  <Start X="0.0" Y="0.0" Z="50.0"/>\n  <Position X="15.0" Y="15.0"/>\n  <Shift X="1.0"/>\n'
+         '  <Words X="15.0" Y="15.0" Z="-18.5" R="3.0" Q="3.0" K="2"/>\n</CannedCycle>'),
+        (lambda c: c["CannedCycle"]("drill", repeat=0, plane="ZX", step={"X": 10.0}),
+         '<CannedCycle kind="drill" plane="ZX" repeat="0">\n  <Step X="10.0"/>\n</CannedCycle>'),
+    ],
+    "CannedCycleResolveSyntax": [
+        (lambda c: c["CannedCycleResolveSyntax"](), "<CannedCycleResolveSyntax/>"),
+        (lambda c: c["CannedCycleResolveSyntax"]("rs274", [c["DrillingSyntax"](), c["TappingSyntax"]()]),
+         '<CannedCycleResolveSyntax semantics="rs274">\n  <DrillingSyntax/>\n  <TappingSyntax/>\n'
+         "</CannedCycleResolveSyntax>"),
+    ],
+    **{name: _empty(name) for name in (
+        "FanucBlockSyntax", "ModalStateSyntax", "GrblBlockSyntax", "NgcBlockSyntax", "DrillingSyntax",
+        "PeckDrillingSyntax", "TappingSyntax", "BoringSyntax", "FineBoringSyntax", "BackBoringSyntax",
+        "ManualBoringSyntax",
+    )},
+}
+
+
+def _without_sample(factory: XFactory) -> list[str]:
+    return [f"<{cls.XNAME}> ({cls.__module__}.{cls.__qualname__})"
+            for cls in factory.classes() if cls.XNAME not in SAMPLES]
+
+
+def test_every_registered_class_has_a_round_trip_sample():
+    missing = _without_sample(FACTORY)
+    assert not missing, ("registered XML classes without a round-trip sample; add one to SAMPLES in "
+                         "tests/test_ir_xml.py: " + ", ".join(missing))
+
+
+def test_the_sample_check_catches_a_new_class():
+    class Teleport(Section):
+        XNAME = KEY = "Teleport"
+        __slots__ = ()
+
+    factory = XFactory()
+    register_sections(factory)
+    assert _without_sample(factory) == []
+    Teleport.reg(factory)
+    assert _without_sample(factory) == [f"<Teleport> ({__name__}.{Teleport.__qualname__})"]
+
+
+def test_core_classes_are_registered():
+    core = {cls.XNAME for cls in iter_sections()} | {"Pipeline", "MachineSetup", "ModalStateSyntax"}
+    assert core <= set(FACTORY.names())
+
+
+CASES = [pytest.param(name, i, id=f"{name}-{i}") for name in FACTORY.names() if name in SAMPLES
+         for i in range(len(SAMPLES[name]))]
+
+
+@pytest.mark.parametrize("name, index", CASES)
+def test_round_trip(name, index):
+    build, body = SAMPLES[name][index]
+    expected = DECLARATION + body + "\n"
+    sample = build(CLASSES)
+    assert type(sample).XNAME == name
+    # 1. serialise: the canonical bytes are the ones written by hand
+    first = to_bytes(sample.make_xml_source())
+    assert first.decode() == expected
+    # 2. parse the expected bytes through the factory: an equal object
+    created = FACTORY.create(parse_xml_bytes(expected.encode(), "sample.xml"))
+    assert type(created) is type(sample)
+    assert created == sample
+    # 3. serialise again: the same bytes
+    assert to_bytes(created.make_xml_source()).decode() == expected
+
+
+def test_equal_means_equal_content():
+    assert Motion("rapid", {"X": 1.0}) != Motion("rapid", {"X": 2.0})
+    assert Motion("rapid", {"X": 1.0}) != Motion("linear", {"X": 1.0})
+    assert Sequence(1) != ToolSelect(1)
+    assert Comments(["A"]) != Comments(["A", "B"])
+
+
+# -- blocks and whole programs ---------------------------------------------------------------------
+
+def _sample_block() -> Block:
+    block = Block(7, "n10 G01 x1. (C)", "\r\n", [("n", "10"), ("G", "01"), ("x", "1.")])
+    block.values.update({"N": 10, "X": 1.0})
+    block.add(Sequence(10))
+    block.add(Comments(["C"]))
+    block.add(Motion("linear", {"X": 1.0}))
+    return block
+
+
+BLOCK_XML = (
+    '<Block line="7" text="n10 G01 x1. (C)" eol="CRLF">\n'
+    '  <Word letter="n" text="10" kind="int" value="10"/>\n'
+    '  <Word letter="G" text="01"/>\n'
+    '  <Word letter="x" text="1." kind="float" value="1.0"/>\n'
+    '  <Sequence number="10"/>\n'
+    "  <Comments>\n    <Text>C</Text>\n  </Comments>\n"
+    '  <Motion mode="linear">\n    <Axes X="1.0"/>\n  </Motion>\n'
+    "</Block>\n"
+)
+
+
+def test_block_round_trip():
+    block = _sample_block()
+    assert to_bytes(block.make_xml_source()).decode() == DECLARATION + BLOCK_XML
+    loaded = Block.from_xml(parse_xml_bytes((DECLARATION + BLOCK_XML).encode(), "b.xml"), FACTORY)
+    assert loaded == block
+    assert isinstance(loaded.values["N"], int) and isinstance(loaded.values["X"], float)
+
+
+@pytest.mark.parametrize("eol, name", [("\n", None), ("\r\n", "CRLF"), ("\r", "CR"), ("", "none")])
+def test_block_end_of_line(eol, name):
+    block = Block(1, "G90", eol, [("G", "90")])
+    el = block.make_xml_source()
+    assert el.get("eol") == name
+    assert Block.from_xml(el, FACTORY).eol == eol
+
+
+def test_changed_block_has_no_text():
+    block = Block(3, None, "\n")
+    block.add(Coolant("off"))
+    el = block.make_xml_source()
+    assert "text" not in el.attrib
+    assert Block.from_xml(el, FACTORY) == block
+
+
+EXAMPLES = sorted(ROOT.glob("examples/**/*.nc")) + [
+    p for p in sorted((ROOT / "tests/golden/fanuc/roundtrip").glob("*.nc"))
+    if p.stem not in ("non_utf8_comment", "colon_program_number")  # tested on their own
+]
+
+
+@pytest.mark.parametrize("path", EXAMPLES, ids=lambda p: str(p.relative_to(ROOT)))
+def test_ir_command_output_loads_back_to_the_read_blocks(cli, tmp_path, path):
+    out = tmp_path / "ir.xml"
+    result = cli("ir", path, "--dialect", "fanuc", "-o", out)
+    assert result.status == 0, result.err
+    dialect, loaded = load_program(out)
+    with open(path, encoding="utf-8", errors="surrogateescape", newline="") as src:
+        expected = read_program(src, file=str(path), dialect="fanuc")
+    assert dialect == "fanuc"
+    assert len(loaded) == len(expected)
+    for got, want in zip(loaded, expected):
+        assert got == want, f"line {want.line}"
+
+
+def test_ir_command_writes_to_stdout(cli, root):
+    path = root / "examples/fanuc/o1003_pocket_and_edge.nc"
+    result = cli("ir", path, "--dialect", "fanuc")
+    assert result.status == 0, result.err
+    assert result.out.startswith(DECLARATION.encode() + f'<Program dialect="fanuc" file="{path}">\n'.encode())
+    assert result.out.endswith(b"</Program>")
+    assert result.out.count(b"<Block ") == len(path.read_bytes().splitlines())
+
+
+@pytest.mark.parametrize("text, col, what", [
+    (b"G00 X0. (BELL \x07)\n", 15, "character U+0007"),
+    (b"G00 X0. (DURCHMESSER \xd8)\n", 22, "undecodable byte 0xD8"),
+])
+def test_ir_of_text_xml_cannot_hold_is_a_located_error(cli, tmp_path, text, col, what):
+    path = tmp_path / "odd.nc"
+    path.write_bytes(text)
+    result = cli("ir", path, "--dialect", "fanuc", "-o", tmp_path / "ir.xml")
+    assert result.status == 1
+    assert result.err == f"{path}:1:{col}: error: {what} cannot be written to the IR XML\n"
+    assert not (tmp_path / "ir.xml").exists()
+
+
+BAD_PROGRAMS = [
+    # (XML after the declaration, message, line counted from the declaration's line 1)
+    ('<Program dialect="fanuc">\n  <Block line="1">\n    <Teleport/>\n  </Block>\n</Program>',
+     "unknown element <Teleport>", 4),
+    ('<Program dialect="fanuc">\n  <Blok line="1"/>\n</Program>', "unknown element <Blok> in <Program>", 3),
+    ('<Pipeline dialect="fanuc"/>', "expected <Program>, found <Pipeline>", 2),
+    ('<Program>\n  <Block line="1">\n    <Sequence number="ten"/>\n  </Block>\n</Program>',
+     "<Sequence> attribute number='ten' is not a valid int", 4),
+    ('<Program>\n  <Block line="1">\n    <Units/>\n  </Block>\n</Program>', "<Units> needs attribute 'system'", 4),
+    ('<Program>\n  <Block line="1">\n    <Motion mode="rapid">\n      <Speed/>\n    </Motion>\n  </Block>\n</Program>',
+     "invalid <Motion>: unexpected <Speed>", 4),
+    ('<Program>\n  <Block line="1" eol="LFCR"/>\n</Program>', "invalid <Block>: unknown end of line 'LFCR'", 3),
+    ('<Program>\n  <Block line="1">\n    <Pipeline dialect="x"/>\n  </Block>\n</Program>',
+     "<Pipeline> is not a block section", 4),
+]
+
+
+@pytest.mark.parametrize("xml, message, line", BAD_PROGRAMS, ids=[m for _, m, _ in BAD_PROGRAMS])
+def test_load_program_errors_are_located(tmp_path, xml, message, line):
+    path = tmp_path / "bad.xml"
+    path.write_text(DECLARATION + xml + "\n")
+    with pytest.raises(ConfigError) as info:
+        load_program(path)
+    assert info.value.message == message
+    assert (info.value.location.file, info.value.location.line) == (str(path), line)

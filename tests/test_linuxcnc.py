@@ -1,0 +1,280 @@
+"""The linuxcnc plugin: RS274/NGC lexing, block meaning, lossless round trips, writing, registration.
+
+Expected values are worked out from the RS274/NGC rules (DIALECTS.md §2.1, LinuxCNC's g-code docs)
+and, where noted, from what LinuxCNC's interpreter ``rs274`` prints.
+"""
+
+from __future__ import annotations
+
+import io
+from pathlib import Path
+from typing import Any
+
+import pytest
+from lxml import etree
+
+from postproc.api import read_program, translate
+from postproc.errors import Diagnostics, ErrorList, ErrorLevel
+from postproc.ir import Block, Dwell, Motion, NativeCode, SpindleOrientation, ToolLengthOffset
+from postproc.plugins import default_registry
+from postproc.setup import CycleSettings, MachineSetup
+from postproc.syntax import load_pipeline
+from postproc.toolpath import toolpath_events
+from postproc.xmlio import to_bytes
+import postproc_linuxcnc
+from postproc_linuxcnc import Linuxcnc
+from postproc_linuxcnc.block_syntax import NgcBlockSyntax
+from postproc_linuxcnc.lexer import lex_block
+
+ROOT = Path(__file__).resolve().parents[1]
+EXAMPLES = sorted((ROOT / "examples" / "linuxcnc").glob("*.ngc"))
+
+
+def read(text: str, setup: MachineSetup | None = None) -> list[Block]:
+    return read_program(io.StringIO(text, newline=""), file="t.ngc", dialect="linuxcnc", setup=setup)
+
+
+def errors(text: str) -> list[str]:
+    with pytest.raises(ErrorList) as info:
+        read(text)
+    return [str(e) for e in info.value.errors]
+
+
+def events(text: str, setup: MachineSetup | None = None) -> list[dict[str, Any]]:
+    lines = io.StringIO(text, newline="")
+    return list(toolpath_events(lines, file="t.ngc", dialect="linuxcnc", setup=setup))[1:]
+
+
+def moves(text: str) -> list[tuple[Any, ...]]:
+    return [(e["move"], e["x"], e["y"], e["z"]) for e in events(text) if "move" in e]
+
+
+def write(text: str, target: str, source: str = "linuxcnc", setup: MachineSetup | None = None,
+          on_unsupported: str = "error") -> tuple[str, Diagnostics]:
+    out = io.StringIO(newline="")
+    diagnostics = Diagnostics(ErrorLevel.RAISE, warn_stream=io.StringIO())
+    translate(io.StringIO(text, newline=""), out, file="t.ngc", source=source, target=target, setup=setup,
+              on_unsupported=on_unsupported, diagnostics=diagnostics)
+    return out.getvalue(), diagnostics
+
+
+# -- registration ------------------------------------------------------------------------------------
+
+def test_registered_through_its_entry_point_with_its_capabilities() -> None:
+    dialect = default_registry().dialect("linuxcnc")
+    assert dialect is Linuxcnc
+    assert dialect.__module__ == "postproc_linuxcnc"
+    caps = dialect.capabilities()
+    assert caps["NATIVE_CYCLES"] == sorted(["drill", "drill_dwell", "peck_chip", "peck_deep", "tap", "tap_left",
+                                            "bore_feed", "bore_stop", "bore_dwell_feed"])
+    assert caps["CYCLE_SEMANTICS"] == "rs274"
+    assert not {"fine_bore", "back_bore", "bore_manual"} & set(caps["NATIVE_CYCLES"])  # type: ignore[arg-type]
+
+
+def test_pipeline_xml_loads_and_writes_back_identically() -> None:
+    path = Path(postproc_linuxcnc.__file__).with_name("linuxcnc.xml")
+    default_registry()
+    pipeline = load_pipeline(path)
+    assert [type(s).__name__ for s in pipeline.steps] == [
+        "NgcBlockSyntax", "CannedCycleResolveSyntax", "ModalStateSyntax"]
+    assert pipeline.steps[1].semantics == "rs274"  # type: ignore[attr-defined]
+    assert to_bytes(pipeline.make_xml_source()) == to_bytes(etree.fromstring(path.read_bytes()))
+
+
+# -- lexing ------------------------------------------------------------------------------------------
+
+def test_semicolon_and_paren_comments_and_letter_case_are_kept() -> None:
+    block = lex_block("t.ngc", 1, "g0 X1.5 (move) y2 ; rest (of) line", "\n")
+    assert block.words == [("g", "0"), ("X", "1.5"), ("y", "2")]
+    assert block.sections["Comments"].texts == ["move", " rest (of) line"]  # type: ignore[attr-defined]
+
+
+def test_blanks_inside_a_number_are_ignored_as_in_rs274() -> None:
+    block = lex_block("t.ngc", 1, "G1 X 1 0 . 5 Y-2", "\n")
+    assert block.words == [("G", "1"), ("X", "10.5"), ("Y", "-2")]
+
+
+@pytest.mark.parametrize("text, message", [
+    ("G0 X1 (a (b) c)", "t.ngc:1:10: error: nested comment: '(' inside a comment"),
+    ("G0 X1 (open", "t.ngc:1:7: error: unclosed comment"),
+    ("o100 sub", "t.ngc:1:1: error: O-words (subprograms, loops, conditions) are not supported by the linuxcnc reader"),
+    ("N10 O100", "t.ngc:1:5: error: O-words (subprograms, loops, conditions) are not supported by the linuxcnc reader"),
+    ("G0 X#1", "t.ngc:1:5: error: parameters (#) are not supported by the linuxcnc reader"),
+    ("G0 X[1+2]", "t.ngc:1:5: error: expressions ([...]) are not supported by the linuxcnc reader"),
+    ("G0 X", "t.ngc:1:4: error: address X needs a value"),
+    ("G0 X1 %", "t.ngc:1:7: error: '%' must stand alone on its line"),
+])
+def test_lexical_errors_are_located(text: str, message: str) -> None:
+    assert errors(text + "\n") == [message]
+
+
+def test_block_delete_and_percent_lines() -> None:
+    blocks = read("%\n/G0 X1 Y2 Z3\n%\n")
+    assert "TapeMark" in blocks[0].sections and "TapeMark" in blocks[2].sections
+    assert blocks[1].sections["BlockDelete"].level == 1  # type: ignore[attr-defined]
+
+
+# -- meaning -----------------------------------------------------------------------------------------
+
+def test_numbers_mean_what_they_say() -> None:
+    """X10 is 10 mm in RS274/NGC; on a Fanuc control with default input it is 0.010 mm."""
+    block = read("G21 G0 X10 Y.5 Z-2\n")[0]
+    assert block.sections["Motion"] == Motion("rapid", {"X": 10.0, "Y": 0.5, "Z": -2.0})
+
+
+def test_dwell_p_is_seconds() -> None:
+    assert read("G4 P0.5\n")[0].sections["Dwell"] == Dwell(0.5)
+    assert read("G4 P2\n")[0].sections["Dwell"] == Dwell(2.0)
+    assert errors("G4\n") == ["t.ngc:1:1: error: G4 needs a dwell time P (seconds)"]
+
+
+def test_g80_leaves_no_motion_mode() -> None:
+    """rs274: "Cannot use axis values without a g code that uses them"."""
+    assert errors("G21 G0 X0 Y0 Z10\nG81 X1 Y1 Z-1 R1 F100\nG80\nX5\n") == [
+        "t.ngc:4:1: error: axis words with no motion mode in force (G80 cancels it: program G0 or G1)"]
+    assert moves("G21 G0 X0 Y0 Z10\nG80\nG1 X5 F100\nY5\n")[-1] == ("feed", 5, 5, 10)
+
+
+@pytest.mark.parametrize("text, message", [
+    ("G81 X1 Y1 Z-1 R1 K2 F100", "t.ngc:2:18: error: K in a drilling cycle: LinuxCNC counts repeats with L"),
+    ("G91 G81 X1 Y1 Z-1 R-1 L0 F100", "t.ngc:2:23: error: a canned cycle cannot repeat zero times (L must be 1 or more)"),
+    ("G1 X1 L2 F100", "t.ngc:2:7: error: L (repeat count) outside a canned cycle"),
+    ("G0 G81 X1 Y1 Z-1 R1 F100", "t.ngc:2:4: error: G codes G0 and G81 are both in one modal group"),
+    ("G80 G1 X1 F100", "t.ngc:2:5: error: G codes G80 and G1 are both in one modal group"),
+    ("M98 P100", "t.ngc:2:1: error: subprogram calls (M98/M99) are not supported by the linuxcnc reader"),
+    ("G90.1", "t.ngc:2:1: error: absolute arc centres (G90.1) are not supported by the linuxcnc reader yet"),
+    ("G44 H1", "t.ngc:2:1: error: unknown G code G44"),
+    ("G0 X1 E2", "t.ngc:2:7: error: address E is not used by the linuxcnc dialect"),
+])
+def test_rs274_rules_refuse_with_a_located_error(text: str, message: str) -> None:
+    assert errors("G21 G0 X0 Y0 Z10\n" + text + "\n") == [message]
+
+
+def test_g53_moves_in_the_mode_in_force_which_must_be_g0_or_g1() -> None:
+    """rs274: G53 G1 feeds; G53 after G2 is "Must use g0 or g1 with g53"."""
+    assert moves("G21 G0 X0 Y0 Z0\nG53 G1 X5 F100\nG53 X7\n") == [("feed", 5, 0, 0), ("feed", 7, 0, 0)]
+    assert errors("G21 G0 X0 Y0 Z0\nG2 X2 Y0 I1 J0 F100\nG53 X3\n") == [
+        "t.ngc:3:1: error: G53 needs G0 or G1 in force"]
+
+
+def test_g43_without_h_uses_the_selected_tool() -> None:
+    blocks = read("T3 M6\nG43 G0 Z10\n")
+    assert blocks[1].sections["ToolLengthOffset"] == ToolLengthOffset("positive", 3)
+
+
+def test_m19_takes_its_angle_from_r() -> None:
+    assert read("M19 R45\n")[0].sections["SpindleOrientation"] == SpindleOrientation(45.0)
+
+
+@pytest.mark.parametrize("text, what", [
+    ("G64 P0.01", "G64 (path blending with a tolerance)"),
+    ("G76 P0.05 Z-1 I-0.075 J0.008 K0.045", "G76 (threading cycle)"),
+    ("G87 X1 Y1 Z-1 R1 I0.5 J0 K0.5 F10", "G87 (RS274/NGC back boring (I/J shift, K top))"),
+    ("G92 X0 Y0", "G92 (coordinate system offset)"),
+    ("M62 P1", "M62 (digital output on, synchronised)"),
+])
+def test_codes_without_neutral_meaning_travel_verbatim(text: str, what: str) -> None:
+    block = read(text + "\n")[0]
+    native = block.sections["NativeCode"]
+    assert native.dialect == "linuxcnc" and native.what == what  # type: ignore[attr-defined]
+    assert write(text + "\n", "linuxcnc")[0] == text + "\n"
+    with pytest.raises(ErrorList, match="has no equivalent in fanuc"):
+        write(text + "\n", "fanuc")
+
+
+# -- cycles under RS274/NGC rules ------------------------------------------------------------------
+
+def test_the_interpreter_starts_in_g99_and_a_modal_g98_returns_to_the_first_old_z() -> None:
+    """As rs274 prints it: without G98/G99 the first hole returns to R; a G98 block continuing the same
+    cycle returns to the Z the cycle started from (10), not to the R where the tool stands."""
+    program = "G21 G0 X0 Y0 Z10\nG81 X1 Y1 Z-1 R1 F100\nG98 G81 X2 Y1 Z-1 R1\nM2\n"
+    assert moves(program) == [
+        ("rapid", 0, 0, 10),
+        ("rapid", 1, 1, 10), ("rapid", 1, 1, 1), ("feed", 1, 1, -1), ("rapid", 1, 1, 1),
+        ("rapid", 2, 1, 10), ("rapid", 2, 1, 1), ("feed", 2, 1, -1), ("rapid", 2, 1, 10),
+    ]
+
+
+def test_g98_returns_to_r_when_the_old_z_is_below_it() -> None:
+    assert moves("G21 G0 X0 Y0 Z2\nG98 G81 X1 Y1 Z-1 R3 F100\nM2\n") == [
+        ("rapid", 0, 0, 2), ("rapid", 0, 0, 3), ("rapid", 1, 1, 3), ("feed", 1, 1, -1), ("rapid", 1, 1, 3)]
+
+
+def test_start_below_r_rises_to_r_first() -> None:
+    assert moves("G21 G0 X0 Y0 Z0\nG81 X1 Y1 Z-3 R2 F100\nM2\n") == [
+        ("rapid", 0, 0, 2), ("rapid", 1, 1, 2), ("feed", 1, 1, -3), ("rapid", 1, 1, 2)]
+
+
+def test_peck_clearances_are_the_interpreter_constant_whatever_the_setup() -> None:
+    """rs274 prints the G83 re-approach 0.254 mm above the last bottom (0.010 in)."""
+    setup = MachineSetup(cycles=CycleSettings(peck_retract=1.0, peck_clearance=1.0))
+    got = [e for e in events("G21 G0 X0 Y0 Z5\nG83 X0 Y0 Z-2 R1 Q1 F100\nM2\n", setup) if "move" in e]
+    assert [e["z"] for e in got] == [5, 1, 0, 1, 0.254, -1, 1, -0.746, -2, 1]
+    assert setup.cycles.peck_clearance == 1.0  # the caller's set-up is left alone
+
+
+def test_cycle_dwell_p_is_seconds_and_l_repeats_a_row() -> None:
+    got = events("G21 G0 X0 Y0 Z5\nG91 G82 X2 Y0 Z-3 R-4 P1.5 L2 F100\nM2\n")
+    assert [e["seconds"] for e in got if e.get("event") == "dwell"] == [1.5, 1.5]
+    assert [(e["x"], e["z"]) for e in got if e.get("move") == "feed"] == [(2, -2), (4, -2)]
+
+
+# -- round trips and writing ------------------------------------------------------------------------
+
+@pytest.mark.parametrize("path", EXAMPLES, ids=lambda p: p.name)
+def test_examples_round_trip_byte_for_byte(cli: Any, tmp_path: Path, path: Path) -> None:
+    out = tmp_path / path.name
+    result = cli("translate", path, "--from", "linuxcnc", "--to", "linuxcnc", "-o", out)
+    assert result.status == 0, result.err
+    assert out.read_bytes() == path.read_bytes()
+
+
+def test_examples_exist_and_simulate() -> None:
+    assert len(EXAMPLES) >= 2
+    for path in EXAMPLES:
+        with open(path, encoding="utf-8", newline="") as src:
+            got = list(toolpath_events(src, file=str(path), dialect="linuxcnc"))
+        assert any(e.get("move") == "feed" for e in got), path
+
+
+@pytest.mark.parametrize("fanuc, linuxcnc", [
+    ("G04 X1.5\n", "G4 P1.5\n"),
+    ("G04 P250\n", "G4 P0.25\n"),
+    ("G55 G00 X1. Y2.\n", "G55 G0 X1. Y2.\n"),
+    ("M19\n", "M19 R0.\n"),
+    ("O1234 (PART)\n", "(O1234) (PART)\n"),
+    ("G91 G28 Z0.\n", "G91 G28 Z0.\n"),
+    ("G43 H02 Z50.\n", "G43 H02 G0 Z50.\n"),
+])
+def test_fanuc_blocks_in_linuxcnc_spelling(fanuc: str, linuxcnc: str) -> None:
+    """Every expected line was checked to run in LinuxCNC's interpreter."""
+    prefix = "G21 G00 X0. Y0. Z10.\n"
+    text, _ = write(prefix + fanuc, "linuxcnc", source="fanuc")
+    assert text == "G21 G0 X0. Y0. Z10.\n" + linuxcnc
+
+
+@pytest.mark.parametrize("fanuc, message", [
+    ("G44 H01 Z5.\n", "t.ngc:2:1: error: the linuxcnc dialect cannot express tool length offset negative"),
+    ("G09 G01 X5. F100.\n", "t.ngc:2:1: error: the linuxcnc dialect cannot express a one-shot exact stop"),
+    ("/2 G00 X5.\n", "t.ngc:2:1: error: the linuxcnc dialect cannot express block delete level 2 (LinuxCNC has "
+                     "one block delete switch)"),
+])
+def test_what_linuxcnc_lacks_is_a_located_error(fanuc: str, message: str) -> None:
+    with pytest.raises(ErrorList) as info:
+        write("G21 G00 X0. Y0. Z10.\n" + fanuc, "linuxcnc", source="fanuc")
+    assert [str(e) for e in info.value.errors] == [message]
+
+
+def test_fanuc_cycles_are_expanded_exactly_for_linuxcnc() -> None:
+    """Fanuc's G98 after G99 returns to the first level; LinuxCNC's would not: the motion is written out."""
+    text, _ = write("G21 G17 G90\nG00 X0. Y0. Z50.\nG99 G81 X10. Y10. Z-5. R2. F100.\nG98 X20.\nG80\nM30\n",
+                    "linuxcnc", source="fanuc")
+    code = [line for line in text.splitlines() if not line.startswith("(")]
+    assert not any("G81" in line for line in code), text
+    assert "G0 X20. Y10. Z50." in text  # the G98 hole returns to the initial level 50
+
+
+def test_linuxcnc_native_cycles_stay_native_when_generated() -> None:
+    block_text = "G98 G82 X1 Y1 Z-1 R1 P0.5 F100"
+    text, _ = write(f"G21 G0 X0 Y0 Z10\n{block_text}\nM2\n", "linuxcnc", setup=MachineSetup())
+    assert text.splitlines()[1] == block_text

@@ -1,0 +1,282 @@
+"""Plugins: hooks, the plugin manager, entry points, and the example dialect plugin.
+
+A small real plugin is registered into a fresh plugin manager by a fixture and unregistered afterwards;
+the default registry (``default_registry()``) is never touched by these tests.
+"""
+
+from __future__ import annotations
+
+import inspect
+import io
+from importlib.metadata import entry_points
+from pathlib import Path
+from typing import Callable
+
+import pluggy
+import pytest
+
+from postproc import hookspecs
+from postproc.api import translate
+from postproc.dialect import Dialect
+from postproc.errors import ErrorList
+from postproc.hookspecs import hookimpl
+from postproc.ir import Section
+from postproc.plugins import PROJECT, Registry, default_registry, make_plugin_manager
+from postproc.writer import WordWriter
+from postproc.xmlio import XAttr, XFactory, parse_xml_bytes
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+class Beep(Section):
+    """A section only the toy plugin knows."""
+
+    XNAME = KEY = "Beep"
+    XATTRS = (XAttr("pitch", int),)
+    __slots__ = ("pitch",)
+
+
+class ToyWriter(WordWriter):
+    DIALECT = "toy"
+    COOLANT = {**WordWriter.COOLANT, "flood": "M88"}
+
+
+class Toy(Dialect):
+    NAME = "toy"
+    DESCRIPTION = "a toy controller for tests"
+    WRITER = ToyWriter
+    ARCS_R = False
+    """Arcs only with I/J/K."""
+
+
+class ToyPlugin:
+    """Implements both registration hooks, as a third-party plugin module would."""
+
+    @hookimpl
+    def postproc_register_dialects(self, register: Callable[[type], None]) -> None:
+        register(Toy)
+
+    @hookimpl
+    def postproc_register_xml(self, factory: XFactory) -> None:
+        Beep.reg(factory)
+
+
+@pytest.fixture
+def toy_pm():
+    plugin = ToyPlugin()
+    pm = make_plugin_manager(extra=[plugin])
+    assert pm.is_registered(plugin)
+    yield pm
+    pm.unregister(plugin)
+    assert not pm.is_registered(plugin)
+
+
+def test_plugin_dialect_appears(toy_pm):
+    registry = Registry(toy_pm, XFactory())
+    assert registry.dialect("toy") is Toy
+    assert registry.dialect("fanuc").NAME == "fanuc"  # the entry points are loaded as well
+
+
+def test_plugin_xml_class_registers(toy_pm):
+    factory = XFactory()
+    Registry(toy_pm, factory)
+    assert "Beep" in factory.names()
+    assert factory.create(parse_xml_bytes(b'<Beep pitch="440"/>', "b.xml")) == Beep(440)
+    assert "Beep" not in default_registry().factory.names()  # a fresh manager leaves the default alone
+
+
+def test_plugin_dialect_translates(toy_pm):
+    registry = Registry(toy_pm, XFactory())
+    out = io.StringIO()
+    translate(io.StringIO("G21 G90 G00 X1.\nM08\nM09\n"), out, file="t.nc", source="fanuc", target="toy",
+              registry=registry)
+    assert out.getvalue() == "G21 G90 G00 X1.\nM88\nM09\n"
+
+
+def test_unregistered_plugin_is_gone(toy_pm):
+    [plugin] = [p for p in toy_pm.get_plugins() if isinstance(p, ToyPlugin)]
+    toy_pm.unregister(plugin)
+    assert "toy" not in Registry(toy_pm, XFactory()).dialects
+    toy_pm.register(plugin)  # the fixture unregisters it again
+
+
+def test_without_entry_points_only_the_core_remains():
+    pm = make_plugin_manager(entry_points=False)
+    factory = XFactory()
+    registry = Registry(pm, factory)
+    assert registry.dialects == {}
+    assert {"Sequence", "Motion", "Pipeline", "MachineSetup", "ModalStateSyntax"} <= set(factory.names())
+
+
+class Impostor(Dialect):
+    NAME = "fanuc"
+
+
+class ImpostorPlugin:
+    @hookimpl
+    def postproc_register_dialects(self, register: Callable[[type], None]) -> None:
+        register(Impostor)
+
+
+def test_duplicate_dialect_names_are_an_error():
+    pm = make_plugin_manager(extra=[ImpostorPlugin()])
+    with pytest.raises(Exception, match="dialect 'fanuc' registered twice"):
+        Registry(pm, XFactory())
+
+
+def test_registering_the_same_dialect_twice_is_harmless(toy_pm):
+    class Again:
+        @hookimpl
+        def postproc_register_dialects(self, register: Callable[[type], None]) -> None:
+            register(Toy)
+
+    toy_pm.register(Again())
+    assert Registry(toy_pm, XFactory()).dialect("toy") is Toy
+
+
+class NotADialectPlugin:
+    @hookimpl
+    def postproc_register_dialects(self, register: Callable[[type], None]) -> None:
+        register(WordWriter)
+
+
+def test_only_named_dialects_can_be_registered():
+    pm = make_plugin_manager(extra=[NotADialectPlugin()], entry_points=False)
+    with pytest.raises(TypeError, match="is not a named postproc Dialect"):
+        Registry(pm, XFactory())
+
+
+class MisspeltPlugin:
+    @hookimpl
+    def postproc_register_dialect(self, register: Callable[[type], None]) -> None:  # no trailing s
+        register(Toy)
+
+
+def test_check_pending_catches_a_misspelt_hook():
+    with pytest.raises(pluggy.PluginValidationError, match="postproc_register_dialect"):
+        make_plugin_manager(extra=[MisspeltPlugin()], entry_points=False)
+
+
+class WrongArgumentPlugin:
+    @hookimpl
+    def postproc_register_xml(self, registry: XFactory) -> None:
+        pass
+
+
+def test_a_hook_with_an_unknown_argument_is_refused():
+    with pytest.raises(pluggy.PluginValidationError, match="registry"):
+        make_plugin_manager(extra=[WrongArgumentPlugin()], entry_points=False)
+
+
+def test_unknown_dialect_is_a_usage_error_listing_the_installed_ones(toy_pm):
+    from postproc.errors import UsageError
+
+    with pytest.raises(UsageError, match=r"unknown dialect 'nope' \(installed: .*fanuc.*toy"):
+        Registry(toy_pm, XFactory()).dialect("nope")
+
+
+# -- the hook specifications themselves --------------------------------------------------------------
+
+def _hookspecs() -> dict[str, Callable[..., object]]:
+    return {name: fn for name, fn in inspect.getmembers(hookspecs, inspect.isfunction)
+            if hasattr(fn, f"{PROJECT}_spec")}
+
+
+def test_hooks_are_prefixed_and_documented():
+    specs = _hookspecs()
+    assert specs, "postproc.hookspecs declares no hooks"
+    for name, fn in specs.items():
+        assert name.startswith("postproc_"), name
+        assert inspect.getdoc(fn), f"hook {name} has no docstring"
+        if getattr(fn, f"{PROJECT}_spec").get("firstresult"):
+            assert "first non-None result" in inspect.getdoc(fn), f"firstresult hook {name} must say so"
+
+
+def test_every_hook_is_mentioned_by_a_test():
+    """This test names no hook itself: a new hook passes only once some test uses it."""
+    sources = {p.name: p.read_text() for p in (ROOT / "tests").rglob("test_*.py")}
+    for name in _hookspecs():
+        assert any(name in text for text in sources.values()), (
+            f"hook {name} has no test: register a plugin implementing it in a test")
+
+
+# -- entry points and the built-in dialect -------------------------------------------------------------
+
+def test_builtin_fanuc_comes_through_the_entry_point_group():
+    eps = {ep.name: ep.value for ep in entry_points(group=PROJECT)}
+    assert eps.get("fanuc") == "dialects.fanuc"
+
+
+def test_dialects_command_lists_fanuc_with_its_capability_table(cli):
+    result = cli("dialects")
+    assert result.status == 0, result.err
+    text = result.out.decode()
+    fanuc = default_registry().dialect("fanuc")
+    block = text[text.index("fanuc (read/write): "):].split("\n\n")[0].splitlines()
+    assert block[0] == f"fanuc (read/write): {fanuc.DESCRIPTION}"
+    assert block[1] == ("  NATIVE_CYCLES: back_bore, bore_dwell_feed, bore_feed, bore_manual, bore_stop, drill, "
+                        "drill_dwell, fine_bore, peck_chip, peck_deep, tap, tap_left")
+    assert "  SPINDLE_ORIENTATION: True" in block
+    assert "  ARCS_R: True" in block
+
+
+def test_dialects_command_as_json(cli):
+    import json
+
+    result = cli("dialects", "--json")
+    table = json.loads(result.out)
+    assert table["fanuc"]["reads"] is True and table["fanuc"]["writes"] is True
+    assert "drill" in table["fanuc"]["capabilities"]["NATIVE_CYCLES"]
+    assert table["fanuc"]["capabilities"]["SPINDLE_ORIENTATION"] is True
+
+
+def test_capabilities_are_documented_upper_case_attributes():
+    table = Toy.capabilities()
+    assert table["ARCS_R"] is False
+    assert "NAME" not in table and "WRITER" not in table and "DESCRIPTION" not in table
+
+
+# -- the example plugin (plugins/example_dialect) -------------------------------------------------------
+
+def _example_installed() -> None:
+    names = {ep.name for ep in entry_points(group=PROJECT)}
+    assert "example" in names, ("the example dialect plugin is not installed: "
+                                ".venv/bin/pip install -e plugins/example_dialect (make install does it)")
+
+
+def test_example_plugin_is_listed(cli):
+    _example_installed()
+    text = cli("dialects").out.decode()
+    assert "example (write): " in text
+    example = text[text.index("example (write): "):].splitlines()
+    assert example[1] == "  NATIVE_CYCLES: none"
+    assert "  SPINDLE_ORIENTATION: False" in example[:10]
+
+
+def test_example_plugin_is_built_like_a_third_party_plugin():
+    _example_installed()
+    example = default_registry().dialect("example")
+    assert issubclass(example, Dialect) and issubclass(example.WRITER, WordWriter)
+    assert example.__module__.split(".")[0] == "postproc_example_dialect"
+    assert example.WRITER.MOTION["rapid"] == "G0" and example.WRITER.MOTION["home"] == "G28"
+
+
+def test_example_plugin_writes_g0_and_four_decimals(cli):
+    _example_installed()
+    result = cli("translate", ROOT / "examples/fanuc/o1003_pocket_and_edge.nc", "--from", "fanuc", "--to", "example")
+    assert result.status == 0, result.err
+    lines = result.out.decode().splitlines()
+    # hand-written from the source lines N50, N100, N180, N200, N260 and N340 of O1003
+    for expected in ("N50 G54 G0 X50.0000 Y50.0000 S8000 M03", "N100 G3 I-7.0000",
+                     "N180 G3 X20.0000 Y10.0000 I0.0000 J-6.0000", "N200 G3 X80.0000 Y22.0000 R6.0000",
+                     "N260 G91 G28 Z0.0000 M05", "N340 G3 X103.0000 Z-5.0000 I0.0000 K-8.0000"):
+        assert expected in lines
+
+
+def test_example_plugin_refuses_an_oriented_spindle_stop():
+    _example_installed()
+    with pytest.raises(ErrorList) as info:
+        translate(io.StringIO("G21 G90 G00 X0. Y0.\nM19\n"), io.StringIO(), file="o.nc", source="fanuc",
+                  target="example")
+    [err] = info.value.errors
+    assert str(err) == "o.nc:2:1: error: the example dialect cannot express an oriented spindle stop"

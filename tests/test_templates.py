@@ -1,0 +1,125 @@
+"""Header and footer templates: sandboxed jinja2, strict about undefined names, errors located in the set-up."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from postproc.errors import ConfigError
+from postproc.setup import MachineSetup, Templates, load_setup
+from postproc.templates import MAX_OUTPUT, check_templates, render
+
+ROOT = Path(__file__).resolve().parents[1]
+DECLARATION = "<?xml version='1.0' encoding='UTF-8'?>\n"
+
+
+def test_render_substitutes_and_ends_with_a_newline():
+    assert render("header", "(PROGRAM {{ program }} FOR {{ machine | upper }})", {"program": "o1", "machine": "vmc"},
+                  "m.xml") == "(PROGRAM o1 FOR VMC)\n"
+
+
+def test_render_keeps_a_trailing_newline_and_adds_none():
+    assert render("footer", "(A)\n(B)\n", {}, "m.xml") == "(A)\n(B)\n"
+
+
+def test_an_empty_template_renders_nothing():
+    assert render("footer", "", {}, "m.xml") == ""
+
+
+def test_control_structures_work_in_the_sandbox():
+    text = "{% for t in tools %}(T{{ t }}){% if not loop.last %} {% endif %}{% endfor %}"
+    assert render("header", text, {"tools": [1, 2, 3]}, "m.xml") == "(T1) (T2) (T3)\n"
+
+
+@pytest.mark.parametrize("text, line", [
+    ("{{ nope }}", 10),
+    ("(A)\n{{ program }} {{ nope }}", 11),
+    ("(A)\n(B)\n{% if nope %}x{% endif %}", 12),
+    ("{{ program.nope }}", 10),
+])
+def test_undefined_names_are_errors_at_their_line(text, line):
+    with pytest.raises(ConfigError) as info:
+        render("header", text, {"program": "o1"}, "m.xml", first_line=10)
+    assert info.value.message.startswith("template header: ")
+    assert "undefined" in info.value.message or "has no attribute" in info.value.message
+    assert (info.value.location.file, info.value.location.line) == ("m.xml", line)
+
+
+ESCAPES = [
+    "{{ ''.__class__.__mro__ }}",
+    "{{ ''.__class__.__mro__[1].__subclasses__() }}",
+    "{% for c in [].__class__.__base__.__subclasses__() %}{{ c }}{% endfor %}",
+    "{{ cycler.__init__.__globals__ }}",
+    "{{ lipsum.__globals__['os'] }}",
+    "{{ self.__init__.__globals__ }}",
+    "{{ program | attr('__class__') }}",
+    "{{ '{0.__class__}'.format(program) }}",
+    "{{ program.__len__ }}",
+]
+
+
+@pytest.mark.parametrize("expression", ESCAPES)
+def test_sandbox_blocks_escapes_with_a_located_error(expression):
+    with pytest.raises(ConfigError) as info:
+        render("header", "(SAFE LINE)\n" + expression, {"program": "o1"}, "m.xml", first_line=4)
+    assert info.value.message.startswith("template header: ")
+    assert "unsafe" in info.value.message
+    assert str(info.value.location) == "m.xml:5:1"
+
+
+def test_syntax_errors_are_located():
+    with pytest.raises(ConfigError) as info:
+        render("footer", "(A)\n{% for %}", {}, "m.xml", first_line=7)
+    assert info.value.message.startswith("template footer: ")
+    assert str(info.value.location) == "m.xml:8:1"
+
+
+def test_output_size_is_limited():
+    with pytest.raises(ConfigError, match=f"renders more than {MAX_OUTPUT} characters"):
+        render("header", "{{ 'x' * n }}", {"n": MAX_OUTPUT + 1}, "m.xml")
+
+
+def test_check_templates_points_into_the_setup_file(tmp_path):
+    path = tmp_path / "m.xml"
+    path.write_text(DECLARATION + '<MachineSetup name="m">\n  <Templates>\n    <Header>(OK)</Header>\n'
+                    "    <Footer>(A)\n(B {{ x }\n</Footer>\n  </Templates>\n</MachineSetup>\n")
+    setup = load_setup(path)
+    with pytest.raises(ConfigError) as info:
+        check_templates(setup)
+    assert (info.value.location.file, info.value.location.line) == (str(path), 6)
+
+
+def test_check_templates_accepts_the_example():
+    check_templates(load_setup(ROOT / "examples/setups/fanuc_0i_mf_templates.xml"))
+
+
+def test_check_templates_without_templates():
+    check_templates(MachineSetup(templates=Templates()))
+
+
+# -- through translate -------------------------------------------------------------------------------
+
+def test_translate_writes_header_and_footer_inside_the_tape_marks(cli):
+    """Fanuc ignores what comes before the first '%' and after the last: the header and footer belong
+    between them, or the control never sees them."""
+    result = cli("translate", ROOT / "examples/fanuc/o1003_pocket_and_edge.nc", "--from", "fanuc", "--to", "fanuc",
+                 "--machine", ROOT / "examples/setups/fanuc_0i_mf_templates.xml")
+    assert result.status == 0, result.err
+    lines = result.out.decode().splitlines()
+    assert "(MACHINE: VMC 850 - FANUC 0I-MF)" in lines
+    assert "(PROGRAM o1003_pocket_and_edge POSTED FOR FANUC 0I-MF VMC 850, IS-B LEAST INCREMENT)" in lines
+    assert "(END OF o1003_pocket_and_edge)" in lines
+    assert lines[0] == "%" and lines[-1] == "%"
+
+
+def test_translate_template_errors_point_into_the_setup_file(cli, tmp_path):
+    machine = tmp_path / "m.xml"
+    machine.write_text(DECLARATION + '<MachineSetup name="m">\n  <Templates>\n'
+                       "    <Header>(LINE ONE)\n{{ ''.__class__ }}</Header>\n  </Templates>\n</MachineSetup>\n")
+    result = cli("translate", ROOT / "examples/fanuc/o1003_pocket_and_edge.nc", "--from", "fanuc", "--to", "fanuc",
+                 "--machine", machine, "-o", tmp_path / "out.nc")
+    assert result.status == 1
+    assert result.err.startswith(f"{machine}:5:1: error: template header: ")
+    assert "unsafe" in result.err
+    assert not (tmp_path / "out.nc").exists()
