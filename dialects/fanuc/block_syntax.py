@@ -224,7 +224,7 @@ class FanucBlockSyntax(Syntax):
                     used.add("H")
                 block.add(ToolLengthOffset(arg, values.get("H") if arg != "cancel" else None))
             elif kind == "dwell":
-                self._dwell(block, ctx, values, used, _col_of_word(block, "G", num))
+                self._dwell(block, ctx, values, used, num)
             elif kind == "home":
                 home = arg
             elif kind == "machine":
@@ -262,10 +262,6 @@ class FanucBlockSyntax(Syntax):
         used.update(axes)
         center = None
         radius = None
-        if "01" in codes:
-            motion_col = _col_of_word(block, "G", codes["01"][3])
-        else:
-            motion_col = ctx.column_of(block, next(iter(axes))) if axes else 1
         if mode in ("cw", "ccw"):
             center = {CENTER_AXIS[k]: float(values[k]) for k in "IJK" if k in values}
             used.update(k for k in "IJK" if k in values)
@@ -277,10 +273,11 @@ class FanucBlockSyntax(Syntax):
                                        ctx.at(block, ctx.column_of(block, "R")))
                 center = None
             elif not center:
-                raise ProgramError("an arc needs a centre (I/J/K) or a radius R", ctx.at(block, motion_col))
+                raise ProgramError("an arc needs a centre (I/J/K) or a radius R",
+                                   ctx.at(block, _motion_col(block, ctx, codes, axes)))
         block.add(Motion(mode, {k: float(v) for k, v in axes.items()}, center, radius))
 
-    def _dwell(self, block: Block, ctx: Context, values: dict[str, Any], used: set[str], col: int) -> None:
+    def _dwell(self, block: Block, ctx: Context, values: dict[str, Any], used: set[str], num: str) -> None:
         if "P" in values:
             seconds = int(values["P"]) / 1000.0
             used.add("P")
@@ -288,9 +285,10 @@ class FanucBlockSyntax(Syntax):
             seconds = float(values["X"])
             used.add("X")
         else:
-            raise ProgramError("G04 needs a dwell time X (seconds) or P (milliseconds)", ctx.at(block, col))
+            raise ProgramError("G04 needs a dwell time X (seconds) or P (milliseconds)",
+                               ctx.at(block, _col_of_word(block, "G", num)))
         if seconds < 0:
-            raise ProgramError("a dwell time cannot be negative", ctx.at(block, col))
+            raise ProgramError("a dwell time cannot be negative", ctx.at(block, _col_of_word(block, "G", num)))
         block.add(Dwell(seconds))
 
     def _m_sections(self, block: Block, ctx: Context, mcodes: list[tuple[int, str]], used: set[str]) -> None:
@@ -332,6 +330,13 @@ def _divisor(ctx: Context, units: str) -> int:
         return 0
     base = {"IS-A": 100, "IS-B": 1000, "IS-C": 10000}[inp.increment_system]
     return base if units == "mm" else base * 10
+
+
+def _motion_col(block: Block, ctx: Context, codes: dict[str, Any], axes: dict[str, Any]) -> int:
+    """Column of the block's motion code, or of its first axis word when the motion is modal."""
+    if "01" in codes:
+        return _col_of_word(block, "G", codes["01"][3])
+    return ctx.column_of(block, next(iter(axes))) if axes else 1
 
 
 def _col_of_word(block: Block, letter: str, num: str) -> int:
