@@ -211,9 +211,12 @@ class WordWriter(Writer):
         tail_keys = [k for k in rest if k not in head_keys]
         head = Block(block.line, None, "\n")
         head.sections = {k: rest[k] for k in head_keys}
-        if head.sections:
+        note = self.comment_line(f"{compound.term} from line {block.line}: {self.source_text(block)}")
+        if list(head.sections) == ["Sequence"]:
+            note = " ".join(self.sequence_words(head.sections["Sequence"], block)) + " " + note
+        elif head.sections:
             lines.append(self.generate(head))
-        lines.append(self.comment_line(f"{compound.term} from line {block.line}: {self.source_text(block)}"))
+        lines.append(note)
         was_incremental = self.distance == "incremental"
         for item in compound.items:
             lines.append(self.item_line(item, block))
