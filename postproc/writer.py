@@ -381,8 +381,13 @@ class WordWriter(Writer):
         return self._code(self.SPINDLE, s.direction, f"spindle {s.direction}", block)
 
     def spindle_orientation_words(self, s: Any, block: Block) -> list[str]:
+        """M19 orients to the angle the machine's parameters hold (the set-up's ``orientAngle``);
+        any other angle cannot be written with it."""
         if self.ORIENT is None:
             self.unsupported("an oriented spindle stop", block)
+        if abs(s.angle - self.ctx.setup.cycles.orient_angle) > 1e-9:
+            self.unsupported(f"an oriented spindle stop at {s.angle:g} deg (M19 orients to the set-up's "
+                             f"{self.ctx.setup.cycles.orient_angle:g} deg)", block)
         return [self.ORIENT]  # type: ignore[list-item]
 
     def coolant_words(self, s: Any, block: Block) -> list[str]:

@@ -78,7 +78,8 @@ def _mismatch(ours: list[dict[str, Any]], theirs: list[dict[str, Any]], tol_mm: 
             return f"move {i} (line {a['line']}): {dev:.6f} mm apart: ours {a}, LinuxCNC {b}"
     if len(ours) != len(theirs):
         longer, name = (ours, "ours") if len(ours) > len(theirs) else (theirs, "LinuxCNC")
-        return f"{name} has {abs(len(ours) - len(theirs))} more move(s), the first: {longer[min(len(ours), len(theirs))]}"
+        first = longer[min(len(ours), len(theirs))]
+        return f"{name} has {abs(len(ours) - len(theirs))} more move(s), the first: {first}"
     return None
 
 

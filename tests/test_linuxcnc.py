@@ -68,7 +68,7 @@ def test_registered_through_its_entry_point_with_its_capabilities() -> None:
     assert caps["NATIVE_CYCLES"] == sorted(["drill", "drill_dwell", "peck_chip", "peck_deep", "tap", "tap_left",
                                             "bore_feed", "bore_stop", "bore_dwell_feed"])
     assert caps["CYCLE_SEMANTICS"] == "rs274"
-    assert not {"fine_bore", "back_bore", "bore_manual"} & set(caps["NATIVE_CYCLES"])  # type: ignore[arg-type]
+    assert not {"fine_bore", "back_bore", "bore_manual"} & set(caps["NATIVE_CYCLES"])
 
 
 def test_pipeline_xml_loads_and_writes_back_identically() -> None:
@@ -137,7 +137,8 @@ def test_g80_leaves_no_motion_mode() -> None:
 
 @pytest.mark.parametrize("text, message", [
     ("G81 X1 Y1 Z-1 R1 K2 F100", "t.ngc:2:18: error: K in a drilling cycle: LinuxCNC counts repeats with L"),
-    ("G91 G81 X1 Y1 Z-1 R-1 L0 F100", "t.ngc:2:23: error: a canned cycle cannot repeat zero times (L must be 1 or more)"),
+    ("G91 G81 X1 Y1 Z-1 R-1 L0 F100",
+     "t.ngc:2:23: error: a canned cycle cannot repeat zero times (L must be 1 or more)"),
     ("G1 X1 L2 F100", "t.ngc:2:7: error: L (repeat count) outside a canned cycle"),
     ("G0 G81 X1 Y1 Z-1 R1 F100", "t.ngc:2:4: error: G codes G0 and G81 are both in one modal group"),
     ("G80 G1 X1 F100", "t.ngc:2:5: error: G codes G80 and G1 are both in one modal group"),
@@ -278,3 +279,11 @@ def test_linuxcnc_native_cycles_stay_native_when_generated() -> None:
     block_text = "G98 G82 X1 Y1 Z-1 R1 P0.5 F100"
     text, _ = write(f"G21 G0 X0 Y0 Z10\n{block_text}\nM2\n", "linuxcnc", setup=MachineSetup())
     assert text.splitlines()[1] == block_text
+
+
+def test_an_orientation_angle_is_not_lost_on_the_way_to_fanuc() -> None:
+    """Fanuc's M19 orients to the angle its parameters hold (the set-up's orientAngle)."""
+    with pytest.raises(ErrorList, match="oriented spindle stop at 90 deg"):
+        write("G21 G0 X0 Y0 Z10\nM19 R90\nM2\n", "fanuc")
+    text, _ = write("G21 G0 X0 Y0 Z10\nM19 R0\nM2\n", "fanuc")
+    assert "M19" in text

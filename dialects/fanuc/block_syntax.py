@@ -97,7 +97,7 @@ class FanucBlockSyntax(Syntax):
                 raise ParseError(f"address {up} is not used by the Fanuc milling dialect",
                                  ctx.at(block, ctx.column_of(block, up)))
         used = {"N", "O"}
-        self._g_sections(block, ctx, codes, values, used, cycle_block)
+        self.g_sections(block, ctx, codes, values, used, cycle_block)
         self._m_sections(block, ctx, mcodes, used)
         if "F" in values:
             block.add(Feed(float(values["F"])))
@@ -184,7 +184,7 @@ class FanucBlockSyntax(Syntax):
         for up, num in raw.items():
             block.values[up] = float(num) if "." in num else int(num)
 
-    def _g_sections(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],
+    def g_sections(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],
                     used: set[str], cycle_block: bool) -> None:
         state = ctx.state
         motion_mode: str | None = None

@@ -18,7 +18,9 @@ from typing import Iterator
 
 from postproc.dialect import Dialect
 from postproc.errors import UnsupportedError
-from postproc.ir import Block, Comments, CompoundMotion, Motion, ProgramControl, Section, SpindleOrientation
+from postproc.ir import (
+    Block, Comments, CompoundMotion, Motion, ProgramControl, Section, SpindleControl, SpindleOrientation,
+)
 from postproc.syntax import Context
 
 from .section import CannedCycle
@@ -86,6 +88,7 @@ def _handle_orientation(block: Block, compound: CompoundMotion, ctx: Context, mo
         items: list[Section] = []
         for item in compound.items:
             if isinstance(item, SpindleOrientation):
+                items.append(SpindleControl("stop"))  # a program stop alone may leave the spindle turning
                 items.append(Comments([f"orient the spindle to {item.angle:g} deg by hand, then cycle start"]))
                 items.append(ProgramControl("stop"))
             else:

@@ -103,7 +103,8 @@ class GrblWriter(WordWriter):
         if a0 in arc.axes or a1 in arc.axes:
             return super().generate(block)
         distance = block.sections.get("DistanceMode")
-        absolute = (distance.mode if distance is not None else self.distance) == "absolute"  # type: ignore[attr-defined]
+        mode = distance.mode if distance is not None else self.distance  # type: ignore[attr-defined]
+        absolute = mode == "absolute"
         if absolute and arc.axes:
             self.unsupported("a helical full circle with no end point in its plane, in absolute mode", block)
         fixed = Block(block.line, None, block.eol)
@@ -139,7 +140,8 @@ class GrblWriter(WordWriter):
         """A pause inside an expansion is for the operator to work at the tool (orient it by hand, jog it
         out): grbl's M0 leaves the spindle turning, so a running spindle is stopped first."""
         line = super().item_line(item, block)
-        if isinstance(item, ProgramControl) and item.kind == "stop" and self.spindle != "stop":  # type: ignore[attr-defined]
+        pause = isinstance(item, ProgramControl) and item.kind == "stop"  # type: ignore[attr-defined]
+        if pause and self.spindle != "stop":
             self.spindle = "stop"
             return self.SPINDLE["stop"] + "\n" + line
         return line

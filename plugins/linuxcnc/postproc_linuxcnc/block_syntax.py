@@ -1,6 +1,6 @@
 """NgcBlockSyntax: gives a lexed RS274/NGC (LinuxCNC) block its neutral sections.
 
-It reuses Fanuc's block logic where the meaning is the same (``FanucBlockSyntax._g_sections``: modal
+It reuses Fanuc's block logic where the meaning is the same (``FanucBlockSyntax.g_sections``: modal
 sections, motion, arcs, modal cycle repetition) and replaces what RS274/NGC reads differently:
 
 * numbers mean what they say: ``X10`` is 10 units, there is no decimal-point scaling;
@@ -65,11 +65,12 @@ class NgcBlockSyntax(FanucBlockSyntax):
             if up == "G":
                 self._g_code(ctx, block, num, codes, natives)
             elif up == "M":
+                at = ctx.at(block, _col_of_word(block, "M", num))
                 if "." in num:
-                    raise ParseError(f"M code M{num} takes no decimal point", ctx.at(block, ctx.column_of(block, "M")))
+                    raise ParseError(f"M code M{num} takes no decimal point", at)
                 number = int(num)
                 if number in self.REFUSED_M:
-                    raise ParseError(self.REFUSED_M[number], ctx.at(block, _col_of_word(block, "M", num)))
+                    raise ParseError(self.REFUSED_M[number], at)
                 mcodes.append((number, num))
             elif up in raw:
                 raise ParseError(f"address {up} appears twice in one block", ctx.at(block, _second_col(block, up)))
@@ -86,7 +87,7 @@ class NgcBlockSyntax(FanucBlockSyntax):
         extra = state.extra
         cycle_block = "09" in codes and codes["09"][1] == "cycle" or (
             state.cycle is not None and "01" not in codes and "09" not in codes)
-        self._check_cycle_words(block, ctx, codes, values, cycle_block)
+        self._check_cycle_words(block, ctx, values, cycle_block)
         if "08" in codes and codes["08"][2] == "positive" and "H" not in values:
             self._loaded_tool(block, ctx, values)
         no_motion = extra.get(_STATE_KEY, False)
@@ -101,7 +102,9 @@ class NgcBlockSyntax(FanucBlockSyntax):
         used = {"N"}
         if cycle_block:
             used.add("L")
-        self._g_sections(block, ctx, codes, values, used, cycle_block)
+        if codes.get("00", ("", ""))[1] == "dwell":
+            self._ngc_dwell(block, ctx, values, used, codes.pop("00")[3])
+        self.g_sections(block, ctx, codes, values, used, cycle_block)
         if "MachineCoordinates" in block.sections and "Motion" in block.sections:
             self._machine_move(block, ctx, codes)
         self._ngc_m_sections(block, ctx, mcodes, values, used)
@@ -117,7 +120,8 @@ class NgcBlockSyntax(FanucBlockSyntax):
         unused = [k for k in values if k not in used]
         if unused:
             up = unused[0]
-            raise ProgramError(f"address {up} has no meaning in this block", ctx.at(block, ctx.column_of(block, up)))
+            raise ProgramError(f"address {up} has no meaning in this block",
+                               ctx.at(block, ctx.column_of(block, up)))
 
     def _value(self, block: Block, ctx: Context, up: str, num: str) -> float | int:
         if up in self.REAL_LETTERS:
@@ -167,11 +171,12 @@ class NgcBlockSyntax(FanucBlockSyntax):
         for up, num in raw.items():
             block.values[up] = float(num) if "." in num else int(num)
 
-    def _check_cycle_words(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],
-                           cycle_block: bool) -> None:
+    def _check_cycle_words(self, block: Block, ctx: Context, values: dict[str, Any], cycle_block: bool) -> None:
+        """L counts repeats only in a cycle block; LinuxCNC refuses K there and L0."""
         if not cycle_block:
             if "L" in values:
-                raise ProgramError("L (repeat count) outside a canned cycle", ctx.at(block, ctx.column_of(block, "L")))
+                raise ProgramError("L (repeat count) outside a canned cycle",
+                                   ctx.at(block, ctx.column_of(block, "L")))
             return
         if "K" in values:
             raise ProgramError("K in a drilling cycle: LinuxCNC counts repeats with L",
@@ -197,9 +202,10 @@ class NgcBlockSyntax(FanucBlockSyntax):
             raise ProgramError("G53 needs G0 or G1 in force", ctx.at(block, _col_of_word(block, "G", "53")))
         block.sections["Motion"].mode = mode  # type: ignore[attr-defined]
 
-    def _dwell(self, block: Block, ctx: Context, values: dict[str, Any], used: set[str], col: int = 1) -> None:
+    def _ngc_dwell(self, block: Block, ctx: Context, values: dict[str, Any], used: set[str], num: str) -> None:
+        """G4 P<seconds> (Fanuc: P milliseconds or X seconds), made here before the shared logic runs."""
         if "P" not in values:
-            raise ProgramError("G4 needs a dwell time P (seconds)", ctx.at(block, col))
+            raise ProgramError("G4 needs a dwell time P (seconds)", ctx.at(block, _col_of_word(block, "G", num)))
         seconds = float(values["P"])
         if seconds < 0:
             raise ProgramError("a dwell time cannot be negative", ctx.at(block, ctx.column_of(block, "P")))
@@ -222,7 +228,7 @@ class NgcBlockSyntax(FanucBlockSyntax):
                     raise ParseError(f"M{num}: only one machine-specific function per block is supported",
                                      ctx.at(block, _col_of_word(block, "M", num)))
                 block.add(NativeCode(self.DIALECT, what, f"M{num}"))
-                used.update("PQE")
+                used.update("PQ")
                 continue
             kind, arg = entry
             if kind in seen:
