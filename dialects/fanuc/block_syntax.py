@@ -45,10 +45,20 @@ class FanucBlockSyntax(Syntax):
         words = block.words
         if not words:
             return
+        raw: dict[str, str] = {}
+        for letter, num in words:  # first look: the likeliest block has no G or M code at all
+            up = _UPPER[letter]
+            if up == "G" or up == "M" or up in raw:
+                break
+            raw[up] = num
+        else:
+            if ctx.state.cycle is None and raw.keys() <= _PLAIN_LETTERS:
+                self._plain(block, ctx, raw)
+                return
         codes: dict[str, tuple[str, str, object, str]] = {}
         natives: list[str] = []
-        raw: dict[str, str] = {}
         mcodes: list[tuple[int, str]] = []
+        raw = {}
         for letter, num in words:
             up = _UPPER[letter]
             if up == "G":
