@@ -6,7 +6,7 @@ codes to neutral sections and refuses any word that would otherwise be dropped w
 
 from __future__ import annotations
 
-from typing import Any
+from typing import Any, ClassVar
 
 from postproc.errors import ParseError, ProgramError
 from postproc.ir import (
@@ -40,6 +40,12 @@ class FanucBlockSyntax(Syntax):
 
     XNAME = "FanucBlockSyntax"
     __slots__ = ()
+    DIALECT: ClassVar[str] = DIALECT
+    """Tag of the verbatim (NativeCode) sections this syntax makes."""
+    M_CODES: ClassVar[dict[int, tuple[str, object]]] = M_CODES
+    NATIVE_M: ClassVar[dict[int, str]] = NATIVE_M
+    NATIVE_M_WORDS: ClassVar[str] = "PL"
+    """Words a verbatim M code takes with it (M98 P.. L..)."""
 
     def build(self, block: Block, ctx: Context) -> None:
         words = block.words
@@ -108,7 +114,7 @@ class FanucBlockSyntax(Syntax):
                                  ctx.at(block, ctx.column_of(block, up)))
         used = {"N", "O"}
         self.g_sections(block, ctx, codes, values, used, cycle_block)
-        self._m_sections(block, ctx, mcodes, used)
+        self.m_sections(block, ctx, mcodes, values, used)
         if "F" in values:
             block.add(Feed(float(values["F"])))
             used.add("F")
@@ -301,20 +307,20 @@ class FanucBlockSyntax(Syntax):
             raise ProgramError("a dwell time cannot be negative", ctx.at(block, _col_of_word(block, "G", num)))
         block.add(Dwell(seconds))
 
-    def _m_sections(self, block: Block, ctx: Context, mcodes: list[tuple[int, str]], used: set[str]) -> None:
+    def m_sections(self, block: Block, ctx: Context, mcodes: list[tuple[int, str]], values: dict[str, Any],
+                   used: set[str]) -> None:
+        """M codes -> sections, through the class's ``M_CODES``; shared with dialects of the same family,
+        which override ``unknown_m`` and ``orient`` where they differ."""
         seen: dict[str, str] = {}
         for number, num in mcodes:
-            entry = M_CODES.get(number)
+            entry = self.M_CODES.get(number)
             if entry is None:
-                if number in NATIVE_M:
-                    what = f"M{num} ({NATIVE_M[number]})"
-                else:
-                    what = f"M{num} (machine-specific M function)"
+                what = self.unknown_m(block, ctx, number, num)
                 if "NativeCode" in block.sections:
                     raise ParseError(f"M{num}: only one machine-specific function per block is supported",
                                      ctx.at(block, _col_of_word(block, "M", num)))
-                block.add(NativeCode(DIALECT, what, f"M{num}"))
-                used.update("PL")
+                block.add(NativeCode(self.DIALECT, what, f"M{num}"))
+                used.update(self.NATIVE_M_WORDS)
                 continue
             kind, arg = entry
             if kind in seen:
@@ -326,11 +332,21 @@ class FanucBlockSyntax(Syntax):
             elif kind == "spindle":
                 block.add(SpindleControl(arg))
             elif kind == "orient":
-                block.add(SpindleOrientation(ctx.setup.cycles.orient_angle))
+                self.orient(block, ctx, num, values, used)
             elif kind == "tool_change":
                 block.add(ToolChange())
             elif kind == "coolant":
                 block.add(Coolant(arg))
+
+    def unknown_m(self, block: Block, ctx: Context, number: int, num: str) -> str:
+        """What an M code outside ``M_CODES`` is: kept verbatim (Fanuc: any M code is the machine's)."""
+        if number in self.NATIVE_M:
+            return f"M{num} ({self.NATIVE_M[number]})"
+        return f"M{num} (machine-specific M function)"
+
+    def orient(self, block: Block, ctx: Context, num: str, values: dict[str, Any], used: set[str]) -> None:
+        """M19: Fanuc orients to the angle its parameters hold (the set-up's ``orientAngle``)."""
+        block.add(SpindleOrientation(ctx.setup.cycles.orient_angle))
 
 
 def _divisor(ctx: Context, units: str) -> int:

@@ -44,8 +44,8 @@ class GrblBlockSyntax(NgcBlockSyntax):
             del sections["ProgramControl"]
             block.add(ToolChange())
 
-    def _orient(self, block: Block, ctx: Context, num: str, values: dict[str, Any], used: set[str]) -> None:
+    def orient(self, block: Block, ctx: Context, num: str, values: dict[str, Any], used: set[str]) -> None:
         """M19 exists only on machines whose set-up says so (``<Cycles orientation="m19"/>``)."""
         if ctx.setup.cycles.orientation != "m19":
             raise ParseError(codes.REFUSED_M[19], ctx.at(block, _col_of_word(block, "M", num)))
-        super()._orient(block, ctx, num, values, used)
+        super().orient(block, ctx, num, values, used)

@@ -19,10 +19,7 @@ from typing import Any, ClassVar
 from dialects.fanuc.block_syntax import FanucBlockSyntax, _col_of_word, _second_col
 from dialects.fanuc.codes import g_key
 from postproc.errors import ParseError, ProgramError
-from postproc.ir import (
-    Block, Coolant, Dwell, Feed, NativeCode, ProgramControl, SpindleControl, SpindleOrientation, SpindleSpeed,
-    ToolChange, ToolSelect,
-)
+from postproc.ir import Block, Dwell, Feed, NativeCode, SpindleOrientation, SpindleSpeed, ToolSelect
 from postproc.syntax import Context
 
 from . import codes as ngc
@@ -49,6 +46,7 @@ class NgcBlockSyntax(FanucBlockSyntax):
     NATIVE_M: ClassVar[dict[int, str]] = ngc.NATIVE_M
     REFUSED_M: ClassVar[dict[int, str]] = ngc.REFUSED_M
     USER_M: ClassVar[range] = ngc.USER_M
+    NATIVE_M_WORDS: ClassVar[str] = "PQ"
     REAL_LETTERS: ClassVar[frozenset[str]] = REAL_LETTERS
     INTEGER_LETTERS: ClassVar[frozenset[str]] = INTEGER_LETTERS
 
@@ -107,7 +105,7 @@ class NgcBlockSyntax(FanucBlockSyntax):
         self.g_sections(block, ctx, codes, values, used, cycle_block)
         if "MachineCoordinates" in block.sections and "Motion" in block.sections:
             self._machine_move(block, ctx, codes)
-        self._ngc_m_sections(block, ctx, mcodes, values, used)
+        self.m_sections(block, ctx, mcodes, values, used)
         if "F" in values:
             block.add(Feed(float(values["F"])))
             used.add("F")
@@ -212,41 +210,15 @@ class NgcBlockSyntax(FanucBlockSyntax):
         used.add("P")
         block.add(Dwell(seconds))
 
-    def _ngc_m_sections(self, block: Block, ctx: Context, mcodes: list[tuple[int, str]], values: dict[str, Any],
-                        used: set[str]) -> None:
-        seen: dict[str, str] = {}
-        for number, num in mcodes:
-            entry = self.M_CODES.get(number)
-            if entry is None:
-                if number in self.NATIVE_M:
-                    what = f"M{num} ({self.NATIVE_M[number]})"
-                elif number in self.USER_M:
-                    what = f"M{num} (user M code)"
-                else:
-                    raise ParseError(f"unknown M code M{num}", ctx.at(block, _col_of_word(block, "M", num)))
-                if "NativeCode" in block.sections:
-                    raise ParseError(f"M{num}: only one machine-specific function per block is supported",
-                                     ctx.at(block, _col_of_word(block, "M", num)))
-                block.add(NativeCode(self.DIALECT, what, f"M{num}"))
-                used.update("PQ")
-                continue
-            kind, arg = entry
-            if kind in seen:
-                raise ParseError(f"M codes M{seen[kind]} and M{num} conflict in one block",
-                                 ctx.at(block, _col_of_word(block, "M", num)))
-            seen[kind] = num
-            if kind == "program":
-                block.add(ProgramControl(arg))
-            elif kind == "spindle":
-                block.add(SpindleControl(arg))
-            elif kind == "orient":
-                self._orient(block, ctx, num, values, used)
-            elif kind == "tool_change":
-                block.add(ToolChange())
-            elif kind == "coolant":
-                block.add(Coolant(arg))
+    def unknown_m(self, block: Block, ctx: Context, number: int, num: str) -> str:
+        """LinuxCNC knows its M codes: user M100-M199 are kept verbatim, anything else is an error."""
+        if number in self.NATIVE_M:
+            return f"M{num} ({self.NATIVE_M[number]})"
+        if number in self.USER_M:
+            return f"M{num} (user M code)"
+        raise ParseError(f"unknown M code M{num}", ctx.at(block, _col_of_word(block, "M", num)))
 
-    def _orient(self, block: Block, ctx: Context, num: str, values: dict[str, Any], used: set[str]) -> None:
+    def orient(self, block: Block, ctx: Context, num: str, values: dict[str, Any], used: set[str]) -> None:
         """M19: LinuxCNC takes the angle from R (Q is a timeout, P the direction)."""
         block.add(SpindleOrientation(float(values.get("R", ctx.setup.cycles.orient_angle))))
         used.update("RQP")
