@@ -232,7 +232,7 @@ class Block:
     """
 
     XNAME = "Block"
-    __slots__ = ("line", "text", "eol", "words", "values", "sections")
+    __slots__ = ("line", "text", "eol", "words", "values", "sections", "canonical")
 
     def __init__(self, line: int, text: str | None, eol: str = "\n",
                  words: list[tuple[str, str]] | None = None) -> None:
@@ -242,6 +242,9 @@ class Block:
         self.words = words if words is not None else []
         self.values: dict[str, float | int] = {}
         self.sections: dict[str, Section] = {}
+        self.canonical = False
+        """A reader's hint: ``text`` is already in canonical spelling (``postproc.numbers``), so a
+        normalising writer may copy it. Not part of the block's value (equality, XML)."""
 
     def add(self, section: Section) -> Section:
         self.sections[section.KEY] = section

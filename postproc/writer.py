@@ -8,17 +8,14 @@ and its line (sqlglot's generator order). Dialects override the code tables and 
 
 from __future__ import annotations
 
-import functools
-import re
 from typing import Any, Callable, ClassVar
 
 from .errors import Location, UnsupportedError
 from .ir import Block, CompoundMotion, Motion, Section
+from .numbers import MAX_PLACES, canonical_number_re
 from .syntax import Context
 from .dialect import Writer
 
-MAX_PLACES = 6
-"""Most decimal places any written number carries (0.001 um; finer than any controller's increment)."""
 
 SECTION_ORDER = (
     "BlockDelete", "Sequence", "MachineCoordinates", "PathControl", "Plane", "Units", "DistanceMode",
@@ -136,7 +133,7 @@ class WordWriter(Writer):
         text = block.text
         if (text is not None and not self.renumber and self.leading_zero
                 and "Comments" not in sections and "BlockDelete" not in sections
-                and _NORMAL_BLOCK.fullmatch(text)):
+                and block.canonical):
             return text  # already normal: upper-case words, single spaces, explicit exact numbers
         parts: list[str] = []
         skip = sections.get("BlockDelete")
@@ -165,7 +162,7 @@ class WordWriter(Writer):
     def _canonical(self, num: str) -> bool:
         """True when a number as written is already explicit and exact: keep its text (and skip a float
         round trip). Digits the user wrote are never rounded away by normalising."""
-        return _canonical_re(MAX_PLACES, self.leading_zero).fullmatch(num) is not None
+        return canonical_number_re(MAX_PLACES, self.leading_zero).fullmatch(num) is not None
 
     def generate(self, block: Block) -> str:
         """Generate a block (and any lines a compound motion adds) from its sections."""
@@ -404,21 +401,6 @@ class WordWriter(Writer):
 
 
 _UPPER = {c: c.upper() for c in "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz:"}
-
-
-_NORMAL_NUMBER = r"-?(?:0|[1-9]\d*)\.(?:\d{0,5}[1-9])?"
-_NORMAL_WORD = rf"(?:[XYZABCUVWIJRQF](?!-0\.(?: |$)){_NORMAL_NUMBER}|[GMNOTHDLPS]\d+)"
-_NORMAL_BLOCK = re.compile(rf"{_NORMAL_WORD}(?: {_NORMAL_WORD})*")
-"""A block ``normalized`` would write unchanged (K is left out: its kind depends on the block)."""
-
-
-@functools.cache
-def _canonical_re(places: int, leading_zero: bool) -> re.Pattern[str]:
-    """Numbers already in ``number()``'s form: explicit point, no trailing zeros, at most ``places``."""
-    frac = rf"(?:\d{{0,{places - 1}}}[1-9])?" if places > 0 else ""
-    whole = r"(?:0|[1-9]\d*)" if leading_zero else r"(?:[1-9]\d*)?"
-    zero = "0." if leading_zero else r"0\."
-    return re.compile(rf"(?!-0\.$)(?!{zero}$)-?{whole}\.{frac}|0\.")
 
 
 def _snake(key: str) -> str:

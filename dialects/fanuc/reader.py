@@ -8,6 +8,8 @@ from postproc.dialect import Reader
 from postproc.errors import PostprocError
 from postproc.ir import Block, Sequence
 
+from postproc.numbers import CANONICAL_BLOCK
+
 from .lexer import WORDS_ONLY, WORD, lex_block
 
 
@@ -16,6 +18,7 @@ class FanucReader(Reader):
         file = self.ctx.file
         report = self.ctx.diagnostics.error
         plain = WORDS_ONLY.fullmatch
+        canonical = CANONICAL_BLOCK.fullmatch
         findall = WORD.findall
         number = 0
         for raw in lines:
@@ -30,14 +33,18 @@ class FanucReader(Reader):
             else:
                 text, eol = raw, ""
             # Likeliest first: a block of words only, starting with its N number.
-            if text[:1] == "N" and "(" not in text and ")" not in text and "/" not in text and plain(text):
-                words = findall(text)
-                num = words[0][1]
-                if "." not in num and num[0] not in "+-":
-                    block = Block(number, text, eol, words)
-                    block.sections["Sequence"] = Sequence(int(num))
-                    yield block
-                    continue
+            if text[:1] == "N":
+                # A canonical block is words only by construction; otherwise check it is.
+                is_canonical = canonical(text) is not None
+                if is_canonical or ("(" not in text and ")" not in text and "/" not in text and plain(text)):
+                    words = findall(text)
+                    num = words[0][1]
+                    if "." not in num and num[0] not in "+-":
+                        block = Block(number, text, eol, words)
+                        block.canonical = is_canonical
+                        block.sections["Sequence"] = Sequence(int(num))
+                        yield block
+                        continue
             try:
                 yield lex_block(file, number, text, eol)
             except PostprocError as err:
