@@ -23,8 +23,6 @@ AXIS_LETTERS = frozenset("XYZABCUVW")
 DECIMAL_LETTERS = frozenset("XYZABCUVWIJKRQ")
 """Addresses that follow the decimal-point rule (no point: least input increments)."""
 INTEGER_LETTERS = frozenset("NOTHDLP")
-_PLAIN_LETTERS = frozenset("XYZABCUVWNOFST")
-"""Letters of a block the fast path handles (no I/J/K/R/Q/P/H/D/L, which need context)."""
 _UPPER = {c: c.upper() for c in "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"}
 _UPPER[":"] = "O"  # ':' is ISO's spelling of the program number address
 CENTER_AXIS = {"I": "X", "J": "Y", "K": "Z"}
@@ -51,20 +49,12 @@ class FanucBlockSyntax(Syntax):
         words = block.words
         if not words:
             return
-        raw: dict[str, str] = {}
-        for letter, num in words:  # first look: the likeliest block has no G or M code at all
-            up = _UPPER[letter]
-            if up == "G" or up == "M" or up in raw:
-                break
-            raw[up] = num
-        else:
-            if ctx.state.cycle is None and raw.keys() <= _PLAIN_LETTERS:
-                self._plain(block, ctx, raw)
-                return
+        if ctx.state.cycle is None and self._plain(block, ctx, words):
+            return
         codes: dict[str, tuple[str, str, object, str]] = {}
         natives: list[str] = []
         mcodes: list[tuple[int, str]] = []
-        raw = {}
+        raw: dict[str, str] = {}
         for letter, num in words:
             up = _UPPER[letter]
             if up == "G":
@@ -80,9 +70,6 @@ class FanucBlockSyntax(Syntax):
         state = ctx.state
         if natives:
             self._native(block, ctx, natives, raw)
-            return
-        if not codes and not mcodes and state.cycle is None and raw.keys() <= _PLAIN_LETTERS:
-            self._plain(block, ctx, raw)
             return
         units = state.units
         unit = codes.get("06")
@@ -129,47 +116,39 @@ class FanucBlockSyntax(Syntax):
             up = unused[0]
             raise ProgramError(f"address {up} has no meaning in this block", ctx.at(block, ctx.column_of(block, up)))
 
-    def _plain(self, block: Block, ctx: Context, raw: dict[str, str]) -> None:
-        """The common CAM block: axis words, maybe N/F/S/T, no codes, no active cycle.
+    def _plain(self, block: Block, ctx: Context, words: list[tuple[str, str]]) -> bool:
+        """The likeliest CAM block: N, axis words with decimal points, maybe F; no active cycle.
 
-        Same meaning as the general path, with the per-block work cut down to what such a block needs.
+        One pass with the same meaning as the general path. Returns False, leaving the block as it
+        found it, at the first word it does not handle (a code, a point-less number, a repeated
+        address), so the general path reads the block and reports its errors.
         """
         values = block.values
-        sections = block.sections
         axes: dict[str, float] = {}
-        divisor = -1
-        for up, num in raw.items():
-            if up in AXIS_LETTERS:
-                if "." in num:
-                    value = float(num)
-                else:
-                    if divisor < 0:
-                        divisor = _divisor(ctx, ctx.state.units)
-                    value = int(num) / divisor if divisor else float(int(num))
-                values[up] = axes[up] = value
+        for letter, num in words:
+            up = _UPPER[letter]
+            if up in values:
+                break
+            if up in AXIS_LETTERS and "." in num:
+                values[up] = axes[up] = float(num)
+            elif up == "N" and "." not in num:
+                values["N"] = int(num)
             elif up == "F":
-                values["F"] = value = float(num)
-                sections["Feed"] = Feed(value)
-            elif (up == "N" or up == "O") and "." not in num:
-                values[up] = int(num)
-            elif up == "S":
-                values["S"] = speed = float(num) if "." in num else int(num)
-                sections["SpindleSpeed"] = SpindleSpeed(float(speed))
-            elif "." in num:
-                raise ParseError(f"address {up} takes no decimal point ({up}{num})",
-                                 ctx.at(block, ctx.column_of(block, up)))
+                values["F"] = float(num)
             else:
-                values["T"] = tool = int(num)
-                sections["ToolSelect"] = ToolSelect(tool)
-        if axes:
-            mode = ctx.state.motion
-            if mode is None:
-                raise ProgramError("axis words with no motion mode in force (program G00 or G01 first)",
-                                   ctx.at(block, ctx.column_of(block, next(iter(axes)))))
-            if mode == "cw" or mode == "ccw":
-                raise ProgramError("an arc needs a centre (I/J/K) or a radius R",
-                                   ctx.at(block, ctx.column_of(block, next(iter(axes)))))
-            sections["Motion"] = Motion(mode, axes)
+                break
+        else:
+            if axes:
+                mode = ctx.state.motion
+                if mode is None or mode == "cw" or mode == "ccw":
+                    values.clear()
+                    return False  # the general path explains the error
+                block.sections["Motion"] = Motion(mode, axes)
+            if "F" in values:
+                block.sections["Feed"] = Feed(values["F"])  # type: ignore[arg-type]
+            return True
+        values.clear()
+        return False
 
     def _g_code(self, ctx: Context, block: Block, num: str, codes: dict[str, Any], natives: list[str]) -> None:
         key = g_key(num)
