@@ -80,6 +80,29 @@ def test_output_size_is_limited():
         render("header", "{{ 'x' * n }}", {"n": MAX_OUTPUT + 1}, "m.xml")
 
 
+@pytest.mark.parametrize("text, message", [
+    ("{{ 9**99999999 }}", "exponent 99999999 is larger than 256"),
+    ("{% set n = 99999999 %}{{ 2**n }}", "exponent 99999999 is larger than 256"),
+    ("{{ 'x' * 10**8 }}", "repetition would make more than"),
+    ("{{ [0] * 10**8 }}", "repetition would make more than"),
+])
+def test_operators_that_exhaust_memory_are_refused(text, message):
+    with pytest.raises(ConfigError, match=message):
+        render("header", text, {}, "m.xml", 4)
+
+
+def test_a_runaway_loop_is_stopped(monkeypatch):
+    import postproc.templates as templates
+    monkeypatch.setattr(templates, "TIME_LIMIT", 0.2)
+    loops = "{% for i in range(100000) %}{% for j in range(100000) %}{% endfor %}{% endfor %}"
+    with pytest.raises(ConfigError, match="ran longer than 0.2 s"):
+        render("footer", loops, {}, "m.xml", 7)
+
+
+def test_small_powers_and_repetitions_still_work():
+    assert render("header", "{{ 2**10 }} {{ 'ab' * 3 }}", {}, None) == "1024 ababab\n"
+
+
 def test_check_templates_points_into_the_setup_file(tmp_path):
     path = tmp_path / "m.xml"
     path.write_text(DECLARATION + '<MachineSetup name="m">\n  <Templates>\n    <Header>(OK)</Header>\n'
