@@ -37,7 +37,8 @@ class FanucReader(Reader):
                 # A canonical block is words only by construction; otherwise check it is.
                 is_canonical = canonical(text) is not None
                 if is_canonical or ("(" not in text and ")" not in text and "/" not in text and plain(text)):
-                    words = findall(text)
+                    # canonical: single spaces between words, so a split is the tokenizer
+                    words = [(w[0], w[1:]) for w in text.split(" ")] if is_canonical else findall(text)
                     num = words[0][1]
                     if "." not in num and num[0] not in "+-":
                         block = Block(number, text, eol, words)
