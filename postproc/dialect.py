@@ -117,16 +117,12 @@ class Dialect:
     """Neutral names of the canned cycles the controller runs natively."""
     SPINDLE_ORIENTATION: ClassVar[bool] = True
     """The controller can stop the spindle at an angle (M19)."""
-    ARCS_R: ClassVar[bool] = True
-    """Arcs may be written with a radius R."""
-    INCREMENTAL: ClassVar[bool] = True
-    """Incremental distance mode exists."""
     DWELL_UNIT: ClassVar[str] = "seconds"
     """Unit of the dwell word the writer emits."""
     CUTTER_COMPENSATION: ClassVar[bool] = True
-    """Cutter radius compensation (G41/G42) exists."""
+    """Cutter radius compensation (G41/G42) exists (the writer refuses it otherwise; tested)."""
     TOOL_LENGTH_OFFSET: ClassVar[bool] = True
-    """Tool length offset (G43/G49) exists."""
+    """Tool length offset from a table (G43 H) exists (the writer refuses it otherwise; tested)."""
 
     @classmethod
     def capabilities(cls) -> dict[str, object]:

