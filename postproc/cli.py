@@ -34,8 +34,8 @@ def main(argv: Sequence[str] | None = None) -> int:
         print(f"postproc: {err.message}", file=sys.stderr)
         return 2
     except ErrorList as errs:
-        for err in errs.errors:
-            print(err, file=sys.stderr)
+        for each in errs.errors:
+            print(each, file=sys.stderr)
         return 1
     except PostprocError as err:
         print(err, file=sys.stderr)

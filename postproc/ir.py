@@ -28,69 +28,268 @@ class Section(XmlNode):
     KEY: ClassVar[str] = ""
 
 
-def _simple(name: str, *attrs: XAttr, doc: str) -> type[Section]:
-    """Make a small section class with the given attributes (one slot each).
+class BlockDelete(Section):
+    """Optional block skip; level 1 is the plain '/'."""
 
-    Sections with one attribute get a direct ``__init__``: they are created for most blocks
-    (a block number, a feed) and the generic keyword-matching one costs too much per block.
-    """
-    namespace: dict[str, Any] = {
-        "__slots__": tuple(a.name for a in attrs), "XNAME": name, "KEY": name,
-        "XATTRS": attrs, "__doc__": doc,
-    }
-    if len(attrs) == 1:
-        namespace["__init__"] = _one_attribute_init(attrs[0])
-    return type(name, (Section,), namespace)
+    XNAME = KEY = "BlockDelete"
+    __slots__ = ("level",)
+    XATTRS = (XAttr("level", int, 1),)
+    level: int
+
+    def __init__(self, level: int = 1) -> None:
+        self.level = level
 
 
-def _one_attribute_init(attr: XAttr) -> Any:
-    slot = attr.name
-    default = attr.default
+class ProgramStart(Section):
+    """Program number or name (O-number, %name)."""
 
-    def __init__(self: Section, value: Any = default, **named: Any) -> None:
-        if named:
-            if set(named) != {slot}:
-                raise TypeError(f"{type(self).__name__} has no attribute(s) {sorted(set(named) - {slot})}")
-            value = named[slot]
-        if value is ...:
-            raise TypeError(f"{type(self).__name__} needs {slot!r}")
-        object.__setattr__(self, slot, value)
+    XNAME = KEY = "ProgramStart"
+    __slots__ = ("number", "name")
+    XATTRS = (XAttr("number", int, None), XAttr("name", str, None))
+    number: int | None
+    name: str | None
 
-    return __init__
+    def __init__(self, number: int | None = None, name: str | None = None) -> None:
+        self.number = number
+        self.name = name
 
 
-BlockDelete = _simple("BlockDelete", XAttr("level", int, 1), doc="Optional block skip; level 1 is the plain '/'.")
-ProgramStart = _simple("ProgramStart", XAttr("number", int, None), XAttr("name", str, None),
-                       doc="Program number or name (O-number, %name).")
-TapeMark = _simple("TapeMark", doc="Tape start/end marker line.")
-Units = _simple("Units", XAttr("system", str), doc="Length unit of the program: 'mm' or 'inch'.")
-Plane = _simple("Plane", XAttr("plane", str), doc="Working plane: 'XY', 'ZX' or 'YZ'.")
-DistanceMode = _simple("DistanceMode", XAttr("mode", str), doc="'absolute' or 'incremental' coordinates.")
-WorkOffset = _simple("WorkOffset", XAttr("index", int), doc="Work coordinate system, 1 = first (G54 on Fanuc).")
-FeedMode = _simple("FeedMode", XAttr("mode", str), doc="'per_min', 'per_rev' or 'inverse_time'.")
-SpindleSpeed = _simple("SpindleSpeed", XAttr("rpm", float), doc="Spindle speed.")
-SpindleControl = _simple("SpindleControl", XAttr("direction", str),
-                         doc="Spindle on clockwise ('cw'), counter-clockwise ('ccw') or 'stop'.")
-SpindleOrientation = _simple("SpindleOrientation", XAttr("angle", float, 0.0),
-                             doc="Oriented spindle stop at an angle in degrees.")
-ToolSelect = _simple("ToolSelect", XAttr("number", int), doc="Tool number prepared or selected.")
-ToolChange = _simple("ToolChange", doc="Change to the selected tool.")
-ToolLengthOffset = _simple("ToolLengthOffset", XAttr("mode", str), XAttr("register", int, None),
-                           doc="'positive', 'negative' or 'cancel', with the offset register.")
-CutterCompensation = _simple("CutterCompensation", XAttr("mode", str), XAttr("register", int, None),
-                             doc="'off', 'left' or 'right', with the offset register.")
-Coolant = _simple("Coolant", XAttr("mode", str), doc="'flood', 'mist' or 'off'.")
-Dwell = _simple("Dwell", XAttr("seconds", float), doc="Dwell for a time in seconds.")
-ProgramControl = _simple("ProgramControl", XAttr("kind", str),
-                         doc="'stop', 'optional_stop', 'end' or 'end_rewind'.")
-PathControl = _simple("PathControl", XAttr("mode", str), XAttr("one_shot", bool, False),
-                      doc="'exact_stop' or 'cutting' path control.")
-ReturnLevel = _simple("ReturnLevel", XAttr("level", str),
-                      doc="Canned-cycle return: 'initial' level or 'r' level.")
-CycleCancel = _simple("CycleCancel", doc="Cancel the active canned cycle.")
-MachineCoordinates = _simple("MachineCoordinates", doc="One-shot: this block's motion is in machine coordinates.")
-CycleCall = _simple("CycleCall", XAttr("kind", str),
-                    doc="A canned cycle programmed in this block, by neutral name (e.g. 'drill', 'back_bore').")
+class TapeMark(Section):
+    """Tape start/end marker line."""
+
+    XNAME = KEY = "TapeMark"
+    __slots__ = ()
+
+
+class Units(Section):
+    """Length unit of the program: 'mm' or 'inch'."""
+
+    XNAME = KEY = "Units"
+    __slots__ = ("system",)
+    XATTRS = (XAttr("system", str),)
+    system: str
+
+    def __init__(self, system: str) -> None:
+        self.system = system
+
+
+class Plane(Section):
+    """Working plane: 'XY', 'ZX' or 'YZ'."""
+
+    XNAME = KEY = "Plane"
+    __slots__ = ("plane",)
+    XATTRS = (XAttr("plane", str),)
+    plane: str
+
+    def __init__(self, plane: str) -> None:
+        self.plane = plane
+
+
+class DistanceMode(Section):
+    """'absolute' or 'incremental' coordinates."""
+
+    XNAME = KEY = "DistanceMode"
+    __slots__ = ("mode",)
+    XATTRS = (XAttr("mode", str),)
+    mode: str
+
+    def __init__(self, mode: str) -> None:
+        self.mode = mode
+
+
+class WorkOffset(Section):
+    """Work coordinate system, 1 = first (G54 on Fanuc)."""
+
+    XNAME = KEY = "WorkOffset"
+    __slots__ = ("index",)
+    XATTRS = (XAttr("index", int),)
+    index: int
+
+    def __init__(self, index: int) -> None:
+        self.index = index
+
+
+class FeedMode(Section):
+    """'per_min', 'per_rev' or 'inverse_time'."""
+
+    XNAME = KEY = "FeedMode"
+    __slots__ = ("mode",)
+    XATTRS = (XAttr("mode", str),)
+    mode: str
+
+    def __init__(self, mode: str) -> None:
+        self.mode = mode
+
+
+class SpindleSpeed(Section):
+    """Spindle speed."""
+
+    XNAME = KEY = "SpindleSpeed"
+    __slots__ = ("rpm",)
+    XATTRS = (XAttr("rpm", float),)
+    rpm: float
+
+    def __init__(self, rpm: float) -> None:
+        self.rpm = rpm
+
+
+class SpindleControl(Section):
+    """Spindle on clockwise ('cw'), counter-clockwise ('ccw') or 'stop'."""
+
+    XNAME = KEY = "SpindleControl"
+    __slots__ = ("direction",)
+    XATTRS = (XAttr("direction", str),)
+    direction: str
+
+    def __init__(self, direction: str) -> None:
+        self.direction = direction
+
+
+class SpindleOrientation(Section):
+    """Oriented spindle stop at an angle in degrees."""
+
+    XNAME = KEY = "SpindleOrientation"
+    __slots__ = ("angle",)
+    XATTRS = (XAttr("angle", float, 0.0),)
+    angle: float
+
+    def __init__(self, angle: float = 0.0) -> None:
+        self.angle = angle
+
+
+class ToolSelect(Section):
+    """Tool number prepared or selected."""
+
+    XNAME = KEY = "ToolSelect"
+    __slots__ = ("number",)
+    XATTRS = (XAttr("number", int),)
+    number: int
+
+    def __init__(self, number: int) -> None:
+        self.number = number
+
+
+class ToolChange(Section):
+    """Change to the selected tool."""
+
+    XNAME = KEY = "ToolChange"
+    __slots__ = ()
+
+
+class ToolLengthOffset(Section):
+    """'positive', 'negative' or 'cancel', with the offset register."""
+
+    XNAME = KEY = "ToolLengthOffset"
+    __slots__ = ("mode", "register")
+    XATTRS = (XAttr("mode", str), XAttr("register", int, None))
+    mode: str
+    register: int | None
+
+    def __init__(self, mode: str, register: int | None = None) -> None:
+        self.mode = mode
+        self.register = register
+
+
+class CutterCompensation(Section):
+    """'off', 'left' or 'right', with the offset register."""
+
+    XNAME = KEY = "CutterCompensation"
+    __slots__ = ("mode", "register")
+    XATTRS = (XAttr("mode", str), XAttr("register", int, None))
+    mode: str
+    register: int | None
+
+    def __init__(self, mode: str, register: int | None = None) -> None:
+        self.mode = mode
+        self.register = register
+
+
+class Coolant(Section):
+    """'flood', 'mist' or 'off'."""
+
+    XNAME = KEY = "Coolant"
+    __slots__ = ("mode",)
+    XATTRS = (XAttr("mode", str),)
+    mode: str
+
+    def __init__(self, mode: str) -> None:
+        self.mode = mode
+
+
+class Dwell(Section):
+    """Dwell for a time in seconds."""
+
+    XNAME = KEY = "Dwell"
+    __slots__ = ("seconds",)
+    XATTRS = (XAttr("seconds", float),)
+    seconds: float
+
+    def __init__(self, seconds: float) -> None:
+        self.seconds = seconds
+
+
+class ProgramControl(Section):
+    """'stop', 'optional_stop', 'end' or 'end_rewind'."""
+
+    XNAME = KEY = "ProgramControl"
+    __slots__ = ("kind",)
+    XATTRS = (XAttr("kind", str),)
+    kind: str
+
+    def __init__(self, kind: str) -> None:
+        self.kind = kind
+
+
+class PathControl(Section):
+    """'exact_stop' or 'cutting' path control."""
+
+    XNAME = KEY = "PathControl"
+    __slots__ = ("mode", "one_shot")
+    XATTRS = (XAttr("mode", str), XAttr("one_shot", bool, False))
+    mode: str
+    one_shot: bool
+
+    def __init__(self, mode: str, one_shot: bool = False) -> None:
+        self.mode = mode
+        self.one_shot = one_shot
+
+
+class ReturnLevel(Section):
+    """Canned-cycle return: 'initial' level or 'r' level."""
+
+    XNAME = KEY = "ReturnLevel"
+    __slots__ = ("level",)
+    XATTRS = (XAttr("level", str),)
+    level: str
+
+    def __init__(self, level: str) -> None:
+        self.level = level
+
+
+class CycleCancel(Section):
+    """Cancel the active canned cycle."""
+
+    XNAME = KEY = "CycleCancel"
+    __slots__ = ()
+
+
+class MachineCoordinates(Section):
+    """One-shot: this block's motion is in machine coordinates."""
+
+    XNAME = KEY = "MachineCoordinates"
+    __slots__ = ()
+
+
+class CycleCall(Section):
+    """A canned cycle programmed in this block, by neutral name (e.g. 'drill', 'back_bore')."""
+
+    XNAME = KEY = "CycleCall"
+    __slots__ = ("kind",)
+    XATTRS = (XAttr("kind", str),)
+    kind: str
+
+    def __init__(self, kind: str) -> None:
+        self.kind = kind
 
 
 class Sequence(Section):
