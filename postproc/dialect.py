@@ -7,6 +7,7 @@ from them (``postproc.lower``).
 
 from __future__ import annotations
 
+import abc
 from importlib import resources
 from pathlib import Path
 from typing import ClassVar, Iterable, Iterator, TextIO
@@ -17,17 +18,18 @@ from .setup import MachineSetup
 from .syntax import Context, Pipeline, load_pipeline
 
 
-class Reader:
+class Reader(abc.ABC):
     """Turns text into blocks with raw words and source lines (no meaning yet)."""
 
     def __init__(self, ctx: Context) -> None:
         self.ctx = ctx
 
+    @abc.abstractmethod
     def read(self, lines: Iterable[str]) -> Iterator[Block]:
-        raise NotImplementedError(f"{type(self).__name__} must implement read")
+        """Yield one block per physical line, in order, with its source location."""
 
 
-class Writer:
+class Writer(abc.ABC):
     """Turns blocks into text. Subclasses implement ``write_block``."""
 
     def __init__(self, ctx: Context, source_dialect: str) -> None:
@@ -94,8 +96,9 @@ class Writer:
         text = (block.text or " ".join(a + n for a, n in block.words)).replace("(", "[").replace(")", "]")
         return f"(UNSUPPORTED LINE {block.line}: {text.strip()})" + (block.eol or "\n")
 
+    @abc.abstractmethod
     def write_block(self, block: Block) -> str | None:
-        raise NotImplementedError(f"{type(self).__name__} must implement write_block")
+        """The text of one block (with its end of line), or None to write nothing."""
 
     def finish(self) -> str:
         """Text to append after the last block (e.g. a footer)."""

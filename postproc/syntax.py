@@ -8,6 +8,7 @@ A dialect's reading pipeline is an XML file of syntax elements loaded through th
 
 from __future__ import annotations
 
+import abc
 import re
 from pathlib import Path
 from typing import Callable, Iterable, Iterator
@@ -60,13 +61,14 @@ def word_columns(text: str) -> list[tuple[int, str, str]]:
     return [(m.start() + 1, m.group(1), m.group(2)) for m in _WORD_AT.finditer(masked)]
 
 
-class Syntax(XmlNode):
+class Syntax(XmlNode, metaclass=abc.ABCMeta):
     """Base of every processing step. Subclasses set ``XNAME`` and implement ``build``."""
 
     __slots__ = ()
 
+    @abc.abstractmethod
     def build(self, block: Block, ctx: Context) -> None:
-        raise NotImplementedError(f"{type(self).__name__} must implement build")
+        """Rewrite ``block`` in place (its sections, and ``ctx.state`` where the step owns state)."""
 
     def process(self, blocks: Iterable[Block], ctx: Context) -> Iterator[Block]:
         """Stream form of the step; the default calls ``build`` on each block."""

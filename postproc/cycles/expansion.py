@@ -8,6 +8,7 @@ sequence serves G17, G18 and G19, and it drops zero-length moves, as a controlle
 
 from __future__ import annotations
 
+import abc
 from typing import ClassVar, Iterator
 
 from lxml import etree
@@ -130,8 +131,9 @@ class CycleExpansion(Syntax):
             self.hole(path, cycle, a, b)
         return path.items, path.end()
 
+    @abc.abstractmethod
     def hole(self, path: ToolPath, cycle: CannedCycle, a: float, b: float) -> None:
-        raise NotImplementedError(f"{type(self).__name__} must implement hole")
+        """Operations 1-6 of one hole at plane position (a, b)."""
 
     @classmethod
     def position(cls, path: ToolPath, cycle: CannedCycle, a: float, b: float) -> None:
