@@ -5,9 +5,10 @@ Each case's ``.ngc`` is read with the linuxcnc dialect and simulated; its ``expe
 compared move by move, within 1.5e-4 program units (the ``expected`` files print 4 decimals).
 
 * G81 in G17/G18/G19 with G98 and G99, incremental rows with L: every move (rapid and feed).
-* G84 in the same six set-ups: the **rapids only** (all three axes). The conformance README says the
-  upstream G18/G19 tapping feeds are wrong, so the feed moves (and the spindle reversals around them)
-  are not trusted; the rapids still check positioning, the rise to R and the return to the clear level.
+* G84 in G17 with G98 and G99: every move, tapping feeds included.
+* G84 in G18/G19: the **rapids only** (all three axes). The conformance README says the upstream
+  G18/G19 tapping feeds are wrong, so those feed moves are not trusted; the rapids still check
+  positioning, the rise to R and the return to the clear level.
 * M98/M99 cases are out (subprograms are refused by the reader), and so are the lathe cases.
 """
 
@@ -36,8 +37,8 @@ SKIPPED = {
     "g72": "lathe cycles not modelled yet",
     "g76": "lathe cycles not modelled yet",
 }
-RAPIDS_ONLY = "g84"
-"""Cases whose feed moves are wrong upstream (conformance README): compare their rapids only."""
+RAPIDS_ONLY = ("g84-g18", "g84-g19")
+"""Cases whose tapping feeds are wrong upstream (conformance README: G84 in G18/G19): rapids only."""
 
 
 def _cases() -> list[Any]:
