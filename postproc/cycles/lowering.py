@@ -30,7 +30,14 @@ _CANCELS = frozenset(("rapid", "linear", "cw", "ccw"))
 
 
 def expand_canned_cycles(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
-    """Lowering transform (see the module docstring)."""
+    """Lowering transform (see the module docstring). Back to its own dialect with nothing forced, every
+    cycle stays native and blocks are copied or rewritten from their words: the stream passes through."""
+    if target.NAME == ctx.dialect and not ctx.setup.cycles.expanded():
+        return blocks
+    return _expand(blocks, ctx, target)
+
+
+def _expand(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
     cycles = ctx.setup.cycles
     forced = cycles.expanded()
     every = "all" in forced
