@@ -6,7 +6,16 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Callable
 
+import os
+
 import pytest
+from hypothesis import settings
+
+settings.register_profile("ci", derandomize=True, print_blob=True)
+if os.environ.get("CI"):
+    # CI runs the same examples every time: a red CI then always means a change, never luck.
+    # Local runs keep exploring new examples.
+    settings.load_profile("ci")
 
 from postproc.cli import main
 
