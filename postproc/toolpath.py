@@ -158,6 +158,8 @@ class Simulator:
         self.header_mode: str | None = None
         """Feed mode the header states, fixed by the first feed move (None until then)."""
         self.tool: int | None = None
+        self.spindle = "stop"
+        """Spindle direction now: a tool change stops a turning spindle first, as a tool changer does."""
         self.lathe = setup.input.machine_type == "lathe"
         self.ended = False
         self.current: Block | None = None
@@ -188,9 +190,11 @@ class Simulator:
                 if self.lathe and "ToolChange" not in sections:
                     emit({"line": line, "event": "tool", "number": s.number})
             if "ToolChange" in sections:
+                if self.spindle != "stop":
+                    self.spindle_event(line, "stop", emit)
                 emit({"line": line, "event": "tool", "number": self.tool})
             if spindle is not None and spindle.direction != "stop":
-                emit({"line": line, "event": "spindle", "dir": spindle.direction})
+                self.spindle_event(line, spindle.direction, emit)
             if coolant is not None and coolant.mode != "off":
                 emit({"line": line, "event": "coolant", "on": True})
             s = get("Dwell")
@@ -215,7 +219,7 @@ class Simulator:
         if not before:
             return
         if spindle is not None and spindle.direction == "stop":
-            emit({"line": line, "event": "spindle", "dir": "stop"})
+            self.spindle_event(line, "stop", emit)
         s = get("SpindleOrientation")
         if s is not None:
             emit({"line": line, "event": "orient", "angle": num(s.angle)})
@@ -243,6 +247,10 @@ class Simulator:
         if s is not None:
             self._set_feed(s.value)
 
+    def spindle_event(self, line: int, direction: str, emit: Callable[[Event], None]) -> None:
+        self.spindle = direction
+        emit({"line": line, "event": "spindle", "dir": direction})
+
     def item(self, block: Block, item: Section, emit: Callable[[Event], None]) -> None:
         """One item of a compound motion (absolute, program units)."""
         key, line = item.KEY, block.line
@@ -253,7 +261,7 @@ class Simulator:
         elif key == "Dwell":
             emit({"line": line, "event": "dwell", "seconds": num(item.seconds)})  # type: ignore[attr-defined]
         elif key == "SpindleControl":
-            emit({"line": line, "event": "spindle", "dir": item.direction})  # type: ignore[attr-defined]
+            self.spindle_event(line, item.direction, emit)  # type: ignore[attr-defined]
         elif key == "SpindleOrientation":
             emit({"line": line, "event": "orient", "angle": num(item.angle)})  # type: ignore[attr-defined]
         elif key == "ProgramControl":

@@ -284,10 +284,21 @@ def test_event_order_within_a_block() -> None:
 
 
 def test_tool_preselection_emits_nothing_until_the_change() -> None:
+    """A tool change stops a turning spindle first (the tool changer does; grbl needs an M5 there)."""
     assert_events(body("G21\nT5\nM04\nM06\nM02"), [
         {"line": 3, "event": "spindle", "dir": "ccw"},
+        {"line": 4, "event": "spindle", "dir": "stop"},
         {"line": 4, "event": "tool", "number": 5},
         {"line": 5, "event": "end"},
+    ])
+
+
+def test_a_tool_change_with_the_spindle_stopped_adds_no_stop() -> None:
+    assert_events(body("G21\nT5\nM03\nM05\nM06\nM02"), [
+        {"line": 3, "event": "spindle", "dir": "cw"},
+        {"line": 4, "event": "spindle", "dir": "stop"},
+        {"line": 5, "event": "tool", "number": 5},
+        {"line": 6, "event": "end"},
     ])
 
 
