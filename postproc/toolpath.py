@@ -158,8 +158,9 @@ class Simulator:
         self.header_mode: str | None = None
         """Feed mode the header states, fixed by the first feed move (None until then)."""
         self.tool: int | None = None
-        self.spindle = "stop"
-        """Spindle direction now: a tool change stops a turning spindle first, as a tool changer does."""
+        self.spindle: str | None = None
+        """Spindle direction now (None until programmed): a tool change stops a turning spindle first,
+        as a tool changer does."""
         self.lathe = setup.input.machine_type == "lathe"
         self.ended = False
         self.current: Block | None = None
@@ -190,7 +191,7 @@ class Simulator:
                 if self.lathe and "ToolChange" not in sections:
                     emit({"line": line, "event": "tool", "number": s.number})
             if "ToolChange" in sections:
-                if self.spindle != "stop":
+                if self.spindle in ("cw", "ccw"):
                     self.spindle_event(line, "stop", emit)
                 emit({"line": line, "event": "tool", "number": self.tool})
             if spindle is not None and spindle.direction != "stop":
@@ -248,6 +249,10 @@ class Simulator:
             self._set_feed(s.value)
 
     def spindle_event(self, line: int, direction: str, emit: Callable[[Event], None]) -> None:
+        """A spindle change; stopping a stopped spindle is no event (two programs that differ only
+        there move the machine alike)."""
+        if direction == "stop" and self.spindle == "stop":
+            return
         self.spindle = direction
         emit({"line": line, "event": "spindle", "dir": direction})
 
