@@ -5,7 +5,7 @@ BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 PLUGINS := $(wildcard plugins/*/pyproject.toml)
 
-.PHONY: install run test bench clean
+.PHONY: install run test bench typecheck clean
 
 $(STAMP): pyproject.toml $(PLUGINS)
 	$(PYTHON) -m venv $(VENV)
@@ -31,6 +31,13 @@ test: $(STAMP)
 bench: $(STAMP)
 	$(BIN)/pip install --quiet -r benchmarks/requirements.txt
 	$(BIN)/python benchmarks/run.py
+
+typecheck: $(STAMP)
+	$(BIN)/pip install --quiet mypy
+	$(BIN)/python -m mypy --strict -p postproc -p dialects
+	for p in plugins/*/postproc_*/__init__.py; do p=$$(dirname $$p); \
+	  (cd $$(dirname $$p) && MYPYPATH=../..:../linuxcnc ../../$(BIN)/python -m mypy --strict -p $$(basename $$p)) || exit 1; \
+	done
 
 clean:
 	rm -rf $(VENV) out .pytest_cache .hypothesis

@@ -112,7 +112,7 @@ def _open_program(path: str) -> TextIO:
         raise UsageError(f"cannot read {path}: {exc.strerror}") from None
 
 
-def _atomic_output(path: str | None, write: Callable[[TextIO], None], binary: bool = False) -> None:
+def _atomic_output(path: str | None, write: Callable[[TextIO], object], binary: bool = False) -> None:
     """Write to a temporary file and move it into place only on success (no partial outputs)."""
     target_dir = Path(path).resolve().parent if path else None
     if target_dir is not None and not target_dir.is_dir():
@@ -203,7 +203,8 @@ def cmd_dialects(args: argparse.Namespace) -> int:
     for name, info in table.items():
         rw = "/".join(x for x, ok in (("read", info["reads"]), ("write", info["writes"])) if ok)
         print(f"{name} ({rw}): {info['description']}")
-        for key, value in info["capabilities"].items():  # type: ignore[union-attr]
+        capabilities: dict[str, object] = info["capabilities"]  # type: ignore[assignment]
+        for key, value in capabilities.items():
             shown = (", ".join(value) or "none") if isinstance(value, list) else value
             print(f"  {key}: {shown}")
     return 0

@@ -172,7 +172,7 @@ class Simulator:
         if not sections or self.ended:
             return
         self.current = block
-        get = sections.get
+        get: Callable[[str], Any] = sections.get
         native = get("NativeCode")
         if native is not None:
             code = native.what.split(" ", 1)[0]

@@ -250,7 +250,7 @@ def _differ(a: Move | Event | None, b: Move | Event | None, report: Report) -> s
     if b is None:
         return f"OUT has no more moves or events, IN has {describe(a)}"
     if not isinstance(a, Move) or not isinstance(b, Move):
-        if isinstance(a, Move) or isinstance(b, Move) or not _same_event(a, b):  # type: ignore[arg-type]
+        if isinstance(a, Move) or isinstance(b, Move) or not _same_event(a, b):
             return f"IN has {describe(a)}, OUT {describe(b)}"
         return None
     if a.kind != b.kind or a.plane != b.plane:

@@ -8,7 +8,7 @@ and its line (sqlglot's generator order). Dialects override the code tables and 
 
 from __future__ import annotations
 
-from typing import Any, Callable, ClassVar
+from typing import Any, Callable, ClassVar, NoReturn
 
 from .errors import Location, UnsupportedError
 from .ir import Block, CompoundMotion, Motion, Section
@@ -148,7 +148,7 @@ class WordWriter(Writer):
                 continue
             value = values.get(up)
             if value.__class__ is float and not canonical(num):
-                parts.append(up + number(value))  # type: ignore[arg-type]
+                parts.append(up + number(value))
             else:
                 parts.append(up + num)
         if renumber and block.words and "ProgramStart" not in sections:
@@ -195,7 +195,7 @@ class WordWriter(Writer):
             self.unsupported(key, block)
         return method(section, block)  # type: ignore[no-any-return]
 
-    def unsupported(self, what: str, block: Block) -> None:
+    def unsupported(self, what: str, block: Block) -> NoReturn:
         raise UnsupportedError(f"the {self.DIALECT} dialect cannot express {what}",
                                Location(self.ctx.file, block.line, 1))
 
@@ -274,7 +274,7 @@ class WordWriter(Writer):
         code = table.get(value)
         if code is None:
             self.unsupported(what, block)
-        return [code]  # type: ignore[list-item]
+        return [code]
 
     def plane_words(self, s: Any, block: Block) -> list[str]:
         return self._code(self.PLANE, s.plane, f"the {s.plane} plane", block)
@@ -312,13 +312,13 @@ class WordWriter(Writer):
         if s.one_shot:
             if self.PATH_ONCE is None:
                 self.unsupported("a one-shot exact stop", block)
-            return [self.PATH_ONCE]  # type: ignore[list-item]
+            return [self.PATH_ONCE]
         return self._code(self.PATH, s.mode, f"path control {s.mode}", block)
 
     def machine_coordinates_words(self, s: Any, block: Block) -> list[str]:
         if self.MACHINE_COORDS is None:
             self.unsupported("motion in machine coordinates", block)
-        return [self.MACHINE_COORDS]  # type: ignore[list-item]
+        return [self.MACHINE_COORDS]
 
     def cycle_cancel_words(self, s: Any, block: Block) -> list[str]:
         return [self.CYCLE_CANCEL] if self.CYCLE_CANCEL else []
@@ -372,7 +372,7 @@ class WordWriter(Writer):
     def tool_change_words(self, s: Any, block: Block) -> list[str]:
         if self.TOOL_CHANGE is None:
             self.unsupported("a tool change", block)
-        return [self.TOOL_CHANGE]  # type: ignore[list-item]
+        return [self.TOOL_CHANGE]
 
     def spindle_control_words(self, s: Any, block: Block) -> list[str]:
         return self._code(self.SPINDLE, s.direction, f"spindle {s.direction}", block)
@@ -385,7 +385,7 @@ class WordWriter(Writer):
         if abs(s.angle - self.ctx.setup.cycles.orient_angle) > 1e-9:
             self.unsupported(f"an oriented spindle stop at {s.angle:g} deg (M19 orients to the set-up's "
                              f"{self.ctx.setup.cycles.orient_angle:g} deg)", block)
-        return [self.ORIENT]  # type: ignore[list-item]
+        return [self.ORIENT]
 
     def coolant_words(self, s: Any, block: Block) -> list[str]:
         return self._code(self.COOLANT, s.mode, f"coolant {s.mode}", block)

@@ -70,7 +70,7 @@ def parse_xml_file(path: str | Path) -> etree._Element:
 def to_bytes(el: etree._Element) -> bytes:
     """The canonical text of a postproc XML file: UTF-8, declaration, two-space indent."""
     etree.indent(el, space="  ")
-    return etree.tostring(el, pretty_print=True, xml_declaration=True, encoding="UTF-8")
+    return bytes(etree.tostring(el, pretty_print=True, xml_declaration=True, encoding="UTF-8"))
 
 
 def where(el: etree._Element, file: str | None = None) -> Location:
@@ -227,7 +227,7 @@ class XmlNode:
     def __eq__(self, other: object) -> bool:
         if type(other) is not type(self):
             return NotImplemented
-        return self._key() == other._key()  # type: ignore[attr-defined]
+        return self._key() == other._key()
 
     def __hash__(self) -> int:
         return hash((type(self), repr(self._key())))

@@ -145,7 +145,7 @@ class FanucBlockSyntax(Syntax):
                     return False  # the general path explains the error
                 block.sections["Motion"] = Motion(mode, axes)
             if "F" in values:
-                block.sections["Feed"] = Feed(values["F"])  # type: ignore[arg-type]
+                block.sections["Feed"] = Feed(values["F"])
             return True
         values.clear()
         return False
@@ -307,15 +307,15 @@ class FanucBlockSyntax(Syntax):
                                  ctx.at(block, _col_of_word(block, "M", num)))
             seen[kind] = num
             if kind == "program":
-                block.add(ProgramControl(arg))
+                block.add(ProgramControl(str(arg)))
             elif kind == "spindle":
-                block.add(SpindleControl(arg))
+                block.add(SpindleControl(str(arg)))
             elif kind == "orient":
                 self.orient(block, ctx, num, values, used)
             elif kind == "tool_change":
                 block.add(ToolChange())
             elif kind == "coolant":
-                block.add(Coolant(arg))
+                block.add(Coolant(str(arg)))
 
     def unknown_m(self, block: Block, ctx: Context, number: int, num: str) -> str:
         """What an M code outside ``M_CODES`` is: kept verbatim (Fanuc: any M code is the machine's)."""

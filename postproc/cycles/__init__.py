@@ -7,7 +7,7 @@ and a ``CompoundMotion`` (the motion the controller makes), one family syntax pe
 
 from __future__ import annotations
 
-from postproc.xmlio import XFactory
+from postproc.xmlio import XFactory, XmlNode
 
 from .back_boring import BackBoringSyntax
 from .boring import BoringSyntax
@@ -20,7 +20,7 @@ from .resolve import EXPANSIONS, CannedCycleResolveSyntax
 from .section import CannedCycle
 from .tapping import TappingSyntax
 
-XML_CLASSES = (CannedCycle, CannedCycleResolveSyntax, *EXPANSIONS)
+XML_CLASSES: tuple[type[XmlNode], ...] = (CannedCycle, CannedCycleResolveSyntax, *EXPANSIONS)
 """Every XML node class of the package."""
 
 __all__ = [

@@ -140,7 +140,7 @@ class GrblWriter(WordWriter):
         """A pause inside an expansion is for the operator to work at the tool (orient it by hand, jog it
         out): grbl's M0 leaves the spindle turning, so a running spindle is stopped first."""
         line = super().item_line(item, block)
-        pause = isinstance(item, ProgramControl) and item.kind == "stop"  # type: ignore[attr-defined]
+        pause = isinstance(item, ProgramControl) and item.kind == "stop"
         if pause and self.spindle != "stop":
             self.spindle = "stop"
             return self.SPINDLE["stop"] + "\n" + line
