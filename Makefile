@@ -16,14 +16,7 @@ $(STAMP): pyproject.toml $(PLUGINS)
 install: $(STAMP)
 
 run: $(STAMP)
-	@mkdir -p out
-	@for f in examples/*/*.nc; do \
-	  d=$$(basename $$(dirname $$f)); o=out/$$d-$$(basename $$f); \
-	  echo "== postproc translate $$f --from $$d --to $$d --normalize -o $$o"; \
-	  $(BIN)/postproc translate $$f --from $$d --to $$d --normalize -o $$o || exit 1; \
-	  head -n 12 $$o; echo "   ..."; \
-	done
-	@echo "translated programs are in out/"
+	bash examples/run.sh
 
 test: $(STAMP)
 	$(BIN)/python -m pytest
