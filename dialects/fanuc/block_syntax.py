@@ -102,6 +102,10 @@ class FanucBlockSyntax(Syntax):
         used = {"N", "O"}
         self.g_sections(block, ctx, codes, values, used, cycle_block)
         self.m_sections(block, ctx, mcodes, values, used)
+        self.finish_words(block, ctx, values, used)
+
+    def finish_words(self, block: Block, ctx: Context, values: dict[str, Any], used: set[str]) -> None:
+        """F, S and T sections, then refuse any word no section took: nothing is dropped silently."""
         if "F" in values:
             block.add(Feed(float(values["F"])))
             used.add("F")

@@ -19,7 +19,7 @@ from typing import Any, ClassVar
 from dialects.fanuc.block_syntax import FanucBlockSyntax, _col_of_word, _second_col
 from dialects.fanuc.codes import g_key
 from postproc.errors import ParseError, ProgramError
-from postproc.ir import Block, Dwell, Feed, NativeCode, SpindleOrientation, SpindleSpeed, ToolSelect
+from postproc.ir import Block, Dwell, NativeCode, SpindleOrientation
 from postproc.syntax import Context
 
 from . import codes as ngc
@@ -106,20 +106,7 @@ class NgcBlockSyntax(FanucBlockSyntax):
         if "MachineCoordinates" in block.sections and "Motion" in block.sections:
             self._machine_move(block, ctx, codes)
         self.m_sections(block, ctx, mcodes, values, used)
-        if "F" in values:
-            block.add(Feed(float(values["F"])))
-            used.add("F")
-        if "S" in values:
-            block.add(SpindleSpeed(float(values["S"])))
-            used.add("S")
-        if "T" in values:
-            block.add(ToolSelect(int(values["T"])))
-            used.add("T")
-        unused = [k for k in values if k not in used]
-        if unused:
-            up = unused[0]
-            raise ProgramError(f"address {up} has no meaning in this block",
-                               ctx.at(block, ctx.column_of(block, up)))
+        self.finish_words(block, ctx, values, used)
 
     def _value(self, block: Block, ctx: Context, up: str, num: str) -> float | int:
         if up in self.REAL_LETTERS:
