@@ -15,7 +15,7 @@ from lxml import etree
 
 from postproc.api import read_program, translate
 from postproc.errors import Diagnostics, ErrorList, ErrorLevel
-from postproc.ir import Block, Dwell, Motion, NativeCode, SpindleOrientation, ToolLengthOffset
+from postproc.ir import Block, Dwell, Motion, SpindleOrientation, ToolLengthOffset
 from postproc.plugins import default_registry
 from postproc.setup import CycleSettings, MachineSetup
 from postproc.syntax import load_pipeline
@@ -23,7 +23,6 @@ from postproc.toolpath import toolpath_events
 from postproc.xmlio import to_bytes
 import postproc_linuxcnc
 from postproc_linuxcnc import Linuxcnc
-from postproc_linuxcnc.block_syntax import NgcBlockSyntax
 from postproc_linuxcnc.lexer import lex_block
 
 ROOT = Path(__file__).resolve().parents[1]
