@@ -255,7 +255,7 @@ def test_moving_the_setup_folder_keeps_it_working(cli, tmp_path, monkeypatch):
 
 def test_the_override_pipeline_is_the_one_used(cli, tmp_path):
     """A pipeline without the Fanuc block syntax gives blocks no meaning: nothing to normalise."""
-    _setup_folder(tmp_path / "cfg")
+    machine = _setup_folder(tmp_path / "cfg")
     (tmp_path / "cfg/pipelines/mill.xml").write_text(DECLARATION + '<Pipeline dialect="fanuc"/>\n')
     program = tmp_path / "p.nc"
     program.write_text("G21 G90 G00 X10 Y20\n")
@@ -275,7 +275,7 @@ PIPELINE_ERRORS = [
 
 @pytest.mark.parametrize("pipeline, message, line", PIPELINE_ERRORS, ids=[e[1] for e in PIPELINE_ERRORS])
 def test_pipeline_errors_point_into_the_pipeline_file(cli, tmp_path, pipeline, message, line):
-    _setup_folder(tmp_path / "cfg")
+    machine = _setup_folder(tmp_path / "cfg")
     pipe = tmp_path / "cfg/pipelines/mill.xml"
     pipe.write_text(DECLARATION + pipeline)
     result = cli("config", "check", machine)
@@ -284,7 +284,7 @@ def test_pipeline_errors_point_into_the_pipeline_file(cli, tmp_path, pipeline, m
 
 
 def test_a_missing_pipeline_file_is_an_error(cli, tmp_path):
-    _setup_folder(tmp_path / "cfg")
+    machine = _setup_folder(tmp_path / "cfg")
     (tmp_path / "cfg/pipelines/mill.xml").unlink()
     result = cli("config", "check", machine)
     assert result.status == 1
