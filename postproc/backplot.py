@@ -11,10 +11,17 @@ from __future__ import annotations
 import math
 from array import array
 from typing import Any, BinaryIO, Iterable, Sequence, TextIO
-from xml.sax.saxutils import escape
+
+from lxml import etree
 
 from .errors import UsageError
 from .toolpath import CENTRE_KEYS, arc_points
+
+SVG_NS = "http://www.w3.org/2000/svg"
+
+
+def _svg(tag: str) -> str:
+    return f"{{{SVG_NS}}}{tag}"
 
 CHORD_ERROR = 0.01
 """Largest distance in mm between a drawn chord and the arc it stands for."""
@@ -115,38 +122,47 @@ class Backplot:
 
     # -- SVG ---------------------------------------------------------------------------------------
     def write_svg(self, out: TextIO) -> None:
-        """One <path> per view and kind of move that occurs (at most four), a frame and a legend."""
+        """One <path> per view and kind of move that occurs (at most four), a frame and a legend.
+        Built with lxml like all of postproc's XML."""
         plan, side, scale = self.transforms()
-        w = out.write
-        w(f'<?xml version="1.0" encoding="UTF-8"?>\n<svg xmlns="http://www.w3.org/2000/svg" '
-          f'width="{WIDTH}" height="{HEIGHT}" viewBox="0 0 {WIDTH} {HEIGHT}" font-family="sans-serif" '
-          f'font-size="12">\n<rect width="{WIDTH}" height="{HEIGHT}" fill="white"/>\n')
+        svg = etree.Element(_svg("svg"), nsmap={None: SVG_NS}, width=str(WIDTH), height=str(HEIGHT),
+                            viewBox=f"0 0 {WIDTH} {HEIGHT}")
+        svg.set("font-family", "sans-serif")
+        svg.set("font-size", "12")
+        etree.SubElement(svg, _svg("rect"), width=str(WIDTH), height=str(HEIGHT), fill="white")
         for (title, left), view in zip(self.panels(), (plan, side)):
-            w(f'<g class="view">\n<rect x="{left}" y="{TOP}" width="{PANEL}" height="{PANEL}" fill="none" '
-              f'stroke="#bbbbbb"/>\n<text x="{left + 4}" y="{TOP - 8}">{escape(title)}</text>\n')
+            group = etree.SubElement(svg, _svg("g"), {"class": "view"})
+            etree.SubElement(group, _svg("rect"), x=f"{left:g}", y=f"{TOP:g}", width=f"{PANEL:g}",
+                             height=f"{PANEL:g}", fill="none", stroke="#bbbbbb")
+            etree.SubElement(group, _svg("text"), x=f"{left + 4:g}", y=f"{TOP - 8:g}").text = title
             for kind, cls in ((RAPID, "rapid"), (FEED, "feed")):  # cuts drawn over rapids
                 if not self.moves[kind]:
                     continue
-                dash = f' stroke-dasharray="{DASH[0]},{DASH[1]}"' if kind == RAPID else ""
-                w(f'<path class="{cls}" fill="none" stroke="{COLOURS[kind]}" stroke-width="{STROKE}"{dash} '
-                  f'stroke-linejoin="round" d="')
-                for run in self.polylines(kind, view):
-                    w("M" + " L".join(f"{px:.2f},{py:.2f}" for px, py in run))
-                    w(" ")
-                w('"/>\n')
-            w("</g>\n")
-        self._svg_legend(w, scale)
-        w("</svg>\n")
+                d = " ".join("M" + " L".join(f"{px:.2f},{py:.2f}" for px, py in run)
+                             for run in self.polylines(kind, view))
+                path = etree.SubElement(group, _svg("path"), fill="none", stroke=COLOURS[kind], d=d)
+                path.set("class", cls)
+                path.set("stroke-width", f"{STROKE:g}")
+                path.set("stroke-linejoin", "round")
+                if kind == RAPID:
+                    path.set("stroke-dasharray", f"{DASH[0]:g},{DASH[1]:g}")
+        self._svg_legend(svg, scale)
+        out.write('<?xml version="1.0" encoding="UTF-8"?>\n')
+        out.write(etree.tostring(svg, encoding="unicode", pretty_print=True))
 
-    def _svg_legend(self, w: Any, scale: float) -> None:
+    def _svg_legend(self, svg: etree._Element, scale: float) -> None:
         y = TOP + PANEL + 28
         x = MARGIN / 2
-        w(f'<g class="legend">\n<line x1="{x}" y1="{y - 4}" x2="{x + 30}" y2="{y - 4}" stroke="{COLOURS[FEED]}" '
-          f'stroke-width="{STROKE}"/>\n<text x="{x + 36}" y="{y}">feed ({self.moves[FEED]})</text>\n'
-          f'<line x1="{x + 130}" y1="{y - 4}" x2="{x + 160}" y2="{y - 4}" stroke="{COLOURS[RAPID]}" '
-          f'stroke-width="{STROKE}" stroke-dasharray="{DASH[0]},{DASH[1]}"/>\n'
-          f'<text x="{x + 166}" y="{y}">rapid ({self.moves[RAPID]})</text>\n'
-          f'<text x="{x + 280}" y="{y}">{escape(self._extent_text(scale))}</text>\n</g>\n')
+        legend = etree.SubElement(svg, _svg("g"), {"class": "legend"})
+        for dx, kind, label in ((0, FEED, "feed"), (130, RAPID, "rapid")):
+            line = etree.SubElement(legend, _svg("line"), x1=f"{x + dx:g}", y1=f"{y - 4:g}", x2=f"{x + dx + 30:g}",
+                                    y2=f"{y - 4:g}", stroke=COLOURS[kind])
+            line.set("stroke-width", f"{STROKE:g}")
+            if kind == RAPID:
+                line.set("stroke-dasharray", f"{DASH[0]:g},{DASH[1]:g}")
+            etree.SubElement(legend, _svg("text"), x=f"{x + dx + 36:g}", y=f"{y:g}").text = \
+                f"{label} ({self.moves[kind]})"
+        etree.SubElement(legend, _svg("text"), x=f"{x + 280:g}", y=f"{y:g}").text = self._extent_text(scale)
 
     def _extent_text(self, scale: float) -> str:
         x0, x1, y0, y1, z0, z1 = self.bounds()
