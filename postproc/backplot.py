@@ -18,10 +18,23 @@ from .errors import UsageError
 from .toolpath import CENTRE_KEYS, arc_points
 
 SVG_NS = "http://www.w3.org/2000/svg"
+PATH_POINTS = 20000
+"""Most points in one SVG <path>: long programs get several paths of a kind instead of one huge one."""
 
 
 def _svg(tag: str) -> str:
-    return f"{{{SVG_NS}}}{tag}"
+    """A child element's tag: written without a prefix, it sits in the root's default SVG namespace."""
+    return tag
+
+
+class _TextSink:
+    """Lets lxml's incremental writer (which writes bytes) write into a text stream."""
+
+    def __init__(self, out: TextIO) -> None:
+        self.out = out
+
+    def write(self, data: bytes) -> None:
+        self.out.write(data.decode("utf-8"))
 
 CHORD_ERROR = 0.01
 """Largest distance in mm between a drawn chord and the arc it stands for."""
@@ -102,7 +115,8 @@ class Backplot:
         return plan, side, scale
 
     def polylines(self, kind: int, view: Any) -> Iterable[list[tuple[float, float]]]:
-        """The connected runs of one kind of segment, in pixels."""
+        """The connected runs of one kind of segment, in pixels; a run longer than ``PATH_POINTS`` comes
+        in pieces that continue from each other's last point."""
         codes = self.codes
         run: list[tuple[float, float]] = []
         for n in range(1, len(codes)):
@@ -110,6 +124,9 @@ class Backplot:
                 if not run:
                     run.append(view(3 * (n - 1)))
                 run.append(view(3 * n))
+                if len(run) > PATH_POINTS:
+                    yield run
+                    run = [run[-1]]
             elif run:
                 yield run
                 run = []
@@ -123,37 +140,56 @@ class Backplot:
     # -- SVG ---------------------------------------------------------------------------------------
     def write_svg(self, out: TextIO) -> None:
         """One <path> per view and kind of move that occurs (at most four), a frame and a legend.
-        Built with lxml like all of postproc's XML."""
+        Streamed with lxml's incremental writer: one path's data at a time is in memory."""
         plan, side, scale = self.transforms()
-        svg = etree.Element(_svg("svg"), nsmap={None: SVG_NS}, width=str(WIDTH), height=str(HEIGHT),
-                            viewBox=f"0 0 {WIDTH} {HEIGHT}")
-        svg.set("font-family", "sans-serif")
-        svg.set("font-size", "12")
-        etree.SubElement(svg, _svg("rect"), width=str(WIDTH), height=str(HEIGHT), fill="white")
-        for (title, left), view in zip(self.panels(), (plan, side)):
-            group = etree.SubElement(svg, _svg("g"), {"class": "view"})
-            etree.SubElement(group, _svg("rect"), x=f"{left:g}", y=f"{TOP:g}", width=f"{PANEL:g}",
-                             height=f"{PANEL:g}", fill="none", stroke="#bbbbbb")
-            etree.SubElement(group, _svg("text"), x=f"{left + 4:g}", y=f"{TOP - 8:g}").text = title
-            for kind, cls in ((RAPID, "rapid"), (FEED, "feed")):  # cuts drawn over rapids
-                if not self.moves[kind]:
-                    continue
-                d = " ".join("M" + " L".join(f"{px:.2f},{py:.2f}" for px, py in run)
-                             for run in self.polylines(kind, view))
-                path = etree.SubElement(group, _svg("path"), fill="none", stroke=COLOURS[kind], d=d)
-                path.set("class", cls)
-                path.set("stroke-width", f"{STROKE:g}")
-                path.set("stroke-linejoin", "round")
-                if kind == RAPID:
-                    path.set("stroke-dasharray", f"{DASH[0]:g},{DASH[1]:g}")
-        self._svg_legend(svg, scale)
-        out.write('<?xml version="1.0" encoding="UTF-8"?>\n')
-        out.write(etree.tostring(svg, encoding="unicode", pretty_print=True))
+        size = {"width": str(WIDTH), "height": str(HEIGHT)}
+        with etree.xmlfile(_TextSink(out), encoding="utf-8") as xf:
+            xf.write_declaration()
+            with xf.element(f"{{{SVG_NS}}}svg", {**size, "viewBox": f"0 0 {WIDTH} {HEIGHT}", "font-family": "sans-serif",
+                                          "font-size": "12"}, nsmap={None: SVG_NS}):
+                xf.write("\n", etree.Element(_svg("rect"), {**size, "fill": "white"}), "\n")
+                for (title, left), view in zip(self.panels(), (plan, side)):
+                    with xf.element(_svg("g"), {"class": "view"}):
+                        frame = etree.Element(_svg("rect"), x=f"{left:g}", y=f"{TOP:g}", width=f"{PANEL:g}",
+                                              height=f"{PANEL:g}", fill="none", stroke="#bbbbbb")
+                        label = etree.Element(_svg("text"), x=f"{left + 4:g}", y=f"{TOP - 8:g}")
+                        label.text = title
+                        xf.write("\n", frame, "\n", label, "\n")
+                        for kind, cls in ((RAPID, "rapid"), (FEED, "feed")):  # cuts drawn over rapids
+                            if self.moves[kind]:
+                                for path in self._svg_paths(kind, cls, view):
+                                    xf.write(path, "\n")
+                    xf.write("\n")
+                legend = etree.Element(_svg("g"), {"class": "legend"})
+                self._svg_legend(legend, scale)
+                xf.write(legend, "\n")
+        out.write("\n")
 
-    def _svg_legend(self, svg: etree._Element, scale: float) -> None:
+    def _svg_paths(self, kind: int, cls: str, view: Any) -> Iterable[etree._Element]:
+        """The moves of one kind as <path>s of at most ``PATH_POINTS`` points each: one path for any
+        ordinary program, and bounded memory however long the program is."""
+        parts: list[str] = []
+        count = 0
+        for run in self.polylines(kind, view):
+            parts.append("M" + " L".join(f"{px:.2f},{py:.2f}" for px, py in run))
+            count += len(run)
+            if count >= PATH_POINTS:
+                yield self._svg_path(kind, cls, " ".join(parts))
+                parts, count = [], 0
+        if parts:
+            yield self._svg_path(kind, cls, " ".join(parts))
+
+    @staticmethod
+    def _svg_path(kind: int, cls: str, d: str) -> etree._Element:
+        path = etree.Element(_svg("path"), {"class": cls, "fill": "none", "stroke": COLOURS[kind], "d": d,
+                                            "stroke-width": f"{STROKE:g}", "stroke-linejoin": "round"})
+        if kind == RAPID:
+            path.set("stroke-dasharray", f"{DASH[0]:g},{DASH[1]:g}")
+        return path
+
+    def _svg_legend(self, legend: etree._Element, scale: float) -> None:
         y = TOP + PANEL + 28
         x = MARGIN / 2
-        legend = etree.SubElement(svg, _svg("g"), {"class": "legend"})
         for dx, kind, label in ((0, FEED, "feed"), (130, RAPID, "rapid")):
             line = etree.SubElement(legend, _svg("line"), x1=f"{x + dx:g}", y1=f"{y - 4:g}", x2=f"{x + dx + 30:g}",
                                     y2=f"{y - 4:g}", stroke=COLOURS[kind])

@@ -88,3 +88,18 @@ def test_backplot_from_events_api() -> None:
     plot = Backplot({"X": 0.0, "Y": 0.0, "Z": 0.0})
     plot.add_all(toolpath_events(PROGRAM.splitlines(keepends=True), file="p.nc", dialect="fanuc"))
     assert plot.moves == {1: 3, 2: 3}
+
+
+def test_a_long_run_is_split_into_bounded_paths_that_join_up(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Memory stays bounded on long programs: at most PATH_POINTS points per <path>, and each piece
+    starts where the previous one ended, so the drawing is unbroken."""
+    import postproc.backplot as backplot
+    monkeypatch.setattr(backplot, "PATH_POINTS", 10)
+    moves = "".join(f"X{i}. Y{(i % 3)}.\n" for i in range(1, 26))
+    root = svg_of("G21 G90\nG00 X0. Y0. Z0.\nG01 F100.\n" + moves + "M30\n")
+    feeds = [p for p in root.findall(f".//{SVG}path") if p.get("class") == "feed"]
+    assert len(feeds) == 6  # 25 moves -> 3 pieces per view
+    plan = [p.get("d") for p in feeds[:3]]
+    ends = [d.split(" L")[-1] for d in plan[:-1]]
+    starts = [d[1:].split(" L")[0] for d in plan[1:]]
+    assert ends == starts
