@@ -5,6 +5,7 @@ from __future__ import annotations
 from . import cycles
 from .cycles.lowering import expand_canned_cycles
 from .hookspecs import hookimpl
+from .expr import register_expressions
 from .ir import register_sections
 from .lower import register_transform
 from .setup import MachineSetup
@@ -16,6 +17,7 @@ from .xmlio import XFactory
 @hookimpl
 def postproc_register_xml(factory: XFactory) -> None:
     register_sections(factory)
+    register_expressions(factory)
     for cls in (Pipeline, MachineSetup, ModalStateSyntax):
         cls.reg(factory)
     cycles.register(factory)

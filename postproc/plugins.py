@@ -13,6 +13,7 @@ import pluggy
 from . import hookspecs
 from .dialect import Dialect
 from .errors import UsageError
+from .expr import register_expressions
 from .ir import register_sections
 from .xmlio import DEFAULT, XFactory
 
@@ -62,4 +63,5 @@ def make_plugin_manager(extra: Iterable[object] = (), entry_points: bool = True)
 def default_registry() -> Registry:
     """The registry of every installed plugin, built on first use."""
     register_sections(DEFAULT)
+    register_expressions(DEFAULT)
     return Registry(make_plugin_manager(), DEFAULT)
