@@ -217,11 +217,9 @@ ARITHMETIC_OPS: frozenset[str] = frozenset({"add", "sub", "mul", "div", "pow", "
 """``pow`` x**y; ``mod_pos`` LinuxCNC's MOD (fmod, then +|y| if negative: result in [0, |y|));
 ``rem_int`` Fanuc's MOD (operands rounded to integers, remainder with the dividend's sign)."""
 
-COMPARISON_OPS: frozenset[str] = frozenset({"eq", "ne", "gt", "ge", "lt", "le",
-                                            "eq_tol", "ne_tol", "ge_tol", "le_tol"})
-"""Comparisons give 1.0 or 0.0. ``eq ne gt ge lt le`` are exact (Fanuc); the ``_tol`` ones are
-LinuxCNC's EQ NE GE LE, which count values closer than ``LINUXCNC_TOLERANCE_EQUAL`` as equal
-(LinuxCNC's GT and LT are exact: ``gt``, ``lt``)."""
+COMPARISON_OPS: frozenset[str] = frozenset({"eq", "ne", "gt", "ge", "lt", "le", "eq_tol", "ne_tol"})
+"""Comparisons give 1.0 or 0.0. ``eq ne gt ge lt le`` are exact (Fanuc; LinuxCNC's GT GE LT LE);
+``eq_tol``/``ne_tol`` are LinuxCNC's EQ/NE, which count values closer than ``TOLERANCE_EQUAL`` as equal."""
 
 LOGICAL_OPS: frozenset[str] = frozenset({"and", "or", "xor", "bitand", "bitor", "bitxor"})
 """``and or xor`` are logical (non-zero is true, result 1.0 or 0.0: LinuxCNC); ``bitand bitor bitxor``
@@ -312,3 +310,10 @@ class Env(Protocol):
         """The value of a variable; None if it has none (vacant, unset). Raises ``EvalError`` for a
         variable the program may not read or whose value only the machine knows (``#5021``)."""
 
+
+
+def evaluate(expr: Expr, env: Env) -> Value:
+    """The value of ``expr`` in ``env`` (None: a vacant variable read bare). The semantics of every
+    operator and function, and what was verified, are in ``postproc.evaluation``."""
+    from .evaluation import evaluate as run
+    return run(expr, env)

@@ -17,7 +17,7 @@ TREES = [
     Unary("neg", Var(Num(3.0))),
     Binary("mul", Var(Num(1.0)), Func("cos", [Var(Num(5.0))])),
     Func("atan2_360", [Num(1.0), Unary("neg", Num(1.0))]),
-    Binary("le_tol", Func("exists", [Var(name="depth")]), Num(0.0)),
+    Binary("ne_tol", Func("exists", [Var(name="depth")]), Num(0.0)),
 ]
 
 
