@@ -6,6 +6,7 @@ from . import cycles
 from .control import register_control
 from .cycles.lowering import expand_canned_cycles
 from .hookspecs import hookimpl
+from .interp import ProgramSyntax
 from .expr import register_expressions
 from .ir import register_sections
 from .lower import register_transform
@@ -20,7 +21,7 @@ def postproc_register_xml(factory: XFactory) -> None:
     register_sections(factory)
     register_expressions(factory)
     register_control(factory)
-    for cls in (Pipeline, MachineSetup, ModalStateSyntax):
+    for cls in (Pipeline, MachineSetup, ModalStateSyntax, ProgramSyntax):
         cls.reg(factory)
     cycles.register(factory)
 

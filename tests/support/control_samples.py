@@ -91,4 +91,5 @@ CONTROL_SAMPLES: dict[str, list[tuple[Builder, str]]] = {
     "ModalCall": [(lambda c: ModalCall("9010", {18: Num(2.0)}),
                    '<ModalCall name="9010">\n  <Arg n="18">\n    <Num value="2.0"/>\n  </Arg>\n</ModalCall>')],
     "ModalCallCancel": [(lambda c: ModalCallCancel(), "<ModalCallCancel/>")],
+    "ProgramSyntax": [(lambda c: c["ProgramSyntax"](), "<ProgramSyntax/>")],
 }
