@@ -344,7 +344,7 @@ class Interpreter:
     def _comment(self, frame: _Frame, block: Block, what: str) -> ExecutedBlock:
         text = source_text(block).replace("(", "[").replace(")", "]")
         note = ExecutedBlock(block.line, None, block.eol or "\n", [], frame.origin)
-        note.sections["Comments"] = Comments([f"LINE {block.line}: {text} ({what})".replace("(", "").replace(")", "")])
+        note.sections["Comments"] = Comments([f"LINE {block.line}: {text}, {what}"])
         return note
 
     # -- calls and returns -----------------------------------------------------------------------
