@@ -465,3 +465,44 @@ def test_a_jump_back_into_the_kept_prefix_rereads_it():
     out = list(FanucLike().process(iter(blocks + [counter, back]), ctx))
     assert words(out) == ["G91", "N10 G1 X1.", "N10 G1 X1.", "N10 G1 X1."]
     assert [blk.line for blk in out if blk.words] == [1, 2, 2, 2]
+
+
+# -- set-up and command line -----------------------------------------------------------------------
+
+LIMITS_XML = (b"<?xml version='1.0' encoding='UTF-8'?>\n<MachineSetup name=\"m\">\n"
+              b"  <Limits loopIterations=\"500\" callDepth=\"8\" keptPrefix=\"10\"/>\n"
+              b"  <Library path=\"subs\"/>\n  <Library path=\"/opt/macros\"/>\n</MachineSetup>\n")
+
+
+def test_limits_and_library_load_and_dump_identically(tmp_path):
+    from postproc.setup import load_setup
+    from postproc.xmlio import to_bytes
+    path = tmp_path / "m.xml"
+    path.write_bytes(LIMITS_XML)
+    setup = load_setup(path)
+    assert setup.limits == Limits(loop_iterations=500, call_depth=8, kept_prefix=10)
+    assert setup.library_paths() == [tmp_path / "subs", tmp_path.parent / "/opt/macros"]
+    assert to_bytes(setup.make_xml_source()) == LIMITS_XML
+
+
+@pytest.mark.parametrize("body, message, line", [
+    ('<Limits callDepth="0"/>', "<Limits> callDepth: Input should be greater than or equal to 1", 2),
+    ('<Limits loops="5"/>', "<Limits> loops: unknown parameter", 2),
+    ("<Library/>", "<Library> takes one attribute, path (a folder of subprograms)", 2),
+])
+def test_bad_limits_are_located(tmp_path, body, message, line):
+    from postproc.errors import ConfigError
+    from postproc.setup import load_setup
+    path = tmp_path / "m.xml"
+    path.write_text(f'<MachineSetup name="m">\n{body}\n</MachineSetup>\n')
+    with pytest.raises(ConfigError) as info:
+        load_setup(path)
+    assert (info.value.message, info.value.location.line) == (message, line)
+
+
+def test_lib_option_must_name_a_folder(cli, tmp_path):
+    prog = tmp_path / "p.nc"
+    prog.write_text("G0 X1.\n")
+    result = cli("toolpath", prog, "--dialect", "fanuc", "--lib", tmp_path / "missing")
+    assert result.status == 2
+    assert result.err == f"postproc: --lib {tmp_path / 'missing'}: no such directory\n"
