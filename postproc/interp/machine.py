@@ -27,11 +27,11 @@ from ..control import (
 )
 from ..errors import Location, PostprocError, ProgramError
 from ..evaluation import evaluate, evaluate_number
-from ..expr import EvalError, Expr, Value, Var
+from ..expr import EvalError, Expr, Value
 from ..evaluation import var_key
 from ..ir import Block, Comments
 from ..setup import Limits
-from ..source_map import CallSite, ExecutedBlock, Origin, locate
+from ..source_map import CallSite, ExecutedBlock, Origin
 from .store import Program, ProgramStore, source_text
 from .variables import Variables
 
