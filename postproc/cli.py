@@ -60,6 +60,8 @@ def build_parser() -> argparse.ArgumentParser:
     t.add_argument("--from", dest="source", required=True)
     t.add_argument("--to", dest="target", required=True)
     t.add_argument("--machine")
+    t.add_argument("--lib", action="append", default=[], metavar="DIR",
+                   help="folder searched for subprograms (repeatable; after the set-up's <Library>)")
     t.add_argument("--on-unsupported", choices=("error", "warn"), default="error")
     t.add_argument("--normalize", action="store_true", help="write every decimal point explicitly")
     t.add_argument("--renumber", metavar="START[,STEP]", help="renumber blocks (implies --normalize)")
@@ -69,6 +71,8 @@ def build_parser() -> argparse.ArgumentParser:
     tp.add_argument("input")
     tp.add_argument("--dialect", required=True)
     tp.add_argument("--machine")
+    tp.add_argument("--lib", action="append", default=[], metavar="DIR",
+                   help="folder searched for subprograms (repeatable; after the set-up's <Library>)")
     tp.add_argument("--format", choices=("jsonl", "svg", "png"), default="jsonl")
     tp.add_argument("-o", "--output")
     tp.set_defaults(run=cmd_toolpath)
@@ -79,6 +83,8 @@ def build_parser() -> argparse.ArgumentParser:
     v.add_argument("--from", dest="source", required=True)
     v.add_argument("--to", dest="target", required=True)
     v.add_argument("--machine")
+    v.add_argument("--lib", action="append", default=[], metavar="DIR",
+                   help="folder searched for subprograms (repeatable; after the set-up's <Library>)")
     v.add_argument("--target-machine", help="set-up of the target machine (default: --machine)")
     v.add_argument("--tolerance", type=float, default=0.001)
     v.set_defaults(run=cmd_verify)
@@ -101,8 +107,13 @@ def build_parser() -> argparse.ArgumentParser:
     return p
 
 
-def _setup(path: str | None) -> MachineSetup:
-    return load_setup(path) if path else MachineSetup()
+def _setup(path: str | None, lib: Sequence[str] = ()) -> MachineSetup:
+    setup = load_setup(path) if path else MachineSetup()
+    for folder in lib:
+        if not os.path.isdir(folder):
+            raise UsageError(f"--lib {folder}: no such directory")
+        setup.library.append(os.path.abspath(folder))
+    return setup
 
 
 def _open_program(path: str) -> TextIO:
@@ -135,7 +146,7 @@ def _atomic_output(path: str | None, write: Callable[[TextIO], object], binary: 
 
 
 def cmd_translate(args: argparse.Namespace) -> int:
-    setup = _setup(args.machine)
+    setup = _setup(args.machine, args.lib)
     if args.normalize:
         setup.output.normalize = True
     if args.renumber:
@@ -155,7 +166,7 @@ def cmd_translate(args: argparse.Namespace) -> int:
 
 def cmd_toolpath(args: argparse.Namespace) -> int:
     from .toolpath import export_toolpath
-    setup = _setup(args.machine)
+    setup = _setup(args.machine, args.lib)
     binary = args.format == "png"
     if binary and not args.output:
         raise UsageError("--format png needs -o OUT")
@@ -167,8 +178,8 @@ def cmd_toolpath(args: argparse.Namespace) -> int:
 
 def cmd_verify(args: argparse.Namespace) -> int:
     from .verify import verify_files
-    setup = _setup(args.machine)
-    target_setup = _setup(args.target_machine) if args.target_machine else setup
+    setup = _setup(args.machine, args.lib)
+    target_setup = _setup(args.target_machine, args.lib) if args.target_machine else setup
     report = verify_files(args.input, args.output, source=args.source, target=args.target,
                           setup=setup, target_setup=target_setup, tolerance=args.tolerance)
     print(report.summary())

@@ -3,8 +3,11 @@
 from __future__ import annotations
 
 from . import cycles
+from .control import register_control
 from .cycles.lowering import expand_canned_cycles
 from .hookspecs import hookimpl
+from .interp import ProgramSyntax
+from .expr import register_expressions
 from .ir import register_sections
 from .lower import register_transform
 from .setup import MachineSetup
@@ -16,7 +19,9 @@ from .xmlio import XFactory
 @hookimpl
 def postproc_register_xml(factory: XFactory) -> None:
     register_sections(factory)
-    for cls in (Pipeline, MachineSetup, ModalStateSyntax):
+    register_expressions(factory)
+    register_control(factory)
+    for cls in (Pipeline, MachineSetup, ModalStateSyntax, ProgramSyntax):
         cls.reg(factory)
     cycles.register(factory)
 

@@ -12,7 +12,7 @@ from importlib import resources
 from pathlib import Path
 from typing import ClassVar, Iterable, Iterator, TextIO
 
-from .errors import Diagnostics, Location, PostprocError, UnsupportedError
+from .errors import Diagnostics, PostprocError, UnsupportedError
 from .ir import Block
 from .setup import MachineSetup
 from .syntax import Context, Pipeline, load_pipeline
@@ -59,7 +59,7 @@ class Writer(abc.ABC):
             except UnsupportedError as err:
                 text = self.unsupported_block(block, err)
             except PostprocError as err:
-                self.ctx.diagnostics.error(err.located(Location(self.ctx.file, block.line, 1)))
+                self.ctx.diagnostics.error(err.located(self.ctx.at(block)))
                 continue
             if text is not None:
                 emit(text)
@@ -84,7 +84,7 @@ class Writer(abc.ABC):
         return render(name, text, variables, setup.source, setup.template_lines.get(name, 1))
 
     def unsupported_block(self, block: Block, err: UnsupportedError) -> str | None:
-        err.located(Location(self.ctx.file, block.line, 1))
+        err.located(self.ctx.at(block))
         if self.ctx.on_unsupported == "warn":
             self.ctx.diagnostics.warn(err.message + "; written as a comment", err.location)
             return self.comment_out(block)

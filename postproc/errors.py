@@ -19,6 +19,8 @@ class Location:
     file: str
     line: int
     col: int = 1
+    note: str = ""
+    """Where the place sits in the program's execution (``in O2000, called from main.nc line 12``), or ''."""
 
     def __str__(self) -> str:
         return f"{self.file}:{self.line}:{self.col}"
@@ -42,7 +44,8 @@ class PostprocError(Exception):
 
     def __str__(self) -> str:
         where = f"{self.location}: " if self.location else ""
-        return f"{where}{self.severity}: {self.message}"
+        note = f" ({self.location.note})" if self.location and self.location.note else ""
+        return f"{where}{self.severity}: {self.message}{note}"
 
 
 class ParseError(PostprocError):

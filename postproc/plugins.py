@@ -11,8 +11,10 @@ from typing import Iterable
 import pluggy
 
 from . import hookspecs
+from .control import register_control
 from .dialect import Dialect
 from .errors import UsageError
+from .expr import register_expressions
 from .ir import register_sections
 from .xmlio import DEFAULT, XFactory
 
@@ -62,4 +64,6 @@ def make_plugin_manager(extra: Iterable[object] = (), entry_points: bool = True)
 def default_registry() -> Registry:
     """The registry of every installed plugin, built on first use."""
     register_sections(DEFAULT)
+    register_expressions(DEFAULT)
+    register_control(DEFAULT)
     return Registry(make_plugin_manager(), DEFAULT)

@@ -99,6 +99,19 @@ class MachineSettings(_Group):
         return self
 
 
+class Limits(_Group):
+    """Bounds of the interpreter (``postproc.interp``): a program that exceeds one is a located error
+    naming the construct, never a hang."""
+
+    TAG = "Limits"
+    loop_iterations: int = Field(1_000_000, ge=1)
+    """Total loop iterations, jumps, returns to a program's start and subprogram calls of one run."""
+    call_depth: int = Field(64, ge=1)
+    """Nested subprogram and macro calls."""
+    kept_prefix: int = Field(100_000, ge=0)
+    """Blocks of the straight start of a program kept for a later backward jump into it."""
+
+
 class Templates(BaseModel):
     """jinja2 templates (rendered sandboxed) for the program header and footer."""
 
@@ -106,7 +119,7 @@ class Templates(BaseModel):
     footer: str | None = None
 
 
-GROUPS: tuple[type[_Group], ...] = (InputSettings, OutputSettings, CycleSettings, MachineSettings)
+GROUPS: tuple[type[_Group], ...] = (InputSettings, OutputSettings, CycleSettings, MachineSettings, Limits)
 
 
 class MachineSetup(XmlNode):
@@ -114,12 +127,13 @@ class MachineSetup(XmlNode):
 
     XNAME = "MachineSetup"
     __slots__ = ("name", "dialect", "pipeline", "input", "output", "cycles", "machine", "templates", "source",
-                 "template_lines")
+                 "template_lines", "limits", "library")
 
     def __init__(self, name: str = "default", dialect: str | None = None, pipeline: str | None = None,
                  input: InputSettings | None = None, output: OutputSettings | None = None,
                  cycles: CycleSettings | None = None, machine: MachineSettings | None = None,
-                 templates: Templates | None = None, source: str | None = None) -> None:
+                 templates: Templates | None = None, source: str | None = None, limits: Limits | None = None,
+                 library: list[str] | None = None) -> None:
         self.name = name
         self.dialect = dialect
         self.pipeline = pipeline
@@ -129,13 +143,17 @@ class MachineSetup(XmlNode):
         self.cycles = cycles or CycleSettings()
         self.machine = machine or MachineSettings()
         self.templates = templates or Templates()
+        self.limits = limits or Limits()
+        self.library = library if library is not None else []
+        """Folders searched for subprograms not in the program's file (``<Library path="..."/>``, relative
+        to the set-up file's folder; ``--lib DIR`` adds to them)."""
         self.source = source
         self.template_lines: dict[str, int] = {}
         """Line of the set-up file each template starts on (for located template errors)."""
 
     def _key(self) -> tuple[Any, ...]:
         return (self.name, self.dialect, self.pipeline, self.input, self.output, self.cycles,
-                self.machine, self.templates)
+                self.machine, self.templates, self.limits, tuple(self.library))
 
     def __repr__(self) -> str:
         return f"MachineSetup(name={self.name!r}, dialect={self.dialect!r})"
@@ -146,19 +164,28 @@ class MachineSetup(XmlNode):
         base = Path(self.source).parent if self.source else Path(".")
         return base / self.pipeline
 
+    def library_paths(self) -> list[Path]:
+        """The subprogram search path, in order, relative paths resolved from the set-up file's folder."""
+        base = Path(self.source).parent if self.source else Path(".")
+        return [base / p for p in self.library]
+
     @classmethod
     def from_xml(cls, el: etree._Element) -> "MachineSetup":
         kwargs: dict[str, Any] = {}
         lines: dict[str, int] = {}
         by_tag = {g.TAG: g for g in GROUPS}
         attr_of = {InputSettings: "input", OutputSettings: "output", CycleSettings: "cycles",
-                   MachineSettings: "machine"}
+                   MachineSettings: "machine", Limits: "limits"}
+        library: list[str] = []
         for child in el:
             if not isinstance(child.tag, str):
                 continue
             if child.tag == "Templates":
                 kwargs["templates"] = _templates_from_xml(child)
                 lines = {c.tag.lower(): c.sourceline or 1 for c in child if isinstance(c.tag, str)}
+                continue
+            if child.tag == "Library":
+                library.append(_library_from_xml(child))
                 continue
             group = by_tag.get(child.tag)
             if group is None:
@@ -170,7 +197,7 @@ class MachineSetup(XmlNode):
         if unknown:
             raise ConfigError(f"<MachineSetup> has unknown attribute(s) {', '.join(sorted(unknown))}", where(el))
         setup = cls(name=el.get("name", "default"), dialect=el.get("dialect"), pipeline=el.get("pipeline"),
-                    source=el.getroottree().docinfo.URL, **kwargs)
+                    source=el.getroottree().docinfo.URL, library=library, **kwargs)
         setup.template_lines = lines
         return setup
 
@@ -180,7 +207,7 @@ class MachineSetup(XmlNode):
             el.set("dialect", self.dialect)
         if self.pipeline:
             el.set("pipeline", self.pipeline)
-        for group in (self.input, self.output, self.cycles, self.machine):
+        for group in (self.input, self.output, self.cycles, self.machine, self.limits):
             values = group.model_dump(by_alias=True, exclude_defaults=True)
             if values:
                 child = etree.SubElement(el, group.TAG)
@@ -191,6 +218,8 @@ class MachineSetup(XmlNode):
             for tag, text in (("Header", self.templates.header), ("Footer", self.templates.footer)):
                 if text is not None:
                     etree.SubElement(t, tag).text = text
+        for path in self.library:
+            etree.SubElement(el, "Library", path=path)
         return el
 
 
@@ -220,6 +249,13 @@ def _group_from_xml(group: type[_Group], el: etree._Element) -> _Group:
         field_name = ".".join(str(p) for p in first["loc"])
         raise ConfigError(f"<{el.tag}> {field_name}: {msg}" if field_name else f"<{el.tag}> {msg}",
                           where(el)) from None
+
+
+def _library_from_xml(el: etree._Element) -> str:
+    path = el.get("path")
+    if not path or set(el.attrib) != {"path"} or len([c for c in el if isinstance(c.tag, str)]):
+        raise ConfigError("<Library> takes one attribute, path (a folder of subprograms)", where(el))
+    return str(path)
 
 
 def _templates_from_xml(el: etree._Element) -> Templates:

@@ -18,6 +18,7 @@ from lxml import etree
 from .errors import ConfigError, Diagnostics, Location, PostprocError
 from .ir import Block
 from .setup import MachineSetup
+from .source_map import locate
 from .state import ModalState
 from .xmlio import DEFAULT, XFactory, XmlNode, parse_xml_file, where
 
@@ -25,7 +26,7 @@ from .xmlio import DEFAULT, XFactory, XmlNode, parse_xml_file, where
 class Context:
     """What every step of one run shares: file name, set-up, diagnostics and modal state."""
 
-    __slots__ = ("file", "setup", "diagnostics", "state", "dialect", "on_unsupported")
+    __slots__ = ("file", "setup", "diagnostics", "state", "dialect", "on_unsupported", "program_mode")
 
     def __init__(self, file: str, setup: MachineSetup, diagnostics: Diagnostics, dialect: str) -> None:
         self.file = file
@@ -35,9 +36,13 @@ class Context:
         self.dialect = dialect
         self.on_unsupported = "error"
         """'error' or 'warn': what a construct the target cannot express does."""
+        self.program_mode = "keep"
+        """What the interpreter step does with a program that computes: 'keep' its constructs (for a
+        target that has them) or 'execute' them (toolpath, verify, flattening); see ``postproc.interp``."""
 
     def at(self, block: Block, col: int = 1) -> Location:
-        return Location(self.file, block.line, col)
+        """Where ``block`` (column ``col``) is, through the source map: the one way to locate a block."""
+        return locate(self.file, block, col)
 
     def column_of(self, block: Block, letter: str, number: str | None = None, nth: int = 1) -> int:
         """Column of the ``nth`` word with ``letter`` (and, if given, exactly that number text) in the
@@ -150,7 +155,7 @@ def _fused(blocks: Iterable[Block], builds: tuple[Callable[[Block, Context], Non
                 second(block, ctx)
                 third(block, ctx)
             except PostprocError as err:
-                report(err.located(Location(file, block.line, 1)))
+                report(err.located(locate(file, block)))
             yield block
         return
     for block in blocks:
@@ -158,7 +163,7 @@ def _fused(blocks: Iterable[Block], builds: tuple[Callable[[Block, Context], Non
             for build in builds:
                 build(block, ctx)
         except PostprocError as err:
-            report(err.located(Location(file, block.line, 1)))
+            report(err.located(locate(file, block)))
         yield block
 
 

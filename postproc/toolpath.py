@@ -477,6 +477,7 @@ def toolpath_events(lines: Iterable[str], *, file: str, dialect: str | type[Dial
         default_registry()  # make sure every plugin's XML classes and transforms are loaded
     with gc_paused():
         ctx, blocks = read_blocks(lines, file, dialect, setup, diagnostics)
+        ctx.program_mode = "execute"  # a simulation runs the program's loops, jumps and calls
         lowered = lower_for(blocks, ctx, ToolpathTarget, "error")
         yield from simulate(lowered, ctx)
     if check:

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from typing import Any, Callable, ClassVar, NoReturn
 
-from .errors import Location, UnsupportedError
+from .errors import UnsupportedError
 from .ir import Block, CompoundMotion, Motion, Section
 from .numbers import MAX_PLACES, canonical_number_re
 from .syntax import Context
@@ -197,7 +197,7 @@ class WordWriter(Writer):
 
     def unsupported(self, what: str, block: Block) -> NoReturn:
         raise UnsupportedError(f"the {self.DIALECT} dialect cannot express {what}",
-                               Location(self.ctx.file, block.line, 1))
+                               self.ctx.at(block))
 
     # -- compound motion ---------------------------------------------------------------------------
     def compound(self, block: Block, compound: CompoundMotion) -> str:
@@ -396,7 +396,7 @@ class WordWriter(Writer):
     def native_code_words(self, s: Any, block: Block) -> list[str]:
         if s.dialect != self.DIALECT:
             raise UnsupportedError(f"{s.what} from {s.dialect} has no equivalent in {self.DIALECT}",
-                                   Location(self.ctx.file, block.line, 1))
+                                   self.ctx.at(block))
         return [s.text]
 
 

@@ -14,6 +14,7 @@ from typing import Any, Callable
 import pytest
 
 from postproc.api import read_program
+from postproc.expr import Binary, Func, Num, Unary, Var
 from postproc.errors import ConfigError
 from postproc.ir import (
     Block, BlockDelete, Comments, CompoundMotion, Coolant, CutterCompensation, CycleCall, CycleCancel,
@@ -26,6 +27,7 @@ from postproc.plugins import default_registry
 from postproc.program_xml import load_program
 from postproc.setup import InputSettings, MachineSettings, MachineSetup, OutputSettings, CycleSettings, Templates
 from postproc.xmlio import XFactory, parse_xml_bytes, to_bytes
+from tests.support.control_samples import CONTROL_SAMPLES
 
 ROOT = Path(__file__).resolve().parents[1]
 DECLARATION = "<?xml version='1.0' encoding='UTF-8'?>\n"
@@ -133,11 +135,20 @@ SAMPLES: dict[str, list[tuple[Builder, str]]] = {
          '<CannedCycleResolveSyntax semantics="rs274">\n  <DrillingSyntax/>\n  <TappingSyntax/>\n'
          "</CannedCycleResolveSyntax>"),
     ],
+    "Num": [(lambda c: Num(-2.5), '<Num value="-2.5"/>')],
+    "Var": [(lambda c: Var(Num(1.0)), '<Var>\n  <Num value="1.0"/>\n</Var>'),
+            (lambda c: Var(name="_global"), '<Var name="_global"/>')],
+    "Unary": [(lambda c: Unary("neg", Var(name="a")), '<Unary op="neg">\n  <Var name="a"/>\n</Unary>')],
+    "Binary": [(lambda c: Binary("mod_pos", Num(7.0), Num(3.0)),
+                '<Binary op="mod_pos">\n  <Num value="7.0"/>\n  <Num value="3.0"/>\n</Binary>')],
+    "Func": [(lambda c: Func("atan2", [Num(1.0), Num(2.0)]),
+              '<Func name="atan2">\n  <Num value="1.0"/>\n  <Num value="2.0"/>\n</Func>')],
     **{name: _empty(name) for name in (
         "FanucBlockSyntax", "ModalStateSyntax", "GrblBlockSyntax", "NgcBlockSyntax", "DrillingSyntax",
         "PeckDrillingSyntax", "TappingSyntax", "BoringSyntax", "FineBoringSyntax", "BackBoringSyntax",
         "ManualBoringSyntax",
     )},
+    **CONTROL_SAMPLES,
 }
 
 

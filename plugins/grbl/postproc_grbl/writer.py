@@ -22,7 +22,7 @@ from __future__ import annotations
 
 from typing import Any, ClassVar
 
-from postproc.errors import Location, UnsupportedError
+from postproc.errors import UnsupportedError
 from postproc.ir import Block, CompoundMotion, DistanceMode, Motion, ProgramControl, Section
 from postproc.state import PLANE_AXES
 from postproc.writer import WordWriter
@@ -71,7 +71,7 @@ class GrblWriter(WordWriter):
         text = super().write_block(block)
         if not self._dropped:
             return text
-        where = Location(self.ctx.file, block.line, 1)
+        where = self.ctx.at(block)
         for err in self._dropped:
             self.ctx.diagnostics.warn(err.message + "; dropped, the rest of the block is written", where)
         return self.comment_out(block) + (text or "")
@@ -195,7 +195,7 @@ class GrblWriter(WordWriter):
             words.append(f"T{self.tool}")
         if self.spindle != "stop" and "SpindleControl" not in block.sections:
             self.ctx.diagnostics.warn("the spindle is running at a tool change: M5 written before the pause",
-                                      Location(self.ctx.file, block.line, 1))
+                                      self.ctx.at(block))
             words.append("M5")
             self.spindle = "stop"
         tool = f"T{self.tool}" if self.tool is not None else "THE NEXT TOOL"

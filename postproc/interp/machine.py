@@ -1,0 +1,490 @@
+"""The interpreter: executes a stored program and yields the concrete blocks it runs, in order.
+
+A concrete block is what the controller would run: every expression word evaluated and spelled as a
+number by the reading dialect (``Host.spell_evaluated``), vacant words omitted, control statements and
+assignments gone. It flows on into the dialect's block syntax like a block of a straight program.
+
+Rules (each a choice where the contract is silent, and tested):
+- In one block, word values and assignment right-hand sides are read first, then the assignments are
+  made, then the concrete block runs, then the block's control statement (a call, jump or loop test)
+  is evaluated with the new values. A control block's other words (``G01 X10. M98 P2000``) run first.
+- ``Limits.loop_iterations`` bounds the total of loop iterations, jumps taken, returns to a start and
+  calls (every repetition counts), so neither a loop nor a wide recursion can run forever;
+  ``Limits.call_depth`` bounds nesting.
+- A runtime error (division by zero, a missing label...) is reported at its block, with the call
+  stack, and execution stops: what follows would rest on a value that does not exist.
+- A modal call (G66) runs after each block that has an axis word, except inside the called macro.
+"""
+
+from __future__ import annotations
+
+from decimal import Decimal
+from typing import Iterator, Protocol
+
+from ..control import (
+    ASSIGN, CONTROL, Assign, Break, Call, Continue, Do, DoWhile, Else, ElseIf, EndIf, EndRepeat, EndWhile,
+    Goto, If, IfThen, ModalCall, ModalCallCancel, Repeat, Return, SubEnd, SubStart, While,
+)
+from ..errors import Location, PostprocError, ProgramError
+from ..evaluation import evaluate, evaluate_number
+from ..expr import EvalError, Expr, Value
+from ..evaluation import var_key
+from ..ir import Block, Comments
+from ..setup import Limits
+from ..source_map import CallSite, ExecutedBlock, Origin
+from .store import Program, ProgramStore, source_text
+from .variables import Variables
+
+NON_WORD_SECTIONS = frozenset((CONTROL, ASSIGN))
+
+
+class Host(Protocol):
+    """What the interpreter needs from the reading dialect."""
+
+    @property
+    def SEQUENCE_LETTER(self) -> str:
+        """The address of block numbers (its word alone does not make a control block run)."""
+
+    @property
+    def AXIS_LETTERS(self) -> frozenset[str]:
+        """Addresses that move an axis (a modal call follows such a block)."""
+
+    @property
+    def MACRO_LOCALS(self) -> int:
+        """Highest local variable number an argument may set."""
+
+    def spell_evaluated(self, letter: str, value: float) -> str:
+        """The number text of an evaluated word (raises ``ProgramError`` if the address cannot take it)."""
+
+    def program_label(self, name: str) -> str:
+        """A subprogram name as the dialect writes it (``O2000``, ``o<probe>``)."""
+
+    def is_program_end(self, block: Block) -> bool:
+        """The block ends the program (M02/M30): nothing after it runs."""
+
+
+class Interrupt(Exception):
+    """Stops the run after a located error was reported."""
+
+
+class _Frame:
+    """One running program level: where it runs, how it was called, what it repeats."""
+
+    __slots__ = ("program", "pc", "end", "origin", "new_level", "call_block", "remaining", "index", "count",
+                 "args", "start", "repeats", "modal", "site")
+
+    def __init__(self, program: Program, start: int, end: int, origin: Origin | None, new_level: bool,
+                 call_block: Block | None, index: int, count: int, args: dict[int, Value], modal: bool,
+                 site: CallSite | None) -> None:
+        self.program = program
+        self.start = start
+        self.pc = start
+        self.end = end
+        self.origin = origin
+        self.new_level = new_level
+        self.call_block = call_block
+        self.index = index
+        self.count = count
+        self.args = args
+        self.repeats: dict[int, int] = {}
+        self.modal = modal
+        self.site = site
+
+
+def spell_number(value: float) -> str:
+    """A real as program text with an explicit decimal point and every significant digit, never an
+    exponent: 10.0 -> '10.', 0.1 -> '0.1', 1e-07 -> '0.0000001', -0.0 -> '-0.'."""
+    text = repr(value)
+    if "e" in text or "E" in text:
+        text = format(Decimal(text), "f")
+    if "." not in text:
+        return text + "."
+    if text.endswith(".0"):
+        return text[:-1]
+    return text
+
+
+def spell_integer(letter: str, value: float) -> str:
+    """The text of an address that takes an integer (G, M, N, P...): an error for any other value."""
+    if not value.is_integer():
+        raise ProgramError(f"address {letter} takes an integer, the expression gives {value:g}")
+    return str(int(value))
+
+
+def _is_number(text: str) -> bool:
+    try:
+        float(text)
+    except ValueError:
+        return False
+    return True
+
+
+class Interpreter:
+    """Runs one program store. ``run()`` yields the concrete blocks; ``annotate`` adds a comment block
+    before each call, loop iteration and jump taken (for a flattened program's reader)."""
+
+    def __init__(self, store: ProgramStore, host: Host, variables: Variables, limits: Limits,
+                 report: "Reporter", annotate: bool = False) -> None:
+        self.store = store
+        self.host = host
+        self.vars = variables
+        self.limits = limits
+        self.report = report
+        self.annotate = annotate
+        self.budget = limits.loop_iterations
+        self.frames: list[_Frame] = []
+        self.modal: tuple[ModalCall, dict[int, Value], int, Block] | None = None
+        self.ended = False
+
+    # -- running ---------------------------------------------------------------------------------
+    def run(self, start: int = 0) -> Iterator[Block]:
+        main = self.store.main
+        self.frames = [_Frame(main, start, main.main_end, None, False, None, 1, 1, {}, False, None)]
+        try:
+            yield from self._loop()
+        except Interrupt:
+            return
+
+    def _loop(self) -> Iterator[Block]:
+        frames = self.frames
+        while frames and not self.ended:
+            frame = frames[-1]
+            if frame.pc >= frame.end:
+                if len(frames) == 1:
+                    return
+                self._return(frame, frame.program.blocks[frame.end - 1] if frame.end else None, None, None)
+                continue
+            block = frame.program.blocks[frame.pc]
+            try:
+                yield from self._step(frame, block)
+            except EvalError as err:
+                self._fail(err, frame, block, self._column(block, err))
+            except PostprocError as err:
+                self._fail(err, frame, block, 1)
+
+    def _fail(self, err: PostprocError, frame: _Frame, block: Block, col: int) -> None:
+        if err.location is None:
+            err.location = self._where(frame, block, col)
+        self.report(err)
+        raise Interrupt()
+
+    def _where(self, frame: _Frame, block: Block, col: int = 1) -> Location:
+        origin = frame.origin
+        if origin is None:
+            return Location(frame.program.file, block.line, col)
+        return Location(origin.file, block.line, col, origin.note())
+
+    def _step(self, frame: _Frame, block: Block) -> Iterator[Block]:
+        sections = block.sections
+        control = sections.get(CONTROL)
+        assign = sections.get(ASSIGN)
+        if len(self.frames) > 1 and ("TapeMark" in sections or "ProgramStart" in sections) and control is None:
+            frame.pc += 1  # a subprogram's file framing and label are not statements
+            return
+        concrete = self._concrete(frame, block, control is not None or assign is not None)
+        if assign is not None:
+            self._assign(assign)  # type: ignore[arg-type]
+        if concrete is not None:
+            yield concrete
+            if self.host.is_program_end(concrete):
+                self.ended = True
+                return
+        if control is None:
+            frame.pc += 1
+            if concrete is not None and self.modal is not None and not frame.modal and self._moves(concrete):
+                yield from self._modal_call(frame, block)
+            return
+        yield from self._control(frame, block, control)
+
+    # -- words and assignments -------------------------------------------------------------------
+    def _concrete(self, frame: _Frame, block: Block, statement: bool) -> ExecutedBlock | None:
+        values = block.values
+        words = block.words
+        changed = False
+        out: list[tuple[str, str]] = []
+        if values:
+            for letter, text in words:
+                up = letter.upper()
+                value = values.get(up)
+                if isinstance(value, Expr) and not _is_number(text):
+                    changed = True
+                    number = evaluate(value, self.vars)
+                    if number is not None:
+                        try:
+                            out.append((letter, self.host.spell_evaluated(up, number)))
+                        except ProgramError as err:
+                            err.message = f"{err.message} ({letter}{text})"
+                            err.located(self._where(frame, block, self._word_column(block, letter, text)))
+                            raise
+                else:
+                    out.append((letter, text))
+        else:
+            out = list(words)
+        if statement and all(letter.upper() == self.host.SEQUENCE_LETTER for letter, _ in out):
+            return None
+        result = ExecutedBlock(block.line, None if changed else block.text, block.eol, out, frame.origin)
+        result.canonical = block.canonical and not changed
+        for key, section in block.sections.items():
+            if key not in NON_WORD_SECTIONS:
+                result.sections[key] = section
+        return result
+
+    def _assign(self, assign: Assign) -> None:
+        """Read every right-hand side, then set the variables in order (LinuxCNC's rule)."""
+        vars_ = self.vars
+        targets = [(var_key(var, vars_), evaluate(value, vars_)) for var, value in assign.items]
+        for key, value in targets:
+            vars_.write(key, value)
+
+    def _moves(self, block: Block) -> bool:
+        axes = self.host.AXIS_LETTERS
+        return any(letter.upper() in axes for letter, _ in block.words)
+
+    # -- control statements ----------------------------------------------------------------------
+    def _control(self, frame: _Frame, block: Block, control: object) -> Iterator[Block]:
+        pos = frame.pc
+        program = frame.program
+        vars_ = self.vars
+        if isinstance(control, Goto):
+            if control.cond is not None and not _true(evaluate(control.cond, vars_)):
+                frame.pc += 1
+                return
+            number = self._integer(control.target, "the jump target")
+            target = program.find_sequence(number, pos)
+            if target is None:
+                raise ProgramError(self._missing_sequence(program, number, source_text(block)))
+            self._spend(block, "jump")
+            yield from self._note(frame, block, "jump")
+            frame.pc = target
+        elif isinstance(control, IfThen):
+            if _true(evaluate(control.cond, vars_)):
+                self._assign(control.assign)
+            frame.pc += 1
+        elif isinstance(control, While):
+            if _true(evaluate(control.cond, vars_)):
+                frame.pc += 1
+                yield from self._note(frame, block, "iteration")
+            else:
+                frame.pc = program.pairs[pos] + 1
+        elif isinstance(control, EndWhile):
+            self._spend(block, "loop")
+            frame.pc = program.pairs[pos]  # back to the head: its test runs again
+        elif isinstance(control, Do):
+            frame.pc += 1
+            yield from self._note(frame, block, "iteration")
+        elif isinstance(control, DoWhile):
+            if _true(evaluate(control.cond, vars_)):
+                self._spend(block, "loop")
+                frame.pc = program.pairs[pos] + 1
+                yield from self._note(frame, program.blocks[program.pairs[pos]], "iteration")
+            else:
+                frame.pc += 1
+        elif isinstance(control, Repeat):
+            count = self._count(control.count, "the repeat count")
+            end = program.pairs[pos]
+            if count <= 0:
+                frame.pc = end + 1
+            else:
+                frame.repeats[pos] = count
+                frame.pc += 1
+                yield from self._note(frame, block, "iteration")
+        elif isinstance(control, EndRepeat):
+            head = program.pairs[pos]
+            left = frame.repeats.get(head, 1) - 1
+            frame.repeats[head] = left
+            if left > 0:
+                self._spend(block, "loop")
+                frame.pc = head + 1
+                yield from self._note(frame, program.blocks[head], "iteration")
+            else:
+                frame.pc = pos + 1
+        elif isinstance(control, Continue):
+            head = program.pairs[pos]
+            if isinstance(program.blocks[head].get(CONTROL), While):
+                self._spend(block, "loop")
+                frame.pc = head
+            else:
+                frame.pc = program.pairs[head]  # the end of a do or repeat loop: its test runs next
+        elif isinstance(control, Break):
+            frame.pc = program.pairs[program.pairs[pos]] + 1
+        elif isinstance(control, (If, ElseIf, Else)):
+            chain = program.chains[pos]
+            if isinstance(control, Else) or _true(evaluate(control.cond, vars_)):
+                frame.pc += 1
+            else:
+                frame.pc = chain[chain.index(pos) + 1]
+        elif isinstance(control, EndIf):
+            frame.pc += 1
+        elif isinstance(control, SubStart):
+            frame.pc = program.pairs[pos] + 1  # a definition met in the flow is skipped
+        elif isinstance(control, SubEnd):
+            value = None if control.value is None else evaluate_number(control.value, vars_, "a return value")
+            self._return(frame, block, value, None)
+        elif isinstance(control, Return):
+            value = None if control.value is None else evaluate_number(control.value, vars_, "a return value")
+            target = None if control.target is None else self._integer(control.target, "the return target")
+            self._return(frame, block, value, target)
+        elif isinstance(control, Call):
+            yield from self._call(frame, block, control)
+        elif isinstance(control, ModalCall):
+            args = self._args(control.args)
+            count = 1 if control.repeat is None else self._count(control.repeat, "the repeat count")
+            self.modal = (control, args, count, block)
+            frame.pc += 1
+        elif isinstance(control, ModalCallCancel):
+            self.modal = None
+            frame.pc += 1
+        else:
+            raise ProgramError(f"'{source_text(block)}' cannot be executed ({type(control).__name__})")
+
+    def _note(self, frame: _Frame, block: Block, what: str) -> Iterator[Block]:
+        if self.annotate:
+            yield self._comment(frame, block, what)
+
+    def _comment(self, frame: _Frame, block: Block, what: str) -> ExecutedBlock:
+        text = source_text(block).replace("(", "[").replace(")", "]")
+        note = ExecutedBlock(block.line, None, block.eol or "\n", [], frame.origin)
+        note.sections["Comments"] = Comments([f"LINE {block.line}: {text}, {what}"])
+        return note
+
+    # -- calls and returns -----------------------------------------------------------------------
+    def _call(self, frame: _Frame, block: Block, call: Call) -> Iterator[Block]:
+        name = self._name(call.name)
+        args = self._args(call.args)
+        count = 1 if call.repeat is None else self._count(call.repeat, "the repeat count")
+        frame.pc += 1
+        if count <= 0:
+            return
+        yield from self._enter(frame, block, name, args, count, call.kind == "macro", modal=False)
+
+    def _modal_call(self, frame: _Frame, block: Block) -> Iterator[Block]:
+        assert self.modal is not None
+        call, args, count, at = self.modal
+        yield from self._enter(frame, block, self._name(call.name), dict(args), count, True, modal=True)
+
+    def _enter(self, frame: _Frame, block: Block, name: str, args: dict[int, Value], count: int,
+               new_level: bool, modal: bool, index: int = 1) -> Iterator[Block]:
+        label = self.host.program_label(name)
+        found = self.store.find(name)
+        if found is None:
+            raise ProgramError(f"subprogram {label} not found (called by '{source_text(block)}')")
+        if len(self.frames) > self.limits.call_depth:
+            raise ProgramError(f"'{source_text(block)}' exceeds the set-up's bound of {self.limits.call_depth} "
+                               f"nested calls (<Limits callDepth=\"{self.limits.call_depth}\"/>)")
+        self._spend(block, "call")
+        program, start, end = found
+        caller_file = frame.origin.file if frame.origin is not None else frame.program.file
+        site = CallSite(label, caller_file, block.line, index, count)
+        stack = (site,) + (frame.origin.stack if frame.origin is not None else ())
+        origin = Origin(program.file, stack)
+        callee = _Frame(program, start, end, origin, new_level, block, index, count, args,
+                        modal or frame.modal, site)
+        self.vars.enter(args, new_level)
+        self.frames.append(callee)
+        yield from self._note(frame, block, f"call {index} of {count}" if count > 1 else "call")
+
+    def _return(self, frame: _Frame, block: Block | None, value: Value, target: int | None) -> None:
+        frames = self.frames
+        if len(frames) == 1:  # a return in the main program: back to its start (Fanuc M99)
+            assert block is not None
+            self._spend(block, "return")
+            if target is None:
+                frame.pc = 0
+                return
+            pos = frame.program.find_sequence(target, frame.pc)
+            if pos is None:
+                raise ProgramError(self._missing_sequence(frame.program, target, source_text(block)))
+            frame.pc = pos
+            return
+        frames.pop()
+        self.vars.leave(frame.new_level, value)
+        caller = frames[-1]
+        if frame.index < frame.count and target is None:
+            call_block = frame.call_block
+            again = _Frame(frame.program, frame.start, frame.end, None, frame.new_level, call_block,
+                           frame.index + 1, frame.count, frame.args, frame.modal, frame.site)
+            assert call_block is not None and frame.site is not None  # set on every called frame
+            self._spend(call_block, "call")
+            site = CallSite(frame.site.label, frame.site.file, frame.site.line, again.index, frame.count)
+            assert frame.origin is not None
+            again.origin = Origin(frame.origin.file, (site,) + frame.origin.stack[1:])
+            again.site = site
+            self.vars.enter(frame.args, frame.new_level)
+            frames.append(again)
+            return
+        if target is not None:
+            assert block is not None
+            pos = caller.program.find_sequence(target, caller.pc - 1)
+            if pos is None:
+                raise ProgramError(self._missing_sequence(caller.program, target, source_text(block)))
+            caller.pc = pos
+
+    # -- values ----------------------------------------------------------------------------------
+    def _args(self, args: dict[int, Expr]) -> dict[int, Value]:
+        limit = self.host.MACRO_LOCALS
+        values: dict[int, Value] = {}
+        for n, expr in args.items():
+            if not 1 <= n <= limit:
+                raise ProgramError(f"argument #{n} is outside the locals #1-#{limit}")
+            values[n] = evaluate(expr, self.vars)
+        return values
+
+    def _name(self, name: str | Expr) -> str:
+        if isinstance(name, str):
+            return name
+        return str(self._integer(name, "the subprogram number"))
+
+    def _integer(self, expr: Expr, what: str) -> int:
+        value = evaluate_number(expr, self.vars, what)
+        if not value.is_integer():
+            raise EvalError(f"{what} must be an integer, {value:g} is not")
+        return int(value)
+
+    def _count(self, expr: Expr, what: str) -> int:
+        value = self._integer(expr, what)
+        if value < 0:
+            raise EvalError(f"{what} cannot be negative ({value})")
+        return value
+
+    def _spend(self, block: Block, what: str) -> None:
+        self.budget -= 1
+        if self.budget < 0:
+            n = self.limits.loop_iterations
+            raise ProgramError(f"{what} '{source_text(block)}' exceeds the set-up's bound of {n} loop iterations, "
+                               f"jumps and calls in total (<Limits loopIterations=\"{n}\"/>)")
+
+    def _missing_sequence(self, program: Program, number: int, text: str) -> str:
+        message = f"'{text}': no block numbered {number} in {program.file}"
+        dropped = self.store.dropped
+        if program is self.store.main and dropped:
+            n = self.store.kept_limit
+            message += (f" after its first {dropped} blocks, which are not kept for jumps back (the set-up keeps "
+                        f"the last {n}: <Limits keptPrefix=\"{n}\"/>)")
+        return message
+
+    # -- columns (computed only for errors) ------------------------------------------------------
+    def _column(self, block: Block, err: EvalError) -> int:
+        """The column of the first expression word of ``block`` (where an evaluation error most likely
+        is), else 1."""
+        for letter, text in block.words:
+            if isinstance(block.values.get(letter.upper()), Expr) and not _is_number(text):
+                return self._word_column(block, letter, text)
+        return 1
+
+    @staticmethod
+    def _word_column(block: Block, letter: str, text: str) -> int:
+        source = block.text or ""
+        i = source.find(letter + text)
+        return i + 1 if i >= 0 else 1
+
+
+class Reporter(Protocol):
+    def __call__(self, err: PostprocError) -> None: ...
+
+
+def _true(value: Value) -> bool:
+    """A condition holds when its value is a non-zero number (vacant is false)."""
+    return value is not None and value != 0.0
+
+
+

@@ -1,0 +1,172 @@
+"""The streaming step: a straight program passes untouched; a program that computes is stored and run.
+
+``ProgramSyntax`` goes first in a dialect's reading pipeline, right after the reader. With
+``ctx.program_mode == "keep"`` it hands the reader's stream on as it is (the constructs travel
+symbolically to a target that has them). With ``"execute"`` it streams the blocks until the first
+parametric one (an ``Assign`` or ``Control`` section, or an expression value), keeping the text of the
+last ``Limits.kept_prefix`` blocks for backward jumps; from there it reads the rest of the program into
+a ``ProgramStore`` and yields the blocks the interpreter executes, with a comment block before each call,
+loop iteration and jump taken.
+
+A dialect subclasses ``ProgramSyntax`` with its data (class attributes below) and, if it needs to, its
+``spell_evaluated``; the base is usable as is for a neutral test of the mechanics.
+"""
+
+from __future__ import annotations
+
+from collections import deque
+from pathlib import Path
+from typing import ClassVar, Iterable, Iterator
+
+from ..control import ASSIGN, CONTROL
+from ..errors import Diagnostics, ErrorLevel, PostprocError
+from ..expr import Expr
+from ..ir import AXES, Block
+from ..syntax import Context, Syntax
+from .machine import Interpreter, spell_integer, spell_number
+from .store import Program, ProgramStore
+from .variables import FanucVariables, NgcVariables, Variables
+
+ENCODING = {"encoding": "utf-8", "errors": "surrogateescape", "newline": ""}
+
+
+class ProgramSyntax(Syntax):
+    """The interpreter step. Class attributes are the reading dialect's data."""
+
+    XNAME = "ProgramSyntax"
+    __slots__ = ()
+
+    SEQUENCE_LETTER: ClassVar[str] = "N"
+    """Address of block numbers."""
+    AXIS_LETTERS: ClassVar[frozenset[str]] = frozenset(AXES)
+    """Addresses that move an axis (a modal call follows a block with one)."""
+    INTEGER_ADDRESSES: ClassVar[frozenset[str]] = frozenset()
+    """Addresses whose evaluated value must be an integer (written without a decimal point)."""
+    END_CODES: ClassVar[frozenset[tuple[str, int]]] = frozenset()
+    """Words that end the program (nothing after them runs), e.g. ``("M", 30)``."""
+    MACRO_LOCALS: ClassVar[int] = 33
+    """Highest local variable a call argument may set."""
+    VARIABLES: ClassVar[type[FanucVariables] | type[NgcVariables]] = FanucVariables
+    """The variable model (and vacancy rules) of the dialect family."""
+    LIBRARY_FILES: ClassVar[tuple[str, ...]] = ("{name}", "{name}.nc")
+    """File names tried in each library folder for a subprogram (``{name}``: its name, brackets
+    removed; ``{number}``: the name as an int, for ``{number:04d}``-style patterns)."""
+    PROGRAM_LABEL: ClassVar[str] = "{name}"
+    """How messages name a subprogram (``O{number:04d}``, ``o{name}``)."""
+
+    def build(self, block: Block, ctx: Context) -> None:
+        """Unused: the step streams (``process``)."""
+
+    # -- the host protocol (postproc.interp.machine.Host) -----------------------------------------
+    def spell_evaluated(self, letter: str, value: float) -> str:
+        if letter in self.INTEGER_ADDRESSES:
+            return spell_integer(letter, value)
+        return spell_number(value)
+
+    def program_label(self, name: str) -> str:
+        return _format(self.PROGRAM_LABEL, name)
+
+    def is_program_end(self, block: Block) -> bool:
+        ends = self.END_CODES
+        for letter, text in block.words:
+            if text.isdigit() and (letter.upper(), int(text)) in ends:
+                return True
+        return False
+
+    # -- reading ---------------------------------------------------------------------------------
+    def read_lines(self, lines: Iterable[str], file: str, ctx: Context, diagnostics: Diagnostics) -> list[Block]:
+        """Blocks of ``lines`` through the dialect's own reader (reporting into ``diagnostics``)."""
+        from ..plugins import default_registry
+        reader = default_registry().dialect(ctx.dialect).READER
+        if reader is None:
+            return []
+        sub = Context(file, ctx.setup, diagnostics, ctx.dialect)
+        return list(reader(sub).read(lines))
+
+    def library_file(self, name: str, ctx: Context) -> Path | None:
+        for folder in ctx.setup.library_paths():
+            for pattern in self.LIBRARY_FILES:
+                path = folder / _format(pattern, name)
+                if path.is_file():
+                    return path
+        return None
+
+    def load(self, name: str, ctx: Context) -> Program | None:
+        """The library program of subprogram ``name``, read through the dialect's reader, or None."""
+        path = self.library_file(name, ctx)
+        if path is None:
+            return None
+        try:
+            with open(path, "r", **ENCODING) as src:  # type: ignore[call-overload]
+                blocks = self.read_lines(src, str(path), ctx, ctx.diagnostics)
+        except OSError as exc:
+            from ..errors import ConfigError
+            raise ConfigError(f"cannot read {path}: {exc.strerror}") from None
+        return Program(str(path), blocks, self.is_program_end)
+
+    # -- the stream ------------------------------------------------------------------------------
+    def process(self, blocks: Iterable[Block], ctx: Context) -> Iterator[Block]:
+        if ctx.program_mode != "execute":
+            return iter(blocks)
+        return self._execute(iter(blocks), ctx)
+
+    def _execute(self, blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
+        limit = ctx.setup.limits.kept_prefix
+        kept: deque[tuple[str, str] | None] = deque(maxlen=limit)
+        keep = kept.append
+        seen = 0
+        for block in blocks:
+            sections = block.sections
+            if CONTROL in sections or ASSIGN in sections or (block.values and _computes(block)):
+                break
+            text = block.text
+            keep(None if text is None else (text, block.eol))
+            seen += 1
+            yield block
+        else:
+            return
+        yield from self._run(block, blocks, ctx, kept, seen)
+
+    def _run(self, first: Block, rest: Iterator[Block], ctx: Context, kept: deque[tuple[str, str] | None],
+             seen: int) -> Iterator[Block]:
+        dropped = seen - len(kept)
+        prefix = self._reread(kept, ctx, first_line=first.line - len(kept))
+        body = prefix + [first]
+        body.extend(rest)
+        try:
+            main = Program(ctx.file, body, self.is_program_end)
+        except PostprocError as err:
+            ctx.diagnostics.error(err)
+            return
+        store = ProgramStore(main, lambda name: self.load(name, ctx), dropped=dropped,
+                             kept_limit=ctx.setup.limits.kept_prefix)
+        increment = ctx.setup.input.increment
+        state = ctx.state
+        variables: Variables = self.VARIABLES(lambda: increment(state.units))
+        interpreter = Interpreter(store, self, variables, ctx.setup.limits, ctx.diagnostics.error, annotate=True)
+        yield from interpreter.run(start=len(prefix))
+
+    def _reread(self, kept: deque[tuple[str, str] | None], ctx: Context, first_line: int) -> list[Block]:
+        """The kept prefix as fresh blocks (the streamed ones were changed by the later steps). Its
+        errors were reported when it streamed, so they are not reported again."""
+        if not kept:
+            return []
+        lines = [("" if item is None else item[0] + item[1]) for item in kept]
+        blocks = self.read_lines(lines, ctx.file, ctx, Diagnostics(ErrorLevel.IGNORE))
+        offset = first_line - 1
+        for block in blocks:
+            block.line += offset
+        return blocks
+
+
+def _computes(block: Block) -> bool:
+    for value in block.values.values():
+        if isinstance(value, Expr):
+            return True
+    return False
+
+
+def _format(pattern: str, name: str) -> str:
+    bare = name[1:-1] if name.startswith("<") and name.endswith(">") else name
+    number = int(bare) if bare.isdigit() else 0
+    return pattern.format(name=bare, number=number, raw=name)

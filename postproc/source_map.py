@@ -1,0 +1,76 @@
+"""The source map of executed blocks: which file and line a block came from, and through which calls.
+
+A straight program's blocks need nothing: their file is the run's and their line is ``block.line``. A
+block the interpreter executes inside a subprogram is an ``ExecutedBlock`` carrying an ``Origin`` (its
+file and the call stack), so an error in the third call of a subprogram says so:
+``sub.nc:4:1: error: division by zero in #1/#2 (in O2000, called from main.nc line 12, call 3 of 3)``.
+Every place that locates a block's error goes through ``locate`` (``Context.at`` does).
+"""
+
+from __future__ import annotations
+
+from .errors import Location
+from .ir import Block
+
+
+class CallSite:
+    """One level of the call stack: the subprogram entered, where it was called from, which repetition."""
+
+    __slots__ = ("label", "file", "line", "index", "count")
+
+    def __init__(self, label: str, file: str, line: int, index: int = 1, count: int = 1) -> None:
+        self.label = label
+        """The subprogram as the dialect spells it (``O2000``, ``o<probe>``)."""
+        self.file = file
+        self.line = line
+        self.index = index
+        """Which repetition of the call this is, 1-based (0: a modal call, counted by ``count``)."""
+        self.count = count
+
+    def describe(self) -> str:
+        text = f"in {self.label}, called from {self.file} line {self.line}"
+        if self.count > 1:
+            text += f", call {self.index} of {self.count}"
+        return text
+
+    def __repr__(self) -> str:
+        return f"CallSite({self.describe()!r})"
+
+
+class Origin:
+    """Where an executed block comes from: its file and the calls it runs in (innermost first)."""
+
+    __slots__ = ("file", "stack", "_note")
+
+    def __init__(self, file: str, stack: tuple[CallSite, ...] = ()) -> None:
+        self.file = file
+        self.stack = stack
+        self._note: str | None = None
+
+    def note(self) -> str:
+        """``in O2000, called from main.nc line 12, call 3 of 3; in ...`` (empty outside calls)."""
+        if self._note is None:
+            self._note = "; ".join(site.describe() for site in self.stack)
+        return self._note
+
+
+class ExecutedBlock(Block):
+    """A block produced by the interpreter: a ``Block`` that knows its ``Origin``.
+
+    A subclass, so straight programs pay nothing for the source map."""
+
+    __slots__ = ("origin",)
+
+    def __init__(self, line: int, text: str | None, eol: str, words: list[tuple[str, str]],
+                 origin: Origin | None) -> None:
+        super().__init__(line, text, eol, words)
+        self.origin = origin
+
+
+def locate(file: str, block: Block, col: int = 1) -> Location:
+    """The location of column ``col`` of ``block``: its own file and call stack if it was executed
+    inside a subprogram, else ``file`` (the run's) and the block's line."""
+    origin = block.origin if isinstance(block, ExecutedBlock) else None
+    if origin is None:
+        return Location(file, block.line, col)
+    return Location(origin.file, block.line, col, origin.note())

@@ -1,0 +1,141 @@
+"""Evaluation: hand-computed values for every operator and function, both vacancy regimes, errors."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+
+from postproc.evaluation import MappingEnv, TOLERANCE_EQUAL, describe, evaluate_number, var_key
+from postproc.expr import (
+    BINARY_OPS, FUNCTIONS, Binary, EvalError, Expr, Func, Num, Unary, Vacancy, Var, evaluate,
+)
+
+FANUC = MappingEnv({1: 3.0, 2: -2.0, 3: 0.0, 4: 25.0}, Vacancy.FANUC)
+LCNC = MappingEnv({1: 3.0, 2: -2.0, "depth": 4.0}, Vacancy.LINUXCNC)
+
+
+def n(v: float) -> Num:
+    return Num(v)
+
+
+def v(i: int) -> Var:
+    return Var(Num(float(i)))
+
+
+def b(op: str, x: float | Expr, y: float | Expr) -> Binary:
+    return Binary(op, x if isinstance(x, Expr) else Num(x), y if isinstance(y, Expr) else Num(y))
+
+
+def f(name: str, *args: float | Expr) -> Func:
+    return Func(name, [a if isinstance(a, Expr) else Num(a) for a in args])
+
+
+# (tree, expected value): hand-computed.
+VALUES = [
+    (b("add", 1.5, 2.25), 3.75), (b("sub", 1, 3), -2.0), (b("mul", -2, 3.5), -7.0), (b("div", 7, 2), 3.5),
+    (b("pow", 2, 10), 1024.0), (b("pow", -2, 3), -8.0), (b("pow", 4, 0.5), 2.0),
+    (b("mod_pos", 7, 3), 1.0), (b("mod_pos", -7, 3), 2.0), (b("mod_pos", 7, -3), 1.0),
+    (b("mod_pos", -7, -3), 2.0), (b("mod_pos", 7.5, 2), 1.5),
+    (b("rem_int", 10, 3), 1.0), (b("rem_int", -10, 3), -1.0), (b("rem_int", 10.4, 2.6), 1.0),
+    (b("eq", 1, 1), 1.0), (b("eq", 1, 1.00001), 0.0), (b("ne", 1, 1.00001), 1.0),
+    (b("eq_tol", 1, 1.00005), 1.0), (b("eq_tol", 1, 1.0002), 0.0),
+    (b("ne_tol", 1, 1.00005), 0.0), (b("ne_tol", 1, 1.0002), 1.0),
+    (b("gt", 2, 1), 1.0), (b("gt", 1, 1), 0.0), (b("ge", 1, 1), 1.0), (b("ge", 0.99999, 1), 0.0),
+    (b("lt", 1, 2), 1.0), (b("lt", 2, 2), 0.0), (b("le", 2, 2), 1.0), (b("le", 1, 0.99999), 0.0),
+    (b("and", 2, 3), 1.0), (b("and", 2, 0), 0.0), (b("or", 0.5, 0), 1.0), (b("or", 0, 0), 0.0),
+    (b("xor", 2, 0), 1.0), (b("xor", 2, 3), 0.0),
+    (b("bitand", 12, 10), 8.0), (b("bitor", 12, 10), 14.0), (b("bitxor", 12, 10), 6.0),
+    (Unary("neg", n(2)), -2.0), (Unary("pos", n(-2)), -2.0), (Unary("not", n(0)), 1.0), (Unary("not", n(3)), 0.0),
+    (f("sin", 30), 0.5), (f("cos", 60), 0.5), (f("tan", 45), 1.0),
+    (f("asin", -0.5), -30.0), (f("asin_360", -0.5), 330.0), (f("asin_360", 0.5), 30.0),
+    (f("acos", -0.5), 120.0), (f("atan", -1), -45.0), (f("atan_360", -1), 315.0),
+    (f("atan2", -1, -1), -135.0), (f("atan2_360", -1, -1), 225.0), (f("atan2", 1, 0), 90.0),
+    (f("atan2_360", 0, 1), 0.0), (f("atan2_360", 0, -1), 180.0),
+    (f("sqrt", 16), 4.0), (f("abs", -3.5), 3.5), (f("exp", 0), 1.0), (f("ln", math.e), 1.0),
+    (f("round", 2.5), 3.0), (f("round", -2.5), -3.0), (f("round", 2.49), 2.0), (f("round", -1.2), -1.0),
+    (f("trunc", 1.7), 1.0), (f("trunc", -1.7), -1.0), (f("away", 1.2), 2.0), (f("away", -1.2), -2.0),
+    (f("away", 3.0), 3.0), (f("floor", -1.5), -2.0), (f("floor", 1.5), 1.0), (f("ceil", -1.5), -1.0),
+    (f("ceil", 1.2), 2.0), (f("bcd", 25), 37.0), (f("bcd", 1234), 4660.0), (f("bin", 37), 25.0),
+    (f("bin", 4660), 1234.0), (f("round_address", 1.00333), 1.003), (f("round_address", -1.0005), -1.001),
+]
+
+
+@pytest.mark.parametrize("tree, expected", VALUES, ids=lambda x: describe(x) if isinstance(x, Expr) else str(x))
+def test_hand_computed_value(tree: Expr, expected: float) -> None:
+    assert evaluate(tree, FANUC) == pytest.approx(expected, abs=1e-12)
+
+
+def test_every_operator_and_function_has_a_hand_computed_value() -> None:
+    ops = {t.op for t, _ in VALUES if isinstance(t, Binary)}
+    funcs = {t.name for t, _ in VALUES if isinstance(t, Func)}
+    assert ops == set(BINARY_OPS)
+    assert funcs | {"exists"} == set(FUNCTIONS)
+
+
+def test_tolerance_is_linuxcnc_2_9_0s() -> None:
+    assert TOLERANCE_EQUAL == 1e-4
+
+
+# Fanuc vacancy: #0 and unset variables are vacant.
+@pytest.mark.parametrize("tree, expected", [
+    (v(5), None), (v(0), None), (b("mul", v(5), 5), 0.0), (b("add", v(5), v(5)), 0.0),
+    (Unary("neg", v(5)), 0.0), (f("sqrt", v(5)), 0.0), (f("cos", v(5)), 1.0),
+    (b("eq", v(5), v(0)), 1.0), (b("eq", v(5), 0), 0.0), (b("ne", v(5), 0), 1.0), (b("ne", v(5), v(0)), 0.0),
+    (b("eq", v(3), 0), 1.0), (b("eq", v(3), v(0)), 0.0),
+    (b("gt", v(5), -1), 1.0), (b("ge", v(5), 0), 1.0), (b("lt", v(5), 1), 1.0), (b("le", v(5), 0), 1.0),
+    (Var(b("sub", v(1), 2)), 3.0), (Var(n(1.4)), 3.0), (Var(n(1.5)), -2.0),
+])
+def test_fanuc_vacancy(tree: Expr, expected: float | None) -> None:
+    assert evaluate(tree, FANUC) == expected
+
+
+@pytest.mark.parametrize("tree, expected", [
+    (v(7), 0.0), (b("eq_tol", v(7), 0), 1.0), (Var(name="depth"), 4.0), (f("exists", Var(name="depth")), 1.0),
+    (f("exists", Var(name="nope")), 0.0), (f("exists", v(9)), 1.0), (Var(n(1.00005)), 3.0),
+])
+def test_linuxcnc_unset_numbered_reads_zero(tree: Expr, expected: float) -> None:
+    assert evaluate(tree, LCNC) == expected
+
+
+@pytest.mark.parametrize("env, tree, message", [
+    (FANUC, b("div", v(1), v(3)), "division by zero in #1/#3"),
+    (FANUC, b("div", v(1), v(5)), "division by zero in #1/#5"),
+    (LCNC, b("mod_pos", 7, 0), "division by zero in 7 MOD 0"),
+    (FANUC, b("rem_int", 7, 0.4), "division by zero in 7 MOD 0.4"),
+    (FANUC, b("pow", -8, b("div", 1, 3)), "negative number raised to a non-integer power in -8**[1/3]"),
+    (FANUC, f("sqrt", v(2)), "square root of a negative number in SQRT[#2] (-2)"),
+    (FANUC, f("asin", 1.5), "the argument of ASIN[1.5] is outside -1..1 (1.5)"),
+    (FANUC, f("acos", -2), "the argument of ACOS[-2] is outside -1..1 (-2)"),
+    (FANUC, f("ln", 0), "logarithm of a number that is not positive in LN[0] (0)"),
+    (FANUC, f("exp", 1000), "the result of EXP[1000] is too large"),
+    (FANUC, b("bitand", 1.5, 1), "1.5 AND 1 needs non-negative integers, not 1.5"),
+    (FANUC, f("bin", 10), "BIN[10]: 10 is not a BCD number"),
+    (FANUC, Var(v(5)), "the variable number in #[#5] is vacant"),
+    (LCNC, Var(name="nope"), "named parameter #<nope> is not defined"),
+    (LCNC, Var(n(1.5)), "the variable number in #1.5 is not an integer (1.5)"),
+    (FANUC, b("mul", 1e200, 1e200), "the result of 1e+200*1e+200 is not a finite number"),
+])
+def test_errors_name_the_construct(env: MappingEnv, tree: Expr, message: str) -> None:
+    with pytest.raises(EvalError) as info:
+        evaluate(tree, env)
+    assert info.value.message == message
+    assert info.value.location is None
+
+
+def test_evaluate_number_refuses_vacant() -> None:
+    with pytest.raises(EvalError) as info:
+        evaluate_number(v(5), FANUC, "a feed")
+    assert info.value.message == "#5 is vacant where a feed is required"
+    assert evaluate_number(b("add", v(5), 1), FANUC) == 1.0
+
+
+def test_var_key() -> None:
+    assert var_key(v(12), FANUC) == 12
+    assert var_key(Var(b("add", v(1), 1)), FANUC) == 4
+    assert var_key(Var(name="_g"), LCNC) == "_g"
+
+
+def test_round_address_follows_the_increment() -> None:
+    inch = MappingEnv({}, Vacancy.FANUC, increment=0.0001)
+    assert evaluate(f("round_address", 1.00333), inch) == pytest.approx(1.0033)
