@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from . import cycles
+from .control import register_control
 from .cycles.lowering import expand_canned_cycles
 from .hookspecs import hookimpl
 from .expr import register_expressions
@@ -18,6 +19,7 @@ from .xmlio import XFactory
 def postproc_register_xml(factory: XFactory) -> None:
     register_sections(factory)
     register_expressions(factory)
+    register_control(factory)
     for cls in (Pipeline, MachineSetup, ModalStateSyntax):
         cls.reg(factory)
     cycles.register(factory)

@@ -11,6 +11,7 @@ from typing import Iterable
 import pluggy
 
 from . import hookspecs
+from .control import register_control
 from .dialect import Dialect
 from .errors import UsageError
 from .expr import register_expressions
@@ -64,4 +65,5 @@ def default_registry() -> Registry:
     """The registry of every installed plugin, built on first use."""
     register_sections(DEFAULT)
     register_expressions(DEFAULT)
+    register_control(DEFAULT)
     return Registry(make_plugin_manager(), DEFAULT)

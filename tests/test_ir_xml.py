@@ -27,6 +27,7 @@ from postproc.plugins import default_registry
 from postproc.program_xml import load_program
 from postproc.setup import InputSettings, MachineSettings, MachineSetup, OutputSettings, CycleSettings, Templates
 from postproc.xmlio import XFactory, parse_xml_bytes, to_bytes
+from tests.support.control_samples import CONTROL_SAMPLES
 
 ROOT = Path(__file__).resolve().parents[1]
 DECLARATION = "<?xml version='1.0' encoding='UTF-8'?>\n"
@@ -147,6 +148,7 @@ SAMPLES: dict[str, list[tuple[Builder, str]]] = {
         "PeckDrillingSyntax", "TappingSyntax", "BoringSyntax", "FineBoringSyntax", "BackBoringSyntax",
         "ManualBoringSyntax",
     )},
+    **CONTROL_SAMPLES,
 }
 
 
