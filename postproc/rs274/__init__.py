@@ -1,0 +1,1 @@
+"""The RS274 family base: what Fanuc, LinuxCNC and their relatives share."""
