@@ -36,7 +36,7 @@ from hypothesis import strategies as st
 
 from postproc.setup import CycleSettings, MachineSetup
 from postproc.toolpath import toolpath_events
-from tests.support.rs274 import RS274Error, available, canonical_moves, run_rs274
+from tests.support.rs274 import available, canonical_moves, run_rs274
 
 pytestmark = pytest.mark.skipif(not available(), reason="the LinuxCNC interpreter rs274 is not installed "
                                 "(apt-get install linuxcnc-uspace, or .ci/install-oracle.sh)")
@@ -49,7 +49,6 @@ EXAMPLES = int(os.environ.get("POSTPROC_DIFFERENTIAL_EXAMPLES", "60"))
 """Generated programs per run; raise it locally to search harder (the suite keeps it modest)."""
 FANUC_SETUP = MachineSetup(cycles=CycleSettings(peck_retract=LINUXCNC_PECK_MM, peck_clearance=LINUXCNC_PECK_MM))
 
-CRASH_RETRIES = 2
 RESULTS: dict[str, int] = {"programs": 0, "moves": 0}
 
 
@@ -241,16 +240,7 @@ def ours_linuxcnc(program: Program) -> list[dict[str, Any]]:
 
 
 def linuxcnc(program: Program) -> list[dict[str, Any]]:
-    text = "\n".join(program.ngc) + "\n"
-    for attempt in range(CRASH_RETRIES + 1):
-        try:
-            calls = run_rs274(text)
-            break
-        except RS274Error as err:
-            # A signal (seen: SIGBUS when several test runs share the machine) is the oracle crashing,
-            # not an answer about the program: run it again. An interpreter error is an answer.
-            if err.returncode is None or err.returncode >= 0 or attempt == CRASH_RETRIES:
-                raise
+    calls = run_rs274("\n".join(program.ngc) + "\n")  # each run has its own HOME: no crash to retry
     return canonical_moves(calls, start=(0.0, 0.0, 0.0))
 
 

@@ -103,8 +103,10 @@ def run_rs274(
 ) -> list[str]:
     """Run ``rs274 -g`` on a program and return its canonical call lines (``N..... NAME(args)``).
 
-    The program is written to a fresh temporary directory which is also the working directory, so
-    nothing leaks between runs (rs274 may write a ``sim.var`` parameter file there). stdin is closed.
+    The program is written to a fresh temporary directory which is also the working directory and
+    ``HOME``, so nothing leaks between runs: rs274 may write a ``sim.var`` parameter file there, and
+    it keeps its tool table in ``$HOME/.tool.mmap``, which two runs sharing a HOME corrupt (bus
+    errors, wrong Z, "tool not found"). The directory goes when the run ends. stdin is closed.
     The program must end with M2/M30 or ``%``, as LinuxCNC requires ("File ended with no percent sign
     or program end" otherwise). ``tool_table`` is the text of a LinuxCNC tool table (``T1 P1 Z.. D..``
     lines; lengths in inches as rs274 reads them); without it rs274 uses a built-in table.
@@ -127,8 +129,8 @@ def run_rs274(
         out_path, err_path = work / "stdout.txt", work / "stderr.txt"
         with open(out_path, "wb") as out, open(err_path, "wb") as err:
             try:
-                proc = subprocess.run(cmd, cwd=work, stdin=subprocess.DEVNULL, stdout=out, stderr=err,
-                                      timeout=timeout, check=False)
+                proc = subprocess.run(cmd, cwd=work, env=_private_env(work), stdin=subprocess.DEVNULL,
+                                      stdout=out, stderr=err, timeout=timeout, check=False)
                 returncode: int | None = proc.returncode
             except subprocess.TimeoutExpired:
                 returncode = None
@@ -148,6 +150,13 @@ def run_rs274(
             f"\nlast canonical calls:\n{tail}",
             returncode=returncode, stderr=stderr, calls=calls)
     return calls
+
+
+def _private_env(home: Path) -> dict[str, str]:
+    """The environment of one run: this run's own HOME (rs274 maps its tool table at ``$HOME/.tool.mmap``)."""
+    env = dict(os.environ)
+    env["HOME"] = str(home)
+    return env
 
 
 def _clean_stderr(text: str) -> str:
