@@ -8,9 +8,10 @@ Hypothesis writes programs in the ground where Fanuc and LinuxCNC move alike (DI
 * G4 dwells (Fanuc ``G04 X<s>`` or ``G04 P<ms>``, LinuxCNC ``G4 P<s>``);
 * hole cycles G81, G82, G83, G73, G85, G89 and G86 (Fanuc without P; LinuxCNC needs ``P0``), each run
   started by a rapid to its initial level **above R** (LinuxCNC rises to R first, Fanuc does not);
-* G98/G99 in absolute runs, never G98 after a G99 hole of the same run (LinuxCNC's G98 goes back to
-  the Z at the block's start, Fanuc's to the level of the run's first block); G89 only with G99
-  (LinuxCNC feeds out to the clear level, Fanuc feeds to R and rapids on);
+* G98/G99 in absolute runs; G98 after a G99 hole only with a new R below the tool (both position at
+  the current level then; with R at or above the tool LinuxCNC rapids diagonally to the clear level,
+  Fanuc in the plane at the current level); G89 only with G99 (LinuxCNC feeds out to the clear
+  level, Fanuc feeds to R and rapids on);
 * incremental rows: ``G91 G98`` with Fanuc ``K`` = LinuxCNC ``L`` (R is measured from the level the
   tool stands at, which is the initial level in both while every hole returns there), and modal
   repetition of the row;
@@ -194,7 +195,8 @@ def _absolute_run(draw: Draw, p: Program, code: int, r: float, bottom: float, fe
                   extra_ngc: str, extra_fanuc: str) -> None:
     holes = draw(st.integers(1, 4))
     switch = 0 if code == 89 else draw(st.integers(0, holes))
-    """Holes before ``switch`` return with G98, the rest with G99 (never G98 after G99)."""
+    """Holes before ``switch`` return with G98, the rest with G99."""
+    initial = p.pos[2]
     for n in range(holes):
         x, y = draw(grid(-30, 30)), draw(grid(-30, 30))
         mode = 98 if n < switch else 99
@@ -206,6 +208,11 @@ def _absolute_run(draw: Draw, p: Program, code: int, r: float, bottom: float, fe
             switched = "G99 " if n == switch else ""
             p.both(f"{switched}X{num(x)} Y{num(y)}")
         p.pos = [x, y, p.pos[2] if mode == 98 else r]
+    if code != 89 and switch < holes and r > bottom and draw(st.booleans()):
+        lower = r - draw(grid(0.5, r - bottom))  # a G98 hole after G99 ones, its R below the tool (at R)
+        x = draw(grid(-30, 30))
+        p.both(f"G98 X{num(x)} R{num(lower)}")
+        p.pos = [x, p.pos[1], initial]
 
 
 STEPS = (straight, arc, dwell, cycle_run)
