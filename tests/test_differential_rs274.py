@@ -15,11 +15,13 @@ Hypothesis writes programs in the ground where Fanuc and LinuxCNC move alike (DI
 * incremental rows: ``G91 G98`` with Fanuc ``K`` = LinuxCNC ``L`` (R is measured from the level the
   tool stands at, which is the initial level in both while every hole returns there), and modal
   repetition of the row;
-* G73/G83 clearances: the Fanuc set-up takes LinuxCNC's fixed 0.010 in = 0.254 mm.
+* G73/G83 clearances: the Fanuc set-up takes LinuxCNC's fixed 0.010 in = 0.254 mm;
+* a switch to G20 and back to G21, each with F and a feed move in the same block: LinuxCNC reads
+  that F in the old units, Fanuc in the new ones (``G20 F254.`` is Fanuc's ``G20 F10.``).
 
 Each program is written once for LinuxCNC and once in Fanuc spelling, run through our fanuc dialect's
-toolpath and through ``rs274``, and compared move by move (end points, arc centres) within
-``TOLERANCE``; dwells of more than zero seconds must agree too. The LinuxCNC spelling also goes
+toolpath and through ``rs274``, and compared move by move (end points, arc centres, feed rates)
+within ``TOLERANCE``; dwells of more than zero seconds must agree too. The LinuxCNC spelling also goes
 through our linuxcnc reader, which must agree with ``rs274`` the same way. Skipped when ``rs274`` is
 absent.
 """
@@ -144,6 +146,20 @@ def dwell(draw: Draw, p: Program) -> None:
     p.each(f"G4 P{num(seconds)}", fanuc)
 
 
+def unit_switch(draw: Draw, p: Program) -> None:
+    """G20 with F and a feed move, a move in inches, then G21 with F and a feed move (0.05 in grid)."""
+    inch = [[draw(grid(-1.5, 1.5, 0.05)), draw(grid(-1.5, 1.5, 0.05)), draw(grid(0, 1.2, 0.05))] for _ in "ab"]
+    rate = draw(st.integers(2, 20))  # in/min
+    words = [" ".join(f"{a}{num(v)}" for a, v in zip("XYZ", t)) for t in inch]
+    p.each(f"G20 F{num(rate * 25.4)} G1 {words[0]}", f"G20 F{num(rate)} G1 {words[0]}")
+    p.both(f"G1 {words[1]}")
+    target = [draw(grid(-40, 40)), draw(grid(-40, 40)), draw(grid(0, 30))]
+    mm = draw(st.integers(2, 20))  # in/min again, written in mm for Fanuc
+    p.each(f"G21 F{num(mm)} G1 " + " ".join(f"{a}{num(v)}" for a, v in zip("XYZ", target)),
+           f"G21 F{num(mm * 25.4)} G1 " + " ".join(f"{a}{num(v)}" for a, v in zip("XYZ", target)))
+    p.pos = target
+
+
 CYCLES = (81, 82, 83, 73, 85, 89, 86)
 
 
@@ -215,7 +231,7 @@ def _absolute_run(draw: Draw, p: Program, code: int, r: float, bottom: float, fe
         p.pos = [x, p.pos[1], initial]
 
 
-STEPS = (straight, arc, dwell, cycle_run)
+STEPS = (straight, arc, dwell, cycle_run, unit_switch)
 
 
 @st.composite
@@ -248,7 +264,7 @@ def ours_linuxcnc(program: Program) -> list[dict[str, Any]]:
 
 def linuxcnc(program: Program) -> list[dict[str, Any]]:
     calls = run_rs274("\n".join(program.ngc) + "\n")  # each run has its own HOME: no crash to retry
-    return canonical_moves(calls, start=(0.0, 0.0, 0.0))
+    return canonical_moves(calls, start=(0.0, 0.0, 0.0), feeds=True)
 
 
 def comparable(events: list[dict[str, Any]]) -> list[dict[str, Any]]:
@@ -262,6 +278,7 @@ def first_difference(a: list[dict[str, Any]], b: list[dict[str, Any]]) -> str | 
             return f"item {n}: ours {x}, rs274 {y}"
         if "move" in x:
             keys = ["x", "y", "z"] + (["cx", "cy", "cz"] if x["move"] in ("cw", "ccw") else [])
+            keys += ["f"] if x["move"] != "rapid" else []
             dev = max(abs(float(x[k]) - float(y[k])) for k in keys)
         else:
             dev = abs(float(x["seconds"]) - float(y["seconds"]))

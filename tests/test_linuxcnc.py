@@ -24,6 +24,7 @@ from postproc.xmlio import to_bytes
 import postproc_linuxcnc
 from postproc_linuxcnc import Linuxcnc
 from postproc_linuxcnc.lexer import lex_block
+from tests.support import rs274
 
 ROOT = Path(__file__).resolve().parents[1]
 EXAMPLES = sorted((ROOT / "examples" / "linuxcnc").glob("*.ngc"))
@@ -119,6 +120,40 @@ def test_numbers_mean_what_they_say() -> None:
     """X10 is 10 mm in RS274/NGC; on a Fanuc control with default input it is 0.010 mm."""
     block = read("G21 G0 X10 Y.5 Z-2\n")[0]
     assert block.sections["Motion"] == Motion("rapid", {"X": 10.0, "Y": 0.5, "Z": -2.0})
+
+
+UNIT_FEEDS = ("G21 G90 G94\nG0 X0 Y0 Z0\nG1 X10 F100\nG20 F10 G1 X1\nG1 X2\nG21 F5 G1 X30\nG1 X40\n"
+              "G20 G1 X2 F10\nM2\n")
+"""F in blocks that change units (rs274 prints ``SET_FEED_RATE(10.0000)`` before
+``USE_LENGTH_UNITS(CANON_UNITS_INCHES)``: LinuxCNC sets the feed first, in the old units)."""
+
+
+def test_f_in_a_block_that_changes_units_is_in_the_old_units() -> None:
+    """G20 F10 after G21 is 10 mm/min, G21 F5 after G20 is 5 in/min = 127 mm/min; the rate then
+    holds across the next blocks (not 25.4 times too fast or too slow)."""
+    assert [e["f"] for e in events(UNIT_FEEDS) if "move" in e] == [100, 10, 10, 127, 127, 10]
+
+
+@pytest.mark.skipif(not rs274.available(), reason="the LinuxCNC interpreter rs274 is not installed")
+def test_f_in_a_block_that_changes_units_as_the_interpreter_reads_it() -> None:
+    ours = [(e["move"], e["x"], e["z"], e.get("f")) for e in events(UNIT_FEEDS) if "move" in e]
+    theirs = [(e["move"], e["x"], e["z"], e.get("f"))
+              for e in rs274.canonical_moves(rs274.run_rs274(UNIT_FEEDS), start=(0, 0, 0), feeds=True)
+              if "move" in e]
+    assert ours == theirs
+
+
+def test_f_in_a_block_that_changes_units_is_written_in_the_old_units() -> None:
+    """Fanuc (and grbl) read that F in the new units; LinuxCNC gets it in the old ones, both ways,
+    except an inverse-time F, which is no length."""
+    fanuc = "G21 G90 G94\nG0 X0. Y0. Z0.\nG20 F10. G1 X1.\nG21 F5. G1 X30.\nM2\n"
+    text, _ = write(fanuc, "linuxcnc", source="fanuc")
+    assert "G20 G1 X1. F254.\n" in text and "G21 G1 X30. F0.19685\n" in text
+    assert [e["f"] for e in events(text) if "move" in e] == [254, pytest.approx(5, abs=1e-4)]
+    text, _ = write(UNIT_FEEDS, "fanuc")
+    assert "G20 G01 X1. F0.393701\n" in text and "G21 G01 X30. F127.\n" in text
+    text, _ = write("G21 G90 G93\nG0 X0 Y0 Z0\nG20 G1 X1 F10\nM2\n", "linuxcnc", source="grbl")
+    assert "G20 G1 X1. F10.\n" in text
 
 
 def test_dwell_p_is_seconds() -> None:

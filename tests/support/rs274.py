@@ -190,9 +190,13 @@ def _mm(v: float, scale: float) -> float:
     return 0.0 if r == 0 else r  # no negative zero
 
 
-def canonical_moves(lines: Iterable[str] | str, *, start: tuple[float, float, float] | None = None
-                    ) -> list[dict[str, Any]]:
+def canonical_moves(lines: Iterable[str] | str, *, start: tuple[float, float, float] | None = None,
+                    feeds: bool = False) -> list[dict[str, Any]]:
     """Parse canonical call lines (rs274 output or an ``expected`` file) into toolpath events (see module doc).
+
+    With ``feeds``, feed moves and arcs carry ``"f"``: the last ``SET_FEED_RATE``, read in the units in
+    force when it was called (LinuxCNC keeps the physical rate across a unit change), in mm per
+    minute, or mm per revolution under G95 (inverse time, G93, is not modelled).
 
     ``start`` is the position in mm (canonical frame) before the first call; by default it is unknown, so the first straight move is never dropped as zero-length and an arc as the
     very first motion takes its normal-axis centre from its end point. (Standalone rs274 starts at 0, 0, 0.)
@@ -206,6 +210,7 @@ def canonical_moves(lines: Iterable[str] | str, *, start: tuple[float, float, fl
     if start is not None:
         pos = (float(start[0]), float(start[1]), float(start[2]))
     flood = mist = False
+    feed: float | None = None  # mm per minute (or per rev)
     for line in lines:
         m = _CALL.match(line)
         if not m:
@@ -213,6 +218,8 @@ def canonical_moves(lines: Iterable[str] | str, *, start: tuple[float, float, fl
         name, args = m.group(1), m.group(2).strip()
         if name == "USE_LENGTH_UNITS":
             scale = _UNIT_SCALE.get(args, scale)
+        elif name == "SET_FEED_RATE":
+            feed = _numbers(args)[0] * scale
         elif name == "SELECT_PLANE":
             plane = _PLANES.get(args, plane)
         elif name in ("STRAIGHT_TRAVERSE", "STRAIGHT_FEED"):
@@ -224,6 +231,8 @@ def canonical_moves(lines: Iterable[str] | str, *, start: tuple[float, float, fl
             pos = new
             events.append({"move": "rapid" if name == "STRAIGHT_TRAVERSE" else "feed",
                            "x": _mm(v[0], scale), "y": _mm(v[1], scale), "z": _mm(v[2], scale)})
+            if feeds and name == "STRAIGHT_FEED" and feed is not None:
+                events[-1]["f"] = round(feed, PLACES)
         elif name == "ARC_FEED":
             v = _numbers(args)
             first, second, c_first, c_second, rotation, normal_end = v[:6]
@@ -240,6 +249,8 @@ def canonical_moves(lines: Iterable[str] | str, *, start: tuple[float, float, fl
                                   "cz": _mm(centre[2], scale), "plane": plane}
             if turns > 1:
                 ev["turns"] = turns
+            if feeds and feed is not None:
+                ev["f"] = round(feed, PLACES)
             events.append(ev)
             pos = (end[0] * scale, end[1] * scale, end[2] * scale)
         elif name == "DWELL":
