@@ -132,6 +132,8 @@ def test_f_in_a_block_that_changes_units_is_in_the_old_units() -> None:
     """G20 F10 after G21 is 10 mm/min, G21 F5 after G20 is 5 in/min = 127 mm/min; the rate then
     holds across the next blocks (not 25.4 times too fast or too slow)."""
     assert [e["f"] for e in events(UNIT_FEEDS) if "move" in e] == [100, 10, 10, 127, 127, 10]
+    inverse_time = "G21 G90 G93\nG0 X0 Y0 Z0\nG20 G1 X1 F10\nM2\n"  # F is 1/min: no length to convert
+    assert [e["f"] for e in events(inverse_time) if "move" in e] == [10]
 
 
 @pytest.mark.skipif(not rs274.available(), reason="the LinuxCNC interpreter rs274 is not installed")
