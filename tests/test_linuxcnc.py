@@ -94,7 +94,47 @@ def test_blanks_inside_a_number_are_ignored_as_in_rs274() -> None:
     assert block.words == [("G", "1"), ("X", "10.5"), ("Y", "-2")]
 
 
+SIGNED_SPELLINGS = [("X -1", -1.0), ("X- 1", -1.0), ("X - 1.5", -1.5), ("x-.5", -0.5), ("X - . 5", -0.5),
+                    ("X + 1", 1.0), ("X\t-\t1", -1.0), ("X - 1 0 . 2 5", -10.25)]
+"""Blanks around a sign, each with the X that rs274 moves to (``G0 <word>`` prints that X)."""
+
+
+@pytest.mark.parametrize("word, x", SIGNED_SPELLINGS)
+def test_blanks_around_the_sign_are_ignored_as_in_rs274(word: str, x: float) -> None:
+    assert moves(f"G21 G90\nG0 {word}\nM2\n") == [("rapid", x, 0, 0)]
+
+
+def test_blanks_around_the_sign_round_trip_byte_for_byte() -> None:
+    text = "".join(f"G0 {word} Y - 2 Z- 3 (c)\r\n" for word, _ in SIGNED_SPELLINGS) + "M2\n"
+    assert write(text, "linuxcnc")[0] == text
+
+
+@pytest.mark.skipif(not rs274.available(), reason="the LinuxCNC interpreter rs274 is not installed")
+def test_blanks_around_the_sign_as_the_interpreter_reads_them() -> None:
+    text = "G21 G90\n" + "".join(f"G0 {word} Y - {n}\n" for n, (word, _) in enumerate(SIGNED_SPELLINGS)) + "M2\n"
+    theirs = rs274.canonical_moves(rs274.run_rs274(text), start=(0, 0, 0))
+    assert [e for e in events(text) if "move" in e] == [dict(e, line=n + 2) for n, e in enumerate(theirs)
+                                                        if "move" in e]
+
+
+def test_a_long_line_is_lexed_in_linear_time() -> None:
+    """Blanks and digits by the ten thousand, each line refused or read in well under a second (the
+    backtracking regexes this lexer once had took minutes on these)."""
+    import time
+    n = 50_000
+    for line in ("G0 X-" + " " * n + "Y", "G0 X" + " " * n + "-" + " " * n + "Y", "G0 X" + "1" * n + "!",
+                 "G0 X " + "1 " * n + ". Y"):
+        start = time.perf_counter()
+        with pytest.raises(ErrorList):
+            read(line + "\n")
+        assert time.perf_counter() - start < 1.0, line[:10]
+
+
 @pytest.mark.parametrize("text, message", [
+    ("G0 X -", "t.ngc:1:4: error: malformed word 'X -'"),
+    ("G0 X -.", "t.ngc:1:4: error: malformed word 'X -'"),
+    ("G0 X .-5", "t.ngc:1:4: error: malformed word 'X .'"),
+    ("G0 X 1 - 2", "t.ngc:1:8: error: number without an address at '-'"),
     ("G0 X1 (a (b) c)", "t.ngc:1:10: error: nested comment: '(' inside a comment"),
     ("G0 X1 (open", "t.ngc:1:7: error: unclosed comment"),
     ("o100 sub", "t.ngc:1:1: error: O-words (subprograms, loops, conditions) are not supported by the linuxcnc reader"),
