@@ -159,6 +159,16 @@ def test_drilling_g98_g99_and_initial_level() -> None:
     assert cycle_rows(blocks, 6) == [("rapid", 30, 10, 2), ("feed", 30, 10, -5), ("rapid", 30, 10, 50)]
 
 
+def test_g98_after_g99_with_a_lower_r_positions_at_the_current_level() -> None:
+    """Operation 1 rapids in the plane at the current level (DIALECTS.md §2.1): after a G99 hole the
+    tool stands at R, so a G98 hole with a lower R is positioned there, never by a diagonal rapid."""
+    blocks = read(HEAD + "G99 G81 X10. Y10. Z-5. R2. F200.\nG98 X20. R1.\nG99 X30. R3.\nG98 X40. R4.\n")
+    assert cycle_rows(blocks, 5) == [("rapid", 20, 10, 2), ("rapid", 20, 10, 1), ("feed", 20, 10, -5),
+                                     ("rapid", 20, 10, 50)]
+    assert cycle_rows(blocks, 7) == [("rapid", 40, 10, 3), ("rapid", 40, 10, 4), ("feed", 40, 10, -5),
+                                     ("rapid", 40, 10, 50)]
+
+
 def test_spot_drilling_dwell_in_milliseconds() -> None:
     blocks = read(HEAD + "G99 G82 X10. Y10. Z-3. R2. P500 F150.\n")
     assert cycle_rows(blocks, 4) == [("rapid", 10, 10, 50), ("rapid", 10, 10, 2), ("feed", 10, 10, -3),

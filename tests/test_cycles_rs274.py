@@ -70,6 +70,19 @@ def test_g98_after_g99_positions_at_the_return_level_in_one_traverse() -> None:
                                      ("rapid", 3, 0, 10)]
 
 
+def test_g98_after_g99_with_r_below_the_tool_positions_at_the_current_level() -> None:
+    """LinuxCNC positions the first hole of a block at the current level when the tool stands above R
+    (rs274: (5,5,2) then (5,5,1), no diagonal rapid up to the initial level); later repeats of the
+    block start from the clear level."""
+    blocks, _ = read("G21 G17 G90\nG00 X0 Y0 Z10\nG99 G81 X1 Y1 Z-3 R2 F100\nG98 X5 Y5 R1\n"
+                     "G99 X9 R3\nG98 X12 R2.5 L2\n")
+    assert cycle_rows(blocks, 4) == [("rapid", 5, 5, 2), ("rapid", 5, 5, 1), ("feed", 5, 5, -3),
+                                     ("rapid", 5, 5, 10)]
+    assert cycle_rows(blocks, 6) == [("rapid", 12, 5, 3), ("rapid", 12, 5, 2.5), ("feed", 12, 5, -3),
+                                     ("rapid", 12, 5, 10), ("rapid", 12, 5, 2.5), ("feed", 12, 5, -3),
+                                     ("rapid", 12, 5, 10)]
+
+
 def test_g98_returns_to_r_when_r_is_above_the_initial_level() -> None:
     blocks, _ = read("G21 G17 G90\nG00 X0 Y0 Z1\nG99 G81 X1 Y0 Z-1 R2 F100\nG98 X2 R3\n")
     assert cycle_rows(blocks, 4) == [("rapid", 1, 0, 3), ("rapid", 2, 0, 3), ("feed", 2, 0, -1),
@@ -253,6 +266,22 @@ X7 R4
 Z-3
 G99 G89 X8 Z-2 R1 P0.1
 X9
+G80
+M2
+""",
+    "g98_after_g99_r_below_the_tool": """G21 G17 G90
+M3 S500
+F100
+G0 X0 Y0 Z10
+G99 G81 X1 Y1 Z-3 R2
+G98 X5 Y5 R1
+X8
+G99 X9 R3
+G98 X12 R1
+G99 X13 R3
+G98 X14 R3
+G99 G83 X15 R4 Z-4 Q1.5
+G98 X16 R2.5 L2
 G80
 M2
 """,

@@ -8,17 +8,20 @@ Hypothesis writes programs in the ground where Fanuc and LinuxCNC move alike (DI
 * G4 dwells (Fanuc ``G04 X<s>`` or ``G04 P<ms>``, LinuxCNC ``G4 P<s>``);
 * hole cycles G81, G82, G83, G73, G85, G89 and G86 (Fanuc without P; LinuxCNC needs ``P0``), each run
   started by a rapid to its initial level **above R** (LinuxCNC rises to R first, Fanuc does not);
-* G98/G99 in absolute runs, never G98 after a G99 hole of the same run (LinuxCNC's G98 goes back to
-  the Z at the block's start, Fanuc's to the level of the run's first block); G89 only with G99
-  (LinuxCNC feeds out to the clear level, Fanuc feeds to R and rapids on);
+* G98/G99 in absolute runs; G98 after a G99 hole only with a new R below the tool (both position at
+  the current level then; with R at or above the tool LinuxCNC rapids diagonally to the clear level,
+  Fanuc in the plane at the current level); G89 only with G99 (LinuxCNC feeds out to the clear
+  level, Fanuc feeds to R and rapids on);
 * incremental rows: ``G91 G98`` with Fanuc ``K`` = LinuxCNC ``L`` (R is measured from the level the
   tool stands at, which is the initial level in both while every hole returns there), and modal
   repetition of the row;
-* G73/G83 clearances: the Fanuc set-up takes LinuxCNC's fixed 0.010 in = 0.254 mm.
+* G73/G83 clearances: the Fanuc set-up takes LinuxCNC's fixed 0.010 in = 0.254 mm;
+* a switch to G20 and back to G21, each with F and a feed move in the same block: LinuxCNC reads
+  that F in the old units, Fanuc in the new ones (``G20 F254.`` is Fanuc's ``G20 F10.``).
 
 Each program is written once for LinuxCNC and once in Fanuc spelling, run through our fanuc dialect's
-toolpath and through ``rs274``, and compared move by move (end points, arc centres) within
-``TOLERANCE``; dwells of more than zero seconds must agree too. The LinuxCNC spelling also goes
+toolpath and through ``rs274``, and compared move by move (end points, arc centres, feed rates)
+within ``TOLERANCE``; dwells of more than zero seconds must agree too. The LinuxCNC spelling also goes
 through our linuxcnc reader, which must agree with ``rs274`` the same way. Skipped when ``rs274`` is
 absent.
 """
@@ -36,7 +39,7 @@ from hypothesis import strategies as st
 
 from postproc.setup import CycleSettings, MachineSetup
 from postproc.toolpath import toolpath_events
-from tests.support.rs274 import RS274Error, available, canonical_moves, run_rs274
+from tests.support.rs274 import available, canonical_moves, run_rs274
 
 pytestmark = pytest.mark.skipif(not available(), reason="the LinuxCNC interpreter rs274 is not installed "
                                 "(apt-get install linuxcnc-uspace, or .ci/install-oracle.sh)")
@@ -49,7 +52,6 @@ EXAMPLES = int(os.environ.get("POSTPROC_DIFFERENTIAL_EXAMPLES", "60"))
 """Generated programs per run; raise it locally to search harder (the suite keeps it modest)."""
 FANUC_SETUP = MachineSetup(cycles=CycleSettings(peck_retract=LINUXCNC_PECK_MM, peck_clearance=LINUXCNC_PECK_MM))
 
-CRASH_RETRIES = 2
 RESULTS: dict[str, int] = {"programs": 0, "moves": 0}
 
 
@@ -144,6 +146,20 @@ def dwell(draw: Draw, p: Program) -> None:
     p.each(f"G4 P{num(seconds)}", fanuc)
 
 
+def unit_switch(draw: Draw, p: Program) -> None:
+    """G20 with F and a feed move, a move in inches, then G21 with F and a feed move (0.05 in grid)."""
+    inch = [[draw(grid(-1.5, 1.5, 0.05)), draw(grid(-1.5, 1.5, 0.05)), draw(grid(0, 1.2, 0.05))] for _ in "ab"]
+    rate = draw(st.integers(2, 20))  # in/min
+    words = [" ".join(f"{a}{num(v)}" for a, v in zip("XYZ", t)) for t in inch]
+    p.each(f"G20 F{num(rate * 25.4)} G1 {words[0]}", f"G20 F{num(rate)} G1 {words[0]}")
+    p.both(f"G1 {words[1]}")
+    target = [draw(grid(-40, 40)), draw(grid(-40, 40)), draw(grid(0, 30))]
+    mm = draw(st.integers(2, 20))  # in/min again, written in mm for Fanuc
+    p.each(f"G21 F{num(mm)} G1 " + " ".join(f"{a}{num(v)}" for a, v in zip("XYZ", target)),
+           f"G21 F{num(mm * 25.4)} G1 " + " ".join(f"{a}{num(v)}" for a, v in zip("XYZ", target)))
+    p.pos = target
+
+
 CYCLES = (81, 82, 83, 73, 85, 89, 86)
 
 
@@ -195,7 +211,8 @@ def _absolute_run(draw: Draw, p: Program, code: int, r: float, bottom: float, fe
                   extra_ngc: str, extra_fanuc: str) -> None:
     holes = draw(st.integers(1, 4))
     switch = 0 if code == 89 else draw(st.integers(0, holes))
-    """Holes before ``switch`` return with G98, the rest with G99 (never G98 after G99)."""
+    """Holes before ``switch`` return with G98, the rest with G99."""
+    initial = p.pos[2]
     for n in range(holes):
         x, y = draw(grid(-30, 30)), draw(grid(-30, 30))
         mode = 98 if n < switch else 99
@@ -207,9 +224,14 @@ def _absolute_run(draw: Draw, p: Program, code: int, r: float, bottom: float, fe
             switched = "G99 " if n == switch else ""
             p.both(f"{switched}X{num(x)} Y{num(y)}")
         p.pos = [x, y, p.pos[2] if mode == 98 else r]
+    if code != 89 and switch < holes and r > bottom and draw(st.booleans()):
+        lower = r - draw(grid(0.5, r - bottom))  # a G98 hole after G99 ones, its R below the tool (at R)
+        x = draw(grid(-30, 30))
+        p.both(f"G98 X{num(x)} R{num(lower)}")
+        p.pos = [x, p.pos[1], initial]
 
 
-STEPS = (straight, arc, dwell, cycle_run)
+STEPS = (straight, arc, dwell, cycle_run, unit_switch)
 
 
 @st.composite
@@ -241,17 +263,8 @@ def ours_linuxcnc(program: Program) -> list[dict[str, Any]]:
 
 
 def linuxcnc(program: Program) -> list[dict[str, Any]]:
-    text = "\n".join(program.ngc) + "\n"
-    for attempt in range(CRASH_RETRIES + 1):
-        try:
-            calls = run_rs274(text)
-            break
-        except RS274Error as err:
-            # A signal (seen: SIGBUS when several test runs share the machine) is the oracle crashing,
-            # not an answer about the program: run it again. An interpreter error is an answer.
-            if err.returncode is None or err.returncode >= 0 or attempt == CRASH_RETRIES:
-                raise
-    return canonical_moves(calls, start=(0.0, 0.0, 0.0))
+    calls = run_rs274("\n".join(program.ngc) + "\n")  # each run has its own HOME: no crash to retry
+    return canonical_moves(calls, start=(0.0, 0.0, 0.0), feeds=True)
 
 
 def comparable(events: list[dict[str, Any]]) -> list[dict[str, Any]]:
@@ -265,6 +278,7 @@ def first_difference(a: list[dict[str, Any]], b: list[dict[str, Any]]) -> str | 
             return f"item {n}: ours {x}, rs274 {y}"
         if "move" in x:
             keys = ["x", "y", "z"] + (["cx", "cy", "cz"] if x["move"] in ("cw", "ccw") else [])
+            keys += ["f"] if x["move"] != "rapid" else []
             dev = max(abs(float(x[k]) - float(y[k])) for k in keys)
         else:
             dev = abs(float(x["seconds"]) - float(y["seconds"]))

@@ -214,3 +214,10 @@ def test_the_grbl_reader_follows_rs274_numbers_and_dwell_seconds() -> None:
                    {"line": 2, "event": "dwell", "seconds": 0.5},
                    {"line": 3, "move": "feed", "x": 10, "y": 0, "z": -1, "f": 100},
                    {"line": 4, "event": "end"}]
+
+
+def test_f_in_a_unit_changing_block_is_in_the_new_units() -> None:
+    """grbl converts F by the block's own G20/G21 (gcode.c, "Set feed rate"), unlike LinuxCNC."""
+    feeds = [e["f"] for e in grbl_events("G21 G90 G94\nG0 X0 Y0 Z0\nG20 F10 G1 X1\nG21 F127 G1 X60\n")
+             if "move" in e]
+    assert feeds == [254, 127]

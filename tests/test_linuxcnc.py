@@ -24,6 +24,7 @@ from postproc.xmlio import to_bytes
 import postproc_linuxcnc
 from postproc_linuxcnc import Linuxcnc
 from postproc_linuxcnc.lexer import lex_block
+from tests.support import rs274
 
 ROOT = Path(__file__).resolve().parents[1]
 EXAMPLES = sorted((ROOT / "examples" / "linuxcnc").glob("*.ngc"))
@@ -93,7 +94,47 @@ def test_blanks_inside_a_number_are_ignored_as_in_rs274() -> None:
     assert block.words == [("G", "1"), ("X", "10.5"), ("Y", "-2")]
 
 
+SIGNED_SPELLINGS = [("X -1", -1.0), ("X- 1", -1.0), ("X - 1.5", -1.5), ("x-.5", -0.5), ("X - . 5", -0.5),
+                    ("X + 1", 1.0), ("X\t-\t1", -1.0), ("X - 1 0 . 2 5", -10.25)]
+"""Blanks around a sign, each with the X that rs274 moves to (``G0 <word>`` prints that X)."""
+
+
+@pytest.mark.parametrize("word, x", SIGNED_SPELLINGS)
+def test_blanks_around_the_sign_are_ignored_as_in_rs274(word: str, x: float) -> None:
+    assert moves(f"G21 G90\nG0 {word}\nM2\n") == [("rapid", x, 0, 0)]
+
+
+def test_blanks_around_the_sign_round_trip_byte_for_byte() -> None:
+    text = "".join(f"G0 {word} Y - 2 Z- 3 (c)\r\n" for word, _ in SIGNED_SPELLINGS) + "M2\n"
+    assert write(text, "linuxcnc")[0] == text
+
+
+@pytest.mark.skipif(not rs274.available(), reason="the LinuxCNC interpreter rs274 is not installed")
+def test_blanks_around_the_sign_as_the_interpreter_reads_them() -> None:
+    text = "G21 G90\n" + "".join(f"G0 {word} Y - {n}\n" for n, (word, _) in enumerate(SIGNED_SPELLINGS)) + "M2\n"
+    theirs = rs274.canonical_moves(rs274.run_rs274(text), start=(0, 0, 0))
+    assert [e for e in events(text) if "move" in e] == [dict(e, line=n + 2) for n, e in enumerate(theirs)
+                                                        if "move" in e]
+
+
+def test_a_long_line_is_lexed_in_linear_time() -> None:
+    """Blanks and digits by the ten thousand, each line refused or read in well under a second (the
+    backtracking regexes this lexer once had took minutes on these)."""
+    import time
+    n = 50_000
+    for line in ("G0 X-" + " " * n + "Y", "G0 X" + " " * n + "-" + " " * n + "Y", "G0 X" + "1" * n + "!",
+                 "G0 X " + "1 " * n + ". Y"):
+        start = time.perf_counter()
+        with pytest.raises(ErrorList):
+            read(line + "\n")
+        assert time.perf_counter() - start < 1.0, line[:10]
+
+
 @pytest.mark.parametrize("text, message", [
+    ("G0 X -", "t.ngc:1:4: error: malformed word 'X -'"),
+    ("G0 X -.", "t.ngc:1:4: error: malformed word 'X -'"),
+    ("G0 X .-5", "t.ngc:1:4: error: malformed word 'X .'"),
+    ("G0 X 1 - 2", "t.ngc:1:8: error: number without an address at '-'"),
     ("G0 X1 (a (b) c)", "t.ngc:1:10: error: nested comment: '(' inside a comment"),
     ("G0 X1 (open", "t.ngc:1:7: error: unclosed comment"),
     ("o100 sub", "t.ngc:1:1: error: O-words (subprograms, loops, conditions) are not supported by the linuxcnc reader"),
@@ -119,6 +160,42 @@ def test_numbers_mean_what_they_say() -> None:
     """X10 is 10 mm in RS274/NGC; on a Fanuc control with default input it is 0.010 mm."""
     block = read("G21 G0 X10 Y.5 Z-2\n")[0]
     assert block.sections["Motion"] == Motion("rapid", {"X": 10.0, "Y": 0.5, "Z": -2.0})
+
+
+UNIT_FEEDS = ("G21 G90 G94\nG0 X0 Y0 Z0\nG1 X10 F100\nG20 F10 G1 X1\nG1 X2\nG21 F5 G1 X30\nG1 X40\n"
+              "G20 G1 X2 F10\nM2\n")
+"""F in blocks that change units (rs274 prints ``SET_FEED_RATE(10.0000)`` before
+``USE_LENGTH_UNITS(CANON_UNITS_INCHES)``: LinuxCNC sets the feed first, in the old units)."""
+
+
+def test_f_in_a_block_that_changes_units_is_in_the_old_units() -> None:
+    """G20 F10 after G21 is 10 mm/min, G21 F5 after G20 is 5 in/min = 127 mm/min; the rate then
+    holds across the next blocks (not 25.4 times too fast or too slow)."""
+    assert [e["f"] for e in events(UNIT_FEEDS) if "move" in e] == [100, 10, 10, 127, 127, 10]
+    inverse_time = "G21 G90 G93\nG0 X0 Y0 Z0\nG20 G1 X1 F10\nM2\n"  # F is 1/min: no length to convert
+    assert [e["f"] for e in events(inverse_time) if "move" in e] == [10]
+
+
+@pytest.mark.skipif(not rs274.available(), reason="the LinuxCNC interpreter rs274 is not installed")
+def test_f_in_a_block_that_changes_units_as_the_interpreter_reads_it() -> None:
+    ours = [(e["move"], e["x"], e["z"], e.get("f")) for e in events(UNIT_FEEDS) if "move" in e]
+    theirs = [(e["move"], e["x"], e["z"], e.get("f"))
+              for e in rs274.canonical_moves(rs274.run_rs274(UNIT_FEEDS), start=(0, 0, 0), feeds=True)
+              if "move" in e]
+    assert ours == theirs
+
+
+def test_f_in_a_block_that_changes_units_is_written_in_the_old_units() -> None:
+    """Fanuc (and grbl) read that F in the new units; LinuxCNC gets it in the old ones, both ways,
+    except an inverse-time F, which is no length."""
+    fanuc = "G21 G90 G94\nG0 X0. Y0. Z0.\nG20 F10. G1 X1.\nG21 F5. G1 X30.\nM2\n"
+    text, _ = write(fanuc, "linuxcnc", source="fanuc")
+    assert "G20 G1 X1. F254.\n" in text and "G21 G1 X30. F0.19685\n" in text
+    assert [e["f"] for e in events(text) if "move" in e] == [254, pytest.approx(5, abs=1e-4)]
+    text, _ = write(UNIT_FEEDS, "fanuc")
+    assert "G20 G01 X1. F0.393701\n" in text and "G21 G01 X30. F127.\n" in text
+    text, _ = write("G21 G90 G93\nG0 X0 Y0 Z0\nG20 G1 X1 F10\nM2\n", "linuxcnc", source="grbl")
+    assert "G20 G1 X1. F10.\n" in text
 
 
 def test_dwell_p_is_seconds() -> None:

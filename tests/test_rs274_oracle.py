@@ -159,3 +159,26 @@ def test_rs274_inch_program_comes_out_in_mm_and_g83_clearance():
     calls = rs274.run_rs274("G20 G17 G90 G99 F10\nG0 X0 Y0 Z1\nG83 X1 Y1 Z-0.25 R0.2 Q0.1\nG80\nM2\n")
     z = [round(m["z"] / 25.4, 4) for m in motions(canonical_moves(calls)) if m["x"] == 25.4]
     assert z == [1.0, 0.2, 0.1, 0.2, 0.11, 0.0, 0.2, 0.01, -0.1, 0.2, -0.09, -0.2, 0.2, -0.19, -0.25, 0.2]
+
+
+@needs_rs274
+def test_rs274_runs_in_a_home_of_its_own(tmp_path, monkeypatch):
+    """rs274 maps its tool table at ``$HOME/.tool.mmap``; runs sharing a HOME corrupt each other
+    (bus errors, wrong Z, "tool not found"), so every run must leave the caller's HOME alone."""
+    monkeypatch.setenv("HOME", str(tmp_path))
+    rs274.run_rs274("G21 G90\nT1 M6\nG43\nG0 X1\nM2\n")
+    assert list(tmp_path.iterdir()) == []
+
+
+@needs_rs274
+def test_rs274_parallel_runs_keep_their_own_tool_tables():
+    """Eight runs at once, each with its own tool table, each sees its own tool length."""
+    from concurrent.futures import ThreadPoolExecutor
+
+    def length(n: int) -> str:
+        calls = rs274.run_rs274("G20 G90\nT1 M6\nG43 H1\nG0 X1\nM2\n", tool_table=f"T1 P1 Z{n} D0.1\n")
+        return next(c for c in calls if "USE_TOOL_LENGTH_OFFSET" in c)
+
+    with ThreadPoolExecutor(8) as pool:
+        seen = list(pool.map(length, range(1, 33)))
+    assert all(f"{n}.0000" in text for n, text in zip(range(1, 33), seen)), seen

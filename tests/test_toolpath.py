@@ -372,3 +372,12 @@ def test_an_unresolved_cycle_is_unsupported() -> None:
 def test_lathe_tool_word_indexes_the_turret() -> None:
     setup = MachineSetup(input=InputSettings(machine_type="lathe"))
     assert_events(body("G21\nT3", setup), [{"line": 2, "event": "tool", "number": 3}])
+
+
+def test_fanuc_reads_f_in_a_unit_changing_block_in_the_new_units() -> None:
+    """Fanuc's manuals want G20/G21 alone at the start of a program and say nothing of an F beside
+    it; the reader keeps the modal order (units, then F): G20 F10. is 10 in/min = 254 mm/min.
+    LinuxCNC reads the same F in the old units (tests/test_linuxcnc.py)."""
+    feeds = [e["f"] for e in body("G21 G90 G94\nG00 X0. Y0. Z0.\nG20 F10. G01 X1.\nG01 X2.\n"
+                                  "G21 F127. G01 X60.\n") if "move" in e]
+    assert feeds == [254, 254, 127]

@@ -137,9 +137,10 @@ class CycleExpansion(Syntax):
 
     @classmethod
     def position(cls, path: ToolPath, cycle: CannedCycle, a: float, b: float) -> None:
-        """Operations 1 and 2: rapid in the plane at the current level (RS274: at least the return
-        level, in one straight traverse), then rapid to R."""
-        if SEMANTICS.get(cycle.semantics, FANUC).position_at_clear:
+        """Operations 1 and 2: rapid in the plane at the current level, then rapid to R. RS274 keeps
+        the current level only while the tool stands above R (a G98 hole after a G99 one with a
+        lower R); otherwise it rapids to the hole at the return level in one straight traverse."""
+        if SEMANTICS.get(cycle.semantics, FANUC).position_at_clear and path.level() <= level(cycle, "r") + EPS:
             path.rapid(a, b, max(path.level(), cls.return_level(cycle)))
         else:
             path.rapid(a, b)

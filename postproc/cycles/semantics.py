@@ -12,8 +12,8 @@ start below R                 positions in the plane, then to R    rapid up to R
                                                                    stands (every block whose initial
                                                                    level is below R)
 G98 return level              the initial level                    the initial level, or R if higher
-positioning level             the tool's current level             the current level, or the return
-                                                                   level if higher
+positioning level             the tool's current level             the current level if above R, else
+                                                                   the return level (one traverse)
 repeat count                  K (L or K+L per the set-up)          L; L0 is an error
 dwell P                       milliseconds (integer)               seconds
 cycle data after a new code   carried over (Z, R, Q, P)            Z and R (Q, P) must be given again

@@ -103,8 +103,10 @@ def run_rs274(
 ) -> list[str]:
     """Run ``rs274 -g`` on a program and return its canonical call lines (``N..... NAME(args)``).
 
-    The program is written to a fresh temporary directory which is also the working directory, so
-    nothing leaks between runs (rs274 may write a ``sim.var`` parameter file there). stdin is closed.
+    The program is written to a fresh temporary directory which is also the working directory and
+    ``HOME``, so nothing leaks between runs: rs274 may write a ``sim.var`` parameter file there, and
+    it keeps its tool table in ``$HOME/.tool.mmap``, which two runs sharing a HOME corrupt (bus
+    errors, wrong Z, "tool not found"). The directory goes when the run ends. stdin is closed.
     The program must end with M2/M30 or ``%``, as LinuxCNC requires ("File ended with no percent sign
     or program end" otherwise). ``tool_table`` is the text of a LinuxCNC tool table (``T1 P1 Z.. D..``
     lines; lengths in inches as rs274 reads them); without it rs274 uses a built-in table.
@@ -127,8 +129,8 @@ def run_rs274(
         out_path, err_path = work / "stdout.txt", work / "stderr.txt"
         with open(out_path, "wb") as out, open(err_path, "wb") as err:
             try:
-                proc = subprocess.run(cmd, cwd=work, stdin=subprocess.DEVNULL, stdout=out, stderr=err,
-                                      timeout=timeout, check=False)
+                proc = subprocess.run(cmd, cwd=work, env=_private_env(work), stdin=subprocess.DEVNULL,
+                                      stdout=out, stderr=err, timeout=timeout, check=False)
                 returncode: int | None = proc.returncode
             except subprocess.TimeoutExpired:
                 returncode = None
@@ -148,6 +150,13 @@ def run_rs274(
             f"\nlast canonical calls:\n{tail}",
             returncode=returncode, stderr=stderr, calls=calls)
     return calls
+
+
+def _private_env(home: Path) -> dict[str, str]:
+    """The environment of one run: this run's own HOME (rs274 maps its tool table at ``$HOME/.tool.mmap``)."""
+    env = dict(os.environ)
+    env["HOME"] = str(home)
+    return env
 
 
 def _clean_stderr(text: str) -> str:
@@ -181,9 +190,13 @@ def _mm(v: float, scale: float) -> float:
     return 0.0 if r == 0 else r  # no negative zero
 
 
-def canonical_moves(lines: Iterable[str] | str, *, start: tuple[float, float, float] | None = None
-                    ) -> list[dict[str, Any]]:
+def canonical_moves(lines: Iterable[str] | str, *, start: tuple[float, float, float] | None = None,
+                    feeds: bool = False) -> list[dict[str, Any]]:
     """Parse canonical call lines (rs274 output or an ``expected`` file) into toolpath events (see module doc).
+
+    With ``feeds``, feed moves and arcs carry ``"f"``: the last ``SET_FEED_RATE``, read in the units in
+    force when it was called (LinuxCNC keeps the physical rate across a unit change), in mm per
+    minute, or mm per revolution under G95 (inverse time, G93, is not modelled).
 
     ``start`` is the position in mm (canonical frame) before the first call; by default it is unknown, so the first straight move is never dropped as zero-length and an arc as the
     very first motion takes its normal-axis centre from its end point. (Standalone rs274 starts at 0, 0, 0.)
@@ -197,6 +210,7 @@ def canonical_moves(lines: Iterable[str] | str, *, start: tuple[float, float, fl
     if start is not None:
         pos = (float(start[0]), float(start[1]), float(start[2]))
     flood = mist = False
+    feed: float | None = None  # mm per minute (or per rev)
     for line in lines:
         m = _CALL.match(line)
         if not m:
@@ -204,6 +218,8 @@ def canonical_moves(lines: Iterable[str] | str, *, start: tuple[float, float, fl
         name, args = m.group(1), m.group(2).strip()
         if name == "USE_LENGTH_UNITS":
             scale = _UNIT_SCALE.get(args, scale)
+        elif name == "SET_FEED_RATE":
+            feed = _numbers(args)[0] * scale
         elif name == "SELECT_PLANE":
             plane = _PLANES.get(args, plane)
         elif name in ("STRAIGHT_TRAVERSE", "STRAIGHT_FEED"):
@@ -215,6 +231,8 @@ def canonical_moves(lines: Iterable[str] | str, *, start: tuple[float, float, fl
             pos = new
             events.append({"move": "rapid" if name == "STRAIGHT_TRAVERSE" else "feed",
                            "x": _mm(v[0], scale), "y": _mm(v[1], scale), "z": _mm(v[2], scale)})
+            if feeds and name == "STRAIGHT_FEED" and feed is not None:
+                events[-1]["f"] = round(feed, PLACES)
         elif name == "ARC_FEED":
             v = _numbers(args)
             first, second, c_first, c_second, rotation, normal_end = v[:6]
@@ -231,6 +249,8 @@ def canonical_moves(lines: Iterable[str] | str, *, start: tuple[float, float, fl
                                   "cz": _mm(centre[2], scale), "plane": plane}
             if turns > 1:
                 ev["turns"] = turns
+            if feeds and feed is not None:
+                ev["f"] = round(feed, PLACES)
             events.append(ev)
             pos = (end[0] * scale, end[1] * scale, end[2] * scale)
         elif name == "DWELL":

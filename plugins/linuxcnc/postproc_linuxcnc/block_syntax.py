@@ -8,6 +8,9 @@ sections, motion, arcs, modal cycle repetition) and replaces what RS274/NGC read
 * ``L`` is the cycle repeat count; ``K`` in a drilling cycle is an error, as in LinuxCNC;
 * ``G80`` leaves no motion mode in force: axis words after it need a motion code;
 * ``G43`` without ``H`` uses the selected tool; ``M19 R`` gives the orientation angle;
+* ``F`` in a block with ``G20``/``G21`` is in the old units: LinuxCNC sets the feed rate before it
+  changes units (its order of execution; rs274 prints ``SET_FEED_RATE`` before ``USE_LENGTH_UNITS``),
+  so the neutral Feed, which is in the block's units, is converted;
 * its own G/M tables (``codes.py``): codes with no neutral meaning are kept verbatim, tagged
   ``linuxcnc``; M98/M99 subprograms and G90.1 are refused with a located error.
 """
@@ -20,6 +23,7 @@ from dialects.fanuc.block_syntax import FanucBlockSyntax, _col_of_word, _second_
 from dialects.fanuc.codes import g_key
 from postproc.errors import ParseError, ProgramError
 from postproc.ir import Block, Dwell, NativeCode, SpindleOrientation
+from postproc.state import MM_PER_INCH
 from postproc.syntax import Context
 
 from . import codes as ngc
@@ -49,6 +53,8 @@ class NgcBlockSyntax(FanucBlockSyntax):
     NATIVE_M_WORDS: ClassVar[str] = "PQ"
     REAL_LETTERS: ClassVar[frozenset[str]] = REAL_LETTERS
     INTEGER_LETTERS: ClassVar[frozenset[str]] = INTEGER_LETTERS
+    FEED_BEFORE_UNITS: ClassVar[bool] = True
+    """F in a block that changes units is in the old units (LinuxCNC's order of execution)."""
 
     def build(self, block: Block, ctx: Context) -> None:
         words = block.words
@@ -107,6 +113,8 @@ class NgcBlockSyntax(FanucBlockSyntax):
             self._machine_move(block, ctx, codes)
         self.m_sections(block, ctx, mcodes, values, used)
         self.finish_words(block, ctx, values, used)
+        if self.FEED_BEFORE_UNITS and "Units" in block.sections and "Feed" in block.sections:
+            _feed_in_old_units(block, ctx)
 
     def _value(self, block: Block, ctx: Context, up: str, num: str) -> float | int:
         if up in self.REAL_LETTERS:
@@ -209,3 +217,16 @@ class NgcBlockSyntax(FanucBlockSyntax):
         """M19: LinuxCNC takes the angle from R (Q is a timeout, P the direction)."""
         block.add(SpindleOrientation(float(values.get("R", ctx.setup.cycles.orient_angle))))
         used.update("RQP")
+
+
+def _feed_in_old_units(block: Block, ctx: Context) -> None:
+    """The block's F was set in the units in force before it: express it in the block's new units
+    (an inverse-time F is no length and stays)."""
+    sections = block.sections
+    before, after = ctx.state.units, sections["Units"].system  # type: ignore[attr-defined]
+    mode = sections.get("FeedMode")
+    inverse_time = (mode.mode if mode is not None else ctx.state.feed_mode) == "inverse_time"  # type: ignore[attr-defined]
+    if before == after or inverse_time:
+        return
+    feed = sections["Feed"]
+    feed.value *= MM_PER_INCH if after == "mm" else 1.0 / MM_PER_INCH  # type: ignore[attr-defined]

@@ -5,8 +5,10 @@ What differs from Fanuc's lexer, and why this module exists rather than a flag o
 * ``;`` starts a comment that runs to the end of the line (Fanuc reads ``;`` as end of block).
 * ``( )`` comments do not nest: a ``(`` inside a comment is an error, as in LinuxCNC
   ("Nested comment found").
-* Spaces and tabs are allowed anywhere outside comments, even inside a number (``X 1 0`` is X10):
-  the common line is still matched with one regex, the rare spaced-out number takes a slow path.
+* Spaces and tabs are allowed anywhere outside comments, even inside a number (``X 1 0`` is X10)
+  and between its sign and its digits (``X - 1.5``, ``X- .5``), as rs274 reads them: the common line
+  is still matched with one regex, the rare spaced-out number takes a slow path. Both regexes are
+  possessive and unambiguous, so a line is scanned in linear time whatever it holds.
 * O-words (``o100 sub``, ``o<name> call``), parameters (``#1``) and expressions (``[1+2]``) are
   refused with a located error: this reader does not model control flow yet.
 
@@ -24,9 +26,10 @@ from postproc.ir import Block, BlockDelete, Comments, Sequence, TapeMark
 __all__ = ["lex_block", "split_lines", "strip_comments"]
 
 _WORD = re.compile(r"([A-Za-z])[ \t]*(" + NUMBER + ")")
-_WORDS_ONLY = re.compile(r"(?:[ \t]*[A-Za-z][ \t]*" + NUMBER + r")*[ \t]*")
-_SPACED_NUMBER = re.compile(r"[-+]?[ \t]*(?:[\d \t]*\.[ \t]*\d[\d \t]*|\d[\d \t]*\.?[\d \t]*)")
-"""A number with blanks anywhere in it (RS274/NGC ignores them); must contain at least one digit."""
+_WORDS_ONLY = re.compile(r"(?:[ \t]*+[A-Za-z][ \t]*+[-+]?+(?:\d++\.?+\d*+|\.\d++))*+[ \t]*+")
+"""A line of words only (``NUMBER`` spelt possessively: one reading, never backtrack)."""
+_SPACED_NUMBER = re.compile(r"[ \t]*+(?:[-+][ \t]*+)?+(?:\d[\d \t]*+(?:\.[\d \t]*+)?+|\.[ \t]*+\d[\d \t]*+)")
+"""A number with blanks anywhere in it, also around its sign (RS274/NGC ignores them); at least one digit."""
 _SKIP = re.compile(r"[ \t]*/")
 _COMMENT_CHARS = frozenset("();")
 _O_WORDS = "O-words (subprograms, loops, conditions) are not supported by the {} reader"

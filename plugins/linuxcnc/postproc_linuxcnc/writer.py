@@ -4,6 +4,7 @@
 * No G44, no one-shot exact stop (G9) and no O-number programs: the first two are unsupported, the
   program number is written as a comment (LinuxCNC reads O as an O-word).
 * Work offsets 7-9 are G59.1-G59.3; inverse-time feed is G93; M19 takes its angle as R.
+* F in a block that changes units is written in the old units (LinuxCNC sets the feed first).
 * A native cycle is written from its words as programmed. Only cycles resolved under RS274/NGC rules
   arrive here native: the lowering expands every other family's cycle exactly (``CYCLE_SEMANTICS``),
   because LinuxCNC's start-below-R, G98 and G91 R rules would move differently.
@@ -14,6 +15,8 @@ from __future__ import annotations
 from typing import Any, ClassVar
 
 from postproc.ir import Block
+from postproc.state import MM_PER_INCH
+from postproc.syntax import Context
 from postproc.writer import WordWriter
 
 
@@ -34,6 +37,31 @@ class LinuxcncWriter(WordWriter):
     CYCLES: ClassVar[dict[str, str]] = {k: v for k, v in WordWriter.CYCLES.items()
                                         if k not in ("fine_bore", "back_bore", "bore_manual")}
     """G76 threads, G87/G88 take other words: never written as Fanuc's cycles."""
+
+    def __init__(self, ctx: Context, source_dialect: str) -> None:
+        super().__init__(ctx, source_dialect)
+        self.units_before = self.units
+        """Units in force before the block being written (its F is read in them)."""
+        self.inverse_time = False
+
+    def units_words(self, s: Any, block: Block) -> list[str]:
+        self.units_before = self.units
+        return super().units_words(s, block)
+
+    def feed_mode_words(self, s: Any, block: Block) -> list[str]:
+        self.inverse_time = s.mode == "inverse_time"
+        return super().feed_mode_words(s, block)
+
+    def feed_words(self, s: Any, block: Block) -> list[str]:
+        """The neutral F is in the block's units; LinuxCNC reads it in the units before the block."""
+        units = block.sections.get("Units")
+        if units is None or units.system == self.units_before or self.inverse_time:  # type: ignore[attr-defined]
+            return super().feed_words(s, block)
+        self.feed = s.value
+        after, self.units = self.units, self.units_before
+        words = ["F" + self.number(s.value * (MM_PER_INCH if after == "inch" else 1.0 / MM_PER_INCH))]
+        self.units = after
+        return words
 
     def program_start(self, s: Any, block: Block) -> str:
         """LinuxCNC reads O as an O-word (subprograms, loops): the program number stays a comment."""
