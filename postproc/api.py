@@ -16,7 +16,7 @@ from .ir import Block
 from .lower import lower_for
 from .plugins import Registry, default_registry
 from .setup import MachineSetup
-from .syntax import Context
+from .context import Context
 
 
 @contextlib.contextmanager

@@ -154,7 +154,7 @@ def cmd_translate(args: argparse.Namespace) -> int:
 
 
 def cmd_toolpath(args: argparse.Namespace) -> int:
-    from .toolpath import export_toolpath
+    from .export import export_toolpath
     setup = _setup(args.machine)
     binary = args.format == "png"
     if binary and not args.output:

@@ -15,7 +15,8 @@ from typing import ClassVar, Iterable, Iterator, TextIO
 from .errors import Diagnostics, Location, PostprocError, UnsupportedError
 from .ir import Block
 from .setup import MachineSetup
-from .syntax import Context, Pipeline, load_pipeline
+from .context import Context
+from .syntax import Pipeline, load_pipeline
 
 
 class Reader(abc.ABC):

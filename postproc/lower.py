@@ -10,7 +10,7 @@ from typing import Callable, Iterator
 
 from .dialect import Dialect
 from .ir import Block
-from .syntax import Context
+from .context import Context
 
 Transform = Callable[[Iterator[Block], Context, type[Dialect]], Iterator[Block]]
 

@@ -22,7 +22,7 @@ from postproc.errors import ErrorList
 from postproc.hookspecs import hookimpl
 from postproc.ir import Section
 from postproc.plugins import PROJECT, Registry, default_registry, make_plugin_manager
-from postproc.writer import WordWriter
+from postproc.rs274.writer import WordWriter
 from postproc.xmlio import XAttr, XFactory, parse_xml_bytes
 
 ROOT = Path(__file__).resolve().parents[1]

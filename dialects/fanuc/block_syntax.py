@@ -15,7 +15,8 @@ from postproc.ir import (
     SpindleControl, SpindleOrientation, SpindleSpeed, ToolChange, ToolLengthOffset, ToolSelect, Units,
     WorkOffset,
 )
-from postproc.syntax import Context, Syntax
+from postproc.context import Context
+from postproc.syntax import Syntax
 
 from .codes import G_CODES, M_CODES, NATIVE_G, NATIVE_M, g_key
 
@@ -350,7 +351,7 @@ def _motion_col(block: Block, ctx: Context, codes: dict[str, Any], axes: dict[st
 
 def _col_of_word(block: Block, letter: str, num: str) -> int:
     """Column of the word ``letter``+``num`` as written (comments skipped)."""
-    from postproc.syntax import word_columns
+    from postproc.context import word_columns
     for col, found, text in word_columns(block.text or ""):
         if found.upper() == letter.upper() and text == num:
             return col
@@ -359,6 +360,6 @@ def _col_of_word(block: Block, letter: str, num: str) -> int:
 
 def _second_col(block: Block, letter: str) -> int:
     """Column of the second word with ``letter`` (the one that repeats an address)."""
-    from postproc.syntax import word_columns
+    from postproc.context import word_columns
     cols = [col for col, found, _ in word_columns(block.text or "") if found.upper() == letter.upper()]
     return cols[1] if len(cols) > 1 else 1

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from typing import ClassVar
 
-from postproc.writer import WordWriter
+from postproc.rs274.writer import WordWriter
 
 
 class FanucWriter(WordWriter):

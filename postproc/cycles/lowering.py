@@ -21,7 +21,7 @@ from postproc.errors import UnsupportedError
 from postproc.ir import (
     Block, Comments, CompoundMotion, Motion, ProgramControl, Section, SpindleControl, SpindleOrientation,
 )
-from postproc.syntax import Context
+from postproc.context import Context
 
 from .section import CannedCycle
 from .semantics import CODES

@@ -21,7 +21,8 @@ from lxml import etree
 from postproc.errors import Location, PostprocError, ProgramError, UnsupportedError
 from postproc.ir import Block, CompoundMotion
 from postproc.state import MM_PER_INCH, PLANE_AXES, CycleState, ModalState
-from postproc.syntax import Context, Syntax
+from postproc.context import Context
+from postproc.syntax import Syntax
 from postproc.xmlio import DEFAULT
 
 from .back_boring import BackBoringSyntax

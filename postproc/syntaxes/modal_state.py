@@ -11,7 +11,8 @@ from typing import Any, Callable
 
 from postproc.ir import Block, Motion
 from postproc.state import ModalState
-from postproc.syntax import Context, Syntax
+from postproc.context import Context
+from postproc.syntax import Syntax
 
 _MODAL_MOTION = frozenset(("rapid", "linear", "cw", "ccw"))
 

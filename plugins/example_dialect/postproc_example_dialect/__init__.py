@@ -11,7 +11,7 @@ from typing import Callable, ClassVar
 from postproc.dialect import Dialect
 from postproc.hookspecs import hookimpl
 from postproc.ir import Block, Motion
-from postproc.writer import WordWriter
+from postproc.rs274.writer import WordWriter
 
 
 class ExampleWriter(WordWriter):

@@ -11,7 +11,7 @@ from typing import Any, ClassVar
 
 from postproc.errors import ParseError
 from postproc.ir import Block, ToolChange
-from postproc.syntax import Context
+from postproc.context import Context
 from dialects.fanuc.block_syntax import _col_of_word
 from postproc_linuxcnc.block_syntax import NgcBlockSyntax
 

@@ -25,7 +25,7 @@ from typing import Any, ClassVar
 from postproc.errors import Location, UnsupportedError
 from postproc.ir import Block, CompoundMotion, DistanceMode, Motion, ProgramControl, Section
 from postproc.state import PLANE_AXES
-from postproc.writer import WordWriter
+from postproc.rs274.writer import WordWriter
 
 DROPPABLE = frozenset({
     "ToolLengthOffset", "CutterCompensation", "BlockDelete", "PathControl", "SpindleOrientation",

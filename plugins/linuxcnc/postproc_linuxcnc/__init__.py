@@ -16,7 +16,7 @@ from postproc.dialect import Dialect
 from postproc.errors import Diagnostics
 from postproc.hookspecs import hookimpl
 from postproc.setup import MachineSetup
-from postproc.syntax import Context
+from postproc.context import Context
 from postproc.xmlio import XFactory
 
 from .block_syntax import NgcBlockSyntax

@@ -20,7 +20,7 @@ from dialects.fanuc.block_syntax import FanucBlockSyntax, _col_of_word, _second_
 from dialects.fanuc.codes import g_key
 from postproc.errors import ParseError, ProgramError
 from postproc.ir import Block, Dwell, NativeCode, SpindleOrientation
-from postproc.syntax import Context
+from postproc.context import Context
 
 from . import codes as ngc
 

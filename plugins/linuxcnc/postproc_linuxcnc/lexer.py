@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import re
 
-from dialects.fanuc.lexer import NUMBER, split_lines
+from postproc.rs274.lexer import NUMBER, split_lines
 from postproc.errors import Location, ParseError
 from postproc.ir import Block, BlockDelete, Comments, Sequence, TapeMark
 

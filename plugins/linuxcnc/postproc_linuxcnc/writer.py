@@ -14,7 +14,7 @@ from __future__ import annotations
 from typing import Any, ClassVar
 
 from postproc.ir import Block
-from postproc.writer import WordWriter
+from postproc.rs274.writer import WordWriter
 
 
 class LinuxcncWriter(WordWriter):

@@ -10,11 +10,11 @@ from __future__ import annotations
 
 from typing import Any, Callable, ClassVar, NoReturn
 
-from .errors import Location, UnsupportedError
-from .ir import Block, CompoundMotion, Motion, Section
-from .numbers import MAX_PLACES, canonical_number_re
-from .syntax import Context
-from .dialect import Writer
+from ..errors import Location, UnsupportedError
+from ..ir import Block, CompoundMotion, Motion, Section
+from ..numbers import MAX_PLACES, canonical_number_re
+from ..context import Context
+from ..dialect import Writer
 
 
 SECTION_ORDER = (

@@ -1,0 +1,1 @@
+"""The RS274 family base (Fanuc, LinuxCNC, grbl, ...): lexer, block syntax, writer, code tables."""
