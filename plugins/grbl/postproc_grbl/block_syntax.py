@@ -12,7 +12,7 @@ from typing import Any, ClassVar
 from postproc.errors import ParseError
 from postproc.ir import Block, ToolChange
 from postproc.context import Context
-from dialects.fanuc.block_syntax import _col_of_word
+from postproc.rs274.block_syntax import _col_of_word
 from postproc_linuxcnc.block_syntax import NgcBlockSyntax
 
 from . import codes

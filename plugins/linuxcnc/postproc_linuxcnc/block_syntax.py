@@ -16,7 +16,7 @@ from __future__ import annotations
 
 from typing import Any, ClassVar
 
-from dialects.fanuc.block_syntax import FanucBlockSyntax, _col_of_word, _second_col
+from postproc.rs274.block_syntax import FanucBlockSyntax, _col_of_word, _second_col
 from dialects.fanuc.codes import g_key
 from postproc.errors import ParseError, ProgramError
 from postproc.ir import Block, Dwell, NativeCode, SpindleOrientation

@@ -18,7 +18,7 @@ from postproc.ir import (
 from postproc.context import Context
 from postproc.syntax import Syntax
 
-from .codes import G_CODES, M_CODES, NATIVE_G, NATIVE_M, g_key
+from dialects.fanuc.codes import G_CODES, M_CODES, NATIVE_G, NATIVE_M, g_key
 
 AXIS_LETTERS = frozenset("XYZABCUVW")
 DECIMAL_LETTERS = frozenset("XYZABCUVWIJKRQ")
