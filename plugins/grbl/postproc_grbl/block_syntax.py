@@ -13,7 +13,7 @@ from postproc.errors import ParseError
 from postproc.ir import Block, ToolChange
 from postproc.context import Context
 from postproc.rs274.block_syntax import _col_of_word
-from postproc_linuxcnc.block_syntax import NgcBlockSyntax
+from postproc.rs274.ngc_block_syntax import NgcBlockSyntax
 
 from . import codes
 

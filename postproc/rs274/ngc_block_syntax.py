@@ -22,7 +22,7 @@ from postproc.errors import ParseError, ProgramError
 from postproc.ir import Block, Dwell, NativeCode, SpindleOrientation
 from postproc.context import Context
 
-from . import codes as ngc
+from postproc_linuxcnc import codes as ngc
 
 REAL_LETTERS = frozenset("XYZABCUVWIJKRQPF")
 """Addresses read as real numbers, exactly as written."""
