@@ -8,7 +8,7 @@ from typing import Any
 
 import pytest
 
-from postproc.rs274.block_syntax import FanucBlockSyntax
+from dialects.fanuc.block_syntax import FanucBlockSyntax
 from dialects.fanuc.reader import FanucReader
 from postproc.api import read_program
 from postproc.cycles import CannedCycleResolveSyntax

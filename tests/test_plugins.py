@@ -22,6 +22,7 @@ from postproc.errors import ErrorList
 from postproc.hookspecs import hookimpl
 from postproc.ir import Section
 from postproc.plugins import PROJECT, Registry, default_registry, make_plugin_manager
+from postproc.rs274.codes import CodeTable
 from postproc.rs274.writer import WordWriter
 from postproc.xmlio import XAttr, XFactory, parse_xml_bytes
 
@@ -38,7 +39,9 @@ class Beep(Section):
 
 class ToyWriter(WordWriter):
     DIALECT = "toy"
-    COOLANT = {**WordWriter.COOLANT, "flood": "M88"}
+    CODES = CodeTable((("G00", "01", "motion", "rapid"), ("G21", "06", "units", "mm"),
+                       ("G90", "03", "distance", "absolute"), ("M88", "", "coolant", "flood"),
+                       ("M09", "", "coolant", "off")))
 
 
 class Toy(Dialect):
@@ -258,7 +261,8 @@ def test_example_plugin_is_built_like_a_third_party_plugin():
     example = default_registry().dialect("example")
     assert issubclass(example, Dialect) and issubclass(example.WRITER, WordWriter)
     assert example.__module__.split(".")[0] == "postproc_example_dialect"
-    assert example.WRITER.MOTION["rapid"] == "G0" and example.WRITER.MOTION["home"] == "G28"
+    assert example.WRITER.CODES.spell("motion", "rapid") == "G0"
+    assert example.WRITER.CODES.spell("home", "home") == "G28"
 
 
 def test_example_plugin_writes_g0_and_four_decimals(cli):

@@ -8,7 +8,7 @@ from postproc.dialect import Dialect
 from postproc.hookspecs import hookimpl
 from postproc.xmlio import XFactory
 
-from postproc.rs274.block_syntax import FanucBlockSyntax
+from .block_syntax import FanucBlockSyntax
 from .reader import FanucReader
 from .writer import FanucWriter
 

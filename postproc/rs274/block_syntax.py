@@ -1,7 +1,10 @@
-"""FanucBlockSyntax: gives a lexed Fanuc block its neutral sections.
+"""WordBlockSyntax: gives a lexed RS274-family block its neutral sections, through the dialect's code table.
 
-It applies the decimal-point rule, checks modal-group conflicts and duplicate addresses, maps G and M
-codes to neutral sections and refuses any word that would otherwise be dropped without meaning.
+The ISO/Fanuc reading of words: the decimal-point rule (a point-less value is least input increments
+unless the set-up says calculator input), K/L repeats per the set-up, G04 P in milliseconds or X in
+seconds. It checks modal-group conflicts and duplicate addresses, maps G and M codes to neutral
+sections through ``CODES`` (a ``CodeTable``) and refuses any word that would otherwise be dropped
+without meaning. A dialect subclasses it with its ``XNAME``, ``DIALECT`` and ``CODES``.
 """
 
 from __future__ import annotations
@@ -15,10 +18,10 @@ from postproc.ir import (
     SpindleControl, SpindleOrientation, SpindleSpeed, ToolChange, ToolLengthOffset, ToolSelect, Units,
     WorkOffset,
 )
-from postproc.context import Context
+from postproc.context import Context, word_columns
 from postproc.syntax import Syntax
 
-from dialects.fanuc.codes import G_CODES, M_CODES, NATIVE_G, NATIVE_M, g_key
+from .codes import CodeTable, g_key
 
 AXIS_LETTERS = frozenset("XYZABCUVW")
 DECIMAL_LETTERS = frozenset("XYZABCUVWIJKRQ")
@@ -27,22 +30,18 @@ INTEGER_LETTERS = frozenset("NOTHDLP")
 _UPPER = {c: c.upper() for c in "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"}
 _UPPER[":"] = "O"  # ':' is ISO's spelling of the program number address
 CENTER_AXIS = {"I": "X", "J": "Y", "K": "Z"}
-DIALECT = "fanuc"
 
 
-def spell_g(text: str) -> str:
-    return "G" + text
+class WordBlockSyntax(Syntax):
+    """Lexed words -> neutral sections, ISO/Fanuc word rules; subclasses give the code table."""
 
-
-class FanucBlockSyntax(Syntax):
-    """Lexed words -> neutral sections, for Fanuc milling controls."""
-
-    XNAME = "FanucBlockSyntax"
     __slots__ = ()
-    DIALECT: ClassVar[str] = DIALECT
+    DIALECT: ClassVar[str] = ""
     """Tag of the verbatim (NativeCode) sections this syntax makes."""
-    M_CODES: ClassVar[dict[int, tuple[str, object]]] = M_CODES
-    NATIVE_M: ClassVar[dict[int, str]] = NATIVE_M
+    TITLE: ClassVar[str] = ""
+    """How messages name the dialect ("address Q is not used by the <TITLE> dialect")."""
+    CODES: ClassVar[CodeTable] = CodeTable(())
+    """The dialect's code table: every G and M code the reader knows."""
     NATIVE_M_WORDS: ClassVar[str] = "PL"
     """Words a verbatim M code takes with it (M98 P.. L..)."""
 
@@ -62,10 +61,10 @@ class FanucBlockSyntax(Syntax):
                 self._g_code(ctx, block, num, codes, natives)
             elif up == "M":
                 if "." in num:
-                    raise ParseError(f"M code M{num} takes no decimal point", ctx.at(block, _col_of_word(block, "M", num)))
+                    raise ParseError(f"M code M{num} takes no decimal point", ctx.at(block, col_of_word(block, "M", num)))
                 mcodes.append((int(num), num))
             elif up in raw:
-                raise ParseError(f"address {up} appears twice in one block", ctx.at(block, _second_col(block, up)))
+                raise ParseError(f"address {up} appears twice in one block", ctx.at(block, second_col(block, up)))
             else:
                 raw[up] = num
         state = ctx.state
@@ -98,7 +97,7 @@ class FanucBlockSyntax(Syntax):
             elif up == "S":
                 values[up] = float(num) if "." in num else int(num)
             else:
-                raise ParseError(f"address {up} is not used by the Fanuc milling dialect",
+                raise ParseError(f"address {up} is not used by the {self.TITLE} dialect",
                                  ctx.at(block, ctx.column_of(block, up)))
         used = {"N", "O"}
         self.g_sections(block, ctx, codes, values, used, cycle_block)
@@ -157,30 +156,30 @@ class FanucBlockSyntax(Syntax):
 
     def _g_code(self, ctx: Context, block: Block, num: str, codes: dict[str, Any], natives: list[str]) -> None:
         key = g_key(num)
-        entry = G_CODES.get(key)
+        entry = self.CODES.g.get(key)
         if entry is None:
-            if key in NATIVE_G:
+            if key in self.CODES.native_g:
                 natives.append(key)
                 return
-            raise ParseError(f"unknown G code G{num}", ctx.at(block, _col_of_word(block, "G", num)))
+            raise ParseError(f"unknown G code G{num}", ctx.at(block, col_of_word(block, "G", num)))
         group = entry[0]
         other = codes.get(group)
         if other is not None:
             name = group
             raise ParseError(f"G codes G{other[3]} and G{num} are both in modal group {name}",
-                             ctx.at(block, _col_of_word(block, "G", num)))
+                             ctx.at(block, col_of_word(block, "G", num)))
         if group == "09" and "01" in codes or group == "01" and "09" in codes and codes["09"][1] == "cycle":
             first = codes.get("01") or codes["09"]
             if entry[1] == "cycle" or first[1] == "cycle":
                 raise ParseError(f"G{first[3]} and G{num} in one block: a motion code and a canned cycle",
-                                 ctx.at(block, _col_of_word(block, "G", num)))
+                                 ctx.at(block, col_of_word(block, "G", num)))
         codes[group] = (group, entry[1], entry[2], num)
 
     def _native(self, block: Block, ctx: Context, natives: list[str], raw: dict[str, str]) -> None:
         """Keep a block with a code the IR does not model verbatim, tagged with its meaning."""
         key = natives[0]
-        what = f"G{key} ({NATIVE_G[key]})"
-        block.add(NativeCode(DIALECT, what, block.text or ""))
+        what = f"G{key} ({self.CODES.native_g[key]})"
+        block.add(NativeCode(self.DIALECT, what, block.text or ""))
         for up, num in raw.items():
             block.values[up] = float(num) if "." in num else int(num)
 
@@ -220,7 +219,7 @@ class FanucBlockSyntax(Syntax):
             elif kind == "length":
                 if arg != "cancel":
                     if "H" not in values:
-                        raise ProgramError(f"G{num} needs an offset register H", ctx.at(block, _col_of_word(block, "G", num)))
+                        raise ProgramError(f"G{num} needs an offset register H", ctx.at(block, col_of_word(block, "G", num)))
                     used.add("H")
                 block.add(ToolLengthOffset(arg, values.get("H") if arg != "cancel" else None))
             elif kind == "dwell":
@@ -253,7 +252,8 @@ class FanucBlockSyntax(Syntax):
             if cycle_block and "CycleCancel" not in block.sections:
                 mode = None
             elif state.motion is None:
-                raise ProgramError("axis words with no motion mode in force (program G00 or G01 first)",
+                raise ProgramError("axis words with no motion mode in force (program "
+                                   f"{self.spell('motion', 'rapid')} or {self.spell('motion', 'linear')} first)",
                                    ctx.at(block, ctx.column_of(block, next(iter(axes)))))
             else:
                 mode = state.motion
@@ -285,31 +285,32 @@ class FanucBlockSyntax(Syntax):
             seconds = float(values["X"])
             used.add("X")
         else:
-            raise ProgramError("G04 needs a dwell time X (seconds) or P (milliseconds)",
-                               ctx.at(block, _col_of_word(block, "G", num)))
+            raise ProgramError(f"{self.spell('dwell')} needs a dwell time X (seconds) or P (milliseconds)",
+                               ctx.at(block, col_of_word(block, "G", num)))
         if seconds < 0:
-            raise ProgramError("a dwell time cannot be negative", ctx.at(block, _col_of_word(block, "G", num)))
+            raise ProgramError("a dwell time cannot be negative", ctx.at(block, col_of_word(block, "G", num)))
         block.add(Dwell(seconds))
 
     def m_sections(self, block: Block, ctx: Context, mcodes: list[tuple[int, str]], values: dict[str, Any],
                    used: set[str]) -> None:
-        """M codes -> sections, through the class's ``M_CODES``; shared with dialects of the same family,
-        which override ``unknown_m`` and ``orient`` where they differ."""
+        """M codes -> sections, through the code table; dialects of the family override ``unknown_m``
+        and ``orient`` where they differ."""
         seen: dict[str, str] = {}
+        table = self.CODES.m
         for number, num in mcodes:
-            entry = self.M_CODES.get(number)
+            entry = table.get(number)
             if entry is None:
                 what = self.unknown_m(block, ctx, number, num)
                 if "NativeCode" in block.sections:
                     raise ParseError(f"M{num}: only one machine-specific function per block is supported",
-                                     ctx.at(block, _col_of_word(block, "M", num)))
+                                     ctx.at(block, col_of_word(block, "M", num)))
                 block.add(NativeCode(self.DIALECT, what, f"M{num}"))
                 used.update(self.NATIVE_M_WORDS)
                 continue
             kind, arg = entry
             if kind in seen:
                 raise ParseError(f"M codes M{seen[kind]} and M{num} conflict in one block",
-                                 ctx.at(block, _col_of_word(block, "M", num)))
+                                 ctx.at(block, col_of_word(block, "M", num)))
             seen[kind] = num
             if kind == "program":
                 block.add(ProgramControl(str(arg)))
@@ -322,14 +323,21 @@ class FanucBlockSyntax(Syntax):
             elif kind == "coolant":
                 block.add(Coolant(str(arg)))
 
+    def spell(self, kind: str, arg: object = None) -> str:
+        """The dialect's spelling of a code, for messages."""
+        return self.CODES.spell(kind, arg) or kind
+
     def unknown_m(self, block: Block, ctx: Context, number: int, num: str) -> str:
-        """What an M code outside ``M_CODES`` is: kept verbatim (Fanuc: any M code is the machine's)."""
-        if number in self.NATIVE_M:
-            return f"M{num} ({self.NATIVE_M[number]})"
+        """What an M code outside the table is: kept verbatim (the ISO rule: any other M code is the
+        machine builder's)."""
+        native = self.CODES.native_m.get(number)
+        if native is not None:
+            return f"M{num} ({native})"
         return f"M{num} (machine-specific M function)"
 
     def orient(self, block: Block, ctx: Context, num: str, values: dict[str, Any], used: set[str]) -> None:
-        """M19: Fanuc orients to the angle its parameters hold (the set-up's ``orientAngle``)."""
+        """An orient code without an angle word: the angle the machine's parameters hold (the set-up's
+        ``orientAngle``)."""
         block.add(SpindleOrientation(ctx.setup.cycles.orient_angle))
 
 
@@ -345,21 +353,19 @@ def _divisor(ctx: Context, units: str) -> int:
 def _motion_col(block: Block, ctx: Context, codes: dict[str, Any], axes: dict[str, Any]) -> int:
     """Column of the block's motion code, or of its first axis word when the motion is modal."""
     if "01" in codes:
-        return _col_of_word(block, "G", codes["01"][3])
+        return col_of_word(block, "G", codes["01"][3])
     return ctx.column_of(block, next(iter(axes))) if axes else 1
 
 
-def _col_of_word(block: Block, letter: str, num: str) -> int:
-    """Column of the word ``letter``+``num`` as written (comments skipped)."""
-    from postproc.context import word_columns
+def col_of_word(block: Block, letter: str, num: str) -> int:
+    """Column of the word ``letter``+``num`` as written (comments skipped); 1 when not found."""
     for col, found, text in word_columns(block.text or ""):
         if found.upper() == letter.upper() and text == num:
             return col
     return 1
 
 
-def _second_col(block: Block, letter: str) -> int:
+def second_col(block: Block, letter: str) -> int:
     """Column of the second word with ``letter`` (the one that repeats an address)."""
-    from postproc.context import word_columns
     cols = [col for col, found, _ in word_columns(block.text or "") if found.upper() == letter.upper()]
     return cols[1] if len(cols) > 1 else 1

@@ -1,51 +1,42 @@
-"""NgcBlockSyntax: gives a lexed RS274/NGC (LinuxCNC) block its neutral sections.
+"""NgcWordBlockSyntax: the RS274/NGC reading of a block (LinuxCNC, grbl), through the dialect's code table.
 
-It reuses Fanuc's block logic where the meaning is the same (``FanucBlockSyntax.g_sections``: modal
-sections, motion, arcs, modal cycle repetition) and replaces what RS274/NGC reads differently:
+It reuses the family's block logic where the meaning is the same (``WordBlockSyntax.g_sections``:
+modal sections, motion, arcs, modal cycle repetition) and replaces what RS274/NGC reads differently:
 
 * numbers mean what they say: ``X10`` is 10 units, there is no decimal-point scaling;
-* ``G4 P`` and a cycle's ``P`` are seconds, as a real number;
-* ``L`` is the cycle repeat count; ``K`` in a drilling cycle is an error, as in LinuxCNC;
-* ``G80`` leaves no motion mode in force: axis words after it need a motion code;
-* ``G43`` without ``H`` uses the selected tool; ``M19 R`` gives the orientation angle;
-* its own G/M tables (``codes.py``): codes with no neutral meaning are kept verbatim, tagged
-  ``linuxcnc``; M98/M99 subprograms and G90.1 are refused with a located error.
+* the dwell's ``P`` and a cycle's ``P`` are seconds, as a real number;
+* ``L`` is the cycle repeat count; ``K`` in a drilling cycle is an error;
+* cancelling a cycle leaves no motion mode in force: axis words after it need a motion code;
+* a tool length offset without ``H`` uses the selected tool; the orient code's ``R`` gives the angle;
+* codes in the table's ``native_g``/``native_m``/``user_m`` are kept verbatim, tagged with ``DIALECT``;
+  codes in its ``refused_g``/``refused_m`` are refused with a located error; any other M code is an error.
 """
 
 from __future__ import annotations
 
 from typing import Any, ClassVar
 
-from postproc.rs274.block_syntax import FanucBlockSyntax, _col_of_word, _second_col
-from dialects.fanuc.codes import g_key
+from postproc.context import Context
 from postproc.errors import ParseError, ProgramError
 from postproc.ir import Block, Dwell, NativeCode, SpindleOrientation
-from postproc.context import Context
 
-from postproc_linuxcnc import codes as ngc
+from .block_syntax import WordBlockSyntax, col_of_word, second_col
+from .codes import g_key
 
 REAL_LETTERS = frozenset("XYZABCUVWIJKRQPF")
 """Addresses read as real numbers, exactly as written."""
 INTEGER_LETTERS = frozenset("NTHDL")
 _STATE_KEY = "NgcBlockSyntax"
-"""``ctx.state.extra`` key: True while G80 leaves no motion mode in force."""
+"""``ctx.state.extra`` key: True while a cycle cancel leaves no motion mode in force."""
 _MOTION_GROUP = ("01", "09")
 
 
-class NgcBlockSyntax(FanucBlockSyntax):
-    """Lexed words -> neutral sections, for LinuxCNC milling (RS274/NGC)."""
+class NgcWordBlockSyntax(WordBlockSyntax):
+    """Lexed words -> neutral sections, RS274/NGC word rules; subclasses give the code table."""
 
-    XNAME = "NgcBlockSyntax"
     __slots__ = ()
-    DIALECT: ClassVar[str] = "linuxcnc"
-    """Tag of the verbatim (NativeCode) sections this syntax makes."""
-    G_CODES: ClassVar[dict[str, tuple[str, str, object]]] = ngc.G_CODES
-    NATIVE_G: ClassVar[dict[str, str]] = ngc.NATIVE_G
-    REFUSED_G: ClassVar[dict[str, str]] = ngc.REFUSED_G
-    M_CODES: ClassVar[dict[int, tuple[str, object]]] = ngc.M_CODES
-    NATIVE_M: ClassVar[dict[int, str]] = ngc.NATIVE_M
-    REFUSED_M: ClassVar[dict[int, str]] = ngc.REFUSED_M
-    USER_M: ClassVar[range] = ngc.USER_M
+    CONTROL: ClassVar[str] = ""
+    """How messages name the controller ("K in a drilling cycle: <CONTROL> counts repeats with L")."""
     NATIVE_M_WORDS: ClassVar[str] = "PQ"
     REAL_LETTERS: ClassVar[frozenset[str]] = REAL_LETTERS
     INTEGER_LETTERS: ClassVar[frozenset[str]] = INTEGER_LETTERS
@@ -63,15 +54,16 @@ class NgcBlockSyntax(FanucBlockSyntax):
             if up == "G":
                 self._g_code(ctx, block, num, codes, natives)
             elif up == "M":
-                at = ctx.at(block, _col_of_word(block, "M", num))
+                at = ctx.at(block, col_of_word(block, "M", num))
                 if "." in num:
                     raise ParseError(f"M code M{num} takes no decimal point", at)
                 number = int(num)
-                if number in self.REFUSED_M:
-                    raise ParseError(self.REFUSED_M[number], at)
+                refused = self.CODES.refused_m.get(number)
+                if refused is not None:
+                    raise ParseError(refused, at)
                 mcodes.append((number, num))
             elif up in raw:
-                raise ParseError(f"address {up} appears twice in one block", ctx.at(block, _second_col(block, up)))
+                raise ParseError(f"address {up} appears twice in one block", ctx.at(block, second_col(block, up)))
             else:
                 raw[up] = num
         self._path_tolerance(codes, natives, raw)
@@ -95,7 +87,8 @@ class NgcBlockSyntax(FanucBlockSyntax):
         if no_motion and not cycle_block and "01" not in codes and codes.get("00", ("", ""))[1] != "home":
             axis = next((k for k in values if k in "XYZABCUVW"), None)
             if axis is not None:
-                raise ProgramError("axis words with no motion mode in force (G80 cancels it: program G0 or G1)",
+                raise ProgramError(f"axis words with no motion mode in force ({self.spell('cycle_cancel')} cancels it: "
+                                   f"program {self.spell('motion', 'rapid')} or {self.spell('motion', 'linear')})",
                                    ctx.at(block, ctx.column_of(block, axis)))
         used = {"N"}
         if cycle_block:
@@ -123,22 +116,22 @@ class NgcBlockSyntax(FanucBlockSyntax):
 
     def _g_code(self, ctx: Context, block: Block, num: str, codes: dict[str, Any], natives: list[str]) -> None:
         key = g_key(num)
-        refused = self.REFUSED_G.get(key)
+        refused = self.CODES.refused_g.get(key)
         if refused is not None:
-            raise ParseError(refused, ctx.at(block, _col_of_word(block, "G", num)))
-        entry = self.G_CODES.get(key)
+            raise ParseError(refused, ctx.at(block, col_of_word(block, "G", num)))
+        entry = self.CODES.g.get(key)
         if entry is None:
-            if key in self.NATIVE_G:
+            if key in self.CODES.native_g:
                 natives.append(key)
                 return
-            raise ParseError(f"unknown G code G{num}", ctx.at(block, _col_of_word(block, "G", num)))
+            raise ParseError(f"unknown G code G{num}", ctx.at(block, col_of_word(block, "G", num)))
         group = entry[0]
         other = codes.get(group)
         if other is None and group in _MOTION_GROUP:
             other = codes.get(_MOTION_GROUP[group == "01"])
         if other is not None:
             raise ParseError(f"G codes G{other[3]} and G{num} are both in one modal group",
-                             ctx.at(block, _col_of_word(block, "G", num)))
+                             ctx.at(block, col_of_word(block, "G", num)))
         codes[group] = (group, entry[1], entry[2], num)
 
     @staticmethod
@@ -151,46 +144,50 @@ class NgcBlockSyntax(FanucBlockSyntax):
     def _native(self, block: Block, ctx: Context, natives: list[str], raw: dict[str, str]) -> None:
         """Keep a block with a code the IR does not model verbatim, tagged with its meaning."""
         key = natives[0]
-        what = f"G{key} ({self.NATIVE_G.get(key, 'path blending with a tolerance')})"
+        what = f"G{key} ({self.CODES.native_g.get(key, 'path blending with a tolerance')})"
         block.add(NativeCode(self.DIALECT, what, block.text or ""))
         for up, num in raw.items():
             block.values[up] = float(num) if "." in num else int(num)
 
     def _check_cycle_words(self, block: Block, ctx: Context, values: dict[str, Any], cycle_block: bool) -> None:
-        """L counts repeats only in a cycle block; LinuxCNC refuses K there and L0."""
+        """L counts repeats only in a cycle block; K is refused there, and so is L0."""
         if not cycle_block:
             if "L" in values:
                 raise ProgramError("L (repeat count) outside a canned cycle",
                                    ctx.at(block, ctx.column_of(block, "L")))
             return
         if "K" in values:
-            raise ProgramError("K in a drilling cycle: LinuxCNC counts repeats with L",
+            raise ProgramError(f"K in a drilling cycle: {self.CONTROL} counts repeats with L",
                                ctx.at(block, ctx.column_of(block, "K")))
         if values.get("L", 1) < 1:
             raise ProgramError("a canned cycle cannot repeat zero times (L must be 1 or more)",
                                ctx.at(block, ctx.column_of(block, "L")))
 
     def _loaded_tool(self, block: Block, ctx: Context, values: dict[str, Any]) -> None:
-        """LinuxCNC's G43 without H applies the selected tool's offset."""
+        """A tool length offset without H applies the selected tool's offset."""
         tool = ctx.state.tool if "T" not in values else values["T"]
         if tool is None:
-            raise ProgramError("G43 without H uses the loaded tool, which is not known here: program H",
+            raise ProgramError(f"{self.spell('length', 'positive')} without H uses the loaded tool, which is not known "
+                               "here: program H",
                                ctx.at(block, ctx.column_of(block, "G")))
         values["H"] = tool
 
     def _machine_move(self, block: Block, ctx: Context, codes: dict[str, Any]) -> None:
-        """G53 moves in the motion mode in force, which must be G0 or G1 (Fanuc's G53 always rapids)."""
+        """Machine coordinates move in the motion mode in force, which must be rapid or linear (the ISO
+        reading always rapids)."""
         mode = codes["01"][2] if "01" in codes else ctx.state.motion
         if ctx.state.extra.get(_STATE_KEY) and "01" not in codes:
             mode = None
         if mode not in ("rapid", "linear"):
-            raise ProgramError("G53 needs G0 or G1 in force", ctx.at(block, _col_of_word(block, "G", "53")))
+            machine = self.spell("machine")
+            raise ProgramError(f"{machine} needs {self.spell('motion', 'rapid')} or {self.spell('motion', 'linear')} "
+                               "in force", ctx.at(block, col_of_word(block, machine[:1], machine[1:])))
         block.sections["Motion"].mode = mode  # type: ignore[attr-defined]
 
     def _ngc_dwell(self, block: Block, ctx: Context, values: dict[str, Any], used: set[str], num: str) -> None:
-        """G4 P<seconds> (Fanuc: P milliseconds or X seconds), made here before the shared logic runs."""
+        """Dwell P<seconds> (the ISO reading: P milliseconds or X seconds), made before the shared logic runs."""
         if "P" not in values:
-            raise ProgramError("G4 needs a dwell time P (seconds)", ctx.at(block, _col_of_word(block, "G", num)))
+            raise ProgramError(f"{self.spell('dwell')} needs a dwell time P (seconds)", ctx.at(block, col_of_word(block, "G", num)))
         seconds = float(values["P"])
         if seconds < 0:
             raise ProgramError("a dwell time cannot be negative", ctx.at(block, ctx.column_of(block, "P")))
@@ -198,14 +195,15 @@ class NgcBlockSyntax(FanucBlockSyntax):
         block.add(Dwell(seconds))
 
     def unknown_m(self, block: Block, ctx: Context, number: int, num: str) -> str:
-        """LinuxCNC knows its M codes: user M100-M199 are kept verbatim, anything else is an error."""
-        if number in self.NATIVE_M:
-            return f"M{num} ({self.NATIVE_M[number]})"
-        if number in self.USER_M:
+        """RS274/NGC controls know their M codes: user M codes are kept verbatim, anything else is an error."""
+        native = self.CODES.native_m.get(number)
+        if native is not None:
+            return f"M{num} ({native})"
+        if number in self.CODES.user_m:
             return f"M{num} (user M code)"
-        raise ParseError(f"unknown M code M{num}", ctx.at(block, _col_of_word(block, "M", num)))
+        raise ParseError(f"unknown M code M{num}", ctx.at(block, col_of_word(block, "M", num)))
 
     def orient(self, block: Block, ctx: Context, num: str, values: dict[str, Any], used: set[str]) -> None:
-        """M19: LinuxCNC takes the angle from R (Q is a timeout, P the direction)."""
+        """The orient code takes the angle from R (Q is a timeout, P the direction)."""
         block.add(SpindleOrientation(float(values.get("R", ctx.setup.cycles.orient_angle))))
         used.update("RQP")

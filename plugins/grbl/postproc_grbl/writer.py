@@ -25,7 +25,10 @@ from typing import Any, ClassVar
 from postproc.errors import Location, UnsupportedError
 from postproc.ir import Block, CompoundMotion, DistanceMode, Motion, ProgramControl, Section
 from postproc.state import PLANE_AXES
+from postproc.rs274.codes import CodeTable
 from postproc.rs274.writer import WordWriter
+
+from .codes import CODES
 
 DROPPABLE = frozenset({
     "ToolLengthOffset", "CutterCompensation", "BlockDelete", "PathControl", "SpindleOrientation",
@@ -38,20 +41,7 @@ GRBL_AXES = frozenset("XYZ")
 
 class GrblWriter(WordWriter):
     DIALECT: ClassVar[str] = "grbl"
-    MOTION: ClassVar[dict[str, str]] = {"rapid": "G0", "linear": "G1", "cw": "G2", "ccw": "G3",
-                                        "home": "G28", "home2": "G30"}
-    FEED_MODE: ClassVar[dict[str, str]] = {"per_min": "G94", "inverse_time": "G93"}
-    RETURN_LEVEL: ClassVar[dict[str, str]] = {}
-    CUTTER: ClassVar[dict[str, str]] = {"off": "G40"}
-    LENGTH: ClassVar[dict[str, str]] = {"cancel": "G49"}
-    PATH: ClassVar[dict[str, str]] = {"exact_stop": "G61"}
-    PATH_ONCE: ClassVar[str | None] = None
-    SPINDLE: ClassVar[dict[str, str]] = {"cw": "M3", "ccw": "M4", "stop": "M5"}
-    COOLANT: ClassVar[dict[str, str]] = {"mist": "M7", "flood": "M8", "off": "M9"}
-    PROGRAM: ClassVar[dict[str, str]] = {"stop": "M0", "optional_stop": "M1", "end": "M2", "end_rewind": "M30"}
-    TOOL_CHANGE: ClassVar[str | None] = None
-    ORIENT: ClassVar[str | None] = None
-    DWELL: ClassVar[str] = "G4"
+    CODES: ClassVar[CodeTable] = CODES
     DWELL_WORD: ClassVar[str] = "Ps"
 
     def __init__(self, ctx: Any, source_dialect: str) -> None:
@@ -143,7 +133,7 @@ class GrblWriter(WordWriter):
         pause = isinstance(item, ProgramControl) and item.kind == "stop"
         if pause and self.spindle != "stop":
             self.spindle = "stop"
-            return self.SPINDLE["stop"] + "\n" + line
+            return self.code("spindle", "stop", "spindle stop", block) + "\n" + line
         return line
 
     # -- section words -----------------------------------------------------------------------------
@@ -180,7 +170,7 @@ class GrblWriter(WordWriter):
     def cutter_compensation_words(self, s: Any, block: Block) -> list[str]:
         if s.mode != "off":
             self.unsupported(f"cutter radius compensation ({s.mode})", block)
-        return ["G40"]
+        return super().cutter_compensation_words(s, block)
 
     def tool_select_words(self, s: Any, block: Block) -> list[str]:
         self.tool = s.number
@@ -196,10 +186,10 @@ class GrblWriter(WordWriter):
         if self.spindle != "stop" and "SpindleControl" not in block.sections:
             self.ctx.diagnostics.warn("the spindle is running at a tool change: M5 written before the pause",
                                       Location(self.ctx.file, block.line, 1))
-            words.append("M5")
+            words.append(self.code("spindle", "stop", "spindle stop", block))
             self.spindle = "stop"
         tool = f"T{self.tool}" if self.tool is not None else "THE NEXT TOOL"
-        return words + ["M0", self.comment(f"TOOL CHANGE: LOAD {tool}, THEN CYCLE START")]
+        return words + [self.code("program", "stop", "a program stop", block), self.comment(f"TOOL CHANGE: LOAD {tool}, THEN CYCLE START")]
 
     def spindle_control_words(self, s: Any, block: Block) -> list[str]:
         self.spindle = s.direction
@@ -209,11 +199,13 @@ class GrblWriter(WordWriter):
         mode = self.ctx.setup.cycles.orientation
         angle = float(s.angle)
         if mode == "m19":
-            return ["M19"] + ([f"R{self.number(angle)}"] if angle else [])
+            return [self.code("orient", None, "an oriented spindle stop", block)] + (
+                [f"R{self.number(angle)}"] if angle else [])
         if mode == "stop":
-            words = [] if self.spindle == "stop" or "SpindleControl" in block.sections else ["M5"]
+            stop = self.code("spindle", "stop", "spindle stop", block)
+            words = [] if self.spindle == "stop" or "SpindleControl" in block.sections else [stop]
             self.spindle = "stop"
-            return words + ["M0", self.comment(f"ORIENT THE SPINDLE TO {self.number(angle)} DEG BY HAND, "
+            return words + [self.code("program", "stop", "a program stop", block), self.comment(f"ORIENT THE SPINDLE TO {self.number(angle)} DEG BY HAND, "
                                                "THEN CYCLE START")]
         self.unsupported("an oriented spindle stop (M19); a set-up with <Cycles orientation=\"stop\"/> "
                          "pauses for the operator instead", block)

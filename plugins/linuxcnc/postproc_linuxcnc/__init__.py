@@ -19,7 +19,7 @@ from postproc.setup import MachineSetup
 from postproc.context import Context
 from postproc.xmlio import XFactory
 
-from postproc.rs274.ngc_block_syntax import NgcBlockSyntax
+from .block_syntax import NgcBlockSyntax
 from .reader import NgcReader
 from .writer import LinuxcncWriter
 

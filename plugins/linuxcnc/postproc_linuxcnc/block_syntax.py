@@ -1,0 +1,20 @@
+"""NgcBlockSyntax: LinuxCNC's reading of a block, the RS274/NGC word rules with LinuxCNC's code table."""
+
+from __future__ import annotations
+
+from typing import ClassVar
+
+from postproc.rs274.codes import CodeTable
+from postproc.rs274.ngc_block_syntax import NgcWordBlockSyntax
+
+from .codes import CODES
+
+
+class NgcBlockSyntax(NgcWordBlockSyntax):
+    """Lexed words -> neutral sections, for LinuxCNC milling (RS274/NGC)."""
+
+    XNAME = "NgcBlockSyntax"
+    __slots__ = ()
+    DIALECT: ClassVar[str] = "linuxcnc"
+    CONTROL: ClassVar[str] = "LinuxCNC"
+    CODES: ClassVar[CodeTable] = CODES
