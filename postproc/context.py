@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import re
 
+from .cycle_words import CycleWords
 from .errors import Diagnostics, Location
 from .ir import Block
 from .setup import MachineSetup
@@ -11,16 +12,20 @@ from .state import ModalState
 
 
 class Context:
-    """What every step of one run shares: file name, set-up, diagnostics and modal state."""
+    """What every step of one run shares: file name, set-up, diagnostics, modal state, and what the
+    reading dialect tells the neutral steps about its words."""
 
-    __slots__ = ("file", "setup", "diagnostics", "state", "dialect", "on_unsupported")
+    __slots__ = ("file", "setup", "diagnostics", "state", "dialect", "cycle_words", "on_unsupported")
 
-    def __init__(self, file: str, setup: MachineSetup, diagnostics: Diagnostics, dialect: str) -> None:
+    def __init__(self, file: str, setup: MachineSetup, diagnostics: Diagnostics, dialect: str,
+                 cycle_words: CycleWords | None = None) -> None:
         self.file = file
         self.setup = setup
         self.diagnostics = diagnostics
         self.state = ModalState()
         self.dialect = dialect
+        self.cycle_words = cycle_words
+        """The reading dialect's hole-cycle letters and names (None: it reads no canned cycles)."""
         self.on_unsupported = "error"
         """'error' or 'warn': what a construct the target cannot express does."""
 

@@ -16,6 +16,7 @@ from .errors import Diagnostics, Location, PostprocError, UnsupportedError
 from .ir import Block
 from .setup import MachineSetup
 from .context import Context
+from .cycle_words import CycleWords
 from .syntax import Pipeline, load_pipeline
 
 
@@ -117,6 +118,9 @@ class Dialect:
     """Writer class, or None for a read-only dialect."""
     PIPELINE_FILE: ClassVar[str | None] = None
     """Name of the reading pipeline XML shipped in the dialect's package."""
+    CYCLE_WORDS: ClassVar[CycleWords | None] = None
+    """Which letters carry the hole-cycle words when this dialect is read, and how it names its
+    cycles (None: it reads no canned cycles)."""
     NATIVE_CYCLES: ClassVar[frozenset[str]] = frozenset()
     """Neutral names of the canned cycles the controller runs natively."""
     SPINDLE_ORIENTATION: ClassVar[bool] = True
@@ -131,7 +135,7 @@ class Dialect:
     @classmethod
     def capabilities(cls) -> dict[str, object]:
         """The capability table: every UPPER_CASE attribute that describes the controller."""
-        skip = {"NAME", "DESCRIPTION", "READER", "WRITER", "PIPELINE_FILE"}
+        skip = {"NAME", "DESCRIPTION", "READER", "WRITER", "PIPELINE_FILE", "CYCLE_WORDS"}
         table: dict[str, object] = {}
         for klass in reversed(cls.__mro__):
             for key, value in vars(klass).items():
@@ -155,7 +159,7 @@ class Dialect:
 
     @classmethod
     def context(cls, file: str, setup: MachineSetup, diagnostics: Diagnostics) -> Context:
-        return Context(file, setup, diagnostics, cls.NAME)
+        return Context(file, setup, diagnostics, cls.NAME, cls.CYCLE_WORDS)
 
 
 def _is_package(module: str) -> bool:

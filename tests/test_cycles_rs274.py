@@ -8,6 +8,7 @@ from typing import Any
 
 import pytest
 
+from dialects.fanuc import Fanuc
 from dialects.fanuc.block_syntax import FanucBlockSyntax
 from dialects.fanuc.reader import FanucReader
 from postproc.api import read_program
@@ -31,7 +32,7 @@ def read(text: str) -> tuple[list[Block], Context]:
     """Fanuc's block syntax (calculator input, L repeats) with the rs274 cycle semantics."""
     setup = MachineSetup(input=InputSettings(repeat_address="L", decimal_point="calculator"),
                          cycles=CycleSettings(peck_retract=LINUXCNC_D, peck_clearance=LINUXCNC_D))
-    ctx = Context("t.ngc", setup, Diagnostics(ErrorLevel.IMMEDIATE), "fanuc")
+    ctx = Context("t.ngc", setup, Diagnostics(ErrorLevel.IMMEDIATE), "fanuc", Fanuc.CYCLE_WORDS)
     pipeline = Pipeline("rs274", [FanucBlockSyntax(), CannedCycleResolveSyntax("rs274"), ModalStateSyntax()])
     return list(pipeline.run(FanucReader(ctx).read(text.splitlines(keepends=True)), ctx)), ctx
 

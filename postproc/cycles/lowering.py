@@ -24,7 +24,6 @@ from postproc.ir import (
 from postproc.context import Context
 
 from .section import CannedCycle
-from .semantics import CODES
 
 _CANCELS = frozenset(("rapid", "linear", "cw", "ccw"))
 
@@ -102,7 +101,7 @@ def _handle_orientation(block: Block, compound: CompoundMotion, ctx: Context, mo
                 items.append(item)
         compound.items = items
         return True
-    code = CODES.get(compound.term, compound.term)
+    code = ctx.cycle_words.name(compound.term) if ctx.cycle_words is not None else compound.term
     err = UnsupportedError(f"{code} needs an oriented spindle stop, which the {target.NAME} dialect cannot "
                            f"make (set <Cycles orientation=\"stop\"/> or \"m19\")", ctx.at(block))
     if ctx.on_unsupported == "warn":

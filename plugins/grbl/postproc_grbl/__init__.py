@@ -30,7 +30,10 @@ from typing import Callable
 
 from postproc.dialect import Dialect
 from postproc.hookspecs import hookimpl
+from postproc.rs274.cycle_words import rs274_cycle_words
 from postproc.xmlio import XFactory
+
+from .codes import CODES
 
 from .block_syntax import GrblBlockSyntax
 from .reader import GrblReader
@@ -43,6 +46,8 @@ class Grbl(Dialect):
     READER = GrblReader
     WRITER = GrblWriter
     PIPELINE_FILE = "grbl.xml"
+    CYCLE_WORDS = rs274_cycle_words(CODES, ("L",))
+    """R level, Q peck/shift, P dwell (seconds), L repeats."""
     NATIVE_CYCLES = frozenset()
     """No canned cycles: every cycle is expanded to G0/G1/G4/M3/M4/M5."""
     SPINDLE_ORIENTATION = False

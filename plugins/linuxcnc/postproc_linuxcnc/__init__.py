@@ -17,7 +17,10 @@ from postproc.errors import Diagnostics
 from postproc.hookspecs import hookimpl
 from postproc.setup import MachineSetup
 from postproc.context import Context
+from postproc.rs274.cycle_words import rs274_cycle_words
 from postproc.xmlio import XFactory
+
+from .codes import CODES
 
 from .block_syntax import NgcBlockSyntax
 from .reader import NgcReader
@@ -35,6 +38,8 @@ class Linuxcnc(Dialect):
     READER = NgcReader
     WRITER = LinuxcncWriter
     PIPELINE_FILE = "linuxcnc.xml"
+    CYCLE_WORDS = rs274_cycle_words(CODES, ("L",))
+    """R level, Q peck/shift, P dwell (seconds), L repeats."""
     NATIVE_CYCLES = NATIVE
     """G73, G74, G81-G86, G89. Not G76 (threading here), G87/G88 (RS274/NGC words and motion), and
     there is no fine boring: those are expanded."""
