@@ -29,6 +29,8 @@ class CycleWords:
     """The shift of a fine- or back-boring cycle, e.g. "Q"."""
     dwell: str
     """The dwell at the hole bottom, e.g. "P"."""
+    spindle: Mapping[str, str] = field(default_factory=dict)
+    """Spindle direction ("cw", "ccw") -> how the dialect spells it, for messages (e.g. "M3")."""
     bottom: Mapping[str, str] = field(default_factory=dict)
     """Plane ("XY", "ZX", "YZ") -> the letter of the hole bottom; a plane not listed takes the axis
     normal to it (Z in XY)."""

@@ -87,3 +87,12 @@ def test_rs274_dialects_name_cycles_from_their_own_tables() -> None:
     assert Fanuc.CYCLE_WORDS is not None
     assert Fanuc.CYCLE_WORDS.name("peck_deep") == "G83" and Fanuc.CYCLE_WORDS.return_to_r == "G99"
     assert Fanuc.CYCLE_WORDS.repeat_letters("K+L") == ("K", "L")
+
+
+def test_linuxcnc_messages_spell_linuxcnc_codes() -> None:
+    from postproc.api import read_program
+    from postproc.errors import ErrorList
+    with pytest.raises(ErrorList) as errs:
+        read_program(["G21 G17 G90\n", "G0 X0 Y0 Z10\n", "G98 G84 X1 Y0 Z-1 R2 F100\n"], file="t.ngc",
+                     dialect="linuxcnc")
+    assert [str(e) for e in errs.value.errors] == ["t.ngc:3:5: error: G84 needs the spindle turning clockwise (M3)"]

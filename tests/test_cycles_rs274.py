@@ -29,7 +29,8 @@ LINUXCNC_D = 0.254
 
 
 def read(text: str) -> tuple[list[Block], Context]:
-    """Fanuc's block syntax (calculator input, L repeats) with the rs274 cycle semantics."""
+    """Fanuc's block syntax (calculator input, L repeats) with the rs274 cycle semantics (messages spell
+    codes as the reading block syntax does: Fanuc's)."""
     setup = MachineSetup(input=InputSettings(repeat_address="L", decimal_point="calculator"),
                          cycles=CycleSettings(peck_retract=LINUXCNC_D, peck_clearance=LINUXCNC_D))
     ctx = Context("t.ngc", setup, Diagnostics(ErrorLevel.IMMEDIATE), "fanuc", Fanuc.CYCLE_WORDS)
@@ -116,7 +117,7 @@ def test_manual_boring_leaves_the_retract_to_the_operator() -> None:
     ("G98 G81 X1 Y0 Z-1 R2 F100\nG82 X2 R2 P1\n", "G82 needs a hole bottom Z"),
     ("G98 G81 X1 Y0 Z-1 R2 F100\nG82 X2 Z-1 P1\n", "G82 needs an R level R"),
     ("G98 G82 X1 Y0 Z-1 R2 F100\n", "G82 needs a dwell time P"),
-    ("G98 G84 X1 Y0 Z-1 R2 F100\n", "G84 needs the spindle turning clockwise (M3)"),
+    ("G98 G84 X1 Y0 Z-1 R2 F100\n", "G84 needs the spindle turning clockwise (M03)"),
     ("G98 G76 X1 Y0 Z-1 R2 Q1 F100\n", "G76 has no fine bore meaning under rs274 cycle semantics"),
     ("G98 G81 X1 Y0 Z1 R0 F100\n", "G81 hole bottom Z is above the R level"),
 ])

@@ -264,7 +264,10 @@ class CannedCycleResolveSyntax(Syntax):
             where = fail.ctx.at(fail.block, _code_column(fail.block, cw.return_to_r))
             raise ProgramError(f"{code} cannot be used with {cw.return_to_r}", where)
         if rs274 and kind in TAP and spindle != ("cw" if kind == "tap" else "ccw"):
-            turning = "clockwise (M3)" if kind == "tap" else "counterclockwise (M4)"
+            direction = "cw" if kind == "tap" else "ccw"
+            turning = "clockwise" if direction == "cw" else "counterclockwise"
+            if direction in cw.spindle:
+                turning += f" ({cw.spindle[direction]})"
             raise fail(f"{code} needs the spindle turning {turning}")
         if rs274 and kind in ("bore_stop", "bore_manual") and spindle not in ("cw", "ccw"):
             raise fail(f"{code} needs the spindle turning")
