@@ -10,7 +10,7 @@ from __future__ import annotations
 import abc
 from importlib import resources
 from pathlib import Path
-from typing import ClassVar, Iterable, Iterator, TextIO
+from typing import Callable, ClassVar, Iterable, Iterator, TextIO
 
 from .errors import Diagnostics, Location, PostprocError, UnsupportedError
 from .ir import Block
@@ -118,6 +118,9 @@ class Dialect:
     """Writer class, or None for a read-only dialect."""
     PIPELINE_FILE: ClassVar[str | None] = None
     """Name of the reading pipeline XML shipped in the dialect's package."""
+    LOWERING: ClassVar[tuple[Callable[..., Iterator[Block]], ...]] = ()
+    """Lowering steps only this dialect needs as a target (``postproc.lower``), run after the generic
+    ones, in order: pure block-stream transforms ``step(blocks, ctx, target)``."""
     CYCLE_WORDS: ClassVar[CycleWords | None] = None
     """Which letters carry the hole-cycle words when this dialect is read, and how it names its
     cycles (None: it reads no canned cycles)."""
@@ -135,7 +138,7 @@ class Dialect:
     @classmethod
     def capabilities(cls) -> dict[str, object]:
         """The capability table: every UPPER_CASE attribute that describes the controller."""
-        skip = {"NAME", "DESCRIPTION", "READER", "WRITER", "PIPELINE_FILE", "CYCLE_WORDS"}
+        skip = {"NAME", "DESCRIPTION", "READER", "WRITER", "PIPELINE_FILE", "CYCLE_WORDS", "LOWERING"}
         table: dict[str, object] = {}
         for klass in reversed(cls.__mro__):
             for key, value in vars(klass).items():

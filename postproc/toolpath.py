@@ -402,13 +402,12 @@ def toolpath_events(lines: Iterable[str], *, file: str, dialect: str | type[Dial
     ``diagnostics``); events already yielded then belong to a failed run."""
     setup = setup or MachineSetup()
     diagnostics = diagnostics or Diagnostics()
+    registry = registry or default_registry()
     if isinstance(dialect, str):
-        dialect = (registry or default_registry()).dialect(dialect)
-    elif registry is None:
-        default_registry()  # make sure every plugin's XML classes and transforms are loaded
+        dialect = registry.dialect(dialect)
     with gc_paused():
         ctx, blocks = read_blocks(lines, file, dialect, setup, diagnostics)
-        lowered = lower_for(blocks, ctx, ToolpathTarget, "error")
+        lowered = lower_for(blocks, ctx, ToolpathTarget, "error", registry.lowerings)
         yield from simulate(lowered, ctx)
     if check:
         diagnostics.check()
