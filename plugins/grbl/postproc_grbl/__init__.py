@@ -36,6 +36,7 @@ from postproc.xmlio import XFactory
 from .codes import CODES
 
 from .block_syntax import GrblBlockSyntax
+from .lowering import cancel_length_offset_first, close_full_circles, pause_for_tool_change
 from .reader import GrblReader
 from .writer import GrblWriter
 
@@ -53,7 +54,10 @@ class Grbl(Dialect):
     SPINDLE_ORIENTATION = False
     """No M19: cycles that need an oriented stop follow the set-up's ``Cycles orientation``."""
     TOOL_CHANGER = False
-    """M6 is rejected: a tool change is written as an M0 pause."""
+    """M6 is rejected: a tool change is written as an M0 pause (``pause_for_tool_change``)."""
+    LOWERING = (pause_for_tool_change, cancel_length_offset_first, close_full_circles)
+    """Rewrites into what grbl runs (``lowering.py``): tool change as a pause, G49 before motion, full
+    circles with an end point."""
     CUTTER_COMPENSATION = False
     """Only G40."""
     TOOL_LENGTH_OFFSET = False

@@ -1,10 +1,9 @@
 """grbl writer: the RS274 word writer with grbl 1.1's tables and its refusals.
 
 What grbl lacks is an ``UnsupportedError`` naming the construct, except where the target has one
-faithful spelling of the same physical action:
+faithful spelling of the same physical action. The block rewrites (a tool change as a ``T<n> M0``
+pause, G49 before motion, full circles) are grbl's lowering steps (``lowering.py``); here:
 
-* a tool change (M6, rejected by grbl) becomes ``T<n> M0``, a program pause with a comment naming the
-  tool, so the operator changes it by hand (the grbl reader reads ``T<n> M0`` back as a tool change);
 * an oriented spindle stop follows the set-up's ``<Cycles orientation=...>``: ``m19`` writes M19 anyway
   (a grbl build that has it), ``stop`` a program pause for the operator, ``error`` (default) refuses;
   grbl's M0 leaves the spindle turning, so a pause for the operator (also inside a cycle's
@@ -23,7 +22,7 @@ from __future__ import annotations
 from typing import Any, ClassVar
 
 from postproc.errors import Location, UnsupportedError
-from postproc.ir import Block, CompoundMotion, DistanceMode, Motion, ProgramControl, Section
+from postproc.ir import Block, CompoundMotion, ProgramControl, Section
 from postproc.state import PLANE_AXES
 from postproc.rs274.codes import CodeTable
 from postproc.rs274.writer import WordWriter
@@ -46,7 +45,6 @@ class GrblWriter(WordWriter):
 
     def __init__(self, ctx: Any, source_dialect: str) -> None:
         super().__init__(ctx, source_dialect)
-        self.tool: int | None = None
         self.plane = "XY"
         self.spindle = "stop"
         self._dropped: list[UnsupportedError] = []
@@ -67,44 +65,10 @@ class GrblWriter(WordWriter):
         return self.comment_out(block) + (text or "")
 
     def generate(self, block: Block) -> str:
-        sections = block.sections
-        motion = sections.get("Motion")
-        if motion is not None and motion.mode in ("cw", "ccw"):  # type: ignore[attr-defined]
-            return self._arc_block(block, motion)  # type: ignore[arg-type]
-        offset = sections.get("ToolLengthOffset")
-        if offset is not None and offset.mode == "cancel" and (  # type: ignore[attr-defined]
-                motion is not None or "CompoundMotion" in sections):
-            # grbl refuses G49 (an axis command of its own) in a block with motion: write it first.
-            first = Block(block.line, None, "\n")
-            first.sections = {"ToolLengthOffset": offset}
-            rest = Block(block.line, None, block.eol)
-            rest.sections = {k: v for k, v in sections.items() if k != "ToolLengthOffset"}
-            return super().generate(first) + super().generate(rest)
         text = super().generate(block)
         if block.text is None and block.sections and not text.strip():
             return ""  # a generated part whose only words grbl does without (G98/G99, G64)
         return text
-
-    def _arc_block(self, block: Block, arc: Motion) -> str:
-        """grbl needs an end point in the plane of every arc (no full-circle form): a full circle
-        written as ``G3 I-7.`` gets a zero increment, in G91 for this one block."""
-        plane = block.sections.get("Plane")
-        a0, a1, _ = PLANE_AXES[plane.plane if plane is not None else self.plane]  # type: ignore[attr-defined]
-        if a0 in arc.axes or a1 in arc.axes:
-            return super().generate(block)
-        distance = block.sections.get("DistanceMode")
-        mode = distance.mode if distance is not None else self.distance  # type: ignore[attr-defined]
-        absolute = mode == "absolute"
-        if absolute and arc.axes:
-            self.unsupported("a helical full circle with no end point in its plane, in absolute mode", block)
-        fixed = Block(block.line, None, block.eol)
-        fixed.sections = dict(block.sections)
-        fixed.sections["Motion"] = Motion(arc.mode, {a0: 0.0, **arc.axes}, arc.center, arc.radius)
-        if not absolute:
-            return super().generate(fixed)
-        fixed.sections["DistanceMode"] = DistanceMode("incremental")
-        text = super().generate(fixed)
-        return text + self.distance_mode_words(DistanceMode("absolute"), block)[0] + (block.eol or "\n")
 
     def plane_words(self, s: Any, block: Block) -> list[str]:
         self.plane = s.plane
@@ -159,6 +123,11 @@ class GrblWriter(WordWriter):
         extra = [a for a in s.axes if a not in GRBL_AXES]
         if extra:
             self.unsupported(f"motion of axis {extra[0]} (grbl drives X, Y and Z)", block)
+        if s.mode in ("cw", "ccw"):
+            plane = block.sections.get("Plane")
+            a0, a1, _ = PLANE_AXES[plane.plane if plane is not None else self.plane]  # type: ignore[attr-defined]
+            if a0 not in s.axes and a1 not in s.axes:  # what close_full_circles could not close
+                self.unsupported("a helical full circle with no end point in its plane, in absolute mode", block)
         return super().motion_words(s, block)
 
     def tool_length_offset_words(self, s: Any, block: Block) -> list[str]:
@@ -171,25 +140,6 @@ class GrblWriter(WordWriter):
         if s.mode != "off":
             self.unsupported(f"cutter radius compensation ({s.mode})", block)
         return super().cutter_compensation_words(s, block)
-
-    def tool_select_words(self, s: Any, block: Block) -> list[str]:
-        self.tool = s.number
-        return super().tool_select_words(s, block)
-
-    def tool_change_words(self, s: Any, block: Block) -> list[str]:
-        """No tool changer (grbl 1.1 rejects M6): ``T<n> M0``, a pause to change the tool by hand.
-        grbl ignores T, so the T word only names the tool; the grbl reader reads the pair back as a
-        tool change. A running spindle is stopped first, as a tool changer would."""
-        words: list[str] = []
-        if "ToolSelect" not in block.sections and self.tool is not None:
-            words.append(f"T{self.tool}")
-        if self.spindle != "stop" and "SpindleControl" not in block.sections:
-            self.ctx.diagnostics.warn("the spindle is running at a tool change: M5 written before the pause",
-                                      Location(self.ctx.file, block.line, 1))
-            words.append(self.code("spindle", "stop", "spindle stop", block))
-            self.spindle = "stop"
-        tool = f"T{self.tool}" if self.tool is not None else "THE NEXT TOOL"
-        return words + [self.code("program", "stop", "a program stop", block), self.comment(f"TOOL CHANGE: LOAD {tool}, THEN CYCLE START")]
 
     def spindle_control_words(self, s: Any, block: Block) -> list[str]:
         self.spindle = s.direction
