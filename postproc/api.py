@@ -61,7 +61,7 @@ def translate(lines: Iterable[str], out: TextIO, *, file: str, source: str, targ
         ctx, blocks = read_blocks(lines, file, src, setup, diagnostics)
         ctx.on_unsupported = on_unsupported
         lowered = lower_for(blocks, ctx, dst, on_unsupported, registry.lowerings)
-        writer = dst.WRITER(ctx, src.NAME)
+        writer = dst.WRITER(ctx, src.NAME, dst)
         writer.write(lowered, out)
     diagnostics.check()
     return diagnostics

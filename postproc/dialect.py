@@ -34,9 +34,15 @@ class Reader(abc.ABC):
 class Writer(abc.ABC):
     """Turns blocks into text. Subclasses implement ``write_block``."""
 
-    def __init__(self, ctx: Context, source_dialect: str) -> None:
+    def __init__(self, ctx: Context, source_dialect: str, target: type["Dialect"] | None = None) -> None:
         self.ctx = ctx
         self.source_dialect = source_dialect
+        self.target = target
+        """The dialect written, whose capability flags the writer reads (None: every flag holds)."""
+
+    def capable(self, flag: str) -> bool:
+        """Whether the target has the capability ``flag`` (an UPPER_CASE attribute of ``Dialect``)."""
+        return self.target is None or bool(getattr(self.target, flag))
 
     def write(self, blocks: Iterable[Block], out: TextIO) -> None:
         """Write every block. A block the target cannot express is an error, or with
@@ -127,13 +133,21 @@ class Dialect:
     NATIVE_CYCLES: ClassVar[frozenset[str]] = frozenset()
     """Neutral names of the canned cycles the controller runs natively."""
     SPINDLE_ORIENTATION: ClassVar[bool] = True
-    """The controller can stop the spindle at an angle (M19)."""
+    """The controller can stop the spindle at an angle (cycles that need it are handled per the set-up's
+    ``Cycles orientation`` otherwise)."""
     DWELL_UNIT: ClassVar[str] = "seconds"
-    """Unit of the dwell word the writer emits."""
+    """Unit of the dwell time the writer emits: "seconds" (a decimal number) or "milliseconds" (a whole
+    number)."""
     CUTTER_COMPENSATION: ClassVar[bool] = True
-    """Cutter radius compensation (G41/G42) exists (the writer refuses it otherwise; tested)."""
+    """Cutter radius compensation (left/right) exists (the writer refuses it otherwise)."""
     TOOL_LENGTH_OFFSET: ClassVar[bool] = True
-    """Tool length offset from a table (G43 H) exists (the writer refuses it otherwise; tested)."""
+    """Tool length offset from a table exists (the writer refuses it otherwise)."""
+    TOOL_CHANGER: ClassVar[bool] = True
+    """An automatic tool changer exists (the writer refuses a tool change otherwise, unless the
+    dialect's lowering rewrites it first)."""
+    CYCLE_SEMANTICS: ClassVar[str] = "fanuc"
+    """How the controller moves through its native canned cycles ('fanuc' or 'rs274', see
+    ``postproc.cycles.semantics``): a cycle resolved under other rules is expanded for it."""
 
     @classmethod
     def capabilities(cls) -> dict[str, object]:

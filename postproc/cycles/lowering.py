@@ -41,7 +41,7 @@ def _expand(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Ite
     forced = cycles.expanded()
     every = "all" in forced
     native = target.NATIVE_CYCLES
-    semantics = getattr(target, "CYCLE_SEMANTICS", "fanuc")
+    semantics = target.CYCLE_SEMANTICS
     can_orient = target.SPINDLE_ORIENTATION
     expanding = False  # from the first expanded block of a cycle to its cancel
     for block in blocks:

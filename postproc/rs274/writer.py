@@ -17,7 +17,7 @@ from .codes import CodeTable
 from ..ir import Block, CompoundMotion, Motion, Section
 from ..numbers import MAX_PLACES, canonical_number_re
 from ..context import Context
-from ..dialect import Writer
+from ..dialect import Dialect, Writer
 
 
 SECTION_ORDER = (
@@ -37,14 +37,14 @@ class WordWriter(Writer):
     """The dialect's code table: the writer spells each code as the table's first row for its meaning,
     and a meaning with no row is an ``UnsupportedError``."""
     DWELL_WORD: ClassVar[str] = ""
-    """Address and unit of the dwell time: 'X' seconds, 'P' milliseconds, or 'Ps' seconds in P
-    ('' : the dialect writes no dwell)."""
+    """Address of the dwell time, e.g. 'X' or 'P' ('': the dialect writes no dwell); its unit is the
+    target's ``DWELL_UNIT``."""
     IGNORED: ClassVar[frozenset[str]] = frozenset()
     """Sections that annotate a block and produce no words of their own."""
     TRANSFORMS: ClassVar[dict[str, Callable[["WordWriter", Any, Block], list[str]]]] = {}
 
-    def __init__(self, ctx: Context, source_dialect: str) -> None:
-        super().__init__(ctx, source_dialect)
+    def __init__(self, ctx: Context, source_dialect: str, target: type[Dialect] | None = None) -> None:
+        super().__init__(ctx, source_dialect, target)
         out = ctx.setup.output
         self.normalize = out.normalize or bool(out.renumber_start)
         """Renumbering rewrites the words, so it implies normalising."""
@@ -284,12 +284,16 @@ class WordWriter(Writer):
         return self._code("return", s.level, f"return to the {s.level} level", block)
 
     def cutter_compensation_words(self, s: Any, block: Block) -> list[str]:
+        if s.mode != "off" and not self.capable("CUTTER_COMPENSATION"):
+            self.unsupported(f"cutter radius compensation ({s.mode})", block)
         words = self._code("cutter", s.mode, f"cutter compensation {s.mode}", block)
         if s.register is not None:
             words.append(f"D{int(s.register):02d}")
         return words
 
     def tool_length_offset_words(self, s: Any, block: Block) -> list[str]:
+        if s.mode != "cancel" and not self.capable("TOOL_LENGTH_OFFSET"):
+            self.unsupported("a tool length offset from a table", block)
         words = self._code("length", s.mode, f"tool length offset {s.mode}", block)
         if s.register is not None:
             words.append(f"H{int(s.register):02d}")
@@ -308,13 +312,11 @@ class WordWriter(Writer):
 
     def dwell_words(self, s: Any, block: Block) -> list[str]:
         code = self.code("dwell", None, "a dwell", block)
-        if self.DWELL_WORD == "P":
-            return [code, f"P{round(s.seconds * 1000)}"]
-        if self.DWELL_WORD == "Ps":
-            return [code, "P" + self.seconds(s.seconds)]
-        if self.DWELL_WORD == "X":
-            return [code, "X" + self.seconds(s.seconds)]
-        self.unsupported("a dwell", block)
+        if not self.DWELL_WORD:
+            self.unsupported("a dwell", block)
+        if self.target is not None and self.target.DWELL_UNIT == "milliseconds":
+            return [code, f"{self.DWELL_WORD}{round(s.seconds * 1000)}"]
+        return [code, self.DWELL_WORD + self.seconds(s.seconds)]
 
     def seconds(self, value: float) -> str:
         text = f"{value:.3f}".rstrip("0")
@@ -356,6 +358,8 @@ class WordWriter(Writer):
         return [f"T{s.number}"]
 
     def tool_change_words(self, s: Any, block: Block) -> list[str]:
+        if not self.capable("TOOL_CHANGER"):
+            self.unsupported("a tool change (no tool changer)", block)
         return self._code("tool_change", None, "a tool change", block)
 
     def spindle_control_words(self, s: Any, block: Block) -> list[str]:

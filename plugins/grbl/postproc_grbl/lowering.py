@@ -26,7 +26,7 @@ from postproc.state import PLANE_AXES
 
 
 def pause_for_tool_change(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
-    if ctx.dialect == target.NAME:
+    if ctx.dialect == target.NAME or target.TOOL_CHANGER:
         return blocks
     return _pause_for_tool_change(blocks, ctx)
 

@@ -41,10 +41,10 @@ GRBL_AXES = frozenset("XYZ")
 class GrblWriter(WordWriter):
     DIALECT: ClassVar[str] = "grbl"
     CODES: ClassVar[CodeTable] = CODES
-    DWELL_WORD: ClassVar[str] = "Ps"
+    DWELL_WORD: ClassVar[str] = "P"
 
-    def __init__(self, ctx: Any, source_dialect: str) -> None:
-        super().__init__(ctx, source_dialect)
+    def __init__(self, ctx: Any, source_dialect: str, target: Any = None) -> None:
+        super().__init__(ctx, source_dialect, target)
         self.plane = "XY"
         self.spindle = "stop"
         self._dropped: list[UnsupportedError] = []
@@ -135,11 +135,6 @@ class GrblWriter(WordWriter):
             register = f" H{s.register}" if s.register is not None else ""
             self.unsupported(f"a tool length offset from a table (G43{register}; grbl has only G43.1)", block)
         return super().tool_length_offset_words(s, block)
-
-    def cutter_compensation_words(self, s: Any, block: Block) -> list[str]:
-        if s.mode != "off":
-            self.unsupported(f"cutter radius compensation ({s.mode})", block)
-        return super().cutter_compensation_words(s, block)
 
     def spindle_control_words(self, s: Any, block: Block) -> list[str]:
         self.spindle = s.direction

@@ -24,7 +24,7 @@ class LinuxcncWriter(WordWriter):
     DIALECT: ClassVar[str] = "linuxcnc"
     CODES: ClassVar[CodeTable] = CODES
     """G76 threads, G87/G88 take other words: no row spells Fanuc's fine, back or manual boring."""
-    DWELL_WORD: ClassVar[str] = "Ps"
+    DWELL_WORD: ClassVar[str] = "P"
 
     def program_start(self, s: Any, block: Block) -> str:
         """LinuxCNC reads O as an O-word (subprograms, loops): the program number stays a comment."""
