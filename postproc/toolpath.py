@@ -34,7 +34,7 @@ from .ir import Block, Motion, Section
 from .lower import lower_for
 from .plugins import Registry, default_registry
 from .setup import MachineSetup
-from .state import MM_PER_INCH, PLANE_AXES
+from .state import MM_PER_INCH, MODAL_KEYS, PLANE_AXES, ModalState
 from .context import Context
 
 Event = dict[str, Any]
@@ -81,17 +81,19 @@ class Simulator:
         self.keys = tuple((a, a.lower()) for a in self.axes)
         self.pos = start_position(setup)
         self.rounded = {a: num(v) for a, v in self.pos.items()}
+        self.modal = ModalState()
+        """The program's modal state (units, plane, distance and feed mode, tool...), in program terms."""
         self.scale = 1.0
-        self.plane = "XY"
+        """mm per program unit (from ``modal.units``)."""
         self.incremental = False
-        self.feed_mode = "per_min"
+        """``modal.distance`` is incremental (kept at hand: every move reads it)."""
         self.feed: float | None = None
+        """The feed in force in mm/min (or the inverse-time value), None until programmed."""
         self.header_mode: str | None = None
         """Feed mode the header states, fixed by the first feed move (None until then)."""
-        self.tool: int | None = None
         self.spindle: str | None = None
-        """Spindle direction now (None until programmed): a tool change stops a turning spindle first,
-        as a tool changer does."""
+        """Spindle direction of the last spindle event (None before the first): a tool change stops a
+        turning spindle first, as a tool changer does, and stopping a stopped spindle is no event."""
         self.lathe = setup.input.machine_type == "lathe"
         self.ended = False
         self.current: Block | None = None
@@ -109,8 +111,8 @@ class Simulator:
             code = native.what.split(" ", 1)[0]
             raise UnsupportedError(f"{native.what} cannot be simulated", self._at(block, code))
         keys = sections.keys()
-        if not keys.isdisjoint(_MODAL_KEYS):
-            self.modal(get)
+        if not keys.isdisjoint(MODAL_KEYS):
+            self.apply_modal(sections)
         line = block.line
         before = not keys.isdisjoint(_EVENT_KEYS)
         spindle = get("SpindleControl")
@@ -118,13 +120,12 @@ class Simulator:
         if before:
             s = get("ToolSelect")
             if s is not None:
-                self.tool = s.number
                 if self.lathe and "ToolChange" not in sections:
                     emit({"line": line, "event": "tool", "number": s.number})
             if "ToolChange" in sections:
                 if self.spindle in ("cw", "ccw"):
                     self.spindle_event(line, "stop", emit)
-                emit({"line": line, "event": "tool", "number": self.tool})
+                emit({"line": line, "event": "tool", "number": self.modal.tool})
             if spindle is not None and spindle.direction != "stop":
                 self.spindle_event(line, spindle.direction, emit)
             if coolant is not None and coolant.mode != "off":
@@ -161,23 +162,16 @@ class Simulator:
         if s is not None:
             self.program_control(line, s.kind, emit)
 
-    def modal(self, get: Callable[[str], Any]) -> None:
-        """Apply the block's modal settings (before its motion, as a controller does)."""
-        s = get("Units")
+    def apply_modal(self, sections: dict[str, Section]) -> None:
+        """Apply the block's modal settings (before its motion, as a controller does); its feed is
+        converted with the units and feed mode the block leaves in force."""
+        modal = self.modal
+        modal.apply(sections)
+        self.scale = MM_PER_INCH if modal.units == "inch" else 1.0
+        self.incremental = modal.distance == "incremental"
+        s = sections.get("Feed")
         if s is not None:
-            self.scale = MM_PER_INCH if s.system == "inch" else 1.0
-        s = get("Plane")
-        if s is not None:
-            self.plane = s.plane
-        s = get("DistanceMode")
-        if s is not None:
-            self.incremental = s.mode == "incremental"
-        s = get("FeedMode")
-        if s is not None:
-            self.feed_mode = s.mode
-        s = get("Feed")
-        if s is not None:
-            self._set_feed(s.value)
+            self._set_feed(s.value)  # type: ignore[attr-defined]
 
     def spindle_event(self, line: int, direction: str, emit: Callable[[Event], None]) -> None:
         """A spindle change; stopping a stopped spindle is no event (two programs that differ only
@@ -193,6 +187,7 @@ class Simulator:
         if key == "Motion":
             self.motion(block, item, True, emit)  # type: ignore[arg-type]
         elif key == "Feed":
+            self.modal.feed = item.value  # type: ignore[attr-defined]
             self._set_feed(item.value)  # type: ignore[attr-defined]
         elif key == "Dwell":
             emit({"line": line, "event": "dwell", "seconds": num(item.seconds)})  # type: ignore[attr-defined]
@@ -268,7 +263,7 @@ class Simulator:
         emit(ev)
 
     def arc_move(self, block: Block, m: Motion, target: dict[str, float], emit: Callable[[Event], None]) -> None:
-        plane = self.plane
+        plane = self.modal.plane
         a1, a2, normal = PLANE_AXES[plane]
         pos = self.pos
         for axis in (a1, a2):
@@ -316,16 +311,16 @@ class Simulator:
 
     # -- feed --------------------------------------------------------------------------------------
     def _set_feed(self, value: float) -> None:
-        self.feed = value if self.feed_mode == "inverse_time" else value * self.scale
+        self.feed = value if self.modal.feed_mode == "inverse_time" else value * self.scale
 
     def _feed_into(self, ev: Event) -> None:
         if self.feed is None:
             raise ProgramError("a feed move with no feed rate (program F first)", self._at())
         ev["f"] = num(self.feed)
         if self.header_mode is None:
-            self.header_mode = self.feed_mode
-        elif self.feed_mode != self.header_mode:
-            ev["feed_mode"] = self.feed_mode
+            self.header_mode = self.modal.feed_mode
+        elif self.modal.feed_mode != self.header_mode:
+            ev["feed_mode"] = self.modal.feed_mode
 
     # -- locations (computed only for errors) ------------------------------------------------------
     def _at(self, block: Block | None = None, word: str | None = None) -> Location:
@@ -342,7 +337,6 @@ class Simulator:
 
 
 _CENTRE_LETTER = {"X": "I", "Y": "J", "Z": "K"}
-_MODAL_KEYS = frozenset(("Units", "Plane", "DistanceMode", "FeedMode", "Feed"))
 _EVENT_KEYS = frozenset(("ToolSelect", "ToolChange", "SpindleControl", "Coolant", "Dwell", "SpindleOrientation",
                          "ProgramControl"))
 

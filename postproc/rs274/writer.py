@@ -16,6 +16,7 @@ from ..errors import Location, UnsupportedError
 from .codes import CodeTable
 from ..ir import Block, CompoundMotion, Motion, Section
 from ..numbers import MAX_PLACES, canonical_number_re
+from ..state import ModalState
 from ..context import Context
 from ..dialect import Dialect, Writer
 
@@ -54,9 +55,8 @@ class WordWriter(Writer):
         self.decimals = out.decimals
         self.inch_decimals = out.inch_decimals
         self.copy_ok = source_dialect == self.DIALECT and not self.normalize and not self.renumber
-        self.units = "mm"
-        self.distance = "absolute"
-        self.feed: float | None = None
+        self.modal = ModalState()
+        """What the written program has in force so far (units, distance mode, feed, plane, spindle...)."""
 
     # -- numbers -----------------------------------------------------------------------------------
     def number(self, value: float) -> str:
@@ -65,7 +65,7 @@ class WordWriter(Writer):
         Rounds to the output decimals, but never silently: a value that would move by more than
         half a micrometre (or 0.00002 in) keeps up to ``MAX_PLACES`` places instead.
         """
-        places = self.decimals if self.units == "mm" else self.inch_decimals
+        places = self.decimals if self.modal.units == "mm" else self.inch_decimals
         text = f"{value:.{places}f}"
         if abs(float(text) - value) > 5e-7:
             text = f"{value:.{MAX_PLACES}f}"
@@ -95,17 +95,8 @@ class WordWriter(Writer):
         return self.generate(block)
 
     def _track(self, sections: dict[str, Section]) -> None:
-        if not sections:
-            return
-        s = sections.get("Units")
-        if s is not None:
-            self.units = s.system  # type: ignore[attr-defined]
-        s = sections.get("DistanceMode")
-        if s is not None:
-            self.distance = s.mode  # type: ignore[attr-defined]
-        s = sections.get("Feed")
-        if s is not None:
-            self.feed = s.value  # type: ignore[attr-defined]
+        if sections:
+            self.modal.apply(sections)
 
     def normalized(self, block: Block) -> str:
         """Rewrite a block from its words: explicit decimal points, optional renumbering."""
@@ -197,12 +188,12 @@ class WordWriter(Writer):
         elif head.sections:
             lines.append(self.generate(head))
         lines.append(note)
-        was_incremental = self.distance == "incremental"
+        was_incremental = self.modal.distance == "incremental"
         for item in compound.items:
             lines.append(self.item_line(item, block))
         if was_incremental:
             lines.append(self.code("distance", "incremental", "incremental distance mode", block) + "\n")
-            self.distance = "incremental"
+            self.modal.distance = "incremental"
         tail = Block(block.line, None, "\n")
         tail.sections = {k: rest[k] for k in tail_keys}
         comments = block.sections.get("Comments")
@@ -218,9 +209,9 @@ class WordWriter(Writer):
     def item_line(self, item: Section, block: Block) -> str:
         words: list[str] = []
         if isinstance(item, Motion):
-            if self.distance != "absolute":
+            if self.modal.distance != "absolute":
                 words.append(self.code("distance", "absolute", "absolute distance mode", block))
-                self.distance = "absolute"
+                self.modal.distance = "absolute"
             words.extend(self.motion_words(item, block))
         else:
             words.extend(self.section_words(item.KEY, item, block))
@@ -267,11 +258,11 @@ class WordWriter(Writer):
         return self._code("plane", s.plane, f"the {s.plane} plane", block)
 
     def units_words(self, s: Any, block: Block) -> list[str]:
-        self.units = s.system
+        self.modal.set_units(s.system)  # the block's numbers are written in its units
         return self._code("units", s.system, f"{s.system} units", block)
 
     def distance_mode_words(self, s: Any, block: Block) -> list[str]:
-        self.distance = s.mode
+        self.modal.distance = s.mode
         return self._code("distance", s.mode, f"{s.mode} distance mode", block)
 
     def work_offset_words(self, s: Any, block: Block) -> list[str]:
@@ -347,7 +338,7 @@ class WordWriter(Writer):
         return words
 
     def feed_words(self, s: Any, block: Block) -> list[str]:
-        self.feed = s.value
+        self.modal.feed = s.value
         return ["F" + self.number(s.value)]
 
     def spindle_speed_words(self, s: Any, block: Block) -> list[str]:

@@ -45,8 +45,6 @@ class GrblWriter(WordWriter):
 
     def __init__(self, ctx: Any, source_dialect: str, target: Any = None) -> None:
         super().__init__(ctx, source_dialect, target)
-        self.plane = "XY"
-        self.spindle = "stop"
         self._dropped: list[UnsupportedError] = []
         self._strict = False
         """True while writing an expansion: nothing may be dropped from a cycle's motion."""
@@ -70,10 +68,6 @@ class GrblWriter(WordWriter):
             return ""  # a generated part whose only words grbl does without (G98/G99, G64)
         return text
 
-    def plane_words(self, s: Any, block: Block) -> list[str]:
-        self.plane = s.plane
-        return super().plane_words(s, block)
-
     def section_words(self, key: str, section: Section, block: Block) -> list[str]:
         try:
             return super().section_words(key, section, block)
@@ -95,8 +89,8 @@ class GrblWriter(WordWriter):
         out): grbl's M0 leaves the spindle turning, so a running spindle is stopped first."""
         line = super().item_line(item, block)
         pause = isinstance(item, ProgramControl) and item.kind == "stop"
-        if pause and self.spindle != "stop":
-            self.spindle = "stop"
+        if pause and self.modal.spindle != "stop":
+            self.modal.spindle = "stop"
             return self.code("spindle", "stop", "spindle stop", block) + "\n" + line
         return line
 
@@ -125,7 +119,7 @@ class GrblWriter(WordWriter):
             self.unsupported(f"motion of axis {extra[0]} (grbl drives X, Y and Z)", block)
         if s.mode in ("cw", "ccw"):
             plane = block.sections.get("Plane")
-            a0, a1, _ = PLANE_AXES[plane.plane if plane is not None else self.plane]  # type: ignore[attr-defined]
+            a0, a1, _ = PLANE_AXES[plane.plane if plane is not None else self.modal.plane]  # type: ignore[attr-defined]
             if a0 not in s.axes and a1 not in s.axes:  # what close_full_circles could not close
                 self.unsupported("a helical full circle with no end point in its plane, in absolute mode", block)
         return super().motion_words(s, block)
@@ -136,10 +130,6 @@ class GrblWriter(WordWriter):
             self.unsupported(f"a tool length offset from a table (G43{register}; grbl has only G43.1)", block)
         return super().tool_length_offset_words(s, block)
 
-    def spindle_control_words(self, s: Any, block: Block) -> list[str]:
-        self.spindle = s.direction
-        return super().spindle_control_words(s, block)
-
     def spindle_orientation_words(self, s: Any, block: Block) -> list[str]:
         mode = self.ctx.setup.cycles.orientation
         angle = float(s.angle)
@@ -148,8 +138,8 @@ class GrblWriter(WordWriter):
                 [f"R{self.number(angle)}"] if angle else [])
         if mode == "stop":
             stop = self.code("spindle", "stop", "spindle stop", block)
-            words = [] if self.spindle == "stop" or "SpindleControl" in block.sections else [stop]
-            self.spindle = "stop"
+            words = [] if self.modal.spindle == "stop" or "SpindleControl" in block.sections else [stop]
+            self.modal.spindle = "stop"
             return words + [self.code("program", "stop", "a program stop", block), self.comment(f"ORIENT THE SPINDLE TO {self.number(angle)} DEG BY HAND, "
                                                "THEN CYCLE START")]
         self.unsupported("an oriented spindle stop (M19); a set-up with <Cycles orientation=\"stop\"/> "
