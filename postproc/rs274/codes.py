@@ -35,7 +35,10 @@ tool_change    None (M rows)                                             ToolCha
 coolant        mist, flood, off (M rows)                                 Coolant
 =============  ========================================================  ==========================
 
-M rows carry an empty modal group: M codes conflict by kind (two spindle codes in one block).
+M rows carry an empty modal group: M codes conflict by kind (two spindle codes in one block). The
+family's block syntaxes read a few G groups by label, Fanuc's numbering: "00" one-shot codes, "01"
+motion, "06" units, "08" tool length offset, "09" canned cycles, "15" path control; a dialect's rows
+give those meanings those labels (other groups only need to differ from each other).
 """
 
 from __future__ import annotations

@@ -140,8 +140,9 @@ class GrblWriter(WordWriter):
             stop = self.code("spindle", "stop", "spindle stop", block)
             words = [] if self.modal.spindle == "stop" or "SpindleControl" in block.sections else [stop]
             self.modal.spindle = "stop"
-            return words + [self.code("program", "stop", "a program stop", block), self.comment(f"ORIENT THE SPINDLE TO {self.number(angle)} DEG BY HAND, "
-                                               "THEN CYCLE START")]
+            pause = self.code("program", "stop", "a program stop", block)
+            note = self.comment(f"ORIENT THE SPINDLE TO {self.number(angle)} DEG BY HAND, THEN CYCLE START")
+            return words + [pause, note]
         self.unsupported("an oriented spindle stop (M19); a set-up with <Cycles orientation=\"stop\"/> "
                          "pauses for the operator instead", block)
         return []
