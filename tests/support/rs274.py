@@ -127,8 +127,10 @@ def run_rs274(
         out_path, err_path = work / "stdout.txt", work / "stderr.txt"
         with open(out_path, "wb") as out, open(err_path, "wb") as err:
             try:
+                # rs274 keeps its tool table in $HOME/.tool.mmap: a HOME of its own per run, or
+                # parallel runs (other test processes on the machine) corrupt each other's table.
                 proc = subprocess.run(cmd, cwd=work, stdin=subprocess.DEVNULL, stdout=out, stderr=err,
-                                      timeout=timeout, check=False)
+                                      timeout=timeout, check=False, env={**os.environ, "HOME": str(work)})
                 returncode: int | None = proc.returncode
             except subprocess.TimeoutExpired:
                 returncode = None
