@@ -29,7 +29,7 @@ typecheck: $(STAMP)
 	$(BIN)/pip install --quiet mypy
 	$(BIN)/python -m mypy --strict -p postproc -p dialects
 	for p in plugins/*/postproc_*/__init__.py; do p=$$(dirname $$p); \
-	  (cd $$(dirname $$p) && MYPYPATH=../..:../linuxcnc ../../$(BIN)/python -m mypy --strict -p $$(basename $$p)) || exit 1; \
+	  (cd $$(dirname $$p) && MYPYPATH=../.. ../../$(BIN)/python -m mypy --strict -p $$(basename $$p)) || exit 1; \
 	done
 
 clean:

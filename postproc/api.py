@@ -16,7 +16,7 @@ from .ir import Block
 from .lower import lower_for
 from .plugins import Registry, default_registry
 from .setup import MachineSetup
-from .syntax import Context
+from .context import Context
 
 
 @contextlib.contextmanager
@@ -60,8 +60,8 @@ def translate(lines: Iterable[str], out: TextIO, *, file: str, source: str, targ
     with gc_paused():
         ctx, blocks = read_blocks(lines, file, src, setup, diagnostics)
         ctx.on_unsupported = on_unsupported
-        lowered = lower_for(blocks, ctx, dst, on_unsupported)
-        writer = dst.WRITER(ctx, src.NAME)
+        lowered = lower_for(blocks, ctx, dst, on_unsupported, registry.lowerings)
+        writer = dst.WRITER(ctx, src.NAME, dst)
         writer.write(lowered, out)
     diagnostics.check()
     return diagnostics

@@ -15,7 +15,7 @@ from typing import Any, BinaryIO, Iterable, Sequence, TextIO
 from lxml import etree
 
 from .errors import UsageError
-from .toolpath import CENTRE_KEYS, arc_points
+from .geometry import CENTRE_KEYS, arc_points
 
 SVG_NS = "http://www.w3.org/2000/svg"
 PATH_POINTS = 20000

@@ -165,7 +165,7 @@ def cmd_translate(args: argparse.Namespace) -> int:
 
 
 def cmd_toolpath(args: argparse.Namespace) -> int:
-    from .toolpath import export_toolpath
+    from .export import export_toolpath
     setup = _setup(args.machine, args.lib)
     binary = args.format == "png"
     if binary and not args.output:

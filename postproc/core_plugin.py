@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from typing import Callable
+
 from . import cycles
 from .control import register_control
 from .cycles.lowering import expand_canned_cycles
@@ -9,7 +11,7 @@ from .hookspecs import hookimpl
 from .interp import ProgramSyntax
 from .expr import register_expressions
 from .ir import register_sections
-from .lower import register_transform
+from .lower import Lowering
 from .setup import MachineSetup
 from .syntax import Pipeline
 from .syntaxes.modal_state import ModalStateSyntax
@@ -26,4 +28,7 @@ def postproc_register_xml(factory: XFactory) -> None:
     cycles.register(factory)
 
 
-register_transform(expand_canned_cycles)
+
+@hookimpl
+def postproc_register_lowerings(register: Callable[[Lowering], None]) -> None:
+    register(expand_canned_cycles)

@@ -10,12 +10,14 @@ from __future__ import annotations
 import abc
 from importlib import resources
 from pathlib import Path
-from typing import ClassVar, Iterable, Iterator, TextIO
+from typing import Callable, ClassVar, Iterable, Iterator, TextIO
 
 from .errors import Diagnostics, PostprocError, UnsupportedError
 from .ir import Block
 from .setup import MachineSetup
-from .syntax import Context, Pipeline, load_pipeline
+from .context import Context
+from .cycle_words import CycleWords
+from .syntax import Pipeline, load_pipeline
 
 
 class Reader(abc.ABC):
@@ -32,9 +34,15 @@ class Reader(abc.ABC):
 class Writer(abc.ABC):
     """Turns blocks into text. Subclasses implement ``write_block``."""
 
-    def __init__(self, ctx: Context, source_dialect: str) -> None:
+    def __init__(self, ctx: Context, source_dialect: str, target: type["Dialect"] | None = None) -> None:
         self.ctx = ctx
         self.source_dialect = source_dialect
+        self.target = target
+        """The dialect written, whose capability flags the writer reads (None: every flag holds)."""
+
+    def capable(self, flag: str) -> bool:
+        """Whether the target has the capability ``flag`` (an UPPER_CASE attribute of ``Dialect``)."""
+        return self.target is None or bool(getattr(self.target, flag))
 
     def write(self, blocks: Iterable[Block], out: TextIO) -> None:
         """Write every block. A block the target cannot express is an error, or with
@@ -116,21 +124,35 @@ class Dialect:
     """Writer class, or None for a read-only dialect."""
     PIPELINE_FILE: ClassVar[str | None] = None
     """Name of the reading pipeline XML shipped in the dialect's package."""
+    LOWERING: ClassVar[tuple[Callable[..., Iterator[Block]], ...]] = ()
+    """Lowering steps only this dialect needs as a target (``postproc.lower``), run after the generic
+    ones, in order: pure block-stream transforms ``step(blocks, ctx, target)``."""
+    CYCLE_WORDS: ClassVar[CycleWords | None] = None
+    """Which letters carry the hole-cycle words when this dialect is read, and how it names its
+    cycles (None: it reads no canned cycles)."""
     NATIVE_CYCLES: ClassVar[frozenset[str]] = frozenset()
     """Neutral names of the canned cycles the controller runs natively."""
     SPINDLE_ORIENTATION: ClassVar[bool] = True
-    """The controller can stop the spindle at an angle (M19)."""
+    """The controller can stop the spindle at an angle (cycles that need it are handled per the set-up's
+    ``Cycles orientation`` otherwise)."""
     DWELL_UNIT: ClassVar[str] = "seconds"
-    """Unit of the dwell word the writer emits."""
+    """Unit of the dwell time the writer emits: "seconds" (a decimal number) or "milliseconds" (a whole
+    number)."""
     CUTTER_COMPENSATION: ClassVar[bool] = True
-    """Cutter radius compensation (G41/G42) exists (the writer refuses it otherwise; tested)."""
+    """Cutter radius compensation (left/right) exists (the writer refuses it otherwise)."""
     TOOL_LENGTH_OFFSET: ClassVar[bool] = True
-    """Tool length offset from a table (G43 H) exists (the writer refuses it otherwise; tested)."""
+    """Tool length offset from a table exists (the writer refuses it otherwise)."""
+    TOOL_CHANGER: ClassVar[bool] = True
+    """An automatic tool changer exists (the writer refuses a tool change otherwise, unless the
+    dialect's lowering rewrites it first)."""
+    CYCLE_SEMANTICS: ClassVar[str] = "fanuc"
+    """How the controller moves through its native canned cycles ('fanuc' or 'rs274', see
+    ``postproc.cycles.semantics``): a cycle resolved under other rules is expanded for it."""
 
     @classmethod
     def capabilities(cls) -> dict[str, object]:
         """The capability table: every UPPER_CASE attribute that describes the controller."""
-        skip = {"NAME", "DESCRIPTION", "READER", "WRITER", "PIPELINE_FILE"}
+        skip = {"NAME", "DESCRIPTION", "READER", "WRITER", "PIPELINE_FILE", "CYCLE_WORDS", "LOWERING"}
         table: dict[str, object] = {}
         for klass in reversed(cls.__mro__):
             for key, value in vars(klass).items():
@@ -154,7 +176,7 @@ class Dialect:
 
     @classmethod
     def context(cls, file: str, setup: MachineSetup, diagnostics: Diagnostics) -> Context:
-        return Context(file, setup, diagnostics, cls.NAME)
+        return Context(file, setup, diagnostics, cls.NAME, cls.CYCLE_WORDS)
 
 
 def _is_package(module: str) -> bool:

@@ -16,6 +16,7 @@ from .dialect import Dialect
 from .errors import UsageError
 from .expr import register_expressions
 from .ir import register_sections
+from .lower import Lowering, register_transform
 from .xmlio import DEFAULT, XFactory
 
 PROJECT = "postproc"
@@ -28,8 +29,11 @@ class Registry:
         self.pm = pm
         self.factory = factory
         self.dialects: dict[str, type[Dialect]] = {}
+        self.lowerings: list[Lowering] = []
+        """Generic lowering steps, in registration order (``postproc_register_lowerings``)."""
         pm.hook.postproc_register_dialects(register=self._register_dialect)
         pm.hook.postproc_register_xml(factory=factory)
+        pm.hook.postproc_register_lowerings(register=self._register_lowering)
 
     def _register_dialect(self, cls: type) -> None:
         if not (isinstance(cls, type) and issubclass(cls, Dialect) and cls.NAME):
@@ -38,6 +42,12 @@ class Registry:
         if known is not None and known is not cls:
             raise TypeError(f"dialect {cls.NAME!r} registered twice ({known.__module__}, {cls.__module__})")
         self.dialects[cls.NAME] = cls
+
+    def _register_lowering(self, step: Lowering) -> None:
+        if not callable(step):
+            raise TypeError(f"{step!r} is not a lowering step")
+        if step not in self.lowerings:
+            self.lowerings.append(step)
 
     def dialect(self, name: str) -> type[Dialect]:
         try:
@@ -66,4 +76,7 @@ def default_registry() -> Registry:
     register_sections(DEFAULT)
     register_expressions(DEFAULT)
     register_control(DEFAULT)
-    return Registry(make_plugin_manager(), DEFAULT)
+    registry = Registry(make_plugin_manager(), DEFAULT)
+    for step in registry.lowerings:
+        register_transform(step)
+    return registry

@@ -3,12 +3,15 @@
 Neutral: it knows 'rapid' and 'initial level', never 'G00' or 'G98'. Positions are in program units
 (converted when the units change) and None while unknown, so a step that needs an absolute position it
 does not have can fail loudly instead of guessing.
+
+One model for every stage: the reading pipeline (``ctx.state``), the writer (what it has written so
+far) and the toolpath simulator each keep a ``ModalState`` and change it only through ``apply``.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, Callable, Mapping
 
 MM_PER_INCH = 25.4
 
@@ -44,6 +47,13 @@ class ModalState:
     extra: dict[str, Any] = field(default_factory=dict)
     """Room for dialect- or syntax-specific modal data (keyed by the syntax's XML name)."""
 
+    def apply(self, sections: Mapping[str, Any]) -> None:
+        """Apply a block's modal sections (those that change nothing here are ignored)."""
+        for key, section in sections.items():
+            change = _APPLY.get(key)
+            if change is not None:
+                change(self, section)
+
     def set_units(self, system: str) -> None:
         """Switch units, converting the tracked position (a controller keeps the physical position)."""
         if system == self.units:
@@ -53,3 +63,29 @@ class ModalState:
             if value is not None and axis in "XYZUVW":
                 self.position[axis] = value * factor
         self.units = system
+
+
+def _work_offset(state: ModalState, s: Any) -> None:
+    """A new work offset moves the origin: the work position is unknown until programmed again."""
+    state.work_offset = s.index
+    position = state.position
+    for axis in position:
+        position[axis] = None
+
+
+_APPLY: dict[str, Callable[[ModalState, Any], None]] = {
+    "Units": lambda st, s: st.set_units(s.system),
+    "Plane": lambda st, s: setattr(st, "plane", s.plane),
+    "DistanceMode": lambda st, s: setattr(st, "distance", s.mode),
+    "FeedMode": lambda st, s: setattr(st, "feed_mode", s.mode),
+    "Feed": lambda st, s: setattr(st, "feed", s.value),
+    "SpindleSpeed": lambda st, s: setattr(st, "spindle_rpm", s.rpm),
+    "SpindleControl": lambda st, s: setattr(st, "spindle", s.direction),
+    "ReturnLevel": lambda st, s: setattr(st, "return_level", s.level),
+    "WorkOffset": _work_offset,
+    "ToolSelect": lambda st, s: setattr(st, "tool", s.number),
+}
+"""How each modal section changes the state; sections not listed change nothing here."""
+
+MODAL_KEYS = frozenset(_APPLY)
+"""Section keys that change the modal state."""

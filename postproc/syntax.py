@@ -9,61 +9,16 @@ A dialect's reading pipeline is an XML file of syntax elements loaded through th
 from __future__ import annotations
 
 import abc
-import re
 from pathlib import Path
 from typing import Callable, Iterable, Iterator
 
 from lxml import etree
 
-from .errors import ConfigError, Diagnostics, Location, PostprocError
+from .errors import ConfigError, Location, PostprocError
 from .ir import Block
-from .setup import MachineSetup
+from .context import Context
 from .source_map import locate
-from .state import ModalState
 from .xmlio import DEFAULT, XFactory, XmlNode, parse_xml_file, where
-
-
-class Context:
-    """What every step of one run shares: file name, set-up, diagnostics and modal state."""
-
-    __slots__ = ("file", "setup", "diagnostics", "state", "dialect", "on_unsupported", "program_mode")
-
-    def __init__(self, file: str, setup: MachineSetup, diagnostics: Diagnostics, dialect: str) -> None:
-        self.file = file
-        self.setup = setup
-        self.diagnostics = diagnostics
-        self.state = ModalState()
-        self.dialect = dialect
-        self.on_unsupported = "error"
-        """'error' or 'warn': what a construct the target cannot express does."""
-        self.program_mode = "keep"
-        """What the interpreter step does with a program that computes: 'keep' its constructs (for a
-        target that has them) or 'execute' them (toolpath, verify, flattening); see ``postproc.interp``."""
-
-    def at(self, block: Block, col: int = 1) -> Location:
-        """Where ``block`` (column ``col``) is, through the source map: the one way to locate a block."""
-        return locate(self.file, block, col)
-
-    def column_of(self, block: Block, letter: str, number: str | None = None, nth: int = 1) -> int:
-        """Column of the ``nth`` word with ``letter`` (and, if given, exactly that number text) in the
-        block's text, comments skipped. Computed only when reporting an error."""
-        want = letter.upper()
-        for col, found, num in word_columns(block.text or ""):
-            if found.upper() == want and (number is None or num == number):
-                nth -= 1
-                if nth == 0:
-                    return col
-        return 1
-
-
-_WORD_AT = re.compile(r"([A-Za-z:])[ \t]*([-+]?(?:\d+\.?\d*|\.\d+))")
-_COMMENT_AT = re.compile(r"\([^()]*\)|\([^()]*$|;.*$")
-
-
-def word_columns(text: str) -> list[tuple[int, str, str]]:
-    """(1-based column, letter, number text) of every word outside comments."""
-    masked = _COMMENT_AT.sub(lambda m: " " * len(m.group(0)), text)
-    return [(m.start() + 1, m.group(1), m.group(2)) for m in _WORD_AT.finditer(masked)]
 
 
 class Syntax(XmlNode, metaclass=abc.ABCMeta):

@@ -23,33 +23,26 @@ Assumptions (a simulator knows no machine data):
 
 from __future__ import annotations
 
-import json
 import math
-from typing import Any, Callable, Iterable, Iterator, TextIO
+from typing import Any, Callable, Iterable, Iterator
 
 from .api import gc_paused, read_blocks
 from .dialect import Dialect
-from .errors import Diagnostics, Location, PostprocError, ProgramError, UnsupportedError, UsageError
+from .errors import Diagnostics, Location, PostprocError, ProgramError, UnsupportedError
+from .geometry import ARC_TOLERANCE_MM, CENTRE_KEYS, PLACES, centre_from_radius
 from .ir import Block, Motion, Section
 from .lower import lower_for
 from .plugins import Registry, default_registry
 from .setup import MachineSetup
-from .state import MM_PER_INCH, PLANE_AXES
-from .syntax import Context
+from .state import MM_PER_INCH, MODAL_KEYS, PLANE_AXES, ModalState
+from .context import Context
 
 Event = dict[str, Any]
 
-PLACES = 6
-"""Decimals of every number in a toolpath (1 nm): enough for any controller, stable across float noise."""
-ARC_TOLERANCE_MM = 0.01
-"""Largest difference between the start and end radius of an I/J/K arc (Fanuc parameter 3410's role)."""
 HEADER_LOOKAHEAD = 1000
 """Events held back at most while waiting for the first feed move to fix the header's feed mode."""
 LINEAR_AXES = frozenset("XYZUVW")
 """Axes converted from inches; rotary axes (A, B, C) are in degrees whatever the length unit."""
-PLANE_INDEX = {"XY": (0, 1, 2), "ZX": (2, 0, 1), "YZ": (1, 2, 0)}
-"""Per plane, indices into an (x, y, z) point of the first and second plane axis and of the normal."""
-CENTRE_KEYS = {"X": "cx", "Y": "cy", "Z": "cz"}
 
 
 class ToolpathTarget(Dialect):
@@ -76,68 +69,6 @@ def start_position(setup: MachineSetup) -> dict[str, float]:
     return {a: float(start.get(a, 0.0)) for a in m.axes}
 
 
-# -- arc geometry (also used by the backplot and verify) ----------------------------------------------
-
-def centre_from_radius(s: tuple[float, float], e: tuple[float, float], r: float,
-                       clockwise: bool) -> tuple[float, float]:
-    """Centre of an R-form arc in plane coordinates. Negative R is the long way (over 180 degrees)."""
-    dx, dy = e[0] - s[0], e[1] - s[1]
-    chord = math.hypot(dx, dy)
-    if chord < 10.0 ** -PLACES:
-        raise ProgramError("a full circle cannot be programmed with R (use I/J/K)")
-    half = chord / 2.0
-    radius = abs(r)
-    if radius < half:
-        if half - radius > ARC_TOLERANCE_MM:
-            raise ProgramError(f"arc radius {radius:.4f} mm is too small for a chord of {chord:.4f} mm")
-        radius = half
-    h = math.sqrt(max(radius * radius - half * half, 0.0))
-    # Left normal of the chord: a counter-clockwise arc of up to 180 degrees has its centre on the left.
-    nx, ny = -dy / chord, dx / chord
-    side = 1.0 if clockwise == (r < 0) else -1.0
-    return s[0] + dx / 2.0 + side * h * nx, s[1] + dy / 2.0 + side * h * ny
-
-
-def arc_sweep(s: tuple[float, float], e: tuple[float, float], c: tuple[float, float],
-              clockwise: bool) -> float:
-    """Angle swept from s to e about c, in (0, 2*pi]; coincident end points make a full circle."""
-    a0 = math.atan2(s[1] - c[1], s[0] - c[0])
-    a1 = math.atan2(e[1] - c[1], e[0] - c[0])
-    sweep = (a0 - a1) if clockwise else (a1 - a0)
-    sweep %= 2.0 * math.pi
-    if sweep < 1e-9:
-        sweep = 2.0 * math.pi
-    return sweep
-
-
-def arc_points(start: tuple[float, float, float], end: tuple[float, float, float],
-               centre: tuple[float, float, float], plane: str, clockwise: bool,
-               chord_error: float = 0.01, max_step: float = math.radians(5.0)) -> Iterator[tuple[float, float, float]]:
-    """Points along an arc (helix) after ``start`` up to ``end``, within ``chord_error`` of the curve."""
-    i, j, k = PLANE_INDEX[plane]
-    s, e, c = (start[i], start[j]), (end[i], end[j]), (centre[i], centre[j])
-    sweep = arc_sweep(s, e, c, clockwise)
-    r0 = math.hypot(s[0] - c[0], s[1] - c[1])
-    r1 = math.hypot(e[0] - c[0], e[1] - c[1])
-    rmax = max(r0, r1)
-    step = max_step
-    if rmax > chord_error:
-        step = min(step, 2.0 * math.acos(1.0 - chord_error / rmax))
-    n = max(1, math.ceil(sweep / step))
-    a0 = math.atan2(s[1] - c[1], s[0] - c[0])
-    sign = -1.0 if clockwise else 1.0
-    for q in range(1, n):
-        t = q / n
-        a = a0 + sign * sweep * t
-        r = r0 + (r1 - r0) * t
-        p = [0.0, 0.0, 0.0]
-        p[i] = c[0] + r * math.cos(a)
-        p[j] = c[1] + r * math.sin(a)
-        p[k] = start[k] + (end[k] - start[k]) * t
-        yield p[0], p[1], p[2]
-    yield end
-
-
 # -- the simulator -------------------------------------------------------------------------------------
 
 class Simulator:
@@ -150,17 +81,19 @@ class Simulator:
         self.keys = tuple((a, a.lower()) for a in self.axes)
         self.pos = start_position(setup)
         self.rounded = {a: num(v) for a, v in self.pos.items()}
+        self.modal = ModalState()
+        """The program's modal state (units, plane, distance and feed mode, tool...), in program terms."""
         self.scale = 1.0
-        self.plane = "XY"
+        """mm per program unit (from ``modal.units``)."""
         self.incremental = False
-        self.feed_mode = "per_min"
+        """``modal.distance`` is incremental (kept at hand: every move reads it)."""
         self.feed: float | None = None
+        """The feed in force in mm/min (or the inverse-time value), None until programmed."""
         self.header_mode: str | None = None
         """Feed mode the header states, fixed by the first feed move (None until then)."""
-        self.tool: int | None = None
         self.spindle: str | None = None
-        """Spindle direction now (None until programmed): a tool change stops a turning spindle first,
-        as a tool changer does."""
+        """Spindle direction of the last spindle event (None before the first): a tool change stops a
+        turning spindle first, as a tool changer does, and stopping a stopped spindle is no event."""
         self.lathe = setup.input.machine_type == "lathe"
         self.ended = False
         self.current: Block | None = None
@@ -178,8 +111,8 @@ class Simulator:
             code = native.what.split(" ", 1)[0]
             raise UnsupportedError(f"{native.what} cannot be simulated", self._at(block, code))
         keys = sections.keys()
-        if not keys.isdisjoint(_MODAL_KEYS):
-            self.modal(get)
+        if not keys.isdisjoint(MODAL_KEYS):
+            self.apply_modal(sections)
         line = block.line
         before = not keys.isdisjoint(_EVENT_KEYS)
         spindle = get("SpindleControl")
@@ -187,13 +120,12 @@ class Simulator:
         if before:
             s = get("ToolSelect")
             if s is not None:
-                self.tool = s.number
                 if self.lathe and "ToolChange" not in sections:
                     emit({"line": line, "event": "tool", "number": s.number})
             if "ToolChange" in sections:
                 if self.spindle in ("cw", "ccw"):
                     self.spindle_event(line, "stop", emit)
-                emit({"line": line, "event": "tool", "number": self.tool})
+                emit({"line": line, "event": "tool", "number": self.modal.tool})
             if spindle is not None and spindle.direction != "stop":
                 self.spindle_event(line, spindle.direction, emit)
             if coolant is not None and coolant.mode != "off":
@@ -230,23 +162,16 @@ class Simulator:
         if s is not None:
             self.program_control(line, s.kind, emit)
 
-    def modal(self, get: Callable[[str], Any]) -> None:
-        """Apply the block's modal settings (before its motion, as a controller does)."""
-        s = get("Units")
+    def apply_modal(self, sections: dict[str, Section]) -> None:
+        """Apply the block's modal settings (before its motion, as a controller does); its feed is
+        converted with the units and feed mode the block leaves in force."""
+        modal = self.modal
+        modal.apply(sections)
+        self.scale = MM_PER_INCH if modal.units == "inch" else 1.0
+        self.incremental = modal.distance == "incremental"
+        s = sections.get("Feed")
         if s is not None:
-            self.scale = MM_PER_INCH if s.system == "inch" else 1.0
-        s = get("Plane")
-        if s is not None:
-            self.plane = s.plane
-        s = get("DistanceMode")
-        if s is not None:
-            self.incremental = s.mode == "incremental"
-        s = get("FeedMode")
-        if s is not None:
-            self.feed_mode = s.mode
-        s = get("Feed")
-        if s is not None:
-            self._set_feed(s.value)
+            self._set_feed(s.value)  # type: ignore[attr-defined]
 
     def spindle_event(self, line: int, direction: str, emit: Callable[[Event], None]) -> None:
         """A spindle change; stopping a stopped spindle is no event (two programs that differ only
@@ -262,6 +187,7 @@ class Simulator:
         if key == "Motion":
             self.motion(block, item, True, emit)  # type: ignore[arg-type]
         elif key == "Feed":
+            self.modal.feed = item.value  # type: ignore[attr-defined]
             self._set_feed(item.value)  # type: ignore[attr-defined]
         elif key == "Dwell":
             emit({"line": line, "event": "dwell", "seconds": num(item.seconds)})  # type: ignore[attr-defined]
@@ -337,7 +263,7 @@ class Simulator:
         emit(ev)
 
     def arc_move(self, block: Block, m: Motion, target: dict[str, float], emit: Callable[[Event], None]) -> None:
-        plane = self.plane
+        plane = self.modal.plane
         a1, a2, normal = PLANE_AXES[plane]
         pos = self.pos
         for axis in (a1, a2):
@@ -385,16 +311,16 @@ class Simulator:
 
     # -- feed --------------------------------------------------------------------------------------
     def _set_feed(self, value: float) -> None:
-        self.feed = value if self.feed_mode == "inverse_time" else value * self.scale
+        self.feed = value if self.modal.feed_mode == "inverse_time" else value * self.scale
 
     def _feed_into(self, ev: Event) -> None:
         if self.feed is None:
             raise ProgramError("a feed move with no feed rate (program F first)", self._at())
         ev["f"] = num(self.feed)
         if self.header_mode is None:
-            self.header_mode = self.feed_mode
-        elif self.feed_mode != self.header_mode:
-            ev["feed_mode"] = self.feed_mode
+            self.header_mode = self.modal.feed_mode
+        elif self.modal.feed_mode != self.header_mode:
+            ev["feed_mode"] = self.modal.feed_mode
 
     # -- locations (computed only for errors) ------------------------------------------------------
     def _at(self, block: Block | None = None, word: str | None = None) -> Location:
@@ -411,7 +337,6 @@ class Simulator:
 
 
 _CENTRE_LETTER = {"X": "I", "Y": "J", "Z": "K"}
-_MODAL_KEYS = frozenset(("Units", "Plane", "DistanceMode", "FeedMode", "Feed"))
 _EVENT_KEYS = frozenset(("ToolSelect", "ToolChange", "SpindleControl", "Coolant", "Dwell", "SpindleOrientation",
                          "ProgramControl"))
 
@@ -471,40 +396,13 @@ def toolpath_events(lines: Iterable[str], *, file: str, dialect: str | type[Dial
     ``diagnostics``); events already yielded then belong to a failed run."""
     setup = setup or MachineSetup()
     diagnostics = diagnostics or Diagnostics()
+    registry = registry or default_registry()
     if isinstance(dialect, str):
-        dialect = (registry or default_registry()).dialect(dialect)
-    elif registry is None:
-        default_registry()  # make sure every plugin's XML classes and transforms are loaded
+        dialect = registry.dialect(dialect)
     with gc_paused():
         ctx, blocks = read_blocks(lines, file, dialect, setup, diagnostics)
         ctx.program_mode = "execute"  # a simulation runs the program's loops, jumps and calls
-        lowered = lower_for(blocks, ctx, ToolpathTarget, "error")
+        lowered = lower_for(blocks, ctx, ToolpathTarget, "error", registry.lowerings)
         yield from simulate(lowered, ctx)
     if check:
         diagnostics.check()
-
-
-def export_toolpath(lines: Iterable[str], out: Any, *, file: str, dialect: str | type[Dialect],
-                    setup: MachineSetup | None = None, fmt: str = "jsonl") -> None:
-    """Write a program's toolpath to ``out``: JSON lines or SVG (text streams), PNG (a binary stream)."""
-    setup = setup or MachineSetup()
-    events = toolpath_events(lines, file=file, dialect=dialect, setup=setup)
-    if fmt == "jsonl":
-        write_jsonl(events, out)
-    elif fmt in ("svg", "png"):
-        from .backplot import Backplot
-        plot = Backplot(start_position(setup))
-        plot.add_all(events)
-        if fmt == "svg":
-            plot.write_svg(out)
-        else:
-            plot.write_png(out)
-    else:
-        raise UsageError(f"unknown toolpath format {fmt!r} (jsonl, svg or png)")
-
-
-def write_jsonl(events: Iterable[Event], out: TextIO) -> None:
-    write = out.write
-    encode = json.JSONEncoder().encode
-    for ev in events:
-        write(encode(ev) + "\n")

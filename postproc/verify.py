@@ -19,7 +19,8 @@ from typing import Any, Iterable, Iterator
 from .errors import Diagnostics, ErrorList, UsageError
 from .plugins import Registry
 from .setup import MachineSetup
-from .toolpath import CENTRE_KEYS, PLANE_INDEX, Event, arc_sweep, start_position, toolpath_events
+from .geometry import CENTRE_KEYS, PLANE_INDEX, arc_sweep
+from .toolpath import Event, start_position, toolpath_events
 
 EVENT_TOLERANCE = 1e-6
 """Numbers in machine events (dwell seconds, angles) compare within this."""

@@ -9,7 +9,8 @@ import pytest
 from lxml import etree
 
 from postproc.backplot import DASH, HEIGHT, WIDTH, Backplot, dashes
-from postproc.toolpath import export_toolpath, toolpath_events
+from postproc.export import export_toolpath
+from postproc.toolpath import toolpath_events
 
 SVG = "{http://www.w3.org/2000/svg}"
 PROGRAM = "G21 G90\nG00 X10. Y0. Z5.\nG01 Z-1. F100.\nG03 X-10. Y0. I-10. J0.\nG00 Z5.\nX30.\nG01 Z0.\nM30\n"

@@ -2,13 +2,19 @@
 
 from __future__ import annotations
 
+import ast
+import inspect
 import io
+import re
+import textwrap
+from pathlib import Path
 
 import pytest
 
 from postproc.errors import ErrorList
 from postproc.plugins import default_registry
 from postproc.api import translate
+from postproc.dialect import Dialect
 
 REGISTRY = default_registry()
 WRITERS = sorted(name for name, cls in REGISTRY.dialects.items() if cls.WRITER is not None)
@@ -49,3 +55,47 @@ def test_native_cycles_are_written_natively_or_expanded(target: str) -> None:
     code = [line for line in text.splitlines() if not line.startswith("(")]
     assert any("G81" in line for line in code) == native
     assert ("drill from line 3" in text) == (not native)
+
+
+ROOT = Path(__file__).resolve().parents[1]
+CODE_FILES = [*ROOT.glob("postproc/**/*.py"), *ROOT.glob("dialects/**/*.py"), *ROOT.glob("plugins/*/postproc_*/**/*.py")]
+
+
+def _attribute_docs(cls: type) -> dict[str, str]:
+    """UPPER_CASE class attributes of ``cls``'s own source that have a docstring right beneath them."""
+    tree = ast.parse(textwrap.dedent(inspect.getsource(cls)))
+    body = tree.body[0].body  # type: ignore[attr-defined]
+    docs: dict[str, str] = {}
+    for stmt, nxt in zip(body, body[1:]):
+        target = stmt.targets[0] if isinstance(stmt, ast.Assign) else getattr(stmt, "target", None)
+        if isinstance(target, ast.Name) and isinstance(nxt, ast.Expr) and isinstance(nxt.value, ast.Constant):
+            docs[target.id] = str(nxt.value.value)
+    return docs
+
+
+def test_every_capability_is_declared_documented_and_read_by_code() -> None:
+    """A flag no code reads promises what nothing keeps; one without a docstring says nothing."""
+    code = "\n".join(p.read_text(encoding="utf-8") for p in CODE_FILES)
+    seen: set[str] = set()
+    for dialect in REGISTRY.dialects.values():
+        for name in dialect.capabilities():
+            owners = [k for k in dialect.__mro__ if name in vars(k)]
+            assert Dialect in dialect.__mro__ and owners, name
+            assert name in vars(Dialect) or name in _attribute_docs(owners[-1]), (
+                f"{dialect.NAME}: capability {name} is not declared with a docstring")
+            for owner in owners:
+                if owner.__module__.split(".")[0] in ("postproc", "dialects") or owner.__module__.startswith("postproc_"):
+                    assert _attribute_docs(owner).get(name), f"{owner.__name__}.{name} has no docstring"
+            seen.add(name)
+    for name in seen:
+        assert re.search(rf"\.{name}\b|capable\(\"{name}\"\)", code), f"no code reads the capability {name}"
+    assert {"NATIVE_CYCLES", "CUTTER_COMPENSATION", "TOOL_CHANGER", "DWELL_UNIT", "CYCLE_SEMANTICS"} <= seen
+
+
+def test_the_dialects_command_lists_every_capability(capsys: pytest.CaptureFixture[str]) -> None:
+    from postproc.cli import main
+    assert main(["dialects"]) == 0
+    listed = capsys.readouterr().out
+    for dialect in REGISTRY.dialects.values():
+        for name in dialect.capabilities():
+            assert f"{name}:" in listed, name

@@ -17,6 +17,7 @@ from postproc.dialect import Dialect
 from postproc.errors import Diagnostics, ErrorLevel
 from postproc.lower import TRANSFORMS, lower_for
 from postproc.plugins import default_registry
+from postproc.rs274.codes import CodeTable
 from postproc.setup import CycleSettings, MachineSetup
 
 GOLDEN = Path(__file__).resolve().parent / "golden" / "fanuc" / "cycles"
@@ -156,7 +157,7 @@ def test_oriented_stop_in_warn_mode_comments_the_block_out() -> None:
 
 def test_a_native_cycle_the_writer_cannot_spell_is_unsupported() -> None:
     class Bare(OtherWriter):
-        CYCLES: ClassVar[dict[str, str]] = {}
+        CODES: ClassVar[CodeTable] = CodeTable(row for row in FanucWriter.CODES.rows if row[2] != "cycle")
 
     class Claims(Other):
         WRITER = Bare

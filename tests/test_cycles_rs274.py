@@ -8,6 +8,7 @@ from typing import Any
 
 import pytest
 
+from dialects.fanuc import Fanuc
 from dialects.fanuc.block_syntax import FanucBlockSyntax
 from dialects.fanuc.reader import FanucReader
 from postproc.api import read_program
@@ -16,7 +17,8 @@ from postproc.errors import Diagnostics, ErrorLevel, PostprocError
 from postproc.ir import Block, Dwell, Motion, ProgramControl, Section, SpindleControl, SpindleOrientation
 from postproc.plugins import default_registry
 from postproc.setup import CycleSettings, InputSettings, MachineSetup
-from postproc.syntax import Context, Pipeline
+from postproc.context import Context
+from postproc.syntax import Pipeline
 from postproc.syntaxes.modal_state import ModalStateSyntax
 
 from support import rs274
@@ -27,10 +29,11 @@ LINUXCNC_D = 0.254
 
 
 def read(text: str) -> tuple[list[Block], Context]:
-    """Fanuc's block syntax (calculator input, L repeats) with the rs274 cycle semantics."""
+    """Fanuc's block syntax (calculator input, L repeats) with the rs274 cycle semantics (messages spell
+    codes as the reading block syntax does: Fanuc's)."""
     setup = MachineSetup(input=InputSettings(repeat_address="L", decimal_point="calculator"),
                          cycles=CycleSettings(peck_retract=LINUXCNC_D, peck_clearance=LINUXCNC_D))
-    ctx = Context("t.ngc", setup, Diagnostics(ErrorLevel.IMMEDIATE), "fanuc")
+    ctx = Context("t.ngc", setup, Diagnostics(ErrorLevel.IMMEDIATE), "fanuc", Fanuc.CYCLE_WORDS)
     pipeline = Pipeline("rs274", [FanucBlockSyntax(), CannedCycleResolveSyntax("rs274"), ModalStateSyntax()])
     return list(pipeline.run(FanucReader(ctx).read(text.splitlines(keepends=True)), ctx)), ctx
 
@@ -127,7 +130,7 @@ def test_manual_boring_leaves_the_retract_to_the_operator() -> None:
     ("G98 G81 X1 Y0 Z-1 R2 F100\nG82 X2 R2 P1\n", "G82 needs a hole bottom Z"),
     ("G98 G81 X1 Y0 Z-1 R2 F100\nG82 X2 Z-1 P1\n", "G82 needs an R level R"),
     ("G98 G82 X1 Y0 Z-1 R2 F100\n", "G82 needs a dwell time P"),
-    ("G98 G84 X1 Y0 Z-1 R2 F100\n", "G84 needs the spindle turning clockwise (M3)"),
+    ("G98 G84 X1 Y0 Z-1 R2 F100\n", "G84 needs the spindle turning clockwise (M03)"),
     ("G98 G76 X1 Y0 Z-1 R2 Q1 F100\n", "G76 has no fine bore meaning under rs274 cycle semantics"),
     ("G98 G81 X1 Y0 Z1 R0 F100\n", "G81 hole bottom Z is above the R level"),
 ])

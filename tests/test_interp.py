@@ -22,7 +22,7 @@ from postproc.interp import NgcVariables, ProgramSyntax
 from postproc.ir import Block, ProgramStart, Sequence
 from postproc.setup import Limits, MachineSetup
 from postproc.source_map import ExecutedBlock
-from postproc.syntax import Context
+from postproc.context import Context
 
 
 class FanucLike(ProgramSyntax):

@@ -23,7 +23,7 @@ from postproc.toolpath import toolpath_events
 from postproc.xmlio import to_bytes
 import postproc_linuxcnc
 from postproc_linuxcnc import Linuxcnc
-from postproc_linuxcnc.lexer import lex_block
+from postproc.rs274.ngc_lexer import lex_block
 from tests.support import rs274
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -84,13 +84,13 @@ def test_pipeline_xml_loads_and_writes_back_identically() -> None:
 # -- lexing ------------------------------------------------------------------------------------------
 
 def test_semicolon_and_paren_comments_and_letter_case_are_kept() -> None:
-    block = lex_block("t.ngc", 1, "g0 X1.5 (move) y2 ; rest (of) line", "\n")
+    block = lex_block("t.ngc", 1, "g0 X1.5 (move) y2 ; rest (of) line", "\n", "linuxcnc")
     assert block.words == [("g", "0"), ("X", "1.5"), ("y", "2")]
     assert block.sections["Comments"].texts == ["move", " rest (of) line"]  # type: ignore[attr-defined]
 
 
 def test_blanks_inside_a_number_are_ignored_as_in_rs274() -> None:
-    block = lex_block("t.ngc", 1, "G1 X 1 0 . 5 Y-2", "\n")
+    block = lex_block("t.ngc", 1, "G1 X 1 0 . 5 Y-2", "\n", "linuxcnc")
     assert block.words == [("G", "1"), ("X", "10.5"), ("Y", "-2")]
 
 

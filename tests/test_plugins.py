@@ -10,7 +10,7 @@ import inspect
 import io
 from importlib.metadata import entry_points
 from pathlib import Path
-from typing import Callable
+from typing import Callable, Iterator
 
 import pluggy
 import pytest
@@ -20,9 +20,13 @@ from postproc.api import translate
 from postproc.dialect import Dialect
 from postproc.errors import ErrorList
 from postproc.hookspecs import hookimpl
-from postproc.ir import Section
+from postproc.context import Context
+from postproc.cycles.lowering import expand_canned_cycles
+from postproc.ir import Block, Coolant, Section
+from postproc.lower import Lowering
 from postproc.plugins import PROJECT, Registry, default_registry, make_plugin_manager
-from postproc.writer import WordWriter
+from postproc.rs274.codes import CodeTable
+from postproc.rs274.writer import WordWriter
 from postproc.xmlio import XAttr, XFactory, parse_xml_bytes
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -38,7 +42,9 @@ class Beep(Section):
 
 class ToyWriter(WordWriter):
     DIALECT = "toy"
-    COOLANT = {**WordWriter.COOLANT, "flood": "M88"}
+    CODES = CodeTable((("G00", "01", "motion", "rapid"), ("G21", "06", "units", "mm"),
+                       ("G90", "03", "distance", "absolute"), ("M88", "", "coolant", "flood"),
+                       ("M09", "", "coolant", "off")))
 
 
 class Toy(Dialect):
@@ -91,6 +97,43 @@ def test_plugin_dialect_translates(toy_pm):
     translate(io.StringIO("G21 G90 G00 X1.\nM08\nM09\n"), out, file="t.nc", source="fanuc", target="toy",
               registry=registry)
     assert out.getvalue() == "G21 G90 G00 X1.\nM88\nM09\n"
+
+
+def mist_to_flood(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """A generic lowering step: mist coolant becomes flood where the target has no mist."""
+    has_mist = target.WRITER is None or getattr(target.WRITER, "CODES").spell("coolant", "mist") is not None
+    for block in blocks:
+        coolant = block.sections.get("Coolant")
+        if not has_mist and coolant is not None and coolant.mode == "mist":  # type: ignore[attr-defined]
+            block.sections["Coolant"] = Coolant("flood")
+            block.changed()
+        yield block
+
+
+class LoweringPlugin:
+    @hookimpl
+    def postproc_register_lowerings(self, register: Callable[[Lowering], None]) -> None:
+        register(mist_to_flood)
+
+
+def test_a_plugin_contributes_a_lowering_step(toy_pm):
+    program = "G21 G90 G00 X1.\nM07\nM09\n"
+    with pytest.raises(ErrorList, match="cannot express coolant mist"):
+        translate(io.StringIO(program), io.StringIO(), file="t.nc", source="fanuc", target="toy",
+                  registry=Registry(toy_pm, XFactory()))
+    plugin = LoweringPlugin()
+    toy_pm.register(plugin)
+    try:
+        registry = Registry(toy_pm, XFactory())
+        assert mist_to_flood in registry.lowerings and expand_canned_cycles in registry.lowerings
+        out = io.StringIO()
+        translate(io.StringIO(program), out, file="t.nc", source="fanuc", target="toy", registry=registry)
+        assert out.getvalue() == "G21 G90 G00 X1.\nM88\nM09\n"
+        out = io.StringIO()  # a target with mist is left alone by the step
+        translate(io.StringIO(program), out, file="t.nc", source="fanuc", target="fanuc", registry=registry)
+        assert out.getvalue() == program
+    finally:
+        toy_pm.unregister(plugin)
 
 
 def test_unregistered_plugin_is_gone(toy_pm):
@@ -258,7 +301,8 @@ def test_example_plugin_is_built_like_a_third_party_plugin():
     example = default_registry().dialect("example")
     assert issubclass(example, Dialect) and issubclass(example.WRITER, WordWriter)
     assert example.__module__.split(".")[0] == "postproc_example_dialect"
-    assert example.WRITER.MOTION["rapid"] == "G0" and example.WRITER.MOTION["home"] == "G28"
+    assert example.WRITER.CODES.spell("motion", "rapid") == "G0"
+    assert example.WRITER.CODES.spell("home", "home") == "G28"
 
 
 def test_example_plugin_writes_g0_and_four_decimals(cli):

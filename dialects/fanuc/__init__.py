@@ -6,7 +6,10 @@ from typing import Callable
 
 from postproc.dialect import Dialect
 from postproc.hookspecs import hookimpl
+from postproc.rs274.cycle_words import rs274_cycle_words
 from postproc.xmlio import XFactory
+
+from .codes import CODES
 
 from .block_syntax import FanucBlockSyntax
 from .reader import FanucReader
@@ -24,6 +27,8 @@ class Fanuc(Dialect):
     READER = FanucReader
     WRITER = FanucWriter
     PIPELINE_FILE = "fanuc.xml"
+    CYCLE_WORDS = rs274_cycle_words(CODES, None)
+    """R level, Q peck/shift, P dwell (ms); K, L or K+L repeats per the set-up; cycles named G73-G89."""
     NATIVE_CYCLES = ALL_MILLING_CYCLES
     """G73, G74, G76, G81-G89 all run natively."""
 

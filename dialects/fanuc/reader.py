@@ -10,7 +10,7 @@ from postproc.ir import Block, Sequence
 
 from postproc.numbers import CANONICAL_BLOCK
 
-from .lexer import WORDS_ONLY, WORD, lex_block
+from postproc.rs274.lexer import WORDS_ONLY, WORD, lex_block
 
 
 class FanucReader(Reader):

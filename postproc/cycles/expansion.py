@@ -17,7 +17,8 @@ from postproc.errors import ProgramError
 from postproc.ir import Block, CompoundMotion, Dwell, Feed, Motion, ProgramControl, Section, SpindleControl
 from postproc.ir import SpindleOrientation
 from postproc.state import PLANE_AXES
-from postproc.syntax import Context, Syntax
+from postproc.context import Context
+from postproc.syntax import Syntax
 
 from .section import CannedCycle
 from .semantics import FANUC, SEMANTICS

@@ -21,10 +21,9 @@ from postproc.errors import UnsupportedError
 from postproc.ir import (
     Block, Comments, CompoundMotion, Motion, ProgramControl, Section, SpindleControl, SpindleOrientation,
 )
-from postproc.syntax import Context
+from postproc.context import Context
 
 from .section import CannedCycle
-from .semantics import CODES
 
 _CANCELS = frozenset(("rapid", "linear", "cw", "ccw"))
 
@@ -42,7 +41,7 @@ def _expand(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Ite
     forced = cycles.expanded()
     every = "all" in forced
     native = target.NATIVE_CYCLES
-    semantics = getattr(target, "CYCLE_SEMANTICS", "fanuc")
+    semantics = target.CYCLE_SEMANTICS
     can_orient = target.SPINDLE_ORIENTATION
     expanding = False  # from the first expanded block of a cycle to its cancel
     for block in blocks:
@@ -102,7 +101,7 @@ def _handle_orientation(block: Block, compound: CompoundMotion, ctx: Context, mo
                 items.append(item)
         compound.items = items
         return True
-    code = CODES.get(compound.term, compound.term)
+    code = ctx.cycle_words.name(compound.term) if ctx.cycle_words is not None else compound.term
     err = UnsupportedError(f"{code} needs an oriented spindle stop, which the {target.NAME} dialect cannot "
                            f"make (set <Cycles orientation=\"stop\"/> or \"m19\")", ctx.at(block))
     if ctx.on_unsupported == "warn":

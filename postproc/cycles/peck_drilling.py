@@ -6,7 +6,6 @@ from postproc.errors import ProgramError
 
 from .expansion import EPS, CycleExpansion, ToolPath, level
 from .section import CannedCycle
-from .semantics import CODES
 
 
 class PeckDrillingSyntax(CycleExpansion):
@@ -27,7 +26,7 @@ class PeckDrillingSyntax(CycleExpansion):
         r, bottom = level(cycle, "r"), level(cycle, "bottom")
         q = cycle.q
         if q is None or q <= 0:
-            raise ProgramError(f"{CODES[cycle.kind]} peck depth Q must be positive")
+            raise ProgramError(f"the {cycle.kind.replace('_', ' ')} cycle's peck depth must be positive")
         d = cycle.clearance or 0.0
         k = 1
         depth = r - q

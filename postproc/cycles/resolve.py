@@ -8,7 +8,9 @@ peck Q and shift Q, and refuses what the controller refuses with a located error
 cycle's family syntax expand it and moves the tracked position to where the tool ends.
 
 The ``semantics`` attribute picks the controller family ('fanuc', the default, or 'rs274' for
-LinuxCNC); ``semantics.py`` lists every rule that differs.
+LinuxCNC); ``semantics.py`` lists every rule that differs. Which letter carries which cycle word (the
+hole bottom, the R level, Q, P, the repeat count) and how a cycle is named in messages comes from the
+reading dialect (``ctx.cycle_words``, a ``CycleWords``), so another dialect's letters reuse this logic.
 """
 
 from __future__ import annotations
@@ -18,10 +20,12 @@ from typing import Any
 
 from lxml import etree
 
-from postproc.errors import Location, PostprocError, ProgramError, UnsupportedError
+from postproc.cycle_words import CycleWords
+from postproc.errors import ConfigError, Location, PostprocError, ProgramError, UnsupportedError
 from postproc.ir import Block, CompoundMotion
 from postproc.state import MM_PER_INCH, PLANE_AXES, CycleState, ModalState
-from postproc.syntax import Context, Syntax
+from postproc.context import Context
+from postproc.syntax import Syntax
 from postproc.xmlio import DEFAULT
 
 from .back_boring import BackBoringSyntax
@@ -32,7 +36,7 @@ from .fine_boring import FineBoringSyntax
 from .manual_boring import ManualBoringSyntax
 from .peck_drilling import PeckDrillingSyntax
 from .section import WORD_ORDER, CannedCycle
-from .semantics import CODES, DWELLING, PECK, SEMANTICS, SHIFT, TAP, Semantics
+from .semantics import DWELLING, PECK, SEMANTICS, SHIFT, TAP, Semantics
 from .tapping import TappingSyntax
 
 EXPANSIONS: tuple[type[CycleExpansion], ...] = (
@@ -44,8 +48,6 @@ EXPANSIONS: tuple[type[CycleExpansion], ...] = (
 GROUP_01 = frozenset(("rapid", "linear", "cw", "ccw"))
 """Motion modes that cancel a canned cycle."""
 AXIS_LETTERS = frozenset("XYZABCUVW")
-MODAL_LETTERS = frozenset("RQP")
-"""Cycle data that stays in force (with the drilling-axis word) until the cycle is cancelled."""
 _STATE_KEY = "CannedCycleResolveSyntax"
 """``ctx.state.extra`` key: the plane the active cycle was commanded in."""
 _DWELL_KEY = "CannedCycleResolveSyntax.P"
@@ -134,14 +136,17 @@ class CannedCycleResolveSyntax(Syntax):
             raise
 
     def _letters(self, ctx: Context) -> str:
-        """The addresses that carry cycle data: axes, R, Q, P and the repeat count."""
-        return "XYZABCUVWRQP" + "".join(self._rules.repeat_letters(ctx.setup.input.repeat_address))
+        """The addresses that carry cycle data: axes, the level, peck/shift, dwell and the repeat count."""
+        cw = _cycle_words(ctx)
+        return "XYZABCUVW" + cw.level + cw.peck + cw.shift + cw.dwell + "".join(cw.bottom.values()) + "".join(
+            cw.repeat_letters(ctx.setup.input.repeat_address))
 
     def _resolve(self, block: Block, ctx: Context, kind: str, call: bool) -> None:
         rules = self._rules
         sections = block.sections
         state = ctx.state
-        code = CODES.get(kind, kind)
+        cw = _cycle_words(ctx)
+        code = cw.name(kind)
         at_code = ctx.at(block, _code_column(block, code) if call else 1)
         if kind in rules.unsupported:
             raise UnsupportedError(f"{code} has no {kind.replace('_', ' ')} meaning under {rules.name} "
@@ -163,29 +168,31 @@ class CannedCycleResolveSyntax(Syntax):
             raise fail(f"the plane cannot change while {code} is active (cancel the cycle first)")
         same = active is not None and (rules.carry_over or active.kind == kind)
         modal = dict(active.words) if same and active is not None else {}
-        modal.update({k: v for k, v in words.items() if k in MODAL_LETTERS or k == normal})
-        if "P" in words:
-            state.extra[_DWELL_KEY] = words["P"]
+        depth = cw.bottom_letter(plane, normal)
+        modal_letters = (cw.level, cw.peck, cw.shift, cw.dwell, depth)  # in force until the cycle is cancelled
+        modal.update({k: v for k, v in words.items() if k in modal_letters})
+        if cw.dwell in words:
+            state.extra[_DWELL_KEY] = words[cw.dwell]
         elif rules.sticky_tap_dwell and kind in TAP and _DWELL_KEY in state.extra:
-            modal["P"] = state.extra[_DWELL_KEY]
+            modal[cw.dwell] = state.extra[_DWELL_KEY]
         holes = self._holes(ctx, words, call, plane, fail)
         feed = _modal(sections, "Feed", "value", state.feed)
         return_level = _modal(sections, "ReturnLevel", "level", state.return_level)
         spindle = _modal(sections, "SpindleControl", "direction", state.spindle)
-        self._check(kind, code, modal, normal, feed, return_level, spindle, call, fail)
+        self._check(kind, code, modal, cw, depth, feed, return_level, spindle, call, fail)
 
         incremental = _modal(sections, "DistanceMode", "mode", state.distance) == "incremental"
-        initial, r, bottom, top = self._levels(ctx, kind, code, modal, normal, incremental, fail)
+        initial, r, bottom, top = self._levels(ctx, kind, code, modal, normal, cw.level, depth, incremental, fail)
         here = {k: v for k, v in state.position.items() if k in "XYZ" and v is not None}
         position, step = _positions(code, words, here, plane, incremental, holes, fail)
         if holes and rules.rise_to_r and r > initial and (first not in here or second not in here):
             missing = first if first not in here else second
             raise fail(f"{code} rises to R where the tool stands, but its {missing} position is unknown")
-        q = modal.get("Q")
+        q = modal.get(cw.peck if kind in PECK else cw.shift)
         cycle = CannedCycle(
             kind, call=call, semantics=rules.name, return_level=return_level, plane=plane,
             initial=initial, r=r, bottom=bottom, top=top, q=q if kind in PECK else None,
-            clearance=_clearance(ctx, kind, state.units), dwell=_seconds(modal.get("P"), rules),
+            clearance=_clearance(ctx, kind, state.units), dwell=_seconds(modal.get(cw.dwell), rules),
             orient=ctx.setup.cycles.orient_angle if kind in SHIFT else None, feed=feed, repeat=holes,
             spindle=spindle, motion=state.motion, start=here, position=position, step=step,
             shift=_shift(ctx, kind, q, first, second), words=words,
@@ -209,7 +216,7 @@ class CannedCycleResolveSyntax(Syntax):
         """How many holes the block makes: K/L (once without), none without hole position data."""
         rules = self._rules
         repeat, letter = 1, None
-        for candidate in rules.repeat_letters(ctx.setup.input.repeat_address):
+        for candidate in _cycle_words(ctx).repeat_letters(ctx.setup.input.repeat_address):
             if candidate in words:
                 repeat, letter = int(words[candidate]), candidate
                 break
@@ -221,45 +228,52 @@ class CannedCycleResolveSyntax(Syntax):
         position_words = (first, second, normal) if rules.any_axis_repeats else (first, second)
         return repeat if call or any(k in words for k in position_words) else 0
 
-    def _check(self, kind: str, code: str, modal: dict[str, Any], normal: str, feed: float | None,
-               return_level: str, spindle: str, call: bool, fail: "_Failer") -> None:
+    def _check(self, kind: str, code: str, modal: dict[str, Any], cw: CycleWords, depth: str,
+               feed: float | None, return_level: str, spindle: str, call: bool, fail: "_Failer") -> None:
         """The words the cycle needs, and the combinations the controller refuses."""
         rs274 = self._rules.name == "rs274"
-        if normal not in modal:
-            raise fail(f"{code} needs a hole bottom {normal}")
-        if "R" not in modal:
-            raise fail(f"{code} needs an R level R")
-        p = modal.get("P")
+        if depth not in modal:
+            raise fail(f"{code} needs a hole bottom {depth}")
+        if cw.level not in modal:
+            raise fail(f"{code} needs an R level {cw.level}")
+        dwell = cw.dwell
+        p = modal.get(dwell)
         if rs274 and kind in DWELLING and p is None:
-            raise fail(f"{code} needs a dwell time P")
+            raise fail(f"{code} needs a dwell time {dwell}")
         if p is not None and p < 0:
-            raise fail(f"{code} dwell time P cannot be negative", "P")
-        q = modal.get("Q")
+            raise fail(f"{code} dwell time {dwell} cannot be negative", dwell)
         if kind in PECK:
+            peck = cw.peck
+            q = modal.get(peck)
             if q is None:
-                raise fail(f"{code} needs a peck depth Q")
+                raise fail(f"{code} needs a peck depth {peck}")
             if q <= 0:
-                raise fail(f"{code} peck depth Q must be positive", "Q")
+                raise fail(f"{code} peck depth {peck} must be positive", peck)
         if kind in SHIFT:
+            shift = cw.shift
+            q = modal.get(shift)
             if q is None and kind == "back_bore":
-                raise fail(f"{code} needs a shift Q")
+                raise fail(f"{code} needs a shift {shift}")
             if q is not None and q < 0:
-                raise fail(f"{code} shift Q cannot be negative: the set-up gives its direction", "Q")
+                raise fail(f"{code} shift {shift} cannot be negative: the set-up gives its direction", shift)
         if feed is None or feed <= 0:
             raise fail(f"{code} needs a feed rate F")
         if kind == "back_bore" and return_level == "r":
             if call:
-                raise fail(f"{code} cannot be used with G99")
-            where = fail.ctx.at(fail.block, _code_column(fail.block, "G99"))
-            raise ProgramError(f"{code} cannot be used with G99", where)
+                raise fail(f"{code} cannot be used with {cw.return_to_r}")
+            where = fail.ctx.at(fail.block, _code_column(fail.block, cw.return_to_r))
+            raise ProgramError(f"{code} cannot be used with {cw.return_to_r}", where)
         if rs274 and kind in TAP and spindle != ("cw" if kind == "tap" else "ccw"):
-            turning = "clockwise (M3)" if kind == "tap" else "counterclockwise (M4)"
+            direction = "cw" if kind == "tap" else "ccw"
+            turning = "clockwise" if direction == "cw" else "counterclockwise"
+            if direction in cw.spindle:
+                turning += f" ({cw.spindle[direction]})"
             raise fail(f"{code} needs the spindle turning {turning}")
         if rs274 and kind in ("bore_stop", "bore_manual") and spindle not in ("cw", "ccw"):
             raise fail(f"{code} needs the spindle turning")
 
-    def _levels(self, ctx: Context, kind: str, code: str, modal: dict[str, Any], normal: str,
-                incremental: bool, fail: "_Failer") -> tuple[float, float, float, float | None]:
+    def _levels(self, ctx: Context, kind: str, code: str, modal: dict[str, Any], normal: str, level: str,
+                depth: str, incremental: bool, fail: "_Failer") -> tuple[float, float, float, float | None]:
         """(initial level, R level, bottom, top of a counterbore) on the drilling axis. The initial
         level is the one the active cycle started at; G91 R is measured from it."""
         start = ctx.state.position.get(normal)
@@ -269,22 +283,22 @@ class CannedCycleResolveSyntax(Syntax):
             raise fail(f"the initial level of {code} is unknown: {normal} was never positioned absolutely")
         if start is None:
             raise fail(f"the {normal} position before {code} is unknown: program {normal} absolutely first")
-        r, bottom = float(modal["R"]), float(modal[normal])
+        r, bottom = float(modal[level]), float(modal[depth])
         if incremental:
             r += initial
             bottom += r
         if kind != "back_bore":
             if bottom > r:
-                raise fail(f"{code} hole bottom {normal} is above the R level", normal)
+                raise fail(f"{code} hole bottom {depth} is above the R level", depth)
             return initial, r, bottom, None
         if ctx.setup.cycles.back_boring_levels == "seed":
             if bottom >= r:
-                raise fail(f"{code} {normal} must lie below R (back-boring levels 'seed': {normal} is the "
-                           "bottom, R the top)", normal)
+                raise fail(f"{code} {depth} must lie below {level} (back-boring levels 'seed': {depth} is the "
+                           f"bottom, {level} the top)", depth)
             return initial, r, bottom, r
         if r >= bottom:
-            raise fail(f"{code} R must lie below {normal} (back-boring levels 'manual': R is the bottom, "
-                       f"{normal} the top)", "R")
+            raise fail(f"{code} {level} must lie below {depth} (back-boring levels 'manual': {level} is the "
+                       f"bottom, {depth} the top)", level)
         return initial, r, r, bottom
 
 
@@ -320,6 +334,15 @@ def _positions(code: str, words: dict[str, Any], here: dict[str, float], plane: 
         if holes and axis not in position:
             raise fail(f"the hole position of {code} is unknown: {axis} was never positioned absolutely")
     return position, step
+
+
+def _cycle_words(ctx: Context) -> CycleWords:
+    """The reading dialect's cycle words; a dialect with canned cycles must declare them."""
+    cw = ctx.cycle_words
+    if cw is None:
+        raise ConfigError(f"the {ctx.dialect} dialect reads canned cycles but declares no cycle words "
+                          "(Dialect.CYCLE_WORDS)")
+    return cw
 
 
 def _modal(sections: dict[str, Any], key: str, attr: str, default: Any) -> Any:
@@ -359,7 +382,8 @@ _COMMENT = re.compile(r"\([^)]*\)?")
 
 
 def _code_column(block: Block, code: str) -> int:
-    """Column of the cycle's G word in the source text (comments blanked, leading zeros allowed)."""
+    """Column of the cycle's code in the source text (comments blanked, leading zeros allowed)."""
     text = _COMMENT.sub(lambda m: " " * len(m.group(0)), (block.text or "").upper())
-    m = re.search(r"G\s*0*" + re.escape(code[1:]) + r"(?![\d.])", text)
+    letter, number = code[:1].upper(), code[1:].lstrip("0")
+    m = re.search(re.escape(letter) + r"\s*0*" + re.escape(number) + r"(?![\d.])", text)
     return m.start() + 1 if m else 1

@@ -14,7 +14,7 @@ start below R                 positions in the plane, then to R    rapid up to R
 G98 return level              the initial level                    the initial level, or R if higher
 positioning level             the tool's current level             the current level if above R, else
                                                                    the return level (one traverse)
-repeat count                  K (L or K+L per the set-up)          L; L0 is an error
+repeat count 0                no hole                              an error (the letters: CycleWords)
 dwell P                       milliseconds (integer)               seconds
 cycle data after a new code   carried over (Z, R, Q, P)            Z and R (Q, P) must be given again
 G74/G84 without P             no dwell                             the last P of any cycle, even one
@@ -31,13 +31,6 @@ the Z at the block's start, G91 R from it), which that interpreter no longer fol
 from __future__ import annotations
 
 from dataclasses import dataclass
-
-CODES = {
-    "peck_chip": "G73", "tap_left": "G74", "fine_bore": "G76", "drill": "G81", "drill_dwell": "G82",
-    "peck_deep": "G83", "tap": "G84", "bore_feed": "G85", "bore_stop": "G86", "back_bore": "G87",
-    "bore_manual": "G88", "bore_dwell_feed": "G89",
-}
-"""How messages name a cycle: both families number the milling cycles alike."""
 
 PECK = frozenset(("peck_chip", "peck_deep"))
 TAP = frozenset(("tap", "tap_left"))
@@ -61,12 +54,6 @@ class Semantics:
     sticky_tap_dwell: bool
     unsupported: frozenset[str]
     """Cycles with no meaning under this family's words."""
-
-    def repeat_letters(self, repeat_address: str) -> tuple[str, ...]:
-        """Addresses that count repeats, in order of preference."""
-        if self.name == "rs274":
-            return ("L",)
-        return tuple(repeat_address.split("+"))
 
 
 FANUC = Semantics("fanuc", rise_to_r=False, clear_above_r=False, position_at_clear=False,

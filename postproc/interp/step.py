@@ -22,7 +22,8 @@ from ..control import ASSIGN, CONTROL
 from ..errors import Diagnostics, ErrorLevel, PostprocError
 from ..expr import Expr
 from ..ir import AXES, Block
-from ..syntax import Context, Syntax
+from ..context import Context
+from ..syntax import Syntax
 from .machine import Interpreter, spell_integer, spell_number
 from .store import Program, ProgramStore
 from .variables import FanucVariables, NgcVariables, Variables

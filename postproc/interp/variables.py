@@ -44,9 +44,9 @@ FANUC_SYSTEM: tuple[tuple[int, int, str], ...] = (
 
 NGC_SYSTEM: tuple[tuple[int, int, str], ...] = (
     (5061, 5070, "probe result"),
-    (5161, 5169, "G28 home position"),
-    (5181, 5189, "G30 home position"),
-    (5211, 5219, "G92 offset"),
+    (5161, 5169, "first reference point position"),
+    (5181, 5189, "second reference point position"),
+    (5211, 5219, "origin offset"),
     (5220, 5220, "active coordinate system"),
     (5221, 5399, "work offset"),
     (5400, 5419, "tool data"),

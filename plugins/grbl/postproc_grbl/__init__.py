@@ -30,9 +30,13 @@ from typing import Callable
 
 from postproc.dialect import Dialect
 from postproc.hookspecs import hookimpl
+from postproc.rs274.cycle_words import rs274_cycle_words
 from postproc.xmlio import XFactory
 
+from .codes import CODES
+
 from .block_syntax import GrblBlockSyntax
+from .lowering import cancel_length_offset_first, close_full_circles, pause_for_tool_change
 from .reader import GrblReader
 from .writer import GrblWriter
 
@@ -43,12 +47,17 @@ class Grbl(Dialect):
     READER = GrblReader
     WRITER = GrblWriter
     PIPELINE_FILE = "grbl.xml"
+    CYCLE_WORDS = rs274_cycle_words(CODES, ("L",))
+    """R level, Q peck/shift, P dwell (seconds), L repeats."""
     NATIVE_CYCLES = frozenset()
     """No canned cycles: every cycle is expanded to G0/G1/G4/M3/M4/M5."""
     SPINDLE_ORIENTATION = False
     """No M19: cycles that need an oriented stop follow the set-up's ``Cycles orientation``."""
     TOOL_CHANGER = False
-    """M6 is rejected: a tool change is written as an M0 pause."""
+    """M6 is rejected: a tool change is written as an M0 pause (``pause_for_tool_change``)."""
+    LOWERING = (pause_for_tool_change, cancel_length_offset_first, close_full_circles)
+    """Rewrites into what grbl runs (``lowering.py``): tool change as a pause, G49 before motion, full
+    circles with an end point."""
     CUTTER_COMPENSATION = False
     """Only G40."""
     TOOL_LENGTH_OFFSET = False

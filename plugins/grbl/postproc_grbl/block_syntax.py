@@ -1,7 +1,8 @@
 """GrblBlockSyntax: RS274/NGC block rules with grbl's code tables.
 
 grbl's parser follows the NIST RS274/NGC rules (no decimal-point scaling, G4 P in seconds, G80 leaves
-no motion mode) and accepts a subset of the codes, so this reuses ``NgcBlockSyntax`` with grbl's tables.
+no motion mode) and accepts a subset of the codes, so this is the family's ``NgcWordBlockSyntax`` with
+grbl's table.
 Reading grbl matters for ``verify``: the toolpath of a translated program is simulated from its text.
 """
 
@@ -9,28 +10,24 @@ from __future__ import annotations
 
 from typing import Any, ClassVar
 
+from postproc.context import Context
 from postproc.errors import ParseError
 from postproc.ir import Block, ToolChange
-from postproc.syntax import Context
-from dialects.fanuc.block_syntax import _col_of_word
-from postproc_linuxcnc.block_syntax import NgcBlockSyntax
+from postproc.rs274.block_syntax import col_of_word
+from postproc.rs274.codes import CodeTable
+from postproc.rs274.ngc_block_syntax import NgcWordBlockSyntax
 
-from . import codes
+from .codes import CODES, NO_M19
 
 
-class GrblBlockSyntax(NgcBlockSyntax):
+class GrblBlockSyntax(NgcWordBlockSyntax):
     """Lexed words -> neutral sections, for grbl 1.1."""
 
     XNAME = "GrblBlockSyntax"
     __slots__ = ()
     DIALECT: ClassVar[str] = "grbl"
-    G_CODES = codes.G_CODES
-    NATIVE_G = codes.NATIVE_G
-    REFUSED_G = codes.REFUSED_G
-    M_CODES = {**codes.M_CODES, 19: ("orient", None)}
-    NATIVE_M = codes.NATIVE_M
-    REFUSED_M = {k: v for k, v in codes.REFUSED_M.items() if k != 19}
-    USER_M = codes.USER_M
+    CONTROL: ClassVar[str] = "grbl"
+    CODES: ClassVar[CodeTable] = CODES
     REAL_LETTERS = frozenset("XYZIJKRPF")
     INTEGER_LETTERS = frozenset("NTL")
     FEED_BEFORE_UNITS = False
@@ -49,5 +46,5 @@ class GrblBlockSyntax(NgcBlockSyntax):
     def orient(self, block: Block, ctx: Context, num: str, values: dict[str, Any], used: set[str]) -> None:
         """M19 exists only on machines whose set-up says so (``<Cycles orientation="m19"/>``)."""
         if ctx.setup.cycles.orientation != "m19":
-            raise ParseError(codes.REFUSED_M[19], ctx.at(block, _col_of_word(block, "M", num)))
+            raise ParseError(NO_M19, ctx.at(block, col_of_word(block, "M", num)))
         super().orient(block, ctx, num, values, used)

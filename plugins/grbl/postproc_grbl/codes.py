@@ -1,18 +1,58 @@
-"""grbl 1.1 G and M code tables, in the Fanuc tables' format (see ``postproc_grbl`` for the sources).
+"""grbl 1.1 codes: one table, read by the reader and inverted by the writer (sources: ``postproc_grbl``).
 
-Only what grbl's parser (``grbl/gcode.c``) accepts is in ``G_CODES``/``M_CODES``; codes a Fanuc or
-LinuxCNC program commonly carries and grbl rejects get a message saying why in ``REFUSED_G``/``REFUSED_M``.
+Rows are ``(spelling, modal group, kind, argument)`` (see ``postproc.rs274.codes``), copied from the
+LinuxCNC rows for what grbl's parser (``grbl/gcode.c``) accepts; grbl writes codes without leading
+zeros. Codes a Fanuc or LinuxCNC program commonly carries and grbl rejects get a message saying why in
+``REFUSED_G``/``REFUSED_M``. M19 is a row (a grbl build may have it), but the reader accepts it only
+when the set-up says so (``NO_M19``).
 """
 
 from __future__ import annotations
 
-from postproc_linuxcnc.codes import G_CODES as NGC_G
+from postproc.rs274.codes import CodeTable
 
-_ACCEPTED = ("0", "1", "2", "3", "4", "17", "18", "19", "20", "21", "28", "30", "40", "49", "53",
-             "54", "55", "56", "57", "58", "59", "61", "80", "90", "91", "93", "94")
-
-G_CODES: dict[str, tuple[str, str, object]] = {k: NGC_G[k] for k in _ACCEPTED}
-"""Codes whose meaning the IR models and grbl runs (G61 is accepted and has no effect in grbl)."""
+ROWS = (
+    ("G0", "01", "motion", "rapid"),
+    ("G1", "01", "motion", "linear"),
+    ("G2", "01", "motion", "cw"),
+    ("G3", "01", "motion", "ccw"),
+    ("G4", "00", "dwell", None),
+    ("G17", "02", "plane", "XY"),
+    ("G18", "02", "plane", "ZX"),
+    ("G19", "02", "plane", "YZ"),
+    ("G20", "06", "units", "inch"),
+    ("G21", "06", "units", "mm"),
+    ("G28", "00", "home", "home"),
+    ("G30", "00", "home", "home2"),
+    ("G40", "07", "cutter", "off"),
+    ("G49", "08", "length", "cancel"),
+    ("G53", "00", "machine", None),
+    ("G54", "14", "offset", 1),
+    ("G55", "14", "offset", 2),
+    ("G56", "14", "offset", 3),
+    ("G57", "14", "offset", 4),
+    ("G58", "14", "offset", 5),
+    ("G59", "14", "offset", 6),
+    ("G61", "15", "path", "exact_stop"),
+    ("G80", "09", "cycle_cancel", None),
+    ("G90", "03", "distance", "absolute"),
+    ("G91", "03", "distance", "incremental"),
+    ("G93", "05", "feed_mode", "inverse_time"),
+    ("G94", "05", "feed_mode", "per_min"),
+    ("M0", "", "program", "stop"),
+    ("M1", "", "program", "optional_stop"),
+    ("M2", "", "program", "end"),
+    ("M3", "", "spindle", "cw"),
+    ("M4", "", "spindle", "ccw"),
+    ("M5", "", "spindle", "stop"),
+    ("M7", "", "coolant", "mist"),
+    ("M8", "", "coolant", "flood"),
+    ("M9", "", "coolant", "off"),
+    ("M19", "", "orient", None),
+    ("M30", "", "program", "end_rewind"),
+)
+"""Codes whose meaning the IR models and grbl runs (G61 is accepted and has no effect in grbl; M1 is
+accepted and ignored; M7 needs ENABLE_M7 in config.h)."""
 
 NATIVE_G: dict[str, str] = {
     "10": "set work offsets (G10 L2/L20)", "28.1": "store G28 position", "30.1": "store G30 position",
@@ -33,21 +73,20 @@ REFUSED_G: dict[str, str] = {
     "95": "grbl has no feed per revolution (G95)",
 }
 
-M_CODES: dict[int, tuple[str, object]] = {
-    0: ("program", "stop"), 1: ("program", "optional_stop"), 2: ("program", "end"),
-    30: ("program", "end_rewind"), 3: ("spindle", "cw"), 4: ("spindle", "ccw"), 5: ("spindle", "stop"),
-    7: ("coolant", "mist"), 8: ("coolant", "flood"), 9: ("coolant", "off"),
-}
-"""M1 is accepted and ignored by grbl; M7 needs ENABLE_M7 in config.h."""
-
 NATIVE_M: dict[int, str] = {56: "parking motion override"}
 
 REFUSED_M: dict[int, str] = {
     6: "grbl 1.1 rejects M6 (no tool changer)",
-    19: "grbl has no oriented spindle stop (M19); a set-up with <Cycles orientation=\"m19\"/> accepts it",
     98: "grbl has no subprograms (M98/M99)",
     99: "grbl has no subprograms (M98/M99)",
 }
 
 USER_M = range(0)
 """grbl has no user M codes."""
+
+NO_M19 = "grbl has no oriented spindle stop (M19); a set-up with <Cycles orientation=\"m19\"/> accepts it"
+"""Why the reader refuses M19 unless the set-up says the machine has it."""
+
+CODES = CodeTable(ROWS, native_g=NATIVE_G, native_m=NATIVE_M, refused_g=REFUSED_G, refused_m=REFUSED_M,
+                  user_m=USER_M)
+"""grbl's code table."""

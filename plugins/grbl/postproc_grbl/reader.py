@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from postproc_linuxcnc.reader import NgcReader
+from postproc.rs274.ngc_lexer import NgcReader
 
 
 class GrblReader(NgcReader):

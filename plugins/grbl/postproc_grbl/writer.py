@@ -1,10 +1,9 @@
 """grbl writer: the RS274 word writer with grbl 1.1's tables and its refusals.
 
 What grbl lacks is an ``UnsupportedError`` naming the construct, except where the target has one
-faithful spelling of the same physical action:
+faithful spelling of the same physical action. The block rewrites (a tool change as a ``T<n> M0``
+pause, G49 before motion, full circles) are grbl's lowering steps (``lowering.py``); here:
 
-* a tool change (M6, rejected by grbl) becomes ``T<n> M0``, a program pause with a comment naming the
-  tool, so the operator changes it by hand (the grbl reader reads ``T<n> M0`` back as a tool change);
 * an oriented spindle stop follows the set-up's ``<Cycles orientation=...>``: ``m19`` writes M19 anyway
   (a grbl build that has it), ``stop`` a program pause for the operator, ``error`` (default) refuses;
   grbl's M0 leaves the spindle turning, so a pause for the operator (also inside a cycle's
@@ -22,10 +21,13 @@ from __future__ import annotations
 
 from typing import Any, ClassVar
 
-from postproc.errors import UnsupportedError
-from postproc.ir import Block, CompoundMotion, DistanceMode, Motion, ProgramControl, Section
+from postproc.errors import Location, UnsupportedError
+from postproc.ir import Block, CompoundMotion, ProgramControl, Section
 from postproc.state import PLANE_AXES
-from postproc.writer import WordWriter
+from postproc.rs274.codes import CodeTable
+from postproc.rs274.writer import WordWriter
+
+from .codes import CODES
 
 DROPPABLE = frozenset({
     "ToolLengthOffset", "CutterCompensation", "BlockDelete", "PathControl", "SpindleOrientation",
@@ -38,27 +40,11 @@ GRBL_AXES = frozenset("XYZ")
 
 class GrblWriter(WordWriter):
     DIALECT: ClassVar[str] = "grbl"
-    MOTION: ClassVar[dict[str, str]] = {"rapid": "G0", "linear": "G1", "cw": "G2", "ccw": "G3",
-                                        "home": "G28", "home2": "G30"}
-    FEED_MODE: ClassVar[dict[str, str]] = {"per_min": "G94", "inverse_time": "G93"}
-    RETURN_LEVEL: ClassVar[dict[str, str]] = {}
-    CUTTER: ClassVar[dict[str, str]] = {"off": "G40"}
-    LENGTH: ClassVar[dict[str, str]] = {"cancel": "G49"}
-    PATH: ClassVar[dict[str, str]] = {"exact_stop": "G61"}
-    PATH_ONCE: ClassVar[str | None] = None
-    SPINDLE: ClassVar[dict[str, str]] = {"cw": "M3", "ccw": "M4", "stop": "M5"}
-    COOLANT: ClassVar[dict[str, str]] = {"mist": "M7", "flood": "M8", "off": "M9"}
-    PROGRAM: ClassVar[dict[str, str]] = {"stop": "M0", "optional_stop": "M1", "end": "M2", "end_rewind": "M30"}
-    TOOL_CHANGE: ClassVar[str | None] = None
-    ORIENT: ClassVar[str | None] = None
-    DWELL: ClassVar[str] = "G4"
-    DWELL_WORD: ClassVar[str] = "Ps"
+    CODES: ClassVar[CodeTable] = CODES
+    DWELL_WORD: ClassVar[str] = "P"
 
-    def __init__(self, ctx: Any, source_dialect: str) -> None:
-        super().__init__(ctx, source_dialect)
-        self.tool: int | None = None
-        self.plane = "XY"
-        self.spindle = "stop"
+    def __init__(self, ctx: Any, source_dialect: str, target: Any = None) -> None:
+        super().__init__(ctx, source_dialect, target)
         self._dropped: list[UnsupportedError] = []
         self._strict = False
         """True while writing an expansion: nothing may be dropped from a cycle's motion."""
@@ -77,48 +63,10 @@ class GrblWriter(WordWriter):
         return self.comment_out(block) + (text or "")
 
     def generate(self, block: Block) -> str:
-        sections = block.sections
-        motion = sections.get("Motion")
-        if motion is not None and motion.mode in ("cw", "ccw"):  # type: ignore[attr-defined]
-            return self._arc_block(block, motion)  # type: ignore[arg-type]
-        offset = sections.get("ToolLengthOffset")
-        if offset is not None and offset.mode == "cancel" and (  # type: ignore[attr-defined]
-                motion is not None or "CompoundMotion" in sections):
-            # grbl refuses G49 (an axis command of its own) in a block with motion: write it first.
-            first = Block(block.line, None, "\n")
-            first.sections = {"ToolLengthOffset": offset}
-            rest = Block(block.line, None, block.eol)
-            rest.sections = {k: v for k, v in sections.items() if k != "ToolLengthOffset"}
-            return super().generate(first) + super().generate(rest)
         text = super().generate(block)
         if block.text is None and block.sections and not text.strip():
             return ""  # a generated part whose only words grbl does without (G98/G99, G64)
         return text
-
-    def _arc_block(self, block: Block, arc: Motion) -> str:
-        """grbl needs an end point in the plane of every arc (no full-circle form): a full circle
-        written as ``G3 I-7.`` gets a zero increment, in G91 for this one block."""
-        plane = block.sections.get("Plane")
-        a0, a1, _ = PLANE_AXES[plane.plane if plane is not None else self.plane]  # type: ignore[attr-defined]
-        if a0 in arc.axes or a1 in arc.axes:
-            return super().generate(block)
-        distance = block.sections.get("DistanceMode")
-        mode = distance.mode if distance is not None else self.distance  # type: ignore[attr-defined]
-        absolute = mode == "absolute"
-        if absolute and arc.axes:
-            self.unsupported("a helical full circle with no end point in its plane, in absolute mode", block)
-        fixed = Block(block.line, None, block.eol)
-        fixed.sections = dict(block.sections)
-        fixed.sections["Motion"] = Motion(arc.mode, {a0: 0.0, **arc.axes}, arc.center, arc.radius)
-        if not absolute:
-            return super().generate(fixed)
-        fixed.sections["DistanceMode"] = DistanceMode("incremental")
-        text = super().generate(fixed)
-        return text + self.distance_mode_words(DistanceMode("absolute"), block)[0] + (block.eol or "\n")
-
-    def plane_words(self, s: Any, block: Block) -> list[str]:
-        self.plane = s.plane
-        return super().plane_words(s, block)
 
     def section_words(self, key: str, section: Section, block: Block) -> list[str]:
         try:
@@ -141,9 +89,9 @@ class GrblWriter(WordWriter):
         out): grbl's M0 leaves the spindle turning, so a running spindle is stopped first."""
         line = super().item_line(item, block)
         pause = isinstance(item, ProgramControl) and item.kind == "stop"
-        if pause and self.spindle != "stop":
-            self.spindle = "stop"
-            return self.SPINDLE["stop"] + "\n" + line
+        if pause and self.modal.spindle != "stop":
+            self.modal.spindle = "stop"
+            return self.code("spindle", "stop", "spindle stop", block) + "\n" + line
         return line
 
     # -- section words -----------------------------------------------------------------------------
@@ -169,6 +117,11 @@ class GrblWriter(WordWriter):
         extra = [a for a in s.axes if a not in GRBL_AXES]
         if extra:
             self.unsupported(f"motion of axis {extra[0]} (grbl drives X, Y and Z)", block)
+        if s.mode in ("cw", "ccw"):
+            plane = block.sections.get("Plane")
+            a0, a1, _ = PLANE_AXES[plane.plane if plane is not None else self.modal.plane]  # type: ignore[attr-defined]
+            if a0 not in s.axes and a1 not in s.axes:  # what close_full_circles could not close
+                self.unsupported("a helical full circle with no end point in its plane, in absolute mode", block)
         return super().motion_words(s, block)
 
     def tool_length_offset_words(self, s: Any, block: Block) -> list[str]:
@@ -177,44 +130,19 @@ class GrblWriter(WordWriter):
             self.unsupported(f"a tool length offset from a table (G43{register}; grbl has only G43.1)", block)
         return super().tool_length_offset_words(s, block)
 
-    def cutter_compensation_words(self, s: Any, block: Block) -> list[str]:
-        if s.mode != "off":
-            self.unsupported(f"cutter radius compensation ({s.mode})", block)
-        return ["G40"]
-
-    def tool_select_words(self, s: Any, block: Block) -> list[str]:
-        self.tool = s.number
-        return super().tool_select_words(s, block)
-
-    def tool_change_words(self, s: Any, block: Block) -> list[str]:
-        """No tool changer (grbl 1.1 rejects M6): ``T<n> M0``, a pause to change the tool by hand.
-        grbl ignores T, so the T word only names the tool; the grbl reader reads the pair back as a
-        tool change. A running spindle is stopped first, as a tool changer would."""
-        words: list[str] = []
-        if "ToolSelect" not in block.sections and self.tool is not None:
-            words.append(f"T{self.tool}")
-        if self.spindle != "stop" and "SpindleControl" not in block.sections:
-            self.ctx.diagnostics.warn("the spindle is running at a tool change: M5 written before the pause",
-                                      self.ctx.at(block))
-            words.append("M5")
-            self.spindle = "stop"
-        tool = f"T{self.tool}" if self.tool is not None else "THE NEXT TOOL"
-        return words + ["M0", self.comment(f"TOOL CHANGE: LOAD {tool}, THEN CYCLE START")]
-
-    def spindle_control_words(self, s: Any, block: Block) -> list[str]:
-        self.spindle = s.direction
-        return super().spindle_control_words(s, block)
-
     def spindle_orientation_words(self, s: Any, block: Block) -> list[str]:
         mode = self.ctx.setup.cycles.orientation
         angle = float(s.angle)
         if mode == "m19":
-            return ["M19"] + ([f"R{self.number(angle)}"] if angle else [])
+            return [self.code("orient", None, "an oriented spindle stop", block)] + (
+                [f"R{self.number(angle)}"] if angle else [])
         if mode == "stop":
-            words = [] if self.spindle == "stop" or "SpindleControl" in block.sections else ["M5"]
-            self.spindle = "stop"
-            return words + ["M0", self.comment(f"ORIENT THE SPINDLE TO {self.number(angle)} DEG BY HAND, "
-                                               "THEN CYCLE START")]
+            stop = self.code("spindle", "stop", "spindle stop", block)
+            words = [] if self.modal.spindle == "stop" or "SpindleControl" in block.sections else [stop]
+            self.modal.spindle = "stop"
+            pause = self.code("program", "stop", "a program stop", block)
+            note = self.comment(f"ORIENT THE SPINDLE TO {self.number(angle)} DEG BY HAND, THEN CYCLE START")
+            return words + [pause, note]
         self.unsupported("an oriented spindle stop (M19); a set-up with <Cycles orientation=\"stop\"/> "
                          "pauses for the operator instead", block)
         return []

@@ -16,11 +16,14 @@ from postproc.dialect import Dialect
 from postproc.errors import Diagnostics
 from postproc.hookspecs import hookimpl
 from postproc.setup import MachineSetup
-from postproc.syntax import Context
+from postproc.context import Context
+from postproc.rs274.cycle_words import rs274_cycle_words
 from postproc.xmlio import XFactory
 
+from .codes import CODES
+
 from .block_syntax import NgcBlockSyntax
-from .reader import NgcReader
+from .reader import LinuxcncReader
 from .writer import LinuxcncWriter
 
 NATIVE = frozenset({
@@ -32,9 +35,11 @@ NATIVE = frozenset({
 class Linuxcnc(Dialect):
     NAME = "linuxcnc"
     DESCRIPTION = "LinuxCNC 2.9 milling (RS274/NGC; no O-words, parameters or expressions yet)"
-    READER = NgcReader
+    READER = LinuxcncReader
     WRITER = LinuxcncWriter
     PIPELINE_FILE = "linuxcnc.xml"
+    CYCLE_WORDS = rs274_cycle_words(CODES, ("L",))
+    """R level, Q peck/shift, P dwell (seconds), L repeats."""
     NATIVE_CYCLES = NATIVE
     """G73, G74, G81-G86, G89. Not G76 (threading here), G87/G88 (RS274/NGC words and motion), and
     there is no fine boring: those are expanded."""

@@ -1,29 +1,80 @@
-"""LinuxCNC (RS274/NGC, milling) G and M code tables in the Fanuc tables' format.
+"""LinuxCNC (RS274/NGC, milling) codes: one table, read by the reader and inverted by the writer.
 
-Spread from Fanuc's tables (as sqlglot dialects spread their parent's) and overridden where the same
-number means something else or does not exist. Sources: LinuxCNC ``docs/src/gcode/g-code.adoc`` and
+Rows are ``(spelling, modal group, kind, argument)`` (see ``postproc.rs274.codes``); LinuxCNC writes
+codes without leading zeros (``G0``, ``M3``). The rows were copied from the Fanuc milling table and
+changed where the same number means something else or does not exist: no G9 or G44, G76 is threading
+and G87/G88 follow the NIST RS274/NGC words and motion (kept verbatim, see ``NATIVE_G``); G59.1-G59.3,
+G61.1 and G93 are added. G61 (exact path) and G61.1 (exact stop) both read as exact stop (the IR does
+not tell them apart); G61 is written. Sources: LinuxCNC ``docs/src/gcode/g-code.adoc`` and
 ``m-code.adoc``, and DIALECTS.md §2.1 "LinuxCNC / RS274-NGC baseline".
 """
 
 from __future__ import annotations
 
-from dialects.fanuc.codes import G_CODES as FANUC_G
-from dialects.fanuc.codes import M_CODES as FANUC_M
+from postproc.rs274.codes import CodeTable
 
-_NOT_IN_LINUXCNC = ("9", "44", "76", "87", "88")
-"""Fanuc codes LinuxCNC lacks (G9, G44) or gives another meaning (G76 threading; G87/G88 follow the
-NIST RS274/NGC words and motion, not Fanuc's: they are kept verbatim, see ``NATIVE_G``)."""
-
-G_CODES: dict[str, tuple[str, str, object]] = {
-    **{k: v for k, v in FANUC_G.items() if k not in _NOT_IN_LINUXCNC},
-    "59.1": ("14", "offset", 7),
-    "59.2": ("14", "offset", 8),
-    "59.3": ("14", "offset", 9),
-    "61.1": ("15", "path", "exact_stop"),
-    "93": ("05", "feed_mode", "inverse_time"),
-}
-"""Codes whose meaning the IR models; group numbers follow Fanuc's so the shared block logic applies.
-G61 (exact path) and G61.1 (exact stop) both read as exact stop: the IR does not tell them apart."""
+ROWS = (
+    ("G0", "01", "motion", "rapid"),
+    ("G1", "01", "motion", "linear"),
+    ("G2", "01", "motion", "cw"),
+    ("G3", "01", "motion", "ccw"),
+    ("G4", "00", "dwell", None),
+    ("G17", "02", "plane", "XY"),
+    ("G18", "02", "plane", "ZX"),
+    ("G19", "02", "plane", "YZ"),
+    ("G20", "06", "units", "inch"),
+    ("G21", "06", "units", "mm"),
+    ("G28", "00", "home", "home"),
+    ("G30", "00", "home", "home2"),
+    ("G40", "07", "cutter", "off"),
+    ("G41", "07", "cutter", "left"),
+    ("G42", "07", "cutter", "right"),
+    ("G43", "08", "length", "positive"),
+    ("G49", "08", "length", "cancel"),
+    ("G53", "00", "machine", None),
+    ("G54", "14", "offset", 1),
+    ("G55", "14", "offset", 2),
+    ("G56", "14", "offset", 3),
+    ("G57", "14", "offset", 4),
+    ("G58", "14", "offset", 5),
+    ("G59", "14", "offset", 6),
+    ("G59.1", "14", "offset", 7),
+    ("G59.2", "14", "offset", 8),
+    ("G59.3", "14", "offset", 9),
+    ("G61", "15", "path", "exact_stop"),
+    ("G61.1", "15", "path", "exact_stop"),
+    ("G64", "15", "path", "cutting"),
+    ("G73", "09", "cycle", "peck_chip"),
+    ("G74", "09", "cycle", "tap_left"),
+    ("G80", "09", "cycle_cancel", None),
+    ("G81", "09", "cycle", "drill"),
+    ("G82", "09", "cycle", "drill_dwell"),
+    ("G83", "09", "cycle", "peck_deep"),
+    ("G84", "09", "cycle", "tap"),
+    ("G85", "09", "cycle", "bore_feed"),
+    ("G86", "09", "cycle", "bore_stop"),
+    ("G89", "09", "cycle", "bore_dwell_feed"),
+    ("G90", "03", "distance", "absolute"),
+    ("G91", "03", "distance", "incremental"),
+    ("G93", "05", "feed_mode", "inverse_time"),
+    ("G94", "05", "feed_mode", "per_min"),
+    ("G95", "05", "feed_mode", "per_rev"),
+    ("G98", "10", "return", "initial"),
+    ("G99", "10", "return", "r"),
+    ("M0", "", "program", "stop"),
+    ("M1", "", "program", "optional_stop"),
+    ("M2", "", "program", "end"),
+    ("M3", "", "spindle", "cw"),
+    ("M4", "", "spindle", "ccw"),
+    ("M5", "", "spindle", "stop"),
+    ("M6", "", "tool_change", None),
+    ("M7", "", "coolant", "mist"),
+    ("M8", "", "coolant", "flood"),
+    ("M9", "", "coolant", "off"),
+    ("M19", "", "orient", None),
+    ("M30", "", "program", "end_rewind"),
+)
+"""Codes whose meaning the IR models (M19 takes its angle from R on LinuxCNC)."""
 
 NATIVE_G: dict[str, str] = {
     "5": "cubic spline", "5.1": "quadratic spline", "5.2": "NURBS block", "5.3": "NURBS block end",
@@ -48,9 +99,6 @@ REFUSED_G: dict[str, str] = {
 }
 """Codes that would change how later blocks read: refused rather than kept verbatim."""
 
-M_CODES: dict[int, tuple[str, object]] = dict(FANUC_M)
-"""M0-M9 and M19 mean the same as on Fanuc (M19 takes its angle from R on LinuxCNC)."""
-
 NATIVE_M: dict[int, str] = {
     48: "feed and speed overrides on", 49: "feed and speed overrides off", 50: "feed override control",
     51: "spindle speed override control", 52: "adaptive feed control", 53: "feed stop control",
@@ -68,3 +116,8 @@ REFUSED_M: dict[int, str] = {
 
 USER_M = range(100, 200)
 """M100-M199 run user programs; kept verbatim."""
+
+
+CODES = CodeTable(ROWS, native_g=NATIVE_G, native_m=NATIVE_M, refused_g=REFUSED_G, refused_m=REFUSED_M,
+                  user_m=USER_M)
+"""LinuxCNC's code table."""

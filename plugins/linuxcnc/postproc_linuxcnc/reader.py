@@ -1,27 +1,9 @@
-"""LinuxCNC reader: physical lines -> lexed blocks. Errors are reported per block; the block is kept."""
+"""LinuxCNC reader: the RS274/NGC family reader, naming LinuxCNC in its messages."""
 
 from __future__ import annotations
 
-from typing import Iterable, Iterator
-
-from postproc.dialect import Reader
-from postproc.errors import PostprocError
-from postproc.ir import Block
-
-from .lexer import lex_block, split_lines
+from postproc.rs274.ngc_lexer import NgcReader
 
 
-class NgcReader(Reader):
+class LinuxcncReader(NgcReader):
     DIALECT = "linuxcnc"
-    """Names the dialect in lexical error messages (the grbl reader subclasses this one)."""
-
-    def read(self, lines: Iterable[str]) -> Iterator[Block]:
-        file = self.ctx.file
-        dialect = self.DIALECT
-        report = self.ctx.diagnostics.error
-        for number, text, eol in split_lines(lines):
-            try:
-                yield lex_block(file, number, text, eol, dialect)
-            except PostprocError as err:
-                report(err)
-                yield Block(number, text, eol)

@@ -1,4 +1,4 @@
-"""LinuxCNC writer: the RS274 word writer with LinuxCNC's spelling of what differs from Fanuc.
+"""LinuxCNC writer: the RS274 word writer spelling every code from LinuxCNC's table (G0, M3, G4 P seconds).
 
 * G4 P and a cycle's P are seconds; the repeat count of a native cycle is L.
 * No G44, no one-shot exact stop (G9) and no O-number programs: the first two are unsupported, the
@@ -15,37 +15,29 @@ from __future__ import annotations
 from typing import Any, ClassVar
 
 from postproc.ir import Block
+from postproc.context import Context
+from postproc.dialect import Dialect
 from postproc.state import MM_PER_INCH
-from postproc.syntax import Context
-from postproc.writer import WordWriter
+from postproc.rs274.codes import CodeTable
+from postproc.rs274.writer import WordWriter
+
+from .codes import CODES
 
 
 class LinuxcncWriter(WordWriter):
     DIALECT: ClassVar[str] = "linuxcnc"
-    MOTION: ClassVar[dict[str, str]] = {"rapid": "G0", "linear": "G1", "cw": "G2", "ccw": "G3",
-                                        "home": "G28", "home2": "G30"}
-    WORK_OFFSET: ClassVar[dict[int, str]] = {**WordWriter.WORK_OFFSET, 7: "G59.1", 8: "G59.2", 9: "G59.3"}
-    FEED_MODE: ClassVar[dict[str, str]] = {**WordWriter.FEED_MODE, "inverse_time": "G93"}
-    LENGTH: ClassVar[dict[str, str]] = {"positive": "G43", "cancel": "G49"}
-    PATH_ONCE: ClassVar[str | None] = None
-    SPINDLE: ClassVar[dict[str, str]] = {"cw": "M3", "ccw": "M4", "stop": "M5"}
-    COOLANT: ClassVar[dict[str, str]] = {"mist": "M7", "flood": "M8", "off": "M9"}
-    PROGRAM: ClassVar[dict[str, str]] = {"stop": "M0", "optional_stop": "M1", "end": "M2", "end_rewind": "M30"}
-    TOOL_CHANGE: ClassVar[str | None] = "M6"
-    DWELL: ClassVar[str] = "G4"
-    DWELL_WORD: ClassVar[str] = "Ps"
-    CYCLES: ClassVar[dict[str, str]] = {k: v for k, v in WordWriter.CYCLES.items()
-                                        if k not in ("fine_bore", "back_bore", "bore_manual")}
-    """G76 threads, G87/G88 take other words: never written as Fanuc's cycles."""
+    CODES: ClassVar[CodeTable] = CODES
+    """G76 threads, G87/G88 take other words: no row spells Fanuc's fine, back or manual boring."""
+    DWELL_WORD: ClassVar[str] = "P"
 
-    def __init__(self, ctx: Context, source_dialect: str) -> None:
-        super().__init__(ctx, source_dialect)
-        self.units_before = self.units
+    def __init__(self, ctx: Context, source_dialect: str, target: type[Dialect] | None = None) -> None:
+        super().__init__(ctx, source_dialect, target)
+        self.units_before = self.modal.units
         """Units in force before the block being written (its F is read in them)."""
         self.inverse_time = False
 
     def units_words(self, s: Any, block: Block) -> list[str]:
-        self.units_before = self.units
+        self.units_before = self.modal.units
         return super().units_words(s, block)
 
     def feed_mode_words(self, s: Any, block: Block) -> list[str]:
@@ -57,10 +49,11 @@ class LinuxcncWriter(WordWriter):
         units = block.sections.get("Units")
         if units is None or units.system == self.units_before or self.inverse_time:  # type: ignore[attr-defined]
             return super().feed_words(s, block)
-        self.feed = s.value
-        after, self.units = self.units, self.units_before
+        self.modal.feed = s.value
+        modal = self.modal
+        after, modal.units = modal.units, self.units_before
         words = ["F" + self.number(s.value * (MM_PER_INCH if after == "inch" else 1.0 / MM_PER_INCH))]
-        self.units = after
+        modal.units = after
         return words
 
     def program_start(self, s: Any, block: Block) -> str:
@@ -75,4 +68,4 @@ class LinuxcncWriter(WordWriter):
 
     def spindle_orientation_words(self, s: Any, block: Block) -> list[str]:
         """M19 R<angle>: a bare M19 leaves the angle to the machine's default."""
-        return ["M19", "R" + self.number(float(s.angle))]
+        return [self.code("orient", None, "an oriented spindle stop", block), "R" + self.number(float(s.angle))]

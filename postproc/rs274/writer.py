@@ -3,18 +3,22 @@
 A block that is unchanged and read from the same dialect is copied byte for byte. Otherwise the
 block is generated from its sections: each section key dispatches through ``TRANSFORMS`` first, then a
 ``<key>_words`` method, and otherwise fails loudly with an ``UnsupportedError`` naming the construct
-and its line (sqlglot's generator order). Dialects override the code tables and what differs.
+and its line (sqlglot's generator order). Every code is spelt from the dialect's ``CODES`` table (the
+inverse of what its reader reads); the base has no table of its own, so a meaning the dialect has no
+row for is an ``UnsupportedError``, never another dialect's spelling.
 """
 
 from __future__ import annotations
 
 from typing import Any, Callable, ClassVar, NoReturn
 
-from .errors import UnsupportedError
-from .ir import Block, CompoundMotion, Motion, Section
-from .numbers import MAX_PLACES, canonical_number_re
-from .syntax import Context
-from .dialect import Writer
+from ..errors import Location, UnsupportedError
+from .codes import CodeTable
+from ..ir import Block, CompoundMotion, Motion, Section
+from ..numbers import MAX_PLACES, canonical_number_re
+from ..state import ModalState
+from ..context import Context
+from ..dialect import Dialect, Writer
 
 
 SECTION_ORDER = (
@@ -27,41 +31,21 @@ SECTION_ORDER = (
 
 
 class WordWriter(Writer):
+    """Writes blocks as address words, spelling every code from the dialect's ``CODES`` table."""
+
     DIALECT: ClassVar[str] = ""
-    MOTION: ClassVar[dict[str, str]] = {"rapid": "G00", "linear": "G01", "cw": "G02", "ccw": "G03",
-                                        "home": "G28", "home2": "G30"}
-    PLANE: ClassVar[dict[str, str]] = {"XY": "G17", "ZX": "G18", "YZ": "G19"}
-    UNITS: ClassVar[dict[str, str]] = {"inch": "G20", "mm": "G21"}
-    DISTANCE: ClassVar[dict[str, str]] = {"absolute": "G90", "incremental": "G91"}
-    FEED_MODE: ClassVar[dict[str, str]] = {"per_min": "G94", "per_rev": "G95"}
-    WORK_OFFSET: ClassVar[dict[int, str]] = {1: "G54", 2: "G55", 3: "G56", 4: "G57", 5: "G58", 6: "G59"}
-    RETURN_LEVEL: ClassVar[dict[str, str]] = {"initial": "G98", "r": "G99"}
-    CUTTER: ClassVar[dict[str, str]] = {"off": "G40", "left": "G41", "right": "G42"}
-    LENGTH: ClassVar[dict[str, str]] = {"positive": "G43", "negative": "G44", "cancel": "G49"}
-    PATH: ClassVar[dict[str, str]] = {"exact_stop": "G61", "cutting": "G64"}
-    PATH_ONCE: ClassVar[str | None] = "G09"
-    SPINDLE: ClassVar[dict[str, str]] = {"cw": "M03", "ccw": "M04", "stop": "M05"}
-    COOLANT: ClassVar[dict[str, str]] = {"mist": "M07", "flood": "M08", "off": "M09"}
-    PROGRAM: ClassVar[dict[str, str]] = {"stop": "M00", "optional_stop": "M01", "end": "M02", "end_rewind": "M30"}
-    TOOL_CHANGE: ClassVar[str | None] = "M06"
-    ORIENT: ClassVar[str | None] = "M19"
-    DWELL: ClassVar[str] = "G04"
-    DWELL_WORD: ClassVar[str] = "X"
-    """Address and unit of the dwell time: 'X' seconds, 'P' milliseconds, or 'Ps' seconds in P."""
-    MACHINE_COORDS: ClassVar[str | None] = "G53"
-    CYCLE_CANCEL: ClassVar[str | None] = "G80"
-    CYCLES: ClassVar[dict[str, str]] = {
-        "peck_chip": "G73", "tap_left": "G74", "fine_bore": "G76", "drill": "G81", "drill_dwell": "G82",
-        "peck_deep": "G83", "tap": "G84", "bore_feed": "G85", "bore_stop": "G86", "back_bore": "G87",
-        "bore_manual": "G88", "bore_dwell_feed": "G89",
-    }
-    """Canned cycles the target runs natively, by neutral kind (lowering expands the others)."""
+    CODES: ClassVar[CodeTable] = CodeTable(())
+    """The dialect's code table: the writer spells each code as the table's first row for its meaning,
+    and a meaning with no row is an ``UnsupportedError``."""
+    DWELL_WORD: ClassVar[str] = ""
+    """Address of the dwell time, e.g. 'X' or 'P' ('': the dialect writes no dwell); its unit is the
+    target's ``DWELL_UNIT``."""
     IGNORED: ClassVar[frozenset[str]] = frozenset()
     """Sections that annotate a block and produce no words of their own."""
     TRANSFORMS: ClassVar[dict[str, Callable[["WordWriter", Any, Block], list[str]]]] = {}
 
-    def __init__(self, ctx: Context, source_dialect: str) -> None:
-        super().__init__(ctx, source_dialect)
+    def __init__(self, ctx: Context, source_dialect: str, target: type[Dialect] | None = None) -> None:
+        super().__init__(ctx, source_dialect, target)
         out = ctx.setup.output
         self.normalize = out.normalize or bool(out.renumber_start)
         """Renumbering rewrites the words, so it implies normalising."""
@@ -71,9 +55,8 @@ class WordWriter(Writer):
         self.decimals = out.decimals
         self.inch_decimals = out.inch_decimals
         self.copy_ok = source_dialect == self.DIALECT and not self.normalize and not self.renumber
-        self.units = "mm"
-        self.distance = "absolute"
-        self.feed: float | None = None
+        self.modal = ModalState()
+        """What the written program has in force so far (units, distance mode, feed, plane, spindle...)."""
 
     # -- numbers -----------------------------------------------------------------------------------
     def number(self, value: float) -> str:
@@ -82,7 +65,7 @@ class WordWriter(Writer):
         Rounds to the output decimals, but never silently: a value that would move by more than
         half a micrometre (or 0.00002 in) keeps up to ``MAX_PLACES`` places instead.
         """
-        places = self.decimals if self.units == "mm" else self.inch_decimals
+        places = self.decimals if self.modal.units == "mm" else self.inch_decimals
         text = f"{value:.{places}f}"
         if abs(float(text) - value) > 5e-7:
             text = f"{value:.{MAX_PLACES}f}"
@@ -112,17 +95,8 @@ class WordWriter(Writer):
         return self.generate(block)
 
     def _track(self, sections: dict[str, Section]) -> None:
-        if not sections:
-            return
-        s = sections.get("Units")
-        if s is not None:
-            self.units = s.system  # type: ignore[attr-defined]
-        s = sections.get("DistanceMode")
-        if s is not None:
-            self.distance = s.mode  # type: ignore[attr-defined]
-        s = sections.get("Feed")
-        if s is not None:
-            self.feed = s.value  # type: ignore[attr-defined]
+        if sections:
+            self.modal.apply(sections)
 
     def normalized(self, block: Block) -> str:
         """Rewrite a block from its words: explicit decimal points, optional renumbering."""
@@ -214,12 +188,12 @@ class WordWriter(Writer):
         elif head.sections:
             lines.append(self.generate(head))
         lines.append(note)
-        was_incremental = self.distance == "incremental"
+        was_incremental = self.modal.distance == "incremental"
         for item in compound.items:
             lines.append(self.item_line(item, block))
         if was_incremental:
-            lines.append(self.DISTANCE["incremental"] + "\n")
-            self.distance = "incremental"
+            lines.append(self.code("distance", "incremental", "incremental distance mode", block) + "\n")
+            self.modal.distance = "incremental"
         tail = Block(block.line, None, "\n")
         tail.sections = {k: rest[k] for k in tail_keys}
         comments = block.sections.get("Comments")
@@ -235,9 +209,9 @@ class WordWriter(Writer):
     def item_line(self, item: Section, block: Block) -> str:
         words: list[str] = []
         if isinstance(item, Motion):
-            if self.distance != "absolute":
-                words.append(self.DISTANCE["absolute"])
-                self.distance = "absolute"
+            if self.modal.distance != "absolute":
+                words.append(self.code("distance", "absolute", "absolute distance mode", block))
+                self.modal.distance = "absolute"
             words.extend(self.motion_words(item, block))
         else:
             words.extend(self.section_words(item.KEY, item, block))
@@ -270,65 +244,70 @@ class WordWriter(Writer):
     def sequence_words(self, s: Any, block: Block) -> list[str]:
         return [f"N{s.number}"]
 
-    def _code(self, table: dict[Any, str], value: Any, what: str, block: Block) -> list[str]:
-        code = table.get(value)
+    def code(self, kind: str, arg: object, what: str, block: Block) -> str:
+        """The dialect's spelling of ``(kind, arg)``; an ``UnsupportedError`` naming ``what`` without one."""
+        code = self.CODES.spell(kind, arg)
         if code is None:
             self.unsupported(what, block)
-        return [code]
+        return code
+
+    def _code(self, kind: str, arg: object, what: str, block: Block) -> list[str]:
+        return [self.code(kind, arg, what, block)]
 
     def plane_words(self, s: Any, block: Block) -> list[str]:
-        return self._code(self.PLANE, s.plane, f"the {s.plane} plane", block)
+        return self._code("plane", s.plane, f"the {s.plane} plane", block)
 
     def units_words(self, s: Any, block: Block) -> list[str]:
-        self.units = s.system
-        return self._code(self.UNITS, s.system, f"{s.system} units", block)
+        self.modal.set_units(s.system)  # the block's numbers are written in its units
+        return self._code("units", s.system, f"{s.system} units", block)
 
     def distance_mode_words(self, s: Any, block: Block) -> list[str]:
-        self.distance = s.mode
-        return self._code(self.DISTANCE, s.mode, f"{s.mode} distance mode", block)
+        self.modal.distance = s.mode
+        return self._code("distance", s.mode, f"{s.mode} distance mode", block)
 
     def work_offset_words(self, s: Any, block: Block) -> list[str]:
-        return self._code(self.WORK_OFFSET, s.index, f"work offset {s.index}", block)
+        return self._code("offset", s.index, f"work offset {s.index}", block)
 
     def feed_mode_words(self, s: Any, block: Block) -> list[str]:
-        return self._code(self.FEED_MODE, s.mode, f"feed mode {s.mode}", block)
+        return self._code("feed_mode", s.mode, f"feed mode {s.mode}", block)
 
     def return_level_words(self, s: Any, block: Block) -> list[str]:
-        return self._code(self.RETURN_LEVEL, s.level, f"return to the {s.level} level", block)
+        return self._code("return", s.level, f"return to the {s.level} level", block)
 
     def cutter_compensation_words(self, s: Any, block: Block) -> list[str]:
-        words = self._code(self.CUTTER, s.mode, f"cutter compensation {s.mode}", block)
+        if s.mode != "off" and not self.capable("CUTTER_COMPENSATION"):
+            self.unsupported(f"cutter radius compensation ({s.mode})", block)
+        words = self._code("cutter", s.mode, f"cutter compensation {s.mode}", block)
         if s.register is not None:
             words.append(f"D{int(s.register):02d}")
         return words
 
     def tool_length_offset_words(self, s: Any, block: Block) -> list[str]:
-        words = self._code(self.LENGTH, s.mode, f"tool length offset {s.mode}", block)
+        if s.mode != "cancel" and not self.capable("TOOL_LENGTH_OFFSET"):
+            self.unsupported("a tool length offset from a table", block)
+        words = self._code("length", s.mode, f"tool length offset {s.mode}", block)
         if s.register is not None:
             words.append(f"H{int(s.register):02d}")
         return words
 
     def path_control_words(self, s: Any, block: Block) -> list[str]:
         if s.one_shot:
-            if self.PATH_ONCE is None:
-                self.unsupported("a one-shot exact stop", block)
-            return [self.PATH_ONCE]
-        return self._code(self.PATH, s.mode, f"path control {s.mode}", block)
+            return self._code("path_once", s.mode, "a one-shot exact stop", block)
+        return self._code("path", s.mode, f"path control {s.mode}", block)
 
     def machine_coordinates_words(self, s: Any, block: Block) -> list[str]:
-        if self.MACHINE_COORDS is None:
-            self.unsupported("motion in machine coordinates", block)
-        return [self.MACHINE_COORDS]
+        return self._code("machine", None, "motion in machine coordinates", block)
 
     def cycle_cancel_words(self, s: Any, block: Block) -> list[str]:
-        return [self.CYCLE_CANCEL] if self.CYCLE_CANCEL else []
+        return self._code("cycle_cancel", None, "a canned-cycle cancel", block)
 
     def dwell_words(self, s: Any, block: Block) -> list[str]:
-        if self.DWELL_WORD == "P":
-            return [self.DWELL, f"P{round(s.seconds * 1000)}"]
-        if self.DWELL_WORD == "Ps":
-            return [self.DWELL, "P" + self.seconds(s.seconds)]
-        return [self.DWELL, "X" + self.seconds(s.seconds)]
+        code = self.code("dwell", None, "a dwell", block)
+        if not self.DWELL_WORD:
+            self.unsupported("a dwell", block)
+        if self.target is not None and self.target.DWELL_UNIT == "milliseconds":
+            return [code, f"{self.DWELL_WORD}{round(s.seconds * 1000)}"]
+        return [code, self.DWELL_WORD + self.seconds(s.seconds)]
 
     def seconds(self, value: float) -> str:
         text = f"{value:.3f}".rstrip("0")
@@ -337,7 +316,7 @@ class WordWriter(Writer):
     def motion_words(self, s: Motion, block: Block) -> list[str]:
         if s.mode is None:
             self.unsupported("a canned-cycle repetition without its cycle", block)
-        words = self._code(self.MOTION, s.mode, f"{s.mode} motion", block)
+        words = self._code(_MOTION_KIND.get(s.mode, "motion"), s.mode, f"{s.mode} motion", block)
         for axis, value in s.axes.items():
             words.append(axis + self.number(value))
         if s.center is not None:
@@ -353,13 +332,13 @@ class WordWriter(Writer):
         G98/G99 and F come from the block's own ReturnLevel and Feed sections."""
         words: list[str] = []
         if s.call:
-            words.extend(self._code(self.CYCLES, s.kind, f"the {s.kind.replace('_', ' ')} cycle", block))
+            words.extend(self._code("cycle", s.kind, f"the {s.kind.replace('_', ' ')} cycle", block))
         for letter, value in s.words.items():
             words.append(letter + (str(value) if isinstance(value, int) else self.number(value)))
         return words
 
     def feed_words(self, s: Any, block: Block) -> list[str]:
-        self.feed = s.value
+        self.modal.feed = s.value
         return ["F" + self.number(s.value)]
 
     def spindle_speed_words(self, s: Any, block: Block) -> list[str]:
@@ -370,28 +349,27 @@ class WordWriter(Writer):
         return [f"T{s.number}"]
 
     def tool_change_words(self, s: Any, block: Block) -> list[str]:
-        if self.TOOL_CHANGE is None:
-            self.unsupported("a tool change", block)
-        return [self.TOOL_CHANGE]
+        if not self.capable("TOOL_CHANGER"):
+            self.unsupported("a tool change (no tool changer)", block)
+        return self._code("tool_change", None, "a tool change", block)
 
     def spindle_control_words(self, s: Any, block: Block) -> list[str]:
-        return self._code(self.SPINDLE, s.direction, f"spindle {s.direction}", block)
+        return self._code("spindle", s.direction, f"spindle {s.direction}", block)
 
     def spindle_orientation_words(self, s: Any, block: Block) -> list[str]:
         """M19 orients to the angle the machine's parameters hold (the set-up's ``orientAngle``);
         any other angle cannot be written with it."""
-        if self.ORIENT is None:
-            self.unsupported("an oriented spindle stop", block)
+        code = self.code("orient", None, "an oriented spindle stop", block)
         if abs(s.angle - self.ctx.setup.cycles.orient_angle) > 1e-9:
-            self.unsupported(f"an oriented spindle stop at {s.angle:g} deg (M19 orients to the set-up's "
+            self.unsupported(f"an oriented spindle stop at {s.angle:g} deg ({code} orients to the set-up's "
                              f"{self.ctx.setup.cycles.orient_angle:g} deg)", block)
-        return [self.ORIENT]
+        return [code]
 
     def coolant_words(self, s: Any, block: Block) -> list[str]:
-        return self._code(self.COOLANT, s.mode, f"coolant {s.mode}", block)
+        return self._code("coolant", s.mode, f"coolant {s.mode}", block)
 
     def program_control_words(self, s: Any, block: Block) -> list[str]:
-        return self._code(self.PROGRAM, s.kind, f"program {s.kind}", block)
+        return self._code("program", s.kind, f"program {s.kind}", block)
 
     def native_code_words(self, s: Any, block: Block) -> list[str]:
         if s.dialect != self.DIALECT:
@@ -400,6 +378,8 @@ class WordWriter(Writer):
         return [s.text]
 
 
+_MOTION_KIND = {"home": "home", "home2": "home"}
+"""Motion modes the table spells under another kind than "motion" (reference returns)."""
 _UPPER = {c: c.upper() for c in "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz:"}
 
 

@@ -1,10 +1,9 @@
-"""RS274/NGC (LinuxCNC) lexical structure: words, ``( )`` and ``;`` comments, ``/`` and ``%``.
+"""RS274/NGC lexical structure (LinuxCNC, grbl): words, ``( )`` and ``;`` comments, ``/`` and ``%``.
 
-What differs from Fanuc's lexer, and why this module exists rather than a flag on that one:
+What differs from the ISO lexer (``lexer.py``), and why this is a module of its own rather than a flag:
 
-* ``;`` starts a comment that runs to the end of the line (Fanuc reads ``;`` as end of block).
-* ``( )`` comments do not nest: a ``(`` inside a comment is an error, as in LinuxCNC
-  ("Nested comment found").
+* ``;`` starts a comment that runs to the end of the line (the ISO reading takes ``;`` as end of block).
+* ``( )`` comments do not nest: a ``(`` inside a comment is an error ("Nested comment found").
 * Spaces and tabs are allowed anywhere outside comments, even inside a number (``X 1 0`` is X10)
   and between its sign and its digits (``X - 1.5``, ``X- .5``), as rs274 reads them: the common line
   is still matched with one regex, the rare spaced-out number takes a slow path. Both regexes are
@@ -12,18 +11,21 @@ What differs from Fanuc's lexer, and why this module exists rather than a flag o
 * O-words (``o100 sub``, ``o<name> call``), parameters (``#1``) and expressions (``[1+2]``) are
   refused with a located error: this reader does not model control flow yet.
 
-Line splitting and the word number syntax are the same as Fanuc's and are imported from there.
+Line splitting and the word number syntax are the ISO lexer's. ``NgcReader`` is the family's reader.
 """
 
 from __future__ import annotations
 
 import re
+from typing import Iterable, Iterator
 
-from dialects.fanuc.lexer import NUMBER, split_lines
-from postproc.errors import Location, ParseError
+from postproc.dialect import Reader
+from postproc.errors import Location, ParseError, PostprocError
 from postproc.ir import Block, BlockDelete, Comments, Sequence, TapeMark
 
-__all__ = ["lex_block", "split_lines", "strip_comments"]
+from .lexer import NUMBER, split_lines
+
+__all__ = ["NgcReader", "lex_block", "split_lines", "strip_comments"]
 
 _WORD = re.compile(r"([A-Za-z])[ \t]*(" + NUMBER + ")")
 _WORDS_ONLY = re.compile(r"(?:[ \t]*+[A-Za-z][ \t]*+[-+]?+(?:\d++\.?+\d*+|\.\d++))*+[ \t]*+")
@@ -35,10 +37,10 @@ _COMMENT_CHARS = frozenset("();")
 _O_WORDS = "O-words (subprograms, loops, conditions) are not supported by the {} reader"
 
 
-def lex_block(file: str, number: int, text: str, eol: str, dialect: str = "linuxcnc") -> Block:
+def lex_block(file: str, number: int, text: str, eol: str, dialect: str) -> Block:
     """Lex one line into a block: words as written (letter case kept), comments, block delete.
 
-    ``dialect`` only names the reader in messages (the grbl reader shares this lexer).
+    ``dialect`` only names the reader in messages.
     """
     block = Block(number, text, eol)
     code = text
@@ -158,3 +160,21 @@ def _unsupported_value(ch: str, dialect: str) -> str:
         return f"parameters (#) are not supported by the {dialect} reader"
     return f"expressions ([...]) are not supported by the {dialect} reader"
 
+
+class NgcReader(Reader):
+    """Physical lines -> lexed blocks under the RS274/NGC rules; errors are reported per block and the
+    block is kept."""
+
+    DIALECT = ""
+    """Names the dialect in lexical error messages."""
+
+    def read(self, lines: Iterable[str]) -> Iterator[Block]:
+        file = self.ctx.file
+        dialect = self.DIALECT
+        report = self.ctx.diagnostics.error
+        for number, text, eol in split_lines(lines):
+            try:
+                yield lex_block(file, number, text, eol, dialect)
+            except PostprocError as err:
+                report(err)
+                yield Block(number, text, eol)

@@ -1,4 +1,5 @@
-"""Fanuc lexical structure: ``%``, O-number, block delete, N, words and ``( )`` comments.
+"""ISO 6983 lexical structure of the RS274 family (Fanuc and its kin): ``%``, O-number (and ISO's
+``:``), block delete ``/n``, N, words, ``( )`` comments and ``;`` as end of block.
 
 Plain functions and precompiled regexes (as in tomli). The common line - words only, no comment - is
 checked with one full match and split with one ``findall``; columns are computed only for errors.

@@ -1,0 +1,60 @@
+"""The run's context: what every step of one run shares, and word columns for error locations."""
+
+from __future__ import annotations
+
+import re
+
+from .cycle_words import CycleWords
+from .errors import Diagnostics, Location
+from .ir import Block
+from .setup import MachineSetup
+from .source_map import locate
+from .state import ModalState
+
+
+class Context:
+    """What every step of one run shares: file name, set-up, diagnostics, modal state, and what the
+    reading dialect tells the neutral steps about its words."""
+
+    __slots__ = ("file", "setup", "diagnostics", "state", "dialect", "cycle_words", "on_unsupported",
+                 "program_mode")
+
+    def __init__(self, file: str, setup: MachineSetup, diagnostics: Diagnostics, dialect: str,
+                 cycle_words: CycleWords | None = None) -> None:
+        self.file = file
+        self.setup = setup
+        self.diagnostics = diagnostics
+        self.state = ModalState()
+        self.dialect = dialect
+        self.cycle_words = cycle_words
+        """The reading dialect's hole-cycle letters and names (None: it reads no canned cycles)."""
+        self.on_unsupported = "error"
+        """'error' or 'warn': what a construct the target cannot express does."""
+        self.program_mode = "keep"
+        """What the interpreter step does with a program that computes: 'keep' its constructs (for a
+        target that has them) or 'execute' them (toolpath, verify, flattening); see ``postproc.interp``."""
+
+    def at(self, block: Block, col: int = 1) -> Location:
+        """Where ``block`` (column ``col``) is, through the source map: the one way to locate a block."""
+        return locate(self.file, block, col)
+
+    def column_of(self, block: Block, letter: str, number: str | None = None, nth: int = 1) -> int:
+        """Column of the ``nth`` word with ``letter`` (and, if given, exactly that number text) in the
+        block's text, comments skipped. Computed only when reporting an error."""
+        want = letter.upper()
+        for col, found, num in word_columns(block.text or ""):
+            if found.upper() == want and (number is None or num == number):
+                nth -= 1
+                if nth == 0:
+                    return col
+        return 1
+
+
+_WORD_AT = re.compile(r"([A-Za-z:])[ \t]*([-+]?(?:\d+\.?\d*|\.\d+))")
+_COMMENT_AT = re.compile(r"\([^()]*\)|\([^()]*$|;.*$")
+
+
+def word_columns(text: str) -> list[tuple[int, str, str]]:
+    """(1-based column, letter, number text) of every word outside comments."""
+    masked = _COMMENT_AT.sub(lambda m: " " * len(m.group(0)), text)
+    return [(m.start() + 1, m.group(1), m.group(2)) for m in _WORD_AT.finditer(masked)]

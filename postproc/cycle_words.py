@@ -1,0 +1,51 @@
+"""CycleWords: which address letter carries which role in a dialect's hole cycles, and how it names them.
+
+The cycle geometry (``postproc.cycles``) is neutral: it knows "the hole bottom" and "the reference
+level", never ``Z`` or ``R``. A dialect describes its words once: on the RS274 family the bottom is the
+axis normal to the plane and ``R`` the reference level; on Fagor ``Z`` is the reference plane and ``I``
+the depth. The reading dialect gives its description to the run's ``Context`` (``Dialect.CYCLE_WORDS``),
+and messages name a cycle in that dialect's spelling.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Mapping
+
+
+@dataclass(frozen=True, slots=True)
+class CycleWords:
+    """The letters of a dialect's hole-cycle words, by role."""
+
+    names: Mapping[str, str]
+    """Neutral cycle kind -> how the dialect spells it ("drill" -> "G81"), for messages and columns."""
+    return_to_r: str
+    """How the dialect spells the return to the reference level (for messages), e.g. "G99"."""
+    level: str
+    """The reference (R) level, e.g. "R"."""
+    peck: str
+    """The peck depth of a peck-drilling cycle, e.g. "Q"."""
+    shift: str
+    """The shift of a fine- or back-boring cycle, e.g. "Q"."""
+    dwell: str
+    """The dwell at the hole bottom, e.g. "P"."""
+    spindle: Mapping[str, str] = field(default_factory=dict)
+    """Spindle direction ("cw", "ccw") -> how the dialect spells it, for messages (e.g. "M3")."""
+    bottom: Mapping[str, str] = field(default_factory=dict)
+    """Plane ("XY", "ZX", "YZ") -> the letter of the hole bottom; a plane not listed takes the axis
+    normal to it (Z in XY)."""
+    repeat: tuple[str, ...] | None = None
+    """The repeat-count letters in order of preference, or None to take them from the set-up's
+    ``Input repeatAddress`` (K, L or K+L)."""
+
+    def bottom_letter(self, plane: str, normal: str) -> str:
+        """The hole bottom's letter in ``plane``, whose normal axis is ``normal``."""
+        return self.bottom.get(plane, normal)
+
+    def repeat_letters(self, repeat_address: str) -> tuple[str, ...]:
+        """The letters that count repeats, in order of preference."""
+        return self.repeat if self.repeat is not None else tuple(repeat_address.split("+"))
+
+    def name(self, kind: str) -> str:
+        """How the dialect names a cycle kind (the kind itself when it has no code for it)."""
+        return self.names.get(kind, kind)

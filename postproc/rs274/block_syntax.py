@@ -1,0 +1,371 @@
+"""WordBlockSyntax: gives a lexed RS274-family block its neutral sections, through the dialect's code table.
+
+The ISO/Fanuc reading of words: the decimal-point rule (a point-less value is least input increments
+unless the set-up says calculator input), K/L repeats per the set-up, G04 P in milliseconds or X in
+seconds. It checks modal-group conflicts and duplicate addresses, maps G and M codes to neutral
+sections through ``CODES`` (a ``CodeTable``) and refuses any word that would otherwise be dropped
+without meaning. A dialect subclasses it with its ``XNAME``, ``DIALECT`` and ``CODES``.
+"""
+
+from __future__ import annotations
+
+from typing import Any, ClassVar
+
+from postproc.errors import ParseError, ProgramError
+from postproc.ir import (
+    Block, Coolant, CutterCompensation, CycleCall, CycleCancel, DistanceMode, Dwell, Feed, FeedMode,
+    MachineCoordinates, Motion, NativeCode, PathControl, Plane, ProgramControl, ReturnLevel,
+    SpindleControl, SpindleOrientation, SpindleSpeed, ToolChange, ToolLengthOffset, ToolSelect, Units,
+    WorkOffset,
+)
+from postproc.context import Context, word_columns
+from postproc.syntax import Syntax
+
+from .codes import CodeTable, g_key
+
+AXIS_LETTERS = frozenset("XYZABCUVW")
+DECIMAL_LETTERS = frozenset("XYZABCUVWIJKRQ")
+"""Addresses that follow the decimal-point rule (no point: least input increments)."""
+INTEGER_LETTERS = frozenset("NOTHDLP")
+_UPPER = {c: c.upper() for c in "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"}
+_UPPER[":"] = "O"  # ':' is ISO's spelling of the program number address
+CENTER_AXIS = {"I": "X", "J": "Y", "K": "Z"}
+
+
+class WordBlockSyntax(Syntax):
+    """Lexed words -> neutral sections, ISO/Fanuc word rules; subclasses give the code table."""
+
+    __slots__ = ()
+    DIALECT: ClassVar[str] = ""
+    """Tag of the verbatim (NativeCode) sections this syntax makes."""
+    TITLE: ClassVar[str] = ""
+    """How messages name the dialect ("address Q is not used by the <TITLE> dialect")."""
+    CODES: ClassVar[CodeTable] = CodeTable(())
+    """The dialect's code table: every G and M code the reader knows."""
+    NATIVE_M_WORDS: ClassVar[str] = "PL"
+    """Words a verbatim M code takes with it (M98 P.. L..)."""
+
+    def build(self, block: Block, ctx: Context) -> None:
+        words = block.words
+        if not words:
+            return
+        if ctx.state.cycle is None and self._plain(block, ctx, words):
+            return
+        codes: dict[str, tuple[str, str, object, str]] = {}
+        natives: list[str] = []
+        mcodes: list[tuple[int, str]] = []
+        raw: dict[str, str] = {}
+        for letter, num in words:
+            up = _UPPER[letter]
+            if up == "G":
+                self._g_code(ctx, block, num, codes, natives)
+            elif up == "M":
+                if "." in num:
+                    raise ParseError(f"M code M{num} takes no decimal point", ctx.at(block, col_of_word(block, "M", num)))
+                mcodes.append((int(num), num))
+            elif up in raw:
+                raise ParseError(f"address {up} appears twice in one block", ctx.at(block, second_col(block, up)))
+            else:
+                raw[up] = num
+        state = ctx.state
+        if natives:
+            self._native(block, ctx, natives, raw)
+            return
+        units = state.units
+        unit = codes.get("06")
+        if unit is not None:
+            units = unit[2]  # type: ignore[assignment]
+        values = block.values
+        cycle_block = "09" in codes and codes["09"][1] == "cycle" or (
+            state.cycle is not None and "01" not in codes and "09" not in codes)
+        divisor = _divisor(ctx, units)
+        for up, num in raw.items():
+            if up in DECIMAL_LETTERS and not (up == "K" and cycle_block):
+                if "." in num:
+                    values[up] = float(num)
+                elif divisor:
+                    values[up] = int(num) / divisor
+                else:
+                    values[up] = float(int(num))
+            elif up in INTEGER_LETTERS or up == "K":
+                if "." in num:
+                    raise ParseError(f"address {up} takes no decimal point ({up}{num})",
+                                     ctx.at(block, ctx.column_of(block, up)))
+                values[up] = int(num)
+            elif up == "F":
+                values[up] = float(num)
+            elif up == "S":
+                values[up] = float(num) if "." in num else int(num)
+            else:
+                raise ParseError(f"address {up} is not used by the {self.TITLE} dialect",
+                                 ctx.at(block, ctx.column_of(block, up)))
+        used = {"N", "O"}
+        self.g_sections(block, ctx, codes, values, used, cycle_block)
+        self.m_sections(block, ctx, mcodes, values, used)
+        self.finish_words(block, ctx, values, used)
+
+    def finish_words(self, block: Block, ctx: Context, values: dict[str, Any], used: set[str]) -> None:
+        """F, S and T sections, then refuse any word no section took: nothing is dropped silently."""
+        if "F" in values:
+            block.add(Feed(float(values["F"])))
+            used.add("F")
+        if "S" in values:
+            block.add(SpindleSpeed(float(values["S"])))
+            used.add("S")
+        if "T" in values:
+            block.add(ToolSelect(int(values["T"])))
+            used.add("T")
+        unused = [k for k in values if k not in used]
+        if unused:
+            up = unused[0]
+            raise ProgramError(f"address {up} has no meaning in this block", ctx.at(block, ctx.column_of(block, up)))
+
+    def _plain(self, block: Block, ctx: Context, words: list[tuple[str, str]]) -> bool:
+        """The likeliest CAM block: N, axis words with decimal points, maybe F; no active cycle.
+
+        One pass with the same meaning as the general path. Returns False, leaving the block as it
+        found it, at the first word it does not handle (a code, a point-less number, a repeated
+        address), so the general path reads the block and reports its errors.
+        """
+        values = block.values
+        axes: dict[str, float] = {}
+        for letter, num in words:
+            up = _UPPER[letter]
+            if up in values:
+                break
+            if up in AXIS_LETTERS and "." in num:
+                values[up] = axes[up] = float(num)
+            elif up == "N" and "." not in num:
+                values["N"] = int(num)
+            elif up == "F":
+                values["F"] = float(num)
+            else:
+                break
+        else:
+            if axes:
+                mode = ctx.state.motion
+                if mode is None or mode == "cw" or mode == "ccw":
+                    values.clear()
+                    return False  # the general path explains the error
+                block.sections["Motion"] = Motion(mode, axes)
+            if "F" in values:
+                block.sections["Feed"] = Feed(values["F"])
+            return True
+        values.clear()
+        return False
+
+    def _g_code(self, ctx: Context, block: Block, num: str, codes: dict[str, Any], natives: list[str]) -> None:
+        key = g_key(num)
+        entry = self.CODES.g.get(key)
+        if entry is None:
+            if key in self.CODES.native_g:
+                natives.append(key)
+                return
+            raise ParseError(f"unknown G code G{num}", ctx.at(block, col_of_word(block, "G", num)))
+        group = entry[0]
+        other = codes.get(group)
+        if other is not None:
+            name = group
+            raise ParseError(f"G codes G{other[3]} and G{num} are both in modal group {name}",
+                             ctx.at(block, col_of_word(block, "G", num)))
+        if group == "09" and "01" in codes or group == "01" and "09" in codes and codes["09"][1] == "cycle":
+            first = codes.get("01") or codes["09"]
+            if entry[1] == "cycle" or first[1] == "cycle":
+                raise ParseError(f"G{first[3]} and G{num} in one block: a motion code and a canned cycle",
+                                 ctx.at(block, col_of_word(block, "G", num)))
+        codes[group] = (group, entry[1], entry[2], num)
+
+    def _native(self, block: Block, ctx: Context, natives: list[str], raw: dict[str, str]) -> None:
+        """Keep a block with a code the IR does not model verbatim, tagged with its meaning."""
+        key = natives[0]
+        what = f"G{key} ({self.CODES.native_g[key]})"
+        block.add(NativeCode(self.DIALECT, what, block.text or ""))
+        for up, num in raw.items():
+            block.values[up] = float(num) if "." in num else int(num)
+
+    def g_sections(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],
+                    used: set[str], cycle_block: bool) -> None:
+        state = ctx.state
+        motion_mode: str | None = None
+        home: str | None = None
+        for group, kind, arg, num in codes.values():
+            if kind == "motion":
+                motion_mode = arg
+            elif kind == "plane":
+                block.add(Plane(arg))
+            elif kind == "units":
+                block.add(Units(arg))
+            elif kind == "distance":
+                block.add(DistanceMode(arg))
+            elif kind == "feed_mode":
+                block.add(FeedMode(arg))
+            elif kind == "return":
+                block.add(ReturnLevel(arg))
+            elif kind == "offset":
+                block.add(WorkOffset(arg))
+            elif kind == "path":
+                block.add(PathControl(arg))
+            elif kind == "path_once":
+                block.add(PathControl(arg, True))
+            elif kind == "cycle":
+                block.add(CycleCall(arg))
+                used.update("XYZABCUVWRQPFKL" if ctx.setup.input.repeat_address != "K" else "XYZABCUVWRQPFK")
+            elif kind == "cycle_cancel":
+                block.add(CycleCancel())
+            elif kind == "cutter":
+                if arg != "off" and "D" in values:
+                    used.add("D")
+                block.add(CutterCompensation(arg, values.get("D") if arg != "off" else None))
+            elif kind == "length":
+                if arg != "cancel":
+                    if "H" not in values:
+                        raise ProgramError(f"G{num} needs an offset register H", ctx.at(block, col_of_word(block, "G", num)))
+                    used.add("H")
+                block.add(ToolLengthOffset(arg, values.get("H") if arg != "cancel" else None))
+            elif kind == "dwell":
+                self._dwell(block, ctx, values, used, num)
+            elif kind == "home":
+                home = arg
+            elif kind == "machine":
+                block.add(MachineCoordinates())
+        if "CycleCall" in block.sections:
+            return
+        if cycle_block and "CycleCancel" not in block.sections:
+            used.update("RQPFK" + ("L" if ctx.setup.input.repeat_address != "K" else ""))
+        axes = {k: v for k, v in values.items() if k in AXIS_LETTERS and k not in used}
+        if home is not None:
+            block.add(Motion(home, axes))
+            used.update(axes)
+            return
+        if "Dwell" in block.sections and motion_mode is None and not axes:
+            return
+        if "MachineCoordinates" in block.sections and axes:
+            # G53 positions at rapid whatever the modal motion; a motion code beside it still sets the mode
+            # (ModalStateSyntax leaves the mode alone for machine-coordinate blocks).
+            if motion_mode is not None:
+                state.motion = motion_mode
+            block.add(Motion("rapid", {k: float(v) for k, v in axes.items()}))
+            used.update(axes)
+            return
+        mode = motion_mode
+        if mode is None and axes:
+            if cycle_block and "CycleCancel" not in block.sections:
+                mode = None
+            elif state.motion is None:
+                raise ProgramError("axis words with no motion mode in force (program "
+                                   f"{self.spell('motion', 'rapid')} or {self.spell('motion', 'linear')} first)",
+                                   ctx.at(block, ctx.column_of(block, next(iter(axes)))))
+            else:
+                mode = state.motion
+        if mode is None and not axes:
+            return
+        used.update(axes)
+        center = None
+        radius = None
+        if mode in ("cw", "ccw"):
+            center = {CENTER_AXIS[k]: float(values[k]) for k in "IJK" if k in values}
+            used.update(k for k in "IJK" if k in values)
+            if "R" in values:
+                radius = float(values["R"])
+                used.add("R")
+                if center:
+                    raise ProgramError("an arc takes either I/J/K or R, not both",
+                                       ctx.at(block, ctx.column_of(block, "R")))
+                center = None
+            elif not center:
+                raise ProgramError("an arc needs a centre (I/J/K) or a radius R",
+                                   ctx.at(block, _motion_col(block, ctx, codes, axes)))
+        block.add(Motion(mode, {k: float(v) for k, v in axes.items()}, center, radius))
+
+    def _dwell(self, block: Block, ctx: Context, values: dict[str, Any], used: set[str], num: str) -> None:
+        if "P" in values:
+            seconds = int(values["P"]) / 1000.0
+            used.add("P")
+        elif "X" in values:
+            seconds = float(values["X"])
+            used.add("X")
+        else:
+            raise ProgramError(f"{self.spell('dwell')} needs a dwell time X (seconds) or P (milliseconds)",
+                               ctx.at(block, col_of_word(block, "G", num)))
+        if seconds < 0:
+            raise ProgramError("a dwell time cannot be negative", ctx.at(block, col_of_word(block, "G", num)))
+        block.add(Dwell(seconds))
+
+    def m_sections(self, block: Block, ctx: Context, mcodes: list[tuple[int, str]], values: dict[str, Any],
+                   used: set[str]) -> None:
+        """M codes -> sections, through the code table; dialects of the family override ``unknown_m``
+        and ``orient`` where they differ."""
+        seen: dict[str, str] = {}
+        table = self.CODES.m
+        for number, num in mcodes:
+            entry = table.get(number)
+            if entry is None:
+                what = self.unknown_m(block, ctx, number, num)
+                if "NativeCode" in block.sections:
+                    raise ParseError(f"M{num}: only one machine-specific function per block is supported",
+                                     ctx.at(block, col_of_word(block, "M", num)))
+                block.add(NativeCode(self.DIALECT, what, f"M{num}"))
+                used.update(self.NATIVE_M_WORDS)
+                continue
+            kind, arg = entry
+            if kind in seen:
+                raise ParseError(f"M codes M{seen[kind]} and M{num} conflict in one block",
+                                 ctx.at(block, col_of_word(block, "M", num)))
+            seen[kind] = num
+            if kind == "program":
+                block.add(ProgramControl(str(arg)))
+            elif kind == "spindle":
+                block.add(SpindleControl(str(arg)))
+            elif kind == "orient":
+                self.orient(block, ctx, num, values, used)
+            elif kind == "tool_change":
+                block.add(ToolChange())
+            elif kind == "coolant":
+                block.add(Coolant(str(arg)))
+
+    def spell(self, kind: str, arg: object = None) -> str:
+        """The dialect's spelling of a code, for messages."""
+        return self.CODES.spell(kind, arg) or kind
+
+    def unknown_m(self, block: Block, ctx: Context, number: int, num: str) -> str:
+        """What an M code outside the table is: kept verbatim (the ISO rule: any other M code is the
+        machine builder's)."""
+        native = self.CODES.native_m.get(number)
+        if native is not None:
+            return f"M{num} ({native})"
+        return f"M{num} (machine-specific M function)"
+
+    def orient(self, block: Block, ctx: Context, num: str, values: dict[str, Any], used: set[str]) -> None:
+        """An orient code without an angle word: the angle the machine's parameters hold (the set-up's
+        ``orientAngle``)."""
+        block.add(SpindleOrientation(ctx.setup.cycles.orient_angle))
+
+
+def _divisor(ctx: Context, units: str) -> int:
+    """Divisor turning a point-less value into program units (0 for calculator-type input)."""
+    inp = ctx.setup.input
+    if inp.decimal_point == "calculator":
+        return 0
+    base = {"IS-A": 100, "IS-B": 1000, "IS-C": 10000}[inp.increment_system]
+    return base if units == "mm" else base * 10
+
+
+def _motion_col(block: Block, ctx: Context, codes: dict[str, Any], axes: dict[str, Any]) -> int:
+    """Column of the block's motion code, or of its first axis word when the motion is modal."""
+    if "01" in codes:
+        return col_of_word(block, "G", codes["01"][3])
+    return ctx.column_of(block, next(iter(axes))) if axes else 1
+
+
+def col_of_word(block: Block, letter: str, num: str) -> int:
+    """Column of the word ``letter``+``num`` as written (comments skipped); 1 when not found."""
+    for col, found, text in word_columns(block.text or ""):
+        if found.upper() == letter.upper() and text == num:
+            return col
+    return 1
+
+
+def second_col(block: Block, letter: str) -> int:
+    """Column of the second word with ``letter`` (the one that repeats an address)."""
+    cols = [col for col, found, _ in word_columns(block.text or "") if found.upper() == letter.upper()]
+    return cols[1] if len(cols) > 1 else 1

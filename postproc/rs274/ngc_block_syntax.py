@@ -1,0 +1,230 @@
+"""NgcWordBlockSyntax: the RS274/NGC reading of a block (LinuxCNC, grbl), through the dialect's code table.
+
+It reuses the family's block logic where the meaning is the same (``WordBlockSyntax.g_sections``:
+modal sections, motion, arcs, modal cycle repetition) and replaces what RS274/NGC reads differently:
+
+* numbers mean what they say: ``X10`` is 10 units, there is no decimal-point scaling;
+* the dwell's ``P`` and a cycle's ``P`` are seconds, as a real number;
+* ``L`` is the cycle repeat count; ``K`` in a drilling cycle is an error;
+* cancelling a cycle leaves no motion mode in force: axis words after it need a motion code;
+* a tool length offset without ``H`` uses the selected tool; the orient code's ``R`` gives the angle;
+* with ``FEED_BEFORE_UNITS`` (LinuxCNC), ``F`` in a block that changes units is in the old units:
+  LinuxCNC sets the feed rate before it changes units (its order of execution; rs274 prints
+  ``SET_FEED_RATE`` before ``USE_LENGTH_UNITS``), so the neutral Feed, in the block's units, is converted;
+* codes in the table's ``native_g``/``native_m``/``user_m`` are kept verbatim, tagged with ``DIALECT``;
+  codes in its ``refused_g``/``refused_m`` are refused with a located error; any other M code is an error.
+"""
+
+from __future__ import annotations
+
+from typing import Any, ClassVar
+
+from postproc.context import Context
+from postproc.errors import ParseError, ProgramError
+from postproc.ir import Block, Dwell, NativeCode, SpindleOrientation
+from postproc.state import MM_PER_INCH
+
+from .block_syntax import WordBlockSyntax, col_of_word, second_col
+from .codes import g_key
+
+REAL_LETTERS = frozenset("XYZABCUVWIJKRQPF")
+"""Addresses read as real numbers, exactly as written."""
+INTEGER_LETTERS = frozenset("NTHDL")
+_STATE_KEY = "NgcBlockSyntax"
+"""``ctx.state.extra`` key: True while a cycle cancel leaves no motion mode in force."""
+_MOTION_GROUP = ("01", "09")
+
+
+class NgcWordBlockSyntax(WordBlockSyntax):
+    """Lexed words -> neutral sections, RS274/NGC word rules; subclasses give the code table."""
+
+    __slots__ = ()
+    CONTROL: ClassVar[str] = ""
+    """How messages name the controller ("K in a drilling cycle: <CONTROL> counts repeats with L")."""
+    NATIVE_M_WORDS: ClassVar[str] = "PQ"
+    REAL_LETTERS: ClassVar[frozenset[str]] = REAL_LETTERS
+    INTEGER_LETTERS: ClassVar[frozenset[str]] = INTEGER_LETTERS
+    FEED_BEFORE_UNITS: ClassVar[bool] = True
+    """F in a block that changes units is in the old units (LinuxCNC's order of execution)."""
+
+    def build(self, block: Block, ctx: Context) -> None:
+        words = block.words
+        if not words:
+            return
+        codes: dict[str, tuple[str, str, object, str]] = {}
+        natives: list[str] = []
+        raw: dict[str, str] = {}
+        mcodes: list[tuple[int, str]] = []
+        for letter, num in words:
+            up = letter.upper()
+            if up == "G":
+                self._g_code(ctx, block, num, codes, natives)
+            elif up == "M":
+                at = ctx.at(block, col_of_word(block, "M", num))
+                if "." in num:
+                    raise ParseError(f"M code M{num} takes no decimal point", at)
+                number = int(num)
+                refused = self.CODES.refused_m.get(number)
+                if refused is not None:
+                    raise ParseError(refused, at)
+                mcodes.append((number, num))
+            elif up in raw:
+                raise ParseError(f"address {up} appears twice in one block", ctx.at(block, second_col(block, up)))
+            else:
+                raw[up] = num
+        self._path_tolerance(codes, natives, raw)
+        if natives:
+            self._native(block, ctx, natives, raw)
+            return
+        values = block.values
+        for up, num in raw.items():
+            values[up] = self._value(block, ctx, up, num)
+        state = ctx.state
+        extra = state.extra
+        cycle_block = "09" in codes and codes["09"][1] == "cycle" or (
+            state.cycle is not None and "01" not in codes and "09" not in codes)
+        self._check_cycle_words(block, ctx, values, cycle_block)
+        if "08" in codes and codes["08"][2] == "positive" and "H" not in values:
+            self._loaded_tool(block, ctx, values)
+        no_motion = extra.get(_STATE_KEY, False)
+        if "01" in codes or "09" in codes:
+            no_motion = codes.get("09", ("", ""))[1] == "cycle_cancel" and "01" not in codes
+            extra[_STATE_KEY] = no_motion
+        if no_motion and not cycle_block and "01" not in codes and codes.get("00", ("", ""))[1] != "home":
+            axis = next((k for k in values if k in "XYZABCUVW"), None)
+            if axis is not None:
+                raise ProgramError(f"axis words with no motion mode in force ({self.spell('cycle_cancel')} cancels it: "
+                                   f"program {self.spell('motion', 'rapid')} or {self.spell('motion', 'linear')})",
+                                   ctx.at(block, ctx.column_of(block, axis)))
+        used = {"N"}
+        if cycle_block:
+            used.add("L")
+        if codes.get("00", ("", ""))[1] == "dwell":
+            self._ngc_dwell(block, ctx, values, used, codes.pop("00")[3])
+        self.g_sections(block, ctx, codes, values, used, cycle_block)
+        if "MachineCoordinates" in block.sections and "Motion" in block.sections:
+            self._machine_move(block, ctx, codes)
+        self.m_sections(block, ctx, mcodes, values, used)
+        self.finish_words(block, ctx, values, used)
+        if self.FEED_BEFORE_UNITS and "Units" in block.sections and "Feed" in block.sections:
+            _feed_in_old_units(block, ctx)
+
+    def _value(self, block: Block, ctx: Context, up: str, num: str) -> float | int:
+        if up in self.REAL_LETTERS:
+            return float(num)
+        if up in self.INTEGER_LETTERS:
+            if "." in num:
+                raise ParseError(f"address {up} takes a whole number ({up}{num})",
+                                 ctx.at(block, ctx.column_of(block, up)))
+            return int(num)
+        if up == "S":
+            return float(num) if "." in num else int(num)
+        raise ParseError(f"address {up} is not used by the {self.DIALECT} dialect",
+                         ctx.at(block, ctx.column_of(block, up)))
+
+    def _g_code(self, ctx: Context, block: Block, num: str, codes: dict[str, Any], natives: list[str]) -> None:
+        key = g_key(num)
+        refused = self.CODES.refused_g.get(key)
+        if refused is not None:
+            raise ParseError(refused, ctx.at(block, col_of_word(block, "G", num)))
+        entry = self.CODES.g.get(key)
+        if entry is None:
+            if key in self.CODES.native_g:
+                natives.append(key)
+                return
+            raise ParseError(f"unknown G code G{num}", ctx.at(block, col_of_word(block, "G", num)))
+        group = entry[0]
+        other = codes.get(group)
+        if other is None and group in _MOTION_GROUP:
+            other = codes.get(_MOTION_GROUP[group == "01"])
+        if other is not None:
+            raise ParseError(f"G codes G{other[3]} and G{num} are both in one modal group",
+                             ctx.at(block, col_of_word(block, "G", num)))
+        codes[group] = (group, entry[1], entry[2], num)
+
+    @staticmethod
+    def _path_tolerance(codes: dict[str, Any], natives: list[str], raw: dict[str, str]) -> None:
+        """``G64 P Q`` (blending with a tolerance) has no neutral meaning: keep it verbatim."""
+        path = codes.get("15")
+        if path is not None and path[2] == "cutting" and ("P" in raw or "Q" in raw):
+            natives.append("64")
+
+    def _native(self, block: Block, ctx: Context, natives: list[str], raw: dict[str, str]) -> None:
+        """Keep a block with a code the IR does not model verbatim, tagged with its meaning."""
+        key = natives[0]
+        what = f"G{key} ({self.CODES.native_g.get(key, 'path blending with a tolerance')})"
+        block.add(NativeCode(self.DIALECT, what, block.text or ""))
+        for up, num in raw.items():
+            block.values[up] = float(num) if "." in num else int(num)
+
+    def _check_cycle_words(self, block: Block, ctx: Context, values: dict[str, Any], cycle_block: bool) -> None:
+        """L counts repeats only in a cycle block; K is refused there, and so is L0."""
+        if not cycle_block:
+            if "L" in values:
+                raise ProgramError("L (repeat count) outside a canned cycle",
+                                   ctx.at(block, ctx.column_of(block, "L")))
+            return
+        if "K" in values:
+            raise ProgramError(f"K in a drilling cycle: {self.CONTROL} counts repeats with L",
+                               ctx.at(block, ctx.column_of(block, "K")))
+        if values.get("L", 1) < 1:
+            raise ProgramError("a canned cycle cannot repeat zero times (L must be 1 or more)",
+                               ctx.at(block, ctx.column_of(block, "L")))
+
+    def _loaded_tool(self, block: Block, ctx: Context, values: dict[str, Any]) -> None:
+        """A tool length offset without H applies the selected tool's offset."""
+        tool = ctx.state.tool if "T" not in values else values["T"]
+        if tool is None:
+            raise ProgramError(f"{self.spell('length', 'positive')} without H uses the loaded tool, which is not known "
+                               "here: program H",
+                               ctx.at(block, ctx.column_of(block, "G")))
+        values["H"] = tool
+
+    def _machine_move(self, block: Block, ctx: Context, codes: dict[str, Any]) -> None:
+        """Machine coordinates move in the motion mode in force, which must be rapid or linear (the ISO
+        reading always rapids)."""
+        mode = codes["01"][2] if "01" in codes else ctx.state.motion
+        if ctx.state.extra.get(_STATE_KEY) and "01" not in codes:
+            mode = None
+        if mode not in ("rapid", "linear"):
+            machine = self.spell("machine")
+            raise ProgramError(f"{machine} needs {self.spell('motion', 'rapid')} or {self.spell('motion', 'linear')} "
+                               "in force", ctx.at(block, col_of_word(block, machine[:1], machine[1:])))
+        block.sections["Motion"].mode = mode  # type: ignore[attr-defined]
+
+    def _ngc_dwell(self, block: Block, ctx: Context, values: dict[str, Any], used: set[str], num: str) -> None:
+        """Dwell P<seconds> (the ISO reading: P milliseconds or X seconds), made before the shared logic runs."""
+        if "P" not in values:
+            raise ProgramError(f"{self.spell('dwell')} needs a dwell time P (seconds)", ctx.at(block, col_of_word(block, "G", num)))
+        seconds = float(values["P"])
+        if seconds < 0:
+            raise ProgramError("a dwell time cannot be negative", ctx.at(block, ctx.column_of(block, "P")))
+        used.add("P")
+        block.add(Dwell(seconds))
+
+    def unknown_m(self, block: Block, ctx: Context, number: int, num: str) -> str:
+        """RS274/NGC controls know their M codes: user M codes are kept verbatim, anything else is an error."""
+        native = self.CODES.native_m.get(number)
+        if native is not None:
+            return f"M{num} ({native})"
+        if number in self.CODES.user_m:
+            return f"M{num} (user M code)"
+        raise ParseError(f"unknown M code M{num}", ctx.at(block, col_of_word(block, "M", num)))
+
+    def orient(self, block: Block, ctx: Context, num: str, values: dict[str, Any], used: set[str]) -> None:
+        """The orient code takes the angle from R (Q is a timeout, P the direction)."""
+        block.add(SpindleOrientation(float(values.get("R", ctx.setup.cycles.orient_angle))))
+        used.update("RQP")
+
+
+def _feed_in_old_units(block: Block, ctx: Context) -> None:
+    """The block's F was set in the units in force before it: express it in the block's new units
+    (an inverse-time F is no length and stays)."""
+    sections = block.sections
+    before, after = ctx.state.units, sections["Units"].system  # type: ignore[attr-defined]
+    mode = sections.get("FeedMode")
+    inverse_time = (mode.mode if mode is not None else ctx.state.feed_mode) == "inverse_time"  # type: ignore[attr-defined]
+    if before == after or inverse_time:
+        return
+    feed = sections["Feed"]
+    feed.value *= MM_PER_INCH if after == "mm" else 1.0 / MM_PER_INCH  # type: ignore[attr-defined]
