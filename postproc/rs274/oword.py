@@ -72,7 +72,9 @@ _NAME_CHARS = _LETTERS | _DIGITS | frozenset("_-.")
 _NO_ARGS = {"else": Else, "endif": EndIf, "endwhile": EndWhile, "do": Do, "endrepeat": EndRepeat,
             "break": Break, "continue": Continue}
 _WITH_COND = {"if": If, "elseif": ElseIf}
-_KEYWORDS = frozenset(["sub", "endsub", "call", "return", "while", "repeat", *_NO_ARGS, *_WITH_COND])
+_KEYWORD_ORDER = ("sub", "endsub", "call", "do", "while", "repeat", "if", "elseif", "else", "endif", "break",
+                  "continue", "endwhile", "endrepeat", "return")
+"""rs274's order of trial (``read_o``): ``elseif`` before ``else``; no keyword is a prefix of a later one."""
 _OPENERS = frozenset(["if", "while", "do", "repeat"])
 _VALUE_KEYWORDS = {"endsub": SubEnd, "return": Return}
 
@@ -83,17 +85,30 @@ def _skip(text: str, pos: int) -> int:
     return pos
 
 
-def _run(text: str, pos: int, chars: frozenset[str]) -> tuple[int, str]:
+def _run(text: str, pos: int, chars: frozenset[str]) -> tuple[list[int], str]:
     """Characters of ``chars`` from ``pos``, blanks between them ignored (as rs274 deletes blanks);
-    returns the end of the last one and the characters."""
+    returns the offset after each one, and the characters."""
     out: list[str] = []
-    end = pos
+    ends: list[int] = []
+    p = pos
     while True:
-        p = _skip(text, end)
+        p = _skip(text, p)
         if p >= len(text) or text[p] not in chars:
-            return end, "".join(out)
+            return ends, "".join(out)
         out.append(text[p])
-        end = p + 1
+        p += 1
+        ends.append(p)
+
+
+def _keyword(text: str, pos: int) -> tuple[int, str]:
+    """The command at ``pos`` as rs274 finds it: the first keyword (in its order) that the letters
+    there start with (``o1 ifsin[1]`` is ``if`` followed by ``sin``); "" if none."""
+    ends, letters = _run(text, pos, _LETTERS)
+    letters = letters.lower()
+    for word in _KEYWORD_ORDER:
+        if letters.startswith(word):
+            return ends[len(word) - 1], word
+    return pos, letters
 
 
 # ------------------------------------------------------------------------------------------ reading
@@ -114,15 +129,14 @@ def _read_line(text: str, pos: int, do_labels: Container[str]) -> tuple[Section,
     label_pos = _skip(text, start + 1)
     after_label, label = _label(text, label_pos)
     kw_pos = _skip(text, after_label)
-    end, keyword = _run(text, kw_pos, _LETTERS)
-    keyword = keyword.lower()
-    if not keyword:
+    end, keyword = _keyword(text, kw_pos)
+    if end == kw_pos:
+        if keyword:
+            raise ExprSyntaxError(f"unknown o-word command {keyword!r}", kw_pos)
         if _at_end(text, kw_pos):
             raise ExprSyntaxError("a bare o-word (a Fanuc-style subprogram, o100 .. M99) is not read: "
                                   "write o100 sub .. o100 endsub", start)
         raise ExprSyntaxError("o-word command (sub, call, if, while, do, repeat, ...) expected", kw_pos)
-    if keyword not in _KEYWORDS:
-        raise ExprSyntaxError(f"unknown o-word command {keyword!r}", kw_pos)
     if keyword == "call":
         end, args = _call_args(text, end)
         _end(text, end)
@@ -170,15 +184,16 @@ def _label(text: str, pos: int) -> tuple[int, str | Expr]:
         return close + 1, "<" + "".join(name) + ">"
     if pos < len(text) and text[pos] in "#[":
         return parse_word_value(text, pos, _SP)
-    end, digits = _run(text, pos, _DIGITS)
+    ends, digits = _run(text, pos, _DIGITS)
     if not digits:
         raise ExprSyntaxError("o-word number or <name> expected", pos)
+    end = ends[-1]
     dot = _skip(text, end)
     if dot < len(text) and text[dot] == ".":
-        end, fraction = _run(text, dot + 1, _DIGITS)
+        ends, fraction = _run(text, dot + 1, _DIGITS)
         if fraction.strip("0"):
             raise ExprSyntaxError(f"o-word number {digits}.{fraction} is not a whole number", pos)
-        end = max(end, dot + 1)
+        end = ends[-1] if ends else dot + 1
     return end, str(int(digits))
 
 
@@ -259,6 +274,11 @@ class OwordParser:
         label = getattr(node, "label", None)
         if isinstance(node, DoWhile):
             self._open_do.discard(node.label)
+        elif isinstance(node, (Break, Continue)):
+            seen = self._used.get(node.label)
+            if seen is None or seen[0] not in ("while", "do"):
+                what = f"o{node.label} is the {seen[0]} on line {seen[1]}" if seen else f"no loop o{node.label} is open"
+                raise ExprSyntaxError(f"{keyword} leaves a while or do loop only: {what}", label_pos)
         elif keyword in _OPENERS and isinstance(label, str):
             self._open(label, keyword, line, label_pos)
         elif isinstance(node, SubStart):
