@@ -10,7 +10,9 @@ Grammar (checked against LinuxCNC's ``rs274``, ``interp_read.cc`` ``read_o``/``r
   after O-word"). A line cannot hold an o-word and other words; ``G0 X1 o100 ..`` is "Bad character 'o'".
 - rs274 deletes blanks and lower-cases everything outside comments before reading a line, so ``O100``,
   ``o 1 0 0``, ``o100 end if`` and ``o<My Sub>`` (= ``o<mysub>``) are all accepted; this reader does the
-  same for the label and the keyword. The condition, count or argument must start with ``[``
+  same for the label and the keyword. The keyword is found as rs274 finds it, by prefix in its order
+  (``o1 ifsin[1]`` is ``if`` then a missing ``[``; ``o1 dox`` is ``do`` then an unexpected ``x``).
+  The condition, count or argument must start with ``[``
   ("Left bracket missing after 'while'"); ``o100 while[#1 LT 3]`` needs no blank.
 - The label is kept as the text rs274 keys it by: a number as decimal text without leading zeros
   (``o0100`` and ``o100`` are the same label, ``"100"``; ``o1.0`` is ``"1"``), a name with its angle
@@ -28,7 +30,9 @@ starts a ``while`` loop otherwise. ``parse_oword_line`` takes the open ``do`` la
 ``OwordParser`` (one per program file) keeps them, line by line, per scope (the main program, or the
 subprogram being defined: rs274 scopes labels by subprogram), and refuses a label reused by another
 opening statement in the same scope (rs274 "duplicate O-word label", or worse, a ``while`` taken for
-the end of an earlier ``do``).
+the end of an earlier ``do``), a ``break``/``continue`` whose label is not a ``while`` or ``do`` loop
+(rs274 "no matching while/do label": they do not leave a ``repeat``), and nested or unmatched
+``sub``/``endsub``. Matching the other closers (``endif``, ``endwhile``, ...) is the program store's job.
 
 Assignments (``#1=5``, ``#<x>=[#1+2]``, ``#[#1+1]=-#2``; several per line, set in parallel) are read by
 ``parse_assignments`` from a ``#`` item; the right-hand side is a word value (``#1=1+2`` is an rs274
