@@ -103,8 +103,8 @@ def test_starts_at_pos() -> None:
 
 @pytest.mark.parametrize("text, message, pos", [
     ("G0 X1", "o-word expected", 0),
-    ("o100", "a bare o-word (a Fanuc-style subprogram, o100 .. M99) is not read: write o100 sub .. o100 endsub", 0),
-    ("o100 (c)", "a bare o-word (a Fanuc-style subprogram, o100 .. M99) is not read: write o100 sub .. o100 endsub",
+    ("o100", "a bare o-word (a subprogram ended by a return code) is not read: write o100 sub .. o100 endsub", 0),
+    ("o100 (c)", "a bare o-word (a subprogram ended by a return code) is not read: write o100 sub .. o100 endsub",
      0),
     ("o100 [1]", "o-word command (sub, call, if, while, do, repeat, ...) expected", 5),
     ("o100 foo", "unknown o-word command 'foo'", 5),
@@ -149,7 +149,7 @@ def test_error_is_located_by_the_caller() -> None:
 @pytest.mark.parametrize("node, message", [
     (Goto(Num(10.0)), "linuxcnc has no o-word for Goto"),
     (Call("100", {1: V1}, None, "sub"),
-     "an o-word call gives the subprogram its own #1-#30; this call shares the caller's locals (Fanuc M98)"),
+     "an o-word call gives the subprogram its own #1-#30; this call shares the caller's locals (a subprogram call)"),
     (Call("100", {}, Num(3.0), "macro"), "an o-word call has no repeat count"),
     (Call("100", {1: V1, 3: V1}, None, "macro"),
      "an o-word call sets #1 to #n in order (at most #30); this call sets #1, #3"),
@@ -157,7 +157,7 @@ def test_error_is_located_by_the_caller() -> None:
      "an o-word call sets #1 to #n in order (at most #30); this call sets "
      + ", ".join(f"#{i}" for i in range(1, 32))),
     (Return(None), "a LinuxCNC return names its subprogram: o<name> return (this Return has no name)"),
-    (Return("100", None, Num(20.0)), "a LinuxCNC return cannot continue at a sequence number (Fanuc M99 P)"),
+    (Return("100", None, Num(20.0)), "a LinuxCNC return cannot continue at a sequence number"),
     (While("x", V1), "'x' is not a LinuxCNC o-word label (a number, or <name> in lower case)"),
     (SubStart("<Probe>"), "'<Probe>' is not a LinuxCNC o-word label (a number, or <name> in lower case)"),
     (SubStart("0100"), "'0100' is not a LinuxCNC o-word label (a number, or <name> in lower case)"),

@@ -138,7 +138,7 @@ def _read_line(text: str, pos: int, do_labels: Container[str]) -> tuple[Section,
         if keyword:
             raise ExprSyntaxError(f"unknown o-word command {keyword!r}", kw_pos)
         if _at_end(text, kw_pos):
-            raise ExprSyntaxError("a bare o-word (a Fanuc-style subprogram, o100 .. M99) is not read: "
+            raise ExprSyntaxError("a bare o-word (a subprogram ended by a return code) is not read: "
                                   "write o100 sub .. o100 endsub", start)
         raise ExprSyntaxError("o-word command (sub, call, if, while, do, repeat, ...) expected", kw_pos)
     if keyword == "call":
@@ -391,14 +391,14 @@ def _value(node: SubEnd | Return, keyword: str) -> str:
 
 def _return(node: Return) -> str:
     if node.target is not None:
-        raise UnsupportedError("a LinuxCNC return cannot continue at a sequence number (Fanuc M99 P)")
+        raise UnsupportedError("a LinuxCNC return cannot continue at a sequence number")
     return _value(node, "return")
 
 
 def _call(node: Call) -> str:
     if node.kind != "macro":
         raise UnsupportedError("an o-word call gives the subprogram its own #1-#30; this call shares the "
-                               "caller's locals (Fanuc M98)")
+                               "caller's locals (a subprogram call)")
     if node.repeat is not None:
         raise UnsupportedError("an o-word call has no repeat count")
     keys = sorted(node.args)
