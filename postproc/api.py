@@ -7,15 +7,19 @@ measured here the collector's generation scans, not parsing, dominate object-per
 from __future__ import annotations
 
 import contextlib
+import copy
 import gc
-from typing import Iterable, Iterator, TextIO
+import io
+from typing import Callable, Iterable, Iterator, TextIO
 
 from .dialect import Dialect
-from .errors import Diagnostics, ErrorLevel, UsageError
+from .errors import Diagnostics, ErrorLevel, PostprocError, UsageError
 from .ir import Block
 from .lower import lower_for
 from .plugins import Registry, default_registry
+from .interp.step import ProgramSyntax
 from .setup import MachineSetup
+from .syntax import Pipeline
 from .context import Context
 
 
@@ -60,11 +64,47 @@ def translate(lines: Iterable[str], out: TextIO, *, file: str, source: str, targ
     with gc_paused():
         ctx, blocks = read_blocks(lines, file, src, setup, diagnostics)
         ctx.on_unsupported = on_unsupported
+        if src.NAME != dst.NAME:
+            ctx.program_mode = "auto" if dst.PROGRAMS else "execute"
+            ctx.keep_check = _keep_check(src, dst, ctx, registry)
         lowered = lower_for(blocks, ctx, dst, on_unsupported, registry.lowerings)
         writer = dst.WRITER(ctx, src.NAME, dst)
         writer.write(lowered, out)
     diagnostics.check()
     return diagnostics
+
+
+def _keep_check(src: type[Dialect], dst: type[Dialect], ctx: Context,
+                registry: Registry) -> Callable[[list[Block]], str | None]:
+    """A dry run deciding whether a program that computes can reach ``dst`` symbolically: the rest of
+    the program goes through the reading steps after the interpreter step, lowering and ``dst``'s
+    writer, from a copy of the modal state where the program stands; the first error found (a
+    construct ``dst`` cannot spell, a cycle with computed words it would have to expand...) is the
+    reason to flatten instead."""
+
+    def reason(body: list[Block]) -> str | None:
+        if not dst.PROGRAMS:
+            return f"the {dst.NAME} dialect has no variables or control flow"
+        dry = Diagnostics(ErrorLevel.RAISE, max_errors=1_000_000, warn_stream=io.StringIO())
+        trial = src.context(ctx.file, ctx.setup, dry)
+        trial.state = copy.deepcopy(ctx.state)
+        trial.on_unsupported = "error"
+        steps = [step for step in src.pipeline(ctx.setup).steps if not isinstance(step, ProgramSyntax)]
+        blocks = Pipeline(src.NAME, steps).run(body, trial)
+        lowered = lower_for(blocks, trial, dst, "error", registry.lowerings)
+        writer = dst.WRITER(trial, src.NAME, dst) if dst.WRITER is not None else None
+        try:
+            if writer is not None:
+                writer.write(lowered, io.StringIO())
+        except PostprocError as err:
+            return err.message
+        if dry.errors:
+            first = dry.errors[0]
+            where = f"line {first.location.line}: " if first.location is not None else ""
+            return where + first.message
+        return None
+
+    return reason
 
 
 def read_program(lines: Iterable[str], *, file: str, dialect: str, setup: MachineSetup | None = None,

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import re
+from typing import Callable
 
 from .cycle_words import CycleWords
 from .errors import Diagnostics, Location
@@ -17,7 +18,7 @@ class Context:
     reading dialect tells the neutral steps about its words."""
 
     __slots__ = ("file", "setup", "diagnostics", "state", "dialect", "cycle_words", "on_unsupported",
-                 "program_mode")
+                 "program_mode", "keep_check")
 
     def __init__(self, file: str, setup: MachineSetup, diagnostics: Diagnostics, dialect: str,
                  cycle_words: CycleWords | None = None) -> None:
@@ -32,7 +33,11 @@ class Context:
         """'error' or 'warn': what a construct the target cannot express does."""
         self.program_mode = "keep"
         """What the interpreter step does with a program that computes: 'keep' its constructs (for a
-        target that has them) or 'execute' them (toolpath, verify, flattening); see ``postproc.interp``."""
+        target that has them) or 'execute' them (toolpath, verify, flattening), or 'auto': keep them when
+        ``keep_check`` finds nothing the target cannot express, else execute them; see ``postproc.interp``."""
+        self.keep_check: Callable[[list[Block]], str | None] | None = None
+        """For 'auto': given the program from its first construct on, the reason it cannot be kept
+        symbolically for the target (None: it can)."""
 
     def at(self, block: Block, col: int = 1) -> Location:
         """Where ``block`` (column ``col``) is, through the source map: the one way to locate a block."""

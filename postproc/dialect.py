@@ -145,6 +145,10 @@ class Dialect:
     TOOL_CHANGER: ClassVar[bool] = True
     """An automatic tool changer exists (the writer refuses a tool change otherwise, unless the
     dialect's lowering rewrites it first)."""
+    PROGRAMS: ClassVar[bool] = False
+    """Variables, expressions and control flow (loops, jumps, subprograms) can be written: a program that
+    computes is translated symbolically when every construct has a spelling here, else flattened (its
+    evaluated motion). Without it every such program reaches this target flattened."""
     CYCLE_SEMANTICS: ClassVar[str] = "fanuc"
     """How the controller moves through its native canned cycles ('fanuc' or 'rs274', see
     ``postproc.cycles.semantics``): a cycle resolved under other rules is expanded for it."""

@@ -31,6 +31,8 @@ class Fanuc(Dialect):
     """R level, Q peck/shift, P dwell (ms); K, L or K+L repeats per the set-up; cycles named G73-G89."""
     NATIVE_CYCLES = ALL_MILLING_CYCLES
     """G73, G74, G76, G81-G89 all run natively."""
+    PROGRAMS = True
+    """Custom Macro B variables, expressions, IF/GOTO, WHILE, M98/G65 subprograms."""
 
 
 @hookimpl

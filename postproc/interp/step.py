@@ -107,7 +107,7 @@ class ProgramSyntax(Syntax):
 
     # -- the stream ------------------------------------------------------------------------------
     def process(self, blocks: Iterable[Block], ctx: Context) -> Iterator[Block]:
-        if ctx.program_mode != "execute":
+        if ctx.program_mode == "keep":
             return iter(blocks)
         return self._execute(iter(blocks), ctx)
 
@@ -126,7 +126,29 @@ class ProgramSyntax(Syntax):
             yield block
         else:
             return
+        if ctx.program_mode == "auto":
+            body = [block]
+            body.extend(blocks)
+            reason = self._keep_reason(body, ctx)
+            if reason is None:
+                yield from body
+                return
+            ctx.diagnostics.warn(f"the program is flattened (its evaluated motion is written): {reason}",
+                                 ctx.at(block))
+            block, blocks = body[0], iter(body[1:])
         yield from self._run(block, blocks, ctx, kept, seen)
+
+    def _keep_reason(self, body: list[Block], ctx: Context) -> str | None:
+        """Why ``body`` (the program from its first construct on) cannot travel symbolically, through
+        ``ctx.keep_check`` on fresh copies (the check runs the later steps, which change blocks)."""
+        check = ctx.keep_check
+        if check is None:
+            return "the target's spelling of the program's constructs was not checked"
+        copies = self.read_lines([(b.text or "") + b.eol for b in body], ctx.file, ctx,
+                                 Diagnostics(ErrorLevel.IGNORE))
+        for original, copy in zip(body, copies):
+            copy.line = original.line
+        return check(copies)
 
     def _run(self, first: Block, rest: Iterator[Block], ctx: Context, kept: deque[tuple[str, str] | None],
              seen: int) -> Iterator[Block]:

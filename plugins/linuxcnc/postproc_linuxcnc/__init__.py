@@ -43,6 +43,8 @@ class Linuxcnc(Dialect):
     NATIVE_CYCLES = NATIVE
     """G73, G74, G81-G86, G89. Not G76 (threading here), G87/G88 (RS274/NGC words and motion), and
     there is no fine boring: those are expanded."""
+    PROGRAMS = True
+    """Numbered and named parameters, expressions, o-word subprograms and control flow."""
     CYCLE_SEMANTICS = "rs274"
     """How the native cycles move: start below R rises to R first, G98 returns to the old Z only when
     it is above R, G91 R is measured from the Z at the block's start, G74/G84/G89 feed out to the
