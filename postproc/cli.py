@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import math
 import os
 import shutil
 import sys
@@ -80,7 +81,7 @@ def build_parser() -> argparse.ArgumentParser:
     v.add_argument("--to", dest="target", required=True)
     v.add_argument("--machine")
     v.add_argument("--target-machine", help="set-up of the target machine (default: --machine)")
-    v.add_argument("--tolerance", type=float, default=0.001)
+    v.add_argument("--tolerance", type=_tolerance, default=0.001, help="mm (default 0.001)")
     v.set_defaults(run=cmd_verify)
 
     i = sub.add_parser("ir", help="print a program's IR as XML")
@@ -99,6 +100,17 @@ def build_parser() -> argparse.ArgumentParser:
     c.add_argument("file")
     c.set_defaults(run=cmd_config)
     return p
+
+
+def _tolerance(text: str) -> float:
+    """A finite, non-negative number of mm (argparse turns the error into usage, exit 2)."""
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"not a number: {text!r}") from None
+    if not math.isfinite(value) or value < 0:
+        raise argparse.ArgumentTypeError(f"must be a finite number of at least 0, got {text!r}")
+    return value
 
 
 def _setup(path: str | None) -> MachineSetup:

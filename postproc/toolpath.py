@@ -62,7 +62,11 @@ class ToolpathTarget(Dialect):
 
 
 def num(value: float) -> float | int:
-    """A number as written to a toolpath: rounded, integral values as int, never -0."""
+    """A number as written to a toolpath: rounded, integral values as int, never -0, always finite
+    (a value beyond the float range fails at its block, rather than as JSON's invalid ``Infinity``)."""
+    if not math.isfinite(value):
+        raise ProgramError(f"a value beyond the range of a float ({value!r}) cannot be simulated"
+                           if value == value else "a value that is not a number (nan) cannot be simulated")
     r = round(value, PLACES)
     if r == 0:
         return 0
@@ -91,7 +95,7 @@ def centre_from_radius(s: tuple[float, float], e: tuple[float, float], r: float,
         if half - radius > ARC_TOLERANCE_MM:
             raise ProgramError(f"arc radius {radius:.4f} mm is too small for a chord of {chord:.4f} mm")
         radius = half
-    h = math.sqrt(max(radius * radius - half * half, 0.0))
+    h = math.sqrt(max((radius - half) * (radius + half), 0.0))  # no overflow for huge radii
     # Left normal of the chord: a counter-clockwise arc of up to 180 degrees has its centre on the left.
     nx, ny = -dy / chord, dx / chord
     side = 1.0 if clockwise == (r < 0) else -1.0
@@ -489,7 +493,7 @@ def export_toolpath(lines: Iterable[str], out: Any, *, file: str, dialect: str |
     setup = setup or MachineSetup()
     events = toolpath_events(lines, file=file, dialect=dialect, setup=setup)
     if fmt == "jsonl":
-        write_jsonl(events, out)
+        write_jsonl(events, out, file)
     elif fmt in ("svg", "png"):
         from .backplot import Backplot
         plot = Backplot(start_position(setup))
@@ -502,8 +506,16 @@ def export_toolpath(lines: Iterable[str], out: Any, *, file: str, dialect: str |
         raise UsageError(f"unknown toolpath format {fmt!r} (jsonl, svg or png)")
 
 
-def write_jsonl(events: Iterable[Event], out: TextIO) -> None:
+def write_jsonl(events: Iterable[Event], out: TextIO, file: str = "<toolpath>") -> None:
+    """One JSON object a line; strict JSON (no ``NaN``/``Infinity``): a non-finite value is an error
+    at the event's source line."""
     write = out.write
-    encode = json.JSONEncoder().encode
+    encode = json.JSONEncoder(allow_nan=False).encode
     for ev in events:
-        write(encode(ev) + "\n")
+        try:
+            text = encode(ev)
+        except ValueError:
+            bad = ", ".join(k for k, v in ev.items() if isinstance(v, float) and not math.isfinite(v))
+            raise ProgramError(f"the toolpath has a value beyond the range of a float ({bad})",
+                               Location(file, int(ev.get("line", 1)), 1)) from None
+        write(text + "\n")
