@@ -84,3 +84,22 @@ def test_a_number_beyond_the_float_range_is_a_located_error() -> None:
         translate(io.StringIO(program), io.StringIO(), file="big.nc", source="fanuc", target="linuxcnc")
     assert [str(e) for e in exc.value.errors] == [
         "big.nc:2:1: error: cannot write the number inf: it is beyond the range of a float"]
+
+
+@pytest.mark.parametrize("attribute, message", [
+    ('decimals="7"', "decimals: Input should be less than or equal to 6"),
+    ('decimals="-1"', "decimals: Input should be greater than or equal to 0"),
+    ('inchDecimals="8"', "inchDecimals: Input should be less than or equal to 7"),
+])
+def test_config_check_validates_the_decimals_ranges(cli, tmp_path, attribute: str, message: str) -> None:
+    """0 is valid (whole numbers keep their point, 'X50.'); beyond 6 (7 in inch) is finer than 0.001 um."""
+    path = tmp_path / "m.xml"
+    path.write_text(f'<MachineSetup name="m">\n  <Output {attribute}/>\n</MachineSetup>\n')
+    result = cli("config", "check", path)
+    assert (result.status, result.err) == (1, f"{path}:2:1: error: <Output> {message}\n")
+
+
+def test_config_check_accepts_decimals_0(cli, tmp_path) -> None:
+    path = tmp_path / "m.xml"
+    path.write_text('<MachineSetup name="m">\n  <Output decimals="0" inchDecimals="0"/>\n</MachineSetup>\n')
+    assert cli("config", "check", path).status == 0
