@@ -28,8 +28,10 @@ BUFFER = 1 << 20
 
 
 def write_output(path: str | None, write: Callable[[TextIO], object], *, binary: bool = False,
-                 input_path: str | None = None, in_place: bool = False) -> None:
-    """Run ``write`` on a temporary file and put the result where ``path`` says (stdout if None)."""
+                 input_path: str | None = None, in_place: bool | None = None) -> None:
+    """Run ``write`` on a temporary file and put the result where ``path`` says (stdout if None).
+    ``in_place``: True allows ``path`` to be the input, False refuses it and names ``--in-place``,
+    None refuses it (the command has no such option)."""
     target, regular = (None, True) if path is None else _target(path, input_path, in_place)
     folder = os.path.dirname(target) if target is not None and regular else None
     try:
@@ -51,7 +53,7 @@ def write_output(path: str | None, write: Callable[[TextIO], object], *, binary:
             os.unlink(tmp)
 
 
-def _target(path: str, input_path: str | None, in_place: bool) -> tuple[str, bool]:
+def _target(path: str, input_path: str | None, in_place: bool | None) -> tuple[str, bool]:
     """Where to write and whether it is (or will be) a regular file, after the usage checks.
 
     A regular or new file is named by its real path (symlinks followed), so the rename replaces the
@@ -71,7 +73,8 @@ def _target(path: str, input_path: str | None, in_place: bool) -> tuple[str, boo
     if not os.path.isdir(folder):
         raise UsageError(f"cannot write {path}: no such directory {folder}")
     if input_path is not None and not in_place and _same_file(input_path, target):
-        raise UsageError(f"-o {path} would overwrite the input {input_path} (give --in-place to do that)")
+        hint = " (give --in-place to do that)" if in_place is False else ""
+        raise UsageError(f"-o {path} would overwrite the input {input_path}{hint}")
     return target, True
 
 

@@ -164,3 +164,11 @@ def test_a_signal_ends_quietly_and_leaves_no_temporary_file(tmp_path: Path, sig:
         out, err = proc.communicate(timeout=60)
     assert (proc.returncode, out, err) == (status, b"", b"")
     assert list(out_dir.iterdir()) == []
+
+
+def test_a_toolpath_over_its_program_is_refused(cli, tmp_path: Path) -> None:
+    program = tmp_path / "p.nc"
+    program.write_bytes(PROGRAM.read_bytes())
+    result = cli("toolpath", program, "--dialect", "fanuc", "-o", program)
+    assert (result.status, result.err) == (2, f"postproc: -o {program} would overwrite the input {program}\n")
+    assert program.read_bytes() == PROGRAM.read_bytes()
