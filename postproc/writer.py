@@ -12,7 +12,7 @@ from typing import Any, Callable, ClassVar, NoReturn
 
 from .errors import Location, UnsupportedError
 from .ir import Block, CompoundMotion, Motion, Section
-from .numbers import MAX_PLACES, canonical_number_re, format_decimal
+from .numbers import EXACT, EXACT_INCH, MAX_PLACES, canonical_number_re, format_decimal
 from .syntax import Context
 from .dialect import Writer
 
@@ -83,7 +83,7 @@ class WordWriter(Writer):
         half a micrometre (or 0.00002 in) keeps up to ``MAX_PLACES`` places instead.
         """
         places = self.decimals if self.units == "mm" else self.inch_decimals
-        return format_decimal(value, places, self.leading_zero)
+        return format_decimal(value, places, self.leading_zero, EXACT if self.units == "mm" else EXACT_INCH)
 
     @staticmethod
     def integer(value: float | int) -> str:

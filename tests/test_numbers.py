@@ -11,8 +11,9 @@ from hypothesis import strategies as st
 
 from postproc.api import translate
 from postproc.errors import ErrorList, ProgramError
-from postproc.numbers import EXACT, MAX_PLACES, format_decimal
+from postproc.numbers import EXACT, EXACT_INCH, MAX_PLACES, format_decimal
 from postproc.setup import MachineSetup, OutputSettings
+from postproc.verify import verify_lines
 
 FINITE = st.floats(allow_nan=False, allow_infinity=False)
 PLACES = st.integers(min_value=0, max_value=7)
@@ -22,15 +23,16 @@ def _places(text: str) -> int:
     return len(text.partition(".")[2])
 
 
-@given(value=FINITE, places=PLACES, leading_zero=st.booleans())
-def test_parses_back_within_half_a_unit_of_the_last_place(value: float, places: int, leading_zero: bool) -> None:
-    text = format_decimal(value, places, leading_zero)
+@given(value=FINITE, places=PLACES, leading_zero=st.booleans(), exact=st.sampled_from([EXACT, EXACT_INCH]))
+def test_parses_back_within_half_a_unit_of_the_last_place(value: float, places: int, leading_zero: bool,
+                                                          exact: float) -> None:
+    text = format_decimal(value, places, leading_zero, exact)
     error = abs(Decimal(text) - Decimal(value))
     assert error <= Decimal(5) * Decimal(10) ** -(_places(text) + 1), text
-    # Never rounds silently: read back as a float (as any reader does), it is within EXACT. (In exact
+    # Never rounds silently: read back as a float (as any reader does), it is within ``exact``. (In exact
     # decimals it may be further: 137438953472.04 is the double 137438953472.0400085..., same float.)
-    assert abs(float(text) - value) <= EXACT, text
-    assert _places(text) <= max(places, MAX_PLACES)
+    assert abs(float(text) - value) <= exact, text
+    assert _places(text) <= max(places, MAX_PLACES if exact == EXACT else 8)
 
 
 @given(value=FINITE, places=PLACES, leading_zero=st.booleans())
@@ -75,6 +77,19 @@ def test_decimals_0_writes_whole_numbers_with_their_point(target: str) -> None:
     translate(io.StringIO("G21 G90\nG0 X50. Y100. Z0.\nG1 X12.5 F100.\n"), out, file="d.nc", source="fanuc",
               target=target, setup=setup)
     assert out.getvalue().splitlines()[1:] == ["G0 X50. Y100. Z0.", "G1 X12.5 F100."]
+
+
+def test_an_inch_number_keeps_the_places_that_half_a_micrometre_needs() -> None:
+    """Found by ``make fuzz``: inch values were rounded within 5e-7 in (12.7 nm, coarser than the
+    toolpath's 1 nm), so Y-0.0000004 (10 nm) was written as Y0. and the toolpaths differed."""
+    assert format_decimal(-0.0000004, 4, True, EXACT_INCH) == "-0.0000004"
+    out = io.StringIO()
+    program = "G20 G90 G0 X0. Y0. Z1.\nY-0.0000004\n"
+    translate(io.StringIO(program), out, file="i.nc", source="fanuc", target="linuxcnc")
+    assert out.getvalue().splitlines()[1] == "G0 Y-0.0000004"
+    report = verify_lines(io.StringIO(program), io.StringIO(out.getvalue()), file_in="i.nc", file_out="o.nc",
+                          source="fanuc", target="linuxcnc", tolerance=0.0)
+    assert report.ok, report.summary()
 
 
 def test_a_number_beyond_the_float_range_is_a_located_error() -> None:

@@ -59,6 +59,10 @@ KNOWN_DEFECTS: list[tuple[str, str | None, re.Pattern[str]]] = [
      re.compile(r"reader refuses the \w+ output: .*G80 and G0?\d are both in one modal group")),
     ("grbl writes a tool change as M0 next to another stop code (M30) in one block", "grbl",
      re.compile(r"reader refuses the grbl output: .*M codes M0 and M\d+ conflict in one block")),
+    ("linuxcnc writes M19's angle as R in a block with an R-less arc (its reader refuses I/J/K with R)",
+     "linuxcnc", re.compile(r"reader refuses the linuxcnc output: .*an arc takes either I/J/K or R, not both")),
+    ("an expanded cycle is written before its block's tool change (M06)", "linuxcnc",
+     re.compile(r"IN has tool change to T\w*, OUT ")),
     ("sub-micrometre incremental moves are rounded word by word, so their sum drifts", None,
      re.compile(r"^translated, but verify says: max deviation 0\.0000 mm .*structure differs\n"
                 r"first difference at .*(has no more moves|IN has a \w+ to .*-0\b)")),
