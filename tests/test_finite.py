@@ -10,7 +10,7 @@ import pytest
 
 from postproc.errors import ConfigError, ErrorList, ProgramError
 from postproc.setup import load_setup
-from postproc.toolpath import toolpath_events, write_jsonl
+from postproc.toolpath import MAX_ARC_POINTS, arc_points, centre_from_radius, toolpath_events, write_jsonl
 from postproc.verify import verify_lines
 
 BIG = "1" + "0" * 200 + "."
@@ -80,3 +80,26 @@ def test_verify_tolerance_must_be_a_finite_non_negative_number(cli, tmp_path: Pa
     assert result.status == 2
     assert result.err_lines[-1].startswith("postproc verify: error: argument --tolerance: ")
     assert repr(value) in result.err_lines[-1]
+
+
+def test_an_r_arc_near_the_float_range_has_the_right_centre() -> None:
+    """r*r overflowed to inf: the centre became inf and the block a (located) error; now it is exact:
+    (0, 1e200) is 1e200 from both (1e200, 1e200) and (0, 0), on the clockwise side."""
+    cx, cy = centre_from_radius((1e200, 1e200), (0.0, 0.0), 1e200, True)
+    assert abs(cx) <= 1e188 and cy == pytest.approx(1e200, rel=1e-12)
+
+
+@pytest.mark.parametrize("radius", [1e9, 1e200])
+def test_an_arc_of_a_huge_radius_is_drawn_with_bounded_points(radius: float) -> None:
+    """A 1e9 mm radius took 350,000 points per half circle (1e200: a division by zero)."""
+    points = list(arc_points((radius, 0.0, 0.0), (-radius, 0.0, 0.0), (0.0, 0.0, 0.0), "XY", False))
+    assert len(points) <= MAX_ARC_POINTS
+    assert points[-1] == (-radius, 0.0, 0.0)
+
+
+def test_a_backplot_near_the_float_range(cli, tmp_path: Path) -> None:
+    program = tmp_path / "huge.nc"
+    program.write_text(f"G21 G90\nG1 X{BIG} Y{BIG} F100.\nG2 X0. Y0. R{BIG}\nG1 X5.\n")
+    for fmt in ("svg", "png"):
+        result = cli("toolpath", program, "--dialect", "fanuc", "--format", fmt, "-o", tmp_path / f"o.{fmt}")
+        assert (result.status, result.err) == (0, "")
