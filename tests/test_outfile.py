@@ -35,20 +35,21 @@ def _reader(fifo: Path, limit: int | None = None) -> tuple[threading.Thread, lis
     return thread, got
 
 
-def _null_device(tmp_path: Path) -> Path:
-    """A private null device where we may create one (root), else /dev/null itself. A regression then
-    replaces only the private node: run as root, the old code deleted the machine's /dev/null."""
-    node = tmp_path / "null"
+def _device(tmp_path: Path, name: str, minor: int) -> Path:
+    """A private copy of /dev/NAME (memory device 1, ``minor``) where we may create one (root), else the
+    system's own. A regression then replaces only the private node: run as root, the old code deleted
+    the machine's /dev/null."""
+    node = tmp_path / name
     try:
-        os.mknod(node, stat.S_IFCHR | 0o666, os.makedev(1, 3))
+        os.mknod(node, stat.S_IFCHR | 0o666, os.makedev(1, minor))
     except PermissionError:
-        return Path("/dev/null")
+        return Path("/dev") / name
     return node
 
 
 def test_a_device_stays_a_device(cli, tmp_path: Path) -> None:
     """As root, ``-o /dev/null`` renamed the temporary file over the device and so deleted it."""
-    device = _null_device(tmp_path)
+    device = _device(tmp_path, "null", 3)
     result = cli(TRANSLATE[0], PROGRAM, *TRANSLATE[1:], "-o", device)
     assert (result.status, result.err) == (0, "")
     assert stat.S_ISCHR(os.lstat(device).st_mode)
@@ -172,3 +173,12 @@ def test_a_toolpath_over_its_program_is_refused(cli, tmp_path: Path) -> None:
     result = cli("toolpath", program, "--dialect", "fanuc", "-o", program)
     assert (result.status, result.err) == (2, f"postproc: -o {program} would overwrite the input {program}\n")
     assert program.read_bytes() == PROGRAM.read_bytes()
+
+
+def test_a_full_device_is_a_usage_error(cli, tmp_path: Path) -> None:
+    device = _device(tmp_path, "full", 7)
+    if not device.exists():
+        pytest.skip("no /dev/full on this system")
+    result = cli(TRANSLATE[0], PROGRAM, *TRANSLATE[1:], "-o", device)
+    assert (result.status, result.err) == (2, f"postproc: cannot write {device}: No space left on device\n")
+    assert stat.S_ISCHR(os.stat(device).st_mode)
