@@ -3,26 +3,63 @@
 from __future__ import annotations
 
 import argparse
+import contextlib
 import json
+import math
 import os
-import shutil
+import signal
 import sys
-import tempfile
+import threading
 from pathlib import Path
-from typing import Callable, Sequence, TextIO
+from typing import Iterator, Sequence, TextIO
 
 from .api import read_blocks, translate
 from .errors import ConfigError, Diagnostics, ErrorList, Location, PostprocError, UsageError
+from .outfile import BUFFER, ENCODING, write_output
 from .plugins import default_registry
 from .setup import MachineSetup, load_setup
 from .xmlio import parse_xml_file, to_bytes
 
-ENCODING = {"encoding": "utf-8", "errors": "surrogateescape", "newline": ""}
-"""Programs are read and written byte-faithfully: undecodable bytes survive as surrogates."""
-BUFFER = 1 << 20
+EXIT_INTERRUPTED = 128 + signal.SIGINT
+EXIT_TERMINATED = 128 + signal.SIGTERM
+
+
+class Terminated(BaseException):
+    """SIGTERM, raised like ``KeyboardInterrupt`` so that clean-up (the temporary output) runs."""
 
 
 def main(argv: Sequence[str] | None = None) -> int:
+    """Run one command. Ctrl-C and SIGTERM end it quietly (exit 130, 143) with no output left behind."""
+    with _signals_raise():
+        try:
+            return _main(argv)
+        except KeyboardInterrupt:
+            return EXIT_INTERRUPTED
+        except Terminated:
+            return EXIT_TERMINATED
+
+
+@contextlib.contextmanager
+def _signals_raise() -> Iterator[None]:
+    """SIGINT raises ``KeyboardInterrupt`` (even where the shell started us ignoring it) and SIGTERM
+    ``Terminated``, for the length of a command; the previous handlers come back afterwards."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+
+    def terminate(signum: int, frame: object) -> None:
+        raise Terminated()
+
+    previous = {sig: signal.signal(sig, handler) for sig, handler in
+                ((signal.SIGINT, signal.default_int_handler), (signal.SIGTERM, terminate))}
+    try:
+        yield
+    finally:
+        for sig, handler in previous.items():
+            signal.signal(sig, handler)
+
+
+def _main(argv: Sequence[str] | None) -> int:
     parser = build_parser()
     args = parser.parse_args(argv)
     if not getattr(args, "run", None):
@@ -65,6 +102,7 @@ def build_parser() -> argparse.ArgumentParser:
     t.add_argument("--on-unsupported", choices=("error", "warn"), default="error")
     t.add_argument("--normalize", action="store_true", help="write every decimal point explicitly")
     t.add_argument("--renumber", metavar="START[,STEP]", help="renumber blocks (implies --normalize)")
+    t.add_argument("--in-place", action="store_true", help="allow -o to name the input (replace it)")
     t.set_defaults(run=cmd_translate)
 
     tp = sub.add_parser("toolpath", help="simulate a program and export its toolpath")
@@ -86,7 +124,7 @@ def build_parser() -> argparse.ArgumentParser:
     v.add_argument("--lib", action="append", default=[], metavar="DIR",
                    help="folder searched for subprograms (repeatable; after the set-up's <Library>)")
     v.add_argument("--target-machine", help="set-up of the target machine (default: --machine)")
-    v.add_argument("--tolerance", type=float, default=0.001)
+    v.add_argument("--tolerance", type=_tolerance, default=0.001, help="mm (default 0.001)")
     v.set_defaults(run=cmd_verify)
 
     i = sub.add_parser("ir", help="print a program's IR as XML")
@@ -107,6 +145,17 @@ def build_parser() -> argparse.ArgumentParser:
     return p
 
 
+def _tolerance(text: str) -> float:
+    """A finite, non-negative number of mm (argparse turns the error into usage, exit 2)."""
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"not a number: {text!r}") from None
+    if not math.isfinite(value) or value < 0:
+        raise argparse.ArgumentTypeError(f"must be a finite number of at least 0, got {text!r}")
+    return value
+
+
 def _setup(path: str | None, lib: Sequence[str] = ()) -> MachineSetup:
     setup = load_setup(path) if path else MachineSetup()
     for folder in lib:
@@ -123,28 +172,6 @@ def _open_program(path: str) -> TextIO:
         raise UsageError(f"cannot read {path}: {exc.strerror}") from None
 
 
-def _atomic_output(path: str | None, write: Callable[[TextIO], object], binary: bool = False) -> None:
-    """Write to a temporary file and move it into place only on success (no partial outputs)."""
-    target_dir = Path(path).resolve().parent if path else None
-    if target_dir is not None and not target_dir.is_dir():
-        raise UsageError(f"cannot write {path}: no such directory {target_dir}")
-    fd, tmp = tempfile.mkstemp(prefix=".postproc-", dir=target_dir)
-    try:
-        mode = "wb" if binary else "w"
-        kwargs = {} if binary else ENCODING
-        with os.fdopen(fd, mode, buffering=BUFFER, **kwargs) as out:  # type: ignore[call-overload]
-            write(out)
-        if path:
-            os.replace(tmp, path)
-        else:
-            with open(tmp, "rb") as src:
-                shutil.copyfileobj(src, sys.stdout.buffer)
-            sys.stdout.flush()
-    finally:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
-
-
 def cmd_translate(args: argparse.Namespace) -> int:
     setup = _setup(args.machine, args.lib)
     if args.normalize:
@@ -158,9 +185,9 @@ def cmd_translate(args: argparse.Namespace) -> int:
         except ValueError:
             raise UsageError(f"--renumber takes START[,STEP], got {args.renumber!r}") from None
     with _open_program(args.input) as src:
-        _atomic_output(args.output, lambda out: translate(
+        write_output(args.output, lambda out: translate(
             src, out, file=args.input, source=args.source, target=args.target, setup=setup,
-            on_unsupported=args.on_unsupported))
+            on_unsupported=args.on_unsupported), input_path=args.input, in_place=args.in_place)
     return 0
 
 
@@ -171,8 +198,9 @@ def cmd_toolpath(args: argparse.Namespace) -> int:
     if binary and not args.output:
         raise UsageError("--format png needs -o OUT")
     with _open_program(args.input) as src:
-        _atomic_output(args.output, lambda out: export_toolpath(
-            src, out, file=args.input, dialect=args.dialect, setup=setup, fmt=args.format), binary=binary)
+        write_output(args.output, lambda out: export_toolpath(
+            src, out, file=args.input, dialect=args.dialect, setup=setup, fmt=args.format), binary=binary,
+            input_path=args.input)
     return 0
 
 
@@ -199,7 +227,7 @@ def cmd_ir(args: argparse.Namespace) -> int:
             dump_program(blocks, out, dialect=dialect.NAME, file=args.input)  # type: ignore[arg-type]
         diagnostics.check()
 
-    _atomic_output(args.output, write, binary=True)
+    write_output(args.output, write, binary=True, input_path=args.input)
     return 0
 
 

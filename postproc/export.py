@@ -3,9 +3,10 @@
 from __future__ import annotations
 
 import json
+import math
 from typing import Any, Iterable, TextIO
 
-from .errors import UsageError
+from .errors import Location, ProgramError, UsageError
 from .setup import MachineSetup
 from .dialect import Dialect
 from .backplot import Backplot
@@ -18,7 +19,7 @@ def export_toolpath(lines: Iterable[str], out: Any, *, file: str, dialect: str |
     setup = setup or MachineSetup()
     events = toolpath_events(lines, file=file, dialect=dialect, setup=setup)
     if fmt == "jsonl":
-        write_jsonl(events, out)
+        write_jsonl(events, out, file)
     elif fmt in ("svg", "png"):
         plot = Backplot(start_position(setup))
         plot.add_all(events)
@@ -30,8 +31,16 @@ def export_toolpath(lines: Iterable[str], out: Any, *, file: str, dialect: str |
         raise UsageError(f"unknown toolpath format {fmt!r} (jsonl, svg or png)")
 
 
-def write_jsonl(events: Iterable[Event], out: TextIO) -> None:
+def write_jsonl(events: Iterable[Event], out: TextIO, file: str = "<toolpath>") -> None:
+    """One JSON object a line; strict JSON (no ``NaN``/``Infinity``): a non-finite value is an error
+    at the event's source line."""
     write = out.write
-    encode = json.JSONEncoder().encode
+    encode = json.JSONEncoder(allow_nan=False).encode
     for ev in events:
-        write(encode(ev) + "\n")
+        try:
+            text = encode(ev)
+        except ValueError:
+            bad = ", ".join(k for k, v in ev.items() if isinstance(v, float) and not math.isfinite(v))
+            raise ProgramError(f"the toolpath has a value beyond the range of a float ({bad})",
+                               Location(file, int(ev.get("line", 1)), 1)) from None
+        write(text + "\n")

@@ -14,6 +14,8 @@ ARC_TOLERANCE_MM = 0.01
 PLANE_INDEX = {"XY": (0, 1, 2), "ZX": (2, 0, 1), "YZ": (1, 2, 0)}
 """Per plane, indices into an (x, y, z) point of the first and second plane axis and of the normal."""
 CENTRE_KEYS = {"X": "cx", "Y": "cy", "Z": "cz"}
+MAX_ARC_POINTS = 4096
+"""Most points ``arc_points`` yields for one arc (under 0.1 degree apart on a full circle)."""
 
 
 def centre_from_radius(s: tuple[float, float], e: tuple[float, float], r: float,
@@ -29,7 +31,7 @@ def centre_from_radius(s: tuple[float, float], e: tuple[float, float], r: float,
         if half - radius > ARC_TOLERANCE_MM:
             raise ProgramError(f"arc radius {radius:.4f} mm is too small for a chord of {chord:.4f} mm")
         radius = half
-    h = math.sqrt(max(radius * radius - half * half, 0.0))
+    h = math.sqrt(max(radius - half, 0.0)) * math.sqrt(radius + half)  # no overflow near the float range
     # Left normal of the chord: a counter-clockwise arc of up to 180 degrees has its centre on the left.
     nx, ny = -dy / chord, dx / chord
     side = 1.0 if clockwise == (r < 0) else -1.0
@@ -51,7 +53,8 @@ def arc_sweep(s: tuple[float, float], e: tuple[float, float], c: tuple[float, fl
 def arc_points(start: tuple[float, float, float], end: tuple[float, float, float],
                centre: tuple[float, float, float], plane: str, clockwise: bool,
                chord_error: float = 0.01, max_step: float = math.radians(5.0)) -> Iterator[tuple[float, float, float]]:
-    """Points along an arc (helix) after ``start`` up to ``end``, within ``chord_error`` of the curve."""
+    """Points along an arc (helix) after ``start`` up to ``end``, within ``chord_error`` of the curve
+    (at most ``MAX_ARC_POINTS``: an arc of a huge radius is drawn coarser, never with millions of points)."""
     i, j, k = PLANE_INDEX[plane]
     s, e, c = (start[i], start[j]), (end[i], end[j]), (centre[i], centre[j])
     sweep = arc_sweep(s, e, c, clockwise)
@@ -61,7 +64,8 @@ def arc_points(start: tuple[float, float, float], end: tuple[float, float, float
     step = max_step
     if rmax > chord_error:
         step = min(step, 2.0 * math.acos(1.0 - chord_error / rmax))
-    n = max(1, math.ceil(sweep / step))
+    n = min(MAX_ARC_POINTS, math.ceil(sweep / step)) if step > 0 else MAX_ARC_POINTS  # huge radii: step 0
+    n = max(1, n)
     a0 = math.atan2(s[1] - c[1], s[0] - c[0])
     sign = -1.0 if clockwise else 1.0
     for q in range(1, n):

@@ -7,7 +7,10 @@ then copy it instead of reformatting every number).
 from __future__ import annotations
 
 import functools
+import math
 import re
+
+from .errors import ProgramError
 
 MAX_PLACES = 6
 """Most decimal places any written number carries (0.001 um; finer than any controller's increment)."""
@@ -25,3 +28,42 @@ def canonical_number_re(places: int, leading_zero: bool) -> re.Pattern[str]:
     whole = r"(?:0|[1-9]\d*)" if leading_zero else r"(?:[1-9]\d*)?"
     zero = "0." if leading_zero else r"0\."
     return re.compile(rf"(?!-0\.$)(?!{zero}$)-?{whole}\.{frac}|0\.")
+
+
+EXACT = 5e-7
+"""Half a unit of the ``MAX_PLACES``-th place: the most a written number (mm) may differ from its value."""
+EXACT_INCH = EXACT / 25.4
+"""The same half micrometre in inches (an inch number needs 8 places to stay within it)."""
+
+
+def format_decimal(value: float, places: int, leading_zero: bool = True, exact: float = EXACT) -> str:
+    """A number with an explicit decimal point and no trailing zeros ('50.', '0.5', '-.25').
+
+    Rounds to ``places`` decimals (0 writes whole numbers as '50.'), but never silently: a value that
+    would move by more than ``exact`` (in its own unit: ``EXACT`` for mm, ``EXACT / 25.4`` for inches)
+    keeps as many places as that needs instead. Zero is never negative ('0.', not '-0.'). A
+    non-finite value (a number beyond the float range, or not a number) cannot be written: a
+    ``ProgramError`` (the writer locates it at its block).
+    """
+    if not math.isfinite(value):
+        raise ProgramError(f"cannot write the number {value!r}: it is beyond the range of a float"
+                           if value == value else "cannot write a value that is not a number (nan)")
+    text = f"{value:.{places}f}"
+    if abs(float(text) - value) > exact:
+        text = f"{value:.{max(places, _places_within(exact))}f}"
+    whole, point, frac = text.partition(".")
+    frac = frac.rstrip("0")
+    if whole == "-0" and not frac:
+        whole = "0"
+    if not leading_zero and frac:
+        if whole == "0":
+            whole = ""
+        elif whole == "-0":
+            whole = "-"
+    return f"{whole}.{frac}"
+
+
+@functools.cache
+def _places_within(exact: float) -> int:
+    """Fewest decimal places whose rounding moves a value by at most ``exact`` (6 for ``EXACT``)."""
+    return max(0, math.ceil(-math.log10(2.0 * exact) - 1e-9))

@@ -16,6 +16,8 @@ from .ir import Block
 from .xmlio import XFactory, parse_xml_file
 
 PROGRAM = "Program"
+PROGRAM_MAX_ELEMENTS = 1 << 24
+"""A dumped program may have as many elements as its bytes allow (``MAX_XML_BYTES``); a set-up may not."""
 
 
 def dump_program(blocks: Iterable[Block], out: BinaryIO, *, dialect: str, file: str) -> None:
@@ -53,7 +55,7 @@ def load_program(path: str | Path, factory: XFactory | None = None) -> tuple[str
     if factory is None:
         from .plugins import default_registry  # late: the plugin manager imports the IR
         factory = default_registry().factory
-    root = parse_xml_file(path)
+    root = parse_xml_file(path, max_elements=PROGRAM_MAX_ELEMENTS)
     if root.tag != PROGRAM:
         raise ConfigError(f"expected <{PROGRAM}>, found <{root.tag}>", Location(str(path), root.sourceline or 1, 1))
     blocks = []

@@ -27,7 +27,8 @@ class _Group(BaseModel):
     """A group of parameters stored as the attributes of one element."""
 
     model_config = ConfigDict(alias_generator=_camel, populate_by_name=True, extra="forbid",
-                              validate_assignment=True, frozen=False)
+                              validate_assignment=True, frozen=False, allow_inf_nan=False)
+    """``allow_inf_nan=False``: every float parameter is finite (``nan``/``inf`` are errors)."""
     TAG: ClassVar[str] = ""
 
 

@@ -1,27 +1,31 @@
 """Header and footer templates: jinja2 in a sandbox, with undefined names as errors.
 
 Templates come from configuration files an integrator may not fully trust: the sandbox refuses
-attribute access to internals, and every template error becomes a located ``ConfigError``.
+attribute access to internals, bounds the operators that blow up (``**``, ``*``), and every render runs
+in a child process with bounded memory and time (``postproc.bounded``): whatever a template does
+(``'x'|center(10**9)``, a doubling loop, ``1/0``, ``{% include %}``, a recursive macro), it ends as a
+``ConfigError`` at its line in the set-up file. ``config check`` renders every template with sample
+values, so a template that would fail at translation time fails there first.
 """
 
 from __future__ import annotations
 
-import contextlib
-import signal
-import threading
-from typing import Any, Iterator
+from typing import Any
 
 from jinja2 import StrictUndefined, TemplateError
 from jinja2.exceptions import SecurityError
 from jinja2.sandbox import SandboxedEnvironment
 
+from .bounded import MEMORY_LIMIT, run_bounded
 from .errors import ConfigError, Location
 from .setup import MachineSetup
 
 MAX_OUTPUT = 1 << 20
 MAX_EXPONENT = 256
 TIME_LIMIT = 5.0
-"""Seconds a template may render (enforced with an interval timer in the main thread)."""
+"""Seconds a template may render (the child process is killed after that)."""
+SAMPLE_PROGRAM = "o1001"
+"""The program name ``config check`` renders with (the writer passes the input file's stem)."""
 
 
 class _BoundedSandbox(SandboxedEnvironment):
@@ -43,66 +47,73 @@ class _BoundedSandbox(SandboxedEnvironment):
 _ENV = _BoundedSandbox(undefined=StrictUndefined, autoescape=False, keep_trailing_newline=True)
 
 
-class _TimeLimit(Exception):
-    pass
-
-
-@contextlib.contextmanager
-def _time_limit(seconds: float) -> Iterator[None]:
-    """Stop a runaway template (nested loops) after ``seconds``; only possible in the main thread."""
-    if threading.current_thread() is not threading.main_thread() or not hasattr(signal, "setitimer"):
-        yield
-        return
-
-    def expire(signum: int, frame: Any) -> None:
-        raise _TimeLimit()
-
-    previous = signal.signal(signal.SIGALRM, expire)
-    signal.setitimer(signal.ITIMER_REAL, seconds)
-    try:
-        yield
-    finally:
-        signal.setitimer(signal.ITIMER_REAL, 0)
-        signal.signal(signal.SIGALRM, previous)
-
-
 def render(name: str, text: str, variables: dict[str, Any], source: str | None, first_line: int = 1) -> str:
     """Render one template. ``first_line`` is the line of the set-up file the template text starts on."""
-    try:
-        with _time_limit(TIME_LIMIT):
-            result = _ENV.from_string(text).render(**variables)
-    except TemplateError as exc:
-        raise _located(name, exc, source, first_line) from None
-    except _TimeLimit:
-        raise ConfigError(f"template {name} ran longer than {TIME_LIMIT:g} s", Location(source or "<set-up>", first_line, 1)) from None
-    if len(result) > MAX_OUTPUT:
-        raise ConfigError(f"template {name} renders more than {MAX_OUTPUT} characters",
-                          Location(source or "<set-up>", first_line, 1))
-    if result and not result.endswith("\n"):
-        result += "\n"
-    return result
+    return _render_all(name, text, [variables], source, first_line)[0]
 
 
 def check_templates(setup: MachineSetup) -> None:
-    """Compile the set-up's templates so syntax errors surface at ``config check``."""
+    """Render the set-up's templates with sample values (metric and inch), as ``config check`` does."""
     for name in ("header", "footer"):
         text = getattr(setup.templates, name)
-        if text is None:
-            continue
-        try:
-            _ENV.parse(text)
-        except TemplateError as exc:
-            raise _located(name, exc, setup.source, setup.template_lines.get(name, 1)) from None
+        if text:
+            _render_all(name, text, sample_variables(setup), setup.source, setup.template_lines.get(name, 1))
 
 
-def _located(name: str, exc: TemplateError, source: str | None, first_line: int) -> ConfigError:
-    """A template error at its line in the set-up file (runtime errors carry the line only in the
-    traceback jinja2 rewrites to point into the template)."""
+def sample_variables(setup: MachineSetup) -> list[dict[str, Any]]:
+    """The variables a writer passes (``Writer.render_template``), once per unit system."""
+    dialect = setup.dialect or "unknown"
+    return [{"program": SAMPLE_PROGRAM, "source_dialect": dialect, "machine": setup.name, "units": units}
+            for units in ("mm", "inch")]
+
+
+def _render_all(name: str, text: str, variable_sets: list[dict[str, Any]], source: str | None,
+                first_line: int) -> list[str]:
+    """Render ``text`` once per variable set in one bounded child; the first failure is raised."""
+    where = source or "<set-up>"
+    outcome = run_bounded(lambda: [_render_one(text, v) for v in variable_sets], TIME_LIMIT)
+    if outcome.failure == "time":
+        raise ConfigError(f"template {name} ran longer than {TIME_LIMIT:g} s", Location(where, first_line, 1))
+    if outcome.failure is not None:
+        raise ConfigError(f"template {name} needs more than {MEMORY_LIMIT >> 20} MiB of memory",
+                          Location(where, first_line, 1))
+    results: list[str] = []
+    for each in outcome.value:
+        if "error" in each:
+            raise ConfigError(f"template {name}{each['error']}",
+                              Location(where, first_line + (each["line"] or 1) - 1, 1))
+        results.append(each["text"])
+    return results
+
+
+def _render_one(text: str, variables: dict[str, Any]) -> dict[str, Any]:
+    """In the child: the rendered text, or an error message and its template line (JSON-ready)."""
+    try:
+        result = _ENV.from_string(text).render(**variables)
+    except TemplateError as exc:
+        return {"error": f": {exc.message or exc}", "line": _template_line(exc)}
+    except MemoryError as exc:  # the failed allocation is freed: there is room to say where
+        return {"error": f" needs more than {MEMORY_LIMIT >> 20} MiB of memory", "line": _template_line(exc)}
+    except RecursionError as exc:
+        return {"error": ": recursion too deep", "line": _template_line(exc)}
+    except Exception as exc:  # 1/0, range(10**9), {% include %} without a loader: all the template's fault
+        return {"error": f": {exc or type(exc).__name__}", "line": _template_line(exc)}
+    if len(result) > MAX_OUTPUT:
+        return {"error": f" renders more than {MAX_OUTPUT} characters", "line": None}
+    if result and not result.endswith("\n"):
+        result += "\n"
+    return {"text": result}
+
+
+def _template_line(exc: BaseException) -> int | None:
+    """The template line of an error: syntax errors carry it; runtime errors only in the traceback
+    jinja2 rewrites to point into the template (the innermost template frame wins)."""
     line = getattr(exc, "lineno", None)
+    if isinstance(line, int):
+        return line
     tb = exc.__traceback__
-    while line is None and tb is not None:
+    while tb is not None:
         if tb.tb_frame.f_code.co_filename == "<template>":
             line = tb.tb_lineno
         tb = tb.tb_next
-    return ConfigError(f"template {name}: {exc.message or exc}",
-                       Location(source or "<set-up>", first_line + (line or 1) - 1, 1))
+    return line if isinstance(line, int) else None

@@ -55,7 +55,11 @@ class ToolpathTarget(Dialect):
 
 
 def num(value: float) -> float | int:
-    """A number as written to a toolpath: rounded, integral values as int, never -0."""
+    """A number as written to a toolpath: rounded, integral values as int, never -0, always finite
+    (a value beyond the float range fails at its block, rather than as JSON's invalid ``Infinity``)."""
+    if not math.isfinite(value):
+        raise ProgramError(f"a value beyond the range of a float ({value!r}) cannot be simulated"
+                           if value == value else "a value that is not a number (nan) cannot be simulated")
     r = round(value, PLACES)
     if r == 0:
         return 0

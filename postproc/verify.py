@@ -86,7 +86,8 @@ def _axes(ev: Event) -> dict[str, float]:
 
 
 def _dist(a: dict[str, float], b: dict[str, float]) -> float:
-    return math.sqrt(sum((a[k] - b.get(k, 0.0)) ** 2 for k in a))
+    """Euclidean distance over ``a``'s axes (``math.dist`` scales: no overflow near the float range)."""
+    return math.dist([a[k] for k in a], [b.get(k, 0.0) for k in a])
 
 
 def _plane_point(p: dict[str, float], plane: str) -> tuple[float, float]:
@@ -123,7 +124,7 @@ def _merge(run: Move, m: Move, eps: float) -> bool:
         along_old = sum((run.end[k] - s.get(k, 0.0)) * u[k] for k in u)
         rel = {k: m.end[k] - s.get(k, 0.0) for k in m.end}
         along = sum(rel[k] * u.get(k, 0.0) for k in rel)
-        off = math.sqrt(max(sum(v * v for v in rel.values()) - along * along, 0.0))
+        off = math.hypot(*(rel[k] - along * u.get(k, 0.0) for k in rel))  # distance from the line
         if off > eps or along <= along_old:
             return False
         run.end, run.last_line = m.end, m.last_line
@@ -259,7 +260,7 @@ def _differ(a: Move | Event | None, b: Move | Event | None, report: Report) -> s
     if not _same_feed(a.f, b.f):
         return f"IN feeds at F{a.f:g}, OUT at F{b.f:g} ({describe(a)})"
     keys = set(a.end) & set(b.end)
-    dev = math.sqrt(sum((a.end[k] - b.end[k]) ** 2 for k in keys))
+    dev = math.dist([a.end[k] for k in keys], [b.end[k] for k in keys])
     if a.centre is not None and b.centre is not None:
         dev = max(dev, math.hypot(a.centre[0] - b.centre[0], a.centre[1] - b.centre[1]),
                   abs(a.sweep * a.radius - b.sweep * b.radius))
@@ -277,8 +278,8 @@ def verify_lines(lines_in: Iterable[str], lines_out: Iterable[str], *, file_in: 
                  target_setup: MachineSetup | None = None, tolerance: float = 0.001,
                  registry: Registry | None = None) -> Report:
     """Compare two programs given as lines. Raises ``ErrorList`` with both programs' errors, if any."""
-    if tolerance < 0:
-        raise UsageError(f"the tolerance cannot be negative ({tolerance:g})")
+    if not math.isfinite(tolerance) or tolerance < 0:
+        raise UsageError(f"the tolerance must be a finite number of at least 0, got {tolerance:g}")
     setup = setup or MachineSetup()
     target_setup = target_setup or setup
     diag_in, diag_out = Diagnostics(), Diagnostics()

@@ -23,12 +23,22 @@ _PARSER = etree.XMLParser(
 """No entity resolution, no network, no DTD, no huge trees: hostile XML cannot reach out or blow up."""
 
 MAX_XML_BYTES = 64 * 1024 * 1024
+MAX_ELEMENTS = 10_000
+"""Elements in a configuration file (set-up, pipeline); dumped programs pass their own bound."""
+MAX_ATTRIBUTES = 64
+"""Attributes of one element (no postproc element has a tenth of that): lxml reads attributes in
+quadratic time, so 200,000 of them took minutes before any check could run."""
+MAX_VALUE_CHARS = 1 << 20
+"""Characters of one attribute value or text (a template renders at most as much)."""
 
 T = TypeVar("T", bound="XmlNode")
 
 
-def parse_xml_bytes(data: bytes, file: str) -> etree._Element:
-    """Parse untrusted XML into an element, or raise a located ``ConfigError``."""
+def parse_xml_bytes(data: bytes, file: str, max_elements: int | None = None) -> etree._Element:
+    """Parse untrusted XML into an element, or raise a located ``ConfigError``.
+
+    Bounded: ``MAX_XML_BYTES``, ``max_elements`` (default ``MAX_ELEMENTS``), ``MAX_ATTRIBUTES`` per
+    element and ``MAX_VALUE_CHARS`` per value, so what reads the tree next does bounded work."""
     if len(data) > MAX_XML_BYTES:
         raise ConfigError(f"XML file is larger than {MAX_XML_BYTES} bytes", Location(file, 1, 1))
     try:
@@ -44,7 +54,25 @@ def parse_xml_bytes(data: bytes, file: str) -> etree._Element:
     for el in root.iter():
         if isinstance(el, etree._Entity):
             raise ConfigError("entity references are not allowed", Location(file, el.sourceline or 1, 1))
+    _check_bounds(root, file, MAX_ELEMENTS if max_elements is None else max_elements)
     return root
+
+
+def _check_bounds(root: etree._Element, file: str, max_elements: int) -> None:
+    """One linear pass: element count, attributes per element, length of every value and text."""
+    count = 0
+    for el in root.iter():
+        count += 1
+        if count > max_elements:
+            raise ConfigError(f"more than {max_elements} XML elements", where(el, file))
+        texts = [el.text, el.tail]
+        if isinstance(el.tag, str):
+            attrib = el.attrib
+            if len(attrib) > MAX_ATTRIBUTES:
+                raise ConfigError(f"<{el.tag}> has more than {MAX_ATTRIBUTES} attributes", where(el, file))
+            texts.extend(attrib.values())
+        if any(t is not None and len(t) > MAX_VALUE_CHARS for t in texts):
+            raise ConfigError(f"a value or text longer than {MAX_VALUE_CHARS} characters", where(el, file))
 
 
 _LIBXML_POSITION = re.compile(r", line \d+, column \d+$")
@@ -58,13 +86,14 @@ def _offset_location(data: bytes, offset: int, file: str) -> Location:
     return Location(file, data.count(b"\n", 0, offset) + 1, offset - line_start + 1)
 
 
-def parse_xml_file(path: str | Path) -> etree._Element:
+def parse_xml_file(path: str | Path, max_elements: int | None = None) -> etree._Element:
     p = Path(path)
     try:
-        data = p.read_bytes()
+        with open(p, "rb") as f:
+            data = f.read(MAX_XML_BYTES + 1)  # never more than the bound, whatever the file is
     except OSError as exc:
         raise ConfigError(f"cannot read {p}: {exc.strerror}", Location(str(p), 1, 1)) from None
-    return parse_xml_bytes(data, str(p))
+    return parse_xml_bytes(data, str(p), max_elements)
 
 
 def to_bytes(el: etree._Element) -> bytes:

@@ -190,10 +190,10 @@ def test_f_in_a_block_that_changes_units_is_written_in_the_old_units() -> None:
     except an inverse-time F, which is no length."""
     fanuc = "G21 G90 G94\nG0 X0. Y0. Z0.\nG20 F10. G1 X1.\nG21 F5. G1 X30.\nM2\n"
     text, _ = write(fanuc, "linuxcnc", source="fanuc")
-    assert "G20 G1 X1. F254.\n" in text and "G21 G1 X30. F0.19685\n" in text
+    assert "G20 G1 X1. F254.\n" in text and "G21 G1 X30. F0.19685039\n" in text
     assert [e["f"] for e in events(text) if "move" in e] == [254, pytest.approx(5, abs=1e-4)]
     text, _ = write(UNIT_FEEDS, "fanuc")
-    assert "G20 G01 X1. F0.393701\n" in text and "G21 G01 X30. F127.\n" in text
+    assert "G20 G01 X1. F0.39370079\n" in text and "G21 G01 X30. F127.\n" in text
     text, _ = write("G21 G90 G93\nG0 X0 Y0 Z0\nG20 G1 X1 F10\nM2\n", "linuxcnc", source="grbl")
     assert "G20 G1 X1. F10.\n" in text
 

@@ -8,7 +8,8 @@ import pytest
 
 from postproc.errors import ConfigError
 from postproc.setup import MachineSetup, Templates, load_setup
-from postproc.templates import MAX_OUTPUT, check_templates, render
+from postproc.bounded import MEMORY_LIMIT, _mapped_bytes, run_bounded
+from postproc.templates import MAX_OUTPUT, check_templates, render, sample_variables
 
 ROOT = Path(__file__).resolve().parents[1]
 DECLARATION = "<?xml version='1.0' encoding='UTF-8'?>\n"
@@ -147,3 +148,64 @@ def test_translate_template_errors_point_into_the_setup_file(cli, tmp_path):
     assert result.err.startswith(f"{machine}:5:1: error: template header: ")
     assert "unsafe" in result.err
     assert not (tmp_path / "out.nc").exists()
+
+
+# -- bounded memory and time; every failure located (issue 8) -------------------------------------------
+
+MIB = f" needs more than {MEMORY_LIMIT >> 20} MiB of memory"
+
+
+@pytest.mark.parametrize("text, message, line", [
+    ("(A)\n{{ 'x'|center(10**9) }}", MIB, 5),
+    ("(A)\n{{ '%999999999d' % 1 }}", MIB, 5),
+    ("(A)\n{{ '%-*s' % (10**9, 'x') }}", MIB, 5),
+    ("(A)\n{{ '{:>999999999}'.format(1) }}", MIB, 5),
+    ("(A)\n{{ 'x'|indent(10**9) }}", MIB, 5),
+    ("{% set ns = namespace(s='x') %}\n{% for i in range(40) %}\n{% set ns.s = ns.s ~ ns.s %}\n{% endfor %}", MIB, 6),
+    ("(A)\n{{ range(10**9)|list }}",
+     ": Range too big. The sandbox blocks ranges larger than MAX_RANGE (100000).", 5),
+    ("(A)\n(B)\n{{ 1/0 }}", ": division by zero", 6),
+    ("(A)\n{% include 'other.j2' %}", ": no loader for this environment specified", 5),
+    ("(A)\n{% macro f(n) %}{{ f(n + 1) }}{% endmacro %}\n{{ f(1) }}", ": recursion too deep", 5),
+    ("{{ 'x'|replace('', 'y' * 1000000)|replace('y', 'yy') }}", f" renders more than {MAX_OUTPUT} characters", 4),
+])
+def test_every_template_failure_is_a_located_config_error(text: str, message: str, line: int) -> None:
+    """These escaped as internal errors or took 3-6 GB; now the set-up file's line and a reason."""
+    with pytest.raises(ConfigError) as info:
+        render("header", text, {}, "m.xml", first_line=4)
+    assert str(info.value) == f"m.xml:{line}:1: error: template header{message}"
+
+
+def test_the_render_child_stays_within_its_memory_bound() -> None:
+    """Counted in bytes: the child's peak resident set never exceeds what it inherited plus the bound
+    (``'x'.center(10**9)`` alone needs 1 GB)."""
+    inherited = _mapped_bytes()
+    outcome = run_bounded(lambda: len("x".center(10**9)), seconds=10.0)
+    assert outcome.failure == "memory"
+    assert 0 < outcome.peak_rss <= inherited + MEMORY_LIMIT
+
+
+def test_a_function_that_fits_returns_its_value_from_the_child() -> None:
+    outcome = run_bounded(lambda: {"n": len("x".center(1000)), "s": "\udcff"}, seconds=10.0)
+    assert (outcome.value, outcome.failure) == ({"n": 1000, "s": "\udcff"}, None)
+
+
+@pytest.mark.parametrize("footer, line, message", [
+    ("(A)\n{{ 1/0 }}", 6, "template footer: division by zero"),
+    ("(END {{ nope }})", 5, "template footer: 'nope' is undefined"),
+    ("{% if units == 'inch' %}{{ 1/0 }}{% endif %}", 5, "template footer: division by zero"),
+])
+def test_config_check_renders_the_templates_with_sample_values(cli, tmp_path: Path, footer: str, line: int,
+                                                                message: str) -> None:
+    """``config check`` only parsed the templates and said ok; a render error surfaced at translation."""
+    path = tmp_path / "m.xml"
+    path.write_text(DECLARATION + '<MachineSetup name="m">\n  <Templates>\n    <Header>(OK {{ program }})</Header>\n'
+                    f"    <Footer>{footer}</Footer>\n  </Templates>\n</MachineSetup>\n")
+    result = cli("config", "check", path)
+    assert (result.status, result.err) == (1, f"{path}:{line}:1: error: {message}\n")
+
+
+def test_sample_values_cover_every_variable_the_writer_passes() -> None:
+    names = {"program", "source_dialect", "machine", "units"}
+    assert all(set(v) == names for v in sample_variables(MachineSetup()))
+    assert {v["units"] for v in sample_variables(MachineSetup())} == {"mm", "inch"}

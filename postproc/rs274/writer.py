@@ -15,7 +15,7 @@ from typing import Any, Callable, ClassVar, NoReturn
 from ..errors import Location, UnsupportedError
 from .codes import CodeTable
 from ..ir import Block, CompoundMotion, Motion, Section
-from ..numbers import MAX_PLACES, canonical_number_re
+from ..numbers import EXACT, EXACT_INCH, MAX_PLACES, canonical_number_re, format_decimal
 from ..state import ModalState
 from ..context import Context
 from ..dialect import Dialect, Writer
@@ -65,19 +65,9 @@ class WordWriter(Writer):
         Rounds to the output decimals, but never silently: a value that would move by more than
         half a micrometre (or 0.00002 in) keeps up to ``MAX_PLACES`` places instead.
         """
-        places = self.decimals if self.modal.units == "mm" else self.inch_decimals
-        text = f"{value:.{places}f}"
-        if abs(float(text) - value) > 5e-7:
-            text = f"{value:.{MAX_PLACES}f}"
-        text = text.rstrip("0")
-        if text == "-0.":
-            text = "0."
-        if not self.leading_zero:
-            if text.startswith("0."):
-                text = text[1:] if text != "0." else text
-            elif text.startswith("-0."):
-                text = "-" + text[2:]
-        return text
+        mm = self.modal.units == "mm"
+        places = self.decimals if mm else self.inch_decimals
+        return format_decimal(value, places, self.leading_zero, EXACT if mm else EXACT_INCH)
 
     @staticmethod
     def integer(value: float | int) -> str:
@@ -310,8 +300,7 @@ class WordWriter(Writer):
         return [code, self.DWELL_WORD + self.seconds(s.seconds)]
 
     def seconds(self, value: float) -> str:
-        text = f"{value:.3f}".rstrip("0")
-        return text if self.leading_zero or not text.startswith("0.") else text[1:]
+        return format_decimal(value, 3, self.leading_zero)
 
     def motion_words(self, s: Motion, block: Block) -> list[str]:
         if s.mode is None:

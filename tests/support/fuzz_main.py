@@ -1,0 +1,167 @@
+"""The long-running fuzz target (``make fuzz``; not in CI): the suite's checks on random cases until a
+time budget runs out, every case under a time limit. Prints the case count and each outcome; saves
+every new failure (reduced to a small program) and one example of each known defect to a folder.
+
+    python -m tests.support.fuzz_main [--minutes 10] [--out fuzz-failures] [--case-seconds 5]
+"""
+
+from __future__ import annotations
+
+import argparse
+import contextlib
+import re
+import signal
+import sys
+import time
+from collections import Counter
+from pathlib import Path
+from typing import Callable, Iterator
+
+from hypothesis import HealthCheck, Phase, given, settings
+from hypothesis import strategies as st
+
+from postproc.setup import MachineSetup
+from tests.support.fuzzing import PAIRS, READERS, check_toolpath, check_translation, known_defect, programs, setups
+
+ROUND = 200
+"""Cases per pair and round (a hypothesis run without shrinking; we reduce failures ourselves)."""
+
+
+class CaseTimeout(Exception):
+    pass
+
+
+@contextlib.contextmanager
+def time_limit(seconds: float) -> Iterator[None]:
+    def expire(signum: int, frame: object) -> None:
+        raise CaseTimeout()
+
+    previous = signal.signal(signal.SIGALRM, expire)
+    signal.setitimer(signal.ITIMER_REAL, seconds)
+    try:
+        yield
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, previous)
+
+
+class Fuzzer:
+    def __init__(self, out: Path, case_seconds: float) -> None:
+        self.out = out
+        self.case_seconds = case_seconds
+        self.cases = 0
+        self.outcomes: Counter[str] = Counter()
+        self.saved: set[str] = set()
+
+    def outcome(self, run: Callable[[str], object], program: str, target: str) -> tuple[str, str]:
+        """(kind, message) of one case: 'ok', 'refused', 'known: ...' or 'NEW: ...'."""
+        try:
+            with time_limit(self.case_seconds):
+                result = run(program)
+            return (str(result) if result else "ok"), ""
+        except CaseTimeout:
+            return f"NEW: ran longer than {self.case_seconds:g} s", ""
+        except AssertionError as exc:
+            message = str(exc)
+            known = known_defect(target, message)
+            return (f"known: {known}" if known else "NEW: " + _signature(message)), message
+        except Exception as exc:  # an internal error: exactly what fuzzing is for
+            message = f"{type(exc).__name__}: {exc}"
+            return "NEW: internal error " + _signature(message), message
+
+    def record(self, name: str, run: Callable[[str], object], program: str, target: str, setup: object) -> None:
+        self.cases += 1
+        kind, message = self.outcome(run, program, target)
+        self.outcomes[kind] += 1
+        key = f"{name} {kind}"
+        if kind in ("ok", "refused") or key in self.saved:
+            return
+        self.saved.add(key)
+        small = reduce(program, lambda p: self.outcome(run, p, target)[0] == kind)
+        self.out.mkdir(parents=True, exist_ok=True)
+        path = self.out / f"{len(self.saved):03d}-{name}.txt"
+        path.write_text(f"{name}\n{kind}\nset-up: {setup!r}\n\n--- reduced program ---\n{small}"
+                        f"--- message (original program) ---\n{message}\n--- original program ---\n{program}")
+        print(f"  {kind} [{name}] -> {path}", flush=True)
+
+    def round(self) -> None:
+        for source, target in PAIRS:
+            name = f"{source}-{target}"
+
+            @settings(max_examples=ROUND, deadline=None, database=None, phases=[Phase.generate],
+                      suppress_health_check=list(HealthCheck))
+            @given(program=programs(), setup=setups(), warn=st.booleans())
+            def case(program: str, setup: MachineSetup, warn: bool) -> None:
+                self.record(name, lambda p: check_translation(source, target, p, setup, warn), program, target,
+                            setup)
+
+            case()
+        for dialect in READERS:
+            @settings(max_examples=ROUND // 4, deadline=None, database=None, phases=[Phase.generate],
+                      suppress_health_check=list(HealthCheck))
+            @given(program=programs(), setup=setups())
+            def path_case(program: str, setup: MachineSetup) -> None:
+                self.record(f"toolpath-{dialect}", lambda p: check_toolpath(dialect, p, setup), program, dialect,
+                            setup)
+
+            path_case()
+
+
+def reduce(program: str, fails: Callable[[str], bool], budget: int = 300) -> str:
+    """A smaller program that still fails the same way: drop lines, then words, while it does."""
+    lines = program.splitlines()
+    head, body = lines[:1], lines[1:]
+
+    def text(b: list[str]) -> str:
+        return "\n".join(head + b) + "\n"
+
+    i = 0
+    while i < len(body) and budget > 0:
+        trial = body[:i] + body[i + 1:]
+        budget -= 1
+        if fails(text(trial)):
+            body = trial
+        else:
+            i += 1
+    for i in range(len(body)):
+        words = body[i].split(" ")
+        j = 0
+        while j < len(words) and budget > 0:
+            fewer = words[:j] + words[j + 1:]
+            budget -= 1
+            if fails(text(body[:i] + [" ".join(fewer)] + body[i + 1:])):
+                words = fewer
+            else:
+                j += 1
+        body[i] = " ".join(words)
+    return text(body)
+
+
+def _signature(message: str) -> str:
+    first = message.splitlines()[0] if message else ""
+    return re.sub(r"\d+", "N", first)[:160]
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0] if __doc__ else None)
+    parser.add_argument("--minutes", type=float, default=10.0)
+    parser.add_argument("--out", type=Path, default=Path("fuzz-failures"))
+    parser.add_argument("--case-seconds", type=float, default=5.0)
+    args = parser.parse_args(argv)
+    fuzzer = Fuzzer(args.out, args.case_seconds)
+    end = time.monotonic() + args.minutes * 60
+    rounds = 0
+    while time.monotonic() < end:
+        fuzzer.round()
+        rounds += 1
+        print(f"round {rounds}: {fuzzer.cases} cases", flush=True)
+    print(f"\n{fuzzer.cases} cases in {rounds} rounds")
+    for kind, count in sorted(fuzzer.outcomes.items(), key=lambda kv: (-kv[1], kv[0])):
+        print(f"{count:8d}  {kind}")
+    new = sum(c for k, c in fuzzer.outcomes.items() if k.startswith("NEW"))
+    print(f"\n{new} new failure(s); saved cases in {args.out}/" if fuzzer.saved else "\nno failures")
+    return 1 if new else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
