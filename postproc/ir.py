@@ -15,6 +15,7 @@ from typing import Any, ClassVar, Iterator
 
 from lxml import etree
 
+from .expr import Expr, expr_from_xml
 from .xmlio import DEFAULT, XAttr, XFactory, XmlNode, decode, encode, where
 
 AXES = ("X", "Y", "Z", "A", "B", "C", "U", "V", "W")
@@ -427,7 +428,8 @@ class Block:
     ``text`` is the source line without its end-of-line (``eol``), or None once the block was changed
     and must be generated from its sections. ``words`` are (letter, number text) pairs as written;
     ``values`` the numbers they mean once the reading dialect applied its rules (e.g. Fanuc's decimal
-    point rule), keyed by upper-case letter for every address but G and M.
+    point rule), keyed by upper-case letter for every address but G and M; a computed word's value is
+    its expression (``Expr``, G and M included), serialised as ``<Word kind="expr">`` holding the tree.
     """
 
     XNAME = "Block"
@@ -439,7 +441,7 @@ class Block:
         self.text = text
         self.eol = eol
         self.words = words if words is not None else []
-        self.values: dict[str, float | int] = {}
+        self.values: dict[str, float | int | Expr] = {}
         self.sections: dict[str, Section] = {}
         self.canonical = False
         """A reader's hint: ``text`` is already in canonical spelling (``postproc.numbers``), so a
@@ -476,7 +478,13 @@ class Block:
             if child.tag == "Word":
                 letter, num = child.get("letter", ""), child.get("text", "")
                 block.words.append((letter, num))
-                if "value" in child.attrib:
+                if child.get("kind") == "expr":
+                    kids = [c for c in child if isinstance(c.tag, str)]
+                    if len(kids) != 1:
+                        from .errors import ConfigError
+                        raise ConfigError("<Word kind=\"expr\"> holds exactly one expression", where(child))
+                    block.values[letter.upper()] = expr_from_xml(kids[0])
+                elif "value" in child.attrib:
                     block.values[letter.upper()] = decode(float if child.get("kind") == "float" else int,
                                                           child.get("value", ""))
             else:
@@ -500,6 +508,10 @@ class Block:
             if key in self.values and key not in seen:
                 seen.add(key)
                 v = self.values[key]
+                if isinstance(v, Expr):
+                    w.set("kind", "expr")
+                    w.append(v.make_xml_source(base_dir, rel_file, exhibition_only))
+                    continue
                 w.set("kind", "float" if isinstance(v, float) else "int")
                 w.set("value", encode(v))
         for section in self.sections.values():

@@ -330,7 +330,7 @@ class WordWriter(Writer):
             self.unsupported(f"cutter radius compensation ({s.mode})", block)
         words = self._code("cutter", s.mode, f"cutter compensation {s.mode}", block)
         if s.register is not None:
-            words.append(f"D{int(s.register):02d}")
+            words.append("D" + self.register(s.register, block))
         return words
 
     def tool_length_offset_words(self, s: Any, block: Block) -> list[str]:
@@ -338,8 +338,14 @@ class WordWriter(Writer):
             self.unsupported("a tool length offset from a table", block)
         words = self._code("length", s.mode, f"tool length offset {s.mode}", block)
         if s.register is not None:
-            words.append(f"H{int(s.register):02d}")
+            words.append("H" + self.register(s.register, block))
         return words
+
+    def register(self, value: int | Expr, block: Block) -> str:
+        """An offset register (D, H): two digits at least, or a computed number."""
+        if isinstance(value, Expr):
+            return self.expression(value, block)
+        return f"{int(value):02d}"
 
     def path_control_words(self, s: Any, block: Block) -> list[str]:
         if s.one_shot:
