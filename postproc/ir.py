@@ -16,7 +16,7 @@ from typing import Any, ClassVar, Iterator
 from lxml import etree
 
 from .expr import Expr, expr_from_xml
-from .xmlio import DEFAULT, XAttr, XFactory, XmlNode, decode, encode, where
+from .xmlio import DEFAULT, XAttr, XFactory, XmlNode, computed_value, decode, encode, where
 
 AXES = ("X", "Y", "Z", "A", "B", "C", "U", "V", "W")
 """Axis letters a neutral motion may carry, in output order."""
@@ -338,14 +338,25 @@ class Comments(Section):
         return (tuple(self.texts),)
 
 
-def _axes_from_xml(el: etree._Element) -> dict[str, float]:
-    return {k: float(v) for k, v in el.attrib.items()}
+def _axes_from_xml(el: etree._Element) -> dict[str, Any]:
+    axes: dict[str, Any] = {k: float(v) for k, v in el.attrib.items()}
+    for child in el:
+        if child.tag == "Value":
+            axis = child.get("of", "")
+            axes[axis] = computed_value(el, axis)
+        elif isinstance(child.tag, str):
+            raise ValueError(f"unexpected <{child.tag}>")
+    return axes
 
 
-def _axes_to_xml(parent: etree._Element, tag: str, axes: dict[str, float]) -> None:
+def _axes_to_xml(parent: etree._Element, tag: str, axes: dict[str, Any]) -> None:
+    """Numbers as attributes (``X="1.0"``), computed values as ``<Value of="X">expr</Value>``."""
     child = etree.SubElement(parent, tag)
     for k, v in axes.items():
-        child.set(k, repr(float(v)))
+        if isinstance(v, Expr):
+            etree.SubElement(child, "Value", of=k).append(v.make_xml_source())
+        else:
+            child.set(k, repr(float(v)))
 
 
 class Motion(Section):
@@ -375,16 +386,19 @@ class Motion(Section):
                 axes = _axes_from_xml(c)
             elif c.tag == "Center":
                 center = _axes_from_xml(c)
-            elif isinstance(c.tag, str):
+            elif isinstance(c.tag, str) and c.tag != "Value":
                 raise ValueError(f"unexpected <{c.tag}>")
         r = el.get("radius")
-        return cls(el.get("mode"), axes, center, None if r is None else float(r))
+        radius = computed_value(el, "radius") if r is None else float(r)
+        return cls(el.get("mode"), axes, center, radius)
 
     def make_xml_source(self, base_dir: str = ".", rel_file: str = "", exhibition_only: bool = False) -> etree._Element:
         el = etree.Element(self.XNAME)
         if self.mode is not None:
             el.set("mode", self.mode)
-        if self.radius is not None:
+        if isinstance(self.radius, Expr):
+            etree.SubElement(el, "Value", of="radius").append(self.radius.make_xml_source())
+        elif self.radius is not None:
             el.set("radius", repr(self.radius))
         _axes_to_xml(el, "Axes", self.axes)
         if self.center is not None:
