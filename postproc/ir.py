@@ -15,7 +15,8 @@ from typing import Any, ClassVar, Iterator
 
 from lxml import etree
 
-from .xmlio import DEFAULT, XAttr, XFactory, XmlNode, decode, encode, where
+from .expr import Expr, expr_from_xml
+from .xmlio import DEFAULT, XAttr, XFactory, XmlNode, computed_value, decode, encode, where
 
 AXES = ("X", "Y", "Z", "A", "B", "C", "U", "V", "W")
 """Axis letters a neutral motion may carry, in output order."""
@@ -337,14 +338,25 @@ class Comments(Section):
         return (tuple(self.texts),)
 
 
-def _axes_from_xml(el: etree._Element) -> dict[str, float]:
-    return {k: float(v) for k, v in el.attrib.items()}
+def _axes_from_xml(el: etree._Element) -> dict[str, Any]:
+    axes: dict[str, Any] = {k: float(v) for k, v in el.attrib.items()}
+    for child in el:
+        if child.tag == "Value":
+            axis = child.get("of", "")
+            axes[axis] = computed_value(el, axis)
+        elif isinstance(child.tag, str):
+            raise ValueError(f"unexpected <{child.tag}>")
+    return axes
 
 
-def _axes_to_xml(parent: etree._Element, tag: str, axes: dict[str, float]) -> None:
+def _axes_to_xml(parent: etree._Element, tag: str, axes: dict[str, Any]) -> None:
+    """Numbers as attributes (``X="1.0"``), computed values as ``<Value of="X">expr</Value>``."""
     child = etree.SubElement(parent, tag)
     for k, v in axes.items():
-        child.set(k, repr(float(v)))
+        if isinstance(v, Expr):
+            etree.SubElement(child, "Value", of=k).append(v.make_xml_source())
+        else:
+            child.set(k, repr(float(v)))
 
 
 class Motion(Section):
@@ -374,16 +386,19 @@ class Motion(Section):
                 axes = _axes_from_xml(c)
             elif c.tag == "Center":
                 center = _axes_from_xml(c)
-            elif isinstance(c.tag, str):
+            elif isinstance(c.tag, str) and c.tag != "Value":
                 raise ValueError(f"unexpected <{c.tag}>")
         r = el.get("radius")
-        return cls(el.get("mode"), axes, center, None if r is None else float(r))
+        radius = computed_value(el, "radius") if r is None else float(r)
+        return cls(el.get("mode"), axes, center, radius)
 
     def make_xml_source(self, base_dir: str = ".", rel_file: str = "", exhibition_only: bool = False) -> etree._Element:
         el = etree.Element(self.XNAME)
         if self.mode is not None:
             el.set("mode", self.mode)
-        if self.radius is not None:
+        if isinstance(self.radius, Expr):
+            etree.SubElement(el, "Value", of="radius").append(self.radius.make_xml_source())
+        elif self.radius is not None:
             el.set("radius", repr(self.radius))
         _axes_to_xml(el, "Axes", self.axes)
         if self.center is not None:
@@ -427,7 +442,8 @@ class Block:
     ``text`` is the source line without its end-of-line (``eol``), or None once the block was changed
     and must be generated from its sections. ``words`` are (letter, number text) pairs as written;
     ``values`` the numbers they mean once the reading dialect applied its rules (e.g. Fanuc's decimal
-    point rule), keyed by upper-case letter for every address but G and M.
+    point rule), keyed by upper-case letter for every address but G and M; a computed word's value is
+    its expression (``Expr``, G and M included), serialised as ``<Word kind="expr">`` holding the tree.
     """
 
     XNAME = "Block"
@@ -439,7 +455,7 @@ class Block:
         self.text = text
         self.eol = eol
         self.words = words if words is not None else []
-        self.values: dict[str, float | int] = {}
+        self.values: dict[str, float | int | Expr] = {}
         self.sections: dict[str, Section] = {}
         self.canonical = False
         """A reader's hint: ``text`` is already in canonical spelling (``postproc.numbers``), so a
@@ -476,7 +492,13 @@ class Block:
             if child.tag == "Word":
                 letter, num = child.get("letter", ""), child.get("text", "")
                 block.words.append((letter, num))
-                if "value" in child.attrib:
+                if child.get("kind") == "expr":
+                    kids = [c for c in child if isinstance(c.tag, str)]
+                    if len(kids) != 1:
+                        from .errors import ConfigError
+                        raise ConfigError("<Word kind=\"expr\"> holds exactly one expression", where(child))
+                    block.values[letter.upper()] = expr_from_xml(kids[0])
+                elif "value" in child.attrib:
                     block.values[letter.upper()] = decode(float if child.get("kind") == "float" else int,
                                                           child.get("value", ""))
             else:
@@ -500,6 +522,10 @@ class Block:
             if key in self.values and key not in seen:
                 seen.add(key)
                 v = self.values[key]
+                if isinstance(v, Expr):
+                    w.set("kind", "expr")
+                    w.append(v.make_xml_source(base_dir, rel_file, exhibition_only))
+                    continue
                 w.set("kind", "float" if isinstance(v, float) else "int")
                 w.set("value", encode(v))
         for section in self.sections.values():

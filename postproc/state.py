@@ -13,6 +13,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Any, Callable, Mapping
 
+from .expr import Expr
+
 MM_PER_INCH = 25.4
 
 PLANE_AXES = {"XY": ("X", "Y", "Z"), "ZX": ("Z", "X", "Y"), "YZ": ("Y", "Z", "X")}
@@ -65,6 +67,11 @@ class ModalState:
         self.units = system
 
 
+def _known(value: Any) -> Any:
+    """A number, or None for a computed value (an expression kept symbolically: known only at run time)."""
+    return None if isinstance(value, Expr) else value
+
+
 def _work_offset(state: ModalState, s: Any) -> None:
     """A new work offset moves the origin: the work position is unknown until programmed again."""
     state.work_offset = s.index
@@ -78,12 +85,12 @@ _APPLY: dict[str, Callable[[ModalState, Any], None]] = {
     "Plane": lambda st, s: setattr(st, "plane", s.plane),
     "DistanceMode": lambda st, s: setattr(st, "distance", s.mode),
     "FeedMode": lambda st, s: setattr(st, "feed_mode", s.mode),
-    "Feed": lambda st, s: setattr(st, "feed", s.value),
-    "SpindleSpeed": lambda st, s: setattr(st, "spindle_rpm", s.rpm),
+    "Feed": lambda st, s: setattr(st, "feed", _known(s.value)),
+    "SpindleSpeed": lambda st, s: setattr(st, "spindle_rpm", _known(s.rpm)),
     "SpindleControl": lambda st, s: setattr(st, "spindle", s.direction),
     "ReturnLevel": lambda st, s: setattr(st, "return_level", s.level),
     "WorkOffset": _work_offset,
-    "ToolSelect": lambda st, s: setattr(st, "tool", s.number),
+    "ToolSelect": lambda st, s: setattr(st, "tool", _known(s.number)),
 }
 """How each modal section changes the state; sections not listed change nothing here."""
 

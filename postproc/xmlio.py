@@ -165,6 +165,9 @@ class XAttr:
     def parse(self, el: etree._Element) -> Any:
         raw = el.get(self.xml)
         if raw is None:
+            computed = computed_value(el, self.xml)
+            if computed is not None:
+                return computed
             if self.default is ...:
                 raise ConfigError(f"<{el.tag}> needs attribute {self.xml!r}", where(el))
             return self.default
@@ -175,9 +178,25 @@ class XAttr:
                               f"{self.kind.__name__}", where(el)) from None
 
     def emit(self, el: etree._Element, value: Any) -> None:
+        if isinstance(value, XmlNode):  # a computed value (an expression kept symbolically)
+            etree.SubElement(el, "Value", of=self.xml).append(value.make_xml_source())
+            return
         if value is None or (self.default is not ... and value == self.default):
             return
         el.set(self.xml, encode(value))
+
+
+def computed_value(el: etree._Element, name: str) -> Any:
+    """The expression in ``el``'s child ``<Value of="name">``, or None: how a field that holds a number
+    holds an expression instead (``<Feed><Value of="value"><Var>..</Var></Value></Feed>``)."""
+    for child in el:
+        if child.tag == "Value" and child.get("of") == name:
+            kids = [c for c in child if isinstance(c.tag, str)]
+            if len(kids) != 1:
+                raise ConfigError(f"<Value of=\"{name}\"> holds exactly one expression", where(child))
+            from .expr import expr_from_xml  # late: expressions are XML nodes themselves
+            return expr_from_xml(kids[0])
+    return None
 
 
 def decode(kind: type, raw: str) -> Any:

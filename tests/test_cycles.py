@@ -429,7 +429,7 @@ def test_block_with_cycle_round_trips() -> None:
 
 def test_fanuc_pipeline_resolves_cycles_before_the_modal_state() -> None:
     names = [type(step).XNAME for step in default_registry().dialect("fanuc").pipeline(MachineSetup()).steps]
-    assert names == ["FanucBlockSyntax", "CannedCycleResolveSyntax", "ModalStateSyntax"]
+    assert names == ["FanucProgramSyntax", "FanucBlockSyntax", "CannedCycleResolveSyntax", "ModalStateSyntax"]
 
 
 @pytest.mark.parametrize("xml, message", [

@@ -69,7 +69,9 @@ OWN = [
     ("arc_without_centre", "G02 X10. Y10.", "an arc needs a centre (I/J/K) or a radius R", 1),
     ("arc_with_centre_and_radius", "G02 X10. Y0. I5. R5.", "an arc takes either I/J/K or R, not both", 18),
     ("percent_mid_line", "G00 % X1.", "'%' must stand alone on its line", 5),
-    ("macro_assignment", "#1=2", "macro variables and expressions are not supported by this reader yet", 1),
+    ("loop_number", "END4", "END needs a loop number 1 to 3", 4),
+    ("statement_after_words", "G01 X1. #1=2", "a macro statement must start its block (only N may come before it)",
+     9),
     ("address_e", "G01 X1. E5.", "address E is not used by the Fanuc milling dialect", 9),
     ("address_without_meaning", "G01 X1. Q2.", "address Q has no meaning in this block", 9),
     ("g43_without_h", "G43 Z10.", "G43 needs an offset register H", 1),
@@ -115,14 +117,13 @@ def test_error_column_is_the_offending_word(cli, tmp_path, line, message, col):
 @pytest.mark.parametrize("line", [
     "#1=2", "#100=#1+1", "G01 X#1", "G01 X[#1+2.]", "IF [#1 GT 2] GOTO 10", "WHILE [#1 LT 3] DO 1",
 ])
-def test_macro_constructs_say_they_are_not_supported(cli, tmp_path, line):
+def test_macro_constructs_round_trip(cli, tmp_path, line):
+    """Custom Macro B is read (tests/test_fanuc_macro.py); a program kept symbolically is copied."""
     path = tmp_path / "macro.nc"
     path.write_text(PROLOGUE + line + "\n")
     result = _translate(cli, path)
-    assert result.status == 1
-    [error] = result.err_lines
-    assert error.startswith(f"{path}:3:")
-    assert "not supported" in error
+    assert result.status == 0, result.err
+    assert result.out == path.read_bytes()
 
 
 def test_subprogram_call_is_kept_verbatim(cli, tmp_path):

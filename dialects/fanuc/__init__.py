@@ -12,6 +12,7 @@ from postproc.xmlio import XFactory
 from .codes import CODES
 
 from .block_syntax import FanucBlockSyntax
+from .program import FanucProgramSyntax
 from .reader import FanucReader
 from .writer import FanucWriter
 
@@ -23,7 +24,7 @@ ALL_MILLING_CYCLES = frozenset({
 
 class Fanuc(Dialect):
     NAME = "fanuc"
-    DESCRIPTION = "Fanuc 0i/30i milling (Custom Macro B not yet read)"
+    DESCRIPTION = "Fanuc 0i/30i milling, Custom Macro B and subprograms"
     READER = FanucReader
     WRITER = FanucWriter
     PIPELINE_FILE = "fanuc.xml"
@@ -43,3 +44,4 @@ def postproc_register_dialects(register: Callable[[type], None]) -> None:
 @hookimpl
 def postproc_register_xml(factory: XFactory) -> None:
     FanucBlockSyntax.reg(factory)
+    FanucProgramSyntax.reg(factory)

@@ -1,4 +1,5 @@
-"""Fanuc reader: physical lines -> lexed blocks. Errors are reported per block; the block is kept."""
+"""Fanuc reader: physical lines -> lexed blocks, Custom Macro B statements and calls included. Errors are
+reported per block; the block is kept (as text only)."""
 
 from __future__ import annotations
 
@@ -11,6 +12,8 @@ from postproc.ir import Block, Sequence
 from postproc.numbers import CANONICAL_BLOCK
 
 from postproc.rs274.lexer import WORDS_ONLY, WORD, lex_block
+
+from .macro import read_call
 
 
 class FanucReader(Reader):
@@ -44,10 +47,19 @@ class FanucReader(Reader):
                         block = Block(number, text, eol, words)
                         block.canonical = is_canonical
                         block.sections["Sequence"] = Sequence(int(num))
+                        if "M9" in text or "G6" in text or "m9" in text or "g6" in text:
+                            try:
+                                read_call(block, self.ctx)
+                            except PostprocError as err:
+                                report(err)
+                                block = Block(number, text, eol)
                         yield block
                         continue
             try:
-                yield lex_block(file, number, text, eol)
+                block = lex_block(file, number, text, eol)
+                if "M9" in text or "G6" in text or "m9" in text or "g6" in text:
+                    read_call(block, self.ctx)
+                yield block
             except PostprocError as err:
                 report(err)
                 yield Block(number, text, eol)

@@ -22,7 +22,8 @@ from lxml import etree
 
 from postproc.cycle_words import CycleWords
 from postproc.errors import ConfigError, Location, PostprocError, ProgramError, UnsupportedError
-from postproc.ir import Block, CompoundMotion
+from postproc.expr import Expr
+from postproc.ir import Block, CompoundMotion, NativeCode
 from postproc.state import MM_PER_INCH, PLANE_AXES, CycleState, ModalState
 from postproc.context import Context
 from postproc.syntax import Syntax
@@ -51,6 +52,8 @@ AXIS_LETTERS = frozenset("XYZABCUVW")
 _STATE_KEY = "CannedCycleResolveSyntax"
 """``ctx.state.extra`` key: the plane the active cycle was commanded in."""
 _DWELL_KEY = "CannedCycleResolveSyntax.P"
+_NATIVE_KEY = "CannedCycleResolveSyntax.native"
+"""Set while the active cycle is one with computed words, kept verbatim."""
 """``ctx.state.extra`` key: the last cycle P, which RS274 tapping falls back on even after G80."""
 _SHIFT_AXIS = {"+X": (1.0, 0), "-X": (-1.0, 0), "+Y": (1.0, 1), "-Y": (-1.0, 1)}
 """Set-up shift direction -> sign and plane axis (first/second), Fanuc's parameter table for G17-G19."""
@@ -108,6 +111,10 @@ class CannedCycleResolveSyntax(Syntax):
             return  # the common block: no cycle anywhere (kept first and cheap, it runs on every block)
         call = sections.get("CycleCall")
         if call is not None:
+            if block.values and _computed(block):
+                self._native(block, ctx, call.kind)  # type: ignore[attr-defined]
+                return
+            state.extra.pop(_NATIVE_KEY, None)
             self._resolve_or_drop(block, ctx, call.kind, True)  # type: ignore[attr-defined]
             return
         if state.cycle is None:
@@ -115,13 +122,27 @@ class CannedCycleResolveSyntax(Syntax):
         motion = sections.get("Motion")
         if "CycleCancel" in sections or (motion is not None and motion.mode in GROUP_01):  # type: ignore[attr-defined]
             _cancel(state)
+            state.extra.pop(_NATIVE_KEY, None)
             return
         if motion is not None and motion.mode is not None:  # type: ignore[attr-defined]
             return  # a reference return (group 00) leaves the cycle in force
         if motion is None and ("Dwell" in sections or "NativeCode" in sections):
             return  # G04 (its P is the dwell's) or a verbatim code such as M98 P..: not cycle data
         if any(letter in block.values for letter in self._letters(ctx)):
+            if _NATIVE_KEY in state.extra:
+                self._native(block, ctx, state.cycle.kind)
+                return
             self._resolve_or_drop(block, ctx, state.cycle.kind, False)
+
+    def _native(self, block: Block, ctx: Context, kind: str) -> None:
+        """A cycle with computed words (a program kept symbolically): its holes are known only when the
+        program runs, so the block travels verbatim, and so do the blocks repeating it, until the cycle
+        is cancelled. Executing the program evaluates the words first and never comes here."""
+        for key in ("CycleCall", "Motion", "Feed", "ReturnLevel"):
+            block.sections.pop(key, None)
+        block.add(NativeCode(ctx.dialect, "a canned cycle with computed words", block.text or ""))
+        ctx.state.cycle = CycleState(kind)
+        ctx.state.extra[_NATIVE_KEY] = kind
 
     def _resolve_or_drop(self, block: Block, ctx: Context, kind: str, call: bool) -> None:
         """Resolve; on an error the block's cycle sections go too, so later steps do not report the
@@ -156,7 +177,9 @@ class CannedCycleResolveSyntax(Syntax):
             state.set_units(units.system)  # type: ignore[attr-defined]
         plane = _modal(sections, "Plane", "plane", state.plane)
         letters = self._letters(ctx)
-        words = {k: block.values[k] for k in WORD_ORDER if k in block.values and k in letters}
+        # numbers only: a cycle with computed words went to _native
+        words: dict[str, float | int] = {
+            k: block.values[k] for k in WORD_ORDER if k in block.values and k in letters}  # type: ignore[misc]
         fail = _Failer(ctx, block, words, at_code)
         first, second, normal = PLANE_AXES[plane]
         for letter in words:
@@ -349,6 +372,10 @@ def _modal(sections: dict[str, Any], key: str, attr: str, default: Any) -> Any:
     """This block's own modal word if it has one (it applies before the cycle), else the state's."""
     section = sections.get(key)
     return default if section is None else getattr(section, attr)
+
+
+def _computed(block: Block) -> bool:
+    return any(isinstance(value, Expr) for value in block.values.values())
 
 
 def _cancel(state: ModalState) -> None:

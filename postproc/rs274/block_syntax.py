@@ -5,6 +5,12 @@ unless the set-up says calculator input), K/L repeats per the set-up, G04 P in m
 seconds. It checks modal-group conflicts and duplicate addresses, maps G and M codes to neutral
 sections through ``CODES`` (a ``CodeTable``) and refuses any word that would otherwise be dropped
 without meaning. A dialect subclasses it with its ``XNAME``, ``DIALECT`` and ``CODES``.
+
+Computed words (``X[#1*2.]``: the reader put an ``Expr`` in ``block.values``) reach here only when the
+program is kept symbolically (in execution the interpreter evaluated them first). The sections then
+carry the ``Expr`` as it is: it is in program units already (Fanuc counts a macro value as having a
+decimal point, so the decimal-point rule applies to written numbers only). A computed G or M code
+(``G#10``) has no neutral meaning: its block is kept verbatim as ``NativeCode``.
 """
 
 from __future__ import annotations
@@ -12,6 +18,7 @@ from __future__ import annotations
 from typing import Any, ClassVar
 
 from postproc.errors import ParseError, ProgramError
+from postproc.expr import Binary, Expr, Num
 from postproc.ir import (
     Block, Coolant, CutterCompensation, CycleCall, CycleCancel, DistanceMode, Dwell, Feed, FeedMode,
     MachineCoordinates, Motion, NativeCode, PathControl, Plane, ProgramControl, ReturnLevel,
@@ -49,7 +56,13 @@ class WordBlockSyntax(Syntax):
         words = block.words
         if not words:
             return
-        if ctx.state.cycle is None and self._plain(block, ctx, words):
+        values = block.values
+        if values:
+            if "G" in values or "M" in values:
+                up = "G" if "G" in values else "M"
+                block.add(NativeCode(self.DIALECT, f"a computed {up} code", block.text or ""))
+                return
+        elif ctx.state.cycle is None and self._plain(block, ctx, words):
             return
         codes: dict[str, tuple[str, str, object, str]] = {}
         natives: list[str] = []
@@ -75,11 +88,15 @@ class WordBlockSyntax(Syntax):
         unit = codes.get("06")
         if unit is not None:
             units = unit[2]  # type: ignore[assignment]
-        values = block.values
         cycle_block = "09" in codes and codes["09"][1] == "cycle" or (
             state.cycle is not None and "01" not in codes and "09" not in codes)
         divisor = _divisor(ctx, units)
         for up, num in raw.items():
+            if up in values:
+                if up not in DECIMAL_LETTERS and up not in INTEGER_LETTERS and up not in "FSK":
+                    raise ParseError(f"address {up} is not used by the {self.TITLE} dialect",
+                                     ctx.at(block, ctx.column_of(block, up)))
+                continue  # a computed value: already in program units
             if up in DECIMAL_LETTERS and not (up == "K" and cycle_block):
                 if "." in num:
                     values[up] = float(num)
@@ -107,13 +124,13 @@ class WordBlockSyntax(Syntax):
     def finish_words(self, block: Block, ctx: Context, values: dict[str, Any], used: set[str]) -> None:
         """F, S and T sections, then refuse any word no section took: nothing is dropped silently."""
         if "F" in values:
-            block.add(Feed(float(values["F"])))
+            block.add(Feed(_real(values["F"])))
             used.add("F")
         if "S" in values:
-            block.add(SpindleSpeed(float(values["S"])))
+            block.add(SpindleSpeed(_real(values["S"])))
             used.add("S")
         if "T" in values:
-            block.add(ToolSelect(int(values["T"])))
+            block.add(ToolSelect(_whole(values["T"])))
             used.add("T")
         unused = [k for k in values if k not in used]
         if unused:
@@ -149,7 +166,7 @@ class WordBlockSyntax(Syntax):
                     return False  # the general path explains the error
                 block.sections["Motion"] = Motion(mode, axes)
             if "F" in values:
-                block.sections["Feed"] = Feed(values["F"])
+                block.sections["Feed"] = Feed(values["F"])  # type: ignore[arg-type]  # a number on this path
             return True
         values.clear()
         return False
@@ -181,7 +198,8 @@ class WordBlockSyntax(Syntax):
         what = f"G{key} ({self.CODES.native_g[key]})"
         block.add(NativeCode(self.DIALECT, what, block.text or ""))
         for up, num in raw.items():
-            block.values[up] = float(num) if "." in num else int(num)
+            if up not in block.values:
+                block.values[up] = float(num) if "." in num else int(num)
 
     def g_sections(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],
                     used: set[str], cycle_block: bool) -> None:
@@ -244,7 +262,7 @@ class WordBlockSyntax(Syntax):
             # (ModalStateSyntax leaves the mode alone for machine-coordinate blocks).
             if motion_mode is not None:
                 state.motion = motion_mode
-            block.add(Motion("rapid", {k: float(v) for k, v in axes.items()}))
+            block.add(Motion("rapid", {k: _real(v) for k, v in axes.items()}))
             used.update(axes)
             return
         mode = motion_mode
@@ -263,10 +281,10 @@ class WordBlockSyntax(Syntax):
         center = None
         radius = None
         if mode in ("cw", "ccw"):
-            center = {CENTER_AXIS[k]: float(values[k]) for k in "IJK" if k in values}
+            center = {CENTER_AXIS[k]: _real(values[k]) for k in "IJK" if k in values}
             used.update(k for k in "IJK" if k in values)
             if "R" in values:
-                radius = float(values["R"])
+                radius = _real(values["R"])
                 used.add("R")
                 if center:
                     raise ProgramError("an arc takes either I/J/K or R, not both",
@@ -275,19 +293,21 @@ class WordBlockSyntax(Syntax):
             elif not center:
                 raise ProgramError("an arc needs a centre (I/J/K) or a radius R",
                                    ctx.at(block, _motion_col(block, ctx, codes, axes)))
-        block.add(Motion(mode, {k: float(v) for k, v in axes.items()}, center, radius))
+        block.add(Motion(mode, {k: _real(v) for k, v in axes.items()}, center, radius))
 
     def _dwell(self, block: Block, ctx: Context, values: dict[str, Any], used: set[str], num: str) -> None:
+        seconds: Any
         if "P" in values:
-            seconds = int(values["P"]) / 1000.0
+            p = values["P"]
+            seconds = Binary("div", p, Num(1000.0)) if isinstance(p, Expr) else int(p) / 1000.0
             used.add("P")
         elif "X" in values:
-            seconds = float(values["X"])
+            seconds = _real(values["X"])
             used.add("X")
         else:
             raise ProgramError(f"{self.spell('dwell')} needs a dwell time X (seconds) or P (milliseconds)",
                                ctx.at(block, col_of_word(block, "G", num)))
-        if seconds < 0:
+        if not isinstance(seconds, Expr) and seconds < 0:
             raise ProgramError("a dwell time cannot be negative", ctx.at(block, col_of_word(block, "G", num)))
         block.add(Dwell(seconds))
 
@@ -339,6 +359,16 @@ class WordBlockSyntax(Syntax):
         """An orient code without an angle word: the angle the machine's parameters hold (the set-up's
         ``orientAngle``)."""
         block.add(SpindleOrientation(ctx.setup.cycles.orient_angle))
+
+
+def _real(value: Any) -> Any:
+    """A section's real value: the number as a float, or a computed value (``Expr``) as it is."""
+    return value if isinstance(value, Expr) else float(value)
+
+
+def _whole(value: Any) -> Any:
+    """A section's integer value: the number as an int, or a computed value (``Expr``) as it is."""
+    return value if isinstance(value, Expr) else int(value)
 
 
 def _divisor(ctx: Context, units: str) -> int:

@@ -1,8 +1,15 @@
 """ISO 6983 lexical structure of the RS274 family (Fanuc and its kin): ``%``, O-number (and ISO's
-``:``), block delete ``/n``, N, words, ``( )`` comments and ``;`` as end of block.
+``:``), block delete ``/n``, N, words, ``( )`` comments and ``;`` as end of block; and Custom Macro B:
+a statement after N (``#1=..``, ``IF``, ``GOTO``, ``WHILE``, ``END``) and computed word values
+(``X[#1*2.]``, ``X#1``, ``X-#3``, ``G#10``).
 
 Plain functions and precompiled regexes (as in tomli). The common line - words only, no comment - is
-checked with one full match and split with one ``findall``; columns are computed only for errors.
+checked with one full match and split with one ``findall``; only a line that fails it is scanned by
+hand for macro syntax (linear: each character is looked at a bounded number of times), and columns are
+computed only for errors.
+
+A computed word keeps its text as written in ``block.words`` (``("X", "[#1*2.]")``) and its tree in
+``block.values`` (``values["X"]``); a statement is an ``Assign`` or ``Control`` section and has no words.
 """
 
 from __future__ import annotations
@@ -10,8 +17,12 @@ from __future__ import annotations
 import re
 from typing import Iterable, Iterator
 
+from postproc.control import ASSIGN, CONTROL
 from postproc.errors import Location, ParseError
 from postproc.ir import BlockDelete, Block, Comments, ProgramStart, Sequence, TapeMark
+
+from .expressions import FANUC_SPELLING, ExprSyntaxError, parse_word_value
+from .macro_b import parse_statement_fanuc
 
 NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)"
 WORD = re.compile(r"([A-Za-z])[ \t]*(" + NUMBER + ")")
@@ -39,8 +50,8 @@ def split_lines(lines: Iterable[str]) -> Iterator[tuple[int, str, str]]:
             yield number, raw, ""
 
 
-def lex_block(file: str, number: int, text: str, eol: str) -> Block:
-    """Lex one line into a block with its words and lexical sections."""
+def lex_block(file: str, number: int, text: str, eol: str, macro: bool = True) -> Block:
+    """Lex one line into a block with its words and lexical sections (``macro``: Custom Macro B too)."""
     block = Block(number, text, eol)
     code = text
     if "(" in code or ")" in code:
@@ -63,8 +74,11 @@ def lex_block(file: str, number: int, text: str, eol: str) -> Block:
         if stripped == "%":
             block.add(TapeMark())
             return block
-        raise ParseError(*_explain(file, number, code))
-    words = WORD.findall(code)
+        if not macro:
+            raise ParseError(*_explain(file, number, code))
+        words = _lex_macro(file, block, code)
+    else:
+        words = WORD.findall(code)
     block.words = words
     if words:
         letter, num = words[0]
@@ -76,6 +90,60 @@ def lex_block(file: str, number: int, text: str, eol: str) -> Block:
                                  Location(file, number, code.find(letter) + 1))
             block.add(Sequence(int(num)))
     return block
+
+
+_LETTER = frozenset("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz")
+_STATEMENT_WORDS = ("IF", "GOTO", "WHILE", "END")
+
+
+def _lex_macro(file: str, block: Block, code: str) -> list[tuple[str, str]]:
+    """Scan a line with macro syntax: words (computed or not), then at most one statement, which must
+    come first after N. Anything else is explained as on a plain line."""
+    words: list[tuple[str, str]] = []
+    n = len(code)
+    pos = 0
+    try:
+        while pos < n:
+            c = code[pos]
+            if c == " " or c == "\t":
+                pos += 1
+                continue
+            if c == ";" and not code[pos + 1:].strip():
+                break
+            statement = c == "#" or (c in _LETTER and pos + 1 < n and code[pos + 1] in _LETTER)
+            if statement:
+                if c != "#" and not any(code.startswith(w, pos) or code[pos:pos + len(w)].upper() == w
+                                        for w in _STATEMENT_WORDS):
+                    raise ParseError(*_explain(file, block.line, code, pos))
+                if any(letter.upper() != "N" for letter, _ in words):
+                    raise ParseError("a macro statement must start its block (only N may come before it)",
+                                     Location(file, block.line, pos + 1))
+                end = code.rfind(";") if code.rstrip().endswith(";") else n
+                section = parse_statement_fanuc(code[:end], pos)
+                block.add(section)
+                return words
+            if c in _LETTER:
+                p = pos + 1
+                while p < n and code[p] in " \t":
+                    p += 1
+                if p < n and (code[p] in "#[" or code[p] in "+-" and code[p + 1:p + 2] in ("#", "[")):
+                    end, value = parse_word_value(code, p, FANUC_SPELLING)
+                    words.append((c, code[p:end]))
+                    if c.upper() in block.values:
+                        raise ParseError(f"address {c.upper()} appears twice in one block",
+                                         Location(file, block.line, pos + 1))
+                    block.values[c.upper()] = value
+                    pos = end
+                    continue
+                m = WORD.match(code, pos)
+                if m is not None and (m.end() >= n or code[m.end()] not in ".#["):
+                    words.append((m.group(1), m.group(2)))
+                    pos = m.end()
+                    continue
+            raise ParseError(*_explain(file, block.line, code, pos))
+    except ExprSyntaxError as err:
+        raise err.at(file, block.line) from None
+    return words
 
 
 def _take_comments(file: str, block: Block, code: str) -> str:
@@ -101,9 +169,8 @@ def _take_comments(file: str, block: Block, code: str) -> str:
     return "".join(out)
 
 
-def _explain(file: str, line: int, code: str) -> tuple[str, Location]:
-    """Find what makes a line malformed (slow path, only on error)."""
-    pos = 0
+def _explain(file: str, line: int, code: str, pos: int = 0) -> tuple[str, Location]:
+    """Find what makes a line malformed, from ``pos`` on (slow path, only on error)."""
     n = len(code)
     while pos < n:
         ch = code[pos]
@@ -112,7 +179,7 @@ def _explain(file: str, line: int, code: str) -> tuple[str, Location]:
             continue
         if ch == ";" and not code[pos + 1:].strip():
             break
-        if ch == "#" or ch == "[" or code[pos:pos + 2].upper() in ("IF", "WH", "GO") and not WORD.match(code, pos):
+        if ch == "#" or ch == "[" or code[pos:pos + 2].upper() in ("IF", "WH", "GO", "EN") and not WORD.match(code, pos):
             return ("macro variables and expressions are not supported by this reader yet",
                     Location(file, line, pos + 1))
         if ch.isascii() and ch.isalpha():

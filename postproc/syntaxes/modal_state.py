@@ -3,11 +3,13 @@
 Runs after a dialect's block syntax and the cycle resolution: it applies each block's modal sections
 to ``ctx.state`` (``ModalState.apply``, the one place that says how a section changes the modal state,
 shared with the writer and the simulator) and tracks the position, so later steps (cycle expansion, lowering) know where the
-tool is. A position becomes unknown (None) after moves the IR cannot place, such as a reference return.
+tool is. A position becomes unknown (None) after moves the IR cannot place, such as a reference return
+or a computed coordinate (a program kept symbolically).
 """
 
 from __future__ import annotations
 
+from postproc.expr import Expr
 from postproc.ir import Block, Motion
 from postproc.context import Context
 from postproc.syntax import Syntax
@@ -42,7 +44,10 @@ class ModalStateSyntax(Syntax):
             return
         if state.distance != "incremental":
             pos.update(motion.axes)
-            return
+        else:
+            for axis, value in motion.axes.items():
+                old = pos.get(axis)
+                pos[axis] = None if old is None or isinstance(value, Expr) else old + value
         for axis, value in motion.axes.items():
-            old = pos.get(axis)
-            pos[axis] = None if old is None else old + value
+            if isinstance(value, Expr):
+                pos[axis] = None  # computed: known only when the program runs

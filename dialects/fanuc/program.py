@@ -1,0 +1,34 @@
+"""FanucProgramSyntax: the interpreter step with Fanuc's data (Custom Macro B, M98/G65 subprograms).
+
+Integer addresses are written without a point when evaluated (``G#10`` -> ``G81``, ``M98 P#1``); the
+program ends at M02/M30 (an ``O`` number after it starts a subprogram); G65 sets locals #1-#33;
+a subprogram ``O2000`` not in the file is looked for in the set-up's and ``--lib`` folders as
+``O2000``, ``O2000.nc``, ``2000.nc`` and ``2000``, in that order.
+"""
+
+from __future__ import annotations
+
+from typing import ClassVar, Iterable, Iterator
+
+from postproc.context import Context
+from postproc.ir import Block
+
+from postproc.interp import FanucVariables, ProgramSyntax
+from postproc.interp.variables import NgcVariables
+
+
+class FanucProgramSyntax(ProgramSyntax):
+    XNAME = "FanucProgramSyntax"
+    __slots__ = ()
+
+    INTEGER_ADDRESSES: ClassVar[frozenset[str]] = frozenset("GMNOTHDLP")
+    END_CODES: ClassVar[frozenset[tuple[str, int]]] = frozenset({("M", 30), ("M", 2)})
+    MACRO_LOCALS: ClassVar[int] = 33
+    VARIABLES: ClassVar[type[FanucVariables] | type[NgcVariables]] = FanucVariables
+    LIBRARY_FILES: ClassVar[tuple[str, ...]] = ("O{number:04d}", "O{number:04d}.nc", "{name}.nc", "{name}")
+    PROGRAM_LABEL: ClassVar[str] = "O{number:04d}"
+
+    def process(self, blocks: Iterable[Block], ctx: Context) -> Iterator[Block]:
+        """Decide keep or execute when the first block is pulled, not when the pipeline is built:
+        ``toolpath`` sets ``ctx.program_mode`` after ``read_blocks`` assembled the pipeline."""
+        yield from super().process(blocks, ctx)
