@@ -12,8 +12,11 @@ from __future__ import annotations
 
 from typing import Any, Callable, ClassVar, NoReturn
 
+from ..control import ASSIGN, CONTROL
 from ..errors import Location, UnsupportedError
+from ..expr import Expr
 from .codes import CodeTable
+from .expressions import ExprSpelling, spell_word_value
 from ..ir import Block, CompoundMotion, Motion, Section
 from ..numbers import MAX_PLACES, canonical_number_re
 from ..state import ModalState
@@ -22,7 +25,7 @@ from ..dialect import Dialect, Writer
 
 
 SECTION_ORDER = (
-    "BlockDelete", "Sequence", "MachineCoordinates", "PathControl", "Plane", "Units", "DistanceMode",
+    "BlockDelete", "Sequence", "Assign", "Control", "MachineCoordinates", "PathControl", "Plane", "Units", "DistanceMode",
     "WorkOffset", "FeedMode", "CutterCompensation", "ToolLengthOffset", "ReturnLevel", "CycleCancel",
     "Dwell", "Motion", "CannedCycle", "Feed", "SpindleSpeed", "ToolSelect", "ToolChange", "SpindleControl",
     "SpindleOrientation", "Coolant", "ProgramControl", "NativeCode", "Comments",
@@ -43,6 +46,9 @@ class WordWriter(Writer):
     IGNORED: ClassVar[frozenset[str]] = frozenset()
     """Sections that annotate a block and produce no words of their own."""
     TRANSFORMS: ClassVar[dict[str, Callable[["WordWriter", Any, Block], list[str]]]] = {}
+    SPELLING: ClassVar[ExprSpelling | None] = None
+    """How the dialect writes an expression in a word (``X[#1*2.]``); None: it has no expressions, and a
+    computed word is an ``UnsupportedError`` naming it."""
 
     def __init__(self, ctx: Context, source_dialect: str, target: type[Dialect] | None = None) -> None:
         super().__init__(ctx, source_dialect, target)
@@ -83,6 +89,29 @@ class WordWriter(Writer):
     def integer(value: float | int) -> str:
         return str(int(value))
 
+    def expression(self, expr: Expr, block: Block, what: str = "a computed word") -> str:
+        """A word value that is an expression, in the dialect's ``SPELLING`` (``#1``, ``[#1*2.]``)."""
+        if self.SPELLING is None:
+            self.unsupported(f"{what} (no variables or expressions)", block)
+        try:
+            return spell_word_value(expr, self.SPELLING)
+        except UnsupportedError as err:
+            if err.location is None:
+                err.located(self.ctx.at(block))
+            raise
+
+    def length(self, value: float | Expr, block: Block) -> str:
+        """A length, feed or other real word value: a number, or an expression kept symbolically."""
+        if isinstance(value, Expr):
+            return self.expression(value, block)
+        return self.number(value)
+
+    def whole(self, value: float | int | Expr, block: Block) -> str:
+        """An integer word value (T, P, L...): a number, or an expression kept symbolically."""
+        if isinstance(value, Expr):
+            return self.expression(value, block)
+        return str(int(value))
+
     # -- blocks ------------------------------------------------------------------------------------
     def write_block(self, block: Block) -> str | None:
         sections = block.sections
@@ -121,13 +150,18 @@ class WordWriter(Writer):
             if up == "N" and renumber:
                 continue
             value = values.get(up)
-            if value.__class__ is float and not canonical(num):
+            if value.__class__ is float and not canonical(num):  # an expression keeps its text
                 parts.append(up + number(value))
             else:
                 parts.append(up + num)
         if renumber and block.words and "ProgramStart" not in sections:
             parts.insert(1 if skip is not None else 0, f"N{renumber}")
             self.renumber = renumber + self.renumber_step
+        if ASSIGN in sections or CONTROL in sections:
+            at = 1 if skip is not None else 0
+            if len(parts) > at and parts[at][:1] == "N":
+                at += 1
+            parts[at:at] = self.statements(block)
         comments = sections.get("Comments")
         if comments is not None:
             parts.extend(self.comment(t) for t in comments.texts)  # type: ignore[attr-defined]
@@ -161,6 +195,8 @@ class WordWriter(Writer):
         return " ".join(w for w in words if w) + (block.eol or "\n")
 
     def section_words(self, key: str, section: Section, block: Block) -> list[str]:
+        if key == ASSIGN or key == CONTROL:
+            return self.statement_words(section, block)
         transform = self.TRANSFORMS.get(key)
         if transform is not None:
             return transform(self, section, block)
@@ -168,6 +204,21 @@ class WordWriter(Writer):
         if method is None:
             self.unsupported(key, block)
         return method(section, block)  # type: ignore[no-any-return]
+
+    def statements(self, block: Block) -> list[str]:
+        """The words of a block's assignment and control statement (the reader keeps them out of
+        ``block.words``: the sections hold them)."""
+        words: list[str] = []
+        for key in (ASSIGN, CONTROL):
+            section = block.sections.get(key)
+            if section is not None:
+                words.extend(self.statement_words(section, block))
+        return words
+
+    def statement_words(self, section: Section, block: Block) -> list[str]:
+        """An assignment or control statement (``#1=2.``, ``WHILE [..] DO1``, a call) in the dialect's
+        spelling; a dialect with variables and control flow overrides this. The base has none."""
+        self.unsupported(_statement_name(section), block)
 
     def unsupported(self, what: str, block: Block) -> NoReturn:
         raise UnsupportedError(f"the {self.DIALECT} dialect cannot express {what}",
@@ -305,6 +356,10 @@ class WordWriter(Writer):
         code = self.code("dwell", None, "a dwell", block)
         if not self.DWELL_WORD:
             self.unsupported("a dwell", block)
+        if isinstance(s.seconds, Expr):
+            if self.target is not None and self.target.DWELL_UNIT == "milliseconds":
+                self.unsupported("a computed dwell time in milliseconds", block)
+            return [code, self.DWELL_WORD + self.expression(s.seconds, block)]
         if self.target is not None and self.target.DWELL_UNIT == "milliseconds":
             return [code, f"{self.DWELL_WORD}{round(s.seconds * 1000)}"]
         return [code, self.DWELL_WORD + self.seconds(s.seconds)]
@@ -317,14 +372,15 @@ class WordWriter(Writer):
         if s.mode is None:
             self.unsupported("a canned-cycle repetition without its cycle", block)
         words = self._code(_MOTION_KIND.get(s.mode, "motion"), s.mode, f"{s.mode} motion", block)
+        length = self.length
         for axis, value in s.axes.items():
-            words.append(axis + self.number(value))
+            words.append(axis + length(value, block))
         if s.center is not None:
             for axis, letter in (("X", "I"), ("Y", "J"), ("Z", "K")):
                 if axis in s.center:
-                    words.append(letter + self.number(s.center[axis]))
+                    words.append(letter + length(s.center[axis], block))
         if s.radius is not None:
-            words.append("R" + self.number(s.radius))
+            words.append("R" + length(s.radius, block))
         return words
 
     def canned_cycle_words(self, s: Any, block: Block) -> list[str]:
@@ -334,19 +390,25 @@ class WordWriter(Writer):
         if s.call:
             words.extend(self._code("cycle", s.kind, f"the {s.kind.replace('_', ' ')} cycle", block))
         for letter, value in s.words.items():
-            words.append(letter + (str(value) if isinstance(value, int) else self.number(value)))
+            words.append(letter + (str(value) if isinstance(value, int) else self.length(value, block)))
         return words
 
     def feed_words(self, s: Any, block: Block) -> list[str]:
-        self.modal.feed = s.value
-        return ["F" + self.number(s.value)]
+        value = s.value
+        if isinstance(value, Expr):
+            self.modal.feed = None  # known only when the program runs
+            return ["F" + self.expression(value, block)]
+        self.modal.feed = value
+        return ["F" + self.number(value)]
 
     def spindle_speed_words(self, s: Any, block: Block) -> list[str]:
         rpm = s.rpm
+        if isinstance(rpm, Expr):
+            return ["S" + self.expression(rpm, block)]
         return ["S" + (str(int(rpm)) if float(rpm).is_integer() else self.number(rpm))]
 
     def tool_select_words(self, s: Any, block: Block) -> list[str]:
-        return [f"T{s.number}"]
+        return ["T" + self.whole(s.number, block)]
 
     def tool_change_words(self, s: Any, block: Block) -> list[str]:
         if not self.capable("TOOL_CHANGER"):
@@ -381,6 +443,22 @@ class WordWriter(Writer):
 _MOTION_KIND = {"home": "home", "home2": "home"}
 """Motion modes the table spells under another kind than "motion" (reference returns)."""
 _UPPER = {c: c.upper() for c in "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz:"}
+
+
+_STATEMENTS = {
+    "Assign": "variable assignments", "Goto": "GOTO jumps", "IfThen": "conditional assignments",
+    "If": "IF conditions", "ElseIf": "IF conditions", "Else": "IF conditions", "EndIf": "IF conditions",
+    "While": "WHILE loops", "EndWhile": "WHILE loops", "Do": "DO loops", "DoWhile": "DO loops",
+    "Repeat": "REPEAT loops", "EndRepeat": "REPEAT loops", "Break": "loop breaks", "Continue": "loop continues",
+    "SubStart": "subprogram definitions", "SubEnd": "subprogram definitions", "Return": "subprogram returns",
+    "Call": "subprogram calls", "ModalCall": "modal macro calls", "ModalCallCancel": "modal macro calls",
+}
+"""How messages name each statement ("the grbl dialect cannot express WHILE loops")."""
+
+
+def _statement_name(section: Section) -> str:
+    name = type(section).__name__
+    return _STATEMENTS.get(name, name)
 
 
 def _snake(key: str) -> str:
