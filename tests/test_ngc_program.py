@@ -291,3 +291,13 @@ def test_generated_expressions_round_trip_through_reader_and_writer(expr: Expr) 
         assert block.values["X"] == expr
         assert block.words[-1] == ("X", value)
     assert normalised(f"#1={value}\n") == f"#1={value}\n"
+
+
+def test_a_taken_branch_skips_the_later_branches() -> None:
+    """Found by the random differential: after a branch runs, its elseif and else do not."""
+    text = ("G21 G0 X0 Y0 Z0\n#1=1\no1 if [#1 EQ 1]\nG0 X1\no1 elseif [#1 EQ 1]\nG0 X2\no1 else\nG0 X3\no1 endif\n"
+            "o2 if [#1 EQ 0]\nG0 Y1\no2 elseif [#1 EQ 1]\nG0 Y2\no2 else\nG0 Y3\no2 endif\n"
+            "o3 if [0]\nG0 Z1\no3 else\nG0 Z3\no3 endif\nM30\n")
+    moves = [(e["x"], e["y"], e["z"]) for e in toolpath_events(io.StringIO(text), file="t.ngc", dialect="linuxcnc")
+             if "move" in e]
+    assert moves == [(0, 0, 0), (1, 0, 0), (1, 2, 0), (1, 2, 3)]
