@@ -314,7 +314,7 @@ class Interpreter:
                 if isinstance(member, EndIf):
                     frame.pc = at
                     break
-                if isinstance(member, Else) or _true(evaluate(member.cond, vars_)):  # type: ignore[attr-defined]
+                if isinstance(member, Else) or _true(evaluate(member.cond, vars_)):
                     frame.pc = at + 1
                     break
         elif isinstance(control, (ElseIf, Else)):
