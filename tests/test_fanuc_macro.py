@@ -104,17 +104,35 @@ def test_negated_variable_word_is_a_negation() -> None:
     assert repr(block.values["X"]) == "Unary('neg', Var(Num(3.0)))"
 
 
-def test_computed_g_code_is_kept_verbatim() -> None:
+def test_computed_g_code_is_kept_verbatim_and_flattened_for_another_dialect() -> None:
     block = _read("G#10 X1.")[-1]
     assert block.get("NativeCode").what == "a computed G code"
-    with pytest.raises(ErrorList, match="a computed G code from fanuc has no equivalent in linuxcnc"):
-        translate(io.StringIO(HEAD + "G#10 X1.\n"), io.StringIO(), file="t.nc", source="fanuc", target="linuxcnc")
+    out = io.StringIO()
+    diagnostics = translate(io.StringIO(HEAD + "G#10 X1.\n"), out, file="t.nc", source="fanuc", target="linuxcnc")
+    assert [str(w) for w in diagnostics.warnings] == [
+        "t.nc:2:1: warning: the program is flattened (its evaluated motion is written): line 2: a computed G "
+        "code from fanuc has no equivalent in linuxcnc"]
+    # #10 is vacant: the G word is omitted (Fanuc's rule), the move stays in G00
+    assert out.getvalue() == "G21 G90 G0 X0. Y0. Z0.\nG0 X1.\n"
 
 
-def test_the_grbl_writer_refuses_statements_naming_them() -> None:
-    with pytest.raises(ErrorList, match="t.nc:2:1: error: the grbl dialect cannot express WHILE loops"):
-        translate(io.StringIO(HEAD + "WHILE [#1 LT 3] DO1\nEND1\n"), io.StringIO(), file="t.nc", source="fanuc",
-                  target="grbl")
+LOOP = "#1=0\nWHILE [#1 LT 3] DO1\nG01 X#1 F100.\n#1=#1+1\nEND1\nM30\n"
+
+
+def test_a_loop_reaches_grbl_flattened_with_a_comment_per_iteration() -> None:
+    out = io.StringIO()
+    translate(io.StringIO(HEAD + LOOP), out, file="t.nc", source="fanuc", target="grbl")
+    lines = out.getvalue().splitlines()
+    assert [line for line in lines if not line.startswith("(")] == [
+        "G21 G90 G0 X0. Y0. Z0.", "G1 X0. F100.", "G1 X1. F100.", "G1 X2. F100.", "M30"]
+    assert sum(line.startswith("(LINE 3: WHILE [#1 LT 3] DO1") for line in lines) == 3
+
+
+def test_a_loop_reaches_linuxcnc_as_a_loop() -> None:
+    out = io.StringIO()
+    translate(io.StringIO(HEAD + LOOP), out, file="t.nc", source="fanuc", target="linuxcnc")
+    assert out.getvalue() == ("G21 G90 G0 X0. Y0. Z0.\n#1=0.\no1 while [#1 LT 3.]\nG1 X#1 F100.\n"
+                              "#1=[#1+1.]\no1 endwhile\nM30\n")
 
 
 # -- round trips ---------------------------------------------------------------------------------

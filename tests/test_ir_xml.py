@@ -144,7 +144,8 @@ SAMPLES: dict[str, list[tuple[Builder, str]]] = {
     "Func": [(lambda c: Func("atan2", [Num(1.0), Num(2.0)]),
               '<Func name="atan2">\n  <Num value="1.0"/>\n  <Num value="2.0"/>\n</Func>')],
     **{name: _empty(name) for name in (
-        "FanucBlockSyntax", "FanucProgramSyntax", "ModalStateSyntax", "GrblBlockSyntax", "NgcBlockSyntax", "DrillingSyntax",
+        "FanucBlockSyntax", "FanucProgramSyntax", "ModalStateSyntax", "GrblBlockSyntax", "NgcBlockSyntax",
+        "LinuxcncProgramSyntax", "DrillingSyntax",
         "PeckDrillingSyntax", "TappingSyntax", "BoringSyntax", "FineBoringSyntax", "BackBoringSyntax",
         "ManualBoringSyntax",
     )},

@@ -76,8 +76,8 @@ def test_pipeline_xml_loads_and_writes_back_identically() -> None:
     default_registry()
     pipeline = load_pipeline(path)
     assert [type(s).__name__ for s in pipeline.steps] == [
-        "NgcBlockSyntax", "CannedCycleResolveSyntax", "ModalStateSyntax"]
-    assert pipeline.steps[1].semantics == "rs274"  # type: ignore[attr-defined]
+        "LinuxcncProgramSyntax", "NgcBlockSyntax", "CannedCycleResolveSyntax", "ModalStateSyntax"]
+    assert pipeline.steps[2].semantics == "rs274"  # type: ignore[attr-defined]
     assert to_bytes(pipeline.make_xml_source()) == to_bytes(etree.fromstring(path.read_bytes()))
 
 
@@ -137,10 +137,15 @@ def test_a_long_line_is_lexed_in_linear_time() -> None:
     ("G0 X 1 - 2", "t.ngc:1:8: error: number without an address at '-'"),
     ("G0 X1 (a (b) c)", "t.ngc:1:10: error: nested comment: '(' inside a comment"),
     ("G0 X1 (open", "t.ngc:1:7: error: unclosed comment"),
-    ("o100 sub", "t.ngc:1:1: error: O-words (subprograms, loops, conditions) are not supported by the linuxcnc reader"),
-    ("N10 O100", "t.ngc:1:5: error: O-words (subprograms, loops, conditions) are not supported by the linuxcnc reader"),
-    ("G0 X#1", "t.ngc:1:5: error: parameters (#) are not supported by the linuxcnc reader"),
-    ("G0 X[1+2]", "t.ngc:1:5: error: expressions ([...]) are not supported by the linuxcnc reader"),
+    ("o100 foo", "t.ngc:1:6: error: unknown o-word command 'foo'"),
+    ("N10 O100", "t.ngc:1:5: error: a bare o-word (a subprogram ended by a return code) is not read: "
+                 "write o100 sub .. o100 endsub"),
+    ("G0 X1 o100 sub", "t.ngc:1:7: error: an o-word opens its line (only '/' and N may come before it)"),
+    ("G0 X#", "t.ngc:1:6: error: variable number expected after '#'"),
+    ("G0 X[1+2", "t.ngc:1:9: error: ']' expected"),
+    ("G0 X1+#2", "t.ngc:1:6: error: number without an address at '+#2'"),
+    ("#1=1+2", "t.ngc:1:5: error: LinuxCNC reads one value after '=': bracket an expression, #1=[#2+1]"),
+    ("G0 X FOO[1]", "t.ngc:1:4: error: address X needs a value"),
     ("G0 X", "t.ngc:1:4: error: address X needs a value"),
     ("G0 X1 %", "t.ngc:1:7: error: '%' must stand alone on its line"),
 ])

@@ -307,12 +307,18 @@ class Interpreter:
                 frame.pc = program.pairs[head]  # the end of a do or repeat loop: its test runs next
         elif isinstance(control, Break):
             frame.pc = program.pairs[program.pairs[pos]] + 1
-        elif isinstance(control, (If, ElseIf, Else)):
+        elif isinstance(control, If):
             chain = program.chains[pos]
-            if isinstance(control, Else) or _true(evaluate(control.cond, vars_)):
-                frame.pc += 1
-            else:
-                frame.pc = chain[chain.index(pos) + 1]
+            for at in chain:  # the first branch whose condition holds (or the else) runs
+                member = program.blocks[at].get(CONTROL)
+                if isinstance(member, EndIf):
+                    frame.pc = at
+                    break
+                if isinstance(member, Else) or _true(evaluate(member.cond, vars_)):
+                    frame.pc = at + 1
+                    break
+        elif isinstance(control, (ElseIf, Else)):
+            frame.pc = program.chains[pos][-1]  # the end of a branch that ran: on to the endif
         elif isinstance(control, EndIf):
             frame.pc += 1
         elif isinstance(control, SubStart):

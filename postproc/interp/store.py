@@ -98,7 +98,7 @@ class Program:
         elif kind in (ElseIf, Else, EndIf):
             _, at = self._close(stack, If, control.label, block, pop=kind is EndIf)  # type: ignore[attr-defined]
             chain = self.chains[at]
-            if chain and isinstance(self.blocks[chain[-1]].get(CONTROL), Else):
+            if kind is not EndIf and isinstance(self.blocks[chain[-1]].get(CONTROL), Else):
                 raise self._error(block, f"'{source_text(block)}' after the else branch")
             chain.append(pos)
             self.chains[pos] = chain

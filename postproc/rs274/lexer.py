@@ -83,9 +83,12 @@ def lex_block(file: str, number: int, text: str, eol: str, macro: bool = True) -
     if words:
         letter, num = words[0]
         if letter in "Oo" and "." not in num:
+            if not (num.isascii() and num.isdigit()):
+                raise ParseError(f"a program number is a constant, not O{num}",
+                                 Location(file, number, code.find(letter) + 1))
             block.add(ProgramStart(int(num), None))
         elif letter in "Nn":
-            if "." in num or num[0] in "+-":
+            if not (num.isascii() and num.isdigit()):
                 raise ParseError(f"block number N{num} must be a whole number",
                                  Location(file, number, code.find(letter) + 1))
             block.add(Sequence(int(num)))

@@ -12,7 +12,12 @@ modal sections, motion, arcs, modal cycle repetition) and replaces what RS274/NG
   LinuxCNC sets the feed rate before it changes units (its order of execution; rs274 prints
   ``SET_FEED_RATE`` before ``USE_LENGTH_UNITS``), so the neutral Feed, in the block's units, is converted;
 * codes in the table's ``native_g``/``native_m``/``user_m`` are kept verbatim, tagged with ``DIALECT``;
-  codes in its ``refused_g``/``refused_m`` are refused with a located error; any other M code is an error.
+  codes in its ``refused_g``/``refused_m`` are refused with a located error; any other M code is an error;
+* a word whose value the reader left as an expression (``X[#1*2]``: an ``Expr`` in ``block.values``,
+  a program kept symbolically) carries that ``Expr`` into its section (``Motion.axes``, ``Feed``,
+  ``Dwell``, ...); checks that need the number (a cycle's ``L``, a dwell's sign) wait for the program
+  to run. A computed G or M code (``G#10``) leaves the meaning of the whole block to run time: the
+  block is kept as ``NativeCode``. Executed programs reach this step with numbers only.
 """
 
 from __future__ import annotations
@@ -21,6 +26,7 @@ from typing import Any, ClassVar
 
 from postproc.context import Context
 from postproc.errors import ParseError, ProgramError
+from postproc.expr import Binary, Expr, Num
 from postproc.ir import Block, Dwell, NativeCode, SpindleOrientation
 from postproc.state import MM_PER_INCH
 
@@ -51,6 +57,9 @@ class NgcWordBlockSyntax(WordBlockSyntax):
         words = block.words
         if not words:
             return
+        exprs = block.values
+        if exprs and self._computed_code(block, ctx, exprs):
+            return
         codes: dict[str, tuple[str, str, object, str]] = {}
         natives: list[str] = []
         raw: dict[str, str] = {}
@@ -77,8 +86,15 @@ class NgcWordBlockSyntax(WordBlockSyntax):
             self._native(block, ctx, natives, raw)
             return
         values = block.values
-        for up, num in raw.items():
-            values[up] = self._value(block, ctx, up, num)
+        if exprs:
+            for up, num in raw.items():
+                if up not in values:
+                    values[up] = self._value(block, ctx, up, num)
+                elif up not in self.REAL_LETTERS and up not in self.INTEGER_LETTERS and up != "S":
+                    self._value(block, ctx, up, num)  # an address the dialect does not use
+        else:
+            for up, num in raw.items():
+                values[up] = self._value(block, ctx, up, num)
         state = ctx.state
         extra = state.extra
         cycle_block = "09" in codes and codes["09"][1] == "cycle" or (
@@ -108,6 +124,16 @@ class NgcWordBlockSyntax(WordBlockSyntax):
         self.finish_words(block, ctx, values, used)
         if self.FEED_BEFORE_UNITS and "Units" in block.sections and "Feed" in block.sections:
             _feed_in_old_units(block, ctx)
+
+    def _computed_code(self, block: Block, ctx: Context, exprs: dict[str, Any]) -> bool:
+        """A G or M code given by an expression: its meaning is known only when the program runs, so
+        the block is kept verbatim (the interpreter reads it with the number when it executes)."""
+        for letter in ("G", "M"):
+            if isinstance(exprs.get(letter), Expr):
+                num = next(n for a, n in block.words if a.upper() == letter)
+                block.add(NativeCode(self.DIALECT, f"a computed {letter} code ({letter}{num})", block.text or ""))
+                return True
+        return False
 
     def _value(self, block: Block, ctx: Context, up: str, num: str) -> float | int:
         if up in self.REAL_LETTERS:
@@ -154,8 +180,10 @@ class NgcWordBlockSyntax(WordBlockSyntax):
         key = natives[0]
         what = f"G{key} ({self.CODES.native_g.get(key, 'path blending with a tolerance')})"
         block.add(NativeCode(self.DIALECT, what, block.text or ""))
+        values = block.values
         for up, num in raw.items():
-            block.values[up] = float(num) if "." in num else int(num)
+            if not isinstance(values.get(up), Expr):
+                values[up] = float(num) if "." in num else int(num)
 
     def _check_cycle_words(self, block: Block, ctx: Context, values: dict[str, Any], cycle_block: bool) -> None:
         """L counts repeats only in a cycle block; K is refused there, and so is L0."""
@@ -167,7 +195,8 @@ class NgcWordBlockSyntax(WordBlockSyntax):
         if "K" in values:
             raise ProgramError(f"K in a drilling cycle: {self.CONTROL} counts repeats with L",
                                ctx.at(block, ctx.column_of(block, "K")))
-        if values.get("L", 1) < 1:
+        repeats = values.get("L", 1)
+        if not isinstance(repeats, Expr) and repeats < 1:
             raise ProgramError("a canned cycle cannot repeat zero times (L must be 1 or more)",
                                ctx.at(block, ctx.column_of(block, "L")))
 
@@ -196,7 +225,12 @@ class NgcWordBlockSyntax(WordBlockSyntax):
         """Dwell P<seconds> (the ISO reading: P milliseconds or X seconds), made before the shared logic runs."""
         if "P" not in values:
             raise ProgramError(f"{self.spell('dwell')} needs a dwell time P (seconds)", ctx.at(block, col_of_word(block, "G", num)))
-        seconds = float(values["P"])
+        seconds = values["P"]
+        if isinstance(seconds, Expr):
+            used.add("P")
+            block.add(Dwell(seconds))  # type: ignore[arg-type]
+            return
+        seconds = float(seconds)
         if seconds < 0:
             raise ProgramError("a dwell time cannot be negative", ctx.at(block, ctx.column_of(block, "P")))
         used.add("P")
@@ -213,7 +247,8 @@ class NgcWordBlockSyntax(WordBlockSyntax):
 
     def orient(self, block: Block, ctx: Context, num: str, values: dict[str, Any], used: set[str]) -> None:
         """The orient code takes the angle from R (Q is a timeout, P the direction)."""
-        block.add(SpindleOrientation(float(values.get("R", ctx.setup.cycles.orient_angle))))
+        angle = values.get("R", ctx.setup.cycles.orient_angle)
+        block.add(SpindleOrientation(angle if isinstance(angle, Expr) else float(angle)))  # type: ignore[arg-type]
         used.update("RQP")
 
 
@@ -227,4 +262,6 @@ def _feed_in_old_units(block: Block, ctx: Context) -> None:
     if before == after or inverse_time:
         return
     feed = sections["Feed"]
-    feed.value *= MM_PER_INCH if after == "mm" else 1.0 / MM_PER_INCH  # type: ignore[attr-defined]
+    factor = MM_PER_INCH if after == "mm" else 1.0 / MM_PER_INCH
+    value = feed.value  # type: ignore[attr-defined]
+    feed.value = Binary("mul", value, Num(factor)) if isinstance(value, Expr) else value * factor  # type: ignore[attr-defined]

@@ -8,8 +8,13 @@ What differs from the ISO lexer (``lexer.py``), and why this is a module of its 
   and between its sign and its digits (``X - 1.5``, ``X- .5``), as rs274 reads them: the common line
   is still matched with one regex, the rare spaced-out number takes a slow path. Both regexes are
   possessive and unambiguous, so a line is scanned in linear time whatever it holds.
-* O-words (``o100 sub``, ``o<name> call``), parameters (``#1``) and expressions (``[1+2]``) are
-  refused with a located error: this reader does not model control flow yet.
+* With an ``OwordParser`` (LinuxCNC: ``NgcReader.PARAMETRIC``), o-word lines (``o100 sub``,
+  ``o<name> call [1]``) become a ``Control`` section, parameter assignments anywhere in the line
+  (``#1=2 G0 X#1``) one ``Assign`` section (all of them, in order: rs274 reads every value of the line
+  first, then assigns), and a word whose value is not a plain number (``X[#1*2]``, ``X#1``,
+  ``X-#<depth>``, ``G#10``, ``X SIN[30]``) keeps its text as written in ``block.words`` and its tree in
+  ``block.values`` (an ``Expr``). Without one (grbl), each of these is a located error naming it.
+  Only lines the one-regex fast path refuses take this road, so a plain line costs nothing more.
 
 Line splitting and the word number syntax are the ISO lexer's. ``NgcReader`` is the family's reader.
 """
@@ -19,11 +24,15 @@ from __future__ import annotations
 import re
 from typing import Iterable, Iterator
 
+from postproc.control import Assign
 from postproc.dialect import Reader
 from postproc.errors import Location, ParseError, PostprocError
+from postproc.expr import Expr, Var
 from postproc.ir import Block, BlockDelete, Comments, Sequence, TapeMark
 
+from .expressions import LINUXCNC_SPELLING, ExprSyntaxError, parse_word_value
 from .lexer import NUMBER, split_lines
+from .oword import OwordParser, parse_assignments
 
 __all__ = ["NgcReader", "lex_block", "split_lines", "strip_comments"]
 
@@ -37,8 +46,10 @@ _COMMENT_CHARS = frozenset("();")
 _O_WORDS = "O-words (subprograms, loops, conditions) are not supported by the {} reader"
 
 
-def lex_block(file: str, number: int, text: str, eol: str, dialect: str) -> Block:
-    """Lex one line into a block: words as written (letter case kept), comments, block delete.
+def lex_block(file: str, number: int, text: str, eol: str, dialect: str,
+              oword: OwordParser | None = None) -> Block:
+    """Lex one line into a block: words as written (letter case kept), comments, block delete, and
+    with ``oword`` (the file's ``OwordParser``) o-words, assignments and expression values.
 
     ``dialect`` only names the reader in messages.
     """
@@ -53,16 +64,19 @@ def lex_block(file: str, number: int, text: str, eol: str, dialect: str) -> Bloc
             code = " " * m.end() + code[m.end():]
     if _WORDS_ONLY.fullmatch(code):
         words = _WORD.findall(code)
+        for letter, _ in words:
+            if letter in "Oo":
+                if oword is None:
+                    raise ParseError(_O_WORDS.format(dialect), Location(file, number, code.upper().find("O") + 1))
+                words = _slow_words(file, number, code, dialect, block, oword)
+                break
     else:
         if code.strip() == "%":
             block.add(TapeMark())
             return block
-        words = _slow_words(file, number, code, dialect)
+        words = _slow_words(file, number, code, dialect, block, oword)
     block.words = words
     if words:
-        for letter, _ in words:
-            if letter in "Oo":
-                raise ParseError(_O_WORDS.format(dialect), Location(file, number, code.upper().find("O") + 1))
         letter, num = words[0]
         if letter in "Nn":
             if "." in num or num[0] in "+-":
@@ -115,44 +129,98 @@ def _next_special(code: str, pos: int) -> int:
     return best
 
 
-def _slow_words(file: str, line: int, code: str, dialect: str) -> list[tuple[str, str]]:
-    """Scan a line the fast regex refused: numbers with blanks inside, or an error to explain."""
+def _slow_words(file: str, line: int, code: str, dialect: str, block: Block,
+                oword: OwordParser | None) -> list[tuple[str, str]]:
+    """Scan a line the fast regex refused: numbers with blanks inside, o-words, assignments and
+    expression values (with ``oword``), or an error to explain."""
     words: list[tuple[str, str]] = []
+    assigned: list[tuple[Var, Expr]] = []
     pos = 0
     n = len(code)
-    while pos < n:
-        ch = code[pos]
-        if ch in " \t":
-            pos += 1
-            continue
-        if ch in "Oo":
-            raise ParseError(_O_WORDS.format(dialect), Location(file, line, pos + 1))
-        if ch.isalpha():
-            m = _SPACED_NUMBER.match(code, pos + 1)
-            j = pos + 1
-            while j < n and code[j] in " \t":
-                j += 1
-            if m is None or not any(c.isdigit() for c in m.group(0)):
-                if j < n and code[j] in "#[":
-                    raise ParseError(_unsupported_value(code[j], dialect), Location(file, line, j + 1))
-                if j >= n or code[j].isalpha():
-                    raise ParseError(f"address {ch.upper()} needs a value", Location(file, line, pos + 1))
-                raise ParseError(f"malformed word {code[pos:j + 1].strip()!r}", Location(file, line, pos + 1))
-            num = "".join(m.group(0).split())
-            words.append((ch, num))
-            pos = m.end()
-            continue
-        if ch in "#[":
-            raise ParseError(_unsupported_value(ch, dialect), Location(file, line, pos + 1))
-        if ch == "%":
-            raise ParseError("'%' must stand alone on its line", Location(file, line, pos + 1))
-        if ch == "/":
-            raise ParseError("block delete '/' must start the block", Location(file, line, pos + 1))
-        if ch.isdigit() or ch in "+-.":
-            token = code[pos:].split()[0]
-            raise ParseError(f"number without an address at {token!r}", Location(file, line, pos + 1))
-        raise ParseError(f"unexpected character {ch!r}", Location(file, line, pos + 1))
+    try:
+        while pos < n:
+            ch = code[pos]
+            if ch in " \t":
+                pos += 1
+                continue
+            if ch in "Oo":
+                if oword is None:
+                    raise ParseError(_O_WORDS.format(dialect), Location(file, line, pos + 1))
+                if assigned or any(letter not in "Nn" for letter, _ in words):
+                    raise ParseError("an o-word opens its line (only '/' and N may come before it)",
+                                     Location(file, line, pos + 1))
+                block.add(oword.parse(code, pos, line))
+                return words
+            if ch.isalpha():
+                m = _SPACED_NUMBER.match(code, pos + 1)
+                j = pos + 1
+                while j < n and code[j] in " \t":
+                    j += 1
+                if m is None or not any(c.isdigit() for c in m.group(0)):
+                    if oword is not None and _starts_value(code, j):
+                        end, value = parse_word_value(code, j, LINUXCNC_SPELLING)
+                        words.append((ch, code[j:end]))
+                        block.values[ch.upper()] = value
+                        pos = end
+                        continue
+                    if j < n and code[j] in "#[":
+                        raise ParseError(_unsupported_value(code[j], dialect), Location(file, line, j + 1))
+                    if j >= n or code[j].isalpha():
+                        raise ParseError(f"address {ch.upper()} needs a value", Location(file, line, pos + 1))
+                    raise ParseError(f"malformed word {code[pos:j + 1].strip()!r}", Location(file, line, pos + 1))
+                num = "".join(m.group(0).split())
+                words.append((ch, num))
+                pos = m.end()
+                continue
+            if ch == "#" and oword is not None:
+                pos, assign = parse_assignments(code, pos)
+                assigned.extend(assign.items)
+                continue
+            if ch in "#[":
+                raise ParseError(_unsupported_value(ch, dialect), Location(file, line, pos + 1))
+            if ch == "%":
+                raise ParseError("'%' must stand alone on its line", Location(file, line, pos + 1))
+            if ch == "/":
+                raise ParseError("block delete '/' must start the block", Location(file, line, pos + 1))
+            if ch.isdigit() or ch in "+-.":
+                token = code[pos:].split()[0]
+                raise ParseError(f"number without an address at {token!r}", Location(file, line, pos + 1))
+            raise ParseError(f"unexpected character {ch!r}", Location(file, line, pos + 1))
+    except ExprSyntaxError as err:
+        if err.location is None:
+            err.at(file, line)
+        raise
+    if assigned:
+        block.add(Assign(assigned))
     return words
+
+
+_VALUE_START = frozenset("#[")
+
+
+def _starts_value(code: str, j: int) -> bool:
+    """An expression value starts at ``j``: ``#``, ``[``, a sign before one of them, or a function
+    word followed by ``[`` (``X SIN[30]``)."""
+    n = len(code)
+    if j >= n:
+        return False
+    c = code[j]
+    if c in _VALUE_START:
+        return True
+    if c in "+-":
+        k = j + 1
+        while k < n and code[k] in " \t":
+            k += 1
+        return k < n and code[k] in _VALUE_START
+    if c.isalpha():
+        k = j
+        while k < n and code[k].isalpha():
+            k += 1
+        word = code[j:k].upper()
+        while k < n and code[k] in " \t":
+            k += 1
+        return k < n and code[k] == "[" and (word in LINUXCNC_SPELLING.functions or word == "ATAN")
+    return False
 
 
 def _unsupported_value(ch: str, dialect: str) -> str:
@@ -167,14 +235,17 @@ class NgcReader(Reader):
 
     DIALECT = ""
     """Names the dialect in lexical error messages."""
+    PARAMETRIC = False
+    """The dialect reads o-words, parameters and expressions (LinuxCNC); else they are errors (grbl)."""
 
     def read(self, lines: Iterable[str]) -> Iterator[Block]:
         file = self.ctx.file
         dialect = self.DIALECT
         report = self.ctx.diagnostics.error
+        oword = OwordParser() if self.PARAMETRIC else None
         for number, text, eol in split_lines(lines):
             try:
-                yield lex_block(file, number, text, eol, dialect)
+                yield lex_block(file, number, text, eol, dialect, oword)
             except PostprocError as err:
                 report(err)
                 yield Block(number, text, eol)

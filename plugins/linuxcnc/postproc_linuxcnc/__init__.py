@@ -3,8 +3,11 @@
 It registers through the ``postproc`` entry-point group and hooks, exactly as a third party would.
 Reading follows the RS274/NGC rules (DIALECTS.md §2.1 "LinuxCNC / RS274-NGC baseline"): numbers
 without decimal-point scaling, ``;`` comments, ``L`` repeats, G98 as "retract to the old Z when it is
-above R", R-plane retract (G99) at start-up as in LinuxCNC's interpreter. Subprograms and control flow
-(O-words, M98/M99), parameters and expressions are refused with a located error.
+above R", R-plane retract (G99) at start-up as in LinuxCNC's interpreter. O-words (subprograms, loops,
+conditions), numbered and named parameters and expressions are read into control sections and
+expression values: kept symbolically for a target that has them, run by ``LinuxcncProgramSyntax``
+otherwise. Fanuc-style numbered subprograms (``O100`` ... ``M99``, ``M98``) are refused with a
+located error.
 """
 
 from __future__ import annotations
@@ -23,6 +26,7 @@ from postproc.xmlio import XFactory
 from .codes import CODES
 
 from .block_syntax import NgcBlockSyntax
+from .program import LinuxcncProgramSyntax
 from .reader import LinuxcncReader
 from .writer import LinuxcncWriter
 
@@ -34,7 +38,7 @@ NATIVE = frozenset({
 
 class Linuxcnc(Dialect):
     NAME = "linuxcnc"
-    DESCRIPTION = "LinuxCNC 2.9 milling (RS274/NGC; no O-words, parameters or expressions yet)"
+    DESCRIPTION = "LinuxCNC 2.9 milling (RS274/NGC with O-words, parameters and expressions)"
     READER = LinuxcncReader
     WRITER = LinuxcncWriter
     PIPELINE_FILE = "linuxcnc.xml"
@@ -82,3 +86,4 @@ def postproc_register_dialects(register: Callable[[type], None]) -> None:
 @hookimpl
 def postproc_register_xml(factory: XFactory) -> None:
     NgcBlockSyntax.reg(factory)
+    LinuxcncProgramSyntax.reg(factory)

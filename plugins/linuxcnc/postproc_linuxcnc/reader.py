@@ -1,4 +1,5 @@
-"""LinuxCNC reader: the RS274/NGC family reader, naming LinuxCNC in its messages."""
+"""LinuxCNC reader: the RS274/NGC family reader with o-words, parameters and expressions, naming
+LinuxCNC in its messages."""
 
 from __future__ import annotations
 
@@ -7,3 +8,4 @@ from postproc.rs274.ngc_lexer import NgcReader
 
 class LinuxcncReader(NgcReader):
     DIALECT = "linuxcnc"
+    PARAMETRIC = True

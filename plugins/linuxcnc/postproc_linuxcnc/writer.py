@@ -5,6 +5,11 @@
   program number is written as a comment (LinuxCNC reads O as an O-word).
 * Work offsets 7-9 are G59.1-G59.3; inverse-time feed is G93; M19 takes its angle as R.
 * F in a block that changes units is written in the old units (LinuxCNC sets the feed first).
+* Parameters, expressions and o-words (``SPELLING``, ``statement_words``): a computed word is written
+  in LinuxCNC's spelling (``X[#1*2.]``), an assignment as ``#1=5.``, a control statement as its o-word
+  line (``o100 while [#1 LT 3.]``, ``o<probe> call [1.] [#2]``). What an o-word cannot say (a ``GOTO``,
+  Fanuc's ``IF .. THEN``, a call that shares the caller's locals or repeats, a modal call) is an
+  ``UnsupportedError`` naming the construct.
 * A native cycle is written from its words as programmed. Only cycles resolved under RS274/NGC rules
   arrive here native: the lowering expands every other family's cycle exactly (``CYCLE_SEMANTICS``),
   because LinuxCNC's start-below-R, G98 and G91 R rules would move differently.
@@ -14,11 +19,15 @@ from __future__ import annotations
 
 from typing import Any, ClassVar
 
-from postproc.ir import Block
+from postproc.errors import UnsupportedError
+from postproc.ir import Block, Section
 from postproc.context import Context
 from postproc.dialect import Dialect
 from postproc.state import MM_PER_INCH
+from postproc.control import Assign
 from postproc.rs274.codes import CodeTable
+from postproc.rs274.expressions import LINUXCNC_SPELLING, ExprSpelling
+from postproc.rs274.oword import spell_assignments, spell_oword
 from postproc.rs274.writer import WordWriter
 
 from .codes import CODES
@@ -29,6 +38,7 @@ class LinuxcncWriter(WordWriter):
     CODES: ClassVar[CodeTable] = CODES
     """G76 threads, G87/G88 take other words: no row spells Fanuc's fine, back or manual boring."""
     DWELL_WORD: ClassVar[str] = "P"
+    SPELLING: ClassVar[ExprSpelling | None] = LINUXCNC_SPELLING
 
     def __init__(self, ctx: Context, source_dialect: str, target: type[Dialect] | None = None) -> None:
         super().__init__(ctx, source_dialect, target)
@@ -55,6 +65,17 @@ class LinuxcncWriter(WordWriter):
         words = ["F" + self.number(s.value * (MM_PER_INCH if after == "inch" else 1.0 / MM_PER_INCH))]
         modal.units = after
         return words
+
+    def statement_words(self, section: Section, block: Block) -> list[str]:
+        """``#1=5. #<x>=[#1+2.]`` (``spell_assignments``) or one o-word line (``spell_oword``)."""
+        try:
+            if isinstance(section, Assign):
+                return [spell_assignments(section)]
+            return [spell_oword(section)]
+        except UnsupportedError as err:
+            if err.location is None:
+                err.located(self.ctx.at(block))
+            raise
 
     def program_start(self, s: Any, block: Block) -> str:
         """LinuxCNC reads O as an O-word (subprograms, loops): the program number stays a comment."""

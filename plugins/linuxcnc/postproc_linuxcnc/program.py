@@ -1,0 +1,53 @@
+"""LinuxCNC's interpreter step: the neutral ``ProgramSyntax`` with LinuxCNC's data.
+
+* ``#1``-``#30`` are a call's arguments (``o<x> call [a] [b]``), ``#31``-``#5000`` and ``#<_name>`` are
+  global, ``#<name>`` is local to a call (``NgcVariables``).
+* M2 and M30 end the program; a subprogram called by name is looked up as ``name.ngc`` in the set-up's
+  library folders (LinuxCNC's ``SUBROUTINE_PATH``), ``o<probe> call`` -> ``probe.ngc``.
+* A computed word is written back as a number. An address that takes an integer (M, N, T, H, D, L)
+  accepts a value within 0.0001 of one and rounds it, as rs274's ``read_integer_value`` does; anything
+  else is an error naming the word. A G code is written as its number (``G59.1``; ``G0`` without a point).
+"""
+
+from __future__ import annotations
+
+from typing import ClassVar, Iterable, Iterator
+
+from postproc.context import Context
+from postproc.errors import ProgramError
+from postproc.interp import NgcVariables, ProgramSyntax, spell_number
+from postproc.ir import Block
+
+INTEGER_TOLERANCE = 0.0001
+"""How far from an integer rs274 still reads an integer word (``interp_read.cc``)."""
+
+
+class LinuxcncProgramSyntax(ProgramSyntax):
+    """Stores and runs LinuxCNC programs that compute (o-words, parameters, expressions)."""
+
+    XNAME = "LinuxcncProgramSyntax"
+    __slots__ = ()
+    INTEGER_ADDRESSES: ClassVar[frozenset[str]] = frozenset("MNTHDL")
+    END_CODES: ClassVar[frozenset[tuple[str, int]]] = frozenset({("M", 2), ("M", 30)})
+    MACRO_LOCALS: ClassVar[int] = 30
+    VARIABLES = NgcVariables
+    LIBRARY_FILES: ClassVar[tuple[str, ...]] = ("{name}.ngc",)
+    PROGRAM_LABEL: ClassVar[str] = "o{raw}"
+
+    def process(self, blocks: Iterable[Block], ctx: Context) -> Iterator[Block]:
+        """Decide keep or execute when the first block is pulled, not when the pipeline is built:
+        ``toolpath`` sets ``ctx.program_mode`` after ``read_blocks`` has built it."""
+        yield from super().process(blocks, ctx)
+
+    def spell_evaluated(self, letter: str, value: float) -> str:
+        if letter in self.INTEGER_ADDRESSES:
+            nearest = round(value)
+            if abs(value - nearest) > INTEGER_TOLERANCE:
+                raise ProgramError(f"address {letter} takes an integer, the expression gives {value:g}")
+            return str(int(nearest))
+        if letter == "G":
+            tenths = round(value * 10.0)
+            if abs(value * 10.0 - tenths) > INTEGER_TOLERANCE:
+                raise ProgramError(f"G codes have at most one decimal place, the expression gives {value:g}")
+            return str(tenths // 10) if tenths % 10 == 0 else f"{tenths // 10}.{tenths % 10}"
+        return spell_number(value)
