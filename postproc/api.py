@@ -93,18 +93,32 @@ def _keep_check(src: type[Dialect], dst: type[Dialect], ctx: Context,
         blocks = Pipeline(src.NAME, steps).run(body, trial)
         lowered = lower_for(blocks, trial, dst, "error", registry.lowerings)
         writer = dst.WRITER(trial, src.NAME, dst) if dst.WRITER is not None else None
+        text = io.StringIO()
         try:
             if writer is not None:
-                writer.write(lowered, io.StringIO())
+                writer.write(lowered, text)
         except PostprocError as err:
             return err.message
         if dry.errors:
-            first = dry.errors[0]
-            where = f"line {first.location.line}: " if first.location is not None else ""
-            return where + first.message
+            return _first(dry)
+        # The symbolic output must read back under the target's own rules (labels, nesting...).
+        back = Diagnostics(ErrorLevel.RAISE, max_errors=1_000_000, warn_stream=io.StringIO())
+        try:
+            for _ in read_blocks(io.StringIO(text.getvalue()), ctx.file, dst, ctx.setup, back)[1]:
+                pass
+        except PostprocError as err:
+            return f"the {dst.NAME} output would not read back: {err.message}"
+        if back.errors:
+            return f"the {dst.NAME} output would not read back: {_first(back)}"
         return None
 
     return reason
+
+
+def _first(diagnostics: Diagnostics) -> str:
+    first = diagnostics.errors[0]
+    where = f"line {first.location.line}: " if first.location is not None else ""
+    return where + first.message
 
 
 def read_program(lines: Iterable[str], *, file: str, dialect: str, setup: MachineSetup | None = None,

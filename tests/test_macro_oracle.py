@@ -66,3 +66,47 @@ def test_flattened_grbl_translation_makes_the_same_moves(tmp_path: Path, path: P
     flat = tmp_path / "flat.nc"
     flat.write_text(text, encoding="utf-8")
     _same(_moves(flat, "grbl"), _moves(path, "fanuc"))
+
+
+def _translate(text: str, source: str, target: str, file: str = "t.nc") -> tuple[str, list[str]]:
+    out = io.StringIO(newline="")
+    diagnostics = translate(io.StringIO(text, newline=""), out, file=file, source=source, target=target)
+    return out.getvalue(), [str(w) for w in diagnostics.warnings]
+
+
+@pytest.mark.skipif(not available(), reason="the LinuxCNC interpreter rs274 is not installed")
+@pytest.mark.parametrize("path", CASES, ids=lambda p: p.stem)
+def test_fanuc_to_linuxcnc_translation_runs_in_rs274_as_the_fanuc_program_moves(path: Path) -> None:
+    text, _ = _translate(path.read_text(), "fanuc", "linuxcnc", str(path))
+    theirs = [e for e in canonical_moves(run_rs274(text), start=(0.0, 0.0, 0.0)) if "move" in e]
+    _same(_moves(path, "fanuc"), theirs)
+
+
+def test_a_macro_program_keeps_its_loop_through_linuxcnc_and_back(tmp_path: Path) -> None:
+    path = ROOT / "tests" / "golden" / "macro" / "bolt_circle_while.nc"
+    ngc, warnings = _translate(path.read_text(), "fanuc", "linuxcnc", str(path))
+    assert warnings == []
+    assert "o1 while [#10 LT #1]\n" in ngc and "o1 endwhile\n" in ngc
+    back, warnings = _translate(ngc, "linuxcnc", "fanuc", "t.ngc")
+    assert warnings == []
+    assert "WHILE [#10 LT #1] DO1\n" in back and "END1\n" in back and "#11=#3+#10*360./#1\n" in back
+    again = tmp_path / "back.nc"
+    again.write_text(back)
+    _same(_moves(again, "fanuc"), _moves(path, "fanuc"))
+
+
+SEQUENTIAL = ("%\nG21 G90 G00 X0 Y0 Z5.\n#1=0\nWHILE [#1 LT 2] DO1\nG01 X#1 F100.\n#1=#1+1\nEND1\n"
+              "#1=0\nWHILE [#1 LT 2] DO1\nG01 Y#1 F100.\n#1=#1+1\nEND1\nM30\n%\n")
+
+
+@pytest.mark.skipif(not available(), reason="the LinuxCNC interpreter rs274 is not installed")
+def test_loops_that_reuse_do1_get_labels_of_their_own_in_linuxcnc(tmp_path: Path) -> None:
+    """LinuxCNC refuses an o-word label opened twice; Fanuc reuses DO1 for every loop at one depth."""
+    text, warnings = _translate(SEQUENTIAL, "fanuc", "linuxcnc")
+    assert warnings == []
+    assert [line for line in text.splitlines() if line.startswith("o")] == [
+        "o1 while [#1 LT 2.]", "o1 endwhile", "o2 while [#1 LT 2.]", "o2 endwhile"]
+    source = tmp_path / "seq.nc"
+    source.write_text(SEQUENTIAL)
+    theirs = [e for e in canonical_moves(run_rs274(text), start=(0.0, 0.0, 0.0)) if "move" in e]
+    _same(_moves(source, "fanuc"), theirs)

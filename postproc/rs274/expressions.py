@@ -399,6 +399,13 @@ def spell_number(value: float) -> str:
     return text
 
 
+def _ends_in_one_argument_atan(e: Expr) -> bool:
+    """True when ``e`` is written ending in a one-argument ``ATAN[..]`` (its rightmost operand)."""
+    while isinstance(e, Binary):
+        e = e.right
+    return isinstance(e, Func) and len(e.args) == 1 and e.name.startswith("atan")
+
+
 class _Writer:
     __slots__ = ("sp", "in_word", "max_brackets")
 
@@ -424,6 +431,8 @@ class _Writer:
             inner_brackets = brackets + 1 if wrap else brackets
             left = self.spell(e.left, prec - 1, inner_brackets, leading or wrap)
             right = self.spell(e.right, prec, inner_brackets, False)
+            if word == "/" and _ends_in_one_argument_atan(e.left):
+                left = self.bracketed("", left, inner_brackets)  # ATAN[a]/.. reads as the two-argument form
             sep = f" {word} " if word[0].isalpha() else word
             text = left + sep + right
             return self.bracketed("", text, brackets) if wrap else text

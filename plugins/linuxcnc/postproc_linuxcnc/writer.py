@@ -17,6 +17,7 @@
 
 from __future__ import annotations
 
+import copy
 from typing import Any, ClassVar
 
 from postproc.errors import UnsupportedError
@@ -24,13 +25,21 @@ from postproc.ir import Block, Section
 from postproc.context import Context
 from postproc.dialect import Dialect
 from postproc.state import MM_PER_INCH
-from postproc.control import Assign
+from postproc.control import (
+    Assign, Break, Call, Continue, Do, DoWhile, Else, ElseIf, EndIf, EndRepeat, EndWhile, If, Repeat, SubStart,
+    While,
+)
 from postproc.rs274.codes import CodeTable
 from postproc.rs274.expressions import LINUXCNC_SPELLING, ExprSpelling
 from postproc.rs274.oword import spell_assignments, spell_oword
 from postproc.rs274.writer import WordWriter
 
 from .codes import CODES
+
+
+_OPENING = (While, If, Do, Repeat)
+_CLOSING = (EndWhile, EndIf, DoWhile, EndRepeat)
+_LABELLED = (*_OPENING, *_CLOSING, ElseIf, Else, Break, Continue)
 
 
 class LinuxcncWriter(WordWriter):
@@ -45,6 +54,11 @@ class LinuxcncWriter(WordWriter):
         self.units_before = self.modal.units
         """Units in force before the block being written (its F is read in them)."""
         self.inverse_time = False
+        self._open: dict[str, list[str]] = {}
+        """Source label -> the o-word labels written for its open constructs, innermost last."""
+        self._taken: set[str] = set()
+        """O-word labels and subprogram names written so far."""
+        self._counter = 0
 
     def units_words(self, s: Any, block: Block) -> list[str]:
         self.units_before = self.modal.units
@@ -71,11 +85,42 @@ class LinuxcncWriter(WordWriter):
         try:
             if isinstance(section, Assign):
                 return [spell_assignments(section)]
+            if self.source_dialect != self.DIALECT:
+                section = self._relabel(section, block)
             return [spell_oword(section)]
         except UnsupportedError as err:
             if err.location is None:
                 err.located(self.ctx.at(block))
             raise
+
+    def _relabel(self, section: Section, block: Block) -> Section:
+        """A fresh o-word label for every loop or condition translated from another dialect: LinuxCNC refuses a
+        label opened twice ("duplicate O-word label"), where Fanuc reuses ``DO1`` for every loop at one depth. Closing,
+        ``elseif``/``else`` and ``break``/``continue`` lines take the label of the construct they belong to."""
+        if isinstance(section, (SubStart, Call)):
+            if isinstance(section.name, str):
+                self._taken.add(section.name)
+            return section
+        if not isinstance(section, _LABELLED):
+            return section
+        label = section.label  # type: ignore[attr-defined]
+        stack = self._open.setdefault(label, [])
+        if isinstance(section, _OPENING):
+            self._counter += 1
+            while str(self._counter) in self._taken:
+                self._counter += 1
+            fresh = str(self._counter)
+            self._taken.add(fresh)
+            stack.append(fresh)
+        elif not stack:
+            self.unsupported(f"an o-word line closing {label!r}, which no written line opened", block)
+        else:
+            fresh = stack[-1]
+            if isinstance(section, _CLOSING):
+                stack.pop()
+        renamed = copy.copy(section)
+        renamed.label = fresh  # type: ignore[attr-defined]
+        return renamed
 
     def program_start(self, s: Any, block: Block) -> str:
         """LinuxCNC reads O as an O-word (subprograms, loops): the program number stays a comment."""
