@@ -103,7 +103,7 @@ class LinuxcncWriter(WordWriter):
             return section
         if not isinstance(section, _LABELLED):
             return section
-        label = section.label  # type: ignore[attr-defined]
+        label = section.label
         stack = self._open.setdefault(label, [])
         if isinstance(section, _OPENING):
             self._counter += 1
@@ -119,7 +119,7 @@ class LinuxcncWriter(WordWriter):
             if isinstance(section, _CLOSING):
                 stack.pop()
         renamed = copy.copy(section)
-        renamed.label = fresh  # type: ignore[attr-defined]
+        renamed.label = fresh
         return renamed
 
     def program_start(self, s: Any, block: Block) -> str:
