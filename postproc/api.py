@@ -36,11 +36,19 @@ def gc_paused() -> Iterator[None]:
 
 
 def read_blocks(lines: Iterable[str], file: str, dialect: type[Dialect], setup: MachineSetup,
-                diagnostics: Diagnostics) -> tuple[Context, Iterator[Block]]:
-    """Text -> IR: the dialect's reader, then its syntax pipeline. Returns the run's context too."""
+                diagnostics: Diagnostics, *, program_mode: str = "keep",
+                prepare: Callable[[Context], None] | None = None) -> tuple[Context, Iterator[Block]]:
+    """Text -> IR: the dialect's reader, then its syntax pipeline. Returns the run's context too.
+
+    ``program_mode`` says what the interpreter step does with a program that computes ('keep',
+    'execute' or 'auto', see ``Context.program_mode``); it is set before the pipeline is built, as is
+    whatever ``prepare`` adds to the context, so the steps choose their path once."""
     if dialect.READER is None:
         raise UsageError(f"the {dialect.NAME} dialect cannot be read (it is write-only)")
     ctx = dialect.context(file, setup, diagnostics)
+    ctx.program_mode = program_mode
+    if prepare is not None:
+        prepare(ctx)
     pipeline = dialect.pipeline(setup)
     blocks = dialect.READER(ctx).read(lines)
     return ctx, pipeline.run(blocks, ctx)
@@ -62,11 +70,12 @@ def translate(lines: Iterable[str], out: TextIO, *, file: str, source: str, targ
     if dst.WRITER is None:
         raise UsageError(f"the {dst.NAME} dialect cannot be written (it is read-only)")
     with gc_paused():
-        ctx, blocks = read_blocks(lines, file, src, setup, diagnostics)
-        ctx.on_unsupported = on_unsupported
-        if src.NAME != dst.NAME:
-            ctx.program_mode = "auto" if dst.PROGRAMS else "execute"
+        def prepare(ctx: Context) -> None:
+            ctx.on_unsupported = on_unsupported
             ctx.keep_check = _keep_check(src, dst, ctx, registry)
+
+        mode = "keep" if src.NAME == dst.NAME else "auto" if dst.PROGRAMS else "execute"
+        ctx, blocks = read_blocks(lines, file, src, setup, diagnostics, program_mode=mode, prepare=prepare)
         lowered = lower_for(blocks, ctx, dst, on_unsupported, registry.lowerings)
         writer = dst.WRITER(ctx, src.NAME, dst)
         writer.write(lowered, out)

@@ -404,8 +404,8 @@ def toolpath_events(lines: Iterable[str], *, file: str, dialect: str | type[Dial
     if isinstance(dialect, str):
         dialect = registry.dialect(dialect)
     with gc_paused():
-        ctx, blocks = read_blocks(lines, file, dialect, setup, diagnostics)
-        ctx.program_mode = "execute"  # a simulation runs the program's loops, jumps and calls
+        # a simulation runs the program's loops, jumps and calls
+        ctx, blocks = read_blocks(lines, file, dialect, setup, diagnostics, program_mode="execute")
         lowered = lower_for(blocks, ctx, ToolpathTarget, "error", registry.lowerings)
         yield from simulate(lowered, ctx)
     if check:

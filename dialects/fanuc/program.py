@@ -8,10 +8,8 @@ a subprogram ``O2000`` not in the file is looked for in the set-up's and ``--lib
 
 from __future__ import annotations
 
-from typing import ClassVar, Iterable, Iterator
+from typing import ClassVar
 
-from postproc.context import Context
-from postproc.ir import Block
 
 from postproc.interp import FanucVariables, ProgramSyntax
 from postproc.interp.variables import NgcVariables
@@ -28,7 +26,3 @@ class FanucProgramSyntax(ProgramSyntax):
     LIBRARY_FILES: ClassVar[tuple[str, ...]] = ("O{number:04d}", "O{number:04d}.nc", "{name}.nc", "{name}")
     PROGRAM_LABEL: ClassVar[str] = "O{number:04d}"
 
-    def process(self, blocks: Iterable[Block], ctx: Context) -> Iterator[Block]:
-        """Decide keep or execute when the first block is pulled, not when the pipeline is built:
-        ``toolpath`` sets ``ctx.program_mode`` after ``read_blocks`` assembled the pipeline."""
-        yield from super().process(blocks, ctx)

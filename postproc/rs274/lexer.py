@@ -17,7 +17,6 @@ from __future__ import annotations
 import re
 from typing import Iterable, Iterator
 
-from postproc.control import ASSIGN, CONTROL
 from postproc.errors import Location, ParseError
 from postproc.ir import BlockDelete, Block, Comments, ProgramStart, Sequence, TapeMark
 

@@ -13,7 +13,7 @@ from __future__ import annotations
 from typing import Any, Callable, ClassVar, NoReturn
 
 from ..control import ASSIGN, CONTROL
-from ..errors import Location, UnsupportedError
+from ..errors import UnsupportedError
 from ..expr import Expr
 from .codes import CodeTable
 from .expressions import ExprSpelling, spell_word_value

@@ -18,7 +18,6 @@ from typing import Iterator
 
 from postproc.context import Context
 from postproc.dialect import Dialect
-from postproc.errors import Location
 from postproc.ir import (
     Block, Comments, CompoundMotion, DistanceMode, Motion, ProgramControl, Section, SpindleControl, ToolSelect,
 )

@@ -21,7 +21,7 @@ from __future__ import annotations
 
 from typing import Any, ClassVar
 
-from postproc.errors import Location, UnsupportedError
+from postproc.errors import UnsupportedError
 from postproc.ir import Block, CompoundMotion, ProgramControl, Section
 from postproc.state import PLANE_AXES
 from postproc.rs274.codes import CodeTable

@@ -11,12 +11,10 @@
 
 from __future__ import annotations
 
-from typing import ClassVar, Iterable, Iterator
+from typing import ClassVar
 
-from postproc.context import Context
 from postproc.errors import ProgramError
 from postproc.interp import NgcVariables, ProgramSyntax, spell_number
-from postproc.ir import Block
 
 INTEGER_TOLERANCE = 0.0001
 """How far from an integer rs274 still reads an integer word (``interp_read.cc``)."""
@@ -33,11 +31,6 @@ class LinuxcncProgramSyntax(ProgramSyntax):
     VARIABLES = NgcVariables
     LIBRARY_FILES: ClassVar[tuple[str, ...]] = ("{name}.ngc",)
     PROGRAM_LABEL: ClassVar[str] = "o{raw}"
-
-    def process(self, blocks: Iterable[Block], ctx: Context) -> Iterator[Block]:
-        """Decide keep or execute when the first block is pulled, not when the pipeline is built:
-        ``toolpath`` sets ``ctx.program_mode`` after ``read_blocks`` has built it."""
-        yield from super().process(blocks, ctx)
 
     def spell_evaluated(self, letter: str, value: float) -> str:
         if letter in self.INTEGER_ADDRESSES:
