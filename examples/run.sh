@@ -14,6 +14,9 @@ for f in examples/fanuc/*.nc; do
   # Every example uses G43 H (a tool table), which grbl lacks: warn, keep the motion, say so.
   run translate "$f" --from fanuc --to grbl --on-unsupported warn -o "out/$n.grbl.nc"
   run verify "$f" "out/$n.grbl.nc" --from fanuc --to grbl
+  # LinuxCNC keeps a program's loops and variables where it can spell them; otherwise it is flattened.
+  run translate "$f" --from fanuc --to linuxcnc -o "out/$n.ngc"
+  run verify "$f" "out/$n.ngc" --from fanuc --to linuxcnc
 done
 for f in examples/linuxcnc/*.ngc; do
   n=$(basename "$f" .ngc)
@@ -26,5 +29,8 @@ done
 echo
 echo "== out/o1001_plate_drill_tap.grbl.nc (first 30 lines)"
 head -n 30 out/o1001_plate_drill_tap.grbl.nc
+echo "..."
+echo "== out/o1005_bolt_circle_macro.grbl.nc: a Custom Macro B program flattened for grbl (first 20 lines)"
+head -n 20 out/o1005_bolt_circle_macro.grbl.nc
 echo "..."
 echo "translated programs are in out/"
