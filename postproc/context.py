@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import re
-from typing import Callable
+from typing import Any, Callable
 
 from .cycle_words import CycleWords
 from .errors import Diagnostics, Location
@@ -18,7 +18,7 @@ class Context:
     reading dialect tells the neutral steps about its words."""
 
     __slots__ = ("file", "setup", "diagnostics", "state", "dialect", "cycle_words", "on_unsupported",
-                 "program_mode", "keep_check")
+                 "program_mode", "keep_check", "reader")
 
     def __init__(self, file: str, setup: MachineSetup, diagnostics: Diagnostics, dialect: str,
                  cycle_words: CycleWords | None = None) -> None:
@@ -35,6 +35,9 @@ class Context:
         """What the interpreter step does with a program that computes: 'keep' its constructs (for a
         target that has them) or 'execute' them (toolpath, verify, flattening), or 'auto': keep them when
         ``keep_check`` finds nothing the target cannot express, else execute them; see ``postproc.interp``."""
+        self.reader: Callable[["Context"], Any] | None = None
+        """The reading dialect's reader class (``Reader``), for steps that read more text (a library
+        subprogram, a jumped-back prefix) the way the program was read."""
         self.keep_check: Callable[[list[Block]], str | None] | None = None
         """For 'auto': given the program from its first construct on, the reason it cannot be kept
         symbolically for the target (None: it can)."""

@@ -180,7 +180,9 @@ class Dialect:
 
     @classmethod
     def context(cls, file: str, setup: MachineSetup, diagnostics: Diagnostics) -> Context:
-        return Context(file, setup, diagnostics, cls.NAME, cls.CYCLE_WORDS)
+        ctx = Context(file, setup, diagnostics, cls.NAME, cls.CYCLE_WORDS)
+        ctx.reader = cls.READER
+        return ctx
 
 
 def _is_package(module: str) -> bool:

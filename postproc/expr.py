@@ -18,7 +18,7 @@ from typing import Any, Protocol, Union
 from lxml import etree
 
 from .errors import ConfigError, ProgramError
-from .xmlio import XFactory, XmlNode, where
+from .xmlio import register_computed_value_reader, XFactory, XmlNode, where
 
 Value = Union[float, None]
 """What an expression evaluates to: a number, or None for Fanuc's vacant value."""
@@ -311,9 +311,4 @@ class Env(Protocol):
         variable the program may not read or whose value only the machine knows (``#5021``)."""
 
 
-
-def evaluate(expr: Expr, env: Env) -> Value:
-    """The value of ``expr`` in ``env`` (None: a vacant variable read bare). The semantics of every
-    operator and function, and what was verified, are in ``postproc.evaluation``."""
-    from .evaluation import evaluate as run
-    return run(expr, env)
+register_computed_value_reader(expr_from_xml)

@@ -194,9 +194,21 @@ def computed_value(el: etree._Element, name: str) -> Any:
             kids = [c for c in child if isinstance(c.tag, str)]
             if len(kids) != 1:
                 raise ConfigError(f"<Value of=\"{name}\"> holds exactly one expression", where(child))
-            from .expr import expr_from_xml  # late: expressions are XML nodes themselves
-            return expr_from_xml(kids[0])
+            if _computed_reader is None:
+                raise ConfigError("no expression reader is registered for <Value>", where(child))
+            return _computed_reader(kids[0])
     return None
+
+
+_computed_reader: Callable[[etree._Element], Any] | None = None
+"""Reads the expression inside ``<Value>``: registered by ``postproc.expr`` (the expressions know this
+module, not the other way round)."""
+
+
+def register_computed_value_reader(reader: Callable[[etree._Element], Any]) -> None:
+    """Set how ``computed_value`` reads an expression element; idempotent."""
+    global _computed_reader
+    _computed_reader = reader
 
 
 def decode(kind: type, raw: str) -> Any:

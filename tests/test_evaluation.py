@@ -7,8 +7,9 @@ import math
 import pytest
 
 from postproc.evaluation import MappingEnv, TOLERANCE_EQUAL, describe, evaluate_number, var_key
+from postproc.evaluation import evaluate
 from postproc.expr import (
-    BINARY_OPS, FUNCTIONS, Binary, EvalError, Expr, Func, Num, Unary, Vacancy, Var, evaluate,
+    BINARY_OPS, FUNCTIONS, Binary, EvalError, Expr, Func, Num, Unary, Vacancy, Var,
 )
 
 FANUC = MappingEnv({1: 3.0, 2: -2.0, 3: 0.0, 4: 25.0}, Vacancy.FANUC)

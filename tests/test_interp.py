@@ -23,6 +23,7 @@ from postproc.ir import Block, ProgramStart, Sequence
 from postproc.setup import Limits, MachineSetup
 from postproc.source_map import ExecutedBlock
 from postproc.context import Context
+from postproc.plugins import default_registry
 
 
 class FanucLike(ProgramSyntax):
@@ -84,6 +85,7 @@ def run(program: P | Iterable[Block], host: type[ProgramSyntax] = FanucLike, fil
     if limits is not None:
         setup.limits = limits
     ctx = Context(file, setup, Diagnostics(ErrorLevel.RAISE), "fanuc")
+    ctx.reader = default_registry().dialect("fanuc").READER
     ctx.program_mode = "execute"
     blocks = program.blocks if isinstance(program, P) else program
     out = list(host().process(iter(blocks), ctx))
@@ -390,6 +392,7 @@ def test_keep_mode_passes_the_very_same_blocks():
     p(control=While("1", Num(1.0)))
     p(control=EndWhile("1"))
     ctx = Context("main.nc", MachineSetup(), Diagnostics(), "fanuc")
+    ctx.reader = default_registry().dialect("fanuc").READER
     assert ctx.program_mode == "keep"
     out = list(FanucLike().process(iter(p.blocks), ctx))
     assert all(a is b_ for a, b_ in zip(out, p.blocks)) and len(out) == 2
@@ -405,6 +408,7 @@ def test_a_straight_program_streams_without_buffering():
     pulled = [0]
     setup = MachineSetup(limits=Limits(kept_prefix=50))
     ctx = Context("main.nc", setup, Diagnostics(), "fanuc")
+    ctx.reader = default_registry().dialect("fanuc").READER
     ctx.program_mode = "execute"
     count = 0
     for block in FanucLike().process(_straight(100_000, pulled), ctx):
@@ -428,6 +432,7 @@ def test_only_the_bounded_prefix_is_kept_for_jumps_back():
     pulled = [0]
     setup = MachineSetup(limits=Limits(kept_prefix=1000))
     ctx = Context("main.nc", setup, Diagnostics(ErrorLevel.RAISE), "fanuc")
+    ctx.reader = default_registry().dialect("fanuc").READER
     ctx.program_mode = "execute"
     jump = Block(100_001, "GOTO 1", "\n")
     jump.add(Goto(Num(1.0)))
@@ -454,9 +459,9 @@ def test_only_the_bounded_prefix_is_kept_for_jumps_back():
 
 def test_a_jump_back_into_the_kept_prefix_rereads_it():
     ctx = Context("main.nc", MachineSetup(), Diagnostics(ErrorLevel.RAISE), "fanuc")
+    ctx.reader = default_registry().dialect("fanuc").READER
     ctx.program_mode = "execute"
     lines = ["G91\n", "N10 G1 X1.\n"]
-    from postproc.plugins import default_registry
     blocks = list(default_registry().dialect("fanuc").READER(ctx).read(lines))
     counter = Block(3, "#1=#1+1", "\n")
     counter.add(Assign([(v(1), b("add", v(1), 1))]))

@@ -77,11 +77,11 @@ class ProgramSyntax(Syntax):
     # -- reading ---------------------------------------------------------------------------------
     def read_lines(self, lines: Iterable[str], file: str, ctx: Context, diagnostics: Diagnostics) -> list[Block]:
         """Blocks of ``lines`` through the dialect's own reader (reporting into ``diagnostics``)."""
-        from ..plugins import default_registry
-        reader = default_registry().dialect(ctx.dialect).READER
+        reader = ctx.reader
         if reader is None:
             return []
         sub = Context(file, ctx.setup, diagnostics, ctx.dialect)
+        sub.reader = reader
         return list(reader(sub).read(lines))
 
     def library_file(self, name: str, ctx: Context) -> Path | None:

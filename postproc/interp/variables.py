@@ -1,4 +1,4 @@
-"""Variables of a running program: the ``Env`` that ``postproc.expr.evaluate`` reads, per dialect family.
+"""Variables of a running program: the ``Env`` that ``postproc.evaluation.evaluate`` reads, per dialect family.
 
 Two families (the contract's section 4):
 - ``FanucVariables`` (Custom Macro B): locals ``#1``-``#33`` per macro level (G65 and modal calls open a
