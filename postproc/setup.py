@@ -110,6 +110,9 @@ class Limits(_Group):
     """Nested subprogram and macro calls."""
     kept_prefix: int = Field(100_000, ge=0)
     """Blocks of the straight start of a program kept for a later backward jump into it."""
+    line_length: int = Field(65_536, ge=1, le=1 << 30)
+    """Characters in one program line: a longer line is a located error before it is read (no
+    controller accepts anything near the default 64 kB)."""
 
 
 class Templates(BaseModel):
