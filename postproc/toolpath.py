@@ -27,6 +27,7 @@ import math
 from typing import Any, Callable, Iterable, Iterator
 
 from .api import gc_paused, read_blocks
+from .block_rules import NO_FEED, check_blocks, feed_problem, needs_feed, speed_problem
 from .dialect import Dialect
 from .errors import Diagnostics, Location, PostprocError, ProgramError, UnsupportedError
 from .geometry import ARC_TOLERANCE_MM, CENTRE_KEYS, PLACES, centre_from_radius
@@ -171,7 +172,15 @@ class Simulator:
         self.incremental = modal.distance == "incremental"
         s = sections.get("Feed")
         if s is not None:
+            problem = feed_problem(s.value)  # type: ignore[attr-defined]
+            if problem is not None:
+                raise ProgramError(problem, self._at(None, "F"))
             self._set_feed(s.value)  # type: ignore[attr-defined]
+        s = sections.get("SpindleSpeed")
+        if s is not None:
+            problem = speed_problem(s.rpm)  # type: ignore[attr-defined]
+            if problem is not None:
+                raise ProgramError(problem, self._at(None, "S"))
 
     def spindle_event(self, line: int, direction: str, emit: Callable[[Event], None]) -> None:
         """A spindle change; stopping a stopped spindle is no event (two programs that differ only
@@ -221,6 +230,8 @@ class Simulator:
                 ref[axis] = 0.0
             self.line_move("rapid", ref, line, emit)
             return
+        if self.feed is None and needs_feed(m):
+            raise ProgramError(NO_FEED, self._at(block))
         machine = "MachineCoordinates" in block.sections
         target = self.target(block, m.axes, absolute or machine)
         if mode == "rapid":
@@ -315,7 +326,7 @@ class Simulator:
 
     def _feed_into(self, ev: Event) -> None:
         if self.feed is None:
-            raise ProgramError("a feed move with no feed rate (program F first)", self._at())
+            raise ProgramError(NO_FEED, self._at())
         ev["f"] = num(self.feed)
         if self.header_mode is None:
             self.header_mode = self.modal.feed_mode
@@ -402,7 +413,8 @@ def toolpath_events(lines: Iterable[str], *, file: str, dialect: str | type[Dial
     with gc_paused():
         ctx, blocks = read_blocks(lines, file, dialect, setup, diagnostics)
         ctx.program_mode = "execute"  # a simulation runs the program's loops, jumps and calls
-        lowered = lower_for(blocks, ctx, ToolpathTarget, "error", registry.lowerings)
+        steps = [step for step in registry.lowerings if step is not check_blocks]  # the simulator checks
+        lowered = lower_for(blocks, ctx, ToolpathTarget, "error", steps)
         yield from simulate(lowered, ctx)
     if check:
         diagnostics.check()

@@ -295,7 +295,7 @@ def program_block(draw):
 
 @st.composite
 def program(draw):
-    lines = ["%", "O" + draw(_digits), "G21 G17 G90 G00 X0. Y0. Z0."]
+    lines = ["%", "O" + draw(_digits), "G21 G17 G90 G00 X0. Y0. Z0. F100."]  # F: a feed move needs one
     lines += draw(st.lists(program_block(), max_size=12))
     lines.append(draw(st.sampled_from(["M30", "M30 (END)", "%"])))
     eols = draw(st.lists(st.sampled_from(["\n", "\r\n"]), min_size=len(lines), max_size=len(lines)))
