@@ -27,7 +27,7 @@ import math
 from typing import Any, Callable, Iterable, Iterator
 
 from .api import gc_paused, read_blocks
-from .block_rules import NO_FEED, check_blocks, feed_problem, needs_feed, speed_problem
+from .block_rules import NO_FEED, check_blocks, needs_feed
 from .dialect import Dialect
 from .errors import Diagnostics, Location, PostprocError, ProgramError, UnsupportedError
 from .geometry import ARC_TOLERANCE_MM, CENTRE_KEYS, PLACES, centre_from_radius
@@ -172,15 +172,7 @@ class Simulator:
         self.incremental = modal.distance == "incremental"
         s = sections.get("Feed")
         if s is not None:
-            problem = feed_problem(s.value)  # type: ignore[attr-defined]
-            if problem is not None:
-                raise ProgramError(problem, self._at(None, "F"))
             self._set_feed(s.value)  # type: ignore[attr-defined]
-        s = sections.get("SpindleSpeed")
-        if s is not None:
-            problem = speed_problem(s.rpm)  # type: ignore[attr-defined]
-            if problem is not None:
-                raise ProgramError(problem, self._at(None, "S"))
 
     def spindle_event(self, line: int, direction: str, emit: Callable[[Event], None]) -> None:
         """A spindle change; stopping a stopped spindle is no event (two programs that differ only

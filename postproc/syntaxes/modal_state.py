@@ -4,10 +4,13 @@ Runs after a dialect's block syntax and the cycle resolution: it applies each bl
 to ``ctx.state`` (``ModalState.apply``, the one place that says how a section changes the modal state,
 shared with the writer and the simulator) and tracks the position, so later steps (cycle expansion, lowering) know where the
 tool is. A position becomes unknown (None) after moves the IR cannot place, such as a reference return.
+It also refuses a negative F or S (``postproc.block_rules``): every reading passes here, so
+``translate``, ``toolpath`` and ``verify`` refuse them alike.
 """
 
 from __future__ import annotations
 
+from postproc.block_rules import check_values
 from postproc.ir import Block, Motion
 from postproc.context import Context
 from postproc.syntax import Syntax
@@ -27,6 +30,8 @@ class ModalStateSyntax(Syntax):
         motion = sections.get("Motion")
         if motion is not None:
             self._move(block, ctx, motion)  # type: ignore[arg-type]
+        if "Feed" in sections or "SpindleSpeed" in sections:
+            check_values(block, ctx)  # after the state is carried: an error keeps the block's settings
 
     def _move(self, block: Block, ctx: Context, motion: Motion) -> None:
         state = ctx.state
