@@ -6,6 +6,7 @@ from typing import Callable
 
 from . import cycles
 from .block_rules import check_blocks
+from .program_end import comment_after_end
 from .control import register_control
 from .cycles.lowering import expand_canned_cycles
 from .hookspecs import hookimpl
@@ -34,3 +35,4 @@ def postproc_register_xml(factory: XFactory) -> None:
 def postproc_register_lowerings(register: Callable[[Lowering], None]) -> None:
     register(check_blocks)  # first: it sees every expansion before a native target's are dropped
     register(expand_canned_cycles)
+    register(comment_after_end)

@@ -31,8 +31,9 @@ TARGETS = {
 
 def _program(words: tuple[str, ...]) -> str:
     extra = " ".join(w for w in words if w)
+    tail = "" if "M30" in words else "X8.\nG80\nM5 M9\nM30\n"  # nothing live after the end
     return ("G21 G17 G90\nT1 M6\nS800 M3 M8\nG0 X0. Y0. Z10.\n"
-            f"G98 G81 X5. Y5. Z-1. R2. F100. {extra}\nX8.\nG80\nM5 M9\nM30\n")
+            f"G98 G81 X5. Y5. Z-1. R2. F100. {extra}\n{tail}")
 
 
 def _events(program: str, dialect: str, setup: MachineSetup) -> list[dict[str, object]]:
