@@ -78,12 +78,23 @@ def comment_after_end(blocks: Iterator[Block], ctx: Context, target: type[Dialec
 
 def _comment_after_end(blocks: Iterator[Block], ctx: Context, keep_subs: bool) -> Iterator[Block]:
     tracker = EndTracker()
+    started = False
+    for block in blocks:  # before the end: kept cheap, every block of the program passes here
+        sections = block.sections
+        if "ProgramControl" in sections or "TapeMark" in sections:
+            tracker.started = started
+            tracker.before_end(sections)
+            yield block
+            if tracker.ended:
+                break
+            started = tracker.started
+            continue
+        if sections:
+            started = True
+        yield block
     warned = False
     for block in blocks:
         sections = block.sections
-        if tracker.before_end(sections):
-            yield block
-            continue
         kind = tracker.after_end(sections)
         if kind == "inert" or (kind == "sub" and keep_subs):
             yield block
