@@ -78,3 +78,10 @@ def test_linuxcnc_semicolon_comment_keeps_any_character() -> None:
     out = io.StringIO()
     translate(io.StringIO(program), out, file="p.ngc", source="linuxcnc", target="linuxcnc")
     assert out.getvalue() == program
+
+
+@pytest.mark.parametrize("dialect", ["fanuc", "linuxcnc"])
+def test_signed_g_code_is_an_unknown_code_not_an_internal_error(dialect: str) -> None:
+    """'G-.0' was an int('-') ValueError (found by the reader's fuzz test); never read as G0."""
+    assert _errors("G-.0\nG-1 X1.\n", dialect) == ["p.nc:1:1: error: unknown G code G-.0",
+                                                  "p.nc:2:1: error: unknown G code G-1"]
