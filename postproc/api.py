@@ -15,6 +15,7 @@ from typing import Callable, Iterable, Iterator, TextIO
 from .dialect import Dialect
 from .errors import Diagnostics, ErrorLevel, PostprocError, UsageError
 from .ir import Block
+from .lines import checked_lines
 from .lower import lower_for
 from .plugins import Registry, default_registry
 from .interp.step import ProgramSyntax
@@ -50,7 +51,7 @@ def read_blocks(lines: Iterable[str], file: str, dialect: type[Dialect], setup: 
     if prepare is not None:
         prepare(ctx)
     pipeline = dialect.pipeline(setup)
-    blocks = dialect.READER(ctx).read(lines)
+    blocks = dialect.READER(ctx).read(checked_lines(lines, ctx))
     return ctx, pipeline.run(blocks, ctx)
 
 

@@ -5,6 +5,8 @@ from __future__ import annotations
 from typing import Callable
 
 from . import cycles
+from .block_rules import check_blocks
+from .program_end import comment_after_end
 from .control import register_control
 from .cycles.lowering import expand_canned_cycles
 from .hookspecs import hookimpl
@@ -31,4 +33,6 @@ def postproc_register_xml(factory: XFactory) -> None:
 
 @hookimpl
 def postproc_register_lowerings(register: Callable[[Lowering], None]) -> None:
+    register(check_blocks)  # first: it sees every expansion before a native target's are dropped
     register(expand_canned_cycles)
+    register(comment_after_end)

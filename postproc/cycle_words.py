@@ -37,6 +37,9 @@ class CycleWords:
     repeat: tuple[str, ...] | None = None
     """The repeat-count letters in order of preference, or None to take them from the set-up's
     ``Input repeatAddress`` (K, L or K+L)."""
+    max_repeat: int | None = None
+    """The largest repeat count the controller accepts (Fanuc K: 9999), None when it sets no limit of
+    its own (the set-up's ``<Limits movesPerBlock>`` still bounds the expansion)."""
 
     def bottom_letter(self, plane: str, normal: str) -> str:
         """The hole bottom's letter in ``plane``, whose normal axis is ``normal``."""

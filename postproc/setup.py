@@ -111,6 +111,12 @@ class Limits(_Group):
     """Nested subprogram and macro calls."""
     kept_prefix: int = Field(100_000, ge=0)
     """Blocks of the straight start of a program kept for a later backward jump into it."""
+    moves_per_block: int = Field(100_000, ge=1)
+    """Moves (and dwells, spindle actions) one block may expand to: a canned cycle with a huge repeat
+    count or a tiny peck is a located error before it fills memory."""
+    line_length: int = Field(65_536, ge=1, le=1 << 30)
+    """Characters in one program line: a longer line is a located error before it is read (no
+    controller accepts anything near the default 64 kB)."""
 
 
 class Templates(BaseModel):

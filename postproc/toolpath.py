@@ -15,7 +15,9 @@ Assumptions (a simulator knows no machine data):
 - Arc centres ``cx, cy, cz`` are absolute; on the axis normal to the plane the centre carries the arc's
   start value. ``plane`` is the IR's name of the plane: "XY", "ZX" or "YZ".
 - Optional-skip blocks (``/``) are executed, as with the block-delete switch off.
-- After the program end (M02/M30) no more events are emitted; the rest is still read and checked.
+- After the program end (M02/M30, or a closing ``%``) no more events are emitted; the rest is still
+  read and checked, and the lines of live blocks there (``postproc.program_end``) are recorded in
+  ``Simulator.live_after_end`` for ``verify``.
 - A T word alone is a preselection on a mill (the ``tool`` event comes with the tool change, M06);
   on a lathe set-up T indexes the turret and emits the event itself.
 - Zero-length moves (after rounding to 6 decimals) are dropped; a full circle is not zero-length.
@@ -27,6 +29,8 @@ import math
 from typing import Any, Callable, Iterable, Iterator
 
 from .api import gc_paused, read_blocks
+from .block_rules import NO_FEED, check_blocks, needs_feed
+from .program_end import EndTracker, comment_after_end
 from .dialect import Dialect
 from .errors import Diagnostics, Location, PostprocError, ProgramError, UnsupportedError
 from .geometry import ARC_TOLERANCE_MM, CENTRE_KEYS, PLACES, centre_from_radius
@@ -43,6 +47,11 @@ HEADER_LOOKAHEAD = 1000
 """Events held back at most while waiting for the first feed move to fix the header's feed mode."""
 LINEAR_AXES = frozenset("XYZUVW")
 """Axes converted from inches; rotary axes (A, B, C) are in degrees whatever the length unit."""
+
+
+TRANSLATE_ONLY = (check_blocks, comment_after_end)
+"""Generic lowering steps a simulation skips: it checks the feed itself, and it must see the blocks after
+the program end as they are written (to record the live ones)."""
 
 
 class ToolpathTarget(Dialect):
@@ -100,13 +109,19 @@ class Simulator:
         turning spindle first, as a tool changer does, and stopping a stopped spindle is no event."""
         self.lathe = setup.input.machine_type == "lathe"
         self.ended = False
+        self.end = EndTracker()
+        self.live_after_end: list[int] = []
+        """Lines of the live blocks after the program end (code a streamed controller would run)."""
         self.current: Block | None = None
         """The block being simulated (for error locations)."""
 
     # -- one block ---------------------------------------------------------------------------------
     def block(self, block: Block, emit: Callable[[Event], None]) -> None:
         sections = block.sections
-        if not sections or self.ended:
+        if not sections:
+            return
+        if self.ended or "TapeMark" in sections:
+            self._tape_or_after_end(block)
             return
         self.current = block
         get: Callable[[str], Any] = sections.get
@@ -166,6 +181,16 @@ class Simulator:
         if s is not None:
             self.program_control(line, s.kind, emit)
 
+    def _tape_or_after_end(self, block: Block) -> None:
+        """A ``%`` closes the program once it has content; after the end, live blocks are recorded."""
+        end = self.end
+        if not self.ended:
+            end.started = self.current is not None
+            end.before_end(block.sections)
+            self.ended = end.ended
+        elif end.after_end(block.sections) == "live":
+            self.live_after_end.append(block.line)
+
     def apply_modal(self, sections: dict[str, Section]) -> None:
         """Apply the block's modal settings (before its motion, as a controller does); its feed is
         converted with the units and feed mode the block leaves in force."""
@@ -209,7 +234,7 @@ class Simulator:
             emit({"line": line, "event": "stop", "optional": kind == "optional_stop"})
         elif kind in ("end", "end_rewind"):
             emit({"line": line, "event": "end"})
-            self.ended = True
+            self.ended = self.end.ended = True
         else:
             raise UnsupportedError(f"program control '{kind}' cannot be simulated")
 
@@ -225,6 +250,8 @@ class Simulator:
                 ref[axis] = 0.0
             self.line_move("rapid", ref, line, emit)
             return
+        if self.feed is None and needs_feed(m):
+            raise ProgramError(NO_FEED, self._at(block))
         machine = "MachineCoordinates" in block.sections
         target = self.target(block, m.axes, absolute or machine)
         if mode == "rapid":
@@ -319,7 +346,7 @@ class Simulator:
 
     def _feed_into(self, ev: Event) -> None:
         if self.feed is None:
-            raise ProgramError("a feed move with no feed rate (program F first)", self._at())
+            raise ProgramError(NO_FEED, self._at())
         ev["f"] = num(self.feed)
         if self.header_mode is None:
             self.header_mode = self.modal.feed_mode
@@ -353,7 +380,7 @@ def header(ctx: Context, feed_mode: str | None) -> Event:
     return head
 
 
-def simulate(blocks: Iterable[Block], ctx: Context) -> Iterator[Event]:
+def simulate(blocks: Iterable[Block], ctx: Context, live_after_end: list[int] | None = None) -> Iterator[Event]:
     """Blocks (already lowered for ``ToolpathTarget``) -> the header, then events in execution order.
 
     Errors are reported to ``ctx.diagnostics`` with the block's location and the block is skipped;
@@ -361,6 +388,8 @@ def simulate(blocks: Iterable[Block], ctx: Context) -> Iterator[Event]:
     first feed move fixes the header's feed mode (at most ``HEADER_LOOKAHEAD`` of them).
     """
     sim = Simulator(ctx)
+    if live_after_end is not None:
+        sim.live_after_end = live_after_end  # the caller reads the lines recorded there
     report = ctx.diagnostics.error
     held: list[Event] = []
     holding = True
@@ -394,10 +423,12 @@ def simulate(blocks: Iterable[Block], ctx: Context) -> Iterator[Event]:
 
 def toolpath_events(lines: Iterable[str], *, file: str, dialect: str | type[Dialect],
                     setup: MachineSetup | None = None, registry: Registry | None = None,
-                    diagnostics: Diagnostics | None = None, check: bool = True) -> Iterator[Event]:
+                    diagnostics: Diagnostics | None = None, check: bool = True,
+                    live_after_end: list[int] | None = None) -> Iterator[Event]:
     """Read a program in ``dialect`` and yield its toolpath (header first). Raises ``ErrorList`` at the
     end when the program had errors (unless ``check`` is False: the caller then checks
-    ``diagnostics``); events already yielded then belong to a failed run."""
+    ``diagnostics``); events already yielded then belong to a failed run. ``live_after_end``, if given,
+    receives the lines of live blocks after the program end."""
     setup = setup or MachineSetup()
     diagnostics = diagnostics or Diagnostics()
     registry = registry or default_registry()
@@ -406,7 +437,8 @@ def toolpath_events(lines: Iterable[str], *, file: str, dialect: str | type[Dial
     with gc_paused():
         # a simulation runs the program's loops, jumps and calls
         ctx, blocks = read_blocks(lines, file, dialect, setup, diagnostics, program_mode="execute")
-        lowered = lower_for(blocks, ctx, ToolpathTarget, "error", registry.lowerings)
-        yield from simulate(lowered, ctx)
+        steps = [step for step in registry.lowerings if step not in TRANSLATE_ONLY]
+        lowered = lower_for(blocks, ctx, ToolpathTarget, "error", steps)
+        yield from simulate(lowered, ctx, live_after_end)
     if check:
         diagnostics.check()

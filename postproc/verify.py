@@ -271,6 +271,18 @@ def _differ(a: Move | Event | None, b: Move | Event | None, report: Report) -> s
     return None
 
 
+def compare_after_end(report: Report, lines_in: list[int], lines_out: list[int]) -> None:
+    """Live blocks after the program end run on a controller that is streamed to: the translation having
+    them where the source has none is a structural mismatch (reported when nothing before differed).
+    The reverse is the safe translation of dead code (written as comments), not a mismatch. Only their
+    presence is compared: an expanded cycle there is one block in one file and several in the other."""
+    if report.mismatch is not None or not lines_out or lines_in:
+        return
+    report.mismatch = (f"OUT has live blocks after the program end (from line {lines_out[0]}), IN has none "
+                       "(a controller that is streamed to would run them)")
+    report.mismatch_at = (None, lines_out[0])
+
+
 # -- files -----------------------------------------------------------------------------------------
 
 def verify_lines(lines_in: Iterable[str], lines_out: Iterable[str], *, file_in: str, file_out: str,
@@ -283,12 +295,15 @@ def verify_lines(lines_in: Iterable[str], lines_out: Iterable[str], *, file_in: 
     setup = setup or MachineSetup()
     target_setup = target_setup or setup
     diag_in, diag_out = Diagnostics(), Diagnostics()
+    after_in: list[int] = []
+    after_out: list[int] = []
     events_in = toolpath_events(lines_in, file=file_in, dialect=source, setup=setup, registry=registry,
-                                diagnostics=diag_in, check=False)
+                                diagnostics=diag_in, check=False, live_after_end=after_in)
     events_out = toolpath_events(lines_out, file=file_out, dialect=target, setup=target_setup,
-                                 registry=registry, diagnostics=diag_out, check=False)
+                                 registry=registry, diagnostics=diag_out, check=False, live_after_end=after_out)
     report = compare(events_in, events_out, start_in=start_position(setup),
                      start_out=start_position(target_setup), tolerance=tolerance)
+    compare_after_end(report, after_in, after_out)
     errors = diag_in.errors + diag_out.errors
     if errors:
         raise ErrorList(errors)

@@ -53,7 +53,7 @@ def test_every_golden_invalid_case_has_its_expectation():
         assert len(lines) == 2 and lines[1].count(":") == 1, path
 
 
-PROLOGUE = "G21 G17 G90 G54\nG00 X0. Y0. Z50.\n"
+PROLOGUE = "G21 G17 G90 G54\nG00 X0. Y0. Z50. F100.\n"
 """Two good lines before the bad one, so every case below is on line 3."""
 
 OWN = [

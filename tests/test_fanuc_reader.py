@@ -14,7 +14,7 @@ import string
 from pathlib import Path
 
 import pytest
-from hypothesis import HealthCheck, example, given, settings
+from hypothesis import assume, HealthCheck, example, given, settings
 from hypothesis import strategies as st
 
 from postproc.api import read_program, translate
@@ -214,10 +214,19 @@ _gap = st.sampled_from(["", " ", "  ", "\t"])
 _letter = st.sampled_from([c for c in string.ascii_letters if c not in "NnOo"])
 
 
+def _is_call_code(num: str) -> bool:
+    try:
+        return float(num) in (65.0, 66.0, 67.0, 98.0, 99.0)
+    except ValueError:
+        return False
+
+
 @st.composite
 def lexable_line(draw):
     """A line of words (any letter), comments between them, maybe N first and a block delete."""
     words = draw(st.lists(st.tuples(_letter, _number), max_size=6))
+    # M98/M99/G65-G67 are subprogram statements the reader checks (P needed): not plain words
+    assume(not any(letter in "GgMm" and _is_call_code(num) for letter, num in words))
     if draw(st.booleans()):
         words.insert(0, (draw(st.sampled_from("Nn")), draw(_digits)))
     comments = [draw(_comment_text) for _ in range(draw(st.integers(0, 2)))]
@@ -295,7 +304,7 @@ def program_block(draw):
 
 @st.composite
 def program(draw):
-    lines = ["%", "O" + draw(_digits), "G21 G17 G90 G00 X0. Y0. Z0."]
+    lines = ["%", "O" + draw(_digits), "G21 G17 G90 G00 X0. Y0. Z0. F100."]  # F: a feed move needs one
     lines += draw(st.lists(program_block(), max_size=12))
     lines.append(draw(st.sampled_from(["M30", "M30 (END)", "%"])))
     eols = draw(st.lists(st.sampled_from(["\n", "\r\n"]), min_size=len(lines), max_size=len(lines)))

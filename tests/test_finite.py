@@ -15,7 +15,7 @@ from postproc.geometry import MAX_ARC_POINTS, arc_points, centre_from_radius
 from postproc.toolpath import toolpath_events
 from postproc.verify import verify_lines
 
-BIG = "1" + "0" * 200 + "."
+BIG = "1" + "0" * 29 + "."
 """1e200 written out: finite, but its square overflows."""
 BEYOND = "1" + "0" * 400 + "."
 """1e400: beyond the float range (reads as inf)."""
@@ -37,8 +37,9 @@ def test_setup_floats_must_be_finite(tmp_path: Path, element: str, value: str) -
 def test_a_coordinate_beyond_the_float_range_cannot_be_simulated() -> None:
     with pytest.raises(ErrorList) as exc:
         list(toolpath_events(io.StringIO(f"G21 G90\nG0 X{BEYOND}\n"), file="big.nc", dialect="fanuc"))
+    # refused before it is read: no number of more than 30 digits reaches the simulator (postproc.lines)
     assert [str(e) for e in exc.value.errors] == [
-        "big.nc:2:1: error: a value beyond the range of a float (inf) cannot be simulated"]
+        "big.nc:2:5: error: a number with more than 30 digits cannot be read"]
 
 
 def test_toolpath_json_is_strict_and_a_non_finite_value_is_located() -> None:
@@ -56,14 +57,15 @@ def _verify(a: str, b: str) -> tuple[float, int, bool, str | None]:
     return report.max_deviation, report.moves, report.ok, report.mismatch
 
 
-TWO = "2" + "0" * 200 + "."
+TWO = "2" + "0" * 29 + "."
 
 
 def test_verify_near_the_float_range_gives_the_right_answer() -> None:
-    """The squares of 1e200 overflow: verify raised OverflowError (an internal error)."""
+    """The largest numbers a program can hold (30 digits): verify measures them exactly (its distances
+    are overflow-safe: squares of 1e200 used to raise OverflowError)."""
     line = f"G21 G90 G1 F100.\nX{BIG} Y{BIG}\nX{TWO} Y{TWO}\n"
     assert _verify(line, line)[::2] == (0.0, True)
-    assert _verify(f"G21 G90 G1 F100. X{BIG}\n", f"G21 G90 G1 F100. X{TWO}\n") == (1e200, 1, False, None)
+    assert _verify(f"G21 G90 G1 F100. X{BIG}\n", f"G21 G90 G1 F100. X{TWO}\n") == (1e29, 1, False, None)
 
 
 def test_verify_does_not_merge_a_corner_near_the_float_range() -> None:

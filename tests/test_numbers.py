@@ -98,7 +98,7 @@ def test_a_number_beyond_the_float_range_is_a_located_error() -> None:
     with pytest.raises(ErrorList) as exc:
         translate(io.StringIO(program), io.StringIO(), file="big.nc", source="fanuc", target="linuxcnc")
     assert [str(e) for e in exc.value.errors] == [
-        "big.nc:2:1: error: cannot write the number inf: it is beyond the range of a float"]
+        "big.nc:2:5: error: a number with more than 30 digits cannot be read"]
 
 
 @pytest.mark.parametrize("attribute, message", [

@@ -28,8 +28,9 @@ class Fanuc(Dialect):
     READER = FanucReader
     WRITER = FanucWriter
     PIPELINE_FILE = "fanuc.xml"
-    CYCLE_WORDS = rs274_cycle_words(CODES, None)
-    """R level, Q peck/shift, P dwell (ms); K, L or K+L repeats per the set-up; cycles named G73-G89."""
+    CYCLE_WORDS = rs274_cycle_words(CODES, None, max_repeat=9999)
+    """R level, Q peck/shift, P dwell (ms); K, L or K+L repeats (0-9999) per the set-up; cycles named
+    G73-G89."""
     NATIVE_CYCLES = ALL_MILLING_CYCLES
     """G73, G74, G76, G81-G89 all run natively."""
     PROGRAMS = True

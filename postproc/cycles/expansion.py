@@ -25,19 +25,41 @@ from .semantics import FANUC, SEMANTICS
 
 EPS = 1e-9
 """Two levels closer than this are the same level (float noise of repeated increments)."""
+UNBOUNDED = 1 << 62
+"""No bound on the items of one expansion (the callers that read a set-up pass its
+``<Limits movesPerBlock>``)."""
+
+
+class TooManyMoves(ProgramError):
+    """An expansion would exceed the set-up's bound on moves per block. ``role`` names the cycle word to
+    point at: "repeat" (the repeat count) or "peck" (the peck depth)."""
+
+    def __init__(self, message: str, role: str) -> None:
+        super().__init__(message)
+        self.role = role
 
 
 class ToolPath:
-    """Collects the items of one expansion, tracking where the tool is."""
+    """Collects the items of one expansion, tracking where the tool is. The items are a list (the
+    writer, the simulator and the lowering steps walk them more than once), bounded by ``limit``: at
+    most ``limit`` items are ever held, then ``TooManyMoves``."""
 
-    __slots__ = ("axes", "pos", "items", "feed")
+    __slots__ = ("axes", "pos", "items", "feed", "limit")
 
-    def __init__(self, cycle: CannedCycle) -> None:
+    def __init__(self, cycle: CannedCycle, limit: int = UNBOUNDED) -> None:
         self.axes = PLANE_AXES[cycle.plane]
         self.pos: dict[str, float] = dict(cycle.start)
         self.items: list[Section] = []
         self.feed = cycle.feed
         """Feed in force: the block's own F is already applied, so a Feed item appears only on a change."""
+        self.limit = limit
+
+    def add(self, item: Section) -> None:
+        """Append an item, counting it against the bound on moves per block."""
+        if len(self.items) >= self.limit:
+            raise TooManyMoves(f"the expansion makes more than {self.limit} moves in one block (the set-up's "
+                               "<Limits movesPerBlock>)", "repeat")
+        self.items.append(item)
 
     def level(self) -> float:
         return self.pos[self.axes[2]]
@@ -48,7 +70,7 @@ class ToolPath:
     def cut(self, level: float, feed: float | None) -> None:
         """Feed along the drilling axis (down into the hole, or up in back boring)."""
         if feed is not None and feed != self.feed:
-            self.items.append(Feed(feed))
+            self.add(Feed(feed))
             self.feed = feed
         self._move("linear", None, None, level)
 
@@ -63,22 +85,22 @@ class ToolPath:
             return
         if missing:
             raise ProgramError(f"the tool's {missing[0]} position is unknown before the cycle")
-        self.items.append(Motion(mode, {k: target[k] for k in "XYZ"}))
+        self.add(Motion(mode, {k: target[k] for k in "XYZ"}))
         self.pos = target
 
     def dwell(self, seconds: float | None, always: bool = False) -> None:
         """A dwell; Fanuc emits none without P, LinuxCNC's interpreter always does (``always``)."""
         if seconds or always:
-            self.items.append(Dwell(float(seconds or 0.0)))
+            self.add(Dwell(float(seconds or 0.0)))
 
     def spindle(self, direction: str) -> None:
-        self.items.append(SpindleControl(direction))
+        self.add(SpindleControl(direction))
 
     def orient(self, angle: float | None) -> None:
-        self.items.append(SpindleOrientation(angle or 0.0))
+        self.add(SpindleOrientation(angle or 0.0))
 
     def program_stop(self) -> None:
-        self.items.append(ProgramControl("stop"))
+        self.add(ProgramControl("stop"))
 
     def end(self) -> dict[str, float]:
         return dict(self.pos)
@@ -116,21 +138,35 @@ class CycleExpansion(Syntax):
         if not isinstance(cycle, CannedCycle) or cycle.kind not in self.KINDS:
             return
         if "CompoundMotion" not in block.sections:
-            block.add(CompoundMotion(cycle.kind, self.expand(cycle)[0]))
+            limit = UNBOUNDED if ctx is None else ctx.setup.limits.moves_per_block  # None: built outside a run
+            block.add(CompoundMotion(cycle.kind, self.expand(cycle, limit)[0]))
 
-    def expand(self, cycle: CannedCycle) -> tuple[list[Section], dict[str, float]]:
-        """The items of the cycle and where the tool is when it ends."""
-        path = ToolPath(cycle)
+    def expand(self, cycle: CannedCycle, limit: int = UNBOUNDED) -> tuple[list[Section], dict[str, float]]:
+        """The items of the cycle and where the tool is when it ends; ``TooManyMoves`` when they would be
+        more than ``limit`` (refused before expanding when the count is known in advance)."""
+        path = ToolPath(cycle, limit)
         if cycle.repeat <= 0:
             return [], path.end()
         for name in ("initial", "r", "bottom"):
             level(cycle, name)
+        per_hole = self.least_moves_per_hole(cycle)
+        if cycle.repeat * per_hole > limit:
+            if per_hole > 1:
+                where = f" at {cycle.repeat} holes" if cycle.repeat > 1 else ""
+                raise TooManyMoves(f"{per_hole} pecks per hole{where} make more than {limit} moves in one block "
+                                   "(the set-up's <Limits movesPerBlock>)", "peck")
+            raise TooManyMoves(f"{cycle.repeat} holes make more than {limit} moves in one block (the set-up's "
+                               "<Limits movesPerBlock>)", "repeat")
         rules = SEMANTICS.get(cycle.semantics, FANUC)
         if rules.rise_to_r and level(cycle, "initial") < level(cycle, "r") - EPS:
             path.rapid(level=cycle.r)
         for a, b in holes(cycle):
             self.hole(path, cycle, a, b)
         return path.items, path.end()
+
+    def least_moves_per_hole(self, cycle: CannedCycle) -> int:
+        """A lower bound on the moves one hole takes, known before expanding (a cut to the bottom)."""
+        return 1
 
     @abc.abstractmethod
     def hole(self, path: ToolPath, cycle: CannedCycle, a: float, b: float) -> None:

@@ -2,9 +2,11 @@
 
 from __future__ import annotations
 
+import math
+
 from postproc.errors import ProgramError
 
-from .expansion import EPS, CycleExpansion, ToolPath, level
+from .expansion import EPS, UNBOUNDED, CycleExpansion, ToolPath, level
 from .section import CannedCycle
 
 
@@ -20,6 +22,16 @@ class PeckDrillingSyntax(CycleExpansion):
     XNAME = "PeckDrillingSyntax"
     __slots__ = ()
     KINDS = frozenset(("peck_chip", "peck_deep"))
+
+    def least_moves_per_hole(self, cycle: CannedCycle) -> int:
+        """One cut per peck: depth / Q, counted before expanding (a tiny Q is refused at once)."""
+        r, bottom, q = level(cycle, "r"), level(cycle, "bottom"), cycle.q
+        if q is None or q <= 0 or r <= bottom:
+            return 1
+        pecks = (r - bottom) / q
+        if not pecks < UNBOUNDED:
+            return UNBOUNDED  # Q so small the count overflows
+        return max(1, math.ceil(pecks - EPS))
 
     def hole(self, path: ToolPath, cycle: CannedCycle, a: float, b: float) -> None:
         self.position(path, cycle, a, b)

@@ -32,7 +32,7 @@ from postproc.xmlio import DEFAULT
 from .back_boring import BackBoringSyntax
 from .boring import BoringSyntax
 from .drilling import DrillingSyntax
-from .expansion import CycleExpansion
+from .expansion import CycleExpansion, TooManyMoves
 from .fine_boring import FineBoringSyntax
 from .manual_boring import ManualBoringSyntax
 from .peck_drilling import PeckDrillingSyntax
@@ -220,7 +220,11 @@ class CannedCycleResolveSyntax(Syntax):
             spindle=spindle, motion=state.motion, start=here, position=position, step=step,
             shift=_shift(ctx, kind, q, first, second), words=words,
         )
-        items, end = self._by_kind[kind].expand(cycle)
+        try:
+            items, end = self._by_kind[kind].expand(cycle, ctx.setup.limits.moves_per_block)
+        except TooManyMoves as err:
+            repeat = next((k for k in cw.repeat_letters(ctx.setup.input.repeat_address) if k in words), None)
+            raise fail(f"{code}: {err.message}", cw.peck if err.role == "peck" else repeat) from None
         block.add(cycle)
         block.add(CompoundMotion(kind, items))
         sections.pop("CycleCall", None)
@@ -245,6 +249,10 @@ class CannedCycleResolveSyntax(Syntax):
                 break
         if letter is not None and repeat < 0:
             raise fail(f"repeat count {letter} cannot be negative", letter)
+        most = _cycle_words(ctx).max_repeat
+        if letter is not None and most is not None and repeat > most:
+            raise fail(f"repeat count {letter}{repeat} is more than the controller accepts ({letter}0-{letter}{most})",
+                       letter)
         if letter is not None and repeat == 0 and rules.zero_repeat_error:
             raise fail(f"repeat count {letter} cannot be 0", letter)
         first, second, normal = PLANE_AXES[plane]

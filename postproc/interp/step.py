@@ -77,12 +77,13 @@ class ProgramSyntax(Syntax):
     # -- reading ---------------------------------------------------------------------------------
     def read_lines(self, lines: Iterable[str], file: str, ctx: Context, diagnostics: Diagnostics) -> list[Block]:
         """Blocks of ``lines`` through the dialect's own reader (reporting into ``diagnostics``)."""
+        from ..lines import checked_lines
         reader = ctx.reader
         if reader is None:
             return []
         sub = Context(file, ctx.setup, diagnostics, ctx.dialect)
         sub.reader = reader
-        return list(reader(sub).read(lines))
+        return list(reader(sub).read(checked_lines(lines, sub)))
 
     def library_file(self, name: str, ctx: Context) -> Path | None:
         for folder in ctx.setup.library_paths():

@@ -50,7 +50,10 @@ Row = tuple[str, str, str, object]
 
 
 def g_key(text: str) -> str:
-    """Canonical key of a G code number as written: '00' -> '0', '043.40' -> '43.4'."""
+    """Canonical key of a G code number as written: '00' -> '0', '043.40' -> '43.4'. A signed number or
+    a lone point is no G code: it keeps its text, so the lookup fails and the reader says so."""
+    if not text.replace(".", "", 1).isdigit():
+        return text
     if "." in text:
         whole, _, frac = text.partition(".")
         frac = frac.rstrip("0")

@@ -8,10 +8,12 @@ from postproc.cycle_words import CycleWords
 from .codes import CodeTable
 
 
-def rs274_cycle_words(codes: CodeTable, repeat: tuple[str, ...] | None) -> CycleWords:
+def rs274_cycle_words(codes: CodeTable, repeat: tuple[str, ...] | None,
+                      max_repeat: int | None = None) -> CycleWords:
     """The family's cycle words, named from ``codes``; ``repeat`` None takes the repeat letters from
-    the set-up (K, L or K+L), else those letters."""
+    the set-up (K, L or K+L), else those letters; ``max_repeat`` the controller's largest count."""
     names = {str(kind): spelling for kind, spelling in codes.arguments("cycle").items()}
     spindle = {str(direction): spelling for direction, spelling in codes.arguments("spindle").items()}
     return CycleWords(names=names, return_to_r=codes.spell("return", "r") or "return to R",
-                      level="R", peck="Q", shift="Q", dwell="P", spindle=spindle, repeat=repeat)
+                      level="R", peck="Q", shift="Q", dwell="P", spindle=spindle, repeat=repeat,
+                      max_repeat=max_repeat)

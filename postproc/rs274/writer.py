@@ -14,6 +14,7 @@ from typing import Any, Callable, ClassVar, NoReturn
 
 from ..control import ASSIGN, CONTROL
 from ..errors import UnsupportedError
+from ..event_order import after_motion
 from ..expr import Expr
 from .codes import CodeTable
 from .expressions import ExprSpelling, spell_word_value
@@ -216,11 +217,13 @@ class WordWriter(Writer):
 
     # -- compound motion ---------------------------------------------------------------------------
     def compound(self, block: Block, compound: CompoundMotion) -> str:
-        """Write an expansion: the block's own words, a comment naming the source, then each item."""
+        """Write an expansion: the block's words that act before its motion (``postproc.event_order``:
+        modal settings, tool change, spindle start, coolant on), a comment naming the source, each item,
+        then the words that act after it (spindle stop, coolant off, program stop or end)."""
         lines: list[str] = []
         rest = {k: v for k, v in block.sections.items() if k not in ("CompoundMotion", "CannedCycle", "Comments")}
-        head_keys = [k for k in rest if k not in ("SpindleControl", "Coolant", "ProgramControl", "ToolChange")]
-        tail_keys = [k for k in rest if k not in head_keys]
+        tail_keys = [k for k, section in rest.items() if after_motion(k, section)]
+        head_keys = [k for k in rest if k not in tail_keys]
         head = Block(block.line, None, "\n")
         head.sections = {k: rest[k] for k in head_keys}
         note = self.comment_line(f"{compound.term} from line {block.line}: {self.source_text(block)}")

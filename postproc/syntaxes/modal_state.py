@@ -5,10 +5,13 @@ to ``ctx.state`` (``ModalState.apply``, the one place that says how a section ch
 shared with the writer and the simulator) and tracks the position, so later steps (cycle expansion, lowering) know where the
 tool is. A position becomes unknown (None) after moves the IR cannot place, such as a reference return
 or a computed coordinate (a program kept symbolically).
+It also refuses a negative F or S (``postproc.block_rules``): every reading passes here, so
+``translate``, ``toolpath`` and ``verify`` refuse them alike.
 """
 
 from __future__ import annotations
 
+from postproc.block_rules import check_values
 from postproc.expr import Expr
 from postproc.ir import Block, Motion
 from postproc.context import Context
@@ -29,6 +32,8 @@ class ModalStateSyntax(Syntax):
         motion = sections.get("Motion")
         if motion is not None:
             self._move(block, ctx, motion)  # type: ignore[arg-type]
+        if "Feed" in sections or "SpindleSpeed" in sections:
+            check_values(block, ctx)  # after the state is carried: an error keeps the block's settings
 
     def _move(self, block: Block, ctx: Context, motion: Motion) -> None:
         state = ctx.state

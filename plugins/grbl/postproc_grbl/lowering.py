@@ -2,7 +2,8 @@
 
 * ``pause_for_tool_change``: grbl rejects M6 (no tool changer), so a tool change becomes a program
   pause ``T<n> M0`` with a comment naming the tool; a running spindle is stopped first, as a tool
-  changer would (with a warning). The grbl reader reads ``T<n> M0`` back as a tool change.
+  changer would (with a warning). The grbl reader reads ``T<n> M0`` back as a tool change. In a block
+  that also moves, the pause goes in a block of its own before it (M0 acts after a block's motion).
 * ``cancel_length_offset_first``: grbl refuses G49 (an axis command of its own) in a block with
   motion, so the cancel goes in a block of its own before the motion.
 * ``close_full_circles``: grbl needs an end point in the plane of every arc (no full-circle form), so
@@ -42,7 +43,12 @@ def _pause_for_tool_change(blocks: Iterator[Block], ctx: Context) -> Iterator[Bl
         select = sections.get("ToolSelect")
         if select is not None:
             tool = select.number  # type: ignore[attr-defined]
-        if "ToolChange" in sections and "ProgramControl" not in sections:
+        if "ToolChange" in sections and ("Motion" in sections or "CompoundMotion" in sections):
+            first = _pause_first(block)
+            _pause(first, ctx, tool, spindle)
+            yield first
+            spindle = "stop"
+        elif "ToolChange" in sections and "ProgramControl" not in sections:
             _pause(block, ctx, tool, spindle)
             spindle = "stop"
         control = sections.get("SpindleControl")
@@ -58,6 +64,19 @@ def _pause_for_tool_change(blocks: Iterator[Block], ctx: Context) -> Iterator[Bl
                 elif isinstance(item, ProgramControl) and item.kind == "stop":
                     spindle = "stop"  # the writer stops a running spindle before a pause
         yield block
+
+
+def _pause_first(block: Block) -> Block:
+    """The tool change of a block that also moves, in a block of its own before it: grbl runs M0 after
+    the block's motion, and the motion needs the new tool (``postproc.event_order``)."""
+    sections = block.sections
+    first = Block(block.line, None, "\n")
+    first.sections = {"ToolChange": sections.pop("ToolChange")}
+    select = sections.pop("ToolSelect", None)
+    if select is not None:
+        first.sections["ToolSelect"] = select
+    block.changed()
+    return first
 
 
 def _pause(block: Block, ctx: Context, tool: int | None, spindle: str) -> None:

@@ -1,0 +1,101 @@
+"""What makes a block invalid whatever the target: one place for the simulator (``postproc.toolpath``)
+and ``translate``, so ``translate``, ``toolpath`` and ``verify`` never disagree about the same block.
+A negative F or S is refused by the reading pipeline's modal-state step (every reading passes there);
+a feed move with no feed rate by the simulator and, for ``translate``, the ``check_blocks`` lowering
+step, which looks only at the blocks before the first feed rate.
+
+* A feed rate ``F`` or a spindle speed ``S`` cannot be negative.
+* A feed move (straight or arc) with axis words or an arc centre needs a feed rate programmed before
+  it, or in its block, even when it ends where it starts (a controller alarms on the command). In a program
+  that computes (jumps, loops, subprograms) the order of the text is not the order of execution: from
+  its first construct on, ``translate`` leaves this check to the run (``toolpath``, ``verify``).
+
+Arc geometry (an end point off the circle) needs the tool's position, which only the simulator tracks;
+``translate`` does not check it yet.
+"""
+
+from __future__ import annotations
+
+from itertools import chain
+from typing import Iterator
+
+from .context import Context
+from .control import ASSIGN, CONTROL
+from .dialect import Dialect
+from .errors import ProgramError
+from .ir import Block
+
+NO_FEED = "a feed move with no feed rate (program F first)"
+FEED_MOVES = frozenset(("linear", "cw", "ccw"))
+"""Motion modes that move at the feed rate."""
+_KEYS = frozenset(("Feed", "Motion", "CompoundMotion", CONTROL, ASSIGN))
+
+
+def feed_problem(value: object) -> str | None:
+    """Why a programmed feed rate is invalid (None: it is valid, or only known at run time)."""
+    if isinstance(value, (int, float)) and value < 0:
+        return f"feed rate F{value:g} cannot be negative"
+    return None
+
+
+def speed_problem(rpm: object) -> str | None:
+    """Why a programmed spindle speed is invalid (None: it is valid, or only known at run time)."""
+    if isinstance(rpm, (int, float)) and rpm < 0:
+        return f"spindle speed S{rpm:g} cannot be negative"
+    return None
+
+
+def needs_feed(motion: object) -> bool:
+    """True for a motion that commands a feed move: a feed mode with axis words or an arc centre."""
+    return (getattr(motion, "mode", None) in FEED_MOVES
+            and bool(getattr(motion, "axes", None) or getattr(motion, "center", None)))
+
+
+def check_values(block: Block, ctx: Context) -> None:
+    """Raise a located error for a negative F or S in ``block`` (the reading pipeline's modal-state step
+    calls it for every block with either)."""
+    sections = block.sections
+    feed = sections.get("Feed")
+    if feed is not None:
+        problem = feed_problem(feed.value)  # type: ignore[attr-defined]
+        if problem is not None:
+            raise ProgramError(problem, ctx.at(block, ctx.column_of(block, "F")))
+    speed = sections.get("SpindleSpeed")
+    if speed is not None:
+        problem = speed_problem(speed.rpm)  # type: ignore[attr-defined]
+        if problem is not None:
+            raise ProgramError(problem, ctx.at(block, ctx.column_of(block, "S")))
+
+
+def check_blocks(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """Lowering step for ``translate``: a feed move before any feed rate is a located error (the
+    simulator makes the same check itself). Once a feed rate is in force nothing is left to check: the
+    rest of the stream passes on with no step per block."""
+    stream = iter(blocks)
+    return chain(_until_fed(stream, ctx), stream)
+
+
+def _until_fed(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
+    """The blocks up to the first feed rate (or the first construct of a program that computes)."""
+    report = ctx.diagnostics.error
+    for block in blocks:
+        sections = block.sections
+        if sections.keys().isdisjoint(_KEYS):
+            yield block
+            continue
+        if CONTROL in sections or ASSIGN in sections or "Feed" in sections:
+            yield block  # from a construct on, execution order is no longer the text's
+            return
+        motion = sections.get("Motion")
+        if motion is not None and needs_feed(motion):
+            report(ProgramError(NO_FEED, ctx.at(block)))
+        compound = sections.get("CompoundMotion")
+        if compound is not None:
+            for item in compound.items:  # type: ignore[attr-defined]
+                if item.KEY == "Feed":
+                    yield block
+                    return
+                if item.KEY == "Motion" and needs_feed(item):
+                    report(ProgramError(NO_FEED, ctx.at(block)))
+                    break
+        yield block

@@ -1,0 +1,83 @@
+"""One place decides what a valid block is (``postproc.block_rules``): ``translate`` refuses what
+``toolpath`` refuses - a negative F or S, a feed move with no feed rate - with the same located message,
+to every target."""
+
+from __future__ import annotations
+
+import io
+
+import pytest
+
+from postproc.api import translate
+from postproc.errors import ErrorList
+from postproc.toolpath import toolpath_events
+
+CASES = [
+    ("G1 X10. F-100.", "p.nc:3:9: error: feed rate F-100 cannot be negative"),
+    ("G1 X10.", "p.nc:3:1: error: a feed move with no feed rate (program F first)"),
+    ("G2 X10. R5.", "p.nc:3:1: error: a feed move with no feed rate (program F first)"),
+    ("S-1000 M3", "p.nc:3:1: error: spindle speed S-1000 cannot be negative"),
+]
+
+
+def _program(line: str) -> str:
+    return f"G21 G17 G90\nG0 X0. Y0. Z0.\n{line}\nM30\n"
+
+
+@pytest.mark.parametrize("target", ["fanuc", "grbl", "linuxcnc"])
+@pytest.mark.parametrize("line, message", CASES)
+def test_translate_refuses_what_toolpath_refuses(target: str, line: str, message: str) -> None:
+    with pytest.raises(ErrorList) as info:
+        translate(io.StringIO(_program(line)), io.StringIO(), file="p.nc", source="fanuc", target=target)
+    assert [str(e) for e in info.value.errors] == [message]
+
+
+@pytest.mark.parametrize("line, message", CASES)
+def test_toolpath_gives_the_same_message(line: str, message: str) -> None:
+    with pytest.raises(ErrorList) as info:
+        list(toolpath_events(io.StringIO(_program(line)), file="p.nc", dialect="fanuc"))
+    assert [str(e) for e in info.value.errors] == [message]
+
+
+def test_feed_set_inside_an_expanded_cycle_counts() -> None:
+    """A cycle's F feeds its expansion, and the feed stays in force after it."""
+    program = "G21 G17 G90\nG0 X0. Y0. Z10.\nG98 G81 X5. Y5. Z-1. R2. F100.\nG80\nG1 X0.\nM30\n"
+    out = io.StringIO()
+    translate(io.StringIO(program), out, file="p.nc", source="fanuc", target="grbl")
+    assert "G1 X0." in out.getvalue()
+
+
+def test_zero_length_feed_move_needs_a_feed_too() -> None:
+    """The command is what a controller refuses, even when the tool would not move."""
+    with pytest.raises(ErrorList) as info:
+        list(toolpath_events(io.StringIO(_program("G1 X0.")), file="p.nc", dialect="fanuc"))
+    assert [str(e) for e in info.value.errors] == ["p.nc:3:1: error: a feed move with no feed rate (program F first)"]
+
+
+def test_a_program_that_computes_leaves_the_feed_order_to_the_run() -> None:
+    """A subroutine defined before the main program feeds at its caller's F: from the first construct on,
+    the text's order is not the run's, and the step does not judge it (the run does)."""
+    from postproc.context import Context
+    from postproc.control import SubEnd, SubStart
+    from postproc.dialect import Dialect
+    from postproc.errors import Diagnostics
+    from postproc.ir import Block, Feed, Motion
+    from postproc.block_rules import check_blocks
+    from postproc.setup import MachineSetup
+
+    def block(line: int, *sections: object) -> Block:
+        b = Block(line, None, "\n")
+        for s in sections:
+            b.add(s)  # type: ignore[arg-type]
+        return b
+
+    blocks = [block(1, SubStart("s")), block(2, Motion("linear", {"X": 5.0})), block(3, SubEnd("s")),
+              block(4, Feed(200.0))]
+    diagnostics = Diagnostics()
+    ctx = Context("p.ngc", MachineSetup(), diagnostics, "linuxcnc")
+    assert list(check_blocks(iter(blocks), ctx, Dialect)) == blocks
+    assert diagnostics.errors == []
+    diagnostics = Diagnostics()
+    ctx = Context("p.ngc", MachineSetup(), diagnostics, "linuxcnc")
+    list(check_blocks(iter(blocks[1:2]), ctx, Dialect))
+    assert [e.message for e in diagnostics.errors] == ["a feed move with no feed rate (program F first)"]

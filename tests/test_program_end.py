@@ -1,0 +1,100 @@
+"""What follows a program's end is never live code in another dialect (``postproc.program_end``), and
+``verify`` compares it: grbl is streamed to and runs whatever follows M30, while both simulators stop
+at the end."""
+
+from __future__ import annotations
+
+import io
+
+import pytest
+
+from postproc.api import translate
+from postproc.control import Return, SubStart
+from postproc.context import Context
+from postproc.dialect import Dialect
+from postproc.errors import Diagnostics
+from postproc.ir import Block, Motion, ProgramControl, ProgramStart
+from postproc.program_end import comment_after_end
+from postproc.setup import MachineSetup
+from postproc.toolpath import toolpath_events
+from postproc.verify import verify_lines
+
+AFTER_M30 = "G21 G90\nG0 X1.\nM30\nG0 X100. (CRASH)\nG1 Y5. F10.\n"
+
+
+def _translate(program: str, source: str, target: str) -> tuple[str, Diagnostics]:
+    out = io.StringIO()
+    diagnostics = Diagnostics(warn_stream=io.StringIO())
+    translate(io.StringIO(program), out, file="p.nc", source=source, target=target, diagnostics=diagnostics)
+    return out.getvalue(), diagnostics
+
+
+def _verify(a: str, b: str, source: str, target: str) -> tuple[bool, str]:
+    report = verify_lines(io.StringIO(a), io.StringIO(b), file_in="in", file_out="out", source=source,
+                          target=target)
+    return report.ok, report.mismatch or ""
+
+
+@pytest.mark.parametrize("target", ["grbl", "linuxcnc"])
+def test_blocks_after_m30_are_written_as_comments(target: str) -> None:
+    text, diagnostics = _translate(AFTER_M30, "fanuc", target)
+    tail = text.splitlines()[-2:]
+    assert tail == ["(AFTER PROGRAM END, LINE 4: G0 X100. [CRASH])", "(AFTER PROGRAM END, LINE 5: G1 Y5. F10.)"]
+    assert [str(w) for w in diagnostics.warnings] == [
+        "p.nc:4:1: warning: blocks after the program end are written as comments (a controller that is "
+        "streamed to would run them)"]
+
+
+def test_blocks_after_a_closing_percent_are_written_as_comments() -> None:
+    text, _ = _translate("%\nG21 G90\nG0 X1.\n%\nG0 X100.\n", "fanuc", "grbl")
+    assert text.splitlines()[-1] == "(AFTER PROGRAM END, LINE 5: G0 X100.)"
+    moves = [e for e in toolpath_events(io.StringIO("%\nG21 G90\nG0 X1.\n%\nG0 X100.\n"), file="p.nc",
+                                        dialect="fanuc") if "move" in e]
+    assert [m["x"] for m in moves] == [1]  # the simulator stops at the closing % too
+
+
+def test_same_dialect_keeps_the_program_as_it_is() -> None:
+    text, diagnostics = _translate(AFTER_M30, "fanuc", "fanuc")
+    assert text == AFTER_M30 and diagnostics.warnings == []
+
+
+def test_verify_reports_live_blocks_after_the_end_in_the_translation_only() -> None:
+    """The old grbl output (live G0 X100. after M30) verified ok; now it is a mismatch. Dead code after the
+    source's end written as comments is the safe translation: it verifies."""
+    live = "G21 G90\nG0 X1.\nM30\nG0 X100.\n"
+    assert _verify("G21 G90\nG0 X1.\nM30\n", live, "fanuc", "grbl") == (
+        False, "OUT has live blocks after the program end (from line 4), IN has none (a controller that is "
+        "streamed to would run them)")
+    assert _verify(AFTER_M30, AFTER_M30, "fanuc", "fanuc") == (True, "")
+    commented, _ = _translate(AFTER_M30, "fanuc", "grbl")
+    assert _verify(AFTER_M30, commented, "fanuc", "grbl") == (True, "")
+
+
+def _block(line: int, *sections: object) -> Block:
+    b = Block(line, f"LINE{line}", "\n")
+    for s in sections:
+        b.add(s)  # type: ignore[arg-type]
+    return b
+
+
+class _Programs(Dialect):
+    NAME = "with-programs"
+    PROGRAMS = True
+
+
+class _Flat(Dialect):
+    NAME = "flat"
+
+
+@pytest.mark.parametrize("target, kept", [(_Programs, True), (_Flat, False)])
+def test_subprograms_after_the_end_are_kept_where_the_target_runs_them(target: type[Dialect], kept: bool) -> None:
+    """A Fanuc O2000 ... M99 or a LinuxCNC o<x> sub after the main program: live code only where the
+    target has no subprograms of its own; a stray block between them is commented either way."""
+    blocks = [_block(1, Motion("rapid", {"X": 1.0})), _block(2, ProgramControl("end_rewind")),
+              _block(3, ProgramStart(2000, None)), _block(4, Motion("rapid", {"X": 2.0})), _block(5, Return()),
+              _block(6, Motion("rapid", {"X": 3.0})),
+              _block(7, SubStart("s")), _block(8, Motion("rapid", {"X": 4.0}))]
+    ctx = Context("p.nc", MachineSetup(), Diagnostics(warn_stream=io.StringIO()), "source")
+    out = list(comment_after_end(iter(blocks), ctx, target))
+    commented = [b.line for b in out if list(b.sections) == ["Comments"]]
+    assert commented == ([6] if kept else [3, 4, 5, 6, 7, 8])
