@@ -9,9 +9,8 @@ compared move by move, within 1.5e-4 program units (the ``expected`` files print
 * G84 in G18/G19: the **rapids only** (all three axes). The conformance README says the upstream
   G18/G19 tapping feeds are wrong, so those feed moves are not trusted; the rapids still check
   positioning, the rise to R and the return to the clear level.
-* M98/M99 cases are out: rs274 runs Fanuc-style numbered subprograms (``O1`` ... ``M99`` after the
-  main program, ``M98 P1 L3``; RS274_NOTES.md), this reader does not yet and refuses them with a located
-  error. The lathe cases are out too.
+* M98/M99: Fanuc-style numbered subprograms (``O1`` ... ``M99`` after the main program, ``M98 P1 L3``,
+  ``L0``, ``#1`` shared with the caller): every move. The lathe cases are out.
 """
 
 from __future__ import annotations
@@ -23,7 +22,6 @@ from typing import Any
 
 import pytest
 
-from postproc.errors import ErrorList
 from postproc.toolpath import toolpath_events
 from tests.support.rs274 import canonical_moves, motions
 
@@ -34,7 +32,6 @@ TOLERANCE = 1.5e-4
 """In program units (the cases are inch programs: converted to mm before comparing)."""
 
 SKIPPED = {
-    "m98m99": "Fanuc-style numbered subprograms (O<n> ... M99, M98 P L) are not read yet (rs274 runs them)",
     "g71": "lathe cycles not modelled yet",
     "g72": "lathe cycles not modelled yet",
     "g76": "lathe cycles not modelled yet",
@@ -97,17 +94,3 @@ def test_conformance_case(case: Path) -> None:
     assert expected, f"{case.name}: no moves in the expected file"
     problem = _mismatch(ours, expected, TOLERANCE * _units(program))
     assert problem is None, f"{case.name}: {problem}"
-
-
-def test_subprogram_cases_are_refused_with_located_errors() -> None:
-    """The skipped M98/M99 cases must fail loudly, never simulate something else."""
-    cases = sorted(CONFORMANCE.glob("m98m99*")) if CONFORMANCE.is_dir() else []
-    if not cases:
-        pytest.skip(f"{CONFORMANCE} is not available")
-    for case in cases:
-        program = _program(case)
-        with pytest.raises(ErrorList) as info:
-            _ours(program)
-        messages = [str(e) for e in info.value.errors]
-        assert any("M98/M99" in m or "O-words" in m or "parameters" in m for m in messages), messages
-        assert all(m.startswith(f"{program}:") for m in messages), messages

@@ -138,8 +138,8 @@ def test_a_long_line_is_lexed_in_linear_time() -> None:
     ("G0 X1 (a (b) c)", "t.ngc:1:10: error: nested comment: '(' inside a comment"),
     ("G0 X1 (open", "t.ngc:1:7: error: unclosed comment"),
     ("o100 foo", "t.ngc:1:6: error: unknown o-word command 'foo'"),
-    ("N10 O100", "t.ngc:1:5: error: a bare o-word (a subprogram ended by a return code) is not read: "
-                 "write o100 sub .. o100 endsub"),
+    ("N10 o<x>", "t.ngc:1:5: error: a bare o-word starts a Fanuc-style subprogram and takes a number, not a "
+                 "name or an expression"),
     ("G0 X1 o100 sub", "t.ngc:1:7: error: an o-word opens its line (only '/' and N may come before it)"),
     ("G0 X#", "t.ngc:1:6: error: variable number expected after '#'"),
     ("G0 X[1+2", "t.ngc:1:9: error: ']' expected"),
@@ -223,7 +223,7 @@ def test_g80_leaves_no_motion_mode() -> None:
     ("G1 X1 L2 F100", "t.ngc:2:7: error: L (repeat count) outside a canned cycle"),
     ("G0 G81 X1 Y1 Z-1 R1 F100", "t.ngc:2:4: error: G codes G0 and G81 are both in one modal group"),
     ("G80 G1 X1 F100", "t.ngc:2:5: error: G codes G80 and G1 are both in one modal group"),
-    ("M98 P100", "t.ngc:2:1: error: subprogram calls (M98/M99) are not supported by the linuxcnc reader"),
+    ("M98 L2", "t.ngc:2:1: error: M98 needs a program number P (rs274: Found 'm98' code with no P-word)"),
     ("G90.1", "t.ngc:2:1: error: absolute arc centres (G90.1) are not supported by the linuxcnc reader yet"),
     ("G44 H1", "t.ngc:2:1: error: unknown G code G44"),
     ("G0 X1 E2", "t.ngc:2:7: error: address E is not used by the linuxcnc dialect"),

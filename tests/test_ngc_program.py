@@ -110,18 +110,31 @@ V1, V2 = Var(Num(1.0)), Var(Num(2.0))
 UNSPELLABLE = [
     (Goto(Num(10.0)), "linuxcnc has no o-word for Goto"),
     (IfThen(V1, Assign([(V2, Num(1.0))])), "linuxcnc has no o-word for IfThen"),
-    (Call("2000", {}, Num(3.0), "sub"), "an o-word call gives the subprogram its own #1-#30; this call shares the "
-                                        "caller's locals (a subprogram call)"),
+    (Call("2000", {1: Num(1.0)}, None, "sub"), "the linuxcnc dialect cannot express a subprogram call with arguments (M98 passes none)"),
+    (Call("<x>", {}, None, "sub"), "the linuxcnc dialect cannot express a call of the named subprogram <x> with M98 (it calls program numbers)"),
     (Call("2000", {}, Num(3.0), "macro"), "an o-word call has no repeat count"),
     (Call("2000", {1: Num(1.0), 3: Num(2.0)}, None, "macro"),
      "an o-word call sets #1 to #n in order (at most #30); this call sets #1, #3"),
     (ModalCall("9010", {}, None), "linuxcnc has no o-word for ModalCall"),
-    (Return(None, None, None), "a LinuxCNC return names its subprogram: o<name> return (this Return has no name)"),
+    (Return(None, None, Num(50.0)), "the linuxcnc dialect cannot express a return to a block number (M99 P: rs274 refuses it)"),
+    (Return(None, Num(1.0), None), "a LinuxCNC return names its subprogram: o<name> return (this Return has no name)"),
     (While("1", Binary("bitand", V1, V2)), "linuxcnc has no operator for 'bitand'"),
     (If("1", Func("asin_360", [V1])), "linuxcnc has no function for 'asin_360'"),
     (Assign([(Var(Num(5021.0)), Num(1.0))]), "LinuxCNC cannot set #5021 (settable: #1-#5601, not the read-only ones)"),
     (Assign([(V1, Binary("rem_int", V1, V2))]), "linuxcnc has no operator for 'rem_int'"),
 ]
+
+
+def test_subprogram_calls_and_plain_returns_are_m98_and_m99() -> None:
+    dialect = default_registry().dialect("linuxcnc")
+    ctx = Context("t.nc", MachineSetup(), Diagnostics(ErrorLevel.RAISE), "fanuc")
+    assert dialect.WRITER is not None
+    writer = dialect.WRITER(ctx, "fanuc", dialect)
+    for section, text in [(Call("2000", {}, Num(3.0), "sub"), "M98 P2000 L3\n"), (Call("7", {}, None, "sub"), "M98 P7\n"),
+                          (Call(V1, {}, V2, "sub"), "M98 P#1 L#2\n"), (Return(None, None, None), "M99\n")]:
+        block = Block(7, None)
+        block.add(section)
+        assert writer.write_block(block) == text
 
 
 @pytest.mark.parametrize("section, message", UNSPELLABLE, ids=[type(s).__name__ for s, _ in UNSPELLABLE])

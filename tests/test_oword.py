@@ -14,7 +14,7 @@ from postproc.control import (
 )
 from postproc.errors import UnsupportedError
 from postproc.expr import Binary, Expr, Func, Num, Unary, Var
-from postproc.ir import Section
+from postproc.ir import ProgramStart, Section
 from postproc.rs274.expressions import LINUXCNC_SPELLING, ExprSyntaxError
 from postproc.rs274.oword import (
     OwordParser, parse_assignments, parse_oword_line, spell_assignments, spell_oword,
@@ -97,14 +97,20 @@ def test_other_spellings(text: str, node: Section) -> None:
     assert parse_oword_line(text) == node
 
 
+@pytest.mark.parametrize("text", ["o100", "O100 (c)", "O 1 0 0", "o0100", "O100.0 ; c"])
+def test_a_bare_number_starts_a_fanuc_style_subprogram(text: str) -> None:
+    """rs274 reads ``O100`` alone on its line as the start of a subprogram that M98 P100 runs."""
+    assert parse_oword_line(text) == ProgramStart(100)
+
+
 def test_starts_at_pos() -> None:
     assert parse_oword_line("N10 o1 do", 4) == Do("1")
 
 
 @pytest.mark.parametrize("text, message, pos", [
     ("G0 X1", "o-word expected", 0),
-    ("o100", "a bare o-word (a subprogram ended by a return code) is not read: write o100 sub .. o100 endsub", 0),
-    ("o100 (c)", "a bare o-word (a subprogram ended by a return code) is not read: write o100 sub .. o100 endsub",
+    ("o<x>", "a bare o-word starts a Fanuc-style subprogram and takes a number, not a name or an expression", 0),
+    ("o#1 (c)", "a bare o-word starts a Fanuc-style subprogram and takes a number, not a name or an expression",
      0),
     ("o100 [1]", "o-word command (sub, call, if, while, do, repeat, ...) expected", 5),
     ("o100 foo", "unknown o-word command 'foo'", 5),

@@ -32,6 +32,7 @@ from ..evaluation import var_key
 from ..ir import Block, Comments
 from ..setup import Limits
 from ..source_map import CallSite, ExecutedBlock, Origin
+from .rules import SubprogramRules, rules_for
 from .store import Program, ProgramStore, source_text
 from .variables import Variables
 
@@ -71,7 +72,7 @@ class _Frame:
     """One running program level: where it runs, how it was called, what it repeats."""
 
     __slots__ = ("program", "pc", "end", "origin", "new_level", "call_block", "remaining", "index", "count",
-                 "args", "start", "repeats", "modal", "site")
+                 "args", "start", "repeats", "modal", "site", "needs_return")
 
     def __init__(self, program: Program, start: int, end: int, origin: Origin | None, new_level: bool,
                  call_block: Block | None, index: int, count: int, args: dict[int, Value], modal: bool,
@@ -89,6 +90,8 @@ class _Frame:
         self.repeats: dict[int, int] = {}
         self.modal = modal
         self.site = site
+        self.needs_return = False
+        """The body ends only at a return (LinuxCNC's ``O<n>`` ... ``M99``): running off its end is an error."""
 
 
 def spell_number(value: float) -> str:
@@ -124,7 +127,7 @@ class Interpreter:
     before each call, loop iteration and jump taken (for a flattened program's reader)."""
 
     def __init__(self, store: ProgramStore, host: Host, variables: Variables, limits: Limits,
-                 report: "Reporter", annotate: bool = False) -> None:
+                 report: "Reporter", annotate: bool = False, rules: SubprogramRules | None = None) -> None:
         self.store = store
         self.host = host
         self.vars = variables
@@ -135,6 +138,9 @@ class Interpreter:
         self.frames: list[_Frame] = []
         self.modal: tuple[ModalCall, dict[int, Value], int, Block] | None = None
         self.ended = False
+        self.rules = rules or rules_for(variables)
+        self.found: dict[tuple[str, str], int] = {}
+        """(file, program number) -> position of the ``O`` block an ``M98`` found (forward search)."""
 
     # -- running ---------------------------------------------------------------------------------
     def run(self, start: int = 0) -> Iterator[Block]:
@@ -152,6 +158,11 @@ class Interpreter:
             if frame.pc >= frame.end:
                 if len(frames) == 1:
                     return
+                if frame.needs_return:
+                    last = frame.program.blocks[frame.end - 1]
+                    label = frame.site.label if frame.site is not None else "the subprogram"
+                    self._fail(ProgramError(f"subprogram {label} runs to the end of the file without returning"),
+                               frame, last, 1)
                 self._return(frame, frame.program.blocks[frame.end - 1] if frame.end else None, None, None)
                 continue
             block = frame.program.blocks[frame.pc]
@@ -326,6 +337,9 @@ class Interpreter:
         elif isinstance(control, SubEnd):
             value = None if control.value is None else evaluate_number(control.value, vars_, "a return value")
             self._return(frame, block, value, None)
+        elif isinstance(control, Return) and len(self.frames) == 1 and self.rules.main_return_words:
+            self.ended = True  # the words that end the program run instead
+            yield ExecutedBlock(block.line, None, block.eol, list(self.rules.main_return_words), frame.origin)
         elif isinstance(control, Return):
             value = None if control.value is None else evaluate_number(control.value, vars_, "a return value")
             target = None if control.target is None else self._integer(control.target, "the return target")
@@ -371,7 +385,10 @@ class Interpreter:
     def _enter(self, frame: _Frame, block: Block, name: str, args: dict[int, Value], count: int,
                new_level: bool, modal: bool, index: int = 1) -> Iterator[Block]:
         label = self.host.program_label(name)
-        found = self.store.find(name)
+        if self.rules.forward_search:
+            found = self._find_forward(frame, block, name, label, new_level)
+        else:
+            found = self.store.find(name)
         if found is None:
             raise ProgramError(f"subprogram {label} not found (called by '{source_text(block)}')")
         if len(self.frames) > self.limits.call_depth:
@@ -385,6 +402,7 @@ class Interpreter:
         origin = Origin(program.file, stack)
         callee = _Frame(program, start, end, origin, new_level, block, index, count, args,
                         modal or frame.modal, site)
+        callee.needs_return = self.rules.forward_search and not new_level
         self.vars.enter(args, new_level)
         self.frames.append(callee)
         yield from self._note(frame, block, f"call {index} of {count}" if count > 1 else "call")
@@ -415,6 +433,7 @@ class Interpreter:
             assert frame.origin is not None
             again.origin = Origin(frame.origin.file, (site,) + frame.origin.stack[1:])
             again.site = site
+            again.needs_return = frame.needs_return
             self.vars.enter(frame.args, frame.new_level)
             frames.append(again)
             return
@@ -424,6 +443,42 @@ class Interpreter:
             if pos is None:
                 raise ProgramError(self._missing_sequence(caller.program, target, source_text(block)))
             caller.pc = pos
+
+    def _find_forward(self, frame: _Frame, block: Block, name: str, label: str,
+                      new_level: bool) -> tuple[Program, int, int] | None:
+        """LinuxCNC: an ``M98`` finds ``O<n>`` from the call onward (``SubprogramRules``); an o-word call
+        finds ``o<n> sub`` in the store, and refuses an ``O<n>``."""
+        if new_level:
+            found = self.store.find(name)
+            if found is not None and found[1] > 0 and "ProgramStart" in found[0].blocks[found[1] - 1].sections:
+                raise ProgramError(f"'{source_text(block)}' calls {label}, a numbered subprogram ended by a "
+                                   f"return code, which only a subprogram call runs (not an o-word call)")
+            return found
+        program = frame.program
+        key = (program.file, name)
+        at = self.found.get(key)
+        if at is None:
+            blocks = program.blocks
+            for pos in range(frame.pc, len(blocks)):
+                sections = blocks[pos].sections
+                start = sections.get("ProgramStart")
+                if start is not None and str(start.number) == name:  # type: ignore[attr-defined]
+                    at = pos
+                    break
+                control = sections.get(CONTROL)
+                if isinstance(control, SubStart) and control.name == name:
+                    raise ProgramError(f"'{source_text(block)}' calls {label}, an o-word subprogram "
+                                       f"(o.. sub), which only an o-word call runs")
+            if at is None:
+                raise ProgramError(f"'{source_text(block)}': subprogram {label} not found after line {block.line} of "
+                                   f"{program.file} (the call looks for it from the call onward)")
+            self.found[key] = at
+        end = len(program.blocks)
+        for pos in range(at + 1, end):
+            if "TapeMark" in program.blocks[pos].sections:
+                end = pos
+                break
+        return program, at + 1, end
 
     # -- values ----------------------------------------------------------------------------------
     def _args(self, args: dict[int, Expr]) -> dict[int, Value]:

@@ -166,8 +166,14 @@ class NgcVariables:
         self._store(key)[key] = value  # type: ignore[index]
 
     def enter(self, args: dict[int, Value], new_level: bool) -> None:
-        """A call: ``#1``-``#30`` are the arguments (0 where none), named locals start empty."""
-        self.numbered.append({k: v for k, v in args.items() if v is not None})
+        """A call: ``#1``-``#30`` are the arguments (0 where none), named locals start empty. An ``M98``
+        call (``new_level`` false) shares the caller's ``#1``-``#30`` (the same level: what it sets, the
+        caller sees) but still starts its own named locals: rs274 reports the caller's ``#<a>`` as "not
+        defined" inside it, and its own as not defined after ``M99``."""
+        if new_level:
+            self.numbered.append({k: v for k, v in args.items() if v is not None})
+        else:
+            self.numbered.append(self.numbered[-1])
         self.named.append({})
 
     def leave(self, new_level: bool, value: Value = None) -> None:

@@ -15,6 +15,9 @@ What differs from the ISO lexer (``lexer.py``), and why this is a module of its 
   ``X-#<depth>``, ``G#10``, ``X SIN[30]``) keeps its text as written in ``block.words`` and its tree in
   ``block.values`` (an ``Expr``). Without one (grbl), each of these is a located error naming it.
   Only lines the one-regex fast path refuses take this road, so a plain line costs nothing more.
+  With one too, a bare ``O100`` is a ``ProgramStart`` (``oword``), and the reader's ``read_call`` turns
+  the dialect's subprogram call and return words into a ``Call``/``Return`` (LinuxCNC's Fanuc-style
+  subprograms: the plugin knows their codes).
 
 Line splitting and the word number syntax are the ISO lexer's. ``NgcReader`` is the family's reader.
 """
@@ -22,7 +25,7 @@ Line splitting and the word number syntax are the ISO lexer's. ``NgcReader`` is 
 from __future__ import annotations
 
 import re
-from typing import Iterable, Iterator
+from typing import Callable, Iterable, Iterator
 
 from postproc.control import Assign
 from postproc.dialect import Reader
@@ -47,11 +50,12 @@ _O_WORDS = "O-words (subprograms, loops, conditions) are not supported by the {}
 
 
 def lex_block(file: str, number: int, text: str, eol: str, dialect: str,
-              oword: OwordParser | None = None) -> Block:
+              oword: OwordParser | None = None, calls: Callable[[Block, str], None] | None = None) -> Block:
     """Lex one line into a block: words as written (letter case kept), comments, block delete, and
     with ``oword`` (the file's ``OwordParser``) o-words, assignments and expression values.
 
-    ``dialect`` only names the reader in messages.
+    ``dialect`` only names the reader in messages. ``calls(block, code)``, given with ``oword``, reads
+    the block's call or return words (``code``: the line with its comments blanked out, for columns).
     """
     block = Block(number, text, eol)
     code = text
@@ -83,6 +87,8 @@ def lex_block(file: str, number: int, text: str, eol: str, dialect: str,
                 raise ParseError(f"block number N{num} must be a whole number",
                                  Location(file, number, code.upper().find("N") + 1))
             block.add(Sequence(int(num)))
+    if calls is not None and words:
+        calls(block, code)
     return block
 
 
@@ -238,14 +244,19 @@ class NgcReader(Reader):
     PARAMETRIC = False
     """The dialect reads o-words, parameters and expressions (LinuxCNC); else they are errors (grbl)."""
 
+    def read_call(self, block: Block, code: str) -> None:
+        """Turn a lexed block's subprogram call or return words into its control section (a parametric
+        dialect with numbered subprograms overrides this; the family has none)."""
+
     def read(self, lines: Iterable[str]) -> Iterator[Block]:
         file = self.ctx.file
         dialect = self.DIALECT
         report = self.ctx.diagnostics.error
         oword = OwordParser() if self.PARAMETRIC else None
+        calls = self.read_call if self.PARAMETRIC else None
         for number, text, eol in split_lines(lines):
             try:
-                yield lex_block(file, number, text, eol, dialect, oword)
+                yield lex_block(file, number, text, eol, dialect, oword, calls)
             except PostprocError as err:
                 report(err)
                 yield Block(number, text, eol)

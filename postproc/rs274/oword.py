@@ -22,7 +22,10 @@ Grammar (checked against LinuxCNC's ``rs274``, ``interp_read.cc`` ``read_o``/``r
 - rs274 also evaluates a computed number (``o#5 call``, ``o[#5+1] call``): for ``call`` the name is then
   an expression (``Call(Var(Num(5.0)), ...)``); on any other keyword it is refused, since a structure
   whose label is known only when it runs cannot be matched before it runs.
-- A bare ``o100`` (LinuxCNC's Fanuc-style subprogram start, ended by ``M99``) is refused.
+- A bare ``O100`` (``o100``, ``O 1 0 0``, ``O0100``, ``N10 O100``, followed by nothing but comments) is a
+  ``ProgramStart(100)``: LinuxCNC's Fanuc-style subprogram start, called by ``M98 P100`` and ended by
+  ``M99`` (see ``ngc_calls``); met in the flow of the program it does nothing (rs274: on the first line it
+  is the program's name, elsewhere the lines after it simply run). A bare ``o<name>`` or ``o#1`` is refused.
 
 Which construct ``o1 while [c]`` is depends on what came before: it ends a ``do`` loop if a ``do``
 with label ``1`` is open in the same scope (rs274 looks the label up in the labels it has met), and
@@ -54,7 +57,7 @@ from ..control import (
 )
 from ..errors import UnsupportedError
 from ..expr import Expr, Num, Var
-from ..ir import Section
+from ..ir import ProgramStart, Section
 from .expressions import (
     LINUXCNC_SPELLING, ExprSyntaxError, parse_condition, parse_word_value, spell_condition, spell_word_value,
 )
@@ -138,8 +141,10 @@ def _read_line(text: str, pos: int, do_labels: Container[str]) -> tuple[Section,
         if keyword:
             raise ExprSyntaxError(f"unknown o-word command {keyword!r}", kw_pos)
         if _at_end(text, kw_pos):
-            raise ExprSyntaxError("a bare o-word (a subprogram ended by a return code) is not read: "
-                                  "write o100 sub .. o100 endsub", start)
+            if isinstance(label, str) and label.isdigit():
+                return ProgramStart(int(label)), "", label_pos
+            raise ExprSyntaxError("a bare o-word starts a Fanuc-style subprogram and takes a number, "
+                                  "not a name or an expression", start)
         raise ExprSyntaxError("o-word command (sub, call, if, while, do, repeat, ...) expected", kw_pos)
     if keyword == "call":
         end, args = _call_args(text, end)

@@ -6,8 +6,8 @@ without decimal-point scaling, ``;`` comments, ``L`` repeats, G98 as "retract to
 above R", R-plane retract (G99) at start-up as in LinuxCNC's interpreter. O-words (subprograms, loops,
 conditions), numbered and named parameters and expressions are read into control sections and
 expression values: kept symbolically for a target that has them, run by ``LinuxcncProgramSyntax``
-otherwise. Fanuc-style numbered subprograms (``O100`` ... ``M99``, ``M98``) are refused with a
-located error.
+otherwise. Fanuc-style numbered subprograms (``O100`` ... ``M99``, ``M98 P L``) are read (``calls``) and
+run as rs274 runs them (``postproc.interp.rules``).
 """
 
 from __future__ import annotations

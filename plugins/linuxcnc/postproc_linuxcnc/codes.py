@@ -110,8 +110,8 @@ NATIVE_M: dict[int, str] = {
 }
 
 REFUSED_M: dict[int, str] = {
-    98: "subprogram calls (M98/M99) are not supported by the linuxcnc reader",
-    99: "subprogram calls (M98/M99) are not supported by the linuxcnc reader",
+    98: "a computed M98 (M#..): write M98 P.. alone on its line",
+    99: "a computed M99 (M#..): write M99 alone on its line",
 }
 
 USER_M = range(100, 200)

@@ -1,8 +1,12 @@
 """LinuxCNC writer: the RS274 word writer spelling every code from LinuxCNC's table (G0, M3, G4 P seconds).
 
 * G4 P and a cycle's P are seconds; the repeat count of a native cycle is L.
-* No G44, no one-shot exact stop (G9) and no O-number programs: the first two are unsupported, the
-  program number is written as a comment (LinuxCNC reads O as an O-word).
+* No G44 and no one-shot exact stop (G9): unsupported. A program number is a comment until the main
+  program's end (M2/M30) is written, ``O<n>`` after it (a subprogram start, as rs274 reads it); from a
+  LinuxCNC source every ``O<n>`` stays one.
+* A subprogram call sharing the caller's locals (``Call(kind="sub")``) is ``M98 P<n> [L<k>]``, alone on
+  its line (rs274 refuses M98 with other words: the call is unsupported then), and a plain return
+  ``M99``; a return to a block number (``M99 P``) is unsupported.
 * Work offsets 7-9 are G59.1-G59.3; inverse-time feed is G93; M19 takes its angle as R.
 * F in a block that changes units is written in the old units (LinuxCNC sets the feed first).
 * Parameters, expressions and o-words (``SPELLING``, ``statement_words``): a computed word is written
@@ -26,9 +30,10 @@ from postproc.context import Context
 from postproc.dialect import Dialect
 from postproc.state import MM_PER_INCH
 from postproc.control import (
-    Assign, Break, Call, Continue, Do, DoWhile, Else, ElseIf, EndIf, EndRepeat, EndWhile, If, Repeat, SubStart,
-    While,
+    Assign, Break, Call, Continue, Do, DoWhile, Else, ElseIf, EndIf, EndRepeat, EndWhile, If, Repeat, Return,
+    SubStart, While,
 )
+from postproc.expr import Expr, Num
 from postproc.rs274.codes import CodeTable
 from postproc.rs274.expressions import LINUXCNC_SPELLING, ExprSpelling
 from postproc.rs274.oword import spell_assignments, spell_oword
@@ -59,6 +64,8 @@ class LinuxcncWriter(WordWriter):
         self._taken: set[str] = set()
         """O-word labels and subprogram names written so far."""
         self._counter = 0
+        self._ended = False
+        """The main program's end was written: an ``O<n>`` now starts a subprogram."""
 
     def units_words(self, s: Any, block: Block) -> list[str]:
         self.units_before = self.modal.units
@@ -85,6 +92,13 @@ class LinuxcncWriter(WordWriter):
         try:
             if isinstance(section, Assign):
                 return [spell_assignments(section)]
+            if isinstance(section, Call) and section.kind == "sub":
+                return self.subprogram_call(section, block)
+            if isinstance(section, Return) and section.name is None and section.value is None:
+                if section.target is not None:
+                    self.unsupported("a return to a block number (M99 P: rs274 refuses it)", block)
+                self._alone("M99", block)
+                return ["M99"]
             if self.source_dialect != self.DIALECT:
                 section = self._relabel(section, block)
             return [spell_oword(section)]
@@ -122,8 +136,49 @@ class LinuxcncWriter(WordWriter):
         renamed.label = fresh
         return renamed
 
+    def subprogram_call(self, call: Call, block: Block) -> list[str]:
+        """``M98 P<n> [L<k>]``: no arguments (they would set locals the caller shares)."""
+        if call.args:
+            self.unsupported("a subprogram call with arguments (M98 passes none)", block)
+        self._alone("M98", block)
+        name = call.name
+        if isinstance(name, str):
+            if not name.isdigit():
+                self.unsupported(f"a call of the named subprogram {name} with M98 (it calls program numbers)", block)
+            words = ["M98", "P" + str(int(name))]
+        else:
+            words = ["M98", "P" + self._count(name, block)]
+        if call.repeat is not None:
+            words.append("L" + self._count(call.repeat, block))
+        return words
+
+    def _count(self, value: Expr, block: Block) -> str:
+        """A P or L value: a whole number without a point (rs274 reads ``L2.`` too, but this is what
+        it prints), else the expression."""
+        if isinstance(value, Num) and value.value.is_integer() and value.value >= 0:
+            return str(int(value.value))
+        return self.expression(value, block)
+
+    def _alone(self, code: str, block: Block) -> None:
+        """rs274 runs M98 and M99 only alone on their line (an N and comments aside)."""
+        others = [key for key in block.sections if key not in ("Control", "Sequence", "Comments")]
+        if others:
+            self.unsupported(f"{code} sharing its line with other words ({', '.join(others)}): rs274 refuses it",
+                             block)
+
+    def write_block(self, block: Block) -> str | None:
+        text = super().write_block(block)
+        end = block.sections.get("ProgramControl")
+        if end is not None and end.kind in ("end", "end_rewind"):  # type: ignore[attr-defined]
+            self._ended = True
+        return text
+
     def program_start(self, s: Any, block: Block) -> str:
-        """LinuxCNC reads O as an O-word (subprograms, loops): the program number stays a comment."""
+        """``O<n>`` after the main program's end (a subprogram start, as rs274 reads it) or from a
+        LinuxCNC source; else a comment: in the flow an ``O`` line does nothing, and leaving the
+        program number out keeps a later ``M98`` from finding it."""
+        if s.number is not None and (self._ended or self.source_dialect == self.DIALECT):
+            return f"O{int(s.number)}"
         name = f"O{int(s.number):04d}" if s.number is not None else str(s.name)
         return self.comment(name)
 

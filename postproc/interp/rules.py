@@ -1,0 +1,41 @@
+"""How a dialect family finds and ends numbered subprograms (``O<n>`` ... ``M99``, called by ``M98``).
+
+Fanuc: the subprograms are the ``O`` blocks after the main program's end (or library files), each runs
+to ``M99`` or to the next ``O``, and ``M99`` in the main program starts it again.
+
+LinuxCNC's Fanuc-style subprograms (checked with the packaged ``rs274``):
+- ``M98 P<n>`` looks for ``O<n>`` from the call onward, in the calling file, and remembers what it found:
+  an ``O<n>`` only before the call is "EOF in file ... seeking o-word: o<n>"; one found once is found again
+  from anywhere. The first ``O<n>`` after the call wins. No library file is searched.
+- The subprogram runs until ``M99`` (an ``O`` line on its way does nothing); running off the end of the
+  file is "File ended with no percent sign or program end"; ``M2``/``M30`` in it end the program.
+- ``M98`` to an ``o<n> sub`` is "'O.... sub' subroutine must be called with 'O.... call'", and
+  ``o<n> call`` to an ``O<n>`` "Fanuc 'O....' subroutine must be called with 'M98'".
+- ``M99`` in the main program ends it as ``M2`` does (the canonical calls are M2's).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from .variables import NgcVariables, Variables
+
+
+@dataclass(frozen=True)
+class SubprogramRules:
+    forward_search: bool
+    """``M98`` looks for ``O<n>`` from the call onward and the body runs to ``M99`` (LinuxCNC); else the
+    store's subprograms after the main program's end (Fanuc)."""
+    main_return_words: tuple[tuple[str, str], ...] | None
+    """What ``M99`` in the main program runs instead (LinuxCNC: ``M2``); None: it restarts the program."""
+
+
+FANUC_RULES = SubprogramRules(forward_search=False, main_return_words=None)
+NGC_RULES = SubprogramRules(forward_search=True, main_return_words=(("M", "2"),))
+
+
+def rules_for(variables: Variables) -> SubprogramRules:
+    """The rules of the family whose variable model ``variables`` is. The interpreter step
+    (``step.py``, not changed here) does not pass its dialect's rules yet: the variable model names the
+    family until it does (``ProgramSyntax.SUBPROGRAM_RULES`` passed to ``Interpreter`` would be cleaner)."""
+    return NGC_RULES if isinstance(variables, NgcVariables) else FANUC_RULES
