@@ -32,7 +32,7 @@ from ..evaluation import var_key
 from ..ir import Block, Comments
 from ..setup import Limits
 from ..source_map import CallSite, ExecutedBlock, Origin
-from .rules import SubprogramRules, rules_for
+from .rules import STORED_PROGRAMS, SubprogramRules
 from .store import Program, ProgramStore, source_text
 from .variables import Variables
 
@@ -138,7 +138,7 @@ class Interpreter:
         self.frames: list[_Frame] = []
         self.modal: tuple[ModalCall, dict[int, Value], int, Block] | None = None
         self.ended = False
-        self.rules = rules or rules_for(variables)
+        self.rules = rules or STORED_PROGRAMS
         self.found: dict[tuple[str, str], int] = {}
         """(file, program number) -> position of the ``O`` block an ``M98`` found (forward search)."""
 

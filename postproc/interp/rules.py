@@ -1,4 +1,5 @@
-"""How a dialect family finds and ends numbered subprograms (``O<n>`` ... ``M99``, called by ``M98``).
+"""How a dialect finds and ends numbered subprograms: data a dialect's ``ProgramSyntax`` sets
+(``SUBPROGRAM_RULES``); the two families known today:
 
 Fanuc: the subprograms are the ``O`` blocks after the main program's end (or library files), each runs
 to ``M99`` or to the next ``O``, and ``M99`` in the main program starts it again.
@@ -18,7 +19,6 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from .variables import NgcVariables, Variables
 
 
 @dataclass(frozen=True)
@@ -30,12 +30,6 @@ class SubprogramRules:
     """What ``M99`` in the main program runs instead (LinuxCNC: ``M2``); None: it restarts the program."""
 
 
-FANUC_RULES = SubprogramRules(forward_search=False, main_return_words=None)
-NGC_RULES = SubprogramRules(forward_search=True, main_return_words=(("M", "2"),))
-
-
-def rules_for(variables: Variables) -> SubprogramRules:
-    """The rules of the family whose variable model ``variables`` is. The interpreter step
-    (``step.py``, not changed here) does not pass its dialect's rules yet: the variable model names the
-    family until it does (``ProgramSyntax.SUBPROGRAM_RULES`` passed to ``Interpreter`` would be cleaner)."""
-    return NGC_RULES if isinstance(variables, NgcVariables) else FANUC_RULES
+STORED_PROGRAMS = SubprogramRules(forward_search=False, main_return_words=None)
+"""The subprograms are the programs after the main program's end (or library files); a return in the
+main program starts it again (Fanuc)."""

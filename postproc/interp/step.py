@@ -25,6 +25,7 @@ from ..ir import AXES, Block
 from ..context import Context
 from ..syntax import Syntax
 from .machine import Interpreter, spell_integer, spell_number
+from .rules import STORED_PROGRAMS, SubprogramRules
 from .store import Program, ProgramStore
 from .variables import FanucVariables, NgcVariables, Variables
 
@@ -53,6 +54,8 @@ class ProgramSyntax(Syntax):
     """File names tried in each library folder for a subprogram (``{name}``: its name, brackets
     removed; ``{number}``: the name as an int, for ``{number:04d}``-style patterns)."""
     PROGRAM_LABEL: ClassVar[str] = "{name}"
+    SUBPROGRAM_RULES: ClassVar[SubprogramRules] = STORED_PROGRAMS
+    """How numbered subprograms are found and ended (``postproc.interp.rules``)."""
     """How messages name a subprogram (``O{number:04d}``, ``o{name}``)."""
 
     def build(self, block: Block, ctx: Context) -> None:
@@ -167,7 +170,8 @@ class ProgramSyntax(Syntax):
         increment = ctx.setup.input.increment
         state = ctx.state
         variables: Variables = self.VARIABLES(lambda: increment(state.units))
-        interpreter = Interpreter(store, self, variables, ctx.setup.limits, ctx.diagnostics.error, annotate=True)
+        interpreter = Interpreter(store, self, variables, ctx.setup.limits, ctx.diagnostics.error, annotate=True,
+                                  rules=self.SUBPROGRAM_RULES)
         yield from interpreter.run(start=len(prefix))
 
     def _reread(self, kept: deque[tuple[str, str] | None], ctx: Context, first_line: int) -> list[Block]:

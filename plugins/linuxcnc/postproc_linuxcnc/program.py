@@ -14,6 +14,7 @@ from __future__ import annotations
 from typing import ClassVar
 
 from postproc.errors import ProgramError
+from postproc.interp.rules import SubprogramRules
 from postproc.interp import NgcVariables, ProgramSyntax, spell_number
 
 INTEGER_TOLERANCE = 0.0001
@@ -31,6 +32,9 @@ class LinuxcncProgramSyntax(ProgramSyntax):
     VARIABLES = NgcVariables
     LIBRARY_FILES: ClassVar[tuple[str, ...]] = ("{name}.ngc",)
     PROGRAM_LABEL: ClassVar[str] = "o{raw}"
+    SUBPROGRAM_RULES: ClassVar[SubprogramRules] = SubprogramRules(forward_search=True,
+                                                                  main_return_words=(("M", "2"),))
+    """rs274: M98 looks for O<n> from the call on and runs to M99; M99 in the main program is M2."""
 
     def spell_evaluated(self, letter: str, value: float) -> str:
         if letter in self.INTEGER_ADDRESSES:
