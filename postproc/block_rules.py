@@ -10,12 +10,14 @@ step, which looks only at the blocks before the first feed rate.
   that computes (jumps, loops, subprograms) the order of the text is not the order of execution: from
   its first construct on, ``translate`` leaves this check to the run (``toolpath``, ``verify``).
 
-Arc geometry (an end point off the circle) needs the tool's position, which only the simulator tracks;
-``translate`` does not check it yet.
+* An arc's end point lies on its circle (I/J/K form, within ``ARC_TOLERANCE_MM``), its R reaches the
+  end point, and an R arc is no full circle (``arc_centre``): the simulator checks every arc; the reading
+  pipeline's modal-state step checks every arc whose start it knows (``translate`` refuses it too).
 """
 
 from __future__ import annotations
 
+import math
 from itertools import chain
 from typing import Iterator
 
@@ -23,6 +25,7 @@ from .context import Context
 from .control import ASSIGN, CONTROL
 from .dialect import Dialect
 from .errors import ProgramError
+from .geometry import ARC_TOLERANCE_MM, PLACES, centre_from_radius
 from .ir import Block
 
 NO_FEED = "a feed move with no feed rate (program F first)"
@@ -99,3 +102,39 @@ def _until_fed(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
                     report(ProgramError(NO_FEED, ctx.at(block)))
                     break
         yield block
+
+
+class ArcError(ProgramError):
+    """An arc no controller runs; ``letter`` is the word to point at (``R``, ``I``/``J``/``K`` or ``G``)."""
+
+    def __init__(self, message: str, letter: str) -> None:
+        super().__init__(message)
+        self.letter = letter
+
+
+_CENTRE_LETTERS = {"X": "I", "Y": "J", "Z": "K"}
+
+
+def arc_centre(s: tuple[float, float], e: tuple[float, float], axes: tuple[str, str], radius: float | None,
+               offsets: dict[str, float], clockwise: bool) -> tuple[float, float] | None:
+    """The centre of an arc from ``s`` to ``e`` in mm (plane axes ``axes``), from its R or its centre
+    offsets (mm); None for a zero-radius arc that does not move (a controller runs it as nothing).
+    Raises ``ArcError`` for an arc no controller runs."""
+    if radius is not None:
+        try:
+            return centre_from_radius(s, e, radius, clockwise)
+        except ProgramError as err:
+            raise ArcError(err.message, "R") from None
+    a1, a2 = axes
+    c = (s[0] + offsets.get(a1, 0.0), s[1] + offsets.get(a2, 0.0))
+    r0 = math.hypot(s[0] - c[0], s[1] - c[1])
+    r1 = math.hypot(e[0] - c[0], e[1] - c[1])
+    letter = next((_CENTRE_LETTERS[a] for a in offsets if a in _CENTRE_LETTERS), "G")
+    if abs(r0 - r1) > ARC_TOLERANCE_MM:
+        raise ArcError(f"arc end point is not on the circle: radius {r0:.4f} mm at the start, "
+                       f"{r1:.4f} mm at the end", letter)
+    if r0 < 10.0 ** -PLACES:
+        if round(e[0], PLACES) == round(s[0], PLACES) and round(e[1], PLACES) == round(s[1], PLACES):
+            return None
+        raise ArcError("arc centre coincides with its start point", "G")
+    return c

@@ -29,11 +29,11 @@ import math
 from typing import Any, Callable, Iterable, Iterator
 
 from .api import gc_paused, read_blocks
-from .block_rules import NO_FEED, check_blocks, needs_feed
+from .block_rules import NO_FEED, ArcError, arc_centre, check_blocks, needs_feed
 from .program_end import EndTracker, comment_after_end
 from .dialect import Dialect
 from .errors import Diagnostics, Location, PostprocError, ProgramError, UnsupportedError
-from .geometry import ARC_TOLERANCE_MM, CENTRE_KEYS, PLACES, centre_from_radius
+from .geometry import CENTRE_KEYS, PLACES
 from .ir import Block, Motion, Section
 from .lower import lower_for
 from .plugins import Registry, default_registry
@@ -304,29 +304,20 @@ class Simulator:
         s = (pos[a1], pos[a2])
         e = (target[a1], target[a2])
         clockwise = m.mode == "cw"
-        if m.radius is not None:
-            try:
-                c = centre_from_radius(s, e, m.radius * self.scale, clockwise)
-            except ProgramError as err:
-                raise err.located(self._at(block, "R")) from None
-        else:
-            offsets = m.center or {}
-            for axis in offsets:
-                if axis not in (a1, a2):
-                    raise ProgramError(f"arc centre offset along {axis} is outside the {plane} plane",
-                                       self._at(block, _CENTRE_LETTER.get(axis, "G")))
-            c = (s[0] + offsets.get(a1, 0.0) * self.scale, s[1] + offsets.get(a2, 0.0) * self.scale)
-            r0 = math.hypot(s[0] - c[0], s[1] - c[1])
-            r1 = math.hypot(e[0] - c[0], e[1] - c[1])
-            if abs(r0 - r1) > ARC_TOLERANCE_MM:
-                letter = next((_CENTRE_LETTER[a] for a in offsets if a in _CENTRE_LETTER), "G")
-                raise ProgramError(f"arc end point is not on the circle: radius {r0:.4f} mm at the start, "
-                                   f"{r1:.4f} mm at the end", self._at(block, letter))
-            if r0 < 10.0 ** -PLACES:
-                if num(e[0]) == num(s[0]) and num(e[1]) == num(s[1]):
-                    self.line_move("feed", target, block.line, emit)  # zero radius, zero length: dropped
-                    return
-                raise ProgramError("arc centre coincides with its start point", self._at(block))
+        offsets = m.center or {}
+        for axis in offsets:
+            if axis not in (a1, a2):
+                raise ProgramError(f"arc centre offset along {axis} is outside the {plane} plane",
+                                   self._at(block, _CENTRE_LETTER.get(axis, "G")))
+        scale = self.scale
+        radius = None if m.radius is None else m.radius * scale
+        try:
+            c = arc_centre(s, e, (a1, a2), radius, {a: v * scale for a, v in offsets.items()}, clockwise)
+        except ArcError as err:
+            raise err.located(self._at(block, err.letter)) from None
+        if c is None:
+            self.line_move("feed", target, block.line, emit)  # zero radius, zero length: dropped
+            return
         rounded = {a: num(v) for a, v in target.items()}
         ev: Event = {"line": block.line, "move": m.mode}
         for axis, key in self.keys:

@@ -81,3 +81,24 @@ def test_a_program_that_computes_leaves_the_feed_order_to_the_run() -> None:
     ctx = Context("p.ngc", MachineSetup(), diagnostics, "linuxcnc")
     list(check_blocks(iter(blocks[1:2]), ctx, Dialect))
     assert [e.message for e in diagnostics.errors] == ["a feed move with no feed rate (program F first)"]
+
+
+ARCS = [
+    ("G02 X20. Y0 I5. J0", "t.nc:3:13: error: arc end point is not on the circle: radius 5.0000 mm at the start, "
+                          "15.0000 mm at the end"),
+    ("G02 X10. Y0 R2.", "t.nc:3:13: error: arc radius 2.0000 mm is too small for a chord of 10.0000 mm"),
+    ("G03 X0 Y0 R5.", "t.nc:3:11: error: a full circle cannot be programmed with R (use I/J/K)"),
+]
+
+
+@pytest.mark.parametrize("arc, message", ARCS)
+@pytest.mark.parametrize("target", ["fanuc", "linuxcnc", "grbl"])
+def test_translate_refuses_the_arcs_the_toolpath_refuses(arc: str, message: str, target: str) -> None:
+    """One place decides (postproc.block_rules.arc_centre): translate, toolpath and verify agree."""
+    program = f"G21 G17 G90 G00 X0 Y0 Z5.\nG01 Z-1. F100.\n{arc}\nM30\n"
+    with pytest.raises(ErrorList) as exc:
+        translate(io.StringIO(program), io.StringIO(), file="t.nc", source="fanuc", target=target)
+    assert [str(e) for e in exc.value.errors] == [message]
+    with pytest.raises(ErrorList) as exc:
+        list(toolpath_events(io.StringIO(program), file="t.nc", dialect="fanuc"))
+    assert [str(e) for e in exc.value.errors] == [message]

@@ -11,9 +11,10 @@ It also refuses a negative F or S (``postproc.block_rules``): every reading pass
 
 from __future__ import annotations
 
-from postproc.block_rules import check_values
+from postproc.block_rules import ArcError, arc_centre, check_values
 from postproc.expr import Expr
 from postproc.ir import Block, Motion
+from postproc.state import MM_PER_INCH, PLANE_AXES
 from postproc.context import Context
 from postproc.syntax import Syntax
 
@@ -47,6 +48,8 @@ class ModalStateSyntax(Syntax):
             for axis in motion.axes:
                 pos[axis] = None
             return
+        if mode == "cw" or mode == "ccw":
+            _check_arc(block, ctx, motion)
         if state.distance != "incremental":
             pos.update(motion.axes)
         else:
@@ -56,3 +59,32 @@ class ModalStateSyntax(Syntax):
         for axis, value in motion.axes.items():
             if isinstance(value, Expr):
                 pos[axis] = None  # computed: known only when the program runs
+
+
+def _check_arc(block: Block, ctx: Context, motion: Motion) -> None:
+    """Refuse an arc no controller runs (``postproc.block_rules.arc_centre``) when its start is known,
+    so ``translate`` refuses what ``toolpath`` refuses; an arc with a computed word waits for the run."""
+    state = ctx.state
+    a1, a2, _ = PLANE_AXES[state.plane]
+    start = (state.position.get(a1), state.position.get(a2))
+    values = [*motion.axes.values(), *(motion.center or {}).values(), motion.radius]
+    if start[0] is None or start[1] is None or any(isinstance(v, Expr) for v in values):
+        return
+    incremental = state.distance == "incremental"
+    end = [start[0], start[1]]
+    for i, axis in enumerate((a1, a2)):
+        value = motion.axes.get(axis)
+        if value is not None:
+            end[i] = end[i] + value if incremental else value
+    scale = MM_PER_INCH if state.units == "inch" else 1.0
+    offsets = {a: v * scale for a, v in (motion.center or {}).items() if a in (a1, a2)}
+    radius = None if motion.radius is None else motion.radius * scale
+    try:
+        arc_centre((start[0] * scale, start[1] * scale), (end[0] * scale, end[1] * scale), (a1, a2), radius,
+                   offsets, motion.mode == "cw")
+    except ArcError as err:
+        # the arc goes from the block (reported once, here), and the tool's place is unknown after it
+        del block.sections["Motion"]
+        for axis in motion.axes:
+            state.position[axis] = None
+        raise err.located(ctx.at(block, ctx.column_of(block, err.letter))) from None
