@@ -69,7 +69,7 @@ KNOWN_DEFECTS: list[tuple[str, str | None, re.Pattern[str]]] = [
     ("grbl writer puts G53 in a block whose motion is an arc (its reader refuses that)", "grbl",
      re.compile(r"reader refuses the grbl output: .*G53 needs G0 or G1 in force")),
     ("LinuxCNC codes kept verbatim (G76 threading, G87/G88 with their own words) are not simulated", None,
-     re.compile(r"^translated, but verify fails: in\.nc:\d+:\d+: error: G\d+ \(RS274/NGC .*cannot be simulated")),
+     re.compile(r"^translated, but verify fails: in\.nc:\d+:\d+: error: G\d+ \((RS274/NGC|threading).*cannot be simulated")),
     ("grbl writes a tool change as a program stop (M0): verify sees another event", "grbl",
      re.compile(r"IN has tool change to T\w*, OUT ")),
 ]
