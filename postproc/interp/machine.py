@@ -32,6 +32,7 @@ from ..evaluation import var_key
 from ..ir import Block, Comments
 from ..setup import Limits
 from ..source_map import CallSite, ExecutedBlock, Origin
+from .spelling import spell_integer, spell_number
 from .rules import STORED_PROGRAMS, SubprogramRules
 from .store import Program, ProgramStore, source_text
 from .variables import Variables
@@ -92,26 +93,6 @@ class _Frame:
         self.site = site
         self.needs_return = False
         """The body ends only at a return (LinuxCNC's ``O<n>`` ... ``M99``): running off its end is an error."""
-
-
-def spell_number(value: float) -> str:
-    """A real as program text with an explicit decimal point and every significant digit, never an
-    exponent: 10.0 -> '10.', 0.1 -> '0.1', 1e-07 -> '0.0000001', -0.0 -> '-0.'."""
-    text = repr(value)
-    if "e" in text or "E" in text:
-        text = format(Decimal(text), "f")
-    if "." not in text:
-        return text + "."
-    if text.endswith(".0"):
-        return text[:-1]
-    return text
-
-
-def spell_integer(letter: str, value: float) -> str:
-    """The text of an address that takes an integer (G, M, N, P...): an error for any other value."""
-    if not value.is_integer():
-        raise ProgramError(f"address {letter} takes an integer, the expression gives {value:g}")
-    return str(int(value))
 
 
 def _is_number(text: str) -> bool:

@@ -16,7 +16,7 @@ from __future__ import annotations
 
 from collections import deque
 from pathlib import Path
-from typing import ClassVar, Iterable, Iterator
+from typing import TYPE_CHECKING, ClassVar, Iterable, Iterator
 
 from ..control import ASSIGN, CONTROL
 from ..errors import Diagnostics, ErrorLevel, PostprocError
@@ -24,10 +24,12 @@ from ..expr import Expr
 from ..ir import AXES, Block
 from ..context import Context
 from ..syntax import Syntax
-from .machine import Interpreter, spell_integer, spell_number
+from .spelling import spell_integer, spell_number
 from .rules import STORED_PROGRAMS, SubprogramRules
-from .store import Program, ProgramStore
 from .variables import FanucVariables, NgcVariables, Variables
+
+if TYPE_CHECKING:
+    from .store import Program
 
 ENCODING = {"encoding": "utf-8", "errors": "surrogateescape", "newline": ""}
 
@@ -107,6 +109,7 @@ class ProgramSyntax(Syntax):
         except OSError as exc:
             from ..errors import ConfigError
             raise ConfigError(f"cannot read {path}: {exc.strerror}") from None
+        from .store import Program
         return Program(str(path), blocks, self.is_program_end)
 
     # -- the stream ------------------------------------------------------------------------------
@@ -160,6 +163,8 @@ class ProgramSyntax(Syntax):
         prefix = self._reread(kept, ctx, first_line=first.line - len(kept))
         body = prefix + [first]
         body.extend(rest)
+        from .machine import Interpreter  # loaded only when a program computes
+        from .store import Program, ProgramStore
         try:
             main = Program(ctx.file, body, self.is_program_end)
         except PostprocError as err:
