@@ -48,9 +48,14 @@ class ModalState:
     position: dict[str, float | None] = field(default_factory=lambda: {"X": None, "Y": None, "Z": None})
     extra: dict[str, Any] = field(default_factory=dict)
     """Room for dialect- or syntax-specific modal data (keyed by the syntax's XML name)."""
+    symbolic: bool = False
+    """A computed word (an ``Expr`` kept symbolically) was met: positions may be computed, so the steps
+    that track them check for one (a straight program never pays for the check)."""
 
     def apply(self, sections: Mapping[str, Any]) -> None:
         """Apply a block's modal sections (those that change nothing here are ignored)."""
+        if _NO_MODAL_KEY(sections):
+            return  # the common block: a move, maybe a block number
         for key, section in sections.items():
             change = _APPLY.get(key)
             if change is not None:
@@ -96,3 +101,4 @@ _APPLY: dict[str, Callable[[ModalState, Any], None]] = {
 
 MODAL_KEYS = frozenset(_APPLY)
 """Section keys that change the modal state."""
+_NO_MODAL_KEY = MODAL_KEYS.isdisjoint

@@ -58,6 +58,7 @@ class WordBlockSyntax(Syntax):
             return
         values = block.values
         if values:
+            ctx.state.symbolic = True  # the reader left computed values: a program kept symbolically
             if "G" in values or "M" in values:
                 up = "G" if "G" in values else "M"
                 block.add(NativeCode(self.DIALECT, f"a computed {up} code", block.text or ""))

@@ -58,8 +58,10 @@ class NgcWordBlockSyntax(WordBlockSyntax):
         if not words:
             return
         exprs = block.values
-        if exprs and self._computed_code(block, ctx, exprs):
-            return
+        if exprs:
+            ctx.state.symbolic = True  # the reader left computed values: a program kept symbolically
+            if self._computed_code(block, ctx, exprs):
+                return
         codes: dict[str, tuple[str, str, object, str]] = {}
         natives: list[str] = []
         raw: dict[str, str] = {}

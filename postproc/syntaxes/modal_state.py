@@ -56,9 +56,10 @@ class ModalStateSyntax(Syntax):
             for axis, value in motion.axes.items():
                 old = pos.get(axis)
                 pos[axis] = None if old is None or isinstance(value, Expr) else old + value
-        for axis, value in motion.axes.items():
-            if isinstance(value, Expr):
-                pos[axis] = None  # computed: known only when the program runs
+        if state.symbolic:
+            for axis, value in motion.axes.items():
+                if isinstance(value, Expr):
+                    pos[axis] = None  # computed: known only when the program runs
 
 
 def _check_arc(block: Block, ctx: Context, motion: Motion) -> None:
