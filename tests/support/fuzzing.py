@@ -55,20 +55,7 @@ def setups() -> st.SearchStrategy[MachineSetup]:
 
 KNOWN_DEFECTS: list[tuple[str, str | None, re.Pattern[str]]] = [
     ("example writer writes inf (its own number format)", "example", re.compile(r"^non-finite number")),
-    ("linuxcnc and grbl writers put G80 and a motion code in one block (their readers refuse it)", None,
-     re.compile(r"reader refuses the \w+ output: .*G80 and G0?\d are both in one modal group")),
-    ("grbl writes a tool change as M0 next to another stop code (M30) in one block", "grbl",
-     re.compile(r"reader refuses the grbl output: .*M codes M0 and M\d+ conflict in one block")),
-    ("linuxcnc writes M19's angle as R in a block with an R-less arc (its reader refuses I/J/K with R)",
-     "linuxcnc", re.compile(r"reader refuses the linuxcnc output: .*an arc takes either I/J/K or R, not both")),
     ("an expanded cycle is written before its block's tool change (M06)", "linuxcnc",
-     re.compile(r"IN has tool change to T\w*, OUT ")),
-    ("sub-micrometre incremental moves are rounded word by word, so their sum drifts", None,
-     re.compile(r"^translated, but verify says: max deviation 0\.0000 mm .*structure differs\n"
-                r"first difference at .*(has no more moves|IN has a \w+ to .*-0\b)")),
-    ("grbl writer puts G53 in a block whose motion is an arc (its reader refuses that)", "grbl",
-     re.compile(r"reader refuses the grbl output: .*G53 needs G0 or G1 in force")),
-    ("grbl writes a tool change as a program stop (M0): verify sees another event", "grbl",
      re.compile(r"IN has tool change to T\w*, OUT ")),
     ("translate accepts a block the toolpath of the same dialect refuses", None,
      re.compile(r"^translated, but verify fails: in\.nc:")),
