@@ -213,8 +213,8 @@ def _explain(file: str, line: int, code: str, pos: int = 0) -> tuple[str, Locati
         if ch == "/":
             return "block delete '/' must start the block", Location(file, line, pos + 1)
         if ch.isdigit() or ch in "+-.":
-            token = _TOKEN.match(code, pos)
-            assert token is not None
-            return f"number without an address at {token.group(0)!r}", Location(file, line, pos + 1)
+            number = _TOKEN.match(code, pos)
+            assert number is not None
+            return f"number without an address at {number.group(0)!r}", Location(file, line, pos + 1)
         return f"unexpected character {ch!r}", Location(file, line, pos + 1)
     return "malformed block", Location(file, line, 1)
