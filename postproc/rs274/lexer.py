@@ -31,6 +31,9 @@ _BADWORD = re.compile(r"[A-Za-z][ \t]*[-+.\d]*")
 _COLON = re.compile(r"[ \t]*:(\d+)")
 _SKIP = re.compile(r"[ \t]*/(\d?)")
 _COMMENT = re.compile(r"\(([^()]*)\)")
+_BLANKS = re.compile(r"[ \t]*+")
+_TOKEN = re.compile(r"\S+")
+"""What ``str.split()`` would take as the token at a position (matched where it stands, not split off)."""
 
 
 def split_lines(lines: Iterable[str]) -> Iterator[tuple[int, str, str]]:
@@ -103,6 +106,8 @@ def _lex_macro(file: str, block: Block, code: str) -> list[tuple[str, str]]:
     come first after N. Anything else is explained as on a plain line."""
     words: list[tuple[str, str]] = []
     n = len(code)
+    last = len(code.rstrip()) - 1
+    """Where a ';' that only ends the block stands (nothing but blanks after it)."""
     pos = 0
     try:
         while pos < n:
@@ -110,7 +115,7 @@ def _lex_macro(file: str, block: Block, code: str) -> list[tuple[str, str]]:
             if c == " " or c == "\t":
                 pos += 1
                 continue
-            if c == ";" and not code[pos + 1:].strip():
+            if c == ";" and pos == last:
                 break
             statement = c == "#" or (c in _LETTER and pos + 1 < n and code[pos + 1] in _LETTER)
             if statement:
@@ -172,21 +177,24 @@ def _take_comments(file: str, block: Block, code: str) -> str:
 
 
 def _explain(file: str, line: int, code: str, pos: int = 0) -> tuple[str, Location]:
-    """Find what makes a line malformed, from ``pos`` on (slow path, only on error)."""
+    """Find what makes a line malformed, from ``pos`` on (slow path, only on error). Linear in the line:
+    each word is matched once where it stands, nothing after it is copied."""
     n = len(code)
+    last = len(code.rstrip()) - 1
     while pos < n:
         ch = code[pos]
         if ch in " \t":
             pos += 1
             continue
-        if ch == ";" and not code[pos + 1:].strip():
+        if ch == ";" and pos == last:
             break
         if ch == "#" or ch == "[" or code[pos:pos + 2].upper() in ("IF", "WH", "GO", "EN") and not WORD.match(code, pos):
             return ("macro variables and expressions are not supported by this reader yet",
                     Location(file, line, pos + 1))
         if ch.isascii() and ch.isalpha():
-            after = code[pos + 1:].lstrip(" \t")[:1]
-            if after in ("#", "["):
+            after = _BLANKS.match(code, pos + 1)
+            assert after is not None
+            if code[after.end():after.end() + 1] in ("#", "["):
                 return ("macro variables and expressions are not supported by this reader yet",
                         Location(file, line, pos + 1))
             m = WORD.match(code, pos)
@@ -204,6 +212,8 @@ def _explain(file: str, line: int, code: str, pos: int = 0) -> tuple[str, Locati
         if ch == "/":
             return "block delete '/' must start the block", Location(file, line, pos + 1)
         if ch.isdigit() or ch in "+-.":
-            return f"number without an address at {code[pos:].split()[0]!r}", Location(file, line, pos + 1)
+            number = _TOKEN.match(code, pos)
+            assert number is not None
+            return f"number without an address at {number.group(0)!r}", Location(file, line, pos + 1)
         return f"unexpected character {ch!r}", Location(file, line, pos + 1)
     return "malformed block", Location(file, line, 1)

@@ -120,7 +120,7 @@ class NgcWordBlockSyntax(WordBlockSyntax):
         if codes.get("00", ("", ""))[1] == "dwell":
             self._ngc_dwell(block, ctx, values, used, codes.pop("00")[3])
         self.g_sections(block, ctx, codes, values, used, cycle_block)
-        if "MachineCoordinates" in block.sections and "Motion" in block.sections:
+        if "MachineCoordinates" in block.sections:
             self._machine_move(block, ctx, codes)
         self.m_sections(block, ctx, mcodes, values, used)
         self.finish_words(block, ctx, values, used)
@@ -213,7 +213,8 @@ class NgcWordBlockSyntax(WordBlockSyntax):
 
     def _machine_move(self, block: Block, ctx: Context, codes: dict[str, Any]) -> None:
         """Machine coordinates move in the motion mode in force, which must be rapid or linear (the ISO
-        reading always rapids)."""
+        reading always rapids); also without axis words (LinuxCNC: "Must use g0 or g1 with g53"; grbl's
+        gcode.c checks the motion mode of every G53 block)."""
         mode = codes["01"][2] if "01" in codes else ctx.state.motion
         if ctx.state.extra.get(_STATE_KEY) and "01" not in codes:
             mode = None
@@ -221,7 +222,9 @@ class NgcWordBlockSyntax(WordBlockSyntax):
             machine = self.spell("machine")
             raise ProgramError(f"{machine} needs {self.spell('motion', 'rapid')} or {self.spell('motion', 'linear')} "
                                "in force", ctx.at(block, col_of_word(block, machine[:1], machine[1:])))
-        block.sections["Motion"].mode = mode  # type: ignore[attr-defined]
+        motion = block.sections.get("Motion")
+        if motion is not None:
+            motion.mode = mode  # type: ignore[attr-defined]
 
     def _ngc_dwell(self, block: Block, ctx: Context, values: dict[str, Any], used: set[str], num: str) -> None:
         """Dwell P<seconds> (the ISO reading: P milliseconds or X seconds), made before the shared logic runs."""

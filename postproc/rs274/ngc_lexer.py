@@ -50,17 +50,23 @@ _O_WORDS = "O-words (subprograms, loops, conditions) are not supported by the {}
 
 
 def lex_block(file: str, number: int, text: str, eol: str, dialect: str,
-              oword: OwordParser | None = None, calls: Callable[[Block, str], None] | None = None) -> Block:
+              oword: OwordParser | None = None, calls: Callable[[Block, str], None] | None = None,
+              ignore_slash: Callable[[Location], None] | None = None) -> Block:
     """Lex one line into a block: words as written (letter case kept), comments, block delete, and
     with ``oword`` (the file's ``OwordParser``) o-words, assignments and expression values.
 
     ``dialect`` only names the reader in messages. ``calls(block, code)``, given with ``oword``, reads
     the block's call or return words (``code``: the line with its comments blanked out, for columns).
+    With ``ignore_slash`` (grbl, which has no block delete), every ``/`` outside comments is dropped,
+    wherever it stands, and the block runs; ``ignore_slash`` is told where the first one was.
     """
     block = Block(number, text, eol)
     code = text
     if "(" in code or ")" in code or ";" in code:
         code = strip_comments(file, block, code)
+    if ignore_slash is not None and "/" in code:
+        ignore_slash(Location(file, number, code.index("/") + 1))
+        code = code.replace("/", " ")  # blanks inside a number are ignored: X1/2 is X12, as grbl reads it
     if "/" in code:
         m = _SKIP.match(code)
         if m:
@@ -241,6 +247,9 @@ class NgcReader(Reader):
 
     DIALECT = ""
     """Names the dialect in lexical error messages."""
+    BLOCK_DELETE = True
+    """``/`` at the start of a block skips it when the operator's switch is on; False (grbl): the character
+    is ignored wherever it stands and the block runs, with a warning."""
     PARAMETRIC = False
     """The dialect reads o-words, parameters and expressions (LinuxCNC); else they are errors (grbl)."""
 
@@ -254,9 +263,13 @@ class NgcReader(Reader):
         report = self.ctx.diagnostics.error
         oword = OwordParser() if self.PARAMETRIC else None
         calls = self.read_call if self.PARAMETRIC else None
+        ignore_slash = None if self.BLOCK_DELETE else self._ignored_slash
         for number, text, eol in split_lines(lines):
             try:
-                yield lex_block(file, number, text, eol, dialect, oword, calls)
+                yield lex_block(file, number, text, eol, dialect, oword, calls, ignore_slash)
             except PostprocError as err:
                 report(err)
                 yield Block(number, text, eol)
+
+    def _ignored_slash(self, where: Location) -> None:
+        self.ctx.diagnostics.warn(f"'/' is ignored by {self.DIALECT} (no block delete): the block runs", where)

@@ -20,7 +20,7 @@ from .codes import CodeTable
 from .expressions import ExprSpelling, spell_word_value
 from ..ir import Block, CompoundMotion, Motion, Section
 from ..numbers import EXACT, EXACT_INCH, MAX_PLACES, canonical_number_re, format_decimal
-from ..state import ModalState
+from ..state import MM_PER_INCH, ModalState
 from ..context import Context
 from ..dialect import Dialect, Writer
 
@@ -47,6 +47,10 @@ class WordWriter(Writer):
     IGNORED: ClassVar[frozenset[str]] = frozenset()
     """Sections that annotate a block and produce no words of their own."""
     TRANSFORMS: ClassVar[dict[str, Callable[["WordWriter", Any, Block], list[str]]]] = {}
+    CYCLE_CANCEL_IS_MOTION: ClassVar[bool] = False
+    """True where the cycle cancel is one of the motion codes (RS274/NGC: G80 and G0 in one block are a
+    modal-group error): a block that writes a motion code leaves the cancel out, the motion code ends
+    the cycle by itself."""
     SPELLING: ClassVar[ExprSpelling | None] = None
     """How the dialect writes an expression in a word (``X[#1*2.]``); None: it has no expressions, and a
     computed word is an ``UnsupportedError`` naming it."""
@@ -64,6 +68,9 @@ class WordWriter(Writer):
         self.copy_ok = source_dialect == self.DIALECT and not self.normalize and not self.renumber
         self.modal = ModalState()
         """What the written program has in force so far (units, distance mode, feed, plane, spindle...)."""
+        self.carry: dict[str, float] = {}
+        """Axis -> where the source program is minus where the written one is (program units): what
+        rounding left behind, added to the next incremental word so the sum of increments stays exact."""
 
     # -- numbers -----------------------------------------------------------------------------------
     def number(self, value: float) -> str:
@@ -128,7 +135,10 @@ class WordWriter(Writer):
         if (text is not None and not self.renumber and self.leading_zero
                 and "Comments" not in sections and "BlockDelete" not in sections
                 and block.canonical):
+            self._exact_axes(block)
             return text  # already normal: upper-case words, single spaces, explicit exact numbers
+        axes = self._rounded_axes(block)
+        self._exact_axes(block)  # a canonical absolute word is exact; a rounded one sets its carry again
         parts: list[str] = []
         skip = sections.get("BlockDelete")
         if skip is not None:
@@ -141,7 +151,9 @@ class WordWriter(Writer):
             if up == "N" and renumber:
                 continue
             value = values.get(up)
-            if value.__class__ is float and not canonical(num):  # an expression keeps its text
+            if isinstance(value, float) and up in axes and (axes[up] and up in self.carry or not canonical(num)):
+                parts.append(up + self.position(up, value, axes[up]))
+            elif value.__class__ is float and not canonical(num):  # an expression keeps its text
                 parts.append(up + number(value))
             else:
                 parts.append(up + num)
@@ -302,6 +314,9 @@ class WordWriter(Writer):
         return self._code("plane", s.plane, f"the {s.plane} plane", block)
 
     def units_words(self, s: Any, block: Block) -> list[str]:
+        if s.system != self.modal.units and self.carry:
+            factor = MM_PER_INCH if s.system == "mm" else 1.0 / MM_PER_INCH
+            self.carry = {axis: error * factor for axis, error in self.carry.items()}
         self.modal.set_units(s.system)  # the block's numbers are written in its units
         return self._code("units", s.system, f"{s.system} units", block)
 
@@ -346,9 +361,16 @@ class WordWriter(Writer):
         return self._code("path", s.mode, f"path control {s.mode}", block)
 
     def machine_coordinates_words(self, s: Any, block: Block) -> list[str]:
+        """Machine coordinates qualify the block's move; without one they do nothing, and RS274/NGC refuses
+        them unless G0 or G1 is in force, so they are not written."""
+        if "Motion" not in block.sections:
+            return []
         return self._code("machine", None, "motion in machine coordinates", block)
 
     def cycle_cancel_words(self, s: Any, block: Block) -> list[str]:
+        motion = block.sections.get("Motion")
+        if self.CYCLE_CANCEL_IS_MOTION and isinstance(motion, Motion) and motion.mode in _MOTION_GROUP:
+            return []  # the block's motion code cancels the cycle
         return self._code("cycle_cancel", None, "a canned-cycle cancel", block)
 
     def dwell_words(self, s: Any, block: Block) -> list[str]:
@@ -371,15 +393,61 @@ class WordWriter(Writer):
             self.unsupported("a canned-cycle repetition without its cycle", block)
         words = self._code(_MOTION_KIND.get(s.mode, "motion"), s.mode, f"{s.mode} motion", block)
         length = self.length
+        start = dict(self.carry)
+        incremental = self._incremental(s, block)
         for axis, value in s.axes.items():
-            words.append(axis + length(value, block))
+            if isinstance(value, Expr):
+                words.append(axis + self.expression(value, block))
+                if not incremental:
+                    self.carry.pop(axis, None)  # written as the program wrote it
+            else:
+                words.append(axis + self.position(axis, value, incremental))
+        if s.mode in _MOTION_KIND:
+            for axis in s.axes:
+                self.carry.pop(axis, None)  # both programs end at the reference point
         if s.center is not None:
             for axis, letter in (("X", "I"), ("Y", "J"), ("Z", "K")):
                 if axis in s.center:
-                    words.append(letter + length(s.center[axis], block))
+                    offset = s.center[axis]
+                    exact = offset if isinstance(offset, Expr) else offset + start.get(axis, 0.0)
+                    words.append(letter + length(exact, block))  # from the written start to the exact centre
         if s.radius is not None:
             words.append("R" + length(s.radius, block))
         return words
+
+    def position(self, axis: str, value: float, incremental: bool) -> str:
+        """An axis word's number. Rounding never accumulates: in incremental mode the increment written is
+        the one that brings the written position nearest the source's (what earlier words rounded away
+        is carried), so each written position is within the output resolution of the exact one."""
+        carry = self.carry
+        want = value + carry.get(axis, 0.0) if incremental else value
+        text = self.number(want)
+        error = want - float(text)
+        if error:
+            carry[axis] = error
+        else:
+            carry.pop(axis, None)
+        return text
+
+    def _incremental(self, s: Motion, block: Block) -> bool:
+        """True when the motion's axis words are increments (machine coordinates are always absolute)."""
+        return self.modal.distance == "incremental" and "MachineCoordinates" not in block.sections
+
+    def _rounded_axes(self, block: Block) -> dict[str, bool]:
+        """Axis letters of a normalised block's motion whose numbers go through ``position`` (letter ->
+        incremental); an expression or a cycle's words keep their text."""
+        motion = block.sections.get("Motion")
+        if not isinstance(motion, Motion) or motion.mode is None or motion.mode in _MOTION_KIND:
+            return {}
+        incremental = self._incremental(motion, block)
+        return {a: incremental for a, v in motion.axes.items() if v.__class__ is float}
+
+    def _exact_axes(self, block: Block) -> None:
+        """A block copied with its exact numbers: absolute axis words leave nothing to carry."""
+        if self.carry:
+            for axis, incremental in self._rounded_axes(block).items():
+                if not incremental:
+                    self.carry.pop(axis, None)
 
     def canned_cycle_words(self, s: Any, block: Block) -> list[str]:
         """A native cycle: its code when the block programs it, then its words as programmed.
@@ -439,6 +507,8 @@ class WordWriter(Writer):
 
 
 _MOTION_KIND = {"home": "home", "home2": "home"}
+_MOTION_GROUP = frozenset({"rapid", "linear", "cw", "ccw"})
+"""Motion modes written with a code of the motion group (G0-G3)."""
 """Motion modes the table spells under another kind than "motion" (reference returns)."""
 _UPPER = {c: c.upper() for c in "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz:"}
 

@@ -2,8 +2,9 @@
 
 * ``pause_for_tool_change``: grbl rejects M6 (no tool changer), so a tool change becomes a program
   pause ``T<n> M0`` with a comment naming the tool; a running spindle is stopped first, as a tool
-  changer would (with a warning). The grbl reader reads ``T<n> M0`` back as a tool change. In a block
-  that also moves, the pause goes in a block of its own before it (M0 acts after a block's motion).
+  changer would (with a warning). The grbl reader reads ``T<n> M0`` back as a tool change. grbl runs
+  M0 last in its block, so the rest of the block (spindle start, motion, M30) follows in a block of its
+  own. With no tool selected there is no tool to name: the tool change is left for the writer to refuse.
 * ``cancel_length_offset_first``: grbl refuses G49 (an axis command of its own) in a block with
   motion, so the cancel goes in a block of its own before the motion.
 * ``close_full_circles``: grbl needs an end point in the plane of every arc (no full-circle form), so
@@ -43,14 +44,11 @@ def _pause_for_tool_change(blocks: Iterator[Block], ctx: Context) -> Iterator[Bl
         select = sections.get("ToolSelect")
         if select is not None:
             tool = select.number  # type: ignore[attr-defined]
-        if "ToolChange" in sections and ("Motion" in sections or "CompoundMotion" in sections):
-            first = _pause_first(block)
-            _pause(first, ctx, tool, spindle)
-            yield first
+        if "ToolChange" in sections and tool is not None:
+            pause = _pause(block, ctx, tool, spindle)
             spindle = "stop"
-        elif "ToolChange" in sections and "ProgramControl" not in sections:
-            _pause(block, ctx, tool, spindle)
-            spindle = "stop"
+            if pause is not block:
+                yield pause
         control = sections.get("SpindleControl")
         if control is not None:
             spindle = control.direction  # type: ignore[attr-defined]
@@ -66,36 +64,43 @@ def _pause_for_tool_change(blocks: Iterator[Block], ctx: Context) -> Iterator[Bl
         yield block
 
 
-def _pause_first(block: Block) -> Block:
-    """The tool change of a block that also moves, in a block of its own before it: grbl runs M0 after
-    the block's motion, and the motion needs the new tool (``postproc.event_order``)."""
+_PAUSE_KEYS = ("Sequence", "BlockDelete", "ToolSelect", "ToolChange", "Comments")
+"""What the pause block takes from the tool-change block (the rest runs after the pause)."""
+
+
+def _pause(block: Block, ctx: Context, tool: int, spindle: str) -> Block:
+    """The pause ``T<n> [M5] M0 (TOOL CHANGE ...)`` standing for the block's tool change. grbl runs a
+    block's spindle codes, motion and other stop codes before its M0, where the tool change comes first
+    (the simulator's and a tool changer's order): whatever else the block does is left in ``block``, to
+    run after the pause, and the pause is returned as a block of its own. A block that does nothing else
+    becomes the pause (and is returned)."""
     sections = block.sections
-    first = Block(block.line, None, "\n")
-    first.sections = {"ToolChange": sections.pop("ToolChange")}
-    select = sections.pop("ToolSelect", None)
-    if select is not None:
-        first.sections["ToolSelect"] = select
+    rest = {k: v for k, v in sections.items() if k not in _PAUSE_KEYS}
+    control = sections.get("SpindleControl")
+    stop_here = control is not None and control.direction == "stop"  # type: ignore[attr-defined]
+    if stop_here:
+        del rest["SpindleControl"]  # the block's M5 goes with the pause
+    pause: dict[str, Section] = {k: sections[k] for k in ("Sequence", "BlockDelete") if k in sections}
+    pause["ToolSelect"] = ToolSelect(tool)
+    if spindle != "stop" and not stop_here:
+        ctx.diagnostics.warn("the spindle is running at a tool change: M5 written before the pause", ctx.at(block))
+    if spindle != "stop" or stop_here:
+        pause["SpindleControl"] = SpindleControl("stop")
+    pause["ProgramControl"] = ProgramControl("stop")
+    note = f"TOOL CHANGE: LOAD T{tool}, THEN CYCLE START"
+    comments = sections.get("Comments")
+    pause["Comments"] = Comments([note] + (list(comments.texts) if comments is not None else []))  # type: ignore[attr-defined]
+    if not rest:
+        block.sections = pause
+        block.changed()
+        return block
+    first = Block(block.line, None, block.eol or "\n")
+    first.sections = pause
+    if "BlockDelete" in sections:
+        rest = {"BlockDelete": sections["BlockDelete"], **rest}
+    block.sections = rest
     block.changed()
     return first
-
-
-def _pause(block: Block, ctx: Context, tool: int | None, spindle: str) -> None:
-    sections = block.sections
-    rest = {k: v for k, v in sections.items() if k != "ToolChange"}
-    added: dict[str, Section] = {}
-    if "ToolSelect" not in sections and tool is not None:
-        added["ToolSelect"] = ToolSelect(tool)
-    if spindle != "stop" and "SpindleControl" not in sections:
-        ctx.diagnostics.warn("the spindle is running at a tool change: M5 written before the pause",
-                             ctx.at(block))
-        added["SpindleControl"] = SpindleControl("stop")
-    added["ProgramControl"] = ProgramControl("stop")
-    name = f"T{tool}" if tool is not None else "THE NEXT TOOL"
-    note = f"TOOL CHANGE: LOAD {name}, THEN CYCLE START"
-    comments = rest.pop("Comments", None)
-    added["Comments"] = Comments([note] + (list(comments.texts) if comments is not None else []))  # type: ignore[attr-defined]
-    block.sections = {**rest, **added}
-    block.changed()
 
 
 def cancel_length_offset_first(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:

@@ -42,6 +42,8 @@ class GrblWriter(WordWriter):
     DIALECT: ClassVar[str] = "grbl"
     CODES: ClassVar[CodeTable] = CODES
     DWELL_WORD: ClassVar[str] = "P"
+    CYCLE_CANCEL_IS_MOTION: ClassVar[bool] = True
+    """G80 is a motion code here: ``G80 G0`` is refused, a block's G0-G3 ends the cycle by itself."""
 
     def __init__(self, ctx: Any, source_dialect: str, target: Any = None) -> None:
         super().__init__(ctx, source_dialect, target)
@@ -129,6 +131,11 @@ class GrblWriter(WordWriter):
             register = f" H{s.register}" if s.register is not None else ""
             self.unsupported(f"a tool length offset from a table (G43{register}; grbl has only G43.1)", block)
         return super().tool_length_offset_words(s, block)
+
+    def tool_change_words(self, s: Any, block: Block) -> list[str]:
+        """What ``pause_for_tool_change`` leaves: a tool change with no tool selected before it."""
+        self.unsupported("a tool change with no tool selected (grbl's manual tool change, T<n> M0, names the "
+                         "tool to load: program T before M6)", block)
 
     def spindle_orientation_words(self, s: Any, block: Block) -> list[str]:
         mode = self.ctx.setup.cycles.orientation

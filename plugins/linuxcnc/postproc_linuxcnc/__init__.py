@@ -18,6 +18,7 @@ from typing import Callable
 from postproc.dialect import Dialect
 from postproc.errors import Diagnostics
 from postproc.hookspecs import hookimpl
+from postproc.lower import Lowering
 from postproc.setup import MachineSetup
 from postproc.context import Context
 from postproc.rs274.cycle_words import rs274_cycle_words
@@ -25,6 +26,7 @@ from postproc.xmlio import XFactory
 
 from .codes import CODES
 
+from .active_comments import warn_active_comments
 from .block_syntax import NgcBlockSyntax
 from .program import LinuxcncProgramSyntax
 from .reader import LinuxcncReader
@@ -81,6 +83,12 @@ def _with_linuxcnc_clearances(setup: MachineSetup, mm: float) -> MachineSetup:
 @hookimpl
 def postproc_register_dialects(register: Callable[[type], None]) -> None:
     register(Linuxcnc)
+
+
+@hookimpl
+def postproc_register_lowerings(register: Callable[[Lowering], None]) -> None:
+    """Active comments (``(MSG,..)``, ``(DEBUG,..)``...) warn when a translation makes them inert."""
+    register(warn_active_comments)
 
 
 @hookimpl

@@ -42,6 +42,11 @@ from postproc.rs274.writer import WordWriter
 from .codes import CODES
 
 
+_AFTER_ORIENT = frozenset({"SpindleOrientation", "Coolant", "ProgramControl"})
+"""What a block does after its spindle orientation (the toolpath's order): coolant off and a stop or end."""
+_WITH_ORIENT = frozenset({"Sequence", "BlockDelete", "Comments", "SpindleOrientation", "ProgramControl"})
+"""What M19 shares a block with in LinuxCNC without changing the order of events (no split needed)."""
+
 _OPENING = (While, If, Do, Repeat)
 _CLOSING = (EndWhile, EndIf, DoWhile, EndRepeat)
 _LABELLED = (*_OPENING, *_CLOSING, ElseIf, Else, Break, Continue)
@@ -52,6 +57,8 @@ class LinuxcncWriter(WordWriter):
     CODES: ClassVar[CodeTable] = CODES
     """G76 threads, G87/G88 take other words: no row spells Fanuc's fine, back or manual boring."""
     DWELL_WORD: ClassVar[str] = "P"
+    CYCLE_CANCEL_IS_MOTION: ClassVar[bool] = True
+    """G80 is a motion code here: ``G80 G0`` is refused, a block's G0-G3 ends the cycle by itself."""
     SPELLING: ClassVar[ExprSpelling | None] = LINUXCNC_SPELLING
 
     def __init__(self, ctx: Context, source_dialect: str, target: type[Dialect] | None = None) -> None:
@@ -186,6 +193,26 @@ class LinuxcncWriter(WordWriter):
         if s.level != 1:
             self.unsupported(f"block delete level {s.level} (LinuxCNC has one block delete switch)", block)
         return ["/"]
+
+    def generate(self, block: Block) -> str:
+        """M19 in a block of its own after the block's other actions: LinuxCNC orients before it runs the
+        block's spindle codes (the same modal group: ``M5 M19`` is refused), dwell and motion, and reads its
+        ``R`` as the angle (so an R arc, a cycle's R or I/J/K beside it are refused); the neutral order is
+        the other way round. What the block does after the orientation (coolant off, a stop) follows it."""
+        sections = block.sections
+        orient = sections.get("SpindleOrientation")
+        if orient is None or "CompoundMotion" in sections or sections.keys() <= _WITH_ORIENT:
+            return super().generate(block)
+        first = Block(block.line, None, block.eol or "\n")
+        then = Block(block.line, None, block.eol)
+        first.sections = {}
+        then.sections = {k: v for k, v in sections.items() if k == "BlockDelete"}
+        for key, section in sections.items():
+            after = key in _AFTER_ORIENT and (key != "Coolant" or section.mode == "off")  # type: ignore[attr-defined]
+            (then if after else first).sections[key] = section
+        if not first.sections:
+            return super().generate(block)  # M19 then coolant off or a stop: LinuxCNC's own order
+        return super().generate(first) + super().generate(then)
 
     def spindle_orientation_words(self, s: Any, block: Block) -> list[str]:
         """M19 R<angle>: a bare M19 leaves the angle to the machine's default."""

@@ -1,0 +1,60 @@
+"""LinuxCNC's active comments, which do something when the program runs: ``(MSG,text)`` shows the operator
+a message, ``(DEBUG,..)`` and ``(PRINT,..)`` print text with parameter values, ``(LOG..)`` write a log
+file, ``(PROBEOPEN ..)``/``(PROBECLOSE)`` record probe points. Every other dialect reads them as inert
+comments: a translation keeps their text and warns, naming each one with its location (once per source
+comment, however often a loop runs it). Between LinuxCNC programs they are kept as they are.
+"""
+
+from __future__ import annotations
+
+import re
+from typing import Iterator
+
+from postproc.context import Context
+from postproc.dialect import Dialect
+from postproc.ir import Block
+
+ACTIVE = re.compile(r"[ \t]*(MSG|DEBUG|PRINT|LOGOPEN|LOGAPPEND|LOGCLOSE|LOG|PROBEOPEN|PROBECLOSE)\b[ \t]*(,?)",
+                    re.IGNORECASE)
+"""The keyword LinuxCNC looks for at the start of a ``( )`` comment (in any case)."""
+LOST = {
+    "MSG": "the operator no longer sees the message",
+    "DEBUG": "its text is no longer printed",
+    "PRINT": "its text is no longer printed",
+    "LOG": "nothing is logged",
+    "LOGOPEN": "no log file is opened",
+    "LOGAPPEND": "no log file is opened",
+    "LOGCLOSE": "no log file is closed",
+    "PROBEOPEN": "probe points are no longer recorded",
+    "PROBECLOSE": "probe points are no longer recorded",
+}
+"""What the operator loses when the comment becomes inert."""
+
+
+def warn_active_comments(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """A generic lowering step (it must see every translation from LinuxCNC, whatever the target)."""
+    if ctx.dialect != "linuxcnc" or target.NAME == "linuxcnc":
+        return blocks
+    return _warn(blocks, ctx, target.NAME)
+
+
+def _warn(blocks: Iterator[Block], ctx: Context, target: str) -> Iterator[Block]:
+    warned: set[tuple[int, int]] = set()
+    for block in blocks:
+        comments = block.sections.get("Comments")
+        if comments is not None:
+            for text in comments.texts:  # type: ignore[attr-defined]
+                m = ACTIVE.match(text)
+                if m is None:
+                    continue
+                col = block.text.find("(" + text + ")") + 1 if block.text is not None else 1
+                if col < 1 or (block.line, col) in warned:
+                    continue  # a ';' comment: not active (a block the program computed has no text: column 1)
+                warned.add((block.line, col))
+                key = m.group(1).upper()
+                lost = LOST[key]
+                if key in ("DEBUG", "PRINT") and "#" in text:
+                    lost = "the parameter values it prints are lost"
+                ctx.diagnostics.warn(f"LinuxCNC active comment ({key},...) is an inert comment in {target}: {lost}",
+                                     ctx.at(block, col))
+        yield block
