@@ -18,7 +18,6 @@ Rules (each a choice where the contract is silent, and tested):
 
 from __future__ import annotations
 
-from decimal import Decimal
 from typing import Iterator, Protocol
 
 from ..control import (
@@ -32,7 +31,6 @@ from ..evaluation import var_key
 from ..ir import Block, Comments
 from ..setup import Limits
 from ..source_map import CallSite, ExecutedBlock, Origin
-from .spelling import spell_integer, spell_number
 from .rules import STORED_PROGRAMS, SubprogramRules
 from .store import Program, ProgramStore, source_text
 from .variables import Variables
