@@ -47,7 +47,8 @@ class FanucReader(Reader):
                         block = Block(number, text, eol, words)
                         block.canonical = is_canonical
                         block.sections["Sequence"] = Sequence(int(num))
-                        if "M9" in text or "G6" in text or "m9" in text or "g6" in text:
+                        # a canonical block is upper-case: two probes for M98/M99/G65-G67
+                        if ("M9" in text or "G6" in text or not is_canonical and ("m9" in text or "g6" in text)):
                             try:
                                 read_call(block, self.ctx)
                             except PostprocError as err:
