@@ -55,9 +55,6 @@ def setups() -> st.SearchStrategy[MachineSetup]:
 
 
 KNOWN_DEFECTS: list[tuple[str, str | None, re.Pattern[str]]] = [
-    ("example writer writes inf (its own number format)", "example", re.compile(r"^non-finite number")),
-    ("an expanded cycle is written before its block's tool change (M06)", "linuxcnc",
-     re.compile(r"IN has tool change to T\w*, OUT ")),
     ("LinuxCNC codes kept verbatim (G76 threading, G87/G88 with their own words) are not simulated", None,
      re.compile(r"^translated, but verify fails: in\.nc:\d+:\d+: error: G\d+ \((RS274/NGC|threading).*cannot be simulated")),
 ]
