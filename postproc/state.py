@@ -102,3 +102,6 @@ _APPLY: dict[str, Callable[[ModalState, Any], None]] = {
 MODAL_KEYS = frozenset(_APPLY)
 """Section keys that change the modal state."""
 _NO_MODAL_KEY = MODAL_KEYS.isdisjoint
+changes_nothing = MODAL_KEYS.isdisjoint
+"""``changes_nothing(sections)``: True when a block's sections hold no modal section (most blocks: a
+move and a block number). The hot paths test it before calling ``ModalState.apply``."""

@@ -20,7 +20,7 @@ from .codes import CodeTable
 from .expressions import ExprSpelling, spell_word_value
 from ..ir import Block, CompoundMotion, Motion, Section
 from ..numbers import EXACT, EXACT_INCH, MAX_PLACES, canonical_number_re, format_decimal
-from ..state import MM_PER_INCH, ModalState
+from ..state import MM_PER_INCH, ModalState, changes_nothing
 from ..context import Context
 from ..dialect import Dialect, Writer
 
@@ -114,10 +114,12 @@ class WordWriter(Writer):
     def write_block(self, block: Block) -> str | None:
         sections = block.sections
         if block.text is not None and self.copy_ok:
-            self._track(sections)
+            if not changes_nothing(sections):
+                self.modal.apply(sections)
             return block.text + block.eol
         if self.normalize and block.text is not None and self.source_dialect == self.DIALECT:
-            self._track(sections)
+            if not changes_nothing(sections):
+                self.modal.apply(sections)
             return self.normalized(block) + (block.eol or "\n")
         return self.generate(block)
 

@@ -14,7 +14,7 @@ from __future__ import annotations
 from postproc.block_rules import ArcError, arc_centre, check_values
 from postproc.expr import Expr
 from postproc.ir import Block, Motion
-from postproc.state import MM_PER_INCH, PLANE_AXES
+from postproc.state import MM_PER_INCH, PLANE_AXES, changes_nothing
 from postproc.context import Context
 from postproc.syntax import Syntax
 
@@ -29,7 +29,8 @@ class ModalStateSyntax(Syntax):
         sections = block.sections
         if not sections:
             return
-        ctx.state.apply(sections)
+        if not changes_nothing(sections):
+            ctx.state.apply(sections)
         motion = sections.get("Motion")
         if motion is not None:
             self._move(block, ctx, motion)  # type: ignore[arg-type]
