@@ -10,6 +10,7 @@ from postproc.errors import Diagnostics, ErrorLevel
 from postproc.ir import Block
 from postproc.plugins import default_registry
 from postproc.setup import MachineSetup
+from postproc.rs274.order_of_execution import stops_after_motion
 from postproc_grbl import Grbl
 from postproc_grbl.lowering import cancel_length_offset_first, close_full_circles, pause_for_tool_change
 
@@ -24,7 +25,7 @@ def fanuc_blocks(text: str) -> tuple[list[Block], Diagnostics]:
 
 
 def test_grbl_declares_its_steps() -> None:
-    assert Grbl.LOWERING == (pause_for_tool_change, cancel_length_offset_first, close_full_circles)
+    assert Grbl.LOWERING == (pause_for_tool_change, cancel_length_offset_first, close_full_circles, stops_after_motion)
     assert "LOWERING" not in Grbl.capabilities()
 
 

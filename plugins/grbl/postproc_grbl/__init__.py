@@ -29,6 +29,7 @@ from __future__ import annotations
 from typing import Callable
 
 from postproc.dialect import Dialect
+from postproc.rs274.order_of_execution import stops_after_motion
 from postproc.hookspecs import hookimpl
 from postproc.rs274.cycle_words import rs274_cycle_words
 from postproc.xmlio import XFactory
@@ -55,9 +56,10 @@ class Grbl(Dialect):
     """No M19: cycles that need an oriented stop follow the set-up's ``Cycles orientation``."""
     TOOL_CHANGER = False
     """M6 is rejected: a tool change is written as an M0 pause (``pause_for_tool_change``)."""
-    LOWERING = (pause_for_tool_change, cancel_length_offset_first, close_full_circles)
+    LOWERING = (pause_for_tool_change, cancel_length_offset_first, close_full_circles, stops_after_motion)
     """Rewrites into what grbl runs (``lowering.py``): tool change as a pause, G49 before motion, full
-    circles with an end point."""
+    circles with an end point; a moving block's spindle stop and coolant off after it (grbl runs them
+    before the motion: ``postproc.rs274.order_of_execution``)."""
     CUTTER_COMPENSATION = False
     """Only G40."""
     TOOL_LENGTH_OFFSET = False

@@ -16,6 +16,7 @@ from copy import copy as shallow_copy
 from typing import Callable
 
 from postproc.dialect import Dialect
+from postproc.rs274.order_of_execution import stops_after_motion
 from postproc.errors import Diagnostics
 from postproc.hookspecs import hookimpl
 from postproc.lower import Lowering
@@ -51,6 +52,9 @@ class Linuxcnc(Dialect):
     there is no fine boring: those are expanded."""
     PROGRAMS = True
     """Numbered and named parameters, expressions, o-word subprograms and control flow."""
+    LOWERING = (stops_after_motion,)
+    """A moving block's spindle stop and coolant off go in a block of their own after it: LinuxCNC runs
+    them before the motion (``postproc.rs274.order_of_execution``)."""
     CYCLE_SEMANTICS = "rs274"
     """How the native cycles move: start below R rises to R first, G98 returns to the old Z only when
     it is above R, G91 R is measured from the Z at the block's start, G74/G84/G89 feed out to the
