@@ -231,3 +231,14 @@ def test_generated_word_expressions_round_trip(tree: Expr) -> None:
         return
     assert block.values["X"] == tree
     assert block.words == [("G", "01"), ("X", word), ("F", "100.")]
+
+
+@pytest.mark.parametrize("on_unsupported", ["error", "warn"])
+def test_renumbering_a_program_that_jumps_is_refused(on_unsupported: str) -> None:
+    """The GOTO would name a block number that no longer exists: no output rather than a broken loop."""
+    from postproc.setup import MachineSetup, OutputSettings
+    program = HEAD + "#1=0\nN10 #1=#1+1\nIF [#1 LT 3] GOTO 10\nM30\n"
+    setup = MachineSetup(output=OutputSettings(renumber_start=100))
+    with pytest.raises(ErrorList, match=r"t\.nc:4:1: error: --renumber cannot renumber a program that jumps"):
+        translate(io.StringIO(program), io.StringIO(), file="t.nc", source="fanuc", target="fanuc", setup=setup,
+                  on_unsupported=on_unsupported)

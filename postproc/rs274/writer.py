@@ -13,7 +13,7 @@ from __future__ import annotations
 from typing import Any, Callable, ClassVar, NoReturn
 
 from ..control import ASSIGN, CONTROL
-from ..errors import UnsupportedError
+from ..errors import ProgramError, UnsupportedError
 from ..event_order import after_motion
 from ..expr import Expr
 from .codes import CodeTable
@@ -146,6 +146,12 @@ class WordWriter(Writer):
         if skip is not None:
             parts.append("/" if skip.level == 1 else f"/{skip.level}")  # type: ignore[attr-defined]
         renumber = self.renumber
+        if renumber:
+            control = sections.get(CONTROL)
+            if control is not None and getattr(control, "target", None) is not None:
+                raise ProgramError("--renumber cannot renumber a program that jumps to block numbers (GOTO, "
+                                   "a return to a block number): the numbers it names would change",
+                                   self.ctx.at(block))
         canonical = self._canonical
         number = self.number
         for letter, num in block.words:
