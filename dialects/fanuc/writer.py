@@ -23,6 +23,8 @@ class FanucWriter(WordWriter):
     CODES: ClassVar[CodeTable] = CODES
     DWELL_WORD: ClassVar[str] = "X"
     SPELLING: ClassVar[ExprSpelling | None] = FANUC_SPELLING
+    MACHINE_MOVES: ClassVar[frozenset[str]] = frozenset(("rapid",))
+    """Fanuc's G53 always moves at rapid: a feed move in machine coordinates has no spelling."""
 
     def statement_words(self, section: Section, block: Block) -> list[str]:
         """``#1=..``, ``IF``/``GOTO``/``WHILE``/``END`` through ``spell_statement_fanuc``; calls as

@@ -368,11 +368,18 @@ class WordWriter(Writer):
             return self._code("path_once", s.mode, "a one-shot exact stop", block)
         return self._code("path", s.mode, f"path control {s.mode}", block)
 
+    MACHINE_MOVES: ClassVar[frozenset[str]] = frozenset(("rapid", "linear"))
+    """Motion modes a block in machine coordinates may move in (RS274/NGC: G0 or G1 in force)."""
+
     def machine_coordinates_words(self, s: Any, block: Block) -> list[str]:
         """Machine coordinates qualify the block's move; without one they do nothing, and RS274/NGC refuses
         them unless G0 or G1 is in force, so they are not written."""
-        if "Motion" not in block.sections:
+        motion = block.sections.get("Motion")
+        if motion is None:
             return []
+        if getattr(motion, "mode", None) not in self.MACHINE_MOVES:
+            self.unsupported(f"a {motion.mode} move in machine coordinates (its machine-coordinate code "  # type: ignore[attr-defined]
+                             f"moves only {' or '.join(sorted(self.MACHINE_MOVES))})", block)
         return self._code("machine", None, "motion in machine coordinates", block)
 
     def cycle_cancel_words(self, s: Any, block: Block) -> list[str]:

@@ -11,6 +11,8 @@ It also refuses a negative F or S (``postproc.block_rules``): every reading pass
 
 from __future__ import annotations
 
+from typing import NoReturn
+
 from postproc.block_rules import ArcError, arc_centre, check_values
 from postproc.expr import Expr
 from postproc.ir import Block, Motion
@@ -68,9 +70,19 @@ def _check_arc(block: Block, ctx: Context, motion: Motion) -> None:
     so ``translate`` refuses what ``toolpath`` refuses; an arc with a computed word waits for the run."""
     state = ctx.state
     a1, a2, _ = PLANE_AXES[state.plane]
-    start = (state.position.get(a1), state.position.get(a2))
+    for axis in motion.center or {}:
+        if axis not in (a1, a2):
+            _refuse(block, ctx, motion, ArcError(f"arc centre offset along {axis} is outside the {state.plane} "
+                                                 "plane", _CENTRE_LETTERS.get(axis, "G")))
     values = [*motion.axes.values(), *(motion.center or {}).values(), motion.radius]
-    if start[0] is None or start[1] is None or any(isinstance(v, Expr) for v in values):
+    if any(isinstance(v, Expr) for v in values):
+        return
+    if motion.radius is not None and not any(
+            a in motion.axes and (state.distance != "incremental" or motion.axes[a] != 0.0) for a in (a1, a2)):
+        # no end point in the plane: an R arc that ends where it starts, wherever that is
+        _refuse(block, ctx, motion, ArcError("a full circle cannot be programmed with R (use I/J/K)", "R"))
+    start = (state.position.get(a1), state.position.get(a2))
+    if start[0] is None or start[1] is None:
         return
     incremental = state.distance == "incremental"
     end = [start[0], start[1]]
@@ -85,8 +97,15 @@ def _check_arc(block: Block, ctx: Context, motion: Motion) -> None:
         arc_centre((start[0] * scale, start[1] * scale), (end[0] * scale, end[1] * scale), (a1, a2), radius,
                    offsets, motion.mode == "cw")
     except ArcError as err:
-        # the arc goes from the block (reported once, here), and the tool's place is unknown after it
-        del block.sections["Motion"]
-        for axis in motion.axes:
-            state.position[axis] = None
-        raise err.located(ctx.at(block, ctx.column_of(block, err.letter))) from None
+        _refuse(block, ctx, motion, err)
+
+
+_CENTRE_LETTERS = {"X": "I", "Y": "J", "Z": "K"}
+
+
+def _refuse(block: Block, ctx: Context, motion: Motion, err: ArcError) -> NoReturn:
+    """The arc goes from the block (reported once, here), and the tool's place is unknown after it."""
+    del block.sections["Motion"]
+    for axis in motion.axes:
+        ctx.state.position[axis] = None
+    raise err.located(ctx.at(block, ctx.column_of(block, err.letter))) from None

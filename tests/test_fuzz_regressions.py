@@ -1,0 +1,39 @@
+"""Programs ``make fuzz`` reduced from failures: each translated with exit 0 into a program that moves
+otherwise (or that the toolpath refuses). Each must now be refused with a located error or verify."""
+
+from __future__ import annotations
+
+import io
+
+import pytest
+
+from postproc.api import translate
+from postproc.errors import ErrorList
+from postproc.verify import verify_lines
+
+HEAD = "G21 G90 G0 X0. Y0. Z10.\n"
+
+REFUSED = [
+    ("fanuc", "linuxcnc", "F0.3 K2 G03\n", "t.nc:2:6: error: arc centre offset along Z is outside the XY plane"),
+    ("grbl", "linuxcnc", "G02 G54 R2.\n", "t.nc:2:9: error: a full circle cannot be programmed with R (use I/J/K)"),
+    ("grbl", "fanuc", "X-5 F100. G53 G01\n", "t.nc:2:1: error: the fanuc dialect cannot express a linear move in "
+                                            "machine coordinates (its machine-coordinate code moves only rapid)"),
+]
+
+
+@pytest.mark.parametrize("source, target, body, message", REFUSED)
+def test_refused_with_a_located_error(source: str, target: str, body: str, message: str) -> None:
+    with pytest.raises(ErrorList) as exc:
+        translate(io.StringIO(HEAD + body), io.StringIO(), file="t.nc", source=source, target=target)
+    assert [str(e) for e in exc.value.errors] == [message]
+
+
+def test_a_percent_line_is_no_program_end_for_grbl() -> None:
+    """grbl has no tape marks: the move after '%' runs, in the source and in the translation."""
+    program = HEAD + "%\nG91 Z5\n"
+    out = io.StringIO()
+    translate(io.StringIO(program), out, file="t.nc", source="grbl", target="fanuc")
+    assert out.getvalue() == "G21 G90 G00 X0. Y0. Z10.\n(%)\nG91 G00 Z5.\n"
+    report = verify_lines(io.StringIO(program), io.StringIO(out.getvalue()), file_in="a.nc", file_out="b.nc",
+                          source="grbl", target="fanuc", tolerance=0.0)
+    assert report.ok and report.moves == 1, report.summary()
