@@ -135,15 +135,19 @@ class SpindleSpeed(Section):
 
 
 class SpindleControl(Section):
-    """Spindle on clockwise ('cw'), counter-clockwise ('ccw') or 'stop'."""
+    """Spindle on clockwise ('cw'), counter-clockwise ('ccw') or 'stop'. ``before_motion``: a stop that
+    the reading controller makes before its block's motion (the RS274/NGC order of execution), where
+    the neutral order (``postproc.event_order``) makes it after."""
 
     XNAME = KEY = "SpindleControl"
-    __slots__ = ("direction",)
-    XATTRS = (XAttr("direction", str),)
+    __slots__ = ("direction", "before_motion")
+    XATTRS = (XAttr("direction", str), XAttr("before_motion", bool, False))
     direction: str
+    before_motion: bool
 
-    def __init__(self, direction: str) -> None:
+    def __init__(self, direction: str, before_motion: bool = False) -> None:
         self.direction = direction
+        self.before_motion = before_motion
 
 
 class SpindleOrientation(Section):
@@ -206,15 +210,18 @@ class CutterCompensation(Section):
 
 
 class Coolant(Section):
-    """'flood', 'mist' or 'off'."""
+    """'flood', 'mist' or 'off'. ``before_motion``: coolant off that the reading controller makes before
+    its block's motion (as ``SpindleControl.before_motion``)."""
 
     XNAME = KEY = "Coolant"
-    __slots__ = ("mode",)
-    XATTRS = (XAttr("mode", str),)
+    __slots__ = ("mode", "before_motion")
+    XATTRS = (XAttr("mode", str), XAttr("before_motion", bool, False))
     mode: str
+    before_motion: bool
 
-    def __init__(self, mode: str) -> None:
+    def __init__(self, mode: str, before_motion: bool = False) -> None:
         self.mode = mode
+        self.before_motion = before_motion
 
 
 class Dwell(Section):

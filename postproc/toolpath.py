@@ -33,6 +33,7 @@ from .block_rules import NO_FEED, ArcError, arc_centre, check_blocks, needs_feed
 from .program_end import EndTracker, comment_after_end
 from .dialect import Dialect
 from .errors import Diagnostics, Location, PostprocError, ProgramError, UnsupportedError
+from .event_order import after_motion
 from .geometry import CENTRE_KEYS, PLACES
 from .ir import Block, Motion, Section
 from .lower import lower_for
@@ -145,10 +146,10 @@ class Simulator:
                 if self.spindle in ("cw", "ccw"):
                     self.spindle_event(line, "stop", emit)
                 emit({"line": line, "event": "tool", "number": self.modal.tool})
-            if spindle is not None and spindle.direction != "stop":
+            if spindle is not None and not after_motion("SpindleControl", spindle):
                 self.spindle_event(line, spindle.direction, emit)
-            if coolant is not None and coolant.mode != "off":
-                emit({"line": line, "event": "coolant", "on": True})
+            if coolant is not None and not after_motion("Coolant", coolant):
+                emit({"line": line, "event": "coolant", "on": coolant.mode != "off"})
             s = get("Dwell")
             if s is not None:
                 emit({"line": line, "event": "dwell", "seconds": num(s.seconds)})
@@ -170,12 +171,12 @@ class Simulator:
                                    "resolved to motion", self._at(block))
         if not before:
             return
-        if spindle is not None and spindle.direction == "stop":
+        if spindle is not None and after_motion("SpindleControl", spindle):
             self.spindle_event(line, "stop", emit)
         s = get("SpindleOrientation")
         if s is not None:
             emit({"line": line, "event": "orient", "angle": num(s.angle)})
-        if coolant is not None and coolant.mode == "off":
+        if coolant is not None and after_motion("Coolant", coolant):
             emit({"line": line, "event": "coolant", "on": False})
         s = get("ProgramControl")
         if s is not None:

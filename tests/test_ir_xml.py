@@ -54,7 +54,8 @@ SAMPLES: dict[str, list[tuple[Builder, str]]] = {
                         '<CompoundMotion term="drill">\n  <Motion mode="rapid">\n    <Axes X="1.0" Y="2.0"/>\n'
                         '  </Motion>\n  <Dwell seconds="0.5"/>\n  <Motion mode="linear">\n    <Axes Z="-3.0"/>\n'
                         "  </Motion>\n</CompoundMotion>")],
-    "Coolant": [(lambda c: Coolant("flood"), '<Coolant mode="flood"/>')],
+    "Coolant": [(lambda c: Coolant("flood"), '<Coolant mode="flood"/>'),
+                (lambda c: Coolant("off", before_motion=True), '<Coolant mode="off" before_motion="true"/>')],
     "CutterCompensation": [(lambda c: CutterCompensation("left", 4), '<CutterCompensation mode="left" register="4"/>'),
                            (lambda c: CutterCompensation("off"), '<CutterCompensation mode="off"/>')],
     "CycleCall": [(lambda c: CycleCall("peck_deep"), '<CycleCall kind="peck_deep"/>')],
@@ -85,7 +86,8 @@ SAMPLES: dict[str, list[tuple[Builder, str]]] = {
                      (lambda c: ProgramStart(None, "MAIN"), '<ProgramStart name="MAIN"/>')],
     "ReturnLevel": [(lambda c: ReturnLevel("r"), '<ReturnLevel level="r"/>')],
     "Sequence": [(lambda c: Sequence(10), '<Sequence number="10"/>')],
-    "SpindleControl": [(lambda c: SpindleControl("ccw"), '<SpindleControl direction="ccw"/>')],
+    "SpindleControl": [(lambda c: SpindleControl("ccw"), '<SpindleControl direction="ccw"/>'),
+                       (lambda c: SpindleControl("stop", True), '<SpindleControl direction="stop" before_motion="true"/>')],
     "SpindleOrientation": [(lambda c: SpindleOrientation(90.0), '<SpindleOrientation angle="90.0"/>'),
                            (lambda c: SpindleOrientation(), "<SpindleOrientation/>")],
     "SpindleSpeed": [(lambda c: SpindleSpeed(1200.0), '<SpindleSpeed rpm="1200.0"/>')],

@@ -7,6 +7,7 @@ from typing import Callable
 from postproc.dialect import Dialect
 from postproc.hookspecs import hookimpl
 from postproc.rs274.cycle_words import rs274_cycle_words
+from postproc.rs274.order_of_execution import stops_before_motion
 from postproc.xmlio import XFactory
 
 from .codes import CODES
@@ -35,6 +36,9 @@ class Fanuc(Dialect):
     """G73, G74, G76, G81-G89 all run natively."""
     PROGRAMS = True
     """Custom Macro B variables, expressions, IF/GOTO, WHILE, M98/G65 subprograms."""
+    LOWERING = (stops_before_motion,)
+    """A spindle stop or coolant off that the source made before its block's motion goes in a block of
+    its own before it (Fanuc makes them after the motion)."""
 
 
 @hookimpl

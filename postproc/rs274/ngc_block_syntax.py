@@ -11,6 +11,8 @@ modal sections, motion, arcs, modal cycle repetition) and replaces what RS274/NG
 * with ``FEED_BEFORE_UNITS`` (LinuxCNC), ``F`` in a block that changes units is in the old units:
   LinuxCNC sets the feed rate before it changes units (its order of execution; rs274 prints
   ``SET_FEED_RATE`` before ``USE_LENGTH_UNITS``), so the neutral Feed, in the block's units, is converted;
+* a spindle stop or coolant off in a block that moves is made before the motion (the RS274/NGC order
+  of execution): the section is flagged ``before_motion`` (``postproc.event_order``);
 * codes in the table's ``native_g``/``native_m``/``user_m`` are kept verbatim, tagged with ``DIALECT``;
   codes in its ``refused_g``/``refused_m`` are refused with a located error; any other M code is an error;
 * a word whose value the reader left as an expression (``X[#1*2]``: an ``Expr`` in ``block.values``,
@@ -26,6 +28,7 @@ from typing import Any, ClassVar
 
 from postproc.context import Context
 from postproc.errors import ParseError, ProgramError
+from postproc.event_order import moves
 from postproc.expr import Binary, Expr, Num
 from postproc.ir import Block, Dwell, NativeCode, SpindleOrientation
 from postproc.state import MM_PER_INCH
@@ -126,6 +129,7 @@ class NgcWordBlockSyntax(WordBlockSyntax):
         self.finish_words(block, ctx, values, used)
         if self.FEED_BEFORE_UNITS and "Units" in block.sections and "Feed" in block.sections:
             _feed_in_old_units(block, ctx)
+        _stops_before_motion(block)
 
     def _computed_code(self, block: Block, ctx: Context, exprs: dict[str, Any]) -> bool:
         """A G or M code given by an expression: its meaning is known only when the program runs, so
@@ -270,3 +274,18 @@ def _feed_in_old_units(block: Block, ctx: Context) -> None:
     factor = MM_PER_INCH if after == "mm" else 1.0 / MM_PER_INCH
     value = feed.value  # type: ignore[attr-defined]
     feed.value = Binary("mul", value, Num(factor)) if isinstance(value, Expr) else value * factor  # type: ignore[attr-defined]
+
+
+def _stops_before_motion(block: Block) -> None:
+    """Flag the block's spindle stop and coolant off: RS274/NGC makes them before the block's motion."""
+    sections = block.sections
+    spindle = sections.get("SpindleControl")
+    coolant = sections.get("Coolant")
+    stops = spindle is not None and spindle.direction == "stop"  # type: ignore[attr-defined]
+    off = coolant is not None and coolant.mode == "off"  # type: ignore[attr-defined]
+    if not (stops or off) or not moves(sections):
+        return
+    if stops:
+        spindle.before_motion = True  # type: ignore[union-attr]
+    if off:
+        coolant.before_motion = True  # type: ignore[union-attr]

@@ -1,23 +1,32 @@
 """The RS274/NGC order of execution for a block that moves and also stops the spindle or the coolant.
 
 LinuxCNC (and grbl, which follows the NIST order) turn the spindle and the coolant on or off *before*
-the block's motion (items 8 and 9 of the order of execution, motion is item 20): ``G1 X10 M5`` stops
+the block's motion (the NIST RS274/NGC v3 order of execution: spindle 7, coolant 8, motion 20): ``G1 X10 M5`` stops
 the spindle and then cuts. A Fanuc-family block does what ends it after the motion, as the simulator
-does (``postproc.event_order``). Written unchanged for such a target, the cut would run with the spindle
-or the coolant already off: this lowering step moves a moving block's spindle stop and coolant off into
-a block of their own right after it. Starting the spindle or the coolant stays in the block: both
-orders run it before the motion.
+does (``postproc.event_order``). Two lowering steps keep each stop where the source made it:
+
+* ``stops_after_motion`` (RS274/NGC targets): a stop the source made after the motion (a Fanuc
+  ``G01 X10. M05``) moves into a block of its own right after the moving block;
+* ``stops_before_motion`` (Fanuc-family targets): a stop the source made before the motion (the reader
+  flagged it ``before_motion``) moves into a block of its own right before it.
+
+Starting the spindle or the coolant stays in the block: both orders run it before the motion.
 """
 
 from __future__ import annotations
 
+import copy
 from typing import Iterator
 
 from ..context import Context
 from ..dialect import Dialect
-from ..ir import Block
+from ..event_order import moves
+from ..ir import Block, Section
 
 _STOPS = ("SpindleControl", "Coolant")
+_TOOL = ("ToolSelect", "ToolChange")
+"""What RS274/NGC does before the spindle and the coolant (select tool 5, change tool 6): it goes along
+into the block before, so a tool change still precedes a coolant off."""
 
 
 def stops_after_motion(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
@@ -42,5 +51,36 @@ def stops_after_motion(blocks: Iterator[Block], ctx: Context, target: type[Diale
         yield after
 
 
+def stops_before_motion(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """Lowering step for targets that stop after the motion (see the module docstring)."""
+    for block in blocks:
+        sections = block.sections
+        flagged = [key for key in _STOPS if key in sections and _flagged(sections[key])]
+        if not flagged or not moves(sections):
+            yield block
+            continue
+        taken = set(flagged).union(key for key in _TOOL if key in sections)
+        before = Block(block.line, None, block.eol or "\n")
+        before.sections = {key: _unflagged(sections.pop(key)) for key in list(sections) if key in taken}
+        block.changed()
+        yield before
+        yield block
+
+
 def _stops(section: object) -> bool:
-    return getattr(section, "direction", None) == "stop" or getattr(section, "mode", None) == "off"
+    """A stop the source made after the motion."""
+    stop = getattr(section, "direction", None) == "stop" or getattr(section, "mode", None) == "off"
+    return stop and not _flagged(section)
+
+
+def _flagged(section: object) -> bool:
+    return getattr(section, "before_motion", False) is True
+
+
+def _unflagged(section: Section) -> Section:
+    """The section as it reads in a block without motion, where the flag says nothing."""
+    if not _flagged(section):
+        return section
+    plain = copy.copy(section)
+    plain.before_motion = False  # type: ignore[attr-defined]
+    return plain

@@ -12,6 +12,7 @@ from postproc.dialect import Dialect
 from postproc.hookspecs import hookimpl
 from postproc.ir import Block, Motion
 from postproc.rs274.codes import CodeTable
+from postproc.rs274.order_of_execution import stops_before_motion
 from postproc.rs274.writer import WordWriter
 
 CODES = CodeTable((
@@ -114,6 +115,9 @@ class Example(Dialect):
     """No canned cycles: they are expanded into plain moves before writing."""
     SPINDLE_ORIENTATION = False
     """No oriented spindle stop (M19)."""
+    LOWERING = (stops_before_motion,)
+    """Fanuc-like: a block stops the spindle and the coolant after its motion, so a stop the source made
+    before the motion (LinuxCNC, grbl) is written in a block of its own before it."""
 
 
 @hookimpl
