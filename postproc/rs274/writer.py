@@ -545,9 +545,17 @@ def _statement_name(section: Section) -> str:
 
 
 def _snake(key: str) -> str:
-    out = []
-    for i, ch in enumerate(key):
-        if ch.isupper() and i:
-            out.append("_")
-        out.append(ch.lower())
-    return "".join(out)
+    """``SpindleControl`` -> ``spindle_control`` (the method name of a section key), computed once per key:
+    every section of every generated block asks."""
+    name = _SNAKE.get(key)
+    if name is None:
+        out = []
+        for i, ch in enumerate(key):
+            if ch.isupper() and i:
+                out.append("_")
+            out.append(ch.lower())
+        name = _SNAKE[key] = "".join(out)
+    return name
+
+
+_SNAKE: dict[str, str] = {}
