@@ -38,3 +38,12 @@ def test_linuxcnc_stops_the_spindle_after_the_cut() -> None:
     stop = next(i for i, c in enumerate(calls) if c.startswith("STOP_SPINDLE_TURNING"))
     flood = next(i for i, c in enumerate(calls) if c.startswith("FLOOD_OFF"))
     assert cut < stop and cut < flood
+
+
+@pytest.mark.parametrize("target", ["linuxcnc", "grbl"])
+def test_a_stop_moved_after_the_move_still_comes_before_the_program_end(target: str) -> None:
+    """make fuzz: 'X0.0005 M30 M05' wrote M5 after M30, where it never runs."""
+    out = io.StringIO()
+    translate(io.StringIO("G21 G90 G0 X0. Y0. Z10.\nX0.0005 M30 M05\n"), out, file="t.nc", source="fanuc",
+              target=target)
+    assert out.getvalue().splitlines()[-2:] == ["G0 X0.0005", "M5 M30"]

@@ -41,6 +41,9 @@ def stops_after_motion(blocks: Iterator[Block], ctx: Context, target: type[Diale
         if not moved:
             yield block
             continue
+        end = sections.get("ProgramControl")
+        if end is not None:
+            moved["ProgramControl"] = end  # the stops act before a program stop or end, never after it
         for key in moved:
             del sections[key]
         block.changed()
