@@ -37,3 +37,14 @@ def test_a_percent_line_is_no_program_end_for_grbl() -> None:
     report = verify_lines(io.StringIO(program), io.StringIO(out.getvalue()), file_in="a.nc", file_out="b.nc",
                           source="grbl", target="fanuc", tolerance=0.0)
     assert report.ok and report.moves == 1, report.summary()
+
+
+def test_a_spindle_start_keeps_its_place_before_a_coolant_stop_moved_before_the_motion() -> None:
+    """make fuzz: grbl runs M4 before M9 (both before the move); the Fanuc output stopped the coolant first."""
+    program = HEAD + "M09 X0.0005 M04\n"
+    out = io.StringIO()
+    translate(io.StringIO(program), out, file="t.nc", source="grbl", target="fanuc")
+    assert out.getvalue().splitlines()[-2:] == ["M04 M09", "G00 X0.0005"]
+    report = verify_lines(io.StringIO(program), io.StringIO(out.getvalue()), file_in="a.nc", file_out="b.nc",
+                          source="grbl", target="fanuc", tolerance=0.0)
+    assert report.ok, report.summary()

@@ -62,7 +62,8 @@ def stops_before_motion(blocks: Iterator[Block], ctx: Context, target: type[Dial
         if not flagged or not moves(sections):
             yield block
             continue
-        taken = set(flagged).union(key for key in _TOOL if key in sections)
+        # what RS274/NGC runs before those stops goes with them: the tool change, then the spindle (S, M3/M4/M5)
+        taken = set(flagged).union(key for key in (*_TOOL, "SpindleSpeed", "SpindleControl") if key in sections)
         before = Block(block.line, None, block.eol or "\n")
         before.sections = {key: _unflagged(sections.pop(key)) for key in list(sections) if key in taken}
         block.changed()
