@@ -16,6 +16,7 @@ HEAD = "G21 G90 G0 X0. Y0. Z10.\n"
 REFUSED = [
     ("fanuc", "linuxcnc", "F0.3 K2 G03\n", "t.nc:2:6: error: arc centre offset along Z is outside the XY plane"),
     ("grbl", "linuxcnc", "G02 G54 R2.\n", "t.nc:2:9: error: a full circle cannot be programmed with R (use I/J/K)"),
+    ("fanuc", "fanuc", "G53 R2. G03\n", "t.nc:2:5: error: a full circle cannot be programmed with R (use I/J/K)"),
     ("grbl", "fanuc", "X-5 F100. G53 G01\n", "t.nc:2:1: error: the fanuc dialect cannot express a linear move in "
                                             "machine coordinates (its machine-coordinate code moves only rapid)"),
 ]
@@ -47,4 +48,15 @@ def test_a_spindle_start_keeps_its_place_before_a_coolant_stop_moved_before_the_
     assert out.getvalue().splitlines()[-2:] == ["M04 M09", "G00 X0.0005"]
     report = verify_lines(io.StringIO(program), io.StringIO(out.getvalue()), file_in="a.nc", file_out="b.nc",
                           source="grbl", target="fanuc", tolerance=0.0)
+    assert report.ok, report.summary()
+
+
+def test_a_dwell_beside_an_x_move_gets_a_line_of_its_own_in_fanuc() -> None:
+    """make fuzz: LinuxCNC 'G1 X5 G4 P1' became Fanuc 'G04 X1. G01 X5.' (X twice: refused by Fanuc)."""
+    program = HEAD + "G1 X5 F100 G4 P1\nM2\n"
+    out = io.StringIO()
+    translate(io.StringIO(program), out, file="t.ngc", source="linuxcnc", target="fanuc")
+    assert out.getvalue().splitlines()[1:3] == ["G04 X1.", "G01 X5. F100."]
+    report = verify_lines(io.StringIO(program), io.StringIO(out.getvalue()), file_in="a.ngc", file_out="b.nc",
+                          source="linuxcnc", target="fanuc", tolerance=0.0)
     assert report.ok, report.summary()

@@ -191,6 +191,15 @@ class WordWriter(Writer):
             return self.compound(block, compound)  # type: ignore[arg-type]
         if "TapeMark" in sections:
             return "%" + (block.eol or "\n")
+        motion = sections.get("Motion")
+        if "Dwell" in sections and motion is not None and self.DWELL_WORD in getattr(motion, "axes", ()):
+            # the dwell's word is also an axis of the move (Fanuc G04 X): the dwell, which acts first,
+            # goes on a line of its own
+            first = Block(block.line, None, "\n")
+            first.sections = {"Dwell": sections["Dwell"]}
+            rest = Block(block.line, None, block.eol)
+            rest.sections = {k: v for k, v in sections.items() if k != "Dwell"}
+            return self.generate(first) + self.generate(rest)
         words: list[str] = []
         for key in SECTION_ORDER:
             section = sections.get(key)

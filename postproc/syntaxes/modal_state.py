@@ -46,13 +46,13 @@ class ModalStateSyntax(Syntax):
             state.motion = mode
         elif mode is None:
             return
+        if mode == "cw" or mode == "ccw":
+            _check_arc(block, ctx, motion)  # whatever else the block says: the simulator checks every arc
         pos = state.position
         if mode in ("home", "home2") or "MachineCoordinates" in block.sections:
             for axis in motion.axes:
                 pos[axis] = None
             return
-        if mode == "cw" or mode == "ccw":
-            _check_arc(block, ctx, motion)
         if state.distance != "incremental":
             pos.update(motion.axes)
         else:
