@@ -60,3 +60,15 @@ def test_a_dwell_beside_an_x_move_gets_a_line_of_its_own_in_fanuc() -> None:
     report = verify_lines(io.StringIO(program), io.StringIO(out.getvalue()), file_in="a.ngc", file_out="b.nc",
                           source="linuxcnc", target="fanuc", tolerance=0.0)
     assert report.ok, report.summary()
+
+
+def test_a_spindle_stop_comes_before_the_orientation_in_its_own_block() -> None:
+    """make fuzz: Fanuc 'Y2.5 M05 M19' (move, stop, orient) became LinuxCNC 'G0 Y2.5', 'M19 R0.', 'M5':
+    the orientation ran on a turning spindle and the stop came after it."""
+    program = HEAD + "Y2.5 M05 M19\n"
+    out = io.StringIO()
+    translate(io.StringIO(program), out, file="t.nc", source="fanuc", target="linuxcnc")
+    assert out.getvalue().splitlines()[1:] == ["G0 Y2.5", "M5", "M19 R0."]
+    report = verify_lines(io.StringIO(program), io.StringIO(out.getvalue()), file_in="a.nc", file_out="b.ngc",
+                          source="fanuc", target="linuxcnc", tolerance=0.0)
+    assert report.ok, report.summary()

@@ -24,6 +24,9 @@ from ..event_order import moves
 from ..ir import Block, Section
 
 _STOPS = ("SpindleControl", "Coolant")
+_AFTER_STOPS = ("SpindleOrientation", "ProgramControl")
+"""What acts after a block's stops (``postproc.event_order``): an oriented stop, then a program stop or
+end. It follows the stops into their block, so ``Y2.5 M05 M19`` stops the spindle before orienting it."""
 _TOOL = ("ToolSelect", "ToolChange")
 """What RS274/NGC does before the spindle and the coolant (select tool 5, change tool 6): it goes along
 into the block before, so a tool change still precedes a coolant off."""
@@ -41,9 +44,9 @@ def stops_after_motion(blocks: Iterator[Block], ctx: Context, target: type[Diale
         if not moved:
             yield block
             continue
-        end = sections.get("ProgramControl")
-        if end is not None:
-            moved["ProgramControl"] = end  # the stops act before a program stop or end, never after it
+        for key in _AFTER_STOPS:  # what the block does after its stops goes along, in the simulator's order
+            if key in sections:
+                moved[key] = sections[key]
         for key in moved:
             del sections[key]
         block.changed()
