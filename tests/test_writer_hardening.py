@@ -104,7 +104,8 @@ def test_m19_goes_after_the_blocks_motion_in_a_block_of_its_own() -> None:
     text, _ = write("fanuc", "linuxcnc", "G02 X2. I1. F100. M19\nG03 X0. R1. M19\nG00 X2. M19 M09\n")
     assert text == ("G2 X2. I1. F100.\nM19 R0.\n"
                     "G3 X0. R1.\nM19 R0.\n"
-                    "G0 X2.\nM19 R0.\nM9\n")  # coolant off after the move too (order_of_execution)
+                    "G0 X2.\nM19 R0. M9\n")  # coolant off after the move too (order_of_execution), and
+    # after the orientation: LinuxCNC runs M19 (group 7) before M9 (group 8), as the simulator orders them
     rs274_accepts(text)
 
 
