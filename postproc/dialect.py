@@ -149,6 +149,10 @@ class Dialect:
     """Variables, expressions and control flow (loops, jumps, subprograms) can be written: a program that
     computes is translated symbolically when every construct has a spelling here, else flattened (its
     evaluated motion). Without it every such program reaches this target flattened."""
+    STOPS_BEFORE_MOTION: ClassVar[bool] = False
+    """The controller stops the spindle and the coolant before the block's motion (the RS274/NGC order
+    of execution), and its reader flags such stops ``before_motion`` (``postproc.event_order``). A
+    target that stops after the motion moves them ahead only when the source reads so."""
     CYCLE_SEMANTICS: ClassVar[str] = "fanuc"
     """How the controller moves through its native canned cycles ('fanuc' or 'rs274', see
     ``postproc.cycles.semantics``): a cycle resolved under other rules is expanded for it."""
@@ -182,6 +186,7 @@ class Dialect:
     def context(cls, file: str, setup: MachineSetup, diagnostics: Diagnostics) -> Context:
         ctx = Context(file, setup, diagnostics, cls.NAME, cls.CYCLE_WORDS)
         ctx.reader = cls.READER
+        ctx.stops_before_motion = cls.STOPS_BEFORE_MOTION
         return ctx
 
 

@@ -58,7 +58,14 @@ def stops_after_motion(blocks: Iterator[Block], ctx: Context, target: type[Diale
 
 
 def stops_before_motion(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
-    """Lowering step for targets that stop after the motion (see the module docstring)."""
+    """Lowering step for targets that stop after the motion (see the module docstring). A source that
+    stops after the motion too flags nothing: its blocks pass with no step each."""
+    if not ctx.stops_before_motion:
+        return blocks
+    return _stops_before_motion(blocks)
+
+
+def _stops_before_motion(blocks: Iterator[Block]) -> Iterator[Block]:
     for block in blocks:
         sections = block.sections
         flagged = [key for key in _STOPS if key in sections and _flagged(sections[key])]

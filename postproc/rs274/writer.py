@@ -137,10 +137,12 @@ class WordWriter(Writer):
         if (text is not None and not self.renumber and self.leading_zero
                 and "Comments" not in sections and "BlockDelete" not in sections
                 and block.canonical):
-            self._exact_axes(block)
+            if self.carry:
+                self._exact_axes(block)
             return text  # already normal: upper-case words, single spaces, explicit exact numbers
         axes = self._rounded_axes(block)
-        self._exact_axes(block)  # a canonical absolute word is exact; a rounded one sets its carry again
+        if self.carry:
+            self._exact_axes(block)  # a canonical absolute word is exact; a rounded one sets its carry again
         parts: list[str] = []
         skip = sections.get("BlockDelete")
         if skip is not None:
@@ -467,7 +469,8 @@ class WordWriter(Writer):
         return {a: incremental for a, v in motion.axes.items() if v.__class__ is float}
 
     def _exact_axes(self, block: Block) -> None:
-        """A block copied with its exact numbers: absolute axis words leave nothing to carry."""
+        """A block copied with its exact numbers: absolute axis words leave nothing to carry (callers test
+        ``self.carry`` first: on the hot path there is usually nothing carried)."""
         if self.carry:
             for axis, incremental in self._rounded_axes(block).items():
                 if not incremental:

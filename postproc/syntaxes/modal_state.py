@@ -11,9 +11,11 @@ It also refuses a negative F or S (``postproc.block_rules``): every reading pass
 
 from __future__ import annotations
 
+from math import hypot
 from typing import NoReturn
 
 from postproc.block_rules import ArcError, arc_centre, check_values
+from postproc.geometry import ARC_TOLERANCE_MM, PLACES
 from postproc.expr import Expr
 from postproc.ir import Block, Motion
 from postproc.state import MM_PER_INCH, PLANE_AXES, changes_nothing
@@ -70,36 +72,53 @@ def _check_arc(block: Block, ctx: Context, motion: Motion) -> None:
     so ``translate`` refuses what ``toolpath`` refuses; an arc with a computed word waits for the run."""
     state = ctx.state
     a1, a2, _ = PLANE_AXES[state.plane]
-    for axis in motion.center or {}:
-        if axis not in (a1, a2):
-            _refuse(block, ctx, motion, ArcError(f"arc centre offset along {axis} is outside the {state.plane} "
-                                                 "plane", _CENTRE_LETTERS.get(axis, "G")))
-    values = [*motion.axes.values(), *(motion.center or {}).values(), motion.radius]
-    if any(isinstance(v, Expr) for v in values):
-        return
-    if motion.radius is not None and not any(
-            a in motion.axes and (state.distance != "incremental" or motion.axes[a] != 0.0) for a in (a1, a2)):
-        # no end point in the plane: an R arc that ends where it starts, wherever that is
-        _refuse(block, ctx, motion, ArcError("a full circle cannot be programmed with R (use I/J/K)", "R"))
-    start = (state.position.get(a1), state.position.get(a2))
-    if start[0] is None or start[1] is None:
+    axes = motion.axes
+    center = motion.center
+    radius = motion.radius
+    if center:
+        for axis in center:
+            if axis != a1 and axis != a2:
+                _refuse(block, ctx, motion, ArcError(f"arc centre offset along {axis} is outside the "
+                                                     f"{state.plane} plane", _CENTRE_LETTERS.get(axis, "G")))
+    if state.symbolic and any(isinstance(v, Expr) for v in (*axes.values(), *(center or {}).values(), radius)):
         return
     incremental = state.distance == "incremental"
-    end = [start[0], start[1]]
-    for i, axis in enumerate((a1, a2)):
-        value = motion.axes.get(axis)
-        if value is not None:
-            end[i] = end[i] + value if incremental else value
-    scale = MM_PER_INCH if state.units == "inch" else 1.0
-    offsets = {a: v * scale for a, v in (motion.center or {}).items() if a in (a1, a2)}
-    radius = None if motion.radius is None else motion.radius * scale
-    try:
-        arc_centre((start[0] * scale, start[1] * scale), (end[0] * scale, end[1] * scale), (a1, a2), radius,
-                   offsets, motion.mode == "cw")
+    if radius is not None and not any(
+            a in axes and (not incremental or axes[a] != 0.0) for a in (a1, a2)):
+        # no end point in the plane: an R arc that ends where it starts, wherever that is
+        _refuse(block, ctx, motion, ArcError("a full circle cannot be programmed with R (use I/J/K)", "R"))
+    position = state.position
+    s1, s2 = position.get(a1), position.get(a2)
+    if s1 is None or s2 is None:
+        return
+    e1, e2 = axes.get(a1), axes.get(a2)
+    e1 = s1 if e1 is None else s1 + e1 if incremental else e1
+    e2 = s2 if e2 is None else s2 + e2 if incremental else e2
+    if state.units == "inch":
+        s1, s2, e1, e2 = s1 * MM_PER_INCH, s2 * MM_PER_INCH, e1 * MM_PER_INCH, e2 * MM_PER_INCH
+        scale = MM_PER_INCH
+    else:
+        scale = 1.0
+    if radius is None:
+        offsets = {a: v * scale for a, v in center.items() if a == a1 or a == a2} if center else {}
+        c1, c2 = s1 + offsets.get(a1, 0.0), s2 + offsets.get(a2, 0.0)
+        r0 = hypot(s1 - c1, s2 - c2)
+        if abs(r0 - hypot(e1 - c1, e2 - c2)) <= ARC_TOLERANCE_MM and r0 >= _SMALLEST:
+            return  # the common arc: its end on its circle, its centre away from its start
+    else:
+        radius *= scale
+        offsets = {}
+        half = hypot(e1 - s1, e2 - s2) / 2.0
+        if half >= _SMALLEST and abs(radius) - half >= -ARC_TOLERANCE_MM:
+            return  # the common R arc: a chord its radius reaches
+    try:  # the rare arc: arc_centre says what is wrong with it (or that it is a zero-length no-op)
+        arc_centre((s1, s2), (e1, e2), (a1, a2), radius, offsets, motion.mode == "cw")
     except ArcError as err:
         _refuse(block, ctx, motion, err)
 
 
+_SMALLEST = 10.0 ** -PLACES
+"""Below this a radius or a half chord is zero (``postproc.block_rules.arc_centre`` uses the same)."""
 _CENTRE_LETTERS = {"X": "I", "Y": "J", "Z": "K"}
 
 

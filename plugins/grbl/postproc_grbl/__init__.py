@@ -56,6 +56,8 @@ class Grbl(Dialect):
     """No M19: cycles that need an oriented stop follow the set-up's ``Cycles orientation``."""
     TOOL_CHANGER = False
     """M6 is rejected: a tool change is written as an M0 pause (``pause_for_tool_change``)."""
+    STOPS_BEFORE_MOTION = True
+    """The RS274/NGC order of execution: M5 and M9 act before the block's motion."""
     LOWERING = (pause_for_tool_change, cancel_length_offset_first, close_full_circles, stops_after_motion)
     """Rewrites into what grbl runs (``lowering.py``): tool change as a pause, G49 before motion, full
     circles with an end point; a moving block's spindle stop and coolant off after it (grbl runs them

@@ -52,6 +52,8 @@ class Linuxcnc(Dialect):
     there is no fine boring: those are expanded."""
     PROGRAMS = True
     """Numbered and named parameters, expressions, o-word subprograms and control flow."""
+    STOPS_BEFORE_MOTION = True
+    """The RS274/NGC order of execution: M5 and M9 act before the block's motion."""
     LOWERING = (stops_after_motion,)
     """A moving block's spindle stop and coolant off go in a block of their own after it: LinuxCNC runs
     them before the motion (``postproc.rs274.order_of_execution``)."""
