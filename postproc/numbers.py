@@ -45,22 +45,24 @@ def format_decimal(value: float, places: int, leading_zero: bool = True, exact: 
     non-finite value (a number beyond the float range, or not a number) cannot be written: a
     ``ProgramError`` (the writer locates it at its block).
     """
-    if not math.isfinite(value):
+    text = f"{value:.{places}f}"
+    if text[-1] > "9":  # 'inf', '-inf' or 'nan': no digit last
         raise ProgramError(f"cannot write the number {value!r}: it is beyond the range of a float"
                            if value == value else "cannot write a value that is not a number (nan)")
-    text = f"{value:.{places}f}"
     if abs(float(text) - value) > exact:
         text = f"{value:.{max(places, _places_within(exact))}f}"
-    whole, point, frac = text.partition(".")
-    frac = frac.rstrip("0")
-    if whole == "-0" and not frac:
-        whole = "0"
-    if not leading_zero and frac:
-        if whole == "0":
-            whole = ""
-        elif whole == "-0":
-            whole = "-"
-    return f"{whole}.{frac}"
+    if "." in text:
+        text = text.rstrip("0")
+    else:
+        text += "."  # no places: a whole number ('50' -> '50.')
+    if text == "-0.":
+        return "0."
+    if not leading_zero:
+        if text[:2] == "0." and text != "0.":
+            return text[1:]
+        if text[:3] == "-0.":
+            return "-" + text[2:]
+    return text
 
 
 @functools.cache

@@ -24,6 +24,8 @@ from ..event_order import moves
 from ..ir import Block, Section
 
 _STOPS = ("SpindleControl", "Coolant")
+_NO_STOPS = frozenset(_STOPS).isdisjoint
+"""``_NO_STOPS(sections)``: the block neither stops nor starts the spindle or the coolant (most blocks)."""
 _AFTER_STOPS = ("SpindleOrientation", "ProgramControl")
 """What acts after a block's stops (``postproc.event_order``): an oriented stop, then a program stop or
 end. It follows the stops into their block, so ``Y2.5 M05 M19`` stops the spindle before orienting it."""
@@ -37,7 +39,7 @@ def stops_after_motion(blocks: Iterator[Block], ctx: Context, target: type[Diale
     for block in blocks:
         sections = block.sections
         motion = sections.get("Motion")
-        if motion is None or not getattr(motion, "axes", None):
+        if motion is None or not getattr(motion, "axes", None) or _NO_STOPS(sections):
             yield block
             continue
         moved = {key: sections[key] for key in _STOPS if key in sections and _stops(sections[key])}

@@ -419,10 +419,13 @@ class WordWriter(Writer):
             self.unsupported("a canned-cycle repetition without its cycle", block)
         words = self._code(_MOTION_KIND.get(s.mode, "motion"), s.mode, f"{s.mode} motion", block)
         length = self.length
-        start = dict(self.carry)
+        start = dict(self.carry) if s.center is not None else None
         incremental = self._incremental(s, block)
+        position = self.position
         for axis, value in s.axes.items():
-            if isinstance(value, Expr):
+            if value.__class__ is float:
+                words.append(axis + position(axis, value, incremental))
+            elif isinstance(value, Expr):
                 words.append(axis + self.expression(value, block))
                 if not incremental:
                     self.carry.pop(axis, None)  # written as the program wrote it
@@ -435,7 +438,7 @@ class WordWriter(Writer):
             for axis, letter in (("X", "I"), ("Y", "J"), ("Z", "K")):
                 if axis in s.center:
                     offset = s.center[axis]
-                    exact = offset if isinstance(offset, Expr) else offset + start.get(axis, 0.0)
+                    exact = offset if isinstance(offset, Expr) else offset + start.get(axis, 0.0)  # type: ignore[union-attr]
                     words.append(letter + length(exact, block))  # from the written start to the exact centre
         if s.radius is not None:
             words.append("R" + length(s.radius, block))
@@ -446,12 +449,12 @@ class WordWriter(Writer):
         the one that brings the written position nearest the source's (what earlier words rounded away
         is carried), so each written position is within the output resolution of the exact one."""
         carry = self.carry
-        want = value + carry.get(axis, 0.0) if incremental else value
+        want = value + carry.get(axis, 0.0) if incremental and carry else value
         text = self.number(want)
         error = want - float(text)
         if error:
             carry[axis] = error
-        else:
+        elif carry:
             carry.pop(axis, None)
         return text
 

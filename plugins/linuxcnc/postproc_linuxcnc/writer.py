@@ -173,12 +173,11 @@ class LinuxcncWriter(WordWriter):
             self.unsupported(f"{code} sharing its line with other words ({', '.join(others)}): rs274 refuses it",
                              block)
 
-    def write_block(self, block: Block) -> str | None:
-        text = super().write_block(block)
-        end = block.sections.get("ProgramControl")
-        if end is not None and end.kind in ("end", "end_rewind"):  # type: ignore[attr-defined]
-            self._ended = True
-        return text
+    def program_control_words(self, s: Any, block: Block) -> list[str]:
+        words = super().program_control_words(s, block)
+        if s.kind in ("end", "end_rewind"):
+            self._ended = True  # an O line from here on starts a subprogram
+        return words
 
     def program_start(self, s: Any, block: Block) -> str:
         """``O<n>`` after the main program's end (a subprogram start, as rs274 reads it) or from a
@@ -200,9 +199,8 @@ class LinuxcncWriter(WordWriter):
         ``R`` as the angle (so an R arc, a cycle's R or I/J/K beside it are refused); the neutral order is
         the other way round. What the block does after the orientation (coolant off, a stop) follows it."""
         sections = block.sections
-        orient = sections.get("SpindleOrientation")
-        if orient is None or "CompoundMotion" in sections or sections.keys() <= _WITH_ORIENT:
-            return super().generate(block)
+        if "SpindleOrientation" not in sections or "CompoundMotion" in sections or sections.keys() <= _WITH_ORIENT:
+            return WordWriter.generate(self, block)
         first = Block(block.line, None, block.eol or "\n")
         then = Block(block.line, None, block.eol)
         first.sections = {}
