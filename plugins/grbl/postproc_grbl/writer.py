@@ -9,7 +9,9 @@ pause, G49 before motion, full circles) are grbl's lowering steps (``lowering.py
   grbl's M0 leaves the spindle turning, so a pause for the operator (also inside a cycle's
   expansion) stops a running spindle first with M5;
 * G64 (continuous path) writes nothing: grbl always blends; G98/G99 write nothing: grbl runs no cycles
-  (they arrive expanded), so the retract level has no meaning left;
+  (they arrive expanded), so the retract level has no meaning left; G80 writes nothing either: there is
+  no cycle to cancel, and grbl's G80 leaves no motion mode in force, so it would refuse the axis words of
+  a following ``G28 Z0.`` (error 31, "axis words exist", even for non-modal commands);
 * ``%`` and an O-number, which grbl's parser rejects, are written as comments.
 
 With ``--on-unsupported warn``, a block whose only problem is a droppable modal word (a tool length
@@ -44,6 +46,7 @@ class GrblWriter(WordWriter):
     DWELL_WORD: ClassVar[str] = "P"
     CYCLE_CANCEL_IS_MOTION: ClassVar[bool] = True
     """G80 is a motion code here: ``G80 G0`` is refused, a block's G0-G3 ends the cycle by itself."""
+    BARE_FEED_MOTION_NEEDS_FEED: ClassVar[bool] = True
 
     def __init__(self, ctx: Any, source_dialect: str, target: Any = None) -> None:
         super().__init__(ctx, source_dialect, target)
@@ -66,8 +69,10 @@ class GrblWriter(WordWriter):
 
     def generate(self, block: Block) -> str:
         text = super().generate(block)
-        if block.text is None and block.sections and not text.strip():
-            return ""  # a generated part whose only words grbl does without (G98/G99, G64)
+        if block.sections and not text.strip():
+            if block.text is None:
+                return ""  # a generated part whose only words grbl does without (G80, G98/G99, G64)
+            return self.comment(block.text.strip()) + (block.eol or "\n")  # a trace of the source line
         return text
 
     def section_words(self, key: str, section: Section, block: Block) -> list[str]:
@@ -108,6 +113,10 @@ class GrblWriter(WordWriter):
 
     def return_level_words(self, s: Any, block: Block) -> list[str]:
         """G98/G99 only steer canned cycles, which grbl never runs (they arrive expanded)."""
+        return []
+
+    def cycle_cancel_words(self, s: Any, block: Block) -> list[str]:
+        """No cycle ever runs on grbl (see the module docstring): nothing to cancel."""
         return []
 
     def path_control_words(self, s: Any, block: Block) -> list[str]:

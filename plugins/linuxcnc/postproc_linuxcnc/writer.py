@@ -59,6 +59,7 @@ class LinuxcncWriter(WordWriter):
     DWELL_WORD: ClassVar[str] = "P"
     CYCLE_CANCEL_IS_MOTION: ClassVar[bool] = True
     """G80 is a motion code here: ``G80 G0`` is refused, a block's G0-G3 ends the cycle by itself."""
+    BARE_FEED_MOTION_NEEDS_FEED: ClassVar[bool] = True
     SPELLING: ClassVar[ExprSpelling | None] = LINUXCNC_SPELLING
 
     def __init__(self, ctx: Context, source_dialect: str, target: type[Dialect] | None = None) -> None:
@@ -72,6 +73,8 @@ class LinuxcncWriter(WordWriter):
         """O-word labels and subprogram names written so far."""
         self._counter = 0
         self._ended = False
+        self._opened: bool | None = None
+        """Whether the program opened with '%' (None: nothing written yet)."""
         """The main program's end was written: an ``O<n>`` now starts a subprogram."""
 
     def units_words(self, s: Any, block: Block) -> list[str]:
@@ -79,8 +82,16 @@ class LinuxcncWriter(WordWriter):
         return super().units_words(s, block)
 
     def feed_mode_words(self, s: Any, block: Block) -> list[str]:
+        """LinuxCNC sets the feed rate to zero at every G93/G94/G95, even one that selects the mode in
+        force (rs274: ``F100`` then ``G94 G1 Z-3`` is "Cannot do g1 with zero feed rate"): the feed rate in
+        force is written again beside it, as the source goes on using it."""
         self.inverse_time = s.mode == "inverse_time"
-        return super().feed_mode_words(s, block)
+        words = super().feed_mode_words(s, block)
+        feed = self.modal.feed
+        if (not self.inverse_time and isinstance(feed, (int, float)) and feed
+                and "Feed" not in block.sections and "Units" not in block.sections):
+            words.append("F" + self.number(feed))
+        return words
 
     def feed_words(self, s: Any, block: Block) -> list[str]:
         """The neutral F is in the block's units; LinuxCNC reads it in the units before the block."""
@@ -174,11 +185,26 @@ class LinuxcncWriter(WordWriter):
                              block)
 
     def write_block(self, block: Block) -> str | None:
+        sections = block.sections
+        if "TapeMark" in sections:
+            if self._opened is False and not self._ended:
+                return self._lone_tape_mark(block)
+            self._opened = self._opened is None or self._opened
+        elif sections and self._opened is None and sections.keys() != {"Comments"}:
+            self._opened = False
         text = super().write_block(block)
         end = block.sections.get("ProgramControl")
         if end is not None and end.kind in ("end", "end_rewind"):  # type: ignore[attr-defined]
             self._ended = True
         return text
+
+    def _lone_tape_mark(self, block: Block) -> str:
+        """A closing ``%`` with no opening one and no program end before it: rs274 refuses it ("Bad
+        character '%' used"), and the opening line is long written. It becomes a comment; the program
+        then has no end, which LinuxCNC reports when it reaches the end of the file."""
+        self.ctx.diagnostics.warn("the program ends with '%' and no M2/M30, without an opening '%': LinuxCNC "
+                                  "refuses a lone '%', written as a comment (add M30 before it)", self.ctx.at(block))
+        return self.comment("%") + (block.eol or "\n")
 
     def program_start(self, s: Any, block: Block) -> str:
         """``O<n>`` after the main program's end (a subprogram start, as rs274 reads it) or from a
