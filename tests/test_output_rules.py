@@ -190,6 +190,14 @@ def test_a_bare_feed_motion_code_with_no_feed_rate_is_left_out(target: str) -> N
     assert text.splitlines()[1:] == ["(G01)", "G1 X5. F100.", "G0", "G1", "M30"]
 
 
+def test_grbl_comments_hold_no_realtime_character_and_only_ascii() -> None:
+    text, warnings = _translate("G21 G0 X0 Y0 Z10.\n(DRILL \u00d8 8.5 - 90\u00b0 - CHECK DEPTH?!)\n"
+                                "(CAF\u00c9 ~ \u2603)\nM30\n", "fanuc", "grbl")
+    assert text.splitlines()[1:3] == ["(DRILL DIA 8.5 - 90DEG - CHECK DEPTH__)", "(CAFE _ _)"]
+    assert grbl_problems(text) == [] and len(warnings) == 1
+    assert _translate("G21 G0 X1.\n(OK)\n", "fanuc", "grbl")[1] == []
+
+
 def test_linuxcnc_gets_no_lone_closing_percent() -> None:
     text, warnings = _translate("G21 G0 X1.\n%\n", "fanuc", "linuxcnc")
     assert text == "G21 G0 X1.\n(%)\n"

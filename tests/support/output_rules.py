@@ -62,16 +62,24 @@ class _Tee:
         return getattr(self.out, name)
 
 
-def _check(target: str, text: str, setup: MachineSetup) -> None:
-    checker = CHECKERS[target]
+def problems(target: str, text: str, setup: MachineSetup) -> list[str]:
+    """What ``target``'s controller refuses in ``text`` (nothing for a target without a checker)."""
+    checker = CHECKERS.get(target)
+    if checker is None:
+        return []
     key = (target, text, setup.cycles.orientation)
-    problems = _seen.get(key)
-    if problems is None:
-        problems = _seen[key] = checker(text, setup)
+    found = _seen.get(key)
+    if found is None:
+        found = _seen[key] = checker(text, setup)
         checked[target] += 1
-    if problems:
+    return found
+
+
+def _check(target: str, text: str, setup: MachineSetup) -> None:
+    found = problems(target, text, setup)
+    if found:
         listing = "\n".join(f"{n:4} | {line}" for n, line in enumerate(text.splitlines(), 1))
-        violations.append(f"{target} output its controller refuses:\n  " + "\n  ".join(problems)
+        violations.append(f"{target} output its controller refuses:\n  " + "\n  ".join(found)
                           + f"\n--- the {target} program ---\n{listing}")
 
 

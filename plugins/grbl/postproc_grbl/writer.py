@@ -12,7 +12,11 @@ pause, G49 before motion, full circles) are grbl's lowering steps (``lowering.py
   (they arrive expanded), so the retract level has no meaning left; G80 writes nothing either: there is
   no cycle to cancel, and grbl's G80 leaves no motion mode in force, so it would refuse the axis words of
   a following ``G28 Z0.`` (error 31, "axis words exist", even for non-modal commands);
-* ``%`` and an O-number, which grbl's parser rejects, are written as comments.
+* ``%`` and an O-number, which grbl's parser rejects, are written as comments;
+* grbl's serial layer acts on ``?`` (status), ``!`` (feed hold), ``~`` (cycle start) and Ctrl-X wherever
+  they stand, comments included, and bytes above 0x7F are real-time commands (``serial.c``): in a
+  translation, comments are written in ASCII without them (``Ø`` as ``DIA``, ``°`` as ``DEG``, accents
+  dropped, anything else ``_``), with one warning.
 
 With ``--on-unsupported warn``, a block whose only problem is a droppable modal word (a tool length
 offset, cutter compensation, block delete, ...) is written without that word after a comment of the
@@ -21,6 +25,8 @@ original block, so its motion is kept; anything else falls back to the whole blo
 
 from __future__ import annotations
 
+import re
+import unicodedata
 from typing import Any, ClassVar
 
 from postproc.errors import UnsupportedError
@@ -40,6 +46,26 @@ GRBL_AXES = frozenset("XYZ")
 """Axes of a stock grbl 1.1 build."""
 
 
+_REALTIME = re.compile(r"[?!~\x00-\x08\x0b\x0c\x0e-\x1f\x7f]")
+"""Characters grbl acts on (or that have no place in a line): replaced in what is written."""
+_SYMBOLS = {"\u00d8": "DIA", "\u00f8": "DIA", "\u2300": "DIA", "\u00b0": "DEG", "\u00b1": "+/-", "\u00b5": "U",
+            "\u2013": "-", "\u2014": "-", "\u2018": "'", "\u2019": "'", "\u201c": '"', "\u201d": '"'}
+
+
+def grbl_safe(text: str) -> str:
+    """``text`` in ASCII without grbl's real-time characters (see the module docstring)."""
+    out: list[str] = []
+    for ch in text:
+        if ch.isascii():
+            out.append("_" if _REALTIME.match(ch) else ch)
+        elif ch in _SYMBOLS:
+            out.append(_SYMBOLS[ch])
+        else:
+            plain = unicodedata.normalize("NFKD", ch).encode("ascii", "ignore").decode()
+            out.append("_" if not plain or _REALTIME.search(plain) else plain)
+    return "".join(out)
+
+
 class GrblWriter(WordWriter):
     DIALECT: ClassVar[str] = "grbl"
     CODES: ClassVar[CodeTable] = CODES
@@ -53,9 +79,21 @@ class GrblWriter(WordWriter):
         self._dropped: list[UnsupportedError] = []
         self._strict = False
         """True while writing an expansion: nothing may be dropped from a cycle's motion."""
+        self._sanitised = False
+        """A comment has been made safe for grbl (warned once)."""
 
     # -- blocks ------------------------------------------------------------------------------------
     def write_block(self, block: Block) -> str | None:
+        text = self._write_block(block)
+        if text is None or self.source_dialect == self.DIALECT or (text.isascii() and not _REALTIME.search(text)):
+            return text
+        if not self._sanitised:
+            self._sanitised = True
+            self.ctx.diagnostics.warn("grbl acts on '?', '!', '~' and bytes above 0x7F even inside a comment: "
+                                      "comments are written without them", self.ctx.at(block))
+        return grbl_safe(text)
+
+    def _write_block(self, block: Block) -> str | None:
         if "TapeMark" in block.sections:
             return self.comment("%") + (block.eol or "\n")
         self._dropped = []
