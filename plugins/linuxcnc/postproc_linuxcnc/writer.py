@@ -73,6 +73,8 @@ class LinuxcncWriter(WordWriter):
         """O-word labels and subprogram names written so far."""
         self._counter = 0
         self._ended = False
+        self._cutter_on = False
+        """Cutter compensation is on (rs274 refuses turning it on again, and G28/G30 under it)."""
         self._opened: bool | None = None
         """Whether the program opened with '%' (None: nothing written yet)."""
         """The main program's end was written: an ``O<n>`` now starts a subprogram."""
@@ -80,6 +82,29 @@ class LinuxcncWriter(WordWriter):
     def units_words(self, s: Any, block: Block) -> list[str]:
         self.units_before = self.modal.units
         return super().units_words(s, block)
+
+    def cutter_compensation_words(self, s: Any, block: Block) -> list[str]:
+        """rs274 turns compensation on only from off ("Cannot turn cutter radius comp on when on"): G41/G42
+        while it is on would need a G40 between them, which moves differently."""
+        if s.mode != "off" and self._cutter_on:
+            self.unsupported(f"cutter compensation {s.mode} while compensation is on (rs274 needs G40 first: "
+                             "\"Cannot turn cutter radius comp on when on\")", block)
+        self._cutter_on = s.mode != "off"
+        return super().cutter_compensation_words(s, block)
+
+    def motion_words(self, s: Any, block: Block) -> list[str]:
+        if s.mode in ("home", "home2") and self._cutter_on and "CutterCompensation" not in block.sections:
+            self.unsupported("G28/G30 with cutter compensation on (rs274: \"Cannot use g28 or g30 with cutter "
+                             "radius comp\")", block)
+        return super().motion_words(s, block)
+
+    def machine_coordinates_words(self, s: Any, block: Block) -> list[str]:
+        distance = block.sections.get("DistanceMode")
+        mode = distance.mode if distance is not None else self.modal.distance  # type: ignore[attr-defined]
+        if mode == "incremental" and "Motion" in block.sections:
+            self.unsupported("a move in machine coordinates in incremental mode (rs274: \"Cannot use g53 "
+                             "incremental\")", block)
+        return super().machine_coordinates_words(s, block)
 
     def feed_mode_words(self, s: Any, block: Block) -> list[str]:
         """LinuxCNC sets the feed rate to zero at every G93/G94/G95, even one that selects the mode in
