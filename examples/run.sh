@@ -34,3 +34,4 @@ echo "== out/o1005_bolt_circle_macro.grbl.nc: a Custom Macro B program flattened
 head -n 20 out/o1005_bolt_circle_macro.grbl.nc
 echo "..."
 echo "translated programs are in out/"
+echo "the postproc command is .venv/bin/postproc: '. .venv/bin/activate' puts it on your PATH"

@@ -13,7 +13,7 @@ import io
 from typing import Callable, Iterable, Iterator, TextIO
 
 from .dialect import Dialect
-from .errors import Diagnostics, ErrorLevel, PostprocError, UsageError
+from .errors import Diagnostics, ErrorLevel, Location, PostprocError, UsageError
 from .ir import Block
 from .lines import checked_lines
 from .lower import lower_for
@@ -52,7 +52,22 @@ def read_blocks(lines: Iterable[str], file: str, dialect: type[Dialect], setup: 
         prepare(ctx)
     pipeline = dialect.pipeline(setup)
     blocks = dialect.READER(ctx).read(checked_lines(lines, ctx))
-    return ctx, pipeline.run(blocks, ctx)
+    return ctx, pipeline.run(_warn_if_empty(blocks, ctx), ctx)
+
+
+_INERT = frozenset(("Comments", "TapeMark"))
+
+
+def _warn_if_empty(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
+    """Pass the reader's blocks on; a program with none that does anything (no file, only comments or
+    ``%``) gets a warning: an empty output is then no surprise. The check ends at the first such block."""
+    for block in blocks:
+        yield block
+        if block.words or not block.sections.keys() <= _INERT:
+            yield from blocks
+            return
+    if not ctx.diagnostics.errors:
+        ctx.diagnostics.warn("the program is empty: no line in it programs anything", Location(ctx.file, 1, 1))
 
 
 def translate(lines: Iterable[str], out: TextIO, *, file: str, source: str, target: str,

@@ -91,7 +91,7 @@ def _until_fed(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
             return
         motion = sections.get("Motion")
         if motion is not None and needs_feed(motion):
-            report(ProgramError(NO_FEED, ctx.at(block)))
+            report(ProgramError(NO_FEED, ctx.at(block), needs="F"))
         compound = sections.get("CompoundMotion")
         if compound is not None:
             for item in compound.items:  # type: ignore[attr-defined]
@@ -99,7 +99,7 @@ def _until_fed(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
                     yield block
                     return
                 if item.KEY == "Motion" and needs_feed(item):
-                    report(ProgramError(NO_FEED, ctx.at(block)))
+                    report(ProgramError(NO_FEED, ctx.at(block), needs="F"))
                     break
         yield block
 

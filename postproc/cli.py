@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 import contextlib
+import io
 import json
 import math
 import os
@@ -11,12 +12,13 @@ import signal
 import sys
 import threading
 from pathlib import Path
-from typing import Iterator, Sequence, TextIO
+from typing import Iterable, Iterator, Sequence, TextIO
 
 from .api import read_blocks, translate
 from .errors import ConfigError, Diagnostics, ErrorList, Location, PostprocError, UsageError
 from .outfile import BUFFER, ENCODING, write_output
 from .plugins import default_registry
+from .progress import AboveProgress, progress_for
 from .setup import MachineSetup, load_setup
 from .xmlio import parse_xml_file, to_bytes
 
@@ -73,6 +75,8 @@ def _main(argv: Sequence[str] | None) -> int:
     except ErrorList as errs:
         for each in errs.errors:
             print(each, file=sys.stderr)
+        for note in errs.notes:
+            print(f"postproc: {note}", file=sys.stderr)
         return 1
     except PostprocError as err:
         print(err, file=sys.stderr)
@@ -87,60 +91,114 @@ def _main(argv: Sequence[str] | None) -> int:
         return 1
 
 
-def build_parser() -> argparse.ArgumentParser:
-    p = argparse.ArgumentParser(prog="postproc", description="Translate and post-process CNC part programs.")
-    sub = p.add_subparsers(dest="command")
+EXAMPLES = {
+    "translate": """examples:
+  postproc translate o1001.nc --from fanuc --to linuxcnc -o o1001.ngc
+  postproc translate o1002.nc --from fanuc --to grbl --on-unsupported warn -o o1002.gcode
+  postproc translate o1004.nc --from fanuc --to fanuc --normalize --renumber 10,10 -o o1004.nc --in-place
+  cat o1001.nc | postproc translate - --from fanuc --to grbl > o1001.gcode""",
+    "toolpath": """examples:
+  postproc toolpath o1003.nc --dialect fanuc                  # JSON lines on standard output
+  postproc toolpath o1003.nc --dialect fanuc --format svg -o o1003.svg""",
+    "verify": """examples:
+  postproc translate o1001.nc --from fanuc --to grbl -o o1001.gcode
+  postproc verify o1001.nc o1001.gcode --from fanuc --to grbl    # exit 1 above the tolerance""",
+    "ir": """example:
+  postproc ir o1001.nc --dialect fanuc -o o1001.xml""",
+    "dialects": """examples:
+  postproc dialects
+  postproc dialects --json""",
+    "config": """examples:
+  postproc config check examples/setups/fanuc_0i_mf_calculator.xml
+  postproc config dump examples/setups/fanuc_0i_mf_calculator.xml > canonical.xml""",
+}
+"""One example (or a few) per command, shown by its ``--help``."""
 
-    t = sub.add_parser("translate", help="translate a program from one dialect to another")
-    t.add_argument("input")
-    t.add_argument("-o", "--output")
-    t.add_argument("--from", dest="source", required=True)
-    t.add_argument("--to", dest="target", required=True)
-    t.add_argument("--machine")
-    t.add_argument("--lib", action="append", default=[], metavar="DIR",
-                   help="folder searched for subprograms (repeatable; after the set-up's <Library>)")
-    t.add_argument("--on-unsupported", choices=("error", "warn"), default="error")
-    t.add_argument("--normalize", action="store_true", help="write every decimal point explicitly")
+STDIO = "'-' reads standard input"
+MACHINE = "machine set-up XML (decimal-point mode, cycle parameters, output format, ...; see README)"
+LIB = "folder searched for subprograms (repeatable; after the set-up's <Library>)"
+OUTPUT = "write here instead of standard output ('-': standard output); written only on success, atomically"
+
+
+def build_parser() -> argparse.ArgumentParser:
+    p = argparse.ArgumentParser(
+        prog="postproc", formatter_class=argparse.RawDescriptionHelpFormatter,
+        description="Translate CNC part programs between controller dialects (fanuc, linuxcnc, grbl, ...) "
+                    "and check that a translation moves the tool exactly as its source.",
+        epilog="\n\n".join(EXAMPLES[c] for c in ("translate", "verify", "toolpath")) + "\n\n"
+               "exit status: 0 ok, 1 the program or set-up has errors (FILE:LINE:COL: error: ...), 2 wrong usage; "
+               "warnings go to standard error.\n'postproc COMMAND --help' describes each command.")
+    sub = p.add_subparsers(dest="command", metavar="COMMAND")
+
+    def command(name: str, help: str, description: str) -> argparse.ArgumentParser:
+        return sub.add_parser(name, help=help, description=description, epilog=EXAMPLES[name],
+                              formatter_class=argparse.RawDescriptionHelpFormatter)
+
+    t = command("translate", "translate a program from one dialect to another",
+                "Translate a program from one controller dialect to another. Read back in its own dialect a "
+                "program is reproduced byte for byte; what the target cannot express is a located error "
+                "(or, with --on-unsupported warn, a warning and the line written as a comment).")
+    t.add_argument("input", metavar="IN", help=f"the program to translate ({STDIO})")
+    t.add_argument("-o", "--output", metavar="OUT", help=OUTPUT)
+    t.add_argument("--from", dest="source", required=True, metavar="DIALECT",
+                   help="dialect of IN ('postproc dialects' lists them)")
+    t.add_argument("--to", dest="target", required=True, metavar="DIALECT", help="dialect to write")
+    t.add_argument("--machine", metavar="M.xml", help=MACHINE)
+    t.add_argument("--lib", action="append", default=[], metavar="DIR", help=LIB)
+    t.add_argument("--on-unsupported", choices=("error", "warn"), default="error",
+                   help="what the target cannot express: a located error (default), or a warning with the "
+                        "line kept as a comment")
+    t.add_argument("--normalize", action="store_true",
+                   help="write every decimal point explicitly (Fanuc X10 under least-increment input becomes "
+                        "X0.01); no digit the program wrote is rounded away")
     t.add_argument("--renumber", metavar="START[,STEP]", help="renumber blocks (implies --normalize)")
     t.add_argument("--in-place", action="store_true", help="allow -o to name the input (replace it)")
     t.set_defaults(run=cmd_translate)
 
-    tp = sub.add_parser("toolpath", help="simulate a program and export its toolpath")
-    tp.add_argument("input")
-    tp.add_argument("--dialect", required=True)
-    tp.add_argument("--machine")
-    tp.add_argument("--lib", action="append", default=[], metavar="DIR",
-                   help="folder searched for subprograms (repeatable; after the set-up's <Library>)")
-    tp.add_argument("--format", choices=("jsonl", "svg", "png"), default="jsonl")
-    tp.add_argument("-o", "--output")
+    tp = command("toolpath", "simulate a program and export its toolpath",
+                 "Simulate a program and write its toolpath: JSON lines (end points in mm, arcs with centres, "
+                 "spindle, coolant, tool, dwell and stop events, each with its source line) or a backplot.")
+    tp.add_argument("input", metavar="IN", help=f"the program to simulate ({STDIO})")
+    tp.add_argument("--dialect", required=True, metavar="DIALECT", help="dialect of IN")
+    tp.add_argument("--machine", metavar="M.xml", help=MACHINE)
+    tp.add_argument("--lib", action="append", default=[], metavar="DIR", help=LIB)
+    tp.add_argument("--format", choices=("jsonl", "svg", "png"), default="jsonl",
+                    help="jsonl (default), svg or png (png needs -o)")
+    tp.add_argument("-o", "--output", metavar="OUT", help=OUTPUT)
     tp.set_defaults(run=cmd_toolpath)
 
-    v = sub.add_parser("verify", help="compare the toolpaths of a program and its translation")
-    v.add_argument("input")
-    v.add_argument("output")
-    v.add_argument("--from", dest="source", required=True)
-    v.add_argument("--to", dest="target", required=True)
-    v.add_argument("--machine")
-    v.add_argument("--lib", action="append", default=[], metavar="DIR",
-                   help="folder searched for subprograms (repeatable; after the set-up's <Library>)")
-    v.add_argument("--target-machine", help="set-up of the target machine (default: --machine)")
-    v.add_argument("--tolerance", type=_tolerance, default=0.001, help="mm (default 0.001)")
+    v = command("verify", "compare the toolpaths of a program and its translation",
+                "Simulate a program and its translation and report the largest deviation between their "
+                "toolpaths and where it happens. Exit 1 above the tolerance or when the moves differ.")
+    v.add_argument("input", metavar="IN", help=f"the source program ({STDIO}, for one of IN and OUT)")
+    v.add_argument("output", metavar="OUT", help="its translation")
+    v.add_argument("--from", dest="source", required=True, metavar="DIALECT", help="dialect of IN")
+    v.add_argument("--to", dest="target", required=True, metavar="DIALECT", help="dialect of OUT")
+    v.add_argument("--machine", metavar="M.xml", help=MACHINE)
+    v.add_argument("--lib", action="append", default=[], metavar="DIR", help=LIB)
+    v.add_argument("--target-machine", metavar="TARGET.xml", help="set-up of the target machine (default: --machine)")
+    v.add_argument("--tolerance", type=_tolerance, default=0.001, metavar="MM",
+                   help="largest deviation accepted, in mm (default 0.001)")
     v.set_defaults(run=cmd_verify)
 
-    i = sub.add_parser("ir", help="print a program's IR as XML")
-    i.add_argument("input")
-    i.add_argument("--dialect", required=True)
-    i.add_argument("--machine")
-    i.add_argument("-o", "--output")
+    i = command("ir", "print a program's IR as XML",
+                "Read a program and write its dialect-neutral IR as XML (one element per block).")
+    i.add_argument("input", metavar="IN", help=f"the program to read ({STDIO})")
+    i.add_argument("--dialect", required=True, metavar="DIALECT", help="dialect of IN")
+    i.add_argument("--machine", metavar="M.xml", help=MACHINE)
+    i.add_argument("-o", "--output", metavar="OUT", help=OUTPUT)
     i.set_defaults(run=cmd_ir)
 
-    d = sub.add_parser("dialects", help="list installed dialects and their capabilities")
-    d.add_argument("--json", action="store_true")
+    d = command("dialects", "list installed dialects and their capabilities",
+                "List the installed dialects: what each reads and writes and its capability table.")
+    d.add_argument("--json", action="store_true", help="print the table as JSON")
     d.set_defaults(run=cmd_dialects)
 
-    c = sub.add_parser("config", help="check or dump a machine set-up")
-    c.add_argument("action", choices=("check", "dump"))
-    c.add_argument("file")
+    c = command("config", "check or dump a machine set-up",
+                "Check a machine set-up (every error with its line; templates rendered with sample values) "
+                "or write it back in canonical form.")
+    c.add_argument("action", choices=("check", "dump"), help="check: validate; dump: write the canonical form")
+    c.add_argument("file", help="the set-up XML (M.xml)")
     c.set_defaults(run=cmd_config)
     return p
 
@@ -165,11 +223,49 @@ def _setup(path: str | None, lib: Sequence[str] = ()) -> MachineSetup:
     return setup
 
 
-def _open_program(path: str) -> TextIO:
+STDIN_NAME = "<stdin>"
+"""How messages name standard input."""
+
+
+@contextlib.contextmanager
+def _open_program(path: str) -> Iterator[TextIO]:
+    """The program ``path`` names, or standard input for ``-`` (read as files are, and left open)."""
+    if path == "-":
+        stdin = io.TextIOWrapper(sys.stdin.buffer, **ENCODING)  # type: ignore[arg-type]
+        try:
+            yield stdin
+        finally:
+            stdin.detach()
+        return
     try:
-        return open(path, "r", buffering=BUFFER, **ENCODING)  # type: ignore[call-overload,no-any-return]
+        src = open(path, "r", buffering=BUFFER, **ENCODING)  # type: ignore[call-overload]
     except OSError as exc:
         raise UsageError(f"cannot read {path}: {exc.strerror}") from None
+    with src:
+        yield src
+
+
+def _name(path: str) -> str:
+    return STDIN_NAME if path == "-" else path
+
+
+def _output(path: str | None) -> str | None:
+    """``-o -`` is standard output, as no ``-o``."""
+    return None if path == "-" else path
+
+
+def _input_path(path: str) -> str | None:
+    """The input, for the check that ``-o`` does not overwrite it (standard input cannot be)."""
+    return None if path == "-" else path
+
+
+def _watched(path: str, src: TextIO) -> tuple[Iterable[str], Diagnostics]:
+    """The input's lines, with a progress bar where one is shown (``postproc.progress``), and the
+    diagnostics whose warnings print above the bar."""
+    progress = progress_for(path)
+    if progress is None:
+        return src, Diagnostics()
+    return progress.lines(src), Diagnostics(warn_stream=AboveProgress(progress, sys.stderr))  # type: ignore[arg-type]
 
 
 def cmd_translate(args: argparse.Namespace) -> int:
@@ -185,9 +281,11 @@ def cmd_translate(args: argparse.Namespace) -> int:
         except ValueError:
             raise UsageError(f"--renumber takes START[,STEP], got {args.renumber!r}") from None
     with _open_program(args.input) as src:
-        write_output(args.output, lambda out: translate(
-            src, out, file=args.input, source=args.source, target=args.target, setup=setup,
-            on_unsupported=args.on_unsupported), input_path=args.input, in_place=args.in_place)
+        lines, diagnostics = _watched(args.input, src)
+        write_output(_output(args.output), lambda out: translate(
+            lines, out, file=_name(args.input), source=args.source, target=args.target, setup=setup,
+            on_unsupported=args.on_unsupported, diagnostics=diagnostics),
+            input_path=_input_path(args.input), in_place=args.in_place)
     return 0
 
 
@@ -197,19 +295,26 @@ def cmd_toolpath(args: argparse.Namespace) -> int:
     binary = args.format == "png"
     if binary and not args.output:
         raise UsageError("--format png needs -o OUT")
+    if binary and args.output == "-":
+        raise UsageError("--format png needs -o OUT, a file")
     with _open_program(args.input) as src:
-        write_output(args.output, lambda out: export_toolpath(
-            src, out, file=args.input, dialect=args.dialect, setup=setup, fmt=args.format), binary=binary,
-            input_path=args.input)
+        lines, diagnostics = _watched(args.input, src)
+        write_output(_output(args.output), lambda out: export_toolpath(
+            lines, out, file=_name(args.input), dialect=args.dialect, setup=setup, fmt=args.format,
+            diagnostics=diagnostics), binary=binary, input_path=_input_path(args.input))
     return 0
 
 
 def cmd_verify(args: argparse.Namespace) -> int:
-    from .verify import verify_files
+    from .verify import verify_lines
     setup = _setup(args.machine, args.lib)
     target_setup = _setup(args.target_machine, args.lib) if args.target_machine else setup
-    report = verify_files(args.input, args.output, source=args.source, target=args.target,
-                          setup=setup, target_setup=target_setup, tolerance=args.tolerance)
+    if args.input == "-" and args.output == "-":
+        raise UsageError("verify reads at most one of IN and OUT from standard input")
+    with _open_program(args.input) as a, _open_program(args.output) as b:
+        report = verify_lines(a, b, file_in=_name(args.input), file_out=_name(args.output), source=args.source,
+                              target=args.target, setup=setup, target_setup=target_setup,
+                              tolerance=args.tolerance)
     print(report.summary())
     return 0 if report.ok else 1
 
@@ -223,11 +328,11 @@ def cmd_ir(args: argparse.Namespace) -> int:
 
     def write(out: TextIO) -> None:
         with _open_program(args.input) as src:
-            _, blocks = read_blocks(src, args.input, dialect, setup, diagnostics)
-            dump_program(blocks, out, dialect=dialect.NAME, file=args.input)  # type: ignore[arg-type]
+            _, blocks = read_blocks(src, _name(args.input), dialect, setup, diagnostics)
+            dump_program(blocks, out, dialect=dialect.NAME, file=_name(args.input))  # type: ignore[arg-type]
         diagnostics.check()
 
-    write_output(args.output, write, binary=True, input_path=args.input)
+    write_output(_output(args.output), write, binary=True, input_path=_input_path(args.input))
     return 0
 
 

@@ -7,6 +7,7 @@ Columns are computed only when a diagnostic is raised (see ``Location``), never 
 from __future__ import annotations
 
 import enum
+import re
 import sys
 from dataclasses import dataclass
 from typing import TextIO
@@ -31,10 +32,13 @@ class PostprocError(Exception):
 
     severity = "error"
 
-    def __init__(self, message: str, location: Location | None = None) -> None:
+    def __init__(self, message: str, location: Location | None = None, *, needs: str = "") -> None:
         super().__init__(message)
         self.message = message
         self.location = location
+        self.needs = needs
+        """The address whose missing value this error is about (``F`` for a feed move with no feed rate):
+        after a refused line that programmed it, the error is that line's consequence (``Diagnostics``)."""
 
     def located(self, location: Location) -> "PostprocError":
         """Attach a location if the error has none yet (errors raised deep inside know no file)."""
@@ -82,9 +86,11 @@ class ErrorLevel(enum.Enum):
 class ErrorList(PostprocError):
     """Several collected errors, raised together."""
 
-    def __init__(self, errors: list[PostprocError]) -> None:
+    def __init__(self, errors: list[PostprocError], notes: list[str] | None = None) -> None:
         super().__init__(f"{len(errors)} error(s)")
         self.errors = errors
+        self.notes = notes or []
+        """What the list leaves out (the cap cut it, consequences of refused lines), for the user."""
 
     def __str__(self) -> str:
         return "\n".join(str(e) for e in self.errors)
@@ -110,18 +116,31 @@ class Diagnostics:
         self.errors: list[PostprocError] = []
         self.warnings: list[PostprocError] = []
         self._warn_stream = warn_stream
+        self.refused_words: dict[str, int] = {}
+        """Address -> the first refused line that programmed it (its value never took effect)."""
+        self.consequences: dict[str, int] = {}
+        """Address -> how many errors about its missing value were left out (consequences of a refused line)."""
 
-    def error(self, err: PostprocError) -> None:
+    def error(self, err: PostprocError, text: str | None = None) -> None:
+        """Report an error; ``text``: the refused line, whose words then never took effect (an error
+        that ``needs`` one of them later is its consequence and is left out, counted)."""
         if self.level is ErrorLevel.IMMEDIATE:
             raise err
         if self.level is ErrorLevel.IGNORE:
             return
+        if err.needs and err.needs in self.refused_words:
+            self.consequences[err.needs] = self.consequences.get(err.needs, 0) + 1
+            return
+        if text is not None and err.location is not None:
+            for letter in addresses(text):
+                self.refused_words.setdefault(letter, err.location.line)
         if self.level is ErrorLevel.WARN:
             self.warn(err.message, err.location)
             return
         self.errors.append(err)
         if len(self.errors) >= self.max_errors:
-            raise ErrorList(self.errors)
+            raise ErrorList(self.errors, [f"stopped at {self.max_errors} errors: the rest of the program "
+                                          "was not checked"] + self._consequence_note())
 
     def warn(self, message: str, location: Location | None = None) -> None:
         w = Warning_(message, location)
@@ -132,4 +151,17 @@ class Diagnostics:
     def check(self) -> None:
         """Raise the collected errors, if any."""
         if self.errors:
-            raise ErrorList(self.errors)
+            raise ErrorList(self.errors, self._consequence_note())
+
+    def _consequence_note(self) -> list[str]:
+        return [f"{count} more error(s) left out: they follow from the refused line {self.refused_words[letter]}, "
+                f"whose {letter} never took effect" for letter, count in sorted(self.consequences.items())]
+
+
+_ADDRESS = re.compile(r"([A-Za-z])\s*[-+.\d#\[]")
+_COMMENT = re.compile(r"\([^)]*\)?|;.*")
+
+
+def addresses(text: str) -> set[str]:
+    """The upper-case addresses of the words on a line (comments left out)."""
+    return {m.group(1).upper() for m in _ADDRESS.finditer(_COMMENT.sub(" ", text))}

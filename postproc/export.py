@@ -6,7 +6,7 @@ import json
 import math
 from typing import Any, Iterable, TextIO
 
-from .errors import Location, ProgramError, UsageError
+from .errors import Diagnostics, Location, ProgramError, UsageError
 from .setup import MachineSetup
 from .dialect import Dialect
 from .backplot import Backplot
@@ -14,10 +14,11 @@ from .toolpath import Event, start_position, toolpath_events
 
 
 def export_toolpath(lines: Iterable[str], out: Any, *, file: str, dialect: str | type[Dialect],
-                    setup: MachineSetup | None = None, fmt: str = "jsonl") -> None:
+                    setup: MachineSetup | None = None, fmt: str = "jsonl",
+                    diagnostics: Diagnostics | None = None) -> None:
     """Write a program's toolpath to ``out``: JSON lines or SVG (text streams), PNG (a binary stream)."""
     setup = setup or MachineSetup()
-    events = toolpath_events(lines, file=file, dialect=dialect, setup=setup)
+    events = toolpath_events(lines, file=file, dialect=dialect, setup=setup, diagnostics=diagnostics)
     if fmt == "jsonl":
         write_jsonl(events, out, file)
     elif fmt in ("svg", "png"):

@@ -110,7 +110,7 @@ def _fused(blocks: Iterable[Block], builds: tuple[Callable[[Block, Context], Non
                 second(block, ctx)
                 third(block, ctx)
             except PostprocError as err:
-                report(err.located(locate(file, block)))
+                report(err.located(locate(file, block)), block.text)
             yield block
         return
     for block in blocks:
@@ -118,7 +118,7 @@ def _fused(blocks: Iterable[Block], builds: tuple[Callable[[Block, Context], Non
             for build in builds:
                 build(block, ctx)
         except PostprocError as err:
-            report(err.located(locate(file, block)))
+            report(err.located(locate(file, block)), block.text)
         yield block
 
 

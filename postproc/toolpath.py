@@ -252,7 +252,7 @@ class Simulator:
             self.line_move("rapid", ref, line, emit)
             return
         if self.feed is None and needs_feed(m):
-            raise ProgramError(NO_FEED, self._at(block))
+            raise ProgramError(NO_FEED, self._at(block), needs="F")
         machine = "MachineCoordinates" in block.sections
         target = self.target(block, m.axes, absolute or machine)
         if mode == "rapid":
@@ -338,7 +338,7 @@ class Simulator:
 
     def _feed_into(self, ev: Event) -> None:
         if self.feed is None:
-            raise ProgramError(NO_FEED, self._at())
+            raise ProgramError(NO_FEED, self._at(), needs="F")
         ev["f"] = num(self.feed)
         if self.header_mode is None:
             self.header_mode = self.modal.feed_mode

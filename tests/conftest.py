@@ -17,7 +17,10 @@ if os.environ.get("CI"):
     # Local runs keep exploring new examples.
     settings.load_profile("ci")
 
-from postproc.cli import main
+from tests.support import output_rules
+
+output_rules.install()  # before postproc.cli binds postproc.api.translate: see output_rules
+from postproc.cli import main  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -53,3 +56,17 @@ def cli(capsysbinary: pytest.CaptureFixture[bytes]) -> Callable[..., CliResult]:
 def root() -> Path:
     """The repository root (examples/, tests/golden/)."""
     return ROOT
+
+
+@pytest.fixture(autouse=True)
+def _outputs_valid_on_their_controllers() -> object:
+    """Fail a test whose grbl or LinuxCNC translations their controller would refuse (``output_rules``)."""
+    output_rules.take_violations()
+    yield
+    found = output_rules.take_violations()
+    assert not found, "\n\n".join(found)
+
+
+def pytest_terminal_summary(terminalreporter: pytest.TerminalReporter) -> None:
+    counts = ", ".join(f"{n} {target}" for target, n in output_rules.checked.items())
+    terminalreporter.write_line(f"outputs checked against their controller's rules: {counts}")

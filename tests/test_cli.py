@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import argparse
+import io
 import os
 import subprocess
 import sys
@@ -10,6 +12,7 @@ from pathlib import Path
 import pytest
 
 import postproc.cli
+import postproc.progress
 
 ROOT = Path(__file__).resolve().parents[1]
 PROGRAM = ROOT / "examples/fanuc/o1003_pocket_and_edge.nc"
@@ -162,3 +165,157 @@ def test_a_closed_stdout_is_not_an_error(tmp_path, command):
     proc.stdout.close()
     _, err = proc.communicate(timeout=120)
     assert (proc.returncode, err) == (0, b"")
+
+
+# -- issue 12, item 7: standard streams, help, the console script, the progress bar ------------------
+
+def _run_input(data: bytes, *args: object, stderr: object = subprocess.PIPE) -> subprocess.CompletedProcess[bytes]:
+    env = {k: v for k, v in os.environ.items() if k != "POSTPROC_DEBUG"}
+    return subprocess.run([sys.executable, "-m", "postproc", *map(str, args)], input=data, stdout=subprocess.PIPE,
+                          stderr=stderr, env=env, cwd=ROOT, timeout=120)  # type: ignore[call-overload,no-any-return]
+
+
+def test_dash_reads_standard_input_and_writes_standard_output_byte_for_byte():
+    data = PROGRAM.read_bytes()
+    done = _run_input(data, "translate", "-", "--from", "fanuc", "--to", "fanuc", "-o", "-")
+    assert (done.returncode, done.stdout, done.stderr) == (0, data, b"")
+
+
+def test_errors_in_standard_input_are_located_in_stdin():
+    done = _run_input(b"G21\nG01 X1. Y1.\n", "translate", "-", "--from", "fanuc", "--to", "grbl")
+    assert done.returncode == 1 and done.stdout == b""
+    assert done.stderr.decode() == "<stdin>:2:1: error: a feed move with no feed rate (program F first)\n"
+
+
+def test_toolpath_and_verify_read_standard_input(tmp_path):
+    grbl = tmp_path / "o.gcode"
+    assert _run("translate", PROGRAM, "--from", "fanuc", "--to", "grbl", "--on-unsupported", "warn",
+                "-o", grbl).returncode == 0
+    done = _run_input(PROGRAM.read_bytes(), "verify", "-", grbl, "--from", "fanuc", "--to", "grbl")
+    assert done.returncode == 0 and done.stdout.decode().startswith("max deviation 0.0000 mm")
+    path = _run_input(grbl.read_bytes(), "toolpath", "-", "--dialect", "grbl")
+    assert path.returncode == 0 and path.stdout.startswith(b'{"toolpath": 1, "units": "mm", "dialect": "grbl"}\n')
+    both = _run_input(b"", "verify", "-", "-", "--from", "fanuc", "--to", "grbl")
+    assert both.returncode == 2 and b"at most one of IN and OUT" in both.stderr
+
+
+def test_output_from_standard_input_is_written_with_the_umask(tmp_path):
+    out = tmp_path / "o.nc"
+    env = {k: v for k, v in os.environ.items() if k != "POSTPROC_DEBUG"}
+    done = subprocess.run(["sh", "-c", f'umask 027 && exec "$0" -m postproc translate - --from fanuc --to fanuc -o "$1"',
+                           sys.executable, str(out)], input=b"G00 X1.\n", env=env, cwd=ROOT, timeout=120)
+    assert done.returncode == 0 and oct(out.stat().st_mode & 0o777) == oct(0o640)
+
+
+@pytest.mark.parametrize("command", ["translate", "toolpath", "verify", "ir", "dialects", "config"])
+def test_help_describes_every_option_and_shows_an_example(cli, command):
+    parser = postproc.cli.build_parser()
+    sub = next(a for a in parser._actions if isinstance(a, argparse._SubParsersAction)).choices[command]
+    for action in sub._actions:
+        assert action.help, f"{command}: {action.dest} has no description"
+    result = cli(command, "--help")
+    text = result.out.decode()
+    assert result.status == 0 and "example" in text and f"postproc {command} " in text.split("example", 1)[1]
+    top = cli("--help").out.decode()
+    assert command in top
+
+
+def test_the_console_script_is_installed_beside_the_interpreter():
+    """``make install``/``make run`` put ``postproc`` in ``.venv/bin`` (README: ``. .venv/bin/activate``)."""
+    script = Path(sys.executable).parent / "postproc"
+    assert script.exists()
+    done = subprocess.run([str(script), "--help"], capture_output=True, timeout=120)
+    assert done.returncode == 0 and done.stdout.startswith(b"usage: postproc")
+
+
+def _long_program(path: Path, lines: int = 80_000) -> None:
+    path.write_text("G21 G90 G00 X0. Y0. Z5.\nG01 F500.\n" + "".join(f"X{i % 97}.125 Y{i % 89}.5\n" for i in range(lines)))
+
+
+def test_a_long_file_shows_a_progress_bar_on_a_terminal_and_erases_it(tmp_path):
+    import pty
+    big = tmp_path / "big.nc"
+    _long_program(big)
+    assert big.stat().st_size >= postproc.progress.MIN_BYTES
+    parent, child = pty.openpty()
+    try:
+        done = _run_input(b"", "translate", big, "--from", "fanuc", "--to", "grbl", "-o", tmp_path / "o.gcode",
+                          stderr=child)
+        os.close(child)
+        child = -1
+        shown = b""
+        while True:
+            try:
+                chunk = os.read(parent, 65536)
+            except OSError:
+                break
+            if not chunk:
+                break
+            shown += chunk
+    finally:
+        if child >= 0:
+            os.close(child)
+        os.close(parent)
+    assert done.returncode == 0
+    assert b"\rpostproc: big.nc [" in shown and b"lines" in shown
+    assert shown.endswith(b"\r\x1b[K")  # erased: nothing is left on the screen
+
+
+def test_no_progress_bar_when_standard_error_is_not_a_terminal(tmp_path):
+    big = tmp_path / "big.nc"
+    _long_program(big)
+    done = _run("translate", big, "--from", "fanuc", "--to", "grbl", "-o", tmp_path / "o.gcode")
+    assert (done.returncode, done.stderr) == (0, b"")
+
+
+def test_a_short_file_gets_no_bar_even_on_a_terminal(tmp_path):
+    class Tty(io.StringIO):
+        def isatty(self) -> bool:
+            return True
+
+    assert postproc.progress.progress_for(str(PROGRAM), Tty()) is None
+    big = tmp_path / "big.nc"
+    _long_program(big)
+    assert postproc.progress.progress_for(str(big), Tty()) is not None
+    assert postproc.progress.progress_for("-", Tty()) is None
+    assert postproc.progress.progress_for(str(big), io.StringIO()) is None
+
+
+# -- issue 12, item 6: error reports a person can act on ----------------------------------------------
+
+def test_errors_that_follow_from_a_refused_line_are_left_out_and_counted(cli, tmp_path):
+    prog = tmp_path / "p.nc"
+    prog.write_text("G21 G90 G0 X0 Y0 Z10.\nG1 X1. F1.2.3\nG1 X2.\nG1 X3.\nM30\n")
+    result = cli("translate", prog, "--from", "linuxcnc", "--to", "grbl")
+    assert result.status == 1
+    assert result.err_lines == [f"{prog}:2:12: error: number without an address at '.3'",
+                                "postproc: 2 more error(s) left out: they follow from the refused line 2, whose F "
+                                "never took effect"]
+
+
+def test_a_feed_error_after_a_refused_line_without_f_is_reported(cli, tmp_path):
+    prog = tmp_path / "p.nc"
+    prog.write_text("G21 G90 G0 X0 Y0 Z10.\nG0 X1..2\nG1 X2.\nM30\n")
+    result = cli("translate", prog, "--from", "linuxcnc", "--to", "grbl")
+    assert result.status == 1 and len(result.err_lines) == 2
+    assert result.err_lines[1] == f"{prog}:3:1: error: G1 with no feed rate in force (program F first)"
+
+
+def test_the_error_cap_says_that_it_cut_the_list(cli, tmp_path):
+    prog = tmp_path / "p.nc"
+    prog.write_text("G21\n" + "G999\n" * 60)
+    result = cli("translate", prog, "--from", "fanuc", "--to", "fanuc")
+    assert result.status == 1
+    assert len([line for line in result.err_lines if ": error: " in line]) == 50
+    assert result.err_lines[-1] == "postproc: stopped at 50 errors: the rest of the program was not checked"
+
+
+@pytest.mark.parametrize("text", ["", "%\n(ONLY A COMMENT)\n%\n", "\n\n"])
+def test_an_empty_program_gets_a_warning(cli, tmp_path, text):
+    prog = tmp_path / "p.nc"
+    prog.write_text(text)
+    for args in (["translate", prog, "--from", "fanuc", "--to", "grbl"], ["toolpath", prog, "--dialect", "fanuc"]):
+        result = cli(*args)
+        assert result.status == 0
+        assert result.err_lines == [f"{prog}:1:1: warning: the program is empty: no line in it programs anything"]
+    assert cli("translate", PROGRAM, "--from", "fanuc", "--to", "fanuc").err == ""

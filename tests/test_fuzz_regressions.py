@@ -15,7 +15,8 @@ HEAD = "G21 G90 G0 X0. Y0. Z10.\n"
 
 REFUSED = [
     ("fanuc", "linuxcnc", "F0.3 K2 G03\n", "t.nc:2:6: error: arc centre offset along Z is outside the XY plane"),
-    ("grbl", "linuxcnc", "G02 G54 R2.\n", "t.nc:2:9: error: a full circle cannot be programmed with R (use I/J/K)"),
+    ("grbl", "linuxcnc", "G02 G54 R2.\n", "t.nc:2:1: error: G2 with no feed rate in force (program F first)"),
+    ("grbl", "linuxcnc", "F10. G02 G54 R2.\n", "t.nc:2:14: error: a full circle cannot be programmed with R (use I/J/K)"),
     ("fanuc", "fanuc", "G53 R2. G03\n", "t.nc:2:5: error: a full circle cannot be programmed with R (use I/J/K)"),
     ("grbl", "fanuc", "X-5 F100. G53 G01\n", "t.nc:2:1: error: the fanuc dialect cannot express a linear move in "
                                             "machine coordinates (its machine-coordinate code moves only rapid)"),

@@ -69,9 +69,9 @@ def test_registered_through_its_entry_point_as_a_grbl_class_controller() -> None
     ("G04 P250\n", "G4 P0.25\n"),
     ("G02 X10. Y0. R5. F100.\n", "G2 X10. Y0. R5. F100.\n"),
     ("G91 G28 Z0.\n", "G91 G28 Z0.\n"),
-    ("G55 G17 G40 G80\n", "G17 G55 G40 G80\n"),
+    ("G55 G17 G40 G80\n", "G17 G55 G40\n"),  # grbl's G80 would leave no motion mode; no cycle to cancel
     ("S1200 M04\nM08\nM09 M05\n", "S1200 M4\nM8\nM5 M9\n"),
-    ("G98 G00 X5.\nG99\n", "G0 X5.\n\n"),
+    ("G98 G00 X5.\nG99\n", "G0 X5.\n(G99)\n"),
     ("G64 G01 X5. F100.\n", "G1 X5. F100.\n"),
     ("M01\nM30\n", "M1\nM30\n"),
     ("G49 G00 Z50.\n", "G49\nG0 Z50.\n"),
@@ -149,7 +149,8 @@ def test_drilling_cycles_are_expanded_to_plain_moves() -> None:
     text, _ = to_grbl("G99 G81 X5. Y5. Z-3. R2. F100.\nX10.\nG80\n")
     code = [line for line in text.splitlines() if line and not line.startswith("(")]
     assert code == ["F100.", "G0 X5. Y5. Z10.", "G0 X5. Y5. Z2.", "G1 X5. Y5. Z-3.", "G0 X5. Y5. Z2.",
-                    "G0 X10. Y5. Z2.", "G1 X10. Y5. Z-3.", "G0 X10. Y5. Z2.", "G80"]
+                    "G0 X10. Y5. Z2.", "G1 X10. Y5. Z-3.", "G0 X10. Y5. Z2."]
+    assert text.splitlines()[-1] == "(G80)"  # no cycle ran: nothing to cancel, the line kept as a comment
 
 
 def test_cycle_dwell_is_written_in_seconds() -> None:

@@ -222,7 +222,10 @@ def test_g80_leaves_no_motion_mode() -> None:
      "t.ngc:2:23: error: a canned cycle cannot repeat zero times (L must be 1 or more)"),
     ("G1 X1 L2 F100", "t.ngc:2:7: error: L (repeat count) outside a canned cycle"),
     ("G0 G81 X1 Y1 Z-1 R1 F100", "t.ngc:2:4: error: G codes G0 and G81 are both in one modal group"),
-    ("G80 G1 X1 F100", "t.ngc:2:5: error: G codes G80 and G1 are both in one modal group"),
+    ("M5 M19", "t.ngc:2:4: error: M codes M5 and M19 are both in one modal group (LinuxCNC runs one of each "
+               "group per block)"),
+    ("G0 N10 X1", "t.ngc:2:4: error: a block number stands first in its block (LinuxCNC refuses N elsewhere)"),
+    ("G1", "t.ngc:2:1: error: G1 with no feed rate in force (program F first)"),
     ("M98 L2", "t.ngc:2:1: error: M98 needs a program number P (rs274: Found 'm98' code with no P-word)"),
     ("G90.1", "t.ngc:2:1: error: absolute arc centres (G90.1) are not supported by the linuxcnc reader yet"),
     ("G44 H1", "t.ngc:2:1: error: unknown G code G44"),

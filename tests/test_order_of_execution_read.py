@@ -50,7 +50,7 @@ def test_a_moving_blocks_stops_are_flagged(dialect: str) -> None:
     assert sections["Coolant"].before_motion is True
 
 
-@pytest.mark.parametrize("line", ["M5 M9", "G1 M5 M9"])
+@pytest.mark.parametrize("line", ["M5 M9", "G1 F100 M5 M9"])  # a bare G1 needs a feed rate (rs274, grbl)
 def test_a_block_without_motion_leaves_them_unflagged(line: str) -> None:
     sections = _sections(f"{HEAD}{line}\n{TAIL}", "linuxcnc", 3)
     assert sections["SpindleControl"].before_motion is False

@@ -52,7 +52,7 @@ class FanucReader(Reader):
                             try:
                                 read_call(block, self.ctx)
                             except PostprocError as err:
-                                report(err)
+                                report(err, text)
                                 block = Block(number, text, eol)
                         yield block
                         continue
@@ -62,5 +62,5 @@ class FanucReader(Reader):
                     read_call(block, self.ctx)
                 yield block
             except PostprocError as err:
-                report(err)
+                report(err, text)
                 yield Block(number, text, eol)

@@ -26,7 +26,7 @@ from __future__ import annotations
 
 from typing import Any, ClassVar
 
-from postproc.context import Context
+from postproc.context import Context, word_columns
 from postproc.errors import ParseError, ProgramError
 from postproc.event_order import moves
 from postproc.expr import Binary, Expr, Num
@@ -55,6 +55,18 @@ class NgcWordBlockSyntax(WordBlockSyntax):
     INTEGER_LETTERS: ClassVar[frozenset[str]] = INTEGER_LETTERS
     FEED_BEFORE_UNITS: ClassVar[bool] = True
     """F in a block that changes units is in the old units (LinuxCNC's order of execution)."""
+    N_FIRST: ClassVar[bool] = False
+    """A block number stands first in its block (after a block delete ``/``) or not at all (rs274: "Bad
+    character 'n' used"); grbl reads N anywhere."""
+    CYCLE_CANCEL_WITH_MOTION: ClassVar[bool] = False
+    """The cycle cancel may share a block with a motion or cycle code, which wins (rs274 runs ``G80 G0
+    Z1.`` as ``G0 Z1.``); grbl refuses it (error 21, one command per modal group)."""
+    FEED_MODE_RESETS_FEED: ClassVar[bool] = False
+    """A feed mode code (G93/G94/G95) sets the feed rate to zero, even one that selects the mode in force
+    (LinuxCNC; checked with rs274); grbl keeps it unless it leaves inverse time."""
+    M_GROUPS: ClassVar[dict[int, str]] = {}
+    """M number -> the controller's modal group: two M codes of one group in a block are an error (rs274
+    "Two m codes used from same modal group", grbl error 21). M codes not listed conflict by meaning."""
 
     def build(self, block: Block, ctx: Context) -> None:
         words = block.words
@@ -69,6 +81,8 @@ class NgcWordBlockSyntax(WordBlockSyntax):
         natives: list[str] = []
         raw: dict[str, str] = {}
         mcodes: list[tuple[int, str]] = []
+        if self.N_FIRST:
+            self._check_n_first(block, ctx)
         for letter, num in words:
             up = letter.upper()
             if up == "G":
@@ -86,6 +100,7 @@ class NgcWordBlockSyntax(WordBlockSyntax):
                 raise ParseError(f"address {up} appears twice in one block", ctx.at(block, second_col(block, up)))
             else:
                 raw[up] = num
+        self._check_m_groups(block, ctx, mcodes)
         self._path_tolerance(codes, natives, raw)
         if natives:
             self._native(block, ctx, natives, raw)
@@ -117,6 +132,7 @@ class NgcWordBlockSyntax(WordBlockSyntax):
                 raise ProgramError(f"axis words with no motion mode in force ({self.spell('cycle_cancel')} cancels it: "
                                    f"program {self.spell('motion', 'rapid')} or {self.spell('motion', 'linear')})",
                                    ctx.at(block, ctx.column_of(block, axis)))
+        self._check_feed_mode_code(block, ctx, codes, values)
         used = {"N"}
         if cycle_block:
             used.add("L")
@@ -130,6 +146,49 @@ class NgcWordBlockSyntax(WordBlockSyntax):
         if self.FEED_BEFORE_UNITS and "Units" in block.sections and "Feed" in block.sections:
             _feed_in_old_units(block, ctx)
         _stops_before_motion(block)
+        if self.FEED_MODE_RESETS_FEED and "FeedMode" in block.sections and "Feed" not in block.sections:
+            ctx.state.feed = None  # the modal step applies the mode and leaves the feed rate unset
+
+    def _check_n_first(self, block: Block, ctx: Context) -> None:
+        text = block.text or ""
+        first = len(text) - len(text.lstrip(" \t"))
+        if text[first:first + 1] == "/":
+            first += 1
+            first += len(text[first:]) - len(text[first:].lstrip(" \t"))
+        for col, letter, _ in word_columns(text):
+            if letter in "Nn" and col != first + 1:
+                raise ParseError(f"a block number stands first in its block ({self.CONTROL} refuses N elsewhere)",
+                                 ctx.at(block, col))
+
+    def _check_m_groups(self, block: Block, ctx: Context, mcodes: list[tuple[int, str]]) -> None:
+        groups = self.M_GROUPS
+        if len(mcodes) < 2 or not groups:
+            return
+        seen: dict[str, str] = {}
+        for number, num in mcodes:
+            group = groups.get(number)
+            if group is None:
+                continue
+            if group in seen:
+                raise ParseError(f"M codes M{seen[group]} and M{num} are both in one modal group "
+                                 f"({self.CONTROL} runs one of each group per block)",
+                                 ctx.at(block, col_of_word(block, "M", num)))
+            seen[group] = num
+
+    def _check_feed_mode_code(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any]) -> None:
+        """A feed motion code needs a feed rate in force even with no axis words: rs274 refuses a bare
+        ``G1`` ("Cannot do g1 with zero feed rate"), grbl too (error 22). A program that computes is
+        left to the run, where the order of execution is known."""
+        motion = codes.get("01")
+        if motion is None or motion[2] not in ("linear", "cw", "ccw") or ctx.state.symbolic:
+            return
+        resets = "05" in codes and self.FEED_MODE_RESETS_FEED
+        feed = values.get("F", None if resets else ctx.state.feed)
+        if isinstance(feed, Expr) or ctx.state.feed_mode == "inverse_time" or ("05" in codes and not resets):
+            return
+        if not feed:
+            raise ProgramError(f"{self.spell('motion', motion[2])} with no feed rate in force (program F first)",
+                               ctx.at(block, col_of_word(block, "G", motion[3])), needs="F")
 
     def _computed_code(self, block: Block, ctx: Context, exprs: dict[str, Any]) -> bool:
         """A G or M code given by an expression: its meaning is known only when the program runs, so
@@ -169,6 +228,11 @@ class NgcWordBlockSyntax(WordBlockSyntax):
         other = codes.get(group)
         if other is None and group in _MOTION_GROUP:
             other = codes.get(_MOTION_GROUP[group == "01"])
+        if other is not None and self.CYCLE_CANCEL_WITH_MOTION and "cycle_cancel" in (entry[1], other[1]):
+            if entry[1] == "cycle_cancel":
+                return  # the motion or cycle code already read wins
+            del codes[other[0]]  # the cancel read before this code gives way to it
+            other = codes.get(group)
         if other is not None:
             raise ParseError(f"G codes G{other[3]} and G{num} are both in one modal group",
                              ctx.at(block, col_of_word(block, "G", num)))

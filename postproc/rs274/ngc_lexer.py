@@ -268,7 +268,7 @@ class NgcReader(Reader):
             try:
                 yield lex_block(file, number, text, eol, dialect, oword, calls, ignore_slash)
             except PostprocError as err:
-                report(err)
+                report(err, text)
                 yield Block(number, text, eol)
 
     def _ignored_slash(self, where: Location) -> None:

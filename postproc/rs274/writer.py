@@ -51,6 +51,11 @@ class WordWriter(Writer):
     """True where the cycle cancel is one of the motion codes (RS274/NGC: G80 and G0 in one block are a
     modal-group error): a block that writes a motion code leaves the cancel out, the motion code ends
     the cycle by itself."""
+    BARE_FEED_MOTION_NEEDS_FEED: ClassVar[bool] = False
+    """True where a feed motion code with no axis words is refused while no feed rate is in force
+    (RS274/NGC: rs274 "Cannot do g1 with zero feed rate", grbl error 22): such a code only sets the mode,
+    and every later move writes its own motion code, so it is left out (a block left with nothing to
+    say keeps its source line as a comment)."""
     SPELLING: ClassVar[ExprSpelling | None] = None
     """How the dialect writes an expression in a word (``X[#1*2.]``); None: it has no expressions, and a
     computed word is an ``UnsupportedError`` naming it."""
@@ -214,7 +219,10 @@ class WordWriter(Writer):
         if start is not None:
             words.insert(0, self.program_start(start, block))
         self._track(sections)
-        return " ".join(w for w in words if w) + (block.eol or "\n")
+        text = " ".join(w for w in words if w)
+        if not text and sections and self.BARE_FEED_MOTION_NEEDS_FEED and block.text is not None:
+            text = self.comment(block.text.strip())  # every word left out: the source line as a trace
+        return text + (block.eol or "\n")
 
     def section_words(self, key: str, section: Section, block: Block) -> list[str]:
         if key == ASSIGN or key == CONTROL:
@@ -417,6 +425,9 @@ class WordWriter(Writer):
     def motion_words(self, s: Motion, block: Block) -> list[str]:
         if s.mode is None:
             self.unsupported("a canned-cycle repetition without its cycle", block)
+        if (self.BARE_FEED_MOTION_NEEDS_FEED and not s.axes and s.mode in ("linear", "cw", "ccw")
+                and "Feed" not in block.sections and not self.modal.feed):
+            return []
         words = self._code(_MOTION_KIND.get(s.mode, "motion"), s.mode, f"{s.mode} motion", block)
         length = self.length
         start = dict(self.carry) if s.center is not None else None

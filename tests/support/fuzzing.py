@@ -20,6 +20,8 @@ from postproc.setup import InputSettings, MachineSetup, OutputSettings
 from postproc.toolpath import toolpath_events
 from postproc.verify import verify_lines
 
+from .output_rules import problems
+
 REGISTRY = default_registry()
 READERS = sorted(n for n, c in REGISTRY.dialects.items() if c.READER is not None)
 WRITERS = sorted(n for n, c in REGISTRY.dialects.items() if c.WRITER is not None)
@@ -95,6 +97,8 @@ def check_translation(source: str, target: str, program: str, setup: MachineSetu
 
 
 def _check_output(source: str, target: str, program: str, text: str, setup: MachineSetup, warned: bool) -> str:
+    refused = problems(target, text, setup) if source != target else []
+    assert not refused, f"the {target} controller refuses the {target} output: {'; '.join(refused)}\n{text}"
     try:
         read_program(io.StringIO(text), file="out.nc", dialect=target, setup=setup)
     except ErrorList as errs:

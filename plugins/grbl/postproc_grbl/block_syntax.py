@@ -17,7 +17,7 @@ from postproc.rs274.block_syntax import col_of_word
 from postproc.rs274.codes import CodeTable
 from postproc.rs274.ngc_block_syntax import NgcWordBlockSyntax
 
-from .codes import CODES, NO_M19
+from .codes import CODES, M_GROUPS, NO_M19
 
 
 class GrblBlockSyntax(NgcWordBlockSyntax):
@@ -30,6 +30,7 @@ class GrblBlockSyntax(NgcWordBlockSyntax):
     CODES: ClassVar[CodeTable] = CODES
     REAL_LETTERS = frozenset("XYZIJKRPF")
     INTEGER_LETTERS = frozenset("NTL")
+    M_GROUPS = M_GROUPS
     FEED_BEFORE_UNITS = False
     """grbl reads F in the block's new units (gcode.c converts F by the block's G20/G21)."""
 

@@ -86,6 +86,9 @@ USER_M = range(0)
 
 NO_M19 = "grbl has no oriented spindle stop (M19); a set-up with <Cycles orientation=\"m19\"/> accepts it"
 """Why the reader refuses M19 unless the set-up says the machine has it."""
+M_GROUPS: dict[int, str] = {**dict.fromkeys((0, 1, 2, 30), "4"), **dict.fromkeys((3, 4, 5, 19), "7"),
+                            **dict.fromkeys((7, 8, 9), "8"), 56: "9"}
+"""grbl's M-code modal groups (``gcode.c``: MODAL_GROUP_M4, M7, M8, M9; M19 where a build has it)."""
 
 CODES = CodeTable(ROWS, native_g=NATIVE_G, native_m=NATIVE_M, refused_g=REFUSED_G, refused_m=REFUSED_M,
                   user_m=USER_M)

@@ -9,8 +9,14 @@ pause, G49 before motion, full circles) are grbl's lowering steps (``lowering.py
   grbl's M0 leaves the spindle turning, so a pause for the operator (also inside a cycle's
   expansion) stops a running spindle first with M5;
 * G64 (continuous path) writes nothing: grbl always blends; G98/G99 write nothing: grbl runs no cycles
-  (they arrive expanded), so the retract level has no meaning left;
-* ``%`` and an O-number, which grbl's parser rejects, are written as comments.
+  (they arrive expanded), so the retract level has no meaning left; G80 writes nothing either: there is
+  no cycle to cancel, and grbl's G80 leaves no motion mode in force, so it would refuse the axis words of
+  a following ``G28 Z0.`` (error 31, "axis words exist", even for non-modal commands);
+* ``%`` and an O-number, which grbl's parser rejects, are written as comments;
+* grbl's serial layer acts on ``?`` (status), ``!`` (feed hold), ``~`` (cycle start) and Ctrl-X wherever
+  they stand, comments included, and bytes above 0x7F are real-time commands (``serial.c``): in a
+  translation, comments are written in ASCII without them (``Ø`` as ``DIA``, ``°`` as ``DEG``, accents
+  dropped, anything else ``_``), with one warning.
 
 With ``--on-unsupported warn``, a block whose only problem is a droppable modal word (a tool length
 offset, cutter compensation, block delete, ...) is written without that word after a comment of the
@@ -19,6 +25,8 @@ original block, so its motion is kept; anything else falls back to the whole blo
 
 from __future__ import annotations
 
+import re
+import unicodedata
 from typing import Any, ClassVar
 
 from postproc.errors import UnsupportedError
@@ -38,21 +46,54 @@ GRBL_AXES = frozenset("XYZ")
 """Axes of a stock grbl 1.1 build."""
 
 
+_REALTIME = re.compile(r"[?!~\x00-\x08\x0b\x0c\x0e-\x1f\x7f]")
+"""Characters grbl acts on (or that have no place in a line): replaced in what is written."""
+_SYMBOLS = {"\u00d8": "DIA", "\u00f8": "DIA", "\u2300": "DIA", "\u00b0": "DEG", "\u00b1": "+/-", "\u00b5": "U",
+            "\u2013": "-", "\u2014": "-", "\u2018": "'", "\u2019": "'", "\u201c": '"', "\u201d": '"'}
+
+
+def grbl_safe(text: str) -> str:
+    """``text`` in ASCII without grbl's real-time characters (see the module docstring)."""
+    out: list[str] = []
+    for ch in text:
+        if ch.isascii():
+            out.append("_" if _REALTIME.match(ch) else ch)
+        elif ch in _SYMBOLS:
+            out.append(_SYMBOLS[ch])
+        else:
+            plain = unicodedata.normalize("NFKD", ch).encode("ascii", "ignore").decode()
+            out.append("_" if not plain or _REALTIME.search(plain) else plain)
+    return "".join(out)
+
+
 class GrblWriter(WordWriter):
     DIALECT: ClassVar[str] = "grbl"
     CODES: ClassVar[CodeTable] = CODES
     DWELL_WORD: ClassVar[str] = "P"
     CYCLE_CANCEL_IS_MOTION: ClassVar[bool] = True
     """G80 is a motion code here: ``G80 G0`` is refused, a block's G0-G3 ends the cycle by itself."""
+    BARE_FEED_MOTION_NEEDS_FEED: ClassVar[bool] = True
 
     def __init__(self, ctx: Any, source_dialect: str, target: Any = None) -> None:
         super().__init__(ctx, source_dialect, target)
         self._dropped: list[UnsupportedError] = []
         self._strict = False
         """True while writing an expansion: nothing may be dropped from a cycle's motion."""
+        self._sanitised = False
+        """A comment has been made safe for grbl (warned once)."""
 
     # -- blocks ------------------------------------------------------------------------------------
     def write_block(self, block: Block) -> str | None:
+        text = self._write_block(block)
+        if text is None or self.source_dialect == self.DIALECT or (text.isascii() and not _REALTIME.search(text)):
+            return text
+        if not self._sanitised:
+            self._sanitised = True
+            self.ctx.diagnostics.warn("grbl acts on '?', '!', '~' and bytes above 0x7F even inside a comment: "
+                                      "comments are written without them", self.ctx.at(block))
+        return grbl_safe(text)
+
+    def _write_block(self, block: Block) -> str | None:
         if "TapeMark" in block.sections:
             return self.comment("%") + (block.eol or "\n")
         self._dropped = []
@@ -66,8 +107,10 @@ class GrblWriter(WordWriter):
 
     def generate(self, block: Block) -> str:
         text = super().generate(block)
-        if block.text is None and block.sections and not text.strip():
-            return ""  # a generated part whose only words grbl does without (G98/G99, G64)
+        if block.sections and not text.strip():
+            if block.text is None:
+                return ""  # a generated part whose only words grbl does without (G80, G98/G99, G64)
+            return self.comment(block.text.strip()) + (block.eol or "\n")  # a trace of the source line
         return text
 
     def section_words(self, key: str, section: Section, block: Block) -> list[str]:
@@ -108,6 +151,10 @@ class GrblWriter(WordWriter):
 
     def return_level_words(self, s: Any, block: Block) -> list[str]:
         """G98/G99 only steer canned cycles, which grbl never runs (they arrive expanded)."""
+        return []
+
+    def cycle_cancel_words(self, s: Any, block: Block) -> list[str]:
+        """No cycle ever runs on grbl (see the module docstring): nothing to cancel."""
         return []
 
     def path_control_words(self, s: Any, block: Block) -> list[str]:

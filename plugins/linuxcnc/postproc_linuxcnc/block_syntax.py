@@ -7,7 +7,7 @@ from typing import ClassVar
 from postproc.rs274.codes import CodeTable
 from postproc.rs274.ngc_block_syntax import NgcWordBlockSyntax
 
-from .codes import CODES
+from .codes import CODES, M_GROUPS
 
 
 class NgcBlockSyntax(NgcWordBlockSyntax):
@@ -18,3 +18,7 @@ class NgcBlockSyntax(NgcWordBlockSyntax):
     DIALECT: ClassVar[str] = "linuxcnc"
     CONTROL: ClassVar[str] = "LinuxCNC"
     CODES: ClassVar[CodeTable] = CODES
+    N_FIRST: ClassVar[bool] = True
+    FEED_MODE_RESETS_FEED: ClassVar[bool] = True
+    CYCLE_CANCEL_WITH_MOTION: ClassVar[bool] = True
+    M_GROUPS: ClassVar[dict[int, str]] = M_GROUPS

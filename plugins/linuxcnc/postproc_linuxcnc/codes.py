@@ -117,6 +117,13 @@ REFUSED_M: dict[int, str] = {
 USER_M = range(100, 200)
 """M100-M199 run user programs; kept verbatim."""
 
+M_GROUPS: dict[int, str] = {
+    **dict.fromkeys((0, 1, 2, 30, 60), "4"), **dict.fromkeys((6, 61), "6"),
+    **dict.fromkeys((3, 4, 5, 19, 70, 71, 72, 73), "7"), **dict.fromkeys((7, 8, 9), "8"),
+    **dict.fromkeys(range(48, 54), "9"), **dict.fromkeys(range(62, 69), "5"), **dict.fromkeys(USER_M, "10"),
+}
+"""LinuxCNC's M-code modal groups (``m-code.adoc``; each checked with rs274: ``M5 M19``, ``M7 M8``, ``M70 M3``,
+``M62 P1 M64 P2`` and ``M0 M60`` are refused, ``M3 M8 M0`` and ``M48 M3`` run)."""
 
 CODES = CodeTable(ROWS, native_g=NATIVE_G, native_m=NATIVE_M, refused_g=REFUSED_G, refused_m=REFUSED_M,
                   user_m=USER_M)

@@ -3,6 +3,9 @@ LinuxCNC in its messages."""
 
 from __future__ import annotations
 
+from typing import Iterable, Iterator
+
+from postproc.errors import Location, ParseError
 from postproc.ir import Block
 from postproc.rs274.ngc_lexer import NgcReader
 
@@ -12,6 +15,27 @@ from .calls import read_call
 class LinuxcncReader(NgcReader):
     DIALECT = "linuxcnc"
     PARAMETRIC = True
+
+    def read(self, lines: Iterable[str]) -> Iterator[Block]:
+        """A ``%`` is the program's first line or closes a program opened with one: rs274 refuses any
+        other ("Bad character '%' used"), unless the program has already ended (M2/M30)."""
+        opened: bool | None = None  # None until the first line with content
+        ended = False
+        for block in super().read(lines):
+            sections = block.sections
+            if "TapeMark" in sections:
+                if opened is False and not ended:
+                    self.ctx.diagnostics.error(ParseError(
+                        "'%' closes only a program that opens with '%' on its first line (LinuxCNC: \"Bad "
+                        "character '%' used\")", Location(self.ctx.file, block.line, 1)), block.text)
+                    yield Block(block.line, block.text, block.eol)  # kept as text, as every refused line
+                    continue
+                opened = opened is None or opened
+            elif sections or block.words:
+                if opened is None:
+                    opened = False
+                ended = ended or any(a in "Mm" and n.lstrip("0") in ("2", "30") for a, n in block.words)
+            yield block
 
     def read_call(self, block: Block, code: str) -> None:
         """``M98 P L`` and ``M99`` (``calls``): rs274's Fanuc-style subprograms."""

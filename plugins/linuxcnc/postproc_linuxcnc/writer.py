@@ -59,6 +59,7 @@ class LinuxcncWriter(WordWriter):
     DWELL_WORD: ClassVar[str] = "P"
     CYCLE_CANCEL_IS_MOTION: ClassVar[bool] = True
     """G80 is a motion code here: ``G80 G0`` is refused, a block's G0-G3 ends the cycle by itself."""
+    BARE_FEED_MOTION_NEEDS_FEED: ClassVar[bool] = True
     SPELLING: ClassVar[ExprSpelling | None] = LINUXCNC_SPELLING
 
     def __init__(self, ctx: Context, source_dialect: str, target: type[Dialect] | None = None) -> None:
@@ -72,15 +73,50 @@ class LinuxcncWriter(WordWriter):
         """O-word labels and subprogram names written so far."""
         self._counter = 0
         self._ended = False
+        self._cutter_on = False
+        """Cutter compensation is on (rs274 refuses turning it on again, and G28/G30 under it)."""
+        self._opened: bool | None = None
+        """Whether the program opened with '%' (None: nothing written yet)."""
         """The main program's end was written: an ``O<n>`` now starts a subprogram."""
 
     def units_words(self, s: Any, block: Block) -> list[str]:
         self.units_before = self.modal.units
         return super().units_words(s, block)
 
+    def cutter_compensation_words(self, s: Any, block: Block) -> list[str]:
+        """rs274 turns compensation on only from off ("Cannot turn cutter radius comp on when on"): G41/G42
+        while it is on would need a G40 between them, which moves differently."""
+        if s.mode != "off" and self._cutter_on:
+            self.unsupported(f"cutter compensation {s.mode} while compensation is on (rs274 needs G40 first: "
+                             "\"Cannot turn cutter radius comp on when on\")", block)
+        self._cutter_on = s.mode != "off"
+        return super().cutter_compensation_words(s, block)
+
+    def motion_words(self, s: Any, block: Block) -> list[str]:
+        if s.mode in ("home", "home2") and self._cutter_on and "CutterCompensation" not in block.sections:
+            self.unsupported("G28/G30 with cutter compensation on (rs274: \"Cannot use g28 or g30 with cutter "
+                             "radius comp\")", block)
+        return super().motion_words(s, block)
+
+    def machine_coordinates_words(self, s: Any, block: Block) -> list[str]:
+        distance = block.sections.get("DistanceMode")
+        mode = distance.mode if distance is not None else self.modal.distance  # type: ignore[attr-defined]
+        if mode == "incremental" and "Motion" in block.sections:
+            self.unsupported("a move in machine coordinates in incremental mode (rs274: \"Cannot use g53 "
+                             "incremental\")", block)
+        return super().machine_coordinates_words(s, block)
+
     def feed_mode_words(self, s: Any, block: Block) -> list[str]:
+        """LinuxCNC sets the feed rate to zero at every G93/G94/G95, even one that selects the mode in
+        force (rs274: ``F100`` then ``G94 G1 Z-3`` is "Cannot do g1 with zero feed rate"): the feed rate in
+        force is written again beside it, as the source goes on using it."""
         self.inverse_time = s.mode == "inverse_time"
-        return super().feed_mode_words(s, block)
+        words = super().feed_mode_words(s, block)
+        feed = self.modal.feed
+        if (not self.inverse_time and isinstance(feed, (int, float)) and feed
+                and "Feed" not in block.sections and "Units" not in block.sections):
+            words.append("F" + self.number(feed))
+        return words
 
     def feed_words(self, s: Any, block: Block) -> list[str]:
         """The neutral F is in the block's units; LinuxCNC reads it in the units before the block."""
@@ -173,11 +209,27 @@ class LinuxcncWriter(WordWriter):
             self.unsupported(f"{code} sharing its line with other words ({', '.join(others)}): rs274 refuses it",
                              block)
 
-    def program_control_words(self, s: Any, block: Block) -> list[str]:
-        words = super().program_control_words(s, block)
-        if s.kind in ("end", "end_rewind"):
-            self._ended = True  # an O line from here on starts a subprogram
-        return words
+    def write_block(self, block: Block) -> str | None:
+        sections = block.sections
+        if "TapeMark" in sections:
+            if self._opened is False and not self._ended:
+                return self._lone_tape_mark(block)
+            self._opened = self._opened is None or self._opened
+        elif sections and self._opened is None and sections.keys() != {"Comments"}:
+            self._opened = False
+        text = super().write_block(block)
+        end = block.sections.get("ProgramControl")
+        if end is not None and end.kind in ("end", "end_rewind"):  # type: ignore[attr-defined]
+            self._ended = True
+        return text
+
+    def _lone_tape_mark(self, block: Block) -> str:
+        """A closing ``%`` with no opening one and no program end before it: rs274 refuses it ("Bad
+        character '%' used"), and the opening line is long written. It becomes a comment; the program
+        then has no end, which LinuxCNC reports when it reaches the end of the file."""
+        self.ctx.diagnostics.warn("the program ends with '%' and no M2/M30, without an opening '%': LinuxCNC "
+                                  "refuses a lone '%', written as a comment (add M30 before it)", self.ctx.at(block))
+        return self.comment("%") + (block.eol or "\n")
 
     def program_start(self, s: Any, block: Block) -> str:
         """``O<n>`` after the main program's end (a subprogram start, as rs274 reads it) or from a
