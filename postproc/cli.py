@@ -125,6 +125,9 @@ def build_parser() -> argparse.ArgumentParser:
                    help="folder searched for subprograms (repeatable; after the set-up's <Library>)")
     v.add_argument("--target-machine", help="set-up of the target machine (default: --machine)")
     v.add_argument("--tolerance", type=_tolerance, default=0.001, help="mm (default 0.001)")
+    v.add_argument("--allow-ignored", action="store_true",
+                   help="accept settings that move the tool (cutter compensation, tool length or work offset, "
+                        "path control) differing between the programs; they are listed either way")
     v.set_defaults(run=cmd_verify)
 
     i = sub.add_parser("ir", help="print a program's IR as XML")
@@ -209,7 +212,8 @@ def cmd_verify(args: argparse.Namespace) -> int:
     setup = _setup(args.machine, args.lib)
     target_setup = _setup(args.target_machine, args.lib) if args.target_machine else setup
     report = verify_files(args.input, args.output, source=args.source, target=args.target,
-                          setup=setup, target_setup=target_setup, tolerance=args.tolerance)
+                          setup=setup, target_setup=target_setup, tolerance=args.tolerance,
+                          allow_ignored=args.allow_ignored)
     print(report.summary())
     return 0 if report.ok else 1
 

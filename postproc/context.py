@@ -18,7 +18,7 @@ class Context:
     reading dialect tells the neutral steps about its words."""
 
     __slots__ = ("file", "setup", "diagnostics", "state", "dialect", "cycle_words", "on_unsupported",
-                 "program_mode", "keep_check", "reader")
+                 "program_mode", "keep_check", "reader", "run_data")
 
     def __init__(self, file: str, setup: MachineSetup, diagnostics: Diagnostics, dialect: str,
                  cycle_words: CycleWords | None = None) -> None:
@@ -38,6 +38,9 @@ class Context:
         self.reader: Callable[["Context"], Any] | None = None
         """The reading dialect's reader class (``Reader``), for steps that read more text (a library
         subprogram, a jumped-back prefix) the way the program was read."""
+        self.run_data: dict[str, Any] = {}
+        """What a reading step keeps between the blocks of one run besides the modal state (its own key:
+        a resolved table, what it has already warned about)."""
         self.keep_check: Callable[[list[Block]], str | None] | None = None
         """For 'auto': given the program from its first construct on, the reason it cannot be kept
         symbolically for the target (None: it can)."""

@@ -149,6 +149,9 @@ class Dialect:
     """Variables, expressions and control flow (loops, jumps, subprograms) can be written: a program that
     computes is translated symbolically when every construct has a spelling here, else flattened (its
     evaluated motion). Without it every such program reaches this target flattened."""
+    FAMILY: ClassVar[str] = ""
+    """The controller family whose machine-specific codes (``MachineFunction``: builders' M codes,
+    machine G codes) this dialect writes verbatim; '' is a family of its own (the dialect's NAME)."""
     CYCLE_SEMANTICS: ClassVar[str] = "fanuc"
     """How the controller moves through its native canned cycles ('fanuc' or 'rs274', see
     ``postproc.cycles.semantics``): a cycle resolved under other rules is expanded for it."""
@@ -163,6 +166,11 @@ class Dialect:
                 if key.isupper() and key not in skip and not key.startswith("_"):
                     table[key] = sorted(value) if isinstance(value, frozenset) else value
         return table
+
+    @classmethod
+    def family(cls) -> str:
+        """The family machine-specific codes travel in (``FAMILY``, or the dialect alone)."""
+        return cls.FAMILY or cls.NAME
 
     @classmethod
     def pipeline(cls, setup: MachineSetup) -> Pipeline:

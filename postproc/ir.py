@@ -435,11 +435,42 @@ class NativeCode(Section):
         self.text = text
 
 
+class MachineFunction(Section):
+    """A machine-specific code (an M code of the machine builder, a machine G code such as a smoothing
+    setting) with the words it takes, as written (``text``). It passes verbatim between controllers of
+    ``family`` and has no equivalent anywhere else; the simulation runs its ``action`` (one of
+    ``postproc.setup.MachineCode``'s). ``declared``: the set-up or the family's defaults know it."""
+
+    XNAME = KEY = "MachineFunction"
+    __slots__ = ("family", "code", "action", "name", "text", "declared")
+    XATTRS = (XAttr("family"), XAttr("code"), XAttr("action", str, "none"), XAttr("name", str, ""),
+              XAttr("text"), XAttr("declared", bool, True))
+    family: str
+    code: str
+    action: str
+    name: str
+    text: str
+    declared: bool
+
+    def __init__(self, family: str, code: str, text: str, action: str = "none", name: str = "",
+                 declared: bool = True) -> None:
+        self.family = family
+        self.code = code
+        self.text = text
+        self.action = action
+        self.name = name
+        self.declared = declared
+
+    def describe(self) -> str:
+        """``M31 (part counter)``, for messages."""
+        return f"{self.code} ({self.name})" if self.name else self.code
+
+
 SIMPLE_SECTIONS: tuple[type[Section], ...] = (
     Sequence, BlockDelete, ProgramStart, TapeMark, Units, Plane, DistanceMode, WorkOffset, FeedMode, Feed,
     SpindleSpeed, SpindleControl, SpindleOrientation, ToolSelect, ToolChange, ToolLengthOffset,
     CutterCompensation, Coolant, Dwell, ProgramControl, PathControl, ReturnLevel, CycleCancel,
-    MachineCoordinates, CycleCall,
+    MachineCoordinates, CycleCall, MachineFunction,
 )
 
 

@@ -6,8 +6,10 @@ from typing import ClassVar
 
 from postproc.rs274.block_syntax import WordBlockSyntax
 from postproc.rs274.codes import CodeTable
+from postproc.rs274.machine_codes import Defaults
 
 from .codes import CODES
+from .machine_codes import DEFAULTS
 
 
 class FanucBlockSyntax(WordBlockSyntax):
@@ -18,3 +20,6 @@ class FanucBlockSyntax(WordBlockSyntax):
     DIALECT: ClassVar[str] = "fanuc"
     TITLE: ClassVar[str] = "Fanuc milling"
     CODES: ClassVar[CodeTable] = CODES
+    FAMILY: ClassVar[str] = "fanuc"
+    MACHINE_DEFAULTS: ClassVar[Defaults] = DEFAULTS
+    BASE_VARIANT: ClassVar[str] = "fanuc"

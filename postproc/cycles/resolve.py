@@ -126,7 +126,7 @@ class CannedCycleResolveSyntax(Syntax):
             return
         if motion is not None and motion.mode is not None:  # type: ignore[attr-defined]
             return  # a reference return (group 00) leaves the cycle in force
-        if motion is None and ("Dwell" in sections or "NativeCode" in sections):
+        if motion is None and ("Dwell" in sections or "NativeCode" in sections or "MachineFunction" in sections):
             return  # G04 (its P is the dwell's) or a verbatim code such as M98 P..: not cycle data
         if any(letter in block.values for letter in self._letters(ctx)):
             if _NATIVE_KEY in state.extra:

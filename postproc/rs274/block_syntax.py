@@ -20,7 +20,7 @@ from typing import Any, ClassVar
 from postproc.errors import ParseError, ProgramError
 from postproc.expr import Binary, Expr, Num
 from postproc.ir import (
-    Block, Coolant, CutterCompensation, CycleCall, CycleCancel, DistanceMode, Dwell, Feed, FeedMode,
+    Block, MachineFunction, Coolant, CutterCompensation, CycleCall, CycleCancel, DistanceMode, Dwell, Feed, FeedMode,
     MachineCoordinates, Motion, NativeCode, PathControl, Plane, ProgramControl, ReturnLevel,
     SpindleControl, SpindleOrientation, SpindleSpeed, ToolChange, ToolLengthOffset, ToolSelect, Units,
     WorkOffset,
@@ -29,6 +29,7 @@ from postproc.context import Context, word_columns
 from postproc.syntax import Syntax
 
 from .codes import CodeTable, g_key
+from .machine_codes import Defaults, machine_table
 
 AXIS_LETTERS = frozenset("XYZABCUVW")
 DECIMAL_LETTERS = frozenset("XYZABCUVWIJKRQ")
@@ -50,7 +51,14 @@ class WordBlockSyntax(Syntax):
     CODES: ClassVar[CodeTable] = CodeTable(())
     """The dialect's code table: every G and M code the reader knows."""
     NATIVE_M_WORDS: ClassVar[str] = "PL"
-    """Words a verbatim M code takes with it (M98 P.. L..)."""
+    """Words a verbatim M code takes with it (M98 P.. L..), and an undeclared machine M code."""
+    FAMILY: ClassVar[str] = ""
+    """The controller family machine-specific codes travel in ('': the dialect alone)."""
+    MACHINE_DEFAULTS: ClassVar[Defaults] = {}
+    """Machine-specific codes per controller variant (``postproc.rs274.machine_codes``); the set-up's
+    ``<MachineCodes>`` adds to them and wins."""
+    BASE_VARIANT: ClassVar[str] = ""
+    """The variant whose machine codes every variant of the family has."""
 
     def build(self, block: Block, ctx: Context) -> None:
         words = block.words
@@ -68,11 +76,16 @@ class WordBlockSyntax(Syntax):
         codes: dict[str, tuple[str, str, object, str]] = {}
         natives: list[str] = []
         mcodes: list[tuple[int, str]] = []
+        machine_g: list[str] = []
         raw: dict[str, str] = {}
         for letter, num in words:
             up = _UPPER[letter]
             if up == "G":
-                self._g_code(ctx, block, num, codes, natives)
+                key = g_key(num)
+                if key not in self.CODES.g and ("G", key) in self.machine_codes(ctx):
+                    machine_g.append(num)
+                else:
+                    self._g_code(ctx, block, num, codes, natives)
             elif up == "M":
                 if "." in num:
                     raise ParseError(f"M code M{num} takes no decimal point", ctx.at(block, col_of_word(block, "M", num)))
@@ -85,6 +98,8 @@ class WordBlockSyntax(Syntax):
         if natives:
             self._native(block, ctx, natives, raw)
             return
+        if machine_g:
+            self._machine_g(block, ctx, machine_g, raw)
         units = state.units
         unit = codes.get("06")
         if unit is not None:
@@ -105,6 +120,8 @@ class WordBlockSyntax(Syntax):
                     values[up] = int(num) / divisor
                 else:
                     values[up] = float(int(num))
+            elif up == "P" and "." in num and ctx.setup.controller.dwell_seconds_rule():
+                values[up] = _milliseconds(block, ctx, num)
             elif up in INTEGER_LETTERS or up == "K":
                 if "." in num:
                     raise ParseError(f"address {up} takes no decimal point ({up}{num})",
@@ -201,6 +218,25 @@ class WordBlockSyntax(Syntax):
         for up, num in raw.items():
             if up not in block.values:
                 block.values[up] = float(num) if "." in num else int(num)
+
+    def machine_codes(self, ctx: Context) -> dict[tuple[str, str], Any]:
+        """This run's machine-specific codes (the family's defaults for the set-up's variant, then the
+        set-up's own)."""
+        return machine_table(ctx, self.MACHINE_DEFAULTS, self.BASE_VARIANT)
+
+    def family(self) -> str:
+        return self.FAMILY or self.DIALECT
+
+    def _machine_g(self, block: Block, ctx: Context, machine_g: list[str], raw: dict[str, str]) -> None:
+        """A declared machine G code (G187 P1 E0.01): kept verbatim with the words it takes; the rest of
+        the block is read as usual."""
+        if len(machine_g) > 1:
+            raise ParseError(f"G{machine_g[1]}: only one machine-specific function per block is supported",
+                             ctx.at(block, col_of_word(block, "G", machine_g[1])))
+        num = machine_g[0]
+        code = self.machine_codes(ctx)[("G", g_key(num))]
+        parts = [f"G{num}"] + [up + raw.pop(up) for up in code.words if up in raw]
+        block.add(MachineFunction(self.family(), f"G{g_key(num)}", " ".join(parts), code.action, code.name))
 
     def g_sections(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],
                     used: set[str], cycle_block: bool) -> None:
@@ -321,12 +357,15 @@ class WordBlockSyntax(Syntax):
         for number, num in mcodes:
             entry = table.get(number)
             if entry is None:
-                what = self.unknown_m(block, ctx, number, num)
-                if "NativeCode" in block.sections:
+                if "NativeCode" in block.sections or "MachineFunction" in block.sections:
                     raise ParseError(f"M{num}: only one machine-specific function per block is supported",
                                      ctx.at(block, col_of_word(block, "M", num)))
-                block.add(NativeCode(self.DIALECT, what, f"M{num}"))
-                used.update(self.NATIVE_M_WORDS)
+                what = self.unknown_m(block, ctx, number, num)
+                if what is not None:
+                    block.add(NativeCode(self.DIALECT, what, f"M{num}"))
+                    used.update(self.NATIVE_M_WORDS)
+                else:
+                    self.machine_m(block, ctx, number, num, values, used)
                 continue
             kind, arg = entry
             if kind in seen:
@@ -348,13 +387,34 @@ class WordBlockSyntax(Syntax):
         """The dialect's spelling of a code, for messages."""
         return self.CODES.spell(kind, arg) or kind
 
-    def unknown_m(self, block: Block, ctx: Context, number: int, num: str) -> str:
-        """What an M code outside the table is: kept verbatim (the ISO rule: any other M code is the
-        machine builder's)."""
+    def unknown_m(self, block: Block, ctx: Context, number: int, num: str) -> str | None:
+        """What an M code outside the table is when the dialect keeps it as native code (a description),
+        or None: a machine builder's code (``machine_m``)."""
         native = self.CODES.native_m.get(number)
-        if native is not None:
-            return f"M{num} ({native})"
-        return f"M{num} (machine-specific M function)"
+        return None if native is None else f"M{num} ({native})"
+
+    def machine_m(self, block: Block, ctx: Context, number: int, num: str, values: dict[str, Any],
+                  used: set[str]) -> None:
+        """An M code outside the table is the machine builder's (the ISO rule): kept verbatim with the
+        words it takes (its declaration's, else P and L), simulated by its declared action."""
+        code = self.machine_codes(ctx).get(("M", str(number)))
+        letters = code.words if code is not None else self.NATIVE_M_WORDS
+        parts = [f"M{num}"]
+        for up in letters:
+            if up in values and up not in used:
+                parts.append(up + self._word_text(block, up))
+                used.add(up)
+        if code is None:
+            block.add(MachineFunction(self.family(), f"M{number}", " ".join(parts), declared=False))
+        else:
+            block.add(MachineFunction(self.family(), f"M{number}", " ".join(parts), code.action, code.name))
+
+    @staticmethod
+    def _word_text(block: Block, up: str) -> str:
+        for letter, num in block.words:
+            if _UPPER[letter] == up:
+                return num
+        return ""
 
     def orient(self, block: Block, ctx: Context, num: str, values: dict[str, Any], used: set[str]) -> None:
         """An orient code without an angle word: the angle the machine's parameters hold (the set-up's
@@ -370,6 +430,16 @@ def _real(value: Any) -> Any:
 def _whole(value: Any) -> Any:
     """A section's integer value: the number as an int, or a computed value (``Expr``) as it is."""
     return value if isinstance(value, Expr) else int(value)
+
+
+def _milliseconds(block: Block, ctx: Context, num: str) -> int:
+    """A dwell P written with a decimal point, in seconds (the Haas rule), as the whole milliseconds a
+    point-less P means, so both spellings read alike."""
+    ms = float(num) * 1000.0
+    if abs(ms - round(ms)) > 1e-6:
+        raise ParseError(f"dwell P{num} (seconds) is finer than a millisecond",
+                         ctx.at(block, ctx.column_of(block, "P")))
+    return int(round(ms))
 
 
 def _divisor(ctx: Context, units: str) -> int:

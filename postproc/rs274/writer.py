@@ -29,7 +29,7 @@ SECTION_ORDER = (
     "BlockDelete", "Sequence", "Assign", "Control", "MachineCoordinates", "PathControl", "Plane", "Units", "DistanceMode",
     "WorkOffset", "FeedMode", "CutterCompensation", "ToolLengthOffset", "ReturnLevel", "CycleCancel",
     "Dwell", "Motion", "CannedCycle", "Feed", "SpindleSpeed", "ToolSelect", "ToolChange", "SpindleControl",
-    "SpindleOrientation", "Coolant", "ProgramControl", "NativeCode", "Comments",
+    "SpindleOrientation", "Coolant", "MachineFunction", "ProgramControl", "NativeCode", "Comments",
 )
 """Word order of a generated block; sections that only annotate are skipped by ``IGNORED``."""
 
@@ -522,6 +522,15 @@ class WordWriter(Writer):
 
     def program_control_words(self, s: Any, block: Block) -> list[str]:
         return self._code("program", s.kind, f"program {s.kind}", block)
+
+    def machine_function_words(self, s: Any, block: Block) -> list[str]:
+        """A machine-specific code as written, for a controller of its family; elsewhere it has no
+        equivalent (``postproc.machine_functions`` comments it out under ``--on-unsupported warn``)."""
+        family = self.target.family() if self.target is not None else self.DIALECT
+        if s.family != family:
+            raise UnsupportedError(f"{s.describe()}, a machine-specific code of the {s.family} family, has no "
+                                   f"equivalent in {self.DIALECT}", self.ctx.at(block))
+        return [s.text]
 
     def native_code_words(self, s: Any, block: Block) -> list[str]:
         if s.dialect != self.DIALECT:
