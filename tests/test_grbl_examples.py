@@ -32,6 +32,12 @@ def _setup(tmp_path: Path, orientation: str) -> Path:
     return path
 
 
+def _point_mix(diagnostic: dict[str, str]) -> bool:
+    """O1004's warning about point-less words beside pointed ones (issue 12 item 3), which it mixes on
+    purpose; tests/test_fanuc_writer.py pins its text."""
+    return diagnostic["level"] == "warning" and "has no decimal point, so it counts least input" in diagnostic["message"]
+
+
 def _located(err: str) -> list[dict[str, str]]:
     found = []
     for line in err.splitlines():
@@ -46,7 +52,7 @@ def test_fanuc_example_to_grbl_verifies_with_zero_deviation(cli: Any, tmp_path: 
     out = tmp_path / (path.stem + ".gcode")
     result = cli("translate", path, "--from", "fanuc", "--to", "grbl", "--on-unsupported", "warn", "-o", out)
     assert result.status == 0, result.err
-    warnings = _located(result.err)
+    warnings = [w for w in _located(result.err) if not _point_mix(w)]
     assert warnings and all(w["level"] == "warning" and w["file"] == str(path) for w in warnings)
     source = path.read_text().splitlines()
     for w in warnings:
@@ -74,7 +80,7 @@ def test_fanuc_example_to_grbl_fails_on_g43_without_warn(cli: Any, tmp_path: Pat
     result = cli("translate", path, "--from", "fanuc", "--to", "grbl", "-o", out)
     assert result.status == 1
     assert not out.exists()
-    errors = _located(result.err)
+    errors = [e for e in _located(result.err) if not _point_mix(e)]
     source = path.read_text().splitlines()
     g43_lines = [n for n, line in enumerate(source, 1) if "G43" in line]
     assert [int(e["line"]) for e in errors if "tool length offset" in e["message"]] == g43_lines

@@ -30,6 +30,7 @@ from postproc.syntax import Syntax
 
 from .codes import CodeTable, g_key
 from .machine_codes import Defaults, machine_table
+from .point_mix import point_mix
 
 AXIS_LETTERS = frozenset("XYZABCUVW")
 DECIMAL_LETTERS = frozenset("XYZABCUVWIJKRQ")
@@ -107,6 +108,7 @@ class WordBlockSyntax(Syntax):
         cycle_block = "09" in codes and codes["09"][1] == "cycle" or (
             state.cycle is not None and "01" not in codes and "09" not in codes)
         divisor = _divisor(ctx, units)
+        mix = point_mix(ctx) if divisor else None
         for up, num in raw.items():
             if up in values:
                 if up not in DECIMAL_LETTERS and up not in INTEGER_LETTERS and up not in "FSK":
@@ -116,8 +118,12 @@ class WordBlockSyntax(Syntax):
             if up in DECIMAL_LETTERS and not (up == "K" and cycle_block):
                 if "." in num:
                     values[up] = float(num)
+                    if mix is not None and up in AXIS_LETTERS:
+                        mix.saw_pointed(ctx, up, block.line)
                 elif divisor:
-                    values[up] = int(num) / divisor
+                    value = values[up] = int(num) / divisor
+                    if mix is not None and up in AXIS_LETTERS:
+                        mix.saw_bare(ctx, block, up, num, value, units)
                 else:
                     values[up] = float(int(num))
             elif up == "P" and "." in num and ctx.setup.controller.dwell_seconds_rule():
@@ -183,6 +189,10 @@ class WordBlockSyntax(Syntax):
                     values.clear()
                     return False  # the general path explains the error
                 block.sections["Motion"] = Motion(mode, axes)
+                mix = point_mix(ctx)
+                if mix is not None:
+                    for up in axes:
+                        mix.saw_pointed(ctx, up, block.line)
             if "F" in values:
                 block.sections["Feed"] = Feed(values["F"])  # type: ignore[arg-type]  # a number on this path
             return True
@@ -268,9 +278,15 @@ class WordBlockSyntax(Syntax):
             elif kind == "cycle_cancel":
                 block.add(CycleCancel())
             elif kind == "cutter":
+                register = None
                 if arg != "off" and "D" in values:
                     used.add("D")
-                block.add(CutterCompensation(arg, values.get("D") if arg != "off" else None))
+                    register = values["D"]
+                elif (arg != "off" and "H" in values and "08" not in codes
+                      and ctx.setup.controller.cutter_h_rule()):
+                    used.add("H")  # Fanuc 0M: G42 H19 takes the radius from offset 19
+                    register = values["H"]
+                block.add(CutterCompensation(arg, register))
             elif kind == "length":
                 if arg != "cancel":
                     if "H" not in values:
