@@ -6,10 +6,13 @@ Streaming: the simulator keeps the modal state and one position, never the progr
 such a controller first, so cycles arrive expanded as ``CompoundMotion``.
 
 Assumptions (a simulator knows no machine data):
-- Positions are absolute work coordinates in mm from the set-up's start position (``Machine startX``...).
-  Every work offset (G54...) and tool length offset is taken as zero; the path is the programmed point,
-  cutter compensation is not applied.
-- Machine coordinates (G53) are therefore the same as work coordinates; they are always absolute.
+- Positions are absolute coordinates in mm from the set-up's start position (``Machine startX``...).
+  Every work offset (G54...) is zero until the program sets one (G10 L2: ``DataSetting``), and then
+  shifts the absolute points programmed in that work system; tool length offsets are taken as zero; the
+  path is the programmed point, cutter compensation is not applied (``verify`` compares those settings
+  instead, see ``UNSIMULATED``).
+- Machine coordinates (G53) are therefore work coordinates until a G10 sets an offset; they are
+  always absolute.
 - A reference return (G28/G30) rapids to the intermediate point, then to the reference point, taken as
   machine zero = work zero on the axes named in the block.
 - Arc centres ``cx, cy, cz`` are absolute; on the axis normal to the plane the centre carries the arc's
@@ -36,7 +39,7 @@ from .dialect import Dialect
 from .errors import Diagnostics, Location, PostprocError, ProgramError, UnsupportedError
 from .event_order import after_motion
 from .geometry import CENTRE_KEYS, PLACES
-from .ir import Block, MachineFunction, Motion, Section
+from .ir import Block, DataSetting, MachineFunction, Motion, Section
 from .lower import lower_for
 from .plugins import Registry, default_registry
 from .setup import MachineSetup
@@ -121,6 +124,10 @@ class Simulator:
         (``UNSIMULATED``): ``verify`` compares these between the two programs."""
         self.settings: dict[str, str] = dict(_INITIAL_SETTINGS)
         self.undeclared: set[str] = set()
+        self.offsets: dict[int, dict[str, float]] = {}
+        """Work offsets a G10 set, mm per axis, by work system (1 = G54; 0 the external offset)."""
+        self.shift: dict[str, float] = {}
+        """What the active work system adds to an absolute point (empty until a G10 sets an offset)."""
         """Machine-specific codes warned about as undeclared (once each)."""
 
     # -- one block ---------------------------------------------------------------------------------
@@ -140,8 +147,11 @@ class Simulator:
         keys = sections.keys()
         if not keys.isdisjoint(MODAL_KEYS):
             self.apply_modal(sections)
-        if not keys.isdisjoint(UNSIMULATED):
+        if not keys.isdisjoint(_SETTING_KEYS):
             self.record_settings(block)
+            setting = get("DataSetting")
+            if setting is not None:
+                self.data_setting(block, setting)
         line = block.line
         before = not keys.isdisjoint(_EVENT_KEYS)
         spindle = get("SpindleControl")
@@ -260,6 +270,8 @@ class Simulator:
         s = sections.get("Feed")
         if s is not None:
             self._set_feed(s.value)  # type: ignore[attr-defined]
+        if self.offsets and "WorkOffset" in sections:
+            self._shift()
 
     def spindle_event(self, line: int, direction: str, emit: Callable[[Event], None]) -> None:
         """A spindle change; stopping a stopped spindle is no event (two programs that differ only
@@ -312,7 +324,7 @@ class Simulator:
         if self.feed is None and needs_feed(m):
             raise ProgramError(NO_FEED, self._at(block))
         machine = "MachineCoordinates" in block.sections
-        target = self.target(block, m.axes, absolute or machine)
+        target = self.target(block, m.axes, absolute or machine, machine)
         if mode == "rapid":
             self.line_move("rapid", target, line, emit)
         elif mode == "linear":
@@ -322,18 +334,39 @@ class Simulator:
         else:
             raise UnsupportedError(f"motion '{mode}' cannot be simulated", self._at(block))
 
-    def target(self, block: Block, axes: dict[str, float], absolute: bool) -> dict[str, float]:
-        """End point in mm of programmed axis words (absolute or incremental)."""
+    def target(self, block: Block, axes: dict[str, float], absolute: bool, machine: bool = False) -> dict[str, float]:
+        """End point in mm of programmed axis words (absolute or incremental); an absolute point in work
+        coordinates is shifted by the work offset a G10 set (``shift``), one in machine coordinates not."""
         pos = self.pos
         out = dict(pos)
         incremental = self.incremental and not absolute
+        shift = self.shift if not machine and not incremental else None
         for axis, value in axes.items():
             if axis not in pos:
                 raise ProgramError(f"axis {axis} is not on this machine (axes {''.join(self.axes)})",
                                    self._at(block, axis))
             v = value * self.scale if axis in LINEAR_AXES else value
-            out[axis] = pos[axis] + v if incremental else v
+            out[axis] = pos[axis] + v if incremental else v + shift.get(axis, 0.0) if shift else v
         return out
+
+    def data_setting(self, block: Block, setting: DataSetting) -> None:
+        """G10: a work offset is kept (mm, per axis) and shifts later absolute points in its system; tool
+        offset data is only recorded for ``verify`` (tool offsets count as zero)."""
+        if not setting.table.startswith("work_offset"):
+            self.unsimulated.append((block.line, "tool offset data", setting.text))
+            return
+        key = setting.index if setting.table == "work_offset" else 100 + setting.index
+        entry = self.offsets.setdefault(key, {})
+        for axis, value in setting.values.items():
+            v = value * self.scale if axis in LINEAR_AXES else value
+            entry[axis] = entry.get(axis, 0.0) + v if setting.incremental else v
+        self._shift()
+
+    def _shift(self) -> None:
+        """The offset of the active work system plus the external one (P0), applied to absolute points."""
+        active = self.offsets.get(self.modal.work_offset, {})
+        common = self.offsets.get(0, {})
+        self.shift = {a: active.get(a, 0.0) + common.get(a, 0.0) for a in set(active) | set(common)}
 
     def line_move(self, kind: str, target: dict[str, float], line: int, emit: Callable[[Event], None]) -> None:
         pos = self.pos
@@ -423,8 +456,10 @@ UNSIMULATED = {"CutterCompensation": "cutter compensation", "ToolLengthOffset": 
                "WorkOffset": "work offset", "PathControl": "path control", "SpindleSpeed": "spindle speed"}
 """Settings the simulation does not apply (the path is the programmed point, offsets count as zero, no
 blending, no speeds), by section key: ``verify`` compares their changes instead."""
-MOVES_THE_TOOL = frozenset(("cutter compensation", "tool length offset", "work offset", "path control"))
+MOVES_THE_TOOL = frozenset(("cutter compensation", "tool length offset", "work offset", "path control",
+                            "tool offset data"))
 """Of those, the ones that move the tool when they differ."""
+_SETTING_KEYS = frozenset((*UNSIMULATED, "DataSetting"))
 _INITIAL_SETTINGS = {"cutter compensation": "off", "tool length offset": "cancel", "work offset": "1"}
 
 

@@ -6,6 +6,7 @@ input. Expected values are derived by hand in each test."""
 from __future__ import annotations
 
 import io
+import re
 from typing import Any
 
 import pytest
@@ -15,6 +16,7 @@ from postproc.errors import Diagnostics, ErrorList, ErrorLevel
 from postproc.setup import ControllerSettings, InputSettings, MachineSettings, MachineSetup
 from postproc.toolpath import toolpath_events
 from postproc.verify import verify_lines
+from tests.support import rs274
 
 HAAS = MachineSetup(controller=ControllerSettings(variant="haas"))
 FANUC_0M = MachineSetup(controller=ControllerSettings(variant="fanuc-0m"))
@@ -158,3 +160,101 @@ def test_no_warning_without_a_mix(text: str, setup: MachineSetup | None) -> None
     warned = io.StringIO()
     events(text, setup, warned)
     assert warned.getvalue() == ""
+
+
+# -- G10 data setting ------------------------------------------------------------------------------
+
+G10 = """%
+O3000
+G21 G90 G17
+G10 L2 P1 X100. Y50. Z-200.
+G10 L2 P2 X-20.
+G54 G00 X0 Y0
+Z10.
+G01 Z-1. F300.
+X10.
+G55 G00 X0
+G53 G00 Z0
+M30
+%"""
+
+
+def test_g10_work_offsets_shift_the_simulated_path() -> None:
+    # G54 = (100, 50, -200), G55 = (-20, 0, 0); G53 is machine coordinates; the start is machine (0, 0, 0)
+    assert [e for e in events(G10) if "move" in e] == [
+        {"line": 6, "move": "rapid", "x": 100, "y": 50, "z": 0},
+        {"line": 7, "move": "rapid", "x": 100, "y": 50, "z": -190},
+        {"line": 8, "move": "feed", "x": 100, "y": 50, "z": -201, "f": 300},
+        {"line": 9, "move": "feed", "x": 110, "y": 50, "z": -201, "f": 300},
+        {"line": 10, "move": "rapid", "x": -20, "y": 50, "z": -201},
+        {"line": 11, "move": "rapid", "x": -20, "y": 50, "z": 0},
+    ]
+
+
+def test_an_incremental_g10_adds_to_the_offset() -> None:
+    got = events("G21 G90\nG10 L2 P1 X100.\nG91 G10 L2 P1 X5.\nG90 G54 G00 X1.")
+    assert got == [{"line": 4, "move": "rapid", "x": 106, "y": 0, "z": 0}]
+
+
+def test_g10_stays_verbatim_for_fanuc_and_maps_to_g10_l2_for_linuxcnc_and_grbl() -> None:
+    assert translated(G10, "fanuc") == G10 + "\n"
+    assert translated(G10, "linuxcnc").splitlines()[3:5] == ["G10 L2 P1 X100. Y50. Z-200.", "G10 L2 P2 X-20."]
+    assert translated(G10, "grbl").splitlines()[3:5] == ["G10 L2 P1 X100. Y50. Z-200.", "G10 L2 P2 X-20."]
+
+
+def test_g10_translation_verifies_at_zero() -> None:
+    out = translated(G10, "linuxcnc")
+    report = verify_lines(lines(G10), io.StringIO(out), file_in="t.nc", file_out="t.ngc", source="fanuc",
+                          target="linuxcnc")
+    assert report.ok and report.max_deviation == 0, report.summary()
+
+
+@pytest.mark.parametrize("text, target, message", [
+    ("G21 G90\nG91 G10 L2 P1 X5.\nM30", "linuxcnc",
+     "t.nc:2:1: error: the linuxcnc dialect cannot express G10 L2 P1 X5. (setting work offset 1): it sets offsets "
+     "absolutely only (the source adds to the offset in incremental mode)"),
+    ("G21 G90\nG10 L2 P0 X5.\nM30", "linuxcnc",
+     "t.nc:2:1: error: the linuxcnc dialect cannot express G10 L2 P0 X5. (setting work offset 0): P0 here is not "
+     "the offset common to all work systems"),
+    ("G21 G90\nG10 L10 P5 R-123.4\nM30", "linuxcnc",
+     "t.nc:2:1: error: the linuxcnc dialect cannot express G10 L10 P5 R-123.4 (setting tool length 5): no such "
+     "table can be set from a program"),
+    ("G21 G90\nG10 L2 P1 X5. A90.\nM30", "grbl",
+     "t.nc:2:1: error: the grbl dialect cannot express G10 L2 P1 X5. A90. (setting work offset 1): it sets axes "
+     "XYZ only"),
+])
+def test_g10_without_an_equivalent_is_a_located_error(text: str, target: str, message: str) -> None:
+    with pytest.raises(ErrorList) as info:
+        translated(text, target)
+    assert [str(e) for e in info.value.errors] == [message]
+
+
+@pytest.mark.parametrize("text, message", [
+    ("G10 L2 P7 X1.", "t.nc:1:8: error: G10 L2 P7: the entry is P0-P6"),
+    ("G10 L2 X1.", "t.nc:1:1: error: G10 L2 needs the entry it sets, P0-P6"),
+    ("G10 L12 P3", "t.nc:1:1: error: G10 L12 P3 sets nothing (no R)"),
+])
+def test_bad_g10_words_are_located(text: str, message: str) -> None:
+    with pytest.raises(ErrorList) as info:
+        read_program(lines(text), file="t.nc", dialect="fanuc")
+    assert [str(e) for e in info.value.errors] == [message]
+
+
+@pytest.mark.skipif(not rs274.available(), reason="the LinuxCNC interpreter rs274 is not installed")
+def test_g10_translation_runs_in_linuxcnc_as_the_fanuc_program_moves() -> None:
+    """rs274 prints points in the active work system and each offset as SET_G5X_OFFSET: adding the offset
+    gives the machine position, which the simulation reports."""
+    theirs = []
+    offset = [0.0, 0.0, 0.0]
+    for call in rs274.run_rs274(translated(G10, "linuxcnc")):
+        m = re.search(r"SET_G5X_OFFSET\(\d+, ([^)]*)\)", call)
+        if m:
+            offset = [float(v) for v in m.group(1).split(",")[:3]]
+        m = re.search(r"STRAIGHT_(TRAVERSE|FEED)\(([^)]*)\)", call)
+        if m:
+            point = [float(v) + o for v, o in zip(m.group(2).split(",")[:3], offset)]
+            theirs.append({"move": "rapid" if m.group(1) == "TRAVERSE" else "feed", **dict(zip("xyz", point))})
+    ours = [e for e in events(G10) if "move" in e]
+    assert len(theirs) == len(ours), theirs
+    for a, b in zip(ours, theirs):
+        assert a["move"] == b["move"] and all(abs(float(a[k]) - b[k]) < 1e-3 for k in "xyz"), (a, b)

@@ -15,12 +15,12 @@ decimal point, so the decimal-point rule applies to written numbers only). A com
 
 from __future__ import annotations
 
-from typing import Any, ClassVar
+from typing import Any, ClassVar, Mapping
 
 from postproc.errors import ParseError, ProgramError
 from postproc.expr import Binary, Expr, Num
 from postproc.ir import (
-    Block, MachineFunction, Coolant, CutterCompensation, CycleCall, CycleCancel, DistanceMode, Dwell, Feed, FeedMode,
+    Block, DataSetting, MachineFunction, Coolant, CutterCompensation, CycleCall, CycleCancel, DistanceMode, Dwell, Feed, FeedMode,
     MachineCoordinates, Motion, NativeCode, PathControl, Plane, ProgramControl, ReturnLevel,
     SpindleControl, SpindleOrientation, SpindleSpeed, ToolChange, ToolLengthOffset, ToolSelect, Units,
     WorkOffset,
@@ -39,6 +39,8 @@ INTEGER_LETTERS = frozenset("NOTHDLP")
 _UPPER = {c: c.upper() for c in "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"}
 _UPPER[":"] = "O"  # ':' is ISO's spelling of the program number address
 CENTER_AXIS = {"I": "X", "J": "Y", "K": "Z"}
+DATA_KEY = "10"
+"""The number of the family's programmable data input code (``DataSetting``)."""
 
 
 class WordBlockSyntax(Syntax):
@@ -58,6 +60,13 @@ class WordBlockSyntax(Syntax):
     MACHINE_DEFAULTS: ClassVar[Defaults] = {}
     """Machine-specific codes per controller variant (``postproc.rs274.machine_codes``); the set-up's
     ``<MachineCodes>`` adds to them and wins."""
+    DATA_TABLES: ClassVar[Mapping[int, tuple[str, int, int]]] = {}
+    """Programmable data input (G10): L number -> (neutral table, first and last entry P may name); a G10
+    with another L is kept verbatim. Empty: every G10 is."""
+    DATA_INCREMENTAL: ClassVar[bool] = True
+    """A G10 in incremental mode adds to the entry (Fanuc); False: it sets it whatever the mode (LinuxCNC)."""
+    DATA_P0_ACTIVE: ClassVar[bool] = False
+    """G10 L2 P0 names the active work system (LinuxCNC), not an offset common to all (Fanuc)."""
     BASE_VARIANT: ClassVar[str] = ""
     """The variant whose machine codes every variant of the family has."""
 
@@ -96,7 +105,8 @@ class WordBlockSyntax(Syntax):
             else:
                 raw[up] = num
         state = ctx.state
-        if natives:
+        data_setting = natives == [DATA_KEY] and bool(self.DATA_TABLES)
+        if natives and not data_setting:
             self._native(block, ctx, natives, raw)
             return
         if machine_g:
@@ -141,6 +151,8 @@ class WordBlockSyntax(Syntax):
                 raise ParseError(f"address {up} is not used by the {self.TITLE} dialect",
                                  ctx.at(block, ctx.column_of(block, up)))
         used = {"N", "O"}
+        if data_setting and not self._data_setting(block, ctx, codes, values, used):
+            return  # a G10 the IR does not model: kept verbatim
         self.g_sections(block, ctx, codes, values, used, cycle_block)
         self.m_sections(block, ctx, mcodes, values, used)
         self.finish_words(block, ctx, values, used)
@@ -228,6 +240,44 @@ class WordBlockSyntax(Syntax):
         for up, num in raw.items():
             if up not in block.values:
                 block.values[up] = float(num) if "." in num else int(num)
+
+    def _data_setting(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],
+                      used: set[str]) -> bool:
+        """``G10 L2 P1 X.. Y..`` and the tool-offset forms -> ``DataSetting``; False (the block kept as
+        ``NativeCode``) for an L the dialect does not model."""
+        number = next(n for l, n in block.words if _UPPER[l] == "G" and g_key(n) == DATA_KEY)
+        at = ctx.at(block, col_of_word(block, "G", number))
+        ell = _index(values.get("L"))
+        table = None if ell is None else self.DATA_TABLES.get(ell)
+        native = f"G{number} ({self.CODES.native_g[DATA_KEY]})"
+        if table is None:
+            block.add(NativeCode(self.DIALECT, native, block.text or ""))
+            return False
+        name, first, last = table
+        code = f"G{number} L{ell}"
+        p = _index(values.get("P"))
+        if p is None:
+            raise ProgramError(f"{code} needs the entry it sets, P{first}-P{last}", at)
+        if not first <= p <= last:
+            raise ProgramError(f"{code} P{p}: the entry is P{first}-P{last}", ctx.at(block, ctx.column_of(block, "P")))
+        letters = AXIS_LETTERS if name.startswith("work_offset") else frozenset("R")
+        data = {k: _real(v) for k, v in values.items() if k in letters}
+        if set(values) - letters - {"L", "P", "N", "O"}:  # a word the IR does not model (LinuxCNC's R)
+            block.add(NativeCode(self.DIALECT, native, block.text or ""))
+            return False
+        if not data:
+            raise ProgramError(f"{code} P{p} sets nothing (no {'axis word' if 'R' not in letters else 'R'})", at)
+        used.update(("L", "P", *data))
+        distance = codes.get("03")
+        incremental = self.DATA_INCREMENTAL and (
+            distance[2] if distance is not None else ctx.state.distance) == "incremental"
+        if p == 0 and name == "work_offset" and self.DATA_P0_ACTIVE:
+            p = ctx.state.work_offset
+        keep = {"L", "P", *data}
+        text = " ".join(letter + num for letter, num in block.words
+                        if _UPPER[letter] in keep or _UPPER[letter] == "G" and g_key(num) == DATA_KEY)
+        block.add(DataSetting(self.family(), name, p, data, incremental, text))
+        return True
 
     def machine_codes(self, ctx: Context) -> dict[tuple[str, str], Any]:
         """This run's machine-specific codes (the family's defaults for the set-up's variant, then the
@@ -446,6 +496,13 @@ def _real(value: Any) -> Any:
 def _whole(value: Any) -> Any:
     """A section's integer value: the number as an int, or a computed value (``Expr``) as it is."""
     return value if isinstance(value, Expr) else int(value)
+
+
+def _index(value: Any) -> int | None:
+    """A whole-number word (G10's L and P) as an int; None when absent, computed or fractional."""
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or not float(value).is_integer():
+        return None
+    return int(value)
 
 
 def _milliseconds(block: Block, ctx: Context, num: str) -> int:

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from typing import ClassVar
+from typing import ClassVar, Mapping
 
 from postproc.rs274.codes import CodeTable
 from postproc.rs274.ngc_block_syntax import NgcWordBlockSyntax
@@ -18,3 +18,7 @@ class NgcBlockSyntax(NgcWordBlockSyntax):
     DIALECT: ClassVar[str] = "linuxcnc"
     CONTROL: ClassVar[str] = "LinuxCNC"
     CODES: ClassVar[CodeTable] = CODES
+    DATA_TABLES: ClassVar[Mapping[int, tuple[str, int, int]]] = {2: ("work_offset", 0, 9)}
+    """G10 L2 P0-P9 sets a work system's offset (P0 the active one); other G10 forms are kept verbatim."""
+    DATA_INCREMENTAL: ClassVar[bool] = False
+    DATA_P0_ACTIVE: ClassVar[bool] = True
