@@ -70,6 +70,8 @@ class Writer(abc.ABC):
                 self.ctx.diagnostics.error(err.located(self.ctx.at(block)))
                 continue
             if text is not None:
+                if (block.words or block.sections) and not text.strip():
+                    text = self.nothing_written(block)
                 emit(text)
         if not started and header:
             emit(header)
@@ -98,6 +100,15 @@ class Writer(abc.ABC):
             return self.comment_out(block)
         self.ctx.diagnostics.error(err)
         return None
+
+    def nothing_written(self, block: Block) -> str:
+        """A block whose words all mean nothing to the target (grbl's G64: it always blends) is written as
+        a comment with a warning, never as an empty line."""
+        err = PostprocError(f"nothing in this block has a meaning in {self.target.NAME if self.target else 'the target'}"
+                            "; written as a comment", self.ctx.at(block))
+        self.ctx.diagnostics.warn(err.message, err.location)
+        text = (block.text or " ".join(a + n for a, n in block.words)).replace("(", "[").replace(")", "]")
+        return f"(LINE {block.line}: {text.strip()})" + (block.eol or "\n")
 
     def comment_out(self, block: Block) -> str:
         """The source block as a comment line (for ``--on-unsupported warn``)."""

@@ -146,7 +146,8 @@ def test_machine_coordinates_without_a_move_are_not_written(target: str) -> None
     """G53 alone does nothing on Fanuc; RS274/NGC refuses it unless G0/G1 is in force (rs274: "Must use g0
     or g1 with g53"), which after an arc it is not."""
     text, _ = write("fanuc", target, "G02 X1. Y1. R1. F100.\nG53\nG53 G80\nG00 G53 X1.\n")
-    assert text == "G2 X1. Y1. R1. F100.\n\nG80\nG53 G0 X1.\n"
+    # a lone G53 means nothing there: a comment, never an empty line (issue 12 item 5)
+    assert text == "G2 X1. Y1. R1. F100.\n(LINE 3: G53)\nG80\nG53 G0 X1.\n"
 
 
 @pytest.mark.parametrize("dialect", ["linuxcnc", "grbl"])
