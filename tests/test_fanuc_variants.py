@@ -258,3 +258,12 @@ def test_g10_translation_runs_in_linuxcnc_as_the_fanuc_program_moves() -> None:
     assert len(theirs) == len(ours), theirs
     for a, b in zip(ours, theirs):
         assert a["move"] == b["move"] and all(abs(float(a[k]) - b[k]) < 1e-3 for k in "xyz"), (a, b)
+
+
+def test_a_g10_or_a_machine_code_inside_an_active_cycle_drills_no_hole() -> None:
+    # G81 at (5,5); the G10 moves G54 by X5 and is no hole position; M77 P2 keeps its P; X10. drills at
+    # machine X15
+    got = events("G21 G90 G00 X0 Y0 Z10.\nG81 X5. Y5. Z-1. R2. F100.\nG10 L2 P1 X5.\nM77 P2\nX10.\nG80")
+    holes = [(e["line"], e["x"]) for e in got if e.get("move") == "feed"]
+    assert holes == [(2, 5), (5, 15)]
+    assert {"line": 4, "event": "machine", "code": "M77"} in got
