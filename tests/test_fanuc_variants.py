@@ -267,3 +267,16 @@ def test_a_g10_or_a_machine_code_inside_an_active_cycle_drills_no_hole() -> None
     holes = [(e["line"], e["x"]) for e in got if e.get("move") == "feed"]
     assert holes == [(2, 5), (5, 15)]
     assert {"line": 4, "event": "machine", "code": "M77"} in got
+
+
+def test_linuxcnc_g10_l2_reaches_fanuc_by_meaning() -> None:
+    source = "G21 G90\nG10 L2 P2 X5. Y-3.\nG55 G0 X1. Y1.\nG91 G10 L2 P1 X1.\nG90\nM30\n"
+    out = io.StringIO()
+    translate(io.StringIO(source), out, file="t.ngc", source="linuxcnc", target="fanuc", on_unsupported="warn",
+              diagnostics=Diagnostics(ErrorLevel.RAISE, warn_stream=io.StringIO()))
+    # LinuxCNC's G10 L2 sets absolutely even under G91; Fanuc's would add there: refused, as a comment
+    assert out.getvalue().splitlines()[1:4] == [
+        "G10 L2 P2 X5. Y-3.", "G55 G00 X1. Y1.", "(UNSUPPORTED LINE 4: G91 G10 L2 P1 X1.)"]
+    report = verify_lines(io.StringIO(source), io.StringIO(out.getvalue()), file_in="t.ngc", file_out="t.nc",
+                          source="linuxcnc", target="fanuc")
+    assert report.ok and report.max_deviation == 0 and report.moves == 1  # G55 X1 Y1 = machine (6, -2)

@@ -530,6 +530,9 @@ class WordWriter(Writer):
     """Work systems that spelling numbers P1..P<count> (P1 = the first work system)."""
     SETTING_AXES: ClassVar[frozenset[str]] = frozenset("XYZABCUVW")
     """Axes a work offset setting may name."""
+    SETTING_ADDS_IN_INCREMENTAL: ClassVar[bool] = False
+    """The dialect's work offset setting adds to the offset in incremental mode (Fanuc's G10 under G91):
+    an absolute setting cannot be written while the program is incremental."""
 
     def data_setting_words(self, s: Any, block: Block) -> list[str]:
         """A G10 data setting: as written for a controller of its family; else, where exact, the target's
@@ -542,6 +545,8 @@ class WordWriter(Writer):
             why = "no such table can be set from a program"
         elif s.incremental:
             why = "it sets offsets absolutely only (the source adds to the offset in incremental mode)"
+        elif self.SETTING_ADDS_IN_INCREMENTAL and self.modal.distance == "incremental":
+            why = "in incremental mode its setting adds to the offset (program absolute mode first)"
         elif not 1 <= s.index <= self.WORK_OFFSET_COUNT:
             why = (f"its work systems are P1-P{self.WORK_OFFSET_COUNT}" if s.index else
                    "P0 here is not the offset common to all work systems")
