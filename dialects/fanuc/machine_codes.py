@@ -4,8 +4,8 @@ standard M codes, and what each variant adds or means otherwise (a set-up's ``<M
 Machine builders choose these numbers, so the lists keep to the common ones: rigid tapping M29, gear
 ranges M41-M44, through-spindle coolant M88/M89 (M50 on many Japanese builders' machines), the part
 counter M31; Haas's own (its Operator's Manual M-code list: chip auger M31/M33, pallet change M50,
-air blast M83/M84, 4th/5th axis brakes M10-M13, G103 block look-ahead limit, G187 smoothness). What
-an M code does for the simulation is its action; the rest moves no axis.
+automatic door M80/M81, air blast M83/M84, 4th/5th axis brakes M10-M13, G103 block look-ahead limit,
+G187 smoothness). What an M code does for the simulation is its action; the rest moves no axis.
 """
 
 from __future__ import annotations
@@ -29,6 +29,7 @@ HAAS = (
     m(12, "5th axis brake on"), m(13, "5th axis brake release"),
     m(31, "chip auger forward"), m(33, "chip auger stop"),
     m(50, "pallet change"),
+    m(80, "automatic door open"), m(81, "automatic door close"),
     m(83, "air blast on"), m(84, "air blast off"),
     g("103", "block look-ahead limit", "P"),
     g("187", "smoothness and corner rounding", "PE"),
