@@ -179,6 +179,9 @@ def build_parser() -> argparse.ArgumentParser:
     v.add_argument("--target-machine", metavar="TARGET.xml", help="set-up of the target machine (default: --machine)")
     v.add_argument("--tolerance", type=_tolerance, default=0.001, metavar="MM",
                    help="largest deviation accepted, in mm (default 0.001)")
+    v.add_argument("--allow-ignored", action="store_true",
+                   help="accept settings that move the tool (cutter compensation, tool length or work offset, "
+                        "path control) differing between the programs; they are listed either way")
     v.set_defaults(run=cmd_verify)
 
     i = command("ir", "print a program's IR as XML",
@@ -314,7 +317,8 @@ def cmd_verify(args: argparse.Namespace) -> int:
     with _open_program(args.input) as a, _open_program(args.output) as b:
         report = verify_lines(a, b, file_in=_name(args.input), file_out=_name(args.output), source=args.source,
                               target=args.target, setup=setup, target_setup=target_setup,
-                              tolerance=args.tolerance)
+                              tolerance=args.tolerance,
+                              allow_ignored=args.allow_ignored)
     print(report.summary())
     return 0 if report.ok else 1
 

@@ -18,7 +18,7 @@ class Context:
     reading dialect tells the neutral steps about its words."""
 
     __slots__ = ("file", "setup", "diagnostics", "state", "dialect", "cycle_words", "on_unsupported",
-                 "program_mode", "keep_check", "reader", "stops_before_motion")
+                 "program_mode", "keep_check", "reader", "stops_before_motion", "run_data")
 
     def __init__(self, file: str, setup: MachineSetup, diagnostics: Diagnostics, dialect: str,
                  cycle_words: CycleWords | None = None) -> None:
@@ -41,6 +41,9 @@ class Context:
         self.stops_before_motion = True
         """Whether the reading dialect flags stops it makes before the motion (``Dialect.STOPS_BEFORE_MOTION``;
         True unless the dialect says otherwise, so a step never skips flags it was not told are absent)."""
+        self.run_data: dict[str, Any] = {}
+        """What a reading step keeps between the blocks of one run besides the modal state (its own key:
+        a resolved table, what it has already warned about)."""
         self.keep_check: Callable[[list[Block]], str | None] | None = None
         """For 'auto': given the program from its first construct on, the reason it cannot be kept
         symbolically for the target (None: it can)."""

@@ -6,6 +6,7 @@ from typing import Callable
 
 from . import cycles
 from .block_rules import check_blocks
+from .machine_functions import drop_foreign_machine_functions
 from .program_end import comment_after_end
 from .control import register_control
 from .cycles.lowering import expand_canned_cycles
@@ -36,3 +37,4 @@ def postproc_register_lowerings(register: Callable[[Lowering], None]) -> None:
     register(check_blocks)  # first: it sees every expansion before a native target's are dropped
     register(expand_canned_cycles)
     register(comment_after_end)
+    register(drop_foreign_machine_functions)

@@ -70,6 +70,8 @@ class Writer(abc.ABC):
                 self.ctx.diagnostics.error(err.located(self.ctx.at(block)))
                 continue
             if text is not None:
+                if block.text is not None and (block.words or block.sections) and not text.strip():
+                    text = self.nothing_written(block) if not self._failed() else text
                 emit(text)
         if not started and header:
             emit(header)
@@ -98,6 +100,21 @@ class Writer(abc.ABC):
             return self.comment_out(block)
         self.ctx.diagnostics.error(err)
         return None
+
+    def _failed(self) -> bool:
+        """The run has errors (its output is discarded): a block its reading refused says nothing more."""
+        diagnostics = self.ctx.diagnostics
+        return bool(diagnostics.errors or diagnostics.consequences)
+
+    def nothing_written(self, block: Block) -> str:
+        """A source block whose words all mean nothing to the target (grbl's G64: it always blends) is
+        written as a comment with a warning, never as an empty line (a generated block that writes
+        nothing, such as an expansion's cycle cancel for grbl, has no source line to keep)."""
+        err = PostprocError(f"nothing in this block has a meaning in {self.target.NAME if self.target else 'the target'}"
+                            "; written as a comment", self.ctx.at(block))
+        self.ctx.diagnostics.warn(err.message, err.location)
+        text = (block.text or " ".join(a + n for a, n in block.words)).replace("(", "[").replace(")", "]")
+        return f"(LINE {block.line}: {text.strip()})" + (block.eol or "\n")
 
     def comment_out(self, block: Block) -> str:
         """The source block as a comment line (for ``--on-unsupported warn``)."""
@@ -153,6 +170,9 @@ class Dialect:
     """The controller stops the spindle and the coolant before the block's motion (the RS274/NGC order
     of execution), and its reader flags such stops ``before_motion`` (``postproc.event_order``). A
     target that stops after the motion moves them ahead only when the source reads so."""
+    FAMILY: ClassVar[str] = ""
+    """The controller family whose machine-specific codes (``MachineFunction``: builders' M codes,
+    machine G codes) this dialect writes verbatim; '' is a family of its own (the dialect's NAME)."""
     CYCLE_SEMANTICS: ClassVar[str] = "fanuc"
     """How the controller moves through its native canned cycles ('fanuc' or 'rs274', see
     ``postproc.cycles.semantics``): a cycle resolved under other rules is expanded for it."""
@@ -167,6 +187,11 @@ class Dialect:
                 if key.isupper() and key not in skip and not key.startswith("_"):
                     table[key] = sorted(value) if isinstance(value, frozenset) else value
         return table
+
+    @classmethod
+    def family(cls) -> str:
+        """The family machine-specific codes travel in (``FAMILY``, or the dialect alone)."""
+        return cls.FAMILY or cls.NAME
 
     @classmethod
     def pipeline(cls, setup: MachineSetup) -> Pipeline:

@@ -18,6 +18,9 @@ from .ir import Section
 
 AFTER_MOTION = frozenset(("SpindleOrientation", "ProgramControl"))
 """Sections that always act after the block's motion."""
+MACHINE_AFTER = frozenset(("spindle-stop", "coolant-off", "stop", "optional-stop"))
+"""Actions of a machine-specific code (``MachineFunction``) that act after the motion, as their standard
+counterparts do."""
 MOVING = frozenset(("CompoundMotion", "CycleCall", "CannedCycle"))
 """Sections that make a block move whatever its ``Motion`` holds (a canned cycle or its expansion)."""
 
@@ -32,6 +35,8 @@ def after_motion(key: str, section: Section) -> bool:
         return section.direction == "stop" and not section.before_motion  # type: ignore[attr-defined]
     if key == "Coolant":
         return section.mode == "off" and not section.before_motion  # type: ignore[attr-defined]
+    if key == "MachineFunction":
+        return section.action in MACHINE_AFTER  # type: ignore[attr-defined]
     return False
 
 

@@ -435,11 +435,89 @@ class NativeCode(Section):
         self.text = text
 
 
+class MachineFunction(Section):
+    """A machine-specific code (an M code of the machine builder, a machine G code such as a smoothing
+    setting) with the words it takes, as written (``text``). It passes verbatim between controllers of
+    ``family`` and has no equivalent anywhere else; the simulation runs its ``action`` (one of
+    ``postproc.setup.MachineCode``'s). ``declared``: the set-up or the family's defaults know it."""
+
+    XNAME = KEY = "MachineFunction"
+    __slots__ = ("family", "code", "action", "name", "text", "declared")
+    XATTRS = (XAttr("family"), XAttr("code"), XAttr("action", str, "none"), XAttr("name", str, ""),
+              XAttr("text"), XAttr("declared", bool, True))
+    family: str
+    code: str
+    action: str
+    name: str
+    text: str
+    declared: bool
+
+    def __init__(self, family: str, code: str, text: str, action: str = "none", name: str = "",
+                 declared: bool = True) -> None:
+        self.family = family
+        self.code = code
+        self.text = text
+        self.action = action
+        self.name = name
+        self.declared = declared
+
+    def describe(self) -> str:
+        """``M31 (part counter)``, for messages."""
+        return f"{self.code} ({self.name})" if self.name else self.code
+
+
+class DataSetting(Section):
+    """Programmable data input (Fanuc ``G10 L2 P1 X.. Y..``): write ``values`` (axis letter or 'R' ->
+    value in program units) into entry ``index`` of a controller table. ``table`` is neutral:
+    'work_offset' (index 1 = the first work system, 0 = the offset common to all), 'work_offset_extended',
+    'tool_length', 'tool_length_wear', 'cutter_offset', 'cutter_offset_wear'. ``incremental``: the values
+    are added to the entry. ``text`` is the block's setting as written, passed verbatim within ``family``."""
+
+    XNAME = KEY = "DataSetting"
+    __slots__ = ("family", "table", "index", "values", "incremental", "text")
+
+    def __init__(self, family: str, table: str, index: int, values: dict[str, float], incremental: bool,
+                 text: str) -> None:
+        self.family = family
+        self.table = table
+        self.index = index
+        self.values = values
+        self.incremental = incremental
+        self.text = text
+
+    def describe(self) -> str:
+        return f"{self.text} (setting {self.table.replace('_', ' ')} {self.index})"
+
+    @classmethod
+    def from_xml(cls, el: etree._Element) -> "DataSetting":
+        values: dict[str, float] = {}
+        for c in el:
+            if c.tag == "Values":
+                values = {k: float(v) for k, v in c.attrib.items()}
+            elif isinstance(c.tag, str):
+                raise ValueError(f"unexpected <{c.tag}>")
+        return cls(el.get("family", ""), el.get("table", ""), int(el.get("index", "0")), values,
+                   el.get("incremental") == "true", el.get("text", ""))
+
+    def make_xml_source(self, base_dir: str = ".", rel_file: str = "", exhibition_only: bool = False) -> etree._Element:
+        el = etree.Element(self.XNAME, family=self.family, table=self.table, index=str(self.index))
+        if self.incremental:
+            el.set("incremental", "true")
+        el.set("text", self.text)
+        values = etree.SubElement(el, "Values")
+        for k, v in self.values.items():
+            values.set(k, repr(float(v)))
+        return el
+
+    def _key(self) -> tuple[Any, ...]:
+        return (self.family, self.table, self.index, self.values, self.incremental, self.text)
+
+
 SIMPLE_SECTIONS: tuple[type[Section], ...] = (
     Sequence, BlockDelete, ProgramStart, TapeMark, Units, Plane, DistanceMode, WorkOffset, FeedMode, Feed,
     SpindleSpeed, SpindleControl, SpindleOrientation, ToolSelect, ToolChange, ToolLengthOffset,
     CutterCompensation, Coolant, Dwell, ProgramControl, PathControl, ReturnLevel, CycleCancel,
-    MachineCoordinates, CycleCall,
+    MachineCoordinates, CycleCall, MachineFunction,
 )
 
 
@@ -561,7 +639,7 @@ def register_sections(factory: XFactory | None = None) -> None:
 
 
 def iter_sections() -> Iterator[type[Section]]:
-    yield from (*SIMPLE_SECTIONS, Comments, Motion, NativeCode, CompoundMotion)
+    yield from (*SIMPLE_SECTIONS, Comments, Motion, NativeCode, CompoundMotion, DataSetting)
 
 
 class CompoundMotion(Section):

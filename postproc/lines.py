@@ -3,7 +3,8 @@ here, once for every dialect, with the line and column.
 
 * A line longer than the set-up's ``<Limits lineLength>`` (default 64 kB, more than any controller's
   buffer) is refused before anything scans it.
-* Outside comments a program is ASCII: Python's ``\\d`` and ``str.isdigit`` accept Arabic-Indic or
+* Outside comments a program is ASCII (but for a UTF-8 byte order mark opening the file, which
+  readers skip with ``lexable``, as they skip the DOS end-of-file byte): Python's ``\\d`` and ``str.isdigit`` accept Arabic-Indic or
   full-width digits, which no controller reads as numbers. Inside a comment - between ``(`` and ``)``,
   or after ``;`` - any character is text and is kept as it is (so Latin-1 bytes read as surrogates
   still round-trip).
@@ -58,13 +59,32 @@ def _checked_chunks(lines: Iterator[str], ctx: Context) -> Iterator[list[str]]:
             continue
         for line in chunk:
             number += 1
-            problem = line_problem(line, limit)
+            bom = number == 1 and line[:1] == BOM
+            problem = line_problem(line[1:] if bom else line, limit)
+            if problem is not None and bom:
+                problem = problem[0], problem[1] + 1
             if problem is None:
                 yield [line]
                 continue
             message, column = problem
             ctx.diagnostics.error(ParseError(message, Location(ctx.file, number, column)))
             yield [line[len(line.rstrip("\r\n")):]]
+
+
+BOM = "\ufeff"
+"""A UTF-8 byte order mark, which some editors write at the start of a file: accepted there."""
+EOF_BYTE = "\x1a"
+"""The DOS end-of-file byte (Ctrl-Z) that old DNC software appends to a program."""
+
+
+def lexable(number: int, text: str) -> str:
+    """The part of a line a reader lexes: without a byte order mark at the start of the file, and without
+    the DOS end-of-file byte and whatever follows it on its line (the block keeps its text as written,
+    so a program is still written back byte for byte)."""
+    if number == 1 and text[:1] == BOM:
+        text = text[1:]
+    cut = text.find(EOF_BYTE)
+    return text if cut < 0 else text[:cut]
 
 
 def line_problem(line: str, limit: int) -> tuple[str, int] | None:

@@ -119,6 +119,62 @@ class Limits(_Group):
     controller accepts anything near the default 64 kB)."""
 
 
+class ControllerSettings(_Group):
+    """Which controller of the dialect's family the machine has: its variant selects the family's
+    default machine codes and the variant's word rules (each rule may be set on its own)."""
+
+    TAG = "Controller"
+    variant: Literal["fanuc", "haas", "fanuc-0m"] = "fanuc"
+    """'fanuc' (0i/30i), 'haas' (dwell P with a decimal point in seconds; G103, G187 and Haas M
+    codes), 'fanuc-0m' (cutter compensation may take its register from H)."""
+    dwell_seconds: bool | None = None
+    """A dwell P written with a decimal point is in seconds (G04 P0.5, G82 ... P0.5); without a point it
+    stays milliseconds. None: as the variant does (Haas: yes)."""
+    cutter_register_h: bool | None = None
+    """G41/G42 may take the offset register from H when the block has no D and no tool length
+    offset (Fanuc 0M ``G42 H19``). None: as the variant does (0M: yes)."""
+
+    def dwell_seconds_rule(self) -> bool:
+        return self.variant == "haas" if self.dwell_seconds is None else self.dwell_seconds
+
+    def cutter_h_rule(self) -> bool:
+        return self.variant == "fanuc-0m" if self.cutter_register_h is None else self.cutter_register_h
+
+
+class MachineCode(BaseModel):
+    """One machine-specific code (``<M number="31" action="none" name="part counter"/>``, or ``<G ...>``):
+    kept verbatim between controllers of one family, simulated by its action."""
+
+    model_config = ConfigDict(alias_generator=_camel, populate_by_name=True, extra="forbid", frozen=True)
+    letter: Literal["M", "G"]
+    number: str = Field(pattern=r"^[0-9]{1,4}(\.[0-9]{1,2})?$")
+    """The code's number as a controller reads it (``31``, ``187``, ``5.1``); M numbers are whole."""
+    action: Literal["none", "stop", "optional-stop", "spindle-cw", "spindle-ccw", "spindle-stop",
+                    "coolant-on", "coolant-off", "gear", "tool-change"] = "none"
+    name: str = ""
+    """What the code does, for messages and the toolpath."""
+    words: str = Field("", pattern=r"^[A-Z]*$")
+    """Address letters the code takes with it (G187 P1 E0.01: 'PE'), kept verbatim beside it."""
+
+    @model_validator(mode="after")
+    def _whole_m(self) -> "MachineCode":
+        if self.letter == "M" and "." in self.number:
+            raise ValueError(f"an M code number is whole, got {self.number!r}")
+        if self.action != "none" and self.letter == "G":
+            raise ValueError("a machine G code has no action but none (it moves nothing)")
+        return self
+
+    def key(self) -> tuple[str, str]:
+        """``("M", "31")``, ``("G", "5.1")``: numbers compared as a controller reads them."""
+        return self.letter, _number_key(self.number)
+
+
+def _number_key(number: str) -> str:
+    whole, _, frac = number.partition(".")
+    frac = frac.rstrip("0")
+    return f"{int(whole)}.{frac}" if frac else str(int(whole))
+
+
 class Templates(BaseModel):
     """jinja2 templates (rendered sandboxed) for the program header and footer."""
 
@@ -126,7 +182,8 @@ class Templates(BaseModel):
     footer: str | None = None
 
 
-GROUPS: tuple[type[_Group], ...] = (InputSettings, OutputSettings, CycleSettings, MachineSettings, Limits)
+GROUPS: tuple[type[_Group], ...] = (InputSettings, OutputSettings, CycleSettings, MachineSettings, Limits,
+                                    ControllerSettings)
 
 
 class MachineSetup(XmlNode):
@@ -134,13 +191,14 @@ class MachineSetup(XmlNode):
 
     XNAME = "MachineSetup"
     __slots__ = ("name", "dialect", "pipeline", "input", "output", "cycles", "machine", "templates", "source",
-                 "template_lines", "limits", "library")
+                 "template_lines", "limits", "library", "controller", "machine_codes")
 
     def __init__(self, name: str = "default", dialect: str | None = None, pipeline: str | None = None,
                  input: InputSettings | None = None, output: OutputSettings | None = None,
                  cycles: CycleSettings | None = None, machine: MachineSettings | None = None,
                  templates: Templates | None = None, source: str | None = None, limits: Limits | None = None,
-                 library: list[str] | None = None) -> None:
+                 library: list[str] | None = None, controller: ControllerSettings | None = None,
+                 machine_codes: list[MachineCode] | None = None) -> None:
         self.name = name
         self.dialect = dialect
         self.pipeline = pipeline
@@ -151,6 +209,9 @@ class MachineSetup(XmlNode):
         self.machine = machine or MachineSettings()
         self.templates = templates or Templates()
         self.limits = limits or Limits()
+        self.controller = controller or ControllerSettings()
+        self.machine_codes = machine_codes if machine_codes is not None else []
+        """Machine-specific codes the set-up declares (``<MachineCodes>``), over the family's defaults."""
         self.library = library if library is not None else []
         """Folders searched for subprograms not in the program's file (``<Library path="..."/>``, relative
         to the set-up file's folder; ``--lib DIR`` adds to them)."""
@@ -160,7 +221,8 @@ class MachineSetup(XmlNode):
 
     def _key(self) -> tuple[Any, ...]:
         return (self.name, self.dialect, self.pipeline, self.input, self.output, self.cycles,
-                self.machine, self.templates, self.limits, tuple(self.library))
+                self.machine, self.templates, self.limits, tuple(self.library), self.controller,
+                tuple(self.machine_codes))
 
     def __repr__(self) -> str:
         return f"MachineSetup(name={self.name!r}, dialect={self.dialect!r})"
@@ -182,7 +244,7 @@ class MachineSetup(XmlNode):
         lines: dict[str, int] = {}
         by_tag = {g.TAG: g for g in GROUPS}
         attr_of = {InputSettings: "input", OutputSettings: "output", CycleSettings: "cycles",
-                   MachineSettings: "machine", Limits: "limits"}
+                   MachineSettings: "machine", Limits: "limits", ControllerSettings: "controller"}
         library: list[str] = []
         for child in el:
             if not isinstance(child.tag, str):
@@ -193,6 +255,11 @@ class MachineSetup(XmlNode):
                 continue
             if child.tag == "Library":
                 library.append(_library_from_xml(child))
+                continue
+            if child.tag == "MachineCodes":
+                if "machine_codes" in kwargs:
+                    raise ConfigError("<MachineCodes> appears twice", where(child))
+                kwargs["machine_codes"] = _machine_codes_from_xml(child)
                 continue
             group = by_tag.get(child.tag)
             if group is None:
@@ -214,7 +281,7 @@ class MachineSetup(XmlNode):
             el.set("dialect", self.dialect)
         if self.pipeline:
             el.set("pipeline", self.pipeline)
-        for group in (self.input, self.output, self.cycles, self.machine, self.limits):
+        for group in (self.input, self.output, self.cycles, self.machine, self.limits, self.controller):
             values = group.model_dump(by_alias=True, exclude_defaults=True)
             if values:
                 child = etree.SubElement(el, group.TAG)
@@ -227,6 +294,12 @@ class MachineSetup(XmlNode):
                     etree.SubElement(t, tag).text = text
         for path in self.library:
             etree.SubElement(el, "Library", path=path)
+        if self.machine_codes:
+            codes = etree.SubElement(el, "MachineCodes")
+            for code in self.machine_codes:
+                child = etree.SubElement(codes, code.letter)
+                for key, value in code.model_dump(by_alias=True, exclude_defaults=True, exclude={"letter"}).items():
+                    child.set(key, str(value))
         return el
 
 
@@ -256,6 +329,35 @@ def _group_from_xml(group: type[_Group], el: etree._Element) -> _Group:
         field_name = ".".join(str(p) for p in first["loc"])
         raise ConfigError(f"<{el.tag}> {field_name}: {msg}" if field_name else f"<{el.tag}> {msg}",
                           where(el)) from None
+
+
+def _machine_codes_from_xml(el: etree._Element) -> list[MachineCode]:
+    """``<MachineCodes>`` holds ``<M>`` and ``<G>`` elements; a code declared twice is an error."""
+    if el.attrib:
+        raise ConfigError("<MachineCodes> takes no attributes, only <M> and <G> elements", where(el))
+    codes: list[MachineCode] = []
+    seen: set[tuple[str, str]] = set()
+    for child in el:
+        if not isinstance(child.tag, str):
+            continue
+        if child.tag not in ("M", "G"):
+            raise ConfigError(f"unknown element <{child.tag}> in <MachineCodes> (expected <M> or <G>)", where(child))
+        if len([c for c in child if isinstance(c.tag, str)]):
+            raise ConfigError(f"<{child.tag}> takes attributes only", where(child))
+        try:
+            code = MachineCode.model_validate({"letter": child.tag, **dict(child.attrib)})
+        except ValidationError as exc:
+            first = exc.errors()[0]
+            msg = "unknown parameter" if first["type"] == "extra_forbidden" else str(
+                first.get("ctx", {}).get("error", first["msg"])) if first["type"] == "value_error" else first["msg"]
+            field_name = ".".join(str(p) for p in first["loc"])
+            raise ConfigError(f"<{child.tag}> {field_name}: {msg}" if field_name else f"<{child.tag}> {msg}",
+                              where(child)) from None
+        if code.key() in seen:
+            raise ConfigError(f"{code.letter}{code.number} is declared twice", where(child))
+        seen.add(code.key())
+        codes.append(code)
+    return codes
 
 
 def _library_from_xml(el: etree._Element) -> str:

@@ -6,10 +6,13 @@ Streaming: the simulator keeps the modal state and one position, never the progr
 such a controller first, so cycles arrive expanded as ``CompoundMotion``.
 
 Assumptions (a simulator knows no machine data):
-- Positions are absolute work coordinates in mm from the set-up's start position (``Machine startX``...).
-  Every work offset (G54...) and tool length offset is taken as zero; the path is the programmed point,
-  cutter compensation is not applied.
-- Machine coordinates (G53) are therefore the same as work coordinates; they are always absolute.
+- Positions are absolute coordinates in mm from the set-up's start position (``Machine startX``...).
+  Every work offset (G54...) is zero until the program sets one (G10 L2: ``DataSetting``), and then
+  shifts the absolute points programmed in that work system; tool length offsets are taken as zero; the
+  path is the programmed point, cutter compensation is not applied (``verify`` compares those settings
+  instead, see ``UNSIMULATED``).
+- Machine coordinates (G53) are therefore work coordinates until a G10 sets an offset; they are
+  always absolute.
 - A reference return (G28/G30) rapids to the intermediate point, then to the reference point, taken as
   machine zero = work zero on the axes named in the block.
 - Arc centres ``cx, cy, cz`` are absolute; on the axis normal to the plane the centre carries the arc's
@@ -30,12 +33,13 @@ from typing import Any, Callable, Iterable, Iterator
 
 from .api import gc_paused, read_blocks
 from .block_rules import NO_FEED, ArcError, arc_centre, check_blocks, needs_feed
+from .machine_functions import drop_foreign_machine_functions
 from .program_end import EndTracker, comment_after_end
 from .dialect import Dialect
 from .errors import Diagnostics, Location, PostprocError, ProgramError, UnsupportedError
 from .event_order import after_motion
 from .geometry import CENTRE_KEYS, PLACES
-from .ir import Block, Motion, Section
+from .ir import Block, DataSetting, MachineFunction, Motion, Section
 from .lower import lower_for
 from .plugins import Registry, default_registry
 from .setup import MachineSetup
@@ -50,9 +54,9 @@ LINEAR_AXES = frozenset("XYZUVW")
 """Axes converted from inches; rotary axes (A, B, C) are in degrees whatever the length unit."""
 
 
-TRANSLATE_ONLY = (check_blocks, comment_after_end)
-"""Generic lowering steps a simulation skips: it checks the feed itself, and it must see the blocks after
-the program end as they are written (to record the live ones)."""
+TRANSLATE_ONLY = (check_blocks, comment_after_end, drop_foreign_machine_functions)
+"""Generic lowering steps a simulation skips: it checks the feed itself, it must see the blocks after
+the program end as they are written (to record the live ones), and it runs machine-specific codes."""
 
 
 class ToolpathTarget(Dialect):
@@ -115,6 +119,16 @@ class Simulator:
         """Lines of the live blocks after the program end (code a streamed controller would run)."""
         self.current: Block | None = None
         """The block being simulated (for error locations)."""
+        self.unsimulated: list[tuple[int, str, str]] = []
+        """(line, setting, value) each time a setting the simulation does not apply changes
+        (``UNSIMULATED``): ``verify`` compares these between the two programs."""
+        self.settings: dict[str, str] = dict(_INITIAL_SETTINGS)
+        self.undeclared: set[str] = set()
+        self.offsets: dict[int, dict[str, float]] = {}
+        """Work offsets a G10 set, mm per axis, by work system (1 = G54; 0 the external offset)."""
+        self.shift: dict[str, float] = {}
+        """What the active work system adds to an absolute point (empty until a G10 sets an offset)."""
+        """Machine-specific codes warned about as undeclared (once each)."""
 
     # -- one block ---------------------------------------------------------------------------------
     def block(self, block: Block, emit: Callable[[Event], None]) -> None:
@@ -133,10 +147,16 @@ class Simulator:
         keys = sections.keys()
         if not keys.isdisjoint(MODAL_KEYS):
             self.apply_modal(sections)
+        if not keys.isdisjoint(_SETTING_KEYS):
+            self.record_settings(block)
+            setting = get("DataSetting")
+            if setting is not None:
+                self.data_setting(block, setting)
         line = block.line
         before = not keys.isdisjoint(_EVENT_KEYS)
         spindle = get("SpindleControl")
         coolant = get("Coolant")
+        machine = get("MachineFunction")
         if before:
             s = get("ToolSelect")
             if s is not None:
@@ -150,6 +170,8 @@ class Simulator:
                 self.spindle_event(line, spindle.direction, emit)
             if coolant is not None and not after_motion("Coolant", coolant):
                 emit({"line": line, "event": "coolant", "on": coolant.mode != "off"})
+            if machine is not None and not after_motion("MachineFunction", machine):
+                self.machine_function(block, machine, emit)
             s = get("Dwell")
             if s is not None:
                 emit({"line": line, "event": "dwell", "seconds": num(s.seconds)})
@@ -178,9 +200,55 @@ class Simulator:
             emit({"line": line, "event": "orient", "angle": num(s.angle)})
         if coolant is not None and after_motion("Coolant", coolant):
             emit({"line": line, "event": "coolant", "on": False})
+        if machine is not None and after_motion("MachineFunction", machine):
+            self.machine_function(block, machine, emit)
         s = get("ProgramControl")
         if s is not None:
             self.program_control(line, s.kind, emit)
+
+    def record_settings(self, block: Block) -> None:
+        """Note a change of a setting the path does not show (cutter compensation, tool length offset...)."""
+        for key, section in block.sections.items():
+            kind = UNSIMULATED.get(key)
+            if kind is None:
+                continue
+            value = _setting_text(key, section)
+            if value is not None and value != self.settings.get(kind):
+                self.settings[kind] = value
+                self.unsimulated.append((block.line, kind, value))
+
+    def machine_function(self, block: Block, code: MachineFunction, emit: Callable[[Event], None]) -> None:
+        """A machine-specific code: the event of its declared action, carrying the code (``verify`` lists
+        these rather than comparing them: another family has no such code). An undeclared code is
+        warned about once and moves nothing."""
+        line, action = block.line, code.action
+        if not code.declared and code.code not in self.undeclared:
+            self.undeclared.add(code.code)
+            self.ctx.diagnostics.warn(
+                f"{code.code} is not declared for this machine (the set-up's <MachineCodes> or the "
+                f"{code.family} family's defaults): simulated as a code that moves nothing",
+                self._at(block, code.code))
+        ev: Event
+        if action in ("spindle-cw", "spindle-ccw", "spindle-stop"):
+            direction = action[len("spindle-"):]
+            if direction == "stop" and self.spindle == "stop":
+                return
+            self.spindle = direction
+            ev = {"line": line, "event": "spindle", "dir": direction}
+        elif action in ("coolant-on", "coolant-off"):
+            ev = {"line": line, "event": "coolant", "on": action == "coolant-on"}
+        elif action in ("stop", "optional-stop"):
+            ev = {"line": line, "event": "stop", "optional": action == "optional-stop"}
+        elif action == "tool-change":
+            ev = {"line": line, "event": "tool", "number": self.modal.tool}
+        else:
+            ev = {"line": line, "event": "machine"}
+            if action != "none":
+                ev["action"] = action
+        ev["code"] = code.code
+        if code.name:
+            ev["name"] = code.name
+        emit(ev)
 
     def _tape_or_after_end(self, block: Block) -> None:
         """A ``%`` closes the program once it has content; after the end, live blocks are recorded."""
@@ -202,6 +270,8 @@ class Simulator:
         s = sections.get("Feed")
         if s is not None:
             self._set_feed(s.value)  # type: ignore[attr-defined]
+        if self.offsets and "WorkOffset" in sections:
+            self._shift()
 
     def spindle_event(self, line: int, direction: str, emit: Callable[[Event], None]) -> None:
         """A spindle change; stopping a stopped spindle is no event (two programs that differ only
@@ -254,7 +324,7 @@ class Simulator:
         if self.feed is None and needs_feed(m):
             raise ProgramError(NO_FEED, self._at(block), needs="F")
         machine = "MachineCoordinates" in block.sections
-        target = self.target(block, m.axes, absolute or machine)
+        target = self.target(block, m.axes, absolute or machine, machine)
         if mode == "rapid":
             self.line_move("rapid", target, line, emit)
         elif mode == "linear":
@@ -264,18 +334,39 @@ class Simulator:
         else:
             raise UnsupportedError(f"motion '{mode}' cannot be simulated", self._at(block))
 
-    def target(self, block: Block, axes: dict[str, float], absolute: bool) -> dict[str, float]:
-        """End point in mm of programmed axis words (absolute or incremental)."""
+    def target(self, block: Block, axes: dict[str, float], absolute: bool, machine: bool = False) -> dict[str, float]:
+        """End point in mm of programmed axis words (absolute or incremental); an absolute point in work
+        coordinates is shifted by the work offset a G10 set (``shift``), one in machine coordinates not."""
         pos = self.pos
         out = dict(pos)
         incremental = self.incremental and not absolute
+        shift = self.shift if not machine and not incremental else None
         for axis, value in axes.items():
             if axis not in pos:
                 raise ProgramError(f"axis {axis} is not on this machine (axes {''.join(self.axes)})",
                                    self._at(block, axis))
             v = value * self.scale if axis in LINEAR_AXES else value
-            out[axis] = pos[axis] + v if incremental else v
+            out[axis] = pos[axis] + v if incremental else v + shift.get(axis, 0.0) if shift else v
         return out
+
+    def data_setting(self, block: Block, setting: DataSetting) -> None:
+        """G10: a work offset is kept (mm, per axis) and shifts later absolute points in its system; tool
+        offset data is only recorded for ``verify`` (tool offsets count as zero)."""
+        if not setting.table.startswith("work_offset"):
+            self.unsimulated.append((block.line, "tool offset data", setting.text))
+            return
+        key = setting.index if setting.table == "work_offset" else 100 + setting.index
+        entry = self.offsets.setdefault(key, {})
+        for axis, value in setting.values.items():
+            v = value * self.scale if axis in LINEAR_AXES else value
+            entry[axis] = entry.get(axis, 0.0) + v if setting.incremental else v
+        self._shift()
+
+    def _shift(self) -> None:
+        """The offset of the active work system plus the external one (P0), applied to absolute points."""
+        active = self.offsets.get(self.modal.work_offset, {})
+        common = self.offsets.get(0, {})
+        self.shift = {a: active.get(a, 0.0) + common.get(a, 0.0) for a in set(active) | set(common)}
 
     def line_move(self, kind: str, target: dict[str, float], line: int, emit: Callable[[Event], None]) -> None:
         pos = self.pos
@@ -360,8 +451,31 @@ class Simulator:
 
 
 _CENTRE_LETTER = {"X": "I", "Y": "J", "Z": "K"}
+
+UNSIMULATED = {"CutterCompensation": "cutter compensation", "ToolLengthOffset": "tool length offset",
+               "WorkOffset": "work offset", "PathControl": "path control", "SpindleSpeed": "spindle speed"}
+"""Settings the simulation does not apply (the path is the programmed point, offsets count as zero, no
+blending, no speeds), by section key: ``verify`` compares their changes instead."""
+MOVES_THE_TOOL = frozenset(("cutter compensation", "tool length offset", "work offset", "path control",
+                            "tool offset data"))
+"""Of those, the ones that move the tool when they differ."""
+_SETTING_KEYS = frozenset((*UNSIMULATED, "DataSetting"))
+_INITIAL_SETTINGS = {"cutter compensation": "off", "tool length offset": "cancel", "work offset": "1"}
+
+
+def _setting_text(key: str, section: Any) -> str | None:
+    """How a setting reads in a verify report (None: it changes nothing, e.g. a one-shot exact stop)."""
+    if key == "CutterCompensation":
+        return section.mode if section.register is None else f"{section.mode} D{section.register}"
+    if key == "ToolLengthOffset":
+        return section.mode if section.register is None else f"{section.mode} H{section.register}"
+    if key == "WorkOffset":
+        return str(section.index)
+    if key == "PathControl":
+        return None if section.one_shot else section.mode.replace("_", " ")
+    return f"S{section.rpm:g}" if isinstance(section.rpm, (int, float)) else None
 _EVENT_KEYS = frozenset(("ToolSelect", "ToolChange", "SpindleControl", "Coolant", "Dwell", "SpindleOrientation",
-                         "ProgramControl"))
+                         "ProgramControl", "MachineFunction"))
 
 
 def header(ctx: Context, feed_mode: str | None) -> Event:
@@ -372,7 +486,8 @@ def header(ctx: Context, feed_mode: str | None) -> Event:
     return head
 
 
-def simulate(blocks: Iterable[Block], ctx: Context, live_after_end: list[int] | None = None) -> Iterator[Event]:
+def simulate(blocks: Iterable[Block], ctx: Context, live_after_end: list[int] | None = None,
+             unsimulated: list[tuple[int, str, str]] | None = None) -> Iterator[Event]:
     """Blocks (already lowered for ``ToolpathTarget``) -> the header, then events in execution order.
 
     Errors are reported to ``ctx.diagnostics`` with the block's location and the block is skipped;
@@ -382,6 +497,8 @@ def simulate(blocks: Iterable[Block], ctx: Context, live_after_end: list[int] | 
     sim = Simulator(ctx)
     if live_after_end is not None:
         sim.live_after_end = live_after_end  # the caller reads the lines recorded there
+    if unsimulated is not None:
+        sim.unsimulated = unsimulated  # so does verify the settings the path does not show
     report = ctx.diagnostics.error
     held: list[Event] = []
     holding = True
@@ -416,11 +533,13 @@ def simulate(blocks: Iterable[Block], ctx: Context, live_after_end: list[int] | 
 def toolpath_events(lines: Iterable[str], *, file: str, dialect: str | type[Dialect],
                     setup: MachineSetup | None = None, registry: Registry | None = None,
                     diagnostics: Diagnostics | None = None, check: bool = True,
-                    live_after_end: list[int] | None = None) -> Iterator[Event]:
+                    live_after_end: list[int] | None = None,
+                    unsimulated: list[tuple[int, str, str]] | None = None) -> Iterator[Event]:
     """Read a program in ``dialect`` and yield its toolpath (header first). Raises ``ErrorList`` at the
     end when the program had errors (unless ``check`` is False: the caller then checks
     ``diagnostics``); events already yielded then belong to a failed run. ``live_after_end``, if given,
-    receives the lines of live blocks after the program end."""
+    receives the lines of live blocks after the program end; ``unsimulated`` the changes of settings
+    the simulation does not apply (``Simulator.unsimulated``)."""
     setup = setup or MachineSetup()
     diagnostics = diagnostics or Diagnostics()
     registry = registry or default_registry()
@@ -431,6 +550,6 @@ def toolpath_events(lines: Iterable[str], *, file: str, dialect: str | type[Dial
         ctx, blocks = read_blocks(lines, file, dialect, setup, diagnostics, program_mode="execute")
         steps = [step for step in registry.lowerings if step not in TRANSLATE_ONLY]
         lowered = lower_for(blocks, ctx, ToolpathTarget, "error", steps)
-        yield from simulate(lowered, ctx, live_after_end)
+        yield from simulate(lowered, ctx, live_after_end, unsimulated)
     if check:
         diagnostics.check()

@@ -20,7 +20,7 @@ from .errors import Diagnostics, ErrorList, UsageError
 from .plugins import Registry
 from .setup import MachineSetup
 from .geometry import CENTRE_KEYS, PLANE_INDEX, arc_sweep
-from .toolpath import Event, start_position, toolpath_events
+from .toolpath import MOVES_THE_TOOL, Event, start_position, toolpath_events
 
 EVENT_TOLERANCE = 1e-6
 """Numbers in machine events (dwell seconds, angles) compare within this."""
@@ -58,10 +58,19 @@ class Report:
     mismatch: str | None = None
     mismatch_at: tuple[int | None, int | None] = (None, None)
     notes: list[str] = field(default_factory=list)
+    ignored: list[str] = field(default_factory=list)
+    """What the comparison left out (machine-specific codes, settings the simulation does not apply),
+    one line each."""
+    left_out_moves: bool = False
+    """A setting that moves the tool (cutter compensation, tool length or work offset, path control)
+    differs between the programs: the paths compared are not the paths cut."""
+    allow_ignored: bool = False
+    """``--allow-ignored``: such a difference does not fail the comparison."""
 
     @property
     def ok(self) -> bool:
-        return self.mismatch is None and self.max_deviation <= self.tolerance
+        return (self.mismatch is None and self.max_deviation <= self.tolerance
+                and (self.allow_ignored or not self.left_out_moves))
 
     def summary(self) -> str:
         where = f"IN:{self.where[0]} / OUT:{self.where[1]}" if self.where else "IN:- / OUT:-"
@@ -69,6 +78,10 @@ class Report:
             verdict = "structure differs"
         elif self.max_deviation > self.tolerance:
             verdict = f"exceeds tolerance {self.tolerance:g} mm"
+        elif self.left_out_moves and not self.allow_ignored:
+            verdict = "settings that move the tool differ (listed below; --allow-ignored accepts them)"
+        elif self.left_out_moves:
+            verdict = "ok, with settings that move the tool left out (--allow-ignored)"
         else:
             verdict = "ok"
         text = f"max deviation {self.max_deviation:.4f} mm over {self.moves} moves ({where}): {verdict}"
@@ -76,6 +89,8 @@ class Report:
             a, b = self.mismatch_at
             text += (f"\nfirst difference at IN:{'-' if a is None else a} / OUT:{'-' if b is None else b}: "
                      f"{self.mismatch}")
+        if self.ignored:
+            text += "\nnot compared:\n" + "\n".join(f"  {line}" for line in self.ignored)
         return text
 
 
@@ -234,7 +249,10 @@ def compare(events_in: Iterable[Event], events_out: Iterable[Event], *, start_in
             report.mismatch = f"the toolpath headers differ in {key}: {head_in.get(key)} vs {head_out.get(key)}"
             report.mismatch_at = (1, 1)
     eps = tolerance / 2.0
-    pairs = zip_longest(normalise(it_in, start_in, eps), normalise(it_out, start_out, eps))
+    codes_in: list[Event] = []
+    codes_out: list[Event] = []
+    pairs = zip_longest(normalise(_without_codes(it_in, codes_in), start_in, eps),
+                        normalise(_without_codes(it_out, codes_out), start_out, eps))
     for a, b in pairs:
         if report.mismatch is not None:
             continue  # drain both streams: a program error still has to surface
@@ -242,7 +260,59 @@ def compare(events_in: Iterable[Event], events_out: Iterable[Event], *, start_in
         if problem is not None:
             report.mismatch = problem
             report.mismatch_at = (_line(a), _line(b))
+    compare_machine_codes(report, codes_in, codes_out)
     return report
+
+
+def _without_codes(events: Iterator[Event], sink: list[Event]) -> Iterator[Event]:
+    """The events of a path but a machine-specific code's (they carry ``code``), which go to ``sink``:
+    another family has no such code, so they are listed, not compared."""
+    for ev in events:
+        if "code" in ev:
+            sink.append(ev)
+        else:
+            yield ev
+
+
+def compare_machine_codes(report: Report, codes_in: list[Event], codes_out: list[Event]) -> None:
+    """List each machine-specific code of either program: how often each side has it, from which line."""
+    seen: dict[str, tuple[str, list[int], list[int]]] = {}
+    for side, events in ((1, codes_in), (2, codes_out)):
+        for ev in events:
+            name, lines_in, lines_out = seen.setdefault(ev["code"], (ev.get("name", ""), [], []))
+            (lines_in if side == 1 else lines_out).append(ev["line"])
+    for code, (name, lines_in, lines_out) in seen.items():
+        what = f"{code} ({name})" if name else code
+        report.ignored.append(f"{what}, a machine-specific code: {_count(lines_in, 'IN')}, {_count(lines_out, 'OUT')}")
+
+
+def _count(lines: list[int], side: str) -> str:
+    if not lines:
+        return f"{side} none"
+    return f"{side} {len(lines)}x from line {lines[0]}"
+
+
+def compare_settings(report: Report, settings_in: list[tuple[int, str, str]],
+                     settings_out: list[tuple[int, str, str]]) -> None:
+    """Compare the changes of the settings the simulation does not apply, setting by setting: the same
+    sequence on both sides is a note when the setting moves the tool; a different one is listed, and
+    fails the comparison when the setting moves the tool (unless ``--allow-ignored``)."""
+    kinds = list(dict.fromkeys(kind for _, kind, _ in settings_in + settings_out))
+    for kind in kinds:
+        a = [(line, value) for line, k, value in settings_in if k == kind]
+        b = [(line, value) for line, k, value in settings_out if k == kind]
+        if [v for _, v in a] == [v for _, v in b]:
+            if kind in MOVES_THE_TOOL:  # the paths compared are the programmed ones, not those cut
+                report.ignored.append(f"{kind}: not simulated, the same on both sides ({_values(a)})")
+            continue
+        report.ignored.append(f"{kind} differs: IN {_values(a) or 'never set'}; OUT {_values(b) or 'never set'}")
+        if kind in MOVES_THE_TOOL:
+            report.left_out_moves = True
+
+
+def _values(changes: list[tuple[int, str]], most: int = 4) -> str:
+    text = ", ".join(f"{value} (line {line})" for line, value in changes[:most])
+    return text + (f", ... {len(changes) - most} more" if len(changes) > most else "")
 
 
 def _differ(a: Move | Event | None, b: Move | Event | None, report: Report) -> str | None:
@@ -288,8 +358,9 @@ def compare_after_end(report: Report, lines_in: list[int], lines_out: list[int])
 def verify_lines(lines_in: Iterable[str], lines_out: Iterable[str], *, file_in: str, file_out: str,
                  source: str, target: str, setup: MachineSetup | None = None,
                  target_setup: MachineSetup | None = None, tolerance: float = 0.001,
-                 registry: Registry | None = None) -> Report:
-    """Compare two programs given as lines. Raises ``ErrorList`` with both programs' errors, if any."""
+                 registry: Registry | None = None, allow_ignored: bool = False) -> Report:
+    """Compare two programs given as lines. Raises ``ErrorList`` with both programs' errors, if any.
+    ``allow_ignored``: settings that move the tool may differ (they are listed either way)."""
     if not math.isfinite(tolerance) or tolerance < 0:
         raise UsageError(f"the tolerance must be a finite number of at least 0, got {tolerance:g}")
     setup = setup or MachineSetup()
@@ -297,13 +368,18 @@ def verify_lines(lines_in: Iterable[str], lines_out: Iterable[str], *, file_in: 
     diag_in, diag_out = Diagnostics(), Diagnostics()
     after_in: list[int] = []
     after_out: list[int] = []
+    settings_in: list[tuple[int, str, str]] = []
+    settings_out: list[tuple[int, str, str]] = []
     events_in = toolpath_events(lines_in, file=file_in, dialect=source, setup=setup, registry=registry,
-                                diagnostics=diag_in, check=False, live_after_end=after_in)
+                                diagnostics=diag_in, check=False, live_after_end=after_in, unsimulated=settings_in)
     events_out = toolpath_events(lines_out, file=file_out, dialect=target, setup=target_setup,
-                                 registry=registry, diagnostics=diag_out, check=False, live_after_end=after_out)
+                                 registry=registry, diagnostics=diag_out, check=False, live_after_end=after_out,
+                                 unsimulated=settings_out)
     report = compare(events_in, events_out, start_in=start_position(setup),
                      start_out=start_position(target_setup), tolerance=tolerance)
+    report.allow_ignored = allow_ignored
     compare_after_end(report, after_in, after_out)
+    compare_settings(report, settings_in, settings_out)
     errors = diag_in.errors + diag_out.errors
     if errors:
         raise ErrorList(errors)
@@ -312,11 +388,13 @@ def verify_lines(lines_in: Iterable[str], lines_out: Iterable[str], *, file_in: 
 
 def verify_files(in_path: str, out_path: str, *, source: str, target: str,
                  setup: MachineSetup | None = None, target_setup: MachineSetup | None = None,
-                 tolerance: float = 0.001, registry: Registry | None = None) -> Report:
+                 tolerance: float = 0.001, registry: Registry | None = None,
+                 allow_ignored: bool = False) -> Report:
     """Compare a program file with its translation (the ``postproc verify`` command)."""
     with _open(in_path) as a, _open(out_path) as b:
         return verify_lines(a, b, file_in=in_path, file_out=out_path, source=source, target=target,
-                            setup=setup, target_setup=target_setup, tolerance=tolerance, registry=registry)
+                            setup=setup, target_setup=target_setup, tolerance=tolerance, registry=registry,
+                            allow_ignored=allow_ignored)
 
 
 def _open(path: str) -> Any:

@@ -191,7 +191,8 @@ def test_toolpath_and_verify_read_standard_input(tmp_path):
     grbl = tmp_path / "o.gcode"
     assert _run("translate", PROGRAM, "--from", "fanuc", "--to", "grbl", "--on-unsupported", "warn",
                 "-o", grbl).returncode == 0
-    done = _run_input(PROGRAM.read_bytes(), "verify", "-", grbl, "--from", "fanuc", "--to", "grbl")
+    done = _run_input(PROGRAM.read_bytes(), "verify", "-", grbl, "--from", "fanuc", "--to", "grbl",
+                     "--allow-ignored")  # grbl has no tool length offset (issue 12 item 5)
     assert done.returncode == 0 and done.stdout.decode().startswith("max deviation 0.0000 mm")
     path = _run_input(grbl.read_bytes(), "toolpath", "-", "--dialect", "grbl")
     assert path.returncode == 0 and path.stdout.startswith(b'{"toolpath": 1, "units": "mm", "dialect": "grbl"}\n')

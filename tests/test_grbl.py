@@ -71,7 +71,7 @@ def test_registered_through_its_entry_point_as_a_grbl_class_controller() -> None
     ("G91 G28 Z0.\n", "G91 G28 Z0.\n"),
     ("G55 G17 G40 G80\n", "G17 G55 G40\n"),  # grbl's G80 would leave no motion mode; no cycle to cancel
     ("S1200 M04\nM08\nM09 M05\n", "S1200 M4\nM8\nM5 M9\n"),
-    ("G98 G00 X5.\nG99\n", "G0 X5.\n(G99)\n"),
+    ("G98 G00 X5.\nG99\n", "G0 X5.\n(G99)\n"),  # G99 means nothing to grbl: a comment, not an empty line
     ("G64 G01 X5. F100.\n", "G1 X5. F100.\n"),
     ("M01\nM30\n", "M1\nM30\n"),
     ("G49 G00 Z50.\n", "G49\nG0 Z50.\n"),

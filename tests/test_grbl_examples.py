@@ -32,6 +32,12 @@ def _setup(tmp_path: Path, orientation: str) -> Path:
     return path
 
 
+def _point_mix(diagnostic: dict[str, str]) -> bool:
+    """O1004's warning about point-less words beside pointed ones (issue 12 item 3), which it mixes on
+    purpose; tests/test_fanuc_writer.py pins its text."""
+    return diagnostic["level"] == "warning" and "has no decimal point, so it counts least input" in diagnostic["message"]
+
+
 def _located(err: str) -> list[dict[str, str]]:
     found = []
     for line in err.splitlines():
@@ -46,7 +52,7 @@ def test_fanuc_example_to_grbl_verifies_with_zero_deviation(cli: Any, tmp_path: 
     out = tmp_path / (path.stem + ".gcode")
     result = cli("translate", path, "--from", "fanuc", "--to", "grbl", "--on-unsupported", "warn", "-o", out)
     assert result.status == 0, result.err
-    warnings = _located(result.err)
+    warnings = [w for w in _located(result.err) if not _point_mix(w)]
     assert warnings and all(w["level"] == "warning" and w["file"] == str(path) for w in warnings)
     source = path.read_text().splitlines()
     for w in warnings:
@@ -56,10 +62,16 @@ def test_fanuc_example_to_grbl_verifies_with_zero_deviation(cli: Any, tmp_path: 
     for line in out.read_text().splitlines():
         code = re.sub(r"\([^)]*\)", "", line)  # what grbl's parser sees: nothing it rejects
         assert not re.search(r"G8[1-9]|G7[346]|G9[5-9]|G4[1-4]\b|M0?6\b|M19|%|O\d|[HDQ]\d|^/", code), line
+    # grbl has no tool table: the G43 left out moves the tool, so verify fails unless told to accept it
     verify = cli("verify", path, out, "--from", "fanuc", "--to", "grbl")
+    if any("G43" in line for line in source):
+        assert verify.status == 1 and "tool length offset differs" in verify.out.decode(), verify.out.decode()
+    verify = cli("verify", path, out, "--from", "fanuc", "--to", "grbl", "--allow-ignored")
     assert verify.status == 0, verify.out.decode() + verify.err
     assert verify.out.decode().startswith("max deviation 0.0000 mm"), verify.out.decode()
-    assert verify.out.decode().rstrip().endswith(": ok")
+    assert verify.out.decode().splitlines()[0].endswith(
+        ": ok, with settings that move the tool left out (--allow-ignored)" if any("G43" in line for line in source)
+        else ": ok")
 
 
 @pytest.mark.parametrize("path", EXAMPLES, ids=lambda p: p.name)
@@ -68,7 +80,7 @@ def test_fanuc_example_to_grbl_fails_on_g43_without_warn(cli: Any, tmp_path: Pat
     result = cli("translate", path, "--from", "fanuc", "--to", "grbl", "-o", out)
     assert result.status == 1
     assert not out.exists()
-    errors = _located(result.err)
+    errors = [e for e in _located(result.err) if not _point_mix(e)]
     source = path.read_text().splitlines()
     g43_lines = [n for n, line in enumerate(source, 1) if "G43" in line]
     assert [int(e["line"]) for e in errors if "tool length offset" in e["message"]] == g43_lines

@@ -18,7 +18,7 @@ from postproc.expr import Binary, Func, Num, Unary, Var
 from postproc.errors import ConfigError
 from postproc.ir import (
     Block, BlockDelete, Comments, CompoundMotion, Coolant, CutterCompensation, CycleCall, CycleCancel,
-    DistanceMode, Dwell, Feed, FeedMode, MachineCoordinates, Motion, NativeCode, PathControl, Plane,
+    DistanceMode, Dwell, Feed, FeedMode, MachineCoordinates, MachineFunction, Motion, NativeCode, DataSetting, PathControl, Plane,
     ProgramControl, ProgramStart, ReturnLevel, Sequence, SpindleControl, SpindleOrientation, SpindleSpeed,
     Section, TapeMark, ToolChange, ToolLengthOffset, ToolSelect, Units, WorkOffset, iter_sections,
     register_sections,
@@ -75,6 +75,21 @@ SAMPLES: dict[str, list[tuple[Builder, str]]] = {
         (lambda c: Motion("linear", {"X": 0.1 + 0.2}),
          '<Motion mode="linear">\n  <Axes X="0.30000000000000004"/>\n</Motion>'),
     ],
+    "DataSetting": [
+        (lambda c: DataSetting("fanuc", "work_offset", 1, {"X": 100.0, "Z": -200.5}, False, "G10 L2 P1 X100. Z-200.5"),
+         '<DataSetting family="fanuc" table="work_offset" index="1" text="G10 L2 P1 X100. Z-200.5">\n'
+         '  <Values X="100.0" Z="-200.5"/>\n</DataSetting>'),
+        (lambda c: DataSetting("fanuc", "tool_length", 5, {"R": -1.5}, True, "G10 L10 P5 R-1.5"),
+         '<DataSetting family="fanuc" table="tool_length" index="5" incremental="true" text="G10 L10 P5 R-1.5">\n'
+         '  <Values R="-1.5"/>\n</DataSetting>')],
+    "MachineFunction": [
+        (lambda c: MachineFunction("fanuc", "M88", "M88", "coolant-on", "through-spindle coolant on"),
+         '<MachineFunction family="fanuc" code="M88" action="coolant-on" name="through-spindle coolant on" '
+         'text="M88"/>'),
+        (lambda c: MachineFunction("fanuc", "G187", "G187 P1 E0.01", name="smoothness"),
+         '<MachineFunction family="fanuc" code="G187" name="smoothness" text="G187 P1 E0.01"/>'),
+        (lambda c: MachineFunction("fanuc", "M77", "M77 P2", declared=False),
+         '<MachineFunction family="fanuc" code="M77" text="M77 P2" declared="false"/>')],
     "NativeCode": [(lambda c: NativeCode("fanuc", "G68 (coordinate rotation)", 'G68 X0 Y0 R45. (a<b & "c")\t'),
                     '<NativeCode dialect="fanuc" what="G68 (coordinate rotation)" '
                     'text="G68 X0 Y0 R45. (a&lt;b &amp; &quot;c&quot;)&#9;"/>')],

@@ -44,8 +44,11 @@ def test_golden_translation_moves_the_tool_as_its_source(source: Path) -> None:
     src, dst = _pair(source)
     expected = _expected(source)
     with source.open(encoding="utf-8", newline="") as a, expected.open(encoding="utf-8", newline="") as b:
-        report = verify_lines(a, b, file_in=str(source), file_out=str(expected), source=src, target=dst)
+        report = verify_lines(a, b, file_in=str(source), file_out=str(expected), source=src, target=dst,
+                              allow_ignored=True)
     assert report.ok, report.summary()
+    # only grbl (no tool table, no cutter compensation) leaves out settings that move the tool
+    assert not report.left_out_moves or dst == "grbl", report.summary()
 
 
 def test_every_translation_pair_has_cases() -> None:

@@ -34,6 +34,8 @@ class Fanuc(Dialect):
     G73-G89."""
     NATIVE_CYCLES = ALL_MILLING_CYCLES
     """G73, G74, G76, G81-G89 all run natively."""
+    FAMILY = "fanuc"
+    """Machine builders' codes (``machine_codes``) pass verbatim between Fanuc-family controls."""
     PROGRAMS = True
     """Custom Macro B variables, expressions, IF/GOTO, WHILE, M98/G65 subprograms."""
     LOWERING = (stops_before_motion,)

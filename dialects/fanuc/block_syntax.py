@@ -2,12 +2,14 @@
 
 from __future__ import annotations
 
-from typing import ClassVar
+from typing import ClassVar, Mapping
 
 from postproc.rs274.block_syntax import WordBlockSyntax
 from postproc.rs274.codes import CodeTable
+from postproc.rs274.machine_codes import Defaults
 
 from .codes import CODES
+from .machine_codes import DEFAULTS
 
 
 class FanucBlockSyntax(WordBlockSyntax):
@@ -18,3 +20,13 @@ class FanucBlockSyntax(WordBlockSyntax):
     DIALECT: ClassVar[str] = "fanuc"
     TITLE: ClassVar[str] = "Fanuc milling"
     CODES: ClassVar[CodeTable] = CODES
+    FAMILY: ClassVar[str] = "fanuc"
+    MACHINE_DEFAULTS: ClassVar[Defaults] = DEFAULTS
+    BASE_VARIANT: ClassVar[str] = "fanuc"
+    DATA_TABLES: ClassVar[Mapping[int, tuple[str, int, int]]] = {
+        2: ("work_offset", 0, 6), 20: ("work_offset_extended", 1, 300),
+        10: ("tool_length", 1, 999), 11: ("tool_length_wear", 1, 999),
+        12: ("cutter_offset", 1, 999), 13: ("cutter_offset_wear", 1, 999),
+    }
+    """G10 L2 P0-P6 (P0 the external offset, P1-P6 G54-G59), L20 P1-P300 (G54.1 P1-P300), L10-L13 the
+    tool offset memory C: length geometry/wear, radius geometry/wear (R)."""

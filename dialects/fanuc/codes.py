@@ -75,9 +75,7 @@ ROWS = (
 CODES = CodeTable(
     ROWS,
     native_g={
-        "5.1": "AI contour control",
         "7.1": "cylindrical interpolation",
-        "8": "look-ahead control",
         "10": "programmable data input",
         "11": "programmable data input cancel",
         "15": "polar coordinates cancel",
@@ -96,7 +94,7 @@ CODES = CodeTable(
         "92": "work coordinate system setting",
         "54.1": "additional work coordinate systems",
     },
-    native_m={29: "rigid tapping", 98: "subprogram call", 99: "subprogram return"},
+    native_m={98: "subprogram call", 99: "subprogram return"},
 )
 """Fanuc's code table. ``native_g``/``native_m``: codes kept verbatim; they round-trip to Fanuc and are
-unsupported anywhere else."""
+unsupported anywhere else. Machine builders' codes (M29, G05.1, ...) are in ``machine_codes``."""

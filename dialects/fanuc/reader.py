@@ -9,6 +9,7 @@ from postproc.dialect import Reader
 from postproc.errors import PostprocError
 from postproc.ir import Block, Sequence
 
+from postproc.lines import BOM, EOF_BYTE, lexable
 from postproc.numbers import CANONICAL_BLOCK
 
 from postproc.rs274.lexer import WORDS_ONLY, WORD, lex_block
@@ -57,7 +58,11 @@ class FanucReader(Reader):
                         yield block
                         continue
             try:
-                block = lex_block(file, number, text, eol)
+                if EOF_BYTE in text or number == 1 and text[:1] == BOM:
+                    block = lex_block(file, number, lexable(number, text), eol)
+                    block.text = text  # written back as it was
+                else:
+                    block = lex_block(file, number, text, eol)
                 if "M9" in text or "G6" in text or "m9" in text or "g6" in text:
                     read_call(block, self.ctx)
                 yield block

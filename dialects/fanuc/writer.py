@@ -25,6 +25,10 @@ class FanucWriter(WordWriter):
     SPELLING: ClassVar[ExprSpelling | None] = FANUC_SPELLING
     MACHINE_MOVES: ClassVar[frozenset[str]] = frozenset(("rapid",))
     """Fanuc's G53 always moves at rapid: a feed move in machine coordinates has no spelling."""
+    WORK_OFFSET_SETTING: ClassVar[str] = "G10 L2"
+    """G10 L2 P1-P6 sets G54-G59's offset (P0 is the external offset, which other dialects lack)."""
+    WORK_OFFSET_COUNT: ClassVar[int] = 6
+    SETTING_ADDS_IN_INCREMENTAL: ClassVar[bool] = True
 
     def statement_words(self, section: Section, block: Block) -> list[str]:
         """``#1=..``, ``IF``/``GOTO``/``WHILE``/``END`` through ``spell_statement_fanuc``; calls as

@@ -126,8 +126,8 @@ class CannedCycleResolveSyntax(Syntax):
             return
         if motion is not None and motion.mode is not None:  # type: ignore[attr-defined]
             return  # a reference return (group 00) leaves the cycle in force
-        if motion is None and ("Dwell" in sections or "NativeCode" in sections):
-            return  # G04 (its P is the dwell's) or a verbatim code such as M98 P..: not cycle data
+        if motion is None and not _NOT_CYCLE_DATA.isdisjoint(sections):
+            return  # G04 (its P is the dwell's), a G10, a verbatim code such as M98 P..: not cycle data
         if any(letter in block.values for letter in self._letters(ctx)):
             if _NATIVE_KEY in state.extra:
                 self._native(block, ctx, state.cycle.kind)
@@ -398,6 +398,10 @@ def _clearance(ctx: Context, kind: str, units: str) -> float | None:
     cycles = ctx.setup.cycles
     d = cycles.peck_retract if kind == "peck_chip" else cycles.peck_clearance
     return d if units == "mm" else d / MM_PER_INCH
+
+
+_NOT_CYCLE_DATA = frozenset(("Dwell", "NativeCode", "MachineFunction", "DataSetting"))
+"""Sections whose block's words belong to them, not to the active cycle."""
 
 
 def _seconds(p: float | int | None, rules: Semantics) -> float | None:

@@ -15,12 +15,12 @@ decimal point, so the decimal-point rule applies to written numbers only). A com
 
 from __future__ import annotations
 
-from typing import Any, ClassVar
+from typing import Any, ClassVar, Mapping
 
 from postproc.errors import ParseError, ProgramError
 from postproc.expr import Binary, Expr, Num
 from postproc.ir import (
-    Block, Coolant, CutterCompensation, CycleCall, CycleCancel, DistanceMode, Dwell, Feed, FeedMode,
+    Block, DataSetting, MachineFunction, Coolant, CutterCompensation, CycleCall, CycleCancel, DistanceMode, Dwell, Feed, FeedMode,
     MachineCoordinates, Motion, NativeCode, PathControl, Plane, ProgramControl, ReturnLevel,
     SpindleControl, SpindleOrientation, SpindleSpeed, ToolChange, ToolLengthOffset, ToolSelect, Units,
     WorkOffset,
@@ -29,6 +29,8 @@ from postproc.context import Context, word_columns
 from postproc.syntax import Syntax
 
 from .codes import CodeTable, g_key
+from .machine_codes import Defaults, machine_table
+from .point_mix import point_mix
 
 AXIS_LETTERS = frozenset("XYZABCUVW")
 DECIMAL_LETTERS = frozenset("XYZABCUVWIJKRQ")
@@ -37,6 +39,8 @@ INTEGER_LETTERS = frozenset("NOTHDLP")
 _UPPER = {c: c.upper() for c in "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"}
 _UPPER[":"] = "O"  # ':' is ISO's spelling of the program number address
 CENTER_AXIS = {"I": "X", "J": "Y", "K": "Z"}
+DATA_KEY = "10"
+"""The number of the family's programmable data input code (``DataSetting``)."""
 
 
 class WordBlockSyntax(Syntax):
@@ -50,7 +54,21 @@ class WordBlockSyntax(Syntax):
     CODES: ClassVar[CodeTable] = CodeTable(())
     """The dialect's code table: every G and M code the reader knows."""
     NATIVE_M_WORDS: ClassVar[str] = "PL"
-    """Words a verbatim M code takes with it (M98 P.. L..)."""
+    """Words a verbatim M code takes with it (M98 P.. L..), and an undeclared machine M code."""
+    FAMILY: ClassVar[str] = ""
+    """The controller family machine-specific codes travel in ('': the dialect alone)."""
+    MACHINE_DEFAULTS: ClassVar[Defaults] = {}
+    """Machine-specific codes per controller variant (``postproc.rs274.machine_codes``); the set-up's
+    ``<MachineCodes>`` adds to them and wins."""
+    DATA_TABLES: ClassVar[Mapping[int, tuple[str, int, int]]] = {}
+    """Programmable data input (G10): L number -> (neutral table, first and last entry P may name); a G10
+    with another L is kept verbatim. Empty: every G10 is."""
+    DATA_INCREMENTAL: ClassVar[bool] = True
+    """A G10 in incremental mode adds to the entry (Fanuc); False: it sets it whatever the mode (LinuxCNC)."""
+    DATA_P0_ACTIVE: ClassVar[bool] = False
+    """G10 L2 P0 names the active work system (LinuxCNC), not an offset common to all (Fanuc)."""
+    BASE_VARIANT: ClassVar[str] = ""
+    """The variant whose machine codes every variant of the family has."""
 
     def build(self, block: Block, ctx: Context) -> None:
         words = block.words
@@ -68,11 +86,16 @@ class WordBlockSyntax(Syntax):
         codes: dict[str, tuple[str, str, object, str]] = {}
         natives: list[str] = []
         mcodes: list[tuple[int, str]] = []
+        machine_g: list[str] = []
         raw: dict[str, str] = {}
         for letter, num in words:
             up = _UPPER[letter]
             if up == "G":
-                self._g_code(ctx, block, num, codes, natives)
+                key = g_key(num)
+                if key not in self.CODES.g and ("G", key) in self.machine_codes(ctx):
+                    machine_g.append(num)
+                else:
+                    self._g_code(ctx, block, num, codes, natives)
             elif up == "M":
                 if "." in num:
                     raise ParseError(f"M code M{num} takes no decimal point", ctx.at(block, col_of_word(block, "M", num)))
@@ -82,9 +105,12 @@ class WordBlockSyntax(Syntax):
             else:
                 raw[up] = num
         state = ctx.state
-        if natives:
+        data_setting = natives == [DATA_KEY] and bool(self.DATA_TABLES)
+        if natives and not data_setting:
             self._native(block, ctx, natives, raw)
             return
+        if machine_g:
+            self._machine_g(block, ctx, machine_g, raw)
         units = state.units
         unit = codes.get("06")
         if unit is not None:
@@ -92,6 +118,7 @@ class WordBlockSyntax(Syntax):
         cycle_block = "09" in codes and codes["09"][1] == "cycle" or (
             state.cycle is not None and "01" not in codes and "09" not in codes)
         divisor = _divisor(ctx, units)
+        mix = point_mix(ctx) if divisor else None
         for up, num in raw.items():
             if up in values:
                 if up not in DECIMAL_LETTERS and up not in INTEGER_LETTERS and up not in "FSK":
@@ -101,10 +128,16 @@ class WordBlockSyntax(Syntax):
             if up in DECIMAL_LETTERS and not (up == "K" and cycle_block):
                 if "." in num:
                     values[up] = float(num)
+                    if mix is not None and up in AXIS_LETTERS:
+                        mix.saw_pointed(ctx, up, block.line)
                 elif divisor:
-                    values[up] = int(num) / divisor
+                    value = values[up] = int(num) / divisor
+                    if mix is not None and up in AXIS_LETTERS:
+                        mix.saw_bare(ctx, block, up, num, value, units)
                 else:
                     values[up] = float(int(num))
+            elif up == "P" and "." in num and ctx.setup.controller.dwell_seconds_rule():
+                values[up] = _milliseconds(block, ctx, num)
             elif up in INTEGER_LETTERS or up == "K":
                 if "." in num:
                     raise ParseError(f"address {up} takes no decimal point ({up}{num})",
@@ -118,6 +151,8 @@ class WordBlockSyntax(Syntax):
                 raise ParseError(f"address {up} is not used by the {self.TITLE} dialect",
                                  ctx.at(block, ctx.column_of(block, up)))
         used = {"N", "O"}
+        if data_setting and not self._data_setting(block, ctx, codes, values, used):
+            return  # a G10 the IR does not model: kept verbatim
         self.g_sections(block, ctx, codes, values, used, cycle_block)
         self.m_sections(block, ctx, mcodes, values, used)
         self.finish_words(block, ctx, values, used)
@@ -166,6 +201,10 @@ class WordBlockSyntax(Syntax):
                     values.clear()
                     return False  # the general path explains the error
                 block.sections["Motion"] = Motion(mode, axes)
+                mix = point_mix(ctx)
+                if mix is not None:
+                    for up in axes:
+                        mix.saw_pointed(ctx, up, block.line)
             if "F" in values:
                 block.sections["Feed"] = Feed(values["F"])  # type: ignore[arg-type]  # a number on this path
             return True
@@ -202,6 +241,63 @@ class WordBlockSyntax(Syntax):
             if up not in block.values:
                 block.values[up] = float(num) if "." in num else int(num)
 
+    def _data_setting(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],
+                      used: set[str]) -> bool:
+        """``G10 L2 P1 X.. Y..`` and the tool-offset forms -> ``DataSetting``; False (the block kept as
+        ``NativeCode``) for an L the dialect does not model."""
+        number = next(n for l, n in block.words if _UPPER[l] == "G" and g_key(n) == DATA_KEY)
+        at = ctx.at(block, col_of_word(block, "G", number))
+        ell = _index(values.get("L"))
+        table = None if ell is None else self.DATA_TABLES.get(ell)
+        native = f"G{number} ({self.CODES.native_g[DATA_KEY]})"
+        if table is None:
+            block.add(NativeCode(self.DIALECT, native, block.text or ""))
+            return False
+        name, first, last = table
+        code = f"G{number} L{ell}"
+        p = _index(values.get("P"))
+        if p is None:
+            raise ProgramError(f"{code} needs the entry it sets, P{first}-P{last}", at)
+        if not first <= p <= last:
+            raise ProgramError(f"{code} P{p}: the entry is P{first}-P{last}", ctx.at(block, ctx.column_of(block, "P")))
+        letters = AXIS_LETTERS if name.startswith("work_offset") else frozenset("R")
+        data = {k: _real(v) for k, v in values.items() if k in letters}
+        if set(values) - letters - {"L", "P", "N", "O"}:  # a word the IR does not model (LinuxCNC's R)
+            block.add(NativeCode(self.DIALECT, native, block.text or ""))
+            return False
+        if not data:
+            raise ProgramError(f"{code} P{p} sets nothing (no {'axis word' if 'R' not in letters else 'R'})", at)
+        used.update(("L", "P", *data))
+        distance = codes.get("03")
+        incremental = self.DATA_INCREMENTAL and (
+            distance[2] if distance is not None else ctx.state.distance) == "incremental"
+        if p == 0 and name == "work_offset" and self.DATA_P0_ACTIVE:
+            p = ctx.state.work_offset
+        keep = {"L", "P", *data}
+        text = " ".join(letter + num for letter, num in block.words
+                        if _UPPER[letter] in keep or _UPPER[letter] == "G" and g_key(num) == DATA_KEY)
+        block.add(DataSetting(self.family(), name, p, data, incremental, text))
+        return True
+
+    def machine_codes(self, ctx: Context) -> dict[tuple[str, str], Any]:
+        """This run's machine-specific codes (the family's defaults for the set-up's variant, then the
+        set-up's own)."""
+        return machine_table(ctx, self.MACHINE_DEFAULTS, self.BASE_VARIANT)
+
+    def family(self) -> str:
+        return self.FAMILY or self.DIALECT
+
+    def _machine_g(self, block: Block, ctx: Context, machine_g: list[str], raw: dict[str, str]) -> None:
+        """A declared machine G code (G187 P1 E0.01): kept verbatim with the words it takes; the rest of
+        the block is read as usual."""
+        if len(machine_g) > 1:
+            raise ParseError(f"G{machine_g[1]}: only one machine-specific function per block is supported",
+                             ctx.at(block, col_of_word(block, "G", machine_g[1])))
+        num = machine_g[0]
+        code = self.machine_codes(ctx)[("G", g_key(num))]
+        parts = [f"G{num}"] + [up + raw.pop(up) for up in code.words if up in raw]
+        block.add(MachineFunction(self.family(), f"G{g_key(num)}", " ".join(parts), code.action, code.name))
+
     def g_sections(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],
                     used: set[str], cycle_block: bool) -> None:
         state = ctx.state
@@ -232,9 +328,15 @@ class WordBlockSyntax(Syntax):
             elif kind == "cycle_cancel":
                 block.add(CycleCancel())
             elif kind == "cutter":
+                register = None
                 if arg != "off" and "D" in values:
                     used.add("D")
-                block.add(CutterCompensation(arg, values.get("D") if arg != "off" else None))
+                    register = values["D"]
+                elif (arg != "off" and "H" in values and "08" not in codes
+                      and ctx.setup.controller.cutter_h_rule()):
+                    used.add("H")  # Fanuc 0M: G42 H19 takes the radius from offset 19
+                    register = values["H"]
+                block.add(CutterCompensation(arg, register))
             elif kind == "length":
                 if arg != "cancel":
                     if "H" not in values:
@@ -321,12 +423,15 @@ class WordBlockSyntax(Syntax):
         for number, num in mcodes:
             entry = table.get(number)
             if entry is None:
-                what = self.unknown_m(block, ctx, number, num)
-                if "NativeCode" in block.sections:
+                if "NativeCode" in block.sections or "MachineFunction" in block.sections:
                     raise ParseError(f"M{num}: only one machine-specific function per block is supported",
                                      ctx.at(block, col_of_word(block, "M", num)))
-                block.add(NativeCode(self.DIALECT, what, f"M{num}"))
-                used.update(self.NATIVE_M_WORDS)
+                what = self.unknown_m(block, ctx, number, num)
+                if what is not None:
+                    block.add(NativeCode(self.DIALECT, what, f"M{num}"))
+                    used.update(self.NATIVE_M_WORDS)
+                else:
+                    self.machine_m(block, ctx, number, num, values, used)
                 continue
             kind, arg = entry
             if kind in seen:
@@ -348,13 +453,34 @@ class WordBlockSyntax(Syntax):
         """The dialect's spelling of a code, for messages."""
         return self.CODES.spell(kind, arg) or kind
 
-    def unknown_m(self, block: Block, ctx: Context, number: int, num: str) -> str:
-        """What an M code outside the table is: kept verbatim (the ISO rule: any other M code is the
-        machine builder's)."""
+    def unknown_m(self, block: Block, ctx: Context, number: int, num: str) -> str | None:
+        """What an M code outside the table is when the dialect keeps it as native code (a description),
+        or None: a machine builder's code (``machine_m``)."""
         native = self.CODES.native_m.get(number)
-        if native is not None:
-            return f"M{num} ({native})"
-        return f"M{num} (machine-specific M function)"
+        return None if native is None else f"M{num} ({native})"
+
+    def machine_m(self, block: Block, ctx: Context, number: int, num: str, values: dict[str, Any],
+                  used: set[str]) -> None:
+        """An M code outside the table is the machine builder's (the ISO rule): kept verbatim with the
+        words it takes (its declaration's, else P and L), simulated by its declared action."""
+        code = self.machine_codes(ctx).get(("M", str(number)))
+        letters = code.words if code is not None else self.NATIVE_M_WORDS
+        parts = [f"M{num}"]
+        for up in letters:
+            if up in values and up not in used:
+                parts.append(up + self._word_text(block, up))
+                used.add(up)
+        if code is None:
+            block.add(MachineFunction(self.family(), f"M{number}", " ".join(parts), declared=False))
+        else:
+            block.add(MachineFunction(self.family(), f"M{number}", " ".join(parts), code.action, code.name))
+
+    @staticmethod
+    def _word_text(block: Block, up: str) -> str:
+        for letter, num in block.words:
+            if _UPPER[letter] == up:
+                return num
+        return ""
 
     def orient(self, block: Block, ctx: Context, num: str, values: dict[str, Any], used: set[str]) -> None:
         """An orient code without an angle word: the angle the machine's parameters hold (the set-up's
@@ -370,6 +496,23 @@ def _real(value: Any) -> Any:
 def _whole(value: Any) -> Any:
     """A section's integer value: the number as an int, or a computed value (``Expr``) as it is."""
     return value if isinstance(value, Expr) else int(value)
+
+
+def _index(value: Any) -> int | None:
+    """A whole-number word (G10's L and P) as an int; None when absent, computed or fractional."""
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or not float(value).is_integer():
+        return None
+    return int(value)
+
+
+def _milliseconds(block: Block, ctx: Context, num: str) -> int:
+    """A dwell P written with a decimal point, in seconds (the Haas rule), as the whole milliseconds a
+    point-less P means, so both spellings read alike."""
+    ms = float(num) * 1000.0
+    if abs(ms - round(ms)) > 1e-6:
+        raise ParseError(f"dwell P{num} (seconds) is finer than a millisecond",
+                         ctx.at(block, ctx.column_of(block, "P")))
+    return int(round(ms))
 
 
 def _divisor(ctx: Context, units: str) -> int:

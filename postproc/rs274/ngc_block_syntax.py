@@ -33,7 +33,7 @@ from postproc.expr import Binary, Expr, Num
 from postproc.ir import Block, Dwell, NativeCode, SpindleOrientation
 from postproc.state import MM_PER_INCH
 
-from .block_syntax import WordBlockSyntax, col_of_word, second_col
+from .block_syntax import DATA_KEY, WordBlockSyntax, col_of_word, second_col
 from .codes import g_key
 
 REAL_LETTERS = frozenset("XYZABCUVWIJKRQPF")
@@ -102,7 +102,8 @@ class NgcWordBlockSyntax(WordBlockSyntax):
                 raw[up] = num
         self._check_m_groups(block, ctx, mcodes)
         self._path_tolerance(codes, natives, raw)
-        if natives:
+        data_setting = natives == [DATA_KEY] and bool(self.DATA_TABLES)
+        if natives and not data_setting:
             self._native(block, ctx, natives, raw)
             return
         values = block.values
@@ -115,6 +116,13 @@ class NgcWordBlockSyntax(WordBlockSyntax):
         else:
             for up, num in raw.items():
                 values[up] = self._value(block, ctx, up, num)
+        if data_setting:
+            used = {"N"}
+            if self._data_setting(block, ctx, codes, values, used):
+                self.g_sections(block, ctx, codes, values, used, False)
+                self.m_sections(block, ctx, mcodes, values, used)
+                self.finish_words(block, ctx, values, used)
+            return
         state = ctx.state
         extra = state.extra
         cycle_block = "09" in codes and codes["09"][1] == "cycle" or (

@@ -27,9 +27,9 @@ from ..dialect import Dialect, Writer
 
 SECTION_ORDER = (
     "BlockDelete", "Sequence", "Assign", "Control", "MachineCoordinates", "PathControl", "Plane", "Units", "DistanceMode",
-    "WorkOffset", "FeedMode", "CutterCompensation", "ToolLengthOffset", "ReturnLevel", "CycleCancel",
+    "DataSetting", "WorkOffset", "FeedMode", "CutterCompensation", "ToolLengthOffset", "ReturnLevel", "CycleCancel",
     "Dwell", "Motion", "CannedCycle", "Feed", "SpindleSpeed", "ToolSelect", "ToolChange", "SpindleControl",
-    "SpindleOrientation", "Coolant", "ProgramControl", "NativeCode", "Comments",
+    "SpindleOrientation", "Coolant", "MachineFunction", "ProgramControl", "NativeCode", "Comments",
 )
 """Word order of a generated block; sections that only annotate are skipped by ``IGNORED``."""
 
@@ -539,6 +539,49 @@ class WordWriter(Writer):
 
     def program_control_words(self, s: Any, block: Block) -> list[str]:
         return self._code("program", s.kind, f"program {s.kind}", block)
+
+    WORK_OFFSET_SETTING: ClassVar[str] = ""
+    """How the dialect sets a work offset from the program (e.g. 'G10 L2', then P and the axis values,
+    absolute); '' when it has no such spelling."""
+    WORK_OFFSET_COUNT: ClassVar[int] = 0
+    """Work systems that spelling numbers P1..P<count> (P1 = the first work system)."""
+    SETTING_AXES: ClassVar[frozenset[str]] = frozenset("XYZABCUVW")
+    """Axes a work offset setting may name."""
+    SETTING_ADDS_IN_INCREMENTAL: ClassVar[bool] = False
+    """The dialect's work offset setting adds to the offset in incremental mode (Fanuc's G10 under G91):
+    an absolute setting cannot be written while the program is incremental."""
+
+    def data_setting_words(self, s: Any, block: Block) -> list[str]:
+        """A G10 data setting: as written for a controller of its family; else, where exact, the target's
+        absolute work offset setting; anything else has no equivalent here."""
+        family = self.target.family() if self.target is not None else self.DIALECT
+        if s.family == family:
+            return [s.text]
+        why = ""
+        if s.table != "work_offset" or not self.WORK_OFFSET_SETTING:
+            why = "no such table can be set from a program"
+        elif s.incremental:
+            why = "it sets offsets absolutely only (the source adds to the offset in incremental mode)"
+        elif self.SETTING_ADDS_IN_INCREMENTAL and self.modal.distance == "incremental":
+            why = "in incremental mode its setting adds to the offset (program absolute mode first)"
+        elif not 1 <= s.index <= self.WORK_OFFSET_COUNT:
+            why = (f"its work systems are P1-P{self.WORK_OFFSET_COUNT}" if s.index else
+                   "P0 here is not the offset common to all work systems")
+        elif not set(s.values) <= self.SETTING_AXES:
+            why = f"it sets axes {''.join(sorted(self.SETTING_AXES))} only"
+        if why:
+            self.unsupported(f"{s.describe()}: {why}", block)
+        return [*self.WORK_OFFSET_SETTING.split(), f"P{s.index}",
+                *(axis + self.number(value) for axis, value in s.values.items())]
+
+    def machine_function_words(self, s: Any, block: Block) -> list[str]:
+        """A machine-specific code as written, for a controller of its family; elsewhere it has no
+        equivalent (``postproc.machine_functions`` comments it out under ``--on-unsupported warn``)."""
+        family = self.target.family() if self.target is not None else self.DIALECT
+        if s.family != family:
+            raise UnsupportedError(f"{s.describe()}, a machine-specific code of the {s.family} family, has no "
+                                   f"equivalent in {self.DIALECT}", self.ctx.at(block))
+        return [s.text]
 
     def native_code_words(self, s: Any, block: Block) -> list[str]:
         if s.dialect != self.DIALECT:

@@ -8,7 +8,7 @@ Reading grbl matters for ``verify``: the toolpath of a translated program is sim
 
 from __future__ import annotations
 
-from typing import Any, ClassVar
+from typing import Any, ClassVar, Mapping
 
 from postproc.context import Context
 from postproc.errors import ParseError
@@ -28,6 +28,10 @@ class GrblBlockSyntax(NgcWordBlockSyntax):
     DIALECT: ClassVar[str] = "grbl"
     CONTROL: ClassVar[str] = "grbl"
     CODES: ClassVar[CodeTable] = CODES
+    DATA_TABLES: ClassVar[Mapping[int, tuple[str, int, int]]] = {2: ("work_offset", 0, 6)}
+    """G10 L2 P0-P6 sets a work system's offset (P0 the active one); other G10 forms are kept verbatim."""
+    DATA_INCREMENTAL: ClassVar[bool] = False
+    DATA_P0_ACTIVE: ClassVar[bool] = True
     REAL_LETTERS = frozenset("XYZIJKRPF")
     INTEGER_LETTERS = frozenset("NTL")
     M_GROUPS = M_GROUPS

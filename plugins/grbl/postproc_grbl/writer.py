@@ -69,6 +69,10 @@ def grbl_safe(text: str) -> str:
 class GrblWriter(WordWriter):
     DIALECT: ClassVar[str] = "grbl"
     CODES: ClassVar[CodeTable] = CODES
+    WORK_OFFSET_SETTING: ClassVar[str] = "G10 L2"
+    """G10 L2 P1-P6 sets work system P's offset, absolutely (G91 does not change it)."""
+    WORK_OFFSET_COUNT: ClassVar[int] = 6
+    SETTING_AXES: ClassVar[frozenset[str]] = GRBL_AXES
     DWELL_WORD: ClassVar[str] = "P"
     CYCLE_CANCEL_IS_MOTION: ClassVar[bool] = True
     """G80 is a motion code here: ``G80 G0`` is refused, a block's G0-G3 ends the cycle by itself."""

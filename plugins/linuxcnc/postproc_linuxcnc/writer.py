@@ -55,6 +55,9 @@ _LABELLED = (*_OPENING, *_CLOSING, ElseIf, Else, Break, Continue)
 class LinuxcncWriter(WordWriter):
     DIALECT: ClassVar[str] = "linuxcnc"
     CODES: ClassVar[CodeTable] = CODES
+    WORK_OFFSET_SETTING: ClassVar[str] = "G10 L2"
+    """G10 L2 P1-P9 sets work system P's offset, absolutely (G91 does not change it)."""
+    WORK_OFFSET_COUNT: ClassVar[int] = 9
     """G76 threads, G87/G88 take other words: no row spells Fanuc's fine, back or manual boring."""
     DWELL_WORD: ClassVar[str] = "P"
     CYCLE_CANCEL_IS_MOTION: ClassVar[bool] = True
