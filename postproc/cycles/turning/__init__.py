@@ -11,8 +11,11 @@ from __future__ import annotations
 
 from .finishing import finishing
 from .profile import Seg, TurnMove
+from .rough_facing import rough_facing
+from .rough_turning import rough_turning
 from .single_facing import single_facing
 from .single_threading import single_threading
 from .single_turning import single_turning
 
-__all__ = ["Seg", "TurnMove", "finishing", "single_facing", "single_threading", "single_turning"]
+__all__ = ["Seg", "TurnMove", "finishing", "rough_facing", "rough_turning", "single_facing", "single_threading",
+           "single_turning"]
