@@ -204,7 +204,7 @@ def test_g73_passes_step_evenly_from_the_relief_to_the_allowance(
 
 
 @settings(max_examples=200, deadline=None)
-@given(st.floats(-20.0, 20.0), st.floats(0.05, 12.0), st.floats(0.1, 3.0), st.floats(0.0, 1.0), st.floats(0.1, 4.0),
+@given(st.floats(-20.0, 20.0), st.floats(0.05, 12.0), st.floats(0.3, 3.0), st.floats(0.0, 1.0), st.floats(0.5, 4.0),
        st.floats(0.0, 0.5), st.booleans(), st.booleans())
 def test_g74_g75_pecks_reach_the_bottom_of_every_pass(x_span: float, depth: float, peck: float, e: float,
                                                       step: float, relief: float, facing: bool, down: bool) -> None:
