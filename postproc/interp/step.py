@@ -26,7 +26,7 @@ from ..context import Context
 from ..syntax import Syntax
 from .spelling import spell_integer, spell_number
 from .rules import STORED_PROGRAMS, SubprogramRules
-from .variables import FanucVariables, NgcVariables, Variables
+from .variables import FanucVariables, Variables, VariablesFactory
 
 if TYPE_CHECKING:
     from .store import Program
@@ -50,7 +50,7 @@ class ProgramSyntax(Syntax):
     """Words that end the program (nothing after them runs), e.g. ``("M", 30)``."""
     MACRO_LOCALS: ClassVar[int] = 33
     """Highest local variable a call argument may set."""
-    VARIABLES: ClassVar[type[FanucVariables] | type[NgcVariables]] = FanucVariables
+    VARIABLES: ClassVar[VariablesFactory] = FanucVariables
     """The variable model (and vacancy rules) of the dialect family."""
     LIBRARY_FILES: ClassVar[tuple[str, ...]] = ("{name}", "{name}.nc")
     """File names tried in each library folder for a subprogram (``{name}``: its name, brackets
@@ -174,7 +174,8 @@ class ProgramSyntax(Syntax):
                              kept_limit=ctx.setup.limits.kept_prefix)
         increment = ctx.setup.input.increment
         state = ctx.state
-        variables: Variables = self.VARIABLES(lambda: increment(state.units))
+        make: VariablesFactory = type(self).VARIABLES
+        variables: Variables = make(lambda: increment(state.units))
         interpreter = Interpreter(store, self, variables, ctx.setup.limits, ctx.diagnostics.error, annotate=True,
                                   rules=self.SUBPROGRAM_RULES)
         yield from interpreter.run(start=len(prefix))

@@ -15,16 +15,17 @@ from __future__ import annotations
 from typing import Callable
 
 from ..control import (
-    CONTROL, Break, Continue, Do, DoWhile, Else, ElseIf, EndIf, EndRepeat, EndWhile, If, Repeat, SubEnd,
-    SubStart, While,
+    CONTROL, Break, Case, Continue, Default, Do, DoWhile, Else, ElseIf, EndFor, EndIf, EndRepeat, EndSwitch,
+    EndWhile, For, If, Repeat, SubEnd, SubStart, Switch, Until, While,
 )
 from ..errors import ProgramError
 from ..ir import Block, Section
 from ..source_map import locate
 
-_HEADS: dict[type[Section], type[Section]] = {EndWhile: While, DoWhile: Do, EndRepeat: Repeat}
+_HEADS: dict[type[Section], type[Section]] = {EndWhile: While, DoWhile: Do, EndRepeat: Repeat, EndFor: For,
+                                              Until: Do}
 """Each loop end and the head it closes."""
-_LOOPS = (While, Do, Repeat)
+_LOOPS = (While, Do, Repeat, For)
 
 
 def source_text(block: Block) -> str:
@@ -46,7 +47,8 @@ class Program:
         self.pairs: dict[int, int] = {}
         """Loop head <-> end, and break/continue -> the head of their loop."""
         self.chains: dict[int, list[int]] = {}
-        """Every member of an if-chain -> the chain's positions (if, elseifs, else, endif)."""
+        """Every member of an if-chain -> the chain's positions (if, elseifs, else, endif); a switch ->
+        its cases and default, in order."""
         self.subs: dict[str, tuple[int, int]] = {}
         """Subprogram name -> (position of its first body block, position of its end)."""
         self.main_end = len(blocks)
@@ -85,9 +87,9 @@ class Program:
             self.subs.setdefault(name, (pos + 1, end))
 
     def _statement(self, control: Section, pos: int, block: Block, stack: list[tuple[Section, int]]) -> None:
-        if isinstance(control, (*_LOOPS, If, SubStart)):
+        if isinstance(control, (*_LOOPS, If, SubStart, Switch)):
             stack.append((control, pos))
-            if isinstance(control, If):
+            if isinstance(control, (If, Switch)):
                 self.chains[pos] = [pos]
             return
         kind = type(control)
@@ -102,10 +104,21 @@ class Program:
                 raise self._error(block, f"'{source_text(block)}' after the else branch")
             chain.append(pos)
             self.chains[pos] = chain
+        elif kind in (Case, Default, EndSwitch):
+            _, at = self._close(stack, Switch, control.label, block, pop=kind is EndSwitch)  # type: ignore[attr-defined]
+            chain = self.chains[at]
+            if kind is EndSwitch:
+                self.pairs[at] = pos
+                self.pairs[pos] = at
+                return
+            if kind is Case and isinstance(self.blocks[chain[-1]].get(CONTROL), Default):
+                raise self._error(block, f"'{source_text(block)}' after the default branch")
+            chain.append(pos)
         elif kind in (Break, Continue):
             label = control.label  # type: ignore[attr-defined]
+            heads = (*_LOOPS, Switch) if kind is Break else _LOOPS
             for section, at in reversed(stack):
-                if isinstance(section, _LOOPS) and section.label == label:
+                if isinstance(section, heads) and section.label == label:
                     self.pairs[pos] = at
                     return
             raise self._error(block, f"'{source_text(block)}' is not inside loop {label}")

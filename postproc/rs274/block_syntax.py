@@ -51,6 +51,9 @@ class WordBlockSyntax(Syntax):
     """The dialect's code table: every G and M code the reader knows."""
     NATIVE_M_WORDS: ClassVar[str] = "PL"
     """Words a verbatim M code takes with it (M98 P.. L..)."""
+    POINTLESS_IN_UNITS: ClassVar[bool] = False
+    """A number without a decimal point is in program units whatever the set-up's ``Input`` says
+    (DIN 66025 controls such as ISG: ``X10`` is 10 mm), instead of least input increments."""
 
     def build(self, block: Block, ctx: Context) -> None:
         words = block.words
@@ -91,7 +94,7 @@ class WordBlockSyntax(Syntax):
             units = unit[2]  # type: ignore[assignment]
         cycle_block = "09" in codes and codes["09"][1] == "cycle" or (
             state.cycle is not None and "01" not in codes and "09" not in codes)
-        divisor = _divisor(ctx, units)
+        divisor = 0 if self.POINTLESS_IN_UNITS else _divisor(ctx, units)
         for up, num in raw.items():
             if up in values:
                 if up not in DECIMAL_LETTERS and up not in INTEGER_LETTERS and up not in "FSK":
