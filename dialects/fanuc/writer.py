@@ -5,9 +5,11 @@ from __future__ import annotations
 
 from typing import ClassVar
 
-from postproc.control import Call, ModalCall, ModalCallCancel, Return
+from postproc.context import Context
+from postproc.control import Assign, Call, EndFor, EndWhile, For, ModalCall, ModalCallCancel, Return, While
+from postproc.dialect import Dialect
 from postproc.errors import UnsupportedError
-from postproc.expr import Expr, Num
+from postproc.expr import Binary, Expr, Num, Var
 from postproc.ir import Block, Section
 from postproc.rs274.codes import CodeTable
 from postproc.rs274.expressions import FANUC_SPELLING, ExprSpelling, spell_word_value
@@ -26,10 +28,20 @@ class FanucWriter(WordWriter):
     MACHINE_MOVES: ClassVar[frozenset[str]] = frozenset(("rapid",))
     """Fanuc's G53 always moves at rapid: a feed move in machine coordinates has no spelling."""
 
+    def __init__(self, ctx: Context, source_dialect: str, target: type[Dialect] | None = None) -> None:
+        super().__init__(ctx, source_dialect, target)
+        self.loops: list[tuple[str, Var | None, float]] = []
+        """Open loops written from another dialect: (source label, counter, step) of a counted loop, or
+        (label, None, 0) of a while loop; the depth is the ``DO`` number (Fanuc nests DO1-DO3)."""
+
     def statement_words(self, section: Section, block: Block) -> list[str]:
         """``#1=..``, ``IF``/``GOTO``/``WHILE``/``END`` through ``spell_statement_fanuc``; calls as
-        ``M98 P L``, ``G65 P L <arguments>`` (spec I letters), ``G66``/``G67``, returns as ``M99 [P]``."""
+        ``M98 P L``, ``G65 P L <arguments>`` (spec I letters), ``G66``/``G67``, returns as ``M99 [P]``.
+        From another dialect a loop's ``DO`` number is its depth, and a counted loop (``For``) is its
+        counter set before ``WHILE [#i LE end] DOm`` and grown before ``ENDm``."""
         try:
+            if self.source_dialect != self.DIALECT and isinstance(section, (While, EndWhile, For, EndFor)):
+                return self.loop_words(section, block)
             if isinstance(section, Call):
                 return self.call_words(section, block)
             if isinstance(section, ModalCall):
@@ -43,6 +55,34 @@ class FanucWriter(WordWriter):
             if err.location is None:
                 err.located(self.ctx.at(block))
             raise
+
+    def loop_words(self, section: While | EndWhile | For | EndFor, block: Block) -> list[str]:
+        eol = block.eol or "\n"
+        if isinstance(section, (While, For)):
+            depth = str(len(self.loops) + 1)
+            if isinstance(section, While):
+                head = spell_statement_fanuc(While(depth, section.cond))
+                self.loops.append((section.label, None, 0.0))
+                return [head]
+            step, end = section.step, section.end
+            if not (isinstance(step, Num) and step.value != 0.0 and isinstance(end, Num)):
+                self.unsupported("a counted loop whose end or step is computed or whose step is 0 (WHILE "
+                                 "would evaluate it on every pass, the counted loop once)", block)
+            assert isinstance(section.counter, Var)  # For's constructor holds it
+            init = spell_statement_fanuc(Assign([(section.counter, section.start)]))
+            test = Binary("le" if step.value > 0 else "ge", section.counter, end)
+            head = spell_statement_fanuc(While(depth, test))
+            self.loops.append((section.label, section.counter, step.value))
+            return [init + eol + head]
+        if not self.loops or self.loops[-1][0] != section.label:
+            self.unsupported(f"the end of loop {section.label!r}, which no written loop opened", block)
+        depth = str(len(self.loops))
+        _, counter, step_value = self.loops.pop()
+        end_words = spell_statement_fanuc(EndWhile(depth))
+        if counter is None:
+            return [end_words]
+        grow = spell_statement_fanuc(Assign([(counter, _grown(counter, step_value))]))
+        return [grow + eol + end_words]
 
     def call_words(self, call: Call, block: Block) -> list[str]:
         if call.kind == "macro":
@@ -86,3 +126,8 @@ def _whole(expr: Expr) -> str:
     if isinstance(expr, Num) and expr.value.is_integer() and expr.value >= 0:
         return str(int(expr.value))
     return spell_word_value(expr, FANUC_SPELLING)
+
+
+def _grown(counter: Var, step: float) -> Binary:
+    """The counter after one pass: ``#i+step`` or ``#i-|step|``."""
+    return Binary("add", counter, Num(step)) if step > 0 else Binary("sub", counter, Num(-step))

@@ -19,7 +19,8 @@ Semantics of ISG's words (DIALECTS.md 1.3; [?] where the manual we read does not
 fmod [?], ``INT`` truncates toward zero [?], ``ROUND`` rounds half away from zero [?], ``FRACT`` is
 ``x - INT[x]``, ``SQR`` squares, ``DEXP``/``LOG`` are base 10, angles in degrees, ``ATAN`` takes one
 argument; comparisons are exact [?] and give 1 or 0. Precedence: ``**`` above ``* / MOD`` above
-``+ -`` above the comparisons.
+``+ -`` above the comparisons, all left-associative [?]; a sign directly before ``**`` (``-2 ** 2``) is
+refused as ambiguous, and written ``[-2] ** 2``.
 """
 
 from __future__ import annotations
@@ -91,12 +92,18 @@ class _Parser:
             raise ExprSyntaxError(f"expression nested deeper than {MAX_DEPTH} levels", pos)
 
     def expression(self, pos: int, min_prec: int = 0) -> tuple[int, Expr]:
+        start = skip(self.text, pos)
+        signed = self.text[start:start + 1] in ("+", "-")
         pos, left = self.operand(pos)
         while True:
             pos = skip(self.text, pos)
             end, word = self.operator(pos)
             if word is None:
                 return pos, left
+            if word == "**" and signed:
+                raise ExprSyntaxError("a sign before '**' is ambiguous (is -2 ** 2 4 or -4?): write [-2] ** 2 "
+                                      "or -[2 ** 2]", start)
+            signed = False
             op, prec = BINARY[word]
             if prec <= min_prec:
                 return pos, left
@@ -288,6 +295,8 @@ def spell_expr(expr: Expr, min_prec: int = 0, leading: bool = True) -> str:
             raise UnsupportedError(f"ISG has no operator for {expr.op!r}")
         word, prec = found
         left = spell_expr(expr.left, prec - 1, leading)
+        if word == "**" and left[:1] in ("-", "+"):
+            left = f"[{left}]"  # a sign before ** is refused when read (its precedence is not known)
         right = spell_expr(expr.right, prec, False)
         sep = f" {word} " if word == "MOD" or prec == _COMPARE else word
         text = left + sep + right
