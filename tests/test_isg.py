@@ -266,3 +266,22 @@ def test_hostile_isg_input_gives_located_errors(text: str, message: str) -> None
     with pytest.raises(ErrorList) as caught:
         _moves(text, "isg", SMALL)
     assert str(caught.value.errors[0]).startswith(message), str(caught.value.errors[0])
+
+
+# -- regressions found by tests/test_isg_fuzz.py ------------------------------------------------------
+
+def test_a_continued_block_commented_out_stays_one_comment_line() -> None:
+    out, _ = _translate("G71 G90 G00 X0 Y0 Z10\nG01 X10 \\\nG161\nM30\n", "isg", "grbl", warn=True)
+    assert "(UNSUPPORTED LINE 2: G01 X10 \\ G161)\n" in out
+    read_program(io.StringIO(out), file="out.nc", dialect="grbl")
+
+
+def test_an_unset_p_parameter_fails_translation_where_fanuc_would_read_it_vacant() -> None:
+    assert _errors("G71 G90 G00 X0 Y0 Z10\nP1=1\nG01 XP1 Y-P2 F200\nM30\n", "isg", "fanuc") == [
+        "in.nc:3:5: error: P2 is read before it is set"]
+
+
+def test_a_return_in_the_main_program_is_refused_not_a_restart() -> None:
+    # Fanuc's M99 in a main program starts it again: ISG's M17 there must not become one
+    assert _errors("G71 G90 G00 X0 Y0 Z10\nP1=1\nM17\n", "isg", "fanuc") == [
+        "in.nc:3:1: error: 'M17' returns from the main program (it ends a subroutine)"]

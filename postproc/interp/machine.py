@@ -371,6 +371,8 @@ class Interpreter:
         elif isinstance(control, SubEnd):
             value = None if control.value is None else evaluate_number(control.value, vars_, "a return value")
             self._return(frame, block, value, None)
+        elif isinstance(control, Return) and len(self.frames) == 1 and self.rules.main_return_refused:
+            raise ProgramError(f"'{source_text(block)}' returns from the main program (it ends a subroutine)")
         elif isinstance(control, Return) and len(self.frames) == 1 and self.rules.main_return_words:
             self.ended = True  # the words that end the program run instead
             yield ExecutedBlock(block.line, None, block.eol, list(self.rules.main_return_words), frame.origin)

@@ -56,6 +56,9 @@ class ProgramSyntax(Syntax):
     """File names tried in each library folder for a subprogram (``{name}``: its name, brackets
     removed; ``{number}``: the name as an int, for ``{number:04d}``-style patterns)."""
     PROGRAM_LABEL: ClassVar[str] = "{name}"
+    RUN_BEFORE_KEEP: ClassVar[bool] = False
+    """Run a program before keeping it symbolically for another dialect, and refuse it where the run
+    fails: for a dialect whose run-time errors (an unset variable read) are values in the targets."""
     SUBPROGRAM_RULES: ClassVar[SubprogramRules] = STORED_PROGRAMS
     """How numbered subprograms are found and ended (``postproc.interp.rules``)."""
     """How messages name a subprogram (``O{number:04d}``, ``o{name}``)."""
@@ -138,6 +141,8 @@ class ProgramSyntax(Syntax):
             body.extend(blocks)
             reason = self._keep_reason(body, ctx)
             if reason is None:
+                if self.RUN_BEFORE_KEEP:
+                    self._check_runs(body, ctx, kept, seen)
                 yield from body
                 return
             ctx.diagnostics.warn(f"the program is flattened (its evaluated motion is written): {reason}",
@@ -145,17 +150,28 @@ class ProgramSyntax(Syntax):
             block, blocks = body[0], iter(body[1:])
         yield from self._run(block, blocks, ctx, kept, seen)
 
+    def _check_runs(self, body: list[Block], ctx: Context, kept: deque[tuple[str, str] | None], seen: int) -> None:
+        """Run fresh copies of the program to its end, reporting the interpreter's first error (located in
+        the program): a program kept symbolically then fails to translate where it fails to run."""
+        copies = self._copies(body, ctx)
+        if copies:
+            for _ in self._run(copies[0], iter(copies[1:]), ctx, kept, seen):
+                pass
+
+    def _copies(self, body: list[Block], ctx: Context) -> list[Block]:
+        copies = self.read_lines([(b.text or "") + b.eol for b in body], ctx.file, ctx,
+                                 Diagnostics(ErrorLevel.IGNORE))
+        for original, copy in zip(body, copies):
+            copy.line = original.line
+        return copies
+
     def _keep_reason(self, body: list[Block], ctx: Context) -> str | None:
         """Why ``body`` (the program from its first construct on) cannot travel symbolically, through
         ``ctx.keep_check`` on fresh copies (the check runs the later steps, which change blocks)."""
         check = ctx.keep_check
         if check is None:
             return "the target's spelling of the program's constructs was not checked"
-        copies = self.read_lines([(b.text or "") + b.eol for b in body], ctx.file, ctx,
-                                 Diagnostics(ErrorLevel.IGNORE))
-        for original, copy in zip(body, copies):
-            copy.line = original.line
-        return check(copies)
+        return check(self._copies(body, ctx))
 
     def _run(self, first: Block, rest: Iterator[Block], ctx: Context, kept: deque[tuple[str, str] | None],
              seen: int) -> Iterator[Block]:

@@ -19,7 +19,7 @@ from ..control import (
     EndWhile, For, If, Repeat, SubEnd, SubStart, Switch, Until, While,
 )
 from ..errors import ProgramError
-from ..ir import Block, Section
+from ..ir import Block, Section, one_line
 from ..source_map import locate
 
 _HEADS: dict[type[Section], type[Section]] = {EndWhile: While, DoWhile: Do, EndRepeat: Repeat, EndFor: For,
@@ -30,7 +30,7 @@ _LOOPS = (While, Do, Repeat, For)
 
 def source_text(block: Block) -> str:
     """The construct as written, for messages (or the block's words when it has no text)."""
-    text = block.text if block.text is not None else " ".join(a + n for a, n in block.words)
+    text = one_line(block.text) if block.text is not None else " ".join(a + n for a, n in block.words)
     return text.strip() or type(block.get(CONTROL)).__name__
 
 

@@ -18,7 +18,7 @@ from ..event_order import after_motion
 from ..expr import Expr
 from .codes import CodeTable
 from .expressions import ExprSpelling, spell_word_value
-from ..ir import Block, CompoundMotion, Motion, Section
+from ..ir import Block, CompoundMotion, Motion, Section, one_line
 from ..numbers import EXACT, EXACT_INCH, MAX_PLACES, canonical_number_re, format_decimal
 from ..state import MM_PER_INCH, ModalState, changes_nothing
 from ..context import Context
@@ -293,7 +293,7 @@ class WordWriter(Writer):
 
     def source_text(self, block: Block) -> str:
         if block.text is not None:
-            return block.text.strip()
+            return one_line(block.text).strip()
         return " ".join(letter + num for letter, num in block.words)
 
     # -- section words -----------------------------------------------------------------------------
