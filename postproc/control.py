@@ -34,6 +34,8 @@ CONTROL = "Control"
 """Section key of a block's control statement (one per block)."""
 ASSIGN = "Assign"
 """Section key of a block's assignments."""
+LABEL = "Label"
+"""Section key of a block's named jump label."""
 CALL_KINDS = frozenset({"sub", "macro"})
 """``sub``: the subprogram shares the caller's local variables (Fanuc M98); ``macro``: it gets a new
 level of locals, set from the arguments (Fanuc G65, LinuxCNC ``o.. call``)."""
@@ -160,6 +162,33 @@ class Goto(ControlSection):
     def __init__(self, target: Expr, cond: Expr | None = None) -> None:
         self.target = target
         self.cond = cond
+
+
+class GotoLabel(ControlSection):
+    """Jump to the block carrying the named ``Label`` ``label`` when ``cond`` (if any) is true (ISG
+    ``$GOTO [NAME]``); the search runs forward from the jump, then from the program's start."""
+
+    XNAME = "GotoLabel"
+    __slots__ = ("label", "cond")
+    XATTRS = (XAttr("label"),)
+    ROLES = ("cond",)
+    OPTIONAL = frozenset({"cond"})
+
+    def __init__(self, label: str, cond: Expr | None = None) -> None:
+        self.label = label
+        self.cond = cond
+
+
+class Label(Section):
+    """A named jump target on a block (ISG ``[NAME]``), under its own key: the block's words run as
+    usual; only ``GotoLabel`` looks at it, and a dialect without named labels cannot write it."""
+
+    XNAME = KEY = "Label"
+    __slots__ = ("name",)
+    XATTRS = (XAttr("name"),)
+
+    def __init__(self, name: str) -> None:
+        self.name = name
 
 
 class IfThen(ControlSection):
@@ -525,7 +554,7 @@ class ModalCallCancel(ControlSection):
 CONTROL_SECTIONS: tuple[type[Section], ...] = (
     Assign, Goto, IfThen, If, ElseIf, Else, EndIf, While, EndWhile, Do, DoWhile, Repeat, EndRepeat, Break,
     Continue, SubStart, SubEnd, Return, Call, ModalCall, ModalCallCancel, For, EndFor, Until, Switch, Case,
-    Default, EndSwitch,
+    Default, EndSwitch, GotoLabel, Label,
 )
 """Every control-flow section class, for registration."""
 

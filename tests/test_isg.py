@@ -60,6 +60,7 @@ LEXICAL = [
     "G01 X10 \\\n  Y20 F100\n",              # continuation
     "#COMMENT BEGIN\nanything ( at all $IF\n#COMMENT END\nG00 X1\n",
     "G00 X0\n$GOTO N200\nG00 X5\nN200: G00 X1\n",
+    "P1=0\n[AGAIN] G01 X[P1] F100\nP1=P1+1\n$IF P1 < 3 $GOTO [AGAIN]\n$GOTO [DONE]\nG01 X99\n[DONE]\nM30\n",
     "P1='16#FA1B' P2='0x0ED2' P3='H1869f' P4='2#101'\n",
     "#VAR\nV.L.DEPTH\nV.L.FEED = 200\n#ENDVAR\nG01 X[V.L.FEED] F[V.L.FEED]\n",
     "G01 XP1 Y-P3 Z[P2*COS[P6]] F100\n",
@@ -214,6 +215,13 @@ def test_fanuc_g61_exact_stop_has_no_isg_spelling() -> None:
         "in.nc:2:1: error: the isg dialect cannot express path control exact_stop"]
 
 
+def test_named_labels_are_jumped_to() -> None:
+    text = ("G71 G90 G00 X0 Y0 Z5\nP1 = 0\n[AGAIN] G01 X[P1*10+10] F100\nP1 = P1 + 1\n$IF P1 < 3 $GOTO [AGAIN]\n"
+            "$GOTO [DONE]\nG01 X99\n[DONE]\nG00 Z20\nM30\n")
+    assert [(m["line"], m["x"], m["z"]) for m in _moves(text, "isg")] == [
+        (1, 0, 5), (3, 10, 5), (3, 20, 5), (3, 30, 5), (9, 30, 20)]
+
+
 def test_g162_the_default_arc_centre_mode_adds_nothing() -> None:
     moves = _moves("G71 G90 G17 G162\nG00 X0 Y0 Z5\nG02 X10 Y0 I5 J0 F100\nM30\n", "isg")
     assert moves[1]["cx"] == 5 and moves[1]["cy"] == 0
@@ -255,6 +263,7 @@ HOSTILE = [
     ("G71\nP1=1\n$IF P1 > 0\nG01 X1 F100\nM30\n", "in.nc:3:1: error: $IF is never closed ($ENDIF missing)"),
     ("G71\n$ENDIF\nM30\n", "in.nc:2:1: error: $ENDIF does not close an open $IF"),
     ("G71\nG01 X[P7] F100\nM30\n", "in.nc:2:5: error: P7 is read before it is set"),
+    ("G71\nP1=1\n$GOTO [NOWHERE]\nM30\n", "in.nc:3:1: error: '$GOTO [NOWHERE]': no block labelled NOWHERE"),
     ("G71\nG01 X[V.A.ACT_POS.X] F100\nM30\n", "in.nc:2:5: error: V.A.ACT_POS.X is known only to the machine"),
     ("G71\nP1=1\n$SWITCH P1\n$CASE 1\nG01 X1 F100\n$CASE 2\nG01 X2\n$ENDSWITCH\nM30\n",
      "in.nc:6:1: error: '$CASE 2' is reached from the branch before it, which does not end with a break"),
@@ -285,3 +294,19 @@ def test_a_return_in_the_main_program_is_refused_not_a_restart() -> None:
     # Fanuc's M99 in a main program starts it again: ISG's M17 there must not become one
     assert _errors("G71 G90 G00 X0 Y0 Z10\nP1=1\nM17\n", "isg", "fanuc") == [
         "in.nc:3:1: error: 'M17' returns from the main program (it ends a subroutine)"]
+
+
+def test_a_local_subroutine_becomes_a_numbered_fanuc_subprogram_after_the_main_program() -> None:
+    isg = ("%L CORNER\nG01 X[P1] Y[P2] F300\nP1 = P1 + 5\nM17\n%100\nG71 G90 G00 X0 Y0 Z5\nP1 = 0\n"
+           "$FOR P2 = 1, 3, 1\n  LL CORNER\n$ENDFOR\nG00 Z20\nM30\n")
+    fanuc = ("O0100\nG21 G90 G00 X0. Y0. Z5.\n#501=0.\n#502=1.\nWHILE [#502 LE 3.] DO1\nG65 P2000\n#502=#502+1.\n"
+             "END1\nG00 Z20.\nM30\nO2000\nG01 X#501 Y#502 F300.\n#501=#501+5.\nM99\n")
+    out, warnings = _translate(isg, "isg", "fanuc")
+    assert warnings == "" and out == fanuc
+    report = verify_lines(io.StringIO(isg), io.StringIO(out), file_in="in.nc", file_out="out.nc",
+                          source="isg", target="fanuc", tolerance=0.0)
+    assert report.ok, report.summary()
+    # a main program numbered like the subroutine (known only after it): flattened, never two O2000
+    out, warnings = _translate(isg.replace("%100", "%2000"), "isg", "fanuc")
+    assert "program O2000, the number given to a named subprogram" in warnings
+    assert out.count("O2000") == 1 and "G65" not in out

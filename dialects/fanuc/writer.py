@@ -1,12 +1,18 @@
 """Fanuc writer: the RS274 word writer spelling every code from Fanuc's table (G00, M03, G04 X seconds),
-expressions and Custom Macro B statements in Fanuc's spelling, and calls as ``M98``/``G65``/``G66``."""
+expressions and Custom Macro B statements in Fanuc's spelling, and calls as ``M98``/``G65``/``G66``.
+
+A named subprogram defined in another dialect's program (ISG ``%L SUB_CONT`` ... ``M17``, before the main
+program) becomes a numbered one after the main program's end, where Fanuc finds it: ``O2000`` ... ``M99``
+(the first free number from ``SUBPROGRAM_NUMBERS``), and its calls ``G65 P2000``/``M98 P2000``."""
 
 from __future__ import annotations
 
 from typing import ClassVar
 
 from postproc.context import Context
-from postproc.control import Assign, Call, EndFor, EndWhile, For, ModalCall, ModalCallCancel, Return, While
+from postproc.control import (
+    CONTROL, Assign, Call, EndFor, EndWhile, For, ModalCall, ModalCallCancel, Return, SubEnd, SubStart, While,
+)
 from postproc.dialect import Dialect
 from postproc.errors import UnsupportedError
 from postproc.expr import Binary, Expr, Num, Var
@@ -27,12 +33,87 @@ class FanucWriter(WordWriter):
     SPELLING: ClassVar[ExprSpelling | None] = FANUC_SPELLING
     MACHINE_MOVES: ClassVar[frozenset[str]] = frozenset(("rapid",))
     """Fanuc's G53 always moves at rapid: a feed move in machine coordinates has no spelling."""
+    SUBPROGRAM_NUMBERS: ClassVar[range] = range(2000, 8000)
+    """Program numbers given to named subprograms (below O8000, which controls often lock)."""
 
     def __init__(self, ctx: Context, source_dialect: str, target: type[Dialect] | None = None) -> None:
         super().__init__(ctx, source_dialect, target)
         self.loops: list[tuple[str, Var | None, float]] = []
         """Open loops written from another dialect: (source label, counter, step) of a counted loop, or
         (label, None, 0) of a while loop; the depth is the ``DO`` number (Fanuc nests DO1-DO3)."""
+        self.numbers: dict[str, int] = {}
+        """Named subprogram -> the program number it is written as."""
+        self.programs: set[int] = set()
+        """Program numbers of the source's own programs (``O``/``%`` numbers) met so far."""
+        self.capture: list[str] | None = None
+        """The text of the named subprogram being written (it goes after the main program)."""
+        self.subprograms: list[str] = []
+        self.ended = False
+        """The main program's end (M02/M30) was written."""
+
+    def write_block(self, block: Block) -> str | None:
+        control = block.sections.get(CONTROL)
+        start = block.sections.get("ProgramStart")
+        if start is not None and getattr(start, "number", None) is not None:
+            number = int(start.number)  # type: ignore[attr-defined]
+            if number in self.numbers.values():
+                self.unsupported(f"program O{number:04d}, the number given to a named subprogram", block)
+            self.programs.add(number)
+        if self.source_dialect != self.DIALECT and isinstance(control, (SubStart, SubEnd)):
+            return self.named_subprogram(control, block)
+        try:
+            text = super().write_block(block)
+        except UnsupportedError as err:
+            if self.capture is None:
+                raise
+            text = self.unsupported_block(block, err)
+        kind = getattr(block.sections.get("ProgramControl"), "kind", None)
+        if kind in ("end", "end_rewind") and self.capture is None:
+            self.ended = True
+        if self.capture is not None:
+            if text:
+                self.capture.append(text)
+            return None
+        return text
+
+    def named_subprogram(self, control: SubStart | SubEnd, block: Block) -> str | None:
+        """Start capturing a named subprogram's text (``O<n>``), or end it (``M99``) and keep it for
+        after the main program."""
+        eol = block.eol or "\n"
+        if isinstance(control, SubStart):
+            if self.capture is not None:
+                self.unsupported("a subprogram defined inside another", block)
+            comments = block.sections.get("Comments")
+            note = "".join(f" {self.comment(t)}" for t in getattr(comments, "texts", ()))
+            self.capture = [f"O{self.subprogram_number(control.name, block):04d}{note}{eol}"]
+            return None
+        if self.capture is None:
+            self.unsupported(f"the end of subprogram {control.name}, which no written line opened", block)
+        if control.value is not None:
+            self.unsupported("a subprogram end returning a value", block)
+        self.capture.append("M99" + eol)
+        self.subprograms.append("".join(self.capture))
+        self.capture = None
+        return None
+
+    def subprogram_number(self, name: str, block: Block) -> int:
+        number = self.numbers.get(name)
+        if number is None:
+            taken = set(self.numbers.values()) | self.programs
+            number = next((n for n in self.SUBPROGRAM_NUMBERS if n not in taken), None)
+            if number is None:
+                self.unsupported(f"the named subprogram {name} (no program number left)", block)
+            self.numbers[name] = number
+        return number
+
+    def finish(self) -> str:
+        """The named subprograms, after the main program's end (where Fanuc looks for them)."""
+        if not self.subprograms:
+            return super().finish()
+        if not self.ended or self.capture is not None:
+            raise UnsupportedError("named subprograms need the main program's end (M02/M30) before them, and "
+                                   "each its own end")
+        return super().finish() + "".join(self.subprograms)
 
     def statement_words(self, section: Section, block: Block) -> list[str]:
         """``#1=..``, ``IF``/``GOTO``/``WHILE``/``END`` through ``spell_statement_fanuc``; calls as
@@ -110,7 +191,9 @@ class FanucWriter(WordWriter):
         if isinstance(name, Expr):
             return _whole(name)
         if not name.isdigit():
-            self.unsupported(f"a call of the named subprogram {name} ({code} calls program numbers)", block)
+            if self.source_dialect == self.DIALECT or not name.startswith("<"):
+                self.unsupported(f"a call of the named subprogram {name} ({code} calls program numbers)", block)
+            return str(self.subprogram_number(name, block))
         return name
 
     def return_words(self, ret: Return, block: Block) -> list[str]:

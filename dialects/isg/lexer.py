@@ -37,6 +37,8 @@ class Lexed:
     number_value: Expr | None = None
     label: bool = False
     """``N100:``: the number is a jump label."""
+    label_name: str | None = None
+    """``[NAME]``: a named jump label."""
     words: list[tuple[str, str]] = field(default_factory=list)
     values: dict[str, Expr] = field(default_factory=dict)
     assigns: list[tuple[Var, Expr]] = field(default_factory=list)
@@ -120,7 +122,12 @@ def _lex(file: str, line: int, code: str, lexed: Lexed) -> None:
     if pos < n and code[pos] in "Nn":
         pos = _number(file, line, code, pos, lexed)
     if pos < n and code[pos] == "[":
-        raise _error(file, line, pos, "string jump labels ([NAME]) are not read yet; use a label N<number>:")
+        end = code.find("]", pos)
+        name = code[pos + 1:end].strip() if end > 0 else ""
+        if not name or any(ch not in _NAME or ch == "." for ch in name):
+            raise _error(file, line, pos, "a jump label is [NAME] with letters, digits and _")
+        lexed.label_name = name
+        pos = skip(code, end + 1)
     if pos < n and code[pos] == "$":
         lexed.statement = pos
         return

@@ -19,7 +19,7 @@ from __future__ import annotations
 
 from typing import Iterable, Iterator
 
-from postproc.control import CONTROL, Assign, Call, Return, SubEnd, SubStart
+from postproc.control import CONTROL, Assign, Call, Label, Return, SubEnd, SubStart
 from postproc.dialect import Reader
 from postproc.errors import Location, ParseError, PostprocError
 from postproc.ir import BlockDelete, Block, Comments, NativeCode, ProgramStart, Sequence, TapeMark
@@ -110,6 +110,8 @@ class _State:
                 block.values["N"] = lexed.number_value
             else:
                 block.add(Sequence(int(lexed.number)))
+        if lexed.label_name is not None:
+            block.add(Label(lexed.label_name))
         if lexed.statement is not None:
             block.add(parse_statement(code, lexed.statement, self.nesting, number))
             return block

@@ -14,7 +14,7 @@ from __future__ import annotations
 
 from postproc.control import (
     Break, Case, Continue, Default, Do, DoWhile, Else, ElseIf, EndFor, EndIf, EndSwitch, EndWhile, For, Goto,
-    If, Switch, Until, While,
+    GotoLabel, If, Switch, Until, While,
 )
 from postproc.errors import Location, ParseError, UnsupportedError
 from postproc.expr import Binary, Expr, Func, Num, Var
@@ -118,6 +118,8 @@ def _statement(code: str, pos: int, nesting: Nesting, line: int) -> Section:
         goto = skip(code, at)
         if code[goto:goto + 5].upper() == "$GOTO":
             target_at, target = _goto_target(code, goto + 5, file, line)
+            if isinstance(target, str):
+                return done(target_at, GotoLabel(target, truth(cond)))
             return done(target_at, Goto(target, truth(cond)))
         return done(at, If(nesting.open("IF", line), truth(cond)))
     if word == "ELSEIF":
@@ -157,15 +159,19 @@ def _statement(code: str, pos: int, nesting: Nesting, line: int) -> Section:
         return done(rest, Continue(nesting.innermost(_LOOPS, word, line, col)))
     if word == "GOTO":
         at, target = _goto_target(code, end, file, line)
-        return done(at, Goto(target))
+        return done(at, GotoLabel(target) if isinstance(target, str) else Goto(target))
     raise ParseError(f"unknown control statement ${code[pos + 1:end]}", Location(file, line, col))
 
 
-def _goto_target(code: str, pos: int, file: str, line: int) -> tuple[int, Expr]:
+def _goto_target(code: str, pos: int, file: str, line: int) -> tuple[int, Expr | str]:
+    """``N<expr>`` (a number label) or ``[NAME]`` (a named one)."""
     at = skip(code, pos)
     if code[at:at + 1] == "[":
-        raise ParseError("jumps to string labels ($GOTO [NAME]) are not read yet; use N<number>",
-                         Location(file, line, at + 1))
+        end = code.find("]", at)
+        name = code[at + 1:end].strip() if end > 0 else ""
+        if not name or any(not (ch.isalnum() or ch == "_") for ch in name):
+            raise ParseError("$GOTO [NAME] needs a label name of letters, digits and _", Location(file, line, at + 1))
+        return end + 1, name
     if code[at:at + 1].upper() != "N":
         raise ParseError("$GOTO needs a label N<number>", Location(file, line, at + 1))
     return parse_expr(code, at + 1)
@@ -227,6 +233,9 @@ def spell_statement(section: Section) -> str:
         return "$BREAK"
     if isinstance(section, Continue):
         return "$CONTINUE"
+    if isinstance(section, GotoLabel):
+        jump = f"$GOTO [{section.label}]"
+        return jump if section.cond is None else "$IF " + spell_expr(untruth(section.cond)) + " " + jump
     if isinstance(section, Goto):
         target = "$GOTO N" + _label(section.target)
         if section.cond is None:

@@ -49,6 +49,9 @@ class IsgWriter(WordWriter):
             rest = Block(block.line, None, block.eol)
             rest.sections = {k: v for k, v in sections.items() if k not in ("Dwell", "Sequence")}
             return self.generate(first) + self.generate(rest)
+        label = sections.get("Label")
+        if label is not None:
+            return f"[{getattr(label, 'name')}] " + super().generate(block)
         return super().generate(block)
 
     def program_start(self, s: Any, block: Block) -> str:

@@ -21,7 +21,7 @@ from __future__ import annotations
 from typing import Iterator, Protocol
 
 from ..control import (
-    ASSIGN, CONTROL, Assign, Break, Call, Case, Continue, Default, Do, DoWhile, Else, ElseIf, EndFor, EndIf,
+    ASSIGN, CONTROL, LABEL, GotoLabel, Assign, Break, Call, Case, Continue, Default, Do, DoWhile, Else, ElseIf, EndFor, EndIf,
     EndRepeat, EndSwitch, EndWhile, For, Goto, If, IfThen, ModalCall, ModalCallCancel, Repeat, Return, SubEnd,
     SubStart, Switch, Until, While,
 )
@@ -36,7 +36,7 @@ from .rules import STORED_PROGRAMS, SubprogramRules
 from .store import Program, ProgramStore, source_text
 from .variables import Variables
 
-NON_WORD_SECTIONS = frozenset((CONTROL, ASSIGN))
+NON_WORD_SECTIONS = frozenset((CONTROL, ASSIGN, LABEL))
 
 
 class Host(Protocol):
@@ -249,6 +249,16 @@ class Interpreter:
             self._spend(block, "jump")
             yield from self._note(frame, block, "jump")
             frame.pc = target
+        elif isinstance(control, GotoLabel):
+            if control.cond is not None and not _true(evaluate(control.cond, vars_)):
+                frame.pc += 1
+                return
+            found = program.find_label(control.label, pos)
+            if found is None:
+                raise ProgramError(f"'{source_text(block)}': no block labelled {control.label} in {program.file}")
+            self._spend(block, "jump")
+            yield from self._note(frame, block, "jump")
+            frame.pc = found
         elif isinstance(control, IfThen):
             if _true(evaluate(control.cond, vars_)):
                 self._assign(control.assign)

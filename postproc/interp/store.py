@@ -15,7 +15,7 @@ from __future__ import annotations
 from typing import Callable
 
 from ..control import (
-    CONTROL, Break, Case, Continue, Default, Do, DoWhile, Else, ElseIf, EndFor, EndIf, EndRepeat, EndSwitch,
+    CONTROL, LABEL, Break, Case, Continue, Default, Do, DoWhile, Else, ElseIf, EndFor, EndIf, EndRepeat, EndSwitch,
     EndWhile, For, If, Repeat, SubEnd, SubStart, Switch, Until, While,
 )
 from ..errors import ProgramError
@@ -38,12 +38,14 @@ class Program:
     """One file's blocks, indexed. ``main_end`` is the position after the main program's end block
     (``len(blocks)`` when it has none); blocks past it run only as subprograms."""
 
-    __slots__ = ("file", "blocks", "sequence", "pairs", "chains", "subs", "main_end", "first_line")
+    __slots__ = ("file", "blocks", "sequence", "labels", "pairs", "chains", "subs", "main_end", "first_line")
 
     def __init__(self, file: str, blocks: list[Block], is_end: Callable[[Block], bool]) -> None:
         self.file = file
         self.blocks = blocks
         self.sequence: dict[int, list[int]] = {}
+        self.labels: dict[str, list[int]] = {}
+        """Named jump label -> positions of the blocks carrying it."""
         self.pairs: dict[int, int] = {}
         """Loop head <-> end, and break/continue -> the head of their loop."""
         self.chains: dict[int, list[int]] = {}
@@ -66,6 +68,9 @@ class Program:
             seq = sections.get("Sequence")
             if seq is not None:
                 self.sequence.setdefault(seq.number, []).append(pos)  # type: ignore[attr-defined]
+            label = sections.get(LABEL)
+            if label is not None:
+                self.labels.setdefault(label.name, []).append(pos)  # type: ignore[attr-defined]
             start = sections.get("ProgramStart")
             if start is not None and pos >= self.main_end:
                 number, name = start.number, start.name  # type: ignore[attr-defined]
@@ -143,13 +148,20 @@ class Program:
 
     def find_sequence(self, number: int, after: int) -> int | None:
         """Fanuc's search: the first block numbered ``number`` after ``after``, else the first one."""
-        positions = self.sequence.get(number)
-        if not positions:
-            return None
-        for p in positions:
-            if p > after:
-                return p
-        return positions[0]
+        return _first_after(self.sequence.get(number), after)
+
+    def find_label(self, name: str, after: int) -> int | None:
+        """The first block labelled ``name`` after ``after``, else the first one."""
+        return _first_after(self.labels.get(name), after)
+
+
+def _first_after(positions: list[int] | None, after: int) -> int | None:
+    if not positions:
+        return None
+    for p in positions:
+        if p > after:
+            return p
+    return positions[0]
 
 
 Loader = Callable[[str], "Program | None"]

@@ -206,7 +206,10 @@ class WordWriter(Writer):
             if section is not None:
                 words.extend(self.section_words(key, section, block))
         for key in sections:
-            if key not in SECTION_ORDER and key not in self.IGNORED and key not in ("ProgramStart", "TapeMark"):
+            # A named label (ISG [NAME]) is only a jump target: a program that jumps is run (flattened),
+            # its labels dropped; in a straight program a label does nothing.
+            if key not in SECTION_ORDER and key not in self.IGNORED and key not in ("ProgramStart", "TapeMark",
+                                                                                    "Label"):
                 self.unsupported(f"{key}", block)
         start = sections.get("ProgramStart")
         if start is not None:
@@ -538,7 +541,7 @@ _UPPER = {c: c.upper() for c in "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstu
 
 
 _STATEMENTS = {
-    "Assign": "variable assignments", "Goto": "GOTO jumps", "IfThen": "conditional assignments",
+    "Assign": "variable assignments", "Goto": "GOTO jumps", "GotoLabel": "jumps to named labels", "IfThen": "conditional assignments",
     "If": "IF conditions", "ElseIf": "IF conditions", "Else": "IF conditions", "EndIf": "IF conditions",
     "While": "WHILE loops", "EndWhile": "WHILE loops", "Do": "DO loops", "DoWhile": "DO loops",
     "Repeat": "REPEAT loops", "EndRepeat": "REPEAT loops", "Break": "loop breaks", "Continue": "loop continues",

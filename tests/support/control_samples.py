@@ -10,8 +10,8 @@ from typing import Any, Callable
 
 from postproc.control import (
     Assign, Break, Call, Case, Continue, Default, Do, DoWhile, Else, ElseIf, EndFor, EndIf, EndRepeat,
-    EndSwitch, EndWhile, For, Goto, If, IfThen, ModalCall, ModalCallCancel, Repeat, Return, SubEnd, SubStart,
-    Switch, Until, While,
+    EndSwitch, EndWhile, For, Goto, GotoLabel, If, IfThen, Label, ModalCall, ModalCallCancel, Repeat, Return,
+    SubEnd, SubStart, Switch, Until, While,
 )
 from postproc.expr import Binary, Num, Var
 
@@ -105,4 +105,7 @@ CONTROL_SAMPLES: dict[str, list[tuple[Builder, str]]] = {
     "Case": [(lambda c: Case("2", Num(3.0)), '<Case label="2">\n  <Value>\n    <Num value="3.0"/>\n  </Value>\n</Case>')],
     "Default": _labelled(Default, "Default"),
     "EndSwitch": _labelled(EndSwitch, "EndSwitch"),
+    "GotoLabel": [(lambda c: GotoLabel("LOOP"), '<GotoLabel label="LOOP"/>'),
+                  (lambda c: GotoLabel("END_1", LT), '<GotoLabel label="END_1">\n' + _cond("Cond") + "\n</GotoLabel>")],
+    "Label": [(lambda c: Label("LOOP"), '<Label name="LOOP"/>')],
 }
