@@ -215,6 +215,17 @@ def test_fanuc_g61_exact_stop_has_no_isg_spelling() -> None:
         "in.nc:2:1: error: the isg dialect cannot express path control exact_stop"]
 
 
+def test_an_array_element_keeps_its_block_verbatim_and_is_refused_elsewhere() -> None:
+    text = "G71 G90 G00 X0 Y0 Z5\nP100[2]=5\nG01 X[P100[2]] F100\nM30\n"
+    assert _translate(text, "isg", "isg")[0] == text
+    assert _errors(text, "isg", "fanuc")[0] == ("in.nc:2:1: error: P parameter arrays (not modelled) from isg has no "
+                                                "equivalent in fanuc")
+    with pytest.raises(ErrorList) as caught:
+        _moves(text, "isg")
+    assert str(caught.value.errors[0]).startswith("in.nc:2:1: error: P parameter arrays (not modelled) cannot be "
+                                                  "simulated")
+
+
 def test_named_labels_are_jumped_to() -> None:
     text = ("G71 G90 G00 X0 Y0 Z5\nP1 = 0\n[AGAIN] G01 X[P1*10+10] F100\nP1 = P1 + 1\n$IF P1 < 3 $GOTO [AGAIN]\n"
             "$GOTO [DONE]\nG01 X99\n[DONE]\nG00 Z20\nM30\n")

@@ -35,7 +35,7 @@ def test_isg_expression_values(text: str, value: float) -> None:
 
 @pytest.mark.parametrize("text, message", [
     ("P0", "P0: P parameters P1 to P499"), ("P500", "P500: P parameters P1 to P499"),
-    ("P1[2]", "P parameter arrays are not read yet"), ("FOO[1]", "unknown function or variable 'FOO'"),
+    ("P1[2]", "P parameter arrays are not modelled"), ("FOO[1]", "unknown function or variable 'FOO'"),
     ("SIN 30", "'[' expected after SIN"), ("-2 ** 2", "a sign before '**' is ambiguous"),
     ("3 * -P1 ** 2", "a sign before '**' is ambiguous"), ("[1 + 2", "']' expected"), ("'16#XY'", "malformed constant"),
 ])

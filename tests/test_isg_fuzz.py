@@ -23,7 +23,8 @@ LINES = [
     "$BREAK", "$ENDSWITCH", "$CONTINUE", "N[10+P1] G01 Y1 F10", "N20: G00 Z5", "$GOTO N20", "#CYL OFF",
     "#SLOPE [TYPE=STEP]", "( comment ( nested ) )", "; comment", "/1 G00 X1", "N5 G01X1Y2Z3F100",
     "LL SUB", "%L SUB", "M17", "G01 X10 \\", "#COMMENT BEGIN", "#COMMENT END", "#VAR", "#ENDVAR", "X", "$FOO",
-    "P0=1", "G01 X[1+", "'16#FF'", "P1='16#1F'",
+    "P0=1", "G01 X[1+", "'16#FF'", "P1='16#1F'", "P100[2]=5", "G01 X[P100[1]]", "[LOOP] G01 X1 F10",
+    "$GOTO [LOOP]", "$IF P1 > 3 $GOTO [OUT]", "[OUT]",
 ]
 """ISG fragments, valid and not: the reader's and the interpreter's located errors are exercised too."""
 

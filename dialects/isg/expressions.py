@@ -31,6 +31,15 @@ from postproc.errors import UnsupportedError
 from postproc.expr import Binary, Expr, Func, Num, Unary, Var
 from postproc.rs274.expressions import MAX_DEPTH, ExprSyntaxError
 
+class Unmodelled(ExprSyntaxError):
+    """A construct ISG has and the IR does not model (an array element): the reader keeps its block
+    verbatim, refused by the simulator and by every other dialect."""
+
+    def __init__(self, what: str, pos: int) -> None:
+        super().__init__(f"{what} are not modelled", pos)
+        self.what = what
+
+
 P_BASE = 500
 """``P<n>`` is the neutral variable ``P_BASE + n``."""
 P_LAST = 499
@@ -197,7 +206,7 @@ class _Parser:
                 raise ExprSyntaxError(f"P{number}: P parameters P1 to P{P_LAST} are read (each is a neutral "
                                       f"variable #{P_BASE}+n)", pos)
             if end < n and text[end] == "[":
-                raise ExprSyntaxError("P parameter arrays are not read yet", pos)
+                raise Unmodelled("P parameter arrays", pos)
             return end, p_variable(number)
         if text[pos] in "Vv" and text[pos + 1:pos + 2] == ".":
             end = pos + 2
@@ -207,7 +216,7 @@ class _Parser:
             if name.count(".") < 2:
                 raise ExprSyntaxError(f"malformed variable name {name!r} (V.<kind>.<name>)", pos)
             if end < n and text[end] == "[":
-                raise ExprSyntaxError("V. variable arrays are not read yet", pos)
+                raise Unmodelled("V. variable arrays", pos)
             return pos + len(name), Var(name=name)
         end = pos
         while end < n and text[end] in _LETTERS:

@@ -10,7 +10,9 @@ A block continued with ``\\`` at the end of its line is one block whose text hol
 back as it was); it is located at its first line. ``#COMMENT BEGIN`` ... ``#COMMENT END`` lines are
 comment blocks. ``#VAR`` ... ``#ENDVAR``: declarations without a value are comments, those with one
 are assignments. Every other ``#`` command is kept verbatim (``NativeCode``): it round-trips in ISG and
-is refused by every other dialect and by the simulator, naming the command.
+is refused by every other dialect and by the simulator, naming the command. So is a block using an
+array element (``P100[3]``, ``V.L.A[2]``), which the IR does not model (in a ``$`` statement it is an
+error: the statement's construct could not be paired).
 
 Errors are reported per block; the block is kept as text only, and reading goes on.
 """
@@ -26,6 +28,7 @@ from postproc.ir import BlockDelete, Block, Comments, NativeCode, ProgramStart, 
 from postproc.rs274.lexer import split_lines
 
 from .commands import command_name, describe_command
+from .expressions import Unmodelled
 from .lexer import Lexed, lex, strip_comments
 from .statements import Nesting, parse_statement
 
@@ -96,7 +99,11 @@ class _State:
         if self.in_var is not None and "=" not in code and code.strip() and "#" not in code:
             block.add(Comments([*lexed.comments, code.strip()]))  # a declaration without a value
             return block
-        lexed = _merge(lex(self.file, number, code), lexed)
+        try:
+            lexed = _merge(lex(self.file, number, code), lexed)
+        except Unmodelled as err:
+            block.add(NativeCode("isg", f"{err.what} (not modelled)", text))
+            return block
         if lexed.comments:
             block.add(Comments(lexed.comments))
         if lexed.skip:
