@@ -226,6 +226,17 @@ def test_an_array_element_keeps_its_block_verbatim_and_is_refused_elsewhere() ->
                                                   "simulated")
 
 
+@pytest.mark.parametrize("dwell, seconds", [("G04 X4.5", 4.5), ("G04 3", 3.0), ("G04 P1", 2.0),
+                                             ("G04 V.L.T", 1.5), ("N5 G04 [P1*2]", 4.0)])
+def test_isg_dwell_forms(dwell: str, seconds: float) -> None:
+    """The manual's forms: the time after the first main axis (X) or alone, in seconds, direct or
+    parameterised; each round-trips and dwells as long."""
+    text = f"G71\nP1=2\nV.L.T=1.5\n{dwell}\nM30\n"
+    assert _translate(text, "isg", "isg")[0] == text
+    events = list(toolpath_events(io.StringIO(text), file="in.nc", dialect="isg"))
+    assert [e["seconds"] for e in events if e.get("event") == "dwell"] == [seconds]
+
+
 def test_named_labels_are_jumped_to() -> None:
     text = ("G71 G90 G00 X0 Y0 Z5\nP1 = 0\n[AGAIN] G01 X[P1*10+10] F100\nP1 = P1 + 1\n$IF P1 < 3 $GOTO [AGAIN]\n"
             "$GOTO [DONE]\nG01 X99\n[DONE]\nG00 Z20\nM30\n")

@@ -142,6 +142,9 @@ def _lex(file: str, line: int, code: str, lexed: Lexed) -> None:
         if c in "Ll" and _is_call(code, pos):
             pos = _call(file, line, code, pos, lexed)
             continue
+        if _dwell_time(code, pos, lexed):
+            pos = _word(file, line, " " + code[pos:], 0, lexed, "X") - 1 + pos
+            continue
         if c in _LETTERS:
             pos = _word(file, line, code, pos, lexed)
             continue
@@ -224,11 +227,23 @@ def _call(file: str, line: int, code: str, pos: int, lexed: Lexed) -> int:
     return end
 
 
-def _word(file: str, line: int, code: str, pos: int, lexed: Lexed) -> int:
-    n = len(code)
+def _dwell_time(code: str, pos: int, lexed: Lexed) -> bool:
+    """``G04 3.0``, ``G04 P1``, ``G04 V.L.TIME``: a time right after ``G04``, read as its ``X`` word."""
+    if not lexed.words or lexed.words[-1][0] not in "Gg" or lexed.words[-1][1].lstrip("0") != "4":
+        return False
     c = code[pos]
+    nxt = code[pos + 1:pos + 2]
+    return c.isdigit() or c in "+-.[" or c in "Pp" and nxt.isdigit() or c in "Vv" and nxt == "."
+
+
+def _word(file: str, line: int, code: str, pos: int, lexed: Lexed, address: str | None = None) -> int:
+    """An address and its value; ``address`` given: ``code[pos]`` is a blank standing for it (a dwell's
+    time written without its X)."""
+    n = len(code)
+    c = address or code[pos]
     up = c.upper()
-    if up == "P" and pos + 1 < n and code[pos + 1] in _DIGITS or up == "V" and code[pos + 1:pos + 2] == ".":
+    if address is None and (up == "P" and pos + 1 < n and code[pos + 1] in _DIGITS
+                            or up == "V" and code[pos + 1:pos + 2] == "."):
         end, target = parse_word_value(code, pos)
         eq = skip(code, end)
         if eq >= n or code[eq] != "=" or code[eq + 1:eq + 2] == "=":
