@@ -58,7 +58,7 @@ LEXICAL = [
     "G01 X10 F100 ; the rest is a comment\n",
     "/ G01 X1 F100\n/3 G01 X2\n/10 G01 X3\n",
     "G01 X10 \\\n  Y20 F100\n",              # continuation
-    "#COMMENT BEGIN\nanything ( at all $IF\n#COMMENT END\nG00 X1\n",
+    "#COMMENT BEGIN\nanything ( at all $IF\nnot the end: #COMMENT END\nN5 #COMMENT END\nG00 X1\n",
     "G00 X0\n$GOTO N200\nG00 X5\nN200: G00 X1\n",
     "P1=0\n[AGAIN] G01 X[P1] F100\nP1=P1+1\n$IF P1 < 3 $GOTO [AGAIN]\n$GOTO [DONE]\nG01 X99\n[DONE]\nM30\n",
     "P1='16#FA1B' P2='0x0ED2' P3='H1869f' P4='2#101'\n",
@@ -316,6 +316,15 @@ def test_a_return_in_the_main_program_is_refused_not_a_restart() -> None:
     # Fanuc's M99 in a main program starts it again: ISG's M17 there must not become one
     assert _errors("G71 G90 G00 X0 Y0 Z10\nP1=1\nM17\n", "isg", "fanuc") == [
         "in.nc:3:1: error: 'M17' returns from the main program (it ends a subroutine)"]
+
+
+def test_a_linuxcnc_named_subprogram_becomes_a_numbered_fanuc_one_too() -> None:
+    ngc = "o<corner> sub\nG1 X#1 Y#2 F300\no<corner> endsub\nG21 G90 G0 X0 Y0 Z5\no<corner> call [10] [5]\nM2\n"
+    out, warnings = _translate(ngc, "linuxcnc", "fanuc")
+    assert out == "G21 G90 G00 X0. Y0. Z5.\nG65 P2000 A10. B5.\nM02\nO2000\nG01 X#1 Y#2 F300.\nM99\n"
+    report = verify_lines(io.StringIO(ngc), io.StringIO(out), file_in="in.nc", file_out="out.nc",
+                          source="linuxcnc", target="fanuc", tolerance=0.0)
+    assert report.ok, report.summary()
 
 
 def test_a_local_subroutine_becomes_a_numbered_fanuc_subprogram_after_the_main_program() -> None:

@@ -90,9 +90,8 @@ def strip_comments(file: str, line: int, text: str, lexed: Lexed) -> str:
     return "".join(out)
 
 
-def lex(file: str, line: int, code: str) -> Lexed:
-    """Lex the code of one block (comments already blanked by ``strip_comments``)."""
-    lexed = Lexed()
+def lex(file: str, line: int, code: str, lexed: Lexed) -> Lexed:
+    """Lex the code of one block into ``lexed`` (its comments already taken by ``strip_comments``)."""
     try:
         _lex(file, line, code, lexed)
     except ExprSyntaxError as err:
@@ -159,7 +158,6 @@ def _lex(file: str, line: int, code: str, lexed: Lexed) -> None:
 
 
 def _header(file: str, line: int, code: str, pos: int, lexed: Lexed) -> None:
-    n = len(code)
     rest = code[pos + 1:].strip()
     if not rest:
         lexed.header = ("tape", "")
@@ -170,7 +168,7 @@ def _header(file: str, line: int, code: str, pos: int, lexed: Lexed) -> None:
             raise _error(file, line, pos, f"a local subroutine needs a name: %L <name>, not {rest!r}")
         lexed.header = ("sub", name)
         return
-    if any(ch not in _FILE_NAME for ch in rest) or n == 0:
+    if any(ch not in _FILE_NAME for ch in rest):
         raise _error(file, line, pos, f"malformed program name {rest!r}")
     lexed.header = ("main", rest)
 
@@ -202,11 +200,12 @@ def _number(file: str, line: int, code: str, pos: int, lexed: Lexed) -> int:
 
 
 def _is_call(code: str, pos: int) -> bool:
-    """``L name`` or ``LL name``: the blank after the address is mandatory."""
-    n = len(code)
+    """``L name`` or ``LL name``: the blank after the address is mandatory, and a name is no number."""
     end = pos + 2 if code[pos + 1:pos + 2] in ("L", "l") else pos + 1
-    return end < n and code[end] in " \t" and skip(code, end) < n and code[skip(code, end)] not in _DIGITS \
-        and code[skip(code, end)] not in "+-.[" and code[skip(code, end):skip(code, end) + 1] != "P"
+    if code[end:end + 1] not in (" ", "\t"):
+        return False
+    first = code[skip(code, end):skip(code, end) + 1]
+    return first != "" and first not in _DIGITS and first not in "+-.[Pp"
 
 
 def _call(file: str, line: int, code: str, pos: int, lexed: Lexed) -> int:

@@ -90,7 +90,7 @@ class _State:
     def block(self, number: int, text: str, code: str, eol: str) -> Block:
         block = Block(number, text, eol)
         if self.in_comment:
-            if _words(code)[-2:] == ["#COMMENT", "END"]:
+            if _words(code) == ["#COMMENT", "END"]:  # alone in its block (a block number may precede it)
                 self.in_comment = False
             block.add(Comments([text]))
             return block
@@ -100,7 +100,7 @@ class _State:
             block.add(Comments([*lexed.comments, code.strip()]))  # a declaration without a value
             return block
         try:
-            lexed = _merge(lex(self.file, number, code), lexed)
+            lex(self.file, number, code, lexed)
         except Unmodelled as err:
             block.add(NativeCode("isg", f"{err.what} (not modelled)", text))
             return block
@@ -197,11 +197,6 @@ class _State:
         if self.in_var is not None:
             errors.append(self.error(self.in_var, 1, "#VAR is never ended (#ENDVAR missing)"))
         return errors
-
-
-def _merge(lexed: Lexed, comments: Lexed) -> Lexed:
-    lexed.comments = comments.comments
-    return lexed
 
 
 def _words(code: str) -> list[str]:
