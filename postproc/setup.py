@@ -134,13 +134,13 @@ class MachineSetup(XmlNode):
 
     XNAME = "MachineSetup"
     __slots__ = ("name", "dialect", "pipeline", "input", "output", "cycles", "machine", "templates", "source",
-                 "template_lines", "limits", "library")
+                 "template_lines", "limits", "library", "code_calls")
 
     def __init__(self, name: str = "default", dialect: str | None = None, pipeline: str | None = None,
                  input: InputSettings | None = None, output: OutputSettings | None = None,
                  cycles: CycleSettings | None = None, machine: MachineSettings | None = None,
                  templates: Templates | None = None, source: str | None = None, limits: Limits | None = None,
-                 library: list[str] | None = None) -> None:
+                 library: list[str] | None = None, code_calls: dict[str, str] | None = None) -> None:
         self.name = name
         self.dialect = dialect
         self.pipeline = pipeline
@@ -154,13 +154,17 @@ class MachineSetup(XmlNode):
         self.library = library if library is not None else []
         """Folders searched for subprograms not in the program's file (``<Library path="..."/>``, relative
         to the set-up file's folder; ``--lib DIR`` adds to them)."""
+        self.code_calls = code_calls if code_calls is not None else {}
+        """Code (as the dialect writes it, upper case, e.g. ISG's implicit subroutine calls) -> the subprogram
+        file the machine builder configured it to run (``<CodeCall code="..." file="..."/>``); a dialect
+        that reads such codes calls the file, found like any subprogram (``Library``)."""
         self.source = source
         self.template_lines: dict[str, int] = {}
         """Line of the set-up file each template starts on (for located template errors)."""
 
     def _key(self) -> tuple[Any, ...]:
         return (self.name, self.dialect, self.pipeline, self.input, self.output, self.cycles,
-                self.machine, self.templates, self.limits, tuple(self.library))
+                self.machine, self.templates, self.limits, tuple(self.library), tuple(self.code_calls.items()))
 
     def __repr__(self) -> str:
         return f"MachineSetup(name={self.name!r}, dialect={self.dialect!r})"
@@ -184,6 +188,7 @@ class MachineSetup(XmlNode):
         attr_of = {InputSettings: "input", OutputSettings: "output", CycleSettings: "cycles",
                    MachineSettings: "machine", Limits: "limits"}
         library: list[str] = []
+        code_calls: dict[str, str] = {}
         for child in el:
             if not isinstance(child.tag, str):
                 continue
@@ -193,6 +198,12 @@ class MachineSetup(XmlNode):
                 continue
             if child.tag == "Library":
                 library.append(_library_from_xml(child))
+                continue
+            if child.tag == "CodeCall":
+                code, file = _code_call_from_xml(child)
+                if code in code_calls:
+                    raise ConfigError(f"<CodeCall code=\"{code}\"> appears twice", where(child))
+                code_calls[code] = file
                 continue
             group = by_tag.get(child.tag)
             if group is None:
@@ -204,7 +215,7 @@ class MachineSetup(XmlNode):
         if unknown:
             raise ConfigError(f"<MachineSetup> has unknown attribute(s) {', '.join(sorted(unknown))}", where(el))
         setup = cls(name=el.get("name", "default"), dialect=el.get("dialect"), pipeline=el.get("pipeline"),
-                    source=el.getroottree().docinfo.URL, library=library, **kwargs)
+                    source=el.getroottree().docinfo.URL, library=library, code_calls=code_calls, **kwargs)
         setup.template_lines = lines
         return setup
 
@@ -227,6 +238,8 @@ class MachineSetup(XmlNode):
                     etree.SubElement(t, tag).text = text
         for path in self.library:
             etree.SubElement(el, "Library", path=path)
+        for code, file in self.code_calls.items():
+            etree.SubElement(el, "CodeCall", code=code, file=file)
         return el
 
 
@@ -263,6 +276,18 @@ def _library_from_xml(el: etree._Element) -> str:
     if not path or set(el.attrib) != {"path"} or len([c for c in el if isinstance(c.tag, str)]):
         raise ConfigError("<Library> takes one attribute, path (a folder of subprograms)", where(el))
     return str(path)
+
+
+def _code_call_from_xml(el: etree._Element) -> tuple[str, str]:
+    code, file = el.get("code", ""), el.get("file", "")
+    if set(el.attrib) != {"code", "file"} or len([c for c in el if isinstance(c.tag, str)]):
+        raise ConfigError("<CodeCall> takes two attributes: code (a letter and a number) and file (the "
+                          "subprogram it runs)", where(el))
+    if not (code[:1].isalpha() and code[:1].isascii() and code[1:].isdigit() and code[1:].isascii()):
+        raise ConfigError(f"<CodeCall> code {code!r} is not a letter and a whole number", where(el))
+    if not file.strip():
+        raise ConfigError("<CodeCall> file is empty", where(el))
+    return code[0].upper() + str(int(code[1:])), file
 
 
 def _templates_from_xml(el: etree._Element) -> Templates:

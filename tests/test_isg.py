@@ -341,3 +341,39 @@ def test_a_local_subroutine_becomes_a_numbered_fanuc_subprogram_after_the_main_p
     out, warnings = _translate(isg.replace("%100", "%2000"), "isg", "fanuc")
     assert "program O2000, the number given to a named subprogram" in warnings
     assert out.count("O2000") == 1 and "G65" not in out
+
+
+# -- implicit subroutine calls G80-G89 --------------------------------------------------------------------
+
+def test_an_implicit_call_runs_the_file_the_set_up_names(tmp_path: Path) -> None:
+    from postproc.setup import load_setup
+    (tmp_path / "lib").mkdir()
+    (tmp_path / "lib" / "drill_cycle.nc").write_text("%drill_cycle.nc\nG00 Z2\nG01 Z-5 F100\nG00 Z10\nM17\n")
+    (tmp_path / "m.xml").write_text('<MachineSetup name="isg" dialect="isg"><Library path="lib"/>'
+                                    '<CodeCall code="G81" file="drill_cycle.nc"/></MachineSetup>')
+    setup = load_setup(tmp_path / "m.xml")
+    text = "G71 G90 G00 X0 Y0 Z10\nG00 X10 Y10\nG81\nG00 X20\nG81\nM30\n"
+    moves = [(m["x"], m["z"], m["move"]) for m in _moves(text, "isg", setup)]
+    assert moves == [(0, 10, "rapid"), (10, 10, "rapid"), (10, 2, "rapid"), (10, -5, "feed"), (10, 10, "rapid"),
+                     (20, 10, "rapid"), (20, 2, "rapid"), (20, -5, "feed"), (20, 10, "rapid")]
+    assert _translate(text, "isg", "isg", setup=setup)[0] == text
+    out, warnings = _translate(text, "isg", "fanuc", setup=setup)  # the file's motion, flattened
+    report = verify_lines(io.StringIO(text), io.StringIO(out), file_in="in.nc", file_out="out.nc", source="isg",
+                          target="fanuc", setup=setup, tolerance=0.0)
+    assert report.ok, report.summary()
+    # without the set-up's word for it, the call is refused (test_isg_codes_that_collide_...)
+    assert _errors(text, "isg", "fanuc")[0].startswith("in.nc:3:1: error: G81 (implicit subroutine call")
+
+
+@pytest.mark.parametrize("element, message", [
+    ('<CodeCall code="G81"/>', "<CodeCall> takes two attributes"),
+    ('<CodeCall code="81" file="a.nc"/>', "<CodeCall> code '81' is not a letter and a whole number"),
+    ('<CodeCall code="G81" file="a.nc"/><CodeCall code="G081" file="b.nc"/>', '<CodeCall code="G81"> appears twice'),
+])
+def test_code_call_set_up_errors(tmp_path: Path, element: str, message: str) -> None:
+    from postproc.errors import ConfigError
+    from postproc.setup import load_setup
+    (tmp_path / "m.xml").write_text(f'<MachineSetup name="isg">{element}</MachineSetup>')
+    with pytest.raises(ConfigError) as caught:
+        load_setup(tmp_path / "m.xml")
+    assert message in caught.value.message

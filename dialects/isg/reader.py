@@ -3,6 +3,9 @@
 Program structure: ``%L name`` opens a local subroutine (``SubStart``), which ends at its ``M17`` or
 ``M29`` outside any open construct (``SubEnd``); an ``M17``/``M29`` elsewhere, or in a file without
 ``%L`` (a global subroutine), returns (``Return``). ``%name`` is the main program (``ProgramStart``).
+An implicit subroutine call ``G80``-``G89``/``G800``-``G899`` is a call of the file the set-up's
+``<CodeCall code="G81" file="..."/>`` names (what the machine builder configured); without one it stays a
+code kept verbatim, refused by the simulator and by every other dialect.
 ``LL name`` calls the local subroutine ``<name>``, ``L file`` the global subroutine file ``file``; both
 are calls with their own level of ``V.L.`` variables (P parameters are shared, see ``variables``).
 
@@ -40,7 +43,7 @@ class IsgReader(Reader):
     def read(self, lines: Iterable[str]) -> Iterator[Block]:
         file = self.ctx.file
         report = self.ctx.diagnostics.error
-        state = _State(file)
+        state = _State(file, self.ctx.setup.code_calls)
         pending: list[tuple[int, str, str]] = []
         for number, text, eol in split_lines(lines):
             if not state.in_comment and text.rstrip().endswith("\\"):
@@ -75,8 +78,10 @@ def _unbackslash(text: str) -> str:
 class _State:
     """What reading a file remembers between blocks."""
 
-    def __init__(self, file: str) -> None:
+    def __init__(self, file: str, code_calls: dict[str, str]) -> None:
         self.file = file
+        self.code_calls = code_calls
+        """The set-up's ``<CodeCall>``s: what file each implicit subroutine call (G80-G89, G800-G899) runs."""
         self.nesting = Nesting(file)
         self.sub: tuple[str, int, int] | None = None
         """The open local subroutine: (name, line, nesting depth at its start)."""
@@ -133,7 +138,24 @@ class _State:
             kind, name, at = lexed.call
             block.add(Call(f"<{name}>" if kind == "LL" else name, kind="macro"))
         self.returns(block, code)
+        if self.code_calls:
+            self.implicit_call(block)
         return block
+
+    def implicit_call(self, block: Block) -> None:
+        """``G81``: a call of the file the set-up says the machine builder configured for it (non-modal,
+        one call per block); an unconfigured one stays a code the block syntax keeps verbatim."""
+        for i, (letter, num) in enumerate(block.words):
+            if letter not in "Gg" or not num.isdigit() or not (80 <= int(num) <= 89 or 800 <= int(num) <= 899):
+                continue
+            file = self.code_calls.get(f"G{int(num)}")
+            if file is None:
+                continue
+            if CONTROL in block.sections:
+                raise self.error(block.line, 1, f"G{num}: one call or return per block")
+            del block.words[i]
+            block.add(Call(file, kind="macro"))
+            return
 
     def header(self, block: Block, header: tuple[str, str]) -> None:
         kind, name = header
