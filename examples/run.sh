@@ -26,6 +26,26 @@ for f in examples/linuxcnc/*.ngc; do
     echo "  (refused with the located error above: nothing was written)"
   fi
 done
+for f in examples/isg/*.nc; do
+  n=$(basename "$f" .nc)
+  # ISG to ISG is byte for byte.
+  run translate "$f" --from isg --to isg -o "out/$n.isg.nc"
+  cmp "$f" "out/$n.isg.nc"
+  # Fanuc keeps P parameters and $FOR as Custom Macro B where it can spell them (else the program is
+  # flattened); a machine transformation (#CYL) is refused on its line, naming it.
+  if run translate "$f" --from isg --to fanuc -o "out/$n.fanuc.nc"; then
+    run verify "$f" "out/$n.fanuc.nc" --from isg --to fanuc
+    run translate "$f" --from isg --to grbl -o "out/$n.grbl.nc"
+    run verify "$f" "out/$n.grbl.nc" --from isg --to grbl
+    run translate "$f" --from isg --to linuxcnc -o "out/$n.ngc"
+    run verify "$f" "out/$n.ngc" --from isg --to linuxcnc
+  else
+    echo "  (refused with the located errors above: nothing was written)"
+  fi
+done
+echo
+echo "== out/prof_contour_xy.fanuc.nc: an ISG \$FOR contour kept as Custom Macro B"
+cat out/prof_contour_xy.fanuc.nc
 echo
 echo "== out/o1001_plate_drill_tap.grbl.nc (first 30 lines)"
 head -n 30 out/o1001_plate_drill_tap.grbl.nc

@@ -34,6 +34,8 @@ CONTROL = "Control"
 """Section key of a block's control statement (one per block)."""
 ASSIGN = "Assign"
 """Section key of a block's assignments."""
+LABEL = "Label"
+"""Section key of a block's named jump label."""
 CALL_KINDS = frozenset({"sub", "macro"})
 """``sub``: the subprogram shares the caller's local variables (Fanuc M98); ``macro``: it gets a new
 level of locals, set from the arguments (Fanuc G65, LinuxCNC ``o.. call``)."""
@@ -162,6 +164,33 @@ class Goto(ControlSection):
         self.cond = cond
 
 
+class GotoLabel(ControlSection):
+    """Jump to the block carrying the named ``Label`` ``label`` when ``cond`` (if any) is true (ISG
+    ``$GOTO [NAME]``); the search runs forward from the jump, then from the program's start."""
+
+    XNAME = "GotoLabel"
+    __slots__ = ("label", "cond")
+    XATTRS = (XAttr("label"),)
+    ROLES = ("cond",)
+    OPTIONAL = frozenset({"cond"})
+
+    def __init__(self, label: str, cond: Expr | None = None) -> None:
+        self.label = label
+        self.cond = cond
+
+
+class Label(Section):
+    """A named jump target on a block (ISG ``[NAME]``), under its own key: the block's words run as
+    usual; only ``GotoLabel`` looks at it, and a dialect without named labels cannot write it."""
+
+    XNAME = KEY = "Label"
+    __slots__ = ("name",)
+    XATTRS = (XAttr("name"),)
+
+    def __init__(self, name: str) -> None:
+        self.name = name
+
+
 class IfThen(ControlSection):
     """Fanuc ``IF [c] THEN #1=..``: a conditional assignment."""
 
@@ -194,7 +223,7 @@ class _Labelled(ControlSection):
     """A structured statement: ``label`` pairs it with the rest of its construct."""
 
     __slots__ = ("label",)
-    XATTRS = (XAttr("label"),)
+    XATTRS: ClassVar[tuple[XAttr, ...]] = (XAttr("label"),)
     label: str
 
     def __init__(self, label: str) -> None:
@@ -277,8 +306,85 @@ class EndRepeat(_Labelled):
     __slots__ = ()
 
 
+class For(_Labelled):
+    """A counted loop (ISG ``$FOR P1 = start, end, step``): ``start``, ``end`` and ``step`` are evaluated
+    once, when the loop is entered; the counter is set to ``start`` and the body runs while the counter is
+    at most ``end`` (``step`` > 0) or at least ``end`` (``step`` < 0); the counter grows by ``step`` after
+    each pass, so it holds the first value past ``end`` afterwards. ``step`` 0 never ends by itself (the
+    set-up's loop bound stops it). Ended by ``EndFor``."""
+
+    XNAME = "For"
+    __slots__ = ("counter", "start", "end", "step")
+    ROLES = ("counter", "start", "end", "step")
+
+    def __init__(self, label: str, counter: Expr, start: Expr, end: Expr, step: Expr) -> None:
+        if not isinstance(counter, Var):
+            raise ConfigError("a counted loop's counter must be a variable")
+        self.label = label
+        self.counter = counter
+        self.start = start
+        self.end = end
+        self.step = step
+
+
+class EndFor(_Labelled):
+    """End of a counted loop: the counter grows by the step and the test runs again."""
+
+    XNAME = "EndFor"
+    __slots__ = ()
+
+
+class Until(_LabelledCond):
+    """End of a loop started by ``Do`` and tested at its end (ISG ``$REPEAT`` .. ``$UNTIL c``): back to
+    the body while ``cond`` is false."""
+
+    XNAME = "Until"
+    __slots__ = ()
+
+
+class Switch(_Labelled):
+    """A multiple branch (ISG ``$SWITCH v``): the first ``Case`` whose value is within ``tolerance`` of
+    ``value`` (``|v - c| < tolerance``), else the ``Default``, else nothing runs. A branch is left with
+    ``Break`` (same label); running from one branch into the next ``Case``/``Default`` is an error (the
+    fall-through of a controller is not modelled). Ended by ``EndSwitch``."""
+
+    XNAME = "Switch"
+    __slots__ = ("value", "tolerance")
+    XATTRS = (XAttr("label"), XAttr("tolerance", float, 0.0))
+    ROLES = ("value",)
+
+    def __init__(self, label: str, value: Expr, tolerance: float = 0.0) -> None:
+        self.label = label
+        self.value = value
+        self.tolerance = tolerance
+
+
+class Case(_Labelled):
+    """A branch of the switch labelled ``label``, taken when the switch value equals ``value``."""
+
+    XNAME = "Case"
+    __slots__ = ("value",)
+    ROLES = ("value",)
+
+    def __init__(self, label: str, value: Expr) -> None:
+        self.label = label
+        self.value = value
+
+
+class Default(_Labelled):
+    """The branch of the switch labelled ``label`` taken when no case matches."""
+
+    XNAME = "Default"
+    __slots__ = ()
+
+
+class EndSwitch(_Labelled):
+    XNAME = "EndSwitch"
+    __slots__ = ()
+
+
 class Break(_Labelled):
-    """Leave the innermost loop labelled ``label``."""
+    """Leave the innermost loop (or switch) labelled ``label``."""
 
     XNAME = "Break"
     __slots__ = ()
@@ -447,11 +553,12 @@ class ModalCallCancel(ControlSection):
 
 CONTROL_SECTIONS: tuple[type[Section], ...] = (
     Assign, Goto, IfThen, If, ElseIf, Else, EndIf, While, EndWhile, Do, DoWhile, Repeat, EndRepeat, Break,
-    Continue, SubStart, SubEnd, Return, Call, ModalCall, ModalCallCancel,
+    Continue, SubStart, SubEnd, Return, Call, ModalCall, ModalCallCancel, For, EndFor, Until, Switch, Case,
+    Default, EndSwitch, GotoLabel, Label,
 )
 """Every control-flow section class, for registration."""
 
-LOOP_HEADS: tuple[type[Section], ...] = (While, Do, Repeat)
+LOOP_HEADS: tuple[type[Section], ...] = (While, Do, Repeat, For)
 
 
 def iter_control_sections() -> Iterator[type[Section]]:

@@ -13,7 +13,7 @@ from pathlib import Path
 from typing import Callable, ClassVar, Iterable, Iterator, TextIO
 
 from .errors import Diagnostics, PostprocError, UnsupportedError
-from .ir import Block
+from .ir import Block, one_line
 from .setup import MachineSetup
 from .context import Context
 from .cycle_words import CycleWords
@@ -118,7 +118,7 @@ class Writer(abc.ABC):
 
     def comment_out(self, block: Block) -> str:
         """The source block as a comment line (for ``--on-unsupported warn``)."""
-        text = (block.text or " ".join(a + n for a, n in block.words)).replace("(", "[").replace(")", "]")
+        text = one_line(block.text or " ".join(a + n for a, n in block.words)).replace("(", "[").replace(")", "]")
         return f"(UNSUPPORTED LINE {block.line}: {text.strip()})" + (block.eol or "\n")
 
     @abc.abstractmethod

@@ -16,6 +16,8 @@ mod_pos            LinuxCNC MOD: fmod(x, y), + |y| if negative (-7 MOD 3 = 2,  r
                    7 MOD -3 = 1); y == 0 is an error (rs274 refuses it)
 rem_int            Fanuc MOD: x, y rounded to integers, remainder with x's     [K]/[?]
                    sign; y == 0 is an error
+fmod               C fmod on the reals, the dividend's sign; y == 0 is an     ISG MOD [?]
+                   error
 eq ne              exact equality (Fanuc: "the same as subtraction")          [K] 15i manual
 gt ge lt le        exact (LinuxCNC 2.9.0 GE/LE too: 1 LE 0.9999995 is 0)      rs274, [K]
 eq_tol ne_tol      LinuxCNC EQ/NE: equal when |x-y| < 1e-4                    rs274 (master
@@ -39,6 +41,8 @@ round_address      Fanuc ROUND inside an NC word: to the least input          [K
                    increment (``Env.increment``), half away from zero         of Fanuc syntax)
 trunc away         Fanuc FIX / FUP: toward / away from zero                   [K]
 floor ceil         LinuxCNC FIX / FUP (FIX[-1.5] = -2, FUP[-1.5] = -1)        rs274, src
+fract sqr          x - trunc(x); x*x                                           ISG FRACT SQR
+exp10 log10        10**x; decimal logarithm, x <= 0 is an error                ISG DEXP LOG
 bcd bin            binary -> BCD (BCD[25] = 37) and back; non-negative        [K]
                    integers only, a BIN digit above 9 is an error
 exists             1 if the named variable has a value (EXISTS[#<x>]);        rs274, src
@@ -177,6 +181,12 @@ def _rem_int(x: float, y: float, e: Expr) -> float:
     return math.fmod(xi, yi)
 
 
+def _fmod(x: float, y: float, e: Expr) -> float:
+    if y == 0.0:
+        raise EvalError(f"division by zero in {describe(e)}")
+    return math.fmod(x, y)
+
+
 def _bits(x: float, e: Expr) -> int:
     if not x.is_integer() or x < 0.0:
         raise EvalError(f"{describe(e)} needs non-negative integers, not {x:g}")
@@ -195,6 +205,7 @@ _BINARY: dict[str, Callable[[float, float, Expr], float]] = {
     "pow": _pow,
     "mod_pos": _mod_pos,
     "rem_int": _rem_int,
+    "fmod": _fmod,
     "gt": lambda x, y, e: _bool(x > y),
     "ge": lambda x, y, e: _bool(x >= y),
     "lt": lambda x, y, e: _bool(x < y),
@@ -326,7 +337,24 @@ _FUNCTIONS: dict[str, Callable[[list[float], Expr], float]] = {
     "exp": lambda v, e: _exp(v[0], e),
     "bcd": lambda v, e: _bcd(v[0], e),
     "bin": lambda v, e: _bin(v[0], e),
+    "fract": lambda v, e: v[0] - float(math.trunc(v[0])),
+    "sqr": lambda v, e: v[0] * v[0],
+    "exp10": lambda v, e: _exp10(v[0], e),
+    "log10": lambda v, e: _log10(v[0], e),
 }
+
+
+def _exp10(x: float, e: Expr) -> float:
+    try:
+        return math.pow(10.0, x)
+    except OverflowError:
+        raise EvalError(f"the result of {describe(e)} is too large") from None
+
+
+def _log10(x: float, e: Expr) -> float:
+    if x <= 0.0:
+        raise EvalError(f"logarithm of a number that is not positive in {describe(e)} ({x:g})")
+    return math.log10(x)
 
 
 def _finite(v: float, e: Expr) -> float:
@@ -337,6 +365,7 @@ def _finite(v: float, e: Expr) -> float:
 
 _SYMBOLS = {
     "add": "+", "sub": "-", "mul": "*", "div": "/", "pow": "**", "mod_pos": " MOD ", "rem_int": " MOD ",
+    "fmod": " MOD ",
     "eq": " EQ ", "ne": " NE ", "gt": " GT ", "ge": " GE ", "lt": " LT ", "le": " LE ", "eq_tol": " EQ ",
     "ne_tol": " NE ", "and": " AND ", "or": " OR ", "xor": " XOR ", "bitand": " AND ", "bitor": " OR ",
     "bitxor": " XOR ",

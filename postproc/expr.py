@@ -213,9 +213,10 @@ class Func(Expr):
 UNARY_OPS: frozenset[str] = frozenset({"neg", "pos", "not"})
 """``neg`` -x, ``pos`` +x, ``not``: 1 if x is 0 else 0."""
 
-ARITHMETIC_OPS: frozenset[str] = frozenset({"add", "sub", "mul", "div", "pow", "mod_pos", "rem_int"})
+ARITHMETIC_OPS: frozenset[str] = frozenset({"add", "sub", "mul", "div", "pow", "mod_pos", "rem_int", "fmod"})
 """``pow`` x**y; ``mod_pos`` LinuxCNC's MOD (fmod, then +|y| if negative: result in [0, |y|));
-``rem_int`` Fanuc's MOD (operands rounded to integers, remainder with the dividend's sign)."""
+``rem_int`` Fanuc's MOD (operands rounded to integers, remainder with the dividend's sign); ``fmod``
+C's fmod on the reals (remainder with the dividend's sign, -7 fmod 3 = -1)."""
 
 COMPARISON_OPS: frozenset[str] = frozenset({"eq", "ne", "gt", "ge", "lt", "le", "eq_tol", "ne_tol"})
 """Comparisons give 1.0 or 0.0. ``eq ne gt ge lt le`` are exact (Fanuc; LinuxCNC's GT GE LT LE);
@@ -231,14 +232,15 @@ FUNCTIONS: dict[str, int] = {
     "sin": 1, "cos": 1, "tan": 1, "asin": 1, "asin_360": 1, "acos": 1,
     "atan": 1, "atan_360": 1, "atan2": 2, "atan2_360": 2,
     "sqrt": 1, "abs": 1, "round": 1, "round_address": 1, "trunc": 1, "away": 1, "floor": 1, "ceil": 1,
-    "ln": 1, "exp": 1, "bin": 1, "bcd": 1, "exists": 1,
+    "ln": 1, "exp": 1, "bin": 1, "bcd": 1, "exists": 1, "fract": 1, "sqr": 1, "exp10": 1, "log10": 1,
 }
 """Every neutral function and its number of arguments; angles in degrees. ``asin``/``atan`` give
 -90..90, ``atan2`` -180..180 (LinuxCNC); ``asin_360``/``atan_360``/``atan2_360`` add 360 to a negative
 result (Fanuc's default ranges); ``round`` is half away from zero, ``round_address`` rounds to the
 least input increment (Fanuc ROUND inside an NC word); ``trunc`` toward zero, ``away`` away from zero
 (Fanuc FIX, FUP), ``floor``/``ceil`` (LinuxCNC FIX, FUP); ``bin``/``bcd`` convert BCD <-> binary;
-``exists`` is 1 if its operand, a named variable, has a value."""
+``exists`` is 1 if its operand, a named variable, has a value; ``fract`` x - trunc(x) (sign of x);
+``sqr`` x*x; ``exp10`` 10**x; ``log10`` the decimal logarithm (x <= 0 is an error)."""
 
 EXPR_CLASSES: tuple[type[Expr], ...] = (Num, Var, Unary, Binary, Func)
 

@@ -632,6 +632,14 @@ def decode_eol(name: str) -> str:
     return _EOLS_BACK[name]
 
 
+def one_line(text: str) -> str:
+    """A block's text on one line (a block continued over several lines, ISG's ``\\``, keeps its line
+    ends in ``text``), for a comment or a message that quotes it."""
+    if "\n" in text or "\r" in text:
+        return text.replace("\r\n", " ").replace("\n", " ").replace("\r", " ")
+    return text
+
+
 def register_sections(factory: XFactory | None = None) -> None:
     """Register every core section with ``factory``; idempotent."""
     for cls in iter_sections():

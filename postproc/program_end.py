@@ -18,7 +18,7 @@ from typing import Iterator
 from .context import Context
 from .control import CONTROL, SubEnd, SubStart, Return
 from .dialect import Dialect
-from .ir import Block, Comments, Section
+from .ir import Block, Comments, Section, one_line
 
 ENDS = frozenset(("end", "end_rewind"))
 """``ProgramControl`` kinds that end the program."""
@@ -103,7 +103,7 @@ def _comment_after_end(blocks: Iterator[Block], ctx: Context, keep_subs: bool) -
             ctx.diagnostics.warn("blocks after the program end are written as comments (a controller that is "
                                  "streamed to would run them)", ctx.at(block))
             warned = True
-        text = (block.text or " ".join(a + n for a, n in block.words)).strip()
+        text = one_line(block.text or " ".join(a + n for a, n in block.words)).strip()
         block.sections = {"Comments": Comments([f"AFTER PROGRAM END, LINE {block.line}: {text}"])}
         block.changed()
         yield block

@@ -191,14 +191,14 @@ class MachineSetup(XmlNode):
 
     XNAME = "MachineSetup"
     __slots__ = ("name", "dialect", "pipeline", "input", "output", "cycles", "machine", "templates", "source",
-                 "template_lines", "limits", "library", "controller", "machine_codes")
+                 "template_lines", "limits", "library", "controller", "machine_codes", "code_calls")
 
     def __init__(self, name: str = "default", dialect: str | None = None, pipeline: str | None = None,
                  input: InputSettings | None = None, output: OutputSettings | None = None,
                  cycles: CycleSettings | None = None, machine: MachineSettings | None = None,
                  templates: Templates | None = None, source: str | None = None, limits: Limits | None = None,
                  library: list[str] | None = None, controller: ControllerSettings | None = None,
-                 machine_codes: list[MachineCode] | None = None) -> None:
+                 machine_codes: list[MachineCode] | None = None, code_calls: dict[str, str] | None = None) -> None:
         self.name = name
         self.dialect = dialect
         self.pipeline = pipeline
@@ -215,6 +215,10 @@ class MachineSetup(XmlNode):
         self.library = library if library is not None else []
         """Folders searched for subprograms not in the program's file (``<Library path="..."/>``, relative
         to the set-up file's folder; ``--lib DIR`` adds to them)."""
+        self.code_calls = code_calls if code_calls is not None else {}
+        """Code (as the dialect writes it, upper case, e.g. ISG's implicit subroutine calls) -> the subprogram
+        file the machine builder configured it to run (``<CodeCall code="..." file="..."/>``); a dialect
+        that reads such codes calls the file, found like any subprogram (``Library``)."""
         self.source = source
         self.template_lines: dict[str, int] = {}
         """Line of the set-up file each template starts on (for located template errors)."""
@@ -222,7 +226,7 @@ class MachineSetup(XmlNode):
     def _key(self) -> tuple[Any, ...]:
         return (self.name, self.dialect, self.pipeline, self.input, self.output, self.cycles,
                 self.machine, self.templates, self.limits, tuple(self.library), self.controller,
-                tuple(self.machine_codes))
+                tuple(self.machine_codes), tuple(self.code_calls.items()))
 
     def __repr__(self) -> str:
         return f"MachineSetup(name={self.name!r}, dialect={self.dialect!r})"
@@ -246,6 +250,7 @@ class MachineSetup(XmlNode):
         attr_of = {InputSettings: "input", OutputSettings: "output", CycleSettings: "cycles",
                    MachineSettings: "machine", Limits: "limits", ControllerSettings: "controller"}
         library: list[str] = []
+        code_calls: dict[str, str] = {}
         for child in el:
             if not isinstance(child.tag, str):
                 continue
@@ -261,6 +266,12 @@ class MachineSetup(XmlNode):
                     raise ConfigError("<MachineCodes> appears twice", where(child))
                 kwargs["machine_codes"] = _machine_codes_from_xml(child)
                 continue
+            if child.tag == "CodeCall":
+                code, file = _code_call_from_xml(child)
+                if code in code_calls:
+                    raise ConfigError(f"<CodeCall code=\"{code}\"> appears twice", where(child))
+                code_calls[code] = file
+                continue
             group = by_tag.get(child.tag)
             if group is None:
                 raise ConfigError(f"unknown element <{child.tag}> in <MachineSetup>", where(child))
@@ -271,7 +282,7 @@ class MachineSetup(XmlNode):
         if unknown:
             raise ConfigError(f"<MachineSetup> has unknown attribute(s) {', '.join(sorted(unknown))}", where(el))
         setup = cls(name=el.get("name", "default"), dialect=el.get("dialect"), pipeline=el.get("pipeline"),
-                    source=el.getroottree().docinfo.URL, library=library, **kwargs)
+                    source=el.getroottree().docinfo.URL, library=library, code_calls=code_calls, **kwargs)
         setup.template_lines = lines
         return setup
 
@@ -300,6 +311,8 @@ class MachineSetup(XmlNode):
                 child = etree.SubElement(codes, code.letter)
                 for key, value in code.model_dump(by_alias=True, exclude_defaults=True, exclude={"letter"}).items():
                     child.set(key, str(value))
+        for code, file in self.code_calls.items():
+            etree.SubElement(el, "CodeCall", code=code, file=file)
         return el
 
 
@@ -365,6 +378,18 @@ def _library_from_xml(el: etree._Element) -> str:
     if not path or set(el.attrib) != {"path"} or len([c for c in el if isinstance(c.tag, str)]):
         raise ConfigError("<Library> takes one attribute, path (a folder of subprograms)", where(el))
     return str(path)
+
+
+def _code_call_from_xml(el: etree._Element) -> tuple[str, str]:
+    code, file = el.get("code", ""), el.get("file", "")
+    if set(el.attrib) != {"code", "file"} or len([c for c in el if isinstance(c.tag, str)]):
+        raise ConfigError("<CodeCall> takes two attributes: code (a letter and a number) and file (the "
+                          "subprogram it runs)", where(el))
+    if not (code[:1].isalpha() and code[:1].isascii() and code[1:].isdigit() and code[1:].isascii()):
+        raise ConfigError(f"<CodeCall> code {code!r} is not a letter and a whole number", where(el))
+    if not file.strip():
+        raise ConfigError("<CodeCall> file is empty", where(el))
+    return code[0].upper() + str(int(code[1:])), file
 
 
 def _templates_from_xml(el: etree._Element) -> Templates:

@@ -39,6 +39,7 @@ VALUES = [
     (b("mod_pos", 7, 3), 1.0), (b("mod_pos", -7, 3), 2.0), (b("mod_pos", 7, -3), 1.0),
     (b("mod_pos", -7, -3), 2.0), (b("mod_pos", 7.5, 2), 1.5),
     (b("rem_int", 10, 3), 1.0), (b("rem_int", -10, 3), -1.0), (b("rem_int", 10.4, 2.6), 1.0),
+    (b("fmod", -7, 3), -1.0), (b("fmod", 7.5, -2), 1.5),  # C fmod: the dividend's sign, reals kept
     (b("eq", 1, 1), 1.0), (b("eq", 1, 1.00001), 0.0), (b("ne", 1, 1.00001), 1.0),
     (b("eq_tol", 1, 1.00005), 1.0), (b("eq_tol", 1, 1.0002), 0.0),
     (b("ne_tol", 1, 1.00005), 0.0), (b("ne_tol", 1, 1.0002), 1.0),
@@ -59,6 +60,9 @@ VALUES = [
     (f("away", 3.0), 3.0), (f("floor", -1.5), -2.0), (f("floor", 1.5), 1.0), (f("ceil", -1.5), -1.0),
     (f("ceil", 1.2), 2.0), (f("bcd", 25), 37.0), (f("bcd", 1234), 4660.0), (f("bin", 37), 25.0),
     (f("bin", 4660), 1234.0), (f("round_address", 1.00333), 1.003), (f("round_address", -1.0005), -1.001),
+    # ISG's functions (new neutral names): FRACT keeps the sign, SQR squares, DEXP/LOG are base 10
+    (f("fract", 2.75), 0.75), (f("fract", -2.75), -0.75), (f("sqr", -3), 9.0), (f("exp10", 2), 100.0),
+    (f("log10", 1000), 3.0),
 ]
 
 

@@ -12,7 +12,7 @@ from typing import ClassVar
 
 
 from postproc.interp import FanucVariables, ProgramSyntax
-from postproc.interp.variables import NgcVariables
+from postproc.interp.variables import VariablesFactory
 
 
 class FanucProgramSyntax(ProgramSyntax):
@@ -22,7 +22,7 @@ class FanucProgramSyntax(ProgramSyntax):
     INTEGER_ADDRESSES: ClassVar[frozenset[str]] = frozenset("GMNOTHDLP")
     END_CODES: ClassVar[frozenset[tuple[str, int]]] = frozenset({("M", 30), ("M", 2)})
     MACRO_LOCALS: ClassVar[int] = 33
-    VARIABLES: ClassVar[type[FanucVariables] | type[NgcVariables]] = FanucVariables
+    VARIABLES: ClassVar[VariablesFactory] = FanucVariables
     LIBRARY_FILES: ClassVar[tuple[str, ...]] = ("O{number:04d}", "O{number:04d}.nc", "{name}.nc", "{name}")
     PROGRAM_LABEL: ClassVar[str] = "O{number:04d}"
 

@@ -1,13 +1,21 @@
 """Fanuc writer: the RS274 word writer spelling every code from Fanuc's table (G00, M03, G04 X seconds),
-expressions and Custom Macro B statements in Fanuc's spelling, and calls as ``M98``/``G65``/``G66``."""
+expressions and Custom Macro B statements in Fanuc's spelling, and calls as ``M98``/``G65``/``G66``.
+
+A named subprogram defined in another dialect's program (ISG ``%L SUB_CONT`` ... ``M17``, before the main
+program) becomes a numbered one after the main program's end, where Fanuc finds it: ``O2000`` ... ``M99``
+(the first free number from ``SUBPROGRAM_NUMBERS``), and its calls ``G65 P2000``/``M98 P2000``."""
 
 from __future__ import annotations
 
 from typing import ClassVar
 
-from postproc.control import Call, ModalCall, ModalCallCancel, Return
+from postproc.context import Context
+from postproc.control import (
+    CONTROL, Assign, Call, EndFor, EndWhile, For, ModalCall, ModalCallCancel, Return, SubEnd, SubStart, While,
+)
+from postproc.dialect import Dialect
 from postproc.errors import UnsupportedError
-from postproc.expr import Expr, Num
+from postproc.expr import Binary, Expr, Num, Var
 from postproc.ir import Block, Section
 from postproc.rs274.codes import CodeTable
 from postproc.rs274.expressions import FANUC_SPELLING, ExprSpelling, spell_word_value
@@ -29,11 +37,96 @@ class FanucWriter(WordWriter):
     """G10 L2 P1-P6 sets G54-G59's offset (P0 is the external offset, which other dialects lack)."""
     WORK_OFFSET_COUNT: ClassVar[int] = 6
     SETTING_ADDS_IN_INCREMENTAL: ClassVar[bool] = True
+    SUBPROGRAM_NUMBERS: ClassVar[range] = range(2000, 8000)
+    """Program numbers given to named subprograms (below O8000, which controls often lock)."""
+
+    def __init__(self, ctx: Context, source_dialect: str, target: type[Dialect] | None = None) -> None:
+        super().__init__(ctx, source_dialect, target)
+        self.loops: list[tuple[str, Var | None, float]] = []
+        """Open loops written from another dialect: (source label, counter, step) of a counted loop, or
+        (label, None, 0) of a while loop; the depth is the ``DO`` number (Fanuc nests DO1-DO3)."""
+        self.numbers: dict[str, int] = {}
+        """Named subprogram -> the program number it is written as."""
+        self.programs: set[int] = set()
+        """Program numbers of the source's own programs (``O``/``%`` numbers) met so far."""
+        self.capture: list[str] | None = None
+        """The text of the named subprogram being written (it goes after the main program)."""
+        self.subprograms: list[str] = []
+        self.ended = False
+        """The main program's end (M02/M30) was written."""
+
+    def write_block(self, block: Block) -> str | None:
+        control = block.sections.get(CONTROL)
+        start = block.sections.get("ProgramStart")
+        if start is not None and getattr(start, "number", None) is not None:
+            number = int(start.number)  # type: ignore[attr-defined]
+            if number in self.numbers.values():
+                self.unsupported(f"program O{number:04d}, the number given to a named subprogram", block)
+            self.programs.add(number)
+        if self.source_dialect != self.DIALECT and isinstance(control, (SubStart, SubEnd)):
+            return self.named_subprogram(control, block)
+        try:
+            text = super().write_block(block)
+        except UnsupportedError as err:
+            if self.capture is None:
+                raise
+            text = self.unsupported_block(block, err)
+        kind = getattr(block.sections.get("ProgramControl"), "kind", None)
+        if kind in ("end", "end_rewind") and self.capture is None:
+            self.ended = True
+        if self.capture is not None:
+            if text:
+                self.capture.append(text)
+            return None
+        return text
+
+    def named_subprogram(self, control: SubStart | SubEnd, block: Block) -> str | None:
+        """Start capturing a named subprogram's text (``O<n>``), or end it (``M99``) and keep it for
+        after the main program."""
+        eol = block.eol or "\n"
+        if isinstance(control, SubStart):
+            if self.capture is not None:
+                self.unsupported("a subprogram defined inside another", block)
+            comments = block.sections.get("Comments")
+            note = "".join(f" {self.comment(t)}" for t in getattr(comments, "texts", ()))
+            self.capture = [f"O{self.subprogram_number(control.name, block):04d}{note}{eol}"]
+            return None
+        if self.capture is None:
+            self.unsupported(f"the end of subprogram {control.name}, which no written line opened", block)
+        if control.value is not None:
+            self.unsupported("a subprogram end returning a value", block)
+        self.capture.append("M99" + eol)
+        self.subprograms.append("".join(self.capture))
+        self.capture = None
+        return None
+
+    def subprogram_number(self, name: str, block: Block) -> int:
+        number = self.numbers.get(name)
+        if number is None:
+            taken = set(self.numbers.values()) | self.programs
+            number = next((n for n in self.SUBPROGRAM_NUMBERS if n not in taken), None)
+            if number is None:
+                self.unsupported(f"the named subprogram {name} (no program number left)", block)
+            self.numbers[name] = number
+        return number
+
+    def finish(self) -> str:
+        """The named subprograms, after the main program's end (where Fanuc looks for them)."""
+        if not self.subprograms:
+            return super().finish()
+        if not self.ended or self.capture is not None:
+            raise UnsupportedError("named subprograms need the main program's end (M02/M30) before them, and "
+                                   "each its own end")
+        return super().finish() + "".join(self.subprograms)
 
     def statement_words(self, section: Section, block: Block) -> list[str]:
         """``#1=..``, ``IF``/``GOTO``/``WHILE``/``END`` through ``spell_statement_fanuc``; calls as
-        ``M98 P L``, ``G65 P L <arguments>`` (spec I letters), ``G66``/``G67``, returns as ``M99 [P]``."""
+        ``M98 P L``, ``G65 P L <arguments>`` (spec I letters), ``G66``/``G67``, returns as ``M99 [P]``.
+        From another dialect a loop's ``DO`` number is its depth, and a counted loop (``For``) is its
+        counter set before ``WHILE [#i LE end] DOm`` and grown before ``ENDm``."""
         try:
+            if self.source_dialect != self.DIALECT and isinstance(section, (While, EndWhile, For, EndFor)):
+                return self.loop_words(section, block)
             if isinstance(section, Call):
                 return self.call_words(section, block)
             if isinstance(section, ModalCall):
@@ -47,6 +140,34 @@ class FanucWriter(WordWriter):
             if err.location is None:
                 err.located(self.ctx.at(block))
             raise
+
+    def loop_words(self, section: While | EndWhile | For | EndFor, block: Block) -> list[str]:
+        eol = block.eol or "\n"
+        if isinstance(section, (While, For)):
+            depth = str(len(self.loops) + 1)
+            if isinstance(section, While):
+                head = spell_statement_fanuc(While(depth, section.cond))
+                self.loops.append((section.label, None, 0.0))
+                return [head]
+            step, end = section.step, section.end
+            if not (isinstance(step, Num) and step.value != 0.0 and isinstance(end, Num)):
+                self.unsupported("a counted loop whose end or step is computed or whose step is 0 (WHILE "
+                                 "would evaluate it on every pass, the counted loop once)", block)
+            assert isinstance(section.counter, Var)  # For's constructor holds it
+            init = spell_statement_fanuc(Assign([(section.counter, section.start)]))
+            test = Binary("le" if step.value > 0 else "ge", section.counter, end)
+            head = spell_statement_fanuc(While(depth, test))
+            self.loops.append((section.label, section.counter, step.value))
+            return [init + eol + head]
+        if not self.loops or self.loops[-1][0] != section.label:
+            self.unsupported(f"the end of loop {section.label!r}, which no written loop opened", block)
+        depth = str(len(self.loops))
+        _, counter, step_value = self.loops.pop()
+        end_words = spell_statement_fanuc(EndWhile(depth))
+        if counter is None:
+            return [end_words]
+        grow = spell_statement_fanuc(Assign([(counter, _grown(counter, step_value))]))
+        return [grow + eol + end_words]
 
     def call_words(self, call: Call, block: Block) -> list[str]:
         if call.kind == "macro":
@@ -74,7 +195,9 @@ class FanucWriter(WordWriter):
         if isinstance(name, Expr):
             return _whole(name)
         if not name.isdigit():
-            self.unsupported(f"a call of the named subprogram {name} ({code} calls program numbers)", block)
+            if self.source_dialect == self.DIALECT or not name.startswith("<"):
+                self.unsupported(f"a call of the named subprogram {name} ({code} calls program numbers)", block)
+            return str(self.subprogram_number(name, block))
         return name
 
     def return_words(self, ret: Return, block: Block) -> list[str]:
@@ -90,3 +213,8 @@ def _whole(expr: Expr) -> str:
     if isinstance(expr, Num) and expr.value.is_integer() and expr.value >= 0:
         return str(int(expr.value))
     return spell_word_value(expr, FANUC_SPELLING)
+
+
+def _grown(counter: Var, step: float) -> Binary:
+    """The counter after one pass: ``#i+step`` or ``#i-|step|``."""
+    return Binary("add", counter, Num(step)) if step > 0 else Binary("sub", counter, Num(-step))

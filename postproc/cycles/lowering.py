@@ -19,7 +19,7 @@ from typing import Iterator
 from postproc.dialect import Dialect
 from postproc.errors import UnsupportedError
 from postproc.ir import (
-    Block, Comments, CompoundMotion, Motion, ProgramControl, Section, SpindleControl, SpindleOrientation,
+    Block, Comments, CompoundMotion, Motion, ProgramControl, Section, SpindleControl, SpindleOrientation, one_line,
 )
 from postproc.context import Context
 
@@ -61,7 +61,7 @@ def _expand(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Ite
             sections.pop("CompoundMotion", None)
             yield block
             continue
-        source = (block.text or _source(block)).strip()
+        source = one_line(block.text or _source(block)).strip()
         del sections["CannedCycle"]
         block.changed()
         compound = sections.get("CompoundMotion")

@@ -21,8 +21,9 @@ from __future__ import annotations
 from typing import Iterator, Protocol
 
 from ..control import (
-    ASSIGN, CONTROL, Assign, Break, Call, Continue, Do, DoWhile, Else, ElseIf, EndIf, EndRepeat, EndWhile,
-    Goto, If, IfThen, ModalCall, ModalCallCancel, Repeat, Return, SubEnd, SubStart, While,
+    ASSIGN, CONTROL, LABEL, GotoLabel, Assign, Break, Call, Case, Continue, Default, Do, DoWhile, Else, ElseIf, EndFor, EndIf,
+    EndRepeat, EndSwitch, EndWhile, For, Goto, If, IfThen, ModalCall, ModalCallCancel, Repeat, Return, SubEnd,
+    SubStart, Switch, Until, While,
 )
 from ..errors import Location, PostprocError, ProgramError
 from ..evaluation import evaluate, evaluate_number
@@ -35,7 +36,7 @@ from .rules import STORED_PROGRAMS, SubprogramRules
 from .store import Program, ProgramStore, source_text
 from .variables import Variables
 
-NON_WORD_SECTIONS = frozenset((CONTROL, ASSIGN))
+NON_WORD_SECTIONS = frozenset((CONTROL, ASSIGN, LABEL))
 
 
 class Host(Protocol):
@@ -71,7 +72,7 @@ class _Frame:
     """One running program level: where it runs, how it was called, what it repeats."""
 
     __slots__ = ("program", "pc", "end", "origin", "new_level", "call_block", "remaining", "index", "count",
-                 "args", "start", "repeats", "modal", "site", "needs_return")
+                 "args", "start", "repeats", "modal", "site", "needs_return", "fors")
 
     def __init__(self, program: Program, start: int, end: int, origin: Origin | None, new_level: bool,
                  call_block: Block | None, index: int, count: int, args: dict[int, Value], modal: bool,
@@ -87,6 +88,8 @@ class _Frame:
         self.count = count
         self.args = args
         self.repeats: dict[int, int] = {}
+        self.fors: dict[int, tuple[float, float]] = {}
+        """Position of a running counted loop -> its (end, step), evaluated when it was entered."""
         self.modal = modal
         self.site = site
         self.needs_return = False
@@ -246,6 +249,16 @@ class Interpreter:
             self._spend(block, "jump")
             yield from self._note(frame, block, "jump")
             frame.pc = target
+        elif isinstance(control, GotoLabel):
+            if control.cond is not None and not _true(evaluate(control.cond, vars_)):
+                frame.pc += 1
+                return
+            found = program.find_label(control.label, pos)
+            if found is None:
+                raise ProgramError(f"'{source_text(block)}': no block labelled {control.label} in {program.file}")
+            self._spend(block, "jump")
+            yield from self._note(frame, block, "jump")
+            frame.pc = found
         elif isinstance(control, IfThen):
             if _true(evaluate(control.cond, vars_)):
                 self._assign(control.assign)
@@ -288,6 +301,58 @@ class Interpreter:
                 yield from self._note(frame, program.blocks[head], "iteration")
             else:
                 frame.pc = pos + 1
+        elif isinstance(control, For):
+            first = evaluate_number(control.start, vars_, "the loop's start")
+            last = evaluate_number(control.end, vars_, "the loop's end")
+            stride = evaluate_number(control.step, vars_, "the loop's step")
+            vars_.write(var_key(control.counter, vars_), first)
+            frame.fors[pos] = (last, stride)
+            if _counting(first, last, stride):
+                frame.pc += 1
+                yield from self._note(frame, block, "iteration")
+            else:
+                frame.pc = program.pairs[pos] + 1
+        elif isinstance(control, EndFor):
+            head = program.pairs[pos]
+            loop = program.blocks[head].get(CONTROL)
+            last, stride = frame.fors[head]
+            key = var_key(loop.counter, vars_)
+            counted = evaluate_number(loop.counter, vars_, "the loop's counter") + stride
+            vars_.write(key, counted)
+            if _counting(counted, last, stride):
+                self._spend(block, "loop")
+                frame.pc = head + 1
+                yield from self._note(frame, program.blocks[head], "iteration")
+            else:
+                frame.pc = pos + 1
+        elif isinstance(control, Until):
+            if _true(evaluate(control.cond, vars_)):
+                frame.pc += 1
+            else:
+                self._spend(block, "loop")
+                frame.pc = program.pairs[pos] + 1
+                yield from self._note(frame, program.blocks[program.pairs[pos]], "iteration")
+        elif isinstance(control, Switch):
+            selector = evaluate_number(control.value, vars_, "the switch value")
+            chain = program.chains[pos]
+            frame.pc = program.pairs[pos] + 1  # no branch taken: after the end
+            default = None
+            for at in chain[1:]:
+                member = program.blocks[at].get(CONTROL)
+                if isinstance(member, Default):
+                    default = at
+                elif abs(evaluate_number(member.value, vars_, "a case value")
+                         - selector) < control.tolerance:
+                    frame.pc = at + 1
+                    break
+            else:
+                if default is not None:
+                    frame.pc = default + 1
+        elif isinstance(control, (Case, Default)):
+            raise ProgramError(f"'{source_text(block)}' is reached from the branch before it, which does not end "
+                               f"with a break (running on into the next branch is not modelled)")
+        elif isinstance(control, EndSwitch):
+            frame.pc += 1
         elif isinstance(control, Continue):
             head = program.pairs[pos]
             if isinstance(program.blocks[head].get(CONTROL), While):
@@ -316,6 +381,8 @@ class Interpreter:
         elif isinstance(control, SubEnd):
             value = None if control.value is None else evaluate_number(control.value, vars_, "a return value")
             self._return(frame, block, value, None)
+        elif isinstance(control, Return) and len(self.frames) == 1 and self.rules.main_return_refused:
+            raise ProgramError(f"'{source_text(block)}' returns from the main program (it ends a subroutine)")
         elif isinstance(control, Return) and len(self.frames) == 1 and self.rules.main_return_words:
             self.ended = True  # the words that end the program run instead
             yield ExecutedBlock(block.line, None, block.eol, list(self.rules.main_return_words), frame.origin)
@@ -520,6 +587,11 @@ class Interpreter:
 
 class Reporter(Protocol):
     def __call__(self, err: PostprocError) -> None: ...
+
+
+def _counting(value: float, end: float, step: float) -> bool:
+    """A counted loop runs on while its counter has not passed its end (step 0: always)."""
+    return value <= end if step > 0.0 else value >= end if step < 0.0 else True
 
 
 def _true(value: Value) -> bool:

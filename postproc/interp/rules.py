@@ -28,6 +28,8 @@ class SubprogramRules:
     store's subprograms after the main program's end (Fanuc)."""
     main_return_words: tuple[tuple[str, str], ...] | None
     """What ``M99`` in the main program runs instead (LinuxCNC: ``M2``); None: it restarts the program."""
+    main_return_refused: bool = False
+    """A return in the main program is an error (a dialect whose return ends only a subroutine)."""
 
 
 STORED_PROGRAMS = SubprogramRules(forward_search=False, main_return_words=None)

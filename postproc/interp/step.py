@@ -26,7 +26,7 @@ from ..context import Context
 from ..syntax import Syntax
 from .spelling import spell_integer, spell_number
 from .rules import STORED_PROGRAMS, SubprogramRules
-from .variables import FanucVariables, NgcVariables, Variables
+from .variables import FanucVariables, Variables, VariablesFactory
 
 if TYPE_CHECKING:
     from .store import Program
@@ -50,12 +50,15 @@ class ProgramSyntax(Syntax):
     """Words that end the program (nothing after them runs), e.g. ``("M", 30)``."""
     MACRO_LOCALS: ClassVar[int] = 33
     """Highest local variable a call argument may set."""
-    VARIABLES: ClassVar[type[FanucVariables] | type[NgcVariables]] = FanucVariables
+    VARIABLES: ClassVar[VariablesFactory] = FanucVariables
     """The variable model (and vacancy rules) of the dialect family."""
     LIBRARY_FILES: ClassVar[tuple[str, ...]] = ("{name}", "{name}.nc")
     """File names tried in each library folder for a subprogram (``{name}``: its name, brackets
     removed; ``{number}``: the name as an int, for ``{number:04d}``-style patterns)."""
     PROGRAM_LABEL: ClassVar[str] = "{name}"
+    RUN_BEFORE_KEEP: ClassVar[bool] = False
+    """Run a program before keeping it symbolically for another dialect, and refuse it where the run
+    fails: for a dialect whose run-time errors (an unset variable read) are values in the targets."""
     SUBPROGRAM_RULES: ClassVar[SubprogramRules] = STORED_PROGRAMS
     """How numbered subprograms are found and ended (``postproc.interp.rules``)."""
     """How messages name a subprogram (``O{number:04d}``, ``o{name}``)."""
@@ -138,6 +141,8 @@ class ProgramSyntax(Syntax):
             body.extend(blocks)
             reason = self._keep_reason(body, ctx)
             if reason is None:
+                if self.RUN_BEFORE_KEEP:
+                    self._check_runs(body, ctx, kept, seen)
                 yield from body
                 return
             ctx.diagnostics.warn(f"the program is flattened (its evaluated motion is written): {reason}",
@@ -145,17 +150,28 @@ class ProgramSyntax(Syntax):
             block, blocks = body[0], iter(body[1:])
         yield from self._run(block, blocks, ctx, kept, seen)
 
+    def _check_runs(self, body: list[Block], ctx: Context, kept: deque[tuple[str, str] | None], seen: int) -> None:
+        """Run fresh copies of the program to its end, reporting the interpreter's first error (located in
+        the program): a program kept symbolically then fails to translate where it fails to run."""
+        copies = self._copies(body, ctx)
+        if copies:
+            for _ in self._run(copies[0], iter(copies[1:]), ctx, kept, seen):
+                pass
+
+    def _copies(self, body: list[Block], ctx: Context) -> list[Block]:
+        copies = self.read_lines([(b.text or "") + b.eol for b in body], ctx.file, ctx,
+                                 Diagnostics(ErrorLevel.IGNORE))
+        for original, copy in zip(body, copies):
+            copy.line = original.line
+        return copies
+
     def _keep_reason(self, body: list[Block], ctx: Context) -> str | None:
         """Why ``body`` (the program from its first construct on) cannot travel symbolically, through
         ``ctx.keep_check`` on fresh copies (the check runs the later steps, which change blocks)."""
         check = ctx.keep_check
         if check is None:
             return "the target's spelling of the program's constructs was not checked"
-        copies = self.read_lines([(b.text or "") + b.eol for b in body], ctx.file, ctx,
-                                 Diagnostics(ErrorLevel.IGNORE))
-        for original, copy in zip(body, copies):
-            copy.line = original.line
-        return check(copies)
+        return check(self._copies(body, ctx))
 
     def _run(self, first: Block, rest: Iterator[Block], ctx: Context, kept: deque[tuple[str, str] | None],
              seen: int) -> Iterator[Block]:
@@ -174,7 +190,8 @@ class ProgramSyntax(Syntax):
                              kept_limit=ctx.setup.limits.kept_prefix)
         increment = ctx.setup.input.increment
         state = ctx.state
-        variables: Variables = self.VARIABLES(lambda: increment(state.units))
+        make: VariablesFactory = type(self).VARIABLES
+        variables: Variables = make(lambda: increment(state.units))
         interpreter = Interpreter(store, self, variables, ctx.setup.limits, ctx.diagnostics.error, annotate=True,
                                   rules=self.SUBPROGRAM_RULES)
         yield from interpreter.run(start=len(prefix))

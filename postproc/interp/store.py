@@ -15,21 +15,22 @@ from __future__ import annotations
 from typing import Callable
 
 from ..control import (
-    CONTROL, Break, Continue, Do, DoWhile, Else, ElseIf, EndIf, EndRepeat, EndWhile, If, Repeat, SubEnd,
-    SubStart, While,
+    CONTROL, LABEL, Break, Case, Continue, Default, Do, DoWhile, Else, ElseIf, EndFor, EndIf, EndRepeat, EndSwitch,
+    EndWhile, For, If, Repeat, SubEnd, SubStart, Switch, Until, While,
 )
 from ..errors import ProgramError
-from ..ir import Block, Section
+from ..ir import Block, Section, one_line
 from ..source_map import locate
 
-_HEADS: dict[type[Section], type[Section]] = {EndWhile: While, DoWhile: Do, EndRepeat: Repeat}
+_HEADS: dict[type[Section], type[Section]] = {EndWhile: While, DoWhile: Do, EndRepeat: Repeat, EndFor: For,
+                                              Until: Do}
 """Each loop end and the head it closes."""
-_LOOPS = (While, Do, Repeat)
+_LOOPS = (While, Do, Repeat, For)
 
 
 def source_text(block: Block) -> str:
     """The construct as written, for messages (or the block's words when it has no text)."""
-    text = block.text if block.text is not None else " ".join(a + n for a, n in block.words)
+    text = one_line(block.text) if block.text is not None else " ".join(a + n for a, n in block.words)
     return text.strip() or type(block.get(CONTROL)).__name__
 
 
@@ -37,16 +38,19 @@ class Program:
     """One file's blocks, indexed. ``main_end`` is the position after the main program's end block
     (``len(blocks)`` when it has none); blocks past it run only as subprograms."""
 
-    __slots__ = ("file", "blocks", "sequence", "pairs", "chains", "subs", "main_end", "first_line")
+    __slots__ = ("file", "blocks", "sequence", "labels", "pairs", "chains", "subs", "main_end", "first_line")
 
     def __init__(self, file: str, blocks: list[Block], is_end: Callable[[Block], bool]) -> None:
         self.file = file
         self.blocks = blocks
         self.sequence: dict[int, list[int]] = {}
+        self.labels: dict[str, list[int]] = {}
+        """Named jump label -> positions of the blocks carrying it."""
         self.pairs: dict[int, int] = {}
         """Loop head <-> end, and break/continue -> the head of their loop."""
         self.chains: dict[int, list[int]] = {}
-        """Every member of an if-chain -> the chain's positions (if, elseifs, else, endif)."""
+        """Every member of an if-chain -> the chain's positions (if, elseifs, else, endif); a switch ->
+        its cases and default, in order."""
         self.subs: dict[str, tuple[int, int]] = {}
         """Subprogram name -> (position of its first body block, position of its end)."""
         self.main_end = len(blocks)
@@ -64,6 +68,9 @@ class Program:
             seq = sections.get("Sequence")
             if seq is not None:
                 self.sequence.setdefault(seq.number, []).append(pos)  # type: ignore[attr-defined]
+            label = sections.get(LABEL)
+            if label is not None:
+                self.labels.setdefault(label.name, []).append(pos)  # type: ignore[attr-defined]
             start = sections.get("ProgramStart")
             if start is not None and pos >= self.main_end:
                 number, name = start.number, start.name  # type: ignore[attr-defined]
@@ -85,9 +92,9 @@ class Program:
             self.subs.setdefault(name, (pos + 1, end))
 
     def _statement(self, control: Section, pos: int, block: Block, stack: list[tuple[Section, int]]) -> None:
-        if isinstance(control, (*_LOOPS, If, SubStart)):
+        if isinstance(control, (*_LOOPS, If, SubStart, Switch)):
             stack.append((control, pos))
-            if isinstance(control, If):
+            if isinstance(control, (If, Switch)):
                 self.chains[pos] = [pos]
             return
         kind = type(control)
@@ -102,10 +109,21 @@ class Program:
                 raise self._error(block, f"'{source_text(block)}' after the else branch")
             chain.append(pos)
             self.chains[pos] = chain
+        elif kind in (Case, Default, EndSwitch):
+            _, at = self._close(stack, Switch, control.label, block, pop=kind is EndSwitch)  # type: ignore[attr-defined]
+            chain = self.chains[at]
+            if kind is EndSwitch:
+                self.pairs[at] = pos
+                self.pairs[pos] = at
+                return
+            if kind is Case and isinstance(self.blocks[chain[-1]].get(CONTROL), Default):
+                raise self._error(block, f"'{source_text(block)}' after the default branch")
+            chain.append(pos)
         elif kind in (Break, Continue):
             label = control.label  # type: ignore[attr-defined]
+            heads = (*_LOOPS, Switch) if kind is Break else _LOOPS
             for section, at in reversed(stack):
-                if isinstance(section, _LOOPS) and section.label == label:
+                if isinstance(section, heads) and section.label == label:
                     self.pairs[pos] = at
                     return
             raise self._error(block, f"'{source_text(block)}' is not inside loop {label}")
@@ -130,13 +148,20 @@ class Program:
 
     def find_sequence(self, number: int, after: int) -> int | None:
         """Fanuc's search: the first block numbered ``number`` after ``after``, else the first one."""
-        positions = self.sequence.get(number)
-        if not positions:
-            return None
-        for p in positions:
-            if p > after:
-                return p
-        return positions[0]
+        return _first_after(self.sequence.get(number), after)
+
+    def find_label(self, name: str, after: int) -> int | None:
+        """The first block labelled ``name`` after ``after``, else the first one."""
+        return _first_after(self.labels.get(name), after)
+
+
+def _first_after(positions: list[int] | None, after: int) -> int | None:
+    if not positions:
+        return None
+    for p in positions:
+        if p > after:
+            return p
+    return positions[0]
 
 
 Loader = Callable[[str], "Program | None"]

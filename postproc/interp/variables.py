@@ -12,7 +12,7 @@ cannot be simulated or flattened.
 
 from __future__ import annotations
 
-from typing import Callable
+from typing import Callable, Protocol
 
 from ..expr import EvalError, Vacancy, Value, VarKey
 
@@ -191,4 +191,25 @@ def _spell(key: VarKey) -> str:
     return f"#<{key}>" if isinstance(key, str) else f"#{key}"
 
 
-Variables = FanucVariables | NgcVariables
+class Variables(Protocol):
+    """What the interpreter needs of a dialect family's variables: the ``Env`` of ``evaluate`` plus the
+    call levels. ``FanucVariables`` and ``NgcVariables`` are two; a dialect outside the RS274 family
+    brings its own (a class taking the increment callable, as these do)."""
+
+    @property
+    def vacancy(self) -> Vacancy: ...
+
+    @property
+    def increment(self) -> float: ...
+
+    def read(self, key: VarKey) -> Value: ...
+
+    def write(self, key: VarKey, value: Value) -> None: ...
+
+    def enter(self, args: dict[int, Value], new_level: bool) -> None: ...
+
+    def leave(self, new_level: bool, value: Value = None) -> None: ...
+
+
+VariablesFactory = Callable[[Callable[[], float]], Variables]
+"""A variables class (or any callable) taking the least-increment callable."""

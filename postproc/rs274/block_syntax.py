@@ -69,6 +69,10 @@ class WordBlockSyntax(Syntax):
     """G10 L2 P0 names the active work system (LinuxCNC), not an offset common to all (Fanuc)."""
     BASE_VARIANT: ClassVar[str] = ""
     """The variant whose machine codes every variant of the family has."""
+    """Words a verbatim M code takes with it (M98 P.. L..)."""
+    POINTLESS_IN_UNITS: ClassVar[bool] = False
+    """A number without a decimal point is in program units whatever the set-up's ``Input`` says
+    (DIN 66025 controls such as ISG: ``X10`` is 10 mm), instead of least input increments."""
 
     def build(self, block: Block, ctx: Context) -> None:
         words = block.words
@@ -117,7 +121,7 @@ class WordBlockSyntax(Syntax):
             units = unit[2]  # type: ignore[assignment]
         cycle_block = "09" in codes and codes["09"][1] == "cycle" or (
             state.cycle is not None and "01" not in codes and "09" not in codes)
-        divisor = _divisor(ctx, units)
+        divisor = 0 if self.POINTLESS_IN_UNITS else _divisor(ctx, units)
         mix = point_mix(ctx) if divisor else None
         for up, num in raw.items():
             if up in values:

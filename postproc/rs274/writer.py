@@ -18,7 +18,7 @@ from ..event_order import after_motion
 from ..expr import Expr
 from .codes import CodeTable
 from .expressions import ExprSpelling, spell_word_value
-from ..ir import Block, CompoundMotion, Motion, Section
+from ..ir import Block, CompoundMotion, Motion, Section, one_line
 from ..numbers import EXACT, EXACT_INCH, MAX_PLACES, canonical_number_re, format_decimal
 from ..state import MM_PER_INCH, ModalState, changes_nothing
 from ..context import Context
@@ -213,7 +213,10 @@ class WordWriter(Writer):
             if section is not None:
                 words.extend(self.section_words(key, section, block))
         for key in sections:
-            if key not in SECTION_ORDER and key not in self.IGNORED and key not in ("ProgramStart", "TapeMark"):
+            # A named label (ISG [NAME]) is only a jump target: a program that jumps is run (flattened),
+            # its labels dropped; in a straight program a label does nothing.
+            if key not in SECTION_ORDER and key not in self.IGNORED and key not in ("ProgramStart", "TapeMark",
+                                                                                    "Label"):
                 self.unsupported(f"{key}", block)
         start = sections.get("ProgramStart")
         if start is not None:
@@ -303,7 +306,7 @@ class WordWriter(Writer):
 
     def source_text(self, block: Block) -> str:
         if block.text is not None:
-            return block.text.strip()
+            return one_line(block.text).strip()
         return " ".join(letter + num for letter, num in block.words)
 
     # -- section words -----------------------------------------------------------------------------
@@ -598,7 +601,7 @@ _UPPER = {c: c.upper() for c in "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstu
 
 
 _STATEMENTS = {
-    "Assign": "variable assignments", "Goto": "GOTO jumps", "IfThen": "conditional assignments",
+    "Assign": "variable assignments", "Goto": "GOTO jumps", "GotoLabel": "jumps to named labels", "IfThen": "conditional assignments",
     "If": "IF conditions", "ElseIf": "IF conditions", "Else": "IF conditions", "EndIf": "IF conditions",
     "While": "WHILE loops", "EndWhile": "WHILE loops", "Do": "DO loops", "DoWhile": "DO loops",
     "Repeat": "REPEAT loops", "EndRepeat": "REPEAT loops", "Break": "loop breaks", "Continue": "loop continues",

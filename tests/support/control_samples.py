@@ -9,8 +9,9 @@ from __future__ import annotations
 from typing import Any, Callable
 
 from postproc.control import (
-    Assign, Break, Call, Continue, Do, DoWhile, Else, ElseIf, EndIf, EndRepeat, EndWhile, Goto, If, IfThen,
-    ModalCall, ModalCallCancel, Repeat, Return, SubEnd, SubStart, While,
+    Assign, Break, Call, Case, Continue, Default, Do, DoWhile, Else, ElseIf, EndFor, EndIf, EndRepeat,
+    EndSwitch, EndWhile, For, Goto, GotoLabel, If, IfThen, Label, ModalCall, ModalCallCancel, Repeat, Return,
+    SubEnd, SubStart, Switch, Until, While,
 )
 from postproc.expr import Binary, Num, Var
 
@@ -92,4 +93,19 @@ CONTROL_SAMPLES: dict[str, list[tuple[Builder, str]]] = {
                    '<ModalCall name="9010">\n  <Arg n="18">\n    <Num value="2.0"/>\n  </Arg>\n</ModalCall>')],
     "ModalCallCancel": [(lambda c: ModalCallCancel(), "<ModalCallCancel/>")],
     "ProgramSyntax": [(lambda c: c["ProgramSyntax"](), "<ProgramSyntax/>")],
+    "For": [(lambda c: For("3", v(510), Num(0.0), Num(8.0), Num(1.0)),
+             '<For label="3">\n  <Counter>\n    <Var>\n      <Num value="510.0"/>\n    </Var>\n  </Counter>\n'
+             '  <Start>\n    <Num value="0.0"/>\n  </Start>\n  <End>\n    <Num value="8.0"/>\n  </End>\n'
+             '  <Step>\n    <Num value="1.0"/>\n  </Step>\n</For>')],
+    "EndFor": _labelled(EndFor, "EndFor"),
+    "Until": _labelled_cond(Until, "Until"),
+    "Switch": [(lambda c: Switch("2", v(1), 0.001),
+                '<Switch label="2" tolerance="0.001">\n  <Value>\n    <Var>\n      <Num value="1.0"/>\n'
+                '    </Var>\n  </Value>\n</Switch>')],
+    "Case": [(lambda c: Case("2", Num(3.0)), '<Case label="2">\n  <Value>\n    <Num value="3.0"/>\n  </Value>\n</Case>')],
+    "Default": _labelled(Default, "Default"),
+    "EndSwitch": _labelled(EndSwitch, "EndSwitch"),
+    "GotoLabel": [(lambda c: GotoLabel("LOOP"), '<GotoLabel label="LOOP"/>'),
+                  (lambda c: GotoLabel("END_1", LT), '<GotoLabel label="END_1">\n' + _cond("Cond") + "\n</GotoLabel>")],
+    "Label": [(lambda c: Label("LOOP"), '<Label name="LOOP"/>')],
 }

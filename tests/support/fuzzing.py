@@ -59,6 +59,9 @@ def setups() -> st.SearchStrategy[MachineSetup]:
 KNOWN_DEFECTS: list[tuple[str, str | None, re.Pattern[str]]] = [
     ("LinuxCNC codes kept verbatim (G76 threading, G87/G88 with their own words) are not simulated", None,
      re.compile(r"^translated, but verify fails: in\.nc:\d+:\d+: error: G\d+ \((RS274/NGC|threading).*cannot be simulated")),
+    ("ISG codes kept verbatim (mirroring G20-G23, software limits G98/G99, homing G74, preset G92, G80-G89 calls, "
+     "blending) copy to ISG unchanged and are not simulated", "isg",
+     re.compile(r"^translated, but verify fails: in\.nc:\d+:\d+: error: G\d+ \([^)]*\) cannot be simulated")),
 ]
 """Defects outside this suite's reach (writers, block syntaxes, lowering), listed so the suite stays green
 and they stay visible: ``make fuzz`` counts them. Each entry: description, target (None: any), message."""

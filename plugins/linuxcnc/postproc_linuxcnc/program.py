@@ -15,6 +15,7 @@ from typing import ClassVar
 
 from postproc.errors import ProgramError
 from postproc.interp.rules import SubprogramRules
+from postproc.interp.variables import VariablesFactory
 from postproc.interp import NgcVariables, ProgramSyntax, spell_number
 
 INTEGER_TOLERANCE = 0.0001
@@ -29,7 +30,7 @@ class LinuxcncProgramSyntax(ProgramSyntax):
     INTEGER_ADDRESSES: ClassVar[frozenset[str]] = frozenset("MNTHDL")
     END_CODES: ClassVar[frozenset[tuple[str, int]]] = frozenset({("M", 2), ("M", 30)})
     MACRO_LOCALS: ClassVar[int] = 30
-    VARIABLES = NgcVariables
+    VARIABLES: ClassVar[VariablesFactory] = NgcVariables
     LIBRARY_FILES: ClassVar[tuple[str, ...]] = ("{name}.ngc",)
     PROGRAM_LABEL: ClassVar[str] = "o{raw}"
     SUBPROGRAM_RULES: ClassVar[SubprogramRules] = SubprogramRules(forward_search=True,

@@ -30,10 +30,10 @@ from postproc.context import Context
 from postproc.dialect import Dialect
 from postproc.state import MM_PER_INCH
 from postproc.control import (
-    Assign, Break, Call, Continue, Do, DoWhile, Else, ElseIf, EndIf, EndRepeat, EndWhile, If, Repeat, Return,
-    SubStart, While,
+    Assign, Break, Call, Continue, Do, DoWhile, Else, ElseIf, EndFor, EndIf, EndRepeat, EndWhile, For, If, Repeat,
+    Return, SubEnd, SubStart, While,
 )
-from postproc.expr import Expr, Num
+from postproc.expr import Binary, Expr, Num, Var
 from postproc.rs274.codes import CodeTable
 from postproc.rs274.expressions import LINUXCNC_SPELLING, ExprSpelling
 from postproc.rs274.oword import spell_assignments, spell_oword
@@ -81,6 +81,10 @@ class LinuxcncWriter(WordWriter):
         self._opened: bool | None = None
         """Whether the program opened with '%' (None: nothing written yet)."""
         """The main program's end was written: an ``O<n>`` now starts a subprogram."""
+        self._names: dict[str, str] = {}
+        """Lower-cased subprogram name -> the name as the source wrote it."""
+        self._counted: dict[str, tuple[Var, float]] = {}
+        """Source label of an open counted loop -> its counter and step."""
 
     def units_words(self, s: Any, block: Block) -> list[str]:
         self.units_before = self.modal.units
@@ -145,6 +149,8 @@ class LinuxcncWriter(WordWriter):
                     self.unsupported("a return to a block number (M99 P: rs274 refuses it)", block)
                 self._alone("M99", block)
                 return ["M99"]
+            if isinstance(section, (For, EndFor)):
+                return self.counted_loop(section, block)
             if self.source_dialect != self.DIALECT:
                 section = self._relabel(section, block)
             return [spell_oword(section)]
@@ -153,13 +159,49 @@ class LinuxcncWriter(WordWriter):
                 err.located(self.ctx.at(block))
             raise
 
+    def counted_loop(self, section: For | EndFor, block: Block) -> list[str]:
+        """A counted loop (ISG ``$FOR``) as its counter set before ``o<n> while [#i LE end]`` and grown
+        before ``o<n> endwhile``: exact when the end and the step are constants (a computed one would be
+        evaluated on every pass instead of once), and the step is not 0."""
+        eol = block.eol or "\n"
+        if isinstance(section, For):
+            step, end = section.step, section.end
+            if not (isinstance(step, Num) and step.value != 0.0 and isinstance(end, Num)):
+                self.unsupported("a counted loop whose end or step is computed or whose step is 0 (a while "
+                                 "loop would evaluate it on every pass, the counted loop once)", block)
+            assert isinstance(section.counter, Var)  # For's constructor holds it
+            test = Binary("le" if step.value > 0 else "ge", section.counter, end)
+            head = spell_oword(self._relabel(While(section.label, test), block))
+            self._counted[section.label] = (section.counter, step.value)
+            return [spell_assignments(Assign([(section.counter, section.start)])) + eol + head]
+        if section.label not in self._counted:
+            self.unsupported(f"the end of loop {section.label!r}, which no written loop opened", block)
+        counter, step_value = self._counted.pop(section.label)
+        grow = spell_assignments(Assign([(counter, _grown(counter, step_value))]))
+        return [grow + eol + spell_oword(self._relabel(EndWhile(section.label), block))]
+
+    def _lowered(self, name: str, block: Block) -> str:
+        """A subprogram name from a dialect that keeps its case (ISG ``<SUB_CONT>``) in LinuxCNC's lower
+        case (``o<sub_cont>``), unless two of the program's names differ only in case."""
+        if not (name.startswith("<") and name.endswith(">")) or name == name.lower():
+            return name
+        lowered = name.lower()
+        first = self._names.setdefault(lowered, name)
+        if first != name:
+            self.unsupported(f"subprograms {first} and {name}, whose names LinuxCNC reads as one ({lowered})", block)
+        return lowered
+
     def _relabel(self, section: Section, block: Block) -> Section:
         """A fresh o-word label for every loop or condition translated from another dialect: LinuxCNC refuses a
         label opened twice ("duplicate O-word label"), where Fanuc reuses ``DO1`` for every loop at one depth. Closing,
         ``elseif``/``else`` and ``break``/``continue`` lines take the label of the construct they belong to."""
-        if isinstance(section, (SubStart, Call)):
+        if isinstance(section, (SubStart, SubEnd, Call)):
             if isinstance(section.name, str):
                 self._taken.add(section.name)
+                lowered = self._lowered(section.name, block)
+                if lowered != section.name:
+                    section = copy.copy(section)
+                    section.name = lowered
             return section
         if not isinstance(section, _LABELLED):
             return section
@@ -270,3 +312,8 @@ class LinuxcncWriter(WordWriter):
     def spindle_orientation_words(self, s: Any, block: Block) -> list[str]:
         """M19 R<angle>: a bare M19 leaves the angle to the machine's default."""
         return [self.code("orient", None, "an oriented spindle stop", block), "R" + self.number(float(s.angle))]
+
+
+def _grown(counter: Var, step: float) -> Binary:
+    """The counter after one pass: ``#i+step`` or ``#i-|step|``."""
+    return Binary("add", counter, Num(step)) if step > 0 else Binary("sub", counter, Num(-step))

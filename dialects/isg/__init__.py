@@ -1,0 +1,53 @@
+"""Beckhoff TwinCAT CNC (ISG kernel) milling dialect: reader, writer, reading pipeline, capability table.
+
+ISG is not in the RS274 family: its own lexer (``lexer``), ``$`` statements (``statements``), P
+parameters and ``V.`` variables (``expressions``, ``variables``) and ``#`` commands (``commands``);
+its DIN words go through the family's word rules with ISG's table (``codes``), where the codes whose
+numbers collide with Fanuc's are told apart.
+"""
+
+from __future__ import annotations
+
+from typing import Callable
+
+from postproc.dialect import Dialect
+from postproc.hookspecs import hookimpl
+from postproc.rs274.order_of_execution import stops_before_motion
+from postproc.xmlio import XFactory
+
+from .block_syntax import IsgBlockSyntax
+from .program import IsgProgramSyntax
+from .reader import IsgReader
+from .writer import IsgWriter
+
+
+class Isg(Dialect):
+    NAME = "isg"
+    DESCRIPTION = "Beckhoff TwinCAT CNC (ISG kernel) milling: P parameters, $ control flow, %L subroutines"
+    READER = IsgReader
+    WRITER = IsgWriter
+    PIPELINE_FILE = "isg.xml"
+    NATIVE_CYCLES = frozenset()
+    """G80-G89 are the machine builder's subroutine files, not DIN cycles: every cycle is expanded."""
+    SPINDLE_ORIENTATION = True
+    """M19 to the machine's angle [?]."""
+    CUTTER_COMPENSATION = True
+    """G40/G41/G42."""
+    TOOL_LENGTH_OFFSET = False
+    """ISG selects the tool's offsets with D, not Fanuc's G43 H: not modelled, so refused."""
+    PROGRAMS = True
+    """P parameters, expressions, $IF/$SWITCH/$FOR/$WHILE/$DO/$REPEAT, $GOTO, %L/LL and L subroutines."""
+    LOWERING = (stops_before_motion,)
+    """A spindle stop or coolant off that the source made before its block's motion goes in a block of
+    its own before it (ISG acts on M05/M09 after the block's motion, as Fanuc [?])."""
+
+
+@hookimpl
+def postproc_register_dialects(register: Callable[[type], None]) -> None:
+    register(Isg)
+
+
+@hookimpl
+def postproc_register_xml(factory: XFactory) -> None:
+    IsgBlockSyntax.reg(factory)
+    IsgProgramSyntax.reg(factory)

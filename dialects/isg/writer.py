@@ -1,0 +1,106 @@
+"""ISG writer: DIN words spelt from ISG's table (G70/G71 units, G04 X seconds), expressions and ``$``
+statements in ISG's spelling, ``P`` parameters for the neutral ``#501``-``#999``.
+
+* A block read from ISG and unchanged is copied byte for byte (``WordWriter``).
+* Canned cycles arrive expanded (ISG's ``G80``-``G89`` are the machine builder's subroutine files, not
+  cycles): the return level and the cycle cancel of the source say nothing here and are not written,
+  so Fanuc's ``G98``/``G99`` (ISG's software limit switches) and ``G80`` never reach ISG text.
+* Calls: ``LL name`` for a local subroutine (``<name>``), ``L file`` for a global one; a call with
+  arguments or a repeat count, or of a numbered program, has no ISG spelling here.
+* A subroutine's end and a return are ``M17``; the definition's start is ``%L name``.
+"""
+
+from __future__ import annotations
+
+from typing import Any, ClassVar
+
+from postproc.control import Assign, Call, Return, SubEnd, SubStart
+from postproc.errors import UnsupportedError
+from postproc.expr import Expr
+from postproc.ir import Block, Section
+from postproc.rs274.codes import CodeTable
+from postproc.rs274.writer import WordWriter
+
+from .codes import CODES
+from .expressions import spell_expr, spell_var, spell_word_value
+from .statements import spell_statement
+
+
+class IsgWriter(WordWriter):
+    DIALECT: ClassVar[str] = "isg"
+    CODES: ClassVar[CodeTable] = CODES
+    DWELL_WORD: ClassVar[str] = "X"
+
+    def expression(self, expr: Expr, block: Block, what: str = "a computed word") -> str:
+        try:
+            return spell_word_value(expr)
+        except UnsupportedError as err:
+            if err.location is None:
+                err.located(self.ctx.at(block))
+            raise
+
+    def generate(self, block: Block) -> str:
+        """A dwell is alone in its ISG block (only a block number may join it)."""
+        sections = block.sections
+        if "Dwell" in sections and any(k not in ("Dwell", "Sequence", "Comments") for k in sections) \
+                and "CompoundMotion" not in sections:
+            first = Block(block.line, None, "\n")
+            first.sections = {k: v for k, v in sections.items() if k in ("Dwell", "Sequence")}
+            rest = Block(block.line, None, block.eol)
+            rest.sections = {k: v for k, v in sections.items() if k not in ("Dwell", "Sequence")}
+            return self.generate(first) + self.generate(rest)
+        label = sections.get("Label")
+        if label is not None:
+            return f"[{getattr(label, 'name')}] " + super().generate(block)
+        return super().generate(block)
+
+    def program_start(self, s: Any, block: Block) -> str:
+        return "%" + (str(s.number) if s.number is not None else str(s.name))
+
+    def statement_words(self, section: Section, block: Block) -> list[str]:
+        try:
+            if isinstance(section, Assign):
+                return [f"{spell_var(var)}={spell_expr(value)}" for var, value in section.items]
+            if isinstance(section, Call):
+                return self.call_words(section, block)
+            if isinstance(section, SubStart):
+                return ["%L " + _local(section.name, block, self)]
+            if isinstance(section, SubEnd):
+                if section.value is not None:
+                    self.unsupported("a subprogram end returning a value", block)
+                return ["M17"]
+            if isinstance(section, Return):
+                if section.value is not None or section.target is not None:
+                    self.unsupported("a return with a value or to a block number", block)
+                return ["M17"]
+            return [spell_statement(section)]
+        except UnsupportedError as err:
+            if err.location is None:
+                err.located(self.ctx.at(block))
+            raise
+
+    def call_words(self, call: Call, block: Block) -> list[str]:
+        if call.args or call.repeat is not None:
+            self.unsupported("a subroutine call with arguments or a repeat count", block)
+        if not isinstance(call.name, str):
+            self.unsupported("a call of a computed program number", block)
+        if call.name.startswith("<"):
+            return ["LL " + _local(call.name, block, self)]
+        if call.name.isdigit():
+            self.unsupported(f"a call of the numbered program {call.name} (ISG calls subroutines by name)", block)
+        return ["L " + call.name]
+
+    def return_level_words(self, s: Any, block: Block) -> list[str]:
+        """Fanuc's G98/G99 steer canned cycles, which reach ISG expanded: nothing to write."""
+        return []
+
+    def cycle_cancel_words(self, s: Any, block: Block) -> list[str]:
+        """Cycles reach ISG expanded, so there is nothing to cancel (ISG's G80 is a subroutine call)."""
+        return []
+
+
+def _local(name: str, block: Block, writer: IsgWriter) -> str:
+    bare = name[1:-1] if name.startswith("<") and name.endswith(">") else name
+    if not bare or any(not (c.isalnum() or c in "_.") for c in bare):
+        writer.unsupported(f"the subroutine name {name!r}", block)
+    return bare
