@@ -311,8 +311,8 @@ class MachineSetup(XmlNode):
                 child = etree.SubElement(codes, code.letter)
                 for key, value in code.model_dump(by_alias=True, exclude_defaults=True, exclude={"letter"}).items():
                     child.set(key, str(value))
-        for code, file in self.code_calls.items():
-            etree.SubElement(el, "CodeCall", code=code, file=file)
+        for called, file in self.code_calls.items():
+            etree.SubElement(el, "CodeCall", code=called, file=file)
         return el
 
 
