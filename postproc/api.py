@@ -10,6 +10,7 @@ import contextlib
 import copy
 import gc
 import io
+from itertools import chain
 from typing import Callable, Iterable, Iterator, TextIO
 
 from .dialect import Dialect
@@ -60,11 +61,16 @@ _INERT = frozenset(("Comments", "TapeMark"))
 
 def _warn_if_empty(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
     """Pass the reader's blocks on; a program with none that does anything (no file, only comments or
-    ``%``) gets a warning: an empty output is then no surprise. The check ends at the first such block."""
+    ``%``) gets a warning: an empty output is then no surprise. The check ends at the first such block,
+    and the rest passes on with no step per block."""
+    blocks = iter(blocks)
+    return chain(_until_something(blocks, ctx), blocks)
+
+
+def _until_something(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
     for block in blocks:
         yield block
         if block.words or not block.sections.keys() <= _INERT:
-            yield from blocks
             return
     if not ctx.diagnostics.errors:
         ctx.diagnostics.warn("the program is empty: no line in it programs anything", Location(ctx.file, 1, 1))

@@ -13,12 +13,17 @@ from .source_map import locate
 from .state import ModalState
 
 
+NOT_SET: Any = object()
+"""A ``Context`` attribute a step has not initialised yet."""
+
+
 class Context:
     """What every step of one run shares: file name, set-up, diagnostics, modal state, and what the
     reading dialect tells the neutral steps about its words."""
 
     __slots__ = ("file", "setup", "diagnostics", "state", "dialect", "cycle_words", "on_unsupported",
-                 "program_mode", "keep_check", "reader", "stops_before_motion", "run_data")
+                 "program_mode", "keep_check", "reader", "stops_before_motion", "run_data",
+                 "point_mix")
 
     def __init__(self, file: str, setup: MachineSetup, diagnostics: Diagnostics, dialect: str,
                  cycle_words: CycleWords | None = None) -> None:
@@ -41,6 +46,10 @@ class Context:
         self.stops_before_motion = True
         """Whether the reading dialect flags stops it makes before the motion (``Dialect.STOPS_BEFORE_MOTION``;
         True unless the dialect says otherwise, so a step never skips flags it was not told are absent)."""
+        self.point_mix: Any = NOT_SET
+        """A reading step's tracker of words written with and without a decimal point
+        (``postproc.rs274.point_mix``): ``NOT_SET`` until it starts, None once it has nothing left to look
+        for (a slot, not ``run_data``: the hot path tests it on every block)."""
         self.run_data: dict[str, Any] = {}
         """What a reading step keeps between the blocks of one run besides the modal state (its own key:
         a resolved table, what it has already warned about)."""

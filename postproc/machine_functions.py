@@ -14,10 +14,14 @@ from .ir import Block, Comments, MachineFunction
 
 
 def drop_foreign_machine_functions(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
-    """Leave out (with a warning and a comment) each machine-specific code of another family."""
+    """Leave out (with a warning and a comment) each machine-specific code of another family (with
+    ``--on-unsupported warn``; otherwise the writer refuses it, and the blocks pass with no step each)."""
     if ctx.on_unsupported != "warn":
-        yield from blocks
-        return
+        return blocks
+    return _drop(blocks, ctx, target)
+
+
+def _drop(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
     family = target.family()
     for block in blocks:
         code = block.sections.get("MachineFunction")

@@ -26,6 +26,9 @@ from .codes import CODES
 from .macro import LOCAL_LETTERS
 
 
+_WATCHED = frozenset((CONTROL, "ProgramStart", "ProgramControl"))
+"""Sections ``FanucWriter.write_block`` looks at (subprogram starts and ends, program numbers and ends)."""
+
 class FanucWriter(WordWriter):
     DIALECT: ClassVar[str] = "fanuc"
     CODES: ClassVar[CodeTable] = CODES
@@ -56,6 +59,8 @@ class FanucWriter(WordWriter):
         """The main program's end (M02/M30) was written."""
 
     def write_block(self, block: Block) -> str | None:
+        if self.capture is None and _WATCHED.isdisjoint(block.sections):
+            return WordWriter.write_block(self, block)  # the common block: nothing to number or capture
         control = block.sections.get(CONTROL)
         start = block.sections.get("ProgramStart")
         if start is not None and getattr(start, "number", None) is not None:

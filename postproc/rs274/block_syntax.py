@@ -99,7 +99,7 @@ class WordBlockSyntax(Syntax):
                 if key not in self.CODES.g and ("G", key) in self.machine_codes(ctx):
                     machine_g.append(num)
                 else:
-                    self._g_code(ctx, block, num, codes, natives)
+                    self._g_code(ctx, block, num, codes, natives, key)
             elif up == "M":
                 if "." in num:
                     raise ParseError(f"M code M{num} takes no decimal point", ctx.at(block, col_of_word(block, "M", num)))
@@ -205,18 +205,22 @@ class WordBlockSyntax(Syntax):
                     values.clear()
                     return False  # the general path explains the error
                 block.sections["Motion"] = Motion(mode, axes)
-                mix = point_mix(ctx)
-                if mix is not None:
-                    for up in axes:
-                        mix.saw_pointed(ctx, up, block.line)
+                if ctx.point_mix is not None:  # still looking (``postproc.rs274.point_mix``)
+                    mix = point_mix(ctx)
+                    if mix is not None:
+                        for up in axes:
+                            mix.saw_pointed(ctx, up, block.line)
             if "F" in values:
                 block.sections["Feed"] = Feed(values["F"])  # type: ignore[arg-type]  # a number on this path
             return True
         values.clear()
         return False
 
-    def _g_code(self, ctx: Context, block: Block, num: str, codes: dict[str, Any], natives: list[str]) -> None:
-        key = g_key(num)
+    def _g_code(self, ctx: Context, block: Block, num: str, codes: dict[str, Any], natives: list[str],
+                key: str | None = None) -> None:
+        """Read G``num`` (``key``: its ``g_key`` when the caller has it) into ``codes`` or ``natives``."""
+        if key is None:
+            key = g_key(num)
         entry = self.CODES.g.get(key)
         if entry is None:
             if key in self.CODES.native_g:

@@ -221,8 +221,11 @@ class NgcWordBlockSyntax(WordBlockSyntax):
         raise ParseError(f"address {up} is not used by the {self.DIALECT} dialect",
                          ctx.at(block, ctx.column_of(block, up)))
 
-    def _g_code(self, ctx: Context, block: Block, num: str, codes: dict[str, Any], natives: list[str]) -> None:
-        key = g_key(num)
+    def _g_code(self, ctx: Context, block: Block, num: str, codes: dict[str, Any], natives: list[str],
+                key: str | None = None) -> None:
+        """Read G``num`` (``key``: its ``g_key`` when the caller has it) into ``codes`` or ``natives``."""
+        if key is None:
+            key = g_key(num)
         refused = self.CODES.refused_g.get(key)
         if refused is not None:
             raise ParseError(refused, ctx.at(block, col_of_word(block, "G", num)))

@@ -6,11 +6,9 @@ rule. One warning per program, at the first point-less word of the first axis fo
 
 from __future__ import annotations
 
-from postproc.context import Context
+from postproc.context import NOT_SET, Context
 from postproc.errors import Location
 from postproc.ir import Block
-
-_KEY = "point_mix"
 
 
 class PointMix:
@@ -45,14 +43,13 @@ class PointMix:
             f"line {self.pointed[axis]} writes {axis} with one: if the program means {num} {unit}, set "
             "<Input decimalPoint=\"calculator\"/> in the machine set-up", where)
         self.done = True
+        ctx.point_mix = None  # one warning per program: nothing left to look for
 
 
 def point_mix(ctx: Context) -> PointMix | None:
-    """This run's tracker while it is still looking (None once it warned, or under calculator input)."""
-    mix: PointMix | bool | None = ctx.run_data.get(_KEY)
-    if mix is None:
-        if ctx.setup.input.decimal_point != "least-increment":
-            ctx.run_data[_KEY] = False
-            return None
-        mix = ctx.run_data[_KEY] = PointMix()
+    """This run's tracker while it is still looking (None once it warned, or under calculator input);
+    kept in ``ctx.point_mix``, which is None from then on, so the hot path skips the call."""
+    mix = ctx.point_mix
+    if mix is NOT_SET:
+        mix = ctx.point_mix = PointMix() if ctx.setup.input.decimal_point == "least-increment" else None
     return mix if isinstance(mix, PointMix) and not mix.done else None
