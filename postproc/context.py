@@ -18,7 +18,7 @@ class Context:
     reading dialect tells the neutral steps about its words."""
 
     __slots__ = ("file", "setup", "diagnostics", "state", "dialect", "cycle_words", "on_unsupported",
-                 "program_mode", "keep_check", "reader")
+                 "program_mode", "keep_check", "reader", "lathe", "diameter")
 
     def __init__(self, file: str, setup: MachineSetup, diagnostics: Diagnostics, dialect: str,
                  cycle_words: CycleWords | None = None) -> None:
@@ -38,6 +38,11 @@ class Context:
         self.reader: Callable[["Context"], Any] | None = None
         """The reading dialect's reader class (``Reader``), for steps that read more text (a library
         subprogram, a jumped-back prefix) the way the program was read."""
+        self.lathe = False
+        """The program is read with lathe meanings (``Dialect.reads_lathe``): G70-G76 lathe cycles, G98/G99
+        feed modes, U/W incremental X/Z, the ZX plane at start."""
+        self.diameter = False
+        """Lathe X and U words are diameters (the set-up's ``xProgramming`` on a dialect that has it)."""
         self.keep_check: Callable[[list[Block]], str | None] | None = None
         """For 'auto': given the program from its first construct on, the reason it cannot be kept
         symbolically for the target (None: it can)."""

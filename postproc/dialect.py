@@ -153,10 +153,27 @@ class Dialect:
     """How the controller moves through its native canned cycles ('fanuc' or 'rs274', see
     ``postproc.cycles.semantics``): a cycle resolved under other rules is expanded for it."""
 
+    MACHINE_TYPES: ClassVar[frozenset[str]] = frozenset({"mill"})
+    """Machine types the dialect reads and writes ("mill", "lathe"); the set-up's ``machineType`` picks
+    one where it has both, and a lathe-only dialect reads every program as a lathe's."""
+    DIAMETER_PROGRAMMING: ClassVar[bool] = False
+    """Lathe X can be programmed as a diameter (the set-up's ``xProgramming``); without it X is a radius
+    and a diameter program's X is halved for it (``postproc.cycles.lathe_lowering``)."""
+    LATHE_CYCLES: ClassVar[frozenset[str]] = frozenset()
+    """Neutral names of the lathe cycles (G70-G76, G90/G92/G94) the controller runs natively with the
+    Fanuc system A/GSK words; others are expanded into their moves."""
+
+    @classmethod
+    def reads_lathe(cls, setup: MachineSetup) -> bool:
+        """Whether a program is read (and written) with lathe meanings under ``setup``."""
+        types = cls.MACHINE_TYPES
+        return "lathe" in types and (setup.input.machine_type == "lathe" or "mill" not in types)
+
     @classmethod
     def capabilities(cls) -> dict[str, object]:
         """The capability table: every UPPER_CASE attribute that describes the controller."""
-        skip = {"NAME", "DESCRIPTION", "READER", "WRITER", "PIPELINE_FILE", "CYCLE_WORDS", "LOWERING"}
+        skip = {"NAME", "DESCRIPTION", "READER", "WRITER", "PIPELINE_FILE", "LATHE_PIPELINE_FILE", "CYCLE_WORDS",
+                "LOWERING"}
         table: dict[str, object] = {}
         for klass in reversed(cls.__mro__):
             for key, value in vars(klass).items():
@@ -182,6 +199,10 @@ class Dialect:
     def context(cls, file: str, setup: MachineSetup, diagnostics: Diagnostics) -> Context:
         ctx = Context(file, setup, diagnostics, cls.NAME, cls.CYCLE_WORDS)
         ctx.reader = cls.READER
+        ctx.lathe = cls.reads_lathe(setup)
+        ctx.diameter = ctx.lathe and cls.DIAMETER_PROGRAMMING and setup.input.x_programming == "diameter"
+        if ctx.lathe:
+            ctx.state.plane = "ZX"  # a lathe turns in the ZX plane (G18) from the start
         return ctx
 
 

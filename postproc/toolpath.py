@@ -62,6 +62,9 @@ class ToolpathTarget(Dialect):
     NAME = "toolpath"
     DESCRIPTION = "toolpath simulation (not a dialect)"
     NATIVE_CYCLES = frozenset()
+    MACHINE_TYPES = frozenset({"mill", "lathe"})
+    DIAMETER_PROGRAMMING = True
+    """It reads the program's own X (a diameter stays a diameter: the simulator halves it itself)."""
 
 
 def num(value: float) -> float | int:
@@ -108,7 +111,12 @@ class Simulator:
         self.spindle: str | None = None
         """Spindle direction of the last spindle event (None before the first): a tool change stops a
         turning spindle first, as a tool changer does, and stopping a stopped spindle is no event."""
-        self.lathe = setup.input.machine_type == "lathe"
+        self.lathe = ctx.lathe
+        self.diameter = ctx.diameter
+        """X words are diameters: the position is kept as a radius (true geometry, arcs with radius I) and
+        written as a diameter."""
+        if self.lathe:
+            self.modal.plane = "ZX"
         self.ended = False
         self.end = EndTracker()
         self.live_after_end: list[int] = []
@@ -125,6 +133,8 @@ class Simulator:
             self._tape_or_after_end(block)
             return
         self.current = block
+        if "InProfile" in sections:
+            return  # the controller runs a profile block only through its cycle
         get: Callable[[str], Any] = sections.get
         native = get("NativeCode")
         if native is not None:
@@ -155,6 +165,10 @@ class Simulator:
                 emit({"line": line, "event": "dwell", "seconds": num(s.seconds)})
         compound = get("CompoundMotion")
         motion = get("Motion")
+        coords = get("CoordinateSet")
+        if coords is not None:
+            for axis, value in coords.axes.items():
+                self._coordinate(block, axis, value)
         if compound is not None:
             if motion is not None and motion.mode is not None:
                 self.motion(block, motion, False, emit)
@@ -257,7 +271,7 @@ class Simulator:
         target = self.target(block, m.axes, absolute or machine)
         if mode == "rapid":
             self.line_move("rapid", target, line, emit)
-        elif mode == "linear":
+        elif mode == "linear" or mode == "thread":
             self.line_move("feed", target, line, emit)
         elif mode in ("cw", "ccw"):
             self.arc_move(block, m, target, emit)
@@ -270,12 +284,30 @@ class Simulator:
         out = dict(pos)
         incremental = self.incremental and not absolute
         for axis, value in axes.items():
+            if self.lathe and axis in _LATHE_INCREMENTS:
+                real = _LATHE_INCREMENTS[axis]
+                if real not in pos:
+                    raise ProgramError(f"axis {real} is not on this machine (axes {''.join(self.axes)})",
+                                       self._at(block, axis))
+                v = value * self.scale * (0.5 if self.diameter and real == "X" else 1.0)
+                out[real] = out[real] + v
+                continue
             if axis not in pos:
                 raise ProgramError(f"axis {axis} is not on this machine (axes {''.join(self.axes)})",
                                    self._at(block, axis))
             v = value * self.scale if axis in LINEAR_AXES else value
+            if self.diameter and axis == "X":
+                v *= 0.5
             out[axis] = pos[axis] + v if incremental else v
         return out
+
+    def _coordinate(self, block: Block, axis: str, value: float) -> None:
+        """Coordinate setting: the tool's present point gets ``value`` on ``axis``; nothing moves."""
+        if axis not in self.pos:
+            raise ProgramError(f"axis {axis} is not on this machine (axes {''.join(self.axes)})", self._at(block, axis))
+        v = value * self.scale * (0.5 if self.diameter and axis == "X" else 1.0)
+        self.pos[axis] = v
+        self.rounded[axis] = num(v)
 
     def line_move(self, kind: str, target: dict[str, float], line: int, emit: Callable[[Event], None]) -> None:
         pos = self.pos
@@ -289,6 +321,8 @@ class Simulator:
         ev: Event = {"line": line, "move": kind}
         for axis, key in self.keys:
             ev[key] = rounded[axis]
+        if self.diameter and "x" in ev:
+            ev["x"] = num(target["X"] * 2.0)
         if kind != "rapid":
             self._feed_into(ev)
         self.pos, self.rounded = target, rounded
@@ -327,6 +361,9 @@ class Simulator:
         for axis in ("X", "Y", "Z"):
             if axis in pos:
                 ev[CENTRE_KEYS[axis]] = num(centre[axis])
+        if self.diameter and "x" in ev:
+            ev["x"] = num(target["X"] * 2.0)
+            ev[CENTRE_KEYS["X"]] = num(centre["X"] * 2.0)
         ev["plane"] = plane
         self._feed_into(ev)
         self.pos, self.rounded = target, rounded
@@ -360,6 +397,8 @@ class Simulator:
 
 
 _CENTRE_LETTER = {"X": "I", "Y": "J", "Z": "K"}
+_LATHE_INCREMENTS = {"U": "X", "W": "Z"}
+"""On a lathe, U and W are incremental X and Z."""
 _EVENT_KEYS = frozenset(("ToolSelect", "ToolChange", "SpindleControl", "Coolant", "Dwell", "SpindleOrientation",
                          "ProgramControl"))
 
@@ -367,6 +406,8 @@ _EVENT_KEYS = frozenset(("ToolSelect", "ToolChange", "SpindleControl", "Coolant"
 def header(ctx: Context, feed_mode: str | None) -> Event:
     """The first line of a toolpath; keys beyond the fixed three only when they apply."""
     head: Event = {"toolpath": 1, "units": "mm", "dialect": ctx.dialect}
+    if ctx.diameter:
+        head["x_mode"] = "diameter"
     if feed_mode is not None and feed_mode != "per_min":
         head["feed_mode"] = feed_mode
     return head

@@ -229,6 +229,11 @@ def compare(events_in: Iterable[Event], events_out: Iterable[Event], *, start_in
     report = Report(tolerance)
     it_in, it_out = iter(events_in), iter(events_out)
     head_in, head_out = next(it_in, {}), next(it_out, {})
+    if head_in.get("x_mode") != head_out.get("x_mode"):
+        # a diameter program and its radius translation: compare both as radii (true geometry)
+        it_in, it_out = _as_radius(it_in, head_in), _as_radius(it_out, head_out)
+        head_in = {k: v for k, v in head_in.items() if k != "x_mode"}
+        head_out = {k: v for k, v in head_out.items() if k != "x_mode"}
     for key in ("units", "x_mode", "feed_mode"):
         if head_in.get(key) != head_out.get(key):
             report.mismatch = f"the toolpath headers differ in {key}: {head_in.get(key)} vs {head_out.get(key)}"
@@ -243,6 +248,20 @@ def compare(events_in: Iterable[Event], events_out: Iterable[Event], *, start_in
             report.mismatch = problem
             report.mismatch_at = (_line(a), _line(b))
     return report
+
+
+def _as_radius(events: Iterator[Event], head: Event) -> Iterator[Event]:
+    """The events of a toolpath whose x is a diameter (``x_mode``), with x and cx as radii."""
+    if head.get("x_mode") != "diameter":
+        yield from events
+        return
+    for ev in events:
+        if "x" in ev or "cx" in ev:
+            ev = dict(ev)
+            for key in ("x", "cx"):
+                if key in ev:
+                    ev[key] = ev[key] / 2.0
+        yield ev
 
 
 def _differ(a: Move | Event | None, b: Move | Event | None, report: Report) -> str | None:

@@ -12,19 +12,28 @@ from postproc.ir import Block, Section
 from postproc.rs274.codes import CodeTable
 from postproc.rs274.expressions import FANUC_SPELLING, ExprSpelling, spell_word_value
 from postproc.rs274.macro_b import spell_statement_fanuc
-from postproc.rs274.writer import WordWriter
+from postproc.rs274.lathe_writer import LatheWordWriter
 
 from .codes import CODES
+from .lathe_codes import LATHE_CODES
 from .macro import LOCAL_LETTERS
 
 
-class FanucWriter(WordWriter):
+class FanucWriter(LatheWordWriter):
     DIALECT: ClassVar[str] = "fanuc"
     CODES: ClassVar[CodeTable] = CODES
     DWELL_WORD: ClassVar[str] = "X"
     SPELLING: ClassVar[ExprSpelling | None] = FANUC_SPELLING
     MACHINE_MOVES: ClassVar[frozenset[str]] = frozenset(("rapid",))
     """Fanuc's G53 always moves at rapid: a feed move in machine coordinates has no spelling."""
+    ONE_BLOCK_CYCLES: ClassVar[bool] = True
+    """10/11/15-T read ``G71 P Q U W D F`` and ``G76 X Z I K D F A P`` (the set-up's latheCycleFormat)."""
+
+    def table(self) -> CodeTable:
+        """The lathe table of the set-up's G-code system on a lathe, else the milling table."""
+        if self.ctx.lathe:
+            return LATHE_CODES[self.ctx.setup.input.gcode_system]
+        return self.CODES
 
     def statement_words(self, section: Section, block: Block) -> list[str]:
         """``#1=..``, ``IF``/``GOTO``/``WHILE``/``END`` through ``spell_statement_fanuc``; calls as

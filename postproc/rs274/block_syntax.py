@@ -52,6 +52,11 @@ class WordBlockSyntax(Syntax):
     NATIVE_M_WORDS: ClassVar[str] = "PL"
     """Words a verbatim M code takes with it (M98 P.. L..)."""
 
+    def table(self, ctx: Context) -> CodeTable:
+        """The code table a program is read with (a dialect with one table per machine type or G-code
+        system picks it from the set-up here)."""
+        return self.CODES
+
     def build(self, block: Block, ctx: Context) -> None:
         words = block.words
         if not words:
@@ -174,9 +179,10 @@ class WordBlockSyntax(Syntax):
 
     def _g_code(self, ctx: Context, block: Block, num: str, codes: dict[str, Any], natives: list[str]) -> None:
         key = g_key(num)
-        entry = self.CODES.g.get(key)
+        table = self.table(ctx)
+        entry = table.g.get(key)
         if entry is None:
-            if key in self.CODES.native_g:
+            if key in table.native_g:
                 natives.append(key)
                 return
             raise ParseError(f"unknown G code G{num}", ctx.at(block, col_of_word(block, "G", num)))
@@ -196,7 +202,7 @@ class WordBlockSyntax(Syntax):
     def _native(self, block: Block, ctx: Context, natives: list[str], raw: dict[str, str]) -> None:
         """Keep a block with a code the IR does not model verbatim, tagged with its meaning."""
         key = natives[0]
-        what = f"G{key} ({self.CODES.native_g[key]})"
+        what = f"G{key} ({self.table(ctx).native_g[key]})"
         block.add(NativeCode(self.DIALECT, what, block.text or ""))
         for up, num in raw.items():
             if up not in block.values:
@@ -317,7 +323,7 @@ class WordBlockSyntax(Syntax):
         """M codes -> sections, through the code table; dialects of the family override ``unknown_m``
         and ``orient`` where they differ."""
         seen: dict[str, str] = {}
-        table = self.CODES.m
+        table = self.table(ctx).m
         for number, num in mcodes:
             entry = table.get(number)
             if entry is None:
@@ -351,7 +357,7 @@ class WordBlockSyntax(Syntax):
     def unknown_m(self, block: Block, ctx: Context, number: int, num: str) -> str:
         """What an M code outside the table is: kept verbatim (the ISO rule: any other M code is the
         machine builder's)."""
-        native = self.CODES.native_m.get(number)
+        native = self.table(ctx).native_m.get(number)
         if native is not None:
             return f"M{num} ({native})"
         return f"M{num} (machine-specific M function)"

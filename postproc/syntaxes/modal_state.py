@@ -20,7 +20,9 @@ from postproc.state import MM_PER_INCH, PLANE_AXES, changes_nothing
 from postproc.context import Context
 from postproc.syntax import Syntax
 
-_MODAL_MOTION = frozenset(("rapid", "linear", "cw", "ccw"))
+_MODAL_MOTION = frozenset(("rapid", "linear", "cw", "ccw", "thread"))
+LATHE_INCREMENTS = {"U": "X", "W": "Z"}
+"""On a lathe, U and W are incremental X and Z whatever the distance mode (Fanuc T system A, GSK)."""
 
 
 class ModalStateSyntax(Syntax):
@@ -49,6 +51,9 @@ class ModalStateSyntax(Syntax):
         if mode == "cw" or mode == "ccw":
             _check_arc(block, ctx, motion)  # whatever else the block says: the simulator checks every arc
         pos = state.position
+        if ctx.lathe and ("U" in motion.axes or "W" in motion.axes):
+            _lathe_move(ctx, motion)
+            return
         if mode in ("home", "home2") or "MachineCoordinates" in block.sections:
             for axis in motion.axes:
                 pos[axis] = None
@@ -65,6 +70,25 @@ class ModalStateSyntax(Syntax):
                     pos[axis] = None  # computed: known only when the program runs
 
 
+def _lathe_move(ctx: Context, motion: Motion) -> None:
+    """A lathe move with U/W words: each is an increment of X/Z, beside absolute X/Z words."""
+    pos = ctx.state.position
+    homing = motion.mode in ("home", "home2")
+    for axis, value in motion.axes.items():
+        target = LATHE_INCREMENTS.get(axis)
+        if homing:
+            pos[target or axis] = None
+        elif target is None:
+            if ctx.state.distance == "incremental":
+                old = pos.get(axis)
+                pos[axis] = None if old is None or isinstance(value, Expr) else old + value
+            else:
+                pos[axis] = None if isinstance(value, Expr) else value
+        else:
+            old = pos.get(target)
+            pos[target] = None if old is None or isinstance(value, Expr) else old + value
+
+
 def _check_arc(block: Block, ctx: Context, motion: Motion) -> None:
     """Refuse an arc no controller runs (``postproc.block_rules.arc_centre``) when its start is known,
     so ``translate`` refuses what ``toolpath`` refuses; an arc with a computed word waits for the run."""
@@ -77,30 +101,42 @@ def _check_arc(block: Block, ctx: Context, motion: Motion) -> None:
     values = [*motion.axes.values(), *(motion.center or {}).values(), motion.radius]
     if any(isinstance(v, Expr) for v in values):
         return
+    increments = ("U", "W") if ctx.lathe else ()
     if motion.radius is not None and not any(
-            a in motion.axes and (state.distance != "incremental" or motion.axes[a] != 0.0) for a in (a1, a2)):
+            a in motion.axes and (state.distance != "incremental" or motion.axes[a] != 0.0) for a in (a1, a2)) \
+            and not any(motion.axes.get(a, 0.0) != 0.0 for a in increments):
         # no end point in the plane: an R arc that ends where it starts, wherever that is
         _refuse(block, ctx, motion, ArcError("a full circle cannot be programmed with R (use I/J/K)", "R"))
-    start = (state.position.get(a1), state.position.get(a2))
-    if start[0] is None or start[1] is None:
+    p1, p2 = state.position.get(a1), state.position.get(a2)
+    if p1 is None or p2 is None:
         return
+    s0, s1 = p1, p2
     incremental = state.distance == "incremental"
-    end = [start[0], start[1]]
+    end = [s0, s1]
     for i, axis in enumerate((a1, a2)):
         value = motion.axes.get(axis)
         if value is not None:
             end[i] = end[i] + value if incremental else value
+        step = motion.axes.get(_INCREMENT_OF.get(axis, "")) if ctx.lathe else None
+        if step is not None:
+            end[i] = end[i] + step
     scale = MM_PER_INCH if state.units == "inch" else 1.0
+    if ctx.diameter and "X" in (a1, a2):  # X words are diameters, the centre offset I a radius
+        if a1 == "X":
+            s0, end[0] = s0 / 2.0, end[0] / 2.0
+        else:
+            s1, end[1] = s1 / 2.0, end[1] / 2.0
     offsets = {a: v * scale for a, v in (motion.center or {}).items() if a in (a1, a2)}
     radius = None if motion.radius is None else motion.radius * scale
     try:
-        arc_centre((start[0] * scale, start[1] * scale), (end[0] * scale, end[1] * scale), (a1, a2), radius,
+        arc_centre((s0 * scale, s1 * scale), (end[0] * scale, end[1] * scale), (a1, a2), radius,
                    offsets, motion.mode == "cw")
     except ArcError as err:
         _refuse(block, ctx, motion, err)
 
 
 _CENTRE_LETTERS = {"X": "I", "Y": "J", "Z": "K"}
+_INCREMENT_OF = {"X": "U", "Z": "W"}
 
 
 def _refuse(block: Block, ctx: Context, motion: Motion, err: ArcError) -> NoReturn:

@@ -1,0 +1,165 @@
+"""expand_lathe_cycles: keep a lathe cycle native where the target runs it, else write its moves; and
+give a target that is no lathe control the lathe program in its own terms.
+
+A lathe cycle is native when the target runs it (``Dialect.LATHE_CYCLES``) and the set-up does not force
+its expansion (``<Cycles expand=...>``). G70-G73 share their profile blocks, so they are native only
+together: a profile commented out for an expanded G71 must not be left to a native G70. An expanded
+cycle loses its ``LatheCycle`` and is written as its ``CompoundMotion`` (a comment naming the source
+line, then the moves); its first block becomes a comment, and each profile block a comment too (the
+controller never ran it where it stands).
+
+For a target that reads no lathe programs (grbl, LinuxCNC's milling reading), the moves are made its
+own: the ZX plane is selected first, U/W increments become absolute X/Z (from the tracked position; a
+located error where it is unknown), and on a diameter program X is halved (such a target takes a
+radius: ``Dialect.DIAMETER_PROGRAMMING``).
+"""
+
+from __future__ import annotations
+
+from typing import Iterator
+
+from postproc.context import Context
+from postproc.dialect import Dialect
+from postproc.errors import UnsupportedError
+from postproc.ir import Block, Comments, CompoundMotion, DistanceMode, Motion, Plane
+from postproc.lathe_sections import CoordinateSet, LatheCycle
+
+PROFILE_CYCLES = frozenset(("turn_finish", "turn_rough", "face_rough", "pattern_repeat"))
+
+
+def expand_lathe_cycles(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """Lowering transform (see the module docstring); a mill program passes through untouched."""
+    if not ctx.lathe:
+        return blocks
+    return _lower(blocks, ctx, target)
+
+
+def _native(target: type[Dialect], ctx: Context) -> frozenset[str]:
+    if "lathe" not in target.MACHINE_TYPES:
+        return frozenset()
+    forced = ctx.setup.cycles.expanded()
+    if "all" in forced:
+        return frozenset()
+    native = frozenset(k for k in target.LATHE_CYCLES if k not in forced)
+    if not PROFILE_CYCLES <= native:
+        native -= PROFILE_CYCLES
+    return native
+
+
+def _lower(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    native = _native(target, ctx)
+    foreign = "lathe" not in target.MACHINE_TYPES
+    radius = ctx.diameter and (foreign or not target.DIAMETER_PROGRAMMING)
+    tracker = _Position(ctx, radius) if foreign or radius else None
+    plane_set = not foreign
+    for block in blocks:
+        sections = block.sections
+        profile = sections.get("InProfile")
+        if profile is not None:
+            if native:
+                yield block
+                continue
+            source = (block.text or " ".join(a + n for a, n in block.words)).strip()
+            block.sections = {"Comments": Comments([f"PROFILE LINE {block.line}: {source}"])}
+            block.changed()
+            yield block
+            continue
+        cycle = sections.get("LatheCycle")
+        if isinstance(cycle, LatheCycle):
+            if cycle.kind in native:
+                sections.pop("CompoundMotion", None)
+            else:
+                source = (block.text or " ".join(a + n for a, n in block.words)).strip()
+                del sections["LatheCycle"]
+                block.changed()
+                if cycle.form == "first":
+                    comments = sections.get("Comments")
+                    texts = comments.texts if isinstance(comments, Comments) else []
+                    sections["Comments"] = Comments([f"LINE {block.line}: {source} (cycle data)", *texts])
+        if tracker is not None:
+            if not plane_set and ("Motion" in sections or "CompoundMotion" in sections):
+                block.add(Plane("ZX"))
+                plane_set = True
+            tracker.block(block)
+        yield block
+
+
+class _Position:
+    """Where the tool is (program units, X as programmed), to make U/W absolute and X a radius."""
+
+    __slots__ = ("ctx", "radius", "x", "z", "incremental")
+
+    def __init__(self, ctx: Context, radius: bool) -> None:
+        self.ctx = ctx
+        self.radius = radius
+        self.x: float | None = None
+        self.z: float | None = None
+        self.incremental = False
+        """G91 in force (Fanuc T systems B and C)."""
+
+    def block(self, block: Block) -> None:
+        sections = block.sections
+        changed = False
+        mode = sections.get("DistanceMode")
+        if isinstance(mode, DistanceMode):
+            self.incremental = mode.mode == "incremental"
+        motion = sections.get("Motion")
+        if isinstance(motion, Motion) and motion.mode is not None:
+            changed = self.motion(block, motion)
+        compound = sections.get("CompoundMotion")
+        if isinstance(compound, CompoundMotion):
+            for item in compound.items:
+                if isinstance(item, Motion):
+                    incremental, self.incremental = self.incremental, False  # compound moves are absolute
+                    self.motion(block, item)
+                    self.incremental = incremental
+            changed = True
+        coords = sections.get("CoordinateSet")
+        if isinstance(coords, CoordinateSet):
+            self.x = coords.axes.get("X", self.x)
+            self.z = coords.axes.get("Z", self.z)
+            if self.radius and "X" in coords.axes:
+                sections["CoordinateSet"] = CoordinateSet({**coords.axes, "X": coords.axes["X"] / 2.0})
+                changed = True
+        if changed:
+            block.changed()
+
+    def motion(self, block: Block, motion: Motion) -> bool:
+        """Rewrite one motion in place; True when it changed."""
+        axes = motion.axes
+        if not any(a in axes for a in "XUW"):
+            self._track(motion, axes)
+            return False
+        new: dict[str, float] = {}
+        for axis, value in axes.items():
+            if axis in ("U", "W"):
+                base = self.x if axis == "U" else self.z
+                if base is None or not isinstance(value, float):
+                    raise UnsupportedError(f"an incremental {axis} move from an unknown position (the target has no "
+                                           f"{axis} address: program an absolute {'X' if axis == 'U' else 'Z'} first)",
+                                           self.ctx.at(block))
+                new["X" if axis == "U" else "Z"] = base + value
+            else:
+                new[axis] = value
+        self._track(motion, new)
+        if self.radius and "X" in new:
+            new["X"] = new["X"] / 2.0
+        motion.axes = new
+        return True
+
+    def _track(self, motion: Motion, axes: dict[str, float]) -> None:
+        if motion.mode in ("home", "home2"):
+            self.x = None if "X" in axes or "U" in axes else self.x
+            self.z = None if "Z" in axes or "W" in axes else self.z
+            return
+        if self.incremental:
+            if "X" in axes:
+                self.x = None if self.x is None or not isinstance(axes["X"], float) else self.x + axes["X"]
+            if "Z" in axes:
+                self.z = None if self.z is None or not isinstance(axes["Z"], float) else self.z + axes["Z"]
+            return
+        if "X" in axes:
+            self.x = axes["X"] if isinstance(axes["X"], float) else None
+        if "Z" in axes:
+            self.z = axes["Z"] if isinstance(axes["Z"], float) else None
+
