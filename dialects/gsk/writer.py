@@ -16,5 +16,7 @@ class GskWriter(LatheWordWriter):
     CODES: ClassVar[CodeTable] = CODES
     DWELL_WORD: ClassVar[str] = "X"
     MACHINE_MOVES: ClassVar[frozenset[str]] = frozenset(("rapid",))
+    EXPLICIT_FIRST_BLOCKS: ClassVar[bool] = True
+    """GSK takes an omitted G71-G76 word from its data parameters: every cycle gets its first block."""
     MONOTONIC_CHECK_WORD: ClassVar[str] = "K"
     """G71/G72 K1: the control checks the profile's monotonicity (the seed's GSK G71)."""

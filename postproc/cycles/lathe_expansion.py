@@ -109,9 +109,9 @@ def expand(cycle: LatheCycle, start: tuple[float, float], profile: list[Seg] | N
         moves = rough_facing(start, _need(profile), f("depth"), f("retract"), diameter_allowance, f("allow_z"), feed,
                             type_ii=rough_type == "II", limit=limit)
     elif kind == "pattern_repeat":
-        from .turning.pattern import pattern_repeat
-        moves = pattern_repeat(start, _need(profile), f("relief_x"), f("relief_z"), int(p["passes"]), x("allow_x"),
-                              f("allow_z"), feed)
+        from .turning.pattern_repeat import pattern_repeat
+        moves = pattern_repeat(start, _need(profile), f("relief_x"), f("relief_z"), int(p["passes"]),
+                               diameter_allowance, f("allow_z"), feed)
     elif kind == "turn_single":
         from .turning.single_turning import single_turning
         moves = single_turning(start, x("x"), f("z"), f("taper"), feed)
@@ -122,16 +122,15 @@ def expand(cycle: LatheCycle, start: tuple[float, float], profile: list[Seg] | N
         from .turning.single_threading import single_threading
         moves = single_threading(start, x("x"), f("z"), _lead(feed), f("taper"), int(p.get("chamfer", 0)))
     elif kind == "face_peck":
-        from .turning.grooving import peck_face
-        moves = peck_face(start, x("x"), f("z"), f("step_x"), f("step_z"), f("relief"), f("retract"), feed)
+        from .turning.peck_face import peck_face
+        moves = peck_face(start, x("x"), f("z"), f("step_z"), f("retract"), f("step_x"), f("relief"), feed, limit)
     elif kind == "groove":
-        from .turning.grooving import groove
-        moves = groove(start, x("x"), f("z"), f("step_x"), f("step_z"), f("relief"), f("retract"), feed)
+        from .turning.groove import groove
+        moves = groove(start, x("x"), f("z"), f("step_x"), f("retract"), f("step_z"), f("relief"), feed, limit)
     elif kind == "thread_multi":
         from .turning.threading import threading
-        moves = threading(start, x("x"), f("z"), f("taper"), f("height"), f("first_depth"), _lead(feed),
-                         min_depth=f("min_depth"), allowance=f("allowance"), finish_passes=int(p["finish_passes"]),
-                         chamfer=int(p["chamfer"]), angle=int(p["angle"]))
+        moves = threading(start, x("x"), f("z"), _lead(feed), f("height"), f("first_depth"), int(p["finish_passes"]),
+                          int(p["chamfer"]), float(p["angle"]), f("min_depth"), f("allowance"), f("taper"), limit)
     else:
         raise ProgramError(f"no expansion for the lathe cycle {kind}")
     return moves

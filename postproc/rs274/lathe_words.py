@@ -154,6 +154,11 @@ def read_cycle(kind: str, block: Block, ctx: Context, code: str, start: dict[str
         return LatheCycle(kind, form, params)
     if kind in SINGLE:
         params = _single(kind, params, block, ctx, code, given)
+    if form != "first" and kind in ("face_peck", "groove"):
+        # G74 without X drills on the spot; G75 without Z cuts one groove
+        axis, name = ("X", "x") if kind == "face_peck" else ("Z", "z")
+        if name not in params and start.get(axis) is not None:
+            params[name] = start[axis]  # type: ignore[assignment]
     for name in REQUIRED[kind]:
         if name not in params:
             raise ProgramError(f"{code} needs {_letters(table, name)}", ctx.at(block, _code_col(block, ctx)))

@@ -33,6 +33,11 @@ class LatheWordWriter(WordWriter):
     check is left out: the translation has already checked the profile)."""
     ONE_BLOCK_CYCLES: ClassVar[bool] = False
     """The control reads the one-block forms of G71-G73/G76 (Fanuc 10/11/15-T)."""
+    EXPLICIT_FIRST_BLOCKS: ClassVar[bool] = False
+    """A two-block cycle always gets its first block, even where the source had none: the control would
+    take the omitted values from its own data parameters (GSK No.051-060)."""
+    _first_written: str | None = None
+    """The kind of the last first block written (its second block needs no other)."""
 
     _pending_first: str | None = None
     """The first block of a one-block cycle being written as two (set while its block is generated)."""
@@ -45,20 +50,21 @@ class LatheWordWriter(WordWriter):
     def lathe_cycle_words(self, s: LatheCycle, block: Block) -> list[str]:
         code = self.code("lathe_cycle", s.kind, f"the {s.kind.replace('_', ' ')} cycle", block)
         form = s.form
-        if form in ("second", "one") and s.kind in ONE_WORDS:
-            if self.one_block():
-                return [code, *self._words(s, ONE_WORDS[s.kind], block)]
-            if form == "one" and s.kind in FIRST_WORDS:
-                first = self._words(s, FIRST_WORDS[s.kind], block, _LETTER_ORDER.get("first:" + s.kind))
-                # the first block's values go on a line of their own before this one
-                self._pending_first = " ".join([code, *first])
-            return [code, *self._words(s, SECOND_WORDS[s.kind], block)]
+        kind = s.kind
         if form == "first":
-            if self.one_block() and s.kind in ONE_WORDS:
+            if self.one_block() and kind in ONE_WORDS:
                 self._merged_first = True
                 return []
-            return [code, *self._words(s, FIRST_WORDS[s.kind], block, _LETTER_ORDER.get("first:" + s.kind))]
-        return [code, *self._words(s, SECOND_WORDS[s.kind], block)]
+            self._first_written = kind
+            return [code, *self._words(s, FIRST_WORDS[kind], block, _LETTER_ORDER.get("first:" + kind))]
+        if form in ("second", "one") and self.one_block() and kind in ONE_WORDS:
+            return [code, *self._words(s, ONE_WORDS[kind], block)]
+        if kind in FIRST_WORDS and (form == "one" or self.EXPLICIT_FIRST_BLOCKS and self._first_written != kind):
+            # the first block's values go on a line of their own before this one
+            first = self._words(s, FIRST_WORDS[kind], block, _LETTER_ORDER.get("first:" + kind))
+            self._pending_first = " ".join([code, *first])
+        self._first_written = None
+        return [code, *self._words(s, SECOND_WORDS[kind], block)]
 
     def generate(self, block: Block) -> str:
         """A block; a one-block cycle written as two gets its first block on a line before it, and a
