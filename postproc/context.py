@@ -18,7 +18,7 @@ class Context:
     reading dialect tells the neutral steps about its words."""
 
     __slots__ = ("file", "setup", "diagnostics", "state", "dialect", "cycle_words", "on_unsupported",
-                 "program_mode", "keep_check", "reader", "lathe", "diameter")
+                 "program_mode", "keep_check", "reader", "lathe", "diameter", "one_block")
 
     def __init__(self, file: str, setup: MachineSetup, diagnostics: Diagnostics, dialect: str,
                  cycle_words: CycleWords | None = None) -> None:
@@ -43,6 +43,9 @@ class Context:
         feed modes, U/W incremental X/Z, the ZX plane at start."""
         self.diameter = False
         """Lathe X and U words are diameters (the set-up's ``xProgramming`` on a dialect that has it)."""
+        self.one_block = False
+        """Lathe cycles G71-G73/G76 are read in their one-block form (the set-up's ``latheCycleFormat`` on
+        a dialect that has it)."""
         self.keep_check: Callable[[list[Block]], str | None] | None = None
         """For 'auto': given the program from its first construct on, the reason it cannot be kept
         symbolically for the target (None: it can)."""

@@ -163,6 +163,10 @@ class Dialect:
     """Neutral names of the lathe cycles (G70-G76, G90/G92/G94) the controller runs natively with the
     Fanuc system A/GSK words; others are expanded into their moves."""
 
+    LATHE_ONE_BLOCK: ClassVar[bool] = False
+    """The control reads the one-block forms ``G71 P Q U W D F`` and ``G76 X Z I K D F A P`` (Fanuc
+    10/11/15-T) when the set-up's ``latheCycleFormat`` says so; without it every cycle has two blocks."""
+
     @classmethod
     def reads_lathe(cls, setup: MachineSetup) -> bool:
         """Whether a program is read (and written) with lathe meanings under ``setup``."""
@@ -201,6 +205,7 @@ class Dialect:
         ctx.reader = cls.READER
         ctx.lathe = cls.reads_lathe(setup)
         ctx.diameter = ctx.lathe and cls.DIAMETER_PROGRAMMING and setup.input.x_programming == "diameter"
+        ctx.one_block = ctx.lathe and cls.LATHE_ONE_BLOCK and setup.input.lathe_cycle_format == "one-block"
         if ctx.lathe:
             ctx.state.plane = "ZX"  # a lathe turns in the ZX plane (G18) from the start
         return ctx

@@ -26,8 +26,6 @@ class FanucWriter(LatheWordWriter):
     SPELLING: ClassVar[ExprSpelling | None] = FANUC_SPELLING
     MACHINE_MOVES: ClassVar[frozenset[str]] = frozenset(("rapid",))
     """Fanuc's G53 always moves at rapid: a feed move in machine coordinates has no spelling."""
-    ONE_BLOCK_CYCLES: ClassVar[bool] = True
-    """10/11/15-T read ``G71 P Q U W D F`` and ``G76 X Z I K D F A P`` (the set-up's latheCycleFormat)."""
 
     def table(self) -> CodeTable:
         """The lathe table of the set-up's G-code system on a lathe, else the milling table."""

@@ -117,8 +117,7 @@ class LatheBlockSyntax(WordBlockSyntax):
                 del codes[group]
                 axes = {k: float(v) for k, v in values.items() if k in "XZ"}
                 if "S" in values:
-                    block.add(SpindleClamp(float(values["S"])))
-                    used.add("S")
+                    block.add(SpindleClamp(float(values.pop("S"))))  # the clamp, not a speed
                 elif not axes:
                     raise ProgramError(f"G{num} needs X/Z (coordinate setting) or S (spindle speed clamp)",
                                        ctx.at(block, col_of_word(block, "G", num)))

@@ -103,7 +103,7 @@ def cycle_form(kind: str, block: Block, ctx: Context) -> str:
     letters = {w[0].upper() for w in block.words}
     if kind in SINGLE or kind == "turn_finish":
         return "single"
-    if ctx.setup.input.lathe_cycle_format == "one-block" and kind in ONE_BLOCK_FORM:
+    if ctx.one_block and kind in ONE_BLOCK_FORM:
         return "one"
     if kind in ("turn_rough", "face_rough", "pattern_repeat"):
         return "second" if "P" in letters else "first"

@@ -5,7 +5,7 @@ control takes an omitted word from its data parameters (No.051-060), which may n
 source's control had, so nothing is left to them (DIALECTS.md 3.2). U/W end points are written as
 absolute X/Z (the cycle read them relative to its start). The one-block forms (``G71 P Q U W D F``,
 ``G76 X Z I K D F A P``) are written where the set-up's ``latheCycleFormat`` says so and the target has
-them (``ONE_BLOCK_CYCLES``); a first block then writes nothing of its own (its values go with the
+them (``Dialect.LATHE_ONE_BLOCK``); a first block then writes nothing of its own (its values go with the
 next block), and a one-block cycle read elsewhere is written as two blocks.
 """
 
@@ -31,8 +31,6 @@ class LatheWordWriter(WordWriter):
     MONOTONIC_CHECK_WORD: ClassVar[str] = ""
     """The letter of the profile monotonicity check of G71/G72 (GSK: K), '' where there is none (the
     check is left out: the translation has already checked the profile)."""
-    ONE_BLOCK_CYCLES: ClassVar[bool] = False
-    """The control reads the one-block forms of G71-G73/G76 (Fanuc 10/11/15-T)."""
     EXPLICIT_FIRST_BLOCKS: ClassVar[bool] = False
     """A two-block cycle always gets its first block, even where the source had none: the control would
     take the omitted values from its own data parameters (GSK No.051-060)."""
@@ -45,7 +43,7 @@ class LatheWordWriter(WordWriter):
     """A first block whose values go into the next block's one-block cycle (set while it is generated)."""
 
     def one_block(self) -> bool:
-        return self.ONE_BLOCK_CYCLES and self.ctx.setup.input.lathe_cycle_format == "one-block"
+        return self.capable("LATHE_ONE_BLOCK") and self.ctx.setup.input.lathe_cycle_format == "one-block"
 
     def lathe_cycle_words(self, s: LatheCycle, block: Block) -> list[str]:
         code = self.code("lathe_cycle", s.kind, f"the {s.kind.replace('_', ' ')} cycle", block)

@@ -1,0 +1,317 @@
+"""Lathes: the machine type decides what a code means; Fanuc T and GSK 980TDc read, keep native and expand
+lathe cycles; the toolpath is in the XZ plane with X as a diameter.
+
+Expected texts and toolpaths are derived by hand from DIALECTS.md 2.2 (and the seed's GSK G71), and each
+translation is checked against its source by ``verify`` (both programs simulated by their own readers).
+"""
+
+from __future__ import annotations
+
+import io
+from typing import Any
+
+import pytest
+
+from postproc.api import read_program, translate
+from postproc.errors import ErrorList
+from postproc.ir import Block
+from postproc.lathe_sections import LatheCycle
+from postproc.setup import InputSettings, LatheCycleSettings, MachineSettings, MachineSetup
+from postproc.toolpath import toolpath_events
+from postproc.verify import verify_lines
+
+LATHE = MachineSetup(input=InputSettings(machine_type="lathe"), machine=MachineSettings(axes="XZ"))
+MILL = MachineSetup()
+
+SEED = """%
+O0001
+G00 X60. Z5.
+G71 U2. R1.
+G71 P10 Q20 U0.5 W0.1 F0.25 K1
+N10 G00 X20.
+G01 Z-20. F0.1
+X40. Z-30.
+Z-50.
+N20 X56.
+G70 P10 Q20
+G00 X100. Z50.
+M30
+%
+"""
+"""The seed's GSK G71 two-block form (with its K1 monotonicity check) and a G70 finish."""
+
+
+def lines(text: str) -> list[str]:
+    return text.splitlines(keepends=True)
+
+
+def write(text: str, source: str, target: str, setup: MachineSetup = LATHE) -> str:
+    out = io.StringIO()
+    translate(lines(text), out, file="in.nc", source=source, target=target, setup=setup)
+    return out.getvalue()
+
+
+def events(text: str, dialect: str, setup: MachineSetup = LATHE) -> list[dict[str, Any]]:
+    return list(toolpath_events(lines(text), file="in.nc", dialect=dialect, setup=setup))
+
+
+def blocks(text: str, dialect: str, setup: MachineSetup = LATHE) -> list[Block]:
+    return read_program(lines(text), file="in.nc", dialect=dialect, setup=setup)
+
+
+def deviation(source: str, out: str, src: str, dst: str, setup: MachineSetup = LATHE) -> float:
+    report = verify_lines(lines(source), lines(out), file_in="in.nc", file_out="out.nc", source=src, target=dst,
+                          setup=setup)
+    assert report.ok, report.summary()
+    return report.max_deviation
+
+
+# -- the seed: kept native, expanded, verified ------------------------------------------------------
+
+def test_seed_gsk_to_fanuc_keeps_the_cycles_native() -> None:
+    # Fanuc T has no K (the monotonicity check: the translation has made it), every other word stays
+    assert write(SEED, "gsk", "fanuc") == (
+        "%\nO0001\nG00 X60. Z5.\nG71 U2. R1.\nG71 P10 Q20 U0.5 W0.1 F0.25\nN10 G00 X20.\nG01 Z-20. F0.1\n"
+        "G01 X40. Z-30.\nG01 Z-50.\nN20 G01 X56.\nG70 P10 Q20\nG00 X100. Z50.\nM30\n%\n")
+
+
+def test_seed_round_trips_byte_for_byte() -> None:
+    assert write(SEED, "gsk", "gsk") == SEED
+
+
+@pytest.mark.parametrize("target", ["grbl", "linuxcnc"])
+def test_seed_is_expanded_for_a_target_without_lathe_cycles(target: str) -> None:
+    text = write(SEED, "gsk", target)
+    code = [line for line in text.splitlines() if line[:1] not in ("(", "%", "O")]
+    assert not any("G71" in line or "G70" in line for line in code)
+    assert "(turn_rough from line 5: G71 P10 Q20 U0.5 W0.1 F0.25 K1)" in text
+    assert "(turn_finish from line 11: G70 P10 Q20)" in text
+    assert "(PROFILE LINE 6: N10 G00 X20.)" in text
+    # X is a radius there (no diameter mode): the first move to X60. is written X30.
+    assert code[0].startswith("G18") and "X30." in code[0]
+    assert deviation(SEED, text, "gsk", target) == 0.0
+
+
+def test_verify_reports_zero_deviation_between_native_and_expanded() -> None:
+    fanuc = write(SEED, "gsk", "fanuc")
+    grbl = write(SEED, "gsk", "grbl")
+    assert deviation(SEED, fanuc, "gsk", "fanuc") == 0.0
+    assert deviation(fanuc, grbl, "fanuc", "grbl") == 0.0
+
+
+def test_a_wrong_translation_is_caught_by_verify() -> None:
+    """The comparison can fail: the same program with the allowance changed deviates by 0.25 mm radius."""
+    fanuc = write(SEED, "gsk", "fanuc").replace("U0.5 W0.1", "U1. W0.1")
+    report = verify_lines(lines(SEED), lines(fanuc), file_in="in.nc", file_out="out.nc", source="gsk",
+                          target="fanuc", setup=LATHE)
+    assert not report.ok
+
+
+def test_seed_toolpath_finishing_pass_by_hand() -> None:
+    """G70 from A (X60 Z5): the profile's own moves and feeds, then a rapid back to A; the profile blocks
+    themselves never run where they stand (the controller skips to the block after N20)."""
+    evs = events(SEED, "gsk")
+    assert evs[0] == {"toolpath": 1, "units": "mm", "dialect": "gsk", "x_mode": "diameter"}
+    assert not [e for e in evs[1:] if 6 <= e["line"] <= 10]
+    finish = [e for e in evs if e.get("line") == 11]
+    assert finish == [
+        {"line": 11, "move": "rapid", "x": 20, "z": 5},
+        {"line": 11, "move": "feed", "x": 20, "z": -20, "f": 0.1},
+        {"line": 11, "move": "feed", "x": 40, "z": -30, "f": 0.1},
+        {"line": 11, "move": "feed", "x": 40, "z": -50, "f": 0.1},
+        {"line": 11, "move": "feed", "x": 56, "z": -50, "f": 0.1},
+        {"line": 11, "move": "rapid", "x": 60, "z": 5},
+    ]
+
+
+def test_seed_roughing_by_hand() -> None:
+    """G71 U2 R1, U0.5 W0.1: A' = (X60.5, Z5.1); the first level 2 mm (radius) in at X56.5 cuts to the
+    offset profile's Z-49.9; the last pass follows the profile offset by 0.25 (radius) and 0.1."""
+    rough = [e for e in events(SEED, "gsk") if e.get("line") == 5]
+    assert rough[0] == {"line": 5, "move": "rapid", "x": 60.5, "z": 5.1}
+    assert rough[1] == {"line": 5, "move": "rapid", "x": 56.5, "z": 5.1}
+    assert rough[2] == {"line": 5, "move": "feed", "x": 56.5, "z": -49.9, "f": 0.25}
+    contour = [(e["x"], e["z"]) for e in rough if e["move"] == "feed"][-4:]
+    assert contour == [(20.5, -19.9), (40.5, -29.9), (40.5, -49.9), (56.5, -49.9)]
+    assert (rough[-1]["x"], rough[-1]["z"]) == (60, 5)  # back at A
+    depths = sorted({e["x"] for e in rough if e["move"] == "feed" and e["z"] != -19.9 and e["x"] < 60})
+    assert all(b - a <= 4.0 + 1e-9 for a, b in zip(depths, depths[1:]))  # 2 mm radius per pass
+
+
+# -- single cycles ----------------------------------------------------------------------------------
+
+SINGLE = """G00 X60. Z5.
+G90 X50. Z-30. F0.2
+X40. R-2.
+G00 X100.
+"""
+
+
+def test_turning_single_cycle_by_hand() -> None:
+    """G90: rapid X to the cut, feed Z, feed X out, rapid Z back; X40 repeats it, R-2 (radius) starts the
+    cut 2 mm lower: X36 (diameter)."""
+    evs = events(SINGLE, "gsk")[1:]
+    assert [(e["line"], e["move"], e["x"], e["z"]) for e in evs] == [
+        (1, "rapid", 60, 5),
+        (2, "rapid", 50, 5), (2, "feed", 50, -30), (2, "feed", 60, -30), (2, "rapid", 60, 5),
+        (3, "rapid", 36, 5), (3, "feed", 40, -30), (3, "feed", 60, -30), (3, "rapid", 60, 5),
+        (4, "rapid", 100, 5),
+    ]
+
+
+def test_single_cycle_in_fanuc_system_b_is_g77() -> None:
+    setup = MachineSetup(input=InputSettings(machine_type="lathe", gcode_system="B"), machine=MachineSettings(axes="XZ"))
+    text = write(SINGLE, "gsk", "fanuc", setup)
+    assert text == "G00 X60. Z5.\nG77 X50. Z-30. F0.2\nG77 X40. Z-30. R-2.\nG00 X100.\n"
+    assert deviation(SINGLE, text, "gsk", "fanuc", setup) == 0.0
+
+
+# -- words ------------------------------------------------------------------------------------------
+
+def test_u_and_w_are_increments_of_x_and_z() -> None:
+    evs = events("G00 X60. Z5.\nG01 U-10. W-5. F0.2\nX20. W-5.\n", "gsk")[1:]
+    assert [(e["x"], e["z"]) for e in evs] == [(60, 5), (50, 0), (20, -5)]
+
+
+def test_radius_programming_reads_x_as_a_radius() -> None:
+    setup = MachineSetup(input=InputSettings(machine_type="lathe", x_programming="radius"),
+                         machine=MachineSettings(axes="XZ"))
+    evs = events("G00 X30. Z5.\nG01 U-5. F0.2\n", "fanuc", setup)
+    assert evs[0] == {"toolpath": 1, "units": "mm", "dialect": "fanuc"}
+    assert [(e["x"], e["z"]) for e in evs[1:]] == [(30, 5), (25, 5)]
+
+
+def test_coordinate_setting_and_spindle_clamp() -> None:
+    bs = blocks("G50 X200. Z100.\nG50 S2500\nG96 S180\nG00 X60. Z5.\n", "gsk")
+    assert bs[0].sections["CoordinateSet"].axes == {"X": 200.0, "Z": 100.0}
+    assert bs[1].sections["SpindleClamp"].rpm == 2500.0
+    assert bs[2].sections["SpindleMode"].mode == "css"
+    assert write("G50 X200. Z100.\nG50 S2500\nG96 S180\nG00 X60. Z5.\n", "gsk", "fanuc") == (
+        "G50 X200. Z100.\nG50 S2500\nG96 S180\nG00 X60. Z5.\n")
+    # G50 X200 declares where the tool is: a move to X60 goes 140 (diameter) down from there
+    evs = events("G50 X200. Z100.\nG00 X60. Z5.\n", "gsk")
+    assert [(e["x"], e["z"]) for e in evs[1:]] == [(60, 5)]
+
+
+def test_tool_and_offset_word() -> None:
+    assert write("T0101\n", "gsk", "fanuc") == "T0101\n"
+    assert blocks("T0101\n", "gsk")[0].sections["ToolSelect"].number == 101
+
+
+# -- the same number, another meaning ---------------------------------------------------------------
+
+@pytest.mark.parametrize("text, setup, key, value", [
+    ("G50 X100. Z50.", MILL, "NativeCode", "G50 (scaling cancel)"),
+    ("G50 X100. Z50.", LATHE, "CoordinateSet", {"X": 100.0, "Z": 50.0}),
+    ("G98", MILL, "ReturnLevel", "initial"),
+    ("G98", LATHE, "FeedMode", "per_min"),
+    ("G99", LATHE, "FeedMode", "per_rev"),
+    ("G90", MILL, "DistanceMode", "absolute"),
+    ("G94", MILL, "FeedMode", "per_min"),
+    ("G92 X10. Z0.", MILL, "NativeCode", "G92 (work coordinate system setting)"),
+])
+def test_machine_type_decides_meaning(text: str, setup: MachineSetup, key: str, value: object) -> None:
+    section = blocks(text + "\n", "fanuc", setup)[0].sections[key]
+    got = {"NativeCode": "what", "CoordinateSet": "axes", "ReturnLevel": "level", "FeedMode": "mode",
+           "DistanceMode": "mode"}[key]
+    assert getattr(section, got) == value
+
+
+@pytest.mark.parametrize("code, kind", [("G90", "turn_single"), ("G92", "thread_single"), ("G94", "face_single")])
+def test_system_a_single_cycles(code: str, kind: str) -> None:
+    b = blocks(f"G00 X60. Z5.\n{code} X50. Z-30. F2.\n", "fanuc")[1]
+    assert b.sections["LatheCycle"].kind == kind
+
+
+def test_system_b_and_c_renumber() -> None:
+    b_setup = MachineSetup(input=InputSettings(machine_type="lathe", gcode_system="B"))
+    c_setup = MachineSetup(input=InputSettings(machine_type="lathe", gcode_system="C"))
+    assert blocks("G90\n", "fanuc", b_setup)[0].sections["DistanceMode"].mode == "absolute"
+    assert blocks("G92 X10. Z0.\n", "fanuc", b_setup)[0].sections["CoordinateSet"].axes == {"X": 10.0, "Z": 0.0}
+    assert blocks("G94\n", "fanuc", b_setup)[0].sections["FeedMode"].mode == "per_min"
+    assert blocks("G98\n", "fanuc", b_setup)[0].sections["NativeCode"].what.startswith("G98 (drilling")
+    assert blocks("G71\n", "fanuc", c_setup)[0].sections["Units"].system == "mm"
+    assert blocks("G70\n", "fanuc", c_setup)[0].sections["Units"].system == "inch"
+
+
+def test_a_mill_never_reads_lathe_cycles() -> None:
+    with pytest.raises(ErrorList) as info:
+        blocks("G71 U2. R1.\n", "fanuc", MILL)
+    assert [str(e) for e in info.value.errors] == ["in.nc:1:1: error: unknown G code G71"]
+
+
+def test_a_lathe_never_reads_mill_cycles() -> None:
+    with pytest.raises(ErrorList) as info:
+        blocks("G81 X0. Z-5. R1. F100.\n", "gsk")
+    assert [str(e) for e in info.value.errors] == ["in.nc:1:1: error: unknown G code G81"]
+
+
+# -- defaults and checks ------------------------------------------------------------------------------
+
+TWO_CYCLES = """G00 X60. Z5.
+G71 P10 Q20 U0.5 W0.1 F0.25
+N10 G00 X20.
+N20 G01 X56. Z-20.
+G71 U2.5 R0.7
+G71 P30 Q40 U0.5 W0.1 F0.25
+N30 G00 X20.
+N40 G01 X56. Z-20.
+G71 P50 Q60 U0.5 W0.1 F0.25
+N50 G00 X20.
+N60 G01 X56. Z-20.
+"""
+
+
+def test_gsk_data_parameters_default_and_are_rewritten_by_a_programmed_value() -> None:
+    """No.051/052 from the set-up until a first block programs U/R; from then on its values (the seed)."""
+    setup = MachineSetup(input=InputSettings(machine_type="lathe"),
+                         lathe_cycles=LatheCycleSettings(rough_depth=1.5, rough_retract=0.4))
+    cycles = [b.sections["LatheCycle"] for b in blocks(TWO_CYCLES, "gsk", setup) if "LatheCycle" in b.sections]
+    assert [(c.form, c.params["depth"], c.params["retract"]) for c in cycles] == [
+        ("second", 1.5, 0.4), ("first", 2.5, 0.7), ("second", 2.5, 0.7), ("second", 2.5, 0.7)]
+
+
+def test_gsk_output_writes_every_word() -> None:
+    """A Fanuc G71 without its first block: GSK gets one, with the values the source used."""
+    setup = MachineSetup(input=InputSettings(machine_type="lathe"),
+                         lathe_cycles=LatheCycleSettings(rough_depth=1.5, rough_retract=0.4))
+    text = write("G00 X60. Z5.\nG71 P10 Q20 U0.5 W0.1 F0.25\nN10 G00 X20.\nN20 G01 X56. Z-20.\n", "fanuc", "gsk",
+                 setup)
+    assert text == ("G00 X60. Z5.\nG71 U1.5 R0.4\nG71 P10 Q20 U0.5 W0.1 F0.25\nN10 G00 X20.\n"
+                    "N20 G01 X56. Z-20.\n")
+
+
+def test_gsk_k1_refuses_a_profile_that_is_not_monotonic_at_its_block() -> None:
+    program = ("G00 X60. Z5.\nG71 U2. R1.\nG71 P10 Q20 U0.5 W0.1 F0.25 K1\nN10 G00 X20.\nG01 Z-20. F0.1\n"
+               "X40. Z-30.\nX30. Z-40.\nN20 X56.\n")
+    with pytest.raises(ErrorList) as info:
+        blocks(program, "gsk")
+    assert [str(e) for e in info.value.errors] == [
+        "in.nc:7:1: error: G71 K1: the profile is not monotonic in X at line 7"]
+
+
+def test_profile_with_a_missing_last_block_is_a_located_error() -> None:
+    with pytest.raises(ErrorList) as info:
+        blocks("G00 X60. Z5.\nG71 U2. R1.\nG71 P10 Q20 U0.5 F0.25\nN10 G00 X20.\nG01 Z-20.\n", "gsk")
+    assert [str(e) for e in info.value.errors] == [
+        "in.nc:3:1: error: G71: the profile's last block N20 is not in the program"]
+
+
+def test_g70_without_a_roughing_profile_is_a_located_error() -> None:
+    with pytest.raises(ErrorList) as info:
+        blocks("G00 X60. Z5.\nG70 P10 Q20\n", "gsk")
+    assert [str(e) for e in info.value.errors] == [
+        "in.nc:2:1: error: G70 P10 Q20: no roughing cycle before it read the profile N10..N20"]
+
+
+def test_one_block_form_written_and_read() -> None:
+    """Fanuc 10/11/15-T: G71 P Q U W D F in one block; GSK gets it as two."""
+    setup = MachineSetup(input=InputSettings(machine_type="lathe", lathe_cycle_format="one-block"))
+    program = "G00 X60. Z5.\nG71 P10 Q20 U0.5 W0.1 D2. F0.25\nN10 G00 X20.\nN20 G01 X56. Z-20.\n"
+    cycle = blocks(program, "fanuc", setup)[1].sections["LatheCycle"]
+    assert isinstance(cycle, LatheCycle) and cycle.form == "one" and cycle.params["depth"] == 2.0
+    gsk = write(program, "fanuc", "gsk", setup)
+    assert gsk.splitlines()[1:3] == ["G71 U2. R1.", "G71 P10 Q20 U0.5 W0.1 F0.25"]
+    assert write(SEED, "gsk", "fanuc", setup).splitlines()[3:5] == [
+        "(G71 U2. R1.: in the next block)", "G71 P10 Q20 U0.5 W0.1 D2. F0.25"]
+    assert deviation(SEED, write(SEED, "gsk", "fanuc", setup), "gsk", "fanuc", setup) == 0.0
