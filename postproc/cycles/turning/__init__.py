@@ -10,12 +10,16 @@ parameter storage.
 from __future__ import annotations
 
 from .finishing import finishing
+from .groove import groove
+from .pattern_repeat import pattern_repeat
+from .peck_face import peck_face
 from .profile import Seg, TurnMove
 from .rough_facing import rough_facing
 from .rough_turning import rough_turning
 from .single_facing import single_facing
 from .single_threading import single_threading
 from .single_turning import single_turning
+from .threading import thread_depths, threading
 
-__all__ = ["Seg", "TurnMove", "finishing", "rough_facing", "rough_turning", "single_facing", "single_threading",
-           "single_turning"]
+__all__ = ["Seg", "TurnMove", "finishing", "groove", "pattern_repeat", "peck_face", "rough_facing", "rough_turning",
+           "single_facing", "single_threading", "single_turning", "thread_depths", "threading"]

@@ -228,11 +228,12 @@ def check_chain(segs: Sequence[Seg], start: Point, cycle: str) -> None:
 
 
 def drop_still(moves: list[TurnMove], start: Point) -> list[TurnMove]:
-    """Remove moves that go nowhere (a straight move to where the tool already is)."""
+    """Remove moves that go nowhere (a straight move to exactly where the tool already is: a move of
+    float noise stays, so every cycle ends exactly where it says)."""
     out: list[TurnMove] = []
     x, z = start
     for move in moves:
-        if move.kind in ("rapid", "feed") and same(move.x, x, 1e-12) and same(move.z, z, 1e-12):
+        if move.kind in ("rapid", "feed") and move.x == x and move.z == z:
             continue
         out.append(move)
         x, z = move.x, move.z

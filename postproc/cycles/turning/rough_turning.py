@@ -22,7 +22,8 @@ def rough_turning(start: Point, profile: Sequence[Seg], depth: float, retract: f
 
     The tool infeeds in the direction the ns block moves in X, and cuts along Z in the direction the
     profile runs (ns end to nf end). Sequence (the seed's GSK G71 and DIALECTS.md 2.2 [V]; the exact
-    retract and return moves [K], LinuxCNC's interp_g7x agrees on the 45-degree retract):
+    retract and return moves [K]; LinuxCNC's conformance case g72-facing agrees on the levels and the
+    45-degree retract):
     1. rapid A -> A' = A + (Δu/2, Δw);
     2. for each level A'x - k*Δd above the lowest point of the offset profile: the infeed to the
        level at A'z as the ns block moves (G00 rapid, G01 at F); feed along Z to the offset profile;
