@@ -33,6 +33,7 @@ from .block_rules import NO_FEED, ArcError, arc_centre, check_blocks, needs_feed
 from .program_end import EndTracker, comment_after_end
 from .dialect import Dialect
 from .errors import Diagnostics, Location, PostprocError, ProgramError, UnsupportedError
+from .cycles.lathe_lowering import lathe_tool
 from .event_order import after_motion
 from .geometry import CENTRE_KEYS, PLACES
 from .ir import Block, Motion, Section
@@ -151,7 +152,7 @@ class Simulator:
             s = get("ToolSelect")
             if s is not None:
                 if self.lathe and "ToolChange" not in sections:
-                    emit({"line": line, "event": "tool", "number": s.number})
+                    emit({"line": line, "event": "tool", "number": lathe_tool(s.number)})
             if "ToolChange" in sections:
                 if self.spindle in ("cw", "ccw"):
                     self.spindle_event(line, "stop", emit)
@@ -262,7 +263,7 @@ class Simulator:
             self.line_move("rapid", self.target(block, m.axes, absolute), line, emit)
             ref = dict(self.pos)
             for axis in m.axes:
-                ref[axis] = 0.0
+                ref[_LATHE_INCREMENTS.get(axis, axis) if self.lathe else axis] = 0.0
             self.line_move("rapid", ref, line, emit)
             return
         if self.feed is None and needs_feed(m):

@@ -21,8 +21,13 @@ from typing import Iterator
 from postproc.context import Context
 from postproc.dialect import Dialect
 from postproc.errors import UnsupportedError
-from postproc.ir import Block, Comments, CompoundMotion, DistanceMode, Motion, Plane
+from postproc.ir import Block, Comments, CompoundMotion, DistanceMode, Motion, Plane, ToolChange, ToolSelect
 from postproc.lathe_sections import CoordinateSet, LatheCycle
+
+def lathe_tool(number: int) -> int:
+    """The tool of a lathe T word: T0101 (tool and offset, four digits) is tool 1; T1 to T99 name the tool."""
+    return number // 100 if number >= 100 else number
+
 
 PROFILE_CYCLES = frozenset(("turn_finish", "turn_rough", "face_rough", "pattern_repeat"))
 
@@ -76,12 +81,29 @@ def _lower(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iter
                     comments = sections.get("Comments")
                     texts = comments.texts if isinstance(comments, Comments) else []
                     sections["Comments"] = Comments([f"LINE {block.line}: {source} (cycle data)", *texts])
+        if foreign:
+            _turret(block)
         if tracker is not None:
             if not plane_set and ("Motion" in sections or "CompoundMotion" in sections):
                 block.add(Plane("ZX"))
                 plane_set = True
-            tracker.block(block)
+            if tracker.block(block):
+                yield block
+                back = Block(block.line, None, block.eol)
+                back.add(DistanceMode("absolute"))
+                yield back  # the reference return went in incremental mode: back to absolute
+                continue
         yield block
+
+
+def _turret(block: Block) -> None:
+    """A lathe's T indexes the turret: for a mill control it is a tool change, to the tool number alone
+    (T0101 is tool 1 with offset 1; a tool's offsets are the target's own)."""
+    select = block.sections.get("ToolSelect")
+    if isinstance(select, ToolSelect) and isinstance(select.number, int) and "ToolChange" not in block.sections:
+        block.sections["ToolSelect"] = ToolSelect(lathe_tool(select.number))
+        block.add(ToolChange())
+        block.changed()
 
 
 class _Position:
@@ -97,13 +119,24 @@ class _Position:
         self.incremental = False
         """G91 in force (Fanuc T systems B and C)."""
 
-    def block(self, block: Block) -> None:
+    def block(self, block: Block) -> bool:
+        """Rewrite the block's moves; True when it was made incremental (a reference return through
+        the present point, ``G28 U0 W0``) and the program must return to absolute after it."""
         sections = block.sections
         changed = False
         mode = sections.get("DistanceMode")
         if isinstance(mode, DistanceMode):
             self.incremental = mode.mode == "incremental"
         motion = sections.get("Motion")
+        if isinstance(motion, Motion) and motion.mode in ("home", "home2") and not self.incremental \
+                and any(a in motion.axes for a in "UW") \
+                and all(a in "UW" and motion.axes[a] == 0.0 for a in motion.axes):
+            # through the present point, wherever it is: the same return in incremental mode
+            motion.axes = {"X" if a == "U" else "Z": 0.0 for a in motion.axes}
+            block.add(DistanceMode("incremental"))
+            self.x = self.z = None
+            block.changed()
+            return True
         if isinstance(motion, Motion) and motion.mode is not None:
             changed = self.motion(block, motion)
         compound = sections.get("CompoundMotion")
@@ -123,6 +156,7 @@ class _Position:
                 changed = True
         if changed:
             block.changed()
+        return False
 
     def motion(self, block: Block, motion: Motion) -> bool:
         """Rewrite one motion in place; True when it changed."""

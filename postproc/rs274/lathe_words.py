@@ -240,16 +240,16 @@ def _value(block: Block, ctx: Context, code: str, up: str, num: str, how: str,
 
 def _check_values(kind: str, params: dict[str, float | int], block: Block, ctx: Context, code: str) -> None:
     """Refuse values the controller refuses, each at its word."""
-    positive = ("depth", "step_x", "step_z", "height", "first_depth", "min_depth", "relief_x", "relief_z")
+    positive = ("depth", "height", "first_depth", "min_depth")
     letters = {name: letter for table in (FIRST_WORDS, SECOND_WORDS, ONE_WORDS)
                for letter, (name, _) in table.get(kind, {}).items()}
     for name in positive:
         value = params.get(name)
-        if value is not None and value <= 0 and name not in ("relief_x", "relief_z"):
+        if value is not None and value <= 0:
             letter = letters.get(name, "")
             raise ProgramError(f"{code}: {letter} ({name.replace('_', ' ')}) must be greater than 0",
                                ctx.at(block, ctx.column_of(block, letter) if letter else 1))
-    for name in ("retract", "relief", "allowance"):
+    for name in ("retract", "relief", "allowance", "step_x", "step_z"):
         value = params.get(name)
         if value is not None and value < 0:
             letter = letters.get(name, "")

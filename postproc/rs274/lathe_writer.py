@@ -100,8 +100,8 @@ class LatheWordWriter(WordWriter):
                     continue  # no taper / the one infeed method: nothing to say
                 self.unsupported(f"the {s.kind.replace('_', ' ')} cycle without its {name.replace('_', ' ')}", block)
             value = p[name]
-            if name == "taper" and float(value) == 0.0:
-                continue
+            if name in ("taper", "step_x", "step_z") and float(value) == 0.0:
+                continue  # no taper; a peck or groove in one column (the control's own default is 0)
             words.append(letter + self._value(value, how, letter, block))
         return words
 
