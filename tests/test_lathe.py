@@ -315,3 +315,111 @@ def test_one_block_form_written_and_read() -> None:
     assert write(SEED, "gsk", "fanuc", setup).splitlines()[3:5] == [
         "(G71 U2. R1.: in the next block)", "G71 P10 Q20 U0.5 W0.1 D2. F0.25"]
     assert deviation(SEED, write(SEED, "gsk", "fanuc", setup), "gsk", "fanuc", setup) == 0.0
+
+
+# -- the other cycles: words read as the manuals give them, native both ways, verified --------------
+
+CYCLES = """%
+O0003
+G98 G00 X60. Z5.
+G73 U3. W0.5 R3
+G73 P30 Q40 U0.4 W0.1 F80.
+N30 G00 X20. Z2.
+G01 Z-20. F60.
+X40. Z-30.
+N40 X56.
+G70 P30 Q40
+G00 X45. Z-10.
+G75 R0.5
+G75 X30. Z-20. P2000 Q3000 F40.
+G00 X60. Z5.
+G00 X0. Z3.
+G74 R1.
+G74 Z-20. Q5000 F30.
+G00 X55. Z5.
+G76 P011060 Q100 R0.05
+G76 X44.376 Z-30. P1624 Q500 F2.
+G00 X60. Z5.
+G92 X47. Z-30. F2.
+X46.
+G94 X20. Z-2. F50.
+Z-4.
+G00 X100. Z50.
+M30
+%
+"""
+
+
+def _cycle(program: str, line: int) -> LatheCycle:
+    block = next(b for b in blocks(program, "gsk") if b.line == line)
+    cycle = block.sections["LatheCycle"]
+    assert isinstance(cycle, LatheCycle)
+    return cycle
+
+
+@pytest.mark.parametrize("line, kind, form, params", [
+    (4, "pattern_repeat", "first", {"relief_x": 3.0, "relief_z": 0.5, "passes": 3}),
+    (5, "pattern_repeat", "second", {"ns": 30, "nf": 40, "allow_x": 0.4, "allow_z": 0.1, "relief_x": 3.0,
+                                     "relief_z": 0.5, "passes": 3}),
+    (13, "groove", "second", {"x": 30.0, "z": -20.0, "step_x": 2.0, "step_z": 3.0, "relief": 0.0, "retract": 0.5}),
+    # G74 without X: a drill on the spot (X of the start); Q in least increments: 5000 = 5 mm
+    (17, "face_peck", "second", {"z": -20.0, "step_z": 5.0, "x": 0.0, "step_x": 0.0, "relief": 0.0, "retract": 1.0}),
+    # P011060: one finishing pass, chamfer 1.0 x lead, 60 degrees; Q100 = 0.1 mm; P1624 = 1.624 mm
+    (19, "thread_multi", "first", {"finish_passes": 1, "chamfer": 10, "angle": 60, "min_depth": 0.1,
+                                   "allowance": 0.05}),
+    (20, "thread_multi", "second", {"x": 44.376, "z": -30.0, "height": 1.624, "first_depth": 0.5, "taper": 0.0,
+                                    "finish_passes": 1, "chamfer": 10, "angle": 60, "min_depth": 0.1,
+                                    "allowance": 0.05}),
+    (23, "thread_single", "single", {"x": 46.0, "z": -30.0}),
+    (25, "face_single", "single", {"x": 20.0, "z": -4.0}),
+])
+def test_cycle_words(line: int, kind: str, form: str, params: dict[str, float]) -> None:
+    cycle = _cycle(CYCLES, line)
+    assert (cycle.kind, cycle.form) == (kind, form)
+    for name, value in params.items():
+        assert cycle.params[name] == pytest.approx(value), name
+
+
+def test_every_cycle_round_trips_through_fanuc_and_verifies() -> None:
+    fanuc = write(CYCLES, "gsk", "fanuc")
+    assert "G75 X30. Z-20. P2000 Q3000 R0. F40." in fanuc  # every word; P/Q back in least increments
+    assert "G76 P011060 Q100 R0.05" in fanuc and "G76 X44.376 Z-30. P1624 Q500 F2." in fanuc
+    assert deviation(CYCLES, fanuc, "gsk", "fanuc") == 0.0
+    assert write(fanuc, "fanuc", "gsk") == fanuc  # GSK gets the same explicit words
+
+
+def test_thread_passes_reach_the_root_from_the_first_depth() -> None:
+    """G76 X44.376 P1624 Q500 from X55: the crest is the root plus the height, 44.376 + 2 x 1.624 =
+    47.624 (diameter); the first pass cuts 0.5 (radius) below it, X46.624; the last reaches the root."""
+    threads = [e for e in events(CYCLES, "gsk") if e.get("line") == 20 and e.get("move") == "feed"]
+    assert threads[0]["x"] == pytest.approx(46.624)
+    assert min(e["x"] for e in threads) == pytest.approx(44.376)
+
+
+def test_grooving_pecks_stay_within_the_groove() -> None:
+    evs = [e for e in events(CYCLES, "gsk") if e.get("line") == 13 and "move" in e]
+    assert min(e["x"] for e in evs) == pytest.approx(30.0)
+    assert {e["z"] for e in evs} <= {-10.0, -13.0, -16.0, -19.0, -20.0}
+    assert (evs[-1]["x"], evs[-1]["z"]) == (45, -10)  # back at the start
+
+
+def test_threading_has_no_spelling_where_the_spindle_is_not_synchronised() -> None:
+    with pytest.raises(ErrorList) as info:
+        write("G00 X60. Z5.\nG92 X47. Z-30. F2.\n", "gsk", "grbl")
+    assert [str(e) for e in info.value.errors] == ["in.nc:2:1: error: the grbl dialect cannot express thread motion"]
+
+
+def test_least_increment_words_take_no_decimal_point() -> None:
+    with pytest.raises(ErrorList) as info:
+        blocks("G00 X45. Z-10.\nG75 R0.5\nG75 X30. Z-20. P2. Q3000 F40.\n", "gsk")
+    assert [str(e) for e in info.value.errors] == [
+        "in.nc:3:16: error: address P of G75 takes no decimal point: it counts least input increments (P2.)"]
+
+
+@pytest.mark.parametrize("target", ["grbl", "linuxcnc"])
+def test_roughing_grooving_and_facing_expand_and_verify(target: str) -> None:
+    program = "\n".join(line for line in CYCLES.splitlines()
+                        if not any(code in line for code in ("G76", "G92", "X46."))) + "\n"
+    text = write(program, "gsk", target)
+    assert "(pattern_repeat from line 5: G73 P30 Q40 U0.4 W0.1 F80.)" in text
+    assert deviation(program, text, "gsk", target) == 0.0
