@@ -25,7 +25,7 @@ from postproc.ir import (
 )
 from postproc.plugins import default_registry
 from postproc.program_xml import load_program
-from postproc.setup import LatheCycleSettings, InputSettings, MachineSettings, MachineSetup, OutputSettings, CycleSettings, Templates
+from postproc.setup import load_setup, LatheCycleSettings, InputSettings, MachineSettings, MachineSetup, OutputSettings, CycleSettings, Templates
 from postproc.xmlio import XFactory, parse_xml_bytes, to_bytes
 from tests.support.control_samples import CONTROL_SAMPLES
 
@@ -287,12 +287,16 @@ EXAMPLES = sorted(ROOT.glob("examples/**/*.nc")) + [
 @pytest.mark.parametrize("path", EXAMPLES, ids=lambda p: str(p.relative_to(ROOT)))
 def test_ir_command_output_loads_back_to_the_read_blocks(cli, tmp_path, path):
     out = tmp_path / "ir.xml"
-    result = cli("ir", path, "--dialect", "fanuc", "-o", out)
+    name, setup_file = {"gsk": ("gsk", "gsk_980tdc.xml"), "fanuc-lathe": ("fanuc", "fanuc_0i_tf.xml")}.get(
+        path.parent.name, ("fanuc", None))  # the lathe examples are read as a lathe's
+    machine = ["--machine", ROOT / "examples/setups" / setup_file] if setup_file else []
+    result = cli("ir", path, "--dialect", name, "-o", out, *machine)
     assert result.status == 0, result.err
     dialect, loaded = load_program(out)
+    setup = load_setup(ROOT / "examples/setups" / setup_file) if setup_file else None
     with open(path, encoding="utf-8", errors="surrogateescape", newline="") as src:
-        expected = read_program(src, file=str(path), dialect="fanuc")
-    assert dialect == "fanuc"
+        expected = read_program(src, file=str(path), dialect=name, setup=setup)
+    assert dialect == name
     assert len(loaded) == len(expected)
     for got, want in zip(loaded, expected):
         assert got == want, f"line {want.line}"
