@@ -423,3 +423,12 @@ def test_roughing_grooving_and_facing_expand_and_verify(target: str) -> None:
     text = write(program, "gsk", target)
     assert "(pattern_repeat from line 5: G73 P30 Q40 U0.4 W0.1 F80.)" in text
     assert deviation(program, text, "gsk", target) == 0.0
+
+
+def test_lathe_backplot_draws_the_zx_plane_in_radii(tmp_path: Any) -> None:
+    from postproc.export import export_toolpath
+    out = io.StringIO()
+    export_toolpath(lines(SEED), out, file="in.nc", dialect="gsk", setup=LATHE, fmt="svg")
+    svg = out.getvalue()
+    assert "Turning (Z across, X radius up)" in svg
+    assert "X 0..50 " in svg  # the diameters 0..100 drawn as radii (true geometry, arcs round)
