@@ -163,6 +163,9 @@ class Dialect:
     """Neutral names of the lathe cycles (G70-G76, G90/G92/G94) the controller runs natively with the
     Fanuc system A/GSK words; others are expanded into their moves."""
 
+    LATHE_FEED_AT_START: ClassVar[str] = "per_min"
+    """The feed mode a lathe program starts in before it programs one (Fanuc T: per revolution, G99, by
+    its default parameter; GSK 980TDc: per minute, G98)."""
     LATHE_ONE_BLOCK: ClassVar[bool] = False
     """The control reads the one-block forms ``G71 P Q U W D F`` and ``G76 X Z I K D F A P`` (Fanuc
     10/11/15-T) when the set-up's ``latheCycleFormat`` says so; without it every cycle has two blocks."""
@@ -208,6 +211,7 @@ class Dialect:
         ctx.one_block = ctx.lathe and cls.LATHE_ONE_BLOCK and setup.input.lathe_cycle_format == "one-block"
         if ctx.lathe:
             ctx.state.plane = "ZX"  # a lathe turns in the ZX plane (G18) from the start
+            ctx.state.feed_mode = cls.LATHE_FEED_AT_START
         return ctx
 
 

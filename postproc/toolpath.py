@@ -118,6 +118,7 @@ class Simulator:
         written as a diameter."""
         if self.lathe:
             self.modal.plane = "ZX"
+            self.modal.feed_mode = ctx.state.feed_mode  # the reading dialect's mode at the start
         self.ended = False
         self.end = EndTracker()
         self.live_after_end: list[int] = []

@@ -69,9 +69,10 @@ def deviation(source: str, out: str, src: str, dst: str, setup: MachineSetup = L
 # -- the seed: kept native, expanded, verified ------------------------------------------------------
 
 def test_seed_gsk_to_fanuc_keeps_the_cycles_native() -> None:
-    # Fanuc T has no K (the monotonicity check: the translation has made it), every other word stays
+    # Fanuc T has no K (the monotonicity check: the translation has made it), every other word stays;
+    # GSK starts in G98 (feed per minute), Fanuc T in G99: the first block says G98
     assert write(SEED, "gsk", "fanuc") == (
-        "%\nO0001\nG00 X60. Z5.\nG71 U2. R1.\nG71 P10 Q20 U0.5 W0.1 F0.25\nN10 G00 X20.\nG01 Z-20. F0.1\n"
+        "%\nO0001\nG98 G00 X60. Z5.\nG71 U2. R1.\nG71 P10 Q20 U0.5 W0.1 F0.25\nN10 G00 X20.\nG01 Z-20. F0.1\n"
         "G01 X40. Z-30.\nG01 Z-50.\nN20 G01 X56.\nG70 P10 Q20\nG00 X100. Z50.\nM30\n%\n")
 
 
@@ -162,7 +163,7 @@ def test_turning_single_cycle_by_hand() -> None:
 def test_single_cycle_in_fanuc_system_b_is_g77() -> None:
     setup = MachineSetup(input=InputSettings(machine_type="lathe", gcode_system="B"), machine=MachineSettings(axes="XZ"))
     text = write(SINGLE, "gsk", "fanuc", setup)
-    assert text == "G00 X60. Z5.\nG77 X50. Z-30. F0.2\nG77 X40. Z-30. R-2.\nG00 X100.\n"
+    assert text == "G94 G00 X60. Z5.\nG77 X50. Z-30. F0.2\nG77 X40. Z-30. R-2.\nG00 X100.\n"
     assert deviation(SINGLE, text, "gsk", "fanuc", setup) == 0.0
 
 
@@ -177,7 +178,7 @@ def test_radius_programming_reads_x_as_a_radius() -> None:
     setup = MachineSetup(input=InputSettings(machine_type="lathe", x_programming="radius"),
                          machine=MachineSettings(axes="XZ"))
     evs = events("G00 X30. Z5.\nG01 U-5. F0.2\n", "fanuc", setup)
-    assert evs[0] == {"toolpath": 1, "units": "mm", "dialect": "fanuc"}
+    assert evs[0] == {"toolpath": 1, "units": "mm", "dialect": "fanuc", "feed_mode": "per_rev"}  # G99 at start
     assert [(e["x"], e["z"]) for e in evs[1:]] == [(30, 5), (25, 5)]
 
 
@@ -187,14 +188,14 @@ def test_coordinate_setting_and_spindle_clamp() -> None:
     assert bs[1].sections["SpindleClamp"].rpm == 2500.0
     assert bs[2].sections["SpindleMode"].mode == "css"
     assert write("G50 X200. Z100.\nG50 S2500\nG96 S180\nG00 X60. Z5.\n", "gsk", "fanuc") == (
-        "G50 X200. Z100.\nG50 S2500\nG96 S180\nG00 X60. Z5.\n")
+        "G98 G50 X200. Z100.\nG50 S2500\nG96 S180\nG00 X60. Z5.\n")
     # G50 X200 declares where the tool is: a move to X60 goes 140 (diameter) down from there
     evs = events("G50 X200. Z100.\nG00 X60. Z5.\n", "gsk")
     assert [(e["x"], e["z"]) for e in evs[1:]] == [(60, 5)]
 
 
 def test_tool_and_offset_word() -> None:
-    assert write("T0101\n", "gsk", "fanuc") == "T0101\n"
+    assert write("T0101\n", "gsk", "fanuc") == "G98 T0101\n"  # GSK's start in G98 said for Fanuc T
     assert blocks("T0101\n", "gsk")[0].sections["ToolSelect"].number == 101
 
 
@@ -277,7 +278,7 @@ def test_gsk_output_writes_every_word() -> None:
                          lathe_cycles=LatheCycleSettings(rough_depth=1.5, rough_retract=0.4))
     text = write("G00 X60. Z5.\nG71 P10 Q20 U0.5 W0.1 F0.25\nN10 G00 X20.\nN20 G01 X56. Z-20.\n", "fanuc", "gsk",
                  setup)
-    assert text == ("G00 X60. Z5.\nG71 U1.5 R0.4\nG71 P10 Q20 U0.5 W0.1 F0.25\nN10 G00 X20.\n"
+    assert text == ("G99 G00 X60. Z5.\nG71 U1.5 R0.4\nG71 P10 Q20 U0.5 W0.1 F0.25\nN10 G00 X20.\n"
                     "N20 G01 X56. Z-20.\n")
 
 
@@ -432,3 +433,13 @@ def test_lathe_backplot_draws_the_zx_plane_in_radii(tmp_path: Any) -> None:
     svg = out.getvalue()
     assert "Turning (Z across, X radius up)" in svg
     assert "X 0..50 " in svg  # the diameters 0..100 drawn as radii (true geometry, arcs round)
+
+
+def test_each_control_starts_in_its_own_feed_mode() -> None:
+    """Fanuc T starts in G99 (per revolution), GSK in G98, grbl and LinuxCNC per minute: a program that
+    relies on its control's start gets the mode written for a target that starts in another."""
+    program = "G00 X60. Z5.\nG01 X50. F0.2\n"
+    assert write(program, "fanuc", "linuxcnc").splitlines()[0] == "G18 G95 G0 X30. Z5."
+    assert events(program, "fanuc")[0]["feed_mode"] == "per_rev"
+    assert "feed_mode" not in events(program, "gsk")[0]
+    assert write(program, "fanuc", "fanuc") == program

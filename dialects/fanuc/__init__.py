@@ -48,6 +48,8 @@ class Fanuc(Dialect):
     LATHE_CYCLES = frozenset(("turn_finish", "turn_rough", "face_rough", "pattern_repeat", "face_peck", "groove",
                               "thread_multi", "turn_single", "thread_single", "face_single"))
     """G70-G76 and the single cycles (G90/G92/G94 in system A, renumbered in B and C)."""
+    LATHE_FEED_AT_START = "per_rev"
+    """Fanuc T starts in G99 (feed per revolution; parameter 3402#4 FPM = 0, the default)."""
     LATHE_ONE_BLOCK = True
     """10/11/15-T read ``G71 P Q U W D F`` and ``G76 X Z I K D F A P`` (the set-up's ``latheCycleFormat``)."""
     LATHE_PIPELINE_FILE = "fanuc_lathe.xml"

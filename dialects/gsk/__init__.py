@@ -34,6 +34,8 @@ class Gsk(Dialect):
     LATHE_CYCLES = frozenset(("turn_finish", "turn_rough", "face_rough", "pattern_repeat", "face_peck", "groove",
                               "thread_multi", "turn_single", "thread_single", "face_single"))
     """G70-G76, G90, G92, G94."""
+    LATHE_FEED_AT_START = "per_min"
+    """The 980TDc starts in G98 (feed per minute)."""
     SPINDLE_ORIENTATION = False
     """No M19 on the 980TDc."""
     TOOL_LENGTH_OFFSET = False

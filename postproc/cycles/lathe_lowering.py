@@ -21,7 +21,9 @@ from typing import Iterator
 from postproc.context import Context
 from postproc.dialect import Dialect
 from postproc.errors import UnsupportedError
-from postproc.ir import Block, Comments, CompoundMotion, DistanceMode, Motion, Plane, ToolChange, ToolSelect
+from postproc.ir import (
+    Block, Comments, CompoundMotion, DistanceMode, FeedMode, Motion, Plane, ToolChange, ToolSelect,
+)
 from postproc.lathe_sections import CoordinateSet, LatheCycle
 
 def lathe_tool(number: int) -> int:
@@ -57,6 +59,9 @@ def _lower(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iter
     radius = ctx.diameter and (foreign or not target.DIAMETER_PROGRAMMING)
     tracker = _Position(ctx, radius) if foreign or radius else None
     plane_set = not foreign
+    start_mode = ctx.state.feed_mode  # read before any block: the source's mode at the start
+    target_mode = target.LATHE_FEED_AT_START if not foreign else "per_min"
+    mode_set = start_mode == target_mode
     for block in blocks:
         sections = block.sections
         profile = sections.get("InProfile")
@@ -81,6 +86,12 @@ def _lower(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iter
                     comments = sections.get("Comments")
                     texts = comments.texts if isinstance(comments, Comments) else []
                     sections["Comments"] = Comments([f"LINE {block.line}: {source} (cycle data)", *texts])
+        if not mode_set and block.sections and "TapeMark" not in block.sections \
+                and "ProgramStart" not in block.sections and "Comments" not in block.sections:
+            mode_set = True
+            if "FeedMode" not in block.sections:
+                block.add(FeedMode(start_mode))  # the target starts in another feed mode: say the source's
+                block.changed()
         if foreign:
             _turret(block)
         if tracker is not None:
