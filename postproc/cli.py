@@ -207,7 +207,7 @@ def cmd_toolpath(args: argparse.Namespace) -> int:
 def cmd_verify(args: argparse.Namespace) -> int:
     from .verify import verify_files
     setup = _setup(args.machine, args.lib)
-    target_setup = _setup(args.target_machine, args.lib) if args.target_machine else setup
+    target_setup = _setup(args.target_machine, args.lib) if args.target_machine else None  # the same machine
     report = verify_files(args.input, args.output, source=args.source, target=args.target,
                           setup=setup, target_setup=target_setup, tolerance=args.tolerance)
     print(report.summary())

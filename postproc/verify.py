@@ -11,6 +11,7 @@ mismatch, reported at its first place; after it the two paths no longer line up 
 
 from __future__ import annotations
 
+import copy
 import math
 from dataclasses import dataclass, field
 from itertools import zip_longest
@@ -312,7 +313,8 @@ def verify_lines(lines_in: Iterable[str], lines_out: Iterable[str], *, file_in: 
     if not math.isfinite(tolerance) or tolerance < 0:
         raise UsageError(f"the tolerance must be a finite number of at least 0, got {tolerance:g}")
     setup = setup or MachineSetup()
-    target_setup = target_setup or setup
+    if target_setup is None:
+        target_setup = _same_machine(setup, source, registry)
     diag_in, diag_out = Diagnostics(), Diagnostics()
     after_in: list[int] = []
     after_out: list[int] = []
@@ -327,6 +329,18 @@ def verify_lines(lines_in: Iterable[str], lines_out: Iterable[str], *, file_in: 
     if errors:
         raise ErrorList(errors)
     return report
+
+
+def _same_machine(setup: MachineSetup, source: str, registry: Registry | None) -> MachineSetup:
+    """The target runs on the source's machine: a program a lathe-only dialect read (GSK) is a lathe's
+    on the target's side too, whatever type the set-up names."""
+    from .plugins import default_registry
+    reading = (registry or default_registry()).dialect(source)
+    if setup.input.machine_type == "lathe" or not reading.reads_lathe(setup):
+        return setup
+    lathe = copy.copy(setup)
+    lathe.input = setup.input.model_copy(update={"machine_type": "lathe"})
+    return lathe
 
 
 def verify_files(in_path: str, out_path: str, *, source: str, target: str,

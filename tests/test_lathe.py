@@ -443,3 +443,14 @@ def test_each_control_starts_in_its_own_feed_mode() -> None:
     assert events(program, "fanuc")[0]["feed_mode"] == "per_rev"
     assert "feed_mode" not in events(program, "gsk")[0]
     assert write(program, "fanuc", "fanuc") == program
+
+
+def test_verify_reads_the_target_on_the_sources_lathe(cli: Any, tmp_path: Any) -> None:
+    """GSK is a lathe whatever the set-up says; without --target-machine the Fanuc translation is read as
+    running on the same lathe (not as a mill program, where G71 is unknown)."""
+    src, out = tmp_path / "seed.nc", tmp_path / "seed.fanuc.nc"
+    src.write_text(SEED)
+    assert cli("translate", src, "--from", "gsk", "--to", "fanuc", "-o", out).status == 0
+    result = cli("verify", src, out, "--from", "gsk", "--to", "fanuc")
+    assert result.status == 0, result.err
+    assert result.out.decode().startswith("max deviation 0.0000 mm")
