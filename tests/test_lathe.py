@@ -454,3 +454,10 @@ def test_verify_reads_the_target_on_the_sources_lathe(cli: Any, tmp_path: Any) -
     result = cli("verify", src, out, "--from", "gsk", "--to", "fanuc")
     assert result.status == 0, result.err
     assert result.out.decode().startswith("max deviation 0.0000 mm")
+
+
+def test_an_absolute_and_an_incremental_word_of_one_axis_are_refused() -> None:
+    with pytest.raises(ErrorList) as info:
+        blocks("G00 X60. Z5.\nZ-5. W0\n", "gsk")
+    assert [str(e) for e in info.value.errors] == [
+        "in.nc:2:6: error: Z and W in one block: the absolute and the incremental Z of one move"]

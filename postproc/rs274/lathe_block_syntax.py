@@ -109,6 +109,10 @@ class LatheBlockSyntax(WordBlockSyntax):
     def g_sections(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],
                    used: set[str], cycle_block: bool) -> None:
         """The lathe's own codes first (coordinate setting, spindle mode), then the family's."""
+        for absolute, increment in (("X", "U"), ("Z", "W")):
+            if absolute in values and increment in values:
+                raise ProgramError(f"{absolute} and {increment} in one block: the absolute and the incremental "
+                                   f"{absolute} of one move", ctx.at(block, ctx.column_of(block, increment)))
         for group, (_, kind, arg, num) in list(codes.items()):
             if kind == "spindle_mode":
                 block.add(SpindleMode(str(arg)))
