@@ -461,3 +461,22 @@ def test_an_absolute_and_an_incremental_word_of_one_axis_are_refused() -> None:
         blocks("G00 X60. Z5.\nZ-5. W0\n", "gsk")
     assert [str(e) for e in info.value.errors] == [
         "in.nc:2:6: error: Z and W in one block: the absolute and the incremental Z of one move"]
+
+
+def test_g76_one_block_form_becomes_two_blocks_for_gsk() -> None:
+    """Fanuc 15-T ``G76 X Z K D F A P``: K height, D first depth (decimal); GSK gets the two-block form
+    with the set-up's m and r and the block's angle, P/Q in least increments."""
+    setup = MachineSetup(input=InputSettings(machine_type="lathe", lathe_cycle_format="one-block"))
+    program = "G00 X55. Z5.\nG76 X44.376 Z-30. K1.624 D0.5 F2. A60 P1\nG00 X60.\n"
+    gsk = write(program, "fanuc", "gsk", setup)
+    assert gsk.splitlines()[1:3] == ["G76 P011060 Q100 R0.05", "G76 X44.376 Z-30. P1624 Q500 F2."]
+    assert deviation(program, gsk, "fanuc", "gsk", setup) == 0.0
+
+
+def test_g72_facing_expands_and_verifies() -> None:
+    program = ("G00 X62. Z2.\nG72 W1.5 R0.5\nG72 P10 Q20 U0.4 W0.2 F100.\nN10 G00 Z-12.\nG01 X40. F50.\n"
+               "X20. Z-4.\nN20 Z2.\nG70 P10 Q20\n")
+    cycle = _cycle(program, 2)
+    assert (cycle.kind, cycle.params["depth"], cycle.params["retract"]) == ("face_rough", 1.5, 0.5)
+    for target in ("grbl", "fanuc"):
+        assert deviation(program, write(program, "gsk", target), "gsk", target) == 0.0
