@@ -400,9 +400,10 @@ def spell_number(value: float) -> str:
 
 
 def _ends_in_one_argument_atan(e: Expr) -> bool:
-    """True when ``e`` is written ending in a one-argument ``ATAN[..]`` (its rightmost operand)."""
-    while isinstance(e, Binary):
-        e = e.right
+    """True when ``e`` is written ending in a one-argument ``ATAN[..]`` (its rightmost operand, a sign
+    before it included: ``-ATAN[a]/[b]`` would read as the two-argument form too)."""
+    while isinstance(e, (Binary, Unary)):
+        e = e.right if isinstance(e, Binary) else e.operand
     return isinstance(e, Func) and len(e.args) == 1 and e.name.startswith("atan")
 
 
