@@ -480,3 +480,15 @@ def test_g72_facing_expands_and_verifies() -> None:
     assert (cycle.kind, cycle.params["depth"], cycle.params["retract"]) == ("face_rough", 1.5, 0.5)
     for target in ("grbl", "fanuc"):
         assert deviation(program, write(program, "gsk", target), "gsk", target) == 0.0
+
+
+def test_a_lathe_cycle_with_computed_words_is_flattened_or_refused() -> None:
+    """Kept symbolically a cycle's computed words are refused (located); flattened they are numbers."""
+    program = "G98 G00 X60. Z5.\n#1=50.\nG90 X[#1] Z-30. F100.\n"
+    with pytest.raises(ErrorList) as info:
+        blocks(program, "fanuc")
+    assert [str(e) for e in info.value.errors] == [
+        "in.nc:3:1: error: G90 with computed words cannot be read: a lathe cycle's words must be numbers"]
+    grbl = write(program, "fanuc", "grbl")
+    assert "(turn_single from line 3: G90 X50. Z-30. F100.)" in grbl
+    assert deviation(program, grbl, "fanuc", "grbl") == 0.0

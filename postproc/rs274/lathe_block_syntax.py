@@ -114,6 +114,10 @@ class LatheBlockSyntax(WordBlockSyntax):
                 raise ProgramError(f"{absolute} and {increment} in one block: the absolute and the incremental "
                                    f"{absolute} of one move", ctx.at(block, ctx.column_of(block, increment)))
         for group, (_, kind, arg, num) in list(codes.items()):
+            if kind == "lathe_cycle":
+                # only a block with computed words comes here (``build`` reads the others itself)
+                raise ProgramError(f"G{num} with computed words cannot be read: a lathe cycle's words must be "
+                                   "numbers", ctx.at(block, col_of_word(block, "G", num)))
             if kind == "spindle_mode":
                 block.add(SpindleMode(str(arg)))
                 del codes[group]
