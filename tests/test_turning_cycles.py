@@ -201,3 +201,43 @@ def test_g73_passes_step_evenly_from_the_relief_to_the_allowance(
     for p, q in zip(got, got[1:]):
         if q.note == "return" and p.z != q.z:
             assert out * p.x >= clear - 1e-9 and out * q.x >= clear - 1e-9
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.floats(-20.0, 20.0), st.floats(0.05, 12.0), st.floats(0.3, 3.0), st.floats(0.0, 1.0), st.floats(0.5, 4.0),
+       st.floats(0.0, 0.5), st.booleans(), st.booleans())
+def test_g74_g75_pecks_reach_the_bottom_of_every_pass(x_span: float, depth: float, peck: float, e: float,
+                                                      step: float, relief: float, facing: bool, down: bool) -> None:
+    a = (10.0, 2.0)
+    if facing:  # G74: pecks along Z, passes along X
+        x, z = a[0] + x_span, a[1] + (-depth if down else depth)
+        got = peck_face(a, x, z, peck, e, step=step, relief=relief, feed=0.1)
+        along, across = (lambda m: m.z), (lambda m: m.x)  # noqa: E731
+        start_along, end_along, start_across, end_across = a[1], z, a[0], x
+    else:  # G75: pecks along X, passes along Z
+        x, z = a[0] + (-depth if down else depth), a[1] + x_span
+        got = groove(a, x, z, peck, e, step=step, relief=relief, feed=0.1)
+        along, across = (lambda m: m.x), (lambda m: m.z)  # noqa: E731
+        start_along, end_along, start_across, end_across = a[0], x, a[1], z
+    assert (got[-1].x, got[-1].z) == a
+    pecks = [m for m in got if m.note == "peck"]
+    columns = sorted({across(m) for m in pecks}, key=lambda v: abs(v - start_across))
+    # Passes from A's position to the last, never more than Δ apart, the last exactly at the end.
+    if depth > 0:
+        assert columns[0] == start_across and columns[-1] == end_across
+        assert all(abs(b - a_) <= step + 1e-9 for a_, b in zip(columns, columns[1:]))
+    position = a
+    for m in got:
+        if m.note == "peck":  # each peck goes at most Δk beyond the deepest point reached so far
+            assert abs(along(m) - start_along) <= abs(end_along - start_along) + 1e-9
+        position = (m.x, m.z)
+    for c in columns:  # every pass reaches the bottom
+        assert any(across(m) == c and along(m) == end_along for m in pecks)
+    deepest: dict[float, float] = {}
+    for m in pecks:
+        c = across(m)
+        reached = deepest.get(c, 0.0)
+        travel = abs(along(m) - start_along)
+        assert travel - reached <= peck + 1e-9
+        deepest[c] = max(reached, travel)
+    assert position == a

@@ -36,8 +36,12 @@ class Case:
 @st.composite
 def cases(draw: st.DrawFn, type_ii: bool) -> Case:
     fl = lambda lo, hi: draw(st.floats(lo, hi, allow_nan=False))  # noqa: E731
-    xa, za = fl(6.0, 16.0), fl(-3.0, 3.0)
-    xb = fl(0.5, xa - 0.5)
+    # Snapped cases put X values on a 0.5 grid with Δd 0.5 or 1 and no allowance: levels then land
+    # exactly on vertices and Z-parallel blocks, the edge cases of where a level meets the profile.
+    snap = draw(st.booleans())
+    q = (lambda v: round(v * 2.0) / 2.0) if snap else (lambda v: v)  # noqa: E731
+    xa, za = q(fl(6.0, 16.0)), fl(-3.0, 3.0)
+    xb = q(fl(0.5, xa - 0.5))
     zb = za + (fl(-1.0, 0.0) if type_ii and draw(st.booleans()) else 0.0)
     profile = [Seg("line", xa, za, xb, zb, rapid=draw(st.booleans()), line=1)]
     x, z = xb, zb
@@ -52,7 +56,7 @@ def cases(draw: st.DrawFn, type_ii: bool) -> Case:
             dx = 0.0 if kind == "h" else fl(-4.0, 4.0)
         else:
             dx = 0.0 if kind == "h" else fl(0.2, 4.0)
-        dx = max(0.3 - x, min(xa + 3.0 - x, dx))
+        dx = q(max(0.5 - x, min(xa + 3.0 - x, dx)))
         if kind == "v" and abs(dx) < 0.1:
             continue
         x1, z1 = x + dx, z + dz
@@ -68,8 +72,10 @@ def cases(draw: st.DrawFn, type_ii: bool) -> Case:
         profile.append(Seg("line", x, z, x1, z1, line=2 + i))
         x, z = x1, z1
     if draw(st.booleans()):  # the nf block often leaves the part outward
-        profile.append(Seg("line", x, z, x + fl(0.2, 3.0), z, line=20))
+        profile.append(Seg("line", x, z, x + q(fl(0.5, 3.0)), z, line=20))
     mirror = Mirror(draw(st.booleans()), draw(st.sampled_from([1.0, -1.0])), draw(st.sampled_from([1.0, -1.0])))
+    if snap:
+        return Case((xa, za), profile, draw(st.sampled_from([0.5, 1.0])), fl(0.0, 1.5), 0.0, 0.0, type_ii, mirror)
     return Case((xa, za), profile, fl(0.4, 3.0), fl(0.0, 1.5), fl(0.0, 0.5), fl(0.0, 0.3), type_ii, mirror)
 
 

@@ -29,10 +29,12 @@ def x_at(seg: Seg, z: float) -> float | None:
     """The highest x of the segment at z, exactly, or None where it does not reach z (or is a wall)."""
     if seg.kind == "line":
         lo, hi = min(seg.z0, seg.z1), max(seg.z0, seg.z1)
-        if hi - lo <= 1e-12 or not lo - 1e-12 <= z <= hi + 1e-12:
+        if hi - lo <= 1e-12 or not lo <= z <= hi:  # exact: near a wall, a z tolerance is a big x error
             return None
         return seg.x0 + (z - seg.z0) / (seg.z1 - seg.z0) * (seg.x1 - seg.x0)
     assert seg.cx is not None and seg.cz is not None
+    if not min(seg.z0, seg.z1) <= z <= max(seg.z0, seg.z1):
+        return None  # every arc of a profile here is monotonic in z (the cycles refuse others)
     r = math.hypot(seg.x0 - seg.cx, seg.z0 - seg.cz)
     d2 = r * r - (z - seg.cz) ** 2
     if d2 < -1e-9:
@@ -67,7 +69,7 @@ class Air:
     def at(self, z: float) -> float:
         best = self.top
         for lo, hi, s in self.cuts:
-            if lo - 1e-9 <= z <= hi + 1e-9:
+            if lo - 1e-12 <= z <= hi + 1e-12:
                 x = x_at(s, z)
                 if x is not None and x < best:
                     best = x

@@ -43,7 +43,7 @@ def peck_passes(name: str, frame: Frame, start: Point, x: float, z: float, peck:
     span = abs(x1 - x0)
     if span > 0.0 and step <= 0.0:
         raise ProgramError(f"{name}: the step between passes must be positive, not {step:g}")
-    columns = 1 + (math.ceil(span / step - 1e-9) if span > 0.0 else 0)
+    columns = 1 + (max(1, math.ceil(span / step - 1e-9)) if span > 0.0 else 0)
     pecks = math.ceil(abs(z1 - z0) / peck - 1e-9) if abs(z1 - z0) > 0.0 else 0
     if columns * (2 * pecks + 4) > limit:
         raise ProgramError(f"{name}: {columns} passes of {pecks} pecks exceed the limit of {limit} moves")

@@ -123,15 +123,6 @@ def check_arc(seg: Seg, cycle: str) -> None:
                            f"{r1:.6g}")
 
 
-def seg_x_at_z_crossings(seg: Seg, level: float) -> list[float]:
-    """Parameters t in [0, 1] of the segment where x == level (sorted; lines only, for the intervals)."""
-    dx = seg.x1 - seg.x0
-    if abs(dx) <= EPS:
-        return []
-    t = (level - seg.x0) / dx
-    return [t] if -EPS <= t <= 1.0 + EPS else []
-
-
 def arc_level_points(seg: Seg, level: float) -> list[float]:
     """Angles on the arc where x == level."""
     assert seg.cx is not None and seg.cz is not None

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Sequence
+from typing import Literal, Sequence
 
 from postproc.errors import ProgramError
 
@@ -215,7 +215,7 @@ def _cut(start: Point, a1: Point, offset: Sequence[Seg], words: Roughing) -> lis
     (ax, az), (a1x, a1z) = start, a1
     depth, e, feed = words.depth, words.retract, words.feed
     ns, contour = offset[0], offset[1:]
-    infeed_kind = "rapid" if ns.rapid else "feed"
+    infeed_kind: Literal["rapid", "feed"] = "rapid" if ns.rapid else "feed"
     infeed_feed = None if ns.rapid else feed
     top = max(ax, a1x, _highest(offset))
     bottom = min(ns.x1, _lowest(contour)) if contour else ns.x1
@@ -227,9 +227,9 @@ def _cut(start: Point, a1: Point, offset: Sequence[Seg], words: Roughing) -> lis
     previous = a1x  # the level cut last (A' before the first)
     clear = max(ax, a1x)
 
-    def go(kind: str, nx: float, nz: float, note: str, f: float | None = None) -> None:
+    def go(kind: Literal["rapid", "feed"], nx: float, nz: float, note: str, f: float | None = None) -> None:
         nonlocal x, z
-        moves.append(TurnMove(kind, nx, nz, feed=f, note=note))  # type: ignore[arg-type]
+        moves.append(TurnMove(kind, nx, nz, feed=f, note=note))
         x, z = nx, nz
 
     for k in range(1, count + 1):
