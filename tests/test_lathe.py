@@ -492,3 +492,10 @@ def test_a_lathe_cycle_with_computed_words_is_flattened_or_refused() -> None:
     grbl = write(program, "fanuc", "grbl")
     assert "(turn_single from line 3: G90 X50. Z-30. F100.)" in grbl
     assert deviation(program, grbl, "fanuc", "grbl") == 0.0
+
+
+@pytest.mark.parametrize("word", ["X1.5", "U1.5", "P1500"])
+def test_dwell_on_a_lathe(word: str) -> None:
+    evs = events(f"G00 X60. Z5.\nG04 {word}\nG00 X70.\n", "gsk")[1:]
+    assert evs == [{"line": 1, "move": "rapid", "x": 60, "z": 5}, {"line": 2, "event": "dwell", "seconds": 1.5},
+                   {"line": 3, "move": "rapid", "x": 70, "z": 5}]

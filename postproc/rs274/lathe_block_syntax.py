@@ -109,6 +109,9 @@ class LatheBlockSyntax(WordBlockSyntax):
     def g_sections(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],
                    used: set[str], cycle_block: bool) -> None:
         """The lathe's own codes first (coordinate setting, spindle mode), then the family's."""
+        if any(kind == "dwell" for _, kind, _, _ in codes.values()) and "U" in values \
+                and "X" not in values and "P" not in values:
+            values["X"] = values.pop("U")  # a lathe's G04 U is the dwell in seconds, as G04 X
         for absolute, increment in (("X", "U"), ("Z", "W")):
             if absolute in values and increment in values:
                 raise ProgramError(f"{absolute} and {increment} in one block: the absolute and the incremental "

@@ -72,9 +72,10 @@ class LatheWordWriter(WordWriter):
         text = super().generate(block)
         if self._pending_first is not None and "CompoundMotion" not in block.sections:
             text = self._pending_first + "\n" + text
-        elif self._merged_first and not text.strip(" \n").replace("N", "").strip().lstrip("0123456789"):
-            text = text.rstrip("\n") + (" " if text.strip() else "") + self.comment(
-                f"{self.source_text(block)}: in the next block") + (block.eol or "\n")
+        elif self._merged_first:
+            rest = text.rstrip("\r\n")
+            note = self.comment(f"{self.source_text(block)}: in the next block")
+            text = (rest + " " if rest else "") + note + (block.eol or "\n")
         return text
 
     def _words(self, s: LatheCycle, table: dict[str, tuple[str, str]], block: Block,
