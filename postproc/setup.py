@@ -114,7 +114,7 @@ class MachineSettings(_Group):
 class LatheCycleSettings(_Group):
     """The data parameters a lathe cycle takes an omitted word from (GSK 980TDc No.051-060, Fanuc
     5130-5143). A value programmed in a cycle replaces the default for later cycles of the run, as the
-    controller rewrites its parameter. Lengths in mm, radius values."""
+    controller rewrites its parameter. Lengths in mm (an inch program reads them converted), radius values."""
 
     TAG = "LatheCycles"
     rough_depth: float = Field(1.0, gt=0)

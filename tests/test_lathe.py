@@ -499,3 +499,15 @@ def test_dwell_on_a_lathe(word: str) -> None:
     evs = events(f"G00 X60. Z5.\nG04 {word}\nG00 X70.\n", "gsk")[1:]
     assert evs == [{"line": 1, "move": "rapid", "x": 60, "z": 5}, {"line": 2, "event": "dwell", "seconds": 1.5},
                    {"line": 3, "move": "rapid", "x": 70, "z": 5}]
+
+
+def test_data_parameters_are_millimetres_in_an_inch_program() -> None:
+    """No.051 holds 1.5 mm: an inch program's G71 without U cuts 1.5 / 25.4 in a pass; a programmed
+    U0.1 (inch) is kept as 2.54 mm for the next cycle."""
+    setup = MachineSetup(input=InputSettings(machine_type="lathe"), lathe_cycles=LatheCycleSettings(rough_depth=1.5))
+    program = ("G20\nG00 X2.4 Z0.2\nG71 P10 Q20 U0.02 F8.\nN10 G00 X0.8\nN20 G01 X2.2 Z-1.\n"
+               "G71 U0.1 R0.02\nG71 P30 Q40 U0.02 F8.\nN30 G00 X0.8\nN40 G01 X2.2 Z-1.\nG21\n"
+               "G71 P50 Q60 U0.5 F100.\nN50 G00 X20.\nN60 G01 X56. Z-25.\n")
+    depths = [b.sections["LatheCycle"].params["depth"] for b in blocks(program, "gsk", setup)
+              if "LatheCycle" in b.sections and b.sections["LatheCycle"].form == "second"]
+    assert depths == pytest.approx([1.5 / 25.4, 0.1, 2.54])

@@ -78,6 +78,8 @@ PERSISTENT = {
     "allowance": "thread_allowance",
 }
 """Parameters a first block (or a one-block cycle) makes the new default -> the set-up field it starts from."""
+LENGTHS = frozenset(("depth", "retract", "relief_x", "relief_z", "min_depth", "allowance"))
+"""Persistent parameters that are lengths (kept in mm, converted for an inch program)."""
 PECK_RETRACT = "peck_retract"
 """G74/G75 keep their own retract (GSK No.056), apart from the G71/G72 one (No.052)."""
 
@@ -137,16 +139,17 @@ def read_cycle(kind: str, block: Block, ctx: Context, code: str, start: dict[str
         params["finish_passes"], params["chamfer"], params["angle"] = packed // 10000, packed // 100 % 100, packed % 100
     _check_values(kind, params, block, ctx, code)
     state = defaults(ctx)
+    to_mm = 25.4 if ctx.state.units == "inch" else 1.0  # the data parameters are kept in mm
     if form in ("first", "one"):
         for name, value in params.items():
             if name in PERSISTENT:
-                state[PERSISTENT[name]] = value
+                state[PERSISTENT[name]] = value * to_mm if name in LENGTHS else value
         if kind in ("face_peck", "groove") and "retract" in params:
-            state[PECK_RETRACT] = params["retract"]
+            state[PECK_RETRACT] = params["retract"] * to_mm
     if form == "first":
         # every parameter of the block, resolved: a target that omits none writes them all
         for entry in FIRST_WORDS[kind].values():
-            params.setdefault(entry[0], _default(entry[0], kind, state))
+            params.setdefault(entry[0], _default(entry[0], kind, state, to_mm))
         if kind == "thread_multi":
             params.pop("packed", None)
             for name in ("finish_passes", "chamfer", "angle"):
@@ -163,7 +166,7 @@ def read_cycle(kind: str, block: Block, ctx: Context, code: str, start: dict[str
         if name not in params:
             raise ProgramError(f"{code} needs {_letters(table, name)}", ctx.at(block, _code_col(block, ctx)))
     for name in _resolved(kind):
-        params.setdefault(name, _default(name, kind, state))
+        params.setdefault(name, _default(name, kind, state, to_mm))
     return LatheCycle(kind, form, params)
 
 
@@ -180,11 +183,13 @@ def _resolved(kind: str) -> tuple[str, ...]:
     }.get(kind, ())
 
 
-def _default(name: str, kind: str, state: dict[str, Any]) -> float | int:
+def _default(name: str, kind: str, state: dict[str, Any], to_mm: float) -> float | int:
+    """An omitted parameter's value in program units (the data parameters are kept in mm)."""
     if name == "retract" and kind in ("face_peck", "groove"):
-        return state[PECK_RETRACT]  # type: ignore[no-any-return]
+        return float(state[PECK_RETRACT]) / to_mm
     if name in PERSISTENT:
-        return state[PERSISTENT[name]]  # type: ignore[no-any-return]
+        value = state[PERSISTENT[name]]
+        return float(value) / to_mm if name in LENGTHS else int(value)
     return 0 if name == "check" else 0.0
 
 
