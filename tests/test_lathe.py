@@ -511,3 +511,14 @@ def test_data_parameters_are_millimetres_in_an_inch_program() -> None:
     depths = [b.sections["LatheCycle"].params["depth"] for b in blocks(program, "gsk", setup)
               if "LatheCycle" in b.sections and b.sections["LatheCycle"].form == "second"]
     assert depths == pytest.approx([1.5 / 25.4, 0.1, 2.54])
+
+
+def test_g32_thread_cutting_is_a_synchronised_move() -> None:
+    program = "G99 G00 X30. Z5.\nG32 Z-20. F1.5\nG00 X40.\n"
+    b_setup = MachineSetup(input=InputSettings(machine_type="lathe", gcode_system="B"))
+    assert write(program, "gsk", "fanuc", b_setup) == "G95 G00 X30. Z5.\nG33 Z-20. F1.5\nG00 X40.\n"
+    assert blocks(program, "gsk")[1].sections["Motion"].mode == "thread"
+    evs = events(program, "gsk")
+    assert evs[2] == {"line": 2, "move": "feed", "x": 30, "z": -20, "f": 1.5}
+    with pytest.raises(ErrorList):
+        write(program, "gsk", "grbl")
