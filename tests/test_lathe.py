@@ -522,3 +522,13 @@ def test_g32_thread_cutting_is_a_synchronised_move() -> None:
     assert evs[2] == {"line": 2, "move": "feed", "x": 30, "z": -20, "f": 1.5}
     with pytest.raises(ErrorList):
         write(program, "gsk", "grbl")
+
+
+def test_system_b_incremental_moves_become_u_w_for_system_a() -> None:
+    b_setup = MachineSetup(input=InputSettings(machine_type="lathe", gcode_system="B"))
+    program = "G94 G90 G00 X60. Z5.\nG91 G01 X-10. Z-5. F100.\nG02 X10. Z-5. R5.\nG90 G00 X80.\n"
+    gsk = write(program, "fanuc", "gsk", b_setup)
+    assert gsk == "G98 G00 X60. Z5.\nG01 U-10. W-5. F100.\nG02 U10. W-5. R5.\nG00 X80.\n"
+    report = verify_lines(lines(program), lines(gsk), file_in="in.nc", file_out="out.nc", source="fanuc",
+                          target="gsk", setup=b_setup, target_setup=LATHE)
+    assert report.ok and report.max_deviation == 0.0

@@ -14,11 +14,12 @@ from __future__ import annotations
 from typing import Any, ClassVar
 
 from ..errors import UnsupportedError
-from ..ir import Block
+from ..ir import Block, Motion, Section
 from ..lathe_sections import LatheCycle
 from .lathe_words import FIRST_WORDS, ONE_WORDS, SECOND_WORDS
 from .writer import WordWriter
 
+_INCREMENT = {"X": "U", "Z": "W"}
 _LETTER_ORDER: dict[str, tuple[str, ...]] = {
     "first:thread_multi": ("P", "Q", "R"),
 }
@@ -121,6 +122,40 @@ class LatheWordWriter(WordWriter):
     def coordinate_set_words(self, s: Any, block: Block) -> list[str]:
         code = self.code("coordinate_set", None, "coordinate setting", block)
         return [code, *(axis + self.number(value) for axis, value in s.axes.items())]
+
+    def distance_mode_words(self, s: Any, block: Block) -> list[str]:
+        """G90/G91 where the table has them; a system A lathe (GSK, Fanuc T A) has none: its incremental
+        moves are written with U/W (``motion_words``)."""
+        if self.ctx.lathe and self.codes.spell("distance", s.mode) is None:
+            self.modal.distance = s.mode
+            return []
+        return super().distance_mode_words(s, block)
+
+    def motion_words(self, s: Motion, block: Block) -> list[str]:
+        """In incremental mode on a lathe without G91, X and Z are written as U and W."""
+        if self.modal.distance == "incremental" and self.ctx.lathe and self.codes.spell("distance", "incremental") is None \
+                and s.mode not in ("home", "home2"):
+            if any(a in s.axes for a in ("U", "W")):
+                self.unsupported("U/W in incremental mode", block)
+            axes = {_INCREMENT.get(a, a): v for a, v in s.axes.items()}
+            self.modal.distance = "absolute"  # U/W say the increment: the words are written as they stand
+            try:
+                return super().motion_words(Motion(s.mode, axes, s.center, s.radius), block)
+            finally:
+                self.modal.distance = "incremental"
+        return super().motion_words(s, block)
+
+    def item_line(self, item: Section, block: Block) -> str:
+        """An expansion's move is absolute: a lathe without G90 leaves U/W mode for it by itself."""
+        if self.ctx.lathe and self.codes.spell("distance", "absolute") is None:
+            incremental = self.modal.distance == "incremental"
+            self.modal.distance = "absolute"
+            try:
+                return super().item_line(item, block)
+            finally:
+                if incremental:
+                    self.modal.distance = "incremental"
+        return super().item_line(item, block)
 
     def spindle_clamp_words(self, s: Any, block: Block) -> list[str]:
         words = [] if "CoordinateSet" in block.sections else [self.code("coordinate_set", None, "a spindle speed clamp", block)]
