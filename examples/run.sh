@@ -47,12 +47,39 @@ done
 echo
 echo "== out/prof_contour_xy.fanuc.nc: an ISG \$FOR contour kept as Custom Macro B"
 cat out/prof_contour_xy.fanuc.nc
+# Lathes: GSK 980TDc and Fanuc T keep their cycles native between them (every word written for GSK);
+# a control without lathe cycles gets the passes (threads need a synchronised spindle: Fanuc/GSK only).
+GSK=examples/setups/gsk_980tdc.xml
+FT=examples/setups/fanuc_0i_tf.xml
+for f in examples/gsk/*.nc; do
+  n=$(basename "$f" .nc)
+  run translate "$f" --from gsk --to fanuc --machine "$GSK" -o "out/$n.fanuc.nc"
+  run verify "$f" "out/$n.fanuc.nc" --from gsk --to fanuc --machine "$GSK"
+  if ! grep -q "G76\|G92" "$f"; then
+    for t in grbl linuxcnc; do
+      run translate "$f" --from gsk --to "$t" --machine "$GSK" -o "out/$n.$t.nc"
+      run verify "$f" "out/$n.$t.nc" --from gsk --to "$t" --machine "$GSK"
+    done
+  fi
+done
+for f in examples/fanuc-lathe/*.nc; do
+  n=$(basename "$f" .nc)
+  run translate "$f" --from fanuc --to gsk --machine "$FT" -o "out/$n.gsk.nc"
+  run verify "$f" "out/$n.gsk.nc" --from fanuc --to gsk --machine "$FT"
+  if ! grep -q "G76\|G92\|G96" "$f"; then
+    run translate "$f" --from fanuc --to linuxcnc --machine "$FT" -o "out/$n.ngc"
+    run verify "$f" "out/$n.ngc" --from fanuc --to linuxcnc --machine "$FT"
+  fi
+done
 echo
 echo "== out/o1001_plate_drill_tap.grbl.nc (first 30 lines)"
 head -n 30 out/o1001_plate_drill_tap.grbl.nc
 echo "..."
 echo "== out/o1005_bolt_circle_macro.grbl.nc: a Custom Macro B program flattened for grbl (first 20 lines)"
 head -n 20 out/o1005_bolt_circle_macro.grbl.nc
+echo "..."
+echo "== out/o0101_stepped_shaft.grbl.nc: GSK G71/G70 expanded for grbl, X as a radius (first 25 lines)"
+head -n 25 out/o0101_stepped_shaft.grbl.nc
 echo "..."
 echo "translated programs are in out/"
 echo "the postproc command is .venv/bin/postproc: '. .venv/bin/activate' puts it on your PATH"

@@ -57,7 +57,11 @@ STROKE = 1.2
 class Backplot:
     """Collects a toolpath's points; ``write_svg``/``write_png`` draw them."""
 
-    def __init__(self, start: dict[str, float]) -> None:
+    def __init__(self, start: dict[str, float], lathe: bool = False) -> None:
+        self.lathe = lathe
+        """Draw the ZX plane of a lathe: Z across, X (a radius, true geometry) up, and mirrored below the
+        axis in the second view; a diameter toolpath (``x_mode``) is halved as it comes."""
+        self.half = False
         self.pos = (start.get("X", 0.0), start.get("Y", 0.0), start.get("Z", 0.0))
         self.xyz = array("d", self.pos)
         self.codes = array("B", [0])
@@ -69,6 +73,8 @@ class Backplot:
         for ev in events:
             if "move" in ev:
                 add(ev)
+            elif ev.get("x_mode") == "diameter":
+                self.half = True
 
     def add(self, ev: dict[str, Any]) -> None:
         """One motion event (other events are ignored)."""
@@ -76,6 +82,8 @@ class Backplot:
         if kind is None:
             return
         x, y, z = self.pos
+        if self.half:
+            ev = {k: (v / 2.0 if k in ("x", "cx") else v) for k, v in ev.items()}
         end = (float(ev.get("x", x)), float(ev.get("y", y)), float(ev.get("z", z)))
         code = RAPID if kind == "rapid" else FEED
         self.moves[code] += 1
@@ -112,6 +120,14 @@ class Backplot:
         def side(i: int) -> tuple[float, float]:
             return right_c + (self.xyz[i] - xc) * scale, cy - (self.xyz[i + 2] - zc) * scale
 
+        if self.lathe:
+            def turning(i: int) -> tuple[float, float]:
+                return left_c + (self.xyz[i + 2] - zc) * scale, cy - (self.xyz[i] - xc) * scale
+
+            def mirrored(i: int) -> tuple[float, float]:
+                return right_c + (self.xyz[i + 2] - zc) * scale, cy + (self.xyz[i] - xc) * scale
+
+            return turning, mirrored, scale
         return plan, side, scale
 
     def polylines(self, kind: int, view: Any) -> Iterable[list[tuple[float, float]]]:
@@ -135,6 +151,9 @@ class Backplot:
 
     def panels(self) -> list[tuple[str, float]]:
         """Title and left edge of each view panel."""
+        if self.lathe:
+            return [("Turning (Z across, X radius up)", MARGIN / 2),
+                    ("Mirrored (X radius down)", WIDTH - MARGIN / 2 - PANEL)]
         return [("Plan (XY)", MARGIN / 2), ("Side (XZ)", WIDTH - MARGIN / 2 - PANEL)]
 
     # -- SVG ---------------------------------------------------------------------------------------

@@ -311,14 +311,13 @@ def cmd_toolpath(args: argparse.Namespace) -> int:
 def cmd_verify(args: argparse.Namespace) -> int:
     from .verify import verify_lines
     setup = _setup(args.machine, args.lib)
-    target_setup = _setup(args.target_machine, args.lib) if args.target_machine else setup
+    target_setup = _setup(args.target_machine, args.lib) if args.target_machine else None  # the same machine
     if args.input == "-" and args.output == "-":
         raise UsageError("verify reads at most one of IN and OUT from standard input")
     with _open_program(args.input) as a, _open_program(args.output) as b:
         report = verify_lines(a, b, file_in=_name(args.input), file_out=_name(args.output), source=args.source,
                               target=args.target, setup=setup, target_setup=target_setup,
-                              tolerance=args.tolerance,
-                              allow_ignored=args.allow_ignored)
+                              tolerance=args.tolerance, allow_ignored=args.allow_ignored)
     print(report.summary())
     return 0 if report.ok else 1
 

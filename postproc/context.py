@@ -23,7 +23,7 @@ class Context:
 
     __slots__ = ("file", "setup", "diagnostics", "state", "dialect", "cycle_words", "on_unsupported",
                  "program_mode", "keep_check", "reader", "stops_before_motion", "run_data",
-                 "point_mix")
+                 "point_mix", "lathe", "diameter", "one_block")
 
     def __init__(self, file: str, setup: MachineSetup, diagnostics: Diagnostics, dialect: str,
                  cycle_words: CycleWords | None = None) -> None:
@@ -53,6 +53,14 @@ class Context:
         self.run_data: dict[str, Any] = {}
         """What a reading step keeps between the blocks of one run besides the modal state (its own key:
         a resolved table, what it has already warned about)."""
+        self.lathe = False
+        """The program is read with lathe meanings (``Dialect.reads_lathe``): G70-G76 lathe cycles, G98/G99
+        feed modes, U/W incremental X/Z, the ZX plane at start."""
+        self.diameter = False
+        """Lathe X and U words are diameters (the set-up's ``xProgramming`` on a dialect that has it)."""
+        self.one_block = False
+        """Lathe cycles G71-G73/G76 are read in their one-block form (the set-up's ``latheCycleFormat`` on
+        a dialect that has it)."""
         self.keep_check: Callable[[list[Block]], str | None] | None = None
         """For 'auto': given the program from its first construct on, the reason it cannot be kept
         symbolically for the target (None: it can)."""

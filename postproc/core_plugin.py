@@ -9,11 +9,13 @@ from .block_rules import check_blocks
 from .machine_functions import drop_foreign_machine_functions
 from .program_end import comment_after_end
 from .control import register_control
+from .cycles.lathe_lowering import expand_lathe_cycles
 from .cycles.lowering import expand_canned_cycles
 from .hookspecs import hookimpl
 from .interp import ProgramSyntax
 from .expr import register_expressions
 from .ir import register_sections
+from .lathe_sections import register_lathe_sections
 from .lower import Lowering
 from .setup import MachineSetup
 from .syntax import Pipeline
@@ -24,9 +26,11 @@ from .xmlio import XFactory
 @hookimpl
 def postproc_register_xml(factory: XFactory) -> None:
     register_sections(factory)
+    register_lathe_sections(factory)
     register_expressions(factory)
     register_control(factory)
-    for cls in (Pipeline, MachineSetup, ModalStateSyntax, ProgramSyntax):
+    from .rs274.lathe_cycles import LatheCycleSyntax
+    for cls in (Pipeline, MachineSetup, ModalStateSyntax, ProgramSyntax, LatheCycleSyntax):
         cls.reg(factory)
     cycles.register(factory)
 
@@ -36,5 +40,6 @@ def postproc_register_xml(factory: XFactory) -> None:
 def postproc_register_lowerings(register: Callable[[Lowering], None]) -> None:
     register(check_blocks)  # first: it sees every expansion before a native target's are dropped
     register(expand_canned_cycles)
+    register(expand_lathe_cycles)
     register(comment_after_end)
     register(drop_foreign_machine_functions)

@@ -177,10 +177,34 @@ class Dialect:
     """How the controller moves through its native canned cycles ('fanuc' or 'rs274', see
     ``postproc.cycles.semantics``): a cycle resolved under other rules is expanded for it."""
 
+    MACHINE_TYPES: ClassVar[frozenset[str]] = frozenset({"mill"})
+    """Machine types the dialect reads and writes ("mill", "lathe"); the set-up's ``machineType`` picks
+    one where it has both, and a lathe-only dialect reads every program as a lathe's."""
+    DIAMETER_PROGRAMMING: ClassVar[bool] = False
+    """Lathe X can be programmed as a diameter (the set-up's ``xProgramming``); without it X is a radius
+    and a diameter program's X is halved for it (``postproc.cycles.lathe_lowering``)."""
+    LATHE_CYCLES: ClassVar[frozenset[str]] = frozenset()
+    """Neutral names of the lathe cycles (G70-G76, G90/G92/G94) the controller runs natively with the
+    Fanuc system A/GSK words; others are expanded into their moves."""
+
+    LATHE_FEED_AT_START: ClassVar[str] = "per_min"
+    """The feed mode a lathe program starts in before it programs one (Fanuc T: per revolution, G99, by
+    its default parameter; GSK 980TDc: per minute, G98)."""
+    LATHE_ONE_BLOCK: ClassVar[bool] = False
+    """The control reads the one-block forms ``G71 P Q U W D F`` and ``G76 X Z I K D F A P`` (Fanuc
+    10/11/15-T) when the set-up's ``latheCycleFormat`` says so; without it every cycle has two blocks."""
+
+    @classmethod
+    def reads_lathe(cls, setup: MachineSetup) -> bool:
+        """Whether a program is read (and written) with lathe meanings under ``setup``."""
+        types = cls.MACHINE_TYPES
+        return "lathe" in types and (setup.input.machine_type == "lathe" or "mill" not in types)
+
     @classmethod
     def capabilities(cls) -> dict[str, object]:
         """The capability table: every UPPER_CASE attribute that describes the controller."""
-        skip = {"NAME", "DESCRIPTION", "READER", "WRITER", "PIPELINE_FILE", "CYCLE_WORDS", "LOWERING"}
+        skip = {"NAME", "DESCRIPTION", "READER", "WRITER", "PIPELINE_FILE", "LATHE_PIPELINE_FILE", "CYCLE_WORDS",
+                "LOWERING"}
         table: dict[str, object] = {}
         for klass in reversed(cls.__mro__):
             for key, value in vars(klass).items():
@@ -212,6 +236,12 @@ class Dialect:
         ctx = Context(file, setup, diagnostics, cls.NAME, cls.CYCLE_WORDS)
         ctx.reader = cls.READER
         ctx.stops_before_motion = cls.STOPS_BEFORE_MOTION
+        ctx.lathe = cls.reads_lathe(setup)
+        ctx.diameter = ctx.lathe and cls.DIAMETER_PROGRAMMING and setup.input.x_programming == "diameter"
+        ctx.one_block = ctx.lathe and cls.LATHE_ONE_BLOCK and setup.input.lathe_cycle_format == "one-block"
+        if ctx.lathe:
+            ctx.state.plane = "ZX"  # a lathe turns in the ZX plane (G18) from the start
+            ctx.state.feed_mode = cls.LATHE_FEED_AT_START
         return ctx
 
 

@@ -22,7 +22,9 @@ def export_toolpath(lines: Iterable[str], out: Any, *, file: str, dialect: str |
     if fmt == "jsonl":
         write_jsonl(events, out, file)
     elif fmt in ("svg", "png"):
-        plot = Backplot(start_position(setup))
+        from .plugins import default_registry
+        reading = default_registry().dialect(dialect) if isinstance(dialect, str) else dialect
+        plot = Backplot(start_position(setup), lathe=reading.reads_lathe(setup))
         plot.add_all(events)
         if fmt == "svg":
             plot.write_svg(out)

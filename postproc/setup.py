@@ -39,6 +39,17 @@ class InputSettings(_Group):
     0.010 mm on IS-B) or calculator-type input (parameter 3401#0 DPI: X10 = 10 mm)."""
     increment_system: Literal["IS-A", "IS-B", "IS-C"] = "IS-B"
     machine_type: Literal["mill", "lathe"] = "mill"
+    """What the G codes mean: a mill never reads lathe meanings (G70-G76 lathe cycles, G98/G99 feed
+    modes, G50 coordinate setting, U/W incremental) and a lathe never reads mill ones."""
+    gcode_system: Literal["A", "B", "C"] = "A"
+    """Fanuc lathe G-code system (parameter 3401#6/#7): A numbers G90/G92/G94 as single cycles and G98/G99
+    as feed modes; B and C renumber them (DIALECTS.md 1.1). Read on lathes only; GSK is always A."""
+    x_programming: Literal["diameter", "radius"] = "diameter"
+    """Lathe X (and U) words as diameters (the default) or radii. Arc I and the depths of G71-G76 are
+    radii either way."""
+    lathe_cycle_format: Literal["two-block", "one-block"] = "two-block"
+    """G71-G73 and G76 as two blocks (0i/30i, GSK) or one block (10/11/15-T: ``G71 P Q U W D F``,
+    ``G76 X Z I K D F A P``)."""
     repeat_address: Literal["K", "L", "K+L"] = "K"
     """Which address counts canned-cycle repeats (0i/30i: K; 15i and older: L)."""
 
@@ -97,6 +108,42 @@ class MachineSettings(_Group):
         bad = set(self.axes) - set("XYZABCUVW")
         if bad or len(set(self.axes)) != len(self.axes):
             raise ValueError(f"axes must be distinct letters from XYZABCUVW, got {self.axes!r}")
+        return self
+
+
+class LatheCycleSettings(_Group):
+    """The data parameters a lathe cycle takes an omitted word from (GSK 980TDc No.051-060, Fanuc
+    5130-5143). A value programmed in a cycle replaces the default for later cycles of the run, as the
+    controller rewrites its parameter. Lengths in mm (an inch program reads them converted), radius values."""
+
+    TAG = "LatheCycles"
+    rough_depth: float = Field(1.0, gt=0)
+    """G71/G72 depth of cut per pass (GSK No.051, Fanuc 5132)."""
+    rough_retract: float = Field(1.0, ge=0)
+    """G71/G72 retract after each pass (GSK No.052, Fanuc 5133)."""
+    pattern_relief_x: float = 1.0
+    """G73 total X relief (GSK No.053, Fanuc 5135)."""
+    pattern_relief_z: float = 1.0
+    """G73 total Z relief (GSK No.054, Fanuc 5136)."""
+    pattern_passes: int = Field(1, ge=1, le=9999)
+    """G73 number of passes (GSK No.055, Fanuc 5137)."""
+    peck_retract: float = Field(1.0, ge=0)
+    """G74/G75 retract per peck (GSK No.056, Fanuc 5139)."""
+    thread_finish_passes: int = Field(1, ge=1, le=99)
+    """G76 finishing passes m (GSK No.057 [?], Fanuc 5142)."""
+    thread_chamfer: int = Field(10, ge=0, le=99)
+    """G76 pull-out chamfer r in 0.1 x lead (GSK No.058 [?], Fanuc 5130)."""
+    thread_angle: int = 60
+    """G76 tool angle a in degrees (GSK No.059 [?], Fanuc 5143)."""
+    thread_min_depth: float = Field(0.1, gt=0)
+    """G76 minimum depth of cut (Fanuc 5140)."""
+    thread_allowance: float = Field(0.05, ge=0)
+    """G76 finishing allowance d (GSK No.060, Fanuc 5141)."""
+
+    @model_validator(mode="after")
+    def _angle_known(self) -> "LatheCycleSettings":
+        if self.thread_angle not in (0, 29, 30, 55, 60, 80):
+            raise ValueError(f"threadAngle must be 0, 29, 30, 55, 60 or 80, got {self.thread_angle}")
         return self
 
 
@@ -183,7 +230,7 @@ class Templates(BaseModel):
 
 
 GROUPS: tuple[type[_Group], ...] = (InputSettings, OutputSettings, CycleSettings, MachineSettings, Limits,
-                                    ControllerSettings)
+                                    ControllerSettings, LatheCycleSettings)
 
 
 class MachineSetup(XmlNode):
@@ -191,14 +238,15 @@ class MachineSetup(XmlNode):
 
     XNAME = "MachineSetup"
     __slots__ = ("name", "dialect", "pipeline", "input", "output", "cycles", "machine", "templates", "source",
-                 "template_lines", "limits", "library", "controller", "machine_codes", "code_calls")
+                 "template_lines", "limits", "library", "controller", "machine_codes", "code_calls", "lathe_cycles")
 
     def __init__(self, name: str = "default", dialect: str | None = None, pipeline: str | None = None,
                  input: InputSettings | None = None, output: OutputSettings | None = None,
                  cycles: CycleSettings | None = None, machine: MachineSettings | None = None,
                  templates: Templates | None = None, source: str | None = None, limits: Limits | None = None,
                  library: list[str] | None = None, controller: ControllerSettings | None = None,
-                 machine_codes: list[MachineCode] | None = None, code_calls: dict[str, str] | None = None) -> None:
+                 machine_codes: list[MachineCode] | None = None, code_calls: dict[str, str] | None = None,
+                 lathe_cycles: LatheCycleSettings | None = None) -> None:
         self.name = name
         self.dialect = dialect
         self.pipeline = pipeline
@@ -212,6 +260,7 @@ class MachineSetup(XmlNode):
         self.controller = controller or ControllerSettings()
         self.machine_codes = machine_codes if machine_codes is not None else []
         """Machine-specific codes the set-up declares (``<MachineCodes>``), over the family's defaults."""
+        self.lathe_cycles = lathe_cycles or LatheCycleSettings()
         self.library = library if library is not None else []
         """Folders searched for subprograms not in the program's file (``<Library path="..."/>``, relative
         to the set-up file's folder; ``--lib DIR`` adds to them)."""
@@ -226,7 +275,7 @@ class MachineSetup(XmlNode):
     def _key(self) -> tuple[Any, ...]:
         return (self.name, self.dialect, self.pipeline, self.input, self.output, self.cycles,
                 self.machine, self.templates, self.limits, tuple(self.library), self.controller,
-                tuple(self.machine_codes), tuple(self.code_calls.items()))
+                tuple(self.machine_codes), tuple(self.code_calls.items()), self.lathe_cycles)
 
     def __repr__(self) -> str:
         return f"MachineSetup(name={self.name!r}, dialect={self.dialect!r})"
@@ -248,7 +297,8 @@ class MachineSetup(XmlNode):
         lines: dict[str, int] = {}
         by_tag = {g.TAG: g for g in GROUPS}
         attr_of = {InputSettings: "input", OutputSettings: "output", CycleSettings: "cycles",
-                   MachineSettings: "machine", Limits: "limits", ControllerSettings: "controller"}
+                   MachineSettings: "machine", Limits: "limits", ControllerSettings: "controller",
+                   LatheCycleSettings: "lathe_cycles"}
         library: list[str] = []
         code_calls: dict[str, str] = {}
         for child in el:
@@ -292,7 +342,8 @@ class MachineSetup(XmlNode):
             el.set("dialect", self.dialect)
         if self.pipeline:
             el.set("pipeline", self.pipeline)
-        for group in (self.input, self.output, self.cycles, self.machine, self.limits, self.controller):
+        for group in (self.input, self.output, self.cycles, self.machine, self.limits, self.controller,
+                      self.lathe_cycles):
             values = group.model_dump(by_alias=True, exclude_defaults=True)
             if values:
                 child = etree.SubElement(el, group.TAG)

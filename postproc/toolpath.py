@@ -37,6 +37,7 @@ from .machine_functions import drop_foreign_machine_functions
 from .program_end import EndTracker, comment_after_end
 from .dialect import Dialect
 from .errors import Diagnostics, Location, PostprocError, ProgramError, UnsupportedError
+from .cycles.lathe_lowering import lathe_tool
 from .event_order import after_motion
 from .geometry import CENTRE_KEYS, PLACES
 from .ir import Block, DataSetting, MachineFunction, Motion, Section
@@ -66,6 +67,9 @@ class ToolpathTarget(Dialect):
     NAME = "toolpath"
     DESCRIPTION = "toolpath simulation (not a dialect)"
     NATIVE_CYCLES = frozenset()
+    MACHINE_TYPES = frozenset({"mill", "lathe"})
+    DIAMETER_PROGRAMMING = True
+    """It reads the program's own X (a diameter stays a diameter: the simulator halves it itself)."""
 
 
 def num(value: float) -> float | int:
@@ -112,7 +116,13 @@ class Simulator:
         self.spindle: str | None = None
         """Spindle direction of the last spindle event (None before the first): a tool change stops a
         turning spindle first, as a tool changer does, and stopping a stopped spindle is no event."""
-        self.lathe = setup.input.machine_type == "lathe"
+        self.lathe = ctx.lathe
+        self.diameter = ctx.diameter
+        """X words are diameters: the position is kept as a radius (true geometry, arcs with radius I) and
+        written as a diameter."""
+        if self.lathe:
+            self.modal.plane = "ZX"
+            self.modal.feed_mode = ctx.state.feed_mode  # the reading dialect's mode at the start
         self.ended = False
         self.end = EndTracker()
         self.live_after_end: list[int] = []
@@ -139,6 +149,8 @@ class Simulator:
             self._tape_or_after_end(block)
             return
         self.current = block
+        if "InProfile" in sections:
+            return  # the controller runs a profile block only through its cycle
         get: Callable[[str], Any] = sections.get
         native = get("NativeCode")
         if native is not None:
@@ -161,7 +173,7 @@ class Simulator:
             s = get("ToolSelect")
             if s is not None:
                 if self.lathe and "ToolChange" not in sections:
-                    emit({"line": line, "event": "tool", "number": s.number})
+                    emit({"line": line, "event": "tool", "number": lathe_tool(s.number)})
             if "ToolChange" in sections:
                 if self.spindle in ("cw", "ccw"):
                     self.spindle_event(line, "stop", emit)
@@ -177,6 +189,10 @@ class Simulator:
                 emit({"line": line, "event": "dwell", "seconds": num(s.seconds)})
         compound = get("CompoundMotion")
         motion = get("Motion")
+        coords = get("CoordinateSet")
+        if coords is not None:
+            for axis, value in coords.axes.items():
+                self._coordinate(block, axis, value)
         if compound is not None:
             if motion is not None and motion.mode is not None:
                 self.motion(block, motion, False, emit)
@@ -318,7 +334,7 @@ class Simulator:
             self.line_move("rapid", self.target(block, m.axes, absolute), line, emit)
             ref = dict(self.pos)
             for axis in m.axes:
-                ref[axis] = 0.0
+                ref[_LATHE_INCREMENTS.get(axis, axis) if self.lathe else axis] = 0.0
             self.line_move("rapid", ref, line, emit)
             return
         if self.feed is None and needs_feed(m):
@@ -327,7 +343,7 @@ class Simulator:
         target = self.target(block, m.axes, absolute or machine, machine)
         if mode == "rapid":
             self.line_move("rapid", target, line, emit)
-        elif mode == "linear":
+        elif mode == "linear" or mode == "thread":
             self.line_move("feed", target, line, emit)
         elif mode in ("cw", "ccw"):
             self.arc_move(block, m, target, emit)
@@ -342,10 +358,20 @@ class Simulator:
         incremental = self.incremental and not absolute
         shift = self.shift if not machine and not incremental else None
         for axis, value in axes.items():
+            if self.lathe and axis in _LATHE_INCREMENTS:
+                real = _LATHE_INCREMENTS[axis]
+                if real not in pos:
+                    raise ProgramError(f"axis {real} is not on this machine (axes {''.join(self.axes)})",
+                                       self._at(block, axis))
+                v = value * self.scale * (0.5 if self.diameter and real == "X" else 1.0)
+                out[real] = out[real] + v
+                continue
             if axis not in pos:
                 raise ProgramError(f"axis {axis} is not on this machine (axes {''.join(self.axes)})",
                                    self._at(block, axis))
             v = value * self.scale if axis in LINEAR_AXES else value
+            if self.diameter and axis == "X":
+                v *= 0.5
             out[axis] = pos[axis] + v if incremental else v + shift.get(axis, 0.0) if shift else v
         return out
 
@@ -368,6 +394,14 @@ class Simulator:
         common = self.offsets.get(0, {})
         self.shift = {a: active.get(a, 0.0) + common.get(a, 0.0) for a in set(active) | set(common)}
 
+    def _coordinate(self, block: Block, axis: str, value: float) -> None:
+        """Coordinate setting: the tool's present point gets ``value`` on ``axis``; nothing moves."""
+        if axis not in self.pos:
+            raise ProgramError(f"axis {axis} is not on this machine (axes {''.join(self.axes)})", self._at(block, axis))
+        v = value * self.scale * (0.5 if self.diameter and axis == "X" else 1.0)
+        self.pos[axis] = v
+        self.rounded[axis] = num(v)
+
     def line_move(self, kind: str, target: dict[str, float], line: int, emit: Callable[[Event], None]) -> None:
         pos = self.pos
         rounded = self.rounded.copy()
@@ -380,6 +414,8 @@ class Simulator:
         ev: Event = {"line": line, "move": kind}
         for axis, key in self.keys:
             ev[key] = rounded[axis]
+        if self.diameter and "x" in ev:
+            ev["x"] = num(target["X"] * 2.0)
         if kind != "rapid":
             self._feed_into(ev)
         self.pos, self.rounded = target, rounded
@@ -418,6 +454,9 @@ class Simulator:
         for axis in ("X", "Y", "Z"):
             if axis in pos:
                 ev[CENTRE_KEYS[axis]] = num(centre[axis])
+        if self.diameter and "x" in ev:
+            ev["x"] = num(target["X"] * 2.0)
+            ev[CENTRE_KEYS["X"]] = num(centre["X"] * 2.0)
         ev["plane"] = plane
         self._feed_into(ev)
         self.pos, self.rounded = target, rounded
@@ -474,6 +513,8 @@ def _setting_text(key: str, section: Any) -> str | None:
     if key == "PathControl":
         return None if section.one_shot else section.mode.replace("_", " ")
     return f"S{section.rpm:g}" if isinstance(section.rpm, (int, float)) else None
+_LATHE_INCREMENTS = {"U": "X", "W": "Z"}
+"""On a lathe, U and W are incremental X and Z."""
 _EVENT_KEYS = frozenset(("ToolSelect", "ToolChange", "SpindleControl", "Coolant", "Dwell", "SpindleOrientation",
                          "ProgramControl", "MachineFunction"))
 
@@ -481,6 +522,8 @@ _EVENT_KEYS = frozenset(("ToolSelect", "ToolChange", "SpindleControl", "Coolant"
 def header(ctx: Context, feed_mode: str | None) -> Event:
     """The first line of a toolpath; keys beyond the fixed three only when they apply."""
     head: Event = {"toolpath": 1, "units": "mm", "dialect": ctx.dialect}
+    if ctx.diameter:
+        head["x_mode"] = "diameter"
     if feed_mode is not None and feed_mode != "per_min":
         head["feed_mode"] = feed_mode
     return head

@@ -11,6 +11,7 @@ mismatch, reported at its first place; after it the two paths no longer line up 
 
 from __future__ import annotations
 
+import copy
 import math
 from dataclasses import dataclass, field
 from itertools import zip_longest
@@ -244,6 +245,11 @@ def compare(events_in: Iterable[Event], events_out: Iterable[Event], *, start_in
     report = Report(tolerance)
     it_in, it_out = iter(events_in), iter(events_out)
     head_in, head_out = next(it_in, {}), next(it_out, {})
+    if head_in.get("x_mode") != head_out.get("x_mode"):
+        # a diameter program and its radius translation: compare both as radii (true geometry)
+        it_in, it_out = _as_radius(it_in, head_in), _as_radius(it_out, head_out)
+        head_in = {k: v for k, v in head_in.items() if k != "x_mode"}
+        head_out = {k: v for k, v in head_out.items() if k != "x_mode"}
     for key in ("units", "x_mode", "feed_mode"):
         if head_in.get(key) != head_out.get(key):
             report.mismatch = f"the toolpath headers differ in {key}: {head_in.get(key)} vs {head_out.get(key)}"
@@ -313,6 +319,18 @@ def compare_settings(report: Report, settings_in: list[tuple[int, str, str]],
 def _values(changes: list[tuple[int, str]], most: int = 4) -> str:
     text = ", ".join(f"{value} (line {line})" for line, value in changes[:most])
     return text + (f", ... {len(changes) - most} more" if len(changes) > most else "")
+def _as_radius(events: Iterator[Event], head: Event) -> Iterator[Event]:
+    """The events of a toolpath whose x is a diameter (``x_mode``), with x and cx as radii."""
+    if head.get("x_mode") != "diameter":
+        yield from events
+        return
+    for ev in events:
+        if "x" in ev or "cx" in ev:
+            ev = dict(ev)
+            for key in ("x", "cx"):
+                if key in ev:
+                    ev[key] = ev[key] / 2.0
+        yield ev
 
 
 def _differ(a: Move | Event | None, b: Move | Event | None, report: Report) -> str | None:
@@ -364,7 +382,8 @@ def verify_lines(lines_in: Iterable[str], lines_out: Iterable[str], *, file_in: 
     if not math.isfinite(tolerance) or tolerance < 0:
         raise UsageError(f"the tolerance must be a finite number of at least 0, got {tolerance:g}")
     setup = setup or MachineSetup()
-    target_setup = target_setup or setup
+    if target_setup is None:
+        target_setup = _same_machine(setup, source, registry)
     diag_in, diag_out = Diagnostics(), Diagnostics()
     after_in: list[int] = []
     after_out: list[int] = []
@@ -384,6 +403,18 @@ def verify_lines(lines_in: Iterable[str], lines_out: Iterable[str], *, file_in: 
     if errors:
         raise ErrorList(errors)
     return report
+
+
+def _same_machine(setup: MachineSetup, source: str, registry: Registry | None) -> MachineSetup:
+    """The target runs on the source's machine: a program a lathe-only dialect read (GSK) is a lathe's
+    on the target's side too, whatever type the set-up names."""
+    from .plugins import default_registry
+    reading = (registry or default_registry()).dialect(source)
+    if setup.input.machine_type == "lathe" or not reading.reads_lathe(setup):
+        return setup
+    lathe = copy.copy(setup)
+    lathe.input = setup.input.model_copy(update={"machine_type": "lathe"})
+    return lathe
 
 
 def verify_files(in_path: str, out_path: str, *, source: str, target: str,

@@ -17,7 +17,10 @@ from postproc.api import translate
 from postproc.dialect import Dialect
 
 REGISTRY = default_registry()
-WRITERS = sorted(name for name, cls in REGISTRY.dialects.items() if cls.WRITER is not None)
+WRITERS = sorted(name for name, cls in REGISTRY.dialects.items()
+                 if cls.WRITER is not None and "mill" in cls.MACHINE_TYPES)
+"""Writers of milling programs: the probes below are milling blocks (a lathe-only control such as GSK
+980TDc refuses a milling program from its first block; ``tests/test_lathe_*`` probe the lathes)."""
 
 PROBES = {
     # capability: a Fanuc block that needs it (after a prologue that positions the tool)

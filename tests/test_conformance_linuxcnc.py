@@ -10,7 +10,7 @@ compared move by move, within 1.5e-4 program units (the ``expected`` files print
   G18/G19 tapping feeds are wrong, so those feed moves are not trusted; the rapids still check
   positioning, the rise to R and the return to the clear level.
 * M98/M99: Fanuc-style numbered subprograms (``O1`` ... ``M99`` after the main program, ``M98 P1 L3``,
-  ``L0``, ``#1`` shared with the caller): every move. The lathe cases are out.
+  ``L0``, ``#1`` shared with the caller): every move. The lathe cases are out (``SKIPPED`` says why).
 """
 
 from __future__ import annotations
@@ -31,11 +31,10 @@ MM_PER_INCH = 25.4
 TOLERANCE = 1.5e-4
 """In program units (the cases are inch programs: converted to mm before comparing)."""
 
-SKIPPED = {
-    "g71": "lathe cycles not modelled yet",
-    "g72": "lathe cycles not modelled yet",
-    "g76": "lathe cycles not modelled yet",
-}
+_G7X = ("LinuxCNC's own lathe cycles (G70/G71.x/G72.x with an O-word profile and D/I/R words, its G76 "
+        "P/I/J/K/R/Q/H/E/L) are not read by the linuxcnc dialect; the Fanuc T/GSK cycles are modelled, and "
+        "tests/test_turning_* compare their geometry with these cases' moves where the cut is the same")
+SKIPPED = {"g71": _G7X, "g72": _G7X, "g76": _G7X}
 RAPIDS_ONLY = ("g84-g18", "g84-g19")
 """Cases whose tapping feeds are wrong upstream (conformance README: G84 in G18/G19): rapids only."""
 

@@ -23,6 +23,8 @@ from postproc.plugins import default_registry
 from postproc.setup import InputSettings, MachineSetup, OutputSettings
 
 ROOT = Path(__file__).resolve().parents[1]
+LATHE_EXAMPLES = {"gsk": ("gsk", "gsk_980tdc.xml"), "fanuc-lathe": ("fanuc", "fanuc_0i_tf.xml")}
+"""Example folders read by another dialect or machine type than Fanuc milling: (dialect, set-up)."""
 LOSSLESS = sorted(p for p in ROOT.glob("examples/**/*.nc") if p.parent.name != "isg") + sorted((ROOT / "tests/golden/fanuc/roundtrip").glob("*.nc"))
 NORMALIZE = ROOT / "tests/golden/fanuc/normalize"
 
@@ -46,7 +48,9 @@ def _translate(text: str, setup: MachineSetup | None = None, file: str = "t.nc")
 @pytest.mark.parametrize("path", LOSSLESS, ids=_id)
 def test_fanuc_to_fanuc_is_byte_for_byte(cli, tmp_path, path):
     out = tmp_path / path.name
-    result = cli("translate", path, "--from", "fanuc", "--to", "fanuc", "-o", out)
+    dialect, setup = LATHE_EXAMPLES.get(path.parent.name, ("fanuc", None))
+    machine = ["--machine", ROOT / "examples/setups" / setup] if setup else []
+    result = cli("translate", path, "--from", dialect, "--to", dialect, "-o", out, *machine)
     assert result.status == 0, result.err
     assert result.err == EXPECTED_WARNINGS.get(path.name, "").format(path=path)
     assert out.read_bytes() == path.read_bytes()

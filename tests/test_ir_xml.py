@@ -25,7 +25,7 @@ from postproc.ir import (
 )
 from postproc.plugins import default_registry
 from postproc.program_xml import load_program
-from postproc.setup import InputSettings, MachineSettings, MachineSetup, OutputSettings, CycleSettings, Templates
+from postproc.setup import load_setup, LatheCycleSettings, InputSettings, MachineSettings, MachineSetup, OutputSettings, CycleSettings, Templates
 from postproc.xmlio import XFactory, parse_xml_bytes, to_bytes
 from tests.support.control_samples import CONTROL_SAMPLES
 
@@ -129,6 +129,15 @@ SAMPLES: dict[str, list[tuple[Builder, str]]] = {
          "  <Templates>\n    <Header>(PROGRAM {{ program }})\n(FOR {{ machine }})</Header>\n    <Footer></Footer>\n"
          "  </Templates>\n</MachineSetup>"),
         (lambda c: MachineSetup(), '<MachineSetup name="default"/>'),
+        (lambda c: MachineSetup(
+            name="Lathe", dialect="gsk",
+            input=InputSettings(machine_type="lathe", gcode_system="B", x_programming="radius",
+                                lathe_cycle_format="one-block"),
+            lathe_cycles=LatheCycleSettings(rough_depth=1.5, rough_retract=0.5, pattern_passes=3, thread_angle=55)),
+         '<MachineSetup name="Lathe" dialect="gsk">\n'
+         '  <Input machineType="lathe" gcodeSystem="B" xProgramming="radius" latheCycleFormat="one-block"/>\n'
+         '  <LatheCycles roughDepth="1.5" roughRetract="0.5" patternPasses="3" threadAngle="55"/>\n'
+         '</MachineSetup>'),
     ],
     "Pipeline": [(lambda c: c["Pipeline"]("fanuc", [c["FanucBlockSyntax"](), c["ModalStateSyntax"]()]),
                   '<Pipeline dialect="fanuc">\n  <FanucBlockSyntax/>\n  <ModalStateSyntax/>\n</Pipeline>'),
@@ -152,6 +161,16 @@ SAMPLES: dict[str, list[tuple[Builder, str]]] = {
          '<CannedCycleResolveSyntax semantics="rs274">\n  <DrillingSyntax/>\n  <TappingSyntax/>\n'
          "</CannedCycleResolveSyntax>"),
     ],
+    "SpindleMode": [(lambda c: c["SpindleMode"]("css"), '<SpindleMode mode="css"/>')],
+    "SpindleClamp": [(lambda c: c["SpindleClamp"](2500.0), '<SpindleClamp rpm="2500.0"/>')],
+    "CoordinateSet": [(lambda c: c["CoordinateSet"]({"X": 200.0, "Z": 150.0}), '<CoordinateSet X="200.0" Z="150.0"/>')],
+    "InProfile": [(lambda c: c["InProfile"](12), '<InProfile cycle="12"/>')],
+    "LatheCycle": [
+        (lambda c: c["LatheCycle"]("turn_rough", "second", {"ns": 10, "nf": 20, "allow_x": 0.5, "allow_z": 0.1}),
+         '<LatheCycle kind="turn_rough" form="second">\n  <Params ns="10" nf="20" allow_x="0.5" allow_z="0.1"/>\n'
+         '</LatheCycle>'),
+        (lambda c: c["LatheCycle"]("turn_finish", "single"), '<LatheCycle kind="turn_finish" form="single"/>'),
+    ],
     "Num": [(lambda c: Num(-2.5), '<Num value="-2.5"/>')],
     "Var": [(lambda c: Var(Num(1.0)), '<Var>\n  <Num value="1.0"/>\n</Var>'),
             (lambda c: Var(name="_global"), '<Var name="_global"/>')],
@@ -161,7 +180,8 @@ SAMPLES: dict[str, list[tuple[Builder, str]]] = {
     "Func": [(lambda c: Func("atan2", [Num(1.0), Num(2.0)]),
               '<Func name="atan2">\n  <Num value="1.0"/>\n  <Num value="2.0"/>\n</Func>')],
     **{name: _empty(name) for name in (
-        "FanucBlockSyntax", "FanucProgramSyntax", "ModalStateSyntax", "GrblBlockSyntax", "NgcBlockSyntax",
+        "FanucBlockSyntax", "FanucLatheBlockSyntax", "GskBlockSyntax", "LatheCycleSyntax", "FanucProgramSyntax",
+        "ModalStateSyntax", "GrblBlockSyntax", "NgcBlockSyntax",
         "LinuxcncProgramSyntax", "IsgBlockSyntax", "IsgProgramSyntax", "DrillingSyntax",
         "PeckDrillingSyntax", "TappingSyntax", "BoringSyntax", "FineBoringSyntax", "BackBoringSyntax",
         "ManualBoringSyntax",
@@ -282,12 +302,15 @@ EXAMPLES = sorted(ROOT.glob("examples/**/*.nc")) + [
 @pytest.mark.parametrize("path", EXAMPLES, ids=lambda p: str(p.relative_to(ROOT)))
 def test_ir_command_output_loads_back_to_the_read_blocks(cli, tmp_path, path):
     out = tmp_path / "ir.xml"
-    name = "isg" if path.parent.name == "isg" else "fanuc"  # examples/<dialect>/
-    result = cli("ir", path, "--dialect", name, "-o", out)
+    name, setup_file = {"gsk": ("gsk", "gsk_980tdc.xml"), "fanuc-lathe": ("fanuc", "fanuc_0i_tf.xml"),
+                        "isg": ("isg", None)}.get(path.parent.name, ("fanuc", None))  # examples/<dialect>/
+    machine = ["--machine", ROOT / "examples/setups" / setup_file] if setup_file else []
+    result = cli("ir", path, "--dialect", name, "-o", out, *machine)
     assert result.status == 0, result.err
     dialect, loaded = load_program(out)
+    setup = load_setup(ROOT / "examples/setups" / setup_file) if setup_file else None
     with open(path, encoding="utf-8", errors="surrogateescape", newline="") as src:
-        expected = read_program(src, file=str(path), dialect=name)
+        expected = read_program(src, file=str(path), dialect=name, setup=setup)
     assert dialect == name
     assert len(loaded) == len(expected)
     for got, want in zip(loaded, expected):

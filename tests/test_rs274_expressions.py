@@ -224,6 +224,12 @@ def test_fanuc_round_trip(tree: Expr) -> None:
     _round_trip(FANUC_SPELLING, tree, Vacancy.FANUC)
 
 
+def test_a_negated_one_argument_atan_divided_keeps_its_meaning() -> None:
+    """Found by the round trip: ``-ATAN[0.]/[-0.001]`` read back as the two-argument ATAN."""
+    _round_trip(FANUC_SPELLING, Binary("div", Unary("neg", Func("atan_360", [Num(0.0)])), Num(-0.001)),
+                Vacancy.FANUC)
+
+
 @settings(max_examples=400, suppress_health_check=[HealthCheck.too_slow])
 @given(trees(LINUXCNC_SPELLING))
 def test_linuxcnc_round_trip(tree: Expr) -> None:

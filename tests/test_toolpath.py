@@ -369,7 +369,9 @@ def test_an_unresolved_cycle_is_unsupported() -> None:
 
 def test_lathe_tool_word_indexes_the_turret() -> None:
     setup = MachineSetup(input=InputSettings(machine_type="lathe"))
-    assert_events(body("G21\nT3", setup), [{"line": 2, "event": "tool", "number": 3}])
+    events = run("G21\nT3", setup)
+    assert events[0] == {**HEADER, "x_mode": "diameter"}  # a Fanuc T programs X as a diameter
+    assert_events(events[1:], [{"line": 2, "event": "tool", "number": 3}])
 
 
 def test_fanuc_reads_f_in_a_unit_changing_block_in_the_new_units() -> None:

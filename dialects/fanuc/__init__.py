@@ -1,10 +1,14 @@
-"""Fanuc 0i/30i milling dialect: reader, writer, reading pipeline and capability table."""
+"""Fanuc 0i/30i dialect, milling (M) and turning (T): reader, writer, reading pipelines and capability
+table. The set-up's ``machineType`` picks the machine's code table and pipeline (``fanuc.xml`` or
+``fanuc_lathe.xml``), its ``gcodeSystem`` the lathe's table (A, B or C)."""
 
 from __future__ import annotations
 
 from typing import Callable
 
 from postproc.dialect import Dialect
+from postproc.setup import MachineSetup
+from postproc.syntax import Pipeline
 from postproc.hookspecs import hookimpl
 from postproc.rs274.cycle_words import rs274_cycle_words
 from postproc.rs274.order_of_execution import stops_before_motion
@@ -13,6 +17,7 @@ from postproc.xmlio import XFactory
 from .codes import CODES
 
 from .block_syntax import FanucBlockSyntax
+from .lathe_block_syntax import FanucLatheBlockSyntax
 from .program import FanucProgramSyntax
 from .reader import FanucReader
 from .writer import FanucWriter
@@ -38,9 +43,32 @@ class Fanuc(Dialect):
     """Machine builders' codes (``machine_codes``) pass verbatim between Fanuc-family controls."""
     PROGRAMS = True
     """Custom Macro B variables, expressions, IF/GOTO, WHILE, M98/G65 subprograms."""
+    MACHINE_TYPES = frozenset({"mill", "lathe"})
+    """Fanuc M and Fanuc T (the set-up's ``machineType``; mill when it says nothing)."""
+    DIAMETER_PROGRAMMING = True
+    """Fanuc T programs X as a diameter (or a radius: the set-up's ``xProgramming``)."""
+    LATHE_CYCLES = frozenset(("turn_finish", "turn_rough", "face_rough", "pattern_repeat", "face_peck", "groove",
+                              "thread_multi", "turn_single", "thread_single", "face_single"))
+    """G70-G76 and the single cycles (G90/G92/G94 in system A, renumbered in B and C)."""
+    LATHE_FEED_AT_START = "per_rev"
+    """Fanuc T starts in G99 (feed per revolution; parameter 3402#4 FPM = 0, the default)."""
+    LATHE_ONE_BLOCK = True
+    """10/11/15-T read ``G71 P Q U W D F`` and ``G76 X Z I K D F A P`` (the set-up's ``latheCycleFormat``)."""
+    LATHE_PIPELINE_FILE = "fanuc_lathe.xml"
     LOWERING = (stops_before_motion,)
     """A spindle stop or coolant off that the source made before its block's motion goes in a block of
     its own before it (Fanuc makes them after the motion)."""
+
+    @classmethod
+    def pipeline(cls, setup: MachineSetup) -> Pipeline:
+        """The lathe pipeline (profile look-ahead, lathe cycles) for a lathe set-up, else the milling one."""
+        if setup.pipeline is None and cls.reads_lathe(setup):
+            from importlib import resources
+            from pathlib import Path
+            from postproc.syntax import load_pipeline
+            with resources.as_file(resources.files(__name__) / cls.LATHE_PIPELINE_FILE) as path:
+                return load_pipeline(Path(path))
+        return super().pipeline(setup)
 
 
 @hookimpl
@@ -51,4 +79,5 @@ def postproc_register_dialects(register: Callable[[type], None]) -> None:
 @hookimpl
 def postproc_register_xml(factory: XFactory) -> None:
     FanucBlockSyntax.reg(factory)
+    FanucLatheBlockSyntax.reg(factory)
     FanucProgramSyntax.reg(factory)

@@ -20,16 +20,18 @@ from postproc.ir import Block, Section
 from postproc.rs274.codes import CodeTable
 from postproc.rs274.expressions import FANUC_SPELLING, ExprSpelling, spell_word_value
 from postproc.rs274.macro_b import spell_statement_fanuc
-from postproc.rs274.writer import WordWriter
+from postproc.rs274.lathe_writer import LatheWordWriter
 
 from .codes import CODES
+from .lathe_codes import LATHE_CODES
 from .macro import LOCAL_LETTERS
 
 
 _WATCHED = frozenset((CONTROL, "ProgramStart", "ProgramControl"))
 """Sections ``FanucWriter.write_block`` looks at (subprogram starts and ends, program numbers and ends)."""
 
-class FanucWriter(WordWriter):
+
+class FanucWriter(LatheWordWriter):
     DIALECT: ClassVar[str] = "fanuc"
     CODES: ClassVar[CodeTable] = CODES
     DWELL_WORD: ClassVar[str] = "X"
@@ -60,7 +62,7 @@ class FanucWriter(WordWriter):
 
     def write_block(self, block: Block) -> str | None:
         if self.capture is None and _WATCHED.isdisjoint(block.sections):
-            return WordWriter.write_block(self, block)  # the common block: nothing to number or capture
+            return LatheWordWriter.write_block(self, block)  # the common block: nothing to number or capture
         control = block.sections.get(CONTROL)
         start = block.sections.get("ProgramStart")
         if start is not None and getattr(start, "number", None) is not None:
@@ -123,6 +125,12 @@ class FanucWriter(WordWriter):
             raise UnsupportedError("named subprograms need the main program's end (M02/M30) before them, and "
                                    "each its own end")
         return super().finish() + "".join(self.subprograms)
+
+    def table(self) -> CodeTable:
+        """The lathe table of the set-up's G-code system on a lathe, else the milling table."""
+        if self.ctx.lathe:
+            return LATHE_CODES[self.ctx.setup.input.gcode_system]
+        return self.CODES
 
     def statement_words(self, section: Section, block: Block) -> list[str]:
         """``#1=..``, ``IF``/``GOTO``/``WHILE``/``END`` through ``spell_statement_fanuc``; calls as

@@ -74,6 +74,11 @@ class WordBlockSyntax(Syntax):
     """A number without a decimal point is in program units whatever the set-up's ``Input`` says
     (DIN 66025 controls such as ISG: ``X10`` is 10 mm), instead of least input increments."""
 
+    def table(self, ctx: Context) -> CodeTable:
+        """The code table a program is read with (a dialect with one table per machine type or G-code
+        system picks it from the set-up here)."""
+        return self.CODES
+
     def build(self, block: Block, ctx: Context) -> None:
         words = block.words
         if not words:
@@ -96,7 +101,7 @@ class WordBlockSyntax(Syntax):
             up = _UPPER[letter]
             if up == "G":
                 key = g_key(num)
-                if key not in self.CODES.g and ("G", key) in self.machine_codes(ctx):
+                if key not in self.table(ctx).g and ("G", key) in self.machine_codes(ctx):
                     machine_g.append(num)
                 else:
                     self._g_code(ctx, block, num, codes, natives, key)
@@ -221,9 +226,10 @@ class WordBlockSyntax(Syntax):
         """Read G``num`` (``key``: its ``g_key`` when the caller has it) into ``codes`` or ``natives``."""
         if key is None:
             key = g_key(num)
-        entry = self.CODES.g.get(key)
+        table = self.table(ctx)
+        entry = table.g.get(key)
         if entry is None:
-            if key in self.CODES.native_g:
+            if key in table.native_g:
                 natives.append(key)
                 return
             raise ParseError(f"unknown G code G{num}", ctx.at(block, col_of_word(block, "G", num)))
@@ -243,7 +249,7 @@ class WordBlockSyntax(Syntax):
     def _native(self, block: Block, ctx: Context, natives: list[str], raw: dict[str, str]) -> None:
         """Keep a block with a code the IR does not model verbatim, tagged with its meaning."""
         key = natives[0]
-        what = f"G{key} ({self.CODES.native_g[key]})"
+        what = f"G{key} ({self.table(ctx).native_g[key]})"
         block.add(NativeCode(self.DIALECT, what, block.text or ""))
         for up, num in raw.items():
             if up not in block.values:
@@ -257,7 +263,7 @@ class WordBlockSyntax(Syntax):
         at = ctx.at(block, col_of_word(block, "G", number))
         ell = _index(values.get("L"))
         table = None if ell is None else self.DATA_TABLES.get(ell)
-        native = f"G{number} ({self.CODES.native_g[DATA_KEY]})"
+        native = f"G{number} ({self.table(ctx).native_g[DATA_KEY]})"
         if table is None:
             block.add(NativeCode(self.DIALECT, native, block.text or ""))
             return False
@@ -427,7 +433,7 @@ class WordBlockSyntax(Syntax):
         """M codes -> sections, through the code table; dialects of the family override ``unknown_m``
         and ``orient`` where they differ."""
         seen: dict[str, str] = {}
-        table = self.CODES.m
+        table = self.table(ctx).m
         for number, num in mcodes:
             entry = table.get(number)
             if entry is None:
@@ -464,7 +470,7 @@ class WordBlockSyntax(Syntax):
     def unknown_m(self, block: Block, ctx: Context, number: int, num: str) -> str | None:
         """What an M code outside the table is when the dialect keeps it as native code (a description),
         or None: a machine builder's code (``machine_m``)."""
-        native = self.CODES.native_m.get(number)
+        native = self.table(ctx).native_m.get(number)
         return None if native is None else f"M{num} ({native})"
 
     def machine_m(self, block: Block, ctx: Context, number: int, num: str, values: dict[str, Any],

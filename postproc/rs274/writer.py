@@ -27,9 +27,10 @@ from ..dialect import Dialect, Writer
 
 SECTION_ORDER = (
     "BlockDelete", "Sequence", "Assign", "Control", "MachineCoordinates", "PathControl", "Plane", "Units", "DistanceMode",
-    "DataSetting", "WorkOffset", "FeedMode", "CutterCompensation", "ToolLengthOffset", "ReturnLevel", "CycleCancel",
-    "Dwell", "Motion", "CannedCycle", "Feed", "SpindleSpeed", "ToolSelect", "ToolChange", "SpindleControl",
-    "SpindleOrientation", "Coolant", "MachineFunction", "ProgramControl", "NativeCode", "Comments",
+    "DataSetting", "WorkOffset", "FeedMode", "SpindleMode", "CutterCompensation", "ToolLengthOffset", "ReturnLevel",
+    "CycleCancel", "Dwell", "CoordinateSet", "Motion", "CannedCycle", "LatheCycle", "Feed", "SpindleClamp",
+    "SpindleSpeed", "ToolSelect", "ToolChange", "SpindleControl", "SpindleOrientation", "Coolant", "MachineFunction",
+    "ProgramControl", "NativeCode", "Comments",
 )
 """Word order of a generated block; sections that only annotate are skipped by ``IGNORED``."""
 
@@ -71,11 +72,17 @@ class WordWriter(Writer):
         self.decimals = out.decimals
         self.inch_decimals = out.inch_decimals
         self.copy_ok = source_dialect == self.DIALECT and not self.normalize and not self.renumber
+        self.codes = self.table()
+        """The code table written (a dialect with one per machine type picks it from the context)."""
         self.modal = ModalState()
         """What the written program has in force so far (units, distance mode, feed, plane, spindle...)."""
         self.carry: dict[str, float] = {}
         """Axis -> where the source program is minus where the written one is (program units): what
         rounding left behind, added to the next incremental word so the sum of increments stays exact."""
+
+    def table(self) -> CodeTable:
+        """The code table to write with; the dialect's ``CODES`` unless it has one per machine type."""
+        return self.CODES
 
     # -- numbers -----------------------------------------------------------------------------------
     def number(self, value: float) -> str:
@@ -332,7 +339,7 @@ class WordWriter(Writer):
 
     def code(self, kind: str, arg: object, what: str, block: Block) -> str:
         """The dialect's spelling of ``(kind, arg)``; an ``UnsupportedError`` naming ``what`` without one."""
-        code = self.CODES.spell(kind, arg)
+        code = self.codes.spell(kind, arg)
         if code is None:
             self.unsupported(what, block)
         return code
@@ -510,6 +517,13 @@ class WordWriter(Writer):
             return ["F" + self.expression(value, block)]
         self.modal.feed = value
         return ["F" + self.number(value)]
+
+    def spindle_mode_words(self, s: Any, block: Block) -> list[str]:
+        """Constant surface speed or rpm; a control without the choice runs rpm only, so rpm needs no word."""
+        code = self.codes.spell("spindle_mode", s.mode)
+        if code is None and s.mode == "rpm":
+            return []
+        return self._code("spindle_mode", s.mode, "constant surface speed", block)
 
     def spindle_speed_words(self, s: Any, block: Block) -> list[str]:
         rpm = s.rpm

@@ -22,7 +22,9 @@ from postproc.state import MM_PER_INCH, PLANE_AXES, changes_nothing
 from postproc.context import Context
 from postproc.syntax import Syntax
 
-_MODAL_MOTION = frozenset(("rapid", "linear", "cw", "ccw"))
+_MODAL_MOTION = frozenset(("rapid", "linear", "cw", "ccw", "thread"))
+LATHE_INCREMENTS = {"U": "X", "W": "Z"}
+"""On a lathe, U and W are incremental X and Z whatever the distance mode (Fanuc T system A, GSK)."""
 
 
 class ModalStateSyntax(Syntax):
@@ -51,6 +53,9 @@ class ModalStateSyntax(Syntax):
         if mode == "cw" or mode == "ccw":
             _check_arc(block, ctx, motion)  # whatever else the block says: the simulator checks every arc
         pos = state.position
+        if ctx.lathe and ("U" in motion.axes or "W" in motion.axes):
+            _lathe_move(ctx, motion)
+            return
         if mode in ("home", "home2") or "MachineCoordinates" in block.sections:
             for axis in motion.axes:
                 pos[axis] = None
@@ -65,6 +70,25 @@ class ModalStateSyntax(Syntax):
             for axis, value in motion.axes.items():
                 if isinstance(value, Expr):
                     pos[axis] = None  # computed: known only when the program runs
+
+
+def _lathe_move(ctx: Context, motion: Motion) -> None:
+    """A lathe move with U/W words: each is an increment of X/Z, beside absolute X/Z words."""
+    pos = ctx.state.position
+    homing = motion.mode in ("home", "home2")
+    for axis, value in motion.axes.items():
+        target = LATHE_INCREMENTS.get(axis)
+        if homing:
+            pos[target or axis] = None
+        elif target is None:
+            if ctx.state.distance == "incremental":
+                old = pos.get(axis)
+                pos[axis] = None if old is None or isinstance(value, Expr) else old + value
+            else:
+                pos[axis] = None if isinstance(value, Expr) else value
+        else:
+            old = pos.get(target)
+            pos[target] = None if old is None or isinstance(value, Expr) else old + value
 
 
 def _check_arc(block: Block, ctx: Context, motion: Motion) -> None:
@@ -83,8 +107,10 @@ def _check_arc(block: Block, ctx: Context, motion: Motion) -> None:
     if state.symbolic and any(isinstance(v, Expr) for v in (*axes.values(), *(center or {}).values(), radius)):
         return
     incremental = state.distance == "incremental"
+    lathe = ctx.lathe
     if radius is not None and not any(
-            a in axes and (not incremental or axes[a] != 0.0) for a in (a1, a2)):
+            a in axes and (not incremental or axes[a] != 0.0) for a in (a1, a2)) \
+            and not (lathe and any(axes.get(a, 0.0) != 0.0 for a in ("U", "W"))):
         # no end point in the plane: an R arc that ends where it starts, wherever that is
         _refuse(block, ctx, motion, ArcError("a full circle cannot be programmed with R (use I/J/K)", "R"))
     position = state.position
@@ -94,6 +120,17 @@ def _check_arc(block: Block, ctx: Context, motion: Motion) -> None:
     e1, e2 = axes.get(a1), axes.get(a2)
     e1 = s1 if e1 is None else s1 + e1 if incremental else e1
     e2 = s2 if e2 is None else s2 + e2 if incremental else e2
+    if lathe:  # U/W: incremental X/Z beside the absolute words
+        step1, step2 = axes.get(_INCREMENT_OF.get(a1, "")), axes.get(_INCREMENT_OF.get(a2, ""))
+        if step1 is not None:
+            e1 += step1
+        if step2 is not None:
+            e2 += step2
+        if ctx.diameter:  # X words are diameters, the centre offset I a radius
+            if a1 == "X":
+                s1, e1 = s1 / 2.0, e1 / 2.0
+            elif a2 == "X":
+                s2, e2 = s2 / 2.0, e2 / 2.0
     if state.units == "inch":
         s1, s2, e1, e2 = s1 * MM_PER_INCH, s2 * MM_PER_INCH, e1 * MM_PER_INCH, e2 * MM_PER_INCH
         scale = MM_PER_INCH
@@ -120,6 +157,7 @@ def _check_arc(block: Block, ctx: Context, motion: Motion) -> None:
 _SMALLEST = 10.0 ** -PLACES
 """Below this a radius or a half chord is zero (``postproc.block_rules.arc_centre`` uses the same)."""
 _CENTRE_LETTERS = {"X": "I", "Y": "J", "Z": "K"}
+_INCREMENT_OF = {"X": "U", "Z": "W"}
 
 
 def _refuse(block: Block, ctx: Context, motion: Motion, err: ArcError) -> NoReturn:

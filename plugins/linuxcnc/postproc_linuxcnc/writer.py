@@ -96,8 +96,18 @@ class LinuxcncWriter(WordWriter):
         if s.mode != "off" and self._cutter_on:
             self.unsupported(f"cutter compensation {s.mode} while compensation is on (rs274 needs G40 first: "
                              "\"Cannot turn cutter radius comp on when on\")", block)
+        plane = block.sections.get("Plane")
+        if s.mode != "off" and (plane.plane if plane is not None else self.modal.plane) == "YZ":  # type: ignore[attr-defined]
+            self.unsupported(f"cutter compensation {s.mode} in the YZ plane (rs274: \"Cutter radius compensation "
+                             "allowed only in XY, XZ planes\")", block)
         self._cutter_on = s.mode != "off"
         return super().cutter_compensation_words(s, block)
+
+    def plane_words(self, s: Any, block: Block) -> list[str]:
+        if self._cutter_on and s.plane != self.modal.plane:
+            self.unsupported(f"a change to the {s.plane} plane with cutter compensation on (rs274: \"Cannot change "
+                             "planes with cutter radius compensation on\")", block)
+        return super().plane_words(s, block)
 
     def motion_words(self, s: Any, block: Block) -> list[str]:
         if s.mode in ("home", "home2") and self._cutter_on and "CutterCompensation" not in block.sections:

@@ -1,0 +1,54 @@
+"""GSK 980TDc lathe dialect (G-code system A numbering): reader, writer, reading pipeline, capabilities.
+
+Built in, and registered through the ``postproc`` entry points like any plugin; it shares the RS274
+family's lathe base (``postproc.rs274.lathe_*``) with Fanuc T. Every program is a lathe's: X is a
+diameter (or a radius per the set-up's ``xProgramming``), U/W are incremental, G50 sets coordinates or
+clamps the spindle, G98/G99 are feed per minute/revolution, and G70-G76 and G90/G92/G94 are lathe cycles
+whose omitted words take the data parameters of the set-up's ``<LatheCycles>`` (No.051-060).
+GSK's macro language (``G65 H``) is kept verbatim, not executed.
+"""
+
+from __future__ import annotations
+
+from typing import Callable
+
+from postproc.dialect import Dialect
+from postproc.hookspecs import hookimpl
+from postproc.xmlio import XFactory
+
+from .block_syntax import GskBlockSyntax
+from .reader import GskReader
+from .writer import GskWriter
+
+
+class Gsk(Dialect):
+    NAME = "gsk"
+    DESCRIPTION = "GSK 980TDc lathe (system A: G71-G76, G90/G92/G94, U/W, G50, G98/G99)"
+    READER = GskReader
+    WRITER = GskWriter
+    PIPELINE_FILE = "gsk.xml"
+    MACHINE_TYPES = frozenset({"lathe"})
+    """A lathe control only: every program is read with lathe meanings, whatever the set-up says."""
+    DIAMETER_PROGRAMMING = True
+    """X is a diameter (the set-up's ``xProgramming`` may say radius)."""
+    LATHE_CYCLES = frozenset(("turn_finish", "turn_rough", "face_rough", "pattern_repeat", "face_peck", "groove",
+                              "thread_multi", "turn_single", "thread_single", "face_single"))
+    """G70-G76, G90, G92, G94."""
+    LATHE_FEED_AT_START = "per_min"
+    """The 980TDc starts in G98 (feed per minute)."""
+    SPINDLE_ORIENTATION = False
+    """No M19 on the 980TDc."""
+    TOOL_LENGTH_OFFSET = False
+    """Tool offsets come with T (T0101), not G43 H."""
+    TOOL_CHANGER = False
+    """A turret indexed by T; no M06."""
+
+
+@hookimpl
+def postproc_register_dialects(register: Callable[[type], None]) -> None:
+    register(Gsk)
+
+
+@hookimpl
+def postproc_register_xml(factory: XFactory) -> None:
+    GskBlockSyntax.reg(factory)

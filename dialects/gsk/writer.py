@@ -1,0 +1,22 @@
+"""GSK writer: the family's lathe writer spelling every code from GSK's table; every lathe-cycle word is
+written, defaults included (an omitted word would take the machine's data parameter, No.051-060)."""
+
+from __future__ import annotations
+
+from typing import ClassVar
+
+from postproc.rs274.codes import CodeTable
+from postproc.rs274.lathe_writer import LatheWordWriter
+
+from .codes import CODES
+
+
+class GskWriter(LatheWordWriter):
+    DIALECT: ClassVar[str] = "gsk"
+    CODES: ClassVar[CodeTable] = CODES
+    DWELL_WORD: ClassVar[str] = "X"
+    MACHINE_MOVES: ClassVar[frozenset[str]] = frozenset(("rapid",))
+    EXPLICIT_FIRST_BLOCKS: ClassVar[bool] = True
+    """GSK takes an omitted G71-G76 word from its data parameters: every cycle gets its first block."""
+    MONOTONIC_CHECK_WORD: ClassVar[str] = "K"
+    """G71/G72 K1: the control checks the profile's monotonicity (the seed's GSK G71)."""

@@ -1,0 +1,210 @@
+"""expand_lathe_cycles: keep a lathe cycle native where the target runs it, else write its moves; and
+give a target that is no lathe control the lathe program in its own terms.
+
+A lathe cycle is native when the target runs it (``Dialect.LATHE_CYCLES``) and the set-up does not force
+its expansion (``<Cycles expand=...>``). G70-G73 share their profile blocks, so they are native only
+together: a profile commented out for an expanded G71 must not be left to a native G70. An expanded
+cycle loses its ``LatheCycle`` and is written as its ``CompoundMotion`` (a comment naming the source
+line, then the moves); its first block becomes a comment, and each profile block a comment too (the
+controller never ran it where it stands).
+
+For a target that reads no lathe programs (grbl, LinuxCNC's milling reading), the moves are made its
+own: the ZX plane is selected first, U/W increments become absolute X/Z (from the tracked position; a
+located error where it is unknown), and on a diameter program X is halved (such a target takes a
+radius: ``Dialect.DIAMETER_PROGRAMMING``).
+"""
+
+from __future__ import annotations
+
+from typing import Iterator
+
+from postproc.context import Context
+from postproc.dialect import Dialect
+from postproc.errors import UnsupportedError
+from postproc.ir import (
+    Block, Comments, CompoundMotion, DistanceMode, FeedMode, Motion, Plane, ToolChange, ToolSelect,
+)
+from postproc.lathe_sections import CoordinateSet, LatheCycle
+
+def lathe_tool(number: int) -> int:
+    """The tool of a lathe T word: T0101 (tool and offset, four digits) is tool 1; T1 to T99 name the tool."""
+    return number // 100 if number >= 100 else number
+
+
+PROFILE_CYCLES = frozenset(("turn_finish", "turn_rough", "face_rough", "pattern_repeat"))
+
+
+def expand_lathe_cycles(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """Lowering transform (see the module docstring); a mill program passes through untouched."""
+    if not ctx.lathe:
+        return blocks
+    return _lower(blocks, ctx, target)
+
+
+def _native(target: type[Dialect], ctx: Context) -> frozenset[str]:
+    if "lathe" not in target.MACHINE_TYPES:
+        return frozenset()
+    forced = ctx.setup.cycles.expanded()
+    if "all" in forced:
+        return frozenset()
+    native = frozenset(k for k in target.LATHE_CYCLES if k not in forced)
+    if not PROFILE_CYCLES <= native:
+        native -= PROFILE_CYCLES
+    return native
+
+
+def _lower(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    native = _native(target, ctx)
+    foreign = "lathe" not in target.MACHINE_TYPES
+    radius = ctx.diameter and (foreign or not target.DIAMETER_PROGRAMMING)
+    tracker = _Position(ctx, radius) if foreign or radius else None
+    plane_set = not foreign
+    start_mode = ctx.state.feed_mode  # read before any block: the source's mode at the start
+    target_mode = target.LATHE_FEED_AT_START if not foreign else "per_min"
+    mode_set = start_mode == target_mode
+    for block in blocks:
+        sections = block.sections
+        profile = sections.get("InProfile")
+        if profile is not None:
+            if native:
+                yield block
+                continue
+            source = (block.text or " ".join(a + n for a, n in block.words)).strip()
+            block.sections = {"Comments": Comments([f"PROFILE LINE {block.line}: {source}"])}
+            block.changed()
+            yield block
+            continue
+        cycle = sections.get("LatheCycle")
+        if isinstance(cycle, LatheCycle):
+            if cycle.kind in native:
+                sections.pop("CompoundMotion", None)
+            else:
+                source = (block.text or " ".join(a + n for a, n in block.words)).strip()
+                del sections["LatheCycle"]
+                block.changed()
+                if cycle.form == "first":
+                    comments = sections.get("Comments")
+                    texts = comments.texts if isinstance(comments, Comments) else []
+                    sections["Comments"] = Comments([f"LINE {block.line}: {source} (cycle data)", *texts])
+        if not mode_set and block.sections and "TapeMark" not in block.sections \
+                and "ProgramStart" not in block.sections and "Comments" not in block.sections:
+            mode_set = True
+            if "FeedMode" not in block.sections:
+                block.add(FeedMode(start_mode))  # the target starts in another feed mode: say the source's
+                block.changed()
+        if foreign:
+            _turret(block)
+        if tracker is not None:
+            if not plane_set and ("Motion" in sections or "CompoundMotion" in sections):
+                block.add(Plane("ZX"))
+                plane_set = True
+            if tracker.block(block):
+                yield block
+                back = Block(block.line, None, block.eol)
+                back.add(DistanceMode("absolute"))
+                yield back  # the reference return went in incremental mode: back to absolute
+                continue
+        yield block
+
+
+def _turret(block: Block) -> None:
+    """A lathe's T indexes the turret: for a mill control it is a tool change, to the tool number alone
+    (T0101 is tool 1 with offset 1; a tool's offsets are the target's own)."""
+    select = block.sections.get("ToolSelect")
+    if isinstance(select, ToolSelect) and isinstance(select.number, int) and "ToolChange" not in block.sections:
+        block.sections["ToolSelect"] = ToolSelect(lathe_tool(select.number))
+        block.add(ToolChange())
+        block.changed()
+
+
+class _Position:
+    """Where the tool is (program units, X as programmed), to make U/W absolute and X a radius."""
+
+    __slots__ = ("ctx", "radius", "x", "z", "incremental")
+
+    def __init__(self, ctx: Context, radius: bool) -> None:
+        self.ctx = ctx
+        self.radius = radius
+        self.x: float | None = None
+        self.z: float | None = None
+        self.incremental = False
+        """G91 in force (Fanuc T systems B and C)."""
+
+    def block(self, block: Block) -> bool:
+        """Rewrite the block's moves; True when it was made incremental (a reference return through
+        the present point, ``G28 U0 W0``) and the program must return to absolute after it."""
+        sections = block.sections
+        changed = False
+        mode = sections.get("DistanceMode")
+        if isinstance(mode, DistanceMode):
+            self.incremental = mode.mode == "incremental"
+        motion = sections.get("Motion")
+        if isinstance(motion, Motion) and motion.mode in ("home", "home2") and not self.incremental \
+                and any(a in motion.axes for a in "UW") \
+                and all(a in "UW" and motion.axes[a] == 0.0 for a in motion.axes):
+            # through the present point, wherever it is: the same return in incremental mode
+            motion.axes = {"X" if a == "U" else "Z": 0.0 for a in motion.axes}
+            block.add(DistanceMode("incremental"))
+            self.x = self.z = None
+            block.changed()
+            return True
+        if isinstance(motion, Motion) and motion.mode is not None:
+            changed = self.motion(block, motion)
+        compound = sections.get("CompoundMotion")
+        if isinstance(compound, CompoundMotion):
+            for item in compound.items:
+                if isinstance(item, Motion):
+                    incremental, self.incremental = self.incremental, False  # compound moves are absolute
+                    self.motion(block, item)
+                    self.incremental = incremental
+            changed = True
+        coords = sections.get("CoordinateSet")
+        if isinstance(coords, CoordinateSet):
+            self.x = coords.axes.get("X", self.x)
+            self.z = coords.axes.get("Z", self.z)
+            if self.radius and "X" in coords.axes:
+                sections["CoordinateSet"] = CoordinateSet({**coords.axes, "X": coords.axes["X"] / 2.0})
+                changed = True
+        if changed:
+            block.changed()
+        return False
+
+    def motion(self, block: Block, motion: Motion) -> bool:
+        """Rewrite one motion in place; True when it changed."""
+        axes = motion.axes
+        if not any(a in axes for a in "XUW"):
+            self._track(motion, axes)
+            return False
+        new: dict[str, float] = {}
+        for axis, value in axes.items():
+            if axis in ("U", "W"):
+                base = self.x if axis == "U" else self.z
+                if base is None or not isinstance(value, float):
+                    raise UnsupportedError(f"an incremental {axis} move from an unknown position (the target has no "
+                                           f"{axis} address: program an absolute {'X' if axis == 'U' else 'Z'} first)",
+                                           self.ctx.at(block))
+                new["X" if axis == "U" else "Z"] = base + value
+            else:
+                new[axis] = value
+        self._track(motion, new)
+        if self.radius and "X" in new:
+            new["X"] = new["X"] / 2.0
+        motion.axes = new
+        return True
+
+    def _track(self, motion: Motion, axes: dict[str, float]) -> None:
+        if motion.mode in ("home", "home2"):
+            self.x = None if "X" in axes or "U" in axes else self.x
+            self.z = None if "Z" in axes or "W" in axes else self.z
+            return
+        if self.incremental:
+            if "X" in axes:
+                self.x = None if self.x is None or not isinstance(axes["X"], float) else self.x + axes["X"]
+            if "Z" in axes:
+                self.z = None if self.z is None or not isinstance(axes["Z"], float) else self.z + axes["Z"]
+            return
+        if "X" in axes:
+            self.x = axes["X"] if isinstance(axes["X"], float) else None
+        if "Z" in axes:
+            self.z = axes["Z"] if isinstance(axes["Z"], float) else None
+

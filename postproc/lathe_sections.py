@@ -1,0 +1,133 @@
+"""Sections only lathe programs make: spindle speed mode and clamp, coordinate setting, a lathe cycle
+and the profile blocks a cycle runs instead of the program.
+
+Neutral, as the rest of the IR: a section says "constant surface speed" or "rough turning cycle", never
+"G96" or "G71". Lengths are in program units; X (and an X allowance) is a diameter on a machine that
+programs diameters (``Context.diameter``), every depth and relief is a radius.
+"""
+
+from __future__ import annotations
+
+from typing import Any, ClassVar
+
+from lxml import etree
+
+from .ir import Section
+from .xmlio import XAttr, XFactory, decode, encode
+
+
+class SpindleMode(Section):
+    """'css' (constant surface speed: S is metres or feet per minute) or 'rpm' (S is revolutions)."""
+
+    XNAME = KEY = "SpindleMode"
+    __slots__ = ("mode",)
+    XATTRS = (XAttr("mode", str),)
+    mode: str
+
+    def __init__(self, mode: str) -> None:
+        self.mode = mode
+
+
+class SpindleClamp(Section):
+    """The highest spindle speed constant surface speed may reach, in rpm."""
+
+    XNAME = KEY = "SpindleClamp"
+    __slots__ = ("rpm",)
+    XATTRS = (XAttr("rpm", float),)
+    rpm: float
+
+    def __init__(self, rpm: float) -> None:
+        self.rpm = rpm
+
+
+class CoordinateSet(Section):
+    """The tool's present position is given these coordinates (program units; X as programmed):
+    the work coordinate system moves, the tool does not."""
+
+    XNAME = KEY = "CoordinateSet"
+    __slots__ = ("axes",)
+
+    def __init__(self, axes: dict[str, float]) -> None:
+        self.axes = axes
+
+    @classmethod
+    def from_xml(cls, el: etree._Element) -> "CoordinateSet":
+        return cls({k: float(v) for k, v in el.attrib.items()})
+
+    def make_xml_source(self, base_dir: str = ".", rel_file: str = "", exhibition_only: bool = False) -> etree._Element:
+        el = etree.Element(self.XNAME)
+        for k, v in self.axes.items():
+            el.set(k, repr(float(v)))
+        return el
+
+    def _key(self) -> tuple[Any, ...]:
+        return (tuple(self.axes.items()),)
+
+
+class InProfile(Section):
+    """This block is part of the profile (ns..nf) of the lathe cycle programmed on line ``cycle``: the
+    controller runs it only through the cycle, never when the program reaches it."""
+
+    XNAME = KEY = "InProfile"
+    __slots__ = ("cycle",)
+    XATTRS = (XAttr("cycle", int),)
+    cycle: int
+
+    def __init__(self, cycle: int) -> None:
+        self.cycle = cycle
+
+
+class LatheCycle(Section):
+    """One block of a lathe cycle, resolved: every parameter the controller uses, defaults included.
+
+    ``kind`` is the neutral name (``CYCLE_KINDS``); ``form`` says which block this is: 'first' (the first
+    block of a two-block cycle: the modal data only), 'second' (the cycle itself), 'one' (the one-block
+    form) or 'single' (a cycle that has one block only: G70, G90, G92, G94). ``params`` maps neutral
+    parameter names to values (``PARAMS``); the block's motion travels as its ``CompoundMotion``.
+    """
+
+    XNAME = KEY = "LatheCycle"
+    __slots__ = ("kind", "form", "params")
+    XATTRS = (XAttr("kind", str), XAttr("form", str))
+    CYCLE_KINDS: ClassVar[tuple[str, ...]] = (
+        "turn_finish", "turn_rough", "face_rough", "pattern_repeat", "face_peck", "groove", "thread_multi",
+        "turn_single", "thread_single", "face_single",
+    )
+
+    def __init__(self, kind: str, form: str, params: dict[str, float | int] | None = None) -> None:
+        self.kind = kind
+        self.form = form
+        self.params: dict[str, float | int] = params if params is not None else {}
+
+    @classmethod
+    def from_xml(cls, el: etree._Element) -> "LatheCycle":
+        params: dict[str, float | int] = {}
+        for child in el:
+            if child.tag == "Params":
+                params = {k: decode(float if any(c in v for c in ".eEna") else int, v) for k, v in child.attrib.items()}
+            elif isinstance(child.tag, str):
+                raise ValueError(f"unexpected <{child.tag}>")
+        return cls(XAttr("kind").parse(el), XAttr("form").parse(el), params)
+
+    def make_xml_source(self, base_dir: str = ".", rel_file: str = "", exhibition_only: bool = False) -> etree._Element:
+        el = etree.Element(self.XNAME, kind=self.kind, form=self.form)
+        if self.params:
+            child = etree.SubElement(el, "Params")
+            for k, v in self.params.items():
+                child.set(k, encode(v))
+        return el
+
+    def _key(self) -> tuple[Any, ...]:
+        return (self.kind, self.form, tuple(self.params.items()))
+
+    def __repr__(self) -> str:
+        return f"LatheCycle({self.kind!r}, {self.form!r}, {self.params!r})"
+
+
+LATHE_SECTIONS: tuple[type[Section], ...] = (SpindleMode, SpindleClamp, CoordinateSet, InProfile, LatheCycle)
+
+
+def register_lathe_sections(factory: XFactory) -> None:
+    """Register the lathe sections with ``factory``; idempotent."""
+    for cls in LATHE_SECTIONS:
+        cls.reg(factory)

@@ -1,0 +1,207 @@
+"""LatheCycleSyntax: a lathe cycle block -> its ``LatheCycle`` and motion, with the profile it runs.
+
+Runs after ``ModalStateSyntax`` (so the profile blocks are read with the modal state they are written
+in), as the last step of a lathe reading pipeline. For G71/G72/G73 it holds the blocks from the cycle
+to the profile's last block (nf): bounded look-ahead, that construct only. The controller runs the
+profile through the cycle and then continues after nf, so the profile blocks are marked ``InProfile``
+(the simulator skips them) and the modal state the profile left is put back to what the cycle left:
+the tool is where the cycle ended. A G70 runs a profile read by an earlier roughing cycle.
+
+Each expansion is exact: the moves come from the turning geometry (``postproc.cycles.turning``)
+through ``postproc.cycles.lathe_expansion``; the block keeps both the resolved ``LatheCycle`` (for a
+target that runs the cycle) and its ``CompoundMotion`` (for one that does not, and the simulator).
+"""
+
+from __future__ import annotations
+
+import copy
+import dataclasses
+from typing import TYPE_CHECKING, Iterable, Iterator
+
+from postproc.context import Context
+from postproc.cycles.lathe_expansion import expand, profile_segments, start_point, to_sections
+from postproc.errors import PostprocError, ProgramError
+from postproc.ir import Block, CompoundMotion, CycleCall, Motion, Sequence
+from postproc.lathe_sections import InProfile, LatheCycle
+from postproc.syntax import Syntax
+
+from .lathe_words import read_cycle
+
+if TYPE_CHECKING:
+    from postproc.cycles.turning.profile import Seg
+
+PROFILES_KEY = "LatheCycleSyntax.profiles"
+"""``ctx.state.extra`` key: (ns, nf) -> the profile segments a roughing cycle read (for a later G70)."""
+ROUGHING = frozenset(("turn_rough", "face_rough", "pattern_repeat"))
+MAX_PROFILE_BLOCKS = 100_000
+"""Blocks held at most while looking for a profile's last block."""
+_QUIET = frozenset(("Sequence", "Comments"))
+
+
+class LatheCycleSyntax(Syntax):
+    XNAME = "LatheCycleSyntax"
+    __slots__ = ()
+
+    def build(self, block: Block, ctx: Context) -> None:  # the stream form does the work
+        raise NotImplementedError("LatheCycleSyntax runs as a stream (process)")
+
+    def process(self, blocks: Iterable[Block], ctx: Context) -> Iterator[Block]:
+        report = ctx.diagnostics.error
+        stream = iter(blocks)
+        for block in stream:
+            call = block.sections.get("CycleCall")
+            if not isinstance(call, CycleCall) or call.kind not in LatheCycle.CYCLE_KINDS:
+                yield block
+                continue
+            try:
+                cycle, code = self._read(block, ctx, call.kind)
+            except PostprocError as err:
+                report(err.located(ctx.at(block)))
+                block.sections.pop("CycleCall", None)
+                yield block
+                continue
+            if cycle.form in ("second", "one") and cycle.kind in ROUGHING:
+                yield from self._roughing(block, ctx, cycle, code, stream)
+                continue
+            try:
+                self._run(block, ctx, cycle, code, None, "I")
+            except PostprocError as err:
+                report(err.located(ctx.at(block)))
+            yield block
+
+    # -- one cycle -----------------------------------------------------------------------------------
+    def _read(self, block: Block, ctx: Context, kind: str) -> tuple[LatheCycle, str]:
+        code = next(("G" + num for letter, num in block.words if letter in "Gg"), None) \
+            or ctx.state.extra.get("LatheCycleSyntax.code", kind)
+        if code.startswith("G") and kind in ("turn_single", "thread_single", "face_single"):
+            ctx.state.extra["LatheCycleSyntax.code"] = code
+        start = {"X": ctx.state.position.get("X"), "Z": ctx.state.position.get("Z")}
+        cycle = read_cycle(kind, block, ctx, code, start)
+        del block.sections["CycleCall"]
+        block.add(cycle)
+        return cycle, code
+
+    def _run(self, block: Block, ctx: Context, cycle: LatheCycle, code: str, profile: list[Seg] | None,
+             rough_type: str) -> None:
+        """Expand a cycle that moves (not a first block) and put the tool where it ends."""
+        if cycle.form == "first":
+            return
+        start = start_point(ctx)
+        if start is None:
+            raise ProgramError(f"{code}: the tool's position before the cycle is unknown (program an absolute "
+                               "X and Z first)", ctx.at(block))
+        if cycle.kind == "turn_finish":
+            profiles = ctx.state.extra.get(PROFILES_KEY, {})
+            key = (int(cycle.params["ns"]), int(cycle.params["nf"]))
+            profile = profiles.get(key)
+            if profile is None:
+                raise ProgramError(f"{code} P{key[0]} Q{key[1]}: no roughing cycle before it read the profile "
+                                   f"N{key[0]}..N{key[1]}", ctx.at(block))
+        try:
+            moves = expand(cycle, start, profile, ctx.state.feed, ctx, rough_type)
+        except ProgramError as err:
+            raise ProgramError(f"{err.message}" if err.message.startswith(code) else f"{code}: {err.message}",
+                               ctx.at(block)) from None
+        limit = ctx.setup.limits.moves_per_block
+        if len(moves) > limit:
+            raise ProgramError(f"{code} makes {len(moves)} moves, more than <Limits movesPerBlock> ({limit})",
+                               ctx.at(block))
+        block.add(CompoundMotion(cycle.kind, to_sections(moves, start, ctx)))
+        if moves:
+            last = moves[-1]
+            ctx.state.position["X"] = last.x * (2.0 if ctx.diameter else 1.0)
+            ctx.state.position["Z"] = last.z
+
+    def _roughing(self, block: Block, ctx: Context, cycle: LatheCycle, code: str,
+                  stream: Iterator[Block]) -> Iterator[Block]:
+        """Hold the blocks up to nf, read them as the profile, expand, then let everything go."""
+        ns, nf = int(cycle.params["ns"]), int(cycle.params["nf"])
+        saved = copy.deepcopy(ctx.state)
+        held: list[Block] = []
+        profile: list[Block] = []
+        found = False
+        problem: PostprocError | None = None
+        for later in stream:
+            held.append(later)
+            number = later.sections.get("Sequence")
+            if not profile:
+                if isinstance(number, Sequence) and number.number == ns:
+                    profile.append(later)
+                elif set(later.sections) - _QUIET:
+                    problem = ProgramError(f"{code}: the profile N{ns} must follow the cycle block (line "
+                                           f"{later.line} comes first)", ctx.at(block))
+                    break
+            else:
+                profile.append(later)
+            if profile and isinstance(number, Sequence) and number.number == nf:
+                found = True
+                break
+            if len(held) > MAX_PROFILE_BLOCKS:
+                problem = ProgramError(f"{code}: no block N{nf} within {MAX_PROFILE_BLOCKS} blocks", ctx.at(block))
+                break
+        _restore(ctx, saved)
+        if problem is None and not found:
+            problem = ProgramError(f"{code}: the profile's last block N{nf} is not in the program"
+                                   if profile else f"{code}: the profile's first block N{ns} is not in the program",
+                                   ctx.at(block))
+        if problem is None:
+            for later in profile:
+                if "LatheCycle" in later.sections or "CycleCall" in later.sections:
+                    problem = ProgramError(f"{code}: the profile block at line {later.line} programs a cycle",
+                                           ctx.at(later))
+                    break
+        if problem is None:
+            try:
+                start = start_point(ctx)
+                if start is None:
+                    raise ProgramError(f"{code}: the tool's position before the cycle is unknown (program an "
+                                       "absolute X and Z first)", ctx.at(block))
+                segs = profile_segments(profile, start, ctx, code)
+                _check_monotonic(cycle, segs, profile, ctx, code)
+                ctx.state.extra.setdefault(PROFILES_KEY, {})[(ns, nf)] = segs
+                self._run(block, ctx, cycle, code, segs, _rough_type(profile, cycle.kind))
+            except PostprocError as err:
+                problem = err
+        if problem is not None:
+            ctx.diagnostics.error(problem.located(ctx.at(block)))
+        for later in profile:
+            later.add(InProfile(block.line))
+        yield block
+        yield from held
+
+
+def _restore(ctx: Context, saved: object) -> None:
+    """Put back the modal state the cycle block left (the profile blocks run only inside the cycle)."""
+    state = ctx.state
+    extra = state.extra
+    for f in dataclasses.fields(state):
+        if f.name not in ("extra", "symbolic"):
+            setattr(state, f.name, getattr(saved, f.name))
+    state.extra = extra
+
+
+def _rough_type(profile: list[Block], kind: str) -> str:
+    """Type II when the ns block names both axes (``W0`` counts), type I when only the infeed axis."""
+    motion = next((b.sections["Motion"] for b in profile if isinstance(b.sections.get("Motion"), Motion)), None)
+    if not isinstance(motion, Motion):
+        return "I"
+    other = ("Z", "W") if kind != "face_rough" else ("X", "U")
+    return "II" if any(a in motion.axes for a in other) else "I"
+
+
+def _check_monotonic(cycle: LatheCycle, segs: list[Seg], profile: list[Block], ctx: Context, code: str) -> None:
+    """GSK's K1: from the ns block's end on, every profile block keeps the direction of the ones before
+    it, on both axes (the ns block is the infeed from the start point)."""
+    if int(cycle.params.get("check", 0)) != 1:
+        return
+    for axis in ("x", "z"):
+        direction = 0.0
+        for seg in segs[1:]:
+            step = getattr(seg, axis + "1") - getattr(seg, axis + "0")
+            if abs(step) <= 1e-9:
+                continue
+            if direction and (step > 0) != (direction > 0):
+                block = next(b for b in profile if b.line == seg.line)
+                raise ProgramError(f"{code} K1: the profile is not monotonic in {axis.upper()} at line {seg.line}",
+                                   ctx.at(block))
+            direction = step
