@@ -70,7 +70,7 @@ class Writer(abc.ABC):
                 self.ctx.diagnostics.error(err.located(self.ctx.at(block)))
                 continue
             if text is not None:
-                if block.text is not None and (block.words or block.sections) and not text.strip():
+                if (not text or text.isspace()) and block.text is not None and (block.words or block.sections):
                     text = self.nothing_written(block) if not self._failed() else text
                 emit(text)
         if not started and header:

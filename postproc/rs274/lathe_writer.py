@@ -68,6 +68,8 @@ class LatheWordWriter(WordWriter):
     def generate(self, block: Block) -> str:
         """A block; a one-block cycle written as two gets its first block on a line before it, and a
         first block merged into a one-block cycle leaves a comment where it stood."""
+        if "LatheCycle" not in block.sections:
+            return WordWriter.generate(self, block)  # the common block: no cycle words to place
         self._pending_first = None
         self._merged_first = False
         text = super().generate(block)

@@ -39,7 +39,7 @@ def stops_after_motion(blocks: Iterator[Block], ctx: Context, target: type[Diale
     for block in blocks:
         sections = block.sections
         motion = sections.get("Motion")
-        if motion is None or not getattr(motion, "axes", None) or _NO_STOPS(sections):
+        if _NO_STOPS(sections) or motion is None or not getattr(motion, "axes", None):
             yield block
             continue
         moved = {key: sections[key] for key in _STOPS if key in sections and _stops(sections[key])}

@@ -136,7 +136,7 @@ class WordWriter(Writer):
         return self.generate(block)
 
     def _track(self, sections: dict[str, Section]) -> None:
-        if sections:
+        if not changes_nothing(sections):
             self.modal.apply(sections)
 
     def normalized(self, block: Block) -> str:

@@ -113,7 +113,7 @@ class LinuxcncWriter(WordWriter):
         if s.mode in ("home", "home2") and self._cutter_on and "CutterCompensation" not in block.sections:
             self.unsupported("G28/G30 with cutter compensation on (rs274: \"Cannot use g28 or g30 with cutter "
                              "radius comp\")", block)
-        return super().motion_words(s, block)
+        return WordWriter.motion_words(self, s, block)
 
     def machine_coordinates_words(self, s: Any, block: Block) -> list[str]:
         distance = block.sections.get("DistanceMode")
