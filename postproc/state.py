@@ -77,8 +77,20 @@ def _known(value: Any) -> Any:
     return None if isinstance(value, Expr) else value
 
 
+def _offset_set(state: ModalState, s: Any) -> None:
+    """G10 work offset data: the work position is unknown on the axes it sets (the origin moved under it)."""
+    if str(getattr(s, "table", "")).startswith("work_offset"):
+        for axis in getattr(s, "values", {}):
+            if axis in state.position:
+                state.position[axis] = None
+
+
 def _work_offset(state: ModalState, s: Any) -> None:
-    """A new work offset moves the origin: the work position is unknown until programmed again."""
+    """A new work offset moves the origin: the work position is unknown until programmed again. The
+    active one selected again moves nothing (a CAM program's ``G54`` beside its first arc keeps the arc
+    checkable)."""
+    if s.index == state.work_offset:
+        return
     state.work_offset = s.index
     position = state.position
     for axis in position:
@@ -95,6 +107,7 @@ _APPLY: dict[str, Callable[[ModalState, Any], None]] = {
     "SpindleControl": lambda st, s: setattr(st, "spindle", s.direction),
     "ReturnLevel": lambda st, s: setattr(st, "return_level", s.level),
     "WorkOffset": _work_offset,
+    "DataSetting": lambda st, s: _offset_set(st, s),
     "ToolSelect": lambda st, s: setattr(st, "tool", _known(s.number)),
 }
 """How each modal section changes the state; sections not listed change nothing here."""

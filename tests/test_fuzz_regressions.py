@@ -73,3 +73,59 @@ def test_a_spindle_stop_comes_before_the_orientation_in_its_own_block() -> None:
     report = verify_lines(io.StringIO(program), io.StringIO(out.getvalue()), file_in="a.nc", file_out="b.ngc",
                           source="fanuc", target="linuxcnc", tolerance=0.0)
     assert report.ok, report.summary()
+
+
+@pytest.mark.parametrize("body, settings, rest", [
+    ("G49 T1 G41 G54\n", "G54 G49", "G41 T1"),
+    ("S1000 G54 G00 M08 G94 G41\n", "G54", "G94 G41 G0 S1000 M8"),
+    ("G99 G21 G41\n", "G99", "G21 G41"),
+])
+def test_settings_beside_compensation_on_go_before_it_for_linuxcnc(body: str, settings: str, rest: str) -> None:
+    """make fuzz: rs274 turns compensation on (order 15) before it changes the tool length offset, the work
+    system or the retract mode (16-18), and refuses those under compensation: they go in a block before.
+    (The suite's output hook runs every LinuxCNC output through rs274 itself.)"""
+    program = HEAD + body
+    out = io.StringIO()
+    translate(io.StringIO(program), out, file="t.nc", source="fanuc", target="linuxcnc")
+    assert out.getvalue().splitlines()[1:] == [settings, rest]
+    report = verify_lines(io.StringIO(program), io.StringIO(out.getvalue()), file_in="a.nc", file_out="b.ngc",
+                          source="fanuc", target="linuxcnc", tolerance=0.0, allow_ignored=True)
+    assert report.ok, report.summary()
+
+
+@pytest.mark.parametrize("body, message", [
+    ("G41 D1 G01 X5. F100.\nG49\n", "t.nc:3:1: error: the linuxcnc dialect cannot express a change of tool length "
+                                    "offset with cutter compensation on (rs274 refuses it: program G40 first)"),
+    ("G41 G28\n", "t.nc:2:1: error: the linuxcnc dialect cannot express G28/G30 with cutter compensation on "
+                  "(rs274: \"Cannot use g28 or g30 with cutter radius comp\")"),
+    ("G41\nG19\n", "t.nc:3:1: error: the linuxcnc dialect cannot express a change to the YZ plane with cutter "
+                   "compensation on (rs274: \"Cannot change planes with cutter radius compensation on\")"),
+    ("G19 G41\n", "t.nc:2:1: error: the linuxcnc dialect cannot express cutter compensation left in the YZ plane "
+                  "(rs274: \"Cutter radius compensation allowed only in XY, XZ planes\")"),
+])
+def test_what_rs274_refuses_under_compensation_is_a_located_error(body: str, message: str) -> None:
+    with pytest.raises(ErrorList) as exc:
+        translate(io.StringIO(HEAD + body), io.StringIO(), file="t.nc", source="fanuc", target="linuxcnc")
+    assert [str(e) for e in exc.value.errors] == [message]
+
+
+def test_an_isg_dwell_keeps_the_spindle_start_before_it() -> None:
+    """make fuzz: LinuxCNC 'T1 Y2.5 X10. M03 G04 P500' (spindle, then dwell, then move) became ISG
+    'G04 X500.' then 'G00 Y2.5 X10. T1 M03': the dwell ran before the spindle started."""
+    program = HEAD + "T1 Y2.5 X10. M03 G04 P500\nM2\n"
+    out = io.StringIO()
+    translate(io.StringIO(program), out, file="t.ngc", source="linuxcnc", target="isg")
+    assert out.getvalue().splitlines()[1:4] == ["T1 M03", "G04 X500.", "G00 Y2.5 X10."]
+    report = verify_lines(io.StringIO(program), io.StringIO(out.getvalue()), file_in="a.ngc", file_out="b.nc",
+                          source="linuxcnc", target="isg", tolerance=0.0)
+    assert report.ok, report.summary()
+
+
+def test_the_active_work_system_selected_again_keeps_the_arc_checked() -> None:
+    """make fuzz: 'R-1 G02 ... G54 X10.' with G54 already active: the translation skipped the arc check
+    (a work system change forgets the position) and grbl refused the arc (error 34)."""
+    with pytest.raises(ErrorList) as exc:
+        translate(io.StringIO(HEAD + "F0.3\nR-1 G02 Z1234.56789 G90 G54 X10.\n"), io.StringIO(), file="t.ngc",
+                  source="linuxcnc", target="grbl")
+    assert [str(e) for e in exc.value.errors] == [
+        "t.ngc:3:1: error: arc radius 1.0000 mm is too small for a chord of 10.0000 mm"]

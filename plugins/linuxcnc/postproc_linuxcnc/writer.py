@@ -47,6 +47,8 @@ _AFTER_ORIENT = frozenset({"SpindleOrientation", "Coolant", "ProgramControl"})
 _WITH_ORIENT = frozenset({"Sequence", "BlockDelete", "Comments", "SpindleOrientation", "ProgramControl"})
 """What M19 shares a block with in LinuxCNC without changing the order of events (no split needed)."""
 
+_COMP_LOCKED = frozenset({"ToolLengthOffset", "WorkOffset", "ReturnLevel", "Plane"})
+"""What rs274 refuses to change while cutter compensation is on."""
 _OPENING = (While, If, Do, Repeat)
 _CLOSING = (EndWhile, EndIf, DoWhile, EndRepeat)
 _LABELLED = (*_OPENING, *_CLOSING, ElseIf, Else, Break, Continue)
@@ -110,7 +112,7 @@ class LinuxcncWriter(WordWriter):
         return super().plane_words(s, block)
 
     def motion_words(self, s: Any, block: Block) -> list[str]:
-        if s.mode in ("home", "home2") and self._cutter_on and "CutterCompensation" not in block.sections:
+        if s.mode in ("home", "home2") and self._cutter_on:
             self.unsupported("G28/G30 with cutter compensation on (rs274: \"Cannot use g28 or g30 with cutter "
                              "radius comp\")", block)
         return WordWriter.motion_words(self, s, block)
@@ -286,6 +288,34 @@ class LinuxcncWriter(WordWriter):
                                   "refuses a lone '%', written as a comment (add M30 before it)", self.ctx.at(block))
         return self.comment("%") + (block.eol or "\n")
 
+    def _settings_first(self, block: Block) -> str:
+        """A block that turns compensation on and also changes what rs274 refuses to change under it (tool
+        length offset, work system, retract mode, plane): rs274 runs compensation first (order of execution
+        15 before 16-18), so those settings go in a block of their own before it, where both orders agree."""
+        first = Block(block.line, None, "\n")
+        first.sections = {k: v for k, v in block.sections.items() if k in _COMP_LOCKED or k == "BlockDelete"}
+        rest = Block(block.line, None, block.eol)
+        rest.sections = {k: v for k, v in block.sections.items() if k not in _COMP_LOCKED}
+        return self.generate(first) + self.generate(rest)
+
+    def _locked(self, what: str, block: Block) -> None:
+        """rs274 refuses to change ``what`` while cutter compensation is on."""
+        if self._cutter_on:
+            self.unsupported(f"a change of {what} with cutter compensation on (rs274 refuses it: program G40 "
+                             "first)", block)
+
+    def tool_length_offset_words(self, s: Any, block: Block) -> list[str]:
+        self._locked("tool length offset", block)
+        return super().tool_length_offset_words(s, block)
+
+    def work_offset_words(self, s: Any, block: Block) -> list[str]:
+        self._locked("work coordinate system", block)
+        return super().work_offset_words(s, block)
+
+    def return_level_words(self, s: Any, block: Block) -> list[str]:
+        self._locked("canned-cycle retract mode", block)
+        return super().return_level_words(s, block)
+
     def program_start(self, s: Any, block: Block) -> str:
         """``O<n>`` after the main program's end (a subprogram start, as rs274 reads it) or from a
         LinuxCNC source; else a comment: in the flow an ``O`` line does nothing, and leaving the
@@ -306,6 +336,9 @@ class LinuxcncWriter(WordWriter):
         ``R`` as the angle (so an R arc, a cycle's R or I/J/K beside it are refused); the neutral order is
         the other way round. What the block does after the orientation (coolant off, a stop) follows it."""
         sections = block.sections
+        comp = sections.get("CutterCompensation")
+        if comp is not None and comp.mode != "off" and not _COMP_LOCKED.isdisjoint(sections):  # type: ignore[attr-defined]
+            return self._settings_first(block)
         if "SpindleOrientation" not in sections or "CompoundMotion" in sections or sections.keys() <= _WITH_ORIENT:
             return WordWriter.generate(self, block)
         first = Block(block.line, None, block.eol or "\n")
