@@ -88,6 +88,7 @@ class Style:
     width: float = STROKE
     side: str | None = None
     """``in``/``out`` in a verify overlay (written as ``data-side``)."""
+    opacity: float = 1.0
 
 
 class Backplot:
@@ -334,8 +335,8 @@ def draw_path(canvas: Canvas, frame: Frame, view: View, plot: Backplot, style: S
             extra = {"data-tool": tool_name(tool)}
             if style.side:
                 extra["data-side"] = style.side
-            if style.colour:
-                extra["opacity"] = "0.55"
+            if style.opacity < 1.0:
+                extra["opacity"] = f"{style.opacity:g}"
             runs: list[list[Point]] = []
             count = 0
             for run in plot.polylines(kind, px, first, end):
