@@ -73,3 +73,18 @@ def test_a_plot_name_without_a_picture_suffix_is_wrong_usage(cli: Any, tmp_path:
     result, picture = run(cli, tmp_path, SOURCE, "diff.txt")
     assert result.status == 2 and "--plot" in result.err and "must end in .svg or .png" in result.err
     assert not picture.exists()
+
+
+def test_a_lathe_overlay_marks_the_deviation_on_the_radius_drawing(cli: Any, tmp_path: Path) -> None:
+    """GSK programs diameters; the picture draws radii, so the mark must be halved too: it sits on the
+    source's corner at X30 diameter (radius 15), not at radius 30."""
+    src, out, picture = tmp_path / "in.nc", tmp_path / "out.nc", tmp_path / "lathe.svg"
+    src.write_text("G00 X40. Z2.\nG01 X30. F80.\nZ-20.\nG00 X40.\n")
+    out.write_text("G00 X40. Z2.\nG01 X30. F80.\nZ-20.5\nG00 X40.\n")
+    assert cli("verify", src, out, "--from", "gsk", "--to", "gsk", "--plot", picture).status == 1
+    root = etree.parse(str(picture)).getroot()
+    turning = [g for g in root.iter(SVG + "g") if g.get("data-view") == "Turning (Z across, X radius up)"][0]
+    feed_in = [p for p in turning.iter(SVG + "path") if p.get("data-side") == "in" and p.get("class") == "feed"][0]
+    corner = [tuple(map(float, xy)) for xy in re.findall(r"(-?[\d.]+),(-?[\d.]+)", feed_in.get("d") or "")][-1]
+    mark = [c for c in turning.iter(SVG + "circle") if c.get("class") == "deviation"][0]
+    assert math.dist((float(mark.get("cx") or 0), float(mark.get("cy") or 0)), corner) < 0.02
