@@ -12,7 +12,6 @@ a short list of tool changes, never an object per move; arcs are linearised on a
 
 from __future__ import annotations
 
-import bisect
 import math
 from array import array
 from dataclasses import dataclass
@@ -165,10 +164,6 @@ class Backplot:
         ends = [n for n, _ in self.changes[1:]] + [len(self.codes)]
         for (first, tool), end in zip(self.changes, ends):
             yield tool, max(first, 1), end
-
-    def tool_at(self, n: int) -> int | None:
-        i = bisect.bisect_right([first for first, _ in self.changes], n) - 1
-        return self.changes[i][1] if i >= 0 else None
 
     def polylines(self, kind: int, view: Callable[[int], Point], first: int = 1,
                   end: int | None = None) -> Iterable[list[Point]]:
