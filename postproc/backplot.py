@@ -1,61 +1,97 @@
-"""Backplot: a toolpath drawn as a plan view (XY) and a side view (XZ) side by side, as SVG or PNG.
+"""Backplot: a toolpath drawn as a machinist reads one, as SVG or PNG.
 
-Streaming-friendly: the whole drawing keeps one flat array of points (three doubles and one byte
-each), never an object per move; arcs are linearised on arrival within ``CHORD_ERROR`` mm. Scaling
-needs the extent of the whole path, so the picture is written at the end. Rapids are dashed, feeds
-solid; both views share one scale so X lines up.
+Three views in third-angle layout on one scale (plan XY above front XZ, side YZ right of the front, so
+X and Z line up between views); a lathe gets its ZX plane (X as a radius) and the mirror image below.
+Feed moves are solid in one colour per tool, rapids dashed red (a rapid into the part stands out);
+the start point and the work origin are marked; every view has ticks in mm; a legend lists the tools.
+
+Streaming-friendly: the drawing keeps one flat array of points (three doubles and one byte each) and
+a short list of tool changes, never an object per move; arcs are linearised on arrival within
+``CHORD_ERROR`` mm. Scaling needs the extent of the whole path, so the picture is written at the end.
 """
 
 from __future__ import annotations
 
 import math
 from array import array
-from typing import Any, BinaryIO, Iterable, Sequence, TextIO
+from dataclasses import dataclass
+from typing import Any, BinaryIO, Callable, Iterable, Sequence, TextIO
 
-from lxml import etree
-
-from .errors import UsageError
+from .canvas import Canvas, PngCanvas, Point, SvgCanvas, dashes
 from .geometry import CENTRE_KEYS, arc_points
 
-SVG_NS = "http://www.w3.org/2000/svg"
+__all__ = ["Backplot", "Frame", "Style", "dashes", "render"]
+
 PATH_POINTS = 20000
 """Most points in one SVG <path>: long programs get several paths of a kind instead of one huge one."""
-
-
-def _svg(tag: str) -> str:
-    """A child element's tag: written without a prefix, it sits in the root's default SVG namespace."""
-    return tag
-
-
-class _TextSink:
-    """Lets lxml's incremental writer (which writes bytes) write into a text stream."""
-
-    def __init__(self, out: TextIO) -> None:
-        self.out = out
-
-    def write(self, data: bytes) -> None:
-        self.out.write(data.decode("utf-8"))
-
 CHORD_ERROR = 0.01
 """Largest distance in mm between a drawn chord and the arc it stands for."""
-
 RAPID, FEED = 1, 2
 """Point codes: the kind of the segment that ends at the point (0: the path's first point)."""
 
-WIDTH, HEIGHT = 1000, 560
-PANEL = 470
+PANEL = 400
 """Each view is a square panel of this many pixels; the plot inside keeps ``MARGIN`` from its edge."""
 MARGIN = 20
-TOP = 30
-"""Room above the panels for the view titles."""
-COLOURS = {RAPID: "#d62728", FEED: "#1f4e9c"}
+LEFT, TOP = 70, 30
+"""Room left of the first column (tick labels) and above the first row (view titles)."""
+GAP_X, GAP_Y = 90, 80
+"""Room between panels for the next panel's tick labels, axis units and title."""
+WIDTH, HEIGHT = 1000, 1000
+RAPID_COLOUR = "#d62728"
+LINE_STYLE_COLOUR = "#333333"
+"""The feed line in the legend of line styles (tools have their own colours)."""
+TOOL_COLOURS = ("#1f4e9c", "#2ca02c", "#ff7f0e", "#9467bd", "#17becf", "#8c564b", "#e377c2", "#7f7f7f",
+                "#bcbd22", "#393b79", "#637939", "#7b4173")
+"""Feed colours in order of a tool's first move (red is the rapids'); a 13th tool reuses the first."""
 DASH = (6, 4)
 """Rapid dash pattern in pixels: drawn, gap."""
 STROKE = 1.2
+START_COLOUR = "#2ca02c"
+TICKS = 6
+"""About this many ticks along each panel edge."""
+
+
+@dataclass(frozen=True)
+class View:
+    """One panel: which model axes go across (``h``) and up (``v``, or down when ``down``)."""
+
+    title: str
+    h: int
+    v: int
+    col: int
+    row: int
+    down: bool = False
+
+    @property
+    def left(self) -> float:
+        return LEFT + self.col * (PANEL + GAP_X)
+
+    @property
+    def top(self) -> float:
+        return TOP + self.row * (PANEL + GAP_Y)
+
+
+MILL_VIEWS = (View("Plan (XY)", 0, 1, 0, 0), View("Front (XZ)", 0, 2, 0, 1), View("Side (YZ)", 1, 2, 1, 1))
+LATHE_VIEWS = (View("Turning (Z across, X radius up)", 2, 0, 0, 0),
+               View("Mirrored (X radius down)", 2, 0, 0, 1, down=True))
+LEGEND_CELL = (1, 0)
+AXIS_NAMES = ("X", "Y", "Z")
+
+
+@dataclass(frozen=True)
+class Style:
+    """How one toolpath is drawn: per-tool feed colours (``colour`` None) or one colour for all."""
+
+    colour: str | None = None
+    rapid_colour: str = RAPID_COLOUR
+    width: float = STROKE
+    side: str | None = None
+    """``in``/``out`` in a verify overlay (written as ``data-side``)."""
+    opacity: float = 1.0
 
 
 class Backplot:
-    """Collects a toolpath's points; ``write_svg``/``write_png`` draw them."""
+    """Collects a toolpath's points and tools; ``write_svg``/``write_png`` draw them."""
 
     def __init__(self, start: dict[str, float], lathe: bool = False) -> None:
         self.lathe = lathe
@@ -66,27 +102,40 @@ class Backplot:
         self.xyz = array("d", self.pos)
         self.codes = array("B", [0])
         self.moves = {RAPID: 0, FEED: 0}
+        self.tool: int | None = None
+        self.changes: list[tuple[int, int | None]] = []
+        """(first point index, tool): the tool that drew the segments ending at that point and after."""
+        self.tool_moves: dict[int | None, list[int]] = {}
+        """Per tool in order of its first move: [rapids, feeds]."""
 
     # -- collecting --------------------------------------------------------------------------------
     def add_all(self, events: Iterable[dict[str, Any]]) -> None:
-        add = self.add
         for ev in events:
-            if "move" in ev:
-                add(ev)
-            elif ev.get("x_mode") == "diameter":
-                self.half = True
+            self.take(ev)
+
+    def take(self, ev: dict[str, Any]) -> None:
+        """Any toolpath event: moves are drawn, a tool event changes the colour, a header sets x_mode."""
+        if "move" in ev:
+            self.add(ev)
+        elif ev.get("event") == "tool":
+            self.tool = ev.get("number")
+        elif ev.get("x_mode") == "diameter":
+            self.half = True
 
     def add(self, ev: dict[str, Any]) -> None:
         """One motion event (other events are ignored)."""
         kind = ev.get("move")
         if kind is None:
             return
+        if not self.changes or self.changes[-1][1] != self.tool:
+            self.changes.append((len(self.codes), self.tool))
         x, y, z = self.pos
         if self.half:
             ev = {k: (v / 2.0 if k in ("x", "cx") else v) for k, v in ev.items()}
         end = (float(ev.get("x", x)), float(ev.get("y", y)), float(ev.get("z", z)))
         code = RAPID if kind == "rapid" else FEED
         self.moves[code] += 1
+        self.tool_moves.setdefault(self.tool, [0, 0])[code - 1] += 1
         if kind in ("cw", "ccw"):
             centre = tuple(float(ev.get(CENTRE_KEYS[a], p)) for a, p in zip("XYZ", self.pos))
             for p in arc_points(self.pos, end, centre, ev.get("plane", "XY"), kind == "cw",  # type: ignore[arg-type]
@@ -98,44 +147,31 @@ class Backplot:
             self.codes.append(code)
         self.pos = end
 
-    # -- layout ------------------------------------------------------------------------------------
+    # -- reading back ------------------------------------------------------------------------------
+    def start(self) -> tuple[float, float, float]:
+        return self.xyz[0], self.xyz[1], self.xyz[2]
+
     def bounds(self) -> tuple[float, float, float, float, float, float]:
         xs, ys, zs = self.xyz[0::3], self.xyz[1::3], self.xyz[2::3]
         return min(xs), max(xs), min(ys), max(ys), min(zs), max(zs)
 
-    def transforms(self) -> tuple[Any, Any, float]:
-        """Model -> pixel maps for the plan and side views, and the common scale (px per mm)."""
-        x0, x1, y0, y1, z0, z1 = self.bounds()
-        inner = PANEL - 2 * MARGIN
-        spans = [s for s in (x1 - x0, y1 - y0, z1 - z0) if s > 1e-9]
-        scale = inner / max(spans) if spans else 1.0
-        xc, yc, zc = (x0 + x1) / 2, (y0 + y1) / 2, (z0 + z1) / 2
-        cy = TOP + PANEL / 2
-        left_c = MARGIN / 2 + PANEL / 2
-        right_c = WIDTH - MARGIN / 2 - PANEL / 2
+    def tool_colours(self) -> dict[int | None, str]:
+        """Each tool's feed colour, in order of its first move."""
+        return {tool: TOOL_COLOURS[i % len(TOOL_COLOURS)] for i, tool in enumerate(self.tool_moves)}
 
-        def plan(i: int) -> tuple[float, float]:
-            return left_c + (self.xyz[i] - xc) * scale, cy - (self.xyz[i + 1] - yc) * scale
+    def tool_ranges(self) -> Iterable[tuple[int | None, int, int]]:
+        """(tool, first segment, end) for each stretch of the path one tool drew."""
+        ends = [n for n, _ in self.changes[1:]] + [len(self.codes)]
+        for (first, tool), end in zip(self.changes, ends):
+            yield tool, max(first, 1), end
 
-        def side(i: int) -> tuple[float, float]:
-            return right_c + (self.xyz[i] - xc) * scale, cy - (self.xyz[i + 2] - zc) * scale
-
-        if self.lathe:
-            def turning(i: int) -> tuple[float, float]:
-                return left_c + (self.xyz[i + 2] - zc) * scale, cy - (self.xyz[i] - xc) * scale
-
-            def mirrored(i: int) -> tuple[float, float]:
-                return right_c + (self.xyz[i + 2] - zc) * scale, cy + (self.xyz[i] - xc) * scale
-
-            return turning, mirrored, scale
-        return plan, side, scale
-
-    def polylines(self, kind: int, view: Any) -> Iterable[list[tuple[float, float]]]:
-        """The connected runs of one kind of segment, in pixels; a run longer than ``PATH_POINTS`` comes
-        in pieces that continue from each other's last point."""
+    def polylines(self, kind: int, view: Callable[[int], Point], first: int = 1,
+                  end: int | None = None) -> Iterable[list[Point]]:
+        """The connected runs of one kind of segment (those ending at points ``first``..``end`-1), in
+        pixels; a run longer than ``PATH_POINTS`` comes in pieces that continue from each other's last point."""
         codes = self.codes
-        run: list[tuple[float, float]] = []
-        for n in range(1, len(codes)):
+        run: list[Point] = []
+        for n in range(max(first, 1), len(codes) if end is None else end):
             if codes[n] == kind:
                 if not run:
                     run.append(view(3 * (n - 1)))
@@ -149,135 +185,194 @@ class Backplot:
         if run:
             yield run
 
-    def panels(self) -> list[tuple[str, float]]:
-        """Title and left edge of each view panel."""
-        if self.lathe:
-            return [("Turning (Z across, X radius up)", MARGIN / 2),
-                    ("Mirrored (X radius down)", WIDTH - MARGIN / 2 - PANEL)]
-        return [("Plan (XY)", MARGIN / 2), ("Side (XZ)", WIDTH - MARGIN / 2 - PANEL)]
-
-    # -- SVG ---------------------------------------------------------------------------------------
-    def write_svg(self, out: TextIO) -> None:
-        """One <path> per view and kind of move that occurs (at most four), a frame and a legend.
-        Streamed with lxml's incremental writer: one path's data at a time is in memory."""
-        plan, side, scale = self.transforms()
-        size = {"width": str(WIDTH), "height": str(HEIGHT)}
-        with etree.xmlfile(_TextSink(out), encoding="utf-8") as xf:
-            xf.write_declaration()
-            with xf.element(f"{{{SVG_NS}}}svg", {**size, "viewBox": f"0 0 {WIDTH} {HEIGHT}", "font-family": "sans-serif",
-                                          "font-size": "12"}, nsmap={None: SVG_NS}):
-                xf.write("\n", etree.Element(_svg("rect"), {**size, "fill": "white"}), "\n")
-                for (title, left), view in zip(self.panels(), (plan, side)):
-                    with xf.element(_svg("g"), {"class": "view"}):
-                        frame = etree.Element(_svg("rect"), x=f"{left:g}", y=f"{TOP:g}", width=f"{PANEL:g}",
-                                              height=f"{PANEL:g}", fill="none", stroke="#bbbbbb")
-                        label = etree.Element(_svg("text"), x=f"{left + 4:g}", y=f"{TOP - 8:g}")
-                        label.text = title
-                        xf.write("\n", frame, "\n", label, "\n")
-                        for kind, cls in ((RAPID, "rapid"), (FEED, "feed")):  # cuts drawn over rapids
-                            if self.moves[kind]:
-                                for path in self._svg_paths(kind, cls, view):
-                                    xf.write(path, "\n")
-                    xf.write("\n")
-                legend = etree.Element(_svg("g"), {"class": "legend"})
-                self._svg_legend(legend, scale)
-                xf.write(legend, "\n")
-        out.write("\n")
-
-    def _svg_paths(self, kind: int, cls: str, view: Any) -> Iterable[etree._Element]:
-        """The moves of one kind as <path>s of at most ``PATH_POINTS`` points each: one path for any
-        ordinary program, and bounded memory however long the program is."""
-        parts: list[str] = []
-        count = 0
-        for run in self.polylines(kind, view):
-            parts.append("M" + " L".join(f"{px:.2f},{py:.2f}" for px, py in run))
-            count += len(run)
-            if count >= PATH_POINTS:
-                yield self._svg_path(kind, cls, " ".join(parts))
-                parts, count = [], 0
-        if parts:
-            yield self._svg_path(kind, cls, " ".join(parts))
-
-    @staticmethod
-    def _svg_path(kind: int, cls: str, d: str) -> etree._Element:
-        path = etree.Element(_svg("path"), {"class": cls, "fill": "none", "stroke": COLOURS[kind], "d": d,
-                                            "stroke-width": f"{STROKE:g}", "stroke-linejoin": "round"})
-        if kind == RAPID:
-            path.set("stroke-dasharray", f"{DASH[0]:g},{DASH[1]:g}")
-        return path
-
-    def _svg_legend(self, legend: etree._Element, scale: float) -> None:
-        y = TOP + PANEL + 28
-        x = MARGIN / 2
-        for dx, kind, label in ((0, FEED, "feed"), (130, RAPID, "rapid")):
-            line = etree.SubElement(legend, _svg("line"), x1=f"{x + dx:g}", y1=f"{y - 4:g}", x2=f"{x + dx + 30:g}",
-                                    y2=f"{y - 4:g}", stroke=COLOURS[kind])
-            line.set("stroke-width", f"{STROKE:g}")
-            if kind == RAPID:
-                line.set("stroke-dasharray", f"{DASH[0]:g},{DASH[1]:g}")
-            etree.SubElement(legend, _svg("text"), x=f"{x + dx + 36:g}", y=f"{y:g}").text = \
-                f"{label} ({self.moves[kind]})"
-        etree.SubElement(legend, _svg("text"), x=f"{x + 280:g}", y=f"{y:g}").text = self._extent_text(scale)
-
-    def _extent_text(self, scale: float) -> str:
+    def extent_text(self, scale: float) -> str:
         x0, x1, y0, y1, z0, z1 = self.bounds()
         return (f"X {x0:g}..{x1:g}  Y {y0:g}..{y1:g}  Z {z0:g}..{z1:g} mm  "
                 f"(1 mm = {scale:.3g} px)")
 
-    # -- PNG ---------------------------------------------------------------------------------------
+    # -- writing -----------------------------------------------------------------------------------
+    def write_svg(self, out: TextIO) -> None:
+        """Streamed with lxml's incremental writer: one path's data at a time is in memory."""
+        with SvgCanvas.open(out, WIDTH, HEIGHT) as canvas:
+            self.draw(canvas)
+
     def write_png(self, out: BinaryIO) -> None:
         """The same drawing rasterised with Pillow (the ``render`` extra)."""
-        try:
-            from PIL import Image, ImageDraw
-        except ImportError:
-            raise UsageError("--format png needs Pillow: pip install 'postproc[render]'") from None
-        plan, side, scale = self.transforms()
-        image = Image.new("RGB", (WIDTH, HEIGHT), "white")
-        draw = ImageDraw.Draw(image)
-        width = max(1, round(STROKE))
-        for (title, left), view in zip(self.panels(), (plan, side)):
-            draw.rectangle((left, TOP, left + PANEL, TOP + PANEL), outline="#bbbbbb")
-            draw.text((left + 4, TOP - 20), title, fill="black")
-            for run in self.polylines(RAPID, view):
-                for seg in dashes(run, DASH):
-                    draw.line(seg, fill=COLOURS[RAPID], width=width)
-            for run in self.polylines(FEED, view):  # cuts drawn over rapids
-                draw.line(run, fill=COLOURS[FEED], width=width, joint="curve")
-        y = TOP + PANEL + 28
-        x = MARGIN / 2
-        draw.line(((x, y - 4), (x + 30, y - 4)), fill=COLOURS[FEED], width=width)
-        draw.text((x + 36, y - 10), f"feed ({self.moves[FEED]})", fill="black")
-        for seg in dashes([(x + 130, y - 4), (x + 160, y - 4)], DASH):
-            draw.line(seg, fill=COLOURS[RAPID], width=width)
-        draw.text((x + 166, y - 10), f"rapid ({self.moves[RAPID]})", fill="black")
-        draw.text((x + 280, y - 10), self._extent_text(scale), fill="black")
-        image.save(out, format="PNG")
+        canvas = PngCanvas(WIDTH, HEIGHT)
+        self.draw(canvas)
+        canvas.save(out)
+
+    def draw(self, canvas: Canvas) -> None:
+        frame = Frame([self], self.lathe)
+        render(canvas, frame, [(self, Style())], lambda at: tool_legend(canvas, frame, self, at))
 
 
-def dashes(points: Sequence[tuple[float, float]], pattern: tuple[float, float]) -> Iterable[list[tuple[float, float]]]:
-    """Split a polyline into its drawn dashes; the pattern runs on across vertices (PIL has no dashes)."""
-    on, off = pattern
-    period = on + off
-    phase = 0.0  # distance into the current period
-    dash: list[tuple[float, float]] = []
-    for (ax, ay), (bx, by) in zip(points, points[1:]):
-        length = math.hypot(bx - ax, by - ay)
-        done = 0.0
-        while done < length:
-            drawing = phase < on
-            left = (on - phase) if drawing else (period - phase)
-            step = min(left, length - done)
-            t0, t1 = done / length, (done + step) / length
-            if drawing:
-                if not dash:
-                    dash.append((ax + (bx - ax) * t0, ay + (by - ay) * t0))
-                dash.append((ax + (bx - ax) * t1, ay + (by - ay) * t1))
-            done += step
-            phase += step
-            if phase >= period - 1e-9:
-                phase = 0.0
-            if phase >= on and dash:
-                yield dash
-                dash = []
-    if len(dash) > 1:
-        yield dash
+class Frame:
+    """The layout shared by every toolpath in one picture: views, one centre per axis and one scale
+    (px per mm), so the same model point is in the same place for all of them. The work origin is
+    always inside the frame."""
+
+    def __init__(self, plots: Sequence[Backplot], lathe: bool) -> None:
+        self.views = LATHE_VIEWS if lathe else MILL_VIEWS
+        lo, hi = [0.0, 0.0, 0.0], [0.0, 0.0, 0.0]  # the work origin
+        for plot in plots:
+            b = plot.bounds()
+            for a in range(3):
+                lo[a], hi[a] = min(lo[a], b[2 * a]), max(hi[a], b[2 * a + 1])
+        used = {a for v in self.views for a in (v.h, v.v)}
+        spans = [hi[a] / 2 - lo[a] / 2 for a in used]  # halves: no overflow near the float range
+        spans = [s for s in spans if s > 1e-9]
+        self.scale = (PANEL - 2 * MARGIN) / (2 * max(spans)) if spans else 1.0
+        self.centre = [lo[a] / 2 + hi[a] / 2 for a in range(3)]
+
+    def to_px(self, view: View, p: Sequence[float]) -> Point:
+        sign = -1.0 if view.down else 1.0
+        h = view.left + PANEL / 2 + (p[view.h] - self.centre[view.h]) * self.scale
+        v = view.top + PANEL / 2 - sign * (p[view.v] - self.centre[view.v]) * self.scale
+        return h, v
+
+    def mapper(self, view: View, plot: Backplot) -> Callable[[int], Point]:
+        """Point index (into ``plot.xyz``, times three) -> pixel, for one view."""
+        xyz, scale, sign = plot.xyz, self.scale, (-1.0 if view.down else 1.0)
+        h0 = view.left + PANEL / 2 - self.centre[view.h] * scale
+        v0 = view.top + PANEL / 2 + sign * self.centre[view.v] * scale
+        hi, vi = view.h, view.v
+
+        def px(i: int) -> Point:
+            return h0 + xyz[i + hi] * scale, v0 - sign * xyz[i + vi] * scale
+        return px
+
+    def ticks(self, view: View, axis: int) -> list[tuple[float, str]]:
+        """(pixel offset from the panel's centre, label) of round values along one panel edge."""
+        if not (self.scale > 0 and math.isfinite(self.scale)):
+            return []
+        half = PANEL / 2 / self.scale
+        c = self.centre[axis]
+        step = nice_step(2 * half / TICKS)
+        if not (math.isfinite(step) and step > 0 and math.isfinite(c)) or abs(c) / step > 1e12:
+            return []
+        places = max(0, -math.floor(math.log10(step)))
+        first = math.ceil((c - half) / step)
+        out = []
+        for k in range(first, first + TICKS + 2):
+            value = k * step
+            if value > c + half:
+                break
+            label = f"{value:.{places}f}"
+            out.append(((value - c) * self.scale, "0" if float(label) == 0 else label))
+        return out
+
+
+def nice_step(raw: float) -> float:
+    """The next step of 1, 2 or 5 times a power of ten at least ``raw``."""
+    if not (raw > 0 and math.isfinite(raw)):
+        return 0.0
+    power = 10.0 ** math.floor(math.log10(raw))
+    for m in (1, 2, 5, 10):
+        if m * power >= raw * (1 - 1e-9):
+            return m * power
+    return 10 * power
+
+
+def render(canvas: Canvas, frame: Frame, layers: Sequence[tuple[Backplot, Style]],
+           legend: Callable[[Point], None], marks: Callable[[View], None] | None = None) -> None:
+    """Panels with ticks, each layer's path (rapids first, cuts over them), the origin and start marks,
+    then ``marks`` (a verify overlay's deviation) and the legend in its cell."""
+    for view in frame.views:
+        with canvas.group("view", **{"data-view": view.title}):
+            panel(canvas, frame, view)
+            for plot, style in layers:
+                draw_path(canvas, frame, view, plot, style)
+            origin = frame.to_px(view, (0.0, 0.0, 0.0))
+            with canvas.group("origin"):
+                canvas.circle(origin, 6, "black", cls="origin")
+                canvas.line((origin[0] - 9, origin[1]), (origin[0] + 9, origin[1]), "black")
+                canvas.line((origin[0], origin[1] - 9), (origin[0], origin[1] + 9), "black")
+            for plot, style in layers[:1]:
+                canvas.circle(frame.to_px(view, plot.start()), 4, START_COLOUR, fill=START_COLOUR, cls="start")
+            if marks is not None:
+                marks(view)
+    col, row = LEGEND_CELL
+    with canvas.group("legend"):
+        legend((LEFT + col * (PANEL + GAP_X), TOP + row * (PANEL + GAP_Y) + 10))
+
+
+def panel(canvas: Canvas, frame: Frame, view: View) -> None:
+    """Frame, title, ticks along the bottom and left edges, and the axes' names with their unit."""
+    left, top = view.left, view.top
+    canvas.rect(left, top, PANEL, PANEL, "#bbbbbb")
+    canvas.text((left + 4, top - 8), view.title)
+    mid_h, mid_v = left + PANEL / 2, top + PANEL / 2
+    sign = -1.0 if view.down else 1.0
+    with canvas.group("ticks", **{"data-axis": AXIS_NAMES[view.h]}):
+        for off, label in frame.ticks(view, view.h):
+            x = mid_h + off
+            canvas.line((x, top + PANEL), (x, top + PANEL + 5), "#555555", cls="tick")
+            canvas.text((x, top + PANEL + 18), label, anchor="middle", cls="tick-label")
+    with canvas.group("ticks", **{"data-axis": AXIS_NAMES[view.v]}):
+        for off, label in frame.ticks(view, view.v):
+            y = mid_v - sign * off
+            canvas.line((left - 5, y), (left, y), "#555555", cls="tick")
+            canvas.text((left - 8, y + 4), label, anchor="end", cls="tick-label")
+    radius = " radius" if view.v == 0 and frame.views is LATHE_VIEWS else ""
+    canvas.text((left + PANEL, top + PANEL + 34), f"{AXIS_NAMES[view.h]} (mm)", anchor="end", cls="unit")
+    canvas.text((left - 8, top - 8 + (PANEL + 22 if view.down else 0)),
+                f"{AXIS_NAMES[view.v]}{radius} (mm)", anchor="end", cls="unit")
+
+
+def draw_path(canvas: Canvas, frame: Frame, view: View, plot: Backplot, style: Style) -> None:
+    """Rapids dashed, then feeds solid over them, one <path> per tool, kind and ``PATH_POINTS`` points."""
+    px = frame.mapper(view, plot)
+    colours = plot.tool_colours()
+    for kind, cls in ((RAPID, "rapid"), (FEED, "feed")):
+        for tool, first, end in plot.tool_ranges():
+            colour = style.rapid_colour if kind == RAPID else (style.colour or colours[tool])
+            extra = {"data-tool": tool_name(tool)}
+            if style.side:
+                extra["data-side"] = style.side
+            if style.opacity < 1.0:
+                extra["opacity"] = f"{style.opacity:g}"
+            runs: list[list[Point]] = []
+            count = 0
+            for run in plot.polylines(kind, px, first, end):
+                runs.append(run)
+                count += len(run)
+                if count >= PATH_POINTS:
+                    canvas.path(runs, colour, style.width, DASH if kind == RAPID else None, cls, **extra)
+                    runs, count = [], 0
+            if runs:
+                canvas.path(runs, colour, style.width, DASH if kind == RAPID else None, cls, **extra)
+
+
+def tool_name(tool: int | None) -> str:
+    return "no tool" if tool is None else f"T{tool}"
+
+
+def tool_legend(canvas: Canvas, frame: Frame, plot: Backplot, at: Point) -> None:
+    """Line styles, the tools with their colours and move counts, the marks, and the extent."""
+    x, y = at
+    canvas.line((x, y - 4), (x + 30, y - 4), LINE_STYLE_COLOUR, STROKE)
+    canvas.text((x + 36, y), f"feed ({plot.moves[FEED]})")
+    canvas.line((x + 130, y - 4), (x + 160, y - 4), RAPID_COLOUR, STROKE, DASH)
+    canvas.text((x + 166, y), f"rapid ({plot.moves[RAPID]})")
+    y += 28
+    canvas.text((x, y), "Tools (feed colour)")
+    for tool, colour in plot.tool_colours().items():
+        y += 20
+        rapids, feeds = plot.tool_moves[tool]
+        canvas.line((x, y - 4), (x + 30, y - 4), colour, 3, cls="tool-swatch")
+        canvas.text((x + 36, y), f"{tool_name(tool)}: {feeds} feed, {rapids} rapid", cls="tool")
+    y += 28
+    marks(canvas, (x, y), plot)
+    canvas.text((x, y + 48), plot.extent_text(frame.scale))
+
+
+def marks(canvas: Canvas, at: Point, plot: Backplot) -> None:
+    """The legend of the start and origin marks."""
+    x, y = at
+    canvas.circle((x + 15, y - 4), 4, START_COLOUR, fill=START_COLOUR)
+    sx, sy, sz = plot.start()
+    canvas.text((x + 36, y), f"start X{sx:g} Y{sy:g} Z{sz:g}")
+    y += 20
+    canvas.circle((x + 15, y - 4), 6, "black")
+    canvas.text((x + 36, y), "work origin X0 Y0 Z0")

@@ -102,7 +102,8 @@ EXAMPLES = {
   postproc toolpath o1003.nc --dialect fanuc --format svg -o o1003.svg""",
     "verify": """examples:
   postproc translate o1001.nc --from fanuc --to grbl -o o1001.gcode
-  postproc verify o1001.nc o1001.gcode --from fanuc --to grbl    # exit 1 above the tolerance""",
+  postproc verify o1001.nc o1001.gcode --from fanuc --to grbl    # exit 1 above the tolerance
+  postproc verify o1001.nc o1001.gcode --from fanuc --to grbl --plot diff.svg   # both toolpaths, overlaid""",
     "ir": """example:
   postproc ir o1001.nc --dialect fanuc -o o1001.xml""",
     "dialects": """examples:
@@ -182,6 +183,9 @@ def build_parser() -> argparse.ArgumentParser:
     v.add_argument("--allow-ignored", action="store_true",
                    help="accept settings that move the tool (cutter compensation, tool length or work offset, "
                         "path control) differing between the programs; they are listed either way")
+    v.add_argument("--plot", metavar="FILE.svg|FILE.png",
+                   help="also draw both toolpaths over each other with the largest deviation marked (SVG, or "
+                        "PNG with the render extra); written whatever the verdict")
     v.set_defaults(run=cmd_verify)
 
     i = command("ir", "print a program's IR as XML",
@@ -309,7 +313,10 @@ def cmd_toolpath(args: argparse.Namespace) -> int:
 
 
 def cmd_verify(args: argparse.Namespace) -> int:
+    from .overlay import Overlay, plot_format
     from .verify import verify_lines
+    fmt = plot_format(args.plot) if args.plot else None
+    overlay = Overlay(_name(args.input), _name(args.output)) if fmt else None
     setup = _setup(args.machine, args.lib)
     target_setup = _setup(args.target_machine, args.lib) if args.target_machine else None  # the same machine
     if args.input == "-" and args.output == "-":
@@ -317,7 +324,10 @@ def cmd_verify(args: argparse.Namespace) -> int:
     with _open_program(args.input) as a, _open_program(args.output) as b:
         report = verify_lines(a, b, file_in=_name(args.input), file_out=_name(args.output), source=args.source,
                               target=args.target, setup=setup, target_setup=target_setup,
-                              tolerance=args.tolerance, allow_ignored=args.allow_ignored)
+                              tolerance=args.tolerance, allow_ignored=args.allow_ignored, overlay=overlay)
+    if overlay is not None:
+        write_output(args.plot, lambda out: overlay.write(out, str(fmt), report), binary=fmt == "png",
+                     input_path=_input_path(args.input))
     print(report.summary())
     return 0 if report.ok else 1
 

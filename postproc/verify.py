@@ -21,7 +21,10 @@ from .errors import Diagnostics, ErrorList, UsageError
 from .plugins import Registry
 from .setup import MachineSetup
 from .geometry import CENTRE_KEYS, PLANE_INDEX, arc_sweep
+from .overlay import Overlay
 from .toolpath import MOVES_THE_TOOL, Event, start_position, toolpath_events
+
+Point = tuple[float, float, float]
 
 EVENT_TOLERANCE = 1e-6
 """Numbers in machine events (dwell seconds, angles) compare within this."""
@@ -56,6 +59,9 @@ class Report:
     max_deviation: float = 0.0
     where: tuple[int, int] | None = None
     """Source lines (IN, OUT) of the largest deviation."""
+    where_at: tuple[Point, Point] | None = None
+    """End points (IN, OUT) of the moves with the largest deviation: X, Y, Z in mm, true geometry (a
+    lathe's x as a radius), as a backplot draws them."""
     mismatch: str | None = None
     mismatch_at: tuple[int | None, int | None] = (None, None)
     notes: list[str] = field(default_factory=list)
@@ -267,6 +273,8 @@ def compare(events_in: Iterable[Event], events_out: Iterable[Event], *, start_in
             report.mismatch = problem
             report.mismatch_at = (_line(a), _line(b))
     compare_machine_codes(report, codes_in, codes_out)
+    if head_in.get("x_mode") == "diameter" and report.where_at is not None:  # both diameters: as radii
+        report.where_at = tuple((x / 2.0, y, z) for x, y, z in report.where_at)  # type: ignore[assignment]
     return report
 
 
@@ -356,7 +364,12 @@ def _differ(a: Move | Event | None, b: Move | Event | None, report: Report) -> s
     if report.where is None or dev > report.max_deviation:
         report.max_deviation = dev
         report.where = (a.last_line, b.last_line)
+        report.where_at = (_xyz(a.end), _xyz(b.end))
     return None
+
+
+def _xyz(p: dict[str, float]) -> Point:
+    return p.get("x", 0.0), p.get("y", 0.0), p.get("z", 0.0)
 
 
 def compare_after_end(report: Report, lines_in: list[int], lines_out: list[int]) -> None:
@@ -376,9 +389,11 @@ def compare_after_end(report: Report, lines_in: list[int], lines_out: list[int])
 def verify_lines(lines_in: Iterable[str], lines_out: Iterable[str], *, file_in: str, file_out: str,
                  source: str, target: str, setup: MachineSetup | None = None,
                  target_setup: MachineSetup | None = None, tolerance: float = 0.001,
-                 registry: Registry | None = None, allow_ignored: bool = False) -> Report:
+                 registry: Registry | None = None, allow_ignored: bool = False,
+                 overlay: Overlay | None = None) -> Report:
     """Compare two programs given as lines. Raises ``ErrorList`` with both programs' errors, if any.
-    ``allow_ignored``: settings that move the tool may differ (they are listed either way)."""
+    ``allow_ignored``: settings that move the tool may differ (they are listed either way).
+    ``overlay``: collects both toolpaths as they stream past, for a picture of the two."""
     if not math.isfinite(tolerance) or tolerance < 0:
         raise UsageError(f"the tolerance must be a finite number of at least 0, got {tolerance:g}")
     setup = setup or MachineSetup()
@@ -394,6 +409,11 @@ def verify_lines(lines_in: Iterable[str], lines_out: Iterable[str], *, file_in: 
     events_out = toolpath_events(lines_out, file=file_out, dialect=target, setup=target_setup,
                                  registry=registry, diagnostics=diag_out, check=False, live_after_end=after_out,
                                  unsimulated=settings_out)
+    if overlay is not None:
+        from .plugins import default_registry
+        reading = (registry or default_registry()).dialect(source)
+        overlay.begin(start_position(setup), start_position(target_setup), reading.reads_lathe(setup))
+        events_in, events_out = overlay.source_events(events_in), overlay.target_events(events_out)
     report = compare(events_in, events_out, start_in=start_position(setup),
                      start_out=start_position(target_setup), tolerance=tolerance)
     report.allow_ignored = allow_ignored

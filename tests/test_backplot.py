@@ -1,4 +1,4 @@
-"""Backplot: the SVG is well-formed with one path per view and kind of move; the PNG is not blank."""
+"""Backplot: the SVG is well-formed with one path per view, tool and kind of move; the PNG is not blank."""
 
 from __future__ import annotations
 
@@ -26,12 +26,12 @@ def test_svg_parses_and_has_a_rapid_and_a_feed_path_per_view() -> None:
     root = svg_of(PROGRAM)
     assert root.tag == SVG + "svg" and root.get("viewBox") == f"0 0 {WIDTH} {HEIGHT}"
     paths = root.findall(f".//{SVG}path")
-    assert len(paths) == 4
-    assert sorted(p.get("class") for p in paths) == ["feed", "feed", "rapid", "rapid"]
+    assert len(paths) == 6  # plan, front and side views
+    assert sorted(p.get("class") for p in paths) == ["feed"] * 3 + ["rapid"] * 3
     assert all(p.get("stroke-dasharray") for p in paths if p.get("class") == "rapid")
     assert not any(p.get("stroke-dasharray") for p in paths if p.get("class") == "feed")
     texts = [t.text for t in root.iter(SVG + "text")]
-    assert "Plan (XY)" in texts and "Side (XZ)" in texts
+    assert "Plan (XY)" in texts and "Front (XZ)" in texts and "Side (YZ)" in texts
     assert any(t.startswith("feed (") for t in texts) and any(t.startswith("rapid (") for t in texts)
 
 
@@ -53,8 +53,8 @@ def test_arcs_are_linearised_finely() -> None:
     assert all(abs(math.hypot(x, y) - 10) < 1e-9 and y >= -1e-9 for x, y in zip(xs, ys))
 
 
-def test_only_rapids_gives_two_paths() -> None:
-    assert len(svg_of("G21 G90\nG00 X10. Y5. Z5.\nZ50.\n").findall(f".//{SVG}path")) == 2
+def test_only_rapids_gives_a_path_per_view() -> None:
+    assert len(svg_of("G21 G90\nG00 X10. Y5. Z5.\nZ50.\n").findall(f".//{SVG}path")) == 3
 
 
 def test_a_program_without_moves_still_draws() -> None:
@@ -99,7 +99,7 @@ def test_a_long_run_is_split_into_bounded_paths_that_join_up(monkeypatch: pytest
     moves = "".join(f"X{i}. Y{(i % 3)}.\n" for i in range(1, 26))
     root = svg_of("G21 G90\nG00 X0. Y0. Z0.\nG01 F100.\n" + moves + "M30\n")
     feeds = [p for p in root.findall(f".//{SVG}path") if p.get("class") == "feed"]
-    assert len(feeds) == 6  # 25 moves -> 3 pieces per view
+    assert len(feeds) == 9  # 25 moves -> 3 pieces per view
     plan = [p.get("d") for p in feeds[:3]]
     ends = [d.split(" L")[-1] for d in plan[:-1]]
     starts = [d[1:].split(" L")[0] for d in plan[1:]]
