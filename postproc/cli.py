@@ -116,7 +116,7 @@ EXAMPLES = {
 """One example (or a few) per command, shown by its ``--help``."""
 
 STDIO = "'-' reads standard input"
-MACHINE = "machine set-up XML (decimal-point mode, cycle parameters, output format, ...; see README)"
+MACHINE = "machine set-up XML (decimal-point mode, cycle parameters, output format, ...; see docs/setup-reference.md)"
 LIB = "folder searched for subprograms (repeatable; after the set-up's <Library>)"
 OUTPUT = "write here instead of standard output ('-': standard output); written only on success, atomically"
 
