@@ -9,14 +9,25 @@ are kept as backplots (flat arrays), so this costs memory only when a picture is
 from __future__ import annotations
 
 import textwrap
-from typing import TYPE_CHECKING, Any, BinaryIO, Iterable, Iterator, TextIO
+from typing import Any, BinaryIO, Iterable, Iterator, Protocol, TextIO
 
 from .backplot import (HEIGHT, RAPID, FEED, STROKE, WIDTH, Backplot, Frame, Style, View, marks, render)
 from .canvas import Canvas, PngCanvas, Point, SvgCanvas
 from .errors import UsageError
 
-if TYPE_CHECKING:
-    from .verify import Report
+
+class Report(Protocol):
+    """What the overlay reads of a verify report (``postproc.verify.Report``; named here, not imported,
+    since verify draws through this module)."""
+
+    max_deviation: float
+    where: tuple[int, int] | None
+    where_at: Any
+    """The largest deviation's end points (IN, OUT) in true geometry, or None."""
+    mismatch: str | None
+    mismatch_at: tuple[int | None, int | None]
+
+    def summary(self) -> str: ...
 
 SOURCE = Style(colour="#8fb8de", rapid_colour="#c7c7c7", width=5.0, side="in", opacity=0.7)
 TARGET = Style(colour="#08306b", rapid_colour="#d62728", width=1.2, side="out")
