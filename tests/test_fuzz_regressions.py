@@ -129,3 +129,11 @@ def test_the_active_work_system_selected_again_keeps_the_arc_checked() -> None:
                   source="linuxcnc", target="grbl")
     assert [str(e) for e in exc.value.errors] == [
         "t.ngc:3:1: error: arc radius 1.0000 mm is too small for a chord of 10.0000 mm"]
+
+
+def test_machine_coordinates_without_a_move_are_not_written_beside_a_bare_motion_code() -> None:
+    """make fuzz: Fanuc 'G01 G53' (no axis words, no feed rate) became LinuxCNC 'G53' alone, which rs274
+    refuses ("Must use g0 or g1 with g53"); G53 without a move does nothing, so nothing is written."""
+    out = io.StringIO()
+    translate(io.StringIO(HEAD + "G01 G53\n"), out, file="t.nc", source="fanuc", target="linuxcnc")
+    assert out.getvalue().splitlines()[1] == "(G01 G53)"

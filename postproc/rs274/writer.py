@@ -404,8 +404,8 @@ class WordWriter(Writer):
         """Machine coordinates qualify the block's move; without one they do nothing, and RS274/NGC refuses
         them unless G0 or G1 is in force, so they are not written."""
         motion = block.sections.get("Motion")
-        if motion is None:
-            return []
+        if motion is None or not getattr(motion, "axes", None):
+            return []  # no move to qualify (``G01 G53``): it does nothing
         if getattr(motion, "mode", None) not in self.MACHINE_MOVES:
             self.unsupported(f"a {motion.mode} move in machine coordinates (its machine-coordinate code "  # type: ignore[attr-defined]
                              f"moves only {' or '.join(sorted(self.MACHINE_MOVES))})", block)
