@@ -137,3 +137,13 @@ def test_machine_coordinates_without_a_move_are_not_written_beside_a_bare_motion
     out = io.StringIO()
     translate(io.StringIO(HEAD + "G01 G53\n"), out, file="t.nc", source="fanuc", target="linuxcnc")
     assert out.getvalue().splitlines()[1] == "(G01 G53)"
+
+
+def test_a_zero_radius_arc_is_refused_for_linuxcnc() -> None:
+    """make fuzz: Fanuc 'G02 F100. I0.' (an arc that does nothing) reached LinuxCNC, which refuses it."""
+    with pytest.raises(ErrorList) as exc:
+        translate(io.StringIO(HEAD + "G02 F100. I0.\n"), io.StringIO(), file="t.nc", source="fanuc",
+                  target="linuxcnc")
+    assert [str(e) for e in exc.value.errors] == [
+        "t.nc:2:1: error: the linuxcnc dialect cannot express an arc of zero radius (a controller that runs it "
+        "does nothing; rs274 refuses it: \"Zero-radius arc\")"]

@@ -115,6 +115,10 @@ class LinuxcncWriter(WordWriter):
         if s.mode in ("home", "home2") and self._cutter_on:
             self.unsupported("G28/G30 with cutter compensation on (rs274: \"Cannot use g28 or g30 with cutter "
                              "radius comp\")", block)
+        if s.mode in ("cw", "ccw") and s.radius is None and s.center is not None \
+                and all(v.__class__ is float and v == 0.0 for v in s.center.values()):
+            self.unsupported("an arc of zero radius (a controller that runs it does nothing; rs274 refuses it: "
+                             "\"Zero-radius arc\")", block)
         return WordWriter.motion_words(self, s, block)
 
     def machine_coordinates_words(self, s: Any, block: Block) -> list[str]:
