@@ -145,7 +145,7 @@ def test_ticks_are_round_evenly_spaced_and_agree_with_the_path() -> None:
 
 def test_a_lathe_draws_zx_with_ticks_in_radius() -> None:
     lathe = MachineSetup(input=InputSettings(machine_type="lathe"))
-    root = svg_of("G00 X100. Z5.\nG01 Z-20. F0.2\nX60.\n", setup=lathe)
+    root = svg_of("S500 M03\nG00 X100. Z5.\nG01 Z-20. F0.2\nX60.\n", setup=lathe)
     found = views(root)
     assert list(found) == ["Turning (Z across, X radius up)", "Mirrored (X radius down)"]
     turning = found["Turning (Z across, X radius up)"]

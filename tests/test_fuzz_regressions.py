@@ -147,3 +147,32 @@ def test_a_zero_radius_arc_is_refused_for_linuxcnc() -> None:
     assert [str(e) for e in exc.value.errors] == [
         "t.nc:2:1: error: the linuxcnc dialect cannot express an arc of zero radius (a controller that runs it "
         "does nothing; rs274 refuses it: \"Zero-radius arc\")"]
+
+
+PER_REV_STOPPED = [
+    ("G95 G01 X5. F0.2\n", "t.nc:2:9: error: a feed-per-revolution move with the spindle stopped: the axes "
+                           "would wait for revolutions that never come (start the spindle first, or feed per minute)"),
+    ("S500 M03\nG95 G01 X5. F0.2 M05\nG02 X6. I0.5\n",
+     "t.nc:4:5: error: a feed-per-revolution move with the spindle stopped: the axes would wait for "
+     "revolutions that never come (start the spindle first, or feed per minute)"),
+]
+
+
+@pytest.mark.parametrize("body, message", PER_REV_STOPPED)
+@pytest.mark.parametrize("target", ["fanuc", "linuxcnc"])
+def test_a_feed_per_revolution_move_with_the_spindle_stopped_is_refused(body: str, message: str,
+                                                                      target: str) -> None:
+    """rs274 refuses it ("Spindle not turning in G95"); a Fanuc waits forever: neither is a toolpath."""
+    with pytest.raises(ErrorList) as exc:
+        translate(io.StringIO(HEAD + body), io.StringIO(), file="t.nc", source="fanuc", target=target)
+    assert [str(e) for e in exc.value.errors] == [message]
+
+
+def test_a_feed_per_revolution_move_runs_once_the_spindle_turns() -> None:
+    """The spindle start in the same block acts before the motion; the stop beside the last cut after it."""
+    program = HEAD + "G95 S500 M03 G01 X5. F0.2\nX6. M05\nG00 X0.\n"
+    out = io.StringIO()
+    translate(io.StringIO(program), out, file="t.nc", source="fanuc", target="linuxcnc")
+    report = verify_lines(io.StringIO(program), io.StringIO(out.getvalue()), file_in="a.nc", file_out="b.nc",
+                          source="fanuc", target="linuxcnc", tolerance=0.0)
+    assert report.ok

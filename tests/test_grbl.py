@@ -122,7 +122,7 @@ def test_a_plain_pause_stays_a_pause() -> None:
               "<Cycles orientation=\"stop\"/> pauses for the operator instead"),
     ("/G04 X3.\n", "t.nc:2:1: error: the grbl dialect cannot express block delete '/' (grbl ignores it: the "
                    "block would always run)"),
-    ("G95 G01 X5. F0.1\n", "t.nc:2:1: error: the grbl dialect cannot express feed mode per_rev"),
+    ("S500 M03 G95 G01 X5. F0.1\n", "t.nc:2:1: error: the grbl dialect cannot express feed mode per_rev"),
     ("G09 G01 X5. F100.\n", "t.nc:2:1: error: the grbl dialect cannot express a one-shot exact stop"),
     ("G68 X0. Y0. R30.\n", "t.nc:2:1: error: G68 (coordinate rotation) from fanuc has no equivalent in grbl"),
 ])

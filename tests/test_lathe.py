@@ -177,9 +177,9 @@ def test_u_and_w_are_increments_of_x_and_z() -> None:
 def test_radius_programming_reads_x_as_a_radius() -> None:
     setup = MachineSetup(input=InputSettings(machine_type="lathe", x_programming="radius"),
                          machine=MachineSettings(axes="XZ"))
-    evs = events("G00 X30. Z5.\nG01 U-5. F0.2\n", "fanuc", setup)
+    evs = events("S500 M03\nG00 X30. Z5.\nG01 U-5. F0.2\n", "fanuc", setup)
     assert evs[0] == {"toolpath": 1, "units": "mm", "dialect": "fanuc", "feed_mode": "per_rev"}  # G99 at start
-    assert [(e["x"], e["z"]) for e in evs[1:]] == [(30, 5), (25, 5)]
+    assert [(e["x"], e["z"]) for e in evs[2:]] == [(30, 5), (25, 5)]
 
 
 def test_coordinate_setting_and_spindle_clamp() -> None:
@@ -276,9 +276,9 @@ def test_gsk_output_writes_every_word() -> None:
     """A Fanuc G71 without its first block: GSK gets one, with the values the source used."""
     setup = MachineSetup(input=InputSettings(machine_type="lathe"),
                          lathe_cycles=LatheCycleSettings(rough_depth=1.5, rough_retract=0.4))
-    text = write("G00 X60. Z5.\nG71 P10 Q20 U0.5 W0.1 F0.25\nN10 G00 X20.\nN20 G01 X56. Z-20.\n", "fanuc", "gsk",
+    text = write("S500 M03\nG00 X60. Z5.\nG71 P10 Q20 U0.5 W0.1 F0.25\nN10 G00 X20.\nN20 G01 X56. Z-20.\n", "fanuc", "gsk",
                  setup)
-    assert text == ("G99 G00 X60. Z5.\nG71 U1.5 R0.4\nG71 P10 Q20 U0.5 W0.1 F0.25\nN10 G00 X20.\n"
+    assert text == ("G99 S500 M03\nG00 X60. Z5.\nG71 U1.5 R0.4\nG71 P10 Q20 U0.5 W0.1 F0.25\nN10 G00 X20.\n"
                     "N20 G01 X56. Z-20.\n")
 
 
@@ -308,11 +308,11 @@ def test_g70_without_a_roughing_profile_is_a_located_error() -> None:
 def test_one_block_form_written_and_read() -> None:
     """Fanuc 10/11/15-T: G71 P Q U W D F in one block; GSK gets it as two."""
     setup = MachineSetup(input=InputSettings(machine_type="lathe", lathe_cycle_format="one-block"))
-    program = "G00 X60. Z5.\nG71 P10 Q20 U0.5 W0.1 D2. F0.25\nN10 G00 X20.\nN20 G01 X56. Z-20.\n"
-    cycle = blocks(program, "fanuc", setup)[1].sections["LatheCycle"]
+    program = "S500 M03\nG00 X60. Z5.\nG71 P10 Q20 U0.5 W0.1 D2. F0.25\nN10 G00 X20.\nN20 G01 X56. Z-20.\n"
+    cycle = blocks(program, "fanuc", setup)[2].sections["LatheCycle"]
     assert isinstance(cycle, LatheCycle) and cycle.form == "one" and cycle.params["depth"] == 2.0
     gsk = write(program, "fanuc", "gsk", setup)
-    assert gsk.splitlines()[1:3] == ["G71 U2. R1.", "G71 P10 Q20 U0.5 W0.1 F0.25"]
+    assert gsk.splitlines()[2:4] == ["G71 U2. R1.", "G71 P10 Q20 U0.5 W0.1 F0.25"]
     assert write(SEED, "gsk", "fanuc", setup).splitlines()[3:5] == [
         "(G71 U2. R1.: in the next block)", "G71 P10 Q20 U0.5 W0.1 D2. F0.25"]
     assert deviation(SEED, write(SEED, "gsk", "fanuc", setup), "gsk", "fanuc", setup) == 0.0
@@ -514,12 +514,12 @@ def test_data_parameters_are_millimetres_in_an_inch_program() -> None:
 
 
 def test_g32_thread_cutting_is_a_synchronised_move() -> None:
-    program = "G99 G00 X30. Z5.\nG32 Z-20. F1.5\nG00 X40.\n"
+    program = "G99 S500 M03 G00 X30. Z5.\nG32 Z-20. F1.5\nG00 X40.\n"
     b_setup = MachineSetup(input=InputSettings(machine_type="lathe", gcode_system="B"))
-    assert write(program, "gsk", "fanuc", b_setup) == "G95 G00 X30. Z5.\nG33 Z-20. F1.5\nG00 X40.\n"
+    assert write(program, "gsk", "fanuc", b_setup) == "G95 G00 X30. Z5. S500 M03\nG33 Z-20. F1.5\nG00 X40.\n"
     assert blocks(program, "gsk")[1].sections["Motion"].mode == "thread"
     evs = events(program, "gsk")
-    assert evs[2] == {"line": 2, "move": "feed", "x": 30, "z": -20, "f": 1.5}
+    assert evs[3] == {"line": 2, "move": "feed", "x": 30, "z": -20, "f": 1.5}
     with pytest.raises(ErrorList):
         write(program, "gsk", "grbl")
 

@@ -129,15 +129,15 @@ def test_inch_arc_converts_centre_offsets() -> None:
 
 
 def test_per_rev_feed_is_stated_in_the_header() -> None:
-    events = run("G21 G90 G95\nG01 X1. F0.2")
+    events = run("G21 G90 G95\nS500 M03\nG01 X1. F0.2")
     assert events[0] == {**HEADER, "feed_mode": "per_rev"}
-    assert_events(events[1:], [{"line": 2, "move": "feed", "x": 1, "y": 0, "z": 0, "f": 0.2}])
+    assert_events(events[1:], [{"line": 2, "event": "spindle", "dir": "cw"}, {"line": 3, "move": "feed", "x": 1, "y": 0, "z": 0, "f": 0.2}])
 
 
 def test_a_later_feed_mode_change_is_marked_on_the_move() -> None:
-    events = run("G21 G90\nG01 X1. F100.\nG95 X2. F0.1")
+    events = run("G21 G90 S500 M03\nG01 X1. F100.\nG95 X2. F0.1")
     assert events[0] == HEADER
-    assert events[2]["feed_mode"] == "per_rev" and events[2]["f"] == 0.1
+    assert events[3]["feed_mode"] == "per_rev" and events[3]["f"] == 0.1
 
 
 def test_feed_move_without_feed_is_an_error() -> None:

@@ -15,6 +15,8 @@ from math import hypot
 from typing import NoReturn
 
 from postproc.block_rules import ArcError, arc_centre, check_values
+from postproc.errors import ProgramError
+from postproc.event_order import MOVING, after_motion
 from postproc.geometry import ARC_TOLERANCE_MM, PLACES
 from postproc.expr import Expr
 from postproc.ir import Block, Motion
@@ -35,11 +37,15 @@ class ModalStateSyntax(Syntax):
         sections = block.sections
         if not sections:
             return
+        state = ctx.state
+        spindle = state.spindle
         if not changes_nothing(sections):
-            ctx.state.apply(sections)
+            state.apply(sections)
         motion = sections.get("Motion")
         if motion is not None:
             self._move(block, ctx, motion)  # type: ignore[arg-type]
+            if state.feed_mode == "per_rev":
+                _check_turning(block, ctx, motion, spindle)  # type: ignore[arg-type]
         if "Feed" in sections or "SpindleSpeed" in sections:
             check_values(block, ctx)  # after the state is carried: an error keeps the block's settings
 
@@ -70,6 +76,27 @@ class ModalStateSyntax(Syntax):
             for axis, value in motion.axes.items():
                 if isinstance(value, Expr):
                     pos[axis] = None  # computed: known only when the program runs
+
+
+_FEED_MOTION = frozenset(("linear", "cw", "ccw", "thread"))
+
+
+def _check_turning(block: Block, ctx: Context, motion: Motion, before: str) -> None:
+    """Refuse a feed-per-revolution move while the spindle stands: the axes would wait for revolutions
+    that never come (a Fanuc waits forever; LinuxCNC refuses the block). ``before`` is the spindle's
+    state before the block: a stop in the block acts after its motion, a start before it."""
+    sections = block.sections
+    control = sections.get("SpindleControl")
+    turning = before if control is None or after_motion("SpindleControl", control) \
+        else control.direction  # type: ignore[attr-defined]
+    if turning != "stop" or not motion.axes:
+        return
+    if motion.mode not in _FEED_MOTION and MOVING.isdisjoint(sections.keys()):
+        return  # a rapid move needs no revolutions
+    letter = next(iter(motion.axes))
+    raise ProgramError("a feed-per-revolution move with the spindle stopped: the axes would wait for "
+                       "revolutions that never come (start the spindle first, or feed per minute)",
+                       ctx.at(block, ctx.column_of(block, letter)))
 
 
 def _lathe_move(ctx: Context, motion: Motion) -> None:
