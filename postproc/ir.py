@@ -11,7 +11,7 @@ block actually programs: a million-block program must stream without pressure on
 
 from __future__ import annotations
 
-from typing import Any, ClassVar, Iterator
+from typing import Any, Callable, ClassVar, Iterator
 
 from lxml import etree
 
@@ -655,11 +655,35 @@ class CompoundMotion(Section):
     actions), in execution order. Moves inside are absolute, in program units."""
 
     XNAME = KEY = "CompoundMotion"
-    __slots__ = ("term", "items")
+    __slots__ = ("term", "_items", "_make")
 
     def __init__(self, term: str, items: list[Section]) -> None:
         self.term = term
-        self.items = items
+        self._items: list[Section] | None = items
+        self._make: Callable[[], list[Section]] | None = None
+
+    @classmethod
+    def lazy(cls, term: str, make: Callable[[], list[Section]]) -> "CompoundMotion":
+        """The motion made only when something reads it: a target that keeps the construct native (a
+        Fanuc cycle written as a Fanuc cycle) never pays for its expansion. ``make`` raises the located
+        error the expansion finds, at the first reading."""
+        motion = cls(term, [])
+        motion._items, motion._make = None, make
+        return motion
+
+    @property
+    def items(self) -> list[Section]:
+        items = self._items
+        if items is None:
+            make, self._make = self._make, None
+            self._items = items = []  # a failed expansion is reported once; the run has failed then
+            if make is not None:
+                self._items = items = make()
+        return items
+
+    @items.setter
+    def items(self, items: list[Section]) -> None:
+        self._items, self._make = items, None
 
     @classmethod
     def from_xml(cls, el: etree._Element) -> "CompoundMotion":

@@ -106,6 +106,28 @@ class ToolPath:
         return dict(self.pos)
 
 
+class _Whereabouts(ToolPath):
+    """A tool path that follows the tool without keeping its moves (``CycleExpansion.end``)."""
+
+    __slots__ = ()
+
+    def add(self, item: Section) -> None:
+        pass
+
+    def _move(self, mode: str, a: float | None, b: float | None, level: float | None) -> None:
+        first, second, normal = self.axes
+        pos = self.pos
+        if a is not None:
+            pos[first] = a
+        if b is not None:
+            pos[second] = b
+        if level is not None:
+            pos[normal] = level
+        if len(pos) < 3:
+            missing = [k for k in "XYZ" if k not in pos]
+            raise ProgramError(f"the tool's {missing[0]} position is unknown before the cycle")
+
+
 def level(cycle: CannedCycle, name: str) -> float:
     """A resolved level of the cycle; a record read from XML may lack one, which is a located error."""
     value = getattr(cycle, name)
@@ -147,6 +169,29 @@ class CycleExpansion(Syntax):
         path = ToolPath(cycle, limit)
         if cycle.repeat <= 0:
             return [], path.end()
+        self._enter(path, cycle, limit)
+        for a, b in holes(cycle):
+            self.hole(path, cycle, a, b)
+        return path.items, path.end()
+
+    def end(self, cycle: CannedCycle, limit: int = UNBOUNDED) -> dict[str, float]:
+        """Where the tool is when the block's holes are done, found without expanding them all: every
+        hole starts by positioning on its own spot and ends at a level the cycle alone sets, so the last
+        hole expanded from where the tool stands before the block ends where the whole block ends. It
+        refuses what ``expand`` refuses before the first hole (a count over ``limit``, a missing level,
+        an unknown position), so a translation that keeps the cycle native fails as one that expands it."""
+        path = _Whereabouts(cycle, limit)
+        if cycle.repeat <= 0:
+            return path.end()
+        self._enter(path, cycle, limit)
+        first, second, _ = PLANE_AXES[cycle.plane]
+        last = cycle.repeat - 1
+        self.hole(path, cycle, cycle.position[first] + last * cycle.step.get(first, 0.0),
+                  cycle.position[second] + last * cycle.step.get(second, 0.0))
+        return path.end()
+
+    def _enter(self, path: ToolPath, cycle: CannedCycle, limit: int) -> None:
+        """The checks before the first hole, and RS274's rise to R when the tool starts below it."""
         for name in ("initial", "r", "bottom"):
             level(cycle, name)
         per_hole = self.least_moves_per_hole(cycle)
@@ -160,9 +205,6 @@ class CycleExpansion(Syntax):
         rules = SEMANTICS.get(cycle.semantics, FANUC)
         if rules.rise_to_r and level(cycle, "initial") < level(cycle, "r") - EPS:
             path.rapid(level=cycle.r)
-        for a, b in holes(cycle):
-            self.hole(path, cycle, a, b)
-        return path.items, path.end()
 
     def least_moves_per_hole(self, cycle: CannedCycle) -> int:
         """A lower bound on the moves one hole takes, known before expanding (a cut to the bottom)."""

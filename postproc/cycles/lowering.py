@@ -17,7 +17,7 @@ from __future__ import annotations
 from typing import Iterator
 
 from postproc.dialect import Dialect
-from postproc.errors import UnsupportedError
+from postproc.errors import PostprocError, UnsupportedError
 from postproc.ir import (
     Block, Comments, CompoundMotion, Motion, ProgramControl, Section, SpindleControl, SpindleOrientation, one_line,
 )
@@ -66,6 +66,11 @@ def _expand(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Ite
         block.changed()
         compound = sections.get("CompoundMotion")
         if isinstance(compound, CompoundMotion):
+            try:
+                compound.items  # a lazy expansion is made here, and refused here (e.g. too many moves)
+            except PostprocError as err:
+                ctx.diagnostics.error(err)
+                continue
             _restore_motion_mode(compound, cycle.motion)
             if not can_orient and _orients(compound) \
                     and not _handle_orientation(block, compound, ctx, cycles.orientation, target, source):

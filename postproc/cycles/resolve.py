@@ -23,7 +23,7 @@ from lxml import etree
 from postproc.cycle_words import CycleWords
 from postproc.errors import ConfigError, Location, PostprocError, ProgramError, UnsupportedError
 from postproc.expr import Expr
-from postproc.ir import Block, CompoundMotion, NativeCode
+from postproc.ir import Block, CompoundMotion, NativeCode, Section
 from postproc.state import MM_PER_INCH, PLANE_AXES, CycleState, ModalState
 from postproc.context import Context
 from postproc.syntax import Syntax
@@ -220,13 +220,24 @@ class CannedCycleResolveSyntax(Syntax):
             spindle=spindle, motion=state.motion, start=here, position=position, step=step,
             shift=_shift(ctx, kind, q, first, second), words=words,
         )
+        expansion, limit = self._by_kind[kind], ctx.setup.limits.moves_per_block
+        repeat = next((k for k in cw.repeat_letters(ctx.setup.input.repeat_address) if k in words), None)
+
+        def too_many(err: TooManyMoves) -> PostprocError:
+            return fail(f"{code}: {err.message}", cw.peck if err.role == "peck" else repeat)
+
+        def expand() -> list[Section]:
+            try:
+                return expansion.expand(cycle, limit)[0]
+            except TooManyMoves as err:
+                raise too_many(err) from None
+
         try:
-            items, end = self._by_kind[kind].expand(cycle, ctx.setup.limits.moves_per_block)
+            end = expansion.end(cycle, limit)
         except TooManyMoves as err:
-            repeat = next((k for k in cw.repeat_letters(ctx.setup.input.repeat_address) if k in words), None)
-            raise fail(f"{code}: {err.message}", cw.peck if err.role == "peck" else repeat) from None
+            raise too_many(err) from None
         block.add(cycle)
-        block.add(CompoundMotion(kind, items))
+        block.add(CompoundMotion.lazy(kind, expand))  # expanded only for a target without the cycle
         sections.pop("CycleCall", None)
         motion = sections.get("Motion")
         if motion is not None and motion.mode is None:  # type: ignore[attr-defined]
@@ -336,14 +347,18 @@ class CannedCycleResolveSyntax(Syntax):
 class _Failer:
     """Makes a located ProgramError: at the named word when the block has it, else at the cycle's G word."""
 
-    __slots__ = ("ctx", "block", "words", "at_code")
+    __slots__ = ("ctx", "block", "text", "words", "at_code")
 
     def __init__(self, ctx: Context, block: Block, words: dict[str, Any], at_code: Location) -> None:
         self.ctx, self.block, self.words, self.at_code = ctx, block, words, at_code
+        self.text = block.text
+        """The text as read: an expansion made later (``CompoundMotion.lazy``) still points at its word
+        after a lowering step rewrote the block."""
 
     def __call__(self, message: str, letter: str | None = None) -> ProgramError:
         if letter is not None and letter in self.words:
-            return ProgramError(message, self.ctx.at(self.block, self.ctx.column_of(self.block, letter)))
+            column = self.ctx.column_of(Block(self.block.line, self.text), letter)
+            return ProgramError(message, self.ctx.at(self.block, column))
         return ProgramError(message, self.at_code)
 
 
