@@ -107,8 +107,8 @@ EXAMPLES = {
     "ir": """example:
   postproc ir o1001.nc --dialect fanuc -o o1001.xml""",
     "dialects": """examples:
-  postproc dialects
-  postproc dialects --json""",
+  postproc dialects                  # one column per dialect, one row per capability
+  postproc dialects --format json    # the same for tools""",
     "config": """examples:
   postproc config check examples/setups/fanuc_0i_mf_calculator.xml
   postproc config dump examples/setups/fanuc_0i_mf_calculator.xml > canonical.xml""",
@@ -198,7 +198,9 @@ def build_parser() -> argparse.ArgumentParser:
 
     d = command("dialects", "list installed dialects and their capabilities",
                 "List the installed dialects: what each reads and writes and its capability table.")
-    d.add_argument("--json", action="store_true", help="print the table as JSON")
+    d.add_argument("--format", choices=("table", "json"), default="table",
+                   help="table (default, for people) or json (for tools)")
+    d.add_argument("--json", dest="format", action="store_const", const="json", help="the same as --format json")
     d.set_defaults(run=cmd_dialects)
 
     c = command("config", "check or dump a machine set-up",
@@ -350,20 +352,12 @@ def cmd_ir(args: argparse.Namespace) -> int:
 
 
 def cmd_dialects(args: argparse.Namespace) -> int:
-    registry = default_registry()
-    table = {name: {"description": cls.DESCRIPTION, "reads": cls.READER is not None,
-                    "writes": cls.WRITER is not None, "capabilities": cls.capabilities()}
-             for name, cls in sorted(registry.dialects.items())}
-    if args.json:
-        print(json.dumps(table, indent=2))
-        return 0
-    for name, info in table.items():
-        rw = "/".join(x for x, ok in (("read", info["reads"]), ("write", info["writes"])) if ok)
-        print(f"{name} ({rw}): {info['description']}")
-        capabilities: dict[str, object] = info["capabilities"]  # type: ignore[assignment]
-        for key, value in capabilities.items():
-            shown = (", ".join(value) or "none") if isinstance(value, list) else value
-            print(f"  {key}: {shown}")
+    from .dialect_table import dialect_info, render_table
+    info = dialect_info(default_registry().dialects)
+    if args.format == "json":
+        print(json.dumps(info, indent=2))
+    else:
+        sys.stdout.write(render_table(info))
     return 0
 
 
