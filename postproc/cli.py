@@ -154,6 +154,8 @@ def build_parser() -> argparse.ArgumentParser:
                         "X0.01); no digit the program wrote is rounded away")
     t.add_argument("--renumber", metavar="START[,STEP]", help="renumber blocks (implies --normalize)")
     t.add_argument("--in-place", action="store_true", help="allow -o to name the input (replace it)")
+    t.add_argument("--define", action="append", default=[], metavar="NAME=VALUE",
+                   help="a variable the set-up's templates see as NAME (repeatable)")
     t.set_defaults(run=cmd_translate)
 
     tp = command("toolpath", "simulate a program and export its toolpath",
@@ -208,6 +210,8 @@ def build_parser() -> argparse.ArgumentParser:
                 "or write it back in canonical form.")
     c.add_argument("action", choices=("check", "dump"), help="check: validate; dump: write the canonical form")
     c.add_argument("file", help="the set-up XML (M.xml)")
+    c.add_argument("--define", action="append", default=[], metavar="NAME=VALUE",
+                   help="a variable the templates are checked with (as translate --define)")
     c.set_defaults(run=cmd_config)
     return p
 
@@ -289,11 +293,13 @@ def cmd_translate(args: argparse.Namespace) -> int:
                 setup.output.renumber_step = int(step)
         except ValueError:
             raise UsageError(f"--renumber takes START[,STEP], got {args.renumber!r}") from None
+    from .sequences import parse_defines
+    defines = parse_defines(args.define)
     with _open_program(args.input) as src:
         lines, diagnostics = _watched(args.input, src)
         write_output(_output(args.output), lambda out: translate(
             lines, out, file=_name(args.input), source=args.source, target=args.target, setup=setup,
-            on_unsupported=args.on_unsupported, diagnostics=diagnostics),
+            on_unsupported=args.on_unsupported, diagnostics=diagnostics, defines=defines),
             input_path=_input_path(args.input), in_place=args.in_place)
     return 0
 
@@ -374,8 +380,9 @@ def cmd_config(args: argparse.Namespace) -> int:
     if pipeline is not None:
         from .syntax import load_pipeline
         load_pipeline(pipeline)
+    from .sequences import parse_defines
     from .templates import check_templates
-    check_templates(setup)
+    check_templates(setup, parse_defines(args.define))
     if args.action == "check":
         print(f"{args.file}: ok")
         return 0
