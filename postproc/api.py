@@ -20,7 +20,9 @@ from .lines import checked_lines
 from .lower import lower_for
 from .plugins import Registry, default_registry
 from .interp.step import ProgramSyntax
+from .sequences import Sequences
 from .setup import MachineSetup
+from .source_map import OutputMap
 from .syntax import Pipeline
 from .context import Context
 
@@ -79,8 +81,12 @@ def _until_something(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
 def translate(lines: Iterable[str], out: TextIO, *, file: str, source: str, target: str,
               setup: MachineSetup | None = None, registry: Registry | None = None,
               on_unsupported: str = "error", level: ErrorLevel = ErrorLevel.RAISE,
-              diagnostics: Diagnostics | None = None) -> Diagnostics:
+              diagnostics: Diagnostics | None = None, defines: dict[str, str] | None = None,
+              output_map: OutputMap | None = None) -> Diagnostics:
     """Translate a program from ``source`` to ``target`` dialect, streaming into ``out``.
+
+    ``defines`` are the user variables the set-up's templates see (``--define``); ``output_map``, when
+    given, is filled with the source line (or template) of every written line.
 
     Raises ``ErrorList`` when the program has errors (``out`` then holds a partial result the caller
     must discard); returns the diagnostics (warnings) otherwise.
@@ -98,9 +104,13 @@ def translate(lines: Iterable[str], out: TextIO, *, file: str, source: str, targ
 
         mode = "keep" if src.NAME == dst.NAME else "auto" if dst.PROGRAMS else "execute"
         ctx, blocks = read_blocks(lines, file, src, setup, diagnostics, program_mode=mode, prepare=prepare)
-        lowered = lower_for(blocks, ctx, dst, on_unsupported, registry.lowerings)
+        sequences = Sequences(ctx, src.NAME, dst, defines)
+        ctx.run_data["sequences"] = sequences
+        if output_map is not None:
+            ctx.run_data["output_map"] = output_map
+        lowered = lower_for(sequences.before_lowering(blocks), ctx, dst, on_unsupported, registry.lowerings)
         writer = dst.WRITER(ctx, src.NAME, dst)
-        writer.write(lowered, out)
+        writer.write(sequences.after_lowering(lowered), out)
     diagnostics.check()
     return diagnostics
 
@@ -120,6 +130,7 @@ def _keep_check(src: type[Dialect], dst: type[Dialect], ctx: Context,
         trial = src.context(ctx.file, ctx.setup, dry)
         trial.state = copy.deepcopy(ctx.state)
         trial.on_unsupported = "error"
+        trial.run_data["sequences"] = Sequences(trial, src.NAME, dst, enabled=False)  # a dry run renders none
         steps = [step for step in src.pipeline(ctx.setup).steps if not isinstance(step, ProgramSyntax)]
         blocks = Pipeline(src.NAME, steps).run(body, trial)
         lowered = lower_for(blocks, trial, dst, "error", registry.lowerings)

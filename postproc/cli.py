@@ -107,8 +107,8 @@ EXAMPLES = {
     "ir": """example:
   postproc ir o1001.nc --dialect fanuc -o o1001.xml""",
     "dialects": """examples:
-  postproc dialects
-  postproc dialects --json""",
+  postproc dialects                  # one column per dialect, one row per capability
+  postproc dialects --format json    # the same for tools""",
     "config": """examples:
   postproc config check examples/setups/fanuc_0i_mf_calculator.xml
   postproc config dump examples/setups/fanuc_0i_mf_calculator.xml > canonical.xml""",
@@ -154,6 +154,8 @@ def build_parser() -> argparse.ArgumentParser:
                         "X0.01); no digit the program wrote is rounded away")
     t.add_argument("--renumber", metavar="START[,STEP]", help="renumber blocks (implies --normalize)")
     t.add_argument("--in-place", action="store_true", help="allow -o to name the input (replace it)")
+    t.add_argument("--define", action="append", default=[], metavar="NAME=VALUE",
+                   help="a variable the set-up's templates see as NAME (repeatable)")
     t.set_defaults(run=cmd_translate)
 
     tp = command("toolpath", "simulate a program and export its toolpath",
@@ -198,7 +200,9 @@ def build_parser() -> argparse.ArgumentParser:
 
     d = command("dialects", "list installed dialects and their capabilities",
                 "List the installed dialects: what each reads and writes and its capability table.")
-    d.add_argument("--json", action="store_true", help="print the table as JSON")
+    d.add_argument("--format", choices=("table", "json"), default="table",
+                   help="table (default, for people) or json (for tools)")
+    d.add_argument("--json", dest="format", action="store_const", const="json", help="the same as --format json")
     d.set_defaults(run=cmd_dialects)
 
     c = command("config", "check or dump a machine set-up",
@@ -206,6 +210,8 @@ def build_parser() -> argparse.ArgumentParser:
                 "or write it back in canonical form.")
     c.add_argument("action", choices=("check", "dump"), help="check: validate; dump: write the canonical form")
     c.add_argument("file", help="the set-up XML (M.xml)")
+    c.add_argument("--define", action="append", default=[], metavar="NAME=VALUE",
+                   help="a variable the templates are checked with (as translate --define)")
     c.set_defaults(run=cmd_config)
     return p
 
@@ -287,11 +293,13 @@ def cmd_translate(args: argparse.Namespace) -> int:
                 setup.output.renumber_step = int(step)
         except ValueError:
             raise UsageError(f"--renumber takes START[,STEP], got {args.renumber!r}") from None
+    from .sequences import parse_defines
+    defines = parse_defines(args.define)
     with _open_program(args.input) as src:
         lines, diagnostics = _watched(args.input, src)
         write_output(_output(args.output), lambda out: translate(
             lines, out, file=_name(args.input), source=args.source, target=args.target, setup=setup,
-            on_unsupported=args.on_unsupported, diagnostics=diagnostics),
+            on_unsupported=args.on_unsupported, diagnostics=diagnostics, defines=defines),
             input_path=_input_path(args.input), in_place=args.in_place)
     return 0
 
@@ -350,20 +358,12 @@ def cmd_ir(args: argparse.Namespace) -> int:
 
 
 def cmd_dialects(args: argparse.Namespace) -> int:
-    registry = default_registry()
-    table = {name: {"description": cls.DESCRIPTION, "reads": cls.READER is not None,
-                    "writes": cls.WRITER is not None, "capabilities": cls.capabilities()}
-             for name, cls in sorted(registry.dialects.items())}
-    if args.json:
-        print(json.dumps(table, indent=2))
-        return 0
-    for name, info in table.items():
-        rw = "/".join(x for x, ok in (("read", info["reads"]), ("write", info["writes"])) if ok)
-        print(f"{name} ({rw}): {info['description']}")
-        capabilities: dict[str, object] = info["capabilities"]  # type: ignore[assignment]
-        for key, value in capabilities.items():
-            shown = (", ".join(value) or "none") if isinstance(value, list) else value
-            print(f"  {key}: {shown}")
+    from .dialect_table import dialect_info, render_table
+    info = dialect_info(default_registry().dialects)
+    if args.format == "json":
+        print(json.dumps(info, indent=2))
+    else:
+        sys.stdout.write(render_table(info))
     return 0
 
 
@@ -380,8 +380,9 @@ def cmd_config(args: argparse.Namespace) -> int:
     if pipeline is not None:
         from .syntax import load_pipeline
         load_pipeline(pipeline)
+    from .sequences import parse_defines
     from .templates import check_templates
-    check_templates(setup)
+    check_templates(setup, parse_defines(args.define))
     if args.action == "check":
         print(f"{args.file}: ok")
         return 0

@@ -30,7 +30,8 @@ def postproc_register_xml(factory: XFactory) -> None:
     register_expressions(factory)
     register_control(factory)
     from .rs274.lathe_cycles import LatheCycleSyntax
-    for cls in (Pipeline, MachineSetup, ModalStateSyntax, ProgramSyntax, LatheCycleSyntax):
+    from .sequences import GeneratedText
+    for cls in (Pipeline, MachineSetup, ModalStateSyntax, ProgramSyntax, LatheCycleSyntax, GeneratedText):
         cls.reg(factory)
     cycles.register(factory)
 

@@ -10,14 +10,18 @@ from __future__ import annotations
 import abc
 from importlib import resources
 from pathlib import Path
-from typing import Callable, ClassVar, Iterable, Iterator, TextIO
+from typing import TYPE_CHECKING, Any, Callable, ClassVar, Iterable, Iterator, TextIO
 
 from .errors import Diagnostics, PostprocError, UnsupportedError
 from .ir import Block, one_line
+from .line_format import LineFormat
 from .setup import MachineSetup
 from .context import Context
 from .cycle_words import CycleWords
 from .syntax import Pipeline, load_pipeline
+
+if TYPE_CHECKING:
+    from .sequences import Sequences
 
 
 class Reader(abc.ABC):
@@ -47,21 +51,32 @@ class Writer(abc.ABC):
     def write(self, blocks: Iterable[Block], out: TextIO) -> None:
         """Write every block. A block the target cannot express is an error, or with
         ``--on-unsupported warn`` a warning and the source block written as a comment.
-        The header goes after an opening tape mark and the footer before the closing one."""
+        The header goes after an opening tape mark and the footer before the closing one; a block a
+        set-up template wrote (``postproc.sequences``) is written as it is."""
         write_block = self.write_block
-        emit = out.write
-        header = self.render_template("header")
-        footer = self.render_template("footer")
+        sequences = self.sequences()
+        output_map = self.ctx.run_data.get("output_map")
+        emit = out.write if output_map is None else output_map.writer(out)
+        line_format = LineFormat.for_run(self.ctx, self.target)
+        if line_format is not None:
+            emit = line_format.wrap(emit)
+        generated = sequences.per_block
+        footer: str | None = None
         started = False
         for block in blocks:
             tape_mark = "TapeMark" in block.sections
             if not started and not tape_mark:
                 started = True
-                if header:
-                    emit(header)
-            elif started and tape_mark and footer:
-                emit(footer)
-                footer = ""
+                self._emit_template(emit, output_map, line_format, "header", sequences.render("header"))
+            elif started and tape_mark and footer is None:
+                footer = sequences.render("footer")
+                self._emit_template(emit, output_map, line_format, "footer", footer)
+            if generated and "Generated" in block.sections:
+                text_of = block.sections["Generated"]
+                if line_format is not None:
+                    line_format.block, line_format.template = None, getattr(text_of, "template")
+                self._emit_template(emit, output_map, line_format, getattr(text_of, "template"), getattr(text_of, "text"))
+                continue
             try:
                 text = write_block(block)
             except UnsupportedError as err:
@@ -72,26 +87,46 @@ class Writer(abc.ABC):
             if text is not None:
                 if (not text or text.isspace()) and block.text is not None and (block.words or block.sections):
                     text = self.nothing_written(block) if not self._failed() else text
+                if output_map is not None:
+                    output_map.source = block.line
+                if line_format is not None:
+                    line_format.block, line_format.template = block, None
                 emit(text)
-        if not started and header:
-            emit(header)
+        if not started:
+            self._emit_template(emit, output_map, line_format, "header", sequences.render("header"))
         tail = self.finish()
         if tail:
             emit(tail)
-        if footer:
-            emit(footer)
+        if footer is None:
+            self._emit_template(emit, output_map, line_format, "footer", sequences.render("footer"))
+
+    @staticmethod
+    def _emit_template(emit: Callable[[str], object], output_map: Any, line_format: LineFormat | None, name: str,
+                       text: str) -> None:
+        if not text:
+            return
+        if line_format is not None:
+            line_format.block, line_format.template = None, name
+        if output_map is not None:
+            output_map.source = None
+            output_map.template = name
+        emit(text)
+        if output_map is not None:
+            output_map.template = None
+
+    def sequences(self) -> "Sequences":
+        """The translation's templates (``translate`` puts them in the context; a writer used on its own
+        renders the set-up's header and footer)."""
+        from .sequences import Sequences
+        found = self.ctx.run_data.get("sequences")
+        if isinstance(found, Sequences):
+            return found
+        found = self.ctx.run_data["sequences"] = Sequences(self.ctx, self.source_dialect, self.target)
+        return found
 
     def render_template(self, name: str) -> str:
-        """Render the set-up's header or footer template (sandboxed jinja2), or ''."""
-        setup = self.ctx.setup
-        text = getattr(setup.templates, name)
-        if not text:
-            return ""
-        from .templates import render
-        from pathlib import PurePath
-        variables = {"program": PurePath(self.ctx.file).stem, "source_dialect": self.source_dialect,
-                     "machine": setup.name, "units": self.ctx.state.units}
-        return render(name, text, variables, setup.source, setup.template_lines.get(name, 1))
+        """Render the set-up's template ``name`` (sandboxed jinja2, read back as the target reads), or ''."""
+        return self.sequences().render(name)
 
     def unsupported_block(self, block: Block, err: UnsupportedError) -> str | None:
         err.located(self.ctx.at(block))
@@ -190,6 +225,9 @@ class Dialect:
     LATHE_FEED_AT_START: ClassVar[str] = "per_min"
     """The feed mode a lathe program starts in before it programs one (Fanuc T: per revolution, G99, by
     its default parameter; GSK 980TDc: per minute, G98)."""
+    LOWER_CASE: ClassVar[bool] = False
+    """The reader takes lower-case addresses (``g1 x10``): the set-up's ``<Output case="lower">`` is
+    refused otherwise."""
     LATHE_ONE_BLOCK: ClassVar[bool] = False
     """The control reads the one-block forms ``G71 P Q U W D F`` and ``G76 X Z I K D F A P`` (Fanuc
     10/11/15-T) when the set-up's ``latheCycleFormat`` says so; without it every cycle has two blocks."""

@@ -70,6 +70,17 @@ class OutputSettings(_Group):
     renumber_step: int = Field(10, ge=1)
     leading_zero: bool = True
     """Write 0.5 rather than .5."""
+    # -- line formatting (``postproc.line_format``) --
+    block_numbers: Literal["keep", "all", "tool-changes", "none"] = "keep"
+    """Which lines get a block number: as written, every line with words, only tool changes, none."""
+    number_max: int = Field(99999, ge=1, le=99_999_999)
+    """The largest block number; the next wraps to ``renumberStart`` (Fanuc 0i, LinuxCNC: five digits)."""
+    case: Literal["keep", "upper", "lower"] = "keep"
+    """Letter case outside comments (lower only where the target's reader accepts it: ``LOWER_CASE``)."""
+    line_ending: Literal["keep", "lf", "crlf"] = "keep"
+    """Every line's ending (keep: as read; generated lines LF)."""
+    max_line_length: int = Field(0, ge=0, le=1 << 20)
+    """Longest line the control takes, line ending excluded (0: no limit); a longer one is an error."""
 
 
 class CycleSettings(_Group):
@@ -223,10 +234,26 @@ def _number_key(number: str) -> str:
 
 
 class Templates(BaseModel):
-    """jinja2 templates (rendered sandboxed) for the program header and footer."""
+    """jinja2 templates (rendered sandboxed, ``postproc.sequences``) for the program header and footer, and
+    for the sequences that replace a block: the tool change, the start of each operation and the program
+    end. A template left out leaves its place as the translation writes it."""
 
     header: str | None = None
     footer: str | None = None
+    tool_change: str | None = None
+    """Replaces each tool-change block (``T1 M06``)."""
+    operation_start: str | None = None
+    """Written before each tool change (an operation begins where its tool is loaded)."""
+    program_end: str | None = None
+    """Replaces the program-end block (``M30``, ``M02``)."""
+
+    TAGS: ClassVar[dict[str, str]] = {"Header": "header", "Footer": "footer", "ToolChange": "tool_change",
+                                      "OperationStart": "operation_start", "ProgramEnd": "program_end"}
+    """Element name in ``<Templates>`` -> field, in the order ``config dump`` writes them."""
+
+    def defined(self) -> dict[str, str]:
+        """field -> template text, for the templates the set-up defines."""
+        return {f: t for f in self.TAGS.values() if (t := getattr(self, f))}
 
 
 GROUPS: tuple[type[_Group], ...] = (InputSettings, OutputSettings, CycleSettings, MachineSettings, Limits,
@@ -306,7 +333,7 @@ class MachineSetup(XmlNode):
                 continue
             if child.tag == "Templates":
                 kwargs["templates"] = _templates_from_xml(child)
-                lines = {c.tag.lower(): c.sourceline or 1 for c in child if isinstance(c.tag, str)}
+                lines = {Templates.TAGS[c.tag]: c.sourceline or 1 for c in child if isinstance(c.tag, str)}
                 continue
             if child.tag == "Library":
                 library.append(_library_from_xml(child))
@@ -349,9 +376,10 @@ class MachineSetup(XmlNode):
                 child = etree.SubElement(el, group.TAG)
                 for key, value in values.items():
                     child.set(key, _attr_text(value))
-        if self.templates.header is not None or self.templates.footer is not None:
+        texts = [(tag, getattr(self.templates, f)) for tag, f in Templates.TAGS.items()]
+        if any(text is not None for _, text in texts):
             t = etree.SubElement(el, "Templates")
-            for tag, text in (("Header", self.templates.header), ("Footer", self.templates.footer)):
+            for tag, text in texts:
                 if text is not None:
                     etree.SubElement(t, tag).text = text
         for path in self.library:
@@ -448,9 +476,14 @@ def _templates_from_xml(el: etree._Element) -> Templates:
     for child in el:
         if not isinstance(child.tag, str):
             continue
-        if child.tag not in ("Header", "Footer"):
+        field = Templates.TAGS.get(child.tag)
+        if field is None:
             raise ConfigError(f"unknown element <{child.tag}> in <Templates>", where(child))
-        values[child.tag.lower()] = child.text or ""
+        if field in values:
+            raise ConfigError(f"<{child.tag}> appears twice in <Templates>", where(child))
+        if el.attrib or child.attrib or len([c for c in child if isinstance(c.tag, str)]):
+            raise ConfigError(f"<{child.tag}> holds template text only (no attributes or elements)", where(child))
+        values[field] = child.text or ""
     return Templates(**values)
 
 

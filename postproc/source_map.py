@@ -9,8 +9,13 @@ Every place that locates a block's error goes through ``locate`` (``Context.at``
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from .errors import Location
 from .ir import Block
+
+if TYPE_CHECKING:
+    from typing import Callable, TextIO
 
 
 class CallSite:
@@ -74,3 +79,37 @@ def locate(file: str, block: Block, col: int = 1) -> Location:
     if origin is None:
         return Location(file, block.line, col)
     return Location(origin.file, block.line, col, origin.note())
+
+
+class OutputMap:
+    """Which source line each written line comes from, or which set-up template generated it: filled by
+    ``Writer.write`` when a caller asks for it (``translate(..., output_map=OutputMap())``), so a plain
+    translation pays nothing. ``lines[i]`` is written line ``i + 1``: ``(source line, None)`` or
+    ``(None, template name)``; lines a writer adds on its own (a closing comment) have ``(None, None)``."""
+
+    __slots__ = ("lines", "source", "template", "_open")
+
+    def __init__(self) -> None:
+        self.lines: list[tuple[int | None, str | None]] = []
+        self.source: int | None = None
+        """The source line of the text being written (set by the writer before it writes it)."""
+        self.template: str | None = None
+        self._open = False
+        """The last text written did not end its line."""
+
+    def writer(self, out: "TextIO") -> "Callable[[str], object]":
+        def emit(text: str) -> object:
+            entry = (self.source, self.template)
+            count = text.count("\n") + (0 if text.endswith("\n") else 1)
+            if self._open and text:
+                count -= 1  # the first of these lines was counted already
+            self.lines.extend([entry] * max(count, 0))
+            self._open = bool(text) and not text.endswith("\n") or (self._open and not text)
+            written = out.write(text)
+            self.source = None
+            return written
+        return emit
+
+    def generated(self) -> list[int]:
+        """Written line numbers (1-based) that a template generated."""
+        return [i + 1 for i, (_, template) in enumerate(self.lines) if template is not None]

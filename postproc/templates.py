@@ -52,19 +52,44 @@ def render(name: str, text: str, variables: dict[str, Any], source: str | None, 
     return _render_all(name, text, [variables], source, first_line)[0]
 
 
-def check_templates(setup: MachineSetup) -> None:
-    """Render the set-up's templates with sample values (metric and inch), as ``config check`` does."""
-    for name in ("header", "footer"):
-        text = getattr(setup.templates, name)
-        if text:
-            _render_all(name, text, sample_variables(setup), setup.source, setup.template_lines.get(name, 1))
+def check_templates(setup: MachineSetup, defines: dict[str, str] | None = None) -> None:
+    """Render the set-up's templates with sample values (metric and inch), as ``config check`` does, and
+    read each output back with the set-up's dialect (when it names an installed one)."""
+    from .errors import UsageError
+    from .plugins import default_registry
+    from .sequences import check_output
+    target = None
+    if setup.dialect:
+        try:
+            target = default_registry().dialect(setup.dialect)
+        except UsageError:
+            target = None  # ``config check`` reports the unknown dialect itself
+    for name, text in setup.templates.defined().items():
+        first = setup.template_lines.get(name, 1)
+        outputs = _render_all(name, text, sample_variables(setup, name, defines), setup.source, first)
+        if target is not None:
+            for out in outputs:
+                if out:
+                    check_output(name, out, target, setup, Location(setup.source or "<set-up>", first, 1), None,
+                                 name not in ("footer", "program_end"))
 
 
-def sample_variables(setup: MachineSetup) -> list[dict[str, Any]]:
-    """The variables a writer passes (``Writer.render_template``), once per unit system."""
+def sample_variables(setup: MachineSetup, name: str = "header",
+                     defines: dict[str, str] | None = None) -> list[dict[str, Any]]:
+    """The variables a translation passes (``postproc.sequences``), with sample values, once per unit
+    system; the block templates also get a sample tool change (tool 1 after none, operation 1)."""
+    from .sequences import setup_values
     dialect = setup.dialect or "unknown"
-    return [{"program": SAMPLE_PROGRAM, "source_dialect": dialect, "machine": setup.name, "units": units}
-            for units in ("mm", "inch")]
+    base: dict[str, Any] = {"program": SAMPLE_PROGRAM, "source_file": SAMPLE_PROGRAM + ".nc",
+                            "source_dialect": dialect, "target_dialect": dialect, "machine": setup.name,
+                            "date": "2000-01-01", "setup": setup_values(setup),
+                            "tools": [{"number": 1, "line": 10}, {"number": 2, "line": 40}]}
+    if name in ("tool_change", "operation_start"):
+        base.update(tool=1, previous_tool=None, operation=1, line=10, name="SAMPLE OPERATION", first_use=True)
+    elif name == "program_end":
+        base.update(line=99)
+    base.update(defines or {})
+    return [{**base, "units": units} for units in ("mm", "inch")]
 
 
 def _render_all(name: str, text: str, variable_sets: list[dict[str, Any]], source: str | None,

@@ -82,6 +82,9 @@ SAMPLES: dict[str, list[tuple[Builder, str]]] = {
         (lambda c: DataSetting("fanuc", "tool_length", 5, {"R": -1.5}, True, "G10 L10 P5 R-1.5"),
          '<DataSetting family="fanuc" table="tool_length" index="5" incremental="true" text="G10 L10 P5 R-1.5">\n'
          '  <Values R="-1.5"/>\n</DataSetting>')],
+    "Generated": [
+        (lambda c: __import__("postproc.sequences", fromlist=["GeneratedText"]).GeneratedText("(LOAD T1)", "tool_change"),
+         '<Generated text="(LOAD T1)" template="tool_change"/>')],
     "MachineFunction": [
         (lambda c: MachineFunction("fanuc", "M88", "M88", "coolant-on", "through-spindle coolant on"),
          '<MachineFunction family="fanuc" code="M88" action="coolant-on" name="through-spindle coolant on" '

@@ -206,6 +206,18 @@ def test_config_check_renders_the_templates_with_sample_values(cli, tmp_path: Pa
 
 
 def test_sample_values_cover_every_variable_the_writer_passes() -> None:
-    names = {"program", "source_dialect", "machine", "units"}
+    """``config check`` renders with exactly the names a translation passes (tools included), and the block
+    templates with the names of a tool change too."""
+    from postproc.errors import Diagnostics
+    from postproc.plugins import default_registry
+    from postproc.sequences import Sequences
+    fanuc = default_registry().dialect("fanuc")
+    sequences = Sequences(fanuc.context("o1.nc", MachineSetup(), Diagnostics()), "fanuc", fanuc)
+    sequences.tools = []
+    names = set(sequences.variables())
+    assert names == {"program", "source_file", "source_dialect", "target_dialect", "machine", "units", "date",
+                     "setup", "tools"}
     assert all(set(v) == names for v in sample_variables(MachineSetup()))
     assert {v["units"] for v in sample_variables(MachineSetup())} == {"mm", "inch"}
+    block_names = names | {"tool", "previous_tool", "operation", "line", "name", "first_use"}
+    assert all(set(v) == block_names for v in sample_variables(MachineSetup(), "tool_change"))

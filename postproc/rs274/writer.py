@@ -64,9 +64,11 @@ class WordWriter(Writer):
     def __init__(self, ctx: Context, source_dialect: str, target: type[Dialect] | None = None) -> None:
         super().__init__(ctx, source_dialect, target)
         out = ctx.setup.output
-        self.normalize = out.normalize or bool(out.renumber_start)
+        renumber = out.renumber_start if out.block_numbers == "keep" else 0
+        """``blockNumbers`` other than keep numbers the written lines (``postproc.line_format``) instead."""
+        self.normalize = out.normalize or bool(renumber)
         """Renumbering rewrites the words, so it implies normalising."""
-        self.renumber = out.renumber_start
+        self.renumber = renumber
         self.renumber_step = out.renumber_step
         self.leading_zero = out.leading_zero
         self.decimals = out.decimals

@@ -26,7 +26,7 @@ fail unless the set-up's ``<Cycles orientation="stop"|"m19">`` says how to stand
 
 from __future__ import annotations
 
-from typing import Callable
+from typing import Callable, ClassVar
 
 from postproc.dialect import Dialect
 from postproc.rs274.order_of_execution import stops_after_motion
@@ -44,6 +44,8 @@ from .writer import GrblWriter
 
 class Grbl(Dialect):
     NAME = "grbl"
+    LOWER_CASE: ClassVar[bool] = True
+    """The reader takes lower-case words (the controller reads them as upper case)."""
     DESCRIPTION = "grbl 1.1 (no canned cycles, no tool changer, no tool table; G4 P in seconds)"
     READER = GrblReader
     WRITER = GrblWriter

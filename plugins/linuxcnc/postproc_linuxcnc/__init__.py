@@ -13,7 +13,7 @@ run as rs274 runs them (``postproc.interp.rules``).
 from __future__ import annotations
 
 from copy import copy as shallow_copy
-from typing import Callable
+from typing import Callable, ClassVar
 
 from postproc.dialect import Dialect
 from postproc.rs274.order_of_execution import stops_after_motion
@@ -41,6 +41,8 @@ NATIVE = frozenset({
 
 class Linuxcnc(Dialect):
     NAME = "linuxcnc"
+    LOWER_CASE: ClassVar[bool] = True
+    """The reader takes lower-case words (the controller reads them as upper case)."""
     DESCRIPTION = "LinuxCNC 2.9 milling (RS274/NGC with O-words, parameters and expressions)"
     READER = LinuxcncReader
     WRITER = LinuxcncWriter
