@@ -26,6 +26,8 @@ CASES = {
     "isg": DialectUnderTest("isg", ROOT / "examples/isg", HERE / "isg/invalid"),
     "linuxcnc": DialectUnderTest("linuxcnc", ROOT / "examples/linuxcnc", HERE / "linuxcnc/invalid"),
     "grbl": DialectUnderTest("grbl", HERE / "grbl", HERE / "grbl/invalid"),
+    "mach3": DialectUnderTest("mach3", ROOT / "plugins/example_dialect/examples",
+                              ROOT / "plugins/example_dialect/examples/invalid"),
 }
 """One case per installed dialect (two for Fanuc: mill and lathe)."""
 
@@ -40,3 +42,9 @@ def postproc_conformance(request: pytest.FixtureRequest) -> DialectUnderTest:
 
 class TestConformance(ConformanceTests):
     pass
+
+
+def test_every_installed_dialect_has_a_case() -> None:
+    covered = {case.dialect for case in CASES.values()}
+    missing = sorted(set(default_registry().dialects) - covered)
+    assert not missing, f"installed dialects without a conformance case in {__file__}: {missing}"
