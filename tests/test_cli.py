@@ -52,11 +52,21 @@ def test_wrong_usage_exits_2(cli, args, fragment):
     assert result.out == b""
 
 
-def test_a_write_only_dialect_cannot_be_read(cli):
-    pytest.importorskip("postproc_example_dialect")
-    for args in (["translate", PROGRAM, "--from", "example", "--to", "fanuc"], ["ir", PROGRAM, "--dialect", "example"]):
+def test_a_write_only_dialect_cannot_be_read(cli, monkeypatch):
+    """The example plugin reads since it became the mach3 dialect: a write-only toy stands in for it."""
+    from postproc import plugins
+    from postproc.dialect import Dialect
+    from postproc.rs274.writer import WordWriter
+
+    class WriteOnly(Dialect):
+        NAME = "writeonly"
+        WRITER = WordWriter
+
+    registry = plugins.default_registry()
+    monkeypatch.setitem(registry.dialects, "writeonly", WriteOnly)
+    for args in (["translate", PROGRAM, "--from", "writeonly", "--to", "fanuc"], ["ir", PROGRAM, "--dialect", "writeonly"]):
         result = cli(*args)
-        assert (result.status, result.err) == (2, "postproc: the example dialect cannot be read (it is write-only)\n")
+        assert (result.status, result.err) == (2, "postproc: the writeonly dialect cannot be read (it is write-only)\n")
 
 
 def test_output_into_a_missing_directory_is_a_clear_error(cli, tmp_path):
@@ -83,12 +93,12 @@ def test_output_file_replaces_an_older_one(cli, tmp_path):
 
 
 def test_warnings_go_to_stderr_and_keep_status_0(cli, tmp_path):
-    pytest.importorskip("postproc_example_dialect")
+    pytest.importorskip("postproc_mach3")
     path = tmp_path / "orient.nc"
     path.write_text("G21 G90 G00 X0. Y0.\nM19\nM30\n")
-    result = cli("translate", path, "--from", "fanuc", "--to", "example", "--on-unsupported", "warn")
+    result = cli("translate", path, "--from", "fanuc", "--to", "mach3", "--on-unsupported", "warn")
     assert result.status == 0
-    assert result.err == f"{path}:2:1: warning: the example dialect cannot express an oriented spindle stop; " \
+    assert result.err == f"{path}:2:1: warning: the mach3 dialect cannot express an oriented spindle stop; " \
                          "written as a comment\n"
     assert result.out.decode().splitlines()[1] == "(UNSUPPORTED LINE 2: M19)"
 

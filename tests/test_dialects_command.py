@@ -55,7 +55,7 @@ def test_known_flags_read_as_the_controllers_are():
     assert rows["PROGRAMS"][col["grbl"]] == "no"
     assert rows["PROGRAMS"][col["fanuc"]] == "yes"
     assert rows["MACHINE_TYPES"][col["gsk"]] == "lathe"
-    assert rows["read"][col["example"]] == "no"
+    assert rows["read"][col["mach3"]] == "yes"
 
 
 def test_json_is_the_classes_capability_tables(cli):

@@ -117,9 +117,11 @@ def test_a_tool_change_stays_before_the_coolant_off() -> None:
     assert "\nT2 M06 M09\nG01 X10. F100.\n" in out, out
 
 
-def test_the_example_dialect_gets_them_before_too() -> None:
-    out = _translate(_program("M5"), "linuxcnc", "example")
-    assert "\nM05\nG1 X10.0000 F100.\n" in out, out
+def test_the_example_dialect_keeps_them_in_the_block() -> None:
+    """The example plugin (mach3) stops before the motion as LinuxCNC does (RS274/NGC order; it was a
+    Fanuc-order toy before): the stop stays in its block and still runs before the move."""
+    out = _translate(_program("M5"), "linuxcnc", "mach3")
+    assert "\nG1 X10.0000 F100. M5\n" in out, out
 
 
 @pytest.mark.parametrize("words", sorted(STOPS) + ["M5 M9 T2 M6"])

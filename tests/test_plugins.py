@@ -295,49 +295,61 @@ def test_capabilities_are_documented_upper_case_attributes():
     assert "NAME" not in table and "WRITER" not in table and "DESCRIPTION" not in table
 
 
-# -- the example plugin (plugins/example_dialect) -------------------------------------------------------
+# -- the example plugin (plugins/example_dialect: the mach3 dialect) -------------------------------------
 
 def _example_installed() -> None:
     names = {ep.name for ep in entry_points(group=PROJECT)}
-    assert "example" in names, ("the example dialect plugin is not installed: "
-                                ".venv/bin/pip install -e plugins/example_dialect (make install does it)")
+    assert "mach3" in names, ("the example dialect plugin is not installed: "
+                              ".venv/bin/pip install -e plugins/example_dialect (make install does it)")
 
 
 def test_example_plugin_is_listed(cli):
     _example_installed()
     text = cli("dialects").out.decode()
-    assert any(line.startswith("example: ") for line in text.splitlines())
-    column = _matrix_column(text, "example")
-    assert (column["read"], column["write"]) == ("no", "yes")
-    assert column["NATIVE_CYCLES"] == "-"
+    column = _matrix_column(text, "mach3")
+    assert (column["read"], column["write"]) == ("yes", "yes")
+    assert column["NATIVE_CYCLES"] == "drill"
     assert column["SPINDLE_ORIENTATION"] == "no"
 
 
 def test_example_plugin_is_built_like_a_third_party_plugin():
     _example_installed()
-    example = default_registry().dialect("example")
+    example = default_registry().dialect("mach3")
     assert issubclass(example, Dialect) and issubclass(example.WRITER, WordWriter)
-    assert example.__module__.split(".")[0] == "postproc_example_dialect"
+    assert example.READER is not None and example.PIPELINE_FILE == "mach3.xml"
+    assert example.__module__.split(".")[0] == "postproc_mach3"
     assert example.WRITER.CODES.spell("motion", "rapid") == "G0"
     assert example.WRITER.CODES.spell("home", "home") == "G28"
 
 
 def test_example_plugin_writes_g0_and_four_decimals(cli):
     _example_installed()
-    result = cli("translate", ROOT / "examples/fanuc/o1003_pocket_and_edge.nc", "--from", "fanuc", "--to", "example")
+    result = cli("translate", ROOT / "examples/fanuc/o1003_pocket_and_edge.nc", "--from", "fanuc", "--to", "mach3")
     assert result.status == 0, result.err
     lines = result.out.decode().splitlines()
-    # hand-written from the source lines N50, N100, N180, N200, N260 and N340 of O1003
-    for expected in ("N50 G54 G0 X50.0000 Y50.0000 S8000 M03", "N100 G3 I-7.0000",
+    # hand-written from the source lines N50, N100, N180, N200, N260 and N340 of O1003: codes without
+    # leading zeros, four decimals, and N260's M05 (Fanuc: after the move) in a block of its own after
+    # it, since Mach3 (RS274/NGC order) would stop the spindle before the move
+    for expected in ("N50 G54 G0 X50.0000 Y50.0000 S8000 M3", "N100 G3 I-7.0000",
                      "N180 G3 X20.0000 Y10.0000 I0.0000 J-6.0000", "N200 G3 X80.0000 Y22.0000 R6.0000",
-                     "N260 G91 G28 Z0.0000 M05", "N340 G3 X103.0000 Z-5.0000 I0.0000 K-8.0000"):
+                     "N340 G3 X103.0000 Z-5.0000 I0.0000 K-8.0000"):
         assert expected in lines
+    at = lines.index("N260 G91 G28 Z0.0000")
+    assert lines[at + 1] == "M5"
 
 
 def test_example_plugin_refuses_an_oriented_spindle_stop():
     _example_installed()
     with pytest.raises(ErrorList) as info:
         translate(io.StringIO("G21 G90 G00 X0. Y0.\nM19\n"), io.StringIO(), file="o.nc", source="fanuc",
-                  target="example")
+                  target="mach3")
     [err] = info.value.errors
-    assert str(err) == "o.nc:2:1: error: the example dialect cannot express an oriented spindle stop"
+    assert str(err) == "o.nc:2:1: error: the mach3 dialect cannot express an oriented spindle stop"
+
+
+def test_example_plugin_reads_its_own_programs(cli):
+    _example_installed()
+    program = ROOT / "plugins/example_dialect/examples/face_and_drill.tap"
+    result = cli("translate", program, "--from", "mach3", "--to", "mach3")
+    assert result.status == 0, result.err
+    assert result.out == program.read_bytes()

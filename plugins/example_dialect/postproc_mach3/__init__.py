@@ -1,0 +1,114 @@
+"""Mach3/Mach4 mill: a read-and-write dialect plugin, written as a third party would publish one.
+
+A plugin needs only what this package shows: a code table (``codes.py``, read and written alike), a
+reader (``reader.py``), a block syntax and its pipeline XML (``block_syntax.py``, ``mach3.xml``), a
+writer, a ``Dialect`` subclass with its capability flags, and ``hookimpl`` functions that register the
+dialect and its syntax object. It imports only public names of ``postproc`` and is found through its
+entry point (``pyproject.toml``). docs/plugins.md walks through it.
+
+The controller: Mach3's interpreter follows the NIST RS274/NGC interpreter (words, modal groups, order of
+execution: M5/M9 before the block's motion), dwell ``G4 P`` in seconds (Mach3's default; its "G04 dwell
+in ms" option is a machine setting this plugin does not model), no oriented spindle stop, an ATC through
+the M6 macro. This package writes every axis, centre and radius word with exactly four decimals
+(``X15.0000``), as many Mach3 posts do.
+"""
+
+from __future__ import annotations
+
+from typing import Any, Callable, ClassVar
+
+from postproc.dialect import Dialect
+from postproc.expr import Expr
+from postproc.hookspecs import hookimpl
+from postproc.ir import Block, Motion
+from postproc.rs274.codes import CodeTable
+from postproc.rs274.cycle_words import rs274_cycle_words
+from postproc.rs274.order_of_execution import stops_after_motion
+from postproc.rs274.writer import WordWriter
+from postproc.xmlio import XFactory
+
+from .block_syntax import Mach3BlockSyntax
+from .codes import CODES
+from .reader import Mach3Reader
+
+
+class Mach3Writer(WordWriter):
+    """Spells codes from ``CODES``; axis words fixed-width. An unchanged block read from Mach3 is copied
+    as it was (the base class does it), so a Mach3 program reads back byte for byte."""
+
+    DIALECT: ClassVar[str] = "mach3"
+    CODES: ClassVar[CodeTable] = CODES
+    """No M19 row: an oriented spindle stop is an unsupported construct here."""
+    DWELL_WORD: ClassVar[str] = "P"
+    """G4 P<seconds>."""
+    CYCLE_CANCEL_IS_MOTION: ClassVar[bool] = True
+    """G80 and G0 are one modal group (RS274/NGC): a block with a motion code leaves G80 out."""
+    AXIS_DECIMALS: ClassVar[int] = 4
+    """Axis, centre and radius words carry at least this many decimals (more only where fewer would
+    round the value)."""
+
+    def motion_words(self, s: Motion, block: Block) -> list[str]:
+        if s.mode is None:
+            self.unsupported("a canned-cycle repetition without its cycle", block)
+        words = self._code("home" if s.mode in ("home", "home2") else "motion", s.mode, f"{s.mode} motion", block)
+        words.extend(axis + self.fixed(value, block) for axis, value in s.axes.items())
+        if s.center is not None:
+            words.extend(letter + self.fixed(s.center[axis], block)
+                         for axis, letter in (("X", "I"), ("Y", "J"), ("Z", "K")) if axis in s.center)
+        if s.radius is not None:
+            words.append("R" + self.fixed(s.radius, block))
+        return words
+
+    def program_start(self, s: Any, block: Block) -> str:
+        """This dialect reads no O-words (no subprograms): a program number survives as a comment."""
+        name = f"O{int(s.number):04d}" if s.number is not None else str(s.name)
+        return self.comment(name)
+
+    def fixed(self, value: Any, block: Block) -> str:
+        if isinstance(value, Expr):  # a computed word: this dialect has no expressions (PROGRAMS is False)
+            self.unsupported("a computed word", block)
+        # at least AXIS_DECIMALS places; where that would round the value (an inch program converted,
+        # a computed value), Python's shortest exact spelling of the float instead
+        value = float(value)
+        text = f"{value:.{self.AXIS_DECIMALS}f}"
+        if float(text) != value:
+            text = repr(value)
+            if "e" in text or "E" in text or "." not in text:  # inf/nan never reach here: the reader refuses them
+                text = f"{value:.20f}".rstrip("0")
+            places = len(text) - text.index(".") - 1
+            text += "0" * max(0, self.AXIS_DECIMALS - places)
+        return text[1:] if text.startswith("-") and float(text) == 0 else text
+
+
+class Mach3(Dialect):
+    NAME = "mach3"
+    DESCRIPTION = "Mach3/Mach4 mill (RS274/NGC words, G81 kept, 4-decimal axis words)"
+    READER = Mach3Reader
+    WRITER = Mach3Writer
+    PIPELINE_FILE = "mach3.xml"
+    CYCLE_WORDS = rs274_cycle_words(CODES, ("L",))
+    """R level, Q peck, P dwell (seconds), L repeats."""
+    NATIVE_CYCLES = frozenset({"drill"})
+    """G81 is written as a cycle; every other cycle is expanded into plain moves. G73/G83 are read, but
+    Mach3's peck clearance is a machine setting this plugin does not know, so they are never written."""
+    CYCLE_SEMANTICS = "rs274"
+    """The cycles move by the RS274/NGC rules (``postproc.cycles.semantics``)."""
+    SPINDLE_ORIENTATION = False
+    """No M19: cycles that need an oriented stop follow the set-up's ``Cycles orientation``."""
+    STOPS_BEFORE_MOTION = True
+    """The RS274/NGC order of execution: M5 and M9 act before the block's motion."""
+    LOWERING = (stops_after_motion,)
+    """A moving block's spindle stop and coolant off go in a block of their own after it, where the
+    source stopped after the motion (``postproc.rs274.order_of_execution``)."""
+    DWELL_UNIT = "seconds"
+    """G4 P is in seconds."""
+
+
+@hookimpl
+def postproc_register_dialects(register: Callable[[type], None]) -> None:
+    register(Mach3)
+
+
+@hookimpl
+def postproc_register_xml(factory: XFactory) -> None:
+    Mach3BlockSyntax.reg(factory)

@@ -1,0 +1,76 @@
+"""Mach3/Mach4 mill codes: one table, read by the reader and inverted by the writer.
+
+Rows are ``(spelling, modal group, kind, argument)`` (``postproc.rs274.codes.CodeTable``). Mach3's
+interpreter descends from the NIST RS274/NGC interpreter, so the words, modal groups and order of
+execution are RS274/NGC's; codes are written without leading zeros (``G0``, ``M3``), and read with or
+without them. Canned cycles are read as G73 and G81-G89 with the RS274/NGC words (R, Q, P seconds, L
+repeats). Not in the table, so refused by name when read and never written: M19 (an oriented spindle
+stop is a machine builder's macro on Mach3, not a standard code), G44, G95 and the lathe codes.
+Sources: the Mach3 Mill "Using Mach3Mill" manual (chapter 10, G- and M-code tables) and the NIST
+RS274/NGC interpreter version 3 report the manual follows.
+"""
+
+from __future__ import annotations
+
+from postproc.rs274.codes import CodeTable
+
+ROWS = (
+    ("G0", "01", "motion", "rapid"),
+    ("G1", "01", "motion", "linear"),
+    ("G2", "01", "motion", "cw"),
+    ("G3", "01", "motion", "ccw"),
+    ("G4", "00", "dwell", None),
+    ("G17", "02", "plane", "XY"),
+    ("G18", "02", "plane", "ZX"),
+    ("G19", "02", "plane", "YZ"),
+    ("G20", "06", "units", "inch"),
+    ("G21", "06", "units", "mm"),
+    ("G28", "00", "home", "home"),
+    ("G30", "00", "home", "home2"),
+    ("G40", "07", "cutter", "off"),
+    ("G41", "07", "cutter", "left"),
+    ("G42", "07", "cutter", "right"),
+    ("G43", "08", "length", "positive"),
+    ("G49", "08", "length", "cancel"),
+    ("G53", "00", "machine", None),
+    ("G54", "14", "offset", 1),
+    ("G55", "14", "offset", 2),
+    ("G56", "14", "offset", 3),
+    ("G57", "14", "offset", 4),
+    ("G58", "14", "offset", 5),
+    ("G59", "14", "offset", 6),
+    ("G61", "15", "path", "exact_stop"),
+    ("G64", "15", "path", "cutting"),
+    ("G73", "09", "cycle", "peck_chip"),
+    ("G80", "09", "cycle_cancel", None),
+    ("G81", "09", "cycle", "drill"),
+    ("G82", "09", "cycle", "drill_dwell"),
+    ("G83", "09", "cycle", "peck_deep"),
+    ("G85", "09", "cycle", "bore_feed"),
+    ("G86", "09", "cycle", "bore_stop"),
+    ("G89", "09", "cycle", "bore_dwell_feed"),
+    ("G90", "03", "distance", "absolute"),
+    ("G91", "03", "distance", "incremental"),
+    ("G94", "05", "feed_mode", "per_min"),
+    ("G98", "10", "return", "initial"),
+    ("G99", "10", "return", "r"),
+    ("M0", "", "program", "stop"),
+    ("M1", "", "program", "optional_stop"),
+    ("M2", "", "program", "end"),
+    ("M3", "", "spindle", "cw"),
+    ("M4", "", "spindle", "ccw"),
+    ("M5", "", "spindle", "stop"),
+    ("M6", "", "tool_change", None),
+    ("M7", "", "coolant", "mist"),
+    ("M8", "", "coolant", "flood"),
+    ("M9", "", "coolant", "off"),
+    ("M30", "", "program", "end_rewind"),
+)
+"""The codes this dialect reads and writes; the writer spells a meaning as its first row."""
+
+M_GROUPS: dict[int, str] = {
+    **dict.fromkeys((0, 1, 2, 30), "4"), 6: "6", **dict.fromkeys((3, 4, 5), "7"), **dict.fromkeys((7, 8, 9), "8"),
+}
+"""RS274/NGC M-code modal groups: two codes of one group in a block are an error."""
+
+CODES = CodeTable(ROWS)

@@ -1,0 +1,50 @@
+"""The conformance suite (``postproc.testing``) run on every installed dialect, as a plugin author runs it.
+
+Each case names a dialect, its example programs, known-bad programs and, for a lathe, the set-up its
+examples are read under. Every installed dialect must have a case (a test holds it), so a new
+dialect (Fagor, a plugin) joins the suite by adding one line here; hypothesis draws MAX_EXAMPLES
+programs per generated check.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from postproc.plugins import default_registry
+from postproc.testing import ConformanceTests, DialectUnderTest
+
+ROOT = Path(__file__).resolve().parents[1]
+HERE = ROOT / "tests" / "conformance"
+
+CASES = {
+    "fanuc": DialectUnderTest("fanuc", ROOT / "examples/fanuc", ROOT / "tests/golden/fanuc/invalid"),
+    "fanuc-lathe": DialectUnderTest("fanuc", ROOT / "examples/fanuc-lathe", HERE / "fanuc-lathe/invalid",
+                                    ROOT / "examples/setups/fanuc_0i_tf.xml", name="fanuc-lathe"),
+    "gsk": DialectUnderTest("gsk", ROOT / "examples/gsk", HERE / "gsk/invalid"),
+    "isg": DialectUnderTest("isg", ROOT / "examples/isg", HERE / "isg/invalid"),
+    "linuxcnc": DialectUnderTest("linuxcnc", ROOT / "examples/linuxcnc", HERE / "linuxcnc/invalid"),
+    "grbl": DialectUnderTest("grbl", HERE / "grbl", HERE / "grbl/invalid"),
+    "mach3": DialectUnderTest("mach3", ROOT / "plugins/example_dialect/examples",
+                              ROOT / "plugins/example_dialect/examples/invalid"),
+}
+"""One case per installed dialect (two for Fanuc: mill and lathe)."""
+
+
+@pytest.fixture(params=sorted(CASES))
+def postproc_conformance(request: pytest.FixtureRequest) -> DialectUnderTest:
+    case = CASES[request.param]
+    if case.dialect not in default_registry().dialects:
+        pytest.skip(f"the {case.dialect} dialect is not installed")
+    return case
+
+
+class TestConformance(ConformanceTests):
+    pass
+
+
+def test_every_installed_dialect_has_a_case() -> None:
+    covered = {case.dialect for case in CASES.values()}
+    missing = sorted(set(default_registry().dialects) - covered)
+    assert not missing, f"installed dialects without a conformance case in {__file__}: {missing}"
