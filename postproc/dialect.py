@@ -91,7 +91,7 @@ class Writer(abc.ABC):
         from pathlib import PurePath
         variables = {"program": PurePath(self.ctx.file).stem, "source_dialect": self.source_dialect,
                      "machine": setup.name, "units": self.ctx.state.units}
-        return render(name, text, variables, setup.source, setup.template_lines.get(name, 1))
+        return render(name, text, variables, setup.template_file(name), setup.template_lines.get(name, 1))
 
     def unsupported_block(self, block: Block, err: UnsupportedError) -> str | None:
         err.located(self.ctx.at(block))

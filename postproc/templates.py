@@ -52,12 +52,21 @@ def render(name: str, text: str, variables: dict[str, Any], source: str | None, 
     return _render_all(name, text, [variables], source, first_line)[0]
 
 
-def check_templates(setup: MachineSetup) -> None:
-    """Render the set-up's templates with sample values (metric and inch), as ``config check`` does."""
+def check_templates(setup: MachineSetup, collect: bool = False) -> list[ConfigError]:
+    """Render the set-up's templates with sample values (metric and inch), as ``config check`` does.
+    The first failure is raised, or with ``collect`` every template's failure is returned."""
+    problems: list[ConfigError] = []
     for name in ("header", "footer"):
         text = getattr(setup.templates, name)
         if text:
-            _render_all(name, text, sample_variables(setup), setup.source, setup.template_lines.get(name, 1))
+            try:
+                _render_all(name, text, sample_variables(setup), setup.template_file(name),
+                            setup.template_lines.get(name, 1))
+            except ConfigError as err:
+                if not collect:
+                    raise
+                problems.append(err)
+    return problems
 
 
 def sample_variables(setup: MachineSetup) -> list[dict[str, Any]]:
