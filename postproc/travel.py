@@ -51,7 +51,7 @@ class TravelCheck:
                        for a in sim.axes}
         """Set-up value -> simulator value (mm, lathe X as a radius), per axis."""
         self.travel: dict[str, AxisTravel] = {a: t for a, t in setup.travel.items() if a in self.factor}
-        self.checked = frozenset(a for a, t in self.travel.items() if t.limited())
+        self.checked = tuple(a for a in sim.axes if a in self.travel and self.travel[a].limited())
         self.length_mode = "cancel"
         self.length_register: int | None = None
         self.lathe_offset: int | None = 0

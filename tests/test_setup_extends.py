@@ -92,7 +92,7 @@ def test_a_shipped_base_by_name(tmp_path):
     child = _write(tmp_path, "vf2.xml", '<MachineSetup name="VF-2" extends="haas-mill.xml">\n'
                                         '  <Machine axes="XYZA"/>\n</MachineSetup>\n')
     setup = load_setup(child)
-    assert (setup.dialect, setup.controller.variant, setup.input.decimal_point) == ("fanuc", "haas", "calculator")
+    assert (setup.dialect, setup.controller.variant) == ("fanuc", "haas")
     assert setup.machine.axes == "XYZA"
 
 
@@ -321,3 +321,55 @@ class ClashPlugin:
 def test_a_plugin_group_cannot_take_a_core_element():
     with pytest.raises(TypeError, match="<Cycles> registered twice"):
         _groups(ClashPlugin())
+
+
+# -- the shipped bases and example set-ups -------------------------------------------------------------
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+@pytest.mark.parametrize("path", sorted(BASES.glob("*.xml")), ids=lambda p: p.name)
+def test_every_shipped_base_checks_clean_and_dumps_identical(cli, path):
+    assert cli("config", "check", path).status == 0
+    assert cli("config", "dump", path).out == path.read_bytes()
+
+
+@pytest.mark.parametrize("path", sorted((ROOT / "examples/setups").glob("*.xml")), ids=lambda p: p.name)
+def test_example_flattened_dump_reloads_to_the_same_setup(cli, tmp_path, path):
+    flat = tmp_path / "flat.xml"
+    flat.write_bytes(cli("config", "dump", "--flatten", path).out)
+    assert load_setup(flat) == load_setup(path)
+    assert cli("config", "dump", flat).out == flat.read_bytes()  # the flattened file is canonical too
+
+
+def test_some_examples_extend_a_shipped_and_some_a_local_base():
+    extends = {p.name: load_setup(p).extends for p in (ROOT / "examples/setups").glob("*.xml")}
+    assert extends["fanuc_0i_mf_vmc.xml"] == "fanuc-mill.xml"
+    assert extends["haas_vf2_cell3.xml"] == "haas_vf2_shop.xml"
+    assert extends["gsk_980tdc_ck6140.xml"] == "gsk_980tdc.xml"
+
+
+def test_the_vmc_example_values():
+    setup = load_setup(ROOT / "examples/setups/fanuc_0i_mf_vmc.xml")
+    assert (setup.dialect, setup.input.decimal_point, setup.machine.start_z) == ("fanuc", "calculator", 100.0)
+    assert (setup.travel["X"].minimum, setup.travel["X"].maximum, setup.travel["X"].home) == (-800.0, 0.0, 0.0)
+    assert setup.work_offsets["1"].axes() == {"X": -400.0, "Y": -250.0, "Z": -350.0}
+    assert setup.tools["3"].length == 140.25
+
+
+SHOP_RUNS = [
+    ("fanuc", "fanuc_0i_mf_vmc.xml", "examples/fanuc", ("o1001", "o1002", "o1003", "o1005")),
+    ("fanuc", "haas_vf2_cell3.xml", "examples/fanuc", ("o1001", "o1002", "o1003", "o1005")),
+    ("linuxcnc", "linuxcnc_mill.xml", "examples/linuxcnc", ("",)),
+    ("gsk", "gsk_980tdc_ck6140.xml", "examples/gsk", ("",)),
+]
+
+
+@pytest.mark.parametrize("dialect, setup, folder, stems", SHOP_RUNS, ids=[r[1] for r in SHOP_RUNS])
+def test_the_example_programs_stay_inside_their_machines_travel(cli, dialect, setup, folder, stems):
+    """Every offset and tool the programs use is in the set-up, and every move is inside the travel."""
+    programs = [p for p in sorted((ROOT / folder).glob("*.n*c")) if p.stem.startswith(stems)]
+    assert programs
+    for program in programs:
+        result = cli("toolpath", program, "--dialect", dialect, "--machine", ROOT / "examples/setups" / setup)
+        assert (result.status, result.err) == (0, ""), program
