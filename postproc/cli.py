@@ -111,7 +111,8 @@ EXAMPLES = {
   postproc dialects --json""",
     "config": """examples:
   postproc config check examples/setups/fanuc_0i_mf_calculator.xml
-  postproc config dump examples/setups/fanuc_0i_mf_calculator.xml > canonical.xml""",
+  postproc config dump examples/setups/fanuc_0i_mf_calculator.xml > canonical.xml
+  postproc config dump --flatten examples/setups/haas_vf2_cell3.xml > resolved.xml""",
 }
 """One example (or a few) per command, shown by its ``--help``."""
 

@@ -337,9 +337,11 @@ class MachineSetup(XmlNode):
 
     @classmethod
     def from_xml(cls, el: etree._Element) -> "MachineSetup":
-        """One ``<MachineSetup>`` element with the built-in groups (``load_setup`` follows ``extends`` and
-        knows the plugins' groups)."""
+        """One ``<MachineSetup>`` element with the built-in groups. ``load_setup`` follows ``extends`` and
+        knows the plugins' groups; an element alone cannot, so an ``extends`` here is an error."""
         from .setup_load import merge
+        if el.get("extends") is not None:
+            raise ConfigError("<MachineSetup extends> needs the file it is in: load it with load_setup", where(el))
         return merge([el], builtin_groups(), el.getroottree().docinfo.URL)
 
     def make_xml_source(self, base_dir: str = ".", rel_file: str = "", exhibition_only: bool = False,

@@ -373,3 +373,11 @@ def test_the_example_programs_stay_inside_their_machines_travel(cli, dialect, se
     for program in programs:
         result = cli("toolpath", program, "--dialect", dialect, "--machine", ROOT / "examples/setups" / setup)
         assert (result.status, result.err) == (0, ""), program
+
+
+def test_an_element_alone_cannot_extend(tmp_path):
+    from lxml import etree
+    el = etree.fromstring(b'<MachineSetup name="m" extends="base.xml"/>')
+    with pytest.raises(ConfigError, match="load it with load_setup"):
+        MachineSetup.from_xml(el)
+    assert MachineSetup.from_xml(etree.fromstring(b'<MachineSetup name="m"/>')).name == "m"

@@ -231,3 +231,24 @@ def test_no_limits_no_check(cli, tmp_path):
 def test_programs_inside_the_travel_pass(cli, tmp_path, program):
     result, _ = _toolpath(cli, tmp_path, program)
     assert (result.status, result.err) == (0, "")
+
+
+def test_a_lathe_coordinate_setting_moves_the_frame_not_the_machine(cli, tmp_path):
+    # X100 Z50 (G54 X0 Z0) is machine X100 Z50; G50 X0 Z0 makes that point the new zero: X310 is
+    # machine X410 (diameter), 10 beyond 400; Z-640 is machine Z-590, inside -600
+    machine = tmp_path / "lathe.xml"
+    machine.write_text(DECLARATION + LATHE)
+    nc = tmp_path / "t.nc"
+    nc.write_text("G0 X100 Z60\nG0 Z50\nG50 X0 Z0\nG0 Z-640\nG0 X310\nM30\n")
+    result = cli("toolpath", nc, "--dialect", "fanuc", "--machine", machine)
+    assert result.err_lines == [f"{nc}:5:4: error: X+10.000 mm beyond the limit 400.000 (machine X 410.000)"]
+
+
+def test_translate_says_where_the_travel_can_no_longer_be_checked(cli, tmp_path):
+    # the simulation cannot run G92 on a mill: from there the machine position is not known
+    machine, nc = _files(tmp_path, "G90 G54 G0 X0 Y0 Z50\nG92 X0 Y0\nG0 X600\nM30\n")
+    result = cli("translate", nc, "--from", "fanuc", "--to", "fanuc", "--machine", machine)
+    assert result.status == 1
+    assert result.err_lines == [f"{nc}:2:1: error: the travel cannot be checked from here on: G92 (work "
+                                "coordinate system setting) cannot be simulated"]
+    assert cli("translate", nc, "--from", "fanuc", "--to", "fanuc").status == 0  # no limits, no check
