@@ -652,11 +652,12 @@ def check_travel(lines: Iterable[str], *, file: str, dialect: type[Dialect], set
                              diagnostics=private, check=False):
         pass
     for err in private.errors:
-        if not isinstance(err, TravelError):
+        stopped = not isinstance(err, TravelError)
+        if stopped:
             err = TravelError(f"the travel cannot be checked from here on: {err.message}", err.location)
         if on_unsupported == "warn":
             diagnostics.warn(err.message, err.location)
         else:
             diagnostics.error(err)
-        if not isinstance(err, TravelError) or err.message.startswith("the travel cannot be checked from"):
+        if stopped:
             return

@@ -362,6 +362,7 @@ SHOP_RUNS = [
     ("fanuc", "haas_vf2_cell3.xml", "examples/fanuc", ("o1001", "o1002", "o1003", "o1005")),
     ("linuxcnc", "linuxcnc_mill.xml", "examples/linuxcnc", ("",)),
     ("gsk", "gsk_980tdc_ck6140.xml", "examples/gsk", ("",)),
+    ("isg", "isg_twincat_mill.xml", "examples/isg", ("prof_contour_xy", "steps_subroutine")),
 ]
 
 

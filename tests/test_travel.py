@@ -252,3 +252,17 @@ def test_translate_says_where_the_travel_can_no_longer_be_checked(cli, tmp_path)
     assert result.err_lines == [f"{nc}:2:1: error: the travel cannot be checked from here on: G92 (work "
                                 "coordinate system setting) cannot be simulated"]
     assert cli("translate", nc, "--from", "fanuc", "--to", "fanuc").status == 0  # no limits, no check
+
+
+@pytest.mark.parametrize("code, errors", [("G3", 1), ("G2", 0)])
+def test_a_lathe_arc_bulges_in_x_as_a_diameter(cli, tmp_path, code, errors):
+    # ZX plane, X as a radius: from (Z0, X190) to (Z-40, X190) with R20, centre (Z-20, X190). Counter-
+    # clockwise in (Z, X) the arc passes X radius 210 = diameter 420, 20 beyond 400; clockwise it passes 170
+    machine = tmp_path / "lathe.xml"
+    machine.write_text(DECLARATION + LATHE)
+    nc = tmp_path / "t.nc"
+    nc.write_text(f"G0 X100 Z10\nG0 X380 Z0\n{code} X380 Z-40 R20 F0.2\nM30\n")
+    result = cli("toolpath", nc, "--dialect", "fanuc", "--machine", machine)
+    expected = [f"{nc}:3:4: error: X+20.000 mm beyond the limit 400.000 between the arc's end points "
+                "(machine X 420.000)"]
+    assert result.err_lines == expected[:errors]
