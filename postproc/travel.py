@@ -34,6 +34,9 @@ from .setup_machine import ROTARY_AXES, AxisTravel
 if TYPE_CHECKING:
     from .toolpath import Simulator
 
+_NONE: dict[str, float] = {}
+_FRAME_KEYS = frozenset(("WorkOffset", "ToolLengthOffset", "ToolSelect", "DataSetting"))
+"""Sections that change what lies between the program's frame and the machine."""
 EPSILON = 1e-6
 """mm (or degrees) a point may pass a limit by: the rounding of the toolpath's coordinates."""
 
@@ -51,6 +54,9 @@ class TravelCheck:
                        for a in sim.axes}
         """Set-up value -> simulator value (mm, lathe X as a radius), per axis."""
         self.travel: dict[str, AxisTravel] = {a: t for a, t in setup.travel.items() if a in self.factor}
+        self.declared = {int(n): {a: v * self.factor[a] for a, v in o.axes().items() if a in self.factor}
+                         for n, o in setup.work_offsets.items()}
+        """The set-up's work offsets in simulator units, by system number."""
         self.checked = tuple(a for a in sim.axes if a in self.travel and self.travel[a].limited())
         self.length_mode = "cancel"
         self.length_register: int | None = None
@@ -62,6 +68,8 @@ class TravelCheck:
         self.frame: dict[str, float] = {}
         """Axis -> machine minus simulator position that a coordinate setting (G50) fixed."""
         self.said: set[tuple[str, str]] = set()
+        self.extra: dict[str, tuple[float | None, str]] = {}
+        """Axis -> ``_extra`` while no work system, work or tool offset, or coordinate setting changes."""
         self.overrun_block: Block | None = None
         self.overrun: set[str] = set()
         """Axes of ``overrun_block`` already reported beyond their limits."""
@@ -73,6 +81,8 @@ class TravelCheck:
     def settings(self, block: Block) -> None:
         """Tool offsets a block puts in force (before its motion, as the controller applies them)."""
         sections = block.sections
+        if not sections.keys().isdisjoint(_FRAME_KEYS):
+            self.extra.clear()
         s = sections.get("ToolLengthOffset")
         if s is not None:
             self.length_mode = s.mode  # type: ignore[attr-defined]
@@ -91,6 +101,7 @@ class TravelCheck:
 
     def coordinate_set(self, axis: str, value: float) -> None:
         """G50 on a lathe: the tool stays; the program's frame moves so the present point reads ``value``."""
+        self.extra.clear()
         here = self.pos.get(axis)
         tool = self._tool(axis)
         if here is None or tool is None:
@@ -162,6 +173,16 @@ class TravelCheck:
 
     def _machine(self, axis: str, value: float, block: Block | None = None) -> float | None:
         """The machine position of a simulator position in the present frame, or None (unknown, said)."""
+        extra = self.extra.get(axis)
+        if extra is None:
+            extra = self.extra[axis] = self._extra(axis)
+        if extra[0] is None:
+            self._unknown(block, axis, extra[1])
+            return None
+        return value + extra[0]
+
+    def _extra(self, axis: str) -> tuple[float | None, str]:
+        """Machine minus simulator position on ``axis`` in the present frame, or None and why not."""
         tool = self._tool(axis)
         frame = self.frame.get(axis)
         if frame is not None:
@@ -172,9 +193,8 @@ class TravelCheck:
         if tool is None:
             reason = self._tool_reason(axis)
         if base is None or tool is None:
-            self._unknown(block, axis, reason)
-            return None
-        return value + base + tool
+            return None, reason
+        return base + tool, ""
 
     def _work_offset(self, axis: str) -> tuple[float | None, str]:
         """What the active work system adds beyond what the simulator already added (a G10's values)."""
@@ -182,14 +202,13 @@ class TravelCheck:
         system = sim.modal.work_offset
         total = 0.0
         for number, required in ((system, True), (0, False)):
-            if axis in sim.offsets.get(number, {}):
+            if axis in sim.offsets.get(number, _NONE):
                 continue  # a G10 set it: the simulator's point already holds it
-            declared = self.setup.work_offsets.get(str(number))
-            value = None if declared is None else declared.axes().get(axis)
+            value = self.declared.get(number, _NONE).get(axis)
             if value is None and required:
                 return None, (f"the set-up gives work system {number} no offset for {axis} (<WorkOffsets><Offset "
                               f"number=\"{number}\" {axis.lower()}=...>) and the program sets none")
-            total += (value or 0.0) * self.factor[axis]
+            total += value or 0.0
         return total, ""
 
     def _tool(self, axis: str) -> float | None:
