@@ -102,6 +102,11 @@ def translate(lines: Iterable[str], out: TextIO, *, file: str, source: str, targ
             ctx.on_unsupported = on_unsupported
             ctx.keep_check = _keep_check(src, dst, ctx, registry)
 
+        if setup.travel_limited():
+            from .toolpath import check_travel
+            lines = list(lines)  # read twice: the travel check simulates the source first
+            check_travel(lines, file=file, dialect=src, setup=setup, diagnostics=diagnostics,
+                         on_unsupported=on_unsupported, registry=registry)
         mode = "keep" if src.NAME == dst.NAME else "auto" if dst.PROGRAMS else "execute"
         ctx, blocks = read_blocks(lines, file, src, setup, diagnostics, program_mode=mode, prepare=prepare)
         sequences = Sequences(ctx, src.NAME, dst, defines)

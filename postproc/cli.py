@@ -111,7 +111,8 @@ EXAMPLES = {
   postproc dialects --format json    # the same for tools""",
     "config": """examples:
   postproc config check examples/setups/fanuc_0i_mf_calculator.xml
-  postproc config dump examples/setups/fanuc_0i_mf_calculator.xml > canonical.xml""",
+  postproc config dump examples/setups/fanuc_0i_mf_calculator.xml > canonical.xml
+  postproc config dump --flatten examples/setups/haas_vf2_cell3.xml > resolved.xml""",
 }
 """One example (or a few) per command, shown by its ``--help``."""
 
@@ -164,6 +165,8 @@ def build_parser() -> argparse.ArgumentParser:
     tp.add_argument("input", metavar="IN", help=f"the program to simulate ({STDIO})")
     tp.add_argument("--dialect", required=True, metavar="DIALECT", help="dialect of IN")
     tp.add_argument("--machine", metavar="M.xml", help=MACHINE)
+    tp.add_argument("--on-unsupported", choices=("error", "warn"), default="error",
+                    help="warn: a move beyond the set-up's travel limits is a warning, not an error")
     tp.add_argument("--lib", action="append", default=[], metavar="DIR", help=LIB)
     tp.add_argument("--format", choices=("jsonl", "svg", "png"), default="jsonl",
                     help="jsonl (default), svg or png (png needs -o)")
@@ -212,6 +215,8 @@ def build_parser() -> argparse.ArgumentParser:
     c.add_argument("file", help="the set-up XML (M.xml)")
     c.add_argument("--define", action="append", default=[], metavar="NAME=VALUE",
                    help="a variable the templates are checked with (as translate --define)")
+    c.add_argument("--flatten", action="store_true",
+                   help="dump: write the set-up resolved, without extends (default: extends and the file's own values)")
     c.set_defaults(run=cmd_config)
     return p
 
@@ -316,7 +321,7 @@ def cmd_toolpath(args: argparse.Namespace) -> int:
         lines, diagnostics = _watched(args.input, src)
         write_output(_output(args.output), lambda out: export_toolpath(
             lines, out, file=_name(args.input), dialect=args.dialect, setup=setup, fmt=args.format,
-            diagnostics=diagnostics), binary=binary, input_path=_input_path(args.input))
+            diagnostics=diagnostics, on_unsupported=args.on_unsupported), binary=binary, input_path=_input_path(args.input))
     return 0
 
 
@@ -368,26 +373,33 @@ def cmd_dialects(args: argparse.Namespace) -> int:
 
 
 def cmd_config(args: argparse.Namespace) -> int:
-    default_registry()
-    setup = load_setup(args.file)
+    """Every problem of the set-up at once: its values, its dialect, its pipeline, its templates."""
+    from .setup import load_setup_collect
+    from .setup_load import raise_all
+    from .templates import check_templates
+    registry = default_registry()
+    setup, problems = load_setup_collect(args.file, registry.setup_groups)
     if setup.dialect:
         try:
-            default_registry().dialect(setup.dialect)
+            registry.dialect(setup.dialect)
         except UsageError as err:  # a set-up naming a missing dialect is a configuration error
             root = parse_xml_file(args.file)
-            raise ConfigError(err.message, Location(args.file, root.sourceline or 1, 1)) from None
+            problems.append(ConfigError(err.message, Location(args.file, root.sourceline or 1, 1)))
     pipeline = setup.pipeline_path()
     if pipeline is not None:
         from .syntax import load_pipeline
-        load_pipeline(pipeline)
+        try:
+            load_pipeline(pipeline)
+        except ConfigError as err:
+            problems.append(err)
     from .sequences import parse_defines
-    from .templates import check_templates
-    check_templates(setup, parse_defines(args.define))
+    problems.extend(check_templates(setup, parse_defines(args.define), collect=True))
+    raise_all(problems)
     if args.action == "check":
         print(f"{args.file}: ok")
         return 0
     base = str(Path(args.file).parent)
-    sys.stdout.buffer.write(to_bytes(setup.make_xml_source(base, Path(args.file).name, True)))
+    sys.stdout.buffer.write(to_bytes(setup.make_xml_source(base, Path(args.file).name, True, flatten=args.flatten)))
     return 0
 
 

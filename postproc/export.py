@@ -15,10 +15,12 @@ from .toolpath import Event, start_position, toolpath_events
 
 def export_toolpath(lines: Iterable[str], out: Any, *, file: str, dialect: str | type[Dialect],
                     setup: MachineSetup | None = None, fmt: str = "jsonl",
-                    diagnostics: Diagnostics | None = None) -> None:
-    """Write a program's toolpath to ``out``: JSON lines or SVG (text streams), PNG (a binary stream)."""
+                    diagnostics: Diagnostics | None = None, on_unsupported: str = "error") -> None:
+    """Write a program's toolpath to ``out``: JSON lines or SVG (text streams), PNG (a binary stream).
+    ``on_unsupported="warn"``: a move beyond the set-up's travel is a warning."""
     setup = setup or MachineSetup()
-    events = toolpath_events(lines, file=file, dialect=dialect, setup=setup, diagnostics=diagnostics)
+    events = toolpath_events(lines, file=file, dialect=dialect, setup=setup, diagnostics=diagnostics,
+                             on_unsupported=on_unsupported)
     if fmt == "jsonl":
         write_jsonl(events, out, file)
     elif fmt in ("svg", "png"):

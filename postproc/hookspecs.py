@@ -14,6 +14,7 @@ from .xmlio import XFactory
 
 if TYPE_CHECKING:
     from .lower import Lowering
+    from .setup import SetupGroup
 
 hookspec = pluggy.HookspecMarker("postproc")
 hookimpl = pluggy.HookimplMarker("postproc")
@@ -37,3 +38,12 @@ def postproc_register_lowerings(register: Callable[["Lowering"], None]) -> None:
     ``postproc.lower``) that applies to every translation and decides from the target dialect's
     capabilities whether it changes anything. A rewrite only one target needs belongs in that dialect's
     ``LOWERING`` instead."""
+
+
+@hookspec
+def postproc_register_setup_groups(register: Callable[[type["SetupGroup"]], None]) -> None:
+    """Register set-up groups by calling ``register(GroupClass)`` once per group: a subclass of
+    ``postproc.setup.SetupGroup`` (pydantic, camelCase attributes) whose ``TAG`` names its element. A set-up
+    may then hold ``<TAG attr="..."/>``, validated, located in every error, inherited through ``extends``
+    and written back by ``config dump``; the plugin reads it with ``setup.group(GroupClass)``. A tag the
+    core or another plugin already uses is an error."""

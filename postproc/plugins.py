@@ -17,7 +17,11 @@ from .errors import UsageError
 from .expr import register_expressions
 from .ir import register_sections
 from .lower import Lowering, register_transform
+from .setup import SetupGroup, builtin_groups
 from .xmlio import DEFAULT, XFactory
+
+RESERVED_SETUP_TAGS = frozenset(("Templates", "Library", "MachineCodes", "CodeCall", "Axes", "WorkOffsets", "Tools"))
+"""Set-up elements that are not groups: no plugin group may take their names."""
 
 PROJECT = "postproc"
 
@@ -31,9 +35,12 @@ class Registry:
         self.dialects: dict[str, type[Dialect]] = {}
         self.lowerings: list[Lowering] = []
         """Generic lowering steps, in registration order (``postproc_register_lowerings``)."""
+        self.setup_groups: dict[str, type[SetupGroup]] = builtin_groups()
+        """Element name -> set-up group class: the built-in groups, then the plugins' (``postproc_register_setup_groups``)."""
         pm.hook.postproc_register_dialects(register=self._register_dialect)
         pm.hook.postproc_register_xml(factory=factory)
         pm.hook.postproc_register_lowerings(register=self._register_lowering)
+        pm.hook.postproc_register_setup_groups(register=self._register_setup_group)
 
     def _register_dialect(self, cls: type) -> None:
         if not (isinstance(cls, type) and issubclass(cls, Dialect) and cls.NAME):
@@ -48,6 +55,16 @@ class Registry:
             raise TypeError(f"{step!r} is not a lowering step")
         if step not in self.lowerings:
             self.lowerings.append(step)
+
+    def _register_setup_group(self, cls: type[SetupGroup]) -> None:
+        if not (isinstance(cls, type) and issubclass(cls, SetupGroup) and cls.TAG):
+            raise TypeError(f"{cls!r} is not a postproc SetupGroup with a TAG")
+        known = self.setup_groups.get(cls.TAG)
+        if known is cls:
+            return
+        if known is not None or cls.TAG in RESERVED_SETUP_TAGS:
+            raise TypeError(f"set-up element <{cls.TAG}> registered twice ({cls.__module__}.{cls.__name__})")
+        self.setup_groups[cls.TAG] = cls
 
     def dialect(self, name: str) -> type[Dialect]:
         try:

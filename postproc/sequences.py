@@ -161,9 +161,10 @@ class Sequences:
         from .templates import render
         setup = self.ctx.setup
         first = setup.template_lines.get(name, 1)
-        out = render(name, text, self.variables(extra), setup.source, first)
+        file = setup.template_file(name)
+        out = render(name, text, self.variables(extra), file, first)
         if out and self.target is not None:
-            check_output(name, out, self.target, setup, Location(setup.source or "<set-up>", first, 1),
+            check_output(name, out, self.target, setup, Location(file or "<set-up>", first, 1),
                          self.state if name != "header" else None, name not in ("footer", "program_end"))
         return out
 

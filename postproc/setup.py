@@ -14,8 +14,9 @@ from typing import Any, ClassVar, Literal
 from lxml import etree
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator
 
-from .errors import ConfigError, Location
-from .xmlio import XFactory, XmlNode, parse_xml_file, where
+from .errors import ConfigError
+from .setup_machine import MAX_COORDINATE, AxisTravel, ToolData, WorkOffsetData, entry_values
+from .xmlio import XFactory, XmlNode, where
 
 
 def _camel(name: str) -> str:
@@ -23,8 +24,9 @@ def _camel(name: str) -> str:
     return head + "".join(p.title() for p in rest)
 
 
-class _Group(BaseModel):
-    """A group of parameters stored as the attributes of one element."""
+class SetupGroup(BaseModel):
+    """A group of parameters stored as the attributes of one element. Plugins add their own groups
+    (a subclass with its ``TAG``) through the ``postproc_register_setup_groups`` hook."""
 
     model_config = ConfigDict(alias_generator=_camel, populate_by_name=True, extra="forbid",
                               validate_assignment=True, frozen=False, allow_inf_nan=False)
@@ -32,7 +34,7 @@ class _Group(BaseModel):
     TAG: ClassVar[str] = ""
 
 
-class InputSettings(_Group):
+class InputSettings(SetupGroup):
     TAG = "Input"
     decimal_point: Literal["least-increment", "calculator"] = "least-increment"
     """How a value written without a decimal point is read: Fanuc's least input increment (X10 =
@@ -59,7 +61,7 @@ class InputSettings(_Group):
         return mm if units == "mm" else mm / 10.0
 
 
-class OutputSettings(_Group):
+class OutputSettings(SetupGroup):
     TAG = "Output"
     normalize: bool = False
     """Write every block from its words with explicit decimal points instead of copying it."""
@@ -83,7 +85,7 @@ class OutputSettings(_Group):
     """Longest line the control takes, line ending excluded (0: no limit); a longer one is an error."""
 
 
-class CycleSettings(_Group):
+class CycleSettings(SetupGroup):
     TAG = "Cycles"
     peck_retract: float = Field(0.5, gt=0)
     """G73 retract d after each peck, mm (Fanuc parameter 5114)."""
@@ -106,13 +108,20 @@ class CycleSettings(_Group):
         return frozenset(p.strip() for p in self.expand.split(",") if p.strip())
 
 
-class MachineSettings(_Group):
+class MachineSettings(SetupGroup):
     TAG = "Machine"
     axes: str = "XYZ"
-    start_x: float = 0.0
-    start_y: float = 0.0
-    start_z: float = 0.0
-    """Position (mm, work coordinates) assumed at program start for toolpath simulation."""
+    units: Literal["mm", "inch"] = "mm"
+    """Unit of the machine's lengths in the set-up: start position, travel and home (``<Axes>``), work
+    offsets (``<WorkOffsets>``), tool offsets (``<Tools>``). Cycle parameters stay in mm."""
+    start_x: float = Field(0.0, ge=-MAX_COORDINATE, le=MAX_COORDINATE)
+    start_y: float = Field(0.0, ge=-MAX_COORDINATE, le=MAX_COORDINATE)
+    start_z: float = Field(0.0, ge=-MAX_COORDINATE, le=MAX_COORDINATE)
+    """Position (work coordinates, in ``units``) assumed at program start for toolpath simulation."""
+
+    def mm(self) -> float:
+        """mm per unit of the machine's lengths."""
+        return 25.4 if self.units == "inch" else 1.0
 
     @model_validator(mode="after")
     def _axes_known(self) -> "MachineSettings":
@@ -122,7 +131,7 @@ class MachineSettings(_Group):
         return self
 
 
-class LatheCycleSettings(_Group):
+class LatheCycleSettings(SetupGroup):
     """The data parameters a lathe cycle takes an omitted word from (GSK 980TDc No.051-060, Fanuc
     5130-5143). A value programmed in a cycle replaces the default for later cycles of the run, as the
     controller rewrites its parameter. Lengths in mm (an inch program reads them converted), radius values."""
@@ -158,7 +167,7 @@ class LatheCycleSettings(_Group):
         return self
 
 
-class Limits(_Group):
+class Limits(SetupGroup):
     """Bounds of the interpreter (``postproc.interp``): a program that exceeds one is a located error
     naming the construct, never a hang."""
 
@@ -177,7 +186,7 @@ class Limits(_Group):
     controller accepts anything near the default 64 kB)."""
 
 
-class ControllerSettings(_Group):
+class ControllerSettings(SetupGroup):
     """Which controller of the dialect's family the machine has: its variant selects the family's
     default machine codes and the variant's word rules (each rule may be set on its own)."""
 
@@ -256,8 +265,14 @@ class Templates(BaseModel):
         return {f: t for f in self.TAGS.values() if (t := getattr(self, f))}
 
 
-GROUPS: tuple[type[_Group], ...] = (InputSettings, OutputSettings, CycleSettings, MachineSettings, Limits,
-                                    ControllerSettings, LatheCycleSettings)
+GROUPS: dict[type[SetupGroup], str] = {
+    InputSettings: "input", OutputSettings: "output", CycleSettings: "cycles", MachineSettings: "machine",
+    Limits: "limits", ControllerSettings: "controller", LatheCycleSettings: "lathe_cycles"}
+"""The built-in groups, in the order ``config dump`` writes them, and the ``MachineSetup`` attribute of each."""
+
+
+def builtin_groups() -> dict[str, type[SetupGroup]]:
+    return {cls.TAG: cls for cls in GROUPS}
 
 
 class MachineSetup(XmlNode):
@@ -265,7 +280,8 @@ class MachineSetup(XmlNode):
 
     XNAME = "MachineSetup"
     __slots__ = ("name", "dialect", "pipeline", "input", "output", "cycles", "machine", "templates", "source",
-                 "template_lines", "limits", "library", "controller", "machine_codes", "code_calls", "lathe_cycles")
+                 "template_lines", "limits", "library", "controller", "machine_codes", "code_calls", "lathe_cycles",
+                 "extends", "extra", "travel", "work_offsets", "tools", "template_files", "own")
 
     def __init__(self, name: str = "default", dialect: str | None = None, pipeline: str | None = None,
                  input: InputSettings | None = None, output: OutputSettings | None = None,
@@ -298,11 +314,39 @@ class MachineSetup(XmlNode):
         self.source = source
         self.template_lines: dict[str, int] = {}
         """Line of the set-up file each template starts on (for located template errors)."""
+        self.template_files: dict[str, str] = {}
+        """The file each template comes from, where it is not ``source`` (a base the set-up extends)."""
+        self.extends: str | None = None
+        """The base this set-up's own file names (``extends``); its values are already merged in."""
+        self.extra: dict[str, SetupGroup] = {}
+        """Groups plugins registered (``postproc_register_setup_groups``), by element name."""
+        self.travel: dict[str, AxisTravel] = {}
+        """Axis letter -> its travel limits and home (``<Axes>``), machine coordinates, machine units."""
+        self.work_offsets: dict[str, WorkOffsetData] = {}
+        """Work-system number ('0'-'6') -> its offset as the operator set it (``<WorkOffsets>``)."""
+        self.tools: dict[str, ToolData] = {}
+        """Tool offset number -> its length or lathe offsets (``<Tools>``)."""
+        self.own: Any = None
+        """What the set-up's own file wrote (``setup_load.Own``), when it extends a base."""
 
     def _key(self) -> tuple[Any, ...]:
         return (self.name, self.dialect, self.pipeline, self.input, self.output, self.cycles,
                 self.machine, self.templates, self.limits, tuple(self.library), self.controller,
-                tuple(self.machine_codes), tuple(self.code_calls.items()), self.lathe_cycles)
+                tuple(self.machine_codes), tuple(self.code_calls.items()), self.lathe_cycles,
+                tuple(self.extra.items()), tuple(self.travel.items()), tuple(self.work_offsets.items()),
+                tuple(self.tools.items()))
+
+    def group(self, cls: type[SetupGroup]) -> SetupGroup:
+        """A plugin's group (its defaults when the set-up does not write it)."""
+        found = self.extra.get(cls.TAG)
+        return found if isinstance(found, cls) else cls()
+
+    def template_file(self, name: str) -> str | None:
+        return self.template_files.get(name, self.source)
+
+    def travel_limited(self) -> bool:
+        """The set-up declares travel limits on some axis: motion is checked against them."""
+        return any(t.limited() for t in self.travel.values())
 
     def __repr__(self) -> str:
         return f"MachineSetup(name={self.name!r}, dialect={self.dialect!r})"
@@ -320,79 +364,74 @@ class MachineSetup(XmlNode):
 
     @classmethod
     def from_xml(cls, el: etree._Element) -> "MachineSetup":
-        kwargs: dict[str, Any] = {}
-        lines: dict[str, int] = {}
-        by_tag = {g.TAG: g for g in GROUPS}
-        attr_of = {InputSettings: "input", OutputSettings: "output", CycleSettings: "cycles",
-                   MachineSettings: "machine", Limits: "limits", ControllerSettings: "controller",
-                   LatheCycleSettings: "lathe_cycles"}
-        library: list[str] = []
-        code_calls: dict[str, str] = {}
-        for child in el:
-            if not isinstance(child.tag, str):
-                continue
-            if child.tag == "Templates":
-                kwargs["templates"] = _templates_from_xml(child)
-                lines = {Templates.TAGS[c.tag]: c.sourceline or 1 for c in child if isinstance(c.tag, str)}
-                continue
-            if child.tag == "Library":
-                library.append(_library_from_xml(child))
-                continue
-            if child.tag == "MachineCodes":
-                if "machine_codes" in kwargs:
-                    raise ConfigError("<MachineCodes> appears twice", where(child))
-                kwargs["machine_codes"] = _machine_codes_from_xml(child)
-                continue
-            if child.tag == "CodeCall":
-                code, file = _code_call_from_xml(child)
-                if code in code_calls:
-                    raise ConfigError(f"<CodeCall code=\"{code}\"> appears twice", where(child))
-                code_calls[code] = file
-                continue
-            group = by_tag.get(child.tag)
-            if group is None:
-                raise ConfigError(f"unknown element <{child.tag}> in <MachineSetup>", where(child))
-            if attr_of[group] in kwargs:
-                raise ConfigError(f"<{child.tag}> appears twice", where(child))
-            kwargs[attr_of[group]] = _group_from_xml(group, child)
-        unknown = set(el.attrib) - {"name", "dialect", "pipeline"}
-        if unknown:
-            raise ConfigError(f"<MachineSetup> has unknown attribute(s) {', '.join(sorted(unknown))}", where(el))
-        setup = cls(name=el.get("name", "default"), dialect=el.get("dialect"), pipeline=el.get("pipeline"),
-                    source=el.getroottree().docinfo.URL, library=library, code_calls=code_calls, **kwargs)
-        setup.template_lines = lines
-        return setup
+        """One ``<MachineSetup>`` element with the built-in groups. ``load_setup`` follows ``extends`` and
+        knows the plugins' groups; an element alone cannot, so an ``extends`` here is an error."""
+        from .setup_load import merge
+        if el.get("extends") is not None:
+            raise ConfigError("<MachineSetup extends> needs the file it is in: load it with load_setup", where(el))
+        return merge([el], builtin_groups(), el.getroottree().docinfo.URL)
 
-    def make_xml_source(self, base_dir: str = ".", rel_file: str = "", exhibition_only: bool = False) -> etree._Element:
+    def make_xml_source(self, base_dir: str = ".", rel_file: str = "", exhibition_only: bool = False,
+                        flatten: bool = False) -> etree._Element:
+        """The canonical element. A set-up that extends a base writes ``extends`` and only what its own
+        file set; ``flatten`` writes the whole resolved set-up instead, without ``extends``."""
+        own = None if flatten or self.extends is None else self.own
         el = etree.Element(self.XNAME, name=self.name)
-        if self.dialect:
-            el.set("dialect", self.dialect)
-        if self.pipeline:
-            el.set("pipeline", self.pipeline)
-        for group in (self.input, self.output, self.cycles, self.machine, self.limits, self.controller,
-                      self.lathe_cycles):
-            values = group.model_dump(by_alias=True, exclude_defaults=True)
-            if values:
+        if own is not None:
+            el.set("extends", self.extends or "")
+            if "name" not in own.root:
+                del el.attrib["name"]
+        for key in ("dialect", "pipeline"):
+            value = getattr(self, key)
+            if value and (own is None or key in own.root):
+                el.set(key, value)
+        groups: list[SetupGroup] = [getattr(self, attr) for attr in GROUPS.values()]
+        for group in [*groups, *self.extra.values()]:
+            if own is None:
+                values = group.model_dump(by_alias=True, exclude_defaults=True)
+            elif group.TAG in own.groups:
+                values = group.model_dump(by_alias=True, include=_fields(group, own.groups[group.TAG]))
+            else:
+                continue
+            if values or own is not None:
                 child = etree.SubElement(el, group.TAG)
                 for key, value in values.items():
                     child.set(key, _attr_text(value))
-        texts = [(tag, getattr(self.templates, f)) for tag, f in Templates.TAGS.items()]
-        if any(text is not None for _, text in texts):
+        for container, entries in (("Axes", self.travel), ("WorkOffsets", self.work_offsets),
+                                   ("Tools", self.tools)):
+            mine = None if own is None else own.entries.get(container)
+            if not entries or (own is not None and not mine):
+                continue
+            parent = etree.SubElement(el, container)
+            for key, entry in entries.items():
+                if mine is None or key in mine:
+                    child = etree.SubElement(parent, entry.TAG)
+                    for attr, value in entry_values(entry, None if mine is None else mine[key]).items():
+                        child.set(attr, _attr_text(value))
+        texts = [(tag, getattr(self.templates, f)) for tag, f in Templates.TAGS.items()
+                 if getattr(self.templates, f) is not None and (own is None or f in own.templates)]
+        if texts:
             t = etree.SubElement(el, "Templates")
             for tag, text in texts:
-                if text is not None:
-                    etree.SubElement(t, tag).text = text
-        for path in self.library:
+                etree.SubElement(t, tag).text = text
+        for path in self.library if own is None else own.library:
             etree.SubElement(el, "Library", path=path)
-        if self.machine_codes:
-            codes = etree.SubElement(el, "MachineCodes")
-            for code in self.machine_codes:
-                child = etree.SubElement(codes, code.letter)
+        codes = [c for c in self.machine_codes if own is None or c.key() in own.codes]
+        if codes:
+            parent = etree.SubElement(el, "MachineCodes")
+            for code in codes:
+                child = etree.SubElement(parent, code.letter)
                 for key, value in code.model_dump(by_alias=True, exclude_defaults=True, exclude={"letter"}).items():
                     child.set(key, str(value))
         for called, file in self.code_calls.items():
-            etree.SubElement(el, "CodeCall", code=called, file=file)
+            if own is None or called in own.calls:
+                etree.SubElement(el, "CodeCall", code=called, file=file)
         return el
+
+
+def _fields(group: SetupGroup, aliases: set[str]) -> set[str]:
+    """Field names of a group's aliases."""
+    return {name for name, info in type(group).model_fields.items() if (info.alias or name) in aliases}
 
 
 def _attr_text(value: Any) -> str:
@@ -401,26 +440,6 @@ def _attr_text(value: Any) -> str:
     if isinstance(value, float) and value.is_integer():
         return repr(value)
     return str(value)
-
-
-def _group_from_xml(group: type[_Group], el: etree._Element) -> _Group:
-    if len([c for c in el if isinstance(c.tag, str)]):
-        raise ConfigError(f"<{el.tag}> takes attributes only", where(el))
-    raw: dict[str, Any] = {}
-    for key, value in el.attrib.items():
-        raw[key] = {"true": True, "false": False}.get(value, value)
-    try:
-        return group.model_validate(raw)
-    except ValidationError as exc:
-        first = exc.errors()[0]
-        msg = first["msg"]
-        if first["type"] == "extra_forbidden":
-            msg = "unknown parameter"
-        elif first["type"] == "value_error":  # our own validators' messages stand alone
-            msg = str(first.get("ctx", {}).get("error", msg))
-        field_name = ".".join(str(p) for p in first["loc"])
-        raise ConfigError(f"<{el.tag}> {field_name}: {msg}" if field_name else f"<{el.tag}> {msg}",
-                          where(el)) from None
 
 
 def _machine_codes_from_xml(el: etree._Element) -> list[MachineCode]:
@@ -471,27 +490,25 @@ def _code_call_from_xml(el: etree._Element) -> tuple[str, str]:
     return code[0].upper() + str(int(code[1:])), file
 
 
-def _templates_from_xml(el: etree._Element) -> Templates:
-    values: dict[str, str] = {}
-    for child in el:
-        if not isinstance(child.tag, str):
-            continue
-        field = Templates.TAGS.get(child.tag)
-        if field is None:
-            raise ConfigError(f"unknown element <{child.tag}> in <Templates>", where(child))
-        if field in values:
-            raise ConfigError(f"<{child.tag}> appears twice in <Templates>", where(child))
-        if el.attrib or child.attrib or len([c for c in child if isinstance(c.tag, str)]):
-            raise ConfigError(f"<{child.tag}> holds template text only (no attributes or elements)", where(child))
-        values[field] = child.text or ""
-    return Templates(**values)
-
-
-def load_setup(path: str | Path, factory: XFactory | None = None) -> MachineSetup:
-    """Load and validate a machine set-up file."""
-    root = parse_xml_file(path)
-    if root.tag != MachineSetup.XNAME:
-        raise ConfigError(f"expected <MachineSetup>, found <{root.tag}>", Location(str(path), root.sourceline or 1, 1))
-    setup = MachineSetup.from_xml(root)
-    setup.source = str(path)
+def load_setup(path: str | Path, factory: XFactory | None = None,
+               groups: dict[str, type[SetupGroup]] | None = None) -> MachineSetup:
+    """Load and validate a machine set-up file and the bases it extends. ``groups``: the element name ->
+    group class of every group (default: the built-in ones and those of the installed plugins). Every
+    problem found is raised (one ``ConfigError``, or an ``ErrorList`` of them)."""
+    setup, problems = load_setup_collect(path, groups)
+    from .setup_load import raise_all
+    raise_all(problems)
     return setup
+
+
+def load_setup_collect(path: str | Path, groups: dict[str, type[SetupGroup]] | None = None
+                       ) -> tuple[MachineSetup, list[ConfigError]]:
+    """``load_setup`` that returns the problems (a value with a problem is left at its default) instead of
+    raising them, so ``config check`` can go on to the templates; an unreadable file or chain raises."""
+    from .setup_load import merge_collect, resolve_chain
+    if groups is None:
+        from .plugins import default_registry
+        groups = default_registry().setup_groups
+    setup, problems = merge_collect(resolve_chain(path), groups, str(path))
+    setup.source = str(path)
+    return setup, problems

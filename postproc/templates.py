@@ -52,9 +52,11 @@ def render(name: str, text: str, variables: dict[str, Any], source: str | None, 
     return _render_all(name, text, [variables], source, first_line)[0]
 
 
-def check_templates(setup: MachineSetup, defines: dict[str, str] | None = None) -> None:
+def check_templates(setup: MachineSetup, defines: dict[str, str] | None = None,
+                    collect: bool = False) -> list[ConfigError]:
     """Render the set-up's templates with sample values (metric and inch), as ``config check`` does, and
-    read each output back with the set-up's dialect (when it names an installed one)."""
+    read each output back with the set-up's dialect (when it names an installed one). The first failure
+    is raised, or with ``collect`` every template's failure is returned."""
     from .errors import UsageError
     from .plugins import default_registry
     from .sequences import check_output
@@ -64,14 +66,22 @@ def check_templates(setup: MachineSetup, defines: dict[str, str] | None = None) 
             target = default_registry().dialect(setup.dialect)
         except UsageError:
             target = None  # ``config check`` reports the unknown dialect itself
+    problems: list[ConfigError] = []
     for name, text in setup.templates.defined().items():
         first = setup.template_lines.get(name, 1)
-        outputs = _render_all(name, text, sample_variables(setup, name, defines), setup.source, first)
-        if target is not None:
-            for out in outputs:
-                if out:
-                    check_output(name, out, target, setup, Location(setup.source or "<set-up>", first, 1), None,
-                                 name not in ("footer", "program_end"))
+        file = setup.template_file(name)
+        try:
+            outputs = _render_all(name, text, sample_variables(setup, name, defines), file, first)
+            if target is not None:
+                for out in outputs:
+                    if out:
+                        check_output(name, out, target, setup, Location(file or "<set-up>", first, 1), None,
+                                     name not in ("footer", "program_end"))
+        except ConfigError as err:
+            if not collect:
+                raise
+            problems.append(err)
+    return problems
 
 
 def sample_variables(setup: MachineSetup, name: str = "header",

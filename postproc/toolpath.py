@@ -44,6 +44,7 @@ from .ir import Block, DataSetting, MachineFunction, Motion, Section
 from .lower import lower_for
 from .plugins import Registry, default_registry
 from .setup import MachineSetup
+from .travel import TravelCheck, TravelError
 from .state import MM_PER_INCH, MODAL_KEYS, PLANE_AXES, ModalState
 from .context import Context
 
@@ -88,7 +89,7 @@ def start_position(setup: MachineSetup) -> dict[str, float]:
     """Where a program starts, per machine axis, in mm (rotary axes at 0)."""
     m = setup.machine
     start = {"X": m.start_x, "Y": m.start_y, "Z": m.start_z}
-    return {a: float(start.get(a, 0.0)) for a in m.axes}
+    return {a: float(start.get(a, 0.0)) * (m.mm() if a in LINEAR_AXES else 1.0) for a in m.axes}
 
 
 # -- the simulator -------------------------------------------------------------------------------------
@@ -96,7 +97,7 @@ def start_position(setup: MachineSetup) -> dict[str, float]:
 class Simulator:
     """Modal state and position of one program run; ``block`` emits the block's events in order."""
 
-    def __init__(self, ctx: Context) -> None:
+    def __init__(self, ctx: Context, travel_warn: bool = False) -> None:
         setup = ctx.setup
         self.ctx = ctx
         self.axes = tuple(setup.machine.axes)
@@ -138,6 +139,12 @@ class Simulator:
         """Work offsets a G10 set, mm per axis, by work system (1 = G54; 0 the external offset)."""
         self.shift: dict[str, float] = {}
         """What the active work system adds to an absolute point (empty until a G10 sets an offset)."""
+        self.travel: TravelCheck | None = None
+        """The travel-limit check, when the set-up declares limits (``postproc.travel``)."""
+        self.travel_warn = travel_warn
+        """A move beyond the travel is a warning (``--on-unsupported warn``), not an error."""
+        if setup.travel_limited():
+            self.travel = TravelCheck(self, self._travel_report)
         """Machine-specific codes warned about as undeclared (once each)."""
 
     # -- one block ---------------------------------------------------------------------------------
@@ -159,6 +166,8 @@ class Simulator:
         keys = sections.keys()
         if not keys.isdisjoint(MODAL_KEYS):
             self.apply_modal(sections)
+        if self.travel is not None:
+            self.travel.settings(block)
         if not keys.isdisjoint(_SETTING_KEYS):
             self.record_settings(block)
             setting = get("DataSetting")
@@ -328,25 +337,34 @@ class Simulator:
     # -- motion ------------------------------------------------------------------------------------
     def motion(self, block: Block, m: Motion, absolute: bool, emit: Callable[[Event], None]) -> None:
         mode, line = m.mode, block.line
+        travel = self.travel
         if mode in ("home", "home2"):
             if not m.axes:
                 return
-            self.line_move("rapid", self.target(block, m.axes, absolute), line, emit)
+            via = self.target(block, m.axes, absolute)
+            if travel is not None:
+                travel.line(block, self.pos, via, self._programmed(m.axes), self.incremental and not absolute, False)
+            self.line_move("rapid", via, line, emit)
             ref = dict(self.pos)
             for axis in m.axes:
                 ref[_LATHE_INCREMENTS.get(axis, axis) if self.lathe else axis] = 0.0
+            if travel is not None:
+                travel.home(block, self._programmed(m.axes))
             self.line_move("rapid", ref, line, emit)
             return
         if self.feed is None and needs_feed(m):
             raise ProgramError(NO_FEED, self._at(block), needs="F")
         machine = "MachineCoordinates" in block.sections
         target = self.target(block, m.axes, absolute or machine, machine)
+        if travel is not None and mode not in ("cw", "ccw"):
+            travel.line(block, self.pos, target, self._programmed(m.axes),
+                        self.incremental and not (absolute or machine), machine)
         if mode == "rapid":
             self.line_move("rapid", target, line, emit)
         elif mode == "linear" or mode == "thread":
             self.line_move("feed", target, line, emit)
         elif mode in ("cw", "ccw"):
-            self.arc_move(block, m, target, emit)
+            self.arc_move(block, m, target, emit, absolute or machine)
         else:
             raise UnsupportedError(f"motion '{mode}' cannot be simulated", self._at(block))
 
@@ -399,6 +417,8 @@ class Simulator:
         if axis not in self.pos:
             raise ProgramError(f"axis {axis} is not on this machine (axes {''.join(self.axes)})", self._at(block, axis))
         v = value * self.scale * (0.5 if self.diameter and axis == "X" else 1.0)
+        if self.travel is not None:
+            self.travel.coordinate_set(axis, v)
         self.pos[axis] = v
         self.rounded[axis] = num(v)
 
@@ -421,7 +441,20 @@ class Simulator:
         self.pos, self.rounded = target, rounded
         emit(ev)
 
-    def arc_move(self, block: Block, m: Motion, target: dict[str, float], emit: Callable[[Event], None]) -> None:
+    def _programmed(self, axes: dict[str, float]) -> set[str]:
+        """The machine axes a block's axis words name (a lathe's U and W are X and Z)."""
+        return {_LATHE_INCREMENTS.get(a, a) if self.lathe else a for a in axes}
+
+    def _travel_report(self, err: TravelError) -> None:
+        """A travel problem: an error, or a warning under ``--on-unsupported warn``; the block's events
+        stay (the path is still drawn)."""
+        if self.travel_warn:
+            self.ctx.diagnostics.warn(err.message, err.location)
+        else:
+            self.ctx.diagnostics.error(err)
+
+    def arc_move(self, block: Block, m: Motion, target: dict[str, float], emit: Callable[[Event], None],
+                 absolute: bool = False) -> None:
         plane = self.modal.plane
         a1, a2, normal = PLANE_AXES[plane]
         pos = self.pos
@@ -443,6 +476,13 @@ class Simulator:
             c = arc_centre(s, e, (a1, a2), radius, {a: v * scale for a, v in offsets.items()}, clockwise)
         except ArcError as err:
             raise err.located(self._at(block, err.letter)) from None
+        if self.travel is not None:
+            programmed = self._programmed(m.axes)
+            incremental = self.incremental and not absolute
+            if c is None:
+                self.travel.line(block, pos, target, programmed, incremental, False)
+            else:
+                self.travel.arc(block, pos, target, programmed, incremental, c, (a1, a2), clockwise)
         if c is None:
             self.line_move("feed", target, block.line, emit)  # zero radius, zero length: dropped
             return
@@ -530,14 +570,14 @@ def header(ctx: Context, feed_mode: str | None) -> Event:
 
 
 def simulate(blocks: Iterable[Block], ctx: Context, live_after_end: list[int] | None = None,
-             unsimulated: list[tuple[int, str, str]] | None = None) -> Iterator[Event]:
+             unsimulated: list[tuple[int, str, str]] | None = None, travel_warn: bool = False) -> Iterator[Event]:
     """Blocks (already lowered for ``ToolpathTarget``) -> the header, then events in execution order.
 
     Errors are reported to ``ctx.diagnostics`` with the block's location and the block is skipped;
     the caller raises them at the end (``Diagnostics.check``). Events are held back only until the
     first feed move fixes the header's feed mode (at most ``HEADER_LOOKAHEAD`` of them).
     """
-    sim = Simulator(ctx)
+    sim = Simulator(ctx, travel_warn)
     if live_after_end is not None:
         sim.live_after_end = live_after_end  # the caller reads the lines recorded there
     if unsimulated is not None:
@@ -577,12 +617,14 @@ def toolpath_events(lines: Iterable[str], *, file: str, dialect: str | type[Dial
                     setup: MachineSetup | None = None, registry: Registry | None = None,
                     diagnostics: Diagnostics | None = None, check: bool = True,
                     live_after_end: list[int] | None = None,
-                    unsimulated: list[tuple[int, str, str]] | None = None) -> Iterator[Event]:
+                    unsimulated: list[tuple[int, str, str]] | None = None,
+                    on_unsupported: str = "error") -> Iterator[Event]:
     """Read a program in ``dialect`` and yield its toolpath (header first). Raises ``ErrorList`` at the
     end when the program had errors (unless ``check`` is False: the caller then checks
     ``diagnostics``); events already yielded then belong to a failed run. ``live_after_end``, if given,
     receives the lines of live blocks after the program end; ``unsimulated`` the changes of settings
-    the simulation does not apply (``Simulator.unsimulated``)."""
+    the simulation does not apply (``Simulator.unsimulated``). ``on_unsupported="warn"`` makes a move
+    beyond the travel a warning."""
     setup = setup or MachineSetup()
     diagnostics = diagnostics or Diagnostics()
     registry = registry or default_registry()
@@ -593,6 +635,29 @@ def toolpath_events(lines: Iterable[str], *, file: str, dialect: str | type[Dial
         ctx, blocks = read_blocks(lines, file, dialect, setup, diagnostics, program_mode="execute")
         steps = [step for step in registry.lowerings if step not in TRANSLATE_ONLY]
         lowered = lower_for(blocks, ctx, ToolpathTarget, "error", steps)
-        yield from simulate(lowered, ctx, live_after_end, unsimulated)
+        yield from simulate(lowered, ctx, live_after_end, unsimulated, on_unsupported == "warn")
     if check:
         diagnostics.check()
+
+
+def check_travel(lines: Iterable[str], *, file: str, dialect: type[Dialect], setup: MachineSetup,
+                 diagnostics: Diagnostics, on_unsupported: str, registry: Registry | None = None) -> None:
+    """A translation's travel check: the source program simulated against the set-up's limits; each
+    problem goes to ``diagnostics`` (a warning under ``on_unsupported="warn"``). Where the simulation
+    itself fails (a construct it cannot run), the travel from there on cannot be known: one error says
+    so, and nothing after it is checked."""
+    import io
+    private = Diagnostics(max_errors=1_000_000, warn_stream=io.StringIO())
+    for _ in toolpath_events(lines, file=file, dialect=dialect, setup=setup, registry=registry,
+                             diagnostics=private, check=False):
+        pass
+    for err in private.errors:
+        stopped = not isinstance(err, TravelError)
+        if stopped:
+            err = TravelError(f"the travel cannot be checked from here on: {err.message}", err.location)
+        if on_unsupported == "warn":
+            diagnostics.warn(err.message, err.location)
+        else:
+            diagnostics.error(err)
+        if stopped:
+            return

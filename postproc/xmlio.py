@@ -34,13 +34,15 @@ MAX_VALUE_CHARS = 1 << 20
 T = TypeVar("T", bound="XmlNode")
 
 
-def parse_xml_bytes(data: bytes, file: str, max_elements: int | None = None) -> etree._Element:
+def parse_xml_bytes(data: bytes, file: str, max_elements: int | None = None,
+                    max_bytes: int | None = None) -> etree._Element:
     """Parse untrusted XML into an element, or raise a located ``ConfigError``.
 
     Bounded: ``MAX_XML_BYTES``, ``max_elements`` (default ``MAX_ELEMENTS``), ``MAX_ATTRIBUTES`` per
     element and ``MAX_VALUE_CHARS`` per value, so what reads the tree next does bounded work."""
-    if len(data) > MAX_XML_BYTES:
-        raise ConfigError(f"XML file is larger than {MAX_XML_BYTES} bytes", Location(file, 1, 1))
+    max_bytes = MAX_XML_BYTES if max_bytes is None else max_bytes
+    if len(data) > max_bytes:
+        raise ConfigError(f"XML file is larger than {max_bytes} bytes", Location(file, 1, 1))
     try:
         tree = etree.ElementTree(etree.fromstring(data, _PARSER, base_url=file))
     except etree.XMLSyntaxError as exc:
@@ -86,14 +88,16 @@ def _offset_location(data: bytes, offset: int, file: str) -> Location:
     return Location(file, data.count(b"\n", 0, offset) + 1, offset - line_start + 1)
 
 
-def parse_xml_file(path: str | Path, max_elements: int | None = None) -> etree._Element:
+def parse_xml_file(path: str | Path, max_elements: int | None = None,
+                   max_bytes: int | None = None) -> etree._Element:
     p = Path(path)
+    max_bytes = MAX_XML_BYTES if max_bytes is None else max_bytes
     try:
         with open(p, "rb") as f:
-            data = f.read(MAX_XML_BYTES + 1)  # never more than the bound, whatever the file is
+            data = f.read(max_bytes + 1)  # never more than the bound, whatever the file is
     except OSError as exc:
         raise ConfigError(f"cannot read {p}: {exc.strerror}", Location(str(p), 1, 1)) from None
-    return parse_xml_bytes(data, str(p), max_elements)
+    return parse_xml_bytes(data, str(p), max_elements, max_bytes)
 
 
 def to_bytes(el: etree._Element) -> bytes:

@@ -67,11 +67,11 @@ def test_four_axis_example_values():
 
 
 def test_load_dump_load_is_stable(tmp_path, cli):
+    """Every dump is written first: a set-up that extends a local base finds the base's dump beside it."""
     for path in SETUPS:
-        first = load_setup(path)
-        copy = tmp_path / path.name
-        copy.write_bytes(cli("config", "dump", path).out)
-        assert load_setup(copy) == first
+        (tmp_path / path.name).write_bytes(cli("config", "dump", path).out)
+    for path in SETUPS:
+        assert load_setup(tmp_path / path.name) == load_setup(path)
 
 
 # -- defaults and helpers -------------------------------------------------------------------------

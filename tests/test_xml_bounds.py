@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pytest
 
-import postproc.setup as setup_py
+import postproc.setup_load as setup_load
 from postproc import xmlio
 from postproc.api import read_program
 from postproc.errors import ConfigError
@@ -19,8 +19,9 @@ from postproc.xmlio import MAX_ATTRIBUTES, MAX_ELEMENTS, MAX_VALUE_CHARS, parse_
 def test_200000_attributes_are_refused_before_the_setup_reads_them(tmp_path: Path, monkeypatch) -> None:
     """``config check`` took over 60 s: lxml reads attributes in quadratic time."""
     calls = []
-    real = setup_py._group_from_xml
-    monkeypatch.setattr(setup_py, "_group_from_xml", lambda g, el: calls.append(el.tag) or real(g, el))
+    real = setup_load.Merger.read_group
+    monkeypatch.setattr(setup_load.Merger, "read_group",
+                        lambda self, el, last: calls.append(el.tag) or real(self, el, last))
     attrs = " ".join(f'a{i}="1"' for i in range(200_000))
     path = tmp_path / "m.xml"
     path.write_text(f'<MachineSetup name="t">\n<Input/>\n<Cycles {attrs}/>\n</MachineSetup>\n')
