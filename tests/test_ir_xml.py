@@ -182,7 +182,8 @@ SAMPLES: dict[str, list[tuple[Builder, str]]] = {
     **{name: _empty(name) for name in (
         "FanucBlockSyntax", "FanucLatheBlockSyntax", "GskBlockSyntax", "LatheCycleSyntax", "FanucProgramSyntax",
         "ModalStateSyntax", "GrblBlockSyntax", "NgcBlockSyntax",
-        "LinuxcncProgramSyntax", "IsgBlockSyntax", "IsgProgramSyntax", "DrillingSyntax",
+        "LinuxcncProgramSyntax", "IsgBlockSyntax", "IsgProgramSyntax", "FagorBlockSyntax",
+        "FagorProgramSyntax", "DrillingSyntax",
         "PeckDrillingSyntax", "TappingSyntax", "BoringSyntax", "FineBoringSyntax", "BackBoringSyntax",
         "ManualBoringSyntax",
     )},
