@@ -30,8 +30,10 @@ from postproc.isg_family.lexer import Grammar, Lexed, lex, strip_comments
 from postproc.isg_family.statements import Nesting, parse_statement
 from postproc.rs274.lexer import split_lines
 
-GRAMMAR = Grammar(parens=False, bare_dwell_time=False, assigned_g=frozenset({"159"}))
-"""No parenthesised comments, no bare dwell time, ``G159=n``."""
+from .codes import PATTERN_CODES
+
+GRAMMAR = Grammar(parens=False, bare_dwell_time=False, assigned_g=frozenset({"159"}), p_words_after=PATTERN_CODES)
+"""No parenthesised comments, no bare dwell time, ``G159=n``, ``P`` a plain word after ``G160``-``G165``."""
 
 COMMANDS = {
     "#CALL": "subroutine call [?]", "#PCALL": "subroutine call with local parameters [?]",

@@ -36,6 +36,9 @@ class Grammar:
     assigned_g: frozenset[str] = frozenset()
     """G numbers written ``G<n>=<whole number>`` (Fagor's zero offset selection), lexed as one code
     word whose number is ``<n>=<value>``."""
+    p_words_after: frozenset[str] = frozenset()
+    """G numbers (without leading zeros) after which ``P<number>`` is a plain word, not a parameter
+    (Fagor's multiple machining: ``G163 X20 K6 P2.005`` skips points 2 to 5)."""
 
 
 ISG_GRAMMAR = Grammar()
@@ -168,7 +171,9 @@ def _lex(file: str, line: int, code: str, lexed: Lexed, grammar: Grammar) -> Non
             pos = _word(file, line, " " + code[pos:], 0, lexed, "X") - 1 + pos
             continue
         if c in _LETTERS:
-            pos = _word(file, line, code, pos, lexed)
+            plain = c in "Pp" and bool(grammar.p_words_after) and any(
+                w[0] in "Gg" and w[1].lstrip("0") in grammar.p_words_after for w in lexed.words)
+            pos = _word(file, line, code, pos, lexed, plain=plain)
             if grammar.assigned_g and lexed.words and lexed.words[-1][0] in "Gg" \
                     and lexed.words[-1][1] in grammar.assigned_g:
                 pos = _assigned(file, line, code, pos, lexed)
@@ -277,13 +282,14 @@ def _dwell_time(code: str, pos: int, lexed: Lexed) -> bool:
     return c.isdigit() or c in "+-.[" or c in "Pp" and nxt.isdigit() or c in "Vv" and nxt == "."
 
 
-def _word(file: str, line: int, code: str, pos: int, lexed: Lexed, address: str | None = None) -> int:
+def _word(file: str, line: int, code: str, pos: int, lexed: Lexed, address: str | None = None,
+          plain: bool = False) -> int:
     """An address and its value; ``address`` given: ``code[pos]`` is a blank standing for it (a dwell's
-    time written without its X)."""
+    time written without its X); ``plain``: ``P<number>`` is a word, not a parameter."""
     n = len(code)
     c = address or code[pos]
     up = c.upper()
-    if address is None and (up == "P" and pos + 1 < n and code[pos + 1] in _DIGITS
+    if address is None and (up == "P" and not plain and pos + 1 < n and code[pos + 1] in _DIGITS
                             or up == "V" and code[pos + 1:pos + 2] == "."):
         end, target = parse_word_value(code, pos)
         eq = skip(code, end)
