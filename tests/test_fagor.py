@@ -357,3 +357,19 @@ def test_fagor_expression_spelling_reads_back_as_the_same_tree(tree: Expr) -> No
     assert getattr(assign, "items") == [(Var(Num(float(P_BASE + 7))), _canonical(tree))], text
     x = blocks[1].values.get("X")  # a plain number stays a word, anything else is read as a tree
     assert (x if x is not None else Num(float(blocks[1].words[-1][1]))) == _canonical(tree), text
+
+
+# -- the set-up attribute --------------------------------------------------------------------------------
+
+def test_the_dwell_unit_is_a_validated_set_up_attribute(cli, tmp_path: Path) -> None:
+    good = tmp_path / "good.xml"
+    good.write_text('<MachineSetup name="m" dialect="fagor"><Cycles fagorDwellUnit="hundredths"/></MachineSetup>\n')
+    assert cli("config", "check", good).status == 0
+    program = tmp_path / "p.nc"
+    program.write_text("G71 G90\nG00 X0 Y0 Z20\nM03 S800\nG81 X5 Y5 Z2 I-6 K50 F50\nG80\nM30\n")
+    result = cli("translate", program, "--from", "fagor", "--to", "fanuc", "--machine", good)
+    assert result.status == 0 and b"P500" in result.out
+    bad = tmp_path / "bad.xml"
+    bad.write_text('<MachineSetup name="m">\n  <Cycles fagorDwellUnit="minutes"/>\n</MachineSetup>\n')
+    result = cli("config", "check", bad)
+    assert result.status == 1 and "bad.xml:2:" in result.err and "fagorDwellUnit" in result.err
