@@ -44,6 +44,19 @@ for f in examples/isg/*.nc; do
     echo "  (refused with the located errors above: nothing was written)"
   fi
 done
+for f in examples/fagor/*.nc; do
+  n=$(basename "$f" .nc)
+  # Fagor to Fagor is byte for byte; Fagor's G81/G89 with Z (reference plane), I (depth), K (dwell)
+  # become Fanuc's G82/G89 with R, Z, P and back; grbl and LinuxCNC get the moves.
+  run translate "$f" --from fagor --to fagor -o "out/$n.fagor.nc"
+  cmp "$f" "out/$n.fagor.nc"
+  for t in fanuc linuxcnc grbl; do
+    run translate "$f" --from fagor --to "$t" -o "out/$n.$t.nc"
+    run verify "$f" "out/$n.$t.nc" --from fagor --to "$t"
+  done
+  run translate "out/$n.fanuc.nc" --from fanuc --to fagor -o "out/$n.back.fagor.nc"
+  run verify "out/$n.fanuc.nc" "out/$n.back.fagor.nc" --from fanuc --to fagor
+done
 echo
 echo "== out/prof_contour_xy.fanuc.nc: an ISG \$FOR contour kept as Custom Macro B"
 cat out/prof_contour_xy.fanuc.nc

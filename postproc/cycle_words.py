@@ -40,6 +40,9 @@ class CycleWords:
     max_repeat: int | None = None
     """The largest repeat count the controller accepts (Fanuc K: 9999), None when it sets no limit of
     its own (the set-up's ``<Limits movesPerBlock>`` still bounds the expansion)."""
+    dwell_unit: float | None = None
+    """Seconds per unit of the dwell word (Fagor K: 1 or 0.01, from the set-up); None: the cycle
+    semantics decide (Fanuc milliseconds, RS274 seconds)."""
 
     def bottom_letter(self, plane: str, normal: str) -> str:
         """The hole bottom's letter in ``plane``, whose normal axis is ``normal``."""
@@ -48,6 +51,12 @@ class CycleWords:
     def repeat_letters(self, repeat_address: str) -> tuple[str, ...]:
         """The letters that count repeats, in order of preference."""
         return self.repeat if self.repeat is not None else tuple(repeat_address.split("+"))
+
+    def same_letters(self, other: "CycleWords") -> bool:
+        """Both dialects write a cycle's words with the same letters and units (a cycle read in one is
+        written in the other as programmed)."""
+        return (self.level, self.peck, self.shift, self.dwell, dict(self.bottom), self.repeat, self.dwell_unit) == (
+            other.level, other.peck, other.shift, other.dwell, dict(other.bottom), other.repeat, other.dwell_unit)
 
     def name(self, kind: str) -> str:
         """How the dialect names a cycle kind (the kind itself when it has no code for it)."""

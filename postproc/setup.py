@@ -103,6 +103,9 @@ class CycleSettings(SetupGroup):
     orientation: Literal["error", "m19", "stop"] = "error"
     """How a target without oriented spindle stop handles one: fail, emit M19 anyway, or program stop
     for the operator."""
+    fagor_dwell_unit: Literal["seconds", "hundredths"] = "seconds"
+    """Unit of the Fagor 8070 cycle dwell K, read and written: seconds (the default; the 8070's unit is
+    unconfirmed) or hundredths of a second (the 8055's)."""
 
     def expanded(self) -> frozenset[str]:
         return frozenset(p.strip() for p in self.expand.split(",") if p.strip())

@@ -24,6 +24,7 @@ CASES = {
                                     ROOT / "examples/setups/fanuc_0i_tf.xml", name="fanuc-lathe"),
     "gsk": DialectUnderTest("gsk", ROOT / "examples/gsk", HERE / "gsk/invalid"),
     "isg": DialectUnderTest("isg", ROOT / "examples/isg", HERE / "isg/invalid"),
+    "fagor": DialectUnderTest("fagor", ROOT / "examples/fagor", HERE / "fagor/invalid"),
     "linuxcnc": DialectUnderTest("linuxcnc", ROOT / "examples/linuxcnc", HERE / "linuxcnc/invalid"),
     "grbl": DialectUnderTest("grbl", HERE / "grbl", HERE / "grbl/invalid"),
     "mach3": DialectUnderTest("mach3", ROOT / "plugins/example_dialect/examples",

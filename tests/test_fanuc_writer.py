@@ -25,7 +25,7 @@ from postproc.setup import InputSettings, MachineSetup, OutputSettings
 ROOT = Path(__file__).resolve().parents[1]
 LATHE_EXAMPLES = {"gsk": ("gsk", "gsk_980tdc.xml"), "fanuc-lathe": ("fanuc", "fanuc_0i_tf.xml")}
 """Example folders read by another dialect or machine type than Fanuc milling: (dialect, set-up)."""
-LOSSLESS = sorted(p for p in ROOT.glob("examples/**/*.nc") if p.parent.name != "isg") + sorted((ROOT / "tests/golden/fanuc/roundtrip").glob("*.nc"))
+LOSSLESS = sorted(p for p in ROOT.glob("examples/**/*.nc") if p.parent.name not in ("isg", "fagor")) + sorted((ROOT / "tests/golden/fanuc/roundtrip").glob("*.nc"))
 NORMALIZE = ROOT / "tests/golden/fanuc/normalize"
 
 

@@ -185,7 +185,8 @@ SAMPLES: dict[str, list[tuple[Builder, str]]] = {
     **{name: _empty(name) for name in (
         "FanucBlockSyntax", "FanucLatheBlockSyntax", "GskBlockSyntax", "LatheCycleSyntax", "FanucProgramSyntax",
         "ModalStateSyntax", "GrblBlockSyntax", "NgcBlockSyntax", "Mach3BlockSyntax",
-        "LinuxcncProgramSyntax", "IsgBlockSyntax", "IsgProgramSyntax", "DrillingSyntax",
+        "LinuxcncProgramSyntax", "IsgBlockSyntax", "IsgProgramSyntax", "FagorBlockSyntax",
+        "FagorProgramSyntax", "DrillingSyntax",
         "PeckDrillingSyntax", "TappingSyntax", "BoringSyntax", "FineBoringSyntax", "BackBoringSyntax",
         "ManualBoringSyntax",
     )},
@@ -306,7 +307,8 @@ EXAMPLES = sorted(ROOT.glob("examples/**/*.nc")) + [
 def test_ir_command_output_loads_back_to_the_read_blocks(cli, tmp_path, path):
     out = tmp_path / "ir.xml"
     name, setup_file = {"gsk": ("gsk", "gsk_980tdc.xml"), "fanuc-lathe": ("fanuc", "fanuc_0i_tf.xml"),
-                        "isg": ("isg", None)}.get(path.parent.name, ("fanuc", None))  # examples/<dialect>/
+                        "isg": ("isg", None), "fagor": ("fagor", None),
+                        }.get(path.parent.name, ("fanuc", None))  # examples/<dialect>/
     machine = ["--machine", ROOT / "examples/setups" / setup_file] if setup_file else []
     result = cli("ir", path, "--dialect", name, "-o", out, *machine)
     assert result.status == 0, result.err

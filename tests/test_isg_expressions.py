@@ -11,7 +11,7 @@ from postproc.evaluation import MappingEnv, evaluate
 from postproc.expr import Binary, Expr, Func, Num, Unary, Var
 from postproc.rs274.expressions import ExprSyntaxError
 
-from dialects.isg.expressions import BINARY, FUNCTIONS, P_BASE, parse_expr, spell_expr, spell_word_value, \
+from postproc.isg_family.expressions import BINARY, FUNCTIONS, P_BASE, parse_expr, spell_expr, spell_word_value, \
     parse_word_value
 
 P = {P_BASE + n: float(n) for n in range(1, 10)}  # P1 = 1, ..., P9 = 9

@@ -24,6 +24,11 @@ def _errors(program: str, dialect: str, setup: MachineSetup | None = None) -> li
     return [str(e) for e in info.value.errors]
 
 
+def _metric(dialect: str, prologue: str) -> str:
+    """Fagor's metric code is G71 (its G21 is no code of the 8070 reference)."""
+    return prologue.replace("G21", "G71") if dialect == "fagor" else prologue
+
+
 @pytest.mark.parametrize("dialect", READABLE)
 @pytest.mark.parametrize("line, message", [
     ("G0 X\u0661\u0660.", "p.nc:2:5: error: character '\u0661' (U+0661) is not ASCII: outside comments a program "
@@ -37,6 +42,7 @@ def _errors(program: str, dialect: str, setup: MachineSetup | None = None) -> li
 def test_unreadable_line_is_a_located_error(dialect: str, line: str, message: str) -> None:
     # G90 is the absolute mode of a mill and the turning cycle of a lathe (GSK): a lathe gets G21 alone
     prologue = "G21" if "mill" not in default_registry().dialect(dialect).MACHINE_TYPES else "G21 G90"
+    prologue = _metric(dialect, prologue)
     assert _errors(f"{prologue}\n{line}\nM30\n", dialect) == [message]
 
 
@@ -44,7 +50,7 @@ def test_unreadable_line_is_a_located_error(dialect: str, line: str, message: st
 def test_line_longer_than_the_limit_is_refused_before_reading(dialect: str) -> None:
     setup = MachineSetup(limits=Limits(line_length=40))
     line = "G0 X1. Y2. Z3." + " " * 40
-    assert _errors(f"G21\n{line}\nM30\n", dialect, setup) == [
+    assert _errors(f"{_metric(dialect, 'G21')}\n{line}\nM30\n", dialect, setup) == [
         "p.nc:2:41: error: the line is 54 characters long, more than the limit of 40 (the set-up's "
         "<Limits lineLength>)"]
 

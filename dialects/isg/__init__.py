@@ -1,7 +1,8 @@
 """Beckhoff TwinCAT CNC (ISG kernel) milling dialect: reader, writer, reading pipeline, capability table.
 
-ISG is not in the RS274 family: its own lexer (``lexer``), ``$`` statements (``statements``), P
-parameters and ``V.`` variables (``expressions``, ``variables``) and ``#`` commands (``commands``);
+ISG is not in the RS274 family: it reads with the ISG/Fagor family's base (``postproc.isg_family``:
+lexer, ``$`` statements, P parameters and ``V.`` expressions), with its own variables (``variables``)
+and ``#`` commands (``commands``);
 its DIN words go through the family's word rules with ISG's table (``codes``), where the codes whose
 numbers collide with Fanuc's are told apart.
 """

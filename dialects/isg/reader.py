@@ -31,9 +31,9 @@ from postproc.ir import BlockDelete, Block, Comments, NativeCode, ProgramStart, 
 from postproc.rs274.lexer import split_lines
 
 from .commands import command_name, describe_command
-from .expressions import Unmodelled
-from .lexer import Lexed, lex, strip_comments
-from .statements import Nesting, parse_statement
+from postproc.isg_family.expressions import Unmodelled
+from postproc.isg_family.lexer import Lexed, lex, strip_comments
+from postproc.isg_family.statements import Nesting, parse_statement
 
 RETURN_CODES = frozenset({17, 29})
 """``M17``/``M29`` end a subroutine."""

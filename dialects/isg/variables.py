@@ -17,7 +17,7 @@ from typing import Callable
 from postproc.expr import EvalError, Vacancy, Value, VarKey
 from postproc.interp.variables import MACHINE_ONLY
 
-from .expressions import P_BASE, P_LAST
+from postproc.isg_family.expressions import P_BASE, P_LAST
 
 _SHARED = ("V.P.", "V.S.")
 _LOCAL = "V.L."

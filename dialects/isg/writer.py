@@ -23,8 +23,8 @@ from postproc.rs274.codes import CodeTable
 from postproc.rs274.writer import WordWriter
 
 from .codes import CODES
-from .expressions import spell_expr, spell_var, spell_word_value
-from .statements import spell_statement
+from postproc.isg_family.expressions import spell_expr, spell_var, spell_word_value
+from postproc.isg_family.statements import spell_statement
 
 
 _WITH_DWELL = ("Dwell", "Sequence")

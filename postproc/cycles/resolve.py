@@ -215,7 +215,7 @@ class CannedCycleResolveSyntax(Syntax):
         cycle = CannedCycle(
             kind, call=call, semantics=rules.name, return_level=return_level, plane=plane,
             initial=initial, r=r, bottom=bottom, top=top, q=q if kind in PECK else None,
-            clearance=_clearance(ctx, kind, state.units), dwell=_seconds(modal.get(cw.dwell), rules),
+            clearance=_clearance(ctx, kind, state.units), dwell=_seconds(modal.get(cw.dwell), rules, cw),
             orient=ctx.setup.cycles.orient_angle if kind in SHIFT else None, feed=feed, repeat=holes,
             spindle=spindle, motion=state.motion, start=here, position=position, step=step,
             shift=_shift(ctx, kind, q, first, second), words=words,
@@ -419,9 +419,11 @@ _NOT_CYCLE_DATA = frozenset(("Dwell", "NativeCode", "MachineFunction", "DataSett
 """Sections whose block's words belong to them, not to the active cycle."""
 
 
-def _seconds(p: float | int | None, rules: Semantics) -> float | None:
+def _seconds(p: float | int | None, rules: Semantics, cw: CycleWords) -> float | None:
     if p is None:
         return None
+    if cw.dwell_unit is not None:
+        return float(p) * cw.dwell_unit
     return p / 1000.0 if rules.dwell_ms else float(p)
 
 

@@ -70,6 +70,9 @@ class WordBlockSyntax(Syntax):
     BASE_VARIANT: ClassVar[str] = ""
     """The variant whose machine codes every variant of the family has."""
     """Words a verbatim M code takes with it (M98 P.. L..)."""
+    CYCLE_K_COUNTS: ClassVar[bool] = True
+    """``K`` in a cycle block is a whole repeat count (Fanuc); False: a real number of the cycle's own
+    (Fagor's dwell)."""
     POINTLESS_IN_UNITS: ClassVar[bool] = False
     """A number without a decimal point is in program units whatever the set-up's ``Input`` says
     (DIN 66025 controls such as ISG: ``X10`` is 10 mm), instead of least input increments."""
@@ -134,7 +137,7 @@ class WordBlockSyntax(Syntax):
                     raise ParseError(f"address {up} is not used by the {self.TITLE} dialect",
                                      ctx.at(block, ctx.column_of(block, up)))
                 continue  # a computed value: already in program units
-            if up in DECIMAL_LETTERS and not (up == "K" and cycle_block):
+            if up in DECIMAL_LETTERS and not (up == "K" and cycle_block and self.CYCLE_K_COUNTS):
                 if "." in num:
                     values[up] = float(num)
                     if mix is not None and up in AXIS_LETTERS:
@@ -338,7 +341,7 @@ class WordBlockSyntax(Syntax):
                 block.add(PathControl(arg, True))
             elif kind == "cycle":
                 block.add(CycleCall(arg))
-                used.update("XYZABCUVWRQPFKL" if ctx.setup.input.repeat_address != "K" else "XYZABCUVWRQPFK")
+                used.update("XYZABCUVWF" + self.cycle_data_letters(ctx))
             elif kind == "cycle_cancel":
                 block.add(CycleCancel())
             elif kind == "cutter":
@@ -366,7 +369,7 @@ class WordBlockSyntax(Syntax):
         if "CycleCall" in block.sections:
             return
         if cycle_block and "CycleCancel" not in block.sections:
-            used.update("RQPFK" + ("L" if ctx.setup.input.repeat_address != "K" else ""))
+            used.update("F" + self.cycle_data_letters(ctx))
         axes = {k: v for k, v in values.items() if k in AXIS_LETTERS and k not in used}
         if home is not None:
             block.add(Motion(home, axes))
@@ -411,6 +414,11 @@ class WordBlockSyntax(Syntax):
                 raise ProgramError("an arc needs a centre (I/J/K) or a radius R",
                                    ctx.at(block, _motion_col(block, ctx, codes, axes)))
         block.add(Motion(mode, {k: _real(v) for k, v in axes.items()}, center, radius))
+
+    def cycle_data_letters(self, ctx: Context) -> str:
+        """The addresses a hole cycle takes besides the axes and F (the family's R, Q, P and the repeat
+        count K, or L too when the set-up says so); the cycle resolve step reads them."""
+        return "RQPK" + ("L" if ctx.setup.input.repeat_address != "K" else "")
 
     def _dwell(self, block: Block, ctx: Context, values: dict[str, Any], used: set[str], num: str) -> None:
         seconds: Any

@@ -17,3 +17,8 @@ def rs274_cycle_words(codes: CodeTable, repeat: tuple[str, ...] | None,
     return CycleWords(names=names, return_to_r=codes.spell("return", "r") or "return to R",
                       level="R", peck="Q", shift="Q", dwell="P", spindle=spindle, repeat=repeat,
                       max_repeat=max_repeat)
+
+
+NEUTRAL_CYCLE_WORDS = CycleWords(names={}, return_to_r="return to R", level="R", peck="Q", shift="Q", dwell="P")
+"""The letters of a cycle made in the IR with no reading dialect (a program built from sections, as the
+conformance suite's probes are): the RS274 family's, which ``CannedCycle.words`` then holds."""

@@ -20,8 +20,11 @@ from .codes import CodeTable
 from .expressions import ExprSpelling, spell_word_value
 from ..ir import Block, CompoundMotion, Motion, Section, one_line
 from ..numbers import EXACT, EXACT_INCH, MAX_PLACES, canonical_number_re, format_decimal
-from ..state import MM_PER_INCH, ModalState, changes_nothing
+from ..state import MM_PER_INCH, PLANE_AXES, ModalState, changes_nothing
 from ..context import Context
+from ..cycle_words import CycleWords
+from ..cycles.section import WORD_ORDER
+from ..cycles.semantics import PECK, SHIFT
 from ..dialect import Dialect, Writer
 
 
@@ -508,9 +511,67 @@ class WordWriter(Writer):
         words: list[str] = []
         if s.call:
             words.extend(self._code("cycle", s.kind, f"the {s.kind.replace('_', ' ')} cycle", block))
+        source, target = self.ctx.cycle_words, self.target_cycle_words()
+        if source is not None and target is not None and not source.same_letters(target):
+            return words + self.cycle_role_words(s, block, source, target)
         for letter, value in s.words.items():
             words.append(letter + (str(value) if isinstance(value, int) else self.length(value, block)))
         return words
+
+    def target_cycle_words(self) -> CycleWords | None:
+        """The letters this writer's cycles take (the target dialect's; one whose letters depend on the
+        set-up builds them here)."""
+        return self.target.CYCLE_WORDS if self.target is not None else None
+
+    def cycle_role_words(self, s: Any, block: Block, source: CycleWords, target: CycleWords,
+                         dwell: bool = True) -> list[str]:
+        """The words of a cycle read with other letters (Fagor ``Z I K`` <-> Fanuc ``R Z P``), each
+        written by its role: the plane's two axes as they are, the reference level, the hole bottom, the
+        peck or shift, the dwell (from its seconds, in the target's unit; left out when ``dwell`` is
+        False) and the repeat count. Both dialects measure the level from the initial level and the
+        bottom from the level under incremental distances, so a word keeps its value."""
+        first, second, normal = PLANE_AXES[s.plane]
+        out: dict[str, str] = {}
+        repeat = source.repeat_letters(self.ctx.setup.input.repeat_address)
+        target_repeat = target.repeat_letters(self.ctx.setup.input.repeat_address)
+        for letter, value in s.words.items():
+            if letter in (first, second):
+                out[letter] = self.length(value, block)
+            elif letter == source.level:
+                out[target.level] = self.length(value, block)
+            elif letter == source.bottom_letter(s.plane, normal):
+                out[target.bottom_letter(s.plane, normal)] = self.length(value, block)
+            elif letter == source.dwell:
+                if dwell:
+                    out[target.dwell] = self.cycle_dwell(s.dwell, target, block)
+            elif letter in repeat:
+                if target_repeat:
+                    out[target_repeat[0]] = str(int(value))
+                elif value != 1:
+                    self.unsupported(f"a cycle repeat count {letter}{value} (no repeat count in "
+                                     f"{self.DIALECT})", block)
+            elif letter == source.peck and s.kind in PECK and target.peck:
+                out[target.peck] = self.length(value, block)
+            elif letter == source.shift and s.kind in SHIFT and target.shift:
+                out[target.shift] = self.length(value, block)
+            else:
+                self.unsupported(f"the cycle word {letter} (no {self.DIALECT} word has its role)", block)
+        order = {c: i for i, c in enumerate(WORD_ORDER)}
+        return [letter + text for letter, text in sorted(out.items(), key=lambda kv: order.get(kv[0], 99))]
+
+    def cycle_dwell(self, seconds: float | None, target: CycleWords, block: Block) -> str:
+        """A cycle's dwell in the target's unit: whole milliseconds (Fanuc semantics), seconds (RS274)
+        or the unit its cycle words name; a time that unit cannot hold exactly is refused."""
+        value = seconds or 0.0
+        unit = target.dwell_unit
+        if unit is None:
+            unit = 0.001 if self.target is not None and self.target.CYCLE_SEMANTICS == "fanuc" else 1.0
+        count = value / unit
+        if unit == 0.001:
+            if abs(count - round(count)) > 1e-6:
+                self.unsupported(f"a dwell of {value:g} s (whole milliseconds only)", block)
+            return str(round(count))
+        return self.number(round(count, 9))
 
     def feed_words(self, s: Any, block: Block) -> list[str]:
         value = s.value

@@ -22,6 +22,7 @@ from ..ir import (
     Plane, ProgramControl, ReturnLevel, Section, Sequence, SpindleControl, SpindleSpeed, Units,
 )
 from ..lower import lower_for
+from ..rs274.cycle_words import NEUTRAL_CYCLE_WORDS
 from ..plugins import Registry, default_registry
 from ..setup import MachineSetup
 from ..toolpath import TRANSLATE_ONLY, ToolpathTarget, simulate
@@ -146,6 +147,7 @@ def neutral_context(target: type[Dialect], setup: MachineSetup, file: str) -> Co
     ctx = target.context(file, setup, Diagnostics(ErrorLevel.RAISE, max_errors=1_000_000,
                                                   warn_stream=io.StringIO()))
     ctx.dialect = NEUTRAL
+    ctx.cycle_words = NEUTRAL_CYCLE_WORDS  # the letters ``drill_cycle`` gives its words, whatever the target's
     return ctx
 
 

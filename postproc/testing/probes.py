@@ -122,6 +122,14 @@ def probe_problems(dialect: type[Dialect], probe: Probe, setup: MachineSetup) ->
     return []
 
 
+_PLAIN_WHEN_NO_DWELL = {"drill_dwell": "drill", "bore_dwell_feed": "bore_feed"}
+"""A dwelling cycle with no dwell moves as its plain kind (Fagor writes G81 for both, with K0 or none)."""
+
+
+def _same_cycle(cycle: CannedCycle, kind: str) -> bool:
+    return cycle.kind == kind or (_PLAIN_WHEN_NO_DWELL.get(cycle.kind) == kind and not cycle.dwell)
+
+
 def _reads_back(dialect: type[Dialect], probe: Probe, text: str, setup: MachineSetup) -> list[str]:
     if dialect.READER is None:
         return []
@@ -136,7 +144,7 @@ def _reads_back(dialect: type[Dialect], probe: Probe, text: str, setup: MachineS
         unit = dialect.DWELL_UNIT
         return [f"{dialect.NAME}: a dwell of 1.5 s reads back as {[getattr(s, 'seconds') for s in found]} s "
                 f"(DWELL_UNIT = {unit!r}: writer and reader disagree on the unit):\n{text}"]
-    if probe.section == "CannedCycle" and not any(isinstance(s, CannedCycle) and s.kind == probe.what.split()[1]
+    if probe.section == "CannedCycle" and not any(isinstance(s, CannedCycle) and _same_cycle(s, probe.what.split()[1])
                                                   for s in found):
         return [f"{dialect.NAME}: {probe.what} reads back as another cycle: {found}\n{text}"]
     return []

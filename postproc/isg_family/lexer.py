@@ -1,9 +1,10 @@
-"""ISG lexical structure of one block: comments, block skip, ``%`` headers, ``N`` numbers and labels, DIN
+"""The ISG/Fagor family's lexical structure of one block: comments, block skip, ``%`` headers, ``N`` numbers and labels, DIN
 words (``G01X10Y20``, ``XP1``, ``X-P3``, ``X[P2*COS[P6]]``), assignments (``P10=20.5``,
 ``V.L.X=P1*2``), calls (``LL name``, ``L file``), and where a ``$`` statement or a ``#`` command starts.
 
 A linear scan, each character looked at a bounded number of times; columns are offsets into the
-block's text (comments blanked to spaces, so columns stay right).
+block's text (comments blanked to spaces, so columns stay right). ISG's grammar is the default; a
+``Grammar`` names what another dialect of the family reads differently.
 """
 
 from __future__ import annotations
@@ -22,6 +23,25 @@ _NAME = frozenset("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz012345678
 _FILE_NAME = frozenset("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_.-/\\")
 SKIP_LEVELS = 10
 """Block skip levels ``/1`` ... ``/10`` (plain ``/`` is level 1)."""
+
+
+@dataclass(frozen=True, slots=True)
+class Grammar:
+    """Where a family dialect's lexical rules differ from ISG's."""
+
+    parens: bool = True
+    """``( .. )`` is a comment (ISG); False: a ``(`` is left in the code for the dialect to judge."""
+    bare_dwell_time: bool = True
+    """A time right after the dwell code without its address (ISG ``G04 3.0``) is its ``X`` word."""
+    assigned_g: frozenset[str] = frozenset()
+    """G numbers written ``G<n>=<whole number>`` (Fagor's zero offset selection), lexed as one code
+    word whose number is ``<n>=<value>``."""
+    p_words_after: frozenset[str] = frozenset()
+    """G numbers (without leading zeros) after which ``P<number>`` is a plain word, not a parameter
+    (Fagor's multiple machining: ``G163 X20 K6 P2.005`` skips points 2 to 5)."""
+
+
+ISG_GRAMMAR = Grammar()
 
 
 @dataclass
@@ -50,9 +70,15 @@ class Lexed:
     """``("LL"|"L", name, offset)``."""
 
 
-def strip_comments(file: str, line: int, text: str, lexed: Lexed) -> str:
-    """Blank out ``( .. )`` (nesting; an unclosed one runs to the end) and ``;`` to the end; keep
-    their texts in ``lexed.comments``."""
+def strip_comments(file: str, line: int, text: str, lexed: Lexed, parens: bool = True) -> str:
+    """Blank out ``( .. )`` (nesting; an unclosed one runs to the end; only when ``parens``) and ``;``
+    to the end; keep their texts in ``lexed.comments``."""
+    if not parens:
+        cut = text.find(";")
+        if cut < 0:
+            return text
+        lexed.comments.append(text[cut + 1:])
+        return text[:cut] + " " * (len(text) - cut)
     if "(" not in text and ")" not in text and ";" not in text:
         return text
     out: list[str] = []
@@ -90,10 +116,10 @@ def strip_comments(file: str, line: int, text: str, lexed: Lexed) -> str:
     return "".join(out)
 
 
-def lex(file: str, line: int, code: str, lexed: Lexed) -> Lexed:
+def lex(file: str, line: int, code: str, lexed: Lexed, grammar: Grammar = ISG_GRAMMAR) -> Lexed:
     """Lex the code of one block into ``lexed`` (its comments already taken by ``strip_comments``)."""
     try:
-        _lex(file, line, code, lexed)
+        _lex(file, line, code, lexed, grammar)
     except ExprSyntaxError as err:
         raise err.at(file, line) from None
     return lexed
@@ -103,7 +129,7 @@ def _error(file: str, line: int, pos: int, message: str) -> ParseError:
     return ParseError(message, Location(file, line, pos + 1))
 
 
-def _lex(file: str, line: int, code: str, lexed: Lexed) -> None:
+def _lex(file: str, line: int, code: str, lexed: Lexed, grammar: Grammar) -> None:
     n = len(code)
     pos = skip(code, 0)
     if pos < n and code[pos] == "/":
@@ -141,11 +167,16 @@ def _lex(file: str, line: int, code: str, lexed: Lexed) -> None:
         if c in "Ll" and _is_call(code, pos):
             pos = _call(file, line, code, pos, lexed)
             continue
-        if _dwell_time(code, pos, lexed):
+        if grammar.bare_dwell_time and _dwell_time(code, pos, lexed):
             pos = _word(file, line, " " + code[pos:], 0, lexed, "X") - 1 + pos
             continue
         if c in _LETTERS:
-            pos = _word(file, line, code, pos, lexed)
+            plain = c in "Pp" and bool(grammar.p_words_after) and any(
+                w[0] in "Gg" and w[1].lstrip("0") in grammar.p_words_after for w in lexed.words)
+            pos = _word(file, line, code, pos, lexed, plain=plain)
+            if grammar.assigned_g and lexed.words and lexed.words[-1][0] in "Gg" \
+                    and lexed.words[-1][1] in grammar.assigned_g:
+                pos = _assigned(file, line, code, pos, lexed)
             continue
         if c == "$":
             raise _error(file, line, pos, "a control statement ($...) must start its block (only N and / may "
@@ -155,6 +186,22 @@ def _lex(file: str, line: int, code: str, lexed: Lexed) -> None:
         if c == "%":
             raise _error(file, line, pos, "'%' must start its line")
         raise _error(file, line, pos, f"unexpected character {c!r}")
+
+
+def _assigned(file: str, line: int, code: str, pos: int, lexed: Lexed) -> int:
+    """``G159=3``: the code word just read takes ``=<whole number>`` (blanks allowed around ``=``)."""
+    eq = skip(code, pos)
+    letter, number = lexed.words[-1]
+    if code[eq:eq + 1] != "=":
+        raise _error(file, line, pos - len(number) - 1, f"{letter}{number} needs a value: {letter}{number}=<n>")
+    start = skip(code, eq + 1)
+    end = start
+    while end < len(code) and code[end] in _DIGITS:
+        end += 1
+    if end == start or code[end:end + 1] == ".":
+        raise _error(file, line, start, f"{letter}{number}= takes a whole number")
+    lexed.words[-1] = (letter, f"{number}={int(code[start:end])}")
+    return end
 
 
 def _header(file: str, line: int, code: str, pos: int, lexed: Lexed) -> None:
@@ -235,13 +282,14 @@ def _dwell_time(code: str, pos: int, lexed: Lexed) -> bool:
     return c.isdigit() or c in "+-.[" or c in "Pp" and nxt.isdigit() or c in "Vv" and nxt == "."
 
 
-def _word(file: str, line: int, code: str, pos: int, lexed: Lexed, address: str | None = None) -> int:
+def _word(file: str, line: int, code: str, pos: int, lexed: Lexed, address: str | None = None,
+          plain: bool = False) -> int:
     """An address and its value; ``address`` given: ``code[pos]`` is a blank standing for it (a dwell's
-    time written without its X)."""
+    time written without its X); ``plain``: ``P<number>`` is a word, not a parameter."""
     n = len(code)
     c = address or code[pos]
     up = c.upper()
-    if address is None and (up == "P" and pos + 1 < n and code[pos + 1] in _DIGITS
+    if address is None and (up == "P" and not plain and pos + 1 < n and code[pos + 1] in _DIGITS
                             or up == "V" and code[pos + 1:pos + 2] == "."):
         end, target = parse_word_value(code, pos)
         eq = skip(code, end)

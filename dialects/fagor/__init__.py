@@ -1,0 +1,69 @@
+"""Fagor CNC 8070 milling dialect: reader, writer, reading pipeline, capability table.
+
+Fagor shares the ISG kernel's language family: it reads with ``postproc.isg_family`` (lexer,
+expressions, ``$`` statements) and keeps its own code table (``codes``), hole-cycle words
+(``cycle_words``: ``Z`` reference plane, ``I`` depth, ``K`` dwell), reader, writer and variables.
+What DIALECTS.md marks uncertain for the 8070 [?] is kept verbatim (``reader``). Multiple machining
+(``G160``-``G165``) is read through ``FagorBlockSyntax.multiple_machining`` (see README.md).
+"""
+
+from __future__ import annotations
+
+from typing import Callable
+
+from postproc.context import Context
+from postproc.dialect import Dialect
+from postproc.errors import Diagnostics
+from postproc.hookspecs import hookimpl
+from postproc.rs274.order_of_execution import stops_before_motion
+from postproc.setup import MachineSetup
+from postproc.xmlio import XFactory
+
+from .block_syntax import FagorBlockSyntax
+from .cycle_words import SECONDS, cycle_words
+from .program import FagorProgramSyntax
+from .reader import FagorReader
+from .writer import FagorWriter
+
+
+class Fagor(Dialect):
+    NAME = "fagor"
+    DESCRIPTION = "Fagor CNC 8070 milling: Z/I/K drilling words, G70/G71 units, G159 offsets, P parameters"
+    READER = FagorReader
+    WRITER = FagorWriter
+    PIPELINE_FILE = "fagor.xml"
+    CYCLE_WORDS = SECONDS
+    """Z reference plane, I depth, K dwell (seconds; the set-up's ``fagorDwellUnit`` may say hundredths)."""
+    NATIVE_CYCLES = frozenset({"drill", "drill_dwell", "bore_feed", "bore_dwell_feed"})
+    """G81 (drilling, dwell K) and G89 (boring, dwell K, feed out) [K]; Fanuc's G81/G85 are written as them
+    with no dwell. Every other cycle is expanded (Fagor's G82-G88 are other cycles or unconfirmed)."""
+    SPINDLE_ORIENTATION = False
+    """No confirmed 8070 oriented spindle stop: M19 [?] is written only when the set-up's
+    ``<Cycles orientation="m19"/>`` asks for it."""
+    CUTTER_COMPENSATION = True
+    """G40/G41/G42."""
+    TOOL_LENGTH_OFFSET = False
+    """Fagor selects the tool's offsets with D, not Fanuc's G43 H: not modelled, so refused."""
+    PROGRAMS = False
+    """P parameters and expressions are read [K]; control flow and subroutines are kept verbatim [?], so a
+    program that computes reaches Fagor flattened."""
+    LOWERING = (stops_before_motion,)
+    """A spindle stop or coolant off that the source made before its block's motion goes in a block of
+    its own before it (Fagor acts on M05/M09 after the block's motion, as Fanuc [?])."""
+
+    @classmethod
+    def context(cls, file: str, setup: MachineSetup, diagnostics: Diagnostics) -> Context:
+        ctx = super().context(file, setup, diagnostics)
+        ctx.cycle_words = cycle_words(setup)
+        return ctx
+
+
+@hookimpl
+def postproc_register_dialects(register: Callable[[type], None]) -> None:
+    register(Fagor)
+
+
+@hookimpl
+def postproc_register_xml(factory: XFactory) -> None:
+    FagorBlockSyntax.reg(factory)
+    FagorProgramSyntax.reg(factory)

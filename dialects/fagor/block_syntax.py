@@ -1,0 +1,95 @@
+"""FagorBlockSyntax: the Fagor 8070's reading of a block's words, the family's word rules with Fagor's
+table and hole-cycle words.
+
+* A number without a decimal point is in mm/inch (``X10`` = 10 mm) [K], whatever the set-up's ``Input``.
+* In a hole cycle ``Z`` is the reference plane, ``I`` the depth and ``K`` the dwell (a real number in
+  the set-up's unit, not a repeat count); the resolve step reads them through ``Fagor.CYCLE_WORDS``.
+  Fagor's cycle words are read in the XY plane (G17) only: which axis ``Z`` names in G18/G19 is not
+  confirmed [?], so a cycle there is a located error.
+* ``M19`` only where the set-up says ``<Cycles orientation="m19"/>`` [?].
+* ``G04 K``: a dwell of K in the cycle dwell's unit.
+* Multiple machining (``G160``-``G165``): a block with one of those codes goes, whole and before any
+  word rule, to ``multiple_machining`` (the hook below), which reads its words itself (its ``P2.005``
+  ranges, its ``I``/``K`` meanings).
+"""
+
+from __future__ import annotations
+
+from typing import Any, ClassVar
+
+from postproc.context import Context
+from postproc.errors import ProgramError, UnsupportedError
+from postproc.expr import Binary, Expr, Num
+from postproc.ir import Block, Dwell
+from postproc.rs274.block_syntax import WordBlockSyntax, col_of_word
+from postproc.rs274.codes import CodeTable, g_key
+
+from .codes import CODES, PATTERN_CODES
+from .cycle_words import cycle_words
+
+
+class FagorBlockSyntax(WordBlockSyntax):
+    """Lexed words -> neutral sections, for Fagor 8070 mills."""
+
+    XNAME = "FagorBlockSyntax"
+    __slots__ = ()
+    DIALECT: ClassVar[str] = "fagor"
+    TITLE: ClassVar[str] = "Fagor"
+    CODES: ClassVar[CodeTable] = CODES
+    POINTLESS_IN_UNITS: ClassVar[bool] = True
+    CYCLE_K_COUNTS: ClassVar[bool] = False
+
+    def build(self, block: Block, ctx: Context) -> None:
+        for letter, num in block.words:
+            if letter in "Gg" and g_key(num) in PATTERN_CODES:
+                self.multiple_machining(block, ctx, f"G{g_key(num)}", num)
+                return
+        super().build(block, ctx)
+        if "CycleCall" in block.sections:
+            plane = block.sections.get("Plane")
+            current = getattr(plane, "plane", None) or ctx.state.plane
+            if current != "XY":
+                code = next(num for letter, num in block.words if letter in "Gg" and g_key(num) in CODES.g
+                            and CODES.g[g_key(num)][1] == "cycle")
+                raise ProgramError(f"G{code}: Fagor hole cycles are read in the XY plane (G17) only (which axis Z "
+                                   "names in G18/G19 is not confirmed)", ctx.at(block, col_of_word(block, "G", code)))
+
+    def cycle_data_letters(self, ctx: Context) -> str:
+        """Z (the reference plane, an axis letter already), I (the depth) and K (the dwell)."""
+        return "IK"
+
+    def _dwell(self, block: Block, ctx: Context, values: dict[str, Any], used: set[str], num: str) -> None:
+        """``G04 K``: K in the unit of the cycle dwell (the set-up's ``fagorDwellUnit``)."""
+        at = ctx.at(block, col_of_word(block, "G", num))
+        if "K" not in values:
+            raise ProgramError("G04 needs a dwell time K", at)
+        unit = cycle_words(ctx.setup).dwell_unit or 1.0
+        k = values["K"]
+        used.add("K")
+        if isinstance(k, Expr):
+            block.add(Dwell(k if unit == 1.0 else Binary("mul", k, Num(unit))))  # type: ignore[arg-type]
+            return
+        if k < 0:
+            raise ProgramError("a dwell time cannot be negative", at)
+        block.add(Dwell(float(k) * unit))
+
+    def orient(self, block: Block, ctx: Context, num: str, values: dict[str, Any], used: set[str]) -> None:
+        """``M19`` is read only on a machine whose set-up says it has it (``<Cycles orientation="m19"/>``):
+        the 8070's oriented stop is not confirmed [?]."""
+        if ctx.setup.cycles.orientation != "m19":
+            raise UnsupportedError(f"M{num}: an oriented spindle stop is not confirmed on the 8070 (a set-up with "
+                                   "<Cycles orientation=\"m19\"/> says the machine has M19)",
+                                   ctx.at(block, col_of_word(block, "M", num)))
+        super().orient(block, ctx, num, values, used)
+
+    def multiple_machining(self, block: Block, ctx: Context, code: str, num: str) -> None:
+        """THE HOOK for G160-G165 (``code`` is ``"G160"`` .. ``"G165"``, ``num`` the number as written).
+
+        Called instead of the word rules for the whole block: ``block.words`` holds the raw
+        ``(letter, text)`` pairs as lexed (``("P", "2.005")``), ``block.values`` any computed word
+        (an ``Expr``), ``block.text`` the line; ``ctx.state`` has the active cycle and position. It adds
+        the block's sections (or raises a located ``PostprocError``). The multiple-machining reader
+        (``multiple_machining.py``) replaces this body; until then the block is refused, never dropped.
+        """
+        raise UnsupportedError(f"{code} (multiple machining) is not read yet",
+                               ctx.at(block, col_of_word(block, "G", num)))

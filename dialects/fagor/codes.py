@@ -1,0 +1,95 @@
+"""Fagor 8070 codes: one table, read by the block syntax and inverted by the writer.
+
+Rows are ``(spelling, modal group, kind, argument)`` (``postproc.rs274.codes``). What each collision
+with Fanuc's numbers means here (DIALECTS.md 1.4, 2.3, 3.4):
+
+* ``G70``/``G71`` are inch/mm (Fanuc ``G20``/``G21``) [K].
+* ``G98``/``G99`` return to the initial / reference plane after a hole cycle, as on Fanuc [V].
+* ``G159=n`` selects zero offset n [V for the syntax]: ``G159=1``-``G159=6`` are ``G54``-``G59``
+  (the writer spells those as ``G54``-``G59``); a higher n is kept verbatim (``native_g``).
+* ``G81`` drills with a dwell ``K`` at the bottom (Fanuc's ``G82``; without ``K`` it is ``G81``) and
+  ``G89`` bores with a dwell and a withdrawal at the work feed (Fanuc's ``G89``; ``G85`` without the
+  dwell) [K: the 8055 family's words ``Z I K``].
+* ``G82``-``G88`` are kept verbatim: the words of G82 (variable peck), G83 (peck) and G84 (tapping) and
+  the motion of G85 (reaming) and G86 (boring, rapid withdrawal) are not confirmed [?], and ``G87``/
+  ``G88`` are the rectangular and circular pockets, not Fanuc's back and manual boring. So a Fanuc
+  ``G73``, ``G74``, ``G76``, ``G83``, ``G84``, ``G86``, ``G87`` or ``G88`` reaches Fagor expanded, never
+  as the Fagor code of the same number.
+* ``G04 K`` dwells, ``K`` in the unit of the cycle dwell (the set-up's ``fagorDwellUnit``) [?: the 8055
+  family's form; the 8070's unit is not confirmed, as for the cycle ``K``].
+* ``M19`` orients the spindle to the machine's angle (the set-up's ``orientAngle``) [?: the ISO M code;
+  an expansion writes it only when the set-up says ``<Cycles orientation="m19"/>``].
+* ``G160``-``G165`` (multiple machining) are routed by the block syntax to its hook, not read here.
+* ``M17``/``M29`` end a local subroutine [?]: kept verbatim.
+"""
+
+from __future__ import annotations
+
+from postproc.rs274.codes import CodeTable
+
+ROWS = (
+    ("G00", "01", "motion", "rapid"),
+    ("G01", "01", "motion", "linear"),
+    ("G02", "01", "motion", "cw"),
+    ("G03", "01", "motion", "ccw"),
+    ("G04", "00", "dwell", None),
+    ("G17", "02", "plane", "XY"),
+    ("G18", "02", "plane", "ZX"),
+    ("G19", "02", "plane", "YZ"),
+    ("G40", "07", "cutter", "off"),
+    ("G41", "07", "cutter", "left"),
+    ("G42", "07", "cutter", "right"),
+    ("G54", "14", "offset", 1),
+    ("G55", "14", "offset", 2),
+    ("G56", "14", "offset", 3),
+    ("G57", "14", "offset", 4),
+    ("G58", "14", "offset", 5),
+    ("G59", "14", "offset", 6),
+    *((f"G159={n}", "14", "offset", n) for n in range(1, 7)),
+    ("G70", "06", "units", "inch"),
+    ("G71", "06", "units", "mm"),
+    ("G80", "09", "cycle_cancel", None),
+    ("G81", "09", "cycle", "drill_dwell"),
+    ("G89", "09", "cycle", "bore_dwell_feed"),
+    ("G90", "03", "distance", "absolute"),
+    ("G91", "03", "distance", "incremental"),
+    ("G94", "05", "feed_mode", "per_min"),
+    ("G95", "05", "feed_mode", "per_rev"),
+    ("G98", "10", "return", "initial"),
+    ("G99", "10", "return", "r"),
+    ("M00", "", "program", "stop"),
+    ("M01", "", "program", "optional_stop"),
+    ("M02", "", "program", "end"),
+    ("M03", "", "spindle", "cw"),
+    ("M04", "", "spindle", "ccw"),
+    ("M05", "", "spindle", "stop"),
+    ("M06", "", "tool_change", None),
+    ("M07", "", "coolant", "mist"),
+    ("M08", "", "coolant", "flood"),
+    ("M09", "", "coolant", "off"),
+    ("M19", "", "orient", None),
+    ("M30", "", "program", "end_rewind"),
+)
+"""Codes whose meaning the IR models."""
+
+CYCLE_ALIASES = {"drill": "drill_dwell", "bore_feed": "bore_dwell_feed"}
+"""Neutral cycles Fagor writes as a dwelling cycle with no dwell (``K0`` when one is in force)."""
+
+PATTERN_CODES = frozenset({"160", "161", "162", "163", "164", "165"})
+"""Multiple machining: G160 line, G161 parallelogram, G162 grid, G163 full circle, G164 arc, G165 chord."""
+
+MAX_OFFSET = 99
+"""The highest ``G159=n`` read (kept verbatim above 6) [?: the 8070's table size is not known]."""
+
+CODES = CodeTable(
+    ROWS,
+    native_g={
+        "82": "drilling with variable peck [?]", "83": "deep-hole drilling with constant peck [?]",
+        "84": "tapping [?]", "85": "reaming [?]", "86": "boring with rapid withdrawal [?]",
+        "87": "rectangular pocket", "88": "circular pocket",
+        **{f"159={n}": f"zero offset {n}" for n in range(7, MAX_OFFSET + 1)},
+    },
+    native_m={17: "end of a local subroutine [?]", 29: "end of a local subroutine [?]"},
+)
+"""Fagor's code table. ``native_g``/``native_m``: kept verbatim (they round-trip to Fagor, are refused
+anywhere else and are never simulated)."""

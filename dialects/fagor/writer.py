@@ -1,0 +1,106 @@
+"""Fagor 8070 writer: DIN words spelt from Fagor's table (G70/G71 units, G54-G59, G98/G99), ``;``
+comments, ``%name`` headers, and the hole cycles Fagor runs with its own words.
+
+* A block read from Fagor and unchanged is copied byte for byte (``WordWriter``).
+* Hole cycles: a drilling (Fanuc ``G81``/``G82``) or feed-out boring (``G85``/``G89``) cycle read in
+  another dialect is written as Fagor's ``G81``/``G89`` with each word by its role (``R`` -> ``Z``,
+  ``Z`` -> ``I``; ``cycle_role_words``); the dwell ``K`` is written from the cycle's seconds in the set-up's
+  unit whenever it differs from the one the written program has in force (``K0`` for a cycle without a
+  dwell after one with), so the dwell never depends on how Fagor carries ``K`` from cycle to cycle.
+  Every other cycle arrives expanded (``Fagor.NATIVE_CYCLES``).
+* Another dialect's tape mark ``%`` is written as the comment ``;%`` (a Fagor ``%`` line is a header).
+* A dwell is ``G04 K`` in the set-up's unit (as the cycle ``K`` [?]).
+* No block skip, no oriented spindle stop and no tool length offset are written:
+  their 8070 spelling is not confirmed [?] (a located error names them).
+* Multiple machining (``G160``-``G165``) sections are written by ``multiple_machining.py`` through this
+  writer's section dispatch (``TRANSFORMS`` or a ``<key>_words`` method).
+"""
+
+from __future__ import annotations
+
+from typing import Any, ClassVar
+
+from postproc.cycle_words import CycleWords
+from postproc.expr import Expr
+from postproc.ir import Block, Motion
+from postproc.rs274.codes import CodeTable
+from postproc.rs274.cycle_words import NEUTRAL_CYCLE_WORDS
+from postproc.rs274.writer import WordWriter
+
+from .codes import CODES, CYCLE_ALIASES
+from .cycle_words import cycle_words
+
+_CANCELS = frozenset(("rapid", "linear", "cw", "ccw"))
+
+
+class FagorWriter(WordWriter):
+    DIALECT: ClassVar[str] = "fagor"
+    CODES: ClassVar[CodeTable] = CODES
+    DWELL_WORD: ClassVar[str] = ""
+
+    dwell_in_force: float | None = None
+    """The cycle dwell (seconds) the written program has in force: None before any cycle and after a
+    cancel, when a cycle writes its ``K`` explicitly unless it has no dwell."""
+
+    def target_cycle_words(self) -> CycleWords:
+        return cycle_words(self.ctx.setup)
+
+    def generate(self, block: Block) -> str:
+        if "TapeMark" in block.sections:
+            return ";%" + (block.eol or "\n")  # a tape's start or end: no Fagor block, kept as a trace
+        text = super().generate(block)
+        sections = block.sections
+        motion = sections.get("Motion")
+        if "CycleCancel" in sections or (isinstance(motion, Motion) and motion.mode in _CANCELS):
+            self.dwell_in_force = None
+        return text
+
+    def canned_cycle_words(self, s: Any, block: Block) -> list[str]:
+        source, target = self.ctx.cycle_words or NEUTRAL_CYCLE_WORDS, self.target_cycle_words()
+        if source.same_letters(target):
+            return super().canned_cycle_words(s, block)
+        kind = CYCLE_ALIASES.get(s.kind, s.kind)
+        words: list[str] = []
+        if s.call:
+            words.extend(self._code("cycle", kind, f"the {s.kind.replace('_', ' ')} cycle", block))
+        words.extend(self.cycle_role_words(s, block, source, target, dwell=False))
+        seconds = (s.dwell or 0.0) if kind == s.kind else 0.0
+        if self.dwell_in_force is None and seconds or self.dwell_in_force is not None \
+                and abs(seconds - self.dwell_in_force) > 1e-12:
+            words.append(target.dwell + self.cycle_dwell(seconds, target, block))
+        self.dwell_in_force = seconds
+        return words
+
+    def dwell_words(self, s: Any, block: Block) -> list[str]:
+        if isinstance(s.seconds, Expr):
+            self.unsupported("a computed dwell time", block)
+        target = self.target_cycle_words()
+        return [self.code("dwell", None, "a dwell", block), target.dwell + self.cycle_dwell(s.seconds, target, block)]
+
+    def spindle_orientation_words(self, s: Any, block: Block) -> list[str]:
+        """M19 only where the set-up says the machine has it (``<Cycles orientation="m19"/>``) [?]."""
+        if self.ctx.setup.cycles.orientation != "m19":
+            self.unsupported("an oriented spindle stop (not confirmed on the 8070; a set-up with "
+                             "<Cycles orientation=\"m19\"/> writes M19)", block)
+        return super().spindle_orientation_words(s, block)
+
+    def program_start(self, s: Any, block: Block) -> str:
+        return "%" + (str(s.number) if s.number is not None else str(s.name))
+
+    def comment(self, text: str) -> str:
+        return ";" + " ".join(text.splitlines())
+
+    def comment_out(self, block: Block) -> str:
+        text = " ".join((block.text or " ".join(a + n for a, n in block.words)).split())
+        return f";UNSUPPORTED LINE {block.line}: {text}" + (block.eol or "\n")
+
+    def nothing_written(self, block: Block) -> str:
+        super().nothing_written(block)  # the warning
+        text = " ".join((block.text or " ".join(a + n for a, n in block.words)).split())
+        return f";LINE {block.line}: {text}" + (block.eol or "\n")
+
+    def block_delete_words(self, s: Any, block: Block) -> list[str]:
+        self.unsupported("a block skip (its 8070 spelling is not confirmed)", block)
+
+    def return_level_words(self, s: Any, block: Block) -> list[str]:
+        return self._code("return", s.level, "a cycle return level", block)

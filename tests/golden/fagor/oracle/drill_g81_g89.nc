@@ -1,0 +1,18 @@
+%1201
+; Fagor drilling with Z/I/K, absolute and incremental, checked against LinuxCNC's own G82/G89
+G71 G90 G17
+G00 X0 Y0 Z30
+M03 S1000
+G81 G99 X10 Y10 Z2 I-12 K0.5 F200
+X25
+X40 Y15
+G80
+G00 Z30
+G91 G99 G81 X10 Y10 Z-26 I-8
+X10
+G90 G80
+G00 Z30
+G89 G99 X70 Y0 Z3 I-6 K1 F80
+G80
+M05
+M30
