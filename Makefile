@@ -23,7 +23,7 @@ test: $(STAMP)
 
 bench: $(STAMP)
 	$(BIN)/pip install --quiet -r benchmarks/requirements.txt
-	$(BIN)/python benchmarks/run.py
+	$(BIN)/python benchmarks/run.py $(BENCH_ARGS)
 
 fuzz: $(STAMP)
 	$(BIN)/python -m tests.support.fuzz_main --minutes $(or $(MINUTES),10) --out fuzz-failures

@@ -232,3 +232,44 @@ def test_progress_shows_files_blocks_per_second_and_time_left():
     assert stream.getvalue().endswith("\r\033[Ka.nc:1:1: warning: something\n")
     bar.clear()
     assert not bar.shown
+
+
+def test_ctrl_c_stops_the_batch_and_leaves_only_whole_outputs(tmp_path):
+    """Ctrl-C (SIGINT to the process group, as a terminal sends it) once the first file is reported: exit
+    130, the summary counts what was not done, every file in the report is written, each output present
+    is complete (fanuc -> fanuc: the input itself), and no temporary file is left."""
+    import os
+    import signal
+    import subprocess
+    import sys
+    import time
+
+    progs = tmp_path / "progs"
+    progs.mkdir()
+    for n in range(400):  # seconds of work after the first file, even on an idle machine
+        shutil.copy(EXAMPLES[n % len(EXAMPLES)], progs / f"o{3000 + n}.nc")
+    out, report = tmp_path / "out", tmp_path / "report.jsonl"
+    command = [sys.executable, "-m", "postproc", "translate", str(progs), "-o", str(out), "--from", "fanuc",
+               "--to", "fanuc", "--jobs", "2", "--files-per-task", "1", "--report", str(report)]
+    process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True,
+                               start_new_session=True, cwd=ROOT)
+    try:
+        deadline = time.monotonic() + 600
+        while not (report.exists() and report.read_text().strip()) and process.poll() is None:
+            assert time.monotonic() < deadline, "no file finished in 10 minutes"
+            time.sleep(0.01)
+        os.killpg(process.pid, signal.SIGINT)
+        summary, _ = process.communicate(timeout=600)
+    finally:
+        if process.poll() is None:
+            os.killpg(process.pid, signal.SIGKILL)
+    assert process.returncode == 130, summary
+    done = [Path(str(line["file"])).name for line in report_lines(report)]
+    assert "not done (interrupted)" in summary
+    assert 0 < len(done) < 400
+    assert leftovers(out) == []
+    written = sorted(p.name for p in out.iterdir())
+    assert set(done) <= set(written)  # a file finishing as Ctrl-C came may be written without its line
+    assert len(written) < 400
+    for name in written:
+        assert (out / name).read_bytes() == (progs / name).read_bytes()

@@ -1,7 +1,9 @@
 """Running the chunks on this machine: in this process (one job) or in a pool of worker processes.
 
-Workers start from a fork server that has imported postproc once, so a pool costs one import, not one
-per worker, and no thread of this process is forked. Workers ignore Ctrl-C: the terminal sends it to
+Workers are forked from this process when it has a single thread (the command line): they start at
+once, with postproc imported and the dialects loaded. A process with other threads (an application
+embedding postproc, a test run beside a Dask cluster) is not forked, since a fork copies locks that
+other threads may hold: its workers come from a fork server that imports postproc once. Workers ignore Ctrl-C: the terminal sends it to
 every process of the group, and only this one decides (it cancels what has not started and ends the
 workers; the temporary files they leave are swept by the batch, see ``command``).
 
@@ -16,6 +18,7 @@ from __future__ import annotations
 import multiprocessing
 import os
 import signal
+import threading
 from concurrent.futures import Future, ProcessPoolExecutor, as_completed
 from typing import Any, Generator, Sequence
 
@@ -33,12 +36,11 @@ def default_jobs() -> int:
 
 def run_local(chunks: Sequence[Sequence[Job]], options: Options, run_id: str, jobs: int) -> Generator[list[FileResult], None, None]:
     """Each chunk's results, as chunks finish. Close the iterator to stop early (workers end)."""
-    if jobs <= 1:
+    if jobs <= 1 or len(chunks) <= 1:
         for chunk in chunks:
             yield run_chunk(chunk, options, run_id)
         return
-    context = multiprocessing.get_context("forkserver")
-    context.set_forkserver_preload(["postproc.batch.work"])
+    context = _start_method()
     pool = ProcessPoolExecutor(max_workers=min(jobs, len(chunks)), mp_context=context, initializer=_worker_signals)
     finished = False
     try:
@@ -62,6 +64,14 @@ def lost(job: Job, why: str) -> FileResult:
     """The result of a file whose worker never answered."""
     return FileResult(job.name, job.output_name, "internal", EXIT_ERRORS,
                       errors=[f"postproc: {job.name}: not translated: {why}"])
+
+
+def _start_method() -> Any:
+    if threading.active_count() == 1 and "fork" in multiprocessing.get_all_start_methods():
+        return multiprocessing.get_context("fork")
+    context = multiprocessing.get_context("forkserver")
+    context.set_forkserver_preload(["postproc.batch.work"])
+    return context
 
 
 def _worker_signals() -> None:
