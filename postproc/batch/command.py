@@ -19,7 +19,7 @@ from ..plugins import default_registry
 from ..setup import load_setup
 from .cluster import run_cluster
 from .local import default_jobs, run_local
-from .plan import CHUNK_BYTES, chunks, plan_jobs
+from .plan import CHUNK_BYTES, CHUNK_FILES, Job, chunks, plan_jobs
 from .progress import progress_for
 from .report import Report, Tally, messages
 from .work import TEMP_PREFIX, FileResult, Options
@@ -41,24 +41,20 @@ def run_batch(args: argparse.Namespace, renumber: tuple[int, int | None] | None)
     outdir = _outdir(args)
     options = _options(args, renumber)
     jobs = plan_jobs(args.input, outdir, ext=args.ext, include=args.include or ())
+    report = Report(args.report) if args.report else None
     try:
         os.makedirs(outdir, exist_ok=True)
     except OSError as exc:
+        if report is not None:
+            report.close()
         raise UsageError(f"cannot write {outdir}: {exc.strerror}") from None
     workers = args.jobs or default_jobs()
-    groups = chunks(jobs, CHUNK_BYTES, args.files_per_task or 32)
+    groups = chunks(jobs, CHUNK_BYTES, args.files_per_task or CHUNK_FILES)
     run_id = uuid.uuid4().hex[:12]
-    report = Report(args.report) if args.report else None
     tally = Tally(len(jobs))
     progress = progress_for(len(jobs), sum(job.size for job in jobs), sys.stderr)
     sizes = {job.name: job.size for job in jobs}
-    if args.scheduler:
-        where = ("a Dask LocalCluster of " + _workers(workers) if args.scheduler == "local"
-                 else f"Dask scheduler {args.scheduler}")
-        runner: Generator[list[FileResult], None, None] = run_cluster(groups, options, run_id, args.scheduler, workers)
-    else:
-        where = "1 job, in this process" if workers == 1 or len(groups) == 1 else _workers(min(workers, len(groups)))
-        runner = run_local(groups, options, run_id, workers)
+    where, runner = _runner(args.scheduler, groups, options, run_id, workers)
     try:
         with contextlib.closing(runner):
             for results in runner:
@@ -77,6 +73,17 @@ def run_batch(args: argparse.Namespace, renumber: tuple[int, int | None] | None)
         print(tally.summary(source=options.source, target=options.target, where=where,
                             report=args.report), flush=True)
     return tally.exit
+
+
+def _runner(scheduler: str | None, groups: list[list[Job]], options: Options, run_id: str,
+            workers: int) -> tuple[str, Generator[list[FileResult], None, None]]:
+    """Where the batch runs (for the summary) and the results as they come from there."""
+    if scheduler == "local":
+        return f"a Dask LocalCluster of {_workers(workers)}", run_cluster(groups, options, run_id, scheduler, workers)
+    if scheduler:
+        return f"Dask scheduler {scheduler}", run_cluster(groups, options, run_id, scheduler, workers)
+    where = "1 job, in this process" if workers == 1 or len(groups) == 1 else _workers(min(workers, len(groups)))
+    return where, run_local(groups, options, run_id, workers)
 
 
 def _workers(count: int) -> str:
