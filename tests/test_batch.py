@@ -4,6 +4,7 @@ one file's failure is that file's alone, the exit status is the worst file's, no
 from __future__ import annotations
 
 import io
+import os
 import json
 import shutil
 from pathlib import Path
@@ -238,7 +239,6 @@ def test_ctrl_c_stops_the_batch_and_leaves_only_whole_outputs(tmp_path):
     """Ctrl-C (SIGINT to the process group, as a terminal sends it) once the first file is reported: exit
     130, the summary counts what was not done, every file in the report is written, each output present
     is complete (fanuc -> fanuc: the input itself), and no temporary file is left."""
-    import os
     import signal
     import subprocess
     import sys
@@ -273,3 +273,18 @@ def test_ctrl_c_stops_the_batch_and_leaves_only_whole_outputs(tmp_path):
     assert len(written) < 400
     for name in written:
         assert (out / name).read_bytes() == (progs / name).read_bytes()
+
+
+def test_a_file_name_that_is_not_utf8_is_kept_and_reported(cli, tmp_path):
+    progs, out, report = tmp_path / "progs", tmp_path / "out", tmp_path / "report.jsonl"
+    progs.mkdir()
+    name = b"o\xff1.nc"
+    with open(bytes(progs) + b"/" + name, "wb") as f:
+        f.write(EXAMPLES[0].read_bytes())
+    result = cli("translate", progs, "-o", out, "--from", "fanuc", "--to", "fanuc", "--report", report)
+    assert result.status == 0, result.err
+    with open(bytes(out) + b"/" + name, "rb") as f:
+        assert f.read() == EXAMPLES[0].read_bytes()
+    (line,) = report_lines(report)  # valid JSON, the name's byte kept as a surrogate escape
+    assert os.fsencode(str(line["file"])) == bytes(progs) + b"/" + name
+    assert b"1 of 1 files" in result.out

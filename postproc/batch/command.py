@@ -70,8 +70,10 @@ def run_batch(args: argparse.Namespace, renumber: tuple[int, int | None] | None)
         _sweep({os.path.dirname(job.output) for job in jobs}, run_id)
         if report is not None:
             report.close()
-        print(tally.summary(source=options.source, target=options.target, where=where,
-                            report=args.report), flush=True)
+        summary = tally.summary(source=options.source, target=options.target, where=where, report=args.report)
+        sys.stdout.flush()
+        sys.stdout.buffer.write((summary + "\n").encode("utf-8", "surrogateescape"))  # file names as they are
+        sys.stdout.buffer.flush()
     return tally.exit
 
 

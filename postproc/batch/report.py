@@ -32,7 +32,8 @@ class Report:
             raise UsageError(f"cannot write {path}: {exc.strerror}") from None
 
     def add(self, result: FileResult) -> None:
-        self.stream.write(json.dumps(result.as_json(), ensure_ascii=False) + "\n")
+        # ASCII: a file name or message with bytes that are not UTF-8 (kept as surrogates) stays valid JSON
+        self.stream.write(json.dumps(result.as_json()) + "\n")
         self.stream.flush()
 
     def close(self) -> None:
