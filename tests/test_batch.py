@@ -288,3 +288,41 @@ def test_a_file_name_that_is_not_utf8_is_kept_and_reported(cli, tmp_path):
     (line,) = report_lines(report)  # valid JSON, the name's byte kept as a surrogate escape
     assert os.fsencode(str(line["file"])) == bytes(progs) + b"/" + name
     assert b"1 of 1 files" in result.out
+
+
+def test_a_file_that_kills_its_worker_fails_alone(cli, tree, tmp_path, monkeypatch):
+    """A worker process that dies in the middle of a file (as in a crash: no clean-up at all) breaks the
+    pool; that file is found by its temporary output, translated again alone, dies again, and is the
+    only file reported as not translated. The others are translated as ever, once each in the report."""
+    import multiprocessing
+
+    import postproc.api
+    import postproc.batch.local
+
+    real = postproc.api.translate
+
+    def dies_on_crash(lines, out, **kwargs):
+        if kwargs["file"].endswith("crash.nc"):
+            os._exit(70)
+        return real(lines, out, **kwargs)
+
+    monkeypatch.setattr(postproc.api, "translate", dies_on_crash)
+    # forked workers run this test's translate (a fork server's would import the real one)
+    monkeypatch.setattr(postproc.batch.local, "_start_method", lambda: multiprocessing.get_context("fork"))
+    shutil.copy(EXAMPLES[0], tree / "sub" / "crash.nc")
+    out, report = tmp_path / "out", tmp_path / "report.jsonl"
+    result = cli("translate", tree, "-o", out, "--from", "fanuc", "--to", "fanuc", "--jobs", "2",
+                 "--files-per-task", "2", "--report", report)
+    assert result.status == 1
+    lines = report_lines(report)
+    crash = f"{tree}/sub/crash.nc"
+    assert sorted(line["file"] for line in lines) == sorted(
+        [f"{tree}/{p.name}" for p in EXAMPLES] + [f"{tree}/sub/again.nc", crash])
+    (failed,) = [line for line in lines if line["exit"] != 0]
+    assert (failed["file"], failed["status"]) == (crash, "internal")
+    assert "its worker process died translating it alone" in str(failed["errors"])
+    assert not (out / "sub" / "crash.nc").exists()
+    for path in EXAMPLES:
+        assert (out / path.name).read_bytes() == path.read_bytes()
+    assert (out / "sub" / "again.nc").read_bytes() == EXAMPLES[0].read_bytes()
+    assert leftovers(out) == []

@@ -30,6 +30,9 @@ class Job:
     output_name: str
     size: int
     """Bytes, for the progress bar's estimate and for balancing chunks."""
+    number: int = 0
+    """Its place in the batch (0, 1, ...): names its temporary output, so a broken pool can tell which
+    files were being translated (``local``)."""
 
 
 CHUNK_BYTES = 256 << 10
@@ -55,7 +58,8 @@ def plan_jobs(inputs: Sequence[str], outdir: str, *, ext: str | None = None,
             out_rel = _with_ext(rel, ext)
             output = os.path.join(out_real, out_rel)
             job = Job(path=os.path.abspath(path), name=os.path.join(given, rel) if os.path.isdir(given) else given,
-                      output=output, output_name=os.path.join(outdir, out_rel), size=_size(path))
+                      output=output, output_name=os.path.join(outdir, out_rel), size=_size(path),
+                      number=len(jobs))
             if os.path.realpath(job.path) == output:
                 raise UsageError(f"-o {outdir} would overwrite the input {job.name} with its translation")
             other = by_output.get(output)

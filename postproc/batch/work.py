@@ -24,7 +24,7 @@ from ..setup import MachineSetup, load_setup
 from .plan import Job
 
 TEMP_PREFIX = ".postproc-"
-"""Temporary outputs are ``.postproc-<run id>-<random>`` beside the output."""
+"""Temporary outputs are ``.postproc-<run id>-<job number>-<random>`` beside the output."""
 
 EXIT_OK, EXIT_ERRORS, EXIT_USAGE = 0, 1, 2
 
@@ -112,7 +112,7 @@ def _translate(job: Job, options: Options, run_id: str, result: FileResult) -> N
         raise UsageError(f"cannot read {job.name}: {exc.strerror}") from None
     try:
         os.makedirs(folder, exist_ok=True)
-        fd, tmp = tempfile.mkstemp(prefix=f"{TEMP_PREFIX}{run_id}-", dir=folder)
+        fd, tmp = tempfile.mkstemp(prefix=f"{TEMP_PREFIX}{run_id}-{job.number}-", dir=folder)
     except OSError as exc:
         src.close()
         raise UsageError(f"cannot write {job.output_name}: {exc.strerror}") from None
