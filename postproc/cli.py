@@ -96,7 +96,8 @@ EXAMPLES = {
   postproc translate o1001.nc --from fanuc --to linuxcnc -o o1001.ngc
   postproc translate o1002.nc --from fanuc --to grbl --on-unsupported warn -o o1002.gcode
   postproc translate o1004.nc --from fanuc --to fanuc --normalize --renumber 10,10 -o o1004.nc --in-place
-  cat o1001.nc | postproc translate - --from fanuc --to grbl > o1001.gcode""",
+  cat o1001.nc | postproc translate - --from fanuc --to grbl > o1001.gcode
+  postproc translate programs/ -o migrated/ --from fanuc --to linuxcnc --ext ngc --verify --report report.jsonl""",
     "toolpath": """examples:
   postproc toolpath o1003.nc --dialect fanuc                  # JSON lines on standard output
   postproc toolpath o1003.nc --dialect fanuc --format svg -o o1003.svg""",
