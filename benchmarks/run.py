@@ -1,6 +1,6 @@
 """Throughput and peak memory of ``postproc translate`` against peers and a plain loop.
 
-Usage: python benchmarks/run.py [--sizes 100000 1000000] [--cache DIR] [--pygcode-max N]
+Usage: python benchmarks/run.py [--sizes 100000 1000000] [--cache DIR] [--pygcode-max N] [--batch full|quick|skip]
 
 Every measured program runs in its own process; its wall time and peak RSS come from
 os.wait4 in a minimal launcher.  Figures are printed, never asserted.
@@ -207,6 +207,8 @@ def main() -> None:
                         help="where generated programs are kept between runs")
     parser.add_argument("--pygcode-max", type=int, default=100_000,
                         help="larger sizes extrapolate pygcode from its largest measured size")
+    parser.add_argument("--batch", choices=("full", "quick", "skip"), default="full",
+                        help="batch files/s and blocks/s (benchmarks/batch.py): full size, --quick size, or none")
     args = parser.parse_args()
     args.cache.mkdir(parents=True, exist_ok=True)
     print(f"python {platform.python_version()} on {platform.machine()}, {os.cpu_count()} CPUs; "
@@ -217,6 +219,10 @@ def main() -> None:
         for blocks in sorted(args.sizes):
             print()
             print_table(bench_size(blocks, args.cache, Path(work), args.pygcode_max, pygcode_rows))
+    if args.batch != "skip":
+        import batch
+        print()
+        batch.run(args.batch == "quick", args.cache)
 
 
 if __name__ == "__main__":

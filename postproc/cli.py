@@ -96,7 +96,8 @@ EXAMPLES = {
   postproc translate o1001.nc --from fanuc --to linuxcnc -o o1001.ngc
   postproc translate o1002.nc --from fanuc --to grbl --on-unsupported warn -o o1002.gcode
   postproc translate o1004.nc --from fanuc --to fanuc --normalize --renumber 10,10 -o o1004.nc --in-place
-  cat o1001.nc | postproc translate - --from fanuc --to grbl > o1001.gcode""",
+  cat o1001.nc | postproc translate - --from fanuc --to grbl > o1001.gcode
+  postproc translate programs/ -o migrated/ --from fanuc --to linuxcnc --ext ngc --verify --report report.jsonl""",
     "toolpath": """examples:
   postproc toolpath o1003.nc --dialect fanuc                  # JSON lines on standard output
   postproc toolpath o1003.nc --dialect fanuc --format svg -o o1003.svg""",
@@ -140,8 +141,9 @@ def build_parser() -> argparse.ArgumentParser:
                 "Translate a program from one controller dialect to another. Read back in its own dialect a "
                 "program is reproduced byte for byte; what the target cannot express is a located error "
                 "(or, with --on-unsupported warn, a warning and the line written as a comment).")
-    t.add_argument("input", metavar="IN", help=f"the program to translate ({STDIO})")
-    t.add_argument("-o", "--output", metavar="OUT", help=OUTPUT)
+    t.add_argument("input", metavar="IN", nargs="+",
+                   help=f"the program to translate ({STDIO}); several files or folders make a batch")
+    t.add_argument("-o", "--output", metavar="OUT", help=OUTPUT + "; for a batch, the folder to write into")
     t.add_argument("--from", dest="source", required=True, metavar="DIALECT",
                    help="dialect of IN ('postproc dialects' lists them)")
     t.add_argument("--to", dest="target", required=True, metavar="DIALECT", help="dialect to write")
@@ -157,6 +159,7 @@ def build_parser() -> argparse.ArgumentParser:
     t.add_argument("--in-place", action="store_true", help="allow -o to name the input (replace it)")
     t.add_argument("--define", action="append", default=[], metavar="NAME=VALUE",
                    help="a variable the set-up's templates see as NAME (repeatable)")
+    _batch_arguments(t)
     t.set_defaults(run=cmd_translate)
 
     tp = command("toolpath", "simulate a program and export its toolpath",
@@ -219,6 +222,44 @@ def build_parser() -> argparse.ArgumentParser:
                    help="dump: write the set-up resolved, without extends (default: extends and the file's own values)")
     c.set_defaults(run=cmd_config)
     return p
+
+
+def _batch_arguments(t: argparse.ArgumentParser) -> None:
+    """``translate`` over many files (postproc.batch): any of these options makes the command a batch."""
+    b = t.add_argument_group(
+        "batch", "Several inputs, a folder, or any of these options translate every file into -o OUTDIR, keeping "
+                 "paths relative to each folder given; a summary goes to standard output. See docs/cli.md.")
+    b.add_argument("-j", "--jobs", type=_positive, metavar="N",
+                   help="worker processes (default: every core); with --scheduler local, Dask workers")
+    b.add_argument("--ext", metavar="EXT",
+                   help="give each output this extension (ngc, .gcode; '' for none), replacing the input's "
+                        "last one; default: the input's name unchanged")
+    b.add_argument("--include", action="append", default=[], metavar="GLOB",
+                   help="take only files whose name matches (repeatable; e.g. '*.nc'); default: every file "
+                        "not hidden")
+    b.add_argument("--report", metavar="REPORT.jsonl",
+                   help="write one JSON line per file: status, warnings, errors, max deviation, time")
+    b.add_argument("--verify", action="store_true",
+                   help="verify each translation against its input; one that fails is not written")
+    b.add_argument("--tolerance", type=_tolerance, metavar="MM", help="with --verify: largest deviation "
+                   "accepted, in mm (default 0.001)")
+    b.add_argument("--allow-ignored", action="store_true",
+                   help="with --verify: accept settings that move the tool differing (see verify)")
+    b.add_argument("--scheduler", metavar="ADDRESS",
+                   help="run on a Dask cluster: tcp://host:8786, or 'local' for a LocalCluster on this machine "
+                        "(needs the dask extra; inputs and outputs on a path every worker sees)")
+    b.add_argument("--files-per-task", type=_positive, metavar="N",
+                   help="most files in one worker task (default 32, fewer for large files)")
+
+
+def _positive(text: str) -> int:
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"not a whole number: {text!r}") from None
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"must be at least 1, got {text!r}")
+    return value
 
 
 def _tolerance(text: str) -> float:
@@ -287,26 +328,48 @@ def _watched(path: str, src: TextIO) -> tuple[Iterable[str], Diagnostics]:
 
 
 def cmd_translate(args: argparse.Namespace) -> int:
+    renumber = _renumber(args.renumber)
+    if (args.tolerance is not None or args.allow_ignored) and not args.verify:
+        raise UsageError("--tolerance and --allow-ignored go with --verify")
+    from .batch.command import is_batch
+    if is_batch(args):
+        from .batch.command import run_batch
+        if args.tolerance is None:
+            args.tolerance = 0.001
+        return run_batch(args, renumber)
+    (path,) = args.input
     setup = _setup(args.machine, args.lib)
     if args.normalize:
         setup.output.normalize = True
-    if args.renumber:
-        start, _, step = args.renumber.partition(",")
-        try:
-            setup.output.renumber_start = int(start)
-            if step:
-                setup.output.renumber_step = int(step)
-        except ValueError:
-            raise UsageError(f"--renumber takes START[,STEP], got {args.renumber!r}") from None
+    if renumber is not None:
+        setup.output.renumber_start, step = renumber
+        if step is not None:
+            setup.output.renumber_step = step
     from .sequences import parse_defines
     defines = parse_defines(args.define)
-    with _open_program(args.input) as src:
-        lines, diagnostics = _watched(args.input, src)
+    with _open_program(path) as src:
+        lines, diagnostics = _watched(path, src)
         write_output(_output(args.output), lambda out: translate(
-            lines, out, file=_name(args.input), source=args.source, target=args.target, setup=setup,
+            lines, out, file=_name(path), source=args.source, target=args.target, setup=setup,
             on_unsupported=args.on_unsupported, diagnostics=diagnostics, defines=defines),
-            input_path=_input_path(args.input), in_place=args.in_place)
+            input_path=_input_path(path), in_place=args.in_place)
     return 0
+
+
+def _renumber(text: str | None) -> tuple[int, int | None] | None:
+    """``--renumber START[,STEP]`` as numbers (a usage error otherwise; the set-up checks their range)."""
+    if not text:
+        return None
+    start, _, step = text.partition(",")
+    try:
+        numbers = int(start), int(step) if step else None
+        scratch = MachineSetup().output  # the set-up's own bounds (a ValueError when outside them)
+        scratch.renumber_start = numbers[0]
+        if numbers[1] is not None:
+            scratch.renumber_step = numbers[1]
+        return numbers
+    except ValueError:
+        raise UsageError(f"--renumber takes START[,STEP], got {text!r}") from None
 
 
 def cmd_toolpath(args: argparse.Namespace) -> int:
