@@ -363,6 +363,7 @@ SHOP_RUNS = [
     ("linuxcnc", "linuxcnc_mill.xml", "examples/linuxcnc", ("",)),
     ("gsk", "gsk_980tdc_ck6140.xml", "examples/gsk", ("",)),
     ("isg", "isg_twincat_mill.xml", "examples/isg", ("prof_contour_xy", "steps_subroutine")),
+    ("fagor", "fagor_8070_mill.xml", "examples/fagor", ("drill_plate",)),
 ]
 
 
