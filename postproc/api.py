@@ -1,24 +1,18 @@
-"""The public API: read a program into the IR, translate it, all as streams.
-
-The cyclic garbage collector is paused while a program streams: blocks hold no reference cycles, and
-measured here the collector's generation scans, not parsing, dominate object-per-block pipelines.
-"""
+"""The public API: read a program into the IR, translate it, all as streams (reading itself, and the
+collector paused while a program streams, are in ``postproc.reading``)."""
 
 from __future__ import annotations
 
-import contextlib
 import copy
-import gc
 import io
-from itertools import chain
-from typing import Callable, Iterable, Iterator, TextIO
+from typing import Callable, Iterable, TextIO
 
 from .dialect import Dialect
-from .errors import Diagnostics, ErrorLevel, Location, PostprocError, UsageError
+from .errors import Diagnostics, ErrorLevel, PostprocError, UsageError
 from .ir import Block
-from .lines import checked_lines
 from .lower import lower_for
 from .plugins import Registry, default_registry
+from .reading import gc_paused as gc_paused, read_blocks as read_blocks  # public API names
 from .interp.step import ProgramSyntax
 from .sequences import Sequences
 from .setup import MachineSetup
@@ -27,55 +21,6 @@ from .syntax import Pipeline
 from .context import Context
 
 
-@contextlib.contextmanager
-def gc_paused() -> Iterator[None]:
-    """Pause the cyclic collector for a streaming run (reference counting still frees every block)."""
-    enabled = gc.isenabled()
-    gc.disable()
-    try:
-        yield
-    finally:
-        if enabled:
-            gc.enable()
-
-
-def read_blocks(lines: Iterable[str], file: str, dialect: type[Dialect], setup: MachineSetup,
-                diagnostics: Diagnostics, *, program_mode: str = "keep",
-                prepare: Callable[[Context], None] | None = None) -> tuple[Context, Iterator[Block]]:
-    """Text -> IR: the dialect's reader, then its syntax pipeline. Returns the run's context too.
-
-    ``program_mode`` says what the interpreter step does with a program that computes ('keep',
-    'execute' or 'auto', see ``Context.program_mode``); it is set before the pipeline is built, as is
-    whatever ``prepare`` adds to the context, so the steps choose their path once."""
-    if dialect.READER is None:
-        raise UsageError(f"the {dialect.NAME} dialect cannot be read (it is write-only)")
-    ctx = dialect.context(file, setup, diagnostics)
-    ctx.program_mode = program_mode
-    if prepare is not None:
-        prepare(ctx)
-    pipeline = dialect.pipeline(setup)
-    blocks = dialect.READER(ctx).read(checked_lines(lines, ctx))
-    return ctx, pipeline.run(_warn_if_empty(blocks, ctx), ctx)
-
-
-_INERT = frozenset(("Comments", "TapeMark"))
-
-
-def _warn_if_empty(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
-    """Pass the reader's blocks on; a program with none that does anything (no file, only comments or
-    ``%``) gets a warning: an empty output is then no surprise. The check ends at the first such block,
-    and the rest passes on with no step per block."""
-    blocks = iter(blocks)
-    return chain(_until_something(blocks, ctx), blocks)
-
-
-def _until_something(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
-    for block in blocks:
-        yield block
-        if block.words or not block.sections.keys() <= _INERT:
-            return
-    if not ctx.diagnostics.errors:
-        ctx.diagnostics.warn("the program is empty: no line in it programs anything", Location(ctx.file, 1, 1))
 
 
 def translate(lines: Iterable[str], out: TextIO, *, file: str, source: str, target: str,

@@ -274,7 +274,7 @@ def _tolerance(text: str) -> float:
 
 
 def _setup(path: str | None, lib: Sequence[str] = ()) -> MachineSetup:
-    setup = load_setup(path) if path else MachineSetup()
+    setup = load_setup(path, groups=default_registry().setup_groups) if path else MachineSetup()
     for folder in lib:
         if not os.path.isdir(folder):
             raise UsageError(f"--lib {folder}: no such directory")
@@ -439,7 +439,7 @@ def cmd_config(args: argparse.Namespace) -> int:
     """Every problem of the set-up at once: its values, its dialect, its pipeline, its templates."""
     from .setup import load_setup_collect
     from .setup_load import raise_all
-    from .templates import check_templates
+    from .sequences import check_templates
     registry = default_registry()
     setup, problems = load_setup_collect(args.file, registry.setup_groups)
     if setup.dialect:
@@ -456,7 +456,8 @@ def cmd_config(args: argparse.Namespace) -> int:
         except ConfigError as err:
             problems.append(err)
     from .sequences import parse_defines
-    problems.extend(check_templates(setup, parse_defines(args.define), collect=True))
+    target = registry.dialects.get(setup.dialect) if setup.dialect else None
+    problems.extend(check_templates(setup, parse_defines(args.define), collect=True, target=target))
     raise_all(problems)
     if args.action == "check":
         print(f"{args.file}: ok")

@@ -10,7 +10,7 @@ from __future__ import annotations
 import abc
 from importlib import resources
 from pathlib import Path
-from typing import TYPE_CHECKING, Any, Callable, ClassVar, Iterable, Iterator, TextIO
+from typing import Any, Callable, ClassVar, Iterable, Iterator, Protocol, TextIO
 
 from .errors import Diagnostics, PostprocError, UnsupportedError
 from .ir import Block, one_line
@@ -20,8 +20,24 @@ from .context import Context
 from .cycle_words import CycleWords
 from .syntax import Pipeline, load_pipeline
 
-if TYPE_CHECKING:
-    from .sequences import Sequences
+
+class TemplateSource(Protocol):
+    """The set-up's templates as the writer meets them (``postproc.sequences.Sequences``): text to write
+    at the header and footer, and whether blocks carry a template's output (``Generated``)."""
+
+    per_block: bool
+
+    def render(self, name: str) -> str: ...
+
+
+class _NoTemplates:
+    per_block = False
+
+    def render(self, name: str) -> str:
+        return ""
+
+
+_NO_TEMPLATES = _NoTemplates()
 
 
 class Reader(abc.ABC):
@@ -57,7 +73,9 @@ class Writer(abc.ABC):
         sequences = self.sequences()
         output_map = self.ctx.run_data.get("output_map")
         emit = out.write if output_map is None else output_map.writer(out)
-        line_format = LineFormat.for_run(self.ctx, self.target)
+        target = self.target
+        line_format = LineFormat.for_run(self.ctx, None if target is None else target.NAME,
+                                         target is None or target.LOWER_CASE)
         if line_format is not None:
             emit = line_format.wrap(emit)
         generated = sequences.per_block
@@ -114,19 +132,11 @@ class Writer(abc.ABC):
         if output_map is not None:
             output_map.template = None
 
-    def sequences(self) -> "Sequences":
-        """The translation's templates (``translate`` puts them in the context; a writer used on its own
-        renders the set-up's header and footer)."""
-        from .sequences import Sequences
+    def sequences(self) -> "TemplateSource":
+        """The translation's templates, which ``translate`` puts in the context (``postproc.sequences``);
+        a writer used on its own writes none."""
         found = self.ctx.run_data.get("sequences")
-        if isinstance(found, Sequences):
-            return found
-        found = self.ctx.run_data["sequences"] = Sequences(self.ctx, self.source_dialect, self.target)
-        return found
-
-    def render_template(self, name: str) -> str:
-        """Render the set-up's template ``name`` (sandboxed jinja2, read back as the target reads), or ''."""
-        return self.sequences().render(name)
+        return found if found is not None else _NO_TEMPLATES
 
     def unsupported_block(self, block: Block, err: UnsupportedError) -> str | None:
         err.located(self.ctx.at(block))

@@ -28,7 +28,6 @@ from .ir import Block
 
 if TYPE_CHECKING:
     from .context import Context
-    from .dialect import Dialect
 
 _NUMBER = re.compile(r"(/\d?\s*)?[Nn]\d+\s*")
 """A block number at the start of a line, after an optional block delete."""
@@ -42,7 +41,9 @@ _COMMENT = re.compile(r"\([^)]*\)?|;.*")
 class LineFormat:
     """One translation's line formatting, wrapped around the writer's ``emit``."""
 
-    def __init__(self, ctx: "Context", target: type["Dialect"] | None) -> None:
+    def __init__(self, ctx: "Context", target: str | None, lower_case: bool) -> None:
+        """``target``: the dialect written (None: the source's own); ``lower_case``: its reader takes
+        lower-case addresses (the dialect's ``LOWER_CASE``)."""
         out = ctx.setup.output
         self.ctx = ctx
         self.mode = out.block_numbers
@@ -56,17 +57,17 @@ class LineFormat:
         self.block: Block | None = None
         """The block whose text is being written (None: a template's)."""
         self.template: str | None = None
-        if self.case == "lower" and target is not None and not target.LOWER_CASE:
-            raise ConfigError(f"<Output case=\"lower\">: the {target.NAME} reader takes upper-case addresses only",
+        if self.case == "lower" and target is not None and not lower_case:
+            raise ConfigError(f"<Output case=\"lower\">: the {target} reader takes upper-case addresses only",
                               Location(ctx.setup.source or "<set-up>", 1, 1))
 
     @classmethod
-    def for_run(cls, ctx: "Context", target: type["Dialect"] | None) -> "LineFormat | None":
+    def for_run(cls, ctx: "Context", target: str | None, lower_case: bool) -> "LineFormat | None":
         out = ctx.setup.output
         if (out.block_numbers == "keep" and out.case == "keep" and out.line_ending == "keep"
                 and not out.max_line_length):
             return None
-        return cls(ctx, target)
+        return cls(ctx, target, lower_case)
 
     def wrap(self, emit: Callable[[str], object]) -> Callable[[str], object]:
         def formatted(text: str) -> object:

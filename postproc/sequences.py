@@ -38,6 +38,7 @@ from .xmlio import XAttr
 if TYPE_CHECKING:
     from .context import Context
     from .dialect import Dialect
+    from .setup import MachineSetup
 
 BLOCK_TEMPLATES = ("tool_change", "operation_start", "program_end")
 """Templates the translation renders at blocks (the others, header and footer, once each)."""
@@ -272,7 +273,7 @@ def check_output(name: str, text: str, target: type["Dialect"], setup: Any, wher
                  state: ModalState | None, keep_modal: bool) -> None:
     """Read a template's output as ``target`` reads it; an error in it, or a modal setting it leaves
     changed (``keep_modal``), is a ``ConfigError`` at the template."""
-    from .api import read_blocks
+    from .reading import read_blocks
     if target.READER is None:
         return
     diagnostics = Diagnostics(ErrorLevel.RAISE, max_errors=1_000_000, warn_stream=io.StringIO())
@@ -300,3 +301,48 @@ def check_output(name: str, text: str, target: type["Dialect"], setup: Any, wher
                               f"{', '.join(str(getattr(start, f)) for f in changed)} to "
                               f"{', '.join(str(getattr(fctx.state, f)) for f in changed)}); the program "
                               "after it relies on what it found: set it back", where)
+
+
+SAMPLE_PROGRAM = "o1001"
+"""The program name ``config check`` renders with (the writer passes the input file's stem)."""
+
+
+def check_templates(setup: "MachineSetup", defines: dict[str, str] | None = None, collect: bool = False,
+                    target: type["Dialect"] | None = None) -> list[ConfigError]:
+    """Render the set-up's templates with sample values (metric and inch), as ``config check`` does, and
+    read each output back with ``target`` (the set-up's dialect, when it names an installed one). The
+    first failure is raised, or with ``collect`` every template's failure is returned."""
+    from .templates import render_all
+    problems: list[ConfigError] = []
+    for name, text in setup.templates.defined().items():
+        first = setup.template_lines.get(name, 1)
+        file = setup.template_file(name)
+        try:
+            outputs = render_all(name, text, sample_variables(setup, name, defines), file, first)
+            if target is not None:
+                for out in outputs:
+                    if out:
+                        check_output(name, out, target, setup, Location(file or "<set-up>", first, 1), None,
+                                     name not in ("footer", "program_end"))
+        except ConfigError as err:
+            if not collect:
+                raise
+            problems.append(err)
+    return problems
+
+
+def sample_variables(setup: "MachineSetup", name: str = "header",
+                     defines: dict[str, str] | None = None) -> list[dict[str, Any]]:
+    """The variables a translation passes (``postproc.sequences``), with sample values, once per unit
+    system; the block templates also get a sample tool change (tool 1 after none, operation 1)."""
+    dialect = setup.dialect or "unknown"
+    base: dict[str, Any] = {"program": SAMPLE_PROGRAM, "source_file": SAMPLE_PROGRAM + ".nc",
+                            "source_dialect": dialect, "target_dialect": dialect, "machine": setup.name,
+                            "date": "2000-01-01", "setup": setup_values(setup),
+                            "tools": [{"number": 1, "line": 10}, {"number": 2, "line": 40}]}
+    if name in ("tool_change", "operation_start"):
+        base.update(tool=1, previous_tool=None, operation=1, line=10, name="SAMPLE OPERATION", first_use=True)
+    elif name == "program_end":
+        base.update(line=99)
+    base.update(defines or {})
+    return [{**base, "units": units} for units in ("mm", "inch")]

@@ -496,8 +496,9 @@ def _code_call_from_xml(el: etree._Element) -> tuple[str, str]:
 def load_setup(path: str | Path, factory: XFactory | None = None,
                groups: dict[str, type[SetupGroup]] | None = None) -> MachineSetup:
     """Load and validate a machine set-up file and the bases it extends. ``groups``: the element name ->
-    group class of every group (default: the built-in ones and those of the installed plugins). Every
-    problem found is raised (one ``ConfigError``, or an ``ErrorList`` of them)."""
+    group class of every group (default: the built-in ones; pass ``default_registry().setup_groups`` for
+    those of the installed plugins too, as the command line does). Every problem found is raised (one
+    ``ConfigError``, or an ``ErrorList`` of them)."""
     setup, problems = load_setup_collect(path, groups)
     from .setup_load import raise_all
     raise_all(problems)
@@ -510,8 +511,7 @@ def load_setup_collect(path: str | Path, groups: dict[str, type[SetupGroup]] | N
     raising them, so ``config check`` can go on to the templates; an unreadable file or chain raises."""
     from .setup_load import merge_collect, resolve_chain
     if groups is None:
-        from .plugins import default_registry
-        groups = default_registry().setup_groups
+        groups = builtin_groups()  # the plugins' groups come from the registry, above this module
     setup, problems = merge_collect(resolve_chain(path), groups, str(path))
     setup.source = str(path)
     return setup, problems

@@ -18,14 +18,11 @@ from jinja2.sandbox import SandboxedEnvironment
 
 from .bounded import MEMORY_LIMIT, run_bounded
 from .errors import ConfigError, Location
-from .setup import MachineSetup
 
 MAX_OUTPUT = 1 << 20
 MAX_EXPONENT = 256
 TIME_LIMIT = 5.0
 """Seconds a template may render (the child process is killed after that)."""
-SAMPLE_PROGRAM = "o1001"
-"""The program name ``config check`` renders with (the writer passes the input file's stem)."""
 
 
 class _BoundedSandbox(SandboxedEnvironment):
@@ -49,60 +46,10 @@ _ENV = _BoundedSandbox(undefined=StrictUndefined, autoescape=False, keep_trailin
 
 def render(name: str, text: str, variables: dict[str, Any], source: str | None, first_line: int = 1) -> str:
     """Render one template. ``first_line`` is the line of the set-up file the template text starts on."""
-    return _render_all(name, text, [variables], source, first_line)[0]
+    return render_all(name, text, [variables], source, first_line)[0]
 
 
-def check_templates(setup: MachineSetup, defines: dict[str, str] | None = None,
-                    collect: bool = False) -> list[ConfigError]:
-    """Render the set-up's templates with sample values (metric and inch), as ``config check`` does, and
-    read each output back with the set-up's dialect (when it names an installed one). The first failure
-    is raised, or with ``collect`` every template's failure is returned."""
-    from .errors import UsageError
-    from .plugins import default_registry
-    from .sequences import check_output
-    target = None
-    if setup.dialect:
-        try:
-            target = default_registry().dialect(setup.dialect)
-        except UsageError:
-            target = None  # ``config check`` reports the unknown dialect itself
-    problems: list[ConfigError] = []
-    for name, text in setup.templates.defined().items():
-        first = setup.template_lines.get(name, 1)
-        file = setup.template_file(name)
-        try:
-            outputs = _render_all(name, text, sample_variables(setup, name, defines), file, first)
-            if target is not None:
-                for out in outputs:
-                    if out:
-                        check_output(name, out, target, setup, Location(file or "<set-up>", first, 1), None,
-                                     name not in ("footer", "program_end"))
-        except ConfigError as err:
-            if not collect:
-                raise
-            problems.append(err)
-    return problems
-
-
-def sample_variables(setup: MachineSetup, name: str = "header",
-                     defines: dict[str, str] | None = None) -> list[dict[str, Any]]:
-    """The variables a translation passes (``postproc.sequences``), with sample values, once per unit
-    system; the block templates also get a sample tool change (tool 1 after none, operation 1)."""
-    from .sequences import setup_values
-    dialect = setup.dialect or "unknown"
-    base: dict[str, Any] = {"program": SAMPLE_PROGRAM, "source_file": SAMPLE_PROGRAM + ".nc",
-                            "source_dialect": dialect, "target_dialect": dialect, "machine": setup.name,
-                            "date": "2000-01-01", "setup": setup_values(setup),
-                            "tools": [{"number": 1, "line": 10}, {"number": 2, "line": 40}]}
-    if name in ("tool_change", "operation_start"):
-        base.update(tool=1, previous_tool=None, operation=1, line=10, name="SAMPLE OPERATION", first_use=True)
-    elif name == "program_end":
-        base.update(line=99)
-    base.update(defines or {})
-    return [{**base, "units": units} for units in ("mm", "inch")]
-
-
-def _render_all(name: str, text: str, variable_sets: list[dict[str, Any]], source: str | None,
+def render_all(name: str, text: str, variable_sets: list[dict[str, Any]], source: str | None,
                 first_line: int) -> list[str]:
     """Render ``text`` once per variable set in one bounded child; the first failure is raised."""
     where = source or "<set-up>"

@@ -31,7 +31,7 @@ from __future__ import annotations
 import math
 from typing import Any, Callable, Iterable, Iterator
 
-from .api import gc_paused, read_blocks
+from .reading import gc_paused, read_blocks
 from .block_rules import NO_FEED, ArcError, arc_centre, check_blocks, needs_feed
 from .machine_functions import drop_foreign_machine_functions
 from .program_end import EndTracker, comment_after_end

@@ -21,7 +21,7 @@ quadrant point they sweep through (an arc bulges past a limit its end points res
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING, Callable
+from typing import TYPE_CHECKING, Callable, Protocol
 
 from .errors import Location, ProgramError
 
@@ -32,7 +32,23 @@ from .ir import Block
 from .setup_machine import ROTARY_AXES, AxisTravel
 
 if TYPE_CHECKING:
-    from .toolpath import Simulator
+    from .context import Context
+    from .state import ModalState
+
+
+class Simulated(Protocol):
+    """What the check reads of the simulator running the program (``postproc.toolpath.Simulator``)."""
+
+    ctx: "Context"
+    axes: tuple[str, ...]
+    pos: dict[str, float]
+    modal: "ModalState"
+    scale: float
+    lathe: bool
+    diameter: bool
+    offsets: dict[int, dict[str, float]]
+
+    def _at(self, block: Block | None = None, word: str | None = None) -> Location: ...
 
 _NONE: dict[str, float] = {}
 _FRAME_KEYS = frozenset(("WorkOffset", "ToolLengthOffset", "ToolSelect", "DataSetting"))
@@ -44,7 +60,7 @@ EPSILON = 1e-6
 class TravelCheck:
     """Tracks the machine position of one simulated run and reports moves beyond the travel."""
 
-    def __init__(self, sim: "Simulator", report: Callable[[TravelError], None]) -> None:
+    def __init__(self, sim: Simulated, report: Callable[[TravelError], None]) -> None:
         setup = sim.ctx.setup
         self.sim = sim
         self.report = report

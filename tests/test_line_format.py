@@ -91,5 +91,5 @@ def test_defaults_change_nothing_and_stay_off_the_hot_path():
     from postproc.errors import Diagnostics
     from postproc.plugins import default_registry
     fanuc = default_registry().dialect("fanuc")
-    assert LineFormat.for_run(fanuc.context("p.nc", MachineSetup(), Diagnostics()), fanuc) is None
+    assert LineFormat.for_run(fanuc.context("p.nc", MachineSetup(), Diagnostics()), "fanuc", False) is None
     assert _write("fanuc") == PROGRAM

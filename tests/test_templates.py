@@ -9,7 +9,8 @@ import pytest
 from postproc.errors import ConfigError
 from postproc.setup import MachineSetup, Templates, load_setup
 from postproc.bounded import MEMORY_LIMIT, _mapped_bytes, run_bounded
-from postproc.templates import MAX_OUTPUT, check_templates, render, sample_variables
+from postproc.sequences import check_templates, sample_variables
+from postproc.templates import MAX_OUTPUT, render
 
 ROOT = Path(__file__).resolve().parents[1]
 DECLARATION = "<?xml version='1.0' encoding='UTF-8'?>\n"

@@ -112,7 +112,7 @@ def _options(args: argparse.Namespace, renumber: tuple[int, int | None] | None) 
         raise UsageError(f"the {args.target} dialect cannot be written (it is read-only)")
     machine = os.path.abspath(args.machine) if args.machine else None
     if machine is not None:
-        load_setup(machine)  # a set-up error is the whole batch's (exit 1), found before any file
+        load_setup(machine, groups=registry.setup_groups)  # a set-up error is the whole batch's (exit 1), found before any file
     for folder in args.lib:
         if not os.path.isdir(folder):
             raise UsageError(f"--lib {folder}: no such directory")

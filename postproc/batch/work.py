@@ -20,6 +20,7 @@ from typing import Any, Sequence
 from .. import api
 from ..errors import Diagnostics, ErrorList, PostprocError, UsageError
 from ..outfile import BUFFER, ENCODING
+from ..plugins import default_registry
 from ..setup import MachineSetup, load_setup
 from .plan import Job
 
@@ -154,7 +155,8 @@ def _verified(job: Job, tmp: str, options: Options, result: FileResult) -> bool:
 @functools.lru_cache(maxsize=4)
 def _setup(options: Options) -> MachineSetup:
     """The set-up, loaded once per worker process (the client has already checked it loads)."""
-    setup = load_setup(options.machine) if options.machine else MachineSetup()
+    setup = load_setup(options.machine, groups=default_registry().setup_groups) if options.machine \
+        else MachineSetup()
     setup.library.extend(options.lib)
     if options.normalize:  # as the single-file command does (its outputs and ours are the same bytes)
         setup.output.normalize = True

@@ -56,7 +56,8 @@ class DialectUnderTest:
         return default_registry().dialect(self.dialect)
 
     def machine(self) -> MachineSetup:
-        return load_setup(self.setup) if self.setup is not None else MachineSetup()
+        return load_setup(self.setup, groups=default_registry().setup_groups) if self.setup is not None \
+            else MachineSetup()
 
     def programs(self) -> list[Path]:
         return _programs(self.examples)

@@ -1,0 +1,71 @@
+"""Text -> IR: a dialect's reader and its syntax pipeline, as a stream (``read_blocks``), with the cyclic
+garbage collector paused while a program streams (``gc_paused``): blocks hold no reference cycles, and
+measured here the collector's generation scans, not parsing, dominate object-per-block pipelines.
+
+Below ``postproc.api`` so that the simulator and the sequences read programs without importing the API.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import gc
+from itertools import chain
+from typing import Callable, Iterable, Iterator
+
+from .context import Context
+from .dialect import Dialect
+from .errors import Diagnostics, Location, UsageError
+from .ir import Block
+from .lines import checked_lines
+from .setup import MachineSetup
+
+
+@contextlib.contextmanager
+def gc_paused() -> Iterator[None]:
+    """Pause the cyclic collector for a streaming run (reference counting still frees every block)."""
+    enabled = gc.isenabled()
+    gc.disable()
+    try:
+        yield
+    finally:
+        if enabled:
+            gc.enable()
+
+
+def read_blocks(lines: Iterable[str], file: str, dialect: type[Dialect], setup: MachineSetup,
+                diagnostics: Diagnostics, *, program_mode: str = "keep",
+                prepare: Callable[[Context], None] | None = None) -> tuple[Context, Iterator[Block]]:
+    """Text -> IR: the dialect's reader, then its syntax pipeline. Returns the run's context too.
+
+    ``program_mode`` says what the interpreter step does with a program that computes ('keep',
+    'execute' or 'auto', see ``Context.program_mode``); it is set before the pipeline is built, as is
+    whatever ``prepare`` adds to the context, so the steps choose their path once."""
+    if dialect.READER is None:
+        raise UsageError(f"the {dialect.NAME} dialect cannot be read (it is write-only)")
+    ctx = dialect.context(file, setup, diagnostics)
+    ctx.program_mode = program_mode
+    if prepare is not None:
+        prepare(ctx)
+    pipeline = dialect.pipeline(setup)
+    blocks = dialect.READER(ctx).read(checked_lines(lines, ctx))
+    return ctx, pipeline.run(_warn_if_empty(blocks, ctx), ctx)
+
+
+_INERT = frozenset(("Comments", "TapeMark"))
+
+
+def _warn_if_empty(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
+    """Pass the reader's blocks on; a program with none that does anything (no file, only comments or
+    ``%``) gets a warning: an empty output is then no surprise. The check ends at the first such block,
+    and the rest passes on with no step per block."""
+    blocks = iter(blocks)
+    return chain(_until_something(blocks, ctx), blocks)
+
+
+def _until_something(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
+    for block in blocks:
+        yield block
+        if block.words or not block.sections.keys() <= _INERT:
+            return
+    if not ctx.diagnostics.errors:
+        ctx.diagnostics.warn("the program is empty: no line in it programs anything", Location(ctx.file, 1, 1))
