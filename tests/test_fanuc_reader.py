@@ -429,3 +429,16 @@ def test_odd_words_are_located_errors(line):
     with pytest.raises(ErrorList) as info:
         read("G00 X0. Y0.\n" + line + "\n")
     assert all(isinstance(e, (ParseError, ProgramError)) and e.location.line == 2 for e in info.value.errors)
+
+
+@FUZZ
+@given(lexable_line())
+def test_the_readers_fast_path_gives_the_lexers_block(case):
+    """A line of plain words takes the reader's fast path (an N number or a CAM line's first word): the
+    block is the one the full lexer makes of the same line."""
+    from postproc.rs274.lexer import lex_block
+    line = case[0]
+    [fast] = lex(line + "\n")
+    slow = lex_block("t.nc", 1, line, "\n")
+    assert (fast.words, fast.text, fast.eol) == (slow.words, slow.text, slow.eol)
+    assert {k: repr(v) for k, v in fast.sections.items()} == {k: repr(v) for k, v in slow.sections.items()}

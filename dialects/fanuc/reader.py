@@ -17,6 +17,11 @@ from postproc.rs274.lexer import WORDS_ONLY, WORD, lex_block
 from .macro import read_call
 
 
+_FAST_START = frozenset("NGXYZABCUVWIJKRFSTMHDPQ")
+"""First letters of a line the fast path takes: a block number, or a word a CAM line starts with (not O,
+a program number, nor anything that is not an upper-case address)."""
+
+
 class FanucReader(Reader):
     def read(self, lines: Iterable[str]) -> Iterator[Block]:
         file = self.ctx.file
@@ -36,18 +41,21 @@ class FanucReader(Reader):
                 text, eol = raw[:-1], "\r"
             else:
                 text, eol = raw, ""
-            # Likeliest first: a block of words only, starting with its N number.
-            if text[:1] == "N":
+            # Likeliest first: a block of words only, starting with its N number or (a CAM program's
+            # usual line) with a G code or an axis word; O (a program number) and the rest are lexed.
+            first = text[:1]
+            if first in _FAST_START:
                 # A canonical block is words only by construction; otherwise check it is.
                 is_canonical = canonical(text) is not None
                 if is_canonical or ("(" not in text and ")" not in text and "/" not in text and plain(text)):
                     # canonical: single spaces between words, so a split is the tokenizer
                     words = [(w[0], w[1:]) for w in text.split(" ")] if is_canonical else findall(text)
-                    num = words[0][1]
+                    num = words[0][1] if first == "N" else "0"
                     if "." not in num and num[0] not in "+-":
                         block = Block(number, text, eol, words)
                         block.canonical = is_canonical
-                        block.sections["Sequence"] = Sequence(int(num))
+                        if first == "N":
+                            block.sections["Sequence"] = Sequence(int(num))
                         # a canonical block is upper-case: two probes for M98/M99/G65-G67
                         if ("M9" in text or "G6" in text or not is_canonical and ("m9" in text or "g6" in text)):
                             try:
