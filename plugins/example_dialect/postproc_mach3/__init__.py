@@ -9,7 +9,7 @@ entry point (``pyproject.toml``). docs/plugins.md walks through it.
 The controller: Mach3's interpreter follows the NIST RS274/NGC interpreter (words, modal groups, order of
 execution: M5/M9 before the block's motion), dwell ``G4 P`` in seconds (Mach3's default; its "G04 dwell
 in ms" option is a machine setting this plugin does not model), no oriented spindle stop, an ATC through
-the M6 macro. This package writes every axis, centre and radius word with exactly four decimals
+the M6 macro, G73/G83 clearances from the machine's settings. This package writes every axis, centre and radius word with exactly four decimals
 (``X15.0000``), as many Mach3 posts do.
 """
 
@@ -82,15 +82,17 @@ class Mach3Writer(WordWriter):
 
 class Mach3(Dialect):
     NAME = "mach3"
-    DESCRIPTION = "Mach3/Mach4 mill (RS274/NGC words, G81 kept, 4-decimal axis words)"
+    DESCRIPTION = "Mach3/Mach4 mill (RS274/NGC words, G73/G81/G83 kept, 4-decimal axis words)"
     READER = Mach3Reader
     WRITER = Mach3Writer
     PIPELINE_FILE = "mach3.xml"
     CYCLE_WORDS = rs274_cycle_words(CODES, ("L",))
     """R level, Q peck, P dwell (seconds), L repeats."""
-    NATIVE_CYCLES = frozenset({"drill"})
-    """G81 is written as a cycle; every other cycle is expanded into plain moves. G73/G83 are read, but
-    Mach3's peck clearance is a machine setting this plugin does not know, so they are never written."""
+    NATIVE_CYCLES = frozenset({"drill", "peck_chip", "peck_deep"})
+    """G81, G73 and G83 are written as cycles; every other cycle is expanded into plain moves. The G73
+    retract and G83 clearance are machine settings (Mach4's #5114/#5115), taken from the set-up's
+    ``<Cycles peckRetract peckClearance>`` like Fanuc's parameters (``PECK_CLEARANCE_MM`` stays None): a
+    peck cycle from a control with another clearance (LinuxCNC's fixed 0.254 mm) is expanded."""
     CYCLE_SEMANTICS = "rs274"
     """The cycles move by the RS274/NGC rules (``postproc.cycles.semantics``)."""
     SPINDLE_ORIENTATION = False
