@@ -51,12 +51,17 @@ class Mach3Writer(WordWriter):
         if s.mode is None:
             self.unsupported("a canned-cycle repetition without its cycle", block)
         words = self._code("home" if s.mode in ("home", "home2") else "motion", s.mode, f"{s.mode} motion", block)
-        words.extend(axis + self.fixed(value, block) for axis, value in s.axes.items())
+        if self.rounding:  # rounded by the set-up: the base's position() carries what rounding left behind
+            incremental = self.modal.distance == "incremental" and "MachineCoordinates" not in block.sections
+            words.extend(axis + (self.pad(self.position(axis, value, incremental), axis) if isinstance(value, float)
+                                 else self.fixed(value, block, axis)) for axis, value in s.axes.items())
+        else:
+            words.extend(axis + self.fixed(value, block, axis) for axis, value in s.axes.items())
         if s.center is not None:
-            words.extend(letter + self.fixed(s.center[axis], block)
+            words.extend(letter + self.fixed(s.center[axis], block, letter)
                          for axis, letter in (("X", "I"), ("Y", "J"), ("Z", "K")) if axis in s.center)
         if s.radius is not None:
-            words.append("R" + self.fixed(s.radius, block))
+            words.append("R" + self.fixed(s.radius, block, "R"))
         return words
 
     def program_start(self, s: Any, block: Block) -> str:
@@ -64,9 +69,20 @@ class Mach3Writer(WordWriter):
         name = f"O{int(s.number):04d}" if s.number is not None else str(s.name)
         return self.comment(name)
 
-    def fixed(self, value: Any, block: Block) -> str:
+    def pad(self, text: str, letter: str) -> str:
+        """A rounded number with the trailing zeros of its address's places (``X1.50`` for two)."""
+        places = (self.mm_places if self.modal.units == "mm" else self.inch_places).get(letter)
+        if places is None:
+            return text
+        return text + "0" * (places - (len(text) - text.index(".") - 1))
+
+    def fixed(self, value: Any, block: Block, letter: str) -> str:
         if isinstance(value, Expr):  # a computed word: this dialect has no expressions (PROGRAMS is False)
             self.unsupported("a computed word", block)
+        mm = self.modal.units == "mm"
+        places = (self.mm_places if mm else self.inch_places).get(letter) if self.rounding else None
+        if places is not None:  # the set-up's <Output addressDecimals>: rounded, then fixed width
+            return self.pad(self.rounded(float(value), letter, places, mm), letter)
         # at least AXIS_DECIMALS places; where that would round the value (an inch program converted,
         # a computed value), Python's shortest exact spelling of the float instead
         value = float(value)
