@@ -176,3 +176,12 @@ def test_a_feed_per_revolution_move_runs_once_the_spindle_turns() -> None:
     report = verify_lines(io.StringIO(program), io.StringIO(out.getvalue()), file_in="a.nc", file_out="b.nc",
                           source="fanuc", target="linuxcnc", tolerance=0.0)
     assert report.ok
+
+
+def test_a_bare_feed_code_without_feed_is_not_written_for_mach3() -> None:
+    """Mach3's reader refuses ``G1`` with no feed rate in force (RS274/NGC): the bare code sets only the
+    mode, so it goes (as for LinuxCNC and grbl) and the output reads back."""
+    out = io.StringIO()
+    translate(io.StringIO(HEAD + "G01\n"), out, file="t.nc", source="fanuc", target="mach3")
+    assert out.getvalue() == "G21 G90 G0 X0.0000 Y0.0000 Z10.0000\n(G01)\n"
+    translate(io.StringIO(out.getvalue()), io.StringIO(), file="back.nc", source="mach3", target="mach3")

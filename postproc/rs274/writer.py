@@ -471,11 +471,16 @@ class WordWriter(Writer):
     def seconds(self, value: float) -> str:
         return format_decimal(value, 3, self.leading_zero)
 
+    def left_out(self, s: Motion, block: Block) -> bool:
+        """A bare feed motion code the target refuses with no feed rate in force
+        (``BARE_FEED_MOTION_NEEDS_FEED``): it only sets the mode, so it is not written."""
+        return (self.BARE_FEED_MOTION_NEEDS_FEED and not s.axes and s.mode in ("linear", "cw", "ccw")
+                and "Feed" not in block.sections and not self.modal.feed)
+
     def motion_words(self, s: Motion, block: Block) -> list[str]:
         if s.mode is None:
             self.unsupported("a canned-cycle repetition without its cycle", block)
-        if (self.BARE_FEED_MOTION_NEEDS_FEED and not s.axes and s.mode in ("linear", "cw", "ccw")
-                and "Feed" not in block.sections and not self.modal.feed):
+        if not s.axes and self.left_out(s, block):
             return []
         words = self._code(_MOTION_KIND.get(s.mode, "motion"), s.mode, f"{s.mode} motion", block)
         length = self.length

@@ -43,6 +43,9 @@ class Mach3Writer(WordWriter):
     """G4 P<seconds>."""
     CYCLE_CANCEL_IS_MOTION: ClassVar[bool] = True
     """G80 and G0 are one modal group (RS274/NGC): a block with a motion code leaves G80 out."""
+    BARE_FEED_MOTION_NEEDS_FEED: ClassVar[bool] = True
+    """A bare ``G1`` with no feed rate in force is refused (RS274/NGC), as this dialect's reader does: the
+    code only sets the mode, and every later move writes its own, so it is left out."""
     AXIS_DECIMALS: ClassVar[int] = 4
     """Axis, centre and radius words carry at least this many decimals (more only where fewer would
     round the value)."""
@@ -50,6 +53,8 @@ class Mach3Writer(WordWriter):
     def motion_words(self, s: Motion, block: Block) -> list[str]:
         if s.mode is None:
             self.unsupported("a canned-cycle repetition without its cycle", block)
+        if self.left_out(s, block):
+            return []
         words = self._code("home" if s.mode in ("home", "home2") else "motion", s.mode, f"{s.mode} motion", block)
         if self.rounding:  # rounded by the set-up: the base's position() carries what rounding left behind
             incremental = self.modal.distance == "incremental" and "MachineCoordinates" not in block.sections
