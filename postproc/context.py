@@ -23,7 +23,7 @@ class Context:
 
     __slots__ = ("file", "setup", "diagnostics", "state", "dialect", "cycle_words", "on_unsupported",
                  "program_mode", "keep_check", "reader", "stops_before_motion", "run_data",
-                 "point_mix", "lathe", "diameter", "one_block")
+                 "point_mix", "lathe", "diameter", "one_block", "peck_clearance_mm")
 
     def __init__(self, file: str, setup: MachineSetup, diagnostics: Diagnostics, dialect: str,
                  cycle_words: CycleWords | None = None) -> None:
@@ -53,6 +53,9 @@ class Context:
         self.run_data: dict[str, Any] = {}
         """What a reading step keeps between the blocks of one run besides the modal state (its own key:
         a resolved table, what it has already warned about)."""
+        self.peck_clearance_mm: float | None = None
+        """The reading dialect's fixed G73 retract and G83 clearance in mm (``Dialect.PECK_CLEARANCE_MM``);
+        None: the set-up's ``<Cycles peckRetract peckClearance>``."""
         self.lathe = False
         """The program is read with lathe meanings (``Dialect.reads_lathe``): G70-G76 lathe cycles, G98/G99
         feed modes, U/W incremental X/Z, the ZX plane at start."""

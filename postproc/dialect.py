@@ -221,6 +221,11 @@ class Dialect:
     CYCLE_SEMANTICS: ClassVar[str] = "fanuc"
     """How the controller moves through its native canned cycles ('fanuc' or 'rs274', see
     ``postproc.cycles.semantics``): a cycle resolved under other rules is expanded for it."""
+    PECK_CLEARANCE_MM: ClassVar[float | None] = None
+    """The G73 retract and G83 re-approach clearance of the native peck cycles, mm, where the controller
+    fixes it (LinuxCNC: 0.254, whatever the set-up says); None: machine parameters, the set-up's
+    ``<Cycles peckRetract peckClearance>``. Reading uses it; a peck cycle read with another clearance is
+    expanded for this target (``postproc.cycles.lowering``)."""
 
     MACHINE_TYPES: ClassVar[frozenset[str]] = frozenset({"mill"})
     """Machine types the dialect reads and writes ("mill", "lathe"); the set-up's ``machineType`` picks
@@ -284,6 +289,7 @@ class Dialect:
         ctx = Context(file, setup, diagnostics, cls.NAME, cls.CYCLE_WORDS)
         ctx.reader = cls.READER
         ctx.stops_before_motion = cls.STOPS_BEFORE_MOTION
+        ctx.peck_clearance_mm = cls.PECK_CLEARANCE_MM
         ctx.lathe = cls.reads_lathe(setup)
         ctx.diameter = ctx.lathe and cls.DIAMETER_PROGRAMMING and setup.input.x_programming == "diameter"
         ctx.one_block = ctx.lathe and cls.LATHE_ONE_BLOCK and setup.input.lathe_cycle_format == "one-block"

@@ -28,7 +28,7 @@ def _cell(value: object) -> str:
         return "yes" if value else "no"
     if isinstance(value, list):
         return ",".join(str(v) for v in value) or "-"
-    return str(value) if value != "" else "-"
+    return str(value) if value != "" and value is not None else "-"
 
 
 def render_table(info: dict[str, dict[str, Any]]) -> str:

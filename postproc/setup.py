@@ -83,6 +83,50 @@ class OutputSettings(SetupGroup):
     """Every line's ending (keep: as read; generated lines LF)."""
     max_line_length: int = Field(0, ge=0, le=1 << 20)
     """Longest line the control takes, line ending excluded (0: no limit); a longer one is an error."""
+    # -- decimals per address (``WordWriter.number``) --
+    address_decimals: str = ""
+    """Places per address in mm programs, e.g. ``XYZ3 F1 S0``: each group of address letters then its
+    places (0-6). Such an address is rounded to them (a real rounding: warned once per address when it
+    moves a value); the others follow ``decimals``. Implies normalizing."""
+    inch_address_decimals: str = ""
+    """The same in inch programs (places 0-7)."""
+
+    @model_validator(mode="after")
+    def _address_decimals_valid(self) -> "OutputSettings":
+        parse_address_decimals(self.address_decimals, 6)
+        parse_address_decimals(self.inch_address_decimals, 7)
+        return self
+
+    def address_places(self, inch: bool) -> dict[str, int]:
+        """Address letter -> places, in mm or inch programs (empty: ``decimals`` for every address)."""
+        if inch:
+            return parse_address_decimals(self.inch_address_decimals, 7)
+        return parse_address_decimals(self.address_decimals, 6)
+
+
+ROUNDED_ADDRESSES = "XYZABCUVWIJKRQFS"
+"""Addresses whose places ``<Output addressDecimals>`` may set: axes, arc centres, radius and cycle R,
+peck Q, feed, spindle speed (the rest are whole numbers or codes)."""
+
+
+def parse_address_decimals(text: str, most: int) -> dict[str, int]:
+    """``"XYZ3 F1 S0"`` -> ``{"X": 3, "Y": 3, "Z": 3, "F": 1, "S": 0}``; a ValueError says what is wrong."""
+    places: dict[str, int] = {}
+    for entry in text.split():
+        letters = entry.rstrip("0123456789")
+        digits = entry[len(letters):]
+        if not letters or not digits:
+            raise ValueError(f"{entry!r}: each entry is address letters then places, e.g. 'XYZ3 F1 S0'")
+        count = int(digits)
+        if count > most:
+            raise ValueError(f"{entry!r}: at most {most} places")
+        for letter in letters:
+            if letter not in ROUNDED_ADDRESSES:
+                raise ValueError(f"{entry!r}: {letter!r} is not one of {ROUNDED_ADDRESSES} (upper case)")
+            if letter in places:
+                raise ValueError(f"{entry!r}: {letter} is given twice")
+            places[letter] = count
+    return places
 
 
 class CycleSettings(SetupGroup):

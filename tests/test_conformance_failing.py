@@ -24,6 +24,8 @@ DEFECTS: dict[str, list[tuple[str, str, str]]] = {
     # name: (file, text, replacement), each text must occur in the copy
     "dropy": [("__init__.py", "for axis, value in s.axes.items())", "for axis, value in s.axes.items() if axis != \"Y\")")],
     "lies": [("__init__.py", "SPINDLE_ORIENTATION = False", "SPINDLE_ORIENTATION = True")],
+    "notap": [("__init__.py", 'NATIVE_CYCLES = frozenset({"drill", "peck_chip", "peck_deep"})',
+               'NATIVE_CYCLES = frozenset({"drill", "peck_chip", "peck_deep", "tap"})')],
     "unlocated": [("reader.py", "    DIALECT = \"mach3\"\n",
                    "    DIALECT = \"mach3\"\n\n"
                    "    def read(self, lines):  # type: ignore[no-untyped-def]\n"
@@ -41,10 +43,10 @@ from postproc.testing import ConformanceTests, DialectUnderTest
 
 HERE = Path(__file__).parent
 
-@pytest.fixture(params=["dropy", "lies", "unlocated"])
+@pytest.fixture(params=["dropy", "lies", "notap", "unlocated"])
 def postproc_conformance(request):
     name = request.param
-    others = frozenset({"mach3", "dropy", "lies", "unlocated"}) - {name}
+    others = frozenset({"mach3", "dropy", "lies", "notap", "unlocated"}) - {name}
     return DialectUnderTest(name, HERE / "examples", HERE / ("invalid_" + name), skip_targets=others)
 
 class TestBroken(ConformanceTests):
@@ -116,6 +118,13 @@ def test_a_lying_capability_flag_is_named_with_what_the_writer_did(report: str) 
     assert "probe.nc:3:1: error: the lies dialect cannot express an oriented spindle stop" in text
 
 
+def test_a_native_cycle_the_code_table_cannot_spell_is_named(report: str) -> None:
+    """The example has no G84 row: claiming the tap cycle native fails in the writer, which the suite
+    finds without an example that taps."""
+    text = _section(report, "test_capability_flags_match_the_writer", "notap")
+    assert "but the writer refuses the tap cycle: probe.nc:3:1: error: the notap dialect cannot express the tap cycle" in text
+
+
 def test_an_unlocated_error_is_reported_as_such(report: str) -> None:
     text = _section(report, "test_invalid_programs_fail_with_located_errors", "unlocated")
     assert "parameter.nc" in text and "an error without FILE:LINE:COL: 'error: parameters are not supported'" in text
@@ -123,7 +132,7 @@ def test_an_unlocated_error_is_reported_as_such(report: str) -> None:
 
 def test_checks_the_defects_do_not_touch_still_pass(report: str) -> None:
     summary = report.splitlines()
-    for case in ("dropy", "lies", "unlocated"):
+    for case in ("dropy", "lies", "notap", "unlocated"):
         for test in ("test_examples_read_back_byte_for_byte", "test_ir_survives_xml"):
             assert f"FAILED test_broken.py::TestBroken::{test}[{case}]" not in summary, report
     assert not any(line.startswith("FAILED") and "[lies]" in line and "capability" not in line for line in summary), report

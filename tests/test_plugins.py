@@ -308,8 +308,10 @@ def test_example_plugin_is_listed(cli):
     text = cli("dialects").out.decode()
     column = _matrix_column(text, "mach3")
     assert (column["read"], column["write"]) == ("yes", "yes")
-    assert column["NATIVE_CYCLES"] == "drill"
+    assert column["NATIVE_CYCLES"] == "3 (below)"  # G81, and G73/G83 with the set-up's clearances
+    assert "  mach3 NATIVE_CYCLES: drill, peck_chip, peck_deep\n" in text
     assert column["SPINDLE_ORIENTATION"] == "no"
+    assert column["PECK_CLEARANCE_MM"] == "-"
 
 
 def test_example_plugin_is_built_like_a_third_party_plugin():

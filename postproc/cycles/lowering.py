@@ -2,8 +2,10 @@
 
 A cycle is expanded when the target does not run its kind natively, when the set-up asks for it
 (``<Cycles expand="drill,back_bore"/>`` or ``"all"``), or when the target's controller moves through
-its native cycles by other rules (``CYCLE_SEMANTICS`` on the dialect, default 'fanuc'): the
-expansion is exact, the native cycle there would not be. Once a block of a cycle is expanded, the
+its native cycles by other rules (``CYCLE_SEMANTICS`` on the dialect, default 'fanuc'), or, for G73
+and G83, with another retract or clearance than the program was read with (``PECK_CLEARANCE_MM``,
+else the set-up's ``<Cycles peckRetract peckClearance>``: LinuxCNC's fixed 0.254 mm against a Mach3
+machine's 0.5): the expansion is exact, the native cycle there would not be. Once a block of a cycle is expanded, the
 rest of that cycle (up to its cancel) is expanded too: the expansion's own G00/G01 have cancelled the
 cycle on the target, so a later native repeat would no longer drill there.
 
@@ -23,7 +25,9 @@ from postproc.ir import (
 )
 from postproc.context import Context
 
+from .resolve import peck_clearance_mm
 from .section import CannedCycle
+from .semantics import PECK
 
 _CANCELS = frozenset(("rapid", "linear", "cw", "ccw"))
 
@@ -41,6 +45,7 @@ def _expand(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Ite
     forced = cycles.expanded()
     every = "all" in forced
     native = target.NATIVE_CYCLES
+    other_clearance = _other_clearances(ctx, target)
     semantics = target.CYCLE_SEMANTICS
     can_orient = target.SPINDLE_ORIENTATION
     expanding = False  # from the first expanded block of a cycle to its cancel
@@ -56,7 +61,7 @@ def _expand(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Ite
             yield block
             continue
         expanding = expanding or every or cycle.kind in forced or cycle.kind not in native \
-            or cycle.semantics != semantics
+            or cycle.semantics != semantics or cycle.kind in other_clearance
         if not expanding:
             sections.pop("CompoundMotion", None)
             yield block
@@ -76,6 +81,15 @@ def _expand(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Ite
                     and not _handle_orientation(block, compound, ctx, cycles.orientation, target, source):
                 continue
         yield block
+
+
+def _other_clearances(ctx: Context, target: type[Dialect]) -> frozenset[str]:
+    """The peck cycles whose retract or clearance on ``target`` differs from the one the program was read
+    with (both in mm, from the dialects' fixed values or the set-up), decided once per translation."""
+    cycles = ctx.setup.cycles
+    return frozenset(kind for kind in PECK
+                     if abs(peck_clearance_mm(kind, ctx.peck_clearance_mm, cycles)
+                            - peck_clearance_mm(kind, target.PECK_CLEARANCE_MM, cycles)) > 1e-9)
 
 
 def _restore_motion_mode(compound: CompoundMotion, mode: str | None) -> None:

@@ -24,6 +24,7 @@ from postproc.cycle_words import CycleWords
 from postproc.errors import ConfigError, Location, PostprocError, ProgramError, UnsupportedError
 from postproc.expr import Expr
 from postproc.ir import Block, CompoundMotion, NativeCode, Section
+from postproc.setup import CycleSettings
 from postproc.state import MM_PER_INCH, PLANE_AXES, CycleState, ModalState
 from postproc.context import Context
 from postproc.syntax import Syntax
@@ -407,12 +408,20 @@ def _cancel(state: ModalState) -> None:
 
 
 def _clearance(ctx: Context, kind: str, units: str) -> float | None:
-    """G73 retract or G83 clearance d from the set-up (given in mm), in program units."""
+    """G73 retract or G83 clearance d (mm: the reading dialect's fixed one, else the set-up's), in program
+    units."""
     if kind not in PECK:
         return None
-    cycles = ctx.setup.cycles
-    d = cycles.peck_retract if kind == "peck_chip" else cycles.peck_clearance
+    d = peck_clearance_mm(kind, ctx.peck_clearance_mm, ctx.setup.cycles)
     return d if units == "mm" else d / MM_PER_INCH
+
+
+def peck_clearance_mm(kind: str, fixed: float | None, cycles: CycleSettings) -> float:
+    """The G73 retract (``peck_chip``) or G83 clearance (``peck_deep``) in mm of a controller whose fixed
+    clearance is ``fixed`` (``Dialect.PECK_CLEARANCE_MM``), else the machine parameters ``cycles``."""
+    if fixed is not None:
+        return fixed
+    return cycles.peck_retract if kind == "peck_chip" else cycles.peck_clearance
 
 
 _NOT_CYCLE_DATA = frozenset(("Dwell", "NativeCode", "MachineFunction", "DataSetting"))

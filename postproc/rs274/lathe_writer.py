@@ -119,11 +119,11 @@ class LatheWordWriter(WordWriter):
                 raise UnsupportedError(f"{letter}{float(value):g} is not a whole number of least input increments "
                                        f"({step:g})", self.ctx.at(block))
             return str(count)
-        return self.number(float(value))
+        return self.number(float(value), letter)
 
     def coordinate_set_words(self, s: Any, block: Block) -> list[str]:
         code = self.code("coordinate_set", None, "coordinate setting", block)
-        return [code, *(axis + self.number(value) for axis, value in s.axes.items())]
+        return [code, *(axis + self.number(value, axis) for axis, value in s.axes.items())]
 
     def distance_mode_words(self, s: Any, block: Block) -> list[str]:
         """G90/G91 where the table has them; a system A lathe (GSK, Fanuc T A) has none: its incremental
@@ -165,7 +165,7 @@ class LatheWordWriter(WordWriter):
 
     def spindle_clamp_words(self, s: Any, block: Block) -> list[str]:
         words = [] if "CoordinateSet" in block.sections else [self.code("coordinate_set", None, "a spindle speed clamp", block)]
-        return [*words, "S" + str(int(s.rpm)) if float(s.rpm).is_integer() else "S" + self.number(s.rpm)]
+        return [*words, "S" + self.speed(s.rpm)]
 
     def tool_select_words(self, s: Any, block: Block) -> list[str]:
         """A lathe's T: tool and offset in four digits (T0101)."""

@@ -10,6 +10,7 @@ row for is an ``UnsupportedError``, never another dialect's spelling.
 
 from __future__ import annotations
 
+import math
 from typing import Any, Callable, ClassVar, NoReturn
 
 from ..control import ASSIGN, CONTROL
@@ -69,8 +70,14 @@ class WordWriter(Writer):
         out = ctx.setup.output
         renumber = out.renumber_start if out.block_numbers == "keep" else 0
         """``blockNumbers`` other than keep numbers the written lines (``postproc.line_format``) instead."""
-        self.normalize = out.normalize or bool(renumber)
-        """Renumbering rewrites the words, so it implies normalising."""
+        self.mm_places = out.address_places(False)
+        self.inch_places = out.address_places(True)
+        """``<Output addressDecimals>``: address -> places it is rounded to (mm, inch programs)."""
+        self.rounding = bool(self.mm_places or self.inch_places)
+        self.rounded_warned: set[str] = set()
+        self.at_block: Block | None = None
+        self.normalize = out.normalize or bool(renumber) or self.rounding
+        """Renumbering and decimals per address rewrite the words, so they imply normalising."""
         self.renumber = renumber
         self.renumber_step = out.renumber_step
         self.leading_zero = out.leading_zero
@@ -90,15 +97,38 @@ class WordWriter(Writer):
         return self.CODES
 
     # -- numbers -----------------------------------------------------------------------------------
-    def number(self, value: float) -> str:
+    def number(self, value: float, letter: str = "") -> str:
         """A length or feed with an explicit decimal point, trailing zeros dropped ('10.', '0.5').
 
         Rounds to the output decimals, but never silently: a value that would move by more than
-        half a micrometre (or 0.00002 in) keeps up to ``MAX_PLACES`` places instead.
+        half a micrometre (or 0.00002 in) keeps up to ``MAX_PLACES`` places instead. An address
+        ``letter`` with places of its own (``<Output addressDecimals>``) is rounded to them.
         """
         mm = self.modal.units == "mm"
-        places = self.decimals if mm else self.inch_decimals
-        return format_decimal(value, places, self.leading_zero, EXACT if mm else EXACT_INCH)
+        if self.rounding and letter:
+            places = (self.mm_places if mm else self.inch_places).get(letter)
+            if places is not None:
+                return self.rounded(value, letter, places, mm)
+        return format_decimal(value, self.decimals if mm else self.inch_decimals, self.leading_zero,
+                              EXACT if mm else EXACT_INCH)
+
+    def rounded(self, value: float, letter: str, places: int, mm: bool) -> str:
+        """``value`` rounded to the ``places`` the set-up gives ``letter``; the first value of each
+        address that rounding moves is a warning (the written program then deviates from the source
+        by up to half a unit of the last place)."""
+        text = format_decimal(value, places, self.leading_zero, math.inf)
+        if letter not in self.rounded_warned and abs(float(text) - value) > (EXACT if mm else EXACT_INCH):
+            self.rounded_warned.add(letter)
+            unit = _ROUNDED_UNITS.get(letter) or ("mm" if mm else "in")
+            if letter == "F":
+                unit += "/min" if self.modal.feed_mode != "per_rev" else "/rev"
+            shown = text[:-1] if letter == "S" and text.endswith(".") else text
+            self.ctx.diagnostics.warn(
+                f"<Output {'addressDecimals' if mm else 'inchAddressDecimals'}>: {letter} is rounded to {places} "
+                f"places ({value:.6g} written {letter}{shown}); this and later {letter} words may differ from the "
+                f"source by up to {0.5 * 10.0 ** -places:g} {unit}",
+                self.ctx.at(self.at_block) if self.at_block is not None else None)
+        return text
 
     @staticmethod
     def integer(value: float | int) -> str:
@@ -115,11 +145,11 @@ class WordWriter(Writer):
                 err.located(self.ctx.at(block))
             raise
 
-    def length(self, value: float | Expr, block: Block) -> str:
+    def length(self, value: float | Expr, block: Block, letter: str = "") -> str:
         """A length, feed or other real word value: a number, or an expression kept symbolically."""
         if isinstance(value, Expr):
             return self.expression(value, block)
-        return self.number(value)
+        return self.number(value, letter)
 
     def whole(self, value: float | int | Expr, block: Block) -> str:
         """An integer word value (T, P, L...): a number, or an expression kept symbolically."""
@@ -130,6 +160,8 @@ class WordWriter(Writer):
     # -- blocks ------------------------------------------------------------------------------------
     def write_block(self, block: Block) -> str | None:
         sections = block.sections
+        if self.rounding:
+            self.at_block = block  # where a rounding warning points
         if block.text is not None and self.copy_ok:
             if not changes_nothing(sections):
                 self.modal.apply(sections)
@@ -151,7 +183,7 @@ class WordWriter(Writer):
         if "TapeMark" in sections:
             return "%"
         text = block.text
-        if (text is not None and not self.renumber and self.leading_zero
+        if (text is not None and not self.renumber and self.leading_zero and not self.rounding
                 and "Comments" not in sections and "BlockDelete" not in sections
                 and block.canonical):
             if self.carry:
@@ -173,15 +205,17 @@ class WordWriter(Writer):
                                    self.ctx.at(block))
         canonical = self._canonical
         number = self.number
+        places = (self.mm_places if self.modal.units == "mm" else self.inch_places) if self.rounding else None
         for letter, num in block.words:
             up = _UPPER[letter]
             if up == "N" and renumber:
                 continue
             value = values.get(up)
-            if isinstance(value, float) and up in axes and (axes[up] and up in self.carry or not canonical(num)):
+            own = places is not None and up in places
+            if isinstance(value, float) and up in axes and (axes[up] and up in self.carry or own or not canonical(num)):
                 parts.append(up + self.position(up, value, axes[up]))
-            elif value.__class__ is float and not canonical(num):  # an expression keeps its text
-                parts.append(up + number(value))
+            elif value.__class__ is float and (own or not canonical(num)):  # an expression keeps its text
+                parts.append(up + (self.speed(value) if up == "S" and own else number(value, up)))
             else:
                 parts.append(up + num)
         if renumber and block.words and "ProgramStart" not in sections:
@@ -470,9 +504,9 @@ class WordWriter(Writer):
                 if axis in s.center:
                     offset = s.center[axis]
                     exact = offset if isinstance(offset, Expr) else offset + start.get(axis, 0.0)  # type: ignore[union-attr]
-                    words.append(letter + length(exact, block))  # from the written start to the exact centre
+                    words.append(letter + length(exact, block, letter))  # from the written start to the exact centre
         if s.radius is not None:
-            words.append("R" + length(s.radius, block))
+            words.append("R" + length(s.radius, block, "R"))
         return words
 
     def position(self, axis: str, value: float, incremental: bool) -> str:
@@ -481,7 +515,7 @@ class WordWriter(Writer):
         is carried), so each written position is within the output resolution of the exact one."""
         carry = self.carry
         want = value + carry.get(axis, 0.0) if incremental and carry else value
-        text = self.number(want)
+        text = self.number(want, axis)
         error = want - float(text)
         if error:
             carry[axis] = error
@@ -520,7 +554,7 @@ class WordWriter(Writer):
         if source is not None and target is not None and not source.same_letters(target):
             return words + self.cycle_role_words(s, block, source, target)
         for letter, value in s.words.items():
-            words.append(letter + (str(value) if isinstance(value, int) else self.length(value, block)))
+            words.append(letter + (str(value) if isinstance(value, int) else self.length(value, block, letter)))
         return words
 
     def target_cycle_words(self) -> CycleWords | None:
@@ -541,11 +575,12 @@ class WordWriter(Writer):
         target_repeat = target.repeat_letters(self.ctx.setup.input.repeat_address)
         for letter, value in s.words.items():
             if letter in (first, second):
-                out[letter] = self.length(value, block)
+                out[letter] = self.length(value, block, letter)
             elif letter == source.level:
-                out[target.level] = self.length(value, block)
+                out[target.level] = self.length(value, block, target.level)
             elif letter == source.bottom_letter(s.plane, normal):
-                out[target.bottom_letter(s.plane, normal)] = self.length(value, block)
+                bottom = target.bottom_letter(s.plane, normal)
+                out[bottom] = self.length(value, block, bottom)
             elif letter == source.dwell:
                 if dwell:
                     out[target.dwell] = self.cycle_dwell(s.dwell, target, block)
@@ -556,9 +591,9 @@ class WordWriter(Writer):
                     self.unsupported(f"a cycle repeat count {letter}{value} (no repeat count in "
                                      f"{self.DIALECT})", block)
             elif letter == source.peck and s.kind in PECK and target.peck:
-                out[target.peck] = self.length(value, block)
+                out[target.peck] = self.length(value, block, target.peck)
             elif letter == source.shift and s.kind in SHIFT and target.shift:
-                out[target.shift] = self.length(value, block)
+                out[target.shift] = self.length(value, block, target.shift)
             else:
                 self.unsupported(f"the cycle word {letter} (no {self.DIALECT} word has its role)", block)
         order = {c: i for i, c in enumerate(WORD_ORDER)}
@@ -584,7 +619,7 @@ class WordWriter(Writer):
             self.modal.feed = None  # known only when the program runs
             return ["F" + self.expression(value, block)]
         self.modal.feed = value
-        return ["F" + self.number(value)]
+        return ["F" + self.number(value, "F")]
 
     def spindle_mode_words(self, s: Any, block: Block) -> list[str]:
         """Constant surface speed or rpm; a control without the choice runs rpm only, so rpm needs no word."""
@@ -597,7 +632,17 @@ class WordWriter(Writer):
         rpm = s.rpm
         if isinstance(rpm, Expr):
             return ["S" + self.expression(rpm, block)]
-        return ["S" + (str(int(rpm)) if float(rpm).is_integer() else self.number(rpm))]
+        return ["S" + self.speed(rpm)]
+
+    def speed(self, rpm: float) -> str:
+        """A spindle speed: a whole number without a point, else a decimal; ``S0`` places round it to a
+        whole number."""
+        if self.rounding:
+            text = self.number(float(rpm), "S")
+            if text.endswith("."):
+                return text[:-1] or "0"
+            return text
+        return str(int(rpm)) if float(rpm).is_integer() else self.number(rpm)
 
     def tool_select_words(self, s: Any, block: Block) -> list[str]:
         return ["T" + self.whole(s.number, block)]
@@ -657,7 +702,7 @@ class WordWriter(Writer):
         if why:
             self.unsupported(f"{s.describe()}: {why}", block)
         return [*self.WORK_OFFSET_SETTING.split(), f"P{s.index}",
-                *(axis + self.number(value) for axis, value in s.values.items())]
+                *(axis + self.number(value, axis) for axis, value in s.values.items())]
 
     def machine_function_words(self, s: Any, block: Block) -> list[str]:
         """A machine-specific code as written, for a controller of its family; elsewhere it has no
@@ -675,6 +720,9 @@ class WordWriter(Writer):
         return [s.text]
 
 
+_ROUNDED_UNITS = {"S": "rpm", "A": "deg", "B": "deg", "C": "deg", "F": ""}
+"""Units a rounding warning names where they are not the program's length unit ('' for F: the length
+unit per minute or revolution)."""
 _MOTION_KIND = {"home": "home", "home2": "home"}
 _MOTION_GROUP = frozenset({"rapid", "linear", "cw", "ccw"})
 """Motion modes written with a code of the motion group (G0-G3)."""

@@ -35,6 +35,7 @@ from .checks import (
     DialectUnderTest, cross_problems, garbage_problems, generated_problems, invalid_problems, ir_xml_problems,
     read_text, round_trip_problems, targets,
 )
+from ..errors import PostprocError
 from .neutral import NeutralProgram
 from .probes import PROBES, probe_problems
 from .strategies import garbage, neutral_programs
@@ -90,7 +91,17 @@ class ConformanceTests:
 
     def test_examples_exist(self, postproc_conformance: DialectUnderTest) -> None:
         case = postproc_conformance
-        case.cls()  # an unknown dialect is an error naming the installed ones
+        dialect = case.cls()  # an unknown dialect is an error naming the installed ones
+        if dialect.READER is not None:
+            try:
+                dialect.pipeline(case.machine())
+                broken = ""
+            except PostprocError as err:
+                broken = str(err)
+            if broken:
+                pytest.fail(f"{case.name}: its reading pipeline does not load (PIPELINE_FILE = "
+                            f"{dialect.PIPELINE_FILE!r}, a file beside the module of {dialect.__name__}, "
+                            f"listing registered syntax objects):\n{broken}", pytrace=False)
         if not case.programs():
             pytest.fail(f"{case.name}: no example programs in {case.examples} "
                         f"(files ending in .nc, .ngc, .tap, ...)", pytrace=False)

@@ -159,7 +159,8 @@ def run_cli(*args: str) -> CliRun:
     from ..cli import main  # late: the cli binds postproc.api.translate when imported, which a test may wrap
 
     err = io.StringIO()
-    with contextlib.redirect_stderr(err), contextlib.redirect_stdout(io.StringIO()):
+    out = io.TextIOWrapper(io.BytesIO(), encoding="utf-8")  # ``-o -`` writes bytes to ``stdout.buffer``
+    with contextlib.redirect_stderr(err), contextlib.redirect_stdout(out):
         try:
             status = main(list(args))
         except SystemExit as exc:

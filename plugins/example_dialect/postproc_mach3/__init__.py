@@ -9,7 +9,7 @@ entry point (``pyproject.toml``). docs/plugins.md walks through it.
 The controller: Mach3's interpreter follows the NIST RS274/NGC interpreter (words, modal groups, order of
 execution: M5/M9 before the block's motion), dwell ``G4 P`` in seconds (Mach3's default; its "G04 dwell
 in ms" option is a machine setting this plugin does not model), no oriented spindle stop, an ATC through
-the M6 macro. This package writes every axis, centre and radius word with exactly four decimals
+the M6 macro, G73/G83 clearances from the machine's settings. This package writes every axis, centre and radius word with exactly four decimals
 (``X15.0000``), as many Mach3 posts do.
 """
 
@@ -56,12 +56,17 @@ class Mach3Writer(WordWriter):
         if self.left_out(s, block):
             return []
         words = self._code("home" if s.mode in ("home", "home2") else "motion", s.mode, f"{s.mode} motion", block)
-        words.extend(axis + self.fixed(value, block) for axis, value in s.axes.items())
+        if self.rounding:  # rounded by the set-up: the base's position() carries what rounding left behind
+            incremental = self.modal.distance == "incremental" and "MachineCoordinates" not in block.sections
+            words.extend(axis + (self.pad(self.position(axis, value, incremental), axis) if isinstance(value, float)
+                                 else self.fixed(value, block, axis)) for axis, value in s.axes.items())
+        else:
+            words.extend(axis + self.fixed(value, block, axis) for axis, value in s.axes.items())
         if s.center is not None:
-            words.extend(letter + self.fixed(s.center[axis], block)
+            words.extend(letter + self.fixed(s.center[axis], block, letter)
                          for axis, letter in (("X", "I"), ("Y", "J"), ("Z", "K")) if axis in s.center)
         if s.radius is not None:
-            words.append("R" + self.fixed(s.radius, block))
+            words.append("R" + self.fixed(s.radius, block, "R"))
         return words
 
     def program_start(self, s: Any, block: Block) -> str:
@@ -69,9 +74,20 @@ class Mach3Writer(WordWriter):
         name = f"O{int(s.number):04d}" if s.number is not None else str(s.name)
         return self.comment(name)
 
-    def fixed(self, value: Any, block: Block) -> str:
+    def pad(self, text: str, letter: str) -> str:
+        """A rounded number with the trailing zeros of its address's places (``X1.50`` for two)."""
+        places = (self.mm_places if self.modal.units == "mm" else self.inch_places).get(letter)
+        if places is None:
+            return text
+        return text + "0" * (places - (len(text) - text.index(".") - 1))
+
+    def fixed(self, value: Any, block: Block, letter: str) -> str:
         if isinstance(value, Expr):  # a computed word: this dialect has no expressions (PROGRAMS is False)
             self.unsupported("a computed word", block)
+        mm = self.modal.units == "mm"
+        places = (self.mm_places if mm else self.inch_places).get(letter) if self.rounding else None
+        if places is not None:  # the set-up's <Output addressDecimals>: rounded, then fixed width
+            return self.pad(self.rounded(float(value), letter, places, mm), letter)
         # at least AXIS_DECIMALS places; where that would round the value (an inch program converted,
         # a computed value), Python's shortest exact spelling of the float instead
         value = float(value)
@@ -87,15 +103,17 @@ class Mach3Writer(WordWriter):
 
 class Mach3(Dialect):
     NAME = "mach3"
-    DESCRIPTION = "Mach3/Mach4 mill (RS274/NGC words, G81 kept, 4-decimal axis words)"
+    DESCRIPTION = "Mach3/Mach4 mill (RS274/NGC words, G73/G81/G83 kept, 4-decimal axis words)"
     READER = Mach3Reader
     WRITER = Mach3Writer
     PIPELINE_FILE = "mach3.xml"
     CYCLE_WORDS = rs274_cycle_words(CODES, ("L",))
     """R level, Q peck, P dwell (seconds), L repeats."""
-    NATIVE_CYCLES = frozenset({"drill"})
-    """G81 is written as a cycle; every other cycle is expanded into plain moves. G73/G83 are read, but
-    Mach3's peck clearance is a machine setting this plugin does not know, so they are never written."""
+    NATIVE_CYCLES = frozenset({"drill", "peck_chip", "peck_deep"})
+    """G81, G73 and G83 are written as cycles; every other cycle is expanded into plain moves. The G73
+    retract and G83 clearance are machine settings (Mach4's #5114/#5115), taken from the set-up's
+    ``<Cycles peckRetract peckClearance>`` like Fanuc's parameters (``PECK_CLEARANCE_MM`` stays None): a
+    peck cycle from a control with another clearance (LinuxCNC's fixed 0.254 mm) is expanded."""
     CYCLE_SEMANTICS = "rs274"
     """The cycles move by the RS274/NGC rules (``postproc.cycles.semantics``)."""
     SPINDLE_ORIENTATION = False

@@ -12,7 +12,6 @@ run as rs274 runs them (``postproc.interp.rules``).
 
 from __future__ import annotations
 
-from copy import copy as shallow_copy
 from typing import Callable, ClassVar
 
 from postproc.dialect import Dialect
@@ -69,23 +68,14 @@ class Linuxcnc(Dialect):
     """The retract mode in force at program start (LinuxCNC's interpreter starts in G99)."""
     PECK_CLEARANCE_MM = 0.254
     """G73 retract and G83 re-approach clearance: a constant of the interpreter (0.010 in), not a
-    machine parameter, so reading LinuxCNC uses it whatever the set-up's ``Cycles`` say."""
+    machine parameter, so reading LinuxCNC uses it whatever the set-up's ``Cycles`` say, and a peck
+    cycle read with another is expanded for LinuxCNC."""
 
     @classmethod
     def context(cls, file: str, setup: MachineSetup, diagnostics: Diagnostics) -> Context:
-        ctx = super().context(file, _with_linuxcnc_clearances(setup, cls.PECK_CLEARANCE_MM), diagnostics)
+        ctx = super().context(file, setup, diagnostics)
         ctx.state.return_level = cls.START_RETURN_LEVEL
         return ctx
-
-
-def _with_linuxcnc_clearances(setup: MachineSetup, mm: float) -> MachineSetup:
-    """A copy of ``setup`` with LinuxCNC's fixed peck clearances (the caller's set-up is not changed)."""
-    cycles = setup.cycles
-    if cycles.peck_retract == mm and cycles.peck_clearance == mm:
-        return setup
-    copy = shallow_copy(setup)
-    copy.cycles = cycles.model_copy(update={"peck_retract": mm, "peck_clearance": mm})
-    return copy
 
 
 @hookimpl

@@ -138,7 +138,7 @@ class LinuxcncWriter(WordWriter):
         feed = self.modal.feed
         if (not self.inverse_time and isinstance(feed, (int, float)) and feed
                 and "Feed" not in block.sections and "Units" not in block.sections):
-            words.append("F" + self.number(feed))
+            words.append("F" + self.number(feed, "F"))
         return words
 
     def feed_words(self, s: Any, block: Block) -> list[str]:
@@ -149,7 +149,7 @@ class LinuxcncWriter(WordWriter):
         self.modal.feed = s.value
         modal = self.modal
         after, modal.units = modal.units, self.units_before
-        words = ["F" + self.number(s.value * (MM_PER_INCH if after == "inch" else 1.0 / MM_PER_INCH))]
+        words = ["F" + self.number(s.value * (MM_PER_INCH if after == "inch" else 1.0 / MM_PER_INCH), "F")]
         modal.units = after
         return words
 
