@@ -185,3 +185,15 @@ def test_a_bare_feed_code_without_feed_is_not_written_for_mach3() -> None:
     translate(io.StringIO(HEAD + "G01\n"), out, file="t.nc", source="fanuc", target="mach3")
     assert out.getvalue() == "G21 G90 G0 X0.0000 Y0.0000 Z10.0000\n(G01)\n"
     translate(io.StringIO(out.getvalue()), io.StringIO(), file="back.nc", source="mach3", target="mach3")
+
+
+def test_a_fanuc_dwell_split_from_its_move_keeps_the_spindle_start_before_it() -> None:
+    """make fuzz: LinuxCNC 'G04 M03 P500 X0.0005' (spindle, dwell, move) became Fanuc 'G04 X500.' then
+    'G00 X0.0005 M03': the dwell ran before the spindle started."""
+    program = HEAD + "G04 M03 P500 X0.0005\nM2\n"
+    out = io.StringIO()
+    translate(io.StringIO(program), out, file="t.ngc", source="linuxcnc", target="fanuc")
+    assert out.getvalue().splitlines()[1:4] == ["M03", "G04 X500.", "G00 X0.0005"]
+    report = verify_lines(io.StringIO(program), io.StringIO(out.getvalue()), file_in="a.ngc", file_out="b.nc",
+                          source="linuxcnc", target="fanuc", tolerance=0.0)
+    assert report.ok, report.summary()

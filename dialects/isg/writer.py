@@ -14,7 +14,6 @@ from __future__ import annotations
 
 from typing import Any, ClassVar
 
-from postproc.event_order import after_motion
 from postproc.control import Assign, Call, Return, SubEnd, SubStart
 from postproc.errors import UnsupportedError
 from postproc.expr import Expr
@@ -29,8 +28,8 @@ from postproc.isg_family.statements import spell_statement
 
 _WITH_DWELL = ("Dwell", "Sequence")
 """What shares an ISG dwell's block."""
-_MOVING = ("Motion", "CompoundMotion", "CannedCycle", "CycleCall", "Comments")
-"""What stays with the block's motion (its comments too)."""
+_ALONE_WITH_DWELL = frozenset((*_WITH_DWELL, "Comments", "BlockDelete"))
+"""What a dwell's block may hold without being split."""
 
 class IsgWriter(WordWriter):
     DIALECT: ClassVar[str] = "isg"
@@ -50,20 +49,9 @@ class IsgWriter(WordWriter):
         events (``postproc.event_order``): what acts before the dwell (settings, tool, spindle start, coolant
         on) in a block before it, the motion and what ends the block after it."""
         sections = block.sections
-        if "Dwell" in sections and any(k not in ("Dwell", "Sequence", "Comments") for k in sections) \
+        if "Dwell" in sections and any(k not in _ALONE_WITH_DWELL for k in sections) \
                 and "CompoundMotion" not in sections:
-            before = {k: v for k, v in sections.items()
-                      if k not in _WITH_DWELL and k not in _MOVING and not after_motion(k, v)}
-            dwell = Block(block.line, None, "\n")
-            dwell.sections = {k: v for k, v in sections.items() if k in _WITH_DWELL}
-            rest = Block(block.line, None, block.eol)
-            rest.sections = {k: v for k, v in sections.items() if k not in _WITH_DWELL and k not in before}
-            text = self.generate(dwell) + (self.generate(rest) if rest.sections else "")
-            if before:
-                first = Block(block.line, None, "\n")
-                first.sections = before
-                text = self.generate(first) + text
-            return text
+            return self.around_dwell(block, _WITH_DWELL)
         label = sections.get("Label")
         if label is not None:
             return f"[{getattr(label, 'name')}] " + super().generate(block)

@@ -39,6 +39,11 @@ SECTION_ORDER = (
 """Word order of a generated block; sections that only annotate are skipped by ``IGNORED``."""
 
 
+_STAYS_WITH_MOTION = frozenset(("Motion", "CompoundMotion", "CannedCycle", "CycleCall", "MachineCoordinates", "Feed",
+                                "Comments", "BlockDelete"))
+"""What stays on the motion's line when a block is split around its dwell (``WordWriter.around_dwell``)."""
+
+
 class WordWriter(Writer):
     """Writes blocks as address words, spelling every code from the dialect's ``CODES`` table."""
 
@@ -246,13 +251,8 @@ class WordWriter(Writer):
             return "%" + (block.eol or "\n")
         motion = sections.get("Motion")
         if "Dwell" in sections and motion is not None and self.DWELL_WORD in getattr(motion, "axes", ()):
-            # the dwell's word is also an axis of the move (Fanuc G04 X): the dwell, which acts first,
-            # goes on a line of its own
-            first = Block(block.line, None, "\n")
-            first.sections = {"Dwell": sections["Dwell"]}
-            rest = Block(block.line, None, block.eol)
-            rest.sections = {k: v for k, v in sections.items() if k != "Dwell"}
-            return self.generate(first) + self.generate(rest)
+            # the dwell's word is also an axis of the move (Fanuc G04 X): the dwell on a line of its own
+            return self.around_dwell(block, ("Dwell",))
         words: list[str] = []
         for key in SECTION_ORDER:
             section = sections.get(key)
@@ -272,6 +272,28 @@ class WordWriter(Writer):
         if not text and sections and self.BARE_FEED_MOTION_NEEDS_FEED and block.text is not None:
             text = self.comment(block.text.strip())  # every word left out: the source line as a trace
         return text + (block.eol or "\n")
+
+    def around_dwell(self, block: Block, with_dwell: tuple[str, ...]) -> str:
+        """A block whose dwell must stand on a line of its own (with ``with_dwell``), written as up to
+        three lines in the block's order of events (``postproc.event_order``): what acts before the dwell
+        (settings, tool, spindle start, coolant on), the dwell, then the motion and what ends the block.
+        A block skip goes on every line."""
+        sections = block.sections
+        skip = sections.get("BlockDelete")
+        before = {k: v for k, v in sections.items()
+                  if k not in with_dwell and k not in _STAYS_WITH_MOTION and not after_motion(k, v)}
+        lines = ({k: v for k, v in sections.items() if k in with_dwell},
+                 {k: v for k, v in sections.items() if k not in with_dwell and k not in before})
+        text = ""
+        for i, part in enumerate((before, *lines)):
+            if not part or part.keys() <= {"BlockDelete"}:
+                continue
+            if skip is not None:
+                part["BlockDelete"] = skip
+            line = Block(block.line, None, block.eol if i == 2 else "\n")
+            line.sections = part
+            text += self.generate(line)
+        return text
 
     def section_words(self, key: str, section: Section, block: Block) -> list[str]:
         if key == ASSIGN or key == CONTROL:
