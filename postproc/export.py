@@ -26,12 +26,12 @@ def export_toolpath(lines: Iterable[str], out: Any, *, file: str, dialect: str |
     elif fmt in ("svg", "png"):
         from .plugins import default_registry
         reading = default_registry().dialect(dialect) if isinstance(dialect, str) else dialect
-        plot = Backplot(start_position(setup), lathe=reading.reads_lathe(setup))
-        plot.add_all(events)
-        if fmt == "svg":
-            plot.write_svg(out)
-        else:
-            plot.write_png(out)
+        with Backplot(start_position(setup), lathe=reading.reads_lathe(setup)) as plot:
+            plot.add_all(events)
+            if fmt == "svg":
+                plot.write_svg(out)
+            else:
+                plot.write_png(out)
     else:
         raise UsageError(f"unknown toolpath format {fmt!r} (jsonl, svg or png)")
 
