@@ -5,9 +5,10 @@ X and Z line up between views); a lathe gets its ZX plane (X as a radius) and th
 Feed moves are solid in one colour per tool, rapids dashed red (a rapid into the part stands out);
 the start point and the work origin are marked; every view has ticks in mm; a legend lists the tools.
 
-Streaming-friendly: the drawing keeps one flat array of points (three doubles and one byte each) and
-a short list of tool changes, never an object per move; arcs are linearised on arrival within
-``CHORD_ERROR`` mm. Scaling needs the extent of the whole path, so the picture is written at the end.
+Flat memory: points go to a ``PointStore`` (a spill file past one chunk) as they arrive, each tagged
+with its kind of move and its tool, never an object per move; arcs are linearised on arrival within
+``CHORD_ERROR`` mm. Scaling needs the extent of the whole path, so the picture is written at the end,
+reading the points back once per view and kind of move and writing each <path> as it fills.
 """
 
 from __future__ import annotations
@@ -15,10 +16,12 @@ from __future__ import annotations
 import math
 from array import array
 from dataclasses import dataclass
-from typing import Any, BinaryIO, Callable, Iterable, Sequence, TextIO
+from types import TracebackType
+from typing import Any, BinaryIO, Callable, Iterable, Iterator, Sequence, TextIO
 
 from .canvas import Canvas, PngCanvas, Point, SvgCanvas, dashes
 from .geometry import CENTRE_KEYS, arc_points
+from .pointstore import PointStore
 
 __all__ = ["Backplot", "Frame", "Style", "dashes", "render"]
 
@@ -27,7 +30,8 @@ PATH_POINTS = 20000
 CHORD_ERROR = 0.01
 """Largest distance in mm between a drawn chord and the arc it stands for."""
 RAPID, FEED = 1, 2
-"""Point codes: the kind of the segment that ends at the point (0: the path's first point)."""
+"""Point codes: the kind of the segment that ends at the point (0: the path's first point). A point's
+tag is its code plus four times its tool's slot (the tool's place in order of first move)."""
 
 PANEL = 400
 """Each view is a square panel of this many pixels; the plot inside keeps ``MARGIN`` from its edge."""
@@ -91,7 +95,8 @@ class Style:
 
 
 class Backplot:
-    """Collects a toolpath's points and tools; ``write_svg``/``write_png`` draw them."""
+    """Collects a toolpath's points and tools; ``write_svg``/``write_png`` draw them. Close it (or use
+    it as a context manager) to remove its spill file at once rather than when it is collected."""
 
     def __init__(self, start: dict[str, float], lathe: bool = False) -> None:
         self.lathe = lathe
@@ -99,14 +104,25 @@ class Backplot:
         axis in the second view; a diameter toolpath (``x_mode``) is halved as it comes."""
         self.half = False
         self.pos = (start.get("X", 0.0), start.get("Y", 0.0), start.get("Z", 0.0))
-        self.xyz = array("d", self.pos)
-        self.codes = array("B", [0])
+        self._start = self.pos
+        self.points = PointStore()
+        self.points.append(self.pos, 0)
         self.moves = {RAPID: 0, FEED: 0}
         self.tool: int | None = None
-        self.changes: list[tuple[int, int | None]] = []
-        """(first point index, tool): the tool that drew the segments ending at that point and after."""
         self.tool_moves: dict[int | None, list[int]] = {}
         """Per tool in order of its first move: [rapids, feeds]."""
+        self.slots: dict[int | None, int] = {}
+        """Each tool's slot: its place in ``tool_moves``."""
+
+    def __enter__(self) -> "Backplot":
+        return self
+
+    def __exit__(self, kind: type[BaseException] | None, exc: BaseException | None,
+                 tb: TracebackType | None) -> None:
+        self.close()
+
+    def close(self) -> None:
+        self.points.close()
 
     # -- collecting --------------------------------------------------------------------------------
     def add_all(self, events: Iterable[dict[str, Any]]) -> None:
@@ -127,63 +143,84 @@ class Backplot:
         kind = ev.get("move")
         if kind is None:
             return
-        if not self.changes or self.changes[-1][1] != self.tool:
-            self.changes.append((len(self.codes), self.tool))
         x, y, z = self.pos
         if self.half:
             ev = {k: (v / 2.0 if k in ("x", "cx") else v) for k, v in ev.items()}
         end = (float(ev.get("x", x)), float(ev.get("y", y)), float(ev.get("z", z)))
         code = RAPID if kind == "rapid" else FEED
         self.moves[code] += 1
-        self.tool_moves.setdefault(self.tool, [0, 0])[code - 1] += 1
+        counts = self.tool_moves.get(self.tool)
+        if counts is None:
+            self.slots[self.tool] = len(self.tool_moves)
+            counts = self.tool_moves[self.tool] = [0, 0]
+        counts[code - 1] += 1
+        tag = code + 4 * self.slots[self.tool]
+        append = self.points.append
         if kind in ("cw", "ccw"):
             centre = tuple(float(ev.get(CENTRE_KEYS[a], p)) for a, p in zip("XYZ", self.pos))
             for p in arc_points(self.pos, end, centre, ev.get("plane", "XY"), kind == "cw",  # type: ignore[arg-type]
                                 CHORD_ERROR):
-                self.xyz.extend(p)
-                self.codes.append(code)
+                append(p, tag)
         else:
-            self.xyz.extend(end)
-            self.codes.append(code)
+            append(end, tag)
         self.pos = end
 
     # -- reading back ------------------------------------------------------------------------------
     def start(self) -> tuple[float, float, float]:
-        return self.xyz[0], self.xyz[1], self.xyz[2]
+        return self._start
 
     def bounds(self) -> tuple[float, float, float, float, float, float]:
-        xs, ys, zs = self.xyz[0::3], self.xyz[1::3], self.xyz[2::3]
-        return min(xs), max(xs), min(ys), max(ys), min(zs), max(zs)
+        return self.points.bounds()
+
+    def all_points(self) -> Iterator[tuple[float, float, float]]:
+        """Every drawn point in order, the start first."""
+        for xyz, _ in self.points.chunks():
+            for i in range(0, len(xyz), 3):
+                yield xyz[i], xyz[i + 1], xyz[i + 2]
+
+    def tools(self) -> list[int | None]:
+        """The tools by slot: in order of their first move."""
+        return list(self.tool_moves)
 
     def tool_colours(self) -> dict[int | None, str]:
         """Each tool's feed colour, in order of its first move."""
         return {tool: TOOL_COLOURS[i % len(TOOL_COLOURS)] for i, tool in enumerate(self.tool_moves)}
 
-    def tool_ranges(self) -> Iterable[tuple[int | None, int, int]]:
-        """(tool, first segment, end) for each stretch of the path one tool drew."""
-        ends = [n for n, _ in self.changes[1:]] + [len(self.codes)]
-        for (first, tool), end in zip(self.changes, ends):
-            yield tool, max(first, 1), end
-
-    def polylines(self, kind: int, view: Callable[[int], Point], first: int = 1,
-                  end: int | None = None) -> Iterable[list[Point]]:
-        """The connected runs of one kind of segment (those ending at points ``first``..``end`-1), in
-        pixels; a run longer than ``PATH_POINTS`` comes in pieces that continue from each other's last point."""
-        codes = self.codes
+    def polylines(self, kind: int, mapper: Callable[[array[float]], Callable[[int], Point]]
+                  ) -> Iterator[tuple[int, int, list[Point]]]:
+        """The connected runs of one kind of segment in pixels, in order, as (stretch, slot, run): a
+        stretch is a stretch of the path one tool drew (numbered from 0), and no run crosses from one to
+        the next. A run longer than ``PATH_POINTS`` comes in pieces that continue from each other's last
+        point. ``mapper`` makes the pixel function of one chunk of points (point index times three)."""
+        limit = PATH_POINTS
         run: list[Point] = []
-        for n in range(max(first, 1), len(codes) if end is None else end):
-            if codes[n] == kind:
-                if not run:
-                    run.append(view(3 * (n - 1)))
-                run.append(view(3 * n))
-                if len(run) > PATH_POINTS:
-                    yield run
-                    run = [run[-1]]
-            elif run:
-                yield run
-                run = []
+        stretch, slot = -1, -1
+        carry: Point = (0.0, 0.0)  # the previous chunk's last point, in pixels
+        for xyz, tags in self.points.chunks():
+            px = mapper(xyz)
+            for i, tag in enumerate(tags):
+                code = tag & 3
+                if code == 0:  # the start point: no segment ends here
+                    continue
+                if tag >> 2 != slot:
+                    if run:
+                        yield stretch, slot, run
+                        run = []
+                    stretch, slot = stretch + 1, tag >> 2
+                if code == kind:
+                    if not run:
+                        run.append(px(3 * (i - 1)) if i else carry)
+                    run.append(px(3 * i))
+                    if len(run) > limit:
+                        yield stretch, slot, run
+                        run = [run[-1]]
+                elif run:
+                    yield stretch, slot, run
+                    run = []
+            if tags:
+                carry = px(3 * (len(tags) - 1))
         if run:
-            yield run
+            yield stretch, slot, run
 
     def extent_text(self, scale: float) -> str:
         x0, x1, y0, y1, z0, z1 = self.bounds()
@@ -231,9 +268,9 @@ class Frame:
         v = view.top + PANEL / 2 - sign * (p[view.v] - self.centre[view.v]) * self.scale
         return h, v
 
-    def mapper(self, view: View, plot: Backplot) -> Callable[[int], Point]:
-        """Point index (into ``plot.xyz``, times three) -> pixel, for one view."""
-        xyz, scale, sign = plot.xyz, self.scale, (-1.0 if view.down else 1.0)
+    def mapper(self, view: View, xyz: array[float]) -> Callable[[int], Point]:
+        """Point index (into ``xyz``, a chunk of points, times three) -> pixel, for one view."""
+        scale, sign = self.scale, (-1.0 if view.down else 1.0)
         h0 = view.left + PANEL / 2 - self.centre[view.h] * scale
         v0 = view.top + PANEL / 2 + sign * self.centre[view.v] * scale
         hi, vi = view.h, view.v
@@ -321,27 +358,40 @@ def panel(canvas: Canvas, frame: Frame, view: View) -> None:
 
 
 def draw_path(canvas: Canvas, frame: Frame, view: View, plot: Backplot, style: Style) -> None:
-    """Rapids dashed, then feeds solid over them, one <path> per tool, kind and ``PATH_POINTS`` points."""
-    px = frame.mapper(view, plot)
+    """Rapids dashed, then feeds solid over them: one <path> per stretch of a tool, kind and
+    ``PATH_POINTS`` points, each written as soon as it is full."""
     colours = plot.tool_colours()
+    tools = plot.tools()
     for kind, cls in ((RAPID, "rapid"), (FEED, "feed")):
-        for tool, first, end in plot.tool_ranges():
-            colour = style.rapid_colour if kind == RAPID else (style.colour or colours[tool])
-            extra = {"data-tool": tool_name(tool)}
-            if style.side:
-                extra["data-side"] = style.side
-            if style.opacity < 1.0:
-                extra["opacity"] = f"{style.opacity:g}"
-            runs: list[list[Point]] = []
-            count = 0
-            for run in plot.polylines(kind, px, first, end):
-                runs.append(run)
-                count += len(run)
-                if count >= PATH_POINTS:
-                    canvas.path(runs, colour, style.width, DASH if kind == RAPID else None, cls, **extra)
+        dash = DASH if kind == RAPID else None
+        runs: list[list[Point]] = []
+        count, current = 0, -1
+        colour = ""
+        extra: dict[str, str] = {}
+        for stretch, slot, run in plot.polylines(kind, lambda xyz: frame.mapper(view, xyz)):
+            if stretch != current:
+                if runs:
+                    canvas.path(runs, colour, style.width, dash, cls, **extra)
                     runs, count = [], 0
-            if runs:
-                canvas.path(runs, colour, style.width, DASH if kind == RAPID else None, cls, **extra)
+                current, tool = stretch, tools[slot]
+                colour = style.rapid_colour if kind == RAPID else (style.colour or colours[tool])
+                extra = path_attributes(tool, style)
+            runs.append(run)
+            count += len(run)
+            if count >= PATH_POINTS:
+                canvas.path(runs, colour, style.width, dash, cls, **extra)
+                runs, count = [], 0
+        if runs:
+            canvas.path(runs, colour, style.width, dash, cls, **extra)
+
+
+def path_attributes(tool: int | None, style: Style) -> dict[str, str]:
+    extra = {"data-tool": tool_name(tool)}
+    if style.side:
+        extra["data-side"] = style.side
+    if style.opacity < 1.0:
+        extra["opacity"] = f"{style.opacity:g}"
+    return extra
 
 
 def tool_name(tool: int | None) -> str:

@@ -397,13 +397,18 @@ def cmd_verify(args: argparse.Namespace) -> int:
     target_setup = _setup(args.target_machine, args.lib) if args.target_machine else None  # the same machine
     if args.input == "-" and args.output == "-":
         raise UsageError("verify reads at most one of IN and OUT from standard input")
-    with _open_program(args.input) as a, _open_program(args.output) as b:
-        report = verify_lines(a, b, file_in=_name(args.input), file_out=_name(args.output), source=args.source,
-                              target=args.target, setup=setup, target_setup=target_setup,
-                              tolerance=args.tolerance, allow_ignored=args.allow_ignored, overlay=overlay)
-    if overlay is not None:
-        write_output(args.plot, lambda out: overlay.write(out, str(fmt), report), binary=fmt == "png",
-                     input_path=_input_path(args.input))
+    try:
+        with _open_program(args.input) as a, _open_program(args.output) as b:
+            report = verify_lines(a, b, file_in=_name(args.input), file_out=_name(args.output),
+                                  source=args.source, target=args.target, setup=setup,
+                                  target_setup=target_setup, tolerance=args.tolerance,
+                                  allow_ignored=args.allow_ignored, overlay=overlay)
+        if overlay is not None:
+            write_output(args.plot, lambda out: overlay.write(out, str(fmt), report), binary=fmt == "png",
+                         input_path=_input_path(args.input))
+    finally:
+        if overlay is not None:
+            overlay.close()
     print(report.summary())
     return 0 if report.ok else 1
 

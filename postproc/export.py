@@ -26,14 +26,20 @@ def export_toolpath(lines: Iterable[str], out: Any, *, file: str, dialect: str |
     elif fmt in ("svg", "png"):
         from .plugins import default_registry
         reading = default_registry().dialect(dialect) if isinstance(dialect, str) else dialect
-        plot = Backplot(start_position(setup), lathe=reading.reads_lathe(setup))
+        write_backplot(events, out, fmt, start_position(setup), reading.reads_lathe(setup))
+    else:
+        raise UsageError(f"unknown toolpath format {fmt!r} (jsonl, svg or png)")
+
+
+def write_backplot(events: Iterable[Event], out: Any, fmt: str, start: dict[str, float], lathe: bool) -> None:
+    """Draw a toolpath as SVG (a text stream) or PNG (a binary one), in memory that does not grow with
+    the program (the points wait in a spill file until the picture is written)."""
+    with Backplot(start, lathe=lathe) as plot:
         plot.add_all(events)
         if fmt == "svg":
             plot.write_svg(out)
         else:
             plot.write_png(out)
-    else:
-        raise UsageError(f"unknown toolpath format {fmt!r} (jsonl, svg or png)")
 
 
 def write_jsonl(events: Iterable[Event], out: TextIO, file: str = "<toolpath>") -> None:

@@ -3,7 +3,8 @@ with the largest deviation marked, so a person sees where and how far the transl
 
 The source is drawn wide and light, the translation thin and dark on top: where they agree, a dark line
 runs inside a light band; where they do not, the two separate. Both stream past ``verify`` once and
-are kept as backplots (flat arrays), so this costs memory only when a picture is asked for.
+are kept as backplots (their points in spill files), so a picture costs disk rather than memory, and
+only when one is asked for.
 """
 
 from __future__ import annotations
@@ -52,7 +53,13 @@ class Overlay:
         self.target = Backplot({})
 
     def begin(self, start_in: dict[str, float], start_out: dict[str, float], lathe: bool) -> None:
+        self.close()
         self.source, self.target = Backplot(start_in, lathe), Backplot(start_out, lathe)
+
+    def close(self) -> None:
+        """Remove both toolpaths' spill files (see ``Backplot.close``)."""
+        self.source.close()
+        self.target.close()
 
     def source_events(self, events: Iterable[dict[str, Any]]) -> Iterator[dict[str, Any]]:
         return _drawn(events, self.source)

@@ -48,7 +48,8 @@ def test_svg_paths_stay_inside_the_canvas_and_break_at_kind_changes() -> None:
 def test_arcs_are_linearised_finely() -> None:
     plot = Backplot({"X": 10.0, "Y": 0.0, "Z": 0.0})
     plot.add({"move": "ccw", "x": -10, "y": 0, "z": 0, "cx": 0, "cy": 0, "cz": 0, "plane": "XY", "f": 1})
-    xs, ys = plot.xyz[0::3], plot.xyz[1::3]
+    points = list(plot.all_points())  # the points now stream through a spill store, not a plot.xyz array
+    xs, ys = [p[0] for p in points], [p[1] for p in points]
     assert len(xs) > 36
     assert all(abs(math.hypot(x, y) - 10) < 1e-9 and y >= -1e-9 for x, y in zip(xs, ys))
 
