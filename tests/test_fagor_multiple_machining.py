@@ -181,3 +181,71 @@ def test_outside_g17_is_refused():
         multiple_machining(block, ctx, "G163", "163")
     assert str(info.value) == ("t.nc:9:1: error: G163 outside the G17 plane is not supported (which axes its X "
                                "and Y name in G18 and G19 is unverified)")
+
+
+def translated(text: str, target: str, after: tuple[str, ...] = ()) -> str:
+    """The prelude, the pattern block and ``after`` written for ``target`` through the lowering steps."""
+    import io
+
+    from postproc.lower import lower_for
+
+    registry = default_registry()
+    ctx, blocks = read_blocks([line + "\n" for line in PRELUDE], "t.nc", registry.dialect("fanuc"), MachineSetup(),
+                              Diagnostics())
+    program = list(blocks)
+    ctx.dialect = "fagor"  # the pattern block is read as a Fagor program reads it
+    words = [(m.group(1), m.group(2)) for m in re.finditer(r"([A-Z])([-+.\d]+)", text)]
+    block = Block(9, text, "\n", words)
+    multiple_machining(block, ctx, words[0][0] + words[0][1], words[0][1])
+    program.append(block)
+    for line, extra in enumerate(after, start=10):  # later blocks of the same cycle, as the cycle reads them
+        _, more = read_blocks(PRELUDE + [extra], "t.nc", registry.dialect("fanuc"), MachineSetup(), Diagnostics())
+        last = list(more)[-1]
+        last.line = line
+        program.append(last)
+    dialect = registry.dialect(target)
+    out = io.StringIO()
+    assert dialect.WRITER is not None
+    dialect.WRITER(ctx, "fanuc", dialect).write(lower_for(iter(program), ctx, dialect, "error"), out)
+    assert not ctx.diagnostics.errors, ctx.diagnostics.errors
+    return out.getvalue()
+
+
+def test_a_target_without_patterns_gets_the_modal_cycle_at_every_point():
+    out = translated("G163 X-20 K4", "fanuc")
+    assert out.endswith("G81 G98 X20. Y0. Z-5. R2. F100.\nX0. Y20.\nX-20. Y0.\nX0. Y-20.\n"), out
+
+
+def test_incremental_points_are_written_from_point_to_point():
+    # G91 in force: each repeat is the step from the previous point, (20,0) -> (0,20) -> (-20,0) -> (0,-20)
+    global PRELUDE
+    saved = PRELUDE
+    PRELUDE = saved[:-1] + ["G81 G98 X20. Y0. Z-5. R2. F100.", "G91"]
+    try:
+        out = translated("G163 X-20 K4", "fanuc")
+    finally:
+        PRELUDE = saved
+    assert out.endswith("G91\nX-20. Y20.\nX-20. Y-20.\nX20. Y-20.\n"), out
+
+
+def test_arcs_between_points_are_written_as_motion_and_so_is_the_rest_of_the_cycle():
+    out = translated("G163 X-20 K4 C3 F500 P3", "fanuc", after=("X50. Y50.",))
+    tail = out[out.index("(drill from line 9"):]
+    assert tail.splitlines() == [
+        "(drill from line 9: G163 X-20 K4 C3 F500 P3)",
+        "F500.", "G03 X0. Y20. Z50. I-20. J0.", "F100.",
+        "G00 X0. Y20. Z2.", "G01 X0. Y20. Z-5.", "G00 X0. Y20. Z50.",
+        "(drill from line 9: G163 X-20 K4 C3 F500 P3)",
+        # the arc to point 4 passes over the skipped point 3
+        "F500.", "G03 X0. Y-20. Z50. I0. J-20.", "F100.",
+        "G00 X0. Y-20. Z2.", "G01 X0. Y-20. Z-5.", "G00 X0. Y-20. Z50.",
+        # the G03 cancelled the cycle on the target: a later hole of the same cycle is motion too
+        "(drill from line 10: X50. Y50.)",
+        "G00 X50. Y50. Z50.", "G00 X50. Y50. Z2.", "G01 X50. Y50. Z-5.", "G00 X50. Y50. Z50.",
+    ], out
+
+
+def test_grbl_gets_the_motion_of_every_point():
+    out = translated("G163 X-20 K2", "grbl")
+    assert out.splitlines()[-5:] == ["(drill from line 9: G163 X-20 K2)", "G0 X-20. Y0. Z50.", "G0 X-20. Y0. Z2.",
+                                     "G1 X-20. Y0. Z-5.", "G0 X-20. Y0. Z50."], out
