@@ -55,7 +55,7 @@ def _expand(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Ite
         if not isinstance(cycle, CannedCycle):
             yield block
             continue
-        expanding = expanding or every or cycle.kind in forced or cycle.kind not in native \
+        expanding = expanding or every or cycle.expand or cycle.kind in forced or cycle.kind not in native \
             or cycle.semantics != semantics
         if not expanding:
             sections.pop("CompoundMotion", None)
