@@ -21,10 +21,13 @@ What the words mean (DIALECTS.md §2.3 and the 8070 manual page of G163, seed 00
 * P Q R S T U V: numbers of points not to machine (point 1, machined by the cycle's block, cannot be
   skipped).
 
-Refused, because the reference leaves them open [?]: G165 (the chord pattern: its words are
-unverified), ranges of skipped points (the reference says ranges exist, not how they are written, so a
-fractional point number is an error rather than a guess), negative lengths or steps along a side, and
-any pattern outside the G17 plane (which axes X and Y name in G18/G19 is not documented).
+Kept verbatim (``NativeCode``), because the reference leaves them open [?]: G165 (the chord pattern: its
+words are unverified) and ranges of skipped points (the reference says ranges exist, not how they are
+written: a fractional point number such as ``P2.005`` is not guessed at). Such a block round-trips to
+Fagor byte for byte and is refused with a located error by every other target and by the simulator
+(``toolpath``, ``verify``), as is a pattern with computed words where the program is not run.
+Refused with a located error: negative lengths or steps along a side, and any pattern outside the G17
+plane (which axes X and Y name in G18/G19 is not documented).
 The F of G163/G164 is the feed between points only: the cycle keeps its own feed.
 """
 
@@ -63,17 +66,18 @@ def multiple_machining(block: Block, ctx: Context, code: str, num: str) -> None:
     """Read the pattern ``code`` ("G160" .. "G165", written ``num``) programmed in ``block`` and resolve
     it: the block gets a ``HolePattern`` and the ``CompoundMotion`` of the active cycle at every
     machined point. The Fagor block syntax calls this instead of its word rules, so the words are read
-    here from ``block.words`` (a computed one's value is in ``block.values``). Raises a located
-    ``ProgramError`` (``UnsupportedError`` for G165) for a combination the controller or the
-    reference does not define."""
+    here from ``block.words`` (a computed one's value is in ``block.values``). G165 and skipped ranges
+    are kept verbatim (see the module docstring). Raises a located ``ProgramError`` for a combination
+    the controller or the reference does not define."""
     name = code
     at_code = ctx.at(block, ctx.column_of(block, "G", num) if block.text else 1)
     kind = CODES.get(int(code[1:]))
     if kind is None:
         raise ProgramError(f"{name} is not a multiple machining code (G160-G164)", at_code)
     if kind == "chord":
-        raise UnsupportedError(f"{name} (multiple machining along a chord) is not supported: its words are "
-                               "unverified", at_code)
+        _verbatim(block, ctx, f"{name} (multiple machining along a chord, whose words the reference leaves "
+                              "unverified)")
+        return
 
     def fail(message: str, letter: str | None = None) -> ProgramError:
         if letter is not None and letter in values:
@@ -105,7 +109,12 @@ def multiple_machining(block: Block, ctx: Context, code: str, num: str) -> None:
         except ValueError:
             raise ProgramError(f"{name} {up}{text} is not a number", ctx.at(block, ctx.column_of(block, letter)))
     if computed:
-        _computed(block, ctx, name)
+        _verbatim(block, ctx, f"{name} with computed words")
+        return
+    ranges = [letter for letter in SKIP_LETTERS if letter in values and not float(values[letter]).is_integer()]
+    if ranges:
+        _verbatim(block, ctx, f"{name} {ranges[0]}{values[ranges[0]]:g}: a range of points to skip (its notation "
+                              "is unverified)")
         return
     plane_section = block.sections.get("Plane")
     plane = getattr(plane_section, "plane", ctx.state.plane)
@@ -230,9 +239,6 @@ def _skipped(number: Callable[[str], float | None], fail: Callable[..., ProgramE
         value = number(letter)
         if value is None:
             continue
-        if not float(value).is_integer():
-            raise fail(f"{name} {letter}{value:g}: ranges of points to skip are not supported (their notation is "
-                       "unverified); name each point", letter)
         if value < 2:
             raise fail(f"{name} {letter}{value:g}: point 1 is machined by the cycle's own block and cannot be skipped",
                        letter)
@@ -254,10 +260,12 @@ def _checked(fail: Callable[..., ProgramError], name: str, make: Callable[[], Ho
         raise fail(f"{name}: {err}") from None
 
 
-def _computed(block: Block, ctx: Context, name: str) -> None:
-    """A pattern with computed words (a program kept symbolically): its points are known only when the
-    program runs, so the block travels verbatim; where the tool ends in the plane is unknown."""
-    block.add(NativeCode(ctx.dialect, f"{name} with computed words", block.text or ""))
+def _verbatim(block: Block, ctx: Context, what: str) -> None:
+    """A pattern kept as its text (``what`` names it): computed words, whose points are known only when
+    the program runs, or a construct the reference leaves unverified [?]. It round-trips to Fagor byte
+    for byte; every other target and the simulator refuse it with a located error naming ``what``.
+    Where the tool ends in the plane is unknown."""
+    block.add(NativeCode(ctx.dialect, what, block.text or ""))
     first, second, _ = PLANE_AXES[ctx.state.plane]
     ctx.state.position[first] = ctx.state.position[second] = None
 

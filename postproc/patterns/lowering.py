@@ -2,7 +2,9 @@
 every machined point.
 
 A target whose ``HOLE_PATTERNS`` holds the pattern's kind gets the block as it is (its motion dropped,
-as a native canned cycle's is). Any other target gets one block per machined point, each a repeat of
+as a native canned cycle's is), as long as it keeps the active cycle native too (``expands``: a cycle
+the set-up forces to motion, or one already written as motion, leaves no cycle for the pattern to
+repeat, so the pattern is then written point by point like any other). Any other target gets one block per machined point, each a repeat of
 the active cycle there (``CannedCycle``) with its share of the pattern's motion (``HolePattern.split``):
 ``expand_canned_cycles``, which runs next, keeps those repeats native where the target runs the cycle
 (``X.. Y..`` under the modal cycle) and writes their motion otherwise. Moves between points other than
@@ -15,6 +17,8 @@ from __future__ import annotations
 from typing import Iterator
 
 from postproc.context import Context
+from postproc.cycles.lowering import cancels, expands
+from postproc.cycles.section import CannedCycle
 from postproc.dialect import Dialect
 from postproc.errors import UnsupportedError
 from postproc.ir import Block, Comments, CompoundMotion, Motion, Section
@@ -27,15 +31,29 @@ from .section import HolePattern
 def expand_hole_patterns(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
     """Lowering transform (see the module docstring)."""
     native = target.HOLE_PATTERNS
+    expanding = False  # the target gets the active cycle as motion (``expand_canned_cycles`` decides alike)
     for block in blocks:
-        pattern = block.sections.get("HolePattern")
+        sections = block.sections
+        pattern = sections.get("HolePattern")
         if pattern is None or not isinstance(pattern, HolePattern):
+            cycle = sections.get("CannedCycle")
+            if isinstance(cycle, CannedCycle):
+                expanding = expanding or expands(cycle, ctx, target)
+            elif expanding and cancels(sections):
+                expanding = False
             yield block
-        elif pattern.kind in native:
-            block.sections.pop("CompoundMotion", None)
+        elif pattern.kind in native and not (expanding or pattern.cycle is not None
+                                             and expands(pattern.cycle, ctx, target)):
+            sections.pop("CompoundMotion", None)
             yield block
         else:
-            yield from point_by_point(block, pattern, ctx)
+            # a native pattern needs its cycle active on the target: where the cycle becomes motion,
+            # so does the pattern
+            for out in point_by_point(block, pattern, ctx):
+                here = out.sections.get("CannedCycle")
+                if isinstance(here, CannedCycle):
+                    expanding = expanding or expands(here, ctx, target)
+                yield out
 
 
 def point_by_point(block: Block, pattern: HolePattern, ctx: Context) -> Iterator[Block]:
