@@ -43,6 +43,9 @@ class Mach3Writer(WordWriter):
     """G4 P<seconds>."""
     CYCLE_CANCEL_IS_MOTION: ClassVar[bool] = True
     """G80 and G0 are one modal group (RS274/NGC): a block with a motion code leaves G80 out."""
+    BARE_FEED_MOTION_NEEDS_FEED: ClassVar[bool] = True
+    """Mach3 refuses G1/G2/G3 while no feed rate is in force (as its reader does): a bare feed motion
+    code then only sets the mode, so it is left out."""
     AXIS_DECIMALS: ClassVar[int] = 4
     """Axis, centre and radius words carry at least this many decimals (more only where fewer would
     round the value)."""
@@ -50,6 +53,9 @@ class Mach3Writer(WordWriter):
     def motion_words(self, s: Motion, block: Block) -> list[str]:
         if s.mode is None:
             self.unsupported("a canned-cycle repetition without its cycle", block)
+        if (not s.axes and s.mode in ("linear", "cw", "ccw") and "Feed" not in block.sections
+                and not self.modal.feed):
+            return []
         words = self._code("home" if s.mode in ("home", "home2") else "motion", s.mode, f"{s.mode} motion", block)
         words.extend(axis + self.fixed(value, block) for axis, value in s.axes.items())
         if s.center is not None:
