@@ -10,6 +10,7 @@ Z-5, rapid to Z50. The pattern block is line 9 of the program.
 from __future__ import annotations
 
 import io
+from pathlib import Path
 
 import pytest
 
@@ -20,6 +21,7 @@ from postproc.ir import Block, Feed, Motion
 from postproc.plugins import default_registry
 from postproc.setup import CycleSettings, MachineSetup
 from postproc.toolpath import toolpath_events
+from postproc.verify import verify_lines
 
 PRELUDE = ["%1000", "; multiple machining after a drilling cycle", "G71 G90 G17", "G00 X0 Y0 Z50", "M03 S1000",
            "; the pattern's point 1: the cycle drills X20 Y0", "; (reference plane Z2, depth I-5, back to Z50)",
@@ -305,3 +307,33 @@ def test_a_cycle_the_set_up_expands_takes_its_pattern_with_it():
     assert not any("G163" in line and not line.startswith(";") for line in lines), lines
     assert lines[-7:] == [";drill_dwell from line 9: G163 X-20 K2", "G00 X-20. Y0. Z50.", "G00 X-20. Y0. Z2.",
                           "G01 X-20. Y0. Z-5.", "G00 X-20. Y0. Z50.", "G80", "M30"]
+
+
+EXAMPLES = Path(__file__).resolve().parents[1] / "examples" / "fagor"
+
+
+@pytest.mark.parametrize("args", [
+    ("bolt_circle.nc", "fanuc/o1401_bolt_circle_points.nc", "--from", "fagor", "--to", "fanuc"),
+    ("fanuc/o1401_bolt_circle_points.nc", "bolt_circle.nc", "--from", "fanuc", "--to", "fagor"),
+])
+def test_a_fanuc_bolt_circle_hole_by_hole_verifies_against_fagor_g81_g163_both_ways(cli, args):
+    # the Fanuc file's coordinates are 40 sin 60 = 34.641016 rounded to 6 places: under 1e-6 mm off
+    first, second, *dialects = args
+    result = cli("verify", EXAMPLES / first, EXAMPLES / second, *dialects, "--tolerance", "0.000001")
+    assert result.status == 0, result.err
+    assert result.out.decode().startswith("max deviation 0.0000 mm over 24 moves (IN:7 / OUT:7): ok"), result.out
+
+
+@pytest.mark.parametrize("source, target", [("fagor", "fanuc"), ("fanuc", "fagor")])
+def test_a_bolt_circle_on_the_axes_verifies_at_exactly_zero_both_ways(tmp_path, source, target):
+    # K4 around (50, 50) from (70, 50): 90 deg steps, the points (50, 70), (30, 50), (50, 30) exactly
+    programs = {
+        "fagor": ["%1404", "G71 G90 G17", "G00 X0 Y0 Z30", "M03 S1000", "G00 X70 Y50",
+                  "G81 G98 Z2 I-10 F150", "G163 X-20 Y0 K4", "G80", "M30"],
+        "fanuc": ["O1404", "G90 G17 G21", "G00 X0 Y0 Z30.", "M03 S1000", "G00 X70. Y50.",
+                  "G98 G81 Z-10. R2. F150.", "X50. Y70.", "X30. Y50.", "X50. Y30.", "G80", "M30"],
+    }
+    report = verify_lines([line + "\n" for line in programs[source]], [line + "\n" for line in programs[target]],
+                          file_in="in.nc", file_out="out.nc", source=source, target=target, tolerance=0.0)
+    assert report.ok, report.summary()
+    assert report.max_deviation == 0.0
