@@ -57,6 +57,10 @@ for f in examples/fagor/*.nc; do
   run translate "out/$n.fanuc.nc" --from fanuc --to fagor -o "out/$n.back.fagor.nc"
   run verify "out/$n.fanuc.nc" "out/$n.back.fagor.nc" --from fanuc --to fagor
 done
+# Multiple machining: the Fagor G81 + G163 bolt circle and the same holes written one by one for Fanuc
+# make the same toolpath, checked both ways.
+run verify examples/fagor/bolt_circle.nc examples/fagor/fanuc/o1401_bolt_circle_points.nc --from fagor --to fanuc
+run verify examples/fagor/fanuc/o1401_bolt_circle_points.nc examples/fagor/bolt_circle.nc --from fanuc --to fagor
 echo
 echo "== out/prof_contour_xy.fanuc.nc: an ISG \$FOR contour kept as Custom Macro B"
 cat out/prof_contour_xy.fanuc.nc

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from typing import Callable
 
-from . import cycles
+from . import cycles, patterns
 from .block_rules import check_blocks
 from .machine_functions import drop_foreign_machine_functions
 from .program_end import comment_after_end
@@ -34,12 +34,14 @@ def postproc_register_xml(factory: XFactory) -> None:
     for cls in (Pipeline, MachineSetup, ModalStateSyntax, ProgramSyntax, LatheCycleSyntax, GeneratedText):
         cls.reg(factory)
     cycles.register(factory)
+    patterns.register(factory)
 
 
 
 @hookimpl
 def postproc_register_lowerings(register: Callable[[Lowering], None]) -> None:
     register(check_blocks)  # first: it sees every expansion before a native target's are dropped
+    register(patterns.expand_hole_patterns)  # before the cycles: it makes a repeat of the cycle per point
     register(expand_canned_cycles)
     register(expand_lathe_cycles)
     register(comment_after_end)

@@ -194,6 +194,10 @@ class Dialect:
     cycles (None: it reads no canned cycles)."""
     NATIVE_CYCLES: ClassVar[frozenset[str]] = frozenset()
     """Neutral names of the canned cycles the controller runs natively."""
+    HOLE_PATTERNS: ClassVar[frozenset[str]] = frozenset()
+    """Kinds of hole pattern (``postproc.patterns.HolePattern``: line, parallelogram, grid, circle, arc)
+    the controller runs natively, repeating its active canned cycle; a pattern of another kind is
+    written as the cycle at every point (``expand_hole_patterns``)."""
     SPINDLE_ORIENTATION: ClassVar[bool] = True
     """The controller can stop the spindle at an angle (cycles that need it are handled per the set-up's
     ``Cycles orientation`` otherwise)."""

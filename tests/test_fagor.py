@@ -191,11 +191,19 @@ def test_fagor_m19_only_on_a_machine_the_set_up_says_has_it() -> None:
     assert _translate("M19\n", "fagor", "fanuc", setup) == "M19\n"
 
 
-@pytest.mark.parametrize("code", ["G160", "G161", "G162", "G163", "G164", "G165"])
-def test_multiple_machining_goes_to_its_hook_and_is_never_dropped(code: str) -> None:
-    program = f"G71 G90\nG00 X0 Y0 Z20\nM03 S500\nG81 Z2 I-5 F100\n{code} X10 Y0 K6 P2.005\nG80\nM30\n"
+@pytest.mark.parametrize("code, error", [
+    ("G160", "5:10: error: G160 takes no Y word (its words: A X I K P Q R S T U V)"),
+    ("G161", "5:1: error: G161 needs exactly two of X (length), I (step) and K (number of points), not 1"),
+    ("G162", "5:1: error: G162 needs exactly two of X (length), I (step) and K (number of points), not 1"),
+    ("G163", "5:1: error: G163 needs the angular step I or the number of points K"),
+    ("G164", "5:1: error: G164 needs B, the angle of the arc"),
+])
+def test_multiple_machining_goes_to_its_reader_and_is_never_dropped(code: str, error: str) -> None:
+    # the words of one pattern are wrong for another: each block is refused where it is, never dropped
+    # (tests/test_fagor_multiple_machining.py reads every pattern's words)
+    program = f"G71 G90\nG00 X0 Y0 Z20\nM03 S500\nG81 Z2 I-5 F100\n{code} X10 Y0\nG80\nM30\n"
     for target in ("fagor", "fanuc"):
-        assert _errors(program, "fagor", target) == [f"in.nc:5:1: error: {code} (multiple machining) is not read yet"]
+        assert _errors(program, "fagor", target) == [f"in.nc:{error}"]
 
 
 def test_fagor_cycles_outside_the_xy_plane_are_refused() -> None:

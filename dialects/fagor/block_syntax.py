@@ -26,6 +26,7 @@ from postproc.rs274.codes import CodeTable, g_key
 
 from .codes import CODES, PATTERN_CODES
 from .cycle_words import cycle_words
+from .multiple_machining import multiple_machining
 
 
 class FagorBlockSyntax(WordBlockSyntax):
@@ -87,9 +88,8 @@ class FagorBlockSyntax(WordBlockSyntax):
 
         Called instead of the word rules for the whole block: ``block.words`` holds the raw
         ``(letter, text)`` pairs as lexed (``("P", "2.005")``), ``block.values`` any computed word
-        (an ``Expr``), ``block.text`` the line; ``ctx.state`` has the active cycle and position. It adds
-        the block's sections (or raises a located ``PostprocError``). The multiple-machining reader
-        (``multiple_machining.py``) replaces this body; until then the block is refused, never dropped.
+        (an ``Expr``), ``block.text`` the line; ``ctx.state`` has the active cycle and position. The
+        multiple-machining reader (``multiple_machining.py``) adds the block's ``HolePattern`` and its
+        motion, or raises a located ``PostprocError``.
         """
-        raise UnsupportedError(f"{code} (multiple machining) is not read yet",
-                               ctx.at(block, col_of_word(block, "G", num)))
+        multiple_machining(block, ctx, code, num)

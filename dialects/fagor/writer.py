@@ -12,8 +12,10 @@ comments, ``%name`` headers, and the hole cycles Fagor runs with its own words.
 * A dwell is ``G04 K`` in the set-up's unit (as the cycle ``K`` [?]).
 * No block skip, no oriented spindle stop and no tool length offset are written:
   their 8070 spelling is not confirmed [?] (a located error names them).
-* Multiple machining (``G160``-``G165``) sections are written by ``multiple_machining.py`` through this
-  writer's section dispatch (``TRANSFORMS`` or a ``<key>_words`` method).
+* Multiple machining: a ``HolePattern`` (kept native: ``Fagor.HOLE_PATTERNS``) read from Fagor and
+  unchanged is copied byte for byte like any block; regenerated, it is written by
+  ``multiple_machining.pattern_words`` (``G160``-``G164``, its points by step and count, skipped points
+  ``P``..``V``).
 """
 
 from __future__ import annotations
@@ -21,6 +23,7 @@ from __future__ import annotations
 from typing import Any, ClassVar
 
 from postproc.cycle_words import CycleWords
+from postproc.errors import UnsupportedError
 from postproc.expr import Expr
 from postproc.ir import Block, Motion
 from postproc.rs274.codes import CodeTable
@@ -29,6 +32,7 @@ from postproc.rs274.writer import WordWriter
 
 from .codes import CODES, CYCLE_ALIASES
 from .cycle_words import cycle_words
+from .multiple_machining import pattern_words
 
 _CANCELS = frozenset(("rapid", "linear", "cw", "ccw"))
 
@@ -70,6 +74,13 @@ class FagorWriter(WordWriter):
             words.append(target.dwell + self.cycle_dwell(seconds, target, block))
         self.dwell_in_force = seconds
         return words
+
+    def hole_pattern_words(self, s: Any, block: Block) -> list[str]:
+        """A multiple machining block from its ``HolePattern`` (the inverse of the reader's words)."""
+        try:
+            return pattern_words(s, self.number)
+        except UnsupportedError as err:
+            raise err.located(self.ctx.at(block)) from None
 
     def dwell_words(self, s: Any, block: Block) -> list[str]:
         if isinstance(s.seconds, Expr):

@@ -40,28 +40,38 @@ def expand_canned_cycles(blocks: Iterator[Block], ctx: Context, target: type[Dia
     return _expand(blocks, ctx, target)
 
 
+def expands(cycle: CannedCycle, ctx: Context, target: type[Dialect]) -> bool:
+    """True when ``target`` gets this block of ``cycle`` as motion whatever came before it (the module
+    docstring's reasons; a later block of an expanded cycle is expanded too, see ``cancels``). A hole
+    pattern that repeats the cycle asks the same question (``expand_hole_patterns``)."""
+    forced = ctx.setup.cycles.expanded()
+    if target.NAME == ctx.dialect and not forced:
+        return False
+    return "all" in forced or cycle.expand or cycle.kind in forced or cycle.kind not in target.NATIVE_CYCLES \
+        or cycle.semantics != target.CYCLE_SEMANTICS or cycle.kind in _other_clearances(ctx, target)
+
+
+def cancels(sections: dict[str, Section]) -> bool:
+    """True when a block without a cycle ends the active one (G80, or a motion code)."""
+    return "CycleCancel" in sections or getattr(sections.get("Motion"), "mode", None) in _CANCELS
+
+
 def _expand(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
     cycles = ctx.setup.cycles
-    forced = cycles.expanded()
-    every = "all" in forced
-    native = target.NATIVE_CYCLES
-    other_clearance = _other_clearances(ctx, target)
-    semantics = target.CYCLE_SEMANTICS
     can_orient = target.SPINDLE_ORIENTATION
     expanding = False  # from the first expanded block of a cycle to its cancel
     for block in blocks:
         sections = block.sections
         cycle = sections.get("CannedCycle")
         if cycle is None:
-            if expanding and ("CycleCancel" in sections or getattr(sections.get("Motion"), "mode", None) in _CANCELS):
+            if expanding and cancels(sections):
                 expanding = False
             yield block
             continue
         if not isinstance(cycle, CannedCycle):
             yield block
             continue
-        expanding = expanding or every or cycle.kind in forced or cycle.kind not in native \
-            or cycle.semantics != semantics or cycle.kind in other_clearance
+        expanding = expanding or expands(cycle, ctx, target)
         if not expanding:
             sections.pop("CompoundMotion", None)
             yield block

@@ -56,6 +56,9 @@ _DWELL_KEY = "CannedCycleResolveSyntax.P"
 _NATIVE_KEY = "CannedCycleResolveSyntax.native"
 """Set while the active cycle is one with computed words, kept verbatim."""
 """``ctx.state.extra`` key: the last cycle P, which RS274 tapping falls back on even after G80."""
+ACTIVE_KEY = "CannedCycleResolveSyntax.active"
+"""``ctx.state.extra`` key: (the last resolved ``CannedCycle``, its expansion) while the cycle is active,
+for a hole pattern that repeats it (``active_cycle``)."""
 _SHIFT_AXIS = {"+X": (1.0, 0), "-X": (-1.0, 0), "+Y": (1.0, 1), "-Y": (-1.0, 1)}
 """Set-up shift direction -> sign and plane axis (first/second), Fanuc's parameter table for G17-G19."""
 
@@ -144,6 +147,7 @@ class CannedCycleResolveSyntax(Syntax):
         block.add(NativeCode(ctx.dialect, "a canned cycle with computed words", block.text or ""))
         ctx.state.cycle = CycleState(kind)
         ctx.state.extra[_NATIVE_KEY] = kind
+        ctx.state.extra.pop(ACTIVE_KEY, None)
 
     def _resolve_or_drop(self, block: Block, ctx: Context, kind: str, call: bool) -> None:
         """Resolve; on an error the block's cycle sections go too, so later steps do not report the
@@ -239,6 +243,7 @@ class CannedCycleResolveSyntax(Syntax):
             raise too_many(err) from None
         block.add(cycle)
         block.add(CompoundMotion.lazy(kind, expand))  # expanded only for a target without the cycle
+        state.extra[ACTIVE_KEY] = (cycle, expansion)
         sections.pop("CycleCall", None)
         motion = sections.get("Motion")
         if motion is not None and motion.mode is None:  # type: ignore[attr-defined]
@@ -405,6 +410,16 @@ def _computed(block: Block) -> bool:
 def _cancel(state: ModalState) -> None:
     state.cycle = None
     state.extra.pop(_STATE_KEY, None)
+    state.extra.pop(ACTIVE_KEY, None)
+
+
+def active_cycle(state: ModalState) -> tuple[CannedCycle, CycleExpansion] | None:
+    """The active cycle as last resolved (its levels, dwell, feed, return level...) and the expansion
+    that makes its motion, or None when no cycle with numeric words is active."""
+    if state.cycle is None:
+        return None
+    active: tuple[CannedCycle, CycleExpansion] | None = state.extra.get(ACTIVE_KEY)
+    return active
 
 
 def _clearance(ctx: Context, kind: str, units: str) -> float | None:
@@ -424,7 +439,7 @@ def peck_clearance_mm(kind: str, fixed: float | None, cycles: CycleSettings) -> 
     return cycles.peck_retract if kind == "peck_chip" else cycles.peck_clearance
 
 
-_NOT_CYCLE_DATA = frozenset(("Dwell", "NativeCode", "MachineFunction", "DataSetting"))
+_NOT_CYCLE_DATA = frozenset(("Dwell", "NativeCode", "MachineFunction", "DataSetting", "HolePattern"))
 """Sections whose block's words belong to them, not to the active cycle."""
 
 

@@ -36,6 +36,7 @@ class CannedCycle(Section):
         XAttr("top", float, None), XAttr("q", float, None), XAttr("clearance", float, None),
         XAttr("dwell", float, None), XAttr("orient", float, None), XAttr("feed", float, None),
         XAttr("repeat", int, 1), XAttr("spindle", str, None), XAttr("motion", str, None),
+        XAttr("expand", bool, False),
     )
     DICTS = ("start", "position", "step", "shift", "words")
     """Child elements, one per axis dictionary; ``shift`` is None unless the cycle shifts the tool."""
@@ -48,7 +49,8 @@ class CannedCycle(Section):
                  orient: float | None = None, feed: float | None = None, repeat: int = 1,
                  spindle: str | None = None, motion: str | None = None, start: dict[str, float] | None = None,
                  position: dict[str, float] | None = None, step: dict[str, float] | None = None,
-                 shift: dict[str, float] | None = None, words: dict[str, float | int] | None = None) -> None:
+                 shift: dict[str, float] | None = None, words: dict[str, float | int] | None = None,
+                 expand: bool = False) -> None:
         self.kind = kind
         self.call = call
         self.semantics = semantics
@@ -82,6 +84,9 @@ class CannedCycle(Section):
         """Tool shift vector of G76/G87 (direction from the set-up or from I/J)."""
         self.words = words if words is not None else {}
         """The cycle words as programmed in this block (F travels as the block's Feed section)."""
+        self.expand = expand
+        """Written as its motion whatever the target runs: the block's motion reaches the hole by a move
+        that cancels the cycle on the target (a hole pattern's feed move or arc between points)."""
 
     @classmethod
     def from_xml(cls, el: etree._Element) -> "CannedCycle":

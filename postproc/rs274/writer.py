@@ -32,7 +32,7 @@ from ..dialect import Dialect, Writer
 SECTION_ORDER = (
     "BlockDelete", "Sequence", "Assign", "Control", "MachineCoordinates", "PathControl", "Plane", "Units", "DistanceMode",
     "DataSetting", "WorkOffset", "FeedMode", "SpindleMode", "CutterCompensation", "ToolLengthOffset", "ReturnLevel",
-    "CycleCancel", "Dwell", "CoordinateSet", "Motion", "CannedCycle", "LatheCycle", "Feed", "SpindleClamp",
+    "CycleCancel", "Dwell", "CoordinateSet", "Motion", "CannedCycle", "HolePattern", "LatheCycle", "Feed", "SpindleClamp",
     "SpindleSpeed", "ToolSelect", "ToolChange", "SpindleControl", "SpindleOrientation", "Coolant", "MachineFunction",
     "ProgramControl", "NativeCode", "Comments",
 )

@@ -1,0 +1,17 @@
+%1303
+; G160 line, G161 parallelogram perimeter and G162 grid, each after a drilling cycle at its first point
+G71 G90 G17
+G00 X0 Y0 Z30
+M03 S1000
+G81 G98 X10 Y10 Z2 I-5 F100
+G160 A90 X20 I10
+G80
+G81 G98 X30 Y10 Z2 I-5 F100
+G161 X20 K3 Y10 D2
+G80
+G81 G98 X10 Y40 Z2 I-5 F100
+G162 A0 B90 I10 K3 J5 D3 P5
+G80
+G00 Z30
+M05
+M30
