@@ -8,6 +8,7 @@ from . import cycles, patterns
 from .block_rules import check_blocks
 from .machine_functions import drop_foreign_machine_functions
 from .program_end import comment_after_end
+from .program_frame import frame_program
 from .control import register_control
 from .cycles.lathe_lowering import expand_lathe_cycles
 from .cycles.lowering import expand_canned_cycles
@@ -46,3 +47,4 @@ def postproc_register_lowerings(register: Callable[[Lowering], None]) -> None:
     register(expand_lathe_cycles)
     register(comment_after_end)
     register(drop_foreign_machine_functions)
+    register(frame_program)  # last: the frame goes around what the steps before made

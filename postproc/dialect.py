@@ -208,6 +208,11 @@ class Dialect:
     """Cutter radius compensation (left/right) exists (the writer refuses it otherwise)."""
     TOOL_LENGTH_OFFSET: ClassVar[bool] = True
     """Tool length offset from a table exists (the writer refuses it otherwise)."""
+    TAPE_MARKS: ClassVar[bool] = False
+    """A ``%`` line may open and close a program (Fanuc, GSK, LinuxCNC): ``<Output tapeMarks="always">``."""
+    PROGRAM_NUMBERS: ClassVar[bool] = False
+    """The dialect writes a main program's number (Fanuc/GSK ``O``, ISG/Fagor ``%``):
+    ``<Output programNumber="1001">``."""
     TOOL_CHANGER: ClassVar[bool] = True
     """An automatic tool changer exists (the writer refuses a tool change otherwise, unless the
     dialect's lowering rewrites it first)."""

@@ -90,6 +90,19 @@ class OutputSettings(SetupGroup):
     moves a value); the others follow ``decimals``. Implies normalizing."""
     inch_address_decimals: str = ""
     """The same in inch programs (places 0-7)."""
+    # -- the program's frame (``postproc.program_frame``) --
+    tape_marks: Literal["keep", "always", "never"] = "keep"
+    """``%`` lines: as the source has them, always one opening and one closing the program (a dialect
+    with ``TAPE_MARKS``), or none."""
+    program_number: Literal["keep", "none"] | int = Field("keep", union_mode="left_to_right")
+    """The main program's number: as the source has it, none, or this number (1-9999; a dialect with
+    ``PROGRAM_NUMBERS``: Fanuc/GSK ``O1001``, ISG/Fagor ``%1001``). A subprogram's number is never changed."""
+
+    @model_validator(mode="after")
+    def _program_number_valid(self) -> "OutputSettings":
+        if isinstance(self.program_number, int) and not 1 <= self.program_number <= 9999:
+            raise ValueError(f"programNumber {self.program_number} is not a program number (1-9999)")
+        return self
 
     @model_validator(mode="after")
     def _address_decimals_valid(self) -> "OutputSettings":

@@ -37,6 +37,8 @@ class Fagor(Dialect):
     NATIVE_CYCLES = frozenset({"drill", "drill_dwell", "bore_feed", "bore_dwell_feed"})
     """G81 (drilling, dwell K) and G89 (boring, dwell K, feed out) [K]; Fanuc's G81/G85 are written as them
     with no dwell. Every other cycle is expanded (Fagor's G82-G88 are other cycles or unconfirmed)."""
+    PROGRAM_NUMBERS = True
+    """``%1001`` names the main program [V: the ``%<name>`` header]."""
     HOLE_PATTERNS = frozenset({"line", "parallelogram", "grid", "circle", "arc"})
     """Multiple machining G160-G164 repeats the active cycle at a line, parallelogram, grid, circle or arc
     of points (``multiple_machining.py``): kept native between Fagor programs. G165 (chord) is not read."""

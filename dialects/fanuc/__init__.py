@@ -39,6 +39,10 @@ class Fanuc(Dialect):
     G73-G89."""
     NATIVE_CYCLES = ALL_MILLING_CYCLES
     """G73, G74, G76, G81-G89 all run natively."""
+    TAPE_MARKS = True
+    """``%`` opens and closes a program on tape or DNC."""
+    PROGRAM_NUMBERS = True
+    """``O1001``: the number the control stores the program under."""
     FAMILY = "fanuc"
     """Machine builders' codes (``machine_codes``) pass verbatim between Fanuc-family controls."""
     PROGRAMS = True

@@ -42,6 +42,10 @@ class Gsk(Dialect):
     """Tool offsets come with T (T0101), not G43 H."""
     TOOL_CHANGER = False
     """A turret indexed by T; no M06."""
+    TAPE_MARKS = True
+    """``%`` opens and closes a program, as on Fanuc."""
+    PROGRAM_NUMBERS = True
+    """``O0001``: the number the control stores the program under."""
 
 
 @hookimpl

@@ -30,6 +30,8 @@ class Isg(Dialect):
     PIPELINE_FILE = "isg.xml"
     NATIVE_CYCLES = frozenset()
     """G80-G89 are the machine builder's subroutine files, not DIN cycles: every cycle is expanded."""
+    PROGRAM_NUMBERS = True
+    """``%1001`` names the main program (``%`` is no tape mark here)."""
     SPINDLE_ORIENTATION = True
     """M19 to the machine's angle [?]."""
     CUTTER_COMPENSATION = True

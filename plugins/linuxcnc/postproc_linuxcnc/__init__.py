@@ -51,6 +51,8 @@ class Linuxcnc(Dialect):
     NATIVE_CYCLES = NATIVE
     """G73, G74, G81-G86, G89. Not G76 (threading here), G87/G88 (RS274/NGC words and motion), and
     there is no fine boring: those are expanded."""
+    TAPE_MARKS = True
+    """``%`` lines may delimit a program (RS274/NGC); there is no program number (O is an O-word)."""
     PROGRAMS = True
     """Numbered and named parameters, expressions, o-word subprograms and control flow."""
     STOPS_BEFORE_MOTION = True
