@@ -15,6 +15,7 @@ other run interleaved in rounds, a figure is the median of --runs rounds. Printe
 from __future__ import annotations
 
 import argparse
+import io
 import os
 import platform
 import sys
@@ -202,6 +203,8 @@ def parse_args() -> argparse.Namespace:
 
 def main() -> None:
     args = parse_args()
+    if isinstance(sys.stdout, io.TextIOWrapper):
+        sys.stdout.reconfigure(line_buffering=True)  # progress shows in a log file too
     args.cache.mkdir(parents=True, exist_ok=True)
     print(f"python {platform.python_version()} on {platform.machine()}, {os.cpu_count()} CPUs; every command "
           f"one process (start-up, imports and I/O included); median of {args.runs} round(s)")
