@@ -28,6 +28,9 @@ import generate  # noqa: E402
 
 FULL = {"small": 10_000, "small_blocks": 100, "loop_sample": 200, "large": 20, "large_blocks": 50_000}
 QUICK = {"small": 500, "small_blocks": 100, "loop_sample": 50, "large": 4, "large_blocks": 10_000}
+TINY = {"small": 6, "small_blocks": 100, "loop_sample": 2, "large": 2, "large_blocks": 300}
+"""Only for the harness's own test (tests/test_bench_harness.py): figures this small measure start-up."""
+SIZES = {"full": FULL, "quick": QUICK, "tiny": TINY}
 PER_FOLDER = 1000
 """Small programs are spread over folders of this many (as a program library is)."""
 
@@ -157,9 +160,12 @@ def print_tables(tables: list[tuple[str, list[Result]]], target: str) -> None:
             print(f"{'--jobs 2 / --jobs 1':<32} {'':>7} {'':>8} {'':>9} {'':>10} {one.seconds / two.seconds:>10.2f}")
 
 
-def run(quick: bool, cache: Path, target: str = "linuxcnc") -> None:
+def run(size: str, cache: Path, target: str = "linuxcnc") -> list[tuple[str, list[Result]]]:
+    """Measure and print the batch tables at `size` (full, quick or tiny); return them."""
     cache.mkdir(parents=True, exist_ok=True)
-    print_tables(measure(QUICK if quick else FULL, cache, target), target)
+    tables = measure(SIZES[size], cache, target)
+    print_tables(tables, target)
+    return tables
 
 
 def main() -> None:
@@ -169,7 +175,7 @@ def main() -> None:
                         help="where generated programs are kept between runs")
     parser.add_argument("--to", default="linuxcnc", help="target dialect (default linuxcnc)")
     args = parser.parse_args()
-    run(args.quick, args.cache, args.to)
+    run("quick" if args.quick else "full", args.cache, args.to)
 
 
 if __name__ == "__main__":

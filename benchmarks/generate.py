@@ -1,8 +1,10 @@
-"""Write a deterministic, CAM-style Fanuc milling program of exactly N blocks (lines).
+"""Write deterministic Fanuc benchmark programs: CAM-style milling of exactly N blocks (lines),
+rows of canned-cycle holes, or a parametric bolt-circle loop.
 
-Usage: python benchmarks/generate.py N OUT.nc [--seed S]
+Usage: python benchmarks/generate.py N OUT.nc [--seed S] [--kind cam|cycles|macro]
+       (cycles: N holes; macro: N holes, as circles of 100 holes)
 
-The program is streamed operation by operation (each operation is a short list of
+The CAM program is streamed operation by operation (each operation is a short list of
 blocks), so memory does not grow with N.  Numbers are written Fanuc-style: trailing
 zeros dropped but the decimal point kept (``Z0.``, ``X-12.5``), and about 1 in 80
 axis values written without a decimal point in least increments (``Y1500`` = 1.5 mm).
@@ -271,16 +273,109 @@ def write(n: int, out: TextIO, seed: int = 1234) -> None:
     out.writelines(blocks(n, seed))
 
 
+HOLES_PER_ROW = 25
+"""Holes of one canned-cycle row (one cycle block, then one X Y block per further hole)."""
+
+
+def cycle_rows(holes: int) -> Iterator[str]:
+    """Yield a Fanuc drilling program of exactly ``holes`` holes: rows alternating G81 and G83.
+
+    Each row is a cycle block at its first hole, then one ``X.. Y..`` block per hole and ``G80``;
+    a G83 row pecks Q3. from R2. to Z-12. (5 pecks a hole:
+    Z-1., -4., -7., -10., -12.).  No tool change or length offset, so every target
+    (grbl included) takes it without warnings.  The hole count is exact: the last row is shortened.
+    """
+    yield "%\n"
+    yield "O3000 (ROWS OF HOLES)\n"
+    yield "G21 G17 G40 G49 G80 G90\n"
+    yield "G54 G00 X0. Y0. S1800 M03\n"
+    yield "G00 Z10.\n"
+    row = 0
+    left = holes
+    while left > 0:
+        count = min(HOLES_PER_ROW, left)
+        y = f"{(row % 40) * 5.}"
+        for i in range(count):
+            x = f"{i * 6.35:.2f}".rstrip("0")
+            if i > 0:
+                yield f"X{x} Y{y}\n"
+            elif row % 2 == 0:
+                yield f"G99 G81 X{x} Y{y} Z-5. R2. F150.\n"
+            else:
+                yield f"G98 G83 X{x} Y{y} Z-12. R2. Q3. F120.\n"
+        yield "G80\n"
+        left -= count
+        row += 1
+    yield "G00 Z50.\n"
+    yield "M05\n"
+    yield "M30\n"
+    yield "%\n"
+
+
+MACRO_HOLES = 100
+"""Holes a bolt circle of the command line's ``--kind macro``."""
+
+
+def bolt_circles(circles: int, holes: int) -> Iterator[str]:
+    """Yield a Fanuc Custom Macro B program: ``circles`` concentric bolt circles of ``holes`` holes each,
+    drilled by two nested WHILE loops (a parametric program: nothing is written out).
+
+    Flattened, each hole is three moves (rapid over the hole, feed down, rapid up)."""
+    yield "%\n"
+    yield "O2000 (BOLT CIRCLES, NESTED WHILE)\n"
+    yield "G21 G17 G40 G80 G90\n"
+    yield "G54 G00 X0 Y0 S1800 M03\n"
+    yield "G00 Z5.\n"
+    yield f"#1={holes} (HOLES A CIRCLE)\n"
+    yield f"#2={circles} (CIRCLES)\n"
+    yield "#20=0\n"
+    yield "WHILE [#20 LT #2] DO1\n"
+    yield "#10=0\n"
+    yield "#21=10.+#20*0.5 (RADIUS)\n"
+    yield "WHILE [#10 LT #1] DO2\n"
+    yield "#11=#10*360./#1+#20\n"
+    yield "G00 X[60.+#21*COS[#11]] Y[40.+#21*SIN[#11]]\n"
+    yield "G01 Z-3. F200.\n"
+    yield "G00 Z5.\n"
+    yield "#10=#10+1\n"
+    yield "END2\n"
+    yield "#20=#20+1\n"
+    yield "END1\n"
+    yield "G00 Z50.\n"
+    yield "M05\n"
+    yield "M30\n"
+    yield "%\n"
+
+
+def bolt_circle_executed(circles: int, holes: int) -> int:
+    """Program lines the interpreter runs for :func:`bolt_circles` (its interpreted blocks).
+
+    Counted from the program text: 6 straight lines before the outer loop (the G-code and ``#`` lines,
+    not ``%`` nor the O line), per circle the outer WHILE test, ``#10=0``, the radius, per hole the 7
+    lines from the inner WHILE test to END2, the inner test that ends the loop, ``#20=#20+1`` and END1;
+    then the outer test that ends the loop and the 3 closing lines."""
+    per_circle = 3 + holes * 7 + 1 + 2
+    return 6 + circles * per_circle + 1 + 3
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("n", type=int, help="number of blocks (lines)")
     parser.add_argument("out", help="output .nc file")
     parser.add_argument("--seed", type=int, default=1234)
+    parser.add_argument("--kind", choices=("cam", "cycles", "macro"), default="cam")
     args = parser.parse_args()
-    if args.n < MIN_BLOCKS:
+    if args.kind == "cam" and args.n < MIN_BLOCKS:
         parser.error(f"N must be at least {MIN_BLOCKS}")
+    if args.kind != "cam" and args.n < 1:
+        parser.error("N must be at least 1")
     with open(args.out, "w", encoding="ascii", newline="\n") as out:
-        write(args.n, out, args.seed)
+        if args.kind == "cycles":
+            out.writelines(cycle_rows(args.n))
+        elif args.kind == "macro":
+            out.writelines(bolt_circles(-(-args.n // MACRO_HOLES), MACRO_HOLES))
+        else:
+            write(args.n, out, args.seed)
 
 
 if __name__ == "__main__":

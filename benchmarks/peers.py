@@ -1,9 +1,11 @@
 """Parse-only runs of peer G-code libraries, one tool per process.
 
-Usage: python benchmarks/peers.py TOOL FILE      TOOL: gcode-lib | gcodeparser | pygcode
+Usage: python benchmarks/peers.py TOOL FILE...   TOOL: gcode-lib | gcode-lib-state | gcodeparser | pygcode
 
-Each function streams FILE through the peer's parser and touches every parsed line
-and word, so that lazy parsers really parse.  Prints one JSON line
+Each function streams each FILE through the peer's parser and touches every parsed line
+and word, so that lazy parsers really parse.  ``gcode-lib-state`` also tracks the modal
+state and tool position line by line: the peer of ``postproc toolpath`` (and, over two
+files, of ``postproc verify``).  Prints one JSON line
 ``{"tool": .., "items": .., "seconds": ..}`` (seconds: the parse alone); exits 3 when the peer is
 not installed.
 """
@@ -33,6 +35,23 @@ def parse_gcode_lib(path: str) -> int:
             items += len(parsed.command) > 0
             for _letter, value in parsed.words.items():
                 items += value is not None
+    return items
+
+
+def track_gcode_lib(path: str) -> int:
+    """gcode-lib: ``parse_line`` then ``advance_state`` per line (G90/G91, G92, G0-G3 end points, F).
+
+    Its position tracking needs a G word on the line: a modal ``X.. Y..`` block does not move its
+    state, and arcs update only their end point, so it does less than a simulator.
+    """
+    from gcode_lib import ModalState, advance_state, parse_line
+
+    state = ModalState()
+    items = 0
+    with open(path, encoding="ascii") as fh:
+        for raw in fh:
+            advance_state(state, parse_line(raw))
+            items += state.x is not None
     return items
 
 
@@ -69,9 +88,13 @@ def parse_pygcode(path: str) -> int:
 
 TOOLS: dict[str, tuple[str, Callable[[str], int]]] = {
     "gcode-lib": ("gcode_lib", parse_gcode_lib),
+    "gcode-lib-state": ("gcode_lib", track_gcode_lib),
     "gcodeparser": ("gcodeparser", parse_gcodeparser),
     "pygcode": ("pygcode", parse_pygcode),
 }
+
+PARSERS = ("gcode-lib", "gcodeparser", "pygcode")
+"""The parse-only peers of translate."""
 
 PARTIAL = frozenset({"gcodeparser"})  # skips blocks: its figures are not a full parse
 
@@ -87,10 +110,10 @@ def fanuc_decimals_copy(src: str, dst: str) -> None:
 
 
 def main(argv: list[str]) -> int:
-    if len(argv) != 2 or argv[0] not in TOOLS:
+    if len(argv) < 2 or argv[0] not in TOOLS:
         print(__doc__.splitlines()[2], file=sys.stderr)
         return 2
-    tool, path = argv
+    tool, paths = argv[0], argv[1:]
     module, parse = TOOLS[tool]
     try:
         __import__(module)
@@ -98,7 +121,7 @@ def main(argv: list[str]) -> int:
         print(f"{tool}: not installed", file=sys.stderr)
         return NOT_INSTALLED
     start = time.perf_counter()
-    items = parse(path)
+    items = sum(parse(path) for path in paths)
     seconds = time.perf_counter() - start
     print(json.dumps({"tool": tool, "items": items, "seconds": seconds}))
     return 0

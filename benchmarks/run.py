@@ -1,107 +1,78 @@
-"""Throughput and peak memory of ``postproc translate`` against peers and a plain loop.
+"""``make bench``: postproc against peers and baselines measured in the same run, as ratios, with the
+targets of issue 13 marked PASS/MISS.
 
-Usage: python benchmarks/run.py [--sizes 100000 1000000] [--cache DIR] [--pygcode-max N] [--batch full|quick|skip]
+Usage: python benchmarks/run.py [--quick] [--sizes N ...] [--runs R] [--holes H] [--macro-holes H]
+                                [--cache DIR] [--pygcode-max N] [--batch full|quick|tiny|skip]
 
-Every measured program runs in its own process; its wall time and peak RSS come from
-os.wait4 in a minimal launcher.  Figures are printed, never asserted.
+Rows: translate fanuc->fanuc/grbl/linuxcnc against gcode-lib's parse and a plain streaming loop, toolpath
+and verify against gcode-lib's position tracking, peak memory and its growth with program length (at each
+of --sizes); canned-cycle holes/s and a parametric loop's interpreted blocks/s against the plain loop over
+their output; start-up against a bare interpreter; batch files/s (benchmarks/batch.py). Every measured
+command is its own process (wall time, CPU and peak RSS from os.wait4); commands compared with each
+other run interleaved in rounds, a figure is the median of --runs rounds. Printed, never asserted.
+``--quick``: small sizes and one round, for development. What each row means: docs/benchmarks.md.
 """
 from __future__ import annotations
 
 import argparse
-import hashlib
+import io
 import os
 import platform
-import subprocess
 import sys
 import tempfile
-from dataclasses import dataclass, field
 from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
-ROOT = HERE.parent
 sys.path.insert(0, str(HERE))
 
+import batch  # noqa: E402
 import generate  # noqa: E402
-from peers import NOT_INSTALLED, PARTIAL, TOOLS, fanuc_decimals_copy  # noqa: E402
+import workloads  # noqa: E402
+from peers import PARSERS, PARTIAL, fanuc_decimals_copy  # noqa: E402
+from summary import Line, Target, at_least_x, print_summary  # noqa: E402
+from timing import Runs, paired_ratio, rate, rounds  # noqa: E402
+from workloads import PLAIN, PY, at_least_lines, cached, prepare, translate  # noqa: E402
 
-OURS = "postproc"
-PLAIN = "plain loop"
-TARGET_PEER, TARGET_PLAIN, TARGET_RSS_MB, TARGET_RSS_BLOCKS = 1.5, 0.8, 64.0, 1_000_000
-
-
-@dataclass
-class Row:
-    """One measured (or extrapolated, or failed) tool at one program size."""
-
-    tool: str
-    blocks: int
-    seconds: float | None = None
-    cpu: float | None = None
-    rss_mb: float | None = None
-    notes: list[str] = field(default_factory=list)
-
-    @property
-    def rate(self) -> float | None:
-        return self.blocks / self.seconds if self.seconds else None
+PEERS = [PY, str(HERE / "peers.py")]
+RSS_TARGET_MB = 64.0
+FLAT_TARGET = 1.10
+"""Peak RSS at the largest size over the smallest: "flat" allows 10 % for ten times the blocks."""
+TRANSLATE_TARGETS = {"fanuc": 1.5, "grbl": 1.0, "linuxcnc": 1.0}
+"""Target dialect -> the issue's target for translate, as a multiple of gcode-lib's parse."""
+PLAIN_TARGET = 0.8
 
 
-# Peak RSS must come from a process that is not run.py's own child: a child's ru_maxrss
-# starts at its parent's high-water mark (the kernel keeps it across fork/vfork + exec).
-# So a bare interpreter (-S, about 8 MB) spawns the tool and reports wait4's figures.
-SPAWN = """import os, sys, time
-start = time.perf_counter()
-pid = os.posix_spawnp(sys.argv[2], sys.argv[2:], os.environ)
-_, status, usage = os.wait4(pid, 0)
-seconds = time.perf_counter() - start
-with open(sys.argv[1], "w") as out:
-    cpu = usage.ru_utime + usage.ru_stime
-    out.write(f"{os.waitstatus_to_exitcode(status)} {seconds} {cpu} {usage.ru_maxrss}")
-"""
+def translate_label(target: str) -> str:
+    extra = {"fanuc": " --normalize", "grbl": " (warn)"}.get(target, "")
+    return f"translate fanuc->{target}{extra}"
 
 
-def run_once(cmd: list[str]) -> tuple[int, float, float, float, str]:
-    """Run cmd in its own process: (exit code, wall s, CPU s, peak RSS MB, stderr tail)."""
-    with tempfile.TemporaryDirectory() as tmp:
-        result, err = Path(tmp, "result"), Path(tmp, "stderr")
-        with open(err, "wb") as err_file:
-            subprocess.run([sys.executable, "-S", "-c", SPAWN, str(result), *cmd], cwd=ROOT,
-                           stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL,
-                           stderr=err_file, check=True)
-        code, seconds, cpu, rss_kb = result.read_text().split()
-        lines = err.read_text(errors="replace").strip().splitlines()
-    tail = lines[-1].removeprefix(f"{cmd[0]}: ") if lines else ""
-    return int(code), float(seconds), float(cpu), int(rss_kb) / 1024, tail
+def translate_options(target: str) -> list[str]:
+    """fanuc->fanuc normalizes (the plain loop's work); grbl warns at the generated program's
+    ``G43 H..`` (a table offset grbl cannot express: about one block in 10,000)."""
+    return {"fanuc": ["--normalize"], "grbl": ["--on-unsupported", "warn"]}.get(target, [])
 
 
-def measure(tool: str, cmd: list[str], blocks: int, repeats: int) -> Row:
-    """The run with the best wall time of `repeats` runs; peak RSS is the largest seen."""
-    row = Row(tool, blocks)
-    for _ in range(repeats):
-        code, seconds, cpu, rss_mb, err = run_once(cmd)
-        if (code == NOT_INSTALLED and tool in TOOLS) or err.endswith(f"No module named {OURS}"):
-            return Row(tool, blocks, notes=["not installed"])
-        if code != 0:
-            return Row(tool, blocks, notes=[f"failed (exit {code}): {err[:90]}"])
-        if row.seconds is None or seconds < row.seconds:
-            row.seconds, row.cpu = seconds, cpu
-        row.rss_mb = max(row.rss_mb or 0.0, rss_mb)
-    if repeats > 1:
-        row.notes.append(f"best of {repeats}")
-    return row
-
-
-def program(blocks: int, cache: Path) -> Path:
-    """The cached generated program of `blocks` blocks (regenerated when generate.py changes)."""
-    digest = hashlib.sha1(Path(generate.__file__).read_bytes()).hexdigest()[:10]
-    path = cache / f"fanuc-{blocks}-{digest}.nc"
-    if not path.exists():
-        for stale in cache.glob(f"fanuc-{blocks}-*.nc"):  # from an older generate.py
-            stale.unlink()
-        tmp = path.with_suffix(".tmp")
-        with open(tmp, "w", encoding="ascii", newline="\n") as out:
-            generate.write(blocks, out)
-        tmp.replace(path)
-    return path
+def size_commands(blocks: int, src: Path, work: Path, pygcode_max: int) -> dict[str, list[str]]:
+    """Every command measured at one program size, in the order a round runs them."""
+    prepared = work / "verify-input.ngc"
+    commands: dict[str, list[str]] = {}
+    for tool in PARSERS:
+        if tool == "pygcode" and blocks > pygcode_max:
+            continue
+        path = gcodeparser_copy(src) if tool == "gcodeparser" else src
+        commands[tool] = [*PEERS, tool, str(path)]
+    commands["plain loop"] = [*PLAIN, str(src), str(work / "plain.out")]
+    for target in TRANSLATE_TARGETS:
+        commands[translate_label(target)] = translate(src, work / f"out.{target}", "fanuc", target,
+                                                      *translate_options(target))
+    commands["gcode-lib-state"] = [*PEERS, "gcode-lib-state", str(src)]
+    commands["toolpath --format jsonl"] = [*workloads.postproc(), "toolpath", str(src), "--dialect", "fanuc",
+                                           "--format", "jsonl", "-o", str(work / "toolpath.jsonl")]
+    commands["gcode-lib-state x 2 files"] = [*PEERS, "gcode-lib-state", str(src), str(prepared)]
+    commands["verify fanuc / linuxcnc"] = [*workloads.postproc(), "verify", str(src), str(prepared),
+                                           "--from", "fanuc", "--to", "linuxcnc"]
+    return commands
 
 
 def gcodeparser_copy(src: Path) -> Path:
@@ -112,117 +83,150 @@ def gcodeparser_copy(src: Path) -> Path:
     return path
 
 
-def bench_size(blocks: int, cache: Path, work: Path, pygcode_max: int,
-               pygcode_rows: dict[int, Row]) -> list[Row]:
-    """All rows for one program size."""
-    src = program(blocks, cache)
-    repeats = 2 if blocks < 1_000_000 else 1
-    py = sys.executable
-    rows = []
-    for tool in TOOLS:
-        if tool == "pygcode" and blocks > pygcode_max:
-            rows.append(extrapolate(pygcode_rows, blocks))
-            continue
-        path = gcodeparser_copy(src) if tool == "gcodeparser" else src
-        row = measure(tool, [py, str(HERE / "peers.py"), tool, str(path)], blocks, repeats)
-        if tool == "gcodeparser" and row.seconds:
-            row.notes.append("Z0.->Z0.0 copy, drops modal blocks")
-        if tool == "pygcode":
-            pygcode_rows[blocks] = row
-        rows.append(row)
-    out = work / "out.nc"
-    rows.append(measure(PLAIN, [py, str(HERE / "plainloop.py"), str(src), str(out)],
-                        blocks, repeats))
-    rows.append(measure(OURS, [py, "-m", "postproc", "translate", str(src), "-o", str(out),
-                               "--from", "fanuc", "--to", "fanuc", "--normalize"],
-                        blocks, repeats))
-    out.unlink(missing_ok=True)
-    return rows
-
-
-def extrapolate(measured: dict[int, Row], blocks: int) -> Row:
-    """pygcode at `blocks`, scaled by blocks/s from its largest measured size."""
-    usable = [row for row in measured.values() if row.rate]
-    if not usable:
-        notes = next(iter(measured.values())).notes if measured else ["not measured"]
-        return Row("pygcode", blocks, notes=notes)
-    base = max(usable, key=lambda row: row.blocks)
-    scale = blocks / base.blocks
-    return Row("pygcode", blocks, base.seconds * scale, base.cpu * scale, base.rss_mb,
-               [f"extrapolated from {base.blocks} blocks (blocks/s and RSS)"])
+def bench_size(blocks: int, cache: Path, work: Path, runs: int, pygcode_max: int) -> dict[str, Runs]:
+    """Measure every command at one size (the input of verify is prepared first, untimed)."""
+    src = cached(cache, f"fanuc-{blocks}", lambda: generate.blocks(blocks))
+    note = prepare(translate(src, work / "verify-input.ngc", "fanuc", "linuxcnc"))
+    if note:
+        print(f"preparing verify's input failed: {note}")
+    outputs = {translate_label(t): (work / f"out.{t}", blocks - 2) for t in TRANSLATE_TARGETS}
+    results = rounds(size_commands(blocks, src, work, pygcode_max), runs, at_least_lines(outputs))
+    gcode_lib, plain = results.get("gcode-lib"), results["plain loop"]
+    print(f"\n{blocks:,}-block CAM program (units = its blocks; x gcode-lib and x plain loop: paired ratios)")
+    print(f"{'command':<34} {'seconds':>8} {'cpu s':>6} {'blocks/s':>10} {'x gcode-lib':>11} "
+          f"{'x plain loop':>12} {'peak RSS MB':>11}  note")
+    for label, entry in results.items():
+        vs_lib = paired_ratio(entry, gcode_lib) if gcode_lib else None
+        note = entry.note or ("drops modal blocks (Z0.->Z0.0 copy)" if label in PARTIAL else "")
+        print(f"{label:<34} {fmt(entry.seconds, '.2f'):>8} {fmt(entry.cpu, '.2f'):>6} "
+              f"{fmt(rate(entry, blocks), ',.0f'):>10} {fmt(vs_lib, '.2f'):>11} "
+              f"{fmt(paired_ratio(entry, plain), '.2f'):>12} {fmt(entry.rss_mb, '.1f'):>11}  {note}")
+    if blocks > pygcode_max:
+        print(f"(pygcode not run above --pygcode-max {pygcode_max:,} blocks: it is the slowest peer)")
+    return results
 
 
 def fmt(value: float | None, spec: str) -> str:
     return "-" if value is None else format(value, spec)
 
 
-def print_table(rows: list[Row]) -> None:
-    """Print one size's rows with ratios against the fastest peer and the plain loop."""
-    peers = [row for row in rows if row.tool in TOOLS and row.rate]
-    fastest = max(peers, key=lambda row: row.rate) if peers else None
-    plain = next((row for row in rows if row.tool == PLAIN and row.rate), None)
-    print(f"{'tool':<12} {'blocks':>9} {'seconds':>8} {'cpu s':>6} {'blocks/s':>10} "
-          f"{'x fastest peer':>14} {'x plain loop':>12} {'peak RSS MB':>11}  note")
-    for row in rows:
-        vs_peer = row.rate / fastest.rate if row.rate and fastest else None
-        vs_plain = row.rate / plain.rate if row.rate and plain else None
-        print(f"{row.tool:<12} {row.blocks:>9} {fmt(row.seconds, '.2f'):>8} "
-              f"{fmt(row.cpu, '.2f'):>6} {fmt(row.rate, ',.0f'):>10} {fmt(vs_peer, '.2f'):>14} "
-              f"{fmt(vs_plain, '.2f'):>12} {fmt(row.rss_mb, '.1f'):>11}  {'; '.join(row.notes)}")
-    full = [row for row in peers if row.tool not in PARTIAL]
-    fastest_full = max(full, key=lambda row: row.rate) if full else None
-    ours = next(row for row in rows if row.tool == OURS)
-    print_targets(ours, fastest, fastest_full, plain)
+def translate_lines(blocks: int, results: dict[str, Runs]) -> list[Line]:
+    """Throughput lines of one size: translate x3 against gcode-lib (and the plain loop), toolpath, verify."""
+    size = f"{blocks:,} blocks"
+    lib = results.get("gcode-lib") or Runs("gcode-lib", [], note="not run")
+    plain = results["plain loop"]
+    lines = []
+    for target, times_lib in TRANSLATE_TARGETS.items():
+        ours = results[translate_label(target)]
+        lines.append(Line(translate_label(target), size, rate(ours, blocks), "blocks/s", "gcode-lib parse",
+                          paired_ratio(ours, lib), at_least_x(times_lib), ours.note or lib.note))
+        if target == "fanuc":
+            lines.append(Line(translate_label(target), size, rate(ours, blocks), "blocks/s",
+                              "plain loop", paired_ratio(ours, plain), at_least_x(PLAIN_TARGET),
+                              ours.note or plain.note))
+    for label, peer in (("toolpath --format jsonl", "gcode-lib-state"),
+                        ("verify fanuc / linuxcnc", "gcode-lib-state x 2 files")):
+        ours, base = results[label], results[peer]
+        lines.append(Line(label, size, rate(ours, blocks), "blocks/s", f"{peer} (position only)",
+                          paired_ratio(ours, base), None, ours.note or base.note))
+    return lines
 
 
-def verdict(value: float | None, ok: bool) -> str:
-    return "n/a" if value is None else ("PASS" if ok else "MISS")
+def memory_lines(blocks: int, results: dict[str, Runs]) -> list[Line]:
+    """Peak RSS of each postproc command at one size, against gcode-lib's parse (x = ours / its)."""
+    lib = results.get("gcode-lib")
+    lines = []
+    for label in [translate_label(t) for t in TRANSLATE_TARGETS] + ["toolpath --format jsonl",
+                                                                     "verify fanuc / linuxcnc"]:
+        ours = results[label]
+        ratio = ours.rss_mb / lib.rss_mb if ours.rss_mb and lib and lib.rss_mb else None
+        target = Target("figure", "<", RSS_TARGET_MB, "< 64 MB") if label.startswith("translate") else None
+        lines.append(Line(f"peak RSS {label}", f"{blocks:,} blocks", ours.rss_mb, "MB",
+                          "gcode-lib parse's peak RSS", ratio, target, ours.note))
+    return lines
 
 
-def print_targets(ours: Row, fastest: Row | None, fastest_full: Row | None,
-                  plain: Row | None) -> None:
-    """The issue's targets for translate, as PASS/MISS (never asserted)."""
-    vs_peer = ours.rate / fastest.rate if ours.rate and fastest else None
-    vs_plain = ours.rate / plain.rate if ours.rate and plain else None
-    name = fastest.tool if fastest else "none"
-    print(f"targets for {OURS} at {ours.blocks} blocks:")
-    print(f"  translate >= {TARGET_PEER}x fastest peer parse ({name}): "
-          f"{fmt(vs_peer, '.2f')}x  {verdict(vs_peer, (vs_peer or 0) >= TARGET_PEER)}")
-    if fastest_full is not None and fastest_full is not fastest and ours.rate:
-        print(f"    (info: {ours.rate / fastest_full.rate:.2f}x the fastest peer that parses "
-              f"every block, {fastest_full.tool})")
-    print(f"  translate >= {TARGET_PLAIN}x plain loop: "
-          f"{fmt(vs_plain, '.2f')}x  {verdict(vs_plain, (vs_plain or 0) >= TARGET_PLAIN)}")
-    if ours.blocks >= TARGET_RSS_BLOCKS:
-        rss = ours.rss_mb
-        print(f"  peak RSS < {TARGET_RSS_MB:.0f} MB at {TARGET_RSS_BLOCKS} blocks: "
-              f"{fmt(rss, '.1f')} MB  {verdict(rss, (rss or 1e9) < TARGET_RSS_MB)}")
+def flat_lines(by_size: dict[int, dict[str, Runs]]) -> list[Line]:
+    """Growth of peak RSS from the smallest to the largest size (needs two sizes)."""
+    small, large = min(by_size), max(by_size)
+    if small == large:
+        return []
+    lines = []
+    for label in [translate_label(t) for t in TRANSLATE_TARGETS] + ["toolpath --format jsonl"]:
+        low, high = by_size[small][label].rss_mb, by_size[large][label].rss_mb
+        growth = high - low if low and high else None
+        lines.append(Line(f"RSS growth {label}", f"{small:,}->{large:,}", growth, "MB",
+                          f"itself at {small:,} blocks", high / low if low and high else None,
+                          Target("ratio", "<=", FLAT_TARGET, f"<= {FLAT_TARGET:g}x (flat)")))
+    return lines
+
+
+def batch_lines(tables: list[tuple[str, list[batch.Result]]]) -> list[Line]:
+    """Batch files/s (small programs) and blocks/s (large ones) against one command per file."""
+    lines = []
+    for (title, rows), (unit, attr) in zip(tables, (("files/s", "files_per_s"), ("blocks/s", "blocks_per_s"))):
+        base = rows[0]
+        for row in rows[1:]:
+            ratio = row.files_per_s / base.files_per_s if row.files_per_s and base.files_per_s else None
+            lines.append(Line(row.name, title.split(" of ")[0], getattr(row, attr), unit,
+                              "one command per file", ratio, None, row.note or "one run"))
+    return lines
+
+
+def parse_args() -> argparse.Namespace:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--quick", action="store_true",
+                        help="small sizes and one round, for development (explicit options still win)")
+    parser.add_argument("--sizes", type=int, nargs="+", help="CAM program sizes (default 100000 1000000)")
+    parser.add_argument("--runs", type=int, help="rounds; each figure is their median (default 3)")
+    parser.add_argument("--holes", type=int, help="holes of the canned-cycle program (default 100000)")
+    parser.add_argument("--macro-holes", type=int, help="holes of the parametric program (default 20000)")
+    parser.add_argument("--cache", type=Path, default=Path(tempfile.gettempdir()) / "postproc-bench",
+                        help="where generated programs are kept between runs")
+    parser.add_argument("--pygcode-max", type=int, default=100_000,
+                        help="pygcode (the slowest peer) runs only up to this size")
+    parser.add_argument("--batch", choices=("full", "quick", "tiny", "skip"),
+                        help="batch files/s and blocks/s (benchmarks/batch.py): full, quick, tiny (the "
+                             "harness's test) or none")
+    args = parser.parse_args()
+    quick = args.quick
+    defaults = {"sizes": [2_000] if quick else [100_000, 1_000_000], "runs": 1 if quick else 3,
+                "holes": 2_000 if quick else 100_000, "macro_holes": 1_000 if quick else 20_000,
+                "batch": "quick" if quick else "full"}
+    for name, value in defaults.items():
+        if getattr(args, name) is None:
+            setattr(args, name, value)
+    if min(args.sizes) < generate.MIN_BLOCKS or args.runs < 1 or args.holes < 1 or args.macro_holes < 1:
+        parser.error(f"sizes need at least {generate.MIN_BLOCKS} blocks; runs, holes at least 1")
+    return args
 
 
 def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--sizes", type=int, nargs="+", default=[100_000, 1_000_000])
-    parser.add_argument("--cache", type=Path,
-                        default=Path(tempfile.gettempdir()) / "postproc-bench",
-                        help="where generated programs are kept between runs")
-    parser.add_argument("--pygcode-max", type=int, default=100_000,
-                        help="larger sizes extrapolate pygcode from its largest measured size")
-    parser.add_argument("--batch", choices=("full", "quick", "skip"), default="full",
-                        help="batch files/s and blocks/s (benchmarks/batch.py): full size, --quick size, or none")
-    args = parser.parse_args()
+    args = parse_args()
+    if isinstance(sys.stdout, io.TextIOWrapper):
+        sys.stdout.reconfigure(line_buffering=True)  # progress shows in a log file too
     args.cache.mkdir(parents=True, exist_ok=True)
-    print(f"python {platform.python_version()} on {platform.machine()}, {os.cpu_count()} CPUs; "
-          "seconds = wall time of one process per tool (start-up, imports and I/O included), "
-          "blocks/s from it; cpu s = user+sys of that process")
-    pygcode_rows: dict[int, Row] = {}
-    with tempfile.TemporaryDirectory() as work:
-        for blocks in sorted(args.sizes):
-            print()
-            print_table(bench_size(blocks, args.cache, Path(work), args.pygcode_max, pygcode_rows))
+    print(f"python {platform.python_version()} on {platform.machine()}, {os.cpu_count()} CPUs; every command "
+          f"one process (start-up, imports and I/O included); median of {args.runs} round(s)")
+    throughput: list[Line] = []
+    memory: list[Line] = []
+    by_size: dict[int, dict[str, Runs]] = {}
+    with tempfile.TemporaryDirectory() as tmp:
+        work = Path(tmp)
+        for blocks in sorted(set(args.sizes)):
+            by_size[blocks] = bench_size(blocks, args.cache, work, args.runs, args.pygcode_max)
+            throughput += translate_lines(blocks, by_size[blocks])
+            memory += memory_lines(blocks, by_size[blocks])
+        memory += flat_lines(by_size)
+        cycles = workloads.cycles(args.holes, args.cache, work, args.runs)
+        macro = workloads.macro(args.macro_holes, args.cache, work, args.runs)
+        startup = workloads.startup(work, args.runs)
+    batched: list[Line] = []
     if args.batch != "skip":
-        import batch
         print()
-        batch.run(args.batch == "quick", args.cache)
+        batched = batch_lines(batch.run(args.batch, args.cache))
+    print()
+    print_summary(throughput + cycles + macro + startup + memory + batched, args.runs)
 
 
 if __name__ == "__main__":

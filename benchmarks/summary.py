@@ -1,0 +1,71 @@
+"""The summary table of ``make bench``: one line per figure, its ratio to a peer or baseline
+measured in the same run, and the issue's target for it marked PASS or MISS (printed, never asserted).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+
+@dataclass(frozen=True)
+class Target:
+    """A bound on a line's figure or on its ratio: ``>= 1.5x``, ``< 120 ms``."""
+
+    on: str  # "figure" or "ratio"
+    op: str  # ">=" or "<" or "<="
+    value: float
+    text: str
+
+    def verdict(self, figure: float | None, ratio: float | None) -> str:
+        value = figure if self.on == "figure" else ratio
+        if value is None:
+            return "n/a"
+        ok = {">=": value >= self.value, "<": value < self.value, "<=": value <= self.value}[self.op]
+        return "PASS" if ok else "MISS"
+
+
+def at_least_x(value: float) -> Target:
+    return Target("ratio", ">=", value, f">= {value:g}x")
+
+
+@dataclass
+class Line:
+    """One figure of the summary."""
+
+    what: str
+    size: str
+    figure: float | None
+    unit: str
+    baseline: str
+    ratio: float | None
+    target: Target | None = None
+    note: str = ""
+
+    @property
+    def verdict(self) -> str:
+        return self.target.verdict(self.figure, self.ratio) if self.target else ""
+
+
+def fmt(value: float | None, spec: str) -> str:
+    return "-" if value is None else format(value, spec)
+
+
+def figure_text(line: Line) -> str:
+    spec = ",.1f" if line.unit in ("ms", "MB", "files/s") or (line.figure or 0) < 100 else ",.0f"
+    return f"{fmt(line.figure, spec)} {line.unit}"
+
+
+def print_summary(lines: list[Line], runs: int) -> None:
+    """Print the summary table and a count of PASS / MISS."""
+    print(f"summary: each figure the median of {runs} run(s); x = the median of paired ratios "
+          "(this row's rate / the baseline's rate, round by round); PASS/MISS against the issue's target")
+    head = (f"{'row':<44} {'size':<18} {'figure':>18} {'baseline':<40} {'x':>6} "
+            f"{'target':<16} {'':<4}  note")
+    print(head)
+    print("-" * len(head))
+    for line in lines:
+        print(f"{line.what:<44} {line.size:<18} {figure_text(line):>18} {line.baseline:<40} "
+              f"{fmt(line.ratio, '.2f'):>6} {line.target.text if line.target else '-':<16} "
+              f"{line.verdict:<4}  {line.note}")
+    verdicts = [line.verdict for line in lines if line.target]
+    print(f"targets: {verdicts.count('PASS')} PASS, {verdicts.count('MISS')} MISS, "
+          f"{verdicts.count('n/a')} not measured")
