@@ -28,8 +28,6 @@ import re
 from pathlib import PurePath
 from typing import TYPE_CHECKING, Any, ClassVar, Iterable, Iterator
 
-from jinja2 import TemplateSyntaxError, meta
-
 from .errors import ConfigError, Diagnostics, ErrorLevel, Location, PostprocError, UsageError
 from .ir import Block, Section
 from .state import ModalState
@@ -97,17 +95,21 @@ def today() -> str:
 def setup_values(ctx_setup: Any) -> dict[str, Any]:
     """The set-up as templates see it, by its XML spelling: ``setup.name``, ``setup.Cycles.peckRetract``."""
     from .setup import GROUPS
+    from .setup_record import values as record_values
     values: dict[str, Any] = {"name": ctx_setup.name, "dialect": ctx_setup.dialect}
     for group in GROUPS:
         attr = {"Input": "input", "Output": "output", "Cycles": "cycles", "Machine": "machine", "Limits": "limits",
                 "Controller": "controller", "LatheCycles": "lathe_cycles"}.get(group.TAG)
         if attr is not None and hasattr(ctx_setup, attr):
-            values[group.TAG] = getattr(ctx_setup, attr).model_dump(by_alias=True)
+            values[group.TAG] = record_values(getattr(ctx_setup, attr), by_alias=True)
     return values
 
 
 def names_used(text: str) -> frozenset[str]:
-    """The free names a template reads (jinja2 parses it; nothing runs)."""
+    """The free names a template reads (jinja2 parses it; nothing runs; imported here, only where a set-up
+    has templates)."""
+    from jinja2 import TemplateSyntaxError, meta
+
     from .templates import _ENV
     try:
         return frozenset(meta.find_undeclared_variables(_ENV.parse(text)))

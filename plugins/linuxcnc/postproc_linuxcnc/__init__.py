@@ -13,6 +13,7 @@ run as rs274 runs them (``postproc.interp.rules``).
 from __future__ import annotations
 
 from copy import copy as shallow_copy
+from dataclasses import replace
 from typing import Callable, ClassVar
 
 from postproc.dialect import Dialect
@@ -84,7 +85,7 @@ def _with_linuxcnc_clearances(setup: MachineSetup, mm: float) -> MachineSetup:
     if cycles.peck_retract == mm and cycles.peck_clearance == mm:
         return setup
     copy = shallow_copy(setup)
-    copy.cycles = cycles.model_copy(update={"peck_retract": mm, "peck_clearance": mm})
+    copy.cycles = replace(cycles, peck_retract=mm, peck_clearance=mm)
     return copy
 
 
