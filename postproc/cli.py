@@ -5,7 +5,6 @@ from __future__ import annotations
 import argparse
 import contextlib
 import io
-import json
 import math
 import os
 import signal
@@ -429,6 +428,7 @@ def cmd_dialects(args: argparse.Namespace) -> int:
     from .dialect_table import dialect_info, render_table
     info = dialect_info(default_registry().dialects)
     if args.format == "json":
+        import json
         print(json.dumps(info, indent=2))
     else:
         sys.stdout.write(render_table(info))

@@ -20,7 +20,6 @@ whole program: only when a template names it is the block stream buffered, other
 from __future__ import annotations
 
 import copy
-import datetime
 import io
 import keyword
 import os
@@ -86,6 +85,7 @@ def parse_defines(items: Iterable[str]) -> dict[str, str]:
 
 def today() -> str:
     """The date templates see: ``SOURCE_DATE_EPOCH`` (reproducible builds) if set, else today (UTC)."""
+    import datetime  # here: a translation without templates never asks the date
     epoch = os.environ.get("SOURCE_DATE_EPOCH")
     if epoch is not None and epoch.strip().isdigit():
         return datetime.datetime.fromtimestamp(int(epoch), datetime.timezone.utc).date().isoformat()
@@ -134,7 +134,7 @@ class Sequences:
         self.base: dict[str, Any] = {
             "program": PurePath(ctx.file).stem, "source_file": ctx.file, "source_dialect": source_dialect,
             "target_dialect": target.NAME if target is not None else source_dialect, "machine": setup.name,
-            "date": today(), "setup": setup_values(setup)}
+            "date": today() if self.texts else "", "setup": setup_values(setup)}
         self.base.update(defines or {})
         self.tools: list[dict[str, Any]] | None = None
         self.state = ModalState()
