@@ -10,19 +10,19 @@ answer is used only while the key is the same. A key is not trusted (nothing is 
 on ``sys.meta_path`` other than a path finder supplies distributions, or while the newest time in it is less than
 ``SETTLE`` seconds old (a file system with coarse times, an installation still under way).
 
-The cache is one JSON file per interpreter in the user's cache folder; a cache that cannot be read or
-written is ignored (discovery runs as before). ``POSTPROC_NO_ENTRY_POINT_CACHE=1`` turns it off.
+The cache is one small text file per interpreter and group in the user's cache folder: its version, the
+key as Python writes it (``repr``: compared, never evaluated), then one ``name=value`` line per entry
+point (entry_points.txt is itself line-based). A cache that cannot be read or written is ignored
+(discovery runs as before). ``POSTPROC_NO_ENTRY_POINT_CACHE=1`` turns it off.
 """
 
 from __future__ import annotations
 
-import functools
-import hashlib
 import importlib
-import json
 import os
 import sys
 import time
+import zlib
 from pathlib import Path
 from typing import Any
 
@@ -42,13 +42,14 @@ def entry_points(group: str, cache_dir: Path | None = None, settle: float = SETT
     if os.environ.get("POSTPROC_NO_ENTRY_POINT_CACHE") == "1" or not _standard_finders():
         return discover(group)
     key, newest = installation_key()
-    path = (cache_dir or _cache_dir()) / f"entry-points-{_interpreter_id()}-{group}.json"
+    head = f"postproc entry points {VERSION}\n{key!r}\n"
+    path = (cache_dir or _cache_dir()) / f"entry-points-{_interpreter_id()}-{group}.txt"
     cached = _read(path)
-    if cached is not None and cached.get("version") == VERSION and cached.get("key") == key:
-        return [(str(name), str(value)) for name, value in cached["entry_points"]]
+    if cached is not None and cached.startswith(head):
+        return [(name, value) for name, _, value in (line.partition("=") for line in cached[len(head):].splitlines())]
     found = discover(group)
-    if newest < time.time() - settle:
-        _write(path, {"version": VERSION, "key": key, "entry_points": found})
+    if newest < time.time() - settle and all("\n" not in n + v and "=" not in n for n, v in found):
+        _write(path, head + "".join(f"{name}={value}\n" for name, value in found))
     return found
 
 
@@ -70,7 +71,7 @@ def load(value: str) -> Any:
 
 def installation_key() -> tuple[list[Any], float]:
     """What discovery reads, as JSON-able data, and the newest modification time in it (seconds)."""
-    key: list[Any] = [sys.executable, sys.version, sys.path]
+    key: list[Any] = [sys.executable, sys.prefix, sys.version, sys.path]
     newest = 0.0
     for entry in sys.path:
         folder = entry or "."
@@ -112,9 +113,9 @@ def _standard_finders() -> bool:
                or type(finder).__module__.partition(".")[0] == "importlib_metadata" for finder in sys.meta_path)
 
 
-@functools.cache
 def _interpreter_id() -> str:
-    return hashlib.sha256(f"{sys.executable}\0{sys.prefix}".encode()).hexdigest()[:16]
+    """A short name for the interpreter (two that share it only take turns: the key tells them apart)."""
+    return format(zlib.crc32(f"{sys.executable}\0{sys.prefix}".encode()), "08x")
 
 
 def _cache_dir() -> Path:
@@ -122,20 +123,19 @@ def _cache_dir() -> Path:
     return Path(base) / "postproc"
 
 
-def _read(path: Path) -> dict[str, Any] | None:
+def _read(path: Path) -> str | None:
     try:
-        data = json.loads(path.read_text(encoding="utf-8"))
+        return path.read_text(encoding="utf-8")
     except (OSError, ValueError):
         return None
-    return data if isinstance(data, dict) else None
 
 
-def _write(path: Path, data: dict[str, Any]) -> None:
+def _write(path: Path, data: str) -> None:
     """Written whole or not at all (a temporary file renamed), so a parallel run never reads half."""
     tmp = path.with_name(f".{path.name}.{os.getpid()}")
     try:
         path.parent.mkdir(parents=True, exist_ok=True)
-        tmp.write_text(json.dumps(data), encoding="utf-8")
+        tmp.write_text(data, encoding="utf-8")
         os.replace(tmp, path)
     except OSError:
         try:

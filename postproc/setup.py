@@ -12,14 +12,17 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any, ClassVar, Literal
+from typing import TYPE_CHECKING, Any, ClassVar, Literal
 
 from lxml import etree
+
 from .errors import ConfigError
-from .setup_machine import MAX_COORDINATE, AxisTravel, ToolData, WorkOffsetData, entry_values
-from .setup_record import SetupGroup, camel, pydantic_config, setting, values
+from .setup_record import MAX_COORDINATE, SetupGroup, camel, pydantic_config, setting, values
 from .setup_record import aliases as field_aliases
 from .xmlio import XFactory, XmlNode, where
+
+if TYPE_CHECKING:  # the machine's geometry is imported where a set-up file has some (postproc.setup_load)
+    from .setup_machine import AxisTravel, ToolData, WorkOffsetData
 
 __all__ = ["SetupGroup", "setting", "values"]  # the plugin API: a plugin's group is a SetupGroup
 
@@ -390,6 +393,7 @@ class MachineSetup(XmlNode):
                 child = etree.SubElement(el, group.TAG)
                 for key, value in written.items():
                     child.set(key, _attr_text(value))
+        from .setup_machine import entry_values
         for container, entries in (("Axes", self.travel), ("WorkOffsets", self.work_offsets),
                                    ("Tools", self.tools)):
             mine = None if own is None else own.entries.get(container)

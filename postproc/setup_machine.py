@@ -12,11 +12,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any, ClassVar, Literal
 
-from .setup_record import pydantic_config, setting, values
+from .setup_record import MAX_COORDINATE, pydantic_config, setting, values
 
-MAX_COORDINATE = 100_000.0
-"""Largest magnitude of a travel limit, home, offset or tool length (100 m or 100,000 degrees): no machine
-comes near it, and an absurd value (``1e308``) is refused at its line rather than overflowing a sum."""
+__all__ = ["MAX_COORDINATE", "AxisTravel", "WorkOffsetData", "ToolData", "CONTAINERS", "entry_values"]
 
 ROTARY_AXES = frozenset("ABC")
 AXIS_LETTERS = "XYZABCUVW"

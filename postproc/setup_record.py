@@ -15,6 +15,12 @@ import dataclasses
 from typing import Any, Callable, ClassVar, dataclass_transform
 
 
+MAX_COORDINATE = 100_000.0
+"""Largest magnitude of a travel limit, home, offset, tool length or start position (100 m or 100,000
+degrees): no machine comes near it, and an absurd value (``1e308``) is refused at its line rather than
+overflowing a sum."""
+
+
 def camel(name: str) -> str:
     """``peck_retract`` -> ``peckRetract``: the XML spelling of a set-up group's field."""
     head, *rest = name.split("_")

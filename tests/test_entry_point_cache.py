@@ -58,7 +58,7 @@ def test_a_cached_answer_is_used_while_nothing_changes(site: Path, tmp_path: Pat
     assert ep.entry_points(GROUP, cache_dir=cache, settle=-1) == [("a", "json")]
     (written,) = cache.iterdir()
     # the cache is what answers now: a planted answer under the same key comes back
-    written.write_text(written.read_text().replace('"json"', '"planted"'))
+    written.write_text(written.read_text().replace("a=json", "a=planted"))
     assert ep.entry_points(GROUP, cache_dir=cache, settle=-1) == [("a", "planted")]
 
 
@@ -108,7 +108,7 @@ def test_a_broken_cache_file_is_ignored(site: Path, tmp_path: Path) -> None:
     cache = tmp_path / "cache"
     ep.entry_points(GROUP, cache_dir=cache, settle=-1)
     (written,) = cache.iterdir()
-    written.write_text("{not json")
+    written.write_text("{not a cache")
     assert ep.entry_points(GROUP, cache_dir=cache, settle=-1) == [("a", "json")]
 
 

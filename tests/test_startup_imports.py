@@ -9,6 +9,7 @@ import json
 import os
 import subprocess
 import sys
+import time
 from pathlib import Path
 
 import pytest
@@ -28,8 +29,15 @@ NEVER_BY_DEFAULT = ("pydantic", "pydantic_core", "annotated_types", "jinja2", "d
 
 def modules_after(tmp_path: Path, *args: str) -> set[str]:
     out = tmp_path / "modules.json"
+    cwd = tmp_path / "cwd"  # on sys.path (python -c): kept unchanged and old, so the entry-point cache settles
+    if not cwd.exists():
+        cwd.mkdir()
+        past = time.time() - 60
+        os.utime(cwd, (past, past))
     env = dict(os.environ, HOME=str(tmp_path), MODULES_OUT=str(out), ARGS=json.dumps(list(args)))
-    done = subprocess.run([sys.executable, "-c", PROBE], cwd=tmp_path, env=env, capture_output=True, text=True,
+    env.pop("POSTPROC_NO_ENTRY_POINT_CACHE", None)
+    env.pop("XDG_CACHE_HOME", None)
+    done = subprocess.run([sys.executable, "-c", PROBE], cwd=cwd, env=env, capture_output=True, text=True,
                           timeout=120)
     assert done.returncode == 0, done.stderr
     return set(json.loads(out.read_text()))
@@ -50,6 +58,18 @@ def test_a_one_line_translation_loads_nothing_it_does_not_use(tmp_path: Path, on
     modules = modules_after(tmp_path, "translate", str(one_line), "--from", "fanuc", "--to", "linuxcnc")
     assert "postproc.api" in modules and "postproc_linuxcnc.writer" in modules  # the probe saw the run
     assert [name for name in NEVER_BY_DEFAULT if loaded(modules, name)] == []
+
+
+def test_a_second_run_finds_the_plugins_without_importlib_metadata(tmp_path: Path, one_line: Path) -> None:
+    """The first run discovers the entry points (importlib.metadata) and remembers them in its HOME's
+    cache; the next run reads them from there. (A distribution installed into this interpreter's
+    environment less than two seconds before the first run would rightly keep it from caching.)"""
+    args = ("translate", str(one_line), "--from", "fanuc", "--to", "linuxcnc")
+    assert loaded(modules_after(tmp_path, *args), "importlib.metadata")
+    assert (tmp_path / ".cache" / "postproc").is_dir()
+    second = modules_after(tmp_path, *args)
+    assert [name for name in ("importlib.metadata", "email") if loaded(second, name)] == []
+    assert "postproc_linuxcnc.writer" in second
 
 
 def test_listing_the_dialects_loads_nothing_it_does_not_use(tmp_path: Path) -> None:
