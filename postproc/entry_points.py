@@ -1,6 +1,6 @@
 """The installed plugins' entry points, remembered between runs while the installation is unchanged.
 
-Finding them (``importlib.metadata``) costs a one-line translation an eighth of its start-up: importing
+Finding them (``importlib.metadata``) costs a one-line translation a seventh of its start-up: importing
 it pulls in the email package, then every distribution's metadata folder is listed and read. What that
 discovery reads is cheap to observe: the interpreter, ``sys.path``, and in each folder on it the
 folder's modification time and the times and sizes of every ``*.dist-info``/``*.egg-info`` folder and
