@@ -5,7 +5,6 @@ from __future__ import annotations
 import argparse
 import contextlib
 import io
-import json
 import math
 import os
 import signal
@@ -331,7 +330,7 @@ def cmd_translate(args: argparse.Namespace) -> int:
     renumber = _renumber(args.renumber)
     if (args.tolerance is not None or args.allow_ignored) and not args.verify:
         raise UsageError("--tolerance and --allow-ignored go with --verify")
-    from .batch.command import is_batch
+    from .batch import is_batch
     if is_batch(args):
         from .batch.command import run_batch
         if args.tolerance is None:
@@ -360,15 +359,15 @@ def _renumber(text: str | None) -> tuple[int, int | None] | None:
     """``--renumber START[,STEP]`` as numbers (a usage error otherwise; the set-up checks their range)."""
     if not text:
         return None
+    from .setup import OutputSettings
+    from .setup_validate import Invalid, validate
     start, _, step = text.partition(",")
     try:
         numbers = int(start), int(step) if step else None
-        scratch = MachineSetup().output  # the set-up's own bounds (a ValueError when outside them)
-        scratch.renumber_start = numbers[0]
-        if numbers[1] is not None:
-            scratch.renumber_step = numbers[1]
+        given = {"renumber_start": numbers[0]} | ({} if numbers[1] is None else {"renumber_step": numbers[1]})
+        validate(OutputSettings, given)  # the set-up's own bounds
         return numbers
-    except ValueError:
+    except (ValueError, Invalid):
         raise UsageError(f"--renumber takes START[,STEP], got {text!r}") from None
 
 
@@ -434,6 +433,7 @@ def cmd_dialects(args: argparse.Namespace) -> int:
     from .dialect_table import dialect_info, render_table
     info = dialect_info(default_registry().dialects)
     if args.format == "json":
+        import json
         print(json.dumps(info, indent=2))
     else:
         sys.stdout.write(render_table(info))

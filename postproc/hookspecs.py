@@ -43,7 +43,8 @@ def postproc_register_lowerings(register: Callable[["Lowering"], None]) -> None:
 @hookspec
 def postproc_register_setup_groups(register: Callable[[type["SetupGroup"]], None]) -> None:
     """Register set-up groups by calling ``register(GroupClass)`` once per group: a subclass of
-    ``postproc.setup.SetupGroup`` (pydantic, camelCase attributes) whose ``TAG`` names its element. A set-up
+    ``postproc.setup.SetupGroup`` (a dataclass: fields with defaults, bounds by ``postproc.setup.setting``,
+    camelCase attributes) whose ``TAG`` names its element. A set-up
     may then hold ``<TAG attr="..."/>``, validated, located in every error, inherited through ``extends``
     and written back by ``config dump``; the plugin reads it with ``setup.group(GroupClass)``. A tag the
     core or another plugin already uses is an error."""

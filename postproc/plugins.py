@@ -13,6 +13,8 @@ import pluggy
 from . import hookspecs
 from .control import register_control
 from .dialect import Dialect
+from .entry_points import entry_points as installed_entry_points
+from .entry_points import load as load_entry_point
 from .errors import UsageError
 from .expr import register_expressions
 from .ir import register_sections
@@ -80,7 +82,11 @@ def make_plugin_manager(extra: Iterable[object] = (), entry_points: bool = True)
     from . import core_plugin
     pm.register(core_plugin, name="postproc.core")
     if entry_points:
-        pm.load_setuptools_entrypoints(PROJECT)
+        # pluggy's load_setuptools_entrypoints, with the discovery remembered between runs
+        # (postproc.entry_points); the same order, and the first plugin of a name wins as there
+        for name, value in installed_entry_points(PROJECT):
+            if not (pm.has_plugin(name) or pm.is_blocked(name)):
+                pm.register(load_entry_point(value), name=name)
     for plugin in extra:
         pm.register(plugin)
     pm.check_pending()

@@ -20,15 +20,12 @@ whole program: only when a template names it is the block stream buffered, other
 from __future__ import annotations
 
 import copy
-import datetime
 import io
 import keyword
 import os
 import re
 from pathlib import PurePath
 from typing import TYPE_CHECKING, Any, ClassVar, Iterable, Iterator
-
-from jinja2 import TemplateSyntaxError, meta
 
 from .errors import ConfigError, Diagnostics, ErrorLevel, Location, PostprocError, UsageError
 from .ir import Block, Section
@@ -89,6 +86,7 @@ def parse_defines(items: Iterable[str]) -> dict[str, str]:
 
 def today() -> str:
     """The date templates see: ``SOURCE_DATE_EPOCH`` (reproducible builds) if set, else today (UTC)."""
+    import datetime  # here: a translation without templates never asks the date
     epoch = os.environ.get("SOURCE_DATE_EPOCH")
     if epoch is not None and epoch.strip().isdigit():
         return datetime.datetime.fromtimestamp(int(epoch), datetime.timezone.utc).date().isoformat()
@@ -98,17 +96,21 @@ def today() -> str:
 def setup_values(ctx_setup: Any) -> dict[str, Any]:
     """The set-up as templates see it, by its XML spelling: ``setup.name``, ``setup.Cycles.peckRetract``."""
     from .setup import GROUPS
+    from .setup_record import values as record_values
     values: dict[str, Any] = {"name": ctx_setup.name, "dialect": ctx_setup.dialect}
     for group in GROUPS:
         attr = {"Input": "input", "Output": "output", "Cycles": "cycles", "Machine": "machine", "Limits": "limits",
                 "Controller": "controller", "LatheCycles": "lathe_cycles"}.get(group.TAG)
         if attr is not None and hasattr(ctx_setup, attr):
-            values[group.TAG] = getattr(ctx_setup, attr).model_dump(by_alias=True)
+            values[group.TAG] = record_values(getattr(ctx_setup, attr), by_alias=True)
     return values
 
 
 def names_used(text: str) -> frozenset[str]:
-    """The free names a template reads (jinja2 parses it; nothing runs)."""
+    """The free names a template reads (jinja2 parses it; nothing runs; imported here, only where a set-up
+    has templates)."""
+    from jinja2 import TemplateSyntaxError, meta
+
     from .templates import _ENV
     try:
         return frozenset(meta.find_undeclared_variables(_ENV.parse(text)))
@@ -133,7 +135,7 @@ class Sequences:
         self.base: dict[str, Any] = {
             "program": PurePath(ctx.file).stem, "source_file": ctx.file, "source_dialect": source_dialect,
             "target_dialect": target.NAME if target is not None else source_dialect, "machine": setup.name,
-            "date": today(), "setup": setup_values(setup)}
+            "date": today() if self.texts else "", "setup": setup_values(setup)}
         self.base.update(defines or {})
         self.tools: list[dict[str, Any]] | None = None
         self.state = ModalState()

@@ -1,37 +1,30 @@
-"""Machine set-up: the parameters of one controller installation, validated by pydantic, kept as XML.
+"""Machine set-up: the parameters of one controller installation, kept as XML.
 
 A set-up file groups parameters in elements (``<Input>``, ``<Output>``, ``<Cycles>``, ``<Templates>``);
-attributes use the camelCase aliases of the pydantic fields. Loading validates at this boundary (with
-the element's line in every message); the per-block path then reads plain attributes.
+attributes use the camelCase aliases of the fields. The groups are plain dataclasses
+(``postproc.setup_record``): loading validates them at this boundary with pydantic (with the element's
+line in every message, ``postproc.setup_validate``); a run without a set-up file builds the defaults and
+never imports it. The per-block path reads plain attributes.
 ``config dump`` writes a loaded set-up back in canonical form, byte-identical for canonical files.
 """
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from pathlib import Path
-from typing import Any, ClassVar, Literal
+from typing import TYPE_CHECKING, Any, ClassVar, Literal
 
 from lxml import etree
-from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator
 
 from .errors import ConfigError
-from .setup_machine import MAX_COORDINATE, AxisTravel, ToolData, WorkOffsetData, entry_values
+from .setup_record import MAX_COORDINATE, SetupGroup, camel, pydantic_config, setting, values
+from .setup_record import aliases as field_aliases
 from .xmlio import XFactory, XmlNode, where
 
+if TYPE_CHECKING:  # the machine's geometry is imported where a set-up file has some (postproc.setup_load)
+    from .setup_machine import AxisTravel, ToolData, WorkOffsetData
 
-def _camel(name: str) -> str:
-    head, *rest = name.split("_")
-    return head + "".join(p.title() for p in rest)
-
-
-class SetupGroup(BaseModel):
-    """A group of parameters stored as the attributes of one element. Plugins add their own groups
-    (a subclass with its ``TAG``) through the ``postproc_register_setup_groups`` hook."""
-
-    model_config = ConfigDict(alias_generator=_camel, populate_by_name=True, extra="forbid",
-                              validate_assignment=True, frozen=False, allow_inf_nan=False)
-    """``allow_inf_nan=False``: every float parameter is finite (``nan``/``inf`` are errors)."""
-    TAG: ClassVar[str] = ""
+__all__ = ["SetupGroup", "setting", "values"]  # the plugin API: a plugin's group is a SetupGroup
 
 
 class InputSettings(SetupGroup):
@@ -65,23 +58,23 @@ class OutputSettings(SetupGroup):
     TAG = "Output"
     normalize: bool = False
     """Write every block from its words with explicit decimal points instead of copying it."""
-    decimals: int = Field(3, ge=0, le=6)
-    inch_decimals: int = Field(4, ge=0, le=7)
-    renumber_start: int = Field(0, ge=0)
+    decimals: int = setting(3, ge=0, le=6)
+    inch_decimals: int = setting(4, ge=0, le=7)
+    renumber_start: int = setting(0, ge=0)
     """0 keeps the block numbers as written; otherwise renumber from this value."""
-    renumber_step: int = Field(10, ge=1)
+    renumber_step: int = setting(10, ge=1)
     leading_zero: bool = True
     """Write 0.5 rather than .5."""
     # -- line formatting (``postproc.line_format``) --
     block_numbers: Literal["keep", "all", "tool-changes", "none"] = "keep"
     """Which lines get a block number: as written, every line with words, only tool changes, none."""
-    number_max: int = Field(99999, ge=1, le=99_999_999)
+    number_max: int = setting(99999, ge=1, le=99_999_999)
     """The largest block number; the next wraps to ``renumberStart`` (Fanuc 0i, LinuxCNC: five digits)."""
     case: Literal["keep", "upper", "lower"] = "keep"
     """Letter case outside comments (lower only where the target's reader accepts it: ``LOWER_CASE``)."""
     line_ending: Literal["keep", "lf", "crlf"] = "keep"
     """Every line's ending (keep: as read; generated lines LF)."""
-    max_line_length: int = Field(0, ge=0, le=1 << 20)
+    max_line_length: int = setting(0, ge=0, le=1 << 20)
     """Longest line the control takes, line ending excluded (0: no limit); a longer one is an error."""
     # -- decimals per address (``WordWriter.number``) --
     address_decimals: str = ""
@@ -94,21 +87,17 @@ class OutputSettings(SetupGroup):
     tape_marks: Literal["keep", "always", "never"] = "keep"
     """``%`` lines: as the source has them, always one opening and one closing the program (a dialect
     with ``TAPE_MARKS``), or none."""
-    program_number: Literal["keep", "none"] | int = Field("keep", union_mode="left_to_right")
+    program_number: Literal["keep", "none"] | int = "keep"
     """The main program's number: as the source has it, none, or this number (1-9999; a dialect with
     ``PROGRAM_NUMBERS``: Fanuc/GSK ``O1001``, ISG/Fagor ``%1001``). A subprogram's number is never changed."""
 
-    @model_validator(mode="after")
-    def _program_number_valid(self) -> "OutputSettings":
-        if isinstance(self.program_number, int) and not 1 <= self.program_number <= 9999:
-            raise ValueError(f"programNumber {self.program_number} is not a program number (1-9999)")
-        return self
-
-    @model_validator(mode="after")
-    def _address_decimals_valid(self) -> "OutputSettings":
+    def __post_init__(self) -> None:
+        number = self.program_number
+        if isinstance(number, bool) or not (number in ("keep", "none") or isinstance(number, int)
+                                            and 1 <= number <= 9999):
+            raise ValueError(f"programNumber {number!r} is not keep, none or a program number (1-9999)")
         parse_address_decimals(self.address_decimals, 6)
         parse_address_decimals(self.inch_address_decimals, 7)
-        return self
 
     def address_places(self, inch: bool) -> dict[str, int]:
         """Address letter -> places, in mm or inch programs (empty: ``decimals`` for every address)."""
@@ -144,9 +133,9 @@ def parse_address_decimals(text: str, most: int) -> dict[str, int]:
 
 class CycleSettings(SetupGroup):
     TAG = "Cycles"
-    peck_retract: float = Field(0.5, gt=0)
+    peck_retract: float = setting(0.5, gt=0)
     """G73 retract d after each peck, mm (Fanuc parameter 5114)."""
-    peck_clearance: float = Field(0.5, gt=0)
+    peck_clearance: float = setting(0.5, gt=0)
     """G83 re-approach clearance d above the previous bottom, mm (Fanuc parameter 5115)."""
     shift_direction: Literal["+X", "-X", "+Y", "-Y"] = "+X"
     """Direction of the G76/G87 tool shift by Q (Fanuc parameters 5101#4/#5)."""
@@ -174,21 +163,19 @@ class MachineSettings(SetupGroup):
     units: Literal["mm", "inch"] = "mm"
     """Unit of the machine's lengths in the set-up: start position, travel and home (``<Axes>``), work
     offsets (``<WorkOffsets>``), tool offsets (``<Tools>``). Cycle parameters stay in mm."""
-    start_x: float = Field(0.0, ge=-MAX_COORDINATE, le=MAX_COORDINATE)
-    start_y: float = Field(0.0, ge=-MAX_COORDINATE, le=MAX_COORDINATE)
-    start_z: float = Field(0.0, ge=-MAX_COORDINATE, le=MAX_COORDINATE)
+    start_x: float = setting(0.0, ge=-MAX_COORDINATE, le=MAX_COORDINATE)
+    start_y: float = setting(0.0, ge=-MAX_COORDINATE, le=MAX_COORDINATE)
+    start_z: float = setting(0.0, ge=-MAX_COORDINATE, le=MAX_COORDINATE)
     """Position (work coordinates, in ``units``) assumed at program start for toolpath simulation."""
 
     def mm(self) -> float:
         """mm per unit of the machine's lengths."""
         return 25.4 if self.units == "inch" else 1.0
 
-    @model_validator(mode="after")
-    def _axes_known(self) -> "MachineSettings":
+    def __post_init__(self) -> None:
         bad = set(self.axes) - set("XYZABCUVW")
         if bad or len(set(self.axes)) != len(self.axes):
             raise ValueError(f"axes must be distinct letters from XYZABCUVW, got {self.axes!r}")
-        return self
 
 
 class LatheCycleSettings(SetupGroup):
@@ -197,34 +184,32 @@ class LatheCycleSettings(SetupGroup):
     controller rewrites its parameter. Lengths in mm (an inch program reads them converted), radius values."""
 
     TAG = "LatheCycles"
-    rough_depth: float = Field(1.0, gt=0)
+    rough_depth: float = setting(1.0, gt=0)
     """G71/G72 depth of cut per pass (GSK No.051, Fanuc 5132)."""
-    rough_retract: float = Field(1.0, ge=0)
+    rough_retract: float = setting(1.0, ge=0)
     """G71/G72 retract after each pass (GSK No.052, Fanuc 5133)."""
     pattern_relief_x: float = 1.0
     """G73 total X relief (GSK No.053, Fanuc 5135)."""
     pattern_relief_z: float = 1.0
     """G73 total Z relief (GSK No.054, Fanuc 5136)."""
-    pattern_passes: int = Field(1, ge=1, le=9999)
+    pattern_passes: int = setting(1, ge=1, le=9999)
     """G73 number of passes (GSK No.055, Fanuc 5137)."""
-    peck_retract: float = Field(1.0, ge=0)
+    peck_retract: float = setting(1.0, ge=0)
     """G74/G75 retract per peck (GSK No.056, Fanuc 5139)."""
-    thread_finish_passes: int = Field(1, ge=1, le=99)
+    thread_finish_passes: int = setting(1, ge=1, le=99)
     """G76 finishing passes m (GSK No.057 [?], Fanuc 5142)."""
-    thread_chamfer: int = Field(10, ge=0, le=99)
+    thread_chamfer: int = setting(10, ge=0, le=99)
     """G76 pull-out chamfer r in 0.1 x lead (GSK No.058 [?], Fanuc 5130)."""
     thread_angle: int = 60
     """G76 tool angle a in degrees (GSK No.059 [?], Fanuc 5143)."""
-    thread_min_depth: float = Field(0.1, gt=0)
+    thread_min_depth: float = setting(0.1, gt=0)
     """G76 minimum depth of cut (Fanuc 5140)."""
-    thread_allowance: float = Field(0.05, ge=0)
+    thread_allowance: float = setting(0.05, ge=0)
     """G76 finishing allowance d (GSK No.060, Fanuc 5141)."""
 
-    @model_validator(mode="after")
-    def _angle_known(self) -> "LatheCycleSettings":
+    def __post_init__(self) -> None:
         if self.thread_angle not in (0, 29, 30, 55, 60, 80):
             raise ValueError(f"threadAngle must be 0, 29, 30, 55, 60 or 80, got {self.thread_angle}")
-        return self
 
 
 class Limits(SetupGroup):
@@ -232,16 +217,16 @@ class Limits(SetupGroup):
     naming the construct, never a hang."""
 
     TAG = "Limits"
-    loop_iterations: int = Field(1_000_000, ge=1)
+    loop_iterations: int = setting(1_000_000, ge=1)
     """Total loop iterations, jumps, returns to a program's start and subprogram calls of one run."""
-    call_depth: int = Field(64, ge=1)
+    call_depth: int = setting(64, ge=1)
     """Nested subprogram and macro calls."""
-    kept_prefix: int = Field(100_000, ge=0)
+    kept_prefix: int = setting(100_000, ge=0)
     """Blocks of the straight start of a program kept for a later backward jump into it."""
-    moves_per_block: int = Field(100_000, ge=1)
+    moves_per_block: int = setting(100_000, ge=1)
     """Moves (and dwells, spindle actions) one block may expand to: a canned cycle with a huge repeat
     count or a tiny peck is a located error before it fills memory."""
-    line_length: int = Field(65_536, ge=1, le=1 << 30)
+    line_length: int = setting(65_536, ge=1, le=1 << 30)
     """Characters in one program line: a longer line is a located error before it is read (no
     controller accepts anything near the default 64 kB)."""
 
@@ -268,28 +253,31 @@ class ControllerSettings(SetupGroup):
         return self.variant == "fanuc-0m" if self.cutter_register_h is None else self.cutter_register_h
 
 
-class MachineCode(BaseModel):
+CodeAction = Literal["none", "stop", "optional-stop", "spindle-cw", "spindle-ccw", "spindle-stop",
+                     "coolant-on", "coolant-off", "gear", "tool-change"]
+"""What a machine code does in the simulation (``<M action="...">``)."""
+
+
+@dataclass(frozen=True)
+class MachineCode:
     """One machine-specific code (``<M number="31" action="none" name="part counter"/>``, or ``<G ...>``):
     kept verbatim between controllers of one family, simulated by its action."""
 
-    model_config = ConfigDict(alias_generator=_camel, populate_by_name=True, extra="forbid", frozen=True)
+    __pydantic_config__: ClassVar[dict[str, Any]] = pydantic_config(camel)
     letter: Literal["M", "G"]
-    number: str = Field(pattern=r"^[0-9]{1,4}(\.[0-9]{1,2})?$")
+    number: str = setting(pattern=r"^[0-9]{1,4}(\.[0-9]{1,2})?$")
     """The code's number as a controller reads it (``31``, ``187``, ``5.1``); M numbers are whole."""
-    action: Literal["none", "stop", "optional-stop", "spindle-cw", "spindle-ccw", "spindle-stop",
-                    "coolant-on", "coolant-off", "gear", "tool-change"] = "none"
+    action: CodeAction = "none"
     name: str = ""
     """What the code does, for messages and the toolpath."""
-    words: str = Field("", pattern=r"^[A-Z]*$")
+    words: str = setting("", pattern=r"^[A-Z]*$")
     """Address letters the code takes with it (G187 P1 E0.01: 'PE'), kept verbatim beside it."""
 
-    @model_validator(mode="after")
-    def _whole_m(self) -> "MachineCode":
+    def __post_init__(self) -> None:
         if self.letter == "M" and "." in self.number:
             raise ValueError(f"an M code number is whole, got {self.number!r}")
         if self.action != "none" and self.letter == "G":
             raise ValueError("a machine G code has no action but none (it moves nothing)")
-        return self
 
     def key(self) -> tuple[str, str]:
         """``("M", "31")``, ``("G", "5.1")``: numbers compared as a controller reads them."""
@@ -302,7 +290,8 @@ def _number_key(number: str) -> str:
     return f"{int(whole)}.{frac}" if frac else str(int(whole))
 
 
-class Templates(BaseModel):
+@dataclass
+class Templates:
     """jinja2 templates (rendered sandboxed, ``postproc.sequences``) for the program header and footer, and
     for the sequences that replace a block: the tool change, the start of each operation and the program
     end. A template left out leaves its place as the translation writes it."""
@@ -448,15 +437,16 @@ class MachineSetup(XmlNode):
         groups: list[SetupGroup] = [getattr(self, attr) for attr in GROUPS.values()]
         for group in [*groups, *self.extra.values()]:
             if own is None:
-                values = group.model_dump(by_alias=True, exclude_defaults=True)
+                written = values(group, by_alias=True, exclude_defaults=True)
             elif group.TAG in own.groups:
-                values = group.model_dump(by_alias=True, include=_fields(group, own.groups[group.TAG]))
+                written = values(group, by_alias=True, include=_fields(group, own.groups[group.TAG]))
             else:
                 continue
-            if values or own is not None:
+            if written or own is not None:
                 child = etree.SubElement(el, group.TAG)
-                for key, value in values.items():
+                for key, value in written.items():
                     child.set(key, _attr_text(value))
+        from .setup_machine import entry_values
         for container, entries in (("Axes", self.travel), ("WorkOffsets", self.work_offsets),
                                    ("Tools", self.tools)):
             mine = None if own is None else own.entries.get(container)
@@ -481,7 +471,7 @@ class MachineSetup(XmlNode):
             parent = etree.SubElement(el, "MachineCodes")
             for code in codes:
                 child = etree.SubElement(parent, code.letter)
-                for key, value in code.model_dump(by_alias=True, exclude_defaults=True, exclude={"letter"}).items():
+                for key, value in values(code, by_alias=True, exclude_defaults=True, exclude={"letter"}).items():
                     child.set(key, str(value))
         for called, file in self.code_calls.items():
             if own is None or called in own.calls:
@@ -491,7 +481,7 @@ class MachineSetup(XmlNode):
 
 def _fields(group: SetupGroup, aliases: set[str]) -> set[str]:
     """Field names of a group's aliases."""
-    return {name for name, info in type(group).model_fields.items() if (info.alias or name) in aliases}
+    return {name for name, alias in field_aliases(type(group)).items() if alias in aliases}
 
 
 def _attr_text(value: Any) -> str:
@@ -504,6 +494,7 @@ def _attr_text(value: Any) -> str:
 
 def _machine_codes_from_xml(el: etree._Element) -> list[MachineCode]:
     """``<MachineCodes>`` holds ``<M>`` and ``<G>`` elements; a code declared twice is an error."""
+    from .setup_validate import Invalid, validate
     if el.attrib:
         raise ConfigError("<MachineCodes> takes no attributes, only <M> and <G> elements", where(el))
     codes: list[MachineCode] = []
@@ -516,12 +507,9 @@ def _machine_codes_from_xml(el: etree._Element) -> list[MachineCode]:
         if len([c for c in child if isinstance(c.tag, str)]):
             raise ConfigError(f"<{child.tag}> takes attributes only", where(child))
         try:
-            code = MachineCode.model_validate({"letter": child.tag, **dict(child.attrib)})
-        except ValidationError as exc:
-            first = exc.errors()[0]
-            msg = "unknown parameter" if first["type"] == "extra_forbidden" else str(
-                first.get("ctx", {}).get("error", first["msg"])) if first["type"] == "value_error" else first["msg"]
-            field_name = ".".join(str(p) for p in first["loc"])
+            code = validate(MachineCode, {"letter": child.tag, **dict(child.attrib)})
+        except Invalid as exc:
+            field_name, msg = exc.problems[0]
             raise ConfigError(f"<{child.tag}> {field_name}: {msg}" if field_name else f"<{child.tag}> {msg}",
                               where(child)) from None
         if code.key() in seen:

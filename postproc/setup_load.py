@@ -17,10 +17,10 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from lxml import etree
-from pydantic import BaseModel, ValidationError
 
 from .errors import ConfigError, ErrorList, Location, PostprocError
 from .setup_machine import AXIS_LETTERS, CONTAINERS, Entry
+from .setup_validate import Invalid, validate
 from .xmlio import parse_xml_file, where
 
 if TYPE_CHECKING:
@@ -257,17 +257,11 @@ class Merger:
         model = self.validate(cls, raw, f"<{cls.TAG}>", (cls.TAG,))
         return model if isinstance(model, cls) else None
 
-    def validate(self, cls: type[BaseModel], raw: dict[str, Any], name: str, key: tuple[str, ...]) -> BaseModel | None:
+    def validate(self, cls: type[Any], raw: dict[str, Any], name: str, key: tuple[str, ...]) -> Any:
         try:
-            return cls.model_validate(raw)
-        except ValidationError as exc:
-            for error in exc.errors():
-                msg = error["msg"]
-                if error["type"] == "extra_forbidden":
-                    msg = "unknown parameter"
-                elif error["type"] == "value_error":  # our own validators' messages stand alone
-                    msg = str(error.get("ctx", {}).get("error", msg))
-                field_name = ".".join(str(p) for p in error["loc"])
+            return validate(cls, raw)
+        except Invalid as exc:
+            for field_name, msg in exc.problems:
                 el = self.origin.get((*key, field_name))
                 el = self.origin[key] if el is None else el
                 self.problem(f"{name} {field_name}: {msg}" if field_name else f"{name} {msg}", el)

@@ -9,24 +9,28 @@ overrides one entry, or one attribute of one entry, without repeating the rest.
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from typing import Any, ClassVar, Literal
 
-from pydantic import BaseModel, ConfigDict, Field, model_validator
+from .setup_record import MAX_COORDINATE, pydantic_config, setting, values
 
-MAX_COORDINATE = 100_000.0
-"""Largest magnitude of a travel limit, home, offset or tool length (100 m or 100,000 degrees): no machine
-comes near it, and an absurd value (``1e308``) is refused at its line rather than overflowing a sum."""
+__all__ = ["MAX_COORDINATE", "AxisTravel", "WorkOffsetData", "ToolData", "CONTAINERS", "entry_values"]
 
 ROTARY_AXES = frozenset("ABC")
 AXIS_LETTERS = "XYZABCUVW"
 
-Coordinate = Field(default=None, ge=-MAX_COORDINATE, le=MAX_COORDINATE)
+
+def coordinate(alias: str | None = None) -> Any:
+    """An optional length or angle (absent: unknown), bounded by ``MAX_COORDINATE``."""
+    return setting(None, ge=-MAX_COORDINATE, le=MAX_COORDINATE, alias=alias)
 
 
-class Entry(BaseModel):
-    """One keyed entry, stored as the attributes of one element."""
+@dataclass(frozen=True)
+class Entry:
+    """One keyed entry, stored as the attributes of one element (a plain record: see
+    ``postproc.setup_record``)."""
 
-    model_config = ConfigDict(populate_by_name=True, extra="forbid", frozen=True, allow_inf_nan=False)
+    __pydantic_config__: ClassVar[dict[str, Any]] = pydantic_config(None)
     TAG: ClassVar[str] = ""
     KEY: ClassVar[str] = ""
     """The attribute naming the entry (an ``extends`` child overrides the entry with the same key)."""
@@ -35,6 +39,7 @@ class Entry(BaseModel):
         return str(getattr(self, self.KEY))
 
 
+@dataclass(frozen=True)
 class AxisTravel(Entry):
     """``<Axis name="X" min="-762.0" max="0.0" home="0.0"/>``: the axis's travel in machine coordinates
     and its reference (home) position, where G28 goes."""
@@ -42,20 +47,18 @@ class AxisTravel(Entry):
     TAG = "Axis"
     KEY = "name"
     name: Literal["X", "Y", "Z", "A", "B", "C", "U", "V", "W"]
-    minimum: float | None = Field(default=None, ge=-MAX_COORDINATE, le=MAX_COORDINATE, alias="min")
-    maximum: float | None = Field(default=None, ge=-MAX_COORDINATE, le=MAX_COORDINATE, alias="max")
+    minimum: float | None = coordinate(alias="min")
+    maximum: float | None = coordinate(alias="max")
     """Travel limits (machine coordinates). A rotary axis without them turns without limit."""
-    home: float | None = Field(default=None, ge=-MAX_COORDINATE, le=MAX_COORDINATE)
+    home: float | None = coordinate()
     """The reference position (machine coordinates); unknown when absent (a G28 on a checked axis is
     then an error rather than a guess)."""
 
-    @model_validator(mode="after")
-    def _ordered(self) -> "AxisTravel":
+    def __post_init__(self) -> None:
         if self.minimum is not None and self.maximum is not None and self.minimum >= self.maximum:
             raise ValueError(f"axis {self.name}: min {self.minimum:g} is not below max {self.maximum:g}")
         if self.home is not None and not self.within(self.home):
             raise ValueError(f"axis {self.name}: home {self.home:g} is outside the travel")
-        return self
 
     def within(self, value: float) -> bool:
         return ((self.minimum is None or value >= self.minimum)
@@ -65,28 +68,30 @@ class AxisTravel(Entry):
         return self.minimum is not None or self.maximum is not None
 
 
+@dataclass(frozen=True)
 class WorkOffsetData(Entry):
     """``<Offset number="1" x="-400.0" y="-250.0" z="-500.0"/>``: where a work system's zero is in machine
     coordinates, as the operator set it (1 = G54 ... 6 = G59; 0 = the external offset added to all)."""
 
     TAG = "Offset"
     KEY = "number"
-    number: int = Field(ge=0, le=6)
-    x: float | None = Coordinate
-    y: float | None = Coordinate
-    z: float | None = Coordinate
-    a: float | None = Coordinate
-    b: float | None = Coordinate
-    c: float | None = Coordinate
-    u: float | None = Coordinate
-    v: float | None = Coordinate
-    w: float | None = Coordinate
+    number: int = setting(ge=0, le=6)
+    x: float | None = coordinate()
+    y: float | None = coordinate()
+    z: float | None = coordinate()
+    a: float | None = coordinate()
+    b: float | None = coordinate()
+    c: float | None = coordinate()
+    u: float | None = coordinate()
+    v: float | None = coordinate()
+    w: float | None = coordinate()
 
     def axes(self) -> dict[str, float]:
         """Axis letter -> offset, for the axes the entry gives (an absent axis is unknown, not zero)."""
         return {a: v for a in AXIS_LETTERS if (v := getattr(self, a.lower())) is not None}
 
 
+@dataclass(frozen=True)
 class ToolData(Entry):
     """``<Tool number="1" length="152.4"/>`` (a mill's length register H1) or ``<Tool number="1"
     x="-2.5" z="-1.2"/>`` (a lathe's offset 01 of ``T0101``): what the controller adds to the programmed
@@ -94,11 +99,11 @@ class ToolData(Entry):
 
     TAG = "Tool"
     KEY = "number"
-    number: int = Field(ge=0, le=9999)
-    length: float | None = Coordinate
+    number: int = setting(ge=0, le=9999)
+    length: float | None = coordinate()
     """G43/G44 tool length: G43 adds it to Z, G44 subtracts it."""
-    x: float | None = Coordinate
-    z: float | None = Coordinate
+    x: float | None = coordinate()
+    z: float | None = coordinate()
     """Lathe geometry offsets, added to X (as the set-up's X: diameter on a diameter lathe) and Z."""
 
 
@@ -108,7 +113,7 @@ CONTAINERS: dict[str, type[Entry]] = {"Axes": AxisTravel, "WorkOffsets": WorkOff
 
 def entry_values(entry: Entry, only: set[str] | None = None) -> dict[str, Any]:
     """The entry's attributes as XML writes them (aliases, defaults left out), key first."""
-    values = entry.model_dump(by_alias=True, exclude_none=True)
+    written = values(entry, by_alias=True, exclude_none=True)
     if only is not None:
-        values = {k: v for k, v in values.items() if k in only or k == entry.KEY}
-    return values
+        written = {k: v for k, v in written.items() if k in only or k == entry.KEY}
+    return written

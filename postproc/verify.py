@@ -12,6 +12,7 @@ mismatch, reported at its first place; after it the two paths no longer line up 
 from __future__ import annotations
 
 import copy
+import dataclasses
 import math
 from dataclasses import dataclass, field
 from itertools import zip_longest
@@ -433,7 +434,7 @@ def _same_machine(setup: MachineSetup, source: str, registry: Registry | None) -
     if setup.input.machine_type == "lathe" or not reading.reads_lathe(setup):
         return setup
     lathe = copy.copy(setup)
-    lathe.input = setup.input.model_copy(update={"machine_type": "lathe"})
+    lathe.input = dataclasses.replace(setup.input, machine_type="lathe")
     return lathe
 
 

@@ -46,7 +46,7 @@ def grbl_events(text: str, setup: MachineSetup | None = None) -> list[dict[str, 
 
 
 def orientation(mode: str) -> MachineSetup:
-    return MachineSetup(cycles=CycleSettings.model_validate({"orientation": mode}))
+    return MachineSetup(cycles=CycleSettings(orientation=mode))
 
 
 # -- the dialect -------------------------------------------------------------------------------------

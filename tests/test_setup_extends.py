@@ -11,7 +11,7 @@ import pytest
 from postproc.errors import ConfigError, ErrorList
 from postproc.hookspecs import hookimpl
 from postproc.plugins import Registry, make_plugin_manager
-from postproc.setup import MachineSetup, SetupGroup, load_setup
+from postproc.setup import MachineSetup, SetupGroup, load_setup, setting
 from postproc.setup_load import BASES
 from postproc.xmlio import XFactory
 
@@ -272,7 +272,7 @@ class ProbeSettings(SetupGroup):
     """A plugin's own group: a probing cycle's parameters."""
 
     TAG = "Probe"
-    approach_feed: float = 100.0
+    approach_feed: float = setting(100.0, gt=0)
     max_travel: float = 10.0
 
 
@@ -296,6 +296,16 @@ def test_a_plugin_group_is_read_validated_and_dumped(tmp_path):
     dumped = setup.make_xml_source()
     assert [(c.tag, dict(c.attrib)) for c in dumped] == [("Probe", {"approachFeed": "50.0"})]
     assert MachineSetup().group(ProbeSettings) == ProbeSettings()  # absent: its defaults
+
+
+def test_a_plugin_group_bound_is_checked_on_loading_only(tmp_path):
+    path = _write(tmp_path, "m.xml", '<MachineSetup name="m">\n  <Probe approachFeed="0" depth="1"/>\n</MachineSetup>\n')
+    with pytest.raises(ErrorList) as info:
+        load_setup(path, groups=_groups(ProbePlugin()))
+    assert [str(e) for e in info.value.errors] == [
+        f"{path}:3:1: error: <Probe> approachFeed: Input should be greater than 0",
+        f"{path}:3:1: error: <Probe> depth: unknown parameter"]
+    assert ProbeSettings(approach_feed=0.0).approach_feed == 0.0  # code is trusted: no validation per run
 
 
 def test_a_plugin_group_error_is_located(tmp_path):

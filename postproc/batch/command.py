@@ -24,18 +24,6 @@ from .progress import progress_for
 from .report import Report, Tally, messages
 from .work import TEMP_PREFIX, FileResult, Options
 
-BATCH_OPTIONS = ("jobs", "report", "verify", "scheduler", "ext", "include", "files_per_task")
-"""Options that only a batch has: any of them makes the command a batch."""
-
-
-def is_batch(args: argparse.Namespace) -> bool:
-    """Several inputs, a folder among them, or a batch option. (``-o`` naming a folder is not enough:
-    for one file that stays the usage error the single-file contract says it is.)"""
-    inputs: list[str] = args.input
-    return (len(inputs) > 1 or any(path != "-" and os.path.isdir(path) for path in inputs)
-            or any(getattr(args, name) not in (None, False, []) for name in BATCH_OPTIONS))
-
-
 def run_batch(args: argparse.Namespace, renumber: tuple[int, int | None] | None) -> int:
     """Translate every file; the exit status is the worst file's."""
     outdir = _outdir(args)

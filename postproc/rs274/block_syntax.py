@@ -537,12 +537,15 @@ def _milliseconds(block: Block, ctx: Context, num: str) -> int:
     return int(round(ms))
 
 
+_INCREMENTS_PER_MM = {"IS-A": 100, "IS-B": 1000, "IS-C": 10000}
+
+
 def _divisor(ctx: Context, units: str) -> int:
     """Divisor turning a point-less value into program units (0 for calculator-type input)."""
     inp = ctx.setup.input
     if inp.decimal_point == "calculator":
         return 0
-    base = {"IS-A": 100, "IS-B": 1000, "IS-C": 10000}[inp.increment_system]
+    base = _INCREMENTS_PER_MM[inp.increment_system]
     return base if units == "mm" else base * 10
 
 

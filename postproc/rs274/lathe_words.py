@@ -18,6 +18,7 @@ from postproc.context import Context
 from postproc.errors import ParseError, ProgramError
 from postproc.ir import Block
 from postproc.lathe_sections import LatheCycle
+from postproc.setup_record import values
 
 DEFAULTS_KEY = "lathe_words.defaults"
 """``ctx.state.extra`` key: the data parameters in force (a dict, from the set-up, then as programmed)."""
@@ -96,7 +97,7 @@ def defaults(ctx: Context) -> dict[str, Any]:
     extra = ctx.state.extra
     found = extra.get(DEFAULTS_KEY)
     if found is None:
-        found = extra[DEFAULTS_KEY] = dict(ctx.setup.lathe_cycles.model_dump())
+        found = extra[DEFAULTS_KEY] = values(ctx.setup.lathe_cycles)
     return found
 
 

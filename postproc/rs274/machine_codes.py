@@ -11,7 +11,7 @@ from __future__ import annotations
 from typing import Mapping
 
 from postproc.context import Context
-from postproc.setup import MachineCode
+from postproc.setup import CodeAction, MachineCode
 
 Defaults = Mapping[str, tuple[MachineCode, ...]]
 """Controller variant -> the machine codes it has besides its family's common ones."""
@@ -33,7 +33,7 @@ def machine_table(ctx: Context, defaults: Defaults, base: str) -> dict[tuple[str
     return table
 
 
-def m(number: int, name: str, action: str = "none", words: str = "") -> MachineCode:
+def m(number: int, name: str, action: CodeAction = "none", words: str = "") -> MachineCode:
     """A default M code declaration (dialects' tables read better with it)."""
     return MachineCode(letter="M", number=str(number), action=action, name=name, words=words)
 

@@ -42,6 +42,8 @@ SECTION_ORDER = (
 _STAYS_WITH_MOTION = frozenset(("Motion", "CompoundMotion", "CannedCycle", "CycleCall", "MachineCoordinates", "Feed",
                                 "Comments", "BlockDelete"))
 """What stays on the motion's line when a block is split around its dwell (``WordWriter.around_dwell``)."""
+SectionWriter = Callable[[Any, Any, Block], list[str]]
+"""Writes one section's words: ``(writer, section, block) -> words``."""
 
 
 class WordWriter(Writer):
@@ -56,7 +58,7 @@ class WordWriter(Writer):
     target's ``DWELL_UNIT``."""
     IGNORED: ClassVar[frozenset[str]] = frozenset()
     """Sections that annotate a block and produce no words of their own."""
-    TRANSFORMS: ClassVar[dict[str, Callable[["WordWriter", Any, Block], list[str]]]] = {}
+    TRANSFORMS: ClassVar[dict[str, SectionWriter]] = {}
     CYCLE_CANCEL_IS_MOTION: ClassVar[bool] = False
     """True where the cycle cancel is one of the motion codes (RS274/NGC: G80 and G0 in one block are a
     modal-group error): a block that writes a motion code leaves the cancel out, the motion code ends
@@ -91,6 +93,9 @@ class WordWriter(Writer):
         self.copy_ok = source_dialect == self.DIALECT and not self.normalize and not self.renumber
         self.codes = self.table()
         """The code table written (a dialect with one per machine type picks it from the context)."""
+        self.section_writers = self.dispatch_table()
+        """Section key -> its writing function: this class's dispatch table (``section_writer``), shared by
+        every run that writes this dialect."""
         self.modal = ModalState()
         """What the written program has in force so far (units, distance mode, feed, plane, spindle...)."""
         self.carry: dict[str, float] = {}
@@ -298,13 +303,32 @@ class WordWriter(Writer):
     def section_words(self, key: str, section: Section, block: Block) -> list[str]:
         if key == ASSIGN or key == CONTROL:
             return self.statement_words(section, block)
-        transform = self.TRANSFORMS.get(key)
-        if transform is not None:
-            return transform(self, section, block)
-        method = getattr(self, f"{_snake(key)}_words", None)
-        if method is None:
-            self.unsupported(key, block)
-        return method(section, block)  # type: ignore[no-any-return]
+        write = self.section_writers.get(key)
+        if write is None:
+            write = self.section_writer(key)
+            if write is None:
+                self.unsupported(key, block)
+        return write(self, section, block)
+
+    @classmethod
+    def dispatch_table(cls) -> dict[str, SectionWriter | None]:
+        """This class's own section table (a subclass gets its own: it may override a method)."""
+        table: dict[str, SectionWriter | None] | None = cls.__dict__.get("_section_writers")
+        if table is None:
+            table = {}
+            setattr(cls, "_section_writers", table)
+        return table
+
+    @classmethod
+    def section_writer(cls, key: str) -> SectionWriter | None:
+        """The function that writes section ``key`` for this writer class (``TRANSFORMS`` first, then a
+        ``<key>_words`` method), found once per class and key and kept in the class's own table."""
+        table = cls.dispatch_table()
+        if key not in table:
+            found = cls.TRANSFORMS.get(key)
+            table[key] = found if found is not None else getattr(cls, f"{_snake(key)}_words", None)
+        write: SectionWriter | None = table[key]
+        return write
 
     def statements(self, block: Block) -> list[str]:
         """The words of a block's assignment and control statement (the reader keeps them out of

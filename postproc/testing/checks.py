@@ -8,6 +8,7 @@ any other harness.
 from __future__ import annotations
 
 import contextlib
+import dataclasses
 import io
 import re
 import tempfile
@@ -234,7 +235,7 @@ def cross_problems(case: DialectUnderTest, path: Path, target: type[Dialect], ex
     verifies at zero deviation, or the translation is refused with located errors only."""
     setup = case.machine()
     if expand:
-        setup.cycles = setup.cycles.model_copy(update={"expand": "all"})
+        setup.cycles = dataclasses.replace(setup.cycles, expand="all")
     how = f"{case.dialect} -> {target.NAME}" + (" (cycles expanded)" if expand else "")
     text = read_text(path)
     out = io.StringIO()

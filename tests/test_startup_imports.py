@@ -1,0 +1,86 @@
+"""Start-up: a run imports only what it uses (issue 13). Counted in a fresh interpreter from the modules in
+``sys.modules`` when the command ends, never timed: what a one-line translation or ``postproc dialects``
+must not load is pydantic (set-up validation), jinja2 (templates), the batch and cluster machinery, the
+toolpath, verify and backplot code; with a set-up file (``--machine``) pydantic is loaded, by design."""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+PROBE = """
+import atexit, json, os, runpy, sys
+atexit.register(lambda: open(os.environ["MODULES_OUT"], "w").write(json.dumps(sorted(sys.modules))))
+sys.argv = ["postproc", *json.loads(os.environ["ARGS"])]
+runpy.run_module("postproc", run_name="__main__")
+"""
+NEVER_BY_DEFAULT = ("pydantic", "pydantic_core", "annotated_types", "jinja2", "dask", "distributed", "PIL",
+                    "postproc.setup_validate", "postproc.setup_load", "postproc.templates", "postproc.batch.command",
+                    "postproc.batch.local", "postproc.batch.cluster", "postproc.toolpath", "postproc.verify",
+                    "postproc.backplot", "postproc.canvas", "postproc.export")
+
+
+def modules_after(tmp_path: Path, *args: str) -> set[str]:
+    out = tmp_path / "modules.json"
+    cwd = tmp_path / "cwd"  # on sys.path (python -c): kept unchanged and old, so the entry-point cache settles
+    if not cwd.exists():
+        cwd.mkdir()
+        past = time.time() - 60
+        os.utime(cwd, (past, past))
+    env = dict(os.environ, HOME=str(tmp_path), MODULES_OUT=str(out), ARGS=json.dumps(list(args)))
+    env.pop("POSTPROC_NO_ENTRY_POINT_CACHE", None)
+    env.pop("XDG_CACHE_HOME", None)
+    done = subprocess.run([sys.executable, "-c", PROBE], cwd=cwd, env=env, capture_output=True, text=True,
+                          timeout=120)
+    assert done.returncode == 0, done.stderr
+    return set(json.loads(out.read_text()))
+
+
+def loaded(modules: set[str], name: str) -> bool:
+    return name in modules or any(m.startswith(name + ".") for m in modules)
+
+
+@pytest.fixture
+def one_line(tmp_path: Path) -> Path:
+    path = tmp_path / "one.nc"
+    path.write_text("G0 X1. Y2.\n")
+    return path
+
+
+def test_a_one_line_translation_loads_nothing_it_does_not_use(tmp_path: Path, one_line: Path) -> None:
+    modules = modules_after(tmp_path, "translate", str(one_line), "--from", "fanuc", "--to", "linuxcnc")
+    assert "postproc.api" in modules and "postproc_linuxcnc.writer" in modules  # the probe saw the run
+    assert [name for name in NEVER_BY_DEFAULT if loaded(modules, name)] == []
+
+
+def test_a_second_run_finds_the_plugins_without_importlib_metadata(tmp_path: Path, one_line: Path) -> None:
+    """The first run discovers the entry points (importlib.metadata) and remembers them in its HOME's
+    cache; the next run reads them from there. (A distribution installed into this interpreter's
+    environment less than two seconds before the first run would rightly keep it from caching.)"""
+    args = ("translate", str(one_line), "--from", "fanuc", "--to", "linuxcnc")
+    assert loaded(modules_after(tmp_path, *args), "importlib.metadata")
+    assert (tmp_path / ".cache" / "postproc").is_dir()
+    second = modules_after(tmp_path, *args)
+    assert [name for name in ("importlib.metadata", "email") if loaded(second, name)] == []
+    assert "postproc_linuxcnc.writer" in second
+
+
+def test_listing_the_dialects_loads_nothing_it_does_not_use(tmp_path: Path) -> None:
+    modules = modules_after(tmp_path, "dialects")
+    assert "postproc.plugins" in modules
+    assert [name for name in NEVER_BY_DEFAULT if loaded(modules, name)] == []
+
+
+def test_a_set_up_file_is_validated_with_pydantic(tmp_path: Path, one_line: Path) -> None:
+    """The other side of the lazy import: ``--machine`` does load the validator (the probe is not blind)."""
+    setup = ROOT / "examples/setups" / "fanuc_0i_mf_vmc.xml"
+    modules = modules_after(tmp_path, "translate", str(one_line), "--from", "fanuc", "--to", "linuxcnc",
+                            "--machine", str(setup))
+    assert loaded(modules, "pydantic") and "postproc.setup_validate" in modules
