@@ -4,24 +4,38 @@ VENV   := .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 PLUGINS := $(wildcard plugins/*/pyproject.toml)
+# The hot modules compiled with mypyc (pyproject.toml [tool.postproc] compiled) and the stamp of their build.
+HOT    := $(shell sed -n '/^compiled = \[/,/^\]/p' pyproject.toml | grep -o '"[^"]*\.py"' | tr -d '"')
+NATIVE := $(VENV)/.compiled
 
 .PHONY: install run test bench typecheck fuzz clean
 
-$(STAMP): pyproject.toml $(PLUGINS)
+$(STAMP): pyproject.toml setup.py $(PLUGINS)
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/pip install --quiet --upgrade pip
-	$(BIN)/pip install --quiet -e '.[test,render,dask]' $(foreach p,$(PLUGINS),-e $(dir $(p)))
+	POSTPROC_PURE=1 $(BIN)/pip install --quiet -e '.[test,render,dask]' $(foreach p,$(PLUGINS),-e $(dir $(p)))
 	touch $(STAMP)
 
-install: $(STAMP)
+# Compiles the hot path (pure Python where there is no C compiler), again when a hot module is edited
+# (meanwhile postproc runs it as pure Python: postproc --version says which).
+$(NATIVE): $(STAMP) $(HOT)
+	$(BIN)/pip install --quiet --no-deps -e .
+	touch $(NATIVE)
 
-run: $(STAMP)
+install: $(NATIVE)
+
+run: $(NATIVE)
 	bash examples/run.sh
 
-test: $(STAMP)
+# The whole suite against the compiled hot path, then against the pure-Python fallback (skipped where
+# nothing was compiled: the first run was pure already).
+test: $(NATIVE)
+	$(BIN)/postproc --version
 	$(BIN)/python -m pytest
+	if [ -f postproc/_compiled/manifest.json ]; then \
+	  POSTPROC_PURE=1 $(BIN)/postproc --version && POSTPROC_PURE=1 $(BIN)/python -m pytest; fi
 
-bench: $(STAMP)
+bench: $(NATIVE)
 	$(BIN)/pip install --quiet -r benchmarks/requirements.txt
 	$(BIN)/python benchmarks/run.py $(BENCH_ARGS)
 
@@ -36,4 +50,4 @@ typecheck: $(STAMP)
 	done
 
 clean:
-	rm -rf $(VENV) out .pytest_cache .hypothesis
+	rm -rf $(VENV) out .pytest_cache .hypothesis build postproc/_compiled

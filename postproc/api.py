@@ -13,6 +13,9 @@ import io
 from itertools import chain
 from typing import Callable, Iterable, Iterator, TextIO
 
+from . import native
+native.install()  # the compiled hot path, before any of its modules is imported
+
 from .dialect import Dialect
 from .errors import Diagnostics, ErrorLevel, Location, PostprocError, UsageError
 from .ir import Block

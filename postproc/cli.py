@@ -14,6 +14,9 @@ import threading
 from pathlib import Path
 from typing import Iterable, Iterator, Sequence, TextIO
 
+from . import native
+native.install()  # the compiled hot path, before any of its modules is imported
+
 from .api import read_blocks, translate
 from .errors import ConfigError, Diagnostics, ErrorList, Location, PostprocError, UsageError
 from .outfile import BUFFER, ENCODING, write_output
@@ -123,6 +126,15 @@ LIB = "folder searched for subprograms (repeatable; after the set-up's <Library>
 OUTPUT = "write here instead of standard output ('-': standard output); written only on success, atomically"
 
 
+def _version() -> str:
+    from importlib.metadata import PackageNotFoundError, version
+    try:
+        number = version("postproc")
+    except PackageNotFoundError:  # run from a checkout that is not installed
+        number = "unknown"
+    return f"postproc {number}, hot path {native.describe()}"
+
+
 def build_parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(
         prog="postproc", formatter_class=argparse.RawDescriptionHelpFormatter,
@@ -131,6 +143,8 @@ def build_parser() -> argparse.ArgumentParser:
         epilog="\n\n".join(EXAMPLES[c] for c in ("translate", "verify", "toolpath")) + "\n\n"
                "exit status: 0 ok, 1 the program or set-up has errors (FILE:LINE:COL: error: ...), 2 wrong usage; "
                "warnings go to standard error.\n'postproc COMMAND --help' describes each command.")
+    p.add_argument("--version", action="version", version=_version(),
+                   help="the version, and whether the hot path runs compiled or as pure Python")
     sub = p.add_subparsers(dest="command", metavar="COMMAND")
 
     def command(name: str, help: str, description: str) -> argparse.ArgumentParser:

@@ -3,6 +3,8 @@ reported per block; the block is kept (as text only)."""
 
 from __future__ import annotations
 
+from mypy_extensions import mypyc_attr
+
 from typing import Iterable, Iterator
 
 from postproc.dialect import Reader
@@ -17,6 +19,7 @@ from postproc.rs274.lexer import WORDS_ONLY, WORD, lex_block
 from .macro import read_call
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class FanucReader(Reader):
     def read(self, lines: Iterable[str]) -> Iterator[Block]:
         file = self.ctx.file

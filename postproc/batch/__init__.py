@@ -6,3 +6,6 @@ before any file is touched; ``work`` translates (and verifies) one chunk of jobs
 ``report`` writes the JSON lines report and the summary; ``command`` is the ``translate`` command's
 batch mode. One file's failure is that file's result, never the batch's.
 """
+
+from .. import native
+native.install()  # the compiled hot path, before any of its modules is imported
