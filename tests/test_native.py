@@ -4,6 +4,7 @@ each; see docs/compiled.md)."""
 
 from __future__ import annotations
 
+import ast
 import copy
 import hashlib
 import importlib
@@ -128,3 +129,18 @@ def test_compiled_and_pure_translate_alike(args: list[str], tmp_path: Path) -> N
             results.append((program.name, done.returncode, done.stderr, text))
         runs.append(results)
     assert runs[0] == runs[1]
+
+
+@pytest.mark.parametrize("source", HOT)
+def test_a_compiled_module_follows_the_rules_mypyc_needs(source: str) -> None:
+    """docs/compiled.md: every class allows interpreted subclasses (plugins subclass them; copy and
+    pickle create instances without ``__init__`` only then), and no class body chains an assignment."""
+    tree = ast.parse((ROOT / source).read_text(encoding="utf-8"))
+    for node in ast.walk(tree):
+        if not isinstance(node, ast.ClassDef):
+            continue
+        marks = [ast.unparse(d) for d in node.decorator_list]
+        assert "mypyc_attr(allow_interpreted_subclasses=True)" in marks, f"{source}: class {node.name}"
+        for stmt in node.body:
+            assert not (isinstance(stmt, ast.Assign) and len(stmt.targets) > 1), \
+                f"{source}:{stmt.lineno}: split the chained assignment (mypyc refuses it in a class body)"
