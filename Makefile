@@ -4,31 +4,45 @@ VENV   := .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 PLUGINS := $(wildcard plugins/*/pyproject.toml)
+# The hot modules compiled with mypyc (pyproject.toml [tool.postproc] compiled) and the stamp of their build.
+HOT    := $(shell sed -n '/^compiled = \[/,/^\]/p' pyproject.toml | grep -o '"[^"]*\.py"' | tr -d '"')
+NATIVE := $(VENV)/.compiled
 
 .PHONY: install compile run test bench typecheck fuzz clean
 
-$(STAMP): pyproject.toml $(PLUGINS)
+$(STAMP): pyproject.toml setup.py $(PLUGINS)
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/pip install --quiet --upgrade pip
-	$(BIN)/pip install --quiet -e '.[test,render,dask]' $(foreach p,$(PLUGINS),-e $(dir $(p)))
+	POSTPROC_PURE=1 $(BIN)/pip install --quiet -e '.[test,render,dask]' $(foreach p,$(PLUGINS),-e $(dir $(p)))
 	touch $(STAMP)
+
+# Compiles the hot path (pure Python where there is no C compiler), again when a hot module is edited
+# (meanwhile postproc runs it as pure Python: postproc --version says which).
+$(NATIVE): $(STAMP) $(HOT)
+	$(BIN)/pip install --quiet --no-deps -e .
+	touch $(NATIVE)
 
 # Byte-compile the editable packages (core, dialects, plugins) once, so that a start does not compile
 # them again: pip compiles what it copies into site-packages, not an editable source tree, and where
 # PYTHONDONTWRITEBYTECODE is set no run writes a .pyc. compileall writes them even then, and skips the
 # files whose .pyc is up to date: cheap to repeat after an edit (make test does).
-compile: $(STAMP)
+compile: $(NATIVE)
 	$(BIN)/python -m compileall -q postproc dialects $(foreach p,$(PLUGINS),$(dir $(p)))
 
-install: $(STAMP) compile
+install: compile
 
 run: install
 	bash examples/run.sh
 
+# The whole suite against the compiled hot path, then against the pure-Python fallback (skipped where
+# nothing was compiled: the first run was pure already).
 test: install
+	$(BIN)/postproc --version
 	$(BIN)/python -m pytest
+	if [ -f postproc/_compiled/manifest.json ]; then \
+	  POSTPROC_PURE=1 $(BIN)/postproc --version && POSTPROC_PURE=1 $(BIN)/python -m pytest; fi
 
-bench: $(STAMP)
+bench: $(NATIVE)
 	$(BIN)/pip install --quiet -r benchmarks/requirements.txt
 	$(BIN)/python benchmarks/run.py $(BENCH_ARGS)
 
@@ -43,4 +57,4 @@ typecheck: $(STAMP)
 	done
 
 clean:
-	rm -rf $(VENV) out .pytest_cache .hypothesis
+	rm -rf $(VENV) out .pytest_cache .hypothesis build postproc/_compiled

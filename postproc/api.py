@@ -7,6 +7,9 @@ import copy
 import io
 from typing import Callable, Iterable, TextIO
 
+from . import native
+native.install()  # the compiled hot path, before any of its modules is imported
+
 from .dialect import Dialect
 from .errors import Diagnostics, ErrorLevel, PostprocError, UsageError
 from .ir import Block

@@ -13,6 +13,9 @@ import threading
 from pathlib import Path
 from typing import Iterable, Iterator, Sequence, TextIO
 
+from . import native
+native.install()  # the compiled hot path, before any of its modules is imported
+
 from .api import read_blocks, translate
 from .errors import ConfigError, Diagnostics, ErrorList, Location, PostprocError, UsageError
 from .outfile import BUFFER, ENCODING, write_output
@@ -122,6 +125,24 @@ LIB = "folder searched for subprograms (repeatable; after the set-up's <Library>
 OUTPUT = "write here instead of standard output ('-': standard output); written only on success, atomically"
 
 
+def _version() -> str:
+    from importlib.metadata import PackageNotFoundError, version
+    try:
+        number = version("postproc")
+    except PackageNotFoundError:  # run from a checkout that is not installed
+        number = "unknown"
+    return f"postproc {number}, hot path {native.describe()}"
+
+
+class _Version(argparse.Action):
+    """``--version``, looked up only when asked (a run does not pay for importlib.metadata)."""
+
+    def __call__(self, parser: argparse.ArgumentParser, namespace: argparse.Namespace, values: object,
+                 option_string: str | None = None) -> None:
+        print(_version())
+        parser.exit()
+
+
 def build_parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(
         prog="postproc", formatter_class=argparse.RawDescriptionHelpFormatter,
@@ -130,6 +151,8 @@ def build_parser() -> argparse.ArgumentParser:
         epilog="\n\n".join(EXAMPLES[c] for c in ("translate", "verify", "toolpath")) + "\n\n"
                "exit status: 0 ok, 1 the program or set-up has errors (FILE:LINE:COL: error: ...), 2 wrong usage; "
                "warnings go to standard error.\n'postproc COMMAND --help' describes each command.")
+    p.add_argument("--version", action=_Version, nargs=0,
+                   help="the version, and whether the hot path runs compiled or as pure Python")
     sub = p.add_subparsers(dest="command", metavar="COMMAND")
 
     def command(name: str, help: str, description: str) -> argparse.ArgumentParser:

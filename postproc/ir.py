@@ -11,17 +11,21 @@ block actually programs: a million-block program must stream without pressure on
 
 from __future__ import annotations
 
+from mypy_extensions import mypyc_attr
+
 from typing import Any, Callable, ClassVar, Iterator
 
 from lxml import etree
 
 from .expr import Expr, expr_from_xml
-from .xmlio import DEFAULT, XAttr, XFactory, XmlNode, computed_value, decode, encode, where
+from .xmlio import (DEFAULT, XAttr, XFactory, XmlNode, computed_value, decode, encode, restore_slots,
+                    slot_state, where)
 
 AXES = ("X", "Y", "Z", "A", "B", "C", "U", "V", "W")
 """Axis letters a neutral motion may carry, in output order."""
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class Section(XmlNode):
     """A typed part of a block. ``KEY`` is its slot in ``Block.sections`` (one of each per block)."""
 
@@ -29,10 +33,13 @@ class Section(XmlNode):
     KEY: ClassVar[str] = ""
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class BlockDelete(Section):
     """Optional block skip; level 1 is the plain '/'."""
 
-    XNAME = KEY = "BlockDelete"
+    XNAME = "BlockDelete"
+
+    KEY = "BlockDelete"
     __slots__ = ("level",)
     XATTRS = (XAttr("level", int, 1),)
     level: int
@@ -41,10 +48,13 @@ class BlockDelete(Section):
         self.level = level
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class ProgramStart(Section):
     """Program number or name (O-number, %name)."""
 
-    XNAME = KEY = "ProgramStart"
+    XNAME = "ProgramStart"
+
+    KEY = "ProgramStart"
     __slots__ = ("number", "name")
     XATTRS = (XAttr("number", int, None), XAttr("name", str, None))
     number: int | None
@@ -55,17 +65,23 @@ class ProgramStart(Section):
         self.name = name
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class TapeMark(Section):
     """Tape start/end marker line."""
 
-    XNAME = KEY = "TapeMark"
+    XNAME = "TapeMark"
+
+    KEY = "TapeMark"
     __slots__ = ()
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class Units(Section):
     """Length unit of the program: 'mm' or 'inch'."""
 
-    XNAME = KEY = "Units"
+    XNAME = "Units"
+
+    KEY = "Units"
     __slots__ = ("system",)
     XATTRS = (XAttr("system", str),)
     system: str
@@ -74,10 +90,13 @@ class Units(Section):
         self.system = system
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class Plane(Section):
     """Working plane: 'XY', 'ZX' or 'YZ'."""
 
-    XNAME = KEY = "Plane"
+    XNAME = "Plane"
+
+    KEY = "Plane"
     __slots__ = ("plane",)
     XATTRS = (XAttr("plane", str),)
     plane: str
@@ -86,10 +105,13 @@ class Plane(Section):
         self.plane = plane
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class DistanceMode(Section):
     """'absolute' or 'incremental' coordinates."""
 
-    XNAME = KEY = "DistanceMode"
+    XNAME = "DistanceMode"
+
+    KEY = "DistanceMode"
     __slots__ = ("mode",)
     XATTRS = (XAttr("mode", str),)
     mode: str
@@ -98,10 +120,13 @@ class DistanceMode(Section):
         self.mode = mode
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class WorkOffset(Section):
     """Work coordinate system, 1 = first (G54 on Fanuc)."""
 
-    XNAME = KEY = "WorkOffset"
+    XNAME = "WorkOffset"
+
+    KEY = "WorkOffset"
     __slots__ = ("index",)
     XATTRS = (XAttr("index", int),)
     index: int
@@ -110,10 +135,13 @@ class WorkOffset(Section):
         self.index = index
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class FeedMode(Section):
     """'per_min', 'per_rev' or 'inverse_time'."""
 
-    XNAME = KEY = "FeedMode"
+    XNAME = "FeedMode"
+
+    KEY = "FeedMode"
     __slots__ = ("mode",)
     XATTRS = (XAttr("mode", str),)
     mode: str
@@ -122,24 +150,30 @@ class FeedMode(Section):
         self.mode = mode
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class SpindleSpeed(Section):
     """Spindle speed."""
 
-    XNAME = KEY = "SpindleSpeed"
+    XNAME = "SpindleSpeed"
+
+    KEY = "SpindleSpeed"
     __slots__ = ("rpm",)
     XATTRS = (XAttr("rpm", float),)
-    rpm: float
+    rpm: float | Expr
 
-    def __init__(self, rpm: float) -> None:
+    def __init__(self, rpm: float | Expr) -> None:
         self.rpm = rpm
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class SpindleControl(Section):
     """Spindle on clockwise ('cw'), counter-clockwise ('ccw') or 'stop'. ``before_motion``: a stop that
     the reading controller makes before its block's motion (the RS274/NGC order of execution), where
     the neutral order (``postproc.event_order``) makes it after."""
 
-    XNAME = KEY = "SpindleControl"
+    XNAME = "SpindleControl"
+
+    KEY = "SpindleControl"
     __slots__ = ("direction", "before_motion")
     XATTRS = (XAttr("direction", str), XAttr("before_motion", bool, False))
     direction: str
@@ -150,10 +184,13 @@ class SpindleControl(Section):
         self.before_motion = before_motion
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class SpindleOrientation(Section):
     """Oriented spindle stop at an angle in degrees."""
 
-    XNAME = KEY = "SpindleOrientation"
+    XNAME = "SpindleOrientation"
+
+    KEY = "SpindleOrientation"
     __slots__ = ("angle",)
     XATTRS = (XAttr("angle", float, 0.0),)
     angle: float
@@ -162,29 +199,38 @@ class SpindleOrientation(Section):
         self.angle = angle
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class ToolSelect(Section):
     """Tool number prepared or selected."""
 
-    XNAME = KEY = "ToolSelect"
+    XNAME = "ToolSelect"
+
+    KEY = "ToolSelect"
     __slots__ = ("number",)
     XATTRS = (XAttr("number", int),)
-    number: int
+    number: int | Expr
 
-    def __init__(self, number: int) -> None:
+    def __init__(self, number: int | Expr) -> None:
         self.number = number
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class ToolChange(Section):
     """Change to the selected tool."""
 
-    XNAME = KEY = "ToolChange"
+    XNAME = "ToolChange"
+
+    KEY = "ToolChange"
     __slots__ = ()
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class ToolLengthOffset(Section):
     """'positive', 'negative' or 'cancel', with the offset register."""
 
-    XNAME = KEY = "ToolLengthOffset"
+    XNAME = "ToolLengthOffset"
+
+    KEY = "ToolLengthOffset"
     __slots__ = ("mode", "register")
     XATTRS = (XAttr("mode", str), XAttr("register", int, None))
     mode: str
@@ -195,10 +241,13 @@ class ToolLengthOffset(Section):
         self.register = register
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class CutterCompensation(Section):
     """'off', 'left' or 'right', with the offset register."""
 
-    XNAME = KEY = "CutterCompensation"
+    XNAME = "CutterCompensation"
+
+    KEY = "CutterCompensation"
     __slots__ = ("mode", "register")
     XATTRS = (XAttr("mode", str), XAttr("register", int, None))
     mode: str
@@ -209,11 +258,14 @@ class CutterCompensation(Section):
         self.register = register
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class Coolant(Section):
     """'flood', 'mist' or 'off'. ``before_motion``: coolant off that the reading controller makes before
     its block's motion (as ``SpindleControl.before_motion``)."""
 
-    XNAME = KEY = "Coolant"
+    XNAME = "Coolant"
+
+    KEY = "Coolant"
     __slots__ = ("mode", "before_motion")
     XATTRS = (XAttr("mode", str), XAttr("before_motion", bool, False))
     mode: str
@@ -224,22 +276,28 @@ class Coolant(Section):
         self.before_motion = before_motion
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class Dwell(Section):
     """Dwell for a time in seconds."""
 
-    XNAME = KEY = "Dwell"
+    XNAME = "Dwell"
+
+    KEY = "Dwell"
     __slots__ = ("seconds",)
     XATTRS = (XAttr("seconds", float),)
-    seconds: float
+    seconds: float | Expr
 
-    def __init__(self, seconds: float) -> None:
+    def __init__(self, seconds: float | Expr) -> None:
         self.seconds = seconds
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class ProgramControl(Section):
     """'stop', 'optional_stop', 'end' or 'end_rewind'."""
 
-    XNAME = KEY = "ProgramControl"
+    XNAME = "ProgramControl"
+
+    KEY = "ProgramControl"
     __slots__ = ("kind",)
     XATTRS = (XAttr("kind", str),)
     kind: str
@@ -248,10 +306,13 @@ class ProgramControl(Section):
         self.kind = kind
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class PathControl(Section):
     """'exact_stop' or 'cutting' path control."""
 
-    XNAME = KEY = "PathControl"
+    XNAME = "PathControl"
+
+    KEY = "PathControl"
     __slots__ = ("mode", "one_shot")
     XATTRS = (XAttr("mode", str), XAttr("one_shot", bool, False))
     mode: str
@@ -262,10 +323,13 @@ class PathControl(Section):
         self.one_shot = one_shot
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class ReturnLevel(Section):
     """Canned-cycle return: 'initial' level or 'r' level."""
 
-    XNAME = KEY = "ReturnLevel"
+    XNAME = "ReturnLevel"
+
+    KEY = "ReturnLevel"
     __slots__ = ("level",)
     XATTRS = (XAttr("level", str),)
     level: str
@@ -274,24 +338,33 @@ class ReturnLevel(Section):
         self.level = level
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class CycleCancel(Section):
     """Cancel the active canned cycle."""
 
-    XNAME = KEY = "CycleCancel"
+    XNAME = "CycleCancel"
+
+    KEY = "CycleCancel"
     __slots__ = ()
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class MachineCoordinates(Section):
     """One-shot: this block's motion is in machine coordinates."""
 
-    XNAME = KEY = "MachineCoordinates"
+    XNAME = "MachineCoordinates"
+
+    KEY = "MachineCoordinates"
     __slots__ = ()
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class CycleCall(Section):
     """A canned cycle programmed in this block, by neutral name (e.g. 'drill', 'back_bore')."""
 
-    XNAME = KEY = "CycleCall"
+    XNAME = "CycleCall"
+
+    KEY = "CycleCall"
     __slots__ = ("kind",)
     XATTRS = (XAttr("kind", str),)
     kind: str
@@ -300,10 +373,13 @@ class CycleCall(Section):
         self.kind = kind
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class Sequence(Section):
     """Block (sequence) number, N on most controllers. Written out by hand: it is on most blocks."""
 
-    XNAME = KEY = "Sequence"
+    XNAME = "Sequence"
+
+    KEY = "Sequence"
     __slots__ = ("number",)
     XATTRS = (XAttr("number", int),)
 
@@ -311,21 +387,27 @@ class Sequence(Section):
         self.number = number
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class Feed(Section):
     """Feed rate in program units per minute (or per rev). Written out by hand: it is frequent."""
 
-    XNAME = KEY = "Feed"
+    XNAME = "Feed"
+
+    KEY = "Feed"
     __slots__ = ("value",)
     XATTRS = (XAttr("value", float),)
 
-    def __init__(self, value: float) -> None:
+    def __init__(self, value: float | Expr) -> None:
         self.value = value
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class Comments(Section):
     """The comments written in a block, in order (without delimiters)."""
 
-    XNAME = KEY = "Comments"
+    XNAME = "Comments"
+
+    KEY = "Comments"
     __slots__ = ("texts",)
 
     def __init__(self, texts: list[str]) -> None:
@@ -366,6 +448,7 @@ def _axes_to_xml(parent: etree._Element, tag: str, axes: dict[str, Any]) -> None
             child.set(k, repr(float(v)))
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class Motion(Section):
     """A programmed move: mode 'rapid', 'linear', 'cw', 'ccw', or 'home'/'home2' (return to the first or
     second reference point through the programmed intermediate point), axis words as programmed.
@@ -375,11 +458,13 @@ class Motion(Section):
     centre offsets from the start point (per plane axis letter X/Y/Z) and ``radius`` the R form.
     """
 
-    XNAME = KEY = "Motion"
+    XNAME = "Motion"
+
+    KEY = "Motion"
     __slots__ = ("mode", "axes", "center", "radius")
 
-    def __init__(self, mode: str | None, axes: dict[str, float], center: dict[str, float] | None = None,
-                 radius: float | None = None) -> None:
+    def __init__(self, mode: str | None, axes: dict[str, float | Expr],
+                 center: dict[str, float | Expr] | None = None, radius: float | Expr | None = None) -> None:
         self.mode = mode
         self.axes = axes
         self.center = center
@@ -419,13 +504,16 @@ class Motion(Section):
         return f"Motion({self.mode!r}, {self.axes!r}, center={self.center!r}, radius={self.radius!r})"
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class NativeCode(Section):
     """A construct with no neutral meaning, kept verbatim for its own dialect (e.g. ISG ``#CYL``).
 
     It round-trips unchanged within ``dialect`` and is an unsupported construct everywhere else.
     """
 
-    XNAME = KEY = "NativeCode"
+    XNAME = "NativeCode"
+
+    KEY = "NativeCode"
     __slots__ = ("dialect", "what", "text")
     XATTRS = (XAttr("dialect"), XAttr("what"), XAttr("text"))
 
@@ -435,13 +523,16 @@ class NativeCode(Section):
         self.text = text
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class MachineFunction(Section):
     """A machine-specific code (an M code of the machine builder, a machine G code such as a smoothing
     setting) with the words it takes, as written (``text``). It passes verbatim between controllers of
     ``family`` and has no equivalent anywhere else; the simulation runs its ``action`` (one of
     ``postproc.setup.MachineCode``'s). ``declared``: the set-up or the family's defaults know it."""
 
-    XNAME = KEY = "MachineFunction"
+    XNAME = "MachineFunction"
+
+    KEY = "MachineFunction"
     __slots__ = ("family", "code", "action", "name", "text", "declared")
     XATTRS = (XAttr("family"), XAttr("code"), XAttr("action", str, "none"), XAttr("name", str, ""),
               XAttr("text"), XAttr("declared", bool, True))
@@ -466,6 +557,7 @@ class MachineFunction(Section):
         return f"{self.code} ({self.name})" if self.name else self.code
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class DataSetting(Section):
     """Programmable data input (Fanuc ``G10 L2 P1 X.. Y..``): write ``values`` (axis letter or 'R' ->
     value in program units) into entry ``index`` of a controller table. ``table`` is neutral:
@@ -473,10 +565,12 @@ class DataSetting(Section):
     'tool_length', 'tool_length_wear', 'cutter_offset', 'cutter_offset_wear'. ``incremental``: the values
     are added to the entry. ``text`` is the block's setting as written, passed verbatim within ``family``."""
 
-    XNAME = KEY = "DataSetting"
+    XNAME = "DataSetting"
+
+    KEY = "DataSetting"
     __slots__ = ("family", "table", "index", "values", "incremental", "text")
 
-    def __init__(self, family: str, table: str, index: int, values: dict[str, float], incremental: bool,
+    def __init__(self, family: str, table: str, index: int, values: dict[str, float | Expr], incremental: bool,
                  text: str) -> None:
         self.family = family
         self.table = table
@@ -490,7 +584,7 @@ class DataSetting(Section):
 
     @classmethod
     def from_xml(cls, el: etree._Element) -> "DataSetting":
-        values: dict[str, float] = {}
+        values: dict[str, float | Expr] = {}
         for c in el:
             if c.tag == "Values":
                 values = {k: float(v) for k, v in c.attrib.items()}
@@ -506,6 +600,8 @@ class DataSetting(Section):
         el.set("text", self.text)
         values = etree.SubElement(el, "Values")
         for k, v in self.values.items():
+            if isinstance(v, Expr):  # G10 with a computed word: known defect, reported in docs/compiled.md
+                raise TypeError(f"DataSetting: the computed value of {k} has no XML form")
             values.set(k, repr(float(v)))
         return el
 
@@ -521,6 +617,7 @@ SIMPLE_SECTIONS: tuple[type[Section], ...] = (
 )
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class Block:
     """One block of a program. Not an ``XmlNode`` subclass only to stay lean; it serialises the same way.
 
@@ -531,7 +628,7 @@ class Block:
     its expression (``Expr``, G and M included), serialised as ``<Word kind="expr">`` holding the tree.
     """
 
-    XNAME = "Block"
+    XNAME: ClassVar[str] = "Block"
     __slots__ = ("line", "text", "eol", "words", "values", "sections", "canonical")
 
     def __init__(self, line: int, text: str | None, eol: str = "\n",
@@ -562,6 +659,12 @@ class Block:
             return NotImplemented
         return (self.line, self.text, self.eol, self.words, self.values, self.sections) == (
             other.line, other.text, other.eol, other.words, other.values, other.sections)
+
+    def __getstate__(self) -> dict[str, Any]:
+        return slot_state(self)
+
+    def __setstate__(self, state: dict[str, Any]) -> None:
+        restore_slots(self, state)
 
     def __repr__(self) -> str:
         return f"Block(line={self.line}, text={self.text!r}, sections={list(self.sections.values())!r})"
@@ -650,11 +753,14 @@ def iter_sections() -> Iterator[type[Section]]:
     yield from (*SIMPLE_SECTIONS, Comments, Motion, NativeCode, CompoundMotion, DataSetting)
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class CompoundMotion(Section):
     """The explicit motion a construct stands for (a canned cycle's rapids, feeds, dwells, spindle
     actions), in execution order. Moves inside are absolute, in program units."""
 
-    XNAME = KEY = "CompoundMotion"
+    XNAME = "CompoundMotion"
+
+    KEY = "CompoundMotion"
     __slots__ = ("term", "_items", "_make")
 
     def __init__(self, term: str, items: list[Section]) -> None:

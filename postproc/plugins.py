@@ -10,6 +10,9 @@ from typing import Iterable
 
 import pluggy
 
+from . import native
+native.install()  # the compiled hot path, before any of its modules is imported
+
 from . import hookspecs
 from .control import register_control
 from .dialect import Dialect

@@ -8,6 +8,8 @@ A dialect's reading pipeline is an XML file of syntax elements loaded through th
 
 from __future__ import annotations
 
+from mypy_extensions import mypyc_attr
+
 import abc
 from pathlib import Path
 from typing import Callable, Iterable, Iterator
@@ -21,6 +23,7 @@ from .source_map import locate
 from .xmlio import DEFAULT, XFactory, XmlNode, parse_xml_file, where
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class Syntax(XmlNode, metaclass=abc.ABCMeta):
     """Base of every processing step. Subclasses set ``XNAME`` and implement ``build``."""
 
@@ -42,6 +45,7 @@ class Syntax(XmlNode, metaclass=abc.ABCMeta):
         return type(self).process is not Syntax.process
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class Pipeline(XmlNode):
     """An ordered list of syntax objects. Consecutive per-block steps are fused into one loop."""
 

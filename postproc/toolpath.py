@@ -37,6 +37,7 @@ from .machine_functions import drop_foreign_machine_functions
 from .program_end import EndTracker, comment_after_end
 from .dialect import Dialect
 from .errors import Diagnostics, Location, PostprocError, ProgramError, UnsupportedError
+from .expr import Expr
 from .cycles.lathe_lowering import lathe_tool
 from .event_order import after_motion
 from .geometry import CENTRE_KEYS, PLACES
@@ -47,6 +48,9 @@ from .setup import MachineSetup
 from .travel import TravelCheck, TravelError
 from .state import MM_PER_INCH, MODAL_KEYS, PLANE_AXES, ModalState
 from .context import Context
+
+UNEVALUATED = "a computed word reaches the simulation unevaluated"
+"""The interpreter evaluates every expression first: an ``Expr`` here is a defect, reported where it is."""
 
 Event = dict[str, Any]
 
@@ -368,7 +372,8 @@ class Simulator:
         else:
             raise UnsupportedError(f"motion '{mode}' cannot be simulated", self._at(block))
 
-    def target(self, block: Block, axes: dict[str, float], absolute: bool, machine: bool = False) -> dict[str, float]:
+    def target(self, block: Block, axes: dict[str, float | Expr], absolute: bool,
+               machine: bool = False) -> dict[str, float]:
         """End point in mm of programmed axis words (absolute or incremental); an absolute point in work
         coordinates is shifted by the work offset a G10 set (``shift``), one in machine coordinates not."""
         pos = self.pos
@@ -376,6 +381,8 @@ class Simulator:
         incremental = self.incremental and not absolute
         shift = self.shift if not machine and not incremental else None
         for axis, value in axes.items():
+            if isinstance(value, Expr):
+                raise ProgramError(UNEVALUATED, self._at(block, axis))
             if self.lathe and axis in _LATHE_INCREMENTS:
                 real = _LATHE_INCREMENTS[axis]
                 if real not in pos:
@@ -402,6 +409,8 @@ class Simulator:
         key = setting.index if setting.table == "work_offset" else 100 + setting.index
         entry = self.offsets.setdefault(key, {})
         for axis, value in setting.values.items():
+            if isinstance(value, Expr):
+                raise ProgramError(UNEVALUATED, self._at(block, axis))
             v = value * self.scale if axis in LINEAR_AXES else value
             entry[axis] = entry.get(axis, 0.0) + v if setting.incremental else v
         self._shift()
@@ -441,7 +450,7 @@ class Simulator:
         self.pos, self.rounded = target, rounded
         emit(ev)
 
-    def _programmed(self, axes: dict[str, float]) -> set[str]:
+    def _programmed(self, axes: dict[str, float | Expr]) -> set[str]:
         """The machine axes a block's axis words name (a lathe's U and W are X and Z)."""
         return {_LATHE_INCREMENTS.get(a, a) if self.lathe else a for a in axes}
 
@@ -465,12 +474,17 @@ class Simulator:
         s = (pos[a1], pos[a2])
         e = (target[a1], target[a2])
         clockwise = m.mode == "cw"
-        offsets = m.center or {}
-        for axis in offsets:
+        offsets: dict[str, float] = {}
+        for axis, value in (m.center or {}).items():
             if axis not in (a1, a2):
                 raise ProgramError(f"arc centre offset along {axis} is outside the {plane} plane",
                                    self._at(block, _CENTRE_LETTER.get(axis, "G")))
+            if isinstance(value, Expr):
+                raise ProgramError(UNEVALUATED, self._at(block, _CENTRE_LETTER.get(axis, "G")))
+            offsets[axis] = value
         scale = self.scale
+        if isinstance(m.radius, Expr):
+            raise ProgramError(UNEVALUATED, self._at(block, "R"))
         radius = None if m.radius is None else m.radius * scale
         try:
             c = arc_centre(s, e, (a1, a2), radius, {a: v * scale for a, v in offsets.items()}, clockwise)

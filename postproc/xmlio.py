@@ -8,6 +8,8 @@ and an idempotent ``reg(factory)``. Simple nodes declare their attributes with `
 
 from __future__ import annotations
 
+from mypy_extensions import mypyc_attr
+
 import re
 from pathlib import Path
 from typing import Any, Callable, ClassVar, Iterator, TypeVar
@@ -112,6 +114,7 @@ def where(el: etree._Element, file: str | None = None) -> Location:
     return Location(str(src), el.sourceline or 1, 1)
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class XFactory:
     """Maps element names to constructors. ``reg`` on a node class is idempotent."""
 
@@ -155,6 +158,7 @@ class XFactory:
 DEFAULT = XFactory()
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class XAttr:
     """Declares one XML attribute of a node: Python name, type, optional default and XML name."""
 
@@ -235,6 +239,42 @@ def encode(value: Any) -> str:
     return str(value)
 
 
+_STATE_NAMES: dict[type, tuple[str, ...]] = {}
+
+
+def _state_names(cls: type) -> tuple[str, ...]:
+    """The instance attributes of ``cls`` and its ancestors: their ``__slots__``, or for a class compiled
+    with mypyc (which keeps no ``__slots__``) its ``__mypyc_attrs__``."""
+    names = _STATE_NAMES.get(cls)
+    if names is None:
+        found: list[str] = []
+        for klass in cls.__mro__:
+            declared = klass.__dict__.get("__slots__", ())
+            for name in ((declared,) if isinstance(declared, str) else tuple(declared)) + tuple(
+                    klass.__dict__.get("__mypyc_attrs__", ())):
+                if not name.startswith("__") and name not in found:
+                    found.append(name)
+        names = _STATE_NAMES[cls] = tuple(found)
+    return names
+
+
+def slot_state(obj: object) -> dict[str, Any]:
+    """``__getstate__`` for slotted classes: copy and pickle see the same attributes whether a class and
+    its ancestors run compiled or not (mypyc's own would drop an interpreted subclass's slots)."""
+    state: dict[str, Any] = dict(getattr(obj, "__dict__", {}))
+    state.update((name, getattr(obj, name)) for name in _state_names(type(obj)) if hasattr(obj, name))
+    return state
+
+
+def restore_slots(obj: object, state: dict[str, Any]) -> None:
+    """``__setstate__`` matching ``slot_state``."""
+    for name, value in state.items():
+        setattr(obj, name, value)
+
+
+# Every class of a compiled module carries allow_interpreted_subclasses (docs/compiled.md): plugins
+# subclass them, and only then does mypyc create an instance without __init__ (copy, pickle).
+@mypyc_attr(allow_interpreted_subclasses=True)
 class XmlNode:
     """Base of every XML-serialisable object. Subclasses list their attributes as ``XAttr``s.
 
@@ -282,6 +322,12 @@ class XmlNode:
 
     def _xvalue(self, name: str) -> Any:
         return getattr(self, name)
+
+    def __getstate__(self) -> dict[str, Any]:
+        return slot_state(self)
+
+    def __setstate__(self, state: dict[str, Any]) -> None:
+        restore_slots(self, state)
 
     @classmethod
     def reg(cls, factory: XFactory | None = None) -> None:

@@ -68,7 +68,7 @@ class FagorBlockSyntax(WordBlockSyntax):
         k = values["K"]
         used.add("K")
         if isinstance(k, Expr):
-            block.add(Dwell(k if unit == 1.0 else Binary("mul", k, Num(unit))))  # type: ignore[arg-type]
+            block.add(Dwell(k if unit == 1.0 else Binary("mul", k, Num(unit))))
             return
         if k < 0:
             raise ProgramError("a dwell time cannot be negative", at)

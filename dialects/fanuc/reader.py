@@ -3,6 +3,8 @@ reported per block; the block is kept (as text only)."""
 
 from __future__ import annotations
 
+from mypy_extensions import mypyc_attr
+
 from typing import Iterable, Iterator
 
 from postproc.dialect import Reader
@@ -22,6 +24,7 @@ _FAST_START = frozenset("NGXYZABCUVWIJKRFSTMHDPQ")
 a program number, nor anything that is not an upper-case address)."""
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class FanucReader(Reader):
     def read(self, lines: Iterable[str]) -> Iterator[Block]:
         file = self.ctx.file

@@ -14,6 +14,10 @@ from __future__ import annotations
 import argparse
 import os
 
+from .. import native
+
+native.install()  # the compiled hot path, before any of its modules is imported
+
 BATCH_OPTIONS = ("jobs", "report", "verify", "scheduler", "ext", "include", "files_per_task")
 """Options that only a batch has: any of them makes the command a batch."""
 

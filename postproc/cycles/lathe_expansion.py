@@ -13,6 +13,7 @@ from typing import TYPE_CHECKING, Any, Sequence
 
 from postproc.block_rules import ArcError, arc_centre
 from postproc.context import Context
+from postproc.expr import Expr
 from postproc.errors import ProgramError
 from postproc.ir import Block, Feed, Motion, Section
 from postproc.lathe_sections import LatheCycle
@@ -66,7 +67,14 @@ def profile_segments(blocks: Sequence[Block], start: tuple[float, float], ctx: C
         cx = cz = None
         if motion.mode in ("cw", "ccw"):
             radius = motion.radius
-            offsets = {a: float(v) for a, v in (motion.center or {}).items()}
+            offsets: dict[str, float] = {}
+            for a, v in (motion.center or {}).items():
+                if isinstance(v, Expr):
+                    radius = v  # refused below with the radius
+                    break
+                offsets[a] = v
+            if isinstance(radius, Expr):
+                raise ProgramError(f"{code}: a computed word in the profile cannot be expanded", ctx.at(block))
             try:
                 centre = arc_centre((z, x), (z1, x1), ("Z", "X"), radius, offsets, motion.mode == "cw")
             except ArcError as err:
@@ -147,7 +155,7 @@ def to_sections(moves: Sequence[TurnMove], start: tuple[float, float], ctx: Cont
         if move.kind != "rapid" and move.feed is not None and move.feed != feed:
             feed = move.feed
             items.append(Feed(feed))
-        axes = {"X": move.x * scale, "Z": move.z}
+        axes: dict[str, float | Expr] = {"X": move.x * scale, "Z": move.z}
         if move.kind == "rapid":
             items.append(Motion("rapid", axes))
         elif move.kind == "feed":
@@ -155,7 +163,8 @@ def to_sections(moves: Sequence[TurnMove], start: tuple[float, float], ctx: Cont
         else:
             if move.cx is None or move.cz is None:
                 raise ProgramError("a lathe cycle arc without its centre")
-            items.append(Motion(move.kind, axes, {"X": move.cx - x, "Z": move.cz - z}))
+            centre: dict[str, float | Expr] = {"X": move.cx - x, "Z": move.cz - z}
+            items.append(Motion(move.kind, axes, centre))
         x, z = move.x, move.z
     return items
 

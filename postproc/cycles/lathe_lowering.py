@@ -20,6 +20,7 @@ from typing import Iterator
 
 from postproc.context import Context
 from postproc.dialect import Dialect
+from postproc.expr import Expr
 from postproc.errors import UnsupportedError
 from postproc.ir import (
     Block, Comments, CompoundMotion, DistanceMode, FeedMode, Motion, Plane, ToolChange, ToolSelect,
@@ -175,7 +176,7 @@ class _Position:
         if not any(a in axes for a in "XUW"):
             self._track(motion, axes)
             return False
-        new: dict[str, float] = {}
+        new: dict[str, float | Expr] = {}
         for axis, value in axes.items():
             if axis in ("U", "W"):
                 base = self.x if axis == "U" else self.z
@@ -187,12 +188,16 @@ class _Position:
             else:
                 new[axis] = value
         self._track(motion, new)
-        if self.radius and "X" in new:
-            new["X"] = new["X"] / 2.0
+        x = new.get("X")
+        if self.radius and x is not None:
+            if isinstance(x, Expr):
+                raise UnsupportedError("a computed X on a target that programs radii (halve it in the program)",
+                                       self.ctx.at(block))
+            new["X"] = x / 2.0
         motion.axes = new
         return True
 
-    def _track(self, motion: Motion, axes: dict[str, float]) -> None:
+    def _track(self, motion: Motion, axes: dict[str, float | Expr]) -> None:
         if motion.mode in ("home", "home2"):
             self.x = None if "X" in axes or "U" in axes else self.x
             self.z = None if "Z" in axes or "W" in axes else self.z

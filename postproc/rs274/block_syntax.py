@@ -15,6 +15,8 @@ decimal point, so the decimal-point rule applies to written numbers only). A com
 
 from __future__ import annotations
 
+from mypy_extensions import mypyc_attr
+
 from typing import Any, ClassVar, Mapping
 
 from postproc.errors import ParseError, ProgramError
@@ -43,6 +45,7 @@ DATA_KEY = "10"
 """The number of the family's programmable data input code (``DataSetting``)."""
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class WordBlockSyntax(Syntax):
     """Lexed words -> neutral sections, ISO/Fanuc word rules; subclasses give the code table."""
 
@@ -193,7 +196,7 @@ class WordBlockSyntax(Syntax):
         address), so the general path reads the block and reports its errors.
         """
         values = block.values
-        axes: dict[str, float] = {}
+        axes: dict[str, float | Expr] = {}
         for letter, num in words:
             up = _UPPER[letter]
             if up in values:
@@ -219,7 +222,7 @@ class WordBlockSyntax(Syntax):
                         for up in axes:
                             mix.saw_pointed(ctx, up, block.line)
             if "F" in values:
-                block.sections["Feed"] = Feed(values["F"])  # type: ignore[arg-type]  # a number on this path
+                block.sections["Feed"] = Feed(values["F"])
             return True
         values.clear()
         return False

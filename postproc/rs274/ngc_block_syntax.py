@@ -312,7 +312,7 @@ class NgcWordBlockSyntax(WordBlockSyntax):
         seconds = values["P"]
         if isinstance(seconds, Expr):
             used.add("P")
-            block.add(Dwell(seconds))  # type: ignore[arg-type]
+            block.add(Dwell(seconds))
             return
         seconds = float(seconds)
         if seconds < 0:

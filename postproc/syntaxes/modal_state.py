@@ -11,6 +11,8 @@ It also refuses a negative F or S (``postproc.block_rules``): every reading pass
 
 from __future__ import annotations
 
+from mypy_extensions import mypyc_attr
+
 from math import hypot
 from typing import NoReturn
 
@@ -29,6 +31,7 @@ LATHE_INCREMENTS = {"U": "X", "W": "Z"}
 """On a lathe, U and W are incremental X and Z whatever the distance mode (Fanuc T system A, GSK)."""
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class ModalStateSyntax(Syntax):
     XNAME = "ModalStateSyntax"
     __slots__ = ()
@@ -66,16 +69,15 @@ class ModalStateSyntax(Syntax):
             for axis in motion.axes:
                 pos[axis] = None
             return
-        if state.distance != "incremental":
-            pos.update(motion.axes)
-        else:
-            for axis, value in motion.axes.items():
+        incremental = state.distance == "incremental"
+        for axis, value in motion.axes.items():
+            if isinstance(value, Expr):
+                pos[axis] = None  # computed: known only when the program runs
+            elif incremental:
                 old = pos.get(axis)
-                pos[axis] = None if old is None or isinstance(value, Expr) else old + value
-        if state.symbolic:
-            for axis, value in motion.axes.items():
-                if isinstance(value, Expr):
-                    pos[axis] = None  # computed: known only when the program runs
+                pos[axis] = None if old is None else old + value
+            else:
+                pos[axis] = value
 
 
 _FEED_MOTION = frozenset(("linear", "cw", "ccw", "thread"))
@@ -118,21 +120,31 @@ def _lathe_move(ctx: Context, motion: Motion) -> None:
             pos[target] = None if old is None or isinstance(value, Expr) else old + value
 
 
+def _numbers(values: dict[str, float | Expr]) -> dict[str, float] | None:
+    """The words' values as numbers, or None when one is computed (known only when the program runs)."""
+    numbers: dict[str, float] = {}
+    for letter, value in values.items():
+        if isinstance(value, Expr):
+            return None
+        numbers[letter] = value
+    return numbers
+
+
 def _check_arc(block: Block, ctx: Context, motion: Motion) -> None:
     """Refuse an arc no controller runs (``postproc.block_rules.arc_centre``) when its start is known,
     so ``translate`` refuses what ``toolpath`` refuses; an arc with a computed word waits for the run."""
     state = ctx.state
     a1, a2, _ = PLANE_AXES[state.plane]
-    axes = motion.axes
-    center = motion.center
-    radius = motion.radius
-    if center:
-        for axis in center:
+    if motion.center:
+        for axis in motion.center:
             if axis != a1 and axis != a2:
                 _refuse(block, ctx, motion, ArcError(f"arc centre offset along {axis} is outside the "
                                                      f"{state.plane} plane", _CENTRE_LETTERS.get(axis, "G")))
-    if state.symbolic and any(isinstance(v, Expr) for v in (*axes.values(), *(center or {}).values(), radius)):
-        return
+    axes = _numbers(motion.axes)
+    center = _numbers(motion.center) if motion.center else {}
+    radius = motion.radius
+    if axes is None or center is None or isinstance(radius, Expr):
+        return  # a computed word (a symbolic program): the arc is checked when the program runs
     incremental = state.distance == "incremental"
     lathe = ctx.lathe
     if radius is not None and not any(

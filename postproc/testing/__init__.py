@@ -31,6 +31,9 @@ from pathlib import Path
 import pytest
 from hypothesis import HealthCheck, given, settings
 
+from .. import native
+native.install()  # the compiled hot path, before any of its modules is imported
+
 from .checks import (
     DialectUnderTest, cross_problems, garbage_problems, generated_problems, invalid_problems, ir_xml_problems,
     read_text, round_trip_problems, targets,

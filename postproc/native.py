@@ -1,0 +1,107 @@
+"""The compiled hot path (mypyc), used only when it was built from exactly the sources on disk.
+
+``setup.py`` compiles the hot modules (``[tool.postproc] compiled`` in ``pyproject.toml``) into
+``postproc/_compiled/``, a tree that mirrors their dotted names, and writes ``manifest.json`` there with
+the SHA-256 of every source it compiled. The ``.py`` files stay where they are, so one installation
+holds both: a meta-path finder placed before Python's own serves the compiled modules, unless
+``POSTPROC_PURE=1``, the tree is missing (no C compiler at install time) or incomplete, or a source
+differs from the one compiled (an edited checkout runs pure Python until ``make install`` rebuilds it).
+
+The compiled modules are one group that calls itself natively, so it is used whole or not at all: a
+pure module in their midst would not be the class they check against.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import importlib.machinery
+import json
+import os
+import sys
+from importlib.machinery import ModuleSpec
+from pathlib import Path
+from types import ModuleType
+from typing import Mapping, Sequence
+
+ROOT = Path(__file__).resolve().parent.parent
+"""The folder that holds ``postproc/`` and ``dialects/`` (site-packages, or the checkout when editable)."""
+
+PURE_VARIABLE = "POSTPROC_PURE"
+
+
+class CompiledFinder:
+    """Finds the compiled modules (and their shared library) in ``postproc/_compiled/``."""
+
+    def __init__(self, files: dict[str, Path]) -> None:
+        self.files = files
+
+    def find_spec(self, fullname: str, path: Sequence[str] | None,
+                  target: ModuleType | None = None) -> ModuleSpec | None:
+        file = self.files.get(fullname)
+        if file is None:
+            return None
+        loader = importlib.machinery.ExtensionFileLoader(fullname, str(file))
+        return importlib.machinery.ModuleSpec(fullname, loader, origin=str(file))
+
+
+def _digest(path: Path) -> str:
+    return hashlib.sha256(path.read_bytes()).hexdigest()
+
+
+def plan(root: Path, environ: Mapping[str, str]) -> tuple[str, dict[str, Path]]:
+    """Why pure Python runs (or ``""``), and the compiled files by module name, for the installation
+    in ``root`` (the folder holding ``postproc/``)."""
+    if environ.get(PURE_VARIABLE, "") not in ("", "0"):
+        return f"{PURE_VARIABLE}={environ[PURE_VARIABLE]}", {}
+    compiled = root / "postproc" / "_compiled"
+    try:
+        manifest = json.loads((compiled / "manifest.json").read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return "not compiled at install time", {}
+    suffix = importlib.machinery.EXTENSION_SUFFIXES[0]
+    if manifest.get("suffix") != suffix:
+        return f"compiled for {manifest.get('suffix')}, not {suffix}", {}
+    files: dict[str, Path] = {}
+    for name, entry in manifest["modules"].items():
+        file = compiled / entry["file"]
+        if not file.is_file():
+            return f"the compiled build is incomplete ({entry['file']} is missing)", {}
+        source = entry.get("source")
+        if source is not None:
+            try:
+                fresh = _digest(root / source) == entry["sha256"]
+            except OSError:
+                fresh = False
+            if not fresh:
+                return f"{source} changed since it was compiled (run make install)", {}
+        files[name] = file
+    return "", files
+
+
+_REASON, _FILES = plan(ROOT, os.environ)
+
+
+def install() -> None:
+    """Put the compiled modules first on the import path. Called by postproc's entry points (``api``,
+    ``cli``, ``plugins``, ``batch``, ``testing``) before they import anything else; a process that
+    imported a hot module by itself first keeps pure Python (the group is used whole or not at all)."""
+    global _REASON, _FILES
+    if not _FILES or any(isinstance(f, CompiledFinder) for f in sys.meta_path):
+        return
+    early = sorted(name for name in _FILES if name in sys.modules)
+    if early:
+        _REASON, _FILES = f"{early[0]} was imported before postproc's entry points", {}
+        return
+    sys.meta_path.insert(0, CompiledFinder(_FILES))
+
+
+def compiled_modules() -> list[str]:
+    """The hot modules this process runs compiled (sources listed in the manifest)."""
+    return sorted(name for name in _FILES if not name.endswith("__mypyc"))
+
+
+def describe() -> str:
+    """One line for ``postproc --version``: which build of the hot path runs, and why."""
+    if _FILES:
+        return f"compiled (mypyc): {len(compiled_modules())} hot modules"
+    return f"pure Python ({_REASON})"

@@ -1,0 +1,146 @@
+"""The compiled hot path and its pure-Python fallback: which one runs, that a stale or partial build is
+never used, and that both translate byte for byte alike (``make test`` also runs the whole suite under
+each; see docs/compiled.md)."""
+
+from __future__ import annotations
+
+import ast
+import copy
+import hashlib
+import importlib
+import importlib.machinery
+import json
+import os
+import pickle
+import subprocess
+import sys
+import tomllib
+from pathlib import Path
+
+import pytest
+
+from postproc import native
+from postproc.control import While
+from postproc.expr import Num
+from postproc.ir import Motion
+from postproc.source_map import ExecutedBlock
+
+ROOT = Path(__file__).resolve().parents[1]
+HOT = tomllib.loads((ROOT / "pyproject.toml").read_text(encoding="utf-8"))["tool"]["postproc"]["compiled"]
+MANIFEST = ROOT / "postproc" / "_compiled" / "manifest.json"
+PURE = os.environ.get("POSTPROC_PURE", "") not in ("", "0")
+SUFFIX = importlib.machinery.EXTENSION_SUFFIXES[0]
+
+
+def _module(source: str) -> str:
+    return source.removesuffix(".py").replace("/", ".")
+
+
+def test_the_hot_modules_run_as_the_build_says() -> None:
+    """Compiled when a fresh build is there and POSTPROC_PURE is not set, else every one pure."""
+    compiled = set(native.compiled_modules())
+    for source in HOT:
+        module = importlib.import_module(_module(source))
+        file = str(module.__file__)
+        if compiled:
+            assert file.endswith(SUFFIX), f"{source} runs as {file}, not compiled ({native.describe()})"
+        else:
+            assert file.endswith(".py"), f"{source} runs as {file}"
+    if PURE:
+        assert not compiled and native.describe() == "pure Python (POSTPROC_PURE=1)"
+
+
+@pytest.mark.skipif(PURE or not MANIFEST.is_file(), reason="no compiled build to check")
+def test_a_compiled_build_is_complete_and_fresh() -> None:
+    """An edited hot module must be compiled again (``make install``) before the suite runs compiled."""
+    assert sorted(native.compiled_modules()) == sorted(_module(s) for s in HOT), native.describe()
+
+
+def _tree(tmp_path: Path, source_text: str, recorded: str, with_file: bool = True) -> Path:
+    """A fake installation: one hot source and a manifest that records ``recorded`` as its text."""
+    (tmp_path / "postproc" / "_compiled" / "postproc").mkdir(parents=True)
+    (tmp_path / "postproc" / "hot.py").write_text(source_text, encoding="utf-8")
+    file = "postproc/hot" + SUFFIX
+    if with_file:
+        (tmp_path / "postproc" / "_compiled" / file).write_bytes(b"")
+    entry = {"file": file, "source": "postproc/hot.py",
+             "sha256": hashlib.sha256(recorded.encode()).hexdigest()}
+    manifest = {"suffix": SUFFIX, "modules": {"postproc.hot": entry}}
+    (tmp_path / "postproc" / "_compiled" / "manifest.json").write_text(json.dumps(manifest), encoding="utf-8")
+    return tmp_path
+
+
+def test_a_fresh_build_is_planned(tmp_path: Path) -> None:
+    reason, files = native.plan(_tree(tmp_path, "x = 1\n", "x = 1\n"), {})
+    assert reason == "" and list(files) == ["postproc.hot"]
+
+
+def test_an_edited_source_runs_pure(tmp_path: Path) -> None:
+    reason, files = native.plan(_tree(tmp_path, "x = 2\n", "x = 1\n"), {})
+    assert files == {} and reason == "postproc/hot.py changed since it was compiled (run make install)"
+
+
+def test_a_missing_extension_runs_pure(tmp_path: Path) -> None:
+    reason, files = native.plan(_tree(tmp_path, "x = 1\n", "x = 1\n", with_file=False), {})
+    assert files == {} and "incomplete" in reason
+
+
+def test_pure_is_forced_and_no_build_is_pure(tmp_path: Path) -> None:
+    assert native.plan(_tree(tmp_path, "x = 1\n", "x = 1\n"), {"POSTPROC_PURE": "1"}) == ("POSTPROC_PURE=1", {})
+    assert native.plan(tmp_path / "elsewhere", {}) == ("not compiled at install time", {})
+
+
+def test_copy_and_pickle_keep_every_attribute() -> None:
+    """mypyc's own pickling of a compiled class drops an interpreted subclass's slots (``While.cond``
+    came back missing in a batch): ``slot_state`` keeps them, compiled or not."""
+    loop = While("1", Num(3.0))
+    motion = Motion("feed", {"X": 1.0})
+    block = ExecutedBlock(7, "G1 X1", "\n", [("G", "1"), ("X", "1")], None)
+    for obj in (loop, motion, block):
+        for twin in (copy.copy(obj), copy.deepcopy(obj), pickle.loads(pickle.dumps(obj))):
+            assert type(twin) is type(obj)
+            for name in ("label", "cond", "mode", "axes", "line", "text", "words", "origin"):
+                if hasattr(obj, name):
+                    assert getattr(twin, name) == getattr(obj, name), name
+
+
+@pytest.mark.skipif(PURE or not MANIFEST.is_file(), reason="no compiled build to compare with")
+@pytest.mark.parametrize("args", [
+    ["--from", "fanuc", "--to", "fanuc"],
+    ["--from", "fanuc", "--to", "fanuc", "--normalize"],
+    ["--from", "fanuc", "--to", "linuxcnc"],
+    ["--from", "fanuc", "--to", "grbl", "--on-unsupported", "warn"],
+])
+def test_compiled_and_pure_translate_alike(args: list[str], tmp_path: Path) -> None:
+    """A differential check within one run: every bundled Fanuc example, translated by a compiled and a
+    pure process, gives the same bytes, warnings and status."""
+    programs = sorted((ROOT / "examples" / "fanuc").glob("*.nc"))
+    assert programs
+    runs = []
+    for pure in ("0", "1"):
+        out = tmp_path / pure
+        out.mkdir()
+        env = {**os.environ, "POSTPROC_PURE": pure}
+        results = []
+        for program in programs:
+            done = subprocess.run([sys.executable, "-m", "postproc", "translate", str(program), *args,
+                                   "-o", str(out / program.name)], env=env, capture_output=True)
+            text = (out / program.name).read_bytes() if (out / program.name).exists() else b""
+            results.append((program.name, done.returncode, done.stderr, text))
+        runs.append(results)
+    assert runs[0] == runs[1]
+
+
+@pytest.mark.parametrize("source", HOT)
+def test_a_compiled_module_follows_the_rules_mypyc_needs(source: str) -> None:
+    """docs/compiled.md: every class allows interpreted subclasses (plugins subclass them; copy and
+    pickle create instances without ``__init__`` only then), and no class body chains an assignment."""
+    tree = ast.parse((ROOT / source).read_text(encoding="utf-8"))
+    for node in ast.walk(tree):
+        if not isinstance(node, ast.ClassDef):
+            continue
+        marks = [ast.unparse(d) for d in node.decorator_list]
+        assert "mypyc_attr(allow_interpreted_subclasses=True)" in marks, f"{source}: class {node.name}"
+        for stmt in node.body:
+            assert not (isinstance(stmt, ast.Assign) and len(stmt.targets) > 1), \
+                f"{source}:{stmt.lineno}: split the chained assignment (mypyc refuses it in a class body)"
