@@ -21,6 +21,7 @@ from postproc.cycles.lowering import cancels, expands
 from postproc.cycles.section import CannedCycle
 from postproc.dialect import Dialect
 from postproc.errors import UnsupportedError
+from postproc.expr import Expr
 from postproc.ir import Block, Comments, CompoundMotion, Motion, Section
 
 from .geometry import first_point, pattern_hops
@@ -96,5 +97,5 @@ def _end(items: list[Section], pos: dict[str, float]) -> dict[str, float]:
     end = dict(pos)
     for item in items:
         if isinstance(item, Motion):
-            end.update({k: float(v) for k, v in item.axes.items()})
+            end.update({k: float(v) for k, v in item.axes.items() if not isinstance(v, Expr)})
     return end

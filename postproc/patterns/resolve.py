@@ -9,6 +9,8 @@ A dialect's reader builds the ``HolePattern`` from its words (the geometry) and 
 
 from __future__ import annotations
 
+from postproc.expr import Expr
+
 from postproc.context import Context
 from postproc.cycles.expansion import CycleExpansion, TooManyMoves
 from postproc.cycles.resolve import active_cycle
@@ -112,9 +114,10 @@ def cycle_at(pattern: HolePattern, cycle: CannedCycle, start: dict[str, float], 
 def _move(hop: Hop, pos: dict[str, float], first: str, second: str, normal: str) -> Motion:
     """The feed move or arc to the hop's point, at the level where the tool is (absolute axes)."""
     a, b = hop.point
-    target = {axis: pos[axis] for axis in "XYZ" if axis in pos}
+    target: dict[str, float | Expr] = {axis: pos[axis] for axis in "XYZ" if axis in pos}
     target[first], target[second] = a, b
     if hop.centre is None:
         return Motion(hop.mode, target)
     ca, cb = hop.centre
-    return Motion(hop.mode, target, center={first: ca - pos[first], second: cb - pos[second]})
+    centre: dict[str, float | Expr] = {first: ca - pos[first], second: cb - pos[second]}
+    return Motion(hop.mode, target, center=centre)
