@@ -14,7 +14,7 @@ from __future__ import annotations
 import os
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, Callable
 
 from lxml import etree
 
@@ -24,7 +24,7 @@ from .setup_validate import Invalid, validate
 from .xmlio import parse_xml_file, where
 
 if TYPE_CHECKING:
-    from .setup import MachineSetup, SetupGroup
+    from .setup_record import SetupGroup
 
 BASES = Path(__file__).parent / "bases"
 """The shipped bases, named by file name in ``extends``."""
@@ -119,7 +119,7 @@ class Merger:
 
     # -- reading each file ----------------------------------------------------------------------------
     def read(self, root: etree._Element, last: bool) -> None:
-        from .setup import _code_call_from_xml, _library_from_xml, _machine_codes_from_xml
+        from .setup_groups import code_call_from_xml, library_from_xml, machine_codes_from_xml
         unknown = sorted(set(root.attrib) - set(ROOT_ATTRIBUTES))
         if unknown:
             self.problem(f"<MachineSetup> has unknown attribute(s) {', '.join(unknown)}", root)
@@ -145,14 +145,14 @@ class Merger:
                 if tag == "Templates":
                     self.read_templates(child, last)
                 elif tag == "Library":
-                    library.append(self.rebase(_library_from_xml(child), root))
+                    library.append(self.rebase(library_from_xml(child), root))
                 elif tag == "MachineCodes":
-                    for declared in _machine_codes_from_xml(child):
+                    for declared in machine_codes_from_xml(child):
                         self.codes[declared.key()] = declared
                         if last:
                             self.own.codes.add(declared.key())
                 elif tag == "CodeCall":
-                    code, file = _code_call_from_xml(child)
+                    code, file = code_call_from_xml(child)
                     if code in calls_here:
                         raise ConfigError(f"<CodeCall code=\"{code}\"> appears twice", where(child))
                     calls_here.add(code)
@@ -195,7 +195,7 @@ class Merger:
             self.own.groups.setdefault(el.tag, set())
 
     def read_templates(self, el: etree._Element, last: bool) -> None:
-        from .setup import Templates
+        from .setup_groups import Templates
         file = el.getroottree().docinfo.URL or "<set-up>"
         if el.attrib:
             self.problem("<Templates> takes no attributes", el)
@@ -292,8 +292,9 @@ class Merger:
             out.extend(f for f in folders if f not in out)
         return out
 
-    def build(self, source: str | None) -> "MachineSetup":
-        from .setup import GROUPS, MachineSetup, MachineSettings, Templates
+    def build(self, source: str | None, make: Callable[..., Any]) -> Any:
+        """The set-up ``make`` (``MachineSetup``) builds from the merged values."""
+        from .setup_groups import GROUPS, MachineSettings, Templates
         kwargs: dict[str, Any] = {}
         extra: dict[str, Any] = {}
         for cls in self.groups.values():
@@ -307,7 +308,7 @@ class Merger:
                 kwargs[attr] = model
         templates = Templates(**{name: text for name, (text, _, _) in self.templates.items()})
         machine = kwargs.get("machine") or MachineSettings()
-        setup = MachineSetup(
+        setup = make(
             name=self.root.get("name", "default"), dialect=self.root.get("dialect"),
             pipeline=self.root.get("pipeline"), templates=templates, source=source, library=self.library(),
             machine_codes=list(self.codes.values()), code_calls=dict(self.calls), **kwargs)
@@ -322,21 +323,23 @@ class Merger:
         return setup
 
 
-def merge(roots: list[etree._Element], groups: dict[str, type["SetupGroup"]], source: str | None) -> "MachineSetup":
-    """Roots (base first) -> one validated set-up; every problem found is raised together."""
-    setup, problems = merge_collect(roots, groups, source)
+def merge(roots: list[etree._Element], groups: dict[str, type["SetupGroup"]], source: str | None,
+          make: Callable[..., Any]) -> Any:
+    """Roots (base first) -> one validated set-up, built by ``make``; every problem found is raised
+    together."""
+    setup, problems = merge_collect(roots, groups, source, make)
     raise_all(problems)
     return setup
 
 
-def merge_collect(roots: list[etree._Element], groups: dict[str, type["SetupGroup"]],
-                  source: str | None) -> tuple["MachineSetup", list[ConfigError]]:
+def merge_collect(roots: list[etree._Element], groups: dict[str, type["SetupGroup"]], source: str | None,
+                  make: Callable[..., Any]) -> tuple[Any, list[ConfigError]]:
     """Roots (base first) -> the set-up (a value with a problem left at its default) and the problems."""
     final_dir = Path(source).parent if source else None
     merger = Merger(groups, final_dir)
     for i, root in enumerate(roots):
         merger.read(root, i == len(roots) - 1)
-    return merger.build(source), merger.problems
+    return merger.build(source, make), merger.problems
 
 
 def raise_all(problems: list[ConfigError]) -> None:
