@@ -5,6 +5,8 @@ from __future__ import annotations
 import re
 from typing import Any, Callable
 
+from mypy_extensions import mypyc_attr
+
 from .cycle_words import CycleWords
 from .errors import Diagnostics, Location
 from .ir import Block
@@ -17,6 +19,7 @@ NOT_SET: Any = object()
 """A ``Context`` attribute a step has not initialised yet."""
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class Context:
     """What every step of one run shares: file name, set-up, diagnostics, modal state, and what the
     reading dialect tells the neutral steps about its words."""

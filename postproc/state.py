@@ -13,6 +13,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Any, Callable, Mapping
 
+from mypy_extensions import mypyc_attr
+
 from .expr import Expr
 
 MM_PER_INCH = 25.4
@@ -21,6 +23,7 @@ PLANE_AXES = {"XY": ("X", "Y", "Z"), "ZX": ("Z", "X", "Y"), "YZ": ("Y", "Z", "X"
 """Per plane: first and second plane axis, then the axis normal to the plane (the drilling axis)."""
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 @dataclass(slots=True)
 class CycleState:
     """The active canned cycle and its modal data (Fanuc: Z, R, Q, P, F stay in force)."""
@@ -31,6 +34,7 @@ class CycleState:
     """Initial level on the drilling axis when the cycle was first commanded."""
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 @dataclass(slots=True)
 class ModalState:
     motion: str | None = None

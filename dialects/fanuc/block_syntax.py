@@ -4,6 +4,8 @@ from __future__ import annotations
 
 from typing import ClassVar, Mapping
 
+from mypy_extensions import mypyc_attr
+
 from postproc.rs274.block_syntax import WordBlockSyntax
 from postproc.rs274.codes import CodeTable
 from postproc.rs274.machine_codes import Defaults
@@ -12,6 +14,7 @@ from .codes import CODES
 from .machine_codes import DEFAULTS
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class FanucBlockSyntax(WordBlockSyntax):
     """Lexed words -> neutral sections, for Fanuc milling controls."""
 

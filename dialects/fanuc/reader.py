@@ -12,8 +12,8 @@ from postproc.errors import PostprocError
 from postproc.ir import Block, Sequence
 
 from postproc.lines import BOM, EOF_BYTE, lexable
-from postproc.numbers import CANONICAL_BLOCK
 
+from postproc.rs274.canonical_line import is_canonical as canonical_line
 from postproc.rs274.lexer import WORDS_ONLY, WORD, lex_block
 
 from .macro import read_call
@@ -30,7 +30,6 @@ class FanucReader(Reader):
         file = self.ctx.file
         report = self.ctx.diagnostics.error
         plain = WORDS_ONLY.fullmatch
-        canonical = CANONICAL_BLOCK.fullmatch
         findall = WORD.findall
         number = 0
         for raw in lines:
@@ -49,7 +48,7 @@ class FanucReader(Reader):
             first = text[:1]
             if first in _FAST_START:
                 # A canonical block is words only by construction; otherwise check it is.
-                is_canonical = canonical(text) is not None
+                is_canonical = canonical_line(text)
                 if is_canonical or ("(" not in text and ")" not in text and "/" not in text and plain(text)):
                     # canonical: single spaces between words, so a split is the tokenizer
                     words = [(w[0], w[1:]) for w in text.split(" ")] if is_canonical else findall(text)

@@ -197,8 +197,9 @@ class WordBlockSyntax(Syntax):
         """
         values = block.values
         axes: dict[str, float | Expr] = {}
+        upper = block.canonical  # a canonical block's letters are upper-case already
         for letter, num in words:
-            up = _UPPER[letter]
+            up = letter if upper else _UPPER[letter]
             if up in values:
                 break
             if up in AXIS_LETTERS and "." in num:

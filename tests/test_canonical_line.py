@@ -1,0 +1,52 @@
+"""The byte scan of canonical lines agrees with the regex it replaces (``postproc.rs274.canonical_line``).
+
+Generated lines mix near-canonical words (signs, leading and trailing zeros, long fractions, ``-0.``)
+with stray characters, so both answers occur often; the suite runs compiled and pure, so the compiled
+scan is checked too."""
+
+from __future__ import annotations
+
+from hypothesis import given, settings, strategies as st
+
+from postproc.numbers import CANONICAL_BLOCK
+from postproc.rs274.canonical_line import by_regex, is_canonical, scan
+
+_LETTERS = "XYZABCUVWIJKRQFGMNOTHDLPSxg(#"
+_number = st.builds(
+    lambda sign, whole, point, frac: sign + whole + point + frac,
+    st.sampled_from(["", "-", "+", "--"]),
+    st.sampled_from(["", "0", "00", "1", "10", "123", "01", "9"]),
+    st.sampled_from([".", "", ".."]),
+    st.text("0123456789", max_size=8),
+)
+_word = st.builds(lambda letter, number: letter + number, st.sampled_from(_LETTERS), _number)
+_line = st.builds(
+    lambda words, seps, tail: "".join(w + s for w, s in zip(words, seps)) + tail,
+    st.lists(_word, min_size=1, max_size=6),
+    st.lists(st.sampled_from([" ", " ", " ", "  ", "", "\t", "é"]), min_size=6, max_size=6),
+    st.sampled_from(["", "", " ", ";", "0"]),
+)
+
+
+@settings(max_examples=3000)
+@given(_line)
+def test_scan_agrees_with_the_regex_on_word_like_lines(line: str) -> None:
+    expected = CANONICAL_BLOCK.fullmatch(line) is not None
+    assert scan(line) is expected
+    assert by_regex(line) is expected
+    assert is_canonical(line) is expected
+
+
+@settings(max_examples=1000)
+@given(st.text(max_size=30))
+def test_scan_agrees_with_the_regex_on_any_text(line: str) -> None:
+    assert scan(line) is (CANONICAL_BLOCK.fullmatch(line) is not None)
+
+
+def test_the_cases_that_matter_by_hand() -> None:
+    assert scan("N80 X0.9596 Y0.4583 Z-3.859")
+    assert scan("G01 X0. F1500.")
+    assert scan("X10.") and scan("X-0.5") and scan("X1.123456")
+    for line in ("X-0.", "X-0. Y1.", "X0.10", "X00.1", "X1.1234567", "X.5", "G", "X1", "X1. ", " X1.",
+                 "X1.  Y2.", "K1.", "x1.", "X1.e5", "X+1.", "", "G1.", "N10X1."):
+        assert not scan(line), line
