@@ -13,7 +13,8 @@ from postproc.ir import Block, Sequence
 
 from postproc.lines import BOM, EOF_BYTE, lexable
 
-from postproc.rs274.canonical_line import is_canonical as canonical_line
+from postproc.numbers import CANONICAL_BLOCK
+from postproc.rs274.canonical_line import COMPILED, WITH_CODES, scan
 from postproc.rs274.lexer import WORDS_ONLY, WORD, lex_block
 
 from .macro import read_call
@@ -30,6 +31,7 @@ class FanucReader(Reader):
         file = self.ctx.file
         report = self.ctx.diagnostics.error
         plain = WORDS_ONLY.fullmatch
+        canonical = CANONICAL_BLOCK.fullmatch
         findall = WORD.findall
         number = 0
         for raw in lines:
@@ -47,19 +49,32 @@ class FanucReader(Reader):
             # usual line) with a G code or an axis word; O (a program number) and the rest are lexed.
             first = text[:1]
             if first in _FAST_START:
-                # A canonical block is words only by construction; otherwise check it is.
-                is_canonical = canonical_line(text)
-                if is_canonical or ("(" not in text and ")" not in text and "/" not in text and plain(text)):
-                    # canonical: single spaces between words, so a split is the tokenizer
-                    words = [(w[0], w[1:]) for w in text.split(" ")] if is_canonical else findall(text)
+                # A canonical block (``postproc.rs274.canonical_line``): words only, single spaces, a
+                # digits-only N; compiled, a byte scan finds it and tells a CAM line (no G or M word, so
+                # no call to look for) from the rest; as Python the regex is cheaper.
+                kind = scan(text) if COMPILED else WITH_CODES if canonical(text) is not None else 0
+                if kind:
+                    block = Block(number, text, eol, [(w[0], w[1:]) for w in text.split(" ")])
+                    block.canonical = True
+                    if first == "N":
+                        block.sections["Sequence"] = Sequence(int(block.words[0][1]))
+                    if kind == WITH_CODES and ("M9" in text or "G6" in text):
+                        try:
+                            read_call(block, self.ctx)
+                        except PostprocError as err:
+                            report(err, text)
+                            block = Block(number, text, eol)
+                    yield block
+                    continue
+                # Otherwise a block of words only, once checked it is.
+                if "(" not in text and ")" not in text and "/" not in text and plain(text):
+                    words = findall(text)
                     num = words[0][1] if first == "N" else "0"
                     if "." not in num and num[0] not in "+-":
                         block = Block(number, text, eol, words)
-                        block.canonical = is_canonical
                         if first == "N":
                             block.sections["Sequence"] = Sequence(int(num))
-                        # a canonical block is upper-case: two probes for M98/M99/G65-G67
-                        if ("M9" in text or "G6" in text or not is_canonical and ("m9" in text or "g6" in text)):
+                        if "M9" in text or "G6" in text or "m9" in text or "g6" in text:
                             try:
                                 read_call(block, self.ctx)
                             except PostprocError as err:

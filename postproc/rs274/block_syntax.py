@@ -197,12 +197,12 @@ class WordBlockSyntax(Syntax):
         """
         values = block.values
         axes: dict[str, float | Expr] = {}
-        upper = block.canonical  # a canonical block's letters are upper-case already
+        upper = block.canonical  # a canonical block's letters are upper-case already (numbers.CANONICAL_BLOCK)
         for letter, num in words:
             up = letter if upper else _UPPER[letter]
             if up in values:
                 break
-            if up in AXIS_LETTERS and "." in num:
+            if up in AXIS_LETTERS and (upper or "." in num):  # canonical: an axis number has its point
                 values[up] = axes[up] = float(num)
             elif up == "N" and "." not in num:
                 values["N"] = int(num)

@@ -14,6 +14,11 @@ from typing import Final
 
 from postproc.numbers import CANONICAL_BLOCK
 
+CANONICAL: Final = 1
+"""``scan``'s answer for a canonical line without G or M words (a CAM line: N, axes, F)."""
+WITH_CODES: Final = 3
+"""``scan``'s answer for a canonical line that may have G or M words (``CANONICAL`` bit set)."""
+
 _AXIS: Final = 1
 _CODE: Final = 2
 _KIND: Final = bytes(_AXIS if chr(c) in "XYZABCUVWIJRQF" else _CODE if chr(c) in "GMNOTHDLPS" else 0
@@ -22,25 +27,30 @@ _KIND: Final = bytes(_AXIS if chr(c) in "XYZABCUVWIJRQF" else _CODE if chr(c) in
 _MAX_FRACTION: Final = 6
 
 
-def scan(text: str) -> bool:
-    """``CANONICAL_BLOCK.fullmatch(text) is not None``, by one pass over the bytes: words separated by
+def scan(text: str) -> int:
+    """0 unless ``CANONICAL_BLOCK.fullmatch(text)``, by one pass over the bytes: words separated by
     single spaces; a code letter and digits; an axis-type letter and ``-?(0|[1-9][0-9]*)\\.`` with at
-    most six decimals and no trailing zero, never ``-0.``."""
+    most six decimals and no trailing zero, never ``-0.``. A canonical line is ``CANONICAL``, or
+    ``WITH_CODES`` when it has a G or M word (a reader then looks for calls in it)."""
     if not text or not text.isascii():
-        return False
+        return 0
     b = text.encode("ascii")
     n = len(b)
     kind = _KIND
+    found = CANONICAL
     i = 0
     while True:
-        k = kind[b[i]]
+        c = b[i]
+        k = kind[c]
         i += 1
         if k == _CODE:
+            if c == 71 or c == 77:  # 'G', 'M'
+                found = WITH_CODES
             start = i
             while i < n and 48 <= b[i] <= 57:
                 i += 1
             if i == start:
-                return False
+                return 0
         elif k == _AXIS:
             negative = i < n and b[i] == 45  # '-'
             if negative:
@@ -52,35 +62,36 @@ def scan(text: str) -> bool:
                 while i < n and 48 <= b[i] <= 57:
                     i += 1
             if i == start or i >= n or b[i] != 46:  # digits, then '.'
-                return False
+                return 0
             i += 1
             fraction = i
             while i < n and 48 <= b[i] <= 57:
                 i += 1
             if i - fraction > _MAX_FRACTION or i > fraction and b[i - 1] == 48:
-                return False
+                return 0
             if negative and i == fraction and fraction - start == 2 and b[start] == 48:
-                return False  # '-0.'
+                return 0  # '-0.'
         else:
-            return False
+            return 0
         if i == n:
-            return True
+            return found
         if b[i] != 32:
-            return False
+            return 0
         i += 1
         if i == n:
-            return False
+            return 0
 
 
-def by_regex(text: str) -> bool:
-    """The regex's answer (the pure-Python fallback's way)."""
-    return CANONICAL_BLOCK.fullmatch(text) is not None
+def by_regex(text: str) -> int:
+    """The regex's answer as ``scan`` gives it, but for the codes (the pure-Python fallback's way:
+    ``WITH_CODES`` for every canonical line, so a reader always looks for calls)."""
+    return WITH_CODES if CANONICAL_BLOCK.fullmatch(text) is not None else 0
 
 
 COMPILED: Final = not isinstance(scan, FunctionType)
 """True when this module runs compiled (a compiled function is not a Python function object)."""
 
 
-def is_canonical(text: str) -> bool:
-    """Whether ``text`` is a canonical block, the cheaper way for how this module runs."""
+def classify(text: str) -> int:
+    """``scan``'s answer (0, ``CANONICAL`` or ``WITH_CODES``), the cheaper way for how this module runs."""
     return scan(text) if COMPILED else by_regex(text)

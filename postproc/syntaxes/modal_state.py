@@ -71,7 +71,7 @@ class ModalStateSyntax(Syntax):
             return
         incremental = state.distance == "incremental"
         for axis, value in motion.axes.items():
-            if isinstance(value, Expr):
+            if type(value) is not float and isinstance(value, Expr):  # (a float first: it is cheaper)
                 pos[axis] = None  # computed: known only when the program runs
             elif incremental:
                 old = pos.get(axis)
