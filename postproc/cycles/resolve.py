@@ -19,6 +19,7 @@ import re
 from typing import Any
 
 from lxml import etree
+from mypy_extensions import mypyc_attr
 
 from postproc.cycle_words import CycleWords
 from postproc.errors import ConfigError, Location, PostprocError, ProgramError, UnsupportedError
@@ -65,6 +66,7 @@ _SHIFT_AXIS = {"+X": (1.0, 0), "-X": (-1.0, 0), "+Y": (1.0, 1), "-Y": (-1.0, 1)}
 """Set-up shift direction -> sign and plane axis (first/second), Fanuc's parameter table for G17-G19."""
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class CannedCycleResolveSyntax(Syntax):
     """Resolves hole cycles per ``semantics``; child elements replace the built-in family expansions."""
 
@@ -366,6 +368,7 @@ class CannedCycleResolveSyntax(Syntax):
         return initial, r, r, bottom
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class _Failer:
     """Makes a located ProgramError: at the named word when the block has it, else at the cycle's G word."""
 
