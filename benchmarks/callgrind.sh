@@ -2,21 +2,31 @@
 # Instructions per block of one translation, deterministic (no wall-clock noise on a loaded machine):
 # valgrind's callgrind counts the instructions of a 40k-block and a 20k-block run of the same
 # CAM-style program (benchmarks/generate.py) and prints the difference per block, so start-up and
-# imports cancel out.  Usage: benchmarks/callgrind.sh SRC TGT NORMALIZE(0|1) [LABEL]
+# imports cancel out.  Usage: benchmarks/callgrind.sh [--program cam|cycles] SRC TGT NORMALIZE(0|1) [LABEL]
+# --program cycles measures per hole instead: a 20k-hole minus a 10k-hole run of the drilling rows
+# (generate.py --kind cycles), divided by 10k holes.
 # POSTPROC_PURE=1 measures the pure-Python fallback (postproc --version says which build runs).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+program=cam
+if [ "${1:-}" = "--program" ]; then program=$2; shift 2; fi
 src=$1 tgt=$2 norm=$3 label=${4:-$1-$2-$3}
+case $program in
+  cam) small=20 large=40 unit=block ;;
+  cycles) small=10 large=20 unit=hole label=cycles-$label ;;
+  *) echo "unknown program $program (cam or cycles)" >&2; exit 2 ;;
+esac
 work=${TMPDIR:-/tmp}/postproc-callgrind
 mkdir -p "$work"
-for n in 20 40; do
-  [ -f "$work/b$n.nc" ] || .venv/bin/python benchmarks/generate.py ${n}000 "$work/b$n.nc"
+prefix=b; [ "$program" = cam ] || prefix=$program
+for n in $small $large; do
+  [ -f "$work/$prefix$n.nc" ] || .venv/bin/python benchmarks/generate.py ${n}000 "$work/$prefix$n.nc" --kind "$program"
 done
 env -u PYTHONDONTWRITEBYTECODE .venv/bin/python -m compileall -q postproc dialects plugins
-for n in 20 40; do
+for n in $small $large; do
   PYTHONHASHSEED=0 valgrind --tool=callgrind --callgrind-out-file="$work/$label.$n.out" \
-    .venv/bin/python benchmarks/callgrind_once.py "$src" "$tgt" "$norm" "$work/b$n.nc" 2>&1 \
+    .venv/bin/python benchmarks/callgrind_once.py "$src" "$tgt" "$norm" "$work/$prefix$n.nc" 2>&1 \
     | grep Collected | awk '{print $4}' > "$work/$label.$n.txt"
 done
-a=$(cat "$work/$label.20.txt"); b=$(cat "$work/$label.40.txt")
-echo "$label $(( (b - a) / 20000 )) instr/block ($(.venv/bin/postproc --version))"
+a=$(cat "$work/$label.$small.txt"); b=$(cat "$work/$label.$large.txt")
+echo "$label $(( (b - a) / ((large - small) * 1000) )) instr/$unit ($(.venv/bin/postproc --version))"

@@ -14,6 +14,7 @@ from typing import ClassVar, Iterator
 from lxml import etree
 
 from postproc.errors import ProgramError
+from postproc.expr import Expr
 from postproc.ir import Block, CompoundMotion, Dwell, Feed, Motion, ProgramControl, Section, SpindleControl
 from postproc.ir import SpindleOrientation
 from postproc.state import PLANE_AXES
@@ -75,18 +76,26 @@ class ToolPath:
         self._move("linear", None, None, level)
 
     def _move(self, mode: str, a: float | None, b: float | None, level: float | None) -> None:
+        """A rapid or feed to the given plane position and level (None: where the tool is on that axis);
+        a move shorter than ``EPS`` on every axis is no move. Works on the three coordinates, not on
+        copies of the position: it runs for every move of every hole."""
         first, second, normal = self.axes
-        target = dict(self.pos)
-        for axis, value in ((first, a), (second, b), (normal, level)):
-            if value is not None:
-                target[axis] = value
-        missing = [k for k in "XYZ" if k not in target]
-        if not missing and all(k in self.pos and abs(target[k] - self.pos[k]) < EPS for k in "XYZ"):
-            return
-        if missing:
+        pos = self.pos
+        was_a, was_b, was_n = pos.get(first), pos.get(second), pos.get(normal)
+        to_a = was_a if a is None else a
+        to_b = was_b if b is None else b
+        to_n = was_n if level is None else level
+        if to_a is None or to_b is None or to_n is None:
+            target = {first: to_a, second: to_b, normal: to_n}
+            missing = [k for k in "XYZ" if target[k] is None]
             raise ProgramError(f"the tool's {missing[0]} position is unknown before the cycle")
-        self.add(Motion(mode, {k: target[k] for k in "XYZ"}))
-        self.pos = target
+        if was_a is not None and was_b is not None and was_n is not None and abs(to_a - was_a) < EPS \
+                and abs(to_b - was_b) < EPS and abs(to_n - was_n) < EPS:
+            return
+        self.add(Motion(mode, _xyz(first, to_a, to_b, to_n)))
+        pos[first] = to_a
+        pos[second] = to_b
+        pos[normal] = to_n
 
     def dwell(self, seconds: float | None, always: bool = False) -> None:
         """A dwell; Fanuc emits none without P, LinuxCNC's interpreter always does (``always``)."""
@@ -104,6 +113,15 @@ class ToolPath:
 
     def end(self) -> dict[str, float]:
         return dict(self.pos)
+
+
+def _xyz(first: str, a: float, b: float, n: float) -> dict[str, float | Expr]:
+    """The axes of a move in X, Y, Z order from its plane coordinates (first, second, normal)."""
+    if first == "X":
+        return {"X": a, "Y": b, "Z": n}  # G17 (XY)
+    if first == "Z":
+        return {"X": b, "Y": n, "Z": a}  # G18 (ZX)
+    return {"X": n, "Y": a, "Z": b}  # G19 (YZ)
 
 
 class _Whereabouts(ToolPath):

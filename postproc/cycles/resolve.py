@@ -19,6 +19,7 @@ import re
 from typing import Any
 
 from lxml import etree
+from mypy_extensions import mypyc_attr
 
 from postproc.cycle_words import CycleWords
 from postproc.errors import ConfigError, Location, PostprocError, ProgramError, UnsupportedError
@@ -59,15 +60,18 @@ _NATIVE_KEY = "CannedCycleResolveSyntax.native"
 ACTIVE_KEY = "CannedCycleResolveSyntax.active"
 """``ctx.state.extra`` key: (the last resolved ``CannedCycle``, its expansion) while the cycle is active,
 for a hole pattern that repeats it (``active_cycle``)."""
+_WORD_RANK = {letter: rank for rank, letter in enumerate(WORD_ORDER)}
+"""Cycle word letter -> its place in ``WORD_ORDER`` (a block's words are kept in that order)."""
 _SHIFT_AXIS = {"+X": (1.0, 0), "-X": (-1.0, 0), "+Y": (1.0, 1), "-Y": (-1.0, 1)}
 """Set-up shift direction -> sign and plane axis (first/second), Fanuc's parameter table for G17-G19."""
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class CannedCycleResolveSyntax(Syntax):
     """Resolves hole cycles per ``semantics``; child elements replace the built-in family expansions."""
 
     XNAME = "CannedCycleResolveSyntax"
-    __slots__ = ("semantics", "expansions", "_rules", "_by_kind")
+    __slots__ = ("semantics", "expansions", "_rules", "_by_kind", "_words_of")
 
     def __init__(self, semantics: str = "fanuc", expansions: list[CycleExpansion] | None = None) -> None:
         if semantics not in SEMANTICS:
@@ -77,6 +81,10 @@ class CannedCycleResolveSyntax(Syntax):
         """Expansions given in XML, overriding the built-in one of their kinds."""
         self._rules: Semantics = SEMANTICS[semantics]
         self._by_kind: dict[str, CycleExpansion] = {}
+        self._words_of: tuple[CycleWords | None, str, frozenset[str], frozenset[str], tuple[str, ...]] = (
+            None, "", frozenset(), frozenset(), ())
+        """(cycle words, repeat address) -> their letters (``_letters``): the last run's, worked out again only
+        when a run reads other cycle words."""
         for expansion in [cls() for cls in EXPANSIONS] + self.expansions:
             for kind in expansion.KINDS:
                 self._by_kind[kind] = expansion
@@ -132,7 +140,7 @@ class CannedCycleResolveSyntax(Syntax):
             return  # a reference return (group 00) leaves the cycle in force
         if motion is None and not _NOT_CYCLE_DATA.isdisjoint(sections):
             return  # G04 (its P is the dwell's), a G10, a verbatim code such as M98 P..: not cycle data
-        if any(letter in block.values for letter in self._letters(ctx)):
+        if not self._letters(ctx)[0].isdisjoint(block.values):
             if _NATIVE_KEY in state.extra:
                 self._native(block, ctx, state.cycle.kind)
                 return
@@ -161,11 +169,19 @@ class CannedCycleResolveSyntax(Syntax):
                 del block.sections["Motion"]
             raise
 
-    def _letters(self, ctx: Context) -> str:
-        """The addresses that carry cycle data: axes, the level, peck/shift, dwell and the repeat count."""
+    def _letters(self, ctx: Context) -> tuple[frozenset[str], frozenset[str], tuple[str, ...]]:
+        """The addresses that carry cycle data (axes, the level, peck/shift, dwell and the repeat count),
+        those of them a cycle record keeps (in ``WORD_ORDER``), and the repeat-count letters in order of
+        preference: the same for every block of a run."""
         cw = _cycle_words(ctx)
-        return "XYZABCUVW" + cw.level + cw.peck + cw.shift + cw.dwell + "".join(cw.bottom.values()) + "".join(
-            cw.repeat_letters(ctx.setup.input.repeat_address))
+        address = ctx.setup.input.repeat_address
+        known = self._words_of
+        if known[0] is not cw or known[1] != address:
+            repeat = cw.repeat_letters(address)
+            letters = frozenset("XYZABCUVW" + cw.level + cw.peck + cw.shift + cw.dwell + "".join(cw.bottom.values())
+                                + "".join(repeat))
+            known = self._words_of = (cw, address, letters, letters.intersection(WORD_ORDER), repeat)
+        return known[2], known[3], known[4]
 
     def _resolve(self, block: Block, ctx: Context, kind: str, call: bool) -> None:
         rules = self._rules
@@ -181,10 +197,11 @@ class CannedCycleResolveSyntax(Syntax):
         if units is not None:
             state.set_units(units.system)  # type: ignore[attr-defined]
         plane = _modal(sections, "Plane", "plane", state.plane)
-        letters = self._letters(ctx)
+        _, kept, repeat_letters = self._letters(ctx)
         # numbers only: a cycle with computed words went to _native
+        values = block.values
         words: dict[str, float | int] = {
-            k: block.values[k] for k in WORD_ORDER if k in block.values and k in letters}  # type: ignore[misc]
+            k: values[k] for k in sorted(kept.intersection(values), key=_WORD_RANK.__getitem__)}  # type: ignore[misc]
         fail = _Failer(ctx, block, words, at_code)
         first, second, normal = PLANE_AXES[plane]
         for letter in words:
@@ -203,7 +220,7 @@ class CannedCycleResolveSyntax(Syntax):
             state.extra[_DWELL_KEY] = words[cw.dwell]
         elif rules.sticky_tap_dwell and kind in TAP and _DWELL_KEY in state.extra:
             modal[cw.dwell] = state.extra[_DWELL_KEY]
-        holes = self._holes(ctx, words, call, plane, fail)
+        holes = self._holes(ctx, words, call, plane, repeat_letters, fail)
         feed = _modal(sections, "Feed", "value", state.feed)
         return_level = _modal(sections, "ReturnLevel", "level", state.return_level)
         spindle = _modal(sections, "SpindleControl", "direction", state.spindle)
@@ -226,7 +243,7 @@ class CannedCycleResolveSyntax(Syntax):
             shift=_shift(ctx, kind, q, first, second), words=words,
         )
         expansion, limit = self._by_kind[kind], ctx.setup.limits.moves_per_block
-        repeat = next((k for k in cw.repeat_letters(ctx.setup.input.repeat_address) if k in words), None)
+        repeat = next((k for k in repeat_letters if k in words), None)
 
         def too_many(err: TooManyMoves) -> PostprocError:
             return fail(f"{code}: {err.message}", cw.peck if err.role == "peck" else repeat)
@@ -256,11 +273,12 @@ class CannedCycleResolveSyntax(Syntax):
             state.cycle = CycleState(kind, modal, initial)
         state.extra[_STATE_KEY] = plane
 
-    def _holes(self, ctx: Context, words: dict[str, Any], call: bool, plane: str, fail: "_Failer") -> int:
+    def _holes(self, ctx: Context, words: dict[str, Any], call: bool, plane: str, repeat_letters: tuple[str, ...],
+               fail: "_Failer") -> int:
         """How many holes the block makes: K/L (once without), none without hole position data."""
         rules = self._rules
         repeat, letter = 1, None
-        for candidate in _cycle_words(ctx).repeat_letters(ctx.setup.input.repeat_address):
+        for candidate in repeat_letters:
             if candidate in words:
                 repeat, letter = int(words[candidate]), candidate
                 break
@@ -350,6 +368,7 @@ class CannedCycleResolveSyntax(Syntax):
         return initial, r, r, bottom
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class _Failer:
     """Makes a located ProgramError: at the named word when the block has it, else at the cycle's G word."""
 

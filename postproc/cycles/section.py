@@ -7,9 +7,10 @@ All lengths are in program units; levels are values on the drilling axis of ``pl
 
 from __future__ import annotations
 
-from typing import Any
+from typing import Any, ClassVar
 
 from lxml import etree
+from mypy_extensions import mypyc_attr
 
 from postproc.ir import Section
 from postproc.xmlio import XAttr, decode, encode
@@ -18,6 +19,7 @@ WORD_ORDER = "XYZABCUVWRQPIJKL"
 """Order in which the programmed cycle words are kept and written."""
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class CannedCycle(Section):
     """A hole cycle programmed or repeated in this block.
 
@@ -28,7 +30,8 @@ class CannedCycle(Section):
     through the cycle ('fanuc' or 'rs274'), ``call`` whether the block programs the cycle code itself.
     """
 
-    XNAME = KEY = "CannedCycle"
+    XNAME = "CannedCycle"
+    KEY = "CannedCycle"
     XATTRS = (
         XAttr("kind"), XAttr("call", bool, False), XAttr("semantics", str, "fanuc"),
         XAttr("return_level", str, "initial"), XAttr("plane", str, "XY"),
@@ -38,9 +41,12 @@ class CannedCycle(Section):
         XAttr("repeat", int, 1), XAttr("spindle", str, None), XAttr("motion", str, None),
         XAttr("expand", bool, False),
     )
-    DICTS = ("start", "position", "step", "shift", "words")
+    DICTS: ClassVar[tuple[str, ...]] = ("start", "position", "step", "shift", "words")
     """Child elements, one per axis dictionary; ``shift`` is None unless the cycle shifts the tool."""
-    __slots__ = tuple(a.name for a in XATTRS) + DICTS
+    __slots__ = ("kind", "call", "semantics", "return_level", "plane", "initial", "r", "bottom", "top", "q",
+                 "clearance", "dwell", "orient", "feed", "repeat", "spindle", "motion", "expand",
+                 "start", "position", "step", "shift", "words")
+    """Every attribute of ``XATTRS`` and ``DICTS`` (written out: a compiled class body names them)."""
 
     def __init__(self, kind: str, *, call: bool = False, semantics: str = "fanuc",
                  return_level: str = "initial", plane: str = "XY", initial: float | None = None,
