@@ -197,3 +197,24 @@ def test_a_fanuc_dwell_split_from_its_move_keeps_the_spindle_start_before_it() -
     report = verify_lines(io.StringIO(program), io.StringIO(out.getvalue()), file_in="a.ngc", file_out="b.nc",
                           source="linuxcnc", target="fanuc", tolerance=0.0)
     assert report.ok, report.summary()
+
+
+_COMPUTED_REPEAT = HEAD + "#1=5.\nG99 G81 X1. Y1. Z-5. R2. F100.\nX#1 Y2.\nG80\nG02 X7. Y2. R1.\nM30\n"
+"""A computed hole repeating a numeric cycle (an internal TypeError in both builds, found by a helper), then
+an arc from where that hole leaves the tool (X5 Y2): valid there, impossible from the first hole (X1 Y1)."""
+
+
+def test_a_computed_hole_repeating_a_cycle_travels_verbatim_to_fanuc() -> None:
+    out = io.StringIO()
+    translate(io.StringIO(_COMPUTED_REPEAT), out, file="t.nc", source="fanuc", target="fanuc")
+    assert out.getvalue() == _COMPUTED_REPEAT  # kept: the hole, and the tool after it, known when it runs
+
+
+@pytest.mark.parametrize("target", ["linuxcnc", "grbl"])
+def test_a_computed_hole_repeating_a_cycle_is_flattened_where_the_cycle_is_expanded(target: str) -> None:
+    out = io.StringIO()
+    translate(io.StringIO(_COMPUTED_REPEAT), out, file="t.nc", source="fanuc", target=target)
+    assert "X5. Y2." in out.getvalue()  # the computed hole, evaluated
+    report = verify_lines(io.StringIO(_COMPUTED_REPEAT), io.StringIO(out.getvalue()), file_in="a.nc",
+                          file_out="b.ngc", source="fanuc", target=target, tolerance=0.0)
+    assert report.ok, report.summary()

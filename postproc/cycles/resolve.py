@@ -141,7 +141,7 @@ class CannedCycleResolveSyntax(Syntax):
         if motion is None and not _NOT_CYCLE_DATA.isdisjoint(sections):
             return  # G04 (its P is the dwell's), a G10, a verbatim code such as M98 P..: not cycle data
         if not self._letters(ctx)[0].isdisjoint(block.values):
-            if _NATIVE_KEY in state.extra:
+            if _NATIVE_KEY in state.extra or _computed(block):  # a hole known only when the program runs
                 self._native(block, ctx, state.cycle.kind)
                 return
             self._resolve_or_drop(block, ctx, state.cycle.kind, False)
@@ -153,6 +153,9 @@ class CannedCycleResolveSyntax(Syntax):
         for key in ("CycleCall", "Motion", "Feed", "ReturnLevel"):
             block.sections.pop(key, None)
         block.add(NativeCode(ctx.dialect, "a canned cycle with computed words", block.text or ""))
+        position = ctx.state.position
+        for axis in position:
+            position[axis] = None  # the hole is known only when the program runs, and so is the tool
         ctx.state.cycle = CycleState(kind)
         ctx.state.extra[_NATIVE_KEY] = kind
         ctx.state.extra.pop(ACTIVE_KEY, None)
