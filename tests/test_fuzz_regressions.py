@@ -218,3 +218,23 @@ def test_a_computed_hole_repeating_a_cycle_is_flattened_where_the_cycle_is_expan
     report = verify_lines(io.StringIO(_COMPUTED_REPEAT), io.StringIO(out.getvalue()), file_in="a.nc",
                           file_out="b.ngc", source="fanuc", target=target, tolerance=0.0)
     assert report.ok, report.summary()
+
+
+@pytest.mark.parametrize("source, program, expected", [
+    # hypothesis (tests/test_isg_fuzz.py): a continued ISG line assigning beside a move became Fanuc
+    # '#501=2. G01 X10.', which Fanuc (and our Fanuc reader) refuses: a macro statement stands alone
+    ("isg", "G71 G90 G00 X0 Y0 Z10 F100\nP1=1\nG01 X10 \\\nP1=2\n", ["G01 X10.", "#501=2."]),
+    # LinuxCNC reads a line's words before it sets its parameters: X#1 is the old #1 (5)
+    ("linuxcnc", "G21 G90 G0 X1 Y0 Z10\n#1=5\n#1=2 G1 X#1 F100\nG1 Y#1\nM2\n",
+     ["G01 X#1 F100.", "#1=2.", "G01 Y#1"]),
+])
+def test_an_assignment_beside_words_goes_after_them_on_its_own_fanuc_line(source: str, program: str,
+                                                                          expected: list[str]) -> None:
+    out = io.StringIO()
+    translate(io.StringIO(program), out, file="t.nc", source=source, target="fanuc")
+    lines = out.getvalue().splitlines()
+    start = lines.index(expected[0])
+    assert lines[start:start + len(expected)] == expected
+    report = verify_lines(io.StringIO(program), io.StringIO(out.getvalue()), file_in="a.nc", file_out="b.nc",
+                          source=source, target="fanuc", tolerance=0.0)
+    assert report.ok and report.moves >= 2, report.summary()

@@ -11,7 +11,8 @@ from typing import ClassVar
 
 from postproc.context import Context
 from postproc.control import (
-    CONTROL, Assign, Call, EndFor, EndWhile, For, ModalCall, ModalCallCancel, Return, SubEnd, SubStart, While,
+    ASSIGN, CONTROL, Assign, Call, EndFor, EndWhile, For, ModalCall, ModalCallCancel, Return, SubEnd, SubStart,
+    While,
 )
 from postproc.dialect import Dialect
 from postproc.errors import UnsupportedError
@@ -27,7 +28,9 @@ from .lathe_codes import LATHE_CODES
 from .macro import LOCAL_LETTERS
 
 
-_WATCHED = frozenset((CONTROL, "ProgramStart", "ProgramControl"))
+_WATCHED = frozenset((CONTROL, ASSIGN, "ProgramStart", "ProgramControl"))
+_BESIDE_A_STATEMENT = frozenset((ASSIGN, "Sequence", "BlockDelete", "Comments"))
+"""What a macro statement may share its block with (Fanuc reads ``N10 #1=2. (NOTE)``, not ``#1=2. X10.``)."""
 """Sections ``FanucWriter.write_block`` looks at (subprogram starts and ends, program numbers and ends)."""
 
 
@@ -63,6 +66,8 @@ class FanucWriter(LatheWordWriter):
     def write_block(self, block: Block) -> str | None:
         if self.capture is None and _WATCHED.isdisjoint(block.sections):
             return LatheWordWriter.write_block(self, block)  # the common block: nothing to number or capture
+        if ASSIGN in block.sections and not block.sections.keys() <= _BESIDE_A_STATEMENT:
+            return self.words_then_assignment(block)
         control = block.sections.get(CONTROL)
         start = block.sections.get("ProgramStart")
         if start is not None and getattr(start, "number", None) is not None:
@@ -86,6 +91,21 @@ class FanucWriter(LatheWordWriter):
                 self.capture.append(text)
             return None
         return text
+
+    def words_then_assignment(self, block: Block) -> str | None:
+        """A block that assigns and has words (ISG ``G01 X10 P1=2``, LinuxCNC ``#1=2 G1 X10``): Fanuc
+        reads a macro statement only on a block of its own, so the words go first and the assignment on
+        the next line, the order the interpreter gives them (``postproc.interp.machine``: a block's words
+        are evaluated before its assignments, as in LinuxCNC). A block skip goes on both lines."""
+        sections = block.sections
+        words = Block(block.line, None, "\n")
+        words.sections = {k: v for k, v in sections.items() if k != ASSIGN}
+        assignment = Block(block.line, None, block.eol)
+        assignment.sections = {k: v for k, v in sections.items() if k == ASSIGN or k == "BlockDelete"}
+        texts = [self.write_block(words), self.write_block(assignment)]
+        if self.capture is not None:
+            return None  # both lines went into the subprogram being captured
+        return "".join(text for text in texts if text)
 
     def named_subprogram(self, control: SubStart | SubEnd, block: Block) -> str | None:
         """Start capturing a named subprogram's text (``O<n>``), or end it (``M99``) and keep it for
