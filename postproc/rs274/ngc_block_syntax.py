@@ -158,11 +158,16 @@ class NgcWordBlockSyntax(WordBlockSyntax):
             ctx.state.feed = None  # the modal step applies the mode and leaves the feed rate unset
 
     def _check_n_first(self, block: Block, ctx: Context) -> None:
+        numbers = [i for i, (letter, _) in enumerate(block.words) if letter == "N" or letter == "n"]
+        if not numbers:
+            return  # the common block: no N at all
         text = block.text or ""
         first = len(text) - len(text.lstrip(" \t"))
         if text[first:first + 1] == "/":
             first += 1
             first += len(text[first:]) - len(text[first:].lstrip(" \t"))
+        if numbers == [0] and text[first:first + 1] in ("N", "n"):
+            return  # one N, the first word, where the text starts: no column to find
         for col, letter, _ in word_columns(text):
             if letter in "Nn" and col != first + 1:
                 raise ParseError(f"a block number stands first in its block ({self.CONTROL} refuses N elsewhere)",
