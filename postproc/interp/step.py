@@ -18,6 +18,8 @@ from collections import deque
 from pathlib import Path
 from typing import TYPE_CHECKING, ClassVar, Iterable, Iterator
 
+from mypy_extensions import mypyc_attr
+
 from ..control import ASSIGN, CONTROL
 from ..errors import Diagnostics, ErrorLevel, PostprocError
 from ..expr import Expr
@@ -34,6 +36,7 @@ if TYPE_CHECKING:
 ENCODING = {"encoding": "utf-8", "errors": "surrogateescape", "newline": ""}
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class ProgramSyntax(Syntax):
     """The interpreter step. Class attributes are the reading dialect's data."""
 
