@@ -129,9 +129,10 @@ class ProgramSyntax(Syntax):
         kept: deque[tuple[str, str] | None] = deque(maxlen=limit)
         keep = kept.append
         seen = 0
+        control, assign = CONTROL, ASSIGN  # locals: a compiled module looks another module's names up per use
         for block in blocks:
             sections = block.sections
-            if CONTROL in sections or ASSIGN in sections or (block.values and _computes(block)):
+            if control in sections or assign in sections or (block.values and _computes(block)):
                 break
             text = block.text
             keep(None if text is None else (text, block.eol))
