@@ -15,6 +15,8 @@ from __future__ import annotations
 
 from typing import Iterator
 
+from mypy_extensions import mypyc_attr
+
 from .context import Context
 from .control import CONTROL, SubEnd, SubStart, Return
 from .dialect import Dialect
@@ -26,6 +28,7 @@ INERT = frozenset(("Comments", "TapeMark", "Sequence", "BlockDelete"))
 """Sections that do nothing on a machine: a block of only these is not live code."""
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class EndTracker:
     """Follows a block stream: where the program ends, and what each block after the end is."""
 

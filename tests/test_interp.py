@@ -472,6 +472,32 @@ def test_a_jump_back_into_the_kept_prefix_rereads_it():
     assert [blk.line for blk in out if blk.words] == [1, 2, 2, 2]
 
 
+
+class Rereading(FanucLike):
+    lines: list[str] = []
+
+    def read_lines(self, lines, file, ctx, diagnostics):  # type: ignore[no-untyped-def]
+        type(self).lines = list(lines)
+        return super().read_lines(type(self).lines, file, ctx, diagnostics)
+
+
+def test_the_kept_prefix_is_reread_with_each_line_end_as_written():
+    """The step keeps a streamed LF line as the reader's own string, any other end of line with its text,
+    and a block without text as an empty line: the reread lines are the source's, byte for byte."""
+    ctx = Context("main.nc", MachineSetup(), Diagnostics(ErrorLevel.RAISE), "fanuc")
+    ctx.reader = default_registry().dialect("fanuc").READER
+    ctx.program_mode = "execute"
+    source = ["G91\r\n", "N10 G1 X1.\n", "X2.\r\n", "X3."]
+    blocks = list(default_registry().dialect("fanuc").READER(ctx).read(source))
+    textless = Block(5, None, "\n")
+    counter = Block(6, "#1=#1+1", "\n")
+    counter.add(Assign([(v(1), b("add", v(1), 1))]))
+    back = Block(7, "IF [#1 LT 2] GOTO 10", "\n")
+    back.add(Goto(Num(10.0), b("lt", v(1), 2)))
+    out = list(Rereading().process(iter(blocks + [textless, counter, back]), ctx))
+    assert Rereading.lines == source + [""]
+    assert words(out) == ["G91", "N10 G1 X1.", "X2.", "X3.", "N10 G1 X1.", "X2.", "X3."]
+
 # -- set-up and command line -----------------------------------------------------------------------
 
 LIMITS_XML = (b"<?xml version='1.0' encoding='UTF-8'?>\n<MachineSetup name=\"m\">\n"

@@ -18,6 +18,8 @@ from collections import deque
 from pathlib import Path
 from typing import TYPE_CHECKING, ClassVar, Iterable, Iterator
 
+from mypy_extensions import mypyc_attr
+
 from ..control import ASSIGN, CONTROL
 from ..errors import Diagnostics, ErrorLevel, PostprocError
 from ..expr import Expr
@@ -32,8 +34,13 @@ if TYPE_CHECKING:
     from .store import Program
 
 ENCODING = {"encoding": "utf-8", "errors": "surrogateescape", "newline": ""}
+Kept = str | tuple[str, str] | None
+"""What the step keeps of a streamed block, for a backward jump (``ProgramSyntax._reread``): its text
+(ending ``\n``), its text and end of line, or None (a block without text). Most blocks keep the reader's
+own string: no object per block."""
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class ProgramSyntax(Syntax):
     """The interpreter step. Class attributes are the reading dialect's data."""
 
@@ -123,15 +130,17 @@ class ProgramSyntax(Syntax):
 
     def _execute(self, blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
         limit = ctx.setup.limits.kept_prefix
-        kept: deque[tuple[str, str] | None] = deque(maxlen=limit)
+        kept: deque[Kept] = deque(maxlen=limit)
         keep = kept.append
         seen = 0
+        control, assign = CONTROL, ASSIGN  # locals: a compiled module looks another module's names up per use
         for block in blocks:
             sections = block.sections
-            if CONTROL in sections or ASSIGN in sections or (block.values and _computes(block)):
+            if control in sections or assign in sections or (block.values and _computes(block)):
                 break
             text = block.text
-            keep(None if text is None else (text, block.eol))
+            eol = block.eol
+            keep(text if text is None or eol == "\n" else (text, eol))  # mostly the reader's own string
             seen += 1
             yield block
         else:
@@ -150,7 +159,7 @@ class ProgramSyntax(Syntax):
             block, blocks = body[0], iter(body[1:])
         yield from self._run(block, blocks, ctx, kept, seen)
 
-    def _check_runs(self, body: list[Block], ctx: Context, kept: deque[tuple[str, str] | None], seen: int) -> None:
+    def _check_runs(self, body: list[Block], ctx: Context, kept: deque[Kept], seen: int) -> None:
         """Run fresh copies of the program to its end, reporting the interpreter's first error (located in
         the program): a program kept symbolically then fails to translate where it fails to run."""
         copies = self._copies(body, ctx)
@@ -173,7 +182,7 @@ class ProgramSyntax(Syntax):
             return "the target's spelling of the program's constructs was not checked"
         return check(self._copies(body, ctx))
 
-    def _run(self, first: Block, rest: Iterator[Block], ctx: Context, kept: deque[tuple[str, str] | None],
+    def _run(self, first: Block, rest: Iterator[Block], ctx: Context, kept: deque[Kept],
              seen: int) -> Iterator[Block]:
         dropped = seen - len(kept)
         prefix = self._reread(kept, ctx, first_line=first.line - len(kept))
@@ -196,17 +205,25 @@ class ProgramSyntax(Syntax):
                                   rules=self.SUBPROGRAM_RULES)
         yield from interpreter.run(start=len(prefix))
 
-    def _reread(self, kept: deque[tuple[str, str] | None], ctx: Context, first_line: int) -> list[Block]:
+    def _reread(self, kept: deque[Kept], ctx: Context, first_line: int) -> list[Block]:
         """The kept prefix as fresh blocks (the streamed ones were changed by the later steps). Its
         errors were reported when it streamed, so they are not reported again."""
         if not kept:
             return []
-        lines = [("" if item is None else item[0] + item[1]) for item in kept]
+        lines = [_kept_line(item) for item in kept]
         blocks = self.read_lines(lines, ctx.file, ctx, Diagnostics(ErrorLevel.IGNORE))
         offset = first_line - 1
         for block in blocks:
             block.line += offset
         return blocks
+
+
+def _kept_line(item: Kept) -> str:
+    if item is None:
+        return ""
+    if isinstance(item, str):
+        return item + "\n"
+    return item[0] + item[1]
 
 
 def _computes(block: Block) -> bool:

@@ -35,6 +35,9 @@ def expand_hole_patterns(blocks: Iterator[Block], ctx: Context, target: type[Dia
     expanding = False  # the target gets the active cycle as motion (``expand_canned_cycles`` decides alike)
     for block in blocks:
         sections = block.sections
+        if not expanding and "HolePattern" not in sections and "CannedCycle" not in sections:
+            yield block  # most blocks: no pattern, and no cycle to follow or cancel
+            continue
         pattern = sections.get("HolePattern")
         if pattern is None or not isinstance(pattern, HolePattern):
             cycle = sections.get("CannedCycle")

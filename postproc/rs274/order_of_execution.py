@@ -24,8 +24,8 @@ from ..event_order import moves
 from ..ir import Block, Section
 
 _STOPS = ("SpindleControl", "Coolant")
-_NO_STOPS = frozenset(_STOPS).isdisjoint
-"""``_NO_STOPS(sections)``: the block neither stops nor starts the spindle or the coolant (most blocks)."""
+"""What a block stops (or starts): most blocks hold neither, tested first with two dict look-ups (measured:
+a ``frozenset.isdisjoint`` of the sections cost several times more per block)."""
 _AFTER_STOPS = ("SpindleOrientation", "ProgramControl")
 """What acts after a block's stops (``postproc.event_order``): an oriented stop, then a program stop or
 end. It follows the stops into their block, so ``Y2.5 M05 M19`` stops the spindle before orienting it."""
@@ -38,8 +38,11 @@ def stops_after_motion(blocks: Iterator[Block], ctx: Context, target: type[Diale
     """Lowering step for RS274/NGC targets (see the module docstring)."""
     for block in blocks:
         sections = block.sections
+        if "SpindleControl" not in sections and "Coolant" not in sections:
+            yield block
+            continue
         motion = sections.get("Motion")
-        if _NO_STOPS(sections) or motion is None or not getattr(motion, "axes", None):
+        if motion is None or not getattr(motion, "axes", None):
             yield block
             continue
         moved = {key: sections[key] for key in _STOPS if key in sections and _stops(sections[key])}
@@ -70,6 +73,9 @@ def stops_before_motion(blocks: Iterator[Block], ctx: Context, target: type[Dial
 def _stops_before_motion(blocks: Iterator[Block]) -> Iterator[Block]:
     for block in blocks:
         sections = block.sections
+        if "SpindleControl" not in sections and "Coolant" not in sections:
+            yield block  # most blocks: nothing to move before the motion
+            continue
         flagged = [key for key in _STOPS if key in sections and _flagged(sections[key])]
         if not flagged or not moves(sections):
             yield block
