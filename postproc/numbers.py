@@ -45,6 +45,9 @@ def format_decimal(value: float, places: int, leading_zero: bool = True, exact: 
     non-finite value (a number beyond the float range, or not a number) cannot be written: a
     ``ProgramError`` (the writer locates it at its block).
     """
+    text = exact_decimal(value, places, leading_zero, exact)
+    if text is not None:
+        return text
     text = f"{value:.{places}f}"
     if text[-1] > "9":  # 'inf', '-inf' or 'nan': no digit last
         raise ProgramError(f"cannot write the number {value!r}: it is beyond the range of a float"
@@ -57,6 +60,46 @@ def format_decimal(value: float, places: int, leading_zero: bool = True, exact: 
         text += "."  # no places: a whole number ('50' -> '50.')
     if text == "-0.":
         return "0."
+    if not leading_zero:
+        if text[:2] == "0." and text != "0.":
+            return text[1:]
+        if text[:3] == "-0.":
+            return "-" + text[2:]
+    return text
+
+
+_SHORT_RANGE = 1e6
+"""Below this magnitude a float is within 6e-11 of its shortest decimal (half its spacing, 2**-34), less
+than half a unit of the 9th place (5e-10): ``exact_decimal``'s shortcut is sound for up to 9 places."""
+_STEP = (1.0, 1e-1, 1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9)
+"""10**-k: the least a decimal with k places (its last digit not 0) lies from every coarser decimal."""
+
+
+def exact_decimal(value: float, places: int, leading_zero: bool = True, exact: float = EXACT) -> str | None:
+    """``format_decimal(value, places, leading_zero, exact)`` for a value whose shortest decimal
+    (``repr``) it writes unchanged, else None (the caller formats it).
+
+    Why it is the same text, for a value below ``_SHORT_RANGE`` (within 6e-11 of its shortest decimal r,
+    which has k places): with k <= ``places``, r is the nearest multiple of 10**-places, so rounding to
+    ``places`` gives r padded with zeros, which ``format_decimal`` strips again. With more places, the
+    nearest multiple of 10**-places lies at least 10**-k - 6e-11 from the value: when that is more than
+    ``exact``, ``format_decimal`` keeps more places (``_places_within``, at least k), which gives r again.
+    Most CAM numbers take this path: one ``repr``, no rounding, no float parse.
+    """
+    if not -_SHORT_RANGE < value < _SHORT_RANGE or places > 9:  # also false for nan
+        return None
+    text = repr(value)
+    dot = text.find(".")
+    if dot < 0 or "e" in text:  # 1e-05: tiny numbers are written in full by the caller
+        return None
+    if text[-2:] == ".0":
+        text = text[:-1]
+        if text == "-0.":
+            return "0."
+    else:
+        k = len(text) - dot - 1
+        if k > places and (k > 9 or _STEP[k] - 1e-10 <= exact):
+            return None
     if not leading_zero:
         if text[:2] == "0." and text != "0.":
             return text[1:]
