@@ -22,7 +22,9 @@ from ..expr import Expr
 from .codes import CodeTable
 from .expressions import ExprSpelling, spell_word_value
 from ..ir import Block, CompoundMotion, Motion, Section, one_line
-from ..numbers import EXACT, EXACT_INCH, MAX_PLACES, canonical_number_re, exact_decimal, format_decimal
+from ..numbers import (
+    EXACT, EXACT_INCH, MAX_PLACES, canonical_number_re, decimal_text, format_decimal, shortcut_places,
+)
 from ..state import MM_PER_INCH, PLANE_AXES, ModalState, changes_nothing
 from ..context import Context
 from ..cycle_words import CycleWords
@@ -98,6 +100,10 @@ class WordWriter(Writer):
         self.leading_zero = out.leading_zero
         self.decimals = out.decimals
         self.inch_decimals = out.inch_decimals
+        self.exact_mm = shortcut_places(self.decimals, EXACT)
+        self.exact_inch = shortcut_places(self.inch_decimals, EXACT_INCH)
+        """The most places a number is written with as it is, without rounding (``decimal_text``): decided
+        once per run for each unit, not per number."""
         self.copy_ok = source_dialect == self.DIALECT and not self.normalize and not self.renumber
         self.codes = self.table()
         """The code table written (a dialect with one per machine type picks it from the context)."""
@@ -127,12 +133,11 @@ class WordWriter(Writer):
             places = (self.mm_places if mm else self.inch_places).get(letter)
             if places is not None:
                 return self.rounded(value, letter, places, mm)
-        decimals = self.decimals if mm else self.inch_decimals
-        exact = EXACT if mm else EXACT_INCH
-        text = exact_decimal(value, decimals, self.leading_zero, exact)
+        text = decimal_text(value, self.exact_mm if mm else self.exact_inch, self.leading_zero)
         if text is not None:
             return text
-        return format_decimal(value, decimals, self.leading_zero, exact)
+        return format_decimal(value, self.decimals if mm else self.inch_decimals, self.leading_zero,
+                              EXACT if mm else EXACT_INCH)
 
     def rounded(self, value: float, letter: str, places: int, mm: bool) -> str:
         """``value`` rounded to the ``places`` the set-up gives ``letter``; the first value of each
@@ -284,9 +289,8 @@ class WordWriter(Writer):
                 last = at
         if not ordered:
             present.sort(key=rank.__getitem__)
-        section_words = self.section_words
-        for key in present:
-            words.extend(section_words(key, sections[key], block))
+        for key in present:  # a direct call: compiled, it dispatches to a subclass's override natively
+            words.extend(self.section_words(key, sections[key], block))
         if len(present) != len(sections):
             for key in sections:
                 # A named label (ISG [NAME]) is only a jump target: a program that jumps is run (flattened),
@@ -559,10 +563,9 @@ class WordWriter(Writer):
         length = self.length
         start = dict(self.carry) if s.center is not None else None
         incremental = self._incremental(s, block)
-        position = self.position
         for axis, value in s.axes.items():
             if value.__class__ is float:
-                words.append(axis + position(axis, value, incremental))
+                words.append(axis + self.position(axis, value, incremental))
             elif isinstance(value, Expr):
                 words.append(axis + self.expression(value, block))
                 if not incremental:
@@ -589,9 +592,8 @@ class WordWriter(Writer):
         carry = self.carry
         want = value + carry.get(axis, 0.0) if incremental and carry else value
         if not self.rounding:
-            mm = self.modal.units == "mm"
-            text = exact_decimal(want, self.decimals if mm else self.inch_decimals, self.leading_zero,
-                                 EXACT if mm else EXACT_INCH)
+            text = decimal_text(want, self.exact_mm if self.modal.units == "mm" else self.exact_inch,
+                                self.leading_zero)
             if text is not None:  # written exactly: nothing to carry
                 if carry:
                     carry.pop(axis, None)
