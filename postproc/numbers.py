@@ -9,10 +9,11 @@ from __future__ import annotations
 import functools
 import math
 import re
+from typing import Final
 
 from .errors import ProgramError
 
-MAX_PLACES = 6
+MAX_PLACES: Final = 6
 """Most decimal places any written number carries (0.001 um; finer than any controller's increment)."""
 
 _NUMBER = r"-?(?:0|[1-9]\d*)\.(?:\d{0,5}[1-9])?"
@@ -30,9 +31,9 @@ def canonical_number_re(places: int, leading_zero: bool) -> re.Pattern[str]:
     return re.compile(rf"(?!-0\.$)(?!{zero}$)-?{whole}\.{frac}|0\.")
 
 
-EXACT = 5e-7
+EXACT: Final = 5e-7
 """Half a unit of the ``MAX_PLACES``-th place: the most a written number (mm) may differ from its value."""
-EXACT_INCH = EXACT / 25.4
+EXACT_INCH: Final = EXACT / 25.4
 """The same half micrometre in inches (an inch number needs 8 places to stay within it)."""
 
 
@@ -45,6 +46,9 @@ def format_decimal(value: float, places: int, leading_zero: bool = True, exact: 
     non-finite value (a number beyond the float range, or not a number) cannot be written: a
     ``ProgramError`` (the writer locates it at its block).
     """
+    text = exact_decimal(value, places, leading_zero, exact)
+    if text is not None:
+        return text
     text = f"{value:.{places}f}"
     if text[-1] > "9":  # 'inf', '-inf' or 'nan': no digit last
         raise ProgramError(f"cannot write the number {value!r}: it is beyond the range of a float"
@@ -63,6 +67,63 @@ def format_decimal(value: float, places: int, leading_zero: bool = True, exact: 
         if text[:3] == "-0.":
             return "-" + text[2:]
     return text
+
+
+_SHORT_RANGE: Final = 1e6
+"""Below this magnitude a float is within 6e-11 of its shortest decimal (half its spacing, 2**-34), less
+than half a unit of the 9th place (5e-10): ``exact_decimal``'s shortcut is sound for up to 9 places."""
+_SCALE: list[float] = [1.0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9]
+"""10**k, exact in a float (a list: compiled, a tuple of floats is unboxed whole at every use)."""
+
+
+def shortcut_places(places: int, exact: float = EXACT) -> int:
+    """The most places ``decimal_text`` may write for ``format_decimal(.., places, .., exact)``: a value
+    with k places is written as it is when k <= ``places``, or when the nearest number with ``places``
+    places lies further than ``exact`` from it (at least 10**-k - 6e-11 away), since ``format_decimal``
+    then keeps enough places for all k of them. -1: no shortcut (more than 9 places)."""
+    if places > 9:
+        return -1
+    most = places
+    while most < 9 and 1.0 / _SCALE[most + 1] - 1e-10 > exact:
+        most += 1
+    return most
+
+
+def decimal_text(value: float, most: int, leading_zero: bool = True) -> str | None:
+    """``value`` written exactly with at most ``most`` places (from ``shortcut_places``), trailing zeros
+    dropped, or None when it needs more (the caller rounds it with ``format_decimal``).
+
+    Why this is ``format_decimal``'s text: below ``_SHORT_RANGE``, n = value * 10**most rounded is exact
+    when value has at most ``most`` places, and n / 10**most then reads back as value; a decimal that reads
+    back as value lies within 6e-11 of it, so rounding value to any of the places ``format_decimal`` tries
+    gives that decimal (``shortcut_places`` says why it tries enough of them). Below 1e15, value * 10**most
+    is within 0.25 of n, so truncating it +- 0.5 finds n. Integer arithmetic: no ``repr``, no rounding
+    check, no float parse; most CAM numbers take this path.
+    """
+    if not -_SHORT_RANGE < value < _SHORT_RANGE or most < 0:  # also false for nan
+        return None
+    scale = _SCALE[most]
+    scaled = value * scale  # within 0.25 of an integer when value has at most ``most`` places
+    n = int(scaled + 0.5) if scaled >= 0.0 else int(scaled - 0.5)  # that integer (int() truncates)
+    if n / scale != value:
+        return None
+    if n == 0:
+        return "0."  # never '-0.'
+    sign = "-" if n < 0 else ""
+    digits = str(-n if n < 0 else n)
+    if not most:
+        return f"{sign}{digits}."
+    if len(digits) <= most:
+        if not leading_zero:
+            return f"{sign}.{'0' * (most - len(digits))}{digits.rstrip('0')}"
+        digits = "0" * (most + 1 - len(digits)) + digits
+    return f"{sign}{digits[:-most]}.{digits[-most:].rstrip('0')}"  # one string built, not three
+
+
+def exact_decimal(value: float, places: int, leading_zero: bool = True, exact: float = EXACT) -> str | None:
+    """``format_decimal(value, places, leading_zero, exact)`` for a value it writes exactly, else None
+    (``decimal_text`` with ``shortcut_places``; a writer computes those places once per run)."""
+    return decimal_text(value, shortcut_places(places, exact), leading_zero)
 
 
 @functools.cache

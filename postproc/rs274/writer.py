@@ -13,6 +13,8 @@ from __future__ import annotations
 import math
 from typing import Any, Callable, ClassVar, NoReturn
 
+from mypy_extensions import mypyc_attr
+
 from ..control import ASSIGN, CONTROL
 from ..errors import ProgramError, UnsupportedError
 from ..event_order import after_motion
@@ -20,7 +22,9 @@ from ..expr import Expr
 from .codes import CodeTable
 from .expressions import ExprSpelling, spell_word_value
 from ..ir import Block, CompoundMotion, Motion, Section, one_line
-from ..numbers import EXACT, EXACT_INCH, MAX_PLACES, canonical_number_re, format_decimal
+from ..numbers import (
+    EXACT, EXACT_INCH, MAX_PLACES, canonical_number_re, decimal_text, format_decimal, shortcut_places,
+)
 from ..state import MM_PER_INCH, PLANE_AXES, ModalState, changes_nothing
 from ..context import Context
 from ..cycle_words import CycleWords
@@ -37,6 +41,11 @@ SECTION_ORDER = (
     "ProgramControl", "NativeCode", "Comments",
 )
 """Word order of a generated block; sections that only annotate are skipped by ``IGNORED``."""
+_RANK = {key: rank for rank, key in enumerate(SECTION_ORDER)}
+"""Section key -> its place in ``SECTION_ORDER`` (a generated block sorts only the sections it has)."""
+_UNWRITTEN = frozenset(("ProgramStart", "TapeMark", "Label"))
+"""Sections outside ``SECTION_ORDER`` that are not refused: written apart (a program start, a tape mark) or
+meaning nothing in a straight program (a label)."""
 
 
 _STAYS_WITH_MOTION = frozenset(("Motion", "CompoundMotion", "CannedCycle", "CycleCall", "MachineCoordinates", "Feed",
@@ -46,6 +55,7 @@ SectionWriter = Callable[[Any, Any, Block], list[str]]
 """Writes one section's words: ``(writer, section, block) -> words``."""
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class WordWriter(Writer):
     """Writes blocks as address words, spelling every code from the dialect's ``CODES`` table."""
 
@@ -90,6 +100,10 @@ class WordWriter(Writer):
         self.leading_zero = out.leading_zero
         self.decimals = out.decimals
         self.inch_decimals = out.inch_decimals
+        self.exact_mm = shortcut_places(self.decimals, EXACT)
+        self.exact_inch = shortcut_places(self.inch_decimals, EXACT_INCH)
+        """The most places a number is written with as it is, without rounding (``decimal_text``): decided
+        once per run for each unit, not per number."""
         self.copy_ok = source_dialect == self.DIALECT and not self.normalize and not self.renumber
         self.codes = self.table()
         """The code table written (a dialect with one per machine type picks it from the context)."""
@@ -119,6 +133,9 @@ class WordWriter(Writer):
             places = (self.mm_places if mm else self.inch_places).get(letter)
             if places is not None:
                 return self.rounded(value, letter, places, mm)
+        text = decimal_text(value, self.exact_mm if mm else self.exact_inch, self.leading_zero)
+        if text is not None:
+            return text
         return format_decimal(value, self.decimals if mm else self.inch_decimals, self.leading_zero,
                               EXACT if mm else EXACT_INCH)
 
@@ -259,21 +276,32 @@ class WordWriter(Writer):
             # the dwell's word is also an axis of the move (Fanuc G04 X): the dwell on a line of its own
             return self.around_dwell(block, ("Dwell",))
         words: list[str] = []
-        for key in SECTION_ORDER:
-            section = sections.get(key)
-            if section is not None:
-                words.extend(self.section_words(key, section, block))
-        for key in sections:
-            # A named label (ISG [NAME]) is only a jump target: a program that jumps is run (flattened),
-            # its labels dropped; in a straight program a label does nothing.
-            if key not in SECTION_ORDER and key not in self.IGNORED and key not in ("ProgramStart", "TapeMark",
-                                                                                    "Label"):
-                self.unsupported(f"{key}", block)
+        rank = _RANK
+        present: list[str] = []
+        last = -1
+        ordered = True
+        for key in sections:  # the block's few sections, not every key of SECTION_ORDER
+            at = rank.get(key, -1)
+            if at >= 0:
+                present.append(key)
+                if at < last:
+                    ordered = False
+                last = at
+        if not ordered:
+            present.sort(key=rank.__getitem__)
+        for key in present:  # a direct call: compiled, it dispatches to a subclass's override natively
+            words.extend(self.section_words(key, sections[key], block))
+        if len(present) != len(sections):
+            for key in sections:
+                # A named label (ISG [NAME]) is only a jump target: a program that jumps is run (flattened),
+                # its labels dropped; in a straight program a label does nothing.
+                if key not in rank and key not in self.IGNORED and key not in _UNWRITTEN:
+                    self.unsupported(f"{key}", block)
         start = sections.get("ProgramStart")
         if start is not None:
             words.insert(0, self.program_start(start, block))
         self._track(sections)
-        text = " ".join(w for w in words if w)
+        text = " ".join([w for w in words if w])
         if not text and sections and self.BARE_FEED_MOTION_NEEDS_FEED and block.text is not None:
             text = self.comment(block.text.strip())  # every word left out: the source line as a trace
         return text + (block.eol or "\n")
@@ -313,7 +341,7 @@ class WordWriter(Writer):
     @classmethod
     def dispatch_table(cls) -> dict[str, SectionWriter | None]:
         """This class's own section table (a subclass gets its own: it may override a method)."""
-        table: dict[str, SectionWriter | None] | None = cls.__dict__.get("_section_writers")
+        table: dict[str, SectionWriter | None] | None = vars(cls).get("_section_writers")
         if table is None:
             table = {}
             setattr(cls, "_section_writers", table)
@@ -528,14 +556,16 @@ class WordWriter(Writer):
             self.unsupported("a canned-cycle repetition without its cycle", block)
         if not s.axes and self.left_out(s, block):
             return []
-        words = self._code(_MOTION_KIND.get(s.mode, "motion"), s.mode, f"{s.mode} motion", block)
+        code = self.codes.spell(_MOTION_KIND.get(s.mode, "motion"), s.mode)
+        if code is None:
+            self.unsupported(f"{s.mode} motion", block)
+        words = [code]
         length = self.length
         start = dict(self.carry) if s.center is not None else None
         incremental = self._incremental(s, block)
-        position = self.position
         for axis, value in s.axes.items():
             if value.__class__ is float:
-                words.append(axis + position(axis, value, incremental))
+                words.append(axis + self.position(axis, value, incremental))
             elif isinstance(value, Expr):
                 words.append(axis + self.expression(value, block))
                 if not incremental:
@@ -561,6 +591,13 @@ class WordWriter(Writer):
         is carried), so each written position is within the output resolution of the exact one."""
         carry = self.carry
         want = value + carry.get(axis, 0.0) if incremental and carry else value
+        if not self.rounding:
+            text = decimal_text(want, self.exact_mm if self.modal.units == "mm" else self.exact_inch,
+                                self.leading_zero)
+            if text is not None:  # written exactly: nothing to carry
+                if carry:
+                    carry.pop(axis, None)
+                return text
         text = self.number(want, axis)
         error = want - float(text)
         if error:
