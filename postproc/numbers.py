@@ -120,6 +120,15 @@ def decimal_text(value: float, most: int, leading_zero: bool = True) -> str | No
     return f"{sign}{digits[:-most]}.{digits[-most:].rstrip('0')}"  # one string built, not three
 
 
+def as_written(text: str, value: float, most: int) -> bool:
+    """Whether ``decimal_text(value, most)`` is ``text``, for ``text`` a canonical number (``CANONICAL_BLOCK``:
+    leading zero, no trailing zero) and ``value`` the float read from it: it is when the text has at most
+    ``most`` places and the value is in ``decimal_text``'s range, for ``decimal_text`` then spells the decimal
+    the float reads back as, which is the text. A writer then copies the number instead of spelling it."""
+    point = text.find(".")
+    return 0 <= point and len(text) - point - 1 <= most and -_SHORT_RANGE < value < _SHORT_RANGE
+
+
 def exact_decimal(value: float, places: int, leading_zero: bool = True, exact: float = EXACT) -> str | None:
     """``format_decimal(value, places, leading_zero, exact)`` for a value it writes exactly, else None
     (``decimal_text`` with ``shortcut_places``; a writer computes those places once per run)."""

@@ -85,3 +85,29 @@ def test_cam_numbers_take_the_shortcut(value: float, places: int, leading_zero: 
     shortcut in mm (smaller ones are spelt with an exponent by ``repr``: the general path)."""
     if abs(value) < 1e6 and (abs(value) >= 1e-4 or value == 0):
         assert exact_decimal(value, places, leading_zero) == _reference(value, places, leading_zero, EXACT)
+
+
+_CANONICAL_NUMBER = st.builds(
+    lambda sign, whole, fraction: f"{sign}{whole}.{fraction}".rstrip("0") if fraction else f"{sign}{whole}.",
+    st.sampled_from(["", "-"]),
+    st.one_of(st.just("0"), st.integers(min_value=1, max_value=10 ** 9).map(str)),
+    st.text("0123456789", max_size=6).map(lambda f: f.rstrip("0")),
+).filter(lambda t: t not in ("-0.", "") and not t.endswith("-0."))
+
+
+@given(_CANONICAL_NUMBER, st.integers(min_value=0, max_value=8))
+@example("-3.859", 6)
+@example("0.000001", 6)
+@example("999999999.999999", 6)
+@example("999999.999999", 6)
+def test_a_canonical_number_is_written_as_it_reads(text: str, most: int) -> None:
+    """Why ``WordWriter.source_number`` may copy a canonical block's axis number: with no more places than
+    the writer writes exactly, the exact spelling of the float it reads as is the text itself."""
+    from postproc.numbers import CANONICAL_BLOCK, as_written, decimal_text
+
+    assert CANONICAL_BLOCK.fullmatch("X" + text)
+    value = float(text)
+    places = len(text) - text.index(".") - 1
+    assert as_written(text, value, most) is (places <= most and abs(value) < 1e6)
+    if as_written(text, value, most):
+        assert decimal_text(value, most, True) == text

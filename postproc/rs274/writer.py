@@ -23,7 +23,7 @@ from .codes import CodeTable
 from .expressions import ExprSpelling, spell_word_value
 from ..ir import Block, CompoundMotion, Motion, Section, one_line
 from ..numbers import (
-    EXACT, EXACT_INCH, MAX_PLACES, canonical_number_re, decimal_text, format_decimal, shortcut_places,
+    EXACT, EXACT_INCH, MAX_PLACES, as_written, canonical_number_re, decimal_text, format_decimal, shortcut_places,
 )
 from ..state import MM_PER_INCH, PLANE_AXES, ModalState, changes_nothing
 from ..context import Context
@@ -105,6 +105,9 @@ class WordWriter(Writer):
         """The most places a number is written with as it is, without rounding (``decimal_text``): decided
         once per run for each unit, not per number."""
         self.copy_ok = source_dialect == self.DIALECT and not self.normalize and not self.renumber
+        self.source_numbers = self.leading_zero and not self.rounding
+        """A canonical block's axis numbers may be written as the source wrote them (``source_number``):
+        canonical numbers have their leading zero, and no address is rounded to places of its own."""
         self.codes = self.table()
         """The code table written (a dialect with one per machine type picks it from the context)."""
         self.section_writers = self.dispatch_table()
@@ -563,9 +566,11 @@ class WordWriter(Writer):
         length = self.length
         start = dict(self.carry) if s.center is not None else None
         incremental = self._incremental(s, block)
+        as_written = block.canonical and self.source_numbers
         for axis, value in s.axes.items():
             if value.__class__ is float:
-                words.append(axis + self.position(axis, value, incremental))
+                text = self.source_number(block, axis, value, incremental) if as_written else None
+                words.append(axis + (text if text is not None else self.position(axis, value, incremental)))
             elif isinstance(value, Expr):
                 words.append(axis + self.expression(value, block))
                 if not incremental:
@@ -584,6 +589,24 @@ class WordWriter(Writer):
         if s.radius is not None:
             words.append("R" + length(s.radius, block, "R"))
         return words
+
+    def source_number(self, block: Block, axis: str, value: float, incremental: bool) -> str | None:
+        """The number of a canonical block's ``axis`` word as the source wrote it, when that is the text
+        ``position`` writes, else None. It is when the value is the one the word reads as (no step changed
+        it; a float compare, cheaper than spelling), nothing is carried on the axis, and the number has no
+        more places than this writer writes exactly (``postproc.numbers.as_written``, property-tested in
+        ``tests/test_fast_numbers.py``). It saves spelling a number, most of a CAM block's writing."""
+        if incremental and axis in self.carry:
+            return None
+        for letter, text in block.words:
+            if letter == axis:
+                if not as_written(text, value, self.exact_mm if self.modal.units == "mm" else self.exact_inch) \
+                        or float(text) != value:
+                    return None
+                if self.carry:
+                    self.carry.pop(axis, None)  # written exactly: nothing left to carry
+                return text
+        return None
 
     def position(self, axis: str, value: float, incremental: bool) -> str:
         """An axis word's number. Rounding never accumulates: in incremental mode the increment written is
