@@ -8,17 +8,30 @@ compiled with the RS274 word writer that subclasses it (``pyproject.toml`` ``[to
 from __future__ import annotations
 
 import abc
-from typing import TYPE_CHECKING, Any, Callable, Iterable, Protocol, TextIO
+from typing import Any, Callable, Iterable, Protocol, TextIO
 
 from mypy_extensions import mypyc_attr
 
 from .context import Context
+from .cycle_words import CycleWords
 from .errors import PostprocError, UnsupportedError
 from .ir import Block, one_line
 from .line_format import LineFormat
 
-if TYPE_CHECKING:
-    from .dialect import Dialect
+@mypyc_attr(allow_interpreted_subclasses=True)
+class WrittenDialect(Protocol):
+    """What a writer reads of the dialect it writes: a ``postproc.dialect.Dialect`` subclass (the class
+    itself), its name and the capability flags writers read. Declared here so the writers' base needs
+    nothing from ``postproc.dialect``, which builds on it (and re-exports ``Writer``)."""
+
+    NAME: str
+    LOWER_CASE: bool
+    DWELL_UNIT: str
+    CYCLE_WORDS: CycleWords | None
+    CYCLE_SEMANTICS: str
+    MACHINE_TYPES: frozenset[str]
+
+    def family(self) -> str: ...
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
@@ -46,14 +59,15 @@ _NO_TEMPLATES = _NoTemplates()
 class Writer(abc.ABC):
     """Turns blocks into text. Subclasses implement ``write_block``."""
 
-    def __init__(self, ctx: Context, source_dialect: str, target: type["Dialect"] | None = None) -> None:
+    def __init__(self, ctx: Context, source_dialect: str, target: WrittenDialect | None = None) -> None:
         self.ctx = ctx
         self.source_dialect = source_dialect
         self.target = target
         """The dialect written, whose capability flags the writer reads (None: every flag holds)."""
 
     def capable(self, flag: str) -> bool:
-        """Whether the target has the capability ``flag`` (an UPPER_CASE attribute of ``Dialect``)."""
+        """Whether the target has the capability ``flag`` (an UPPER_CASE attribute of ``Dialect``, read by
+        name: every flag, not only those ``WrittenDialect`` declares)."""
         return self.target is None or bool(getattr(self.target, flag))
 
     def write(self, blocks: Iterable[Block], out: TextIO) -> None:
