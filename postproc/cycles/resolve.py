@@ -16,6 +16,7 @@ reading dialect (``ctx.cycle_words``, a ``CycleWords``), so another dialect's le
 from __future__ import annotations
 
 import re
+from dataclasses import replace
 from typing import Any
 
 from lxml import etree
@@ -375,18 +376,21 @@ class CannedCycleResolveSyntax(Syntax):
 class _Failer:
     """Makes a located ProgramError: at the named word when the block has it, else at the cycle's G word."""
 
-    __slots__ = ("ctx", "block", "text", "words", "at_code")
+    __slots__ = ("ctx", "line", "text", "words", "at_code")
 
     def __init__(self, ctx: Context, block: Block, words: dict[str, Any], at_code: Location) -> None:
-        self.ctx, self.block, self.words, self.at_code = ctx, block, words, at_code
+        self.ctx, self.words, self.at_code = ctx, words, at_code
+        self.line = ctx.at(block)
+        """Where the block is (its file and call stack): not the block itself, which holds the expansion
+        that holds this (a reference cycle per cycle block, freed only by the paused collector)."""
         self.text = block.text
         """The text as read: an expansion made later (``CompoundMotion.lazy``) still points at its word
         after a lowering step rewrote the block."""
 
     def __call__(self, message: str, letter: str | None = None) -> ProgramError:
         if letter is not None and letter in self.words:
-            column = self.ctx.column_of(Block(self.block.line, self.text), letter)
-            return ProgramError(message, self.ctx.at(self.block, column))
+            column = self.ctx.column_of(Block(self.line.line, self.text), letter)
+            return ProgramError(message, replace(self.line, col=column))
         return ProgramError(message, self.at_code)
 
 
