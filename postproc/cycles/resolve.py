@@ -331,7 +331,7 @@ class CannedCycleResolveSyntax(Syntax):
         if kind == "back_bore" and return_level == "r":
             if call:
                 raise fail(f"{code} cannot be used with {cw.return_to_r}")
-            where = fail.ctx.at(fail.block, _code_column(fail.block, cw.return_to_r))
+            where = replace(fail.line, col=_code_column(Block(fail.line.line, fail.text), cw.return_to_r))
             raise ProgramError(f"{code} cannot be used with {cw.return_to_r}", where)
         if rs274 and kind in TAP and spindle != ("cw" if kind == "tap" else "ccw"):
             direction = "cw" if kind == "tap" else "ccw"
