@@ -249,21 +249,13 @@ class CannedCycleResolveSyntax(Syntax):
         expansion, limit = self._by_kind[kind], ctx.setup.limits.moves_per_block
         repeat = next((k for k in repeat_letters if k in words), None)
 
-        def too_many(err: TooManyMoves) -> PostprocError:
-            return fail(f"{code}: {err.message}", cw.peck if err.role == "peck" else repeat)
-
-        def expand() -> list[Section]:
-            try:
-                return expansion.expand(cycle, limit)[0]
-            except TooManyMoves as err:
-                raise too_many(err) from None
-
+        lazy = _LazyExpansion(expansion, cycle, limit, fail, code, cw.peck, repeat)
         try:
             end = expansion.end(cycle, limit)
         except TooManyMoves as err:
-            raise too_many(err) from None
+            raise lazy.too_many(err) from None
         block.add(cycle)
-        block.add(CompoundMotion.lazy(kind, expand))  # expanded only for a target without the cycle
+        block.add(CompoundMotion.lazy(kind, lazy))  # expanded only for a target without the cycle
         state.extra[ACTIVE_KEY] = (cycle, expansion)
         sections.pop("CycleCall", None)
         motion = sections.get("Motion")
@@ -370,6 +362,31 @@ class CannedCycleResolveSyntax(Syntax):
             raise fail(f"{code} {level} must lie below {depth} (back-boring levels 'manual': {level} is the "
                        f"bottom, {depth} the top)", level)
         return initial, r, r, bottom
+
+
+@mypyc_attr(allow_interpreted_subclasses=True)
+class _LazyExpansion:
+    """A cycle block's moves, made when a step asks for them (``CompoundMotion.lazy``). A class and not a
+    closure: it holds what the expansion needs and nothing of the block that holds it (a compiled closure
+    keeps every local of its function, the block too: a reference cycle per cycle block, which only the
+    collector, paused while a program streams, would free)."""
+
+    __slots__ = ("expansion", "cycle", "limit", "fail", "code", "peck", "repeat")
+
+    def __init__(self, expansion: CycleExpansion, cycle: CannedCycle, limit: int, fail: _Failer, code: str,
+                 peck: str, repeat: str | None) -> None:
+        self.expansion, self.cycle, self.limit, self.fail = expansion, cycle, limit, fail
+        self.code, self.peck, self.repeat = code, peck, repeat
+
+    def __call__(self) -> list[Section]:
+        try:
+            return self.expansion.expand(self.cycle, self.limit)[0]
+        except TooManyMoves as err:
+            raise self.too_many(err) from None
+
+    def too_many(self, err: TooManyMoves) -> PostprocError:
+        """The bound on moves per block, located at the word that makes the moves (pecks or repeats)."""
+        return self.fail(f"{self.code}: {err.message}", self.peck if err.role == "peck" else self.repeat)
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)

@@ -123,8 +123,8 @@ class GrblWriter(WordWriter):
         except UnsupportedError as err:
             if self._strict or key not in DROPPABLE or self.ctx.on_unsupported != "warn":
                 raise
-            self._dropped.append(err)
-            return []
+            self._dropped.append(err.with_traceback(None))  # kept for its message: its frames would hold
+            return []  # the block in a reference cycle (freed only by the collector, paused while streaming)
 
     def compound(self, block: Block, compound: CompoundMotion) -> str:
         self._strict = True
