@@ -6,9 +6,10 @@ step, which looks only at the blocks before the first feed rate.
 
 * A feed rate ``F`` or a spindle speed ``S`` cannot be negative.
 * A feed move (straight or arc) with axis words or an arc centre needs a feed rate programmed before
-  it, or in its block, even when it ends where it starts (a controller alarms on the command). In a program
-  that computes (jumps, loops, subprograms) the order of the text is not the order of execution: from
-  its first construct on, ``translate`` leaves this check to the run (``toolpath``, ``verify``).
+  it, or in its block, even when it ends where it starts (a controller alarms on the command), and one
+  above zero (``ZERO_FEED``: the modal-state step and the simulator check that). In a program that
+  computes (jumps, loops, subprograms) the order of the text is not the order of execution: from its
+  first construct on, ``translate`` leaves both checks to the run (``toolpath``, ``verify``).
 
 * An arc's end point lies on its circle (I/J/K form, within ``ARC_TOLERANCE_MM``), its R reaches the
   end point, and an R arc is no full circle (``arc_centre``): the simulator checks every arc; the reading
@@ -29,6 +30,8 @@ from .geometry import ARC_TOLERANCE_MM, PLACES, centre_from_radius
 from .ir import Block
 
 NO_FEED = "a feed move with no feed rate (program F first)"
+ZERO_FEED = "a feed move at a zero feed rate (F0 is in force: program a feed rate above 0 first)"
+"""Fanuc alarms (FEED ZERO), rs274 refuses ("Cannot do g1 with zero feed rate"), grbl too (error 22)."""
 FEED_MOVES = frozenset(("linear", "cw", "ccw"))
 """Motion modes that move at the feed rate."""
 _KEYS = frozenset(("Feed", "Motion", "CompoundMotion", CONTROL, ASSIGN))

@@ -52,6 +52,10 @@ class ModalState:
     position: dict[str, float | None] = field(default_factory=lambda: {"X": None, "Y": None, "Z": None})
     extra: dict[str, Any] = field(default_factory=dict)
     """Room for dialect- or syntax-specific modal data (keyed by the syntax's XML name)."""
+    computes: bool = False
+    """A construct (an assignment, a jump, a loop, a call) was met in the text: from there on the order of
+    the text is not the order of execution, so a check that follows the text (a feed move at a zero
+    feed rate) is left to the run."""
     symbolic: bool = False
     """A computed word (an ``Expr`` kept symbolically) was met: positions may be computed, so the steps
     that track them check for one (a straight program never pays for the check)."""

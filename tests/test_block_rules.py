@@ -17,6 +17,9 @@ CASES = [
     ("G1 X10.", "p.nc:3:1: error: a feed move with no feed rate (program F first)"),
     ("G2 X10. R5.", "p.nc:3:1: error: a feed move with no feed rate (program F first)"),
     ("S-1000 M3", "p.nc:3:1: error: spindle speed S-1000 cannot be negative"),
+    ("G1 X10. F0", "p.nc:3:1: " + "error: a feed move at a zero feed rate (F0 is in force: program a feed rate above 0 first)"),
+    ("G3 X10. R5. F0.", "p.nc:3:1: error: a feed move at a zero feed rate (F0 is in force: program a feed rate above 0 "
+                        "first)"),
 ]
 
 
@@ -52,6 +55,32 @@ def test_zero_length_feed_move_needs_a_feed_too() -> None:
     with pytest.raises(ErrorList) as info:
         list(toolpath_events(io.StringIO(_program("G1 X0.")), file="p.nc", dialect="fanuc"))
     assert [str(e) for e in info.value.errors] == ["p.nc:3:1: error: a feed move with no feed rate (program F first)"]
+
+
+def test_a_zero_feed_rate_refuses_feed_moves_only() -> None:
+    """F0 is a value a program may set (a rapid move ignores it); the feed move after it is what Fanuc
+    (FEED ZERO), rs274 and grbl refuse, and the first block programming a rate again is fine."""
+    program = "G21 G17 G90\nG1 X1. F100.\nF0\nG0 X2.\nG1 X3.\nG1 X4. F50.\nM30\n"
+    message = "p.nc:5:1: error: a feed move at a zero feed rate (F0 is in force: program a feed rate above 0 first)"
+    for target in ("fanuc", "linuxcnc", "grbl"):
+        with pytest.raises(ErrorList) as info:
+            translate(io.StringIO(program), io.StringIO(), file="p.nc", source="fanuc", target=target)
+        assert [str(e) for e in info.value.errors] == [message]
+    with pytest.raises(ErrorList) as info:
+        list(toolpath_events(io.StringIO(program), file="p.nc", dialect="fanuc"))
+    assert [str(e) for e in info.value.errors] == [message]
+    fine = program.replace("G1 X3.\n", "")
+    translate(io.StringIO(fine), io.StringIO(), file="p.nc", source="fanuc", target="linuxcnc")
+
+
+def test_a_zero_feed_rate_in_a_program_that_computes_is_left_to_the_run() -> None:
+    """``F100 GOTO 20 / N10 F0 / N20 G1 X1.`` runs: the jump skips the F0. The text's order says otherwise,
+    so ``translate`` keeps the program; the run (toolpath) follows the jump and finds nothing wrong."""
+    program = "G21 G17 G90\nG0 X0. Y0.\nF100.\nGOTO 20\nN10 F0\nN20 G1 X1.\nM30\n"
+    out = io.StringIO()
+    translate(io.StringIO(program), out, file="p.nc", source="fanuc", target="fanuc")
+    assert "N10 F0" in out.getvalue()
+    assert list(toolpath_events(io.StringIO(program), file="p.nc", dialect="fanuc"))
 
 
 def test_a_program_that_computes_leaves_the_feed_order_to_the_run() -> None:

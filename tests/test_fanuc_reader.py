@@ -283,7 +283,7 @@ def program_block(draw):
     for axis in draw(st.lists(_AXES, unique=True, max_size=4)):
         words.append(draw(st.sampled_from([axis, axis.lower()])) + draw(_number))
     if draw(st.booleans()):
-        words.append("F" + draw(_number).lstrip("+-"))
+        words.append("F" + draw(_number.map(lambda n: n.lstrip("+-")).filter(lambda n: float(n) > 0)))  # F0: no feed move
     if draw(st.booleans()):
         words.append("S" + draw(_digits))
     if draw(st.booleans()):

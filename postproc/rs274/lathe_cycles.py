@@ -175,7 +175,7 @@ def _restore(ctx: Context, saved: object) -> None:
     state = ctx.state
     extra = state.extra
     for f in dataclasses.fields(state):
-        if f.name not in ("extra", "symbolic"):
+        if f.name not in ("extra", "symbolic", "computes"):
             setattr(state, f.name, getattr(saved, f.name))
     state.extra = extra
 

@@ -21,7 +21,7 @@ from ..event_order import after_motion
 from ..expr import Expr
 from .codes import CodeTable
 from .expressions import ExprSpelling, spell_word_value
-from ..ir import Block, CompoundMotion, Motion, Section, one_line
+from ..ir import Block, CompoundMotion, Feed, Motion, Section, Sequence, one_line
 from ..numbers import (
     EXACT, EXACT_INCH, MAX_PLACES, as_written, canonical_number_re, decimal_text, format_decimal, shortcut_places,
 )
@@ -41,6 +41,8 @@ SECTION_ORDER = (
     "ProgramControl", "NativeCode", "Comments",
 )
 """Word order of a generated block; sections that only annotate are skipped by ``IGNORED``."""
+STRAIGHT_METHODS = ("generate", "section_words", "sequence_words", "motion_words", "feed_words", "left_out")
+"""The methods whose work ``WordWriter.straight_move`` does for a straight move (``STRAIGHT_OVERRIDES``)."""
 _RANK = {key: rank for rank, key in enumerate(SECTION_ORDER)}
 """Section key -> its place in ``SECTION_ORDER`` (a generated block sorts only the sections it has)."""
 _UNWRITTEN = frozenset(("ProgramStart", "TapeMark", "Label"))
@@ -81,6 +83,14 @@ class WordWriter(Writer):
     SPELLING: ClassVar[ExprSpelling | None] = None
     """How the dialect writes an expression in a word (``X[#1*2.]``); None: it has no expressions, and a
     computed word is an ``UnsupportedError`` naming it."""
+    STRAIGHT_OVERRIDES: ClassVar[frozenset[str]] = frozenset()
+    """Of ``STRAIGHT_METHODS``, those this class overrides that write a straight move (``straight_move``: a
+    rapid or feed move of numbers, maybe a block number and a feed rate, nothing else) exactly as this base
+    does. Any other override turns the straight path off for the class, so a plugin that overrides one
+    and says nothing is never bypassed. ``tests/test_straight_moves.py`` checks both paths agree."""
+    STRAIGHT_AXES: ClassVar[frozenset[str]] = frozenset("XYZABCUVW")
+    """The axes a straight move may have to take the straight path: a class whose ``motion_words`` refuses
+    some (grbl drives X, Y and Z) names those it writes, so that a move of another still meets the refusal."""
 
     def __init__(self, ctx: Context, source_dialect: str, target: type[Dialect] | None = None) -> None:
         super().__init__(ctx, source_dialect, target)
@@ -114,6 +124,10 @@ class WordWriter(Writer):
         """Section key -> its writing function: this class's dispatch table (``section_writer``), shared by
         every run that writes this dialect."""
         self.modal = ModalState()
+        self.straight = self.straight_path()
+        """Straight moves of a canonical source block take ``straight_move`` (the class allows it)."""
+        self.straight_codes = {mode: self.codes.spell("motion", mode) for mode in ("rapid", "linear")}
+        """The motion codes a straight move is written with, spelled once."""
         """What the written program has in force so far (units, distance mode, feed, plane, spindle...)."""
         self.carry: dict[str, float] = {}
         """Axis -> where the source program is minus where the written one is (program units): what
@@ -200,7 +214,74 @@ class WordWriter(Writer):
             if not changes_nothing(sections):
                 self.modal.apply(sections)
             return self.normalized(block) + (block.eol or "\n")
+        if self.straight and block.canonical:
+            text = self.straight_move(block)
+            if text is not None:
+                return text
         return self.generate(block)
+
+    @classmethod
+    def straight_path(cls) -> bool:
+        """Whether this class may write straight moves with ``straight_move``: every method of
+        ``STRAIGHT_METHODS`` is the base's or one the class declares in ``STRAIGHT_OVERRIDES``."""
+        return all(getattr(cls, name) is getattr(WordWriter, name) or name in cls.STRAIGHT_OVERRIDES
+                   for name in STRAIGHT_METHODS)
+
+    def straight_move(self, block: Block) -> str | None:
+        """A CAM program's usual block, ``N.. G1 X.. Y.. Z.. F..``, written without ``generate``'s section
+        dispatch: the text ``generate`` writes, or None (``generate`` then writes it) unless the block is
+        a rapid or feed move of numbers the source wrote in canonical spelling (``block.canonical``), with
+        at most a block number and a feed rate besides, its words in that order, each number the value
+        it reads as and one this writer writes as written (``source_number``), and nothing carried. The
+        line is then the source line with the motion code after its block number. Of the modal state
+        such a block changes only the feed rate (``ModalState.apply``). Most of a CAM block's writing
+        is dispatch and spelling; this is a few comparisons."""
+        sections = block.sections
+        motion = sections.get("Motion")
+        text = block.text
+        if not isinstance(motion, Motion) or text is None or self.carry or not self.source_numbers:
+            return None
+        code = self.straight_codes.get(motion.mode) if motion.mode is not None else None
+        axes = motion.axes
+        if code is None or not axes or motion.center is not None or motion.radius is not None:
+            return None
+        sequence = sections.get("Sequence")
+        feed = sections.get("Feed")
+        besides = (sequence is not None) + (feed is not None)
+        words = block.words
+        if len(sections) != 1 + besides or len(words) != len(axes) + besides:
+            return None
+        at = 0
+        head = 0
+        if sequence is not None:
+            if not isinstance(sequence, Sequence):
+                return None
+            letter, number = words[0]
+            if letter != "N" or number != str(sequence.number):  # N010 is written N10
+                return None
+            at = 1
+            head = len(number) + 1
+        most = self.exact_mm if self.modal.units == "mm" else self.exact_inch
+        driven = self.STRAIGHT_AXES
+        for axis, value in axes.items():
+            letter, number = words[at]
+            at += 1
+            if letter != axis or letter not in driven or value.__class__ is not float \
+                    or not as_written(number, value, most) or float(number) != value:
+                return None
+        if feed is not None:
+            if not isinstance(feed, Feed):
+                return None
+            rate = feed.value
+            letter, number = words[at]
+            if letter != "F" or rate.__class__ is not float or not as_written(number, rate, most) \
+                    or float(number) != rate:
+                return None
+            self.modal.feed = rate
+        eol = block.eol or "\n"
+        if head:
+            return text[:head] + " " + code + text[head:] + eol
+        return code + " " + text + eol
 
     def _track(self, sections: dict[str, Section]) -> None:
         if not changes_nothing(sections):
@@ -725,7 +806,17 @@ class WordWriter(Writer):
             self.modal.feed = None  # known only when the program runs
             return ["F" + self.expression(value, block)]
         self.modal.feed = value
-        return ["F" + self.number(value, "F")]
+        return ["F" + self.feed_number(value, block)]
+
+    def feed_number(self, value: float, block: Block) -> str:
+        """A feed rate's number; one so small that the written number is 0 is refused: the controller
+        would read a zero feed rate, which it refuses for every feed move (``block_rules.ZERO_FEED``)."""
+        text = self.number(value, "F")
+        if value and float(text) == 0.0:
+            raise ProgramError(f"feed rate F{value:g} is written F{text} at the output's resolution: a zero feed "
+                               "rate, which the controller refuses for a feed move",
+                               self.ctx.at(block, self.ctx.column_of(block, "F")))
+        return text
 
     def spindle_mode_words(self, s: Any, block: Block) -> list[str]:
         """Constant surface speed or rpm; a control without the choice runs rpm only, so rpm needs no word."""

@@ -16,7 +16,8 @@ from mypy_extensions import mypyc_attr
 from math import hypot
 from typing import NoReturn
 
-from postproc.block_rules import ArcError, arc_centre, check_values
+from postproc.block_rules import ZERO_FEED, ArcError, arc_centre, check_values, needs_feed
+from postproc.control import ASSIGN, CONTROL
 from postproc.errors import ProgramError
 from postproc.event_order import MOVING, after_motion
 from postproc.geometry import ARC_TOLERANCE_MM, PLACES
@@ -44,9 +45,13 @@ class ModalStateSyntax(Syntax):
         spindle = state.spindle
         if not changes_nothing(sections):
             state.apply(sections)
+        if not state.computes and (CONTROL in sections or ASSIGN in sections):
+            state.computes = True
         motion = sections.get("Motion")
         if motion is not None:
             self._move(block, ctx, motion)  # type: ignore[arg-type]
+            if state.feed == 0.0 and not state.computes and needs_feed(motion):
+                raise ProgramError(ZERO_FEED, ctx.at(block))
             if state.feed_mode == "per_rev":
                 _check_turning(block, ctx, motion, spindle)  # type: ignore[arg-type]
         if "Feed" in sections or "SpindleSpeed" in sections:
@@ -131,8 +136,9 @@ def _numbers(values: dict[str, float | Expr]) -> dict[str, float] | None:
 
 
 def _check_arc(block: Block, ctx: Context, motion: Motion) -> None:
-    """Refuse an arc no controller runs (``postproc.block_rules.arc_centre``) when its start is known,
-    so ``translate`` refuses what ``toolpath`` refuses; an arc with a computed word waits for the run."""
+    """Refuse an arc no controller runs (``postproc.block_rules.arc_centre``) when its start is known or
+    does not matter (incremental words), so ``translate`` refuses what ``toolpath`` refuses; an arc with a
+    computed word waits for the run."""
     state = ctx.state
     a1, a2, _ = PLANE_AXES[state.plane]
     if motion.center:
@@ -155,7 +161,12 @@ def _check_arc(block: Block, ctx: Context, motion: Motion) -> None:
     position = state.position
     s1, s2 = position.get(a1), position.get(a2)
     if s1 is None or s2 is None:
-        return
+        # An axis the block does not move, or moves by an increment, ends where it starts plus its word:
+        # the arc's shape does not depend on where that is. An absolute word from an unknown start does.
+        if not incremental and (s1 is None and a1 in axes or s2 is None and a2 in axes):
+            return
+        s1 = 0.0 if s1 is None else s1
+        s2 = 0.0 if s2 is None else s2
     e1, e2 = axes.get(a1), axes.get(a2)
     e1 = s1 if e1 is None else s1 + e1 if incremental else e1
     e2 = s2 if e2 is None else s2 + e2 if incremental else e2

@@ -77,6 +77,10 @@ class GrblWriter(WordWriter):
     CYCLE_CANCEL_IS_MOTION: ClassVar[bool] = True
     """G80 is a motion code here: ``G80 G0`` is refused, a block's G0-G3 ends the cycle by itself."""
     BARE_FEED_MOTION_NEEDS_FEED: ClassVar[bool] = True
+    STRAIGHT_OVERRIDES: ClassVar[frozenset[str]] = frozenset({"generate", "section_words", "motion_words"})
+    """A straight move of X, Y and Z (``STRAIGHT_AXES``) is never empty, drops nothing and is no arc:
+    these overrides write it as the base does."""
+    STRAIGHT_AXES: ClassVar[frozenset[str]] = GRBL_AXES
 
     def __init__(self, ctx: Any, source_dialect: str, target: Any = None) -> None:
         super().__init__(ctx, source_dialect, target)

@@ -66,6 +66,9 @@ class LinuxcncWriter(WordWriter):
     """G80 is a motion code here: ``G80 G0`` is refused, a block's G0-G3 ends the cycle by itself."""
     BARE_FEED_MOTION_NEEDS_FEED: ClassVar[bool] = True
     SPELLING: ClassVar[ExprSpelling | None] = LINUXCNC_SPELLING
+    STRAIGHT_OVERRIDES: ClassVar[frozenset[str]] = frozenset({"generate", "motion_words", "feed_words"})
+    """A straight move has no M19 or compensation to reorder, is no arc or reference return, and changes
+    no units: these overrides write it as the base does."""
 
     def __init__(self, ctx: Context, source_dialect: str, target: type[Dialect] | None = None) -> None:
         super().__init__(ctx, source_dialect, target)
@@ -138,7 +141,7 @@ class LinuxcncWriter(WordWriter):
         feed = self.modal.feed
         if (not self.inverse_time and isinstance(feed, (int, float)) and feed
                 and "Feed" not in block.sections and "Units" not in block.sections):
-            words.append("F" + self.number(feed, "F"))
+            words.append("F" + self.feed_number(feed, block))
         return words
 
     def feed_words(self, s: Any, block: Block) -> list[str]:
@@ -149,7 +152,7 @@ class LinuxcncWriter(WordWriter):
         self.modal.feed = s.value
         modal = self.modal
         after, modal.units = modal.units, self.units_before
-        words = ["F" + self.number(s.value * (MM_PER_INCH if after == "inch" else 1.0 / MM_PER_INCH), "F")]
+        words = ["F" + self.feed_number(s.value * (MM_PER_INCH if after == "inch" else 1.0 / MM_PER_INCH), block)]
         modal.units = after
         return words
 
