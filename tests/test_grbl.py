@@ -99,7 +99,7 @@ def test_a_tool_change_is_a_pause_that_reads_back_as_a_tool_change() -> None:
     text, warnings = to_grbl("T4 M06\nS100 M03\nT5\nM06\n")
     assert text == ("T4 M0 (TOOL CHANGE: LOAD T4, THEN CYCLE START)\nS100 M3\nT5\n"
                     "T5 M5 M0 (TOOL CHANGE: LOAD T5, THEN CYCLE START)\n")
-    assert warnings == ["t.nc:5:1: warning: the spindle is running at a tool change: M5 written before the pause"]
+    assert warnings == ["t.nc:5:1: warning: the spindle is running at a tool change: a spindle stop is written before the pause"]
     blocks = read_program(io.StringIO(GRBL_HEAD + text), file="t.gcode", dialect="grbl")
     assert isinstance(blocks[1].sections.get("ToolChange"), ToolChange)
     assert "ProgramControl" not in blocks[1].sections

@@ -12,7 +12,7 @@ from postproc.plugins import default_registry
 from postproc.setup import MachineSetup
 from postproc.rs274.order_of_execution import stops_after_motion
 from postproc_grbl import Grbl
-from postproc_grbl.lowering import cancel_length_offset_first, close_full_circles, pause_for_tool_change
+from postproc.rs274.lean_controller import cancel_length_offset_first, close_full_circles, pause_for_tool_change
 
 FANUC = default_registry().dialect("fanuc")
 
@@ -36,7 +36,7 @@ def test_tool_change_becomes_a_pause_with_the_spindle_stopped() -> None:
     assert [k for k in change.sections] == ["ToolSelect", "SpindleControl", "ProgramControl", "Comments"]
     assert change.sections["Comments"].texts == ["TOOL CHANGE: LOAD T3, THEN CYCLE START", "DRILL"]  # type: ignore[attr-defined]
     assert [w.message for w in diagnostics.warnings] == [
-        "the spindle is running at a tool change: M5 written before the pause"]
+        "the spindle is running at a tool change: a spindle stop is written before the pause"]
 
 
 def test_length_offset_cancel_goes_first_also_before_an_arc() -> None:

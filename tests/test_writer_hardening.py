@@ -79,8 +79,8 @@ def test_a_tool_change_pause_runs_before_the_rest_of_its_block() -> None:
                     "T3 M5 M0 (TOOL CHANGE: LOAD T3, THEN CYCLE START)\n"
                     "M30\n")
     assert warnings == [
-        "t.nc:3:1: warning: the spindle is running at a tool change: M5 written before the pause",
-        "t.nc:4:1: warning: the spindle is running at a tool change: M5 written before the pause"]
+        "t.nc:3:1: warning: the spindle is running at a tool change: a spindle stop is written before the pause",
+        "t.nc:4:1: warning: the spindle is running at a tool change: a spindle stop is written before the pause"]
 
 
 def test_a_spindle_stop_beside_the_tool_change_goes_into_the_pause() -> None:

@@ -41,7 +41,7 @@ SECTION_ORDER = (
     "ProgramControl", "NativeCode", "Comments",
 )
 """Word order of a generated block; sections that only annotate are skipped by ``IGNORED``."""
-STRAIGHT_METHODS = ("generate", "section_words", "sequence_words", "motion_words", "feed_words", "left_out")
+STRAIGHT_METHODS = ("write_block", "generate", "section_words", "sequence_words", "motion_words", "feed_words", "left_out")
 """The methods whose work ``WordWriter.straight_move`` does for a straight move (``STRAIGHT_OVERRIDES``)."""
 _RANK = {key: rank for rank, key in enumerate(SECTION_ORDER)}
 """Section key -> its place in ``SECTION_ORDER`` (a generated block sorts only the sections it has)."""
@@ -124,8 +124,10 @@ class WordWriter(Writer):
         """Section key -> its writing function: this class's dispatch table (``section_writer``), shared by
         every run that writes this dialect."""
         self.modal = ModalState()
-        self.straight = self.straight_path()
-        """Straight moves of a canonical source block take ``straight_move`` (the class allows it)."""
+        self.straight = self.straight_path() and source_dialect != self.DIALECT
+        """Straight moves of a canonical source block take ``straight_move`` (the class allows it; from the
+        dialect itself a block is copied or normalised instead, never generated)."""
+        self.straight_axes = self.STRAIGHT_AXES
         self.straight_codes = {mode: self.codes.spell("motion", mode) for mode in ("rapid", "linear")}
         """The motion codes a straight move is written with, spelled once."""
         """What the written program has in force so far (units, distance mode, feed, plane, spindle...)."""
@@ -214,10 +216,6 @@ class WordWriter(Writer):
             if not changes_nothing(sections):
                 self.modal.apply(sections)
             return self.normalized(block) + (block.eol or "\n")
-        if self.straight and block.canonical:
-            text = self.straight_move(block)
-            if text is not None:
-                return text
         return self.generate(block)
 
     @classmethod
@@ -262,7 +260,7 @@ class WordWriter(Writer):
             at = 1
             head = len(number) + 1
         most = self.exact_mm if self.modal.units == "mm" else self.exact_inch
-        driven = self.STRAIGHT_AXES
+        driven = self.straight_axes
         for axis, value in axes.items():
             letter, number = words[at]
             at += 1
@@ -280,8 +278,8 @@ class WordWriter(Writer):
             self.modal.feed = rate
         eol = block.eol or "\n"
         if head:
-            return text[:head] + " " + code + text[head:] + eol
-        return code + " " + text + eol
+            return f"{text[:head]} {code}{text[head:]}{eol}"
+        return f"{code} {text}{eol}"
 
     def _track(self, sections: dict[str, Section]) -> None:
         if not changes_nothing(sections):

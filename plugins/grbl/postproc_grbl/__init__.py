@@ -37,7 +37,7 @@ from postproc.xmlio import XFactory
 from .codes import CODES
 
 from .block_syntax import GrblBlockSyntax
-from .lowering import cancel_length_offset_first, close_full_circles, pause_for_tool_change
+from postproc.rs274.lean_controller import cancel_length_offset_first, close_full_circles, pause_for_tool_change
 from .reader import GrblReader
 from .writer import GrblWriter
 

@@ -2,7 +2,8 @@
 
 What grbl lacks is an ``UnsupportedError`` naming the construct, except where the target has one
 faithful spelling of the same physical action. The block rewrites (a tool change as a ``T<n> M0``
-pause, G49 before motion, full circles) are grbl's lowering steps (``lowering.py``); here:
+pause, G49 before motion, full circles) are the lean-controller lowering steps grbl lists
+(``postproc.rs274.lean_controller``); here:
 
 * an oriented spindle stop follows the set-up's ``<Cycles orientation=...>``: ``m19`` writes M19 anyway
   (a grbl build that has it), ``stop`` a program pause for the operator, ``error`` (default) refuses;
@@ -77,9 +78,11 @@ class GrblWriter(WordWriter):
     CYCLE_CANCEL_IS_MOTION: ClassVar[bool] = True
     """G80 is a motion code here: ``G80 G0`` is refused, a block's G0-G3 ends the cycle by itself."""
     BARE_FEED_MOTION_NEEDS_FEED: ClassVar[bool] = True
-    STRAIGHT_OVERRIDES: ClassVar[frozenset[str]] = frozenset({"generate", "section_words", "motion_words"})
-    """A straight move of X, Y and Z (``STRAIGHT_AXES``) is never empty, drops nothing and is no arc:
-    these overrides write it as the base does."""
+    STRAIGHT_OVERRIDES: ClassVar[frozenset[str]] = frozenset({"write_block", "generate", "section_words",
+                                                              "motion_words"})
+    """A straight move of X, Y and Z (``STRAIGHT_AXES``) is never empty, drops nothing, is no arc and no tape
+    mark, and its line is ASCII without a real-time character (a canonical line's letters, digits, '.',
+    '-' and spaces): these overrides write it as the base does."""
     STRAIGHT_AXES: ClassVar[frozenset[str]] = GRBL_AXES
 
     def __init__(self, ctx: Any, source_dialect: str, target: Any = None) -> None:

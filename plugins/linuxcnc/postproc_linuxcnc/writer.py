@@ -66,9 +66,11 @@ class LinuxcncWriter(WordWriter):
     """G80 is a motion code here: ``G80 G0`` is refused, a block's G0-G3 ends the cycle by itself."""
     BARE_FEED_MOTION_NEEDS_FEED: ClassVar[bool] = True
     SPELLING: ClassVar[ExprSpelling | None] = LINUXCNC_SPELLING
-    STRAIGHT_OVERRIDES: ClassVar[frozenset[str]] = frozenset({"generate", "motion_words", "feed_words"})
-    """A straight move has no M19 or compensation to reorder, is no arc or reference return, and changes
-    no units: these overrides write it as the base does."""
+    STRAIGHT_OVERRIDES: ClassVar[frozenset[str]] = frozenset({"write_block", "generate", "motion_words",
+                                                              "feed_words"})
+    """A straight move has no M19 or compensation to reorder, is no arc or reference return, changes no
+    units, is no tape mark or program end, and is never a program's first block (its motion mode is set
+    by a block before it, which ``write_block`` saw): these overrides write it as the base does."""
 
     def __init__(self, ctx: Context, source_dialect: str, target: type[Dialect] | None = None) -> None:
         super().__init__(ctx, source_dialect, target)

@@ -1,8 +1,11 @@
-"""grbl's own lowering steps (``Grbl.LOWERING``): pure block-stream rewrites into what grbl 1.1 runs.
+"""Lowering steps for lean controllers (grbl and its kind): block-stream rewrites into what a controller
+with no tool changer, no tool length cancel beside motion and no full-circle arc form runs. A dialect
+takes them by listing them in its ``LOWERING`` (grbl does); compiled with the hot path, because every
+block of such a translation passes through each (a straight move on two dictionary look-ups apiece).
 
 * ``pause_for_tool_change``: grbl rejects M6 (no tool changer), so a tool change becomes a program
   pause ``T<n> M0`` with a comment naming the tool; a running spindle is stopped first, as a tool
-  changer would (with a warning). The grbl reader reads ``T<n> M0`` back as a tool change. grbl runs
+  changer would (with a warning). grbl's reader reads ``T<n> M0`` back as a tool change. grbl runs
   M0 last in its block, so the rest of the block (spindle start, motion, M30) follows in a block of its
   own. With no tool selected there is no tool to name: the tool change is left for the writer to refuse.
 * ``cancel_length_offset_first``: grbl refuses G49 (an axis command of its own) in a block with
@@ -11,19 +14,22 @@
   a full circle written as ``G3 I-7.`` gets a zero increment, in G91 for that one block. A helical full
   circle in absolute mode cannot be written so: it reaches the writer unchanged and is refused there.
 
-Each step passes a program back to grbl untouched (it is copied or normalised from its own words).
+Each step passes a program from the target's own dialect untouched (it is copied or normalised from its
+own words).
 """
 
 from __future__ import annotations
 
 from typing import Iterator
 
-from postproc.context import Context
-from postproc.dialect import Dialect
-from postproc.ir import (
-    Block, Comments, CompoundMotion, DistanceMode, Motion, ProgramControl, Section, SpindleControl, ToolSelect,
+from ..context import Context
+from ..dialect import Dialect
+from ..expr import Expr
+from ..ir import (
+    Block, Comments, CompoundMotion, DistanceMode, Motion, Plane, ProgramControl, Section, SpindleControl,
+    ToolLengthOffset, ToolSelect,
 )
-from postproc.state import PLANE_AXES
+from ..state import PLANE_AXES
 
 
 def pause_for_tool_change(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
@@ -33,7 +39,7 @@ def pause_for_tool_change(blocks: Iterator[Block], ctx: Context, target: type[Di
 
 
 def _pause_for_tool_change(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
-    tool: int | None = None
+    tool: int | Expr | None = None
     spindle = "stop"
     orient_stops = ctx.setup.cycles.orientation == "stop"
     for block in blocks:
@@ -42,16 +48,16 @@ def _pause_for_tool_change(blocks: Iterator[Block], ctx: Context) -> Iterator[Bl
             yield block
             continue
         select = sections.get("ToolSelect")
-        if select is not None:
-            tool = select.number  # type: ignore[attr-defined]
-        if "ToolChange" in sections and tool is not None:
+        if isinstance(select, ToolSelect):
+            tool = select.number
+        if tool is not None and "ToolChange" in sections:
             pause = _pause(block, ctx, tool, spindle)
             spindle = "stop"
             if pause is not block:
                 yield pause
         control = sections.get("SpindleControl")
-        if control is not None:
-            spindle = control.direction  # type: ignore[attr-defined]
+        if isinstance(control, SpindleControl):
+            spindle = control.direction
         if orient_stops and "SpindleOrientation" in sections:
             spindle = "stop"  # the writer stops the spindle before the operator orients it
         compound = sections.get("CompoundMotion")
@@ -68,7 +74,7 @@ _PAUSE_KEYS = ("Sequence", "BlockDelete", "ToolSelect", "ToolChange", "Comments"
 """What the pause block takes from the tool-change block (the rest runs after the pause)."""
 
 
-def _pause(block: Block, ctx: Context, tool: int, spindle: str) -> Block:
+def _pause(block: Block, ctx: Context, tool: int | Expr, spindle: str) -> Block:
     """The pause ``T<n> [M5] M0 (TOOL CHANGE ...)`` standing for the block's tool change. grbl runs a
     block's spindle codes, motion and other stop codes before its M0, where the tool change comes first
     (the simulator's and a tool changer's order): whatever else the block does is left in ``block``, to
@@ -83,7 +89,7 @@ def _pause(block: Block, ctx: Context, tool: int, spindle: str) -> Block:
     pause: dict[str, Section] = {k: sections[k] for k in ("Sequence", "BlockDelete") if k in sections}
     pause["ToolSelect"] = ToolSelect(tool)
     if spindle != "stop" and not stop_here:
-        ctx.diagnostics.warn("the spindle is running at a tool change: M5 written before the pause", ctx.at(block))
+        ctx.diagnostics.warn("the spindle is running at a tool change: a spindle stop is written before the pause", ctx.at(block))
     if spindle != "stop" or stop_here:
         pause["SpindleControl"] = SpindleControl("stop")
     pause["ProgramControl"] = ProgramControl("stop")
@@ -113,7 +119,7 @@ def _cancel_length_offset_first(blocks: Iterator[Block]) -> Iterator[Block]:
     for block in blocks:
         sections = block.sections
         offset = sections.get("ToolLengthOffset")
-        if offset is None or offset.mode != "cancel" or (  # type: ignore[attr-defined]
+        if not isinstance(offset, ToolLengthOffset) or offset.mode != "cancel" or (
                 "Motion" not in sections and "CompoundMotion" not in sections):
             yield block
             continue
@@ -136,12 +142,12 @@ def _close_full_circles(blocks: Iterator[Block]) -> Iterator[Block]:
     distance = "absolute"
     for block in blocks:
         sections = block.sections
-        s = sections.get("Plane")
-        if s is not None:
-            plane = s.plane  # type: ignore[attr-defined]
-        s = sections.get("DistanceMode")
-        if s is not None:
-            distance = s.mode  # type: ignore[attr-defined]
+        chosen = sections.get("Plane")
+        if isinstance(chosen, Plane):
+            plane = chosen.plane
+        mode = sections.get("DistanceMode")
+        if isinstance(mode, DistanceMode):
+            distance = mode.mode
         arc = sections.get("Motion")
         if not isinstance(arc, Motion) or arc.mode not in ("cw", "ccw"):
             yield block
