@@ -14,7 +14,7 @@ from __future__ import annotations
 from mypy_extensions import mypyc_attr
 
 from math import hypot
-from typing import NoReturn
+from typing import Final, NoReturn
 
 from postproc.block_rules import ZERO_FEED, ArcError, arc_centre, check_values, needs_feed
 from postproc.control import ASSIGN, CONTROL
@@ -27,6 +27,9 @@ from postproc.state import MM_PER_INCH, PLANE_AXES, changes_nothing
 from postproc.context import Context
 from postproc.syntax import Syntax
 
+_CONTROL: Final = CONTROL
+_ASSIGN: Final = ASSIGN
+"""The construct keys, as constants of this module (compiled: no global look-up on every block)."""
 _MODAL_MOTION = frozenset(("rapid", "linear", "cw", "ccw", "thread"))
 LATHE_INCREMENTS = {"U": "X", "W": "Z"}
 """On a lathe, U and W are incremental X and Z whatever the distance mode (Fanuc T system A, GSK)."""
@@ -45,7 +48,7 @@ class ModalStateSyntax(Syntax):
         spindle = state.spindle
         if not changes_nothing(sections):
             state.apply(sections)
-        if not state.computes and (CONTROL in sections or ASSIGN in sections):
+        if not state.computes and (_CONTROL in sections or _ASSIGN in sections):
             state.computes = True
         motion = sections.get("Motion")
         if motion is not None:
