@@ -82,10 +82,11 @@ def _expand(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Ite
         compound = sections.get("CompoundMotion")
         if isinstance(compound, CompoundMotion):
             try:
-                compound.items  # a lazy expansion is made here, and refused here (e.g. too many moves)
+                made = compound.items  # a lazy expansion is made here, and refused here (e.g. too many moves)
             except PostprocError as err:
                 ctx.diagnostics.error(err)
                 continue
+            del made
             _restore_motion_mode(compound, cycle.motion)
             if not can_orient and _orients(compound) \
                     and not _handle_orientation(block, compound, ctx, cycles.orientation, target, source):
