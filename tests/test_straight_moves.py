@@ -21,9 +21,11 @@ from postproc.api import translate
 from postproc.errors import Diagnostics, ErrorList
 from postproc.ir import Block
 from postproc.plugins import default_registry
-from postproc.rs274.writer import WordWriter
+from postproc.rs274.writer import COPY_METHODS, WordWriter
+from postproc.setup import MachineSetup
 
-TARGETS = ("linuxcnc", "grbl")
+TARGETS = ("linuxcnc", "grbl", "fanuc")
+"""fanuc: the program normalised back to Fanuc (``straight_copy``: a straight block is its source line)."""
 
 
 def _writer(target: str) -> type[WordWriter]:
@@ -82,9 +84,11 @@ def lines(draw: st.DrawFn) -> list[str]:
 def _run(program: list[str], target: str) -> str:
     out = io.StringIO()
     diagnostics = Diagnostics(warn_stream=io.StringIO())
+    setup = MachineSetup()
+    setup.output.normalize = target == "fanuc"
     try:
         translate([line + "\n" for line in program], out, file="p.nc", source="fanuc", target=target,
-                  diagnostics=diagnostics)
+                  diagnostics=diagnostics, setup=setup)
     except ErrorList as err:
         return "errors:\n" + str(err)
     return out.getvalue() + "\n".join(str(w) for w in diagnostics.warnings)
@@ -101,7 +105,7 @@ def test_straight_path_writes_what_generate_writes(program: list[str], target: s
     fast = _run(program, target)
     with monkeypatch.context() as patch:
         patch.setattr(writer, "STRAIGHT_OVERRIDES", frozenset())
-        assert not writer.straight_path()
+        assert not writer.straight_path() and (target != "fanuc" or not writer.straight_path(COPY_METHODS))
         slow = _run(program, target)
     assert fast == slow
 
@@ -111,7 +115,7 @@ def test_cam_blocks_take_the_straight_path(target: str, monkeypatch: pytest.Monk
     """The path is on for the shipped writers, and a CAM program's straight blocks take it (the test
     above would pass with the path never taken)."""
     writer_class = _writer(target)
-    assert writer_class.straight_path()
+    assert writer_class.straight_path(COPY_METHODS if target == "fanuc" else ())
     taken: list[str] = []
 
     class Counting(writer_class):  # type: ignore[valid-type,misc]
@@ -125,8 +129,11 @@ def test_cam_blocks_take_the_straight_path(target: str, monkeypatch: pytest.Monk
     program = ["G21 G90 G17", "G0 X0. Y0.", "N10 G1 Z-1. F300.", "N20 X10.5 Y2.25", "N30 X-3.125 Y0.5 F1200.",
                "X0.000001 Y7.", "N40 Y8.5 Z-1.5", "G0 X5.", "N50 X2."]
     out = _run(program, target)
-    assert taken == ["N20 G1 X10.5 Y2.25\n", "N30 G1 X-3.125 Y0.5 F1200.\n", "G1 X0.000001 Y7.\n",
-                     "N40 G1 Y8.5 Z-1.5\n", "N50 G0 X2.\n"]
+    if target == "fanuc":  # normalised back: every block of a move (motion code or not) is its source line
+        assert taken == [line + "\n" for line in program[1:]]
+    else:
+        assert taken == ["N20 G1 X10.5 Y2.25\n", "N30 G1 X-3.125 Y0.5 F1200.\n", "G1 X0.000001 Y7.\n",
+                         "N40 G1 Y8.5 Z-1.5\n", "N50 G0 X2.\n"]
     assert all(line in out for line in taken)
 
 
@@ -137,6 +144,24 @@ class _Overriding(WordWriter):
         return ["G1", "X0."]
 
 
+class _DeclaringBase(WordWriter):
+    """Declares its own ``motion_words`` agrees with the base."""
+
+    STRAIGHT_OVERRIDES = frozenset({"motion_words"})
+
+    def motion_words(self, s: object, block: Block) -> list[str]:  # type: ignore[override]
+        return super().motion_words(s, block)  # type: ignore[arg-type]
+
+
+class _OverridingAgain(_DeclaringBase):
+    """Overrides ``motion_words`` again: its parent's declaration does not speak for it."""
+
+    def motion_words(self, s: object, block: Block) -> list[str]:  # type: ignore[override]
+        return ["G1", "X0."]
+
+
 def test_an_undeclared_override_turns_the_path_off() -> None:
     assert WordWriter.straight_path()
     assert not _Overriding.straight_path()
+    assert _DeclaringBase.straight_path()
+    assert not _OverridingAgain.straight_path()

@@ -47,6 +47,10 @@ class FanucWriter(LatheWordWriter):
     SETTING_ADDS_IN_INCREMENTAL: ClassVar[bool] = True
     SUBPROGRAM_NUMBERS: ClassVar[range] = range(2000, 8000)
     """Program numbers given to named subprograms (below O8000, which controls often lock)."""
+    STRAIGHT_OVERRIDES: ClassVar[frozenset[str]] = frozenset({"write_block"})
+    """Normalised back to Fanuc, a block of a move, its block number and feed rate is written by the base:
+    this ``write_block`` captures only another dialect's named subprograms and watches none of those
+    sections (``WordWriter.straight_move``)."""
 
     def __init__(self, ctx: Context, source_dialect: str, target: type[Dialect] | None = None) -> None:
         super().__init__(ctx, source_dialect, target)

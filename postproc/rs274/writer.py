@@ -43,6 +43,10 @@ SECTION_ORDER = (
 """Word order of a generated block; sections that only annotate are skipped by ``IGNORED``."""
 STRAIGHT_METHODS = ("write_block", "generate", "section_words", "sequence_words", "motion_words", "feed_words", "left_out")
 """The methods whose work ``WordWriter.straight_move`` does for a straight move (``STRAIGHT_OVERRIDES``)."""
+COPY_METHODS = ("write_block", "normalized")
+"""The methods whose work ``straight_move`` does for a straight block normalised back to its own dialect."""
+_STRAIGHT_KEYS = frozenset(("Sequence", "Motion", "Feed"))
+"""A block of only these sections (a move, its block number and feed rate) is a straight block."""
 _RANK = {key: rank for rank, key in enumerate(SECTION_ORDER)}
 """Section key -> its place in ``SECTION_ORDER`` (a generated block sorts only the sections it has)."""
 _UNWRITTEN = frozenset(("ProgramStart", "TapeMark", "Label"))
@@ -124,9 +128,12 @@ class WordWriter(Writer):
         """Section key -> its writing function: this class's dispatch table (``section_writer``), shared by
         every run that writes this dialect."""
         self.modal = ModalState()
-        self.straight = self.straight_path() and source_dialect != self.DIALECT
+        self.straight_copy = (source_dialect == self.DIALECT and self.normalize and not self.renumber
+                              and self.leading_zero and not self.rounding and self.straight_path(COPY_METHODS))
+        """A straight block normalised back to its own dialect is its source line (``straight_move``)."""
+        self.straight = self.straight_copy or (source_dialect != self.DIALECT and self.straight_path())
         """Straight moves of a canonical source block take ``straight_move`` (the class allows it; from the
-        dialect itself a block is copied or normalised instead, never generated)."""
+        dialect itself a block is copied or normalised, never generated)."""
         self.straight_axes = self.STRAIGHT_AXES
         self.straight_codes = {mode: self.codes.spell("motion", mode) for mode in ("rapid", "linear")}
         """The motion codes a straight move is written with, spelled once."""
@@ -219,11 +226,16 @@ class WordWriter(Writer):
         return self.generate(block)
 
     @classmethod
-    def straight_path(cls) -> bool:
-        """Whether this class may write straight moves with ``straight_move``: every method of
-        ``STRAIGHT_METHODS`` is the base's or one the class declares in ``STRAIGHT_OVERRIDES``."""
-        return all(getattr(cls, name) is getattr(WordWriter, name) or name in cls.STRAIGHT_OVERRIDES
-                   for name in STRAIGHT_METHODS)
+    def straight_path(cls, methods: tuple[str, ...] = ()) -> bool:
+        """Whether this class may write straight moves with ``straight_move``: every method of ``methods``
+        (default ``STRAIGHT_METHODS``: those a generated block passes) is the base's, or the class that
+        defines it lists it in its own ``STRAIGHT_OVERRIDES`` (a subclass that overrides it again says so
+        again: a declaration is not inherited by a new override)."""
+        for name in methods or STRAIGHT_METHODS:
+            owner = next(c for c in cls.__mro__ if name in c.__dict__)
+            if owner is not WordWriter and name not in owner.__dict__.get("STRAIGHT_OVERRIDES", ()):
+                return False
+        return True
 
     def straight_move(self, block: Block) -> str | None:
         """A CAM program's usual block, ``N.. G1 X.. Y.. Z.. F..``, written without ``generate``'s section
@@ -233,10 +245,21 @@ class WordWriter(Writer):
         it reads as and one this writer writes as written (``source_number``), and nothing carried. The
         line is then the source line with the motion code after its block number. Of the modal state
         such a block changes only the feed rate (``ModalState.apply``). Most of a CAM block's writing
-        is dispatch and spelling; this is a few comparisons."""
+        is dispatch and spelling; this is a few comparisons. Normalised back to its own dialect
+        (``straight_copy``), a canonical block of a move, a block number and a feed rate is its source
+        line, as ``normalized`` writes it."""
         sections = block.sections
-        motion = sections.get("Motion")
         text = block.text
+        if self.straight_copy:
+            if text is None or not sections.keys() <= _STRAIGHT_KEYS:
+                return None
+            # what ``write_block`` does to a canonical block it normalises: its source line, exact
+            if not changes_nothing(sections):
+                self.modal.apply(sections)
+            if self.carry:
+                self._exact_axes(block)
+            return text + (block.eol or "\n")
+        motion = sections.get("Motion")
         if not isinstance(motion, Motion) or text is None or self.carry or not self.source_numbers:
             return None
         code = self.straight_codes.get(motion.mode) if motion.mode is not None else None
