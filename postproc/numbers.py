@@ -70,6 +70,9 @@ def format_decimal(value: float, places: int, leading_zero: bool = True, exact: 
 
 
 _SHORT_RANGE: Final = 1e6
+SHORT_RANGE: Final = _SHORT_RANGE
+"""``as_written`` holds for a canonical number of at most ``most`` places below this magnitude (a writer
+whose ``most`` covers every canonical number, ``MAX_PLACES``, tests only the magnitude)."""
 """Below this magnitude a float is within 6e-11 of its shortest decimal (half its spacing, 2**-34), less
 than half a unit of the 9th place (5e-10): ``exact_decimal``'s shortcut is sound for up to 9 places."""
 _SCALE: list[float] = [1.0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9]

@@ -36,12 +36,12 @@ class FanucReader(Reader):
         number = 0
         for raw in lines:
             number += 1
-            if raw[-1:] == "\n":
-                if raw[-2:-1] == "\r":
+            if raw.endswith("\n"):  # (compiled, endswith makes no string; a slice does)
+                if raw.endswith("\r\n"):
                     text, eol = raw[:-2], "\r\n"
                 else:
                     text, eol = raw[:-1], "\n"
-            elif raw[-1:] == "\r":
+            elif raw.endswith("\r"):
                 text, eol = raw[:-1], "\r"
             else:
                 text, eol = raw, ""

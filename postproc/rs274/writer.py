@@ -23,7 +23,7 @@ from .codes import CodeTable
 from .expressions import ExprSpelling, spell_word_value
 from ..ir import Block, CompoundMotion, Feed, Motion, Section, Sequence, one_line
 from ..numbers import (
-    EXACT, EXACT_INCH, MAX_PLACES, as_written, canonical_number_re, decimal_text, format_decimal, shortcut_places,
+    EXACT, EXACT_INCH, MAX_PLACES, SHORT_RANGE, as_written, canonical_number_re, decimal_text, format_decimal, shortcut_places,
 )
 from ..state import MM_PER_INCH, PLANE_AXES, ModalState, changes_nothing
 from ..context import Context
@@ -283,19 +283,22 @@ class WordWriter(Writer):
             at = 1
             head = len(number) + 1
         most = self.exact_mm if self.modal.units == "mm" else self.exact_inch
+        every = most >= MAX_PLACES  # every canonical number has at most MAX_PLACES: as_written is the range
         driven = self.straight_axes
         for axis, value in axes.items():
             letter, number = words[at]
             at += 1
-            if letter != axis or letter not in driven or value.__class__ is not float \
-                    or not as_written(number, value, most) or float(number) != value:
+            if letter != axis or letter not in driven or value.__class__ is not float or not (
+                    -SHORT_RANGE < value < SHORT_RANGE if every else as_written(number, value, most)) \
+                    or float(number) != value:
                 return None
         if feed is not None:
             if not isinstance(feed, Feed):
                 return None
             rate = feed.value
             letter, number = words[at]
-            if letter != "F" or rate.__class__ is not float or not as_written(number, rate, most) \
+            if letter != "F" or rate.__class__ is not float or not (
+                    -SHORT_RANGE < rate < SHORT_RANGE if every else as_written(number, rate, most)) \
                     or float(number) != rate:
                 return None
             self.modal.feed = rate
