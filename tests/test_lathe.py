@@ -463,6 +463,16 @@ def test_an_absolute_and_an_incremental_word_of_one_axis_are_refused() -> None:
         "in.nc:2:6: error: Z and W in one block: the absolute and the incremental Z of one move"]
 
 
+@pytest.mark.parametrize("line", ["X20. U2.", "N20 Z-5. W1.5", "G1 X20. U2."])
+def test_a_cam_line_with_both_words_of_an_axis_is_refused_too(line: str) -> None:
+    """A canonical CAM line (no G code) takes the block syntax's fast path, which once accepted ``X20. U2.``
+    (run as X22) while ``G1 X20. U2.`` was refused: both are."""
+    with pytest.raises(ErrorList) as info:
+        blocks(f"G00 X60. Z5. S500 M03\nG01 X50. F0.2\n{line}\n", "fanuc")
+    [error] = [str(e) for e in info.value.errors]
+    assert error.startswith("in.nc:3:") and "in one block: the absolute and the incremental" in error
+
+
 def test_g76_one_block_form_becomes_two_blocks_for_gsk() -> None:
     """Fanuc 15-T ``G76 X Z K D F A P``: K height, D first depth (decimal); GSK gets the two-block form
     with the set-up's m and r and the block's angle, P/Q in least increments."""
