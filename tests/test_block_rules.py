@@ -131,3 +131,19 @@ def test_translate_refuses_the_arcs_the_toolpath_refuses(arc: str, message: str,
     with pytest.raises(ErrorList) as exc:
         list(toolpath_events(io.StringIO(program), file="t.nc", dialect="fanuc"))
     assert [str(e) for e in exc.value.errors] == [message]
+
+
+@pytest.mark.parametrize("target, normalize", [("linuxcnc", False), ("grbl", False), ("fanuc", True)])
+def test_a_feed_rate_written_as_zero_is_refused(target: str, normalize: bool) -> None:
+    """F0.0000001 is no zero feed in the source, but the output's resolution writes it F0., which the
+    controller refuses for the feed move after it: the translation fails instead."""
+    from postproc.setup import MachineSetup
+
+    setup = MachineSetup()
+    setup.output.normalize = normalize
+    program = "G21 G17 G90\nG0 X0. F0.0000001\nG1 X1.\nM30\n"
+    with pytest.raises(ErrorList) as info:
+        translate(io.StringIO(program), io.StringIO(), file="p.nc", source="fanuc", target=target, setup=setup)
+    assert [str(e) for e in info.value.errors] == [
+        "p.nc:2:8: error: feed rate F1e-07 is written F0. at the output's resolution: a zero feed rate, which the "
+        "controller refuses for a feed move"]

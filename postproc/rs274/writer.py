@@ -350,7 +350,8 @@ class WordWriter(Writer):
             if isinstance(value, float) and up in axes and (axes[up] and up in self.carry or own or not canonical(num)):
                 parts.append(up + self.position(up, value, axes[up]))
             elif value.__class__ is float and (own or not canonical(num)):  # an expression keeps its text
-                parts.append(up + (self.speed(value) if up == "S" and own else number(value, up)))
+                parts.append(up + (self.speed(value) if up == "S" and own
+                                   else self.feed_number(value, block) if up == "F" else number(value, up)))
             else:
                 parts.append(up + num)
         if renumber and block.words and "ProgramStart" not in sections:
