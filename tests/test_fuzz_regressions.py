@@ -93,11 +93,17 @@ def test_settings_beside_compensation_on_go_before_it_for_linuxcnc(body: str, se
     assert report.ok, report.summary()
 
 
+_M6_UNDER_COMP = ("a tool change (M6) with cutter compensation on (rs274 changes the tool before it runs the block's "
+                  "G40: \"Cannot change tools with cutter radius compensation on\"; program G40 in a block before)")
+
+
 @pytest.mark.parametrize("body, message", [
     ("G41 D1 G01 X5. F100.\nG49\n", "t.nc:3:1: error: the linuxcnc dialect cannot express a change of tool length "
                                     "offset with cutter compensation on (rs274 refuses it: program G40 first)"),
     ("G41 G28\n", "t.nc:2:1: error: the linuxcnc dialect cannot express G28/G30 with cutter compensation on "
                   "(rs274: \"Cannot use g28 or g30 with cutter radius comp\")"),
+    ("T1 G41\nM06\n", "t.nc:3:1: error: the linuxcnc dialect cannot express " + _M6_UNDER_COMP),
+    ("T1 G41\nG40 M06\n", "t.nc:3:1: error: the linuxcnc dialect cannot express " + _M6_UNDER_COMP),
     ("G41\nG19\n", "t.nc:3:1: error: the linuxcnc dialect cannot express a change to the YZ plane with cutter "
                    "compensation on (rs274: \"Cannot change planes with cutter radius compensation on\")"),
     ("G19 G41\n", "t.nc:2:1: error: the linuxcnc dialect cannot express cutter compensation left in the YZ plane "
@@ -238,3 +244,10 @@ def test_an_assignment_beside_words_goes_after_them_on_its_own_fanuc_line(source
     report = verify_lines(io.StringIO(program), io.StringIO(out.getvalue()), file_in="a.nc", file_out="b.nc",
                           source=source, target="fanuc", tolerance=0.0)
     assert report.ok and report.moves >= 2, report.summary()
+
+
+def test_a_tool_change_that_turns_compensation_on_is_written() -> None:
+    """rs274 changes the tool (order 6) before it turns compensation on (15): ``G41 M6`` from off runs."""
+    out = io.StringIO()
+    translate(io.StringIO(HEAD + "T1 G41 M06\nG40\nM30\n"), out, file="t.nc", source="fanuc", target="linuxcnc")
+    assert "G41 T1 M6" in out.getvalue().splitlines()

@@ -85,6 +85,8 @@ class LinuxcncWriter(WordWriter):
         self._ended = False
         self._cutter_on = False
         """Cutter compensation is on (rs274 refuses turning it on again, and G28/G30 under it)."""
+        self._cutter_before = False
+        """Whether compensation was on before the block whose compensation word was written last."""
         self._opened: bool | None = None
         """Whether the program opened with '%' (None: nothing written yet)."""
         """The main program's end was written: an ``O<n>`` now starts a subprogram."""
@@ -107,6 +109,7 @@ class LinuxcncWriter(WordWriter):
         if s.mode != "off" and (plane.plane if plane is not None else self.modal.plane) == "YZ":  # type: ignore[attr-defined]
             self.unsupported(f"cutter compensation {s.mode} in the YZ plane (rs274: \"Cutter radius compensation "
                              "allowed only in XY, XZ planes\")", block)
+        self._cutter_before = self._cutter_on
         self._cutter_on = s.mode != "off"
         return super().cutter_compensation_words(s, block)
 
@@ -316,6 +319,17 @@ class LinuxcncWriter(WordWriter):
     def tool_length_offset_words(self, s: Any, block: Block) -> list[str]:
         self._locked("tool length offset", block)
         return super().tool_length_offset_words(s, block)
+
+    def tool_change_words(self, s: Any, block: Block) -> list[str]:
+        """rs274: "Cannot change tools with cutter radius compensation on". It changes the tool before it
+        runs the block's G40/G41/G42 (order of execution 6 before 15): what counts is compensation before
+        the block (``G40 M6`` under compensation is refused, ``G41 M6`` from off is not)."""
+        on = self._cutter_before if "CutterCompensation" in block.sections else self._cutter_on
+        if on:
+            self.unsupported("a tool change (M6) with cutter compensation on (rs274 changes the tool before it "
+                             "runs the block's G40: \"Cannot change tools with cutter radius compensation on\"; "
+                             "program G40 in a block before)", block)
+        return super().tool_change_words(s, block)
 
     def work_offset_words(self, s: Any, block: Block) -> list[str]:
         self._locked("work coordinate system", block)
