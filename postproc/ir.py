@@ -640,8 +640,10 @@ class Block:
         self.values: dict[str, float | int | Expr] = {}
         self.sections: dict[str, Section] = {}
         self.canonical = False
-        """A reader's hint: ``text`` is already in canonical spelling (``postproc.numbers``), so a
-        normalising writer may copy it. Not part of the block's value (equality, XML)."""
+        """A reader's hint: ``text`` is its ``words`` joined by single spaces, already in canonical
+        spelling (``postproc.numbers``), so a writer may copy it (``WordWriter.straight_move``); whatever
+        takes words out of such a block (a call's words into its section) clears it. Not part of the
+        block's value (equality, XML)."""
 
     def add(self, section: Section) -> Section:
         self.sections[section.KEY] = section

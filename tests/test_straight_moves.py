@@ -12,6 +12,7 @@ warnings and errors must be the same.
 from __future__ import annotations
 
 import io
+from decimal import Decimal
 
 import pytest
 from hypothesis import HealthCheck, example, given, settings
@@ -54,17 +55,70 @@ def numbers(draw: st.DrawFn) -> str:
     return text
 
 
+def _decimal(value: Decimal) -> str:
+    """A decimal in canonical spelling (``X12.5``, ``X0.``, ``X-0.125``)."""
+    text = format(value.normalize(), "f") if value else "0"
+    return text if "." in text else text + "."
+
+
+@st.composite
+def arcs(draw: st.DrawFn, number: str) -> list[str]:
+    """An arc in one of the three planes, from a point a rapid move sets: a half circle with its centre
+    I/J/K (its end point opposite its start, so on the circle) or its radius R, maybe a helix, maybe
+    written as a straight path cannot (centre letters out of order, a zero radius, no end point in the
+    plane, a following modal arc); each time, the straight path must write it as ``generate`` does."""
+    plane = draw(st.sampled_from(["G17", "G18", "G19"]))
+    first, second = {"G17": ("X", "Y"), "G18": ("Z", "X"), "G19": ("Y", "Z")}[plane]
+    offset_letter = {"X": "I", "Y": "J", "Z": "K"}
+    p = Decimal(draw(st.integers(min_value=-9999, max_value=9999))) / 100
+    q = Decimal(draw(st.integers(min_value=-9999, max_value=9999))) / 100
+    i = Decimal(draw(st.integers(min_value=-400, max_value=400))) / 8
+    j = Decimal(draw(st.integers(min_value=-400, max_value=400))) / 8
+    code = draw(st.sampled_from(["G2", "G02", "G3", "G03"]))
+    out = [plane, "G90", f"G0 {first}{_decimal(p)} {second}{_decimal(q)}"]
+    ends = {first: _decimal(p + 2 * i), second: _decimal(q + 2 * j)}
+    axes = [f"{a}{ends[a]}" for a in "XYZ" if a in ends]
+    shape = draw(st.sampled_from(["centre"] * 4 + ["radius", "helix", "reversed", "zero", "no end", "modal"]))
+    feed = draw(st.sampled_from(["", " F250.", " F80."]))
+    if shape == "radius":
+        if j:  # a chord along the first axis, shorter than the diameter (grbl's float32 refuses a half
+            # circle by R whose chord rounds longer than 2R: error 34)
+            ends = {first: _decimal(p + 2 * j), second: _decimal(q)}
+            axes = [f"{a}{ends[a]}" for a in "XYZ" if a in ends]
+            out.append(f"{number}{code} {' '.join(axes)} R{_decimal(abs(j) + Decimal('0.5'))}{feed}")
+        return out
+    centre = {offset_letter[first]: _decimal(i), offset_letter[second]: _decimal(j)}
+    words = [f"{k}{centre[k]}" for k in "IJK" if k in centre]
+    if shape == "reversed":
+        words.reverse()
+    if shape == "helix":
+        third = next(a for a in "XYZ" if a not in ends)
+        axes.append(f"{third}-1.5")
+    if shape == "zero":
+        axes = [f"{first}{_decimal(p)}"]
+        words = [f"{k}0." for k in "IJK" if k in centre]
+    if shape == "no end":
+        third = next(a for a in "XYZ" if a not in ends)
+        axes = [f"{third}-2."]
+    out.append(f"{number}{code} {' '.join(axes)} {' '.join(words)}{feed}")
+    if shape == "modal":  # the same half circle back, its motion code modal
+        back = {offset_letter[first]: _decimal(-i), offset_letter[second]: _decimal(-j)}
+        out.append(f"{first}{_decimal(p)} {second}{_decimal(q)} " + " ".join(f"{k}{back[k]}" for k in "IJK" if k in back))
+    return out
+
+
 @st.composite
 def lines(draw: st.DrawFn) -> list[str]:
     out = [draw(st.sampled_from(["G21", "G20"])), draw(st.sampled_from(["G90", "G91"])),
-           draw(st.sampled_from(["G1 F100.", "G0", "G1"]))]
+           draw(st.sampled_from(["G1 F100.", "G1 F100.", "G0", "G1"]))]
+    if draw(st.booleans()):
+        out.insert(0, "%")
     for i in range(draw(st.integers(min_value=1, max_value=12))):
-        kind = draw(st.sampled_from(["move"] * 8 + ["arc", "mode", "units", "rapid"]))
+        kind = draw(st.sampled_from(["move"] * 6 + ["coded"] * 2 + ["arc", "arc", "mode", "units", "rapid"]))
         number = draw(st.sampled_from([f"N{10 * (i + 1)} ", f"N0{i + 1} ", ""]))
         if kind == "arc":
-            end = draw(st.integers(min_value=-999, max_value=999))  # never where it starts (a full circle)
-            out.append(f"{number}G2 X{end}.25 R99999.")  # a chord the radius reaches
-            out.append(draw(st.sampled_from(["G1", "G0"])))  # then straight moves again
+            out.extend(draw(arcs(number)))
+            out.append(draw(st.sampled_from(["G17 G1", "G17 G0"])))  # then straight moves again
         elif kind == "mode":
             out.append(draw(st.sampled_from(["G90", "G91", "G1", "G0"])))
         elif kind == "units":
@@ -73,11 +127,15 @@ def lines(draw: st.DrawFn) -> list[str]:
             axes = draw(st.lists(st.sampled_from("XYZAB"), min_size=1, max_size=4, unique=True))
             if kind == "rapid":
                 number += "G0 "
+            elif kind == "coded":
+                number += draw(st.sampled_from(["G1 ", "G01 ", "G0 ", "G00 "]))
             words = [f"{axis}{draw(numbers())}" for axis in axes]
             if draw(st.booleans()):
                 feed = draw(numbers()).lstrip("-")
                 words.append(f"F{feed}" if feed.strip("0.") else "F100.")
             out.append(number + " ".join(words))
+    if out[0] == "%":
+        out.append("%")
     return out
 
 
@@ -99,6 +157,12 @@ def _run(program: list[str], target: str) -> str:
 @given(program=lines())
 @example(program=["G21", "G90", "G1 F100.", "N10 X1.5 Y-2.25 Z0.001 F1200."])
 @example(program=["G21", "G91", "G1 F100.", "X0.0000001", "X1.5"])
+@example(program=["G21 G90", "G1 X1. F100.", "%"])  # a motion code in the first block: LinuxCNC sees it open
+@example(program=["(SETUP)", "G1 X1. F100.", "%"])
+@example(program=["%", "G1 X1. F100.", "G2 X3. Y0. I1. J0.", "%"])
+@example(program=["G21 G90 G17", "G1 F100.", "G0 X1. Y1.", "G2 Z-2. I1. J0."])  # no end point in its plane
+@example(program=["G21 G90 G18", "G1 F100.", "G0 X1. Z1.", "G3 X1. I0. K0."])  # zero radius
+@example(program=["G21 G90 G19", "G1 F100.", "G0 Y1. Z1.", "G3 Y1. Z3. K1. J0."])  # centre words K before J
 def test_straight_path_writes_what_generate_writes(program: list[str], target: str,
                                                    monkeypatch: pytest.MonkeyPatch) -> None:
     writer = _writer(target)
@@ -127,13 +191,15 @@ def test_cam_blocks_take_the_straight_path(target: str, monkeypatch: pytest.Monk
 
     monkeypatch.setattr(default_registry().dialect(target), "WRITER", Counting)
     program = ["G21 G90 G17", "G0 X0. Y0.", "N10 G1 Z-1. F300.", "N20 X10.5 Y2.25", "N30 X-3.125 Y0.5 F1200.",
-               "X0.000001 Y7.", "N40 Y8.5 Z-1.5", "G0 X5.", "N50 X2."]
+               "X0.000001 Y7.", "N40 Y8.5 Z-1.5", "G0 X5.", "N50 X2.", "G1 X0. Y0.", "N60 G02 X4. Y0. I2. J0.",
+               "G3 X0. Y0. R2.5", "X4. Y0. I2. J0."]
     out = _run(program, target)
     if target == "fanuc":  # normalised back: every block of a move (motion code or not) is its source line
         assert taken == [line + "\n" for line in program[1:]]
     else:
-        assert taken == ["N20 G1 X10.5 Y2.25\n", "N30 G1 X-3.125 Y0.5 F1200.\n", "G1 X0.000001 Y7.\n",
-                         "N40 G1 Y8.5 Z-1.5\n", "N50 G0 X2.\n"]
+        assert taken == ["G0 X0. Y0.\n", "N10 G1 Z-1. F300.\n", "N20 G1 X10.5 Y2.25\n", "N30 G1 X-3.125 Y0.5 F1200.\n",
+                         "G1 X0.000001 Y7.\n", "N40 G1 Y8.5 Z-1.5\n", "G0 X5.\n", "N50 G0 X2.\n", "G1 X0. Y0.\n",
+                         "N60 G2 X4. Y0. I2. J0.\n", "G3 X0. Y0. R2.5\n", "G3 X4. Y0. I2. J0.\n"]
     assert all(line in out for line in taken)
 
 

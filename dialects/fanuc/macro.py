@@ -80,6 +80,7 @@ def read_call(block: Block, ctx: Context) -> None:
     for up in taken:
         block.values.pop(up, None)
     block.words = keep
+    block.canonical = False  # its text is no longer its words (``Block.canonical``)
     block.add(_section(block, ctx, code, taken))
 
 

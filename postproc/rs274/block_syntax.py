@@ -41,6 +41,10 @@ INTEGER_LETTERS = frozenset("NOTHDLP")
 _UPPER = {c: c.upper() for c in "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"}
 _UPPER[":"] = "O"  # ':' is ISO's spelling of the program number address
 CENTER_AXIS = {"I": "X", "J": "Y", "K": "Z"}
+_ARC_LETTERS = frozenset("IJKR")
+_MOTION_KEYS = {"0": "0", "00": "0", "1": "1", "01": "1", "2": "2", "02": "2", "3": "3", "03": "3"}
+"""The spellings of G0-G3 ``_plain`` reads (their ``g_key``); the table says what each means."""
+_MOTION_MODES = frozenset(("rapid", "linear", "cw", "ccw"))
 DATA_KEY = "10"
 """The number of the family's programmable data input code (``DataSetting``)."""
 
@@ -189,14 +193,18 @@ class WordBlockSyntax(Syntax):
             raise ProgramError(f"address {up} has no meaning in this block", ctx.at(block, ctx.column_of(block, up)))
 
     def _plain(self, block: Block, ctx: Context, words: list[tuple[str, str]]) -> bool:
-        """The likeliest CAM block: N, axis words with decimal points, maybe F; no active cycle.
+        """The likeliest CAM block: N, maybe one motion code (G0-G3), axis words with decimal points, an
+        arc's centre I/J/K or radius R, maybe F; no active cycle.
 
-        One pass with the same meaning as the general path. Returns False, leaving the block as it
-        found it, at the first word it does not handle (a code, a point-less number, a repeated
-        address), so the general path reads the block and reports its errors.
+        One pass with the same meaning as the general path (``g_sections``, ``finish_words``; property-
+        tested in ``tests/test_plain_blocks.py``). Returns False, leaving the block as it found it, at the
+        first word it does not handle (another code, a point-less number, a repeated address) or for a
+        block the general path refuses, so that path reads the block and reports its errors.
         """
         values = block.values
         axes: dict[str, float | Expr] = {}
+        mode: str | None = None
+        arc_words = False
         upper = block.canonical  # a canonical block's letters are upper-case already (numbers.CANONICAL_BLOCK)
         for letter, num in words:
             up = letter if upper else _UPPER[letter]
@@ -208,20 +216,49 @@ class WordBlockSyntax(Syntax):
                 values["N"] = int(num)
             elif up == "F":
                 values["F"] = float(num)
+            elif up == "G" and mode is None:
+                key = _MOTION_KEYS.get(num)
+                entry = self.table(ctx).g.get(key) if key is not None else None
+                if entry is None or entry[1] != "motion" or entry[2] not in _MOTION_MODES:
+                    break
+                mode = str(entry[2])
+            elif up in _ARC_LETTERS and (upper or "." in num):
+                values[up] = float(num)
+                arc_words = True
             else:
                 break
         else:
-            if axes:
+            if mode is None and axes:
                 mode = ctx.state.motion
-                if mode is None or mode == "cw" or mode == "ccw":
+                if mode is None:
                     values.clear()
                     return False  # the general path explains the error
-                block.sections["Motion"] = Motion(mode, axes)
-                if ctx.point_mix is not None:  # still looking (``postproc.rs274.point_mix``)
+            if mode is not None:
+                center: dict[str, float | Expr] | None = None
+                radius: float | Expr | None = None
+                if mode == "cw" or mode == "ccw":
+                    if "R" in values:
+                        if "I" in values or "J" in values or "K" in values:
+                            values.clear()
+                            return False  # both forms of an arc: the general path refuses it
+                        radius = values["R"]
+                    else:
+                        center = {CENTER_AXIS[k]: values[k] for k in "IJK" if k in values}
+                        if not center:
+                            values.clear()
+                            return False  # no centre: the general path refuses it
+                elif arc_words:
+                    values.clear()
+                    return False  # I/J/K/R beside a straight move: the general path refuses it
+                block.sections["Motion"] = Motion(mode, axes, center, radius)
+                if axes and ctx.point_mix is not None:  # still looking (``postproc.rs274.point_mix``)
                     mix = point_mix(ctx)
                     if mix is not None:
                         for up in axes:
                             mix.saw_pointed(ctx, up, block.line)
+            elif arc_words:
+                values.clear()
+                return False  # I/J/K/R with no motion: the general path refuses it
             if "F" in values:
                 block.sections["Feed"] = Feed(values["F"])
             return True

@@ -71,6 +71,8 @@ class LatheBlockSyntax(WordBlockSyntax):
         letters = {_UPPER.get(letter, letter) for letter, _ in words}
         if "X" in letters and "U" in letters or "Z" in letters and "W" in letters:
             return False  # the absolute and the incremental word of one axis: ``g_sections`` refuses it
+        if "J" in letters:
+            return False  # an arc centre off the ZX plane: ``g_sections`` refuses it
         return super()._plain(block, ctx, words)
 
     def _cycle_block(self, block: Block, ctx: Context, kind: str, code: str | None) -> None:

@@ -54,6 +54,17 @@ _UNWRITTEN = frozenset(("ProgramStart", "TapeMark", "Label"))
 meaning nothing in a straight program (a label)."""
 
 
+_CENTER_LETTER = {"X": "I", "Y": "J", "Z": "K"}
+
+
+def _copied(number: str, value: object, most: int, every: bool) -> bool:
+    """Whether a canonical word's ``number`` is how a writer exact to ``most`` places writes ``value``
+    (``straight_move``; ``every``: ``most`` covers every canonical number)."""
+    if value.__class__ is not float:
+        return False
+    return float(number) == value and (-SHORT_RANGE < value < SHORT_RANGE if every else as_written(number, value, most))
+
+
 _STAYS_WITH_MOTION = frozenset(("Motion", "CompoundMotion", "CannedCycle", "CycleCall", "MachineCoordinates", "Feed",
                                 "Comments", "BlockDelete"))
 """What stays on the motion's line when a block is split around its dwell (``WordWriter.around_dwell``)."""
@@ -92,6 +103,12 @@ class WordWriter(Writer):
     rapid or feed move of numbers, maybe a block number and a feed rate, nothing else) exactly as this base
     does. Any other override turns the straight path off for the class, so a plugin that overrides one
     and says nothing is never bypassed. ``tests/test_straight_moves.py`` checks both paths agree."""
+    STRAIGHT_ARC_OVERRIDES: ClassVar[frozenset[str]] = frozenset()
+    """Of the overrides ``STRAIGHT_OVERRIDES`` declares, those that also write an arc exactly as this base
+    does: a clockwise or counter-clockwise move of numbers with its centre I/J/K or radius R, whose centre
+    is not its start and whose end point names an axis of its plane (``straight_move`` leaves a degenerate
+    arc to ``generate``, where writers refuse what their controller refuses). A class that overrides one
+    of ``STRAIGHT_METHODS`` and does not list it here writes arcs through ``generate``."""
     STRAIGHT_AXES: ClassVar[frozenset[str]] = frozenset("XYZABCUVW")
     """The axes a straight move may have to take the straight path: a class whose ``motion_words`` refuses
     some (grbl drives X, Y and Z) names those it writes, so that a move of another still meets the refusal."""
@@ -137,6 +154,13 @@ class WordWriter(Writer):
         self.straight_axes = self.STRAIGHT_AXES
         self.straight_codes = {mode: self.codes.spell("motion", mode) for mode in ("rapid", "linear")}
         """The motion codes a straight move is written with, spelled once."""
+        arcs = not self.straight_copy and self.straight and self.straight_path((), "STRAIGHT_ARC_OVERRIDES")
+        self.arc_codes = {mode: code for mode in ("cw", "ccw") for code in [self.codes.spell("motion", mode)]
+                          if arcs and code is not None}
+        """The arc codes a straight arc is written with (none: arcs take ``generate``)."""
+        self.straight_codes_now = True
+        """A block that programs its motion code may take ``straight_move`` (a writer that must see the
+        program's first blocks itself turns it on once it has)."""
         """What the written program has in force so far (units, distance mode, feed, plane, spindle...)."""
         self.carry: dict[str, float] = {}
         """Axis -> where the source program is minus where the written one is (program units): what
@@ -226,14 +250,15 @@ class WordWriter(Writer):
         return self.generate(block)
 
     @classmethod
-    def straight_path(cls, methods: tuple[str, ...] = ()) -> bool:
+    def straight_path(cls, methods: tuple[str, ...] = (), declared: str = "STRAIGHT_OVERRIDES") -> bool:
         """Whether this class may write straight moves with ``straight_move``: every method of ``methods``
         (default ``STRAIGHT_METHODS``: those a generated block passes) is the base's, or the class that
-        defines it lists it in its own ``STRAIGHT_OVERRIDES`` (a subclass that overrides it again says so
-        again: a declaration is not inherited by a new override)."""
+        defines it lists it in its own ``declared`` set (``STRAIGHT_OVERRIDES``; ``STRAIGHT_ARC_OVERRIDES``
+        for arcs); a subclass that overrides it again says so again: a declaration is not inherited by a
+        new override."""
         for name in methods or STRAIGHT_METHODS:
             owner = next(c for c in cls.__mro__ if name in c.__dict__)
-            if owner is not WordWriter and name not in owner.__dict__.get("STRAIGHT_OVERRIDES", ()):
+            if owner is not WordWriter and name not in owner.__dict__.get(declared, ()):
                 return False
         return True
 
@@ -262,16 +287,26 @@ class WordWriter(Writer):
         motion = sections.get("Motion")
         if not isinstance(motion, Motion) or text is None or self.carry or not self.source_numbers:
             return None
-        code = self.straight_codes.get(motion.mode) if motion.mode is not None else None
+        mode = motion.mode
         axes = motion.axes
-        if code is None or not axes or motion.center is not None or motion.radius is not None:
+        if mode is None or not axes:
+            return None
+        center = motion.center
+        radius = motion.radius
+        arc = 0
+        if center is None and radius is None:
+            code = self.straight_codes.get(mode)
+        else:
+            code = self.arc_codes.get(mode)
+            if code is None or not self._plain_arc(axes, center):
+                return None
+            arc = len(center) if center is not None else 1
+        if code is None:
             return None
         sequence = sections.get("Sequence")
         feed = sections.get("Feed")
         besides = (sequence is not None) + (feed is not None)
         words = block.words
-        if len(sections) != 1 + besides or len(words) != len(axes) + besides:
-            return None
         at = 0
         head = 0
         if sequence is not None:
@@ -282,6 +317,15 @@ class WordWriter(Writer):
                 return None
             at = 1
             head = len(number) + 1
+        coded = at < len(words) and words[at][0] == "G"  # the block's own motion code: it is rewritten
+        if len(sections) != 1 + besides or len(words) != len(axes) + besides + arc + coded:
+            return None
+        written = 0
+        if coded:
+            if not self.straight_codes_now:
+                return None
+            written = len(words[at][1]) + 1
+            at += 1
         most = self.exact_mm if self.modal.units == "mm" else self.exact_inch
         every = most >= MAX_PLACES  # every canonical number has at most MAX_PLACES: as_written is the range
         driven = self.straight_axes
@@ -292,6 +336,18 @@ class WordWriter(Writer):
                     -SHORT_RANGE < value < SHORT_RANGE if every else as_written(number, value, most)) \
                     or float(number) != value:
                 return None
+        if arc:
+            if center is not None:
+                for axis, value in center.items():
+                    letter, number = words[at]
+                    at += 1
+                    if letter != _CENTER_LETTER[axis] or not _copied(number, value, most, every):
+                        return None
+            else:
+                letter, number = words[at]
+                at += 1
+                if letter != "R" or not _copied(number, radius, most, every):
+                    return None
         if feed is not None:
             if not isinstance(feed, Feed):
                 return None
@@ -303,9 +359,28 @@ class WordWriter(Writer):
                 return None
             self.modal.feed = rate
         eol = block.eol or "\n"
+        if coded:
+            start = head + 1 if head else 0
+            return f"{text[:start]}{code}{text[start + written:]}{eol}"
         if head:
             return f"{text[:head]} {code}{text[head:]}{eol}"
         return f"{code} {text}{eol}"
+
+    def _plain_arc(self, axes: dict[str, float | Expr], center: dict[str, float | Expr] | None) -> bool:
+        """An arc ``straight_move`` writes: its centre is not its start (``generate`` refuses a zero-radius
+        arc where the controller does) and its end point names an axis of its plane (a full circle in
+        the plane, or a helix with no end point in it, is left to ``generate`` and the writers' checks). Its
+        centre's words are matched in its order, which the block syntax builds as ``generate`` writes them:
+        I, J, K."""
+        if center is not None:
+            zero = True
+            for offset in center.values():
+                if offset.__class__ is not float or offset != 0.0:
+                    zero = False
+            if zero:
+                return False
+        first, second, _ = PLANE_AXES[self.modal.plane]
+        return first in axes or second in axes
 
     def _track(self, sections: dict[str, Section]) -> None:
         if not changes_nothing(sections):

@@ -83,6 +83,9 @@ class GrblWriter(WordWriter):
     """A straight move of X, Y and Z (``STRAIGHT_AXES``) is never empty, drops nothing, is no arc and no tape
     mark, and its line is ASCII without a real-time character (a canonical line's letters, digits, '.',
     '-' and spaces): these overrides write it as the base does."""
+    STRAIGHT_ARC_OVERRIDES: ClassVar[frozenset[str]] = STRAIGHT_OVERRIDES
+    """And an arc: ``motion_words`` refuses only a helix with no end point in its plane (``straight_move``
+    leaves such an arc to it) and axes beyond X, Y and Z (``STRAIGHT_AXES``)."""
     STRAIGHT_AXES: ClassVar[frozenset[str]] = GRBL_AXES
 
     def __init__(self, ctx: Any, source_dialect: str, target: Any = None) -> None:

@@ -71,6 +71,10 @@ class LinuxcncWriter(WordWriter):
     """A straight move has no M19 or compensation to reorder, is no arc or reference return, changes no
     units, is no tape mark or program end, and is never a program's first block (its motion mode is set
     by a block before it, which ``write_block`` saw): these overrides write it as the base does."""
+    STRAIGHT_ARC_OVERRIDES: ClassVar[frozenset[str]] = STRAIGHT_OVERRIDES
+    """And an arc: ``motion_words`` refuses only a zero-radius arc (``straight_move`` leaves it to it) and
+    a reference return under compensation; a block that programs its motion code takes the path only once
+    ``write_block`` has seen the program open (``straight_codes_now``)."""
 
     def __init__(self, ctx: Context, source_dialect: str, target: type[Dialect] | None = None) -> None:
         super().__init__(ctx, source_dialect, target)
@@ -89,6 +93,7 @@ class LinuxcncWriter(WordWriter):
         """Whether compensation was on before the block whose compensation word was written last."""
         self._opened: bool | None = None
         """Whether the program opened with '%' (None: nothing written yet)."""
+        self.straight_codes_now = False
         """The main program's end was written: an ``O<n>`` now starts a subprogram."""
         self._names: dict[str, str] = {}
         """Lower-cased subprogram name -> the name as the source wrote it."""
@@ -286,6 +291,7 @@ class LinuxcncWriter(WordWriter):
             self._opened = self._opened is None or self._opened
         elif sections and self._opened is None and sections.keys() != {"Comments"}:
             self._opened = False
+        self.straight_codes_now = self._opened is not None  # its first block seen: ``straight_move`` may follow
         text = super().write_block(block)
         end = block.sections.get("ProgramControl")
         if end is not None and end.kind in ("end", "end_rewind"):  # type: ignore[attr-defined]

@@ -1,0 +1,150 @@
+"""The block syntax's fast path (``WordBlockSyntax._plain``) reads a block as the general path does.
+
+A CAM program's usual blocks (``N.. G1 X.. Y.. F..``, ``G2 X.. Y.. R..``, ``G3 X.. Y.. I.. J..``, or axis
+words alone) are read in one pass; anything else goes to the general path, which also explains every
+error. Random programs of such blocks, mixed with what must leave the path (a second code, point-less
+numbers, I/J/K/R beside a straight move, both arc forms, a repeated address, lower-case letters, an
+active canned cycle), are read twice, as shipped and with the fast path turned off (a subclass whose
+``_plain`` declines every block): blocks, sections, warnings and errors must be the same. Mill and
+lathe readings, and the dialects whose numbers without a point are in mm (ISG, Fagor).
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import pytest
+from hypothesis import HealthCheck, example, given, settings
+from hypothesis import strategies as st
+
+from postproc.api import read_program
+from postproc.errors import ErrorList
+from postproc.ir import Block
+from postproc.plugins import default_registry
+from postproc.rs274.block_syntax import WordBlockSyntax
+from postproc.setup import MachineSetup
+from postproc.syntax import Pipeline
+
+READINGS = (("fanuc", "mill"), ("fanuc", "lathe"), ("gsk", "lathe"), ("isg", "mill"), ("fagor", "mill"))
+
+
+def _setup(machine: str) -> MachineSetup:
+    setup = MachineSetup()
+    setup.input.machine_type = machine  # type: ignore[assignment]
+    return setup
+
+
+def _general(step: Any) -> Any:
+    """The same step with the fast path off: an interpreted subclass declines every block."""
+    cls = type(step)
+    general = type(f"General{cls.__name__}", (cls,), {"__slots__": (), "_plain": lambda self, block, ctx, words: False})
+    copy = general.__new__(general)
+    for name in (slot for klass in cls.__mro__ for slot in getattr(klass, "__slots__", ())):
+        if hasattr(step, name):
+            setattr(copy, name, getattr(step, name))
+    return copy
+
+
+def _read(program: list[str], dialect: str, machine: str) -> str:
+    try:
+        blocks = read_program([line + "\n" for line in program], file="p.nc", dialect=dialect, setup=_setup(machine))
+    except ErrorList as err:
+        return "errors:\n" + str(err)
+    return "\n".join(_shown(b) for b in blocks)
+
+
+def _shown(block: Block) -> str:
+    return f"{block.line} {block.words} {sorted(block.values.items())} {list(block.sections.values())!r}"
+
+
+@st.composite
+def number(draw: st.DrawFn) -> str:
+    """Mostly a pointed number (what CAM writes); sometimes a point-less one or a trailing zero."""
+    whole = draw(st.integers(min_value=-9999, max_value=9999))
+    places = draw(st.integers(min_value=0, max_value=4))
+    text = f"{whole / 10 ** places:.{places}f}".rstrip("0") if places else f"{whole}."
+    shape = draw(st.sampled_from(["pointed"] * 6 + ["bare", "trailing zero"]))
+    if shape == "bare":
+        return str(whole)
+    return text + "0" if shape == "trailing zero" else text
+
+
+@st.composite
+def programs(draw: st.DrawFn) -> list[str]:
+    out = [draw(st.sampled_from(["G21", "G20"])), draw(st.sampled_from(["G90", "G91", ""])),
+           draw(st.sampled_from(["G1 F100.", "G0", "G2", "", "G17", "G18"]))]
+    for i in range(draw(st.integers(min_value=1, max_value=10))):
+        words: list[str] = []
+        if draw(st.integers(min_value=0, max_value=3)):
+            words.append(draw(st.sampled_from([f"N{10 * (i + 1)}", f"N0{i + 1}", "N1.5"])))
+        code = draw(st.sampled_from(["", "", "G1", "G01", "G0", "G00", "G2", "G02", "G3", "G03", "g1", "G4",
+                                     "G17", "G90 G1", "G1 G2", "G81", "G80", "G2.5", "G001"]))
+        if code:
+            words.append(code)
+        for letter in draw(st.lists(st.sampled_from("XYZUWAB"), max_size=3, unique=True)):
+            words.append(letter + draw(number()))
+        for letter in draw(st.lists(st.sampled_from("IJKRQ"), max_size=2, unique=True)):
+            words.append(letter + draw(number()))
+        extra = draw(st.sampled_from(["", "", "", "F300.", "F250", "X1.", "M3", "R2. Z-3.", "x2.5"]))
+        if extra:
+            words.append(extra)
+        out.append(" ".join(words))
+    return [line for line in out if line]
+
+
+@pytest.mark.parametrize("dialect,machine", READINGS)
+@settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@given(program=programs())
+@example(program=["G21", "G90", "G1 F100.", "N10 X1.5 Y-2.25", "G2 X3. Y1. R2.", "G03 X1. I-1. J0.5 F200."])
+@example(program=["G21", "G3 X1. Y2. I1.", "X2. Y3. R1.5", "G0 X1. R2."])
+def test_the_fast_path_reads_what_the_general_path_reads(program: list[str], dialect: str, machine: str,
+                                                         monkeypatch: pytest.MonkeyPatch) -> None:
+    cls = default_registry().dialect(dialect)
+    fast = _read(program, dialect, machine)
+    shipped = cls.pipeline
+
+    def general_pipeline(setup: MachineSetup) -> Pipeline:
+        pipeline = shipped(setup)
+        steps = [_general(s) if isinstance(s, WordBlockSyntax) else s for s in pipeline.steps]
+        assert steps != pipeline.steps or not any(isinstance(s, WordBlockSyntax) for s in steps)
+        return Pipeline(pipeline.dialect, steps)
+
+    with monkeypatch.context() as patch:  # undone before hypothesis's next example reads "as shipped"
+        patch.setattr(cls, "pipeline", general_pipeline)
+        slow = _read(program, dialect, machine)
+    assert fast == slow
+
+
+def test_cam_blocks_take_the_fast_path(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The test above would pass with the path never taken: count the blocks that take it."""
+    cls = default_registry().dialect("fanuc")
+    shipped = cls.pipeline
+    taken: list[int] = []
+
+    def counting(step: Any) -> Any:
+        base = type(step)
+
+        def plain(self: Any, block: Block, ctx: Any, words: Any) -> bool:
+            took = bool(base._plain(self, block, ctx, words))
+            if took:
+                taken.append(block.line)
+            return took
+
+        counted = type("Counted", (base,), {"__slots__": (), "_plain": plain})
+        return counted.__new__(counted)
+
+    def counting_pipeline(setup: MachineSetup) -> Pipeline:
+        pipeline = shipped(setup)
+        return Pipeline(pipeline.dialect, [counting(s) if isinstance(s, WordBlockSyntax) else s for s in pipeline.steps])
+
+    monkeypatch.setattr(cls, "pipeline", counting_pipeline)
+    program = ["G21 G90 G17", "G0 X0. Y0.", "N10 G01 Z-1. F300.", "N20 X10.5 Y2.25", "G02 X12. Y4. R2.",
+               "N30 G3 X10. Y6. I-2. J0.", "X8. Y4. I0. J-2.", "G1 X0. Y0. F1200.", "G0 Z5. M9"]
+    read_program([line + "\n" for line in program], file="p.nc", dialect="fanuc")
+    assert taken == [2, 3, 4, 5, 6, 7, 8]
+
+
+def test_modal_arc_without_centre_is_refused_where_it_is() -> None:
+    """The fast path declines an arc with no centre; the general path refuses it, located."""
+    with pytest.raises(ErrorList, match=r"p\.nc:3:1: error: an arc needs a centre"):
+        read_program(["G21 G90\n", "G2 X1. Y1. R1.\n", "X2. Y2.\n"], file="p.nc", dialect="fanuc")
