@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import re
-from typing import Any, Callable
+from typing import Any, Callable, Final
 
 from mypy_extensions import mypyc_attr
 
@@ -87,8 +87,8 @@ class Context:
         return 1
 
 
-_WORD_AT = re.compile(r"([A-Za-z:])[ \t]*([-+]?(?:\d+\.?\d*|\.\d+))")
-_COMMENT_AT = re.compile(r"\([^()]*\)|\([^()]*$|;.*$")
+_WORD_AT: Final = re.compile(r"([A-Za-z:])[ \t]*([-+]?(?:\d+\.?\d*|\.\d+))")
+_COMMENT_AT: Final = re.compile(r"\([^()]*\)|\([^()]*$|;.*$")
 
 
 def word_columns(text: str) -> list[tuple[int, str, str]]:

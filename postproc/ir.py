@@ -13,7 +13,7 @@ from __future__ import annotations
 
 from mypy_extensions import mypyc_attr
 
-from typing import Any, Callable, ClassVar, Iterator
+from typing import Any, Callable, ClassVar, Iterator, Final
 
 from lxml import etree
 
@@ -609,7 +609,7 @@ class DataSetting(Section):
         return (self.family, self.table, self.index, self.values, self.incremental, self.text)
 
 
-SIMPLE_SECTIONS: tuple[type[Section], ...] = (
+SIMPLE_SECTIONS: Final[tuple[type[Section], ...]] = (
     Sequence, BlockDelete, ProgramStart, TapeMark, Units, Plane, DistanceMode, WorkOffset, FeedMode, Feed,
     SpindleSpeed, SpindleControl, SpindleOrientation, ToolSelect, ToolChange, ToolLengthOffset,
     CutterCompensation, Coolant, Dwell, ProgramControl, PathControl, ReturnLevel, CycleCancel,
@@ -638,6 +638,8 @@ class Block:
         self.eol = eol
         self.words = words if words is not None else []
         self.values: dict[str, float | int | Expr] = {}
+        """Address -> what its word reads as (the reader's and block syntax's; no later step changes it,
+        so a writer that copies a canonical word checks the section's value against it)."""
         self.sections: dict[str, Section] = {}
         self.canonical = False
         """A reader's hint: ``text`` is its ``words`` joined by single spaces, already in canonical
@@ -723,8 +725,8 @@ class Block:
         return el
 
 
-_EOLS = {"\n": "LF", "\r\n": "CRLF", "\r": "CR", "": "none"}
-_EOLS_BACK = {v: k for k, v in _EOLS.items()}
+_EOLS: Final = {"\n": "LF", "\r\n": "CRLF", "\r": "CR", "": "none"}
+_EOLS_BACK: Final = {v: k for k, v in _EOLS.items()}
 
 
 def encode_eol(eol: str) -> str:

@@ -75,7 +75,7 @@ SHORT_RANGE: Final = _SHORT_RANGE
 whose ``most`` covers every canonical number, ``MAX_PLACES``, tests only the magnitude)."""
 """Below this magnitude a float is within 6e-11 of its shortest decimal (half its spacing, 2**-34), less
 than half a unit of the 9th place (5e-10): ``exact_decimal``'s shortcut is sound for up to 9 places."""
-_SCALE: list[float] = [1.0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9]
+_SCALE: Final[list[float]] = [1.0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9]
 """10**k, exact in a float (a list: compiled, a tuple of floats is unboxed whole at every use)."""
 
 

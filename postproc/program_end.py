@@ -13,7 +13,7 @@ compare them.
 
 from __future__ import annotations
 
-from typing import Iterator
+from typing import Iterator, Final
 
 from mypy_extensions import mypyc_attr
 
@@ -22,9 +22,9 @@ from .control import CONTROL, SubEnd, SubStart, Return
 from .dialect import Dialect
 from .ir import Block, Comments, Section, one_line
 
-ENDS = frozenset(("end", "end_rewind"))
+ENDS: Final = frozenset(("end", "end_rewind"))
 """``ProgramControl`` kinds that end the program."""
-INERT = frozenset(("Comments", "TapeMark", "Sequence", "BlockDelete"))
+INERT: Final = frozenset(("Comments", "TapeMark", "Sequence", "BlockDelete"))
 """Sections that do nothing on a machine: a block of only these is not live code."""
 
 

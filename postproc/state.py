@@ -11,13 +11,13 @@ far) and the toolpath simulator each keep a ``ModalState`` and change it only th
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Any, Callable, Mapping
+from typing import Any, Callable, Mapping, Final
 
 from mypy_extensions import mypyc_attr
 
 from .expr import Expr
 
-MM_PER_INCH = 25.4
+MM_PER_INCH: Final = 25.4
 
 PLANE_AXES = {"XY": ("X", "Y", "Z"), "ZX": ("Z", "X", "Y"), "YZ": ("Y", "Z", "X")}
 """Per plane: first and second plane axis, then the axis normal to the plane (the drilling axis)."""
@@ -105,7 +105,7 @@ def _work_offset(state: ModalState, s: Any) -> None:
         position[axis] = None
 
 
-_APPLY: dict[str, Callable[[ModalState, Any], None]] = {
+_APPLY: Final[dict[str, Callable[[ModalState, Any], None]]] = {
     "Units": lambda st, s: st.set_units(s.system),
     "Plane": lambda st, s: setattr(st, "plane", s.plane),
     "DistanceMode": lambda st, s: setattr(st, "distance", s.mode),
@@ -122,7 +122,7 @@ _APPLY: dict[str, Callable[[ModalState, Any], None]] = {
 
 MODAL_KEYS = frozenset(_APPLY)
 """Section keys that change the modal state."""
-_NO_MODAL_KEY = MODAL_KEYS.isdisjoint
+_NO_MODAL_KEY: Final = MODAL_KEYS.isdisjoint
 changes_nothing = MODAL_KEYS.isdisjoint
 """``changes_nothing(sections)``: True when a block's sections hold no modal section (most blocks: a
 move and a block number). The hot paths test it before calling ``ModalState.apply``."""

@@ -8,7 +8,7 @@ compiled with the RS274 word writer that subclasses it (``pyproject.toml`` ``[to
 from __future__ import annotations
 
 import abc
-from typing import Any, Callable, Iterable, Protocol, TextIO
+from typing import Any, Callable, Iterable, Protocol, TextIO, Final
 
 from mypy_extensions import mypyc_attr
 
@@ -52,7 +52,7 @@ class _NoTemplates:
         return ""
 
 
-_NO_TEMPLATES = _NoTemplates()
+_NO_TEMPLATES: Final = _NoTemplates()
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)

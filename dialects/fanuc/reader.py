@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from mypy_extensions import mypyc_attr
 
-from typing import Iterable, Iterator
+from typing import Iterable, Iterator, Final
 
 from postproc.dialect import Reader
 from postproc.errors import PostprocError
@@ -20,7 +20,7 @@ from postproc.rs274.lexer import WORDS_ONLY, WORD, lex_block
 from .macro import read_call
 
 
-_FAST_START = frozenset("NGXYZABCUVWIJKRFSTMHDPQ")
+_FAST_START: Final = frozenset("NGXYZABCUVWIJKRFSTMHDPQ")
 """First letters of a line the fast path takes: a block number, or a word a CAM line starts with (not O,
 a program number, nor anything that is not an upper-case address)."""
 

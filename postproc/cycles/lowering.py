@@ -16,7 +16,7 @@ An expanded block loses its ``CannedCycle`` and is marked changed, so the writer
 
 from __future__ import annotations
 
-from typing import Iterator
+from typing import Iterator, Final
 
 from postproc.dialect import Dialect
 from postproc.errors import PostprocError, UnsupportedError
@@ -29,7 +29,7 @@ from .resolve import peck_clearance_mm
 from .section import CannedCycle
 from .semantics import PECK
 
-_CANCELS = frozenset(("rapid", "linear", "cw", "ccw"))
+_CANCELS: Final = frozenset(("rapid", "linear", "cw", "ccw"))
 
 
 def expand_canned_cycles(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:

@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import re
 from dataclasses import replace
-from typing import Any
+from typing import Any, Final
 
 from lxml import etree
 from mypy_extensions import mypyc_attr
@@ -43,27 +43,27 @@ from .section import WORD_ORDER, CannedCycle
 from .semantics import DWELLING, PECK, SEMANTICS, SHIFT, TAP, Semantics
 from .tapping import TappingSyntax
 
-EXPANSIONS: tuple[type[CycleExpansion], ...] = (
+EXPANSIONS: Final[tuple[type[CycleExpansion], ...]] = (
     DrillingSyntax, PeckDrillingSyntax, TappingSyntax, BoringSyntax, FineBoringSyntax, BackBoringSyntax,
     ManualBoringSyntax,
 )
 """The built-in family expansions, one per cycle family."""
 
-GROUP_01 = frozenset(("rapid", "linear", "cw", "ccw"))
+GROUP_01: Final = frozenset(("rapid", "linear", "cw", "ccw"))
 """Motion modes that cancel a canned cycle."""
-AXIS_LETTERS = frozenset("XYZABCUVW")
-_STATE_KEY = "CannedCycleResolveSyntax"
+AXIS_LETTERS: Final = frozenset("XYZABCUVW")
+_STATE_KEY: Final = "CannedCycleResolveSyntax"
 """``ctx.state.extra`` key: the plane the active cycle was commanded in."""
-_DWELL_KEY = "CannedCycleResolveSyntax.P"
-_NATIVE_KEY = "CannedCycleResolveSyntax.native"
+_DWELL_KEY: Final = "CannedCycleResolveSyntax.P"
+_NATIVE_KEY: Final = "CannedCycleResolveSyntax.native"
 """Set while the active cycle is one with computed words, kept verbatim."""
 """``ctx.state.extra`` key: the last cycle P, which RS274 tapping falls back on even after G80."""
-ACTIVE_KEY = "CannedCycleResolveSyntax.active"
+ACTIVE_KEY: Final = "CannedCycleResolveSyntax.active"
 """``ctx.state.extra`` key: (the last resolved ``CannedCycle``, its expansion) while the cycle is active,
 for a hole pattern that repeats it (``active_cycle``)."""
-_WORD_RANK = {letter: rank for rank, letter in enumerate(WORD_ORDER)}
+_WORD_RANK: Final = {letter: rank for rank, letter in enumerate(WORD_ORDER)}
 """Cycle word letter -> its place in ``WORD_ORDER`` (a block's words are kept in that order)."""
-_SHIFT_AXIS = {"+X": (1.0, 0), "-X": (-1.0, 0), "+Y": (1.0, 1), "-Y": (-1.0, 1)}
+_SHIFT_AXIS: Final = {"+X": (1.0, 0), "-X": (-1.0, 0), "+Y": (1.0, 1), "-Y": (-1.0, 1)}
 """Set-up shift direction -> sign and plane axis (first/second), Fanuc's parameter table for G17-G19."""
 
 
@@ -482,7 +482,7 @@ def peck_clearance_mm(kind: str, fixed: float | None, cycles: CycleSettings) -> 
     return cycles.peck_retract if kind == "peck_chip" else cycles.peck_clearance
 
 
-_NOT_CYCLE_DATA = frozenset(("Dwell", "NativeCode", "MachineFunction", "DataSetting", "HolePattern"))
+_NOT_CYCLE_DATA: Final = frozenset(("Dwell", "NativeCode", "MachineFunction", "DataSetting", "HolePattern"))
 """Sections whose block's words belong to them, not to the active cycle."""
 
 
@@ -501,7 +501,7 @@ def _shift(ctx: Context, kind: str, q: float | None, first: str, second: str) ->
     return {(first, second)[index]: sign * abs(float(q or 0.0))}
 
 
-_COMMENT = re.compile(r"\([^)]*\)?")
+_COMMENT: Final = re.compile(r"\([^)]*\)?")
 
 
 def _code_column(block: Block, code: str) -> int:

@@ -7,7 +7,7 @@ All lengths are in program units; levels are values on the drilling axis of ``pl
 
 from __future__ import annotations
 
-from typing import Any, ClassVar
+from typing import Any, ClassVar, Final
 
 from lxml import etree
 from mypy_extensions import mypyc_attr
@@ -131,8 +131,8 @@ class CannedCycle(Section):
                 f"r={self.r!r}, bottom={self.bottom!r})")
 
 
-_TAG_OF_DICT = {"start": "Start", "position": "Position", "step": "Step", "shift": "Shift", "words": "Words"}
-_DICT_OF_TAG = {v: k for k, v in _TAG_OF_DICT.items()}
+_TAG_OF_DICT: Final = {"start": "Start", "position": "Position", "step": "Step", "shift": "Shift", "words": "Words"}
+_DICT_OF_TAG: Final = {v: k for k, v in _TAG_OF_DICT.items()}
 
 
 def _is_float(text: str) -> bool:

@@ -217,6 +217,8 @@ class Interpreter:
             return None
         result = ExecutedBlock(block.line, None if changed else block.text, block.eol, out, frame.origin)
         result.canonical = block.canonical and not changed
+        if result.canonical:
+            result.values = dict(block.values)  # what its words read as (a straight writer compares them)
         for key, section in block.sections.items():
             if key not in NON_WORD_SECTIONS:
                 result.sections[key] = section

@@ -17,7 +17,7 @@ from __future__ import annotations
 
 from mypy_extensions import mypyc_attr
 
-from typing import Any, ClassVar, Mapping
+from typing import Any, ClassVar, Mapping, Final
 
 from postproc.errors import ParseError, ProgramError
 from postproc.expr import Binary, Expr, Num
@@ -34,18 +34,18 @@ from .codes import CodeTable, g_key
 from .machine_codes import Defaults, machine_table
 from .point_mix import point_mix
 
-AXIS_LETTERS = frozenset("XYZABCUVW")
-DECIMAL_LETTERS = frozenset("XYZABCUVWIJKRQ")
+AXIS_LETTERS: Final = frozenset("XYZABCUVW")
+DECIMAL_LETTERS: Final = frozenset("XYZABCUVWIJKRQ")
 """Addresses that follow the decimal-point rule (no point: least input increments)."""
-INTEGER_LETTERS = frozenset("NOTHDLP")
-_UPPER = {c: c.upper() for c in "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"}
+INTEGER_LETTERS: Final = frozenset("NOTHDLP")
+_UPPER: Final = {c: c.upper() for c in "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"}
 _UPPER[":"] = "O"  # ':' is ISO's spelling of the program number address
-CENTER_AXIS = {"I": "X", "J": "Y", "K": "Z"}
-_ARC_LETTERS = frozenset("IJKR")
-_MOTION_KEYS = {"0": "0", "00": "0", "1": "1", "01": "1", "2": "2", "02": "2", "3": "3", "03": "3"}
+CENTER_AXIS: Final = {"I": "X", "J": "Y", "K": "Z"}
+_ARC_LETTERS: Final = frozenset("IJKR")
+_MOTION_KEYS: Final = {"0": "0", "00": "0", "1": "1", "01": "1", "2": "2", "02": "2", "3": "3", "03": "3"}
 """The spellings of G0-G3 ``_plain`` reads (their ``g_key``); the table says what each means."""
-_MOTION_MODES = frozenset(("rapid", "linear", "cw", "ccw"))
-DATA_KEY = "10"
+_MOTION_MODES: Final = frozenset(("rapid", "linear", "cw", "ccw"))
+DATA_KEY: Final = "10"
 """The number of the family's programmable data input code (``DataSetting``)."""
 
 
@@ -578,7 +578,7 @@ def _milliseconds(block: Block, ctx: Context, num: str) -> int:
     return int(round(ms))
 
 
-_INCREMENTS_PER_MM = {"IS-A": 100, "IS-B": 1000, "IS-C": 10000}
+_INCREMENTS_PER_MM: Final = {"IS-A": 100, "IS-B": 1000, "IS-C": 10000}
 
 
 def _divisor(ctx: Context, units: str) -> int:

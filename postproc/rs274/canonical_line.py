@@ -32,9 +32,12 @@ def scan(text: str) -> int:
     single spaces; a code letter and digits; an axis-type letter and ``-?(0|[1-9][0-9]*)\\.`` with at
     most six decimals and no trailing zero, never ``-0.``. A canonical line is ``CANONICAL``, or
     ``WITH_CODES`` when it has a G or M word (a reader then looks for calls in it)."""
-    if not text or not text.isascii():
+    if not text:
         return 0
-    b = text.encode("ascii")
+    try:
+        b = text.encode("ascii")  # compiled, a C call; ``str.isascii`` would be a method look-up
+    except UnicodeEncodeError:
+        return 0
     n = len(b)
     kind = _KIND
     found = CANONICAL

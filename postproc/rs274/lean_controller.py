@@ -20,7 +20,7 @@ own words).
 
 from __future__ import annotations
 
-from typing import Iterator
+from typing import Iterator, Final
 
 from ..context import Context
 from ..dialect import Dialect
@@ -44,7 +44,7 @@ def _pause_for_tool_change(blocks: Iterator[Block], ctx: Context) -> Iterator[Bl
     orient_stops = ctx.setup.cycles.orientation == "stop"
     for block in blocks:
         sections = block.sections
-        if not sections:
+        if _UNWATCHED(sections):  # a CAM block (a move, a block number, a feed rate): one set test
             yield block
             continue
         select = sections.get("ToolSelect")
@@ -70,7 +70,10 @@ def _pause_for_tool_change(blocks: Iterator[Block], ctx: Context) -> Iterator[Bl
         yield block
 
 
-_PAUSE_KEYS = ("Sequence", "BlockDelete", "ToolSelect", "ToolChange", "Comments")
+_WATCHED: Final = frozenset(("ToolSelect", "ToolChange", "SpindleControl", "SpindleOrientation", "CompoundMotion"))
+"""What ``pause_for_tool_change`` looks at: a block with none of these passes as it is."""
+_UNWATCHED: Final = _WATCHED.isdisjoint
+_PAUSE_KEYS: Final = ("Sequence", "BlockDelete", "ToolSelect", "ToolChange", "Comments")
 """What the pause block takes from the tool-change block (the rest runs after the pause)."""
 
 

@@ -16,20 +16,20 @@ Starting the spindle or the coolant stays in the block: both orders run it befor
 from __future__ import annotations
 
 import copy
-from typing import Iterator
+from typing import Iterator, Final
 
 from ..context import Context
 from ..dialect import Dialect
 from ..event_order import moves
 from ..ir import Block, Section
 
-_STOPS = ("SpindleControl", "Coolant")
+_STOPS: Final[tuple[str, ...]] = ("SpindleControl", "Coolant")
 """What a block stops (or starts): most blocks hold neither, tested first with two dict look-ups (measured:
 a ``frozenset.isdisjoint`` of the sections cost several times more per block)."""
-_AFTER_STOPS = ("SpindleOrientation", "ProgramControl")
+_AFTER_STOPS: Final[tuple[str, ...]] = ("SpindleOrientation", "ProgramControl")
 """What acts after a block's stops (``postproc.event_order``): an oriented stop, then a program stop or
 end. It follows the stops into their block, so ``Y2.5 M05 M19`` stops the spindle before orienting it."""
-_TOOL = ("ToolSelect", "ToolChange")
+_TOOL: Final[tuple[str, ...]] = ("ToolSelect", "ToolChange")
 """What RS274/NGC does before the spindle and the coolant (select tool 5, change tool 6): it goes along
 into the block before, so a tool change still precedes a coolant off."""
 

@@ -11,7 +11,7 @@ row for is an ``UnsupportedError``, never another dialect's spelling.
 from __future__ import annotations
 
 import math
-from typing import Any, Callable, ClassVar, NoReturn
+from typing import Any, Callable, ClassVar, NoReturn, Final
 
 from mypy_extensions import mypyc_attr
 
@@ -41,31 +41,48 @@ SECTION_ORDER = (
     "ProgramControl", "NativeCode", "Comments",
 )
 """Word order of a generated block; sections that only annotate are skipped by ``IGNORED``."""
-STRAIGHT_METHODS = ("write_block", "generate", "section_words", "sequence_words", "motion_words", "feed_words", "left_out")
+STRAIGHT_METHODS: Final = ("write_block", "generate", "section_words", "sequence_words", "motion_words", "feed_words", "left_out")
 """The methods whose work ``WordWriter.straight_move`` does for a straight move (``STRAIGHT_OVERRIDES``)."""
-COPY_METHODS = ("write_block", "normalized")
+COPY_METHODS: Final = ("write_block", "normalized")
 """The methods whose work ``straight_move`` does for a straight block normalised back to its own dialect."""
-_STRAIGHT_KEYS = frozenset(("Sequence", "Motion", "Feed"))
+_STRAIGHT_KEYS: Final = frozenset(("Sequence", "Motion", "Feed"))
 """A block of only these sections (a move, its block number and feed rate) is a straight block."""
-_RANK = {key: rank for rank, key in enumerate(SECTION_ORDER)}
+_RANK: Final = {key: rank for rank, key in enumerate(SECTION_ORDER)}
 """Section key -> its place in ``SECTION_ORDER`` (a generated block sorts only the sections it has)."""
-_UNWRITTEN = frozenset(("ProgramStart", "TapeMark", "Label"))
+_UNWRITTEN: Final = frozenset(("ProgramStart", "TapeMark", "Label"))
 """Sections outside ``SECTION_ORDER`` that are not refused: written apart (a program start, a tape mark) or
 meaning nothing in a straight program (a label)."""
 
 
-_CENTER_LETTER = {"X": "I", "Y": "J", "Z": "K"}
+_CENTER_LETTER: Final = {"X": "I", "Y": "J", "Z": "K"}
 
 
-def _copied(number: str, value: object, most: int, every: bool) -> bool:
-    """Whether a canonical word's ``number`` is how a writer exact to ``most`` places writes ``value``
-    (``straight_move``; ``every``: ``most`` covers every canonical number)."""
-    if value.__class__ is not float:
+def _copied(number: str, value: object, read: object, most: int, every: bool) -> bool:
+    """Whether a canonical word's ``number`` (which reads as ``read``) is how a writer exact to ``most``
+    places writes ``value`` (``straight_move``; ``every``: ``most`` covers every canonical number)."""
+    if type(value) is not float:
         return False
-    return float(number) == value and (-SHORT_RANGE < value < SHORT_RANGE if every else as_written(number, value, most))
+    return read == value and (-SHORT_RANGE < value < SHORT_RANGE if every else as_written(number, value, most))
 
 
-_STAYS_WITH_MOTION = frozenset(("Motion", "CompoundMotion", "CannedCycle", "CycleCall", "MachineCoordinates", "Feed",
+def _plain_arc(axes: dict[str, float | Expr], center: dict[str, float | Expr] | None, plane: str) -> bool:
+    """An arc ``straight_move`` writes: its centre is not its start (``generate`` refuses a zero-radius
+    arc where the controller does) and its end point names an axis of its plane (a full circle in
+    the plane, or a helix with no end point in it, is left to ``generate`` and the writers' checks). Its
+    centre's words are matched in its order, which the block syntax builds as ``generate`` writes them:
+    I, J, K."""
+    if center is not None:
+        zero = True
+        for offset in center.values():
+            if type(offset) is not float or offset != 0.0:
+                zero = False
+        if zero:
+            return False
+    first, second, _ = PLANE_AXES[plane]
+    return first in axes or second in axes
+
+
+_STAYS_WITH_MOTION: Final = frozenset(("Motion", "CompoundMotion", "CannedCycle", "CycleCall", "MachineCoordinates", "Feed",
                                 "Comments", "BlockDelete"))
 """What stays on the motion's line when a block is split around its dwell (``WordWriter.around_dwell``)."""
 SectionWriter = Callable[[Any, Any, Block], list[str]]
@@ -298,7 +315,7 @@ class WordWriter(Writer):
             code = self.straight_codes.get(mode)
         else:
             code = self.arc_codes.get(mode)
-            if code is None or not self._plain_arc(axes, center):
+            if code is None or not _plain_arc(axes, center, self.modal.plane):
                 return None
             arc = len(center) if center is not None else 1
         if code is None:
@@ -309,12 +326,13 @@ class WordWriter(Writer):
         words = block.words
         at = 0
         head = 0
+        values = block.values  # what the words read as (a reader's, untouched since: ``Block.values``)
         if sequence is not None:
             if not isinstance(sequence, Sequence):
                 return None
             letter, number = words[0]
-            if letter != "N" or number != str(sequence.number):  # N010 is written N10
-                return None
+            if letter != "N" or values.get("N") != sequence.number or number[0] == "0" and len(number) > 1:
+                return None  # (N010 is written N10)
             at = 1
             head = len(number) + 1
         coded = at < len(words) and words[at][0] == "G"  # the block's own motion code: it is rewritten
@@ -332,30 +350,30 @@ class WordWriter(Writer):
         for axis, value in axes.items():
             letter, number = words[at]
             at += 1
-            if letter != axis or letter not in driven or value.__class__ is not float or not (
+            if letter != axis or letter not in driven or type(value) is not float or not (
                     -SHORT_RANGE < value < SHORT_RANGE if every else as_written(number, value, most)) \
-                    or float(number) != value:
+                    or values.get(letter) != value:  # the number the word reads as: no step changed it
                 return None
         if arc:
             if center is not None:
                 for axis, value in center.items():
                     letter, number = words[at]
                     at += 1
-                    if letter != _CENTER_LETTER[axis] or not _copied(number, value, most, every):
+                    if letter != _CENTER_LETTER[axis] or not _copied(number, value, values.get(letter), most, every):
                         return None
             else:
                 letter, number = words[at]
                 at += 1
-                if letter != "R" or not _copied(number, radius, most, every):
+                if letter != "R" or not _copied(number, radius, values.get(letter), most, every):
                     return None
         if feed is not None:
             if not isinstance(feed, Feed):
                 return None
             rate = feed.value
             letter, number = words[at]
-            if letter != "F" or rate.__class__ is not float or not (
+            if letter != "F" or type(rate) is not float or not (
                     -SHORT_RANGE < rate < SHORT_RANGE if every else as_written(number, rate, most)) \
-                    or float(number) != rate:
+                    or values.get(letter) != rate:
                 return None
             self.modal.feed = rate
         eol = block.eol or "\n"
@@ -365,22 +383,6 @@ class WordWriter(Writer):
         if head:
             return f"{text[:head]} {code}{text[head:]}{eol}"
         return f"{code} {text}{eol}"
-
-    def _plain_arc(self, axes: dict[str, float | Expr], center: dict[str, float | Expr] | None) -> bool:
-        """An arc ``straight_move`` writes: its centre is not its start (``generate`` refuses a zero-radius
-        arc where the controller does) and its end point names an axis of its plane (a full circle in
-        the plane, or a helix with no end point in it, is left to ``generate`` and the writers' checks). Its
-        centre's words are matched in its order, which the block syntax builds as ``generate`` writes them:
-        I, J, K."""
-        if center is not None:
-            zero = True
-            for offset in center.values():
-                if offset.__class__ is not float or offset != 0.0:
-                    zero = False
-            if zero:
-                return False
-        first, second, _ = PLANE_AXES[self.modal.plane]
-        return first in axes or second in axes
 
     def _track(self, sections: dict[str, Section]) -> None:
         if not changes_nothing(sections):
@@ -424,7 +426,7 @@ class WordWriter(Writer):
             own = places is not None and up in places
             if isinstance(value, float) and up in axes and (axes[up] and up in self.carry or own or not canonical(num)):
                 parts.append(up + self.position(up, value, axes[up]))
-            elif value.__class__ is float and (own or not canonical(num)):  # an expression keeps its text
+            elif type(value) is float and (own or not canonical(num)):  # an expression keeps its text
                 parts.append(up + (self.speed(value) if up == "S" and own
                                    else self.feed_number(value, block) if up == "F" else number(value, up)))
             else:
@@ -749,7 +751,7 @@ class WordWriter(Writer):
         incremental = self._incremental(s, block)
         as_written = block.canonical and self.source_numbers
         for axis, value in s.axes.items():
-            if value.__class__ is float:
+            if type(value) is float:
                 text = self.source_number(block, axis, value, incremental) if as_written else None
                 words.append(axis + (text if text is not None else self.position(axis, value, incremental)))
             elif isinstance(value, Expr):
@@ -821,7 +823,7 @@ class WordWriter(Writer):
         if not isinstance(motion, Motion) or motion.mode is None or motion.mode in _MOTION_KIND:
             return {}
         incremental = self._incremental(motion, block)
-        return {a: incremental for a, v in motion.axes.items() if v.__class__ is float}
+        return {a: incremental for a, v in motion.axes.items() if type(v) is float}
 
     def _exact_axes(self, block: Block) -> None:
         """A block copied with its exact numbers: absolute axis words leave nothing to carry (callers test
@@ -1017,17 +1019,17 @@ class WordWriter(Writer):
         return [s.text]
 
 
-_ROUNDED_UNITS = {"S": "rpm", "A": "deg", "B": "deg", "C": "deg", "F": ""}
+_ROUNDED_UNITS: Final = {"S": "rpm", "A": "deg", "B": "deg", "C": "deg", "F": ""}
 """Units a rounding warning names where they are not the program's length unit ('' for F: the length
 unit per minute or revolution)."""
-_MOTION_KIND = {"home": "home", "home2": "home"}
-_MOTION_GROUP = frozenset({"rapid", "linear", "cw", "ccw"})
+_MOTION_KIND: Final = {"home": "home", "home2": "home"}
+_MOTION_GROUP: Final = frozenset({"rapid", "linear", "cw", "ccw"})
 """Motion modes written with a code of the motion group (G0-G3)."""
 """Motion modes the table spells under another kind than "motion" (reference returns)."""
-_UPPER = {c: c.upper() for c in "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz:"}
+_UPPER: Final = {c: c.upper() for c in "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz:"}
 
 
-_STATEMENTS = {
+_STATEMENTS: Final = {
     "Assign": "variable assignments", "Goto": "GOTO jumps", "GotoLabel": "jumps to named labels", "IfThen": "conditional assignments",
     "If": "IF conditions", "ElseIf": "IF conditions", "Else": "IF conditions", "EndIf": "IF conditions",
     "While": "WHILE loops", "EndWhile": "WHILE loops", "Do": "DO loops", "DoWhile": "DO loops",
@@ -1057,4 +1059,4 @@ def _snake(key: str) -> str:
     return name
 
 
-_SNAKE: dict[str, str] = {}
+_SNAKE: Final[dict[str, str]] = {}

@@ -30,8 +30,8 @@ from postproc.syntax import Syntax
 _CONTROL: Final = CONTROL
 _ASSIGN: Final = ASSIGN
 """The construct keys, as constants of this module (compiled: no global look-up on every block)."""
-_MODAL_MOTION = frozenset(("rapid", "linear", "cw", "ccw", "thread"))
-LATHE_INCREMENTS = {"U": "X", "W": "Z"}
+_MODAL_MOTION: Final = frozenset(("rapid", "linear", "cw", "ccw", "thread"))
+LATHE_INCREMENTS: Final = {"U": "X", "W": "Z"}
 """On a lathe, U and W are incremental X and Z whatever the distance mode (Fanuc T system A, GSK)."""
 
 
@@ -63,7 +63,8 @@ class ModalStateSyntax(Syntax):
     def _move(self, block: Block, ctx: Context, motion: Motion) -> None:
         state = ctx.state
         mode = motion.mode
-        if mode in _MODAL_MOTION and "MachineCoordinates" not in block.sections:
+        machine = "MachineCoordinates" in block.sections
+        if mode in _MODAL_MOTION and not machine:
             state.motion = mode
         elif mode is None:
             return
@@ -73,7 +74,7 @@ class ModalStateSyntax(Syntax):
         if ctx.lathe and ("U" in motion.axes or "W" in motion.axes):
             _lathe_move(ctx, motion)
             return
-        if mode in ("home", "home2") or "MachineCoordinates" in block.sections:
+        if machine or mode == "home" or mode == "home2":
             for axis in motion.axes:
                 pos[axis] = None
             return
@@ -88,7 +89,7 @@ class ModalStateSyntax(Syntax):
                 pos[axis] = value
 
 
-_FEED_MOTION = frozenset(("linear", "cw", "ccw", "thread"))
+_FEED_MOTION: Final = frozenset(("linear", "cw", "ccw", "thread"))
 
 
 def _check_turning(block: Block, ctx: Context, motion: Motion, before: str) -> None:
@@ -207,10 +208,10 @@ def _check_arc(block: Block, ctx: Context, motion: Motion) -> None:
         _refuse(block, ctx, motion, err)
 
 
-_SMALLEST = 10.0 ** -PLACES
+_SMALLEST: Final = 10.0 ** -PLACES
 """Below this a radius or a half chord is zero (``postproc.block_rules.arc_centre`` uses the same)."""
-_CENTRE_LETTERS = {"X": "I", "Y": "J", "Z": "K"}
-_INCREMENT_OF = {"X": "U", "Z": "W"}
+_CENTRE_LETTERS: Final = {"X": "I", "Y": "J", "Z": "K"}
+_INCREMENT_OF: Final = {"X": "U", "Z": "W"}
 
 
 def _refuse(block: Block, ctx: Context, motion: Motion, err: ArcError) -> NoReturn:
