@@ -9,7 +9,7 @@ from __future__ import annotations
 from hypothesis import given, settings, strategies as st
 
 from postproc.numbers import CANONICAL_BLOCK
-from postproc.rs274.canonical_line import CANONICAL, WITH_CODES, by_regex, classify, scan
+from postproc.rs274.canonical_line import CANONICAL, NO_WORDS, WITH_CODES, by_regex, classify, scan, scan_words
 
 _LETTERS = "XYZABCUVWIJKRQFGMNOTHDLPSxg(#"
 _number = st.builds(
@@ -37,6 +37,13 @@ def test_scan_agrees_with_the_regex_on_word_like_lines(line: str) -> None:
     assert bool(by_regex(line)) is expected and bool(classify(line)) is expected
     if expected:  # CANONICAL promises no G or M word: a reader then skips looking for calls
         assert found == (WITH_CODES if "G" in line or "M" in line else CANONICAL)
+    kind, words, sequence = scan_words(line)
+    assert kind == found
+    if expected:  # the words a reader keeps, and the block number, from the same pass
+        assert words == [(w[0], w[1:]) for w in line.split(" ")]
+        assert sequence == (int(line.split(" ")[0][1:]) if line.startswith("N") else -1)
+    else:
+        assert words is NO_WORDS and not words and sequence == -1
 
 
 @settings(max_examples=1000)
@@ -47,6 +54,8 @@ def test_scan_agrees_with_the_regex_on_any_text(line: str) -> None:
 
 def test_the_cases_that_matter_by_hand() -> None:
     assert scan("N80 X0.9596 Y0.4583 Z-3.859") == CANONICAL
+    assert scan_words("N0080 X0.9596 F1500.") == (CANONICAL, [("N", "0080"), ("X", "0.9596"), ("F", "1500.")], 80)
+    assert scan_words("G1 X1. N20") == (WITH_CODES, [("G", "1"), ("X", "1."), ("N", "20")], -1)
     assert scan("G01 X0. F1500.") == WITH_CODES and scan("N10 M98 P1000") == WITH_CODES
     assert scan("X10.") and scan("X-0.5") and scan("X1.123456")
     for line in ("X-0.", "X-0. Y1.", "X0.10", "X00.1", "X1.1234567", "X.5", "G", "X1", "X1. ", " X1.",

@@ -14,7 +14,7 @@ from postproc.ir import Block, Sequence
 from postproc.lines import BOM, EOF_BYTE, lexable
 
 from postproc.numbers import CANONICAL_BLOCK
-from postproc.rs274.canonical_line import COMPILED, WITH_CODES, scan
+from postproc.rs274.canonical_line import COMPILED, NO_WORDS, WITH_CODES, scan_words
 from postproc.rs274.lexer import WORDS_ONLY, WORD, lex_block
 
 from .macro import read_call
@@ -52,12 +52,17 @@ class FanucReader(Reader):
                 # A canonical block (``postproc.rs274.canonical_line``): words only, single spaces, a
                 # digits-only N; compiled, a byte scan finds it and tells a CAM line (no G or M word, so
                 # no call to look for) from the rest; as Python the regex is cheaper.
-                kind = scan(text) if COMPILED else WITH_CODES if canonical(text) is not None else 0
+                if COMPILED:
+                    kind, words, sequence = scan_words(text)  # and its words, and its block number
+                else:
+                    kind = WITH_CODES if canonical(text) is not None else 0
+                    words = [(w[0], w[1:]) for w in text.split(" ")] if kind else NO_WORDS
+                    sequence = int(words[0][1]) if kind and first == "N" else -1
                 if kind:
-                    block = Block(number, text, eol, [(w[0], w[1:]) for w in text.split(" ")])
+                    block = Block(number, text, eol, words)
                     block.canonical = True
-                    if first == "N":
-                        block.sections["Sequence"] = Sequence(int(block.words[0][1]))
+                    if sequence >= 0:
+                        block.sections["Sequence"] = Sequence(sequence)
                     if kind == WITH_CODES and ("M9" in text or "G6" in text):
                         try:
                             read_call(block, self.ctx)

@@ -24,7 +24,7 @@ from postproc.expr import Binary, Expr, Num
 from postproc.ir import (
     Block, DataSetting, MachineFunction, Coolant, CutterCompensation, CycleCall, CycleCancel, DistanceMode, Dwell, Feed, FeedMode,
     MachineCoordinates, Motion, NativeCode, PathControl, Plane, ProgramControl, ReturnLevel,
-    SpindleControl, SpindleOrientation, SpindleSpeed, ToolChange, ToolLengthOffset, ToolSelect, Units,
+    Sequence, SpindleControl, SpindleOrientation, SpindleSpeed, ToolChange, ToolLengthOffset, ToolSelect, Units,
     WorkOffset,
 )
 from postproc.context import Context, word_columns
@@ -206,6 +206,7 @@ class WordBlockSyntax(Syntax):
         mode: str | None = None
         arc_words = False
         upper = block.canonical  # a canonical block's letters are upper-case already (numbers.CANONICAL_BLOCK)
+        sequence = block.sections.get("Sequence") if upper else None  # its first word's number, read
         for letter, num in words:
             up = letter if upper else _UPPER[letter]
             if up in values:
@@ -213,7 +214,7 @@ class WordBlockSyntax(Syntax):
             if up in AXIS_LETTERS and (upper or "." in num):  # canonical: an axis number has its point
                 values[up] = axes[up] = float(num)
             elif up == "N" and "." not in num:
-                values["N"] = int(num)
+                values["N"] = sequence.number if isinstance(sequence, Sequence) else int(num)
             elif up == "F":
                 values["F"] = float(num)
             elif up == "G" and mode is None:

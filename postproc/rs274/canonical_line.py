@@ -27,62 +27,83 @@ _KIND: Final = bytes(_AXIS if chr(c) in "XYZABCUVWIJRQF" else _CODE if chr(c) in
 _MAX_FRACTION: Final = 6
 
 
+NO_WORDS: Final[list[tuple[str, str]]] = []
+"""``scan_words``'s words for a line that is not canonical (one shared list: never appended to)."""
+
+
 def scan(text: str) -> int:
     """0 unless ``CANONICAL_BLOCK.fullmatch(text)``, by one pass over the bytes: words separated by
     single spaces; a code letter and digits; an axis-type letter and ``-?(0|[1-9][0-9]*)\\.`` with at
     most six decimals and no trailing zero, never ``-0.``. A canonical line is ``CANONICAL``, or
     ``WITH_CODES`` when it has a G or M word (a reader then looks for calls in it)."""
+    return scan_words(text)[0]
+
+
+def scan_words(text: str) -> tuple[int, list[tuple[str, str]], int]:
+    """``scan``'s answer, with the line's words as a reader keeps them (letter, number as written) and
+    the number of its block number when it starts with one (else -1), from the same pass: a canonical
+    line needs no split, and its block number no second parse. ``NO_WORDS`` when the answer is 0."""
     if not text:
-        return 0
+        return 0, NO_WORDS, -1
     try:
         b = text.encode("ascii")  # compiled, a C call; ``str.isascii`` would be a method look-up
     except UnicodeEncodeError:
-        return 0
+        return 0, NO_WORDS, -1
     n = len(b)
     kind = _KIND
     found = CANONICAL
+    words: list[tuple[str, str]] = []
+    sequence = -1
     i = 0
     while True:
+        start = i
         c = b[i]
         k = kind[c]
         i += 1
         if k == _CODE:
             if c == 71 or c == 77:  # 'G', 'M'
                 found = WITH_CODES
-            start = i
-            while i < n and 48 <= b[i] <= 57:
-                i += 1
-            if i == start:
-                return 0
+            digits = i
+            if start == 0 and c == 78:  # 'N' first: its number is the block's
+                sequence = 0
+                while i < n and 48 <= b[i] <= 57:
+                    sequence = sequence * 10 + b[i] - 48
+                    i += 1
+            else:
+                while i < n and 48 <= b[i] <= 57:
+                    i += 1
+            if i == digits:
+                return 0, NO_WORDS, -1
         elif k == _AXIS:
             negative = i < n and b[i] == 45  # '-'
             if negative:
                 i += 1
-            start = i
+            digits = i
             if i < n and b[i] == 48:  # a lone leading '0'
                 i += 1
             else:
                 while i < n and 48 <= b[i] <= 57:
                     i += 1
-            if i == start or i >= n or b[i] != 46:  # digits, then '.'
-                return 0
+            if i == digits or i >= n or b[i] != 46:  # digits, then '.'
+                return 0, NO_WORDS, -1
             i += 1
             fraction = i
             while i < n and 48 <= b[i] <= 57:
                 i += 1
             if i - fraction > _MAX_FRACTION or i > fraction and b[i - 1] == 48:
-                return 0
-            if negative and i == fraction and fraction - start == 2 and b[start] == 48:
-                return 0  # '-0.'
+                return 0, NO_WORDS, -1
+            if negative and i == fraction and fraction - digits == 2 and b[digits] == 48:
+                return 0, NO_WORDS, -1  # '-0.'
         else:
-            return 0
+            return 0, NO_WORDS, -1
+        words.append((text[start], text[start + 1:i]))
         if i == n:
-            return found
+            return found, words, sequence
         if b[i] != 32:
-            return 0
+            return 0, NO_WORDS, -1
         i += 1
         if i == n:
-            return 0
+            return 0, NO_WORDS, -1
 
 
 def by_regex(text: str) -> int:
