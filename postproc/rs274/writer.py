@@ -169,6 +169,9 @@ class WordWriter(Writer):
         """Straight moves of a canonical source block take ``straight_move`` (the class allows it; from the
         dialect itself a block is copied or normalised, never generated)."""
         self.straight_axes = self.STRAIGHT_AXES
+        self.straight_items = self.straight_path()
+        """The class writes a straight move as the base does: an expansion's rapid and feed moves are
+        written by the base's ``motion_words`` directly (``item_line``)."""
         self.straight_codes = {mode: self.codes.spell("motion", mode) for mode in ("rapid", "linear")}
         """The motion codes a straight move is written with, spelled once."""
         arcs = not self.straight_copy and self.straight and self.straight_path((), "STRAIGHT_ARC_OVERRIDES")
@@ -604,7 +607,13 @@ class WordWriter(Writer):
             if self.modal.distance != "absolute":
                 words.append(self.code("distance", "absolute", "absolute distance mode", block))
                 self.modal.distance = "absolute"
-            words.extend(self.motion_words(item, block))
+            if self.straight_items and item.mode in self.straight_codes and item.center is None \
+                    and item.radius is None and self.straight_axes.issuperset(item.axes):
+                # a rapid or feed move of an expansion: the class's ``motion_words`` writes it as the base
+                # does (``STRAIGHT_OVERRIDES``), so the base's is called without the override's dispatch
+                words.extend(WordWriter.motion_words(self, item, block))
+            else:
+                words.extend(self.motion_words(item, block))
         else:
             words.extend(self.section_words(item.KEY, item, block))
             self._track({item.KEY: item})
