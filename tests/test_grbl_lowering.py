@@ -1,9 +1,14 @@
 """grbl's own lowering steps (``Grbl.LOWERING``): pure block-stream rewrites, each checked on its own
-stream and, where the writer's old inline rewrite missed a case, end to end (outputs derived by hand)."""
+stream and, where the writer's old inline rewrite missed a case, end to end (outputs derived by hand).
+grbl lists them fused into one pass (``lower_for_lean_controller``): random programs of what the steps
+rewrite, mixed with CAM moves, come out of it as out of the four steps chained."""
 
 from __future__ import annotations
 
 import io
+
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from postproc.api import read_blocks, translate
 from postproc.errors import Diagnostics, ErrorLevel
@@ -12,7 +17,9 @@ from postproc.plugins import default_registry
 from postproc.setup import MachineSetup
 from postproc.rs274.order_of_execution import stops_after_motion
 from postproc_grbl import Grbl
-from postproc.rs274.lean_controller import cancel_length_offset_first, close_full_circles, pause_for_tool_change
+from postproc.rs274.lean_controller import (
+    cancel_length_offset_first, close_full_circles, lower_for_lean_controller, pause_for_tool_change,
+)
 
 FANUC = default_registry().dialect("fanuc")
 
@@ -25,7 +32,7 @@ def fanuc_blocks(text: str) -> tuple[list[Block], Diagnostics]:
 
 
 def test_grbl_declares_its_steps() -> None:
-    assert Grbl.LOWERING == (pause_for_tool_change, cancel_length_offset_first, close_full_circles, stops_after_motion)
+    assert Grbl.LOWERING == (lower_for_lean_controller,)
     assert "LOWERING" not in Grbl.capabilities()
 
 
@@ -52,3 +59,56 @@ def test_steps_leave_a_grbl_program_to_grbl() -> None:
     ctx, blocks = read_blocks(["G3 I-7. F100.\n"], "t.gcode", Grbl, MachineSetup(), diagnostics)
     stream = iter(list(blocks))
     assert close_full_circles(stream, ctx, Grbl) is stream
+
+
+LINES = (
+    "G01 X1. Y2. F300.", "X3. Y-1.", "G00 Z5.", "N10 G01 X2.", "G02 X4. Y0. R2.", "G03 I-7.", "G02 J5. Z-1.",
+    "G91", "G90", "G17", "G18", "G19", "G03 K2.", "T3", "T7 M06", "M06", "S1000 M03", "M04", "M05", "M19",
+    "G01 X1. M05", "G00 Y2. M09", "M08", "G01 Z-1. M05 M09", "G49", "G49 G00 Z10.", "G49 G02 X0. Y10. I-10.",
+    "G43 H3 Z20.", "M00", "M01", "G01 X5. M05 M00", "T4 M06 M03 S500", "/ T5 M06", "G04 X1.", "(NOTE)",
+    "G81 X1. Y1. Z-2. R1. F100.", "X2.", "G80", "G02 X1. I.5 M05", "N20 T2 M06 (DRILL)",
+)
+
+
+def _lowered(program: list[str], fused: bool) -> tuple[list[Block], list[str]]:
+    diagnostics = Diagnostics(ErrorLevel.WARN, warn_stream=io.StringIO())
+    ctx, blocks = read_blocks([line + "\n" for line in program], "t.nc", FANUC, MachineSetup(), diagnostics)
+    stream = iter(list(blocks))
+    if fused:
+        out = list(lower_for_lean_controller(stream, ctx, Grbl))
+    else:
+        for step in (pause_for_tool_change, cancel_length_offset_first, close_full_circles, stops_after_motion):
+            stream = step(stream, ctx, Grbl)
+        out = list(stream)
+    return out, [w.message for w in diagnostics.warnings]
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.lists(st.sampled_from(LINES), min_size=1, max_size=14))
+def test_the_fused_pass_is_the_four_steps_chained(program: list[str]) -> None:
+    fused, fused_warnings = _lowered(program, fused=True)
+    chained, chained_warnings = _lowered(program, fused=False)
+    assert fused == chained
+    assert [b.eol for b in fused] == [b.eol for b in chained]
+    assert fused_warnings == chained_warnings
+
+
+def test_the_fused_pass_rewrites_what_each_step_rewrites() -> None:
+    """One program that every step changes (so the property above compares rewrites, not copies);
+    derived by hand from the steps' rules."""
+    program = ["T3", "S1000 M03", "T3 M06", "G49 G00 Z10.", "G03 I-7. F100.", "G01 X1. M05"]
+    fused, warnings = _lowered(program, fused=True)
+    assert [(b.line, sorted(b.sections)) for b in fused] == [
+        (1, ["ToolSelect"]),
+        (2, ["SpindleControl", "SpindleSpeed"]),
+        (3, ["Comments", "ProgramControl", "SpindleControl", "ToolSelect"]),  # T3 M5 M0 (TOOL CHANGE ...)
+        (4, ["ToolLengthOffset"]),  # G49 first
+        (4, ["Motion"]),
+        (5, ["DistanceMode", "Feed", "Motion"]),  # G91 G3 X0. I-7. F100.
+        (5, ["DistanceMode"]),  # G90 again
+        (6, ["Motion"]),
+        (6, ["SpindleControl"]),  # M5 after the move
+    ]
+    assert fused[5].sections["Motion"].axes == {"X": 0.0}  # type: ignore[attr-defined]
+    assert [b.sections["DistanceMode"].mode for b in fused[5:7]] == ["incremental", "absolute"]  # type: ignore[attr-defined]
+    assert warnings == ["the spindle is running at a tool change: a spindle stop is written before the pause"]

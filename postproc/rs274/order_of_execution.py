@@ -41,25 +41,32 @@ def stops_after_motion(blocks: Iterator[Block], ctx: Context, target: type[Diale
         if "SpindleControl" not in sections and "Coolant" not in sections:
             yield block
             continue
-        motion = sections.get("Motion")
-        if motion is None or not getattr(motion, "axes", None):
-            yield block
-            continue
-        moved = {key: sections[key] for key in _STOPS if key in sections and _stops(sections[key])}
-        if not moved:
-            yield block
-            continue
-        for key in _AFTER_STOPS:  # what the block does after its stops goes along, in the simulator's order
-            if key in sections:
-                moved[key] = sections[key]
-        for key in moved:
-            del sections[key]
-        block.changed()
-        after = Block(block.line, None, block.eol or "\n")
-        after.sections = moved
-        block.eol = "\n"
+        after = split_stops_after_motion(block)
         yield block
-        yield after
+        if after is not None:
+            yield after
+
+
+def split_stops_after_motion(block: Block) -> Block | None:
+    """The block ``stops_after_motion`` makes of a moving block's stops (taken out of ``block``), or None
+    when the block has none to move. A step that fuses several per-block rewrites calls it."""
+    sections = block.sections
+    motion = sections.get("Motion")
+    if motion is None or not getattr(motion, "axes", None):
+        return None
+    moved = {key: sections[key] for key in _STOPS if key in sections and _stops(sections[key])}
+    if not moved:
+        return None
+    for key in _AFTER_STOPS:  # what the block does after its stops goes along, in the simulator's order
+        if key in sections:
+            moved[key] = sections[key]
+    for key in moved:
+        del sections[key]
+    block.changed()
+    after = Block(block.line, None, block.eol or "\n")
+    after.sections = moved
+    block.eol = "\n"
+    return after
 
 
 def stops_before_motion(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:

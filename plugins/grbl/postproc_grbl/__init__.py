@@ -29,7 +29,6 @@ from __future__ import annotations
 from typing import Callable, ClassVar
 
 from postproc.dialect import Dialect
-from postproc.rs274.order_of_execution import stops_after_motion
 from postproc.hookspecs import hookimpl
 from postproc.rs274.cycle_words import rs274_cycle_words
 from postproc.xmlio import XFactory
@@ -37,7 +36,7 @@ from postproc.xmlio import XFactory
 from .codes import CODES
 
 from .block_syntax import GrblBlockSyntax
-from postproc.rs274.lean_controller import cancel_length_offset_first, close_full_circles, pause_for_tool_change
+from postproc.rs274.lean_controller import lower_for_lean_controller
 from .reader import GrblReader
 from .writer import GrblWriter
 
@@ -60,7 +59,7 @@ class Grbl(Dialect):
     """M6 is rejected: a tool change is written as an M0 pause (``pause_for_tool_change``)."""
     STOPS_BEFORE_MOTION = True
     """The RS274/NGC order of execution: M5 and M9 act before the block's motion."""
-    LOWERING = (pause_for_tool_change, cancel_length_offset_first, close_full_circles, stops_after_motion)
+    LOWERING = (lower_for_lean_controller,)
     """Rewrites into what grbl runs (``lowering.py``): tool change as a pause, G49 before motion, full
     circles with an end point; a moving block's spindle stop and coolant off after it (grbl runs them
     before the motion: ``postproc.rs274.order_of_execution``)."""
