@@ -1,18 +1,18 @@
-"""One translation for benchmarks/callgrind.sh: python callgrind_once.py SRC TGT NORMALIZE FILE."""
+"""One translation for benchmarks/callgrind.sh, as ``make bench`` runs it (the command line, reading the
+file and writing one): python callgrind_once.py SRC TGT NORMALIZE FILE."""
 from __future__ import annotations
 
-import io
+import os
 import sys
+import tempfile
 
-from postproc.api import translate
-from postproc.setup import MachineSetup
+from postproc.cli import main
 
 source, target, normalize, path = sys.argv[1:5]
-setup = MachineSetup()
-setup.output.normalize = normalize == "1"
-with open(path, encoding="utf-8") as f:
-    text = f.read()
+options = ["--normalize"] if normalize == "1" else []
 # grbl warns at the program's G43 H (a table offset it cannot express), as benchmarks/run.py runs it
-on_unsupported = "warn" if target == "grbl" else "error"
-translate(io.StringIO(text), io.StringIO(), file="big.nc", source=source, target=target, setup=setup,
-          on_unsupported=on_unsupported)
+if target == "grbl":
+    options += ["--on-unsupported", "warn"]
+with tempfile.TemporaryDirectory() as work:
+    out = os.path.join(work, "out.nc")
+    sys.exit(main(["translate", "--from", source, "--to", target, *options, path, "-o", out]))

