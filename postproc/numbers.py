@@ -11,6 +11,8 @@ import math
 import re
 from typing import Final
 
+from mypy_extensions import mypyc_attr
+
 from .errors import ProgramError
 
 MAX_PLACES: Final = 6
@@ -121,6 +123,36 @@ def decimal_text(value: float, most: int, leading_zero: bool = True) -> str | No
             return f"{sign}.{'0' * (most - len(digits))}{digits.rstrip('0')}"
         digits = "0" * (most + 1 - len(digits)) + digits
     return f"{sign}{digits[:-most]}.{digits[-most:].rstrip('0')}"  # one string built, not three
+
+
+TEXTS_KEPT: Final = 4096
+"""The most values a ``DecimalTexts`` remembers (then it forgets them all and starts again)."""
+
+
+@mypyc_attr(allow_interpreted_subclasses=True)
+class DecimalTexts:
+    """``decimal_text(value, most, leading_zero)`` for one writer's ``most`` and ``leading_zero``,
+    remembered per value: a canned cycle's expansion writes the same few numbers (its R plane, its
+    depth, the hole's X and Y) again and again, and spelling one costs ~2,000 instructions where a
+    look-up costs ~100 (cycles to LinuxCNC: 27 numbers a hole). Equal floats spell the same (0.0 and
+    -0.0 both '0.'); a value ``decimal_text`` cannot write exactly is not remembered."""
+
+    def __init__(self, most: int, leading_zero: bool) -> None:
+        self.most = most
+        self.leading_zero = leading_zero
+        self.texts: dict[float, str] = {}
+
+    def text(self, value: float) -> str | None:
+        texts = self.texts
+        text = texts.get(value)
+        if text is not None:
+            return text
+        text = decimal_text(value, self.most, self.leading_zero)
+        if text is not None:
+            if len(texts) >= TEXTS_KEPT:
+                texts.clear()
+            texts[value] = text
+        return text
 
 
 def as_written(text: str, value: float, most: int) -> bool:

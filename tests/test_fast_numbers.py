@@ -10,7 +10,9 @@ from decimal import ROUND_HALF_EVEN, Decimal, localcontext
 from hypothesis import example, given
 from hypothesis import strategies as st
 
-from postproc.numbers import EXACT, EXACT_INCH, exact_decimal, format_decimal
+from postproc.numbers import (
+    EXACT, EXACT_INCH, TEXTS_KEPT, DecimalTexts, decimal_text, exact_decimal, format_decimal, shortcut_places,
+)
 
 PLACES = st.integers(min_value=0, max_value=10)
 
@@ -111,3 +113,22 @@ def test_a_canonical_number_is_written_as_it_reads(text: str, most: int) -> None
     assert as_written(text, value, most) is (places <= most and abs(value) < 1e6)
     if as_written(text, value, most):
         assert decimal_text(value, most, True) == text
+
+
+@given(values=st.lists(few_places() | st.floats(width=64) | st.sampled_from([0.0, -0.0, 2.0, -5.0]), max_size=60),
+       places=PLACES, leading_zero=st.booleans())
+def test_remembered_texts_are_the_spelled_ones(values: list[float], places: int, leading_zero: bool) -> None:
+    """A writer's ``DecimalTexts`` answers each value (repeated, signed zeros, nan, out of range) as
+    ``decimal_text`` does, and forgets past its bound."""
+    most = shortcut_places(places, EXACT)
+    texts = DecimalTexts(most, leading_zero)
+    for value in values + values:
+        assert texts.text(value) == decimal_text(value, most, leading_zero)
+        assert len(texts.texts) <= TEXTS_KEPT
+
+
+def test_remembered_texts_stay_bounded() -> None:
+    texts = DecimalTexts(4, True)
+    for i in range(TEXTS_KEPT + 10):
+        assert texts.text(i / 4) == decimal_text(i / 4, 4, True)
+    assert 0 < len(texts.texts) <= TEXTS_KEPT

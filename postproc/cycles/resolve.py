@@ -16,7 +16,6 @@ reading dialect (``ctx.cycle_words``, a ``CycleWords``), so another dialect's le
 from __future__ import annotations
 
 import re
-from dataclasses import replace
 from typing import Any, Final
 
 from lxml import etree
@@ -27,6 +26,7 @@ from postproc.errors import ConfigError, Location, PostprocError, ProgramError, 
 from postproc.expr import Expr
 from postproc.ir import Block, CompoundMotion, NativeCode, Section
 from postproc.setup import CycleSettings
+from postproc.source_map import ExecutedBlock
 from postproc.state import MM_PER_INCH, PLANE_AXES, CycleState, ModalState
 from postproc.context import Context
 from postproc.syntax import Syntax
@@ -193,10 +193,10 @@ class CannedCycleResolveSyntax(Syntax):
         state = ctx.state
         cw = _cycle_words(ctx)
         code = cw.name(kind)
-        at_code = ctx.at(block, _code_column(block, code) if call else 1)
+        fail = _Failer(ctx, block, code, call)
         if kind in rules.unsupported:
             raise UnsupportedError(f"{code} has no {kind.replace('_', ' ')} meaning under {rules.name} "
-                                   "cycle semantics", at_code)
+                                   "cycle semantics", fail.at_code())
         units = sections.get("Units")
         if units is not None:
             state.set_units(units.system)  # type: ignore[attr-defined]
@@ -206,7 +206,7 @@ class CannedCycleResolveSyntax(Syntax):
         values = block.values
         words: dict[str, float | int] = {
             k: values[k] for k in sorted(kept.intersection(values), key=_WORD_RANK.__getitem__)}  # type: ignore[misc]
-        fail = _Failer(ctx, block, words, at_code)
+        fail.words = words
         first, second, normal = PLANE_AXES[plane]
         for letter in words:
             if letter in AXIS_LETTERS and letter not in (first, second, normal):
@@ -323,7 +323,7 @@ class CannedCycleResolveSyntax(Syntax):
         if kind == "back_bore" and return_level == "r":
             if call:
                 raise fail(f"{code} cannot be used with {cw.return_to_r}")
-            where = replace(fail.line, col=_code_column(Block(fail.line.line, fail.text), cw.return_to_r))
+            where = fail.at(_code_column(Block(fail.line, fail.text), cw.return_to_r))
             raise ProgramError(f"{code} cannot be used with {cw.return_to_r}", where)
         if rs274 and kind in TAP and spindle != ("cw" if kind == "tap" else "ccw"):
             direction = "cw" if kind == "tap" else "ccw"
@@ -391,24 +391,39 @@ class _LazyExpansion:
 
 @mypyc_attr(allow_interpreted_subclasses=True)
 class _Failer:
-    """Makes a located ProgramError: at the named word when the block has it, else at the cycle's G word."""
+    """Makes a located ProgramError: at the named word when the block has it, else at the cycle's G word.
+    Where that is gets worked out only when an error is made (a ``Location`` per hole cost the cycles
+    benchmark ~16k instructions a hole)."""
 
-    __slots__ = ("ctx", "line", "text", "words", "at_code")
+    __slots__ = ("ctx", "line", "origin", "text", "code", "call", "words")
 
-    def __init__(self, ctx: Context, block: Block, words: dict[str, Any], at_code: Location) -> None:
-        self.ctx, self.words, self.at_code = ctx, words, at_code
-        self.line = ctx.at(block)
+    def __init__(self, ctx: Context, block: Block, code: str, call: bool) -> None:
+        self.ctx, self.code, self.call = ctx, code, call
+        self.line = block.line
+        self.origin = block.origin if isinstance(block, ExecutedBlock) else None
         """Where the block is (its file and call stack): not the block itself, which holds the expansion
         that holds this (a reference cycle per cycle block, freed only by the paused collector)."""
         self.text = block.text
         """The text as read: an expansion made later (``CompoundMotion.lazy``) still points at its word
         after a lowering step rewrote the block."""
+        self.words: dict[str, Any] = {}
+        """The cycle's words (set once read): an error about one of them points at it."""
+
+    def at(self, col: int) -> Location:
+        """What ``Context.at`` says of the block."""
+        origin = self.origin
+        if origin is None:
+            return Location(self.ctx.file, self.line, col)
+        return Location(origin.file, self.line, col, origin.note())
+
+    def at_code(self) -> Location:
+        """Where the cycle's code is (its G word when the block calls the cycle, else the block)."""
+        return self.at(_code_column(Block(self.line, self.text), self.code) if self.call else 1)
 
     def __call__(self, message: str, letter: str | None = None) -> ProgramError:
         if letter is not None and letter in self.words:
-            column = self.ctx.column_of(Block(self.line.line, self.text), letter)
-            return ProgramError(message, replace(self.line, col=column))
-        return ProgramError(message, self.at_code)
+            return ProgramError(message, self.at(self.ctx.column_of(Block(self.line, self.text), letter)))
+        return ProgramError(message, self.at_code())
 
 
 def _positions(code: str, words: dict[str, Any], here: dict[str, float], plane: str, incremental: bool,

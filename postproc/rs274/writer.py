@@ -23,7 +23,7 @@ from .codes import CodeTable
 from .expressions import ExprSpelling, spell_word_value
 from ..ir import Block, CompoundMotion, Feed, Motion, Section, Sequence, one_line
 from ..numbers import (
-    EXACT, EXACT_INCH, MAX_PLACES, SHORT_RANGE, as_written, canonical_number_re, decimal_text, format_decimal, shortcut_places,
+    DecimalTexts, EXACT, EXACT_INCH, MAX_PLACES, SHORT_RANGE, as_written, canonical_number_re, format_decimal, shortcut_places,
 )
 from ..state import MM_PER_INCH, PLANE_AXES, ModalState, changes_nothing
 from ..context import Context
@@ -152,6 +152,9 @@ class WordWriter(Writer):
         self.exact_inch = shortcut_places(self.inch_decimals, EXACT_INCH)
         """The most places a number is written with as it is, without rounding (``decimal_text``): decided
         once per run for each unit, not per number."""
+        self.mm_texts = DecimalTexts(self.exact_mm, self.leading_zero)
+        self.inch_texts = DecimalTexts(self.exact_inch, self.leading_zero)
+        """``decimal_text`` in each unit system, remembered per value (``DecimalTexts``)."""
         self.copy_ok = source_dialect == self.DIALECT and not self.normalize and not self.renumber
         self.source_numbers = self.leading_zero and not self.rounding
         """A canonical block's axis numbers may be written as the source wrote them (``source_number``):
@@ -203,7 +206,7 @@ class WordWriter(Writer):
             places = (self.mm_places if mm else self.inch_places).get(letter)
             if places is not None:
                 return self.rounded(value, letter, places, mm)
-        text = decimal_text(value, self.exact_mm if mm else self.exact_inch, self.leading_zero)
+        text = (self.mm_texts if mm else self.inch_texts).text(value)
         if text is not None:
             return text
         return format_decimal(value, self.decimals if mm else self.inch_decimals, self.leading_zero,
@@ -807,8 +810,7 @@ class WordWriter(Writer):
         carry = self.carry
         want = value + carry.get(axis, 0.0) if incremental and carry else value
         if not self.rounding:
-            text = decimal_text(want, self.exact_mm if self.modal.units == "mm" else self.exact_inch,
-                                self.leading_zero)
+            text = (self.mm_texts if self.modal.units == "mm" else self.inch_texts).text(want)
             if text is not None:  # written exactly: nothing to carry
                 if carry:
                     carry.pop(axis, None)
