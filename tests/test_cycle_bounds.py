@@ -6,6 +6,7 @@ tests count the items built, never time."""
 from __future__ import annotations
 
 import io
+import types
 
 import pytest
 
@@ -27,7 +28,11 @@ def _errors(cycle_line: str, *, source: str = "fanuc", target: str = "grbl",
 
 @pytest.fixture
 def built(monkeypatch: pytest.MonkeyPatch) -> list[int]:
-    """Counts the items every expansion appends."""
+    """Counts the items every expansion appends. Compiled, the expansion calls ``ToolPath.add`` directly
+    and a patch cannot see it: these tests then run in the suite's pure-Python pass (``make test`` runs
+    both); the errors they check are checked in both passes by the tests without this fixture."""
+    if not isinstance(expansion.ToolPath.add, types.FunctionType):
+        pytest.skip("ToolPath is compiled: its calls are counted in the pure-Python pass")
     count = [0]
     add = expansion.ToolPath.add
 

@@ -2,12 +2,15 @@
 
 from __future__ import annotations
 
+from mypy_extensions import mypyc_attr
+
 from postproc.state import PLANE_AXES
 
 from .expansion import EPS, CycleExpansion, ToolPath, level
 from .section import CannedCycle
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class BackBoringSyntax(CycleExpansion):
     """G87 back boring (Fanuc). Supports modal repetition. Reads absolute levels from the cycle
     section resolved by CannedCycleResolveSyntax: the cut starts at ``bottom`` and goes up to ``top``.

@@ -2,10 +2,13 @@
 
 from __future__ import annotations
 
+from mypy_extensions import mypyc_attr
+
 from .expansion import CycleExpansion, ToolPath
 from .section import CannedCycle
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class DrillingSyntax(CycleExpansion):
     """G81/G82. The rapid out goes straight from the bottom to the return level, not through R."""
 

@@ -8,6 +8,8 @@ sequence serves G17, G18 and G19, and it drops zero-length moves, as a controlle
 
 from __future__ import annotations
 
+from mypy_extensions import mypyc_attr
+
 import abc
 from typing import ClassVar, Iterator
 
@@ -31,6 +33,7 @@ UNBOUNDED = 1 << 62
 ``<Limits movesPerBlock>``)."""
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class TooManyMoves(ProgramError):
     """An expansion would exceed the set-up's bound on moves per block. ``role`` names the cycle word to
     point at: "repeat" (the repeat count) or "peck" (the peck depth)."""
@@ -40,6 +43,7 @@ class TooManyMoves(ProgramError):
         self.role = role
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class ToolPath:
     """Collects the items of one expansion, tracking where the tool is. The items are a list (the
     writer, the simulator and the lowering steps walk them more than once), bounded by ``limit``: at
@@ -124,6 +128,7 @@ def _xyz(first: str, a: float, b: float, n: float) -> dict[str, float | Expr]:
     return {"X": n, "Y": a, "Z": b}  # G19 (YZ)
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class _Whereabouts(ToolPath):
     """A tool path that follows the tool without keeping its moves (``CycleExpansion.end``)."""
 
@@ -163,6 +168,7 @@ def holes(cycle: CannedCycle) -> Iterator[tuple[float, float]]:
         yield a + i * da, b + i * db
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class CycleExpansion(Syntax):
     """Base of the per-family expansion syntaxes. Subclasses set ``KINDS`` and implement ``hole``.
 
@@ -173,7 +179,8 @@ class CycleExpansion(Syntax):
     __slots__ = ()
     KINDS: ClassVar[frozenset[str]] = frozenset()
 
-    def build(self, block: Block, ctx: Context) -> None:
+    def build(self, block: Block, ctx: Context | None) -> None:
+        """(``ctx`` None: built outside a run, as a seed's section is expanded on its own.)"""
         cycle = block.sections.get("CannedCycle")
         if not isinstance(cycle, CannedCycle) or cycle.kind not in self.KINDS:
             return

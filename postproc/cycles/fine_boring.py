@@ -2,12 +2,15 @@
 
 from __future__ import annotations
 
+from mypy_extensions import mypyc_attr
+
 from postproc.state import PLANE_AXES
 
 from .expansion import CycleExpansion, ToolPath
 from .section import CannedCycle
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class FineBoringSyntax(CycleExpansion):
     """Feed to the bottom, dwell P, oriented stop, rapid shift by Q (direction from the set-up),
     rapid out to the return level still shifted, shift back, spindle CW. No orientation on the way in.

@@ -2,10 +2,13 @@
 
 from __future__ import annotations
 
+from mypy_extensions import mypyc_attr
+
 from .expansion import CycleExpansion, ToolPath
 from .section import CannedCycle
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class ManualBoringSyntax(CycleExpansion):
     """Fanuc: feed to the bottom, dwell P, spindle stop, program stop; on cycle start the tool (taken
     as still at the bottom: the operator's hand moves are not simulated) rapids to the return level

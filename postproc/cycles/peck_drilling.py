@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from mypy_extensions import mypyc_attr
+
 import math
 
 from postproc.errors import ProgramError
@@ -10,6 +12,7 @@ from .expansion import EPS, UNBOUNDED, CycleExpansion, ToolPath, level
 from .section import CannedCycle
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class PeckDrillingSyntax(CycleExpansion):
     """G73: feed q, rapid back by d, feed q + d, ... (the tool stays in the hole).
     G83: feed q, rapid to R, rapid to d above the last bottom, feed q + d, ...

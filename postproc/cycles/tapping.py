@@ -2,10 +2,13 @@
 
 from __future__ import annotations
 
+from mypy_extensions import mypyc_attr
+
 from .expansion import CycleExpansion, ToolPath
 from .section import CannedCycle
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class TappingSyntax(CycleExpansion):
     """Fanuc: feed to the bottom, dwell P, reverse, feed back to R, (G98: rapid to the initial level),
     restore the direction. RS274 (LinuxCNC's interpreter): feed to the bottom, stop, reverse, dwell
