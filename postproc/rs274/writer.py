@@ -160,6 +160,9 @@ class WordWriter(Writer):
         """A canonical block's axis numbers may be written as the source wrote them (``source_number``):
         canonical numbers have their leading zero, and no address is rounded to places of its own."""
         self.codes = self.table()
+        self.motion_codes: dict[str, str] = {}
+        """Motion mode -> its code, spelled once (``CodeTable.spell`` is a Python call; an expansion
+        writes a code per move)."""
         """The code table written (a dialect with one per machine type picks it from the context)."""
         self.section_writers = self.dispatch_table()
         """Section key -> its writing function: this class's dispatch table (``section_writer``), shared by
@@ -431,7 +434,7 @@ class WordWriter(Writer):
             value = values.get(up)
             own = places is not None and up in places
             if isinstance(value, float) and up in axes and (axes[up] and up in self.carry or own or not canonical(num)):
-                parts.append(up + self.position(up, value, axes[up]))
+                parts.append(up + _position(self, up, value, axes[up]))
             elif type(value) is float and (own or not canonical(num)):  # an expression keeps its text
                 parts.append(up + (self.speed(value) if up == "S" and own
                                    else self.feed_number(value, block) if up == "F" else number(value, up)))
@@ -754,24 +757,27 @@ class WordWriter(Writer):
             self.unsupported("a canned-cycle repetition without its cycle", block)
         if not s.axes and self.left_out(s, block):
             return []
-        code = self.codes.spell(_MOTION_KIND.get(s.mode, "motion"), s.mode)
+        code = self.motion_codes.get(s.mode)
         if code is None:
-            self.unsupported(f"{s.mode} motion", block)
+            code = self.codes.spell(_MOTION_KIND.get(s.mode, "motion"), s.mode)
+            if code is None:
+                self.unsupported(f"{s.mode} motion", block)
+            self.motion_codes[s.mode] = code
         words = [code]
         length = self.length
         start = dict(self.carry) if s.center is not None else None
-        incremental = self._incremental(s, block)
+        incremental = _incremental(self, block)
         as_written = block.canonical and self.source_numbers
         for axis, value in s.axes.items():
             if type(value) is float:
                 text = self.source_number(block, axis, value, incremental) if as_written else None
-                words.append(axis + (text if text is not None else self.position(axis, value, incremental)))
+                words.append(axis + (text if text is not None else _position(self, axis, value, incremental)))
             elif isinstance(value, Expr):
                 words.append(axis + self.expression(value, block))
                 if not incremental:
                     self.carry.pop(axis, None)  # written as the program wrote it
             else:
-                words.append(axis + self.position(axis, value, incremental))
+                words.append(axis + _position(self, axis, value, incremental))
         if s.mode in _MOTION_KIND:
             for axis in s.axes:
                 self.carry.pop(axis, None)  # both programs end at the reference point
@@ -807,25 +813,11 @@ class WordWriter(Writer):
         """An axis word's number. Rounding never accumulates: in incremental mode the increment written is
         the one that brings the written position nearest the source's (what earlier words rounded away
         is carried), so each written position is within the output resolution of the exact one."""
-        carry = self.carry
-        want = value + carry.get(axis, 0.0) if incremental and carry else value
-        if not self.rounding:
-            text = (self.mm_texts if self.modal.units == "mm" else self.inch_texts).text(want)
-            if text is not None:  # written exactly: nothing to carry
-                if carry:
-                    carry.pop(axis, None)
-                return text
-        text = self.number(want, axis)
-        error = want - float(text)
-        if error:
-            carry[axis] = error
-        elif carry:
-            carry.pop(axis, None)
-        return text
+        return _position(self, axis, value, incremental)
 
     def _incremental(self, s: Motion, block: Block) -> bool:
         """True when the motion's axis words are increments (machine coordinates are always absolute)."""
-        return self.modal.distance == "incremental" and "MachineCoordinates" not in block.sections
+        return _incremental(self, block)
 
     def _rounded_axes(self, block: Block) -> dict[str, bool]:
         """Axis letters of a normalised block's motion whose numbers go through ``position`` (letter ->
@@ -833,7 +825,7 @@ class WordWriter(Writer):
         motion = block.sections.get("Motion")
         if not isinstance(motion, Motion) or motion.mode is None or motion.mode in _MOTION_KIND:
             return {}
-        incremental = self._incremental(motion, block)
+        incremental = _incremental(self, block)
         return {a: incremental for a, v in motion.axes.items() if type(v) is float}
 
     def _exact_axes(self, block: Block) -> None:
@@ -1071,3 +1063,29 @@ def _snake(key: str) -> str:
 
 
 _SNAKE: Final[dict[str, str]] = {}
+
+
+def _position(w: WordWriter, axis: str, value: float, incremental: bool) -> str:
+    """``WordWriter.position``: a module function, so that a plugin's (interpreted) writer does not
+    dispatch through Python for each number (no subclass overrides it)."""
+    carry = w.carry
+    want = value + carry.get(axis, 0.0) if incremental and carry else value
+    if not w.rounding:
+        text = (w.mm_texts if w.modal.units == "mm" else w.inch_texts).text(want)
+        if text is not None:  # written exactly: nothing to carry
+            if carry:
+                carry.pop(axis, None)
+            return text
+    text = w.number(want, axis)
+    error = want - float(text)
+    if error:
+        carry[axis] = error
+    elif carry:
+        carry.pop(axis, None)
+    return text
+
+
+def _incremental(w: WordWriter, block: Block) -> bool:
+    """``WordWriter._incremental``: True when a motion's axis words are increments (machine coordinates
+    are always absolute)."""
+    return w.modal.distance == "incremental" and "MachineCoordinates" not in block.sections
