@@ -93,18 +93,20 @@ class BuildCompiled(build_ext):
         tree = root / "postproc" / "_compiled"
         suffix = importlib.machinery.EXTENSION_SUFFIXES[0]
         by_module = {Path(s).with_suffix("").as_posix().replace("/", "."): s for s in hot_sources()}
-        modules: dict[str, dict[str, str]] = {}
+        modules: dict[str, dict[str, str | int]] = {}
         for ext in self.extensions:
             name = ext.name.removeprefix(PREFIX)
             file = Path(*name.split(".")).as_posix() + suffix
             if not (tree / file).is_file():
                 _note(f"{name} was not compiled: installing pure Python")
                 return
-            entry = {"file": file}
+            entry: dict[str, str | int] = {"file": file}
             if name in by_module:
                 source = by_module[name]
                 entry["source"] = source
                 entry["sha256"] = hashlib.sha256((HERE / source).read_bytes()).hexdigest()
+                st = (HERE / source).stat()  # a start compares these first (postproc.native)
+                entry["size"], entry["mtime_ns"] = st.st_size, st.st_mtime_ns
             modules[name] = entry
         manifest = {"suffix": suffix, "modules": modules}
         (tree / "manifest.json").write_text(json.dumps(manifest, indent=1) + "\n", encoding="utf-8")

@@ -9,11 +9,14 @@ differs from the one compiled (an edited checkout runs pure Python until ``make 
 
 The compiled modules are one group that calls itself natively, so it is used whole or not at all: a
 pure module in their midst would not be the class they check against.
+
+A start compares each source's size and modification time with those the manifest recorded, and hashes
+only a source whose differ (a copied installation, a touched file): hashing every hot source (and
+importing ``hashlib``, which loads OpenSSL) cost a one-line translation ~5 ms of its start-up.
 """
 
 from __future__ import annotations
 
-import hashlib
 import importlib.machinery
 import json
 import os
@@ -45,7 +48,19 @@ class CompiledFinder:
 
 
 def _digest(path: Path) -> str:
+    import hashlib
     return hashlib.sha256(path.read_bytes()).hexdigest()
+
+
+def _fresh(path: Path, entry: Mapping[str, object]) -> bool:
+    """Whether the source at ``path`` is the one the manifest ``entry`` was compiled from."""
+    try:
+        st = os.stat(path)
+        if st.st_size == entry.get("size") and st.st_mtime_ns == entry.get("mtime_ns"):
+            return True
+        return _digest(path) == entry["sha256"]
+    except OSError:
+        return False
 
 
 def plan(root: Path, environ: Mapping[str, str]) -> tuple[str, dict[str, Path]]:
@@ -68,11 +83,7 @@ def plan(root: Path, environ: Mapping[str, str]) -> tuple[str, dict[str, Path]]:
             return f"the compiled build is incomplete ({entry['file']} is missing)", {}
         source = entry.get("source")
         if source is not None:
-            try:
-                fresh = _digest(root / source) == entry["sha256"]
-            except OSError:
-                fresh = False
-            if not fresh:
+            if not _fresh(root / source, entry):
                 return f"{source} changed since it was compiled (run make install)", {}
         files[name] = file
     return "", files

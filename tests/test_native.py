@@ -80,6 +80,33 @@ def test_an_edited_source_runs_pure(tmp_path: Path) -> None:
     assert files == {} and reason == "postproc/hot.py changed since it was compiled (run make install)"
 
 
+def _record_stat(root: Path, size: int, mtime_ns: int) -> None:
+    """Record a size and modification time for the fake source, as ``setup.py`` does for a real one."""
+    path = root / "postproc" / "_compiled" / "manifest.json"
+    manifest = json.loads(path.read_text(encoding="utf-8"))
+    manifest["modules"]["postproc.hot"].update(size=size, mtime_ns=mtime_ns)
+    path.write_text(json.dumps(manifest), encoding="utf-8")
+
+
+def test_a_source_with_its_recorded_size_and_time_is_not_hashed(tmp_path: Path) -> None:
+    """The manifest's hash is wrong on purpose: the size and time, which match, decide."""
+    root = _tree(tmp_path, "x = 1\n", "something else\n")
+    st = (root / "postproc" / "hot.py").stat()
+    _record_stat(root, st.st_size, st.st_mtime_ns)
+    assert native.plan(root, {}) == ("", {"postproc.hot": root / "postproc" / "_compiled" / ("postproc/hot" + SUFFIX)})
+
+
+def test_a_touched_source_is_hashed(tmp_path: Path) -> None:
+    """A size or time that differs from the record is no verdict: the hash is (the same text passes, an
+    edit of the same size does not)."""
+    root = _tree(tmp_path, "x = 1\n", "x = 1\n")
+    st = (root / "postproc" / "hot.py").stat()
+    _record_stat(root, st.st_size, st.st_mtime_ns - 1)
+    assert native.plan(root, {})[0] == ""
+    (root / "postproc" / "hot.py").write_text("x = 2\n", encoding="utf-8")
+    assert native.plan(root, {})[0] == "postproc/hot.py changed since it was compiled (run make install)"
+
+
 def test_a_missing_extension_runs_pure(tmp_path: Path) -> None:
     reason, files = native.plan(_tree(tmp_path, "x = 1\n", "x = 1\n", with_file=False), {})
     assert files == {} and "incomplete" in reason
