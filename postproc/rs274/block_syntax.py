@@ -212,7 +212,8 @@ class WordBlockSyntax(Syntax):
             if up in values:
                 break
             if up in AXIS_LETTERS and (upper or "." in num):  # canonical: an axis number has its point
-                values[up] = axes[up] = float(num)
+                number: object = float(num)  # boxed once, shared by both dictionaries (compiled)
+                values[up] = axes[up] = number  # type: ignore[assignment]
             elif up == "N" and "." not in num:
                 values["N"] = sequence.number if isinstance(sequence, Sequence) else int(num)
             elif up == "F":
