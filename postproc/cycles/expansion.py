@@ -153,7 +153,14 @@ class _Whereabouts(ToolPath):
 
 def level(cycle: CannedCycle, name: str) -> float:
     """A resolved level of the cycle; a record read from XML may lack one, which is a located error."""
-    value = getattr(cycle, name)
+    if name == "r":  # the named fields (a compiled field read; ``getattr`` by name is a generic look-up)
+        value = cycle.r
+    elif name == "initial":
+        value = cycle.initial
+    elif name == "bottom":
+        value = cycle.bottom
+    else:
+        value = getattr(cycle, name)
     if value is None:
         raise ProgramError(f"the {cycle.kind} cycle has no {name} level")
     return float(value)

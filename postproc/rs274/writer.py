@@ -764,7 +764,6 @@ class WordWriter(Writer):
                 self.unsupported(f"{s.mode} motion", block)
             self.motion_codes[s.mode] = code
         words = [code]
-        length = self.length
         start = dict(self.carry) if s.center is not None else None
         incremental = _incremental(self, block)
         as_written = block.canonical and self.source_numbers
@@ -786,9 +785,9 @@ class WordWriter(Writer):
                 if axis in s.center:
                     offset = s.center[axis]
                     exact = offset if isinstance(offset, Expr) else offset + start.get(axis, 0.0)  # type: ignore[union-attr]
-                    words.append(letter + length(exact, block, letter))  # from the written start to the exact centre
+                    words.append(letter + self.length(exact, block, letter))  # from the written start to the exact centre
         if s.radius is not None:
-            words.append("R" + length(s.radius, block, "R"))
+            words.append("R" + self.length(s.radius, block, "R"))
         return words
 
     def source_number(self, block: Block, axis: str, value: float, incremental: bool) -> str | None:
