@@ -114,7 +114,7 @@ def lines(draw: st.DrawFn) -> list[str]:
     if draw(st.booleans()):
         out.insert(0, "%")
     for i in range(draw(st.integers(min_value=1, max_value=12))):
-        kind = draw(st.sampled_from(["move"] * 6 + ["coded"] * 2 + ["arc", "arc", "mode", "units", "rapid"]))
+        kind = draw(st.sampled_from(["move"] * 6 + ["coded"] * 2 + ["arc", "arc", "mode", "units", "rapid", "cycle"]))
         number = draw(st.sampled_from([f"N{10 * (i + 1)} ", f"N0{i + 1} ", ""]))
         if kind == "arc":
             out.extend(draw(arcs(number)))
@@ -123,6 +123,13 @@ def lines(draw: st.DrawFn) -> list[str]:
             out.append(draw(st.sampled_from(["G90", "G91", "G1", "G0"])))
         elif kind == "units":
             out.append(draw(st.sampled_from(["G20", "G21"])) + " F50.")
+        elif kind == "cycle":  # an expansion's moves (``compound``: the base's ``item_line`` when declared)
+            out.append("G0 Z5.")
+            out.append(number + draw(st.sampled_from([
+                "G99 G81 X1. Y2. Z-3. R1. F100.", "G98 G83 X0. Y1.5 Z-6. R1. Q2. F80.",
+                "G82 X2. Y2. Z-1. R0.5 P500 F60.", "G91 G81 X5. Z-4. R-4. K3 F100."])))
+            out.append(draw(st.sampled_from(["X3. Y1.", "Y-2."])))
+            out.append("G80 G90")
         else:
             axes = draw(st.lists(st.sampled_from("XYZAB"), min_size=1, max_size=4, unique=True))
             if kind == "rapid":
@@ -163,6 +170,9 @@ def _run(program: list[str], target: str) -> str:
 @example(program=["G21 G90 G17", "G1 F100.", "G0 X1. Y1.", "G2 Z-2. I1. J0."])  # no end point in its plane
 @example(program=["G21 G90 G18", "G1 F100.", "G0 X1. Z1.", "G3 X1. I0. K0."])  # zero radius
 @example(program=["G21 G90 G19", "G1 F100.", "G0 Y1. Z1.", "G3 Y1. Z3. K1. J0."])  # centre words K before J
+@example(program=["G21", "G90", "G1 F100.", "G0 Z5.", "G99 G81 X1. Y2. Z-3. R1. F100.", "X3. Y1.", "G80 G90"])
+@example(program=["G20", "G91", "G0 Z1.", "G98 G83 X0. Y1.5 Z-6. R1. Q2. F80.", "G91 G81 X5. Z-4. R-4. K3 F100.",
+                  "G82 X2. Y2. Z-1. R0.5 P500 F60.", "G80 G90"])  # an expansion's moves (``compound``)
 def test_straight_path_writes_what_generate_writes(program: list[str], target: str,
                                                    monkeypatch: pytest.MonkeyPatch) -> None:
     writer = _writer(target)

@@ -160,10 +160,10 @@ class WordWriter(Writer):
         """A canonical block's axis numbers may be written as the source wrote them (``source_number``):
         canonical numbers have their leading zero, and no address is rounded to places of its own."""
         self.codes = self.table()
+        """The code table written (a dialect with one per machine type picks it from the context)."""
         self.motion_codes: dict[str, str] = {}
         """Motion mode -> its code, spelled once (``CodeTable.spell`` is a Python call; an expansion
         writes a code per move)."""
-        """The code table written (a dialect with one per machine type picks it from the context)."""
         self.section_writers = self.dispatch_table()
         """Section key -> its writing function: this class's dispatch table (``section_writer``), shared by
         every run that writes this dialect."""
@@ -178,6 +178,9 @@ class WordWriter(Writer):
         self.straight_items = self.straight_path()
         """The class writes a straight move as the base does: an expansion's rapid and feed moves are
         written by the base's ``motion_words`` directly (``item_line``)."""
+        self.base_item_moves = self.straight_items and self.straight_path(("item_line",))
+        """And an expansion's move as the base's ``item_line`` does (``compound`` calls it directly: a
+        plugin's writer would dispatch each item through Python)."""
         self.straight_codes = {mode: self.codes.spell("motion", mode) for mode in ("rapid", "linear")}
         """The motion codes a straight move is written with, spelled once."""
         arcs = not self.straight_copy and self.straight and self.straight_path((), "STRAIGHT_ARC_OVERRIDES")
@@ -590,8 +593,12 @@ class WordWriter(Writer):
             lines.append(self.generate(head))
         lines.append(note)
         was_incremental = self.modal.distance == "incremental"
+        base_moves = self.base_item_moves
         for item in compound.items:
-            lines.append(self.item_line(item, block))
+            if base_moves and isinstance(item, Motion):
+                lines.append(WordWriter.item_line(self, item, block))
+            else:
+                lines.append(self.item_line(item, block))
         if was_incremental:
             lines.append(self.code("distance", "incremental", "incremental distance mode", block) + "\n")
             self.modal.distance = "incremental"

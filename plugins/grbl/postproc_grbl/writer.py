@@ -79,10 +79,10 @@ class GrblWriter(WordWriter):
     """G80 is a motion code here: ``G80 G0`` is refused, a block's G0-G3 ends the cycle by itself."""
     BARE_FEED_MOTION_NEEDS_FEED: ClassVar[bool] = True
     STRAIGHT_OVERRIDES: ClassVar[frozenset[str]] = frozenset({"write_block", "generate", "section_words",
-                                                              "motion_words"})
+                                                              "motion_words", "item_line"})
     """A straight move of X, Y and Z (``STRAIGHT_AXES``) is never empty, drops nothing, is no arc and no tape
     mark, and its line is ASCII without a real-time character (a canonical line's letters, digits, '.',
-    '-' and spaces): these overrides write it as the base does."""
+    '-' and spaces): these overrides write it as the base does (``item_line`` differs only at a pause)."""
     STRAIGHT_ARC_OVERRIDES: ClassVar[frozenset[str]] = STRAIGHT_OVERRIDES
     """And an arc: ``motion_words`` refuses only a helix with no end point in its plane (``straight_move``
     leaves such an arc to it) and axes beyond X, Y and Z (``STRAIGHT_AXES``)."""
