@@ -23,7 +23,7 @@ from postproc.event_order import MOVING, after_motion
 from postproc.geometry import ARC_TOLERANCE_MM, PLACES
 from postproc.expr import Expr
 from postproc.ir import Block, Motion
-from postproc.state import MM_PER_INCH, PLANE_AXES, changes_nothing
+from postproc.state import MM_PER_INCH, MODAL_KEYS, PLANE_AXES
 from postproc.context import Context
 from postproc.syntax import Syntax
 
@@ -31,6 +31,8 @@ _CONTROL: Final = CONTROL
 _ASSIGN: Final = ASSIGN
 """The construct keys, as constants of this module (compiled: no global look-up on every block)."""
 _MODAL_MOTION: Final = frozenset(("rapid", "linear", "cw", "ccw", "thread"))
+_WATCHED: Final = MODAL_KEYS | {CONTROL, ASSIGN}
+"""A block with none of these keys changes no modal state and no construct: one pass over its keys."""
 LATHE_INCREMENTS: Final = {"U": "X", "W": "Z"}
 """On a lathe, U and W are incremental X and Z whatever the distance mode (Fanuc T system A, GSK)."""
 
@@ -46,10 +48,15 @@ class ModalStateSyntax(Syntax):
             return
         state = ctx.state
         spindle = state.spindle
-        if not changes_nothing(sections):
-            state.apply(sections)
-        if not state.computes and (_CONTROL in sections or _ASSIGN in sections):
-            state.computes = True
+        quiet = True  # no modal section and no construct (most blocks: a move, a block number)
+        for key in sections:
+            if key in _WATCHED:
+                quiet = False
+                break
+        if not quiet:
+            state.apply(sections)  # (which passes a block of constructs only at once)
+            if not state.computes and (_CONTROL in sections or _ASSIGN in sections):
+                state.computes = True
         motion = sections.get("Motion")
         if motion is not None:
             self._move(block, ctx, motion)  # type: ignore[arg-type]
@@ -57,7 +64,7 @@ class ModalStateSyntax(Syntax):
                 raise ProgramError(ZERO_FEED, ctx.at(block))
             if state.feed_mode == "per_rev":
                 _check_turning(block, ctx, motion, spindle)  # type: ignore[arg-type]
-        if "Feed" in sections or "SpindleSpeed" in sections:
+        if not quiet and ("Feed" in sections or "SpindleSpeed" in sections):
             check_values(block, ctx)  # after the state is carried: an error keeps the block's settings
 
     def _move(self, block: Block, ctx: Context, motion: Motion) -> None:
