@@ -15,6 +15,7 @@ from postproc.errors import Diagnostics, ErrorLevel
 from postproc.ir import Block
 from postproc.plugins import default_registry
 from postproc.setup import MachineSetup
+from postproc.verify import verify_lines
 from postproc.rs274.order_of_execution import stops_after_motion
 from postproc_grbl import Grbl
 from postproc.rs274.lean_controller import (
@@ -112,3 +113,22 @@ def test_the_fused_pass_rewrites_what_each_step_rewrites() -> None:
     assert fused[5].sections["Motion"].axes == {"X": 0.0}  # type: ignore[attr-defined]
     assert [b.sections["DistanceMode"].mode for b in fused[5:7]] == ["incremental", "absolute"]  # type: ignore[attr-defined]
     assert warnings == ["the spindle is running at a tool change: a spindle stop is written before the pause"]
+
+
+def test_a_stopped_spindles_stop_stays_where_the_source_runs_it() -> None:
+    """Found by the fuzzer: ``M06 M05 M08 T1`` with the spindle stopped runs tool change, coolant on,
+    spindle stop (a Fanuc or mach3 stop acts after the block's other actions). The pause took the block's
+    M5, so grbl stopped the spindle before the coolant came on; the M5 now stays with the rest of the
+    block (grbl runs ``M5 M8`` without motion as the source runs it: verify agrees). A running spindle's
+    M5 still goes with the pause, before the operator reaches for the tool."""
+    for source in ("fanuc", "mach3"):
+        program = "G21 G90 G0 X0. Y0. Z10.\nM06 M05 M08 T1\n"
+        out = io.StringIO()
+        translate(io.StringIO(program), out, file="t.nc", source=source, target="grbl")
+        assert out.getvalue().splitlines()[1:] == ["T1 M0 (TOOL CHANGE: LOAD T1, THEN CYCLE START)", "M5 M8"]
+        report = verify_lines(program.splitlines(keepends=True), out.getvalue().splitlines(keepends=True),
+                              file_in="t.nc", file_out="t.gcode", source=source, target="grbl")
+        assert report.ok, report.summary()
+    out = io.StringIO()
+    translate(io.StringIO("G21 G90\nS1000 M03\nM06 M05 M08 T1\n"), out, file="t.nc", source="fanuc", target="grbl")
+    assert out.getvalue().splitlines()[2:] == ["T1 M5 M0 (TOOL CHANGE: LOAD T1, THEN CYCLE START)", "M8"]

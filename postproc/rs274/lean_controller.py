@@ -183,6 +183,7 @@ class _ToolChangePauses:
                     self.spindle = "stop"  # the writer stops a running spindle before a pause
         return out
 
+
 def _pause(block: Block, ctx: Context, tool: int | Expr, spindle: str) -> Block:
     """The pause ``T<n> [M5] M0 (TOOL CHANGE ...)`` standing for the block's tool change. grbl runs a
     block's spindle codes, motion and other stop codes before its M0, where the tool change comes first
@@ -193,14 +194,17 @@ def _pause(block: Block, ctx: Context, tool: int | Expr, spindle: str) -> Block:
     rest = {k: v for k, v in sections.items() if k not in _PAUSE_KEYS}
     control = sections.get("SpindleControl")
     stop_here = control is not None and control.direction == "stop"  # type: ignore[attr-defined]
-    if stop_here:
-        del rest["SpindleControl"]  # the block's M5 goes with the pause
+    running = spindle != "stop"
+    if stop_here and running:
+        del rest["SpindleControl"]  # the block's M5 goes with the pause: it stops the running spindle
     pause: dict[str, Section] = {k: sections[k] for k in ("Sequence", "BlockDelete") if k in sections}
     pause["ToolSelect"] = ToolSelect(tool)
-    if spindle != "stop" and not stop_here:
+    if running and not stop_here:
         ctx.diagnostics.warn("the spindle is running at a tool change: a spindle stop is written before the pause", ctx.at(block))
-    if spindle != "stop" or stop_here:
+    if running:
         pause["SpindleControl"] = SpindleControl("stop")
+    # (a stopped spindle's M5 stays with the rest of the block, where the source runs it: after the tool
+    # change and after the block's coolant on, ``postproc.event_order``)
     pause["ProgramControl"] = ProgramControl("stop")
     note = f"TOOL CHANGE: LOAD T{tool}, THEN CYCLE START"
     comments = sections.get("Comments")
