@@ -36,12 +36,14 @@ class FanucReader(Reader):
         number = 0
         for raw in lines:
             number += 1
-            if raw.endswith("\n"):  # (compiled, endswith makes no string; a slice does)
-                if raw.endswith("\r\n"):
+            size = len(raw)
+            last = raw[size - 1] if size else ""  # (compiled: a one-character string is a cached object)
+            if last == "\n":
+                if size > 1 and raw[size - 2] == "\r":
                     text, eol = raw[:-2], "\r\n"
                 else:
                     text, eol = raw[:-1], "\n"
-            elif raw.endswith("\r"):
+            elif last == "\r":
                 text, eol = raw[:-1], "\r"
             else:
                 text, eol = raw, ""

@@ -305,10 +305,13 @@ class WordWriter(Writer):
         sections = block.sections
         text = block.text
         if self.straight_copy:
-            if text is None or not sections.keys() <= _STRAIGHT_KEYS:
+            if text is None:
                 return None
+            for key in sections:  # (one pass: of the straight keys only the feed rate is modal)
+                if key not in _STRAIGHT_KEYS:
+                    return None
             # what ``write_block`` does to a canonical block it normalises: its source line, exact
-            if not changes_nothing(sections):
+            if "Feed" in sections:
                 self.modal.apply(sections)
             if self.carry:
                 self._exact_axes(block)
