@@ -97,6 +97,8 @@ def programs(draw: st.DrawFn) -> list[str]:
 @given(program=programs())
 @example(program=["G21", "G90", "G1 F100.", "N10 X1.5 Y-2.25", "G2 X3. Y1. R2.", "G03 X1. I-1. J0.5 F200."])
 @example(program=["G21", "G3 X1. Y2. I1.", "X2. Y3. R1.5", "G0 X1. R2."])
+@example(program=["G21", "G90", "G1 F100.", "X1. X2.", "N10 G1 X1. Y2. X3.", "N20 X1. F1. F2.", "G1 G1 X1.",
+                  "G2 X1. I1. I2."])  # repeated addresses: the general path refuses them
 def test_the_fast_path_reads_what_the_general_path_reads(program: list[str], dialect: str, machine: str,
                                                          monkeypatch: pytest.MonkeyPatch) -> None:
     cls = default_registry().dialect(dialect)

@@ -139,9 +139,9 @@ class CannedCycleResolveSyntax(Syntax):
             return
         if motion is not None and motion.mode is not None:  # type: ignore[attr-defined]
             return  # a reference return (group 00) leaves the cycle in force
-        if motion is None and not _NOT_CYCLE_DATA.isdisjoint(sections):
+        if motion is None and _any_key(sections, _NOT_CYCLE_DATA):
             return  # G04 (its P is the dwell's), a G10, a verbatim code such as M98 P..: not cycle data
-        if not self._letters(ctx)[0].isdisjoint(block.values):
+        if _any_key(block.values, self._letters(ctx)[0]):
             if _NATIVE_KEY in state.extra or _computed(block):  # a hole known only when the program runs
                 self._native(block, ctx, state.cycle.kind)
                 return
@@ -387,6 +387,15 @@ class _LazyExpansion:
     def too_many(self, err: TooManyMoves) -> PostprocError:
         """The bound on moves per block, located at the word that makes the moves (pecks or repeats)."""
         return self.fail(f"{self.code}: {err.message}", self.peck if err.role == "peck" else self.repeat)
+
+
+def _any_key(mapping: dict[str, Any], keys: frozenset[str]) -> bool:
+    """Whether ``mapping`` has a key of ``keys``: compiled, a loop over its few keys costs a fraction of
+    ``keys.isdisjoint(mapping)``, a bound-method call that builds an iterator (once per hole)."""
+    for key in mapping:
+        if key in keys:
+            return True
+    return False
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)

@@ -42,6 +42,14 @@ _UPPER: Final = {c: c.upper() for c in "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmn
 _UPPER[":"] = "O"  # ':' is ISO's spelling of the program number address
 CENTER_AXIS: Final = {"I": "X", "J": "Y", "K": "Z"}
 _ARC_LETTERS: Final = frozenset("IJKR")
+_AXIS: Final = 1
+_N: Final = 2
+_F: Final = 3
+_G: Final = 4
+_ARC: Final = 5
+_PLAIN_KIND: Final = bytes(_AXIS if c in AXIS_LETTERS else _N if c == "N" else _F if c == "F" else _G if c == "G"
+                           else _ARC if c in _ARC_LETTERS else 0 for c in "ABCDEFGHIJKLMNOPQRSTUVWXYZ")
+"""What ``_plain`` does with each letter A-Z (by ``ord(letter) - 65``): one byte read instead of set tests."""
 _MOTION_KEYS: Final = {"0": "0", "00": "0", "1": "1", "01": "1", "2": "2", "02": "2", "3": "3", "03": "3"}
 """The spellings of G0-G3 ``_plain`` reads (their ``g_key``); the table says what each means."""
 _MOTION_MODES: Final = frozenset(("rapid", "linear", "cw", "ccw"))
@@ -207,24 +215,31 @@ class WordBlockSyntax(Syntax):
         arc_words = False
         upper = block.canonical  # a canonical block's letters are upper-case already (numbers.CANONICAL_BLOCK)
         sequence = block.sections.get("Sequence") if upper else None  # its first word's number, read
+        seen = 0  # the addresses met, one bit per letter (a repeated one leaves the path)
         for letter, num in words:
             up = letter if upper else _UPPER[letter]
-            if up in values:
+            index = ord(up) - 65
+            if index < 0 or index > 25:
                 break
-            if up in AXIS_LETTERS and (upper or "." in num):  # canonical: an axis number has its point
+            bit = 1 << index
+            if seen & bit:
+                break
+            seen |= bit
+            kind = _PLAIN_KIND[index]
+            if kind == _AXIS and (upper or "." in num):  # canonical: an axis number has its point
                 number: object = float(num)  # boxed once, shared by both dictionaries (compiled)
                 values[up] = axes[up] = number  # type: ignore[assignment]
-            elif up == "N" and "." not in num:
+            elif kind == _N and "." not in num:
                 values["N"] = sequence.number if isinstance(sequence, Sequence) else int(num)
-            elif up == "F":
+            elif kind == _F:
                 values["F"] = float(num)
-            elif up == "G" and mode is None:
+            elif kind == _G and mode is None:
                 key = _MOTION_KEYS.get(num)
                 entry = self.table(ctx).g.get(key) if key is not None else None
                 if entry is None or entry[1] != "motion" or entry[2] not in _MOTION_MODES:
                     break
                 mode = str(entry[2])
-            elif up in _ARC_LETTERS and (upper or "." in num):
+            elif kind == _ARC and (upper or "." in num):
                 values[up] = float(num)
                 arc_words = True
             else:

@@ -624,7 +624,7 @@ class WordWriter(Writer):
                 words.append(self.code("distance", "absolute", "absolute distance mode", block))
                 self.modal.distance = "absolute"
             if self.straight_items and item.mode in self.straight_codes and item.center is None \
-                    and item.radius is None and self.straight_axes.issuperset(item.axes):
+                    and item.radius is None and _keys_within(item.axes, self.straight_axes):
                 # a rapid or feed move of an expansion: the class's ``motion_words`` writes it as the base
                 # does (``STRAIGHT_OVERRIDES``), so the base's is called without the override's dispatch
                 words.extend(WordWriter.motion_words(self, item, block))
@@ -1098,3 +1098,12 @@ def _incremental(w: WordWriter, block: Block) -> bool:
     """``WordWriter._incremental``: True when a motion's axis words are increments (machine coordinates
     are always absolute)."""
     return w.modal.distance == "incremental" and "MachineCoordinates" not in block.sections
+
+
+def _keys_within(mapping: dict[str, Any], keys: frozenset[str]) -> bool:
+    """``keys.issuperset(mapping)`` as a compiled loop over the mapping's few keys (the set method is a
+    bound-method call that builds an iterator; an expansion asks it once per move)."""
+    for key in mapping:
+        if key not in keys:
+            return False
+    return True
