@@ -14,7 +14,7 @@ from postproc.ir import Block, Sequence
 from postproc.lines import BOM, EOF_BYTE, lexable
 
 from postproc.numbers import CANONICAL_BLOCK
-from postproc.rs274.canonical_line import COMPILED, NO_WORDS, WITH_CODES, scan_words
+from postproc.rs274.canonical_line import CANONICAL, CODES, COMPILED, NO_WORDS, WITH_CODES, scan_words
 from postproc.rs274.lexer import WORDS_ONLY, WORD, lex_block
 
 from .macro import read_call
@@ -53,7 +53,8 @@ class FanucReader(Reader):
             if first in _FAST_START:
                 # A canonical block (``postproc.rs274.canonical_line``): words only, single spaces, a
                 # digits-only N; compiled, a byte scan finds it and tells a CAM line (no G or M word, so
-                # no call to look for) from the rest; as Python the regex is cheaper.
+                # no call to look for) from the rest, and takes upper-case plain words whose numbers are
+                # not canonical too (``X10``); as Python the regex is cheaper.
                 if COMPILED:
                     kind, words, sequence = scan_words(text)  # and its words, and its block number
                 else:
@@ -62,10 +63,11 @@ class FanucReader(Reader):
                     sequence = int(words[0][1]) if kind and first == "N" else -1
                 if kind:
                     block = Block(number, text, eol, words)
-                    block.canonical = True
+                    if kind & CANONICAL:
+                        block.canonical = True
                     if sequence >= 0:
                         block.sections["Sequence"] = Sequence(sequence)
-                    if kind == WITH_CODES and ("M9" in text or "G6" in text):
+                    if kind & CODES and ("M9" in text or "G6" in text):
                         try:
                             read_call(block, self.ctx)
                         except PostprocError as err:
