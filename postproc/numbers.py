@@ -33,6 +33,35 @@ def canonical_number_re(places: int, leading_zero: bool) -> re.Pattern[str]:
     return re.compile(rf"(?!-0\.$)(?!{zero}$)-?{whole}\.{frac}|0\.")
 
 
+def canonical_number(num: str, places: int, leading_zero: bool) -> bool:
+    """Whether ``canonical_number_re(places, leading_zero).fullmatch(num)``, by one pass over the text
+    (compiled, the regex's cached look-up and match cost most of writing a word of a block that is
+    not canonical): an explicit point, at most ``places`` places without a trailing zero, a whole part
+    ``0`` or without leading zeros (none at all without ``leading_zero``), never ``-0.``."""
+    n = len(num)
+    if n == 2 and num == "0.":
+        return True
+    i = 1 if n and num[0] == "-" else 0
+    whole = i
+    while i < n and "0" <= num[i] <= "9":
+        i += 1
+    digits = i - whole
+    if digits > 1 and num[whole] == "0" or digits == 1 and num[whole] == "0" and (not leading_zero or whole == 1
+                                                                                   and i + 1 == n):
+        return False  # '01.', '0.5' without leading zeros, '-0.'
+    if digits == 0 and leading_zero or i >= n or num[i] != ".":
+        return False
+    i += 1
+    fraction = n - i
+    if fraction > places:
+        return False
+    while i < n:
+        if not "0" <= num[i] <= "9":
+            return False
+        i += 1
+    return fraction == 0 or num[n - 1] != "0"
+
+
 EXACT: Final = 5e-7
 """Half a unit of the ``MAX_PLACES``-th place: the most a written number (mm) may differ from its value."""
 EXACT_INCH: Final = EXACT / 25.4

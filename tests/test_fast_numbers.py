@@ -11,7 +11,8 @@ from hypothesis import example, given
 from hypothesis import strategies as st
 
 from postproc.numbers import (
-    EXACT, EXACT_INCH, TEXTS_KEPT, DecimalTexts, decimal_text, exact_decimal, format_decimal, shortcut_places,
+    EXACT, EXACT_INCH, TEXTS_KEPT, DecimalTexts, canonical_number, canonical_number_re, decimal_text, exact_decimal,
+    format_decimal, shortcut_places,
 )
 
 PLACES = st.integers(min_value=0, max_value=10)
@@ -132,3 +133,25 @@ def test_remembered_texts_stay_bounded() -> None:
     for i in range(TEXTS_KEPT + 10):
         assert texts.text(i / 4) == decimal_text(i / 4, 4, True)
     assert 0 < len(texts.texts) <= TEXTS_KEPT
+
+
+_NUMBER_TEXT = st.text("0123456789.-+e", max_size=10)
+
+
+@given(text=_NUMBER_TEXT, places=st.integers(min_value=0, max_value=8), leading_zero=st.booleans())
+@example(text="0.", places=6, leading_zero=True)
+@example(text="0.", places=6, leading_zero=False)
+@example(text="-0.", places=6, leading_zero=True)
+@example(text="0.5", places=6, leading_zero=False)
+@example(text=".5", places=6, leading_zero=False)
+@example(text=".5", places=6, leading_zero=True)
+@example(text="01.", places=6, leading_zero=True)
+@example(text="1.50", places=6, leading_zero=True)
+@example(text="1.1234567", places=6, leading_zero=True)
+@example(text="-10.25", places=2, leading_zero=True)
+@example(text="10", places=6, leading_zero=True)
+@example(text=".", places=6, leading_zero=False)
+def test_the_canonical_number_scan_agrees_with_its_regex(text: str, places: int, leading_zero: bool) -> None:
+    """``canonical_number`` (the writers' test of a number as written, one pass) is the regex it replaced."""
+    expected = canonical_number_re(places, leading_zero).fullmatch(text) is not None
+    assert canonical_number(text, places, leading_zero) is expected

@@ -23,7 +23,7 @@ from .codes import CodeTable
 from .expressions import ExprSpelling, spell_word_value
 from ..ir import Block, CompoundMotion, Feed, Motion, Section, Sequence, one_line
 from ..numbers import (
-    DecimalTexts, EXACT, EXACT_INCH, MAX_PLACES, SHORT_RANGE, as_written, canonical_number_re, format_decimal, shortcut_places,
+    DecimalTexts, EXACT, EXACT_INCH, MAX_PLACES, SHORT_RANGE, as_written, canonical_number, format_decimal, shortcut_places,
 )
 from ..state import MM_PER_INCH, PLANE_AXES, ModalState, changes_nothing
 from ..context import Context
@@ -462,7 +462,7 @@ class WordWriter(Writer):
     def _canonical(self, num: str) -> bool:
         """True when a number as written is already explicit and exact: keep its text (and skip a float
         round trip). Digits the user wrote are never rounded away by normalising."""
-        return canonical_number_re(MAX_PLACES, self.leading_zero).fullmatch(num) is not None
+        return canonical_number(num, MAX_PLACES, self.leading_zero)
 
     def generate(self, block: Block) -> str:
         """Generate a block (and any lines a compound motion adds) from its sections."""
