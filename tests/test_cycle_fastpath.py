@@ -1,7 +1,7 @@
 """The fast cycle expansion makes exactly the moves the reference tool path made.
 
-``ToolPath._move`` works on three coordinates instead of copying the position dictionary for every
-move. ``ReferencePath`` below is the tool path as it was before that change (a dictionary per move,
+``ToolPath`` keeps the tool's three coordinates in fields and ``_move`` works on them instead of copying
+a position dictionary for every move. ``ReferencePath`` below is the tool path as it was before that change (a dictionary per move,
 every axis compared), kept here as the oracle: over random cycles of every kind, semantics, return
 level, plane, distance mode (G91 rows) and peck depth, both give the same items, in the same order,
 with the same numbers (compared exactly, float for float), and leave the tool in the same place.
@@ -24,9 +24,25 @@ coordinate = st.floats(-50.0, 50.0, allow_nan=False).map(lambda v: round(v, 3))
 
 
 class ReferencePath(ToolPath):
-    """The tool path's moves as first written: the target as a copy of the position, every axis checked."""
+    """The tool path's moves as first written: the position a dictionary, the target a copy of it, every
+    axis checked (but for an unknown level, which is now the same located error as an unknown axis)."""
 
-    __slots__ = ()
+    __slots__ = ("pos",)
+
+    def __init__(self, cycle: CannedCycle) -> None:
+        super().__init__(cycle)
+        self.pos = dict(cycle.start)
+
+    def level(self) -> float:
+        if self.axes[2] not in self.pos:
+            raise ProgramError(f"the tool's {self.axes[2]} position is unknown before the cycle")
+        return self.pos[self.axes[2]]
+
+    def set_level(self, level: float) -> None:
+        self.pos[self.axes[2]] = level
+
+    def end(self) -> dict[str, float]:
+        return dict(self.pos)
 
     def _move(self, mode: str, a: float | None, b: float | None, level: float | None) -> None:
         first, second, normal = self.axes
@@ -95,7 +111,7 @@ def cycles(draw: st.DrawFn) -> tuple[type[CycleExpansion], CannedCycle]:
 def outcome(run: object) -> tuple[str, object]:
     try:
         items, end = run()  # type: ignore[operator]
-    except (ProgramError, KeyError) as err:  # KeyError: the level asked of a tool whose level is unknown
+    except ProgramError as err:
         return type(err).__name__, str(err)
     return "ok", (exact(items), [(k, repr(v)) for k, v in end.items()])
 

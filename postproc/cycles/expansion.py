@@ -49,11 +49,18 @@ class ToolPath:
     writer, the simulator and the lowering steps walk them more than once), bounded by ``limit``: at
     most ``limit`` items are ever held, then ``TooManyMoves``."""
 
-    __slots__ = ("axes", "pos", "items", "feed", "limit")
+    __slots__ = ("axes", "start", "a", "b", "n", "items", "feed", "limit")
 
     def __init__(self, cycle: CannedCycle, limit: int = UNBOUNDED) -> None:
-        self.axes = PLANE_AXES[cycle.plane]
-        self.pos: dict[str, float] = dict(cycle.start)
+        self.axes = first, second, normal = PLANE_AXES[cycle.plane]
+        start = cycle.start
+        self.start = start
+        """Where the tool is when the cycle starts (``end`` keeps the axes outside the plane as they are)."""
+        self.a: float | None = start.get(first)
+        self.b: float | None = start.get(second)
+        self.n: float | None = start.get(normal)
+        """Where the tool is on the plane's two axes and its normal (None: not known yet). Three fields,
+        not a position dict: they are read and written at every move of every hole."""
         self.items: list[Section] = []
         self.feed = cycle.feed
         """Feed in force: the block's own F is already applied, so a Feed item appears only on a change."""
@@ -67,7 +74,16 @@ class ToolPath:
         self.items.append(item)
 
     def level(self) -> float:
-        return self.pos[self.axes[2]]
+        """Where the tool is on the normal axis."""
+        n = self.n
+        if n is None:
+            raise ProgramError(f"the tool's {self.axes[2]} position is unknown before the cycle")
+        return n
+
+    def set_level(self, level: float) -> None:
+        """The tool is at ``level`` on the normal axis without a move of its own (LinuxCNC's G88 ends its
+        manual retract there)."""
+        self.n = level
 
     def rapid(self, a: float | None = None, b: float | None = None, level: float | None = None) -> None:
         self._move("rapid", a, b, level)
@@ -81,25 +97,21 @@ class ToolPath:
 
     def _move(self, mode: str, a: float | None, b: float | None, level: float | None) -> None:
         """A rapid or feed to the given plane position and level (None: where the tool is on that axis);
-        a move shorter than ``EPS`` on every axis is no move. Works on the three coordinates, not on
-        copies of the position: it runs for every move of every hole."""
-        first, second, normal = self.axes
-        pos = self.pos
-        was_a, was_b, was_n = pos.get(first), pos.get(second), pos.get(normal)
+        a move shorter than ``EPS`` on every axis is no move."""
+        was_a, was_b, was_n = self.a, self.b, self.n
         to_a = was_a if a is None else a
         to_b = was_b if b is None else b
         to_n = was_n if level is None else level
         if to_a is None or to_b is None or to_n is None:
-            target = {first: to_a, second: to_b, normal: to_n}
-            missing = [k for k in "XYZ" if target[k] is None]
-            raise ProgramError(f"the tool's {missing[0]} position is unknown before the cycle")
+            _unknown(self.axes, to_a, to_b, to_n)
+            return
         if was_a is not None and was_b is not None and was_n is not None and abs(to_a - was_a) < EPS \
                 and abs(to_b - was_b) < EPS and abs(to_n - was_n) < EPS:
             return
-        self.add(Motion(mode, _xyz(first, to_a, to_b, to_n)))
-        pos[first] = to_a
-        pos[second] = to_b
-        pos[normal] = to_n
+        self.add(Motion(mode, _xyz(self.axes[0], to_a, to_b, to_n)))
+        self.a = to_a
+        self.b = to_b
+        self.n = to_n
 
     def dwell(self, seconds: float | None, always: bool = False) -> None:
         """A dwell; Fanuc emits none without P, LinuxCNC's interpreter always does (``always``)."""
@@ -116,7 +128,23 @@ class ToolPath:
         self.add(ProgramControl("stop"))
 
     def end(self) -> dict[str, float]:
-        return dict(self.pos)
+        """Where the tool is: the start's axes, with the plane's and the normal's where they are known."""
+        end = dict(self.start)
+        first, second, normal = self.axes
+        if self.a is not None:
+            end[first] = self.a
+        if self.b is not None:
+            end[second] = self.b
+        if self.n is not None:
+            end[normal] = self.n
+        return end
+
+
+def _unknown(axes: tuple[str, str, str], a: float | None, b: float | None, n: float | None) -> None:
+    """The error of a move from a position not known on some axis (the first unknown in X, Y, Z order)."""
+    target = dict(zip(axes, (a, b, n)))
+    missing = [k for k in "XYZ" if target[k] is None]
+    raise ProgramError(f"the tool's {missing[0]} position is unknown before the cycle")
 
 
 def _xyz(first: str, a: float, b: float, n: float) -> dict[str, float | Expr]:
@@ -138,17 +166,14 @@ class _Whereabouts(ToolPath):
         pass
 
     def _move(self, mode: str, a: float | None, b: float | None, level: float | None) -> None:
-        first, second, normal = self.axes
-        pos = self.pos
         if a is not None:
-            pos[first] = a
+            self.a = a
         if b is not None:
-            pos[second] = b
+            self.b = b
         if level is not None:
-            pos[normal] = level
-        if len(pos) < 3:
-            missing = [k for k in "XYZ" if k not in pos]
-            raise ProgramError(f"the tool's {missing[0]} position is unknown before the cycle")
+            self.n = level
+        if self.a is None or self.b is None or self.n is None:
+            _unknown(self.axes, self.a, self.b, self.n)
 
 
 def level(cycle: CannedCycle, name: str) -> float:

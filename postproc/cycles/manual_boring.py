@@ -32,7 +32,7 @@ class ManualBoringSyntax(CycleExpansion):
         path.program_stop()
         if rs274:
             path.spindle(cycle.spindle if cycle.spindle in ("cw", "ccw") else "cw")
-            path.pos[path.axes[2]] = self.return_level(cycle)
+            path.set_level(self.return_level(cycle))
             return
         path.rapid(level=self.return_level(cycle))
         path.spindle("cw")

@@ -623,11 +623,19 @@ class WordWriter(Writer):
             if self.modal.distance != "absolute":
                 words.append(self.code("distance", "absolute", "absolute distance mode", block))
                 self.modal.distance = "absolute"
-            if self.straight_items and item.mode in self.straight_codes and item.center is None \
-                    and item.radius is None and _keys_within(item.axes, self.straight_axes):
+            code = self.straight_codes.get(item.mode) if self.straight_items and item.mode is not None else None
+            if code is not None and item.center is None and item.radius is None:
                 # a rapid or feed move of an expansion: the class's ``motion_words`` writes it as the base
-                # does (``STRAIGHT_OVERRIDES``), so the base's is called without the override's dispatch
-                words.extend(WordWriter.motion_words(self, item, block))
+                # does (``STRAIGHT_OVERRIDES``), so the base's is called without the override's dispatch,
+                # or its words are spelled here at once when they are numbers of driven axes
+                if not words:
+                    line = _straight_item_line(self, item, code)
+                    if line is not None:
+                        return line
+                if _keys_within(item.axes, self.straight_axes):
+                    words.extend(WordWriter.motion_words(self, item, block))
+                else:
+                    words.extend(self.motion_words(item, block))
             else:
                 words.extend(self.motion_words(item, block))
         else:
@@ -1092,6 +1100,24 @@ def _position(w: WordWriter, axis: str, value: float, incremental: bool) -> str:
     elif carry:
         carry.pop(axis, None)
     return text
+
+
+def _straight_item_line(w: WordWriter, item: Motion, code: str) -> str | None:
+    """An expansion's rapid or feed move as ``motion_words`` spells it, when every axis is a number of a
+    driven axis (else None, and nothing written that a second spelling would not write the same). The
+    distance mode is absolute here (``item_line`` made it so): each number is the position's
+    (``_position``, which leaves to carry what depends on the value only), which is the text
+    ``source_number`` would copy from a canonical source block (``as_written``)."""
+    axes = item.axes
+    if not axes:
+        return None
+    driven = w.straight_axes
+    parts = [code]
+    for axis, value in axes.items():
+        if type(value) is not float or axis not in driven:
+            return None
+        parts.append(axis + _position(w, axis, value, False))
+    return " ".join(parts) + "\n"
 
 
 def _incremental(w: WordWriter, block: Block) -> bool:
