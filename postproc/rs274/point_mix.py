@@ -6,11 +6,14 @@ rule. One warning per program, at the first point-less word of the first axis fo
 
 from __future__ import annotations
 
+from mypy_extensions import mypyc_attr
+
 from postproc.context import NOT_SET, Context
 from postproc.errors import Location
 from postproc.ir import Block
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class PointMix:
     """Per axis, the first line written with a point and the first point-less word (its location)."""
 
