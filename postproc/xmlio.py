@@ -24,7 +24,7 @@ _parser: etree.XMLParser | None = None
 
 
 def lxml_etree() -> Any:
-    """The ``lxml.etree`` module, imported on first use: it costs a start-up ~6 ms, and a command that
+    """The ``lxml.etree`` module, imported on first use: it costs a start-up ~5 ms, and a command that
     reads and writes no XML (``postproc dialects``) never needs it. What reads or writes XML starts
     with ``etree = lxml_etree()``: a function-local ``from lxml import etree`` costs every call an
     import (0.2 µs as Python, more compiled), paid by each block and section an IR dump writes."""
