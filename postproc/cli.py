@@ -9,7 +9,6 @@ import math
 import os
 import signal
 import sys
-import threading
 from pathlib import Path
 from typing import Iterable, Iterator, Sequence, TextIO
 
@@ -46,16 +45,20 @@ def main(argv: Sequence[str] | None = None) -> int:
 @contextlib.contextmanager
 def _signals_raise() -> Iterator[None]:
     """SIGINT raises ``KeyboardInterrupt`` (even where the shell started us ignoring it) and SIGTERM
-    ``Terminated``, for the length of a command; the previous handlers come back afterwards."""
-    if threading.current_thread() is not threading.main_thread():
-        yield
-        return
+    ``Terminated``, for the length of a command; the previous handlers come back afterwards. Outside
+    the main thread (a caller's worker) the handlers stay as they are: only the main thread may set them."""
 
     def terminate(signum: int, frame: object) -> None:
         raise Terminated()
 
-    previous = {sig: signal.signal(sig, handler) for sig, handler in
-                ((signal.SIGINT, signal.default_int_handler), (signal.SIGTERM, terminate))}
+    try:
+        previous = {sig: signal.signal(sig, handler) for sig, handler in
+                    ((signal.SIGINT, signal.default_int_handler), (signal.SIGTERM, terminate))}
+    except ValueError:  # not the main thread (what threading would tell, without importing it)
+        previous = None
+    if previous is None:
+        yield
+        return
     try:
         yield
     finally:

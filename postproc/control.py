@@ -21,14 +21,15 @@ expression: ``<Goto><Target>E</Target><Cond>E</Cond></Goto>``, ``<While label="1
 
 from __future__ import annotations
 
-from typing import Any, ClassVar, Iterator
-
-from lxml import etree
+from typing import TYPE_CHECKING, Any, ClassVar, Iterator
 
 from .errors import ConfigError
 from .expr import Expr, Var, expr_from_xml
 from .ir import Section
-from .xmlio import XAttr, XFactory, where
+from .xmlio import XAttr, XFactory, lxml_etree, where
+
+if TYPE_CHECKING:  # annotations only: lxml is imported where XML is read or written (postproc.xmlio)
+    from lxml import etree
 
 CONTROL = "Control"
 """Section key of a block's control statement (one per block)."""
@@ -71,6 +72,7 @@ def _check_children(el: etree._Element, allowed: frozenset[str]) -> None:
 
 def _put(el: etree._Element, tag: str, expr: Expr | None, base_dir: str, rel_file: str,
          exhibition_only: bool) -> None:
+    etree = lxml_etree()
     if expr is not None:
         etree.SubElement(el, tag).append(expr.make_xml_source(base_dir, rel_file, exhibition_only))
 
@@ -136,6 +138,7 @@ class Assign(Section):
         return cls(items)
 
     def make_xml_source(self, base_dir: str = ".", rel_file: str = "", exhibition_only: bool = False) -> etree._Element:
+        etree = lxml_etree()
         el = etree.Element(self.XNAME)
         for var, value in self.items:
             item = etree.SubElement(el, "Set")
@@ -476,6 +479,7 @@ class _CallLike(ControlSection):
                 "repeat": _role(el, "Repeat", required=False)}
 
     def _write(self, el: etree._Element, base_dir: str, rel_file: str, exhibition_only: bool) -> etree._Element:
+        etree = lxml_etree()
         if isinstance(self.name, str):
             el.set("name", self.name)
         else:
@@ -508,6 +512,7 @@ class Call(_CallLike):
         return cls(kind=el.get("kind", "sub"), **cls._common(el))
 
     def make_xml_source(self, base_dir: str = ".", rel_file: str = "", exhibition_only: bool = False) -> etree._Element:
+        etree = lxml_etree()
         el = etree.Element(self.XNAME, kind=self.kind)
         return self._write(el, base_dir, rel_file, exhibition_only)
 
@@ -535,6 +540,7 @@ class ModalCall(_CallLike):
         return cls(**cls._common(el))
 
     def make_xml_source(self, base_dir: str = ".", rel_file: str = "", exhibition_only: bool = False) -> etree._Element:
+        etree = lxml_etree()
         return self._write(etree.Element(self.XNAME), base_dir, rel_file, exhibition_only)
 
     def _key(self) -> tuple[Any, ...]:

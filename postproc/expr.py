@@ -13,12 +13,13 @@ Children are read by this module (only expression elements are allowed inside an
 from __future__ import annotations
 
 import enum
-from typing import Any, Protocol, Union
-
-from lxml import etree
+from typing import TYPE_CHECKING, Any, Protocol, Union
 
 from .errors import ConfigError, ProgramError
-from .xmlio import register_computed_value_reader, XFactory, XmlNode, where
+from .xmlio import register_computed_value_reader, XFactory, XmlNode, where, lxml_etree
+
+if TYPE_CHECKING:  # annotations only: lxml is imported where XML is read or written (postproc.xmlio)
+    from lxml import etree
 
 Value = Union[float, None]
 """What an expression evaluates to: a number, or None for Fanuc's vacant value."""
@@ -56,6 +57,7 @@ class Num(Expr):
         return cls(float(_attr(el, "value")))
 
     def make_xml_source(self, base_dir: str = ".", rel_file: str = "", exhibition_only: bool = False) -> etree._Element:
+        etree = lxml_etree()
         return etree.Element(self.XNAME, value=repr(self.value))
 
     def _key(self) -> tuple[Any, ...]:
@@ -93,6 +95,7 @@ class Var(Expr):
         return cls(kids[0])
 
     def make_xml_source(self, base_dir: str = ".", rel_file: str = "", exhibition_only: bool = False) -> etree._Element:
+        etree = lxml_etree()
         el = etree.Element(self.XNAME)
         if self.name is not None:
             el.set("name", self.name)
@@ -129,6 +132,7 @@ class Unary(Expr):
         return cls(_attr(el, "op"), kids[0])
 
     def make_xml_source(self, base_dir: str = ".", rel_file: str = "", exhibition_only: bool = False) -> etree._Element:
+        etree = lxml_etree()
         el = etree.Element(self.XNAME, op=self.op)
         el.append(self.operand.make_xml_source(base_dir, rel_file, exhibition_only))
         return el
@@ -164,6 +168,7 @@ class Binary(Expr):
         return cls(_attr(el, "op"), kids[0], kids[1])
 
     def make_xml_source(self, base_dir: str = ".", rel_file: str = "", exhibition_only: bool = False) -> etree._Element:
+        etree = lxml_etree()
         el = etree.Element(self.XNAME, op=self.op)
         el.append(self.left.make_xml_source(base_dir, rel_file, exhibition_only))
         el.append(self.right.make_xml_source(base_dir, rel_file, exhibition_only))
@@ -198,6 +203,7 @@ class Func(Expr):
         return cls(_attr(el, "name"), _children(el))
 
     def make_xml_source(self, base_dir: str = ".", rel_file: str = "", exhibition_only: bool = False) -> etree._Element:
+        etree = lxml_etree()
         el = etree.Element(self.XNAME, name=self.name)
         for arg in self.args:
             el.append(arg.make_xml_source(base_dir, rel_file, exhibition_only))

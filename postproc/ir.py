@@ -13,13 +13,14 @@ from __future__ import annotations
 
 from mypy_extensions import mypyc_attr
 
-from typing import Any, Callable, ClassVar, Iterator, Final
-
-from lxml import etree
+from typing import TYPE_CHECKING, Any, Callable, ClassVar, Iterator, Final
 
 from .expr import Expr, expr_from_xml
-from .xmlio import (DEFAULT, XAttr, XFactory, XmlNode, computed_value, decode, encode, restore_slots,
-                    slot_state, where)
+from .xmlio import (DEFAULT, XAttr, XFactory, XmlNode, computed_value, decode, encode, lxml_etree,
+                    restore_slots, slot_state, where)
+
+if TYPE_CHECKING:  # annotations only: lxml is imported where XML is read or written (postproc.xmlio)
+    from lxml import etree
 
 AXES = ("X", "Y", "Z", "A", "B", "C", "U", "V", "W")
 """Axis letters a neutral motion may carry, in output order."""
@@ -418,6 +419,7 @@ class Comments(Section):
         return cls([c.text or "" for c in el if c.tag == "Text"])
 
     def make_xml_source(self, base_dir: str = ".", rel_file: str = "", exhibition_only: bool = False) -> etree._Element:
+        etree = lxml_etree()
         el = etree.Element(self.XNAME)
         for t in self.texts:
             etree.SubElement(el, "Text").text = t
@@ -440,6 +442,7 @@ def _axes_from_xml(el: etree._Element) -> dict[str, Any]:
 
 def _axes_to_xml(parent: etree._Element, tag: str, axes: dict[str, Any]) -> None:
     """Numbers as attributes (``X="1.0"``), computed values as ``<Value of="X">expr</Value>``."""
+    etree = lxml_etree()
     child = etree.SubElement(parent, tag)
     for k, v in axes.items():
         if isinstance(v, Expr):
@@ -485,6 +488,7 @@ class Motion(Section):
         return cls(el.get("mode"), axes, center, radius)
 
     def make_xml_source(self, base_dir: str = ".", rel_file: str = "", exhibition_only: bool = False) -> etree._Element:
+        etree = lxml_etree()
         el = etree.Element(self.XNAME)
         if self.mode is not None:
             el.set("mode", self.mode)
@@ -594,6 +598,7 @@ class DataSetting(Section):
                    el.get("incremental") == "true", el.get("text", ""))
 
     def make_xml_source(self, base_dir: str = ".", rel_file: str = "", exhibition_only: bool = False) -> etree._Element:
+        etree = lxml_etree()
         el = etree.Element(self.XNAME, family=self.family, table=self.table, index=str(self.index))
         if self.incremental:
             el.set("incremental", "true")
@@ -702,6 +707,7 @@ class Block:
         return block
 
     def make_xml_source(self, base_dir: str = ".", rel_file: str = "", exhibition_only: bool = False) -> etree._Element:
+        etree = lxml_etree()
         el = etree.Element(self.XNAME, line=str(self.line))
         if self.text is not None:
             el.set("text", self.text)
@@ -807,6 +813,7 @@ class CompoundMotion(Section):
         return cls(el.get("term", ""), items)
 
     def make_xml_source(self, base_dir: str = ".", rel_file: str = "", exhibition_only: bool = False) -> etree._Element:
+        etree = lxml_etree()
         el = etree.Element(self.XNAME, term=self.term)
         for item in self.items:
             el.append(item.make_xml_source(base_dir, rel_file, exhibition_only))

@@ -8,12 +8,13 @@ programs diameters (``Context.diameter``), every depth and relief is a radius.
 
 from __future__ import annotations
 
-from typing import Any, ClassVar
-
-from lxml import etree
+from typing import TYPE_CHECKING, Any, ClassVar
 
 from .ir import Section
-from .xmlio import XAttr, XFactory, decode, encode
+from .xmlio import XAttr, XFactory, decode, encode, lxml_etree
+
+if TYPE_CHECKING:  # annotations only: lxml is imported where XML is read or written (postproc.xmlio)
+    from lxml import etree
 
 
 class SpindleMode(Section):
@@ -55,6 +56,7 @@ class CoordinateSet(Section):
         return cls({k: float(v) for k, v in el.attrib.items()})
 
     def make_xml_source(self, base_dir: str = ".", rel_file: str = "", exhibition_only: bool = False) -> etree._Element:
+        etree = lxml_etree()
         el = etree.Element(self.XNAME)
         for k, v in self.axes.items():
             el.set(k, repr(float(v)))
@@ -110,6 +112,7 @@ class LatheCycle(Section):
         return cls(XAttr("kind").parse(el), XAttr("form").parse(el), params)
 
     def make_xml_source(self, base_dir: str = ".", rel_file: str = "", exhibition_only: bool = False) -> etree._Element:
+        etree = lxml_etree()
         el = etree.Element(self.XNAME, kind=self.kind, form=self.form)
         if self.params:
             child = etree.SubElement(el, "Params")

@@ -14,10 +14,8 @@ device and inode, so a symlink, a hard link or another spelling of the path is t
 from __future__ import annotations
 
 import os
-import shutil
 import stat
 import sys
-import tempfile
 from typing import BinaryIO, Callable, TextIO
 
 from .errors import UsageError
@@ -32,6 +30,7 @@ def write_output(path: str | None, write: Callable[[TextIO], object], *, binary:
     """Run ``write`` on a temporary file and put the result where ``path`` says (stdout if None).
     ``in_place``: True allows ``path`` to be the input, False refuses it and names ``--in-place``,
     None refuses it (the command has no such option)."""
+    import tempfile  # with shutil, random, lzma, bz2: ~3 ms a command that writes nothing need not pay
     target, regular = (None, True) if path is None else _target(path, input_path, in_place)
     folder = os.path.dirname(target) if target is not None and regular else None
     try:
@@ -107,6 +106,7 @@ def _into_device(tmp: str, target: str, path: str) -> None:
 
 
 def _copy(tmp: str, out: BinaryIO) -> None:
+    import shutil
     with open(tmp, "rb") as src:
         shutil.copyfileobj(src, out, BUFFER)
     out.flush()

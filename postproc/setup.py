@@ -13,12 +13,10 @@ from __future__ import annotations
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from lxml import etree
-
 from .errors import ConfigError
 from .setup_record import SetupGroup, setting, values
 from .setup_record import aliases as field_aliases
-from .xmlio import XFactory, XmlNode, where
+from .xmlio import XFactory, XmlNode, lxml_etree, where
 from .setup_groups import (  # the records, named here as ever
     InputSettings as InputSettings,
     OutputSettings as OutputSettings,
@@ -36,7 +34,8 @@ from .setup_groups import (  # the records, named here as ever
     builtin_groups as builtin_groups,
 )
 
-if TYPE_CHECKING:  # the machine's geometry is imported where a set-up file has some (postproc.setup_load)
+if TYPE_CHECKING:  # lxml is imported where XML is written; the machine's geometry where a set-up file has
+    from lxml import etree  # some (postproc.setup_load)
     from .setup_machine import AxisTravel, ToolData, WorkOffsetData
 
 __all__ = ["SetupGroup", "setting", "values"]  # the plugin API: a plugin's group is a SetupGroup
@@ -142,6 +141,7 @@ class MachineSetup(XmlNode):
                         flatten: bool = False) -> etree._Element:
         """The canonical element. A set-up that extends a base writes ``extends`` and only what its own
         file set; ``flatten`` writes the whole resolved set-up instead, without ``extends``."""
+        etree = lxml_etree()
         own = None if flatten or self.extends is None else self.own
         el = etree.Element(self.XNAME, name=self.name)
         if own is not None:

@@ -6,13 +6,14 @@ it imports neither)."""
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any, ClassVar, Literal
-
-from lxml import etree
+from typing import TYPE_CHECKING, Any, ClassVar, Literal
 
 from .errors import ConfigError
 from .setup_record import MAX_COORDINATE, SetupGroup, camel, pydantic_config, setting, values
 from .xmlio import where
+
+if TYPE_CHECKING:  # annotations only: lxml is imported where XML is read or written (postproc.xmlio)
+    from lxml import etree
 
 
 class InputSettings(SetupGroup):

@@ -12,15 +12,16 @@ from mypy_extensions import mypyc_attr
 
 import abc
 from pathlib import Path
-from typing import Iterable, Iterator
-
-from lxml import etree
+from typing import TYPE_CHECKING, Iterable, Iterator
 
 from .errors import ConfigError, Location, PostprocError
 from .ir import Block
 from .context import Context
 from .source_map import locate
-from .xmlio import DEFAULT, XFactory, XmlNode, parse_xml_file, where
+from .xmlio import DEFAULT, XFactory, XmlNode, lxml_etree, parse_xml_file, where
+
+if TYPE_CHECKING:  # annotations only: lxml is imported where XML is read or written (postproc.xmlio)
+    from lxml import etree
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
@@ -76,6 +77,7 @@ class Pipeline(XmlNode):
         return cls(el.get("dialect", ""), steps)
 
     def make_xml_source(self, base_dir: str = ".", rel_file: str = "", exhibition_only: bool = False) -> etree._Element:
+        etree = lxml_etree()
         el = etree.Element(self.XNAME, dialect=self.dialect)
         for step in self.steps:
             el.append(step.make_xml_source(base_dir, rel_file, exhibition_only))

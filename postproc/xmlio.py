@@ -12,17 +12,40 @@ from mypy_extensions import mypyc_attr
 
 import re
 from pathlib import Path
-from typing import Any, Callable, ClassVar, Iterator, TypeVar
-
-from lxml import etree
+from typing import TYPE_CHECKING, Any, Callable, ClassVar, Iterator, TypeVar
 
 from .errors import ConfigError, Location
 
-_PARSER = etree.XMLParser(
-    resolve_entities=False, no_network=True, load_dtd=False, dtd_validation=False,
-    huge_tree=False, remove_comments=False, remove_blank_text=True,
-)
-"""No entity resolution, no network, no DTD, no huge trees: hostile XML cannot reach out or blow up."""
+if TYPE_CHECKING:  # annotations only: lxml is imported on first use (lxml_etree)
+    from lxml import etree
+
+_etree: Any = None
+_parser: etree.XMLParser | None = None
+
+
+def lxml_etree() -> Any:
+    """The ``lxml.etree`` module, imported on first use: it costs a start-up ~5 ms, and a command that
+    reads and writes no XML (``postproc dialects``) never needs it. What reads or writes XML starts
+    with ``etree = lxml_etree()``: a function-local ``from lxml import etree`` costs every call an
+    import (0.2 µs as Python, more compiled), paid by each block and section an IR dump writes."""
+    global _etree
+    if _etree is None:
+        from lxml import etree
+        _etree = etree
+    return _etree
+
+
+def parser() -> etree.XMLParser:
+    """The one lxml parser, built on first use: no entity resolution, no network, no DTD, no huge
+    trees, so hostile XML cannot reach out or blow up."""
+    global _parser
+    if _parser is None:
+        _parser = lxml_etree().XMLParser(
+            resolve_entities=False, no_network=True, load_dtd=False, dtd_validation=False,
+            huge_tree=False, remove_comments=False, remove_blank_text=True,
+        )
+    return _parser
+
 
 MAX_XML_BYTES = 64 * 1024 * 1024
 MAX_ELEMENTS = 10_000
@@ -42,11 +65,12 @@ def parse_xml_bytes(data: bytes, file: str, max_elements: int | None = None,
 
     Bounded: ``MAX_XML_BYTES``, ``max_elements`` (default ``MAX_ELEMENTS``), ``MAX_ATTRIBUTES`` per
     element and ``MAX_VALUE_CHARS`` per value, so what reads the tree next does bounded work."""
+    etree = lxml_etree()
     max_bytes = MAX_XML_BYTES if max_bytes is None else max_bytes
     if len(data) > max_bytes:
         raise ConfigError(f"XML file is larger than {max_bytes} bytes", Location(file, 1, 1))
     try:
-        tree = etree.ElementTree(etree.fromstring(data, _PARSER, base_url=file))
+        tree = etree.ElementTree(etree.fromstring(data, parser(), base_url=file))
     except etree.XMLSyntaxError as exc:
         line, col = exc.position if exc.position else (1, 1)
         msg = _LIBXML_POSITION.sub("", exc.msg or "")  # the location already says where
@@ -104,6 +128,7 @@ def parse_xml_file(path: str | Path, max_elements: int | None = None,
 
 def to_bytes(el: etree._Element) -> bytes:
     """The canonical text of a postproc XML file: UTF-8, declaration, two-space indent."""
+    etree = lxml_etree()
     etree.indent(el, space="  ")
     return bytes(etree.tostring(el, pretty_print=True, xml_declaration=True, encoding="UTF-8"))
 
@@ -187,6 +212,7 @@ class XAttr:
 
     def emit(self, el: etree._Element, value: Any) -> None:
         if isinstance(value, XmlNode):  # a computed value (an expression kept symbolically)
+            etree = lxml_etree()
             etree.SubElement(el, "Value", of=self.xml).append(value.make_xml_source())
             return
         if value is None or (self.default is not ... and value == self.default):
@@ -315,6 +341,7 @@ class XmlNode:
     def make_xml_source(self, base_dir: str = ".", rel_file: str = "", exhibition_only: bool = False) -> etree._Element:
         """Serialise to an element. ``base_dir``/``rel_file`` let nodes that own files store them
         relative to the configuration folder; ``exhibition_only`` suppresses writing such files."""
+        etree = lxml_etree()
         el = etree.Element(self.XNAME)
         for attr in self.xattrs():
             attr.emit(el, self._xvalue(attr.name))

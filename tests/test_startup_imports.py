@@ -1,7 +1,11 @@
 """Start-up: a run imports only what it uses (issue 13). Counted in a fresh interpreter from the modules in
 ``sys.modules`` when the command ends, never timed: what a one-line translation or ``postproc dialects``
 must not load is pydantic (set-up validation), jinja2 (templates), the batch and cluster machinery, the
-toolpath, verify and backplot code; with a set-up file (``--machine``) pydantic is loaded, by design."""
+toolpath, verify and backplot code; with a set-up file (``--machine``) pydantic is loaded, by design.
+Nor the standard modules a plain run has no use for: decimal (an exponent's spelling), threading; and a
+command that reads and writes no XML and no file (``postproc dialects``) loads neither lxml
+(``postproc.xmlio.lxml_etree``) nor tempfile (``postproc.outfile``). A translation reads its dialect's
+pipeline file with lxml and writes through a temporary file, so it loads both."""
 
 from __future__ import annotations
 
@@ -25,6 +29,9 @@ NEVER_BY_DEFAULT = ("pydantic", "pydantic_core", "annotated_types", "jinja2", "d
                     "postproc.setup_validate", "postproc.setup_load", "postproc.templates", "postproc.batch.command",
                     "postproc.batch.local", "postproc.batch.cluster", "postproc.toolpath", "postproc.verify",
                     "postproc.backplot", "postproc.canvas", "postproc.export")
+NOT_AT_START = ("decimal", "threading")
+"""Standard modules imported where they are used (a top-level import of one of them fails here)."""
+ONLY_FOR_XML_OR_FILES = ("lxml", "tempfile")
 
 
 def modules_after(tmp_path: Path, *args: str) -> set[str]:
@@ -76,6 +83,34 @@ def test_listing_the_dialects_loads_nothing_it_does_not_use(tmp_path: Path) -> N
     modules = modules_after(tmp_path, "dialects")
     assert "postproc.plugins" in modules
     assert [name for name in NEVER_BY_DEFAULT if loaded(modules, name)] == []
+
+
+def warm_modules_after(tmp_path: Path, *args: str) -> set[str]:
+    """``modules_after`` of a run that finds the entry-point cache an earlier run wrote (discovering the
+    entry points imports importlib.metadata, and with it zipfile, threading, tempfile). A run writes the
+    cache once the installation has settled (``postproc.entry_points.SETTLE`` seconds after its last
+    change: not yet just after ``make install``), so the first run is repeated until it has."""
+    for _ in range(10):
+        modules_after(tmp_path, *args)
+        if any((tmp_path / ".cache" / "postproc").glob("entry-points-*")):
+            break
+        time.sleep(1)
+    return modules_after(tmp_path, *args)
+
+
+def test_a_plain_translation_loads_no_standard_module_it_does_not_use(tmp_path: Path, one_line: Path) -> None:
+    modules = warm_modules_after(tmp_path, "translate", str(one_line), "--from", "fanuc", "--to", "fanuc",
+                                 "--normalize")
+    assert "postproc.api" in modules and "dialects.fanuc.writer" in modules  # the probe saw the run
+    assert [name for name in NOT_AT_START if loaded(modules, name)] == []
+
+
+def test_listing_the_dialects_loads_no_xml_parser_and_no_temporary_file(tmp_path: Path) -> None:
+    """Every module that reads or writes XML imports lxml on first use; outfile imports tempfile when it
+    writes. (Every dialect's and plugin's module is imported here, so a top-level import anywhere fails.)"""
+    modules = warm_modules_after(tmp_path, "dialects")
+    assert "postproc.xmlio" in modules and "postproc.outfile" in modules  # the probe saw them imported
+    assert [name for name in NOT_AT_START + ONLY_FOR_XML_OR_FILES if loaded(modules, name)] == []
 
 
 def test_a_set_up_file_is_validated_with_pydantic(tmp_path: Path, one_line: Path) -> None:

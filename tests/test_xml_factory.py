@@ -226,7 +226,7 @@ def test_doctype_is_refused_at_its_line(data):
 
 def test_entities_are_never_expanded():
     """Even below the DOCTYPE check, the parser itself resolves nothing."""
-    root = etree.fromstring(EXTERNAL_ENTITY, xmlio._PARSER)
+    root = etree.fromstring(EXTERNAL_ENTITY, xmlio.parser())
     assert "root:" not in etree.tostring(root).decode()
 
 

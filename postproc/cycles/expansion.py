@@ -11,9 +11,7 @@ from __future__ import annotations
 from mypy_extensions import mypyc_attr
 
 import abc
-from typing import ClassVar, Iterator
-
-from lxml import etree
+from typing import TYPE_CHECKING, ClassVar, Iterator
 
 from postproc.errors import ProgramError
 from postproc.expr import Expr
@@ -25,6 +23,9 @@ from postproc.syntax import Syntax
 
 from .section import CannedCycle
 from .semantics import FANUC, SEMANTICS
+
+if TYPE_CHECKING:  # annotations only: lxml is imported where XML is read or written (postproc.xmlio)
+    from lxml import etree
 
 EPS = 1e-9
 """Two levels closer than this are the same level (float noise of repeated increments)."""

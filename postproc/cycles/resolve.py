@@ -16,9 +16,8 @@ reading dialect (``ctx.cycle_words``, a ``CycleWords``), so another dialect's le
 from __future__ import annotations
 
 import re
-from typing import Any, Final
+from typing import TYPE_CHECKING, Any, Final
 
-from lxml import etree
 from mypy_extensions import mypyc_attr
 
 from postproc.cycle_words import CycleWords
@@ -30,7 +29,7 @@ from postproc.source_map import ExecutedBlock
 from postproc.state import MM_PER_INCH, PLANE_AXES, CycleState, ModalState
 from postproc.context import Context
 from postproc.syntax import Syntax
-from postproc.xmlio import DEFAULT
+from postproc.xmlio import DEFAULT, lxml_etree
 
 from .back_boring import BackBoringSyntax
 from .boring import BoringSyntax
@@ -42,6 +41,9 @@ from .peck_drilling import PeckDrillingSyntax
 from .section import WORD_ORDER, CannedCycle
 from .semantics import DWELLING, PECK, SEMANTICS, SHIFT, TAP, Semantics
 from .tapping import TappingSyntax
+
+if TYPE_CHECKING:  # annotations only: lxml is imported where XML is read or written (postproc.xmlio)
+    from lxml import etree
 
 EXPANSIONS: Final[tuple[type[CycleExpansion], ...]] = (
     DrillingSyntax, PeckDrillingSyntax, TappingSyntax, BoringSyntax, FineBoringSyntax, BackBoringSyntax,
@@ -103,6 +105,7 @@ class CannedCycleResolveSyntax(Syntax):
         return cls(el.get("semantics", "fanuc"), expansions)
 
     def make_xml_source(self, base_dir: str = ".", rel_file: str = "", exhibition_only: bool = False) -> etree._Element:
+        etree = lxml_etree()
         el = etree.Element(self.XNAME)
         if self.semantics != "fanuc":
             el.set("semantics", self.semantics)

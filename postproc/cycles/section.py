@@ -7,13 +7,15 @@ All lengths are in program units; levels are values on the drilling axis of ``pl
 
 from __future__ import annotations
 
-from typing import Any, ClassVar, Final
+from typing import TYPE_CHECKING, Any, ClassVar, Final
 
-from lxml import etree
 from mypy_extensions import mypyc_attr
 
 from postproc.ir import Section
-from postproc.xmlio import XAttr, decode, encode
+from postproc.xmlio import XAttr, decode, encode, lxml_etree
+
+if TYPE_CHECKING:  # annotations only: lxml is imported where XML is read or written (postproc.xmlio)
+    from lxml import etree
 
 WORD_ORDER = "XYZABCUVWRQPIJKL"
 """Order in which the programmed cycle words are kept and written."""
@@ -110,6 +112,7 @@ class CannedCycle(Section):
         return cls(**kwargs)
 
     def make_xml_source(self, base_dir: str = ".", rel_file: str = "", exhibition_only: bool = False) -> etree._Element:
+        etree = lxml_etree()
         el = etree.Element(self.XNAME)
         for attr in self.XATTRS:
             attr.emit(el, getattr(self, attr.name))

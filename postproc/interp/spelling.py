@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-from decimal import Decimal
-
 from ..errors import ProgramError
 
 
@@ -12,6 +10,7 @@ def spell_number(value: float) -> str:
     exponent: 10.0 -> '10.', 0.1 -> '0.1', 1e-07 -> '0.0000001', -0.0 -> '-0.'."""
     text = repr(value)
     if "e" in text or "E" in text:
+        from decimal import Decimal  # imported by the rare exponent, not by every start
         text = format(Decimal(text), "f")
     if "." not in text:
         return text + "."

@@ -25,8 +25,6 @@ refused as ambiguous, and written ``[-2] ** 2``.
 
 from __future__ import annotations
 
-from decimal import Decimal
-
 from postproc.errors import UnsupportedError
 from postproc.expr import Binary, Expr, Func, Num, Unary, Var
 from postproc.rs274.expressions import MAX_DEPTH, ExprSyntaxError
@@ -259,6 +257,7 @@ def spell_number(value: float) -> str:
     """A number as ISG reads it: shortest decimal, no exponent (a point is optional in ISG)."""
     if value != value or value in (float("inf"), float("-inf")):
         raise UnsupportedError(f"{value!r} cannot be written as a number")
+    from decimal import Decimal  # imported when an expression is written, not by every start
     text = format(Decimal(repr(value)), "f")
     if "." in text:
         text = text.rstrip("0").rstrip(".")

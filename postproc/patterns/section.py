@@ -13,14 +13,15 @@ with the cycle's own block); the pattern block machines the others, except those
 
 from __future__ import annotations
 
-from typing import Any
-
-from lxml import etree
+from typing import TYPE_CHECKING, Any
 
 from postproc.cycles.section import CannedCycle
 from postproc.ir import Section
 from postproc.state import PLANE_AXES
-from postproc.xmlio import XAttr
+from postproc.xmlio import XAttr, lxml_etree
+
+if TYPE_CHECKING:  # annotations only: lxml is imported where XML is read or written (postproc.xmlio)
+    from lxml import etree
 
 KINDS = ("line", "parallelogram", "grid", "circle", "arc")
 """The pattern kinds, each documented at ``HolePattern``."""
@@ -119,6 +120,7 @@ class HolePattern(Section):
         return cls(**kwargs)
 
     def make_xml_source(self, base_dir: str = ".", rel_file: str = "", exhibition_only: bool = False) -> etree._Element:
+        etree = lxml_etree()
         el = etree.Element(self.XNAME)
         for attr in self.XATTRS:
             attr.emit(el, getattr(self, attr.name))

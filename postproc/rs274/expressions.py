@@ -15,7 +15,6 @@ Spelling choices (both dialects): an operator written as a word has a space on e
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from decimal import Decimal
 
 from ..errors import Location, ParseError, UnsupportedError
 from ..expr import Binary, Expr, Func, Num, Unary, Var
@@ -390,6 +389,7 @@ def spell_number(value: float) -> str:
     """Shortest decimal spelling with an explicit point and no exponent: ``2.``, ``-0.5``, ``0.1``."""
     if value != value or value in (float("inf"), float("-inf")):
         raise UnsupportedError(f"{value!r} cannot be written as a number")
+    from decimal import Decimal  # imported when an expression is written, not by every start
     text = format(Decimal(repr(value)), "f")
     if "." not in text:
         return text + "."
