@@ -74,13 +74,13 @@ def test_fanuc_to_fanuc_with_expand_all_writes_the_motion_and_names_the_source()
         "G99 F200.\n"
         "(drill from line 4: G99 G81 X10. Y10. Z-5. R2. F200.)\n"
         "G00 X10. Y10. Z50.\n"
-        "G00 X10. Y10. Z2.\n"
-        "G01 X10. Y10. Z-5.\n"
-        "G00 X10. Y10. Z2.\n"
+        "G00 Z2.\n"
+        "G01 Z-5.\n"
+        "G00 Z2.\n"
         "(drill from line 5: X20.)\n"
-        "G00 X20. Y10. Z2.\n"
-        "G01 X20. Y10. Z-5.\n"
-        "G00 X20. Y10. Z2.\n"
+        "G00 X20. Y10. Z2.\n"  # a hole's first move names every axis, the next ones what they change
+        "G01 Z-5.\n"
+        "G00 Z2.\n"
         "G80\nM30\n")
 
 
@@ -103,13 +103,13 @@ def test_a_cycle_the_target_lacks_is_expanded() -> None:
     out, _ = write(HEAD + "G98 G85 X10. Y10. Z-5. R2. F200.\nG80\n", Other)
     assert out.splitlines()[3:] == [
         "G98 F200.", "(bore_feed from line 4: G98 G85 X10. Y10. Z-5. R2. F200.)", "G00 X10. Y10. Z50.",
-        "G00 X10. Y10. Z2.", "G01 X10. Y10. Z-5.", "G01 X10. Y10. Z2.", "G00 X10. Y10. Z50.", "G80"]
+        "G00 Z2.", "G01 Z-5.", "G01 Z2.", "G00 Z50.", "G80"]  # after the first, a move names what it changes
 
 
 def test_expansion_restores_the_motion_mode_of_the_program() -> None:
     """After G80 a bare X30. is a rapid again; the expansion ended with a feed, so it says G00."""
     out, _ = write(HEAD + "G99 G85 X10. Y10. Z-5. R2. F200.\nG80\nX30.\n", Fanuc, expand="all")
-    assert out.splitlines()[-5:] == ["G01 X10. Y10. Z-5.", "G01 X10. Y10. Z2.", "G00", "G80", "X30."]
+    assert out.splitlines()[-5:] == ["G01 Z-5.", "G01 Z2.", "G00", "G80", "X30."]
 
 
 def test_once_expanded_the_rest_of_the_cycle_is_expanded() -> None:

@@ -126,7 +126,7 @@ VALIDATE_ALL = [
      {"linuxcnc": "error: G88 (circular pocket) from fagor has no equivalent in linuxcnc"}),
     (("fanuc", "M03 S1000\nG98 G88 X5. Y5. Z-5. R2. P100 F100.\n"),
      {"fagor": "S1000 M03\nG98 F100.\n;bore_manual from line 4: G98 G88 X5. Y5. Z-5. R2. P100 F100.\n"
-               "G00 X5. Y5. Z20.\nG00 X5. Y5. Z2.\nG01 X5. Y5. Z-5.\nG04 K0.1\nM05\nM00\nG00 X5. Y5. Z20.\nM03\n"}),
+               "G00 X5. Y5. Z20.\nG00 Z2.\nG01 Z-5.\nG04 K0.1\nM05\nM00\nG00 X5. Y5. Z20.\nM03\n"}),
     # the uncertain: kept verbatim for Fagor, refused with its name elsewhere
     (("fagor", "$IF P1 == 2\n$ENDIF\n"), {"fanuc": "error: $IF (control flow [?]: If) from fagor has no equivalent"}),
     (("fagor", "LL SUB1\n"), {"fanuc": "error: LL SUB1 (subroutine call [?]) from fagor has no equivalent"}),

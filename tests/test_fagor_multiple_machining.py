@@ -239,14 +239,14 @@ def test_arcs_between_points_are_written_as_motion_and_so_is_the_rest_of_the_cyc
     assert tail.splitlines() == [
         "(drill_dwell from line 9: G163 X-20 K4 C3 F500 P3)",
         "F500.", "G03 X0. Y20. Z50. I-20. J0.", "F100.",
-        "G00 X0. Y20. Z2.", "G01 X0. Y20. Z-5.", "G00 X0. Y20. Z50.",
+        "G00 X0. Y20. Z2.", "G01 Z-5.", "G00 Z50.",  # a move names only the axes it changes
         "(drill_dwell from line 9: G163 X-20 K4 C3 F500 P3)",
         # the arc to point 4 passes over the skipped point 3
         "F500.", "G03 X0. Y-20. Z50. I0. J-20.", "F100.",
-        "G00 X0. Y-20. Z2.", "G01 X0. Y-20. Z-5.", "G00 X0. Y-20. Z50.",
+        "G00 X0. Y-20. Z2.", "G01 Z-5.", "G00 Z50.",
         # the G03 cancelled the cycle on the target: a later hole of the same cycle is motion too
         "(drill_dwell from line 10: X50 Y50)",
-        "G00 X50. Y50. Z50.", "G00 X50. Y50. Z2.", "G01 X50. Y50. Z-5.", "G00 X50. Y50. Z50.",
+        "G00 X50. Y50. Z50.", "G00 Z2.", "G01 Z-5.", "G00 Z50.",
     ], out
 
 
@@ -261,7 +261,7 @@ def test_arcs_between_points_reach_linuxcnc_and_grbl_as_arcs(target):
 def test_grbl_gets_the_motion_of_every_point():
     out = translated("G163 X-20 K2", "grbl")
     assert out.splitlines()[-5:] == ["(drill_dwell from line 9: G163 X-20 K2)", "G0 X-20. Y0. Z50.",
-                                     "G0 X-20. Y0. Z2.", "G1 X-20. Y0. Z-5.", "G0 X-20. Y0. Z50."], out
+                                     "G0 Z2.", "G1 Z-5.", "G0 Z50."], out
 
 
 @pytest.mark.parametrize("text", ["G163 X-20 Y0 K6 P3 Q5", "G163 X-20 I-60 C2 F500", "G164 X-20 B90 I45 C1 F200",
@@ -305,8 +305,8 @@ def test_a_cycle_the_set_up_expands_takes_its_pattern_with_it():
               source="fagor", target="fagor", setup=setup)
     lines = out.getvalue().splitlines()
     assert not any("G163" in line and not line.startswith(";") for line in lines), lines
-    assert lines[-7:] == [";drill_dwell from line 9: G163 X-20 K2", "G00 X-20. Y0. Z50.", "G00 X-20. Y0. Z2.",
-                          "G01 X-20. Y0. Z-5.", "G00 X-20. Y0. Z50.", "G80", "M30"]
+    assert lines[-7:] == [";drill_dwell from line 9: G163 X-20 K2", "G00 X-20. Y0. Z50.", "G00 Z2.",
+                          "G01 Z-5.", "G00 Z50.", "G80", "M30"]
 
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples" / "fagor"

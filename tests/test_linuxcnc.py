@@ -356,7 +356,8 @@ def test_fanuc_cycles_are_expanded_exactly_for_linuxcnc() -> None:
                     "linuxcnc", source="fanuc")
     code = [line for line in text.splitlines() if not line.startswith("(")]
     assert not any("G81" in line for line in code), text
-    assert "G0 X20. Y10. Z50." in text  # the G98 hole returns to the initial level 50
+    # the G98 hole returns to the initial level 50
+    assert code[code.index("G0 X20. Y10. Z2."):][:3] == ["G0 X20. Y10. Z2.", "G1 Z-5.", "G0 Z50."], text
 
 
 def test_linuxcnc_native_cycles_stay_native_when_generated() -> None:

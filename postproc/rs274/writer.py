@@ -21,7 +21,7 @@ from ..event_order import after_motion
 from ..expr import Expr
 from .codes import CodeTable
 from .expressions import ExprSpelling, spell_word_value
-from ..ir import Block, CompoundMotion, Feed, Motion, Section, Sequence, one_line
+from ..ir import Block, CompoundMotion, Dwell, Feed, Motion, Section, Sequence, one_line
 from ..numbers import (
     DecimalTexts, EXACT, EXACT_INCH, MAX_PLACES, SHORT_RANGE, as_written, canonical_number, format_decimal, shortcut_places,
 )
@@ -597,11 +597,22 @@ class WordWriter(Writer):
         lines.append(note)
         was_incremental = self.modal.distance == "incremental"
         base_moves = self.base_item_moves
+        before: dict[str, float | Expr] | None = None
+        """The axes of the straight move written last, while the tool stands there: the next straight move
+        leaves out the axes it does not change (``_left_out``)."""
         for item in compound.items:
-            if base_moves and isinstance(item, Motion):
-                lines.append(WordWriter.item_line(self, item, block))
+            if isinstance(item, Motion):
+                line = _straight_item_line(self, item, before) \
+                    if base_moves and self.modal.distance == "absolute" else None
+                if line is None:
+                    moved = item if before is None else _left_out(item, before)
+                    line = WordWriter.item_line(self, moved, block) if base_moves else self.item_line(moved, block)
+                before = item.axes if _is_straight(item) else None
+                lines.append(line)
             else:
                 lines.append(self.item_line(item, block))
+                if not isinstance(item, _STANDING):
+                    before = None
         if was_incremental:
             lines.append(self.code("distance", "incremental", "incremental distance mode", block) + "\n")
             self.modal.distance = "incremental"
@@ -623,19 +634,16 @@ class WordWriter(Writer):
             if self.modal.distance != "absolute":
                 words.append(self.code("distance", "absolute", "absolute distance mode", block))
                 self.modal.distance = "absolute"
+            else:
+                line = _straight_item_line(self, item, None)
+                if line is not None:
+                    return line
             code = self.straight_codes.get(item.mode) if self.straight_items and item.mode is not None else None
-            if code is not None and item.center is None and item.radius is None:
+            if code is not None and item.center is None and item.radius is None \
+                    and _keys_within(item.axes, self.straight_axes):
                 # a rapid or feed move of an expansion: the class's ``motion_words`` writes it as the base
-                # does (``STRAIGHT_OVERRIDES``), so the base's is called without the override's dispatch,
-                # or its words are spelled here at once when they are numbers of driven axes
-                if not words:
-                    line = _straight_item_line(self, item, code)
-                    if line is not None:
-                        return line
-                if _keys_within(item.axes, self.straight_axes):
-                    words.extend(WordWriter.motion_words(self, item, block))
-                else:
-                    words.extend(self.motion_words(item, block))
+                # does (``STRAIGHT_OVERRIDES``), so the base's is called without the override's dispatch
+                words.extend(WordWriter.motion_words(self, item, block))
             else:
                 words.extend(self.motion_words(item, block))
         else:
@@ -1042,6 +1050,8 @@ class WordWriter(Writer):
 _ROUNDED_UNITS: Final = {"S": "rpm", "A": "deg", "B": "deg", "C": "deg", "F": ""}
 """Units a rounding warning names where they are not the program's length unit ('' for F: the length
 unit per minute or revolution)."""
+_STANDING: Final = (Feed, Dwell)
+"""Items of an expansion the tool stands still for, between two moves (``compound``)."""
 _MOTION_KIND: Final = {"home": "home", "home2": "home"}
 _MOTION_GROUP: Final = frozenset({"rapid", "linear", "cw", "ccw"})
 """Motion modes written with a code of the motion group (G0-G3)."""
@@ -1102,22 +1112,59 @@ def _position(w: WordWriter, axis: str, value: float, incremental: bool) -> str:
     return text
 
 
-def _straight_item_line(w: WordWriter, item: Motion, code: str) -> str | None:
-    """An expansion's rapid or feed move as ``motion_words`` spells it, when every axis is a number of a
-    driven axis (else None, and nothing written that a second spelling would not write the same). The
-    distance mode is absolute here (``item_line`` made it so): each number is the position's
-    (``_position``, which leaves to carry what depends on the value only), which is the text
-    ``source_number`` would copy from a canonical source block (``as_written``)."""
+def _straight_item_line(w: WordWriter, item: Motion, before: dict[str, float | Expr] | None) -> str | None:
+    """An expansion's rapid or feed move as ``motion_words`` spells it, when it is a straight move of the
+    writer's (``straight_codes``) and every axis is a number of a driven axis (else None, and nothing
+    written that a second spelling would not write the same). The distance mode is absolute here (the
+    caller checks): each number is the position's (``_position``, which leaves to carry what depends on
+    the value only), which is the text ``source_number`` would copy from a canonical source block
+    (``as_written``). An axis whose number is the one of ``before`` (the move written just before, the
+    tool still there) is left out: absolute, it would write the same text to the same place. The line
+    is built in one piece (a string per axis and a join cost more than the numbers' look-ups)."""
+    mode = item.mode
+    if not w.straight_items or mode is None or item.center is not None or item.radius is not None:
+        return None
+    code = w.straight_codes.get(mode)  # rapid or linear
     axes = item.axes
-    if not axes:
+    if code is None or not axes:
         return None
     driven = w.straight_axes
-    parts = [code]
+    words: list[str] = []
     for axis, value in axes.items():
         if type(value) is not float or axis not in driven:
             return None
-        parts.append(axis + _position(w, axis, value, False))
-    return " ".join(parts) + "\n"
+        if before is not None:
+            was = before.get(axis)
+            if type(was) is float and was == value:
+                continue
+        words.append(axis)
+        words.append(_position(w, axis, value, False))
+    count = len(words)
+    if count == 2:
+        return f"{code} {words[0]}{words[1]}\n"
+    if count == 6:
+        return f"{code} {words[0]}{words[1]} {words[2]}{words[3]} {words[4]}{words[5]}\n"
+    if count == 4:
+        return f"{code} {words[0]}{words[1]} {words[2]}{words[3]}\n"
+    return code + "".join([" " + words[i] + words[i + 1] for i in range(0, count, 2)]) + "\n"
+
+
+def _is_straight(item: Motion) -> bool:
+    return (item.mode == "rapid" or item.mode == "linear") and item.center is None and item.radius is None
+
+
+def _left_out(item: Motion, before: dict[str, float | Expr]) -> Motion:
+    """A straight move of an expansion without the axes whose number is the one the tool stands at
+    (``before``: the move written just before it); written absolute, those words would not move it.
+    ``_straight_item_line`` leaves out the same axes."""
+    if not _is_straight(item):
+        return item
+    axes: dict[str, float | Expr] = {}
+    for axis, value in item.axes.items():
+        was = before.get(axis)
+        if not (type(value) is float and type(was) is float and was == value):
+            axes[axis] = value
+    return item if len(axes) == len(item.axes) else Motion(item.mode, axes)
 
 
 def _incremental(w: WordWriter, block: Block) -> bool:
