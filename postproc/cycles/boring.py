@@ -22,6 +22,9 @@ class BoringSyntax(CycleExpansion):
     __slots__ = ()
     KINDS = frozenset(("bore_feed", "bore_stop", "bore_dwell_feed"))
 
+    def hole_end(self, path: ToolPath, cycle: CannedCycle, a: float, b: float) -> None:
+        self.over_the_spot(path, cycle, a, b)
+
     def hole(self, path: ToolPath, cycle: CannedCycle, a: float, b: float) -> None:
         rs274 = cycle.semantics == "rs274"
         out = self.return_level(cycle)

@@ -16,6 +16,9 @@ class DrillingSyntax(CycleExpansion):
     __slots__ = ()
     KINDS = frozenset(("drill", "drill_dwell"))
 
+    def hole_end(self, path: ToolPath, cycle: CannedCycle, a: float, b: float) -> None:
+        self.over_the_spot(path, cycle, a, b)
+
     def hole(self, path: ToolPath, cycle: CannedCycle, a: float, b: float) -> None:
         self.position(path, cycle, a, b)
         path.cut(cycle.bottom, cycle.feed)  # type: ignore[arg-type]

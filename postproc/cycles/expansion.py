@@ -244,9 +244,20 @@ class CycleExpansion(Syntax):
         self._enter(path, cycle, limit)
         first, second, _ = PLANE_AXES[cycle.plane]
         last = cycle.repeat - 1
-        self.hole(path, cycle, cycle.position[first] + last * cycle.step.get(first, 0.0),
-                  cycle.position[second] + last * cycle.step.get(second, 0.0))
+        self.hole_end(path, cycle, cycle.position[first] + last * cycle.step.get(first, 0.0),
+                      cycle.position[second] + last * cycle.step.get(second, 0.0))
         return path.end()
+
+    def hole_end(self, path: ToolPath, cycle: CannedCycle, a: float, b: float) -> None:
+        """Where one hole leaves the tool, for ``end`` (``path`` keeps no moves): the hole itself, unless
+        the family knows it in fewer steps (``over_the_spot``) with the same refusals."""
+        self.hole(path, cycle, a, b)
+
+    def over_the_spot(self, path: ToolPath, cycle: CannedCycle, a: float, b: float) -> None:
+        """``hole_end`` of a family whose hole ends over its spot at the return level, whatever it does in
+        the hole: positioning (which refuses an unknown level), then that level."""
+        self.position(path, cycle, a, b)
+        path.rapid(level=self.return_level(cycle))
 
     def _enter(self, path: ToolPath, cycle: CannedCycle, limit: int) -> None:
         """The checks before the first hole, and RS274's rise to R when the tool starts below it."""

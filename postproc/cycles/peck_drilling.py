@@ -36,12 +36,14 @@ class PeckDrillingSyntax(CycleExpansion):
             return UNBOUNDED  # Q so small the count overflows
         return max(1, math.ceil(pecks - EPS))
 
+    def hole_end(self, path: ToolPath, cycle: CannedCycle, a: float, b: float) -> None:
+        self.over_the_spot(path, cycle, a, b)
+        peck_depth(cycle)
+
     def hole(self, path: ToolPath, cycle: CannedCycle, a: float, b: float) -> None:
         self.position(path, cycle, a, b)
         r, bottom = level(cycle, "r"), level(cycle, "bottom")
-        q = cycle.q
-        if q is None or q <= 0:
-            raise ProgramError(f"the {cycle.kind.replace('_', ' ')} cycle's peck depth must be positive")
+        q = peck_depth(cycle)
         d = cycle.clearance or 0.0
         k = 1
         depth = r - q
@@ -54,3 +56,11 @@ class PeckDrillingSyntax(CycleExpansion):
             depth = r - k * q
         path.cut(bottom, cycle.feed)
         path.rapid(level=self.return_level(cycle))
+
+
+def peck_depth(cycle: CannedCycle) -> float:
+    """The cycle's Q; a peck cycle without a positive one makes no hole."""
+    q = cycle.q
+    if q is None or q <= 0:
+        raise ProgramError(f"the {cycle.kind.replace('_', ' ')} cycle's peck depth must be positive")
+    return q

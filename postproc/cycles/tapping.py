@@ -22,6 +22,9 @@ class TappingSyntax(CycleExpansion):
     __slots__ = ()
     KINDS = frozenset(("tap", "tap_left"))
 
+    def hole_end(self, path: ToolPath, cycle: CannedCycle, a: float, b: float) -> None:
+        self.over_the_spot(path, cycle, a, b)
+
     def hole(self, path: ToolPath, cycle: CannedCycle, a: float, b: float) -> None:
         work, reverse = ("cw", "ccw") if cycle.kind == "tap" else ("ccw", "cw")
         self.position(path, cycle, a, b)
