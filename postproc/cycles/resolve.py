@@ -60,6 +60,8 @@ _DWELL_KEY: Final = "CannedCycleResolveSyntax.P"
 _NATIVE_KEY: Final = "CannedCycleResolveSyntax.native"
 """Set while the active cycle is one with computed words, kept verbatim."""
 """``ctx.state.extra`` key: the last cycle P, which RS274 tapping falls back on even after G80."""
+_REPEAT_KEY: Final = "CannedCycleResolveSyntax.repeat"
+"""``ctx.state.extra`` key: the last resolved next-hole block and the state it was resolved in (``_Repeat``)."""
 ACTIVE_KEY: Final = "CannedCycleResolveSyntax.active"
 """``ctx.state.extra`` key: (the last resolved ``CannedCycle``, its expansion) while the cycle is active,
 for a hole pattern that repeats it (``active_cycle``)."""
@@ -74,7 +76,7 @@ class CannedCycleResolveSyntax(Syntax):
     """Resolves hole cycles per ``semantics``; child elements replace the built-in family expansions."""
 
     XNAME = "CannedCycleResolveSyntax"
-    __slots__ = ("semantics", "expansions", "_rules", "_by_kind", "_words_of")
+    __slots__ = ("semantics", "expansions", "_rules", "_by_kind", "_words_of", "remember")
 
     def __init__(self, semantics: str = "fanuc", expansions: list[CycleExpansion] | None = None) -> None:
         if semantics not in SEMANTICS:
@@ -91,6 +93,9 @@ class CannedCycleResolveSyntax(Syntax):
         for expansion in [cls() for cls in EXPANSIONS] + self.expansions:
             for kind in expansion.KINDS:
                 self._by_kind[kind] = expansion
+        self.remember = True
+        """Resolve a block that only moves to the next hole from the block before it (``_repeat``); off, every
+        block is resolved from its words (the tests compare the two)."""
 
     @classmethod
     def from_xml(cls, el: etree._Element) -> "CannedCycleResolveSyntax":
@@ -148,7 +153,63 @@ class CannedCycleResolveSyntax(Syntax):
             if _NATIVE_KEY in state.extra or _computed(block):  # a hole known only when the program runs
                 self._native(block, ctx, state.cycle.kind)
                 return
+            if self.remember and state.distance == "absolute" and _next_hole_only(block, state.plane):
+                if not self._repeat(block, ctx):
+                    self._resolve_or_drop(block, ctx, state.cycle.kind, False)
+                    self._remember(block, ctx)
+                return
             self._resolve_or_drop(block, ctx, state.cycle.kind, False)
+
+    def _remember(self, block: Block, ctx: Context) -> None:
+        """Keep a resolved next-hole block (``_next_hole_only``) as the pattern of the next ones, with the
+        state it was resolved in."""
+        cycle = block.sections.get("CannedCycle")
+        if isinstance(cycle, CannedCycle) and cycle.repeat == 1 and not cycle.step:
+            cw = _cycle_words(ctx)
+            ctx.state.extra[_REPEAT_KEY] = _Repeat(self, _signature(ctx.state), cycle, cw.name(cycle.kind), cw.peck,
+                                                   ctx.setup.limits.moves_per_block)
+
+    def _repeat(self, block: Block, ctx: Context) -> bool:
+        """Resolve a block that only moves to the next hole (``_next_hole_only``) as the one remembered
+        (``_remember``), when everything ``_resolve`` reads besides the block's hole position and where the
+        tool stands is as it was then: the same cycle record at another spot. False when it is not."""
+        state = ctx.state
+        memo = state.extra.get(_REPEAT_KEY)
+        if not isinstance(memo, _Repeat) or memo.owner is not self or memo.signature != _signature(state):
+            return False
+        pattern = memo.cycle
+        first, second, normal = PLANE_AXES[pattern.plane]
+        tool = state.position
+        a, b, n = tool.get(first), tool.get(second), tool.get(normal)
+        if a is None or b is None or n is None:
+            return False  # ``_resolve`` says what is unknown
+        values = block.values
+        words: dict[str, float | int] = {}
+        for letter in memo.order:
+            value = values.get(letter)
+            if value is not None:
+                if isinstance(value, Expr):
+                    return False  # ``build`` sends a computed word to ``_native`` first
+                words[letter] = value
+        spot = {first: float(words[first]) if first in words else a,
+                second: float(words[second]) if second in words else b}
+        here = {k: v for k, v in tool.items() if k in "XYZ" and v is not None}
+        cycle = CannedCycle(
+            pattern.kind, call=False, semantics=pattern.semantics, return_level=pattern.return_level,
+            plane=pattern.plane, initial=pattern.initial, r=pattern.r, bottom=pattern.bottom, top=pattern.top,
+            q=pattern.q, clearance=pattern.clearance, dwell=pattern.dwell, orient=pattern.orient, feed=pattern.feed,
+            repeat=1, spindle=pattern.spindle, motion=pattern.motion, start=here, position=spot, step={},
+            shift=pattern.shift, words=words,
+        )
+        fail = _Failer(ctx, block, memo.code, False)
+        fail.words = words
+        try:
+            self._install(block, ctx, cycle, _LazyExpansion(memo.expansion, cycle, memo.limit, fail, memo.code,
+                                                            memo.peck, None))
+        except PostprocError:
+            _drop_cycle_sections(block)
+            raise
+        return True
 
     def _native(self, block: Block, ctx: Context, kind: str) -> None:
         """A cycle with computed words (a program kept symbolically): its holes are known only when the
@@ -170,10 +231,7 @@ class CannedCycleResolveSyntax(Syntax):
         try:
             self._resolve(block, ctx, kind, call)
         except PostprocError:
-            block.sections.pop("CycleCall", None)
-            motion = block.sections.get("Motion")
-            if motion is not None and motion.mode is None:  # type: ignore[attr-defined]
-                del block.sections["Motion"]
+            _drop_cycle_sections(block)
             raise
 
     def _letters(self, ctx: Context) -> tuple[frozenset[str], frozenset[str], tuple[str, ...]]:
@@ -252,25 +310,33 @@ class CannedCycleResolveSyntax(Syntax):
         expansion, limit = self._by_kind[kind], ctx.setup.limits.moves_per_block
         repeat = next((k for k in repeat_letters if k in words), None)
 
-        lazy = _LazyExpansion(expansion, cycle, limit, fail, code, cw.peck, repeat)
-        try:
-            end = expansion.end(cycle, limit)
-        except TooManyMoves as err:
-            raise lazy.too_many(err) from None
-        block.add(cycle)
-        block.add(CompoundMotion.lazy(kind, lazy))  # expanded only for a target without the cycle
-        state.extra[ACTIVE_KEY] = (cycle, expansion)
-        sections.pop("CycleCall", None)
-        motion = sections.get("Motion")
-        if motion is not None and motion.mode is None:  # type: ignore[attr-defined]
-            del sections["Motion"]
-        for axis, value in end.items():
-            state.position[axis] = value
+        self._install(block, ctx, cycle, _LazyExpansion(expansion, cycle, limit, fail, code, cw.peck, repeat))
         if active is not None:
             active.kind, active.words = kind, modal  # the initial level stays while a cycle is active
         else:
             state.cycle = CycleState(kind, modal, initial)
         state.extra[_STATE_KEY] = plane
+
+    def _install(self, block: Block, ctx: Context, cycle: CannedCycle, lazy: "_LazyExpansion") -> None:
+        """Give the block its cycle record and its motion (made when read), and move the tracked tool to
+        where the block leaves it."""
+        state = ctx.state
+        expansion = lazy.expansion
+        try:
+            end = expansion.end(cycle, lazy.limit)
+        except TooManyMoves as err:
+            raise lazy.too_many(err) from None
+        sections = block.sections
+        block.add(cycle)
+        block.add(CompoundMotion.lazy(cycle.kind, lazy))  # expanded only for a target without the cycle
+        state.extra[ACTIVE_KEY] = (cycle, expansion)
+        sections.pop("CycleCall", None)
+        motion = sections.get("Motion")
+        if motion is not None and motion.mode is None:  # type: ignore[attr-defined]
+            del sections["Motion"]
+        position = state.position
+        for axis, value in end.items():
+            position[axis] = value
 
     def _holes(self, ctx: Context, words: dict[str, Any], call: bool, plane: str, repeat_letters: tuple[str, ...],
                fail: "_Failer") -> int:
@@ -390,6 +456,60 @@ class _LazyExpansion:
     def too_many(self, err: TooManyMoves) -> PostprocError:
         """The bound on moves per block, located at the word that makes the moves (pecks or repeats)."""
         return self.fail(f"{self.code}: {err.message}", self.peck if err.role == "peck" else self.repeat)
+
+
+@mypyc_attr(allow_interpreted_subclasses=True)
+class _Repeat:
+    """A resolved next-hole block (``CannedCycleResolveSyntax._remember``): its cycle record, and what
+    ``_resolve`` read from the state to make it (``_signature``), kept in the run's state."""
+
+    __slots__ = ("owner", "signature", "cycle", "expansion", "code", "peck", "limit", "order")
+
+    def __init__(self, owner: CannedCycleResolveSyntax, signature: tuple[Any, ...], cycle: CannedCycle, code: str,
+                 peck: str, limit: int) -> None:
+        self.owner, self.signature, self.cycle, self.code, self.peck = owner, signature, cycle, code, peck
+        self.expansion = owner._by_kind[cycle.kind]
+        self.limit = limit
+        first, second, _ = PLANE_AXES[cycle.plane]
+        self.order = (first, second) if _WORD_RANK[first] < _WORD_RANK[second] else (second, first)
+        """The plane's two axes in ``WORD_ORDER``, the order ``_resolve`` keeps a block's words in."""
+
+
+def _signature(state: ModalState) -> tuple[Any, ...]:
+    """Everything of the state ``_resolve`` reads to resolve a next-hole block, but where the tool is: the
+    active cycle (its record of modal words is replaced, never changed in place, so the same object means
+    the same words), units, plane, distance mode, feed, spindle, return level, group-01 mode, the plane the
+    cycle was commanded in and RS274's remembered tapping dwell."""
+    active = state.cycle
+    extra = state.extra
+    return (active, None if active is None else active.kind, None if active is None else active.words,
+            None if active is None else active.initial, state.units, state.plane, state.distance, state.feed,
+            state.spindle, state.return_level, state.motion, extra.get(_STATE_KEY), extra.get(_DWELL_KEY))
+
+
+_NEXT_HOLE_SECTIONS: Final = frozenset(("Motion", "Sequence", "Comments"))
+
+
+def _next_hole_only(block: Block, plane: str) -> bool:
+    """A block that only moves an active cycle to its next hole: position words on the plane's two axes
+    (``X.. Y..`` in G17), maybe a block number and a comment."""
+    first, second, _ = PLANE_AXES[plane]
+    for letter in block.values:
+        if letter != first and letter != second:
+            return False
+    for key in block.sections:
+        if key not in _NEXT_HOLE_SECTIONS:
+            return False
+    return True
+
+
+def _drop_cycle_sections(block: Block) -> None:
+    """A block whose cycle is refused loses its cycle sections, so later steps do not report it again (the
+    error itself is reported by the pipeline)."""
+    block.sections.pop("CycleCall", None)
+    motion = block.sections.get("Motion")
+    if motion is not None and motion.mode is None:  # type: ignore[attr-defined]
+        del block.sections["Motion"]
 
 
 def _any_key(mapping: dict[str, Any], keys: frozenset[str]) -> bool:

@@ -1,0 +1,138 @@
+"""A block that only moves an active cycle to its next hole (``X.. Y..``) is resolved from the block before it
+when nothing it depends on has changed (``CannedCycleResolveSyntax._repeat``): the record, its motion, where
+the tool ends and every error must be what resolving it from its words gives. Programs mix next-hole blocks
+with every change that touches a cycle (feed, levels, G98/G99, G90/G91, units, plane, spindle, dwell,
+repeats, cancels, moves) and are read twice, remembering and not."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from contextlib import contextmanager
+from typing import Any
+
+import pytest
+from hypothesis import example, given, settings
+from hypothesis import strategies as st
+
+from postproc.api import read_program
+from postproc.cycles.resolve import CannedCycleResolveSyntax
+from postproc.errors import ErrorLevel, ErrorList
+from postproc.ir import Block, CompoundMotion
+from postproc.plugins import default_registry
+
+CALLS = ["G81", "G82 P300", "G83 Q2.", "G73 Q1.5", "G84", "G85", "G86", "G89 P200", "G76 Q0.5", "G87 Q0.5"]
+"""Cycle codes with the words each needs besides the levels (fanuc and LinuxCNC read them all)."""
+CHANGES = ["F200.", "F80.", "G98", "G99", "G91", "G90", "G20", "G21", "G18", "G17", "M03", "M04", "M05",
+           "G80", "G0 Z12.", "G1 X3. F100.", "Z-6.", "R1.", "P400", "K2", "K0", "G04 P100", "N5", "(NOTE)",
+           "S900", "T2", "G54", "G55"]
+
+
+@st.composite
+def programs(draw: st.DrawFn) -> str:
+    lines = ["G21 G17 G90 G0 X0. Y0. Z20.", "S1000 M03", "F150."]
+    for _ in range(draw(st.integers(1, 14))):
+        kind = draw(st.integers(0, 3))
+        if kind == 0:
+            code = draw(st.sampled_from(CALLS))
+            z = draw(st.sampled_from(["-5.", "-9.", "3."]))
+            r = draw(st.sampled_from(["2.", "0.5", "-8."]))
+            lines.append(f"{draw(st.sampled_from(['G98 ', 'G99 ', '']))}{code} X1. Y2. Z{z} R{r}")
+        elif kind == 1:
+            lines.append(draw(st.sampled_from(CHANGES)))
+        else:
+            x = draw(st.sampled_from(["", "X4.", "X-7.5", "X0."]))
+            y = draw(st.sampled_from(["", "Y3.", "Y0.25", "Y-2."]))
+            lines.append(" ".join(w for w in (draw(st.sampled_from(["", "N20"])), x, y,
+                                               draw(st.sampled_from(["", "(H)"]))) if w) or "X1.")
+    return "\n".join(lines) + "\nG80\nM30\n"
+
+
+@contextmanager
+def resolvers(make: Any) -> Iterator[None]:
+    """The cycle resolver of the fanuc and LinuxCNC pipelines replaced by ``make(resolver)``."""
+    registry = default_registry()
+    saved = {}
+    for name in ("fanuc", "linuxcnc"):
+        dialect = registry.dialect(name)
+        saved[name] = dialect.__dict__.get("pipeline")  # None: inherited
+        original = dialect.pipeline
+
+        def pipeline(cls: Any, setup: Any, original: Any = original) -> Any:
+            made = original(setup)
+            made.steps = [make(step) if isinstance(step, CannedCycleResolveSyntax) else step for step in made.steps]
+            return made
+
+        dialect.pipeline = classmethod(pipeline)  # type: ignore[method-assign,assignment]
+    try:
+        yield
+    finally:
+        for name, method in saved.items():
+            if method is None:
+                del registry.dialect(name).pipeline
+            else:
+                registry.dialect(name).pipeline = method  # type: ignore[method-assign]
+
+
+def remembering(on: bool) -> Any:
+    def make(step: CannedCycleResolveSyntax) -> CannedCycleResolveSyntax:
+        step.remember = on
+        return step
+    return resolvers(make)
+
+
+def resolved(program: str, dialect: str, remember: bool) -> list[Any]:
+    """Each block's sections (the cycle's motion made) and the errors, comparable."""
+    with remembering(remember):
+        try:
+            blocks = read_program(program.splitlines(keepends=True), file="t.nc", dialect=dialect)
+        except ErrorList as err:
+            return ["errors", *[str(e) for e in err.errors]]
+    return [_sections(block) for block in blocks]
+
+
+def _sections(block: Block) -> list[Any]:
+    out: list[Any] = [block.line]
+    for key, section in block.sections.items():
+        if isinstance(section, CompoundMotion):
+            try:
+                out.append((key, [repr(item._key()) for item in section.items]))
+            except Exception as err:  # an expansion refused when read: the same refusal both ways
+                out.append((key, "refused", str(err)))
+        else:
+            key_of = getattr(section, "_key", None)
+            out.append((key, repr(key_of()) if key_of is not None else repr(section)))
+    return out
+
+
+@pytest.mark.parametrize("dialect", ["fanuc", "linuxcnc"])
+@settings(max_examples=200, deadline=None)
+@given(program=programs())
+@example(program="G21 G17 G90 G0 X0. Y0. Z20.\nS1000 M03\nF150.\nG99 G81 X1. Y2. Z-5. R2.\nX4.\nY3.\nF80.\nX0.\n"
+                 "G98\nX-7.5\nG91\nX4.\nG90\nY-2.\nG80\nM30\n")
+@example(program="G21 G17 G90 G0 X0. Y0. Z20.\nS1000 M03\nF150.\nG83 Q2. X1. Y2. Z-5. R2.\nX4.\nX0. Y3.\nR1.\n"
+                 "X4.\nG18\nX4.\nG17\nN20 X-7.5 (H)\nM30\n")
+@example(program="G21 G17 G90 G0 X0. Y0. Z20.\nS1000 M03\nF150.\nG84 X1. Y2. Z-5. R2.\nX4.\nM04\nX0.\nG20\n"
+                 "X4.\nG21\nY3.\nM30\n")
+def test_a_next_hole_block_resolves_as_from_its_words(program: str, dialect: str) -> None:
+    assert resolved(program, dialect, True) == resolved(program, dialect, False)
+
+
+def test_next_hole_blocks_are_remembered() -> None:
+    """The comparison above is not between two runs of the same path: in a row of holes, each block after
+    the first repeat is made from the remembered one, and a feed change between makes the next from its
+    words again."""
+    made: list[bool] = []
+
+    class Spy(CannedCycleResolveSyntax):
+        def _repeat(self, block: Block, ctx: Any) -> bool:
+            done = super()._repeat(block, ctx)
+            made.append(done)
+            return done
+
+    program = "G21 G17 G90 G0 X0. Y0. Z20.\nG99 G81 X1. Y2. Z-5. R2. F100.\nX2.\nX3.\nX4.\nF90.\nX5.\nX6.\nM30\n"
+    with resolvers(lambda step: Spy(step.semantics, step.expansions)):
+        blocks = read_program(program.splitlines(keepends=True), file="t.nc", dialect="fanuc")
+    assert made == [False, True, True, False, True]
+    assert [b.sections["CannedCycle"].position["X"] for b in blocks if "CannedCycle" in b.sections] == [
+        1.0, 2.0, 3.0, 4.0, 5.0, 6.0]
+    assert [b.sections["CannedCycle"].feed for b in blocks if "CannedCycle" in b.sections] == [100.0] * 4 + [90.0] * 2
