@@ -372,3 +372,17 @@ def test_an_orientation_angle_is_not_lost_on_the_way_to_fanuc() -> None:
         write("G21 G0 X0 Y0 Z10\nM19 R90\nM2\n", "fanuc")
     text, _ = write("G21 G0 X0 Y0 Z10\nM19 R0\nM2\n", "fanuc")
     assert "M19" in text
+
+
+@pytest.mark.parametrize("source", ["fanuc", "isg"])
+def test_a_feed_move_per_revolution_without_a_spindle_speed_is_refused(source: str) -> None:
+    """rs274 refuses G1 under G95 while S is zero, even a G1 that only selects the mode (found by the
+    fuzz suite: ``G01 G95 F0.3`` with no S before it was written as ``G95 G1 F0.3``)."""
+    with pytest.raises(ErrorList, match=r"t\.ngc:2:1: error: .*feed per revolution \(G95\) with no spindle speed"):
+        write("G90 G0 X0. Y0. Z10.\nG01 G95 F0.3\nX5.\n", "linuxcnc", source=source)
+
+
+def test_a_feed_move_per_revolution_after_a_spindle_speed_is_written() -> None:
+    text, _ = write("G21 G90 G0 X0. Y0. Z10.\nS500 M03\nG01 G95 F0.3\nX5.\nG94 F100.\nS0\nX6.\n", "linuxcnc",
+                    source="fanuc")
+    assert text.splitlines()[2:5] == ["G95 G1 F0.3", "G1 X5.", "G94 F100."], text

@@ -292,11 +292,30 @@ class LinuxcncWriter(WordWriter):
         elif sections and self._opened is None and sections.keys() != {"Comments"}:
             self._opened = False
         self.straight_codes_now = self._opened is not None  # its first block seen: ``straight_move`` may follow
+        if self.modal.feed_mode == "per_rev" or "FeedMode" in sections:
+            self._spindle_turns(block)
         text = super().write_block(block)
         end = block.sections.get("ProgramControl")
         if end is not None and end.kind in ("end", "end_rewind"):  # type: ignore[attr-defined]
             self._ended = True
         return text
+
+    def _spindle_turns(self, block: Block) -> None:
+        """rs274 refuses a feed move (G1, G2, G3, even one that only selects the mode) in feed per revolution
+        while the spindle speed is zero, as it is until an S ("Cannot feed with zero spindle speed in feed
+        per rev mode"); the block's own S and G95 come first."""
+        sections = block.sections
+        motion = sections.get("Motion")
+        if motion is None or motion.mode not in ("linear", "cw", "ccw"):  # type: ignore[attr-defined]
+            return
+        mode = sections.get("FeedMode")
+        if (self.modal.feed_mode if mode is None else mode.mode) != "per_rev":  # type: ignore[attr-defined]
+            return
+        speed = sections.get("SpindleSpeed")
+        rpm = self.modal.spindle_rpm if speed is None else speed.rpm  # type: ignore[attr-defined]
+        if rpm is None or (isinstance(rpm, (int, float)) and rpm == 0):
+            self.unsupported("a feed move in feed per revolution (G95) with no spindle speed (rs274: \"Cannot feed "
+                             "with zero spindle speed in feed per rev mode\"; program S first)", block)
 
     def _lone_tape_mark(self, block: Block) -> str:
         """A closing ``%`` with no opening one and no program end before it: rs274 refuses it ("Bad
