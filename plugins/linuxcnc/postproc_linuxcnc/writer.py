@@ -25,6 +25,7 @@ import copy
 from typing import Any, ClassVar
 
 from postproc.errors import UnsupportedError
+from postproc.event_order import after_motion
 from postproc.ir import Block, Section
 from postproc.context import Context
 from postproc.dialect import Dialect
@@ -311,6 +312,11 @@ class LinuxcncWriter(WordWriter):
         mode = sections.get("FeedMode")
         if (self.modal.feed_mode if mode is None else mode.mode) != "per_rev":  # type: ignore[attr-defined]
             return
+        control = sections.get("SpindleControl")
+        turning = self.modal.spindle if control is None or after_motion("SpindleControl", control) \
+            else control.direction  # type: ignore[attr-defined]
+        if turning == "stop" and motion.axes:  # type: ignore[attr-defined]
+            return  # refused when read: a feed-per-revolution move with the spindle stopped
         speed = sections.get("SpindleSpeed")
         rpm = self.modal.spindle_rpm if speed is None else speed.rpm  # type: ignore[attr-defined]
         if rpm is None or (isinstance(rpm, (int, float)) and rpm == 0):
