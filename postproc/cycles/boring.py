@@ -21,9 +21,7 @@ class BoringSyntax(CycleExpansion):
     XNAME = "BoringSyntax"
     __slots__ = ()
     KINDS = frozenset(("bore_feed", "bore_stop", "bore_dwell_feed"))
-
-    def hole_end(self, path: ToolPath, cycle: CannedCycle, a: float, b: float) -> None:
-        self.over_the_spot(path, cycle, a, b)
+    ENDS_OVER_THE_SPOT = True
 
     def hole(self, path: ToolPath, cycle: CannedCycle, a: float, b: float) -> None:
         rs274 = cycle.semantics == "rs274"

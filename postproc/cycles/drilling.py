@@ -15,9 +15,7 @@ class DrillingSyntax(CycleExpansion):
     XNAME = "DrillingSyntax"
     __slots__ = ()
     KINDS = frozenset(("drill", "drill_dwell"))
-
-    def hole_end(self, path: ToolPath, cycle: CannedCycle, a: float, b: float) -> None:
-        self.over_the_spot(path, cycle, a, b)
+    ENDS_OVER_THE_SPOT = True
 
     def hole(self, path: ToolPath, cycle: CannedCycle, a: float, b: float) -> None:
         self.position(path, cycle, a, b)

@@ -211,6 +211,9 @@ class CycleExpansion(Syntax):
 
     __slots__ = ()
     KINDS: ClassVar[frozenset[str]] = frozenset()
+    ENDS_OVER_THE_SPOT: ClassVar[bool] = False
+    """Every hole of the family ends over its spot at the return level (``return_level``), whatever it
+    does in the hole: where a block of holes ends is known from its last spot (``over_the_spot``)."""
 
     def build(self, block: Block, ctx: Context | None) -> None:
         """(``ctx`` None: built outside a run, as a seed's section is expanded on its own.)"""
@@ -249,9 +252,12 @@ class CycleExpansion(Syntax):
         return path.end()
 
     def hole_end(self, path: ToolPath, cycle: CannedCycle, a: float, b: float) -> None:
-        """Where one hole leaves the tool, for ``end`` (``path`` keeps no moves): the hole itself, unless
-        the family knows it in fewer steps (``over_the_spot``) with the same refusals."""
-        self.hole(path, cycle, a, b)
+        """Where one hole leaves the tool, for ``end`` (``path`` keeps no moves): the hole itself, or for a
+        family that ``ENDS_OVER_THE_SPOT`` its positioning and return (``over_the_spot``)."""
+        if self.ENDS_OVER_THE_SPOT:
+            self.over_the_spot(path, cycle, a, b)
+        else:
+            self.hole(path, cycle, a, b)
 
     def over_the_spot(self, path: ToolPath, cycle: CannedCycle, a: float, b: float) -> None:
         """``hole_end`` of a family whose hole ends over its spot at the return level, whatever it does in

@@ -25,6 +25,7 @@ class PeckDrillingSyntax(CycleExpansion):
     XNAME = "PeckDrillingSyntax"
     __slots__ = ()
     KINDS = frozenset(("peck_chip", "peck_deep"))
+    ENDS_OVER_THE_SPOT = True
 
     def least_moves_per_hole(self, cycle: CannedCycle) -> int:
         """One cut per peck: depth / Q, counted before expanding (a tiny Q is refused at once)."""

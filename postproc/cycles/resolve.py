@@ -203,9 +203,14 @@ class CannedCycleResolveSyntax(Syntax):
         )
         fail = _Failer(ctx, block, memo.code, False)
         fail.words = words
+        expansion = memo.expansion
+        end: dict[str, float] | None = None
+        if expansion.ENDS_OVER_THE_SPOT:  # its levels passed ``end``'s checks for the remembered block
+            end = dict(here)
+            end[first], end[second], end[normal] = spot[first], spot[second], expansion.return_level(cycle)
         try:
-            self._install(block, ctx, cycle, _LazyExpansion(memo.expansion, cycle, memo.limit, fail, memo.code,
-                                                            memo.peck, None))
+            self._install(block, ctx, cycle, _LazyExpansion(expansion, cycle, memo.limit, fail, memo.code,
+                                                            memo.peck, None), end)
         except PostprocError:
             _drop_cycle_sections(block)
             raise
@@ -317,15 +322,17 @@ class CannedCycleResolveSyntax(Syntax):
             state.cycle = CycleState(kind, modal, initial)
         state.extra[_STATE_KEY] = plane
 
-    def _install(self, block: Block, ctx: Context, cycle: CannedCycle, lazy: "_LazyExpansion") -> None:
+    def _install(self, block: Block, ctx: Context, cycle: CannedCycle, lazy: "_LazyExpansion",
+                 end: dict[str, float] | None = None) -> None:
         """Give the block its cycle record and its motion (made when read), and move the tracked tool to
-        where the block leaves it."""
+        where the block leaves it (``end``, found by the expansion when not given)."""
         state = ctx.state
         expansion = lazy.expansion
-        try:
-            end = expansion.end(cycle, lazy.limit)
-        except TooManyMoves as err:
-            raise lazy.too_many(err) from None
+        if end is None:
+            try:
+                end = expansion.end(cycle, lazy.limit)
+            except TooManyMoves as err:
+                raise lazy.too_many(err) from None
         sections = block.sections
         block.add(cycle)
         block.add(CompoundMotion.lazy(cycle.kind, lazy))  # expanded only for a target without the cycle

@@ -21,9 +21,7 @@ class TappingSyntax(CycleExpansion):
     XNAME = "TappingSyntax"
     __slots__ = ()
     KINDS = frozenset(("tap", "tap_left"))
-
-    def hole_end(self, path: ToolPath, cycle: CannedCycle, a: float, b: float) -> None:
-        self.over_the_spot(path, cycle, a, b)
+    ENDS_OVER_THE_SPOT = True
 
     def hole(self, path: ToolPath, cycle: CannedCycle, a: float, b: float) -> None:
         work, reverse = ("cw", "ccw") if cycle.kind == "tap" else ("ccw", "cw")

@@ -427,7 +427,7 @@ class WordBlockSyntax(Syntax):
         if "CycleCall" in block.sections:
             return
         if cycle_block and "CycleCancel" not in block.sections:
-            used.update("F" + self.cycle_data_letters(ctx))
+            _use_present(used, values, "F" + self.cycle_data_letters(ctx))
         axes = {k: v for k, v in values.items() if k in AXIS_LETTERS and k not in used}
         if home is not None:
             block.add(Motion(home, axes))
@@ -626,3 +626,11 @@ def second_col(block: Block, letter: str) -> int:
     """Column of the second word with ``letter`` (the one that repeats an address)."""
     cols = [col for col, found, _ in word_columns(block.text or "") if found.upper() == letter.upper()]
     return cols[1] if len(cols) > 1 else 1
+
+
+def _use_present(used: set[str], values: dict[str, Any], letters: str) -> None:
+    """Mark the block's words among ``letters`` used: a loop over its few words, not a set update with
+    every letter (a block repeating a cycle asks it once per hole)."""
+    for letter in values:
+        if len(letter) == 1 and letter in letters:  # a one-letter address among them, not a substring
+            used.add(letter)
