@@ -181,6 +181,9 @@ class WordWriter(Writer):
         self.base_item_moves = self.straight_items and self.straight_path(("item_line",))
         """And an expansion's move as the base's ``item_line`` does (``compound`` calls it directly: a
         plugin's writer would dispatch each item through Python)."""
+        self.base_notes = self.straight_path(("comment", "comment_line", "source_text"), "")
+        """The class writes comments and source text as the base does: an expansion's note naming its source
+        is spelled here (``_note``) without a dispatch through Python per block."""
         self.straight_codes = {mode: self.codes.spell("motion", mode) for mode in ("rapid", "linear")}
         """The motion codes a straight move is written with, spelled once."""
         arcs = not self.straight_copy and self.straight and self.straight_path((), "STRAIGHT_ARC_OVERRIDES")
@@ -283,8 +286,8 @@ class WordWriter(Writer):
         """Whether this class may write straight moves with ``straight_move``: every method of ``methods``
         (default ``STRAIGHT_METHODS``: those a generated block passes) is the base's, or the class that
         defines it lists it in its own ``declared`` set (``STRAIGHT_OVERRIDES``; ``STRAIGHT_ARC_OVERRIDES``
-        for arcs); a subclass that overrides it again says so again: a declaration is not inherited by a
-        new override."""
+        for arcs; '' for none: only the base's own methods count); a subclass that overrides it again says
+        so again: a declaration is not inherited by a new override."""
         for name in methods or STRAIGHT_METHODS:
             owner = next(c for c in cls.__mro__ if name in c.__dict__)
             if owner is not WordWriter and name not in owner.__dict__.get(declared, ()):
@@ -589,7 +592,10 @@ class WordWriter(Writer):
         head_keys = [k for k in rest if k not in tail_keys]
         head = Block(block.line, None, "\n")
         head.sections = {k: rest[k] for k in head_keys}
-        note = self.comment_line(f"{compound.term} from line {block.line}: {self.source_text(block)}")
+        if self.base_notes:
+            note = _note(f"{compound.term} from line {block.line}: {_source_text(block)}")
+        else:
+            note = self.comment_line(f"{compound.term} from line {block.line}: {self.source_text(block)}")
         if list(head.sections) == ["Sequence"]:
             note = " ".join(self.sequence_words(head.sections["Sequence"], block)) + " " + note
         elif head.sections:
@@ -652,9 +658,7 @@ class WordWriter(Writer):
         return " ".join(words) + "\n"
 
     def source_text(self, block: Block) -> str:
-        if block.text is not None:
-            return one_line(block.text).strip()
-        return " ".join(letter + num for letter, num in block.words)
+        return _source_text(block)
 
     # -- section words -----------------------------------------------------------------------------
     def comment(self, text: str) -> str:
@@ -1147,6 +1151,18 @@ def _straight_item_line(w: WordWriter, item: Motion, before: dict[str, float | E
     if count == 4:
         return f"{code} {words[0]}{words[1]} {words[2]}{words[3]}\n"
     return code + "".join([" " + words[i] + words[i + 1] for i in range(0, count, 2)]) + "\n"
+
+
+def _note(text: str) -> str:
+    """``comment_line`` of the base: a comment on a line of its own."""
+    return "(" + text.replace("(", "[").replace(")", "]") + ")\n"
+
+
+def _source_text(block: Block) -> str:
+    """``source_text`` of the base: the block as read, on one line."""
+    if block.text is not None:
+        return one_line(block.text).strip()
+    return " ".join(letter + num for letter, num in block.words)
 
 
 def _is_straight(item: Motion) -> bool:
