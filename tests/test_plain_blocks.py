@@ -3,8 +3,8 @@
 A CAM program's usual blocks (``N.. G1 X.. Y.. F..``, ``G2 X.. Y.. R..``, ``G3 X.. Y.. I.. J..``, or axis
 words alone) are read in one pass; anything else goes to the general path, which also explains every
 error. Random programs of such blocks, mixed with what must leave the path (a second code, point-less
-numbers, I/J/K/R beside a straight move, both arc forms, a repeated address, lower-case letters, an
-active canned cycle), are read twice, as shipped and with the fast path turned off (a subclass whose
+numbers, I/J/K/R beside a straight move, both arc forms, a repeated address, lower-case letters, under an
+active canned cycle anything but N and axis words), are read twice, as shipped and with the fast path turned off (a subclass whose
 ``_plain`` declines every block): blocks, sections, warnings and errors must be the same. Mill and
 lathe readings, and the dialects whose numbers without a point are in mm (ISG, Fagor).
 """
@@ -78,7 +78,8 @@ def programs(draw: st.DrawFn) -> list[str]:
         if draw(st.integers(min_value=0, max_value=3)):
             words.append(draw(st.sampled_from([f"N{10 * (i + 1)}", f"N0{i + 1}", "N1.5"])))
         code = draw(st.sampled_from(["", "", "G1", "G01", "G0", "G00", "G2", "G02", "G3", "G03", "g1", "G4",
-                                     "G17", "G90 G1", "G1 G2", "G81", "G80", "G2.5", "G001"]))
+                                     "G17", "G90 G1", "G1 G2", "G81", "G80", "G2.5", "G001",
+                                     "G98 G81 Z-2. R1. F50."]))
         if code:
             words.append(code)
         for letter in draw(st.lists(st.sampled_from("XYZUWAB"), max_size=3, unique=True)):
@@ -99,6 +100,8 @@ def programs(draw: st.DrawFn) -> list[str]:
 @example(program=["G21", "G3 X1. Y2. I1.", "X2. Y3. R1.5", "G0 X1. R2."])
 @example(program=["G21", "G90", "G1 F100.", "X1. X2.", "N10 G1 X1. Y2. X3.", "N20 X1. F1. F2.", "G1 G1 X1.",
                   "G2 X1. I1. I2."])  # repeated addresses: the general path refuses them
+@example(program=["G21", "G90", "G0 X0. Y0. Z5.", "G99 G81 X1. Y2. Z-3. R1. F100.", "X2.", "N30 Y3.5", "X4 Y5",
+                  "x5.", "Z-4.", "X6. R0.5", "X7. F90.", "N40", "X1. X2.", "G80", "X8."])  # the next holes of a cycle
 def test_the_fast_path_reads_what_the_general_path_reads(program: list[str], dialect: str, machine: str,
                                                          monkeypatch: pytest.MonkeyPatch) -> None:
     cls = default_registry().dialect(dialect)

@@ -108,7 +108,7 @@ class WordBlockSyntax(Syntax):
                 up = "G" if "G" in values else "M"
                 block.add(NativeCode(self.DIALECT, f"a computed {up} code", block.text or ""))
                 return
-        elif ctx.state.cycle is None and self._plain(block, ctx, words):
+        elif self._plain(block, ctx, words):
             return
         codes: dict[str, tuple[str, str, object, str]] = {}
         natives: list[str] = []
@@ -202,7 +202,8 @@ class WordBlockSyntax(Syntax):
 
     def _plain(self, block: Block, ctx: Context, words: list[tuple[str, str]]) -> bool:
         """The likeliest CAM block: N, maybe one motion code (G0-G3), axis words with decimal points, an
-        arc's centre I/J/K or radius R, maybe F; no active cycle.
+        arc's centre I/J/K or radius R, maybe F; under an active cycle, N and axis words only (the next hole
+        of a row: ``Motion(None)``, the cycle resolve step reads the words).
 
         One pass with the same meaning as the general path (``g_sections``, ``finish_words``; property-
         tested in ``tests/test_plain_blocks.py``). Returns False, leaving the block as it found it, at the
@@ -216,6 +217,7 @@ class WordBlockSyntax(Syntax):
         upper = block.canonical  # a canonical block's letters are upper-case already (numbers.CANONICAL_BLOCK)
         sequence = block.sections.get("Sequence") if upper else None  # its first word's number, read
         seen = 0  # the addresses met, one bit per letter (a repeated one leaves the path)
+        cycle = ctx.state.cycle is not None
         for letter, num in words:
             up = letter if upper else _UPPER[letter]
             index = ord(up) - 65
@@ -231,6 +233,8 @@ class WordBlockSyntax(Syntax):
                 values[up] = axes[up] = number  # type: ignore[assignment]
             elif kind == _N and "." not in num:
                 values["N"] = sequence.number if isinstance(sequence, Sequence) else int(num)
+            elif cycle:
+                break  # a code, F or a cycle word under an active cycle: the general path
             elif kind == _F:
                 values["F"] = float(num)
             elif kind == _G and mode is None:
@@ -245,6 +249,11 @@ class WordBlockSyntax(Syntax):
             else:
                 break
         else:
+            if cycle:
+                if axes:
+                    block.sections["Motion"] = Motion(None, axes)
+                    _saw_pointed(ctx, axes, block.line)
+                return True
             if mode is None and axes:
                 mode = ctx.state.motion
                 if mode is None:
@@ -268,11 +277,8 @@ class WordBlockSyntax(Syntax):
                     values.clear()
                     return False  # I/J/K/R beside a straight move: the general path refuses it
                 block.sections["Motion"] = Motion(mode, axes, center, radius)
-                if axes and ctx.point_mix is not None:  # still looking (``postproc.rs274.point_mix``)
-                    mix = point_mix(ctx)
-                    if mix is not None:
-                        for up in axes:
-                            mix.saw_pointed(ctx, up, block.line)
+                if axes:
+                    _saw_pointed(ctx, axes, block.line)
             elif arc_words:
                 values.clear()
                 return False  # I/J/K/R with no motion: the general path refuses it
@@ -634,3 +640,13 @@ def _use_present(used: set[str], values: dict[str, Any], letters: str) -> None:
     for letter in values:
         if len(letter) == 1 and letter in letters:  # a one-letter address among them, not a substring
             used.add(letter)
+
+
+def _saw_pointed(ctx: Context, axes: dict[str, float | Expr], line: int) -> None:
+    """Tell the point-mix check (``postproc.rs274.point_mix``), while it still looks, of the axis words
+    with a decimal point a ``_plain`` block has."""
+    if ctx.point_mix is not None:
+        mix = point_mix(ctx)
+        if mix is not None:
+            for up in axes:
+                mix.saw_pointed(ctx, up, line)
