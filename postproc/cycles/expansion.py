@@ -11,7 +11,7 @@ from __future__ import annotations
 from mypy_extensions import mypyc_attr
 
 import abc
-from typing import TYPE_CHECKING, ClassVar, Iterator
+from typing import TYPE_CHECKING, ClassVar, Final, Iterator
 
 from postproc.errors import ProgramError
 from postproc.expr import Expr
@@ -27,9 +27,9 @@ from .semantics import FANUC, SEMANTICS
 if TYPE_CHECKING:  # annotations only: lxml is imported where XML is read or written (postproc.xmlio)
     from lxml import etree
 
-EPS = 1e-9
+EPS: Final = 1e-9
 """Two levels closer than this are the same level (float noise of repeated increments)."""
-UNBOUNDED = 1 << 62
+UNBOUNDED: Final = 1 << 62
 """No bound on the items of one expansion (the callers that read a set-up pass its
 ``<Limits movesPerBlock>``)."""
 

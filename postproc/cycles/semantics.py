@@ -31,14 +31,18 @@ the Z at the block's start, G91 R from it), which that interpreter no longer fol
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Final
 
-PECK = frozenset(("peck_chip", "peck_deep"))
-TAP = frozenset(("tap", "tap_left"))
-SHIFT = frozenset(("fine_bore", "back_bore"))
-DWELLING = frozenset(("drill_dwell", "bore_stop", "bore_manual", "bore_dwell_feed"))
+from mypy_extensions import mypyc_attr
+
+PECK: Final = frozenset(("peck_chip", "peck_deep"))
+TAP: Final = frozenset(("tap", "tap_left"))
+SHIFT: Final = frozenset(("fine_bore", "back_bore"))
+DWELLING: Final = frozenset(("drill_dwell", "bore_stop", "bore_manual", "bore_dwell_feed"))
 """Cycles RS274/NGC refuses without a P when newly commanded."""
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 @dataclass(frozen=True, slots=True)
 class Semantics:
     """The rules of one family (see the module table)."""
@@ -56,12 +60,12 @@ class Semantics:
     """Cycles with no meaning under this family's words."""
 
 
-FANUC = Semantics("fanuc", rise_to_r=False, clear_above_r=False, position_at_clear=False,
+FANUC: Final = Semantics("fanuc", rise_to_r=False, clear_above_r=False, position_at_clear=False,
                   dwell_ms=True, carry_over=True, any_axis_repeats=False, zero_repeat_error=False,
                   sticky_tap_dwell=False, unsupported=frozenset())
-RS274 = Semantics("rs274", rise_to_r=True, clear_above_r=True, position_at_clear=True,
+RS274: Final = Semantics("rs274", rise_to_r=True, clear_above_r=True, position_at_clear=True,
                   dwell_ms=False, carry_over=False, any_axis_repeats=True, zero_repeat_error=True,
                   sticky_tap_dwell=True, unsupported=frozenset(("fine_bore", "back_bore")))
 """LinuxCNC has no fine boring (G76 threads) and its G87 takes I/J/K: its reader keeps G87 verbatim."""
 
-SEMANTICS = {"fanuc": FANUC, "rs274": RS274}
+SEMANTICS: Final = {"fanuc": FANUC, "rs274": RS274}

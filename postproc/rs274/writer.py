@@ -587,19 +587,21 @@ class WordWriter(Writer):
         modal settings, tool change, spindle start, coolant on), a comment naming the source, each item,
         then the words that act after it (spindle stop, coolant off, program stop or end)."""
         lines: list[str] = []
-        rest = {k: v for k, v in block.sections.items() if k not in ("CompoundMotion", "CannedCycle", "Comments")}
-        tail_keys = [k for k, section in rest.items() if after_motion(k, section)]
-        head_keys = [k for k in rest if k not in tail_keys]
-        head = Block(block.line, None, "\n")
-        head.sections = {k: rest[k] for k in head_keys}
+        head: dict[str, Section] = {}
+        tail: dict[str, Section] = {}
+        for key, section in block.sections.items():  # a hole of a row has none besides its motion
+            if key != "CompoundMotion" and key != "CannedCycle" and key != "Comments":
+                (tail if after_motion(key, section) else head)[key] = section
         if self.base_notes:
             note = _note(f"{compound.term} from line {block.line}: {_source_text(block)}")
         else:
             note = self.comment_line(f"{compound.term} from line {block.line}: {self.source_text(block)}")
-        if list(head.sections) == ["Sequence"]:
-            note = " ".join(self.sequence_words(head.sections["Sequence"], block)) + " " + note
-        elif head.sections:
-            lines.append(self.generate(head))
+        if len(head) == 1 and "Sequence" in head:
+            note = " ".join(self.sequence_words(head["Sequence"], block)) + " " + note
+        elif head:
+            first = Block(block.line, None, "\n")
+            first.sections = head
+            lines.append(self.generate(first))
         lines.append(note)
         was_incremental = self.modal.distance == "incremental"
         base_moves = self.base_item_moves
@@ -622,13 +624,13 @@ class WordWriter(Writer):
         if was_incremental:
             lines.append(self.code("distance", "incremental", "incremental distance mode", block) + "\n")
             self.modal.distance = "incremental"
-        tail = Block(block.line, None, "\n")
-        tail.sections = {k: rest[k] for k in tail_keys}
         comments = block.sections.get("Comments")
         if comments is not None:
-            tail.sections["Comments"] = comments
-        if tail.sections:
-            lines.append(self.generate(tail))
+            tail["Comments"] = comments
+        if tail:
+            then = Block(block.line, None, "\n")
+            then.sections = tail
+            lines.append(self.generate(then))
         text = "".join(lines)
         if block.eol != "\n" and text.endswith("\n"):
             text = text[:-1] + block.eol
