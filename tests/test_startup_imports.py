@@ -2,7 +2,8 @@
 ``sys.modules`` when the command ends, never timed: what a one-line translation or ``postproc dialects``
 must not load is pydantic (set-up validation), jinja2 (templates), the batch and cluster machinery, the
 toolpath, verify and backplot code; with a set-up file (``--machine``) pydantic is loaded, by design.
-Nor the standard modules a plain run has no use for: decimal (an exponent's spelling), threading, tempfile
+Nor the standard modules a plain run has no use for: decimal (an exponent's spelling), threading, json (the
+compiled build's manifest is plain lines: ``postproc.native.MANIFEST``), tempfile
 and shutil with what they import (the temporary output is made with ``os`` alone: ``postproc.outfile``;
 argparse's formatter is sized without shutil: ``postproc.cli._Formatter``); and a command that reads and
 writes no XML (``postproc dialects``) does not load lxml (``postproc.xmlio.lxml_etree``). A translation
@@ -10,7 +11,6 @@ reads its dialect's pipeline file with lxml, so it loads it."""
 
 from __future__ import annotations
 
-import json
 import os
 import subprocess
 import sys
@@ -21,34 +21,36 @@ import pytest
 
 ROOT = Path(__file__).resolve().parents[1]
 PROBE = """
-import atexit, json, os, runpy, sys
-atexit.register(lambda: open(os.environ["MODULES_OUT"], "w").write(json.dumps(sorted(sys.modules))))
-sys.argv = ["postproc", *json.loads(os.environ["ARGS"])]
+import atexit, os, runpy, sys
+atexit.register(lambda: open(os.environ["MODULES_OUT"], "w").write("\\n".join(sorted(sys.modules))))
+sys.argv = ["postproc", *os.environ["ARGS"].split("\\n")]
 runpy.run_module("postproc", run_name="__main__")
 """
+"""Runs a command and writes the names of the modules loaded when it ends, one a line (it imports no
+module of its own that a run might not: json is one the runs must not load)."""
 NEVER_BY_DEFAULT = ("pydantic", "pydantic_core", "annotated_types", "jinja2", "dask", "distributed", "PIL",
                     "postproc.setup_validate", "postproc.setup_load", "postproc.templates", "postproc.batch.command",
                     "postproc.batch.local", "postproc.batch.cluster", "postproc.toolpath", "postproc.verify",
                     "postproc.backplot", "postproc.canvas", "postproc.export")
-NOT_AT_START = ("decimal", "threading", "tempfile", "shutil", "random", "bz2", "lzma")
+NOT_AT_START = ("decimal", "threading", "tempfile", "shutil", "random", "bz2", "lzma", "json")
 """Standard modules imported where they are used (a top-level import of one of them fails here)."""
 ONLY_FOR_XML = ("lxml",)
 
 
 def modules_after(tmp_path: Path, *args: str) -> set[str]:
-    out = tmp_path / "modules.json"
+    out = tmp_path / "modules.txt"
     cwd = tmp_path / "cwd"  # on sys.path (python -c): kept unchanged and old, so the entry-point cache settles
     if not cwd.exists():
         cwd.mkdir()
         past = time.time() - 60
         os.utime(cwd, (past, past))
-    env = dict(os.environ, HOME=str(tmp_path), MODULES_OUT=str(out), ARGS=json.dumps(list(args)))
+    env = dict(os.environ, HOME=str(tmp_path), MODULES_OUT=str(out), ARGS="\n".join(args))
     env.pop("POSTPROC_NO_ENTRY_POINT_CACHE", None)
     env.pop("XDG_CACHE_HOME", None)
     done = subprocess.run([sys.executable, "-c", PROBE], cwd=cwd, env=env, capture_output=True, text=True,
                           timeout=120)
     assert done.returncode == 0, done.stderr
-    return set(json.loads(out.read_text()))
+    return set(out.read_text().splitlines())
 
 
 def loaded(modules: set[str], name: str) -> bool:
