@@ -41,7 +41,8 @@ class Dialect:
     WRITER: ClassVar[type[Writer] | None] = None
     """Writer class, or None for a read-only dialect."""
     PIPELINE_FILE: ClassVar[str | None] = None
-    """Name of the reading pipeline XML shipped in the dialect's package."""
+    """Name of the reading pipeline XML shipped in the dialect's package (``pipeline_file``); a dialect
+    may also declare it in Python (``python_pipeline``)."""
     LOWERING: ClassVar[tuple[Callable[..., Iterator[Block]], ...]] = ()
     """Lowering steps only this dialect needs as a target (``postproc.lower``), run after the generic
     ones, in order: pure block-stream transforms ``step(blocks, ctx, target)``."""
@@ -137,19 +138,42 @@ class Dialect:
 
     @classmethod
     def pipeline(cls, setup: MachineSetup) -> Pipeline:
-        """The reading pipeline: the set-up's override if it names one, else the dialect's own file."""
+        """The reading pipeline: the set-up's override if it names one, else the dialect's own, as it
+        declares it in Python (``python_pipeline``) or else from its file (``file_pipeline``)."""
         override = setup.pipeline_path()
         if override is not None:
             return load_pipeline(override)
-        if cls.PIPELINE_FILE is None:
+        declared = cls.python_pipeline(setup)
+        return declared if declared is not None else cls.file_pipeline(setup)
+
+    @classmethod
+    def python_pipeline(cls, setup: MachineSetup) -> Pipeline | None:
+        """The pipeline of the dialect's own file (``pipeline_file(setup)``), built in Python: a run then
+        reads no XML and imports no XML parser (lxml costs a one-line translation ~5 ms of its start-up).
+        None (the default): the file is read. The file stays the definition a set-up's ``pipeline``
+        starts from; the conformance suite (``postproc.testing``) checks that the two are the same.
+        Import the steps' modules inside the method, so that registering the dialect does not."""
+        return None
+
+    @classmethod
+    def pipeline_file(cls, setup: MachineSetup) -> str | None:
+        """The name of the pipeline XML beside the dialect's module that reads under ``setup``
+        (``PIPELINE_FILE``; a dialect with one per machine type picks it here)."""
+        return cls.PIPELINE_FILE
+
+    @classmethod
+    def file_pipeline(cls, setup: MachineSetup) -> Pipeline:
+        """The pipeline read from the dialect's file (``pipeline_file``); one of no steps where it has none."""
+        name = cls.pipeline_file(setup)
+        if name is None:
             return Pipeline(cls.NAME, [])
         module = cls.__module__
         package = module if _is_package(module) else module.rpartition(".")[0]
         beside = _package_folder(package)
         if beside is not None:
-            return load_pipeline(beside / cls.PIPELINE_FILE)
+            return load_pipeline(beside / name)
         from importlib import resources  # a package inside a zip file: its data is extracted
-        ref = resources.files(package) / cls.PIPELINE_FILE
+        ref = resources.files(package) / name
         with resources.as_file(ref) as path:
             return load_pipeline(Path(path))
 

@@ -6,8 +6,9 @@ Nor the standard modules a plain run has no use for: decimal (an exponent's spel
 compiled build's manifest is plain lines: ``postproc.native.MANIFEST``), tempfile
 and shutil with what they import (the temporary output is made with ``os`` alone: ``postproc.outfile``;
 argparse's formatter is sized without shutil: ``postproc.cli._Formatter``); and a command that reads and
-writes no XML (``postproc dialects``) does not load lxml (``postproc.xmlio.lxml_etree``). A translation
-reads its dialect's pipeline file with lxml, so it loads it."""
+writes no XML does not load lxml (``postproc.xmlio.lxml_etree``): neither ``postproc dialects`` nor a
+translation without a set-up file, whose dialects declare their reading pipelines in Python
+(``Dialect.python_pipeline``)."""
 
 from __future__ import annotations
 
@@ -107,11 +108,14 @@ def warm_modules_after(tmp_path: Path, *args: str) -> set[str]:
     return modules_after(tmp_path, *args)
 
 
-def test_a_plain_translation_loads_no_standard_module_it_does_not_use(tmp_path: Path, one_line: Path) -> None:
-    modules = warm_modules_after(tmp_path, "translate", str(one_line), "--from", "fanuc", "--to", "fanuc",
+@pytest.mark.parametrize("target, writer", [("fanuc", "dialects.fanuc.writer"),
+                                            ("linuxcnc", "postproc_linuxcnc.writer")])
+def test_a_plain_translation_loads_no_standard_module_it_does_not_use(tmp_path: Path, one_line: Path,
+                                                                       target: str, writer: str) -> None:
+    modules = warm_modules_after(tmp_path, "translate", str(one_line), "--from", "fanuc", "--to", target,
                                  "--normalize")
-    assert "postproc.api" in modules and "dialects.fanuc.writer" in modules  # the probe saw the run
-    assert [name for name in NOT_AT_START if loaded(modules, name)] == []
+    assert "postproc.api" in modules and writer in modules  # the probe saw the run
+    assert [name for name in NOT_AT_START + ONLY_FOR_XML if loaded(modules, name)] == []
 
 
 def test_listing_the_dialects_loads_no_xml_parser(tmp_path: Path) -> None:

@@ -17,6 +17,7 @@ from postproc.errors import Diagnostics
 from postproc.hookspecs import hookimpl
 from postproc.rs274.order_of_execution import stops_before_motion
 from postproc.setup import MachineSetup
+from postproc.syntax import Pipeline
 from postproc.xmlio import XFactory
 
 from .block_syntax import FagorBlockSyntax
@@ -55,6 +56,14 @@ class Fagor(Dialect):
     LOWERING = (stops_before_motion,)
     """A spindle stop or coolant off that the source made before its block's motion goes in a block of
     its own before it (Fagor acts on M05/M09 after the block's motion, as Fanuc [?])."""
+
+    @classmethod
+    def python_pipeline(cls, setup: MachineSetup) -> Pipeline:
+        """``fagor.xml``, built in Python."""
+        from postproc.cycles.resolve import CannedCycleResolveSyntax
+        from postproc.syntaxes.modal_state import ModalStateSyntax
+        return Pipeline(cls.NAME, [FagorProgramSyntax(), FagorBlockSyntax(), CannedCycleResolveSyntax(),
+                                   ModalStateSyntax()])
 
     @classmethod
     def context(cls, file: str, setup: MachineSetup, diagnostics: Diagnostics) -> Context:

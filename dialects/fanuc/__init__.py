@@ -64,15 +64,21 @@ class Fanuc(Dialect):
     its own before it (Fanuc makes them after the motion)."""
 
     @classmethod
-    def pipeline(cls, setup: MachineSetup) -> Pipeline:
+    def pipeline_file(cls, setup: MachineSetup) -> str:
         """The lathe pipeline (profile look-ahead, lathe cycles) for a lathe set-up, else the milling one."""
-        if setup.pipeline is None and cls.reads_lathe(setup):
-            from importlib import resources
-            from pathlib import Path
-            from postproc.syntax import load_pipeline
-            with resources.as_file(resources.files(__name__) / cls.LATHE_PIPELINE_FILE) as path:
-                return load_pipeline(Path(path))
-        return super().pipeline(setup)
+        return cls.LATHE_PIPELINE_FILE if cls.reads_lathe(setup) else cls.PIPELINE_FILE
+
+    @classmethod
+    def python_pipeline(cls, setup: MachineSetup) -> Pipeline:
+        """``fanuc_lathe.xml`` or ``fanuc.xml`` (``pipeline_file``), built in Python."""
+        from postproc.cycles.resolve import CannedCycleResolveSyntax
+        from postproc.syntaxes.modal_state import ModalStateSyntax
+        if cls.reads_lathe(setup):
+            from postproc.rs274.lathe_cycles import LatheCycleSyntax
+            return Pipeline(cls.NAME, [FanucProgramSyntax(), FanucLatheBlockSyntax(), ModalStateSyntax(),
+                                       LatheCycleSyntax()])
+        return Pipeline(cls.NAME, [FanucProgramSyntax(), FanucBlockSyntax(), CannedCycleResolveSyntax(),
+                                   ModalStateSyntax()])
 
 
 @hookimpl

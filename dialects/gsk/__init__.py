@@ -14,6 +14,8 @@ from typing import Callable
 
 from postproc.dialect import Dialect
 from postproc.hookspecs import hookimpl
+from postproc.setup import MachineSetup
+from postproc.syntax import Pipeline
 from postproc.xmlio import XFactory
 
 from .block_syntax import GskBlockSyntax
@@ -46,6 +48,13 @@ class Gsk(Dialect):
     """``%`` opens and closes a program, as on Fanuc."""
     PROGRAM_NUMBERS = True
     """``O0001``: the number the control stores the program under."""
+
+    @classmethod
+    def python_pipeline(cls, setup: MachineSetup) -> Pipeline:
+        """``gsk.xml``, built in Python."""
+        from postproc.rs274.lathe_cycles import LatheCycleSyntax
+        from postproc.syntaxes.modal_state import ModalStateSyntax
+        return Pipeline(cls.NAME, [GskBlockSyntax(), ModalStateSyntax(), LatheCycleSyntax()])
 
 
 @hookimpl

@@ -14,6 +14,8 @@ from typing import Callable
 from postproc.dialect import Dialect
 from postproc.hookspecs import hookimpl
 from postproc.rs274.order_of_execution import stops_before_motion
+from postproc.setup import MachineSetup
+from postproc.syntax import Pipeline
 from postproc.xmlio import XFactory
 
 from .block_syntax import IsgBlockSyntax
@@ -43,6 +45,14 @@ class Isg(Dialect):
     LOWERING = (stops_before_motion,)
     """A spindle stop or coolant off that the source made before its block's motion goes in a block of
     its own before it (ISG acts on M05/M09 after the block's motion, as Fanuc [?])."""
+
+    @classmethod
+    def python_pipeline(cls, setup: MachineSetup) -> Pipeline:
+        """``isg.xml``, built in Python."""
+        from postproc.cycles.resolve import CannedCycleResolveSyntax
+        from postproc.syntaxes.modal_state import ModalStateSyntax
+        return Pipeline(cls.NAME, [IsgProgramSyntax(), IsgBlockSyntax(), CannedCycleResolveSyntax(),
+                                   ModalStateSyntax()])
 
 
 @hookimpl

@@ -1,9 +1,9 @@
 """Mach3/Mach4 mill: a read-and-write dialect plugin, written as a third party would publish one.
 
 A plugin needs only what this package shows: a code table (``codes.py``, read and written alike), a
-reader (``reader.py``), a block syntax and its pipeline XML (``block_syntax.py``, ``mach3.xml``), a
-writer, a ``Dialect`` subclass with its capability flags, and ``hookimpl`` functions that register the
-dialect and its syntax object. It imports only public names of ``postproc`` and is found through its
+reader (``reader.py``), a block syntax and its pipeline (``block_syntax.py``; ``mach3.xml``, also built in
+Python by ``Mach3.python_pipeline``), a writer, a ``Dialect`` subclass with its capability flags, and
+``hookimpl`` functions that register the dialect and its syntax object. It imports only public names of ``postproc`` and is found through its
 entry point (``pyproject.toml``). docs/plugins.md walks through it.
 
 The controller: Mach3's interpreter follows the NIST RS274/NGC interpreter (words, modal groups, order of
@@ -25,6 +25,8 @@ from postproc.rs274.codes import CodeTable
 from postproc.rs274.cycle_words import rs274_cycle_words
 from postproc.rs274.order_of_execution import stops_after_motion
 from postproc.rs274.writer import WordWriter
+from postproc.setup import MachineSetup
+from postproc.syntax import Pipeline
 from postproc.xmlio import XFactory
 
 from .block_syntax import Mach3BlockSyntax
@@ -125,6 +127,14 @@ class Mach3(Dialect):
     source stopped after the motion (``postproc.rs274.order_of_execution``)."""
     DWELL_UNIT = "seconds"
     """G4 P is in seconds."""
+
+    @classmethod
+    def python_pipeline(cls, setup: MachineSetup) -> Pipeline:
+        """``mach3.xml``, built in Python (no XML is read when a program is: a faster start; the
+        conformance suite checks that it is the file's pipeline)."""
+        from postproc.cycles.resolve import CannedCycleResolveSyntax
+        from postproc.syntaxes.modal_state import ModalStateSyntax
+        return Pipeline(cls.NAME, [Mach3BlockSyntax(), CannedCycleResolveSyntax("rs274"), ModalStateSyntax()])
 
 
 @hookimpl

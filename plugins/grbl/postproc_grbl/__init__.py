@@ -31,6 +31,8 @@ from typing import Callable, ClassVar
 from postproc.dialect import Dialect
 from postproc.hookspecs import hookimpl
 from postproc.rs274.cycle_words import rs274_cycle_words
+from postproc.setup import MachineSetup
+from postproc.syntax import Pipeline
 from postproc.xmlio import XFactory
 
 from .codes import CODES
@@ -69,6 +71,12 @@ class Grbl(Dialect):
     """No tool table: G43 H is refused (grbl's own G43.1 takes the offset value)."""
     DWELL_UNIT = "seconds"
     """G4 P is in seconds."""
+
+    @classmethod
+    def python_pipeline(cls, setup: MachineSetup) -> Pipeline:
+        """``grbl.xml``, built in Python."""
+        from postproc.syntaxes.modal_state import ModalStateSyntax
+        return Pipeline(cls.NAME, [GrblBlockSyntax(), ModalStateSyntax()])
 
 
 @hookimpl

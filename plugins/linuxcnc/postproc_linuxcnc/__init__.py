@@ -22,6 +22,7 @@ from postproc.lower import Lowering
 from postproc.setup import MachineSetup
 from postproc.context import Context
 from postproc.rs274.cycle_words import rs274_cycle_words
+from postproc.syntax import Pipeline
 from postproc.xmlio import XFactory
 
 from .codes import CODES
@@ -72,6 +73,14 @@ class Linuxcnc(Dialect):
     """G73 retract and G83 re-approach clearance: a constant of the interpreter (0.010 in), not a
     machine parameter, so reading LinuxCNC uses it whatever the set-up's ``Cycles`` say, and a peck
     cycle read with another is expanded for LinuxCNC."""
+
+    @classmethod
+    def python_pipeline(cls, setup: MachineSetup) -> Pipeline:
+        """``linuxcnc.xml``, built in Python."""
+        from postproc.cycles.resolve import CannedCycleResolveSyntax
+        from postproc.syntaxes.modal_state import ModalStateSyntax
+        return Pipeline(cls.NAME, [LinuxcncProgramSyntax(), NgcBlockSyntax(), CannedCycleResolveSyntax("rs274"),
+                                   ModalStateSyntax()])
 
     @classmethod
     def context(cls, file: str, setup: MachineSetup, diagnostics: Diagnostics) -> Context:
