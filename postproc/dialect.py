@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import abc
 from pathlib import Path
-from typing import Callable, ClassVar, Iterable, Iterator
+from typing import Callable, ClassVar, Generic, Iterable, Iterator, TypeVar, cast
 
 from .errors import Diagnostics
 from .ir import Block
@@ -31,15 +31,65 @@ class Reader(abc.ABC):
         """Yield one block per physical line, in order, with its source location."""
 
 
+T = TypeVar("T")
+
+
+class Lazy(Generic[T]):
+    """A class attribute imported when it is first read: ``READER = Lazy[type[Reader]](".reader:MyReader")``
+    (``module:name`` as an entry point spells it; a module starting with ``.`` is relative to the package
+    of the module that defines the class, so a renamed copy of a plugin needs no edit). Reading it gives
+    the object, as a plain attribute would.
+
+    Every installed dialect is registered at start-up, but a run reads and writes one or two: a dialect
+    whose reader and writer (with their lexers, expression parsers, ...) are lazy costs the others
+    nothing but its capability table (a few ms of a short run's start-up per dialect). With
+    ``XFactory.register_lazy`` for its syntax objects and ``python_pipeline`` importing their modules
+    inside, registering a dialect imports none of them (``tests/test_startup_imports.py``)."""
+
+    __slots__ = ("target", "_module", "_value", "_loaded")
+
+    def __init__(self, target: str) -> None:
+        self.target = target
+        self._module = ""
+        """The module of the class the attribute is set on (relative targets start from its package)."""
+        self._value: object = None
+        self._loaded = False
+
+    def __set_name__(self, owner: type, name: str) -> None:
+        self._module = owner.__module__
+
+    def __get__(self, obj: object, owner: type | None = None) -> T:
+        if not self._loaded:
+            self._value = self._load()
+            self._loaded = True
+        return cast(T, self._value)
+
+    def _load(self) -> object:
+        import importlib
+        import sys
+        module, _, names = self.target.partition(":")
+        package = None
+        if module.startswith("."):
+            defining = sys.modules.get(self._module)
+            package = getattr(defining, "__package__", None) or self._module.rpartition(".")[0]
+        found: object = importlib.import_module(module, package)
+        for name in names.split(".") if names else ():
+            found = getattr(found, name)
+        return found
+
+    def __repr__(self) -> str:
+        return f"Lazy({self.target!r})"
+
+
 class Dialect:
     """A controller dialect. Subclasses set NAME and override what differs."""
 
     NAME: ClassVar[str] = ""
     DESCRIPTION: ClassVar[str] = ""
     READER: ClassVar[type[Reader] | None] = None
-    """Reader class, or None for a write-only dialect."""
+    """Reader class, or None for a write-only dialect (``Lazy`` imports it on first use)."""
     WRITER: ClassVar[type[Writer] | None] = None
-    """Writer class, or None for a read-only dialect."""
+    """Writer class, or None for a read-only dialect (``Lazy`` imports it on first use)."""
     PIPELINE_FILE: ClassVar[str | None] = None
     """Name of the reading pipeline XML shipped in the dialect's package (``pipeline_file``); a dialect
     may also declare it in Python (``python_pipeline``)."""

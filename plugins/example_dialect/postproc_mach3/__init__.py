@@ -17,7 +17,7 @@ from __future__ import annotations
 
 from typing import Any, Callable, ClassVar
 
-from postproc.dialect import Dialect
+from postproc.dialect import Dialect, Lazy, Reader
 from postproc.expr import Expr
 from postproc.hookspecs import hookimpl
 from postproc.ir import Block, Motion
@@ -29,9 +29,7 @@ from postproc.setup import MachineSetup
 from postproc.syntax import Pipeline
 from postproc.xmlio import XFactory
 
-from .block_syntax import Mach3BlockSyntax
 from .codes import CODES
-from .reader import Mach3Reader
 
 
 class Mach3Writer(WordWriter):
@@ -106,7 +104,9 @@ class Mach3Writer(WordWriter):
 class Mach3(Dialect):
     NAME = "mach3"
     DESCRIPTION = "Mach3/Mach4 mill (RS274/NGC words, G73/G81/G83 kept, 4-decimal axis words)"
-    READER = Mach3Reader
+    READER = Lazy[type[Reader]](".reader:Mach3Reader")
+    """Imported when a run first reads Mach3 (``Lazy``), as is the block syntax: a run that does not
+    use this dialect does not pay for its modules."""
     WRITER = Mach3Writer
     PIPELINE_FILE = "mach3.xml"
     CYCLE_WORDS = rs274_cycle_words(CODES, ("L",))
@@ -134,6 +134,7 @@ class Mach3(Dialect):
         conformance suite checks that it is the file's pipeline)."""
         from postproc.cycles.resolve import CannedCycleResolveSyntax
         from postproc.syntaxes.modal_state import ModalStateSyntax
+        from .block_syntax import Mach3BlockSyntax
         return Pipeline(cls.NAME, [Mach3BlockSyntax(), CannedCycleResolveSyntax("rs274"), ModalStateSyntax()])
 
 
@@ -144,4 +145,5 @@ def postproc_register_dialects(register: Callable[[type], None]) -> None:
 
 @hookimpl
 def postproc_register_xml(factory: XFactory) -> None:
-    Mach3BlockSyntax.reg(factory)
+    """The block syntax, imported when an element names it (``XFactory.register_lazy``)."""
+    factory.register_lazy("Mach3BlockSyntax", f"{__name__}.block_syntax:Mach3BlockSyntax")
