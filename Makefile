@@ -39,7 +39,7 @@ run: install
 test: install
 	$(BIN)/postproc --version
 	$(BIN)/python -m pytest
-	if [ -f postproc/_compiled/manifest.json ]; then \
+	if [ -f postproc/_compiled/manifest.txt ]; then \
 	  POSTPROC_PURE=1 $(BIN)/postproc --version && POSTPROC_PURE=1 $(BIN)/python -m pytest; fi
 
 bench: $(NATIVE)

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import abc
 from pathlib import Path
-from typing import Callable, ClassVar, Iterable, Iterator
+from typing import Callable, ClassVar, Generic, Iterable, Iterator, TypeVar, cast
 
 from .errors import Diagnostics
 from .ir import Block
@@ -31,17 +31,68 @@ class Reader(abc.ABC):
         """Yield one block per physical line, in order, with its source location."""
 
 
+T = TypeVar("T")
+
+
+class Lazy(Generic[T]):
+    """A class attribute imported when it is first read: ``READER = Lazy[type[Reader]](".reader:MyReader")``
+    (``module:name`` as an entry point spells it; a module starting with ``.`` is relative to the package
+    of the module that defines the class, so a renamed copy of a plugin needs no edit). Reading it gives
+    the object, as a plain attribute would.
+
+    Every installed dialect is registered at start-up, but a run reads and writes one or two: a dialect
+    whose reader and writer (with their lexers, expression parsers, ...) are lazy costs the others
+    nothing but its capability table (a few ms of a short run's start-up per dialect). With
+    ``XFactory.register_lazy`` for its syntax objects and ``python_pipeline`` importing their modules
+    inside, registering a dialect imports none of them (``tests/test_startup_imports.py``)."""
+
+    __slots__ = ("target", "_module", "_value", "_loaded")
+
+    def __init__(self, target: str) -> None:
+        self.target = target
+        self._module = ""
+        """The module of the class the attribute is set on (relative targets start from its package)."""
+        self._value: object = None
+        self._loaded = False
+
+    def __set_name__(self, owner: type, name: str) -> None:
+        self._module = owner.__module__
+
+    def __get__(self, obj: object, owner: type | None = None) -> T:
+        if not self._loaded:
+            self._value = self._load()
+            self._loaded = True
+        return cast(T, self._value)
+
+    def _load(self) -> object:
+        import importlib
+        import sys
+        module, _, names = self.target.partition(":")
+        package = None
+        if module.startswith("."):
+            defining = sys.modules.get(self._module)
+            package = getattr(defining, "__package__", None) or self._module.rpartition(".")[0]
+        found: object = importlib.import_module(module, package)
+        for name in names.split(".") if names else ():
+            found = getattr(found, name)
+        return found
+
+    def __repr__(self) -> str:
+        return f"Lazy({self.target!r})"
+
+
 class Dialect:
     """A controller dialect. Subclasses set NAME and override what differs."""
 
     NAME: ClassVar[str] = ""
     DESCRIPTION: ClassVar[str] = ""
     READER: ClassVar[type[Reader] | None] = None
-    """Reader class, or None for a write-only dialect."""
+    """Reader class, or None for a write-only dialect (``Lazy`` imports it on first use)."""
     WRITER: ClassVar[type[Writer] | None] = None
-    """Writer class, or None for a read-only dialect."""
+    """Writer class, or None for a read-only dialect (``Lazy`` imports it on first use)."""
     PIPELINE_FILE: ClassVar[str | None] = None
-    """Name of the reading pipeline XML shipped in the dialect's package."""
+    """Name of the reading pipeline XML shipped in the dialect's package (``pipeline_file``); a dialect
+    may also declare it in Python (``python_pipeline``)."""
     LOWERING: ClassVar[tuple[Callable[..., Iterator[Block]], ...]] = ()
     """Lowering steps only this dialect needs as a target (``postproc.lower``), run after the generic
     ones, in order: pure block-stream transforms ``step(blocks, ctx, target)``."""
@@ -137,19 +188,42 @@ class Dialect:
 
     @classmethod
     def pipeline(cls, setup: MachineSetup) -> Pipeline:
-        """The reading pipeline: the set-up's override if it names one, else the dialect's own file."""
+        """The reading pipeline: the set-up's override if it names one, else the dialect's own, as it
+        declares it in Python (``python_pipeline``) or else from its file (``file_pipeline``)."""
         override = setup.pipeline_path()
         if override is not None:
             return load_pipeline(override)
-        if cls.PIPELINE_FILE is None:
+        declared = cls.python_pipeline(setup)
+        return declared if declared is not None else cls.file_pipeline(setup)
+
+    @classmethod
+    def python_pipeline(cls, setup: MachineSetup) -> Pipeline | None:
+        """The pipeline of the dialect's own file (``pipeline_file(setup)``), built in Python: a run then
+        reads no XML and imports no XML parser (lxml costs a one-line translation ~5 ms of its start-up).
+        None (the default): the file is read. The file stays the definition a set-up's ``pipeline``
+        starts from; the conformance suite (``postproc.testing``) checks that the two are the same.
+        Import the steps' modules inside the method, so that registering the dialect does not."""
+        return None
+
+    @classmethod
+    def pipeline_file(cls, setup: MachineSetup) -> str | None:
+        """The name of the pipeline XML beside the dialect's module that reads under ``setup``
+        (``PIPELINE_FILE``; a dialect with one per machine type picks it here)."""
+        return cls.PIPELINE_FILE
+
+    @classmethod
+    def file_pipeline(cls, setup: MachineSetup) -> Pipeline:
+        """The pipeline read from the dialect's file (``pipeline_file``); one of no steps where it has none."""
+        name = cls.pipeline_file(setup)
+        if name is None:
             return Pipeline(cls.NAME, [])
         module = cls.__module__
         package = module if _is_package(module) else module.rpartition(".")[0]
         beside = _package_folder(package)
         if beside is not None:
-            return load_pipeline(beside / cls.PIPELINE_FILE)
+            return load_pipeline(beside / name)
         from importlib import resources  # a package inside a zip file: its data is extracted
-        ref = resources.files(package) / cls.PIPELINE_FILE
+        ref = resources.files(package) / name
         with resources.as_file(ref) as path:
             return load_pipeline(Path(path))
 

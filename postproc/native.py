@@ -1,8 +1,8 @@
 """The compiled hot path (mypyc), used only when it was built from exactly the sources on disk.
 
 ``setup.py`` compiles the hot modules (``[tool.postproc] compiled`` in ``pyproject.toml``) into
-``postproc/_compiled/``, a tree that mirrors their dotted names, and writes ``manifest.json`` there with
-the SHA-256 of every source it compiled. The ``.py`` files stay where they are, so one installation
+``postproc/_compiled/``, a tree that mirrors their dotted names, and writes ``manifest.txt`` there with
+the SHA-256 of every source it compiled (``MANIFEST``). The ``.py`` files stay where they are, so one installation
 holds both: a meta-path finder placed before Python's own serves the compiled modules, unless
 ``POSTPROC_PURE=1``, the tree is missing (no C compiler at install time) or incomplete, or a source
 differs from the one compiled (an edited checkout runs pure Python until ``make install`` rebuilds it).
@@ -18,18 +18,38 @@ importing ``hashlib``, which loads OpenSSL) cost a one-line translation ~5 ms of
 from __future__ import annotations
 
 import importlib.machinery
-import json
 import os
 import sys
 from importlib.machinery import ModuleSpec
 from pathlib import Path
 from types import ModuleType
-from typing import Mapping, Sequence
+from typing import Mapping, NamedTuple, Sequence
 
 ROOT = Path(__file__).resolve().parent.parent
 """The folder that holds ``postproc/`` and ``dialects/`` (site-packages, or the checkout when editable)."""
 
 PURE_VARIABLE = "POSTPROC_PURE"
+
+MANIFEST = "manifest.txt"
+"""The compiled tree's manifest, as ``setup.py`` writes it: UTF-8 text, fields separated by tabs. Its
+first line is ``MANIFEST_HEADER``, its second ``suffix`` and the extension suffix it was built for; then
+one line per compiled module: its dotted name and its file (relative to the tree), and for a module
+compiled from a source (every one but the group's shared library) that source (relative to the root),
+its SHA-256, size in bytes and modification time in ns. Plain lines, not JSON: importing ``json`` cost
+every start ~1 ms."""
+MANIFEST_HEADER = "postproc compiled manifest 1"
+
+
+class Compiled(NamedTuple):
+    """One line of the manifest: a compiled module's file, and the source it was compiled from."""
+
+    file: str
+    """Relative to the compiled tree."""
+    source: str | None = None
+    """Relative to the root; None for the group's shared library."""
+    sha256: str = ""
+    size: int = -1
+    mtime_ns: int = -1
 
 
 class CompiledFinder:
@@ -52,13 +72,13 @@ def _digest(path: Path) -> str:
     return hashlib.sha256(path.read_bytes()).hexdigest()
 
 
-def _fresh(path: Path, entry: Mapping[str, object]) -> bool:
+def _fresh(path: Path, entry: Compiled) -> bool:
     """Whether the source at ``path`` is the one the manifest ``entry`` was compiled from."""
     try:
         st = os.stat(path)
-        if st.st_size == entry.get("size") and st.st_mtime_ns == entry.get("mtime_ns"):
+        if st.st_size == entry.size and st.st_mtime_ns == entry.mtime_ns:
             return True
-        return _digest(path) == entry["sha256"]
+        return _digest(path) == entry.sha256
     except OSError:
         return False
 
@@ -70,23 +90,42 @@ def plan(root: Path, environ: Mapping[str, str]) -> tuple[str, dict[str, Path]]:
         return f"{PURE_VARIABLE}={environ[PURE_VARIABLE]}", {}
     compiled = root / "postproc" / "_compiled"
     try:
-        manifest = json.loads((compiled / "manifest.json").read_text(encoding="utf-8"))
+        built_for, modules = read_manifest((compiled / MANIFEST).read_text(encoding="utf-8"))
     except (OSError, ValueError):
         return "not compiled at install time", {}
     suffix = importlib.machinery.EXTENSION_SUFFIXES[0]
-    if manifest.get("suffix") != suffix:
-        return f"compiled for {manifest.get('suffix')}, not {suffix}", {}
+    if built_for != suffix:
+        return f"compiled for {built_for}, not {suffix}", {}
     files: dict[str, Path] = {}
-    for name, entry in manifest["modules"].items():
-        file = compiled / entry["file"]
+    for name, entry in modules.items():
+        file = compiled / entry.file
         if not file.is_file():
-            return f"the compiled build is incomplete ({entry['file']} is missing)", {}
-        source = entry.get("source")
+            return f"the compiled build is incomplete ({entry.file} is missing)", {}
+        source = entry.source
         if source is not None:
             if not _fresh(root / source, entry):
                 return f"{source} changed since it was compiled (run make install)", {}
         files[name] = file
     return "", files
+
+
+def read_manifest(text: str) -> tuple[str, dict[str, Compiled]]:
+    """The extension suffix and the compiled modules by name of a manifest's text (``MANIFEST``);
+    ValueError if it is not one."""
+    lines = text.splitlines()
+    if len(lines) < 2 or lines[0] != MANIFEST_HEADER or not lines[1].startswith("suffix\t"):
+        raise ValueError("not a postproc manifest")
+    modules: dict[str, Compiled] = {}
+    for line in lines[2:]:
+        fields = line.split("\t")
+        if len(fields) == 2:
+            modules[fields[0]] = Compiled(fields[1])
+        elif len(fields) == 6:
+            name, file, source, sha256, size, mtime_ns = fields
+            modules[name] = Compiled(file, source, sha256, int(size), int(mtime_ns))
+        else:
+            raise ValueError(f"a manifest line with {len(fields)} fields")
+    return lines[1].partition("\t")[2], modules
 
 
 _REASON, _FILES = plan(ROOT, os.environ)

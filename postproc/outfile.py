@@ -1,6 +1,6 @@
 """Writing a command's output: complete or not at all, and never at the cost of what ``-o`` names.
 
-The output is written to a temporary file first (no partial outputs) and then:
+The output is written to a temporary file first (no partial outputs; ``temporary_file``) and then:
 - a regular file (or a new name) is replaced atomically by renaming the temporary file over it,
   keeping the old file's permission bits (a new file gets the umask's, as any program's output);
 - a symlink is followed: its target is what gets written (replaced, if it is a regular file);
@@ -30,11 +30,10 @@ def write_output(path: str | None, write: Callable[[TextIO], object], *, binary:
     """Run ``write`` on a temporary file and put the result where ``path`` says (stdout if None).
     ``in_place``: True allows ``path`` to be the input, False refuses it and names ``--in-place``,
     None refuses it (the command has no such option)."""
-    import tempfile  # with shutil, random, lzma, bz2: ~3 ms a command that writes nothing need not pay
     target, regular = (None, True) if path is None else _target(path, input_path, in_place)
     folder = os.path.dirname(target) if target is not None and regular else None
     try:
-        fd, tmp = tempfile.mkstemp(prefix=".postproc-", dir=folder)
+        fd, tmp = temporary_file(folder)
     except OSError as exc:
         raise UsageError(f"cannot write {path}: {exc.strerror}") from None
     try:
@@ -50,6 +49,52 @@ def write_output(path: str | None, write: Callable[[TextIO], object], *, binary:
     finally:
         if os.path.lexists(tmp):
             os.unlink(tmp)
+
+
+TEMPORARY_PREFIX = ".postproc-"
+TEMPORARY_NAMES = 100
+"""Random names tried in a folder before giving up (``tempfile``'s ``TMP_MAX`` is 10000; a name has
+64 random bits here, so a second draw is already a surprise)."""
+
+
+def temporary_file(folder: str | None) -> tuple[int, str]:
+    """A new file of this run's own, open for writing: ``(descriptor, absolute path)``, created in
+    ``folder`` (beside the target, so that renaming it over the target is atomic), or where None in the
+    first usable temporary folder (``tempfile.gettempdir``'s choice: ``$TMPDIR``, ``$TEMP``, ``$TMP``,
+    then the system's).
+
+    What ``tempfile.mkstemp`` does, with ``os`` alone: created exclusively (``O_EXCL``: never an
+    existing file, nor a symlink planted under the name), mode 0600, not inherited by child processes,
+    a random name drawn again when taken. ``tempfile`` imports shutil, random, bz2 and lzma: a few ms of
+    every command that writes a file, a tenth of a one-line translation's start-up."""
+    flags = (os.O_RDWR | os.O_CREAT | os.O_EXCL | getattr(os, "O_NOFOLLOW", 0) | getattr(os, "O_BINARY", 0))
+    failed: OSError = FileNotFoundError("no folder for the temporary output")
+    for place in [folder] if folder is not None else _temporary_folders():
+        for _ in range(TEMPORARY_NAMES):
+            name = os.path.abspath(os.path.join(place, TEMPORARY_PREFIX + os.urandom(8).hex()))
+            try:
+                return os.open(name, flags, 0o600), name  # os.open's descriptors are not inheritable
+            except FileExistsError as exc:
+                failed = exc  # another file has this name: draw another
+            except OSError as exc:
+                failed = exc  # not usable: the next folder, if any
+                break
+    raise failed
+
+
+def _temporary_folders() -> list[str]:
+    """Where ``tempfile.gettempdir`` looks, in its order (it takes the first it can write in)."""
+    found = [folder for folder in (os.environ.get(name) for name in ("TMPDIR", "TEMP", "TMP")) if folder]
+    if os.name == "nt":
+        found += [os.path.expanduser(r"~\AppData\Local\Temp"), os.path.expandvars(r"%SYSTEMROOT%\Temp"),
+                  r"c:\temp", r"c:\tmp", r"\temp", r"\tmp"]
+    else:
+        found += ["/tmp", "/var/tmp", "/usr/tmp"]
+    try:
+        found.append(os.getcwd())
+    except OSError:
+        found.append(os.curdir)
+    return found
 
 
 def _target(path: str, input_path: str | None, in_place: bool | None) -> tuple[str, bool]:
@@ -106,9 +151,9 @@ def _into_device(tmp: str, target: str, path: str) -> None:
 
 
 def _copy(tmp: str, out: BinaryIO) -> None:
-    import shutil
     with open(tmp, "rb") as src:
-        shutil.copyfileobj(src, out, BUFFER)
+        while chunk := src.read(BUFFER):
+            out.write(chunk)
     out.flush()
 
 

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 from mypy_extensions import mypyc_attr
 
+import importlib
 import re
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, Callable, ClassVar, Iterator, TypeVar
@@ -141,11 +142,14 @@ def where(el: etree._Element, file: str | None = None) -> Location:
 
 @mypyc_attr(allow_interpreted_subclasses=True)
 class XFactory:
-    """Maps element names to constructors. ``reg`` on a node class is idempotent."""
+    """Maps element names to constructors. ``reg`` on a node class is idempotent; ``register_lazy``
+    registers a name whose class is imported when first needed."""
 
     def __init__(self) -> None:
         self._ctors: dict[str, Callable[[etree._Element], Any]] = {}
         self._classes: dict[str, type] = {}
+        self._lazy: dict[str, str] = {}
+        """Element name -> ``"module:Class"`` registered by ``register_lazy``, not imported yet."""
 
     def register(self, cls: type["XmlNode"]) -> None:
         known = self._classes.get(cls.XNAME)
@@ -153,12 +157,50 @@ class XFactory:
             return
         if known is not None:
             raise ConfigError(f"element name {cls.XNAME!r} registered twice ({known.__name__}, {cls.__name__})")
+        lazy = self._lazy.get(cls.XNAME)
+        if lazy is not None and lazy != _target_of(cls) and _import_target(lazy) is not cls:
+            raise ConfigError(f"element name {cls.XNAME!r} registered twice ({lazy}, {cls.__name__})")
+        self._lazy.pop(cls.XNAME, None)
         self._classes[cls.XNAME] = cls
         self._ctors[cls.XNAME] = cls.from_xml
+
+    def register_lazy(self, xname: str, target: str) -> None:
+        """Register the element name ``xname`` for the node class ``target`` (``"package.module:Class"``),
+        imported only when an element of that name is created or the classes are listed: a plugin
+        registers every name it has, and a run that reads none of them imports none of its modules
+        (lexers, expression parsers, ...: a few ms of a short run's start-up per dialect). Idempotent;
+        the class must have ``xname`` as its ``XNAME`` (checked when it is imported)."""
+        known = self._classes.get(xname)
+        if known is not None:
+            if _target_of(known) != target and _import_target(target) is not known:
+                raise ConfigError(f"element name {xname!r} registered twice ({known.__name__}, {target})")
+            return
+        lazy = self._lazy.get(xname)
+        if lazy is not None and lazy != target:
+            raise ConfigError(f"element name {xname!r} registered twice ({lazy}, {target})")
+        self._lazy[xname] = target
+
+    def _resolve(self, xname: str) -> None:
+        """Import the class registered lazily under ``xname`` and register it."""
+        target = self._lazy[xname]
+        try:
+            cls = _import_target(target)
+        except (ImportError, AttributeError) as exc:
+            raise ConfigError(f"<{xname}>: cannot import its class {target}: {exc}") from None
+        if not (isinstance(cls, type) and issubclass(cls, XmlNode) and cls.XNAME == xname):
+            raise ConfigError(f"<{xname}>: {target} is not an XML node class named {xname!r}")
+        del self._lazy[xname]
+        self.register(cls)
 
     def create(self, el: etree._Element) -> Any:
         tag = el.tag if isinstance(el.tag, str) else ""
         ctor = self._ctors.get(tag)
+        if ctor is None and tag in self._lazy:
+            try:
+                self._resolve(tag)
+            except ConfigError as err:
+                raise ConfigError(err.message, where(el)) from None
+            ctor = self._ctors.get(tag)
         if ctor is None:
             raise ConfigError(f"unknown element <{tag}>", where(el))
         try:
@@ -174,10 +216,27 @@ class XFactory:
                 yield self.create(child)
 
     def names(self) -> list[str]:
-        return sorted(self._classes)
+        """Every registered element name (lazily registered ones too, without importing them)."""
+        return sorted(set(self._classes) | set(self._lazy))
 
     def classes(self) -> list[type]:
+        """Every registered class, in the order of their names (lazily registered ones are imported)."""
+        for xname in list(self._lazy):
+            self._resolve(xname)
         return [self._classes[n] for n in self.names()]
+
+
+def _target_of(cls: type) -> str:
+    return f"{cls.__module__}:{cls.__qualname__}"
+
+
+def _import_target(target: str) -> Any:
+    """The object ``"package.module:Name"`` names (an entry point's spelling)."""
+    module, _, name = target.partition(":")
+    found: Any = importlib.import_module(module)
+    for part in name.split(".") if name else ():
+        found = getattr(found, part)
+    return found
 
 
 DEFAULT = XFactory()

@@ -231,6 +231,20 @@ def test_help_describes_every_option_and_shows_an_example(cli, command):
     assert command in top
 
 
+@pytest.mark.parametrize("columns", [None, "", "abc", "0", "-3", "37", "120"])
+def test_help_is_as_wide_as_argparse_would_make_it(monkeypatch, columns):
+    """The formatter sizes itself without shutil (``cli._columns``), as argparse does with it."""
+    import shutil
+    if columns is None:
+        monkeypatch.delenv("COLUMNS", raising=False)
+    else:
+        monkeypatch.setenv("COLUMNS", columns)
+    assert postproc.cli._columns() == shutil.get_terminal_size().columns
+    ours = postproc.cli.build_parser().format_help()
+    monkeypatch.setattr(postproc.cli, "_Formatter", argparse.RawDescriptionHelpFormatter)
+    assert ours == postproc.cli.build_parser().format_help()
+
+
 def test_the_console_script_is_installed_beside_the_interpreter():
     """``make install``/``make run`` put ``postproc`` in ``.venv/bin`` (README: ``. .venv/bin/activate``)."""
     script = Path(sys.executable).parent / "postproc"

@@ -4,7 +4,7 @@ deliberately broken copies of the Mach3 example plugin and read the report.
 Each copy is the example package copied and renamed, with one defect put in by a text edit, and made
 installed by a ``.dist-info`` folder with its entry point on ``PYTHONPATH`` (what pip would write):
 a writer that drops the Y word, a capability flag that lies (an oriented spindle stop with no M19 row),
-and a reader whose error has no location.
+a reader whose error has no location, and a pipeline file that says other than ``python_pipeline``.
 """
 
 from __future__ import annotations
@@ -34,6 +34,7 @@ DEFECTS: dict[str, list[tuple[str, str, str]]] = {
                    "            if \"#\" in (block.text or \"\"):\n"
                    "                raise ParseError(\"parameters are not supported\")\n"
                    "            yield block\n")],
+    "drift": [("mach3.xml", '<CannedCycleResolveSyntax semantics="rs274"/>', "<CannedCycleResolveSyntax/>")],
 }
 
 TEST_MODULE = '''
@@ -43,10 +44,10 @@ from postproc.testing import ConformanceTests, DialectUnderTest
 
 HERE = Path(__file__).parent
 
-@pytest.fixture(params=["dropy", "lies", "notap", "unlocated"])
+@pytest.fixture(params=["dropy", "lies", "notap", "unlocated", "drift"])
 def postproc_conformance(request):
     name = request.param
-    others = frozenset({"mach3", "dropy", "lies", "notap", "unlocated"}) - {name}
+    others = frozenset({"mach3", "dropy", "lies", "notap", "unlocated", "drift"}) - {name}
     return DialectUnderTest(name, HERE / "examples", HERE / ("invalid_" + name), skip_targets=others)
 
 class TestBroken(ConformanceTests):
@@ -130,9 +131,16 @@ def test_an_unlocated_error_is_reported_as_such(report: str) -> None:
     assert "parameter.nc" in text and "an error without FILE:LINE:COL: 'error: parameters are not supported'" in text
 
 
+def test_a_pipeline_file_that_drifted_from_python_pipeline_is_shown_beside_it(report: str) -> None:
+    """A run reads with ``python_pipeline`` and never sees the file: only this check does."""
+    text = _section(report, "test_python_pipeline_is_the_pipeline_file", "drift")
+    assert "drift: python_pipeline under a mill set-up is not the pipeline of mach3.xml" in text
+    assert '<CannedCycleResolveSyntax semantics="rs274"/>' in text and "<CannedCycleResolveSyntax/>" in text
+
+
 def test_checks_the_defects_do_not_touch_still_pass(report: str) -> None:
     summary = report.splitlines()
-    for case in ("dropy", "lies", "notap", "unlocated"):
+    for case in ("dropy", "lies", "notap", "unlocated", "drift"):
         for test in ("test_examples_read_back_byte_for_byte", "test_ir_survives_xml"):
             assert f"FAILED test_broken.py::TestBroken::{test}[{case}]" not in summary, report
     assert not any(line.startswith("FAILED") and "[lies]" in line and "capability" not in line for line in summary), report

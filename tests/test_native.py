@@ -9,7 +9,6 @@ import copy
 import hashlib
 import importlib
 import importlib.machinery
-import json
 import os
 import pickle
 import subprocess
@@ -27,7 +26,7 @@ from postproc.source_map import ExecutedBlock
 
 ROOT = Path(__file__).resolve().parents[1]
 HOT = tomllib.loads((ROOT / "pyproject.toml").read_text(encoding="utf-8"))["tool"]["postproc"]["compiled"]
-MANIFEST = ROOT / "postproc" / "_compiled" / "manifest.json"
+MANIFEST = ROOT / "postproc" / "_compiled" / native.MANIFEST
 PURE = os.environ.get("POSTPROC_PURE", "") not in ("", "0")
 SUFFIX = importlib.machinery.EXTENSION_SUFFIXES[0]
 
@@ -63,11 +62,43 @@ def _tree(tmp_path: Path, source_text: str, recorded: str, with_file: bool = Tru
     file = "postproc/hot" + SUFFIX
     if with_file:
         (tmp_path / "postproc" / "_compiled" / file).write_bytes(b"")
-    entry = {"file": file, "source": "postproc/hot.py",
-             "sha256": hashlib.sha256(recorded.encode()).hexdigest()}
-    manifest = {"suffix": SUFFIX, "modules": {"postproc.hot": entry}}
-    (tmp_path / "postproc" / "_compiled" / "manifest.json").write_text(json.dumps(manifest), encoding="utf-8")
+    _write_manifest(tmp_path, file, hashlib.sha256(recorded.encode()).hexdigest(), -1, -1)
     return tmp_path
+
+
+def _write_manifest(root: Path, file: str, sha256: str, size: int, mtime_ns: int) -> None:
+    """A manifest as ``setup.py`` writes it, of one module compiled from a source."""
+    lines = [native.MANIFEST_HEADER, f"suffix\t{SUFFIX}", f"postproc.hot\t{file}\tpostproc/hot.py\t{sha256}\t{size}\t{mtime_ns}"]
+    (root / "postproc" / "_compiled" / native.MANIFEST).write_text("\n".join(lines) + "\n", encoding="utf-8")
+
+
+def test_the_manifest_is_read_as_setup_writes_it() -> None:
+    text = (f"{native.MANIFEST_HEADER}\nsuffix\t.so\ngroup__mypyc\tgroup__mypyc.so\n"
+            "pkg.hot\tpkg/hot.so\tpkg/hot.py\tabc123\t42\t1700000000123456789\n")
+    assert native.read_manifest(text) == (".so", {
+        "group__mypyc": native.Compiled("group__mypyc.so"),
+        "pkg.hot": native.Compiled("pkg/hot.so", "pkg/hot.py", "abc123", 42, 1700000000123456789)})
+
+
+@pytest.mark.parametrize("text", [
+    "", "{}\n", "suffix\t.so\n", f"{native.MANIFEST_HEADER}\n", f"{native.MANIFEST_HEADER}\nsuffix\t.so\nhalf\n",
+    f"{native.MANIFEST_HEADER}\nsuffix\t.so\npkg.hot\tpkg/hot.so\tpkg/hot.py\tabc\tbig\t1\n",
+])
+def test_a_broken_manifest_is_no_build(tmp_path: Path, text: str) -> None:
+    with pytest.raises(ValueError):
+        native.read_manifest(text)
+    root = _tree(tmp_path, "x = 1\n", "x = 1\n")
+    (root / "postproc" / "_compiled" / native.MANIFEST).write_text(text, encoding="utf-8")
+    assert native.plan(root, {}) == ("not compiled at install time", {})
+
+
+@pytest.mark.skipif(PURE or not MANIFEST.is_file(), reason="no compiled build to check")
+def test_the_build_lists_every_hot_source_with_its_hash() -> None:
+    _, modules = native.read_manifest(MANIFEST.read_text(encoding="utf-8"))
+    sources = {entry.source: entry for entry in modules.values() if entry.source is not None}
+    assert sorted(sources) == sorted(HOT)
+    for source, entry in sources.items():
+        assert entry.sha256 == hashlib.sha256((ROOT / source).read_bytes()).hexdigest(), source
 
 
 def test_a_fresh_build_is_planned(tmp_path: Path) -> None:
@@ -82,10 +113,9 @@ def test_an_edited_source_runs_pure(tmp_path: Path) -> None:
 
 def _record_stat(root: Path, size: int, mtime_ns: int) -> None:
     """Record a size and modification time for the fake source, as ``setup.py`` does for a real one."""
-    path = root / "postproc" / "_compiled" / "manifest.json"
-    manifest = json.loads(path.read_text(encoding="utf-8"))
-    manifest["modules"]["postproc.hot"].update(size=size, mtime_ns=mtime_ns)
-    path.write_text(json.dumps(manifest), encoding="utf-8")
+    _, modules = native.read_manifest((root / "postproc" / "_compiled" / native.MANIFEST).read_text(encoding="utf-8"))
+    entry = modules["postproc.hot"]
+    _write_manifest(root, entry.file, entry.sha256, size, mtime_ns)
 
 
 def test_a_source_with_its_recorded_size_and_time_is_not_hashed(tmp_path: Path) -> None:

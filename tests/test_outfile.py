@@ -182,3 +182,58 @@ def test_a_full_device_is_a_usage_error(cli, tmp_path: Path) -> None:
     result = cli(TRANSLATE[0], PROGRAM, *TRANSLATE[1:], "-o", device)
     assert (result.status, result.err) == (2, f"postproc: cannot write {device}: No space left on device\n")
     assert stat.S_ISCHR(os.stat(device).st_mode)
+
+
+# -- the temporary file, made with os alone (tempfile costs a one-line translation ~3 ms) -----------
+
+def test_the_temporary_file_is_new_private_and_beside_the_target(tmp_path: Path) -> None:
+    from postproc.outfile import TEMPORARY_PREFIX, temporary_file
+    fd, name = temporary_file(str(tmp_path))
+    os.close(fd)
+    assert os.path.dirname(name) == str(tmp_path) and os.path.basename(name).startswith(TEMPORARY_PREFIX)
+    assert stat.S_IMODE(os.stat(name).st_mode) == 0o600 and os.path.getsize(name) == 0
+    fd2, other = temporary_file(str(tmp_path))
+    os.close(fd2)
+    assert other != name
+
+
+def test_a_taken_name_is_drawn_again_and_left_alone(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """A file or a symlink already under the drawn name is never opened (O_EXCL): another name is drawn."""
+    from postproc import outfile
+    draws = iter([b"\0" * 8, b"\0" * 8, b"\1" * 8])
+    monkeypatch.setattr(outfile.os, "urandom", lambda n: next(draws))
+    taken = tmp_path / (outfile.TEMPORARY_PREFIX + "00" * 8)
+    (tmp_path / "elsewhere").write_text("keep\n")
+    taken.symlink_to(tmp_path / "elsewhere")
+    fd, name = outfile.temporary_file(str(tmp_path))
+    os.write(fd, b"new\n")
+    os.close(fd)
+    assert name == str(tmp_path / (outfile.TEMPORARY_PREFIX + "01" * 8))
+    assert taken.is_symlink() and (tmp_path / "elsewhere").read_text() == "keep\n"
+
+
+def test_a_folder_that_cannot_be_written_is_an_error(tmp_path: Path) -> None:
+    from postproc.outfile import temporary_file
+    with pytest.raises(FileNotFoundError):
+        temporary_file(str(tmp_path / "missing"))
+
+
+def test_without_a_folder_the_first_usable_temporary_folder_is_used(tmp_path: Path,
+                                                                     monkeypatch: pytest.MonkeyPatch) -> None:
+    """As ``tempfile.gettempdir``: $TMPDIR, $TEMP, $TMP in that order, skipping one that is not usable."""
+    from postproc.outfile import temporary_file
+    (tmp_path / "temp").mkdir()
+    monkeypatch.setenv("TMPDIR", str(tmp_path / "missing"))
+    monkeypatch.setenv("TEMP", str(tmp_path / "temp"))
+    monkeypatch.setenv("TMP", str(tmp_path))
+    fd, name = temporary_file(None)
+    os.close(fd)
+    assert os.path.dirname(name) == str(tmp_path / "temp")
+
+
+def test_standard_output_gets_the_whole_output(tmp_path: Path) -> None:
+    env = dict(os.environ, TMPDIR=str(tmp_path))
+    done = subprocess.run([sys.executable, "-m", "postproc", *TRANSLATE[:1], str(PROGRAM), *TRANSLATE[1:]],
+                          capture_output=True, env=env, cwd=ROOT, timeout=120)
+    assert (done.returncode, done.stdout, done.stderr) == (0, PROGRAM.read_bytes(), b"")
+    assert list(tmp_path.iterdir()) == []  # the temporary output is gone

@@ -2,14 +2,18 @@
 ``sys.modules`` when the command ends, never timed: what a one-line translation or ``postproc dialects``
 must not load is pydantic (set-up validation), jinja2 (templates), the batch and cluster machinery, the
 toolpath, verify and backplot code; with a set-up file (``--machine``) pydantic is loaded, by design.
-Nor the standard modules a plain run has no use for: decimal (an exponent's spelling), threading; and a
-command that reads and writes no XML and no file (``postproc dialects``) loads neither lxml
-(``postproc.xmlio.lxml_etree``) nor tempfile (``postproc.outfile``). A translation reads its dialect's
-pipeline file with lxml and writes through a temporary file, so it loads both."""
+Nor the standard modules a plain run has no use for: decimal (an exponent's spelling), threading, json (the
+compiled build's manifest is plain lines: ``postproc.native.MANIFEST``), tempfile
+and shutil with what they import (the temporary output is made with ``os`` alone: ``postproc.outfile``;
+argparse's formatter is sized without shutil: ``postproc.cli._Formatter``); and a command that reads and
+writes no XML does not load lxml (``postproc.xmlio.lxml_etree``): neither ``postproc dialects`` nor a
+translation without a set-up file, whose dialects declare their reading pipelines in Python
+(``Dialect.python_pipeline``). Every installed dialect is registered, but a translation imports the
+readers, writers and syntax objects of the dialects it uses only (``Dialect`` attributes ``Lazy``, syntax
+objects ``XFactory.register_lazy``)."""
 
 from __future__ import annotations
 
-import json
 import os
 import subprocess
 import sys
@@ -20,34 +24,42 @@ import pytest
 
 ROOT = Path(__file__).resolve().parents[1]
 PROBE = """
-import atexit, json, os, runpy, sys
-atexit.register(lambda: open(os.environ["MODULES_OUT"], "w").write(json.dumps(sorted(sys.modules))))
-sys.argv = ["postproc", *json.loads(os.environ["ARGS"])]
+import atexit, os, runpy, sys
+atexit.register(lambda: open(os.environ["MODULES_OUT"], "w").write("\\n".join(sorted(sys.modules))))
+sys.argv = ["postproc", *os.environ["ARGS"].split("\\n")]
 runpy.run_module("postproc", run_name="__main__")
 """
+"""Runs a command and writes the names of the modules loaded when it ends, one a line (it imports no
+module of its own that a run might not: json is one the runs must not load)."""
 NEVER_BY_DEFAULT = ("pydantic", "pydantic_core", "annotated_types", "jinja2", "dask", "distributed", "PIL",
                     "postproc.setup_validate", "postproc.setup_load", "postproc.templates", "postproc.batch.command",
                     "postproc.batch.local", "postproc.batch.cluster", "postproc.toolpath", "postproc.verify",
                     "postproc.backplot", "postproc.canvas", "postproc.export")
-NOT_AT_START = ("decimal", "threading")
+NOT_AT_START = ("decimal", "threading", "tempfile", "shutil", "random", "bz2", "lzma", "json")
 """Standard modules imported where they are used (a top-level import of one of them fails here)."""
-ONLY_FOR_XML_OR_FILES = ("lxml", "tempfile")
+ONLY_FOR_XML = ("lxml",)
+OTHER_DIALECTS = ("dialects.fagor", "dialects.gsk", "dialects.isg", "postproc_grbl", "postproc_linuxcnc",
+                  "postproc_mach3")
+"""Every installed dialect but Fanuc (the built-ins and the plugins in plugins/)."""
+REGISTERED_ONLY = ("codes", "cycle_words", "active_comments")
+"""What registering a dialect imports besides its package: its code table and cycle words (the capability
+table names them) and LinuxCNC's generic lowering step."""
 
 
 def modules_after(tmp_path: Path, *args: str) -> set[str]:
-    out = tmp_path / "modules.json"
+    out = tmp_path / "modules.txt"
     cwd = tmp_path / "cwd"  # on sys.path (python -c): kept unchanged and old, so the entry-point cache settles
     if not cwd.exists():
         cwd.mkdir()
         past = time.time() - 60
         os.utime(cwd, (past, past))
-    env = dict(os.environ, HOME=str(tmp_path), MODULES_OUT=str(out), ARGS=json.dumps(list(args)))
+    env = dict(os.environ, HOME=str(tmp_path), MODULES_OUT=str(out), ARGS="\n".join(args))
     env.pop("POSTPROC_NO_ENTRY_POINT_CACHE", None)
     env.pop("XDG_CACHE_HOME", None)
     done = subprocess.run([sys.executable, "-c", PROBE], cwd=cwd, env=env, capture_output=True, text=True,
                           timeout=120)
     assert done.returncode == 0, done.stderr
-    return set(json.loads(out.read_text()))
+    return set(out.read_text().splitlines())
 
 
 def loaded(modules: set[str], name: str) -> bool:
@@ -104,19 +116,33 @@ def warm_modules_after(tmp_path: Path, *args: str) -> set[str]:
     return modules_after(tmp_path, *args)
 
 
-def test_a_plain_translation_loads_no_standard_module_it_does_not_use(tmp_path: Path, one_line: Path) -> None:
+@pytest.mark.parametrize("target, writer", [("fanuc", "dialects.fanuc.writer"),
+                                            ("linuxcnc", "postproc_linuxcnc.writer")])
+def test_a_plain_translation_loads_no_standard_module_it_does_not_use(tmp_path: Path, one_line: Path,
+                                                                       target: str, writer: str) -> None:
+    modules = warm_modules_after(tmp_path, "translate", str(one_line), "--from", "fanuc", "--to", target,
+                                 "--normalize")
+    assert "postproc.api" in modules and writer in modules  # the probe saw the run
+    assert [name for name in NOT_AT_START + ONLY_FOR_XML if loaded(modules, name)] == []
+
+
+def test_a_translation_imports_only_its_own_dialects_modules(tmp_path: Path, one_line: Path) -> None:
     modules = warm_modules_after(tmp_path, "translate", str(one_line), "--from", "fanuc", "--to", "fanuc",
                                  "--normalize")
-    assert "postproc.api" in modules and "dialects.fanuc.writer" in modules  # the probe saw the run
-    assert [name for name in NOT_AT_START if loaded(modules, name)] == []
+    assert "dialects.fanuc.reader" in modules and "dialects.fanuc.writer" in modules  # the probe saw the run
+    assert [name for name in OTHER_DIALECTS if name not in modules] == []  # each registered
+    extra = sorted(name for name in modules if name.startswith(tuple(p + "." for p in OTHER_DIALECTS))
+                   and name.rpartition(".")[2] not in REGISTERED_ONLY)
+    assert extra == []
+    assert [name for name in ("postproc.isg_family", "postproc.rs274.ngc_lexer") if loaded(modules, name)] == []
 
 
-def test_listing_the_dialects_loads_no_xml_parser_and_no_temporary_file(tmp_path: Path) -> None:
-    """Every module that reads or writes XML imports lxml on first use; outfile imports tempfile when it
-    writes. (Every dialect's and plugin's module is imported here, so a top-level import anywhere fails.)"""
+def test_listing_the_dialects_loads_no_xml_parser(tmp_path: Path) -> None:
+    """Every module that reads or writes XML imports lxml on first use (each dialect's reader and writer
+    are imported here: the table says whether it has them)."""
     modules = warm_modules_after(tmp_path, "dialects")
     assert "postproc.xmlio" in modules and "postproc.outfile" in modules  # the probe saw them imported
-    assert [name for name in NOT_AT_START + ONLY_FOR_XML_OR_FILES if loaded(modules, name)] == []
+    assert [name for name in NOT_AT_START + ONLY_FOR_XML if loaded(modules, name)] == []
 
 
 def test_a_set_up_file_is_validated_with_pydantic(tmp_path: Path, one_line: Path) -> None:
@@ -125,3 +151,25 @@ def test_a_set_up_file_is_validated_with_pydantic(tmp_path: Path, one_line: Path
     modules = modules_after(tmp_path, "translate", str(one_line), "--from", "fanuc", "--to", "linuxcnc",
                             "--machine", str(setup))
     assert loaded(modules, "pydantic") and "postproc.setup_validate" in modules
+
+
+ALL_MODULES = """
+import importlib, pkgutil, sys
+from postproc import native
+native.install()
+for top in sys.argv[1:]:
+    package = importlib.import_module(top)
+    for info in pkgutil.walk_packages(package.__path__, top + "."):
+        importlib.import_module(info.name)
+print("\\n".join(sorted(name for name in sys.modules if name.split(".")[0] in ("lxml", *sys.argv[1:]))))
+"""
+
+
+def test_no_dialect_module_imports_an_xml_parser_at_its_top() -> None:
+    """Every module of every shipped dialect, imported: lxml is not among what they import."""
+    done = subprocess.run([sys.executable, "-c", ALL_MODULES, "dialects", "postproc_grbl", "postproc_linuxcnc",
+                           "postproc_mach3"], capture_output=True, text=True, timeout=120, cwd=ROOT)
+    assert done.returncode == 0, done.stderr
+    modules = done.stdout.splitlines()
+    assert "dialects.fagor.multiple_machining" in modules and "postproc_linuxcnc.program" in modules
+    assert [name for name in modules if name.split(".")[0] == "lxml"] == []

@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+import importlib
+import sys
+
 import pytest
 from lxml import etree
 
@@ -241,3 +244,85 @@ def test_missing_file_is_a_located_error(tmp_path):
         parse_xml_file(tmp_path / "missing.xml")
     assert info.value.message.startswith("cannot read ")
     assert info.value.location.file == str(tmp_path / "missing.xml")
+
+
+# -- names registered lazily (a plugin's syntax objects, imported when first used) ----------------------
+
+LAZY_MODULE = '''
+from postproc.xmlio import XAttr, XmlNode
+
+class Chirp(XmlNode):
+    XNAME = "Chirp"
+    XATTRS = (XAttr("pitch", int),)
+    __slots__ = ("pitch",)
+
+class Misnamed(XmlNode):
+    XNAME = "Other"
+    __slots__ = ()
+'''
+
+
+@pytest.fixture
+def lazy_module(tmp_path, monkeypatch) -> str:
+    """A module of node classes that nothing has imported yet."""
+    name = f"lazy_nodes_{tmp_path.name.replace('-', '_')}"
+    (tmp_path / f"{name}.py").write_text(LAZY_MODULE)
+    monkeypatch.syspath_prepend(str(tmp_path))
+    yield name
+    sys.modules.pop(name, None)
+
+
+def test_a_lazy_name_is_known_before_its_module_is_imported(lazy_module):
+    f = XFactory()
+    f.register_lazy("Chirp", f"{lazy_module}:Chirp")
+    f.register_lazy("Chirp", f"{lazy_module}:Chirp")  # idempotent
+    assert f.names() == ["Chirp"] and lazy_module not in sys.modules
+    with pytest.raises(ConfigError, match="unknown element <Nope>"):
+        f.create(_el("<Nope/>"))
+    assert lazy_module not in sys.modules
+    chirp = f.create(_el('<Chirp pitch="440"/>'))
+    assert type(chirp).__module__ == lazy_module and chirp.pitch == 440
+    assert f.classes() == [sys.modules[lazy_module].Chirp]
+
+
+def test_listing_the_classes_imports_the_lazy_ones(lazy_module):
+    f = XFactory()
+    Probe.reg(f)
+    f.register_lazy("Chirp", f"{lazy_module}:Chirp")
+    assert [c.XNAME for c in f.classes()] == ["Chirp", "Probe"] and lazy_module in sys.modules
+
+
+def test_a_lazy_name_and_its_class_registered_again_is_harmless(lazy_module):
+    f = XFactory()
+    f.register_lazy("Chirp", f"{lazy_module}:Chirp")
+    module = importlib.import_module(lazy_module)
+    module.Chirp.reg(f)
+    f.register_lazy("Chirp", f"{lazy_module}:Chirp")
+    assert f.classes() == [module.Chirp]
+
+
+def test_a_lazy_name_cannot_be_taken_twice(lazy_module):
+    f = XFactory()
+    f.register_lazy("Probe", f"{lazy_module}:Chirp")
+    with pytest.raises(ConfigError, match="'Probe' registered twice"):
+        f.register_lazy("Probe", "elsewhere:Probe")
+    with pytest.raises(ConfigError, match="'Probe' registered twice"):
+        Probe.reg(f)  # another class of that name
+    g = XFactory()
+    Probe.reg(g)
+    with pytest.raises(ConfigError, match="'Probe' registered twice"):
+        g.register_lazy("Probe", f"{lazy_module}:Chirp")
+
+
+@pytest.mark.parametrize("target, says", [
+    ("no_such_module_anywhere:Chirp", "<Chirp>: cannot import its class no_such_module_anywhere:Chirp"),
+    ("{module}:Nothing", "<Chirp>: cannot import its class {module}:Nothing"),
+    ("{module}:Misnamed", "<Chirp>: {module}:Misnamed is not an XML node class named 'Chirp'"),
+])
+def test_a_lazy_name_whose_class_cannot_be_had_is_a_located_error(lazy_module, target, says):
+    f = XFactory()
+    f.register_lazy("Chirp", target.format(module=lazy_module))
+    with pytest.raises(ConfigError) as info:
+        f.create(_el('<Root>\n  <Chirp pitch="1"/>\n</Root>')[0])
+    assert info.value.message.startswith(says.format(module=lazy_module))
+    assert str(info.value.location) == "probe.xml:2:1"

@@ -12,25 +12,25 @@ from __future__ import annotations
 from typing import Callable
 
 from postproc.context import Context
-from postproc.dialect import Dialect
+from postproc.dialect import Dialect, Lazy, Reader
 from postproc.errors import Diagnostics
 from postproc.hookspecs import hookimpl
 from postproc.rs274.order_of_execution import stops_before_motion
 from postproc.setup import MachineSetup
+from postproc.syntax import Pipeline
+from postproc.writer_base import Writer
 from postproc.xmlio import XFactory
 
-from .block_syntax import FagorBlockSyntax
 from .cycle_words import SECONDS, cycle_words
-from .program import FagorProgramSyntax
-from .reader import FagorReader
-from .writer import FagorWriter
 
 
 class Fagor(Dialect):
     NAME = "fagor"
     DESCRIPTION = "Fagor CNC 8070 milling: Z/I/K drilling words, G70/G71 units, G159 offsets, P parameters"
-    READER = FagorReader
-    WRITER = FagorWriter
+    READER = Lazy[type[Reader]](".reader:FagorReader")
+    """Imported when a run first reads Fagor (``Lazy``), as are the writer and the syntax objects (with the
+    ISG family's lexer and expressions, and multiple machining)."""
+    WRITER = Lazy[type[Writer]](".writer:FagorWriter")
     PIPELINE_FILE = "fagor.xml"
     CYCLE_WORDS = SECONDS
     """Z reference plane, I depth, K dwell (seconds; the set-up's ``fagorDwellUnit`` may say hundredths)."""
@@ -57,6 +57,16 @@ class Fagor(Dialect):
     its own before it (Fagor acts on M05/M09 after the block's motion, as Fanuc [?])."""
 
     @classmethod
+    def python_pipeline(cls, setup: MachineSetup) -> Pipeline:
+        """``fagor.xml``, built in Python."""
+        from postproc.cycles.resolve import CannedCycleResolveSyntax
+        from postproc.syntaxes.modal_state import ModalStateSyntax
+        from .block_syntax import FagorBlockSyntax
+        from .program import FagorProgramSyntax
+        return Pipeline(cls.NAME, [FagorProgramSyntax(), FagorBlockSyntax(), CannedCycleResolveSyntax(),
+                                   ModalStateSyntax()])
+
+    @classmethod
     def context(cls, file: str, setup: MachineSetup, diagnostics: Diagnostics) -> Context:
         ctx = super().context(file, setup, diagnostics)
         ctx.cycle_words = cycle_words(setup)
@@ -70,5 +80,5 @@ def postproc_register_dialects(register: Callable[[type], None]) -> None:
 
 @hookimpl
 def postproc_register_xml(factory: XFactory) -> None:
-    FagorBlockSyntax.reg(factory)
-    FagorProgramSyntax.reg(factory)
+    factory.register_lazy("FagorBlockSyntax", f"{__name__}.block_syntax:FagorBlockSyntax")
+    factory.register_lazy("FagorProgramSyntax", f"{__name__}.program:FagorProgramSyntax")

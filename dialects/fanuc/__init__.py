@@ -6,21 +6,16 @@ from __future__ import annotations
 
 from typing import Callable
 
-from postproc.dialect import Dialect
+from postproc.dialect import Dialect, Lazy, Reader
 from postproc.setup import MachineSetup
 from postproc.syntax import Pipeline
 from postproc.hookspecs import hookimpl
 from postproc.rs274.cycle_words import rs274_cycle_words
 from postproc.rs274.order_of_execution import stops_before_motion
+from postproc.writer_base import Writer
 from postproc.xmlio import XFactory
 
 from .codes import CODES
-
-from .block_syntax import FanucBlockSyntax
-from .lathe_block_syntax import FanucLatheBlockSyntax
-from .program import FanucProgramSyntax
-from .reader import FanucReader
-from .writer import FanucWriter
 
 ALL_MILLING_CYCLES = frozenset({
     "drill", "drill_dwell", "peck_chip", "peck_deep", "tap", "tap_left", "bore_feed", "bore_stop",
@@ -31,8 +26,9 @@ ALL_MILLING_CYCLES = frozenset({
 class Fanuc(Dialect):
     NAME = "fanuc"
     DESCRIPTION = "Fanuc 0i/30i milling, Custom Macro B and subprograms"
-    READER = FanucReader
-    WRITER = FanucWriter
+    READER = Lazy[type[Reader]](".reader:FanucReader")
+    """Imported when a run first reads Fanuc (``Lazy``), as are the writer and the syntax objects."""
+    WRITER = Lazy[type[Writer]](".writer:FanucWriter")
     PIPELINE_FILE = "fanuc.xml"
     CYCLE_WORDS = rs274_cycle_words(CODES, None, max_repeat=9999)
     """R level, Q peck/shift, P dwell (ms); K, L or K+L repeats (0-9999) per the set-up; cycles named
@@ -64,15 +60,24 @@ class Fanuc(Dialect):
     its own before it (Fanuc makes them after the motion)."""
 
     @classmethod
-    def pipeline(cls, setup: MachineSetup) -> Pipeline:
+    def pipeline_file(cls, setup: MachineSetup) -> str:
         """The lathe pipeline (profile look-ahead, lathe cycles) for a lathe set-up, else the milling one."""
-        if setup.pipeline is None and cls.reads_lathe(setup):
-            from importlib import resources
-            from pathlib import Path
-            from postproc.syntax import load_pipeline
-            with resources.as_file(resources.files(__name__) / cls.LATHE_PIPELINE_FILE) as path:
-                return load_pipeline(Path(path))
-        return super().pipeline(setup)
+        return cls.LATHE_PIPELINE_FILE if cls.reads_lathe(setup) else cls.PIPELINE_FILE
+
+    @classmethod
+    def python_pipeline(cls, setup: MachineSetup) -> Pipeline:
+        """``fanuc_lathe.xml`` or ``fanuc.xml`` (``pipeline_file``), built in Python."""
+        from postproc.cycles.resolve import CannedCycleResolveSyntax
+        from postproc.syntaxes.modal_state import ModalStateSyntax
+        from .program import FanucProgramSyntax
+        if cls.reads_lathe(setup):
+            from postproc.rs274.lathe_cycles import LatheCycleSyntax
+            from .lathe_block_syntax import FanucLatheBlockSyntax
+            return Pipeline(cls.NAME, [FanucProgramSyntax(), FanucLatheBlockSyntax(), ModalStateSyntax(),
+                                       LatheCycleSyntax()])
+        from .block_syntax import FanucBlockSyntax
+        return Pipeline(cls.NAME, [FanucProgramSyntax(), FanucBlockSyntax(), CannedCycleResolveSyntax(),
+                                   ModalStateSyntax()])
 
 
 @hookimpl
@@ -82,6 +87,7 @@ def postproc_register_dialects(register: Callable[[type], None]) -> None:
 
 @hookimpl
 def postproc_register_xml(factory: XFactory) -> None:
-    FanucBlockSyntax.reg(factory)
-    FanucLatheBlockSyntax.reg(factory)
-    FanucProgramSyntax.reg(factory)
+    """The syntax objects, imported when an element names one (``XFactory.register_lazy``)."""
+    factory.register_lazy("FanucBlockSyntax", f"{__name__}.block_syntax:FanucBlockSyntax")
+    factory.register_lazy("FanucLatheBlockSyntax", f"{__name__}.lathe_block_syntax:FanucLatheBlockSyntax")
+    factory.register_lazy("FanucProgramSyntax", f"{__name__}.program:FanucProgramSyntax")

@@ -12,20 +12,20 @@ from __future__ import annotations
 
 from typing import Callable
 
-from postproc.dialect import Dialect
+from postproc.dialect import Dialect, Lazy, Reader
 from postproc.hookspecs import hookimpl
+from postproc.setup import MachineSetup
+from postproc.syntax import Pipeline
+from postproc.writer_base import Writer
 from postproc.xmlio import XFactory
-
-from .block_syntax import GskBlockSyntax
-from .reader import GskReader
-from .writer import GskWriter
 
 
 class Gsk(Dialect):
     NAME = "gsk"
     DESCRIPTION = "GSK 980TDc lathe (system A: G71-G76, G90/G92/G94, U/W, G50, G98/G99)"
-    READER = GskReader
-    WRITER = GskWriter
+    READER = Lazy[type[Reader]](".reader:GskReader")
+    """Imported when a run first reads GSK (``Lazy``), as are the writer and the block syntax."""
+    WRITER = Lazy[type[Writer]](".writer:GskWriter")
     PIPELINE_FILE = "gsk.xml"
     MACHINE_TYPES = frozenset({"lathe"})
     """A lathe control only: every program is read with lathe meanings, whatever the set-up says."""
@@ -47,6 +47,14 @@ class Gsk(Dialect):
     PROGRAM_NUMBERS = True
     """``O0001``: the number the control stores the program under."""
 
+    @classmethod
+    def python_pipeline(cls, setup: MachineSetup) -> Pipeline:
+        """``gsk.xml``, built in Python."""
+        from postproc.rs274.lathe_cycles import LatheCycleSyntax
+        from postproc.syntaxes.modal_state import ModalStateSyntax
+        from .block_syntax import GskBlockSyntax
+        return Pipeline(cls.NAME, [GskBlockSyntax(), ModalStateSyntax(), LatheCycleSyntax()])
+
 
 @hookimpl
 def postproc_register_dialects(register: Callable[[type], None]) -> None:
@@ -55,4 +63,4 @@ def postproc_register_dialects(register: Callable[[type], None]) -> None:
 
 @hookimpl
 def postproc_register_xml(factory: XFactory) -> None:
-    GskBlockSyntax.reg(factory)
+    factory.register_lazy("GskBlockSyntax", f"{__name__}.block_syntax:GskBlockSyntax")

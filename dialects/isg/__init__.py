@@ -11,22 +11,21 @@ from __future__ import annotations
 
 from typing import Callable
 
-from postproc.dialect import Dialect
+from postproc.dialect import Dialect, Lazy, Reader
 from postproc.hookspecs import hookimpl
 from postproc.rs274.order_of_execution import stops_before_motion
+from postproc.setup import MachineSetup
+from postproc.syntax import Pipeline
+from postproc.writer_base import Writer
 from postproc.xmlio import XFactory
-
-from .block_syntax import IsgBlockSyntax
-from .program import IsgProgramSyntax
-from .reader import IsgReader
-from .writer import IsgWriter
 
 
 class Isg(Dialect):
     NAME = "isg"
     DESCRIPTION = "Beckhoff TwinCAT CNC (ISG kernel) milling: P parameters, $ control flow, %L subroutines"
-    READER = IsgReader
-    WRITER = IsgWriter
+    READER = Lazy[type[Reader]](".reader:IsgReader")
+    """Imported when a run first reads ISG (``Lazy``), as are the writer and the syntax objects."""
+    WRITER = Lazy[type[Writer]](".writer:IsgWriter")
     PIPELINE_FILE = "isg.xml"
     NATIVE_CYCLES = frozenset()
     """G80-G89 are the machine builder's subroutine files, not DIN cycles: every cycle is expanded."""
@@ -44,6 +43,16 @@ class Isg(Dialect):
     """A spindle stop or coolant off that the source made before its block's motion goes in a block of
     its own before it (ISG acts on M05/M09 after the block's motion, as Fanuc [?])."""
 
+    @classmethod
+    def python_pipeline(cls, setup: MachineSetup) -> Pipeline:
+        """``isg.xml``, built in Python."""
+        from postproc.cycles.resolve import CannedCycleResolveSyntax
+        from postproc.syntaxes.modal_state import ModalStateSyntax
+        from .block_syntax import IsgBlockSyntax
+        from .program import IsgProgramSyntax
+        return Pipeline(cls.NAME, [IsgProgramSyntax(), IsgBlockSyntax(), CannedCycleResolveSyntax(),
+                                   ModalStateSyntax()])
+
 
 @hookimpl
 def postproc_register_dialects(register: Callable[[type], None]) -> None:
@@ -52,5 +61,5 @@ def postproc_register_dialects(register: Callable[[type], None]) -> None:
 
 @hookimpl
 def postproc_register_xml(factory: XFactory) -> None:
-    IsgBlockSyntax.reg(factory)
-    IsgProgramSyntax.reg(factory)
+    factory.register_lazy("IsgBlockSyntax", f"{__name__}.block_syntax:IsgBlockSyntax")
+    factory.register_lazy("IsgProgramSyntax", f"{__name__}.program:IsgProgramSyntax")

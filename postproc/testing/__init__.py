@@ -36,7 +36,7 @@ native.install()  # the compiled hot path, before any of its modules is imported
 
 from .checks import (
     DialectUnderTest, cross_problems, garbage_problems, generated_problems, invalid_problems, ir_xml_problems,
-    read_text, round_trip_problems, targets,
+    pipeline_problems, read_text, round_trip_problems, targets,
 )
 from ..errors import PostprocError
 from .neutral import NeutralProgram
@@ -98,6 +98,7 @@ class ConformanceTests:
         if dialect.READER is not None:
             try:
                 dialect.pipeline(case.machine())
+                dialect.file_pipeline(case.machine())  # the file, also where python_pipeline stands for it
                 broken = ""
             except PostprocError as err:
                 broken = str(err)
@@ -111,6 +112,13 @@ class ConformanceTests:
         if not case.bad_programs():
             pytest.fail(f"{case.name}: no known-bad programs in {case.invalid}: give a few (a malformed word, "
                         "a missing cycle word...), each must fail with located errors", pytrace=False)
+
+    def test_python_pipeline_is_the_pipeline_file(self, postproc_conformance: DialectUnderTest) -> None:
+        case = postproc_conformance
+        dialect = case.cls()
+        if dialect.READER is None:
+            pytest.skip(f"{case.name} is write-only: it has no reading pipeline")
+        _report(pipeline_problems(dialect, case.machine()), case)
 
     def test_examples_read_back_byte_for_byte(self, postproc_conformance: DialectUnderTest) -> None:
         case = postproc_conformance

@@ -14,6 +14,7 @@ import re
 import tempfile
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Literal
 
 from .. import api
 from ..dialect import Dialect
@@ -21,9 +22,10 @@ from ..errors import Diagnostics, ErrorList, PostprocError
 from ..ir import Block
 from ..plugins import default_registry
 from ..program_xml import dump_program, load_program
-from ..setup import MachineSetup, load_setup
+from ..setup import InputSettings, MachineSetup, load_setup
 from ..toolpath import start_position, toolpath_events
 from ..verify import compare, verify_lines
+from ..xmlio import to_bytes
 from .neutral import NeutralProgram, simulate_neutral, write_neutral
 
 LOCATED = re.compile(r"^(?P<file>.+?):(?P<line>\d+):(?P<col>\d+): error: \S")
@@ -216,6 +218,59 @@ def garbage_problems(case: DialectUnderTest, text: str, folder: Path) -> list[st
     if case.setup is not None:
         args += ["--machine", str(case.setup)]
     return located_problems(run_cli(*args), str(path), f"generated program {text!r}", must_fail=False)
+
+
+# -- 4b. the pipeline declared in Python is the pipeline file ---------------------------------------------
+
+def pipeline_setups(dialect: type[Dialect], machine: MachineSetup | None = None) -> list[tuple[str, MachineSetup]]:
+    """Set-ups a dialect's own pipeline is chosen under: one per machine type it reads, and ``machine``
+    (the examples' set-up) where given and it names no pipeline file of its own."""
+    kinds: tuple[Literal["mill", "lathe"], ...] = ("mill", "lathe")
+    found = [(f"a {kind} set-up", MachineSetup(input=InputSettings(machine_type=kind)))
+             for kind in kinds if kind in dialect.MACHINE_TYPES]
+    if machine is not None and machine.pipeline is None:
+        found.append(("the examples' set-up", machine))
+    return found
+
+
+def pipeline_problems(dialect: type[Dialect], machine: MachineSetup | None = None) -> list[str]:
+    """``python_pipeline`` (where the dialect declares one) builds the pipeline its file holds
+    (``pipeline_file``), under each of ``pipeline_setups``: the same steps, of the same classes, with the
+    same settings (the same XML, as ``make_xml_source`` writes it). The file is what a set-up's own
+    pipeline starts from, so the two must not drift apart."""
+    problems = []
+    checked: set[tuple[str, bytes]] = set()
+    for what, setup in pipeline_setups(dialect, machine):
+        try:
+            declared = dialect.python_pipeline(setup)
+        except Exception as exc:  # a broken declaration is a finding, not a crash of the suite
+            problems.append(f"{dialect.NAME}: python_pipeline fails under {what}: {type(exc).__name__}: {exc}")
+            continue
+        if declared is None:
+            continue
+        name = dialect.pipeline_file(setup)
+        if name is None:
+            problems.append(f"{dialect.NAME}: python_pipeline declares a pipeline under {what}, but there is no "
+                            "pipeline file (PIPELINE_FILE) for it to match: ship one beside the module")
+            continue
+        try:
+            from_file = dialect.file_pipeline(setup)
+        except PostprocError as err:
+            said = f"{dialect.NAME}: its pipeline file {name} does not load: {err}"
+            if said not in problems:
+                problems.append(said)
+            continue
+        ours, theirs = to_bytes(declared.make_xml_source()), to_bytes(from_file.make_xml_source())
+        if (name, ours) in checked:
+            continue  # the same declaration against the same file under another set-up: said once
+        checked.add((name, ours))
+        kinds = [type(step) for step in declared.steps] == [type(step) for step in from_file.steps]
+        if ours != theirs or not kinds:
+            problems.append(f"{dialect.NAME}: python_pipeline under {what} is not the pipeline of {name}"
+                            + ("" if ours != theirs else " (the same XML, but steps of other classes: "
+                               f"{[type(s).__qualname__ for s in declared.steps]})")
+                            + f"\n--- python_pipeline:\n{ours.decode()}--- {name}:\n{theirs.decode()}")
+    return problems
 
 
 # -- 5. translations to every other installed dialect --------------------------------------------------

@@ -1,9 +1,9 @@
 """Mach3/Mach4 mill: a read-and-write dialect plugin, written as a third party would publish one.
 
 A plugin needs only what this package shows: a code table (``codes.py``, read and written alike), a
-reader (``reader.py``), a block syntax and its pipeline XML (``block_syntax.py``, ``mach3.xml``), a
-writer, a ``Dialect`` subclass with its capability flags, and ``hookimpl`` functions that register the
-dialect and its syntax object. It imports only public names of ``postproc`` and is found through its
+reader (``reader.py``), a block syntax and its pipeline (``block_syntax.py``; ``mach3.xml``, also built in
+Python by ``Mach3.python_pipeline``), a writer, a ``Dialect`` subclass with its capability flags, and
+``hookimpl`` functions that register the dialect and its syntax object. It imports only public names of ``postproc`` and is found through its
 entry point (``pyproject.toml``). docs/plugins.md walks through it.
 
 The controller: Mach3's interpreter follows the NIST RS274/NGC interpreter (words, modal groups, order of
@@ -17,7 +17,7 @@ from __future__ import annotations
 
 from typing import Any, Callable, ClassVar
 
-from postproc.dialect import Dialect
+from postproc.dialect import Dialect, Lazy, Reader
 from postproc.expr import Expr
 from postproc.hookspecs import hookimpl
 from postproc.ir import Block, Motion
@@ -25,11 +25,11 @@ from postproc.rs274.codes import CodeTable
 from postproc.rs274.cycle_words import rs274_cycle_words
 from postproc.rs274.order_of_execution import stops_after_motion
 from postproc.rs274.writer import WordWriter
+from postproc.setup import MachineSetup
+from postproc.syntax import Pipeline
 from postproc.xmlio import XFactory
 
-from .block_syntax import Mach3BlockSyntax
 from .codes import CODES
-from .reader import Mach3Reader
 
 
 class Mach3Writer(WordWriter):
@@ -104,7 +104,9 @@ class Mach3Writer(WordWriter):
 class Mach3(Dialect):
     NAME = "mach3"
     DESCRIPTION = "Mach3/Mach4 mill (RS274/NGC words, G73/G81/G83 kept, 4-decimal axis words)"
-    READER = Mach3Reader
+    READER = Lazy[type[Reader]](".reader:Mach3Reader")
+    """Imported when a run first reads Mach3 (``Lazy``), as is the block syntax: a run that does not
+    use this dialect does not pay for its modules."""
     WRITER = Mach3Writer
     PIPELINE_FILE = "mach3.xml"
     CYCLE_WORDS = rs274_cycle_words(CODES, ("L",))
@@ -126,6 +128,15 @@ class Mach3(Dialect):
     DWELL_UNIT = "seconds"
     """G4 P is in seconds."""
 
+    @classmethod
+    def python_pipeline(cls, setup: MachineSetup) -> Pipeline:
+        """``mach3.xml``, built in Python (no XML is read when a program is: a faster start; the
+        conformance suite checks that it is the file's pipeline)."""
+        from postproc.cycles.resolve import CannedCycleResolveSyntax
+        from postproc.syntaxes.modal_state import ModalStateSyntax
+        from .block_syntax import Mach3BlockSyntax
+        return Pipeline(cls.NAME, [Mach3BlockSyntax(), CannedCycleResolveSyntax("rs274"), ModalStateSyntax()])
+
 
 @hookimpl
 def postproc_register_dialects(register: Callable[[type], None]) -> None:
@@ -134,4 +145,5 @@ def postproc_register_dialects(register: Callable[[type], None]) -> None:
 
 @hookimpl
 def postproc_register_xml(factory: XFactory) -> None:
-    Mach3BlockSyntax.reg(factory)
+    """The block syntax, imported when an element names it (``XFactory.register_lazy``)."""
+    factory.register_lazy("Mach3BlockSyntax", f"{__name__}.block_syntax:Mach3BlockSyntax")

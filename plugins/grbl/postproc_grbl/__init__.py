@@ -28,17 +28,16 @@ from __future__ import annotations
 
 from typing import Callable, ClassVar
 
-from postproc.dialect import Dialect
+from postproc.dialect import Dialect, Lazy, Reader
 from postproc.hookspecs import hookimpl
 from postproc.rs274.cycle_words import rs274_cycle_words
+from postproc.setup import MachineSetup
+from postproc.syntax import Pipeline
+from postproc.writer_base import Writer
 from postproc.xmlio import XFactory
+from postproc.rs274.lean_controller import lower_for_lean_controller
 
 from .codes import CODES
-
-from .block_syntax import GrblBlockSyntax
-from postproc.rs274.lean_controller import lower_for_lean_controller
-from .reader import GrblReader
-from .writer import GrblWriter
 
 
 class Grbl(Dialect):
@@ -46,8 +45,9 @@ class Grbl(Dialect):
     LOWER_CASE: ClassVar[bool] = True
     """The reader takes lower-case words (the controller reads them as upper case)."""
     DESCRIPTION = "grbl 1.1 (no canned cycles, no tool changer, no tool table; G4 P in seconds)"
-    READER = GrblReader
-    WRITER = GrblWriter
+    READER = Lazy[type[Reader]](".reader:GrblReader")
+    """Imported when a run first reads grbl (``Lazy``), as are the writer and the block syntax."""
+    WRITER = Lazy[type[Writer]](".writer:GrblWriter")
     PIPELINE_FILE = "grbl.xml"
     CYCLE_WORDS = rs274_cycle_words(CODES, ("L",))
     """R level, Q peck/shift, P dwell (seconds), L repeats."""
@@ -70,6 +70,13 @@ class Grbl(Dialect):
     DWELL_UNIT = "seconds"
     """G4 P is in seconds."""
 
+    @classmethod
+    def python_pipeline(cls, setup: MachineSetup) -> Pipeline:
+        """``grbl.xml``, built in Python."""
+        from postproc.syntaxes.modal_state import ModalStateSyntax
+        from .block_syntax import GrblBlockSyntax
+        return Pipeline(cls.NAME, [GrblBlockSyntax(), ModalStateSyntax()])
+
 
 @hookimpl
 def postproc_register_dialects(register: Callable[[type], None]) -> None:
@@ -78,4 +85,4 @@ def postproc_register_dialects(register: Callable[[type], None]) -> None:
 
 @hookimpl
 def postproc_register_xml(factory: XFactory) -> None:
-    GrblBlockSyntax.reg(factory)
+    factory.register_lazy("GrblBlockSyntax", f"{__name__}.block_syntax:GrblBlockSyntax")

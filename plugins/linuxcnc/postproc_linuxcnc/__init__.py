@@ -14,7 +14,7 @@ from __future__ import annotations
 
 from typing import Callable, ClassVar
 
-from postproc.dialect import Dialect
+from postproc.dialect import Dialect, Lazy, Reader
 from postproc.rs274.order_of_execution import stops_after_motion
 from postproc.errors import Diagnostics
 from postproc.hookspecs import hookimpl
@@ -22,15 +22,13 @@ from postproc.lower import Lowering
 from postproc.setup import MachineSetup
 from postproc.context import Context
 from postproc.rs274.cycle_words import rs274_cycle_words
+from postproc.syntax import Pipeline
+from postproc.writer_base import Writer
 from postproc.xmlio import XFactory
 
 from .codes import CODES
 
 from .active_comments import warn_active_comments
-from .block_syntax import NgcBlockSyntax
-from .program import LinuxcncProgramSyntax
-from .reader import LinuxcncReader
-from .writer import LinuxcncWriter
 
 NATIVE = frozenset({
     "drill", "drill_dwell", "peck_chip", "peck_deep", "tap", "tap_left", "bore_feed", "bore_stop",
@@ -43,8 +41,10 @@ class Linuxcnc(Dialect):
     LOWER_CASE: ClassVar[bool] = True
     """The reader takes lower-case words (the controller reads them as upper case)."""
     DESCRIPTION = "LinuxCNC 2.9 milling (RS274/NGC with O-words, parameters and expressions)"
-    READER = LinuxcncReader
-    WRITER = LinuxcncWriter
+    READER = Lazy[type[Reader]](".reader:LinuxcncReader")
+    """Imported when a run first reads LinuxCNC (``Lazy``), as are the writer and the syntax objects (with
+    the O-word and expression readers)."""
+    WRITER = Lazy[type[Writer]](".writer:LinuxcncWriter")
     PIPELINE_FILE = "linuxcnc.xml"
     CYCLE_WORDS = rs274_cycle_words(CODES, ("L",))
     """R level, Q peck/shift, P dwell (seconds), L repeats."""
@@ -74,6 +74,16 @@ class Linuxcnc(Dialect):
     cycle read with another is expanded for LinuxCNC."""
 
     @classmethod
+    def python_pipeline(cls, setup: MachineSetup) -> Pipeline:
+        """``linuxcnc.xml``, built in Python."""
+        from postproc.cycles.resolve import CannedCycleResolveSyntax
+        from postproc.syntaxes.modal_state import ModalStateSyntax
+        from .block_syntax import NgcBlockSyntax
+        from .program import LinuxcncProgramSyntax
+        return Pipeline(cls.NAME, [LinuxcncProgramSyntax(), NgcBlockSyntax(), CannedCycleResolveSyntax("rs274"),
+                                   ModalStateSyntax()])
+
+    @classmethod
     def context(cls, file: str, setup: MachineSetup, diagnostics: Diagnostics) -> Context:
         ctx = super().context(file, setup, diagnostics)
         ctx.state.return_level = cls.START_RETURN_LEVEL
@@ -93,5 +103,5 @@ def postproc_register_lowerings(register: Callable[[Lowering], None]) -> None:
 
 @hookimpl
 def postproc_register_xml(factory: XFactory) -> None:
-    NgcBlockSyntax.reg(factory)
-    LinuxcncProgramSyntax.reg(factory)
+    factory.register_lazy("NgcBlockSyntax", f"{__name__}.block_syntax:NgcBlockSyntax")
+    factory.register_lazy("LinuxcncProgramSyntax", f"{__name__}.program:LinuxcncProgramSyntax")
