@@ -7,10 +7,12 @@ from __future__ import annotations
 
 import io
 
-from hypothesis import given, settings
+import pytest
+from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
 from postproc.api import read_blocks, translate
+from postproc.cycles.lowering import expand_canned_cycles
 from postproc.errors import Diagnostics, ErrorLevel
 from postproc.ir import Block
 from postproc.plugins import default_registry
@@ -68,13 +70,18 @@ LINES = (
     "G01 X1. M05", "G00 Y2. M09", "M08", "G01 Z-1. M05 M09", "G49", "G49 G00 Z10.", "G49 G02 X0. Y10. I-10.",
     "G43 H3 Z20.", "M00", "M01", "G01 X5. M05 M00", "T4 M06 M03 S500", "/ T5 M06", "G04 X1.", "(NOTE)",
     "G81 X1. Y1. Z-2. R1. F100.", "X2.", "G80", "G02 X1. I.5 M05", "N20 T2 M06 (DRILL)",
+    "G84 X1. Y1. Z-2. R1. F100.", "N30 Y3. (NEXT)", "G86 X2. Y2. Z-3. R1. F90.",
 )
 
 
-def _lowered(program: list[str], fused: bool) -> tuple[list[Block], list[str]]:
+def _lowered(program: list[str], fused: bool, expanded: bool = False) -> tuple[list[Block], list[str]]:
+    """The four steps fused or chained, on the blocks as read or with their cycles expanded first (as a
+    translation to grbl runs them: an expanded hole is a block of its ``CompoundMotion`` alone)."""
     diagnostics = Diagnostics(ErrorLevel.WARN, warn_stream=io.StringIO())
     ctx, blocks = read_blocks([line + "\n" for line in program], "t.nc", FANUC, MachineSetup(), diagnostics)
     stream = iter(list(blocks))
+    if expanded:
+        stream = iter(list(expand_canned_cycles(stream, ctx, Grbl)))
     if fused:
         out = list(lower_for_lean_controller(stream, ctx, Grbl))
     else:
@@ -84,11 +91,14 @@ def _lowered(program: list[str], fused: bool) -> tuple[list[Block], list[str]]:
     return out, [w.message for w in diagnostics.warnings]
 
 
+@pytest.mark.parametrize("expanded", [False, True])
 @settings(max_examples=300, deadline=None)
-@given(st.lists(st.sampled_from(LINES), min_size=1, max_size=14))
-def test_the_fused_pass_is_the_four_steps_chained(program: list[str]) -> None:
-    fused, fused_warnings = _lowered(program, fused=True)
-    chained, chained_warnings = _lowered(program, fused=False)
+@given(program=st.lists(st.sampled_from(LINES), min_size=1, max_size=14))
+@example(program=["G00 X0. Y0. Z10.", "S1000 M03", "G84 X1. Y1. Z-2. R1. F100.", "N30 Y3. (NEXT)", "G80", "T7 M06"])
+@example(program=["G00 X0. Y0. Z10.", "S1000 M03", "G86 X2. Y2. Z-3. R1. F90.", "X2.", "G80", "T3", "M06"])
+def test_the_fused_pass_is_the_four_steps_chained(program: list[str], expanded: bool) -> None:
+    fused, fused_warnings = _lowered(program, fused=True, expanded=expanded)
+    chained, chained_warnings = _lowered(program, fused=False, expanded=expanded)
     assert fused == chained
     assert [b.eol for b in fused] == [b.eol for b in chained]
     assert fused_warnings == chained_warnings

@@ -107,12 +107,31 @@ def _lean_controller(blocks: Iterator[Block], ctx: Context, pause: bool) -> Iter
             if not isinstance(arc, Motion) or (arc.mode != "cw" and arc.mode != "ccw"):
                 yield block  # a straight move, a block number, a feed rate: no step changes it
                 continue
+        elif _expansion_only(sections):  # an expanded hole: only the spindle it leaves is noted
+            if pauses is not None:
+                pauses.follow(sections["CompoundMotion"])
+            yield block
+            continue
         paused = pauses.split(block) if pauses is not None else [block]
         for one in paused:
             first = _length_offset_cancel(one)
             if first is not None:
                 yield from _stops_split(first, circles)
             yield from _stops_split(one, circles)
+
+
+_EXPANSION_ONLY: Final = frozenset(("CompoundMotion", "Sequence", "Comments"))
+
+
+def _expansion_only(sections: dict[str, Section]) -> bool:
+    """A block that is an expansion (an expanded cycle's hole), maybe numbered and commented: no step
+    rewrites it (no tool change, length offset, arc or stop code of its own)."""
+    if "CompoundMotion" not in sections:
+        return False
+    for key in sections:
+        if key not in _EXPANSION_ONLY:
+            return False
+    return True
 
 
 def _stops_split(block: Block, circles: _FullCircles) -> list[Block]:
@@ -175,13 +194,18 @@ class _ToolChangePauses:
         if self.orient_stops and "SpindleOrientation" in sections:
             self.spindle = "stop"  # the writer stops the spindle before the operator orients it
         compound = sections.get("CompoundMotion")
+        if compound is not None:
+            self.follow(compound)
+        return out
+
+    def follow(self, compound: Section) -> None:
+        """The spindle as an expansion leaves it."""
         if isinstance(compound, CompoundMotion):
             for item in compound.items:
                 if isinstance(item, SpindleControl):
                     self.spindle = item.direction
                 elif isinstance(item, ProgramControl) and item.kind == "stop":
                     self.spindle = "stop"  # the writer stops a running spindle before a pause
-        return out
 
 
 def _pause(block: Block, ctx: Context, tool: int | Expr, spindle: str) -> Block:

@@ -121,7 +121,7 @@ class GrblWriter(WordWriter):
 
     def generate(self, block: Block) -> str:
         text = super().generate(block)
-        if block.sections and not text.strip():
+        if block.sections and (not text or text.isspace()):  # (no stripped copy of every block's text)
             if block.text is None:
                 return ""  # a generated part whose only words grbl does without (G80, G98/G99, G64)
             return self.comment(block.text.strip()) + (block.eol or "\n")  # a trace of the source line
