@@ -148,8 +148,10 @@ def _unknown(axes: tuple[str, str, str], a: float | None, b: float | None, n: fl
     raise ProgramError(f"the tool's {missing[0]} position is unknown before the cycle")
 
 
-def _xyz(first: str, a: float, b: float, n: float) -> dict[str, float | Expr]:
-    """The axes of a move in X, Y, Z order from its plane coordinates (first, second, normal)."""
+def _xyz(first: str, a: float | Expr, b: float | Expr, n: float | Expr) -> dict[str, float | Expr]:
+    """The axes of a move in X, Y, Z order from its plane coordinates (first, second, normal). (Typed so
+    that compiled code passes the tool path's float objects on as they are, not unboxed and boxed again
+    for every move.)"""
     if first == "X":
         return {"X": a, "Y": b, "Z": n}  # G17 (XY)
     if first == "Z":

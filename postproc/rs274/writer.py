@@ -1135,7 +1135,8 @@ def _straight_item_line(w: WordWriter, item: Motion, before: dict[str, float | E
     if code is None or not axes:
         return None
     driven = w.straight_axes
-    words: list[str] = []
+    count = 0  # up to three words in locals (a list and its appends cost more than the numbers' look-ups)
+    first = second = third = ""
     for axis, value in axes.items():
         if type(value) is not float or axis not in driven:
             return None
@@ -1143,16 +1144,23 @@ def _straight_item_line(w: WordWriter, item: Motion, before: dict[str, float | E
             was = before.get(axis)
             if type(was) is float and was == value:
                 continue
-        words.append(axis)
-        words.append(_position(w, axis, value, False))
-    count = len(words)
+        word = axis + _position(w, axis, value, False)
+        if count == 0:
+            first = word
+        elif count == 1:
+            second = word
+        elif count == 2:
+            third = word
+        else:
+            return None  # more than three axes: ``motion_words`` spells them
+        count += 1
+    if count == 1:
+        return f"{code} {first}\n"
+    if count == 3:
+        return f"{code} {first} {second} {third}\n"
     if count == 2:
-        return f"{code} {words[0]}{words[1]}\n"
-    if count == 6:
-        return f"{code} {words[0]}{words[1]} {words[2]}{words[3]} {words[4]}{words[5]}\n"
-    if count == 4:
-        return f"{code} {words[0]}{words[1]} {words[2]}{words[3]}\n"
-    return code + "".join([" " + words[i] + words[i + 1] for i in range(0, count, 2)]) + "\n"
+        return f"{code} {first} {second}\n"
+    return code + "\n"
 
 
 def _note(text: str) -> str:
