@@ -191,6 +191,9 @@ class WordWriter(Writer):
                           if arcs and code is not None}
         """The arc codes a straight arc is written with (none: arcs take ``generate``)."""
         self.straight_codes_now = True
+        self.expanding = False
+        """True while an expansion is written (``compound``): a writer that drops what its controller lacks
+        from a block may not drop it from a cycle's motion."""
         """A block that programs its motion code may take ``straight_move`` (a writer that must see the
         program's first blocks itself turns it on once it has)."""
         """What the written program has in force so far (units, distance mode, feed, plane, spindle...)."""
@@ -585,7 +588,16 @@ class WordWriter(Writer):
     def compound(self, block: Block, compound: CompoundMotion) -> str:
         """Write an expansion: the block's words that act before its motion (``postproc.event_order``:
         modal settings, tool change, spindle start, coolant on), a comment naming the source, each item,
-        then the words that act after it (spindle stop, coolant off, program stop or end)."""
+        then the words that act after it (spindle stop, coolant off, program stop or end). ``expanding``
+        is True meanwhile."""
+        was = self.expanding
+        self.expanding = True
+        try:
+            return WordWriter._compound(self, block, compound)  # (a direct call, not a dispatch)
+        finally:
+            self.expanding = was
+
+    def _compound(self, block: Block, compound: CompoundMotion) -> str:
         lines: list[str] = []
         head: dict[str, Section] = {}
         tail: dict[str, Section] = {}

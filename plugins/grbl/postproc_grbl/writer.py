@@ -31,7 +31,7 @@ import unicodedata
 from typing import Any, ClassVar, Final
 
 from postproc.errors import UnsupportedError
-from postproc.ir import Block, CompoundMotion, ProgramControl, Section
+from postproc.ir import Block, ProgramControl, Section
 from postproc.state import PLANE_AXES
 from postproc.rs274.codes import CodeTable
 from postproc.rs274.writer import WordWriter
@@ -101,14 +101,23 @@ class GrblWriter(WordWriter):
     def __init__(self, ctx: Any, source_dialect: str, target: Any = None) -> None:
         super().__init__(ctx, source_dialect, target)
         self._dropped: list[UnsupportedError] = []
-        self._strict = False
-        """True while writing an expansion: nothing may be dropped from a cycle's motion."""
         self._sanitised = False
         """A comment has been made safe for grbl (warned once)."""
 
     # -- blocks ------------------------------------------------------------------------------------
     def write_block(self, block: Block) -> str | None:
-        text = self._write_block(block)
+        if "TapeMark" in block.sections:
+            text: str | None = self.comment("%") + (block.eol or "\n")
+        else:
+            if self._dropped:
+                self._dropped = []  # left by a block whose writing failed
+            text = super().write_block(block)
+            if self._dropped:
+                where = self.ctx.at(block)
+                for err in self._dropped:
+                    self.ctx.diagnostics.warn(err.message + "; dropped, the rest of the block is written", where)
+                self._dropped = []
+                text = self.comment_out(block) + (text or "")
         if text is None or self.source_dialect == self.DIALECT or _plain_ascii(text):
             return text
         if not self._sanitised:
@@ -116,18 +125,6 @@ class GrblWriter(WordWriter):
             self.ctx.diagnostics.warn("grbl acts on '?', '!', '~' and bytes above 0x7F even inside a comment: "
                                       "comments are written without them", self.ctx.at(block))
         return grbl_safe(text)
-
-    def _write_block(self, block: Block) -> str | None:
-        if "TapeMark" in block.sections:
-            return self.comment("%") + (block.eol or "\n")
-        self._dropped = []
-        text = super().write_block(block)
-        if not self._dropped:
-            return text
-        where = self.ctx.at(block)
-        for err in self._dropped:
-            self.ctx.diagnostics.warn(err.message + "; dropped, the rest of the block is written", where)
-        return self.comment_out(block) + (text or "")
 
     def generate(self, block: Block) -> str:
         text = super().generate(block)
@@ -141,17 +138,11 @@ class GrblWriter(WordWriter):
         try:
             return super().section_words(key, section, block)
         except UnsupportedError as err:
-            if self._strict or key not in DROPPABLE or self.ctx.on_unsupported != "warn":
+            if self.expanding or key not in DROPPABLE or self.ctx.on_unsupported != "warn":
+                # nothing may be dropped from a cycle's motion
                 raise
             self._dropped.append(err.with_traceback(None))  # kept for its message: its frames would hold
             return []  # the block in a reference cycle (freed only by the collector, paused while streaming)
-
-    def compound(self, block: Block, compound: CompoundMotion) -> str:
-        self._strict = True
-        try:
-            return super().compound(block, compound)
-        finally:
-            self._strict = False
 
     def item_line(self, item: Section, block: Block) -> str:
         """A pause inside an expansion is for the operator to work at the tool (orient it by hand, jog it
