@@ -114,8 +114,11 @@ def _standard_finders() -> bool:
 
 
 def _interpreter_id() -> str:
-    """A short name for the interpreter (two that share it only take turns: the key tells them apart)."""
-    return format(zlib.crc32(f"{sys.executable}\0{sys.prefix}".encode()), "08x")
+    """A short name for the interpreter and its ``sys.path`` (two that share it only take turns: the key
+    tells them apart). The path is in the name because it differs between ways of starting the same
+    interpreter (the ``postproc`` script, ``python -m postproc``, a batch worker, a benchmark's script):
+    with one file for all, each would find the other's key and discover again."""
+    return format(zlib.crc32(f"{sys.executable}\0{sys.prefix}\0{chr(0).join(sys.path)}".encode()), "08x")
 
 
 def _cache_dir() -> Path:

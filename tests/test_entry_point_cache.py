@@ -62,6 +62,29 @@ def test_a_cached_answer_is_used_while_nothing_changes(site: Path, tmp_path: Pat
     assert ep.entry_points(GROUP, cache_dir=cache, settle=-1) == [("a", "planted")]
 
 
+def test_two_ways_of_starting_keep_their_own_answers(site: Path, tmp_path: Path,
+                                                    monkeypatch: pytest.MonkeyPatch) -> None:
+    """The ``postproc`` script and ``python -m postproc`` (another first entry on ``sys.path``) taking
+    turns: each finds its own cached answer, neither discovers again because of the other."""
+    _distribution(site, "probe_a", "a = json")
+    _age(site)
+    cache = tmp_path / "cache"
+    other = tmp_path / "bin"
+    other.mkdir()
+    _age(other)
+    assert ep.entry_points(GROUP, cache_dir=cache, settle=-1) == [("a", "json")]
+    monkeypatch.syspath_prepend(str(other))
+    assert ep.entry_points(GROUP, cache_dir=cache, settle=-1) == [("a", "json")]
+    assert len(list(cache.iterdir())) == 2
+    for written in cache.iterdir():
+        written.write_text(written.read_text().replace("a=json", "a=planted"))
+    assert ep.entry_points(GROUP, cache_dir=cache, settle=-1) == [("a", "planted")]
+    monkeypatch.undo()
+    monkeypatch.syspath_prepend(str(site))
+    monkeypatch.delenv("POSTPROC_NO_ENTRY_POINT_CACHE", raising=False)
+    assert ep.entry_points(GROUP, cache_dir=cache, settle=-1) == [("a", "planted")]
+
+
 def test_a_new_distribution_is_seen(site: Path, tmp_path: Path) -> None:
     _distribution(site, "probe_a", "a = json")
     _age(site)
