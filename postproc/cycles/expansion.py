@@ -224,18 +224,26 @@ class CycleExpansion(Syntax):
             return
         if "CompoundMotion" not in block.sections:
             limit = UNBOUNDED if ctx is None else ctx.setup.limits.moves_per_block  # None: built outside a run
-            block.add(CompoundMotion(cycle.kind, self.expand(cycle, limit)[0]))
+            block.add(CompoundMotion(cycle.kind, self.items(cycle, limit)))
 
     def expand(self, cycle: CannedCycle, limit: int = UNBOUNDED) -> tuple[list[Section], dict[str, float]]:
         """The items of the cycle and where the tool is when it ends; ``TooManyMoves`` when they would be
         more than ``limit`` (refused before expanding when the count is known in advance)."""
+        path = self._path(cycle, limit)
+        return path.items, path.end()
+
+    def items(self, cycle: CannedCycle, limit: int = UNBOUNDED) -> list[Section]:
+        """``expand``'s items alone (a block's motion: where it ends is the resolver's already)."""
+        return self._path(cycle, limit).items
+
+    def _path(self, cycle: CannedCycle, limit: int) -> ToolPath:
         path = ToolPath(cycle, limit)
         if cycle.repeat <= 0:
-            return [], path.end()
+            return path
         self._enter(path, cycle, limit)
         for a, b in holes(cycle):
             self.hole(path, cycle, a, b)
-        return path.items, path.end()
+        return path
 
     def end(self, cycle: CannedCycle, limit: int = UNBOUNDED) -> dict[str, float]:
         """Where the tool is when the block's holes are done, found without expanding them all: every

@@ -175,7 +175,7 @@ class CannedCycleResolveSyntax(Syntax):
         tool stands is as it was then: the same cycle record at another spot. False when it is not."""
         state = ctx.state
         memo = state.extra.get(_REPEAT_KEY)
-        if not isinstance(memo, _Repeat) or memo.owner is not self or memo.signature != _signature(state):
+        if type(memo) is not _Repeat or memo.owner is not self or memo.signature != _signature(state):
             return False
         pattern = memo.cycle
         first, second, normal = PLANE_AXES[pattern.plane]
@@ -337,7 +337,8 @@ class CannedCycleResolveSyntax(Syntax):
         block.add(cycle)
         block.add(CompoundMotion.lazy(cycle.kind, lazy))  # expanded only for a target without the cycle
         state.extra[ACTIVE_KEY] = (cycle, expansion)
-        sections.pop("CycleCall", None)
+        if "CycleCall" in sections:
+            del sections["CycleCall"]
         motion = sections.get("Motion")
         if motion is not None and motion.mode is None:  # type: ignore[attr-defined]
             del sections["Motion"]
@@ -456,7 +457,7 @@ class _LazyExpansion:
 
     def __call__(self) -> list[Section]:
         try:
-            return self.expansion.expand(self.cycle, self.limit)[0]
+            return self.expansion.items(self.cycle, self.limit)
         except TooManyMoves as err:
             raise self.too_many(err) from None
 
