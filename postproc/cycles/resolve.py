@@ -188,7 +188,7 @@ class CannedCycleResolveSyntax(Syntax):
         for letter in memo.order:
             value = values.get(letter)
             if value is not None:
-                if isinstance(value, Expr):
+                if type(value) is not float and isinstance(value, Expr):  # (a float first: cheaper)
                     return False  # ``build`` sends a computed word to ``_native`` first
                 words[letter] = value
         spot = {first: float(words[first]) if first in words else a,
