@@ -126,6 +126,9 @@ class WordWriter(Writer):
     is not its start and whose end point names an axis of its plane (``straight_move`` leaves a degenerate
     arc to ``generate``, where writers refuse what their controller refuses). A class that overrides one
     of ``STRAIGHT_METHODS`` and does not list it here writes arcs through ``generate``."""
+    BLANK_AS_TRACE: ClassVar[bool] = False
+    """A block whose sections all write nothing on this controller (grbl does without G80, G98/G99, G64)
+    leaves its source line as a comment (``generate``), or nothing when it has no source line."""
     STRAIGHT_AXES: ClassVar[frozenset[str]] = frozenset("XYZABCUVW")
     """The axes a straight move may have to take the straight path: a class whose ``motion_words`` refuses
     some (grbl drives X, Y and Z) names those it writes, so that a move of another still meets the refusal."""
@@ -191,6 +194,7 @@ class WordWriter(Writer):
                           if arcs and code is not None}
         """The arc codes a straight arc is written with (none: arcs take ``generate``)."""
         self.straight_codes_now = True
+        self.blank_as_trace = self.BLANK_AS_TRACE  # (a field: read for every generated block)
         self.expanding = False
         """True while an expansion is written (``compound``): a writer that drops what its controller lacks
         from a block may not drop it from a cycle's motion."""
@@ -471,7 +475,16 @@ class WordWriter(Writer):
         return canonical_number(num, MAX_PLACES, self.leading_zero)
 
     def generate(self, block: Block) -> str:
-        """Generate a block (and any lines a compound motion adds) from its sections."""
+        """Generate a block (and any lines a compound motion adds) from its sections; with
+        ``BLANK_AS_TRACE``, a block of source text whose sections write nothing is its source as a comment."""
+        text = WordWriter._generate(self, block)  # (a direct call, not a dispatch)
+        if self.blank_as_trace and (not text or text.isspace()) and block.sections:
+            if block.text is None:
+                return ""  # a generated part whose only words the controller does without
+            return self.comment(block.text.strip()) + (block.eol or "\n")  # a trace of the source line
+        return text
+
+    def _generate(self, block: Block) -> str:
         sections = block.sections
         compound = sections.get("CompoundMotion")
         if compound is not None:

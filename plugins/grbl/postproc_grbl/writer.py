@@ -88,7 +88,7 @@ class GrblWriter(WordWriter):
     CYCLE_CANCEL_IS_MOTION: ClassVar[bool] = True
     """G80 is a motion code here: ``G80 G0`` is refused, a block's G0-G3 ends the cycle by itself."""
     BARE_FEED_MOTION_NEEDS_FEED: ClassVar[bool] = True
-    STRAIGHT_OVERRIDES: ClassVar[frozenset[str]] = frozenset({"write_block", "generate", "section_words",
+    STRAIGHT_OVERRIDES: ClassVar[frozenset[str]] = frozenset({"write_block", "section_words",
                                                               "motion_words", "item_line"})
     """A straight move of X, Y and Z (``STRAIGHT_AXES``) is never empty, drops nothing, is no arc and no tape
     mark, and its line is ASCII without a real-time character (a canonical line's letters, digits, '.',
@@ -97,6 +97,8 @@ class GrblWriter(WordWriter):
     """And an arc: ``motion_words`` refuses only a helix with no end point in its plane (``straight_move``
     leaves such an arc to it) and axes beyond X, Y and Z (``STRAIGHT_AXES``)."""
     STRAIGHT_AXES: ClassVar[frozenset[str]] = GRBL_AXES
+    BLANK_AS_TRACE: ClassVar[bool] = True
+    """G80, G98/G99, G64 and the like are not grbl's: a block of nothing else is a trace of its source."""
 
     def __init__(self, ctx: Any, source_dialect: str, target: Any = None) -> None:
         super().__init__(ctx, source_dialect, target)
@@ -125,14 +127,6 @@ class GrblWriter(WordWriter):
             self.ctx.diagnostics.warn("grbl acts on '?', '!', '~' and bytes above 0x7F even inside a comment: "
                                       "comments are written without them", self.ctx.at(block))
         return grbl_safe(text)
-
-    def generate(self, block: Block) -> str:
-        text = super().generate(block)
-        if block.sections and (not text or text.isspace()):  # (no stripped copy of every block's text)
-            if block.text is None:
-                return ""  # a generated part whose only words grbl does without (G80, G98/G99, G64)
-            return self.comment(block.text.strip()) + (block.eol or "\n")  # a trace of the source line
-        return text
 
     def section_words(self, key: str, section: Section, block: Block) -> list[str]:
         try:
