@@ -1,7 +1,5 @@
-"""``python -m postproc``: the command line."""
+"""``python -m postproc``: the command line (the process of the ``postproc`` command: postproc.launch)."""
 
-import sys
+from .launch import run
 
-from .cli import main
-
-sys.exit(main())
+run()
