@@ -9,11 +9,13 @@ and messages name a cycle in that dialect's spelling.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import field
 from typing import Mapping
 
+from .records import record
 
-@dataclass(frozen=True, slots=True)
+
+@record(frozen=True, slots=True)
 class CycleWords:
     """The letters of a dialect's hole-cycle words, by role."""
 

@@ -9,11 +9,12 @@ from __future__ import annotations
 import enum
 import re
 import sys
-from dataclasses import dataclass
 from typing import TextIO
 
+from .records import record
 
-@dataclass(frozen=True, slots=True)
+
+@record(frozen=True, slots=True)
 class Location:
     """Where a diagnostic points: 1-based line and column in a named file."""
 

@@ -5,10 +5,10 @@ it imports neither)."""
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any, ClassVar, Literal
 
 from .errors import ConfigError
+from .records import record
 from .setup_record import MAX_COORDINATE, SetupGroup, camel, pydantic_config, setting, values
 from .xmlio import where
 
@@ -247,7 +247,7 @@ CodeAction = Literal["none", "stop", "optional-stop", "spindle-cw", "spindle-ccw
 """What a machine code does in the simulation (``<M action="...">``)."""
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class MachineCode:
     """One machine-specific code (``<M number="31" action="none" name="part counter"/>``, or ``<G ...>``):
     kept verbatim between controllers of one family, simulated by its action."""
@@ -279,7 +279,7 @@ def _number_key(number: str) -> str:
     return f"{int(whole)}.{frac}" if frac else str(int(whole))
 
 
-@dataclass
+@record
 class Templates:
     """jinja2 templates (rendered sandboxed, ``postproc.sequences``) for the program header and footer, and
     for the sequences that replace a block: the tool change, the start of each operation and the program

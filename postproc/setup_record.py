@@ -14,6 +14,8 @@ from __future__ import annotations
 import dataclasses
 from typing import Any, Callable, ClassVar, dataclass_transform
 
+from .records import make_record
+
 
 MAX_COORDINATE = 100_000.0
 """Largest magnitude of a travel limit, home, offset, tool length or start position (100 m or 100,000
@@ -87,4 +89,4 @@ class SetupGroup:
 
     def __init_subclass__(cls, **kwargs: Any) -> None:
         super().__init_subclass__(**kwargs)
-        dataclasses.dataclass(cls)
+        make_record(cls, frozen=False, slots=False)  # a dataclass, its methods made without exec

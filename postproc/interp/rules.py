@@ -17,11 +17,10 @@ LinuxCNC's Fanuc-style subprograms (checked with the packaged ``rs274``):
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from ..records import record
 
 
-
-@dataclass(frozen=True)
+@record(frozen=True)
 class SubprogramRules:
     forward_search: bool
     """``M98`` looks for ``O<n>`` from the call onward and the body runs to ``M99`` (LinuxCNC); else the

@@ -9,8 +9,8 @@ same code serves XY, ZX and YZ. Angles turn counter-clockwise from a to b.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
+from postproc.records import record
 from postproc.state import PLANE_AXES
 
 from .section import HolePattern
@@ -18,7 +18,7 @@ from .section import HolePattern
 Point = tuple[float, float]
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True, slots=True)
 class Hop:
     """The tool's way to a machined point from the machined point before it (point 1 for the first)."""
 

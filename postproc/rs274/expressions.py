@@ -14,10 +14,11 @@ Spelling choices (both dialects): an operator written as a word has a space on e
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import field
 
 from ..errors import Location, ParseError, UnsupportedError
 from ..expr import Binary, Expr, Func, Num, Unary, Var
+from ..records import record
 
 MAX_DEPTH = 64
 """Deepest nesting any spelling accepts (brackets, signs and indirection together)."""
@@ -35,7 +36,7 @@ class ExprSyntaxError(ParseError):
         return self.located(Location(file, line, offset + self.pos + 1))  # type: ignore[return-value]
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class ExprSpelling:
     """How one dialect writes expressions. Word keys are upper case; reading ignores case."""
 
