@@ -3,15 +3,16 @@
 from __future__ import annotations
 
 import io
+import struct
 from decimal import Decimal
 
 import pytest
-from hypothesis import given
+from hypothesis import example, given
 from hypothesis import strategies as st
 
 from postproc.api import translate
 from postproc.errors import ErrorList, ProgramError
-from postproc.numbers import EXACT, EXACT_INCH, MAX_PLACES, format_decimal
+from postproc.numbers import EXACT, EXACT_INCH, MAX_PLACES, decimal_value, format_decimal
 from postproc.setup import MachineSetup, OutputSettings
 from postproc.verify import verify_lines
 
@@ -118,3 +119,54 @@ def test_config_check_accepts_decimals_0(cli, tmp_path) -> None:
     path = tmp_path / "m.xml"
     path.write_text('<MachineSetup name="m">\n  <Output decimals="0" inchDecimals="0"/>\n</MachineSetup>\n')
     assert cli("config", "check", path).status == 0
+
+
+def _same_float(a: float, b: float) -> bool:
+    """Bit for bit: -0.0 is not 0.0 here, and NaN is itself."""
+    return struct.pack("<d", a) == struct.pack("<d", b)
+
+
+def _float_or_error(text: str) -> object:
+    try:
+        return float(text)
+    except ValueError:
+        return ValueError
+
+
+plain_decimals = st.builds(
+    lambda sign, whole, point, fraction: sign + whole + point + fraction,
+    st.sampled_from(["", "-"]), st.text("0123456789", max_size=18), st.sampled_from(["", "."]),
+    st.text("0123456789", max_size=18))
+
+
+@given(text=st.one_of(plain_decimals, st.text("0123456789.-+eE_ \u0661\u0663", max_size=12)))
+@example(text="117.837")
+@example(text="-0.")
+@example(text="0.1")
+@example(text="-.5")
+@example(text="999999999999999.")  # 15 digits: computed
+@example(text="9999999999999999.")  # 16: float's
+@example(text="0.30000000000000004")
+@example(text="1.7976931348623157")
+@example(text=".")
+@example(text="")
+@example(text="1.2.3")
+@example(text="+1.5")
+@example(text="1_0.5")
+@example(text=" 1.5")
+@example(text="\u0661.5")  # an Arabic-Indic digit: float reads it, decimal_value leaves it to float
+def test_decimal_value_is_float_bit_for_bit(text: str) -> None:
+    expected = _float_or_error(text)
+    if expected is ValueError:
+        with pytest.raises(ValueError):
+            decimal_value(text)
+        return
+    assert isinstance(expected, float)
+    assert _same_float(decimal_value(text), expected), text
+
+
+@given(value=st.floats(allow_nan=False, allow_infinity=False, min_value=-1e9, max_value=1e9),
+       places=st.integers(0, 6))
+def test_decimal_value_reads_back_what_the_writer_writes(value: float, places: int) -> None:
+    text = format_decimal(value, places)
+    assert _same_float(decimal_value(text), float(text))
