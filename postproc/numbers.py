@@ -122,8 +122,9 @@ def decimal_value(num: str) -> float:
     Its digits as an integer and the power of ten its places divide by are both exact in a float, so
     their quotient, correctly rounded by the division, is the correctly rounded value of the decimal:
     the value ``float`` returns (Clinger's fast path, which ``float`` takes too, behind its underscore,
-    space and locale handling; ``tests/test_numbers.py`` compares the two bit for bit). Compiled, a CAM
-    block's coordinates are read in under half the time; as Python, ``float`` is faster (``COMPILED``)."""
+    space and locale handling; ``tests/test_numbers.py`` compares the two bit for bit). Compiled, it
+    saves a CAM block of two or three coordinates some 600 of its 22,000 instructions (callgrind); as
+    Python, ``float`` is faster (``COMPILED``)."""
     n: i64 = len(num)
     i: i64 = 0
     negative = False
