@@ -1,12 +1,13 @@
-"""One translation for benchmarks/callgrind.sh, as ``make bench`` runs it (the command line, reading the
-file and writing one): python callgrind_once.py SRC TGT NORMALIZE FILE."""
+"""One translation for benchmarks/callgrind.sh, as ``make bench`` runs it: the ``postproc`` command's
+process (``postproc.launch``: the command line, reading the file and writing one), in this interpreter
+so that valgrind follows it. python callgrind_once.py SRC TGT NORMALIZE FILE."""
 from __future__ import annotations
 
 import os
 import sys
 import tempfile
 
-from postproc.cli import main
+from postproc.launch import run
 
 source, target, normalize, path = sys.argv[1:5]
 options = ["--normalize"] if normalize == "1" else []
@@ -15,4 +16,5 @@ if target == "grbl":
     options += ["--on-unsupported", "warn"]
 with tempfile.TemporaryDirectory() as work:
     out = os.path.join(work, "out.nc")
-    sys.exit(main(["translate", "--from", source, "--to", target, *options, path, "-o", out]))
+    sys.argv = ["postproc", "translate", "--from", source, "--to", target, *options, path, "-o", out]
+    run()
