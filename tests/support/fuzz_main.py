@@ -22,6 +22,7 @@ from hypothesis import strategies as st
 
 from postproc.setup import MachineSetup
 from tests.support.fuzzing import PAIRS, READERS, check_toolpath, check_translation, known_defect, programs, setups
+from tests.support.generators import Case, strategies
 
 ROUND = 200
 """Cases per pair and round (a hypothesis run without shrinking; we reduce failures ourselves)."""
@@ -105,6 +106,14 @@ class Fuzzer:
                             setup)
 
             path_case()
+        for kind, strategy in strategies().items():
+            @settings(max_examples=ROUND, deadline=None, database=None, phases=[Phase.generate],
+                      suppress_health_check=list(HealthCheck))
+            @given(case=strategy)
+            def generated_case(case: Case) -> None:
+                self.record(case.name, case.run, case.program, case.target, case.setup)
+
+            generated_case()
 
 
 def reduce(program: str, fails: Callable[[str], bool], budget: int = 300) -> str:
