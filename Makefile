@@ -11,6 +11,7 @@ NATIVE := $(VENV)/.compiled
 .PHONY: install compile run test bench typecheck fuzz clean
 
 $(STAMP): pyproject.toml setup.py $(PLUGINS)
+	@echo "make: creating $(VENV) and installing postproc, its plugins and their dependencies (about a minute)"
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/pip install --quiet --upgrade pip
 	POSTPROC_PURE=1 $(BIN)/pip install --quiet -e '.[test,render,dask]' $(foreach p,$(PLUGINS),-e $(dir $(p)))
@@ -19,6 +20,7 @@ $(STAMP): pyproject.toml setup.py $(PLUGINS)
 # Compiles the hot path (pure Python where there is no C compiler), again when a hot module is edited
 # (meanwhile postproc runs it as pure Python: postproc --version says which).
 $(NATIVE): $(STAMP) $(HOT)
+	@echo "make: compiling the $(words $(HOT)) hot modules with mypyc (a minute or two; postproc already runs, as pure Python)"
 	$(BIN)/pip install --quiet --no-deps -e .
 	touch $(NATIVE)
 
@@ -35,12 +37,15 @@ run: install
 	bash examples/run.sh
 
 # The whole suite against the compiled hot path, then against the pure-Python fallback (skipped where
-# nothing was compiled: the first run was pure already).
+# nothing was compiled: the first run was pure already). Each run spreads its tests over every core
+# (pytest-xdist; JOBS=1 runs them in one process); a worker idle at the end takes tests from a busy one.
+JOBS ?= auto
+PYTEST := $(BIN)/python -m pytest -n $(JOBS) --dist worksteal
 test: install
 	$(BIN)/postproc --version
-	$(BIN)/python -m pytest
+	$(PYTEST)
 	if [ -f postproc/_compiled/manifest.txt ]; then \
-	  POSTPROC_PURE=1 $(BIN)/postproc --version && POSTPROC_PURE=1 $(BIN)/python -m pytest; fi
+	  POSTPROC_PURE=1 $(BIN)/postproc --version && POSTPROC_PURE=1 $(PYTEST); fi
 
 bench: $(NATIVE)
 	$(BIN)/pip install --quiet -r benchmarks/requirements.txt

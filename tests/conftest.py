@@ -67,6 +67,19 @@ def _outputs_valid_on_their_controllers() -> object:
     assert not found, "\n\n".join(found)
 
 
+def pytest_sessionfinish(session: pytest.Session) -> None:
+    """An xdist worker hands its counts to the controller, which prints the sum (``pytest_testnodedown``)."""
+    workeroutput = getattr(session.config, "workeroutput", None)
+    if workeroutput is not None:
+        workeroutput["outputs_checked"] = dict(output_rules.checked)
+
+
+@pytest.hookimpl(optionalhook=True)
+def pytest_testnodedown(node: object, error: object) -> None:
+    for target, n in getattr(node, "workeroutput", {}).get("outputs_checked", {}).items():
+        output_rules.checked[target] = output_rules.checked.get(target, 0) + n
+
+
 def pytest_terminal_summary(terminalreporter: pytest.TerminalReporter) -> None:
     counts = ", ".join(f"{n} {target}" for target, n in output_rules.checked.items())
     terminalreporter.write_line(f"outputs checked against their controller's rules: {counts}")
