@@ -123,8 +123,9 @@ def decimal_value(num: str) -> float:
     their quotient, correctly rounded by the division, is the correctly rounded value of the decimal:
     the value ``float`` returns (Clinger's fast path, which ``float`` takes too, behind its underscore,
     space and locale handling; ``tests/test_numbers.py`` compares the two bit for bit). Compiled, it
-    saves a CAM block of two or three coordinates some 600 of its 22,000 instructions (callgrind); as
-    Python, ``float`` is faster (``COMPILED``)."""
+    saves a CAM block of two or three coordinates some 600 of its 22,000 instructions (callgrind). The
+    pure-Python build runs the same loop (slower there than ``float``'s C, by design: both builds compute
+    one way, and only the compiled one is the fast one)."""
     n: i64 = len(num)
     i: i64 = 0
     negative = False
@@ -152,12 +153,6 @@ def decimal_value(num: str) -> float:
         return float(num)
     value = float(mantissa) / _POWERS[places] if places > 0 else float(mantissa)
     return -value if negative else value
-
-
-COMPILED: Final = type(decimal_value).__name__ != "function"
-"""Whether this module runs compiled (a compiled function is no Python function object). A hot path
-reads a plain decimal with ``decimal_value`` when it does, with ``float`` when it does not: as Python a
-loop over characters is slower than ``float``'s C (the two return the same float)."""
 
 
 def shortcut_places(places: int, exact: float = EXACT) -> int:

@@ -13,8 +13,7 @@ from postproc.ir import Block, Sequence
 
 from postproc.lines import BOM, EOF_BYTE, lexable
 
-from postproc.numbers import CANONICAL_BLOCK
-from postproc.rs274.canonical_line import CANONICAL, CODES, COMPILED, NO_WORDS, WITH_CODES, scan_words
+from postproc.rs274.canonical_line import CANONICAL, CODES, scan_words
 from postproc.rs274.lexer import WORDS_ONLY, WORD, lex_block
 
 from .macro import read_call
@@ -31,7 +30,6 @@ class FanucReader(Reader):
         file = self.ctx.file
         report = self.ctx.diagnostics.error
         plain = WORDS_ONLY.fullmatch
-        canonical = CANONICAL_BLOCK.fullmatch
         findall = WORD.findall
         number = 0
         for raw in lines:
@@ -52,15 +50,10 @@ class FanucReader(Reader):
             first = text[:1]
             if first in _FAST_START:
                 # A canonical block (``postproc.rs274.canonical_line``): words only, single spaces, a
-                # digits-only N; compiled, a byte scan finds it and tells a CAM line (no G or M word, so
-                # no call to look for) from the rest, and takes upper-case plain words whose numbers are
-                # not canonical too (``X10``); as Python the regex is cheaper.
-                if COMPILED:
-                    kind, words, sequence = scan_words(text)  # and its words, and its block number
-                else:
-                    kind = WITH_CODES if canonical(text) is not None else 0
-                    words = [(w[0], w[1:]) for w in text.split(" ")] if kind else NO_WORDS
-                    sequence = int(words[0][1]) if kind and first == "N" else -1
+                # digits-only N; a byte scan finds it and tells a CAM line (no G or M word, so no call
+                # to look for) from the rest, and takes upper-case plain words whose numbers are not
+                # canonical too (``X10``).
+                kind, words, sequence = scan_words(text)  # and its words, and its block number
                 if kind:
                     block = Block(number, text, eol, words)
                     if kind & CANONICAL:

@@ -21,7 +21,7 @@ from typing import Any, ClassVar, Mapping, Final
 
 from postproc.errors import ParseError, ProgramError
 from postproc.expr import Binary, Expr, Num
-from postproc.numbers import COMPILED as FAST_DECIMALS, decimal_value
+from postproc.numbers import decimal_value
 from postproc.ir import (
     Block, DataSetting, MachineFunction, Coolant, CutterCompensation, CycleCall, CycleCancel, DistanceMode, Dwell, Feed, FeedMode,
     MachineCoordinates, Motion, NativeCode, PathControl, Plane, ProgramControl, ReturnLevel,
@@ -231,14 +231,14 @@ class WordBlockSyntax(Syntax):
             kind = _PLAIN_KIND[index]
             if kind == _AXIS and (upper or "." in num):  # canonical: an axis number has its point
                 # boxed once, shared by both dictionaries (compiled)
-                number: object = decimal_value(num) if FAST_DECIMALS else float(num)
+                number: object = decimal_value(num)
                 values[up] = axes[up] = number  # type: ignore[assignment]
             elif kind == _N and "." not in num:
                 values["N"] = sequence.number if isinstance(sequence, Sequence) else int(num)
             elif cycle:
                 break  # a code, F or a cycle word under an active cycle: the general path
             elif kind == _F:
-                values["F"] = decimal_value(num) if FAST_DECIMALS else float(num)
+                values["F"] = decimal_value(num)
             elif kind == _G and mode is None:
                 key = _MOTION_KEYS.get(num)
                 entry = self.table(ctx).g.get(key) if key is not None else None
@@ -246,7 +246,7 @@ class WordBlockSyntax(Syntax):
                     break
                 mode = str(entry[2])
             elif kind == _ARC and (upper or "." in num):
-                values[up] = decimal_value(num) if FAST_DECIMALS else float(num)
+                values[up] = decimal_value(num)
                 arc_words = True
             else:
                 break

@@ -1,18 +1,15 @@
-"""Whether a line is already in canonical spelling (``postproc.numbers.CANONICAL_BLOCK``): one answer,
-two ways of finding it.
+"""Whether a line is already in canonical spelling (``postproc.numbers.CANONICAL_BLOCK``), by one scan
+over its bytes.
 
-Compiled (mypyc), a scan over the line's bytes costs a fifth of the regex, which was the largest
-single cost of reading a CAM line (~8,500 instructions a line); as pure Python the same scan is four
-times slower than the regex, so the pure fallback keeps the regex. ``tests/test_canonical_line.py``
-checks the two agree on any text.
+Compiled (mypyc), the scan costs a fifth of the regex, which was the largest single cost of reading a
+CAM line (~8,500 instructions a line). The pure-Python build runs the same scan (there it is slower than
+the regex: both builds compute one way, and only the compiled one is the fast one).
+``tests/test_canonical_line.py`` holds the scan to the regex on any text.
 """
 
 from __future__ import annotations
 
-from types import FunctionType
 from typing import Final
-
-from postproc.numbers import CANONICAL_BLOCK
 
 CANONICAL: Final = 1
 """``scan``'s answer for a canonical line without G or M words (a CAM line: N, axes, F)."""
@@ -127,18 +124,3 @@ def scan_words(text: str) -> tuple[int, list[tuple[str, str]], int]:
         i += 1
         if i == n:
             return 0, NO_WORDS, -1
-
-
-def by_regex(text: str) -> int:
-    """The regex's answer as ``scan`` gives it, but for the codes (the pure-Python fallback's way:
-    ``WITH_CODES`` for every canonical line, so a reader always looks for calls)."""
-    return WITH_CODES if CANONICAL_BLOCK.fullmatch(text) is not None else 0
-
-
-COMPILED: Final = not isinstance(scan, FunctionType)
-"""True when this module runs compiled (a compiled function is not a Python function object)."""
-
-
-def classify(text: str) -> int:
-    """``scan``'s answer (0, ``CANONICAL`` or ``WITH_CODES``), the cheaper way for how this module runs."""
-    return scan(text) if COMPILED else by_regex(text)
