@@ -54,7 +54,7 @@ def test_native_cycles_are_written_natively_or_expanded(target: str) -> None:
     """A cycle the target lists stays a cycle when its semantics match; any other is expanded."""
     dialect = REGISTRY.dialect(target)
     text = _write(target, "G98 G81 X10. Y10. Z-5. R2. F100.")
-    native = "drill" in dialect.NATIVE_CYCLES and dialect.capabilities().get("CYCLE_SEMANTICS", "fanuc") == "fanuc"
+    native = "drill" in dialect.NATIVE_CYCLES and dialect.capabilities().get("CYCLE_SEMANTICS") == "fanuc"
     code = [line for line in text.splitlines() if not line.startswith("(")]
     assert any("G81" in line for line in code) == native
     assert ("drill from line 3" in text) == (not native)
@@ -102,3 +102,16 @@ def test_the_dialects_command_lists_every_capability(capsys: pytest.CaptureFixtu
     for dialect in REGISTRY.dialects.values():
         for name in dialect.capabilities():
             assert re.search(rf"^{name} ", listed, re.M), name
+
+
+@pytest.mark.parametrize("name", sorted(REGISTRY.dialects))
+def test_each_dialect_names_its_own_cycle_rules(name: str) -> None:
+    """The core has no family's default: a dialect with native cycles names the rules they follow (one
+    of ``postproc.cycles.semantics``), one without names none (``postproc dialects`` shows '-')."""
+    from postproc.cycles.semantics import SEMANTICS
+
+    dialect = REGISTRY.dialect(name)
+    if dialect.NATIVE_CYCLES:
+        assert dialect.CYCLE_SEMANTICS in SEMANTICS
+    else:
+        assert dialect.CYCLE_SEMANTICS == ""

@@ -4,7 +4,8 @@ deliberately broken copies of the Mach3 example plugin and read the report.
 Each copy is the example package copied and renamed, with one defect put in by a text edit, and made
 installed by a ``.dist-info`` folder with its entry point on ``PYTHONPATH`` (what pip would write):
 a writer that drops the Y word, a capability flag that lies (an oriented spindle stop with no M19 row),
-a reader whose error has no location, and a pipeline file that says other than ``python_pipeline``.
+a reader whose error has no location, a pipeline file that says other than ``python_pipeline``, and
+native cycles without the rules they follow (``CYCLE_SEMANTICS``).
 """
 
 from __future__ import annotations
@@ -35,6 +36,7 @@ DEFECTS: dict[str, list[tuple[str, str, str]]] = {
                    "                raise ParseError(\"parameters are not supported\")\n"
                    "            yield block\n")],
     "drift": [("mach3.xml", '<CannedCycleResolveSyntax semantics="rs274"/>', "<CannedCycleResolveSyntax/>")],
+    "norules": [("__init__.py", '    CYCLE_SEMANTICS = "rs274"\n', "")],
 }
 
 TEST_MODULE = '''
@@ -44,10 +46,10 @@ from postproc.testing import ConformanceTests, DialectUnderTest
 
 HERE = Path(__file__).parent
 
-@pytest.fixture(params=["dropy", "lies", "notap", "unlocated", "drift"])
+@pytest.fixture(params=["dropy", "lies", "notap", "unlocated", "drift", "norules"])
 def postproc_conformance(request):
     name = request.param
-    others = frozenset({"mach3", "dropy", "lies", "notap", "unlocated", "drift"}) - {name}
+    others = frozenset({"mach3", "dropy", "lies", "notap", "unlocated", "drift", "norules"}) - {name}
     return DialectUnderTest(name, HERE / "examples", HERE / ("invalid_" + name), skip_targets=others)
 
 class TestBroken(ConformanceTests):
@@ -144,3 +146,9 @@ def test_checks_the_defects_do_not_touch_still_pass(report: str) -> None:
         for test in ("test_examples_read_back_byte_for_byte", "test_ir_survives_xml"):
             assert f"FAILED test_broken.py::TestBroken::{test}[{case}]" not in summary, report
     assert not any(line.startswith("FAILED") and "[lies]" in line and "capability" not in line for line in summary), report
+
+
+def test_native_cycles_without_their_rules_are_named(report: str) -> None:
+    """The core has no family default: a plugin listing native cycles must say whose rules they follow."""
+    text = _section(report, "test_capability_flags_match_the_writer", "norules")
+    assert "norules: NATIVE_CYCLES without CYCLE_SEMANTICS (fanuc or rs274)" in text

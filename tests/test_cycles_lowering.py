@@ -34,6 +34,7 @@ class Other(Dialect):
     NAME = "other"
     WRITER = OtherWriter
     NATIVE_CYCLES = frozenset({"drill", "drill_dwell", "peck_deep"})
+    CYCLE_SEMANTICS = "fanuc"
     SPINDLE_ORIENTATION = False
 
 

@@ -37,6 +37,8 @@ class Fagor(Dialect):
     NATIVE_CYCLES = frozenset({"drill", "drill_dwell", "bore_feed", "bore_dwell_feed"})
     """G81 (drilling, dwell K) and G89 (boring, dwell K, feed out) [K]; Fanuc's G81/G85 are written as them
     with no dwell. Every other cycle is expanded (Fagor's G82-G88 are other cycles or unconfirmed)."""
+    CYCLE_SEMANTICS = "fanuc"
+    """Its G81/G89 move as Fanuc's G81/G85 do (the mapping above) [K]."""
     PROGRAM_NUMBERS = True
     """``%1001`` names the main program [V: the ``%<name>`` header]."""
     HOLE_PATTERNS = frozenset({"line", "parallelogram", "grid", "circle", "arc"})

@@ -35,6 +35,8 @@ class Fanuc(Dialect):
     G73-G89."""
     NATIVE_CYCLES = ALL_MILLING_CYCLES
     """G73, G74, G76, G81-G89 all run natively."""
+    CYCLE_SEMANTICS = "fanuc"
+    """Fanuc's cycle rules (``postproc.cycles.semantics``: initial level, G98/G99, K repeats)."""
     TAPE_MARKS = True
     """``%`` opens and closes a program on tape or DNC."""
     PROGRAM_NUMBERS = True

@@ -39,6 +39,7 @@ from .checks import (
     pipeline_problems, read_text, round_trip_problems, targets,
 )
 from ..errors import PostprocError
+from ..cycles.semantics import SEMANTICS
 from .neutral import NeutralProgram
 from .probes import PROBES, probe_problems
 from .strategies import garbage, neutral_programs
@@ -152,7 +153,10 @@ class ConformanceTests:
         dialect = case.cls()
         if dialect.reads_lathe(case.machine()):
             pytest.skip(f"{case.name}: the probes are milling blocks (the examples are read as a lathe's)")
-        _report([p for probe in PROBES for p in probe_problems(dialect, probe, case.machine())], case)
+        rules = [] if not dialect.NATIVE_CYCLES or dialect.CYCLE_SEMANTICS in SEMANTICS else [
+            f"{case.name}: NATIVE_CYCLES without CYCLE_SEMANTICS ({' or '.join(SEMANTICS)}): every cycle "
+            f"read elsewhere would be expanded for it"]
+        _report(rules + [p for probe in PROBES for p in probe_problems(dialect, probe, case.machine())], case)
 
     def test_translations_verify_or_are_refused(self, postproc_conformance: DialectUnderTest) -> None:
         case = postproc_conformance
