@@ -207,6 +207,10 @@ def build_parser() -> argparse.ArgumentParser:
                         "X0.01); no digit the program wrote is rounded away")
     t.add_argument("--renumber", metavar="START[,STEP]", help="renumber blocks (implies --normalize)")
     t.add_argument("--in-place", action="store_true", help="allow -o to name the input (replace it)")
+    t.add_argument("--program-number", type=_program_number, metavar="N",
+                   help="the main program's number (1-9999) in a dialect that writes one (Fanuc O, ISG %%): "
+                        "replaces the source's, and numbers a named ISG/Fagor program (whose name is kept as "
+                        "a comment); as <Output programNumber>")
     t.add_argument("--define", action="append", default=[], metavar="NAME=VALUE",
                    help="a variable the set-up's templates see as NAME (repeatable)")
     _batch_arguments(t)
@@ -383,6 +387,8 @@ def cmd_translate(args: argparse.Namespace) -> int:
         raise UsageError("--tolerance and --allow-ignored go with --verify")
     from .batch import is_batch
     if is_batch(args):
+        if args.program_number is not None:
+            raise UsageError("--program-number numbers one program: not with several inputs")
         from .batch.command import run_batch
         if args.tolerance is None:
             args.tolerance = 0.001
@@ -391,6 +397,10 @@ def cmd_translate(args: argparse.Namespace) -> int:
     setup = _setup(args.machine, args.lib)
     if args.normalize:
         setup.output.normalize = True
+    if args.program_number is not None:
+        if not default_registry().dialect(args.target).PROGRAM_NUMBERS:
+            raise UsageError(f"--program-number: the {args.target} dialect writes no program number")
+        setup.output.program_number = args.program_number
     if renumber is not None:
         setup.output.renumber_start, step = renumber
         if step is not None:
@@ -404,6 +414,17 @@ def cmd_translate(args: argparse.Namespace) -> int:
             on_unsupported=args.on_unsupported, diagnostics=diagnostics, defines=defines),
             input_path=_input_path(path), in_place=args.in_place)
     return 0
+
+
+def _program_number(text: str) -> int:
+    """``--program-number N``: a whole number 1-9999 (argparse reports anything else as a usage error)."""
+    try:
+        number = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a whole number") from None
+    if not 1 <= number <= 9999:
+        raise argparse.ArgumentTypeError(f"{number} is not a program number (1-9999)")
+    return number
 
 
 def _renumber(text: str | None) -> tuple[int, int | None] | None:

@@ -61,12 +61,14 @@ def _framed(blocks: Iterator[Block], marks: str, number: str | int) -> Iterator[
 
 
 def _renumbered(block: Block, number: str | int) -> Block:
-    """The main program's own line with the number asked for, or without it (its comment stays)."""
+    """The main program's own line with the number asked for (a name it had stays, for a writer that
+    keeps it as a comment), or without it (its comment stays)."""
     block.changed()
     if number == "none":
         del block.sections["ProgramStart"]
     else:
-        block.sections["ProgramStart"] = ProgramStart(int(number))
+        old = block.sections["ProgramStart"]
+        block.sections["ProgramStart"] = ProgramStart(int(number), getattr(old, "name", None))
     return block
 
 

@@ -21,6 +21,9 @@ _DIGITS = frozenset("0123456789")
 _LETTERS = frozenset("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz")
 _NAME = frozenset("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_.")
 _FILE_NAME = frozenset("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_.-/\\")
+_BLANKS = frozenset(" \t")
+"""Inside a main program's name: Beckhoff's own streaming-mode sample starts ``% TestProgram for streaming
+mode`` [V: TwinCAT CNC sample programs]; a subroutine's name (``%L name``) is a file name, without them."""
 SKIP_LEVELS = 10
 """Block skip levels ``/1`` ... ``/10`` (plain ``/`` is level 1)."""
 
@@ -215,7 +218,7 @@ def _header(file: str, line: int, code: str, pos: int, lexed: Lexed) -> None:
             raise _error(file, line, pos, f"a local subroutine needs a name: %L <name>, not {rest!r}")
         lexed.header = ("sub", name)
         return
-    if any(ch not in _FILE_NAME for ch in rest):
+    if any(ch not in _FILE_NAME and ch not in _BLANKS for ch in rest):
         raise _error(file, line, pos, f"malformed program name {rest!r}")
     lexed.header = ("main", rest)
 

@@ -52,6 +52,8 @@ _RANK: Final = {key: rank for rank, key in enumerate(SECTION_ORDER)}
 _UNWRITTEN: Final = frozenset(("ProgramStart", "TapeMark", "Label"))
 """Sections outside ``SECTION_ORDER`` that are not refused: written apart (a program start, a tape mark) or
 meaning nothing in a straight program (a label)."""
+UNNAMED_PROGRAM_NUMBER: Final = 1
+"""The ``O`` number of a named program when neither the set-up nor the command line gives one."""
 
 
 _CENTER_LETTER: Final = {"X": "I", "Y": "J", "Z": "K"}
@@ -698,9 +700,17 @@ class WordWriter(Writer):
         return [self.comment(t) for t in s.texts]
 
     def program_start(self, s: Any, block: Block) -> str:
-        if s.number is None:
-            self.unsupported("a named program", block)
-        return f"O{int(s.number):04d}"
+        """``O`` and the program's number; a named program (ISG/Fagor ``%name``) takes the number the set-up
+        or ``--program-number`` gives, else ``O0001`` with a warning, and its name follows as a comment (a
+        comment on the ``O`` line is how Fanuc shows a program's name in its directory [K])."""
+        number = s.number
+        if number is None:
+            number = UNNAMED_PROGRAM_NUMBER
+            self.ctx.diagnostics.warn(
+                f"the program {s.name!r} has no number in the {self.DIALECT} dialect: written as "
+                f"O{number:04d} (give one with --program-number or <Output programNumber>)", self.ctx.at(block))
+        text = f"O{int(number):04d}"
+        return text + " " + self.comment(str(s.name)) if s.name else text
 
     def block_delete_words(self, s: Any, block: Block) -> list[str]:
         return ["/" if s.level == 1 else f"/{s.level}"]
