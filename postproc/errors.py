@@ -64,6 +64,10 @@ class ProgramError(PostprocError):
 class UnsupportedError(PostprocError):
     """The target dialect or machine cannot express a construct."""
 
+    section: str | None = None
+    """The key of the block's section the writer refused, where it knows it (``--on-unsupported warn``
+    then writes the block without that section: ``postproc.partial_block``)."""
+
 
 class ConfigError(PostprocError):
     """A machine set-up, pipeline file or template is invalid."""

@@ -17,6 +17,7 @@ from .cycle_words import CycleWords
 from .errors import PostprocError, UnsupportedError
 from .ir import Block, one_line
 from .line_format import LineFormat
+from .partial_block import write_without_refused
 
 @mypyc_attr(allow_interpreted_subclasses=True)
 class WrittenDialect(Protocol):
@@ -155,8 +156,13 @@ class Writer(abc.ABC):
         return found if found is not None else _NO_TEMPLATES
 
     def unsupported_block(self, block: Block, err: UnsupportedError) -> str | None:
+        """An error; with ``--on-unsupported warn``, the block without what the target cannot express and
+        what depends on it (``postproc.partial_block``), or, where nothing can be kept, as a comment."""
         err.located(self.ctx.at(block))
         if self.ctx.on_unsupported == "warn":
+            kept = write_without_refused(self, block, err)
+            if kept is not None:
+                return kept
             self.ctx.diagnostics.warn(err.message + "; written as a comment", err.location)
             return self.comment_out(block)
         self.ctx.diagnostics.error(err)

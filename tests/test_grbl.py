@@ -134,7 +134,18 @@ def test_warn_mode_keeps_the_motion_of_a_block_and_comments_the_original() -> No
     text, warnings = to_grbl("N60 G43 H01 Z50. M08\n", on_unsupported="warn")
     assert text == "(UNSUPPORTED LINE 2: N60 G43 H01 Z50. M08)\nN60 G0 Z50. M8\n"
     assert warnings == ["t.nc:2:1: warning: the grbl dialect cannot express a tool length offset from a table "
-                        "(G43 H1; grbl has only G43.1); dropped, the rest of the block is written"]
+                        "(G43 H1; grbl has only G43.1); dropped (H01) (the block's motion moves the programmed "
+                        "point without the tool's length); the rest of the block is written"]
+
+
+def test_warn_mode_drops_a_motion_with_the_mode_it_needs() -> None:
+    """F0.1 per revolution read as per minute would crawl, or race at another spindle speed: the feed and
+    the move go with G95, which grbl lacks; the spindle start stays."""
+    text, warnings = to_grbl("S500 M03 G95 G01 X5. F0.1\n", on_unsupported="warn")
+    assert text == "(UNSUPPORTED LINE 2: S500 M03 G95 G01 X5. F0.1)\nS500 M3\n"
+    assert warnings == ["t.nc:2:1: warning: the grbl dialect cannot express feed mode per_rev; dropped, with F0.1 "
+                        "(its feed rate) and X5. (the block's motion), which cannot be written without it; the rest "
+                        "of the block is written"]
 
 
 def test_warn_mode_comments_out_a_block_that_has_no_meaning_left() -> None:

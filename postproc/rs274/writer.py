@@ -511,14 +511,22 @@ class WordWriter(Writer):
                 last = at
         if not ordered:
             present.sort(key=rank.__getitem__)
-        for key in present:  # a direct call: compiled, it dispatches to a subclass's override natively
-            words.extend(self.section_words(key, sections[key], block))
-        if len(present) != len(sections):
-            for key in sections:
-                # A named label (ISG [NAME]) is only a jump target: a program that jumps is run (flattened),
-                # its labels dropped; in a straight program a label does nothing.
-                if key not in rank and key not in self.IGNORED and key not in _UNWRITTEN:
-                    self.unsupported(f"{key}", block)
+        current = ""
+        try:
+            for key in present:  # a direct call: compiled, it dispatches to a subclass's override natively
+                current = key
+                words.extend(self.section_words(key, sections[key], block))
+            if len(present) != len(sections):
+                for key in sections:
+                    # A named label (ISG [NAME]) is only a jump target: a program that jumps is run
+                    # (flattened), its labels dropped; in a straight program a label does nothing.
+                    if key not in rank and key not in self.IGNORED and key not in _UNWRITTEN:
+                        current = key
+                        self.unsupported(f"{key}", block)
+        except UnsupportedError as err:
+            if err.section is None:
+                err.section = current  # which section: --on-unsupported warn drops it (postproc.partial_block)
+            raise
         start = sections.get("ProgramStart")
         if start is not None:
             words.insert(0, self.program_start(start, block))

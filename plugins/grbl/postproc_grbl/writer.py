@@ -19,9 +19,8 @@ pause, G49 before motion, full circles) are the lean-controller lowering steps g
   translation, comments are written in ASCII without them (``Ø`` as ``DIA``, ``°`` as ``DEG``, accents
   dropped, anything else ``_``), with one warning.
 
-With ``--on-unsupported warn``, a block whose only problem is a droppable modal word (a tool length
-offset, cutter compensation, block delete, ...) is written without that word after a comment of the
-original block, so its motion is kept; anything else falls back to the whole block as a comment.
+With ``--on-unsupported warn``, a block loses only what grbl refuses and what cannot be written without it,
+after a comment of the original block, as for every writer (``postproc.partial_block``).
 """
 
 from __future__ import annotations
@@ -30,7 +29,6 @@ import re
 import unicodedata
 from typing import Any, ClassVar, Final
 
-from postproc.errors import UnsupportedError
 from postproc.ir import Block, ProgramControl, Section
 from postproc.state import PLANE_AXES
 from postproc.rs274.codes import CodeTable
@@ -38,11 +36,6 @@ from postproc.rs274.writer import WordWriter
 
 from .codes import CODES
 
-DROPPABLE = frozenset({
-    "ToolLengthOffset", "CutterCompensation", "BlockDelete", "PathControl", "SpindleOrientation",
-    "ToolChange", "FeedMode", "WorkOffset",
-})
-"""Sections a block can lose in warn mode and still mean the same motion (their loss is warned)."""
 GRBL_AXES = frozenset("XYZ")
 """Axes of a stock grbl 1.1 build."""
 
@@ -88,8 +81,7 @@ class GrblWriter(WordWriter):
     CYCLE_CANCEL_IS_MOTION: ClassVar[bool] = True
     """G80 is a motion code here: ``G80 G0`` is refused, a block's G0-G3 ends the cycle by itself."""
     BARE_FEED_MOTION_NEEDS_FEED: ClassVar[bool] = True
-    STRAIGHT_OVERRIDES: ClassVar[frozenset[str]] = frozenset({"write_block", "section_words",
-                                                              "motion_words", "item_line"})
+    STRAIGHT_OVERRIDES: ClassVar[frozenset[str]] = frozenset({"write_block", "motion_words", "item_line"})
     """A straight move of X, Y and Z (``STRAIGHT_AXES``) is never empty, drops nothing, is no arc and no tape
     mark, and its line is ASCII without a real-time character (a canonical line's letters, digits, '.',
     '-' and spaces): these overrides write it as the base does (``item_line`` differs only at a pause)."""
@@ -102,7 +94,6 @@ class GrblWriter(WordWriter):
 
     def __init__(self, ctx: Any, source_dialect: str, target: Any = None) -> None:
         super().__init__(ctx, source_dialect, target)
-        self._dropped: list[UnsupportedError] = []
         self._sanitised = False
         """A comment has been made safe for grbl (warned once)."""
 
@@ -111,15 +102,7 @@ class GrblWriter(WordWriter):
         if "TapeMark" in block.sections:
             text: str | None = self.comment("%") + (block.eol or "\n")
         else:
-            if self._dropped:
-                self._dropped = []  # left by a block whose writing failed
             text = super().write_block(block)
-            if self._dropped:
-                where = self.ctx.at(block)
-                for err in self._dropped:
-                    self.ctx.diagnostics.warn(err.message + "; dropped, the rest of the block is written", where)
-                self._dropped = []
-                text = self.comment_out(block) + (text or "")
         if text is None or self.source_dialect == self.DIALECT or _plain_ascii(text):
             return text
         if not self._sanitised:
@@ -127,16 +110,6 @@ class GrblWriter(WordWriter):
             self.ctx.diagnostics.warn("grbl acts on '?', '!', '~' and bytes above 0x7F even inside a comment: "
                                       "comments are written without them", self.ctx.at(block))
         return grbl_safe(text)
-
-    def section_words(self, key: str, section: Section, block: Block) -> list[str]:
-        try:
-            return super().section_words(key, section, block)
-        except UnsupportedError as err:
-            if self.expanding or key not in DROPPABLE or self.ctx.on_unsupported != "warn":
-                # nothing may be dropped from a cycle's motion
-                raise
-            self._dropped.append(err.with_traceback(None))  # kept for its message: its frames would hold
-            return []  # the block in a reference cycle (freed only by the collector, paused while streaming)
 
     def item_line(self, item: Section, block: Block) -> str:
         """A pause inside an expansion is for the operator to work at the tool (orient it by hand, jog it

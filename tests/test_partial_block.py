@@ -1,0 +1,68 @@
+"""``--on-unsupported warn`` drops only what the target refuses (issue #26, item 4;
+``postproc.partial_block``): the rest of the block is written after a comment of the source line, what
+cannot be written without the refused section goes with it and is named, and ``verify`` reports the loss."""
+
+from __future__ import annotations
+
+import io
+
+import pytest
+
+from postproc.api import translate
+from postproc.errors import Diagnostics, ErrorList
+from postproc.verify import verify_lines
+
+START = "G21 G90 G0 X0 Y0 Z50.\nS1000 M03\n"
+
+
+def warned(body: str, target: str) -> tuple[list[str], list[str]]:
+    """The translated lines after the start, and the warnings."""
+    warnings = io.StringIO()
+    out = io.StringIO()
+    translate(io.StringIO(START + body + "M30\n"), out, file="t.nc", source="fanuc", target=target,
+              on_unsupported="warn", diagnostics=Diagnostics(warn_stream=warnings))
+    return out.getvalue().splitlines()[2:-1], warnings.getvalue().splitlines()
+
+
+@pytest.mark.parametrize("target, comment", [("isg", "(UNSUPPORTED LINE 3: G43 H18 Z1. M08)"),
+                                             ("fagor", ";UNSUPPORTED LINE 3: G43 H18 Z1. M08")])
+def test_a_refused_tool_length_offset_leaves_its_motion_and_coolant(target: str, comment: str) -> None:
+    lines, warnings = warned("G43 H18 Z1. M08\n", target)
+    assert lines == [comment, "G00 Z1. M08"]
+    assert warnings == [f"t.nc:3:1: warning: the {target} dialect cannot express a tool length offset from a table; "
+                        "dropped (H18) (the block's motion moves the programmed point without the tool's length); "
+                        "the rest of the block is written"]
+
+
+def test_a_move_in_machine_coordinates_goes_with_g53_and_the_coolant_stays() -> None:
+    """``Z0.`` without ``G53`` is the work zero, usually the part's top: the rapid is not written."""
+    lines, warnings = warned("G53 G0 Z0. M09\n", "isg")
+    assert lines == ["(UNSUPPORTED LINE 3: G53 G0 Z0. M09)", "M09"]
+    assert warnings == ["t.nc:3:1: warning: the isg dialect cannot express motion in machine coordinates; dropped, "
+                        "with Z0. (the block's motion), which cannot be written without it; the rest of the block "
+                        "is written"]
+
+
+def test_a_block_with_nothing_left_is_a_comment() -> None:
+    lines, warnings = warned("G53 G0 Z0.\n", "isg")
+    assert lines == ["(UNSUPPORTED LINE 3: G53 G0 Z0.)"]
+    assert warnings == ["t.nc:3:1: warning: the isg dialect cannot express motion in machine coordinates; written as "
+                        "a comment"]
+
+
+def test_without_warn_the_same_block_is_a_located_error() -> None:
+    with pytest.raises(ErrorList, match="t.nc:3:1: error: the isg dialect cannot express a tool length offset"):
+        translate(io.StringIO(START + "G43 H18 Z1. M08\nM30\n"), io.StringIO(), file="t.nc", source="fanuc",
+                  target="isg")
+
+
+def test_verify_reports_what_was_lost() -> None:
+    program = START + "G43 H18 Z1. M08\nG53 G0 Z0. M09\nG1 X10. F100.\nM30\n"
+    out = io.StringIO()
+    translate(io.StringIO(program), out, file="t.nc", source="fanuc", target="isg", on_unsupported="warn",
+              diagnostics=Diagnostics(warn_stream=io.StringIO()))
+    report = verify_lines(io.StringIO(program), io.StringIO(out.getvalue()), file_in="in", file_out="out",
+                          source="fanuc", target="isg", tolerance=0.001)
+    assert not report.ok
+    summary = report.summary()
+    assert "tool length offset differs" in summary and "exceeds tolerance" in summary
