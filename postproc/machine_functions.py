@@ -1,7 +1,11 @@
 """Machine-specific codes towards a controller of another family: under ``--on-unsupported warn`` the
 code alone is left out, with a warning and a comment in its block, and the rest of the block is kept
-(``M29 S500``: the tap still runs at S500). Under 'error' the block reaches the writer unchanged, which
+(``M31``: the part counter does not count). Under 'error' the block reaches the writer unchanged, which
 reports the code with its location.
+
+A code whose action is ``rigid-tap`` (Fanuc ``M29 S..``) is never left out: it makes the tap cycles after
+it follow the spindle, and the same cycle fed without the spindle in step breaks the tap. Towards
+another family it is refused in either mode, by ``refused_rigid_tap``'s message.
 """
 
 from __future__ import annotations
@@ -10,7 +14,18 @@ from typing import Iterator
 
 from .context import Context
 from .dialect import Dialect
+from .errors import UnsupportedError
 from .ir import Block, Comments, MachineFunction
+
+RIGID_TAP = "rigid-tap"
+"""The action of a code that makes the following tap cycles spindle-synchronised."""
+
+
+def refused_rigid_tap(code: MachineFunction, target: str) -> str:
+    """Why a rigid-tapping code cannot go to ``target`` (a controller of another family)."""
+    return (f"{code.describe()} of the {code.family} family makes the tap cycles after it follow the spindle; "
+            f"this translation writes no spindle-synchronised tap for {target}, and fed "
+            "without the spindle in step a tap breaks: refused, even with --on-unsupported warn")
 
 
 def drop_foreign_machine_functions(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
@@ -25,7 +40,12 @@ def _drop(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Itera
     family = target.family()
     for block in blocks:
         code = block.sections.get("MachineFunction")
-        if isinstance(code, MachineFunction) and code.family != family:
+        if isinstance(code, MachineFunction) and code.family != family and code.action == RIGID_TAP:
+            ctx.diagnostics.error(UnsupportedError(refused_rigid_tap(code, target.NAME),
+                                                   ctx.at(block, _column(block, code.code))))
+            del block.sections["MachineFunction"]  # refused once, here: the writer would warn of it again
+            block.changed()
+        elif isinstance(code, MachineFunction) and code.family != family:
             note = f"{code.text} NOT WRITTEN: {code.describe()} of the {code.family} family has no equivalent"
             ctx.diagnostics.warn(f"{code.describe()}, a machine-specific code of the {code.family} family, has "
                                  f"no equivalent in {target.NAME}; left out, its block kept",

@@ -243,7 +243,7 @@ class ControllerSettings(SetupGroup):
 
 
 CodeAction = Literal["none", "stop", "optional-stop", "spindle-cw", "spindle-ccw", "spindle-stop",
-                     "coolant-on", "coolant-off", "gear", "tool-change"]
+                     "coolant-on", "coolant-off", "gear", "tool-change", "rigid-tap"]
 """What a machine code does in the simulation (``<M action="...">``)."""
 
 

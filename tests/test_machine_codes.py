@@ -85,11 +85,25 @@ def test_machine_codes_pass_verbatim_within_the_family() -> None:
     assert (out, warned) == (text + "\n", "")
 
 
-def test_rigid_tapping_keeps_its_speed_when_m29_cannot_be_written() -> None:
-    out, warned = to("linuxcnc", "G21 G90\nM29 S500\nM30")
-    assert out.splitlines()[1] == "S500 (M29 NOT WRITTEN: M29 [rigid tapping] of the fanuc family has no equivalent)"
-    assert warned == ("t.nc:2:1: warning: M29 (rigid tapping), a machine-specific code of the fanuc family, "
-                      "has no equivalent in linuxcnc; left out, its block kept\n")
+RIGID = "G21 G90 G0 X0 Y0 Z10.\nM29 S500\nG99 G84 X10. Y10. Z-10. R2. F750.\nG80\nM30"
+"""A rigid tap (Fanuc 0i-MF: M29 S.. before G84 makes it follow the spindle [K]); fed as a floating tap's
+moves on a machine without the holder's play, the tap breaks."""
+
+
+@pytest.mark.parametrize("target", ["grbl", "linuxcnc", "isg", "fagor", "mach3"])
+@pytest.mark.parametrize("mode", ["warn", "error"])
+def test_rigid_tapping_is_refused_towards_another_family_even_with_warn(target: str, mode: str) -> None:
+    with pytest.raises(ErrorList) as info:
+        to(target, RIGID, mode)
+    assert [str(e) for e in info.value.errors] == [
+        f"t.nc:2:1: error: M29 (rigid tapping) of the fanuc family makes the tap cycles after it follow the spindle; "
+        f"this translation writes no spindle-synchronised tap for {target}, and fed without the spindle in step a "
+        "tap breaks: refused, even with --on-unsupported warn"]
+
+
+def test_rigid_tapping_passes_within_the_family() -> None:
+    out, warned = to("fanuc", RIGID, "warn")
+    assert (out, warned) == (RIGID + "\n", "")
 
 
 def test_a_lone_machine_code_becomes_a_comment_never_an_empty_line() -> None:

@@ -13,7 +13,7 @@ from __future__ import annotations
 from postproc.rs274.machine_codes import Defaults, g, m
 
 FANUC = (
-    m(29, "rigid tapping"),
+    m(29, "rigid tapping", "rigid-tap"),
     m(31, "part counter"),
     *(m(n, f"gear range {n - 40}", "gear") for n in range(41, 45)),
     m(50, "through-spindle coolant on", "coolant-on"),

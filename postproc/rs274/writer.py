@@ -18,6 +18,7 @@ from mypy_extensions import mypyc_attr
 from ..control import ASSIGN, CONTROL
 from ..errors import ProgramError, UnsupportedError
 from ..event_order import after_motion
+from ..machine_functions import RIGID_TAP, refused_rigid_tap
 from ..expr import Expr
 from .codes import CodeTable
 from .expressions import ExprSpelling, spell_word_value
@@ -1084,6 +1085,8 @@ class WordWriter(Writer):
         """A machine-specific code as written, for a controller of its family; elsewhere it has no
         equivalent (``postproc.machine_functions`` comments it out under ``--on-unsupported warn``)."""
         family = self.target.family() if self.target is not None else self.DIALECT
+        if s.family != family and s.action == RIGID_TAP:
+            raise UnsupportedError(refused_rigid_tap(s, self.DIALECT), self.ctx.at(block))
         if s.family != family:
             raise UnsupportedError(f"{s.describe()}, a machine-specific code of the {s.family} family, has no "
                                    f"equivalent in {self.DIALECT}", self.ctx.at(block))
