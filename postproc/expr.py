@@ -302,12 +302,30 @@ class Vacancy(enum.Enum):
     """No vacancy: an unset numbered parameter reads 0, an unset named parameter is an error."""
 
 
+class Arithmetic(enum.Enum):
+    """How the controller computes the neutral functions: the dialect family's rule, as vacancy is.
+    Both mean the same functions (``SIN`` is the sine of degrees); they differ in the last bits, which
+    ``FIX``, ``FUP`` and the comparisons turn into whole units (``postproc.evaluation``)."""
+
+    DOUBLE = "double"
+    """IEEE double throughout; an angle in degrees becomes radians as ``x * pi / 180`` in double, so
+    ``SIN[180]`` is 1.2246e-16 and ``COS[90]`` 6.123e-17."""
+    X86_64_C = "x86_64_c"
+    """What C computes on x86-64 Linux where the interpreter scales angles with ``M_PIl`` in ``long double``
+    and stores the result in a double (LinuxCNC's ``rs274``): ``SIN[180]`` is -5.0166e-20 and ``COS[90]``
+    -2.5083e-20 (``postproc.long_double``); ``ROUND`` converts through a C ``int``."""
+
+
 class Env(Protocol):
     """What ``evaluate`` needs from the interpreter: variable values and the dialect's rules."""
 
     @property
     def vacancy(self) -> Vacancy:
         """The vacancy regime of the program's dialect."""
+
+    @property
+    def arithmetic(self) -> Arithmetic:
+        """How the program's controller computes (``Arithmetic``)."""
 
     @property
     def increment(self) -> float:

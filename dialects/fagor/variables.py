@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from typing import Callable
 
-from postproc.expr import EvalError, Vacancy, Value, VarKey
+from postproc.expr import Arithmetic, EvalError, Vacancy, Value, VarKey
 from postproc.interp.variables import MACHINE_ONLY
 from postproc.isg_family.expressions import P_BASE, P_LAST
 
@@ -26,6 +26,12 @@ class FagorVariables:
     @property
     def vacancy(self) -> Vacancy:
         return Vacancy.FANUC  # never consulted for a vacant value: an unset parameter is an error here
+
+    @property
+    def arithmetic(self) -> Arithmetic:
+        """IEEE double [?]: the 8070 programming manual we read names the functions (SIN, COS, TAN in
+        degrees) but not their precision."""
+        return Arithmetic.DOUBLE
 
     @property
     def increment(self) -> float:

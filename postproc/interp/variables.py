@@ -14,7 +14,7 @@ from __future__ import annotations
 
 from typing import Callable, Protocol
 
-from ..expr import EvalError, Vacancy, Value, VarKey
+from ..expr import Arithmetic, EvalError, Vacancy, Value, VarKey
 
 MACHINE_ONLY = "is known only to the machine: the program cannot be simulated or flattened"
 
@@ -77,6 +77,14 @@ class FanucVariables:
     @property
     def vacancy(self) -> Vacancy:
         return Vacancy.FANUC
+
+    @property
+    def arithmetic(self) -> Arithmetic:
+        """IEEE double (15i/30i manuals: "double-precision real data, as laid down in the applicable IEEE
+        standard" [K]); how a Fanuc reduces an angle is not published: the trigonometric functions'
+        "absolute error is guaranteed", not their relative error, so ``SIN[180]`` is a small residual of
+        unknown sign there too [K]. Parameter 6004#1 (MFZ) may set tiny results to 0 [?]: not modelled."""
+        return Arithmetic.DOUBLE
 
     @property
     def increment(self) -> float:
@@ -143,6 +151,12 @@ class NgcVariables:
         return Vacancy.LINUXCNC
 
     @property
+    def arithmetic(self) -> Arithmetic:
+        """rs274 scales angles with ``M_PIl`` in ``long double`` (src: ``interp_execute.cc`` ``execute_unary``,
+        ``interp_read.cc`` ``read_atan``) [V: rs274 on x86-64, ``tests/test_long_double.py``]."""
+        return Arithmetic.X86_64_C
+
+    @property
     def increment(self) -> float:
         return self._increment()
 
@@ -198,6 +212,9 @@ class Variables(Protocol):
 
     @property
     def vacancy(self) -> Vacancy: ...
+
+    @property
+    def arithmetic(self) -> Arithmetic: ...
 
     @property
     def increment(self) -> float: ...
