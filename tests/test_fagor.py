@@ -79,7 +79,7 @@ LEXICAL = [
     "/ G01 X1 F100\n/3 G01 X2\n",
     "LL SUB1\nL sub2.nc\n#CALL SUB2\n#PCALL SUB3 A1 B2\n#MCALL SUB4\n#MDOFF\n#RET\n",
     "%L SUB1\nG01 X1 F100\nM17\n%main\nLL SUB1\nM30\n",
-    "G00 X1 (a comment on the 8070) Y2\nG00 X2 (to the end of the block Y3\nG00 (a (nested) one) X3\n",
+    "#MSG [\"done :)\"]\nG00 X1 (a comment on the 8070) Y2\nG00 X2 (to the end of the block Y3\nG00 (a (nested) one) X3\n",
     "G00 X0 Y0 Z20\nG81 G99 Z2 I-10 K0.5 F100\nG82 Z2 I-10 B3 C1 D1 H1 J1 K1 L1 R1\nG83 Z2 I-2 J5\nG84 Z2 I-10 K1 R1\n"
     "G85 Z2 I-10 K1\nG86 Z2 I-10 K1\nG87 Z2 I-10 J10 K5 B1 C1 D1 H1 L1 V1\nG88 Z2 I-10 J5 B1 C1 D1 H1 L1\n"
     "G89 Z2 I-10 K1\nG80\n",
