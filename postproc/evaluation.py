@@ -48,8 +48,11 @@ fract sqr          x - trunc(x); x*x                                           I
 exp10 log10        10**x; decimal logarithm, x <= 0 is an error                ISG DEXP LOG
 bcd bin            binary -> BCD (BCD[25] = 37) and back; non-negative        [K]
                    integers only, a BIN digit above 9 is an error
-exists             1 if the named variable has a value (EXISTS[#<x>]);        rs274, src
-                   a numbered one always exists in LinuxCNC
+whole_in           x if a whole number in low..high, else an error (how a      ISG manual [V]
+                   controller converts into an integer type: not published)   types, [?]
+exists             1 if the variable exists, by the environment's rule        rs274, src,
+                   (``Env.exists``: LinuxCNC EXISTS[#<x>], a numbered one     ISG manual
+                   always exists; ISG EXIST[V.P.x], declared or set)
 =================  =========================================================  ==============
 
 Precedence and unary minus belong to the spellings (``postproc.rs274.expressions``).
@@ -241,10 +244,7 @@ def _func(expr: Func, env: Env) -> float:
         arg = expr.args[0]
         if not isinstance(arg, Var):
             raise EvalError(f"{describe(expr)} needs a variable")
-        if arg.name is None:
-            var_key(arg, env)
-            return 1.0
-        return _bool(env.read(arg.name) is not None)
+        return _bool(env.exists(var_key(arg, env)))
     values = [_num(evaluate(a, env)) for a in expr.args]
     if name == "round_address":
         return _finite(_round_to_increment(values[0], env.increment), expr)
@@ -355,7 +355,15 @@ _FUNCTIONS: dict[str, Callable[[list[float], Expr], float]] = {
     "sqr": lambda v, e: v[0] * v[0],
     "exp10": lambda v, e: _exp10(v[0], e),
     "log10": lambda v, e: _log10(v[0], e),
+    "whole_in": lambda v, e: _whole_in(v[0], v[1], v[2]),
 }
+
+
+def _whole_in(x: float, low: float, high: float) -> float:
+    if not x.is_integer() or not low <= x <= high:
+        raise EvalError(f"{x:.15g} does not fit the variable's type (whole numbers {low:.0f} to {high:.0f}): "
+                        f"how the controller converts it is not known")
+    return x
 
 
 def _round_c_int(x: float, e: Expr) -> float:
@@ -436,6 +444,8 @@ def _describe(expr: Expr, top: bool = False) -> str:
         return text if top else f"[{text}]"
     if isinstance(expr, Func):
         name = expr.name.split("_")[0].upper()
+        if len(expr.args) > 2:
+            return f"{name}[{', '.join(_describe(a, True) for a in expr.args)}]"
         if len(expr.args) == 2:
             return f"{name}[{_describe(expr.args[0], True)}]/[{_describe(expr.args[1], True)}]"
         return f"{name}[{_describe(expr.args[0], True)}]"
@@ -471,3 +481,7 @@ class MappingEnv:
         if key == 0 and self._vacancy is Vacancy.FANUC:
             return None  # #0 is always vacant
         return self.values.get(key)
+
+    def exists(self, key: VarKey) -> bool:
+        """A name exists when it has a value; a number always does (LinuxCNC's rule)."""
+        return not isinstance(key, str) or key in self.values

@@ -50,6 +50,10 @@ class FagorVariables:
             raise EvalError(f"P{int(key) - P_BASE} is read before it is set")
         return value
 
+    def exists(self, key: VarKey) -> bool:
+        """The family reads ``EXIST[..]`` (ISG's); whether the 8070 has it is not known [?]."""
+        raise EvalError("EXIST is not known on the Fagor 8070 [?]")
+
     def write(self, key: VarKey, value: Value) -> None:
         if value is None:
             raise EvalError(f"P{int(key) - P_BASE} cannot be set to a vacant value")

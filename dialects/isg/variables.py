@@ -64,6 +64,11 @@ class IsgVariables:
             raise EvalError(f"{_spell(key)} is read before it is set")
         return float(value)
 
+    def exists(self, key: VarKey) -> bool:
+        """EXIST[V.P.NAME]: the self-defined variable was declared or set (a P parameter: was set); a
+        machine's variable is an error (only the machine knows what it has)."""
+        return key in self._store(key)
+
     def write(self, key: VarKey, value: Value) -> None:
         if value is None:
             raise EvalError(f"{_spell(key)} cannot be set to a vacant value")

@@ -101,6 +101,10 @@ class FanucVariables:
             return None
         raise self._unknown(key)
 
+    def exists(self, key: VarKey) -> bool:
+        """Custom Macro B has no test of existence: a variable that is read is vacant or not."""
+        raise EvalError("Custom Macro B has no test of whether a variable exists")
+
     def write(self, key: VarKey, value: Value) -> None:
         if isinstance(key, str):
             raise EvalError(f"#<{key}>: Custom Macro B has no named variables")
@@ -174,6 +178,10 @@ class NgcVariables:
     def read(self, key: VarKey) -> Value:
         return self._store(key).get(key)  # type: ignore[arg-type]
 
+    def exists(self, key: VarKey) -> bool:
+        """EXISTS[#<name>]: the name has a value; a numbered parameter always exists (rs274, src)."""
+        return not isinstance(key, str) or self.read(key) is not None
+
     def write(self, key: VarKey, value: Value) -> None:
         if value is None:
             raise EvalError(f"{_spell(key)} cannot be set to a vacant value")
@@ -220,6 +228,8 @@ class Variables(Protocol):
     def increment(self) -> float: ...
 
     def read(self, key: VarKey) -> Value: ...
+
+    def exists(self, key: VarKey) -> bool: ...
 
     def write(self, key: VarKey, value: Value) -> None: ...
 
