@@ -18,6 +18,8 @@ from __future__ import annotations
 
 from typing import Callable
 
+from .expr import EvalError
+
 SIGNIFICAND = 64
 """Bits of the x87 extended format's significand."""
 
@@ -211,4 +213,4 @@ def _rounded(fn: Callable[[int, int, int], tuple[int, int]], arg: tuple[int, int
         if low == _round_ratio(value + err, 1 << w):
             return low
         w += 64
-    raise ArithmeticError(f"cannot round a trigonometric function of {m}*2**{e}")  # pragma: no cover
+    raise EvalError(f"cannot round a trigonometric function of {m}*2**{e}")  # pragma: no cover

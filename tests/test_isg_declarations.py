@@ -176,3 +176,11 @@ def test_other_dialects_still_refuse_a_no_break_space() -> None:
     errors = _errors("N10\u00a0G01 X1. F100.\n", "fanuc", "fanuc")
     assert errors == ["in.nc:1:4: error: character '\\xa0' (U+00A0) is not ASCII: outside comments a program "
                       "is ASCII"], errors
+
+
+def test_a_regenerated_assignment_to_a_typed_variable_is_plain_isg() -> None:
+    """ISG stores into a declared type by assigning: ``whole_in`` has no spelling of its own there."""
+    from postproc.isg_family.expressions import spell_expr
+    from postproc.expr import Binary, Func, Num, Var
+    value = Binary("add", Var(name="V.P.U"), Num(1.0))
+    assert spell_expr(Func("whole_in", [value, Num(0.0), Num(4294967295.0)])) == "V.P.U+1"

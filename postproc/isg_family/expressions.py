@@ -316,6 +316,8 @@ def spell_expr(expr: Expr, min_prec: int = 0, leading: bool = True) -> str:
         sep = f" {word} " if word == "MOD" or prec == _COMPARE else word
         text = left + sep + right
         return f"[{text}]" if prec <= min_prec else text
+    if isinstance(expr, Func) and expr.name == "whole_in":
+        return spell_expr(expr.args[0], min_prec, leading)  # ISG stores into a typed variable by assigning
     if isinstance(expr, Func):
         function = _INVERSE_FUNCTIONS.get(expr.name)
         if function is None or len(expr.args) != 1:
