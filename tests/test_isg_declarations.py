@@ -14,6 +14,8 @@ import pytest
 
 from postproc.api import translate
 from postproc.errors import Diagnostics, ErrorList
+from postproc.expr import Binary, Func, Num, Var
+from postproc.isg_family.expressions import spell_expr
 from postproc.toolpath import toolpath_events
 
 NBSP = "\u00a0"
@@ -180,7 +182,5 @@ def test_other_dialects_still_refuse_a_no_break_space() -> None:
 
 def test_a_regenerated_assignment_to_a_typed_variable_is_plain_isg() -> None:
     """ISG stores into a declared type by assigning: ``whole_in`` has no spelling of its own there."""
-    from postproc.isg_family.expressions import spell_expr
-    from postproc.expr import Binary, Func, Num, Var
     value = Binary("add", Var(name="V.P.U"), Num(1.0))
     assert spell_expr(Func("whole_in", [value, Num(0.0), Num(4294967295.0)])) == "V.P.U+1"
