@@ -23,6 +23,10 @@ from .writer_base import Writer as Writer
 class Reader(abc.ABC):
     """Turns text into blocks with raw words and source lines (no meaning yet)."""
 
+    BLANKS: ClassVar[str] = ""
+    """Characters outside ASCII that this reader reads as blanks (ISG: the no-break space of programs
+    copied from web pages). The line check (``postproc.lines``) lets them through; the reader says so."""
+
     def __init__(self, ctx: Context) -> None:
         self.ctx = ctx
 

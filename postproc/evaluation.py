@@ -26,7 +26,8 @@ and or xor         logical: non-zero is true, result 1 or 0 (2 AND 3 = 1)     rs
 bitand bitor       Fanuc AND OR XOR: bit by bit on non-negative integers      [K]; non-integers
 bitxor                                                                         refused
 neg pos not        -x, +x, 1 if x == 0 else 0                                 -
-sin cos tan        degrees                                                    src
+sin cos tan        degrees, computed as the environment's ``Arithmetic`` says     src, rs274
+                   (below)
 asin acos          degrees, -90..90 and 0..180; |x| > 1 is an error            src, rs274
 atan               one argument, -90..90                                      -
 atan2              ATAN[y]/[x] in LinuxCNC: -180..180 (ATAN[-1]/[-1] = -135)   rs274, src
@@ -36,7 +37,9 @@ asin_360 atan_360  Fanuc ASIN / one-argument ATAN with NAT=0: a negative       [
 sqrt               x < 0 is an error                                          src
 abs exp            -                                                          src
 ln                 x <= 0 is an error                                         src
-round              half away from zero (ROUND[-2.5] = -3)                     rs274, [K]
+round              half away from zero (ROUND[-2.5] = -3); under X86_64_C     rs274, [K]
+                   through a C int: beyond it an error (rs274 gives
+                   -2147483648 for ROUND[3e9])
 round_address      Fanuc ROUND inside an NC word: to the least input          [K] (Haas doc
                    increment (``Env.increment``), half away from zero         of Fanuc syntax)
 trunc away         Fanuc FIX / FUP: toward / away from zero                   [K]
@@ -45,11 +48,24 @@ fract sqr          x - trunc(x); x*x                                           I
 exp10 log10        10**x; decimal logarithm, x <= 0 is an error                ISG DEXP LOG
 bcd bin            binary -> BCD (BCD[25] = 37) and back; non-negative        [K]
                    integers only, a BIN digit above 9 is an error
-exists             1 if the named variable has a value (EXISTS[#<x>]);        rs274, src
-                   a numbered one always exists in LinuxCNC
+whole_in           x if a whole number in low..high, else an error (how a      ISG manual [V]
+                   controller converts into an integer type: not published)   types, [?]
+exists             1 if the variable exists, by the environment's rule        rs274, src,
+                   (``Env.exists``: LinuxCNC EXISTS[#<x>], a numbered one     ISG manual
+                   always exists; ISG EXIST[V.P.x], declared or set)
 =================  =========================================================  ==============
 
 Precedence and unary minus belong to the spellings (``postproc.rs274.expressions``).
+
+Arithmetic (``Env.arithmetic``, the dialect family's): ``DOUBLE`` computes ``sin(x * pi / 180)`` and
+``asin(x) * 180 / pi`` in IEEE double (Fanuc [K]: IEEE double with the trigonometric functions'
+absolute error guaranteed, not their relative error; ISG and Fagor [?]: not published, chosen so).
+``X86_64_C`` is rs274's C on x86-64: ``sin((x * M_PIl) / 180.0)`` with the argument in ``long double``,
+the inverse functions' double result times 180.0 divided by ``M_PIl`` (src; ``postproc.long_double``),
+so ``SIN[180]`` is -5.0e-20 (``FIX[SIN[180]]`` = -1) and ``COS[90] LT 0`` is 1 (rs274). SIN, COS, ASIN,
+ACOS and ATAN agree bit for bit with the packaged rs274 and glibc; TAN is the correctly rounded
+``tanl``, which glibc's misses by one unit in the last place in about 1 case in 20,000 (TAN[271] among
+them: ``tests/test_long_double.py``).
 
 Vacancy (``Vacancy.FANUC``): a ``Var`` evaluates to None when vacant (so ``#2=#1`` copies vacancy, and
 a word whose value is None is omitted); every operator and function reads None as 0 (``#1*5``,
@@ -64,7 +80,8 @@ import math
 from decimal import ROUND_HALF_UP, Decimal
 from typing import Callable
 
-from .expr import Binary, Env, EvalError, Expr, Func, Num, Unary, Vacancy, Value, Var, VarKey
+from . import long_double
+from .expr import Arithmetic, Binary, Env, EvalError, Expr, Func, Num, Unary, Vacancy, Value, Var, VarKey
 
 TOLERANCE_EQUAL = 1e-4
 """LinuxCNC 2.9.0's tolerance for EQ/NE (``eq_tol``/``ne_tol``)."""
@@ -227,14 +244,11 @@ def _func(expr: Func, env: Env) -> float:
         arg = expr.args[0]
         if not isinstance(arg, Var):
             raise EvalError(f"{describe(expr)} needs a variable")
-        if arg.name is None:
-            var_key(arg, env)
-            return 1.0
-        return _bool(env.read(arg.name) is not None)
+        return _bool(env.exists(var_key(arg, env)))
     values = [_num(evaluate(a, env)) for a in expr.args]
     if name == "round_address":
         return _finite(_round_to_increment(values[0], env.increment), expr)
-    fn = _FUNCTIONS.get(name)
+    fn = _ARITHMETIC_FUNCTIONS[env.arithmetic].get(name)
     if fn is None:
         raise EvalError(f"unknown function {name!r}")
     return _finite(fn(values, expr), expr)
@@ -341,6 +355,40 @@ _FUNCTIONS: dict[str, Callable[[list[float], Expr], float]] = {
     "sqr": lambda v, e: v[0] * v[0],
     "exp10": lambda v, e: _exp10(v[0], e),
     "log10": lambda v, e: _log10(v[0], e),
+    "whole_in": lambda v, e: _whole_in(v[0], v[1], v[2]),
+}
+
+
+def _whole_in(x: float, low: float, high: float) -> float:
+    if not x.is_integer() or not low <= x <= high:
+        raise EvalError(f"{x:.15g} does not fit the variable's type (whole numbers {low:.0f} to {high:.0f}): "
+                        f"how the controller converts it is not known")
+    return x
+
+
+def _round_c_int(x: float, e: Expr) -> float:
+    """rs274's ROUND, ``(double)(int)(x + (x < 0 ? -0.5 : 0.5))`` (src): the sum in double, then a C
+    ``int``. Beyond an int x86-64 gives -2147483648 (rs274: ROUND[3e9]); that is refused, not copied."""
+    shifted = x + (-0.5 if x < 0.0 else 0.5)
+    if not -2147483649.0 < shifted < 2147483648.0:
+        raise EvalError(f"{describe(e)} is beyond the C int that LinuxCNC rounds through ({x:g})")
+    return float(math.trunc(shifted))
+
+
+_X86_64_C: dict[str, Callable[[list[float], Expr], float]] = {
+    "sin": lambda v, e: long_double.sin_deg(v[0]),
+    "cos": lambda v, e: long_double.cos_deg(v[0]),
+    "tan": lambda v, e: long_double.tan_deg(v[0]),
+    "asin": lambda v, e: long_double.degrees(math.asin(_unit_range(v[0], e))),
+    "acos": lambda v, e: long_double.degrees(math.acos(_unit_range(v[0], e))),
+    "atan2": lambda v, e: long_double.degrees(math.atan2(v[0], v[1])),
+    "round": lambda v, e: _round_c_int(v[0], e),
+}
+"""What ``Arithmetic.X86_64_C`` computes differently from IEEE double (the rest is the same)."""
+
+_ARITHMETIC_FUNCTIONS: dict[Arithmetic, dict[str, Callable[[list[float], Expr], float]]] = {
+    Arithmetic.DOUBLE: _FUNCTIONS,
+    Arithmetic.X86_64_C: {**_FUNCTIONS, **_X86_64_C},
 }
 
 
@@ -396,6 +444,8 @@ def _describe(expr: Expr, top: bool = False) -> str:
         return text if top else f"[{text}]"
     if isinstance(expr, Func):
         name = expr.name.split("_")[0].upper()
+        if len(expr.args) > 2:
+            return f"{name}[{', '.join(_describe(a, True) for a in expr.args)}]"
         if len(expr.args) == 2:
             return f"{name}[{_describe(expr.args[0], True)}]/[{_describe(expr.args[1], True)}]"
         return f"{name}[{_describe(expr.args[0], True)}]"
@@ -406,17 +456,22 @@ def _describe(expr: Expr, top: bool = False) -> str:
 class MappingEnv:
     """An ``Env`` over a plain dict (tests, constant folding): a missing key has no value."""
 
-    __slots__ = ("values", "_vacancy", "_increment")
+    __slots__ = ("values", "_vacancy", "_increment", "_arithmetic")
 
     def __init__(self, values: dict[VarKey, float] | None = None, vacancy: Vacancy = Vacancy.FANUC,
-                 increment: float = 0.001) -> None:
+                 increment: float = 0.001, arithmetic: Arithmetic = Arithmetic.DOUBLE) -> None:
         self.values: dict[VarKey, float] = dict(values or {})
         self._vacancy = vacancy
         self._increment = increment
+        self._arithmetic = arithmetic
 
     @property
     def vacancy(self) -> Vacancy:
         return self._vacancy
+
+    @property
+    def arithmetic(self) -> Arithmetic:
+        return self._arithmetic
 
     @property
     def increment(self) -> float:
@@ -426,3 +481,7 @@ class MappingEnv:
         if key == 0 and self._vacancy is Vacancy.FANUC:
             return None  # #0 is always vacant
         return self.values.get(key)
+
+    def exists(self, key: VarKey) -> bool:
+        """A name exists when it has a value; a number always does (LinuxCNC's rule)."""
+        return not isinstance(key, str) or key in self.values

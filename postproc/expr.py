@@ -239,6 +239,7 @@ FUNCTIONS: dict[str, int] = {
     "atan": 1, "atan_360": 1, "atan2": 2, "atan2_360": 2,
     "sqrt": 1, "abs": 1, "round": 1, "round_address": 1, "trunc": 1, "away": 1, "floor": 1, "ceil": 1,
     "ln": 1, "exp": 1, "bin": 1, "bcd": 1, "exists": 1, "fract": 1, "sqr": 1, "exp10": 1, "log10": 1,
+    "whole_in": 3,
 }
 """Every neutral function and its number of arguments; angles in degrees. ``asin``/``atan`` give
 -90..90, ``atan2`` -180..180 (LinuxCNC); ``asin_360``/``atan_360``/``atan2_360`` add 360 to a negative
@@ -246,7 +247,9 @@ result (Fanuc's default ranges); ``round`` is half away from zero, ``round_addre
 least input increment (Fanuc ROUND inside an NC word); ``trunc`` toward zero, ``away`` away from zero
 (Fanuc FIX, FUP), ``floor``/``ceil`` (LinuxCNC FIX, FUP); ``bin``/``bcd`` convert BCD <-> binary;
 ``exists`` is 1 if its operand, a named variable, has a value; ``fract`` x - trunc(x) (sign of x);
-``sqr`` x*x; ``exp10`` 10**x; ``log10`` the decimal logarithm (x <= 0 is an error)."""
+``sqr`` x*x; ``exp10`` 10**x; ``log10`` the decimal logarithm (x <= 0 is an error); ``whole_in[x, low,
+high]`` is x when x is a whole number from low to high, else an error: a value stored into an integer
+type whose conversion no source states (ISG's UNS32, BOOLEAN... variables)."""
 
 EXPR_CLASSES: tuple[type[Expr], ...] = (Num, Var, Unary, Binary, Func)
 
@@ -302,12 +305,30 @@ class Vacancy(enum.Enum):
     """No vacancy: an unset numbered parameter reads 0, an unset named parameter is an error."""
 
 
+class Arithmetic(enum.Enum):
+    """How the controller computes the neutral functions: the dialect family's rule, as vacancy is.
+    Both mean the same functions (``SIN`` is the sine of degrees); they differ in the last bits, which
+    ``FIX``, ``FUP`` and the comparisons turn into whole units (``postproc.evaluation``)."""
+
+    DOUBLE = "double"
+    """IEEE double throughout; an angle in degrees becomes radians as ``x * pi / 180`` in double, so
+    ``SIN[180]`` is 1.2246e-16 and ``COS[90]`` 6.123e-17."""
+    X86_64_C = "x86_64_c"
+    """What C computes on x86-64 Linux where the interpreter scales angles with ``M_PIl`` in ``long double``
+    and stores the result in a double (LinuxCNC's ``rs274``): ``SIN[180]`` is -5.0166e-20 and ``COS[90]``
+    -2.5083e-20 (``postproc.long_double``); ``ROUND`` converts through a C ``int``."""
+
+
 class Env(Protocol):
     """What ``evaluate`` needs from the interpreter: variable values and the dialect's rules."""
 
     @property
     def vacancy(self) -> Vacancy:
         """The vacancy regime of the program's dialect."""
+
+    @property
+    def arithmetic(self) -> Arithmetic:
+        """How the program's controller computes (``Arithmetic``)."""
 
     @property
     def increment(self) -> float:
@@ -317,6 +338,10 @@ class Env(Protocol):
     def read(self, key: VarKey) -> Value:
         """The value of a variable; None if it has none (vacant, unset). Raises ``EvalError`` for a
         variable the program may not read or whose value only the machine knows (``#5021``)."""
+
+    def exists(self, key: VarKey) -> bool:
+        """Whether a variable exists (``exists``: LinuxCNC EXISTS, ISG EXIST), by the dialect family's
+        rule; ``EvalError`` where the family has no such test or only the machine knows."""
 
 
 register_computed_value_reader(expr_from_xml)

@@ -512,19 +512,22 @@ class Motion(Section):
 class NativeCode(Section):
     """A construct with no neutral meaning, kept verbatim for its own dialect (e.g. ISG ``#CYL``).
 
-    It round-trips unchanged within ``dialect`` and is an unsupported construct everywhere else.
+    It round-trips unchanged within ``dialect`` and is an unsupported construct everywhere else. An
+    ``inert`` one does nothing a tool path shows (an ISG STRING variable's declaration): the simulation
+    passes it; every other one stops the simulation, naming it.
     """
 
     XNAME = "NativeCode"
 
     KEY = "NativeCode"
-    __slots__ = ("dialect", "what", "text")
-    XATTRS = (XAttr("dialect"), XAttr("what"), XAttr("text"))
+    __slots__ = ("dialect", "what", "text", "inert")
+    XATTRS = (XAttr("dialect"), XAttr("what"), XAttr("text"), XAttr("inert", bool, False))
 
-    def __init__(self, dialect: str, what: str, text: str) -> None:
+    def __init__(self, dialect: str, what: str, text: str, inert: bool = False) -> None:
         self.dialect = dialect
         self.what = what
         self.text = text
+        self.inert = inert
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)

@@ -3,7 +3,7 @@ here, once for every dialect, with the line and column.
 
 * A line longer than the set-up's ``<Limits lineLength>`` (default 64 kB, more than any controller's
   buffer) is refused before anything scans it.
-* Outside comments a program is ASCII (but for a UTF-8 byte order mark opening the file, which
+* Outside comments a program is ASCII (but for the reader's ``BLANKS``, and a UTF-8 byte order mark opening the file, which
   readers skip with ``lexable``, as they skip the DOS end-of-file byte): Python's ``\\d`` and ``str.isdigit`` accept Arabic-Indic or
   full-width digits, which no controller reads as numbers. Inside a comment - between ``(`` and ``)``,
   or after ``;`` - any character is text and is kept as it is (so Latin-1 bytes read as surrogates
@@ -34,17 +34,18 @@ _LONG_RUN = b"\x01" * (MAX_DIGITS + 1)
 """A candidate for a too-long number (``line_problem`` then counts its digits)."""
 
 
-def checked_lines(lines: Iterable[str], ctx: Context) -> Iterator[str]:
+def checked_lines(lines: Iterable[str], ctx: Context, blanks: str = "") -> Iterator[str]:
     """``lines`` as they are; a line that fails a check (see the module docstring) as an empty line.
+    ``blanks``: the non-ASCII characters the reader reads as blanks (``Reader.BLANKS``).
 
     Lines are checked a chunk at a time with a few C-speed calls (``isascii``, ``len``, one translate and
     one substring search over the joined chunk) and passed on by ``chain`` without a Python step per
     line; only a chunk that fails them is checked line by line. (A regex search per line cost 5 % of a
     copy-through translation.)"""
-    return chain.from_iterable(_checked_chunks(iter(lines), ctx))
+    return chain.from_iterable(_checked_chunks(iter(lines), ctx, blanks))
 
 
-def _checked_chunks(lines: Iterator[str], ctx: Context) -> Iterator[list[str]]:
+def _checked_chunks(lines: Iterator[str], ctx: Context, blanks: str) -> Iterator[list[str]]:
     limit = ctx.setup.limits.line_length
     number = 0
     while True:
@@ -60,7 +61,7 @@ def _checked_chunks(lines: Iterator[str], ctx: Context) -> Iterator[list[str]]:
         for line in chunk:
             number += 1
             bom = number == 1 and line[:1] == BOM
-            problem = line_problem(line[1:] if bom else line, limit)
+            problem = line_problem(line[1:] if bom else line, limit, blanks)
             if problem is not None and bom:
                 problem = problem[0], problem[1] + 1
             if problem is None:
@@ -87,8 +88,9 @@ def lexable(number: int, text: str) -> str:
     return text if cut < 0 else text[:cut]
 
 
-def line_problem(line: str, limit: int) -> tuple[str, int] | None:
-    """What is wrong with a line and its 1-based column, or None when it may be read."""
+def line_problem(line: str, limit: int, blanks: str = "") -> tuple[str, int] | None:
+    """What is wrong with a line and its 1-based column, or None when it may be read (a character of
+    ``blanks`` is one the reader reads as a blank)."""
     text = line.rstrip("\r\n")
     if len(text) > limit:
         return (f"the line is {len(text)} characters long, more than the limit of {limit} "
@@ -116,9 +118,9 @@ def line_problem(line: str, limit: int) -> tuple[str, int] | None:
                 return (f"a number with more than {MAX_DIGITS} digits cannot be read", start + 1)
         elif ch == ".":
             continue  # one number: its digits on both sides of the point count together
-        elif not ch.isascii():
+        elif not ch.isascii() and ch not in blanks:
             return (f"character {ch!r} (U+{ord(ch):04X}) is not ASCII: outside comments a program is ASCII",
                     i + 1)
         else:
-            run = 0
+            run = 0  # a blank of ``blanks`` ends a number too
     return None

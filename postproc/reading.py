@@ -47,7 +47,7 @@ def read_blocks(lines: Iterable[str], file: str, dialect: type[Dialect], setup: 
     if prepare is not None:
         prepare(ctx)
     pipeline = dialect.pipeline(setup)
-    blocks = dialect.READER(ctx).read(checked_lines(lines, ctx))
+    blocks = dialect.READER(ctx).read(checked_lines(lines, ctx, dialect.READER.BLANKS))
     return ctx, pipeline.run(_warn_if_empty(blocks, ctx), ctx)
 
 

@@ -164,7 +164,7 @@ class Simulator:
             return  # the controller runs a profile block only through its cycle
         get: Callable[[str], Any] = sections.get
         native = get("NativeCode")
-        if native is not None:
+        if native is not None and not native.inert:
             code = native.what.split(" ", 1)[0]
             raise UnsupportedError(f"{native.what} cannot be simulated", self._at(block, code))
         keys = sections.keys()

@@ -63,6 +63,8 @@ VALUES = [
     # ISG's functions (new neutral names): FRACT keeps the sign, SQR squares, DEXP/LOG are base 10
     (f("fract", 2.75), 0.75), (f("fract", -2.75), -0.75), (f("sqr", -3), 9.0), (f("exp10", 2), 100.0),
     (f("log10", 1000), 3.0),
+    # a value stored into an integer type: a whole number within the range passes unchanged
+    (f("whole_in", 255, 0, 255), 255.0), (f("whole_in", -128, -128, 127), -128.0),
 ]
 
 
@@ -120,6 +122,10 @@ def test_linuxcnc_unset_numbered_reads_zero(tree: Expr, expected: float) -> None
     (LCNC, Var(name="nope"), "named parameter #<nope> is not defined"),
     (LCNC, Var(n(1.5)), "the variable number in #1.5 is not an integer (1.5)"),
     (FANUC, b("mul", 1e200, 1e200), "the result of 1e+200*1e+200 is not a finite number"),
+    (FANUC, f("whole_in", 2.5, 0, 255), "2.5 does not fit the variable's type (whole numbers 0 to 255): how the "
+                                       "controller converts it is not known"),
+    (FANUC, f("whole_in", -1, 0, 4294967295), "-1 does not fit the variable's type (whole numbers 0 to "
+                                              "4294967295): how the controller converts it is not known"),
 ])
 def test_errors_name_the_construct(env: MappingEnv, tree: Expr, message: str) -> None:
     with pytest.raises(EvalError) as info:

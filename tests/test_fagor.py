@@ -79,7 +79,7 @@ LEXICAL = [
     "/ G01 X1 F100\n/3 G01 X2\n",
     "LL SUB1\nL sub2.nc\n#CALL SUB2\n#PCALL SUB3 A1 B2\n#MCALL SUB4\n#MDOFF\n#RET\n",
     "%L SUB1\nG01 X1 F100\nM17\n%main\nLL SUB1\nM30\n",
-    "G00 X1 (is this a comment on the 8070?)\n",
+    "#MSG [\"done :)\"]\nG00 X1 (a comment on the 8070) Y2\nG00 X2 (to the end of the block Y3\nG00 (a (nested) one) X3\n",
     "G00 X0 Y0 Z20\nG81 G99 Z2 I-10 K0.5 F100\nG82 Z2 I-10 B3 C1 D1 H1 J1 K1 L1 R1\nG83 Z2 I-2 J5\nG84 Z2 I-10 K1 R1\n"
     "G85 Z2 I-10 K1\nG86 Z2 I-10 K1\nG87 Z2 I-10 J10 K5 B1 C1 D1 H1 L1 V1\nG88 Z2 I-10 J5 B1 C1 D1 H1 L1\n"
     "G89 Z2 I-10 K1\nG80\n",
@@ -132,7 +132,8 @@ VALIDATE_ALL = [
     (("fagor", "LL SUB1\n"), {"fanuc": "error: LL SUB1 (subroutine call [?]) from fagor has no equivalent"}),
     (("fagor", "#MCALL SUB1\n"), {"isg": "error: #MCALL (modal subroutine call [?]) from fagor has no equivalent"}),
     (("fagor", "/ G00 X1\n"), {"fanuc": "error: block skip /1 [?] from fagor has no equivalent"}),
-    (("fagor", "G00 X1 (note)\n"), {"fanuc": "error: text in parentheses (not confirmed as an 8070 comment) [?]"}),
+    # ( ) is a block comment (Fagor's table of programming commands, dialects/fagor/reader.py)
+    (("fagor", "G00 X1 (note) Y2\n"), {"fanuc": "G00 X1. Y2. (note)\n", "isg": "G00 X1. Y2. (note)\n"}),
     (("fanuc", "/G00 X1.\n"), {"fagor": "error: the fagor dialect cannot express a block skip"}),
     # comments and parameters
     (("fagor", "G00 X1 ; go\n"), {"fanuc": "G00 X1. ( go)\n", "isg": "G00 X1. ( go)\n"}),
@@ -220,6 +221,7 @@ def test_fagor_cycles_outside_the_xy_plane_are_refused() -> None:
     ("$ENDIF\n", "in.nc:1:1: error: $ENDIF does not close an open $IF"),
     ("$IF P1 == 1\nM30\n", "in.nc:1:1: error: $IF is never closed"),
     ("#COMMENT BEGIN\nG00 X1\n", "in.nc:1:1: error: #COMMENT BEGIN is never ended (#COMMENT END missing)"),
+    ("G00 X1 ) Y2\n", "in.nc:1:8: error: ')' without an opening '('"),
     ("G00 X1 #CALL A\n", "in.nc:1:8: error: a # command must be alone in its block (only N may come before it)"),
     ("P0=1\n", "in.nc:1:1: error: P0: P parameters P1 to P499 are read"),
     ("G04\n", "in.nc:1:1: error: G04 needs a dwell time K"),
@@ -231,6 +233,12 @@ def test_fagor_cycles_outside_the_xy_plane_are_refused() -> None:
 def test_hostile_fagor_input_gives_located_errors(text: str, message: str) -> None:
     errors = _errors(text, "fagor", "fagor")
     assert errors[0].startswith(message), errors
+
+
+def test_a_parenthesised_comment_is_simulated_as_one() -> None:
+    """The words after ``( .. )`` move the tool; an unclosed ``(`` hides the rest of its block only."""
+    text = "%demo\nG71 G90\nG00 X1 (note) Y2\nG01 F100 X3 (the rest Y9\nG00 Z5\nM30\n"
+    assert _moves(text, "fagor") == [("rapid", 1, 2, 0), ("feed", 3, 2, 0), ("rapid", 3, 2, 5)]
 
 
 # -- drilling words: hand-derived toolpaths ------------------------------------------------------------

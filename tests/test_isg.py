@@ -65,6 +65,7 @@ LEXICAL = [
     "#VAR\nV.L.DEPTH\nV.L.FEED = 200\n#ENDVAR\nG01 X[V.L.FEED] F[V.L.FEED]\n",
     "G01 XP1 Y-P3 Z[P2*COS[P6]] F100\n",
     "#MSG [\"HELLO\"]\n#TOOL DATA [T1 D1]\n#MC_COMMAND [A=1]\n",
+    "#MSG [\"done :) (not a comment; nor this\"] (a comment)\n",
     "G00 X10\r\nG01 Y5 F100\r\n",
 ]
 

@@ -1,8 +1,8 @@
 """Fagor 8070 reader: physical lines -> blocks, with the ISG/Fagor family's lexer (``postproc.isg_family``).
 
 What the reference confirms is read into neutral sections: the ``%name`` header [V], ``N`` block
-numbers [V], ``;`` comments and ``#COMMENT BEGIN`` ... ``#COMMENT END`` [?, read as comments: they carry
-no motion either way], DIN words, ``P`` parameter assignments and bracketed expressions [K], ``G159=n``
+numbers [V], ``;`` comments, ``( .. )`` comments and ``#COMMENT BEGIN`` ... ``#COMMENT END`` (below),
+DIN words, ``P`` parameter assignments and bracketed expressions [K], ``G159=n``
 [V]. What it marks uncertain [?] is checked by the family grammar and kept verbatim as ``NativeCode``
 tagged ``fagor``: it round-trips byte for byte to Fagor and is refused, naming it, by every other
 dialect and by the simulator:
@@ -11,8 +11,13 @@ dialect and by the simulator:
 * ``L``/``LL`` calls, ``#CALL``, ``#PCALL``, ``#MCALL``, ``#MDOFF``, ``#RET`` and every other ``#``
   command; a local subroutine ``%L name`` and every block up to the next ``%`` header;
 * ``[NAME]`` and ``N100:`` labels, computed block numbers ``N[..]``, block skip ``/``;
-* a block with ``(``: the reference does not confirm parenthesised comments on the 8070;
 * array elements (``P100[3]``).
+
+Comments: Fagor's table of programming commands lists ``;`` (to the end of the block), ``(`` (to the end
+of the block) and ``( )`` (the piece between) as block comments [V: Fagor CNC 8065 manual, "Programming
+commands", easymanua.ls p.45; K for the 8070, whose language the 8065 shares]. Whether a ``(`` inside a
+comment nests is not stated [?]: the family's rule (ISG: nested) is used, as is its error for a ``)``
+that closes nothing. ``#COMMENT BEGIN``/``END`` [?] is read as a comment: it carries no motion either way.
 
 Errors are reported per block; the block is kept as text only, and reading goes on.
 """
@@ -32,8 +37,8 @@ from postproc.rs274.lexer import split_lines
 
 from .codes import PATTERN_CODES
 
-GRAMMAR = Grammar(parens=False, bare_dwell_time=False, assigned_g=frozenset({"159"}), p_words_after=PATTERN_CODES)
-"""No parenthesised comments, no bare dwell time, ``G159=n``, ``P`` a plain word after ``G160``-``G165``."""
+GRAMMAR = Grammar(parens=True, bare_dwell_time=False, assigned_g=frozenset({"159"}), p_words_after=PATTERN_CODES)
+"""Parenthesised comments, no bare dwell time, ``G159=n``, ``P`` a plain word after ``G160``-``G165``."""
 
 COMMANDS = {
     "#CALL": "subroutine call [?]", "#PCALL": "subroutine call with local parameters [?]",
@@ -83,11 +88,9 @@ class _State:
             block.add(Comments([text]))
             return block
         lexed = Lexed()
-        code = strip_comments(self.file, number, text, lexed, parens=False)
+        code = strip_comments(self.file, number, text, lexed, parens=GRAMMAR.parens)
         if self.sub is not None and not code.lstrip().startswith("%"):
             return self.native(block, f"a block of the local subroutine %L {self.sub[0]} [?]")
-        if "(" in code:
-            return self.native(block, "text in parentheses (not confirmed as an 8070 comment) [?]")
         try:
             lex(self.file, number, code, lexed, GRAMMAR)
         except Unmodelled as err:

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from typing import Callable
 
-from postproc.expr import EvalError, Vacancy, Value, VarKey
+from postproc.expr import Arithmetic, EvalError, Vacancy, Value, VarKey
 from postproc.interp.variables import MACHINE_ONLY
 from postproc.isg_family.expressions import P_BASE, P_LAST
 
@@ -26,6 +26,12 @@ class FagorVariables:
     @property
     def vacancy(self) -> Vacancy:
         return Vacancy.FANUC  # never consulted for a vacant value: an unset parameter is an error here
+
+    @property
+    def arithmetic(self) -> Arithmetic:
+        """IEEE double [?]: the 8070 programming manual we read names the functions (SIN, COS, TAN in
+        degrees) but not their precision."""
+        return Arithmetic.DOUBLE
 
     @property
     def increment(self) -> float:
@@ -43,6 +49,10 @@ class FagorVariables:
         if value is None:
             raise EvalError(f"P{int(key) - P_BASE} is read before it is set")
         return value
+
+    def exists(self, key: VarKey) -> bool:
+        """The family reads ``EXIST[..]`` (ISG's); whether the 8070 has it is not known [?]."""
+        raise EvalError("EXIST is not known on the Fagor 8070 [?]")
 
     def write(self, key: VarKey, value: Value) -> None:
         if value is None:

@@ -11,18 +11,21 @@ are calls with their own level of ``V.L.`` variables (P parameters are shared, s
 
 A block continued with ``\\`` at the end of its line is one block whose text holds every line (written
 back as it was); it is located at its first line. ``#COMMENT BEGIN`` ... ``#COMMENT END`` lines are
-comment blocks. ``#VAR`` ... ``#ENDVAR``: declarations without a value are comments, those with one
-are assignments. Every other ``#`` command is kept verbatim (``NativeCode``): it round-trips in ISG and
+comment blocks. ``#VAR`` ... ``#ENDVAR``: declarations, typed or not (``declarations``). Every other ``#`` command is kept verbatim (``NativeCode``): it round-trips in ISG and
 is refused by every other dialect and by the simulator, naming the command. So is a block using an
 array element (``P100[3]``, ``V.L.A[2]``), which the IR does not model (in a ``$`` statement it is an
 error: the statement's construct could not be paired).
+
+A no-break space (U+00A0, what a program copied from Beckhoff's documentation web pages carries between
+its words) is read as a blank, with one warning for the file; the text keeps it, so it is written back
+byte for byte.
 
 Errors are reported per block; the block is kept as text only, and reading goes on.
 """
 
 from __future__ import annotations
 
-from typing import Iterable, Iterator
+from typing import Callable, ClassVar, Iterable, Iterator
 
 from postproc.control import CONTROL, Assign, Call, Label, Return, SubEnd, SubStart
 from postproc.dialect import Reader
@@ -30,7 +33,11 @@ from postproc.errors import Location, ParseError, PostprocError
 from postproc.ir import BlockDelete, Block, Comments, NativeCode, ProgramStart, Sequence, TapeMark
 from postproc.rs274.lexer import split_lines
 
+from postproc.expr import Expr, Num, Var
+from postproc.rs274.expressions import ExprSyntaxError
+
 from .commands import command_name, describe_command
+from .declarations import IsgTypes, parse_declaration, stored
 from postproc.isg_family.expressions import Unmodelled
 from postproc.isg_family.lexer import Lexed, lex, strip_comments
 from postproc.isg_family.statements import Nesting, parse_statement
@@ -38,24 +45,33 @@ from postproc.isg_family.statements import Nesting, parse_statement
 RETURN_CODES = frozenset({17, 29})
 """``M17``/``M29`` end a subroutine."""
 
+NO_BREAK_SPACE = "\u00a0"
+
 
 class IsgReader(Reader):
+    BLANKS: ClassVar[str] = NO_BREAK_SPACE
     def read(self, lines: Iterable[str]) -> Iterator[Block]:
         file = self.ctx.file
         report = self.ctx.diagnostics.error
-        state = _State(file, self.ctx.setup.code_calls)
+        state = _State(file, self.ctx.setup.code_calls, report)
         pending: list[tuple[int, str, str]] = []
+        blank_warned = False
         for number, text, eol in split_lines(lines):
+            if NO_BREAK_SPACE in text and not blank_warned:
+                blank_warned = True
+                self.ctx.diagnostics.warn("U+00A0 (a no-break space) is read as a blank here and wherever else "
+                                          "this file has one (the text keeps it)",
+                                          Location(file, number, text.index(NO_BREAK_SPACE) + 1))
             if not state.in_comment and text.rstrip().endswith("\\"):
                 pending.append((number, text, eol))
                 continue
             if pending:
                 first = pending[0][0]
-                code = " ".join(_unbackslash(t) for _, t, _ in pending) + " " + text
+                code = " ".join(_blanks(_unbackslash(t)) for _, t, _ in pending) + " " + _blanks(text)
                 text = "".join(t + e for _, t, e in pending) + text
                 number, pending = first, []
             else:
-                code = text
+                code = _blanks(text)
             try:
                 yield state.block(number, text, code, eol)
             except PostprocError as err:
@@ -70,6 +86,11 @@ class IsgReader(Reader):
             report(problem)
 
 
+def _blanks(text: str) -> str:
+    """The text to read: each no-break space a blank (one character for one, so columns stay)."""
+    return text.replace(NO_BREAK_SPACE, " ") if NO_BREAK_SPACE in text else text
+
+
 def _unbackslash(text: str) -> str:
     cut = text.rstrip()
     return cut[:-1] + " " * (len(text) - len(cut) + 1)
@@ -78,8 +99,10 @@ def _unbackslash(text: str) -> str:
 class _State:
     """What reading a file remembers between blocks."""
 
-    def __init__(self, file: str, code_calls: dict[str, str]) -> None:
+    def __init__(self, file: str, code_calls: dict[str, str], report: Callable[[PostprocError], None]) -> None:
         self.file = file
+        self.report = report
+        """Reports an error that leaves the block as read (its constructs still pair up)."""
         self.code_calls = code_calls
         """The set-up's ``<CodeCall>``s: what file each implicit subroutine call (G80-G89, G800-G899) runs."""
         self.nesting = Nesting(file)
@@ -88,6 +111,7 @@ class _State:
         self.in_comment = False
         self.in_var: int | None = None
         """Line of an open ``#VAR``."""
+        self.types = IsgTypes()
 
     def error(self, line: int, col: int, message: str) -> ParseError:
         return ParseError(message, Location(self.file, line, col))
@@ -101,9 +125,8 @@ class _State:
             return block
         lexed = Lexed()
         code = strip_comments(self.file, number, code, lexed)
-        if self.in_var is not None and "=" not in code and code.strip() and "#" not in code:
-            block.add(Comments([*lexed.comments, code.strip()]))  # a declaration without a value
-            return block
+        if self.in_var is not None and code.strip() and "#" not in code and ("=" not in code or ":" in code):
+            return self.declare(block, code, lexed.comments)
         try:
             lex(self.file, number, code, lexed)
         except Unmodelled as err:
@@ -125,15 +148,22 @@ class _State:
         if lexed.label_name is not None:
             block.add(Label(lexed.label_name))
         if lexed.statement is not None:
-            block.add(parse_statement(code, lexed.statement, self.nesting, number))
+            statement = parse_statement(code, lexed.statement, self.nesting, number)
+            for role in getattr(statement, "ROLES", ()):
+                value = getattr(statement, role)
+                if isinstance(value, Expr):
+                    self.numeric(block, value, "a condition")
+            block.add(statement)
             return block
         if lexed.command is not None:
             self.command(block, code, lexed.command)
             return block
         block.words.extend(lexed.words)
         block.values.update(lexed.values)
+        for letter, value in lexed.values.items():
+            self.numeric(block, value, f"the value of {letter}")
         if lexed.assigns:
-            block.add(Assign(lexed.assigns))
+            block.add(Assign(self.assigned(block, lexed.assigns)))
         if lexed.call is not None:
             kind, name, at = lexed.call
             block.add(Call(f"<{name}>" if kind == "LL" else name, kind="macro"))
@@ -141,6 +171,45 @@ class _State:
         if self.code_calls:
             self.implicit_call(block)
         return block
+
+    def declare(self, block: Block, code: str, comments: list[str]) -> Block:
+        """A line of a ``#VAR`` block: a declaration (``declarations``); the variable gets its value."""
+        try:
+            declaration = parse_declaration(code)
+        except Unmodelled as err:
+            block.add(NativeCode("isg", f"{err.what} (not modelled)", block.text or ""))
+            return block
+        except ExprSyntaxError as err:
+            raise err.at(self.file, block.line)
+        if comments:
+            block.add(Comments(comments))
+        self.types.declare(declaration, block.line)
+        if declaration.is_string:
+            block.add(NativeCode("isg", f"{declaration.name} : {declaration.type} (a string variable: strings are "
+                                        f"not modelled)", block.text or "", inert=True))
+            return block
+        value = declaration.value if declaration.value is not None else Num(0.0)
+        self.numeric(block, value, f"the initial value of {declaration.name}")
+        block.add(Assign([(Var(name=declaration.name), stored(declaration.type, value))]))
+        return block
+
+    def assigned(self, block: Block, items: list[tuple[Var, Expr]]) -> list[tuple[Var, Expr]]:
+        """Assignments as the declared types store them (a STRING variable takes no number)."""
+        out = []
+        for var, value in items:
+            self.numeric(block, value, f"the value assigned to {var.name or 'a P parameter'}")
+            try:
+                out.append((var, self.types.assigned(var, value)))
+            except ValueError as err:
+                raise self.error(block.line, 1, str(err)) from None
+        return out
+
+    def numeric(self, block: Block, value: Expr, what: str) -> None:
+        """A located error when ``value`` reads a STRING variable (a string is no axis value); the block
+        stays as read, so what it opens or closes still pairs up."""
+        problem = self.types.string_used(value)
+        if problem is not None:
+            self.report(self.error(block.line, 1, f"{what}: {problem}"))
 
     def implicit_call(self, block: Block) -> None:
         """``G81``: a call of the file the set-up says the machine builder configured for it (non-modal,

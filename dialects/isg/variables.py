@@ -14,7 +14,7 @@ from __future__ import annotations
 
 from typing import Callable
 
-from postproc.expr import EvalError, Vacancy, Value, VarKey
+from postproc.expr import Arithmetic, EvalError, Vacancy, Value, VarKey
 from postproc.interp.variables import MACHINE_ONLY
 
 from postproc.isg_family.expressions import P_BASE, P_LAST
@@ -34,6 +34,12 @@ class IsgVariables:
     @property
     def vacancy(self) -> Vacancy:
         return Vacancy.FANUC  # never consulted for a vacant value: an unset variable is an error here
+
+    @property
+    def arithmetic(self) -> Arithmetic:
+        """IEEE double [?]: the ISG programming manual we read names the functions (SIN, COS, TAN in
+        degrees) but not their precision."""
+        return Arithmetic.DOUBLE
 
     @property
     def increment(self) -> float:
@@ -57,6 +63,11 @@ class IsgVariables:
         if value is None:
             raise EvalError(f"{_spell(key)} is read before it is set")
         return float(value)
+
+    def exists(self, key: VarKey) -> bool:
+        """EXIST[V.P.NAME]: the self-defined variable was declared or set (a P parameter: was set); a
+        machine's variable is an error (only the machine knows what it has)."""
+        return key in self._store(key)
 
     def write(self, key: VarKey, value: Value) -> None:
         if value is None:

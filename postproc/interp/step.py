@@ -98,7 +98,8 @@ class ProgramSyntax(Syntax):
             return []
         sub = Context(file, ctx.setup, diagnostics, ctx.dialect)
         sub.reader = reader
-        return list(reader(sub).read(checked_lines(lines, sub)))
+        blanks: str = getattr(reader, "BLANKS", "")  # Reader.BLANKS (ctx.reader is typed as any callable)
+        return list(reader(sub).read(checked_lines(lines, sub, blanks)))
 
     def library_file(self, name: str, ctx: Context) -> Path | None:
         for folder in ctx.setup.library_paths():

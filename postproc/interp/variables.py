@@ -14,7 +14,7 @@ from __future__ import annotations
 
 from typing import Callable, Protocol
 
-from ..expr import EvalError, Vacancy, Value, VarKey
+from ..expr import Arithmetic, EvalError, Vacancy, Value, VarKey
 
 MACHINE_ONLY = "is known only to the machine: the program cannot be simulated or flattened"
 
@@ -79,6 +79,14 @@ class FanucVariables:
         return Vacancy.FANUC
 
     @property
+    def arithmetic(self) -> Arithmetic:
+        """IEEE double (15i/30i manuals: "double-precision real data, as laid down in the applicable IEEE
+        standard" [K]); how a Fanuc reduces an angle is not published: the trigonometric functions'
+        "absolute error is guaranteed", not their relative error, so ``SIN[180]`` is a small residual of
+        unknown sign there too [K]. Parameter 6004#1 (MFZ) may set tiny results to 0 [?]: not modelled."""
+        return Arithmetic.DOUBLE
+
+    @property
     def increment(self) -> float:
         return self._increment()
 
@@ -92,6 +100,10 @@ class FanucVariables:
         if key == 0:
             return None
         raise self._unknown(key)
+
+    def exists(self, key: VarKey) -> bool:
+        """Custom Macro B has no test of existence: a variable that is read is vacant or not."""
+        raise EvalError("Custom Macro B has no test of whether a variable exists")
 
     def write(self, key: VarKey, value: Value) -> None:
         if isinstance(key, str):
@@ -143,6 +155,12 @@ class NgcVariables:
         return Vacancy.LINUXCNC
 
     @property
+    def arithmetic(self) -> Arithmetic:
+        """rs274 scales angles with ``M_PIl`` in ``long double`` (src: ``interp_execute.cc`` ``execute_unary``,
+        ``interp_read.cc`` ``read_atan``) [V: rs274 on x86-64, ``tests/test_long_double.py``]."""
+        return Arithmetic.X86_64_C
+
+    @property
     def increment(self) -> float:
         return self._increment()
 
@@ -159,6 +177,10 @@ class NgcVariables:
 
     def read(self, key: VarKey) -> Value:
         return self._store(key).get(key)  # type: ignore[arg-type]
+
+    def exists(self, key: VarKey) -> bool:
+        """EXISTS[#<name>]: the name has a value; a numbered parameter always exists (rs274, src)."""
+        return not isinstance(key, str) or self.read(key) is not None
 
     def write(self, key: VarKey, value: Value) -> None:
         if value is None:
@@ -200,9 +222,14 @@ class Variables(Protocol):
     def vacancy(self) -> Vacancy: ...
 
     @property
+    def arithmetic(self) -> Arithmetic: ...
+
+    @property
     def increment(self) -> float: ...
 
     def read(self, key: VarKey) -> Value: ...
+
+    def exists(self, key: VarKey) -> bool: ...
 
     def write(self, key: VarKey, value: Value) -> None: ...
 

@@ -53,9 +53,13 @@ BINARY: dict[str, tuple[str, int]] = {
 FUNCTIONS: dict[str, str] = {
     "ABS": "abs", "SQR": "sqr", "SQRT": "sqrt", "EXP": "exp", "LN": "ln", "DEXP": "exp10", "LOG": "log10",
     "SIN": "sin", "COS": "cos", "TAN": "tan", "ASIN": "asin", "ACOS": "acos", "ATAN": "atan",
-    "INT": "trunc", "FRACT": "fract", "ROUND": "round",
+    "INT": "trunc", "FRACT": "fract", "ROUND": "round", "EXIST": "exists",
 }
-"""Function word -> neutral name (one argument each)."""
+"""Function word -> neutral name (one argument each). ``EXIST[V.S.SPEED]`` is 1 when the variable exists
+(ISG programming manual, "#VAR" page's example ``$IF EXIST[V.S.EXAMPLE[0]] == TRUE`` [V]); on the
+Fagor 8070 it is not known [?] (``FagorVariables.exists`` refuses it)."""
+CONSTANTS: dict[str, float] = {"TRUE": 1.0, "FALSE": 0.0}
+"""Named constants (the same manual example compares with ``TRUE``; a BOOLEAN is 0 or 1 [V])."""
 _INVERSE_BINARY = {op: (word, prec) for word, (op, prec) in BINARY.items()}
 _INVERSE_FUNCTIONS = {name: word for word, name in FUNCTIONS.items()}
 _COMPARE = 1
@@ -220,6 +224,9 @@ class _Parser:
         while end < n and text[end] in _LETTERS:
             end += 1
         word = text[pos:end].upper()
+        constant = CONSTANTS.get(word)
+        if constant is not None and (end >= n or text[end] not in _NAME):
+            return end, Num(constant)
         neutral = FUNCTIONS.get(word)
         if neutral is None:
             raise ExprSyntaxError(f"unknown function or variable {text[pos:end]!r}", pos)
@@ -309,6 +316,8 @@ def spell_expr(expr: Expr, min_prec: int = 0, leading: bool = True) -> str:
         sep = f" {word} " if word == "MOD" or prec == _COMPARE else word
         text = left + sep + right
         return f"[{text}]" if prec <= min_prec else text
+    if isinstance(expr, Func) and expr.name == "whole_in":
+        return spell_expr(expr.args[0], min_prec, leading)  # ISG stores into a typed variable by assigning
     if isinstance(expr, Func):
         function = _INVERSE_FUNCTIONS.get(expr.name)
         if function is None or len(expr.args) != 1:

@@ -75,7 +75,8 @@ class Lexed:
 
 def strip_comments(file: str, line: int, text: str, lexed: Lexed, parens: bool = True) -> str:
     """Blank out ``( .. )`` (nesting; an unclosed one runs to the end; only when ``parens``) and ``;``
-    to the end; keep their texts in ``lexed.comments``."""
+    to the end; keep their texts in ``lexed.comments``. A ``"..."`` string (``#MSG ["done :)"]``) is
+    text, not a comment's start or end."""
     if not parens:
         cut = text.find(";")
         if cut < 0:
@@ -100,6 +101,12 @@ def strip_comments(file: str, line: int, text: str, lexed: Lexed, parens: bool =
                     lexed.comments.append(text[start + 1:pos])
                     out.append(" " * (pos - start + 1))
             pos += 1
+            continue
+        if c == '"':
+            close = text.find('"', pos + 1)
+            end = n if close < 0 else close + 1
+            out.append(text[pos:end])
+            pos = end
             continue
         if c == "(":
             depth = 1
