@@ -10,7 +10,10 @@ Rules (each a choice where the contract is silent, and tested):
   is evaluated with the new values. A control block's other words (``G01 X10. M98 P2000``) run first.
 - ``Limits.loop_iterations`` bounds the total of loop iterations, jumps taken, returns to a start and
   calls (every repetition counts), so neither a loop nor a wide recursion can run forever;
-  ``Limits.call_depth`` bounds nesting.
+  ``Limits.call_depth`` bounds nesting. ``Limits.executed_blocks`` bounds the work: the blocks run
+  beyond one run of each block held (the main program and the library programs loaded), so a loop
+  ends within seconds whatever its iteration count, and the error names the repetition (loop, jump,
+  return or call) that ran last.
 - A runtime error (division by zero, a missing label...) is reported at its block, with the call
   stack, and execution stops: what follows would rest on a value that does not exist.
 - A modal call (G66) runs after each block that has an axis word, except inside the called macro.
@@ -117,6 +120,11 @@ class Interpreter:
         self.report = report
         self.annotate = annotate
         self.budget = limits.loop_iterations
+        self.work = limits.executed_blocks + store.blocks_held
+        """Blocks left to run: one decrement a block (every held block may run once beyond the bound)."""
+        self.held = store.blocks_held
+        self.repeated: tuple[_Frame, Block, str] | None = None
+        """The last repetition spent (frame, block, what): the one the work bound names."""
         self.frames: list[_Frame] = []
         self.modal: tuple[ModalCall, dict[int, Value], int, Block] | None = None
         self.ended = False
@@ -148,6 +156,9 @@ class Interpreter:
                 self._return(frame, frame.program.blocks[frame.end - 1] if frame.end else None, None, None)
                 continue
             block = frame.program.blocks[frame.pc]
+            self.work -= 1
+            if self.work < 0:
+                self._out_of_work(frame, block)
             try:
                 yield from self._step(frame, block)
             except EvalError as err:
@@ -248,7 +259,7 @@ class Interpreter:
             target = program.find_sequence(number, pos)
             if target is None:
                 raise ProgramError(self._missing_sequence(program, number, source_text(block)))
-            self._spend(block, "jump")
+            self._spend(block, "jump", back=target <= pos)
             yield from self._note(frame, block, "jump")
             frame.pc = target
         elif isinstance(control, GotoLabel):
@@ -258,7 +269,7 @@ class Interpreter:
             found = program.find_label(control.label, pos)
             if found is None:
                 raise ProgramError(f"'{source_text(block)}': no block labelled {control.label} in {program.file}")
-            self._spend(block, "jump")
+            self._spend(block, "jump", back=found <= pos)
             yield from self._note(frame, block, "jump")
             frame.pc = found
         elif isinstance(control, IfThen):
@@ -442,6 +453,10 @@ class Interpreter:
         if len(self.frames) > self.limits.call_depth:
             raise ProgramError(f"'{source_text(block)}' exceeds the set-up's bound of {self.limits.call_depth} "
                                f"nested calls (<Limits callDepth=\"{self.limits.call_depth}\"/>)")
+        held = self.store.blocks_held
+        if held != self.held:  # a library program was loaded: each of its blocks may run once too
+            self.work += held - self.held
+            self.held = held
         self._spend(block, "call")
         program, start, end = found
         caller_file = frame.origin.file if frame.origin is not None else frame.program.file
@@ -555,7 +570,22 @@ class Interpreter:
             raise EvalError(f"{what} cannot be negative ({value})")
         return value
 
-    def _spend(self, block: Block, what: str) -> None:
+    def _out_of_work(self, frame: _Frame, block: Block) -> None:
+        """Report the work bound (``Limits.executed_blocks``), located at the repetition that ran last."""
+        n = self.limits.executed_blocks
+        if self.repeated is not None:
+            frame, block, what = self.repeated
+            named = f"{what} '{source_text(block)}'"
+        else:  # nothing repeated yet (a bound below the program's own length cannot be set: a guard)
+            named = f"'{source_text(block)}'"
+        self._fail(ProgramError(f"{named} runs more than {n} blocks beyond one run of each block of the program "
+                                f"(<Limits executedBlocks=\"{n}\"/>)"), frame, block, 1)
+
+    def _spend(self, block: Block, what: str, back: bool = True) -> None:
+        """Count a repetition (``back``: it runs blocks again, so the work bound may name it; a jump
+        forward skips blocks)."""
+        if back:
+            self.repeated = (self.frames[-1], block, what)
         self.budget -= 1
         if self.budget < 0:
             n = self.limits.loop_iterations

@@ -190,6 +190,8 @@ class ProgramSyntax(Syntax):
         body.extend(rest)
         from .machine import Interpreter  # loaded only when a program computes
         from .store import Program, ProgramStore
+        if ctx.diagnostics.errors:
+            return  # a line was refused: what would run is not the program written, and nothing is written
         try:
             main = Program(ctx.file, body, self.is_program_end)
         except PostprocError as err:

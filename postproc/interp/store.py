@@ -171,7 +171,7 @@ Loader = Callable[[str], "Program | None"]
 class ProgramStore:
     """The main program and the library programs loaded so far, searched by subprogram name."""
 
-    __slots__ = ("main", "library", "loader", "dropped", "kept_limit")
+    __slots__ = ("main", "library", "loader", "dropped", "kept_limit", "blocks_held")
 
     def __init__(self, main: Program, loader: Loader, dropped: int = 0, kept_limit: int = 0) -> None:
         self.main = main
@@ -180,6 +180,8 @@ class ProgramStore:
         self.kept_limit = kept_limit
         self.library: dict[str, Program] = {}
         self.loader = loader
+        self.blocks_held = len(main.blocks)
+        """Blocks of the main program and of the library programs loaded so far."""
 
     def find(self, name: str) -> tuple[Program, int, int] | None:
         """(program, first body position, end position) of subprogram ``name``: the main program's own
@@ -196,6 +198,7 @@ class ProgramStore:
         if loaded is None:
             return None
         self.library[name] = loaded
+        self.blocks_held += len(loaded.blocks)
         found = loaded.subs.get(name)
         if found is not None:
             return loaded, found[0], found[1]
@@ -203,4 +206,4 @@ class ProgramStore:
 
     def held(self) -> int:
         """Blocks held in memory (the main program's and the loaded library's)."""
-        return len(self.main.blocks) + sum(len(p.blocks) for p in self.library.values())
+        return self.blocks_held
