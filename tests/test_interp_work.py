@@ -1,8 +1,9 @@
-"""The interpreter's work bound (``Limits.executed_blocks``): the blocks a run may execute beyond one run of
-each block it holds, whatever its loops' iteration counts. A hostile loop (``M99`` in the main program,
+"""The interpreter's work bound (``Limits.repeated_work``): the blocks a run executes again, and the moves
+they expand to, whatever its loops' iteration counts. A hostile loop (``M99`` in the main program,
 ``WHILE [1 EQ 1]``, ISG ``$WHILE 1``, ``$FOR`` with step 0, ``o.. repeat [99999999]``, a recursion that
-calls itself twice) ends with a located error naming the repetition that ran last, in every dialect and
-for every command; a straight program of any length runs once and never reaches it.
+calls itself twice, a loop around a cycle of 9999 holes) ends with a located error naming the repetition
+that ran last, in every dialect and for every command; a straight program of any length runs once and
+never reaches it.
 
 Expected counts are derived by hand from each program below.
 """
@@ -22,25 +23,25 @@ from postproc.toolpath import toolpath_events
 from tests.test_interp import P, error_of, run, v, words
 
 
-def test_the_bound_counts_blocks_run_not_iterations():
-    # 13 blocks held (while, ten moves, end, M30): 100 + 13 = 113 blocks may run. An iteration runs 12
-    # (the while, ten moves, the end): nine run 108, the tenth runs its while and four moves (113), and
-    # its fifth move is the 114th block
+def test_the_bound_counts_blocks_run_again_not_iterations():
+    # the first iteration runs each block once (free); from the second on, an iteration runs 12 blocks
+    # again (the while, ten moves, the end): iterations 2-9 run 96, the tenth its while and three moves
+    # (100), and its fourth move is the 101st
     p = P()
     p(control=While("1", Num(1.0)))
     for i in range(10):
         p(("X", f"{i}."))
     p(control=EndWhile("1"))
     p(("M", "30"))
-    limits = Limits(executed_blocks=100, loop_iterations=1_000_000)
+    limits = Limits(repeated_work=100, loop_iterations=1_000_000)
     assert error_of(p, limits=limits) == (
-        "main.nc:12:1: error: loop '(statement 12)' runs more than 100 blocks beyond one run of each block of the "
-        "program (<Limits executedBlocks=\"100\"/>)")
+        "main.nc:12:1: error: loop '(statement 12)' repeats more than 100 blocks and moves in all (the set-up's "
+        "bound on work run again, <Limits repeatedWork=\"100\"/>)")
     ran: list[str] = []
     with pytest.raises(ErrorList):
         for block in _stream(p, limits):
             ran.extend(words([block]))
-    assert len(ran) == 9 * 10 + 4
+    assert len(ran) == 9 * 10 + 3
 
 
 def test_every_block_held_runs_once_whatever_the_bound():
@@ -50,7 +51,7 @@ def test_every_block_held_runs_once_whatever_the_bound():
     for i in range(5000):
         p(("X", f"{i}."))
     p(("M", "30"))
-    out = run(p, limits=Limits(executed_blocks=1))
+    out = run(p, limits=Limits(repeated_work=1))
     assert len(words(out)) == 5001
 
 
@@ -78,6 +79,11 @@ HOSTILE = [
     ("isg", "%1\nP1=0\n$WHILE 1\nG0 X[P1]\n$ENDWHILE\nM30\n", "5:1: error: loop '$ENDWHILE'"),
     ("isg", "%1\n$FOR P1 = 0, 10, 0\nG0 X[P1]\n$ENDFOR\nM30\n", "4:1: error: loop '$ENDFOR'"),
     ("linuxcnc", "o100 repeat [99999999]\nG0 X1\no100 endrepeat\nM2\n", "3:1: error: loop 'o100 endrepeat'"),
+    # a cycle of 9999 holes (4 moves each) in an endless loop: the moves of a block run again count
+    ("fanuc", "G90 G0 X0 Y0 Z10\n#1=0\nWHILE [1 EQ 1] DO1\nG81 X0 Y0 Z-1 R1 K9999 F100\nG80\nEND1\nM30\n",
+     "6:1: error: loop 'END1'"),
+    ("linuxcnc", "G90 G0 X0 Y0 Z10\no1 while [1]\nG81 X0 Y0 Z-1 R1 L9999 F100\nG80\no1 endwhile\nM2\n",
+     "5:1: error: loop 'o1 endwhile'"),
     ("linuxcnc", "o<w> sub\n#<d>=[#1+1]\no100 if [#<d> LT 40]\no<w> call [#<d>]\no<w> call [#<d>]\no100 endif\n"
                  "G0 X1\no<w> endsub\no<w> call [0]\nM2\n",
      ("4:1: error: call 'o<w> call [#<d>]'", "5:1: error: call 'o<w> call [#<d>]'")),
@@ -88,9 +94,9 @@ HOSTILE = [
 def test_a_hostile_loop_ends_at_the_work_bound_naming_its_repetition(dialect, program, named):
     # the iteration bound is far off (every iteration runs at least one block): only the work bound ends
     # these within 2000 blocks
-    setup = MachineSetup(limits=Limits(executed_blocks=2000, loop_iterations=50_000))
-    expected = [f"t.nc:{one} runs more than 2000 blocks beyond one run of each block of the program "
-                "(<Limits executedBlocks=\"2000\"/>)" for one in ((named,) if isinstance(named, str) else named)]
+    setup = MachineSetup(limits=Limits(repeated_work=2000, loop_iterations=50_000))
+    expected = [f"t.nc:{one} repeats more than 2000 blocks and moves in all (the set-up's bound on work run "
+                "again, <Limits repeatedWork=\"2000\"/>)" for one in ((named,) if isinstance(named, str) else named)]
     with pytest.raises(ErrorList) as info:  # flattened for a target without control flow
         translate(io.StringIO(program), io.StringIO(), file="t.nc", source=dialect, target="grbl", setup=setup,
                   diagnostics=Diagnostics(warn_stream=io.StringIO()))
@@ -109,13 +115,13 @@ def _one(errors: ErrorList, expected: list[str]) -> None:
 
 
 def test_the_default_bound():
-    assert Limits().executed_blocks == 200_000
+    assert Limits().repeated_work == 100_000
     with pytest.raises(ErrorList) as info:
         list(toolpath_events(io.StringIO("G0 X1\nM99\n"), file="t.nc", dialect="fanuc",
                              diagnostics=Diagnostics(warn_stream=io.StringIO())))
     assert [str(e) for e in info.value.errors] == [
-        "t.nc:2:1: error: return 'M99' runs more than 200000 blocks beyond one run of each block of the program "
-        "(<Limits executedBlocks=\"200000\"/>)"]
+        "t.nc:2:1: error: return 'M99' repeats more than 100000 blocks and moves in all (the set-up's bound on work "
+        "run again, <Limits repeatedWork=\"100000\"/>)"]
 
 
 @pytest.mark.parametrize("dialect, program, error", [
@@ -125,7 +131,7 @@ def test_the_default_bound():
 ])
 def test_a_refused_line_stops_the_run_before_the_program_is_flattened(dialect, program, error):
     # the loop would run to the bound (an error of its own) if the program were run
-    setup = MachineSetup(limits=Limits(executed_blocks=2000, loop_iterations=50_000))
+    setup = MachineSetup(limits=Limits(repeated_work=2000, loop_iterations=50_000))
     for target in ("grbl", "toolpath"):
         with pytest.raises(ErrorList) as info:
             if target == "toolpath":

@@ -10,9 +10,10 @@ Rules (each a choice where the contract is silent, and tested):
   is evaluated with the new values. A control block's other words (``G01 X10. M98 P2000``) run first.
 - ``Limits.loop_iterations`` bounds the total of loop iterations, jumps taken, returns to a start and
   calls (every repetition counts), so neither a loop nor a wide recursion can run forever;
-  ``Limits.call_depth`` bounds nesting. ``Limits.executed_blocks`` bounds the work: the blocks run
-  beyond one run of each block held (the main program and the library programs loaded), so a loop
-  ends within seconds whatever its iteration count, and the error names the repetition (loop, jump,
+  ``Limits.call_depth`` bounds nesting. ``Limits.repeated_work`` bounds the work: the blocks run again
+  (the first run of each block is free) and the moves their expansions make downstream (counted in
+  ``Context.moves_made``, charged when the interpreter resumes after such a block), so a loop ends within
+  seconds whatever its iteration count or its body, and the error names the repetition (loop, jump,
   return or call) that ran last.
 - A runtime error (division by zero, a missing label...) is reported at its block, with the call
   stack, and execution stops: what follows would rest on a value that does not exist.
@@ -112,7 +113,8 @@ class Interpreter:
     before each call, loop iteration and jump taken (for a flattened program's reader)."""
 
     def __init__(self, store: ProgramStore, host: Host, variables: Variables, limits: Limits,
-                 report: "Reporter", annotate: bool = False, rules: SubprogramRules | None = None) -> None:
+                 report: "Reporter", annotate: bool = False, rules: SubprogramRules | None = None,
+                 counts: MoveCount | None = None) -> None:
         self.store = store
         self.host = host
         self.vars = variables
@@ -120,9 +122,13 @@ class Interpreter:
         self.report = report
         self.annotate = annotate
         self.budget = limits.loop_iterations
-        self.work = limits.executed_blocks + store.blocks_held
-        """Blocks left to run: one decrement a block (every held block may run once beyond the bound)."""
-        self.held = store.blocks_held
+        self.work = limits.repeated_work
+        """Blocks and moves left to run again (``Limits.repeated_work``)."""
+        self.counts: MoveCount = counts if counts is not None else _NO_MOVES
+        self.moves_seen = 0
+        """``counts.moves_made`` when the interpreter last looked."""
+        self.again = False
+        """The block run last had run before: the moves made since are repeated work."""
         self.repeated: tuple[_Frame, Block, str] | None = None
         """The last repetition spent (frame, block, what): the one the work bound names."""
         self.frames: list[_Frame] = []
@@ -155,8 +161,19 @@ class Interpreter:
                                frame, last, 1)
                 self._return(frame, frame.program.blocks[frame.end - 1] if frame.end else None, None, None)
                 continue
-            block = frame.program.blocks[frame.pc]
-            self.work -= 1
+            pc = frame.pc
+            program = frame.program
+            block = program.blocks[pc]
+            made = self.counts.moves_made
+            if made != self.moves_seen:
+                if self.again:
+                    self.work -= made - self.moves_seen
+                self.moves_seen = made
+            self.again = again = program.ran[pc] == 1
+            if again:
+                self.work -= 1
+            else:
+                program.ran[pc] = 1
             if self.work < 0:
                 self._out_of_work(frame, block)
             try:
@@ -453,10 +470,6 @@ class Interpreter:
         if len(self.frames) > self.limits.call_depth:
             raise ProgramError(f"'{source_text(block)}' exceeds the set-up's bound of {self.limits.call_depth} "
                                f"nested calls (<Limits callDepth=\"{self.limits.call_depth}\"/>)")
-        held = self.store.blocks_held
-        if held != self.held:  # a library program was loaded: each of its blocks may run once too
-            self.work += held - self.held
-            self.held = held
         self._spend(block, "call")
         program, start, end = found
         caller_file = frame.origin.file if frame.origin is not None else frame.program.file
@@ -571,15 +584,15 @@ class Interpreter:
         return value
 
     def _out_of_work(self, frame: _Frame, block: Block) -> None:
-        """Report the work bound (``Limits.executed_blocks``), located at the repetition that ran last."""
-        n = self.limits.executed_blocks
+        """Report the work bound (``Limits.repeated_work``), located at the repetition that ran last."""
+        n = self.limits.repeated_work
         if self.repeated is not None:
             frame, block, what = self.repeated
             named = f"{what} '{source_text(block)}'"
-        else:  # nothing repeated yet (a bound below the program's own length cannot be set: a guard)
+        else:  # nothing repeated yet: a guard (a block runs again only after a repetition)
             named = f"'{source_text(block)}'"
-        self._fail(ProgramError(f"{named} runs more than {n} blocks beyond one run of each block of the program "
-                                f"(<Limits executedBlocks=\"{n}\"/>)"), frame, block, 1)
+        self._fail(ProgramError(f"{named} repeats more than {n} blocks and moves in all (the set-up's bound on "
+                                f"work run again, <Limits repeatedWork=\"{n}\"/>)"), frame, block, 1)
 
     def _spend(self, block: Block, what: str, back: bool = True) -> None:
         """Count a repetition (``back``: it runs blocks again, so the work bound may name it; a jump
@@ -615,6 +628,20 @@ class Interpreter:
         source = block.text or ""
         i = source.find(letter + text)
         return i + 1 if i >= 0 else 1
+
+
+class MoveCount(Protocol):
+    """Where the moves made downstream are counted (the run's ``Context``)."""
+
+    @property
+    def moves_made(self) -> int: ...
+
+
+class _NoMoves:
+    moves_made = 0
+
+
+_NO_MOVES = _NoMoves()
 
 
 class Reporter(Protocol):

@@ -204,7 +204,7 @@ class ProgramSyntax(Syntax):
         make: VariablesFactory = type(self).VARIABLES
         variables: Variables = make(lambda: increment(state.units))
         interpreter = Interpreter(store, self, variables, ctx.setup.limits, ctx.diagnostics.error, annotate=True,
-                                  rules=self.SUBPROGRAM_RULES)
+                                  rules=self.SUBPROGRAM_RULES, counts=ctx)
         yield from interpreter.run(start=len(prefix))
 
     def _reread(self, kept: deque[Kept], ctx: Context, first_line: int) -> list[Block]:

@@ -38,7 +38,7 @@ class Program:
     """One file's blocks, indexed. ``main_end`` is the position after the main program's end block
     (``len(blocks)`` when it has none); blocks past it run only as subprograms."""
 
-    __slots__ = ("file", "blocks", "sequence", "labels", "pairs", "chains", "subs", "main_end", "first_line")
+    __slots__ = ("file", "blocks", "sequence", "labels", "pairs", "chains", "subs", "main_end", "first_line", "ran")
 
     def __init__(self, file: str, blocks: list[Block], is_end: Callable[[Block], bool]) -> None:
         self.file = file
@@ -55,6 +55,8 @@ class Program:
         """Subprogram name -> (position of its first body block, position of its end)."""
         self.main_end = len(blocks)
         self.first_line = blocks[0].line if blocks else 1
+        self.ran = bytearray(len(blocks))
+        """1 at the position of each block that has run (a block run again is work the interpreter counts)."""
         self._index(is_end)
 
     def _error(self, block: Block, message: str) -> ProgramError:
@@ -171,7 +173,7 @@ Loader = Callable[[str], "Program | None"]
 class ProgramStore:
     """The main program and the library programs loaded so far, searched by subprogram name."""
 
-    __slots__ = ("main", "library", "loader", "dropped", "kept_limit", "blocks_held")
+    __slots__ = ("main", "library", "loader", "dropped", "kept_limit")
 
     def __init__(self, main: Program, loader: Loader, dropped: int = 0, kept_limit: int = 0) -> None:
         self.main = main
@@ -180,8 +182,6 @@ class ProgramStore:
         self.kept_limit = kept_limit
         self.library: dict[str, Program] = {}
         self.loader = loader
-        self.blocks_held = len(main.blocks)
-        """Blocks of the main program and of the library programs loaded so far."""
 
     def find(self, name: str) -> tuple[Program, int, int] | None:
         """(program, first body position, end position) of subprogram ``name``: the main program's own
@@ -198,7 +198,6 @@ class ProgramStore:
         if loaded is None:
             return None
         self.library[name] = loaded
-        self.blocks_held += len(loaded.blocks)
         found = loaded.subs.get(name)
         if found is not None:
             return loaded, found[0], found[1]
@@ -206,4 +205,4 @@ class ProgramStore:
 
     def held(self) -> int:
         """Blocks held in memory (the main program's and the loaded library's)."""
-        return self.blocks_held
+        return len(self.main.blocks) + sum(len(p.blocks) for p in self.library.values())

@@ -52,6 +52,7 @@ def resolve_hole_pattern(block: Block, pattern: HolePattern, ctx: Context, name:
     except ValueError as err:
         raise ProgramError(f"{name}: {err}", at) from None
     pattern.split = tuple(split)
+    ctx.moves_made += len(items)
     block.add(pattern)
     block.add(CompoundMotion(cycle.kind, items))
     for axis, value in end.items():
