@@ -6,8 +6,9 @@ endless loop around a 9999-hole cycle, ``$FOR`` with step 0, ``o repeat [9999999
 
 Each case translates to a target without control flow (the program is flattened) and to the simulator:
 it must end, within the fuzzer's time per case, with output or located errors. The work bound is drawn
-small (``<Limits repeatedWork>`` up to 5000) so that a bounded case ends in a fraction of a second and an
-unbounded one stands out by its time; the default's figure is pinned in ``tests/test_interp_work.py``.
+small (``<Limits repeatedWork>`` up to 5000, ``movesPerBlock`` 2000: a cycle of 400 holes is 1600 moves)
+so that a bounded case ends in a fraction of a second and an unbounded one stands out by its time; the
+default's figure is pinned in ``tests/test_interp_work.py``.
 """
 
 from __future__ import annotations
@@ -28,12 +29,12 @@ BOUNDS = ["0", "1", "2", "3", "-1", "0.5", "99999999", "1E9", "7"]
 STEPS = ["1", "0", "-1", "0.5", "3", "-0.25"]
 """Counted-loop steps: 0 never reaches the end, a negative one never reaches a larger end."""
 
-FANUC_BODY = ["G01 X#1 F100", "G00 Y1.", "#1=#1+1", "#2=#2-1", "G81 X0 Y0 Z-1. R1. K9999 F100",
+FANUC_BODY = ["G01 X#1 F100", "G00 Y1.", "#1=#1+1", "#2=#2-1", "G81 X0 Y0 Z-1. R1. K400 F100",
               "G81 X1. Y1. Z-1. R1. F100", "G80", "G91 X1.", "G90", "M98 P1000", "M99", "GOTO 10",
               "IF [#1 GT {b}] GOTO 20", "N10 G00 X#2", "N20 G00 Z5."]
 ISG_BODY = ["G01 X[P1] F100", "G00 Y1", "P1=P1+1", "P2=P2-1", "G81 Z-1 R1 F100", "G80", "G91 X1", "G90",
             "LL SUB", "$BREAK", "$CONTINUE", "$IF P1 > {b}", "$ENDIF", "N20: G00 Z5", "$GOTO N20"]
-NGC_BODY = ["G01 X#1 F100", "G00 Y1", "#1=[#1+1]", "#2=[#2-1]", "G81 X0 Y0 Z-1 R1 L9999 F100", "G80",
+NGC_BODY = ["G01 X#1 F100", "G00 Y1", "#1=[#1+1]", "#2=[#2-1]", "G81 X0 Y0 Z-1 R1 L400 F100", "G80",
             "G91 X1", "G90", "o<r> call [#1]", "o9 if [#1 GT {b}]", "o9 endif"]
 
 
@@ -109,7 +110,8 @@ def _run(source: str, setup: MachineSetup) -> Callable[[str], object]:
 
 
 def cases() -> st.SearchStrategy[Case]:
-    bounds = st.integers(1, 5000).map(lambda n: MachineSetup(limits=Limits(repeated_work=n, call_depth=16)))
+    bounds = st.integers(1, 5000).map(lambda n: MachineSetup(limits=Limits(repeated_work=n, call_depth=16,
+                                                                           moves_per_block=2000)))
     return st.one_of(
         st.tuples(st.just("fanuc"), fanuc(), bounds),
         st.tuples(st.just("isg"), isg(), bounds),
