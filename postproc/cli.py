@@ -372,13 +372,16 @@ def _input_path(path: str) -> str | None:
     return None if path == "-" else path
 
 
-def _watched(path: str, src: TextIO) -> tuple[Iterable[str], Diagnostics]:
+def _watched(path: str, src: TextIO, setup: MachineSetup) -> tuple[Iterable[str], Diagnostics]:
     """The input's lines, with a progress bar where one is shown (``postproc.progress``), and the
-    diagnostics whose warnings print above the bar."""
+    diagnostics whose warnings print above the bar. The bar reads the lines as the check of their
+    length does (``postproc.lines.pieces``): never a line longer than the limit at once."""
     progress = progress_for(path)
     if progress is None:
         return src, Diagnostics()
-    return progress.lines(src), Diagnostics(warn_stream=AboveProgress(progress, sys.stderr))  # type: ignore[arg-type]
+    from .lines import pieces
+    return (progress.lines(pieces(src, setup.limits.line_length)),
+            Diagnostics(warn_stream=AboveProgress(progress, sys.stderr)))  # type: ignore[arg-type]
 
 
 def cmd_translate(args: argparse.Namespace) -> int:
@@ -408,7 +411,7 @@ def cmd_translate(args: argparse.Namespace) -> int:
     from .sequences import parse_defines
     defines = parse_defines(args.define)
     with _open_program(path) as src:
-        lines, diagnostics = _watched(path, src)
+        lines, diagnostics = _watched(path, src, setup)
         write_output(_output(args.output), lambda out: translate(
             lines, out, file=_name(path), source=args.source, target=args.target, setup=setup,
             on_unsupported=args.on_unsupported, diagnostics=diagnostics, defines=defines),
@@ -452,7 +455,7 @@ def cmd_toolpath(args: argparse.Namespace) -> int:
     if binary and args.output == "-":
         raise UsageError("--format png needs -o OUT, a file")
     with _open_program(args.input) as src:
-        lines, diagnostics = _watched(args.input, src)
+        lines, diagnostics = _watched(args.input, src, setup)
         write_output(_output(args.output), lambda out: export_toolpath(
             lines, out, file=_name(args.input), dialect=args.dialect, setup=setup, fmt=args.format,
             diagnostics=diagnostics, on_unsupported=args.on_unsupported), binary=binary, input_path=_input_path(args.input))

@@ -26,7 +26,7 @@ class Context:
 
     __slots__ = ("file", "setup", "diagnostics", "state", "dialect", "cycle_words", "on_unsupported",
                  "program_mode", "keep_check", "reader", "stops_before_motion", "run_data",
-                 "point_mix", "lathe", "diameter", "one_block", "peck_clearance_mm")
+                 "point_mix", "lathe", "diameter", "one_block", "peck_clearance_mm", "moves_made")
 
     def __init__(self, file: str, setup: MachineSetup, diagnostics: Diagnostics, dialect: str,
                  cycle_words: CycleWords | None = None) -> None:
@@ -67,6 +67,10 @@ class Context:
         self.one_block = False
         """Lathe cycles G71-G73/G76 are read in their one-block form (the set-up's ``latheCycleFormat`` on
         a dialect that has it)."""
+        self.moves_made = 0
+        """Moves the expansions of this run have made: each step that bounds a block's moves by
+        ``<Limits movesPerBlock>`` adds its count, and the interpreter charges those of the blocks it
+        runs again to its work bound (``Limits.executed_blocks``)."""
         self.keep_check: Callable[[list[Block]], str | None] | None = None
         """For 'auto': given the program from its first construct on, the reason it cannot be kept
         symbolically for the target (None: it can)."""

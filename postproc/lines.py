@@ -2,7 +2,10 @@
 here, once for every dialect, with the line and column.
 
 * A line longer than the set-up's ``<Limits lineLength>`` (default 64 kB, more than any controller's
-  buffer) is refused before anything scans it.
+  buffer) is refused before anything scans it, and before it is read whole: a text stream is read a
+  piece of at most ``PIECE`` characters at a time (``pieces``), a longer line is counted piece by piece
+  and dropped, and one that has not ended after ``MAX_SKIPPED`` more characters ends the reading
+  (``/dev/zero`` is one endless line). What is held is at most ``CHUNK`` pieces.
 * Outside comments a program is ASCII (but for the reader's ``BLANKS``, and a UTF-8 byte order mark opening the file, which
   readers skip with ``lexable``, as they skip the DOS end-of-file byte): Python's ``\\d`` and ``str.isdigit`` accept Arabic-Indic or
   full-width digits, which no controller reads as numbers. Inside a comment - between ``(`` and ``)``,
@@ -17,8 +20,9 @@ of line, so line numbers stay right and reading goes on to report every bad line
 
 from __future__ import annotations
 
+from functools import partial
 from itertools import chain, islice
-from typing import Iterable, Iterator
+from typing import Callable, Iterable, Iterator
 
 from .context import Context
 from .errors import Location, ParseError
@@ -27,49 +31,138 @@ MAX_DIGITS = 30
 """The most digits read in one number: more than any controller's registers hold, and within a float's
 range and Python's int conversion limit by far."""
 CHUNK = 1024
-"""Lines checked at once on the fast path (a chunk is held while checked: a few dozen kilobytes)."""
+"""Lines checked at once on the fast path (a chunk is held while checked: a few dozen kilobytes of a
+program, at most ``CHUNK`` pieces of ``PIECE`` characters of anything)."""
+PIECE = 1 << 12
+"""Most characters ``pieces`` reads at once: longer lines (rare, and checked line by line) are joined."""
+MAX_SKIPPED = 1 << 26
+"""Characters of a too-long line read past its limit before reading stops: the line's length is then
+reported as at least this much, and the rest of the input is not read."""
 _NUMBER_CHARS = bytes(1 if chr(i) in "0123456789." else 0 for i in range(256))
 """``bytes.translate`` table: digits and the point to 1, everything else to 0."""
 _LONG_RUN = b"\x01" * (MAX_DIGITS + 1)
 """A candidate for a too-long number (``line_problem`` then counts its digits)."""
 
 
+def pieces(lines: Iterable[str], limit: int) -> Iterable[str]:
+    """A text stream's lines read at most ``piece_size(limit)`` characters at a time, so that no line is
+    ever read whole before its length is known (``checked_lines`` joins the pieces of a line within the
+    limit, and counts and drops those of a longer one); ``lines`` as they are when they are not a stream.
+    All C calls: no Python step per line."""
+    read = getattr(lines, "readline", None)
+    if read is None:
+        return lines
+    return iter(partial(read, piece_size(limit)), "")
+
+
+def piece_size(limit: int) -> int:
+    """Characters ``pieces`` reads at once: a line within ``limit`` and its end of line, up to ``PIECE``."""
+    return min(limit + 2, PIECE)
+
+
 def checked_lines(lines: Iterable[str], ctx: Context, blanks: str = "") -> Iterator[str]:
     """``lines`` as they are; a line that fails a check (see the module docstring) as an empty line.
     ``blanks``: the non-ASCII characters the reader reads as blanks (``Reader.BLANKS``).
 
-    Lines are checked a chunk at a time with a few C-speed calls (``isascii``, ``len``, one translate and
+    Lines are checked a chunk at a time with a few C-speed calls (``len``, ``isascii``, one translate and
     one substring search over the joined chunk) and passed on by ``chain`` without a Python step per
     line; only a chunk that fails them is checked line by line. (A regex search per line cost 5 % of a
     copy-through translation.)"""
-    return chain.from_iterable(_checked_chunks(iter(lines), ctx, blanks))
-
-
-def _checked_chunks(lines: Iterator[str], ctx: Context, blanks: str) -> Iterator[list[str]]:
     limit = ctx.setup.limits.line_length
+    return chain.from_iterable(_checked_chunks(iter(pieces(lines, limit)), ctx, limit, blanks))
+
+
+def _checked_chunks(lines: Iterator[str], ctx: Context, limit: int, blanks: str) -> Iterator[list[str]]:
+    piece = piece_size(limit)  # a piece this long that does not end its line was cut by ``pieces``
+    fast = min(limit, piece - 1)
     number = 0
+    pending: list[str] = []
     while True:
-        chunk = list(islice(lines, CHUNK))
+        chunk = pending + list(islice(lines, CHUNK - len(pending)))
+        pending = []
         if not chunk:
             return
-        text = "".join(chunk)
-        if text.isascii() and (len(text) <= limit or max(map(len, chunk)) <= limit) \
-                and _LONG_RUN not in text.encode("ascii").translate(_NUMBER_CHARS):
-            number += len(chunk)
-            yield chunk
-            continue
-        for line in chunk:
+        if max(map(len, chunk)) <= fast:  # no cut piece and no long line: the chunk is joined
+            text = "".join(chunk)
+            if text.isascii() and _LONG_RUN not in text.encode("ascii").translate(_NUMBER_CHARS):
+                number += len(chunk)
+                yield chunk
+                continue
+        rest = iter(chunk)
+        for line in rest:
             number += 1
+            cut = len(line) == piece and not line.endswith("\n")
+            if cut:
+                whole, length, eol, pending, ended = _whole_line(
+                    line, lambda: next(rest, None) or next(lines, None), piece, limit)
+                pending.extend(rest)
+                if whole is None:
+                    bom = number == 1 and line[:1] == BOM
+                    _too_long(ctx, Location(ctx.file, number, limit + 1 + bom), length - bom, limit, ended)
+                    yield [eol]
+                    if not ended:
+                        return
+                    break
+                line = whole
             bom = number == 1 and line[:1] == BOM
             problem = line_problem(line[1:] if bom else line, limit, blanks)
             if problem is not None and bom:
                 problem = problem[0], problem[1] + 1
             if problem is None:
                 yield [line]
-                continue
-            message, column = problem
-            ctx.diagnostics.error(ParseError(message, Location(ctx.file, number, column)))
-            yield [line[len(line.rstrip("\r\n")):]]
+            else:
+                message, column = problem
+                ctx.diagnostics.error(ParseError(message, Location(ctx.file, number, column)))
+                yield [line[len(line.rstrip("\r\n")):]]
+            if cut:
+                break  # on with what was read past the line
+
+
+def _whole_line(first: str, take: Callable[[], str | None], piece: int,
+                limit: int) -> tuple[str | None, int, str, list[str], bool]:
+    """Read a cut line (``first`` is its first piece) to its end, keeping its pieces only while they are
+    within the limit: (the line with its end of line, or None when it is longer than ``limit``; its
+    length without the end of line; its end of line; the piece read past it, if any; whether it ended
+    within ``MAX_SKIPPED`` characters past the limit)."""
+    kept: list[str] | None = [first]
+    part, total = first, len(first)
+    while True:
+        eol, after = "", []
+        if part.endswith("\n"):
+            eol = "\r\n" if part.endswith("\r\n") else "\n"
+        elif part.endswith("\r"):  # a CR LF may have been cut between its two characters
+            following = take() if len(part) == piece else None
+            if following == "\n":
+                eol, total = "\r\n", total + 1
+                if kept is not None:
+                    kept.append(following)
+            else:
+                eol, after = "\r", [following] if following else []
+        if eol:
+            length = total - len(eol)
+            return ("".join(kept) if kept is not None and length <= limit else None), length, eol, after, True
+        if total > limit + MAX_SKIPPED:
+            return None, total, "", [], False
+        following = take()
+        if following is None:  # the input ends on this line
+            return ("".join(kept) if kept is not None and total <= limit else None), total, "", [], True
+        part = following
+        total += len(part)
+        if kept is not None:
+            if total <= limit + 2:
+                kept.append(part)
+            else:
+                kept = None
+
+
+def _too_long(ctx: Context, at: Location, length: int, limit: int, ended: bool) -> None:
+    if ended:
+        message = (f"the line is {length} characters long, more than the limit of {limit} (the set-up's "
+                   "<Limits lineLength>)")
+    else:
+        message = (f"the line is more than {length} characters long, more than the limit of {limit} (the "
+                   "set-up's <Limits lineLength>): the rest of the input is not read")
+    ctx.diagnostics.error(ParseError(message, at))
 
 
 BOM = "\ufeff"
@@ -89,8 +182,7 @@ def lexable(number: int, text: str) -> str:
 
 
 def line_problem(line: str, limit: int, blanks: str = "") -> tuple[str, int] | None:
-    """What is wrong with a line and its 1-based column, or None when it may be read (a character of
-    ``blanks`` is one the reader reads as a blank)."""
+    """What is wrong with a line and its 1-based column, or None when it may be read."""
     text = line.rstrip("\r\n")
     if len(text) > limit:
         return (f"the line is {len(text)} characters long, more than the limit of {limit} "
@@ -122,5 +214,5 @@ def line_problem(line: str, limit: int, blanks: str = "") -> tuple[str, int] | N
             return (f"character {ch!r} (U+{ord(ch):04X}) is not ASCII: outside comments a program is ASCII",
                     i + 1)
         else:
-            run = 0  # a blank of ``blanks`` ends a number too
+            run = 0
     return None

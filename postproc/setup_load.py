@@ -12,6 +12,7 @@ located in the file and at the line that wrote the offending value; loading coll
 from __future__ import annotations
 
 import os
+import stat
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, Callable
@@ -77,6 +78,23 @@ def resolve_chain(path: str | Path) -> list[etree._Element]:
         current = found
 
 
+def irregular(path: str, root: etree._Element) -> str | None:
+    """Why ``path`` (relative to ``root``'s file) is no file to read a configuration from: a FIFO, whose
+    ``open`` would wait for a writer forever, a device, a folder. None for a regular file, or for nothing
+    at all (reading it says so). Only ``os.stat``: nothing is opened."""
+    file = root.getroottree().docinfo.URL
+    full = Path(file).parent / path if file and not os.path.isabs(path) else Path(path)
+    try:
+        mode = os.stat(full).st_mode
+    except (OSError, ValueError):
+        return None
+    if stat.S_ISREG(mode):
+        return None
+    kind = ("a directory" if stat.S_ISDIR(mode) else "a FIFO (named pipe)" if stat.S_ISFIFO(mode)
+            else "a device" if stat.S_ISCHR(mode) or stat.S_ISBLK(mode) else "not a regular file")
+    return f"{path} is {kind}"
+
+
 def find_base(name: str, folder: Path) -> Path | None:
     """A local file (relative to the extending file's folder) first, then a shipped base by name."""
     if not name.strip():
@@ -127,6 +145,11 @@ class Merger:
             value = root.get(key)
             if value is None:
                 continue
+            if key == "pipeline":
+                problem = irregular(value, root)
+                if problem is not None:
+                    self.problem(f"pipeline: {problem}: a pipeline is read from a file", root)
+                    continue
             self.root[key] = self.rebase(value, root) if key == "pipeline" else value
             if last:
                 self.own.root.add(key)

@@ -16,6 +16,7 @@ import pytest
 
 from dialects.fagor.multiple_machining import pattern_words
 from postproc.api import read_blocks, translate
+from postproc.bounded import run_bounded
 from postproc.errors import Diagnostics, PostprocError
 from postproc.ir import Block, Feed, Motion
 from postproc.plugins import default_registry
@@ -197,6 +198,38 @@ def test_a_pattern_needs_an_active_cycle():
     with pytest.raises(PostprocError) as info:
         run("G163 X-20 K4", PRELUDE[:-2] + [PRELUDE[-1], "G80"])
     assert str(info.value) == "t.nc:9:1: error: G163 repeats the active canned cycle, and no canned cycle is active"
+
+
+@pytest.mark.parametrize("text, message", [
+    # a hundred million points (or a grid of K x D, or 360 / 0.0001 steps): each machined point makes at
+    # least one move, so the count alone passes the bound of 100,000 moves a block
+    ("G163 X-20 K99999999", "G163: the pattern machines 99999998 points"),
+    ("G163 X-20 I0.0001", "G163: the pattern machines 3599999 points"),
+    ("G160 A0 I1 K99999999", "G160: the pattern machines 99999998 points"),
+    ("G162 I1 K99999 J1 D99999", "G162: the pattern machines 9999800000 points"),
+    ("G161 I1 K99999999 J1 D99999999", "G161: the pattern machines 399999991 points"),
+    ("G164 X-20 B359 I0.0001", "G164: the pattern machines 3590000 points"),
+])
+def test_a_huge_pattern_is_refused_before_its_points_are_made(text, message):
+    def refused() -> str:
+        try:
+            run(text)
+        except PostprocError as err:
+            return str(err)
+        return "no error"
+
+    found = run_bounded(refused, seconds=20, memory=128 << 20)  # the points as a list: gigabytes
+    assert found.failure is None, found.failure
+    assert found.value == (f"t.nc:9:1: error: {message}, which make more than 100000 moves in one block (the "
+                           "set-up's <Limits movesPerBlock>)")
+
+
+def test_a_pattern_that_passes_the_bound_midway_says_at_which_point():
+    # 100,000 points of 4 moves each (drill()): points 2 to 25001 make 100,000 moves, point 25002 passes
+    with pytest.raises(PostprocError) as info:
+        run("G163 X-20 K100000")
+    assert str(info.value) == ("t.nc:9:1: error: G163: the pattern makes more than 100000 moves in one block by its "
+                               "point 25002 of 100000 (the set-up's <Limits movesPerBlock>)")
 
 
 def test_outside_g17_is_refused():

@@ -6,6 +6,8 @@ from __future__ import annotations
 
 import io
 
+from hypothesis import given, settings, strategies as st
+
 import pytest
 
 from postproc.api import translate
@@ -93,3 +95,82 @@ def test_signed_g_code_is_an_unknown_code_not_an_internal_error(dialect: str) ->
     """'G-.0' was an int('-') ValueError (found by the reader's fuzz test); never read as G0."""
     assert _errors("G-.0\nG-1 X1.\n", dialect) == ["p.nc:1:1: error: unknown G code G-.0",
                                                   "p.nc:2:1: error: unknown G code G-1"]
+
+
+# -- reading a line only as far as its limit -------------------------------------------------------
+
+class _Endless(io.TextIOBase):
+    """A text stream of ``head``, then ``fill`` characters of ``char`` (None: without end), then ``tail``:
+    ``/dev/zero`` or a 50 MB line without holding either."""
+
+    def __init__(self, head: str, char: str, fill: int | None, tail: str) -> None:
+        self.parts = [head]
+        self.char, self.fill, self.tail = char, fill, tail
+
+    def readline(self, size: int = -1) -> str:  # type: ignore[override]
+        assert size > 0, "read without a bound"
+        if self.parts:
+            return self.parts.pop()
+        if self.fill is None or self.fill > 0:
+            n = size if self.fill is None else min(size, self.fill)
+            if self.fill is not None:
+                self.fill -= n
+            return self.char * n
+        line, _, self.tail = self.tail.partition("\n")
+        return line + "\n" if _ or line else ""
+
+
+def _stream_errors(stream: io.TextIOBase) -> list[str]:
+    with pytest.raises(ErrorList) as info:
+        translate(stream, io.StringIO(), file="p.nc", source="fanuc", target="grbl")
+    return [str(e) for e in info.value.errors]
+
+
+def test_a_line_of_50_mb_is_counted_in_pieces_and_reading_goes_on():
+    from postproc.bounded import run_bounded
+
+    def errors() -> list[str]:
+        return _stream_errors(_Endless("G21 G90\n", "X", 50_000_000, "\nG0 X1.2.3\nM30\n"))
+
+    found = run_bounded(errors, seconds=60, memory=48 << 20)  # the line whole: 50 MB, and its copies
+    assert found.failure is None, found.failure
+    assert found.value == [
+        "p.nc:2:65537: error: the line is 50000000 characters long, more than the limit of 65536 (the set-up's "
+        "<Limits lineLength>)",
+        "p.nc:3:4: error: malformed word 'X1.2.3'"]
+
+
+def test_an_endless_line_ends_the_reading(monkeypatch):
+    import postproc.lines
+    monkeypatch.setattr(postproc.lines, "MAX_SKIPPED", 1 << 20)
+    errors = _stream_errors(_Endless("G21 G90\n", "\0", None, ""))
+    assert len(errors) == 1 and errors[0].startswith("p.nc:2:65537: error: the line is more than ")
+    assert errors[0].endswith(" characters long, more than the limit of 65536 (the set-up's <Limits lineLength>): "
+                              "the rest of the input is not read")
+    length = int(errors[0].split("more than ")[1].split(" ")[0])
+    assert (1 << 20) + 65536 < length <= (1 << 20) + 65536 + 4096  # one piece past the bound
+
+
+TEXT = st.lists(st.tuples(st.text(alphabet="GX1. ", max_size=30), st.sampled_from(["\n", "\r\n", "\r"])),
+                max_size=12).map(lambda lines: "".join(text + end for text, end in lines))
+
+
+@given(text=TEXT, tail=st.text(alphabet="GX1. ", max_size=30), limit=st.integers(1, 24),
+       piece=st.sampled_from([4, 7, 4096]))
+@settings(max_examples=300, deadline=None)
+def test_lines_read_in_pieces_are_the_lines_read_whole(text, tail, limit, piece):
+    # the same lines and the same errors whether a stream is read in pieces (of PIECE characters, or of
+    # the limit and an end of line) or each line whole, CR LF cut between its characters included
+    import postproc.lines
+    from postproc.context import Context
+    from postproc.errors import Diagnostics, ErrorLevel
+    program = text + tail
+    got = []
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(postproc.lines, "PIECE", piece)
+        for source in (io.StringIO(program, newline=""), list(io.StringIO(program, newline=""))):
+            ctx = Context("p.nc", MachineSetup(limits=Limits(line_length=limit)), Diagnostics(ErrorLevel.WARN,
+                          warn_stream=io.StringIO()), "fanuc")
+            lines = list(postproc.lines.checked_lines(source, ctx))
+            got.append((lines, [str(w) for w in ctx.diagnostics.warnings]))
+    assert got[0] == got[1]

@@ -290,3 +290,30 @@ def test_a_missing_pipeline_file_is_an_error(cli, tmp_path):
     assert result.status == 1
     assert f"{tmp_path / 'cfg/pipelines/mill.xml'}" in result.err
     assert "cannot read" in result.err
+
+
+@pytest.mark.parametrize("kind", ["fifo", "directory"])
+def test_a_pipeline_that_is_no_regular_file_is_refused_without_opening_it(tmp_path, kind):
+    # open() on a FIFO waits for a writer: the run would block before any message
+    import os
+    from postproc.bounded import run_bounded
+    machine = tmp_path / "m.xml"
+    machine.write_text(DECLARATION + '<MachineSetup name="x"\n  pipeline="in/pipe.xml"/>\n')
+    (tmp_path / "in").mkdir()
+    if kind == "fifo":
+        os.mkfifo(tmp_path / "in/pipe.xml")
+    else:
+        (tmp_path / "in/pipe.xml").mkdir()
+    described = "a FIFO (named pipe)" if kind == "fifo" else "a directory"
+
+    def refused() -> list[str]:
+        from postproc.plugins import default_registry
+        try:
+            default_registry().dialect("fanuc").pipeline(load_setup(machine))  # what a run does first
+        except ConfigError as err:
+            return [str(e) for e in getattr(err, "errors", [err])]
+        return []
+
+    found = run_bounded(refused, seconds=10)
+    assert found.failure is None, found.failure
+    assert found.value == [f"{machine}:3:1: error: pipeline: in/pipe.xml is {described}: a pipeline is read from a file"]

@@ -224,7 +224,10 @@ class CycleExpansion(Syntax):
             return
         if "CompoundMotion" not in block.sections:
             limit = UNBOUNDED if ctx is None else ctx.setup.limits.moves_per_block  # None: built outside a run
-            block.add(CompoundMotion(cycle.kind, self.items(cycle, limit)))
+            items = self.items(cycle, limit)
+            if ctx is not None:
+                ctx.moves_made += len(items)
+            block.add(CompoundMotion(cycle.kind, items))
 
     def expand(self, cycle: CannedCycle, limit: int = UNBOUNDED) -> tuple[list[Section], dict[str, float]]:
         """The items of the cycle and where the tool is when it ends; ``TooManyMoves`` when they would be

@@ -210,7 +210,7 @@ class CannedCycleResolveSyntax(Syntax):
             end[first], end[second], end[normal] = spot[first], spot[second], expansion.return_level(cycle)
         try:
             self._install(block, ctx, cycle, _LazyExpansion(expansion, cycle, memo.limit, fail, memo.code,
-                                                            memo.peck, None), end)
+                                                            memo.peck, None, ctx), end)
         except PostprocError:
             _drop_cycle_sections(block)
             raise
@@ -315,7 +315,7 @@ class CannedCycleResolveSyntax(Syntax):
         expansion, limit = self._by_kind[kind], ctx.setup.limits.moves_per_block
         repeat = next((k for k in repeat_letters if k in words), None)
 
-        self._install(block, ctx, cycle, _LazyExpansion(expansion, cycle, limit, fail, code, cw.peck, repeat))
+        self._install(block, ctx, cycle, _LazyExpansion(expansion, cycle, limit, fail, code, cw.peck, repeat, ctx))
         if active is not None:
             active.kind, active.words = kind, modal  # the initial level stays while a cycle is active
         else:
@@ -448,18 +448,20 @@ class _LazyExpansion:
     keeps every local of its function, the block too: a reference cycle per cycle block, which only the
     collector, paused while a program streams, would free)."""
 
-    __slots__ = ("expansion", "cycle", "limit", "fail", "code", "peck", "repeat")
+    __slots__ = ("expansion", "cycle", "limit", "fail", "code", "peck", "repeat", "ctx")
 
     def __init__(self, expansion: CycleExpansion, cycle: CannedCycle, limit: int, fail: _Failer, code: str,
-                 peck: str, repeat: str | None) -> None:
+                 peck: str, repeat: str | None, ctx: Context) -> None:
         self.expansion, self.cycle, self.limit, self.fail = expansion, cycle, limit, fail
-        self.code, self.peck, self.repeat = code, peck, repeat
+        self.code, self.peck, self.repeat, self.ctx = code, peck, repeat, ctx
 
     def __call__(self) -> list[Section]:
         try:
-            return self.expansion.items(self.cycle, self.limit)
+            items = self.expansion.items(self.cycle, self.limit)
         except TooManyMoves as err:
             raise self.too_many(err) from None
+        self.ctx.moves_made += len(items)
+        return items
 
     def too_many(self, err: TooManyMoves) -> PostprocError:
         """The bound on moves per block, located at the word that makes the moves (pecks or repeats)."""

@@ -10,7 +10,11 @@ Rules (each a choice where the contract is silent, and tested):
   is evaluated with the new values. A control block's other words (``G01 X10. M98 P2000``) run first.
 - ``Limits.loop_iterations`` bounds the total of loop iterations, jumps taken, returns to a start and
   calls (every repetition counts), so neither a loop nor a wide recursion can run forever;
-  ``Limits.call_depth`` bounds nesting.
+  ``Limits.call_depth`` bounds nesting. ``Limits.repeated_work`` bounds the work: the blocks run again
+  (the first run of each block is free) and the moves their expansions make downstream (counted in
+  ``Context.moves_made``, charged when the interpreter resumes after such a block), so a loop ends within
+  seconds whatever its iteration count or its body, and the error names the repetition (loop, jump,
+  return or call) that ran last.
 - A runtime error (division by zero, a missing label...) is reported at its block, with the call
   stack, and execution stops: what follows would rest on a value that does not exist.
 - A modal call (G66) runs after each block that has an axis word, except inside the called macro.
@@ -109,7 +113,8 @@ class Interpreter:
     before each call, loop iteration and jump taken (for a flattened program's reader)."""
 
     def __init__(self, store: ProgramStore, host: Host, variables: Variables, limits: Limits,
-                 report: "Reporter", annotate: bool = False, rules: SubprogramRules | None = None) -> None:
+                 report: "Reporter", annotate: bool = False, rules: SubprogramRules | None = None,
+                 counts: MoveCount | None = None) -> None:
         self.store = store
         self.host = host
         self.vars = variables
@@ -117,6 +122,15 @@ class Interpreter:
         self.report = report
         self.annotate = annotate
         self.budget = limits.loop_iterations
+        self.work = limits.repeated_work
+        """Blocks and moves left to run again (``Limits.repeated_work``)."""
+        self.counts: MoveCount = counts if counts is not None else _NO_MOVES
+        self.moves_seen = 0
+        """``counts.moves_made`` when the interpreter last looked."""
+        self.again = False
+        """The block run last had run before: the moves made since are repeated work."""
+        self.repeated: tuple[_Frame, Block, str] | None = None
+        """The last repetition spent (frame, block, what): the one the work bound names."""
         self.frames: list[_Frame] = []
         self.modal: tuple[ModalCall, dict[int, Value], int, Block] | None = None
         self.ended = False
@@ -147,7 +161,21 @@ class Interpreter:
                                frame, last, 1)
                 self._return(frame, frame.program.blocks[frame.end - 1] if frame.end else None, None, None)
                 continue
-            block = frame.program.blocks[frame.pc]
+            pc = frame.pc
+            program = frame.program
+            block = program.blocks[pc]
+            made = self.counts.moves_made
+            if made != self.moves_seen:
+                if self.again:
+                    self.work -= made - self.moves_seen
+                self.moves_seen = made
+            self.again = again = program.ran[pc] == 1
+            if again:
+                self.work -= 1
+            else:
+                program.ran[pc] = 1
+            if self.work < 0:
+                self._out_of_work(frame, block)
             try:
                 yield from self._step(frame, block)
             except EvalError as err:
@@ -248,7 +276,7 @@ class Interpreter:
             target = program.find_sequence(number, pos)
             if target is None:
                 raise ProgramError(self._missing_sequence(program, number, source_text(block)))
-            self._spend(block, "jump")
+            self._spend(block, "jump", back=target <= pos)
             yield from self._note(frame, block, "jump")
             frame.pc = target
         elif isinstance(control, GotoLabel):
@@ -258,7 +286,7 @@ class Interpreter:
             found = program.find_label(control.label, pos)
             if found is None:
                 raise ProgramError(f"'{source_text(block)}': no block labelled {control.label} in {program.file}")
-            self._spend(block, "jump")
+            self._spend(block, "jump", back=found <= pos)
             yield from self._note(frame, block, "jump")
             frame.pc = found
         elif isinstance(control, IfThen):
@@ -555,7 +583,22 @@ class Interpreter:
             raise EvalError(f"{what} cannot be negative ({value})")
         return value
 
-    def _spend(self, block: Block, what: str) -> None:
+    def _out_of_work(self, frame: _Frame, block: Block) -> None:
+        """Report the work bound (``Limits.repeated_work``), located at the repetition that ran last."""
+        n = self.limits.repeated_work
+        if self.repeated is not None:
+            frame, block, what = self.repeated
+            named = f"{what} '{source_text(block)}'"
+        else:  # nothing repeated yet: a guard (a block runs again only after a repetition)
+            named = f"'{source_text(block)}'"
+        self._fail(ProgramError(f"{named} repeats more than {n} blocks and moves in all (the set-up's bound on "
+                                f"work run again, <Limits repeatedWork=\"{n}\"/>)"), frame, block, 1)
+
+    def _spend(self, block: Block, what: str, back: bool = True) -> None:
+        """Count a repetition (``back``: it runs blocks again, so the work bound may name it; a jump
+        forward skips blocks)."""
+        if back:
+            self.repeated = (self.frames[-1], block, what)
         self.budget -= 1
         if self.budget < 0:
             n = self.limits.loop_iterations
@@ -585,6 +628,20 @@ class Interpreter:
         source = block.text or ""
         i = source.find(letter + text)
         return i + 1 if i >= 0 else 1
+
+
+class MoveCount(Protocol):
+    """Where the moves made downstream are counted (the run's ``Context``)."""
+
+    @property
+    def moves_made(self) -> int: ...
+
+
+class _NoMoves:
+    moves_made = 0
+
+
+_NO_MOVES = _NoMoves()
 
 
 class Reporter(Protocol):

@@ -191,6 +191,8 @@ class ProgramSyntax(Syntax):
         body.extend(rest)
         from .machine import Interpreter  # loaded only when a program computes
         from .store import Program, ProgramStore
+        if ctx.diagnostics.errors:
+            return  # a line was refused: what would run is not the program written, and nothing is written
         try:
             main = Program(ctx.file, body, self.is_program_end)
         except PostprocError as err:
@@ -203,7 +205,7 @@ class ProgramSyntax(Syntax):
         make: VariablesFactory = type(self).VARIABLES
         variables: Variables = make(lambda: increment(state.units))
         interpreter = Interpreter(store, self, variables, ctx.setup.limits, ctx.diagnostics.error, annotate=True,
-                                  rules=self.SUBPROGRAM_RULES)
+                                  rules=self.SUBPROGRAM_RULES, counts=ctx)
         yield from interpreter.run(start=len(prefix))
 
     def _reread(self, kept: deque[Kept], ctx: Context, first_line: int) -> list[Block]:

@@ -38,7 +38,7 @@ class Program:
     """One file's blocks, indexed. ``main_end`` is the position after the main program's end block
     (``len(blocks)`` when it has none); blocks past it run only as subprograms."""
 
-    __slots__ = ("file", "blocks", "sequence", "labels", "pairs", "chains", "subs", "main_end", "first_line")
+    __slots__ = ("file", "blocks", "sequence", "labels", "pairs", "chains", "subs", "main_end", "first_line", "ran")
 
     def __init__(self, file: str, blocks: list[Block], is_end: Callable[[Block], bool]) -> None:
         self.file = file
@@ -55,6 +55,8 @@ class Program:
         """Subprogram name -> (position of its first body block, position of its end)."""
         self.main_end = len(blocks)
         self.first_line = blocks[0].line if blocks else 1
+        self.ran = bytearray(len(blocks))
+        """1 at the position of each block that has run (a block run again is work the interpreter counts)."""
         self._index(is_end)
 
     def _error(self, block: Block, message: str) -> ProgramError:

@@ -20,7 +20,7 @@ from postproc.ir import Block, CompoundMotion, Feed, Motion, Section
 from postproc.state import PLANE_AXES
 
 from .geometry import Hop, first_point, pattern_hops
-from .section import HolePattern
+from .section import HolePattern, total_points
 
 
 def resolve_hole_pattern(block: Block, pattern: HolePattern, ctx: Context, name: str, at: Location) -> None:
@@ -52,6 +52,7 @@ def resolve_hole_pattern(block: Block, pattern: HolePattern, ctx: Context, name:
     except ValueError as err:
         raise ProgramError(f"{name}: {err}", at) from None
     pattern.split = tuple(split)
+    ctx.moves_made += len(items)
     block.add(pattern)
     block.add(CompoundMotion(cycle.kind, items))
     for axis, value in end.items():
@@ -62,7 +63,14 @@ def expand_pattern(pattern: HolePattern, cycle: CannedCycle, expansion: CycleExp
                    limit: int) -> tuple[list[Section], list[int], dict[str, float]]:
     """(items, items per machined point, where the tool ends): for each machined point after point 1,
     the move that reaches it (none for 'rapid': the cycle's own positioning is that rapid) and the
-    cycle there. ``TooManyMoves`` beyond ``limit`` items."""
+    cycle there. ``TooManyMoves`` beyond ``limit`` items: before any point is made when the points alone
+    need more (a count of a hundred million makes neither a list of its points nor a move), else at the
+    point that passes it."""
+    points = total_points(pattern)
+    machined = points - 1 - len(frozenset(pattern.skip))
+    if machined * expansion.least_moves_per_hole(cycle) > limit:
+        raise TooManyMoves(f"the pattern machines {machined} points, which make more than {limit} moves in one "
+                           "block (the set-up's <Limits movesPerBlock>)", "repeat")
     first, second, normal = PLANE_AXES[pattern.plane]
     pos = dict(pattern.start)
     feed = cycle.feed
@@ -82,11 +90,15 @@ def expand_pattern(pattern: HolePattern, cycle: CannedCycle, expansion: CycleExp
                 feed = cycle.feed
         here = cycle_at(pattern, cycle, pos, hop.point, previous)
         previous = hop.point
-        holes, end = expansion.expand(here, max(limit - len(items) - len(mine), 0))
+        left = limit - len(items) - len(mine)
+        try:
+            holes, end = expansion.expand(here, max(left, 0))
+        except TooManyMoves:  # its message would count only this point's moves against what is left
+            holes = None
+        if holes is None or len(holes) > left:
+            raise TooManyMoves(f"the pattern makes more than {limit} moves in one block by its point {hop.number} "
+                               f"of {points} (the set-up's <Limits movesPerBlock>)", "repeat")
         mine.extend(holes)
-        if len(items) + len(mine) > limit:
-            raise TooManyMoves(f"the pattern makes more than {limit} moves in one block (the set-up's "
-                               "<Limits movesPerBlock>)", "repeat")
         items.extend(mine)
         split.append(len(mine))
         pos = dict(end)

@@ -106,6 +106,7 @@ class LatheCycleSyntax(Syntax):
         if len(moves) > limit:
             raise ProgramError(f"{code} makes {len(moves)} moves, more than <Limits movesPerBlock> ({limit})",
                                ctx.at(block))
+        ctx.moves_made += len(moves)
         block.add(CompoundMotion(cycle.kind, to_sections(moves, start, ctx)))
         if moves:
             last = moves[-1]
