@@ -9,7 +9,8 @@ characters, and ``seal`` then, knowing the target's comment syntax (``postproc.c
 * makes each marked text safe inside a comment (``CommentSyntax.inside``: no parenthesis, line break
   or character the controller acts on);
 * checks that it stands inside a comment of the written line, and not one the controller acts on
-  (LinuxCNC's ``(MSG,`` ``(LOGOPEN,`` ...): anywhere else it is a located ``ConfigError``;
+  (LinuxCNC's ``(MSG,`` ``(LOGOPEN,`` ...): anywhere else it is a located ``ConfigError``; a comment
+  that acts only because of its value gets a ``-`` at its head and stays a comment;
 * removes the marks.
 
 A plain number (``T{{ tool }}``, ``{{ value|int }}``: digits, a sign, a decimal point) is no text and
@@ -88,27 +89,50 @@ def seal(name: str, text: str, comments: CommentSyntax | None, where: Location) 
         spans.append((start, size))
     sealed = "".join(out)
     if comments is not None:
-        _check_places(name, sealed, spans, comments, where)
+        sealed = _check_places(name, sealed, spans, comments, where)
     return sealed
 
 
 def _check_places(name: str, text: str, spans: list[tuple[int, int]], comments: CommentSyntax,
-                  where: Location) -> None:
-    """Every span lies inside one passive comment of its line."""
+                  where: Location) -> str:
+    """Every span lies inside one comment of its line, and one the controller does not act on: a comment
+    that acts only because of a value (``({{ name }})`` with the name ``MSG, hi``) gets a ``-`` at its head,
+    as a comment from another dialect does (``CommentSyntax.text``); one that acts whatever the value is
+    refused. Returns ``text`` with those heads."""
     line_start = 0
-    lines = text.splitlines(keepends=True)
     found: list[tuple[int, int, bool]] = []
-    for line in lines:
+    for line in text.splitlines(keepends=True):
         found.extend((line_start + a, line_start + b, passive) for a, b, passive in comments.comments(line))
         line_start += len(line)
+    heads: set[int] = set()
     for a, b in spans:
         if a == b:
             continue  # an empty value writes nothing
         home = next((c for c in found if c[0] < a and b <= c[1]), None)
-        if home is None or not home[2]:
+        if home is not None and not home[2] and not _acts_without_values(text, home, spans, comments):
+            heads.add(home[0] + 1)
+        elif home is None or not home[2]:
             row = text.count("\n", 0, a) + 1
             shown = text[a:b] if b - a <= 40 else text[a:a + 37] + "..."
             place = "outside a comment" if home is None else "inside a comment the controller acts on"
             raise ConfigError(f"template {name} writes the value {shown!r} {place} (output line {row}): "
                               "values (file names, --define, set-up and program text) are written only "
                               "inside a plain comment, or as a plain number (|int, |float)", where)
+    for at in sorted(heads, reverse=True):
+        text = text[:at] + "-" + text[at:]
+    return text
+
+
+def _acts_without_values(text: str, comment: tuple[int, int, bool], spans: list[tuple[int, int]],
+                         comments: CommentSyntax) -> bool:
+    """The comment acts with each value in it written as ``_``: the template wrote an active comment."""
+    a, b, _ = comment
+    inner = [(x, y) for x, y in spans if a < x and y <= b]
+    parts: list[str] = []
+    at = a
+    for x, y in inner:
+        parts.append(text[at:x] + "_")
+        at = y
+    parts.append(text[at:b])
+    body = "".join(parts)
+    return not any(passive for _, _, passive in comments.comments(body)[:1])

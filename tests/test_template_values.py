@@ -113,9 +113,14 @@ def test_fagor_takes_values_only_in_semicolon_comments(tmp_path: Path) -> None:
 
 
 def test_a_value_may_not_make_a_linuxcnc_comment_act(tmp_path: Path) -> None:
+    """A comment that acts only because of its value gets a '-' at its head; a value in the template's own
+    active comment is refused; a value in a ';' comment is inert."""
+    text = _translate(_setup(tmp_path, "({{ job }})\n( {{ job }} AND MORE)"), "linuxcnc", {"job": "LOGOPEN,/tmp/x"})
+    assert text.startswith("(-LOGOPEN,/tmp/x)\n(- LOGOPEN,/tmp/x AND MORE)\n")
+    if rs274_available():
+        assert not any("LOGOPEN(" in call for call in run_rs274(text))
     with pytest.raises(ConfigError, match="inside a comment the controller acts on"):
-        _translate(_setup(tmp_path, "({{ job }})"), "linuxcnc", {"job": "LOGOPEN,/tmp/x.log"})
-    # the template's own active comment stands, and a value in a ';' comment is inert
+        _translate(_setup(tmp_path, "(MSG, JOB {{ job }})"), "linuxcnc", {"job": "1"})
     text = _translate(_setup(tmp_path, "(MSG, posted)\n; {{ job }}"), "linuxcnc", {"job": "MSG, x"})
     assert text.startswith("(MSG, posted)\n; MSG, x\n")
 
@@ -141,14 +146,14 @@ def test_grbl_writes_no_real_time_character_from_grbl_itself(tmp_path: Path) -> 
     assert out.getvalue() == "G21 G90\nG0 X1 (stop - now_)\nM30\n"
 
 
-@settings(max_examples=200, deadline=None)
-@given(value=st.text(max_size=30), comments=st.sampled_from([
-    CommentSyntax(), CommentSyntax(nested=True, semicolon=True), CommentSyntax(parens=False, semicolon=True)]))
-def test_a_sealed_value_is_inside_one_comment(value: str, comments: CommentSyntax) -> None:
+@settings(max_examples=300, deadline=None)
+@given(value=st.text(max_size=30), head=st.sampled_from(["", "V ", " "]), comments=st.sampled_from([
+    CommentSyntax(), CommentSyntax(nested=True, semicolon=True), CommentSyntax(parens=False, semicolon=True),
+    CommentSyntax(semicolon=True, active=re.compile(r"[ \t]*(MSG|LOGOPEN)\b", re.IGNORECASE))]))
+def test_a_sealed_value_is_inside_one_passive_comment(value: str, head: str, comments: CommentSyntax) -> None:
     """Property: whatever the value, the sealed line is one comment from its first character to its end
-    (nothing outside it), and its text is the value's with parentheses bracketed and breaks as spaces."""
-    head = "(V " if comments.parens else ";V "
-    rendered = head + mark(value) + (")" if comments.parens else "")
+    (nothing outside it, no line break), and not one the controller acts on."""
+    rendered = ("(" if comments.parens else ";") + head + mark(value) + (")" if comments.parens else "")
     line = seal("header", rendered, comments, Location("m.xml", 4, 1))
     assert "\n" not in line and "\r" not in line
     assert comments.comments(line) == [(0, len(line), True)]
