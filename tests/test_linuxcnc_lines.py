@@ -1,4 +1,4 @@
-"""rs274 reads at most 252 characters a line ("Command too long" beyond, found by the "templates" fuzz kind with a
+"""rs274 reads at most 252 bytes a line ("Command too long" beyond, found by the "templates" fuzz kind with a
 long ``--define`` value in a header comment): a longer line has its comment shortened with a warning, or is
 refused with a located error; no written line is longer."""
 
@@ -32,7 +32,7 @@ def test_a_long_comment_is_shortened_to_what_rs274_reads() -> None:
     lines = text.splitlines()
     assert lines[1] == "(" + "A" * (LINE_LENGTH - 2) + ")" and len(lines[2]) == LINE_LENGTH
     assert lines[2].startswith("G0 X1. Y2. (BBB") and lines[2].endswith("B)")
-    assert "in.nc:2:1: warning: a line longer than the 252 characters LinuxCNC reads" in warnings
+    assert "in.nc:2:1: warning: a line longer than the 252 bytes LinuxCNC reads" in warnings
     assert linuxcnc_problems(text) == []
 
 
@@ -50,5 +50,13 @@ def test_a_line_whose_code_is_too_long_is_refused_at_the_template(tmp_path: Path
                     f"    <Header>(A)\nG4{' ' * 260}P1</Header>\n  </Templates>\n</MachineSetup>\n")
     with pytest.raises(ErrorList) as info:
         _translate("G21 G90\nG0 X1.\nM30\n", load_setup(path))
-    assert str(info.value).startswith(f"{path}:4:1: error: the line is 264 characters long, more than the 252 "
+    assert str(info.value).startswith(f"{path}:4:1: error: the line is 264 bytes long, more than the 252 "
                                       "LinuxCNC reads")
+
+
+@pytest.mark.skipif(not available(), reason="LinuxCNC's rs274 is not installed")
+def test_the_limit_counts_bytes() -> None:
+    """rs274 reads bytes: 200 characters of two bytes each are 400 (found by the fuzz kind)."""
+    text, _ = _translate("G21 G90\n(" + "\u00e9" * 200 + ")\nG0 X1.\nM30\n")
+    assert text.splitlines()[1] == "(" + "\u00e9" * 125 + ")"  # 252 bytes
+    assert linuxcnc_problems(text) == []

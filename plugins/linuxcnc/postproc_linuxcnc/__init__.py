@@ -61,7 +61,7 @@ class Linuxcnc(Dialect):
     COMMENTS = COMMENTS
     """``( )`` and ``;`` comments; ``(MSG,`` ``(LOGOPEN,`` ... act (``active_comments.ACTIVE``)."""
     LINE_RULE = Lazy[LineRule](".lines:LINES")
-    """rs274 reads at most 252 characters a line: a longer comment is shortened (``lines.py``)."""
+    """rs274 reads at most 252 bytes a line: a longer comment is shortened (``lines.py``)."""
     LOWERING = (stops_after_motion,)
     """A moving block's spindle stop and coolant off go in a block of their own after it: LinuxCNC runs
     them before the motion (``postproc.rs274.order_of_execution``)."""
