@@ -11,7 +11,9 @@ import abc
 from pathlib import Path
 from typing import Callable, ClassVar, Generic, Iterable, Iterator, TypeVar, cast
 
+from .comments import CommentSyntax
 from .errors import Diagnostics
+from .line_format import LineRule
 from .ir import Block
 from .setup import MachineSetup
 from .context import Context
@@ -164,6 +166,14 @@ class Dialect:
     LOWER_CASE: ClassVar[bool] = False
     """The reader takes lower-case addresses (``g1 x10``): the set-up's ``<Output case="lower">`` is
     refused otherwise."""
+    COMMENTS: ClassVar[CommentSyntax] = CommentSyntax(parens=False)
+    """How the controller writes comments (``postproc.comments``): what text is safe inside one, and where
+    a line's comments are. The values a set-up template writes stand only inside a comment
+    (``postproc.template_values``); the default knows no comment, so a dialect that declares none has
+    every such value refused."""
+    LINE_RULE: ClassVar[LineRule | None] = None
+    """Rules every written line obeys on this controller (``postproc.line_format.LineRule``: grbl's line
+    buffer and real-time characters), applied to whatever the writer emits; None: no rule."""
     LATHE_ONE_BLOCK: ClassVar[bool] = False
     """The control reads the one-block forms ``G71 P Q U W D F`` and ``G76 X Z I K D F A P`` (Fanuc
     10/11/15-T) when the set-up's ``latheCycleFormat`` says so; without it every cycle has two blocks."""
@@ -178,7 +188,7 @@ class Dialect:
     def capabilities(cls) -> dict[str, object]:
         """The capability table: every UPPER_CASE attribute that describes the controller."""
         skip = {"NAME", "DESCRIPTION", "READER", "WRITER", "PIPELINE_FILE", "LATHE_PIPELINE_FILE", "CYCLE_WORDS",
-                "LOWERING"}
+                "LOWERING", "COMMENTS", "LINE_RULE"}
         table: dict[str, object] = {}
         for klass in reversed(cls.__mro__):
             for key, value in vars(klass).items():

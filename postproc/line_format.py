@@ -15,12 +15,16 @@ emits with no step per block. Settings are read once per translation.
   comments keep their text.
 * ``lineEnding``: ``lf`` or ``crlf`` for every line (``keep``: as read, LF for generated lines).
 * ``maxLineLength``: a longer line (without its line ending) is a located error; nothing is split.
+
+The target's own rules for a line (``Dialect.LINE_RULE``: grbl's line buffer and real-time characters)
+apply here too, to every line written - blocks, templates' output, whatever a writer emits - so no path
+around them exists: a line is rewritten as the rule says (with a warning), or refused, located.
 """
 
 from __future__ import annotations
 
 import re
-from typing import TYPE_CHECKING, Callable
+from typing import TYPE_CHECKING, Callable, Protocol
 
 from .control import CONTROL
 from .errors import ConfigError, Location, ProgramError
@@ -38,13 +42,30 @@ statements and labels, macro assignments stay as written)."""
 _COMMENT = re.compile(r"\([^)]*\)?|;.*")
 
 
+class LineRule(Protocol):
+    """A controller's rules for every line written to it (``Dialect.LINE_RULE``)."""
+
+    def fits(self, text: str) -> bool:
+        """Every line of ``text`` passes as it is (a quick test of the whole; False: ``fit`` each line)."""
+
+    def fit(self, line: str, eol: str) -> tuple[str, str | None, str | None]:
+        """``line`` (without its end ``eol``) as the controller must receive it, a warning when that changed
+        its text, and why the line cannot be sent at all (None: it can)."""
+
+
 class LineFormat:
     """One translation's line formatting, wrapped around the writer's ``emit``."""
 
-    def __init__(self, ctx: "Context", target: str | None, lower_case: bool) -> None:
+    def __init__(self, ctx: "Context", target: str | None, lower_case: bool, rule: LineRule | None = None) -> None:
         """``target``: the dialect written (None: the source's own); ``lower_case``: its reader takes
-        lower-case addresses (the dialect's ``LOWER_CASE``)."""
+        lower-case addresses (the dialect's ``LOWER_CASE``); ``rule``: its ``LINE_RULE``."""
         out = ctx.setup.output
+        self.rule = rule
+        self.warned = False
+        """The rule's warning has been given (once a run)."""
+        self.formats = not (out.block_numbers == "keep" and out.case == "keep" and out.line_ending == "keep"
+                            and not out.max_line_length)
+        """The set-up asks for a format (otherwise only the rule applies)."""
         self.ctx = ctx
         self.mode = out.block_numbers
         self.start = out.renumber_start or out.renumber_step
@@ -62,19 +83,30 @@ class LineFormat:
                               Location(ctx.setup.source or "<set-up>", 1, 1))
 
     @classmethod
-    def for_run(cls, ctx: "Context", target: str | None, lower_case: bool) -> "LineFormat | None":
+    def for_run(cls, ctx: "Context", target: str | None, lower_case: bool,
+                rule: LineRule | None = None) -> "LineFormat | None":
         out = ctx.setup.output
         if (out.block_numbers == "keep" and out.case == "keep" and out.line_ending == "keep"
-                and not out.max_line_length):
+                and not out.max_line_length and rule is None):
             return None
-        return cls(ctx, target, lower_case)
+        return cls(ctx, target, lower_case, rule)
 
     def wrap(self, emit: Callable[[str], object]) -> Callable[[str], object]:
+        rule = self.rule
+        if rule is not None and not self.formats:  # only the target's rule: most text passes its quick test
+            fits = rule.fits
+            format_ = self.format
+
+            def ruled(text: str) -> object:
+                return emit(text if fits(text) else format_(text))
+            return ruled
+
         def formatted(text: str) -> object:
             return emit(self.format(text))
         return formatted
 
     def format(self, text: str) -> str:
+        rule = self.rule
         block = self.block
         if block is not None and self.mode != "keep":
             control = block.sections.get(CONTROL)
@@ -91,6 +123,8 @@ class LineFormat:
                 body, number_first = self._number(body, number_first)
             if self.case != "keep":
                 body = _recase(body, self.case)
+            if rule is not None:
+                body = self._ruled(rule, body, self.eol if self.eol is not None and eol else eol)
             if self.max_length and len(body) > self.max_length:
                 self._error(f"a written line is {len(body)} characters long, more than <Output maxLineLength="
                             f"\"{self.max_length}\">: {body[:40]}...")
@@ -124,13 +158,23 @@ class LineFormat:
             self.next = self.start
         return (f"{slash} " if slash else "") + text + (" " + head if head else ""), self.mode == "all"
 
+    def _ruled(self, rule: LineRule, body: str, eol: str) -> str:
+        line, warning, problem = rule.fit(body, eol)
+        if problem is not None:
+            self._error(problem)
+        elif warning is not None and not self.warned:
+            self.warned = True
+            self.ctx.diagnostics.warn(warning, self._where())
+        return line
+
     def _error(self, message: str) -> None:
+        self.ctx.diagnostics.error(ProgramError(message, self._where()))
+
+    def _where(self) -> Location:
         if self.block is not None:
-            where = self.ctx.at(self.block)
-        else:
-            setup = self.ctx.setup
-            where = Location(setup.source or "<set-up>", setup.template_lines.get(self.template or "", 1), 1)
-        self.ctx.diagnostics.error(ProgramError(message, where))
+            return self.ctx.at(self.block)
+        setup = self.ctx.setup
+        return Location(setup.source or "<set-up>", setup.template_lines.get(self.template or "", 1), 1)
 
 
 def _recase(body: str, case: str) -> str:

@@ -165,7 +165,8 @@ class Sequences:
         setup = self.ctx.setup
         first = setup.template_lines.get(name, 1)
         file = setup.template_file(name)
-        out = render(name, text, self.variables(extra), file, first)
+        comments = self.target.COMMENTS if self.target is not None else None
+        out = render(name, text, self.variables(extra), file, first, comments)
         if out and self.target is not None:
             check_output(name, out, self.target, setup, Location(file or "<set-up>", first, 1),
                          self.state if name != "header" else None, name not in ("footer", "program_end"))
@@ -320,7 +321,8 @@ def check_templates(setup: "MachineSetup", defines: dict[str, str] | None = None
         first = setup.template_lines.get(name, 1)
         file = setup.template_file(name)
         try:
-            outputs = render_all(name, text, sample_variables(setup, name, defines), file, first)
+            outputs = render_all(name, text, sample_variables(setup, name, defines), file, first,
+                                 target.COMMENTS if target is not None else None)
             if target is not None:
                 for out in outputs:
                     if out:

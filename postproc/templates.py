@@ -6,6 +6,9 @@ in a child process with bounded memory and time (``postproc.bounded``): whatever
 (``'x'|center(10**9)``, a doubling loop, ``1/0``, ``{% include %}``, a recursive macro), it ends as a
 ``ConfigError`` at its line in the set-up file. ``config check`` renders every template with sample
 values, so a template that would fail at translation time fails there first.
+
+What ``{{ ... }}`` writes is a value, never code: it is marked while rendering and sealed into a comment
+of the target afterwards (``postproc.template_values``).
 """
 
 from __future__ import annotations
@@ -17,7 +20,9 @@ from jinja2.exceptions import SecurityError
 from jinja2.sandbox import SandboxedEnvironment
 
 from .bounded import MEMORY_LIMIT, run_bounded
+from .comments import CommentSyntax
 from .errors import ConfigError, Location
+from .template_values import CLOSE, OPEN, mark, scrub, seal
 
 MAX_OUTPUT = 1 << 20
 MAX_EXPONENT = 256
@@ -41,18 +46,25 @@ class _BoundedSandbox(SandboxedEnvironment):
         return super().call_binop(context, operator, left, right)
 
 
-_ENV = _BoundedSandbox(undefined=StrictUndefined, autoescape=False, keep_trailing_newline=True)
+_ENV = _BoundedSandbox(undefined=StrictUndefined, autoescape=False, keep_trailing_newline=True, finalize=mark)
 
 
-def render(name: str, text: str, variables: dict[str, Any], source: str | None, first_line: int = 1) -> str:
-    """Render one template. ``first_line`` is the line of the set-up file the template text starts on."""
-    return render_all(name, text, [variables], source, first_line)[0]
+def render(name: str, text: str, variables: dict[str, Any], source: str | None, first_line: int = 1,
+           comments: CommentSyntax | None = None) -> str:
+    """Render one template. ``first_line`` is the line of the set-up file the template text starts on;
+    ``comments`` the target's comment syntax, where the values written must stand (None: no target
+    known, values are made safe but not placed)."""
+    return render_all(name, text, [variables], source, first_line, comments)[0]
 
 
 def render_all(name: str, text: str, variable_sets: list[dict[str, Any]], source: str | None,
-                first_line: int) -> list[str]:
+               first_line: int, comments: CommentSyntax | None = None) -> list[str]:
     """Render ``text`` once per variable set in one bounded child; the first failure is raised."""
     where = source or "<set-up>"
+    if OPEN in text or CLOSE in text:
+        raise ConfigError(f"template {name} holds the private-use character U+E000 or U+E001, which "
+                          "postproc reserves", Location(where, first_line, 1))
+    variable_sets = [scrub(v) for v in variable_sets]
     outcome = run_bounded(lambda: [_render_one(text, v) for v in variable_sets], TIME_LIMIT)
     if outcome.failure == "time":
         raise ConfigError(f"template {name} ran longer than {TIME_LIMIT:g} s", Location(where, first_line, 1))
@@ -64,7 +76,7 @@ def render_all(name: str, text: str, variable_sets: list[dict[str, Any]], source
         if "error" in each:
             raise ConfigError(f"template {name}{each['error']}",
                               Location(where, first_line + (each["line"] or 1) - 1, 1))
-        results.append(each["text"])
+        results.append(seal(name, each["text"], comments, Location(where, first_line, 1)))
     return results
 
 

@@ -90,7 +90,7 @@ class Writer(abc.ABC):
         emit = out.write if output_map is None else output_map.writer(out)
         target = self.target
         line_format = LineFormat.for_run(self.ctx, None if target is None else target.NAME,
-                                         target is None or target.LOWER_CASE)
+                                         target is None or target.LOWER_CASE, getattr(target, "LINE_RULE", None))
         if line_format is not None:
             emit = line_format.wrap(emit)
         generated = sequences.per_block

@@ -238,7 +238,7 @@ def test_f_in_a_unit_changing_block_is_in_the_new_units() -> None:
 
 def test_written_text_is_checked_for_every_character_grbl_acts_on() -> None:
     """``_plain_ascii`` (a byte translation) says what ``_REALTIME`` says, for every character in a line."""
-    from postproc_grbl.writer import _REALTIME, _plain_ascii
+    from postproc_grbl.text import _REALTIME, plain_ascii as _plain_ascii
     for code in range(0x180):
         text = f"G1 X1.\n(A{chr(code)}B)\r\n"
         assert _plain_ascii(text) == (text.isascii() and not _REALTIME.search(text)), hex(code)

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import subprocess
+import sys
 from pathlib import Path
 
 import pytest
@@ -10,7 +12,7 @@ from postproc.errors import ConfigError
 from postproc.setup import MachineSetup, Templates, load_setup
 from postproc.bounded import MEMORY_LIMIT, _mapped_bytes, run_bounded
 from postproc.sequences import check_templates, sample_variables
-from postproc.templates import MAX_OUTPUT, render
+from postproc.templates import MAX_OUTPUT, TIME_LIMIT, render
 
 ROOT = Path(__file__).resolve().parents[1]
 DECLARATION = "<?xml version='1.0' encoding='UTF-8'?>\n"
@@ -222,3 +224,39 @@ def test_sample_values_cover_every_variable_the_writer_passes() -> None:
     assert {v["units"] for v in sample_variables(MachineSetup())} == {"mm", "inch"}
     block_names = names | {"tool", "previous_tool", "operation", "line", "name", "first_use"}
     assert all(set(v) == block_names for v in sample_variables(MachineSetup(), "tool_change"))
+
+
+# -- every command bounds its rendering (issue 31, item 11) -------------------------------------------------
+
+_MEASURED = """
+import resource, subprocess, sys, time
+start = time.monotonic()
+done = subprocess.run([sys.executable, "-m", "postproc", *sys.argv[1:]], capture_output=True, text=True)
+print(done.returncode, time.monotonic() - start, resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss * 1024)
+print(done.stderr, end="")
+"""
+"""Runs a postproc command and reports its status, seconds and the peak resident set of it and its children."""
+
+
+@pytest.mark.parametrize("command", ["translate", "batch", "check"])
+def test_every_command_renders_within_the_bounds(tmp_path: Path, command: str) -> None:
+    """``config check`` stopped ``'x'|center(10**9)`` at the bound; ``translate`` was reported to take 3 GB and
+    30 s first. Measured from outside: the command's whole process tree, not the child alone."""
+    machine = tmp_path / "m.xml"
+    machine.write_text(DECLARATION + '<MachineSetup name="m">\n  <Templates>\n'
+                       "    <Header>(A)\n{{ 'x'|center(10**9) }}</Header>\n  </Templates>\n</MachineSetup>\n")
+    programs = tmp_path / "in"
+    programs.mkdir()
+    for name in ("a.nc", "b.nc"):
+        (programs / name).write_text("G0 X1. Y2.\n")
+    args = {"translate": ["translate", programs / "a.nc", "--from", "fanuc", "--to", "fanuc", "--machine", machine],
+            "batch": ["translate", programs, "--from", "fanuc", "--to", "fanuc", "--machine", machine, "-j", "2",
+                      "-o", tmp_path / "out"],
+            "check": ["config", "check", machine]}[command]
+    done = subprocess.run([sys.executable, "-c", _MEASURED, *map(str, args)], capture_output=True, text=True,
+                          cwd=ROOT, timeout=120)
+    status, seconds, peak = done.stdout.splitlines()[0].split()
+    assert int(status) == 1
+    assert f"{machine}:5:1: error: template header{MIB}" in done.stdout
+    assert float(seconds) < TIME_LIMIT + 10
+    assert int(peak) < MEMORY_LIMIT + (256 << 20)

@@ -12,6 +12,7 @@ from __future__ import annotations
 from typing import Callable
 
 from postproc.context import Context
+from postproc.comments import CommentSyntax
 from postproc.dialect import Dialect, Lazy, Reader
 from postproc.errors import Diagnostics
 from postproc.hookspecs import hookimpl
@@ -47,6 +48,9 @@ class Fagor(Dialect):
     SPINDLE_ORIENTATION = False
     """No confirmed 8070 oriented spindle stop: M19 [?] is written only when the set-up's
     ``<Cycles orientation="m19"/>`` asks for it."""
+    COMMENTS = CommentSyntax(parens=False, semicolon=True)
+    """``;`` to the end of the block, as the writer writes comments; ``( )`` is not confirmed as a comment on
+    the 8070 [?: DIALECTS.md 1.4], so no value is written between parentheses."""
     CUTTER_COMPENSATION = True
     """G40/G41/G42."""
     TOOL_LENGTH_OFFSET = False

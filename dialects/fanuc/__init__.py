@@ -6,6 +6,7 @@ from __future__ import annotations
 
 from typing import Callable
 
+from postproc.comments import CommentSyntax
 from postproc.dialect import Dialect, Lazy, Reader
 from postproc.setup import MachineSetup
 from postproc.syntax import Pipeline
@@ -43,6 +44,9 @@ class Fanuc(Dialect):
     """``O1001``: the number the control stores the program under."""
     FAMILY = "fanuc"
     """Machine builders' codes (``machine_codes``) pass verbatim between Fanuc-family controls."""
+    COMMENTS = CommentSyntax(parens=True, nested=False, semicolon=False)
+    """``( )`` control-out/control-in, no nesting; ``;`` is the end of block shown on screen, no comment
+    [K: DIALECTS.md 1.1]."""
     PROGRAMS = True
     """Custom Macro B variables, expressions, IF/GOTO, WHILE, M98/G65 subprograms."""
     MACHINE_TYPES = frozenset({"mill", "lathe"})

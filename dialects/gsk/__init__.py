@@ -12,6 +12,7 @@ from __future__ import annotations
 
 from typing import Callable
 
+from postproc.comments import CommentSyntax
 from postproc.dialect import Dialect, Lazy, Reader
 from postproc.hookspecs import hookimpl
 from postproc.setup import MachineSetup
@@ -38,6 +39,8 @@ class Gsk(Dialect):
     """The 980TDc starts in G98 (feed per minute)."""
     SPINDLE_ORIENTATION = False
     """No M19 on the 980TDc."""
+    COMMENTS = CommentSyntax(parens=True, nested=False, semicolon=False)
+    """``( )`` comments, as Fanuc's [K?: DIALECTS.md 1.2, to confirm with the TDc manual]."""
     TOOL_LENGTH_OFFSET = False
     """Tool offsets come with T (T0101), not G43 H."""
     TOOL_CHANGER = False

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from typing import Callable
 
+from postproc.comments import CommentSyntax
 from postproc.dialect import Dialect, Lazy, Reader
 from postproc.hookspecs import hookimpl
 from postproc.rs274.order_of_execution import stops_before_motion
@@ -37,6 +38,9 @@ class Isg(Dialect):
     """G40/G41/G42."""
     TOOL_LENGTH_OFFSET = False
     """ISG selects the tool's offsets with D, not Fanuc's G43 H: not modelled, so refused."""
+    COMMENTS = CommentSyntax(parens=True, nested=True, semicolon=True)
+    """``( )`` comments nest, ``;`` runs to the end of the block [V: DIALECTS.md 1.3]; a value in a
+    ``#COMMENT BEGIN`` ... ``#COMMENT END`` block is not recognised as commented (refused: the safe side)."""
     PROGRAMS = True
     """P parameters, expressions, $IF/$SWITCH/$FOR/$WHILE/$DO/$REPEAT, $GOTO, %L/LL and L subroutines."""
     LOWERING = (stops_before_motion,)

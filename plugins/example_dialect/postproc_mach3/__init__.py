@@ -17,6 +17,7 @@ from __future__ import annotations
 
 from typing import Any, Callable, ClassVar
 
+from postproc.comments import CommentSyntax
 from postproc.dialect import Dialect, Lazy, Reader
 from postproc.expr import Expr
 from postproc.hookspecs import hookimpl
@@ -118,6 +119,9 @@ class Mach3(Dialect):
     peck cycle from a control with another clearance (LinuxCNC's fixed 0.254 mm) is expanded."""
     CYCLE_SEMANTICS = "rs274"
     """The cycles move by the RS274/NGC rules (``postproc.cycles.semantics``)."""
+    COMMENTS = CommentSyntax(parens=True, nested=False, semicolon=True)
+    """``( )`` and ``;`` comments, as RS274/NGC [K: Mach3 G-code manual]; a template's values stand only
+    inside them (``postproc.template_values``)."""
     SPINDLE_ORIENTATION = False
     """No M19: cycles that need an oriented stop follow the set-up's ``Cycles orientation``."""
     STOPS_BEFORE_MOTION = True

@@ -18,7 +18,9 @@ stored commit 0b5604b) and the "Grbl v1.1 Commands" wiki page (github.com/gnea/g
   lowering expands them: NATIVE_CYCLES is empty), no G41/G42, **no G43 H** (no tool table: an
   ``UnsupportedError``, which is correct), no G95, no H, D or Q words, no parameters or expressions.
 * T is read and ignored. ``( )`` and ``;`` comments are stripped by the protocol layer; ``/`` block
-  delete is ignored (the block runs); ``%`` is not supported.
+  delete is ignored (the block runs); ``%`` is not supported. A line keeps at most 79 characters
+  (``LINE_BUFFER_SIZE`` 80, without spaces and comments), and ``?``, ``!``, ``~`` and bytes above 0x7F
+  are real-time commands wherever they stand (``text.py``).
 
 G74/G84 expand with M4/M3 spindle reversal (floating-holder tapping); G76/G87 need an oriented stop and
 fail unless the set-up's ``<Cycles orientation="stop"|"m19">`` says how to stand in for it.
@@ -28,8 +30,10 @@ from __future__ import annotations
 
 from typing import Callable, ClassVar
 
+from postproc.comments import CommentSyntax
 from postproc.dialect import Dialect, Lazy, Reader
 from postproc.hookspecs import hookimpl
+from postproc.line_format import LineRule
 from postproc.rs274.cycle_words import rs274_cycle_words
 from postproc.setup import MachineSetup
 from postproc.syntax import Pipeline
@@ -69,6 +73,11 @@ class Grbl(Dialect):
     """No tool table: G43 H is refused (grbl's own G43.1 takes the offset value)."""
     DWELL_UNIT = "seconds"
     """G4 P is in seconds."""
+    COMMENTS = Lazy[CommentSyntax](".text:COMMENTS")
+    """``( )`` and ``;`` comments, without a real-time character inside (``text.py``)."""
+    LINE_RULE = Lazy[LineRule](".text:LINES")
+    """Every line written is ASCII without real-time characters and keeps at most 79 characters
+    (``text.py``: grbl's ``serial.c`` and ``protocol.c``)."""
 
     @classmethod
     def python_pipeline(cls, setup: MachineSetup) -> Pipeline:

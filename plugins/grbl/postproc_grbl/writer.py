@@ -14,10 +14,10 @@ pause, G49 before motion, full circles) are the lean-controller lowering steps g
   no cycle to cancel, and grbl's G80 leaves no motion mode in force, so it would refuse the axis words of
   a following ``G28 Z0.`` (error 31, "axis words exist", even for non-modal commands);
 * ``%`` and an O-number, which grbl's parser rejects, are written as comments;
-* grbl's serial layer acts on ``?`` (status), ``!`` (feed hold), ``~`` (cycle start) and Ctrl-X wherever
-  they stand, comments included, and bytes above 0x7F are real-time commands (``serial.c``): in a
-  translation, comments are written in ASCII without them (``Ø`` as ``DIA``, ``°`` as ``DEG``, accents
-  dropped, anything else ``_``), with one warning.
+* grbl's serial layer acts on ``?``, ``!``, ``~`` and bytes above 0x7F wherever they stand, and its
+  protocol layer keeps 79 characters of a line: every line written obeys ``Grbl.LINE_RULE``
+  (``text.py``), applied where lines are emitted (``postproc.line_format``), so no path - a block, a
+  template's output, a comment copied from grbl itself - writes one of them.
 
 With ``--on-unsupported warn``, a block loses only what grbl refuses and what cannot be written without it,
 after a comment of the original block, as for every writer (``postproc.partial_block``).
@@ -25,9 +25,7 @@ after a comment of the original block, as for every writer (``postproc.partial_b
 
 from __future__ import annotations
 
-import re
-import unicodedata
-from typing import Any, ClassVar, Final
+from typing import Any, ClassVar
 
 from postproc.ir import Block, ProgramControl, Section
 from postproc.state import PLANE_AXES
@@ -38,36 +36,6 @@ from .codes import CODES
 
 GRBL_AXES = frozenset("XYZ")
 """Axes of a stock grbl 1.1 build."""
-
-
-_REALTIME = re.compile(r"[?!~\x00-\x08\x0b\x0c\x0e-\x1f\x7f]")
-"""Characters grbl acts on (or that have no place in a line): replaced in what is written."""
-_SYMBOLS = {"\u00d8": "DIA", "\u00f8": "DIA", "\u2300": "DIA", "\u00b0": "DEG", "\u00b1": "+/-", "\u00b5": "U",
-            "\u2013": "-", "\u2014": "-", "\u2018": "'", "\u2019": "'", "\u201c": '"', "\u201d": '"'}
-
-
-_PLAIN_BYTES: Final = bytes(code for code in range(128) if not _REALTIME.match(chr(code)))
-"""The ASCII characters grbl takes as they are (those ``_REALTIME`` does not match)."""
-
-
-def _plain_ascii(text: str) -> bool:
-    """``text`` is ASCII without a character of ``_REALTIME``: what is left after deleting the plain bytes
-    is nothing (a byte loop in C, twice as fast as the pattern's search over every written block)."""
-    return text.isascii() and not text.encode("ascii").translate(None, _PLAIN_BYTES)
-
-
-def grbl_safe(text: str) -> str:
-    """``text`` in ASCII without grbl's real-time characters (see the module docstring)."""
-    out: list[str] = []
-    for ch in text:
-        if ch.isascii():
-            out.append("_" if _REALTIME.match(ch) else ch)
-        elif ch in _SYMBOLS:
-            out.append(_SYMBOLS[ch])
-        else:
-            plain = unicodedata.normalize("NFKD", ch).encode("ascii", "ignore").decode()
-            out.append("_" if not plain or _REALTIME.search(plain) else plain)
-    return "".join(out)
 
 
 class GrblWriter(WordWriter):
@@ -92,24 +60,11 @@ class GrblWriter(WordWriter):
     BLANK_AS_TRACE: ClassVar[bool] = True
     """G80, G98/G99, G64 and the like are not grbl's: a block of nothing else is a trace of its source."""
 
-    def __init__(self, ctx: Any, source_dialect: str, target: Any = None) -> None:
-        super().__init__(ctx, source_dialect, target)
-        self._sanitised = False
-        """A comment has been made safe for grbl (warned once)."""
-
     # -- blocks ------------------------------------------------------------------------------------
     def write_block(self, block: Block) -> str | None:
         if "TapeMark" in block.sections:
-            text: str | None = self.comment("%") + (block.eol or "\n")
-        else:
-            text = super().write_block(block)
-        if text is None or self.source_dialect == self.DIALECT or _plain_ascii(text):
-            return text
-        if not self._sanitised:
-            self._sanitised = True
-            self.ctx.diagnostics.warn("grbl acts on '?', '!', '~' and bytes above 0x7F even inside a comment: "
-                                      "comments are written without them", self.ctx.at(block))
-        return grbl_safe(text)
+            return self.comment("%") + (block.eol or "\n")
+        return super().write_block(block)
 
     def item_line(self, item: Section, block: Block) -> str:
         """A pause inside an expansion is for the operator to work at the tool (orient it by hand, jog it

@@ -18,6 +18,7 @@ from postproc.dialect import Dialect, Lazy, Reader
 from postproc.rs274.order_of_execution import stops_after_motion
 from postproc.errors import Diagnostics
 from postproc.hookspecs import hookimpl
+from postproc.line_format import LineRule
 from postproc.lower import Lowering
 from postproc.setup import MachineSetup
 from postproc.context import Context
@@ -28,7 +29,7 @@ from postproc.xmlio import XFactory
 
 from .codes import CODES
 
-from .active_comments import warn_active_comments
+from .active_comments import COMMENTS, warn_active_comments
 
 NATIVE = frozenset({
     "drill", "drill_dwell", "peck_chip", "peck_deep", "tap", "tap_left", "bore_feed", "bore_stop",
@@ -57,6 +58,10 @@ class Linuxcnc(Dialect):
     """Numbered and named parameters, expressions, o-word subprograms and control flow."""
     STOPS_BEFORE_MOTION = True
     """The RS274/NGC order of execution: M5 and M9 act before the block's motion."""
+    COMMENTS = COMMENTS
+    """``( )`` and ``;`` comments; ``(MSG,`` ``(LOGOPEN,`` ... act (``active_comments.ACTIVE``)."""
+    LINE_RULE = Lazy[LineRule](".lines:LINES")
+    """rs274 reads at most 252 bytes a line: a longer comment is shortened (``lines.py``)."""
     LOWERING = (stops_after_motion,)
     """A moving block's spindle stop and coolant off go in a block of their own after it: LinuxCNC runs
     them before the motion (``postproc.rs274.order_of_execution``)."""

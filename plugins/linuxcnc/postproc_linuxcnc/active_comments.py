@@ -1,6 +1,8 @@
 """LinuxCNC's active comments, which do something when the program runs: ``(MSG,text)`` shows the operator
 a message, ``(DEBUG,..)`` and ``(PRINT,..)`` print text with parameter values, ``(LOG..)`` write a log
-file, ``(PROBEOPEN ..)``/``(PROBECLOSE)`` record probe points. Every other dialect reads them as inert
+file, ``(PROBEOPEN ..)``/``(PROBECLOSE)`` record probe points, ``(ABORT,..)`` stops the program and
+``(PY,..)`` runs Python. ``COMMENTS`` is LinuxCNC's comment syntax with them (``postproc.comments``): a
+comment written from another dialect, or a template's value, never makes one. Every other dialect reads them as inert
 comments: a translation keeps their text and warns, naming each one with its location (once per source
 comment, however often a loop runs it). Between LinuxCNC programs they are kept as they are.
 """
@@ -10,13 +12,20 @@ from __future__ import annotations
 import re
 from typing import Iterator
 
+from postproc.comments import CommentSyntax
 from postproc.context import Context
 from postproc.dialect import Dialect
 from postproc.ir import Block
 
-ACTIVE = re.compile(r"[ \t]*(MSG|DEBUG|PRINT|LOGOPEN|LOGAPPEND|LOGCLOSE|LOG|PROBEOPEN|PROBECLOSE)\b[ \t]*(,?)",
-                    re.IGNORECASE)
-"""The keyword LinuxCNC looks for at the start of a ``( )`` comment (in any case)."""
+ACTIVE = re.compile(r"[ \t]*(MSG|DEBUG|PRINT|LOGOPEN|LOGAPPEND|LOGCLOSE|LOG|PROBEOPEN|PROBECLOSE|ABORT|PY)\b"
+                    r"[ \t]*(,?)", re.IGNORECASE)
+"""The keyword LinuxCNC looks for at the start of a ``( )`` comment (in any case, after blanks) [V: rs274 of
+linuxcnc-uspace 2.9 acts on ``( MSG,`` ``(msg,`` ``(DEBUG,`` ``(PRINT,`` ``(LOG,`` ``(LOGOPEN,``
+``(LOGAPPEND,`` ``(LOGCLOSE)``, ``(ABORT,`` (the program stops) and ``(PY,`` (embedded Python); K for
+``PROBEOPEN``/``PROBECLOSE``, from the LinuxCNC G-code manual]. A ``;`` comment never acts [V]."""
+COMMENTS = CommentSyntax(parens=True, nested=False, semicolon=True, active=ACTIVE)
+"""``( )`` comments, which do not nest (rs274: "Nested comment found" [V]), and ``;`` to the end of the line
+[V]; the active ones above."""
 LOST = {
     "MSG": "the operator no longer sees the message",
     "DEBUG": "its text is no longer printed",
@@ -27,6 +36,8 @@ LOST = {
     "LOGCLOSE": "no log file is closed",
     "PROBEOPEN": "probe points are no longer recorded",
     "PROBECLOSE": "probe points are no longer recorded",
+    "ABORT": "the program no longer aborts here",
+    "PY": "its Python no longer runs",
 }
 """What the operator loses when the comment becomes inert."""
 

@@ -8,6 +8,8 @@
   its line (rs274 refuses M98 with other words: the call is unsupported then), and a plain return
   ``M99``; a return to a block number (``M99 P``) is unsupported.
 * Work offsets 7-9 are G59.1-G59.3; inverse-time feed is G93; M19 takes its angle as R.
+* A comment from another dialect never becomes an active one: ``( MSG, x)`` read from Fanuc or ISG is
+  written ``(- MSG, x)`` (``active_comments.COMMENTS``); from LinuxCNC it is the program's own.
 * F in a block that changes units is written in the old units (LinuxCNC sets the feed first).
 * Parameters, expressions and o-words (``SPELLING``, ``statement_words``): a computed word is written
   in LinuxCNC's spelling (``X[#1*2.]``), an assignment as ``#1=5.``, a control statement as its o-word
@@ -40,6 +42,7 @@ from postproc.rs274.expressions import LINUXCNC_SPELLING, ExprSpelling
 from postproc.rs274.oword import spell_assignments, spell_oword
 from postproc.rs274.writer import WordWriter
 
+from .active_comments import COMMENTS
 from .codes import CODES
 
 
@@ -79,6 +82,8 @@ class LinuxcncWriter(WordWriter):
 
     def __init__(self, ctx: Context, source_dialect: str, target: type[Dialect] | None = None) -> None:
         super().__init__(ctx, source_dialect, target)
+        self.foreign = source_dialect != self.DIALECT
+        """Comments come from another dialect: none may act here (``comment``)."""
         self.units_before = self.modal.units
         """Units in force before the block being written (its F is read in them)."""
         self.inverse_time = False
@@ -100,6 +105,11 @@ class LinuxcncWriter(WordWriter):
         """Lower-cased subprogram name -> the name as the source wrote it."""
         self._counted: dict[str, tuple[Var, float]] = {}
         """Source label of an open counted loop -> its counter and step."""
+
+    def comment(self, text: str) -> str:
+        """Another dialect's comment text as a comment that does not act (LinuxCNC reads ``(MSG,``,
+        ``(LOGOPEN,``, ``(ABORT,`` ... as instructions: ``active_comments.ACTIVE``)."""
+        return COMMENTS.comment(text) if self.foreign else super().comment(text)
 
     def units_words(self, s: Any, block: Block) -> list[str]:
         self.units_before = self.modal.units

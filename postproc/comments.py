@@ -1,0 +1,83 @@
+"""A controller's comment syntax as data (``Dialect.COMMENTS``): the one place that decides what text is
+safe inside a comment, and where a written line's comments are.
+
+Text from outside the program's code - a file name, a ``--define`` value, a set-up's name, another
+dialect's comment - reaches a target only inside a comment, so it must neither end the comment early
+(a closing parenthesis, a line break) nor make it one the controller acts on (LinuxCNC runs
+``(MSG,`` ``(DEBUG,`` ``(LOGOPEN,`` ... comments; grbl acts on ``!`` anywhere). ``text`` makes any text
+safe; ``comments`` finds the comments of a written line, so a template's output can be checked to hold
+every value inside a passive one (``postproc.template_values``).
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from typing import Callable
+
+_BREAKS = re.compile(r"[\x00-\x1f\x7f\u0085\u2028\u2029]")
+"""Line breaks and control characters: a line break ends a ``;`` comment and a block."""
+
+
+@dataclass(frozen=True)
+class CommentSyntax:
+    """How one controller writes comments. The dialect declares it; nothing here names a controller."""
+
+    parens: bool = True
+    """``(`` ... ``)`` is a comment."""
+    nested: bool = False
+    """Parentheses nest inside a comment (otherwise the first ``)`` ends it)."""
+    semicolon: bool = False
+    """``;`` starts a comment that runs to the end of the line."""
+    active: re.Pattern[str] | None = None
+    """A comment whose text matches is an instruction to the controller, not a comment."""
+    clean: Callable[[str], str] | None = None
+    """Characters the controller acts on even inside a comment, replaced (grbl's real-time commands)."""
+
+    def inside(self, text: str) -> str:
+        """``text`` made safe to stand inside a comment: brackets for parentheses, spaces for line breaks
+        and control characters, then the controller's own cleaning (``clean``). Whether the comment it
+        stands in acts is the whole comment's business (``text``, ``comments``)."""
+        safe = _BREAKS.sub(" ", text.replace("(", "[").replace(")", "]"))
+        return self.clean(safe) if self.clean is not None else safe
+
+    def text(self, text: str) -> str:
+        """``text`` made safe as a whole comment's text: ``inside``, and a ``-`` before a head that would
+        make the comment act (``active``)."""
+        safe = self.inside(text)
+        if self.active is not None and self.active.match(safe):
+            safe = "-" + safe
+        return safe
+
+    def comment(self, text: str) -> str:
+        """A whole comment holding ``text`` (safe, as ``text`` makes it): parentheses where they are
+        comments, else a ``;`` comment (which must end its line)."""
+        safe = self.text(text)
+        return f"({safe})" if self.parens else ";" + safe
+
+    def comments(self, line: str) -> list[tuple[int, int, bool]]:
+        """The comments of one written line: (start, end, passive) with ``line[start:end]`` the comment
+        including its delimiters; an unclosed parenthesis runs to the end of the line."""
+        found: list[tuple[int, int, bool]] = []
+        i, n = 0, len(line)
+        while i < n:
+            ch = line[i]
+            if ch == "(" and self.parens:
+                depth, j = 1, i + 1
+                while j < n and depth:
+                    if line[j] == ")":
+                        depth -= 1
+                    elif line[j] == "(" and self.nested:
+                        depth += 1
+                    j += 1
+                found.append((i, j, self._passive(line[i + 1:j - 1 if depth == 0 else j])))
+                i = j
+            elif ch == ";" and self.semicolon:
+                found.append((i, n, True))
+                return found
+            else:
+                i += 1
+        return found
+
+    def _passive(self, text: str) -> bool:
+        return self.active is None or self.active.match(text) is None
