@@ -327,13 +327,14 @@ class WordBlockSyntax(Syntax):
     def _data_setting(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],
                       used: set[str]) -> bool:
         """``G10 L2 P1 X.. Y..`` and the tool-offset forms -> ``DataSetting``; False (the block kept as
-        ``NativeCode``) for an L the dialect does not model."""
+        ``NativeCode``) for an L the dialect does not model, or a computed L or P (the table or entry it sets
+        is known only when it runs: the interpreter reads the block again with numbers)."""
         number = next(n for l, n in block.words if _UPPER[l] == "G" and g_key(n) == DATA_KEY)
         at = ctx.at(block, col_of_word(block, "G", number))
         ell = _index(values.get("L"))
         table = None if ell is None else self.DATA_TABLES.get(ell)
         native = f"G{number} ({self.table(ctx).native_g[DATA_KEY]})"
-        if table is None:
+        if table is None or isinstance(values.get("P"), Expr):
             block.add(NativeCode(self.DIALECT, native, block.text or ""))
             return False
         name, first, last = table

@@ -408,7 +408,7 @@ class LinuxcncWriter(WordWriter):
 
     def spindle_orientation_words(self, s: Any, block: Block) -> list[str]:
         """M19 R<angle>: a bare M19 leaves the angle to the machine's default."""
-        return [self.code("orient", None, "an oriented spindle stop", block), "R" + self.number(float(s.angle))]
+        return [self.code("orient", None, "an oriented spindle stop", block), "R" + self.length(s.angle, block)]
 
 
 def _grown(counter: Var, step: float) -> Binary:
