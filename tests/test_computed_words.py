@@ -9,11 +9,13 @@ got postproc.expr.Var") for every target. ``tests/support/section_types.py`` mak
 
 from __future__ import annotations
 
+import copy
 import io
 
 import pytest
 
 from postproc.api import read_program, translate
+from postproc.cycles.semantics import FANUC, RS274
 from postproc.errors import Diagnostics, ErrorList
 from postproc.ir import Block
 from postproc.toolpath import toolpath_events
@@ -129,3 +131,22 @@ def test_g10_with_a_computed_entry_is_kept_verbatim_and_evaluated_elsewhere() ->
     assert _translate(program, "fanuc", "fanuc")[0] == program
     text = _verified(program, "fanuc", "linuxcnc")
     assert "G10 L2 P2 X1." in text
+
+
+# -- item 8: a modal cycle with a hole, then a loop ---------------------------------------------------
+
+CYCLE_THEN_LOOP = ("G21 G90 G0 X0 Y0 Z10.\nG81 X1. Y1. Z-1. R1. F100.\nX2.\n#501=0\nWHILE[#501LT3]DO1\n"
+                   "#501=#501+1\nEND1\nG80\nM30\n")
+
+
+@pytest.mark.parametrize("target", ["linuxcnc", "isg", "fanuc"])
+def test_a_modal_cycle_with_a_hole_then_a_loop_translates(target: str) -> None:
+    """Deciding whether the loop can be kept copies the modal state, whose next-hole memo holds the
+    cycle's resolve step and its rules: copying those rules failed in the compiled build
+    (FrozenInstanceError: cannot assign to field 'name')."""
+    _verified(CYCLE_THEN_LOOP, "fanuc", target)
+
+
+def test_cycle_rules_are_shared_by_copies() -> None:
+    """A family's rules are constants: a copy is the same object, never rebuilt field by field."""
+    assert copy.deepcopy(RS274) is RS274 and copy.copy(FANUC) is FANUC
