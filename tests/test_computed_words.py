@@ -150,3 +150,33 @@ def test_a_modal_cycle_with_a_hole_then_a_loop_translates(target: str) -> None:
 def test_cycle_rules_are_shared_by_copies() -> None:
     """A family's rules are constants: a copy is the same object, never rebuilt field by field."""
     assert copy.deepcopy(RS274) is RS274 and copy.copy(FANUC) is FANUC
+
+
+# -- lathes: G50 and the turret's T ---------------------------------------------------------------------
+
+def _lathe() -> MachineSetup:
+    from postproc.setup import load_setup
+    return load_setup("examples/setups/fanuc_0i_tf.xml")
+
+
+def test_a_computed_coordinate_setting_and_clamp_are_kept_and_have_an_ir_form() -> None:
+    """'G50 X#1' was float(Var): a TypeError in both builds. Fanuc keeps it as written; the section holds
+    the expression and serialises it."""
+    program = "#1=100.\nG50 X#1 Z[#1/2]\nG50 S#1\nG0 X10. Z2.\nM30\n"
+    out = io.StringIO()
+    translate(io.StringIO(program), out, file="p.nc", source="fanuc", target="fanuc", setup=_lathe())
+    assert out.getvalue() == program
+    blocks = read_program(io.StringIO(program), file="p.nc", dialect="fanuc", setup=_lathe())
+    assert [m for b in blocks for m in mistyped(b)] == []
+    for block in blocks[1:3]:
+        for section in block.sections.values():
+            assert type(section).from_xml(section.make_xml_source()) == section
+
+
+def test_a_computed_lathe_tool_is_evaluated_for_a_mill_control() -> None:
+    """Fanuc T's T0101 is tool 1 with offset 1; 'T#1' kept as LinuxCNC's T#1 selected tool 101. Which tool
+    it names is known when it runs: the program is flattened (T1 M6, as for a written T0101)."""
+    out, warnings = io.StringIO(), io.StringIO()
+    translate(io.StringIO("#1=101\nT#1\nG0 X10. Z2.\nM30\n"), out, file="p.nc", source="fanuc", target="linuxcnc",
+              setup=_lathe(), diagnostics=Diagnostics(warn_stream=warnings))
+    assert "T1 M6" in out.getvalue() and "#1" not in out.getvalue() and "flattened" in warnings.getvalue()

@@ -18,6 +18,7 @@ from __future__ import annotations
 from typing import Any
 
 from postproc.errors import ParseError, ProgramError
+from postproc.expr import Expr
 from postproc.ir import Block, CycleCall, Feed, Motion, SpindleSpeed, ToolSelect
 from postproc.lathe_sections import CoordinateSet, SpindleClamp, SpindleMode
 from postproc.context import Context
@@ -131,9 +132,9 @@ class LatheBlockSyntax(WordBlockSyntax):
                 del codes[group]
             elif kind == "coordinate_set":
                 del codes[group]
-                axes = {k: float(v) for k, v in values.items() if k in "XZ"}
+                axes = {k: _real(v) for k, v in values.items() if k in "XZ"}
                 if "S" in values:
-                    block.add(SpindleClamp(float(values.pop("S"))))  # the clamp, not a speed
+                    block.add(SpindleClamp(_real(values.pop("S"))))  # the clamp, not a speed
                 elif not axes:
                     raise ProgramError(f"G{num} needs X/Z (coordinate setting) or S (spindle speed clamp)",
                                        ctx.at(block, col_of_word(block, "G", num)))
@@ -148,6 +149,11 @@ class LatheBlockSyntax(WordBlockSyntax):
         motion = block.sections.get("Motion")
         if isinstance(motion, Motion) and motion.center is not None and "Y" in motion.center:
             raise ProgramError("an arc centre J is outside the ZX plane of a lathe", ctx.at(block, ctx.column_of(block, "J")))
+
+
+def _real(value: Any) -> Any:
+    """A number as a float, or a computed value (``Expr``, a program kept symbolically) as it is."""
+    return value if isinstance(value, Expr) else float(value)
 
 
 def _number(block: Block, ctx: Context, up: str, num: str) -> float:
