@@ -180,3 +180,19 @@ def test_a_computed_lathe_tool_is_evaluated_for_a_mill_control() -> None:
     translate(io.StringIO("#1=101\nT#1\nG0 X10. Z2.\nM30\n"), out, file="p.nc", source="fanuc", target="linuxcnc",
               setup=_lathe(), diagnostics=Diagnostics(warn_stream=warnings))
     assert "T1 M6" in out.getvalue() and "#1" not in out.getvalue() and "flattened" in warnings.getvalue()
+
+
+# -- a computed repeat count ----------------------------------------------------------------------------
+
+def test_a_computed_repeat_count_runs_its_holes() -> None:
+    """'G81 ... K#2' (#2=2.): the run spells the evaluated K with a point, as every K (an arc's K is a
+    length), and it was refused as a count ('address K takes no decimal point'). In G90, K2 drills the
+    hole twice: two feeds down (by hand)."""
+    program = "G21 G90 G17 G0 X0 Y0 Z10.\n#2=2.\nG81 X4. Z-1. R1. K#2 F100.\nG80\nM30\n"
+    feeds = [e for e in toolpath_events(io.StringIO(program), file="p.nc", dialect="fanuc") if e.get("move") == "feed"]
+    assert [(e["x"], e["z"]) for e in feeds] == [(4, -1), (4, -1)]
+    for target in ("fanuc", "linuxcnc", "isg"):
+        _verified(program, "fanuc", target)
+    with pytest.raises(ErrorList) as refused:
+        list(toolpath_events(io.StringIO(program.replace("#2=2.", "#2=2.5")), file="p.nc", dialect="fanuc"))
+    assert str(refused.value).startswith("p.nc:3:") and "whole number" in str(refused.value)

@@ -168,6 +168,15 @@ class WordBlockSyntax(Syntax):
                 values[up] = _milliseconds(block, ctx, num)
             elif up in INTEGER_LETTERS or up == "K":
                 if "." in num:
+                    if up == "K" and block.text is None:
+                        # a repeat count the run evaluated (K#2): spelled with a point, as the interpreter
+                        # spells every K (an arc's K is a length); Fanuc rounds a macro value to the
+                        # address's digits (Custom Macro B) [K], here only a whole one is taken
+                        if not float(num).is_integer():
+                            raise ProgramError(f"K (the repeat count) takes a whole number, the expression gives "
+                                               f"{num}", ctx.at(block, ctx.column_of(block, up)))
+                        values[up] = int(float(num))
+                        continue
                     raise ParseError(f"address {up} takes no decimal point ({up}{num})",
                                      ctx.at(block, ctx.column_of(block, up)))
                 values[up] = int(num)
