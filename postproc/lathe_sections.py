@@ -73,7 +73,7 @@ class CoordinateSet(Section):
         return el
 
     def _key(self) -> tuple[Any, ...]:
-        return (tuple(self.axes.items()),)
+        return (tuple(sorted(self.axes.items())),)  # by axis: XML gives the numbers, then the expressions
 
 
 class InProfile(Section):

@@ -196,3 +196,11 @@ def test_a_computed_repeat_count_runs_its_holes() -> None:
     with pytest.raises(ErrorList) as refused:
         list(toolpath_events(io.StringIO(program.replace("#2=2.", "#2=2.5")), file="p.nc", dialect="fanuc"))
     assert str(refused.value).startswith("p.nc:3:") and "whole number" in str(refused.value)
+
+
+@pytest.mark.parametrize("line", ["G50 X10. Z#24", "G50 S[#24*100]", "G4 U0.5", "G4 U#24"])
+def test_a_lathe_block_comes_back_from_its_xml(line: str) -> None:
+    """The IR's XML (``postproc ir``) keeps a computed G50 whatever its axes' order, and a dwell's U word
+    (the block syntax renamed it X and the XML lost its value)."""
+    block = read_program(io.StringIO(f"#24=1.\n{line}\nM30\n"), file="p.nc", dialect="fanuc", setup=_lathe())[1]
+    assert Block.from_xml(block.make_xml_source()) == block

@@ -115,8 +115,9 @@ class LatheBlockSyntax(WordBlockSyntax):
     def g_sections(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],
                    used: set[str], cycle_block: bool) -> None:
         """The lathe's own codes first (coordinate setting, spindle mode), then the family's."""
-        if any(kind == "dwell" for _, kind, _, _ in codes.values()) and "U" in values \
-                and "X" not in values and "P" not in values:
+        dwell_u = any(kind == "dwell" for _, kind, _, _ in codes.values()) and "U" in values \
+            and "X" not in values and "P" not in values
+        if dwell_u:
             values["X"] = values.pop("U")  # a lathe's G04 U is the dwell in seconds, as G04 X
         for absolute, increment in (("X", "U"), ("Z", "W")):
             if absolute in values and increment in values:
@@ -146,6 +147,9 @@ class LatheBlockSyntax(WordBlockSyntax):
                     raise ProgramError(f"G{num} sets absolute coordinates: {up} has no meaning here",
                                        ctx.at(block, ctx.column_of(block, up)))
         super().g_sections(block, ctx, codes, values, used, cycle_block)
+        if dwell_u:  # the word stays what it was read as (U), for the block's XML
+            values["U"] = values.pop("X")
+            used.add("U")
         motion = block.sections.get("Motion")
         if isinstance(motion, Motion) and motion.center is not None and "Y" in motion.center:
             raise ProgramError("an arc centre J is outside the ZX plane of a lathe", ctx.at(block, ctx.column_of(block, "J")))

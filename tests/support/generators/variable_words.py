@@ -10,8 +10,9 @@ compiled build refused. The variables are sometimes ones the target can spell (t
 symbolically) and sometimes not (it is flattened).
 
 The check: no internal error; a refusal only with located errors; what is written reads back and
-verifies (``check_translation``); and the sections read from the source hold what their annotations
-say (``tests/support/section_types.py``: what the compiled build checks at run time).
+verifies (``check_translation``); the sections read from the source hold what their annotations say
+(``tests/support/section_types.py``: what the compiled build checks at run time) and come back from
+their XML (``postproc ir``) unchanged.
 """
 
 from __future__ import annotations
@@ -23,6 +24,7 @@ from hypothesis import strategies as st
 
 from postproc.api import read_program
 from postproc.errors import ErrorList
+from postproc.ir import Block
 from postproc.setup import MachineSetup, load_setup
 
 from ..fuzzing import WRITERS, check_translation
@@ -138,6 +140,7 @@ def _check(source: str, target: str, program: str, setup: MachineSetup, warn: bo
     for block in blocks:
         bad = mistyped(block)
         assert not bad, f"a section holds what its annotation refuses (compiled: a TypeError): {bad[0]}"
+        assert Block.from_xml(block.make_xml_source()) == block, f"the IR's XML loses part of {block!r}"
     return check_translation(source, target, program, setup, warn)
 
 
