@@ -204,3 +204,15 @@ def test_a_lathe_block_comes_back_from_its_xml(line: str) -> None:
     (the block syntax renamed it X and the XML lost its value)."""
     block = read_program(io.StringIO(f"#24=1.\n{line}\nM30\n"), file="p.nc", dialect="fanuc", setup=_lathe())[1]
     assert Block.from_xml(block.make_xml_source()) == block
+
+
+def test_a_computed_feed_in_a_block_that_changes_units_is_scaled_for_linuxcnc() -> None:
+    """LinuxCNC reads F in the units in force before its block [V: rs274]: Fanuc's 'G20 G1 X1. F#1' (an
+    inch rate) is written F[#1*25.4], as F10. is written F254.; rs274 sets the same rate for both."""
+    program = "G21 G90 G0 X0 Y0 Z1.\n#1=10.\nG20 G1 X1. F#1\nM30\n"
+    computed = _verified(program, "fanuc", "linuxcnc")
+    written = _verified(program.replace("#1=10.\n", "").replace("F#1", "F10."), "fanuc", "linuxcnc")
+    assert "F[#1*25.4]" in computed and "F254." in written
+    if available():
+        rates = [[c for c in run_rs274(text) if "SET_FEED_RATE" in c][-1].split()[-1] for text in (computed, written)]
+        assert rates[0] == rates[1]
