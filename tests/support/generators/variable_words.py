@@ -1,4 +1,4 @@
-"""Variable words: Fanuc (mill and lathe), LinuxCNC and ISG programs whose words take their values from variables and
+"""Variable words: Fanuc (mill and lathe), LinuxCNC, ISG and Fagor programs whose words take their values from variables and
 bracketed expressions (``H#1``, ``D#517``, ``T[#2+1]``, ``G10 L2 P1 X[1+1]``, ``M19 R#<a>``, ``XP1``),
 every letter the dialect reads, through every writer.
 
@@ -53,6 +53,7 @@ FANUC = [
     "G81 X{X} Y{Y} Z{BOTTOM} R{R} F{F}\nX{X}", "G80",
     "G10 L2 P{E} X{X} Y{Y} Z{Z}\nG0 X0 Y0 Z10.", "G10 L10 P{E} R{Q}", "G10 L11 P{E} R{Q}", "G10 L12 P{E} R{Q}",
     "G91 G2 X[2*{RAD}] I{RAD} F{F}\nG90", "G91 G3 X[-2*{RAD}] R{RAD} F{F}\nG90", "M19", "G28 Z{Z}\nG0 X0 Y0 Z10.",
+    "G20 G1 X{STEP} F{F}\nG21 G0 X0 Y0 Z10.",
 ]
 LINUXCNC = [
     "G0 G43 H{H} Z{Z}", "G49", "G41 D{D} G1 X{X} Y{Y} F{F}\nG40 G1 X{X} Y{Y}", "T{T} M6", "S{S} M3",
@@ -61,6 +62,7 @@ LINUXCNC = [
     "G82 X{X} Z{BOTTOM} R{R} P{SEC} F{F}\nG80", "G81 X{X} Z{BOTTOM} R{R} L{K} F{F}\nG80",
     "G81 X{X} Y{Y} Z{BOTTOM} R{R} F{F}\nX{X}", "G80", "G10 L2 P{E} X{X} Y{Y} Z{Z}\nG0 X0 Y0 Z10",
     "G91 G2 X[2*{RAD}] I{RAD} F{F}\nG90", "G91 G3 X[-2*{RAD}] R{RAD} F{F}\nG90", "G28 Z{Z}\nG0 X0 Y0 Z10.",
+    "G20 G1 X{STEP} F{F}\nG21 G0 X0 Y0 Z10",
 ]
 LATHE = [
     "G50 X{DIA} Z{Z}\nG0 X{DIA} Z{Z}", "G50 S{S}", "G96 S{S} M3\nG97 S500", "G97 S{S} M3", "T{TURRET}",
@@ -68,6 +70,11 @@ LATHE = [
 ]
 ISG = [
     "G01 X{X} F{F}", "G00 X{X} Y{Y} Z{Z}", "T{T} M06", "S{S} M03", "G04 X{SEC}", "M{M}", "G{G} X{X} Y{Y}",
+    "G41 D{D} G01 X{X} Y{Y} F{F}\nG40 G01 X{X} Y{Y}", "G91 G02 X[2*{RAD}] I{RAD} F{F}\nG90",
+    "N[10+{E}] G01 X{X}",
+]
+FAGOR = [
+    "G01 X{X} F{F}", "G00 X{X} Y{Y} Z{Z}", "T{T} M06", "S{S} M03", "G04 K{SEC}", "M{M}",
     "G41 D{D} G01 X{X} Y{Y} F{F}\nG40 G01 X{X} Y{Y}", "G91 G02 X[2*{RAD}] I{RAD} F{F}\nG90",
 ]
 
@@ -80,6 +87,8 @@ SOURCES = {
                  ("#{n}=0\no100 while [#{n} LT 2]", "#{n}=[#{n}+1]\no100 endwhile"), LINUXCNC, "M2"),
     "isg": ("G71 G90 G17 G00 X0 Y0 Z10\nF100", ["P1", "P2", "P17", "P499"], "{var}={value}",
             ("P{n}=0\n$WHILE P{n} < 2", "P{n}=P{n}+1\n$ENDWHILE"), ISG, "M30"),
+    "fagor": ("G71 G90 G17 G00 X0 Y0 Z10\nF100", ["P1", "P2", "P17", "P499"], "{var}={value}",
+              None, FAGOR, "M30"),  # Fagor's $WHILE is kept verbatim, not run (docs/dialects.md [?])
     "fanuc lathe": ("G21 G0 X40. Z5.\nS500 M3", ["#1", "#2", "#24", "#100", "#501"], "{var}={value}",
                     ("#{n}=0\nWHILE[#{n}LT2]DO1", "#{n}=#{n}+1\nEND1"), LATHE, "M30"),
 }
@@ -111,7 +120,7 @@ def _spelled(draw: st.DrawFn, source: str, value: float, assigned: dict[str, flo
 
 @st.composite
 def programs(draw: st.DrawFn, source: str) -> str:
-    header, _, assign, (loop_start, loop_end), forms, end = SOURCES[source]
+    header, _, assign, loop, forms, end = SOURCES[source]
     assigned: dict[str, float] = {}
     lines = []
     for form in draw(st.lists(st.sampled_from(forms), min_size=1, max_size=5)):
@@ -124,10 +133,10 @@ def programs(draw: st.DrawFn, source: str) -> str:
             word = draw(_spelled(source, value, assigned, name))
             text = text[:start] + word + text[text.index("}", start) + 1:]
         lines.append(text)
-    if draw(st.booleans()):  # a loop around the last lines (run twice)
+    if loop is not None and draw(st.booleans()):  # a loop around the last lines (run twice)
         cut = draw(st.integers(0, len(lines) - 1))
         n = COUNTER[source]
-        lines[cut:] = [loop_start.format(n=n), *lines[cut:], loop_end.format(n=n)]
+        lines[cut:] = [loop[0].format(n=n), *lines[cut:], loop[1].format(n=n)]
     setting = [assign.format(var=var, value=_number(value)) for var, value in assigned.items()]
     return "\n".join([header, *setting, *lines, end]) + "\n"
 
