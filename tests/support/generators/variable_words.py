@@ -83,7 +83,8 @@ FAGOR = [
 SOURCES = {
     "fanuc": ("G21 G90 G17 G0 X0 Y0 Z10.\nF100.", ["#1", "#2", "#24", "#100", "#501", "#517"], "{var}={value}",
               ("#{n}=0\nWHILE[#{n}LT2]DO1", "#{n}=#{n}+1\nEND1"), FANUC, "M30"),
-    "linuxcnc": ("G21 G90 G17 G99 G0 X0 Y0 Z10\nF100",  # G99 said: Mach3 starts in G98 (a known defect) ["#1", "#2", "#100", "#<depth>", "#<_top>"], "{var}={value}",
+    # LinuxCNC's G99 said: Mach3 starts in G98 (a known defect, tests/support/fuzzing.py)
+    "linuxcnc": ("G21 G90 G17 G99 G0 X0 Y0 Z10\nF100", ["#1", "#2", "#100", "#<depth>", "#<_top>"], "{var}={value}",
                  ("#{n}=0\no100 while [#{n} LT 2]", "#{n}=[#{n}+1]\no100 endwhile"), LINUXCNC, "M2"),
     "isg": ("G71 G90 G17 G00 X0 Y0 Z10\nF100", ["P1", "P2", "P17", "P499"], "{var}={value}",
             ("P{n}=0\n$WHILE P{n} < 2", "P{n}=P{n}+1\n$ENDWHILE"), ISG, "M30"),
