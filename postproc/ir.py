@@ -187,16 +187,17 @@ class SpindleControl(Section):
 
 @mypyc_attr(allow_interpreted_subclasses=True)
 class SpindleOrientation(Section):
-    """Oriented spindle stop at an angle in degrees."""
+    """Oriented spindle stop at an angle in degrees (or the expression a program kept symbolically
+    computes it with: LinuxCNC's ``M19 R#1``)."""
 
     XNAME = "SpindleOrientation"
 
     KEY = "SpindleOrientation"
     __slots__ = ("angle",)
     XATTRS = (XAttr("angle", float, 0.0),)
-    angle: float
+    angle: float | Expr
 
-    def __init__(self, angle: float = 0.0) -> None:
+    def __init__(self, angle: float | Expr = 0.0) -> None:
         self.angle = angle
 
 
@@ -227,7 +228,8 @@ class ToolChange(Section):
 
 @mypyc_attr(allow_interpreted_subclasses=True)
 class ToolLengthOffset(Section):
-    """'positive', 'negative' or 'cancel', with the offset register."""
+    """'positive', 'negative' or 'cancel', with the offset register: a number, or the expression a
+    program kept symbolically computes it with (``H#1``)."""
 
     XNAME = "ToolLengthOffset"
 
@@ -235,16 +237,17 @@ class ToolLengthOffset(Section):
     __slots__ = ("mode", "register")
     XATTRS = (XAttr("mode", str), XAttr("register", int, None))
     mode: str
-    register: int | None
+    register: int | Expr | None
 
-    def __init__(self, mode: str, register: int | None = None) -> None:
+    def __init__(self, mode: str, register: int | Expr | None = None) -> None:
         self.mode = mode
         self.register = register
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
 class CutterCompensation(Section):
-    """'off', 'left' or 'right', with the offset register."""
+    """'off', 'left' or 'right', with the offset register: a number, or the expression a program kept
+    symbolically computes it with (``D#517``)."""
 
     XNAME = "CutterCompensation"
 
@@ -252,9 +255,9 @@ class CutterCompensation(Section):
     __slots__ = ("mode", "register")
     XATTRS = (XAttr("mode", str), XAttr("register", int, None))
     mode: str
-    register: int | None
+    register: int | Expr | None
 
-    def __init__(self, mode: str, register: int | None = None) -> None:
+    def __init__(self, mode: str, register: int | Expr | None = None) -> None:
         self.mode = mode
         self.register = register
 
@@ -570,7 +573,9 @@ class DataSetting(Section):
     value in program units) into entry ``index`` of a controller table. ``table`` is neutral:
     'work_offset' (index 1 = the first work system, 0 = the offset common to all), 'work_offset_extended',
     'tool_length', 'tool_length_wear', 'cutter_offset', 'cutter_offset_wear'. ``incremental``: the values
-    are added to the entry. ``text`` is the block's setting as written, passed verbatim within ``family``."""
+    are added to the entry. ``text`` is the block's setting as written, passed verbatim within ``family``.
+    A value may be an expression (``X[#1+1]``, a program kept symbolically); the table and the entry are
+    numbers (a computed ``L`` or ``P`` keeps the block verbatim)."""
 
     XNAME = "DataSetting"
 
@@ -594,7 +599,7 @@ class DataSetting(Section):
         values: dict[str, float | Expr] = {}
         for c in el:
             if c.tag == "Values":
-                values = {k: float(v) for k, v in c.attrib.items()}
+                values = _axes_from_xml(c)
             elif isinstance(c.tag, str):
                 raise ValueError(f"unexpected <{c.tag}>")
         return cls(el.get("family", ""), el.get("table", ""), int(el.get("index", "0")), values,
@@ -606,11 +611,7 @@ class DataSetting(Section):
         if self.incremental:
             el.set("incremental", "true")
         el.set("text", self.text)
-        values = etree.SubElement(el, "Values")
-        for k, v in self.values.items():
-            if isinstance(v, Expr):  # G10 with a computed word: known defect, reported in docs/compiled.md
-                raise TypeError(f"DataSetting: the computed value of {k} has no XML form")
-            values.set(k, repr(float(v)))
+        _axes_to_xml(el, "Values", self.values)
         return el
 
     def _key(self) -> tuple[Any, ...]:

@@ -10,8 +10,9 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any, ClassVar
 
+from .expr import Expr
 from .ir import Section
-from .xmlio import XAttr, XFactory, decode, encode, lxml_etree
+from .xmlio import XAttr, XFactory, computed_value, decode, encode, lxml_etree
 
 if TYPE_CHECKING:  # annotations only: lxml is imported where XML is read or written (postproc.xmlio)
     from lxml import etree
@@ -30,40 +31,49 @@ class SpindleMode(Section):
 
 
 class SpindleClamp(Section):
-    """The highest spindle speed constant surface speed may reach, in rpm."""
+    """The highest spindle speed constant surface speed may reach, in rpm (or the expression a program
+    kept symbolically computes it with: ``G50 S#1``)."""
 
     XNAME = KEY = "SpindleClamp"
     __slots__ = ("rpm",)
     XATTRS = (XAttr("rpm", float),)
-    rpm: float
+    rpm: float | Expr
 
-    def __init__(self, rpm: float) -> None:
+    def __init__(self, rpm: float | Expr) -> None:
         self.rpm = rpm
 
 
 class CoordinateSet(Section):
     """The tool's present position is given these coordinates (program units; X as programmed):
-    the work coordinate system moves, the tool does not."""
+    the work coordinate system moves, the tool does not. A value may be an expression (``G50 X#1``, a
+    program kept symbolically)."""
 
     XNAME = KEY = "CoordinateSet"
     __slots__ = ("axes",)
 
-    def __init__(self, axes: dict[str, float]) -> None:
+    def __init__(self, axes: dict[str, float | Expr]) -> None:
         self.axes = axes
 
     @classmethod
     def from_xml(cls, el: etree._Element) -> "CoordinateSet":
-        return cls({k: float(v) for k, v in el.attrib.items()})
+        axes: dict[str, float | Expr] = {k: float(v) for k, v in el.attrib.items()}
+        for child in el:
+            if child.tag == "Value":  # a computed value: <Value of="X">expr</Value>
+                axes[child.get("of", "")] = computed_value(el, child.get("of", ""))
+        return cls(axes)
 
     def make_xml_source(self, base_dir: str = ".", rel_file: str = "", exhibition_only: bool = False) -> etree._Element:
         etree = lxml_etree()
         el = etree.Element(self.XNAME)
         for k, v in self.axes.items():
-            el.set(k, repr(float(v)))
+            if isinstance(v, Expr):
+                etree.SubElement(el, "Value", of=k).append(v.make_xml_source())
+            else:
+                el.set(k, repr(float(v)))
         return el
 
     def _key(self) -> tuple[Any, ...]:
-        return (tuple(self.axes.items()),)
+        return (tuple(sorted(self.axes.items())),)  # by axis: XML gives the numbers, then the expressions
 
 
 class InProfile(Section):

@@ -174,3 +174,38 @@ def test_lines_read_in_pieces_are_the_lines_read_whole(text, tail, limit, piece)
             lines = list(postproc.lines.checked_lines(source, ctx))
             got.append((lines, [str(w) for w in ctx.diagnostics.warnings]))
     assert got[0] == got[1]
+
+PLUS = "G21 G90 G0 X0 Y0 Z5\nG+1 X1 F100\nG+81 X2 Z-1 R1\nG+80\nG+0 X3\nM2\n"
+"""A plus sign on a G number: LinuxCNC's rs274 runs G+1, G+81, G+80, G+0 as G1, G81, G80, G0 [V]."""
+
+
+PLUSSES = {
+    "fanuc": "G21 G90 G0 X0 Y0 Z5.\nG+1 X1. F100.\nG+81 X2. Z-1. R1.\nG+80\nG+0 X3.\nM30\n",
+    "linuxcnc": PLUS, "mach3": PLUS, "grbl": PLUS.replace("G+81 X2 Z-1 R1\nG+80\n", ""),
+    "isg": "G90 G+0 X0 Y0 Z5\nG+1 X1 F100\nG+0 X3\nM30\n", "fagor": "G90 G+0 X0 Y0 Z5\nG+1 X1 F100\nG+0 X3\nM30\n",
+}
+
+
+@pytest.mark.parametrize("dialect", sorted(PLUSSES))
+def test_a_plus_sign_on_a_g_number_reads_as_the_code(dialect: str) -> None:
+    """'G+1' and 'G+80' were 'unknown G code' while 'M+3' read as M3: one reading for every code."""
+    program = PLUSSES[dialect]
+    events = list(toolpath_events(io.StringIO(program), file="p.nc", dialect=dialect))
+    assert [e for e in events if "move" in e]
+    assert events == list(toolpath_events(io.StringIO(program.replace("G+", "G")), file="p.nc", dialect=dialect))
+
+
+def test_a_plus_sign_on_a_g_number_moves_as_rs274_runs_it() -> None:
+    from tests.support.rs274 import available, canonical_moves, motions, run_rs274
+    if not available():
+        pytest.skip("rs274 is not installed")
+    ours = [e for e in toolpath_events(io.StringIO(PLUS), file="p.ngc", dialect="linuxcnc") if "move" in e]
+    theirs = motions(canonical_moves(run_rs274(PLUS)))
+    assert [(e["move"], e["x"], e["z"]) for e in ours] == [(e["move"], e["x"], e["z"]) for e in theirs]
+
+
+@pytest.mark.parametrize("dialect", ["fanuc", "linuxcnc"])
+def test_a_plus_sign_keeps_the_program_as_written_and_writes_the_code_elsewhere(dialect: str) -> None:
+    out = io.StringIO()
+    translate(io.StringIO(PLUS), out, file="p.nc", source="linuxcnc", target=dialect)
+    assert ("G+1 X1" in out.getvalue()) == (dialect == "linuxcnc")

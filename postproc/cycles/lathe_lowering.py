@@ -94,7 +94,7 @@ def _lower(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iter
                 block.add(FeedMode(start_mode))  # the target starts in another feed mode: say the source's
                 block.changed()
         if foreign:
-            _turret(block)
+            _turret(block, ctx)
         if tracker is not None:
             if not plane_set and ("Motion" in sections or "CompoundMotion" in sections):
                 block.add(Plane("ZX"))
@@ -108,10 +108,14 @@ def _lower(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iter
         yield block
 
 
-def _turret(block: Block) -> None:
+def _turret(block: Block, ctx: Context) -> None:
     """A lathe's T indexes the turret: for a mill control it is a tool change, to the tool number alone
-    (T0101 is tool 1 with offset 1; a tool's offsets are the target's own)."""
+    (T0101 is tool 1 with offset 1; a tool's offsets are the target's own). A computed T (``T#1``) is
+    refused: which tool it names is known when it runs (the program is flattened for it)."""
     select = block.sections.get("ToolSelect")
+    if isinstance(select, ToolSelect) and isinstance(select.number, Expr):
+        raise UnsupportedError("a computed lathe T word (the tool and offset it selects are known when the "
+                               "program runs)", ctx.at(block))
     if isinstance(select, ToolSelect) and isinstance(select.number, int) and "ToolChange" not in block.sections:
         block.sections["ToolSelect"] = ToolSelect(lathe_tool(select.number))
         block.add(ToolChange())
@@ -161,10 +165,15 @@ class _Position:
             changed = True
         coords = sections.get("CoordinateSet")
         if isinstance(coords, CoordinateSet):
-            self.x = coords.axes.get("X", self.x)
-            self.z = coords.axes.get("Z", self.z)
-            if self.radius and "X" in coords.axes:
-                sections["CoordinateSet"] = CoordinateSet({**coords.axes, "X": coords.axes["X"] / 2.0})
+            x, z = coords.axes.get("X", self.x), coords.axes.get("Z", self.z)
+            self.x = None if isinstance(x, Expr) else x  # computed: where the tool is is known when it runs
+            self.z = None if isinstance(z, Expr) else z
+            diameter = coords.axes.get("X")
+            if self.radius and diameter is not None:
+                if isinstance(diameter, Expr):
+                    raise UnsupportedError("a computed X on a target that programs radii (halve it in the program)",
+                                           self.ctx.at(block))
+                sections["CoordinateSet"] = CoordinateSet({**coords.axes, "X": diameter / 2.0})
                 changed = True
         if changed:
             block.changed()

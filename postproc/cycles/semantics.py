@@ -59,6 +59,16 @@ class Semantics:
     unsupported: frozenset[str]
     """Cycles with no meaning under this family's words."""
 
+    # A family's rules are one constant shared by every run: a copy of the state that reaches them (the
+    # dry run of a loop copies the modal state, whose next-hole memo holds its resolve step) shares them
+    # too. Copying field by field is also what fails compiled: mypyc's __setstate__ assigns through the
+    # frozen class's refusing __setattr__ (FrozenInstanceError).
+    def __copy__(self) -> Semantics:
+        return self
+
+    def __deepcopy__(self, memo: dict[int, object]) -> Semantics:
+        return self
+
 
 FANUC: Final = Semantics("fanuc", rise_to_r=False, clear_above_r=False, position_at_clear=False,
                   dwell_ms=True, carry_over=True, any_axis_repeats=False, zero_repeat_error=False,

@@ -168,6 +168,15 @@ class WordBlockSyntax(Syntax):
                 values[up] = _milliseconds(block, ctx, num)
             elif up in INTEGER_LETTERS or up == "K":
                 if "." in num:
+                    if up == "K" and block.text is None:
+                        # a repeat count the run evaluated (K#2): spelled with a point, as the interpreter
+                        # spells every K (an arc's K is a length); Fanuc rounds a macro value to the
+                        # address's digits (Custom Macro B) [K], here only a whole one is taken
+                        if not float(num).is_integer():
+                            raise ProgramError(f"K (the repeat count) takes a whole number, the expression gives "
+                                               f"{num}", ctx.at(block, ctx.column_of(block, up)))
+                        values[up] = int(float(num))
+                        continue
                     raise ParseError(f"address {up} takes no decimal point ({up}{num})",
                                      ctx.at(block, ctx.column_of(block, up)))
                 values[up] = int(num)
@@ -327,13 +336,14 @@ class WordBlockSyntax(Syntax):
     def _data_setting(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],
                       used: set[str]) -> bool:
         """``G10 L2 P1 X.. Y..`` and the tool-offset forms -> ``DataSetting``; False (the block kept as
-        ``NativeCode``) for an L the dialect does not model."""
+        ``NativeCode``) for an L the dialect does not model, or a computed L or P (the table or entry it sets
+        is known only when it runs: the interpreter reads the block again with numbers)."""
         number = next(n for l, n in block.words if _UPPER[l] == "G" and g_key(n) == DATA_KEY)
         at = ctx.at(block, col_of_word(block, "G", number))
         ell = _index(values.get("L"))
         table = None if ell is None else self.DATA_TABLES.get(ell)
         native = f"G{number} ({self.table(ctx).native_g[DATA_KEY]})"
-        if table is None:
+        if table is None or isinstance(values.get("P"), Expr):
             block.add(NativeCode(self.DIALECT, native, block.text or ""))
             return False
         name, first, last = table

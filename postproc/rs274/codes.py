@@ -50,15 +50,23 @@ Row = tuple[str, str, str, object]
 
 
 def g_key(text: str) -> str:
-    """Canonical key of a G code number as written: '00' -> '0', '043.40' -> '43.4'. A signed number or
-    a lone point is no G code: it keeps its text, so the lookup fails and the reader says so."""
-    if not text.replace(".", "", 1).isdigit():
+    """Canonical key of a G code number as written: '00' -> '0', '043.40' -> '43.4', '+1' -> '1'. A
+    negative number or a lone point is no G code: it keeps its text, so the lookup fails and the reader
+    says so.
+
+    The plus sign is read as every other word's number reads it (``M+3``, ``X+1.``: the family's
+    readers take a signed number): LinuxCNC's rs274 runs ``G+1`` as ``G1`` and ``G+80`` as ``G80``
+    and refuses ``G-1`` ("Negative g code used") [V: rs274 2.9]; the EMC handbook's word is "a letter
+    followed by a real_value" [K]; Fanuc's manuals show no signed G code [?], read alike here.
+    """
+    digits = text[1:] if text[:1] == "+" else text
+    if not digits.replace(".", "", 1).isdigit():
         return text
-    if "." in text:
-        whole, _, frac = text.partition(".")
+    if "." in digits:
+        whole, _, frac = digits.partition(".")
         frac = frac.rstrip("0")
         return f"{int(whole or '0')}.{frac}" if frac else str(int(whole or "0"))
-    return str(int(text))
+    return str(int(digits))
 
 
 class CodeTable:

@@ -18,6 +18,7 @@ from __future__ import annotations
 from typing import Any
 
 from postproc.errors import ParseError, ProgramError
+from postproc.expr import Expr
 from postproc.ir import Block, CycleCall, Feed, Motion, SpindleSpeed, ToolSelect
 from postproc.lathe_sections import CoordinateSet, SpindleClamp, SpindleMode
 from postproc.context import Context
@@ -114,8 +115,9 @@ class LatheBlockSyntax(WordBlockSyntax):
     def g_sections(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],
                    used: set[str], cycle_block: bool) -> None:
         """The lathe's own codes first (coordinate setting, spindle mode), then the family's."""
-        if any(kind == "dwell" for _, kind, _, _ in codes.values()) and "U" in values \
-                and "X" not in values and "P" not in values:
+        dwell_u = any(kind == "dwell" for _, kind, _, _ in codes.values()) and "U" in values \
+            and "X" not in values and "P" not in values
+        if dwell_u:
             values["X"] = values.pop("U")  # a lathe's G04 U is the dwell in seconds, as G04 X
         for absolute, increment in (("X", "U"), ("Z", "W")):
             if absolute in values and increment in values:
@@ -131,9 +133,9 @@ class LatheBlockSyntax(WordBlockSyntax):
                 del codes[group]
             elif kind == "coordinate_set":
                 del codes[group]
-                axes = {k: float(v) for k, v in values.items() if k in "XZ"}
+                axes = {k: _real(v) for k, v in values.items() if k in "XZ"}
                 if "S" in values:
-                    block.add(SpindleClamp(float(values.pop("S"))))  # the clamp, not a speed
+                    block.add(SpindleClamp(_real(values.pop("S"))))  # the clamp, not a speed
                 elif not axes:
                     raise ProgramError(f"G{num} needs X/Z (coordinate setting) or S (spindle speed clamp)",
                                        ctx.at(block, col_of_word(block, "G", num)))
@@ -145,9 +147,17 @@ class LatheBlockSyntax(WordBlockSyntax):
                     raise ProgramError(f"G{num} sets absolute coordinates: {up} has no meaning here",
                                        ctx.at(block, ctx.column_of(block, up)))
         super().g_sections(block, ctx, codes, values, used, cycle_block)
+        if dwell_u:  # the word stays what it was read as (U), for the block's XML
+            values["U"] = values.pop("X")
+            used.add("U")
         motion = block.sections.get("Motion")
         if isinstance(motion, Motion) and motion.center is not None and "Y" in motion.center:
             raise ProgramError("an arc centre J is outside the ZX plane of a lathe", ctx.at(block, ctx.column_of(block, "J")))
+
+
+def _real(value: Any) -> Any:
+    """A number as a float, or a computed value (``Expr``, a program kept symbolically) as it is."""
+    return value if isinstance(value, Expr) else float(value)
 
 
 def _number(block: Block, ctx: Context, up: str, num: str) -> float:

@@ -14,6 +14,7 @@ from __future__ import annotations
 from typing import Any, ClassVar
 
 from ..errors import UnsupportedError
+from ..expr import Expr
 from ..ir import Block, Motion, Section
 from ..lathe_sections import LatheCycle
 from .lathe_words import FIRST_WORDS, ONE_WORDS, SECOND_WORDS
@@ -123,7 +124,7 @@ class LatheWordWriter(WordWriter):
 
     def coordinate_set_words(self, s: Any, block: Block) -> list[str]:
         code = self.code("coordinate_set", None, "coordinate setting", block)
-        return [code, *(axis + self.number(value, axis) for axis, value in s.axes.items())]
+        return [code, *(axis + self.length(value, block, axis) for axis, value in s.axes.items())]
 
     def distance_mode_words(self, s: Any, block: Block) -> list[str]:
         """G90/G91 where the table has them; a system A lathe (GSK, Fanuc T A) has none: its incremental
@@ -165,7 +166,7 @@ class LatheWordWriter(WordWriter):
 
     def spindle_clamp_words(self, s: Any, block: Block) -> list[str]:
         words = [] if "CoordinateSet" in block.sections else [self.code("coordinate_set", None, "a spindle speed clamp", block)]
-        return [*words, "S" + self.speed(s.rpm)]
+        return [*words, "S" + (self.expression(s.rpm, block) if isinstance(s.rpm, Expr) else self.speed(s.rpm))]
 
     def tool_select_words(self, s: Any, block: Block) -> list[str]:
         """A lathe's T: tool and offset in four digits (T0101)."""

@@ -337,7 +337,7 @@ class NgcWordBlockSyntax(WordBlockSyntax):
     def orient(self, block: Block, ctx: Context, num: str, values: dict[str, Any], used: set[str]) -> None:
         """The orient code takes the angle from R (Q is a timeout, P the direction)."""
         angle = values.get("R", ctx.setup.cycles.orient_angle)
-        block.add(SpindleOrientation(angle if isinstance(angle, Expr) else float(angle)))  # type: ignore[arg-type]
+        block.add(SpindleOrientation(angle if isinstance(angle, Expr) else float(angle)))
         used.update("RQP")
 
 

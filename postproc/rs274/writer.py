@@ -1036,6 +1036,9 @@ class WordWriter(Writer):
         """M19 orients to the angle the machine's parameters hold (the set-up's ``orientAngle``);
         any other angle cannot be written with it."""
         code = self.code("orient", None, "an oriented spindle stop", block)
+        if isinstance(s.angle, Expr):  # known when the program runs: the flattened program is checked then
+            self.unsupported(f"an oriented spindle stop at a computed angle ({code} orients to the set-up's "
+                             f"{self.ctx.setup.cycles.orient_angle:g} deg)", block)
         if abs(s.angle - self.ctx.setup.cycles.orient_angle) > 1e-9:
             self.unsupported(f"an oriented spindle stop at {s.angle:g} deg ({code} orients to the set-up's "
                              f"{self.ctx.setup.cycles.orient_angle:g} deg)", block)
@@ -1079,7 +1082,7 @@ class WordWriter(Writer):
         if why:
             self.unsupported(f"{s.describe()}: {why}", block)
         return [*self.WORK_OFFSET_SETTING.split(), f"P{s.index}",
-                *(axis + self.number(value, axis) for axis, value in s.values.items())]
+                *(axis + self.length(value, block, axis) for axis, value in s.values.items())]
 
     def machine_function_words(self, s: Any, block: Block) -> list[str]:
         """A machine-specific code as written, for a controller of its family; elsewhere it has no

@@ -112,7 +112,7 @@ class GrblWriter(WordWriter):
 
     def tool_length_offset_words(self, s: Any, block: Block) -> list[str]:
         if s.mode != "cancel":
-            register = f" H{s.register}" if s.register is not None else ""
+            register = f" H{s.register}" if isinstance(s.register, int) else ""
             self.unsupported(f"a tool length offset from a table (G43{register}; grbl has only G43.1)", block)
         return super().tool_length_offset_words(s, block)
 

@@ -170,10 +170,15 @@ class LinuxcncWriter(WordWriter):
         units = block.sections.get("Units")
         if units is None or units.system == self.units_before or self.inverse_time:  # type: ignore[attr-defined]
             return super().feed_words(s, block)
-        self.modal.feed = s.value
         modal = self.modal
         after, modal.units = modal.units, self.units_before
-        words = ["F" + self.feed_number(s.value * (MM_PER_INCH if after == "inch" else 1.0 / MM_PER_INCH), block)]
+        factor = MM_PER_INCH if after == "inch" else 1.0 / MM_PER_INCH
+        if isinstance(s.value, Expr):  # F#1 under G20: F[#1*25.4], the same rate in the units before the block
+            modal.feed = None  # known only when the program runs
+            words = ["F" + self.expression(Binary("mul", s.value, Num(factor)), block)]
+        else:
+            modal.feed = s.value
+            words = ["F" + self.feed_number(s.value * factor, block)]
         modal.units = after
         return words
 
@@ -418,7 +423,7 @@ class LinuxcncWriter(WordWriter):
 
     def spindle_orientation_words(self, s: Any, block: Block) -> list[str]:
         """M19 R<angle>: a bare M19 leaves the angle to the machine's default."""
-        return [self.code("orient", None, "an oriented spindle stop", block), "R" + self.number(float(s.angle))]
+        return [self.code("orient", None, "an oriented spindle stop", block), "R" + self.length(s.angle, block)]
 
 
 def _grown(counter: Var, step: float) -> Binary:
