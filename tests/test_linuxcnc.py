@@ -25,6 +25,7 @@ import postproc_linuxcnc
 from postproc_linuxcnc import Linuxcnc
 from postproc.rs274.ngc_lexer import lex_block
 from tests.support import rs274
+from tests.support.tools import with_tools
 
 ROOT = Path(__file__).resolve().parents[1]
 EXAMPLES = sorted((ROOT / "examples" / "linuxcnc").glob("*.ngc"))
@@ -318,7 +319,7 @@ def test_examples_exist_and_simulate() -> None:
     assert len(EXAMPLES) >= 2
     for path in EXAMPLES:
         with open(path, encoding="utf-8", newline="") as src:
-            got = list(toolpath_events(src, file=str(path), dialect="linuxcnc"))
+            got = list(toolpath_events(src, file=str(path), dialect="linuxcnc", setup=with_tools()))
         assert any(e.get("move") == "feed" for e in got), path
 
 
