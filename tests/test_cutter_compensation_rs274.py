@@ -171,7 +171,15 @@ def _arc(rng: random.Random, p: Program) -> None:
     for _ in range(quarters):
         vx, vy = (-vy, vx) if ccw else (vy, -vx)
     end = (cx + vx, cy + vy)
-    p.add(("G3" if ccw else "G2", None), ("X", end[0]), ("Y", end[1]), ("I", i), ("J", j))
+    words: list[tuple[str, float | None]] = [("G3" if ccw else "G2", None), ("X", end[0]), ("Y", end[1])]
+    if quarters in (1, 3) and (i == 0 or j == 0) and rng.random() < 0.5:  # the R form (a radius on the grid)
+        words.append(("R", math.hypot(i, j) * (-1.0 if quarters == 3 else 1.0)))
+    else:
+        words += [("I", i), ("J", j)]
+    if rng.random() < 0.15:  # a helix
+        p.pos[2] = _grid(rng, -5, 5)
+        words.append(("Z", p.pos[2]))
+    p.add(*words)
     p.last_dir = (-vy, vx) if ccw else (vy, -vx)
     p.pos[0], p.pos[1] = end
 
