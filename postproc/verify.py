@@ -429,7 +429,9 @@ def verify_lines(lines_in: Iterable[str], lines_out: Iterable[str], *, file_in: 
         from .plugins import default_registry
         reading = (registry or default_registry()).dialect(source)
         overlay.begin(start_position(setup), start_position(target_setup), reading.reads_lathe(setup))
-        events_in, events_out = overlay.source_events(events_in), overlay.target_events(events_out)
+        # the picture shows the paths compared (the controlled points), where the deviation is circled
+        events_in = overlay.source_events(_controlled(iter(events_in)))
+        events_out = overlay.target_events(_controlled(iter(events_out)))
     report = compare(events_in, events_out, start_in=start_position(setup),
                      start_out=start_position(target_setup), tolerance=tolerance)
     report.allow_ignored = allow_ignored

@@ -163,3 +163,19 @@ def test_a_dialect_without_rules_keeps_the_setting_for_verify() -> None:
     # Fanuc's start-up and corner rules are not modelled yet: the path stays the programmed one
     got = moves(run("G21 G90 G0 X0 Y0\nG41 D1 G1 X10. F100.\nG40 G0 X0\nM30\n"))
     assert all("controlled" not in m for m in got)
+
+
+def test_the_verify_picture_draws_the_controlled_paths_it_compares() -> None:
+    from postproc.overlay import Overlay
+    setup = machine(T1=(100.0, None))
+    source = "G21 G90\nG0 X0 Y0 Z200.\nG43 H1 Z10.\nG1 X10. F100.\nM30\n"
+    written = "G21 G90\nG0 X0 Y0 Z200.\nG0 Z110.\nG1 X10. F100.\nM30\n"
+    overlay = Overlay()
+    try:
+        verify_lines(io.StringIO(source), io.StringIO(written), file_in="a.nc", file_out="b.nc", source="fanuc",
+                     target="fanuc", setup=setup, overlay=overlay)
+        assert list(overlay.source.all_points()) == list(overlay.target.all_points())
+        assert max(z for _, _, z in overlay.source.all_points()) == 200
+        assert (10.0, 0.0, 110.0) in list(overlay.source.all_points())  # the cut at the controlled Z
+    finally:
+        overlay.close()
