@@ -179,3 +179,14 @@ def test_the_verify_picture_draws_the_controlled_paths_it_compares() -> None:
         assert (10.0, 0.0, 110.0) in list(overlay.source.all_points())  # the cut at the controlled Z
     finally:
         overlay.close()
+
+
+def test_the_cutter_queue_is_bounded() -> None:
+    # the compensated line (line 3) and 9,999 moves along Z wait for the next move in the plane; the
+    # 10,000th (line 3 + 10,000) is refused rather than held
+    from postproc.compensation.cutter_radius import QUEUE_LIMIT
+    zs = "".join(f"G1 Z{-(k % 2)}\n" for k in range(QUEUE_LIMIT))
+    text = f"G21 G17 G90 G40 G49\nG0 X0 Y0 Z0\nG41 D1 G1 X10 Y0 F100\n{zs}G40 G1 X0 Y0\nM2\n"
+    assert errors(text, "linuxcnc", machine(T1=(0.0, 1.0))) == [
+        f"p.nc:{3 + QUEUE_LIMIT}:1: error: cutter compensation waits for a move in the plane for more than "
+        f"{QUEUE_LIMIT} moves and events (move in the plane, or cancel compensation, sooner)"]
