@@ -167,8 +167,8 @@ class Simulator:
         """The controlled point of the last move written, rounded (while ``compensating``)."""
         self.out: Callable[[Event], None] = _nowhere
         """Where released events go (the ``emit`` of the block being run)."""
-        self.spindle_tool = 0
-        """The tool a tool change put in the spindle (0: none)."""
+        self.spindle_tool: int | None = None
+        """The tool the last tool change put in the spindle (None before any: the machine's, unknown)."""
 
     # -- one block ---------------------------------------------------------------------------------
     def block(self, block: Block, emit: Callable[[Event], None]) -> None:
@@ -217,7 +217,7 @@ class Simulator:
                 if self.cutter is not None and self.cutter.side is not None:
                     raise ProgramError("a tool change with cutter compensation on cannot be run (cancel it "
                                        "first)", self._at(block))
-                self.spindle_tool = self.modal.tool if isinstance(self.modal.tool, int) else 0
+                self.spindle_tool = self.modal.tool if isinstance(self.modal.tool, int) else None
                 if self.spindle in ("cw", "ccw"):
                     self.spindle_event(line, "stop", emit)
                 emit({"line": line, "event": "tool", "number": self.modal.tool})
@@ -505,6 +505,10 @@ class Simulator:
             if self.cutter.rules.register_absent != "tool":
                 raise UnsupportedError("cutter compensation without its register cannot be simulated",
                                        self._at(block))
+            if self.spindle_tool is None:
+                raise ProgramError("cutter compensation without its register takes the tool in the spindle, which "
+                                   "is not known here (no tool change before it): program its register",
+                                   self._at(block))
             register = self.spindle_tool
         try:
             return self.tools.radius(register)

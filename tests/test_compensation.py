@@ -150,6 +150,9 @@ def test_moves_along_z_wait_with_the_corner_and_take_its_point() -> None:
     (("G41 D1", "G42 D1"), "p.nc:3:1: error: cutter compensation is turned on while it is on (cancel it first)"),
     (("G0 X0 Y0 Z5", "G41 D1 G1 X10 Y0 F100", "G81 X20 Y0 Z-1 R1"),
      "p.nc:4:1: error: a canned cycle with cutter compensation on cannot be run (cancel it first)"),
+    (("G0 X0 Y0", "G41 G1 X10 Y0 F100"),
+     "p.nc:3:1: error: cutter compensation without its register takes the tool in the spindle, which is not known "
+     "here (no tool change before it): program its register"),
     (("G41 D9", "G1 X10 F100"),
      'p.nc:2:5: error: the set-up gives tool radius register 9 no value: add <Tool number="9" radius=".."/> '
      "to its <Tools>, or write the register in the program"),
@@ -190,3 +193,12 @@ def test_the_cutter_queue_is_bounded() -> None:
     assert errors(text, "linuxcnc", machine(T1=(0.0, 1.0))) == [
         f"p.nc:{3 + QUEUE_LIMIT}:1: error: cutter compensation waits for a move in the plane for more than "
         f"{QUEUE_LIMIT} moves and events (move in the plane, or cancel compensation, sooner)"]
+
+
+def test_without_h_or_d_linuxcnc_takes_the_tool_in_the_spindle_not_the_one_selected_since() -> None:
+    # [V] rs274: T1 M6 T2 G43 applies tool 1's length; G41 without D takes tool 1's radius
+    setup = machine(T1=(10.0, 1.0), T2=(20.0, 2.0))
+    got = moves(run("G21 G17 G90\nT1 M6\nT2\nG43\nG0 X0 Y0 Z5\nG41 G1 X10 Y0 F100\nG40 G1 X20 Y0\nM2\n",
+                    "linuxcnc", setup))
+    assert [(m["controlled"]["x"], m["controlled"]["y"], m["controlled"]["z"]) for m in got] == [
+        (0, 0, 15), (10, 1, 15), (20, 0, 15)]

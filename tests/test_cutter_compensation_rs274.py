@@ -1,9 +1,9 @@
 """Differential test: postproc's tool length and cutter radius compensation against LinuxCNC's interpreter.
 
 A seeded generator writes LinuxCNC programs that run G41/G42 (with a D register, or without one after a
-tool change: the spindle tool's radius) over lines and arcs, both sides, entry and exit moves, inside and
+tool change: the spindle tool's radius, whatever T was selected since) over lines and arcs, both sides, entry and exit moves, inside and
 outside corners (tangent ones too), moves along Z only and rapids under compensation, coolant and dwell
-events that wait behind a queued move, and G43 tool length offsets; each is run through postproc's
+events that wait behind a queued move, and G43 tool length offsets (with H, or without: the spindle tool); each is run through postproc's
 ``toolpath`` (linuxcnc dialect) and through ``rs274`` with the same tool table. The controlled points must
 agree within ``TOLERANCE`` move by move (arc centres too), the events in the same order, and a program
 rs274 refuses (a gouge, an entry move too short, an arc after G40) must be refused by postproc at the
@@ -211,8 +211,10 @@ def generate(seed: int) -> Program:
     if rng.random() < 0.6:
         tool = rng.randint(1, 6)
         p.add(("T", float(tool)), ("M6", None))
+        if rng.random() < 0.3:
+            p.add(("T", float(rng.randint(1, 6))))  # selected, not loaded: G43 and G41 without H/D ignore it
         if rng.random() < 0.7:
-            p.add(("G43", None), ("H", float(tool)))
+            p.add(("G43", None), *([("H", float(tool))] if rng.random() < 0.5 else []))
     start = [_grid(rng, -20, 20), _grid(rng, -20, 20), _grid(rng, 0, 10)]
     p.add(("G0", None), ("X", start[0]), ("Y", start[1]), ("Z", start[2]))
     p.pos = list(start)

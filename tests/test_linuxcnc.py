@@ -243,9 +243,15 @@ def test_g53_moves_in_the_mode_in_force_which_must_be_g0_or_g1() -> None:
         "t.ngc:3:1: error: G53 needs G0 or G1 in force"]
 
 
-def test_g43_without_h_uses_the_selected_tool() -> None:
+def test_g43_without_h_uses_the_tool_in_the_spindle() -> None:
     blocks = read("T3 M6\nG43 G0 Z10\n")
     assert blocks[1].sections["ToolLengthOffset"] == ToolLengthOffset("positive", 3)
+    # [V] rs274: T1 M6 T2 G43 applies tool 1 (the loaded one), not the selected T2; T2 M6 G43 in one block
+    # changes the tool first
+    assert read("T1 M6\nT2\nG43\n")[2].sections["ToolLengthOffset"] == ToolLengthOffset("positive", 1)
+    assert read("T1 M6\nT2 M6 G43\n")[1].sections["ToolLengthOffset"] == ToolLengthOffset("positive", 2)
+    assert errors("T2\nG43 G0 Z10\n") == [
+        "t.ngc:2:1: error: G43 without H uses the loaded tool, which is not known here: program H"]
 
 
 def test_m19_takes_its_angle_from_r() -> None:
