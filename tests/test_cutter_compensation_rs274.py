@@ -5,7 +5,7 @@ tool change: the spindle tool's radius, whatever T was selected since) over line
 outside corners (tangent ones too), moves along Z only and rapids under compensation, coolant and dwell
 events that wait behind a queued move, and G43 tool length offsets (with H, or without: the spindle tool); each is run through postproc's
 ``toolpath`` (linuxcnc dialect) and through ``rs274`` with the same tool table. The controlled points must
-agree within ``TOLERANCE`` move by move (arc centres too), the events in the same order, and a program
+agree within ``TOLERANCE`` move by move (arc centres and feeds too), the events in the same order, and a program
 rs274 refuses (a gouge, an entry move too short, an arc after G40) must be refused by postproc at the
 same block.
 
@@ -264,6 +264,7 @@ def rs274_path(calls: list[str], end: int) -> list[dict[str, Any]]:
     out: list[dict[str, Any]] = []
     pos = (0.0, 0.0, 0.0)
     dz = 0.0
+    feed = 0.0
     flood = False
     for line in calls:
         m = _CALL.match(line.strip())
@@ -275,16 +276,20 @@ def rs274_path(calls: list[str], end: int) -> list[dict[str, Any]]:
         nums = [float(t) for t in re.split(r"[,\s]+", args.strip()) if re.fullmatch(r"-?\d+(\.\d*)?", t)]
         if name == "USE_TOOL_LENGTH_OFFSET":
             dz = nums[2] / SCALE
+        elif name == "SET_FEED_RATE":
+            feed = nums[0]  # mm/min (the F word is not scaled)
         elif name in ("STRAIGHT_TRAVERSE", "STRAIGHT_FEED"):
             new = (nums[0] / SCALE, nums[1] / SCALE, nums[2] / SCALE)
             if max(abs(a - b) for a, b in zip(new, pos)) > 1e-9:
                 out.append({"move": "rapid" if name == "STRAIGHT_TRAVERSE" else "feed",
                             "x": new[0], "y": new[1], "z": new[2] + dz})
+                if name == "STRAIGHT_FEED":
+                    out[-1]["f"] = feed
             pos = new
         elif name == "ARC_FEED":
             e1, e2, c1, c2, rotation, e3 = nums[:6]
             out.append({"move": "ccw" if rotation > 0 else "cw", "x": e1 / SCALE, "y": e2 / SCALE,
-                        "z": e3 / SCALE + dz, "cx": c1 / SCALE, "cy": c2 / SCALE, "cz": pos[2] + dz})
+                        "z": e3 / SCALE + dz, "cx": c1 / SCALE, "cy": c2 / SCALE, "cz": pos[2] + dz, "f": feed})
             pos = (e1 / SCALE, e2 / SCALE, e3 / SCALE)
         elif name in ("FLOOD_ON", "FLOOD_OFF"):
             if flood != (name == "FLOOD_ON"):
@@ -305,7 +310,7 @@ def postproc_path(p: Program) -> tuple[list[dict[str, Any]], list[int]]:
     for ev in events:
         if "move" in ev:
             point = {**ev, **ev.get("controlled", {})}
-            out.append({k: point[k] for k in ("move", "x", "y", "z", "cx", "cy", "cz") if k in point})
+            out.append({k: point[k] for k in ("move", "x", "y", "z", "cx", "cy", "cz", "f") if k in point})
         elif ev.get("event") == "dwell" or (ev.get("event") == "coolant" and ev["on"] != flood):
             flood = ev.get("on", flood)
             out.append({k: v for k, v in ev.items() if k != "line"})  # coolant: changes only, as rs274_path
