@@ -330,6 +330,8 @@ class Simulator:
         modal.apply(sections)
         self.scale = MM_PER_INCH if modal.units == "inch" else 1.0
         self.incremental = modal.distance == "incremental"
+        if self.cutter is not None:
+            self.cutter.sweep_slack = 0.001 if modal.units == "inch" else 0.0254
         s = sections.get("Feed")
         if s is not None:
             self._set_feed(s.value)  # type: ignore[attr-defined]

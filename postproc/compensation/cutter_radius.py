@@ -105,8 +105,9 @@ class CutterRadius:
         self.arc_banned = False
         """The move after a cancel must be straight (``rules.arc_after_cancel``)."""
         self.sweep_slack = 0.0254
-        """How much farther (radians) a corrected arc may sweep than programmed: LinuxCNC compares the
-        sweep with 0.001 in an inch program, 0.0254 in a metric one (set by the simulator)."""
+        """How much farther (radians) a corrected arc may sweep than programmed before it gouges: [V]
+        LinuxCNC's ``move_endpoint_and_flush`` compares the sweep with a length in program units, 0.001 in
+        an inch program and 0.0254 in a metric one (the simulator sets it with the units)."""
 
     # -- state -------------------------------------------------------------------------------------
     @property
