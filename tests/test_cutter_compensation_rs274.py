@@ -9,8 +9,9 @@ agree within ``TOLERANCE`` move by move (arc centres and feeds too), the events 
 rs274 refuses (a gouge, an entry move too short, an arc after G40) must be refused by postproc at the
 same block.
 
-rs274 prints 4 decimals, so it runs the program scaled by ``SCALE`` (every length word and the tool
-table): its output divided back resolves 1e-7 mm. Every rule it checks is an angle or a ratio, so the
+A quarter of the programs are in inches (G20: the same numbers read as inches, the radii the same
+lengths). rs274 prints 4 decimals, so it runs the program scaled by ``SCALE`` (every length word and the
+tool table; ten times more in inches): its output divided back resolves 1e-7 mm (2.5e-7 mm in inches). Every rule it checks is an angle or a ratio, so the
 scaled program takes the same decisions. Its tool table is in inches (RS274_NOTES.md); its canonical
 moves leave the tool length out (``USE_TOOL_LENGTH_OFFSET`` says it), so this test adds it.
 
@@ -72,6 +73,9 @@ class Program:
     blocks: list[list[tuple[str, float | None]]] = field(default_factory=list)
     radii: dict[int, float] = field(default_factory=dict)
     lengths: dict[int, float] = field(default_factory=dict)
+    """Tool radii and lengths by register, mm."""
+    unit: float = 1.0
+    """mm per program unit (25.4 in a G20 program)."""
     pos: list[float] = field(default_factory=lambda: [0.0, 0.0, 0.0])
     last_dir: tuple[float, float] = (1.0, 0.0)
 
@@ -92,10 +96,15 @@ class Program:
             out.append(" ".join(parts))
         return "\n".join(out) + "\n"
 
+    @property
+    def scale(self) -> float:
+        """How much larger rs274 runs it."""
+        return SCALE * (10.0 if self.unit != 1.0 else 1.0)
+
     def tool_table(self) -> str:
-        """rs274's table, in inches, at ``SCALE``."""
-        return "".join(f"T{n} P{n} D{2 * self.radii[n] * SCALE / MM_PER_INCH!r} "
-                       f"Z{self.lengths.get(n, 0.0) * SCALE / MM_PER_INCH!r} ;\n" for n in sorted(self.radii))
+        """rs274's table, in inches, at ``scale``."""
+        return "".join(f"T{n} P{n} D{2 * self.radii[n] * self.scale / MM_PER_INCH!r} "
+                       f"Z{self.lengths.get(n, 0.0) * self.scale / MM_PER_INCH!r} ;\n" for n in sorted(self.radii))
 
     def setup(self) -> MachineSetup:
         setup = MachineSetup()
@@ -206,7 +215,10 @@ def generate(seed: int) -> Program:
     # whole thousandths of an inch: rs274's table (inches) holds them exactly, so neither side rounds
     p.radii = {n: rng.choice([2, 4, 8, 12, 16, 20, 24, 32]) * 0.127 for n in range(1, 7)}
     p.lengths = {n: rng.choice([0, 500, 1000, 1625]) * 0.0254 for n in range(1, 7)}
-    p.add(("G21", None), ("G17", None), ("G90", None), ("G40", None), ("G49", None), ("G94", None), ("F", 200.0))
+    if rng.random() < 0.25:
+        p.unit = MM_PER_INCH
+    p.add(("G20" if p.unit != 1.0 else "G21", None), ("G17", None), ("G90", None), ("G40", None), ("G49", None),
+          ("G94", None), ("F", 200.0))
     tool = None
     if rng.random() < 0.6:
         tool = rng.randint(1, 6)
@@ -258,13 +270,16 @@ def generate(seed: int) -> Program:
 _CALL = re.compile(r"^N(\d+|\.+)\s+([A-Z_]+)\((.*)\)\s*$")
 
 
-def rs274_path(calls: list[str], end: int) -> list[dict[str, Any]]:
-    """rs274's moves with the tool length added (controlled points), coolant and dwell, in mm; the
-    block ``end`` (M2) is left out: what M2 resets (coolant off...) is no part of the path."""
+def rs274_path(calls: list[str], end: int, scale: float, unit: float) -> list[dict[str, Any]]:
+    """rs274's moves with the tool length added (controlled points), coolant and dwell, in mm (its calls
+    are in program units times ``scale``); the block ``end`` (M2) is left out: what M2 resets (coolant
+    off...) is no part of the path."""
+    mm = unit / scale
     out: list[dict[str, Any]] = []
     pos = (0.0, 0.0, 0.0)
     dz = 0.0
     feed = 0.0
+    units = 1.0  # mm per unit of the calls made so far (rs274 sets a block's F before its G20/G21)
     flood = False
     for line in calls:
         m = _CALL.match(line.strip())
@@ -275,11 +290,13 @@ def rs274_path(calls: list[str], end: int) -> list[dict[str, Any]]:
             break
         nums = [float(t) for t in re.split(r"[,\s]+", args.strip()) if re.fullmatch(r"-?\d+(\.\d*)?", t)]
         if name == "USE_TOOL_LENGTH_OFFSET":
-            dz = nums[2] / SCALE
+            dz = nums[2] * mm
+        elif name == "USE_LENGTH_UNITS":
+            units = MM_PER_INCH if "INCHES" in args else 1.0
         elif name == "SET_FEED_RATE":
-            feed = nums[0]  # mm/min (the F word is not scaled)
+            feed = nums[0] * units  # mm/min (the F word is not scaled)
         elif name in ("STRAIGHT_TRAVERSE", "STRAIGHT_FEED"):
-            new = (nums[0] / SCALE, nums[1] / SCALE, nums[2] / SCALE)
+            new = (nums[0] * mm, nums[1] * mm, nums[2] * mm)
             if max(abs(a - b) for a, b in zip(new, pos)) > 1e-9:
                 out.append({"move": "rapid" if name == "STRAIGHT_TRAVERSE" else "feed",
                             "x": new[0], "y": new[1], "z": new[2] + dz})
@@ -288,9 +305,9 @@ def rs274_path(calls: list[str], end: int) -> list[dict[str, Any]]:
             pos = new
         elif name == "ARC_FEED":
             e1, e2, c1, c2, rotation, e3 = nums[:6]
-            out.append({"move": "ccw" if rotation > 0 else "cw", "x": e1 / SCALE, "y": e2 / SCALE,
-                        "z": e3 / SCALE + dz, "cx": c1 / SCALE, "cy": c2 / SCALE, "cz": pos[2] + dz, "f": feed})
-            pos = (e1 / SCALE, e2 / SCALE, e3 / SCALE)
+            out.append({"move": "ccw" if rotation > 0 else "cw", "x": e1 * mm, "y": e2 * mm,
+                        "z": e3 * mm + dz, "cx": c1 * mm, "cy": c2 * mm, "cz": pos[2] + dz, "f": feed})
+            pos = (e1 * mm, e2 * mm, e3 * mm)
         elif name in ("FLOOD_ON", "FLOOD_OFF"):
             if flood != (name == "FLOOD_ON"):
                 flood = name == "FLOOD_ON"
@@ -320,8 +337,8 @@ def postproc_path(p: Program) -> tuple[list[dict[str, Any]], list[int]]:
 def check(seed: int) -> None:
     p = generate(seed)
     try:
-        theirs: list[dict[str, Any]] | None = rs274_path(run_rs274(p.text(SCALE), tool_table=p.tool_table()),
-                                                       len(p.blocks))
+        theirs: list[dict[str, Any]] | None = rs274_path(run_rs274(p.text(p.scale), tool_table=p.tool_table()),
+                                                       len(p.blocks), p.scale, p.unit)
         refused_at = None
     except RS274Error as err:
         theirs = None

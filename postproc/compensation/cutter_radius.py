@@ -26,6 +26,9 @@ Point = tuple[float, float]
 Event = dict[str, Any]
 TAU = 2.0 * math.pi
 HALF_PI = math.pi / 2.0
+SAME_ANGLE = 1e-9
+"""Radians within which an arc's end is at its start (a full turn): LinuxCNC compares exactly in program
+units, the simulation works in mm, whose conversion leaves a few ulps."""
 QUEUE_LIMIT = 10_000
 """Most moves and events waiting behind a compensated move for the next move in the plane."""
 RADIUS_MISMATCH = 0.01
@@ -71,6 +74,8 @@ def find_turn(start: Point, centre: Point, turn: int, end: Point) -> float:
         return 0.0
     a = math.atan2(start[1] - centre[1], start[0] - centre[0])
     b = math.atan2(end[1] - centre[1], end[0] - centre[0])
+    if abs(b - a) < SAME_ANGLE:
+        b = a
     if turn > 0:
         if b <= a:
             b += TAU
