@@ -34,6 +34,8 @@ from timing import Runs, paired_ratio, rate, rounds  # noqa: E402
 from workloads import PLAIN, PY, at_least_lines, cached, prepare, translate  # noqa: E402
 
 PEERS = [PY, str(HERE / "peers.py")]
+MACHINE = HERE / "machine.xml"
+"""The tools of the generated programs (their G43 H01-H03): toolpath and verify simulate the lengths."""
 RSS_TARGET_MB = 64.0
 FLAT_TARGET = 1.10
 """Peak RSS at the largest size over the smallest: "flat" allows 10 % for ten times the blocks."""
@@ -68,10 +70,11 @@ def size_commands(blocks: int, src: Path, work: Path, pygcode_max: int) -> dict[
                                                       *translate_options(target))
     commands["gcode-lib-state"] = [*PEERS, "gcode-lib-state", str(src)]
     commands["toolpath --format jsonl"] = [*workloads.postproc(), "toolpath", str(src), "--dialect", "fanuc",
-                                           "--format", "jsonl", "-o", str(work / "toolpath.jsonl")]
+                                           "--machine", str(MACHINE), "--format", "jsonl",
+                                           "-o", str(work / "toolpath.jsonl")]
     commands["gcode-lib-state x 2 files"] = [*PEERS, "gcode-lib-state", str(src), str(prepared)]
     commands["verify fanuc / linuxcnc"] = [*workloads.postproc(), "verify", str(src), str(prepared),
-                                           "--from", "fanuc", "--to", "linuxcnc"]
+                                           "--from", "fanuc", "--to", "linuxcnc", "--machine", str(MACHINE)]
     return commands
 
 

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import abc
 from pathlib import Path
-from typing import Callable, ClassVar, Generic, Iterable, Iterator, TypeVar, cast
+from typing import TYPE_CHECKING, Callable, ClassVar, Generic, Iterable, Iterator, TypeVar, cast
 
 from .comments import CommentSyntax
 from .errors import Diagnostics
@@ -20,6 +20,9 @@ from .context import Context
 from .cycle_words import CycleWords
 from .syntax import Pipeline, load_pipeline
 from .writer_base import Writer as Writer
+
+if TYPE_CHECKING:
+    from .compensation.rules import CutterRules
 
 
 class Reader(abc.ABC):
@@ -119,6 +122,9 @@ class Dialect:
     number)."""
     CUTTER_COMPENSATION: ClassVar[bool] = True
     """Cutter radius compensation (left/right) exists (the writer refuses it otherwise)."""
+    CUTTER_RULES: ClassVar[CutterRules | None] = None
+    """How the controller compensates the cutter radius (``postproc.compensation.rules``), for the
+    simulation; None: compensation is not simulated for this dialect (``verify`` compares the setting)."""
     TOOL_LENGTH_OFFSET: ClassVar[bool] = True
     """Tool length offset from a table exists (the writer refuses it otherwise)."""
     TAPE_MARKS: ClassVar[bool] = False
@@ -192,7 +198,9 @@ class Dialect:
         table: dict[str, object] = {}
         for klass in reversed(cls.__mro__):
             for key, value in vars(klass).items():
-                if key.isupper() and key not in skip and not key.startswith("_"):
+                if key == "CUTTER_RULES":
+                    table[key] = None if value is None else value.name  # whose rules, by name
+                elif key.isupper() and key not in skip and not key.startswith("_"):
                     table[key] = sorted(value) if isinstance(value, frozenset) else value
         return table
 

@@ -93,8 +93,8 @@ class WorkOffsetData(Entry):
 
 @dataclass(frozen=True)
 class ToolData(Entry):
-    """``<Tool number="1" length="152.4"/>`` (a mill's length register H1) or ``<Tool number="1"
-    x="-2.5" z="-1.2"/>`` (a lathe's offset 01 of ``T0101``): what the controller adds to the programmed
+    """``<Tool number="1" length="152.4" radius="5.0"/>`` (a mill's length register H1 and radius register
+    D1) or ``<Tool number="1" x="-2.5" z="-1.2"/>`` (a lathe's offset 01 of ``T0101``): what the controller adds to the programmed
     point while the offset is in force."""
 
     TAG = "Tool"
@@ -102,6 +102,9 @@ class ToolData(Entry):
     number: int = setting(ge=0, le=9999)
     length: float | None = coordinate()
     """G43/G44 tool length: G43 adds it to Z, G44 subtracts it."""
+    radius: float | None = coordinate()
+    """Cutter radius G41/G42 offsets the path by (register D n; a negative radius puts the cutter on the
+    other side, as Fanuc and LinuxCNC do). A LinuxCNC tool table gives diameters: halve them."""
     x: float | None = coordinate()
     z: float | None = coordinate()
     """Lathe geometry offsets, added to X (as the set-up's X: diameter on a diameter lathe) and Z."""

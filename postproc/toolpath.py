@@ -8,9 +8,11 @@ such a controller first, so cycles arrive expanded as ``CompoundMotion``.
 Assumptions (a simulator knows no machine data):
 - Positions are absolute coordinates in mm from the set-up's start position (``Machine startX``...).
   Every work offset (G54...) is zero until the program sets one (G10 L2: ``DataSetting``), and then
-  shifts the absolute points programmed in that work system; tool length offsets are taken as zero; the
-  path is the programmed point, cutter compensation is not applied (``verify`` compares those settings
-  instead, see ``UNSIMULATED``).
+  shifts the absolute points programmed in that work system.
+- Tool length (G43/G44/G49) and, for a dialect with ``CUTTER_RULES``, cutter radius compensation move the
+  controlled point (``postproc.compensation``); a move's event keeps the programmed point and carries the
+  controlled one beside it (``controlled``) when they differ. Register values come from the program's own
+  data settings, else the set-up's ``<Tools>``; a register with neither is a located error.
 - Machine coordinates (G53) are therefore work coordinates until a G10 sets an offset; they are
   always absolute.
 - A reference return (G28/G30) rapids to the intermediate point, then to the reference point, taken as
@@ -39,6 +41,10 @@ from .dialect import Dialect
 from .errors import Diagnostics, Location, PostprocError, ProgramError, UnsupportedError
 from .expr import Expr
 from .cycles.lathe_lowering import lathe_tool
+from .compensation.cutter_radius import CutterRadius, Item, Segment
+from .compensation.rules import CutterRules
+from .compensation.tool_length import AXIS as LENGTH_AXIS, ToolLength
+from .compensation.tool_table import ToolTable
 from .event_order import after_motion
 from .geometry import CENTRE_KEYS, PLACES
 from .ir import Block, DataSetting, MachineFunction, Motion, Section
@@ -101,7 +107,7 @@ def start_position(setup: MachineSetup) -> dict[str, float]:
 class Simulator:
     """Modal state and position of one program run; ``block`` emits the block's events in order."""
 
-    def __init__(self, ctx: Context, travel_warn: bool = False) -> None:
+    def __init__(self, ctx: Context, travel_warn: bool = False, cutter_rules: CutterRules | None = None) -> None:
         setup = ctx.setup
         self.ctx = ctx
         self.axes = tuple(setup.machine.axes)
@@ -139,6 +145,7 @@ class Simulator:
         (``UNSIMULATED``): ``verify`` compares these between the two programs."""
         self.settings: dict[str, str] = dict(_INITIAL_SETTINGS)
         self.undeclared: set[str] = set()
+        """Machine-specific codes warned about as undeclared (once each)."""
         self.offsets: dict[int, dict[str, float]] = {}
         """Work offsets a G10 set, mm per axis, by work system (1 = G54; 0 the external offset)."""
         self.shift: dict[str, float] = {}
@@ -149,7 +156,19 @@ class Simulator:
         """A move beyond the travel is a warning (``--on-unsupported warn``), not an error."""
         if setup.travel_limited():
             self.travel = TravelCheck(self, self._travel_report)
-        """Machine-specific codes warned about as undeclared (once each)."""
+        self.tools = ToolTable(setup)
+        self.length = ToolLength(self.tools)
+        self.cutter = None if cutter_rules is None else CutterRadius(cutter_rules, self._release)
+        """Cutter radius compensation, when the dialect's rules are known (else it stays a setting)."""
+        self.compensating = False
+        """Moves go through ``postproc.compensation`` (an offset is in force, a move waits in the cutter
+        queue, or the controlled point has not yet met the programmed one again)."""
+        self.crounded = dict(self.rounded)
+        """The controlled point of the last move written, rounded (while ``compensating``)."""
+        self.out: Callable[[Event], None] = _nowhere
+        """Where released events go (the ``emit`` of the block being run)."""
+        self.spindle_tool: int | None = None
+        """The tool the last tool change put in the spindle (None before any: the machine's, unknown)."""
 
     # -- one block ---------------------------------------------------------------------------------
     def block(self, block: Block, emit: Callable[[Event], None]) -> None:
@@ -162,6 +181,9 @@ class Simulator:
         self.current = block
         if "InProfile" in sections:
             return  # the controller runs a profile block only through its cycle
+        self.out = emit
+        if self.compensating:
+            emit = self._event
         get: Callable[[str], Any] = sections.get
         native = get("NativeCode")
         if native is not None and not native.inert:
@@ -177,6 +199,10 @@ class Simulator:
             setting = get("DataSetting")
             if setting is not None:
                 self.data_setting(block, setting)
+            if not keys.isdisjoint(_COMPENSATION_KEYS):
+                self.compensation(block, emit)
+                if self.compensating:
+                    emit = self._event
         line = block.line
         before = not keys.isdisjoint(_EVENT_KEYS)
         spindle = get("SpindleControl")
@@ -188,6 +214,10 @@ class Simulator:
                 if self.lathe and "ToolChange" not in sections:
                     emit({"line": line, "event": "tool", "number": lathe_tool(s.number)})
             if "ToolChange" in sections:
+                if self.cutter is not None and self.cutter.side is not None:
+                    raise ProgramError("a tool change with cutter compensation on cannot be run (cancel it "
+                                       "first)", self._at(block))
+                self.spindle_tool = self.modal.tool if isinstance(self.modal.tool, int) else None
                 if self.spindle in ("cw", "ccw"):
                     self.spindle_event(line, "stop", emit)
                 emit({"line": line, "event": "tool", "number": self.modal.tool})
@@ -207,6 +237,9 @@ class Simulator:
             for axis, value in coords.axes.items():
                 self._coordinate(block, axis, value)
         if compound is not None:
+            if self.cutter is not None and self.cutter.side is not None:
+                raise ProgramError("a canned cycle with cutter compensation on cannot be run (cancel it first)",
+                                   self._at(block))  # [V] rs274 "Cannot use canned cycles with cutter compensation on"
             if motion is not None and motion.mode is not None:
                 self.motion(block, motion, False, emit)
             for item in compound.items:
@@ -236,10 +269,11 @@ class Simulator:
             self.program_control(line, s.kind, emit)
 
     def record_settings(self, block: Block) -> None:
-        """Note a change of a setting the path does not show (cutter compensation, tool length offset...)."""
+        """Note a change of a setting the path does not show (work offset, path control, cutter compensation
+        where its rules are not modelled...)."""
         for key, section in block.sections.items():
             kind = UNSIMULATED.get(key)
-            if kind is None:
+            if kind is None or (key == "CutterCompensation" and self.cutter is not None):
                 continue
             value = _setting_text(key, section)
             if value is not None and value != self.settings.get(kind):
@@ -296,6 +330,8 @@ class Simulator:
         modal.apply(sections)
         self.scale = MM_PER_INCH if modal.units == "inch" else 1.0
         self.incremental = modal.distance == "incremental"
+        if self.cutter is not None:
+            self.cutter.sweep_slack = 0.001 if modal.units == "inch" else 0.0254
         s = sections.get("Feed")
         if s is not None:
             self._set_feed(s.value)  # type: ignore[attr-defined]
@@ -331,8 +367,13 @@ class Simulator:
 
     def program_control(self, line: int, kind: str, emit: Callable[[Event], None]) -> None:
         if kind in ("stop", "optional_stop"):
+            if self.cutter is not None:
+                self.cutter.stop()  # a stop writes the queued move at its compensated end [V]
             emit({"line": line, "event": "stop", "optional": kind == "optional_stop"})
         elif kind in ("end", "end_rewind"):
+            if self.cutter is not None:
+                self.cutter.stop()
+                self.cutter.cancel()  # the program end cancels compensation (LinuxCNC, Fanuc)
             emit({"line": line, "event": "end"})
             self.ended = self.end.ended = True
         else:
@@ -345,6 +386,8 @@ class Simulator:
         if mode in ("home", "home2"):
             if not m.axes:
                 return
+            if self.cutter is not None and self.cutter.side is not None:
+                raise ProgramError("a reference return with cutter compensation on cannot be run", self._at(block))
             via = self.target(block, m.axes, absolute)
             if travel is not None:
                 travel.line(block, self.pos, via, self._programmed(m.axes), self.incremental and not absolute, False)
@@ -352,6 +395,8 @@ class Simulator:
             ref = dict(self.pos)
             for axis in m.axes:
                 ref[_LATHE_INCREMENTS.get(axis, axis) if self.lathe else axis] = 0.0
+            if self.length.offset and LENGTH_AXIS in m.axes:
+                ref[LENGTH_AXIS] = -self.length.offset  # the reference point is a machine position
             if travel is not None:
                 travel.home(block, self._programmed(m.axes))
             self.line_move("rapid", ref, line, emit)
@@ -360,6 +405,8 @@ class Simulator:
             raise ProgramError(NO_FEED, self._at(block), needs="F")
         machine = "MachineCoordinates" in block.sections
         target = self.target(block, m.axes, absolute or machine, machine)
+        if machine and self.compensating:
+            self._machine_coordinates(block, m, target)
         if travel is not None and mode not in ("cw", "ccw"):
             travel.line(block, self.pos, target, self._programmed(m.axes),
                         self.incremental and not (absolute or machine), machine)
@@ -371,6 +418,17 @@ class Simulator:
             self.arc_move(block, m, target, emit, absolute or machine)
         else:
             raise UnsupportedError(f"motion '{mode}' cannot be simulated", self._at(block))
+
+    def _machine_coordinates(self, block: Block, m: Motion, target: dict[str, float]) -> None:
+        """A move in machine coordinates: its value is where the machine's controlled point goes, without
+        the tool length ([K] Fanuc, Haas: ``G53 Z0`` retracts the spindle to the top whatever the tool;
+        [?] LinuxCNC), so the programmed point is what lies the offset below it. Cutter compensation
+        refuses it ([V] LinuxCNC "Cannot use g53 with cutter radius comp")."""
+        if self.cutter is not None and self.cutter.side is not None:
+            raise ProgramError("a move in machine coordinates with cutter compensation on cannot be run",
+                               self._at(block))
+        if self.length.offset and LENGTH_AXIS in self._programmed(m.axes):
+            target[LENGTH_AXIS] -= self.length.offset
 
     def target(self, block: Block, axes: dict[str, float | Expr], absolute: bool,
                machine: bool = False) -> dict[str, float]:
@@ -401,10 +459,11 @@ class Simulator:
         return out
 
     def data_setting(self, block: Block, setting: DataSetting) -> None:
-        """G10: a work offset is kept (mm, per axis) and shifts later absolute points in its system; tool
-        offset data is only recorded for ``verify`` (tool offsets count as zero)."""
+        """G10: a work offset is kept (mm, per axis) and shifts later absolute points in its system; a tool
+        register is kept for the offsets that read it; other data is recorded for ``verify``."""
         if not setting.table.startswith("work_offset"):
-            self.unsimulated.append((block.line, "tool offset data", setting.text))
+            if not self.tools.write(setting, self.scale):
+                self.unsimulated.append((block.line, "tool offset data", setting.text))
             return
         key = setting.index if setting.table == "work_offset" else 100 + setting.index
         entry = self.offsets.setdefault(key, {})
@@ -414,6 +473,55 @@ class Simulator:
             v = value * self.scale if axis in LINEAR_AXES else value
             entry[axis] = entry.get(axis, 0.0) + v if setting.incremental else v
         self._shift()
+
+    def compensation(self, block: Block, emit: Callable[[Event], None]) -> None:
+        """A block's cutter compensation and tool length changes (before its motion, as the controller
+        runs them): compensation ends first, so the move it queued is written with the old setting."""
+        get = block.sections.get
+        cutter, cc = self.cutter, get("CutterCompensation")
+        if cutter is not None and cc is not None:
+            mode = cc.mode  # type: ignore[attr-defined]
+            if mode == "off":
+                cutter.cancel()
+            elif mode in ("left", "right"):
+                if self.modal.plane != "XY":
+                    raise UnsupportedError(f"cutter compensation in the {self.modal.plane} plane cannot be "
+                                           "simulated", self._at(block))
+                cutter.start(mode, self._cutter_radius(block, cc.register))  # type: ignore[attr-defined]
+                self._begin()
+            else:
+                raise UnsupportedError(f"cutter compensation '{mode}' cannot be simulated", self._at(block))
+        tl = get("ToolLengthOffset")
+        if tl is not None:
+            try:
+                self.length.change(tl.mode, tl.register)  # type: ignore[attr-defined]
+            except PostprocError as err:
+                raise err.located(self._at(block, "H")) from None
+            if self.length.offset:
+                self._begin()
+
+    def _cutter_radius(self, block: Block, register: int | None) -> float:
+        """The radius a G41/G42 takes: its register's, or by the rules the spindle tool's (LinuxCNC)."""
+        if register is None:
+            assert self.cutter is not None
+            if self.cutter.rules.register_absent != "tool":
+                raise UnsupportedError("cutter compensation without its register cannot be simulated",
+                                       self._at(block))
+            if self.spindle_tool is None:
+                raise ProgramError("cutter compensation without its register takes the tool in the spindle, which "
+                                   "is not known here (no tool change before it): program its register",
+                                   self._at(block))
+            register = self.spindle_tool
+        try:
+            return self.tools.radius(register)
+        except PostprocError as err:
+            raise err.located(self._at(block, "D")) from None
+
+    def _begin(self) -> None:
+        """Moves from here on go through the compensation."""
+        if not self.compensating:
+            self.compensating = True
+            self.crounded = dict(self.rounded)
 
     def _shift(self) -> None:
         """The offset of the active work system plus the external one (P0), applied to absolute points."""
@@ -432,6 +540,12 @@ class Simulator:
         self.rounded[axis] = num(v)
 
     def line_move(self, kind: str, target: dict[str, float], line: int, emit: Callable[[Event], None]) -> None:
+        if self.compensating:
+            if self._cutter_idle() and not self.diameter:
+                self._offset_line(kind, target, line)
+            else:
+                self._compensated(kind, target, line, None, None)
+            return
         pos = self.pos
         rounded = self.rounded.copy()
         for axis, value in target.items():
@@ -500,6 +614,9 @@ class Simulator:
         if c is None:
             self.line_move("feed", target, block.line, emit)  # zero radius, zero length: dropped
             return
+        if self.compensating:
+            self._compensated(m.mode or "cw", target, block.line, c, plane)
+            return
         rounded = {a: num(v) for a, v in target.items()}
         ev: Event = {"line": block.line, "move": m.mode}
         for axis, key in self.keys:
@@ -515,6 +632,133 @@ class Simulator:
         self._feed_into(ev)
         self.pos, self.rounded = target, rounded
         emit(ev)
+
+    # -- compensation -------------------------------------------------------------------------------
+    def _compensated(self, kind: str, target: dict[str, float], line: int, centre: tuple[float, float] | None,
+                     plane: str | None) -> None:
+        """A move handed to the compensation: the cutter queue (when compensating the radius) or straight
+        to ``_write``; the programmed point moves on at once."""
+        fields: Event = {"line": line}
+        if kind != "rapid":
+            self._feed_into(fields)
+        pos = self.pos
+        seg = Segment(kind, fields, target, pos.get(LENGTH_AXIS, 0.0), self.length.offset)
+        cutter = self.cutter
+        if centre is not None:
+            seg.centre = seg.ccentre = centre
+            seg.turn = 1 if kind == "ccw" else -1
+            seg.normal = pos.get(PLANE_AXES[plane or "XY"][2], 0.0)
+        if not self._cutter_idle():
+            assert cutter is not None
+            if cutter.on and (self.modal.plane != "XY" or "X" not in pos or "Y" not in pos):
+                raise UnsupportedError(f"cutter compensation in the {self.modal.plane} plane cannot be simulated")
+            start = (pos.get("X", 0.0), pos.get("Y", 0.0))
+            if centre is None:
+                cutter.line(seg, start)
+            else:
+                cutter.arc(seg, start)
+        else:
+            self._write(seg)
+        self.pos = target
+        self.rounded = {a: num(v) for a, v in target.items()}
+        self._settle()
+
+    def _offset_line(self, kind: str, target: dict[str, float], line: int) -> None:
+        """A straight move under a tool length alone (a whole program after its G43): ``_write``'s result,
+        the programmed point rounded only on the axes that move (as ``line_move``)."""
+        pos = self.pos
+        rounded = self.rounded.copy()
+        for axis, value in target.items():
+            if value != pos[axis]:
+                rounded[axis] = num(value)
+        crounded = rounded.copy()
+        if LENGTH_AXIS in crounded:
+            crounded[LENGTH_AXIS] = num(target[LENGTH_AXIS] + self.length.offset)
+        if crounded == self.crounded:
+            self.pos, self.rounded = target, rounded
+            self._settle()
+            return
+        ev: Event = {"line": line, "move": kind}
+        ctrl: Event = {}
+        for axis, key in self.keys:
+            ev[key] = rounded[axis]
+            ctrl[key] = crounded[axis]
+        if kind != "rapid":
+            self._feed_into(ev)
+        if crounded != rounded:
+            ev["controlled"] = ctrl
+        self.pos, self.rounded, self.crounded = target, rounded, crounded
+        self.out(ev)
+        self._settle()
+
+    def _cutter_idle(self) -> bool:
+        """No cutter compensation is on, queued or pending its exit move."""
+        cutter = self.cutter
+        return cutter is None or (cutter.side is None and not cutter.queue and not cutter.arc_banned)
+
+    def _event(self, ev: Event) -> None:
+        """A non-motion event while compensating: behind a queued move, if any."""
+        if self.cutter is not None:
+            self.cutter.event(ev)
+        else:
+            self.out(ev)
+
+    def _release(self, item: Item) -> None:
+        if isinstance(item, Segment):
+            self._write(item)
+        else:
+            self.out(item)
+
+    def _write(self, seg: Segment) -> None:
+        """A compensated move as its event: the programmed point in the usual keys, the controlled one in
+        ``controlled`` when it differs; a straight move the controlled point does not make is dropped."""
+        end = seg.end
+        control = dict(end)
+        if seg.xy is not None:
+            control["X"], control["Y"] = seg.xy
+        if seg.dz and LENGTH_AXIS in control:
+            control[LENGTH_AXIS] += seg.dz
+        crounded = {a: num(v) for a, v in control.items()}
+        kind = seg.kind
+        if kind in ("rapid", "feed") and crounded == self.crounded:
+            return
+        self.crounded = crounded
+        ev: Event = {"line": seg.fields["line"], "move": kind}
+        ctrl: Event = {}
+        diameter = self.diameter
+        for axis, key in self.keys:
+            ev[key] = num(end[axis] * 2.0) if diameter and axis == "X" else num(end[axis])
+            ctrl[key] = num(control[axis] * 2.0) if diameter and axis == "X" else crounded[axis]
+        if seg.centre is not None:
+            plane = self.modal.plane
+            a1, a2, normal = PLANE_AXES[plane]
+            centre = {a1: seg.centre[0], a2: seg.centre[1], normal: seg.normal}
+            cc = seg.ccentre or seg.centre
+            ccentre = {a1: cc[0], a2: cc[1], normal: seg.normal}
+            if seg.dz and LENGTH_AXIS in ccentre:
+                ccentre[LENGTH_AXIS] += seg.dz
+            for axis in ("X", "Y", "Z"):
+                if axis in self.pos:
+                    scale = 2.0 if diameter and axis == "X" else 1.0
+                    ev[CENTRE_KEYS[axis]] = num(centre[axis] * scale)
+                    ctrl[CENTRE_KEYS[axis]] = num(ccentre[axis] * scale)
+            ev["plane"] = plane
+        for key, value in seg.fields.items():
+            if key != "line":
+                ev[key] = value
+        if any(ev[key] != value for key, value in ctrl.items()):
+            ev["controlled"] = ctrl
+        self.out(ev)
+
+    def _settle(self) -> None:
+        """Leave the compensation once nothing offsets the tool and it stands at the programmed point."""
+        if not self.length.offset and self._cutter_idle() and self.rounded == self.crounded:
+            self.compensating = False
+
+    def finish(self) -> None:
+        """The end of the input: a move still waiting in the cutter queue is written as it stands."""
+        if self.cutter is not None:
+            self.cutter.finish()
 
     # -- feed --------------------------------------------------------------------------------------
     def _set_feed(self, value: float) -> None:
@@ -545,15 +789,21 @@ class Simulator:
 
 _CENTRE_LETTER = {"X": "I", "Y": "J", "Z": "K"}
 
-UNSIMULATED = {"CutterCompensation": "cutter compensation", "ToolLengthOffset": "tool length offset",
-               "WorkOffset": "work offset", "PathControl": "path control", "SpindleSpeed": "spindle speed"}
-"""Settings the simulation does not apply (the path is the programmed point, offsets count as zero, no
-blending, no speeds), by section key: ``verify`` compares their changes instead."""
-MOVES_THE_TOOL = frozenset(("cutter compensation", "tool length offset", "work offset", "path control",
-                            "tool offset data"))
+UNSIMULATED = {"CutterCompensation": "cutter compensation", "WorkOffset": "work offset",
+               "PathControl": "path control", "SpindleSpeed": "spindle speed"}
+"""Settings the simulation does not apply, by section key: ``verify`` compares their changes instead.
+Cutter compensation is among them only for a dialect without ``CUTTER_RULES``; the work offset is
+recorded although a G10's values are applied (the set-up's are not: the path stays in work
+coordinates)."""
+MOVES_THE_TOOL = frozenset(("cutter compensation", "work offset", "path control", "tool offset data"))
 """Of those, the ones that move the tool when they differ."""
-_SETTING_KEYS = frozenset((*UNSIMULATED, "DataSetting"))
-_INITIAL_SETTINGS = {"cutter compensation": "off", "tool length offset": "cancel", "work offset": "1"}
+_SETTING_KEYS = frozenset((*UNSIMULATED, "DataSetting", "ToolLengthOffset"))
+_COMPENSATION_KEYS = frozenset(("CutterCompensation", "ToolLengthOffset"))
+_INITIAL_SETTINGS = {"cutter compensation": "off", "work offset": "1"}
+
+
+def _nowhere(ev: Event) -> None:
+    raise AssertionError("an event released outside a block")
 
 
 def _setting_text(key: str, section: Any) -> str | None:
@@ -584,14 +834,15 @@ def header(ctx: Context, feed_mode: str | None) -> Event:
 
 
 def simulate(blocks: Iterable[Block], ctx: Context, live_after_end: list[int] | None = None,
-             unsimulated: list[tuple[int, str, str]] | None = None, travel_warn: bool = False) -> Iterator[Event]:
+             unsimulated: list[tuple[int, str, str]] | None = None, travel_warn: bool = False,
+             cutter_rules: CutterRules | None = None) -> Iterator[Event]:
     """Blocks (already lowered for ``ToolpathTarget``) -> the header, then events in execution order.
 
     Errors are reported to ``ctx.diagnostics`` with the block's location and the block is skipped;
     the caller raises them at the end (``Diagnostics.check``). Events are held back only until the
     first feed move fixes the header's feed mode (at most ``HEADER_LOOKAHEAD`` of them).
     """
-    sim = Simulator(ctx, travel_warn)
+    sim = Simulator(ctx, travel_warn, cutter_rules)
     if live_after_end is not None:
         sim.live_after_end = live_after_end  # the caller reads the lines recorded there
     if unsimulated is not None:
@@ -622,6 +873,16 @@ def simulate(blocks: Iterable[Block], ctx: Context, live_after_end: list[int] | 
         else:
             yield from out
             out.clear()
+    try:
+        sim.out = out.append
+        sim.finish()
+    except PostprocError as err:
+        report(err.located(ctx.at(sim.current)) if sim.current is not None else err)
+        out.clear()
+    if out and not holding:
+        yield from out
+    elif out:
+        held.extend(out)
     if holding:
         yield header(ctx, sim.header_mode)
         yield from held
@@ -632,13 +893,14 @@ def toolpath_events(lines: Iterable[str], *, file: str, dialect: str | type[Dial
                     diagnostics: Diagnostics | None = None, check: bool = True,
                     live_after_end: list[int] | None = None,
                     unsimulated: list[tuple[int, str, str]] | None = None,
-                    on_unsupported: str = "error") -> Iterator[Event]:
+                    on_unsupported: str = "error", compensate: bool = True) -> Iterator[Event]:
     """Read a program in ``dialect`` and yield its toolpath (header first). Raises ``ErrorList`` at the
     end when the program had errors (unless ``check`` is False: the caller then checks
     ``diagnostics``); events already yielded then belong to a failed run. ``live_after_end``, if given,
     receives the lines of live blocks after the program end; ``unsimulated`` the changes of settings
     the simulation does not apply (``Simulator.unsimulated``). ``on_unsupported="warn"`` makes a move
-    beyond the travel a warning."""
+    beyond the travel a warning. ``compensate=False`` leaves cutter radius compensation unsimulated even
+    where the dialect has rules for it (``verify`` against a dialect that has none)."""
     setup = setup or MachineSetup()
     diagnostics = diagnostics or Diagnostics()
     registry = registry or default_registry()
@@ -649,7 +911,8 @@ def toolpath_events(lines: Iterable[str], *, file: str, dialect: str | type[Dial
         ctx, blocks = read_blocks(lines, file, dialect, setup, diagnostics, program_mode="execute")
         steps = [step for step in registry.lowerings if step not in TRANSLATE_ONLY]
         lowered = lower_for(blocks, ctx, ToolpathTarget, "error", steps)
-        yield from simulate(lowered, ctx, live_after_end, unsimulated, on_unsupported == "warn")
+        yield from simulate(lowered, ctx, live_after_end, unsimulated, on_unsupported == "warn",
+                            dialect.CUTTER_RULES if compensate else None)
     if check:
         diagnostics.check()
 

@@ -250,7 +250,7 @@ def compare(events_in: Iterable[Event], events_out: Iterable[Event], *, start_in
             start_out: dict[str, float], tolerance: float) -> Report:
     """Walk two toolpaths (each with its header first) and report their largest deviation."""
     report = Report(tolerance)
-    it_in, it_out = iter(events_in), iter(events_out)
+    it_in, it_out = _controlled(iter(events_in)), _controlled(iter(events_out))
     head_in, head_out = next(it_in, {}), next(it_out, {})
     if head_in.get("x_mode") != head_out.get("x_mode"):
         # a diameter program and its radius translation: compare both as radii (true geometry)
@@ -277,6 +277,19 @@ def compare(events_in: Iterable[Event], events_out: Iterable[Event], *, start_in
     if head_in.get("x_mode") == "diameter" and report.where_at is not None:  # both diameters: as radii
         report.where_at = tuple((x / 2.0, y, z) for x, y, z in report.where_at)  # type: ignore[assignment]
     return report
+
+
+def _controlled(events: Iterator[Event]) -> Iterator[Event]:
+    """The path the machine runs: a move's controlled point (tool length, cutter radius) in place of its
+    programmed one, so a program that offsets the tool and one that writes the offset path compare equal."""
+    for ev in events:
+        controlled = ev.get("controlled")
+        if controlled is None:
+            yield ev
+        else:
+            moved = {k: v for k, v in ev.items() if k != "controlled"}
+            moved.update(controlled)
+            yield moved
 
 
 def _without_codes(events: Iterator[Event], sink: list[Event]) -> Iterator[Event]:
@@ -405,16 +418,20 @@ def verify_lines(lines_in: Iterable[str], lines_out: Iterable[str], *, file_in: 
     after_out: list[int] = []
     settings_in: list[tuple[int, str, str]] = []
     settings_out: list[tuple[int, str, str]] = []
+    compensate = _both_compensate(source, target, registry)
     events_in = toolpath_events(lines_in, file=file_in, dialect=source, setup=setup, registry=registry,
-                                diagnostics=diag_in, check=False, live_after_end=after_in, unsimulated=settings_in)
+                                diagnostics=diag_in, check=False, live_after_end=after_in, unsimulated=settings_in,
+                                compensate=compensate)
     events_out = toolpath_events(lines_out, file=file_out, dialect=target, setup=target_setup,
                                  registry=registry, diagnostics=diag_out, check=False, live_after_end=after_out,
-                                 unsimulated=settings_out)
+                                 unsimulated=settings_out, compensate=compensate)
     if overlay is not None:
         from .plugins import default_registry
         reading = (registry or default_registry()).dialect(source)
         overlay.begin(start_position(setup), start_position(target_setup), reading.reads_lathe(setup))
-        events_in, events_out = overlay.source_events(events_in), overlay.target_events(events_out)
+        # the picture shows the paths compared (the controlled points), where the deviation is circled
+        events_in = overlay.source_events(_controlled(iter(events_in)))
+        events_out = overlay.target_events(_controlled(iter(events_out)))
     report = compare(events_in, events_out, start_in=start_position(setup),
                      start_out=start_position(target_setup), tolerance=tolerance)
     report.allow_ignored = allow_ignored
@@ -424,6 +441,14 @@ def verify_lines(lines_in: Iterable[str], lines_out: Iterable[str], *, file_in: 
     if errors:
         raise ErrorList(errors)
     return report
+
+
+def _both_compensate(source: str, target: str, registry: Registry | None) -> bool:
+    """Cutter radius compensation is simulated on both sides or on neither: a dialect without its rules
+    keeps the programmed path, and the setting is compared instead (``compare_settings``)."""
+    from .plugins import default_registry
+    reg = registry or default_registry()
+    return reg.dialect(source).CUTTER_RULES is not None and reg.dialect(target).CUTTER_RULES is not None
 
 
 def _same_machine(setup: MachineSetup, source: str, registry: Registry | None) -> MachineSetup:

@@ -23,8 +23,11 @@ ROOT = Path(__file__).resolve().parent.parent
 GOLDEN = ROOT / "tests" / "golden" / "backplot"
 SETUPS = ROOT / "examples" / "setups"
 
+ZERO_TOOLS = str(ROOT / "tests" / "support" / "zero_tools.xml")
+"""Tools measured as zero: the simulation needs the lengths G43 reads (the pictures are of the programmed path)."""
+
 EXAMPLES: list[tuple[str, list[str]]] = (
-    [(f"examples/fanuc/{n}.nc", ["--dialect", "fanuc"]) for n in (
+    [(f"examples/fanuc/{n}.nc", ["--dialect", "fanuc", "--machine", ZERO_TOOLS]) for n in (
         "o1001_plate_drill_tap", "o1002_bracket_inch", "o1003_pocket_and_edge", "o1004_flange_least_increment",
         "o1005_bolt_circle_macro")]
     + [(f"examples/fanuc-lathe/{n}.nc", ["--dialect", "fanuc", "--machine", str(SETUPS / "fanuc_0i_tf.xml")])
@@ -33,7 +36,7 @@ EXAMPLES: list[tuple[str, list[str]]] = (
        for n in ("o0101_stepped_shaft", "o0102_grooves", "o0103_thread")]
     + [(f"examples/isg/{n}.nc", ["--dialect", "isg"]) for n in ("prof_contour_xy", "steps_subroutine")]
     + [("examples/fagor/drill_plate.nc", ["--dialect", "fagor"])]
-    + [(f"examples/linuxcnc/{n}.ngc", ["--dialect", "linuxcnc"])
+    + [(f"examples/linuxcnc/{n}.ngc", ["--dialect", "linuxcnc", "--machine", ZERO_TOOLS])
        for n in ("cover_profile", "plate_drill_peck", "slot_pattern_owords")]
 )
 """Every bundled example the toolpath simulates (``isg/prof_open_close.nc`` is refused: #CYL, axis U)."""
@@ -69,7 +72,8 @@ def verify_case(source: str, target: str) -> Callable[[Any, Path], list[object]]
     def argv(cli: Any, tmp: Path) -> list[object]:
         (tmp / "in.nc").write_text(source)
         (tmp / "out.nc").write_text(target)
-        return ["verify", "in.nc", "out.nc", "--from", "fanuc", "--to", "fanuc"]  # names in the legend
+        return ["verify", "in.nc", "out.nc", "--from", "fanuc", "--to", "fanuc",  # names in the legend
+                "--machine", ZERO_TOOLS]
     return argv
 
 
@@ -80,7 +84,7 @@ def o1003(shift: bool) -> str:
 
 CASES: dict[str, tuple[Callable[[Any, Path], list[object]], int]] = {
     **{Path(path).stem: (toolpath_case(None, [path, *args]), 20000) for path, args in EXAMPLES},
-    "generated_3000": (toolpath_case(generate(3000), ["in.nc", "--dialect", "fanuc"]), 50),
+    "generated_3000": (toolpath_case(generate(3000), ["in.nc", "--dialect", "fanuc", "--machine", ZERO_TOOLS]), 50),
     "tools": (toolpath_case(TOOLS_PROGRAM, ["in.nc", "--dialect", "fanuc"]), 10),
     "verify_o1003_shifted": (verify_case(o1003(False), o1003(True)), 20000),
     "verify_generated_800": (verify_case(generate(800), generate(800).replace("X4.907", "X4.95")), 40),

@@ -106,27 +106,30 @@ def test_the_exit_status_is_the_worst_files(cli, tree, tmp_path):
 
 
 def test_verify_writes_only_what_verifies(cli, tree, tmp_path):
-    """o1001 sets G43 H tool length offsets, which grbl lacks: with --on-unsupported warn it translates,
-    and verification then fails (a setting that moves the tool differs) unless --allow-ignored."""
+    """o1001 sets G43 H tool length offsets, which grbl lacks: with --on-unsupported warn it translates, and
+    on a machine whose tools are long verification then fails (the output runs each tool's length off),
+    --allow-ignored or not; on a machine whose tools measure zero the loss moves nothing and it verifies."""
     plain = tmp_path / "plain.nc"
     plain.write_text(PLAIN)
     out, report = tmp_path / "out", tmp_path / "report.jsonl"
+    support = Path(__file__).resolve().parent / "support"
     args = ("translate", tree / "o1001_plate_drill_tap.nc", plain, "-o", out,
             "--from", "fanuc", "--to", "grbl", "--on-unsupported", "warn", "--verify", "--report", report)
-    result = cli(*args)
-    assert result.status == 1
-    lines = {Path(str(line["file"])).name: line for line in report_lines(report)}
-    failed, passed = lines["o1001_plate_drill_tap.nc"], lines["plain.nc"]
-    assert (failed["status"], failed["exit"]) == ("verify", 1)
-    assert "settings that move the tool differ" in str(failed["verify"])
-    assert failed["warnings"] and "G43 H1" in str(failed["warnings"][0])  # type: ignore[index]
-    assert not (out / "o1001_plate_drill_tap.nc").exists()
-    assert (passed["status"], passed["max_deviation"]) == ("ok", 0.0)
-    assert str(passed["verify"]).endswith(": ok")
+    for allow in ((), ("--allow-ignored",)):
+        result = cli(*args, "--machine", support / "long_tools.xml", *allow)
+        assert result.status == 1
+        lines = {Path(str(line["file"])).name: line for line in report_lines(report)}
+        failed, passed = lines["o1001_plate_drill_tap.nc"], lines["plain.nc"]
+        assert (failed["status"], failed["exit"]) == ("verify", 1)
+        assert "exceeds tolerance" in str(failed["verify"])
+        assert failed["warnings"] and "G43 H1" in str(failed["warnings"][0])  # type: ignore[index]
+        assert not (out / "o1001_plate_drill_tap.nc").exists()
+        assert (passed["status"], passed["max_deviation"]) == ("ok", 0.0)
+        assert str(passed["verify"]).endswith(": ok")
     assert (out / "plain.nc").read_bytes() == single(
         cli, plain, "--from", "fanuc", "--to", "grbl", "--on-unsupported", "warn")
 
-    result = cli(*args, "--allow-ignored")
+    result = cli(*args, "--machine", support / "zero_tools.xml")
     assert result.status == 0, result.err
     assert (out / "o1001_plate_drill_tap.nc").exists()
     assert {line["status"] for line in report_lines(report)} == {"ok"}

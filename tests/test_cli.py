@@ -202,7 +202,8 @@ def test_toolpath_and_verify_read_standard_input(tmp_path):
     assert _run("translate", PROGRAM, "--from", "fanuc", "--to", "grbl", "--on-unsupported", "warn",
                 "-o", grbl).returncode == 0
     done = _run_input(PROGRAM.read_bytes(), "verify", "-", grbl, "--from", "fanuc", "--to", "grbl",
-                     "--allow-ignored")  # grbl has no tool length offset (issue 12 item 5)
+                     "--machine", ROOT / "tests/support/zero_tools.xml",
+                     "--allow-ignored")  # grbl has no cutter compensation: the setting is left out
     assert done.returncode == 0 and done.stdout.decode().startswith("max deviation 0.0000 mm")
     path = _run_input(grbl.read_bytes(), "toolpath", "-", "--dialect", "grbl")
     assert path.returncode == 0 and path.stdout.startswith(b'{"toolpath": 1, "units": "mm", "dialect": "grbl"}\n')

@@ -17,18 +17,20 @@ from postproc.testing import ConformanceTests, DialectUnderTest
 
 ROOT = Path(__file__).resolve().parents[1]
 HERE = ROOT / "tests" / "conformance"
+ZERO_TOOLS = ROOT / "tests/support/zero_tools.xml"
+"""The mill examples set tool length offsets: the simulation needs their registers (measured as zero here)."""
 
 CASES = {
-    "fanuc": DialectUnderTest("fanuc", ROOT / "examples/fanuc", ROOT / "tests/golden/fanuc/invalid"),
+    "fanuc": DialectUnderTest("fanuc", ROOT / "examples/fanuc", ROOT / "tests/golden/fanuc/invalid", ZERO_TOOLS),
     "fanuc-lathe": DialectUnderTest("fanuc", ROOT / "examples/fanuc-lathe", HERE / "fanuc-lathe/invalid",
                                     ROOT / "examples/setups/fanuc_0i_tf.xml", name="fanuc-lathe"),
     "gsk": DialectUnderTest("gsk", ROOT / "examples/gsk", HERE / "gsk/invalid"),
     "isg": DialectUnderTest("isg", ROOT / "examples/isg", HERE / "isg/invalid"),
     "fagor": DialectUnderTest("fagor", ROOT / "examples/fagor", HERE / "fagor/invalid"),
-    "linuxcnc": DialectUnderTest("linuxcnc", ROOT / "examples/linuxcnc", HERE / "linuxcnc/invalid"),
+    "linuxcnc": DialectUnderTest("linuxcnc", ROOT / "examples/linuxcnc", HERE / "linuxcnc/invalid", ZERO_TOOLS),
     "grbl": DialectUnderTest("grbl", HERE / "grbl", HERE / "grbl/invalid"),
     "mach3": DialectUnderTest("mach3", ROOT / "plugins/example_dialect/examples",
-                              ROOT / "plugins/example_dialect/examples/invalid"),
+                              ROOT / "plugins/example_dialect/examples/invalid", ZERO_TOOLS),
 }
 """One case per installed dialect (two for Fanuc: mill and lathe)."""
 

@@ -50,7 +50,8 @@ HERE = Path(__file__).parent
 def postproc_conformance(request):
     name = request.param
     others = frozenset({"mach3", "dropy", "lies", "notap", "unlocated", "drift", "norules"}) - {name}
-    return DialectUnderTest(name, HERE / "examples", HERE / ("invalid_" + name), skip_targets=others)
+    return DialectUnderTest(name, HERE / "examples", HERE / ("invalid_" + name), HERE / "zero_tools.xml",
+                            skip_targets=others)
 
 class TestBroken(ConformanceTests):
     pass
@@ -92,6 +93,7 @@ def report(tmp_path_factory: pytest.TempPathFactory) -> str:
         shutil.copytree(PLUGIN / "examples" / "invalid", suite / f"invalid_{name}")
     (suite / "invalid_unlocated" / "parameter.nc").write_text("G21 G90\n#1=2\nG0 X#1\nM30\n")
     (suite / "test_broken.py").write_text(TEST_MODULE)
+    shutil.copy(Path(__file__).resolve().parent / "support" / "zero_tools.xml", suite)  # the examples' G43 registers
     env = {**os.environ, "PYTHONPATH": str(site), "HYPOTHESIS_PROFILE": ""}
     run = subprocess.run([sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider", "--rootdir", str(suite),
                           "-o", "postproc_max_examples=10", str(suite)],

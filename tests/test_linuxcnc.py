@@ -25,6 +25,7 @@ import postproc_linuxcnc
 from postproc_linuxcnc import Linuxcnc
 from postproc.rs274.ngc_lexer import lex_block
 from tests.support import rs274
+from tests.support.tools import with_tools
 
 ROOT = Path(__file__).resolve().parents[1]
 EXAMPLES = sorted((ROOT / "examples" / "linuxcnc").glob("*.ngc"))
@@ -242,9 +243,15 @@ def test_g53_moves_in_the_mode_in_force_which_must_be_g0_or_g1() -> None:
         "t.ngc:3:1: error: G53 needs G0 or G1 in force"]
 
 
-def test_g43_without_h_uses_the_selected_tool() -> None:
+def test_g43_without_h_uses_the_tool_in_the_spindle() -> None:
     blocks = read("T3 M6\nG43 G0 Z10\n")
     assert blocks[1].sections["ToolLengthOffset"] == ToolLengthOffset("positive", 3)
+    # [V] rs274: T1 M6 T2 G43 applies tool 1 (the loaded one), not the selected T2; T2 M6 G43 in one block
+    # changes the tool first
+    assert read("T1 M6\nT2\nG43\n")[2].sections["ToolLengthOffset"] == ToolLengthOffset("positive", 1)
+    assert read("T1 M6\nT2 M6 G43\n")[1].sections["ToolLengthOffset"] == ToolLengthOffset("positive", 2)
+    assert errors("T2\nG43 G0 Z10\n") == [
+        "t.ngc:2:1: error: G43 without H uses the loaded tool, which is not known here: program H"]
 
 
 def test_m19_takes_its_angle_from_r() -> None:
@@ -318,7 +325,7 @@ def test_examples_exist_and_simulate() -> None:
     assert len(EXAMPLES) >= 2
     for path in EXAMPLES:
         with open(path, encoding="utf-8", newline="") as src:
-            got = list(toolpath_events(src, file=str(path), dialect="linuxcnc"))
+            got = list(toolpath_events(src, file=str(path), dialect="linuxcnc", setup=with_tools()))
         assert any(e.get("move") == "feed" for e in got), path
 
 

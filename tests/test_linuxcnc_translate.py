@@ -18,6 +18,7 @@ from postproc.api import translate
 from postproc.setup import CycleSettings, MachineSetup
 from postproc.toolpath import toolpath_events
 from tests.support.rs274 import available, canonical_moves, run_rs274
+from tests.support.tools import with_tools
 
 ROOT = Path(__file__).resolve().parents[1]
 PROGRAMS = sorted((ROOT / "examples" / "fanuc").glob("*.nc")) + sorted(
@@ -47,7 +48,9 @@ def test_translation_verifies_with_our_linuxcnc_reader(cli: Any, tmp_path: Path,
     out.write_text(_to_linuxcnc(path), encoding="utf-8")
     setup = tmp_path / "golden.xml"
     setup.write_text("<?xml version='1.0' encoding='UTF-8'?>\n<MachineSetup name=\"golden\">\n"
-                     "  <Cycles peckRetract=\"0.5\" peckClearance=\"0.3\"/>\n</MachineSetup>\n")
+                     "  <Cycles peckRetract=\"0.5\" peckClearance=\"0.3\"/>\n"
+                     + "  <Tools>\n" + "".join(f'    <Tool number="{n}" length="0.0"/>\n' for n in range(1, 10))
+                     + "  </Tools>\n</MachineSetup>\n")
     result = cli("verify", path, out, "--from", "fanuc", "--to", "linuxcnc", "--machine", setup)
     assert result.status == 0, result.out.decode() + result.err
     assert result.out.decode().startswith("max deviation 0.0000 mm")
@@ -60,7 +63,8 @@ def test_translation_runs_in_linuxcnc_as_the_fanuc_program_moves(path: Path) -> 
     theirs = [e for e in canonical_moves(run_rs274(text, tool_table=TOOL_TABLE), start=(0.0, 0.0, 0.0))
               if "move" in e]
     with open(path, encoding="utf-8", newline="") as src:
-        ours = [e for e in toolpath_events(src, file=str(path), dialect="fanuc", setup=GOLDEN_SETUP) if "move" in e]
+        ours = [e for e in toolpath_events(src, file=str(path), dialect="fanuc", setup=with_tools(GOLDEN_SETUP))
+                if "move" in e]
     assert len(ours) == len(theirs), f"{len(ours)} moves here, {len(theirs)} in LinuxCNC\n{text}"
     for n, (a, b) in enumerate(zip(ours, theirs)):
         assert a["move"] == b["move"], (n, a, b)

@@ -12,6 +12,7 @@ from postproc.api import translate
 from postproc.errors import ConfigError
 from postproc.setup import MachineSetup, OutputSettings
 from postproc.verify import verify_lines
+from tests.support.tools import with_tools
 
 ROOT = Path(__file__).resolve().parents[1]
 NGC = "G21 G90\nG0 X0 Y0 Z10\nG1 X5 F100\nM2\n"
@@ -24,7 +25,7 @@ def framed(program: str, source: str, target: str, **output: object) -> str:
     text = out.getvalue()
     translate(io.StringIO(text), io.StringIO(), file="back.nc", source=target, target=target)  # reads back
     report = verify_lines(io.StringIO(program), io.StringIO(text), file_in="a", file_out="b", source=source,
-                          target=target, tolerance=0.0)
+                          target=target, tolerance=0.0, setup=with_tools())
     assert report.ok, report.summary()
     return text
 

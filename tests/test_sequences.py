@@ -13,6 +13,7 @@ from postproc.errors import ConfigError
 from postproc.setup import load_setup
 from postproc.source_map import OutputMap
 from postproc.verify import verify_lines
+from tests.support.tools import with_tools
 
 ROOT = Path(__file__).resolve().parents[1]
 O1001 = ROOT / "examples/fanuc/o1001_plate_drill_tap.nc"
@@ -53,7 +54,7 @@ def test_a_translation_with_the_tool_change_template_verifies_at_zero_deviation(
     text = _translate(setup, target)
     assert text.count("(LOAD T") == 3
     report = verify_lines(io.StringIO(O1001.read_text()), io.StringIO(text), file_in=str(O1001), file_out="out",
-                          source="fanuc", target=target, setup=load_setup(setup), target_setup=None,
+                          source="fanuc", target=target, setup=with_tools(load_setup(setup)), target_setup=None,
                           tolerance=0.0, allow_ignored=True, overlay=None)
     assert report.ok, report.summary()
 

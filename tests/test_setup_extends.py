@@ -248,6 +248,18 @@ def test_machine_description_values(tmp_path):
     assert setup.travel_limited()
 
 
+def test_tool_radius_is_checked_and_dumped(cli, tmp_path):
+    body = ('<MachineSetup name="m">\n  <Tools>\n    <Tool number="1" length="120.0" radius="5.0"/>\n'
+            '    <Tool number="2" radius="-0.5"/>\n  </Tools>\n</MachineSetup>\n')
+    path = _write(tmp_path, "m.xml", body)
+    setup = load_setup(path)
+    assert (setup.tools["1"].radius, setup.tools["2"].radius, setup.tools["2"].length) == (5.0, -0.5, None)
+    assert cli("config", "dump", path).out.decode().splitlines()[1:] == body.splitlines()
+    bad = _write(tmp_path, "bad.xml", body.replace('radius="5.0"', 'radius="1e6"'))
+    assert cli("config", "check", bad).err_lines == [
+        f'{bad}:4:1: error: <Tool number="1"> radius: Input should be less than or equal to 100000']
+
+
 def test_entry_errors(cli, tmp_path):
     path = _write(tmp_path, "m.xml", '<MachineSetup name="m">\n'
                                      '  <WorkOffsets>\n    <Offset number="7" x="1.0"/>\n'

@@ -19,6 +19,7 @@ from postproc.setup import MachineSetup, load_setup
 from postproc.toolpath import toolpath_events
 from postproc.verify import verify_lines
 from tests.support import rs274
+from tests.support.tools import REGISTERS, with_tools
 
 SHOP = Path(__file__).resolve().parent / "shop"
 PROGRAMS: dict[str, tuple[str | None, bool]] = {
@@ -41,9 +42,14 @@ TOLERANCE_MM = 3e-3
 """rs274 prints 4 decimals in program units: 1e-4 in = 0.00254 mm."""
 
 
-def _setup(name: str) -> MachineSetup:
+def _machine(name: str) -> MachineSetup:
     setup_file = PROGRAMS[name][0]
     return load_setup(SHOP / setup_file) if setup_file else MachineSetup()
+
+
+def _setup(name: str) -> MachineSetup:
+    """The program's machine, its tools measured as zero (the tests here are not about tool lengths)."""
+    return with_tools(_machine(name))
 
 
 def _source(name: str) -> str:
@@ -91,15 +97,21 @@ def test_linuxcnc_translation_verifies_at_zero_deviation(name: str) -> None:
 
 
 @pytest.mark.parametrize("name", [n for n in TRANSLATED if PROGRAMS[n][1]])
-def test_grbl_translation_verifies_at_zero_deviation_once_its_losses_are_accepted(name: str) -> None:
+def test_grbl_translation_loses_the_tool_lengths_and_verify_measures_it(name: str) -> None:
     out, _ = _translate(name, "grbl")
+    lengths = {n: 100.0 + n for n in REGISTERS}
+    report = verify_lines(_lines(_source(name)), _lines(out), file_in=name, file_out="out.gcode", source="fanuc",
+                          target="grbl", setup=with_tools(_machine(name), lengths=lengths))
+    # grbl has no tool table: without its G43 every move runs the tool's length (over 100 mm) lower
+    assert not report.ok and report.max_deviation > 100, report.summary()
+    report.allow_ignored = True
+    assert not report.ok  # a measured deviation, not a setting left out: nothing accepts it
+    # on a machine whose tools measure zero only the cutter compensation is lost (not simulated for Fanuc)
     report = verify_lines(_lines(_source(name)), _lines(out), file_in=name, file_out="out.gcode", source="fanuc",
                           target="grbl", setup=_setup(name))
-    # grbl has no tool table and no cutter compensation: their loss is listed and fails the plain check
-    lost = [note for note in report.ignored if note.startswith(("tool length offset differs",
-                                                                "cutter compensation differs"))]
-    assert lost and report.left_out_moves and not report.ok, report.summary()
     assert report.mismatch is None and report.max_deviation == 0, report.summary()
+    lost = [note for note in report.ignored if note.startswith("cutter compensation differs")]
+    assert bool(lost) == report.left_out_moves == ("G41" in _source(name) or "G42" in _source(name))
     report.allow_ignored = True
     assert report.ok
 

@@ -11,6 +11,7 @@ import pytest
 
 from postproc.setup import CycleSettings, MachineSetup
 from postproc.toolpath import toolpath_events
+from tests.support.tools import with_tools
 
 ROOT = Path(__file__).parent
 CYCLES = sorted((ROOT / "golden" / "fanuc" / "cycles").glob("*.nc"))
@@ -43,7 +44,7 @@ def first_difference(actual: list[dict[str, Any]], expected: list[dict[str, Any]
 
 def events_of(path: Path, setup: MachineSetup | None = None) -> list[dict[str, Any]]:
     with open(path, encoding="utf-8", newline="") as f:
-        return list(toolpath_events(f, file=str(path), dialect="fanuc", setup=setup))
+        return list(toolpath_events(f, file=str(path), dialect="fanuc", setup=setup or with_tools()))
 
 
 def test_there_are_golden_cycle_cases() -> None:
@@ -77,7 +78,7 @@ def test_examples_with_cycles_simulate(name: str) -> None:
 def test_inch_example_profile_arcs() -> None:
     """O1002's profile (lines 12-27) is cycle-free: run just that part, in inches converted to mm."""
     lines = (EXAMPLES / "o1002_bracket_inch.nc").read_text().splitlines(keepends=True)[:27]
-    events = list(toolpath_events(lines, file="o1002.nc", dialect="fanuc"))
+    events = list(toolpath_events(lines, file="o1002.nc", dialect="fanuc", setup=with_tools()))
     arcs = [e for e in events if e.get("move") == "cw"]
     assert len(arcs) == 4
     first = arcs[0]

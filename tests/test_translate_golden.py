@@ -14,6 +14,7 @@ import pytest
 from postproc.api import translate
 from postproc.errors import Diagnostics, ErrorLevel
 from postproc.verify import verify_lines
+from tests.support.tools import with_tools
 
 ROOT = Path(__file__).parent / "golden" / "translate"
 CASES = sorted(p for p in ROOT.glob("*__*/*") if ".expected." not in p.name)
@@ -45,7 +46,7 @@ def test_golden_translation_moves_the_tool_as_its_source(source: Path) -> None:
     expected = _expected(source)
     with source.open(encoding="utf-8", newline="") as a, expected.open(encoding="utf-8", newline="") as b:
         report = verify_lines(a, b, file_in=str(source), file_out=str(expected), source=src, target=dst,
-                              allow_ignored=True)
+                              allow_ignored=True, setup=with_tools())
     assert report.ok, report.summary()
     # only grbl (no tool table, no cutter compensation) leaves out settings that move the tool
     assert not report.left_out_moves or dst == "grbl", report.summary()

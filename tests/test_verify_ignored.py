@@ -53,11 +53,15 @@ def test_a_different_spindle_speed_is_listed_but_moves_nothing() -> None:
     assert report.ignored == ["spindle speed differs: IN S500 (line 2); OUT S800 (line 2)"]
 
 
-def test_tool_offset_data_left_out_moves_the_tool() -> None:
+def test_tool_length_data_is_simulated_where_an_offset_reads_it() -> None:
+    # a register written and never read moves nothing: nothing to compare
     source = "G21 G90\nG10 L10 P1 R-100.\nG00 X1.\nM30\n"
     report = verify(source, "G21 G90\n(G10 L10 P1 R-100.)\nG0 X1.\nM30\n")
-    assert not report.ok
-    assert report.ignored == ["tool offset data differs: IN G10 L10 P1 R-100. (line 2); OUT never set"]
+    assert report.ok and report.ignored == []
+    # read by G43 H1, its loss moves the tool: Z5 + (-100) against Z5 (no set-up length needed: the program's)
+    source = "G21 G90\nG10 L10 P1 R-100.\nG00 X1.\nG43 H1 Z5.\nM30\n"
+    report = verify(source, "G21 G90\n(G10 L10 P1 R-100.)\nG0 X1.\nG0 Z5.\nM30\n")
+    assert not report.ok and report.max_deviation == 100 and report.where == (4, 4)
 
 
 def test_cli_allow_ignored(cli: Any, tmp_path: Path) -> None:

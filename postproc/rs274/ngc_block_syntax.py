@@ -7,7 +7,8 @@ modal sections, motion, arcs, modal cycle repetition) and replaces what RS274/NG
 * the dwell's ``P`` and a cycle's ``P`` are seconds, as a real number;
 * ``L`` is the cycle repeat count; ``K`` in a drilling cycle is an error;
 * cancelling a cycle leaves no motion mode in force: axis words after it need a motion code;
-* a tool length offset without ``H`` uses the selected tool; the orient code's ``R`` gives the angle;
+* a tool length offset without ``H`` uses the tool in the spindle (the one the last tool change loaded, not
+  a ``T`` selected since: rs274 ``T1 M6 T2 G43`` applies tool 1); the orient code's ``R`` gives the angle;
 * with ``FEED_BEFORE_UNITS`` (LinuxCNC), ``F`` in a block that changes units is in the old units:
   LinuxCNC sets the feed rate before it changes units (its order of execution; rs274 prints
   ``SET_FEED_RATE`` before ``USE_LENGTH_UNITS``), so the neutral Feed, in the block's units, is converted;
@@ -41,6 +42,8 @@ REAL_LETTERS = frozenset("XYZABCUVWIJKRQPF")
 INTEGER_LETTERS = frozenset("NTHDL")
 _STATE_KEY = "NgcBlockSyntax"
 """``ctx.state.extra`` key: True while a cycle cancel leaves no motion mode in force."""
+_LOADED_KEY = "NgcBlockSyntax.loaded"
+"""``ctx.state.extra`` key: the tool the last tool change loaded (absent or None: unknown)."""
 _MOTION_GROUP = ("01", "09")
 
 
@@ -128,6 +131,9 @@ class NgcWordBlockSyntax(WordBlockSyntax):
         cycle_block = "09" in codes and codes["09"][1] == "cycle" or (
             state.cycle is not None and "01" not in codes and "09" not in codes)
         self._check_cycle_words(block, ctx, values, cycle_block)
+        if any(self.CODES.m.get(number, ("", None))[0] == "tool_change" for number, _ in mcodes):
+            selected = values["T"] if "T" in values else state.tool
+            extra[_LOADED_KEY] = selected if isinstance(selected, (int, Expr)) else None  # M6 runs before G43
         if "08" in codes and codes["08"][2] == "positive" and "H" not in values:
             self._loaded_tool(block, ctx, values)
         no_motion = extra.get(_STATE_KEY, False)
@@ -287,8 +293,9 @@ class NgcWordBlockSyntax(WordBlockSyntax):
                                ctx.at(block, ctx.column_of(block, "L")))
 
     def _loaded_tool(self, block: Block, ctx: Context, values: dict[str, Any]) -> None:
-        """A tool length offset without H applies the selected tool's offset."""
-        tool = ctx.state.tool if "T" not in values else values["T"]
+        """A tool length offset without H applies the offset of the tool in the spindle: the one the last
+        tool change loaded (unknown before any: the machine's, from before the program)."""
+        tool = ctx.state.extra.get(_LOADED_KEY)
         if tool is None:
             raise ProgramError(f"{self.spell('length', 'positive')} without H uses the loaded tool, which is not known "
                                "here: program H",

@@ -14,6 +14,7 @@ from __future__ import annotations
 
 from typing import Callable, ClassVar
 
+from postproc.compensation.rules import ARC_CORNERS
 from postproc.dialect import Dialect, Lazy, Reader
 from postproc.rs274.order_of_execution import stops_after_motion
 from postproc.errors import Diagnostics
@@ -54,6 +55,8 @@ class Linuxcnc(Dialect):
     there is no fine boring: those are expanded."""
     TAPE_MARKS = True
     """``%`` lines may delimit a program (RS274/NGC); there is no program number (O is an O-word)."""
+    CUTTER_RULES = ARC_CORNERS
+    """rs274's cutter radius compensation: tangent entry, arcs around outside corners."""
     PROGRAMS = True
     """Numbered and named parameters, expressions, o-word subprograms and control flow."""
     STOPS_BEFORE_MOTION = True

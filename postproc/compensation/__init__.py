@@ -1,0 +1,8 @@
+"""Tool compensation as the simulator applies it: the controlled point is the programmed point moved by
+the tool length along Z (``tool_length``) and, under cutter radius compensation, by the cutter radius
+beside the path (``cutter_radius``). Register values come from ``tool_table``; the controller's rules are
+data (``rules``) chosen by the reading dialect, so another controller's rules are a new value, not new
+geometry.
+
+Simulation only: translation never reads these modules (DESIGN.md, "Machine features the target lacks").
+"""

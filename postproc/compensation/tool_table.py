@@ -1,0 +1,73 @@
+"""The offset registers a program reads (H for tool length, D for cutter radius): what the program itself
+wrote (a programmable data input of the neutral tables ``tool_length``, ``tool_length_wear``,
+``cutter_offset``, ``cutter_offset_wear``), else the set-up's ``<Tools><Tool>``. Geometry written by the
+program replaces the set-up's; wear is added to either. A register with neither is unknown: the
+simulation refuses to guess it, and the error names the element that would give it."""
+
+from __future__ import annotations
+
+from ..errors import ProgramError
+from ..ir import DataSetting
+from ..setup import MachineSetup
+
+TABLES = {"tool_length": ("length", False), "tool_length_wear": ("length", True),
+          "cutter_offset": ("radius", False), "cutter_offset_wear": ("radius", True)}
+"""Neutral table name -> (the register's quantity, whether it is the wear)."""
+
+
+class ToolTable:
+    """Tool lengths and cutter radii by register, in mm."""
+
+    def __init__(self, setup: MachineSetup) -> None:
+        self.tools = setup.tools
+        self.mm = setup.machine.mm()
+        """mm per set-up length unit (``<Machine units>``)."""
+        self.written: dict[tuple[str, int], float] = {}
+        self.wear: dict[tuple[str, int], float] = {}
+
+    def write(self, setting: DataSetting, scale: float) -> bool:
+        """A programmable data input into a tool table (values in program units, ``scale`` mm per unit);
+        False when the setting is not a tool table's."""
+        table = TABLES.get(setting.table)
+        if table is None:
+            return False
+        quantity, wear = table
+        value = setting.values.get("R")
+        if not isinstance(value, (int, float)):
+            return True  # no R: nothing written (an Expr never reaches the simulator)
+        key = (quantity, setting.index)
+        store = self.wear if wear else self.written
+        if setting.incremental:
+            known = store.get(key)
+            if known is None and not wear:
+                known = self._declared(quantity, setting.index)
+            store[key] = (known or 0.0) + value * scale
+        else:
+            store[key] = value * scale
+        return True
+
+    def length(self, register: int) -> float:
+        """The tool length in register ``register`` (mm), or a ProgramError naming what to add."""
+        return self._value("length", register)
+
+    def radius(self, register: int) -> float:
+        """The cutter radius in register ``register`` (mm), or a ProgramError naming what to add."""
+        return self._value("radius", register)
+
+    def _value(self, quantity: str, register: int) -> float:
+        if register == 0:
+            return 0.0  # [K] Fanuc's H00/D00 hold zero; [?] LinuxCNC's tool 0 is "no tool"
+        key = (quantity, register)
+        value = self.written.get(key)
+        if value is None:
+            value = self._declared(quantity, register)
+        if value is None:
+            raise ProgramError(f"the set-up gives tool {quantity} register {register} no value: add "
+                               f"<Tool number=\"{register}\" {quantity}=\"..\"/> to its <Tools>, or write the "
+                               f"register in the program")
+        return value + self.wear.get(key, 0.0)
+
+    def _declared(self, quantity: str, register: int) -> float | None:
+        tool = self.tools.get(str(register))
+        value = None if tool is None else getattr(tool, quantity)
+        return None if value is None else float(value) * self.mm
