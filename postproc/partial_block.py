@@ -7,7 +7,7 @@ with it the sections of the same block whose meaning depends on it (``DEPENDS_ON
 block's motion, which the warning names with its words. A tool length offset or cutter compensation only
 adjusts the tool about the programmed point: without it the motion keeps its programmed point (on a
 machine whose tools are measured at the tool change, the same place), the warning says so, and ``verify``
-reports the setting lost. A refused section that changes how the whole block reads (its units; a block
+measures where the tool goes without it (the set-up's tool lengths and radii). A refused section that changes how the whole block reads (its units; a block
 skip aside: the block runs as with the switch off) leaves the block a comment, as does a block with
 nothing left to do.
 """

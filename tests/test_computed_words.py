@@ -20,6 +20,7 @@ from postproc.errors import Diagnostics, ErrorList
 from postproc.ir import Block
 from postproc.toolpath import toolpath_events
 from postproc.verify import verify_lines
+from tests.support.tools import with_tools
 from tests.support.fuzzing import WRITERS
 from tests.support.output_rules import problems
 from tests.support.rs274 import available, canonical_moves, motions, run_rs274
@@ -40,7 +41,7 @@ def _verified(program: str, source: str, target: str) -> str:
     text, _ = _translate(program, source, target)
     assert problems(target, text, MachineSetup()) == []
     report = verify_lines(io.StringIO(program), io.StringIO(text), file_in="in.nc", file_out="out.nc",
-                          source=source, target=target, setup=MachineSetup(), tolerance=0.0)
+                          source=source, target=target, setup=with_tools(), tolerance=0.0)
     assert report.ok, report.summary()
     return text
 

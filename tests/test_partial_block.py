@@ -11,6 +11,7 @@ import pytest
 from postproc.api import translate
 from postproc.errors import Diagnostics, ErrorList
 from postproc.verify import verify_lines
+from tests.support.tools import with_tools
 
 START = "G21 G90 G0 X0 Y0 Z50.\nS1000 M03\n"
 
@@ -62,7 +63,8 @@ def test_verify_reports_what_was_lost() -> None:
     translate(io.StringIO(program), out, file="t.nc", source="fanuc", target="isg", on_unsupported="warn",
               diagnostics=Diagnostics(warn_stream=io.StringIO()))
     report = verify_lines(io.StringIO(program), io.StringIO(out.getvalue()), file_in="in", file_out="out",
-                          source="fanuc", target="isg", tolerance=0.001)
+                          source="fanuc", target="isg", tolerance=0.001, setup=with_tools(lengths={18: 100.0}))
     assert not report.ok
-    summary = report.summary()
-    assert "tool length offset differs" in summary and "exceeds tolerance" in summary
+    assert report.max_deviation >= 100.0  # the Z1. without H18's 100 mm, then the lost G53 retract
+    report.allow_ignored = True
+    assert not report.ok  # a measured deviation: nothing accepts it
