@@ -5,24 +5,26 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 P=${POSTPROC:-.venv/bin/postproc}
 mkdir -p out
+TOUCHED_OFF=examples/setups/router_tools_touched_off.xml
 
 run() { echo "\$ postproc $*"; "$P" "$@"; }
 
 for f in examples/fanuc/*.nc; do
   n=$(basename "$f" .nc)
   run translate "$f" --from fanuc --to fanuc --normalize -o "out/$n.fanuc.nc"
-  # Every example uses G43 H (a tool table), which grbl lacks: warn, keep the motion, say so; verify
-  # lists the tool length offset it could not compare, and --allow-ignored accepts that difference.
+  # Every example uses G43 H (a tool table), which grbl lacks: warn, keep the motion, say so. Verify
+  # simulates the tool lengths of the set-up: on a router whose tools are touched off at each change
+  # (all zero) the paths agree, and --allow-ignored accepts the cutter compensation it cannot compare.
   run translate "$f" --from fanuc --to grbl --on-unsupported warn -o "out/$n.grbl.nc"
-  run verify "$f" "out/$n.grbl.nc" --from fanuc --to grbl --allow-ignored
+  run verify "$f" "out/$n.grbl.nc" --from fanuc --to grbl --allow-ignored --machine "$TOUCHED_OFF"
   # LinuxCNC keeps a program's loops and variables where it can spell them; otherwise it is flattened.
   run translate "$f" --from fanuc --to linuxcnc -o "out/$n.ngc"
-  run verify "$f" "out/$n.ngc" --from fanuc --to linuxcnc
+  run verify "$f" "out/$n.ngc" --from fanuc --to linuxcnc --machine "$TOUCHED_OFF"
 done
 for f in examples/linuxcnc/*.ngc; do
   n=$(basename "$f" .ngc)
   if run translate "$f" --from linuxcnc --to fanuc -o "out/$n.fanuc.nc"; then
-    run verify "$f" "out/$n.fanuc.nc" --from linuxcnc --to fanuc
+    run verify "$f" "out/$n.fanuc.nc" --from linuxcnc --to fanuc --machine "$TOUCHED_OFF"
   else
     echo "  (refused with the located error above: nothing was written)"
   fi
