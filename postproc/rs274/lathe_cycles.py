@@ -18,6 +18,7 @@ import copy
 import dataclasses
 from typing import TYPE_CHECKING, Iterable, Iterator
 
+from postproc.block_rules import ZERO_FEED
 from postproc.context import Context
 from postproc.cycles.lathe_expansion import expand, profile_segments, start_point, to_sections
 from postproc.errors import PostprocError, ProgramError
@@ -102,6 +103,9 @@ class LatheCycleSyntax(Syntax):
         except ProgramError as err:
             raise ProgramError(f"{err.message}" if err.message.startswith(code) else f"{code}: {err.message}",
                                ctx.at(block)) from None
+        if any(move.kind != "rapid" and move.feed == 0.0 for move in moves):
+            # Fanuc T and GSK alarm on a cutting move at F0 (block_rules.ZERO_FEED), a cycle's as a G01's
+            raise ProgramError(f"{code}: {ZERO_FEED}", ctx.at(block, ctx.column_of(block, "F")))
         limit = ctx.setup.limits.moves_per_block
         if len(moves) > limit:
             raise ProgramError(f"{code} makes {len(moves)} moves, more than <Limits movesPerBlock> ({limit})",
