@@ -104,7 +104,8 @@ class LatheCycleSyntax(Syntax):
             raise ProgramError(f"{err.message}" if err.message.startswith(code) else f"{code}: {err.message}",
                                ctx.at(block)) from None
         if any(move.kind != "rapid" and move.feed == 0.0 for move in moves):
-            # Fanuc T and GSK alarm on a cutting move at F0 (block_rules.ZERO_FEED), a cycle's as a G01's
+            # a cycle cuts at F as a G01 does: Fanuc alarms on F0 (PS0011 FEED ZERO, Fanuc T manual [K]; GSK
+            # 980TDc alike [?]), rs274 and grbl refuse the expanded G1 (block_rules.ZERO_FEED) [V]
             raise ProgramError(f"{code}: {ZERO_FEED}", ctx.at(block, ctx.column_of(block, "F")))
         limit = ctx.setup.limits.moves_per_block
         if len(moves) > limit:
