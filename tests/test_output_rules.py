@@ -216,10 +216,11 @@ def test_what_rs274_refuses_in_a_translation_is_a_located_error(program: str, me
 
 
 def test_linuxcnc_gets_no_lone_closing_percent() -> None:
+    """The lone '%' ended the source program: M2 ends the LinuxCNC one (``test_program_end.py``)."""
     text, warnings = _translate("G21 G0 X1.\n%\n", "fanuc", "linuxcnc")
-    assert text == "G21 G0 X1.\n(%)\n"
+    assert text == "G21 G0 X1.\nM2\n(%)\n"
     assert warnings == ["t.nc:2:1: warning: the program ends with '%' and no M2/M30, without an opening '%': "
-                        "LinuxCNC refuses a lone '%', written as a comment (add M30 before it)"]
+                        "LinuxCNC refuses a lone '%': M2 written for it, the '%' as a comment"]
     for kept in ("%\nG21 G0 X1.\n%\n", "G21 G0 X1.\nM30\n%\n"):
         assert _translate(kept, "fanuc", "linuxcnc")[0] == kept
 
