@@ -432,7 +432,9 @@ def test_lathe_backplot_draws_the_zx_plane_in_radii(tmp_path: Any) -> None:
     export_toolpath(lines(SEED), out, file="in.nc", dialect="gsk", setup=LATHE, fmt="svg")
     svg = out.getvalue()
     assert "Turning (Z across, X radius up)" in svg
-    assert "X 0..50 " in svg  # the diameters 0..100 drawn as radii (true geometry, arcs round)
+    # the diameters 20..100 (the profile's N10 X20., the last rapid's X100.) drawn as radii (true geometry,
+    # arcs round); the set-up gives no start, so the drawing begins at the first move (X60. Z5.), not at X0
+    assert "X 10..50 " in svg
 
 
 def test_each_control_starts_in_its_own_feed_mode() -> None:
