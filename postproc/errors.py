@@ -20,6 +20,8 @@ def character_name(ch: str) -> str:
     code = ord(ch)
     if 0xDC80 <= code <= 0xDCFF:
         return f"byte 0x{code - 0xDC00:02X} (not UTF-8)"
+    if ch.isascii() and ch.isprintable():
+        return f"character {ch!r}"
     return f"character {ch!r} (U+{code:04X})"
 
 
