@@ -300,7 +300,7 @@ class Frame:
     def __init__(self, plots: Sequence[Backplot], lathe: bool) -> None:
         self.views = LATHE_VIEWS if lathe else MILL_VIEWS
         self.legend_at = LATHE_LEGEND if lathe else MILL_LEGEND
-        self.legend_width = WIDTH - PAGE_MARGIN - self.legend_at[0]
+        self.legend_width: float = WIDTH - PAGE_MARGIN - self.legend_at[0]
         self.units = plots[0].units if plots else "mm"
         """The units of ticks and texts: the (first) program's. Points are in mm whatever they are."""
         self.unit = MM_PER_INCH if self.units == "inch" else 1.0
@@ -470,7 +470,7 @@ def tool_legend(canvas: Canvas, frame: Frame, plot: Backplot, at: Point) -> None
     """Line styles, the tools with their colours and move counts, the marks, and the extent. A lathe's
     legend (the page's width, below the views) puts the marks and the extent in a second column."""
     x, y = at
-    width = frame.legend_width
+    width = frame.legend_width / 2 if frame.views is LATHE_VIEWS else frame.legend_width
     canvas.line((x, y - 4), (x + 30, y - 4), LINE_STYLE_COLOUR, STROKE)
     canvas.text((x + 36, y), f"feed ({plot.moves[FEED]})")
     canvas.line((x + 130, y - 4), (x + 160, y - 4), RAPID_COLOUR, STROKE, DASH)
@@ -478,8 +478,6 @@ def tool_legend(canvas: Canvas, frame: Frame, plot: Backplot, at: Point) -> None
     y += 28
     top = y
     canvas.text((x, y), "Tools (feed colour)")
-    if frame.views is LATHE_VIEWS:
-        width = width / 2
     for tool, colour in plot.tool_colours().items():
         y += 20
         rapids, feeds = plot.tool_moves[tool]
