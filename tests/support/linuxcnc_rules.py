@@ -9,19 +9,62 @@ the writer ends a source without one with M2.
 
 from __future__ import annotations
 
+import hashlib
+import json
+import os
 import re
+from pathlib import Path
 
-from .rs274 import RS274Error, available, run_rs274
+from . import rs274
+from .rs274 import RS274Error, RS274Timeout, available, run_rs274
 
-__all__ = ["available", "linuxcnc_problems"]
+__all__ = ["RS274_CACHE", "available", "linuxcnc_problems"]
+
+RS274_CACHE = Path(os.environ.get("POSTPROC_RS274_CACHE")
+                   or Path(__file__).resolve().parents[2] / ".rs274-cache")
+"""rs274's answers, one small JSON file per program (``linuxcnc_problems``): a run of the suite asks rs274
+only about programs no earlier run wrote. Remove the folder to ask again."""
 
 
 def linuxcnc_problems(text: str) -> list[str]:
-    """What rs274 refuses in ``text`` (its error message and offending block), or nothing."""
+    """What rs274 refuses in ``text`` (its error message and offending block), or nothing. Answered from
+    ``RS274_CACHE`` when the same program, tool table and interpreter were run before."""
     tools = sorted({int(n) for n in re.findall(r"(?i)\b[THD]\s*(\d+)", text)} | {1})
     table = "".join(f"T{n} P{n} Z0 D0\n" for n in tools)
+    path = RS274_CACHE / _key(text, table)
+    try:
+        return [str(p) for p in json.loads(path.read_text(encoding="utf-8"))]
+    except (OSError, ValueError):
+        pass
     try:
         run_rs274(text, tool_table=table)
+        found: list[str] = []
+    except RS274Timeout as err:
+        return [str(err)]  # the machine may just have been busy: not kept
     except RS274Error as err:
-        return [err.stderr or str(err)]
-    return []
+        found = [err.stderr or str(err)]
+    _keep(path, found)
+    return found
+
+
+def _key(text: str, table: str) -> str:
+    """The program, its tool table and the interpreter's file (another rs274 may answer otherwise)."""
+    binary = rs274.RS274 or ""
+    try:
+        info = os.stat(binary)
+        binary += f":{info.st_size}:{info.st_mtime_ns}"
+    except OSError:
+        pass
+    data = "\0".join((binary, table, text)).encode("utf-8", "surrogateescape")
+    return hashlib.sha256(data).hexdigest()
+
+
+def _keep(path: Path, found: list[str]) -> None:
+    """Write the answer whole or not at all (a suite and ``make fuzz`` may run side by side)."""
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        part = path.with_name(f"{path.name}.{os.getpid()}.part")
+        part.write_text(json.dumps(found), encoding="utf-8")
+        os.replace(part, path)
+    except OSError:
+        pass
