@@ -59,3 +59,36 @@ def test_a_first_block_and_a_g70_with_fed_profile_blocks_need_no_cycle_feed() ->
     out = io.StringIO()
     translate(io.StringIO(text), out, file="in.nc", source="fanuc", target="linuxcnc", setup=LATHE)
     assert "F0.12" in out.getvalue() and "G1 F0." not in out.getvalue() and "\nF0.\n" in out.getvalue()
+
+
+STALLED = [  # (spindle words, cut; line and column of the refusal; what the spindle does)
+    ("G97 S0 M03", "G01 Z-20. F0.2", 5, 5, "at spindle speed S0"),
+    ("G97 S0 M03", "G90 X40. Z-20. F0.2", 5, 1, "at spindle speed S0"),
+    ("G97 S500 M05", "G90 X40. Z-20. F0.2", 5, 1, "with the spindle stopped"),
+    ("G97 S0 M03", "G74 R0.3\nG74 X0 Z-20. P1000 Q8000 F0.2", 6, 1, "at spindle speed S0"),
+]
+
+
+@pytest.mark.parametrize("spindle, cut, line, col, what", STALLED)
+@pytest.mark.parametrize("target", ["fanuc", "linuxcnc"])
+def test_a_cut_per_revolution_with_the_spindle_at_s0_or_stopped_is_a_located_error(
+        spindle: str, cut: str, line: int, col: int, what: str, target: str) -> None:
+    """In G99 the axes wait for revolutions: at S0 (or stopped) they never come. A Fanuc waits forever;
+    rs274 refuses the LinuxCNC spelling ("Cannot feed with zero spindle speed in feed per rev mode"), which
+    the plain G01 at S0 was written as, and a cycle's cuts too (found by the fuzz generator)."""
+    text = f"G21 G99\nT0101\n{spindle}\nG00 X50. Z2.\n{cut}\nG00 X100. Z100.\nM30\n"
+    with pytest.raises(ErrorList) as caught:
+        translate(io.StringIO(text), io.StringIO(), file="in.nc", source="fanuc", target=target, setup=LATHE)
+    code = "" if cut.startswith("G01") else cut.splitlines()[-1][:3] + ": "
+    assert [str(e) for e in caught.value.errors] == [
+        f"in.nc:{line}:{col}: error: {code}a feed-per-revolution move {what}: the axes would wait for revolutions "
+        f"that never come ({'start the spindle first' if 'stopped' in what else 'program a speed above 0 first'}, "
+        "or feed per minute)"]
+
+
+def test_rs274_refuses_a_feed_per_revolution_at_s0() -> None:
+    from tests.support.rs274 import RS274Error, available, run_rs274
+    if not available():
+        pytest.skip("rs274 is not installed")
+    with pytest.raises(RS274Error, match="Cannot feed with zero spindle speed in feed per rev mode"):
+        run_rs274("G21 G95\nS0 M3\nG18 G0 X25. Z2.\nG1 Z-20. F0.2\nM2\n")
