@@ -7,7 +7,8 @@ generated programs (``postproc.testing``), a writer used on its own. grbl's by `
 (grbl 1.1's parser, written from its source), LinuxCNC's by ``linuxcnc_rules.linuxcnc_problems`` (LinuxCNC's
 own interpreter, when it is installed). What a writer writes is unchanged; the problems found are
 collected, and ``conftest.py`` fails the test that produced them, with the program. A run with errors
-(its output is discarded) is not checked; nor is a program written back in its own dialect: it is the
+(its output is discarded) is not checked, nor a translation's dry run (``api._keep_check`` writes the rest
+of a program that computes to see whether the target can keep it symbolic); nor is a program written back in its own dialect: it is the
 input itself (lossless), often a fragment in the suite, and whether a reader refuses what its controller
 refuses is tested where the reader is (``test_output_rules.py``, ``test_linuxcnc.py``). Programs written
 by another process (``postproc batch`` workers, the command in a subprocess) are compared in their tests
@@ -107,7 +108,8 @@ def _wrap(cls: type[Any]) -> None:
         tee = _Tee(out)
         real(self, blocks, tee)  # raises on failure: nothing to check
         target = self.target.NAME if self.target is not None else self.DIALECT
-        if target in CHECKERS and self.source_dialect != target and not self._failed():
+        if (target in CHECKERS and self.source_dialect != target and not self._failed()
+                and not self.ctx.run_data.get("dry_run")):  # (a translation's trial of keeping a program symbolic)
             _check(target, "".join(tee.parts), self.ctx.setup)
 
     write.checks_output_rules = True  # type: ignore[attr-defined]
