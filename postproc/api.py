@@ -84,6 +84,7 @@ def _keep_check(src: type[Dialect], dst: type[Dialect], ctx: Context,
         trial.state = copy.deepcopy(ctx.state)
         trial.on_unsupported = "error"
         trial.run_data["sequences"] = Sequences(trial, src.NAME, dst, enabled=False)  # a dry run renders none
+        trial.run_data["dry_run"] = True  # what it writes is a part of the program, read back and discarded
         steps = [step for step in src.pipeline(ctx.setup).steps if not isinstance(step, ProgramSyntax)]
         blocks = Pipeline(src.NAME, steps).run(body, trial)
         lowered = lower_for(blocks, trial, dst, "error", registry.lowerings)

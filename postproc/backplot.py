@@ -1,9 +1,16 @@
 """Backplot: a toolpath drawn as a machinist reads one, as SVG or PNG.
 
 Three views in third-angle layout on one scale (plan XY above front XZ, side YZ right of the front, so
-X and Z line up between views); a lathe gets its ZX plane (X as a radius) and the mirror image below.
-Feed moves are solid in one colour per tool, rapids dashed red (a rapid into the part stands out);
-the start point and the work origin are marked; every view has ticks in mm; a legend lists the tools.
+X and Z line up between views); a lathe gets its ZX plane (X as a radius) and the mirror image below,
+each the page's width (a turned part is long in Z). Feed moves are solid in one colour per tool, rapids
+dashed red (a rapid into the part stands out); the start point and the work origin are marked; every
+view has ticks in the program's units (mm, or inches for a program in inches: the toolpath's header
+says which, ``program_units``); a legend lists the tools. Text is placed and wrapped so that it stays on
+the page (``canvas.CHAR_WIDTH``).
+
+A lathe whose set-up gives no start (X0 Z0, the default: on the spindle axis at the part's face, where
+no tool starts) has no known position before its first move: the drawing begins where that move ends,
+rather than with a rapid drawn through the part.
 
 Flat memory: points go to a ``PointStore`` (a spill file past one chunk) as they arrive, each tagged
 with its kind of move and its tool, never an object per move; arcs are linearised on arrival within
@@ -19,7 +26,7 @@ from dataclasses import dataclass
 from types import TracebackType
 from typing import Any, BinaryIO, Callable, Iterable, Iterator, Sequence, TextIO
 
-from .canvas import Canvas, PngCanvas, Point, SvgCanvas, dashes
+from .canvas import Canvas, PngCanvas, Point, SvgCanvas, dashes, text_width, wrap
 from .geometry import CENTRE_KEYS, arc_points
 from .pointstore import PointStore
 
@@ -34,13 +41,18 @@ RAPID, FEED = 1, 2
 tag is its code plus four times its tool's slot (the tool's place in order of first move)."""
 
 PANEL = 400
-"""Each view is a square panel of this many pixels; the plot inside keeps ``MARGIN`` from its edge."""
+"""A mill's views are square panels of this many pixels; the plot inside keeps ``MARGIN`` from its edge."""
 MARGIN = 20
 LEFT, TOP = 70, 30
 """Room left of the first column (tick labels) and above the first row (view titles)."""
 GAP_X, GAP_Y = 90, 80
 """Room between panels for the next panel's tick labels, axis units and title."""
 WIDTH, HEIGHT = 1000, 1000
+PAGE_MARGIN = 6
+"""Text keeps this far from the page's edges."""
+LATHE_PANEL = (2 * PANEL + GAP_X, 300)
+"""A lathe view: both columns wide, so the two views and the legend below them fill the page."""
+MM_PER_INCH = 25.4
 RAPID_COLOUR = "#d62728"
 LINE_STYLE_COLOUR = "#333333"
 """The feed line in the legend of line styles (tools have their own colours)."""
@@ -65,20 +77,29 @@ class View:
     col: int
     row: int
     down: bool = False
+    width: float = PANEL
+    height: float = PANEL
 
     @property
     def left(self) -> float:
-        return LEFT + self.col * (PANEL + GAP_X)
+        return LEFT + self.col * (self.width + GAP_X)
 
     @property
     def top(self) -> float:
-        return TOP + self.row * (PANEL + GAP_Y)
+        return TOP + self.row * (self.height + GAP_Y)
+
+    def size(self, axis: int) -> float:
+        """The panel's extent in pixels along model ``axis`` (across for ``h``, up for ``v``)."""
+        return self.width if axis == self.h else self.height
 
 
 MILL_VIEWS = (View("Plan (XY)", 0, 1, 0, 0), View("Front (XZ)", 0, 2, 0, 1), View("Side (YZ)", 1, 2, 1, 1))
-LATHE_VIEWS = (View("Turning (Z across, X radius up)", 2, 0, 0, 0),
-               View("Mirrored (X radius down)", 2, 0, 0, 1, down=True))
-LEGEND_CELL = (1, 0)
+LATHE_VIEWS = (View("Turning (Z across, X radius up)", 2, 0, 0, 0, width=LATHE_PANEL[0], height=LATHE_PANEL[1]),
+               View("Mirrored (X radius down)", 2, 0, 0, 1, down=True, width=LATHE_PANEL[0],
+                    height=LATHE_PANEL[1]))
+MILL_LEGEND = (LEFT + PANEL + GAP_X, TOP + 10)
+"""Where the legend starts: a mill's in the free cell right of the plan, a lathe's below its views."""
+LATHE_LEGEND = (LEFT, TOP + 2 * (LATHE_PANEL[1] + GAP_Y) + 10)
 AXIS_NAMES = ("X", "Y", "Z")
 
 
@@ -105,8 +126,15 @@ class Backplot:
         self.half = False
         self.pos = (start.get("X", 0.0), start.get("Y", 0.0), start.get("Z", 0.0))
         self._start = self.pos
+        self.start_known = not lathe or any(self.pos)
+        """False for a lathe at the default start X0 Z0 (see the module docstring): the first move's
+        end is then where the drawing starts."""
+        self.units = "mm"
+        """The program's units (the header's ``program_units``): ticks and texts are in them, the points
+        always in mm."""
         self.points = PointStore()
-        self.points.append(self.pos, 0)
+        self.started = False
+        """The path's first point is stored (the start, or the first move's end)."""
         self.moves = {RAPID: 0, FEED: 0}
         self.tool: int | None = None
         self.tool_moves: dict[int | None, list[int]] = {}
@@ -135,8 +163,9 @@ class Backplot:
             self.add(ev)
         elif ev.get("event") == "tool":
             self.tool = ev.get("number")
-        elif ev.get("x_mode") == "diameter":
-            self.half = True
+        elif "toolpath" in ev:
+            self.half = ev.get("x_mode") == "diameter"
+            self.units = "inch" if ev.get("program_units") == "inch" else "mm"
 
     def add(self, ev: dict[str, Any]) -> None:
         """One motion event (other events are ignored)."""
@@ -149,10 +178,15 @@ class Backplot:
         end = (float(ev.get("x", x)), float(ev.get("y", y)), float(ev.get("z", z)))
         code = RAPID if kind == "rapid" else FEED
         self.moves[code] += 1
-        counts = self.tool_moves.get(self.tool)
-        if counts is None:
-            self.slots[self.tool] = len(self.tool_moves)
-            counts = self.tool_moves[self.tool] = [0, 0]
+        if not self.started:
+            self.started = True
+            if not self.start_known:  # where the tool was is unknown: the path starts here
+                self.points.append(end, 0)
+                self.pos = self._start = end
+                self._tool_slot()[code - 1] += 1
+                return
+            self.points.append(self.pos, 0)
+        counts = self._tool_slot()
         counts[code - 1] += 1
         tag = code + 4 * self.slots[self.tool]
         append = self.points.append
@@ -165,11 +199,22 @@ class Backplot:
             append(end, tag)
         self.pos = end
 
+    def _tool_slot(self) -> list[int]:
+        """The move counts of the tool in use, which gets its slot at its first move."""
+        counts = self.tool_moves.get(self.tool)
+        if counts is None:
+            self.slots[self.tool] = len(self.tool_moves)
+            counts = self.tool_moves[self.tool] = [0, 0]
+        return counts
+
     # -- reading back ------------------------------------------------------------------------------
     def start(self) -> tuple[float, float, float]:
         return self._start
 
     def bounds(self) -> tuple[float, float, float, float, float, float]:
+        if not self.started:  # no move: the start alone
+            self.started = True
+            self.points.append(self.pos, 0)
         return self.points.bounds()
 
     def all_points(self) -> Iterator[tuple[float, float, float]]:
@@ -222,10 +267,13 @@ class Backplot:
         if run:
             yield stretch, slot, run
 
-    def extent_text(self, scale: float) -> str:
-        x0, x1, y0, y1, z0, z1 = self.bounds()
-        return (f"X {x0:g}..{x1:g}  Y {y0:g}..{y1:g}  Z {z0:g}..{z1:g} mm  "
-                f"(1 mm = {scale:.3g} px)")
+    def extent_text(self, scale: float, units: str = "mm") -> str:
+        """The extent of the path in ``units`` and the picture's scale."""
+        unit = MM_PER_INCH if units == "inch" else 1.0
+        b = [v / unit for v in self.bounds()]
+        name = "in" if units == "inch" else "mm"
+        return (f"X {b[0]:g}..{b[1]:g}  Y {b[2]:g}..{b[3]:g}  Z {b[4]:g}..{b[5]:g} {name}  "
+                f"(1 {name} = {scale * unit:.3g} px)")
 
     # -- writing -----------------------------------------------------------------------------------
     def write_svg(self, out: TextIO) -> None:
@@ -251,28 +299,33 @@ class Frame:
 
     def __init__(self, plots: Sequence[Backplot], lathe: bool) -> None:
         self.views = LATHE_VIEWS if lathe else MILL_VIEWS
+        self.legend_at = LATHE_LEGEND if lathe else MILL_LEGEND
+        self.legend_width: float = WIDTH - PAGE_MARGIN - self.legend_at[0]
+        self.units = plots[0].units if plots else "mm"
+        """The units of ticks and texts: the (first) program's. Points are in mm whatever they are."""
+        self.unit = MM_PER_INCH if self.units == "inch" else 1.0
+        self.unit_name = "in" if self.units == "inch" else "mm"
         lo, hi = [0.0, 0.0, 0.0], [0.0, 0.0, 0.0]  # the work origin
         for plot in plots:
             b = plot.bounds()
             for a in range(3):
                 lo[a], hi[a] = min(lo[a], b[2 * a]), max(hi[a], b[2 * a + 1])
-        used = {a for v in self.views for a in (v.h, v.v)}
-        spans = [hi[a] / 2 - lo[a] / 2 for a in used]  # halves: no overflow near the float range
-        spans = [s for s in spans if s > 1e-9]
-        self.scale = (PANEL - 2 * MARGIN) / (2 * max(spans)) if spans else 1.0
+        scales = [(view.size(a) - 2 * MARGIN) / (2 * span) for view in self.views for a in (view.h, view.v)
+                  for span in (hi[a] / 2 - lo[a] / 2,) if span > 1e-9]  # halves: no overflow near the float range
+        self.scale = min(scales) if scales else 1.0
         self.centre = [lo[a] / 2 + hi[a] / 2 for a in range(3)]
 
     def to_px(self, view: View, p: Sequence[float]) -> Point:
         sign = -1.0 if view.down else 1.0
-        h = view.left + PANEL / 2 + (p[view.h] - self.centre[view.h]) * self.scale
-        v = view.top + PANEL / 2 - sign * (p[view.v] - self.centre[view.v]) * self.scale
+        h = view.left + view.width / 2 + (p[view.h] - self.centre[view.h]) * self.scale
+        v = view.top + view.height / 2 - sign * (p[view.v] - self.centre[view.v]) * self.scale
         return h, v
 
     def mapper(self, view: View, xyz: array[float]) -> Callable[[int], Point]:
         """Point index (into ``xyz``, a chunk of points, times three) -> pixel, for one view."""
         scale, sign = self.scale, (-1.0 if view.down else 1.0)
-        h0 = view.left + PANEL / 2 - self.centre[view.h] * scale
-        v0 = view.top + PANEL / 2 + sign * self.centre[view.v] * scale
+        h0 = view.left + view.width / 2 - self.centre[view.h] * scale
+        v0 = view.top + view.height / 2 + sign * self.centre[view.v] * scale
         hi, vi = view.h, view.v
 
         def px(i: int) -> Point:
@@ -280,23 +333,25 @@ class Frame:
         return px
 
     def ticks(self, view: View, axis: int) -> list[tuple[float, str]]:
-        """(pixel offset from the panel's centre, label) of round values along one panel edge."""
+        """(pixel offset from the panel's centre, label) of round values (in the program's units) along
+        one panel edge."""
         if not (self.scale > 0 and math.isfinite(self.scale)):
             return []
-        half = PANEL / 2 / self.scale
-        c = self.centre[axis]
-        step = nice_step(2 * half / TICKS)
+        unit = self.unit
+        half = view.size(axis) / 2 / self.scale / unit
+        c = self.centre[axis] / unit
+        step = nice_step(2 * half / (TICKS * view.size(axis) / PANEL))
         if not (math.isfinite(step) and step > 0 and math.isfinite(c)) or abs(c) / step > 1e12:
             return []
         places = max(0, -math.floor(math.log10(step)))
         first = math.ceil((c - half) / step)
         out = []
-        for k in range(first, first + TICKS + 2):
+        for k in range(first, first + int(TICKS * view.size(axis) / PANEL) + 2):
             value = k * step
             if value > c + half:
                 break
             label = f"{value:.{places}f}"
-            out.append(((value - c) * self.scale, "0" if float(label) == 0 else label))
+            out.append(((value - c) * self.scale * unit, "0" if float(label) == 0 else label))
         return out
 
 
@@ -329,32 +384,45 @@ def render(canvas: Canvas, frame: Frame, layers: Sequence[tuple[Backplot, Style]
                 canvas.circle(frame.to_px(view, plot.start()), 4, START_COLOUR, fill=START_COLOUR, cls="start")
             if marks is not None:
                 marks(view)
-    col, row = LEGEND_CELL
     with canvas.group("legend"):
-        legend((LEFT + col * (PANEL + GAP_X), TOP + row * (PANEL + GAP_Y) + 10))
+        legend(frame.legend_at)
 
 
 def panel(canvas: Canvas, frame: Frame, view: View) -> None:
-    """Frame, title, ticks along the bottom and left edges, and the axes' names with their unit."""
-    left, top = view.left, view.top
-    canvas.rect(left, top, PANEL, PANEL, "#bbbbbb")
-    canvas.text((left + 4, top - 8), view.title)
-    mid_h, mid_v = left + PANEL / 2, top + PANEL / 2
+    """Frame, title, ticks along the bottom and left edges, and the axes' names with their unit. The
+    vertical axis's name starts at the column's left edge above the panel, the title after it, so a
+    long name (``X radius (in)``) stays on the page."""
+    left, top, width, height = view.left, view.top, view.width, view.height
+    canvas.rect(left, top, width, height, "#bbbbbb")
+    radius = " radius" if view.v == 0 and frame.views is LATHE_VIEWS else ""
+    vertical = f"{AXIS_NAMES[view.v]}{radius} ({frame.unit_name})"
+    name_at = max(PAGE_MARGIN, left - LEFT + PAGE_MARGIN)
+    canvas.text((name_at, top - 8), vertical, cls="unit")
+    canvas.text((max(left + 4, name_at + text_width(vertical) + 12), top - 8), view.title)
+    mid_h, mid_v = left + width / 2, top + height / 2
     sign = -1.0 if view.down else 1.0
     with canvas.group("ticks", **{"data-axis": AXIS_NAMES[view.h]}):
         for off, label in frame.ticks(view, view.h):
             x = mid_h + off
-            canvas.line((x, top + PANEL), (x, top + PANEL + 5), "#555555", cls="tick")
-            canvas.text((x, top + PANEL + 18), label, anchor="middle", cls="tick-label")
+            canvas.line((x, top + height), (x, top + height + 5), "#555555", cls="tick")
+            canvas.text((x, top + height + 18), label, anchor="middle", cls="tick-label")
     with canvas.group("ticks", **{"data-axis": AXIS_NAMES[view.v]}):
         for off, label in frame.ticks(view, view.v):
             y = mid_v - sign * off
             canvas.line((left - 5, y), (left, y), "#555555", cls="tick")
             canvas.text((left - 8, y + 4), label, anchor="end", cls="tick-label")
-    radius = " radius" if view.v == 0 and frame.views is LATHE_VIEWS else ""
-    canvas.text((left + PANEL, top + PANEL + 34), f"{AXIS_NAMES[view.h]} (mm)", anchor="end", cls="unit")
-    canvas.text((left - 8, top - 8 + (PANEL + 22 if view.down else 0)),
-                f"{AXIS_NAMES[view.v]}{radius} (mm)", anchor="end", cls="unit")
+    canvas.text((left + width, top + height + 34), f"{AXIS_NAMES[view.h]} ({frame.unit_name})", anchor="end",
+                cls="unit")
+
+
+def legend_text(canvas: Canvas, at: Point, text: str, width: float, cls: str | None = None,
+                colour: str = "black") -> float:
+    """``text`` from ``at``, wrapped to ``width`` pixels; returns the y of the line after it."""
+    x, y = at
+    for line in wrap(text, width):
+        canvas.text((x, y), line, colour=colour, cls=cls)
+        y += 20
+    return y
 
 
 def draw_path(canvas: Canvas, frame: Frame, view: View, plot: Backplot, style: Style) -> None:
@@ -399,13 +467,16 @@ def tool_name(tool: int | None) -> str:
 
 
 def tool_legend(canvas: Canvas, frame: Frame, plot: Backplot, at: Point) -> None:
-    """Line styles, the tools with their colours and move counts, the marks, and the extent."""
+    """Line styles, the tools with their colours and move counts, the marks, and the extent. A lathe's
+    legend (the page's width, below the views) puts the marks and the extent in a second column."""
     x, y = at
+    width = frame.legend_width / 2 if frame.views is LATHE_VIEWS else frame.legend_width
     canvas.line((x, y - 4), (x + 30, y - 4), LINE_STYLE_COLOUR, STROKE)
     canvas.text((x + 36, y), f"feed ({plot.moves[FEED]})")
     canvas.line((x + 130, y - 4), (x + 160, y - 4), RAPID_COLOUR, STROKE, DASH)
     canvas.text((x + 166, y), f"rapid ({plot.moves[RAPID]})")
     y += 28
+    top = y
     canvas.text((x, y), "Tools (feed colour)")
     for tool, colour in plot.tool_colours().items():
         y += 20
@@ -413,16 +484,20 @@ def tool_legend(canvas: Canvas, frame: Frame, plot: Backplot, at: Point) -> None
         canvas.line((x, y - 4), (x + 30, y - 4), colour, 3, cls="tool-swatch")
         canvas.text((x + 36, y), f"{tool_name(tool)}: {feeds} feed, {rapids} rapid", cls="tool")
     y += 28
-    marks(canvas, (x, y), plot)
-    canvas.text((x, y + 48), plot.extent_text(frame.scale))
+    if frame.views is LATHE_VIEWS:
+        x, y = x + width, top
+    y = marks(canvas, frame, (x, y), plot, width)
+    legend_text(canvas, (x, y + 8), plot.extent_text(frame.scale, frame.units), width, cls="extent")
 
 
-def marks(canvas: Canvas, at: Point, plot: Backplot) -> None:
-    """The legend of the start and origin marks."""
+def marks(canvas: Canvas, frame: Frame, at: Point, plot: Backplot, width: float) -> float:
+    """The legend of the start and origin marks, in the program's units; returns the y after it."""
     x, y = at
     canvas.circle((x + 15, y - 4), 4, START_COLOUR, fill=START_COLOUR)
-    sx, sy, sz = plot.start()
-    canvas.text((x + 36, y), f"start X{sx:g} Y{sy:g} Z{sz:g}")
-    y += 20
+    sx, sy, sz = (v / frame.unit for v in plot.start())
+    where = f"start X{sx:g} Y{sy:g} Z{sz:g}" if plot.start_known else \
+        f"start (none in the set-up): the first move's end X{sx:g} Z{sz:g}"
+    y = legend_text(canvas, (x + 36, y), where, width - 36)
     canvas.circle((x + 15, y - 4), 6, "black")
     canvas.text((x + 36, y), "work origin X0 Y0 Z0")
+    return y + 20

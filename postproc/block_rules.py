@@ -51,6 +51,20 @@ def speed_problem(rpm: object) -> str | None:
     return None
 
 
+def per_rev_problem(turning: str, rpm: object) -> str | None:
+    """Why a feed move in feed per revolution cannot run with the spindle ``turning`` ('cw', 'ccw',
+    'stop') at ``rpm`` (None: unknown, an Expr: known at run time), or None. The axes would wait for
+    revolutions that never come: a Fanuc waits forever [K]; rs274 refuses the block ("Cannot feed with zero
+    spindle speed in feed per rev mode") [V]."""
+    if turning == "stop":
+        return ("a feed-per-revolution move with the spindle stopped: the axes would wait for revolutions that "
+                "never come (start the spindle first, or feed per minute)")
+    if isinstance(rpm, (int, float)) and rpm == 0:
+        return ("a feed-per-revolution move at spindle speed S0: the axes would wait for revolutions that never "
+                "come (program a speed above 0 first, or feed per minute)")
+    return None
+
+
 def needs_feed(motion: object) -> bool:
     """True for a motion that commands a feed move: a feed mode with axis words or an arc centre."""
     return (getattr(motion, "mode", None) in FEED_MOVES

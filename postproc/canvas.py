@@ -17,6 +17,22 @@ from .errors import UsageError
 
 SVG_NS = "http://www.w3.org/2000/svg"
 Point = tuple[float, float]
+CHAR_WIDTH = 7.0
+"""Width in pixels a character of text takes at most, as the layout counts it: the SVG's 12 px sans-serif
+averages about 6.7 px for digits and capitals, Pillow's default font 6 px. Neither surface measures text
+for the layout (SVG cannot), so text is placed and wrapped by this bound."""
+
+
+def text_width(text: str) -> float:
+    """The width ``text`` takes at most (``CHAR_WIDTH`` per character)."""
+    return len(text) * CHAR_WIDTH
+
+
+def wrap(text: str, width: float) -> list[str]:
+    """``text`` in lines of at most ``width`` pixels: broken at spaces, and within a word (a long file
+    name) only where a word alone is too wide."""
+    import textwrap
+    return textwrap.wrap(text, max(1, int(width // CHAR_WIDTH)), break_on_hyphens=False) or [""]
 
 
 class _TextSink:

@@ -14,6 +14,17 @@ from typing import TextIO
 from .records import record
 
 
+def character_name(ch: str) -> str:
+    """A character as a diagnostic names it. Programs are read with ``surrogateescape``, so a byte that is
+    not UTF-8 arrives as a lone surrogate (0xFF as U+DCFF): it is named as the byte the file holds."""
+    code = ord(ch)
+    if 0xDC80 <= code <= 0xDCFF:
+        return f"byte 0x{code - 0xDC00:02X} (not UTF-8)"
+    if ch.isascii() and ch.isprintable():
+        return f"character {ch!r}"
+    return f"character {ch!r} (U+{code:04X})"
+
+
 @record(frozen=True, slots=True)
 class Location:
     """Where a diagnostic points: 1-based line and column in a named file."""

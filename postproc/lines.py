@@ -25,7 +25,7 @@ from itertools import chain, islice
 from typing import Callable, Iterable, Iterator
 
 from .context import Context
-from .errors import Location, ParseError
+from .errors import Location, ParseError, character_name
 
 MAX_DIGITS = 30
 """The most digits read in one number: more than any controller's registers hold, and within a float's
@@ -211,8 +211,7 @@ def line_problem(line: str, limit: int, blanks: str = "") -> tuple[str, int] | N
         elif ch == ".":
             continue  # one number: its digits on both sides of the point count together
         elif not ch.isascii() and ch not in blanks:
-            return (f"character {ch!r} (U+{ord(ch):04X}) is not ASCII: outside comments a program is ASCII",
-                    i + 1)
+            return (f"{character_name(ch)} is not ASCII: outside comments a program is ASCII", i + 1)
         else:
             run = 0
     return None

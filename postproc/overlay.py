@@ -9,10 +9,11 @@ only when one is asked for.
 
 from __future__ import annotations
 
-import textwrap
+import os
 from typing import Any, BinaryIO, Iterable, Iterator, Protocol, TextIO
 
-from .backplot import (HEIGHT, RAPID, FEED, STROKE, WIDTH, Backplot, Frame, Style, View, marks, render)
+from .backplot import (HEIGHT, RAPID, FEED, STROKE, WIDTH, Backplot, Frame, Style, View, legend_text, marks,
+                       render)
 from .canvas import Canvas, PngCanvas, Point, SvgCanvas
 from .errors import UsageError
 
@@ -99,14 +100,16 @@ class Overlay:
                lambda at: self.legend(canvas, frame, report, at), deviation)
 
     def legend(self, canvas: Canvas, frame: Frame, report: Report, at: Point) -> None:
+        """Each program by its file's name (the command line has its path), the deviation and the verdict,
+        the marks and the extent: every text wrapped to the legend's width."""
         x, y = at
+        width = frame.legend_width
         for (name, plot, style) in ((self.names[0], self.source, SOURCE), (self.names[1], self.target, TARGET)):
             side = "IN" if style is SOURCE else "OUT"
             canvas.line((x, y - 4), (x + 30, y - 4), style.colour or "", style.width, cls=f"swatch-{style.side}")
             canvas.line((x + 36, y - 4), (x + 60, y - 4), style.rapid_colour, STROKE, (6, 4))
-            canvas.text((x + 66, y), f"{side} {name}: {plot.moves[FEED]} feed, {plot.moves[RAPID]} rapid "
-                                     "(rapids dashed)", cls=f"name-{style.side}")
-            y += 20
+            y = legend_text(canvas, (x + 66, y), f"{side} {os.path.basename(name) or name}: {plot.moves[FEED]} "
+                            f"feed, {plot.moves[RAPID]} rapid (rapids dashed)", width - 66, cls=f"name-{style.side}")
         y += 8
         canvas.circle((x + 15, y - 4), 8, DEVIATION_COLOUR)
         if report.where is not None:
@@ -114,15 +117,12 @@ class Overlay:
                     f"OUT:{report.where[1]}")
         else:
             text = "no moves compared"
-        canvas.text((x + 36, y), text, cls="deviation-text")
-        y += 20
-        for line in [w for text in report.summary().splitlines()[:1] + _mismatch(report)
-                     for w in textwrap.wrap(text, 70)]:
-            canvas.text((x + 36, y), line, cls="verdict")
-            y += 20
-        y += 8
-        marks(canvas, (x, y), self.source)
-        canvas.text((x, y + 48), self.source.extent_text(frame.scale) + " (IN)")
+        y = legend_text(canvas, (x + 36, y), text, width - 36, cls="deviation-text")
+        for text in report.summary().splitlines()[:1] + _mismatch(report):
+            y = legend_text(canvas, (x + 36, y), text, width - 36, cls="verdict")
+        y = marks(canvas, frame, (x, y + 8), self.source, width)
+        legend_text(canvas, (x, y + 8), self.source.extent_text(frame.scale, frame.units) + " (IN)", width,
+                    cls="extent")
 
 
 def _mismatch(report: Report) -> list[str]:

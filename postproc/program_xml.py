@@ -11,7 +11,7 @@ from typing import BinaryIO, Iterable
 
 from lxml import etree
 
-from .errors import ConfigError, Location, UnsupportedError
+from .errors import ConfigError, Location, UnsupportedError, character_name
 from .ir import Block
 from .xmlio import XFactory, parse_xml_file
 
@@ -42,10 +42,8 @@ def _not_xml(block: Block, file: str) -> UnsupportedError:
     m = _NOT_XML.search(block.text or "")
     if m is None:
         return UnsupportedError("the block cannot be written as XML", Location(file, block.line, 1))
-    ch = m.group(0)
-    code = ord(ch)
-    what = f"undecodable byte 0x{code - 0xDC00:02X}" if 0xDC80 <= code <= 0xDCFF else f"character U+{code:04X}"
-    return UnsupportedError(f"{what} cannot be written to the IR XML", Location(file, block.line, m.start() + 1))
+    return UnsupportedError(f"{character_name(m.group(0))} cannot be written to the IR XML",
+                            Location(file, block.line, m.start() + 1))
 
 
 def load_program(path: str | Path, factory: XFactory | None = None) -> tuple[str, list[Block]]:

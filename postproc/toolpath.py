@@ -823,13 +823,17 @@ _EVENT_KEYS = frozenset(("ToolSelect", "ToolChange", "SpindleControl", "Coolant"
                          "ProgramControl", "MachineFunction"))
 
 
-def header(ctx: Context, feed_mode: str | None) -> Event:
-    """The first line of a toolpath; keys beyond the fixed three only when they apply."""
+def header(ctx: Context, feed_mode: str | None, program_units: str = "mm") -> Event:
+    """The first line of a toolpath; keys beyond the fixed three only when they apply. ``program_units``:
+    the units of the program's first move (lengths here are mm whatever they are; a backplot labels its
+    drawing in the program's own)."""
     head: Event = {"toolpath": 1, "units": "mm", "dialect": ctx.dialect}
     if ctx.diameter:
         head["x_mode"] = "diameter"
     if feed_mode is not None and feed_mode != "per_min":
         head["feed_mode"] = feed_mode
+    if program_units == "inch":
+        head["program_units"] = "inch"
     return head
 
 
@@ -850,6 +854,7 @@ def simulate(blocks: Iterable[Block], ctx: Context, live_after_end: list[int] | 
     report = ctx.diagnostics.error
     held: list[Event] = []
     holding = True
+    units: str | None = None  # the program's units at its first move, for the header
     out: list[Event] = []
     for block in blocks:
         try:
@@ -861,13 +866,15 @@ def simulate(blocks: Iterable[Block], ctx: Context, live_after_end: list[int] | 
         if not out:
             continue
         if holding:
+            if units is None and any("move" in ev for ev in out):
+                units = sim.modal.units
             held.extend(out)
             out.clear()
             if sim.header_mode is None and len(held) < HEADER_LOOKAHEAD:
                 continue
             if sim.header_mode is None:
                 sim.header_mode = "per_min"
-            yield header(ctx, sim.header_mode)
+            yield header(ctx, sim.header_mode, units or sim.modal.units)
             yield from held
             held, holding = [], False
         else:
@@ -884,7 +891,7 @@ def simulate(blocks: Iterable[Block], ctx: Context, live_after_end: list[int] | 
     elif out:
         held.extend(out)
     if holding:
-        yield header(ctx, sim.header_mode)
+        yield header(ctx, sim.header_mode, units or sim.modal.units)
         yield from held
 
 

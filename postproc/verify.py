@@ -358,8 +358,10 @@ def _as_radius(events: Iterator[Event], head: Event) -> Iterator[Event]:
 def _differ(a: Move | Event | None, b: Move | Event | None, report: Report) -> str | None:
     """Record the deviation of a pair; return a description when they differ in structure."""
     if a is None:
+        if _is_end(b):
+            return None  # IN ends by running out there, OUT says so (M2: LinuxCNC refuses a file without one)
         return f"IN has no more moves or events, OUT has {describe(b)}"  # type: ignore[arg-type]
-    if b is None:
+    if b is None:  # an end OUT lacks is a difference: M2/M30 stop the spindle and coolant, running out does not
         return f"OUT has no more moves or events, IN has {describe(a)}"
     if not isinstance(a, Move) or not isinstance(b, Move):
         if isinstance(a, Move) or isinstance(b, Move) or not _same_event(a, b):
@@ -380,6 +382,11 @@ def _differ(a: Move | Event | None, b: Move | Event | None, report: Report) -> s
         report.where = (a.last_line, b.last_line)
         report.where_at = (_xyz(a.end), _xyz(b.end))
     return None
+
+
+def _is_end(item: Move | Event | None) -> bool:
+    """The program end event (M2/M30)."""
+    return not isinstance(item, Move) and item is not None and item.get("event") == "end"
 
 
 def _xyz(p: dict[str, float]) -> Point:

@@ -67,6 +67,8 @@ class Writer(abc.ABC):
         """The dialect written, whose capability flags the writer reads (None: every flag holds)."""
         self.straight = False
         """``write`` offers a canonical source block to ``straight_move`` before ``write_block``."""
+        self.last_line = 0
+        """The source line of the last block ``write`` was given (0: none yet), for ``finish``'s notes."""
 
     def straight_move(self, block: Block) -> str | None:
         """The text of a canonical source block (``Block.canonical``) when a cheaper way than ``write_block``
@@ -96,7 +98,9 @@ class Writer(abc.ABC):
         generated = sequences.per_block
         footer: str | None = None
         started = False
+        line = 0
         for block in blocks:
+            line = block.line
             tape_mark = "TapeMark" in block.sections
             if not started and not tape_mark:
                 started = True
@@ -129,6 +133,7 @@ class Writer(abc.ABC):
                 emit(text)
         if not started:
             self._emit_template(emit, output_map, line_format, "header", sequences.render("header"))
+        self.last_line = line
         tail = self.finish()
         if tail:
             emit(tail)

@@ -111,9 +111,11 @@ def test_computed_g_code_is_kept_verbatim_and_flattened_for_another_dialect() ->
     diagnostics = translate(io.StringIO(HEAD + "G#10 X1.\n"), out, file="t.nc", source="fanuc", target="linuxcnc")
     assert [str(w) for w in diagnostics.warnings] == [
         "t.nc:2:1: warning: the program is flattened (its evaluated motion is written): line 2: a computed G "
-        "code from fanuc has no equivalent in linuxcnc"]
+        "code from fanuc has no equivalent in linuxcnc",
+        "t.nc:2:1: warning: the program has no end (M2/M30): M2 written after its last block, as LinuxCNC "
+        "refuses a program that runs out"]
     # #10 is vacant: the G word is omitted (Fanuc's rule), the move stays in G00
-    assert out.getvalue() == "G21 G90 G0 X0. Y0. Z0.\nG0 X1.\n"
+    assert out.getvalue() == "G21 G90 G0 X0. Y0. Z0.\nG0 X1.\nM2\n"
 
 
 LOOP = "#1=0\nWHILE [#1 LT 3] DO1\nG01 X#1 F100.\n#1=#1+1\nEND1\nM30\n"

@@ -69,7 +69,7 @@ def test_a_spindle_stop_comes_before_the_orientation_in_its_own_block() -> None:
     program = HEAD + "Y2.5 M05 M19\n"
     out = io.StringIO()
     translate(io.StringIO(program), out, file="t.nc", source="fanuc", target="linuxcnc")
-    assert out.getvalue().splitlines()[1:] == ["G0 Y2.5", "M5", "M19 R0."]
+    assert out.getvalue().splitlines()[1:] == ["G0 Y2.5", "M5", "M19 R0.", "M2"]
     report = verify_lines(io.StringIO(program), io.StringIO(out.getvalue()), file_in="a.nc", file_out="b.ngc",
                           source="fanuc", target="linuxcnc", tolerance=0.0)
     assert report.ok, report.summary()
@@ -87,7 +87,7 @@ def test_settings_beside_compensation_on_go_before_it_for_linuxcnc(body: str, se
     program = HEAD + body
     out = io.StringIO()
     translate(io.StringIO(program), out, file="t.nc", source="fanuc", target="linuxcnc")
-    assert out.getvalue().splitlines()[1:] == [settings, rest]
+    assert out.getvalue().splitlines()[1:] == [settings, rest, "M2"]
     report = verify_lines(io.StringIO(program), io.StringIO(out.getvalue()), file_in="a.nc", file_out="b.ngc",
                           source="fanuc", target="linuxcnc", tolerance=0.0, allow_ignored=True)
     assert report.ok, report.summary()

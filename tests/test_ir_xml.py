@@ -345,8 +345,8 @@ def test_ir_command_writes_to_stdout(cli, root):
 
 
 @pytest.mark.parametrize("text, col, what", [
-    (b"G00 X0. (BELL \x07)\n", 15, "character U+0007"),
-    (b"G00 X0. (DURCHMESSER \xd8)\n", 22, "undecodable byte 0xD8"),
+    (b"G00 X0. (BELL \x07)\n", 15, "character '\\x07' (U+0007)"),
+    (b"G00 X0. (DURCHMESSER \xd8)\n", 22, "byte 0xD8 (not UTF-8)"),
 ])
 def test_ir_of_text_xml_cannot_hold_is_a_located_error(cli, tmp_path, text, col, what):
     path = tmp_path / "odd.nc"

@@ -220,7 +220,7 @@ def test_machine_type_decides_meaning(text: str, setup: MachineSetup, key: str, 
 
 @pytest.mark.parametrize("code, kind", [("G90", "turn_single"), ("G92", "thread_single"), ("G94", "face_single")])
 def test_system_a_single_cycles(code: str, kind: str) -> None:
-    b = blocks(f"G00 X60. Z5.\n{code} X50. Z-30. F2.\n", "fanuc")[1]
+    b = blocks(f"S500 M03 G00 X60. Z5.\n{code} X50. Z-30. F2.\n", "fanuc")[1]  # (G99: the spindle turns)
     assert b.sections["LatheCycle"].kind == kind
 
 
@@ -432,7 +432,9 @@ def test_lathe_backplot_draws_the_zx_plane_in_radii(tmp_path: Any) -> None:
     export_toolpath(lines(SEED), out, file="in.nc", dialect="gsk", setup=LATHE, fmt="svg")
     svg = out.getvalue()
     assert "Turning (Z across, X radius up)" in svg
-    assert "X 0..50 " in svg  # the diameters 0..100 drawn as radii (true geometry, arcs round)
+    # the diameters 20..100 (the profile's N10 X20., the last rapid's X100.) drawn as radii (true geometry,
+    # arcs round); the set-up gives no start, so the drawing begins at the first move (X60. Z5.), not at X0
+    assert "X 10..50 " in svg
 
 
 def test_each_control_starts_in_its_own_feed_mode() -> None:
@@ -477,7 +479,7 @@ def test_g76_one_block_form_becomes_two_blocks_for_gsk() -> None:
     """Fanuc 15-T ``G76 X Z K D F A P``: K height, D first depth (decimal); GSK gets the two-block form
     with the set-up's m and r and the block's angle, P/Q in least increments."""
     setup = MachineSetup(input=InputSettings(machine_type="lathe", lathe_cycle_format="one-block"))
-    program = "G00 X55. Z5.\nG76 X44.376 Z-30. K1.624 D0.5 F2. A60 P1\nG00 X60.\n"
+    program = "S500 M03 G00 X55. Z5.\nG76 X44.376 Z-30. K1.624 D0.5 F2. A60 P1\nG00 X60.\n"
     gsk = write(program, "fanuc", "gsk", setup)
     assert gsk.splitlines()[1:3] == ["G76 P011060 Q100 R0.05", "G76 X44.376 Z-30. P1624 Q500 F2."]
     assert deviation(program, gsk, "fanuc", "gsk", setup) == 0.0

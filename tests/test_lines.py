@@ -37,6 +37,8 @@ def _metric(dialect: str, prologue: str) -> str:
                           "is ASCII"),
     ("G0 \uff3810.", "p.nc:2:4: error: character '\uff38' (U+FF38) is not ASCII: outside comments a program is "
                      "ASCII"),
+    # a byte that is not UTF-8 is read as a surrogate (surrogateescape) and named as the byte the file holds
+    ("G0 X\udcff2.", "p.nc:2:5: error: byte 0xFF (not UTF-8) is not ASCII: outside comments a program is ASCII"),
     ("G0 X" + "1" * 5000 + ".", "p.nc:2:5: error: a number with more than 30 digits cannot be read"),
     ("G0 X1" + "1" * 399, "p.nc:2:5: error: a number with more than 30 digits cannot be read"),
     ("G0 X" + "1" * 16 + "." + "1" * 16, "p.nc:2:5: error: a number with more than 30 digits cannot be read"),

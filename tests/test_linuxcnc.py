@@ -339,10 +339,10 @@ def test_examples_exist_and_simulate() -> None:
     ("G43 H02 Z50.\n", "G43 H02 G0 Z50.\n"),
 ])
 def test_fanuc_blocks_in_linuxcnc_spelling(fanuc: str, linuxcnc: str) -> None:
-    """Every expected line was checked to run in LinuxCNC's interpreter."""
+    """Every expected line was checked to run in LinuxCNC's interpreter (the fragment has no end: M2)."""
     prefix = "G21 G00 X0. Y0. Z10.\n"
     text, _ = write(prefix + fanuc, "linuxcnc", source="fanuc")
-    assert text == "G21 G0 X0. Y0. Z10.\n" + linuxcnc
+    assert text == "G21 G0 X0. Y0. Z10.\n" + linuxcnc + "M2\n"
 
 
 @pytest.mark.parametrize("fanuc, message", [

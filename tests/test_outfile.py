@@ -137,10 +137,10 @@ def test_output_over_the_input_is_refused(cli, tmp_path: Path) -> None:
 
 def test_in_place_replaces_the_input(cli, tmp_path: Path) -> None:
     program = tmp_path / "p.nc"
-    program.write_text("G21 G90\nG0 X1.50 Y2\n")
+    program.write_text("G21 G90\nG0 X1.50 Y2\nM30\n")
     result = cli(TRANSLATE[0], program, "--from", "fanuc", "--to", "linuxcnc", "--in-place", "-o", program)
     assert (result.status, result.err) == (0, "")
-    assert program.read_text() == "G21 G90\nG0 X1.5 Y0.002\n"
+    assert program.read_text() == "G21 G90\nG0 X1.5 Y0.002\nM30\n"
 
 
 # -- signals, with a real process ------------------------------------------------------------------

@@ -216,10 +216,11 @@ def test_what_rs274_refuses_in_a_translation_is_a_located_error(program: str, me
 
 
 def test_linuxcnc_gets_no_lone_closing_percent() -> None:
+    """The lone '%' ended the source program: M2 ends the LinuxCNC one (``test_program_end.py``)."""
     text, warnings = _translate("G21 G0 X1.\n%\n", "fanuc", "linuxcnc")
-    assert text == "G21 G0 X1.\n(%)\n"
+    assert text == "G21 G0 X1.\nM2\n(%)\n"
     assert warnings == ["t.nc:2:1: warning: the program ends with '%' and no M2/M30, without an opening '%': "
-                        "LinuxCNC refuses a lone '%', written as a comment (add M30 before it)"]
+                        "LinuxCNC refuses a lone '%': M2 written for it, the '%' as a comment"]
     for kept in ("%\nG21 G0 X1.\n%\n", "G21 G0 X1.\nM30\n%\n"):
         assert _translate(kept, "fanuc", "linuxcnc")[0] == kept
 
@@ -237,4 +238,20 @@ def test_every_translation_to_grbl_is_checked_and_a_refused_one_is_reported() ->
     output_rules._check("grbl", "G80 G0 Z1.\n", MachineSetup())
     found = output_rules.take_violations()
     assert len(found) == 1 and "error:21" in found[0] and "G80 G0 Z1." in found[0]
+
+
+
+def test_a_program_written_without_translate_is_checked_too() -> None:
+    """The hook sits on the writers' ``write``: the conformance suite's generated programs (written from a
+    neutral IR, no ``translate``) are held to the rules like translations."""
+    from postproc.plugins import default_registry
+    from postproc.setup import MachineSetup
+    from postproc.testing.neutral import NeutralProgram, write_neutral
+    before = output_rules.checked["grbl"]
+    y = float(uuid.uuid4().int % 1000)  # a program never seen, so it is checked, not found in the cache
+    program = NeutralProgram([("rapid", {"X": 1.0, "Y": y}), ("linear", {"X": 2.0}, 100.0)],
+                             start={"X": 0.0, "Y": 0.0, "Z": 10.0})
+    written = write_neutral(program.blocks(), default_registry().dialect("grbl"), MachineSetup())
+    assert not written.errors and output_rules.checked["grbl"] == before + 1
+    assert output_rules.take_violations() == []
 

@@ -18,6 +18,7 @@ from postproc.program_end import comment_after_end
 from postproc.setup import MachineSetup
 from postproc.toolpath import toolpath_events
 from postproc.verify import verify_lines
+from tests.support.rs274 import available as rs274_available, run_rs274
 
 AFTER_M30 = "G21 G90\nG0 X1.\nM30\nG0 X100. (CRASH)\nG1 Y5. F10.\n"
 
@@ -98,3 +99,62 @@ def test_subprograms_after_the_end_are_kept_where_the_target_runs_them(target: t
     out = list(comment_after_end(iter(blocks), ctx, target))
     commented = [b.line for b in out if list(b.sections) == ["Comments"]]
     assert commented == ([6] if kept else [3, 4, 5, 6, 7, 8])
+
+
+# -- a program with no end, written for LinuxCNC ----------------------------------------------------
+
+NO_END = "p.nc:{}:1: warning: the program has no end (M2/M30): M2 written after its last block, as LinuxCNC " \
+         "refuses a program that runs out"
+
+
+@pytest.mark.parametrize("program, expected, warning", [
+    ("G21 G90\nG0 X1.\n", "G21 G90\nG0 X1.\nM2\n", NO_END.format(2)),
+    ("%\nG21 G90\nG0 X1.\n", "%\nG21 G90\nG0 X1.\nM2\n%\n", NO_END.format(3)),
+    ("G21 G90\nG0 X1.\n%\n", "G21 G90\nG0 X1.\nM2\n(%)\n",
+     "p.nc:3:1: warning: the program ends with '%' and no M2/M30, without an opening '%': LinuxCNC refuses a "
+     "lone '%': M2 written for it, the '%' as a comment"),
+    ("(ONLY A COMMENT)\n", "(ONLY A COMMENT)\nM2\n", NO_END.format(1)),
+    # ends rs274 accepts as they are: no M2, no warning about the end
+    ("%\nG21 G90\nG0 X1.\n%\n", "%\nG21 G90\nG0 X1.\n%\n", None),
+    ("G21 G90\nG0 X1.\nM02\n", "G21 G90\nG0 X1.\nM2\n", None),
+    ("G21 G90\nG0 X1.\nM30\n%\n", "G21 G90\nG0 X1.\nM30\n%\n", None),
+])
+def test_linuxcnc_gets_an_end_where_the_source_has_none(program: str, expected: str, warning: str | None) -> None:
+    """rs274 refuses a file that runs out with neither M2/M30 nor a closing '%' after an opening one ("File
+    ended with no percent sign or program end"), and a lone closing '%' ("Bad character '%' used"): the
+    program ends where it runs out, so M2 says so. The output is checked by rs274 (``output_rules``), and
+    verifies against its source: a program that runs out and one that ends there are the same program."""
+    text, diagnostics = _translate(program, "fanuc", "linuxcnc")
+    assert text == expected
+    ends = [str(w) for w in diagnostics.warnings if "M2" in str(w)]
+    assert ends == ([warning] if warning else [])
+    assert _verify(program, text, "fanuc", "linuxcnc") == (True, "")
+    if rs274_available():
+        run_rs274(text)  # raises when rs274 refuses it
+
+
+@pytest.mark.parametrize("source, program", [
+    ("gsk", "G0 X10. Z2.\nG1 Z-5. F0.2\n"),
+    ("isg", "N10 G0 X10. Y2.\nN20 G1 Y-5. F100\n"),
+    ("fagor", "G0 X10 Y2\nG1 Y-5 F100\n"),
+    ("grbl", "G21 G90\nG0 X1\nG1 Y2 F100\n"),
+])
+def test_every_source_dialect_without_an_end_gets_m2(source: str, program: str) -> None:
+    text, _ = _translate(program, source, "linuxcnc")
+    assert text.endswith("M2\n")
+    if rs274_available():
+        run_rs274(text)
+
+
+def test_linuxcnc_written_back_to_itself_stays_as_it_is() -> None:
+    """Lossless: a LinuxCNC file without an end is the user's own (rs274 would refuse the source too)."""
+    assert _translate("G0 X1\n", "linuxcnc", "linuxcnc")[0] == "G0 X1\n"
+
+
+def test_verify_takes_an_end_where_the_source_runs_out_as_the_same_program() -> None:
+    """Not the other way round: M2/M30 stop the spindle and coolant, a program that runs out does not
+    (``test_verify.py``: a missing end is a mismatch)."""
+    assert _verify("G21 G0 X1.\n", "G21 G0 X1.\nM30\n", "fanuc", "fanuc") == (True, "")
+    assert _verify("G21 G0 X1.\nM30\n", "G21 G0 X1.\n", "fanuc", "fanuc")[0] is False
+    ok, why = _verify("G21 G0 X1.\n", "G21 G0 X1.\nM30\nG0 X2.\n", "fanuc", "grbl")
+    assert not ok  # an end that is not the last thing is no end where the program runs out

@@ -24,7 +24,9 @@ def run(text: str, setup: MachineSetup | None = None) -> list[dict[str, Any]]:
 
 def body(text: str, setup: MachineSetup | None = None) -> list[dict[str, Any]]:
     events = run(text, setup)
-    assert events[0] == HEADER
+    # lengths are mm whatever the program's units; an inch program's header says it is one
+    inch = "G20" in text  # (each program here is in inches from its first move when it has G20)
+    assert events[0] == ({**HEADER, "program_units": "inch"} if inch else HEADER), text
     return events[1:]
 
 

@@ -18,6 +18,7 @@ import copy
 import dataclasses
 from typing import TYPE_CHECKING, Iterable, Iterator
 
+from postproc.block_rules import ZERO_FEED, per_rev_problem
 from postproc.context import Context
 from postproc.cycles.lathe_expansion import expand, profile_segments, start_point, to_sections
 from postproc.errors import PostprocError, ProgramError
@@ -102,6 +103,14 @@ class LatheCycleSyntax(Syntax):
         except ProgramError as err:
             raise ProgramError(f"{err.message}" if err.message.startswith(code) else f"{code}: {err.message}",
                                ctx.at(block)) from None
+        if any(move.kind != "rapid" and move.feed == 0.0 for move in moves):
+            # a cycle cuts at F as a G01 does: Fanuc alarms on F0 (PS0011 FEED ZERO, Fanuc T manual [K]; GSK
+            # 980TDc alike [?]), rs274 and grbl refuse the expanded G1 (block_rules.ZERO_FEED) [V]
+            raise ProgramError(f"{code}: {ZERO_FEED}", ctx.at(block, ctx.column_of(block, "F")))
+        problem = per_rev_problem(ctx.state.spindle, ctx.state.spindle_rpm) \
+            if ctx.state.feed_mode == "per_rev" and any(move.kind != "rapid" for move in moves) else None
+        if problem is not None:  # its cuts feed per revolution as a G01's do (modal_state._check_turning)
+            raise ProgramError(f"{code}: {problem}", ctx.at(block, ctx.column_of(block, "G")))
         limit = ctx.setup.limits.moves_per_block
         if len(moves) > limit:
             raise ProgramError(f"{code} makes {len(moves)} moves, more than <Limits movesPerBlock> ({limit})",

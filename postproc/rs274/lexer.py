@@ -17,7 +17,7 @@ from __future__ import annotations
 import re
 from typing import Iterable, Iterator
 
-from postproc.errors import Location, ParseError
+from postproc.errors import Location, ParseError, character_name
 from postproc.ir import BlockDelete, Block, Comments, ProgramStart, Sequence, TapeMark
 
 from .expressions import FANUC_SPELLING, ExprSyntaxError, parse_word_value
@@ -215,5 +215,5 @@ def _explain(file: str, line: int, code: str, pos: int = 0) -> tuple[str, Locati
             number = _TOKEN.match(code, pos)
             assert number is not None
             return f"number without an address at {number.group(0)!r}", Location(file, line, pos + 1)
-        return f"unexpected character {ch!r}", Location(file, line, pos + 1)
+        return f"unexpected {character_name(ch)}", Location(file, line, pos + 1)
     return "malformed block", Location(file, line, 1)

@@ -29,7 +29,7 @@ from typing import Callable, Iterable, Iterator
 
 from postproc.control import Assign
 from postproc.dialect import Reader
-from postproc.errors import Location, ParseError, PostprocError
+from postproc.errors import Location, ParseError, PostprocError, character_name
 from postproc.expr import Expr, Var
 from postproc.ir import Block, BlockDelete, Comments, Sequence, TapeMark
 
@@ -197,7 +197,7 @@ def _slow_words(file: str, line: int, code: str, dialect: str, block: Block,
             if ch.isdigit() or ch in "+-.":
                 token = code[pos:].split()[0]
                 raise ParseError(f"number without an address at {token!r}", Location(file, line, pos + 1))
-            raise ParseError(f"unexpected character {ch!r}", Location(file, line, pos + 1))
+            raise ParseError(f"unexpected {character_name(ch)}", Location(file, line, pos + 1))
     except ExprSyntaxError as err:
         if err.location is None:
             err.at(file, line)

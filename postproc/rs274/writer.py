@@ -824,9 +824,13 @@ class WordWriter(Writer):
 
     def left_out(self, s: Motion, block: Block) -> bool:
         """A bare feed motion code the target refuses with no feed rate in force
-        (``BARE_FEED_MOTION_NEEDS_FEED``): it only sets the mode, so it is not written."""
-        return (self.BARE_FEED_MOTION_NEEDS_FEED and not s.axes and s.mode in ("linear", "cw", "ccw")
-                and "Feed" not in block.sections and not self.modal.feed)
+        (``BARE_FEED_MOTION_NEEDS_FEED``): it only sets the mode, so it is not written. The rate in force
+        is the block's own F when it has one (``G01 F0``, which rs274 refuses as ``G1 F0``)."""
+        if not (self.BARE_FEED_MOTION_NEEDS_FEED and not s.axes and s.mode in ("linear", "cw", "ccw")):
+            return False
+        feed = block.sections.get("Feed")
+        rate = self.modal.feed if feed is None else feed.value  # type: ignore[attr-defined]
+        return isinstance(rate, (int, float)) and rate == 0 or rate is None
 
     def motion_words(self, s: Motion, block: Block) -> list[str]:
         if s.mode is None:

@@ -16,7 +16,7 @@ from mypy_extensions import mypyc_attr
 from math import hypot
 from typing import Final, NoReturn
 
-from postproc.block_rules import ZERO_FEED, ArcError, arc_centre, check_values, needs_feed
+from postproc.block_rules import ZERO_FEED, ArcError, arc_centre, check_values, needs_feed, per_rev_problem
 from postproc.control import ASSIGN, CONTROL
 from postproc.errors import ProgramError
 from postproc.event_order import MOVING, after_motion
@@ -100,21 +100,22 @@ _FEED_MOTION: Final = frozenset(("linear", "cw", "ccw", "thread"))
 
 
 def _check_turning(block: Block, ctx: Context, motion: Motion, before: str) -> None:
-    """Refuse a feed-per-revolution move while the spindle stands: the axes would wait for revolutions
-    that never come (a Fanuc waits forever; LinuxCNC refuses the block). ``before`` is the spindle's
-    state before the block: a stop in the block acts after its motion, a start before it."""
+    """Refuse a feed-per-revolution move while the spindle stands or turns at S0 (``per_rev_problem``).
+    ``before`` is the spindle's state before the block: a stop in the block acts after its motion, a
+    start before it; the block's S is in force for its motion."""
     sections = block.sections
     control = sections.get("SpindleControl")
     turning = before if control is None or after_motion("SpindleControl", control) \
         else control.direction  # type: ignore[attr-defined]
-    if turning != "stop" or not motion.axes:
+    if not motion.axes:
+        return
+    problem = per_rev_problem(turning, ctx.state.spindle_rpm)
+    if problem is None:
         return
     if motion.mode not in _FEED_MOTION and MOVING.isdisjoint(sections.keys()):
         return  # a rapid move needs no revolutions
     letter = next(iter(motion.axes))
-    raise ProgramError("a feed-per-revolution move with the spindle stopped: the axes would wait for "
-                       "revolutions that never come (start the spindle first, or feed per minute)",
-                       ctx.at(block, ctx.column_of(block, letter)))
+    raise ProgramError(problem, ctx.at(block, ctx.column_of(block, letter)))
 
 
 def _lathe_move(ctx: Context, motion: Motion) -> None:

@@ -94,10 +94,10 @@ def _add(op: Op, block: Callable[..., Block]) -> None:
         block(Comments([str(args[0])]))
     elif kind == "section":
         block(*args)
-    elif kind == "cycle":
+    elif kind == "cycle":  # ("cycle", cycle, *sections of its block before it: a spindle start)
         cycle = args[0]
         assert isinstance(cycle, CannedCycle)
-        b = block(ReturnLevel(cycle.return_level), cycle, Feed(cycle.feed or 0.0))
+        b = block(ReturnLevel(cycle.return_level), *args[1:], cycle, Feed(cycle.feed or 0.0))
         expand(b)
         block(CycleCancel())
     else:

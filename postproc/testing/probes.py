@@ -19,7 +19,8 @@ from ..dialect import Dialect
 from ..errors import ErrorList
 from ..expr import Binary, Num, Var
 from ..ir import (
-    CutterCompensation, Dwell, Feed, Motion, Section, SpindleOrientation, ToolChange, ToolLengthOffset, ToolSelect,
+    CutterCompensation, Dwell, Feed, Motion, Section, SpindleControl, SpindleOrientation, SpindleSpeed, ToolChange,
+    ToolLengthOffset, ToolSelect,
 )
 from ..setup import MachineSetup
 from .neutral import NeutralProgram, Op, drill_cycle, write_neutral
@@ -60,13 +61,24 @@ SPELT_ONLY = ("drill_dwell", "tap", "tap_left", "bore_stop", "bore_manual", "bor
 """The other milling hole cycles without a shift: a dialect that lists one in ``NATIVE_CYCLES`` must at
 least spell it (its code table has a row), or a translation that keeps it native fails at the writer.
 (The shifting G76/G87 need an orientation and levels a neutral probe does not make.)"""
+SPELT_DWELL = frozenset(("drill_dwell", "bore_stop", "bore_dwell_feed"))
+"""Of those, the ones RS274/NGC runs only with a dwell P (rs274: "Dwell time p word missing with g82",
+g86, g89): their probe has one, so that what is written runs. Only its spelling is probed, not its unit."""
+TURNING = {"tap": "cw", "tap_left": "ccw", "bore_stop": "cw"}
+"""Cycles RS274/NGC runs only with the spindle turning (rs274: "Spindle not turning in G84", G74, G86): their
+probe's block starts it, in a tap's direction."""
 
 
 def _cycle(kind: str) -> Callable[[type[Dialect]], list[Op]]:
     def ops(dialect: type[Dialect]) -> list[Op]:
         extra = CYCLE_KINDS.get(kind, {})
-        return [("cycle", drill_cycle(kind, START, (10.0, 10.0), bottom=-5.0, r=2.0, feed=100.0,
-                                      semantics=dialect.CYCLE_SEMANTICS, q=extra.get("q"), dwell=extra.get("dwell")))]
+        dwell = 1.0 if kind in SPELT_DWELL else extra.get("dwell")
+        cycle = drill_cycle(kind, START, (10.0, 10.0), bottom=-5.0, r=2.0, feed=100.0,
+                            semantics=dialect.CYCLE_SEMANTICS, q=extra.get("q"), dwell=dwell)
+        turning = TURNING.get(kind)
+        if turning is None:
+            return [("cycle", cycle)]
+        return [("cycle", cycle, SpindleSpeed(500.0), SpindleControl(turning))]
     return ops
 
 

@@ -3,35 +3,71 @@ interpreter (``rs274``, see ``rs274.py``) runs the program, and whatever it refu
 
 The machine is given a tool table holding every tool the program names (``T<n>``, ``H<n>``, ``D<n>``, with zero length
 and diameter), and tools 1-99 when it computes one (``H#1``, ``T[#2+1]``): which tools a shop has is not the
-writer's business. One error is not the writer's either: a program that ends with neither M2/M30 nor a closing ``%`` ("File ended
-with no percent sign or program end") is what a source without an end translates to, so it is accepted
-here (the writer warns about it). A ``%`` that does not close an opening one ("Bad character '%' used")
-is the writer's and is reported.
+writer's business. Everything else rs274 refuses is the writer's, a program that runs out without an end
+("File ended with no percent sign or program end") too: the writer ends a source without one with M2.
 """
 
 from __future__ import annotations
 
+import hashlib
+import json
+import os
 import re
+from pathlib import Path
 
-from .rs274 import RS274Error, available, run_rs274
+from . import rs274
+from .rs274 import RS274Error, RS274Timeout, available, run_rs274
 
-__all__ = ["available", "linuxcnc_problems"]
+__all__ = ["RS274_CACHE", "available", "linuxcnc_problems"]
 
-NO_END = "File ended with no percent sign or program end"
-"""rs274's message for a program with no end: the source's own state, not a writing error."""
+RS274_CACHE = Path(os.environ.get("POSTPROC_RS274_CACHE")
+                   or Path(__file__).resolve().parents[2] / ".rs274-cache")
+"""rs274's answers, one small JSON file per program (``linuxcnc_problems``): a run of the suite asks rs274
+only about programs no earlier run wrote. Remove the folder to ask again."""
 
 
 def linuxcnc_problems(text: str) -> list[str]:
-    """What rs274 refuses in ``text`` (its error message and offending block), or nothing."""
+    """What rs274 refuses in ``text`` (its error message and offending block), or nothing. Answered from
+    ``RS274_CACHE`` when the same program, tool table and interpreter were run before."""
     tools = {int(n) for n in re.findall(r"(?i)\b[THD]\s*(\d+)", text)} | {1}
     if re.search(r"(?i)\b[THD]\s*[-+]?\s*[#\[]", text):
         tools |= set(range(1, 100))  # a computed tool or register: any the program may name
     tools = sorted(tools)
     table = "".join(f"T{n} P{n} Z0 D0\n" for n in tools)
+    path = RS274_CACHE / _key(text, table)
+    try:
+        return [str(p) for p in json.loads(path.read_text(encoding="utf-8"))]
+    except (OSError, ValueError):
+        pass
     try:
         run_rs274(text, tool_table=table)
+        found: list[str] = []
+    except RS274Timeout as err:
+        return [str(err)]  # the machine may just have been busy: not kept
     except RS274Error as err:
-        if err.stderr.splitlines()[:1] == [NO_END]:
-            return []
-        return [err.stderr or str(err)]
-    return []
+        found = [err.stderr or str(err)]
+    _keep(path, found)
+    return found
+
+
+def _key(text: str, table: str) -> str:
+    """The program, its tool table and the interpreter's file (another rs274 may answer otherwise)."""
+    binary = rs274.RS274 or ""
+    try:
+        info = os.stat(binary)
+        binary += f":{info.st_size}:{info.st_mtime_ns}"
+    except OSError:
+        pass
+    data = "\0".join((binary, table, text)).encode("utf-8", "surrogateescape")
+    return hashlib.sha256(data).hexdigest()
+
+
+def _keep(path: Path, found: list[str]) -> None:
+    """Write the answer whole or not at all (a suite and ``make fuzz`` may run side by side)."""
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        part = path.with_name(f"{path.name}.{os.getpid()}.part")
+        part.write_text(json.dumps(found), encoding="utf-8")
+        os.replace(part, path)
+    except OSError:
+        pass

@@ -1,14 +1,22 @@
 """Every grbl and LinuxCNC program the suite writes is held to its controller's rules.
 
-``install()`` (called by ``conftest.py`` before anything imports ``postproc.cli``) wraps
-``postproc.api.translate`` so that each translation that succeeds with grbl or LinuxCNC as its target
-between two dialects is checked: grbl's by ``grbl_rules.grbl_problems`` (grbl 1.1's parser, written from its source), LinuxCNC's
-by ``linuxcnc_rules.linuxcnc_problems`` (LinuxCNC's own interpreter, when it is installed). What a
-translation writes is unchanged; the problems found are collected, and ``conftest.py`` fails the test that
-produced them, with the program. Translations whose target is another dialect, and failed ones (their
-output is discarded), are not checked; nor is a program written back in its own dialect: it is the input
-itself (lossless), often a fragment in the suite, and whether a reader refuses what its controller
-refuses is tested where the reader is (``test_output_rules.py``, ``test_linuxcnc.py``).
+``install()`` (called by ``conftest.py`` before any test runs) wraps the ``write`` of the grbl and LinuxCNC
+writers, the one place their programs are made, so every program written is checked: translations
+(``postproc.api.translate``, the command line run in the suite's process), the conformance suite's
+generated programs (``postproc.testing``), a writer used on its own. grbl's by ``grbl_rules.grbl_problems``
+(grbl 1.1's parser, written from its source), LinuxCNC's by ``linuxcnc_rules.linuxcnc_problems`` (LinuxCNC's
+own interpreter, when it is installed). What a writer writes is unchanged; the problems found are
+collected, and ``conftest.py`` fails the test that produced them, with the program. A run with errors
+(its output is discarded) is not checked, nor a translation's dry run (``api._keep_check`` writes the rest
+of a program that computes to see whether the target can keep it symbolic); nor is a program written back in its own dialect: it is the
+input itself (lossless), often a fragment in the suite, and whether a reader refuses what its controller
+refuses is tested where the reader is (``test_output_rules.py``, ``test_linuxcnc.py``). Programs written
+by another process (``postproc batch`` workers, the command in a subprocess) are compared in their tests
+with the same translation made here, which is checked.
+
+rs274 takes about a tenth of a second a program: its answers are kept on disk (``RS274_CACHE``, keyed by
+the program, the tool table and the interpreter's file), so a run of the suite pays only for programs
+it has not seen before.
 
 A test that writes an invalid program on purpose (to show a checker catches it) calls the checker
 directly; nothing here can be switched off by a test.
@@ -16,10 +24,8 @@ directly; nothing here can be switched off by a test.
 
 from __future__ import annotations
 
-import functools
-from typing import Any, Callable, TextIO
+from typing import Any, Callable, Iterable, TextIO
 
-import postproc.api
 from postproc.setup import MachineSetup
 
 from .grbl_rules import grbl_problems
@@ -84,23 +90,30 @@ def _check(target: str, text: str, setup: MachineSetup) -> None:
 
 
 def install() -> None:
-    """Wrap ``postproc.api.translate`` (once)."""
-    real = postproc.api.translate
+    """Wrap the ``write`` of the writers whose controllers have a checker (once)."""
+    from postproc.plugins import default_registry
+    registry = default_registry()
+    for name in CHECKERS:
+        writer = registry.dialects[name].WRITER if name in registry.dialects else None
+        if writer is not None:
+            _wrap(writer)
+
+
+def _wrap(cls: type[Any]) -> None:
+    real = cls.write
     if getattr(real, "checks_output_rules", False):
         return
 
-    @functools.wraps(real)
-    def translate(lines: Any, out: TextIO, **kwargs: Any) -> Any:
-        target = kwargs.get("target", "")
-        if target not in CHECKERS or kwargs.get("source") == target:
-            return real(lines, out, **kwargs)
+    def write(self: Any, blocks: Iterable[Any], out: TextIO) -> None:
         tee = _Tee(out)
-        result = real(lines, tee, **kwargs)  # raises on failure: nothing to check
-        _check(target, "".join(tee.parts), kwargs.get("setup") or MachineSetup())
-        return result
+        real(self, blocks, tee)  # raises on failure: nothing to check
+        target = self.target.NAME if self.target is not None else self.DIALECT
+        if (target in CHECKERS and self.source_dialect != target and not self._failed()
+                and not self.ctx.run_data.get("dry_run")):  # (a translation's trial of keeping a program symbolic)
+            _check(target, "".join(tee.parts), self.ctx.setup)
 
-    translate.checks_output_rules = True  # type: ignore[attr-defined]
-    postproc.api.translate = translate  # type: ignore[assignment]
+    write.checks_output_rules = True  # type: ignore[attr-defined]
+    cls.write = write
 
 
 def take_violations() -> list[str]:

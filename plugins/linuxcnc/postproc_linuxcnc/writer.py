@@ -26,9 +26,9 @@ from __future__ import annotations
 import copy
 from typing import Any, ClassVar
 
-from postproc.errors import UnsupportedError
+from postproc.errors import Location, UnsupportedError
 from postproc.event_order import after_motion
-from postproc.ir import Block, Section
+from postproc.ir import Block, ProgramControl, Section
 from postproc.context import Context
 from postproc.dialect import Dialect
 from postproc.state import MM_PER_INCH
@@ -99,6 +99,8 @@ class LinuxcncWriter(WordWriter):
         """Whether compensation was on before the block whose compensation word was written last."""
         self._opened: bool | None = None
         """Whether the program opened with '%' (None: nothing written yet)."""
+        self._closed = False
+        """A '%' closed the program opened with one (rs274 then needs no M2/M30)."""
         self.straight_codes_now = False
         """The main program's end was written: an ``O<n>`` now starts a subprogram."""
         self._names: dict[str, str] = {}
@@ -304,6 +306,7 @@ class LinuxcncWriter(WordWriter):
         if "TapeMark" in sections:
             if self._opened is False and not self._ended:
                 return self._lone_tape_mark(block)
+            self._closed = self._opened is True  # a '%' after the opening one
             self._opened = self._opened is None or self._opened
         elif sections and self._opened is None and sections.keys() != {"Comments"}:
             self._opened = False
@@ -340,11 +343,29 @@ class LinuxcncWriter(WordWriter):
 
     def _lone_tape_mark(self, block: Block) -> str:
         """A closing ``%`` with no opening one and no program end before it: rs274 refuses it ("Bad
-        character '%' used"), and the opening line is long written. It becomes a comment; the program
-        then has no end, which LinuxCNC reports when it reaches the end of the file."""
+        character '%' used"), and the opening line is long written. The program ends there, so M2 ends
+        it (rs274 refuses a file that runs out without an end too) and the ``%`` becomes a comment."""
         self.ctx.diagnostics.warn("the program ends with '%' and no M2/M30, without an opening '%': LinuxCNC "
-                                  "refuses a lone '%', written as a comment (add M30 before it)", self.ctx.at(block))
-        return self.comment("%") + (block.eol or "\n")
+                                  "refuses a lone '%': M2 written for it, the '%' as a comment", self.ctx.at(block))
+        return self._end(block.line) + self.comment("%") + (block.eol or "\n")
+
+    def finish(self) -> str:
+        """A program that runs out with neither M2/M30 nor a closing ``%`` after an opening one: rs274 refuses
+        it ("File ended with no percent sign or program end"; LinuxCNC's G-code overview says a file ends
+        with a program end or lies between two ``%`` lines [V, rs274 2.9]). The program ends there, so M2
+        is written (with a warning), and a ``%`` after it where one opened the program. A LinuxCNC source
+        is written back as it is (lossless: it is the user's own file)."""
+        if self._ended or self._closed or self._failed() or self.source_dialect == self.DIALECT:
+            return ""
+        self.ctx.diagnostics.warn("the program has no end (M2/M30): M2 written after its last block, as LinuxCNC "
+                                  "refuses a program that runs out", Location(self.ctx.file, max(self.last_line, 1)))
+        return self._end(self.last_line) + ("%\n" if self._opened else "")
+
+    def _end(self, line: int) -> str:
+        """The program end a source without one gets (M2: an end that does not rewind)."""
+        end = Block(line, None, "\n")
+        end.sections = {"ProgramControl": ProgramControl("end")}
+        return self.write_block(end) or ""
 
     def _settings_first(self, block: Block) -> str:
         """A block that turns compensation on and also changes what rs274 refuses to change under it (tool
