@@ -20,7 +20,7 @@ from .errors import ConfigError, Diagnostics, ErrorList, Location, PostprocError
 from .outfile import BUFFER, ENCODING, write_output
 from .plugins import default_registry
 from .progress import AboveProgress, progress_for
-from .setup import MachineSetup, load_setup
+from .setup import MachineSetup, check_named_file, load_setup
 from .xmlio import parse_xml_file, to_bytes
 
 EXIT_INTERRUPTED = 128 + signal.SIGINT
@@ -97,30 +97,37 @@ def _main(argv: Sequence[str] | None) -> int:
 
 
 EXAMPLES = {
-    "translate": """examples:
+    "translate": """\
   postproc translate o1001.nc --from fanuc --to linuxcnc -o o1001.ngc
   postproc translate o1002.nc --from fanuc --to grbl --on-unsupported warn -o o1002.gcode
   postproc translate o1004.nc --from fanuc --to fanuc --normalize --renumber 10,10 -o o1004.nc --in-place
   cat o1001.nc | postproc translate - --from fanuc --to grbl > o1001.gcode
   postproc translate programs/ -o migrated/ --from fanuc --to linuxcnc --ext ngc --verify --report report.jsonl""",
-    "toolpath": """examples:
+    "toolpath": """\
   postproc toolpath o1003.nc --dialect fanuc                  # JSON lines on standard output
   postproc toolpath o1003.nc --dialect fanuc --format svg -o o1003.svg""",
-    "verify": """examples:
+    "verify": """\
   postproc translate o1001.nc --from fanuc --to grbl -o o1001.gcode
   postproc verify o1001.nc o1001.gcode --from fanuc --to grbl    # exit 1 above the tolerance
   postproc verify o1001.nc o1001.gcode --from fanuc --to grbl --plot diff.svg   # both toolpaths, overlaid""",
-    "ir": """example:
+    "ir": """\
   postproc ir o1001.nc --dialect fanuc -o o1001.xml""",
-    "dialects": """examples:
+    "dialects": """\
   postproc dialects                  # one column per dialect, one row per capability
   postproc dialects --format json    # the same for tools""",
-    "config": """examples:
+    "config": """\
   postproc config check examples/setups/fanuc_0i_mf_calculator.xml
   postproc config dump examples/setups/fanuc_0i_mf_calculator.xml > canonical.xml
   postproc config dump --flatten examples/setups/haas_vf2_cell3.xml > resolved.xml""",
 }
-"""One example (or a few) per command, shown by its ``--help``."""
+"""One example (or a few) per command, shown by its ``--help`` (``examples``)."""
+
+
+def examples(*commands: str) -> str:
+    """The examples of ``commands`` under one heading: ``postproc --help`` shows several commands' examples
+    together, each ``COMMAND --help`` its own."""
+    lines = "\n".join(EXAMPLES[c] for c in commands)
+    return ("example:\n" if lines.count("\n") == 0 else "examples:\n") + lines
 
 STDIO = "'-' reads standard input"
 MACHINE = "machine set-up XML (decimal-point mode, cycle parameters, output format, ...; see docs/setup-reference.md)"
@@ -176,7 +183,7 @@ def build_parser() -> argparse.ArgumentParser:
         prog="postproc", formatter_class=_Formatter,
         description="Translate CNC part programs between controller dialects (fanuc, linuxcnc, grbl, ...) "
                     "and check that a translation moves the tool exactly as its source.",
-        epilog="\n\n".join(EXAMPLES[c] for c in ("translate", "verify", "toolpath")) + "\n\n"
+        epilog=examples("translate", "verify", "toolpath") + "\n\n"
                "exit status: 0 ok, 1 the program or set-up has errors (FILE:LINE:COL: error: ...), 2 wrong usage; "
                "warnings go to standard error.\n'postproc COMMAND --help' describes each command.")
     p.add_argument("--version", action=_Version, nargs=0,
@@ -184,7 +191,7 @@ def build_parser() -> argparse.ArgumentParser:
     sub = p.add_subparsers(dest="command", metavar="COMMAND")
 
     def command(name: str, help: str, description: str) -> argparse.ArgumentParser:
-        return sub.add_parser(name, help=help, description=description, epilog=EXAMPLES[name],
+        return sub.add_parser(name, help=help, description=description, epilog=examples(name),
                               formatter_class=_Formatter)
 
     t = command("translate", "translate a program from one dialect to another",
@@ -324,6 +331,8 @@ def _tolerance(text: str) -> float:
 
 
 def _setup(path: str | None, lib: Sequence[str] = ()) -> MachineSetup:
+    if path:
+        check_named_file(path)
     setup = load_setup(path, groups=default_registry().setup_groups) if path else MachineSetup()
     for folder in lib:
         if not os.path.isdir(folder):
@@ -497,6 +506,7 @@ def cmd_config(args: argparse.Namespace) -> int:
     from .setup_load import raise_all
     from .sequences import check_templates
     registry = default_registry()
+    check_named_file(args.file)
     setup, problems = load_setup_collect(args.file, registry.setup_groups)
     if setup.dialect:
         try:
