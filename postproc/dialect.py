@@ -156,6 +156,10 @@ class Dialect:
     LATHE_FEED_AT_START: ClassVar[str] = "per_min"
     """The feed mode a lathe program starts in before it programs one (Fanuc T: per revolution, G99, by
     its default parameter; GSK 980TDc: per minute, G98)."""
+    MOTION_AT_START: ClassVar[str | None] = None
+    """The motion mode ("rapid", "linear") a program is in before it programs one, for a controller that
+    powers on in one (the set-up's ``<Controller startMotion>`` may say the other); None: axis words need
+    a motion code first."""
     LOWER_CASE: ClassVar[bool] = False
     """The reader takes lower-case addresses (``g1 x10``): the set-up's ``<Output case="lower">`` is
     refused otherwise."""
@@ -236,6 +240,8 @@ class Dialect:
         ctx.lathe = cls.reads_lathe(setup)
         ctx.diameter = ctx.lathe and cls.DIAMETER_PROGRAMMING and setup.input.x_programming == "diameter"
         ctx.one_block = ctx.lathe and cls.LATHE_ONE_BLOCK and setup.input.lathe_cycle_format == "one-block"
+        if cls.MOTION_AT_START is not None:
+            ctx.state.motion = setup.controller.start_motion or cls.MOTION_AT_START
         if ctx.lathe:
             ctx.state.plane = "ZX"  # a lathe turns in the ZX plane (G18) from the start
             ctx.state.feed_mode = cls.LATHE_FEED_AT_START
