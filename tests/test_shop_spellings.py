@@ -78,3 +78,79 @@ def test_start_motion_round_trips_through_the_set_up_file(tmp_path) -> None:
     path.write_text('<MachineSetup dialect="fanuc"><Controller startMotion="G01"/></MachineSetup>\n')
     with pytest.raises(Exception, match="startMotion"):
         load_setup(path)
+
+
+# -- ';' ends a block; what follows it on the line may only be comments -----------------------------------
+
+SEMICOLONS = "G00 X0 Y0 Z1.;\nG01 Z.1 M09 F100.; (Retract);\nG01 X1.;;\n(only);\nM30\n"
+
+
+def test_a_comment_after_the_end_of_block_is_read_and_written_back() -> None:
+    assert translated(SEMICOLONS, "fanuc") == SEMICOLONS
+    assert events(SEMICOLONS) == [
+        {"line": 1, "move": "rapid", "x": 0, "y": 0, "z": 1},
+        {"line": 2, "move": "feed", "x": 0, "y": 0, "z": 0.1, "f": 100},
+        {"line": 2, "event": "coolant", "on": False},
+        {"line": 3, "move": "feed", "x": 1, "y": 0, "z": 0.1, "f": 100},
+        {"line": 5, "event": "end"}]
+
+
+def test_the_comment_after_the_end_of_block_reaches_another_dialect() -> None:
+    assert "(Retract)" in translated(SEMICOLONS, "linuxcnc").splitlines()[1]
+
+
+def test_a_second_block_after_the_end_of_block_is_refused_where_it_starts() -> None:
+    assert errors("G00 X0 Y0 Z1.\nG00 X2.; G01 X3. F1.\nM30") == [
+        "t.nc:2:10: error: only comments may follow ';' (the end of the block) on its line: put the next block "
+        "on a line of its own"]
+
+
+# -- an offset register H without G43/G44/G49 in its block ---------------------------------------------
+
+def test_h0_beside_g53_under_g49_cancels_nothing_and_moves_in_machine_coordinates() -> None:
+    # Haas `G53 G0 Z0 H0;`: G49 is in force at power-on, H0's offset is zero: the length offset stays off
+    # (machine and work coordinates coincide: the default set-up has no work offset)
+    assert events("G00 X1. Z10.\nG53 G0 Z0 H0;\nM30") == [{"line": 1, "move": "rapid", "x": 1, "y": 0, "z": 10},
+                                                          {"line": 2, "move": "rapid", "x": 1, "y": 0, "z": 0},
+                                                          {"line": 3, "event": "end"}]
+    assert translated("G53 G0 Z0 H0;\nM30", "linuxcnc").splitlines()[0] == "G53 G49 G0 Z0."
+
+
+def test_h_alone_under_g43_selects_that_register() -> None:
+    out = translated("G43 H1 Z10.\nG53 G0 Z0 H0\nG00 X1. H2\nM30", "linuxcnc").splitlines()
+    assert out[1:3] == ["G53 G43 H00 G0 Z0.", "G43 H02 G0 X1."]
+
+
+def test_h_alone_under_g49_is_refused_naming_g43() -> None:
+    assert errors("G00 X0\nX1. H2\nM30") == [
+        "t.nc:2:5: error: H2 with no tool length offset in force: a register takes effect with G43 or G44 (write "
+        "it in their block)"]
+
+
+# -- an error a set-up option would remove names the option ---------------------------------------------
+
+def test_a_dwell_p_in_seconds_names_the_haas_option() -> None:
+    message = errors("G04 P0.5\nM30")[0]
+    assert message.startswith("t.nc:1:5: error: address P takes no decimal point (P0.5)")
+    assert '<Controller dwellSeconds="true"/>' in message
+    assert events("G04 P0.5\nM30", HAAS)[0] == {"line": 1, "event": "dwell", "seconds": 0.5}
+
+
+def test_g42_h_names_the_0m_option() -> None:
+    message = errors("G00 X0 Y0\nG42 H19 G01 X10. F100.\nG40 G00 X0\nM30")[0]
+    assert message.startswith("t.nc:2:5: error: G42 takes its radius register from D, not H19")
+    assert '<Controller cutterRegisterH="true"/>' in message
+
+
+# -- a macro's own alarm ---------------------------------------------------------------------------------
+
+ALARM = "IF [#1 EQ #0] THEN #3000=1(NEED ROTATION AXIS)\nG00 X#1\nM30"
+
+
+def test_a_macro_alarm_is_reported_as_raised_with_its_message() -> None:
+    assert errors(ALARM) == ["t.nc:1:20: error: the program raises its alarm #3000=1 (NEED ROTATION AXIS)"]
+
+
+def test_a_macro_alarm_not_raised_lets_the_program_run() -> None:
+    assert events("#1=30.\n" + ALARM) == [{"line": 3, "move": "rapid", "x": 30, "y": 0, "z": 0},
+                                          {"line": 4, "event": "end"}]
