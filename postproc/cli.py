@@ -7,6 +7,7 @@ import contextlib
 import io
 import math
 import os
+import re
 import signal
 import sys
 from pathlib import Path
@@ -132,6 +133,8 @@ def examples(*commands: str) -> str:
 STDIO = "'-' reads standard input"
 MACHINE = "machine set-up XML (decimal-point mode, cycle parameters, output format, ...; see docs/setup-reference.md)"
 LIB = "folder searched for subprograms (repeatable; after the set-up's <Library>)"
+ARG = ("IN is a macro file run on its own, as a G65 call with this argument (A=30: #1 = 30 on Fanuc; "
+       "repeatable)")
 OUTPUT = "write here instead of standard output ('-': standard output); written only on success, atomically"
 
 
@@ -231,6 +234,7 @@ def build_parser() -> argparse.ArgumentParser:
     tp.add_argument("--format", choices=("jsonl", "svg", "png"), default="jsonl",
                     help="jsonl (default), svg or png (png needs -o)")
     tp.add_argument("-o", "--output", metavar="OUT", help=OUTPUT)
+    tp.add_argument("--arg", action="append", default=[], metavar="LETTER=VALUE", help=ARG)
     tp.set_defaults(run=cmd_toolpath)
 
     v = command("verify", "compare the toolpaths of a program and its translation",
@@ -251,6 +255,7 @@ def build_parser() -> argparse.ArgumentParser:
     v.add_argument("--plot", metavar="FILE.svg|FILE.png",
                    help="also draw both toolpaths over each other with the largest deviation marked (SVG, or "
                         "PNG with the render extra); written whatever the verdict")
+    v.add_argument("--arg", action="append", default=[], metavar="LETTER=VALUE", help=ARG)
     v.set_defaults(run=cmd_verify)
 
     i = command("ir", "print a program's IR as XML",
@@ -415,6 +420,23 @@ def cmd_translate(args: argparse.Namespace) -> int:
     return 0
 
 
+_ARGUMENT = re.compile(r"([A-Za-z])=([-+]?(?:\d+\.?\d*|\.\d+))")
+
+
+def _arguments(texts: Sequence[str]) -> dict[str, float]:
+    """``--arg A=30`` (repeatable) as {"A": 30.0}; the dialect checks the addresses (wrong usage otherwise)."""
+    found: dict[str, float] = {}
+    for text in texts:
+        m = _ARGUMENT.fullmatch(text.strip())
+        if m is None:
+            raise UsageError(f"--arg takes LETTER=NUMBER (A=30), got {text!r}")
+        letter = m.group(1).upper()
+        if letter in found:
+            raise UsageError(f"--arg {letter} is given twice")
+        found[letter] = float(m.group(2))
+    return found
+
+
 def _renumber(text: str | None) -> tuple[int, int | None] | None:
     """``--renumber START[,STEP]`` as numbers (a usage error otherwise; the set-up checks their range)."""
     if not text:
@@ -443,7 +465,8 @@ def cmd_toolpath(args: argparse.Namespace) -> int:
         lines, diagnostics = _watched(args.input, src)
         write_output(_output(args.output), lambda out: export_toolpath(
             lines, out, file=_name(args.input), dialect=args.dialect, setup=setup, fmt=args.format,
-            diagnostics=diagnostics, on_unsupported=args.on_unsupported), binary=binary, input_path=_input_path(args.input))
+            diagnostics=diagnostics, on_unsupported=args.on_unsupported, arguments=_arguments(args.arg)),
+            binary=binary, input_path=_input_path(args.input))
     return 0
 
 
@@ -461,7 +484,8 @@ def cmd_verify(args: argparse.Namespace) -> int:
             report = verify_lines(a, b, file_in=_name(args.input), file_out=_name(args.output),
                                   source=args.source, target=args.target, setup=setup,
                                   target_setup=target_setup, tolerance=args.tolerance,
-                                  allow_ignored=args.allow_ignored, overlay=overlay)
+                                  allow_ignored=args.allow_ignored, overlay=overlay,
+                                  arguments=_arguments(args.arg))
         if overlay is not None:
             write_output(args.plot, lambda out: overlay.write(out, str(fmt), report), binary=fmt == "png",
                          input_path=_input_path(args.input))

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import abc
 from pathlib import Path
-from typing import Callable, ClassVar, Generic, Iterable, Iterator, TypeVar, cast
+from typing import Callable, ClassVar, Generic, Iterable, Iterator, Mapping, TypeVar, cast
 
 from .errors import Diagnostics
 from .ir import Block
@@ -156,6 +156,10 @@ class Dialect:
     LATHE_FEED_AT_START: ClassVar[str] = "per_min"
     """The feed mode a lathe program starts in before it programs one (Fanuc T: per revolution, G99, by
     its default parameter; GSK 980TDc: per minute, G98)."""
+    MACRO_ARGUMENTS: ClassVar[Mapping[str, int]] = {}
+    """The addresses a macro call passes arguments with -> the local variable each sets (Fanuc ``G65 A30.``:
+    ``#1``), so a macro file run on its own (``toolpath``/``verify --arg A=30``) starts with them; empty:
+    the dialect has no such arguments."""
     MOTION_AT_START: ClassVar[str | None] = None
     """The motion mode ("rapid", "linear") a program is in before it programs one, for a controller that
     powers on in one (the set-up's ``<Controller startMotion>`` may say the other); None: axis words need
@@ -177,7 +181,7 @@ class Dialect:
     def capabilities(cls) -> dict[str, object]:
         """The capability table: every UPPER_CASE attribute that describes the controller."""
         skip = {"NAME", "DESCRIPTION", "READER", "WRITER", "PIPELINE_FILE", "LATHE_PIPELINE_FILE", "CYCLE_WORDS",
-                "LOWERING"}
+                "LOWERING", "MACRO_ARGUMENTS"}
         table: dict[str, object] = {}
         for klass in reversed(cls.__mro__):
             for key, value in vars(klass).items():

@@ -154,3 +154,75 @@ def test_a_macro_alarm_is_reported_as_raised_with_its_message() -> None:
 def test_a_macro_alarm_not_raised_lets_the_program_run() -> None:
     assert events("#1=30.\n" + ALARM) == [{"line": 3, "move": "rapid", "x": 30, "y": 0, "z": 0},
                                           {"line": 4, "event": "end"}]
+
+
+# -- Haas: the NGC's five-digit general-purpose variables -----------------------------------------------------
+
+def test_haas_general_variables_are_the_programs_own() -> None:
+    assert events("#10100=5.\nG00 X#10100\nM30", HAAS)[:1] == [{"line": 2, "move": "rapid", "x": 5, "y": 0, "z": 0}]
+
+
+def test_the_same_number_is_fanuc_tool_data() -> None:
+    assert errors("#10100=5.\nG00 X#10100\nM30") == [
+        "t.nc:1:1: error: #10100 (tool compensation value) is known only to the machine: the program cannot be "
+        "simulated or flattened"]
+
+
+def test_haas_probe_results_are_the_machines() -> None:
+    assert errors("G00 X#10150\nM30", HAAS) == [
+        "t.nc:1:5: error: #10150 (probe value) is known only to the machine: the program cannot be simulated or "
+        "flattened"]
+
+
+def test_a_haas_program_mixing_both_numberings_is_refused_by_name() -> None:
+    (message,) = errors("#100=1.\n#10100=5.\nG00 X#10100\nM30", HAAS)
+    assert message.startswith("t.nc:2:1: error: #10100 and #100: a Haas program that uses both")
+
+
+def test_a_haas_general_variable_translates_flattened_for_linuxcnc() -> None:
+    assert translated("#10100=5.\nG00 X#10100\nM30", "linuxcnc", HAAS).splitlines()[-2:] == ["G0 X5.", "M30"]
+
+
+# -- a macro file run on its own, with G65-style arguments ------------------------------------------------------
+
+MACRO = "IF [#1 EQ #0] THEN #3000=1(NEED ROTATION AXIS)\nG00 X#1 Y#24\nM99"
+
+
+def test_arguments_set_the_locals_of_argument_specification_i(cli, tmp_path) -> None:
+    path = tmp_path / "O9001.nc"
+    path.write_text(MACRO + "\n")
+    # A -> #1, X -> #24; the macro's M99 returns to its (absent) caller: the run ends there
+    result = cli("toolpath", path, "--dialect", "fanuc", "--arg", "A=30", "--arg", "x=2.5")
+    assert result.status == 0, result.err
+    assert result.out.decode().splitlines()[1:] == ['{"line": 2, "move": "rapid", "x": 30, "y": 2.5, "z": 0}']
+    result = cli("verify", path, path, "--from", "fanuc", "--to", "fanuc", "--arg", "A=30")
+    assert result.status == 0, result.err
+
+
+def test_without_its_argument_the_macro_raises_its_alarm(cli, tmp_path) -> None:
+    path = tmp_path / "O9001.nc"
+    path.write_text(MACRO + "\n")
+    result = cli("toolpath", path, "--dialect", "fanuc")
+    assert result.status == 1
+    assert result.err.splitlines()[0] == f"{path}:1:20: error: the program raises its alarm #3000=1 (NEED ROTATION AXIS)"
+
+
+@pytest.mark.parametrize("args, message", [
+    (["--arg", "P=3"], "postproc: --arg P: not an argument address of the fanuc dialect"),
+    (["--arg", "A"], "postproc: --arg takes LETTER=NUMBER (A=30), got 'A'"),
+    (["--arg", "A=1", "--arg", "a=2"], "postproc: --arg A is given twice"),
+])
+def test_bad_arguments_are_usage(cli, tmp_path, args, message) -> None:
+    path = tmp_path / "O9001.nc"
+    path.write_text(MACRO + "\n")
+    result = cli("toolpath", path, "--dialect", "fanuc", *args)
+    assert result.status == 2
+    assert result.err.startswith(message)
+
+
+def test_a_dialect_without_call_arguments_refuses_them(cli, tmp_path) -> None:
+    path = tmp_path / "a.ngc"
+    path.write_text("G0 X1\nM2\n")
+    result = cli("toolpath", path, "--dialect", "linuxcnc", "--arg", "A=1")
+    assert result.status == 2
+    assert result.err == "postproc: --arg: the linuxcnc dialect has no macro call arguments\n"

@@ -121,6 +121,9 @@ class Interpreter:
         self.modal: tuple[ModalCall, dict[int, Value], int, Block] | None = None
         self.ended = False
         self.rules = rules or STORED_PROGRAMS
+        self.called = False
+        """The main program runs as a called macro (``--arg``): its plain return ends the run instead of
+        going back to its start."""
         self.found: dict[tuple[str, str], int] = {}
         """(file, program number) -> position of the ``O`` block an ``M98`` found (forward search)."""
 
@@ -461,6 +464,9 @@ class Interpreter:
 
     def _return(self, frame: _Frame, block: Block | None, value: Value, target: int | None) -> None:
         frames = self.frames
+        if len(frames) == 1 and self.called and target is None:
+            self.ended = True  # a macro file run on its own returns to its (absent) caller: the run ends
+            return
         if len(frames) == 1:  # a return in the main program: back to its start (Fanuc M99)
             assert block is not None
             self._spend(block, "return")
