@@ -136,6 +136,11 @@ def test_a_dwell_p_in_seconds_names_the_haas_option() -> None:
     assert events("G04 P0.5\nM30", HAAS)[0] == {"line": 1, "event": "dwell", "seconds": 0.5}
 
 
+def test_a_cycle_dwell_names_the_option_and_another_p_does_not() -> None:
+    assert '<Controller dwellSeconds="true"/>' in errors("G00 X0 Y0 Z5.\nG82 X1. Z-1. R1. P0.3 F10.\nM30")[0]
+    assert errors("G10 L2 P1.5 X1.\nM30") == ["t.nc:1:8: error: address P takes no decimal point (P1.5)"]
+
+
 def test_g42_h_names_the_0m_option() -> None:
     message = errors("G00 X0 Y0\nG42 H19 G01 X10. F100.\nG40 G00 X0\nM30")[0]
     assert message.startswith("t.nc:2:5: error: G42 takes its radius register from D, not H19")

@@ -168,7 +168,7 @@ class WordBlockSyntax(Syntax):
                 values[up] = _milliseconds(block, ctx, num)
             elif up in INTEGER_LETTERS or up == "K":
                 if "." in num:
-                    hint = DWELL_SECONDS_HINT if up == "P" else ""
+                    hint = DWELL_SECONDS_HINT if up == "P" and _dwells(codes, cycle_block) else ""
                     raise ParseError(f"address {up} takes no decimal point ({up}{num}){hint}",
                                      ctx.at(block, ctx.column_of(block, up)))
                 values[up] = int(num)
@@ -605,6 +605,16 @@ DWELL_SECONDS_HINT: Final = (": a dwell P counts milliseconds; if it means secon
 CUTTER_H_HINT: Final = ("; if the controller takes it from H (Fanuc 0M), set <Controller cutterRegisterH=\"true\"/> "
                         "(or variant=\"fanuc-0m\") in the machine set-up")
 """What an error about ``G42 H19`` adds: the set-up option under which it reads."""
+
+
+def _dwells(codes: dict[str, tuple[str, str, object, str]], cycle_block: bool) -> bool:
+    """The block's P is a dwell time (G04, or a hole cycle's P)."""
+    if cycle_block:
+        return True
+    for entry in codes.values():
+        if entry[1] == "dwell":
+            return True
+    return False
 
 
 def _text(block: Block, up: str) -> str:
