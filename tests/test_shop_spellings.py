@@ -231,3 +231,10 @@ def test_a_dialect_without_call_arguments_refuses_them(cli, tmp_path) -> None:
     result = cli("toolpath", path, "--dialect", "linuxcnc", "--arg", "A=1")
     assert result.status == 2
     assert result.err == "postproc: --arg: the linuxcnc dialect has no macro call arguments\n"
+
+
+def test_a_vacant_value_is_flattened_for_linuxcnc_which_has_no_0() -> None:
+    # found by the shop-spellings generator: rs274 refuses '#1=#0' ("Parameter number out of range");
+    # by hand: #1 vacant, counted as 0 in [#1+1.] (Fanuc vacancy), so the move goes to X1.
+    source = "G0 X0 Y0 Z1.\n#1=#0\nG0 X[#1+1.]\nM30"
+    assert translated(source, "linuxcnc") == "G0 X0. Y0. Z1.\nG0 X1.\nM30\n"

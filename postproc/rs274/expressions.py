@@ -61,6 +61,9 @@ class ExprSpelling:
     """A statement's right-hand side may be an unbracketed binary expression (Fanuc ``#3=#1+#2``)."""
     functions_as_word_values: bool = False
     """An address may be followed directly by a function (LinuxCNC ``X SIN[30]``)."""
+    vacant_variable: bool = True
+    """``#0`` reads as vacant (Custom Macro B); False: there is no #0 (LinuxCNC: "Parameter number out of
+    range", rs274), so a program reading it cannot be kept symbolically."""
     max_brackets: int = MAX_DEPTH
     """Deepest bracket nesting the controller accepts."""
     max_brackets_note: str = ""
@@ -124,6 +127,7 @@ LINUXCNC_SPELLING = ExprSpelling(
     double_hash=True,
     bare_binary=False,
     functions_as_word_values=True,
+    vacant_variable=False,
 )
 """LinuxCNC (interp_internal.cc ``precedence``): ``**`` above ``* / MOD`` above ``+ -`` above the
 comparisons above ``AND OR XOR``; binary expressions only inside brackets."""
@@ -470,6 +474,8 @@ class _Writer:
             return f"#<{e.name}>"
         assert e.index is not None
         if isinstance(e.index, Num) and e.index.value.is_integer() and e.index.value >= 0:
+            if e.index.value == 0 and not self.sp.vacant_variable:
+                raise UnsupportedError(f"{self.sp.name} has no vacant value (#0)")
             return f"#{int(e.index.value)}"
         return "#" + self.bracketed("", self.spell(e.index, -1, brackets + 1, True), brackets)
 

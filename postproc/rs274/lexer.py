@@ -158,7 +158,7 @@ def _lex_macro(file: str, block: Block, code: str) -> list[tuple[str, str]]:
 def _end_of_block(file: str, number: int, code: str) -> str:
     """The code up to its first ``;`` (the end of block, EOB), the rest blanked out. Controls show EOB as
     ``;`` and shop programs type it: ``G01 Z.1 M09; (Retract);`` is a block and a block holding only a
-    comment [K: Haas mill operator's manual, programs shown with ``;`` after each block's comment; Fanuc
+    comment [K: Haas 96-8000 mill operator's manual, blocks printed ending `` ;`` (``N50 M99 P10 ;``); Fanuc
     0i-F operator's manual, EOB shown as ``;``]. What follows a ``;`` on the line (comments, already taken,
     blanks and further ``;``) may not be words: a second block on one line is refused, never run as part
     of the first nor dropped."""
