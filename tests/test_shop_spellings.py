@@ -238,3 +238,13 @@ def test_a_vacant_value_is_flattened_for_linuxcnc_which_has_no_0() -> None:
     # by hand: #1 vacant, counted as 0 in [#1+1.] (Fanuc vacancy), so the move goes to X1.
     source = "G0 X0 Y0 Z1.\n#1=#0\nG0 X[#1+1.]\nM30"
     assert translated(source, "linuxcnc") == "G0 X0. Y0. Z1.\nG0 X1.\nM30\n"
+
+
+def test_a_variable_linuxcnc_lacks_is_never_written_for_it() -> None:
+    # found by the shop-spellings generator: 'G1 Z-#10200' reached LinuxCNC, whose parameters end at #5601
+    assert translated("#10100=5.\nG1 Z-#10100 F10.\nM30", "linuxcnc", HAAS) == "G1 Z-5. F10.\nM30\n"
+    with pytest.raises(ErrorList) as info:
+        translated("G1 Z-#10100 F10.\nM30", "linuxcnc")
+    assert [str(e) for e in info.value.errors] == [
+        "t.nc:1:4: error: #10100 (tool compensation value) is known only to the machine: the program cannot be "
+        "simulated or flattened"]
