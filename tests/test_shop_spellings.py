@@ -209,7 +209,8 @@ def test_without_its_argument_the_macro_raises_its_alarm(cli, tmp_path) -> None:
     path.write_text(MACRO + "\n")
     result = cli("toolpath", path, "--dialect", "fanuc")
     assert result.status == 1
-    assert result.err.splitlines()[0] == f"{path}:1:20: error: the program raises its alarm #3000=1 (NEED ROTATION AXIS)"
+    first = result.err.splitlines()[0]
+    assert first == f"{path}:1:20: error: the program raises its alarm #3000=1 (NEED ROTATION AXIS)"
 
 
 @pytest.mark.parametrize("args, message", [

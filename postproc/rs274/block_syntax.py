@@ -418,8 +418,9 @@ class WordBlockSyntax(Syntax):
                     register = values["D"]
                 elif arg != "off" and "H" in values and "08" not in codes:
                     if not ctx.setup.controller.cutter_h_rule():
-                        raise ProgramError(f"G{num} takes its radius register from D, not H{_text(block, 'H')}"
-                                           + CUTTER_H_HINT, ctx.at(block, ctx.column_of(block, "H")))
+                        h = self._word_text(block, "H")
+                        raise ProgramError(f"G{num} takes its radius register from D, not H{h}{CUTTER_H_HINT}",
+                                           ctx.at(block, ctx.column_of(block, "H")))
                     used.add("H")  # Fanuc 0M: G42 H19 takes the radius from offset 19
                     register = values["H"]
                 block.add(CutterCompensation(arg, register))
@@ -499,9 +500,10 @@ class WordBlockSyntax(Syntax):
         elif not isinstance(register, Expr) and int(register) == 0:
             block.add(ToolLengthOffset("cancel"))
         else:
-            raise ProgramError(f"H{_text(block, 'H')} with no tool length offset in force: a register takes effect "
-                               f"with {self.spell('length', 'positive')} or {self.spell('length', 'negative')} "
-                               "(write it in their block)", ctx.at(block, ctx.column_of(block, "H")))
+            raise ProgramError(f"H{self._word_text(block, 'H')} with no tool length offset in force: a register "
+                               f"takes effect with {self.spell('length', 'positive')} or "
+                               f"{self.spell('length', 'negative')} (write it in their block)",
+                               ctx.at(block, ctx.column_of(block, "H")))
         used.add("H")
 
     def cycle_data_letters(self, ctx: Context) -> str:
@@ -615,14 +617,6 @@ def _dwells(codes: dict[str, tuple[str, str, object, str]], cycle_block: bool) -
         if entry[1] == "dwell":
             return True
     return False
-
-
-def _text(block: Block, up: str) -> str:
-    """The number text of the block's word ``up`` as written (for messages)."""
-    for letter, num in block.words:
-        if _UPPER[letter] == up:
-            return num
-    return ""
 
 
 def _real(value: Any) -> Any:
