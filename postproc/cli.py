@@ -133,7 +133,7 @@ def examples(*commands: str) -> str:
 STDIO = "'-' reads standard input"
 MACHINE = "machine set-up XML (decimal-point mode, cycle parameters, output format, ...; see docs/setup-reference.md)"
 LIB = "folder searched for subprograms (repeatable; after the set-up's <Library>)"
-ARG = ("IN is a macro file run on its own, as a G65 call with this argument (A=30: #1 = 30 on Fanuc; "
+ARG = ("IN is a macro file run on its own, as if called with this argument (A=30: #1 = 30 on Fanuc; "
        "repeatable)")
 OUTPUT = "write here instead of standard output ('-': standard output); written only on success, atomically"
 
