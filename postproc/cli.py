@@ -7,6 +7,7 @@ import contextlib
 import io
 import math
 import os
+import re
 import signal
 import sys
 from pathlib import Path
@@ -20,7 +21,7 @@ from .errors import ConfigError, Diagnostics, ErrorList, Location, PostprocError
 from .outfile import BUFFER, ENCODING, write_output
 from .plugins import default_registry
 from .progress import AboveProgress, progress_for
-from .setup import MachineSetup, load_setup
+from .setup import MachineSetup, check_named_file, load_setup
 from .xmlio import parse_xml_file, to_bytes
 
 EXIT_INTERRUPTED = 128 + signal.SIGINT
@@ -97,34 +98,43 @@ def _main(argv: Sequence[str] | None) -> int:
 
 
 EXAMPLES = {
-    "translate": """examples:
+    "translate": """\
   postproc translate o1001.nc --from fanuc --to linuxcnc -o o1001.ngc
   postproc translate o1002.nc --from fanuc --to grbl --on-unsupported warn -o o1002.gcode
   postproc translate o1004.nc --from fanuc --to fanuc --normalize --renumber 10,10 -o o1004.nc --in-place
   cat o1001.nc | postproc translate - --from fanuc --to grbl > o1001.gcode
   postproc translate programs/ -o migrated/ --from fanuc --to linuxcnc --ext ngc --verify --report report.jsonl""",
-    "toolpath": """examples:
+    "toolpath": """\
   postproc toolpath o1003.nc --dialect fanuc                  # JSON lines on standard output
   postproc toolpath o1003.nc --dialect fanuc --format svg -o o1003.svg""",
-    "verify": """examples:
+    "verify": """\
   postproc translate o1001.nc --from fanuc --to grbl -o o1001.gcode
   postproc verify o1001.nc o1001.gcode --from fanuc --to grbl    # exit 1 above the tolerance
   postproc verify o1001.nc o1001.gcode --from fanuc --to grbl --plot diff.svg   # both toolpaths, overlaid""",
-    "ir": """example:
+    "ir": """\
   postproc ir o1001.nc --dialect fanuc -o o1001.xml""",
-    "dialects": """examples:
+    "dialects": """\
   postproc dialects                  # one column per dialect, one row per capability
   postproc dialects --format json    # the same for tools""",
-    "config": """examples:
+    "config": """\
   postproc config check examples/setups/fanuc_0i_mf_calculator.xml
   postproc config dump examples/setups/fanuc_0i_mf_calculator.xml > canonical.xml
   postproc config dump --flatten examples/setups/haas_vf2_cell3.xml > resolved.xml""",
 }
-"""One example (or a few) per command, shown by its ``--help``."""
+"""One example (or a few) per command, shown by its ``--help`` (``examples``)."""
+
+
+def examples(*commands: str) -> str:
+    """The examples of ``commands`` under one heading: ``postproc --help`` shows several commands' examples
+    together, each ``COMMAND --help`` its own."""
+    lines = "\n".join(EXAMPLES[c] for c in commands)
+    return ("example:\n" if lines.count("\n") == 0 else "examples:\n") + lines
 
 STDIO = "'-' reads standard input"
 MACHINE = "machine set-up XML (decimal-point mode, cycle parameters, output format, ...; see docs/setup-reference.md)"
 LIB = "folder searched for subprograms (repeatable; after the set-up's <Library>)"
+ARG = ("IN is a macro file run on its own, as if called with this argument (A=30: #1 = 30 on Fanuc; "
+       "repeatable)")
 OUTPUT = "write here instead of standard output ('-': standard output); written only on success, atomically"
 
 
@@ -176,7 +186,7 @@ def build_parser() -> argparse.ArgumentParser:
         prog="postproc", formatter_class=_Formatter,
         description="Translate CNC part programs between controller dialects (fanuc, linuxcnc, grbl, ...) "
                     "and check that a translation moves the tool exactly as its source.",
-        epilog="\n\n".join(EXAMPLES[c] for c in ("translate", "verify", "toolpath")) + "\n\n"
+        epilog=examples("translate", "verify", "toolpath") + "\n\n"
                "exit status: 0 ok, 1 the program or set-up has errors (FILE:LINE:COL: error: ...), 2 wrong usage; "
                "warnings go to standard error.\n'postproc COMMAND --help' describes each command.")
     p.add_argument("--version", action=_Version, nargs=0,
@@ -184,7 +194,7 @@ def build_parser() -> argparse.ArgumentParser:
     sub = p.add_subparsers(dest="command", metavar="COMMAND")
 
     def command(name: str, help: str, description: str) -> argparse.ArgumentParser:
-        return sub.add_parser(name, help=help, description=description, epilog=EXAMPLES[name],
+        return sub.add_parser(name, help=help, description=description, epilog=examples(name),
                               formatter_class=_Formatter)
 
     t = command("translate", "translate a program from one dialect to another",
@@ -228,6 +238,7 @@ def build_parser() -> argparse.ArgumentParser:
     tp.add_argument("--format", choices=("jsonl", "svg", "png"), default="jsonl",
                     help="jsonl (default), svg or png (png needs -o)")
     tp.add_argument("-o", "--output", metavar="OUT", help=OUTPUT)
+    tp.add_argument("--arg", action="append", default=[], metavar="LETTER=VALUE", help=ARG)
     tp.set_defaults(run=cmd_toolpath)
 
     v = command("verify", "compare the toolpaths of a program and its translation",
@@ -248,6 +259,7 @@ def build_parser() -> argparse.ArgumentParser:
     v.add_argument("--plot", metavar="FILE.svg|FILE.png",
                    help="also draw both toolpaths over each other with the largest deviation marked (SVG, or "
                         "PNG with the render extra); written whatever the verdict")
+    v.add_argument("--arg", action="append", default=[], metavar="LETTER=VALUE", help=ARG)
     v.set_defaults(run=cmd_verify)
 
     i = command("ir", "print a program's IR as XML",
@@ -328,6 +340,8 @@ def _tolerance(text: str) -> float:
 
 
 def _setup(path: str | None, lib: Sequence[str] = ()) -> MachineSetup:
+    if path:
+        check_named_file(path)
     setup = load_setup(path, groups=default_registry().setup_groups) if path else MachineSetup()
     for folder in lib:
         if not os.path.isdir(folder):
@@ -430,6 +444,23 @@ def _program_number(text: str) -> int:
     return number
 
 
+_ARGUMENT = re.compile(r"([A-Za-z])=([-+]?(?:\d+\.?\d*|\.\d+))")
+
+
+def _arguments(texts: Sequence[str]) -> dict[str, float]:
+    """``--arg A=30`` (repeatable) as {"A": 30.0}; the dialect checks the addresses (wrong usage otherwise)."""
+    found: dict[str, float] = {}
+    for text in texts:
+        m = _ARGUMENT.fullmatch(text.strip())
+        if m is None:
+            raise UsageError(f"--arg takes LETTER=NUMBER (A=30), got {text!r}")
+        letter = m.group(1).upper()
+        if letter in found:
+            raise UsageError(f"--arg {letter} is given twice")
+        found[letter] = float(m.group(2))
+    return found
+
+
 def _renumber(text: str | None) -> tuple[int, int | None] | None:
     """``--renumber START[,STEP]`` as numbers (a usage error otherwise; the set-up checks their range)."""
     if not text:
@@ -458,7 +489,8 @@ def cmd_toolpath(args: argparse.Namespace) -> int:
         lines, diagnostics = _watched(args.input, src, setup)
         write_output(_output(args.output), lambda out: export_toolpath(
             lines, out, file=_name(args.input), dialect=args.dialect, setup=setup, fmt=args.format,
-            diagnostics=diagnostics, on_unsupported=args.on_unsupported), binary=binary, input_path=_input_path(args.input))
+            diagnostics=diagnostics, on_unsupported=args.on_unsupported, arguments=_arguments(args.arg)),
+            binary=binary, input_path=_input_path(args.input))
     return 0
 
 
@@ -476,7 +508,8 @@ def cmd_verify(args: argparse.Namespace) -> int:
             report = verify_lines(a, b, file_in=_name(args.input), file_out=_name(args.output),
                                   source=args.source, target=args.target, setup=setup,
                                   target_setup=target_setup, tolerance=args.tolerance,
-                                  allow_ignored=args.allow_ignored, overlay=overlay)
+                                  allow_ignored=args.allow_ignored, overlay=overlay,
+                                  arguments=_arguments(args.arg))
         if overlay is not None:
             write_output(args.plot, lambda out: overlay.write(out, str(fmt), report), binary=fmt == "png",
                          input_path=_input_path(args.input))
@@ -521,6 +554,7 @@ def cmd_config(args: argparse.Namespace) -> int:
     from .setup_load import raise_all
     from .sequences import check_templates
     registry = default_registry()
+    check_named_file(args.file)
     setup, problems = load_setup_collect(args.file, registry.setup_groups)
     if setup.dialect:
         try:

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import abc
 from pathlib import Path
-from typing import TYPE_CHECKING, Callable, ClassVar, Generic, Iterable, Iterator, TypeVar, cast
+from typing import TYPE_CHECKING, Callable, ClassVar, Generic, Iterable, Iterator, Mapping, TypeVar, cast
 
 from .comments import CommentSyntax
 from .errors import Diagnostics
@@ -169,6 +169,14 @@ class Dialect:
     LATHE_FEED_AT_START: ClassVar[str] = "per_min"
     """The feed mode a lathe program starts in before it programs one (Fanuc T: per revolution, G99, by
     its default parameter; GSK 980TDc: per minute, G98)."""
+    MACRO_ARGUMENTS: ClassVar[Mapping[str, int]] = {}
+    """The addresses a macro call passes arguments with -> the local variable each sets (Fanuc ``G65 A30.``:
+    ``#1``), so a macro file run on its own (``toolpath``/``verify --arg A=30``) starts with them; empty:
+    the dialect has no such arguments."""
+    MOTION_AT_START: ClassVar[str | None] = None
+    """The motion mode ("rapid", "linear") a program is in before it programs one, for a controller that
+    powers on in one (the set-up's ``<Controller startMotion>`` may say the other); None: axis words need
+    a motion code first."""
     LOWER_CASE: ClassVar[bool] = False
     """The reader takes lower-case addresses (``g1 x10``): the set-up's ``<Output case="lower">`` is
     refused otherwise."""
@@ -194,7 +202,7 @@ class Dialect:
     def capabilities(cls) -> dict[str, object]:
         """The capability table: every UPPER_CASE attribute that describes the controller."""
         skip = {"NAME", "DESCRIPTION", "READER", "WRITER", "PIPELINE_FILE", "LATHE_PIPELINE_FILE", "CYCLE_WORDS",
-                "LOWERING", "COMMENTS", "LINE_RULE"}
+                "LOWERING", "COMMENTS", "LINE_RULE", "MACRO_ARGUMENTS"}
         table: dict[str, object] = {}
         for klass in reversed(cls.__mro__):
             for key, value in vars(klass).items():
@@ -259,6 +267,8 @@ class Dialect:
         ctx.lathe = cls.reads_lathe(setup)
         ctx.diameter = ctx.lathe and cls.DIAMETER_PROGRAMMING and setup.input.x_programming == "diameter"
         ctx.one_block = ctx.lathe and cls.LATHE_ONE_BLOCK and setup.input.lathe_cycle_format == "one-block"
+        if cls.MOTION_AT_START is not None:
+            ctx.state.motion = setup.controller.start_motion or cls.MOTION_AT_START
         if ctx.lathe:
             ctx.state.plane = "ZX"  # a lathe turns in the ZX plane (G18) from the start
             ctx.state.feed_mode = cls.LATHE_FEED_AT_START

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import json
 import math
-from typing import Any, Iterable, TextIO
+from typing import Any, Iterable, Mapping, TextIO
 
 from .errors import Diagnostics, Location, ProgramError, UsageError
 from .setup import MachineSetup
@@ -15,12 +15,14 @@ from .toolpath import Event, start_position, toolpath_events
 
 def export_toolpath(lines: Iterable[str], out: Any, *, file: str, dialect: str | type[Dialect],
                     setup: MachineSetup | None = None, fmt: str = "jsonl",
-                    diagnostics: Diagnostics | None = None, on_unsupported: str = "error") -> None:
+                    diagnostics: Diagnostics | None = None, on_unsupported: str = "error",
+                    arguments: Mapping[str, float] | None = None) -> None:
     """Write a program's toolpath to ``out``: JSON lines or SVG (text streams), PNG (a binary stream).
-    ``on_unsupported="warn"``: a move beyond the set-up's travel is a warning."""
+    ``on_unsupported="warn"``: a move beyond the set-up's travel is a warning. ``arguments``: a macro
+    file's call arguments (``toolpath_events``)."""
     setup = setup or MachineSetup()
     events = toolpath_events(lines, file=file, dialect=dialect, setup=setup, diagnostics=diagnostics,
-                             on_unsupported=on_unsupported)
+                             on_unsupported=on_unsupported, arguments=arguments)
     if fmt == "jsonl":
         write_jsonl(events, out, file)
     elif fmt in ("svg", "png"):

@@ -10,7 +10,7 @@ from __future__ import annotations
 import contextlib
 import gc
 from itertools import chain
-from typing import Callable, Iterable, Iterator
+from typing import Callable, Iterable, Iterator, Mapping
 
 from .context import Context
 from .dialect import Dialect
@@ -49,6 +49,29 @@ def read_blocks(lines: Iterable[str], file: str, dialect: type[Dialect], setup: 
     pipeline = dialect.pipeline(setup)
     blocks = dialect.READER(ctx).read(checked_lines(lines, ctx, dialect.READER.BLANKS))
     return ctx, pipeline.run(_warn_if_empty(blocks, ctx), ctx)
+
+
+def macro_arguments(dialect: type[Dialect], arguments: Mapping[str, float]) -> Callable[[Context], None]:
+    """A ``prepare`` for ``read_blocks``: the program is a macro file run on its own, as called with
+    ``arguments`` (``--arg A=30``: address -> value), which set the locals the dialect's argument
+    specification gives them (``Dialect.MACRO_ARGUMENTS``; the interpreter step starts with them). An
+    address the dialect does not take is wrong usage."""
+    from .interp.step import ARGUMENTS_KEY
+    table = dialect.MACRO_ARGUMENTS
+    if not table:
+        raise UsageError(f"--arg: the {dialect.NAME} dialect has no macro call arguments")
+    found: dict[int, float] = {}
+    for letter, value in arguments.items():
+        local = table.get(letter.upper())
+        if local is None:
+            raise UsageError(f"--arg {letter}: not an argument address of the {dialect.NAME} dialect (it takes "
+                             f"{' '.join(sorted(table))})")
+        found[local] = value
+
+    def prepare(ctx: Context) -> None:
+        ctx.run_data[ARGUMENTS_KEY] = found
+
+    return prepare
 
 
 _INERT = frozenset(("Comments", "TapeMark"))

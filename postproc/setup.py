@@ -13,7 +13,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from .errors import ConfigError
+from .errors import ConfigError, UsageError
 from .setup_record import SetupGroup, setting, values
 from .setup_record import aliases as field_aliases
 from .xmlio import XFactory, XmlNode, lxml_etree, where
@@ -208,6 +208,17 @@ def _attr_text(value: Any) -> str:
     if isinstance(value, float) and value.is_integer():
         return repr(value)
     return str(value)
+
+
+def check_named_file(path: str | Path) -> None:
+    """A set-up file named on the command line (``--machine``, ``config check``) that cannot be opened is
+    wrong usage (exit 2), as an input program that cannot be read is (docs/cli.md); a base it
+    ``extends`` that cannot be read stays an error of the set-up (exit 1, located in the file naming it)."""
+    try:
+        with open(path, "rb"):
+            pass
+    except OSError as exc:
+        raise UsageError(f"cannot read {path}: {exc.strerror}") from None
 
 
 def load_setup(path: str | Path, factory: XFactory | None = None,

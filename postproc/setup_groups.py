@@ -239,6 +239,11 @@ class ControllerSettings(SetupGroup):
     """G41/G42 may take the offset register from H when the block has no D and no tool length
     offset (Fanuc 0M ``G42 H19``). None: as the variant does (0M: yes)."""
 
+    start_motion: Literal["rapid", "linear"] | None = None
+    """The motion mode in force at power-on, before a program programs one, on a controller that has one
+    (``Dialect.MOTION_AT_START``; Fanuc: G00 or G01 by parameter 3402#0 G01). None: the dialect's
+    default. A dialect without a power-on mode (axis words need a motion code first) ignores it."""
+
     def dwell_seconds_rule(self) -> bool:
         return self.variant == "haas" if self.dwell_seconds is None else self.dwell_seconds
 

@@ -48,6 +48,9 @@ class ModalState:
     return_level: str = "initial"
     work_offset: int = 1
     tool: int | None = None
+    length: str = "cancel"
+    """The tool length offset mode in force ("positive", "negative", "cancel"): an offset register word
+    alone changes the offset only while one is (``ToolLengthOffset``)."""
     cycle: CycleState | None = None
     position: dict[str, float | None] = field(default_factory=lambda: {"X": None, "Y": None, "Z": None})
     extra: dict[str, Any] = field(default_factory=dict)
@@ -117,6 +120,7 @@ _APPLY: Final[dict[str, Callable[[ModalState, Any], None]]] = {
     "WorkOffset": _work_offset,
     "DataSetting": lambda st, s: _offset_set(st, s),
     "ToolSelect": lambda st, s: setattr(st, "tool", _known(s.number)),
+    "ToolLengthOffset": lambda st, s: setattr(st, "length", s.mode),
 }
 """How each modal section changes the state; sections not listed change nothing here."""
 

@@ -31,9 +31,9 @@ Assumptions (a simulator knows no machine data):
 from __future__ import annotations
 
 import math
-from typing import Any, Callable, Iterable, Iterator
+from typing import Any, Callable, Iterable, Iterator, Mapping
 
-from .reading import gc_paused, read_blocks
+from .reading import gc_paused, macro_arguments, read_blocks
 from .block_rules import NO_FEED, ArcError, arc_centre, check_blocks, needs_feed
 from .machine_functions import drop_foreign_machine_functions
 from .program_end import EndTracker, comment_after_end
@@ -900,22 +900,27 @@ def toolpath_events(lines: Iterable[str], *, file: str, dialect: str | type[Dial
                     diagnostics: Diagnostics | None = None, check: bool = True,
                     live_after_end: list[int] | None = None,
                     unsimulated: list[tuple[int, str, str]] | None = None,
-                    on_unsupported: str = "error", compensate: bool = True) -> Iterator[Event]:
+                    on_unsupported: str = "error", compensate: bool = True,
+                    arguments: Mapping[str, float] | None = None) -> Iterator[Event]:
     """Read a program in ``dialect`` and yield its toolpath (header first). Raises ``ErrorList`` at the
     end when the program had errors (unless ``check`` is False: the caller then checks
     ``diagnostics``); events already yielded then belong to a failed run. ``live_after_end``, if given,
     receives the lines of live blocks after the program end; ``unsimulated`` the changes of settings
     the simulation does not apply (``Simulator.unsimulated``). ``on_unsupported="warn"`` makes a move
     beyond the travel a warning. ``compensate=False`` leaves cutter radius compensation unsimulated even
-    where the dialect has rules for it (``verify`` against a dialect that has none)."""
+    where the dialect has rules for it (``verify`` against a dialect that has none). ``arguments``
+    (``{"A": 30.0}``): the program is a macro file run on its own, as called with these arguments
+    (``postproc.reading.macro_arguments``)."""
     setup = setup or MachineSetup()
     diagnostics = diagnostics or Diagnostics()
     registry = registry or default_registry()
     if isinstance(dialect, str):
         dialect = registry.dialect(dialect)
+    prepare = macro_arguments(dialect, arguments) if arguments else None
     with gc_paused():
         # a simulation runs the program's loops, jumps and calls
-        ctx, blocks = read_blocks(lines, file, dialect, setup, diagnostics, program_mode="execute")
+        ctx, blocks = read_blocks(lines, file, dialect, setup, diagnostics, program_mode="execute",
+                                  prepare=prepare)
         steps = [step for step in registry.lowerings if step not in TRANSLATE_ONLY]
         lowered = lower_for(blocks, ctx, ToolpathTarget, "error", steps)
         yield from simulate(lowered, ctx, live_after_end, unsimulated, on_unsupported == "warn",

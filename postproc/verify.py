@@ -16,10 +16,10 @@ import dataclasses
 import math
 from dataclasses import dataclass, field
 from itertools import zip_longest
-from typing import Any, Iterable, Iterator
+from typing import Any, Iterable, Iterator, Mapping
 
 from .errors import Diagnostics, ErrorList, UsageError
-from .plugins import Registry
+from .plugins import Registry, default_registry
 from .setup import MachineSetup
 from .geometry import CENTRE_KEYS, PLANE_INDEX, arc_sweep
 from .overlay import Overlay
@@ -411,10 +411,12 @@ def verify_lines(lines_in: Iterable[str], lines_out: Iterable[str], *, file_in: 
                  source: str, target: str, setup: MachineSetup | None = None,
                  target_setup: MachineSetup | None = None, tolerance: float = 0.001,
                  registry: Registry | None = None, allow_ignored: bool = False,
-                 overlay: Overlay | None = None) -> Report:
+                 overlay: Overlay | None = None, arguments: Mapping[str, float] | None = None) -> Report:
     """Compare two programs given as lines. Raises ``ErrorList`` with both programs' errors, if any.
     ``allow_ignored``: settings that move the tool may differ (they are listed either way).
-    ``overlay``: collects both toolpaths as they stream past, for a picture of the two."""
+    ``overlay``: collects both toolpaths as they stream past, for a picture of the two. ``arguments``: both
+    are macro files run with these call arguments (``toolpath_events``); a program whose dialect has no
+    such arguments (a flattened translation) is run without them."""
     if not math.isfinite(tolerance) or tolerance < 0:
         raise UsageError(f"the tolerance must be a finite number of at least 0, got {tolerance:g}")
     setup = setup or MachineSetup()
@@ -425,16 +427,17 @@ def verify_lines(lines_in: Iterable[str], lines_out: Iterable[str], *, file_in: 
     after_out: list[int] = []
     settings_in: list[tuple[int, str, str]] = []
     settings_out: list[tuple[int, str, str]] = []
+    dialects = registry or default_registry()
     compensate = _both_compensate(source, target, registry)
     events_in = toolpath_events(lines_in, file=file_in, dialect=source, setup=setup, registry=registry,
                                 diagnostics=diag_in, check=False, live_after_end=after_in, unsimulated=settings_in,
-                                compensate=compensate)
+                                compensate=compensate, arguments=arguments)
+    out_arguments = arguments if arguments and dialects.dialect(target).MACRO_ARGUMENTS else None
     events_out = toolpath_events(lines_out, file=file_out, dialect=target, setup=target_setup,
                                  registry=registry, diagnostics=diag_out, check=False, live_after_end=after_out,
-                                 unsimulated=settings_out, compensate=compensate)
+                                 unsimulated=settings_out, compensate=compensate, arguments=out_arguments)
     if overlay is not None:
-        from .plugins import default_registry
-        reading = (registry or default_registry()).dialect(source)
+        reading = dialects.dialect(source)
         overlay.begin(start_position(setup), start_position(target_setup), reading.reads_lathe(setup))
         # the picture shows the paths compared (the controlled points), where the deviation is circled
         events_in = overlay.source_events(_controlled(iter(events_in)))

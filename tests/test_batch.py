@@ -344,3 +344,20 @@ def test_defines_reach_the_templates_of_every_file(cli, tree, tmp_path):
         written = (out / path.name).read_bytes()
         assert b"(SHOP ACME)" in written
         assert written == single(cli, path, *options), path.name
+
+
+def test_the_summary_counts_warnings_among_the_files_ok():
+    """"ok N (M with warnings)": M counts the files translated ok that warned, never more than N (a file
+    with errors and warnings is counted under errors only)."""
+    from postproc.batch.report import Tally
+    from postproc.batch.work import FileResult
+    tally = Tally(files=4)
+    tally.add(FileResult("a.nc", "o/a.nc", "ok", 0, warnings=["a.nc:1:1: warning: w"]))
+    tally.add(FileResult("b.nc", "o/b.nc", "ok", 0))
+    tally.add(FileResult("c.nc", "o/c.nc", "error", 1, warnings=["c.nc:1:1: warning: w"],
+                         errors=["c.nc:2:1: error: e"]))
+    tally.add(FileResult("d.nc", "o/d.nc", "error", 1, warnings=["d.nc:1:1: warning: w"],
+                         errors=["d.nc:2:1: error: e"]))
+    ok_line = next(line for line in tally.summary(source="fanuc", target="fanuc", where="1 job", report=None)
+                   .splitlines() if line.strip().startswith("ok"))
+    assert ok_line.split()[1:] == ["2", "(1", "with", "warnings)"]

@@ -33,6 +33,15 @@ USAGE = [
     (["translate", PROGRAM, "--from", "fanuc", "--to", "fanuc", "--renumber", "10,0"],
      "postproc: --renumber takes START[,STEP], got '10,0'"),
     (["translate", ROOT / "no/such/file.nc", "--from", "fanuc", "--to", "fanuc"], "postproc: cannot read "),
+    # A set-up file named on the command line that cannot be read is usage, as an input is (docs/cli.md)
+    (["translate", PROGRAM, "--from", "fanuc", "--to", "fanuc", "--machine", ROOT / "no/such/m.xml"],
+     "postproc: cannot read "),
+    (["toolpath", PROGRAM, "--dialect", "fanuc", "--machine", ROOT / "no/such/m.xml"], "postproc: cannot read "),
+    (["verify", PROGRAM, PROGRAM, "--from", "fanuc", "--to", "fanuc", "--target-machine", ROOT / "no/such/m.xml"],
+     "postproc: cannot read "),
+    (["config", "check", ROOT / "no/such/m.xml"], "postproc: cannot read "),
+    (["translate", PROGRAM, PROGRAM, "-o", ROOT / "no/such/out", "--from", "fanuc", "--to", "fanuc", "--machine",
+      ROOT / "no/such/m.xml"], "postproc: cannot read "),
     (["ir", PROGRAM, "--dialect", "nope"], "postproc: unknown dialect 'nope'"),
     (["ir", PROGRAM], "the following arguments are required: --dialect"),
     (["config", "frob", "m.xml"], "invalid choice: 'frob'"),
@@ -50,6 +59,14 @@ def test_wrong_usage_exits_2(cli, args, fragment):
     assert result.status == 2
     assert fragment in result.err
     assert result.out == b""
+
+
+@pytest.mark.parametrize("command", [[], ["translate"], ["toolpath"], ["ir"], ["config"]])
+def test_help_has_one_examples_heading(cli, command):
+    result = cli(*command, "--help")
+    assert result.status == 0
+    text = result.out.decode()
+    assert text.count("examples:") + text.count("example:") == 1, text
 
 
 def test_a_write_only_dialect_cannot_be_read(cli, monkeypatch):

@@ -67,7 +67,9 @@ def test_haas_cycle_dwell_p_in_seconds() -> None:
 
 def test_haas_dwell_finer_than_a_millisecond_and_fanuc_points_are_refused() -> None:
     assert errors("G04 P0.0005", HAAS) == ["t.nc:1:5: error: dwell P0.0005 (seconds) is finer than a millisecond"]
-    assert errors("G04 P0.5") == ["t.nc:1:5: error: address P takes no decimal point (P0.5)"]
+    assert errors("G04 P0.5") == ["t.nc:1:5: error: address P takes no decimal point (P0.5): a dwell P counts "
+                                  "milliseconds; if it means seconds (Haas), set <Controller dwellSeconds=\"true\"/> "
+                                  "(or variant=\"haas\") in the machine set-up"]
 
 
 def test_haas_dwell_translates_to_linuxcnc_seconds_and_stays_verbatim_for_fanuc() -> None:
@@ -92,7 +94,8 @@ def test_h_beside_a_length_offset_stays_the_length_register_on_0m() -> None:
 
 def test_g42_h_is_an_error_on_other_variants() -> None:
     assert errors("G21 G90 G00 X0 Y0\nG42 H19 G01 X10. F100.") == [
-        "t.nc:2:5: error: address H has no meaning in this block"]
+        "t.nc:2:5: error: G42 takes its radius register from D, not H19; if the controller takes it from H (Fanuc "
+        "0M), set <Controller cutterRegisterH=\"true\"/> (or variant=\"fanuc-0m\") in the machine set-up"]
 
 
 # -- rotary axes -----------------------------------------------------------------------------------

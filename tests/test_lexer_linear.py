@@ -30,7 +30,8 @@ class CountingStr(str):
 BAD_LINES = [
     ("X1.5 Y2 " * 4000 + "Q1.2.3", "t.nc:1:32001: error: malformed word 'Q1.2.3'"),
     ("X1.5 Y2 " * 4000 + "!", "t.nc:1:32001: error: unexpected character '!'"),
-    ("X1.5 ; " * 4000 + "Y", "t.nc:1:6: error: unexpected character ';'"),
+    ("X1.5 ; " * 4000 + "Y", "t.nc:1:8: error: only comments may follow ';' (the end of the block) on its line: "
+                              "put the next block on a line of its own"),
     ("X1.5 Y2 " * 4000 + "1.", "t.nc:1:32001: error: number without an address at '1.'"),
     ("X1.5 Y2 " * 4000 + "B #1 !", "t.nc:1:32001: error: macro variables and expressions are not supported by this "
                                    "reader yet"),

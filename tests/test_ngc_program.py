@@ -282,8 +282,13 @@ def _grow(children: st.SearchStrategy[Expr]) -> st.SearchStrategy[Expr]:
         st.builds(lambda f, a: Func(f, [a]), st.sampled_from(_FUNCS), children),
         st.builds(lambda a, b: Func("atan2", [a, b]), children, children),
         st.builds(lambda a: Unary("neg", a), children),
-        st.builds(Var, children),
+        st.builds(Var, children.filter(_a_parameter)),
     )
+
+
+def _a_parameter(index: Expr) -> bool:
+    """LinuxCNC has no #0 (rs274: "Parameter number out of range"): a literal index names #1 and up."""
+    return not (isinstance(index, Num) and index.value == 0.0)
 
 
 EXPRS = st.recursive(_LEAVES, _grow, max_leaves=8)

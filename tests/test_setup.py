@@ -200,9 +200,17 @@ def test_doctype_and_entities_are_rejected(cli, tmp_path, body):
 
 
 def test_missing_setup_file(cli, tmp_path):
+    """A set-up named on the command line that cannot be read is wrong usage (docs/cli.md: exit 2)."""
     result = cli("config", "check", tmp_path / "none.xml")
+    assert result.status == 2
+    assert result.err == f"postproc: cannot read {tmp_path / 'none.xml'}: No such file or directory\n"
+
+
+def test_missing_base_of_a_setup_is_an_error_of_the_setup(cli, tmp_path):
+    machine = _write(tmp_path, '<MachineSetup name="m" extends="none.xml"/>\n')
+    result = cli("config", "check", machine)
     assert result.status == 1
-    assert result.err.startswith(f"{tmp_path / 'none.xml'}:1:1: error: cannot read ")
+    assert result.err.startswith(f"{machine}:2:1: error: extends: base 'none.xml' not found")
 
 
 def test_translate_with_a_bad_setup_is_a_configuration_error(cli, tmp_path):

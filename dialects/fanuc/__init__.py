@@ -16,6 +16,7 @@ from postproc.rs274.order_of_execution import stops_before_motion
 from postproc.writer_base import Writer
 from postproc.xmlio import XFactory
 
+from .arguments import LETTER_LOCALS
 from .codes import CODES
 
 ALL_MILLING_CYCLES = frozenset({
@@ -60,6 +61,12 @@ class Fanuc(Dialect):
     """Fanuc T starts in G99 (feed per revolution; parameter 3402#4 FPM = 0, the default)."""
     LATHE_ONE_BLOCK = True
     """10/11/15-T read ``G71 P Q U W D F`` and ``G76 X Z I K D F A P`` (the set-up's ``latheCycleFormat``)."""
+    MACRO_ARGUMENTS = LETTER_LOCALS
+    """``G65`` arguments by address (argument specification I), for a macro file run on its own (``--arg``)."""
+    MOTION_AT_START = "rapid"
+    """Fanuc M and T power on (and clear on reset) in G00, or in G01 with parameter 3402#0 G01 = 1 (the
+    set-up's ``<Controller startMotion="linear"/>``) [K: Fanuc 0i-F operator's manual, G code list notes;
+    cnc.wiki "Fanuc Parameter 3402"]."""
     LATHE_PIPELINE_FILE = "fanuc_lathe.xml"
     LOWERING = (stops_before_motion,)
     """A spindle stop or coolant off that the source made before its block's motion goes in a block of

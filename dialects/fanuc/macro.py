@@ -22,12 +22,9 @@ from postproc.expr import Expr, Num
 from postproc.ir import Block, Section
 from postproc.rs274.block_syntax import DECIMAL_LETTERS
 
-LETTER_LOCALS: dict[str, int] = {
-    "A": 1, "B": 2, "C": 3, "I": 4, "J": 5, "K": 6, "D": 7, "E": 8, "F": 9, "H": 11, "M": 13, "Q": 17,
-    "R": 18, "S": 19, "T": 20, "U": 21, "V": 22, "W": 23, "X": 24, "Y": 25, "Z": 26,
-}
-"""Argument specification I: the address of a G65/G66 argument -> the local variable it sets."""
-LOCAL_LETTERS: dict[int, str] = {n: letter for letter, n in LETTER_LOCALS.items()}
+from .arguments import LETTER_LOCALS, LOCAL_LETTERS
+
+__all__ = ["LETTER_LOCALS", "LOCAL_LETTERS", "read_call"]
 
 CALL_HINTS = ("M9", "m9", "G6", "g6")
 """Substrings every call or return block contains: other blocks skip the word scan (a C-level test)."""

@@ -8,11 +8,13 @@ a subprogram ``O2000`` not in the file is looked for in the set-up's and ``--lib
 
 from __future__ import annotations
 
-from typing import ClassVar
+from typing import Callable, ClassVar
 
-
+from postproc.context import Context
 from postproc.interp import FanucVariables, ProgramSyntax
-from postproc.interp.variables import VariablesFactory
+from postproc.interp.variables import Variables, VariablesFactory
+
+from .variables import HaasVariables
 
 
 class FanucProgramSyntax(ProgramSyntax):
@@ -25,4 +27,10 @@ class FanucProgramSyntax(ProgramSyntax):
     VARIABLES: ClassVar[VariablesFactory] = FanucVariables
     LIBRARY_FILES: ClassVar[tuple[str, ...]] = ("O{number:04d}", "O{number:04d}.nc", "{name}.nc", "{name}")
     PROGRAM_LABEL: ClassVar[str] = "O{number:04d}"
+
+    def variables(self, ctx: Context, increment: Callable[[], float]) -> Variables:
+        """A Haas mill's variables have the NGC's five-digit numbers too (``variables.HaasVariables``)."""
+        if ctx.setup.controller.variant == "haas":
+            return HaasVariables(increment)
+        return super().variables(ctx, increment)
 

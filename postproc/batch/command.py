@@ -16,7 +16,7 @@ from typing import Generator
 
 from ..errors import UsageError
 from ..plugins import default_registry
-from ..setup import load_setup
+from ..setup import check_named_file, load_setup
 from .cluster import run_cluster
 from .local import default_jobs, run_local
 from .plan import CHUNK_BYTES, CHUNK_FILES, Job, chunks, plan_jobs
@@ -100,6 +100,7 @@ def _options(args: argparse.Namespace, renumber: tuple[int, int | None] | None) 
         raise UsageError(f"the {args.target} dialect cannot be written (it is read-only)")
     machine = os.path.abspath(args.machine) if args.machine else None
     if machine is not None:
+        check_named_file(args.machine)  # as the command line spelt it
         load_setup(machine, groups=registry.setup_groups)  # a set-up error is the whole batch's (exit 1), found before any file
     for folder in args.lib:
         if not os.path.isdir(folder):

@@ -51,6 +51,7 @@ class Tally:
     blocks: int = 0
     by_status: dict[str, int] = field(default_factory=dict)
     warned: int = 0
+    """Files translated ok that had warnings (the summary's "ok N (M with warnings)": M of those N)."""
     verified: int = 0
     worst_deviation: tuple[float, str] | None = None
     failures: list[FileResult] = field(default_factory=list)
@@ -61,7 +62,7 @@ class Tally:
         self.done += 1
         self.blocks += result.blocks
         self.by_status[result.status] = self.by_status.get(result.status, 0) + 1
-        self.warned += bool(result.warnings)
+        self.warned += result.status == "ok" and bool(result.warnings)  # of the files counted ok
         if result.max_deviation is not None:
             self.verified += 1
             if self.worst_deviation is None or result.max_deviation > self.worst_deviation[0]:

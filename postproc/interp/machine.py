@@ -38,7 +38,7 @@ from ..setup import Limits
 from ..source_map import CallSite, ExecutedBlock, Origin
 from .rules import STORED_PROGRAMS, SubprogramRules
 from .store import Program, ProgramStore, source_text
-from .variables import Variables
+from .variables import ALARM, MacroAlarm, Variables
 
 NON_WORD_SECTIONS = frozenset((CONTROL, ASSIGN, LABEL))
 
@@ -135,6 +135,9 @@ class Interpreter:
         self.modal: tuple[ModalCall, dict[int, Value], int, Block] | None = None
         self.ended = False
         self.rules = rules or STORED_PROGRAMS
+        self.called = False
+        """The main program runs as a called macro (``--arg``): its plain return ends the run instead of
+        going back to its start."""
         self.found: dict[tuple[str, str], int] = {}
         """(file, program number) -> position of the ``O`` block an ``M98`` found (forward search)."""
 
@@ -178,6 +181,10 @@ class Interpreter:
                 self._out_of_work(frame, block)
             try:
                 yield from self._step(frame, block)
+            except MacroAlarm as err:
+                comments = block.sections.get("Comments")
+                err.with_message(comments.texts if isinstance(comments, Comments) else [])
+                self._fail(err, frame, block, (block.text or "").find(f"#{ALARM}") + 1 or 1)
             except EvalError as err:
                 self._fail(err, frame, block, self._column(block, err))
             except PostprocError as err:
@@ -485,6 +492,9 @@ class Interpreter:
 
     def _return(self, frame: _Frame, block: Block | None, value: Value, target: int | None) -> None:
         frames = self.frames
+        if len(frames) == 1 and self.called and target is None:
+            self.ended = True  # a macro file run on its own returns to its (absent) caller: the run ends
+            return
         if len(frames) == 1:  # a return in the main program: back to its start (Fanuc M99)
             assert block is not None
             self._spend(block, "return")

@@ -16,7 +16,7 @@ from __future__ import annotations
 
 from collections import deque
 from pathlib import Path
-from typing import TYPE_CHECKING, ClassVar, Iterable, Iterator
+from typing import TYPE_CHECKING, Callable, ClassVar, Iterable, Iterator
 
 from mypy_extensions import mypyc_attr
 
@@ -34,6 +34,8 @@ if TYPE_CHECKING:
     from .store import Program
 
 ENCODING = {"encoding": "utf-8", "errors": "surrogateescape", "newline": ""}
+ARGUMENTS_KEY = "macro_arguments"
+"""``ctx.run_data`` key of the locals a program run on its own starts with (``--arg A=30``: {1: 30.0})."""
 Kept = str | tuple[str, str] | None
 """What the step keeps of a streamed block, for a backward jump (``ProgramSyntax._reread``): its text
 (ending ``\n``), its text and end of line, or None (a block without text). Most blocks keep the reader's
@@ -72,6 +74,12 @@ class ProgramSyntax(Syntax):
 
     def build(self, block: Block, ctx: Context) -> None:
         """Unused: the step streams (``process``)."""
+
+    def variables(self, ctx: Context, increment: Callable[[], float]) -> Variables:
+        """The run's variables (``VARIABLES``); a dialect whose variables depend on the set-up (a
+        controller variant's numbers) overrides it."""
+        make: VariablesFactory = type(self).VARIABLES
+        return make(increment)
 
     # -- the host protocol (postproc.interp.machine.Host) -----------------------------------------
     def spell_evaluated(self, letter: str, value: float) -> str:
@@ -202,10 +210,13 @@ class ProgramSyntax(Syntax):
                              kept_limit=ctx.setup.limits.kept_prefix)
         increment = ctx.setup.input.increment
         state = ctx.state
-        make: VariablesFactory = type(self).VARIABLES
-        variables: Variables = make(lambda: increment(state.units))
+        variables = self.variables(ctx, lambda: increment(state.units))
+        arguments: dict[int, float] | None = ctx.run_data.get(ARGUMENTS_KEY)
+        for key, value in (arguments or {}).items():
+            variables.write(key, value)  # --arg: the main program run as a macro called with them
         interpreter = Interpreter(store, self, variables, ctx.setup.limits, ctx.diagnostics.error, annotate=True,
                                   rules=self.SUBPROGRAM_RULES, counts=ctx)
+        interpreter.called = arguments is not None
         yield from interpreter.run(start=len(prefix))
 
     def _reread(self, kept: deque[Kept], ctx: Context, first_line: int) -> list[Block]:

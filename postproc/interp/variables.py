@@ -17,6 +17,24 @@ from typing import Callable, Protocol
 from ..expr import Arithmetic, EvalError, Vacancy, Value, VarKey
 
 MACHINE_ONLY = "is known only to the machine: the program cannot be simulated or flattened"
+ALARM = 3000
+"""Custom Macro B's alarm variable: ``#3000=n (MESSAGE)`` stops the machine with alarm n and the block's
+comment as its message [K: Fanuc 0i-F operator's manual, custom macro system variables; zappettiniconsulting
+.com wiki "Alarms & Timers"; Haas NGC system variables, the same #3000]."""
+
+
+class MacroAlarm(EvalError):
+    """The program raises its own alarm (``#3000=n``): the run stops there, as the machine does. Its
+    message is completed with the block's comment by the interpreter (``with_message``)."""
+
+    def __init__(self, number: float) -> None:
+        super().__init__(f"the program raises its alarm #{ALARM}={number:g}")
+
+    def with_message(self, comments: list[str]) -> "MacroAlarm":
+        """Add the alarm's message (the block's comment, as the machine shows it)."""
+        if comments:
+            self.message = f"{self.message} ({' '.join(comments)})"
+        return self
 
 FANUC_SYSTEM: tuple[tuple[int, int, str], ...] = (
     (1000, 1999, "interface signal"),
@@ -114,6 +132,8 @@ class FanucVariables:
             store = self.commons
         elif key == 0:
             raise EvalError("#0 is always vacant: it cannot be assigned")
+        elif key == ALARM and value is not None:
+            raise MacroAlarm(value)
         else:
             raise self._unknown(key)
         if value is None:

@@ -177,7 +177,8 @@ class WordBlockSyntax(Syntax):
                                                f"{num}", ctx.at(block, ctx.column_of(block, up)))
                         values[up] = int(float(num))
                         continue
-                    raise ParseError(f"address {up} takes no decimal point ({up}{num})",
+                    hint = DWELL_SECONDS_HINT if up == "P" and _dwells(codes, cycle_block) else ""
+                    raise ParseError(f"address {up} takes no decimal point ({up}{num}){hint}",
                                      ctx.at(block, ctx.column_of(block, up)))
                 values[up] = int(num)
             elif up == "F":
@@ -425,8 +426,11 @@ class WordBlockSyntax(Syntax):
                 if arg != "off" and "D" in values:
                     used.add("D")
                     register = values["D"]
-                elif (arg != "off" and "H" in values and "08" not in codes
-                      and ctx.setup.controller.cutter_h_rule()):
+                elif arg != "off" and "H" in values and "08" not in codes:
+                    if not ctx.setup.controller.cutter_h_rule():
+                        h = self._word_text(block, "H")
+                        raise ProgramError(f"G{num} takes its radius register from D, not H{h}{CUTTER_H_HINT}",
+                                           ctx.at(block, ctx.column_of(block, "H")))
                     used.add("H")  # Fanuc 0M: G42 H19 takes the radius from offset 19
                     register = values["H"]
                 block.add(CutterCompensation(arg, register))
@@ -442,6 +446,8 @@ class WordBlockSyntax(Syntax):
                 home = arg
             elif kind == "machine":
                 block.add(MachineCoordinates())
+        if "H" in values and "H" not in used and "08" not in codes:
+            self._length_register(block, ctx, values, used)
         if "CycleCall" in block.sections:
             return
         if cycle_block and "CycleCancel" not in block.sections:
@@ -490,6 +496,25 @@ class WordBlockSyntax(Syntax):
                 raise ProgramError("an arc needs a centre (I/J/K) or a radius R",
                                    ctx.at(block, _motion_col(block, ctx, codes, axes)))
         block.add(Motion(mode, {k: _real(v) for k, v in axes.items()}, center, radius))
+
+    def _length_register(self, block: Block, ctx: Context, values: dict[str, Any], used: set[str]) -> None:
+        """An offset register H without G43/G44/G49 in its block (``G53 G0 Z0 H0``): while a tool length
+        offset is in force it selects that register's offset [V: Fanuc 0i-MB operator's manual 14.1.2,
+        "independent specification of the H command"]; under G49 H0 (whose offset is always zero) leaves
+        the length offset cancelled [K: Fanuc 0i-F operator's manual, offset number 0; Haas mill operator's
+        manual, H00]; another register there takes effect only with a later G43/G44 and is refused."""
+        register = values["H"]
+        mode = ctx.state.length
+        if mode != "cancel":
+            block.add(ToolLengthOffset(mode, register))
+        elif not isinstance(register, Expr) and int(register) == 0:
+            block.add(ToolLengthOffset("cancel"))
+        else:
+            raise ProgramError(f"H{self._word_text(block, 'H')} with no tool length offset in force: a register "
+                               f"takes effect with {self.spell('length', 'positive')} or "
+                               f"{self.spell('length', 'negative')} (write it in their block)",
+                               ctx.at(block, ctx.column_of(block, "H")))
+        used.add("H")
 
     def cycle_data_letters(self, ctx: Context) -> str:
         """The addresses a hole cycle takes besides the axes and F (the family's R, Q, P and the repeat
@@ -584,6 +609,24 @@ class WordBlockSyntax(Syntax):
         """An orient code without an angle word: the angle the machine's parameters hold (the set-up's
         ``orientAngle``)."""
         block.add(SpindleOrientation(ctx.setup.cycles.orient_angle))
+
+
+DWELL_SECONDS_HINT: Final = (": a dwell P counts milliseconds; if it means seconds (Haas), set "
+                             "<Controller dwellSeconds=\"true\"/> (or variant=\"haas\") in the machine set-up")
+"""What an error about a dwell P with a decimal point adds: the set-up option under which it reads."""
+CUTTER_H_HINT: Final = ("; if the controller takes it from H (Fanuc 0M), set <Controller cutterRegisterH=\"true\"/> "
+                        "(or variant=\"fanuc-0m\") in the machine set-up")
+"""What an error about ``G42 H19`` adds: the set-up option under which it reads."""
+
+
+def _dwells(codes: dict[str, tuple[str, str, object, str]], cycle_block: bool) -> bool:
+    """The block's P is a dwell time (G04, or a hole cycle's P)."""
+    if cycle_block:
+        return True
+    for entry in codes.values():
+        if entry[1] == "dwell":
+            return True
+    return False
 
 
 def _real(value: Any) -> Any:

@@ -61,6 +61,10 @@ class ExprSpelling:
     """A statement's right-hand side may be an unbracketed binary expression (Fanuc ``#3=#1+#2``)."""
     functions_as_word_values: bool = False
     """An address may be followed directly by a function (LinuxCNC ``X SIN[30]``)."""
+    parameters: tuple[int, int] | None = None
+    """The numbered variables that exist, first and last (None: whatever the program names); a program
+    naming another (Custom Macro B's vacant ``#0``, a Fanuc tool offset ``#10100``) cannot be kept
+    symbolically for the dialect."""
     max_brackets: int = MAX_DEPTH
     """Deepest bracket nesting the controller accepts."""
     max_brackets_note: str = ""
@@ -124,9 +128,11 @@ LINUXCNC_SPELLING = ExprSpelling(
     double_hash=True,
     bare_binary=False,
     functions_as_word_values=True,
+    parameters=(1, 5601),
 )
 """LinuxCNC (interp_internal.cc ``precedence``): ``**`` above ``* / MOD`` above ``+ -`` above the
-comparisons above ``AND OR XOR``; binary expressions only inside brackets."""
+comparisons above ``AND OR XOR``; binary expressions only inside brackets. Parameters #1-#5601: rs274
+refuses ``#0`` and ``#5602`` ("Parameter number out of range") [V: rs274 run here]."""
 
 _SPACE = frozenset(" \t")
 _DIGITS = frozenset("0123456789")
@@ -470,7 +476,12 @@ class _Writer:
             return f"#<{e.name}>"
         assert e.index is not None
         if isinstance(e.index, Num) and e.index.value.is_integer() and e.index.value >= 0:
-            return f"#{int(e.index.value)}"
+            number = int(e.index.value)
+            bounds = self.sp.parameters
+            if bounds is not None and not bounds[0] <= number <= bounds[1]:
+                raise UnsupportedError(f"{self.sp.name} has no #{number} (its parameters are #{bounds[0]}-"
+                                       f"#{bounds[1]})")
+            return f"#{number}"
         return "#" + self.bracketed("", self.spell(e.index, -1, brackets + 1, True), brackets)
 
     def function_word(self, name: str) -> str | None:

@@ -58,6 +58,8 @@ def lex_block(file: str, number: int, text: str, eol: str, macro: bool = True) -
     code = text
     if "(" in code or ")" in code:
         code = _take_comments(file, block, code)
+    if ";" in code:
+        code = _end_of_block(file, number, code)
     if "/" in code:
         m = _SKIP.match(code)
         if m:
@@ -151,6 +153,22 @@ def _lex_macro(file: str, block: Block, code: str) -> list[tuple[str, str]]:
     except ExprSyntaxError as err:
         raise err.at(file, block.line) from None
     return words
+
+
+def _end_of_block(file: str, number: int, code: str) -> str:
+    """The code up to its first ``;`` (the end of block, EOB), the rest blanked out. Controls show EOB as
+    ``;`` and shop programs type it: ``G01 Z.1 M09; (Retract);`` is a block and a block holding only a
+    comment [K: Haas 96-8000 mill operator's manual, blocks printed ending `` ;`` (``N50 M99 P10 ;``); Fanuc
+    0i-F operator's manual, EOB shown as ``;``]. What follows a ``;`` on the line (comments, already taken,
+    blanks and further ``;``) may not be words: a second block on one line is refused, never run as part
+    of the first nor dropped."""
+    end = code.index(";")
+    rest = code[end + 1:]
+    for pos, ch in enumerate(rest):
+        if ch != " " and ch != "\t" and ch != ";":
+            raise ParseError("only comments may follow ';' (the end of the block) on its line: put the next "
+                             "block on a line of its own", Location(file, number, end + 2 + pos))
+    return code[:end + 1] + " " * len(rest)
 
 
 def _take_comments(file: str, block: Block, code: str) -> str:
