@@ -13,6 +13,7 @@ from postproc.api import translate
 from postproc.errors import Diagnostics, ErrorList, ErrorLevel
 from postproc.setup import ControllerSettings, MachineSetup, load_setup
 from postproc.toolpath import toolpath_events
+from tests.support.tools import with_tools
 
 HAAS = MachineSetup(controller=ControllerSettings(variant="haas"))
 
@@ -23,7 +24,8 @@ def lines(text: str) -> list[str]:
 
 def events(text: str, setup: MachineSetup | None = None, dialect: str = "fanuc") -> list[dict[str, Any]]:
     diag = Diagnostics(ErrorLevel.RAISE, warn_stream=io.StringIO())
-    return list(toolpath_events(lines(text), file="t.nc", dialect=dialect, setup=setup, diagnostics=diag))[1:]
+    return list(toolpath_events(lines(text), file="t.nc", dialect=dialect, setup=with_tools(setup),
+                                diagnostics=diag))[1:]
 
 
 def errors(text: str, setup: MachineSetup | None = None, dialect: str = "fanuc") -> list[str]:
