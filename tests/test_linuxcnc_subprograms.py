@@ -59,6 +59,9 @@ RUNS = {
     "no packed P form": "G21 G90\nM98 P00032100\nM30\nO2100\nG0 Y1\nM99\nO32100\nG0 X3\nM99\n",
     "an o-word call from the subprogram": (
         "G21 G90\nM98 P1\nM30\nO1\nG0 Y1\no2 call\nM99\no2 sub\nG0 X4\no2 endsub\n"),
+    "endsub and return set #<_value>": (
+        "G21 G90\no100 sub\no100 endsub [#1*2+1]\no101 sub\no101 return [7]\no101 endsub\n"
+        "o100 call [2]\nG0 X#<_value>\no101 call\nG0 Y#<_value>\nM30\n"),
 }
 
 

@@ -52,7 +52,9 @@ class Program:
         """Every member of an if-chain -> the chain's positions (if, elseifs, else, endif); a switch ->
         its cases and default, in order."""
         self.subs: dict[str, tuple[int, int]] = {}
-        """Subprogram name -> (position of its first body block, position of its end)."""
+        """Subprogram name -> (position of its first body block, position after its last): an
+        ``o<x> sub`` body includes its ``endsub`` (which may return a value); an ``O`` program's runs
+        to the block before the next program start or tape mark."""
         self.main_end = len(blocks)
         self.first_line = blocks[0].line if blocks else 1
         self._index(is_end)
@@ -132,7 +134,7 @@ class Program:
             name = control.name  # type: ignore[attr-defined]
             if name in self.subs:
                 raise self._error(self.blocks[at], f"subprogram {name} is defined twice")
-            self.subs[name] = (at + 1, pos)
+            self.subs[name] = (at + 1, pos + 1)  # the body runs its endsub: ``o<x> endsub [v]`` returns v
             self.pairs[at] = pos
 
     def _close(self, stack: list[tuple[Section, int]], head: type[Section], label: str, block: Block,
