@@ -66,7 +66,7 @@ SPELLINGS = [
      "o2 while [#1 LT 10.]\no2 break\no2 continue\no2 endwhile"),
     ("o3 do\no3 continue\no3 while [#1 LE 3]", "o3 do\no3 continue\no3 while [#1 LE 3.]"),
     ("o4 repeat [3]\no4 endrepeat", "o4 repeat [3.]\no4 endrepeat"),
-    ("o 1 0 0 end while", "o100 endwhile"),
+    ("o 1 0 0 while [1]\no 1 0 0 end while", "o100 while [1.]\no100 endwhile"),
     # assignments
     ("#1=5", "#1=5."),
     ("#1 = 0.50", "#1=0.5"),
