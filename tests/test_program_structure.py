@@ -4,6 +4,9 @@ malformed program with the same located error (issue #31, item 4).
 
 - Fanuc's ``WHILE [..] DOm`` and ``ENDm`` pair one to one (a DO without its END is alarm PS0124 [K]); an
   unclosed LinuxCNC ``o1 while`` was written as it was.
+- An expression a part of which is made of constants and fails (``1/0``, ``SQRT[-4]``, ``LN[0]``; Fanuc
+  alarms, rs274 "Attempt to divide by zero", "Zero or negative argument to ln") is refused where it is read,
+  not kept symbolically for the controller to alarm on (``postproc.evaluation.certain_failure``).
 - One program number, one program (Fanuc: a call could not tell two ``O2000`` apart); one ``o<n> sub``
   (rs274: "redefining sub: o|100| already defined"). LinuxCNC's ``O<n>`` .. ``M99`` may stand twice: the
   first after the call wins (``test_linuxcnc_subprograms``, "the first O after the call wins").
@@ -45,6 +48,21 @@ BAD = {
     "an unclosed o-word while": (
         "linuxcnc", "G21 G90 G0 X0 Y0 Z5\n#1=0\no1 while [#1 LT 2]\nG1 X#1 F100\n#1=[#1+1]\nM2\n",
         "in.nc:3:1: error: 'o1 while [#1 LT 2]' is never closed"),
+    "division by zero": (
+        "fanuc", "%\nO0001\nG21 G90 G0 X0 Y0 Z5.\n#1=1/0\nG1 X#1 F100.\nM30\n%\n",
+        "in.nc:4:1: error: division by zero in 1/0: it fails wherever it runs (its operands are constants)"),
+    "SQRT of a negative number": (
+        "fanuc", "%\nO0001\nG21 G90 G0 X0 Y0 Z5.\n#1=2.\nG1 X[#1+SQRT[-4]] F100.\nM30\n%\n",
+        "in.nc:5:4: error: square root of a negative number in SQRT[-4] (-4): it fails wherever it runs (its "
+        "operands are constants)"),
+    "LN of 0 in a condition": (
+        "fanuc", "%\nO0001\nG21 G90 G0 X0 Y0 Z5.\n#1=2.\nIF [LN[2-2] GT 1] GOTO 10\nN10 M30\n%\n",
+        "in.nc:5:1: error: logarithm of a number that is not positive in LN[2-2] (0): it fails wherever it runs "
+        "(its operands are constants)"),
+    "LN of 0 in LinuxCNC": (
+        "linuxcnc", "G21 G90 G0 X0 Y0 Z5\n#1=2\no1 if [LN[0] GT 1]\nG1 X#1 F100\no1 endif\nM2\n",
+        "in.nc:3:1: error: logarithm of a number that is not positive in LN[0] (0): it fails wherever it runs (its "
+        "operands are constants)"),
     "two o100 sub": (
         "linuxcnc", "o100 sub\nG0 X1\no100 endsub\no100 sub\nG0 X2\no100 endsub\nG21 G90\no100 call\nM2\n",
         "in.nc:4:1: error: subprogram 100 is defined twice"),

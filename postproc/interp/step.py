@@ -125,9 +125,9 @@ class ProgramSyntax(Syntax):
 
     # -- the stream ------------------------------------------------------------------------------
     def process(self, blocks: Iterable[Block], ctx: Context) -> Iterator[Block]:
-        """Every mode checks the program's structure as it streams (``postproc.interp.structure``): a
-        program kept symbolically is refused where its run would be (an unclosed loop, a subprogram
-        defined twice)."""
+        """Every mode checks the program's structure and expressions as it streams
+        (``postproc.interp.structure``): a program kept symbolically is refused where its run would be
+        (an unclosed loop, a subprogram defined twice, ``SQRT[-4]``)."""
         if ctx.program_mode == "keep":
             return self._checked(iter(blocks), ctx)
         return self._execute(iter(blocks), ctx)
@@ -138,10 +138,11 @@ class ProgramSyntax(Syntax):
 
     def _checked(self, blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
         check: StreamCheck | None = None
-        control, start = CONTROL, "ProgramStart"
+        control, assign, start = CONTROL, ASSIGN, "ProgramStart"
         for block in blocks:
             sections = block.sections
-            if control in sections or start in sections:
+            if control in sections or start in sections or assign in sections or (
+                    block.values and not block.canonical and _computes(block)):
                 if check is None:
                     check = self.structure_check(ctx)
                 check.see(block)
@@ -254,11 +255,11 @@ class ProgramSyntax(Syntax):
 
 
 def _sound(blocks: list[Block], check: StreamCheck) -> bool:
-    """Show the check the rest of the program, and end it: True when the structure is sound."""
-    control, start = CONTROL, "ProgramStart"
+    """Show the check the rest of the program, and end it: True when the program is sound."""
+    control, assign, start = CONTROL, ASSIGN, "ProgramStart"
     for block in blocks:
         sections = block.sections
-        if control in sections or start in sections:
+        if control in sections or start in sections or assign in sections or (block.values and _computes(block)):
             check.see(block)
     return check.end()
 

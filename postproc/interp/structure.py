@@ -7,20 +7,26 @@ and ``verify`` alike.
 ``else``, a ``break`` outside its loop, a subprogram defined twice (``o100 sub`` twice; two ``O2000`` where
 the dialect's ``SubprogramRules`` give each number one program), and, at the end, for a construct never
 closed (``WHILE [..] DO1`` without ``END1``: Fanuc's DO and END must pair one to one, alarm PS0124 [K]).
-The streaming step (``ProgramSyntax``) runs it over every program that is read; the program store
+The streaming step (``ProgramSyntax``) runs it over every program that is read, with one more check
+(``StreamCheck``): an expression a part of which fails whatever the program does (``1/0``, ``SQRT[-4]``,
+``LN[0]``, ``#1/0``: its operands constants, ``postproc.evaluation.certain_failure``) is refused where it
+is read, not kept symbolically for a controller to alarm on; the program store
 (``Program``) also keeps what it matched (``pairs``, ``chains``) to run the program. It holds only the
 open constructs and the names defined, never the blocks.
 """
 
 from __future__ import annotations
 
-from typing import Callable
+from typing import Callable, Iterator
 
 from ..control import (
-    CONTROL, Break, Case, Continue, Default, Do, DoWhile, Else, ElseIf, EndFor, EndIf, EndRepeat, EndSwitch,
-    EndWhile, For, If, Repeat, SubEnd, SubStart, Switch, Until, While,
+    ASSIGN, CONTROL, Assign, Break, Call, Case, Continue, ControlSection, Default, Do, DoWhile, Else, ElseIf,
+    EndFor, EndIf, EndRepeat, EndSwitch, EndWhile, For, If, IfThen, ModalCall, Repeat, SubEnd, SubStart, Switch,
+    Until, While,
 )
-from ..errors import PostprocError, ProgramError
+from ..errors import Location, PostprocError, ProgramError
+from ..evaluation import certain_failure
+from ..expr import Expr
 from ..ir import Block, Section, one_line
 from ..source_map import locate
 from .rules import SubprogramRules
@@ -164,17 +170,27 @@ class Structure:
 
 
 class StreamCheck:
-    """A streamed program's ``Structure``: each block with a control statement or a program start is
-    shown to it (``see``) as it passes, and the first error is reported, not raised (``report``), so the
-    rest of the program is still read; after an error nothing more is checked (what is open is unknown)."""
+    """A streamed program's ``Structure`` and expressions: each block with a control statement, an
+    assignment, a computed word or a program start is shown to it (``see``) as it passes, and errors are
+    reported, not raised (``report``), so the rest of the program is still read; after a structure error
+    the structure is not checked further (what is open is unknown)."""
 
-    __slots__ = ("structure", "report")
+    __slots__ = ("structure", "report", "failed")
 
     def __init__(self, file: str, rules: SubprogramRules, report: Callable[[PostprocError], None]) -> None:
         self.structure = Structure(file, rules)
         self.report = report
+        self.failed = False
+        """An expression fails whatever the program does."""
 
     def see(self, block: Block) -> None:
+        for expr, col in _expressions(block):
+            err = certain_failure(expr)
+            if err is not None:
+                self.failed = True
+                self.report(ProgramError(f"{err.message}: it fails wherever it runs (its operands are constants)",
+                                         Location(self.structure.file, block.line, col)))
+                break
         structure = self.structure
         if structure.failed:
             return
@@ -197,4 +213,39 @@ class StreamCheck:
                 structure.finish()
             except ProgramError as err:
                 self.report(err)
-        return not structure.failed
+        return not (structure.failed or self.failed)
+
+
+def _expressions(block: Block) -> Iterator[tuple[Expr, int]]:
+    """Every expression of ``block`` and the column it stands at (1 when not a word's)."""
+    text = block.text or ""
+    for letter, number in block.words:
+        value = block.values.get(letter.upper())
+        if isinstance(value, Expr):
+            at = text.find(letter + number)
+            yield value, at + 1 if at >= 0 else 1
+    sections = block.sections
+    assign = sections.get(ASSIGN)
+    if isinstance(assign, Assign):
+        yield from _assigned(assign)
+    control = sections.get(CONTROL)
+    if isinstance(control, ControlSection):
+        for role in control.ROLES:
+            expr = getattr(control, role)
+            if isinstance(expr, Expr):
+                yield expr, 1
+        if isinstance(control, (Call, ModalCall)):
+            if isinstance(control.name, Expr):
+                yield control.name, 1
+            for expr in control.args.values():
+                yield expr, 1
+            if control.repeat is not None:
+                yield control.repeat, 1
+        elif isinstance(control, IfThen):
+            yield from _assigned(control.assign)
+
+
+def _assigned(assign: Assign) -> Iterator[tuple[Expr, int]]:
+    for var, value in assign.items:
+        yield var, 1
+        yield value, 1
