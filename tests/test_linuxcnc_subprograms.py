@@ -62,6 +62,10 @@ RUNS = {
     "endsub and return set #<_value>": (
         "G21 G90\no100 sub\no100 endsub [#1*2+1]\no101 sub\no101 return [7]\no101 endsub\n"
         "o100 call [2]\nG0 X#<_value>\no101 call\nG0 Y#<_value>\nM30\n"),
+    "#<_value> is 0 before a call returns one, and after a return or M99 without one": (
+        "G21 G90\nG0 X[#<_value>+1] Y[#<_value_returned>+1]\no101 sub\no101 endsub [5]\no100 sub\no100 endsub\n"
+        "o101 call\nG0 X#<_value> Y#<_value_returned>\no100 call\nG0 X[#<_value>+2] Y[#<_value_returned>+2]\n"
+        "o101 call\nM98 P7\nG0 X[#<_value>+3] Y[#<_value_returned>+3]\nM30\nO7\nG0 Z1\nM99\n"),
 }
 
 

@@ -135,7 +135,8 @@ class NgcVariables:
     def __init__(self, increment: Callable[[], float]) -> None:
         self.numbered: list[dict[int, float]] = [{}]
         self.named: list[dict[str, float]] = [{}]
-        self.globals_: dict[VarKey, float] = {}
+        self.globals_: dict[VarKey, float] = {"_value": 0.0, "_value_returned": 0.0}
+        """``#<_value>`` and ``#<_value_returned>`` read 0 before any call returns (rs274)."""
         self._increment = increment
 
     @property
@@ -178,13 +179,13 @@ class NgcVariables:
 
     def leave(self, new_level: bool, value: Value = None) -> None:
         """Back in the caller: ``#<_value>`` is the returned value and ``#<_value_returned>`` says if
-        there was one (LinuxCNC 2.8+)."""
+        there was one (LinuxCNC 2.8+); a return without a value, ``M99`` too, sets both to 0 (rs274:
+        ``endsub [5]`` then a plain ``endsub`` or ``M99`` leaves ``#<_value>`` 0, not 5)."""
         if len(self.numbered) > 1:
             self.numbered.pop()
             self.named.pop()
         self.globals_["_value_returned"] = 0.0 if value is None else 1.0
-        if value is not None:
-            self.globals_["_value"] = value
+        self.globals_["_value"] = 0.0 if value is None else value
 
 
 def _spell(key: VarKey) -> str:
