@@ -124,6 +124,9 @@ class FanucVariables:
         if new_level and len(self.levels) > 1:
             self.levels.pop()
 
+    def returned(self, value: Value) -> None:
+        """Custom Macro B has no returned value."""
+
 
 class NgcVariables:
     """LinuxCNC parameters (vacancy: LinuxCNC, an unset number reads 0, an unset name is an error)."""
@@ -184,6 +187,9 @@ class NgcVariables:
         if len(self.numbered) > 1:
             self.numbered.pop()
             self.named.pop()
+        self.returned(value)
+
+    def returned(self, value: Value) -> None:
         self.globals_["_value_returned"] = 0.0 if value is None else 1.0
         self.globals_["_value"] = 0.0 if value is None else value
 
@@ -210,6 +216,11 @@ class Variables(Protocol):
     def enter(self, args: dict[int, Value], new_level: bool) -> None: ...
 
     def leave(self, new_level: bool, value: Value = None) -> None: ...
+
+    def returned(self, value: Value) -> None:
+        """A subprogram's end ran with ``value`` (None: without one), on a return or where the flow passes
+        a definition and the rules say its end runs (``SubprogramRules.definition_runs_its_end``): what
+        the program then reads of it (LinuxCNC ``#<_value>``); nothing for a family without one."""
 
 
 VariablesFactory = Callable[[Callable[[], float]], Variables]
