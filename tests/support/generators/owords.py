@@ -15,6 +15,7 @@ import math
 
 from hypothesis import strategies as st
 
+from postproc.errors import Diagnostics
 from postproc.toolpath import toolpath_events
 from tests.support.rs274 import RS274Error, available, canonical_moves, run_rs274
 
@@ -76,7 +77,8 @@ def source_agrees_with_rs274(program: str) -> None:
     if not ours:
         return  # postproc is stricter than rs274 by choice in places (an o-word left open)
     theirs = [e for e in canonical_moves(calls, start=(0.0, 0.0, 0.0)) if "move" in e]
-    here = [e for e in toolpath_events(io.StringIO(program), file="in.ngc", dialect="linuxcnc") if "move" in e]
+    here = [e for e in toolpath_events(io.StringIO(program), file="in.ngc", dialect="linuxcnc",
+                                                   diagnostics=Diagnostics(warn_stream=io.StringIO())) if "move" in e]
     assert len(here) == len(theirs), f"{len(here)} moves here, {len(theirs)} in rs274\n{program}"
     for n, (a, b) in enumerate(zip(here, theirs)):
         gap = math.dist((a["x"], a["y"], a["z"]), (b["x"], b["y"], b["z"]))
