@@ -156,8 +156,9 @@ class ProgramSyntax(Syntax):
         keep = kept.append
         seen = 0
         check: StreamCheck | None = None
-        control, assign, start = CONTROL, ASSIGN, "ProgramStart"  # locals: a compiled module looks another
-        for block in blocks:                                      # module's names up per use
+        # locals: a compiled module looks another module's names up per use
+        control, assign, start = CONTROL, ASSIGN, "ProgramStart"
+        for block in blocks:
             sections = block.sections
             if control in sections or assign in sections or (block.values and _computes(block)):
                 break
