@@ -411,6 +411,50 @@ def _finite(v: float, e: Expr) -> float:
     return v
 
 
+_NOT_CONSTANT = frozenset(("exists", "round_address"))
+"""Functions whose value depends on the run even with constant arguments (a variable's existence, the
+least input increment of the units in force)."""
+
+
+def certain_failure(expr: Expr) -> EvalError | None:
+    """The error a part of ``expr`` made of constants raises wherever and whenever it runs (``1/0``,
+    ``SQRT[-4]``, ``LN[2-2]``, ``#[1/0]``), found by folding the constants bottom up; None if none does.
+    A part that reads a variable is not folded: its value is known only when it runs."""
+    found = _fold(expr)
+    return found if isinstance(found, EvalError) else None
+
+
+_DIVISIONS = frozenset(("div", "mod_pos", "rem_int", "fmod"))
+"""Operators that fail for every dividend when the divisor is 0 (``#1/0``)."""
+_Folded = float | None | EvalError
+"""The value of a constant part, None for a part that reads a variable, or the error it raises."""
+
+
+def _fold(expr: Expr) -> _Folded:
+    if isinstance(expr, Num):
+        return expr.value
+    if isinstance(expr, Var):
+        index = _fold(expr.index) if expr.index is not None else None
+        return index if isinstance(index, EvalError) else None
+    parts = [expr.operand] if isinstance(expr, Unary) else [expr.left, expr.right] if isinstance(expr, Binary) \
+        else list(expr.args) if isinstance(expr, Func) else []
+    constant = True
+    folded: _Folded = None
+    for part in parts:
+        folded = _fold(part)
+        if isinstance(folded, EvalError):
+            return folded
+        constant = constant and folded is not None
+    if isinstance(expr, Binary) and expr.op in _DIVISIONS and folded == 0.0:
+        return _division_by_zero(expr)
+    if not constant or not parts or (isinstance(expr, Func) and expr.name in _NOT_CONSTANT):
+        return None
+    try:
+        return evaluate(expr, _CONSTANTS)
+    except EvalError as err:
+        return err
+
+
 _SYMBOLS = {
     "add": "+", "sub": "-", "mul": "*", "div": "/", "pow": "**", "mod_pos": " MOD ", "rem_int": " MOD ",
     "fmod": " MOD ",
@@ -485,3 +529,11 @@ class MappingEnv:
     def exists(self, key: VarKey) -> bool:
         """A name exists when it has a value; a number always does (LinuxCNC's rule)."""
         return not isinstance(key, str) or key in self.values
+
+
+def _division_by_zero(expr: Binary) -> EvalError:
+    return EvalError(f"division by zero in {describe(expr)}")
+
+
+_CONSTANTS = MappingEnv()
+"""The environment of a constant part (it reads no variable)."""

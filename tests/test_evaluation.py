@@ -5,12 +5,16 @@ from __future__ import annotations
 import math
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
-from postproc.evaluation import MappingEnv, TOLERANCE_EQUAL, describe, evaluate_number, var_key
+from postproc.evaluation import MappingEnv, TOLERANCE_EQUAL, certain_failure, describe, evaluate_number, var_key
 from postproc.evaluation import evaluate
 from postproc.expr import (
     BINARY_OPS, FUNCTIONS, Binary, EvalError, Expr, Func, Num, Unary, Vacancy, Var,
 )
+from postproc.rs274.expressions import FANUC_SPELLING, LINUXCNC_SPELLING
+from tests.test_rs274_expressions import trees
 
 FANUC = MappingEnv({1: 3.0, 2: -2.0, 3: 0.0, 4: 25.0}, Vacancy.FANUC)
 LCNC = MappingEnv({1: 3.0, 2: -2.0, "depth": 4.0}, Vacancy.LINUXCNC)
@@ -150,3 +154,78 @@ def test_var_key() -> None:
 def test_round_address_follows_the_increment() -> None:
     inch = MappingEnv({}, Vacancy.FANUC, increment=0.0001)
     assert evaluate(f("round_address", 1.00333), inch) == pytest.approx(1.0033)
+
+
+# -- certain_failure: what fails whatever the program does (issue #31, item 4) ---------------------------
+
+
+@pytest.mark.parametrize("expr, message", [
+    (b("div", 1.0, 0.0), "division by zero in 1/0"),
+    (Func("sqrt", [n(-4.0)]), "square root of a negative number in SQRT[-4] (-4)"),
+    (Func("ln", [b("sub", 2.0, 2.0)]), "logarithm of a number that is not positive in LN[2-2] (0)"),
+    (b("add", v(1), Func("acos", [n(2.0)])), "the argument of ACOS[2] is outside -1..1 (2)"),
+    (b("div", v(1), b("mul", 0.0, 5.0)), "division by zero in #1/[0*5]"),
+    (b("rem_int", v(1), 0.0), "division by zero in #1 MOD 0"),
+    (Var(b("div", 1.0, 0.0)), "division by zero in 1/0"),
+])
+def test_a_part_of_constants_that_fails_is_found(expr: Expr, message: str) -> None:
+    err = certain_failure(expr)
+    assert err is not None and err.message == message
+
+
+@pytest.mark.parametrize("expr", [
+    b("div", 1.0, v(1)), Func("sqrt", [v(1)]), Func("ln", [b("add", v(1), 0.0)]), b("div", 1.0, 4.0),
+    Func("exists", [Var(name="x")]), Func("round_address", [n(1.0)]),
+])
+def test_what_depends_on_the_run_is_not_refused(expr: Expr) -> None:
+    assert certain_failure(expr) is None
+
+
+def _env(values: list[float], vacancy: Vacancy) -> MappingEnv:
+    return MappingEnv({i: x for i, x in enumerate(values) if x == x}, vacancy)  # NaN: left vacant
+
+
+_VALUES = st.lists(st.one_of(st.floats(-50, 50), st.just(0.0), st.just(float("nan"))), min_size=34, max_size=34)
+
+
+@settings(max_examples=300, deadline=None)
+@given(trees(FANUC_SPELLING), _VALUES)
+def test_what_is_certain_to_fail_fails_with_any_variables(expr: Expr, values: list[float]) -> None:
+    """Sound: an expression refused as certain to fail raises whatever the variables hold (vacant ones
+    included); complete on constants: an expression with no variable is refused exactly when it fails."""
+    err = certain_failure(expr)
+    for vacancy in (Vacancy.FANUC, Vacancy.LINUXCNC):
+        try:
+            evaluate(expr, _env(values, vacancy))
+            failed = False
+        except EvalError:
+            failed = True
+        if err is not None:
+            assert failed, (describe(expr), err.message)
+        elif not _reads_variables(expr):
+            assert not failed, describe(expr)
+
+
+@settings(max_examples=150, deadline=None)
+@given(trees(LINUXCNC_SPELLING))
+def test_constants_fail_exactly_when_refused_in_linuxcnc_spelling(expr: Expr) -> None:
+    if _reads_variables(expr):
+        return
+    try:
+        evaluate(expr, MappingEnv({}, Vacancy.LINUXCNC))
+        failed = False
+    except EvalError:
+        failed = True
+    assert failed == (certain_failure(expr) is not None), describe(expr)
+
+
+def _reads_variables(expr: Expr) -> bool:
+    if isinstance(expr, Var):
+        return True
+    if isinstance(expr, Unary):
+        return _reads_variables(expr.operand)
+    if isinstance(expr, Binary):
+        return _reads_variables(expr.left) or _reads_variables(expr.right)
+    if isinstance(expr, Func):
+        return any(_reads_variables(a) for a in expr.args)
+    return False

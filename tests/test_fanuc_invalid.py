@@ -115,7 +115,7 @@ def test_error_column_is_the_offending_word(cli, tmp_path, line, message, col):
 
 
 @pytest.mark.parametrize("line", [
-    "#1=2", "#100=#1+1", "G01 X#1", "G01 X[#1+2.]", "IF [#1 GT 2] GOTO 10", "WHILE [#1 LT 3] DO 1",
+    "#1=2", "#100=#1+1", "G01 X#1", "G01 X[#1+2.]", "IF [#1 GT 2] GOTO 10", "WHILE [#1 LT 3] DO 1\nEND 1",
 ])
 def test_macro_constructs_round_trip(cli, tmp_path, line):
     """Custom Macro B is read (tests/test_fanuc_macro.py); a program kept symbolically is copied."""

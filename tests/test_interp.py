@@ -298,6 +298,18 @@ def test_o_word_call_returns_a_value():
     assert words(run(p, host=NgcLike)) == ["G0 X42.", "M2"]
 
 
+def test_o_word_endsub_returns_a_value():
+    """``o<x> endsub [v]`` returns ``v`` as ``return [v]`` does (rs274: ``o100 endsub [5]`` then
+    ``(debug, #<_value>)`` prints 5.000000); the value is read in the subprogram's own locals."""
+    p = P()
+    p(control=SubStart("<double>"))
+    p(control=SubEnd("<double>", b("mul", v(1), 2)))
+    p(control=Call("<double>", {1: Num(21.0)}, kind="macro"))
+    p(("G", "0"), ("X", Var(name="_value")))
+    p(("M", "2"))
+    assert words(run(p, host=NgcLike)) == ["G0 X42.", "M2"]
+
+
 def test_library_subprogram_is_read_through_the_dialects_reader(tmp_path):
     lib = tmp_path / "lib"
     lib.mkdir()

@@ -340,7 +340,7 @@ def test_a_local_subroutine_becomes_a_numbered_fanuc_subprogram_after_the_main_p
     assert report.ok, report.summary()
     # a main program numbered like the subroutine (known only after it): flattened, never two O2000
     out, warnings = _translate(isg.replace("%100", "%2000"), "isg", "fanuc")
-    assert "program O2000, the number given to a named subprogram" in warnings
+    assert "subprogram 2000 (its number is already given to subprogram <CORNER>)" in warnings
     assert out.count("O2000") == 1 and "G65" not in out
 
 

@@ -59,6 +59,17 @@ RUNS = {
     "no packed P form": "G21 G90\nM98 P00032100\nM30\nO2100\nG0 Y1\nM99\nO32100\nG0 X3\nM99\n",
     "an o-word call from the subprogram": (
         "G21 G90\nM98 P1\nM30\nO1\nG0 Y1\no2 call\nM99\no2 sub\nG0 X4\no2 endsub\n"),
+    "endsub and return set #<_value>": (
+        "G21 G90\no100 sub\no100 endsub [#1*2+1]\no101 sub\no101 return [7]\no101 endsub\n"
+        "o100 call [2]\nG0 X#<_value>\no101 call\nG0 Y#<_value>\nM30\n"),
+    "#<_value> is 0 before a call returns one, and after a return or M99 without one": (
+        "G21 G90\nG0 X[#<_value>+1] Y[#<_value_returned>+1]\no101 sub\no101 endsub [5]\no100 sub\no100 endsub\n"
+        "o101 call\nG0 X#<_value> Y#<_value_returned>\no100 call\nG0 X[#<_value>+2] Y[#<_value_returned>+2]\n"
+        "o101 call\nM98 P7\nG0 X[#<_value>+3] Y[#<_value_returned>+3]\nM30\nO7\nG0 Z1\nM99\n"),
+    "the flow passing a definition runs its endsub": (
+        "G21 G90\n#1=3\no100 sub\nG0 Z9\no100 endsub [#1*2]\nG0 X#<_value> Y#<_value_returned>\n"
+        "o101 sub\no101 return [7]\no101 endsub\nG0 X[#<_value>+1] Y[#<_value_returned>+1]\n"
+        "o100 call [1]\nG0 X#<_value>\nM30\n"),
 }
 
 

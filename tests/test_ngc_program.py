@@ -16,12 +16,13 @@ import io
 from pathlib import Path
 
 import pytest
-from hypothesis import given, settings
+from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
 from postproc.api import read_program, translate
 from postproc.context import Context
 from postproc.control import Assign, Call, Goto, If, IfThen, ModalCall, Return, While
+from postproc.evaluation import certain_failure
 from postproc.errors import Diagnostics, ErrorLevel, ErrorList, UnsupportedError
 from postproc.expr import Binary, Expr, Func, Num, Unary, Var
 from postproc.ir import Block
@@ -66,7 +67,7 @@ SPELLINGS = [
      "o2 while [#1 LT 10.]\no2 break\no2 continue\no2 endwhile"),
     ("o3 do\no3 continue\no3 while [#1 LE 3]", "o3 do\no3 continue\no3 while [#1 LE 3.]"),
     ("o4 repeat [3]\no4 endrepeat", "o4 repeat [3.]\no4 endrepeat"),
-    ("o 1 0 0 end while", "o100 endwhile"),
+    ("o 1 0 0 while [1]\no 1 0 0 end while", "o100 while [1.]\no100 endwhile"),
     # assignments
     ("#1=5", "#1=5."),
     ("#1 = 0.50", "#1=0.5"),
@@ -298,7 +299,9 @@ EXPRS = st.recursive(_LEAVES, _grow, max_leaves=8)
 @given(EXPRS)
 def test_generated_expressions_round_trip_through_reader_and_writer(expr: Expr) -> None:
     """An assignment and a word holding ``expr``, spelt by the writer's spelling, read back to ``expr``
-    by the reader; writing the read program again gives the same text."""
+    by the reader; writing the read program again gives the same text (an expression certain to fail,
+    ``14**269``, is refused when read: ``test_program_structure.py``)."""
+    assume(certain_failure(expr) is None)
     value = spell_word_value(expr, LINUXCNC_SPELLING)
     block = lex_block("t.ngc", 1, f"#1={value} G0 X{value}", "\n", "linuxcnc", OwordParser())
     assert block.sections["Assign"] == Assign([(V1, expr)])

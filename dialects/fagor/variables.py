@@ -64,3 +64,6 @@ class FagorVariables:
 
     def leave(self, new_level: bool, value: Value = None) -> None:
         """See ``enter``."""
+
+    def returned(self, value: Value) -> None:
+        """See ``enter``."""

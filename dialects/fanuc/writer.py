@@ -1,13 +1,15 @@
 """Fanuc writer: the RS274 word writer spelling every code from Fanuc's table (G00, M03, G04 X seconds),
 expressions and Custom Macro B statements in Fanuc's spelling, and calls as ``M98``/``G65``/``G66``.
 
-A named subprogram defined in another dialect's program (ISG ``%L SUB_CONT`` ... ``M17``, before the main
-program) becomes a numbered one after the main program's end, where Fanuc finds it: ``O2000`` ... ``M99``
-(the first free number from ``SUBPROGRAM_NUMBERS``), and its calls ``G65 P2000``/``M98 P2000``."""
+A subprogram defined in another dialect's program (ISG ``%L SUB_CONT`` ... ``M17`` before the main
+program, LinuxCNC ``o100 sub`` ... ``o100 endsub``) becomes an ``O`` program after the main program's end,
+where Fanuc finds it. Its number, for the definition and every call alike, is decided once by
+``SubprogramNames`` (``SUBPROGRAM_NAMES``): a number Fanuc can write stays (``o100`` -> ``O0100``,
+``G65 P100``), a name or a longer number gets the first free one of ``O2000``-``O7999``."""
 
 from __future__ import annotations
 
-from typing import ClassVar
+from typing import Any, ClassVar
 
 from postproc.context import Context
 from postproc.control import (
@@ -22,6 +24,7 @@ from postproc.rs274.codes import CodeTable
 from postproc.rs274.expressions import FANUC_SPELLING, ExprSpelling, spell_word_value
 from postproc.rs274.macro_b import spell_statement_fanuc
 from postproc.rs274.lathe_writer import LatheWordWriter
+from postproc.subprogram_names import NameRule, SubprogramNames
 
 from .codes import CODES
 from .lathe_codes import LATHE_CODES
@@ -45,8 +48,10 @@ class FanucWriter(LatheWordWriter):
     """G10 L2 P1-P6 sets G54-G59's offset (P0 is the external offset, which other dialects lack)."""
     WORK_OFFSET_COUNT: ClassVar[int] = 6
     SETTING_ADDS_IN_INCREMENTAL: ClassVar[bool] = True
-    SUBPROGRAM_NUMBERS: ClassVar[range] = range(2000, 8000)
-    """Program numbers given to named subprograms (below O8000, which controls often lock)."""
+    SUBPROGRAM_NAMES: ClassVar[NameRule] = NameRule(numbers=range(1, 10000), spare=range(2000, 8000), names=False)
+    """Program numbers are ``O0001``-``O9999`` (DIALECTS.md 1.1 [K]; 8 digits only on a 30i with an option);
+    a subprogram of another dialect without one gets the first free number from O2000 (below O8000,
+    which controls often lock [V])."""
     STRAIGHT_OVERRIDES: ClassVar[frozenset[str]] = frozenset({"write_block"})
     """Normalised back to Fanuc, a block of a move, its block number and feed rate is written by the base:
     this ``write_block`` captures only another dialect's named subprograms and watches none of those
@@ -57,10 +62,8 @@ class FanucWriter(LatheWordWriter):
         self.loops: list[tuple[str, Var | None, float]] = []
         """Open loops written from another dialect: (source label, counter, step) of a counted loop, or
         (label, None, 0) of a while loop; the depth is the ``DO`` number (Fanuc nests DO1-DO3)."""
-        self.numbers: dict[str, int] = {}
-        """Named subprogram -> the program number it is written as."""
-        self.programs: set[int] = set()
-        """Program numbers of the source's own programs (``O``/``%`` numbers) met so far."""
+        self.names = SubprogramNames(self.SUBPROGRAM_NAMES)
+        """Another dialect's subprogram names and program numbers -> the program numbers written."""
         self.capture: list[str] | None = None
         """The text of the named subprogram being written (it goes after the main program)."""
         self.subprograms: list[str] = []
@@ -73,12 +76,6 @@ class FanucWriter(LatheWordWriter):
         if ASSIGN in block.sections and not block.sections.keys() <= _BESIDE_A_STATEMENT:
             return self.words_then_assignment(block)
         control = block.sections.get(CONTROL)
-        start = block.sections.get("ProgramStart")
-        if start is not None and getattr(start, "number", None) is not None:
-            number = int(start.number)  # type: ignore[attr-defined]
-            if number in self.numbers.values():
-                self.unsupported(f"program O{number:04d}, the number given to a named subprogram", block)
-            self.programs.add(number)
         if self.source_dialect != self.DIALECT and isinstance(control, (SubStart, SubEnd)):
             return self.named_subprogram(control, block)
         try:
@@ -132,14 +129,17 @@ class FanucWriter(LatheWordWriter):
         return None
 
     def subprogram_number(self, name: str, block: Block) -> int:
-        number = self.numbers.get(name)
-        if number is None:
-            taken = set(self.numbers.values()) | self.programs
-            number = next((n for n in self.SUBPROGRAM_NUMBERS if n not in taken), None)
-            if number is None:
-                self.unsupported(f"the named subprogram {name} (no program number left)", block)
-            self.numbers[name] = number
-        return number
+        """The program number another dialect's subprogram ``name`` is written as (``SubprogramNames``)."""
+        try:
+            return int(self.names.of(name))
+        except UnsupportedError as err:
+            self.unsupported(err.message, block)
+
+    def program_start(self, s: Any, block: Block) -> str:
+        """Another dialect's program number as the number its calls use (``subprogram_number``)."""
+        if self.source_dialect == self.DIALECT or s.number is None:
+            return super().program_start(s, block)
+        return f"O{self.subprogram_number(str(int(s.number)), block):04d}"
 
     def finish(self) -> str:
         """The named subprograms, after the main program's end (where Fanuc looks for them)."""
@@ -229,13 +229,22 @@ class FanucWriter(LatheWordWriter):
         return words
 
     def program_number(self, name: str | Expr, code: str, block: Block) -> str:
-        if isinstance(name, Expr):
-            return _whole(name)
-        if not name.isdigit():
-            if self.source_dialect == self.DIALECT or not name.startswith("<"):
+        """The called program's number: from another dialect, the number its definition is written with."""
+        if self.source_dialect == self.DIALECT:
+            if not isinstance(name, str):
+                return _whole(name)
+            if not name.isdigit():
                 self.unsupported(f"a call of the named subprogram {name} ({code} calls program numbers)", block)
-            return str(self.subprogram_number(name, block))
-        return name
+            return name
+        if not isinstance(name, str):
+            try:
+                self.names.computed()
+            except UnsupportedError as err:
+                self.unsupported(err.message, block)
+            return _whole(name)
+        if not name.isdigit() and not name.startswith("<"):
+            self.unsupported(f"a call of the subprogram file {name} ({code} calls program numbers)", block)
+        return str(self.subprogram_number(name, block))
 
     def return_words(self, ret: Return, block: Block) -> list[str]:
         if ret.value is not None:

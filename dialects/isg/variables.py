@@ -82,6 +82,9 @@ class IsgVariables:
         if new_level and len(self.levels) > 1:
             self.levels.pop()
 
+    def returned(self, value: Value) -> None:
+        """ISG subroutines return no value."""
+
 
 def _spell(key: VarKey) -> str:
     return f"P{key - P_BASE}" if isinstance(key, int) else key

@@ -6,7 +6,10 @@ statements in ISG's spelling, ``P`` parameters for the neutral ``#501``-``#999``
   cycles): the return level and the cycle cancel of the source say nothing here and are not written,
   so Fanuc's ``G98``/``G99`` (ISG's software limit switches) and ``G80`` never reach ISG text.
 * Calls: ``LL name`` for a local subroutine (``<name>``), ``L file`` for a global one; a call with
-  arguments or a repeat count, or of a numbered program, has no ISG spelling here.
+  arguments or a repeat count has no ISG spelling here. A numbered subprogram of another dialect
+  (LinuxCNC ``o100 sub``, Fanuc ``O2000``) is refused, its definition and its calls alike
+  (``SubprogramNames``): ISG names its subroutines (``%L <name>`` [V]), and whether a name of digits
+  only is one is not confirmed [?].
 * A subroutine's end and a return are ``M17``; the definition's start is ``%L name``.
 """
 
@@ -14,12 +17,15 @@ from __future__ import annotations
 
 from typing import Any, ClassVar
 
+from postproc.context import Context
 from postproc.control import Assign, Call, Return, SubEnd, SubStart
+from postproc.dialect import Dialect
 from postproc.errors import UnsupportedError
 from postproc.expr import Expr
 from postproc.ir import Block, Section
 from postproc.rs274.codes import CodeTable
 from postproc.rs274.writer import WordWriter
+from postproc.subprogram_names import NameRule, SubprogramNames
 
 from .codes import CODES
 from postproc.isg_family.expressions import spell_expr, spell_var, spell_word_value
@@ -35,6 +41,22 @@ class IsgWriter(WordWriter):
     DIALECT: ClassVar[str] = "isg"
     CODES: ClassVar[CodeTable] = CODES
     DWELL_WORD: ClassVar[str] = "X"
+    SUBPROGRAM_NAMES: ClassVar[NameRule] = NameRule(numbers=range(0), spare=range(0), names=True)
+    """Local subroutines by name only (DIALECTS.md 1.3 [V])."""
+
+    def __init__(self, ctx: Context, source_dialect: str, target: type[Dialect] | None = None) -> None:
+        super().__init__(ctx, source_dialect, target)
+        self.names = SubprogramNames(self.SUBPROGRAM_NAMES)
+        """Another dialect's subprograms: the names written for their definitions and calls."""
+
+    def local_name(self, name: str, block: Block) -> str:
+        """The subroutine name of a definition or ``LL`` call (``SubprogramNames``, then ISG's characters)."""
+        if self.source_dialect != self.DIALECT:
+            try:
+                name = self.names.of(name)
+            except UnsupportedError as err:
+                self.unsupported(err.message, block)
+        return _local(name, block, self)
 
     def expression(self, expr: Expr, block: Block, what: str = "a computed word") -> str:
         try:
@@ -67,7 +89,7 @@ class IsgWriter(WordWriter):
             if isinstance(section, Call):
                 return self.call_words(section, block)
             if isinstance(section, SubStart):
-                return ["%L " + _local(section.name, block, self)]
+                return ["%L " + self.local_name(section.name, block)]
             if isinstance(section, SubEnd):
                 if section.value is not None:
                     self.unsupported("a subprogram end returning a value", block)
@@ -87,10 +109,8 @@ class IsgWriter(WordWriter):
             self.unsupported("a subroutine call with arguments or a repeat count", block)
         if not isinstance(call.name, str):
             self.unsupported("a call of a computed program number", block)
-        if call.name.startswith("<"):
-            return ["LL " + _local(call.name, block, self)]
-        if call.name.isdigit():
-            self.unsupported(f"a call of the numbered program {call.name} (ISG calls subroutines by name)", block)
+        if call.name.startswith("<") or call.name.isdigit():
+            return ["LL " + self.local_name(call.name, block)]
         return ["L " + call.name]
 
     def return_level_words(self, s: Any, block: Block) -> list[str]:

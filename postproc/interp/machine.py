@@ -414,7 +414,12 @@ class Interpreter:
         elif isinstance(control, EndIf):
             frame.pc += 1
         elif isinstance(control, SubStart):
-            frame.pc = program.pairs[pos] + 1  # a definition met in the flow is skipped
+            end = program.pairs[pos]  # a definition met in the flow is skipped, its end run if the rules say
+            closing = program.blocks[end].get(CONTROL)
+            if self.rules.definition_runs_its_end and isinstance(closing, SubEnd):
+                self.vars.returned(None if closing.value is None
+                                   else evaluate_number(closing.value, vars_, "a return value"))
+            frame.pc = end + 1
         elif isinstance(control, SubEnd):
             value = None if control.value is None else evaluate_number(control.value, vars_, "a return value")
             self._return(frame, block, value, None)

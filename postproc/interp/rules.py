@@ -13,6 +13,7 @@ LinuxCNC's Fanuc-style subprograms (checked with the packaged ``rs274``):
 - ``M98`` to an ``o<n> sub`` is "'O.... sub' subroutine must be called with 'O.... call'", and
   ``o<n> call`` to an ``O<n>`` "Fanuc 'O....' subroutine must be called with 'M98'".
 - ``M99`` in the main program ends it as ``M2`` does (the canonical calls are M2's).
+- The flow passing an ``o<n> sub`` definition runs its ``endsub``: ``#<_value>`` is its value, or 0.
 """
 
 from __future__ import annotations
@@ -29,6 +30,10 @@ class SubprogramRules:
     """What ``M99`` in the main program runs instead (LinuxCNC: ``M2``); None: it restarts the program."""
     main_return_refused: bool = False
     """A return in the main program is an error (a dialect whose return ends only a subroutine)."""
+    definition_runs_its_end: bool = False
+    """The flow passing an ``o<n> sub`` definition skips its body but runs its ``endsub [v]`` as a return
+    (rs274: ``o100 sub`` .. ``o100 endsub [6]`` met before any call leaves ``#<_value>`` 6 and
+    ``#<_value_returned>`` 1; a plain ``endsub`` leaves both 0)."""
 
 
 STORED_PROGRAMS = SubprogramRules(forward_search=False, main_return_words=None)

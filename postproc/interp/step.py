@@ -32,6 +32,7 @@ from .variables import FanucVariables, Variables, VariablesFactory
 
 if TYPE_CHECKING:
     from .store import Program
+    from .structure import StreamCheck
 
 ENCODING = {"encoding": "utf-8", "errors": "surrogateescape", "newline": ""}
 ARGUMENTS_KEY = "macro_arguments"
@@ -129,24 +130,51 @@ class ProgramSyntax(Syntax):
             from ..errors import ConfigError
             raise ConfigError(f"cannot read {path}: {exc.strerror}") from None
         from .store import Program
-        return Program(str(path), blocks, self.is_program_end)
+        return Program(str(path), blocks, self.is_program_end, self.SUBPROGRAM_RULES)
 
     # -- the stream ------------------------------------------------------------------------------
     def process(self, blocks: Iterable[Block], ctx: Context) -> Iterator[Block]:
+        """Every mode checks the program's structure and expressions as it streams
+        (``postproc.interp.structure``): a program kept symbolically is refused where its run would be
+        (an unclosed loop, a subprogram defined twice, ``SQRT[-4]``)."""
         if ctx.program_mode == "keep":
-            return iter(blocks)
+            return self._checked(iter(blocks), ctx)
         return self._execute(iter(blocks), ctx)
+
+    def structure_check(self, ctx: Context) -> StreamCheck:
+        from .structure import StreamCheck  # loaded by the first construct or program number
+        return StreamCheck(ctx.file, self.SUBPROGRAM_RULES, ctx.diagnostics.error)
+
+    def _checked(self, blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
+        check: StreamCheck | None = None
+        control, assign, start = CONTROL, ASSIGN, "ProgramStart"
+        for block in blocks:
+            sections = block.sections
+            if control in sections or start in sections or assign in sections or (
+                    block.values and not block.canonical and _computes(block)):
+                if check is None:
+                    check = self.structure_check(ctx)
+                check.see(block)
+            yield block
+        if check is not None:
+            check.end()
 
     def _execute(self, blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
         limit = ctx.setup.limits.kept_prefix
         kept: deque[Kept] = deque(maxlen=limit)
         keep = kept.append
         seen = 0
-        control, assign = CONTROL, ASSIGN  # locals: a compiled module looks another module's names up per use
+        check: StreamCheck | None = None
+        # locals: a compiled module looks another module's names up per use
+        control, assign, start = CONTROL, ASSIGN, "ProgramStart"
         for block in blocks:
             sections = block.sections
             if control in sections or assign in sections or (block.values and _computes(block)):
                 break
+            if start in sections:
+                if check is None:
+                    check = self.structure_check(ctx)
+                check.see(block)
             text = block.text
             eol = block.eol
             keep(text if text is None or eol == "\n" else (text, eol))  # mostly the reader's own string
@@ -154,9 +182,13 @@ class ProgramSyntax(Syntax):
             yield block
         else:
             return
+        if check is None:
+            check = self.structure_check(ctx)
         if ctx.program_mode == "auto":
             body = [block]
             body.extend(blocks)
+            if not _sound(body, check):
+                return  # its errors are reported: nothing is kept or run
             reason = self._keep_reason(body, ctx)
             if reason is None:
                 if self.RUN_BEFORE_KEEP:
@@ -166,7 +198,8 @@ class ProgramSyntax(Syntax):
             ctx.diagnostics.warn(f"the program is flattened (its evaluated motion is written): {reason}",
                                  ctx.at(block))
             block, blocks = body[0], iter(body[1:])
-        yield from self._run(block, blocks, ctx, kept, seen)
+            check = None  # checked
+        yield from self._run(block, blocks, ctx, kept, seen, check)
 
     def _check_runs(self, body: list[Block], ctx: Context, kept: deque[Kept], seen: int) -> None:
         """Run fresh copies of the program to its end, reporting the interpreter's first error (located in
@@ -192,17 +225,21 @@ class ProgramSyntax(Syntax):
         return check(self._copies(body, ctx))
 
     def _run(self, first: Block, rest: Iterator[Block], ctx: Context, kept: deque[Kept],
-             seen: int) -> Iterator[Block]:
+             seen: int, check: StreamCheck | None = None) -> Iterator[Block]:
+        """Run the program from ``first`` on; ``check``: the structure check of what streamed before it,
+        to finish on the rest (None: the rest was checked)."""
         dropped = seen - len(kept)
         prefix = self._reread(kept, ctx, first_line=first.line - len(kept))
         body = prefix + [first]
         body.extend(rest)
+        if check is not None and not _sound(body[len(prefix):], check):
+            return
         from .machine import Interpreter  # loaded only when a program computes
         from .store import Program, ProgramStore
         if ctx.diagnostics.errors:
             return  # a line was refused: what would run is not the program written, and nothing is written
         try:
-            main = Program(ctx.file, body, self.is_program_end)
+            main = Program(ctx.file, body, self.is_program_end, self.SUBPROGRAM_RULES)
         except PostprocError as err:
             ctx.diagnostics.error(err)
             return
@@ -230,6 +267,16 @@ class ProgramSyntax(Syntax):
         for block in blocks:
             block.line += offset
         return blocks
+
+
+def _sound(blocks: list[Block], check: StreamCheck) -> bool:
+    """Show the check the rest of the program, and end it: True when the program is sound."""
+    control, assign, start = CONTROL, ASSIGN, "ProgramStart"
+    for block in blocks:
+        sections = block.sections
+        if control in sections or start in sections or assign in sections or (block.values and _computes(block)):
+            check.see(block)
+    return check.end()
 
 
 def _kept_line(item: Kept) -> str:

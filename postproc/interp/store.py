@@ -14,24 +14,14 @@ from __future__ import annotations
 
 from typing import Callable
 
-from ..control import (
-    CONTROL, LABEL, Break, Case, Continue, Default, Do, DoWhile, Else, ElseIf, EndFor, EndIf, EndRepeat, EndSwitch,
-    EndWhile, For, If, Repeat, SubEnd, SubStart, Switch, Until, While,
-)
+from ..control import CONTROL, LABEL
 from ..errors import ProgramError
-from ..ir import Block, Section, one_line
+from ..ir import Block
 from ..source_map import locate
+from .rules import STORED_PROGRAMS, SubprogramRules
+from .structure import Structure, source_text
 
-_HEADS: dict[type[Section], type[Section]] = {EndWhile: While, DoWhile: Do, EndRepeat: Repeat, EndFor: For,
-                                              Until: Do}
-"""Each loop end and the head it closes."""
-_LOOPS = (While, Do, Repeat, For)
-
-
-def source_text(block: Block) -> str:
-    """The construct as written, for messages (or the block's words when it has no text)."""
-    text = one_line(block.text) if block.text is not None else " ".join(a + n for a, n in block.words)
-    return text.strip() or type(block.get(CONTROL)).__name__
+__all__ = ["Program", "ProgramStore", "source_text"]
 
 
 class Program:
@@ -40,7 +30,8 @@ class Program:
 
     __slots__ = ("file", "blocks", "sequence", "labels", "pairs", "chains", "subs", "main_end", "first_line", "ran")
 
-    def __init__(self, file: str, blocks: list[Block], is_end: Callable[[Block], bool]) -> None:
+    def __init__(self, file: str, blocks: list[Block], is_end: Callable[[Block], bool],
+                 rules: SubprogramRules = STORED_PROGRAMS) -> None:
         self.file = file
         self.blocks = blocks
         self.sequence: dict[int, list[int]] = {}
@@ -52,18 +43,22 @@ class Program:
         """Every member of an if-chain -> the chain's positions (if, elseifs, else, endif); a switch ->
         its cases and default, in order."""
         self.subs: dict[str, tuple[int, int]] = {}
-        """Subprogram name -> (position of its first body block, position of its end)."""
+        """Subprogram name -> (position of its first body block, position after its last): an
+        ``o<x> sub`` body includes its ``endsub`` (which may return a value); an ``O`` program's runs
+        to the block before the next program start or tape mark."""
         self.main_end = len(blocks)
         self.first_line = blocks[0].line if blocks else 1
         self.ran = bytearray(len(blocks))
         """1 at the position of each block that has run (a block run again is work the interpreter counts)."""
-        self._index(is_end)
+        self._index(is_end, rules)
 
     def _error(self, block: Block, message: str) -> ProgramError:
         return ProgramError(message, locate(self.file, block))
 
-    def _index(self, is_end: Callable[[Block], bool]) -> None:
-        stack: list[tuple[Section, int]] = []
+    def _index(self, is_end: Callable[[Block], bool], rules: SubprogramRules) -> None:
+        """Sequence numbers, labels and subprograms; the constructs through ``Structure`` (which
+        refuses what is malformed)."""
+        structure = Structure(self.file, rules, index=True)
         starts: list[tuple[str, int]] = []
         for pos, block in enumerate(self.blocks):
             sections = block.sections
@@ -74,17 +69,22 @@ class Program:
             if label is not None:
                 self.labels.setdefault(label.name, []).append(pos)  # type: ignore[attr-defined]
             start = sections.get("ProgramStart")
-            if start is not None and pos >= self.main_end:
+            if start is not None:
                 number, name = start.number, start.name  # type: ignore[attr-defined]
-                starts.append((str(number) if number is not None else str(name), pos))
-            if pos < self.main_end and is_end(block) and not stack:
+                if number is not None:
+                    structure.program(number, block)
+                if pos >= self.main_end:
+                    starts.append((str(number) if number is not None else str(name), pos))
+            if pos < self.main_end and is_end(block) and not structure.open:
                 self.main_end = pos + 1
             control = sections.get(CONTROL)
             if control is not None:
-                self._statement(control, pos, block, stack)
-        if stack:
-            section, pos = stack[-1]
-            raise self._error(self.blocks[pos], f"'{source_text(self.blocks[pos])}' is never closed")
+                structure.statement(control, pos, block)
+        structure.finish()
+        self.pairs = structure.pairs
+        self.chains = structure.chains
+        for name, (at, end) in structure.subs.items():
+            self.subs[name] = (at + 1, end + 1)  # the body runs its endsub: ``o<x> endsub [v]`` returns v
         for i, (name, pos) in enumerate(starts):
             end = starts[i + 1][1] if i + 1 < len(starts) else len(self.blocks)
             for p in range(pos + 1, end):
@@ -92,61 +92,6 @@ class Program:
                     end = p
                     break
             self.subs.setdefault(name, (pos + 1, end))
-
-    def _statement(self, control: Section, pos: int, block: Block, stack: list[tuple[Section, int]]) -> None:
-        if isinstance(control, (*_LOOPS, If, SubStart, Switch)):
-            stack.append((control, pos))
-            if isinstance(control, (If, Switch)):
-                self.chains[pos] = [pos]
-            return
-        kind = type(control)
-        if kind in _HEADS:
-            head, at = self._close(stack, _HEADS[kind], control.label, block)  # type: ignore[attr-defined]
-            self.pairs[at] = pos
-            self.pairs[pos] = at
-        elif kind in (ElseIf, Else, EndIf):
-            _, at = self._close(stack, If, control.label, block, pop=kind is EndIf)  # type: ignore[attr-defined]
-            chain = self.chains[at]
-            if kind is not EndIf and isinstance(self.blocks[chain[-1]].get(CONTROL), Else):
-                raise self._error(block, f"'{source_text(block)}' after the else branch")
-            chain.append(pos)
-            self.chains[pos] = chain
-        elif kind in (Case, Default, EndSwitch):
-            _, at = self._close(stack, Switch, control.label, block, pop=kind is EndSwitch)  # type: ignore[attr-defined]
-            chain = self.chains[at]
-            if kind is EndSwitch:
-                self.pairs[at] = pos
-                self.pairs[pos] = at
-                return
-            if kind is Case and isinstance(self.blocks[chain[-1]].get(CONTROL), Default):
-                raise self._error(block, f"'{source_text(block)}' after the default branch")
-            chain.append(pos)
-        elif kind in (Break, Continue):
-            label = control.label  # type: ignore[attr-defined]
-            heads = (*_LOOPS, Switch) if kind is Break else _LOOPS
-            for section, at in reversed(stack):
-                if isinstance(section, heads) and section.label == label:
-                    self.pairs[pos] = at
-                    return
-            raise self._error(block, f"'{source_text(block)}' is not inside loop {label}")
-        elif kind is SubEnd:
-            _, at = self._close(stack, SubStart, control.name, block)  # type: ignore[attr-defined]
-            name = control.name  # type: ignore[attr-defined]
-            if name in self.subs:
-                raise self._error(self.blocks[at], f"subprogram {name} is defined twice")
-            self.subs[name] = (at + 1, pos)
-            self.pairs[at] = pos
-
-    def _close(self, stack: list[tuple[Section, int]], head: type[Section], label: str, block: Block,
-               pop: bool = True) -> tuple[Section, int]:
-        if stack:
-            section, at = stack[-1]
-            name = getattr(section, "label", getattr(section, "name", None))
-            if isinstance(section, head) and name == label:
-                if pop:
-                    stack.pop()
-                return section, at
-        raise self._error(block, f"'{source_text(block)}' does not close an open {head.__name__} {label}")
 
     def find_sequence(self, number: int, after: int) -> int | None:
         """Fanuc's search: the first block numbered ``number`` after ``after``, else the first one."""

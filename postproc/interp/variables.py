@@ -156,6 +156,9 @@ class FanucVariables:
         if new_level and len(self.levels) > 1:
             self.levels.pop()
 
+    def returned(self, value: Value) -> None:
+        """Custom Macro B has no returned value."""
+
 
 class NgcVariables:
     """LinuxCNC parameters (vacancy: LinuxCNC, an unset number reads 0, an unset name is an error)."""
@@ -167,7 +170,8 @@ class NgcVariables:
     def __init__(self, increment: Callable[[], float]) -> None:
         self.numbered: list[dict[int, float]] = [{}]
         self.named: list[dict[str, float]] = [{}]
-        self.globals_: dict[VarKey, float] = {}
+        self.globals_: dict[VarKey, float] = {"_value": 0.0, "_value_returned": 0.0}
+        """``#<_value>`` and ``#<_value_returned>`` read 0 before any call returns (rs274)."""
         self._increment = increment
 
     @property
@@ -220,13 +224,16 @@ class NgcVariables:
 
     def leave(self, new_level: bool, value: Value = None) -> None:
         """Back in the caller: ``#<_value>`` is the returned value and ``#<_value_returned>`` says if
-        there was one (LinuxCNC 2.8+)."""
+        there was one (LinuxCNC 2.8+); a return without a value, ``M99`` too, sets both to 0 (rs274:
+        ``endsub [5]`` then a plain ``endsub`` or ``M99`` leaves ``#<_value>`` 0, not 5)."""
         if len(self.numbered) > 1:
             self.numbered.pop()
             self.named.pop()
+        self.returned(value)
+
+    def returned(self, value: Value) -> None:
         self.globals_["_value_returned"] = 0.0 if value is None else 1.0
-        if value is not None:
-            self.globals_["_value"] = value
+        self.globals_["_value"] = 0.0 if value is None else value
 
 
 def _spell(key: VarKey) -> str:
@@ -256,6 +263,11 @@ class Variables(Protocol):
     def enter(self, args: dict[int, Value], new_level: bool) -> None: ...
 
     def leave(self, new_level: bool, value: Value = None) -> None: ...
+
+    def returned(self, value: Value) -> None:
+        """A subprogram's end ran with ``value`` (None: without one), on a return or where the flow passes
+        a definition and the rules say its end runs (``SubprogramRules.definition_runs_its_end``): what
+        the program then reads of it (LinuxCNC ``#<_value>``); nothing for a family without one."""
 
 
 VariablesFactory = Callable[[Callable[[], float]], Variables]

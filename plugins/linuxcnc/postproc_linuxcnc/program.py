@@ -34,8 +34,10 @@ class LinuxcncProgramSyntax(ProgramSyntax):
     LIBRARY_FILES: ClassVar[tuple[str, ...]] = ("{name}.ngc",)
     PROGRAM_LABEL: ClassVar[str] = "o{raw}"
     SUBPROGRAM_RULES: ClassVar[SubprogramRules] = SubprogramRules(forward_search=True,
-                                                                  main_return_words=(("M", "2"),))
-    """rs274: M98 looks for O<n> from the call on and runs to M99; M99 in the main program is M2."""
+                                                                  main_return_words=(("M", "2"),),
+                                                                  definition_runs_its_end=True)
+    """rs274: M98 looks for O<n> from the call on and runs to M99; M99 in the main program is M2; a
+    definition met in the flow runs its endsub."""
 
     def spell_evaluated(self, letter: str, value: float) -> str:
         if letter in self.INTEGER_ADDRESSES:

@@ -7,6 +7,11 @@
 * A subprogram call sharing the caller's locals (``Call(kind="sub")``) is ``M98 P<n> [L<k>]``, alone on
   its line (rs274 refuses M98 with other words: the call is unsupported then), and a plain return
   ``M99``; a return to a block number (``M99 P``) is unsupported.
+* Another dialect's subprograms keep their numbers and names (names in lower case), decided once for the
+  definition and every call (``SubprogramNames``). rs274 runs an ``O<n>`` .. ``M99`` program only by
+  ``M98`` and an ``o<n> sub`` only by ``o<n> call`` (``postproc.interp.rules``): a Fanuc program called
+  by ``G65`` (a macro call, ``o<n> call``) is written ``o<n> sub`` .. ``o<n> endsub``, its ``M99`` as
+  ``o<n> return``; one program called both ways is unsupported.
 * Work offsets 7-9 are G59.1-G59.3; inverse-time feed is G93; M19 takes its angle as R.
 * A comment from another dialect never becomes an active one: ``( MSG, x)`` read from Fanuc or ISG is
   written ``(- MSG, x)`` (``active_comments.COMMENTS``); from LinuxCNC it is the program's own.
@@ -41,6 +46,7 @@ from postproc.rs274.codes import CodeTable
 from postproc.rs274.expressions import LINUXCNC_SPELLING, ExprSpelling
 from postproc.rs274.oword import spell_assignments, spell_oword
 from postproc.rs274.writer import WordWriter
+from postproc.subprogram_names import NameRule, SubprogramNames
 
 from .active_comments import COMMENTS
 from .codes import CODES
@@ -56,6 +62,9 @@ _COMP_LOCKED = frozenset({"ToolLengthOffset", "WorkOffset", "ReturnLevel", "Plan
 _OPENING = (While, If, Do, Repeat)
 _CLOSING = (EndWhile, EndIf, DoWhile, EndRepeat)
 _LABELLED = (*_OPENING, *_CLOSING, ElseIf, Else, Break, Continue)
+NAMES = NameRule(numbers=range(0, 2**31), spare=range(0), names=True, lower_case=True, one_kind=True)
+"""o-word numbers and ``<names>`` (rs274 lower-cases a line outside its comments); the kind of call
+fixed by the definition (``postproc.interp.rules``)."""
 
 
 class LinuxcncWriter(WordWriter):
@@ -103,8 +112,11 @@ class LinuxcncWriter(WordWriter):
         """A '%' closed the program opened with one (rs274 then needs no M2/M30)."""
         self.straight_codes_now = False
         """The main program's end was written: an ``O<n>`` now starts a subprogram."""
-        self._names: dict[str, str] = {}
-        """Lower-cased subprogram name -> the name as the source wrote it."""
+        self.names = SubprogramNames(NAMES)
+        """Another dialect's subprograms: their o-word names and how each is called."""
+        self._body: str | None = None
+        """Another dialect's numbered program being written as ``o<n> sub`` (it ends at the next program
+        start or tape mark, or at the end of the output)."""
         self._counted: dict[str, tuple[Var, float]] = {}
         """Source label of an open counted loop -> its counter and step."""
 
@@ -195,7 +207,7 @@ class LinuxcncWriter(WordWriter):
                 if section.target is not None:
                     self.unsupported("a return to a block number (M99 P: rs274 refuses it)", block)
                 self._alone("M99", block)
-                return ["M99"]
+                return ["M99"] if self._body is None else [f"o{self._body} return"]
             if isinstance(section, (For, EndFor)):
                 return self.counted_loop(section, block)
             if self.source_dialect != self.DIALECT:
@@ -227,16 +239,15 @@ class LinuxcncWriter(WordWriter):
         grow = spell_assignments(Assign([(counter, _grown(counter, step_value))]))
         return [grow + eol + spell_oword(self._relabel(EndWhile(section.label), block))]
 
-    def _lowered(self, name: str, block: Block) -> str:
-        """A subprogram name from a dialect that keeps its case (ISG ``<SUB_CONT>``) in LinuxCNC's lower
-        case (``o<sub_cont>``), unless two of the program's names differ only in case."""
-        if not (name.startswith("<") and name.endswith(">")) or name == name.lower():
-            return name
-        lowered = name.lower()
-        first = self._names.setdefault(lowered, name)
-        if first != name:
-            self.unsupported(f"subprograms {first} and {name}, whose names LinuxCNC reads as one ({lowered})", block)
-        return lowered
+    def subprogram_name(self, name: str, kind: str, what: str, block: Block) -> str:
+        """Another dialect's subprogram ``name`` as written here, for a definition or call of ``kind``
+        (``SubprogramNames``: a name in lower case; an ``o<n> sub`` only by ``o<n> call``...)."""
+        try:
+            target = self.names.use(name, kind, f"{what} on line {block.line}")
+        except UnsupportedError as err:
+            self.unsupported(err.message, block)
+        self._taken.add(target)
+        return target
 
     def _relabel(self, section: Section, block: Block) -> Section:
         """A fresh o-word label for every loop or condition translated from another dialect: LinuxCNC refuses a
@@ -244,11 +255,11 @@ class LinuxcncWriter(WordWriter):
         ``elseif``/``else`` and ``break``/``continue`` lines take the label of the construct they belong to."""
         if isinstance(section, (SubStart, SubEnd, Call)):
             if isinstance(section.name, str):
-                self._taken.add(section.name)
-                lowered = self._lowered(section.name, block)
-                if lowered != section.name:
+                what = "the call" if isinstance(section, Call) else "the definition"
+                target = self.subprogram_name(section.name, "macro", what, block)
+                if target != section.name:
                     section = copy.copy(section)
-                    section.name = lowered
+                    section.name = target
             return section
         if not isinstance(section, _LABELLED):
             return section
@@ -280,6 +291,8 @@ class LinuxcncWriter(WordWriter):
         if isinstance(name, str):
             if not name.isdigit():
                 self.unsupported(f"a call of the named subprogram {name} with M98 (it calls program numbers)", block)
+            if self.source_dialect != self.DIALECT:
+                name = self.subprogram_name(name, "sub", "the subprogram call (M98)", block)
             words = ["M98", "P" + str(int(name))]
         else:
             words = ["M98", "P" + self._count(name, block)]
@@ -303,6 +316,9 @@ class LinuxcncWriter(WordWriter):
 
     def write_block(self, block: Block) -> str | None:
         sections = block.sections
+        if self._body is not None and ("TapeMark" in sections or "ProgramStart" in sections):
+            ended = self._end_body()
+            return ended + (self.write_block(block) or "")
         if "TapeMark" in sections:
             if self._opened is False and not self._ended:
                 return self._lone_tape_mark(block)
@@ -406,10 +422,25 @@ class LinuxcncWriter(WordWriter):
         self._locked("canned-cycle retract mode", block)
         return super().return_level_words(s, block)
 
+    def _end_body(self) -> str:
+        text = f"o{self._body} endsub\n"
+        self._body = None
+        return text
+
+    def finish(self) -> str:
+        return (self._end_body() if self._body is not None else "") + super().finish()
+
     def program_start(self, s: Any, block: Block) -> str:
         """``O<n>`` after the main program's end (a subprogram start, as rs274 reads it) or from a
         LinuxCNC source; else a comment: in the flow an ``O`` line does nothing, and leaving the
-        program number out keeps a later ``M98`` from finding it."""
+        program number out keeps a later ``M98`` from finding it. Another dialect's program called by a
+        macro call (Fanuc ``G65``) starts ``o<n> sub`` instead (rs274 runs an ``O<n>`` only by ``M98``)."""
+        if s.number is not None and self._ended and self.source_dialect != self.DIALECT:
+            name = str(int(s.number))
+            if self.names.kind(name) == "macro":
+                self._body = self.subprogram_name(name, "macro", "the definition", block)
+                return f"o{self._body} sub"
+            return "O" + self.subprogram_name(name, "sub", "the definition", block)
         if s.number is not None and (self._ended or self.source_dialect == self.DIALECT):
             return f"O{int(s.number)}"
         name = f"O{int(s.number):04d}" if s.number is not None else str(s.name)
