@@ -370,12 +370,14 @@ class LinuxcncWriter(WordWriter):
         it ("File ended with no percent sign or program end"; LinuxCNC's G-code overview says a file ends
         with a program end or lies between two ``%`` lines [V, rs274 2.9]). The program ends there, so M2
         is written (with a warning), and a ``%`` after it where one opened the program. A LinuxCNC source
-        is written back as it is (lossless: it is the user's own file)."""
+        is written back as it is (lossless: it is the user's own file). A subprogram body written as
+        ``o<n> sub`` (a macro call's) still open at the end is closed first."""
+        closing = self._end_body() if self._body is not None else ""
         if self._ended or self._closed or self._failed() or self.source_dialect == self.DIALECT:
-            return ""
+            return closing
         self.ctx.diagnostics.warn("the program has no end (M2/M30): M2 written after its last block, as LinuxCNC "
                                   "refuses a program that runs out", Location(self.ctx.file, max(self.last_line, 1)))
-        return self._end(self.last_line) + ("%\n" if self._opened else "")
+        return closing + self._end(self.last_line) + ("%\n" if self._opened else "")
 
     def _end(self, line: int) -> str:
         """The program end a source without one gets (M2: an end that does not rewind)."""
@@ -426,9 +428,6 @@ class LinuxcncWriter(WordWriter):
         text = f"o{self._body} endsub\n"
         self._body = None
         return text
-
-    def finish(self) -> str:
-        return (self._end_body() if self._body is not None else "") + super().finish()
 
     def program_start(self, s: Any, block: Block) -> str:
         """``O<n>`` after the main program's end (a subprogram start, as rs274 reads it) or from a
