@@ -136,10 +136,12 @@ class FanucWriter(LatheWordWriter):
             self.unsupported(err.message, block)
 
     def program_start(self, s: Any, block: Block) -> str:
-        """Another dialect's program number as the number its calls use (``subprogram_number``)."""
+        """Another dialect's program number as the number its calls use (``subprogram_number``); a name it
+        had follows as a comment, as the base writes it."""
         if self.source_dialect == self.DIALECT or s.number is None:
             return super().program_start(s, block)
-        return f"O{self.subprogram_number(str(int(s.number)), block):04d}"
+        text = f"O{self.subprogram_number(str(int(s.number)), block):04d}"
+        return text + " " + self.comment(str(s.name)) if s.name else text
 
     def finish(self) -> str:
         """The named subprograms, after the main program's end (where Fanuc looks for them)."""
