@@ -473,6 +473,10 @@ class _Writer:
         if e.name is not None:
             if not self.sp.named_variables:
                 raise UnsupportedError(f"{self.sp.name} has no named variables (#<{e.name}>)")
+            if not e.name or not _NAME_CHARS.issuperset(e.name):
+                # the reader's rule read the other way: another dialect's name (ISG V.L.X) is no such name
+                raise UnsupportedError(f"{self.sp.name} names a variable with letters, digits and _ only, not "
+                                       f"{e.name!r}")
             return f"#<{e.name}>"
         assert e.index is not None
         if isinstance(e.index, Num) and e.index.value.is_integer() and e.index.value >= 0:

@@ -23,11 +23,12 @@ from postproc.toolpath import toolpath_events
 from tests.support.fuzzing import check_toolpath, check_translation, located
 from tests.support.generators import Case
 from tests.support.rs274 import RS274Error, available, canonical_moves, run_rs274
+from tests.support.tools import with_tools
 
 KIND = "isg declarations and arithmetic"
 
 NBSP = "\u00a0"
-SETUP = MachineSetup()
+SETUP = with_tools()
 ANGLES = [0, 30, 45, 60, 90, 120, 135, 180, 225, 270, 300, 360, 450, 540, 720, -30, -90, -180, -270, -360]
 TYPES = ["", " : REAL64", " : REAL", " : BOOLEAN", " : SGN08", " : UNS08", " : SGN16", " : UNS16", " : SGN32",
          " : UNS32", " : STRING[20]"]

@@ -24,6 +24,7 @@ from tests.support.fuzzing import check_translation, located
 from tests.support.rs274 import RS274Error, available, canonical_moves, run_rs274
 
 from . import Case
+from tests.support.tools import with_tools
 
 KIND = "macros"
 TARGETS = ("fanuc", "linuxcnc", "isg", "grbl", "mach3", "fagor")
@@ -154,7 +155,7 @@ def check(source: str, target: str, program: str) -> str:
     A source that fails when it runs (a vacant common variable divides, a program is missing: on the
     machine, ``#500``-``#999`` may hold values from before) may be kept symbolically: its output must
     then only read back in the target."""
-    setup = MachineSetup()
+    setup = with_tools()
     if not runs(source, program):
         return reads_back(source, target, program)
     result = check_translation(source, target, program, setup, warn=False)

@@ -15,6 +15,7 @@ from postproc.setup import InputSettings, MachineSettings, MachineSetup
 
 from ..fuzzing import REGISTRY, WRITERS, check_translation
 from . import Case
+from tests.support.tools import with_tools
 
 KIND = "program ends and lathe cycles"
 
@@ -85,7 +86,7 @@ def end_cases() -> st.SearchStrategy[Case]:
         body = LATHE_HEAD.format(s="S500") + "G01 Z-10. F0.2\n" if lathe else MILL_BODY[source]
         starts = [s for s in STARTS if source != "fagor" or "(" not in s]
         program = draw(st.sampled_from(starts)) + body + draw(st.sampled_from(ENDS))
-        return _case(f"ends {source}-{target}", source, target, program, LATHE if lathe else MachineSetup(),
+        return _case(f"ends {source}-{target}", source, target, program, LATHE if lathe else with_tools(),
                      draw(st.booleans()))
     return build()
 

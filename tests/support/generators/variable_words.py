@@ -26,6 +26,7 @@ from postproc.api import read_program
 from postproc.errors import ErrorList
 from postproc.ir import Block
 from postproc.setup import MachineSetup, load_setup
+from tests.support.tools import with_tools
 
 from ..fuzzing import WRITERS, check_translation
 from ..section_types import mistyped
@@ -161,7 +162,7 @@ def _case(draw: st.DrawFn) -> Case:
     program = draw(programs(kind))
     warn = draw(st.booleans())
     source, lathe = kind.split()[0], kind.endswith("lathe")
-    setup = load_setup(LATHE_SETUP) if lathe else MachineSetup()
+    setup = load_setup(LATHE_SETUP) if lathe else with_tools()  # every register has a (zero) value
     return Case(f"variable words {kind}-{target}", target, program,
                 lambda p: _check(source, target, p, setup, warn), setup)
 
