@@ -146,6 +146,8 @@ class WordWriter(Writer):
         """``<Output addressDecimals>``: address -> places it is rounded to (mm, inch programs)."""
         self.rounding = bool(self.mm_places or self.inch_places)
         self.rounded_warned: set[str] = set()
+        self.named_numbered = False
+        """A named program's start was written with ``UNNAMED_PROGRAM_NUMBER`` (a second one is a comment)."""
         self.at_block: Block | None = None
         self.normalize = out.normalize or bool(renumber) or self.rounding
         """Renumbering and decimals per address rewrite the words, so they imply normalising."""
@@ -711,9 +713,15 @@ class WordWriter(Writer):
     def program_start(self, s: Any, block: Block) -> str:
         """``O`` and the program's number; a named program (ISG/Fagor ``%name``) takes the number the set-up
         or ``--program-number`` gives, else ``O0001`` with a warning, and its name follows as a comment (a
-        comment on the ``O`` line is how Fanuc shows a program's name in its directory [K])."""
+        comment on the ``O`` line is how Fanuc shows a program's name in its directory [K]). A later named
+        start, which the source runs through, is its name as a comment."""
         number = s.number
+        if number is None and self.named_numbered:
+            # another program start in the flow (an ISG file with a second %name runs on through it): a
+            # second O0001 would be a second program with the same number, which Fanuc refuses
+            return self.comment(str(s.name))
         if number is None:
+            self.named_numbered = True
             number = UNNAMED_PROGRAM_NUMBER
             self.ctx.diagnostics.warn(
                 f"the program {s.name!r} has no number in the {self.DIALECT} dialect: written as "
