@@ -38,7 +38,7 @@ import time
 import tomllib
 import traceback
 from collections import Counter
-from dataclasses import asdict, dataclass
+from dataclasses import asdict, dataclass, field
 from pathlib import Path
 from typing import Callable, Iterable
 
@@ -91,6 +91,8 @@ class Outcome:
     """A refusal's capability or a FAILURE's kind."""
     detail: str = ""
     seconds: float = 0.0
+    blockers: list[str] = field(default_factory=list)
+    """A refusal's distinct capabilities (every error's, not only the first's)."""
 
 
 def load_manifest(path: Path = MANIFEST) -> list[Program]:
@@ -134,12 +136,16 @@ def _source(program: Program) -> str:
     return (CORPUS / program.path).read_bytes().decode("utf-8", "surrogateescape")
 
 
-def capability(message: str) -> str:
-    """A refusal's message with its particulars (the target's name, numbers, quoted words) taken out, for
-    grouping across targets."""
-    text = re.sub(r"^the \w+ dialect ", "the target ", message)
+def capability(message: str, target: str = "") -> str:
+    """A refusal's message with its particulars taken out (the target's name, values, quoted words; the
+    G and M codes stay), for grouping across targets and programs."""
+    text = re.sub(r"\(in [^()]*, called from [^()]*\)", "", message)
+    if target:
+        text = re.sub(rf"\bthe {target} dialect\b", "the target", text)
+        text = re.sub(rf"\b(in|to) {target}\b", r"\1 the target", text)
     text = re.sub(r"'[^']*'|\"[^\"]*\"|`[^`]*`", "'…'", text)
-    return re.sub(r"-?\d+(\.\d+)?", "N", text)
+    text = re.sub(r"\b([A-FH-LN-Z])-?\d+(\.\d*)?", r"\1n", text)
+    return re.sub(r"(?<![\w.])-?\d+(\.\d+)?", "n", text).strip()
 
 
 def _errors_outcome(program: Program, target: str, errors: list[object]) -> Outcome:
@@ -150,7 +156,8 @@ def _errors_outcome(program: Program, target: str, errors: list[object]) -> Outc
     if any(getattr(e, "location", None) is None for e in errors):
         return Outcome(program.path, target, FAILURE, "unlocated error", detail)
     if all(isinstance(e, UnsupportedError) for e in errors):
-        return Outcome(program.path, target, REFUSED, capability(getattr(first, "message", str(first))), detail)
+        return Outcome(program.path, target, REFUSED, capability(getattr(first, "message", str(first)), target),
+                       detail, blockers=sorted({capability(getattr(e, "message", str(e)), target) for e in errors}))
     assert where is not None
     return Outcome(program.path, target, FAILURE, "translation refused the source", detail)
 
@@ -318,21 +325,34 @@ def matrix(programs: list[Program], pairs: list[Outcome]) -> str:
 
 
 def triage(outcomes: list[Outcome]) -> str:
-    """Refusals and failures grouped by capability or kind, most pairs first, with the dialects."""
-    groups: dict[tuple[str, str], list[Outcome]] = {}
-    for o in outcomes:
-        if o.kind in (REFUSED, FAILURE):
-            groups.setdefault((o.kind, o.category if o.kind == REFUSED else o.category), []).append(o)
+    """Failures by kind, then refusals by capability: the pairs each blocks and the pairs it alone
+    blocks (those a fix would gain), most first, with the targets."""
     lines = []
-    for (kind, category), members in sorted(groups.items(), key=lambda kv: -len(kv[1])):
-        targets_ = Counter(o.target or "(source)" for o in members)
-        where = ", ".join(f"{t} {n}" for t, n in sorted(targets_.items()))
-        lines.append(f"{len(members):4} {kind:8} {category}  [{where}]")
-        if kind == FAILURE:
-            for o in members[:3]:
-                first = o.detail.strip().splitlines()[-1 if o.category == "internal error" else 0] if o.detail else ""
-                lines.append(f"       {o.program} -> {o.target or '(source)'}: {first[:160]}")
+    failures: dict[str, list[Outcome]] = {}
+    for o in outcomes:
+        if o.kind == FAILURE:
+            failures.setdefault(o.category, []).append(o)
+    for category, members in sorted(failures.items(), key=lambda kv: -len(kv[1])):
+        lines.append(f"{len(members):4} FAILURE  {category}  [{_targets(members)}]")
+        for o in members[:4]:
+            text = o.detail.strip().splitlines() if o.detail else [""]
+            first = text[-1] if o.category == "internal error" else text[0]
+            lines.append(f"       {o.program} -> {o.target or '(source)'}: {first[:150]}")
+    refusals: dict[str, list[Outcome]] = {}
+    for o in outcomes:
+        if o.kind == REFUSED:
+            for blocker in o.blockers or [o.category]:
+                refusals.setdefault(blocker, []).append(o)
+    ranked = sorted(refusals.items(), key=lambda kv: (-sum(len(o.blockers) <= 1 for o in kv[1]), -len(kv[1])))
+    for blocker, members in ranked:
+        alone = sum(len(o.blockers) <= 1 for o in members)
+        lines.append(f"{len(members):4} refused  (alone in {alone}) {blocker}  [{_targets(members)}]")
     return "\n".join(lines)
+
+
+def _targets(members: list[Outcome]) -> str:
+    counts = Counter(o.target or "(source)" for o in members)
+    return ", ".join(f"{t} {n}" for t, n in sorted(counts.items()))
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -357,7 +377,7 @@ def main(argv: list[str] | None = None) -> int:
     notes = [o for o in sources if o.detail and o.kind == OK]
     for o in notes:
         print(f"note: {o.program}: {o.detail}")
-    print("\ntriage (pairs, kind, capability or failure, [targets]):")
+    print("\ntriage (pairs, kind, failure or capability, [pairs per target]):")
     print(triage(sources + pairs))
     if args.details:
         for o in sources + pairs:
