@@ -152,7 +152,9 @@ def _errors_outcome(program: Program, target: str, errors: list[object]) -> Outc
     from postproc.errors import UnsupportedError
     first = errors[0]
     where = getattr(first, "location", None)
-    detail = "\n".join(str(e) for e in errors[:5])
+    # the errors that are no refusal first (they decide the outcome), each with its kind
+    ordered = sorted(errors, key=lambda e: isinstance(e, UnsupportedError))
+    detail = "\n".join(f"{e} [{type(e).__name__}]" for e in ordered[:5])
     if any(getattr(e, "location", None) is None for e in errors):
         return Outcome(program.path, target, FAILURE, "unlocated error", detail)
     if all(isinstance(e, UnsupportedError) for e in errors):
@@ -265,7 +267,9 @@ def run_tasks(tasks: Iterable[Task], jobs: int = 2, timeout: float = TIMEOUT_S,
             process.start()
             send.close()
             running[receive] = (process, task, time.monotonic())
-        for conn in multiprocessing.connection.wait(list(running), timeout=0.2):
+        first_deadline = min(started + timeout for _, _, started in running.values())
+        wait = max(0.0, min(0.2, first_deadline - time.monotonic()))
+        for conn in multiprocessing.connection.wait(list(running), timeout=wait):
             process, task, started = running.pop(conn)  # type: ignore[arg-type]
             try:
                 results.append(conn.recv())  # type: ignore[union-attr]
@@ -277,7 +281,7 @@ def run_tasks(tasks: Iterable[Task], jobs: int = 2, timeout: float = TIMEOUT_S,
             process.join()
         now = time.monotonic()
         for conn, (process, task, started) in list(running.items()):
-            if now - started > timeout:
+            if now - started >= timeout:
                 process.kill()
                 process.join()
                 del running[conn]
@@ -360,11 +364,11 @@ def main(argv: list[str] | None = None) -> int:
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--jobs", type=int, default=2, help="processes at once (default 2)")
     parser.add_argument("--timeout", type=float, default=TIMEOUT_S, help="seconds per pair (default 120)")
-    parser.add_argument("--only", default="", help="only programs whose path contains this text")
+    parser.add_argument("--only", default="", help="only programs whose path matches this regular expression")
     parser.add_argument("--json", help="write every outcome to this file")
     parser.add_argument("--details", action="store_true", help="print every refusal's and failure's message")
     args = parser.parse_args(argv)
-    programs = [p for p in load_manifest() if args.only in p.path]
+    programs = [p for p in load_manifest() if re.search(args.only, p.path)]
     started = time.monotonic()
     sources, pairs = run_corpus(programs, args.jobs, args.timeout)
     print(matrix(programs, pairs))
