@@ -96,6 +96,9 @@ class Outcome:
 
 
 def load_manifest(path: Path = MANIFEST) -> list[Program]:
+    """The programs a manifest lists; their paths (and set-ups) are taken relative to its folder."""
+    global CORPUS
+    CORPUS = path.resolve().parent
     with open(path, "rb") as f:
         data = tomllib.load(f)
     return [Program(**{k: v for k, v in entry.items() if k in Program.__dataclass_fields__})
@@ -142,10 +145,10 @@ def capability(message: str, target: str = "") -> str:
     text = re.sub(r"\(in [^()]*, called from [^()]*\)", "", message)
     if target:
         text = re.sub(rf"\bthe {target} dialect\b", "the target", text)
-        text = re.sub(rf"\b(in|to) {target}\b", r"\1 the target", text)
+        text = re.sub(rf"\b(in|to|for) {target}\b", r"\1 the target", text)
     text = re.sub(r"'[^']*'|\"[^\"]*\"|`[^`]*`", "'…'", text)
-    text = re.sub(r"\b([A-FH-LN-Z])-?\d+(\.\d*)?", r"\1n", text)
-    return re.sub(r"(?<![\w.])-?\d+(\.\d+)?", "n", text).strip()
+    text = re.sub(r"\b([A-FH-LN-Za-fh-ln-z])-?\d+(\.\d*)?", r"\1n", text)
+    return re.sub(r"(?<![\w.])-?\d+(\.\d+)?(?!\w)", "n", text).strip()
 
 
 def _errors_outcome(program: Program, target: str, errors: list[object]) -> Outcome:
@@ -347,10 +350,18 @@ def triage(outcomes: list[Outcome]) -> str:
         if o.kind == REFUSED:
             for blocker in o.blockers or [o.category]:
                 refusals.setdefault(blocker, []).append(o)
-    ranked = sorted(refusals.items(), key=lambda kv: (-sum(len(o.blockers) <= 1 for o in kv[1]), -len(kv[1])))
-    for blocker, members in ranked:
-        alone = sum(len(o.blockers) <= 1 for o in members)
-        lines.append(f"{len(members):4} refused  (alone in {alone}) {blocker}  [{_targets(members)}]")
+    refused = [o for o in outcomes if o.kind == REFUSED]
+    fixed: set[str] = set()
+    gained = 0
+    while len(fixed) < len(refusals):
+        # the capability whose fix, with those above it, frees the most refused pairs
+        def freed(blocker: str) -> int:
+            return sum(set(o.blockers or [o.category]) <= fixed | {blocker} for o in refused)
+        best = max((b for b in refusals if b not in fixed), key=lambda b: (freed(b), len(refusals[b]), b))
+        now = freed(best)
+        fixed.add(best)
+        lines.append(f"{len(refusals[best]):4} refused  +{now - gained:<3} {best}  [{_targets(refusals[best])}]")
+        gained = now
     return "\n".join(lines)
 
 
@@ -364,11 +375,13 @@ def main(argv: list[str] | None = None) -> int:
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--jobs", type=int, default=2, help="processes at once (default 2)")
     parser.add_argument("--timeout", type=float, default=TIMEOUT_S, help="seconds per pair (default 120)")
+    parser.add_argument("--manifest", type=Path, default=MANIFEST,
+                        help="another manifest (default tests/corpus/corpus.toml); paths are relative to its folder")
     parser.add_argument("--only", default="", help="only programs whose path matches this regular expression")
     parser.add_argument("--json", help="write every outcome to this file")
     parser.add_argument("--details", action="store_true", help="print every refusal's and failure's message")
     args = parser.parse_args(argv)
-    programs = [p for p in load_manifest() if re.search(args.only, p.path)]
+    programs = [p for p in load_manifest(args.manifest) if re.search(args.only, p.path)]
     started = time.monotonic()
     sources, pairs = run_corpus(programs, args.jobs, args.timeout)
     print(matrix(programs, pairs))
@@ -381,7 +394,8 @@ def main(argv: list[str] | None = None) -> int:
     notes = [o for o in sources if o.detail and o.kind == OK]
     for o in notes:
         print(f"note: {o.program}: {o.detail}")
-    print("\ntriage (pairs, kind, failure or capability, [pairs per target]):")
+    print("\ntriage: failures by kind; then refusals by capability, ranked by the pairs each fix gains with the "
+          "fixes above it (+n), with the pairs it blocks and [pairs per target]:")
     print(triage(sources + pairs))
     if args.details:
         for o in sources + pairs:
