@@ -31,6 +31,7 @@ import io
 import json
 import multiprocessing
 import multiprocessing.connection
+from multiprocessing.process import BaseProcess
 import os
 import re
 import sys
@@ -40,7 +41,7 @@ import traceback
 from collections import Counter
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
-from typing import Callable, Iterable
+from typing import Callable, Iterable, cast
 
 ROOT = Path(__file__).resolve().parents[1]
 if str(ROOT) not in sys.path:
@@ -260,8 +261,8 @@ def run_tasks(tasks: Iterable[Task], jobs: int = 2, timeout: float = TIMEOUT_S,
     if not fork:
         return [_do(task) for task in tasks]
     context = multiprocessing.get_context("fork")
-    pending, results = list(tasks), []
-    running: dict[multiprocessing.connection.Connection, tuple[multiprocessing.process.BaseProcess, Task, float]] = {}
+    pending, results = list(tasks), list[Outcome]()
+    running: dict[multiprocessing.connection.Connection, tuple[BaseProcess, Task, float]] = {}
     while pending or running:
         while pending and len(running) < jobs:
             task = pending.pop(0)
@@ -272,10 +273,11 @@ def run_tasks(tasks: Iterable[Task], jobs: int = 2, timeout: float = TIMEOUT_S,
             running[receive] = (process, task, time.monotonic())
         first_deadline = min(started + timeout for _, _, started in running.values())
         wait = max(0.0, min(0.2, first_deadline - time.monotonic()))
-        for conn in multiprocessing.connection.wait(list(running), timeout=wait):
-            process, task, started = running.pop(conn)  # type: ignore[arg-type]
+        for ready in multiprocessing.connection.wait(list(running), timeout=wait):
+            conn = cast(multiprocessing.connection.Connection, ready)
+            process, task, started = running.pop(conn)
             try:
-                results.append(conn.recv())  # type: ignore[union-attr]
+                results.append(cast(Outcome, conn.recv()))
             except EOFError:
                 process.join()
                 results.append(Outcome(task[0].path, task[1], FAILURE, "internal error",
@@ -283,10 +285,10 @@ def run_tasks(tasks: Iterable[Task], jobs: int = 2, timeout: float = TIMEOUT_S,
                                        time.monotonic() - started))
             process.join()
         now = time.monotonic()
-        for conn, (process, task, started) in list(running.items()):
+        for conn, (late, task, started) in list(running.items()):
             if now - started >= timeout:
-                process.kill()
-                process.join()
+                late.kill()
+                late.join()
                 del running[conn]
                 results.append(Outcome(task[0].path, task[1], FAILURE, "timeout", f"over {timeout:g} s", now - started))
     return results
