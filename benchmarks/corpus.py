@@ -267,10 +267,10 @@ def run_tasks(tasks: Iterable[Task], jobs: int = 2, timeout: float = TIMEOUT_S,
         while pending and len(running) < jobs:
             task = pending.pop(0)
             receive, send = context.Pipe(duplex=False)
-            process = context.Process(target=_child, args=(task, send))
-            process.start()
+            child = context.Process(target=_child, args=(task, send))
+            child.start()
             send.close()
-            running[receive] = (process, task, time.monotonic())
+            running[receive] = (child, task, time.monotonic())
         first_deadline = min(started + timeout for _, _, started in running.values())
         wait = max(0.0, min(0.2, first_deadline - time.monotonic()))
         for ready in multiprocessing.connection.wait(list(running), timeout=wait):
