@@ -19,8 +19,9 @@ A pair ends in one of four ways:
 The share the issue asks for is ok / (pairs - excused).
 
     .venv/bin/python benchmarks/corpus.py                 # the whole corpus, 2 processes
-    .venv/bin/python benchmarks/corpus.py --only fanuc/   # programs whose path contains 'fanuc/'
+    .venv/bin/python benchmarks/corpus.py --only fanuc/   # programs whose path matches 'fanuc/'
     .venv/bin/python benchmarks/corpus.py --json out.json # every outcome, for a script
+    .venv/bin/python benchmarks/corpus.py --manifest DIR/corpus.toml   # another folder of programs
 """
 
 from __future__ import annotations
@@ -32,7 +33,6 @@ import json
 import multiprocessing
 import multiprocessing.connection
 from multiprocessing.process import BaseProcess
-import os
 import re
 import sys
 import time
@@ -41,7 +41,10 @@ import traceback
 from collections import Counter
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
-from typing import Callable, Iterable, cast
+from typing import TYPE_CHECKING, Callable, Iterable, cast
+
+if TYPE_CHECKING:
+    from postproc.setup import MachineSetup
 
 ROOT = Path(__file__).resolve().parents[1]
 if str(ROOT) not in sys.path:
@@ -61,8 +64,9 @@ large enough that a cutter compensation lost or applied on the wrong side is see
 OK, REFUSED, EXCUSED, FAILURE = "ok", "refused", "excused", "FAILURE"
 FAILURE_KINDS = ("internal error", "timeout", "verify failed", "invalid output", "unlocated error",
                  "source refused", "translation refused the source")
-"""What a FAILURE can be; the first four fail ``tests/test_corpus.py``, the rest are readers refusing
-input the manifest says is valid (each is listed in the triage)."""
+"""What a FAILURE can be: the first five are defects of the translation (this script's exit status is 1
+for them), the last two a reader or the simulator refusing a source the manifest says is valid.
+``tests/test_corpus.py`` fails on any of them that it does not list as a known defect."""
 BLOCKING = FAILURE_KINDS[:5]
 
 
@@ -71,14 +75,17 @@ class Program:
     """One corpus program as the manifest describes it."""
 
     path: str
-    """Relative to tests/corpus/."""
+    """Relative to the manifest's folder (tests/corpus/)."""
     dialect: str
     machine: str
     """``mill`` or ``lathe``: the targets are the dialects that write programs for this machine type."""
     setup: str = ""
-    """A set-up file relative to tests/corpus/, or to the repository when it starts with examples/ (default: the default set-up, or a lathe's for a lathe)."""
+    """A set-up file relative to the manifest's folder, or to the repository when it starts with
+    ``examples/`` (default: the default set-up, or ``examples/setups/fanuc_0i_tf.xml`` for a lathe)."""
     excused: str = ""
     """Why the source itself cannot run, or ''."""
+    folder: str = str(CORPUS)
+    """The manifest's folder (set when it is read, not written in it)."""
 
 
 @dataclass
@@ -98,11 +105,10 @@ class Outcome:
 
 def load_manifest(path: Path = MANIFEST) -> list[Program]:
     """The programs a manifest lists; their paths (and set-ups) are taken relative to its folder."""
-    global CORPUS
-    CORPUS = path.resolve().parent
     with open(path, "rb") as f:
         data = tomllib.load(f)
-    return [Program(**{k: v for k, v in entry.items() if k in Program.__dataclass_fields__})
+    fields = set(Program.__dataclass_fields__) - {"folder"}
+    return [Program(**{k: v for k, v in entry.items() if k in fields}, folder=str(path.resolve().parent))
             for entry in data["program"]]
 
 
@@ -119,11 +125,13 @@ def targets(program: Program) -> list[str]:
 
 # -- one pair ---------------------------------------------------------------------------------------
 
-def _setup(program: Program):  # type: ignore[no-untyped-def]
+def _setup(program: Program) -> MachineSetup:
+    """The program's set-up with a tool table in which every length and radius register has a value."""
     from postproc.setup import MachineSetup, load_setup
     from tests.support.tools import REGISTERS, with_tools
     if program.setup:
-        base = load_setup(ROOT / program.setup if program.setup.startswith("examples/") else CORPUS / program.setup)
+        folder = ROOT if program.setup.startswith("examples/") else Path(program.folder)
+        base = load_setup(folder / program.setup)
     elif program.machine == "lathe":
         base = load_setup(ROOT / "examples" / "setups" / "fanuc_0i_tf.xml")
     else:
@@ -137,7 +145,7 @@ def _lines(text: str) -> list[str]:
 
 
 def _source(program: Program) -> str:
-    return (CORPUS / program.path).read_bytes().decode("utf-8", "surrogateescape")
+    return (Path(program.folder) / program.path).read_bytes().decode("utf-8", "surrogateescape")
 
 
 def capability(message: str, target: str = "") -> str:
