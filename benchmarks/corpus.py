@@ -6,7 +6,9 @@ A pair ends in one of four ways:
 
 * ``ok``: translated (``--on-unsupported error``) and ``verify`` passes without ``--allow-ignored``, and
   a grbl or LinuxCNC output passes its controller's own rules (``tests/support/grbl_rules.py``; rs274
-  where installed);
+  where installed); ``ok*`` in the matrix when verify compared some setting that moves the tool as a
+  setting rather than as the path it cuts (cutter compensation where only one side's rules are
+  simulated, path control): the same on both sides, but not checked as a toolpath;
 * ``refused``: a located error saying what the target cannot express (``UnsupportedError``): the
   capability is the error's message, grouped in the triage with its numbers taken out;
 * ``excused``: the source itself cannot run (a subprogram the file lacks, a value only the machine
@@ -224,7 +226,10 @@ def run_pair(program: Program, target: str) -> Outcome:
                        "the translation does not read back: " + "\n".join(str(e) for e in err.errors[:5]))
     if not report.ok:
         return Outcome(program.path, target, FAILURE, "verify failed", report.summary())
-    return Outcome(program.path, target, OK, "", f"{report.moves} moves")
+    # verified, but settings the simulation does not apply on either side (cutter compensation under rules
+    # only one side has, path control) were compared as settings, not as the path they make: marked ok*
+    category = "settings compared" if report.ignored else ""
+    return Outcome(program.path, target, OK, category, "\n".join([f"{report.moves} moves", *report.ignored]))
 
 
 def output_problems(target: str, text: str) -> list[str]:
@@ -336,9 +341,13 @@ def matrix(programs: list[Program], pairs: list[Outcome]) -> str:
     width = max(len(p.path) for p in programs)
     rows = [" ".join([f"{'program':<{width}}"] + [f"{n:>8}" for n in names])]
     for p in programs:
-        marks = [mark[cell[(p.path, n)].kind] if (p.path, n) in cell else "-" for n in names]
+        marks = [_mark(cell[(p.path, n)], mark) if (p.path, n) in cell else "-" for n in names]
         rows.append(" ".join([f"{p.path:<{width}}"] + [f"{m:>8}" for m in marks]))
     return "\n".join(rows)
+
+
+def _mark(outcome: Outcome, mark: dict[str, str]) -> str:
+    return "ok*" if outcome.kind == OK and outcome.category else mark[outcome.kind]
 
 
 def triage(outcomes: list[Outcome]) -> str:
@@ -401,6 +410,9 @@ def main(argv: list[str] | None = None) -> int:
     print(f"{len(programs)} programs, {len(pairs)} pairs: {counts[OK]} ok, {counts[REFUSED]} refused, "
           f"{counts[EXCUSED]} excused, {counts[FAILURE]} FAILURE; translated and verified: {ok}/{runnable} = "
           f"{100 * ratio:.1f} % of the pairs that can run ({time.monotonic() - started:.0f} s)")
+    starred = sum(o.kind == OK and bool(o.category) for o in pairs)
+    print(f"ok* ({starred} of the ok pairs): verified with settings the simulation applies on neither side (cutter "
+          "compensation without both dialects' rules, path control) compared as settings, not as the path they cut")
     notes = [o for o in sources if o.detail and o.kind == OK]
     for o in notes:
         print(f"note: {o.program}: {o.detail}")
