@@ -65,15 +65,11 @@ class Writer(abc.ABC):
         self.source_dialect = source_dialect
         self.target = target
         """The dialect written, whose capability flags the writer reads (None: every flag holds)."""
-        self.straight = False
-        """``write`` offers a canonical source block to ``straight_move`` before ``write_block``."""
+        self.lane: Callable[[Block], str | None] | None = None
+        """A speed-only shortcut the run installed (``postproc.fast``): ``write`` offers it a canonical source
+        block first; it writes what ``write_block`` would, or answers None."""
         self.last_line = 0
         """The source line of the last block ``write`` was given (0: none yet), for ``finish``'s notes."""
-
-    def straight_move(self, block: Block) -> str | None:
-        """The text of a canonical source block (``Block.canonical``) when a cheaper way than ``write_block``
-        gives the same text, else None. A writer that has one sets ``straight``."""
-        return None
 
     def capable(self, flag: str) -> bool:
         """Whether the target has the capability ``flag`` (an UPPER_CASE attribute of ``Dialect``, read by
@@ -86,7 +82,7 @@ class Writer(abc.ABC):
         The header goes after an opening tape mark and the footer before the closing one; a block a
         set-up template wrote (``postproc.sequences``) is written as it is."""
         write_block = self.write_block
-        straight = self.straight_move if self.straight else None
+        lane = self.lane
         sequences = self.sequences()
         output_map = self.ctx.run_data.get("output_map")
         emit = out.write if output_map is None else output_map.writer(out)
@@ -115,7 +111,7 @@ class Writer(abc.ABC):
                 self._emit_template(emit, output_map, line_format, getattr(text_of, "template"), getattr(text_of, "text"))
                 continue
             try:
-                text = straight(block) if straight is not None and block.canonical else None
+                text = lane(block) if lane is not None and block.canonical else None
                 if text is None:
                     text = write_block(block)
             except UnsupportedError as err:

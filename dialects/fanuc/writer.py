@@ -52,10 +52,6 @@ class FanucWriter(LatheWordWriter):
     """Program numbers are ``O0001``-``O9999`` (DIALECTS.md 1.1 [K]; 8 digits only on a 30i with an option);
     a subprogram of another dialect without one gets the first free number from O2000 (below O8000,
     which controls often lock [V])."""
-    STRAIGHT_OVERRIDES: ClassVar[frozenset[str]] = frozenset({"write_block"})
-    """Normalised back to Fanuc, a block of a move, its block number and feed rate is written by the base:
-    this ``write_block`` captures only another dialect's named subprograms and watches none of those
-    sections (``WordWriter.straight_move``)."""
 
     def __init__(self, ctx: Context, source_dialect: str, target: type[Dialect] | None = None) -> None:
         super().__init__(ctx, source_dialect, target)

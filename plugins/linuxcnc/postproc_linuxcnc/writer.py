@@ -79,15 +79,6 @@ class LinuxcncWriter(WordWriter):
     """G80 is a motion code here: ``G80 G0`` is refused, a block's G0-G3 ends the cycle by itself."""
     BARE_FEED_MOTION_NEEDS_FEED: ClassVar[bool] = True
     SPELLING: ClassVar[ExprSpelling | None] = LINUXCNC_SPELLING
-    STRAIGHT_OVERRIDES: ClassVar[frozenset[str]] = frozenset({"write_block", "generate", "motion_words",
-                                                              "feed_words"})
-    """A straight move has no M19 or compensation to reorder, is no arc or reference return, changes no
-    units, is no tape mark or program end, and is never a program's first block (its motion mode is set
-    by a block before it, which ``write_block`` saw): these overrides write it as the base does."""
-    STRAIGHT_ARC_OVERRIDES: ClassVar[frozenset[str]] = STRAIGHT_OVERRIDES
-    """And an arc: ``motion_words`` refuses only a zero-radius arc (``straight_move`` leaves it to it) and
-    a reference return under compensation; a block that programs its motion code takes the path only once
-    ``write_block`` has seen the program open (``straight_codes_now``)."""
 
     def __init__(self, ctx: Context, source_dialect: str, target: type[Dialect] | None = None) -> None:
         super().__init__(ctx, source_dialect, target)
@@ -102,6 +93,7 @@ class LinuxcncWriter(WordWriter):
         """O-word labels and subprogram names written so far."""
         self._counter = 0
         self._ended = False
+        """The main program's end was written: an ``O<n>`` now starts a subprogram."""
         self._cutter_on = False
         """Cutter compensation is on (rs274 refuses turning it on again, and G28/G30 under it)."""
         self._cutter_before = False
@@ -110,8 +102,6 @@ class LinuxcncWriter(WordWriter):
         """Whether the program opened with '%' (None: nothing written yet)."""
         self._closed = False
         """A '%' closed the program opened with one (rs274 then needs no M2/M30)."""
-        self.straight_codes_now = False
-        """The main program's end was written: an ``O<n>`` now starts a subprogram."""
         self.names = SubprogramNames(NAMES)
         """Another dialect's subprograms: their o-word names and how each is called."""
         self._body: str | None = None
@@ -326,7 +316,6 @@ class LinuxcncWriter(WordWriter):
             self._opened = self._opened is None or self._opened
         elif sections and self._opened is None and sections.keys() != {"Comments"}:
             self._opened = False
-        self.straight_codes_now = self._opened is not None  # its first block seen: ``straight_move`` may follow
         if self.modal.feed_mode == "per_rev" or "FeedMode" in sections:
             self._spindle_turns(block)
         text = super().write_block(block)
