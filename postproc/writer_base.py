@@ -56,6 +56,10 @@ class _NoTemplates:
 _NO_TEMPLATES: Final = _NoTemplates()
 
 
+def _only_comments(sections: dict[str, Any]) -> bool:
+    return len(sections) == 1 and "Comments" in sections
+
+
 @mypyc_attr(allow_interpreted_subclasses=True)
 class Writer(abc.ABC):
     """Turns blocks into text. Subclasses implement ``write_block``."""
@@ -68,6 +72,13 @@ class Writer(abc.ABC):
         self.lane: Callable[[Block], str | None] | None = None
         """A speed-only shortcut the run installed (``postproc.fast``): ``write`` offers it a canonical source
         block first; it writes what ``write_block`` would, or answers None."""
+        self.set_aside: list[str] | None = None
+        """Where ``write`` puts each block's text while the writer sets a part of the program aside to write
+        it elsewhere (a subprogram the dialect writes after the main program, in ``finish``); None: out."""
+        self.opening: bool | None = None
+        """Whether the written program opened with a tape mark ('%'): None until ``write`` has written its
+        first block that does more than comment, then whether that block was a tape mark (a writer reads
+        it while that block is written as the state before it)."""
         self.last_line = 0
         """The source line of the last block ``write`` was given (0: none yet), for ``finish``'s notes."""
 
@@ -110,6 +121,7 @@ class Writer(abc.ABC):
                     line_format.block, line_format.template = None, getattr(text_of, "template")
                 self._emit_template(emit, output_map, line_format, getattr(text_of, "template"), getattr(text_of, "text"))
                 continue
+            failed = False
             try:
                 text = lane(block) if lane is not None and block.canonical else None
                 if text is None:
@@ -118,6 +130,16 @@ class Writer(abc.ABC):
                 text = self.unsupported_block(block, err)
             except PostprocError as err:
                 self.ctx.diagnostics.error(err.located(self.ctx.at(block)))
+                text = None
+                failed = True
+            if self.opening is None and block.sections and not _only_comments(block.sections):
+                self.opening = tape_mark
+            if failed:
+                continue
+            set_aside = self.set_aside
+            if set_aside is not None:
+                if text:
+                    set_aside.append(text)
                 continue
             if text is not None:
                 if (not text or text.isspace()) and block.text is not None and (block.words or block.sections):

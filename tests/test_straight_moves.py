@@ -29,24 +29,25 @@ from postproc.rs274.writer import WordWriter
 from postproc.setup import MachineSetup
 from postproc.writer_base import Writer
 
-SOURCE = "fanuc"
-"""The random programs' dialect."""
+SOURCES = ("fanuc", "linuxcnc")
+"""Dialects that read the random programs (Fanuc's words; LinuxCNC reads most of them alike)."""
 
 
-def _lane(target: str) -> type | None:
-    """The lane a run from ``SOURCE`` to ``target`` takes (normalised when it is the same dialect): the
+def _lane(source: str, target: str) -> type | None:
+    """The lane a run from ``source`` to ``target`` takes (normalised when it is the same dialect): the
     class of its shortcut, or None."""
     dialect = default_registry().dialect(target)
     setup = MachineSetup()
-    setup.output.normalize = target == SOURCE
-    ctx = default_registry().dialect(SOURCE).context("p.nc", setup, Diagnostics())
-    writer = dialect.WRITER(ctx, SOURCE, dialect)  # type: ignore[misc]
+    setup.output.normalize = target == source
+    ctx = default_registry().dialect(source).context("p.nc", setup, Diagnostics())
+    writer = dialect.WRITER(ctx, source, dialect)  # type: ignore[misc]
     lane = choose(writer)
     return None if lane is None else type(lane.__self__)  # type: ignore[attr-defined]
 
 
-TARGETS = tuple(name for name in sorted(default_registry().dialects) if _lane(name) is not None)
-"""Every target a run from ``SOURCE`` writes with a lane."""
+PAIRS = tuple((source, target) for source in SOURCES for target in sorted(default_registry().dialects)
+              if _lane(source, target) is not None)
+"""Every pair of a source of the random programs and a target that a run writes with a lane."""
 
 
 def _writer(target: str) -> type[WordWriter]:
@@ -166,13 +167,13 @@ def lines(draw: st.DrawFn) -> list[str]:
     return out
 
 
-def _run(program: list[str], target: str) -> str:
+def _run(program: list[str], target: str, source: str = "fanuc") -> str:
     out = io.StringIO()
     diagnostics = Diagnostics(warn_stream=io.StringIO())
     setup = MachineSetup()
-    setup.output.normalize = target == SOURCE
+    setup.output.normalize = target == source
     try:
-        translate([line + "\n" for line in program], out, file="p.nc", source=SOURCE, target=target,
+        translate([line + "\n" for line in program], out, file="p.nc", source=source, target=target,
                   diagnostics=diagnostics, setup=setup)
     except ErrorList as err:
         return "errors:\n" + str(err)
@@ -183,7 +184,7 @@ def _no_lane(writer: Writer) -> None:
     """``postproc.fast.install`` turned off: every block takes the general path."""
 
 
-@pytest.mark.parametrize("target", TARGETS)
+@pytest.mark.parametrize(("source", "target"), PAIRS)
 @settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
 @given(program=lines())
 @example(program=["G21", "G90", "G1 F100.", "N10 X1.5 Y-2.25 Z0.001 F1200."])
@@ -197,24 +198,24 @@ def _no_lane(writer: Writer) -> None:
 @example(program=["G21", "G90", "G1 F100.", "G0 Z5.", "G99 G81 X1. Y2. Z-3. R1. F100.", "X3. Y1.", "G80 G90"])
 @example(program=["G20", "G91", "G0 Z1.", "G98 G83 X0. Y1.5 Z-6. R1. Q2. F80.", "G91 G81 X5. Z-4. R-4. K3 F100.",
                   "G82 X2. Y2. Z-1. R0.5 P500 F60.", "G80 G90"])  # an expansion's moves (``compound``)
-def test_the_lane_writes_what_the_general_path_writes(program: list[str], target: str,
+def test_the_lane_writes_what_the_general_path_writes(program: list[str], source: str, target: str,
                                                      monkeypatch: pytest.MonkeyPatch) -> None:
-    fast = _run(program, target)
+    fast = _run(program, target, source)
     with monkeypatch.context() as patch:
         patch.setattr(postproc.fast, "install", _no_lane)
-        slow = _run(program, target)
+        slow = _run(program, target, source)
     assert fast == slow
 
 
 def test_the_lane_is_chosen_where_the_base_writes() -> None:
     """The lanes of the shipped writers: a dialect whose writer class overrides none of the methods a
     lane copies takes it; the test above would pass with no lane ever chosen."""
-    lanes = {name: _lane(name) for name in sorted(default_registry().dialects)}
-    assert lanes["grbl"] is StraightLane
+    lanes = {name: _lane("fanuc", name) for name in sorted(default_registry().dialects)}
+    assert lanes["grbl"] is StraightLane and lanes["fanuc"] is CopyLane and _lane("linuxcnc", "grbl") is StraightLane
     assert all(lane in (None, StraightLane, CopyLane) for lane in lanes.values())
 
 
-@pytest.mark.parametrize("target", TARGETS)
+@pytest.mark.parametrize("target", sorted({target for source, target in PAIRS if source == "fanuc"}))
 def test_cam_blocks_take_the_lane(target: str, monkeypatch: pytest.MonkeyPatch) -> None:
     """A CAM program's straight blocks take the lane (``Writer.lane``): each block it answers, in order."""
     taken: list[str] = []
@@ -237,7 +238,7 @@ def test_cam_blocks_take_the_lane(target: str, monkeypatch: pytest.MonkeyPatch) 
                "X0.000001 Y7.", "N40 Y8.5 Z-1.5", "G0 X5.", "N50 X2.", "G1 X0. Y0.", "N60 G02 X4. Y0. I2. J0.",
                "G3 X0. Y0. R2.5", "X4. Y0. I2. J0."]
     out = _run(program, target)
-    if target == SOURCE:  # normalised back: every block of a move (motion code or not) is its source line
+    if target == "fanuc":  # normalised back: every block of a move (motion code or not) is its source line
         assert taken == [line + "\n" for line in program[1:]]
     else:
         expected = ["G0 X0. Y0.\n", "N10 G1 Z-1. F300.\n", "N20 G1 X10.5 Y2.25\n", "N30 G1 X-3.125 Y0.5 F1200.\n",

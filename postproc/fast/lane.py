@@ -4,7 +4,7 @@ where it writes what the writer's general path writes.
 The choice is the lane's own, never a plugin's declaration: a shortcut copies the word writer's base
 methods, so it is taken only when the writer class uses the base's own method for every step the
 shortcut skips (``STRAIGHT_METHODS``, ``COPY_METHODS``) and its section table routes the shortcut's
-sections to them. A dialect that overrides one of them is written by its general path, whatever the
+sections to them (none is a ``STRUCTURE`` or ``SPLIT`` section of the class). A dialect that overrides one of them is written by its general path, whatever the
 override does. (``Writer.write`` is not among them: the lane is consulted inside it, so an override that
 wraps it keeps the lane, and one that replaces it never consults it.)
 """
@@ -18,11 +18,11 @@ from ..rs274.writer import WordWriter
 from ..writer_base import Writer
 from .straight import STRAIGHT_KEYS, CopyLane, StraightLane
 
-STRAIGHT_METHODS: Final = ("write_block", "generate", "_generate", "section_words", "section_writer",
-                           "dispatch_table", "sequence_words", "motion_words", "feed_words", "feed_number",
-                           "left_out", "source_number", "number", "length", "position", "_track")
+STRAIGHT_METHODS: Final = ("write_block", "words_block", "generate", "_generate", "section_words", "section_writer",
+                           "dispatch_table", "sequence_words", "motion_words", "feed_words", "feed_rate_words",
+                           "feed_number", "left_out", "source_number", "number", "length", "position", "_track")
 """What the general path calls to write a straight block of another dialect (``StraightLane``)."""
-COPY_METHODS: Final = ("write_block", "normalized", "_track")
+COPY_METHODS: Final = ("write_block", "words_block", "normalized", "_track")
 """What the general path calls to write a straight block normalised back to its own dialect (``CopyLane``)."""
 
 
@@ -44,6 +44,8 @@ def choose(writer: Writer) -> Callable[[Block], str | None] | None:
     if not isinstance(writer, WordWriter):
         return None
     cls = type(writer)
+    if not (STRAIGHT_KEYS.isdisjoint(cls.STRUCTURE) and STRAIGHT_KEYS.isdisjoint(cls.SPLIT)):
+        return None
     copies = (writer.source_dialect == writer.DIALECT and writer.normalize and not writer.renumber
               and writer.leading_zero and not writer.rounding)  # ``normalized`` copies a canonical block
     if copies and own(cls, COPY_METHODS):

@@ -66,6 +66,8 @@ class CopyLane:
             if key not in STRAIGHT_KEYS:
                 return None
         writer = self.writer
+        if writer.PER_REV_NEEDS_SPEED and writer.modal.feed_mode == "per_rev":
+            return None  # (the general path checks the spindle speed)
         if "Feed" in sections:
             writer.modal.apply(sections)
         if writer.carry:
@@ -101,6 +103,8 @@ class StraightLane:
         motion = sections.get("Motion")
         if not isinstance(motion, Motion) or text is None or writer.carry or not writer.source_numbers:
             return None
+        if writer.PER_REV_NEEDS_SPEED and writer.modal.feed_mode == "per_rev":
+            return None  # (the general path checks the spindle speed)
         mode = motion.mode
         axes = motion.axes
         if mode is None or not axes:

@@ -42,6 +42,8 @@ class MotionWords(SectionWords):
     """The axes the controller drives, where it drives fewer than the programs it is given may move (grbl:
     X, Y, Z): a move of another is an ``UnsupportedError`` naming it. None: every axis is written."""
 
+    ZERO_RADIUS_ARC: ClassVar[str] = ""
+    """How the controller refuses an arc whose centre is its start ('': it runs it, doing nothing)."""
     FULL_CIRCLE_HELIX: ClassVar[bool] = True
     """An arc whose end point names neither axis of its plane (a helical full circle, which the lowering
     could not close) runs; False: the controller refuses it (grbl)."""
@@ -73,6 +75,12 @@ class MotionWords(SectionWords):
             first, second, _ = PLANE_AXES[plane.plane if plane is not None else self.modal.plane]  # type: ignore[attr-defined]
             if first not in s.axes and second not in s.axes:
                 self.unsupported("a helical full circle with no end point in its plane, in absolute mode", block)
+        if s.mode in MOTION_KIND:
+            self.check_reference_return(s, block)
+        elif self.ZERO_RADIUS_ARC and (s.mode == "cw" or s.mode == "ccw") and s.radius is None \
+                and s.center is not None and _at_start(s.center):
+            self.unsupported(f"an arc of zero radius (a controller that runs it does nothing; {self.ZERO_RADIUS_ARC})",
+                             block)
         if s.mode is None:
             self.unsupported("a canned-cycle repetition without its cycle", block)
         if not s.axes and self.left_out(s, block):
@@ -109,6 +117,9 @@ class MotionWords(SectionWords):
         if s.radius is not None:
             words.append("R" + self.length(s.radius, block, "R"))
         return words
+
+    def check_reference_return(self, s: Motion, block: Block) -> None:
+        """Refuse a reference return (G28/G30) the controller refuses in the state it is in (the base: none)."""
 
     def source_number(self, block: Block, axis: str, value: float, incremental: bool) -> str | None:
         """The number of a canonical block's ``axis`` word as the source wrote it, when that is the text
@@ -229,3 +240,11 @@ def _listed(axes: frozenset[str]) -> str:
     """``X, Y and Z``: the axes in their usual order, for a message."""
     letters = [axis for axis in "XYZABCUVW" if axis in axes] + sorted(axes - frozenset("XYZABCUVW"))
     return letters[0] if len(letters) == 1 else ", ".join(letters[:-1]) + " and " + letters[-1]
+
+
+def _at_start(center: dict[str, float | Expr]) -> bool:
+    """An arc's centre offsets are all zero: its centre is its start."""
+    for offset in center.values():
+        if type(offset) is not float or offset != 0.0:
+            return False
+    return True

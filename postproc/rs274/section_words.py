@@ -177,6 +177,18 @@ class SectionWords(NumberWriter):
         return [code, self.DWELL_WORD + self.seconds(s.seconds)]
 
     def feed_words(self, s: Any, block: Block) -> list[str]:
+        if "Units" in block.sections:
+            return self.feed_beside_units(s, block)
+        return self.feed_rate_words(s, block)
+
+    def feed_beside_units(self, s: Any, block: Block) -> list[str]:
+        """The feed rate of a block that also changes units, which the neutral block gives in its new
+        units; a controller that reads it in the units before the block overrides this (the base writes
+        it as any other)."""
+        return self.feed_rate_words(s, block)
+
+    def feed_rate_words(self, s: Any, block: Block) -> list[str]:
+        """``F`` and the feed rate, in the units in force."""
         value = s.value
         if isinstance(value, Expr):
             self.modal.feed = None  # known only when the program runs

@@ -61,6 +61,16 @@ class WordWriter(MotionWords):
 
     TRANSFORMS: ClassVar[dict[str, SectionWriter]] = {}
 
+    STRUCTURE: ClassVar[frozenset[str]] = frozenset()
+    """Sections that make a block part of the program's structure for the dialect (a subprogram's start or
+    end, a tape mark it does not read, an assignment that needs a line of its own): ``write_block`` gives
+    such a block to ``structure_block``."""
+    SPLIT: ClassVar[frozenset[str]] = frozenset()
+    """Sections that may make the dialect write a block as more than one line in an order of its own
+    (LinuxCNC: M19 after the block's other actions): ``generate`` offers such a block to ``split_block``."""
+    PER_REV_NEEDS_SPEED: ClassVar[str] = ""
+    """How the controller refuses a feed move in feed per revolution while no spindle speed is programmed
+    (rs274: "Cannot feed with zero spindle speed in feed per rev mode"); '': it does not."""
     BLANK_AS_TRACE: ClassVar[bool] = False
     """A block whose sections all write nothing on this controller (grbl does without G80, G98/G99, G64)
     leaves its source line as a comment (``generate``), or nothing when it has no source line."""
@@ -85,11 +95,45 @@ class WordWriter(MotionWords):
         from a block may not drop it from a cycle's motion."""
 
     def write_block(self, block: Block) -> str | None:
+        """The text of a block: a block with a ``STRUCTURE`` section as ``structure_block`` writes it, any
+        other as ``words_block`` does."""
         sections = block.sections
-        if "TapeMark" in sections:
-            mark = self.tape_mark_line(block)
-            if mark is not None:
-                return mark
+        if self.PER_REV_NEEDS_SPEED and (self.modal.feed_mode == "per_rev" or "FeedMode" in sections):
+            self.refuse_feed_without_speed(block)
+        if not self.STRUCTURE.isdisjoint(sections):
+            return self.structure_block(block)
+        return self.words_block(block)
+
+    def refuse_feed_without_speed(self, block: Block) -> None:
+        """A feed move (G1, G2, G3, even one that only selects the mode) in feed per revolution while the
+        spindle speed is zero, as it is until an S (``PER_REV_NEEDS_SPEED``): the block's own S and feed
+        mode come first."""
+        sections = block.sections
+        motion = sections.get("Motion")
+        if not isinstance(motion, Motion) or motion.mode not in ("linear", "cw", "ccw"):
+            return
+        mode = sections.get("FeedMode")
+        if (self.modal.feed_mode if mode is None else mode.mode) != "per_rev":  # type: ignore[attr-defined]
+            return
+        control = sections.get("SpindleControl")
+        turning = self.modal.spindle if control is None or after_motion("SpindleControl", control) \
+            else control.direction  # type: ignore[attr-defined]
+        if turning == "stop" and motion.axes:
+            return  # refused when read: a feed-per-revolution move with the spindle stopped
+        speed = sections.get("SpindleSpeed")
+        rpm = self.modal.spindle_rpm if speed is None else speed.rpm  # type: ignore[attr-defined]
+        if rpm is None or (isinstance(rpm, (int, float)) and rpm == 0):
+            self.unsupported(f"a feed move in feed per revolution (G95) with no spindle speed ({self.PER_REV_NEEDS_SPEED}"
+                             "; program S first)", block)
+
+    def structure_block(self, block: Block) -> str | None:
+        """A block with a ``STRUCTURE`` section: the dialect's own handling of its program's structure (the
+        base has none and writes it as any other block)."""
+        return self.words_block(block)
+
+    def words_block(self, block: Block) -> str | None:
+        """A block copied from the dialect itself, normalised back to it, or generated from its sections."""
+        sections = block.sections
         if self.rounding:
             self.at_block = block  # where a rounding warning points
         if block.text is not None and self.copy_ok:
@@ -101,11 +145,6 @@ class WordWriter(MotionWords):
                 self.modal.apply(sections)
             return self.normalized(block) + (block.eol or "\n")
         return self.generate(block)
-
-    def tape_mark_line(self, block: Block) -> str | None:
-        """The line a tape mark ('%') is written as where the controller does not read one (None: it is
-        written as any other block)."""
-        return None
 
     def _track(self, sections: dict[str, Section]) -> None:
         if not changes_nothing(sections):
@@ -174,13 +213,23 @@ class WordWriter(MotionWords):
 
     def generate(self, block: Block) -> str:
         """Generate a block (and any lines a compound motion adds) from its sections; with
-        ``BLANK_AS_TRACE``, a block of source text whose sections write nothing is its source as a comment."""
+        ``BLANK_AS_TRACE``, a block of source text whose sections write nothing is its source as a comment.
+        A block with a ``SPLIT`` section is the dialect's ``split_block`` where that writes it."""
+        if not self.SPLIT.isdisjoint(block.sections):
+            split = self.split_block(block)
+            if split is not None:
+                return split
         text = WordWriter._generate(self, block)  # (a direct call, not a dispatch)
         if self.blank_as_trace and (not text or text.isspace()) and block.sections:
             if block.text is None:
                 return ""  # a generated part whose only words the controller does without
             return self.comment(block.text.strip()) + (block.eol or "\n")  # a trace of the source line
         return text
+
+    def split_block(self, block: Block) -> str | None:
+        """A block with a ``SPLIT`` section as lines in the dialect's order, or None: it is one line (the
+        base splits nothing)."""
+        return None
 
     def _generate(self, block: Block) -> str:
         sections = block.sections

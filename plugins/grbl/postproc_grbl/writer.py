@@ -52,12 +52,13 @@ class GrblWriter(WordWriter):
     FULL_CIRCLE_HELIX: ClassVar[bool] = False
     """What ``close_full_circles`` could not close (a helix with no end point in its plane, in absolute
     mode) grbl refuses: its arc needs an end point in the plane."""
+    STRUCTURE: ClassVar[frozenset[str]] = frozenset(("TapeMark",))
     BLANK_AS_TRACE: ClassVar[bool] = True
     """G80, G98/G99, G64 and the like are not grbl's: a block of nothing else is a trace of its source."""
 
     # -- blocks ------------------------------------------------------------------------------------
-    def tape_mark_line(self, block: Block) -> str | None:
-        """grbl's parser rejects '%': it is written as a comment."""
+    def structure_block(self, block: Block) -> str | None:
+        """grbl's parser rejects '%': a tape mark is written as a comment."""
         return self.comment("%") + (block.eol or "\n")
 
     def item_line(self, item: Section, block: Block) -> str:
