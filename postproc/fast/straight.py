@@ -12,6 +12,8 @@ from __future__ import annotations
 
 from typing import Final
 
+from mypy_extensions import mypyc_attr
+
 from ..expr import Expr
 from ..ir import Block, Feed, Motion, Sequence
 from ..numbers import MAX_PLACES, SHORT_RANGE, as_written
@@ -48,6 +50,7 @@ def _plain_arc(axes: dict[str, float | Expr], center: dict[str, float | Expr] | 
     return first in axes or second in axes
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class CopyLane:
     """A straight block normalised back to its own dialect is its source line, as ``normalized`` writes
     a canonical block (installed where the writer copies canonical numbers: leading zeros, no rounding,
@@ -75,6 +78,7 @@ class CopyLane:
         return text + (block.eol or "\n")
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class StraightLane:
     """A canonical block of another dialect that is a rapid, feed or arc move of numbers, maybe with a
     block number and a feed rate, its words in that order, each number the value it reads as and one the

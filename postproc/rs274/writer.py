@@ -18,6 +18,7 @@ from typing import Any, Callable, ClassVar, Final
 
 from mypy_extensions import mypyc_attr
 
+from ..block_rules import per_rev_problem
 from ..context import Context
 from ..control import ASSIGN, CONTROL
 from ..dialect import Dialect
@@ -69,8 +70,9 @@ class WordWriter(MotionWords):
     """Sections that may make the dialect write a block as more than one line in an order of its own
     (LinuxCNC: M19 after the block's other actions): ``generate`` offers such a block to ``split_block``."""
     PER_REV_NEEDS_SPEED: ClassVar[str] = ""
-    """How the controller refuses a feed move in feed per revolution while no spindle speed is programmed
-    (rs274: "Cannot feed with zero spindle speed in feed per rev mode"); '': it does not."""
+    """What the controller cannot express when a feed move in feed per revolution meets no spindle speed
+    (rs274 refuses it: "Cannot feed with zero spindle speed in feed per rev mode"), in the dialect's words;
+    '': it runs it."""
     BLANK_AS_TRACE: ClassVar[bool] = False
     """A block whose sections all write nothing on this controller (grbl does without G80, G98/G99, G64)
     leaves its source line as a comment (``generate``), or nothing when it has no source line."""
@@ -118,13 +120,12 @@ class WordWriter(MotionWords):
         control = sections.get("SpindleControl")
         turning = self.modal.spindle if control is None or after_motion("SpindleControl", control) \
             else control.direction  # type: ignore[attr-defined]
-        if turning == "stop" and motion.axes:
-            return  # refused when read: a feed-per-revolution move with the spindle stopped
         speed = sections.get("SpindleSpeed")
         rpm = self.modal.spindle_rpm if speed is None else speed.rpm  # type: ignore[attr-defined]
+        if motion.axes and per_rev_problem(turning, rpm) is not None:
+            return  # refused when read (``block_rules.per_rev_problem``): stopped, or at S0
         if rpm is None or (isinstance(rpm, (int, float)) and rpm == 0):
-            self.unsupported(f"a feed move in feed per revolution (G95) with no spindle speed ({self.PER_REV_NEEDS_SPEED}"
-                             "; program S first)", block)
+            self.unsupported(self.PER_REV_NEEDS_SPEED, block)
 
     def structure_block(self, block: Block) -> str | None:
         """A block with a ``STRUCTURE`` section: the dialect's own handling of its program's structure (the

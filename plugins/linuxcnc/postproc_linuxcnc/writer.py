@@ -84,7 +84,8 @@ class LinuxcncWriter(WordWriter):
     SPLIT: ClassVar[frozenset[str]] = frozenset(("CutterCompensation", "SpindleOrientation"))
     """Compensation turned on beside settings rs274 refuses to change under it, and M19 beside other actions
     (``split_block``)."""
-    PER_REV_NEEDS_SPEED: ClassVar[str] = "rs274: \"Cannot feed with zero spindle speed in feed per rev mode\""
+    PER_REV_NEEDS_SPEED: ClassVar[str] = ("a feed move in feed per revolution (G95) with no spindle speed (rs274: \"Cannot "
+                                          "feed with zero spindle speed in feed per rev mode\"; program S first)")
     ZERO_RADIUS_ARC: ClassVar[str] = "rs274 refuses it: \"Zero-radius arc\""
 
     def __init__(self, ctx: Context, source_dialect: str, target: type[Dialect] | None = None) -> None:
