@@ -56,6 +56,10 @@ class _NoTemplates:
 _NO_TEMPLATES: Final = _NoTemplates()
 
 
+def _only_comments(sections: dict[str, Any]) -> bool:
+    return len(sections) == 1 and "Comments" in sections
+
+
 @mypyc_attr(allow_interpreted_subclasses=True)
 class Writer(abc.ABC):
     """Turns blocks into text. Subclasses implement ``write_block``."""
@@ -65,15 +69,18 @@ class Writer(abc.ABC):
         self.source_dialect = source_dialect
         self.target = target
         """The dialect written, whose capability flags the writer reads (None: every flag holds)."""
-        self.straight = False
-        """``write`` offers a canonical source block to ``straight_move`` before ``write_block``."""
+        self.lane: Callable[[Block], str | None] | None = None
+        """A speed-only shortcut the run installed (``postproc.fast``): ``write`` offers it a canonical source
+        block first; it writes what ``write_block`` would, or answers None."""
+        self.set_aside: list[str] | None = None
+        """Where ``write`` puts each block's text while the writer sets a part of the program aside to write
+        it elsewhere (a subprogram the dialect writes after the main program, in ``finish``); None: out."""
+        self.opening: bool | None = None
+        """Whether the written program opened with a tape mark ('%'): None until ``write`` has written its
+        first block that does more than comment, then whether that block was a tape mark (a writer reads
+        it while that block is written as the state before it)."""
         self.last_line = 0
         """The source line of the last block ``write`` was given (0: none yet), for ``finish``'s notes."""
-
-    def straight_move(self, block: Block) -> str | None:
-        """The text of a canonical source block (``Block.canonical``) when a cheaper way than ``write_block``
-        gives the same text, else None. A writer that has one sets ``straight``."""
-        return None
 
     def capable(self, flag: str) -> bool:
         """Whether the target has the capability ``flag`` (an UPPER_CASE attribute of ``Dialect``, read by
@@ -86,7 +93,7 @@ class Writer(abc.ABC):
         The header goes after an opening tape mark and the footer before the closing one; a block a
         set-up template wrote (``postproc.sequences``) is written as it is."""
         write_block = self.write_block
-        straight = self.straight_move if self.straight else None
+        lane = self.lane
         sequences = self.sequences()
         output_map = self.ctx.run_data.get("output_map")
         emit = out.write if output_map is None else output_map.writer(out)
@@ -114,14 +121,25 @@ class Writer(abc.ABC):
                     line_format.block, line_format.template = None, getattr(text_of, "template")
                 self._emit_template(emit, output_map, line_format, getattr(text_of, "template"), getattr(text_of, "text"))
                 continue
+            failed = False
             try:
-                text = straight(block) if straight is not None and block.canonical else None
+                text = lane(block) if lane is not None and block.canonical else None
                 if text is None:
                     text = write_block(block)
             except UnsupportedError as err:
                 text = self.unsupported_block(block, err)
             except PostprocError as err:
                 self.ctx.diagnostics.error(err.located(self.ctx.at(block)))
+                text = None
+                failed = True
+            if self.opening is None and block.sections and not _only_comments(block.sections):
+                self.opening = tape_mark
+            if failed:
+                continue
+            set_aside = self.set_aside
+            if set_aside is not None:
+                if text:
+                    set_aside.append(text)
                 continue
             if text is not None:
                 if (not text or text.isspace()) and block.text is not None and (block.words or block.sections):

@@ -1,12 +1,12 @@
-"""The writers' straight path (``WordWriter.straight_move``) writes exactly what ``generate`` writes.
+"""The fast lane (``postproc.fast``) writes exactly what the writer's general path writes.
 
 A CAM program's usual block (``N.. X.. Y.. Z.. F..``) is written by a few comparisons instead of the
-section dispatch, for the writers whose overrides say they write such a block as the base does
-(``STRAIGHT_OVERRIDES``). Random programs of such blocks, mixed with what must leave the path (arcs,
-other axes, numbers with more places than are written exactly, incremental moves that carry rounding,
-block numbers with leading zeros, a units change), are translated twice: as shipped, and with the
-path turned off (an empty ``STRAIGHT_OVERRIDES`` makes the class fall back to ``generate``); text,
-warnings and errors must be the same.
+section dispatch, for the runs whose writer class writes such a block with the word writer's own methods
+(the lane decides, ``postproc.fast.lane``). Random programs of such blocks, mixed with what must leave the
+lane (arcs, other axes, numbers with more places than are written exactly, incremental moves that carry
+rounding, block numbers with leading zeros, a units change, cycles), are translated twice: with the lane,
+and without it (``postproc.fast.install`` replaced by nothing); text, warnings and errors must be the
+same, for every dialect pair a lane is chosen for.
 """
 
 from __future__ import annotations
@@ -18,15 +18,36 @@ import pytest
 from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
 
+import postproc.fast
 from postproc.api import translate
 from postproc.errors import Diagnostics, ErrorList
+from postproc.fast.lane import COPY_METHODS, STRAIGHT_METHODS, choose, own
+from postproc.fast.straight import CopyLane, StraightLane
 from postproc.ir import Block
 from postproc.plugins import default_registry
-from postproc.rs274.writer import COPY_METHODS, WordWriter
+from postproc.rs274.writer import WordWriter
 from postproc.setup import MachineSetup
+from postproc.writer_base import Writer
 
-TARGETS = ("linuxcnc", "grbl", "fanuc")
-"""fanuc: the program normalised back to Fanuc (``straight_copy``: a straight block is its source line)."""
+SOURCES = ("fanuc", "linuxcnc")
+"""Dialects that read the random programs (Fanuc's words; LinuxCNC reads most of them alike)."""
+
+
+def _lane(source: str, target: str) -> type | None:
+    """The lane a run from ``source`` to ``target`` takes (normalised when it is the same dialect): the
+    class of its shortcut, or None."""
+    dialect = default_registry().dialect(target)
+    setup = MachineSetup()
+    setup.output.normalize = target == source
+    ctx = default_registry().dialect(source).context("p.nc", setup, Diagnostics())
+    writer = dialect.WRITER(ctx, source, dialect)  # type: ignore[misc]
+    lane = choose(writer)
+    return None if lane is None else type(lane.__self__)  # type: ignore[attr-defined]
+
+
+PAIRS = tuple((source, target) for source in SOURCES for target in sorted(default_registry().dialects)
+              if _lane(source, target) is not None)
+"""Every pair of a source of the random programs and a target that a run writes with a lane."""
 
 
 def _writer(target: str) -> type[WordWriter]:
@@ -146,20 +167,24 @@ def lines(draw: st.DrawFn) -> list[str]:
     return out
 
 
-def _run(program: list[str], target: str) -> str:
+def _run(program: list[str], target: str, source: str = "fanuc") -> str:
     out = io.StringIO()
     diagnostics = Diagnostics(warn_stream=io.StringIO())
     setup = MachineSetup()
-    setup.output.normalize = target == "fanuc"
+    setup.output.normalize = target == source
     try:
-        translate([line + "\n" for line in program], out, file="p.nc", source="fanuc", target=target,
+        translate([line + "\n" for line in program], out, file="p.nc", source=source, target=target,
                   diagnostics=diagnostics, setup=setup)
     except ErrorList as err:
         return "errors:\n" + str(err)
     return out.getvalue() + "\n".join(str(w) for w in diagnostics.warnings)
 
 
-@pytest.mark.parametrize("target", TARGETS)
+def _no_lane(writer: Writer) -> None:
+    """``postproc.fast.install`` turned off: every block takes the general path."""
+
+
+@pytest.mark.parametrize(("source", "target"), PAIRS)
 @settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
 @given(program=lines())
 @example(program=["G21", "G90", "G1 F100.", "N10 X1.5 Y-2.25 Z0.001 F1200."])
@@ -173,33 +198,42 @@ def _run(program: list[str], target: str) -> str:
 @example(program=["G21", "G90", "G1 F100.", "G0 Z5.", "G99 G81 X1. Y2. Z-3. R1. F100.", "X3. Y1.", "G80 G90"])
 @example(program=["G20", "G91", "G0 Z1.", "G98 G83 X0. Y1.5 Z-6. R1. Q2. F80.", "G91 G81 X5. Z-4. R-4. K3 F100.",
                   "G82 X2. Y2. Z-1. R0.5 P500 F60.", "G80 G90"])  # an expansion's moves (``compound``)
-def test_straight_path_writes_what_generate_writes(program: list[str], target: str,
-                                                   monkeypatch: pytest.MonkeyPatch) -> None:
-    writer = _writer(target)
-    fast = _run(program, target)
+def test_the_lane_writes_what_the_general_path_writes(program: list[str], source: str, target: str,
+                                                     monkeypatch: pytest.MonkeyPatch) -> None:
+    fast = _run(program, target, source)
     with monkeypatch.context() as patch:
-        patch.setattr(writer, "STRAIGHT_OVERRIDES", frozenset())
-        assert not writer.straight_path() and (target != "fanuc" or not writer.straight_path(COPY_METHODS))
-        slow = _run(program, target)
+        patch.setattr(postproc.fast, "install", _no_lane)
+        slow = _run(program, target, source)
     assert fast == slow
 
 
-@pytest.mark.parametrize("target", TARGETS)
-def test_cam_blocks_take_the_straight_path(target: str, monkeypatch: pytest.MonkeyPatch) -> None:
-    """The path is on for the shipped writers, and a CAM program's straight blocks take it (the test
-    above would pass with the path never taken)."""
-    writer_class = _writer(target)
-    assert writer_class.straight_path(COPY_METHODS if target == "fanuc" else ())
-    taken: list[str] = []
+def test_the_lane_is_chosen_where_the_base_writes() -> None:
+    """The lanes of the shipped writers: a dialect whose writer class overrides none of the methods a
+    lane copies takes it; the test above would pass with no lane ever chosen."""
+    lanes = {name: _lane("fanuc", name) for name in sorted(default_registry().dialects)}
+    assert lanes["grbl"] is StraightLane and lanes["fanuc"] is CopyLane and _lane("linuxcnc", "grbl") is StraightLane
+    assert all(lane in (None, StraightLane, CopyLane) for lane in lanes.values())
 
-    class Counting(writer_class):  # type: ignore[valid-type,misc]
-        def straight_move(self, block: Block) -> str | None:
-            text = super().straight_move(block)
+
+@pytest.mark.parametrize("target", sorted({target for source, target in PAIRS if source == "fanuc"}))
+def test_cam_blocks_take_the_lane(target: str, monkeypatch: pytest.MonkeyPatch) -> None:
+    """A CAM program's straight blocks take the lane (``Writer.lane``): each block it answers, in order."""
+    taken: list[str] = []
+    install = postproc.fast.install
+
+    def counting(writer: Writer) -> None:
+        install(writer)
+        lane = writer.lane
+        assert lane is not None
+
+        def counted(block: Block) -> str | None:
+            text = lane(block)
             if text is not None:
                 taken.append(text)
             return text
+        writer.lane = counted
 
-    monkeypatch.setattr(default_registry().dialect(target), "WRITER", Counting)
+    monkeypatch.setattr(postproc.fast, "install", counting)
     program = ["G21 G90 G17", "G0 X0. Y0.", "N10 G1 Z-1. F300.", "N20 X10.5 Y2.25", "N30 X-3.125 Y0.5 F1200.",
                "X0.000001 Y7.", "N40 Y8.5 Z-1.5", "G0 X5.", "N50 X2.", "G1 X0. Y0.", "N60 G02 X4. Y0. I2. J0.",
                "G3 X0. Y0. R2.5", "X4. Y0. I2. J0."]
@@ -207,9 +241,11 @@ def test_cam_blocks_take_the_straight_path(target: str, monkeypatch: pytest.Monk
     if target == "fanuc":  # normalised back: every block of a move (motion code or not) is its source line
         assert taken == [line + "\n" for line in program[1:]]
     else:
-        assert taken == ["G0 X0. Y0.\n", "N10 G1 Z-1. F300.\n", "N20 G1 X10.5 Y2.25\n", "N30 G1 X-3.125 Y0.5 F1200.\n",
-                         "G1 X0.000001 Y7.\n", "N40 G1 Y8.5 Z-1.5\n", "G0 X5.\n", "N50 G0 X2.\n", "G1 X0. Y0.\n",
-                         "N60 G2 X4. Y0. I2. J0.\n", "G3 X0. Y0. R2.5\n", "G3 X4. Y0. I2. J0.\n"]
+        expected = ["G0 X0. Y0.\n", "N10 G1 Z-1. F300.\n", "N20 G1 X10.5 Y2.25\n", "N30 G1 X-3.125 Y0.5 F1200.\n",
+                    "G1 X0.000001 Y7.\n", "N40 G1 Y8.5 Z-1.5\n", "G0 X5.\n", "N50 G0 X2.\n", "G1 X0. Y0.\n",
+                    "N60 G2 X4. Y0. I2. J0.\n", "G3 X0. Y0. R2.5\n", "G3 X4. Y0. I2. J0.\n"]
+        assert [line.replace("G00", "G0").replace("G01", "G1").replace("G02", "G2").replace("G03", "G3")
+                for line in taken] == expected
     assert all(line in out for line in taken)
 
 
@@ -220,31 +256,30 @@ class _Overriding(WordWriter):
         return ["G1", "X0."]
 
 
-class _DeclaringBase(WordWriter):
-    """Declares its own ``motion_words`` agrees with the base."""
-
-    STRAIGHT_OVERRIDES = frozenset({"motion_words"})
+class _Delegating(WordWriter):
+    """Overrides ``motion_words`` with the base's own: still an override (the lane cannot know)."""
 
     def motion_words(self, s: object, block: Block) -> list[str]:  # type: ignore[override]
         return super().motion_words(s, block)  # type: ignore[arg-type]
 
 
-class _OverridingAgain(_DeclaringBase):
-    """Overrides ``motion_words`` again: its parent's declaration does not speak for it."""
+class _Normalizing(WordWriter):
+    """Overrides how a block of its own dialect is normalised."""
 
-    def motion_words(self, s: object, block: Block) -> list[str]:  # type: ignore[override]
-        return ["G1", "X0."]
+    def normalized(self, block: Block) -> str:
+        return super().normalized(block).lower()
 
 
-def test_an_undeclared_override_turns_the_path_off() -> None:
-    assert WordWriter.straight_path()
-    assert not _Overriding.straight_path()
-    assert _DeclaringBase.straight_path()
-    assert not _OverridingAgain.straight_path()
+def test_an_override_turns_the_lane_off() -> None:
+    """Whatever an override does, the lane is not taken for its class (a plugin declares nothing)."""
+    assert own(WordWriter, STRAIGHT_METHODS) and own(WordWriter, COPY_METHODS)
+    assert not own(_Overriding, STRAIGHT_METHODS)
+    assert not own(_Delegating, STRAIGHT_METHODS)
+    assert not own(_Normalizing, COPY_METHODS) and own(_Normalizing, STRAIGHT_METHODS)
 
 
 def test_canonical_numbers_have_at_most_max_places() -> None:
-    """``straight_move`` relies on it: a writer exact to ``MAX_PLACES`` places writes every canonical number
+    """``StraightLane`` relies on it: a writer exact to ``MAX_PLACES`` places writes every canonical number
     as written, so only its magnitude is tested (``postproc.numbers.SHORT_RANGE``)."""
     from postproc.numbers import CANONICAL_BLOCK, MAX_PLACES
     from postproc.rs274.canonical_line import scan

@@ -31,10 +31,8 @@ from .lathe_codes import LATHE_CODES
 from .macro import LOCAL_LETTERS
 
 
-_WATCHED = frozenset((CONTROL, ASSIGN, "ProgramStart", "ProgramControl"))
 _BESIDE_A_STATEMENT = frozenset((ASSIGN, "Sequence", "BlockDelete", "Comments"))
 """What a macro statement may share its block with (Fanuc reads ``N10 #1=2. (NOTE)``, not ``#1=2. X10.``)."""
-"""Sections ``FanucWriter.write_block`` looks at (subprogram starts and ends, program numbers and ends)."""
 
 
 class FanucWriter(LatheWordWriter):
@@ -52,10 +50,10 @@ class FanucWriter(LatheWordWriter):
     """Program numbers are ``O0001``-``O9999`` (DIALECTS.md 1.1 [K]; 8 digits only on a 30i with an option);
     a subprogram of another dialect without one gets the first free number from O2000 (below O8000,
     which controls often lock [V])."""
-    STRAIGHT_OVERRIDES: ClassVar[frozenset[str]] = frozenset({"write_block"})
-    """Normalised back to Fanuc, a block of a move, its block number and feed rate is written by the base:
-    this ``write_block`` captures only another dialect's named subprograms and watches none of those
-    sections (``WordWriter.straight_move``)."""
+
+    STRUCTURE: ClassVar[frozenset[str]] = frozenset((CONTROL, ASSIGN))
+    """A subprogram of another dialect starts or ends (it goes after the main program), or an assignment
+    shares its block with words (Fanuc reads a macro statement on a block of its own)."""
 
     def __init__(self, ctx: Context, source_dialect: str, target: type[Dialect] | None = None) -> None:
         super().__init__(ctx, source_dialect, target)
@@ -64,34 +62,26 @@ class FanucWriter(LatheWordWriter):
         (label, None, 0) of a while loop; the depth is the ``DO`` number (Fanuc nests DO1-DO3)."""
         self.names = SubprogramNames(self.SUBPROGRAM_NAMES)
         """Another dialect's subprogram names and program numbers -> the program numbers written."""
-        self.capture: list[str] | None = None
-        """The text of the named subprogram being written (it goes after the main program)."""
         self.subprograms: list[str] = []
+        """The named subprograms written (``set_aside`` holds the one being written), for after the main
+        program."""
         self.ended = False
         """The main program's end (M02/M30) was written."""
 
-    def write_block(self, block: Block) -> str | None:
-        if self.capture is None and _WATCHED.isdisjoint(block.sections):
-            return LatheWordWriter.write_block(self, block)  # the common block: nothing to number or capture
+    def structure_block(self, block: Block) -> str | None:
         if ASSIGN in block.sections and not block.sections.keys() <= _BESIDE_A_STATEMENT:
             return self.words_then_assignment(block)
         control = block.sections.get(CONTROL)
         if self.source_dialect != self.DIALECT and isinstance(control, (SubStart, SubEnd)):
             return self.named_subprogram(control, block)
-        try:
-            text = super().write_block(block)
-        except UnsupportedError as err:
-            if self.capture is None:
-                raise
-            text = self.unsupported_block(block, err)
-        kind = getattr(block.sections.get("ProgramControl"), "kind", None)
-        if kind in ("end", "end_rewind") and self.capture is None:
+        return super().structure_block(block)
+
+    def program_control_words(self, s: Any, block: Block) -> list[str]:
+        """The main program's end is noted (the named subprograms follow it, ``finish``)."""
+        words = super().program_control_words(s, block)
+        if s.kind in ("end", "end_rewind") and self.set_aside is None:
             self.ended = True
-        if self.capture is not None:
-            if text:
-                self.capture.append(text)
-            return None
-        return text
+        return words
 
     def words_then_assignment(self, block: Block) -> str | None:
         """A block that assigns and has words (ISG ``G01 X10 P1=2``, LinuxCNC ``#1=2 G1 X10``): Fanuc
@@ -104,28 +94,26 @@ class FanucWriter(LatheWordWriter):
         assignment = Block(block.line, None, block.eol)
         assignment.sections = {k: v for k, v in sections.items() if k == ASSIGN or k == "BlockDelete"}
         texts = [self.write_block(words), self.write_block(assignment)]
-        if self.capture is not None:
-            return None  # both lines went into the subprogram being captured
         return "".join(text for text in texts if text)
 
     def named_subprogram(self, control: SubStart | SubEnd, block: Block) -> str | None:
-        """Start capturing a named subprogram's text (``O<n>``), or end it (``M99``) and keep it for
-        after the main program."""
+        """Start setting a named subprogram's text aside (``O<n>``; ``Writer.set_aside``), or end it
+        (``M99``) and keep it for after the main program."""
         eol = block.eol or "\n"
         if isinstance(control, SubStart):
-            if self.capture is not None:
+            if self.set_aside is not None:
                 self.unsupported("a subprogram defined inside another", block)
             comments = block.sections.get("Comments")
             note = "".join(f" {self.comment(t)}" for t in getattr(comments, "texts", ()))
-            self.capture = [f"O{self.subprogram_number(control.name, block):04d}{note}{eol}"]
+            self.set_aside = [f"O{self.subprogram_number(control.name, block):04d}{note}{eol}"]
             return None
-        if self.capture is None:
+        if self.set_aside is None:
             self.unsupported(f"the end of subprogram {control.name}, which no written line opened", block)
         if control.value is not None:
             self.unsupported("a subprogram end returning a value", block)
-        self.capture.append("M99" + eol)
-        self.subprograms.append("".join(self.capture))
-        self.capture = None
+        self.set_aside.append("M99" + eol)
+        self.subprograms.append("".join(self.set_aside))
+        self.set_aside = None
         return None
 
     def subprogram_number(self, name: str, block: Block) -> int:
@@ -147,7 +135,7 @@ class FanucWriter(LatheWordWriter):
         """The named subprograms, after the main program's end (where Fanuc looks for them)."""
         if not self.subprograms:
             return super().finish()
-        if not self.ended or self.capture is not None:
+        if not self.ended or self.set_aside is not None:
             raise UnsupportedError("named subprograms need the main program's end (M02/M30) before them, and "
                                    "each its own end")
         return super().finish() + "".join(self.subprograms)

@@ -28,7 +28,6 @@ from __future__ import annotations
 from typing import Any, ClassVar
 
 from postproc.ir import Block, ProgramControl, Section
-from postproc.state import PLANE_AXES
 from postproc.rs274.codes import CodeTable
 from postproc.rs274.writer import WordWriter
 
@@ -49,22 +48,18 @@ class GrblWriter(WordWriter):
     CYCLE_CANCEL_IS_MOTION: ClassVar[bool] = True
     """G80 is a motion code here: ``G80 G0`` is refused, a block's G0-G3 ends the cycle by itself."""
     BARE_FEED_MOTION_NEEDS_FEED: ClassVar[bool] = True
-    STRAIGHT_OVERRIDES: ClassVar[frozenset[str]] = frozenset({"write_block", "motion_words", "item_line"})
-    """A straight move of X, Y and Z (``STRAIGHT_AXES``) is never empty, drops nothing, is no arc and no tape
-    mark, and its line is ASCII without a real-time character (a canonical line's letters, digits, '.',
-    '-' and spaces): these overrides write it as the base does (``item_line`` differs only at a pause)."""
-    STRAIGHT_ARC_OVERRIDES: ClassVar[frozenset[str]] = STRAIGHT_OVERRIDES
-    """And an arc: ``motion_words`` refuses only a helix with no end point in its plane (``straight_move``
-    leaves such an arc to it) and axes beyond X, Y and Z (``STRAIGHT_AXES``)."""
-    STRAIGHT_AXES: ClassVar[frozenset[str]] = GRBL_AXES
+    DRIVEN_AXES: ClassVar[frozenset[str]] = GRBL_AXES
+    FULL_CIRCLE_HELIX: ClassVar[bool] = False
+    """What ``close_full_circles`` could not close (a helix with no end point in its plane, in absolute
+    mode) grbl refuses: its arc needs an end point in the plane."""
+    STRUCTURE: ClassVar[frozenset[str]] = frozenset(("TapeMark",))
     BLANK_AS_TRACE: ClassVar[bool] = True
     """G80, G98/G99, G64 and the like are not grbl's: a block of nothing else is a trace of its source."""
 
     # -- blocks ------------------------------------------------------------------------------------
-    def write_block(self, block: Block) -> str | None:
-        if "TapeMark" in block.sections:
-            return self.comment("%") + (block.eol or "\n")
-        return super().write_block(block)
+    def structure_block(self, block: Block) -> str | None:
+        """grbl's parser rejects '%': a tape mark is written as a comment."""
+        return self.comment("%") + (block.eol or "\n")
 
     def item_line(self, item: Section, block: Block) -> str:
         """A pause inside an expansion is for the operator to work at the tool (orient it by hand, jog it
@@ -98,17 +93,6 @@ class GrblWriter(WordWriter):
         if not s.one_shot and s.mode == "cutting":
             return []
         return super().path_control_words(s, block)
-
-    def motion_words(self, s: Any, block: Block) -> list[str]:
-        extra = [a for a in s.axes if a not in GRBL_AXES]
-        if extra:
-            self.unsupported(f"motion of axis {extra[0]} (grbl drives X, Y and Z)", block)
-        if s.mode in ("cw", "ccw"):
-            plane = block.sections.get("Plane")
-            a0, a1, _ = PLANE_AXES[plane.plane if plane is not None else self.modal.plane]  # type: ignore[attr-defined]
-            if a0 not in s.axes and a1 not in s.axes:  # what close_full_circles could not close
-                self.unsupported("a helical full circle with no end point in its plane, in absolute mode", block)
-        return super().motion_words(s, block)
 
     def tool_length_offset_words(self, s: Any, block: Block) -> list[str]:
         if s.mode != "cancel":

@@ -32,7 +32,6 @@ import copy
 from typing import Any, ClassVar
 
 from postproc.errors import Location, UnsupportedError
-from postproc.event_order import after_motion
 from postproc.ir import Block, ProgramControl, Section
 from postproc.context import Context
 from postproc.dialect import Dialect
@@ -79,15 +78,15 @@ class LinuxcncWriter(WordWriter):
     """G80 is a motion code here: ``G80 G0`` is refused, a block's G0-G3 ends the cycle by itself."""
     BARE_FEED_MOTION_NEEDS_FEED: ClassVar[bool] = True
     SPELLING: ClassVar[ExprSpelling | None] = LINUXCNC_SPELLING
-    STRAIGHT_OVERRIDES: ClassVar[frozenset[str]] = frozenset({"write_block", "generate", "motion_words",
-                                                              "feed_words"})
-    """A straight move has no M19 or compensation to reorder, is no arc or reference return, changes no
-    units, is no tape mark or program end, and is never a program's first block (its motion mode is set
-    by a block before it, which ``write_block`` saw): these overrides write it as the base does."""
-    STRAIGHT_ARC_OVERRIDES: ClassVar[frozenset[str]] = STRAIGHT_OVERRIDES
-    """And an arc: ``motion_words`` refuses only a zero-radius arc (``straight_move`` leaves it to it) and
-    a reference return under compensation; a block that programs its motion code takes the path only once
-    ``write_block`` has seen the program open (``straight_codes_now``)."""
+    STRUCTURE: ClassVar[frozenset[str]] = frozenset(("TapeMark", "ProgramStart", "ProgramControl"))
+    """A tape mark opens or closes the program, or is a lone one; a program start or tape mark ends the
+    ``o<n> sub`` body being written; a program end is noted (a program number after it starts a subprogram)."""
+    SPLIT: ClassVar[frozenset[str]] = frozenset(("CutterCompensation", "SpindleOrientation"))
+    """Compensation turned on beside settings rs274 refuses to change under it, and M19 beside other actions
+    (``split_block``)."""
+    PER_REV_NEEDS_SPEED: ClassVar[str] = ("a feed move in feed per revolution (G95) with no spindle speed (rs274: \"Cannot "
+                                          "feed with zero spindle speed in feed per rev mode\"; program S first)")
+    ZERO_RADIUS_ARC: ClassVar[str] = "rs274 refuses it: \"Zero-radius arc\""
 
     def __init__(self, ctx: Context, source_dialect: str, target: type[Dialect] | None = None) -> None:
         super().__init__(ctx, source_dialect, target)
@@ -102,16 +101,15 @@ class LinuxcncWriter(WordWriter):
         """O-word labels and subprogram names written so far."""
         self._counter = 0
         self._ended = False
+        """The main program's end was written: an ``O<n>`` now starts a subprogram."""
         self._cutter_on = False
         """Cutter compensation is on (rs274 refuses turning it on again, and G28/G30 under it)."""
         self._cutter_before = False
         """Whether compensation was on before the block whose compensation word was written last."""
-        self._opened: bool | None = None
-        """Whether the program opened with '%' (None: nothing written yet)."""
+        self._whole = False
+        """An orientation split's part is being written: it is one line (``split_block``)."""
         self._closed = False
         """A '%' closed the program opened with one (rs274 then needs no M2/M30)."""
-        self.straight_codes_now = False
-        """The main program's end was written: an ``O<n>`` now starts a subprogram."""
         self.names = SubprogramNames(NAMES)
         """Another dialect's subprograms: their o-word names and how each is called."""
         self._body: str | None = None
@@ -149,15 +147,10 @@ class LinuxcncWriter(WordWriter):
                              "planes with cutter radius compensation on\")", block)
         return super().plane_words(s, block)
 
-    def motion_words(self, s: Any, block: Block) -> list[str]:
-        if s.mode in ("home", "home2") and self._cutter_on:
+    def check_reference_return(self, s: Any, block: Block) -> None:
+        if self._cutter_on:
             self.unsupported("G28/G30 with cutter compensation on (rs274: \"Cannot use g28 or g30 with cutter "
                              "radius comp\")", block)
-        if s.mode in ("cw", "ccw") and s.radius is None and s.center is not None \
-                and all(v.__class__ is float and v == 0.0 for v in s.center.values()):
-            self.unsupported("an arc of zero radius (a controller that runs it does nothing; rs274 refuses it: "
-                             "\"Zero-radius arc\")", block)
-        return WordWriter.motion_words(self, s, block)
 
     def machine_coordinates_words(self, s: Any, block: Block) -> list[str]:
         distance = block.sections.get("DistanceMode")
@@ -179,11 +172,11 @@ class LinuxcncWriter(WordWriter):
             words.append("F" + self.feed_number(feed, block))
         return words
 
-    def feed_words(self, s: Any, block: Block) -> list[str]:
+    def feed_beside_units(self, s: Any, block: Block) -> list[str]:
         """The neutral F is in the block's units; LinuxCNC reads it in the units before the block."""
         units = block.sections.get("Units")
         if units is None or units.system == self.units_before or self.inverse_time:  # type: ignore[attr-defined]
-            return super().feed_words(s, block)
+            return super().feed_beside_units(s, block)
         modal = self.modal
         after, modal.units = modal.units, self.units_before
         factor = MM_PER_INCH if after == "inch" else 1.0 / MM_PER_INCH
@@ -314,48 +307,20 @@ class LinuxcncWriter(WordWriter):
             self.unsupported(f"{code} sharing its line with other words ({', '.join(others)}): rs274 refuses it",
                              block)
 
-    def write_block(self, block: Block) -> str | None:
+    def structure_block(self, block: Block) -> str | None:
         sections = block.sections
         if self._body is not None and ("TapeMark" in sections or "ProgramStart" in sections):
             ended = self._end_body()
             return ended + (self.write_block(block) or "")
         if "TapeMark" in sections:
-            if self._opened is False and not self._ended:
+            if self.opening is False and not self._ended:
                 return self._lone_tape_mark(block)
-            self._closed = self._opened is True  # a '%' after the opening one
-            self._opened = self._opened is None or self._opened
-        elif sections and self._opened is None and sections.keys() != {"Comments"}:
-            self._opened = False
-        self.straight_codes_now = self._opened is not None  # its first block seen: ``straight_move`` may follow
-        if self.modal.feed_mode == "per_rev" or "FeedMode" in sections:
-            self._spindle_turns(block)
-        text = super().write_block(block)
-        end = block.sections.get("ProgramControl")
+            self._closed = self.opening is True  # a '%' after the opening one
+        text = super().structure_block(block)
+        end = sections.get("ProgramControl")
         if end is not None and end.kind in ("end", "end_rewind"):  # type: ignore[attr-defined]
             self._ended = True
         return text
-
-    def _spindle_turns(self, block: Block) -> None:
-        """rs274 refuses a feed move (G1, G2, G3, even one that only selects the mode) in feed per revolution
-        while the spindle speed is zero, as it is until an S ("Cannot feed with zero spindle speed in feed
-        per rev mode"); the block's own S and G95 come first."""
-        sections = block.sections
-        motion = sections.get("Motion")
-        if motion is None or motion.mode not in ("linear", "cw", "ccw"):  # type: ignore[attr-defined]
-            return
-        mode = sections.get("FeedMode")
-        if (self.modal.feed_mode if mode is None else mode.mode) != "per_rev":  # type: ignore[attr-defined]
-            return
-        control = sections.get("SpindleControl")
-        turning = self.modal.spindle if control is None or after_motion("SpindleControl", control) \
-            else control.direction  # type: ignore[attr-defined]
-        if turning == "stop" and motion.axes:  # type: ignore[attr-defined]
-            return  # refused when read: a feed-per-revolution move with the spindle stopped
-        speed = sections.get("SpindleSpeed")
-        rpm = self.modal.spindle_rpm if speed is None else speed.rpm  # type: ignore[attr-defined]
-        if rpm is None or (isinstance(rpm, (int, float)) and rpm == 0):
-            self.unsupported("a feed move in feed per revolution (G95) with no spindle speed (rs274: \"Cannot feed "
-                             "with zero spindle speed in feed per rev mode\"; program S first)", block)
 
     def _lone_tape_mark(self, block: Block) -> str:
         """A closing ``%`` with no opening one and no program end before it: rs274 refuses it ("Bad
@@ -377,7 +342,7 @@ class LinuxcncWriter(WordWriter):
             return closing
         self.ctx.diagnostics.warn("the program has no end (M2/M30): M2 written after its last block, as LinuxCNC "
                                   "refuses a program that runs out", Location(self.ctx.file, max(self.last_line, 1)))
-        return closing + self._end(self.last_line) + ("%\n" if self._opened else "")
+        return closing + self._end(self.last_line) + ("%\n" if self.opening else "")
 
     def _end(self, line: int) -> str:
         """The program end a source without one gets (M2: an end that does not rewind)."""
@@ -450,17 +415,20 @@ class LinuxcncWriter(WordWriter):
             self.unsupported(f"block delete level {s.level} (LinuxCNC has one block delete switch)", block)
         return ["/"]
 
-    def generate(self, block: Block) -> str:
+    def split_block(self, block: Block) -> str | None:
         """M19 in a block of its own after the block's other actions: LinuxCNC orients before it runs the
         block's spindle codes (the same modal group: ``M5 M19`` is refused), dwell and motion, and reads its
         ``R`` as the angle (so an R arc, a cycle's R or I/J/K beside it are refused); the neutral order is
-        the other way round. What the block does after the orientation (coolant off, a stop) follows it."""
+        the other way round. What the block does after the orientation (coolant off, a stop) follows it.
+        Compensation turned on beside what it locks: those settings first (``_settings_first``)."""
+        if self._whole:
+            return None
         sections = block.sections
         comp = sections.get("CutterCompensation")
         if comp is not None and comp.mode != "off" and not _COMP_LOCKED.isdisjoint(sections):  # type: ignore[attr-defined]
             return self._settings_first(block)
         if "SpindleOrientation" not in sections or "CompoundMotion" in sections or sections.keys() <= _WITH_ORIENT:
-            return WordWriter.generate(self, block)
+            return None
         first = Block(block.line, None, block.eol or "\n")
         then = Block(block.line, None, block.eol)
         first.sections = {}
@@ -469,8 +437,16 @@ class LinuxcncWriter(WordWriter):
             after = key in _AFTER_ORIENT and (key != "Coolant" or section.mode == "off")  # type: ignore[attr-defined]
             (then if after else first).sections[key] = section
         if not first.sections:
-            return super().generate(block)  # M19 then coolant off or a stop: LinuxCNC's own order
-        return super().generate(first) + super().generate(then)
+            return self._one_line(block)  # M19 then coolant off or a stop: LinuxCNC's own order
+        return self._one_line(first) + self._one_line(then)
+
+    def _one_line(self, block: Block) -> str:
+        """``block`` written without a split."""
+        self._whole = True
+        try:
+            return self.generate(block)
+        finally:
+            self._whole = False
 
     def spindle_orientation_words(self, s: Any, block: Block) -> list[str]:
         """M19 R<angle>: a bare M19 leaves the angle to the machine's default."""

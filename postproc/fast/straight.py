@@ -1,0 +1,188 @@
+"""The straight lane: a CAM program's usual block, ``N.. G1 X.. Y.. Z.. F..``, written without the word
+writer's section dispatch.
+
+A speed-only copy of what ``WordWriter.write_block`` writes for such a block, kept apart from the classes
+dialects extend (STYLE.md 11). ``postproc.fast.lane`` installs it for a run only where the writer class
+writes such a block with the base's own methods, and ``tests/test_straight_moves.py`` holds it to the
+general path on random programs. It answers None for any block it is not sure of; the general path then
+writes it.
+"""
+
+from __future__ import annotations
+
+from typing import Final
+
+from mypy_extensions import mypyc_attr
+
+from ..expr import Expr
+from ..ir import Block, Feed, Motion, Sequence
+from ..numbers import MAX_PLACES, SHORT_RANGE, as_written
+from ..rs274.writer import WordWriter
+from ..state import PLANE_AXES
+
+AXES: Final = frozenset("XYZABCUVW")
+STRAIGHT_KEYS: Final = frozenset(("Sequence", "Motion", "Feed"))
+"""A block of only these sections (a move, its block number and feed rate) is a straight block."""
+_CENTER_LETTER: Final = {"X": "I", "Y": "J", "Z": "K"}
+
+
+def _copied(number: str, value: object, read: object, most: int, every: bool) -> bool:
+    """Whether a canonical word's ``number`` (which reads as ``read``) is how a writer exact to ``most``
+    places writes ``value`` (``every``: ``most`` covers every canonical number)."""
+    if type(value) is not float:
+        return False
+    return read == value and (-SHORT_RANGE < value < SHORT_RANGE if every else as_written(number, value, most))
+
+
+def _plain_arc(axes: dict[str, float | Expr], center: dict[str, float | Expr] | None, plane: str) -> bool:
+    """An arc the lane writes: its centre is not its start (the general path refuses a zero-radius arc
+    where the controller does) and its end point names an axis of its plane (a full circle in the plane,
+    or a helix with no end point in it, is left to the general path and the writers' checks). Its centre's
+    words are matched in its order, which the block syntax builds as the general path writes them: I, J, K."""
+    if center is not None:
+        zero = True
+        for offset in center.values():
+            if type(offset) is not float or offset != 0.0:
+                zero = False
+        if zero:
+            return False
+    first, second, _ = PLANE_AXES[plane]
+    return first in axes or second in axes
+
+
+@mypyc_attr(allow_interpreted_subclasses=True)
+class CopyLane:
+    """A straight block normalised back to its own dialect is its source line, as ``normalized`` writes
+    a canonical block (installed where the writer copies canonical numbers: leading zeros, no rounding,
+    no renumbering)."""
+
+    def __init__(self, writer: WordWriter) -> None:
+        self.writer = writer
+
+    def write(self, block: Block) -> str | None:
+        """The block's source line, or None."""
+        sections = block.sections
+        text = block.text
+        if text is None:
+            return None
+        for key in sections:  # (one pass: of the straight keys only the feed rate is modal)
+            if key not in STRAIGHT_KEYS:
+                return None
+        writer = self.writer
+        if writer.PER_REV_NEEDS_SPEED and writer.modal.feed_mode == "per_rev":
+            return None  # (the general path checks the spindle speed)
+        if "Feed" in sections:
+            writer.modal.apply(sections)
+        if writer.carry:
+            writer.exact_axes(block)
+        return text + (block.eol or "\n")
+
+
+@mypyc_attr(allow_interpreted_subclasses=True)
+class StraightLane:
+    """A canonical block of another dialect that is a rapid, feed or arc move of numbers, maybe with a
+    block number and a feed rate, its words in that order, each number the value it reads as and one the
+    writer writes as written (``WordWriter.source_number``), with nothing carried: its source line with
+    the writer's motion code after its block number. Of the modal state such a block changes only the
+    feed rate (``ModalState.apply``)."""
+
+    def __init__(self, writer: WordWriter) -> None:
+        self.writer = writer
+        codes = writer.codes
+        self.codes: dict[str, str] = {}
+        """Motion mode -> its code, spelled once: rapid, linear, cw, ccw (what the table has)."""
+        for mode in ("rapid", "linear", "cw", "ccw"):
+            code = codes.spell("motion", mode)
+            if code is not None:
+                self.codes[mode] = code
+        driven = writer.DRIVEN_AXES
+        self.driven: frozenset[str] = AXES if driven is None else driven
+        """The axes a move may have to take the lane (another is left to the general path)."""
+
+    def write(self, block: Block) -> str | None:
+        """The block's text, or None."""
+        writer = self.writer
+        sections = block.sections
+        text = block.text
+        motion = sections.get("Motion")
+        if not isinstance(motion, Motion) or text is None or writer.carry or not writer.source_numbers:
+            return None
+        if writer.PER_REV_NEEDS_SPEED and writer.modal.feed_mode == "per_rev":
+            return None  # (the general path checks the spindle speed)
+        mode = motion.mode
+        axes = motion.axes
+        if mode is None or not axes:
+            return None
+        code = self.codes.get(mode)
+        if code is None:
+            return None
+        center = motion.center
+        radius = motion.radius
+        arc = 0
+        if center is not None or radius is not None:
+            if mode != "cw" and mode != "ccw" or not _plain_arc(axes, center, writer.modal.plane):
+                return None
+            arc = len(center) if center is not None else 1
+        elif mode != "rapid" and mode != "linear":
+            return None
+        sequence = sections.get("Sequence")
+        feed = sections.get("Feed")
+        besides = (sequence is not None) + (feed is not None)
+        words = block.words
+        at = 0
+        head = 0
+        values = block.values  # what the words read as (a reader's, untouched since: ``Block.values``)
+        if sequence is not None:
+            if not isinstance(sequence, Sequence):
+                return None
+            letter, number = words[0]
+            if letter != "N" or values.get("N") != sequence.number or number[0] == "0" and len(number) > 1:
+                return None  # (N010 is written N10)
+            at = 1
+            head = len(number) + 1
+        coded = at < len(words) and words[at][0] == "G"  # the block's own motion code: it is rewritten
+        if len(sections) != 1 + besides or len(words) != len(axes) + besides + arc + coded:
+            return None
+        written = 0
+        if coded:
+            written = len(words[at][1]) + 1
+            at += 1
+        most = writer.exact_mm if writer.modal.units == "mm" else writer.exact_inch
+        every = most >= MAX_PLACES  # every canonical number has at most MAX_PLACES: as_written is the range
+        driven = self.driven
+        for axis, value in axes.items():
+            letter, number = words[at]
+            at += 1
+            if letter != axis or letter not in driven or type(value) is not float or not (
+                    -SHORT_RANGE < value < SHORT_RANGE if every else as_written(number, value, most)) \
+                    or values.get(letter) != value:  # the number the word reads as: no step changed it
+                return None
+        if arc:
+            if center is not None:
+                for axis, value in center.items():
+                    letter, number = words[at]
+                    at += 1
+                    if letter != _CENTER_LETTER[axis] or not _copied(number, value, values.get(letter), most, every):
+                        return None
+            else:
+                letter, number = words[at]
+                at += 1
+                if letter != "R" or not _copied(number, radius, values.get(letter), most, every):
+                    return None
+        if feed is not None:
+            if not isinstance(feed, Feed):
+                return None
+            rate = feed.value
+            letter, number = words[at]
+            if letter != "F" or type(rate) is not float or not (
+                    -SHORT_RANGE < rate < SHORT_RANGE if every else as_written(number, rate, most)) \
+                    or values.get(letter) != rate:
+                return None
+            writer.modal.feed = rate
+        eol = block.eol or "\n"
+        if coded:
+            start = head + 1 if head else 0
+            return f"{text[:start]}{code}{text[start + written:]}{eol}"
+        if head:
+            return f"{text[:head]} {code}{text[head:]}{eol}"
+        return f"{code} {text}{eol}"

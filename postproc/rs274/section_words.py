@@ -1,0 +1,293 @@
+"""SectionWords: the words of a block's modal and auxiliary sections (units, offsets, spindle, tool,
+coolant, program control, settings...), the second layer of ``WordWriter`` (``postproc.rs274.writer``).
+
+Each ``<key>_words`` method writes one section; every code is spelt from the dialect's ``CODES`` table (the
+inverse of what its reader reads), so a meaning the dialect has no row for is an ``UnsupportedError``,
+never another dialect's spelling.
+"""
+
+from __future__ import annotations
+
+from typing import Any, ClassVar, Final
+
+from mypy_extensions import mypyc_attr
+
+from ..context import Context
+from ..dialect import Dialect
+from ..errors import UnsupportedError
+from ..expr import Expr
+from ..ir import Block, Motion
+from ..machine_functions import RIGID_TAP, refused_rigid_tap
+from ..state import MM_PER_INCH
+from .codes import CodeTable
+from .word_numbers import NumberWriter
+
+UNNAMED_PROGRAM_NUMBER: Final = 1
+"""The ``O`` number of a named program when neither the set-up nor the command line gives one."""
+MOTION_GROUP: Final = frozenset({"rapid", "linear", "cw", "ccw"})
+"""Motion modes written with a code of the motion group (G0-G3)."""
+
+
+@mypyc_attr(allow_interpreted_subclasses=True)
+class SectionWords(NumberWriter):
+    """Writes the words of each section but the motion; ``WordWriter`` assembles them into blocks."""
+
+    CODES: ClassVar[CodeTable] = CodeTable(())
+    """The dialect's code table: the writer spells each code as the table's first row for its meaning,
+    and a meaning with no row is an ``UnsupportedError``."""
+
+    DWELL_WORD: ClassVar[str] = ""
+    """Address of the dwell time, e.g. 'X' or 'P' ('': the dialect writes no dwell); its unit is the
+    target's ``DWELL_UNIT``."""
+
+    CYCLE_CANCEL_IS_MOTION: ClassVar[bool] = False
+    """True where the cycle cancel is one of the motion codes (RS274/NGC: G80 and G0 in one block are a
+    modal-group error): a block that writes a motion code leaves the cancel out, the motion code ends
+    the cycle by itself."""
+
+    def __init__(self, ctx: Context, source_dialect: str, target: type[Dialect] | None = None) -> None:
+        super().__init__(ctx, source_dialect, target)
+        self.codes = self.table()
+        """The code table written (a dialect with one per machine type picks it from the context)."""
+        self.named_numbered = False
+        """A named program's start was written with ``UNNAMED_PROGRAM_NUMBER`` (a second one is a comment)."""
+
+    def table(self) -> CodeTable:
+        """The code table to write with; the dialect's ``CODES`` unless it has one per machine type."""
+        return self.CODES
+
+    def comment(self, text: str) -> str:
+        return "(" + text.replace("(", "[").replace(")", "]") + ")"
+
+    def comment_line(self, text: str) -> str:
+        return self.comment(text) + "\n"
+
+    def comments_words(self, s: Any, block: Block) -> list[str]:
+        return [self.comment(t) for t in s.texts]
+
+    def program_start(self, s: Any, block: Block) -> str:
+        """``O`` and the program's number; a named program (ISG/Fagor ``%name``) takes the number the set-up
+        or ``--program-number`` gives, else ``O0001`` with a warning, and its name follows as a comment (a
+        comment on the ``O`` line is how Fanuc shows a program's name in its directory [K]). A later named
+        start, which the source runs through, is its name as a comment."""
+        number = s.number
+        if number is None and self.named_numbered:
+            # another program start in the flow (an ISG file with a second %name runs on through it): a
+            # second O0001 would be a second program with the same number, which Fanuc refuses
+            return self.comment(str(s.name))
+        if number is None:
+            self.named_numbered = True
+            number = UNNAMED_PROGRAM_NUMBER
+            self.ctx.diagnostics.warn(
+                f"the program {s.name!r} has no number in the {self.DIALECT} dialect: written as "
+                f"O{number:04d} (give one with --program-number or <Output programNumber>)", self.ctx.at(block))
+        text = f"O{int(number):04d}"
+        return text + " " + self.comment(str(s.name)) if s.name else text
+
+    def block_delete_words(self, s: Any, block: Block) -> list[str]:
+        return ["/" if s.level == 1 else f"/{s.level}"]
+
+    def sequence_words(self, s: Any, block: Block) -> list[str]:
+        return [f"N{s.number}"]
+
+    def code(self, kind: str, arg: object, what: str, block: Block) -> str:
+        """The dialect's spelling of ``(kind, arg)``; an ``UnsupportedError`` naming ``what`` without one."""
+        code = self.codes.spell(kind, arg)
+        if code is None:
+            self.unsupported(what, block)
+        return code
+
+    def _code(self, kind: str, arg: object, what: str, block: Block) -> list[str]:
+        return [self.code(kind, arg, what, block)]
+
+    def plane_words(self, s: Any, block: Block) -> list[str]:
+        return self._code("plane", s.plane, f"the {s.plane} plane", block)
+
+    def units_words(self, s: Any, block: Block) -> list[str]:
+        if s.system != self.modal.units and self.carry:
+            factor = MM_PER_INCH if s.system == "mm" else 1.0 / MM_PER_INCH
+            self.carry = {axis: error * factor for axis, error in self.carry.items()}
+        self.modal.set_units(s.system)  # the block's numbers are written in its units
+        return self._code("units", s.system, f"{s.system} units", block)
+
+    def distance_mode_words(self, s: Any, block: Block) -> list[str]:
+        self.modal.distance = s.mode
+        return self._code("distance", s.mode, f"{s.mode} distance mode", block)
+
+    def work_offset_words(self, s: Any, block: Block) -> list[str]:
+        return self._code("offset", s.index, f"work offset {s.index}", block)
+
+    def feed_mode_words(self, s: Any, block: Block) -> list[str]:
+        return self._code("feed_mode", s.mode, f"feed mode {s.mode}", block)
+
+    def return_level_words(self, s: Any, block: Block) -> list[str]:
+        return self._code("return", s.level, f"return to the {s.level} level", block)
+
+    def cutter_compensation_words(self, s: Any, block: Block) -> list[str]:
+        if s.mode != "off" and not self.capable("CUTTER_COMPENSATION"):
+            self.unsupported(f"cutter radius compensation ({s.mode})", block)
+        words = self._code("cutter", s.mode, f"cutter compensation {s.mode}", block)
+        if s.register is not None:
+            words.append("D" + self.register(s.register, block))
+        return words
+
+    def tool_length_offset_words(self, s: Any, block: Block) -> list[str]:
+        if s.mode != "cancel" and not self.capable("TOOL_LENGTH_OFFSET"):
+            self.unsupported("a tool length offset from a table", block)
+        words = self._code("length", s.mode, f"tool length offset {s.mode}", block)
+        if s.register is not None:
+            words.append("H" + self.register(s.register, block))
+        return words
+
+    def path_control_words(self, s: Any, block: Block) -> list[str]:
+        if s.one_shot:
+            return self._code("path_once", s.mode, "a one-shot exact stop", block)
+        return self._code("path", s.mode, f"path control {s.mode}", block)
+
+    MACHINE_MOVES: ClassVar[frozenset[str]] = frozenset(("rapid", "linear"))
+    """Motion modes a block in machine coordinates may move in (RS274/NGC: G0 or G1 in force)."""
+
+    def machine_coordinates_words(self, s: Any, block: Block) -> list[str]:
+        """Machine coordinates qualify the block's move; without one they do nothing, and RS274/NGC refuses
+        them unless G0 or G1 is in force, so they are not written."""
+        motion = block.sections.get("Motion")
+        if motion is None or not getattr(motion, "axes", None):
+            return []  # no move to qualify (``G01 G53``): it does nothing
+        if getattr(motion, "mode", None) not in self.MACHINE_MOVES:
+            self.unsupported(f"a {motion.mode} move in machine coordinates (its machine-coordinate code "  # type: ignore[attr-defined]
+                             f"moves only {' or '.join(sorted(self.MACHINE_MOVES))})", block)
+        return self._code("machine", None, "motion in machine coordinates", block)
+
+    def cycle_cancel_words(self, s: Any, block: Block) -> list[str]:
+        motion = block.sections.get("Motion")
+        if self.CYCLE_CANCEL_IS_MOTION and isinstance(motion, Motion) and motion.mode in MOTION_GROUP:
+            return []  # the block's motion code cancels the cycle
+        return self._code("cycle_cancel", None, "a canned-cycle cancel", block)
+
+    def dwell_words(self, s: Any, block: Block) -> list[str]:
+        code = self.code("dwell", None, "a dwell", block)
+        if not self.DWELL_WORD:
+            self.unsupported("a dwell", block)
+        if isinstance(s.seconds, Expr):
+            if self.target is not None and self.target.DWELL_UNIT == "milliseconds":
+                self.unsupported("a computed dwell time in milliseconds", block)
+            return [code, self.DWELL_WORD + self.expression(s.seconds, block)]
+        if self.target is not None and self.target.DWELL_UNIT == "milliseconds":
+            return [code, f"{self.DWELL_WORD}{round(s.seconds * 1000)}"]
+        return [code, self.DWELL_WORD + self.seconds(s.seconds)]
+
+    def feed_words(self, s: Any, block: Block) -> list[str]:
+        if "Units" in block.sections:
+            return self.feed_beside_units(s, block)
+        return self.feed_rate_words(s, block)
+
+    def feed_beside_units(self, s: Any, block: Block) -> list[str]:
+        """The feed rate of a block that also changes units, which the neutral block gives in its new
+        units; a controller that reads it in the units before the block overrides this (the base writes
+        it as any other)."""
+        return self.feed_rate_words(s, block)
+
+    def feed_rate_words(self, s: Any, block: Block) -> list[str]:
+        """``F`` and the feed rate, in the units in force."""
+        value = s.value
+        if isinstance(value, Expr):
+            self.modal.feed = None  # known only when the program runs
+            return ["F" + self.expression(value, block)]
+        self.modal.feed = value
+        return ["F" + self.feed_number(value, block)]
+
+    def spindle_mode_words(self, s: Any, block: Block) -> list[str]:
+        """Constant surface speed or rpm; a control without the choice runs rpm only, so rpm needs no word."""
+        code = self.codes.spell("spindle_mode", s.mode)
+        if code is None and s.mode == "rpm":
+            return []
+        return self._code("spindle_mode", s.mode, "constant surface speed", block)
+
+    def spindle_speed_words(self, s: Any, block: Block) -> list[str]:
+        rpm = s.rpm
+        if isinstance(rpm, Expr):
+            return ["S" + self.expression(rpm, block)]
+        return ["S" + self.speed(rpm)]
+
+    def tool_select_words(self, s: Any, block: Block) -> list[str]:
+        return ["T" + self.whole(s.number, block)]
+
+    def tool_change_words(self, s: Any, block: Block) -> list[str]:
+        if not self.capable("TOOL_CHANGER"):
+            self.unsupported("a tool change (no tool changer)", block)
+        return self._code("tool_change", None, "a tool change", block)
+
+    def spindle_control_words(self, s: Any, block: Block) -> list[str]:
+        return self._code("spindle", s.direction, f"spindle {s.direction}", block)
+
+    def spindle_orientation_words(self, s: Any, block: Block) -> list[str]:
+        """M19 orients to the angle the machine's parameters hold (the set-up's ``orientAngle``);
+        any other angle cannot be written with it."""
+        code = self.code("orient", None, "an oriented spindle stop", block)
+        if isinstance(s.angle, Expr):  # known when the program runs: the flattened program is checked then
+            self.unsupported(f"an oriented spindle stop at a computed angle ({code} orients to the set-up's "
+                             f"{self.ctx.setup.cycles.orient_angle:g} deg)", block)
+        if abs(s.angle - self.ctx.setup.cycles.orient_angle) > 1e-9:
+            self.unsupported(f"an oriented spindle stop at {s.angle:g} deg ({code} orients to the set-up's "
+                             f"{self.ctx.setup.cycles.orient_angle:g} deg)", block)
+        return [code]
+
+    def coolant_words(self, s: Any, block: Block) -> list[str]:
+        return self._code("coolant", s.mode, f"coolant {s.mode}", block)
+
+    def program_control_words(self, s: Any, block: Block) -> list[str]:
+        return self._code("program", s.kind, f"program {s.kind}", block)
+
+    WORK_OFFSET_SETTING: ClassVar[str] = ""
+    """How the dialect sets a work offset from the program (e.g. 'G10 L2', then P and the axis values,
+    absolute); '' when it has no such spelling."""
+
+    WORK_OFFSET_COUNT: ClassVar[int] = 0
+    """Work systems that spelling numbers P1..P<count> (P1 = the first work system)."""
+
+    SETTING_AXES: ClassVar[frozenset[str]] = frozenset("XYZABCUVW")
+    """Axes a work offset setting may name."""
+
+    SETTING_ADDS_IN_INCREMENTAL: ClassVar[bool] = False
+    """The dialect's work offset setting adds to the offset in incremental mode (Fanuc's G10 under G91):
+    an absolute setting cannot be written while the program is incremental."""
+
+    def data_setting_words(self, s: Any, block: Block) -> list[str]:
+        """A G10 data setting: as written for a controller of its family; else, where exact, the target's
+        absolute work offset setting; anything else has no equivalent here."""
+        family = self.target.family() if self.target is not None else self.DIALECT
+        if s.family == family:
+            return [s.text]
+        why = ""
+        if s.table != "work_offset" or not self.WORK_OFFSET_SETTING:
+            why = "no such table can be set from a program"
+        elif s.incremental:
+            why = "it sets offsets absolutely only (the source adds to the offset in incremental mode)"
+        elif self.SETTING_ADDS_IN_INCREMENTAL and self.modal.distance == "incremental":
+            why = "in incremental mode its setting adds to the offset (program absolute mode first)"
+        elif not 1 <= s.index <= self.WORK_OFFSET_COUNT:
+            why = (f"its work systems are P1-P{self.WORK_OFFSET_COUNT}" if s.index else
+                   "P0 here is not the offset common to all work systems")
+        elif not set(s.values) <= self.SETTING_AXES:
+            why = f"it sets axes {''.join(sorted(self.SETTING_AXES))} only"
+        if why:
+            self.unsupported(f"{s.describe()}: {why}", block)
+        return [*self.WORK_OFFSET_SETTING.split(), f"P{s.index}",
+                *(axis + self.length(value, block, axis) for axis, value in s.values.items())]
+
+    def machine_function_words(self, s: Any, block: Block) -> list[str]:
+        """A machine-specific code as written, for a controller of its family; elsewhere it has no
+        equivalent (``postproc.machine_functions`` comments it out under ``--on-unsupported warn``)."""
+        family = self.target.family() if self.target is not None else self.DIALECT
+        if s.family != family and s.action == RIGID_TAP:
+            raise UnsupportedError(refused_rigid_tap(s, self.DIALECT), self.ctx.at(block))
+        if s.family != family:
+            raise UnsupportedError(f"{s.describe()}, a machine-specific code of the {s.family} family, has no "
+                                   f"equivalent in {self.DIALECT}", self.ctx.at(block))
+        return [s.text]
+
+    def native_code_words(self, s: Any, block: Block) -> list[str]:
+        if s.dialect != self.DIALECT:
+            raise UnsupportedError(f"{s.what} from {s.dialect} has no equivalent in {self.DIALECT}",
+                                   self.ctx.at(block))
+        return [s.text]
