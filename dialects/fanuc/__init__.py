@@ -92,7 +92,7 @@ class Fanuc(Dialect):
             return Pipeline(cls.NAME, [FanucProgramSyntax(), FanucLatheBlockSyntax(), ModalStateSyntax(),
                                        LatheCycleSyntax()])
         from .block_syntax import FanucBlockSyntax
-        return Pipeline(cls.NAME, [FanucProgramSyntax(), FanucBlockSyntax(), CannedCycleResolveSyntax(),
+        return Pipeline(cls.NAME, [FanucProgramSyntax(), FanucBlockSyntax(), CannedCycleResolveSyntax("fanuc"),
                                    ModalStateSyntax()])
 
 
