@@ -8,8 +8,8 @@ last ``Limits.kept_prefix`` blocks for backward jumps; from there it reads the r
 a ``ProgramStore`` and yields the blocks the interpreter executes, with a comment block before each call,
 loop iteration and jump taken.
 
-A dialect subclasses ``ProgramSyntax`` with its data (class attributes below) and, if it needs to, its
-``spell_evaluated``; the base is usable as is for a neutral test of the mechanics.
+A dialect subclasses ``ProgramSyntax`` with its data (class attributes below: its family's ``VARIABLES``
+above all, which the base does not choose) and, if it needs to, its ``spell_evaluated``.
 """
 
 from __future__ import annotations
