@@ -440,10 +440,11 @@ class Simulator:
         out = dict(pos)
         incremental = self.incremental and not absolute
         shift = self.shift if not machine and not incremental else None
+        increments = self.increments  # empty on a mill: one test of an empty dict per word
         for axis, value in axes.items():
             if isinstance(value, Expr):
                 raise ProgramError(UNEVALUATED, self._at(block, axis))
-            real = self.increments.get(axis)
+            real = increments.get(axis) if increments else None
             if real is not None:
                 if real not in pos:
                     raise ProgramError(f"axis {real} is not on this machine (axes {''.join(self.axes)})",
@@ -569,7 +570,7 @@ class Simulator:
     def _programmed(self, axes: dict[str, float | Expr]) -> set[str]:
         """The machine axes a block's axis words name (a lathe's U and W are X and Z)."""
         increments = self.increments
-        return {increments.get(a, a) for a in axes}
+        return {increments.get(a, a) for a in axes} if increments else set(axes)
 
     def _travel_report(self, err: TravelError) -> None:
         """A travel problem: an error, or a warning under ``--on-unsupported warn``; the block's events
