@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import re
-from typing import Any, Callable, Final
+from typing import Any, Callable, Final, Mapping
 
 from mypy_extensions import mypyc_attr
 
@@ -26,7 +26,7 @@ class Context:
 
     __slots__ = ("file", "setup", "diagnostics", "state", "dialect", "cycle_words", "on_unsupported",
                  "program_mode", "keep_check", "reader", "stops_before_motion", "run_data",
-                 "point_mix", "lathe", "diameter", "one_block", "peck_clearance_mm", "moves_made")
+                 "point_mix", "lathe", "increments", "diameter", "one_block", "peck_clearance_mm", "moves_made")
 
     def __init__(self, file: str, setup: MachineSetup, diagnostics: Diagnostics, dialect: str,
                  cycle_words: CycleWords | None = None) -> None:
@@ -61,9 +61,12 @@ class Context:
         None: the set-up's ``<Cycles peckRetract peckClearance>``."""
         self.lathe = False
         """The program is read with lathe meanings (``Dialect.reads_lathe``): G70-G76 lathe cycles, G98/G99
-        feed modes, U/W incremental X/Z, the ZX plane at start."""
+        feed modes, the ZX plane at start, the dialect's ``increments``."""
+        self.increments: Mapping[str, str] = {}
+        """Addresses that move an axis by an increment whatever the distance mode -> that axis
+        (``Dialect.INCREMENTAL_AXES`` on a lathe: ``U`` -> ``X``); empty on a mill."""
         self.diameter = False
-        """Lathe X and U words are diameters (the set-up's ``xProgramming`` on a dialect that has it)."""
+        """Lathe X words (and the increments of X) are diameters (the set-up's ``xProgramming`` on a dialect that has it)."""
         self.one_block = False
         """Lathe cycles G71-G73/G76 are read in their one-block form (the set-up's ``latheCycleFormat`` on
         a dialect that has it)."""

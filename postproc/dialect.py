@@ -166,6 +166,10 @@ class Dialect:
     """Neutral names of the lathe cycles (G70-G76, G90/G92/G94) the controller runs natively with the
     Fanuc system A/GSK words; others are expanded into their moves."""
 
+    INCREMENTAL_AXES: ClassVar[Mapping[str, str]] = {}
+    """On a lathe (``reads_lathe``), the addresses that move an axis by an increment whatever the distance
+    mode -> that axis (the RS274 lathe base's ``U``/``W`` for ``X``/``Z``: ``postproc.rs274.lathe_axes``);
+    the neutral steps and the simulator read it through ``Context.increments``. Empty: none."""
     LATHE_FEED_AT_START: ClassVar[str] = "per_min"
     """The feed mode a lathe program starts in before it programs one (Fanuc T: per revolution, G99, by
     its default parameter; GSK 980TDc: per minute, G98)."""
@@ -209,7 +213,8 @@ class Dialect:
                 if key == "CUTTER_RULES":
                     table[key] = None if value is None else value.name  # whose rules, by name
                 elif key.isupper() and key not in skip and not key.startswith("_"):
-                    table[key] = sorted(value) if isinstance(value, frozenset) else value
+                    table[key] = sorted(value) if isinstance(value, frozenset) else \
+                        dict(value) if isinstance(value, Mapping) else value
         return table
 
     @classmethod
@@ -267,6 +272,8 @@ class Dialect:
         ctx.lathe = cls.reads_lathe(setup)
         ctx.diameter = ctx.lathe and cls.DIAMETER_PROGRAMMING and setup.input.x_programming == "diameter"
         ctx.one_block = ctx.lathe and cls.LATHE_ONE_BLOCK and setup.input.lathe_cycle_format == "one-block"
+        if ctx.lathe:
+            ctx.increments = cls.INCREMENTAL_AXES
         if cls.MOTION_AT_START is not None:
             ctx.state.motion = setup.controller.start_motion or cls.MOTION_AT_START
         if ctx.lathe:

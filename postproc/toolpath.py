@@ -128,6 +128,8 @@ class Simulator:
         """Spindle direction of the last spindle event (None before the first): a tool change stops a
         turning spindle first, as a tool changer does, and stopping a stopped spindle is no event."""
         self.lathe = ctx.lathe
+        self.increments = ctx.increments
+        """Addresses that move an axis by an increment (a lathe's U and W: ``Dialect.INCREMENTAL_AXES``)."""
         self.diameter = ctx.diameter
         """X words are diameters: the position is kept as a radius (true geometry, arcs with radius I) and
         written as a diameter."""
@@ -394,7 +396,7 @@ class Simulator:
             self.line_move("rapid", via, line, emit)
             ref = dict(self.pos)
             for axis in m.axes:
-                ref[_LATHE_INCREMENTS.get(axis, axis) if self.lathe else axis] = 0.0
+                ref[self.increments.get(axis, axis)] = 0.0
             if self.length.offset and LENGTH_AXIS in m.axes:
                 ref[LENGTH_AXIS] = -self.length.offset  # the reference point is a machine position
             if travel is not None:
@@ -438,11 +440,12 @@ class Simulator:
         out = dict(pos)
         incremental = self.incremental and not absolute
         shift = self.shift if not machine and not incremental else None
+        increments = self.increments  # empty on a mill: one test of an empty dict per word
         for axis, value in axes.items():
             if isinstance(value, Expr):
                 raise ProgramError(UNEVALUATED, self._at(block, axis))
-            if self.lathe and axis in _LATHE_INCREMENTS:
-                real = _LATHE_INCREMENTS[axis]
+            real = increments.get(axis) if increments else None
+            if real is not None:
                 if real not in pos:
                     raise ProgramError(f"axis {real} is not on this machine (axes {''.join(self.axes)})",
                                        self._at(block, axis))
@@ -566,7 +569,8 @@ class Simulator:
 
     def _programmed(self, axes: dict[str, float | Expr]) -> set[str]:
         """The machine axes a block's axis words name (a lathe's U and W are X and Z)."""
-        return {_LATHE_INCREMENTS.get(a, a) if self.lathe else a for a in axes}
+        increments = self.increments
+        return {increments.get(a, a) for a in axes} if increments else set(axes)
 
     def _travel_report(self, err: TravelError) -> None:
         """A travel problem: an error, or a warning under ``--on-unsupported warn``; the block's events
@@ -817,8 +821,6 @@ def _setting_text(key: str, section: Any) -> str | None:
     if key == "PathControl":
         return None if section.one_shot else section.mode.replace("_", " ")
     return f"S{section.rpm:g}" if isinstance(section.rpm, (int, float)) else None
-_LATHE_INCREMENTS = {"U": "X", "W": "Z"}
-"""On a lathe, U and W are incremental X and Z."""
 _EVENT_KEYS = frozenset(("ToolSelect", "ToolChange", "SpindleControl", "Coolant", "Dwell", "SpindleOrientation",
                          "ProgramControl", "MachineFunction"))
 

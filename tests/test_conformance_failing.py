@@ -35,7 +35,8 @@ DEFECTS: dict[str, list[tuple[str, str, str]]] = {
                    "            if \"#\" in (block.text or \"\"):\n"
                    "                raise ParseError(\"parameters are not supported\")\n"
                    "            yield block\n")],
-    "drift": [("mach3.xml", '<CannedCycleResolveSyntax semantics="rs274"/>', "<CannedCycleResolveSyntax/>")],
+    "drift": [("mach3.xml", '<CannedCycleResolveSyntax semantics="rs274"/>',
+               '<CannedCycleResolveSyntax semantics="fanuc"/>')],
     "norules": [("__init__.py", '    CYCLE_SEMANTICS = "rs274"\n', "")],
 }
 
@@ -139,7 +140,8 @@ def test_a_pipeline_file_that_drifted_from_python_pipeline_is_shown_beside_it(re
     """A run reads with ``python_pipeline`` and never sees the file: only this check does."""
     text = _section(report, "test_python_pipeline_is_the_pipeline_file", "drift")
     assert "drift: python_pipeline under a mill set-up is not the pipeline of mach3.xml" in text
-    assert '<CannedCycleResolveSyntax semantics="rs274"/>' in text and "<CannedCycleResolveSyntax/>" in text
+    assert '<CannedCycleResolveSyntax semantics="rs274"/>' in text
+    assert '<CannedCycleResolveSyntax semantics="fanuc"/>' in text
 
 
 def test_checks_the_defects_do_not_touch_still_pass(report: str) -> None:

@@ -47,7 +47,7 @@ def resolve(text: str, words: CycleWords, rename: bool) -> list[Block]:
     steps: list[Syntax] = [FanucBlockSyntax()]
     if rename:
         steps.append(SpellLevelZDepthI())
-    steps += [CannedCycleResolveSyntax(), ModalStateSyntax()]
+    steps += [CannedCycleResolveSyntax("fanuc"), ModalStateSyntax()]
     return list(Pipeline("test", steps).run(FanucReader(ctx).read(text.splitlines(keepends=True)), ctx))
 
 
@@ -78,7 +78,7 @@ def test_a_dialect_without_cycle_words_cannot_resolve_cycles() -> None:
     with pytest.raises(PostprocError, match="declares no cycle words"):
         setup = MachineSetup()
         ctx = Context("t.nc", setup, Diagnostics(ErrorLevel.IMMEDIATE), "bare")
-        steps: list[Syntax] = [FanucBlockSyntax(), CannedCycleResolveSyntax(), ModalStateSyntax()]
+        steps: list[Syntax] = [FanucBlockSyntax(), CannedCycleResolveSyntax("fanuc"), ModalStateSyntax()]
         text = "G00 X0. Y0. Z50.\nG81 X1. Z-1. R1. F100.\n"
         list(Pipeline("bare", steps).run(FanucReader(ctx).read(text.splitlines(keepends=True)), ctx))
 

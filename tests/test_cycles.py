@@ -92,7 +92,7 @@ SEED_ITEMS = [
 
 def test_seed_back_boring_from_a_resolved_section() -> None:
     """The seed's #BeforeBuild: a pre-populated CannedCycle, initial Z0, no previous position data."""
-    cycle = CannedCycle("back_bore", call=True, initial=0.0, r=2.0, bottom=-10.0, top=2.0, orient=0.0,
+    cycle = CannedCycle("back_bore", call=True, semantics="fanuc", initial=0.0, r=2.0, bottom=-10.0, top=2.0, orient=0.0,
                         feed=600.0, start={"X": 0.0, "Y": 0.0, "Z": 0.0}, position={"X": 50.0, "Y": 30.0},
                         shift={"X": 1.0}, words={"X": 50.0, "Y": 30.0, "Z": -10.0, "R": 2.0, "Q": 1.0})
     block = Block(1, "G87 G98 X50. Y30. Z-10. R2. Q1. F600.")
@@ -244,7 +244,8 @@ def test_every_kind_has_exactly_one_family() -> None:
 
 
 def test_toolpath_drops_zero_length_moves_and_emits_feed_only_on_change() -> None:
-    cycle = CannedCycle("drill", initial=2.0, r=2.0, bottom=-1.0, feed=100.0, start={"X": 0.0, "Y": 0.0, "Z": 2.0},
+    cycle = CannedCycle("drill", semantics="fanuc", initial=2.0, r=2.0, bottom=-1.0, feed=100.0,
+                        start={"X": 0.0, "Y": 0.0, "Z": 2.0},
                         position={"X": 0.0, "Y": 0.0})
     path = ToolPath(cycle)
     path.rapid(0.0, 0.0, 2.0)
@@ -393,8 +394,8 @@ def full_section() -> CannedCycle:
 
 
 @pytest.mark.parametrize("node", [
-    full_section(), CannedCycle("drill"), CannedCycle("fine_bore", shift={}),
-    CannedCycleResolveSyntax(), CannedCycleResolveSyntax("rs274"),
+    full_section(), CannedCycle("drill", semantics="fanuc"), CannedCycle("fine_bore", semantics="rs274", shift={}),
+    CannedCycleResolveSyntax("fanuc"), CannedCycleResolveSyntax("rs274"),
     CannedCycleResolveSyntax("fanuc", [BackBoringSyntax()]),
     DrillingSyntax(), PeckDrillingSyntax(), TappingSyntax(), BoringSyntax(), FineBoringSyntax(),
     BackBoringSyntax(), ManualBoringSyntax(),
@@ -413,7 +414,8 @@ def test_every_registered_cycle_class_round_trips() -> None:
     for cls in XML_CLASSES:
         assert cls.XNAME in DEFAULT.names()
         cls.reg(DEFAULT)  # idempotent
-        node = cls("drill") if cls is CannedCycle else cls()
+        node = cls("drill", semantics="fanuc") if cls is CannedCycle else \
+            cls("fanuc") if cls is CannedCycleResolveSyntax else cls()
         assert DEFAULT.create(node.make_xml_source(".", "", False)) == node
 
 
@@ -435,9 +437,12 @@ def test_fanuc_pipeline_resolves_cycles_before_the_modal_state() -> None:
 @pytest.mark.parametrize("xml, message", [
     (b'<CannedCycleResolveSyntax semantics="heidenhain"/>', "unknown cycle semantics 'heidenhain'"),
     (b'<CannedCycleResolveSyntax mode="x"/>', "unknown attribute(s) mode"),
-    (b'<CannedCycleResolveSyntax><ModalStateSyntax/></CannedCycleResolveSyntax>', "is not a cycle expansion"),
-    (b'<CannedCycleResolveSyntax><Nope/></CannedCycleResolveSyntax>', "unknown element <Nope>"),
-    (b'<CannedCycle kind="drill"><Holes/></CannedCycle>', "unexpected <Holes>"),
+    (b'<CannedCycleResolveSyntax/>', "needs attribute 'semantics' (fanuc or rs274: how the controller moves"),
+    (b'<CannedCycleResolveSyntax semantics="fanuc"><ModalStateSyntax/></CannedCycleResolveSyntax>',
+     "is not a cycle expansion"),
+    (b'<CannedCycleResolveSyntax semantics="fanuc"><Nope/></CannedCycleResolveSyntax>', "unknown element <Nope>"),
+    (b'<CannedCycle kind="drill" semantics="fanuc"><Holes/></CannedCycle>', "unexpected <Holes>"),
+    (b'<CannedCycle kind="drill"/>', "<CannedCycle> needs attribute 'semantics'"),
     (b'<DrillingSyntax><X/></DrillingSyntax>', "takes no children"),
 ])
 def test_bad_xml_is_a_located_config_error(xml: bytes, message: str) -> None:

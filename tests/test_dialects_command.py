@@ -84,3 +84,16 @@ def test_a_flag_a_plugin_declares_appears_by_itself():
 
 def test_a_wrong_format_is_usage(cli):
     assert cli("dialects", "--format", "xml").status == 2
+
+
+def test_the_core_declares_no_family_and_each_dialect_shows_its_own():
+    """The base class names no family; the rows come from each dialect's own declarations (hand-checked:
+    Fanuc and Fagor run Fanuc's cycle rules, LinuxCNC and Mach3 RS274/NGC's, grbl, GSK and ISG none; the
+    two lathe dialects read U/W as incremental X/Z)."""
+    assert (Dialect.CYCLE_SEMANTICS, dict(Dialect.INCREMENTAL_AXES)) == ("", {})
+    rows = _rows(render_table(dialect_info(REGISTRY.dialects)))
+    shown = {name: (rows["CYCLE_SEMANTICS"][i], rows["INCREMENTAL_AXES"][i])
+             for i, name in enumerate(rows["capability"])}
+    assert shown == {"fagor": ("fanuc", "-"), "fanuc": ("fanuc", "U=X,W=Z"), "grbl": ("-", "-"),
+                     "gsk": ("-", "U=X,W=Z"), "isg": ("-", "-"), "linuxcnc": ("rs274", "-"),
+                     "mach3": ("rs274", "-")}

@@ -18,7 +18,8 @@ from postproc.control import (
 )
 from postproc.errors import Diagnostics, ErrorList, ErrorLevel
 from postproc.expr import Binary, Expr, Func, Num, Var
-from postproc.interp import NgcVariables, ProgramSyntax
+from postproc.interp import ProgramSyntax
+from postproc.rs274.variables import MacroBVariables, NgcVariables
 from postproc.ir import Block, ProgramStart, Sequence
 from postproc.setup import Limits, MachineSetup
 from postproc.source_map import ExecutedBlock
@@ -31,6 +32,8 @@ class FanucLike(ProgramSyntax):
     END_CODES = frozenset({("M", 30), ("M", 2)})
     PROGRAM_LABEL = "O{number:04d}"
     LIBRARY_FILES = ("O{number:04d}", "O{number:04d}.nc", "{name}.nc")
+    MACRO_LOCALS = 33
+    VARIABLES = MacroBVariables
 
 
 class NgcLike(ProgramSyntax):
@@ -549,3 +552,30 @@ def test_lib_option_must_name_a_folder(cli, tmp_path):
     result = cli("toolpath", prog, "--dialect", "fanuc", "--lib", tmp_path / "missing")
     assert result.status == 2
     assert result.err == f"postproc: --lib {tmp_path / 'missing'}: no such directory\n"
+
+
+# -- the neutral step names no family ------------------------------------------------------------------------
+
+class NoFamily(ProgramSyntax):
+    """A dialect that forgot its variables: the neutral base brings none of its own."""
+    END_CODES = frozenset({("M", 30)})
+
+
+def test_the_neutral_step_has_no_family_defaults():
+    assert (ProgramSyntax.VARIABLES, ProgramSyntax.MACRO_LOCALS) == (None, 0)
+
+
+def test_a_step_without_variables_refuses_a_program_that_computes_at_its_first_construct():
+    p = P()
+    p(("G", "0"), ("X", "1."))
+    p(assign=[(v(1), Num(2.0))])
+    p(("X", v(1)))
+    assert error_of(p, host=NoFamily) == ("main.nc:2:1: error: fanuc: NoFamily declares no VARIABLES, so a program "
+                                          "that computes cannot be run")
+
+
+def test_a_step_without_variables_still_streams_a_straight_program():
+    p = P()
+    p(("G", "0"), ("X", "1."))
+    p(("M", "30"))
+    assert words(run(p, host=NoFamily)) == ["G0 X1.", "M30"]

@@ -147,32 +147,34 @@ SAMPLES: dict[str, list[tuple[Builder, str]]] = {
                  (lambda c: c["Pipeline"]("empty", []), '<Pipeline dialect="empty"/>')],
     "CannedCycle": [
         (lambda c: c["CannedCycle"](
-            "peck_deep", call=True, return_level="r", initial=50.0, r=3.0, bottom=-18.5, q=3.0, clearance=0.3,
+            "peck_deep", call=True, semantics="fanuc", return_level="r", initial=50.0, r=3.0, bottom=-18.5, q=3.0, clearance=0.3,
             feed=150.0, spindle="cw", motion="rapid", start={"X": 0.0, "Y": 0.0, "Z": 50.0},
             position={"X": 15.0, "Y": 15.0}, shift={"X": 1.0},
             words={"X": 15.0, "Y": 15.0, "Z": -18.5, "R": 3.0, "Q": 3.0, "K": 2}),
-         '<CannedCycle kind="peck_deep" call="true" return_level="r" initial="50.0" r="3.0" bottom="-18.5" '
+         '<CannedCycle kind="peck_deep" call="true" semantics="fanuc" return_level="r" initial="50.0" r="3.0" bottom="-18.5" '
          'q="3.0" clearance="0.3" feed="150.0" spindle="cw" motion="rapid">\n'
          '  <Start X="0.0" Y="0.0" Z="50.0"/>\n  <Position X="15.0" Y="15.0"/>\n  <Shift X="1.0"/>\n'
          '  <Words X="15.0" Y="15.0" Z="-18.5" R="3.0" Q="3.0" K="2"/>\n</CannedCycle>'),
-        (lambda c: c["CannedCycle"]("drill", repeat=0, plane="ZX", step={"X": 10.0}),
-         '<CannedCycle kind="drill" plane="ZX" repeat="0">\n  <Step X="10.0"/>\n</CannedCycle>'),
-        (lambda c: c["CannedCycle"]("drill", r=2.0, expand=True), '<CannedCycle kind="drill" r="2.0" expand="true"/>'),
+        (lambda c: c["CannedCycle"]("drill", semantics="rs274", repeat=0, plane="ZX", step={"X": 10.0}),
+         '<CannedCycle kind="drill" semantics="rs274" plane="ZX" repeat="0">\n  <Step X="10.0"/>\n</CannedCycle>'),
+        (lambda c: c["CannedCycle"]("drill", semantics="fanuc", r=2.0, expand=True),
+         '<CannedCycle kind="drill" semantics="fanuc" r="2.0" expand="true"/>'),
     ],
     "HolePattern": [
         (lambda c: c["HolePattern"](
             "circle", 6, -60.0, center={"X": -20.0, "Y": 0.0}, skip=(3, 5), move="cw", feed=400.0,
             start={"X": 20.0, "Y": 0.0, "Z": 50.0}, incremental=True, split=(4, 7, 7),
-            cycle=c["CannedCycle"]("drill", initial=50.0, r=2.0, bottom=-5.0, feed=100.0)),
+            cycle=c["CannedCycle"]("drill", semantics="fanuc", initial=50.0, r=2.0, bottom=-5.0, feed=100.0)),
          '<HolePattern kind="circle" count="6" step="-60.0" move="cw" feed="400.0" incremental="true" '
          'skip="3 5" split="4 7 7">\n  <Center X="-20.0" Y="0.0"/>\n  <Start X="20.0" Y="0.0" Z="50.0"/>\n'
-         '  <CannedCycle kind="drill" initial="50.0" r="2.0" bottom="-5.0" feed="100.0"/>\n</HolePattern>'),
+         '  <CannedCycle kind="drill" semantics="fanuc" initial="50.0" r="2.0" bottom="-5.0" feed="100.0"/>\n'
+         '</HolePattern>'),
         (lambda c: c["HolePattern"]("grid", 3, 10.0, plane="ZX", angle=30.0, count2=2, step2=5.0, angle2=60.0),
          '<HolePattern kind="grid" plane="ZX" count="3" step="10.0" angle="30.0" count2="2" step2="5.0" '
          'angle2="60.0"/>'),
     ],
     "CannedCycleResolveSyntax": [
-        (lambda c: c["CannedCycleResolveSyntax"](), "<CannedCycleResolveSyntax/>"),
+        (lambda c: c["CannedCycleResolveSyntax"]("fanuc"), '<CannedCycleResolveSyntax semantics="fanuc"/>'),
         (lambda c: c["CannedCycleResolveSyntax"]("rs274", [c["DrillingSyntax"](), c["TappingSyntax"]()]),
          '<CannedCycleResolveSyntax semantics="rs274">\n  <DrillingSyntax/>\n  <TappingSyntax/>\n'
          "</CannedCycleResolveSyntax>"),

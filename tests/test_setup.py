@@ -225,7 +225,7 @@ def test_translate_with_a_bad_setup_is_a_configuration_error(cli, tmp_path):
 
 PIPELINE = """<Pipeline dialect="fanuc">
   <FanucBlockSyntax/>
-  <CannedCycleResolveSyntax/>
+  <CannedCycleResolveSyntax semantics="fanuc"/>
   <ModalStateSyntax/>
 </Pipeline>
 """

@@ -69,7 +69,7 @@ class Fagor(Dialect):
         from postproc.syntaxes.modal_state import ModalStateSyntax
         from .block_syntax import FagorBlockSyntax
         from .program import FagorProgramSyntax
-        return Pipeline(cls.NAME, [FagorProgramSyntax(), FagorBlockSyntax(), CannedCycleResolveSyntax(),
+        return Pipeline(cls.NAME, [FagorProgramSyntax(), FagorBlockSyntax(), CannedCycleResolveSyntax("fanuc"),
                                    ModalStateSyntax()])
 
     @classmethod

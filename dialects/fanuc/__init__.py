@@ -12,6 +12,7 @@ from postproc.setup import MachineSetup
 from postproc.syntax import Pipeline
 from postproc.hookspecs import hookimpl
 from postproc.rs274.cycle_words import rs274_cycle_words
+from postproc.rs274.lathe_axes import LATHE_INCREMENTS
 from postproc.rs274.order_of_execution import stops_before_motion
 from postproc.writer_base import Writer
 from postproc.xmlio import XFactory
@@ -57,6 +58,8 @@ class Fanuc(Dialect):
     LATHE_CYCLES = frozenset(("turn_finish", "turn_rough", "face_rough", "pattern_repeat", "face_peck", "groove",
                               "thread_multi", "turn_single", "thread_single", "face_single"))
     """G70-G76 and the single cycles (G90/G92/G94 in system A, renumbered in B and C)."""
+    INCREMENTAL_AXES = LATHE_INCREMENTS
+    """Fanuc T: U and W are incremental X (a diameter) and Z (``postproc.rs274.lathe_axes``)."""
     LATHE_FEED_AT_START = "per_rev"
     """Fanuc T starts in G99 (feed per revolution; parameter 3402#4 FPM = 0, the default)."""
     LATHE_ONE_BLOCK = True
@@ -89,7 +92,7 @@ class Fanuc(Dialect):
             return Pipeline(cls.NAME, [FanucProgramSyntax(), FanucLatheBlockSyntax(), ModalStateSyntax(),
                                        LatheCycleSyntax()])
         from .block_syntax import FanucBlockSyntax
-        return Pipeline(cls.NAME, [FanucProgramSyntax(), FanucBlockSyntax(), CannedCycleResolveSyntax(),
+        return Pipeline(cls.NAME, [FanucProgramSyntax(), FanucBlockSyntax(), CannedCycleResolveSyntax("fanuc"),
                                    ModalStateSyntax()])
 
 

@@ -11,8 +11,9 @@ from __future__ import annotations
 from typing import Callable, ClassVar
 
 from postproc.context import Context
-from postproc.interp import FanucVariables, ProgramSyntax
+from postproc.interp import ProgramSyntax
 from postproc.interp.variables import Variables, VariablesFactory
+from postproc.rs274.variables import MacroBVariables
 
 from .variables import HaasVariables
 
@@ -24,7 +25,7 @@ class FanucProgramSyntax(ProgramSyntax):
     INTEGER_ADDRESSES: ClassVar[frozenset[str]] = frozenset("GMNOTHDLP")
     END_CODES: ClassVar[frozenset[tuple[str, int]]] = frozenset({("M", 30), ("M", 2)})
     MACRO_LOCALS: ClassVar[int] = 33
-    VARIABLES: ClassVar[VariablesFactory] = FanucVariables
+    VARIABLES: ClassVar[VariablesFactory] = MacroBVariables
     LIBRARY_FILES: ClassVar[tuple[str, ...]] = ("O{number:04d}", "O{number:04d}.nc", "{name}.nc", "{name}")
     PROGRAM_LABEL: ClassVar[str] = "O{number:04d}"
 

@@ -14,7 +14,8 @@ from __future__ import annotations
 from typing import Callable
 
 from postproc.expr import EvalError, Value, VarKey
-from postproc.interp.variables import MACHINE_ONLY, FanucVariables
+from postproc.interp.variables import MACHINE_ONLY
+from postproc.rs274.variables import MacroBVariables
 
 GENERAL = (10000, 10999)
 """The NGC's general-purpose variables."""
@@ -31,7 +32,7 @@ def _legacy(key: int) -> bool:
     return 100 <= key <= 199 or 500 <= key <= 999
 
 
-class HaasVariables(FanucVariables):
+class HaasVariables(MacroBVariables):
     """Custom Macro B variables of a Haas mill: Fanuc's, and the NGC's general-purpose #10000-#10999."""
 
     __slots__ = ("numbering",)

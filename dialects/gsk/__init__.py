@@ -15,6 +15,7 @@ from typing import Callable
 from postproc.comments import CommentSyntax
 from postproc.dialect import Dialect, Lazy, Reader
 from postproc.hookspecs import hookimpl
+from postproc.rs274.lathe_axes import LATHE_INCREMENTS
 from postproc.setup import MachineSetup
 from postproc.syntax import Pipeline
 from postproc.writer_base import Writer
@@ -35,6 +36,8 @@ class Gsk(Dialect):
     LATHE_CYCLES = frozenset(("turn_finish", "turn_rough", "face_rough", "pattern_repeat", "face_peck", "groove",
                               "thread_multi", "turn_single", "thread_single", "face_single"))
     """G70-G76, G90, G92, G94."""
+    INCREMENTAL_AXES = LATHE_INCREMENTS
+    """U and W are incremental X (a diameter) and Z (``postproc.rs274.lathe_axes``)."""
     LATHE_FEED_AT_START = "per_min"
     """The 980TDc starts in G98 (feed per minute)."""
     SPINDLE_ORIENTATION = False

@@ -54,7 +54,7 @@ class Isg(Dialect):
         from postproc.syntaxes.modal_state import ModalStateSyntax
         from .block_syntax import IsgBlockSyntax
         from .program import IsgProgramSyntax
-        return Pipeline(cls.NAME, [IsgProgramSyntax(), IsgBlockSyntax(), CannedCycleResolveSyntax(),
+        return Pipeline(cls.NAME, [IsgProgramSyntax(), IsgBlockSyntax(), CannedCycleResolveSyntax("fanuc"),
                                    ModalStateSyntax()])
 
 

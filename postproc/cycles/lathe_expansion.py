@@ -34,6 +34,7 @@ def profile_segments(blocks: Sequence[Block], start: tuple[float, float], ctx: C
     segs: list[Seg] = []
     half = 0.5 if ctx.diameter else 1.0
     incremental = ctx.state.distance == "incremental"
+    increments = ctx.increments  # the reading dialect's U/W (``Dialect.INCREMENTAL_AXES``)
     for block in blocks:
         other = [k for k in block.sections if k not in PROFILE_SECTIONS]
         if other:
@@ -54,13 +55,14 @@ def profile_segments(blocks: Sequence[Block], start: tuple[float, float], ctx: C
         for axis, value in motion.axes.items():
             if not isinstance(value, float):
                 raise ProgramError(f"{code}: a computed word in the profile cannot be expanded", ctx.at(block))
+            step = increments.get(axis)
             if axis == "X":
                 x1 = x + value * half if incremental else value * half
             elif axis == "Z":
                 z1 = z + value if incremental else value
-            elif axis == "U":
+            elif step == "X":
                 x1 = x + value * half
-            elif axis == "W":
+            elif step == "Z":
                 z1 = z + value
             else:
                 raise ProgramError(f"{code}: axis {axis} has no place in a lathe profile", ctx.at(block))

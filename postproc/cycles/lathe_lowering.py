@@ -125,10 +125,12 @@ def _turret(block: Block, ctx: Context) -> None:
 class _Position:
     """Where the tool is (program units, X as programmed), to make U/W absolute and X a radius."""
 
-    __slots__ = ("ctx", "radius", "x", "z", "incremental")
+    __slots__ = ("ctx", "increments", "radius", "x", "z", "incremental")
 
     def __init__(self, ctx: Context, radius: bool) -> None:
         self.ctx = ctx
+        self.increments = ctx.increments
+        """The reading dialect's incremental addresses (U -> X, W -> Z: ``Dialect.INCREMENTAL_AXES``)."""
         self.radius = radius
         self.x: float | None = None
         self.z: float | None = None
@@ -144,11 +146,11 @@ class _Position:
         if isinstance(mode, DistanceMode):
             self.incremental = mode.mode == "incremental"
         motion = sections.get("Motion")
+        increments = self.increments
         if isinstance(motion, Motion) and motion.mode in ("home", "home2") and not self.incremental \
-                and any(a in motion.axes for a in "UW") \
-                and all(a in "UW" and motion.axes[a] == 0.0 for a in motion.axes):
+                and motion.axes and all(a in increments and motion.axes[a] == 0.0 for a in motion.axes):
             # through the present point, wherever it is: the same return in incremental mode
-            motion.axes = {"X" if a == "U" else "Z": 0.0 for a in motion.axes}
+            motion.axes = {increments[a]: 0.0 for a in motion.axes}
             block.add(DistanceMode("incremental"))
             self.x = self.z = None
             block.changed()
@@ -182,18 +184,20 @@ class _Position:
     def motion(self, block: Block, motion: Motion) -> bool:
         """Rewrite one motion in place; True when it changed."""
         axes = motion.axes
-        if not any(a in axes for a in "XUW"):
+        increments = self.increments
+        if "X" not in axes and increments.keys().isdisjoint(axes):
             self._track(motion, axes)
             return False
         new: dict[str, float | Expr] = {}
         for axis, value in axes.items():
-            if axis in ("U", "W"):
-                base = self.x if axis == "U" else self.z
+            real = increments.get(axis)
+            if real is not None:
+                base = self.x if real == "X" else self.z if real == "Z" else None
                 if base is None or not isinstance(value, float):
                     raise UnsupportedError(f"an incremental {axis} move from an unknown position (the target has no "
-                                           f"{axis} address: program an absolute {'X' if axis == 'U' else 'Z'} first)",
+                                           f"{axis} address: program an absolute {real} first)",
                                            self.ctx.at(block))
-                new["X" if axis == "U" else "Z"] = base + value
+                new[real] = base + value
             else:
                 new[axis] = value
         self._track(motion, new)
@@ -208,8 +212,9 @@ class _Position:
 
     def _track(self, motion: Motion, axes: dict[str, float | Expr]) -> None:
         if motion.mode in ("home", "home2"):
-            self.x = None if "X" in axes or "U" in axes else self.x
-            self.z = None if "Z" in axes or "W" in axes else self.z
+            moved = {self.increments.get(a, a) for a in axes}
+            self.x = None if "X" in moved else self.x
+            self.z = None if "Z" in moved else self.z
             return
         if self.incremental:
             if "X" in axes:

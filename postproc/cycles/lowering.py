@@ -2,7 +2,7 @@
 
 A cycle is expanded when the target does not run its kind natively, when the set-up asks for it
 (``<Cycles expand="drill,back_bore"/>`` or ``"all"``), or when the target's controller moves through
-its native cycles by other rules (``CYCLE_SEMANTICS`` on the dialect, default 'fanuc'), or, for G73
+its native cycles by other rules (``CYCLE_SEMANTICS`` on the dialect; one that names none has every cycle expanded), or, for G73
 and G83, with another retract or clearance than the program was read with (``PECK_CLEARANCE_MM``,
 else the set-up's ``<Cycles peckRetract peckClearance>``: LinuxCNC's fixed 0.254 mm against a Mach3
 machine's 0.5): the expansion is exact, the native cycle there would not be. Once a block of a cycle is expanded, the

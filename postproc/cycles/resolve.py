@@ -7,8 +7,8 @@ meanings of R and Z, modal cycle data, repetition, cancel, K/L repeats, the thre
 peck Q and shift Q, and refuses what the controller refuses with a located error. Then it has the
 cycle's family syntax expand it and moves the tracked position to where the tool ends.
 
-The ``semantics`` attribute picks the controller family ('fanuc', the default, or 'rs274' for
-LinuxCNC); ``semantics.py`` lists every rule that differs. Which letter carries which cycle word (the
+The ``semantics`` attribute picks the controller family's rules ('fanuc' or 'rs274' for LinuxCNC; every
+pipeline says which, the core has no default family); ``semantics.py`` lists every rule that differs. Which letter carries which cycle word (the
 hole bottom, the R level, Q, P, the repeat count) and how a cycle is named in messages comes from the
 reading dialect (``ctx.cycle_words``, a ``CycleWords``), so another dialect's letters reuse this logic.
 """
@@ -78,7 +78,7 @@ class CannedCycleResolveSyntax(Syntax):
     XNAME = "CannedCycleResolveSyntax"
     __slots__ = ("semantics", "expansions", "_rules", "_by_kind", "_words_of", "remember")
 
-    def __init__(self, semantics: str = "fanuc", expansions: list[CycleExpansion] | None = None) -> None:
+    def __init__(self, semantics: str, expansions: list[CycleExpansion] | None = None) -> None:
         if semantics not in SEMANTICS:
             raise ValueError(f"unknown cycle semantics {semantics!r} (use {' or '.join(SEMANTICS)})")
         self.semantics = semantics
@@ -102,18 +102,21 @@ class CannedCycleResolveSyntax(Syntax):
         unknown = set(el.attrib) - {"semantics"}
         if unknown:
             raise ValueError(f"unknown attribute(s) {', '.join(sorted(unknown))}")
+        semantics = el.get("semantics")
+        if semantics is None:
+            raise ValueError(f"needs attribute 'semantics' ({' or '.join(SEMANTICS)}: how the controller moves "
+                             "through a cycle)")
         expansions = []
         for child in DEFAULT.children(el):
             if not isinstance(child, CycleExpansion):
                 raise ValueError(f"<{type(child).XNAME}> is not a cycle expansion")
             expansions.append(child)
-        return cls(el.get("semantics", "fanuc"), expansions)
+        return cls(semantics, expansions)
 
     def make_xml_source(self, base_dir: str = ".", rel_file: str = "", exhibition_only: bool = False) -> etree._Element:
         etree = lxml_etree()
         el = etree.Element(self.XNAME)
-        if self.semantics != "fanuc":
-            el.set("semantics", self.semantics)
+        el.set("semantics", self.semantics)
         for expansion in self.expansions:
             el.append(expansion.make_xml_source(base_dir, rel_file, exhibition_only))
         return el

@@ -29,13 +29,14 @@ class CannedCycle(Section):
     data, as with K0 or a block without hole position). ``position`` is the first hole in the plane,
     ``step`` the increment to each further hole (G91 rows; empty in G90, where a repeat drills the same
     spot). ``start`` is where the tool was before the block. ``semantics`` names how the controller moves
-    through the cycle ('fanuc' or 'rs274'), ``call`` whether the block programs the cycle code itself.
+    through the cycle ('fanuc' or 'rs274', ``postproc.cycles.semantics``: always said, the core has no
+    default family), ``call`` whether the block programs the cycle code itself.
     """
 
     XNAME = "CannedCycle"
     KEY = "CannedCycle"
     XATTRS = (
-        XAttr("kind"), XAttr("call", bool, False), XAttr("semantics", str, "fanuc"),
+        XAttr("kind"), XAttr("call", bool, False), XAttr("semantics"),
         XAttr("return_level", str, "initial"), XAttr("plane", str, "XY"),
         XAttr("initial", float, None), XAttr("r", float, None), XAttr("bottom", float, None),
         XAttr("top", float, None), XAttr("q", float, None), XAttr("clearance", float, None),
@@ -50,7 +51,7 @@ class CannedCycle(Section):
                  "start", "position", "step", "shift", "words")
     """Every attribute of ``XATTRS`` and ``DICTS`` (written out: a compiled class body names them)."""
 
-    def __init__(self, kind: str, *, call: bool = False, semantics: str = "fanuc",
+    def __init__(self, kind: str, *, semantics: str, call: bool = False,
                  return_level: str = "initial", plane: str = "XY", initial: float | None = None,
                  r: float | None = None, bottom: float | None = None, top: float | None = None,
                  q: float | None = None, clearance: float | None = None, dwell: float | None = None,

@@ -38,7 +38,7 @@ from ..setup import Limits
 from ..source_map import CallSite, ExecutedBlock, Origin
 from .rules import STORED_PROGRAMS, SubprogramRules
 from .store import Program, ProgramStore, source_text
-from .variables import ALARM, MacroAlarm, Variables
+from .variables import ProgramAlarm, Variables
 
 NON_WORD_SECTIONS = frozenset((CONTROL, ASSIGN, LABEL))
 
@@ -181,10 +181,10 @@ class Interpreter:
                 self._out_of_work(frame, block)
             try:
                 yield from self._step(frame, block)
-            except MacroAlarm as err:
+            except ProgramAlarm as err:
                 comments = block.sections.get("Comments")
                 err.with_message(comments.texts if isinstance(comments, Comments) else [])
-                self._fail(err, frame, block, (block.text or "").find(f"#{ALARM}") + 1 or 1)
+                self._fail(err, frame, block, (block.text or "").find(err.word) + 1 or 1)
             except EvalError as err:
                 self._fail(err, frame, block, self._column(block, err))
             except PostprocError as err:

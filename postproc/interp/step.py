@@ -8,8 +8,8 @@ last ``Limits.kept_prefix`` blocks for backward jumps; from there it reads the r
 a ``ProgramStore`` and yields the blocks the interpreter executes, with a comment block before each call,
 loop iteration and jump taken.
 
-A dialect subclasses ``ProgramSyntax`` with its data (class attributes below) and, if it needs to, its
-``spell_evaluated``; the base is usable as is for a neutral test of the mechanics.
+A dialect subclasses ``ProgramSyntax`` with its data (class attributes below: its family's ``VARIABLES``
+above all, which the base does not choose) and, if it needs to, its ``spell_evaluated``.
 """
 
 from __future__ import annotations
@@ -21,14 +21,14 @@ from typing import TYPE_CHECKING, Callable, ClassVar, Iterable, Iterator
 from mypy_extensions import mypyc_attr
 
 from ..control import ASSIGN, CONTROL
-from ..errors import Diagnostics, ErrorLevel, PostprocError
+from ..errors import ConfigError, Diagnostics, ErrorLevel, PostprocError
 from ..expr import Expr
 from ..ir import AXES, Block
 from ..context import Context
 from ..syntax import Syntax
 from .spelling import spell_integer, spell_number
 from .rules import STORED_PROGRAMS, SubprogramRules
-from .variables import FanucVariables, Variables, VariablesFactory
+from .variables import Variables, VariablesFactory
 
 if TYPE_CHECKING:
     from .store import Program
@@ -58,10 +58,11 @@ class ProgramSyntax(Syntax):
     """Addresses whose evaluated value must be an integer (written without a decimal point)."""
     END_CODES: ClassVar[frozenset[tuple[str, int]]] = frozenset()
     """Words that end the program (nothing after them runs), e.g. ``("M", 30)``."""
-    MACRO_LOCALS: ClassVar[int] = 33
-    """Highest local variable a call argument may set."""
-    VARIABLES: ClassVar[VariablesFactory] = FanucVariables
-    """The variable model (and vacancy rules) of the dialect family."""
+    MACRO_LOCALS: ClassVar[int] = 0
+    """Highest local variable a call argument may set (0: calls pass no numbered arguments)."""
+    VARIABLES: ClassVar[VariablesFactory | None] = None
+    """The variable model (and vacancy rules) of the dialect's family, e.g. ``postproc.rs274.variables``'
+    ``MacroBVariables``; None: the dialect runs no program that computes (one is a located error)."""
     LIBRARY_FILES: ClassVar[tuple[str, ...]] = ("{name}", "{name}.nc")
     """File names tried in each library folder for a subprogram (``{name}``: its name, brackets
     removed; ``{number}``: the name as an int, for ``{number:04d}``-style patterns)."""
@@ -79,7 +80,10 @@ class ProgramSyntax(Syntax):
     def variables(self, ctx: Context, increment: Callable[[], float]) -> Variables:
         """The run's variables (``VARIABLES``); a dialect whose variables depend on the set-up (a
         controller variant's numbers) overrides it."""
-        make: VariablesFactory = type(self).VARIABLES
+        make: VariablesFactory | None = type(self).VARIABLES
+        if make is None:
+            raise ConfigError(f"{ctx.dialect}: {type(self).__name__} declares no VARIABLES, so a program that "
+                              "computes cannot be run")
         return make(increment)
 
     # -- the host protocol (postproc.interp.machine.Host) -----------------------------------------
@@ -127,7 +131,6 @@ class ProgramSyntax(Syntax):
             with open(path, "r", **ENCODING) as src:  # type: ignore[call-overload]
                 blocks = self.read_lines(src, str(path), ctx, ctx.diagnostics)
         except OSError as exc:
-            from ..errors import ConfigError
             raise ConfigError(f"cannot read {path}: {exc.strerror}") from None
         from .store import Program
         return Program(str(path), blocks, self.is_program_end, self.SUBPROGRAM_RULES)
@@ -247,7 +250,11 @@ class ProgramSyntax(Syntax):
                              kept_limit=ctx.setup.limits.kept_prefix)
         increment = ctx.setup.input.increment
         state = ctx.state
-        variables = self.variables(ctx, lambda: increment(state.units))
+        try:
+            variables = self.variables(ctx, lambda: increment(state.units))
+        except PostprocError as err:
+            ctx.diagnostics.error(err.located(ctx.at(first)))
+            return
         arguments: dict[int, float] | None = ctx.run_data.get(ARGUMENTS_KEY)
         for key, value in (arguments or {}).items():
             variables.write(key, value)  # --arg: the main program run as a macro called with them

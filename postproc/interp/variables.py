@@ -1,13 +1,10 @@
-"""Variables of a running program: the ``Env`` that ``postproc.evaluation.evaluate`` reads, per dialect family.
+"""Variables of a running program: what the interpreter needs of a dialect family's variable model.
 
-Two families (the contract's section 4):
-- ``FanucVariables`` (Custom Macro B): locals ``#1``-``#33`` per macro level (G65 and modal calls open a
-  level, M98 shares the caller's), commons ``#100``-``#199`` and ``#500``-``#999``, ``#0`` always vacant,
-  unset variables vacant. Every other number is a system variable only the machine knows.
-- ``NgcVariables`` (LinuxCNC o-words): ``#1``-``#30`` per call, ``#31``-``#5000`` global, named locals
-  per call, ``#<_name>`` globals; ``#5001`` and above are the machine's.
-Reading or writing a variable only the machine knows is an ``EvalError`` naming it: such a program
-cannot be simulated or flattened.
+The interpreter names no family: each dialect's ``ProgramSyntax.VARIABLES`` brings its own table (the RS274
+family's Custom Macro B and LinuxCNC models are in ``postproc.rs274.variables``, ISG's and Fagor's in their
+dialects). A table reads and writes the ``Env`` of ``postproc.evaluation.evaluate`` and keeps the call levels.
+Reading or writing a variable only the machine knows is an ``EvalError`` naming it (``MACHINE_ONLY``): such a
+program cannot be simulated or flattened.
 """
 
 from __future__ import annotations
@@ -17,233 +14,38 @@ from typing import Callable, Protocol
 from ..expr import Arithmetic, EvalError, Vacancy, Value, VarKey
 
 MACHINE_ONLY = "is known only to the machine: the program cannot be simulated or flattened"
-ALARM = 3000
-"""Custom Macro B's alarm variable: ``#3000=n (MESSAGE)`` stops the machine with alarm n and the block's
-comment as its message [K: Fanuc 0i-F operator's manual, custom macro system variables; zappettiniconsulting
-.com wiki "Alarms & Timers"; Haas NGC system variables, the same #3000]."""
+
+SystemRanges = tuple[tuple[int, int, str], ...]
+"""A family's system variables by range ``(first, last, what a message calls them)``; the first match wins."""
 
 
-class MacroAlarm(EvalError):
-    """The program raises its own alarm (``#3000=n``): the run stops there, as the machine does. Its
-    message is completed with the block's comment by the interpreter (``with_message``)."""
-
-    def __init__(self, number: float) -> None:
-        super().__init__(f"the program raises its alarm #{ALARM}={number:g}")
-
-    def with_message(self, comments: list[str]) -> "MacroAlarm":
-        """Add the alarm's message (the block's comment, as the machine shows it)."""
-        if comments:
-            self.message = f"{self.message} ({' '.join(comments)})"
-        return self
-
-FANUC_SYSTEM: tuple[tuple[int, int, str], ...] = (
-    (1000, 1999, "interface signal"),
-    (2000, 2999, "tool compensation value"),
-    (3000, 3000, "alarm"),
-    (3001, 3002, "clock"),
-    (3003, 3004, "automatic operation control"),
-    (3005, 3005, "setting data"),
-    (3006, 3006, "stop with message"),
-    (3007, 3007, "mirror image"),
-    (3011, 3012, "date and time"),
-    (3901, 3902, "parts count"),
-    (4000, 4999, "modal information"),
-    (5001, 5008, "block end position"),
-    (5021, 5028, "current machine position"),
-    (5041, 5048, "current work position"),
-    (5061, 5068, "skip signal position"),
-    (5081, 5088, "tool length offset value"),
-    (5101, 5108, "servo position deviation"),
-    (5201, 5999, "work offset"),
-    (7000, 7999, "extended work offset"),
-    (10000, 99999, "tool compensation value"),
-)
-"""Fanuc Custom Macro B system variables by range (what a message calls them)."""
-
-NGC_SYSTEM: tuple[tuple[int, int, str], ...] = (
-    (5061, 5070, "probe result"),
-    (5161, 5169, "first reference point position"),
-    (5181, 5189, "second reference point position"),
-    (5211, 5219, "origin offset"),
-    (5220, 5220, "active coordinate system"),
-    (5221, 5399, "work offset"),
-    (5400, 5419, "tool data"),
-    (5420, 5428, "current position"),
-    (5001, 5602, "machine parameter"),
-)
-"""LinuxCNC's numbered parameters above 5000 (the first matching range names one)."""
-
-
-def _system(table: tuple[tuple[int, int, str], ...], key: int) -> str:
+def system_variable(table: SystemRanges, key: int) -> str:
+    """What ``table`` calls variable ``key`` ("system variable" where no range holds it)."""
     for low, high, what in table:
         if low <= key <= high:
             return what
     return "system variable"
 
 
-class FanucVariables:
-    """Custom Macro B variables (vacancy: Fanuc)."""
+class ProgramAlarm(EvalError):
+    """The program raises its own alarm (a write to the family's alarm variable): the run stops there, as
+    the machine does. ``word`` is how the program spells the variable (the error's column is where the block
+    names it); the interpreter completes the message with the block's comment (``with_message``)."""
 
-    __slots__ = ("levels", "commons", "_increment")
-    LOCALS = 33
+    def __init__(self, message: str, word: str) -> None:
+        super().__init__(message)
+        self.word = word
 
-    def __init__(self, increment: Callable[[], float]) -> None:
-        self.levels: list[dict[int, float]] = [{}]
-        self.commons: dict[int, float] = {}
-        self._increment = increment
-
-    @property
-    def vacancy(self) -> Vacancy:
-        return Vacancy.FANUC
-
-    @property
-    def arithmetic(self) -> Arithmetic:
-        """IEEE double (15i/30i manuals: "double-precision real data, as laid down in the applicable IEEE
-        standard" [K]); how a Fanuc reduces an angle is not published: the trigonometric functions'
-        "absolute error is guaranteed", not their relative error, so ``SIN[180]`` is a small residual of
-        unknown sign there too [K]. Parameter 6004#1 (MFZ) may set tiny results to 0 [?]: not modelled."""
-        return Arithmetic.DOUBLE
-
-    @property
-    def increment(self) -> float:
-        return self._increment()
-
-    def read(self, key: VarKey) -> Value:
-        if isinstance(key, str):
-            raise EvalError(f"#<{key}>: Custom Macro B has no named variables")
-        if 1 <= key <= self.LOCALS:
-            return self.levels[-1].get(key)
-        if 100 <= key <= 199 or 500 <= key <= 999:
-            return self.commons.get(key)
-        if key == 0:
-            return None
-        raise self._unknown(key)
-
-    def exists(self, key: VarKey) -> bool:
-        """Custom Macro B has no test of existence: a variable that is read is vacant or not."""
-        raise EvalError("Custom Macro B has no test of whether a variable exists")
-
-    def write(self, key: VarKey, value: Value) -> None:
-        if isinstance(key, str):
-            raise EvalError(f"#<{key}>: Custom Macro B has no named variables")
-        if 1 <= key <= self.LOCALS:
-            store = self.levels[-1]
-        elif 100 <= key <= 199 or 500 <= key <= 999:
-            store = self.commons
-        elif key == 0:
-            raise EvalError("#0 is always vacant: it cannot be assigned")
-        elif key == ALARM and value is not None:
-            raise MacroAlarm(value)
-        else:
-            raise self._unknown(key)
-        if value is None:
-            store.pop(key, None)
-        else:
-            store[key] = value
-
-    def _unknown(self, key: int) -> EvalError:
-        if key < 0 or 34 <= key <= 99 or 200 <= key <= 499:
-            return EvalError(f"#{key} is not a Custom Macro B variable")
-        return EvalError(f"#{key} ({_system(FANUC_SYSTEM, key)}) {MACHINE_ONLY}")
-
-    def enter(self, args: dict[int, Value], new_level: bool) -> None:
-        """A call: a new level of locals set from ``args`` (G65), or the caller's (M98)."""
-        if not new_level:
-            return
-        self.levels.append({k: v for k, v in args.items() if v is not None})
-
-    def leave(self, new_level: bool, value: Value = None) -> None:
-        if new_level and len(self.levels) > 1:
-            self.levels.pop()
-
-    def returned(self, value: Value) -> None:
-        """Custom Macro B has no returned value."""
-
-
-class NgcVariables:
-    """LinuxCNC parameters (vacancy: LinuxCNC, an unset number reads 0, an unset name is an error)."""
-
-    __slots__ = ("numbered", "named", "globals_", "_increment")
-    LOCALS = 30
-    LAST_GLOBAL = 5000
-
-    def __init__(self, increment: Callable[[], float]) -> None:
-        self.numbered: list[dict[int, float]] = [{}]
-        self.named: list[dict[str, float]] = [{}]
-        self.globals_: dict[VarKey, float] = {"_value": 0.0, "_value_returned": 0.0}
-        """``#<_value>`` and ``#<_value_returned>`` read 0 before any call returns (rs274)."""
-        self._increment = increment
-
-    @property
-    def vacancy(self) -> Vacancy:
-        return Vacancy.LINUXCNC
-
-    @property
-    def arithmetic(self) -> Arithmetic:
-        """rs274 scales angles with ``M_PIl`` in ``long double`` (src: ``interp_execute.cc`` ``execute_unary``,
-        ``interp_read.cc`` ``read_atan``) [V: rs274 on x86-64, ``tests/test_long_double.py``]."""
-        return Arithmetic.X86_64_C
-
-    @property
-    def increment(self) -> float:
-        return self._increment()
-
-    def _store(self, key: VarKey) -> dict[int, float] | dict[str, float] | dict[VarKey, float]:
-        if isinstance(key, str):
-            return self.globals_ if key.startswith("_") else self.named[-1]
-        if 1 <= key <= self.LOCALS:
-            return self.numbered[-1]
-        if self.LOCALS < key <= self.LAST_GLOBAL:
-            return self.globals_
-        if key > self.LAST_GLOBAL:
-            raise EvalError(f"#{key} ({_system(NGC_SYSTEM, key)}) {MACHINE_ONLY}")
-        raise EvalError(f"#{key} is not a LinuxCNC parameter (1 to 5602)")
-
-    def read(self, key: VarKey) -> Value:
-        return self._store(key).get(key)  # type: ignore[arg-type]
-
-    def exists(self, key: VarKey) -> bool:
-        """EXISTS[#<name>]: the name has a value; a numbered parameter always exists (rs274, src)."""
-        return not isinstance(key, str) or self.read(key) is not None
-
-    def write(self, key: VarKey, value: Value) -> None:
-        if value is None:
-            raise EvalError(f"{_spell(key)} cannot be set to a vacant value")
-        self._store(key)[key] = value  # type: ignore[index]
-
-    def enter(self, args: dict[int, Value], new_level: bool) -> None:
-        """A call: ``#1``-``#30`` are the arguments (0 where none), named locals start empty. An ``M98``
-        call (``new_level`` false) shares the caller's ``#1``-``#30`` (the same level: what it sets, the
-        caller sees) but still starts its own named locals: rs274 reports the caller's ``#<a>`` as "not
-        defined" inside it, and its own as not defined after ``M99``."""
-        if new_level:
-            self.numbered.append({k: v for k, v in args.items() if v is not None})
-        else:
-            self.numbered.append(self.numbered[-1])
-        self.named.append({})
-
-    def leave(self, new_level: bool, value: Value = None) -> None:
-        """Back in the caller: ``#<_value>`` is the returned value and ``#<_value_returned>`` says if
-        there was one (LinuxCNC 2.8+); a return without a value, ``M99`` too, sets both to 0 (rs274:
-        ``endsub [5]`` then a plain ``endsub`` or ``M99`` leaves ``#<_value>`` 0, not 5)."""
-        if len(self.numbered) > 1:
-            self.numbered.pop()
-            self.named.pop()
-        self.returned(value)
-
-    def returned(self, value: Value) -> None:
-        self.globals_["_value_returned"] = 0.0 if value is None else 1.0
-        self.globals_["_value"] = 0.0 if value is None else value
-
-
-def _spell(key: VarKey) -> str:
-    return f"#<{key}>" if isinstance(key, str) else f"#{key}"
+    def with_message(self, comments: list[str]) -> "ProgramAlarm":
+        """Add the alarm's message (the block's comment, as the machine shows it)."""
+        if comments:
+            self.message = f"{self.message} ({' '.join(comments)})"
+        return self
 
 
 class Variables(Protocol):
     """What the interpreter needs of a dialect family's variables: the ``Env`` of ``evaluate`` plus the
-    call levels. ``FanucVariables`` and ``NgcVariables`` are two; a dialect outside the RS274 family
-    brings its own (a class taking the increment callable, as these do)."""
+    call levels. A class taking the least-increment callable (``VariablesFactory``)."""
 
     @property
     def vacancy(self) -> Vacancy: ...

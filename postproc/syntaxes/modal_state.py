@@ -33,8 +33,6 @@ _ASSIGN: Final = ASSIGN
 _MODAL_MOTION: Final = frozenset(("rapid", "linear", "cw", "ccw", "thread"))
 _WATCHED: Final = MODAL_KEYS | {CONTROL, ASSIGN}
 """A block with none of these keys changes no modal state and no construct: one pass over its keys."""
-LATHE_INCREMENTS: Final = {"U": "X", "W": "Z"}
-"""On a lathe, U and W are incremental X and Z whatever the distance mode (Fanuc T system A, GSK)."""
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
@@ -78,7 +76,8 @@ class ModalStateSyntax(Syntax):
         if mode == "cw" or mode == "ccw":
             _check_arc(block, ctx, motion)  # whatever else the block says: the simulator checks every arc
         pos = state.position
-        if ctx.lathe and ("U" in motion.axes or "W" in motion.axes):
+        increments = ctx.increments  # a lathe's U/W (``Dialect.INCREMENTAL_AXES``); empty on a mill
+        if increments and not increments.keys().isdisjoint(motion.axes):
             _lathe_move(ctx, motion)
             return
         if machine or mode == "home" or mode == "home2":
@@ -119,11 +118,13 @@ def _check_turning(block: Block, ctx: Context, motion: Motion, before: str) -> N
 
 
 def _lathe_move(ctx: Context, motion: Motion) -> None:
-    """A lathe move with U/W words: each is an increment of X/Z, beside absolute X/Z words."""
+    """A lathe move with incremental words (``ctx.increments``: U/W): each is an increment of its axis,
+    beside absolute words."""
     pos = ctx.state.position
+    increments = ctx.increments
     homing = motion.mode in ("home", "home2")
     for axis, value in motion.axes.items():
-        target = LATHE_INCREMENTS.get(axis)
+        target = increments.get(axis)
         if homing:
             pos[target or axis] = None
         elif target is None:
@@ -164,10 +165,10 @@ def _check_arc(block: Block, ctx: Context, motion: Motion) -> None:
     if axes is None or center is None or isinstance(radius, Expr):
         return  # a computed word (a symbolic program): the arc is checked when the program runs
     incremental = state.distance == "incremental"
-    lathe = ctx.lathe
+    increments = ctx.increments  # a lathe's U/W: increments of X/Z beside the absolute words
     if radius is not None and not any(
             a in axes and (not incremental or axes[a] != 0.0) for a in (a1, a2)) \
-            and not (lathe and any(axes.get(a, 0.0) != 0.0 for a in ("U", "W"))):
+            and not any(axes.get(a, 0.0) != 0.0 for a in increments):
         # no end point in the plane: an R arc that ends where it starts, wherever that is
         _refuse(block, ctx, motion, ArcError("a full circle cannot be programmed with R (use I/J/K)", "R"))
     position = state.position
@@ -182,17 +183,18 @@ def _check_arc(block: Block, ctx: Context, motion: Motion) -> None:
     e1, e2 = axes.get(a1), axes.get(a2)
     e1 = s1 if e1 is None else s1 + e1 if incremental else e1
     e2 = s2 if e2 is None else s2 + e2 if incremental else e2
-    if lathe:  # U/W: incremental X/Z beside the absolute words
-        step1, step2 = axes.get(_INCREMENT_OF.get(a1, "")), axes.get(_INCREMENT_OF.get(a2, ""))
-        if step1 is not None:
-            e1 += step1
-        if step2 is not None:
-            e2 += step2
-        if ctx.diameter:  # X words are diameters, the centre offset I a radius
-            if a1 == "X":
-                s1, e1 = s1 / 2.0, e1 / 2.0
-            elif a2 == "X":
-                s2, e2 = s2 / 2.0, e2 / 2.0
+    for letter, axis in increments.items():
+        step = axes.get(letter)
+        if step is not None:
+            if axis == a1:
+                e1 += step
+            elif axis == a2:
+                e2 += step
+    if ctx.diameter:  # a lathe's X words are diameters, the centre offset I a radius
+        if a1 == "X":
+            s1, e1 = s1 / 2.0, e1 / 2.0
+        elif a2 == "X":
+            s2, e2 = s2 / 2.0, e2 / 2.0
     if state.units == "inch":
         s1, s2, e1, e2 = s1 * MM_PER_INCH, s2 * MM_PER_INCH, e1 * MM_PER_INCH, e2 * MM_PER_INCH
         scale = MM_PER_INCH
@@ -219,7 +221,6 @@ def _check_arc(block: Block, ctx: Context, motion: Motion) -> None:
 _SMALLEST: Final = 10.0 ** -PLACES
 """Below this a radius or a half chord is zero (``postproc.block_rules.arc_centre`` uses the same)."""
 _CENTRE_LETTERS: Final = {"X": "I", "Y": "J", "Z": "K"}
-_INCREMENT_OF: Final = {"X": "U", "Z": "W"}
 
 
 def _refuse(block: Block, ctx: Context, motion: Motion, err: ArcError) -> NoReturn:

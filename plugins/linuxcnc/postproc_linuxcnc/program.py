@@ -18,7 +18,8 @@ from typing import ClassVar
 from postproc.errors import ProgramError
 from postproc.interp.rules import SubprogramRules
 from postproc.interp.variables import VariablesFactory
-from postproc.interp import NgcVariables, ProgramSyntax, spell_number
+from postproc.interp import ProgramSyntax, spell_number
+from postproc.rs274.variables import NgcVariables
 
 INTEGER_TOLERANCE = 0.0001
 """How far from an integer rs274 still reads an integer word (``interp_read.cc``)."""
