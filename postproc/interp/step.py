@@ -20,9 +20,9 @@ from typing import TYPE_CHECKING, Callable, ClassVar, Iterable, Iterator
 
 from mypy_extensions import mypyc_attr
 
-from ..control import ASSIGN, CONTROL
+from ..control import ASSIGN, CONTROL, Call, ModalCall
 from ..errors import Diagnostics, ErrorLevel, PostprocError
-from ..expr import Expr
+from ..expr import Expr, Var
 from ..ir import AXES, Block
 from ..context import Context
 from ..syntax import Syntax
@@ -35,6 +35,9 @@ if TYPE_CHECKING:
     from .structure import StreamCheck
 
 ENCODING = {"encoding": "utf-8", "errors": "surrogateescape", "newline": ""}
+TARGET_OMITS_VACANT = "target_omits_vacant"
+"""``ctx.run_data`` key: whether the translation's target omits a word whose value is vacant
+(``ProgramSyntax.OMITS_VACANT_WORDS`` of its step; absent: it does, nothing is checked)."""
 ARGUMENTS_KEY = "macro_arguments"
 """``ctx.run_data`` key of the locals a program run on its own starts with (``--arg A=30``: {1: 30.0})."""
 Kept = str | tuple[str, str] | None
@@ -71,6 +74,10 @@ class ProgramSyntax(Syntax):
     fails: for a dialect whose run-time errors (an unset variable read) are values in the targets."""
     SUBPROGRAM_RULES: ClassVar[SubprogramRules] = STORED_PROGRAMS
     """How numbered subprograms are found and ended (``postproc.interp.rules``)."""
+    OMITS_VACANT_WORDS: ClassVar[bool] = False
+    """A word whose value is a vacant variable is omitted, as if absent (Custom Macro B). A program kept
+    symbolically for a target without this rule (which reads such a word as 0, or refuses it) is run
+    first, and flattened when one of its words is vacant there."""
     """How messages name a subprogram (``O{number:04d}``, ``o{name}``)."""
 
     def build(self, block: Block, ctx: Context) -> None:
@@ -191,6 +198,8 @@ class ProgramSyntax(Syntax):
                 return  # its errors are reported: nothing is kept or run
             reason = self._keep_reason(body, ctx)
             if reason is None:
+                reason = self._vacancy_reason(body, ctx, kept, seen)
+            if reason is None:
                 if self.RUN_BEFORE_KEEP:
                     self._check_runs(body, ctx, kept, seen)
                 yield from body
@@ -216,6 +225,25 @@ class ProgramSyntax(Syntax):
             copy.line = original.line
         return copies
 
+    def _vacancy_reason(self, body: list[Block], ctx: Context, kept: deque[Kept], seen: int) -> str | None:
+        """Why ``body`` cannot travel symbolically to a target that does not omit vacant words: the first
+        error of a run on fresh copies where a vacant word is an error (a vacant word, or an error that
+        hides whether one follows: the flattening run then reports it). None: no word can be vacant."""
+        if not self.OMITS_VACANT_WORDS or ctx.run_data.get(TARGET_OMITS_VACANT, True):
+            return None
+        if not any(_may_be_vacant(block) for block in body):
+            return None
+        copies = self._copies(body, ctx)
+        found: list[PostprocError] = []
+        for _ in self._run(copies[0], iter(copies[1:]), ctx, kept, seen, report=found.append,
+                           vacant_word="this controller omits the word, the target would not"):
+            if found:
+                break
+        if not found:
+            return None
+        where = found[0].location
+        return (f"line {where.line}: " if where is not None else "") + found[0].message
+
     def _keep_reason(self, body: list[Block], ctx: Context) -> str | None:
         """Why ``body`` (the program from its first construct on) cannot travel symbolically, through
         ``ctx.keep_check`` on fresh copies (the check runs the later steps, which change blocks)."""
@@ -225,9 +253,11 @@ class ProgramSyntax(Syntax):
         return check(self._copies(body, ctx))
 
     def _run(self, first: Block, rest: Iterator[Block], ctx: Context, kept: deque[Kept],
-             seen: int, check: StreamCheck | None = None) -> Iterator[Block]:
+             seen: int, check: StreamCheck | None = None, report: Callable[[PostprocError], None] | None = None,
+             vacant_word: str | None = None) -> Iterator[Block]:
         """Run the program from ``first`` on; ``check``: the structure check of what streamed before it,
-        to finish on the rest (None: the rest was checked)."""
+        to finish on the rest (None: the rest was checked); ``report``: where its errors go (the
+        diagnostics); ``vacant_word``: a vacant word is an error saying so (``Interpreter.vacant_word``)."""
         dropped = seen - len(kept)
         prefix = self._reread(kept, ctx, first_line=first.line - len(kept))
         body = prefix + [first]
@@ -251,9 +281,10 @@ class ProgramSyntax(Syntax):
         arguments: dict[int, float] | None = ctx.run_data.get(ARGUMENTS_KEY)
         for key, value in (arguments or {}).items():
             variables.write(key, value)  # --arg: the main program run as a macro called with them
-        interpreter = Interpreter(store, self, variables, ctx.setup.limits, ctx.diagnostics.error, annotate=True,
-                                  rules=self.SUBPROGRAM_RULES, counts=ctx)
+        interpreter = Interpreter(store, self, variables, ctx.setup.limits, report or ctx.diagnostics.error,
+                                  annotate=True, rules=self.SUBPROGRAM_RULES, counts=ctx)
         interpreter.called = arguments is not None
+        interpreter.vacant_word = vacant_word
         yield from interpreter.run(start=len(prefix))
 
     def _reread(self, kept: deque[Kept], ctx: Context, first_line: int) -> list[Block]:
@@ -285,6 +316,16 @@ def _kept_line(item: Kept) -> str:
     if isinstance(item, str):
         return item + "\n"
     return item[0] + item[1]
+
+
+def _may_be_vacant(block: Block) -> bool:
+    """A word of ``block`` is a bare variable (vacant when unset), or the block calls a subprogram
+    (which may be given vacant arguments)."""
+    for value in block.values.values():
+        if isinstance(value, Var):
+            return True
+    control = block.sections.get(CONTROL)
+    return isinstance(control, (Call, ModalCall))
 
 
 def _computes(block: Block) -> bool:
