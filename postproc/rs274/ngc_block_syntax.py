@@ -9,9 +9,10 @@ modal sections, motion, arcs, modal cycle repetition) and replaces what RS274/NG
 * cancelling a cycle leaves no motion mode in force: axis words after it need a motion code;
 * a tool length offset without ``H`` uses the tool in the spindle (the one the last tool change loaded, not
   a ``T`` selected since: rs274 ``T1 M6 T2 G43`` applies tool 1); the orient code's ``R`` gives the angle;
-* with ``FEED_BEFORE_UNITS`` (LinuxCNC), ``F`` in a block that changes units is in the old units:
-  LinuxCNC sets the feed rate before it changes units (its order of execution; rs274 prints
-  ``SET_FEED_RATE`` before ``USE_LENGTH_UNITS``), so the neutral Feed, in the block's units, is converted;
+* where the dialect says ``FEED_BEFORE_UNITS`` (``ctx.feed_before_units``: LinuxCNC, Mach3), ``F`` in a
+  block that changes units is in the old units: the controller sets the feed rate before it changes units
+  (its order of execution; rs274 prints ``SET_FEED_RATE`` before ``USE_LENGTH_UNITS``), so the neutral
+  Feed, in the block's units, is converted;
 * a spindle stop or coolant off in a block that moves is made before the motion (the RS274/NGC order
   of execution): the section is flagged ``before_motion`` (``postproc.event_order``);
 * codes in the table's ``native_g``/``native_m``/``user_m`` are kept verbatim, tagged with ``DIALECT``;
@@ -56,8 +57,6 @@ class NgcWordBlockSyntax(WordBlockSyntax):
     NATIVE_M_WORDS: ClassVar[str] = "PQ"
     REAL_LETTERS: ClassVar[frozenset[str]] = REAL_LETTERS
     INTEGER_LETTERS: ClassVar[frozenset[str]] = INTEGER_LETTERS
-    FEED_BEFORE_UNITS: ClassVar[bool] = True
-    """F in a block that changes units is in the old units (LinuxCNC's order of execution)."""
     N_FIRST: ClassVar[bool] = False
     """A block number stands first in its block (after a block delete ``/``) or not at all (rs274: "Bad
     character 'n' used"); grbl reads N anywhere."""
@@ -157,7 +156,7 @@ class NgcWordBlockSyntax(WordBlockSyntax):
             self._machine_move(block, ctx, codes)
         self.m_sections(block, ctx, mcodes, values, used)
         self.finish_words(block, ctx, values, used)
-        if self.FEED_BEFORE_UNITS and "Units" in block.sections and "Feed" in block.sections:
+        if ctx.feed_before_units and "Units" in block.sections and "Feed" in block.sections:
             _feed_in_old_units(block, ctx)
         _stops_before_motion(block)
         if self.FEED_MODE_RESETS_FEED and "FeedMode" in block.sections and "Feed" not in block.sections:

@@ -19,7 +19,7 @@ from ..control import ASSIGN, CONTROL
 from ..errors import ProgramError, UnsupportedError
 from ..event_order import after_motion
 from ..machine_functions import RIGID_TAP, refused_rigid_tap
-from ..expr import Expr
+from ..expr import Binary, Expr, Num
 from .codes import CodeTable
 from .expressions import ExprSpelling, spell_word_value
 from ..ir import Block, CompoundMotion, Dwell, Feed, Motion, Section, Sequence, one_line
@@ -176,6 +176,10 @@ class WordWriter(Writer):
         """Section key -> its writing function: this class's dispatch table (``section_writer``), shared by
         every run that writes this dialect."""
         self.modal = ModalState()
+        self.feed_before_units = target is not None and target.FEED_BEFORE_UNITS
+        """The target reads an F in a block that changes units in the units before it (``feed_words``)."""
+        self.units_before = self.modal.units
+        """Units in force before the block being written."""
         self.straight_copy = (source_dialect == self.DIALECT and self.normalize and not self.renumber
                               and self.leading_zero and not self.rounding and self.straight_path(COPY_METHODS))
         """A straight block normalised back to its own dialect is its source line (``straight_move``)."""
@@ -749,6 +753,7 @@ class WordWriter(Writer):
         return self._code("plane", s.plane, f"the {s.plane} plane", block)
 
     def units_words(self, s: Any, block: Block) -> list[str]:
+        self.units_before = self.modal.units
         if s.system != self.modal.units and self.carry:
             factor = MM_PER_INCH if s.system == "mm" else 1.0 / MM_PER_INCH
             self.carry = {axis: error * factor for axis, error in self.carry.items()}
@@ -763,6 +768,7 @@ class WordWriter(Writer):
         return self._code("offset", s.index, f"work offset {s.index}", block)
 
     def feed_mode_words(self, s: Any, block: Block) -> list[str]:
+        self.modal.feed_mode = s.mode
         return self._code("feed_mode", s.mode, f"feed mode {s.mode}", block)
 
     def return_level_words(self, s: Any, block: Block) -> list[str]:
@@ -993,7 +999,23 @@ class WordWriter(Writer):
         return self.number(round(count, 9))
 
     def feed_words(self, s: Any, block: Block) -> list[str]:
+        """The neutral F is in the block's units; a ``FEED_BEFORE_UNITS`` target reads it in the units before
+        the block (an inverse-time F is no length)."""
         value = s.value
+        units = block.sections.get("Units")
+        if (self.feed_before_units and units is not None and units.system != self.units_before  # type: ignore[attr-defined]
+                and self.modal.feed_mode != "inverse_time"):
+            modal = self.modal
+            after, modal.units = modal.units, self.units_before  # spelled in the units it is read in
+            factor = MM_PER_INCH if after == "inch" else 1.0 / MM_PER_INCH
+            try:
+                if isinstance(value, Expr):  # F#1 under G20: F[#1*25.4], the same rate in the units before
+                    modal.feed = None  # known only when the program runs
+                    return ["F" + self.expression(Binary("mul", value, Num(factor)), block)]
+                modal.feed = value
+                return ["F" + self.feed_number(value * factor, block)]
+            finally:
+                modal.units = after
         if isinstance(value, Expr):
             self.modal.feed = None  # known only when the program runs
             return ["F" + self.expression(value, block)]

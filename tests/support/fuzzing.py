@@ -80,11 +80,6 @@ KNOWN_DEFECTS: list[tuple[str, str | None, re.Pattern[str]]] = [
      "generator, whose LinuxCNC programs now say G99)", "mach3",
      re.compile(r"^translated, but verify says: .*structure differs\nfirst difference at IN:\d+ / OUT:\d+: "
                 r"IN has a feed to [^,]*, OUT a rapid to")),
-    ("Mach3: an F in a block that changes units (G20 G1 X1. F..) is written in the new units but the mach3 "
-     "dialect reads it in the old ones, as LinuxCNC orders F before G20/G21 (which order Mach3 keeps is "
-     "unconfirmed; found by the final fuzz run)", "mach3",
-     re.compile(r"^translated, but verify says: .*structure differs\nfirst difference at IN:\d+ / OUT:\d+: "
-                r"IN feeds at F[\d.]+, OUT at F[\d.]+")),
     ("a lathe's turret T (T0202) is written T2 M6 for a mill control, whose tool change stops the spindle the "
      "lathe keeps running (found by the variable words generator; T0202 written as a number too)", None,
      re.compile(r"^translated, but verify says: .*structure differs\nfirst difference at IN:\d+ / OUT:\d+: "

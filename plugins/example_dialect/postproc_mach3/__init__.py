@@ -126,6 +126,10 @@ class Mach3(Dialect):
     """No M19: cycles that need an oriented stop follow the set-up's ``Cycles orientation``."""
     STOPS_BEFORE_MOTION = True
     """The RS274/NGC order of execution: M5 and M9 act before the block's motion."""
+    FEED_BEFORE_UNITS = True
+    """F in a block that changes units is in the old units [K: the Mach3Mill manual's order-of-execution
+    table is the NIST RS274/NGC one: set feed rate (3) before set length units (12); not run on a
+    Mach3 here]."""
     LOWERING = (stops_after_motion,)
     """A moving block's spindle stop and coolant off go in a block of their own after it, where the
     source stopped after the motion (``postproc.rs274.order_of_execution``)."""

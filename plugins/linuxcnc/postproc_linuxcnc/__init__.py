@@ -61,6 +61,9 @@ class Linuxcnc(Dialect):
     """Numbered and named parameters, expressions, o-word subprograms and control flow."""
     STOPS_BEFORE_MOTION = True
     """The RS274/NGC order of execution: M5 and M9 act before the block's motion."""
+    FEED_BEFORE_UNITS = True
+    """F in a block that changes units is in the old units [V: rs274 prints ``SET_FEED_RATE`` before
+    ``USE_LENGTH_UNITS``, its order of execution]."""
     COMMENTS = COMMENTS
     """``( )`` and ``;`` comments; ``(MSG,`` ``(LOGOPEN,`` ... act (``active_comments.ACTIVE``)."""
     LINE_RULE = Lazy[LineRule](".lines:LINES")

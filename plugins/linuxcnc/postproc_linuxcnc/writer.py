@@ -36,7 +36,6 @@ from postproc.event_order import after_motion
 from postproc.ir import Block, ProgramControl, Section
 from postproc.context import Context
 from postproc.dialect import Dialect
-from postproc.state import MM_PER_INCH
 from postproc.control import (
     Assign, Break, Call, Continue, Do, DoWhile, Else, ElseIf, EndFor, EndIf, EndRepeat, EndWhile, For, If, Repeat,
     Return, SubEnd, SubStart, While,
@@ -79,8 +78,7 @@ class LinuxcncWriter(WordWriter):
     """G80 is a motion code here: ``G80 G0`` is refused, a block's G0-G3 ends the cycle by itself."""
     BARE_FEED_MOTION_NEEDS_FEED: ClassVar[bool] = True
     SPELLING: ClassVar[ExprSpelling | None] = LINUXCNC_SPELLING
-    STRAIGHT_OVERRIDES: ClassVar[frozenset[str]] = frozenset({"write_block", "generate", "motion_words",
-                                                              "feed_words"})
+    STRAIGHT_OVERRIDES: ClassVar[frozenset[str]] = frozenset({"write_block", "generate", "motion_words"})
     """A straight move has no M19 or compensation to reorder, is no arc or reference return, changes no
     units, is no tape mark or program end, and is never a program's first block (its motion mode is set
     by a block before it, which ``write_block`` saw): these overrides write it as the base does."""
@@ -93,8 +91,6 @@ class LinuxcncWriter(WordWriter):
         super().__init__(ctx, source_dialect, target)
         self.foreign = source_dialect != self.DIALECT
         """Comments come from another dialect: none may act here (``comment``)."""
-        self.units_before = self.modal.units
-        """Units in force before the block being written (its F is read in them)."""
         self.inverse_time = False
         self._open: dict[str, list[str]] = {}
         """Source label -> the o-word labels written for its open constructs, innermost last."""
@@ -124,10 +120,6 @@ class LinuxcncWriter(WordWriter):
         """Another dialect's comment text as a comment that does not act (LinuxCNC reads ``(MSG,``,
         ``(LOGOPEN,``, ``(ABORT,`` ... as instructions: ``active_comments.ACTIVE``)."""
         return COMMENTS.comment(text) if self.foreign else super().comment(text)
-
-    def units_words(self, s: Any, block: Block) -> list[str]:
-        self.units_before = self.modal.units
-        return super().units_words(s, block)
 
     def cutter_compensation_words(self, s: Any, block: Block) -> list[str]:
         """rs274 turns compensation on only from off ("Cannot turn cutter radius comp on when on"): G41/G42
@@ -177,23 +169,6 @@ class LinuxcncWriter(WordWriter):
         if (not self.inverse_time and isinstance(feed, (int, float)) and feed
                 and "Feed" not in block.sections and "Units" not in block.sections):
             words.append("F" + self.feed_number(feed, block))
-        return words
-
-    def feed_words(self, s: Any, block: Block) -> list[str]:
-        """The neutral F is in the block's units; LinuxCNC reads it in the units before the block."""
-        units = block.sections.get("Units")
-        if units is None or units.system == self.units_before or self.inverse_time:  # type: ignore[attr-defined]
-            return super().feed_words(s, block)
-        modal = self.modal
-        after, modal.units = modal.units, self.units_before
-        factor = MM_PER_INCH if after == "inch" else 1.0 / MM_PER_INCH
-        if isinstance(s.value, Expr):  # F#1 under G20: F[#1*25.4], the same rate in the units before the block
-            modal.feed = None  # known only when the program runs
-            words = ["F" + self.expression(Binary("mul", s.value, Num(factor)), block)]
-        else:
-            modal.feed = s.value
-            words = ["F" + self.feed_number(s.value * factor, block)]
-        modal.units = after
         return words
 
     def statement_words(self, section: Section, block: Block) -> list[str]:
