@@ -248,9 +248,9 @@ class Interpreter:
                             err.located(self._where(frame, block, self._word_column(block, letter, text)))
                             raise
                     elif self.vacant_word is not None:
-                        err = ProgramError(f"{letter}{text} is vacant here: {self.vacant_word}")
-                        err.located(self._where(frame, block, self._word_column(block, letter, text)))
-                        raise err
+                        vacant = ProgramError(f"{letter}{text} is vacant here: {self.vacant_word}")
+                        vacant.located(self._where(frame, block, self._word_column(block, letter, text)))
+                        raise vacant
                 else:
                     out.append((letter, text))
         else:

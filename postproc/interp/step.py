@@ -31,6 +31,7 @@ from .rules import STORED_PROGRAMS, SubprogramRules
 from .variables import FanucVariables, Variables, VariablesFactory
 
 if TYPE_CHECKING:
+    from .machine import Reporter
     from .store import Program
     from .structure import StreamCheck
 
@@ -235,7 +236,11 @@ class ProgramSyntax(Syntax):
             return None
         copies = self._copies(body, ctx)
         found: list[PostprocError] = []
-        for _ in self._run(copies[0], iter(copies[1:]), ctx, kept, seen, report=found.append,
+
+        def report(err: PostprocError) -> None:
+            found.append(err)
+
+        for _ in self._run(copies[0], iter(copies[1:]), ctx, kept, seen, report=report,
                            vacant_word="this controller omits the word, the target would not"):
             if found:
                 break
@@ -253,7 +258,7 @@ class ProgramSyntax(Syntax):
         return check(self._copies(body, ctx))
 
     def _run(self, first: Block, rest: Iterator[Block], ctx: Context, kept: deque[Kept],
-             seen: int, check: StreamCheck | None = None, report: Callable[[PostprocError], None] | None = None,
+             seen: int, check: StreamCheck | None = None, report: Reporter | None = None,
              vacant_word: str | None = None) -> Iterator[Block]:
         """Run the program from ``first`` on; ``check``: the structure check of what streamed before it,
         to finish on the rest (None: the rest was checked); ``report``: where its errors go (the
