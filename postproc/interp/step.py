@@ -232,7 +232,7 @@ class ProgramSyntax(Syntax):
         hides whether one follows: the flattening run then reports it). None: no word can be vacant."""
         if not self.OMITS_VACANT_WORDS or ctx.run_data.get(TARGET_OMITS_VACANT, True):
             return None
-        if not any(_may_be_vacant(block) for block in body):
+        if not _may_be_vacant(body):
             return None
         copies = self._copies(body, ctx)
         found: list[PostprocError] = []
@@ -323,14 +323,23 @@ def _kept_line(item: Kept) -> str:
     return item[0] + item[1]
 
 
-def _may_be_vacant(block: Block) -> bool:
-    """A word of ``block`` is a bare variable (vacant when unset), or the block calls a subprogram
-    (which may be given vacant arguments)."""
-    for value in block.values.values():
-        if isinstance(value, Var):
+def _may_be_vacant(body: list[Block]) -> bool:
+    """A word of ``body`` is a bare variable (vacant when unset), or it calls a subprogram that is not in
+    it (a library program, whose words are not seen here)."""
+    defined = set()
+    for block in body:
+        start = block.sections.get("ProgramStart")
+        number = getattr(start, "number", None)
+        if number is not None:
+            defined.add(str(number))
+    for block in body:
+        for value in block.values.values():
+            if isinstance(value, Var):
+                return True
+        control = block.sections.get(CONTROL)
+        if isinstance(control, (Call, ModalCall)) and (not isinstance(control.name, str) or control.name not in defined):
             return True
-    control = block.sections.get(CONTROL)
-    return isinstance(control, (Call, ModalCall))
+    return False
 
 
 def _computes(block: Block) -> bool:
