@@ -67,6 +67,9 @@ class NgcWordBlockSyntax(WordBlockSyntax):
     """A feed mode code (G93/G94/G95) sets the feed rate to zero, even one that selects the mode in force
     (LinuxCNC; checked with rs274); grbl keeps it unless it leaves inverse time."""
     M_GROUPS: ClassVar[dict[int, str]] = {}
+    CUTTER_TAKES_LOADED_TOOL: ClassVar[bool] = False
+    """G41/G42 without D takes the radius of the tool in the spindle (LinuxCNC); the reading fills in its
+    number as the register, or refuses the block where it is not known. False: the register stays absent."""
     """M number -> the controller's modal group: two M codes of one group in a block are an error (rs274
     "Two m codes used from same modal group", grbl error 21). M codes not listed conflict by meaning."""
 
@@ -135,6 +138,9 @@ class NgcWordBlockSyntax(WordBlockSyntax):
             extra[_LOADED_KEY] = selected if isinstance(selected, (int, Expr)) else None  # M6 runs before G43
         if "08" in codes and codes["08"][2] == "positive" and "H" not in values:
             self._loaded_tool(block, ctx, values)
+        if self.CUTTER_TAKES_LOADED_TOOL and "07" in codes and codes["07"][2] in ("left", "right") \
+                and "D" not in values:
+            self._loaded_cutter(block, ctx, values)
         no_motion = extra.get(_STATE_KEY, False)
         if "01" in codes or "09" in codes:
             no_motion = codes.get("09", ("", ""))[1] == "cycle_cancel" and "01" not in codes
@@ -293,13 +299,24 @@ class NgcWordBlockSyntax(WordBlockSyntax):
 
     def _loaded_tool(self, block: Block, ctx: Context, values: dict[str, Any]) -> None:
         """A tool length offset without H applies the offset of the tool in the spindle: the one the last
-        tool change loaded (unknown before any: the machine's, from before the program)."""
-        tool = ctx.state.extra.get(_LOADED_KEY)
+        tool change loaded (before any: the machine's, which the set-up's ``startTool`` may say)."""
+        tool = _spindle_tool(ctx)
         if tool is None:
             raise ProgramError(f"{self.spell('length', 'positive')} without H uses the loaded tool, which is not known "
                                "here: program H",
                                ctx.at(block, ctx.column_of(block, "G")))
         values["H"] = tool
+
+    def _loaded_cutter(self, block: Block, ctx: Context, values: dict[str, Any]) -> None:
+        """Cutter compensation without D takes the radius of the tool in the spindle (``_loaded_tool``): its
+        number becomes the register, so every target and the simulation take the same radius."""
+        tool = _spindle_tool(ctx)
+        if tool is None or (isinstance(tool, int) and tool == 0 and _LOADED_KEY in ctx.state.extra):
+            known = "not known here (no tool change before it, no startTool in the set-up's <Machine>)" \
+                if tool is None else "tool 0 after T0 M6 (rs274 then keeps the last tool's radius)"
+            raise ProgramError(f"cutter compensation without D takes the radius of the tool in the spindle, which "
+                               f"is {known}: program D", ctx.at(block, ctx.column_of(block, "G")))
+        values["D"] = tool
 
     def _machine_move(self, block: Block, ctx: Context, codes: dict[str, Any]) -> None:
         """Machine coordinates move in the motion mode in force, which must be rapid or linear (the ISO
@@ -345,6 +362,13 @@ class NgcWordBlockSyntax(WordBlockSyntax):
         angle = values.get("R", ctx.setup.cycles.orient_angle)
         block.add(SpindleOrientation(angle if isinstance(angle, Expr) else float(angle)))
         used.update("RQP")
+
+
+def _spindle_tool(ctx: Context) -> Any:
+    """The tool in the spindle: the one the last tool change loaded, before any the set-up's
+    ``<Machine startTool>`` (None: unknown)."""
+    extra = ctx.state.extra
+    return extra[_LOADED_KEY] if _LOADED_KEY in extra else ctx.setup.machine.start_tool
 
 
 def _feed_in_old_units(block: Block, ctx: Context) -> None:

@@ -59,10 +59,6 @@ def setups() -> st.SearchStrategy[MachineSetup]:
 
 
 KNOWN_DEFECTS: list[tuple[str, str | None, re.Pattern[str]]] = [
-    ("LinuxCNC G41/G42 without D before any tool change compensates by the tool in the spindle, which only the "
-     "machine knows: translate copies it, the simulation refuses it (one decision of validity needed)", None,
-     re.compile(r"^translated, but verify fails: in\.nc:\d+:\d+: error: cutter compensation without its register "
-                r"takes the tool in the spindle")),
     ("cutter compensation outside the XY plane (G18/G19) is not simulated (LinuxCNC's rules are implemented for "
      "XY only)", None,
      re.compile(r"^translated, but verify fails: in\.nc:\d+:\d+: error: cutter compensation in the (ZX|YZ) plane "

@@ -101,6 +101,8 @@ class LinuxcncWriter(WordWriter):
         self._cutter_on = False
         """Cutter compensation is on (rs274 refuses turning it on again, and G28/G30 under it)."""
         self._cutter_before = False
+        self._cutter_register: Any = None
+        """The register of the last G41/G42 written (another dialect's G41 without D takes it)."""
         """Whether compensation was on before the block whose compensation word was written last."""
         self._opened: bool | None = None
         """Whether the program opened with '%' (None: nothing written yet)."""
@@ -133,7 +135,24 @@ class LinuxcncWriter(WordWriter):
                              "allowed only in XY, XZ planes\")", block)
         self._cutter_before = self._cutter_on
         self._cutter_on = s.mode != "off"
+        if s.mode != "off" and s.register is None:
+            s = self._cutter_register_in_force(s, block)
+        elif s.mode != "off":
+            self._cutter_register = s.register
         return super().cutter_compensation_words(s, block)
+
+    def _cutter_register_in_force(self, s: Any, block: Block) -> Any:
+        """Another dialect's G41/G42 without D compensates by the register in force (Fanuc: D is modal [K]);
+        LinuxCNC's G41 without D takes the spindle tool's radius instead, so the register is written: the
+        last one written, or none known (refused). A LinuxCNC source names it already (its reader fills in
+        the spindle tool)."""
+        if self._cutter_register is None:
+            self.unsupported(f"cutter compensation {s.mode} without its register, before any register was "
+                             "programmed (LinuxCNC's G41/G42 without D takes the radius of the tool in the "
+                             "spindle; program D)", block)
+        named = copy.copy(s)
+        named.register = self._cutter_register
+        return named
 
     def plane_words(self, s: Any, block: Block) -> list[str]:
         if self._cutter_on and s.plane != self.modal.plane:
