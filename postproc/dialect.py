@@ -139,6 +139,10 @@ class Dialect:
     """Variables, expressions and control flow (loops, jumps, subprograms) can be written: a program that
     computes is translated symbolically when every construct has a spelling here, else flattened (its
     evaluated motion). Without it every such program reaches this target flattened."""
+    START_RETURN_LEVEL: ClassVar[str] = "initial"
+    """The canned-cycle return level in force at program start ("initial": G98, "r": G99), which a cycle
+    that programs none returns to (``postproc.rs274.return_level`` writes it where a source assumed the
+    other)."""
     FEED_BEFORE_UNITS: ClassVar[bool] = False
     """An F in a block that changes units (``G20 G1 X1. F10.``) is read in the units in force before the
     block: the controller sets the feed rate before the length units (the RS274/NGC order of execution).

@@ -71,11 +71,6 @@ KNOWN_DEFECTS: list[tuple[str, str | None, re.Pattern[str]]] = [
     ("an ISG block of words continued (\\) into a P assignment that reads an unset P parameter is kept "
      "symbolically without the run that refuses it (on separate lines it is refused)", None,
      re.compile(r"^translated, but verify fails: in\.nc:\d+:\d+: error: P\d+ is read before it is set")),
-    ("LinuxCNC starts in G99, Mach3 in G98: a LinuxCNC cycle that leaves its return level to that default is "
-     "written for Mach3 without G99 and returns to the initial level there (found by the variable words "
-     "generator, whose LinuxCNC programs now say G99)", "mach3",
-     re.compile(r"^translated, but verify says: .*structure differs\nfirst difference at IN:\d+ / OUT:\d+: "
-                r"IN has a feed to [^,]*, OUT a rapid to")),
     ("a lathe's turret T (T0202) is written T2 M6 for a mill control, whose tool change stops the spindle the "
      "lathe keeps running (found by the variable words generator; T0202 written as a number too)", None,
      re.compile(r"^translated, but verify says: .*structure differs\nfirst difference at IN:\d+ / OUT:\d+: "
