@@ -14,6 +14,7 @@ A dialect subclasses ``ProgramSyntax`` with its data (class attributes below) an
 
 from __future__ import annotations
 
+import io
 from collections import deque
 from pathlib import Path
 from typing import TYPE_CHECKING, Callable, ClassVar, Iterable, Iterator
@@ -197,7 +198,7 @@ class ProgramSyntax(Syntax):
             body.extend(blocks)
             if not _sound(body, check):
                 return  # its errors are reported: nothing is kept or run
-            reason = self._keep_reason(body, ctx)
+            reason = self._keep_reason(body, ctx, kept)
             if reason is None:
                 reason = self._vacancy_reason(body, ctx, kept, seen)
             if reason is None:
@@ -214,17 +215,25 @@ class ProgramSyntax(Syntax):
     def _check_runs(self, body: list[Block], ctx: Context, kept: deque[Kept], seen: int) -> None:
         """Run fresh copies of the program to its end, reporting the interpreter's first error (located in
         the program): a program kept symbolically then fails to translate where it fails to run."""
-        copies = self._copies(body, ctx)
+        copies = self._copies(body, ctx, kept)
         if copies:
             for _ in self._run(copies[0], iter(copies[1:]), ctx, kept, seen):
                 pass
 
-    def _copies(self, body: list[Block], ctx: Context) -> list[Block]:
-        copies = self.read_lines([(b.text or "") + b.eol for b in body], ctx.file, ctx,
-                                 Diagnostics(ErrorLevel.IGNORE))
+    def _copies(self, body: list[Block], ctx: Context, kept: deque[Kept]) -> list[Block]:
+        """Fresh blocks of ``body``, read as the program reads them: after the lines of the streamed
+        prefix the reader needs for that (``reading_context``), which are left out again."""
+        lead = self.reading_context(kept)
+        copies = self.read_lines(lead + [(b.text or "") + b.eol for b in body], ctx.file, ctx, _quiet())
+        copies = copies[len(lead):] if len(copies) == len(lead) + len(body) else copies
         for original, copy in zip(body, copies):
             copy.line = original.line
         return copies
+
+    def reading_context(self, kept: deque[Kept]) -> list[str]:
+        """The last lines of the streamed prefix (``kept``, oldest first) that change how the reader reads
+        the lines after them (ISG: an open ``#VAR`` block), each ending in its end of line; none here."""
+        return []
 
     def _vacancy_reason(self, body: list[Block], ctx: Context, kept: deque[Kept], seen: int) -> str | None:
         """Why ``body`` cannot travel symbolically to a target that does not omit vacant words: the first
@@ -234,7 +243,7 @@ class ProgramSyntax(Syntax):
             return None
         if not _may_be_vacant(body):
             return None
-        copies = self._copies(body, ctx)
+        copies = self._copies(body, ctx, kept)
         found: list[PostprocError] = []
 
         def report(err: PostprocError) -> None:
@@ -249,13 +258,13 @@ class ProgramSyntax(Syntax):
         where = found[0].location
         return (f"line {where.line}: " if where is not None else "") + found[0].message
 
-    def _keep_reason(self, body: list[Block], ctx: Context) -> str | None:
+    def _keep_reason(self, body: list[Block], ctx: Context, kept: deque[Kept]) -> str | None:
         """Why ``body`` (the program from its first construct on) cannot travel symbolically, through
         ``ctx.keep_check`` on fresh copies (the check runs the later steps, which change blocks)."""
         check = ctx.keep_check
         if check is None:
             return "the target's spelling of the program's constructs was not checked"
-        return check(self._copies(body, ctx))
+        return check(self._copies(body, ctx, kept))
 
     def _run(self, first: Block, rest: Iterator[Block], ctx: Context, kept: deque[Kept],
              seen: int, check: StreamCheck | None = None, report: Reporter | None = None,
@@ -297,12 +306,17 @@ class ProgramSyntax(Syntax):
         errors were reported when it streamed, so they are not reported again."""
         if not kept:
             return []
-        lines = [_kept_line(item) for item in kept]
-        blocks = self.read_lines(lines, ctx.file, ctx, Diagnostics(ErrorLevel.IGNORE))
+        lines = [kept_line(item) for item in kept]
+        blocks = self.read_lines(lines, ctx.file, ctx, _quiet())
         offset = first_line - 1
         for block in blocks:
             block.line += offset
         return blocks
+
+
+def _quiet() -> Diagnostics:
+    """Diagnostics for text read again: its errors and warnings were reported when it was first read."""
+    return Diagnostics(ErrorLevel.IGNORE, warn_stream=io.StringIO())
 
 
 def _sound(blocks: list[Block], check: StreamCheck) -> bool:
@@ -315,7 +329,8 @@ def _sound(blocks: list[Block], check: StreamCheck) -> bool:
     return check.end()
 
 
-def _kept_line(item: Kept) -> str:
+def kept_line(item: Kept) -> str:
+    """A kept item's text as a line (ending in its end of line)."""
     if item is None:
         return ""
     if isinstance(item, str):
