@@ -46,6 +46,12 @@ _STATE_KEY = "NgcBlockSyntax"
 _LOADED_KEY = "NgcBlockSyntax.loaded"
 """``ctx.state.extra`` key: the tool the last tool change loaded (absent or None: unknown)."""
 _MOTION_GROUP = ("01", "09")
+_NOT_NEGATIVE = {"T": "a tool number", "H": "a tool length register", "D": "a cutter radius register",
+                 "L": "a repeat count"}
+"""Whole-number addresses rs274 refuses negative [V: "Negative tool id" (T-1), "Requested tool -1 not found
+in the tool table" (G43 H-1), "G41 requires D word to be a whole number" (D-1), "Negative l word used"
+(G81 L-1)]; grbl refuses a negative T [V: gcode.c, STATUS_NEGATIVE_VALUE for F, N, P, T and S] (its L
+is only G10's, whose L-1 it does not know)."""
 
 
 class NgcWordBlockSyntax(WordBlockSyntax):
@@ -231,7 +237,11 @@ class NgcWordBlockSyntax(WordBlockSyntax):
             if "." in num:
                 raise ParseError(f"address {up} takes a whole number ({up}{num})",
                                  ctx.at(block, ctx.column_of(block, up)))
-            return int(num)
+            value = int(num)
+            if value < 0 and up in _NOT_NEGATIVE:
+                raise ParseError(f"{up}{num}: {_NOT_NEGATIVE[up]} cannot be negative",
+                                 ctx.at(block, ctx.column_of(block, up)))
+            return value
         if up == "S":
             return float(num) if "." in num else int(num)
         raise ParseError(f"address {up} is not used by the {self.DIALECT} dialect",
