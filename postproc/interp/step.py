@@ -224,7 +224,7 @@ class ProgramSyntax(Syntax):
         """Fresh blocks of ``body``, read as the program reads them: after the lines of the streamed
         prefix the reader needs for that (``reading_context``), which are left out again."""
         lead = self.reading_context(kept)
-        copies = self.read_lines(lead + [(b.text or "") + b.eol for b in body], ctx.file, ctx, _quiet())
+        copies = self.read_lines(_physical(lead + [(b.text or "") + b.eol for b in body]), ctx.file, ctx, _quiet())
         copies = copies[len(lead):] if len(copies) == len(lead) + len(body) else copies
         for original, copy in zip(body, copies):
             copy.line = original.line
@@ -307,11 +307,17 @@ class ProgramSyntax(Syntax):
         if not kept:
             return []
         lines = [kept_line(item) for item in kept]
-        blocks = self.read_lines(lines, ctx.file, ctx, _quiet())
+        blocks = self.read_lines(_physical(lines), ctx.file, ctx, _quiet())
         offset = first_line - 1
         for block in blocks:
             block.line += offset
         return blocks
+
+
+def _physical(texts: list[str]) -> io.StringIO:
+    """Block texts as the physical lines a reader takes (a continued block's text holds several: read as one
+    line, its continuation was lost), split as the program file was (``ENCODING``: newline="")."""
+    return io.StringIO("".join(texts), newline="")
 
 
 def _quiet() -> Diagnostics:
