@@ -314,10 +314,18 @@ class ProgramSyntax(Syntax):
         return blocks
 
 
-def _physical(texts: list[str]) -> io.StringIO:
-    """Block texts as the physical lines a reader takes (a continued block's text holds several: read as one
-    line, its continuation was lost), split as the program file was (``ENCODING``: newline="")."""
-    return io.StringIO("".join(texts), newline="")
+def _physical(texts: list[str]) -> list[str]:
+    """Block texts as the physical lines a reader takes: a continued block's text holds several (read as
+    one line, its continuation was lost), split as the program file was (``ENCODING``: newline="");
+    every other text is its line as it is (an empty one for a block without text)."""
+    lines: list[str] = []
+    for text in texts:
+        body = text.rstrip("\r\n")
+        if "\n" in body or "\r" in body:
+            lines.extend(io.StringIO(text, newline=""))
+        else:
+            lines.append(text)
+    return lines
 
 
 def _quiet() -> Diagnostics:
