@@ -16,7 +16,7 @@ from .ir import Block
 from .lower import lower_for
 from .plugins import Registry, default_registry
 from .reading import gc_paused as gc_paused, read_blocks as read_blocks  # public API names
-from .interp.step import ProgramSyntax
+from .interp.step import TARGET_OMITS_VACANT, ProgramSyntax
 from .sequences import Sequences
 from .setup import MachineSetup
 from .source_map import OutputMap
@@ -49,6 +49,7 @@ def translate(lines: Iterable[str], out: TextIO, *, file: str, source: str, targ
         def prepare(ctx: Context) -> None:
             ctx.on_unsupported = on_unsupported
             ctx.keep_check = _keep_check(src, dst, ctx, registry)
+            ctx.run_data[TARGET_OMITS_VACANT] = _omits_vacant_words(dst, setup)
 
         if setup.travel_limited():
             from .toolpath import check_travel
@@ -111,6 +112,17 @@ def _keep_check(src: type[Dialect], dst: type[Dialect], ctx: Context,
         return None
 
     return reason
+
+
+def _omits_vacant_words(dialect: type[Dialect], setup: MachineSetup) -> bool:
+    """Whether ``dialect``'s controller omits a word whose value is vacant (its interpreter step says
+    so); a dialect without variables never receives one."""
+    if not dialect.PROGRAMS:
+        return True
+    for step in dialect.pipeline(setup).steps:
+        if isinstance(step, ProgramSyntax):
+            return step.OMITS_VACANT_WORDS
+    return False
 
 
 def _first(diagnostics: Diagnostics) -> str:

@@ -25,7 +25,7 @@ class Context:
     reading dialect tells the neutral steps about its words."""
 
     __slots__ = ("file", "setup", "diagnostics", "state", "dialect", "cycle_words", "on_unsupported",
-                 "program_mode", "keep_check", "reader", "stops_before_motion", "run_data",
+                 "program_mode", "keep_check", "reader", "stops_before_motion", "feed_before_units", "run_data",
                  "point_mix", "lathe", "increments", "diameter", "one_block", "peck_clearance_mm", "moves_made")
 
     def __init__(self, file: str, setup: MachineSetup, diagnostics: Diagnostics, dialect: str,
@@ -49,6 +49,8 @@ class Context:
         self.stops_before_motion = True
         """Whether the reading dialect flags stops it makes before the motion (``Dialect.STOPS_BEFORE_MOTION``;
         True unless the dialect says otherwise, so a step never skips flags it was not told are absent)."""
+        self.feed_before_units = False
+        """An F in a block that changes units is in the old units (``Dialect.FEED_BEFORE_UNITS``)."""
         self.point_mix: Any = NOT_SET
         """A reading step's tracker of words written with and without a decimal point
         (``postproc.rs274.point_mix``): ``NOT_SET`` until it starts, None once it has nothing left to look

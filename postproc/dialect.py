@@ -139,6 +139,15 @@ class Dialect:
     """Variables, expressions and control flow (loops, jumps, subprograms) can be written: a program that
     computes is translated symbolically when every construct has a spelling here, else flattened (its
     evaluated motion). Without it every such program reaches this target flattened."""
+    START_RETURN_LEVEL: ClassVar[str] = "initial"
+    """The canned-cycle return level in force at program start ("initial": G98, "r": G99), which a cycle
+    that programs none returns to (``postproc.rs274.return_level`` writes it where a source assumed the
+    other)."""
+    FEED_BEFORE_UNITS: ClassVar[bool] = False
+    """An F in a block that changes units (``G20 G1 X1. F10.``) is read in the units in force before the
+    block: the controller sets the feed rate before the length units (the RS274/NGC order of execution).
+    The reader converts such an F into the block's units (the neutral Feed) and the writer back
+    (``ctx.feed_before_units``); False: it is in the block's new units (grbl, Fanuc)."""
     STOPS_BEFORE_MOTION: ClassVar[bool] = False
     """The controller stops the spindle and the coolant before the block's motion (the RS274/NGC order
     of execution), and its reader flags such stops ``before_motion`` (``postproc.event_order``). A
@@ -268,6 +277,7 @@ class Dialect:
         ctx = Context(file, setup, diagnostics, cls.NAME, cls.CYCLE_WORDS)
         ctx.reader = cls.READER
         ctx.stops_before_motion = cls.STOPS_BEFORE_MOTION
+        ctx.feed_before_units = cls.FEED_BEFORE_UNITS
         ctx.peck_clearance_mm = cls.PECK_CLEARANCE_MM
         ctx.lathe = cls.reads_lathe(setup)
         ctx.diameter = ctx.lathe and cls.DIAMETER_PROGRAMMING and setup.input.x_programming == "diameter"

@@ -156,6 +156,10 @@ class MachineSettings(SetupGroup):
     start_y: float = setting(0.0, ge=-MAX_COORDINATE, le=MAX_COORDINATE)
     start_z: float = setting(0.0, ge=-MAX_COORDINATE, le=MAX_COORDINATE)
     """Position (work coordinates, in ``units``) assumed at program start for toolpath simulation."""
+    start_tool: int | None = setting(None, ge=0, le=99_999_999)
+    """The tool in the spindle when the program starts (``<Machine startTool="3">``), which a LinuxCNC
+    ``G41``/``G42`` without D or ``G43`` without H takes before the program's first tool change; None:
+    unknown (the machine's, from before the program), and such a block is a located error."""
 
     def mm(self) -> float:
         """mm per unit of the machine's lengths."""

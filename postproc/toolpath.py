@@ -169,8 +169,9 @@ class Simulator:
         """The controlled point of the last move written, rounded (while ``compensating``)."""
         self.out: Callable[[Event], None] = _nowhere
         """Where released events go (the ``emit`` of the block being run)."""
-        self.spindle_tool: int | None = None
-        """The tool the last tool change put in the spindle (None before any: the machine's, unknown)."""
+        self.spindle_tool: int | None = setup.machine.start_tool
+        """The tool the last tool change put in the spindle (before any: the set-up's ``startTool``, None:
+        the machine's, unknown)."""
 
     # -- one block ---------------------------------------------------------------------------------
     def block(self, block: Block, emit: Callable[[Event], None]) -> None:

@@ -151,8 +151,8 @@ def test_moves_along_z_wait_with_the_corner_and_take_its_point() -> None:
     (("G0 X0 Y0 Z5", "G41 D1 G1 X10 Y0 F100", "G81 X20 Y0 Z-1 R1"),
      "p.nc:4:1: error: a canned cycle with cutter compensation on cannot be run (cancel it first)"),
     (("G0 X0 Y0", "G41 G1 X10 Y0 F100"),
-     "p.nc:3:1: error: cutter compensation without its register takes the tool in the spindle, which is not known "
-     "here (no tool change before it): program its register"),
+     "p.nc:3:1: error: cutter compensation without D takes the radius of the tool in the spindle, which is not "
+     "known here (no tool change before it, no startTool in the set-up's <Machine>): program D"),
     (("G41 D9", "G1 X10 F100"),
      'p.nc:2:5: error: the set-up gives tool radius register 9 no value: add <Tool number="9" radius=".."/> '
      "to its <Tools>, or write the register in the program"),

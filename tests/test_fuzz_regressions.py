@@ -76,9 +76,9 @@ def test_a_spindle_stop_comes_before_the_orientation_in_its_own_block() -> None:
 
 
 @pytest.mark.parametrize("body, settings, rest", [
-    ("G49 T1 G41 G54\n", "G54 G49", "G41 T1"),
-    ("S1000 G54 G00 M08 G94 G41\n", "G54", "G94 G41 G0 S1000 M8"),
-    ("G99 G21 G41\n", "G99", "G21 G41"),
+    ("G49 T1 G41 D01 G54\n", "G54 G49", "G41 D01 T1"),
+    ("S1000 G54 G00 M08 G94 G41 D01\n", "G54", "G94 G41 D01 G0 S1000 M8"),
+    ("G99 G21 G41 D01\n", "G99", "G21 G41 D01"),
 ])
 def test_settings_beside_compensation_on_go_before_it_for_linuxcnc(body: str, settings: str, rest: str) -> None:
     """make fuzz: rs274 turns compensation on (order 15) before it changes the tool length offset, the work
@@ -100,11 +100,11 @@ _M6_UNDER_COMP = ("a tool change (M6) with cutter compensation on (rs274 changes
 @pytest.mark.parametrize("body, message", [
     ("G41 D1 G01 X5. F100.\nG49\n", "t.nc:3:1: error: the linuxcnc dialect cannot express a change of tool length "
                                     "offset with cutter compensation on (rs274 refuses it: program G40 first)"),
-    ("G41 G28\n", "t.nc:2:1: error: the linuxcnc dialect cannot express G28/G30 with cutter compensation on "
+    ("G41 D01 G28\n", "t.nc:2:1: error: the linuxcnc dialect cannot express G28/G30 with cutter compensation on "
                   "(rs274: \"Cannot use g28 or g30 with cutter radius comp\")"),
-    ("T1 G41\nM06\n", "t.nc:3:1: error: the linuxcnc dialect cannot express " + _M6_UNDER_COMP),
-    ("T1 G41\nG40 M06\n", "t.nc:3:1: error: the linuxcnc dialect cannot express " + _M6_UNDER_COMP),
-    ("G41\nG19\n", "t.nc:3:1: error: the linuxcnc dialect cannot express a change to the YZ plane with cutter "
+    ("T1 G41 D01\nM06\n", "t.nc:3:1: error: the linuxcnc dialect cannot express " + _M6_UNDER_COMP),
+    ("T1 G41 D01\nG40 M06\n", "t.nc:3:1: error: the linuxcnc dialect cannot express " + _M6_UNDER_COMP),
+    ("G41 D01\nG19\n", "t.nc:3:1: error: the linuxcnc dialect cannot express a change to the YZ plane with cutter "
                    "compensation on (rs274: \"Cannot change planes with cutter radius compensation on\")"),
     ("G19 G41\n", "t.nc:2:1: error: the linuxcnc dialect cannot express cutter compensation left in the YZ plane "
                   "(rs274: \"Cutter radius compensation allowed only in XY, XZ planes\")"),
@@ -249,5 +249,5 @@ def test_an_assignment_beside_words_goes_after_them_on_its_own_fanuc_line(source
 def test_a_tool_change_that_turns_compensation_on_is_written() -> None:
     """rs274 changes the tool (order 6) before it turns compensation on (15): ``G41 M6`` from off runs."""
     out = io.StringIO()
-    translate(io.StringIO(HEAD + "T1 G41 M06\nG40\nM30\n"), out, file="t.nc", source="fanuc", target="linuxcnc")
-    assert "G41 T1 M6" in out.getvalue().splitlines()
+    translate(io.StringIO(HEAD + "T1 G41 D01 M06\nG40\nM30\n"), out, file="t.nc", source="fanuc", target="linuxcnc")
+    assert "G41 D01 T1 M6" in out.getvalue().splitlines()

@@ -16,6 +16,7 @@ from postproc.api import translate
 from postproc.errors import Diagnostics, ErrorList
 from postproc.expr import Binary, Func, Num, Var
 from postproc.isg_family.expressions import spell_expr
+from postproc.setup import MachineSetup, OutputSettings
 from postproc.toolpath import toolpath_events
 
 NBSP = "\u00a0"
@@ -184,3 +185,43 @@ def test_a_regenerated_assignment_to_a_typed_variable_is_plain_isg() -> None:
     """ISG stores into a declared type by assigning: ``whole_in`` has no spelling of its own there."""
     value = Binary("add", Var(name="V.P.U"), Num(1.0))
     assert spell_expr(Func("whole_in", [value, Num(0.0), Num(4294967295.0)])) == "V.P.U+1"
+
+
+# -- declarations before the first construct, normalising, warnings of text read again ----------------------
+
+UNVALUED = "%1\nG71 G90 G00 X0 Y0 Z10\n#VAR\n  V.P.A : UNS32\n  V.P.B\n#ENDVAR\nG01 X[V.P.A + 4] Y[V.P.B] F100\nM30\n"
+"""Declared without initial values: each holds its type's 0 (the manual's rule), so the move is to X4 Y0."""
+
+
+UNUSED = "%1\nG71 G90 G00 X0 Y0 Z10\n#VAR\n  V.P.A : UNS32\n#ENDVAR\nP1 = 4\nG01 X[P1] F100\nM30\n"
+"""The declaration is the only construct the target cannot name: it is read back as one all the same."""
+
+
+@pytest.mark.parametrize("target", ["linuxcnc", "fanuc"])
+@pytest.mark.parametrize("program", [UNVALUED, UNUSED], ids=["used", "unused"])
+def test_declarations_without_values_flatten_for_a_target_that_cannot_name_them(target: str, program: str) -> None:
+    out, warnings = _translate(program, target)
+    assert "the program is flattened" in warnings and "error" not in warnings, warnings
+    assert _moves(out, target) == _moves(program) == [(0.0, 0.0, 10.0), (4.0, 0.0, 10.0)]
+
+
+def test_normalising_isg_keeps_the_header_and_the_declarations_as_written() -> None:
+    text = ("%1\n#COMMENT BEGIN\n  notes (with a parenthesis\n#COMMENT END\nN10 #VAR\n  V.P.A : UNS32 = 3\n  V.P.B\n"
+            "#ENDVAR\nG01 X[V.P.A] Y[V.P.B] F100\nM30\n")
+    out = io.StringIO()
+    translate(io.StringIO(text), out, file="in.nc", source="isg", target="isg",
+              setup=_normalizing(), diagnostics=Diagnostics(warn_stream=io.StringIO()))
+    assert out.getvalue() == text.replace("F100", "F100."), out.getvalue()
+
+
+def test_text_read_again_does_not_warn_again(capsys: pytest.CaptureFixture[str]) -> None:
+    """The interpreter step reads the program from its first construct again (the keep check, the
+    flattening run): the no-break space was reported when the program was read."""
+    text = UNVALUED.replace("  V.P.B", f"  V.P.B{NBSP}")
+    _, warnings = _translate(text, "linuxcnc")
+    assert warnings.count("U+00A0") == 1 and "in.nc:5:8: warning: U+00A0" in warnings, warnings
+    assert capsys.readouterr().err == ""
+
+
+def _normalizing() -> MachineSetup:
+    return MachineSetup(output=OutputSettings(normalize=True))

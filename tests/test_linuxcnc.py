@@ -393,3 +393,17 @@ def test_a_feed_move_per_revolution_after_a_spindle_speed_is_written() -> None:
     text, _ = write("G21 G90 G0 X0. Y0. Z10.\nS500 M03\nG01 G95 F0.3\nX5.\nG94 F100.\nS0\nX6.\n", "linuxcnc",
                     source="fanuc")
     assert text.splitlines()[2:5] == ["G95 G1 F0.3", "G1 X5.", "G94 F100."], text
+
+
+# -- negative tool numbers, registers and repeat counts ---------------------------------------------------------
+
+@pytest.mark.parametrize("block, col", [("T-1 M6", 1), ("G43 H-1", 5), ("G41 D-1 G1 X10 F100", 5),
+                                         ("G81 X1 Y1 Z-1 R1 L-1 F100", 18)])
+def test_a_negative_tool_register_or_count_is_refused_as_rs274_refuses_it(block: str, col: int) -> None:
+    text = f"G21 G0 X0 Y0 Z10\n{block}\nM2\n"
+    if rs274.available():
+        with pytest.raises(rs274.RS274Error):
+            rs274.run_rs274(text, tool_table="T1 P1 D0.1 Z0 ;\n")
+    found = errors(text)
+    assert len(found) == 1 and found[0].startswith(f"t.ngc:2:{col}: error: "), found
+    assert "cannot be negative" in found[0], found

@@ -28,6 +28,10 @@ class FanucProgramSyntax(ProgramSyntax):
     VARIABLES: ClassVar[VariablesFactory] = MacroBVariables
     LIBRARY_FILES: ClassVar[tuple[str, ...]] = ("O{number:04d}", "O{number:04d}.nc", "{name}.nc", "{name}")
     PROGRAM_LABEL: ClassVar[str] = "O{number:04d}"
+    OMITS_VACANT_WORDS: ClassVar[bool] = True
+    """A vacant variable in an address ignores the address, as if the word were absent (``G90 X#1`` with #1
+    vacant is ``G90``) [K: Fanuc Custom Macro B, "Undefined variables": the manual's table of
+    <vacant> in an address]."""
 
     def variables(self, ctx: Context, increment: Callable[[], float]) -> Variables:
         """A Haas mill's variables have the NGC's five-digit numbers too (``variables.HaasVariables``)."""

@@ -56,3 +56,18 @@ def describe_command(name: str) -> str:
     if what is None and name.startswith("#MC_"):
         what = "motion control command"
     return f"{name} ({what})" if what else name
+
+
+OPENING: dict[str, str] = {"#VAR": "#ENDVAR", "#COMMENT BEGIN": "#COMMENT END"}
+"""A ``#`` command whose following lines are read otherwise (declarations, comment lines) -> the one
+that closes them."""
+
+
+def command_line(text: str) -> str | None:
+    """The ``#`` command a line holds (upper case, single blanks, without its block number), or None."""
+    words = text.replace("\u00a0", " ").upper().split()
+    if words and words[0][:1] == "N" and words[0][1:].isdigit():
+        words = words[1:]
+    if not words or not words[0].startswith("#"):
+        return None
+    return " ".join(words)

@@ -8,12 +8,15 @@ Integer addresses (G, M, N, T, D, H) are written without a point when evaluated 
 
 from __future__ import annotations
 
+from collections import deque
 from typing import ClassVar
 
 from postproc.interp import ProgramSyntax
+from postproc.interp.step import Kept, kept_line
 from postproc.interp.rules import SubprogramRules
 from postproc.interp.variables import VariablesFactory
 
+from .commands import OPENING, command_line
 from .variables import IsgVariables
 
 
@@ -34,3 +37,18 @@ class IsgProgramSyntax(ProgramSyntax):
                                                                   main_return_refused=True)
     """``M17``/``M29`` end a subroutine; in the main program they are an error [?: the manual we read does
     not say what they do there, and Fanuc's ``M99`` would restart the program]."""
+
+    def reading_context(self, kept: deque[Kept]) -> list[str]:
+        """The streamed lines from a ``#VAR`` (or ``#COMMENT BEGIN``) still open where the construct starts:
+        a declaration is read as one only inside it."""
+        closing = set(OPENING.values())
+        lines: list[str] = []
+        for item in reversed(kept):
+            line = kept_line(item)
+            lines.append(line)
+            command = command_line(line)
+            if command in closing:
+                return []
+            if command in OPENING:
+                return lines[::-1]
+        return []

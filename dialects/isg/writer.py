@@ -28,6 +28,7 @@ from postproc.rs274.writer import WordWriter
 from postproc.subprogram_names import NameRule, SubprogramNames
 
 from .codes import CODES
+from .commands import OPENING, command_line
 from postproc.isg_family.expressions import spell_expr, spell_var, spell_word_value
 from postproc.isg_family.statements import spell_statement
 
@@ -48,6 +49,27 @@ class IsgWriter(WordWriter):
         super().__init__(ctx, source_dialect, target)
         self.names = SubprogramNames(self.SUBPROGRAM_NAMES)
         """Another dialect's subprograms: the names written for their definitions and calls."""
+        self._verbatim: str | None = None
+        """The ``#`` command that opened the lines being normalised as they are (``#VAR``, ``#COMMENT``)."""
+
+    def normalized(self, block: Block) -> str:
+        """An ISG block rebuilt from its words; what has none keeps its own text: the program header
+        (``%1``), a ``#`` command line, and the lines of ``#VAR`` (a declaration's type is in its text only)
+        and ``#COMMENT`` blocks (read as comments, they are no parenthesised ones)."""
+        text = block.text or ""
+        command = command_line(text)
+        if self._verbatim is not None:
+            if command == OPENING[self._verbatim]:
+                self._verbatim = None
+            return text
+        if command is not None:
+            if command in OPENING:
+                self._verbatim = command
+            return text
+        start = block.sections.get("ProgramStart")
+        if start is not None and not block.words:
+            return text.strip()
+        return super().normalized(block)
 
     def local_name(self, name: str, block: Block) -> str:
         """The subroutine name of a definition or ``LL`` call (``SubprogramNames``, then ISG's characters)."""

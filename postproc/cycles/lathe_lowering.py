@@ -23,7 +23,7 @@ from postproc.dialect import Dialect
 from postproc.expr import Expr
 from postproc.errors import UnsupportedError
 from postproc.ir import (
-    Block, Comments, CompoundMotion, DistanceMode, FeedMode, Motion, Plane, ToolChange, ToolSelect,
+    Block, Comments, CompoundMotion, DistanceMode, FeedMode, Motion, Plane, SpindleControl, ToolChange, ToolSelect,
 )
 from postproc.lathe_sections import CoordinateSet, LatheCycle
 
@@ -63,6 +63,8 @@ def _lower(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iter
     start_mode = ctx.state.feed_mode  # read before any block: the source's mode at the start
     target_mode = target.LATHE_FEED_AT_START if not foreign else "per_min"
     mode_set = start_mode == target_mode
+    turning = False
+    """The spindle turns before the block (a turret index must not become a tool change then)."""
     for block in blocks:
         sections = block.sections
         profile = sections.get("InProfile")
@@ -94,7 +96,9 @@ def _lower(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iter
                 block.add(FeedMode(start_mode))  # the target starts in another feed mode: say the source's
                 block.changed()
         if foreign:
-            _turret(block, ctx)
+            if not _turret(block, ctx, turning):
+                continue
+            turning = _turns_after(block, turning)
         if tracker is not None:
             if not plane_set and ("Motion" in sections or "CompoundMotion" in sections):
                 block.add(Plane("ZX"))
@@ -108,18 +112,49 @@ def _lower(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iter
         yield block
 
 
-def _turret(block: Block, ctx: Context) -> None:
+def _turret(block: Block, ctx: Context, turning: bool) -> bool:
     """A lathe's T indexes the turret: for a mill control it is a tool change, to the tool number alone
     (T0101 is tool 1 with offset 1; a tool's offsets are the target's own). A computed T (``T#1``) is
-    refused: which tool it names is known when it runs (the program is flattened for it)."""
+    refused: which tool it names is known when it runs (the program is flattened for it). So is an index
+    while the spindle turns: the turret indexes with the spindle running [K: Fanuc T, the T code only
+    indexes], a mill control's tool change stops it [V: rs274's M6 is STOP_SPINDLE_TURNING then
+    CHANGE_TOOL]. False: the block is refused (reported; with ``--on-unsupported warn`` the T is left
+    out with a note instead)."""
     select = block.sections.get("ToolSelect")
     if isinstance(select, ToolSelect) and isinstance(select.number, Expr):
         raise UnsupportedError("a computed lathe T word (the tool and offset it selects are known when the "
                                "program runs)", ctx.at(block))
     if isinstance(select, ToolSelect) and isinstance(select.number, int) and "ToolChange" not in block.sections:
+        if turning:
+            err = UnsupportedError(f"a turret index (T{select.number:04d}) with the spindle turning: a mill "
+                                   "control changes the tool (M6) with the spindle stopped, the lathe keeps it "
+                                   "turning (stop the spindle before the index)", ctx.at(block))
+            if ctx.on_unsupported != "warn":
+                ctx.diagnostics.error(err)
+                return False
+            ctx.diagnostics.warn(err.message + "; the T word is left out", err.location)
+            del block.sections["ToolSelect"]
+            comments = block.sections.get("Comments")
+            texts = comments.texts if isinstance(comments, Comments) else []
+            block.sections["Comments"] = Comments([*texts, f"UNSUPPORTED T{select.number:04d}"])
+            block.changed()
+            return True
         block.sections["ToolSelect"] = ToolSelect(lathe_tool(select.number))
         block.add(ToolChange())
         block.changed()
+    return True
+
+
+def _turns_after(block: Block, turning: bool) -> bool:
+    """Whether the spindle turns after ``block`` (a tool change or a program end stops it)."""
+    sections = block.sections
+    control = sections.get("SpindleControl")
+    if isinstance(control, SpindleControl):
+        return control.direction in ("cw", "ccw")
+    end = sections.get("ProgramControl")
+    if "ToolChange" in sections or (end is not None and getattr(end, "kind", None) in ("end", "end_rewind")):
+        return False
+    return turning
 
 
 class _Position:

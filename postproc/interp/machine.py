@@ -140,6 +140,9 @@ class Interpreter:
         going back to its start."""
         self.found: dict[tuple[str, str], int] = {}
         """(file, program number) -> position of the ``O`` block an ``M98`` found (forward search)."""
+        self.vacant_word: str | None = None
+        """Set: a word whose value is vacant is an error with this explanation instead of being omitted (the
+        check run of a program kept symbolically for a target that would not omit it)."""
 
     # -- running ---------------------------------------------------------------------------------
     def run(self, start: int = 0) -> Iterator[Block]:
@@ -244,6 +247,10 @@ class Interpreter:
                             err.message = f"{err.message} ({letter}{text})"
                             err.located(self._where(frame, block, self._word_column(block, letter, text)))
                             raise
+                    elif self.vacant_word is not None:
+                        vacant = ProgramError(f"{letter}{text} is vacant here: {self.vacant_word}")
+                        vacant.located(self._where(frame, block, self._word_column(block, letter, text)))
+                        raise vacant
                 else:
                     out.append((letter, text))
         else:

@@ -14,15 +14,16 @@ above all, which the base does not choose) and, if it needs to, its ``spell_eval
 
 from __future__ import annotations
 
+import io
 from collections import deque
 from pathlib import Path
 from typing import TYPE_CHECKING, Callable, ClassVar, Iterable, Iterator
 
 from mypy_extensions import mypyc_attr
 
-from ..control import ASSIGN, CONTROL
+from ..control import ASSIGN, CONTROL, Call, ModalCall
 from ..errors import ConfigError, Diagnostics, ErrorLevel, PostprocError
-from ..expr import Expr
+from ..expr import Expr, Var
 from ..ir import AXES, Block
 from ..context import Context
 from ..syntax import Syntax
@@ -31,10 +32,14 @@ from .rules import STORED_PROGRAMS, SubprogramRules
 from .variables import Variables, VariablesFactory
 
 if TYPE_CHECKING:
+    from .machine import Reporter
     from .store import Program
     from .structure import StreamCheck
 
 ENCODING = {"encoding": "utf-8", "errors": "surrogateescape", "newline": ""}
+TARGET_OMITS_VACANT = "target_omits_vacant"
+"""``ctx.run_data`` key: whether the translation's target omits a word whose value is vacant
+(``ProgramSyntax.OMITS_VACANT_WORDS`` of its step; absent: it does, nothing is checked)."""
 ARGUMENTS_KEY = "macro_arguments"
 """``ctx.run_data`` key of the locals a program run on its own starts with (``--arg A=30``: {1: 30.0})."""
 Kept = str | tuple[str, str] | None
@@ -72,6 +77,10 @@ class ProgramSyntax(Syntax):
     fails: for a dialect whose run-time errors (an unset variable read) are values in the targets."""
     SUBPROGRAM_RULES: ClassVar[SubprogramRules] = STORED_PROGRAMS
     """How numbered subprograms are found and ended (``postproc.interp.rules``)."""
+    OMITS_VACANT_WORDS: ClassVar[bool] = False
+    """A word whose value is a vacant variable is omitted, as if absent (Custom Macro B). A program kept
+    symbolically for a target without this rule (which reads such a word as 0, or refuses it) is run
+    first, and flattened when one of its words is vacant there."""
     """How messages name a subprogram (``O{number:04d}``, ``o{name}``)."""
 
     def build(self, block: Block, ctx: Context) -> None:
@@ -192,7 +201,9 @@ class ProgramSyntax(Syntax):
             body.extend(blocks)
             if not _sound(body, check):
                 return  # its errors are reported: nothing is kept or run
-            reason = self._keep_reason(body, ctx)
+            reason = self._keep_reason(body, ctx, kept)
+            if reason is None:
+                reason = self._vacancy_reason(body, ctx, kept, seen)
             if reason is None:
                 if self.RUN_BEFORE_KEEP:
                     self._check_runs(body, ctx, kept, seen)
@@ -207,30 +218,63 @@ class ProgramSyntax(Syntax):
     def _check_runs(self, body: list[Block], ctx: Context, kept: deque[Kept], seen: int) -> None:
         """Run fresh copies of the program to its end, reporting the interpreter's first error (located in
         the program): a program kept symbolically then fails to translate where it fails to run."""
-        copies = self._copies(body, ctx)
+        copies = self._copies(body, ctx, kept)
         if copies:
             for _ in self._run(copies[0], iter(copies[1:]), ctx, kept, seen):
                 pass
 
-    def _copies(self, body: list[Block], ctx: Context) -> list[Block]:
-        copies = self.read_lines([(b.text or "") + b.eol for b in body], ctx.file, ctx,
-                                 Diagnostics(ErrorLevel.IGNORE))
+    def _copies(self, body: list[Block], ctx: Context, kept: deque[Kept]) -> list[Block]:
+        """Fresh blocks of ``body``, read as the program reads them: after the lines of the streamed
+        prefix the reader needs for that (``reading_context``), which are left out again."""
+        lead = self.reading_context(kept)
+        copies = self.read_lines(_physical(lead + [(b.text or "") + b.eol for b in body]), ctx.file, ctx, _quiet())
+        copies = copies[len(lead):] if len(copies) == len(lead) + len(body) else copies
         for original, copy in zip(body, copies):
             copy.line = original.line
         return copies
 
-    def _keep_reason(self, body: list[Block], ctx: Context) -> str | None:
+    def reading_context(self, kept: deque[Kept]) -> list[str]:
+        """The last lines of the streamed prefix (``kept``, oldest first) that change how the reader reads
+        the lines after them (ISG: an open ``#VAR`` block), each ending in its end of line; none here."""
+        return []
+
+    def _vacancy_reason(self, body: list[Block], ctx: Context, kept: deque[Kept], seen: int) -> str | None:
+        """Why ``body`` cannot travel symbolically to a target that does not omit vacant words: the first
+        error of a run on fresh copies where a vacant word is an error (a vacant word, or an error that
+        hides whether one follows: the flattening run then reports it). None: no word can be vacant."""
+        if not self.OMITS_VACANT_WORDS or ctx.run_data.get(TARGET_OMITS_VACANT, True):
+            return None
+        if not _may_be_vacant(body):
+            return None
+        copies = self._copies(body, ctx, kept)
+        found: list[PostprocError] = []
+
+        def report(err: PostprocError) -> None:
+            found.append(err)
+
+        for _ in self._run(copies[0], iter(copies[1:]), ctx, kept, seen, report=report,
+                           vacant_word="this controller omits the word, the target would not"):
+            if found:
+                break
+        if not found:
+            return None
+        where = found[0].location
+        return (f"line {where.line}: " if where is not None else "") + found[0].message
+
+    def _keep_reason(self, body: list[Block], ctx: Context, kept: deque[Kept]) -> str | None:
         """Why ``body`` (the program from its first construct on) cannot travel symbolically, through
         ``ctx.keep_check`` on fresh copies (the check runs the later steps, which change blocks)."""
         check = ctx.keep_check
         if check is None:
             return "the target's spelling of the program's constructs was not checked"
-        return check(self._copies(body, ctx))
+        return check(self._copies(body, ctx, kept))
 
     def _run(self, first: Block, rest: Iterator[Block], ctx: Context, kept: deque[Kept],
-             seen: int, check: StreamCheck | None = None) -> Iterator[Block]:
+             seen: int, check: StreamCheck | None = None, report: Reporter | None = None,
+             vacant_word: str | None = None) -> Iterator[Block]:
         """Run the program from ``first`` on; ``check``: the structure check of what streamed before it,
-        to finish on the rest (None: the rest was checked)."""
+        to finish on the rest (None: the rest was checked); ``report``: where its errors go (the
+        diagnostics); ``vacant_word``: a vacant word is an error saying so (``Interpreter.vacant_word``)."""
         dropped = seen - len(kept)
         prefix = self._reread(kept, ctx, first_line=first.line - len(kept))
         body = prefix + [first]
@@ -258,9 +302,10 @@ class ProgramSyntax(Syntax):
         arguments: dict[int, float] | None = ctx.run_data.get(ARGUMENTS_KEY)
         for key, value in (arguments or {}).items():
             variables.write(key, value)  # --arg: the main program run as a macro called with them
-        interpreter = Interpreter(store, self, variables, ctx.setup.limits, ctx.diagnostics.error, annotate=True,
-                                  rules=self.SUBPROGRAM_RULES, counts=ctx)
+        interpreter = Interpreter(store, self, variables, ctx.setup.limits, report or ctx.diagnostics.error,
+                                  annotate=True, rules=self.SUBPROGRAM_RULES, counts=ctx)
         interpreter.called = arguments is not None
+        interpreter.vacant_word = vacant_word
         yield from interpreter.run(start=len(prefix))
 
     def _reread(self, kept: deque[Kept], ctx: Context, first_line: int) -> list[Block]:
@@ -268,12 +313,31 @@ class ProgramSyntax(Syntax):
         errors were reported when it streamed, so they are not reported again."""
         if not kept:
             return []
-        lines = [_kept_line(item) for item in kept]
-        blocks = self.read_lines(lines, ctx.file, ctx, Diagnostics(ErrorLevel.IGNORE))
+        lines = [kept_line(item) for item in kept]
+        blocks = self.read_lines(_physical(lines), ctx.file, ctx, _quiet())
         offset = first_line - 1
         for block in blocks:
             block.line += offset
         return blocks
+
+
+def _physical(texts: list[str]) -> list[str]:
+    """Block texts as the physical lines a reader takes: a continued block's text holds several (read as
+    one line, its continuation was lost), split as the program file was (``ENCODING``: newline="");
+    every other text is its line as it is (an empty one for a block without text)."""
+    lines: list[str] = []
+    for text in texts:
+        body = text.rstrip("\r\n")
+        if "\n" in body or "\r" in body:
+            lines.extend(io.StringIO(text, newline=""))
+        else:
+            lines.append(text)
+    return lines
+
+
+def _quiet() -> Diagnostics:
+    """Diagnostics for text read again: its errors and warnings were reported when it was first read."""
+    return Diagnostics(ErrorLevel.IGNORE, warn_stream=io.StringIO())
 
 
 def _sound(blocks: list[Block], check: StreamCheck) -> bool:
@@ -286,12 +350,32 @@ def _sound(blocks: list[Block], check: StreamCheck) -> bool:
     return check.end()
 
 
-def _kept_line(item: Kept) -> str:
+def kept_line(item: Kept) -> str:
+    """A kept item's text as a line (ending in its end of line)."""
     if item is None:
         return ""
     if isinstance(item, str):
         return item + "\n"
     return item[0] + item[1]
+
+
+def _may_be_vacant(body: list[Block]) -> bool:
+    """A word of ``body`` is a bare variable (vacant when unset), or it calls a subprogram that is not in
+    it (a library program, whose words are not seen here)."""
+    defined = set()
+    for block in body:
+        start = block.sections.get("ProgramStart")
+        number = getattr(start, "number", None)
+        if number is not None:
+            defined.add(str(number))
+    for block in body:
+        for value in block.values.values():
+            if isinstance(value, Var):
+                return True
+        control = block.sections.get(CONTROL)
+        if isinstance(control, (Call, ModalCall)) and (not isinstance(control.name, str) or control.name not in defined):
+            return True
+    return False
 
 
 def _computes(block: Block) -> bool:

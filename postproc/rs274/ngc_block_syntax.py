@@ -9,9 +9,10 @@ modal sections, motion, arcs, modal cycle repetition) and replaces what RS274/NG
 * cancelling a cycle leaves no motion mode in force: axis words after it need a motion code;
 * a tool length offset without ``H`` uses the tool in the spindle (the one the last tool change loaded, not
   a ``T`` selected since: rs274 ``T1 M6 T2 G43`` applies tool 1); the orient code's ``R`` gives the angle;
-* with ``FEED_BEFORE_UNITS`` (LinuxCNC), ``F`` in a block that changes units is in the old units:
-  LinuxCNC sets the feed rate before it changes units (its order of execution; rs274 prints
-  ``SET_FEED_RATE`` before ``USE_LENGTH_UNITS``), so the neutral Feed, in the block's units, is converted;
+* where the dialect says ``FEED_BEFORE_UNITS`` (``ctx.feed_before_units``: LinuxCNC, Mach3), ``F`` in a
+  block that changes units is in the old units: the controller sets the feed rate before it changes units
+  (its order of execution; rs274 prints ``SET_FEED_RATE`` before ``USE_LENGTH_UNITS``), so the neutral
+  Feed, in the block's units, is converted;
 * a spindle stop or coolant off in a block that moves is made before the motion (the RS274/NGC order
   of execution): the section is flagged ``before_motion`` (``postproc.event_order``);
 * codes in the table's ``native_g``/``native_m``/``user_m`` are kept verbatim, tagged with ``DIALECT``;
@@ -45,6 +46,12 @@ _STATE_KEY = "NgcBlockSyntax"
 _LOADED_KEY = "NgcBlockSyntax.loaded"
 """``ctx.state.extra`` key: the tool the last tool change loaded (absent or None: unknown)."""
 _MOTION_GROUP = ("01", "09")
+_NOT_NEGATIVE = {"T": "a tool number", "H": "a tool length register", "D": "a cutter radius register",
+                 "L": "a repeat count"}
+"""Whole-number addresses rs274 refuses negative [V: "Negative tool id" (T-1), "Requested tool -1 not found
+in the tool table" (G43 H-1), "G41 requires D word to be a whole number" (D-1), "Negative l word used"
+(G81 L-1)]; grbl refuses a negative T [V: gcode.c, STATUS_NEGATIVE_VALUE for F, N, P, T and S] (its L
+is only G10's, whose L-1 it does not know)."""
 
 
 class NgcWordBlockSyntax(WordBlockSyntax):
@@ -56,8 +63,6 @@ class NgcWordBlockSyntax(WordBlockSyntax):
     NATIVE_M_WORDS: ClassVar[str] = "PQ"
     REAL_LETTERS: ClassVar[frozenset[str]] = REAL_LETTERS
     INTEGER_LETTERS: ClassVar[frozenset[str]] = INTEGER_LETTERS
-    FEED_BEFORE_UNITS: ClassVar[bool] = True
-    """F in a block that changes units is in the old units (LinuxCNC's order of execution)."""
     N_FIRST: ClassVar[bool] = False
     """A block number stands first in its block (after a block delete ``/``) or not at all (rs274: "Bad
     character 'n' used"); grbl reads N anywhere."""
@@ -68,6 +73,9 @@ class NgcWordBlockSyntax(WordBlockSyntax):
     """A feed mode code (G93/G94/G95) sets the feed rate to zero, even one that selects the mode in force
     (LinuxCNC; checked with rs274); grbl keeps it unless it leaves inverse time."""
     M_GROUPS: ClassVar[dict[int, str]] = {}
+    CUTTER_TAKES_LOADED_TOOL: ClassVar[bool] = False
+    """G41/G42 without D takes the radius of the tool in the spindle (LinuxCNC); the reading fills in its
+    number as the register, or refuses the block where it is not known. False: the register stays absent."""
     """M number -> the controller's modal group: two M codes of one group in a block are an error (rs274
     "Two m codes used from same modal group", grbl error 21). M codes not listed conflict by meaning."""
 
@@ -136,6 +144,9 @@ class NgcWordBlockSyntax(WordBlockSyntax):
             extra[_LOADED_KEY] = selected if isinstance(selected, (int, Expr)) else None  # M6 runs before G43
         if "08" in codes and codes["08"][2] == "positive" and "H" not in values:
             self._loaded_tool(block, ctx, values)
+        if self.CUTTER_TAKES_LOADED_TOOL and "07" in codes and codes["07"][2] in ("left", "right") \
+                and "D" not in values:
+            self._loaded_cutter(block, ctx, values)
         no_motion = extra.get(_STATE_KEY, False)
         if "01" in codes or "09" in codes:
             no_motion = codes.get("09", ("", ""))[1] == "cycle_cancel" and "01" not in codes
@@ -157,7 +168,7 @@ class NgcWordBlockSyntax(WordBlockSyntax):
             self._machine_move(block, ctx, codes)
         self.m_sections(block, ctx, mcodes, values, used)
         self.finish_words(block, ctx, values, used)
-        if self.FEED_BEFORE_UNITS and "Units" in block.sections and "Feed" in block.sections:
+        if ctx.feed_before_units and "Units" in block.sections and "Feed" in block.sections:
             _feed_in_old_units(block, ctx)
         _stops_before_motion(block)
         if self.FEED_MODE_RESETS_FEED and "FeedMode" in block.sections and "Feed" not in block.sections:
@@ -226,7 +237,11 @@ class NgcWordBlockSyntax(WordBlockSyntax):
             if "." in num:
                 raise ParseError(f"address {up} takes a whole number ({up}{num})",
                                  ctx.at(block, ctx.column_of(block, up)))
-            return int(num)
+            value = int(num)
+            if value < 0 and up in _NOT_NEGATIVE:
+                raise ParseError(f"{up}{num}: {_NOT_NEGATIVE[up]} cannot be negative",
+                                 ctx.at(block, ctx.column_of(block, up)))
+            return value
         if up == "S":
             return float(num) if "." in num else int(num)
         raise ParseError(f"address {up} is not used by the {self.DIALECT} dialect",
@@ -294,13 +309,24 @@ class NgcWordBlockSyntax(WordBlockSyntax):
 
     def _loaded_tool(self, block: Block, ctx: Context, values: dict[str, Any]) -> None:
         """A tool length offset without H applies the offset of the tool in the spindle: the one the last
-        tool change loaded (unknown before any: the machine's, from before the program)."""
-        tool = ctx.state.extra.get(_LOADED_KEY)
+        tool change loaded (before any: the machine's, which the set-up's ``startTool`` may say)."""
+        tool = _spindle_tool(ctx)
         if tool is None:
             raise ProgramError(f"{self.spell('length', 'positive')} without H uses the loaded tool, which is not known "
                                "here: program H",
                                ctx.at(block, ctx.column_of(block, "G")))
         values["H"] = tool
+
+    def _loaded_cutter(self, block: Block, ctx: Context, values: dict[str, Any]) -> None:
+        """Cutter compensation without D takes the radius of the tool in the spindle (``_loaded_tool``): its
+        number becomes the register, so every target and the simulation take the same radius."""
+        tool = _spindle_tool(ctx)
+        if tool is None or (isinstance(tool, int) and tool == 0 and _LOADED_KEY in ctx.state.extra):
+            known = "not known here (no tool change before it, no startTool in the set-up's <Machine>)" \
+                if tool is None else "tool 0 after T0 M6 (rs274 then keeps the last tool's radius)"
+            raise ProgramError(f"cutter compensation without D takes the radius of the tool in the spindle, which "
+                               f"is {known}: program D", ctx.at(block, ctx.column_of(block, "G")))
+        values["D"] = tool
 
     def _machine_move(self, block: Block, ctx: Context, codes: dict[str, Any]) -> None:
         """Machine coordinates move in the motion mode in force, which must be rapid or linear (the ISO
@@ -346,6 +372,13 @@ class NgcWordBlockSyntax(WordBlockSyntax):
         angle = values.get("R", ctx.setup.cycles.orient_angle)
         block.add(SpindleOrientation(angle if isinstance(angle, Expr) else float(angle)))
         used.update("RQP")
+
+
+def _spindle_tool(ctx: Context) -> Any:
+    """The tool in the spindle: the one the last tool change loaded, before any the set-up's
+    ``<Machine startTool>`` (None: unknown)."""
+    extra = ctx.state.extra
+    return extra[_LOADED_KEY] if _LOADED_KEY in extra else ctx.setup.machine.start_tool
 
 
 def _feed_in_old_units(block: Block, ctx: Context) -> None:

@@ -15,7 +15,7 @@ from mypy_extensions import mypyc_attr
 from ..context import Context
 from ..dialect import Dialect
 from ..errors import UnsupportedError
-from ..expr import Expr
+from ..expr import Binary, Expr, Num
 from ..ir import Block, Motion
 from ..machine_functions import RIGID_TAP, refused_rigid_tap
 from ..state import MM_PER_INCH
@@ -104,6 +104,7 @@ class SectionWords(NumberWriter):
         return self._code("plane", s.plane, f"the {s.plane} plane", block)
 
     def units_words(self, s: Any, block: Block) -> list[str]:
+        self.units_before = self.modal.units
         if s.system != self.modal.units and self.carry:
             factor = MM_PER_INCH if s.system == "mm" else 1.0 / MM_PER_INCH
             self.carry = {axis: error * factor for axis, error in self.carry.items()}
@@ -118,6 +119,7 @@ class SectionWords(NumberWriter):
         return self._code("offset", s.index, f"work offset {s.index}", block)
 
     def feed_mode_words(self, s: Any, block: Block) -> list[str]:
+        self.modal.feed_mode = s.mode
         return self._code("feed_mode", s.mode, f"feed mode {s.mode}", block)
 
     def return_level_words(self, s: Any, block: Block) -> list[str]:
@@ -182,10 +184,24 @@ class SectionWords(NumberWriter):
         return self.feed_rate_words(s, block)
 
     def feed_beside_units(self, s: Any, block: Block) -> list[str]:
-        """The feed rate of a block that also changes units, which the neutral block gives in its new
-        units; a controller that reads it in the units before the block overrides this (the base writes
-        it as any other)."""
-        return self.feed_rate_words(s, block)
+        """The feed rate of a block that also changes units, which the neutral block gives in its new units;
+        a ``FEED_BEFORE_UNITS`` target reads it in the units before the block, so it is spelled in those (an
+        inverse-time F is no length)."""
+        units = block.sections["Units"]
+        if (not self.feed_before_units or units.system == self.units_before  # type: ignore[attr-defined]
+                or self.modal.feed_mode == "inverse_time"):
+            return self.feed_rate_words(s, block)
+        modal = self.modal
+        after, modal.units = modal.units, self.units_before  # spelled in the units it is read in
+        factor = MM_PER_INCH if after == "inch" else 1.0 / MM_PER_INCH
+        try:
+            if isinstance(s.value, Expr):  # F#1 under G20: F[#1*25.4], the same rate in the units before
+                modal.feed = None  # known only when the program runs
+                return ["F" + self.expression(Binary("mul", s.value, Num(factor)), block)]
+            modal.feed = s.value
+            return ["F" + self.feed_number(s.value * factor, block)]
+        finally:
+            modal.units = after
 
     def feed_rate_words(self, s: Any, block: Block) -> list[str]:
         """``F`` and the feed rate, in the units in force."""

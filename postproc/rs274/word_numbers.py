@@ -63,6 +63,10 @@ class NumberWriter(Writer):
         canonical numbers have their leading zero, and no address is rounded to places of its own."""
         self.modal = ModalState()
         """What the written program has in force so far (units, distance mode, feed, plane, spindle...)."""
+        self.feed_before_units = target is not None and target.FEED_BEFORE_UNITS
+        """The target reads an F in a block that changes units in the units before it (``feed_beside_units``)."""
+        self.units_before = self.modal.units
+        """Units in force before the block being written."""
         self.carry: dict[str, float] = {}
         """Axis -> where the source program is minus where the written one is (program units): what
         rounding left behind, added to the next incremental word so the sum of increments stays exact."""

@@ -25,6 +25,7 @@ from postproc.ir import Block, Motion
 from postproc.rs274.codes import CodeTable
 from postproc.rs274.cycle_words import rs274_cycle_words
 from postproc.rs274.order_of_execution import stops_after_motion
+from postproc.rs274.return_level import return_level_in_force
 from postproc.rs274.writer import WordWriter
 from postproc.setup import MachineSetup
 from postproc.syntax import Pipeline
@@ -126,9 +127,17 @@ class Mach3(Dialect):
     """No M19: cycles that need an oriented stop follow the set-up's ``Cycles orientation``."""
     STOPS_BEFORE_MOTION = True
     """The RS274/NGC order of execution: M5 and M9 act before the block's motion."""
-    LOWERING = (stops_after_motion,)
+    FEED_BEFORE_UNITS = True
+    """F in a block that changes units is in the old units [K: the Mach3Mill manual's order-of-execution
+    table is the NIST RS274/NGC one: set feed rate (3) before set length units (12); not run on a
+    Mach3 here]."""
+    LOWERING = (stops_after_motion, return_level_in_force)
     """A moving block's spindle stop and coolant off go in a block of their own after it, where the
-    source stopped after the motion (``postproc.rs274.order_of_execution``)."""
+    source stopped after the motion (``postproc.rs274.order_of_execution``); a native cycle whose source
+    assumed another return level gets its G98/G99 (``postproc.rs274.return_level``)."""
+    START_RETURN_LEVEL = "initial"
+    """G98 at program start [?: Mach3's reset modes are screen settings; this dialect has read G98 as the
+    start level since it was written, and a LinuxCNC program leaving its cycles to G99 is written with G99]."""
     DWELL_UNIT = "seconds"
     """G4 P is in seconds."""
 

@@ -63,6 +63,8 @@ class Grbl(Dialect):
     """M6 is rejected: a tool change is written as an M0 pause (``pause_for_tool_change``)."""
     STOPS_BEFORE_MOTION = True
     """The RS274/NGC order of execution: M5 and M9 act before the block's motion."""
+    FEED_BEFORE_UNITS = False
+    """grbl reads F in the block's new units [K: grbl gcode.c converts F by the block's G20/G21]."""
     LOWERING = (lower_for_lean_controller,)
     """Rewrites into what grbl runs (``lowering.py``): tool change as a pause, G49 before motion, full
     circles with an end point; a moving block's spindle stop and coolant off after it (grbl runs them

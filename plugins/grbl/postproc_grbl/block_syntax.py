@@ -35,8 +35,6 @@ class GrblBlockSyntax(NgcWordBlockSyntax):
     REAL_LETTERS = frozenset("XYZIJKRPF")
     INTEGER_LETTERS = frozenset("NTL")
     M_GROUPS = M_GROUPS
-    FEED_BEFORE_UNITS = False
-    """grbl reads F in the block's new units (gcode.c converts F by the block's G20/G21)."""
 
     def build(self, block: Block, ctx: Context) -> None:
         """As RS274/NGC, plus grbl's spelling of a manual tool change: ``T<n> M0`` (grbl ignores T, so a

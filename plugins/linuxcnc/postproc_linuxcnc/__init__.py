@@ -12,13 +12,15 @@ run as rs274 runs them (``postproc.interp.rules``).
 
 from __future__ import annotations
 
-from typing import Callable, ClassVar
+from typing import Callable, ClassVar, Iterator
 
 from postproc.compensation.rules import ARC_CORNERS
 from postproc.dialect import Dialect, Lazy, Reader
 from postproc.rs274.order_of_execution import stops_after_motion
+from postproc.rs274.return_level import return_level_in_force
 from postproc.errors import Diagnostics
 from postproc.hookspecs import hookimpl
+from postproc.ir import Block
 from postproc.line_format import LineRule
 from postproc.lower import Lowering
 from postproc.setup import MachineSetup
@@ -36,6 +38,12 @@ NATIVE = frozenset({
     "drill", "drill_dwell", "peck_chip", "peck_deep", "tap", "tap_left", "bore_feed", "bore_stop",
     "bore_dwell_feed",
 })
+
+
+def _subprogram_layout(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """``layout.subprograms_after_callers``, imported when a translation to LinuxCNC first runs."""
+    from .layout import subprograms_after_callers
+    return subprograms_after_callers(blocks, ctx, target)
 
 
 class Linuxcnc(Dialect):
@@ -61,13 +69,17 @@ class Linuxcnc(Dialect):
     """Numbered and named parameters, expressions, o-word subprograms and control flow."""
     STOPS_BEFORE_MOTION = True
     """The RS274/NGC order of execution: M5 and M9 act before the block's motion."""
+    FEED_BEFORE_UNITS = True
+    """F in a block that changes units is in the old units [V: rs274 prints ``SET_FEED_RATE`` before
+    ``USE_LENGTH_UNITS``, its order of execution]."""
     COMMENTS = COMMENTS
     """``( )`` and ``;`` comments; ``(MSG,`` ``(LOGOPEN,`` ... act (``active_comments.ACTIVE``)."""
     LINE_RULE = Lazy[LineRule](".lines:LINES")
     """rs274 reads at most 252 bytes a line: a longer comment is shortened (``lines.py``)."""
-    LOWERING = (stops_after_motion,)
+    LOWERING = (stops_after_motion, return_level_in_force, _subprogram_layout)
     """A moving block's spindle stop and coolant off go in a block of their own after it: LinuxCNC runs
-    them before the motion (``postproc.rs274.order_of_execution``)."""
+    them before the motion (``postproc.rs274.order_of_execution``); another dialect's subprograms stand
+    after their callers (``layout``)."""
     CYCLE_SEMANTICS = "rs274"
     """How the native cycles move: start below R rises to R first, G98 returns to the old Z only when
     it is above R, G91 R is measured from the Z at the block's start, G74/G84/G89 feed out to the

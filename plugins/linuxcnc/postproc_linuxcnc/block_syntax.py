@@ -20,6 +20,9 @@ class NgcBlockSyntax(NgcWordBlockSyntax):
     CODES: ClassVar[CodeTable] = CODES
     N_FIRST: ClassVar[bool] = True
     FEED_MODE_RESETS_FEED: ClassVar[bool] = True
+    CUTTER_TAKES_LOADED_TOOL: ClassVar[bool] = True
+    """[K: LinuxCNC G-code reference, G41/G42: "if there is no D word, the radius of the currently loaded
+    tool is used"; V: rs274, T1 M6 then G41 offsets by tool 1's radius]."""
     CYCLE_CANCEL_WITH_MOTION: ClassVar[bool] = True
     M_GROUPS: ClassVar[dict[int, str]] = M_GROUPS
     DATA_TABLES: ClassVar[Mapping[int, tuple[str, int, int]]] = {2: ("work_offset", 0, 9)}

@@ -35,7 +35,6 @@ from postproc.errors import Location, UnsupportedError
 from postproc.ir import Block, ProgramControl, Section
 from postproc.context import Context
 from postproc.dialect import Dialect
-from postproc.state import MM_PER_INCH
 from postproc.control import (
     Assign, Break, Call, Continue, Do, DoWhile, Else, ElseIf, EndFor, EndIf, EndRepeat, EndWhile, For, If, Repeat,
     Return, SubEnd, SubStart, While,
@@ -92,8 +91,6 @@ class LinuxcncWriter(WordWriter):
         super().__init__(ctx, source_dialect, target)
         self.foreign = source_dialect != self.DIALECT
         """Comments come from another dialect: none may act here (``comment``)."""
-        self.units_before = self.modal.units
-        """Units in force before the block being written (its F is read in them)."""
         self.inverse_time = False
         self._open: dict[str, list[str]] = {}
         """Source label -> the o-word labels written for its open constructs, innermost last."""
@@ -105,6 +102,8 @@ class LinuxcncWriter(WordWriter):
         self._cutter_on = False
         """Cutter compensation is on (rs274 refuses turning it on again, and G28/G30 under it)."""
         self._cutter_before = False
+        self._cutter_register: Any = None
+        """The register of the last G41/G42 written (another dialect's G41 without D takes it)."""
         """Whether compensation was on before the block whose compensation word was written last."""
         self._whole = False
         """An orientation split's part is being written: it is one line (``split_block``)."""
@@ -123,10 +122,6 @@ class LinuxcncWriter(WordWriter):
         ``(LOGOPEN,``, ``(ABORT,`` ... as instructions: ``active_comments.ACTIVE``)."""
         return COMMENTS.comment(text) if self.foreign else super().comment(text)
 
-    def units_words(self, s: Any, block: Block) -> list[str]:
-        self.units_before = self.modal.units
-        return super().units_words(s, block)
-
     def cutter_compensation_words(self, s: Any, block: Block) -> list[str]:
         """rs274 turns compensation on only from off ("Cannot turn cutter radius comp on when on"): G41/G42
         while it is on would need a G40 between them, which moves differently."""
@@ -139,7 +134,24 @@ class LinuxcncWriter(WordWriter):
                              "allowed only in XY, XZ planes\")", block)
         self._cutter_before = self._cutter_on
         self._cutter_on = s.mode != "off"
+        if s.mode != "off" and s.register is None:
+            s = self._cutter_register_in_force(s, block)
+        elif s.mode != "off":
+            self._cutter_register = s.register
         return super().cutter_compensation_words(s, block)
+
+    def _cutter_register_in_force(self, s: Any, block: Block) -> Any:
+        """Another dialect's G41/G42 without D compensates by the register in force (Fanuc: D is modal [K]);
+        LinuxCNC's G41 without D takes the spindle tool's radius instead, so the register is written: the
+        last one written, or none known (refused). A LinuxCNC source names it already (its reader fills in
+        the spindle tool)."""
+        if self._cutter_register is None:
+            self.unsupported(f"cutter compensation {s.mode} without its register, before any register was "
+                             "programmed (LinuxCNC's G41/G42 without D takes the radius of the tool in the "
+                             "spindle; program D)", block)
+        named = copy.copy(s)
+        named.register = self._cutter_register
+        return named
 
     def plane_words(self, s: Any, block: Block) -> list[str]:
         if self._cutter_on and s.plane != self.modal.plane:
@@ -170,23 +182,6 @@ class LinuxcncWriter(WordWriter):
         if (not self.inverse_time and isinstance(feed, (int, float)) and feed
                 and "Feed" not in block.sections and "Units" not in block.sections):
             words.append("F" + self.feed_number(feed, block))
-        return words
-
-    def feed_beside_units(self, s: Any, block: Block) -> list[str]:
-        """The neutral F is in the block's units; LinuxCNC reads it in the units before the block."""
-        units = block.sections.get("Units")
-        if units is None or units.system == self.units_before or self.inverse_time:  # type: ignore[attr-defined]
-            return super().feed_beside_units(s, block)
-        modal = self.modal
-        after, modal.units = modal.units, self.units_before
-        factor = MM_PER_INCH if after == "inch" else 1.0 / MM_PER_INCH
-        if isinstance(s.value, Expr):  # F#1 under G20: F[#1*25.4], the same rate in the units before the block
-            modal.feed = None  # known only when the program runs
-            words = ["F" + self.expression(Binary("mul", s.value, Num(factor)), block)]
-        else:
-            modal.feed = s.value
-            words = ["F" + self.feed_number(s.value * factor, block)]
-        modal.units = after
         return words
 
     def statement_words(self, section: Section, block: Block) -> list[str]:

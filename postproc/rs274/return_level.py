@@ -1,0 +1,37 @@
+"""The canned-cycle return level a native cycle needs, written where the target would assume another.
+
+A controller starts in one return level (RS274/NGC's G98/G99: LinuxCNC's interpreter in G99, Mach3 in
+G98; ``Dialect.START_RETURN_LEVEL``), and a program may leave its cycles to that default. A cycle read
+from one dialect carries the level it returns to (``CannedCycle.return_level``); written natively for a
+target whose level in force differs (its start level, or the last one written), the block gets the
+return-level word (a ``ReturnLevel`` section). A lowering step for targets that write G98/G99.
+"""
+
+from __future__ import annotations
+
+from typing import Iterator
+
+from ..context import Context
+from ..dialect import Dialect
+from ..ir import Block, ReturnLevel
+
+
+def return_level_in_force(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """Lowering step (see the module docstring); a program of the target's own dialect is as written."""
+    if ctx.dialect == target.NAME:
+        yield from blocks
+        return
+    level = target.START_RETURN_LEVEL
+    for block in blocks:
+        sections = block.sections
+        written = sections.get("ReturnLevel")
+        if written is not None:
+            level = written.level  # type: ignore[attr-defined]
+        cycle = sections.get("CannedCycle")
+        if cycle is not None:
+            wanted = cycle.return_level  # type: ignore[attr-defined]
+            if wanted != level:
+                sections["ReturnLevel"] = ReturnLevel(wanted)
+                block.changed()
+                level = wanted
+        yield block
