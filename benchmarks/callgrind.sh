@@ -3,6 +3,8 @@
 # valgrind's callgrind counts the instructions of a 40k-block and a 20k-block run of the same
 # CAM-style program (benchmarks/generate.py) and prints the difference per block, so start-up and
 # imports cancel out.  Usage: benchmarks/callgrind.sh [--program cam|cycles] SRC TGT NORMALIZE(0|1) [LABEL]
+# TGT toolpath: the toolpath command (--format jsonl, benchmarks/machine.xml); TGT verify:DIALECT: verify
+# against the program's translation to DIALECT (prepared unmeasured), per block of the source.
 # --program cycles measures per hole instead: a 20k-hole minus a 10k-hole run of the drilling rows
 # (generate.py --kind cycles), divided by 10k holes.
 # POSTPROC_PURE=1 measures the pure-Python fallback (postproc --version says which build runs).
@@ -26,6 +28,11 @@ env -u PYTHONDONTWRITEBYTECODE .venv/bin/python -m compileall -q postproc dialec
 # One run first, unmeasured: after an install the first run discovers the entry points (and caches them,
 # postproc.entry_points) and writes byte code; measured, that lands in one of the two runs only and was
 # most of the +-4-7k noise of the per-block figure.
+if [[ $tgt == verify:* ]]; then
+  for n in $small $large; do
+    PREPARE=1 .venv/bin/python benchmarks/callgrind_once.py "$src" "$tgt" "$norm" "$work/$prefix$n.nc" 2>/dev/null
+  done
+fi
 sleep 2.5  # the entry-point cache trusts an installation at least postproc.entry_points.SETTLE seconds old
 .venv/bin/python benchmarks/callgrind_once.py "$src" "$tgt" "$norm" "$work/${prefix}$small.nc" 2>/dev/null
 for n in $small $large; do

@@ -1,6 +1,11 @@
-"""One translation for benchmarks/callgrind.sh, as ``make bench`` runs it: the ``postproc`` command's
-process (``postproc.launch``: the command line, reading the file and writing one), in this interpreter
-so that valgrind follows it. python callgrind_once.py SRC TGT NORMALIZE FILE."""
+"""One run for benchmarks/callgrind.sh, as ``make bench`` runs it: the ``postproc`` command's process
+(``postproc.launch``: the command line, reading the file and writing one), in this interpreter so that
+valgrind follows it. python callgrind_once.py SRC TGT NORMALIZE FILE.
+
+TGT ``toolpath``: ``postproc toolpath FILE --dialect SRC --format jsonl`` on the benchmark machine;
+``verify:DIALECT``: ``postproc verify FILE FILE.DIALECT --from SRC --to DIALECT`` on it, against the
+translation ``callgrind.sh`` prepared (with ``PREPARE=1``: write that translation); anything else
+``postproc translate --from SRC --to TGT``."""
 from __future__ import annotations
 
 import os
@@ -10,11 +15,24 @@ import tempfile
 from postproc.launch import run
 
 source, target, normalize, path = sys.argv[1:5]
+machine = os.path.join(os.path.dirname(os.path.abspath(__file__)), "machine.xml")
 options = ["--normalize"] if normalize == "1" else []
-# grbl warns at the program's G43 H (a table offset it cannot express), as benchmarks/run.py runs it
-if target == "grbl":
-    options += ["--on-unsupported", "warn"]
 with tempfile.TemporaryDirectory() as work:
-    out = os.path.join(work, "out.nc")
-    sys.argv = ["postproc", "translate", "--from", source, "--to", target, *options, path, "-o", out]
+    out = os.path.join(work, "out")
+    if target == "toolpath":
+        sys.argv = ["postproc", "toolpath", path, "--dialect", source, "--machine", machine, "--format", "jsonl",
+                    "-o", out]
+    elif target.startswith("verify:"):
+        dialect = target.split(":", 1)[1]
+        translated = f"{path}.{dialect}"
+        if os.environ.get("PREPARE") == "1":
+            sys.argv = ["postproc", "translate", "--from", source, "--to", dialect, path, "-o", translated]
+        else:
+            sys.argv = ["postproc", "verify", path, translated, "--from", source, "--to", dialect,
+                        "--machine", machine]
+    else:
+        # grbl warns at the program's G43 H (a table offset it cannot express), as benchmarks/run.py runs it
+        if target == "grbl":
+            options += ["--on-unsupported", "warn"]
+        sys.argv = ["postproc", "translate", "--from", source, "--to", target, *options, path, "-o", out]
     run()

@@ -1,8 +1,8 @@
 """``make bench``: postproc against peers and baselines measured in the same run, as ratios, with the
 targets of issue 13 marked PASS/MISS.
 
-Usage: python benchmarks/run.py [--quick] [--sizes N ...] [--runs R] [--holes H] [--macro-holes H]
-                                [--cache DIR] [--pygcode-max N] [--batch full|quick|tiny|skip]
+Usage: python benchmarks/run.py [--quick] [--rows ROW ...] [--sizes N ...] [--runs R] [--holes H]
+                                [--macro-holes H] [--cache DIR] [--pygcode-max N] [--batch full|quick|tiny|skip]
 
 Rows: translate fanuc->fanuc/grbl/linuxcnc against gcode-lib's parse and a plain streaming loop, toolpath
 and verify against gcode-lib's position tracking, peak memory and its growth with program length (at each
@@ -10,7 +10,8 @@ of --sizes); canned-cycle holes/s and a parametric loop's interpreted blocks/s a
 their output; start-up against a bare interpreter; batch files/s (benchmarks/batch.py). Every measured
 command is its own process (wall time, CPU and peak RSS from os.wait4); commands compared with each
 other run interleaved in rounds, a figure is the median of --runs rounds. Printed, never asserted.
-``--quick``: small sizes and one round, for development. What each row means: docs/benchmarks.md.
+``--quick``: small sizes and one round, for development; ``--rows``: only some rows, each with the
+baselines it is compared with (``ROWS``). What each row means: docs/benchmarks.md.
 """
 from __future__ import annotations
 
@@ -42,6 +43,17 @@ FLAT_TARGET = 1.10
 TRANSLATE_TARGETS = {"fanuc": 1.5, "grbl": 1.0, "linuxcnc": 1.0}
 """Target dialect -> the issue's target for translate, as a multiple of gcode-lib's parse."""
 PLAIN_TARGET = 0.8
+ROWS: dict[str, tuple[str, ...]] = {
+    "normalize": ("translate fanuc->fanuc --normalize", "gcode-lib", "plain loop"),
+    "grbl": ("translate fanuc->grbl (warn)", "gcode-lib"),
+    "linuxcnc": ("translate fanuc->linuxcnc", "gcode-lib"),
+    "toolpath": ("toolpath --format jsonl", "gcode-lib-state"),
+    "verify": ("verify fanuc / linuxcnc", "gcode-lib-state x 2 files"),
+    "peers": ("gcode-lib", "gcodeparser", "pygcode", "plain loop"),
+    "cycles": (), "macro": (), "startup": (), "batch": (),
+}
+"""``--rows`` names -> the commands of a CAM program size each needs (its own and its baselines, run in the
+same rounds); the last four are workloads of their own."""
 
 
 def translate_label(target: str) -> str:
@@ -55,8 +67,10 @@ def translate_options(target: str) -> list[str]:
     return {"fanuc": ["--normalize"], "grbl": ["--on-unsupported", "warn"]}.get(target, [])
 
 
-def size_commands(blocks: int, src: Path, work: Path, pygcode_max: int) -> dict[str, list[str]]:
-    """Every command measured at one program size, in the order a round runs them."""
+def size_commands(blocks: int, src: Path, work: Path, pygcode_max: int,
+                  rows: set[str] | None = None) -> dict[str, list[str]]:
+    """Every command measured at one program size (only those ``rows`` need, when given), in the order a
+    round runs them."""
     prepared = work / "verify-input.ngc"
     commands: dict[str, list[str]] = {}
     for tool in PARSERS:
@@ -75,7 +89,10 @@ def size_commands(blocks: int, src: Path, work: Path, pygcode_max: int) -> dict[
     commands["gcode-lib-state x 2 files"] = [*PEERS, "gcode-lib-state", str(src), str(prepared)]
     commands["verify fanuc / linuxcnc"] = [*workloads.postproc(), "verify", str(src), str(prepared),
                                            "--from", "fanuc", "--to", "linuxcnc", "--machine", str(MACHINE)]
-    return commands
+    if rows is None:
+        return commands
+    needed = {label for row in rows for label in ROWS[row]}
+    return {label: cmd for label, cmd in commands.items() if label in needed}
 
 
 def gcodeparser_copy(src: Path) -> Path:
@@ -86,15 +103,19 @@ def gcodeparser_copy(src: Path) -> Path:
     return path
 
 
-def bench_size(blocks: int, cache: Path, work: Path, runs: int, pygcode_max: int) -> dict[str, Runs]:
-    """Measure every command at one size (the input of verify is prepared first, untimed)."""
+def bench_size(blocks: int, cache: Path, work: Path, runs: int, pygcode_max: int,
+               rows: set[str] | None = None) -> dict[str, Runs]:
+    """Measure every command at one size (those of ``rows``, when given; the input of verify is prepared
+    first, untimed)."""
     src = cached(cache, f"fanuc-{blocks}", lambda: generate.blocks(blocks))
-    note = prepare(translate(src, work / "verify-input.ngc", "fanuc", "linuxcnc"))
-    if note:
-        print(f"preparing verify's input failed: {note}")
+    commands = size_commands(blocks, src, work, pygcode_max, rows)
+    if "gcode-lib-state x 2 files" in commands:
+        note = prepare(translate(src, work / "verify-input.ngc", "fanuc", "linuxcnc"))
+        if note:
+            print(f"preparing verify's input failed: {note}")
     outputs = {translate_label(t): (work / f"out.{t}", blocks - 2) for t in TRANSLATE_TARGETS}
-    results = rounds(size_commands(blocks, src, work, pygcode_max), runs, at_least_lines(outputs))
-    gcode_lib, plain = results.get("gcode-lib"), results["plain loop"]
+    results = rounds(commands, runs, at_least_lines(outputs))
+    gcode_lib, plain = results.get("gcode-lib"), results.get("plain loop")
     print(f"\n{blocks:,}-block CAM program (units = its blocks; x gcode-lib and x plain loop: paired ratios)")
     print(f"{'command':<34} {'seconds':>8} {'cpu s':>6} {'blocks/s':>10} {'x gcode-lib':>11} "
           f"{'x plain loop':>12} {'peak RSS MB':>11}  note")
@@ -103,7 +124,8 @@ def bench_size(blocks: int, cache: Path, work: Path, runs: int, pygcode_max: int
         note = entry.note or ("drops modal blocks (Z0.->Z0.0 copy)" if label in PARTIAL else "")
         print(f"{label:<34} {fmt(entry.seconds, '.2f'):>8} {fmt(entry.cpu, '.2f'):>6} "
               f"{fmt(rate(entry, blocks), ',.0f'):>10} {fmt(vs_lib, '.2f'):>11} "
-              f"{fmt(paired_ratio(entry, plain), '.2f'):>12} {fmt(entry.rss_mb, '.1f'):>11}  {note}")
+              f"{fmt(paired_ratio(entry, plain) if plain else None, '.2f'):>12} {fmt(entry.rss_mb, '.1f'):>11}  "
+              f"{note}")
     if blocks > pygcode_max:
         print(f"(pygcode not run above --pygcode-max {pygcode_max:,} blocks: it is the slowest peer)")
     return results
@@ -117,18 +139,22 @@ def translate_lines(blocks: int, results: dict[str, Runs]) -> list[Line]:
     """Throughput lines of one size: translate x3 against gcode-lib (and the plain loop), toolpath, verify."""
     size = f"{blocks:,} blocks"
     lib = results.get("gcode-lib") or Runs("gcode-lib", [], note="not run")
-    plain = results["plain loop"]
     lines = []
     for target, times_lib in TRANSLATE_TARGETS.items():
-        ours = results[translate_label(target)]
+        ours = results.get(translate_label(target))
+        if ours is None:
+            continue  # not among --rows
         lines.append(Line(translate_label(target), size, rate(ours, blocks), "blocks/s", "gcode-lib parse",
                           paired_ratio(ours, lib), at_least_x(times_lib), ours.note or lib.note))
-        if target == "fanuc":
+        plain = results.get("plain loop")
+        if target == "fanuc" and plain is not None:
             lines.append(Line(translate_label(target), size, rate(ours, blocks), "blocks/s",
                               "plain loop", paired_ratio(ours, plain), at_least_x(PLAIN_TARGET),
                               ours.note or plain.note))
     for label, peer in (("toolpath --format jsonl", "gcode-lib-state"),
                         ("verify fanuc / linuxcnc", "gcode-lib-state x 2 files")):
+        if label not in results:
+            continue
         ours, base = results[label], results[peer]
         lines.append(Line(label, size, rate(ours, blocks), "blocks/s", f"{peer} (position only)",
                           paired_ratio(ours, base), None, ours.note or base.note))
@@ -141,6 +167,8 @@ def memory_lines(blocks: int, results: dict[str, Runs]) -> list[Line]:
     lines = []
     for label in [translate_label(t) for t in TRANSLATE_TARGETS] + ["toolpath --format jsonl",
                                                                      "verify fanuc / linuxcnc"]:
+        if label not in results:
+            continue
         ours = results[label]
         ratio = ours.rss_mb / lib.rss_mb if ours.rss_mb and lib and lib.rss_mb else None
         target = Target("figure", "<", RSS_TARGET_MB, "< 64 MB") if label.startswith("translate") else None
@@ -156,6 +184,8 @@ def flat_lines(by_size: dict[int, dict[str, Runs]]) -> list[Line]:
         return []
     lines = []
     for label in [translate_label(t) for t in TRANSLATE_TARGETS] + ["toolpath --format jsonl"]:
+        if label not in by_size[small]:
+            continue
         low, high = by_size[small][label].rss_mb, by_size[large][label].rss_mb
         growth = high - low if low and high else None
         lines.append(Line(f"RSS growth {label}", f"{small:,}->{large:,}", growth, "MB",
@@ -180,6 +210,8 @@ def parse_args() -> argparse.Namespace:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true",
                         help="small sizes and one round, for development (explicit options still win)")
+    parser.add_argument("--rows", nargs="+", choices=list(ROWS), metavar="ROW",
+                        help=f"only these rows, with their baselines ({', '.join(ROWS)}; default all)")
     parser.add_argument("--sizes", type=int, nargs="+", help="CAM program sizes (default 100000 1000000)")
     parser.add_argument("--runs", type=int, help="rounds; each figure is their median (default 3)")
     parser.add_argument("--holes", type=int, help="holes of the canned-cycle program (default 100000)")
@@ -214,18 +246,27 @@ def main() -> None:
     throughput: list[Line] = []
     memory: list[Line] = []
     by_size: dict[int, dict[str, Runs]] = {}
+    rows: set[str] | None = None if args.rows is None else set(args.rows)
+    wanted = (lambda row: True) if rows is None else rows.__contains__
+    cycles: list[Line] = []
+    macro: list[Line] = []
+    startup: list[Line] = []
     with tempfile.TemporaryDirectory() as tmp:
         work = Path(tmp)
-        for blocks in sorted(set(args.sizes)):
-            by_size[blocks] = bench_size(blocks, args.cache, work, args.runs, args.pygcode_max)
-            throughput += translate_lines(blocks, by_size[blocks])
-            memory += memory_lines(blocks, by_size[blocks])
-        memory += flat_lines(by_size)
-        cycles = workloads.cycles(args.holes, args.cache, work, args.runs)
-        macro = workloads.macro(args.macro_holes, args.cache, work, args.runs)
-        startup = workloads.startup(work, args.runs)
+        if rows is None or rows - {"cycles", "macro", "startup", "batch"}:
+            for blocks in sorted(set(args.sizes)):
+                by_size[blocks] = bench_size(blocks, args.cache, work, args.runs, args.pygcode_max, rows)
+                throughput += translate_lines(blocks, by_size[blocks])
+                memory += memory_lines(blocks, by_size[blocks])
+            memory += flat_lines(by_size)
+        if wanted("cycles"):
+            cycles = workloads.cycles(args.holes, args.cache, work, args.runs)
+        if wanted("macro"):
+            macro = workloads.macro(args.macro_holes, args.cache, work, args.runs)
+        if wanted("startup"):
+            startup = workloads.startup(work, args.runs)
     batched: list[Line] = []
-    if args.batch != "skip":
+    if args.batch != "skip" and wanted("batch"):
         print()
         batched = batch_lines(batch.run(args.batch, args.cache))
     print()

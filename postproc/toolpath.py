@@ -85,14 +85,18 @@ class ToolpathTarget(Dialect):
 
 def num(value: float) -> float | int:
     """A number as written to a toolpath: rounded, integral values as int, never -0, always finite
-    (a value beyond the float range fails at its block, rather than as JSON's invalid ``Infinity``)."""
-    if not math.isfinite(value):
-        raise ProgramError(f"a value beyond the range of a float ({value!r}) cannot be simulated"
-                           if value == value else "a value that is not a number (nan) cannot be simulated")
+    (a value beyond the float range fails at its block, rather than as JSON's invalid ``Infinity``).
+    Rounding keeps an infinity or a nan as it is, so finiteness is tested only on what is not integral
+    (five calls a move: the test costs less there)."""
     r = round(value, PLACES)
     if r == 0:
         return 0
-    return int(r) if r.is_integer() else r
+    if r.is_integer():
+        return int(r)
+    if r - r != 0.0:  # inf - inf and nan - nan are nan
+        raise ProgramError(f"a value beyond the range of a float ({value!r}) cannot be simulated"
+                           if value == value else "a value that is not a number (nan) cannot be simulated")
+    return r
 
 
 def start_position(setup: MachineSetup) -> dict[str, float]:

@@ -104,8 +104,12 @@ class Report:
 
 # -- normalising -------------------------------------------------------------------------------------
 
+_AXIS_KEYS = frozenset("xyzabcuvw")
+
+
 def _axes(ev: Event) -> dict[str, float]:
-    return {k: float(v) for k, v in ev.items() if len(k) == 1 and k in "xyzabcuvw"}
+    """The end point of a move event, in its order (the machine's axes)."""
+    return {k: float(v) for k, v in ev.items() if k in _AXIS_KEYS}
 
 
 def _dist(a: dict[str, float], b: dict[str, float]) -> float:
@@ -287,7 +291,8 @@ def _controlled(events: Iterator[Event]) -> Iterator[Event]:
         if controlled is None:
             yield ev
         else:
-            moved = {k: v for k, v in ev.items() if k != "controlled"}
+            moved = dict(ev)  # the keys in their order: the controlled axes replace the programmed ones
+            del moved["controlled"]
             moved.update(controlled)
             yield moved
 

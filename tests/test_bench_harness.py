@@ -139,3 +139,24 @@ def test_quick_run_end_to_end(tmp_path: Path) -> None:
     verdicts = re.findall(r"\s(PASS|MISS|n/a)\s", "\n".join(summary) + "\n")
     assert len(verdicts) == sum(1 for line in summary if re.search(r"\s[<>]=? ", line))
     assert re.search(r"^targets: \d+ PASS, \d+ MISS, \d+ not measured$", out, re.M)
+
+
+def test_rows_measure_only_what_they_name(tmp_path: Path) -> None:
+    """``--rows toolpath startup``: those rows and the baselines they are compared with, nothing else."""
+    done = subprocess.run(
+        [sys.executable, str(ROOT / "benchmarks" / "run.py"), "--quick", "--rows", "toolpath", "startup",
+         "--sizes", "200", "--cache", str(tmp_path / "cache")],
+        cwd=ROOT, capture_output=True, text=True, timeout=600)
+    assert done.returncode == 0, done.stderr
+    out = done.stdout
+    assert "failed" not in out and "wrong output" not in out, out
+    detail = out[:out.index("\nsummary:")]
+    for command in ("toolpath --format jsonl", "gcode-lib-state", "python -c pass", "postproc dialects"):
+        assert re.search(rf"^{re.escape(command)}\s", detail, re.M), (command, out)
+    for command in ("translate fanuc->", "verify fanuc", "plain loop", "gcode-lib ", "canned cycles", "batch"):
+        assert not re.search(rf"^{re.escape(command)}", detail, re.M), (command, out)
+    table = out[out.index("\nsummary:"):].splitlines()
+    summary = table[table.index(next(t for t in table if t.startswith("---"))) + 1:-1]
+    rows = sorted({re.split(r"\s{2,}", line)[0] for line in summary})
+    assert rows == ["peak RSS toolpath --format jsonl", "start-up: postproc dialects",
+                    "start-up: translate a one-line program", "toolpath --format jsonl"], out

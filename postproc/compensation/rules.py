@@ -8,10 +8,10 @@ Tags as in DIALECTS.md: [V] verified against the controller or its interpreter, 
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from ..records import record
 
 
-@dataclass(frozen=True)
+@record(frozen=True)  # made at every start (the LinuxCNC plugin's): a dataclass's generated methods cost ~0.4 ms
 class CutterRules:
     """How one controller family starts, runs and ends cutter radius compensation."""
 

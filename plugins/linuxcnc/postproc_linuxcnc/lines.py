@@ -33,8 +33,11 @@ class LinuxcncLines:
     """The rule of every line written for LinuxCNC (``postproc.line_format.LineRule``)."""
 
     def fits(self, text: str) -> bool:
-        """``text`` (one or more lines) is short enough as a whole, so every line of it is."""
-        return len(text) <= LINE_LENGTH and size(text) <= LINE_LENGTH
+        """Every line of ``text`` is short enough as it is (the test of a usual block, and of an expanded
+        cycle's many lines): each line, with the CR of its end, lies within a piece between two LFs."""
+        if text.isascii():
+            return len(text) <= LINE_LENGTH or max(map(len, text.split("\n"))) <= LINE_LENGTH
+        return all(size(piece) <= LINE_LENGTH for piece in text.split("\n"))
 
     def fit(self, line: str, eol: str) -> tuple[str, str | None, str | None]:
         over = size(line) + ("\r" in eol) - LINE_LENGTH
