@@ -37,10 +37,6 @@ KNOWN_FAILURES: dict[tuple[str, str], str] = {
        for t in ("fagor", "fanuc", "grbl", "isg", "mach3")},
     ("linuxcnc/comp311.ngc", "mach3"): "mach3: an F in a block that changes units is written in the new units and "
                                         "read in the old (fuzzing KNOWN_DEFECTS)",
-    ("linuxcnc/m98m99_basics.ngc", "fanuc"): "a G81 at the current point, in a subprogram called with L, is written as "
-                                             "a feed to the first call's point (wrong output, verify catches it)",
-    ("linuxcnc/m98m99_loops.ngc", "fanuc"): "a G81 in a subprogram called with L is written as the first call's holes "
-                                            "(wrong output, verify catches it)",
 }
 """(program, target or '' for the source check) -> the defect, as found by this corpus."""
 
