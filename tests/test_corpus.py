@@ -24,9 +24,6 @@ _spec.loader.exec_module(harness)
 PROGRAMS = harness.load_manifest()
 
 KNOWN_FAILURES: dict[tuple[str, str], str] = {
-    ("linuxcnc/hole_circle_polar.ngc", ""): "LinuxCNC polar coordinates (@ radius, ^ angle) are not read",
-    **{("linuxcnc/hole_circle_polar.ngc", t): "LinuxCNC polar coordinates (@ radius, ^ angle) are not read"
-       for t in ("fagor", "fanuc", "grbl", "isg", "mach3")},
     ("linuxcnc/comp.ngc", ""): "cutter compensation in the ZX plane is not simulated",
     ("linuxcnc/g33_1_rigid_tap.ngc", ""): "G33.1 rigid tapping is not simulated (issue 26 item 3: tapping)",
     ("linuxcnc/inverse_time_with_comp.ngc", ""): "G41.1/G42.1 (cutter compensation by a diameter) are not simulated",

@@ -198,7 +198,7 @@ SAMPLES: dict[str, list[tuple[Builder, str]]] = {
     **{name: _empty(name) for name in (
         "FanucBlockSyntax", "FanucLatheBlockSyntax", "GskBlockSyntax", "LatheCycleSyntax", "FanucProgramSyntax",
         "ModalStateSyntax", "GrblBlockSyntax", "NgcBlockSyntax", "Mach3BlockSyntax",
-        "LinuxcncProgramSyntax", "IsgBlockSyntax", "IsgProgramSyntax", "FagorBlockSyntax",
+        "LinuxcncProgramSyntax", "PolarSyntax", "IsgBlockSyntax", "IsgProgramSyntax", "FagorBlockSyntax",
         "FagorProgramSyntax", "DrillingSyntax",
         "PeckDrillingSyntax", "TappingSyntax", "BoringSyntax", "FineBoringSyntax", "BackBoringSyntax",
         "ManualBoringSyntax",

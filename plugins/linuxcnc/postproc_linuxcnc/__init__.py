@@ -87,9 +87,10 @@ class Linuxcnc(Dialect):
         from postproc.cycles.resolve import CannedCycleResolveSyntax
         from postproc.syntaxes.modal_state import ModalStateSyntax
         from .block_syntax import NgcBlockSyntax
+        from .polar import PolarSyntax
         from .program import LinuxcncProgramSyntax
-        return Pipeline(cls.NAME, [LinuxcncProgramSyntax(), NgcBlockSyntax(), CannedCycleResolveSyntax("rs274"),
-                                   ModalStateSyntax()])
+        return Pipeline(cls.NAME, [LinuxcncProgramSyntax(), PolarSyntax(), NgcBlockSyntax(),
+                                   CannedCycleResolveSyntax("rs274"), ModalStateSyntax()])
 
     @classmethod
     def context(cls, file: str, setup: MachineSetup, diagnostics: Diagnostics) -> Context:
@@ -113,3 +114,4 @@ def postproc_register_lowerings(register: Callable[[Lowering], None]) -> None:
 def postproc_register_xml(factory: XFactory) -> None:
     factory.register_lazy("NgcBlockSyntax", f"{__name__}.block_syntax:NgcBlockSyntax")
     factory.register_lazy("LinuxcncProgramSyntax", f"{__name__}.program:LinuxcncProgramSyntax")
+    factory.register_lazy("PolarSyntax", f"{__name__}.polar:PolarSyntax")
