@@ -491,6 +491,13 @@ class Simulator:
                 self._begin()
             else:
                 raise UnsupportedError(f"cutter compensation '{mode}' cannot be simulated", self._at(block))
+        dynamic = get("DynamicCutterCompensation")
+        if dynamic is not None:
+            if cutter is None or self.modal.plane != "XY":
+                raise UnsupportedError(f"cutter compensation by a diameter in the {self.modal.plane} plane cannot be "
+                                       "simulated", self._at(block))
+            cutter.start(dynamic.mode, dynamic.radius(self.scale))  # type: ignore[attr-defined]  # D/2, negative: other side
+            self._begin()
         tl = get("ToolLengthOffset")
         if tl is not None:
             try:
@@ -797,8 +804,8 @@ recorded although a G10's values are applied (the set-up's are not: the path sta
 coordinates)."""
 MOVES_THE_TOOL = frozenset(("cutter compensation", "work offset", "path control", "tool offset data"))
 """Of those, the ones that move the tool when they differ."""
-_SETTING_KEYS = frozenset((*UNSIMULATED, "DataSetting", "ToolLengthOffset"))
-_COMPENSATION_KEYS = frozenset(("CutterCompensation", "ToolLengthOffset"))
+_SETTING_KEYS = frozenset((*UNSIMULATED, "DataSetting", "ToolLengthOffset", "DynamicCutterCompensation"))
+_COMPENSATION_KEYS = frozenset(("CutterCompensation", "ToolLengthOffset", "DynamicCutterCompensation"))
 _INITIAL_SETTINGS = {"cutter compensation": "off", "work offset": "1"}
 
 

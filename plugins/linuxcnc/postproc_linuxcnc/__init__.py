@@ -115,3 +115,5 @@ def postproc_register_xml(factory: XFactory) -> None:
     factory.register_lazy("NgcBlockSyntax", f"{__name__}.block_syntax:NgcBlockSyntax")
     factory.register_lazy("LinuxcncProgramSyntax", f"{__name__}.program:LinuxcncProgramSyntax")
     factory.register_lazy("PolarSyntax", f"{__name__}.polar:PolarSyntax")
+    factory.register_lazy("DynamicCutterCompensation",
+                          "postproc.compensation.dynamic:DynamicCutterCompensation")
