@@ -57,12 +57,13 @@ class NgcBlockSyntax(NgcWordBlockSyntax):
         if orientation is not None and ctx.state.plane != "ZX":
             raise ProgramError(f"{code} with an L word (a lathe tool's orientation), but the plane is not G18",
                                ctx.at(block, ctx.column_of(block, "L")))
-        if any(isinstance(values.get(k), Expr) for k in "DL"):
+        diameter = values["D"]
+        if isinstance(diameter, Expr) or isinstance(orientation, Expr):
             return  # known when the program runs: the run reads the block again with numbers
         for letter, num in block.words:
             up = letter.upper()
             if up not in _DYNAMIC_WORDS and not (up == "G" and g_key(num) == natives[0]):
                 return  # another word acts too: the block stays verbatim and the simulation refuses it
         block.sections["NativeCode"].inert = True  # type: ignore[attr-defined]
-        block.add(DynamicCutterCompensation(side, float(values["D"]),
+        block.add(DynamicCutterCompensation(side, float(diameter),
                                             None if orientation is None else int(orientation)))
