@@ -79,6 +79,8 @@ class ToolpathTarget(Dialect):
     DESCRIPTION = "toolpath simulation (not a dialect)"
     NATIVE_CYCLES = frozenset()
     MACHINE_TYPES = frozenset({"mill", "lathe"})
+    INVERSE_TIME_FEED = True
+    """It reports an inverse-time F as it is (``feed_mode`` says so); ``verify`` compares it per minute."""
     DIAMETER_PROGRAMMING = True
     """It reads the program's own X (a diameter stays a diameter: the simulator halves it itself)."""
 

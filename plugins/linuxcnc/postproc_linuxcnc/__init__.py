@@ -72,6 +72,8 @@ class Linuxcnc(Dialect):
     """How the native cycles move: start below R rises to R first, G98 returns to the old Z only when
     it is above R, G91 R is measured from the Z at the block's start, G74/G84/G89 feed out to the
     clear level, G73/G83 clearances are fixed (0.254 mm / 0.010 in)."""
+    INVERSE_TIME_FEED = True
+    """G93: a move in 1/F minutes [V: LinuxCNC G-code manual, interp_convert.cc]."""
     DWELL_UNIT = "seconds"
     """G4 P and a cycle's P are seconds."""
     START_RETURN_LEVEL = "r"
