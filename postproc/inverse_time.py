@@ -39,7 +39,7 @@ _KEEPS_POSITION: Final = frozenset((
     "Feed", "FeedMode", "Units", "DistanceMode", "Plane", "Comments", "Sequence", "SpindleControl",
     "SpindleSpeed", "SpindleMode", "Coolant", "Dwell", "ToolSelect", "ToolChange", "ProgramControl", "PathControl",
     "ReturnLevel", "CycleCancel", "TapeMark", "ProgramStart", "BlockDelete", "CutterCompensation",
-    "ToolLengthOffset", "Motion", "Assign", "Control", "Label", "Generated",
+    "ToolLengthOffset", "DynamicCutterCompensation", "Motion", "Assign", "Control", "Label", "Generated",
 ))
 """Sections after which the programmed point is where the moves left it."""
 
@@ -92,7 +92,7 @@ def _convert(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> It
                 block.changed()
         scale = MM_PER_INCH if units == "inch" else 1.0
         motion = get("Motion")
-        if any(key not in _KEEPS_POSITION for key in sections) or (
+        if any(key not in _KEEPS_POSITION and not _inert(sections, key) for key in sections) or (
                 isinstance(motion, Motion) and (motion.mode not in ("rapid", "linear", "cw", "ccw")
                                                 or "MachineCoordinates" in sections)):
             position = None
@@ -135,6 +135,11 @@ def _feed(ctx: Context, block: Block, target: type[Dialect], motion: Motion, sta
     length = move_length(start, end, plane, motion.mode or "", _centre(ctx, block, motion, start, end, plane,
                                                                        scale))
     return Feed(length * feed.value / scale) if length > 0.0 else None
+
+
+def _inert(sections: dict[str, Any], key: str) -> bool:
+    """A verbatim code that does nothing a tool path shows (``NativeCode.inert``) leaves the point as it is."""
+    return key == "NativeCode" and bool(getattr(sections[key], "inert", False))
 
 
 def _end(motion: Motion, position: dict[str, float] | None, incremental: bool,
