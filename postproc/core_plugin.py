@@ -13,6 +13,7 @@ from .control import register_control
 from .cycles.lathe_lowering import expand_lathe_cycles
 from .cycles.lowering import expand_canned_cycles
 from .hookspecs import hookimpl
+from .inverse_time import convert_inverse_time
 from .interp import ProgramSyntax
 from .expr import register_expressions
 from .ir import register_sections
@@ -45,6 +46,7 @@ def postproc_register_lowerings(register: Callable[[Lowering], None]) -> None:
     register(patterns.expand_hole_patterns)  # before the cycles: it makes a repeat of the cycle per point
     register(expand_canned_cycles)
     register(expand_lathe_cycles)
+    register(convert_inverse_time)  # after the expansions: it follows the moves they leave
     register(comment_after_end)
     register(drop_foreign_machine_functions)
     register(frame_program)  # last: the frame goes around what the steps before made

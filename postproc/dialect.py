@@ -114,6 +114,9 @@ class Dialect:
     """Kinds of hole pattern (``postproc.patterns.HolePattern``: line, parallelogram, grid, circle, arc)
     the controller runs natively, repeating its active canned cycle; a pattern of another kind is
     written as the cycle at every point (``expand_hole_patterns``)."""
+    INVERSE_TIME_FEED: ClassVar[bool] = False
+    """The controller runs G93 inverse-time feed as RS274/NGC does (a move in 1/F minutes); else a
+    translation writes each move's feed per minute (``postproc.inverse_time``)."""
     SPINDLE_ORIENTATION: ClassVar[bool] = True
     """The controller can stop the spindle at an angle (cycles that need it are handled per the set-up's
     ``Cycles orientation`` otherwise)."""

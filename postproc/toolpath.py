@@ -79,6 +79,8 @@ class ToolpathTarget(Dialect):
     DESCRIPTION = "toolpath simulation (not a dialect)"
     NATIVE_CYCLES = frozenset()
     MACHINE_TYPES = frozenset({"mill", "lathe"})
+    INVERSE_TIME_FEED = True
+    """It reports an inverse-time F as it is (``feed_mode`` says so); ``verify`` compares it per minute."""
     DIAMETER_PROGRAMMING = True
     """It reads the program's own X (a diameter stays a diameter: the simulator halves it itself)."""
 
@@ -499,6 +501,13 @@ class Simulator:
                 self._begin()
             else:
                 raise UnsupportedError(f"cutter compensation '{mode}' cannot be simulated", self._at(block))
+        dynamic = get("DynamicCutterCompensation")
+        if dynamic is not None:
+            if cutter is None or self.modal.plane != "XY":
+                raise UnsupportedError(f"cutter compensation by a diameter in the {self.modal.plane} plane cannot be "
+                                       "simulated", self._at(block))
+            cutter.start(dynamic.mode, dynamic.radius(self.scale))  # type: ignore[attr-defined]  # D/2, negative: other side
+            self._begin()
         tl = get("ToolLengthOffset")
         if tl is not None:
             try:
@@ -806,8 +815,8 @@ recorded although a G10's values are applied (the set-up's are not: the path sta
 coordinates)."""
 MOVES_THE_TOOL = frozenset(("cutter compensation", "work offset", "path control", "tool offset data"))
 """Of those, the ones that move the tool when they differ."""
-_SETTING_KEYS = frozenset((*UNSIMULATED, "DataSetting", "ToolLengthOffset"))
-_COMPENSATION_KEYS = frozenset(("CutterCompensation", "ToolLengthOffset"))
+_SETTING_KEYS = frozenset((*UNSIMULATED, "DataSetting", "ToolLengthOffset", "DynamicCutterCompensation"))
+_COMPENSATION_KEYS = frozenset(("CutterCompensation", "ToolLengthOffset", "DynamicCutterCompensation"))
 _INITIAL_SETTINGS = {"cutter compensation": "off", "work offset": "1"}
 
 

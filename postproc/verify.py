@@ -18,6 +18,7 @@ from dataclasses import dataclass, field
 from itertools import zip_longest
 from typing import Any, Iterable, Iterator, Mapping
 
+from .inverse_time import per_minute
 from .errors import Diagnostics, ErrorList, UsageError
 from .plugins import Registry, default_registry
 from .setup import MachineSetup
@@ -254,7 +255,9 @@ def compare(events_in: Iterable[Event], events_out: Iterable[Event], *, start_in
             start_out: dict[str, float], tolerance: float) -> Report:
     """Walk two toolpaths (each with its header first) and report their largest deviation."""
     report = Report(tolerance)
-    it_in, it_out = _controlled(iter(events_in)), _controlled(iter(events_out))
+    # feeds compared per minute: an inverse-time program and its translation for a target without G93
+    it_in = per_minute(_controlled(iter(events_in)), start_in)
+    it_out = per_minute(_controlled(iter(events_out)), start_out)
     head_in, head_out = next(it_in, {}), next(it_out, {})
     if head_in.get("x_mode") != head_out.get("x_mode"):
         # a diameter program and its radius translation: compare both as radii (true geometry)

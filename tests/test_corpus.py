@@ -24,23 +24,14 @@ _spec.loader.exec_module(harness)
 PROGRAMS = harness.load_manifest()
 
 KNOWN_FAILURES: dict[tuple[str, str], str] = {
-    ("linuxcnc/hole_circle_polar.ngc", ""): "LinuxCNC polar coordinates (@ radius, ^ angle) are not read",
-    **{("linuxcnc/hole_circle_polar.ngc", t): "LinuxCNC polar coordinates (@ radius, ^ angle) are not read"
-       for t in ("fagor", "fanuc", "grbl", "isg", "mach3")},
     ("linuxcnc/comp.ngc", ""): "cutter compensation in the ZX plane is not simulated",
     ("linuxcnc/g33_1_rigid_tap.ngc", ""): "G33.1 rigid tapping is not simulated (issue 26 item 3: tapping)",
-    ("linuxcnc/inverse_time_with_comp.ngc", ""): "G41.1/G42.1 (cutter compensation by a diameter) are not simulated",
-    ("linuxcnc/inside_corners_trimmed.ngc", ""): "G41.1/G42.1 (cutter compensation by a diameter) are not simulated",
     ("linuxcnc/g10_l1_l10.ngc", ""): "G10 L1/L10 (tool table writes) are not simulated (issue 26 item 3: tapping)",
     ("linuxcnc/g52_g92_interaction.ngc", ""): "LinuxCNC G52 is not read, G92.x not simulated (issue 27: frames)",
     **{("linuxcnc/g52_g92_interaction.ngc", t): "LinuxCNC G52 is not read (issue 27: frames)"
        for t in ("fagor", "fanuc", "grbl", "isg", "mach3")},
     ("linuxcnc/comp311.ngc", "mach3"): "mach3: an F in a block that changes units is written in the new units and "
                                         "read in the old (fuzzing KNOWN_DEFECTS)",
-    ("linuxcnc/m98m99_basics.ngc", "fanuc"): "a G81 at the current point, in a subprogram called with L, is written as "
-                                             "a feed to the first call's point (wrong output, verify catches it)",
-    ("linuxcnc/m98m99_loops.ngc", "fanuc"): "a G81 in a subprogram called with L is written as the first call's holes "
-                                            "(wrong output, verify catches it)",
 }
 """(program, target or '' for the source check) -> the defect, as found by this corpus."""
 

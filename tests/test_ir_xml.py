@@ -13,6 +13,7 @@ from typing import Any, Callable
 
 import pytest
 
+from postproc.compensation.dynamic import DynamicCutterCompensation
 from postproc.api import read_program
 from postproc.expr import Binary, Func, Num, Unary, Var
 from postproc.errors import ConfigError
@@ -200,11 +201,15 @@ SAMPLES: dict[str, list[tuple[Builder, str]]] = {
     **{name: _empty(name) for name in (
         "FanucBlockSyntax", "FanucLatheBlockSyntax", "GskBlockSyntax", "LatheCycleSyntax", "FanucProgramSyntax",
         "ModalStateSyntax", "GrblBlockSyntax", "NgcBlockSyntax", "Mach3BlockSyntax",
-        "LinuxcncProgramSyntax", "IsgBlockSyntax", "IsgProgramSyntax", "FagorBlockSyntax",
+        "LinuxcncProgramSyntax", "PolarSyntax", "IsgBlockSyntax", "IsgProgramSyntax", "FagorBlockSyntax",
         "FagorProgramSyntax", "DrillingSyntax",
         "PeckDrillingSyntax", "TappingSyntax", "BoringSyntax", "FineBoringSyntax", "BackBoringSyntax",
         "ManualBoringSyntax",
     )},
+    "DynamicCutterCompensation": [
+        (lambda c: DynamicCutterCompensation("right", -0.8), '<DynamicCutterCompensation mode="right" diameter="-0.8"/>'),
+        (lambda c: DynamicCutterCompensation("left", 0.4, 2),
+         '<DynamicCutterCompensation mode="left" diameter="0.4" orientation="2"/>')],
     **CONTROL_SAMPLES,
 }
 

@@ -77,8 +77,8 @@ def test_pipeline_xml_loads_and_writes_back_identically() -> None:
     default_registry()
     pipeline = load_pipeline(path)
     assert [type(s).__name__ for s in pipeline.steps] == [
-        "LinuxcncProgramSyntax", "NgcBlockSyntax", "CannedCycleResolveSyntax", "ModalStateSyntax"]
-    assert pipeline.steps[2].semantics == "rs274"  # type: ignore[attr-defined]
+        "LinuxcncProgramSyntax", "PolarSyntax", "NgcBlockSyntax", "CannedCycleResolveSyntax", "ModalStateSyntax"]
+    assert pipeline.steps[3].semantics == "rs274"  # type: ignore[attr-defined]
     assert to_bytes(pipeline.make_xml_source()) == to_bytes(etree.fromstring(path.read_bytes()))
 
 

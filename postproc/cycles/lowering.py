@@ -12,6 +12,15 @@ cycle on the target, so a later native repeat would no longer drill there.
 An expanded block loses its ``CannedCycle`` and is marked changed, so the writer writes its
 ``CompoundMotion`` with a comment naming the source line; a native block loses its
 ``CompoundMotion``, so nothing is written twice.
+
+An expansion is the motion of one run: the reader resolved the cycle from the state where the block
+stands in the text. In a program kept symbolically that is exact only in straight code: from the first
+control statement or label on (a subprogram body called with ``L`` repeats, a loop, a jump target) a
+block runs where the control flow takes it, with the caller's position, and a baked expansion would
+drill one call's holes for every call (issue 26: LinuxCNC ``M98 P1 L3`` around ``G91 X1`` + ``G81``
+gave Fanuc the first call's hole three times, 2 mm off). Such a cycle is a located error, which makes
+the keep check (``postproc.api``) flatten the program (each run's cycle expanded where it runs); an
+executed block (flattened) has no control statements and is exact.
 """
 
 from __future__ import annotations
@@ -24,6 +33,8 @@ from postproc.ir import (
     Block, Comments, CompoundMotion, Motion, ProgramControl, Section, SpindleControl, SpindleOrientation, one_line,
 )
 from postproc.context import Context
+from postproc.control import CONTROL, LABEL
+from postproc.source_map import ExecutedBlock
 
 from .resolve import peck_clearance_mm
 from .section import CannedCycle
@@ -60,12 +71,19 @@ def _expand(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Ite
     cycles = ctx.setup.cycles
     can_orient = target.SPINDLE_ORIENTATION
     expanding = False  # from the first expanded block of a cycle to its cancel
+    flowing = False  # a control statement or label has passed: the state is the text's, not each run's
+    repeated: UnsupportedError | None = None  # in a dry run, the first expansion's (a later jump may repeat it)
+    dry = bool(ctx.run_data.get("dry_run"))
     for block in blocks:
         sections = block.sections
         cycle = sections.get("CannedCycle")
         if cycle is None:
             if expanding and cancels(sections):
                 expanding = False
+            if not flowing and (CONTROL in sections or LABEL in sections) and not isinstance(block, ExecutedBlock):
+                flowing = True
+                if repeated is not None:
+                    ctx.diagnostics.error(repeated)
             yield block
             continue
         if not isinstance(cycle, CannedCycle):
@@ -76,6 +94,11 @@ def _expand(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Ite
             sections.pop("CompoundMotion", None)
             yield block
             continue
+        if flowing:
+            ctx.diagnostics.error(_run_dependent(block, ctx))
+            continue
+        if repeated is None and dry:
+            repeated = _run_dependent(block, ctx)
         source = one_line(block.text or _source(block)).strip()
         del sections["CannedCycle"]
         block.changed()
@@ -92,6 +115,14 @@ def _expand(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Ite
                     and not _handle_orientation(block, compound, ctx, cycles.orientation, target, source):
                 continue
         yield block
+
+
+def _run_dependent(block: Block, ctx: Context) -> UnsupportedError:
+    """The error of an expansion in a program kept symbolically whose control flow may run it elsewhere."""
+    source = one_line(block.text or _source(block)).strip()
+    return UnsupportedError(f"the cycle in '{source}' would be written as the moves of one run, but the "
+                            "program's control flow (a subprogram, a loop or a jump) runs it from other "
+                            "positions", ctx.at(block))
 
 
 def _other_clearances(ctx: Context, target: type[Dialect]) -> frozenset[str]:

@@ -51,7 +51,7 @@ _O_WORDS = "O-words (subprograms, loops, conditions) are not supported by the {}
 
 def lex_block(file: str, number: int, text: str, eol: str, dialect: str,
               oword: OwordParser | None = None, calls: Callable[[Block, str], None] | None = None,
-              ignore_slash: Callable[[Location], None] | None = None) -> Block:
+              ignore_slash: Callable[[Location], None] | None = None, polar: bool = False) -> Block:
     """Lex one line into a block: words as written (letter case kept), comments, block delete, and
     with ``oword`` (the file's ``OwordParser``) o-words, assignments and expression values.
 
@@ -59,6 +59,9 @@ def lex_block(file: str, number: int, text: str, eol: str, dialect: str,
     the block's call or return words (``code``: the line with its comments blanked out, for columns).
     With ``ignore_slash`` (grbl, which has no block delete), every ``/`` outside comments is dropped,
     wherever it stands, and the block runs; ``ignore_slash`` is told where the first one was.
+    With ``polar`` (LinuxCNC), ``@`` (polar radius) and ``^`` (polar angle) are addresses too, read as
+    rs274's ``read_atsign``/``read_carat`` read them (a real value); the dialect's pipeline gives them
+    their meaning.
     """
     block = Block(number, text, eol)
     code = text
@@ -78,13 +81,13 @@ def lex_block(file: str, number: int, text: str, eol: str, dialect: str,
             if letter in "Oo":
                 if oword is None:
                     raise ParseError(_O_WORDS.format(dialect), Location(file, number, code.upper().find("O") + 1))
-                words = _slow_words(file, number, code, dialect, block, oword)
+                words = _slow_words(file, number, code, dialect, block, oword, polar)
                 break
     else:
         if code.strip() == "%":
             block.add(TapeMark())
             return block
-        words = _slow_words(file, number, code, dialect, block, oword)
+        words = _slow_words(file, number, code, dialect, block, oword, polar)
     block.words = words
     if words:
         letter, num = words[0]
@@ -142,7 +145,7 @@ def _next_special(code: str, pos: int) -> int:
 
 
 def _slow_words(file: str, line: int, code: str, dialect: str, block: Block,
-                oword: OwordParser | None) -> list[tuple[str, str]]:
+                oword: OwordParser | None, polar: bool = False) -> list[tuple[str, str]]:
     """Scan a line the fast regex refused: numbers with blanks inside, o-words, assignments and
     expression values (with ``oword``), or an error to explain."""
     words: list[tuple[str, str]] = []
@@ -163,7 +166,7 @@ def _slow_words(file: str, line: int, code: str, dialect: str, block: Block,
                                      Location(file, line, pos + 1))
                 block.add(oword.parse(code, pos, line))
                 return words
-            if ch.isalpha():
+            if ch.isalpha() or (polar and (ch == "@" or ch == "^")):
                 m = _SPACED_NUMBER.match(code, pos + 1)
                 j = pos + 1
                 while j < n and code[j] in " \t":
@@ -252,6 +255,8 @@ class NgcReader(Reader):
     is ignored wherever it stands and the block runs, with a warning."""
     PARAMETRIC = False
     """The dialect reads o-words, parameters and expressions (LinuxCNC); else they are errors (grbl)."""
+    POLAR = False
+    """The dialect reads ``@`` and ``^`` words (LinuxCNC's polar coordinates); else they are errors."""
 
     def read_call(self, block: Block, code: str) -> None:
         """Turn a lexed block's subprogram call or return words into its control section (a parametric
@@ -264,9 +269,10 @@ class NgcReader(Reader):
         oword = OwordParser() if self.PARAMETRIC else None
         calls = self.read_call if self.PARAMETRIC else None
         ignore_slash = None if self.BLOCK_DELETE else self._ignored_slash
+        polar = self.POLAR
         for number, text, eol in split_lines(lines):
             try:
-                yield lex_block(file, number, text, eol, dialect, oword, calls, ignore_slash)
+                yield lex_block(file, number, text, eol, dialect, oword, calls, ignore_slash, polar)
             except PostprocError as err:
                 report(err, text)
                 yield Block(number, text, eol)

@@ -57,6 +57,8 @@ class Grbl(Dialect):
     """R level, Q peck/shift, P dwell (seconds), L repeats."""
     NATIVE_CYCLES = frozenset()
     """No canned cycles: every cycle is expanded to G0/G1/G4/M3/M4/M5."""
+    INVERSE_TIME_FEED = True
+    """G93: a move in 1/F minutes [K: grbl wiki, "Commands": G93, G94 feed rate modes; its code table reads G93]."""
     SPINDLE_ORIENTATION = False
     """No M19: cycles that need an oriented stop follow the set-up's ``Cycles orientation``."""
     TOOL_CHANGER = False

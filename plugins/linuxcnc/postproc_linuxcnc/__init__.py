@@ -84,6 +84,8 @@ class Linuxcnc(Dialect):
     """How the native cycles move: start below R rises to R first, G98 returns to the old Z only when
     it is above R, G91 R is measured from the Z at the block's start, G74/G84/G89 feed out to the
     clear level, G73/G83 clearances are fixed (0.254 mm / 0.010 in)."""
+    INVERSE_TIME_FEED = True
+    """G93: a move in 1/F minutes [V: LinuxCNC G-code manual, interp_convert.cc]."""
     DWELL_UNIT = "seconds"
     """G4 P and a cycle's P are seconds."""
     START_RETURN_LEVEL = "r"
@@ -99,9 +101,10 @@ class Linuxcnc(Dialect):
         from postproc.cycles.resolve import CannedCycleResolveSyntax
         from postproc.syntaxes.modal_state import ModalStateSyntax
         from .block_syntax import NgcBlockSyntax
+        from .polar import PolarSyntax
         from .program import LinuxcncProgramSyntax
-        return Pipeline(cls.NAME, [LinuxcncProgramSyntax(), NgcBlockSyntax(), CannedCycleResolveSyntax("rs274"),
-                                   ModalStateSyntax()])
+        return Pipeline(cls.NAME, [LinuxcncProgramSyntax(), PolarSyntax(), NgcBlockSyntax(),
+                                   CannedCycleResolveSyntax("rs274"), ModalStateSyntax()])
 
     @classmethod
     def context(cls, file: str, setup: MachineSetup, diagnostics: Diagnostics) -> Context:
@@ -125,3 +128,6 @@ def postproc_register_lowerings(register: Callable[[Lowering], None]) -> None:
 def postproc_register_xml(factory: XFactory) -> None:
     factory.register_lazy("NgcBlockSyntax", f"{__name__}.block_syntax:NgcBlockSyntax")
     factory.register_lazy("LinuxcncProgramSyntax", f"{__name__}.program:LinuxcncProgramSyntax")
+    factory.register_lazy("PolarSyntax", f"{__name__}.polar:PolarSyntax")
+    factory.register_lazy("DynamicCutterCompensation",
+                          "postproc.compensation.dynamic:DynamicCutterCompensation")

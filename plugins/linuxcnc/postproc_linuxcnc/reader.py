@@ -15,6 +15,8 @@ from .calls import read_call
 class LinuxcncReader(NgcReader):
     DIALECT = "linuxcnc"
     PARAMETRIC = True
+    POLAR = True
+    """``@`` radius and ``^`` angle [V: LinuxCNC src/emc/rs274ngc/interp_read.cc read_atsign, read_carat]."""
 
     def read(self, lines: Iterable[str]) -> Iterator[Block]:
         """A ``%`` is the program's first line or closes a program opened with one: rs274 refuses any

@@ -1,0 +1,223 @@
+"""PolarSyntax: LinuxCNC's polar coordinates (``@`` radius, ``^`` angle in degrees) read into X and Y.
+
+rs274 turns them into the XY end point of the block before it moves, about the origin of the active
+coordinate system, so after this step a polar block is an ordinary block (its text kept: LinuxCNC gets
+it back as written, another target its X and Y). The rules, from LinuxCNC's interpreter [V: LinuxCNC
+src/emc/rs274ngc/interp_find.cc find_ends, interp_cycles.cc convert_cycle_xy and the CYCLE_MACRO of
+interp_internal.hh, interp_internal.cc enhance_block; and rs274 2.9 run here]:
+
+* Only in G17, never with an X or Y word in the block, never with G53; never with G92 ("Polar
+  coordinates can only be used for motion"), nor with G10, G28, G30 or G52 (refused here: axis words
+  mean other things there).
+* G90: ``@`` and ``^`` are the end point's radius and angle; one alone keeps the other of the point
+  where the tool is (``@`` alone at the origin is an error: no angle).
+* G91: ``@`` is added to the radius of the point where the tool is, ``^`` to its angle (the radius
+  first); at the origin either is an error ("indeterminate").
+* A canned cycle in G90 takes a missing radius or angle from where the tool is (no origin check); in
+  G91 each of its ``L`` repeats turns and stretches the last hole about the origin, so a polar G91
+  cycle with ``L`` > 1 becomes ``L`` blocks of one hole each (rs274 moves the same: each next hole
+  block starts at the clear level the last hole left, and R and the bottom stay the first block's as
+  the initial level stays while the cycle is active).
+
+A computed ``@`` or ``^`` (``@[#1]``) is known only when the program runs: a program that has one is
+flattened for another target; kept as it is for LinuxCNC, it is refused here (not read).
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Callable, Final, Iterable, Iterator
+
+from postproc.context import Context
+from postproc.errors import Location, ProgramError
+from postproc.expr import Expr
+from postproc.interp import spell_number
+from postproc.ir import Block
+from postproc.syntax import Syntax
+
+POLAR: Final = ("@", "^")
+"""The polar addresses: radius, angle."""
+_CYCLES: Final = frozenset((73.0, 74.0, 76.0, 81.0, 82.0, 83.0, 84.0, 85.0, 86.0, 87.0, 88.0, 89.0))
+_MOTION: Final = frozenset((0.0, 1.0, 2.0, 3.0, 33.0, 33.1, 38.2, 38.3, 38.4, 38.5, 5.0, 5.1, 5.2))
+"""Group-01 codes but the cycles: a block with one is no cycle block."""
+_NOT_MOTION: Final = {10.0: "G10", 28.0: "G28", 28.1: "G28.1", 30.0: "G30", 30.1: "G30.1", 52.0: "G52",
+                      53.0: "G53", 92.0: "G92", 92.1: "G92.1", 92.2: "G92.2", 92.3: "G92.3"}
+_PLANES: Final = {17.0: "XY", 18.0: "ZX", 19.0: "YZ"}
+EPS: Final = 1e-12
+
+
+class PolarSyntax(Syntax):
+    """Rewrites a block's ``@``/``^`` words into the X and Y that rs274 computes (module docstring)."""
+
+    XNAME = "PolarSyntax"
+    __slots__ = ()
+
+    def build(self, block: Block, ctx: Context) -> None:
+        """Unused: the step streams (``process``), as a G91 cycle with L repeats becomes several blocks."""
+
+    def process(self, blocks: Iterable[Block], ctx: Context) -> Iterator[Block]:
+        for block in blocks:
+            text = block.text
+            if text is not None and "@" not in text and "^" not in text:
+                yield block  # the common block (cheap: two scans in C)
+                continue
+            if not any(letter == "@" or letter == "^" for letter, _ in block.words):
+                yield block
+                continue
+            try:
+                extra = list(self._rewrite(block, ctx))
+            except ProgramError as err:
+                ctx.diagnostics.error(err, block.text)
+                yield Block(block.line, block.text, block.eol)  # kept as text, as every refused line
+                continue
+            yield block
+            yield from extra
+
+    def _rewrite(self, block: Block, ctx: Context) -> Iterator[Block]:
+        """Give ``block`` X and Y for its polar words; yield the blocks of the further holes of a G91
+        cycle with L repeats."""
+        words = block.words
+        state = ctx.state
+        column = _columns(block, ctx)
+        for letter in POLAR:
+            if isinstance(block.values.get(letter), Expr):
+                raise ProgramError(f"a computed polar coordinate ({letter}) is known only when the program runs "
+                                   "(it is read where the program is run, not kept as it is)", column(letter))
+        polar: dict[str, float] = {}
+        codes: list[float] = []
+        repeat = 1
+        for letter, num in words:
+            up = letter.upper()
+            if up in POLAR:
+                if up in polar:
+                    raise ProgramError(f"address {up} appears twice in one block", column(up, 2))
+                polar[up] = float(num)
+            elif up == "X" or up == "Y":
+                raise ProgramError(f"cannot use both polar coordinates and an {up} word (rs274)", column(up))
+            elif up == "G":
+                codes.append(round(float(num), 1))
+            elif up == "L":
+                repeat = int(float(num))
+        first = next(letter for letter, _ in words if letter in POLAR)
+        for code in codes:
+            if code in _NOT_MOTION:
+                name = _NOT_MOTION[code]
+                raise ProgramError(f"polar coordinates cannot be used with {name} (rs274: only for motion)",
+                                   column(first))
+        if state.plane != "XY":
+            raise ProgramError("polar coordinates are used only in the G17 (XY) plane (rs274)", column(first))
+        distance = state.distance
+        for code in codes:
+            if code == 90.0:
+                distance = "absolute"
+            elif code == 91.0:
+                distance = "incremental"
+        known_x, known_y = state.position.get("X"), state.position.get("Y")
+        if known_x is None or known_y is None:
+            if distance == "incremental" or len(polar) < 2:
+                raise ProgramError("the tool's X and Y are unknown before a polar coordinate that keeps or "
+                                   "adds to where it is (program X and Y first)", column(first))
+            known_x = known_y = 0.0  # both given absolutely: where the tool is plays no part
+        x, y = known_x, known_y
+        cycle = any(code in _CYCLES for code in codes) or (
+            state.cycle is not None and not any(code in _MOTION or code == 80.0 for code in codes))
+        radius, angle = polar.get("@"), polar.get("^")
+        holes: list[tuple[float, float]]
+        if distance == "absolute":
+            holes = [_absolute(x, y, radius, angle, cycle, column(first))]
+        elif not cycle:
+            holes = [_turned(x, y, radius, angle, column(first))]
+        else:
+            holes = []
+            a, b = x, y
+            for _ in range(max(repeat, 0)):
+                a, b = _turned(a, b, radius, angle, column(first))
+                holes.append((a, b))
+        if not holes:  # L0: no hole, no move
+            holes = [(x, y)]
+        incremental = distance == "incremental"
+        hx, hy = holes[0]
+        block.words = _replaced(words, _clean(hx - x) if incremental else _clean(hx),
+                                _clean(hy - y) if incremental else _clean(hy), drop_repeat=len(holes) > 1)
+        for letter in POLAR:
+            block.values.pop(letter, None)
+        block.canonical = False
+        if len(holes) == 1:
+            return
+        block.changed()  # one block of the source becomes several: written from its words everywhere
+        for (ax, ay), (bx, by) in zip(holes, holes[1:]):
+            yield Block(block.line, None, block.eol, [("X", spell_number(_clean(bx - ax))),
+                                                      ("Y", spell_number(_clean(by - ay)))])
+
+
+def _absolute(x: float, y: float, radius: float | None, angle: float | None, cycle: bool,
+              where: Location) -> tuple[float, float]:
+    """The G90 end point (find_ends; convert_cycle_xy takes the missing one from the tool unchecked)."""
+    if radius is None:
+        radius = math.hypot(x, y)
+    elif angle is None and not cycle and abs(x) < EPS and abs(y) < EPS:
+        raise ProgramError("polar coordinate @ alone at the origin needs an angle ^ (rs274)", where)
+    theta = math.radians(angle) if angle is not None else math.atan2(y, x)
+    return radius * math.cos(theta), radius * math.sin(theta)
+
+
+def _turned(x: float, y: float, radius: float | None, angle: float | None, where: Location) -> tuple[float, float]:
+    """The G91 end point: the radius stretched, then the angle turned, about the origin."""
+    if abs(x) < EPS and abs(y) < EPS:
+        raise ProgramError("incremental polar coordinates are indeterminate at the origin (rs274)", where)
+    if radius is not None:
+        theta, r = math.atan2(y, x), math.hypot(x, y) + radius
+        x, y = r * math.cos(theta), r * math.sin(theta)
+    if angle is not None:
+        theta, r = math.atan2(y, x) + math.radians(angle), math.hypot(x, y)
+        x, y = r * math.cos(theta), r * math.sin(theta)
+    return x, y
+
+
+def _replaced(words: list[tuple[str, str]], x: float, y: float, drop_repeat: bool) -> list[tuple[str, str]]:
+    """The words with the polar pair replaced by X and Y where the first of them stood."""
+    out: list[tuple[str, str]] = []
+    placed = False
+    for letter, num in words:
+        if letter in POLAR:
+            if not placed:
+                out.append(("X", spell_number(x)))
+                out.append(("Y", spell_number(y)))
+                placed = True
+        elif not (drop_repeat and letter.upper() == "L"):
+            out.append((letter, num))
+    return out
+
+
+def _clean(value: float) -> float:
+    """A coordinate within float noise of a round value is that value (cos 90 deg is 6e-17, not 0)."""
+    rounded = round(value, 9)
+    return rounded + 0.0 if abs(value - rounded) < 1e-12 else value
+
+
+def _columns(block: Block, ctx: Context) -> Callable[..., Location]:
+    """``column(letter, nth=1)``: where a word of ``block`` is, for errors (worked out only then)."""
+    def column(letter: str, nth: int = 1) -> Location:
+        if letter in POLAR:
+            code = _code(block.text or "")
+            at = -1
+            for _ in range(nth):
+                at = code.find(letter, at + 1)
+            return ctx.at(block, at + 1 if at >= 0 else 1)
+        return ctx.at(block, ctx.column_of(block, letter, nth=nth))
+    return column
+
+
+def _code(text: str) -> str:
+    """``text`` with its comments blanked (columns kept): a ``@`` in a comment is no word."""
+    out: list[str] = []
+    inside = False
+    for n, ch in enumerate(text):
+        if ch == ";" and not inside:
+            return "".join(out) + " " * (len(text) - n)
+        if ch == "(":
+            inside = True
+        out.append(" " if inside else ch)
+        if ch == ")":
+            inside = False
+    return "".join(out)

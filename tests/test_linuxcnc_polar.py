@@ -1,0 +1,130 @@
+"""LinuxCNC polar coordinates (``@`` radius, ``^`` angle; issue 26, corpus ``hole_circle_polar``): read,
+simulated and translated as rs274 runs them. Each program's moves are rs274's own (the oracle); where
+rs274 is absent the hand-derived holes of the bolt circle still hold. Translations are simulated in
+their target dialect and compared with the source's moves, and for LinuxCNC run through rs274 again."""
+
+from __future__ import annotations
+
+import io
+import math
+from typing import Any
+
+import pytest
+
+from postproc.api import translate
+from postproc.errors import ErrorList
+from postproc.toolpath import toolpath_events
+from tests.support.rs274 import RS274Error, available, canonical_moves, run_rs274
+
+TOLERANCE_MM = 2e-4
+INCH_TOLERANCE_MM = 0.0018
+"""rs274 prints inch coordinates to 4 places: half the last digit on two axes, in mm."""
+needs_rs274 = pytest.mark.skipif(not available(), reason="the LinuxCNC interpreter rs274 is not installed")
+
+
+def _ours(text: str, dialect: str = "linuxcnc") -> list[dict[str, Any]]:
+    return [e for e in toolpath_events(io.StringIO(text, newline=""), file="t.ngc", dialect=dialect) if "move" in e]
+
+
+def _theirs(text: str) -> list[dict[str, Any]]:
+    return [e for e in canonical_moves(run_rs274(text), start=(0.0, 0.0, 0.0)) if "move" in e]
+
+
+def _same(ours: list[dict[str, Any]], theirs: list[dict[str, Any]], tolerance: float = TOLERANCE_MM) -> None:
+    assert len(ours) == len(theirs), f"{len(ours)} moves here, {len(theirs)} there"
+    for n, (a, b) in enumerate(zip(ours, theirs)):
+        assert a["move"] == b["move"], (n, a, b)
+        assert math.dist((a["x"], a["y"], a["z"]), (b["x"], b["y"], b["z"])) <= tolerance, (n, a, b)
+
+
+PROGRAMS = {
+    "G90 both": "G21 G17 G90 G0 Z1\nG0 @10 ^30\nG1 @5 ^-120 F100\nM2\n",
+    "G90 radius alone keeps the angle": "G21 G90 G0 X3 Y4 Z1\nG0 @10\nM2\n",
+    "G90 angle alone keeps the radius": "G21 G90 G0 X3 Y4 Z1\nG0 ^90\nG1 ^200 Z-1 F50\nM2\n",
+    "G91 radius then angle": "G21 G90 G0 X10 Y0 Z1\nG91 G0 @5\nG0 ^45\nG1 @-2 ^45 Z-1 F80\nM2\n",
+    "G91 in the block": "G21 G90 G0 X0 Y10 Z1\nG91 G0 ^-30 Z1\nG90 G0 @7 ^10\nM2\n",
+    "inch": "G20 G90 G0 X1 Y1 Z0.1\nG0 @1.5 ^0\nG91 G0 ^60\nM2\n",
+    "arc to a polar end point": "G21 G90 G0 X10 Y0 Z1\nG3 @10 ^90 R10 F100\nM2\n",
+    "blanks and lower case": "g21 g90 g0 x10 y0 z1\ng0 @ 5 ^ 4 5\nm2\n",
+    "G90 cycle with L repeats in place": "G21 G90 G0 X0 Y0 Z5\nG99 G81 @20 ^30 R2 Z-3 L2 F100\nG80\nM2\n",
+    "G90 cycle angle alone": "G21 G90 G0 X10 Y0 Z5\nG98 G81 ^90 R2 Z-3 F100\n^180\n@5\nG80\nM2\n",
+    "G91 cycle with L turns about the origin": (
+        "G21 G90 G0 X20 Y0 Z5\nG91 G98 G81 R-3 Z-5 ^72 L5 F100\nG90 G80\nM2\n"),
+    "G91 cycle radius and angle with L": (
+        "G21 G90 G0 X10 Y0 Z5\nG91 G99 G82 R-3 Z-5 @2 ^30 L3 P0.5 F100\nG90 G80\nM2\n"),
+    "G91 peck cycle with L, then a next hole": (
+        "G21 G90 G0 X0 Y15 Z5\nG91 G99 G83 R-3 Z-9 Q2 ^-45 L2 F100\n^-45\nG90 G80\nM2\n"),
+    "the corpus bolt circle": (
+        "G20 G17 G90\nG0 X1.5 Y0 Z0\nG91 G81 R.1 Z-.5 ^60 L6 F10\nM2\n"),
+}
+
+
+@needs_rs274
+@pytest.mark.parametrize("name", PROGRAMS)
+def test_polar_coordinates_move_as_rs274_runs_them(name: str) -> None:
+    text = PROGRAMS[name]
+    _same(_ours(text), _theirs(text), INCH_TOLERANCE_MM if "G20" in text else TOLERANCE_MM)
+
+
+def test_the_bolt_circle_drills_six_holes_60_degrees_apart() -> None:
+    """Hand-derived: radius 1.5 in (38.1 mm), from angle 0 each repeat turns 60 degrees, bottom 0.5 in
+    below R (0.1 in above the start, Z0): six holes at 60, 120, ..., 360 degrees, Z -0.4 in."""
+    moves = _ours(PROGRAMS["the corpus bolt circle"])
+    holes = [(m["x"], m["y"], m["z"]) for m in moves if m["move"] == "feed"]
+    expected = [(38.1 * math.cos(math.radians(60 * k)), 38.1 * math.sin(math.radians(60 * k)), -0.4 * 25.4)
+                for k in range(1, 7)]
+    assert len(holes) == 6
+    for got, want in zip(holes, expected):
+        assert math.dist(got, want) < 1e-4, (got, want)
+
+
+TARGETS = ["fanuc", "grbl", "isg", "fagor", "mach3", "linuxcnc"]
+
+
+@pytest.mark.parametrize("target", TARGETS)
+@pytest.mark.parametrize("name", ["G91 cycle with L turns about the origin", "G91 radius then angle",
+                                  "the corpus bolt circle", "G90 cycle angle alone"])
+def test_polar_programs_translate_into_the_same_moves(name: str, target: str) -> None:
+    source = PROGRAMS[name]
+    out = io.StringIO(newline="")
+    translate(io.StringIO(source, newline=""), out, file="t.ngc", source="linuxcnc", target=target)
+    text = out.getvalue()
+    if target != "linuxcnc":
+        assert "@" not in text.split("(")[0] and "^" not in text
+    _same(_ours(text, target), _ours(source))
+    if target == "linuxcnc" and available():
+        _same(_theirs(text), _theirs(source), INCH_TOLERANCE_MM)
+
+
+def test_a_polar_block_goes_back_to_linuxcnc_as_written() -> None:
+    source = "G21 G90 G0 X10 Y0 Z1\nG0 @5 ^45 (polar)\nG91 G1 ^10 F100\nM2\n"
+    out = io.StringIO(newline="")
+    translate(io.StringIO(source, newline=""), out, file="t.ngc", source="linuxcnc", target="linuxcnc")
+    assert out.getvalue() == source
+
+
+REFUSED = {
+    "X with a polar word": ("G21 G90 G0 X1 Y1\nG0 @5 X2\nM2\n", "t.ngc:2:7: error: cannot use both polar"),
+    "outside G17": ("G21 G18 G90 G0 X1 Y1 Z1\nG0 @5 ^10\nM2\n", "t.ngc:2:4: error: polar coordinates are used only"),
+    "G91 at the origin": ("G21 G90 G0 X0 Y0\nG91 G0 ^10\nM2\n", "t.ngc:2:8: error: incremental polar"),
+    "radius alone at the origin": ("G21 G90 G0 X0 Y0\nG0 @10\nM2\n", "t.ngc:2:4: error: polar coordinate @ alone"),
+    "with G53": ("G21 G90 G0 X1 Y1\nG53 G0 @10 ^5\nM2\n", "t.ngc:2:8: error: polar coordinates cannot be used with G53"),
+    "with G92": ("G21 G90 G0 X1 Y1\nG92 @10 ^5\nM2\n", "t.ngc:2:5: error: polar coordinates cannot be used with G92"),
+}
+
+
+@pytest.mark.parametrize("name", REFUSED)
+def test_what_rs274_refuses_is_a_located_error(name: str) -> None:
+    source, message = REFUSED[name]
+    with pytest.raises(ErrorList) as info:
+        list(toolpath_events(io.StringIO(source, newline=""), file="t.ngc", dialect="linuxcnc"))
+    assert str(info.value.errors[0]).startswith(message), str(info.value.errors[0])
+    if available():
+        with pytest.raises(RS274Error):
+            run_rs274(source)
+
+
+def test_a_polar_word_stays_an_error_for_grbl() -> None:
+    with pytest.raises(ErrorList) as info:
+        list(toolpath_events(io.StringIO("G21 G0 @5 ^10\n", newline=""), file="t.nc", dialect="grbl"))
+    assert "t.nc:1:8: error: unexpected" in str(info.value.errors[0])
