@@ -2,12 +2,15 @@
 
 from __future__ import annotations
 
-from typing import ClassVar, Mapping
+from typing import Any, ClassVar, Mapping
 
+from postproc.context import Context
+from postproc.ir import Block
 from postproc.rs274.codes import CodeTable
 from postproc.rs274.ngc_block_syntax import NgcWordBlockSyntax
 
 from .codes import CODES, M_GROUPS
+from .rigid_tap import MODE as RIGID_TAP, read_rigid_tap
 
 
 class NgcBlockSyntax(NgcWordBlockSyntax):
@@ -26,3 +29,10 @@ class NgcBlockSyntax(NgcWordBlockSyntax):
     """G10 L2 P0-P9 sets a work system's offset (P0 the active one); other G10 forms are kept verbatim."""
     DATA_INCREMENTAL: ClassVar[bool] = False
     DATA_P0_ACTIVE: ClassVar[bool] = True
+
+    def g_sections(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],
+                   used: set[str], cycle_block: bool) -> None:
+        super().g_sections(block, ctx, codes, values, used, cycle_block)
+        motion = block.sections.get("Motion")
+        if motion is not None and motion.mode == RIGID_TAP:  # type: ignore[attr-defined]
+            read_rigid_tap(block, ctx, motion, values, used)  # type: ignore[arg-type]

@@ -1,0 +1,70 @@
+"""Rigid tapping mode of the Fanuc family: which tap cycles are spindle-synchronised, and their pitch.
+
+A machine code declared ``action="rigid-tap"`` (Fanuc ``M29 S..``) puts the control in rigid tapping mode
+[K: Fanuc 0i-MF operator's manual, "Rigid tapping": M29 S.. before G84/G74]; the tap cycles (G84, G74) that
+follow then cut in step with the spindle, and the cycle resolution gives them a ``pitch``
+(``CannedCycle.pitch``), which ``TappingSyntax`` expands into ``RigidTap`` moves. The mode ends with the
+cycle cancel or a group-01 motion code [K: same manual, "Rigid tapping mode is cancelled by G80, a G code of
+group 01, or reset"]; a hole cycle other than a tap while it is on is refused [?: Fanuc raises an alarm].
+
+The pitch is F in feed per revolution, and F/S in feed per minute, S the spindle speed in force (the one
+``M29 S..`` gives) [V: Fanuc Series 0i connection manual (function) B-63833EN-1/02, 9.x "Rigid tapping",
+page 540: "In feed per minute mode, F/S determines the thread lead"; in feed per rotation F is the lead].
+"""
+
+from __future__ import annotations
+
+from typing import Any, Callable, Final
+
+from postproc.errors import ProgramError
+from postproc.ir import MachineFunction
+from postproc.machine_functions import RIGID_TAP
+from postproc.state import ModalState
+
+RIGID_KEY: Final = "RigidTapMode"
+"""``ctx.state.extra`` key: present while rigid tapping mode is on (its value: the code, e.g. 'M29')."""
+_GROUP_01: Final = frozenset(("rapid", "linear", "cw", "ccw"))
+
+
+def rigid_code(sections: dict[str, Any]) -> str | None:
+    """The rigid-tapping code of a block (``M29``), or None."""
+    code = sections.get("MachineFunction")
+    if isinstance(code, MachineFunction) and code.action == RIGID_TAP:
+        return code.code
+    return None
+
+
+def note_rigid_mode(sections: dict[str, Any], state: ModalState) -> None:
+    """Outside a cycle: the block's rigid-tapping code puts the mode on, a cancel or group-01 motion ends it."""
+    code = rigid_code(sections)
+    if code is not None:
+        state.extra[RIGID_KEY] = code
+    elif "CycleCancel" in sections or getattr(sections.get("Motion"), "mode", None) in _GROUP_01:
+        state.extra.pop(RIGID_KEY, None)
+
+
+def end_rigid_mode(state: ModalState) -> None:
+    """The cycle is cancelled: so is rigid tapping mode."""
+    state.extra.pop(RIGID_KEY, None)
+
+
+def rigid_pitch(sections: dict[str, Any], state: ModalState, kind: str, code: str, feed: float | None,
+                rpm: float | None, fail: Callable[..., ProgramError]) -> float | None:
+    """The pitch of this block's tap when rigid tapping mode is on (or set in the block), else None."""
+    mode = rigid_code(sections) or state.extra.get(RIGID_KEY)
+    if mode is None:
+        return None
+    state.extra[RIGID_KEY] = mode
+    if kind not in ("tap", "tap_left"):
+        raise fail(f"{code} while rigid tapping mode ({mode}) is on: only a tap cycle may follow it (cancel "
+                   "the mode with the cycle cancel first)")
+    if feed is None or feed <= 0.0:
+        raise fail(f"a rigid tap ({mode} then {code}) needs its feed F (the pitch, or the pitch times S)", "F")
+    if state.feed_mode == "per_rev":
+        return feed
+    if state.feed_mode != "per_min":
+        raise fail(f"a rigid tap ({mode} then {code}) in inverse time feed has no pitch")
+    if rpm is None or rpm <= 0.0:
+        raise fail(f"a rigid tap ({mode} then {code}) in feed per minute needs the spindle speed ({mode} S..): "
+                   "its pitch is F/S")
+    return feed / rpm
