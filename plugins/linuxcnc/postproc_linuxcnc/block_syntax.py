@@ -5,12 +5,16 @@ from __future__ import annotations
 from typing import Any, ClassVar, Mapping
 
 from postproc.context import Context
-from postproc.ir import Block
-from postproc.rs274.codes import CodeTable
+from postproc.errors import ProgramError
+from postproc.expr import Expr
+from postproc.ir import Block, NativeCode, PathControl
+from postproc.rs274.codes import CodeTable, g_key
 from postproc.rs274.ngc_block_syntax import NgcWordBlockSyntax
 
+from . import arc_centres
 from .codes import CODES, M_GROUPS
 from .rigid_tap import MODE as RIGID_TAP, read_rigid_tap
+from .tool_entry import L as TOOL_ENTRY, read_tool_entry
 
 
 class NgcBlockSyntax(NgcWordBlockSyntax):
@@ -25,14 +29,59 @@ class NgcBlockSyntax(NgcWordBlockSyntax):
     FEED_MODE_RESETS_FEED: ClassVar[bool] = True
     CYCLE_CANCEL_WITH_MOTION: ClassVar[bool] = True
     M_GROUPS: ClassVar[dict[int, str]] = M_GROUPS
-    DATA_TABLES: ClassVar[Mapping[int, tuple[str, int, int]]] = {2: ("work_offset", 0, 9)}
-    """G10 L2 P0-P9 sets a work system's offset (P0 the active one); other G10 forms are kept verbatim."""
+    DATA_TABLES: ClassVar[Mapping[int, tuple[str, int, int]]] = {2: ("work_offset", 0, 9), 1: ("tool_entry", 1, 2**31 - 1)}
+    """G10 L2 P0-P9 sets a work system's offset (P0 the active one), G10 L1 a tool table entry
+    (``tool_entry``); other G10 forms are kept verbatim."""
     DATA_INCREMENTAL: ClassVar[bool] = False
     DATA_P0_ACTIVE: ClassVar[bool] = True
 
     def g_sections(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],
                    used: set[str], cycle_block: bool) -> None:
         super().g_sections(block, ctx, codes, values, used, cycle_block)
+        arc_centres.apply_mode(block, ctx, codes)
+        path = block.sections.get("PathControl")
+        if path is not None and path.mode == "cutting" and ("P" in values or "Q" in values):  # type: ignore[attr-defined]
+            _blending_tolerance(block, ctx, path, values, used)  # type: ignore[arg-type]
         motion = block.sections.get("Motion")
         if motion is not None and motion.mode == RIGID_TAP:  # type: ignore[attr-defined]
             read_rigid_tap(block, ctx, motion, values, used)  # type: ignore[arg-type]
+
+    def _g_code(self, ctx: Context, block: Block, num: str, codes: dict[str, Any], natives: list[str],
+                key: str | None = None) -> None:
+        """G90.1/G91.1 (``arc_centres``) go to their own group; every other code as the family reads it."""
+        if key is None:
+            key = g_key(num)
+        if key in arc_centres.MODES:
+            arc_centres.read_mode(block, ctx, num, key, codes)
+            return
+        super()._g_code(ctx, block, num, codes, natives, key)
+
+    def _data_setting(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],
+                      used: set[str]) -> bool:
+        """G10 L1 (``tool_entry``) here; every other G10 as the family reads it."""
+        if values.get("L") == TOOL_ENTRY:
+            number = next(n for letter, n in block.words if letter.upper() == "G" and g_key(n) == "10")
+            if read_tool_entry(block, ctx, number, values):
+                used.update(values)
+                return True
+            block.add(NativeCode(self.DIALECT, f"G{number} ({self.CODES.native_g['10']})", block.text or ""))
+            return False
+        return super()._data_setting(block, ctx, codes, values, used)
+
+    @staticmethod
+    def _path_tolerance(codes: dict[str, Any], natives: list[str], raw: dict[str, str]) -> None:
+        """``G64 P Q`` is read into ``PathControl`` (``_blending_tolerance``), not kept verbatim."""
+
+
+def _blending_tolerance(block: Block, ctx: Context, path: PathControl, values: dict[str, Any], used: set[str]) -> None:
+    """``G64 P- Q-``: P the path tolerance, Q the naive-CAM tolerance [V: LinuxCNC ``g-code.adoc`` "G64 Path
+    Blending"; rs274 prints ``SET_MOTION_CONTROL_MODE(CANON_CONTINUOUS, P)`` and ``SET_NAIVECAM_TOLERANCE(Q)``,
+    Q taking P's value when left out]. Either may be given alone; neither moves a controlled point."""
+    for letter in "PQ":
+        if isinstance(values.get(letter), Expr):
+            raise ProgramError(f"a computed {letter} in G64 is not supported (write the number)",
+                               ctx.at(block, ctx.column_of(block, letter)))
+    tolerance, naive = values.get("P"), values.get("Q")
+    path.tolerance = None if tolerance is None else float(tolerance)
+    path.naive = None if naive is None else float(naive)
+    used.update(k for k in "PQ" if k in values)

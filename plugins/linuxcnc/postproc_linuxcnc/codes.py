@@ -89,15 +89,13 @@ NATIVE_G: dict[str, str] = {
     "71.1": "lathe roughing cycle", "71.2": "lathe roughing cycle", "72": "lathe facing cycle",
     "72.1": "lathe facing cycle", "72.2": "lathe facing cycle", "76": "threading cycle",
     "87": "RS274/NGC back boring (I/J shift, K top)", "88": "RS274/NGC manual boring",
-    "91.1": "incremental arc centres (the default)", "92": "coordinate system offset",
+"92": "coordinate system offset",
     "92.1": "reset G92 offsets", "92.2": "reset G92 offsets, keep parameters",
     "92.3": "restore G92 offsets", "96": "constant surface speed", "97": "spindle speed in rpm",
 }
 """LinuxCNC codes kept verbatim: they round-trip to LinuxCNC and are unsupported anywhere else."""
 
-REFUSED_G: dict[str, str] = {
-    "90.1": "absolute arc centres (G90.1) are not supported by the linuxcnc reader yet",
-}
+REFUSED_G: dict[str, str] = {}
 """Codes that would change how later blocks read: refused rather than kept verbatim."""
 
 NATIVE_M: dict[int, str] = {

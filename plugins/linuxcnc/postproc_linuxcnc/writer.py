@@ -159,6 +159,15 @@ class LinuxcncWriter(WordWriter):
                              "\"Zero-radius arc\")", block)
         return WordWriter.motion_words(self, s, block)
 
+    def path_control_words(self, s: Any, block: Block) -> list[str]:
+        """``G64 P.. Q..`` with the blending tolerances the program gave (``block_syntax``)."""
+        words = super().path_control_words(s, block)
+        if s.tolerance is not None:
+            words.append("P" + self.length(s.tolerance, block, "P"))
+        if s.naive is not None:
+            words.append("Q" + self.length(s.naive, block, "Q"))
+        return words
+
     def rigid_tap_words(self, s: Any, block: Block) -> list[str]:
         """``G33.1 Z.. K..`` (``postproc.synchronised_tap``): the end point, K the pitch, I the way out's
         speed factor. Inside an expansion the end point is absolute (G90 first, when incremental). G33.1 has
