@@ -142,8 +142,8 @@ def _leave_out(block: Block, code: MachineFunction) -> None:
 def _refusal(taps: list[RigidTap], target: type[Dialect]) -> str | None:
     """Why ``target`` cannot run these taps exactly, or None."""
     if not target.SYNCHRONISED_TAP:
-        return (f"a rigid (spindle-synchronised) tap: {target.NAME} cannot move in step with the spindle, and a "
-                "tap fed without it breaks: refused, even with --on-unsupported warn")
+        return (f"a rigid (spindle-synchronised) tap: this translation writes no synchronised tap for {target.NAME}, "
+                "and a tap fed without the spindle in step breaks: refused, even with --on-unsupported warn")
     if any(tap.dwell for tap in taps):
         return (f"a rigid tap with a dwell at the bottom (P): {target.NAME}'s synchronised tap reverses at once "
                 "and has no dwell there: refused, even with --on-unsupported warn")

@@ -301,7 +301,7 @@ class CannedCycleResolveSyntax(Syntax):
         spindle = _modal(sections, "SpindleControl", "direction", state.spindle)
         self._check(kind, code, modal, cw, depth, feed, return_level, spindle, call, fail)
         pitch = rigid_pitch(sections, state, kind, code, feed, _modal(sections, "SpindleSpeed", "rpm", state.spindle_rpm),
-                            fail)
+                            _modal(sections, "FeedMode", "mode", state.feed_mode), fail)
 
         incremental = _modal(sections, "DistanceMode", "mode", state.distance) == "incremental"
         initial, r, bottom, top = self._levels(ctx, kind, code, modal, normal, cw.level, depth, incremental, fail)

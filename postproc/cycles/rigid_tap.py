@@ -49,8 +49,9 @@ def end_rigid_mode(state: ModalState) -> None:
 
 
 def rigid_pitch(sections: dict[str, Any], state: ModalState, kind: str, code: str, feed: float | None,
-                rpm: float | None, fail: Callable[..., ProgramError]) -> float | None:
-    """The pitch of this block's tap when rigid tapping mode is on (or set in the block), else None."""
+                rpm: float | None, feed_mode: str, fail: Callable[..., ProgramError]) -> float | None:
+    """The pitch of this block's tap when rigid tapping mode is on (or set in the block), else None; ``feed``,
+    ``rpm`` and ``feed_mode`` are those in force for the block (its own words included)."""
     mode = rigid_code(sections) or state.extra.get(RIGID_KEY)
     if mode is None:
         return None
@@ -60,9 +61,9 @@ def rigid_pitch(sections: dict[str, Any], state: ModalState, kind: str, code: st
                    "the mode with the cycle cancel first)")
     if feed is None or feed <= 0.0:
         raise fail(f"a rigid tap ({mode} then {code}) needs its feed F (the pitch, or the pitch times S)", "F")
-    if state.feed_mode == "per_rev":
+    if feed_mode == "per_rev":
         return feed
-    if state.feed_mode != "per_min":
+    if feed_mode != "per_min":
         raise fail(f"a rigid tap ({mode} then {code}) in inverse time feed has no pitch")
     if rpm is None or rpm <= 0.0:
         raise fail(f"a rigid tap ({mode} then {code}) in feed per minute needs the spindle speed ({mode} S..): "

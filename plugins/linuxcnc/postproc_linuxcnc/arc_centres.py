@@ -52,17 +52,18 @@ def apply_mode(block: Block, ctx: Context, codes: dict[str, Any]) -> None:
     if code is not None:
         if code[2] == "absolute":
             extra[STATE_KEY] = "absolute"
-            comments = block.sections.get("Comments")
-            texts = list(comments.texts) if isinstance(comments, Comments) else []
-            block.sections["Comments"] = Comments([*texts, NOTE.format(code=f"G{code[3]}")])
-            block.changed()
         else:
             extra.pop(STATE_KEY, None)
     if STATE_KEY not in extra:
         return
     motion = block.sections.get("Motion")
     if isinstance(motion, Motion) and motion.mode in ("cw", "ccw") and motion.center is not None:
-        _to_offsets(block, ctx, motion)
+        _to_offsets(block, ctx, motion)  # (first: an error points at the block's text)
+        block.changed()
+    if code is not None:
+        comments = block.sections.get("Comments")
+        texts = list(comments.texts) if isinstance(comments, Comments) else []
+        block.sections["Comments"] = Comments([*texts, NOTE.format(code=f"G{code[3]}")])
         block.changed()
 
 
