@@ -14,8 +14,14 @@ tap's motion, without the holder) break the tap, so a rigid tap is never written
   (``postproc.cycles.rigid_tap``).
 * ``resolve_rigid_taps`` (a generic lowering step): towards a target that writes the synchronised move
   (``Dialect.SYNCHRONISED_TAP``), the rigid-tapping code of another family (Fanuc ``M29``) is left out
-  with a comment (the taps after it carry its meaning); towards a target without it, every rigid tap is
-  a located error in either ``--on-unsupported`` mode.
+  with a comment (the taps after it carry its meaning). Towards a target that taps rigidly with a tap
+  cycle after a code (``Dialect.RIGID_TAP_CODE``: Fanuc's ``M29 S..`` then ``G84``/``G74``), a synchronised
+  tap along the drilling axis becomes that code with the spindle speed in force, one ``G99`` tap cycle at
+  the spot with R at the start level and the bottom at the end point (so the tool returns to the start,
+  as G33.1 does), ``G84`` for a clockwise spindle and ``G74`` for a counter-clockwise one, F the pitch times
+  S (feed per minute) or the pitch (per revolution), then the cycle cancel and the return level, feed and
+  distance mode that were in force. Towards a target with neither, every rigid tap is a located error in
+  either ``--on-unsupported`` mode.
 
 The simulator writes a rigid tap as two moves of their own kind, ``"move": "tap"`` (in, then out), with
 the pitch as ``"f"`` in mm per revolution (``docs/toolpath-format.md``): ``verify`` compares the kind, so
@@ -28,9 +34,12 @@ from typing import TYPE_CHECKING, Any, Iterator
 
 from .context import Context
 from .dialect import Dialect
-from .errors import UnsupportedError
+from .errors import PostprocError, ProgramError, UnsupportedError
 from .expr import Expr
-from .ir import Block, Comments, CompoundMotion, MachineFunction, Section, _axes_from_xml, _axes_to_xml
+from .cycles.section import CannedCycle
+from .ir import (Block, Comments, CompoundMotion, CycleCancel, DistanceMode, Feed, MachineFunction, ReturnLevel,
+                 Section, SpindleSpeed, _axes_from_xml, _axes_to_xml)
+from .state import PLANE_AXES
 from .machine_functions import RIGID_TAP
 from .xmlio import computed_value, lxml_etree
 
@@ -110,6 +119,7 @@ def resolve_rigid_taps(blocks: Iterator[Block], ctx: Context, target: type[Diale
     shows its taps. A refused block is reported and not written, whatever ``--on-unsupported`` says."""
     synchronises = target.SYNCHRONISED_TAP
     family = target.family()
+    cycle_code = target.RIGID_TAP_CODE
     for block in blocks:
         sections = block.sections
         if "MachineFunction" not in sections and "RigidTap" not in sections and "CompoundMotion" not in sections:
@@ -121,6 +131,12 @@ def resolve_rigid_taps(blocks: Iterator[Block], ctx: Context, target: type[Diale
         taps = rigid_taps(block)
         if not taps:
             yield block
+            continue
+        if cycle_code and not synchronises and "RigidTap" in sections:
+            try:
+                yield from as_tap_cycle(block, ctx, target, sections["RigidTap"])  # type: ignore[arg-type]
+            except PostprocError as err:
+                ctx.diagnostics.error(err)
             continue
         why = _refusal(taps, target)
         if why is not None:
@@ -148,3 +164,58 @@ def _refusal(taps: list[RigidTap], target: type[Dialect]) -> str | None:
         return (f"a rigid tap with a dwell at the bottom (P): {target.NAME}'s synchronised tap reverses at once "
                 "and has no dwell there: refused, even with --on-unsupported warn")
     return None
+
+
+def as_tap_cycle(block: Block, ctx: Context, target: type[Dialect], tap: RigidTap) -> Iterator[Block]:
+    """A synchronised tap as the target's rigid tap cycle (the module docstring): three blocks."""
+    state = ctx.state
+    at = ctx.at(block)
+    normal = PLANE_AXES[state.plane][2]
+    if tap.dwell or isinstance(tap.pitch, Expr) or any(isinstance(v, Expr) for v in tap.axes.values()):
+        raise UnsupportedError("a rigid tap with a computed word or a dwell: no tap cycle is written for it", at)
+    incremental = state.distance == "incremental"
+    start = state.position.get(normal)
+    if start is None:
+        raise ProgramError(f"a rigid tap where the tool's {normal} position is unknown: {target.NAME}'s tap cycle "
+                           "needs its start as the R level (program a move to a known point first)", at)
+    for axis, value in tap.axes.items():
+        if axis != normal and (value != 0.0 if incremental else value != state.position.get(axis)):
+            raise UnsupportedError(f"a rigid tap that moves {axis} (an oblique tap): {target.NAME}'s tap cycle "
+                                   f"taps along {normal} only", at)
+    if normal not in tap.axes:
+        raise UnsupportedError(f"a rigid tap that does not move {normal}: {target.NAME}'s tap cycle taps along "
+                               f"{normal} only", at)
+    bottom = float(tap.axes[normal]) + (start if incremental else 0.0)
+    rpm, direction, mode = state.spindle_rpm, state.spindle, state.feed_mode
+    if direction not in ("cw", "ccw") or not rpm:
+        raise ProgramError("a rigid tap with the spindle stopped or at no speed cannot be run", at)
+    if mode not in ("per_min", "per_rev"):
+        raise UnsupportedError(f"a rigid tap in {mode.replace('_', ' ')} feed: no tap cycle feed says its pitch", at)
+    pitch = float(tap.pitch)
+    code = MachineFunction(target.family(), target.RIGID_TAP_CODE, target.RIGID_TAP_CODE, RIGID_TAP,
+                           "rigid tapping")
+    head = Block(block.line, None, block.eol or "\n")
+    head.sections = {"MachineFunction": code, "SpindleSpeed": SpindleSpeed(float(rpm))}
+    yield head
+    del block.sections["RigidTap"]
+    block.changed()
+    sections = block.sections
+    if incremental:
+        sections["DistanceMode"] = DistanceMode("absolute")
+    sections["ReturnLevel"] = ReturnLevel("r")
+    sections["CannedCycle"] = CannedCycle(
+        "tap" if direction == "cw" else "tap_left", call=True, semantics="fanuc", return_level="r",
+        plane=state.plane, r=start, bottom=bottom, spindle=direction, pitch=pitch,
+        words={normal: bottom, ctx.cycle_words.level if ctx.cycle_words is not None else "R": start},
+        feed=pitch * float(rpm) if mode == "per_min" else pitch)
+    sections["Feed"] = Feed(pitch * float(rpm) if mode == "per_min" else pitch)
+    yield block
+    tail = Block(block.line, None, block.eol or "\n")
+    tail.sections = {"CycleCancel": CycleCancel()}
+    if state.return_level != "r":
+        tail.sections["ReturnLevel"] = ReturnLevel(state.return_level)
+    if isinstance(state.feed, (int, float)):
+        tail.sections["Feed"] = Feed(float(state.feed))
+    if incremental:
+        tail.sections["DistanceMode"] = DistanceMode("incremental")
+    yield tail

@@ -203,3 +203,52 @@ def test_a_fanuc_rigid_tap_is_never_fed_to_grbl(mode: str) -> None:
     with pytest.raises(ErrorList) as info:
         to("grbl", text, mode)
     assert sorted(e.location.line for e in info.value.errors if e.location and "tap" in str(e)) == [4, 5, 6]
+
+
+def _linuxcnc_taps(rng: random.Random) -> str:
+    """G33.1 along Z only (what a tap cycle can say), absolute or incremental, either spindle direction."""
+    inch = rng.random() < 0.25
+    lines = ["G20" if inch else "G21", "G90 G17 G94 F50", f"S{rng.randint(100, 900)} M{rng.choice((3, 4))}"]
+    for _ in range(rng.randint(1, 3)):
+        lines.append(f"G0 X{rng.uniform(-50, 50):.4f} Y{rng.uniform(-50, 50):.4f} Z{rng.uniform(1, 10):.4f}")
+        pitch = rng.choice((0.5, 0.7, 1.0, 1.25, 1.5, 2.0))
+        if rng.random() < 0.3:
+            lines += [f"G91 G33.1 Z{-rng.uniform(2, 20):.4f} K{pitch}", "G90"]
+        else:
+            lines.append(f"G33.1 Z{-rng.uniform(1, 20):.4f} K{pitch}")
+    lines += ["G1 X0 Y0", "M2"]
+    return "\n".join(lines) + "\n"
+
+
+@needs_rs274
+@pytest.mark.parametrize("seed", range(PROGRAMS // 2))
+def test_g33_1_reaches_fanuc_as_m29_and_a_tap_cycle(seed: int) -> None:
+    text = _linuxcnc_taps(random.Random(2000 + seed))
+    out = io.StringIO(newline="")
+    translate(_lines(text), out, file="t.ngc", source="linuxcnc", target="fanuc", setup=MachineSetup())
+    nc = out.getvalue()
+    assert nc.count("M29") == text.count("G33.1") and "G33" not in nc, nc
+    same_moves(moves(events(nc, "fanuc")), oracle(text))
+    report = verify_lines(_lines(text), _lines(nc), file_in="t.ngc", file_out="t.nc", source="linuxcnc",
+                          target="fanuc", setup=MachineSetup())
+    assert report.ok and report.max_deviation < 1e-6, report.summary()
+
+
+def test_g33_1_to_fanuc_hand_derived() -> None:
+    text = "G21 G90 G17\nS500 M4\nG0 X1 Y2 Z5 F200\nG91 G33.1 Z-8 K1\nM2\n"
+    out = io.StringIO(newline="")
+    translate(_lines(text), out, file="t.ngc", source="linuxcnc", target="fanuc", setup=MachineSetup())
+    # M4: a left-hand tap (G74); R at the start Z5, the bottom 8 below it; F = 1 x 500; back to G91 and F200
+    assert out.getvalue() == ("G17 G21 G90\nS500 M04\nG00 X1. Y2. Z5. F200.\nS500 M29\nG90 G99 G74 Z-3. R5. F500.\n"
+                              "G91 G80 F200.\nM02\n")
+
+
+@pytest.mark.parametrize("mode", ["error", "warn"])
+def test_an_oblique_g33_1_has_no_tap_cycle(mode: str) -> None:
+    out = io.StringIO(newline="")
+    with pytest.raises(ErrorList) as info:
+        translate(_lines("G21 G90\nS500 M3\nG0 X1 Z5\nG33.1 X2 Z-10 K1.25\nM2\n"), out, file="t.ngc",
+                  source="linuxcnc", target="fanuc", setup=MachineSetup(), on_unsupported=mode,
+                  diagnostics=Diagnostics(ErrorLevel.RAISE, warn_stream=io.StringIO()))
+    assert [str(e) for e in info.value.errors] == [
+        "t.ngc:4:1: error: a rigid tap that moves X (an oblique tap): fanuc's tap cycle taps along Z only"]
