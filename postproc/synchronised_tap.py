@@ -185,13 +185,16 @@ def as_tap_cycle(block: Block, ctx: Context, target: type[Dialect], tap: RigidTa
     if normal not in tap.axes:
         raise UnsupportedError(f"a rigid tap that does not move {normal}: {target.NAME}'s tap cycle taps along "
                                f"{normal} only", at)
-    bottom = float(tap.axes[normal]) + (start if incremental else 0.0)
+    end = tap.axes[normal]
+    assert not isinstance(end, Expr)  # (refused above)
+    bottom = float(end) + (start if incremental else 0.0)
     rpm, direction, mode = state.spindle_rpm, state.spindle, state.feed_mode
     if direction not in ("cw", "ccw") or not rpm:
         raise ProgramError("a rigid tap with the spindle stopped or at no speed cannot be run", at)
     if mode not in ("per_min", "per_rev"):
         raise UnsupportedError(f"a rigid tap in {mode.replace('_', ' ')} feed: no tap cycle feed says its pitch", at)
-    pitch = float(tap.pitch)
+    pitch = tap.pitch
+    assert not isinstance(pitch, Expr)
     code = MachineFunction(target.family(), target.RIGID_TAP_CODE, target.RIGID_TAP_CODE, RIGID_TAP,
                            "rigid tapping")
     head = Block(block.line, None, block.eol or "\n")
