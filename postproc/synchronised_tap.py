@@ -116,7 +116,14 @@ def rigid_taps(block: Block) -> list[RigidTap]:
 
 def resolve_rigid_taps(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
     """Lowering step (the module docstring): after ``expand_canned_cycles``, so an expanded rigid tap cycle
-    shows its taps. A refused block is reported and not written, whatever ``--on-unsupported`` says."""
+    shows its taps. A refused block is reported and not written, whatever ``--on-unsupported`` says. Back to
+    its own dialect with no cycle expanded by force, every tap stays as written: the stream passes through."""
+    if target.NAME == ctx.dialect and not ctx.setup.cycles.expanded():
+        return blocks
+    return _resolve(blocks, ctx, target)
+
+
+def _resolve(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
     synchronises = target.SYNCHRONISED_TAP
     family = target.family()
     cycle_code = target.RIGID_TAP_CODE
