@@ -495,6 +495,9 @@ class Simulator:
     def data_setting(self, block: Block, setting: DataSetting) -> None:
         """G10: a work offset is kept (mm, per axis) and shifts later absolute points in its system; a tool
         register is kept for the offsets that read it; other data is recorded for ``verify``."""
+        if setting.table in TOUCH_OFF:
+            self.touch_off(block, setting)
+            return
         if not setting.table.startswith("work_offset"):
             if not self.tools.write(setting, self.scale):
                 self.unsimulated.append((block.line, "tool offset data", setting.text))
@@ -507,6 +510,25 @@ class Simulator:
             v = value * self.scale if axis in LINEAR_AXES else value
             entry[axis] = entry.get(axis, 0.0) + v if setting.incremental else v
         self._shift()
+
+    def touch_off(self, block: Block, setting: DataSetting) -> None:
+        """A tool entry measured where the tool stands (LinuxCNC ``G10 L10``/``L11``): the length that makes
+        the current point read Z in the active work system (its offset cancels) or in work system 9, with
+        the length in force now; R sets the radius (``postproc_linuxcnc.tool_entry``)."""
+        for letter in setting.values:
+            if isinstance(setting.values[letter], Expr):
+                raise ProgramError(UNEVALUATED, self._at(block, letter))
+        z = setting.values.get("Z")
+        if isinstance(z, (int, float)):
+            if LENGTH_AXIS not in self.pos:
+                raise ProgramError(f"axis {LENGTH_AXIS} is not on this machine", self._at(block, "Z"))
+            machine = self.pos[LENGTH_AXIS] + self.length.offset
+            system = self.shift.get(LENGTH_AXIS, 0.0) if setting.table == TOUCH_OFF[0] \
+                else self.offsets.get(9, {}).get(LENGTH_AXIS, 0.0)
+            self.tools.set("length", setting.index, machine - (z * self.scale + system))
+        r = setting.values.get("R")
+        if isinstance(r, (int, float)):
+            self.tools.set("radius", setting.index, r * self.scale)
 
     def compensation(self, block: Block, emit: Callable[[Event], None]) -> None:
         """A block's cutter compensation and tool length changes (before its motion, as the controller
@@ -827,6 +849,8 @@ class Simulator:
 
 
 _CENTRE_LETTER = {"X": "I", "Y": "J", "Z": "K"}
+TOUCH_OFF = ("tool_entry_at_point", "tool_entry_at_point_9")
+"""Tool tables whose length the tool's position decides: in the active work system, in work system 9."""
 
 UNSIMULATED = {"CutterCompensation": "cutter compensation", "WorkOffset": "work offset",
                "PathControl": "path control", "SpindleSpeed": "spindle speed"}

@@ -4,7 +4,8 @@
   offsets, metric or inch: the simulated moves and centres are rs274's ``ARC_FEED`` ones, and the program
   translated to Fanuc (offsets only) simulates the same;
 * ``G10 L1 P Z R``: a tool table entry written by the program is the one ``G43`` and ``G41`` then use
-  (rs274's ``USE_TOOL_LENGTH_OFFSET`` length, and its compensated path);
+  (rs274's ``USE_TOOL_LENGTH_OFFSET`` length, and its compensated path); ``G10 L10``/``L11``: the length
+  measured where the tool stands, as rs274 works it out;
 * ``G64 P Q``: read, written back for LinuxCNC, and it moves nothing.
 """
 
@@ -152,6 +153,31 @@ def test_a_tool_entry_set_by_the_program_is_used_as_rs274_uses_it(inch: bool) ->
     same(ours, theirs)
     written = float(f"{12.5 * u:.5f}") * (25.4 if inch else 1.0)  # the length as the program writes it, mm
     assert all(abs(e["controlled"]["z"] - e["z"] - written) < 1e-6 for e in moves(events(text, setup=SETUP)))
+
+
+def _machine_z(calls: list[str]) -> list[float]:
+    """rs274's Z of each straight move in machine terms (mm programs): the point + the G5x offset + the tool
+    length offset in force (both as it prints them)."""
+    g5x = tlo = 0.0
+    out = []
+    for call in calls:
+        if m := re.search(r"SET_G5X_OFFSET\(\d+, \S+, \S+, (\S+),", call):
+            g5x = float(m.group(1))
+        elif m := re.search(r"USE_TOOL_LENGTH_OFFSET\(\S+ \S+ (\S+),", call):
+            tlo = float(m.group(1))
+        elif m := re.search(r"STRAIGHT_(?:TRAVERSE|FEED)\(\S+, \S+, (\S+),", call):
+            out.append(float(m.group(1)) + g5x + tlo)
+    return out
+
+
+@needs_rs274
+def test_a_tool_entry_measured_where_the_tool_stands_is_rs274s() -> None:
+    # G10 L10 (the active work system, G54 Z3) and L11 (G59.3 Z-4), with and without a length in force
+    text = ("G21 G90\nG10 L2 P1 Z3\nG10 L2 P9 Z-4\nT3 M6\nG43 H3\nG0 X0 Y0 Z5\nG10 L10 P3 Z7 R1.5\nG43 H3\n"
+            "G0 Z6\nG10 L11 P3 Z2\nG43 H3\nG0 Z8\nG49\nG0 Z9\nG91 G10 L10 P3 Z1\nG90 G43 H3\nG0 Z3\nM2\n")
+    theirs = _machine_z(rs274.run_rs274(text, tool_table=TOOL_TABLE))
+    ours = [e.get("controlled", e)["z"] for e in moves(events(text, setup=SETUP))]
+    assert ours == pytest.approx(theirs, abs=1e-4) and len(ours) == 5
 
 
 def test_g10_l1_round_trips_and_is_refused_where_no_tool_table_is_written() -> None:

@@ -103,6 +103,14 @@ def test_m29_before_a_cycle_that_is_not_a_tap_is_refused() -> None:
         "mode with the cycle cancel first)"]
 
 
+def test_an_axis_move_between_m29_and_its_tap_is_refused() -> None:
+    with pytest.raises(ErrorList) as info:
+        events("G21 G90 G0 X0 Y0 Z10. S200 M3\nM29 S200\nG0 X5.\nG84 Z-4. R2. F300.\nG80\nM30\n", "fanuc")
+    assert [str(e) for e in info.value.errors][:1] == [
+        "t.nc:3:1: error: an axis move between M29 (rigid tapping) and its tap cycle: the control refuses it (Fanuc "
+        "alarm PS0204); position the tool before the rigid tapping code"]
+
+
 @pytest.mark.parametrize("mode", ["error", "warn"])
 def test_a_dwell_at_the_bottom_has_no_g33_1_spelling(mode: str) -> None:
     with pytest.raises(ErrorList) as info:

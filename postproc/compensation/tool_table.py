@@ -57,7 +57,11 @@ class ToolTable:
         for letter, quantity in (("Z", "length"), ("R", "radius")):
             value = setting.values.get(letter)
             if isinstance(value, (int, float)):
-                self.written[(quantity, setting.index)] = value * scale
+                self.set(quantity, setting.index, value * scale)
+
+    def set(self, quantity: str, register: int, value: float) -> None:
+        """Write register ``register``'s ``quantity`` ("length" or "radius"), mm, as the program's own."""
+        self.written[(quantity, register)] = value
 
     def length(self, register: int) -> float:
         """The tool length in register ``register`` (mm), or a ProgramError naming what to add."""

@@ -131,7 +131,10 @@ class CannedCycleResolveSyntax(Syntax):
         sections = block.sections
         if state.cycle is None and "CycleCall" not in sections:
             if "MachineFunction" in sections or RIGID_KEY in state.extra:
-                note_rigid_mode(sections, state)  # a rigid tapping code, or what ends its mode (rare)
+                try:  # a rigid tapping code, or what ends its mode (rare)
+                    note_rigid_mode(sections, state)
+                except ProgramError as err:
+                    raise err.located(ctx.at(block)) from None
             return  # the common block: no cycle anywhere (kept first and cheap, it runs on every block)
         if "MachineFunction" in sections:
             note_rigid_mode(sections, state)

@@ -5,7 +5,10 @@ A machine code declared ``action="rigid-tap"`` (Fanuc ``M29 S..``) puts the cont
 follow then cut in step with the spindle, and the cycle resolution gives them a ``pitch``
 (``CannedCycle.pitch``), which ``TappingSyntax`` expands into ``RigidTap`` moves. The mode ends with the
 cycle cancel or a group-01 motion code [K: same manual, "Rigid tapping mode is cancelled by G80, a G code of
-group 01, or reset"]; a hole cycle other than a tap while it is on is refused [?: Fanuc raises an alarm].
+group 01, or reset"]; a hole cycle other than a tap while it is on is refused [?: Fanuc raises an alarm], and
+so is an axis move between the code and its tap cycle [K: Fanuc 0i alarm PS0204 "illegal axis operation",
+an axis moved between the M29 block and the G84/G74 block]: no program is read as a floating tap that the
+control would have refused or tapped rigidly.
 
 The pitch is F in feed per revolution, and F/S in feed per minute, S the spindle speed in force (the one
 ``M29 S..`` gives) [V: Fanuc Series 0i connection manual (function) B-63833EN-1/02, 9.x "Rigid tapping",
@@ -35,11 +38,19 @@ def rigid_code(sections: dict[str, Any]) -> str | None:
 
 
 def note_rigid_mode(sections: dict[str, Any], state: ModalState) -> None:
-    """Outside a cycle: the block's rigid-tapping code puts the mode on, a cancel or group-01 motion ends it."""
+    """Outside a cycle: the block's rigid-tapping code puts the mode on, a cancel ends it; an axis move before
+    the tap cycle is a ``ProgramError`` (the module docstring), a group-01 code without one ends the mode."""
     code = rigid_code(sections)
+    motion = sections.get("Motion")
     if code is not None:
         state.extra[RIGID_KEY] = code
-    elif "CycleCancel" in sections or getattr(sections.get("Motion"), "mode", None) in _GROUP_01:
+    elif "CycleCancel" in sections:
+        state.extra.pop(RIGID_KEY, None)
+    elif motion is not None and RIGID_KEY in state.extra and state.cycle is None and getattr(motion, "axes", None):
+        raise ProgramError(f"an axis move between {state.extra[RIGID_KEY]} (rigid tapping) and its tap cycle: the "
+                           "control refuses it (Fanuc alarm PS0204); position the tool before the rigid tapping "
+                           "code")
+    elif getattr(motion, "mode", None) in _GROUP_01:
         state.extra.pop(RIGID_KEY, None)
 
 

@@ -14,7 +14,7 @@ from postproc.rs274.ngc_block_syntax import NgcWordBlockSyntax
 from . import arc_centres
 from .codes import CODES, M_GROUPS
 from .rigid_tap import MODE as RIGID_TAP, read_rigid_tap
-from .tool_entry import L as TOOL_ENTRY, read_tool_entry
+from .tool_entry import TABLES as TOOL_TABLES, read_tool_entry
 
 
 class NgcBlockSyntax(NgcWordBlockSyntax):
@@ -29,8 +29,10 @@ class NgcBlockSyntax(NgcWordBlockSyntax):
     FEED_MODE_RESETS_FEED: ClassVar[bool] = True
     CYCLE_CANCEL_WITH_MOTION: ClassVar[bool] = True
     M_GROUPS: ClassVar[dict[int, str]] = M_GROUPS
-    DATA_TABLES: ClassVar[Mapping[int, tuple[str, int, int]]] = {2: ("work_offset", 0, 9), 1: ("tool_entry", 1, 2**31 - 1)}
-    """G10 L2 P0-P9 sets a work system's offset (P0 the active one), G10 L1 a tool table entry
+    DATA_TABLES: ClassVar[Mapping[int, tuple[str, int, int]]] = {
+        2: ("work_offset", 0, 9), 1: ("tool_entry", 1, 2**31 - 1), 10: ("tool_entry_at_point", 1, 2**31 - 1),
+        11: ("tool_entry_at_point_9", 1, 2**31 - 1)}
+    """G10 L2 P0-P9 sets a work system's offset (P0 the active one), G10 L1/L10/L11 a tool table entry
     (``tool_entry``); other G10 forms are kept verbatim."""
     DATA_INCREMENTAL: ClassVar[bool] = False
     DATA_P0_ACTIVE: ClassVar[bool] = True
@@ -59,9 +61,10 @@ class NgcBlockSyntax(NgcWordBlockSyntax):
     def _data_setting(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],
                       used: set[str]) -> bool:
         """G10 L1 (``tool_entry``) here; every other G10 as the family reads it."""
-        if values.get("L") == TOOL_ENTRY:
+        ell = values.get("L")
+        if ell in TOOL_TABLES:
             number = next(n for letter, n in block.words if letter.upper() == "G" and g_key(n) == "10")
-            if read_tool_entry(block, ctx, number, values):
+            if read_tool_entry(block, ctx, number, values, ell):
                 used.update(values)
                 return True
             block.add(NativeCode(self.DIALECT, f"G{number} ({self.CODES.native_g['10']})", block.text or ""))
