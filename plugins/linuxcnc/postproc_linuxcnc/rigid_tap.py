@@ -19,6 +19,7 @@ from postproc.context import Context
 from postproc.errors import ProgramError
 from postproc.expr import Expr
 from postproc.ir import Block, Motion
+from postproc.rs274.codes import g_key
 from postproc.synchronised_tap import RigidTap
 
 MODE = "rigid_tap"
@@ -26,16 +27,19 @@ MODE = "rigid_tap"
 
 
 def read_rigid_tap(block: Block, ctx: Context, motion: Motion, values: dict[str, Any], used: set[str]) -> None:
-    """Replace the block's ``Motion`` of mode ``MODE`` by its ``RigidTap``; K and I are taken."""
+    """Replace the block's ``Motion`` of mode ``MODE`` by its ``RigidTap``; K and I are taken. An error points
+    at the block's G33.1 (at its first word when the mode is the one in force)."""
+    code = next((num for letter, num in block.words if letter.upper() == "G" and g_key(num) == "33.1"), None)
+    col = ctx.column_of(block, "G", code) if code is not None else 1
     if ctx.state.cycle is not None:
         raise ProgramError("G33.1 while a canned cycle is in force: cancel it with G80 first",
-                           ctx.at(block, ctx.column_of(block, "G")))
+                           ctx.at(block, col))
     if not motion.axes:
         raise ProgramError("G33.1 needs an axis word (the end point of the tap)",
-                           ctx.at(block, ctx.column_of(block, "G")))
+                           ctx.at(block, col))
     pitch = values.get("K")
     if pitch is None:
-        raise ProgramError("G33.1 needs K, the distance per spindle revolution", ctx.at(block, 1))
+        raise ProgramError("G33.1 needs K, the distance per spindle revolution", ctx.at(block, col))
     if not isinstance(pitch, Expr) and pitch <= 0.0:
         raise ProgramError(f"G33.1 K{pitch:g}: the distance per revolution must be positive",
                            ctx.at(block, ctx.column_of(block, "K")))
