@@ -31,6 +31,7 @@ def read_rigid_tap(block: Block, ctx: Context, motion: Motion, values: dict[str,
     at the block's G33.1 (at its first word when the mode is the one in force)."""
     code = next((num for letter, num in block.words if letter.upper() == "G" and g_key(num) == "33.1"), None)
     col = ctx.column_of(block, "G", code) if code is not None else 1
+    del block.sections["Motion"]  # (first: a refused block leaves no motion the simulation cannot run)
     if ctx.state.cycle is not None:
         raise ProgramError("G33.1 while a canned cycle is in force: cancel it with G80 first",
                            ctx.at(block, col))
@@ -48,7 +49,6 @@ def read_rigid_tap(block: Block, ctx: Context, motion: Motion, values: dict[str,
         raise ProgramError("a computed I in G33.1 is not supported (write the number)",
                            ctx.at(block, ctx.column_of(block, "I")))
     used.update(k for k in "KI" if k in values)
-    del block.sections["Motion"]
     block.add(RigidTap(dict(motion.axes), pitch if isinstance(pitch, Expr) else float(pitch),
                        None, None if speedup is None else float(speedup)))
     ctx.state.motion = MODE
