@@ -21,28 +21,19 @@ from __future__ import annotations
 from typing import Any, Final
 
 from postproc.context import Context
-from postproc.errors import ParseError, ProgramError
+from postproc.errors import ProgramError
 from postproc.expr import Expr
 from postproc.ir import Block, Comments, Motion
 from postproc.state import MM_PER_INCH, PLANE_AXES
 
-MODES: Final = {"90.1": "absolute", "91.1": "incremental"}
-"""The G codes of the arc centre mode (their ``g_key``) and the mode each sets."""
 GROUP: Final = "13"
-"""Their modal group (LinuxCNC's ``GM_IJK_DISTANCE_MODE``), the key under which the reader keeps the block's."""
+"""The modal group of G90.1/G91.1 in the code table (LinuxCNC's ``GM_IJK_DISTANCE_MODE``; kind
+``arc_centres``): the reader keeps the block's code under it."""
 STATE_KEY: Final = "NgcArcCentres"
 """``ctx.state.extra`` key: "absolute" while G90.1 is in force (absent: incremental)."""
 _LETTER: Final = {"X": "I", "Y": "J", "Z": "K"}
 NOTE: Final = "{code}: absolute arc centres, written as offsets from each arc's start"
 """The trace a G90.1 leaves where it stood (the code itself is not written: the centres after it are offsets)."""
-
-
-def read_mode(block: Block, ctx: Context, num: str, key: str, codes: dict[str, Any]) -> None:
-    """Keep the block's arc centre code in ``codes`` (two of them are refused, as rs274 refuses them)."""
-    other = codes.get(GROUP)
-    if other is not None:
-        raise ParseError(f"G codes G{other[3]} and G{num} are both in one modal group", ctx.at(block, 1))
-    codes[GROUP] = (GROUP, "arc_centres", MODES[key], num)
 
 
 def apply_mode(block: Block, ctx: Context, codes: dict[str, Any]) -> None:

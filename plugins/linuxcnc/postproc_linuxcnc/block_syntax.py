@@ -40,23 +40,16 @@ class NgcBlockSyntax(NgcWordBlockSyntax):
     def g_sections(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],
                    used: set[str], cycle_block: bool) -> None:
         super().g_sections(block, ctx, codes, values, used, cycle_block)
-        arc_centres.apply_mode(block, ctx, codes)
-        path = block.sections.get("PathControl")
-        if path is not None and path.mode == "cutting" and ("P" in values or "Q" in values):  # type: ignore[attr-defined]
+        if arc_centres.GROUP in codes or arc_centres.STATE_KEY in ctx.state.extra:
+            arc_centres.apply_mode(block, ctx, codes)
+        sections = block.sections
+        path = sections.get("PathControl")
+        if path is not None and path.mode == "cutting" and (  # type: ignore[attr-defined]
+                "P" in values and "P" not in used or "Q" in values and "Q" not in used):
             _blending_tolerance(block, ctx, path, values, used)  # type: ignore[arg-type]
-        motion = block.sections.get("Motion")
+        motion = sections.get("Motion")
         if motion is not None and motion.mode == RIGID_TAP:  # type: ignore[attr-defined]
             read_rigid_tap(block, ctx, motion, values, used)  # type: ignore[arg-type]
-
-    def _g_code(self, ctx: Context, block: Block, num: str, codes: dict[str, Any], natives: list[str],
-                key: str | None = None) -> None:
-        """G90.1/G91.1 (``arc_centres``) go to their own group; every other code as the family reads it."""
-        if key is None:
-            key = g_key(num)
-        if key in arc_centres.MODES:
-            arc_centres.read_mode(block, ctx, num, key, codes)
-            return
-        super()._g_code(ctx, block, num, codes, natives, key)
 
     def _data_setting(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],
                       used: set[str]) -> bool:
@@ -80,11 +73,12 @@ def _blending_tolerance(block: Block, ctx: Context, path: PathControl, values: d
     """``G64 P- Q-``: P the path tolerance, Q the naive-CAM tolerance [V: LinuxCNC ``g-code.adoc`` "G64 Path
     Blending"; rs274 prints ``SET_MOTION_CONTROL_MODE(CANON_CONTINUOUS, P)`` and ``SET_NAIVECAM_TOLERANCE(Q)``,
     Q taking P's value when left out]. Either may be given alone; neither moves a controlled point."""
-    for letter in "PQ":
+    taken = {k: values[k] for k in "PQ" if k in values and k not in used}  # (not a dwell's P)
+    for letter in taken:
         if isinstance(values.get(letter), Expr):
             raise ProgramError(f"a computed {letter} in G64 is not supported (write the number)",
                                ctx.at(block, ctx.column_of(block, letter)))
-    tolerance, naive = values.get("P"), values.get("Q")
+    tolerance, naive = taken.get("P"), taken.get("Q")
     path.tolerance = None if tolerance is None else float(tolerance)
     path.naive = None if naive is None else float(naive)
-    used.update(k for k in "PQ" if k in values)
+    used.update(taken)

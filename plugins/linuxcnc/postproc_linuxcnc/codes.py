@@ -4,7 +4,8 @@ Rows are ``(spelling, modal group, kind, argument)`` (see ``postproc.rs274.codes
 codes without leading zeros (``G0``, ``M3``). The rows were copied from the Fanuc milling table and
 changed where the same number means something else or does not exist: no G9 or G44, G76 is threading
 and G87/G88 follow the NIST RS274/NGC words and motion (kept verbatim, see ``NATIVE_G``); G59.1-G59.3,
-G61.1 and G93 are added; G33.1 (rigid tapping) reads into ``RigidTap`` (``block_syntax``). G61 (exact path) and G61.1 (exact stop) both read as exact stop (the IR does
+G61.1 and G93 are added; G33.1 (rigid tapping) reads into ``RigidTap`` and G90.1/G91.1 (the arc centre
+mode, kind ``arc_centres``, which no section carries) into offsets from the arc's start (``block_syntax``). G61 (exact path) and G61.1 (exact stop) both read as exact stop (the IR does
 not tell them apart); G61 is written. Sources: LinuxCNC ``docs/src/gcode/g-code.adoc`` and
 ``m-code.adoc``, and DIALECTS.md §2.1 "LinuxCNC / RS274-NGC baseline".
 """
@@ -57,6 +58,8 @@ ROWS = (
     ("G89", "09", "cycle", "bore_dwell_feed"),
     ("G90", "03", "distance", "absolute"),
     ("G91", "03", "distance", "incremental"),
+    ("G90.1", "13", "arc_centres", "absolute"),
+    ("G91.1", "13", "arc_centres", "incremental"),
     ("G93", "05", "feed_mode", "inverse_time"),
     ("G94", "05", "feed_mode", "per_min"),
     ("G95", "05", "feed_mode", "per_rev"),
