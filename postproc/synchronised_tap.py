@@ -36,7 +36,6 @@ from .context import Context
 from .dialect import Dialect
 from .errors import PostprocError, ProgramError, UnsupportedError
 from .expr import Expr
-from .cycles.section import CannedCycle
 from .ir import (Block, Comments, CompoundMotion, CycleCancel, DistanceMode, Feed, MachineFunction, ReturnLevel,
                  Section, SpindleSpeed, _axes_from_xml, _axes_to_xml)
 from .state import PLANE_AXES
@@ -175,6 +174,7 @@ def _refusal(taps: list[RigidTap], target: type[Dialect]) -> str | None:
 
 def as_tap_cycle(block: Block, ctx: Context, target: type[Dialect], tap: RigidTap) -> Iterator[Block]:
     """A synchronised tap as the target's rigid tap cycle (the module docstring): three blocks."""
+    from .cycles.section import CannedCycle  # (here: the cycles package imports this module's RigidTap)
     state = ctx.state
     at = ctx.at(block)
     normal = PLANE_AXES[state.plane][2]
