@@ -103,6 +103,14 @@ def test_m29_before_a_cycle_that_is_not_a_tap_is_refused() -> None:
         "mode with the cycle cancel first)"]
 
 
+def test_peck_rigid_tapping_is_refused_not_tapped_in_one_go() -> None:
+    with pytest.raises(ErrorList) as info:
+        events("G21 G90 G0 X0 Y0 Z10. S200 M3\nM29 S200\nG84 X0 Y0 Z-4. R2. Q1. F300.\nG80\nM30\n", "fanuc")
+    assert [str(e) for e in info.value.errors] == [
+        "t.nc:3:20: error: peck rigid tapping (M29 then G84 with Q) is not modelled: its return per peck is a machine "
+        "parameter"]
+
+
 def test_an_axis_move_between_m29_and_its_tap_is_refused() -> None:
     with pytest.raises(ErrorList) as info:
         events("G21 G90 G0 X0 Y0 Z10. S200 M3\nM29 S200\nG0 X5.\nG84 Z-4. R2. F300.\nG80\nM30\n", "fanuc")

@@ -304,7 +304,8 @@ class CannedCycleResolveSyntax(Syntax):
         spindle = _modal(sections, "SpindleControl", "direction", state.spindle)
         self._check(kind, code, modal, cw, depth, feed, return_level, spindle, call, fail)
         pitch = rigid_pitch(sections, state, kind, code, feed, _modal(sections, "SpindleSpeed", "rpm", state.spindle_rpm),
-                            _modal(sections, "FeedMode", "mode", state.feed_mode), fail)
+                            _modal(sections, "FeedMode", "mode", state.feed_mode),
+                            cw.peck if cw.peck in modal else None, fail)
 
         incremental = _modal(sections, "DistanceMode", "mode", state.distance) == "incremental"
         initial, r, bottom, top = self._levels(ctx, kind, code, modal, normal, cw.level, depth, incremental, fail)

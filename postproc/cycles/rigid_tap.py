@@ -60,9 +60,11 @@ def end_rigid_mode(state: ModalState) -> None:
 
 
 def rigid_pitch(sections: dict[str, Any], state: ModalState, kind: str, code: str, feed: float | None,
-                rpm: float | None, feed_mode: str, fail: Callable[..., ProgramError]) -> float | None:
+                rpm: float | None, feed_mode: str, peck: str | None, fail: Callable[..., ProgramError]) -> float | None:
     """The pitch of this block's tap when rigid tapping mode is on (or set in the block), else None; ``feed``,
-    ``rpm`` and ``feed_mode`` are those in force for the block (its own words included)."""
+    ``rpm`` and ``feed_mode`` are those in force for the block (its own words included); ``peck``: the peck
+    word in force (Q), which a rigid tap refuses [K: Fanuc 0i peck rigid tapping, G84 with Q, whose return
+    per peck a parameter chooses: not modelled]."""
     mode = rigid_code(sections) or state.extra.get(RIGID_KEY)
     if mode is None:
         return None
@@ -70,6 +72,9 @@ def rigid_pitch(sections: dict[str, Any], state: ModalState, kind: str, code: st
     if kind not in ("tap", "tap_left"):
         raise fail(f"{code} while rigid tapping mode ({mode}) is on: only a tap cycle may follow it (cancel "
                    "the mode with the cycle cancel first)")
+    if peck is not None:
+        raise fail(f"peck rigid tapping ({mode} then {code} with {peck}) is not modelled: its return per peck is a "
+                   "machine parameter", peck)
     if feed is None or feed <= 0.0:
         raise fail(f"a rigid tap ({mode} then {code}) needs its feed F (the pitch, or the pitch times S)", "F")
     if feed_mode == "per_rev":
