@@ -4,9 +4,11 @@
   global, ``#<name>`` is local to a call (``NgcVariables``).
 * M2 and M30 end the program; a subprogram called by name is looked up as ``name.ngc`` in the set-up's
   library folders (LinuxCNC's ``SUBROUTINE_PATH``), ``o<probe> call`` -> ``probe.ngc``.
-* A computed word is written back as a number. An address that takes an integer (M, N, T, H, D, L)
+* A computed word is written back as a number. An address that takes an integer (M, N, T, H, L)
   accepts a value within 0.0001 of one and rounds it, as rs274's ``read_integer_value`` does; anything
-  else is an error naming the word. A G code is written as its number (``G59.1``; ``G0`` without a point).
+  else is an error naming the word. D is read as a real (rs274 ``read_d``: ``read_real_value``) [V:
+  LinuxCNC src/emc/rs274ngc/interp_read.cc]: a diameter after G41.1/G42.1 (``G41.1 D#100``, negative
+  to change sides), a whole tool number after G41/G42 (the block's rules refuse any other there). A G code is written as its number (``G59.1``; ``G0`` without a point).
 """
 
 from __future__ import annotations
@@ -27,7 +29,7 @@ class LinuxcncProgramSyntax(ProgramSyntax):
 
     XNAME = "LinuxcncProgramSyntax"
     __slots__ = ()
-    INTEGER_ADDRESSES: ClassVar[frozenset[str]] = frozenset("MNTHDL")
+    INTEGER_ADDRESSES: ClassVar[frozenset[str]] = frozenset("MNTHL")
     END_CODES: ClassVar[frozenset[tuple[str, int]]] = frozenset({("M", 2), ("M", 30)})
     MACRO_LOCALS: ClassVar[int] = 30
     VARIABLES: ClassVar[VariablesFactory] = NgcVariables
@@ -40,6 +42,8 @@ class LinuxcncProgramSyntax(ProgramSyntax):
     definition met in the flow runs its endsub."""
 
     def spell_evaluated(self, letter: str, value: float) -> str:
+        if letter == "D" and abs(value - round(value)) <= INTEGER_TOLERANCE:
+            return str(int(round(value)))
         if letter in self.INTEGER_ADDRESSES:
             nearest = round(value)
             if abs(value - nearest) > INTEGER_TOLERANCE:

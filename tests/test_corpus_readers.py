@@ -1,0 +1,60 @@
+"""Readers taking what their controller takes, found by the third-party corpus (tests/corpus/): each
+expectation is the controller's own answer (rs274, run here where installed, or the fact cited)."""
+
+from __future__ import annotations
+
+import io
+import re
+
+import pytest
+
+from postproc.api import translate
+from postproc.errors import Diagnostics, ErrorLevel, ErrorList, UnsupportedError
+from tests.support import rs274
+from tests.support.tools import with_tools
+
+TOOLS = "T1 P1 Z0 D0.1 ;\nT2 P2 Z0 D0.2 ;\n"
+
+
+def _translate(text: str, target: str) -> str:
+    out = io.StringIO()
+    translate(io.StringIO(text).readlines(), out, file="in.ngc", source="linuxcnc", target=target,
+              setup=with_tools(), diagnostics=Diagnostics(ErrorLevel.RAISE, warn_stream=io.StringIO()))
+    return out.getvalue()
+
+
+def _rs274_accepts(text: str) -> bool:
+    calls = rs274.run_rs274(text, tool_table=TOOLS)
+    return any("PROGRAM_END" in call for call in calls)
+
+
+COMPUTED_D = "g20 f10\n#1=2\ng0 x0 y0\ng41 d#1\ng1 x1 y0\ng1 x1 y1\ng40\ng1 x2\nm2\n"
+"""rs274 reads D as a real (interp_read.cc ``read_d``) and wants a whole number only where G41/G42
+take a tool number: a computed D of 2 is tool 2."""
+
+
+def test_a_computed_tool_number_after_g41_is_that_tool() -> None:
+    assert re.search(r"^G41 D0*2$", _translate(COMPUTED_D, "mach3"), re.M)  # mach3 has no variables: it runs
+
+
+@pytest.mark.skipif(not rs274.available(), reason="the LinuxCNC interpreter rs274 is not installed")
+def test_rs274_takes_the_computed_tool_number_too() -> None:
+    assert _rs274_accepts(COMPUTED_D)
+
+
+def test_a_computed_fraction_after_g41_is_refused_as_rs274_refuses_it() -> None:
+    # rs274: "G41 requires D word to be a whole number"
+    with pytest.raises(ErrorList) as info:
+        _translate(COMPUTED_D.replace("#1=2", "#1=1.5"), "mach3")
+    assert [str(e).split("error: ")[1] for e in info.value.errors] == ["address D takes a whole number (D1.5)"]
+
+
+def test_a_computed_diameter_after_g41_1_is_read_as_a_diameter() -> None:
+    # LinuxCNC's tests/interp/inside-corners: G41.1 D#100 with #100 = -.15 (a negative diameter changes
+    # sides, rs274 "cutter radius compensation on right"); read, it reaches the target's own refusal
+    text = "g20 f10\n#100=-.15\ng0 x0 y0\ng41.1 d#100\ng1 x1 y0\ng40\ng1 x2\nm2\n"
+    with pytest.raises(ErrorList) as info:
+        _translate(text, "mach3")
+    assert all(isinstance(e, UnsupportedError) and "G41.1" in str(e) for e in info.value.errors)
+    if rs274.available():
+        assert _rs274_accepts(text)
