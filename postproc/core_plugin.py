@@ -22,6 +22,7 @@ from .lower import Lowering
 from .setup import MachineSetup
 from .syntax import Pipeline
 from .syntaxes.modal_state import ModalStateSyntax
+from .synchronised_tap import RigidTap, resolve_rigid_taps
 from .xmlio import XFactory
 
 
@@ -33,7 +34,7 @@ def postproc_register_xml(factory: XFactory) -> None:
     register_control(factory)
     from .rs274.lathe_cycles import LatheCycleSyntax
     from .sequences import GeneratedText
-    for cls in (Pipeline, MachineSetup, ModalStateSyntax, ProgramSyntax, LatheCycleSyntax, GeneratedText):
+    for cls in (Pipeline, MachineSetup, ModalStateSyntax, ProgramSyntax, LatheCycleSyntax, GeneratedText, RigidTap):
         cls.reg(factory)
     cycles.register(factory)
     patterns.register(factory)
@@ -48,5 +49,6 @@ def postproc_register_lowerings(register: Callable[[Lowering], None]) -> None:
     register(expand_lathe_cycles)
     register(convert_inverse_time)  # after the expansions: it follows the moves they leave
     register(comment_after_end)
+    register(resolve_rigid_taps)  # after the cycles: an expanded rigid tap cycle shows its taps
     register(drop_foreign_machine_functions)
     register(frame_program)  # last: the frame goes around what the steps before made

@@ -120,6 +120,13 @@ class Dialect:
     SPINDLE_ORIENTATION: ClassVar[bool] = True
     """The controller can stop the spindle at an angle (cycles that need it are handled per the set-up's
     ``Cycles orientation`` otherwise)."""
+    SYNCHRONISED_TAP: ClassVar[bool] = False
+    """The controller writes a rigid tap as one spindle-synchronised move (LinuxCNC's G33.1,
+    ``postproc.synchronised_tap``): a rigid tap cycle of another family is written with it; without it such
+    a tap is refused."""
+    RIGID_TAP_CODE: ClassVar[str] = ""
+    """The machine code that makes the tap cycles after it rigid (Fanuc ``M29 S..``): a synchronised tap of
+    another family is written as that code and a tap cycle (``postproc.synchronised_tap``); '' for none."""
     DWELL_UNIT: ClassVar[str] = "seconds"
     """Unit of the dwell time the writer emits: "seconds" (a decimal number) or "milliseconds" (a whole
     number)."""

@@ -312,19 +312,27 @@ class ProgramControl(Section):
 
 @mypyc_attr(allow_interpreted_subclasses=True)
 class PathControl(Section):
-    """'exact_stop' or 'cutting' path control."""
+    """'exact_stop' or 'cutting' path control. ``tolerance`` and ``naive``: how far a blended path may
+    leave the programmed one, and how far a run of short moves may be merged (LinuxCNC ``G64 P Q``, program
+    units; None: not given). They change no controlled point."""
 
     XNAME = "PathControl"
 
     KEY = "PathControl"
-    __slots__ = ("mode", "one_shot")
-    XATTRS = (XAttr("mode", str), XAttr("one_shot", bool, False))
+    __slots__ = ("mode", "one_shot", "tolerance", "naive")
+    XATTRS = (XAttr("mode", str), XAttr("one_shot", bool, False), XAttr("tolerance", float, None),
+              XAttr("naive", float, None))
     mode: str
     one_shot: bool
+    tolerance: float | None
+    naive: float | None
 
-    def __init__(self, mode: str, one_shot: bool = False) -> None:
+    def __init__(self, mode: str, one_shot: bool = False, tolerance: float | None = None,
+                 naive: float | None = None) -> None:
         self.mode = mode
         self.one_shot = one_shot
+        self.tolerance = tolerance
+        self.naive = naive
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)

@@ -3,9 +3,11 @@ code alone is left out, with a warning and a comment in its block, and the rest 
 (``M31``: the part counter does not count). Under 'error' the block reaches the writer unchanged, which
 reports the code with its location.
 
-A code whose action is ``rigid-tap`` (Fanuc ``M29 S..``) is never left out: it makes the tap cycles after
-it follow the spindle, and the same cycle fed without the spindle in step breaks the tap. Towards
-another family it is refused in either mode, by ``refused_rigid_tap``'s message.
+A code whose action is ``rigid-tap`` (Fanuc ``M29 S..``) is never left out here: it makes the tap cycles
+after it follow the spindle, and the same cycle fed without the spindle in step breaks the tap. Towards a
+target that writes a synchronised tap (LinuxCNC's G33.1) ``postproc.synchronised_tap`` has already taken it
+(its taps carry its meaning); towards any other family it is refused in either mode, by
+``refused_rigid_tap``'s message.
 """
 
 from __future__ import annotations

@@ -53,6 +53,7 @@ from .plugins import Registry, default_registry
 from .setup import MachineSetup
 from .travel import TravelCheck, TravelError
 from .state import MM_PER_INCH, MODAL_KEYS, PLANE_AXES, ModalState
+from .synchronised_tap import resolve_rigid_taps
 from .context import Context
 
 UNEVALUATED = "a computed word reaches the simulation unevaluated"
@@ -66,9 +67,10 @@ LINEAR_AXES = frozenset("XYZUVW")
 """Axes converted from inches; rotary axes (A, B, C) are in degrees whatever the length unit."""
 
 
-TRANSLATE_ONLY = (check_blocks, comment_after_end, drop_foreign_machine_functions)
+TRANSLATE_ONLY = (check_blocks, comment_after_end, drop_foreign_machine_functions, resolve_rigid_taps)
 """Generic lowering steps a simulation skips: it checks the feed itself, it must see the blocks after
-the program end as they are written (to record the live ones), and it runs machine-specific codes."""
+the program end as they are written (to record the live ones), and it runs machine-specific codes and
+rigid taps."""
 
 
 class ToolpathTarget(Dialect):
@@ -178,6 +180,8 @@ class Simulator:
         self.spindle_tool: int | None = setup.machine.start_tool
         """The tool the last tool change put in the spindle (before any: the set-up's ``startTool``, None:
         the machine's, unknown)."""
+        self.sync: float | None = None
+        """While a rigid tap moves (``rigid_tap``): its pitch in mm per revolution, the ``f`` of its moves."""
 
     # -- one block ---------------------------------------------------------------------------------
     def block(self, block: Block, emit: Callable[[Event], None]) -> None:
@@ -262,6 +266,9 @@ class Simulator:
         elif "CycleCall" in sections and "CannedCycle" not in sections:
             raise UnsupportedError(f"canned cycle '{get('CycleCall').kind}' cannot be simulated: it was not "
                                    "resolved to motion", self._at(block))
+        tap = get("RigidTap")
+        if tap is not None:
+            self.rigid_tap(block, tap, False, emit)
         if not before:
             return
         if spindle is not None and after_motion("SpindleControl", spindle):
@@ -371,6 +378,8 @@ class Simulator:
             emit({"line": line, "event": "orient", "angle": num(item.angle)})  # type: ignore[attr-defined]
         elif key == "ProgramControl":
             self.program_control(line, item.kind, emit)  # type: ignore[attr-defined]
+        elif key == "RigidTap":
+            self.rigid_tap(block, item, True, emit)
         else:
             raise UnsupportedError(f"{key} inside a compound motion cannot be simulated", self._at(block))
 
@@ -428,6 +437,31 @@ class Simulator:
         else:
             raise UnsupportedError(f"motion '{mode}' cannot be simulated", self._at(block))
 
+    def rigid_tap(self, block: Block, tap: Any, absolute: bool, emit: Callable[[Event], None]) -> None:
+        """A spindle-synchronised tap (``postproc.synchronised_tap``): a ``tap`` move to the end point and
+        one back to the start, ``f`` the pitch in mm/rev; a dwell between them if the tap has one."""
+        if self.cutter is not None and self.cutter.side is not None:
+            raise ProgramError("a rigid tap with cutter compensation on cannot be run (cancel it first)",
+                               self._at(block))
+        if self.spindle not in ("cw", "ccw"):
+            raise ProgramError("a rigid tap with the spindle stopped cannot be run (start it first)",
+                               self._at(block))  # [V] rs274: "Spindle not turning in G33.1"
+        pitch = tap.pitch
+        if isinstance(pitch, Expr):
+            raise ProgramError(UNEVALUATED, self._at(block, "K"))
+        start = dict(self.pos)
+        end = self.target(block, tap.axes, absolute)
+        if self.travel is not None:
+            self.travel.line(block, start, end, self._programmed(tap.axes), self.incremental and not absolute, False)
+        self.sync = pitch * self.scale
+        try:
+            self.line_move("tap", end, block.line, emit)
+            if tap.dwell:
+                emit({"line": block.line, "event": "dwell", "seconds": num(tap.dwell)})
+            self.line_move("tap", start, block.line, emit)
+        finally:
+            self.sync = None
+
     def _machine_coordinates(self, block: Block, m: Motion, target: dict[str, float]) -> None:
         """A move in machine coordinates: its value is where the machine's controlled point goes, without
         the tool length ([K] Fanuc, Haas: ``G53 Z0`` retracts the spindle to the top whatever the tool;
@@ -471,6 +505,9 @@ class Simulator:
     def data_setting(self, block: Block, setting: DataSetting) -> None:
         """G10: a work offset is kept (mm, per axis) and shifts later absolute points in its system; a tool
         register is kept for the offsets that read it; other data is recorded for ``verify``."""
+        if setting.table in TOUCH_OFF:
+            self.touch_off(block, setting)
+            return
         if not setting.table.startswith("work_offset"):
             if not self.tools.write(setting, self.scale):
                 self.unsimulated.append((block.line, "tool offset data", setting.text))
@@ -483,6 +520,25 @@ class Simulator:
             v = value * self.scale if axis in LINEAR_AXES else value
             entry[axis] = entry.get(axis, 0.0) + v if setting.incremental else v
         self._shift()
+
+    def touch_off(self, block: Block, setting: DataSetting) -> None:
+        """A tool entry measured where the tool stands (LinuxCNC ``G10 L10``/``L11``): the length that makes
+        the current point read Z in the active work system (its offset cancels) or in work system 9, with
+        the length in force now; R sets the radius (``postproc_linuxcnc.tool_entry``)."""
+        for letter in setting.values:
+            if isinstance(setting.values[letter], Expr):
+                raise ProgramError(UNEVALUATED, self._at(block, letter))
+        z = setting.values.get("Z")
+        if isinstance(z, (int, float)):
+            if LENGTH_AXIS not in self.pos:
+                raise ProgramError(f"axis {LENGTH_AXIS} is not on this machine", self._at(block, "Z"))
+            machine = self.pos[LENGTH_AXIS] + self.length.offset
+            system = self.shift.get(LENGTH_AXIS, 0.0) if setting.table == TOUCH_OFF[0] \
+                else self.offsets.get(9, {}).get(LENGTH_AXIS, 0.0)
+            self.tools.set("length", setting.index, machine - (z * self.scale + system))
+        r = setting.values.get("R")
+        if isinstance(r, (int, float)):
+            self.tools.set("radius", setting.index, r * self.scale)
 
     def compensation(self, block: Block, emit: Callable[[Event], None]) -> None:
         """A block's cutter compensation and tool length changes (before its motion, as the controller
@@ -783,6 +839,11 @@ class Simulator:
         self.feed = value if self.modal.feed_mode == "inverse_time" else value * self.scale
 
     def _feed_into(self, ev: Event) -> None:
+        if self.sync is not None:  # a rigid tap: its pitch, per revolution whatever the feed mode
+            ev["f"] = num(self.sync)
+            if self.header_mode != "per_rev":
+                ev["feed_mode"] = "per_rev"
+            return
         if self.feed is None:
             raise ProgramError(NO_FEED, self._at(), needs="F")
         ev["f"] = num(self.feed)
@@ -806,6 +867,8 @@ class Simulator:
 
 
 _CENTRE_LETTER = {"X": "I", "Y": "J", "Z": "K"}
+TOUCH_OFF = ("tool_entry_at_point", "tool_entry_at_point_9")
+"""Tool tables whose length the tool's position decides: in the active work system, in work system 9."""
 
 UNSIMULATED = {"CutterCompensation": "cutter compensation", "WorkOffset": "work offset",
                "PathControl": "path control", "SpindleSpeed": "spindle speed"}

@@ -25,8 +25,8 @@ PROGRAMS = harness.load_manifest()
 
 KNOWN_FAILURES: dict[tuple[str, str], str] = {
     ("linuxcnc/comp.ngc", ""): "cutter compensation in the ZX plane is not simulated",
-    ("linuxcnc/g33_1_rigid_tap.ngc", ""): "G33.1 rigid tapping is not simulated (issue 26 item 3: tapping)",
-    ("linuxcnc/g10_l1_l10.ngc", ""): "G10 L1/L10 (tool table writes) are not simulated (issue 26 item 3: tapping)",
+    ("linuxcnc/g10_l1_l10.ngc", ""): "G10 L1/L10 tool offsets along X and Y (and their #5401 parameters) are not "
+                                     "simulated; only Z and R are (issue 26 item 3: tapping)",
     ("linuxcnc/g52_g92_interaction.ngc", ""): "LinuxCNC G52 is not read, G92.x not simulated (issue 27: frames)",
     **{("linuxcnc/g52_g92_interaction.ngc", t): "LinuxCNC G52 is not read (issue 27: frames)"
        for t in ("fagor", "fanuc", "grbl", "isg", "mach3")},

@@ -98,7 +98,12 @@ SAMPLES: dict[str, list[tuple[Builder, str]]] = {
                     '<NativeCode dialect="fanuc" what="G68 (coordinate rotation)" '
                     'text="G68 X0 Y0 R45. (a&lt;b &amp; &quot;c&quot;)&#9;"/>')],
     "PathControl": [(lambda c: PathControl("exact_stop", True), '<PathControl mode="exact_stop" one_shot="true"/>'),
-                    (lambda c: PathControl("cutting"), '<PathControl mode="cutting"/>')],
+                    (lambda c: PathControl("cutting"), '<PathControl mode="cutting"/>'),
+                    (lambda c: PathControl("cutting", tolerance=0.01, naive=0.02),
+                     '<PathControl mode="cutting" tolerance="0.01" naive="0.02"/>')],
+    "RigidTap": [(lambda c: c["RigidTap"]({"Z": -8.0}, 1.25), '<RigidTap pitch="1.25">\n  <Axes Z="-8.0"/>\n</RigidTap>'),
+                 (lambda c: c["RigidTap"]({"X": 1.0, "Z": -2.5}, 0.05, 0.5, 2.0),
+                  '<RigidTap pitch="0.05" dwell="0.5" speedup="2.0">\n  <Axes X="1.0" Z="-2.5"/>\n</RigidTap>')],
     "Plane": [(lambda c: Plane("ZX"), '<Plane plane="ZX"/>')],
     "ProgramControl": [(lambda c: ProgramControl("end_rewind"), '<ProgramControl kind="end_rewind"/>')],
     "ProgramStart": [(lambda c: ProgramStart(1234), '<ProgramStart number="1234"/>'),

@@ -228,7 +228,11 @@ def test_g80_leaves_no_motion_mode() -> None:
     ("G0 N10 X1", "t.ngc:2:4: error: a block number stands first in its block (LinuxCNC refuses N elsewhere)"),
     ("G1", "t.ngc:2:1: error: G1 with no feed rate in force (program F first)"),
     ("M98 L2", "t.ngc:2:1: error: M98 needs a program number P (rs274: Found 'm98' code with no P-word)"),
-    ("G90.1", "t.ngc:2:1: error: absolute arc centres (G90.1) are not supported by the linuxcnc reader yet"),
+    ("G90.1 G2 X1 Y1 I1 F9", "t.ngc:2:1: error: J word missing in an absolute centre arc (G90.1 gives both centre "
+                             "coordinates of the plane)"),
+    ("G33.1 Z-1", "t.ngc:2:1: error: G33.1 needs K, the distance per spindle revolution"),
+    ("G33.1 K1", "t.ngc:2:1: error: G33.1 needs an axis word (the end point of the tap)"),
+    ("G10 L1 Z1 R1", "t.ngc:2:1: error: G10 L1 needs the tool number it sets (P1 or more)"),
     ("G44 H1", "t.ngc:2:1: error: unknown G code G44"),
     ("G0 X1 E2", "t.ngc:2:7: error: address E is not used by the linuxcnc dialect"),
 ])
@@ -259,7 +263,7 @@ def test_m19_takes_its_angle_from_r() -> None:
 
 
 @pytest.mark.parametrize("text, what", [
-    ("G64 P0.01", "G64 (path blending with a tolerance)"),
+    ("G10 L1 P1 X1 Z2", "G10 (set offsets (G10 L))"),
     ("G76 P0.05 Z-1 I-0.075 J0.008 K0.045", "G76 (threading cycle)"),
     ("G87 X1 Y1 Z-1 R1 I0.5 J0 K0.5 F10", "G87 (RS274/NGC back boring (I/J shift, K top))"),
     ("G92 X0 Y0", "G92 (coordinate system offset)"),

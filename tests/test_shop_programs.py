@@ -32,10 +32,11 @@ PROGRAMS: dict[str, tuple[str | None, bool]] = {
     "four_axis_index.nc": ("four_axis.xml", False),
 }
 """Program -> (its set-up, whether grbl can run it: a stock grbl has no 4th axis)."""
-RIGID_TAPS = {"fusion_fanuc_bracket.nc": 60}
-"""Programs with a rigid tap (M29), by its line: no spindle-synchronised tap is written for another family
-yet (LinuxCNC's G33.1 would be one), and fed as a floating tap the tap breaks, so they are refused."""
-TRANSLATED = [name for name in PROGRAMS if name not in RIGID_TAPS]
+RIGID_TAPS = {"fusion_fanuc_bracket.nc": (60, 61, 62)}
+"""Programs with a rigid tap, by the line of its M29 and of each tap block: LinuxCNC gets them as G33.1;
+grbl cannot synchronise its feed with the spindle, and fed as a floating tap the tap breaks, so there
+they are refused."""
+TRANSLATED = list(PROGRAMS)
 TOOL_TABLE = "".join(f"T{n} P{n} Z0 D0 ;\n" for n in range(1, 20))
 """Zero lengths and diameters: LinuxCNC applies both, the simulation neither (verify compares them)."""
 TOLERANCE_MM = 3e-3
@@ -96,7 +97,7 @@ def test_linuxcnc_translation_verifies_at_zero_deviation(name: str) -> None:
     assert report.moves > 10
 
 
-@pytest.mark.parametrize("name", [n for n in TRANSLATED if PROGRAMS[n][1]])
+@pytest.mark.parametrize("name", [n for n in TRANSLATED if PROGRAMS[n][1] and n not in RIGID_TAPS])
 def test_grbl_translation_loses_the_tool_lengths_and_verify_measures_it(name: str) -> None:
     out, _ = _translate(name, "grbl")
     lengths = {n: 100.0 + n for n in REGISTERS}
@@ -117,13 +118,23 @@ def test_grbl_translation_loses_the_tool_lengths_and_verify_measures_it(name: st
 
 
 @pytest.mark.parametrize("name", RIGID_TAPS)
-@pytest.mark.parametrize("target", ["linuxcnc", "grbl"])
-def test_a_rigid_tap_is_refused_at_its_m29_even_with_warn(name: str, target: str) -> None:
+def test_a_rigid_tap_towards_grbl_is_refused_even_with_warn(name: str) -> None:
     from postproc.errors import ErrorList
     with pytest.raises(ErrorList) as info:
-        _translate(name, target)
+        _translate(name, "grbl")
     assert [(e.location.line if e.location else 0, "rigid" in str(e) or "follow the spindle" in str(e))
-            for e in info.value.errors] == [(RIGID_TAPS[name], True)]
+            for e in info.value.errors] == [(line, True) for line in RIGID_TAPS[name]]
+
+
+@pytest.mark.parametrize("name", RIGID_TAPS)
+def test_a_rigid_tap_reaches_linuxcnc_as_g33_1(name: str) -> None:
+    out, _ = _translate(name, "linuxcnc")
+    taps = re.findall(r"^G33\.1 .*$", out, re.M)
+    assert len(taps) == len(RIGID_TAPS[name]) - 1 and not re.search(r"^[^(]*M29", out, re.M), out
+    written_as_feeds = re.sub(r"^G33\.1 (Z\S+) K\S+$", r"G1 \1 F600.", out, flags=re.M)  # a floating tap
+    report = verify_lines(_lines(_source(name)), _lines(written_as_feeds), file_in=name, file_out="out.ngc",
+                          source="fanuc", target="linuxcnc", setup=_setup(name))
+    assert not report.ok and "tap" in report.summary(), report.summary()
 
 
 @pytest.mark.skipif(not rs274.available(), reason="the LinuxCNC interpreter rs274 is not installed")
@@ -197,6 +208,16 @@ def test_haas_plate_points() -> None:
     tap = _find(got, 57)
     assert [e.get("dir") for e in tap if e.get("event") == "spindle"] == ["ccw", "cw"]
     assert {"line": 57, "move": "feed", "x": 20, "y": 20, "z": -12, "f": 625} in tap
+
+
+def test_bracket_rigid_tap_points() -> None:
+    got = _events("fusion_fanuc_bracket.nc")
+    # N250 M29 S600, N255 G98 G84 X10. Y10. Z-8. R3. F600. from Z5 (the initial level): rapid to R3, tap to
+    # Z-8 and back to R3 in step with the spindle at F/S = 600/600 = 1 mm per revolution, rapid to Z5
+    assert [(e["move"], e["x"], e["z"], e.get("f")) for e in _find(got, 61)] == [
+        ("rapid", 10, 3, None), ("tap", 10, -8, 1), ("tap", 10, 3, 1), ("rapid", 10, 5, None)]
+    assert [(e["move"], e["x"], e["z"]) for e in _find(got, 62)] == [
+        ("rapid", 70, 5), ("rapid", 70, 3), ("tap", 70, -8), ("tap", 70, 3), ("rapid", 70, 5)]
 
 
 def test_bracket_arc_centres() -> None:

@@ -46,6 +46,9 @@ class Fanuc(Dialect):
     """``O1001``: the number the control stores the program under."""
     FAMILY = "fanuc"
     """Machine builders' codes (``machine_codes``) pass verbatim between Fanuc-family controls."""
+    RIGID_TAP_CODE = "M29"
+    """``M29 S..`` before G84/G74 makes them rigid taps [K: Fanuc 0i-MF operator's manual, rigid tapping;
+    the family's default machine code, ``machine_codes.FANUC``]: LinuxCNC's G33.1 is written with it."""
     COMMENTS = CommentSyntax(parens=True, nested=False, semicolon=False)
     """``( )`` control-out/control-in, no nesting; ``;`` is the end of block shown on screen, no comment
     [K: DIALECTS.md 1.1]."""

@@ -13,6 +13,8 @@ from ..setup import MachineSetup
 TABLES = {"tool_length": ("length", False), "tool_length_wear": ("length", True),
           "cutter_offset": ("radius", False), "cutter_offset_wear": ("radius", True)}
 """Neutral table name -> (the register's quantity, whether it is the wear)."""
+ENTRY = "tool_entry"
+"""A whole entry of a tool table by tool number (LinuxCNC's): ``Z`` the length, ``R`` the radius."""
 
 
 class ToolTable:
@@ -28,6 +30,9 @@ class ToolTable:
     def write(self, setting: DataSetting, scale: float) -> bool:
         """A programmable data input into a tool table (values in program units, ``scale`` mm per unit);
         False when the setting is not a tool table's."""
+        if setting.table == ENTRY:
+            self._entry(setting, scale)
+            return True
         table = TABLES.get(setting.table)
         if table is None:
             return False
@@ -45,6 +50,18 @@ class ToolTable:
         else:
             store[key] = value * scale
         return True
+
+    def _entry(self, setting: DataSetting, scale: float) -> None:
+        """A whole tool table entry (LinuxCNC ``G10 L1``): Z its length, R its radius, each absolute; a word
+        left out keeps the entry's value."""
+        for letter, quantity in (("Z", "length"), ("R", "radius")):
+            value = setting.values.get(letter)
+            if isinstance(value, (int, float)):
+                self.set(quantity, setting.index, value * scale)
+
+    def set(self, quantity: str, register: int, value: float) -> None:
+        """Write register ``register``'s ``quantity`` ("length" or "radius"), mm, as the program's own."""
+        self.written[(quantity, register)] = value
 
     def length(self, register: int) -> float:
         """The tool length in register ``register`` (mm), or a ProgramError naming what to add."""

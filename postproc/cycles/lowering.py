@@ -36,6 +36,8 @@ from postproc.context import Context
 from postproc.control import CONTROL, LABEL
 from postproc.source_map import ExecutedBlock
 
+from postproc.synchronised_tap import RigidTap
+
 from .resolve import peck_clearance_mm
 from .section import CannedCycle
 from .semantics import PECK
@@ -135,9 +137,10 @@ def _other_clearances(ctx: Context, target: type[Dialect]) -> frozenset[str]:
 
 
 def _restore_motion_mode(compound: CompoundMotion, mode: str | None) -> None:
-    """End the expansion in the group-01 mode the program had, so a plain move after G80 keeps it."""
-    last = next((item for item in reversed(compound.items) if isinstance(item, Motion)), None)
-    if last is not None and mode in ("rapid", "linear") and last.mode != mode:
+    """End the expansion in the group-01 mode the program had, so a plain move after G80 keeps it (a rigid
+    tap's synchronised move is a motion mode of its own on a target that writes it)."""
+    last = next((item for item in reversed(compound.items) if isinstance(item, (Motion, RigidTap))), None)
+    if last is not None and mode in ("rapid", "linear") and (isinstance(last, RigidTap) or last.mode != mode):
         compound.items.append(Motion(mode, {}))
 
 

@@ -38,6 +38,7 @@ from .expansion import CycleExpansion, TooManyMoves
 from .fine_boring import FineBoringSyntax
 from .manual_boring import ManualBoringSyntax
 from .peck_drilling import PeckDrillingSyntax
+from .rigid_tap import RIGID_KEY, end_rigid_mode, note_rigid_mode, rigid_pitch
 from .section import WORD_ORDER, CannedCycle
 from .semantics import DWELLING, PECK, SEMANTICS, SHIFT, TAP, Semantics
 from .tapping import TappingSyntax
@@ -132,7 +133,14 @@ class CannedCycleResolveSyntax(Syntax):
         state = ctx.state
         sections = block.sections
         if state.cycle is None and "CycleCall" not in sections:
+            if "MachineFunction" in sections or RIGID_KEY in state.extra:
+                try:  # a rigid tapping code, or what ends its mode (rare)
+                    note_rigid_mode(sections, state)
+                except ProgramError as err:
+                    raise err.located(ctx.at(block)) from None
             return  # the common block: no cycle anywhere (kept first and cheap, it runs on every block)
+        if "MachineFunction" in sections:
+            note_rigid_mode(sections, state)
         call = sections.get("CycleCall")
         if call is not None:
             if block.values and _computed(block):
@@ -298,6 +306,9 @@ class CannedCycleResolveSyntax(Syntax):
         return_level = _modal(sections, "ReturnLevel", "level", state.return_level)
         spindle = _modal(sections, "SpindleControl", "direction", state.spindle)
         self._check(kind, code, modal, cw, depth, feed, return_level, spindle, call, fail)
+        pitch = rigid_pitch(sections, state, kind, code, feed, _modal(sections, "SpindleSpeed", "rpm", state.spindle_rpm),
+                            _modal(sections, "FeedMode", "mode", state.feed_mode),
+                            cw.peck if cw.peck in modal else None, fail)
 
         incremental = _modal(sections, "DistanceMode", "mode", state.distance) == "incremental"
         initial, r, bottom, top = self._levels(ctx, kind, code, modal, normal, cw.level, depth, incremental, fail)
@@ -313,7 +324,7 @@ class CannedCycleResolveSyntax(Syntax):
             clearance=_clearance(ctx, kind, state.units), dwell=_seconds(modal.get(cw.dwell), rules, cw),
             orient=ctx.setup.cycles.orient_angle if kind in SHIFT else None, feed=feed, repeat=holes,
             spindle=spindle, motion=state.motion, start=here, position=position, step=step,
-            shift=_shift(ctx, kind, q, first, second), words=words,
+            shift=_shift(ctx, kind, q, first, second), words=words, pitch=pitch,
         )
         expansion, limit = self._by_kind[kind], ctx.setup.limits.moves_per_block
         repeat = next((k for k in repeat_letters if k in words), None)
@@ -611,6 +622,7 @@ def _computed(block: Block) -> bool:
 
 
 def _cancel(state: ModalState) -> None:
+    end_rigid_mode(state)
     state.cycle = None
     state.extra.pop(_STATE_KEY, None)
     state.extra.pop(ACTIVE_KEY, None)

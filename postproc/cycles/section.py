@@ -42,13 +42,13 @@ class CannedCycle(Section):
         XAttr("top", float, None), XAttr("q", float, None), XAttr("clearance", float, None),
         XAttr("dwell", float, None), XAttr("orient", float, None), XAttr("feed", float, None),
         XAttr("repeat", int, 1), XAttr("spindle", str, None), XAttr("motion", str, None),
-        XAttr("expand", bool, False),
+        XAttr("expand", bool, False), XAttr("pitch", float, None),
     )
     DICTS: ClassVar[tuple[str, ...]] = ("start", "position", "step", "shift", "words")
     """Child elements, one per axis dictionary; ``shift`` is None unless the cycle shifts the tool."""
     __slots__ = ("kind", "call", "semantics", "return_level", "plane", "initial", "r", "bottom", "top", "q",
                  "clearance", "dwell", "orient", "feed", "repeat", "spindle", "motion", "expand",
-                 "start", "position", "step", "shift", "words")
+                 "pitch", "start", "position", "step", "shift", "words")
     """Every attribute of ``XATTRS`` and ``DICTS`` (written out: a compiled class body names them)."""
 
     def __init__(self, kind: str, *, semantics: str, call: bool = False,
@@ -59,7 +59,7 @@ class CannedCycle(Section):
                  spindle: str | None = None, motion: str | None = None, start: dict[str, float] | None = None,
                  position: dict[str, float] | None = None, step: dict[str, float] | None = None,
                  shift: dict[str, float] | None = None, words: dict[str, float | int] | None = None,
-                 expand: bool = False) -> None:
+                 expand: bool = False, pitch: float | None = None) -> None:
         self.kind = kind
         self.call = call
         self.semantics = semantics
@@ -96,6 +96,9 @@ class CannedCycle(Section):
         self.expand = expand
         """Written as its motion whatever the target runs: the block's motion reaches the hole by a move
         that cancels the cycle on the target (a hole pattern's feed move or arc between points)."""
+        self.pitch = pitch
+        """A rigid tap (``postproc.cycles.rigid_tap``): the thread pitch per spindle revolution, program units;
+        None for every other cycle, a floating tap included."""
 
     @classmethod
     def from_xml(cls, el: etree._Element) -> "CannedCycle":

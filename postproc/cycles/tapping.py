@@ -4,6 +4,10 @@ from __future__ import annotations
 
 from mypy_extensions import mypyc_attr
 
+from postproc.ir import SpindleControl
+from postproc.state import PLANE_AXES
+from postproc.synchronised_tap import RigidTap
+
 from .expansion import CycleExpansion, ToolPath
 from .section import CannedCycle
 
@@ -16,6 +20,13 @@ class TappingSyntax(CycleExpansion):
 
     The spindle is running the tapping direction already (M03 for G84, M04 for G74): entering the
     hole changes nothing.
+
+    A rigid tap (``cycle.pitch``, ``postproc.cycles.rigid_tap``): position, then one ``RigidTap`` from the
+    R level to the bottom and back, synchronised at the pitch, the dwell P at the bottom [K: Fanuc 0i-MF
+    operator's manual, rigid tapping G84: rapid to R, tap to Z, dwell, spindle reversed, retract to R; G98
+    then rapid to the initial level; [?] whether P also dwells at R after the return is not modelled]. The
+    spindle turns the tapping direction (G84 clockwise, G74 counter-clockwise [K]): a spindle in the
+    other is set to it first.
     """
 
     XNAME = "TappingSyntax"
@@ -26,6 +37,13 @@ class TappingSyntax(CycleExpansion):
     def hole(self, path: ToolPath, cycle: CannedCycle, a: float, b: float) -> None:
         work, reverse = ("cw", "ccw") if cycle.kind == "tap" else ("ccw", "cw")
         self.position(path, cycle, a, b)
+        if cycle.pitch is not None:
+            if cycle.spindle != work and not any(isinstance(item, SpindleControl) for item in path.items):
+                path.spindle(work)
+            normal = PLANE_AXES[cycle.plane][2]
+            path.add(RigidTap({normal: cycle.bottom}, cycle.pitch, cycle.dwell or None))  # type: ignore[dict-item]
+            path.rapid(level=self.return_level(cycle))
+            return
         path.cut(cycle.bottom, cycle.feed)  # type: ignore[arg-type]
         if cycle.semantics == "rs274":
             path.spindle("stop")

@@ -13,7 +13,9 @@ Event vocabulary produced by ``canonical_moves`` (all lengths absolute, in milli
   ``"cx", "cy", "cz"`` (on the axis normal to the plane: the arc's start value, as postproc's toolpath does)
   and ``"plane"``: ``"XY"|"ZX"|"YZ"``; an arc of more than one full turn (G2/G3 with P>1) adds ``"turns"``.
   Spindle-synchronised feeds (G33/G76, between ``START_SPEED_FEED_SYNC`` and ``STOP_SPEED_FEED_SYNCH``)
-  are plain ``"feed"`` moves.
+  are plain ``"feed"`` moves. A rigid tap (G33.1: ``RIGID_TAP(x, y, z)`` after ``START_SPEED_FEED_SYNC(K, ..)``)
+  is two ``"tap"`` moves, to its end point and back to where it started, ``"f"`` the K pitch in mm (with
+  ``feeds``), as postproc's toolpath writes them.
 - ``{"event": "dwell", "seconds": s}`` (LinuxCNC also prints ``DWELL(0)`` inside G84/G74/G86 without P)
 - ``{"event": "spindle", "dir": "cw"|"ccw"|"stop"}`` (note: M2/M30 and M6 print a spindle stop too)
 - ``{"event": "orient", "angle": a}`` (M19 with an R/Q/P word; a bare ``M19`` prints nothing)
@@ -91,7 +93,7 @@ _PLANES = {"CANON_PLANE_XY": "XY", "CANON_PLANE_XZ": "ZX", "CANON_PLANE_YZ": "YZ
 # Per plane: indices into (x, y, z) of the first and second ARC_FEED axis, and of the normal axis.
 # G18 prints its arcs in (Z, X) order (conformance/README.md).
 _ARC_AXES = {"XY": (0, 1, 2), "ZX": (2, 0, 1), "YZ": (1, 2, 0)}
-_MOTION = ("rapid", "feed", "cw", "ccw")
+_MOTION = ("rapid", "feed", "cw", "ccw", "tap")
 
 
 def run_rs274(
@@ -211,6 +213,7 @@ def canonical_moves(lines: Iterable[str] | str, *, start: tuple[float, float, fl
         pos = (float(start[0]), float(start[1]), float(start[2]))
     flood = mist = False
     feed: float | None = None  # mm per minute (or per rev)
+    sync: float | None = None  # the pitch of a spindle-synchronised move (START_SPEED_FEED_SYNC), mm
     for line in lines:
         m = _CALL.match(line)
         if not m:
@@ -220,6 +223,15 @@ def canonical_moves(lines: Iterable[str] | str, *, start: tuple[float, float, fl
             scale = _UNIT_SCALE.get(args, scale)
         elif name == "SET_FEED_RATE":
             feed = _numbers(args)[0] * scale
+        elif name == "START_SPEED_FEED_SYNC":
+            sync = _numbers(args)[0] * scale
+        elif name == "RIGID_TAP":
+            v = _numbers(args)
+            back = pos or (0.0, 0.0, 0.0)
+            for x, y, z in ((v[0] * scale, v[1] * scale, v[2] * scale), back):
+                events.append({"move": "tap", "x": _mm(x, 1.0), "y": _mm(y, 1.0), "z": _mm(z, 1.0)})
+                if feeds and sync is not None:
+                    events[-1]["f"] = round(sync, PLACES)
         elif name == "SELECT_PLANE":
             plane = _PLANES.get(args, plane)
         elif name in ("STRAIGHT_TRAVERSE", "STRAIGHT_FEED"):

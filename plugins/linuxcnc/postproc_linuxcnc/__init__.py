@@ -63,6 +63,9 @@ class Linuxcnc(Dialect):
     there is no fine boring: those are expanded."""
     TAPE_MARKS = True
     """``%`` lines may delimit a program (RS274/NGC); there is no program number (O is an O-word)."""
+    SYNCHRONISED_TAP = True
+    """G33.1 Z.. K..: a rigid tap, spindle-synchronised in and out (``rigid_tap``); another family's rigid
+    tap cycle (Fanuc M29 + G84/G74) is written with it."""
     CUTTER_RULES = ARC_CORNERS
     """rs274's cutter radius compensation: tangent entry, arcs around outside corners."""
     PROGRAMS = True

@@ -8,17 +8,20 @@ convert_cutter_compensation_on: "G41.1 with no D word", "G41.1 with L word, but 
 
 from __future__ import annotations
 
-from typing import ClassVar, Mapping
+from typing import Any, ClassVar, Mapping
 
 from postproc.compensation.dynamic import DynamicCutterCompensation
 from postproc.context import Context
 from postproc.errors import ProgramError
 from postproc.expr import Expr
-from postproc.ir import Block
+from postproc.ir import Block, NativeCode, PathControl
 from postproc.rs274.codes import CodeTable, g_key
 from postproc.rs274.ngc_block_syntax import NgcWordBlockSyntax
 
+from . import arc_centres
 from .codes import CODES, M_GROUPS
+from .rigid_tap import MODE as RIGID_TAP, read_rigid_tap
+from .tool_entry import TABLES as TOOL_TABLES, read_tool_entry
 
 DYNAMIC_SIDES: dict[str, str] = {"41.1": "left", "42.1": "right"}
 """G41.1/G42.1 -> the side of the path."""
@@ -41,8 +44,11 @@ class NgcBlockSyntax(NgcWordBlockSyntax):
     tool is used"; V: rs274, T1 M6 then G41 offsets by tool 1's radius]."""
     CYCLE_CANCEL_WITH_MOTION: ClassVar[bool] = True
     M_GROUPS: ClassVar[dict[int, str]] = M_GROUPS
-    DATA_TABLES: ClassVar[Mapping[int, tuple[str, int, int]]] = {2: ("work_offset", 0, 9)}
-    """G10 L2 P0-P9 sets a work system's offset (P0 the active one); other G10 forms are kept verbatim."""
+    DATA_TABLES: ClassVar[Mapping[int, tuple[str, int, int]]] = {
+        2: ("work_offset", 0, 9), 1: ("tool_entry", 1, 2**31 - 1), 10: ("tool_entry_at_point", 1, 2**31 - 1),
+        11: ("tool_entry_at_point_9", 1, 2**31 - 1)}
+    """G10 L2 P0-P9 sets a work system's offset (P0 the active one), G10 L1/L10/L11 a tool table entry
+    (``tool_entry``); other G10 forms are kept verbatim."""
     DATA_INCREMENTAL: ClassVar[bool] = False
     DATA_P0_ACTIVE: ClassVar[bool] = True
 
@@ -70,3 +76,49 @@ class NgcBlockSyntax(NgcWordBlockSyntax):
         block.sections["NativeCode"].inert = True  # type: ignore[attr-defined]
         block.add(DynamicCutterCompensation(side, float(diameter),
                                             None if orientation is None else int(orientation)))
+
+    def g_sections(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],
+                   used: set[str], cycle_block: bool) -> None:
+        super().g_sections(block, ctx, codes, values, used, cycle_block)
+        if arc_centres.GROUP in codes or arc_centres.STATE_KEY in ctx.state.extra:
+            arc_centres.apply_mode(block, ctx, codes)
+        sections = block.sections
+        path = sections.get("PathControl")
+        if path is not None and path.mode == "cutting" and (  # type: ignore[attr-defined]
+                "P" in values and "P" not in used or "Q" in values and "Q" not in used):
+            _blending_tolerance(block, ctx, path, values, used)  # type: ignore[arg-type]
+        motion = sections.get("Motion")
+        if motion is not None and motion.mode == RIGID_TAP:  # type: ignore[attr-defined]
+            read_rigid_tap(block, ctx, motion, values, used)  # type: ignore[arg-type]
+
+    def _data_setting(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],
+                      used: set[str]) -> bool:
+        """G10 L1 (``tool_entry``) here; every other G10 as the family reads it."""
+        ell = values.get("L")
+        if ell in TOOL_TABLES:
+            number = next(n for letter, n in block.words if letter.upper() == "G" and g_key(n) == "10")
+            if read_tool_entry(block, ctx, number, values, ell):
+                used.update(values)
+                return True
+            block.add(NativeCode(self.DIALECT, f"G{number} ({self.CODES.native_g['10']})", block.text or ""))
+            return False
+        return super()._data_setting(block, ctx, codes, values, used)
+
+    @staticmethod
+    def _path_tolerance(codes: dict[str, Any], natives: list[str], raw: dict[str, str]) -> None:
+        """``G64 P Q`` is read into ``PathControl`` (``_blending_tolerance``), not kept verbatim."""
+
+
+def _blending_tolerance(block: Block, ctx: Context, path: PathControl, values: dict[str, Any], used: set[str]) -> None:
+    """``G64 P- Q-``: P the path tolerance, Q the naive-CAM tolerance [V: LinuxCNC ``g-code.adoc`` "G64 Path
+    Blending"; rs274 prints ``SET_MOTION_CONTROL_MODE(CANON_CONTINUOUS, P)`` and ``SET_NAIVECAM_TOLERANCE(Q)``,
+    Q taking P's value when left out]. Either may be given alone; neither moves a controlled point."""
+    taken = {k: values[k] for k in "PQ" if k in values and k not in used}  # (not a dwell's P)
+    for letter in taken:
+        if isinstance(values.get(letter), Expr):
+            raise ProgramError(f"a computed {letter} in G64 is not supported (write the number)",
+                               ctx.at(block, ctx.column_of(block, letter)))
+    tolerance, naive = taken.get("P"), taken.get("Q")
+    path.tolerance = None if tolerance is None else float(tolerance)
+    path.naive = None if naive is None else float(naive)
+    used.update(taken)

@@ -164,6 +164,37 @@ class LinuxcncWriter(WordWriter):
             self.unsupported("G28/G30 with cutter compensation on (rs274: \"Cannot use g28 or g30 with cutter "
                              "radius comp\")", block)
 
+    def path_control_words(self, s: Any, block: Block) -> list[str]:
+        """``G64 P.. Q..`` with the blending tolerances the program gave (``block_syntax``)."""
+        words = super().path_control_words(s, block)
+        if s.tolerance is not None:
+            words.append("P" + self.length(s.tolerance, block, "P"))
+        if s.naive is not None:
+            words.append("Q" + self.length(s.naive, block, "Q"))
+        return words
+
+    def rigid_tap_words(self, s: Any, block: Block) -> list[str]:
+        """``G33.1 Z.. K..`` (``postproc.synchronised_tap``): the end point, K the pitch, I the way out's
+        speed factor. Inside an expansion the end point is absolute (G90 first, when incremental). G33.1 has
+        no dwell at the bottom [V: g-code.adoc, the tap reverses on reaching the end point]."""
+        if s.dwell:
+            self.unsupported("a rigid tap with a dwell at the bottom (G33.1 reverses at once)", block)
+        if self._cutter_on:
+            self.unsupported("a rigid tap with cutter compensation on", block)
+        words: list[str] = []
+        if self.expanding and self.modal.distance != "absolute":
+            words.append(self.code("distance", "absolute", "absolute distance mode", block))
+            self.modal.distance = "absolute"
+        incremental = not self.expanding and self.modal.distance == "incremental"
+        words.append(self.code("motion", "rigid_tap", "rigid tapping", block))
+        for axis, value in s.axes.items():
+            words.append(axis + (self.expression(value, block) if isinstance(value, Expr)
+                                 else self.position(axis, value, incremental)))
+        words.append("K" + self.length(s.pitch, block, "K"))
+        if s.speedup is not None:
+            words.append("I" + self.number(s.speedup))
+        return words
+
     def machine_coordinates_words(self, s: Any, block: Block) -> list[str]:
         distance = block.sections.get("DistanceMode")
         mode = distance.mode if distance is not None else self.modal.distance  # type: ignore[attr-defined]
