@@ -156,6 +156,11 @@ class MachineSettings(SetupGroup):
     start_y: float = setting(0.0, ge=-MAX_COORDINATE, le=MAX_COORDINATE)
     start_z: float = setting(0.0, ge=-MAX_COORDINATE, le=MAX_COORDINATE)
     """Position (work coordinates, in ``units``) assumed at program start for toolpath simulation."""
+    tool_lengths: Literal["table", "touched_off"] = "table"
+    """Where a tool's length comes from: ``table``, the offset registers (``<Tools>``) that G43 H reads;
+    ``touched_off``, nowhere: the work's Z zero is set again with each tool at its change (a router's
+    touch-off plate), so the programmed Z is the tool's tip, every length offset is zero, and a
+    translation for a controller without a tool table drops the offsets with a note."""
 
     def mm(self) -> float:
         """mm per unit of the machine's lengths."""

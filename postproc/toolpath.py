@@ -494,7 +494,7 @@ class Simulator:
         tl = get("ToolLengthOffset")
         if tl is not None:
             try:
-                self.length.change(tl.mode, tl.register)  # type: ignore[attr-defined]
+                self.length.change(tl.mode, tl.register, tl.length, self.scale)  # type: ignore[attr-defined]
             except PostprocError as err:
                 raise err.located(self._at(block, "H")) from None
             if self.length.offset:

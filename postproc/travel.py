@@ -237,7 +237,9 @@ class TravelCheck:
             tool = self.setup.tools.get(str(self.lathe_offset))
             value = None if tool is None else tool.x if axis == "X" else tool.z
             return None if value is None else value * self.factor[axis]
-        if axis != "Z" or self.length_mode not in ("positive", "negative"):
+        if axis == "Z" and self.length_mode == "dynamic":
+            return self.sim.length.offset  # the program gave the length itself (G43.1 Z..)
+        if axis != "Z" or self.length_mode not in ("positive", "negative") or self.sim.tools.touched_off:
             return 0.0
         register = self.length_register
         if register is None:

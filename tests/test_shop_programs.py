@@ -60,9 +60,9 @@ def _lines(text: str) -> list[str]:
     return io.StringIO(text, newline="").readlines()
 
 
-def _translate(name: str, target: str) -> tuple[str, str]:
+def _translate(name: str, target: str, setup: MachineSetup | None = None) -> tuple[str, str]:
     out, warned = io.StringIO(newline=""), io.StringIO()
-    translate(_lines(_source(name)), out, file=name, source="fanuc", target=target, setup=_setup(name),
+    translate(_lines(_source(name)), out, file=name, source="fanuc", target=target, setup=setup or _setup(name),
               on_unsupported="warn", diagnostics=Diagnostics(ErrorLevel.RAISE, warn_stream=warned))
     return out.getvalue(), warned.getvalue()
 
@@ -97,23 +97,26 @@ def test_linuxcnc_translation_verifies_at_zero_deviation(name: str) -> None:
 
 
 @pytest.mark.parametrize("name", [n for n in TRANSLATED if PROGRAMS[n][1]])
-def test_grbl_translation_loses_the_tool_lengths_and_verify_measures_it(name: str) -> None:
-    out, _ = _translate(name, "grbl")
+def test_grbl_translation_writes_the_tool_lengths_and_verifies(name: str) -> None:
     lengths = {n: 100.0 + n for n in REGISTERS}
+    long_tools = with_tools(_machine(name), lengths=lengths)
+    out, _ = _translate(name, "grbl", long_tools)
+    # grbl has no tool table: each G43 H<n> is written as G43.1 Z<100 + n> (in an inch program, over 25.4)
+    inch = "G20" in _source(name)
+    registers = [int(h) for h in re.findall(r"G43\b[^\n(]*?H0*(\d+)", _source(name))]
+    written = [float(z) for z in re.findall(r"G43\.1 Z(\S+)", out)]
+    assert registers and written == pytest.approx([(100 + n) / (25.4 if inch else 1) for n in registers], abs=1e-5)
     report = verify_lines(_lines(_source(name)), _lines(out), file_in=name, file_out="out.gcode", source="fanuc",
-                          target="grbl", setup=with_tools(_machine(name), lengths=lengths))
-    # grbl has no tool table: without its G43 every move runs the tool's length (over 100 mm) lower
-    assert not report.ok and report.max_deviation > 100, report.summary()
-    report.allow_ignored = True
-    assert not report.ok  # a measured deviation, not a setting left out: nothing accepts it
-    # on a machine whose tools measure zero only the cutter compensation is lost (not simulated for Fanuc)
-    report = verify_lines(_lines(_source(name)), _lines(out), file_in=name, file_out="out.gcode", source="fanuc",
-                          target="grbl", setup=_setup(name))
+                          target="grbl", setup=long_tools)
     assert report.mismatch is None and report.max_deviation == 0, report.summary()
+    # only the cutter compensation is lost (not simulated for Fanuc, so not resolved for grbl: a setting)
     lost = [note for note in report.ignored if note.startswith("cutter compensation differs")]
     assert bool(lost) == report.left_out_moves == ("G41" in _source(name) or "G42" in _source(name))
+    # the same output on a machine whose tools measure zero runs every move over 100 mm too high
+    report = verify_lines(_lines(_source(name)), _lines(out), file_in=name, file_out="out.gcode", source="fanuc",
+                          target="grbl", setup=_setup(name))
     report.allow_ignored = True
-    assert report.ok
+    assert not report.ok and report.max_deviation > 100, report.summary()
 
 
 @pytest.mark.parametrize("name", RIGID_TAPS)

@@ -15,8 +15,9 @@ stored commit 0b5604b) and the "Grbl v1.1 Commands" wiki page (github.com/gnea/g
   there is no tool changer: a tool change is written as an M0 pause for a manual change) and **M19**
   (no oriented spindle stop).
 * Words F I J K L N P R S T X Y Z. **No canned cycles** (G73-G89 and G98/G99 are unsupported, so the
-  lowering expands them: NATIVE_CYCLES is empty), no G41/G42, **no G43 H** (no tool table: an
-  ``UnsupportedError``, which is correct), no G95, no H, D or Q words, no parameters or expressions.
+  lowering expands them: NATIVE_CYCLES is empty), no G41/G42, **no G43 H** (no tool table: a G43 H
+  is written as G43.1 Z with the register's value from the set-up, ``lengths.py``), no G95, no H, D
+  or Q words, no parameters or expressions.
 * T is read and ignored. ``( )`` and ``;`` comments are stripped by the protocol layer; ``/`` block
   delete is ignored (the block runs); ``%`` is not supported. A line keeps at most 79 characters
   (``LINE_BUFFER_SIZE`` 80, without spaces and comments), and ``?``, ``!``, ``~`` and bytes above 0x7F
@@ -42,6 +43,7 @@ from postproc.xmlio import XFactory
 from postproc.rs274.lean_controller import lower_for_lean_controller
 
 from .codes import CODES
+from .lengths import write_tool_lengths
 
 
 class Grbl(Dialect):
@@ -63,14 +65,15 @@ class Grbl(Dialect):
     """M6 is rejected: a tool change is written as an M0 pause (``pause_for_tool_change``)."""
     STOPS_BEFORE_MOTION = True
     """The RS274/NGC order of execution: M5 and M9 act before the block's motion."""
-    LOWERING = (lower_for_lean_controller,)
-    """Rewrites into what grbl runs (``lowering.py``): tool change as a pause, G49 before motion, full
-    circles with an end point; a moving block's spindle stop and coolant off after it (grbl runs them
-    before the motion: ``postproc.rs274.order_of_execution``)."""
+    LOWERING = (write_tool_lengths, lower_for_lean_controller)
+    """Rewrites into what grbl runs: a G43 H as ``G43.1 Z<length>`` from the set-up's tool table
+    (``lengths.py``); tool change as a pause, G49 before motion, full circles with an end point; a
+    moving block's spindle stop and coolant off after it (grbl runs them before the motion:
+    ``postproc.rs274.order_of_execution``)."""
     CUTTER_COMPENSATION = False
     """Only G40."""
     TOOL_LENGTH_OFFSET = False
-    """No tool table: G43 H is refused (grbl's own G43.1 takes the offset value)."""
+    """No tool table: a G43 H is written as grbl's own G43.1 with the register's value (``lengths.py``)."""
     DWELL_UNIT = "seconds"
     """G4 P is in seconds."""
     COMMENTS = Lazy[CommentSyntax](".text:COMMENTS")
