@@ -21,6 +21,10 @@ with Fanuc's numbers means here (DIALECTS.md 1.4, 2.3, 3.4):
   an expansion writes it only when the set-up says ``<Cycles orientation="m19"/>``].
 * ``G160``-``G165`` (multiple machining) are routed by the block syntax to its hook, not read here.
 * ``M17``/``M29`` end a local subroutine [?]: kept verbatim.
+* ``G43`` applies the length of the selected tool offset ``D``; ``G44`` **cancels** it [V: 8055 programming
+  manual 8.2, "G44: cancellation of tool length compensation"; [K] the 8070 keeps them]. Fanuc's ``G44`` is a
+  negative offset: it is never written as Fagor's ``G44`` (refused, ``postproc.isg_family.tool_data``), and
+  Fagor's ``G44`` is read as a cancel (written ``G49`` for Fanuc).
 """
 
 from __future__ import annotations
@@ -39,6 +43,8 @@ ROWS = (
     ("G40", "07", "cutter", "off"),
     ("G41", "07", "cutter", "left"),
     ("G42", "07", "cutter", "right"),
+    ("G43", "08", "length", "positive"),
+    ("G44", "08", "length", "cancel"),
     ("G54", "14", "offset", 1),
     ("G55", "14", "offset", 2),
     ("G56", "14", "offset", 3),

@@ -115,3 +115,19 @@ class FagorWriter(WordWriter):
 
     def return_level_words(self, s: Any, block: Block) -> list[str]:
         return self._code("return", s.level, "a cycle return level", block)
+
+    # -- tool data (``postproc.isg_family.tool_data`` chose the D) ---------------------------------------
+    def tool_length_offset_words(self, s: Any, block: Block) -> list[str]:
+        """``G43 D<n>`` applies offset n's length, ``G44`` cancels it (not Fanuc's negative offset)."""
+        if s.mode == "cancel":
+            return [self.code("length", "cancel", "tool length offset cancel", block)]
+        if s.mode != "positive" or s.register is None:
+            self.unsupported(f"tool length offset {s.mode}", block)
+        return [self.code("length", "positive", "a tool length offset", block), "D" + self.register(s.register, block)]
+
+    def cutter_compensation_words(self, s: Any, block: Block) -> list[str]:
+        """``G41 D<r>``; the D is left out where the block's ``G43 D`` already selects it."""
+        offset = block.sections.get("ToolLengthOffset")
+        if offset is not None and getattr(offset, "register", None) == s.register:
+            return self._code("cutter", s.mode, f"cutter compensation {s.mode}", block)
+        return super().cutter_compensation_words(s, block)

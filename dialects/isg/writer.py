@@ -121,6 +121,22 @@ class IsgWriter(WordWriter):
         """Cycles reach ISG expanded, so there is nothing to cancel (ISG's G80 is a subroutine call)."""
         return []
 
+    # -- tool data (``postproc.isg_family.tool_data`` chose the D) ---------------------------------------
+    def tool_length_offset_words(self, s: Any, block: Block) -> list[str]:
+        """``D<n>`` selects tool data n (its length applies), ``D0`` none: ISG has no other length code."""
+        if s.mode == "cancel":
+            return ["D0"]
+        if s.mode != "positive" or s.register is None:
+            self.unsupported(f"tool length offset {s.mode} (ISG selects a tool's data with D)", block)
+        return ["D" + self.register(s.register, block)]
+
+    def cutter_compensation_words(self, s: Any, block: Block) -> list[str]:
+        """``G41``/``G42`` take the radius of the selected D: a D is written only where no ``D`` of the
+        block's length offset selects it already."""
+        if "ToolLengthOffset" in block.sections:
+            return self._code("cutter", s.mode, f"cutter compensation {s.mode}", block)
+        return super().cutter_compensation_words(s, block)
+
 
 def _local(name: str, block: Block, writer: IsgWriter) -> str:
     bare = name[1:-1] if name.startswith("<") and name.endswith(">") else name
