@@ -446,6 +446,11 @@ def verify_lines(lines_in: Iterable[str], lines_out: Iterable[str], *, file_in: 
                      start_out=start_position(target_setup), tolerance=tolerance)
     report.allow_ignored = allow_ignored
     compare_after_end(report, after_in, after_out)
+    fixed = dialects.dialect(target).PATH_CONTROL
+    if fixed is not None and all(value == fixed for _, kind, value in settings_in if kind == "path control"):
+        settings_in = [s for s in settings_in if s[1] != "path control"]
+        settings_out = [s for s in settings_out if s[1] != "path control"]
+        report.ignored.append(f"path control: {target} always runs in {fixed} mode, as the source asks")
     compare_settings(report, settings_in, settings_out)
     if setup.machine.tool_lengths == "touched_off":
         report.ignored.append("tool lengths: zero on both sides, the set-up's tools are touched off at their "

@@ -70,6 +70,8 @@ class Grbl(Dialect):
     (``lengths.py``); tool change as a pause, G49 before motion, full circles with an end point; a
     moving block's spindle stop and coolant off after it (grbl runs them before the motion:
     ``postproc.rs274.order_of_execution``)."""
+    PATH_CONTROL = "cutting"
+    """grbl always blends (junction deviation); G61 is accepted and changes nothing [V: grbl wiki]."""
     CUTTER_COMPENSATION = False
     """Only G40."""
     TOOL_LENGTH_OFFSET = False
