@@ -16,7 +16,8 @@ Assumptions (a simulator knows no machine data):
 - Machine coordinates (G53) are therefore work coordinates until a G10 sets an offset; they are
   always absolute.
 - A reference return (G28/G30) rapids to the intermediate point, then to the reference point, taken as
-  machine zero = work zero on the axes named in the block.
+  machine zero = work zero on the axes named in the block; on a mill, G28 goes to the set-up's
+  ``<Axis home>`` where it gives one (machine coordinates, which are work coordinates here).
 - Arc centres ``cx, cy, cz`` are absolute; on the axis normal to the plane the centre carries the arc's
   start value. ``plane`` is the IR's name of the plane: "XY", "ZX" or "YZ".
 - Optional-skip blocks (``/``) are executed, as with the block-delete switch off.
@@ -116,6 +117,10 @@ class Simulator:
         self.rounded = {a: num(v) for a, v in self.pos.items()}
         self.modal = ModalState()
         """The program's modal state (units, plane, distance and feed mode, tool...), in program terms."""
+        self.home = {axis: t.home * setup.machine.mm() for axis, t in setup.travel.items()
+                     if t.home is not None and axis in self.axes and axis in LINEAR_AXES}
+        """Where a reference return goes on a mill, mm: the set-up's ``<Axis home>`` (machine coordinates,
+        which are the work coordinates here), else machine zero."""
         self.scale = 1.0
         """mm per program unit (from ``modal.units``)."""
         self.incremental = False
@@ -394,7 +399,10 @@ class Simulator:
             self.line_move("rapid", via, line, emit)
             ref = dict(self.pos)
             for axis in m.axes:
-                ref[_LATHE_INCREMENTS.get(axis, axis) if self.lathe else axis] = 0.0
+                if self.lathe:
+                    ref[_LATHE_INCREMENTS.get(axis, axis)] = 0.0
+                else:
+                    ref[axis] = self.home.get(axis, 0.0) if mode == "home" else 0.0
             if self.length.offset and LENGTH_AXIS in m.axes:
                 ref[LENGTH_AXIS] = -self.length.offset  # the reference point is a machine position
             if travel is not None:

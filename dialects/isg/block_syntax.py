@@ -11,7 +11,8 @@ from __future__ import annotations
 from typing import Any, ClassVar
 
 from postproc.context import Context
-from postproc.ir import Block
+from postproc.errors import ProgramError
+from postproc.ir import Block, Motion
 from postproc.isg_family.tool_data import read_tool_data
 from postproc.rs274.block_syntax import WordBlockSyntax
 from postproc.rs274.codes import CodeTable
@@ -33,3 +34,9 @@ class IsgBlockSyntax(WordBlockSyntax):
                    used: set[str], cycle_block: bool) -> None:
         super().g_sections(block, ctx, codes, values, used, cycle_block)
         read_tool_data(block, ctx, values, used, toggles=False, first=0)
+        motion = block.sections.get("Motion")
+        if "MachineCoordinates" in block.sections and isinstance(motion, Motion):
+            mode = ctx.state.motion  # ``#SUPPRESS OFFSETS`` moves in the motion mode in force
+            if mode not in ("rapid", "linear"):
+                raise ProgramError("#SUPPRESS OFFSETS needs G00 or G01 in force", ctx.at(block))
+            block.sections["Motion"] = Motion(mode, motion.axes)
