@@ -404,7 +404,7 @@ class Simulator:
                 else:
                     ref[axis] = self.home.get(axis, 0.0) if mode == "home" else 0.0
             if self.length.offset and LENGTH_AXIS in m.axes:
-                ref[LENGTH_AXIS] = -self.length.offset  # the reference point is a machine position
+                ref[LENGTH_AXIS] -= self.length.offset  # the reference point is a machine position
             if travel is not None:
                 travel.home(block, self._programmed(m.axes))
             self.line_move("rapid", ref, line, emit)
