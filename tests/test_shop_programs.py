@@ -226,3 +226,28 @@ def test_four_axis_indexes_in_degrees() -> None:
     got = _events("four_axis_index.nc")
     assert _find(got, 10) == [{"line": 10, "move": "rapid", "x": 0, "y": 0, "z": 60, "a": 90}]
     assert _find(got, 9) == [{"line": 9, "event": "machine", "code": "M11", "name": "4th axis unclamp"}]
+
+
+ISG_READY = ["mastercam_fanuc_slot.nc", "solidworks_cam_cover.nc"]
+"""Programs ISG runs once its tool data and reference returns are resolved; the others stop at a machine's
+own codes (G187, G5.1, M88, M10/M11), a rigid tap or a work offset set by G10 L2, which ISG has no spelling
+for here."""
+
+
+@pytest.mark.parametrize("name", ISG_READY)
+def test_isg_translation_selects_d_and_returns_home_and_verifies(name: str) -> None:
+    from postproc.setup_machine import AxisTravel
+    setup = with_tools(_machine(name), lengths={n: 100.0 + n for n in REGISTERS})
+    setup.travel = {a: AxisTravel(name=a, home=-5.0 if a == "Z" else 0.0) for a in "XYZ"}  # type: ignore[arg-type]
+    out, _ = _translate(name, "isg", setup)
+    source = _source(name)
+    # every G43 H<n> is a D<n>, every G28 a #SUPPRESS OFFSETS to the home (Z-5 in the program's units)
+    registers = [int(h) for h in re.findall(r"G43\b[^\n(]*?H0*(\d+)", source)]
+    assert [int(d) for d in re.findall(r"\bD0*([1-9]\d*)\b", out)] == registers
+    inch = "G20" in source
+    homes = re.findall(r"^#SUPPRESS OFFSETS Z(\S+)$", out, re.M)
+    assert homes and all(float(z) == pytest.approx(-5.0 / (25.4 if inch else 1.0), abs=1e-5) for z in homes)
+    assert len(homes) == len(re.findall(r"G28[^\n]*Z", source))
+    report = verify_lines(_lines(source), _lines(out), file_in=name, file_out="out.nc", source="fanuc",
+                          target="isg", setup=setup)
+    assert report.ok and report.max_deviation == 0, report.summary()
