@@ -42,6 +42,8 @@ from postproc.writer_base import Writer
 from postproc.xmlio import XFactory
 from postproc.rs274.lean_controller import lower_for_lean_controller
 
+from postproc.compensation.lowering import resolve_cutter_compensation
+
 from .codes import CODES
 from .lengths import write_tool_lengths
 
@@ -65,9 +67,10 @@ class Grbl(Dialect):
     """M6 is rejected: a tool change is written as an M0 pause (``pause_for_tool_change``)."""
     STOPS_BEFORE_MOTION = True
     """The RS274/NGC order of execution: M5 and M9 act before the block's motion."""
-    LOWERING = (write_tool_lengths, lower_for_lean_controller)
+    LOWERING = (write_tool_lengths, resolve_cutter_compensation, lower_for_lean_controller)
     """Rewrites into what grbl runs: a G43 H as ``G43.1 Z<length>`` from the set-up's tool table
-    (``lengths.py``); tool change as a pause, G49 before motion, full circles with an end point; a
+    (``lengths.py``); G41/G42 as the compensated path, where the source's rules are modelled
+    (``postproc.compensation.lowering``); tool change as a pause, G49 before motion, full circles with an end point; a
     moving block's spindle stop and coolant off after it (grbl runs them before the motion:
     ``postproc.rs274.order_of_execution``)."""
     PATH_CONTROL = "cutting"
