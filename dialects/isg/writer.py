@@ -115,7 +115,7 @@ class IsgWriter(WordWriter):
         if motion.mode in REFERENCE:
             if motion.axes and (self.modal.distance == "absolute" or any(v != 0 for v in motion.axes.values())):
                 text += self._part(block, {"Motion": Motion("rapid", dict(motion.axes))})  # the intermediate point
-            target = self._reference(motion, block)
+            target: dict[str, float | Expr] = dict(self._reference(motion, block))
         else:
             target = dict(motion.axes)
         incremental = self.modal.distance != "absolute"

@@ -151,7 +151,7 @@ class _Resolver:
                 self.table.write(setting, self.scale)
         offset = sections.get("WorkOffset")
         if isinstance(offset, WorkOffset) and offset.index != self.work_offset:
-            self.work_offset = offset.index  # type: ignore[assignment]
+            self.work_offset = offset.index
             self._origin_moved()
         select = sections.get("ToolSelect")
         if isinstance(select, ToolSelect) and isinstance(select.number, int):
@@ -204,7 +204,7 @@ class _Resolver:
             except UnsupportedError:
                 self.pos = {axis: None for axis in self.pos}
         if self.pos["X"] is not None and self.pos["Y"] is not None:
-            self.at = (self.pos["X"], self.pos["Y"])  # type: ignore[assignment]
+            self.at = (self.pos["X"], self.pos["Y"])
 
     def _move(self, block: Block, motion: Motion) -> None:
         if "MachineCoordinates" in block.sections or motion.mode in ("home", "home2"):
@@ -272,7 +272,7 @@ class _Resolver:
         axes: dict[str, float | Expr] = {"X": xy[0] / scale, "Y": xy[1] / scale}
         if isinstance(old, Motion) and "Z" in old.axes and "Z" in seg.end:
             axes["Z"] = seg.end["Z"] / scale
-        center = None
+        center: dict[str, float | Expr] | None = None
         if seg.turn != 0 and seg.ccentre is not None:
             center = {"X": (seg.ccentre[0] - self.at[0]) / scale, "Y": (seg.ccentre[1] - self.at[1]) / scale}
         sections["Motion"] = Motion(_MOTION_MODE[seg.kind], axes, center, None)
