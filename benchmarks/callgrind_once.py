@@ -11,9 +11,10 @@ from postproc.launch import run
 
 source, target, normalize, path = sys.argv[1:5]
 options = ["--normalize"] if normalize == "1" else []
-# grbl warns at the program's G43 H (a table offset it cannot express), as benchmarks/run.py runs it
+# grbl writes the program's G43 H from the bench machine's tools (and warns at what it cannot express),
+# as benchmarks/run.py runs it
 if target == "grbl":
-    options += ["--on-unsupported", "warn"]
+    options += ["--on-unsupported", "warn", "--machine", os.path.join(os.path.dirname(__file__), "machine.xml")]
 with tempfile.TemporaryDirectory() as work:
     out = os.path.join(work, "out.nc")
     sys.argv = ["postproc", "translate", "--from", source, "--to", target, *options, path, "-o", out]
