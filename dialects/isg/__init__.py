@@ -9,17 +9,27 @@ numbers collide with Fanuc's are told apart.
 
 from __future__ import annotations
 
-from typing import Callable
+from typing import TYPE_CHECKING, Callable, Iterator
 
 from postproc.comments import CommentSyntax
 from postproc.dialect import Dialect, Lazy, Reader
 from postproc.hookspecs import hookimpl
-from postproc.isg_family.tool_data import select_tool_data
 from postproc.rs274.order_of_execution import stops_before_motion
 from postproc.setup import MachineSetup
 from postproc.syntax import Pipeline
 from postproc.writer_base import Writer
 from postproc.xmlio import XFactory
+
+if TYPE_CHECKING:
+    from postproc.context import Context
+    from postproc.ir import Block
+
+
+def select_tool_data(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """``postproc.isg_family.tool_data.select_tool_data``, imported when a translation first lowers for
+    this dialect."""
+    from postproc.isg_family.tool_data import select_tool_data as step
+    return step(blocks, ctx, target)
 
 
 class Isg(Dialect):

@@ -29,7 +29,7 @@ fail unless the set-up's ``<Cycles orientation="stop"|"m19">`` says how to stand
 
 from __future__ import annotations
 
-from typing import Callable, ClassVar
+from typing import TYPE_CHECKING, Callable, ClassVar, Iterator
 
 from postproc.comments import CommentSyntax
 from postproc.dialect import Dialect, Lazy, Reader
@@ -42,10 +42,23 @@ from postproc.writer_base import Writer
 from postproc.xmlio import XFactory
 from postproc.rs274.lean_controller import lower_for_lean_controller
 
-from postproc.compensation.lowering import resolve_cutter_compensation
-
 from .codes import CODES
-from .lengths import write_tool_lengths
+
+if TYPE_CHECKING:
+    from postproc.context import Context
+    from postproc.ir import Block
+
+
+def write_tool_lengths(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """``lengths.write_tool_lengths``, imported when a translation first lowers for grbl."""
+    from .lengths import write_tool_lengths as step
+    return step(blocks, ctx, target)
+
+
+def resolve_cutter_compensation(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """``postproc.compensation.lowering.resolve_cutter_compensation``, imported when first used."""
+    from postproc.compensation.lowering import resolve_cutter_compensation as step
+    return step(blocks, ctx, target)
 
 
 class Grbl(Dialect):
