@@ -15,7 +15,8 @@ stored commit 0b5604b) and the "Grbl v1.1 Commands" wiki page (github.com/gnea/g
   there is no tool changer: a tool change is written as an M0 pause for a manual change) and **M19**
   (no oriented spindle stop).
 * Words F I J K L N P R S T X Y Z. **No canned cycles** (G73-G89 and G98/G99 are unsupported, so the
-  lowering expands them: NATIVE_CYCLES is empty), no G41/G42, **no G43 H** (no tool table: a G43 H
+  lowering expands them: NATIVE_CYCLES is empty), no G41/G42 (the compensated path is written instead,
+  where the source's rules are modelled), **no G43 H** (no tool table: a G43 H
   is written as G43.1 Z with the register's value from the set-up, ``lengths.py``), no G95, no H, D
   or Q words, no parameters or expressions.
 * T is read and ignored. ``( )`` and ``;`` comments are stripped by the protocol layer; ``/`` block
