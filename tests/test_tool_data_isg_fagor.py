@@ -190,3 +190,12 @@ def test_fagor_corner_rounding_is_not_fanuc_and_g64_is_refused() -> None:
     assert _errors("G71\nG61 G01 X1 F100\nM30\n", "fagor", "fanuc")[0].startswith(
         "in.nc:2:1: error: G61 (corner rounding for one block) from fagor has no equivalent in fanuc")
     assert "the cutting mode (Fanuc G64)" in _errors("G21\nG64\nG00 X1.\nM30\n", "fanuc", "fagor")[0]
+
+
+def test_g53_means_two_things_and_is_pinned_both_ways() -> None:
+    """Fanuc's G53 is one block in machine coordinates; ISG's deselects the zero offsets (modal): neither
+    is ever written as the other's."""
+    out = _translate("G21 G90\nG53 G00 Z0.\nM30\n", "fanuc", "isg")
+    assert "G53" not in out and "#SUPPRESS OFFSETS Z0." in out.splitlines()
+    assert _errors("G71 G90\nG53\nG00 X1\nM30\n", "isg", "fanuc") == [
+        "in.nc:2:1: error: G53 (zero offset deselection) from isg has no equivalent in fanuc"]
