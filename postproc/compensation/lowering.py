@@ -34,9 +34,9 @@ PLANE_WORDS = ("X", "Y")
 MOVES = frozenset(("rapid", "linear", "cw", "ccw"))
 _SEGMENT_KIND = {"rapid": "rapid", "linear": "feed", "cw": "cw", "ccw": "ccw"}
 _MOTION_MODE = {"rapid": "rapid", "feed": "linear", "cw": "cw", "ccw": "ccw"}
-_WATCHED = frozenset(("CutterCompensation", "Units", "DistanceMode", "Plane", "DataSetting", "WorkOffset",
-                      "ToolSelect", "ToolChange", "Motion", "CompoundMotion", "MachineCoordinates"))
-"""What the resolver looks at while no compensation is on (the rest passes untouched)."""
+_MODAL = frozenset(("Units", "DistanceMode", "Plane", "DataSetting", "WorkOffset", "ToolSelect", "ToolChange"))
+"""Settings the resolver keeps while no compensation is on (a block with none of them, and no G41/G42, is
+only a move to track, or passes untouched)."""
 
 
 def resolve_cutter_compensation(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
@@ -76,8 +76,22 @@ class _Resolver:
         self.failed = False
 
     def run(self, blocks: Iterator[Block]) -> Iterator[Block]:
+        idle = True
         for block in blocks:
-            if not self.failed and (not self._idle() or not _WATCHED.isdisjoint(block.sections)):
+            sections = block.sections
+            if idle and "CutterCompensation" not in sections and _MODAL.isdisjoint(sections):
+                motion = sections.get("Motion")  # the common block: a move, tracked for a later entry move
+                if isinstance(motion, Motion) and self.absolute and motion.mode in MOVES \
+                        and "MachineCoordinates" not in sections:
+                    pos, scale = self.pos, self.scale
+                    for axis, value in motion.axes.items():
+                        if axis in pos:
+                            pos[axis] = value * scale if type(value) is float else None
+                elif motion is not None or "CompoundMotion" in sections or "MachineCoordinates" in sections:
+                    self._track(block)
+                yield block
+                continue
+            if not self.failed:
                 try:
                     self.block(block)
                 except PostprocError as err:
@@ -89,6 +103,7 @@ class _Resolver:
             if self.out:
                 yield from self.out
                 self.out.clear()
+            idle = self.failed or self._idle()
         if not self.failed:
             try:
                 self.cutter.finish()
@@ -109,6 +124,8 @@ class _Resolver:
             else:
                 if self.plane != "XY":
                     raise UnsupportedError(f"cutter compensation in the {self.plane} plane cannot be resolved")
+                if self._idle() and self.pos["X"] is not None and self.pos["Y"] is not None:
+                    self.at = (self.pos["X"], self.pos["Y"])  # where the entry move starts
                 self.cutter.start(cc.mode, self._radius(cc.register))
         if self._idle():
             self._track(block)
