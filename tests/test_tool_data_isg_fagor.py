@@ -104,11 +104,12 @@ def test_target_d_reads_back_as_fanuc_g43_h_and_its_cancel_as_g49(source: str, t
     assert _verify(text, out, source, "fanuc").ok
 
 
-@pytest.mark.parametrize("target", ["fagor", "isg"])
-def test_fanuc_g44_negative_offset_is_refused_never_written_g44(target: str) -> None:
+@pytest.mark.parametrize("target, why", [
+    ("fagor", "Fagor's G44 cancels the offset, and no code subtracts a length"),
+    ("isg", "D adds the tool's length, and no code subtracts it")])
+def test_fanuc_g44_negative_offset_is_refused_never_written_g44(target: str, why: str) -> None:
     assert _errors("G21 G90\nG44 H01 Z50.\nM30\n", "fanuc", target) == [
-        "in.nc:2:5: error: a negative tool length offset (Fanuc G44): D adds the tool's length, and no code here "
-        "subtracts it"]
+        f"in.nc:2:1: error: the {target} dialect cannot express a negative tool length offset (Fanuc G44): {why}"]
 
 
 @pytest.mark.parametrize("target", ["fagor", "isg"])

@@ -144,6 +144,9 @@ class FagorWriter(WordWriter):
         """``G43 D<n>`` applies offset n's length, ``G44`` cancels it (not Fanuc's negative offset)."""
         if s.mode == "cancel":
             return [self.code("length", "cancel", "tool length offset cancel", block)]
+        if s.mode == "negative":
+            self.unsupported("a negative tool length offset (Fanuc G44): Fagor's G44 cancels the offset, and no "
+                             "code subtracts a length", block)
         if s.mode != "positive" or s.register is None:
             self.unsupported(f"tool length offset {s.mode}", block)
         return [self.code("length", "positive", "a tool length offset", block), "D" + self.register(s.register, block)]

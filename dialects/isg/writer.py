@@ -203,6 +203,9 @@ class IsgWriter(WordWriter):
         """``D<n>`` selects tool data n (its length applies), ``D0`` none: ISG has no other length code."""
         if s.mode == "cancel":
             return ["D0"]
+        if s.mode == "negative":
+            self.unsupported("a negative tool length offset (Fanuc G44): D adds the tool's length, and no code "
+                             "subtracts it", block)
         if s.mode != "positive" or s.register is None:
             self.unsupported(f"tool length offset {s.mode} (ISG selects a tool's data with D)", block)
         return ["D" + self.register(s.register, block)]

@@ -139,9 +139,8 @@ def _rewrite(block: Block, table: ToolTable, state: _Selection, toggles: bool) -
     cutter = sections.get("CutterCompensation")
     length_changed = isinstance(offset, ToolLengthOffset)
     if isinstance(offset, ToolLengthOffset):
-        if offset.mode == "negative":
-            raise UnsupportedError("a negative tool length offset (Fanuc G44): D adds the tool's length, and no "
-                                   "code here subtracts it")
+        if offset.mode == "negative" and cutter is None:
+            return  # left to the writer, which refuses it (with --on-unsupported warn: that word only)
         if offset.mode not in ("positive", "cancel"):
             raise UnsupportedError(f"a tool length offset '{offset.mode}'")
         state.length = _register(offset.register, "tool length") if offset.mode == "positive" else None
