@@ -31,8 +31,9 @@ with tempfile.TemporaryDirectory() as work:
             sys.argv = ["postproc", "verify", path, translated, "--from", source, "--to", dialect,
                         "--machine", machine]
     else:
-        # grbl warns at the program's G43 H (a table offset it cannot express), as benchmarks/run.py runs it
+        # grbl writes the program's G43 H from the bench machine's tools (and warns at what it cannot
+        # express), as benchmarks/run.py runs it
         if target == "grbl":
-            options += ["--on-unsupported", "warn"]
+            options += ["--on-unsupported", "warn", "--machine", machine]
         sys.argv = ["postproc", "translate", "--from", source, "--to", target, *options, path, "-o", out]
     run()

@@ -62,9 +62,10 @@ def translate_label(target: str) -> str:
 
 
 def translate_options(target: str) -> list[str]:
-    """fanuc->fanuc normalizes (the plain loop's work); grbl warns at the generated program's
-    ``G43 H..`` (a table offset grbl cannot express: about one block in 10,000)."""
-    return {"fanuc": ["--normalize"], "grbl": ["--on-unsupported", "warn"]}.get(target, [])
+    """fanuc->fanuc normalizes (the plain loop's work); grbl writes the generated program's ``G43 H..``
+    (about one block in 10,000) as ``G43.1 Z<length>`` from the bench machine's tools, and warns at what
+    else it cannot express."""
+    return {"fanuc": ["--normalize"], "grbl": ["--on-unsupported", "warn", "--machine", str(MACHINE)]}.get(target, [])
 
 
 def size_commands(blocks: int, src: Path, work: Path, pygcode_max: int,

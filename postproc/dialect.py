@@ -137,6 +137,12 @@ class Dialect:
     simulation; None: compensation is not simulated for this dialect (``verify`` compares the setting)."""
     TOOL_LENGTH_OFFSET: ClassVar[bool] = True
     """Tool length offset from a table exists (the writer refuses it otherwise)."""
+    PATH_CONTROL: ClassVar[str | None] = None
+    """The one path control mode the controller runs in, whatever the program says ("cutting": grbl always
+    blends); None: the program sets it. ``verify`` accepts a source whose every path control is this mode."""
+    LENGTH_TOGGLES: ClassVar[bool] = True
+    """The tool length offset is turned on and off by code (G43/G49, Fagor's G43/G44); False: it applies
+    whenever tool data is selected (ISG's ``D``, ``postproc.isg_family.tool_data``)."""
     TAPE_MARKS: ClassVar[bool] = False
     """A ``%`` line may open and close a program (Fanuc, GSK, LinuxCNC): ``<Output tapeMarks="always">``."""
     PROGRAM_NUMBERS: ClassVar[bool] = False

@@ -229,19 +229,22 @@ class ToolChange(Section):
 @mypyc_attr(allow_interpreted_subclasses=True)
 class ToolLengthOffset(Section):
     """'positive', 'negative' or 'cancel', with the offset register: a number, or the expression a
-    program kept symbolically computes it with (``H#1``)."""
+    program kept symbolically computes it with (``H#1``); or 'dynamic' with the ``length`` itself in
+    program units (grbl's and LinuxCNC's ``G43.1 Z<length>``: no table, the program gives the value)."""
 
     XNAME = "ToolLengthOffset"
 
     KEY = "ToolLengthOffset"
-    __slots__ = ("mode", "register")
-    XATTRS = (XAttr("mode", str), XAttr("register", int, None))
+    __slots__ = ("mode", "register", "length")
+    XATTRS = (XAttr("mode", str), XAttr("register", int, None), XAttr("length", float, None))
     mode: str
     register: int | Expr | None
+    length: float | Expr | None
 
-    def __init__(self, mode: str, register: int | Expr | None = None) -> None:
+    def __init__(self, mode: str, register: int | Expr | None = None, length: float | Expr | None = None) -> None:
         self.mode = mode
         self.register = register
+        self.length = length
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)

@@ -160,6 +160,11 @@ class MachineSettings(SetupGroup):
     """The tool in the spindle when the program starts (``<Machine startTool="3">``), which a LinuxCNC
     ``G41``/``G42`` without D or ``G43`` without H takes before the program's first tool change; None:
     unknown (the machine's, from before the program), and such a block is a located error."""
+    tool_lengths: Literal["table", "touched_off"] = "table"
+    """Where a tool's length comes from: ``table``, the offset registers (``<Tools>``) that G43 H reads;
+    ``touched_off``, nowhere: the work's Z zero is set again with each tool at its change (a router's
+    touch-off plate), so the programmed Z is the tool's tip, every length offset is zero, and a
+    translation for a controller without a tool table drops the offsets with a note."""
 
     def mm(self) -> float:
         """mm per unit of the machine's lengths."""

@@ -16,7 +16,8 @@ Assumptions (a simulator knows no machine data):
 - Machine coordinates (G53) are therefore work coordinates until a G10 sets an offset; they are
   always absolute.
 - A reference return (G28/G30) rapids to the intermediate point, then to the reference point, taken as
-  machine zero = work zero on the axes named in the block.
+  machine zero = work zero on the axes named in the block; on a mill, G28 goes to the set-up's
+  ``<Axis home>`` where it gives one (machine coordinates, which are work coordinates here).
 - Arc centres ``cx, cy, cz`` are absolute; on the axis normal to the plane the centre carries the arc's
   start value. ``plane`` is the IR's name of the plane: "XY", "ZX" or "YZ".
 - Optional-skip blocks (``/``) are executed, as with the block-delete switch off.
@@ -124,6 +125,10 @@ class Simulator:
         self.rounded = {a: num(v) for a, v in self.pos.items()}
         self.modal = ModalState()
         """The program's modal state (units, plane, distance and feed mode, tool...), in program terms."""
+        self.home = {axis: t.home * setup.machine.mm() for axis, t in setup.travel.items()
+                     if t.home is not None and axis in self.axes and axis in LINEAR_AXES}
+        """Where a reference return goes on a mill, mm: the set-up's ``<Axis home>`` (machine coordinates,
+        which are the work coordinates here), else machine zero."""
         self.scale = 1.0
         """mm per program unit (from ``modal.units``)."""
         self.incremental = False
@@ -412,9 +417,10 @@ class Simulator:
             self.line_move("rapid", via, line, emit)
             ref = dict(self.pos)
             for axis in m.axes:
-                ref[self.increments.get(axis, axis)] = 0.0
+                key = self.increments.get(axis, axis)
+                ref[key] = self.home.get(key, 0.0) if mode == "home" and not self.lathe else 0.0
             if self.length.offset and LENGTH_AXIS in m.axes:
-                ref[LENGTH_AXIS] = -self.length.offset  # the reference point is a machine position
+                ref[LENGTH_AXIS] -= self.length.offset  # the reference point is a machine position
             if travel is not None:
                 travel.home(block, self._programmed(m.axes))
             self.line_move("rapid", ref, line, emit)
@@ -567,7 +573,7 @@ class Simulator:
         tl = get("ToolLengthOffset")
         if tl is not None:
             try:
-                self.length.change(tl.mode, tl.register)  # type: ignore[attr-defined]
+                self.length.change(tl.mode, tl.register, tl.length, self.scale)  # type: ignore[attr-defined]
             except PostprocError as err:
                 raise err.located(self._at(block, "H")) from None
             if self.length.offset:

@@ -76,6 +76,8 @@ class TravelCheck:
         self.checked = tuple(a for a in sim.axes if a in self.travel and self.travel[a].limited())
         self.length_mode = "cancel"
         self.length_register: int | None = None
+        self.dynamic: float | None = None
+        """The length (mm) a dynamic offset (G43.1 Z..) gave; None: not a number."""
         self.lathe_offset: int | None = 0
         """The offset number a lathe T word put in force (0: none; None: unknown)."""
         self.lengths: dict[int, float] = {}
@@ -103,6 +105,8 @@ class TravelCheck:
         if s is not None:
             self.length_mode = s.mode  # type: ignore[attr-defined]
             self.length_register = s.register  # type: ignore[attr-defined]
+            length = getattr(s, "length", None)
+            self.dynamic = length * self.sim.scale if isinstance(length, (int, float)) else None
         s = sections.get("ToolSelect")
         if s is not None and self.sim.lathe:
             number = s.number  # type: ignore[attr-defined]
@@ -237,7 +241,10 @@ class TravelCheck:
             tool = self.setup.tools.get(str(self.lathe_offset))
             value = None if tool is None else tool.x if axis == "X" else tool.z
             return None if value is None else value * self.factor[axis]
-        if axis != "Z" or self.length_mode not in ("positive", "negative"):
+        if axis == "Z" and self.length_mode == "dynamic":
+            return self.dynamic  # the program gave the length itself (G43.1 Z..)
+        if axis != "Z" or self.length_mode not in ("positive", "negative") \
+                or self.setup.machine.tool_lengths == "touched_off":
             return 0.0
         register = self.length_register
         if register is None:

@@ -454,7 +454,16 @@ def verify_lines(lines_in: Iterable[str], lines_out: Iterable[str], *, file_in: 
                      start_out=start_position(target_setup), tolerance=tolerance)
     report.allow_ignored = allow_ignored
     compare_after_end(report, after_in, after_out)
+    fixed = dialects.dialect(target).PATH_CONTROL
+    asked = [value for _, kind, value in settings_in if kind == "path control"]
+    if fixed is not None and asked and all(value == fixed for value in asked):
+        settings_in = [s for s in settings_in if s[1] != "path control"]
+        settings_out = [s for s in settings_out if s[1] != "path control"]
+        report.ignored.append(f"path control: {target} always runs in {fixed} mode, as the source asks")
     compare_settings(report, settings_in, settings_out)
+    if setup.machine.tool_lengths == "touched_off":
+        report.ignored.append("tool lengths: zero on both sides, the set-up's tools are touched off at their "
+                              "change (<Machine toolLengths=\"touched_off\">)")
     errors = diag_in.errors + diag_out.errors
     if errors:
         raise ErrorList(errors)
@@ -463,10 +472,14 @@ def verify_lines(lines_in: Iterable[str], lines_out: Iterable[str], *, file_in: 
 
 def _both_compensate(source: str, target: str, registry: Registry | None) -> bool:
     """Cutter radius compensation is simulated on both sides or on neither: a dialect without its rules
-    keeps the programmed path, and the setting is compared instead (``compare_settings``)."""
+    keeps the programmed path, and the setting is compared instead (``compare_settings``). A target
+    without compensation at all (grbl) receives the compensated path itself (``postproc.compensation.
+    lowering``): the source's is simulated then."""
     from .plugins import default_registry
     reg = registry or default_registry()
-    return reg.dialect(source).CUTTER_RULES is not None and reg.dialect(target).CUTTER_RULES is not None
+    out = reg.dialect(target)
+    return reg.dialect(source).CUTTER_RULES is not None and (out.CUTTER_RULES is not None
+                                                              or not out.CUTTER_COMPENSATION)
 
 
 def _same_machine(setup: MachineSetup, source: str, registry: Registry | None) -> MachineSetup:

@@ -106,32 +106,37 @@ def test_the_exit_status_is_the_worst_files(cli, tree, tmp_path):
 
 
 def test_verify_writes_only_what_verifies(cli, tree, tmp_path):
-    """o1001 sets G43 H tool length offsets, which grbl lacks: with --on-unsupported warn it translates, and
-    on a machine whose tools are long verification then fails (the output runs each tool's length off),
-    --allow-ignored or not; on a machine whose tools measure zero the loss moves nothing and it verifies."""
+    """A Fanuc G41 reaches grbl, which has no cutter compensation, as a dropped word (--on-unsupported warn;
+    Fanuc's compensation rules are not modelled, so no compensated path is written): verification fails
+    on the setting left out, and that output is not written, unless --allow-ignored accepts it. o1001's
+    G43 H offsets are written as G43.1 with the machine's lengths, and verify, long tools or not."""
     plain = tmp_path / "plain.nc"
     plain.write_text(PLAIN)
+    compensated = tmp_path / "edge.nc"
+    compensated.write_text("G21 G90 G00 X-10. Y0. Z5.\nG41 D01 G01 X0. F100.\nG01 Y20.\nG40 G01 X-10.\nM30\n")
     out, report = tmp_path / "out", tmp_path / "report.jsonl"
     support = Path(__file__).resolve().parent / "support"
-    args = ("translate", tree / "o1001_plate_drill_tap.nc", plain, "-o", out,
+    args = ("translate", tree / "o1001_plate_drill_tap.nc", plain, compensated, "-o", out,
             "--from", "fanuc", "--to", "grbl", "--on-unsupported", "warn", "--verify", "--report", report)
-    for allow in ((), ("--allow-ignored",)):
-        result = cli(*args, "--machine", support / "long_tools.xml", *allow)
-        assert result.status == 1
-        lines = {Path(str(line["file"])).name: line for line in report_lines(report)}
-        failed, passed = lines["o1001_plate_drill_tap.nc"], lines["plain.nc"]
-        assert (failed["status"], failed["exit"]) == ("verify", 1)
-        assert "exceeds tolerance" in str(failed["verify"])
-        assert failed["warnings"] and "G43 H1" in str(failed["warnings"][0])  # type: ignore[index]
-        assert not (out / "o1001_plate_drill_tap.nc").exists()
-        assert (passed["status"], passed["max_deviation"]) == ("ok", 0.0)
-        assert str(passed["verify"]).endswith(": ok")
+    result = cli(*args, "--machine", support / "long_tools.xml")
+    assert result.status == 1
+    lines = {Path(str(line["file"])).name: line for line in report_lines(report)}
+    failed = lines["edge.nc"]
+    assert (failed["status"], failed["exit"]) == ("verify", 1)
+    assert "cutter compensation differs" in str(failed["verify"])
+    assert failed["warnings"] and "cutter radius compensation" in str(failed["warnings"][0])  # type: ignore[index]
+    assert not (out / "edge.nc").exists()
+    for name in ("o1001_plate_drill_tap.nc", "plain.nc"):
+        assert (lines[name]["status"], lines[name]["max_deviation"]) == ("ok", 0.0), lines[name]
+        assert str(lines[name]["verify"]).endswith(": ok")
+    assert [line.split()[-1] for line in (out / "o1001_plate_drill_tap.nc").read_text().splitlines()
+            if "G43.1" in line] == ["Z101.", "Z102.", "Z103."]  # long_tools.xml: tool n is 100 + n mm
     assert (out / "plain.nc").read_bytes() == single(
         cli, plain, "--from", "fanuc", "--to", "grbl", "--on-unsupported", "warn")
 
-    result = cli(*args, "--machine", support / "zero_tools.xml")
+    result = cli(*args, "--machine", support / "zero_tools.xml", "--allow-ignored")
     assert result.status == 0, result.err
-    assert (out / "o1001_plate_drill_tap.nc").exists()
+    assert (out / "edge.nc").exists()
     assert {line["status"] for line in report_lines(report)} == {"ok"}
     assert leftovers(out) == []
 

@@ -15,6 +15,8 @@ from postproc.errors import ErrorList
 from postproc.plugins import default_registry
 from postproc.api import translate
 from postproc.dialect import Dialect
+from postproc.setup import MachineSetup
+from tests.support.tools import with_tools
 
 REGISTRY = default_registry()
 WRITERS = sorted(name for name, cls in REGISTRY.dialects.items()
@@ -31,22 +33,32 @@ PROBES = {
 PROLOGUE = "G21 G17 G90\nG00 X0. Y0. Z50.\n"
 
 
-def _write(target: str, line: str) -> str:
+def _write(target: str, line: str, setup: MachineSetup | None = None) -> str:
     out = io.StringIO()
-    translate(io.StringIO(PROLOGUE + line + "\nM30\n"), out, file="probe.nc", source="fanuc", target=target)
+    translate(io.StringIO(PROLOGUE + line + "\nM30\n"), out, file="probe.nc", source="fanuc", target=target,
+              setup=setup)
     return out.getvalue()
 
 
 @pytest.mark.parametrize("target", WRITERS)
 @pytest.mark.parametrize("capability", sorted(PROBES))
 def test_writer_agrees_with_capability(target: str, capability: str) -> None:
+    """A dialect with the capability writes the block (the registers' values given: ISG and Fagor choose
+    their D from them); one without refuses it, at its line."""
     has_it = REGISTRY.dialect(target).capabilities()[capability]
     if has_it:
-        assert _write(target, PROBES[capability])
+        assert _write(target, PROBES[capability], with_tools())
     else:
         with pytest.raises(ErrorList) as errs:
             _write(target, PROBES[capability])
         assert errs.value.errors[0].location.line == 3
+
+
+def test_a_target_without_a_tool_table_gets_the_length_written() -> None:
+    """grbl lacks the table (TOOL_LENGTH_OFFSET False): given the value, the offset is written as it."""
+    assert not REGISTRY.dialect("grbl").TOOL_LENGTH_OFFSET
+    text = _write("grbl", PROBES["TOOL_LENGTH_OFFSET"], with_tools(lengths={1: 12.5}))
+    assert "G43.1 Z12.5" in text.splitlines() and "H" not in text
 
 
 @pytest.mark.parametrize("target", WRITERS)

@@ -217,7 +217,7 @@ def test_errors_in_standard_input_are_located_in_stdin():
 def test_toolpath_and_verify_read_standard_input(tmp_path):
     grbl = tmp_path / "o.gcode"
     assert _run("translate", PROGRAM, "--from", "fanuc", "--to", "grbl", "--on-unsupported", "warn",
-                "-o", grbl).returncode == 0
+                "--machine", ROOT / "tests/support/zero_tools.xml", "-o", grbl).returncode == 0
     done = _run_input(PROGRAM.read_bytes(), "verify", "-", grbl, "--from", "fanuc", "--to", "grbl",
                      "--machine", ROOT / "tests/support/zero_tools.xml",
                      "--allow-ignored")  # grbl has no cutter compensation: the setting is left out

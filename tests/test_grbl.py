@@ -114,8 +114,8 @@ def test_a_plain_pause_stays_a_pause() -> None:
 # -- what grbl cannot express ------------------------------------------------------------------------
 
 @pytest.mark.parametrize("fanuc, message", [
-    ("G43 H01 Z50.\n", "t.nc:2:1: error: the grbl dialect cannot express a tool length offset from a table "
-                       "(G43 H1; grbl has only G43.1)"),
+    ("G43 H01 Z50.\n", "t.nc:2:5: error: the set-up gives tool length register 1 no value: add <Tool "
+                       "number=\"1\" length=\"..\"/> to its <Tools>, or write the register in the program"),
     ("G41 D01 G01 X5. F100.\n", "t.nc:2:1: error: the grbl dialect cannot express cutter radius compensation "
                                 "(left)"),
     ("M19\n", "t.nc:2:1: error: the grbl dialect cannot express an oriented spindle stop (M19); a set-up with "
@@ -131,11 +131,11 @@ def test_unsupported_constructs_are_located_errors(fanuc: str, message: str) -> 
 
 
 def test_warn_mode_keeps_the_motion_of_a_block_and_comments_the_original() -> None:
-    text, warnings = to_grbl("N60 G43 H01 Z50. M08\n", on_unsupported="warn")
-    assert text == "(UNSUPPORTED LINE 2: N60 G43 H01 Z50. M08)\nN60 G0 Z50. M8\n"
-    assert warnings == ["t.nc:2:1: warning: the grbl dialect cannot express a tool length offset from a table "
-                        "(G43 H1; grbl has only G43.1); dropped (H01) (the block's motion moves the programmed "
-                        "point without the tool's length); the rest of the block is written"]
+    text, warnings = to_grbl("N60 G41 D01 G01 X5. F100. M08\n", on_unsupported="warn")
+    assert text == "(UNSUPPORTED LINE 2: N60 G41 D01 G01 X5. F100. M08)\nN60 G1 X5. F100. M8\n"
+    assert warnings == ["t.nc:2:1: warning: the grbl dialect cannot express cutter radius compensation (left); "
+                        "dropped (D01) (the block's motion moves the tool's centre along the programmed path); the "
+                        "rest of the block is written"]
 
 
 def test_warn_mode_drops_a_motion_with_the_mode_it_needs() -> None:

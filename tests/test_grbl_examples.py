@@ -1,9 +1,8 @@
 """End to end through the command line: Fanuc programs translated to grbl, then ``postproc verify``.
 
-Every Fanuc example uses tool length offsets (``G43 H``), which grbl cannot express (no tool table),
-so they are translated with ``--on-unsupported warn``: the offset is dropped with a located warning and
-the block's motion is kept, so the toolpaths must still agree exactly (the simulator takes every tool
-length offset as zero). Without ``warn`` the same programs fail with located errors.
+Every Fanuc example uses tool length offsets (``G43 H``), which grbl has no table for: each becomes
+grbl's ``G43.1 Z<length>`` with the set-up's value, and the toolpaths agree exactly; a set-up without
+the value is a located error, and a router whose tools are touched off drops them with a note.
 The hole-cycle goldens are translated with a set-up that gives their Fanuc parameters and says how the
 grbl machine stands in for an oriented spindle stop.
 """
@@ -49,34 +48,39 @@ def _located(err: str) -> list[dict[str, str]]:
 
 @pytest.mark.parametrize("path", EXAMPLES, ids=lambda p: p.name)
 def test_fanuc_example_to_grbl_verifies_with_zero_deviation(cli: Any, tmp_path: Path, path: Path) -> None:
+    """Each ``G43 H<n>`` becomes ``G43.1 Z<length>`` from the set-up's table: long_tools.xml gives tool n
+    100 + n mm (in an inch program, that over 25.4), so the length written is known without the code."""
+    support = Path(__file__).resolve().parent / "support"
     out = tmp_path / (path.stem + ".gcode")
-    result = cli("translate", path, "--from", "fanuc", "--to", "grbl", "--on-unsupported", "warn", "-o", out)
+    result = cli("translate", path, "--from", "fanuc", "--to", "grbl", "--on-unsupported", "warn", "-o", out,
+                 "--machine", support / "long_tools.xml")
     assert result.status == 0, result.err
     warnings = [w for w in _located(result.err) if not _point_mix(w)]
-    assert warnings and all(w["level"] == "warning" and w["file"] == str(path) for w in warnings)
+    assert all(w["level"] == "warning" and w["file"] == str(path) for w in warnings)
     source = path.read_text().splitlines()
-    for w in warnings:
-        line = source[int(w["line"]) - 1]
-        assert ("G43" in line and "tool length offset" in w["message"]) or (
-            line.startswith("/") and "block delete" in w["message"]), (line, w)
-    for line in out.read_text().splitlines():
-        code = re.sub(r"\([^)]*\)", "", line)  # what grbl's parser sees: nothing it rejects
-        assert not re.search(r"G8[1-9]|G7[346]|G9[5-9]|G4[1-4]\b|M0?6\b|M19|%|O\d|[HDQ]\d|^/", code), line
-    # grbl has no tool table: the G43 left out moves the tool by its length, which verify measures (and no
-    # --allow-ignored accepts); on a machine whose tools measure zero nothing moves and it verifies
-    support = Path(__file__).resolve().parent / "support"
-    verify = cli("verify", path, out, "--from", "fanuc", "--to", "grbl", "--machine", support / "long_tools.xml",
-                 "--allow-ignored")
-    if any("G43" in line for line in source):
-        assert verify.status == 1 and "exceeds tolerance" in verify.out.decode(), verify.out.decode()
-    verify = cli("verify", path, out, "--from", "fanuc", "--to", "grbl", "--machine", support / "zero_tools.xml")
-    assert verify.status == 0, verify.out.decode() + verify.err
-    assert verify.out.decode().startswith("max deviation 0.0000 mm"), verify.out.decode()
-    assert verify.out.decode().splitlines()[0].endswith(": ok")
+    for w in warnings:  # only the block delete grbl ignores is refused
+        assert source[int(w["line"]) - 1].startswith("/") and "block delete" in w["message"], w
+    code = [re.sub(r"\([^)]*\)", "", line).strip() for line in out.read_text().splitlines()]
+    for line in code:  # what grbl's parser sees: nothing it rejects
+        assert not re.search(r"G8[1-9]|G7[346]|G9[5-9]|G4[1-4]\b(?!\.1)|M0?6\b|M19|%|O\d|[HDQ]\d|^/", line), line
+    inch = any(re.search(r"G20\b", line) for line in source)
+    registers = [int(m.group(1)) for line in source for m in [re.search(r"G43\b.*?H0*(\d+)", line)] if m]
+    written = [float(m.group(1)) for line in code for m in [re.search(r"\bG43\.1 Z(\S+)", line)] if m]
+    assert written == pytest.approx([(100 + n) / (25.4 if inch else 1.0) for n in registers], abs=1e-5)
+    for machine in ("long_tools.xml", "zero_tools.xml"):
+        if machine == "zero_tools.xml":
+            result = cli("translate", path, "--from", "fanuc", "--to", "grbl", "--on-unsupported", "warn",
+                         "-o", out, "--machine", support / machine)
+            assert result.status == 0, result.err
+        verify = cli("verify", path, out, "--from", "fanuc", "--to", "grbl", "--machine", support / machine)
+        assert verify.status == 0, verify.out.decode() + verify.err
+        assert verify.out.decode().startswith("max deviation 0.0000 mm"), verify.out.decode()
+        assert verify.out.decode().splitlines()[0].endswith(": ok")
 
 
 @pytest.mark.parametrize("path", EXAMPLES, ids=lambda p: p.name)
-def test_fanuc_example_to_grbl_fails_on_g43_without_warn(cli: Any, tmp_path: Path, path: Path) -> None:
+def test_fanuc_example_to_grbl_without_tool_lengths_is_a_located_error(cli: Any, tmp_path: Path, path: Path) -> None:
+    """A set-up without the registers' lengths: every G43 is a located error naming the element to add."""
     out = tmp_path / "never.gcode"
     result = cli("translate", path, "--from", "fanuc", "--to", "grbl", "-o", out)
     assert result.status == 1
@@ -84,8 +88,30 @@ def test_fanuc_example_to_grbl_fails_on_g43_without_warn(cli: Any, tmp_path: Pat
     errors = [e for e in _located(result.err) if not _point_mix(e)]
     source = path.read_text().splitlines()
     g43_lines = [n for n, line in enumerate(source, 1) if "G43" in line]
-    assert [int(e["line"]) for e in errors if "tool length offset" in e["message"]] == g43_lines
+    missing = [e for e in errors if "<Tool number=" in e["message"] and "length=" in e["message"]]
+    assert [int(e["line"]) for e in missing] == g43_lines
+    assert all(source[int(e["line"]) - 1][int(e["col"]) - 1] == "H" for e in missing)
     assert all(e["level"] == "error" for e in errors)
+
+
+def test_touched_off_router_drops_the_lengths_with_a_note_and_verifies(cli: Any, tmp_path: Path) -> None:
+    path = EXAMPLES[1]
+    setup = tmp_path / "router.xml"
+    setup.write_text('<MachineSetup name="router">\n  <Machine toolLengths="touched_off"/>\n</MachineSetup>\n')
+    out = tmp_path / "out.gcode"
+    result = cli("translate", path, "--from", "fanuc", "--to", "grbl", "--machine", setup, "-o", out)
+    assert result.status == 0, result.err
+    text = out.read_text()
+    assert "G43" not in text.replace("TOOL LENGTH", "")
+    notes = [line for line in text.splitlines() if "DROPPED: TOOLS ARE TOUCHED OFF" in line]
+    assert len(notes) == sum("G43" in line for line in path.read_text().splitlines())
+    verify = cli("verify", path, out, "--from", "fanuc", "--to", "grbl", "--machine", setup)
+    assert verify.status == 0, verify.out.decode()
+    assert "tools are touched off at their change" in verify.out.decode()
+    # the same output on a machine with tool lengths is caught: each move runs 100 mm and more too low
+    support = Path(__file__).resolve().parent / "support"
+    verify = cli("verify", path, out, "--from", "fanuc", "--to", "grbl", "--machine", support / "long_tools.xml")
+    assert verify.status == 1 and "exceeds tolerance" in verify.out.decode()
 
 
 @pytest.mark.parametrize("path", CYCLES, ids=lambda p: p.name)

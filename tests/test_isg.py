@@ -211,9 +211,14 @@ def test_fanuc_return_levels_and_cycle_cancel_never_reach_isg_text() -> None:
     assert report.ok, report.summary()
 
 
-def test_fanuc_g61_exact_stop_has_no_isg_spelling() -> None:
-    assert _errors("G21\nG61\nG0 X1.\nM30\n", "fanuc", "isg") == [
-        "in.nc:2:1: error: the isg dialect cannot express path control exact_stop"]
+@pytest.mark.parametrize("fanuc, isg", [("G61", "G360"), ("G64", "G359"), ("G09 G01 X2. F100.", "G60 G01 X2. F100.")])
+def test_fanuc_exact_stop_modes_are_isg_g360_g359_g60_never_g61(fanuc: str, isg: str) -> None:
+    """[V] TF5200 "Exact stop (G60/G360/G359)": ISG's G61 is polynomial blending (rounded corners), so
+    Fanuc's G61 is written G360; and back, each reads as the Fanuc code it came from."""
+    text = f"G21\n{fanuc}\nG0 X1.\nM30\n"
+    out = _translate(text, "fanuc", "isg")[0]
+    assert out.splitlines()[1] == isg and "G61" not in out
+    assert _translate(out, "isg", "fanuc")[0].splitlines()[1] == fanuc
 
 
 def test_an_array_element_keeps_its_block_verbatim_and_is_refused_elsewhere() -> None:

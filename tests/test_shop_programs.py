@@ -61,9 +61,9 @@ def _lines(text: str) -> list[str]:
     return io.StringIO(text, newline="").readlines()
 
 
-def _translate(name: str, target: str) -> tuple[str, str]:
+def _translate(name: str, target: str, setup: MachineSetup | None = None) -> tuple[str, str]:
     out, warned = io.StringIO(newline=""), io.StringIO()
-    translate(_lines(_source(name)), out, file=name, source="fanuc", target=target, setup=_setup(name),
+    translate(_lines(_source(name)), out, file=name, source="fanuc", target=target, setup=setup or _setup(name),
               on_unsupported="warn", diagnostics=Diagnostics(ErrorLevel.RAISE, warn_stream=warned))
     return out.getvalue(), warned.getvalue()
 
@@ -98,23 +98,26 @@ def test_linuxcnc_translation_verifies_at_zero_deviation(name: str) -> None:
 
 
 @pytest.mark.parametrize("name", [n for n in TRANSLATED if PROGRAMS[n][1] and n not in RIGID_TAPS])
-def test_grbl_translation_loses_the_tool_lengths_and_verify_measures_it(name: str) -> None:
-    out, _ = _translate(name, "grbl")
+def test_grbl_translation_writes_the_tool_lengths_and_verifies(name: str) -> None:
     lengths = {n: 100.0 + n for n in REGISTERS}
+    long_tools = with_tools(_machine(name), lengths=lengths)
+    out, _ = _translate(name, "grbl", long_tools)
+    # grbl has no tool table: each G43 H<n> is written as G43.1 Z<100 + n> (in an inch program, over 25.4)
+    inch = "G20" in _source(name)
+    registers = [int(h) for h in re.findall(r"G43\b[^\n(]*?H0*(\d+)", _source(name))]
+    written = [float(z) for z in re.findall(r"G43\.1 Z(\S+)", out)]
+    assert registers and written == pytest.approx([(100 + n) / (25.4 if inch else 1) for n in registers], abs=1e-5)
     report = verify_lines(_lines(_source(name)), _lines(out), file_in=name, file_out="out.gcode", source="fanuc",
-                          target="grbl", setup=with_tools(_machine(name), lengths=lengths))
-    # grbl has no tool table: without its G43 every move runs the tool's length (over 100 mm) lower
-    assert not report.ok and report.max_deviation > 100, report.summary()
-    report.allow_ignored = True
-    assert not report.ok  # a measured deviation, not a setting left out: nothing accepts it
-    # on a machine whose tools measure zero only the cutter compensation is lost (not simulated for Fanuc)
-    report = verify_lines(_lines(_source(name)), _lines(out), file_in=name, file_out="out.gcode", source="fanuc",
-                          target="grbl", setup=_setup(name))
+                          target="grbl", setup=long_tools)
     assert report.mismatch is None and report.max_deviation == 0, report.summary()
+    # only the cutter compensation is lost (not simulated for Fanuc, so not resolved for grbl: a setting)
     lost = [note for note in report.ignored if note.startswith("cutter compensation differs")]
     assert bool(lost) == report.left_out_moves == ("G41" in _source(name) or "G42" in _source(name))
+    # the same output on a machine whose tools measure zero runs every move over 100 mm too high
+    report = verify_lines(_lines(_source(name)), _lines(out), file_in=name, file_out="out.gcode", source="fanuc",
+                          target="grbl", setup=_setup(name))
     report.allow_ignored = True
-    assert report.ok
+    assert not report.ok and report.max_deviation > 100, report.summary()
 
 
 @pytest.mark.parametrize("name", RIGID_TAPS)
@@ -244,3 +247,28 @@ def test_four_axis_indexes_in_degrees() -> None:
     got = _events("four_axis_index.nc")
     assert _find(got, 10) == [{"line": 10, "move": "rapid", "x": 0, "y": 0, "z": 60, "a": 90}]
     assert _find(got, 9) == [{"line": 9, "event": "machine", "code": "M11", "name": "4th axis unclamp"}]
+
+
+ISG_READY = ["mastercam_fanuc_slot.nc", "solidworks_cam_cover.nc"]
+"""Programs ISG runs once its tool data and reference returns are resolved; the others stop at a machine's
+own codes (G187, G5.1, M88, M10/M11), a rigid tap or a work offset set by G10 L2, which ISG has no spelling
+for here."""
+
+
+@pytest.mark.parametrize("name", ISG_READY)
+def test_isg_translation_selects_d_and_returns_home_and_verifies(name: str) -> None:
+    from postproc.setup_machine import AxisTravel
+    setup = with_tools(_machine(name), lengths={n: 100.0 + n for n in REGISTERS})
+    setup.travel = {a: AxisTravel(name=a, home=-5.0 if a == "Z" else 0.0) for a in "XYZ"}  # type: ignore[arg-type]
+    out, _ = _translate(name, "isg", setup)
+    source = _source(name)
+    # every G43 H<n> is a D<n>, every G28 a #SUPPRESS OFFSETS to the home (Z-5 in the program's units)
+    registers = [int(h) for h in re.findall(r"G43\b[^\n(]*?H0*(\d+)", source)]
+    assert [int(d) for d in re.findall(r"\bD0*([1-9]\d*)\b", out)] == registers
+    inch = "G20" in source
+    homes = re.findall(r"^#SUPPRESS OFFSETS Z(\S+)$", out, re.M)
+    assert homes and all(float(z) == pytest.approx(-5.0 / (25.4 if inch else 1.0), abs=1e-5) for z in homes)
+    assert len(homes) == len(re.findall(r"G28[^\n]*Z", source))
+    report = verify_lines(_lines(source), _lines(out), file_in=name, file_out="out.nc", source="fanuc",
+                          target="isg", setup=setup)
+    assert report.ok and report.max_deviation == 0, report.summary()

@@ -227,24 +227,24 @@ EXAMPLES = Path(__file__).resolve().parents[1] / "examples" / "fanuc"
 @pytest.mark.parametrize("name, longest", [("o1001_plate_drill_tap.nc", 140.25), ("o1003_pocket_and_edge.nc", 105.0)])
 def test_fanuc_to_grbl_translation_verifies(name: str, longest: float) -> None:
     """grbl has no canned cycles: O1001's holes come out expanded and must trace the same path. It has no
-    tool table either: the G43s are lost, and with the example machine's tool lengths (H1 120, H2 95.5,
-    H3 140.25, H4 105, H5 88) every move of the output runs the tool's length off, the longest used
-    being the largest deviation."""
+    tool table either: each G43 H is written as G43.1 with the example machine's length (H1 120, H2 95.5,
+    H3 140.25, H4 105, H5 88), and the paths agree; run on a machine whose tools measure zero, every
+    move of that output runs the tool's length off, the longest used being the largest deviation."""
     from postproc.errors import Diagnostics
     from postproc.plugins import default_registry
     if "grbl" not in default_registry().dialects:
         pytest.skip("the grbl plugin is not installed")
     source = (EXAMPLES / name).read_text()
     out = io.StringIO()
-    translate(lines(source), out, file=name, source="fanuc", target="grbl", on_unsupported="warn",
-              diagnostics=Diagnostics(warn_stream=io.StringIO()))
     machine = with_tools(lengths={1: 120.0, 2: 95.5, 3: 140.25, 4: 105.0, 5: 88.0})
+    translate(lines(source), out, file=name, source="fanuc", target="grbl", on_unsupported="warn",
+              diagnostics=Diagnostics(warn_stream=io.StringIO()), setup=machine)
     report = verify_lines(lines(source), lines(out.getvalue()), file_in=name, file_out="out.nc",
-                          source="fanuc", target="grbl", setup=machine)
+                          source="fanuc", target="grbl", setup=machine, allow_ignored=True)
+    assert report.ok and report.max_deviation == 0, report.summary()
+    report = verify_lines(lines(source), lines(out.getvalue()), file_in=name, file_out="out.nc",
+                          source="fanuc", target="grbl", setup=with_tools())
     assert not report.ok and report.max_deviation == longest, report.summary()
     report.allow_ignored = True
     assert not report.ok  # measured, not left out: --allow-ignored does not accept it
-    report = verify_lines(lines(source), lines(out.getvalue()), file_in=name, file_out="out.nc",
-                          source="fanuc", target="grbl", setup=with_tools(), allow_ignored=True)
-    assert report.ok and report.max_deviation == 0, report.summary()  # tools measured as zero lose nothing
     assert report.moves > 20

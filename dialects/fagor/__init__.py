@@ -9,7 +9,7 @@ What DIALECTS.md marks uncertain for the 8070 [?] is kept verbatim (``reader``).
 
 from __future__ import annotations
 
-from typing import Callable
+from typing import TYPE_CHECKING, Callable, Iterator
 
 from postproc.context import Context
 from postproc.comments import CommentSyntax
@@ -22,7 +22,17 @@ from postproc.syntax import Pipeline
 from postproc.writer_base import Writer
 from postproc.xmlio import XFactory
 
+if TYPE_CHECKING:
+    from postproc.ir import Block
+
 from .cycle_words import SECONDS, cycle_words
+
+
+def select_tool_data(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """``postproc.isg_family.tool_data.select_tool_data``, imported when a translation first lowers for
+    this dialect."""
+    from postproc.isg_family.tool_data import select_tool_data as step
+    return step(blocks, ctx, target)
 
 
 class Fagor(Dialect):
@@ -53,14 +63,16 @@ class Fagor(Dialect):
     the 8070 [?: DIALECTS.md 1.4], so no value is written between parentheses."""
     CUTTER_COMPENSATION = True
     """G40/G41/G42."""
-    TOOL_LENGTH_OFFSET = False
-    """Fagor selects the tool's offsets with D, not Fanuc's G43 H: not modelled, so refused."""
+    TOOL_LENGTH_OFFSET = True
+    """``G43 D<n>`` applies tool offset n's length, ``G44`` cancels it (``postproc.isg_family.tool_data``):
+    a Fanuc ``G43 H``/``G41 D`` is written with the D it needs; Fanuc's G44 (a negative offset) is refused."""
     PROGRAMS = False
     """P parameters and expressions are read [K]; control flow and subroutines are kept verbatim [?], so a
     program that computes reaches Fagor flattened."""
-    LOWERING = (stops_before_motion,)
+    LOWERING = (stops_before_motion, select_tool_data)
     """A spindle stop or coolant off that the source made before its block's motion goes in a block of
-    its own before it (Fagor acts on M05/M09 after the block's motion, as Fanuc [?])."""
+    its own before it (Fagor acts on M05/M09 after the block's motion, as Fanuc [?]); another family's
+    length and radius registers become the D that selects them (``select_tool_data``)."""
 
     @classmethod
     def python_pipeline(cls, setup: MachineSetup) -> Pipeline:

@@ -8,6 +8,8 @@ table and hole-cycle words.
   confirmed [?], so a cycle there is a located error.
 * ``M19`` only where the set-up says ``<Cycles orientation="m19"/>`` [?].
 * ``G04 K``: a dwell of K in the cycle dwell's unit.
+* ``D<n>`` selects tool offset n (the 8070 takes ``D1`` before any); ``G43`` applies its length, ``G44``
+  cancels it (not Fanuc's negative offset), G41/G42 take its radius (``postproc.isg_family.tool_data``).
 * Multiple machining (``G160``-``G165``): a block with one of those codes goes, whole and before any
   word rule, to ``multiple_machining`` (the hook below), which reads its words itself (its ``P2.005``
   ranges, its ``I``/``K`` meanings).
@@ -24,9 +26,15 @@ from postproc.ir import Block, Dwell
 from postproc.rs274.block_syntax import WordBlockSyntax, col_of_word
 from postproc.rs274.codes import CodeTable, g_key
 
+from postproc.isg_family.tool_data import expects_register, read_tool_data
+
 from .codes import CODES, PATTERN_CODES
 from .cycle_words import cycle_words
 from .multiple_machining import multiple_machining
+
+
+FIRST_OFFSET = 1
+"""The tool offset in force before a program selects one [V: 8070 programming manual REF 1709 p.240]."""
 
 
 class FagorBlockSyntax(WordBlockSyntax):
@@ -54,6 +62,14 @@ class FagorBlockSyntax(WordBlockSyntax):
                             and CODES.g[g_key(num)][1] == "cycle")
                 raise ProgramError(f"G{code}: Fagor hole cycles are read in the XY plane (G17) only (which axis Z "
                                    "names in G18/G19 is not confirmed)", ctx.at(block, col_of_word(block, "G", code)))
+
+    def g_sections(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],
+                   used: set[str], cycle_block: bool) -> None:
+        length = codes.get("08")
+        if length is not None and length[2] == "positive":
+            expects_register(values, ctx, FIRST_OFFSET)
+        super().g_sections(block, ctx, codes, values, used, cycle_block)
+        read_tool_data(block, ctx, values, used, toggles=True, first=FIRST_OFFSET)
 
     def cycle_data_letters(self, ctx: Context) -> str:
         """Z (the reference plane, an axis letter already), I (the depth) and K (the dwell)."""

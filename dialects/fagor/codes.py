@@ -21,6 +21,16 @@ with Fanuc's numbers means here (DIALECTS.md 1.4, 2.3, 3.4):
   an expansion writes it only when the set-up says ``<Cycles orientation="m19"/>``].
 * ``G160``-``G165`` (multiple machining) are routed by the block syntax to its hook, not read here.
 * ``M17``/``M29`` end a local subroutine [?]: kept verbatim.
+* Corners [V: 8070 programming manual REF 1709 p.197, "Controlled corner rounding (G05/G61)"]: ``G05``
+  (modal) and ``G61`` (one block) round the corner as ``#ROUNDPAR`` says, and exclude ``G07``, ``G50``,
+  ``G60``. ``G07`` is the square corner (each block ends in position) and ``G60`` its one-block form [K:
+  the 8055 family's G07; G60's one-block meaning from the 8070's list]: Fanuc's ``G61``/``G09`` are written
+  so. ``G05``, ``G50`` and ``G61`` are kept verbatim: which of them (if any) is Fanuc's ``G64`` cutting
+  mode is not confirmed [?], so a Fanuc ``G64`` is refused, and Fanuc's ``G61`` is never written ``G61``.
+* ``G43`` applies the length of the selected tool offset ``D``; ``G44`` **cancels** it [V: 8055 programming
+  manual 8.2, "G44: cancellation of tool length compensation"; [K] the 8070 keeps them]. Fanuc's ``G44`` is a
+  negative offset: it is never written as Fagor's ``G44`` (refused, ``postproc.isg_family.tool_data``), and
+  Fagor's ``G44`` is read as a cancel (written ``G49`` for Fanuc).
 """
 
 from __future__ import annotations
@@ -39,12 +49,16 @@ ROWS = (
     ("G40", "07", "cutter", "off"),
     ("G41", "07", "cutter", "left"),
     ("G42", "07", "cutter", "right"),
+    ("G43", "08", "length", "positive"),
+    ("G44", "08", "length", "cancel"),
     ("G54", "14", "offset", 1),
     ("G55", "14", "offset", 2),
     ("G56", "14", "offset", 3),
     ("G57", "14", "offset", 4),
     ("G58", "14", "offset", 5),
     ("G59", "14", "offset", 6),
+    ("G07", "15", "path", "exact_stop"),
+    ("G60", "00", "path_once", "exact_stop"),
     *((f"G159={n}", "14", "offset", n) for n in range(1, 7)),
     ("G70", "06", "units", "inch"),
     ("G71", "06", "units", "mm"),
@@ -87,6 +101,8 @@ CODES = CodeTable(
         "82": "drilling with variable peck [?]", "83": "deep-hole drilling with constant peck [?]",
         "84": "tapping [?]", "85": "reaming [?]", "86": "boring with rapid withdrawal [?]",
         "87": "rectangular pocket", "88": "circular pocket",
+        "5": "corner rounding by #ROUNDPAR", "50": "controlled corner rounding",
+        "61": "corner rounding for one block",
         **{f"159={n}": f"zero offset {n}" for n in range(7, MAX_OFFSET + 1)},
     },
     native_m={17: "end of a local subroutine [?]", 29: "end of a local subroutine [?]"},

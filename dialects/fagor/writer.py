@@ -115,3 +115,45 @@ class FagorWriter(WordWriter):
 
     def return_level_words(self, s: Any, block: Block) -> list[str]:
         return self._code("return", s.level, "a cycle return level", block)
+
+    # -- what the 8070 has no confirmed spelling for -----------------------------------------------------
+    def path_control_words(self, s: Any, block: Block) -> list[str]:
+        if s.mode == "cutting" and not s.one_shot:
+            self.unsupported("the cutting mode (Fanuc G64): which of the 8070's corner modes (G05 with "
+                             "#ROUNDPAR, G50) runs the path as it does is not confirmed", block)
+        return super().path_control_words(s, block)
+
+    def motion_words(self, s: Motion, block: Block) -> list[str]:
+        if s.mode in ("home", "home2"):
+            self._no_machine_move("a reference return (G28/G30)", block)
+        return super().motion_words(s, block)
+
+    def machine_coordinates_words(self, s: Any, block: Block) -> list[str]:
+        motion = block.sections.get("Motion")
+        if motion is not None and getattr(motion, "axes", None):
+            self._no_machine_move("a move in machine coordinates (G53)", block)
+        return []
+
+    def _no_machine_move(self, what: str, block: Block) -> None:
+        self.unsupported(f"{what}: the 8070's machine-coordinate move (G53) and home search (G74) are not "
+                         "confirmed to run as Fanuc's [?], and resolving it into work coordinates needs the "
+                         "work offset and tool length the machine holds", block)
+
+    # -- tool data (``postproc.isg_family.tool_data`` chose the D) ---------------------------------------
+    def tool_length_offset_words(self, s: Any, block: Block) -> list[str]:
+        """``G43 D<n>`` applies offset n's length, ``G44`` cancels it (not Fanuc's negative offset)."""
+        if s.mode == "cancel":
+            return [self.code("length", "cancel", "tool length offset cancel", block)]
+        if s.mode == "negative":
+            self.unsupported("a negative tool length offset (Fanuc G44): Fagor's G44 cancels the offset, and no "
+                             "code subtracts a length", block)
+        if s.mode != "positive" or s.register is None:
+            self.unsupported(f"tool length offset {s.mode}", block)
+        return [self.code("length", "positive", "a tool length offset", block), "D" + self.register(s.register, block)]
+
+    def cutter_compensation_words(self, s: Any, block: Block) -> list[str]:
+        """``G41 D<r>``; the D is left out where the block's ``G43 D`` already selects it."""
+        offset = block.sections.get("ToolLengthOffset")
+        if offset is not None and getattr(offset, "register", None) == s.register:
+            return self._code("cutter", s.mode, f"cutter compensation {s.mode}", block)
+        return super().cutter_compensation_words(s, block)

@@ -9,7 +9,7 @@ numbers collide with Fanuc's are told apart.
 
 from __future__ import annotations
 
-from typing import Callable
+from typing import TYPE_CHECKING, Callable, Iterator
 
 from postproc.comments import CommentSyntax
 from postproc.dialect import Dialect, Lazy, Reader
@@ -19,6 +19,17 @@ from postproc.setup import MachineSetup
 from postproc.syntax import Pipeline
 from postproc.writer_base import Writer
 from postproc.xmlio import XFactory
+
+if TYPE_CHECKING:
+    from postproc.context import Context
+    from postproc.ir import Block
+
+
+def select_tool_data(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """``postproc.isg_family.tool_data.select_tool_data``, imported when a translation first lowers for
+    this dialect."""
+    from postproc.isg_family.tool_data import select_tool_data as step
+    return step(blocks, ctx, target)
 
 
 class Isg(Dialect):
@@ -36,16 +47,20 @@ class Isg(Dialect):
     """M19 to the machine's angle [?]."""
     CUTTER_COMPENSATION = True
     """G40/G41/G42."""
-    TOOL_LENGTH_OFFSET = False
-    """ISG selects the tool's offsets with D, not Fanuc's G43 H: not modelled, so refused."""
+    TOOL_LENGTH_OFFSET = True
+    """``D<n>`` selects tool data n, length and radius together (``postproc.isg_family.tool_data``): a
+    Fanuc ``G43 H``/``G41 D`` is written as the D it needs; a negative offset (G44) is refused."""
+    LENGTH_TOGGLES = False
+    """No length on/off code: the selected D's length applies [V: TF5200 "Tool offset"]."""
     COMMENTS = CommentSyntax(parens=True, nested=True, semicolon=True)
     """``( )`` comments nest, ``;`` runs to the end of the block [V: DIALECTS.md 1.3]; a value in a
     ``#COMMENT BEGIN`` ... ``#COMMENT END`` block is not recognised as commented (refused: the safe side)."""
     PROGRAMS = True
     """P parameters, expressions, $IF/$SWITCH/$FOR/$WHILE/$DO/$REPEAT, $GOTO, %L/LL and L subroutines."""
-    LOWERING = (stops_before_motion,)
+    LOWERING = (stops_before_motion, select_tool_data)
     """A spindle stop or coolant off that the source made before its block's motion goes in a block of
-    its own before it (ISG acts on M05/M09 after the block's motion, as Fanuc [?])."""
+    its own before it (ISG acts on M05/M09 after the block's motion, as Fanuc [?]); another family's
+    length and radius registers become the D that selects them (``select_tool_data``)."""
 
     @classmethod
     def python_pipeline(cls, setup: MachineSetup) -> Pipeline:

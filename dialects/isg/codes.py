@@ -11,7 +11,11 @@ control are where the table matters (DIALECTS.md 1.3, 3.3):
 * ``G162`` (arc centre relative to the start, the default) is the only arc-centre mode the IR has: it
   adds nothing. ``G161`` (absolute centres) is kept verbatim.
 * ``G61``/``G260``/``G261`` (polynomial blending) round the path's corners: kept verbatim, never
-  simulated as sharp corners.
+  simulated as sharp corners. So Fanuc's ``G61`` (exact stop mode) is never written ``G61`` here.
+* Exact stop [V: TF5200 programming manual "Exact stop (G60/G360/G359)", 206301707]: ``G60`` for one
+  block (Fanuc ``G09``), ``G360`` selects it (Fanuc ``G61``), ``G359`` deselects it (Fanuc ``G64``).
+* ``G53`` deselects the zero offsets (modal), not Fanuc's one-block move in machine coordinates: kept
+  verbatim. A move in machine coordinates is ``#SUPPRESS OFFSETS`` (``writer``).
 * ``M19`` orients the spindle to the machine's angle (the set-up's ``orientAngle``) [?: a DIN M code
   whose ISG meaning we did not read].
 * ``M17``/``M29`` (subroutine end) are read by the reader (``reader.RETURN_CODES``), not here.
@@ -39,6 +43,7 @@ ROWS = (
     ("G57", "14", "offset", 4),
     ("G58", "14", "offset", 5),
     ("G59", "14", "offset", 6),
+    ("G60", "00", "path_once", "exact_stop"),
     ("G70", "06", "units", "inch"),
     ("G71", "06", "units", "mm"),
     ("G90", "03", "distance", "absolute"),
@@ -46,6 +51,8 @@ ROWS = (
     ("G94", "05", "feed_mode", "per_min"),
     ("G95", "05", "feed_mode", "per_rev"),
     ("G162", "16", "arc_centre", "relative"),
+    ("G359", "15", "path", "cutting"),
+    ("G360", "15", "path", "exact_stop"),
     ("M00", "", "program", "stop"),
     ("M01", "", "program", "optional_stop"),
     ("M02", "", "program", "end"),
@@ -70,7 +77,7 @@ CODES = CodeTable(
         "12": "corner deceleration off", "13": "corner deceleration on",
         "20": "end of mirroring", "21": "mirroring", "22": "mirroring", "23": "mirroring",
         "33": "thread cutting", "51": "diameter programming on", "52": "diameter programming off",
-        "53": "zero offset deselection", "60": "exact stop", "61": "polynomial blending for one block",
+        "53": "zero offset deselection", "61": "polynomial blending for one block",
         "63": "tapping", "74": "programmable homing", "92": "coordinate preset",
         "93": "feed as time", "96": "constant cutting speed", "97": "spindle speed in rpm",
         "98": "set the negative software limit switch", "99": "set the positive software limit switch",

@@ -11,7 +11,7 @@ are calls with their own level of ``V.L.`` variables (P parameters are shared, s
 
 A block continued with ``\\`` at the end of its line is one block whose text holds every line (written
 back as it was); it is located at its first line. ``#COMMENT BEGIN`` ... ``#COMMENT END`` lines are
-comment blocks. ``#VAR`` ... ``#ENDVAR``: declarations, typed or not (``declarations``). Every other ``#`` command is kept verbatim (``NativeCode``): it round-trips in ISG and
+comment blocks. ``#VAR`` ... ``#ENDVAR``: declarations, typed or not (``declarations``). ``#SUPPRESS OFFSETS`` with axis positions is a move in machine coordinates. Every other ``#`` command is kept verbatim (``NativeCode``): it round-trips in ISG and
 is refused by every other dialect and by the simulator, naming the command. So is a block using an
 array element (``P100[3]``, ``V.L.A[2]``), which the IR does not model (in a ``$`` statement it is an
 error: the statement's construct could not be paired).
@@ -30,7 +30,7 @@ from typing import Callable, ClassVar, Iterable, Iterator
 from postproc.control import CONTROL, Assign, Call, Label, Return, SubEnd, SubStart
 from postproc.dialect import Reader
 from postproc.errors import Location, ParseError, PostprocError
-from postproc.ir import BlockDelete, Block, Comments, NativeCode, ProgramStart, Sequence, TapeMark
+from postproc.ir import BlockDelete, Block, Comments, MachineCoordinates, NativeCode, ProgramStart, Sequence, TapeMark
 from postproc.rs274.lexer import split_lines
 
 from postproc.expr import Expr, Num, Var
@@ -258,8 +258,25 @@ class _State:
             self.in_var = None
             block.add(Comments([code[pos:].strip()]))
             return
+        if words[:2] == ["#SUPPRESS", "OFFSETS"] and "[" not in code[pos:]:
+            self.suppress_offsets(block, code, pos)
+            return
         name = command_name(code, pos)
         block.add(NativeCode("isg", describe_command(name), code[pos:].rstrip()))
+
+    def suppress_offsets(self, block: Block, code: str, pos: int) -> None:
+        """``#SUPPRESS OFFSETS X.. Z..``: the axis positions without any offset (zero, tool, preset...), in
+        this block only [V: TF5200 programming manual 207072907]: a move in machine coordinates, its words
+        read as a block's (the motion mode in force moves it)."""
+        start = code.upper().index("OFFSETS", pos) + len("OFFSETS")
+        lexed = Lexed()
+        lex(self.file, block.line, " " * start + code[start:], lexed)
+        if lexed.statement is not None or lexed.command is not None or lexed.assigns or lexed.call is not None \
+                or any(letter.upper() not in "XYZABCUVW" for letter, _ in lexed.words):
+            raise self.error(block.line, pos + 1, "#SUPPRESS OFFSETS takes axis positions only")
+        block.words.extend(lexed.words)
+        block.values.update(lexed.values)
+        block.add(MachineCoordinates())
 
     def returns(self, block: Block, code: str) -> None:
         """``M17``/``M29``: the end of the open local subroutine, or a return."""

@@ -11,6 +11,11 @@ statements in ISG's spelling, ``P`` parameters for the neutral ``#501``-``#999``
   (``SubprogramNames``): ISG names its subroutines (``%L <name>`` [V]), and whether a name of digits
   only is one is not confirmed [?].
 * A subroutine's end and a return are ``M17``; the definition's start is ``%L name``.
+* A move in machine coordinates (Fanuc ``G53``) is ``#SUPPRESS OFFSETS X..`` [V: TF5200 programming manual
+  207072907: the positions without any active offset, tool offsets included, in that block only], alone in
+  its block after ``G00`` (Fanuc moves there at rapid) and ``G90``; a reference return (``G28``) is its
+  intermediate move, then such a move to the set-up's ``<Axis home>`` (ISG's ``G74`` homes the axis, a
+  reference search, not a return). ISG's own ``G53`` (zero offset deselection) is never written.
 """
 
 from __future__ import annotations
@@ -22,7 +27,9 @@ from postproc.control import Assign, Call, Return, SubEnd, SubStart
 from postproc.dialect import Dialect
 from postproc.errors import UnsupportedError
 from postproc.expr import Expr
-from postproc.ir import Block, Section
+from postproc.event_order import after_motion
+from postproc.ir import Block, Motion, Section
+from postproc.state import MM_PER_INCH
 from postproc.rs274.codes import CodeTable
 from postproc.rs274.writer import WordWriter
 from postproc.subprogram_names import NameRule, SubprogramNames
@@ -33,6 +40,8 @@ from postproc.isg_family.expressions import spell_expr, spell_var, spell_word_va
 from postproc.isg_family.statements import spell_statement
 
 
+REFERENCE = frozenset(("home", "home2"))
+"""Motion modes of a reference return."""
 _WITH_DWELL = ("Dwell", "Sequence")
 """What shares an ISG dwell's block."""
 _ALONE_WITH_DWELL = frozenset((*_WITH_DWELL, "Comments", "BlockDelete"))
@@ -89,6 +98,12 @@ class IsgWriter(WordWriter):
             raise
 
     def generate(self, block: Block) -> str:
+        motion = block.sections.get("Motion")
+        if isinstance(motion, Motion) and ("MachineCoordinates" in block.sections or motion.mode in REFERENCE):
+            return self.machine_move(block, motion)
+        return self.generate_words(block)
+
+    def generate_words(self, block: Block) -> str:
         """A dwell is alone in its ISG block (only a block number may join it), in the block's order of
         events (``postproc.event_order``): what acts before the dwell (settings, tool, spindle start, coolant
         on) in a block before it, the motion and what ends the block after it."""
@@ -103,6 +118,68 @@ class IsgWriter(WordWriter):
 
     def program_start(self, s: Any, block: Block) -> str:
         return "%" + (str(s.number) if s.number is not None else str(s.name))
+
+    # -- machine coordinates ---------------------------------------------------------------------------
+    def machine_move(self, block: Block, motion: Motion) -> str:
+        """A move in machine coordinates (Fanuc ``G53``) or a reference return (``G28``: through its
+        intermediate point to the set-up's home position) as ``#SUPPRESS OFFSETS``, alone in its block, at
+        rapid and in absolute positions; what the block sets goes before it, what it ends after it."""
+        sections = block.sections
+        if "BlockDelete" in sections:
+            self.unsupported("a block skip on a move in machine coordinates (#SUPPRESS OFFSETS is a block "
+                             "of its own)", block)
+        moving = ("Motion", "MachineCoordinates", "Sequence")
+        before = {k: v for k, v in sections.items() if k not in moving and not after_motion(k, v)}
+        after = {k: v for k, v in sections.items() if k not in moving and k not in before}
+        if "Sequence" in sections:
+            before = {"Sequence": sections["Sequence"], **before}
+        text = self._part(block, before)
+        if motion.mode in REFERENCE:
+            if motion.axes and (self.modal.distance == "absolute" or any(v != 0 for v in motion.axes.values())):
+                text += self._part(block, {"Motion": Motion("rapid", dict(motion.axes))})  # the intermediate point
+            target: dict[str, float | Expr] = dict(self._reference(motion, block))
+        else:
+            target = dict(motion.axes)
+        incremental = self.modal.distance != "absolute"
+        modes = ([self.code("distance", "absolute", "absolute distance mode", block)] if incremental else []) + [
+            self.code("motion", "rapid", "rapid motion", block)]
+        words = []
+        for axis, value in target.items():
+            if not isinstance(value, (int, float)):
+                self.unsupported("a computed position in machine coordinates", block)
+            words.append(axis + self.number(float(value), axis))
+            self.carry.pop(axis, None)
+        text += " ".join(modes) + "\n" + "#SUPPRESS OFFSETS " + " ".join(words) + "\n"
+        if incremental:
+            text += self.code("distance", "incremental", "incremental distance mode", block) + "\n"
+        text += self._part(block, after)
+        if not text.endswith(block.eol or "\n"):
+            text = text[:-1] + (block.eol or "\n")
+        return text
+
+    def _part(self, block: Block, sections: dict[str, Section]) -> str:
+        if not sections:
+            return ""
+        part = Block(block.line, None, "\n")
+        part.sections = sections
+        return self.generate_words(part)
+
+    def _reference(self, motion: Motion, block: Block) -> dict[str, float]:
+        """The home position of each axis a reference return names, from the set-up, in program units."""
+        if motion.mode != "home":
+            self.unsupported("a return to the second reference position (G30): the set-up has no element for "
+                             "it (only each axis's home)", block)
+        setup = self.ctx.setup
+        scale = setup.machine.mm() / (MM_PER_INCH if self.modal.units == "inch" else 1.0)
+        target = {}
+        for axis in motion.axes:
+            travel = setup.travel.get(axis)
+            if travel is None or travel.home is None:
+                self.unsupported(f"a reference return of axis {axis}: ISG writes it as a move to the home position "
+                                 f"in machine coordinates, which the set-up does not give (add <Axes><Axis "
+                                 f"name=\"{axis}\" home=\"..\"/>)", block)
+            target[axis] = travel.home * scale
+        return target
 
     def statement_words(self, section: Section, block: Block) -> list[str]:
         try:
@@ -142,6 +219,25 @@ class IsgWriter(WordWriter):
     def cycle_cancel_words(self, s: Any, block: Block) -> list[str]:
         """Cycles reach ISG expanded, so there is nothing to cancel (ISG's G80 is a subroutine call)."""
         return []
+
+    # -- tool data (``postproc.isg_family.tool_data`` chose the D) ---------------------------------------
+    def tool_length_offset_words(self, s: Any, block: Block) -> list[str]:
+        """``D<n>`` selects tool data n (its length applies), ``D0`` none: ISG has no other length code."""
+        if s.mode == "cancel":
+            return ["D0"]
+        if s.mode == "negative":
+            self.unsupported("a negative tool length offset (Fanuc G44): D adds the tool's length, and no code "
+                             "subtracts it", block)
+        if s.mode != "positive" or s.register is None:
+            self.unsupported(f"tool length offset {s.mode} (ISG selects a tool's data with D)", block)
+        return ["D" + self.register(s.register, block)]
+
+    def cutter_compensation_words(self, s: Any, block: Block) -> list[str]:
+        """``G41``/``G42`` take the radius of the selected D: a D is written only where no ``D`` of the
+        block's length offset selects it already."""
+        if "ToolLengthOffset" in block.sections:
+            return self._code("cutter", s.mode, f"cutter compensation {s.mode}", block)
+        return super().cutter_compensation_words(s, block)
 
 
 def _local(name: str, block: Block, writer: IsgWriter) -> str:

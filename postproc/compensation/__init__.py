@@ -4,5 +4,7 @@ beside the path (``cutter_radius``). Register values come from ``tool_table``; t
 data (``rules``) chosen by the reading dialect, so another controller's rules are a new value, not new
 geometry.
 
-Simulation only: translation never reads these modules (DESIGN.md, "Machine features the target lacks").
+The simulation applies them; a translation for a target that lacks a feature resolves it with the same
+modules (DESIGN.md, "Machine features the target lacks"): the register values a target without a tool
+table needs written (``tool_table``).
 """

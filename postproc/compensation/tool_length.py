@@ -15,7 +15,7 @@ from .tool_table import ToolTable
 
 AXIS = "Z"
 """The axis the length is applied along (a mill's spindle axis)."""
-SIGNS = {"positive": 1.0, "negative": -1.0, "cancel": 0.0}
+SIGNS = {"positive": 1.0, "negative": -1.0, "cancel": 0.0, "dynamic": 1.0}
 
 
 class ToolLength:
@@ -25,14 +25,21 @@ class ToolLength:
         self.table = table
         self.offset = 0.0
 
-    def change(self, mode: str, register: int | None) -> None:
+    def change(self, mode: str, register: int | None, length: float | None = None, scale: float = 1.0) -> None:
         """Put a length offset in force (register values are read now: a later change of the register
-        needs the offset programmed again, as on the controllers modelled)."""
+        needs the offset programmed again, as on the controllers modelled). A ``dynamic`` offset carries
+        its ``length`` in program units (``scale`` mm per unit): [V] grbl wiki "G43.1 Z.. dynamic tool
+        length offset", LinuxCNC ``G43.1``."""
         sign = SIGNS.get(mode)
         if sign is None:
             raise ProgramError(f"tool length offset '{mode}' cannot be simulated")
         if sign == 0.0:
             self.offset = 0.0
+            return
+        if mode == "dynamic":
+            if length is None:
+                raise ProgramError("a dynamic tool length offset without its length cannot be simulated")
+            self.offset = length * scale
             return
         if register is None:
             raise ProgramError("a tool length offset without its register cannot be simulated")

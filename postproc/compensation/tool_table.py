@@ -2,7 +2,8 @@
 wrote (a programmable data input of the neutral tables ``tool_length``, ``tool_length_wear``,
 ``cutter_offset``, ``cutter_offset_wear``), else the set-up's ``<Tools><Tool>``. Geometry written by the
 program replaces the set-up's; wear is added to either. A register with neither is unknown: the
-simulation refuses to guess it, and the error names the element that would give it."""
+simulation refuses to guess it, and the error names the element that would give it. Translation reads
+them too, where a target without a tool table needs the values written (``postproc_grbl.lengths``)."""
 
 from __future__ import annotations
 
@@ -22,6 +23,8 @@ class ToolTable:
 
     def __init__(self, setup: MachineSetup) -> None:
         self.tools = setup.tools
+        self.touched_off = setup.machine.tool_lengths == "touched_off"
+        """Every tool is touched off at its change (``<Machine toolLengths>``): every length reads zero."""
         self.mm = setup.machine.mm()
         """mm per set-up length unit (``<Machine units>``)."""
         self.written: dict[tuple[str, int], float] = {}
@@ -64,7 +67,10 @@ class ToolTable:
         self.written[(quantity, register)] = value
 
     def length(self, register: int) -> float:
-        """The tool length in register ``register`` (mm), or a ProgramError naming what to add."""
+        """The tool length in register ``register`` (mm), or a ProgramError naming what to add; zero on a
+        machine whose tools are touched off."""
+        if self.touched_off:
+            return 0.0
         return self._value("length", register)
 
     def radius(self, register: int) -> float:

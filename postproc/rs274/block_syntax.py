@@ -434,6 +434,12 @@ class WordBlockSyntax(Syntax):
                     used.add("H")  # Fanuc 0M: G42 H19 takes the radius from offset 19
                     register = values["H"]
                 block.add(CutterCompensation(arg, register))
+            elif kind == "length" and arg == "dynamic":  # G43.1 Z<length> (grbl, RS274/NGC)
+                if "Z" not in values:
+                    raise ProgramError(f"G{num} needs the tool length as its Z word",
+                                       ctx.at(block, col_of_word(block, "G", num)))
+                used.add("Z")
+                block.add(ToolLengthOffset(arg, None, values["Z"]))
             elif kind == "length":
                 if arg != "cancel":
                     if "H" not in values:

@@ -8,6 +8,8 @@ else first. A probe that reaches the writer and is written anyway is a flag that
 
 from __future__ import annotations
 
+import copy
+
 import io
 from dataclasses import dataclass
 from typing import Any, Callable
@@ -119,6 +121,8 @@ def probe_problems(dialect: type[Dialect], probe: Probe, setup: MachineSetup) ->
     if probe.only_present and not has:
         return []
     program = NeutralProgram(probe.ops(dialect), start=dict(START))
+    if has:
+        setup = _with_probe_tool(setup)
     written = write_neutral(program.blocks(), dialect, setup, file="probe.nc")
     if written.crash is not None:
         return [f"{dialect.NAME}: writing {probe.what}, the writer crashed: {written.crash}"]
@@ -141,6 +145,18 @@ def probe_problems(dialect: type[Dialect], probe: Probe, setup: MachineSetup) ->
     if reached and not refused_here:
         return [f"{dialect.NAME}: {flag}, but the writer wrote {probe.what}:\n{written.text}"]
     return []
+
+
+def _with_probe_tool(setup: MachineSetup) -> MachineSetup:
+    """The set-up, with register 1 (the probes' length and radius register) measured as zero where it gives
+    none: a dialect that writes tool data from the set-up's table (D on ISG, G43.1 on grbl) needs its
+    values, and the probes are about the spelling, not the values."""
+    if "1" in setup.tools:
+        return setup
+    from ..setup_machine import ToolData
+    out = copy.copy(setup)
+    out.tools = {**setup.tools, "1": ToolData(number=1, length=0.0, radius=0.0)}
+    return out
 
 
 _PLAIN_WHEN_NO_DWELL = {"drill_dwell": "drill", "bore_dwell_feed": "bore_feed"}

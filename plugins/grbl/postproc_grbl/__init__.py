@@ -15,8 +15,10 @@ stored commit 0b5604b) and the "Grbl v1.1 Commands" wiki page (github.com/gnea/g
   there is no tool changer: a tool change is written as an M0 pause for a manual change) and **M19**
   (no oriented spindle stop).
 * Words F I J K L N P R S T X Y Z. **No canned cycles** (G73-G89 and G98/G99 are unsupported, so the
-  lowering expands them: NATIVE_CYCLES is empty), no G41/G42, **no G43 H** (no tool table: an
-  ``UnsupportedError``, which is correct), no G95, no H, D or Q words, no parameters or expressions.
+  lowering expands them: NATIVE_CYCLES is empty), no G41/G42 (the compensated path is written instead,
+  where the source's rules are modelled), **no G43 H** (no tool table: a G43 H
+  is written as G43.1 Z with the register's value from the set-up, ``lengths.py``), no G95, no H, D
+  or Q words, no parameters or expressions.
 * T is read and ignored. ``( )`` and ``;`` comments are stripped by the protocol layer; ``/`` block
   delete is ignored (the block runs); ``%`` is not supported. A line keeps at most 79 characters
   (``LINE_BUFFER_SIZE`` 80, without spaces and comments), and ``?``, ``!``, ``~`` and bytes above 0x7F
@@ -28,7 +30,7 @@ fail unless the set-up's ``<Cycles orientation="stop"|"m19">`` says how to stand
 
 from __future__ import annotations
 
-from typing import Callable, ClassVar
+from typing import TYPE_CHECKING, Callable, ClassVar, Iterator
 
 from postproc.comments import CommentSyntax
 from postproc.dialect import Dialect, Lazy, Reader
@@ -42,6 +44,22 @@ from postproc.xmlio import XFactory
 from postproc.rs274.lean_controller import lower_for_lean_controller
 
 from .codes import CODES
+
+if TYPE_CHECKING:
+    from postproc.context import Context
+    from postproc.ir import Block
+
+
+def write_tool_lengths(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """``lengths.write_tool_lengths``, imported when a translation first lowers for grbl."""
+    from .lengths import write_tool_lengths as step
+    return step(blocks, ctx, target)
+
+
+def resolve_cutter_compensation(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """``postproc.compensation.lowering.resolve_cutter_compensation``, imported when first used."""
+    from postproc.compensation.lowering import resolve_cutter_compensation as step
+    return step(blocks, ctx, target)
 
 
 class Grbl(Dialect):
@@ -67,14 +85,18 @@ class Grbl(Dialect):
     """The RS274/NGC order of execution: M5 and M9 act before the block's motion."""
     FEED_BEFORE_UNITS = False
     """grbl reads F in the block's new units [K: grbl gcode.c converts F by the block's G20/G21]."""
-    LOWERING = (lower_for_lean_controller,)
-    """Rewrites into what grbl runs (``lowering.py``): tool change as a pause, G49 before motion, full
-    circles with an end point; a moving block's spindle stop and coolant off after it (grbl runs them
-    before the motion: ``postproc.rs274.order_of_execution``)."""
+    LOWERING = (write_tool_lengths, resolve_cutter_compensation, lower_for_lean_controller)
+    """Rewrites into what grbl runs: a G43 H as ``G43.1 Z<length>`` from the set-up's tool table
+    (``lengths.py``); G41/G42 as the compensated path, where the source's rules are modelled
+    (``postproc.compensation.lowering``); tool change as a pause, G49 before motion, full circles with an end point; a
+    moving block's spindle stop and coolant off after it (grbl runs them before the motion:
+    ``postproc.rs274.order_of_execution``)."""
+    PATH_CONTROL = "cutting"
+    """grbl always blends (junction deviation); G61 is accepted and changes nothing [V: grbl wiki]."""
     CUTTER_COMPENSATION = False
     """Only G40."""
     TOOL_LENGTH_OFFSET = False
-    """No tool table: G43 H is refused (grbl's own G43.1 takes the offset value)."""
+    """No tool table: a G43 H is written as grbl's own G43.1 with the register's value (``lengths.py``)."""
     DWELL_UNIT = "seconds"
     """G4 P is in seconds."""
     COMMENTS = Lazy[CommentSyntax](".text:COMMENTS")

@@ -25,6 +25,7 @@ ROWS = (
     ("G28", "00", "home", "home"),
     ("G30", "00", "home", "home2"),
     ("G40", "07", "cutter", "off"),
+    ("G43.1", "08", "length", "dynamic"),
     ("G49", "08", "length", "cancel"),
     ("G53", "00", "machine", None),
     ("G54", "14", "offset", 1),
@@ -51,13 +52,14 @@ ROWS = (
     ("M19", "", "orient", None),
     ("M30", "", "program", "end_rewind"),
 )
-"""Codes whose meaning the IR models and grbl runs (G61 is accepted and has no effect in grbl; M1 is
+"""Codes whose meaning the IR models and grbl runs (G43.1 takes its length from the Z word of its block:
+a tool length offset ``dynamic``; G61 is accepted and has no effect in grbl; M1 is
 accepted and ignored; M7 needs ENABLE_M7 in config.h)."""
 
 NATIVE_G: dict[str, str] = {
     "10": "set work offsets (G10 L2/L20)", "28.1": "store G28 position", "30.1": "store G30 position",
     "38.2": "probe toward, error on failure", "38.3": "probe toward", "38.4": "probe away, error on failure",
-    "38.5": "probe away", "43.1": "dynamic tool length offset", "91.1": "incremental arc centres (the default)",
+    "38.5": "probe away", "91.1": "incremental arc centres (the default)",
     "92": "coordinate system offset", "92.1": "clear G92 offsets",
 }
 """grbl codes kept verbatim: they round-trip to grbl and are unsupported anywhere else."""
@@ -69,6 +71,7 @@ REFUSED_G: dict[str, str] = {
     "41": "cutter radius compensation (G41/G42) is not supported by grbl",
     "42": "cutter radius compensation (G41/G42) is not supported by grbl",
     "43": "grbl has no tool table: G43 is not supported (grbl's G43.1 takes the offset itself)",
+    "44": "grbl has no tool table: G44 is not supported (grbl's G43.1 takes the offset itself)",
     "64": "grbl has no path control modes but G61 (it always blends)",
     "95": "grbl has no feed per revolution (G95)",
 }

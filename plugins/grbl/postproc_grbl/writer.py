@@ -95,6 +95,11 @@ class GrblWriter(WordWriter):
         return super().path_control_words(s, block)
 
     def tool_length_offset_words(self, s: Any, block: Block) -> list[str]:
+        """``G43.1 Z<length>`` (what ``lengths.write_tool_lengths`` makes of a G43 H) or ``G49``."""
+        if s.mode == "dynamic":
+            if not isinstance(s.length, (int, float)):
+                self.unsupported("a dynamic tool length offset whose length is computed", block)
+            return [self.code("length", "dynamic", "a dynamic tool length offset", block), "Z" + self.number(s.length, "Z")]
         if s.mode != "cancel":
             register = f" H{s.register}" if isinstance(s.register, int) else ""
             self.unsupported(f"a tool length offset from a table (G43{register}; grbl has only G43.1)", block)

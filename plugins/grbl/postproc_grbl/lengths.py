@@ -1,0 +1,95 @@
+"""Tool length offsets for grbl, which has no tool table: a length offset from a register (Fanuc and
+LinuxCNC ``G43 H<n>``, ``G44 H<n>``) becomes grbl's dynamic offset ``G43.1 Z<length>`` with the
+register's value, taken where the simulation takes it (``postproc.compensation.tool_table``: the
+program's own data settings, else the set-up's ``<Tools><Tool length>``); ``G49`` stays.
+
+Facts: [V] grbl wiki "Grbl v1.1 Commands" and ``grbl/gcode.c``: ``G43.1`` takes the offset from the Z
+word of its block (an axis command of its own, so no motion may share the block), ``G49`` cancels it;
+grbl changes no position at either (the offset applies from the next move on), as the simulation does
+(``postproc.compensation.tool_length``). A G44 subtracts the length ([K] Fanuc), so it is written as
+``G43.1`` with the negated length.
+
+A set-up whose tools are touched off at their change (``<Machine toolLengths="touched_off">``: a
+router's touch-off plate) has no lengths to write: each offset is dropped, with a comment saying so
+where it stood; the simulation of such a machine reads every length as zero, so ``verify`` compares
+the same path on both sides.
+
+A register the set-up does not give is a located error naming the ``<Tool>`` element to add.
+"""
+
+from __future__ import annotations
+
+from typing import Iterator
+
+from postproc.compensation.tool_table import ToolTable
+from postproc.context import Context
+from postproc.dialect import Dialect
+from postproc.errors import PostprocError, UnsupportedError
+from postproc.ir import Block, Comments, DataSetting, Section, ToolLengthOffset, Units
+
+MM_PER_INCH = 25.4
+_WATCHED = frozenset(("ToolLengthOffset", "DataSetting", "Units"))
+
+
+def write_tool_lengths(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """Lowering step: ``G43 H<n>``/``G44 H<n>`` -> ``G43.1 Z<length>`` (see the module docstring)."""
+    if ctx.dialect == target.NAME or target.TOOL_LENGTH_OFFSET:
+        return blocks
+    return _write_tool_lengths(blocks, ctx)
+
+
+def _write_tool_lengths(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
+    table = ToolTable(ctx.setup)
+    inch = False  # every controller here powers on in mm (``ModalState``), as the simulation starts
+    for block in blocks:
+        sections = block.sections
+        if _WATCHED.isdisjoint(sections):
+            yield block
+            continue
+        units = sections.get("Units")
+        if isinstance(units, Units):
+            inch = units.system == "inch"
+        setting = sections.get("DataSetting")
+        if isinstance(setting, DataSetting):
+            table.write(setting, MM_PER_INCH if inch else 1.0)
+        offset = sections.get("ToolLengthOffset")
+        if not isinstance(offset, ToolLengthOffset) or offset.mode not in ("positive", "negative"):
+            yield block
+            continue
+        at = ctx.at(block, ctx.column_of(block, "H"))  # before the block is rewritten (a rare block)
+        try:
+            yield from _dynamic(block, ctx, table, offset, inch)
+        except PostprocError as err:
+            ctx.diagnostics.error(err.located(at))
+
+
+def _dynamic(block: Block, ctx: Context, table: ToolTable, offset: ToolLengthOffset, inch: bool) -> list[Block]:
+    """The block with its offset from a register replaced: by ``G43.1`` in a block of its own before
+    it, or (tools touched off) by a comment."""
+    register = offset.register
+    if not isinstance(register, int):
+        raise UnsupportedError("a tool length offset whose register is computed (grbl's G43.1 needs its value)")
+    sections = block.sections
+    del sections["ToolLengthOffset"]
+    block.changed()
+    if table.touched_off:
+        note = f"TOOL LENGTH H{register} DROPPED: TOOLS ARE TOUCHED OFF AT THE CHANGE"
+        comments = sections.get("Comments")
+        sections["Comments"] = Comments(([*comments.texts] if isinstance(comments, Comments) else []) + [note])
+        return [block]
+    length = table.length(register) / (MM_PER_INCH if inch else 1.0)
+    dynamic = ToolLengthOffset("dynamic", None, length if offset.mode == "positive" else -length)
+    if not _rest(sections):
+        sections["ToolLengthOffset"] = dynamic
+        return [block]
+    first = Block(block.line, None, "\n")
+    first.sections = {key: sections.pop(key) for key in ("Sequence",) if key in sections}
+    if "BlockDelete" in sections:  # both halves are skipped with the block
+        first.sections["BlockDelete"] = sections["BlockDelete"]
+    first.sections["ToolLengthOffset"] = dynamic
+    return [first, block]
+
+
+def _rest(sections: dict[str, Section]) -> bool:
+    """The block does something besides the offset (and its number and comments)."""
+    return any(key not in ("Sequence", "BlockDelete", "Comments") for key in sections)

@@ -1,0 +1,192 @@
+"""Tool data selected with ``D`` (the ISG/Fagor family): read into the neutral tool length and cutter
+compensation sections, and written from another family's separate registers (Fanuc ``G43 H<n>`` for the
+length, ``G41 D<r>`` for the radius).
+
+The facts:
+
+* ISG [V: Beckhoff TF5200 "Tool offset" (tf5200_coordinate_systems/306370955), "Tool geometry
+  compensation" (tccncprogramming/15557086347), tool data ``wz[i]`` (tccnctooldata/15283111563)]:
+  ``D<n>`` selects tool data block n, whose length (perpendicular to the main plane) and radius both
+  apply; ``D0`` deselects (all zero). There is no length on/off code: the length applies while a D is
+  selected. G41/G42 take the radius of the selected data. By default (P-CHAN-00100 = 0) a new length
+  applies to Z only at the next block that programs Z absolutely (G90).
+* Fagor [V: 8055 programming manual 8.2; 8070 programming manual REF 1709 p.240]: ``D<n>`` selects the
+  tool offset (length and radius); ``G43`` turns length compensation on with it, **``G44`` cancels it**
+  (Fanuc's G44 is a *negative* offset: the same number, another meaning); G41/G42 take the selected
+  offset's radius. With no D selected the 8070 takes ``D1``. [?] The 8070 keeps its offsets per tool
+  (T and D); here ``D<n>`` is the set-up's ``<Tool number="n">``, as on the 8055's offset table.
+
+Writing from separate registers: one D carries both values, so the D written is the radius register
+while radius compensation is on, else the length register (ISG: D0 without a length). Where that D would
+bring another length than the program's (``G43 H1`` then ``G41 D21`` with another length in register
+21), the translation is a located error naming both registers; the set-up's ``<Tools>`` decides.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any, Iterator
+
+from ..compensation.tool_table import ToolTable
+from ..context import Context
+from ..dialect import Dialect
+from ..errors import PostprocError, UnsupportedError
+from ..expr import Expr
+from ..ir import Block, CutterCompensation, DataSetting, DistanceMode, Motion, ToolLengthOffset, Units
+
+SELECTED_KEY = "isg_family.tool_data"
+"""``ModalState.extra`` key of the D selected while reading (an int or an expression)."""
+_WATCHED = frozenset(("ToolLengthOffset", "CutterCompensation", "DataSetting", "Units"))
+MM_PER_INCH = 25.4
+SAME_MM = 1e-9
+
+
+# -- reading -----------------------------------------------------------------------------------------
+
+def read_tool_data(block: Block, ctx: Context, values: dict[str, Any], used: set[str], toggles: bool,
+                   first: int) -> None:
+    """A block's ``D`` and the compensation sections it feeds (call after the G codes were read).
+
+    ``toggles``: the length applies only while ``G43`` is in force (Fagor); otherwise while a D is
+    selected (ISG). ``first``: the D in force before any (ISG 0, Fagor 1)."""
+    extra = ctx.state.extra
+    sections = block.sections
+    if "D" in values:
+        used.add("D")
+        selected = values["D"]
+        extra[SELECTED_KEY] = selected
+        length_on = ctx.state.length == "positive" if toggles else True
+        if "ToolLengthOffset" not in sections and length_on:
+            zero = isinstance(selected, (int, float)) and selected == 0
+            block.add(ToolLengthOffset("cancel") if zero and not toggles else ToolLengthOffset("positive", selected))
+    selected = extra.get(SELECTED_KEY, first)
+    offset = sections.get("ToolLengthOffset")
+    if isinstance(offset, ToolLengthOffset) and offset.mode == "positive" and offset.register is None:
+        offset.register = selected
+    cutter = sections.get("CutterCompensation")
+    if isinstance(cutter, CutterCompensation) and cutter.mode != "off" and cutter.register is None:
+        cutter.register = selected
+
+
+def expects_register(values: dict[str, Any], ctx: Context, first: int) -> None:
+    """Fagor's ``G43`` takes the selected D (the rules read a register H): give it that one."""
+    values.setdefault("H", values.get("D", ctx.state.extra.get(SELECTED_KEY, first)))
+
+
+# -- writing -----------------------------------------------------------------------------------------
+
+@dataclass
+class _Selection:
+    length: int | None = None
+    """The source's length register in force (None: no length offset)."""
+    radius: int | None = None
+    """The source's radius register while cutter compensation is on."""
+    written: int | None = None
+    """The D the output has selected (None: none written yet)."""
+    applied: float = 0.0
+    """The length (mm) the output applies."""
+    absolute: bool = True
+    """The distance mode in force (ISG applies a new length at an absolute Z only)."""
+
+
+def select_tool_data(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """Lowering step for a target that selects tool data with D (see the module docstring): a program
+    of another family gets its length and radius registers as the D they need; the target's own
+    programs pass. ``target.LENGTH_TOGGLES``: the target turns the length on and off by code (Fagor)."""
+    if ctx.dialect == target.NAME:
+        return blocks
+    return _select(blocks, ctx, target.LENGTH_TOGGLES)
+
+
+def _select(blocks: Iterator[Block], ctx: Context, toggles: bool) -> Iterator[Block]:
+    table = ToolTable(ctx.setup)
+    state = _Selection()
+    inch = False
+    for block in blocks:
+        sections = block.sections
+        if _WATCHED.isdisjoint(sections):
+            yield block
+            continue
+        units = sections.get("Units")
+        if isinstance(units, Units):
+            inch = units.system == "inch"
+        distance = sections.get("DistanceMode")
+        if isinstance(distance, DistanceMode):
+            state.absolute = distance.mode == "absolute"
+        setting = sections.get("DataSetting")
+        if isinstance(setting, DataSetting):
+            table.write(setting, MM_PER_INCH if inch else 1.0)
+        if "ToolLengthOffset" in sections or "CutterCompensation" in sections:
+            at = ctx.at(block, ctx.column_of(block, "H" if "ToolLengthOffset" in sections else "D"))
+            try:
+                _rewrite(block, table, state, toggles)
+            except PostprocError as err:
+                ctx.diagnostics.error(err.located(at))
+                continue
+        yield block
+
+
+def _register(value: int | Expr | None, what: str) -> int | None:
+    if value is None or isinstance(value, int):
+        return value
+    raise UnsupportedError(f"a {what} register that is computed (the D selecting it is chosen from its value)")
+
+
+def _rewrite(block: Block, table: ToolTable, state: _Selection, toggles: bool) -> None:
+    """The block's length and radius registers as the D (and, with ``toggles``, G43/G44) they need."""
+    sections = block.sections
+    offset = sections.get("ToolLengthOffset")
+    cutter = sections.get("CutterCompensation")
+    length_changed = isinstance(offset, ToolLengthOffset)
+    if isinstance(offset, ToolLengthOffset):
+        if offset.mode == "negative" and cutter is None:
+            return  # left to the writer, which refuses it (with --on-unsupported warn: that word only)
+        if offset.mode not in ("positive", "cancel"):
+            raise UnsupportedError(f"a tool length offset '{offset.mode}'")
+        state.length = _register(offset.register, "tool length") if offset.mode == "positive" else None
+        if offset.mode == "positive" and state.length is None:
+            raise UnsupportedError("a tool length offset without its register")
+    if isinstance(cutter, CutterCompensation):
+        if cutter.mode == "off":
+            state.radius = None
+        else:
+            radius = _register(cutter.register, "cutter radius")
+            state.radius = radius if radius is not None else state.radius if state.radius is not None else state.written
+            if state.radius is None:
+                raise UnsupportedError("cutter compensation without its register, and no tool data selected")
+    want = state.radius if state.radius is not None else state.length if state.length is not None else 0
+    wanted_mm = 0.0 if state.length is None else table.length(state.length)
+    if want != state.length and (state.length is not None or not toggles):
+        have = table.length(want) if want else 0.0
+        if abs(have - wanted_mm) > SAME_MM:
+            raise UnsupportedError(
+                f"D{want} selects the length and the radius together, and its length ({have:g} mm) is not the "
+                + (f"length of register {state.length} ({wanted_mm:g} mm) in force" if state.length is not None
+                   else "zero the program runs with (no length offset)")
+                + f": give register {want} that length in the set-up's <Tools>, or use one register for both")
+    if abs(wanted_mm - state.applied) > SAME_MM and not _moves_z(block, state.absolute or toggles):
+        raise UnsupportedError("the new tool length is applied only at a move of Z (ISG: programmed absolutely, "
+                               "P-CHAN-00100 by default; Fagor: when the axis moves): program the length offset "
+                               "beside a Z move")
+    state.applied = wanted_mm
+    sections.pop("ToolLengthOffset", None)
+    if toggles:  # Fagor: G43 D<n> / G44, and G41 D<r>
+        if length_changed:
+            sections["ToolLengthOffset"] = (ToolLengthOffset("positive", want) if state.length is not None
+                                            else ToolLengthOffset("cancel"))
+        if isinstance(cutter, CutterCompensation):
+            sections["CutterCompensation"] = CutterCompensation(cutter.mode, want if cutter.mode != "off" else None)
+        if state.length is not None or state.radius is not None:
+            state.written = want
+    else:  # ISG: D<n> selects both; G41/G42 take the selected one's radius
+        if isinstance(cutter, CutterCompensation):
+            sections["CutterCompensation"] = CutterCompensation(cutter.mode, None)
+        if want != state.written or length_changed:
+            sections["ToolLengthOffset"] = ToolLengthOffset("positive", want) if want else ToolLengthOffset("cancel")
+            state.written = want
+    block.changed()
+
+
+def _moves_z(block: Block, absolute: bool) -> bool:
+    motion = block.sections.get("Motion")
+    return isinstance(motion, Motion) and "Z" in motion.axes and absolute

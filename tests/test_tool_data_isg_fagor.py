@@ -1,0 +1,202 @@
+"""Tool data, machine coordinates and path modes between Fanuc and the ISG/Fagor family
+(``postproc.isg_family.tool_data``, ``dialects/isg/writer.py``, ``dialects/fagor/writer.py``).
+
+Expected texts are written out by hand from the manuals' spellings (TF5200: ``D<n>``, ``#SUPPRESS
+OFFSETS``, ``G360``/``G359``/``G60``; Fagor 8070/8055: ``G43 D<n>``, ``G44`` cancel, ``G07``/``G60``);
+expected points from the set-up's lengths below (H1 100, H2 25.5, H21 100, radii 3, 5, 4). Every number
+that means one thing on Fanuc and another on the target is pinned in both directions."""
+
+from __future__ import annotations
+
+import io
+from typing import Any
+
+import pytest
+
+from postproc.api import translate
+from postproc.errors import Diagnostics, ErrorList
+from postproc.setup import MachineSetup
+from postproc.setup_machine import AxisTravel, ToolData
+from postproc.toolpath import toolpath_events
+from postproc.verify import verify_lines
+
+
+def _setup(home: float | None = 0.0) -> MachineSetup:
+    setup = MachineSetup()
+    setup.tools = {"1": ToolData(number=1, length=100.0, radius=3.0), "2": ToolData(number=2, length=25.5, radius=5.0),
+                   "21": ToolData(number=21, length=100.0, radius=4.0), "19": ToolData(number=19, length=7.0, radius=4.0)}
+    if home is not None:
+        setup.travel = {a: AxisTravel(name=a, home=home if a == "Z" else 0.0) for a in "XYZ"}  # type: ignore[arg-type]
+    return setup
+
+
+def _translate(text: str, source: str, target: str, setup: MachineSetup | None = None) -> str:
+    out = io.StringIO(newline="")
+    translate(io.StringIO(text, newline=""), out, file="in.nc", source=source, target=target,
+              setup=setup or _setup(), diagnostics=Diagnostics(warn_stream=io.StringIO()))
+    return out.getvalue()
+
+
+def _errors(text: str, source: str, target: str, setup: MachineSetup | None = None) -> list[str]:
+    with pytest.raises(ErrorList) as caught:
+        _translate(text, source, target, setup)
+    return [str(e) for e in caught.value.errors]
+
+
+def _verify(text: str, out: str, source: str, target: str, setup: MachineSetup | None = None) -> Any:
+    return verify_lines(io.StringIO(text, newline=""), io.StringIO(out, newline=""), file_in="in.nc",
+                        file_out="out", source=source, target=target, setup=setup or _setup())
+
+
+def _moves(text: str, dialect: str, setup: MachineSetup | None = None) -> list[dict[str, Any]]:
+    return [e for e in toolpath_events(io.StringIO(text), file="in.nc", dialect=dialect, setup=setup or _setup())
+            if "move" in e]
+
+
+FANUC = ("G21 G90 G17 G40 G49\nT1 M06\nG43 H01 Z50. M08\nG00 X-10. Y-10.\nG01 Z-2. F200.\n"
+         "G41 D21 G01 X0. Y0.\nG01 X20.\nG40 G01 X30. Y-10.\nG49 G00 Z100.\nM30\n")
+
+
+def test_fanuc_length_and_radius_registers_become_isg_d() -> None:
+    out = _translate(FANUC, "fanuc", "isg")
+    assert out.splitlines() == [
+        "G17 G71 G90 G40 D0", "T1 M06", "D01 G00 Z50. M08", "G00 X-10. Y-10.", "G01 Z-2. F200.",
+        # G41 D21: data block 21 carries radius 4 and the same length as H1 (100), so D21 keeps the length
+        "G41 D21 G01 X0. Y0.", "G01 X20.",
+        "G40 D01 G01 X30. Y-10.",  # compensation off: back to the length register's own data
+        "D0 G00 Z100.", "M30"]
+    report = _verify(FANUC, out, "fanuc", "isg")
+    assert report.ok and report.max_deviation == 0, report.summary()
+
+
+def test_fanuc_length_and_radius_become_fagor_g43_d_and_g44() -> None:
+    out = _translate(FANUC, "fanuc", "fagor")
+    assert out.splitlines() == [
+        "G17 G71 G90 G40 G44", "T1 M06", "G43 D01 G00 Z50. M08", "G00 X-10. Y-10.", "G01 Z-2. F200.",
+        "G41 D21 G01 X0. Y0.", "G01 X20.", "G40 G01 X30. Y-10.", "G44 G00 Z100.", "M30"]
+    report = _verify(FANUC, out, "fanuc", "fagor")
+    assert report.ok and report.max_deviation == 0, report.summary()
+
+
+def test_isg_d_applies_the_length_of_its_data() -> None:
+    moves = _moves("G71 G90\nD2 G00 Z50\nG00 X5\nD0 G00 Z80\nM30\n", "isg")
+    # D2: 50 + 25.5; the X move keeps it; D0: none
+    assert [(m["z"], m.get("controlled", {}).get("z")) for m in moves] == [(50, 75.5), (50, 75.5), (80, None)]
+
+
+def test_fagor_d_selects_and_g43_applies_and_g44_cancels() -> None:
+    moves = _moves("G71 G90\nD2\nG00 Z50\nG43 G00 Z50\nG44 G00 Z80\nM30\n", "fagor")
+    # D2 alone selects (no length yet): Z50; G43: 50 + 25.5; G44 cancels
+    assert [(m["z"], m.get("controlled", {}).get("z")) for m in moves] == [(50, None), (50, 75.5), (80, None)]
+    # no D selected: the 8070 takes D1 (length 100)
+    assert _moves("G71 G90\nG43 G00 Z50\nM30\n", "fagor")[0]["controlled"]["z"] == 150
+
+
+@pytest.mark.parametrize("source, text, fanuc", [
+    ("fagor", "G71 G90\nG43 D2 G00 Z50\nG44 G00 Z80\nM30\n", ["G21 G90", "G43 H02 G00 Z50.", "G49 G00 Z80.", "M30"]),
+    ("isg", "G71 G90\nD2 G00 Z50\nD0 G00 Z80\nM30\n", ["G21 G90", "G43 H02 G00 Z50.", "G49 G00 Z80.", "M30"]),
+])
+def test_target_d_reads_back_as_fanuc_g43_h_and_its_cancel_as_g49(source: str, text: str, fanuc: list[str]) -> None:
+    """Fagor's G44 is a cancel: it reaches Fanuc as G49, never as Fanuc's G44 (a negative offset)."""
+    out = _translate(text, source, "fanuc")
+    assert out.splitlines()[1:] == fanuc[1:] or out.splitlines() == fanuc
+    assert "G44" not in out
+    assert _verify(text, out, source, "fanuc").ok
+
+
+@pytest.mark.parametrize("target, why", [
+    ("fagor", "Fagor's G44 cancels the offset, and no code subtracts a length"),
+    ("isg", "D adds the tool's length, and no code subtracts it")])
+def test_fanuc_g44_negative_offset_is_refused_never_written_g44(target: str, why: str) -> None:
+    assert _errors("G21 G90\nG44 H01 Z50.\nM30\n", "fanuc", target) == [
+        f"in.nc:2:1: error: the {target} dialect cannot express a negative tool length offset (Fanuc G44): {why}"]
+
+
+@pytest.mark.parametrize("target", ["fagor", "isg"])
+def test_one_d_cannot_carry_two_registers_of_different_lengths(target: str) -> None:
+    # H1 is 100 mm long, register 19 (the radius) 7 mm: one D cannot give the length of the one and the radius
+    # of the other
+    errors = _errors("G21 G90\nG43 H01 Z50.\nG42 D19 G01 X0. Y0. F100.\nM30\n", "fanuc", target)
+    assert errors == ["in.nc:3:5: error: D19 selects the length and the radius together, and its length (7 mm) is "
+                      "not the length of register 1 (100 mm) in force: give register 19 that length in the set-up's "
+                      "<Tools>, or use one register for both"]
+
+
+def test_isg_applies_a_new_length_only_at_an_absolute_z() -> None:
+    """[V] TF5200 P-CHAN-00100 (default 0): a D's length reaches Z at the next absolute Z move only."""
+    assert _errors("G21 G90\nG43 H01\nG00 Z50.\nM30\n", "fanuc", "isg") == [
+        "in.nc:2:5: error: the new tool length is applied only at a move of Z (ISG: programmed absolutely, "
+        "P-CHAN-00100 by default; Fagor: when the axis moves): program the length offset beside a Z move"]
+    assert "D01 G00 Z50." in _translate("G21 G90\nG43 H01 Z50.\nM30\n", "fanuc", "isg").splitlines()
+
+
+def test_a_missing_length_names_the_element_to_add() -> None:
+    assert _errors("G21 G90\nG43 H07 Z50.\nM30\n", "fanuc", "isg") == [
+        'in.nc:2:5: error: the set-up gives tool length register 7 no value: add <Tool number="7" length=".."/> to '
+        "its <Tools>, or write the register in the program"]
+
+
+# -- machine coordinates and reference returns -----------------------------------------------------------------
+
+REFERENCE = "G21 G90\nG43 H02 Z50.\nG01 X5. F100.\nG91 G28 Z0.\nG90 G53 G00 X-10. Y-20. M05\nG01 X1.\nM30\n"
+
+
+def test_fanuc_g28_and_g53_become_isg_suppress_offsets() -> None:
+    out = _translate(REFERENCE, "fanuc", "isg", _setup(home=-12.5))
+    assert out.splitlines() == [
+        "G71 G90", "D02 G00 Z50.", "G01 X5. F100.",
+        "G91",  # the intermediate point is where the tool is (G91 Z0): no move; then home, absolute, at rapid
+        "G90 G00", "#SUPPRESS OFFSETS Z-12.5", "G91",
+        "G90", "G00", "#SUPPRESS OFFSETS X-10. Y-20.", "M05",
+        "G01 X1.", "M30"]
+    report = _verify(REFERENCE, out, "fanuc", "isg", _setup(home=-12.5))
+    assert report.ok and report.max_deviation == 0, report.summary()
+    moves = _moves(out, "isg", _setup(home=-12.5))
+    # at home the controlled Z is the machine's -12.5 whatever tool length D2 (25.5) is in force
+    assert (moves[2]["z"], moves[2]["controlled"]["z"]) == (-38, -12.5)
+
+
+def test_isg_suppress_offsets_moves_in_the_mode_in_force() -> None:
+    moves = _moves("G71 G90\nG01 X1 F100\n#SUPPRESS OFFSETS X-4\nM30\n", "isg")
+    assert [(m["move"], m["x"]) for m in moves] == [("feed", 1), ("feed", -4)]
+    text = "G71 G90\nG00 X1\n#SUPPRESS OFFSETS X-4\nM30\n"
+    assert _translate(text, "isg", "isg") == text
+
+
+def test_a_reference_return_needs_the_home_position() -> None:
+    assert _errors("G21\nG91 G28 Z0.\nM30\n", "fanuc", "isg", _setup(home=None)) == [
+        "in.nc:2:1: error: the isg dialect cannot express a reference return of axis Z: ISG writes it as a move "
+        "to the home position in machine coordinates, which the set-up does not give (add <Axes><Axis name=\"Z\" "
+        "home=\"..\"/>)"]
+    assert "second reference position" in _errors("G21\nG91 G30 Z0.\nM30\n", "fanuc", "isg")[0]
+
+
+def test_fagor_machine_moves_are_located_errors() -> None:
+    errors = _errors(REFERENCE, "fanuc", "fagor")
+    assert [e.split(": error: ")[0] for e in errors] == ["in.nc:4:1", "in.nc:5:1"]
+    assert "reference return (G28/G30)" in errors[0] and "move in machine coordinates (G53)" in errors[1]
+
+
+# -- path modes ------------------------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("fanuc, fagor", [("G61", "G07"), ("G09 G01 X2. F100.", "G60 G01 X2. F100.")])
+def test_fanuc_exact_stop_is_fagor_square_corner_never_g61(fanuc: str, fagor: str) -> None:
+    text = f"G21\n{fanuc}\nG00 X1.\nM30\n"
+    out = _translate(text, "fanuc", "fagor")
+    assert out.splitlines()[1] == fagor and "G61" not in out
+    assert _translate(out, "fagor", "fanuc").splitlines()[1] == fanuc
+
+
+def test_fagor_corner_rounding_is_not_fanuc_and_g64_is_refused() -> None:
+    assert _errors("G71\nG61 G01 X1 F100\nM30\n", "fagor", "fanuc")[0].startswith(
+        "in.nc:2:1: error: G61 (corner rounding for one block) from fagor has no equivalent in fanuc")
+    assert "the cutting mode (Fanuc G64)" in _errors("G21\nG64\nG00 X1.\nM30\n", "fanuc", "fagor")[0]
+
+
+def test_g53_means_two_things_and_is_pinned_both_ways() -> None:
+    """Fanuc's G53 is one block in machine coordinates; ISG's deselects the zero offsets (modal): neither
+    is ever written as the other's."""
+    out = _translate("G21 G90\nG53 G00 Z0.\nM30\n", "fanuc", "isg")
+    assert "G53" not in out and "#SUPPRESS OFFSETS Z0." in out.splitlines()
+    assert _errors("G71 G90\nG53\nG00 X1\nM30\n", "isg", "fanuc") == [
+        "in.nc:2:1: error: G53 (zero offset deselection) from isg has no equivalent in fanuc"]
