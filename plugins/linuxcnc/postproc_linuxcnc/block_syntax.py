@@ -26,3 +26,5 @@ class NgcBlockSyntax(NgcWordBlockSyntax):
     """G10 L2 P0-P9 sets a work system's offset (P0 the active one); other G10 forms are kept verbatim."""
     DATA_INCREMENTAL: ClassVar[bool] = False
     DATA_P0_ACTIVE: ClassVar[bool] = True
+    DATA_ROTATION: ClassVar[bool] = True
+    FRAME_RULES: ClassVar[str] = "rs274"

@@ -1,0 +1,414 @@
+"""evaluate_frames: a target that runs the program's frame commands itself gets them as written; every other
+target (and the simulation) gets every point evaluated into the work coordinates.
+
+Kept native only back to the reading dialect itself (Fanuc to Fanuc, a Haas set-up included; LinuxCNC
+to LinuxCNC): another dialect's G52 or G92 shares the number but not every rule (LinuxCNC's G52 and G92
+share one offset, Fanuc's do not), and a target that runs some frames natively and gets others evaluated
+would stack them wrongly.
+
+Evaluated, each move is carried through the frame (``postproc.frames.frame``): an absolute point to its
+absolute work point, on every axis the frame mixes into (a rotated ``X10`` moves X and Y); an
+incremental move as its carried increment; an arc's centre offsets as vectors, its radius scaled, its
+direction turned over by a mirror, and refused where the frame makes it an ellipse. A canned cycle under a
+frame other than offsets is expanded (its holes carried like moves), and a mirror swaps the side of
+cutter compensation. The frame commands themselves leave the block.
+
+The program position is tracked in program coordinates (mm), None where unknown; a move that needs an
+unknown coordinate (an axis it omits, that the frame mixes into the ones it programs) is a located
+error, as is a computed word under a frame (the program is then flattened, where the target would
+have kept it symbolically: ``postproc.api``).
+"""
+
+from __future__ import annotations
+
+import copy
+from typing import Final, Iterator
+
+from ..context import Context
+from ..dialect import Dialect
+from ..errors import PostprocError, ProgramError
+from ..expr import Expr
+from ..ir import AXES, Block, Comments, CompoundMotion, CutterCompensation, DataSetting, Motion, Section
+from ..state import MM_PER_INCH, ModalState, changes_nothing
+from .affine import EXACT, INDEX, XYZ
+from .frame import PLANE_AXES, Frame, Position
+from .section import FrameChange
+
+LINEAR: Final = frozenset("XYZUVW")
+COMPUTED: Final = "a computed word under a coordinate frame (the frame is evaluated into the coordinates here)"
+_SWAPPED: Final = {"left": "right", "right": "left"}
+_TURNED: Final = {"cw": "ccw", "ccw": "cw"}
+
+
+def evaluate_frames(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """Lowering step (see the module docstring): back to its own dialect the stream passes through."""
+    if target.NAME == ctx.dialect or ctx.lathe:
+        return blocks
+    return FrameEvaluator(ctx).run(blocks)
+
+
+class FrameEvaluator:
+    """The frame and the program position of one run, and the rewriting of each block."""
+
+    def __init__(self, ctx: Context) -> None:
+        self.ctx = ctx
+        self.modal = ModalState()
+        self.frame: Frame | None = None
+        """None until the first frame command (or a rotation of a work system)."""
+        m = ctx.setup.machine
+        start = {"X": m.start_x, "Y": m.start_y, "Z": m.start_z}
+        self.p: Position = {a: float(start.get(a, 0.0)) * (m.mm() if a in LINEAR else 1.0) for a in m.axes}
+        """The program position, mm (degrees on rotary axes), None where unknown."""
+        self.scale = 1.0
+        self.g5x: dict[int, dict[str, float]] = {}
+        """Work offsets a G10 in the program set, mm (the rest are unknown here)."""
+
+    def run(self, blocks: Iterator[Block]) -> Iterator[Block]:
+        report = self.ctx.diagnostics.error
+        for block in blocks:
+            if block.sections:
+                try:
+                    self.block(block)
+                except PostprocError as err:
+                    report(err.located(self.ctx.at(block)))
+                    continue
+            yield block
+
+    # -- one block ---------------------------------------------------------------------------------
+    def block(self, block: Block) -> None:
+        s = block.sections
+        frame = self.frame
+        changed = False
+        if "DataSetting" in s:
+            changed = self.data_setting(block, s)
+            frame = self.frame
+        if not changes_nothing(s):
+            self.settings(block, s)
+        change = s.get("FrameChange")
+        if isinstance(change, FrameChange):
+            self.command(block, change)
+            del s["FrameChange"]
+            _trace(s, change)
+            frame, changed = self.frame, True
+        if frame is None or frame.map.is_identity() and not frame.offset and not frame.local:
+            self.track(s)
+        else:
+            changed = self.carry(block, s, frame) or changed
+        if changed:
+            block.changed()
+
+    def settings(self, block: Block, s: dict[str, Section]) -> None:
+        """Units, plane, distance mode and work system, as the block leaves them."""
+        modal = self.modal
+        work, plane = modal.work_offset, modal.plane
+        modal.apply(s)
+        self.scale = MM_PER_INCH if modal.units == "inch" else 1.0
+        frame = self.frame
+        if modal.plane != plane and frame is not None and frame.rotation is not None:
+            raise ProgramError("the plane cannot change while coordinate rotation is on [V: Fanuc 15i/16i "
+                               "operator's manuals, 'G17, G18 or G19 must not be designated in the mode of "
+                               "coordinate system rotation']")
+        if modal.work_offset != work:
+            if frame is not None and frame.rules == "fanuc" and frame.linear_active():
+                raise ProgramError(_FANUC_FORBIDDEN.format(what="a work system change"))
+            for axis in self.p:
+                self.p[axis] = None  # the tool stays; its place in the new system is not known here
+            if frame is not None:
+                frame.select_work(modal.work_offset)
+
+    def data_setting(self, block: Block, s: dict[str, Section]) -> bool:
+        """G10 L2: a work system's rotation (R) goes into the frame and out of the setting; an offset of
+        the active system moves the program position (the tool stays)."""
+        setting = s["DataSetting"]
+        assert isinstance(setting, DataSetting)
+        if not setting.table.startswith("work_offset"):
+            return False
+        values = setting.values
+        active = setting.table == "work_offset" and setting.index == self.modal.work_offset
+        known = self.g5x.setdefault(setting.index, {}) if setting.table == "work_offset" else {}
+        for axis, value in values.items():
+            if axis == "R":
+                continue
+            if isinstance(value, Expr) or setting.incremental:
+                known.pop(axis, None)
+                if active:
+                    self.p[axis] = None
+                continue
+            new = value * (self.scale if axis in LINEAR else 1.0)
+            old = known.get(axis)
+            here = self.p.get(axis)
+            if active:
+                self.p[axis] = None if here is None or old is None else here + old - new
+            known[axis] = new
+        if "R" not in values:
+            return False
+        turn = values["R"]
+        if isinstance(turn, Expr):
+            raise ProgramError(COMPUTED)
+        if setting.table != "work_offset":
+            raise ProgramError("a rotation (R) of an extended work system cannot be evaluated")
+        frame = self._frame("rs274")
+        if self.frame is not None and frame.rules != "rs274":
+            raise ProgramError("a work system rotation (R) beside another controller's frame")
+        frame.set_turn(setting.index, float(turn))
+        if active:
+            self.p["X"], self.p["Y"] = None, None  # [V] convert_setup moves the current point into the turned system
+        rest = {k: v for k, v in values.items() if k != "R"}
+        if rest:
+            s["DataSetting"] = DataSetting(setting.family, setting.table, setting.index, rest, setting.incremental,
+                                           " ".join(w for w in setting.text.split() if not w.upper().startswith("R")))
+        else:
+            del s["DataSetting"]
+        return True
+
+    def _frame(self, rules: str) -> Frame:
+        if self.frame is None:
+            self.frame = Frame(rules)
+            self.frame.work = self.modal.work_offset
+        return self.frame
+
+    # -- frame commands ----------------------------------------------------------------------------
+    def command(self, block: Block, change: FrameChange) -> None:
+        frame = self._frame(change.rules)
+        if frame.rules != change.rules:
+            raise ProgramError(f"{change.describe()} beside another controller's frame commands")
+        kind, scale, p = change.kind, self.scale, self.p
+        words: dict[str, float] = {}
+        for letter, value in change.words.items():
+            if isinstance(value, Expr):
+                raise ProgramError(COMPUTED)
+            words[letter] = value * scale if letter in LINEAR else value
+        fanuc = frame.rules == "fanuc"
+        if fanuc and kind in ("local", "origin") and frame.linear_active():
+            raise ProgramError(_FANUC_FORBIDDEN.format(what=change.describe()))
+        compensating = self.modal.extra.get("frames.cutter") in _SWAPPED
+        if compensating and (kind in ("local", "origin", "origin_clear", "origin_suspend", "origin_restore")
+                             or fanuc):
+            raise ProgramError(f"{change.describe()} with cutter compensation on cannot be run (cancel it first) "
+                               "[V: rs274 'Cannot change axis offsets with cutter radius comp'; K: Fanuc orders "
+                               "G51.1, G51, G68 before G41 and cancels them after G40]")
+        if kind == "local":
+            frame.set_local(_axes(words), p)
+        elif kind == "origin":
+            if fanuc and any(frame.local.values()):
+                raise ProgramError("G92 while a local coordinate system (G52) is in force is not simulated "
+                                   "[?: the Fanuc manuals differ on whether G92 cancels it]: cancel it first")
+            frame.set_origin(_axes(words), p, change.describe())
+        elif kind in ("origin_clear", "origin_suspend"):
+            frame.clear_origin(p, kind == "origin_suspend")
+        elif kind == "origin_restore":
+            frame.restore_origin(p)
+        elif kind == "rotate":
+            self.rotate(frame, change, words)
+        elif kind == "rotate_off":
+            frame.unrotate(p)
+        elif kind == "scale":
+            if frame.rotation is not None or frame.scaling is not None:
+                raise ProgramError(f"{change.describe()}: scaling is commanded before coordinate rotation and "
+                                   "not again while on [K: Fanuc order G51.1, G51, G68]")
+            centre = tuple(words[a] if a in words else self._here(a, change) for a in XYZ)
+            common = words.get("P")
+            factors = tuple(words.get(f, 1.0 if common is None else common) for f in "IJK")
+            frame.scale(centre, factors, p)  # type: ignore[arg-type]
+        elif kind == "scale_off":
+            if frame.rotation is not None:
+                raise ProgramError("scaling is cancelled after coordinate rotation (G69 first) [K: Fanuc]")
+            frame.unscale(p)
+        elif kind == "mirror":
+            if frame.rotation is not None or frame.scaling is not None:
+                raise ProgramError(f"{change.describe()} while scaling or coordinate rotation is on [K: Siemens "
+                                   "ISO-dialect manual 3.2, as Fanuc: 'Do not specify G50.1 or G51.1 during scaling "
+                                   "or coordinate rotation mode']")
+            frame.set_mirror(_axes(words), p)
+        elif kind == "mirror_off":
+            if frame.rotation is not None or frame.scaling is not None:
+                raise ProgramError(f"{change.describe()} while scaling or coordinate rotation is on [K]")
+            frame.clear_mirror(tuple(_axes(words)), p)
+
+    def rotate(self, frame: Frame, change: FrameChange, words: dict[str, float]) -> None:
+        plane = self.modal.plane
+        if plane != "XY":
+            raise ProgramError(f"{change.describe()} in the {plane} plane is not simulated [?: the sense of a "
+                               "rotation there]: only G17")
+        if frame.rotation is not None:
+            raise ProgramError(f"{change.describe()} while coordinate rotation is already on (G69 first)")
+        if "R" not in words:
+            raise ProgramError(f"{change.describe()} without R takes its angle from parameter 5410, not known "
+                               "here: program R")
+        a1, a2, _ = PLANE_AXES[plane]
+        c1 = words[a1] if a1 in words else self._here(a1, change)
+        c2 = words[a2] if a2 in words else self._here(a2, change)
+        frame.rotate(plane, c1, c2, words["R"], self.p)
+
+    def _here(self, axis: str, change: FrameChange) -> float:
+        """The current point as a centre the command omits ([V] Fanuc 15i/16i: the tool position)."""
+        here = self.p.get(axis)
+        if here is None:
+            raise ProgramError(f"{change.describe()} without {axis} takes the current position as its centre, "
+                               f"which is not known here: program {axis}")
+        return here
+
+    # -- moves ---------------------------------------------------------------------------------------
+    def track(self, s: dict[str, Section]) -> None:
+        """No frame: only the program position follows the block."""
+        cc = s.get("CutterCompensation")
+        if cc is not None:
+            self.modal.extra["frames.cutter"] = cc.mode  # type: ignore[attr-defined]
+        if "CompoundMotion" in s:
+            for axis in XYZ:
+                self.p[axis] = None  # a cycle's last point is not read here (its expansion may be lazy)
+            return
+        m = s.get("Motion")
+        if not isinstance(m, Motion) or m.mode is None:
+            return
+        p = self.p
+        if "MachineCoordinates" in s or m.mode in ("home", "home2"):
+            for axis in m.axes:
+                p[axis] = None
+            return
+        incremental = self.modal.distance == "incremental"
+        scale = self.scale
+        for axis, value in m.axes.items():
+            if isinstance(value, Expr):
+                p[axis] = None
+                continue
+            v = value * scale if axis in LINEAR else value
+            if incremental:
+                here = p.get(axis)
+                p[axis] = None if here is None else here + v
+            else:
+                p[axis] = v
+
+    def carry(self, block: Block, s: dict[str, Section], frame: Frame) -> bool:
+        """Rewrite the block's points into work coordinates; True when anything changed."""
+        changed = False
+        cc = s.get("CutterCompensation")
+        if isinstance(cc, CutterCompensation):
+            self.modal.extra["frames.cutter"] = cc.mode
+            found = frame.map.arc_factor(PLANE_AXES["XY"])
+            if cc.mode in _SWAPPED and found is not None and found[1]:
+                s["CutterCompensation"] = CutterCompensation(_SWAPPED[cc.mode], cc.register)
+                changed = True
+        compound = s.get("CompoundMotion")
+        m = s.get("Motion")
+        if isinstance(m, Motion) and m.mode is not None:
+            s["Motion"] = self.move(s, m, self.modal.distance == "incremental")
+            changed = True
+        if isinstance(compound, CompoundMotion):
+            self.cycle(s, compound, frame)
+            changed = True
+        return changed
+
+    def cycle(self, s: dict[str, Section], compound: CompoundMotion, frame: Frame) -> None:
+        """A canned cycle's moves, carried one by one; the cycle is expanded for the target."""
+        if frame.scaling is not None:
+            raise ProgramError("a canned cycle under scaling (G51) is not simulated [?: which of R, Z and Q "
+                               "scale depends on parameters]: cancel scaling (G50) first")
+        if frame.map.mixes(2, 0) or frame.map.mixes(2, 1) or frame.map.m[8] != 1.0:
+            raise ProgramError("a canned cycle under a frame that moves the drilling axis is not simulated")
+        items: list[Section] = []
+        for item in compound.items:
+            items.append(self.move(s, item, False) if isinstance(item, Motion) and item.mode is not None else item)
+        s["CompoundMotion"] = CompoundMotion(compound.term, items)
+        cycle = s.get("CannedCycle")
+        if cycle is not None and hasattr(cycle, "expand"):
+            cycle = copy.copy(cycle)
+            cycle.expand = True  # the target's native cycle would drill at the unrotated points
+            s["CannedCycle"] = cycle
+
+    def move(self, s: dict[str, Section], m: Motion, incremental: bool) -> Motion:
+        """One move carried through the frame (see the module docstring)."""
+        frame = self.frame
+        assert frame is not None
+        p, scale, mode = self.p, self.scale, m.mode
+        if "MachineCoordinates" in s and mode not in ("home", "home2"):
+            for axis in m.axes:
+                p[axis] = None
+            return m
+        home = mode in ("home", "home2")
+        if home and frame.linear_active():
+            raise ProgramError(_FANUC_FORBIDDEN.format(what="a reference return") if frame.rules == "fanuc" else
+                               "a reference return under a rotated work system is not simulated [?: where its "
+                               "intermediate point lies]")
+        given: dict[str, float] = {}
+        for axis, value in m.axes.items():
+            if isinstance(value, Expr):
+                raise ProgramError(COMPUTED)
+            given[axis] = value * scale if axis in LINEAR else value
+        out: dict[str, float | Expr] = {}
+        fmap = frame.map
+        if incremental:
+            d = [given.get(a, 0.0) for a in XYZ]
+            dw = fmap.linear(d)
+            for i, axis in enumerate(XYZ):
+                if axis in given or abs(dw[i]) > EXACT:
+                    out[axis] = dw[i] / scale
+            for axis, value in given.items():
+                if axis not in INDEX:
+                    out[axis] = value / (scale if axis in LINEAR else 1.0)
+                here = p.get(axis)
+                p[axis] = None if here is None or home else here + value
+        else:
+            point: list[float | None] = [given.get(a, p.get(a)) for a in XYZ]
+            columns = [INDEX[a] for a in given if a in INDEX]
+            for i, axis in enumerate(XYZ):
+                if not any(fmap.mixes(i, j) for j in columns):
+                    continue
+                for j in range(3):
+                    if fmap.mixes(i, j) and point[j] is None:
+                        raise ProgramError(f"this move's {axis} under the coordinate frame needs the program's "
+                                           f"{XYZ[j]}, which is not known here: program {XYZ[j]} absolutely")
+                w = fmap.point([v if v is not None else 0.0 for v in point])
+                out[axis] = w[i] / scale
+            for axis, value in given.items():
+                if axis not in INDEX:
+                    out[axis] = (value + frame.shift(axis)) / (scale if axis in LINEAR else 1.0)
+                if home:
+                    p[axis] = None
+                else:
+                    p[axis] = value
+        if mode not in ("cw", "ccw"):
+            return Motion(mode, out)
+        return self.arc(m, out, mode)
+
+    def arc(self, m: Motion, out: dict[str, float | Expr], mode: str) -> Motion:
+        frame = self.frame
+        assert frame is not None
+        plane = PLANE_AXES[self.modal.plane]
+        found = frame.map.arc_factor(plane)
+        if found is None:
+            raise ProgramError(f"an arc in the {self.modal.plane} plane under this frame is not an arc (unequal "
+                               "scaling, or a rotation out of its plane): it cannot be evaluated")
+        factor, turned = found
+        centre: dict[str, float | Expr] | None = None
+        radius: float | Expr | None = None
+        if m.center is not None:
+            v = [0.0, 0.0, 0.0]
+            for axis, value in m.center.items():
+                if isinstance(value, Expr):
+                    raise ProgramError(COMPUTED)
+                v[INDEX[axis]] = value
+            cw = frame.map.linear(v)
+            centre = {a: cw[INDEX[a]] for a in plane[:2]}
+        elif m.radius is not None:
+            if isinstance(m.radius, Expr):
+                raise ProgramError(COMPUTED)
+            radius = m.radius * factor
+        return Motion(_TURNED[mode] if turned else mode, out, centre, radius)
+
+
+_FANUC_FORBIDDEN: Final = ("{what} while coordinate rotation, scaling or a mirror image is on cannot be run "
+                           "[K: Fanuc 0i-MF/Siemens ISO-dialect manuals: no reference return (G27-G30) or "
+                           "coordinate system command (G52-G59, G92) in these modes]")
+
+
+def _trace(s: dict[str, Section], change: FrameChange) -> None:
+    """The evaluated command stays in the output as a comment (no block vanishes without a trace)."""
+    note = f"{change.text} evaluated"
+    comments = s.get("Comments")
+    s["Comments"] = Comments([*comments.texts, note] if isinstance(comments, Comments) else [note])
+
+
+def _axes(words: dict[str, float]) -> dict[str, float]:
+    return {k: v for k, v in words.items() if k in AXES}
+
