@@ -44,14 +44,17 @@ def evaluate_frames(blocks: Iterator[Block], ctx: Context, target: type[Dialect]
     """Lowering step (see the module docstring): back to its own dialect the stream passes through."""
     if target.NAME == ctx.dialect or ctx.lathe:
         return blocks
-    return FrameEvaluator(ctx).run(blocks)
+    return FrameEvaluator(ctx, target.WRITER is not None).run(blocks)
 
 
 class FrameEvaluator:
     """The frame and the program position of one run, and the rewriting of each block."""
 
-    def __init__(self, ctx: Context) -> None:
+    def __init__(self, ctx: Context, rewrite: bool = True) -> None:
         self.ctx = ctx
+        self.rewrite = rewrite
+        """Mark a rewritten block changed (a writer regenerates it); the simulation, which writes nothing,
+        keeps its text for the columns of its errors."""
         self.modal = ModalState()
         self.frame: Frame | None = None
         """None until the first frame command (or a rotation of a work system)."""
@@ -94,7 +97,7 @@ class FrameEvaluator:
             self.track(s)
         else:
             changed = self.carry(block, s, frame) or changed
-        if changed:
+        if changed and self.rewrite:
             block.changed()
 
     def settings(self, block: Block, s: dict[str, Section]) -> None:
