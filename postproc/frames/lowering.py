@@ -209,9 +209,10 @@ class FrameEvaluator:
             if frame.rotation is not None or frame.scaling is not None:
                 raise ProgramError(f"{change.describe()}: scaling is commanded before coordinate rotation and "
                                    "not again while on [K: Fanuc order G51.1, G51, G68]")
-            centre = tuple(words[a] if a in words else self._here(a, change) for a in XYZ)
             common = words.get("P")
             factors = tuple(words.get(f, 1.0 if common is None else common) for f in "IJK")
+            centre = tuple(words[a] if a in words else 0.0 if f == 1.0 else self._here(a, change)
+                           for a, f in zip(XYZ, factors))
             frame.scale(centre, factors, p)  # type: ignore[arg-type]
         elif kind == "scale_off":
             if frame.rotation is not None:

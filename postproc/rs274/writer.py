@@ -37,7 +37,7 @@ from ..dialect import Dialect, Writer
 SECTION_ORDER = (
     "BlockDelete", "Sequence", "Assign", "Control", "MachineCoordinates", "PathControl", "Plane", "Units", "DistanceMode",
     "DataSetting", "WorkOffset", "FeedMode", "SpindleMode", "CutterCompensation", "ToolLengthOffset", "ReturnLevel",
-    "CycleCancel", "Dwell", "CoordinateSet", "Motion", "CannedCycle", "HolePattern", "LatheCycle", "Feed", "SpindleClamp",
+    "CycleCancel", "Dwell", "CoordinateSet", "FrameChange", "Motion", "CannedCycle", "HolePattern", "LatheCycle", "Feed", "SpindleClamp",
     "SpindleSpeed", "ToolSelect", "ToolChange", "SpindleControl", "SpindleOrientation", "Coolant", "MachineFunction",
     "ProgramControl", "NativeCode", "Comments",
 )
@@ -1105,6 +1105,13 @@ class WordWriter(Writer):
         if s.family != family:
             raise UnsupportedError(f"{s.describe()}, a machine-specific code of the {s.family} family, has no "
                                    f"equivalent in {self.DIALECT}", self.ctx.at(block))
+        return [s.text]
+
+    def frame_change_words(self, s: Any, block: Block) -> list[str]:
+        """A frame command as written, back to its own dialect (``postproc.frames.lowering`` evaluates it
+        for every other target)."""
+        if s.family != (self.target.family() if self.target is not None else self.DIALECT):
+            self.unsupported(s.describe(), block)
         return [s.text]
 
     def native_code_words(self, s: Any, block: Block) -> list[str]:

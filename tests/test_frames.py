@@ -1,0 +1,313 @@
+"""Coordinate frames (issue #27): Fanuc G52/G92/G68/G51/G51.1 toolpaths derived by hand, their located
+errors, and LinuxCNC G52/G92/G92.x/G10 L2 R against rs274 (simulated, and again after translation to grbl
+with the frames evaluated).
+
+rs274 prints canonical points in program coordinates and the offsets apart (SET_G5X_OFFSET,
+SET_G92_OFFSET, SET_XY_ROTATION); the machine point is ``g5x + R(p + g92)`` ([V] LinuxCNC emccanon's
+rotate_and_offset_pos, checked by hand on the first case below), which ``_machine`` applies to every
+move and arc centre so that the two toolpaths compare directly.
+"""
+
+from __future__ import annotations
+
+import io
+import math
+import os
+import random
+import re
+from typing import Any
+
+import pytest
+
+from postproc.api import translate
+from postproc.errors import ErrorList
+from postproc.toolpath import toolpath_events
+from postproc.verify import verify_lines
+from tests.support.rs274 import available, canonical_moves, run_rs274
+
+TOLERANCE_MM = 5e-4
+"""rs274 prints 4 decimals; a rotated point carries that rounding into both of its coordinates."""
+SEEDS = range(int(os.environ.get("POSTPROC_FRAME_SEEDS", "40")))
+
+
+def moves(text: str, dialect: str = "fanuc") -> list[dict[str, Any]]:
+    events = toolpath_events(io.StringIO(text, newline=""), file="t.nc", dialect=dialect)
+    return [e for e in events if "move" in e]
+
+
+def points(text: str, dialect: str = "fanuc") -> list[tuple[Any, ...]]:
+    """(move, x, y, z) and for arcs (cx, cy) of every move."""
+    out = []
+    for e in moves(text, dialect):
+        out.append((e["move"], e["x"], e["y"], e["z"]) + ((e["cx"], e["cy"]) if "cx" in e else ()))
+    return out
+
+
+def errors(text: str, dialect: str = "fanuc") -> list[str]:
+    with pytest.raises(ErrorList) as info:
+        moves(text, dialect)
+    return [str(e) for e in info.value.errors]
+
+
+HEAD = "G21 G17 G90 G94\nG00 X0. Y0. Z5.\n"
+
+
+# -- Fanuc, derived by hand ----------------------------------------------------------------------------
+
+def test_rotation_about_a_centre_carries_absolute_and_incremental_moves() -> None:
+    # (20, 0) about (10, 0) by 90 degrees: (10, 10); the increment (0, 5) turned: (-5, 0)
+    text = HEAD + "G68 X10. Y0. R90.\nG01 X20. Y0. F100.\nG91 X0. Y5.\nG90 G69\nG00 X0. Y0.\nM30\n"
+    assert points(text) == [("rapid", 0, 0, 5), ("feed", 10, 10, 5), ("feed", 5, 10, 5), ("rapid", 0, 0, 5)]
+
+
+def test_rotation_angle_without_a_decimal_point_is_in_thousandths_of_a_degree() -> None:
+    # R90000 = 90 degrees: (10, 0) -> (0, 10)
+    assert points(HEAD + "G68 X0 Y0 R90000\nG01 X10. Y0. F100.\nM30\n")[1] == ("feed", 0, 10, 5)
+
+
+def test_a_rotated_arc_keeps_its_centre_and_direction() -> None:
+    # G02 (10,0)->(0,10) R10 has its centre at (10,10); turned 90 degrees: end (-10,0), centre (-10,10), cw
+    text = HEAD + "G68 X0. Y0. R90.\nG01 X10. Y0. F100.\nG02 X0. Y10. R10.\nG69\nM30\n"
+    assert points(text)[2] == ("cw", -10, 0, 5, -10, 10)
+
+
+def test_a_mirror_image_reflects_points_and_turns_arcs_over() -> None:
+    # mirrored about X=0: (10,5) -> (-10,5); G03 to (20,15) about (20,5) becomes G02 to (-20,15) about (-20,5)
+    text = HEAD + "G51.1 X0.\nG01 X10. Y5. F100.\nG03 X20. Y15. I10. J0.\nG50.1 X0.\nG00 X0. Y0.\nM30\n"
+    assert points(text)[1:] == [("feed", -10, 5, 5), ("cw", -20, 15, 5, -20, 5), ("rapid", 0, 0, 5)]
+
+
+def test_scaling_about_a_centre_with_p_and_a_mirroring_factor() -> None:
+    # P2000 = x2 about (10,10): (15,10) -> (20,10); I-1000 J1000 about X=0 mirrors X: (5,0) -> (-5,0)
+    text = HEAD + ("G51 X10. Y10. P2000\nG01 X15. Y10. F100.\nG02 X10. Y5. R5.\nG50\nG00 X0. Y0.\n"
+                   "G51 X0. Y0. I-1000 J1000\nG01 X5. Y0.\nG50\nM30\n")
+    # the arc (15,10)->(10,5) R5 cw has its centre at (10,10): scaled, end (10,0), centre (10,10)
+    assert points(text)[1:] == [("feed", 20, 10, 5), ("cw", 10, 0, 5, 10, 10), ("rapid", 0, 0, 5),
+                                ("feed", -5, 0, 5)]
+
+
+def test_local_and_g92_offsets_shift_the_work_coordinates() -> None:
+    # G52 X100: X5 is 105; G52 X0 cancels; at (10,10) G92 X0 Y0 makes the point read zero: X5 is 15
+    text = HEAD + "G52 X100.\nG00 X5. Y5.\nG52 X0.\nG00 X10. Y10.\nG92 X0. Y0.\nG00 X5.\nM30\n"
+    assert points(text)[1:] == [("rapid", 105, 5, 5), ("rapid", 10, 10, 5), ("rapid", 15, 10, 5)]
+
+
+def test_a_drilling_cycle_under_rotation_drills_the_turned_hole() -> None:
+    # the hole at (10,0) turned 90 degrees about the origin is at (0,10); Z is not turned
+    text = "G21 G17 G90 G94\nG00 X0. Y0. Z10.\nG68 X0. Y0. R90.\nG98 G81 X10. Y0. Z-5. R2. F100.\nG80\nG69\nM30\n"
+    got = points(text)[1:]
+    assert [(e[1], e[2]) for e in got] == [(0, 10)] * len(got)
+    assert [e[3] for e in got] == [10, 2, -5, 10]
+
+
+def test_a_mirror_swaps_the_side_of_cutter_compensation_in_a_translation() -> None:
+    text = "G21 G17 G90 G94\nG00 X0. Y0. Z5.\nG51.1 X0.\nG01 G41 D1 X10. Y0. F100.\nG01 G40 X20. Y0.\nG50.1 X0.\nM30\n"
+    out = io.StringIO()
+    translate(io.StringIO(text), out, file="t.nc", source="fanuc", target="linuxcnc")
+    assert "G42 D01 G1 X-10. Y0." in out.getvalue()
+
+
+def test_a_fanuc_frame_stays_native_back_to_fanuc() -> None:
+    text = "G21 G17 G90\nG00 X0. Y0.\nG68 X0. Y0. R30.\nG01 X10. F100.\nG69\nM30\n"
+    out = io.StringIO()
+    translate(io.StringIO(text), out, file="t.nc", source="fanuc", target="fanuc")
+    assert out.getvalue() == text
+
+
+@pytest.mark.parametrize("text, message", [
+    ("G68 X0. Y0. R30.\nG28 X0.\n", "t.nc:4:1: error: a reference return while coordinate rotation"),
+    ("G68 X0. Y0. R30.\nG52 X10.\n", "t.nc:4:1: error: G52 X10. (local) while coordinate rotation"),
+    ("G68 X0. Y0. R30.\nG01 X10. F100.\n", "t.nc:4:1: error: this move's X under the coordinate frame needs the "
+                                          "program's Y, which is not known here"),
+    ("G51 X0. Y0. I2000 J1000\nG01 X1. Y1. F100.\nG02 X2. Y2. R1.\n",
+     "t.nc:5:1: error: an arc in the XY plane under this frame is not an arc"),
+    ("G68 X0. Y0. R30.\nG18\n", "t.nc:4:1: error: the plane cannot change while coordinate rotation is on"),
+    ("G68 X0. Y0.\n", "t.nc:3:1: error: G68 X0. Y0. (rotate) without R takes its angle from parameter 5410"),
+    ("G68 X0. Y0. R30.\nG51.1 X0.\n", "t.nc:4:1: error: G51.1 X0. (mirror) while scaling or coordinate rotation"),
+])
+def test_what_the_fanuc_manuals_forbid_or_leave_open_is_a_located_error(text: str, message: str) -> None:
+    found = errors(HEAD + text + "M30\n")
+    assert found and found[0].startswith(message), found
+
+
+# -- Fanuc to targets without frames, run in rs274 ------------------------------------------------------
+
+@pytest.mark.skipif(not available(), reason="the LinuxCNC interpreter rs274 is not installed")
+@pytest.mark.parametrize("target", ["linuxcnc", "grbl"])
+def test_fanuc_frames_evaluated_for_a_target_run_in_rs274_as_derived(target: str) -> None:
+    text = HEAD + ("G68 X10. Y0. R90.\nG01 X20. Y0. F100.\nG02 X10. Y10. R10.\nG69\nG51.1 X0.\n"
+                   "G01 X10. Y5.\nG03 X20. Y15. I10. J0.\nG50.1 X0.\nG00 X0. Y0.\nM30\n")
+    out = io.StringIO()
+    translate(io.StringIO(text), out, file="t.nc", source="fanuc", target=target)
+    got = [e for e in canonical_moves(run_rs274(out.getvalue()), start=(0.0, 0.0, 0.0)) if "move" in e]
+    # by hand: (20,0) about (10,0) by 90 -> (10,10); the arc (20,0)->(10,10) R10 cw has its centre at (20,10):
+    # turned, end (0,0), centre (0,10); then mirrored about X=0: (-10,5), ccw about (20,5) -> cw about (-20,5)
+    want = [("rapid", 0, 0, 5), ("feed", 10, 10, 5), ("cw", 0, 0, 5, 0, 10), ("feed", -10, 5, 5),
+            ("cw", -20, 15, 5, -20, 5), ("rapid", 0, 0, 5)]
+    assert [(e["move"], e["x"], e["y"], e["z"]) + ((e["cx"], e["cy"]) if "cx" in e else ()) for e in got] == want
+
+
+FANUC_BOLT_CIRCLE = """%
+O1000
+G21 G17 G90 G94
+G00 X0. Y0. Z10.
+#1=0
+WHILE [#1 LT 6] DO1
+G68 X0. Y0. R[#1*60.]
+G98 G81 X25. Y0. Z-5. R2. F100.
+G80
+G69
+#1=#1+1
+END1
+G00 X0. Y0.
+M30
+%
+"""
+
+
+@pytest.mark.parametrize("target", ["linuxcnc", "grbl"])
+def test_a_macro_drilling_a_rotated_bolt_circle_translates_and_verifies(target: str) -> None:
+    out = io.StringIO()
+    translate(io.StringIO(FANUC_BOLT_CIRCLE), out, file="t.nc", source="fanuc", target=target)
+    report = verify_lines(io.StringIO(FANUC_BOLT_CIRCLE), io.StringIO(out.getvalue()), file_in="t.nc",
+                          file_out="o.nc", source="fanuc", target=target)
+    assert report.ok, report.summary()
+    holes = {(e["x"], e["y"]) for e in moves(FANUC_BOLT_CIRCLE) if e["z"] == -5}
+    want = {(round(25 * math.cos(math.radians(60 * k)), 6) + 0, round(25 * math.sin(math.radians(60 * k)), 6) + 0)
+            for k in range(6)}
+    assert {(float(x), float(y)) for x, y in holes} == {(x + 0.0, y + 0.0) for x, y in want}
+
+
+# -- LinuxCNC against rs274 -----------------------------------------------------------------------------
+
+class _Gen:
+    """Random LinuxCNC programs with G52, G92, G92.1-G92.3 and G10 L2 R among moves, arcs, G91 and a drilling
+    cycle. After each frame command the next move programs X, Y and Z absolutely (the program position in
+    the new frame is not tracked through every command: ``postproc.frames.lowering``)."""
+
+    def __init__(self, seed: int) -> None:
+        self.r = random.Random(seed)
+
+    def num(self, lo: int = -40, hi: int = 40) -> str:
+        return f"{self.r.randint(lo * 4, hi * 4) / 4:g}"
+
+    def full(self) -> str:
+        return f"G90 G0 X{self.num()} Y{self.num()} Z{self.num(2, 20)}"
+
+    def program(self) -> str:
+        r = self.r
+        lines = ["G21 G17 G90 G94", "G0 X0 Y0 Z10"]
+        for _ in range(r.randint(6, 14)):
+            kind = r.choice(["move", "move", "inc", "arc", "g52", "g92", "g92x", "rot", "cycle"])
+            if kind == "move":
+                lines.append(f"G90 G1 X{self.num()} Y{self.num()} Z{self.num(0, 10)} F200")
+            elif kind == "inc":
+                lines.append(f"G91 G1 X{self.num(-10, 10)} Y{self.num(-10, 10)} F150")
+                lines.append("G90")
+            elif kind == "arc":
+                i, j = self.num(-15, 15), self.num(-15, 15)
+                if float(i) == 0 and float(j) == 0:
+                    i = "5"
+                lines.append(f"G90 G{r.choice([2, 3])} I{i} J{j} F100")  # a full circle about (here + I, J)
+            elif kind == "g52":
+                lines.append(f"G52 X{self.num(-20, 20)} Y{self.num(-20, 20)}")
+                lines.append(self.full())
+            elif kind == "g92":
+                lines.append(f"G92 X{self.num(-20, 20)} Y{self.num(-20, 20)} Z{self.num(0, 10)}")
+                lines.append(self.full())
+            elif kind == "g92x":
+                lines.append(r.choice(["G92.1", "G92.2", "G92.3"]))
+                lines.append(self.full())
+            elif kind == "rot":
+                lines.append(f"G10 L2 P{r.choice(['0', '1'])} X{self.num(-30, 30)} Y{self.num(-30, 30)} "
+                             f"R{r.randint(-36, 36) * 5}")
+                lines.append(self.full())
+            else:
+                lines.append(f"G90 G98 G81 X{self.num()} Y{self.num()} Z-{self.num(1, 5)} R{self.num(1, 3)} F100")
+                lines.append(f"X{self.num()} Y{self.num()}")
+                lines.append("G80")
+                lines.append(self.full())
+        lines.append("M2")
+        return "\n".join(lines) + "\n"
+
+
+_CALL = re.compile(r"^\s*\d+\s+N\.+\s+([A-Z_0-9]+)\((.*)\)\s*$")
+
+
+def _machine(calls: list[str]) -> list[dict[str, Any]]:
+    """rs274's canonical moves carried to machine points with the offsets and rotation in force."""
+    g5x, g92, turn = [0.0] * 3, [0.0] * 3, 0.0
+    out: list[dict[str, Any]] = []
+    for line in calls:
+        m = _CALL.match(line)
+        if m is None:
+            continue
+        name, args = m.group(1), [float(v) for v in re.split(r"[,\s]+", m.group(2).strip()) if _number(v)]
+        if name == "SET_G5X_OFFSET":
+            g5x = args[1:4]
+        elif name == "SET_G92_OFFSET":
+            g92 = args[0:3]
+        elif name == "SET_XY_ROTATION":
+            turn = args[0]
+        elif name in ("STRAIGHT_TRAVERSE", "STRAIGHT_FEED", "ARC_FEED"):
+            for ev in canonical_moves([line], start=None):
+                c, s = math.cos(math.radians(turn)), math.sin(math.radians(turn))
+
+                def carry(x: float, y: float, z: float) -> tuple[float, float, float]:
+                    x, y = x + g92[0], y + g92[1]
+                    return g5x[0] + c * x - s * y, g5x[1] + s * x + c * y, g5x[2] + z + g92[2]
+                ev["x"], ev["y"], ev["z"] = carry(ev["x"], ev["y"], ev["z"])
+                if "cx" in ev:
+                    ev["cx"], ev["cy"], _ = carry(ev["cx"], ev["cy"], 0.0)
+                out.append(ev)
+    return out
+
+
+def _number(text: str) -> bool:
+    try:
+        float(text)
+        return True
+    except ValueError:
+        return False
+
+
+def _same(ours: list[dict[str, Any]], theirs: list[dict[str, Any]], text: str, seed: int) -> None:
+    theirs = _drop_still(theirs)
+    assert len(ours) == len(theirs), f"seed {seed}: {len(ours)} moves here, {len(theirs)} in rs274\n{text}"
+    for n, (a, b) in enumerate(zip(ours, theirs)):
+        assert a["move"] == b["move"], (seed, n, a, b, text)
+        keys = ("x", "y", "z", "cx", "cy") if "cx" in a else ("x", "y", "z")
+        dev = max(abs(float(a[k]) - float(b[k])) for k in keys)
+        assert dev <= TOLERANCE_MM, (seed, n, a, b, text)
+
+
+def _drop_still(events: list[dict[str, Any]]) -> list[dict[str, Any]]:
+    """Straight moves that end where they start (rs274 prints a G0 to the point it stands on)."""
+    out: list[dict[str, Any]] = []
+    here = (0.0, 0.0, 0.0)
+    for e in events:
+        end = (e["x"], e["y"], e["z"])
+        if e["move"] in ("rapid", "feed") and all(abs(a - b) <= 1e-6 for a, b in zip(end, here)):
+            continue
+        out.append(e)
+        here = end
+    return out
+
+
+@pytest.mark.skipif(not available(), reason="the LinuxCNC interpreter rs274 is not installed")
+@pytest.mark.parametrize("seed", SEEDS)
+def test_random_linuxcnc_frames_simulate_and_evaluate_as_rs274_runs_them(seed: int) -> None:
+    text = _Gen(seed).program()
+    theirs = _machine(run_rs274(text))
+    _same(moves(text, "linuxcnc"), theirs, text, seed)
+    out = io.StringIO()
+    translate(io.StringIO(text), out, file="gen.ngc", source="linuxcnc", target="grbl")
+    grbl = out.getvalue()
+    _same(_machine(run_rs274(grbl + "M2\n" if "M2" not in grbl else grbl)), theirs, text + "\n--- grbl ---\n" + grbl, seed)
+
+
+def test_the_generator_writes_every_frame_command() -> None:
+    text = "".join(_Gen(seed).program() for seed in SEEDS)
+    for command in ("G52 X", "G92 X", "G92.1", "G92.2", "G92.3", "G10 L2 P0", "G10 L2 P1", " R", "G91 G1", "G81",
+                    "G2 I", "G3 I"):
+        assert command in text, command
