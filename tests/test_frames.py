@@ -231,7 +231,7 @@ class _Gen:
         return "\n".join(lines) + "\n"
 
 
-_CALL = re.compile(r"^\s*\d+\s+N\.+\s+([A-Z_0-9]+)\((.*)\)\s*$")
+_CALL = re.compile(r"^\s*(?:\d+\s+)?N\.+\s+([A-Z_0-9]+)\((.*)\)\s*$")
 
 
 def _machine(calls: list[str]) -> list[dict[str, Any]]:
@@ -259,6 +259,7 @@ def _machine(calls: list[str]) -> list[dict[str, Any]]:
                 ev["x"], ev["y"], ev["z"] = carry(ev["x"], ev["y"], ev["z"])
                 if "cx" in ev:
                     ev["cx"], ev["cy"], _ = carry(ev["cx"], ev["cy"], 0.0)
+                    del ev["cz"]  # the start's Z, which a line read alone does not know (not compared)
                 out.append(ev)
     return out
 
@@ -272,7 +273,7 @@ def _number(text: str) -> bool:
 
 
 def _same(ours: list[dict[str, Any]], theirs: list[dict[str, Any]], text: str, seed: int) -> None:
-    theirs = _drop_still(theirs)
+    ours, theirs = _drop_still(ours), _drop_still(theirs)
     assert len(ours) == len(theirs), f"seed {seed}: {len(ours)} moves here, {len(theirs)} in rs274\n{text}"
     for n, (a, b) in enumerate(zip(ours, theirs)):
         assert a["move"] == b["move"], (seed, n, a, b, text)
