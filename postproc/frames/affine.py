@@ -63,8 +63,8 @@ class Affine:
         scales its two axes unequally (an ellipse)."""
         i, j, n = (INDEX[a] for a in plane)
         m = self.m
-        for r, c in ((i, n), (j, n), (n, i), (n, j)):
-            if abs(m[3 * r + c]) > EXACT:
+        for row, column in ((i, n), (j, n), (n, i), (n, j)):
+            if abs(m[3 * row + column]) > EXACT:
                 return None
         a, b, c, d = m[3 * i + i], m[3 * i + j], m[3 * j + i], m[3 * j + j]
         det = a * d - b * c

@@ -72,8 +72,7 @@ class Frame:
             return
         m = IDENTITY
         if self.mirror:
-            centre = tuple(self.mirror.get(a, 0.0) for a in XYZ)
-            m = about(centre, diagonal(tuple(-1.0 if a in self.mirror else 1.0 for a in XYZ)))
+            m = about(tuple(self.mirror.get(a, 0.0) for a in XYZ), diagonal(tuple(-1.0 if a in self.mirror else 1.0 for a in XYZ)))
         if self.scaling is not None:
             m = m.then(about(*reversed_args(self.scaling)))
         if self.rotation is not None:

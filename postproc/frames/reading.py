@@ -65,8 +65,10 @@ def read_frame(block: Block, ctx: Context, kind: str, code: str, values: dict[st
 
 def _angle(block: Block, value: Any, rules: str) -> float | Expr:
     """G68's R in degrees."""
-    if isinstance(value, Expr) or rules != "fanuc":
-        return value  # type: ignore[no-any-return]
+    if isinstance(value, Expr):
+        return value
+    if rules != "fanuc":
+        return float(value)
     written = _text(block, "R")
     return float(written) if "." in written else int(written) * _PER_THOUSAND
 
@@ -74,7 +76,7 @@ def _angle(block: Block, value: Any, rules: str) -> float | Expr:
 def _factor(block: Block, ctx: Context, letter: str, value: Any, rules: str) -> float | Expr:
     """A scale factor: a whole number of 0.001."""
     if isinstance(value, Expr):
-        return value  # type: ignore[no-any-return]
+        return value
     written = _text(block, letter)
     if "." in written:
         raise ProgramError(f"a scale factor {letter} is written without a decimal point, in 0.001 [K: Fanuc "
