@@ -114,6 +114,11 @@ def _frame_change(state: ModalState, s: Any) -> None:
     rotation, scaling or mirror: on every axis of the plane) until programmed again."""
     position = state.position
     kind, words = s.kind, s.words
+    if kind in ("polar", "polar_off"):
+        state.extra["polar"] = kind == "polar"  # words are a radius and an angle: the arc check waits for the run
+        for axis in PLANE_AXES[state.plane][:2]:
+            position[axis] = None
+        return
     if kind == "origin":
         for axis, value in words.items():
             if axis in position:

@@ -236,7 +236,7 @@ GENERATED = [
     ((BlockDelete(2), Sequence(20), ProgramControl("stop")), "/2 N20 M00"),
     ((ProgramStart(12),), "O0012"),
     ((Comments(["HELLO (WORLD)"]),), "(HELLO [WORLD])"),
-    ((NativeCode("fanuc", "G16 (polar coordinates)", "G16"),), "G16"),
+    ((NativeCode("fanuc", "G31 (skip function)", "G31 X1."),), "G31 X1."),
 ]
 
 

@@ -100,6 +100,21 @@ def test_a_drilling_cycle_under_rotation_drills_the_turned_hole() -> None:
     assert [e[3] for e in got] == [10, 2, -5, 10]
 
 
+def test_polar_coordinates_drill_a_bolt_circle() -> None:
+    # the Fanuc manuals' bolt circle: radius 100 at 0, 120 and 240 degrees about the program zero
+    text = ("G21 G17 G90 G94\nG00 X0. Y0. Z10.\nG16\nG98 G81 X100. Y0. Z-20. R-5. F200.\nY120.\nY240.\nG80\n"
+            "G15\nG00 X0. Y0.\nM30\n")
+    holes = [(e[1], e[2]) for e in points(text) if e[3] == -20]
+    assert holes == [(100, 0), (-50, 86.60254), (-50, -86.60254)]  # 100 cos 120 = -50, 100 sin 120 = 86.602540
+
+
+def test_polar_coordinates_about_the_local_zero_with_an_arc_and_an_omitted_word() -> None:
+    # G52 X10: the pole is (10,0); X50 Y0 -> (60,0); G03 to 90 degrees R50 about the pole: (10,50) centre (10,0);
+    # X20 keeps the angle 90: (10,20)
+    text = HEAD + "G52 X10.\nG16\nG01 X50. Y0. F100.\nG03 X50. Y90. R50.\nG01 X20.\nG15\nG52 X0.\nM30\n"
+    assert points(text)[1:] == [("feed", 60, 0, 5), ("ccw", 10, 50, 5, 10, 0), ("feed", 10, 20, 5)]
+
+
 def test_a_mirror_swaps_the_side_of_cutter_compensation_in_a_translation() -> None:
     text = "G21 G17 G90 G94\nG00 X0. Y0. Z5.\nG51.1 X0.\nG01 G41 D1 X10. Y0. F100.\nG01 G40 X20. Y0.\nG50.1 X0.\nM30\n"
     out = io.StringIO()
@@ -124,6 +139,9 @@ def test_a_fanuc_frame_stays_native_back_to_fanuc() -> None:
     ("G68 X0. Y0. R30.\nG18\n", "t.nc:4:1: error: the plane cannot change while coordinate rotation is on"),
     ("G68 X0. Y0.\n", "t.nc:3:1: error: G68 X0. Y0. (rotate) without R takes its angle from parameter 5410"),
     ("G68 X0. Y0. R30.\nG51.1 X0.\n", "t.nc:4:1: error: G51.1 X0. (mirror) while scaling or coordinate rotation"),
+    ("G16\nG91 G01 X10. Y30. F100.\n", "t.nc:4:1: error: an incremental move in polar coordinates"),
+    ("G16\nG01 X10. Y0. F100.\nG03 X10. Y90. I-10. J0.\n", "t.nc:5:1: error: an arc in polar coordinates takes its "
+                                                        "radius R"),
 ])
 def test_what_the_fanuc_manuals_forbid_or_leave_open_is_a_located_error(text: str, message: str) -> None:
     found = errors(HEAD + text + "M30\n")

@@ -246,12 +246,12 @@ def test_a_lathe_coordinate_setting_moves_the_frame_not_the_machine(cli, tmp_pat
 
 
 def test_translate_says_where_the_travel_can_no_longer_be_checked(cli, tmp_path):
-    # the simulation cannot run polar coordinates (G16): from there the machine position is not known
-    machine, nc = _files(tmp_path, "G90 G54 G0 X0 Y0 Z50\nG16\nG0 X600\nM30\n")
+    # the simulation cannot run a skip function (G31): from there the machine position is not known
+    machine, nc = _files(tmp_path, "G90 G54 G0 X0 Y0 Z50\nG31 X1.\nG0 X600\nM30\n")
     result = cli("translate", nc, "--from", "fanuc", "--to", "fanuc", "--machine", machine)
     assert result.status == 1
-    assert result.err_lines == [f"{nc}:2:1: error: the travel cannot be checked from here on: G16 (polar "
-                                "coordinates) cannot be simulated"]
+    assert result.err_lines == [f"{nc}:2:1: error: the travel cannot be checked from here on: G31 (skip "
+                                "function) cannot be simulated"]
     assert cli("translate", nc, "--from", "fanuc", "--to", "fanuc").status == 0  # no limits, no check
 
 

@@ -3,8 +3,8 @@
 Rows are ``(spelling, modal group, kind, argument)`` (see ``postproc.rs274.codes``); Fanuc writes the
 spelling with its leading zero (``G00``, ``M03``) and reads ``G0``/``G00``/``G000`` alike. Modal groups
 follow the Fanuc manuals (01 motion, 09 canned cycles, 11 scaling, 16 rotation, 22 mirror image, ...).
-The frame codes (G52, G92, G68/G69, G51/G50, G51.1/G50.1) are read into ``FrameChange``
-(``postproc.frames``); polar coordinates (G16/G15) are still kept verbatim.
+The frame codes (G52, G92, G68/G69, G51/G50, G51.1/G50.1)
+and G16/G15 (polar coordinates, modal group 17) are read into ``FrameChange`` (``postproc.frames``).
 """
 
 from __future__ import annotations
@@ -18,6 +18,8 @@ ROWS = (
     ("G03", "01", "motion", "ccw"),
     ("G04", "00", "dwell", None),
     ("G09", "00", "path_once", "exact_stop"),
+    ("G15", "17", "frame", "polar_off"),
+    ("G16", "17", "frame", "polar"),
     ("G17", "02", "plane", "XY"),
     ("G18", "02", "plane", "ZX"),
     ("G19", "02", "plane", "YZ"),
@@ -88,8 +90,6 @@ CODES = CodeTable(
         "7.1": "cylindrical interpolation",
         "10": "programmable data input",
         "11": "programmable data input cancel",
-        "15": "polar coordinates cancel",
-        "16": "polar coordinates",
         "31": "skip function",
         "65": "macro call",
         "66": "modal macro call",

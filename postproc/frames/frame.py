@@ -33,7 +33,8 @@ PLANE_AXES: Final = {"XY": ("X", "Y", "Z"), "ZX": ("Z", "X", "Y"), "YZ": ("Y", "
 class Frame:
     """The frame in force (lengths in mm, angles in degrees)."""
 
-    __slots__ = ("rules", "offset", "saved", "local", "rotation", "scaling", "mirror", "turns", "work", "map")
+    __slots__ = ("rules", "offset", "saved", "local", "rotation", "scaling", "mirror", "turns", "work", "map",
+                 "polar")
 
     def __init__(self, rules: str = "rs274") -> None:
         self.rules = rules
@@ -54,8 +55,14 @@ class Frame:
         self.work = 1
         self.map: Affine = IDENTITY
         """X, Y, Z: program point -> work point."""
+        self.polar: str | None = None
+        """fanuc G16: the plane whose first axis word is a radius and second an angle (None: G15)."""
 
     # -- the map ----------------------------------------------------------------------------------
+    def plain(self) -> bool:
+        """Nothing to evaluate: no offset, map or polar coordinates."""
+        return self.polar is None and not self.offset and not self.local and self.map.is_identity()
+
     def linear_active(self) -> bool:
         """A rotation, scaling or mirror is in force (not only offsets)."""
         return self.map.m != IDENTITY.m

@@ -22,6 +22,7 @@ have kept it symbolically: ``postproc.api``).
 from __future__ import annotations
 
 import copy
+import math
 from typing import Final, Iterator
 
 from ..context import Context
@@ -93,7 +94,7 @@ class FrameEvaluator:
             del s["FrameChange"]
             _trace(s, change)
             frame, changed = self.frame, True
-        if frame is None or frame.map.is_identity() and not frame.offset and not frame.local:
+        if frame is None or frame.plain():
             self.track(s)
         else:
             changed = self.carry(block, s, frame) or changed
@@ -228,6 +229,10 @@ class FrameEvaluator:
             if frame.rotation is not None or frame.scaling is not None:
                 raise ProgramError(f"{change.describe()} while scaling or coordinate rotation is on [K]")
             frame.clear_mirror(tuple(_axes(words)), p)
+        elif kind == "polar":
+            frame.polar = self.modal.plane
+        elif kind == "polar_off":
+            frame.polar = None
 
     def rotate(self, frame: Frame, change: FrameChange, words: dict[str, float]) -> None:
         plane = self.modal.plane
@@ -339,6 +344,8 @@ class FrameEvaluator:
             if isinstance(value, Expr):
                 raise ProgramError(COMPUTED)
             given[axis] = value * scale if axis in LINEAR else value
+        if frame.polar is not None and not home:
+            self.polar(m, given, incremental, frame.polar)
         out: dict[str, float | Expr] = {}
         fmap = frame.map
         if incremental:
@@ -375,6 +382,31 @@ class FrameEvaluator:
             return Motion(mode, out)
         return self.arc(m, out, mode)
 
+    def polar(self, m: Motion, given: dict[str, float], incremental: bool, plane: str) -> None:
+        """G16: the plane's first axis word is a radius, its second an angle in degrees counter-clockwise
+        from the first axis, about the program's zero (the local zero under G52) [V: Fanuc 16/18-MC
+        operator's manual 9.2]; an omitted one is the current point's [K: Mitsubishi M700 manual 6.12].
+        Rewritten in ``given`` as the Cartesian point (mm)."""
+        a1, a2, _ = PLANE_AXES[plane]
+        if a1 not in given and a2 not in given:
+            return
+        if incremental:
+            raise ProgramError("an incremental move in polar coordinates (G16 under G91) is not simulated [?: the "
+                               "Fanuc manuals take the current point as the origin of the radius, and leave "
+                               "the angle's reference open]")
+        if m.mode in ("cw", "ccw") and m.center is not None:
+            raise ProgramError("an arc in polar coordinates takes its radius R, not I/J/K [K: Fanuc 16/18-MC "
+                               "operator's manual 9.2, limitations]")
+        here1, here2 = self.p.get(a1), self.p.get(a2)
+        if (a1 not in given or a2 not in given) and (here1 is None or here2 is None):
+            raise ProgramError(f"a polar move without {a1 if a1 not in given else a2} takes the current point's, "
+                               "which is not known here: program both")
+        radius = given[a1] if a1 in given else math.hypot(here1, here2)  # type: ignore[arg-type]
+        angle = m.axes[a2] if a2 in given else math.degrees(math.atan2(here2, here1))  # type: ignore[arg-type]
+        assert isinstance(angle, float | int)
+        c, s = _cos_sin(float(angle))
+        given[a1], given[a2] = radius * c, radius * s
+
     def arc(self, m: Motion, out: dict[str, float | Expr], mode: str) -> Motion:
         frame = self.frame
         assert frame is not None
@@ -404,6 +436,14 @@ class FrameEvaluator:
 _FANUC_FORBIDDEN: Final = ("{what} while coordinate rotation, scaling or a mirror image is on cannot be run "
                            "[K: Fanuc 0i-MF/Siemens ISO-dialect manuals: no reference return (G27-G30) or "
                            "coordinate system command (G52-G59, G92) in these modes]")
+
+
+def _cos_sin(degrees: float) -> tuple[float, float]:
+    """Exact at whole quarter turns (a bolt circle's 90 degrees must not leave 6e-17 behind)."""
+    quarter = degrees / 90.0
+    if quarter.is_integer():
+        return ((1.0, 0.0), (0.0, 1.0), (-1.0, 0.0), (0.0, -1.0))[int(quarter) % 4]
+    return math.cos(math.radians(degrees)), math.sin(math.radians(degrees))
 
 
 def _trace(s: dict[str, Section], change: FrameChange) -> None:

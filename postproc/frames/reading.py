@@ -23,7 +23,8 @@ from ..ir import AXES, Block
 from .section import FrameChange
 
 AXIS_WORDS: Final = frozenset(AXES)
-_NO_WORDS: Final = frozenset(("origin_clear", "origin_suspend", "origin_restore", "rotate_off", "scale_off"))
+_NO_WORDS: Final = frozenset(("origin_clear", "origin_suspend", "origin_restore", "rotate_off", "scale_off", "polar",
+                              "polar_off"))
 _PER_THOUSAND: Final = 0.001
 
 

@@ -13,7 +13,8 @@ Kinds (what each does is in ``postproc.frames.frame``):
 - ``origin_clear`` / ``origin_suspend`` / ``origin_restore``: LinuxCNC G92.1 / G92.2 / G92.3;
 - ``rotate`` / ``rotate_off``: rotation in the active plane about a centre (Fanuc G68 / G69);
 - ``scale`` / ``scale_off``: scaling about a centre (Fanuc G51 / G50);
-- ``mirror`` / ``mirror_off``: programmable mirror image (Fanuc G51.1 / G50.1).
+- ``mirror`` / ``mirror_off``: programmable mirror image (Fanuc G51.1 / G50.1);
+- ``polar`` / ``polar_off``: polar coordinates in the active plane (Fanuc G16 / G15).
 """
 
 from __future__ import annotations
@@ -28,7 +29,7 @@ if TYPE_CHECKING:  # annotations only: lxml is imported where XML is read or wri
     from lxml import etree
 
 KINDS: Final = frozenset(("local", "origin", "origin_clear", "origin_suspend", "origin_restore", "rotate",
-                          "rotate_off", "scale", "scale_off", "mirror", "mirror_off"))
+                          "rotate_off", "scale", "scale_off", "mirror", "mirror_off", "polar", "polar_off"))
 """Every kind of frame change the IR models."""
 RULES: Final = frozenset(("fanuc", "rs274"))
 """The semantics a frame change may have (``postproc.frames.frame``)."""

@@ -76,7 +76,8 @@ class ModalStateSyntax(Syntax):
         elif mode is None:
             return
         if mode == "cw" or mode == "ccw":
-            _check_arc(block, ctx, motion)  # whatever else the block says: the simulator checks every arc
+            if not state.extra.get("polar"):  # (polar words are no end point: the simulation checks those)
+                _check_arc(block, ctx, motion)  # whatever else the block says: the simulator checks every arc
         pos = state.position
         if ctx.lathe and ("U" in motion.axes or "W" in motion.axes):
             _lathe_move(ctx, motion)
