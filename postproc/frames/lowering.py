@@ -185,6 +185,9 @@ class FrameEvaluator:
         fanuc = frame.rules == "fanuc"
         if fanuc and kind in ("local", "origin") and frame.linear_active():
             raise ProgramError(_FANUC_FORBIDDEN.format(what=change.describe()))
+        if fanuc and kind in ("local", "origin") and self.modal.distance == "incremental":
+            raise ProgramError(f"{change.describe()} in incremental mode (G91) is not simulated [?: whether its "
+                               "words are increments]: program it under G90")
         compensating = self.modal.extra.get("frames.cutter") in _SWAPPED
         if compensating and (kind in ("local", "origin", "origin_clear", "origin_suspend", "origin_restore")
                              or fanuc):
@@ -331,6 +334,8 @@ class FrameEvaluator:
         assert frame is not None
         p, scale, mode = self.p, self.scale, m.mode
         if "MachineCoordinates" in s and mode not in ("home", "home2"):
+            if frame.rules == "fanuc" and frame.linear_active():
+                raise ProgramError(_FANUC_FORBIDDEN.format(what="a move in machine coordinates (G53)"))
             for axis in m.axes:
                 p[axis] = None
             return m
