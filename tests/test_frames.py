@@ -219,7 +219,7 @@ class _Gen:
         r = self.r
         lines = ["G21 G17 G90 G94", "G0 X0 Y0 Z10"]
         for _ in range(r.randint(6, 14)):
-            kind = r.choice(["move", "move", "inc", "arc", "g52", "g92", "g92x", "rot", "cycle"])
+            kind = r.choice(["move", "move", "inc", "arc", "iarc", "g52", "g92", "g92x", "rot", "cycle"])
             if kind == "move":
                 lines.append(f"G90 G1 X{self.num()} Y{self.num()} Z{self.num(0, 10)} F200")
             elif kind == "inc":
@@ -230,6 +230,17 @@ class _Gen:
                 if float(i) == 0 and float(j) == 0:
                     i = "5"
                 lines.append(f"G90 G{r.choice([2, 3])} I{i} J{j} F100")  # a full circle about (here + I, J)
+            elif kind == "iarc":
+                # an incremental arc (a helix when Z moves): centre (I, J) from the start, the end turned by a
+                # quarter-multiple angle about it, so its words are exact
+                i, j = float(self.num(-10, 10)), float(self.num(-10, 10))
+                if i == 0 and j == 0:
+                    j = 3.0
+                turn = math.radians(r.choice([45, 90, 135, 180, 270]))
+                dx = i + math.cos(turn) * -i - math.sin(turn) * -j
+                dy = j + math.sin(turn) * -i + math.cos(turn) * -j
+                lines.append(f"G91 G{r.choice([2, 3])} X{dx:.4f} Y{dy:.4f} Z{self.num(-2, 2)} I{i:g} J{j:g} F120")
+                lines.append("G90")
             elif kind == "g52":
                 lines.append(f"G52 X{self.num(-20, 20)} Y{self.num(-20, 20)}")
                 lines.append(self.full())
@@ -362,5 +373,5 @@ def test_random_linuxcnc_frames_simulate_and_evaluate_as_rs274_runs_them(batch: 
 def test_the_generator_writes_every_frame_command() -> None:
     text = "".join(_Gen(seed).program() for seed in SEEDS)
     for command in ("G52 X", "G92 X", "G92.1", "G92.2", "G92.3", "G10 L2 P0", "G10 L2 P1", " R", "G91 G1", "G81",
-                    "G2 I", "G3 I"):
+                    "G2 I", "G3 I", "G91 G2 X", "G91 G3 X"):
         assert command in text, command
