@@ -109,9 +109,8 @@ class FrameEvaluator:
         self.scale = MM_PER_INCH if modal.units == "inch" else 1.0
         frame = self.frame
         if modal.plane != plane and frame is not None and frame.rotation is not None:
-            raise ProgramError("the plane cannot change while coordinate rotation is on [V: Fanuc 15i/16i "
-                               "operator's manuals, 'G17, G18 or G19 must not be designated in the mode of "
-                               "coordinate system rotation']")
+            # [V] Fanuc 15i/16i operator's manuals: no plane selection in the mode of coordinate rotation
+            raise ProgramError("the plane cannot change while coordinate rotation is on")
         if modal.work_offset != work:
             if frame is not None and frame.rules == "fanuc" and frame.linear_active():
                 raise ProgramError(_FANUC_FORBIDDEN.format(what="a work system change"))
@@ -186,20 +185,20 @@ class FrameEvaluator:
         if fanuc and kind in ("local", "origin") and frame.linear_active():
             raise ProgramError(_FANUC_FORBIDDEN.format(what=change.describe()))
         if fanuc and kind in ("local", "origin") and self.modal.distance == "incremental":
-            raise ProgramError(f"{change.describe()} in incremental mode (G91) is not simulated [?: whether its "
-                               "words are increments]: program it under G90")
+            raise ProgramError(f"{change.describe()} in incremental mode is not simulated (whether its words are "
+                               "increments is not settled [?]): program it in absolute mode")
         compensating = self.modal.extra.get("frames.cutter") in _SWAPPED
         if compensating and (kind in ("local", "origin", "origin_clear", "origin_suspend", "origin_restore")
                              or fanuc):
-            raise ProgramError(f"{change.describe()} with cutter compensation on cannot be run (cancel it first) "
-                               "[V: rs274 'Cannot change axis offsets with cutter radius comp'; K: Fanuc orders "
-                               "G51.1, G51, G68 before G41 and cancels them after G40]")
+            # [V] rs274: "Cannot change axis offsets with cutter radius comp"; [K] Fanuc commands mirror,
+            # scaling and rotation before compensation starts and cancels them after it ends
+            raise ProgramError(f"{change.describe()} with cutter compensation on cannot be run (cancel it first)")
         if kind == "local":
             frame.set_local(_axes(words), p)
         elif kind == "origin":
             if fanuc and any(frame.local.values()):
-                raise ProgramError("G92 while a local coordinate system (G52) is in force is not simulated "
-                                   "[?: the Fanuc manuals differ on whether G92 cancels it]: cancel it first")
+                raise ProgramError(f"{change.describe()} while a local coordinate system is in force is not simulated "
+                                   "(whether it cancels that system is not settled [?]): cancel it first")
             frame.set_origin(_axes(words), p, change.describe())
         elif kind in ("origin_clear", "origin_suspend"):
             frame.clear_origin(p, kind == "origin_suspend")
@@ -211,8 +210,9 @@ class FrameEvaluator:
             frame.unrotate(p)
         elif kind == "scale":
             if frame.rotation is not None or frame.scaling is not None:
-                raise ProgramError(f"{change.describe()}: scaling is commanded before coordinate rotation and "
-                                   "not again while on [K: Fanuc order G51.1, G51, G68]")
+                # [K] Fanuc: mirror, then scaling, then rotation; cancelled in reverse
+                raise ProgramError(f"{change.describe()}: scaling is commanded before coordinate rotation, and "
+                                   "not again while it is on")
             common = words.get("P")
             factors = tuple(words.get(f, 1.0 if common is None else common) for f in "IJK")
             centre = tuple(words[a] if a in words else 0.0 if f == 1.0 else self._here(a, change)
@@ -220,17 +220,16 @@ class FrameEvaluator:
             frame.scale(centre, factors, p)  # type: ignore[arg-type]
         elif kind == "scale_off":
             if frame.rotation is not None:
-                raise ProgramError("scaling is cancelled after coordinate rotation (G69 first) [K: Fanuc]")
+                raise ProgramError("scaling is cancelled after coordinate rotation (cancel the rotation first)")
             frame.unscale(p)
         elif kind == "mirror":
             if frame.rotation is not None or frame.scaling is not None:
-                raise ProgramError(f"{change.describe()} while scaling or coordinate rotation is on [K: Siemens "
-                                   "ISO-dialect manual 3.2, as Fanuc: 'Do not specify G50.1 or G51.1 during scaling "
-                                   "or coordinate rotation mode']")
+                # [K] Siemens' ISO-dialect manual 3.2, as Fanuc: no mirror command in scaling or rotation mode
+                raise ProgramError(f"{change.describe()} while scaling or coordinate rotation is on cannot be run")
             frame.set_mirror(_axes(words), p)
         elif kind == "mirror_off":
             if frame.rotation is not None or frame.scaling is not None:
-                raise ProgramError(f"{change.describe()} while scaling or coordinate rotation is on [K]")
+                raise ProgramError(f"{change.describe()} while scaling or coordinate rotation is on cannot be run")
             frame.clear_mirror(tuple(_axes(words)), p)
         elif kind == "polar":
             frame.polar = self.modal.plane
@@ -240,10 +239,10 @@ class FrameEvaluator:
     def rotate(self, frame: Frame, change: FrameChange, words: dict[str, float]) -> None:
         plane = self.modal.plane
         if plane != "XY":
-            raise ProgramError(f"{change.describe()} in the {plane} plane is not simulated [?: the sense of a "
-                               "rotation there]: only G17")
+            raise ProgramError(f"{change.describe()} in the {plane} plane is not simulated (the sense of a rotation "
+                               "there is not settled [?]): only in the XY plane")
         if frame.rotation is not None:
-            raise ProgramError(f"{change.describe()} while coordinate rotation is already on (G69 first)")
+            raise ProgramError(f"{change.describe()} while coordinate rotation is already on (cancel it first)")
         if "R" not in words:
             raise ProgramError(f"{change.describe()} without R takes its angle from parameter 5410, not known "
                                "here: program R")
@@ -314,8 +313,8 @@ class FrameEvaluator:
     def cycle(self, s: dict[str, Section], compound: CompoundMotion, frame: Frame) -> None:
         """A canned cycle's moves, carried one by one; the cycle is expanded for the target."""
         if frame.scaling is not None:
-            raise ProgramError("a canned cycle under scaling (G51) is not simulated [?: which of R, Z and Q "
-                               "scale depends on parameters]: cancel scaling (G50) first")
+            raise ProgramError("a canned cycle under scaling is not simulated (which of its levels and depths scale "
+                               "is a machine parameter [?]): cancel scaling first")
         if frame.map.mixes(2, 0) or frame.map.mixes(2, 1) or frame.map.m[8] != 1.0:
             raise ProgramError("a canned cycle under a frame that moves the drilling axis is not simulated")
         items: list[Section] = []
@@ -335,7 +334,7 @@ class FrameEvaluator:
         p, scale, mode = self.p, self.scale, m.mode
         if "MachineCoordinates" in s and mode not in ("home", "home2"):
             if frame.rules == "fanuc" and frame.linear_active():
-                raise ProgramError(_FANUC_FORBIDDEN.format(what="a move in machine coordinates (G53)"))
+                raise ProgramError(_FANUC_FORBIDDEN.format(what="a move in machine coordinates"))
             for axis in m.axes:
                 p[axis] = None
             return m
@@ -396,9 +395,10 @@ class FrameEvaluator:
         if a1 not in given and a2 not in given:
             return
         if incremental:
-            raise ProgramError("an incremental move in polar coordinates (G16 under G91) is not simulated [?: the "
-                               "Fanuc manuals take the current point as the origin of the radius, and leave "
-                               "the angle's reference open]")
+            # [V] Fanuc 16/18-MC 9.2: in incremental mode the current point is the origin of the radius; the
+            # reference of an incremental angle there is not settled [?]
+            raise ProgramError("an incremental move in polar coordinates is not simulated (the reference of its "
+                               "angle is not settled)")
         if m.mode in ("cw", "ccw") and m.center is not None:
             raise ProgramError("an arc in polar coordinates takes its radius R, not I/J/K [K: Fanuc 16/18-MC "
                                "operator's manual 9.2, limitations]")
@@ -438,9 +438,9 @@ class FrameEvaluator:
         return Motion(_TURNED[mode] if turned else mode, out, centre, radius)
 
 
-_FANUC_FORBIDDEN: Final = ("{what} while coordinate rotation, scaling or a mirror image is on cannot be run "
-                           "[K: Fanuc 0i-MF/Siemens ISO-dialect manuals: no reference return (G27-G30) or "
-                           "coordinate system command (G52-G59, G92) in these modes]")
+_FANUC_FORBIDDEN: Final = "{what} while coordinate rotation, scaling or a mirror image is on cannot be run"
+"""[K] Fanuc 0i-MF and Siemens' ISO-dialect manual 3.2: no reference return and no coordinate system command
+(local, machine or work coordinates, coordinate setting) in these modes."""
 
 
 def _cos_sin(degrees: float) -> tuple[float, float]:
