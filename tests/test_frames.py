@@ -125,6 +125,23 @@ def test_a_mirror_swaps_the_side_of_cutter_compensation_in_a_translation() -> No
     assert "G42 D01 G1 X-10. Y0." in out.getvalue()
 
 
+@pytest.mark.skipif(not available(), reason="the LinuxCNC interpreter rs274 is not installed")
+def test_a_mirrored_compensated_contour_runs_in_rs274_as_the_contour_mirrored_by_hand() -> None:
+    """G51.1 X0 over a G41 contour, translated for LinuxCNC, against the same contour written mirrored by hand
+    (X negated, G41 -> G42, G02 -> G03): rs274 compensates both with a 6 mm tool, move for move."""
+    fanuc = ("G21 G17 G90 G94\nG00 X0. Y-20. Z5.\nG01 Z-1. F100.\nG51.1 X0.\nG01 G41 D01 X10. Y-10.\n"
+             "G01 Y10.\nG02 X20. Y20. R10.\nG01 X40.\nG01 G40 X50. Y30.\nG50.1 X0.\nG00 Z5.\nM30\n")
+    by_hand = ("G21 G17 G90 G94\nG0 X0 Y-20 Z5\nG1 Z-1 F100\nG42 D1 G1 X-10 Y-10\nG1 Y10\nG3 X-20 Y20 R10\n"
+               "G1 X-40\nG40 G1 X-50 Y30\nG0 Z5\nM2\n")
+    out = io.StringIO()
+    translate(io.StringIO(fanuc), out, file="t.nc", source="fanuc", target="linuxcnc")
+    table = "T1 P1 D0.23622047 Z0\n"  # 6 mm (standalone rs274 reads its tool table in inches)
+    ours = [e for e in canonical_moves(run_rs274(out.getvalue(), tool_table=table)) if "move" in e]
+    theirs = [e for e in canonical_moves(run_rs274(by_hand, tool_table=table)) if "move" in e]
+    assert ours == theirs
+    assert any(abs(e["x"]) not in (0, 10, 20, 40, 50) for e in ours if e["z"] == -1)  # the path is offset
+
+
 def test_a_fanuc_frame_stays_native_back_to_fanuc() -> None:
     text = "G21 G17 G90\nG00 X0. Y0.\nG68 X0. Y0. R30.\nG01 X10. F100.\nG69\nM30\n"
     out = io.StringIO()
