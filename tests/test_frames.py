@@ -216,6 +216,28 @@ def test_a_macro_drilling_a_rotated_bolt_circle_translates_and_verifies(target: 
     assert {(float(x), float(y)) for x, y in holes} == {(x + 0.0, y + 0.0) for x, y in want}
 
 
+LOCAL_LOOP = "G21 G17 G90\nG00 X0. Y0. Z5.\nG52 X100.\n#1=0\nWHILE [#1 LT 3] DO1\nG00 X[#1*10.] Y0.\n#1=#1+1\nEND1\n"
+
+
+def test_a_frame_set_before_a_loop_kept_symbolically_is_carried_as_an_expression() -> None:
+    out = io.StringIO()
+    translate(io.StringIO(LOCAL_LOOP + "M30\n"), out, file="t.nc", source="fanuc", target="linuxcnc")
+    assert "o1 while" in out.getvalue() and "G0 X[#1*10.+100.] Y0." in out.getvalue()
+    report = verify_lines(io.StringIO(LOCAL_LOOP + "M30\n"), io.StringIO(out.getvalue()), file_in="t.nc",
+                          file_out="o.ngc", source="fanuc", target="linuxcnc", tolerance=0.0)
+    assert report.ok, report.summary()
+
+
+def test_a_frame_command_in_the_symbolic_part_flattens_the_program() -> None:
+    """Kept symbolically, a frame would be evaluated in the order of the text, not of the run."""
+    out = io.StringIO()
+    diagnostics = translate(io.StringIO(LOCAL_LOOP + "G52 X0.\nM30\n"), out, file="t.nc", source="fanuc",
+                            target="linuxcnc")
+    assert "while" not in out.getvalue() and "X110." in out.getvalue()
+    assert any("flattened" in w and "a coordinate frame in a program kept symbolically" in w
+               for w in map(str, diagnostics.warnings))
+
+
 # -- LinuxCNC against rs274 -----------------------------------------------------------------------------
 
 class _Gen:

@@ -14,9 +14,14 @@ frame other than offsets is expanded (its holes carried like moves), and a mirro
 cutter compensation. The frame commands themselves leave the block.
 
 The program position is tracked in program coordinates (mm), None where unknown; a move that needs an
-unknown coordinate (an axis it omits, that the frame mixes into the ones it programs) is a located
-error, as is a computed word under a frame (the program is then flattened, where the target would
-have kept it symbolically: ``postproc.api``).
+unknown coordinate (an axis it omits, that the frame mixes into the ones it programs) is a located error.
+
+A program kept symbolically (its loops, jumps and calls written for a target that has them) runs in
+another order than its text: there a frame command, or a move that needs the position the text order
+would give, is an error, which the translation's dry run (``postproc.api``) takes as the reason to
+flatten the program instead; a computed word under a frame set before is carried as an expression
+(``X[#1*10.+100.]``). The dry run starts from the frame and position the real run has reached (kept in
+``ctx.state.extra[RUN_KEY]``).
 """
 
 from __future__ import annotations
@@ -28,7 +33,8 @@ from typing import Final, Iterator
 from ..context import Context
 from ..dialect import Dialect
 from ..errors import PostprocError, ProgramError
-from ..expr import Expr
+from ..control import ASSIGN, CONTROL
+from ..expr import Binary, Expr, Num
 from ..ir import AXES, Block, Comments, CompoundMotion, CutterCompensation, DataSetting, Motion, Section
 from ..state import MM_PER_INCH, ModalState, changes_nothing
 from .affine import EXACT, INDEX, XYZ
@@ -37,6 +43,26 @@ from .section import FrameChange
 
 LINEAR: Final = frozenset("XYZUVW")
 COMPUTED: Final = "a computed word under a coordinate frame (the frame is evaluated into the coordinates here)"
+SYMBOLIC: Final = ("a coordinate frame in a program kept symbolically (it would be evaluated in the order of the "
+                   "text, not of the run)")
+RUN_KEY: Final = "frames.run"
+"""``ctx.state.extra`` key of the frame and program position the lowering has reached (``FrameRun``)."""
+
+
+class FrameRun:
+    """What the evaluation has reached: copied with the reading state into a translation's dry run."""
+
+    __slots__ = ("frame", "p", "g5x", "symbolic")
+
+    def __init__(self, p: Position) -> None:
+        self.frame: Frame | None = None
+        """None until the first frame command (or a rotation of a work system)."""
+        self.p = p
+        """The program position, mm (degrees on rotary axes), None where unknown."""
+        self.g5x: dict[int, dict[str, float]] = {}
+        """Work offsets a G10 in the program set, mm (the rest are unknown here)."""
+        self.symbolic = False
+        """A construct (an assignment, a control statement) went by: the program is kept symbolically."""
 _SWAPPED: Final = {"left": "right", "right": "left"}
 _TURNED: Final = {"cw": "ccw", "ccw": "cw"}
 
@@ -57,15 +83,24 @@ class FrameEvaluator:
         """Mark a rewritten block changed (a writer regenerates it); the simulation, which writes nothing,
         keeps its text for the columns of its errors."""
         self.modal = ModalState()
-        self.frame: Frame | None = None
-        """None until the first frame command (or a rotation of a work system)."""
-        m = ctx.setup.machine
-        start = {"X": m.start_x, "Y": m.start_y, "Z": m.start_z}
-        self.p: Position = {a: float(start.get(a, 0.0)) * (m.mm() if a in LINEAR else 1.0) for a in m.axes}
-        """The program position, mm (degrees on rotary axes), None where unknown."""
-        self.scale = 1.0
-        self.g5x: dict[int, dict[str, float]] = {}
-        """Work offsets a G10 in the program set, mm (the rest are unknown here)."""
+        extra = ctx.state.extra
+        run = extra.get(RUN_KEY)
+        if not isinstance(run, FrameRun):
+            m = ctx.setup.machine
+            start = {"X": m.start_x, "Y": m.start_y, "Z": m.start_z}
+            run = extra[RUN_KEY] = FrameRun(
+                {a: float(start.get(a, 0.0)) * (m.mm() if a in LINEAR else 1.0) for a in m.axes})
+        if ctx.run_data.get("dry_run"):
+            run.symbolic = True  # a dry run sees the part of the program that would be kept symbolically
+            self.modal.units = ctx.state.units
+            self.modal.plane = ctx.state.plane
+            self.modal.distance = ctx.state.distance
+            self.modal.work_offset = ctx.state.work_offset
+        self.reached = run
+        self.frame = run.frame
+        self.p = run.p
+        self.g5x = run.g5x
+        self.scale = MM_PER_INCH if self.modal.units == "inch" else 1.0
 
     def run(self, blocks: Iterator[Block]) -> Iterator[Block]:
         report = self.ctx.diagnostics.error
@@ -81,6 +116,8 @@ class FrameEvaluator:
     # -- one block ---------------------------------------------------------------------------------
     def block(self, block: Block) -> None:
         s = block.sections
+        if ASSIGN in s or CONTROL in s:
+            self.reached.symbolic = True
         frame = self.frame
         changed = False
         if "DataSetting" in s:
@@ -90,6 +127,8 @@ class FrameEvaluator:
             self.settings(block, s)
         change = s.get("FrameChange")
         if isinstance(change, FrameChange):
+            if self.reached.symbolic:
+                raise ProgramError(SYMBOLIC)
             self.command(block, change)
             del s["FrameChange"]
             _trace(s, change)
@@ -148,6 +187,8 @@ class FrameEvaluator:
         turn = values["R"]
         if isinstance(turn, Expr):
             raise ProgramError(COMPUTED)
+        if self.reached.symbolic:
+            raise ProgramError(SYMBOLIC)
         if setting.table != "work_offset":
             raise ProgramError("a rotation (R) of an extended work system cannot be evaluated")
         frame = self._frame("rs274")
@@ -166,7 +207,7 @@ class FrameEvaluator:
 
     def _frame(self, rules: str) -> Frame:
         if self.frame is None:
-            self.frame = Frame(rules)
+            self.frame = self.reached.frame = Frame(rules)
             self.frame.work = self.modal.work_offset
         return self.frame
 
@@ -343,10 +384,13 @@ class FrameEvaluator:
             raise ProgramError(_FANUC_FORBIDDEN.format(what="a reference return") if frame.rules == "fanuc" else
                                "a reference return under a rotated work system is not simulated [?: where its "
                                "intermediate point lies]")
+        if _computed(m):
+            if frame.polar is not None or home:
+                raise ProgramError(COMPUTED)
+            return self.computed_move(m, incremental, frame)
         given: dict[str, float] = {}
         for axis, value in m.axes.items():
-            if isinstance(value, Expr):
-                raise ProgramError(COMPUTED)
+            assert not isinstance(value, Expr)
             given[axis] = value * scale if axis in LINEAR else value
         if frame.polar is not None and not home:
             self.polar(m, given, incremental, frame.polar)
@@ -370,9 +414,8 @@ class FrameEvaluator:
                 if not any(fmap.mixes(i, j) for j in columns):
                     continue
                 for j in range(3):
-                    if fmap.mixes(i, j) and point[j] is None:
-                        raise ProgramError(f"this move's {axis} under the coordinate frame needs the program's "
-                                           f"{XYZ[j]}, which is not known here: program {XYZ[j]} absolutely")
+                    if fmap.mixes(i, j) and j not in columns:
+                        self._omitted(axis, XYZ[j], point[j])
                 w = fmap.point([v if v is not None else 0.0 for v in point])
                 out[axis] = w[i] / scale
             for axis, value in given.items():
@@ -385,6 +428,47 @@ class FrameEvaluator:
         if mode not in ("cw", "ccw"):
             return Motion(mode, out)
         return self.arc(m, out, mode)
+
+    def _omitted(self, axis: str, needed: str, here: float | None) -> None:
+        """A move's ``axis`` needs the program position on ``needed``, which the block omits."""
+        if self.reached.symbolic:
+            raise ProgramError(f"{SYMBOLIC}: this move's {axis} needs the program's {needed}, which the block omits")
+        if here is None:
+            raise ProgramError(f"this move's {axis} under the coordinate frame needs the program's {needed}, which "
+                               f"is not known here: program {needed} absolutely")
+
+    def computed_move(self, m: Motion, incremental: bool, frame: Frame) -> Motion:
+        """A move with computed words under a frame set before (a program kept symbolically): each carried
+        coordinate is written as the expression ``sum(m[i][j] * word_j) + t[i]`` in program units."""
+        fmap, scale, p = frame.map, self.scale, self.p
+        words: list[float | Expr | None] = [m.axes.get(a) for a in XYZ]
+        columns = [j for j in range(3) if words[j] is not None]
+        out: dict[str, float | Expr] = {}
+        for i, axis in enumerate(XYZ):
+            if not any(fmap.mixes(i, j) for j in columns):
+                continue
+            terms: list[tuple[float, float | Expr]] = []
+            for j in range(3):
+                if not fmap.mixes(i, j):
+                    continue
+                word = words[j]
+                if word is None:
+                    if incremental:
+                        continue
+                    here = p.get(XYZ[j])
+                    self._omitted(axis, XYZ[j], here)
+                    assert here is not None
+                    word = here / scale
+                terms.append((fmap.m[3 * i + j], word))
+            out[axis] = _combination(terms, 0.0 if incremental else fmap.t[i] / scale)
+        for axis, value in m.axes.items():
+            if axis not in INDEX:
+                shift = 0.0 if incremental else frame.shift(axis) / (scale if axis in LINEAR else 1.0)
+                out[axis] = _combination([(1.0, value)], shift)
+            p[axis] = None
+        if m.mode not in ("cw", "ccw"):
+            return Motion(m.mode, out)
+        return self.arc(m, out, m.mode)
 
     def polar(self, m: Motion, given: dict[str, float], incremental: bool, plane: str) -> None:
         """G16: the plane's first axis word is a radius, its second an angle in degrees counter-clockwise
@@ -424,23 +508,41 @@ class FrameEvaluator:
         centre: dict[str, float | Expr] | None = None
         radius: float | Expr | None = None
         if m.center is not None:
-            v = [0.0, 0.0, 0.0]
-            for axis, value in m.center.items():
-                if isinstance(value, Expr):
-                    raise ProgramError(COMPUTED)
-                v[INDEX[axis]] = value
-            cw = frame.map.linear(v)
-            centre = {a: cw[INDEX[a]] for a in plane[:2]}
+            fm = frame.map.m
+            centre = {}
+            for a in plane[:2]:
+                i = INDEX[a]
+                centre[a] = _combination([(fm[3 * i + INDEX[b]], value) for b, value in m.center.items()
+                                          if abs(fm[3 * i + INDEX[b]]) > EXACT], 0.0)
         elif m.radius is not None:
-            if isinstance(m.radius, Expr):
-                raise ProgramError(COMPUTED)
-            radius = m.radius * factor
+            radius = _combination([(factor, m.radius)], 0.0)
         return Motion(_TURNED[mode] if turned else mode, out, centre, radius)
 
 
 _FANUC_FORBIDDEN: Final = "{what} while coordinate rotation, scaling or a mirror image is on cannot be run"
 """[K] Fanuc 0i-MF and Siemens' ISO-dialect manual 3.2: no reference return and no coordinate system command
 (local, machine or work coordinates, coordinate setting) in these modes."""
+
+
+def _computed(m: Motion) -> bool:
+    return any(isinstance(v, Expr) for v in m.axes.values()) or isinstance(m.radius, Expr) or (
+        m.center is not None and any(isinstance(v, Expr) for v in m.center.values()))
+
+
+def _combination(terms: list[tuple[float, float | Expr]], constant: float) -> float | Expr:
+    """``sum(c * x) + constant``: a number when every ``x`` is one, else the expression (a factor of 1 and
+    a zero constant left out, so an unturned word stays as written)."""
+    total = constant
+    expr: Expr | None = None
+    for c, x in terms:
+        if not isinstance(x, Expr):
+            total += c * x
+            continue
+        term: Expr = x if c == 1.0 else Binary("mul", Num(c), x)
+        expr = term if expr is None else Binary("add", expr, term)
+    if expr is None:
+        return total
+    return expr if total == 0.0 else Binary("add", expr, Num(total))
 
 
 def _cos_sin(degrees: float) -> tuple[float, float]:
