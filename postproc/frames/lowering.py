@@ -101,16 +101,34 @@ class FrameEvaluator:
         self.p = run.p
         self.g5x = run.g5x
         self.scale = MM_PER_INCH if self.modal.units == "inch" else 1.0
+        self.plain_mm = self.scale == 1.0 and self.modal.distance == "absolute"
+        """Absolute millimetres: a move's words are its position (``run``'s common case)."""
 
     def run(self, blocks: Iterator[Block]) -> Iterator[Block]:
+        """Every block; the common one (a move and its feed, no frame yet, absolute millimetres) only
+        updates the position (one ``dict.update``: this step runs for every translation to another
+        dialect, frames or not)."""
         report = self.ctx.diagnostics.error
+        watched, moves, p, state = _WATCHED, _MOVES, self.p, self.ctx.state
         for block in blocks:
-            if block.sections:
-                try:
-                    self.block(block)
-                except PostprocError as err:
-                    report(err.located(self.ctx.at(block)))
+            s = block.sections
+            if not s:
+                yield block
+                continue
+            if self.frame is None and watched.isdisjoint(s):
+                m = s.get("Motion")
+                if m is None:
+                    yield block
                     continue
+                if self.plain_mm and m.mode in moves and not state.symbolic:  # type: ignore[attr-defined]
+                    p.update(m.axes)  # type: ignore[attr-defined]
+                    yield block
+                    continue
+            try:
+                self.block(block)
+            except PostprocError as err:
+                report(err.located(self.ctx.at(block)))
+                continue
             yield block
 
     # -- one block ---------------------------------------------------------------------------------
@@ -146,6 +164,7 @@ class FrameEvaluator:
         work, plane = modal.work_offset, modal.plane
         modal.apply(s)
         self.scale = MM_PER_INCH if modal.units == "inch" else 1.0
+        self.plain_mm = self.scale == 1.0 and modal.distance == "absolute"
         frame = self.frame
         if modal.plane != plane and frame is not None and frame.rotation is not None:
             # [V] Fanuc 15i/16i operator's manuals: no plane selection in the mode of coordinate rotation
@@ -522,6 +541,12 @@ class FrameEvaluator:
 _FANUC_FORBIDDEN: Final = "{what} while coordinate rotation, scaling or a mirror image is on cannot be run"
 """[K] Fanuc 0i-MF and Siemens' ISO-dialect manual 3.2: no reference return and no coordinate system command
 (local, machine or work coordinates, coordinate setting) in these modes."""
+
+
+_WATCHED: Final = frozenset(("Units", "Plane", "DistanceMode", "WorkOffset", "DataSetting", "FrameChange", ASSIGN,
+                             CONTROL, "CutterCompensation", "CompoundMotion", "MachineCoordinates"))
+"""Sections that make a block more than a move to follow, before any frame."""
+_MOVES: Final = frozenset(("rapid", "linear", "cw", "ccw"))
 
 
 def _computed(m: Motion) -> bool:
