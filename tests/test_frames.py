@@ -18,6 +18,8 @@ import re
 from typing import Any
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from postproc.api import translate
 from postproc.errors import ErrorList
@@ -166,6 +168,60 @@ def test_a_fanuc_frame_stays_native_back_to_fanuc() -> None:
 def test_what_the_fanuc_manuals_forbid_or_leave_open_is_a_located_error(text: str, message: str) -> None:
     found = errors(HEAD + text + "M30\n")
     assert found and found[0].startswith(message), found
+
+
+def _carried(point: tuple[float, float], mirror: tuple[bool, bool], factor: float, centre: tuple[float, float],
+             degrees: float) -> tuple[float, float]:
+    """The manuals' order, written out: mirror about the axes through zero, scale about ``centre``, turn about
+    ``centre``."""
+    x, y = (-point[0] if mirror[0] else point[0]), (-point[1] if mirror[1] else point[1])
+    x, y = centre[0] + factor * (x - centre[0]), centre[1] + factor * (y - centre[1])
+    c, s = math.cos(math.radians(degrees)), math.sin(math.radians(degrees))
+    dx, dy = x - centre[0], y - centre[1]
+    return centre[0] + c * dx - s * dy, centre[1] + s * dx + c * dy
+
+
+@settings(max_examples=60, deadline=None)
+@given(degrees=st.integers(-720, 720).map(lambda n: n / 4), mirror=st.tuples(st.booleans(), st.booleans()),
+       factor=st.sampled_from([1, 500, 2000, 3250]), centre=st.tuples(st.integers(-20, 20), st.integers(-20, 20)),
+       path=st.lists(st.tuples(st.integers(-40, 40), st.integers(-40, 40), st.sampled_from(["G01", "G02", "G03"])),
+                     min_size=1, max_size=5))
+def test_any_mirror_scaling_and_rotation_carry_every_point_and_arc(degrees: float, mirror: tuple[bool, bool],
+                                                                   factor: int, centre: tuple[int, int],
+                                                                   path: list[tuple[int, int, str]]) -> None:
+    """Moves and half-circle arcs (their centre the chord's middle) under G51.1, G51 P and G68 together land
+    where the written-out maps put them; an arc turns over under one mirror."""
+    cx, cy = centre
+    lines = [HEAD.rstrip("\n"), "G01 X0. Y0. F100."]
+    if mirror[0] or mirror[1]:
+        lines.append("G51.1" + (" X0." if mirror[0] else "") + (" Y0." if mirror[1] else ""))
+    lines += [f"G51 X{cx}. Y{cy}. Z5. P{factor}", f"G68 X{cx}. Y{cy}. R{degrees}", "G01 X0. Y0."]
+    here, want = (0.0, 0.0), [_carried((0.0, 0.0), mirror, factor / 1000, (cx, cy), degrees)]
+    turned = mirror[0] != mirror[1]
+    for x, y, code in path:
+        if (x, y) == here:
+            continue
+        if code == "G01":
+            lines.append(f"G01 X{x}. Y{y}.")
+        else:
+            i, j = (x - here[0]) / 2, (y - here[1]) / 2
+            lines.append(f"{code} X{x}. Y{y}. I{i} J{j}")
+        want.append(_carried((x, y), mirror, factor / 1000, (cx, cy), degrees))
+        here = (float(x), float(y))
+    lines += ["G69", "G50", "M30"]
+    got = moves("\n".join(lines) + "\n")[1:]  # after the rapid of HEAD (the move to X0 Y0 is none)
+    codes = [line.split()[0] for line in lines if line.startswith(("G01 X", "G02", "G03"))][1:]
+    kept, last = [], (0.0, 0.0)  # a straight move that rounds to where the tool stands is no move
+    for point, code in zip(want, codes):
+        if code != "G01" or (round(point[0], 6), round(point[1], 6)) != (round(last[0], 6), round(last[1], 6)):
+            kept.append((point, code))
+        last = point
+    assert len(got) == len(kept), (got, kept)
+    for event, ((x, y), code) in zip(got, kept):
+        assert abs(event["x"] - x) < 2e-6 and abs(event["y"] - y) < 2e-6, (event, x, y)
+        if code != "G01":
+            assert event["move"] == ({"G02": "cw", "G03": "ccw"}[code] if not turned else
+                                     {"G02": "ccw", "G03": "cw"}[code]), event
 
 
 # -- Fanuc to targets without frames, run in rs274 ------------------------------------------------------
