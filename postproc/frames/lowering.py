@@ -217,11 +217,14 @@ class FrameEvaluator:
         if active:
             self.p["X"], self.p["Y"] = None, None  # [V] convert_setup moves the current point into the turned system
         rest = {k: v for k, v in values.items() if k != "R"}
+        words = setting.text.split()
         if rest:
             s["DataSetting"] = DataSetting(setting.family, setting.table, setting.index, rest, setting.incremental,
-                                           " ".join(w for w in setting.text.split() if not w.upper().startswith("R")))
+                                           " ".join(w for w in words if not w.upper().startswith("R")))
+            _note(s, " ".join(w for w in words if w.upper().startswith("R")) + " evaluated")
         else:
             del s["DataSetting"]
+            _note(s, f"{setting.text} evaluated")
         return True
 
     def _frame(self, rules: str) -> Frame:
@@ -580,7 +583,10 @@ def _cos_sin(degrees: float) -> tuple[float, float]:
 
 def _trace(s: dict[str, Section], change: FrameChange) -> None:
     """The evaluated command stays in the output as a comment (no block vanishes without a trace)."""
-    note = f"{change.text} evaluated"
+    _note(s, f"{change.text} evaluated")
+
+
+def _note(s: dict[str, Section], note: str) -> None:
     comments = s.get("Comments")
     s["Comments"] = Comments([*comments.texts, note] if isinstance(comments, Comments) else [note])
 
