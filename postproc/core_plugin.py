@@ -16,6 +16,7 @@ from .hookspecs import hookimpl
 from .inverse_time import convert_inverse_time
 from .interp import ProgramSyntax
 from .expr import register_expressions
+from .frames import evaluate_frames, register_frames
 from .ir import register_sections
 from .lathe_sections import register_lathe_sections
 from .lower import Lowering
@@ -31,6 +32,7 @@ def postproc_register_xml(factory: XFactory) -> None:
     register_sections(factory)
     register_lathe_sections(factory)
     register_expressions(factory)
+    register_frames(factory)
     register_control(factory)
     from .rs274.lathe_cycles import LatheCycleSyntax
     from .sequences import GeneratedText
@@ -45,6 +47,7 @@ def postproc_register_xml(factory: XFactory) -> None:
 def postproc_register_lowerings(register: Callable[[Lowering], None]) -> None:
     register(check_blocks)  # first: it sees every expansion before a native target's are dropped
     register(patterns.expand_hole_patterns)  # before the cycles: it makes a repeat of the cycle per point
+    register(evaluate_frames)  # before the cycles: a cycle under a frame is expanded at carried points
     register(expand_canned_cycles)
     register(expand_lathe_cycles)
     register(convert_inverse_time)  # after the expansions: it follows the moves they leave

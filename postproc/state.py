@@ -108,6 +108,34 @@ def _work_offset(state: ModalState, s: Any) -> None:
         position[axis] = None
 
 
+def _frame_change(state: ModalState, s: Any) -> None:
+    """A frame command (``postproc.frames``): G92 gives the present point its words; any other command
+    moves the program position by what only the frame knows, so it is unknown on the axes it names (a
+    rotation, scaling or mirror: on every axis of the plane) until programmed again."""
+    position = state.position
+    kind, words = s.kind, s.words
+    if kind in ("polar", "polar_off"):
+        state.extra["polar"] = kind == "polar"  # words are a radius and an angle: the arc check waits for the run
+        for axis in PLANE_AXES[state.plane][:2]:
+            position[axis] = None
+        return
+    if kind == "origin":
+        for axis, value in words.items():
+            if axis in position:
+                position[axis] = _known(value)
+        return
+    if kind in ("local", "mirror", "mirror_off"):
+        axes = [a for a in words if a in position]
+    elif kind in ("rotate", "rotate_off"):
+        axes = [a for a in PLANE_AXES[state.plane][:2]]
+    elif kind == "scale" and "P" not in words:
+        axes = [a for letter, a in (("I", "X"), ("J", "Y"), ("K", "Z")) if letter in words]
+    else:
+        axes = list(position)
+    for axis in axes:
+        position[axis] = None
+
+
 _APPLY: Final[dict[str, Callable[[ModalState, Any], None]]] = {
     "Units": lambda st, s: st.set_units(s.system),
     "Plane": lambda st, s: setattr(st, "plane", s.plane),
@@ -121,6 +149,7 @@ _APPLY: Final[dict[str, Callable[[ModalState, Any], None]]] = {
     "DataSetting": lambda st, s: _offset_set(st, s),
     "ToolSelect": lambda st, s: setattr(st, "tool", _known(s.number)),
     "ToolLengthOffset": lambda st, s: setattr(st, "length", s.mode),
+    "FrameChange": _frame_change,
 }
 """How each modal section changes the state; sections not listed change nothing here."""
 

@@ -236,7 +236,7 @@ GENERATED = [
     ((BlockDelete(2), Sequence(20), ProgramControl("stop")), "/2 N20 M00"),
     ((ProgramStart(12),), "O0012"),
     ((Comments(["HELLO (WORLD)"]),), "(HELLO [WORLD])"),
-    ((NativeCode("fanuc", "G68 (coordinate rotation)", "G68 X0. Y0. R45."),), "G68 X0. Y0. R45."),
+    ((NativeCode("fanuc", "G31 (skip function)", "G31 X1."),), "G31 X1."),
 ]
 
 

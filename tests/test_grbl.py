@@ -124,7 +124,7 @@ def test_a_plain_pause_stays_a_pause() -> None:
                    "block would always run)"),
     ("S500 M03 G95 G01 X5. F0.1\n", "t.nc:2:1: error: the grbl dialect cannot express feed mode per_rev"),
     ("G09 G01 X5. F100.\n", "t.nc:2:1: error: the grbl dialect cannot express a one-shot exact stop"),
-    ("G68 X0. Y0. R30.\n", "t.nc:2:1: error: G68 (coordinate rotation) from fanuc has no equivalent in grbl"),
+    ("G31 X1.\n", "t.nc:2:1: error: G31 (skip function) from fanuc has no equivalent in grbl"),
 ])
 def test_unsupported_constructs_are_located_errors(fanuc: str, message: str) -> None:
     assert grbl_errors(fanuc) == [message]
@@ -149,8 +149,8 @@ def test_warn_mode_drops_a_motion_with_the_mode_it_needs() -> None:
 
 
 def test_warn_mode_comments_out_a_block_that_has_no_meaning_left() -> None:
-    text, warnings = to_grbl("G68 X0. Y0. R30.\nG00 X1.\n", on_unsupported="warn")
-    assert text == "(UNSUPPORTED LINE 2: G68 X0. Y0. R30.)\nG0 X1.\n"
+    text, warnings = to_grbl("G31 X1.\nG00 X1.\n", on_unsupported="warn")
+    assert text == "(UNSUPPORTED LINE 2: G31 X1.)\nG0 X1.\n"
     assert len(warnings) == 1
 
 

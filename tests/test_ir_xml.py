@@ -83,6 +83,15 @@ SAMPLES: dict[str, list[tuple[Builder, str]]] = {
         (lambda c: DataSetting("fanuc", "tool_length", 5, {"R": -1.5}, True, "G10 L10 P5 R-1.5"),
          '<DataSetting family="fanuc" table="tool_length" index="5" incremental="true" text="G10 L10 P5 R-1.5">\n'
          '  <Values R="-1.5"/>\n</DataSetting>')],
+    "FrameChange": [
+        (lambda c: __import__("postproc.frames", fromlist=["FrameChange"]).FrameChange(
+            "rotate", {"X": 10.0, "Y": -2.5, "R": 30.0}, "fanuc", "fanuc", "G68 X10. Y-2.5 R30."),
+         '<FrameChange kind="rotate" rules="fanuc" family="fanuc" text="G68 X10. Y-2.5 R30.">\n'
+         '  <Words X="10.0" Y="-2.5" R="30.0"/>\n</FrameChange>'),
+        (lambda c: __import__("postproc.frames", fromlist=["FrameChange"]).FrameChange(
+            "origin", {"X": Var(Num(1.0))}, "rs274", "linuxcnc", "G92 X#1"),
+         '<FrameChange kind="origin" rules="rs274" family="linuxcnc" text="G92 X#1">\n'
+         '  <Words>\n    <Value of="X">\n      <Var>\n        <Num value="1.0"/>\n      </Var>\n    </Value>\n  </Words>\n</FrameChange>')],
     "Generated": [
         (lambda c: __import__("postproc.sequences", fromlist=["GeneratedText"]).GeneratedText("(LOAD T1)", "tool_change"),
          '<Generated text="(LOAD T1)" template="tool_change"/>')],

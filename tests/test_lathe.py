@@ -202,18 +202,18 @@ def test_tool_and_offset_word() -> None:
 # -- the same number, another meaning ---------------------------------------------------------------
 
 @pytest.mark.parametrize("text, setup, key, value", [
-    ("G50 X100. Z50.", MILL, "NativeCode", "G50 (scaling cancel)"),
+    ("G50", MILL, "FrameChange", "scale_off"),
     ("G50 X100. Z50.", LATHE, "CoordinateSet", {"X": 100.0, "Z": 50.0}),
     ("G98", MILL, "ReturnLevel", "initial"),
     ("G98", LATHE, "FeedMode", "per_min"),
     ("G99", LATHE, "FeedMode", "per_rev"),
     ("G90", MILL, "DistanceMode", "absolute"),
     ("G94", MILL, "FeedMode", "per_min"),
-    ("G92 X10. Z0.", MILL, "NativeCode", "G92 (work coordinate system setting)"),
+    ("G92 X10. Z0.", MILL, "FrameChange", "origin"),
 ])
 def test_machine_type_decides_meaning(text: str, setup: MachineSetup, key: str, value: object) -> None:
     section = blocks(text + "\n", "fanuc", setup)[0].sections[key]
-    got = {"NativeCode": "what", "CoordinateSet": "axes", "ReturnLevel": "level", "FeedMode": "mode",
+    got = {"NativeCode": "what", "FrameChange": "kind", "CoordinateSet": "axes", "ReturnLevel": "level", "FeedMode": "mode",
            "DistanceMode": "mode"}[key]
     assert getattr(section, got) == value
 

@@ -304,7 +304,7 @@ def test_a_tool_change_with_the_spindle_stopped_adds_no_stop() -> None:
 
 
 def test_nothing_runs_after_the_program_end() -> None:
-    assert_events(body("G21 G90\nM30\nG00 X10.\nG68 X0 Y0 R45."), [{"line": 2, "event": "end"}])
+    assert_events(body("G21 G90\nM30\nG00 X10.\nG31 X1."), [{"line": 2, "event": "end"}])
 
 
 def test_block_delete_blocks_are_executed() -> None:
@@ -314,13 +314,13 @@ def test_block_delete_blocks_are_executed() -> None:
 # -- what cannot be simulated --------------------------------------------------------------------------
 
 def test_native_codes_are_rejected_with_their_location() -> None:
-    assert errors_of("G21 G90\nG00 X1.\nN30 G68 X0 Y0 R45.") == [
-        "t.nc:3:5: error: G68 (coordinate rotation) cannot be simulated"]
+    assert errors_of("G21 G90\nG00 X1.\nN30 G31 X1.") == [
+        "t.nc:3:5: error: G31 (skip function) cannot be simulated"]
     # a machine builder's M code is simulated since issue 12 (tests/test_machine_codes.py)
 
 
 def test_every_error_is_collected_and_the_run_goes_on() -> None:
-    errors = errors_of("G21 G90\nG68 X0 Y0 R45.\nG01 X1.\nG00 X1. A1.")
+    errors = errors_of("G21 G90\nG31 X1.\nG01 X1.\nG00 X1. A1.")
     assert [e.split(": error: ")[0] for e in errors] == ["t.nc:2:1", "t.nc:3:1", "t.nc:4:9"]
 
 

@@ -44,12 +44,12 @@ def test_jsonl_to_a_file(cli: Callable[..., Any], tmp_path: Path) -> None:
 
 
 def test_errors_are_located_exit_1_and_leave_no_output(cli: Callable[..., Any], tmp_path: Path) -> None:
-    src = write(tmp_path, "G21 G90\nG00 X1.\nN30 G68 X0 Y0 R45.\nG02 X10. Y0. R1. F100.\n")
+    src = write(tmp_path, "G21 G90\nG00 X1.\nN30 G31 X1.\nG02 X10. Y0. R1. F100.\n")
     out = tmp_path / "bad.jsonl"
     r = cli("toolpath", src, "--dialect", "fanuc", "-o", out)
     assert r.status == 1
     assert r.err_lines == [
-        f"{src}:3:5: error: G68 (coordinate rotation) cannot be simulated",
+        f"{src}:3:5: error: G31 (skip function) cannot be simulated",
         f"{src}:4:14: error: arc radius 1.0000 mm is too small for a chord of 9.0000 mm",
     ]
     assert not out.exists()

@@ -246,13 +246,21 @@ def test_a_lathe_coordinate_setting_moves_the_frame_not_the_machine(cli, tmp_pat
 
 
 def test_translate_says_where_the_travel_can_no_longer_be_checked(cli, tmp_path):
-    # the simulation cannot run G92 on a mill: from there the machine position is not known
-    machine, nc = _files(tmp_path, "G90 G54 G0 X0 Y0 Z50\nG92 X0 Y0\nG0 X600\nM30\n")
+    # the simulation cannot run a skip function (G31): from there the machine position is not known
+    machine, nc = _files(tmp_path, "G90 G54 G0 X0 Y0 Z50\nG31 X1.\nG0 X600\nM30\n")
     result = cli("translate", nc, "--from", "fanuc", "--to", "fanuc", "--machine", machine)
     assert result.status == 1
-    assert result.err_lines == [f"{nc}:2:1: error: the travel cannot be checked from here on: G92 (work "
-                                "coordinate system setting) cannot be simulated"]
+    assert result.err_lines == [f"{nc}:2:1: error: the travel cannot be checked from here on: G31 (skip "
+                                "function) cannot be simulated"]
     assert cli("translate", nc, "--from", "fanuc", "--to", "fanuc").status == 0  # no limits, no check
+
+
+def test_the_travel_is_checked_through_a_coordinate_setting(cli, tmp_path):
+    # G92 X100 at machine X0 (G54 zero here): X500 in the new frame is machine X400, inside; X600 is 500, beyond
+    machine, nc = _files(tmp_path, "G90 G54 G0 X0 Y0 Z50\nG92 X100 Y0\nG0 X500\nG0 X601\nM30\n")
+    result = cli("translate", nc, "--from", "fanuc", "--to", "fanuc", "--machine", machine)
+    assert result.status == 1
+    assert result.err_lines == [f"{nc}:4:4: error: X+1.000 mm beyond the limit 500.000 (machine X 501.000)"]
 
 
 @pytest.mark.parametrize("code, errors", [("G3", 1), ("G2", 0)])

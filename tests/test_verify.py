@@ -185,7 +185,7 @@ def test_each_program_uses_its_own_setup() -> None:
 
 def test_program_errors_in_either_file_are_raised_together() -> None:
     with pytest.raises(ErrorList) as info:
-        check(G90.replace("G04 P500", "G68 X0 Y0 R1."), G90.replace("R10.", "R1."))
+        check(G90.replace("G04 P500", "G31 X1."), G90.replace("R10.", "R1."))
     assert [str(e).split(": error")[0] for e in info.value.errors] == ["in.nc:11:1", "out.nc:10:15"]
 
 

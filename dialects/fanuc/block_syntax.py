@@ -24,6 +24,7 @@ class FanucBlockSyntax(WordBlockSyntax):
     TITLE: ClassVar[str] = "Fanuc milling"
     CODES: ClassVar[CodeTable] = CODES
     FAMILY: ClassVar[str] = "fanuc"
+    FRAME_RULES: ClassVar[str] = "fanuc"
     MACHINE_DEFAULTS: ClassVar[Defaults] = DEFAULTS
     BASE_VARIANT: ClassVar[str] = "fanuc"
     DATA_TABLES: ClassVar[Mapping[int, tuple[str, int, int]]] = {

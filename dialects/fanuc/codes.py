@@ -2,7 +2,9 @@
 
 Rows are ``(spelling, modal group, kind, argument)`` (see ``postproc.rs274.codes``); Fanuc writes the
 spelling with its leading zero (``G00``, ``M03``) and reads ``G0``/``G00``/``G000`` alike. Modal groups
-follow the Fanuc manuals (01 motion, 09 canned cycles, ...).
+follow the Fanuc manuals (01 motion, 09 canned cycles, 11 scaling, 16 rotation, 22 mirror image, ...).
+The frame codes (G52, G92, G68/G69, G51/G50, G51.1/G50.1)
+and G16/G15 (polar coordinates, modal group 17) are read into ``FrameChange`` (``postproc.frames``).
 """
 
 from __future__ import annotations
@@ -16,6 +18,8 @@ ROWS = (
     ("G03", "01", "motion", "ccw"),
     ("G04", "00", "dwell", None),
     ("G09", "00", "path_once", "exact_stop"),
+    ("G15", "17", "frame", "polar_off"),
+    ("G16", "17", "frame", "polar"),
     ("G17", "02", "plane", "XY"),
     ("G18", "02", "plane", "ZX"),
     ("G19", "02", "plane", "YZ"),
@@ -29,6 +33,11 @@ ROWS = (
     ("G43", "08", "length", "positive"),
     ("G44", "08", "length", "negative"),
     ("G49", "08", "length", "cancel"),
+    ("G50", "11", "frame", "scale_off"),
+    ("G50.1", "22", "frame", "mirror_off"),
+    ("G51", "11", "frame", "scale"),
+    ("G51.1", "22", "frame", "mirror"),
+    ("G52", "00", "frame", "local"),
     ("G53", "00", "machine", None),
     ("G54", "14", "offset", 1),
     ("G55", "14", "offset", 2),
@@ -38,6 +47,8 @@ ROWS = (
     ("G59", "14", "offset", 6),
     ("G61", "15", "path", "exact_stop"),
     ("G64", "15", "path", "cutting"),
+    ("G68", "16", "frame", "rotate"),
+    ("G69", "16", "frame", "rotate_off"),
     ("G73", "09", "cycle", "peck_chip"),
     ("G74", "09", "cycle", "tap_left"),
     ("G76", "09", "cycle", "fine_bore"),
@@ -53,6 +64,7 @@ ROWS = (
     ("G89", "09", "cycle", "bore_dwell_feed"),
     ("G90", "03", "distance", "absolute"),
     ("G91", "03", "distance", "incremental"),
+    ("G92", "00", "frame", "origin"),
     ("G94", "05", "feed_mode", "per_min"),
     ("G95", "05", "feed_mode", "per_rev"),
     ("G98", "10", "return", "initial"),
@@ -78,20 +90,10 @@ CODES = CodeTable(
         "7.1": "cylindrical interpolation",
         "10": "programmable data input",
         "11": "programmable data input cancel",
-        "15": "polar coordinates cancel",
-        "16": "polar coordinates",
         "31": "skip function",
-        "50": "scaling cancel",
-        "51": "scaling",
-        "50.1": "programmable mirror image cancel",
-        "51.1": "programmable mirror image",
-        "52": "local coordinate system",
         "65": "macro call",
         "66": "modal macro call",
         "67": "modal macro call cancel",
-        "68": "coordinate rotation",
-        "69": "coordinate rotation cancel",
-        "92": "work coordinate system setting",
         "54.1": "additional work coordinate systems",
     },
     native_m={98: "subprogram call", 99: "subprogram return"},

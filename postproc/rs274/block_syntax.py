@@ -29,6 +29,7 @@ from postproc.ir import (
     WorkOffset,
 )
 from postproc.context import Context, word_columns
+from postproc.frames.reading import read_frame
 from postproc.syntax import Syntax
 
 from .codes import CodeTable, g_key
@@ -54,6 +55,7 @@ _PLAIN_KIND: Final = bytes(_AXIS if c in AXIS_LETTERS else _N if c == "N" else _
 _MOTION_KEYS: Final = {"0": "0", "00": "0", "1": "1", "01": "1", "2": "2", "02": "2", "3": "3", "03": "3"}
 """The spellings of G0-G3 ``_plain`` reads (their ``g_key``); the table says what each means."""
 _MOTION_MODES: Final = frozenset(("rapid", "linear", "cw", "ccw"))
+_ROTATION: Final = frozenset("R")
 DATA_KEY: Final = "10"
 """The number of the family's programmable data input code (``DataSetting``)."""
 
@@ -83,12 +85,18 @@ class WordBlockSyntax(Syntax):
     """A G10 in incremental mode adds to the entry (Fanuc); False: it sets it whatever the mode (LinuxCNC)."""
     DATA_P0_ACTIVE: ClassVar[bool] = False
     """G10 L2 P0 names the active work system (LinuxCNC), not an offset common to all (Fanuc)."""
+    DATA_ROTATION: ClassVar[bool] = False
+    """A work offset setting takes R, the work system's XY rotation (LinuxCNC ``G10 L2 P1 R30``:
+    ``postproc.frames``)."""
     BASE_VARIANT: ClassVar[str] = ""
     """The variant whose machine codes every variant of the family has."""
     """Words a verbatim M code takes with it (M98 P.. L..)."""
     CYCLE_K_COUNTS: ClassVar[bool] = True
     """``K`` in a cycle block is a whole repeat count (Fanuc); False: a real number of the cycle's own
     (Fagor's dwell)."""
+    FRAME_RULES: ClassVar[str] = ""
+    """Whose semantics the table's frame codes (kind ``frame``) have: 'fanuc' or 'rs274'
+    (``postproc.frames``); '' where the table has none."""
     POINTLESS_IN_UNITS: ClassVar[bool] = False
     """A number without a decimal point is in program units whatever the set-up's ``Input`` says
     (DIN 66025 controls such as ISG: ``X10`` is 10 mm), instead of least input increments."""
@@ -354,7 +362,8 @@ class WordBlockSyntax(Syntax):
             raise ProgramError(f"{code} needs the entry it sets, P{first}-P{last}", at)
         if not first <= p <= last:
             raise ProgramError(f"{code} P{p}: the entry is P{first}-P{last}", ctx.at(block, ctx.column_of(block, "P")))
-        letters = AXIS_LETTERS if name.startswith("work_offset") else frozenset("R")
+        letters = (AXIS_LETTERS | _ROTATION if self.DATA_ROTATION and name == "work_offset" else AXIS_LETTERS) \
+            if name.startswith("work_offset") else frozenset("R")
         data = {k: _real(v) for k, v in values.items() if k in letters}
         if set(values) - letters - {"L", "P", "N", "O"}:  # a word the IR does not model (LinuxCNC's R)
             block.add(NativeCode(self.DIALECT, native, block.text or ""))
@@ -452,6 +461,9 @@ class WordBlockSyntax(Syntax):
                 home = arg
             elif kind == "machine":
                 block.add(MachineCoordinates())
+            elif kind == "frame":
+                block.add(read_frame(block, ctx, arg, f"G{num}", values, used, self.FRAME_RULES, self.family(),
+                                     col_of_word(block, "G", num)))
         if "H" in values and "H" not in used and "08" not in codes:
             self._length_register(block, ctx, values, used)
         if "CycleCall" in block.sections:

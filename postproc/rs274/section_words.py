@@ -302,6 +302,13 @@ class SectionWords(NumberWriter):
                                    f"equivalent in {self.DIALECT}", self.ctx.at(block))
         return [s.text]
 
+    def frame_change_words(self, s: Any, block: Block) -> list[str]:
+        """A frame command as written, back to its own dialect (``postproc.frames.lowering`` evaluates it
+        for every other target)."""
+        if s.family != (self.target.family() if self.target is not None else self.DIALECT):
+            self.unsupported(s.describe(), block)
+        return [s.text]
+
     def native_code_words(self, s: Any, block: Block) -> list[str]:
         if s.dialect != self.DIALECT:
             raise UnsupportedError(f"{s.what} from {s.dialect} has no equivalent in {self.DIALECT}",

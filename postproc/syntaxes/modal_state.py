@@ -74,7 +74,8 @@ class ModalStateSyntax(Syntax):
         elif mode is None:
             return
         if mode == "cw" or mode == "ccw":
-            _check_arc(block, ctx, motion)  # whatever else the block says: the simulator checks every arc
+            if not state.extra.get("polar"):  # (polar words are no end point: the simulation checks those)
+                _check_arc(block, ctx, motion)  # whatever else the block says: the simulator checks every arc
         pos = state.position
         increments = ctx.increments  # a lathe's U/W (``Dialect.INCREMENTAL_AXES``); empty on a mill
         if increments and not increments.keys().isdisjoint(motion.axes):

@@ -51,6 +51,8 @@ class NgcBlockSyntax(NgcWordBlockSyntax):
     (``tool_entry``); other G10 forms are kept verbatim."""
     DATA_INCREMENTAL: ClassVar[bool] = False
     DATA_P0_ACTIVE: ClassVar[bool] = True
+    DATA_ROTATION: ClassVar[bool] = True
+    FRAME_RULES: ClassVar[str] = "rs274"
 
     def _native(self, block: Block, ctx: Context, natives: list[str], raw: dict[str, str]) -> None:
         super()._native(block, ctx, natives, raw)

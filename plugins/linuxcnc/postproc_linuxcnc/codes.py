@@ -7,7 +7,8 @@ and G87/G88 follow the NIST RS274/NGC words and motion (kept verbatim, see ``NAT
 G61.1 and G93 are added; G33.1 (rigid tapping) reads into ``RigidTap`` and G90.1/G91.1 (the arc centre
 mode, kind ``arc_centres``, which no section carries) into offsets from the arc's start (``block_syntax``). G61 (exact path) and G61.1 (exact stop) both read as exact stop (the IR does
 not tell them apart); G61 is written. Sources: LinuxCNC ``docs/src/gcode/g-code.adoc`` and
-``m-code.adoc``, and DIALECTS.md §2.1 "LinuxCNC / RS274-NGC baseline".
+``m-code.adoc``, and DIALECTS.md §2.1 "LinuxCNC / RS274-NGC baseline". G52 and G92-G92.3 are frame
+codes (``postproc.frames``, rs274 rules).
 """
 
 from __future__ import annotations
@@ -33,6 +34,7 @@ ROWS = (
     ("G42", "07", "cutter", "right"),
     ("G43", "08", "length", "positive"),
     ("G49", "08", "length", "cancel"),
+    ("G52", "00", "frame", "local"),
     ("G53", "00", "machine", None),
     ("G54", "14", "offset", 1),
     ("G55", "14", "offset", 2),
@@ -60,6 +62,10 @@ ROWS = (
     ("G91", "03", "distance", "incremental"),
     ("G90.1", "13", "arc_centres", "absolute"),
     ("G91.1", "13", "arc_centres", "incremental"),
+    ("G92", "00", "frame", "origin"),
+    ("G92.1", "00", "frame", "origin_clear"),
+    ("G92.2", "00", "frame", "origin_suspend"),
+    ("G92.3", "00", "frame", "origin_restore"),
     ("G93", "05", "feed_mode", "inverse_time"),
     ("G94", "05", "feed_mode", "per_min"),
     ("G95", "05", "feed_mode", "per_rev"),
@@ -92,9 +98,7 @@ NATIVE_G: dict[str, str] = {
     "71.1": "lathe roughing cycle", "71.2": "lathe roughing cycle", "72": "lathe facing cycle",
     "72.1": "lathe facing cycle", "72.2": "lathe facing cycle", "76": "threading cycle",
     "87": "RS274/NGC back boring (I/J shift, K top)", "88": "RS274/NGC manual boring",
-"92": "coordinate system offset",
-    "92.1": "reset G92 offsets", "92.2": "reset G92 offsets, keep parameters",
-    "92.3": "restore G92 offsets", "96": "constant surface speed", "97": "spindle speed in rpm",
+    "96": "constant surface speed", "97": "spindle speed in rpm",
 }
 """LinuxCNC codes kept verbatim: they round-trip to LinuxCNC and are unsupported anywhere else."""
 

@@ -1,0 +1,197 @@
+"""The frame a program's points are read in, and how each frame command changes it.
+
+A programmed point ``p`` (program coordinates) reaches the work coordinates (those of the active work
+system, G54...) as ``w = map p`` on X, Y, Z, and as ``w = p + offset`` on the other axes. Two rule sets:
+
+* ``rs274`` (LinuxCNC, [V] ``src/emc/rs274ngc/interp_convert.cc`` ``convert_axis_offsets`` and
+  ``convert_setup``, checked with rs274's SET_G92_OFFSET/SET_XY_ROTATION): ``w = R(p + o)``, where ``o``
+  is the one offset G52 and G92 share (G52 sets it, G92 makes the current point read the programmed
+  value: ``o = p + o - value``; G92.1 and G92.2 clear it, G92.1 also its parameters, G92.3 restores it
+  from them) and ``R`` is the active work system's XY rotation (G10 L2 R, about the work origin).
+* ``fanuc`` (Fanuc 0i/30i mill): ``w = T(Rot(Scale(Mirror(p))))`` [K: Fanuc 0i-MF operator's manual,
+  "programmable mirror image", as in Siemens' ISO-dialect manual 3.2: mirror, then scaling, then
+  rotation, commanded in that order and cancelled in reverse]; ``T`` adds the G52 local offset and the
+  G92 shift. G68 rotates about its centre in the active plane (R absolute: parameter 5400#0 RIN = 0,
+  [V] 0i-A connection manual), G51 scales about its centre (a negative factor mirrors), G51.1 mirrors
+  about a line per axis.
+
+The program position is tracked beside the frame by the caller (``postproc.frames.lowering``); each
+command here says how it moves that position (the tool stays where it is) or makes it unknown (None).
+"""
+
+from __future__ import annotations
+
+from typing import Final
+
+from ..errors import ProgramError
+from .affine import IDENTITY, XYZ, Affine, about, diagonal, rotation, translation
+
+Position = dict[str, "float | None"]
+PLANE_AXES: Final = {"XY": ("X", "Y", "Z"), "ZX": ("Z", "X", "Y"), "YZ": ("Y", "Z", "X")}
+
+
+class Frame:
+    """The frame in force (lengths in mm, angles in degrees)."""
+
+    __slots__ = ("rules", "offset", "saved", "local", "rotation", "scaling", "mirror", "turns", "work", "map",
+                 "polar")
+
+    def __init__(self, rules: str = "rs274") -> None:
+        self.rules = rules
+        self.offset: dict[str, float] = {}
+        """G92's offset (rs274: shared with G52; fanuc: the G92 shift of every work system)."""
+        self.saved: dict[str, float] = {}
+        """rs274: the offset's parameters (#5211-#5219), what G92.3 restores."""
+        self.local: dict[str, float] = {}
+        """fanuc: the G52 local offset."""
+        self.rotation: tuple[str, float, float, float] | None = None
+        """fanuc G68: (plane, first and second centre coordinate, degrees)."""
+        self.scaling: tuple[tuple[float, float, float], tuple[float, float, float]] | None = None
+        """fanuc G51: (centre, factor per axis X, Y, Z)."""
+        self.mirror: dict[str, float] = {}
+        """fanuc G51.1: axis -> the coordinate it is mirrored about."""
+        self.turns: dict[int, float] = {}
+        """rs274: each work system's XY rotation (G10 L2 R), by work system (1 = G54)."""
+        self.work = 1
+        self.map: Affine = IDENTITY
+        """X, Y, Z: program point -> work point."""
+        self.polar: str | None = None
+        """fanuc G16: the plane whose first axis word is a radius and second an angle (None: G15)."""
+
+    # -- the map ----------------------------------------------------------------------------------
+    def plain(self) -> bool:
+        """Nothing to evaluate: no offset, map or polar coordinates."""
+        return self.polar is None and not self.offset and not self.local and self.map.is_identity()
+
+    def linear_active(self) -> bool:
+        """A rotation, scaling or mirror is in force (not only offsets)."""
+        return self.map.m != IDENTITY.m
+
+    def shift(self, axis: str) -> float:
+        """What the frame adds on an axis other than X, Y, Z."""
+        return self.offset.get(axis, 0.0) + self.local.get(axis, 0.0)
+
+    def compose(self) -> None:
+        offset = tuple(self.offset.get(a, 0.0) + self.local.get(a, 0.0) for a in XYZ)
+        if self.rules == "rs274":
+            turn = self.turns.get(self.work, 0.0)
+            self.map = translation(offset).then(Affine(rotation(PLANE_AXES["XY"], turn))) if turn else translation(offset)
+            return
+        m = IDENTITY
+        if self.mirror:
+            m = about(tuple(self.mirror.get(a, 0.0) for a in XYZ), diagonal(tuple(-1.0 if a in self.mirror else 1.0 for a in XYZ)))
+        if self.scaling is not None:
+            m = m.then(about(*reversed_args(self.scaling)))
+        if self.rotation is not None:
+            plane, c1, c2, degrees = self.rotation
+            a1, a2, _ = PLANE_AXES[plane]
+            centre = [0.0, 0.0, 0.0]
+            centre[XYZ.index(a1)], centre[XYZ.index(a2)] = c1, c2
+            m = m.then(about(centre, rotation((a1, a2), degrees)))
+        self.map = m.then(translation(offset))
+
+    # -- commands (values in mm; ``p`` is the program position, changed in place) -------------------
+    def set_local(self, values: dict[str, float], p: Position) -> None:
+        """G52: the local offset is replaced on the named axes; the tool stays, so the program position
+        moves by the difference (rs274: the offset G92 shares, [V] convert_axis_offsets)."""
+        store = self.offset if self.rules == "rs274" else self.local
+        for axis, value in values.items():
+            old = store.get(axis, 0.0)
+            here = p.get(axis)
+            p[axis] = None if here is None else here + old - value
+            store[axis] = value
+        if self.rules == "rs274":
+            self.saved = dict(self.offset)
+        self.compose()
+
+    def set_origin(self, values: dict[str, float], p: Position, why: str) -> None:
+        """G92: the current point reads ``values``: ``o = p + o - value``. ``why`` names the command for
+        the error where the current point is not known."""
+        for axis, value in values.items():
+            here = p.get(axis)
+            if here is None:
+                raise ProgramError(f"{why} needs the current position on {axis}, which is not known here "
+                                   f"(program an absolute move on {axis} first)")
+            self.offset[axis] = here + self.offset.get(axis, 0.0) - value
+            p[axis] = value
+        if self.rules == "rs274":
+            self.saved = dict(self.offset)
+        self.compose()
+
+    def clear_origin(self, p: Position, keep_parameters: bool) -> None:
+        """G92.1 / G92.2: the offset is gone (G92.2 keeps its parameters for G92.3)."""
+        for axis, value in self.offset.items():
+            here = p.get(axis)
+            p[axis] = None if here is None else here + value
+        self.offset = {}
+        if not keep_parameters:
+            self.saved = {}
+        self.compose()
+
+    def restore_origin(self, p: Position) -> None:
+        """G92.3: the offset comes back from its parameters."""
+        for axis in set(self.offset) | set(self.saved):
+            here = p.get(axis)
+            p[axis] = None if here is None else here + self.offset.get(axis, 0.0) - self.saved.get(axis, 0.0)
+        self.offset = dict(self.saved)
+        self.compose()
+
+    def rotate(self, plane: str, c1: float, c2: float, degrees: float, p: Position) -> None:
+        """G68 (fanuc): the program position on the plane's axes is unknown until programmed again."""
+        self.rotation = (plane, c1, c2, degrees)
+        self._forget(PLANE_AXES[plane][:2], p)
+
+    def unrotate(self, p: Position) -> None:
+        if self.rotation is not None:
+            self._forget(PLANE_AXES[self.rotation[0]][:2], p)
+        self.rotation = None
+        self.compose()
+
+    def scale(self, centre: tuple[float, float, float], factors: tuple[float, float, float], p: Position) -> None:
+        """G51 (fanuc)."""
+        self.scaling = (centre, factors)
+        self._forget(tuple(a for a, f in zip(XYZ, factors) if f != 1.0), p)
+
+    def unscale(self, p: Position) -> None:
+        if self.scaling is not None:
+            self._forget(tuple(a for a, f in zip(XYZ, self.scaling[1]) if f != 1.0), p)
+        self.scaling = None
+        self.compose()
+
+    def set_mirror(self, lines: dict[str, float], p: Position) -> None:
+        """G51.1 (fanuc): mirrored about ``lines`` on their axes."""
+        self.mirror.update(lines)
+        self._forget(tuple(lines), p)
+
+    def clear_mirror(self, axes: tuple[str, ...], p: Position) -> None:
+        """G50.1 (fanuc): the named axes are no longer mirrored."""
+        for axis in axes:
+            if axis in self.mirror:
+                del self.mirror[axis]
+                p[axis] = None
+        self.compose()
+
+    def set_turn(self, work: int, degrees: float) -> None:
+        """G10 L2 R (rs274): work system ``work``'s XY rotation."""
+        self.turns[work] = degrees
+        self.compose()
+
+    def select_work(self, work: int) -> None:
+        """G54...: the new work system's rotation is in force (rs274)."""
+        self.work = work
+        self.compose()
+
+    def _forget(self, axes: tuple[str, ...], p: Position) -> None:
+        """Where the program stands on ``axes`` in the new frame is not taken as known: the next move
+        programs them [?: Fanuc keeps a 'programmed position' that the manuals do not state for a
+        frame change; Mitsubishi's M700 manual asks for an absolute move after G68.1]."""
+        for axis in axes:
+            p[axis] = None
+        self.compose()
+
+
+def reversed_args(scaling: tuple[tuple[float, float, float], tuple[float, float, float]]) -> tuple[
+        tuple[float, float, float], tuple[float, float, float, float, float, float, float, float, float]]:
+    """(centre, factors) -> the arguments of ``about``."""
+    centre, factors = scaling
+    return centre, diagonal(factors)

@@ -1,0 +1,596 @@
+"""evaluate_frames: a target that runs the program's frame commands itself gets them as written; every other
+target (and the simulation) gets every point evaluated into the work coordinates.
+
+Kept native only back to the reading dialect itself (Fanuc to Fanuc, a Haas set-up included; LinuxCNC
+to LinuxCNC): another dialect's G52 or G92 shares the number but not every rule (LinuxCNC's G52 and G92
+share one offset, Fanuc's do not), and a target that runs some frames natively and gets others evaluated
+would stack them wrongly.
+
+Evaluated, each move is carried through the frame (``postproc.frames.frame``): an absolute point to its
+absolute work point, on every axis the frame mixes into (a rotated ``X10`` moves X and Y); an
+incremental move as its carried increment; an arc's centre offsets as vectors, its radius scaled, its
+direction turned over by a mirror, and refused where the frame makes it an ellipse. A canned cycle under a
+frame other than offsets is expanded (its holes carried like moves), and a mirror swaps the side of
+cutter compensation. The frame commands themselves leave the block.
+
+The program position is tracked in program coordinates (mm), None where unknown; a move that needs an
+unknown coordinate (an axis it omits, that the frame mixes into the ones it programs) is a located error.
+
+A program kept symbolically (its loops, jumps and calls written for a target that has them) runs in
+another order than its text: there a frame command, or a move that needs the position the text order
+would give, is an error, which the translation's dry run (``postproc.api``) takes as the reason to
+flatten the program instead; a computed word under a frame set before is carried as an expression
+(``X[#1*10.+100.]``). The dry run starts from the frame and position the real run has reached (kept in
+``ctx.state.extra[RUN_KEY]``).
+"""
+
+from __future__ import annotations
+
+import copy
+import math
+from typing import Final, Iterator
+
+from ..context import Context
+from ..dialect import Dialect
+from ..errors import PostprocError, ProgramError
+from ..control import ASSIGN, CONTROL
+from ..expr import Binary, Expr, Num
+from ..ir import AXES, Block, Comments, CompoundMotion, CutterCompensation, DataSetting, Motion, Section
+from ..state import MM_PER_INCH, ModalState, changes_nothing
+from .affine import EXACT, INDEX, XYZ
+from .frame import PLANE_AXES, Frame, Position
+from .section import FrameChange
+
+LINEAR: Final = frozenset("XYZUVW")
+COMPUTED: Final = "a computed word under a coordinate frame (the frame is evaluated into the coordinates here)"
+SYMBOLIC: Final = ("a coordinate frame in a program kept symbolically (it would be evaluated in the order of the "
+                   "text, not of the run)")
+RUN_KEY: Final = "frames.run"
+"""``ctx.state.extra`` key of the frame and program position the lowering has reached (``FrameRun``)."""
+
+
+class FrameRun:
+    """What the evaluation has reached: copied with the reading state into a translation's dry run."""
+
+    __slots__ = ("frame", "p", "g5x", "symbolic")
+
+    def __init__(self, p: Position) -> None:
+        self.frame: Frame | None = None
+        """None until the first frame command (or a rotation of a work system)."""
+        self.p = p
+        """The program position, mm (degrees on rotary axes), None where unknown."""
+        self.g5x: dict[int, dict[str, float]] = {}
+        """Work offsets a G10 in the program set, mm (the rest are unknown here)."""
+        self.symbolic = False
+        """A construct (an assignment, a control statement) went by: the program is kept symbolically."""
+_SWAPPED: Final = {"left": "right", "right": "left"}
+_TURNED: Final = {"cw": "ccw", "ccw": "cw"}
+
+
+def evaluate_frames(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """Lowering step (see the module docstring): back to its own dialect the stream passes through."""
+    if target.NAME == ctx.dialect or ctx.lathe:
+        return blocks
+    return FrameEvaluator(ctx, target.WRITER is not None).run(blocks)
+
+
+class FrameEvaluator:
+    """The frame and the program position of one run, and the rewriting of each block."""
+
+    def __init__(self, ctx: Context, rewrite: bool = True) -> None:
+        self.ctx = ctx
+        self.rewrite = rewrite
+        """Mark a rewritten block changed (a writer regenerates it); the simulation, which writes nothing,
+        keeps its text for the columns of its errors."""
+        self.modal = ModalState()
+        extra = ctx.state.extra
+        run = extra.get(RUN_KEY)
+        if not isinstance(run, FrameRun):
+            m = ctx.setup.machine
+            start = {"X": m.start_x, "Y": m.start_y, "Z": m.start_z}
+            run = extra[RUN_KEY] = FrameRun(
+                {a: float(start.get(a, 0.0)) * (m.mm() if a in LINEAR else 1.0) for a in m.axes})
+        if ctx.run_data.get("dry_run"):
+            run.symbolic = True  # a dry run sees the part of the program that would be kept symbolically
+            self.modal.units = ctx.state.units
+            self.modal.plane = ctx.state.plane
+            self.modal.distance = ctx.state.distance
+            self.modal.work_offset = ctx.state.work_offset
+        self.reached = run
+        self.frame = run.frame
+        self.p = run.p
+        self.g5x = run.g5x
+        self.scale = MM_PER_INCH if self.modal.units == "inch" else 1.0
+        self.plain_mm = self.scale == 1.0 and self.modal.distance == "absolute"
+        """Absolute millimetres: a move's words are its position (``run``'s common case)."""
+
+    def run(self, blocks: Iterator[Block]) -> Iterator[Block]:
+        """Every block; the common one (a move and its feed, no frame yet, absolute millimetres) only
+        updates the position (one ``dict.update``: this step runs for every translation to another
+        dialect, frames or not)."""
+        report = self.ctx.diagnostics.error
+        watched, moves, p, state = _WATCHED, _MOVES, self.p, self.ctx.state
+        for block in blocks:
+            s = block.sections
+            if not s:
+                yield block
+                continue
+            if self.frame is None and watched.isdisjoint(s):
+                m = s.get("Motion")
+                if m is None:
+                    yield block
+                    continue
+                if self.plain_mm and m.mode in moves and not state.symbolic:  # type: ignore[attr-defined]
+                    p.update(m.axes)  # type: ignore[attr-defined]
+                    yield block
+                    continue
+            try:
+                self.block(block)
+            except PostprocError as err:
+                report(err.located(self.ctx.at(block)))
+                continue
+            yield block
+
+    # -- one block ---------------------------------------------------------------------------------
+    def block(self, block: Block) -> None:
+        s = block.sections
+        if ASSIGN in s or CONTROL in s:
+            self.reached.symbolic = True
+        frame = self.frame
+        changed = False
+        if "DataSetting" in s:
+            changed = self.data_setting(block, s)
+            frame = self.frame
+        if not changes_nothing(s):
+            self.settings(block, s)
+        change = s.get("FrameChange")
+        if isinstance(change, FrameChange):
+            if self.reached.symbolic:
+                raise ProgramError(SYMBOLIC)
+            self.command(block, change)
+            del s["FrameChange"]
+            _trace(s, change)
+            frame, changed = self.frame, True
+        if frame is None or frame.plain():
+            self.track(s)
+        else:
+            changed = self.carry(block, s, frame) or changed
+        if changed and self.rewrite:
+            block.changed()
+
+    def settings(self, block: Block, s: dict[str, Section]) -> None:
+        """Units, plane, distance mode and work system, as the block leaves them."""
+        modal = self.modal
+        work, plane = modal.work_offset, modal.plane
+        modal.apply(s)
+        self.scale = MM_PER_INCH if modal.units == "inch" else 1.0
+        self.plain_mm = self.scale == 1.0 and modal.distance == "absolute"
+        frame = self.frame
+        if modal.plane != plane and frame is not None and frame.rotation is not None:
+            # [V] Fanuc 15i/16i operator's manuals: no plane selection in the mode of coordinate rotation
+            raise ProgramError("the plane cannot change while coordinate rotation is on")
+        if modal.work_offset != work:
+            if frame is not None and frame.rules == "fanuc" and frame.linear_active():
+                raise ProgramError(_FANUC_FORBIDDEN.format(what="a work system change"))
+            for axis in self.p:
+                self.p[axis] = None  # the tool stays; its place in the new system is not known here
+            if frame is not None:
+                frame.select_work(modal.work_offset)
+
+    def data_setting(self, block: Block, s: dict[str, Section]) -> bool:
+        """G10 L2: a work system's rotation (R) goes into the frame and out of the setting; an offset of
+        the active system moves the program position (the tool stays)."""
+        setting = s["DataSetting"]
+        assert isinstance(setting, DataSetting)
+        if not setting.table.startswith("work_offset"):
+            return False
+        values = setting.values
+        active = setting.table == "work_offset" and setting.index == self.modal.work_offset
+        known = self.g5x.setdefault(setting.index, {}) if setting.table == "work_offset" else {}
+        for axis, value in values.items():
+            if axis == "R":
+                continue
+            if isinstance(value, Expr) or setting.incremental:
+                known.pop(axis, None)
+                if active:
+                    self.p[axis] = None
+                continue
+            new = value * (self.scale if axis in LINEAR else 1.0)
+            old = known.get(axis)
+            here = self.p.get(axis)
+            if active:
+                self.p[axis] = None if here is None or old is None else here + old - new
+            known[axis] = new
+        if "R" not in values:
+            return False
+        turn = values["R"]
+        if isinstance(turn, Expr):
+            raise ProgramError(COMPUTED)
+        if self.reached.symbolic:
+            raise ProgramError(SYMBOLIC)
+        if setting.table != "work_offset":
+            raise ProgramError("a rotation (R) of an extended work system cannot be evaluated")
+        frame = self._frame("rs274")
+        if self.frame is not None and frame.rules != "rs274":
+            raise ProgramError("a work system rotation (R) beside another controller's frame")
+        frame.set_turn(setting.index, float(turn))
+        if active:
+            self.p["X"], self.p["Y"] = None, None  # [V] convert_setup moves the current point into the turned system
+        rest = {k: v for k, v in values.items() if k != "R"}
+        words = setting.text.split()
+        if rest:
+            s["DataSetting"] = DataSetting(setting.family, setting.table, setting.index, rest, setting.incremental,
+                                           " ".join(w for w in words if not w.upper().startswith("R")))
+            _note(s, " ".join(w for w in words if w.upper().startswith("R")) + " evaluated")
+        else:
+            del s["DataSetting"]
+            _note(s, f"{setting.text} evaluated")
+        return True
+
+    def _frame(self, rules: str) -> Frame:
+        if self.frame is None:
+            self.frame = self.reached.frame = Frame(rules)
+            self.frame.work = self.modal.work_offset
+        return self.frame
+
+    # -- frame commands ----------------------------------------------------------------------------
+    def command(self, block: Block, change: FrameChange) -> None:
+        frame = self._frame(change.rules)
+        if frame.rules != change.rules:
+            raise ProgramError(f"{change.describe()} beside another controller's frame commands")
+        kind, scale, p = change.kind, self.scale, self.p
+        words: dict[str, float] = {}
+        for letter, value in change.words.items():
+            if isinstance(value, Expr):
+                raise ProgramError(COMPUTED)
+            words[letter] = value * scale if letter in LINEAR else value
+        fanuc = frame.rules == "fanuc"
+        if fanuc and kind in ("local", "origin") and frame.linear_active():
+            raise ProgramError(_FANUC_FORBIDDEN.format(what=change.describe()))
+        if fanuc and kind in ("local", "origin") and self.modal.distance == "incremental":
+            raise ProgramError(f"{change.describe()} in incremental mode is not simulated (whether its words are "
+                               "increments is not settled [?]): program it in absolute mode")
+        compensating = self.modal.extra.get("frames.cutter") in _SWAPPED
+        if compensating and (kind in ("local", "origin", "origin_clear", "origin_suspend", "origin_restore")
+                             or fanuc):
+            # [V] rs274: "Cannot change axis offsets with cutter radius comp"; [K] Fanuc commands mirror,
+            # scaling and rotation before compensation starts and cancels them after it ends
+            raise ProgramError(f"{change.describe()} with cutter compensation on cannot be run (cancel it first)")
+        if kind == "local":
+            frame.set_local(_axes(words), p)
+        elif kind == "origin":
+            if fanuc and any(frame.local.values()):
+                raise ProgramError(f"{change.describe()} while a local coordinate system is in force is not simulated "
+                                   "(whether it cancels that system is not settled [?]): cancel it first")
+            frame.set_origin(_axes(words), p, change.describe())
+        elif kind in ("origin_clear", "origin_suspend"):
+            frame.clear_origin(p, kind == "origin_suspend")
+        elif kind == "origin_restore":
+            frame.restore_origin(p)
+        elif kind == "rotate":
+            self.rotate(frame, change, words)
+        elif kind == "rotate_off":
+            frame.unrotate(p)
+        elif kind == "scale":
+            if frame.rotation is not None or frame.scaling is not None:
+                # [K] Fanuc: mirror, then scaling, then rotation; cancelled in reverse
+                raise ProgramError(f"{change.describe()}: scaling is commanded before coordinate rotation, and "
+                                   "not again while it is on")
+            common = words.get("P")
+            factors = tuple(words.get(f, 1.0 if common is None else common) for f in "IJK")
+            centre = tuple(words[a] if a in words else 0.0 if f == 1.0 else self._here(a, change)
+                           for a, f in zip(XYZ, factors))
+            frame.scale(centre, factors, p)  # type: ignore[arg-type]
+        elif kind == "scale_off":
+            if frame.rotation is not None:
+                raise ProgramError("scaling is cancelled after coordinate rotation (cancel the rotation first)")
+            frame.unscale(p)
+        elif kind == "mirror":
+            if frame.rotation is not None or frame.scaling is not None:
+                # [K] Siemens' ISO-dialect manual 3.2, as Fanuc: no mirror command in scaling or rotation mode
+                raise ProgramError(f"{change.describe()} while scaling or coordinate rotation is on cannot be run")
+            frame.set_mirror(_axes(words), p)
+        elif kind == "mirror_off":
+            if frame.rotation is not None or frame.scaling is not None:
+                raise ProgramError(f"{change.describe()} while scaling or coordinate rotation is on cannot be run")
+            frame.clear_mirror(tuple(_axes(words)), p)
+        elif kind == "polar":
+            frame.polar = self.modal.plane
+        elif kind == "polar_off":
+            frame.polar = None
+
+    def rotate(self, frame: Frame, change: FrameChange, words: dict[str, float]) -> None:
+        plane = self.modal.plane
+        if plane != "XY":
+            raise ProgramError(f"{change.describe()} in the {plane} plane is not simulated (the sense of a rotation "
+                               "there is not settled [?]): only in the XY plane")
+        if frame.rotation is not None:
+            raise ProgramError(f"{change.describe()} while coordinate rotation is already on (cancel it first)")
+        if "R" not in words:
+            raise ProgramError(f"{change.describe()} without R takes its angle from parameter 5410, not known "
+                               "here: program R")
+        a1, a2, _ = PLANE_AXES[plane]
+        c1 = words[a1] if a1 in words else self._here(a1, change)
+        c2 = words[a2] if a2 in words else self._here(a2, change)
+        frame.rotate(plane, c1, c2, words["R"], self.p)
+
+    def _here(self, axis: str, change: FrameChange) -> float:
+        """The current point as a centre the command omits ([V] Fanuc 15i/16i: the tool position)."""
+        here = self.p.get(axis)
+        if here is None:
+            raise ProgramError(f"{change.describe()} without {axis} takes the current position as its centre, "
+                               f"which is not known here: program {axis}")
+        return here
+
+    # -- moves ---------------------------------------------------------------------------------------
+    def track(self, s: dict[str, Section]) -> None:
+        """No frame: only the program position follows the block."""
+        cc = s.get("CutterCompensation")
+        if cc is not None:
+            self.modal.extra["frames.cutter"] = cc.mode  # type: ignore[attr-defined]
+        if "CompoundMotion" in s:
+            for axis in XYZ:
+                self.p[axis] = None  # a cycle's last point is not read here (its expansion may be lazy)
+            return
+        m = s.get("Motion")
+        if not isinstance(m, Motion) or m.mode is None:
+            return
+        p = self.p
+        if "MachineCoordinates" in s or m.mode in ("home", "home2"):
+            for axis in m.axes:
+                p[axis] = None
+            return
+        incremental = self.modal.distance == "incremental"
+        scale = self.scale
+        for axis, value in m.axes.items():
+            if isinstance(value, Expr):
+                p[axis] = None
+                continue
+            v = value * scale if axis in LINEAR else value
+            if incremental:
+                here = p.get(axis)
+                p[axis] = None if here is None else here + v
+            else:
+                p[axis] = v
+
+    def carry(self, block: Block, s: dict[str, Section], frame: Frame) -> bool:
+        """Rewrite the block's points into work coordinates; True when anything changed."""
+        changed = False
+        cc = s.get("CutterCompensation")
+        if isinstance(cc, CutterCompensation):
+            self.modal.extra["frames.cutter"] = cc.mode
+            found = frame.map.arc_factor(PLANE_AXES["XY"])
+            if cc.mode in _SWAPPED and found is not None and found[1]:
+                s["CutterCompensation"] = CutterCompensation(_SWAPPED[cc.mode], cc.register)
+                changed = True
+        compound = s.get("CompoundMotion")
+        m = s.get("Motion")
+        if isinstance(m, Motion) and m.mode is not None:
+            s["Motion"] = self.move(s, m, self.modal.distance == "incremental")
+            changed = True
+        if isinstance(compound, CompoundMotion):
+            self.cycle(s, compound, frame)
+            changed = True
+        return changed
+
+    def cycle(self, s: dict[str, Section], compound: CompoundMotion, frame: Frame) -> None:
+        """A canned cycle's moves, carried one by one; the cycle is expanded for the target."""
+        if frame.scaling is not None:
+            raise ProgramError("a canned cycle under scaling is not simulated (which of its levels and depths scale "
+                               "is a machine parameter [?]): cancel scaling first")
+        if frame.map.mixes(2, 0) or frame.map.mixes(2, 1) or frame.map.m[8] != 1.0:
+            raise ProgramError("a canned cycle under a frame that moves the drilling axis is not simulated")
+        items: list[Section] = []
+        for item in compound.items:
+            items.append(self.move(s, item, False) if isinstance(item, Motion) and item.mode is not None else item)
+        s["CompoundMotion"] = CompoundMotion(compound.term, items)
+        cycle = s.get("CannedCycle")
+        if cycle is not None and hasattr(cycle, "expand"):
+            cycle = copy.copy(cycle)
+            cycle.expand = True  # the target's native cycle would drill at the unrotated points
+            s["CannedCycle"] = cycle
+
+    def move(self, s: dict[str, Section], m: Motion, incremental: bool) -> Motion:
+        """One move carried through the frame (see the module docstring)."""
+        frame = self.frame
+        assert frame is not None
+        p, scale, mode = self.p, self.scale, m.mode
+        if "MachineCoordinates" in s and mode not in ("home", "home2"):
+            if frame.rules == "fanuc" and frame.linear_active():
+                raise ProgramError(_FANUC_FORBIDDEN.format(what="a move in machine coordinates"))
+            for axis in m.axes:
+                p[axis] = None
+            return m
+        home = mode in ("home", "home2")
+        if home and frame.linear_active():
+            raise ProgramError(_FANUC_FORBIDDEN.format(what="a reference return") if frame.rules == "fanuc" else
+                               "a reference return under a rotated work system is not simulated [?: where its "
+                               "intermediate point lies]")
+        if _computed(m):
+            if frame.polar is not None or home:
+                raise ProgramError(COMPUTED)
+            return self.computed_move(m, incremental, frame)
+        given: dict[str, float] = {}
+        for axis, value in m.axes.items():
+            assert not isinstance(value, Expr)
+            given[axis] = value * scale if axis in LINEAR else value
+        if frame.polar is not None and not home:
+            self.polar(m, given, incremental, frame.polar)
+        out: dict[str, float | Expr] = {}
+        fmap = frame.map
+        if incremental:
+            d = [given.get(a, 0.0) for a in XYZ]
+            dw = fmap.linear(d)
+            for i, axis in enumerate(XYZ):
+                if axis in given or abs(dw[i]) > EXACT:
+                    out[axis] = dw[i] / scale
+            for axis, value in given.items():
+                if axis not in INDEX:
+                    out[axis] = value / (scale if axis in LINEAR else 1.0)
+                here = p.get(axis)
+                p[axis] = None if here is None or home else here + value
+        else:
+            point: list[float | None] = [given.get(a, p.get(a)) for a in XYZ]
+            columns = [INDEX[a] for a in given if a in INDEX]
+            for i, axis in enumerate(XYZ):
+                if not any(fmap.mixes(i, j) for j in columns):
+                    continue
+                for j in range(3):
+                    if fmap.mixes(i, j) and j not in columns:
+                        self._omitted(axis, XYZ[j], point[j])
+                w = fmap.point([v if v is not None else 0.0 for v in point])
+                out[axis] = w[i] / scale
+            for axis, value in given.items():
+                if axis not in INDEX:
+                    out[axis] = (value + frame.shift(axis)) / (scale if axis in LINEAR else 1.0)
+                if home:
+                    p[axis] = None
+                else:
+                    p[axis] = value
+        if mode not in ("cw", "ccw"):
+            return Motion(mode, out)
+        return self.arc(m, out, mode)
+
+    def _omitted(self, axis: str, needed: str, here: float | None) -> None:
+        """A move's ``axis`` needs the program position on ``needed``, which the block omits."""
+        if self.reached.symbolic:
+            raise ProgramError(f"{SYMBOLIC}: this move's {axis} needs the program's {needed}, which the block omits")
+        if here is None:
+            raise ProgramError(f"this move's {axis} under the coordinate frame needs the program's {needed}, which "
+                               f"is not known here: program {needed} absolutely")
+
+    def computed_move(self, m: Motion, incremental: bool, frame: Frame) -> Motion:
+        """A move with computed words under a frame set before (a program kept symbolically): each carried
+        coordinate is written as the expression ``sum(m[i][j] * word_j) + t[i]`` in program units."""
+        fmap, scale, p = frame.map, self.scale, self.p
+        words: list[float | Expr | None] = [m.axes.get(a) for a in XYZ]
+        columns = [j for j in range(3) if words[j] is not None]
+        out: dict[str, float | Expr] = {}
+        for i, axis in enumerate(XYZ):
+            if not any(fmap.mixes(i, j) for j in columns):
+                continue
+            terms: list[tuple[float, float | Expr]] = []
+            for j in range(3):
+                if not fmap.mixes(i, j):
+                    continue
+                word = words[j]
+                if word is None:
+                    if incremental:
+                        continue
+                    here = p.get(XYZ[j])
+                    self._omitted(axis, XYZ[j], here)
+                    assert here is not None
+                    word = here / scale
+                terms.append((fmap.m[3 * i + j], word))
+            out[axis] = _combination(terms, 0.0 if incremental else fmap.t[i] / scale)
+        for axis, value in m.axes.items():
+            if axis not in INDEX:
+                shift = 0.0 if incremental else frame.shift(axis) / (scale if axis in LINEAR else 1.0)
+                out[axis] = _combination([(1.0, value)], shift)
+            p[axis] = None
+        if m.mode not in ("cw", "ccw"):
+            return Motion(m.mode, out)
+        return self.arc(m, out, m.mode)
+
+    def polar(self, m: Motion, given: dict[str, float], incremental: bool, plane: str) -> None:
+        """G16: the plane's first axis word is a radius, its second an angle in degrees counter-clockwise
+        from the first axis, about the program's zero (the local zero under G52) [V: Fanuc 16/18-MC
+        operator's manual 9.2]; an omitted one is the current point's [K: Mitsubishi M700 manual 6.12].
+        Rewritten in ``given`` as the Cartesian point (mm)."""
+        a1, a2, _ = PLANE_AXES[plane]
+        if a1 not in given and a2 not in given:
+            return
+        if incremental:
+            # [V] Fanuc 16/18-MC 9.2: in incremental mode the current point is the origin of the radius; the
+            # reference of an incremental angle there is not settled [?]
+            raise ProgramError("an incremental move in polar coordinates is not simulated (the reference of its "
+                               "angle is not settled)")
+        if m.mode in ("cw", "ccw") and m.center is not None:
+            raise ProgramError("an arc in polar coordinates takes its radius R, not I/J/K [K: Fanuc 16/18-MC "
+                               "operator's manual 9.2, limitations]")
+        here1, here2 = self.p.get(a1), self.p.get(a2)
+        if (a1 not in given or a2 not in given) and (here1 is None or here2 is None):
+            raise ProgramError(f"a polar move without {a1 if a1 not in given else a2} takes the current point's, "
+                               "which is not known here: program both")
+        radius = given[a1] if a1 in given else math.hypot(here1, here2)  # type: ignore[arg-type]
+        angle = m.axes[a2] if a2 in given else math.degrees(math.atan2(here2, here1))  # type: ignore[arg-type]
+        assert isinstance(angle, float | int)
+        c, s = _cos_sin(float(angle))
+        given[a1], given[a2] = radius * c, radius * s
+
+    def arc(self, m: Motion, out: dict[str, float | Expr], mode: str) -> Motion:
+        frame = self.frame
+        assert frame is not None
+        plane = PLANE_AXES[self.modal.plane]
+        found = frame.map.arc_factor(plane)
+        if found is None:
+            raise ProgramError(f"an arc in the {self.modal.plane} plane under this frame is not an arc (unequal "
+                               "scaling, or a rotation out of its plane): it cannot be evaluated")
+        factor, turned = found
+        centre: dict[str, float | Expr] | None = None
+        radius: float | Expr | None = None
+        if m.center is not None:
+            fm = frame.map.m
+            centre = {}
+            for a in plane[:2]:
+                i = INDEX[a]
+                centre[a] = _combination([(fm[3 * i + INDEX[b]], value) for b, value in m.center.items()
+                                          if abs(fm[3 * i + INDEX[b]]) > EXACT], 0.0)
+        elif m.radius is not None:
+            radius = _combination([(factor, m.radius)], 0.0)
+        return Motion(_TURNED[mode] if turned else mode, out, centre, radius)
+
+
+_FANUC_FORBIDDEN: Final = "{what} while coordinate rotation, scaling or a mirror image is on cannot be run"
+"""[K] Fanuc 0i-MF and Siemens' ISO-dialect manual 3.2: no reference return and no coordinate system command
+(local, machine or work coordinates, coordinate setting) in these modes."""
+
+
+_WATCHED: Final = frozenset(("Units", "Plane", "DistanceMode", "WorkOffset", "DataSetting", "FrameChange", ASSIGN,
+                             CONTROL, "CutterCompensation", "CompoundMotion", "MachineCoordinates"))
+"""Sections that make a block more than a move to follow, before any frame."""
+_MOVES: Final = frozenset(("rapid", "linear", "cw", "ccw"))
+
+
+def _computed(m: Motion) -> bool:
+    return any(isinstance(v, Expr) for v in m.axes.values()) or isinstance(m.radius, Expr) or (
+        m.center is not None and any(isinstance(v, Expr) for v in m.center.values()))
+
+
+def _combination(terms: list[tuple[float, float | Expr]], constant: float) -> float | Expr:
+    """``sum(c * x) + constant``: a number when every ``x`` is one, else the expression (a factor of 1 and
+    a zero constant left out, so an unturned word stays as written)."""
+    total = constant
+    expr: Expr | None = None
+    for c, x in terms:
+        if not isinstance(x, Expr):
+            total += c * x
+            continue
+        term: Expr = x if c == 1.0 else Binary("mul", Num(c), x)
+        expr = term if expr is None else Binary("add", expr, term)
+    if expr is None:
+        return total
+    return expr if total == 0.0 else Binary("add", expr, Num(total))
+
+
+def _cos_sin(degrees: float) -> tuple[float, float]:
+    """Exact at whole quarter turns (a bolt circle's 90 degrees must not leave 6e-17 behind)."""
+    quarter = degrees / 90.0
+    if quarter.is_integer():
+        return ((1.0, 0.0), (0.0, 1.0), (-1.0, 0.0), (0.0, -1.0))[int(quarter) % 4]
+    return math.cos(math.radians(degrees)), math.sin(math.radians(degrees))
+
+
+def _trace(s: dict[str, Section], change: FrameChange) -> None:
+    """The evaluated command stays in the output as a comment (no block vanishes without a trace)."""
+    _note(s, f"{change.text} evaluated")
+
+
+def _note(s: dict[str, Section], note: str) -> None:
+    comments = s.get("Comments")
+    s["Comments"] = Comments([*comments.texts, note] if isinstance(comments, Comments) else [note])
+
+
+def _axes(words: dict[str, float]) -> dict[str, float]:
+    return {k: v for k, v in words.items() if k in AXES}
+
