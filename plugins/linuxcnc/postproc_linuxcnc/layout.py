@@ -20,19 +20,24 @@ from postproc.control import CONTROL, Call
 from postproc.dialect import Dialect
 from postproc.errors import UnsupportedError
 from postproc.ir import Block
+from postproc.rs274.return_level import ReturnLevels
 
 _Group = tuple[str | None, list[Block]]
 """A subprogram's number (None: what stands before the first one) and its blocks, in source order."""
 
 
 def subprograms_after_callers(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
-    """Lowering step for LinuxCNC (see the module docstring); a LinuxCNC source is written as it is."""
+    """Lowering step for LinuxCNC (see the module docstring), which also writes the return level a cycle
+    needs as the text comes (``postproc.rs274.return_level``: one loop for both); a LinuxCNC source is
+    written as it is."""
     if ctx.dialect == target.NAME:
         yield from blocks
         return
+    see = ReturnLevels(target).see
     ended = False
     groups: list[_Group] | None = None
     for block in blocks:
+        see(block)
         sections = block.sections
         if groups is None:
             start = sections.get("ProgramStart")
