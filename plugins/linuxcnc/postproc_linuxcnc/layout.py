@@ -37,17 +37,18 @@ def subprograms_after_callers(blocks: Iterator[Block], ctx: Context, target: typ
     ended = False
     groups: list[_Group] | None = None
     for block in blocks:
-        see(block)
         sections = block.sections
+        if "CannedCycle" in sections or "ReturnLevel" in sections:  # most blocks have neither: two tests
+            see(block)
         if groups is None:
-            start = sections.get("ProgramStart")
-            number = getattr(start, "number", None)
-            if ended and number is not None:
-                groups = [(str(int(number)), [block])]
-                continue
-            end = sections.get("ProgramControl")
-            if end is not None and getattr(end, "kind", None) in ("end", "end_rewind"):
-                ended = True
+            if "ProgramStart" in sections or "ProgramControl" in sections:
+                number = getattr(sections.get("ProgramStart"), "number", None)
+                if ended and number is not None:
+                    groups = [(str(int(number)), [block])]
+                    continue
+                end = sections.get("ProgramControl")
+                if end is not None and getattr(end, "kind", None) in ("end", "end_rewind"):
+                    ended = True
             yield block
             continue
         if "TapeMark" in sections:
