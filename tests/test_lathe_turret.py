@@ -39,7 +39,7 @@ def test_an_index_with_the_spindle_turning_is_refused_where_it_stands(target: st
     with pytest.raises(ErrorList) as caught:
         _translate(TURNING, target)
     assert [str(e) for e in caught.value.errors] == [
-        "l.nc:5:1: error: a turret index (T0202) with the spindle turning: a mill control changes the tool (M6) "
+        "l.nc:5:1: error: a turret index (T0202) with the spindle turning: a mill control changes the tool "
         "with the spindle stopped, the lathe keeps it turning (stop the spindle before the index)"]
 
 

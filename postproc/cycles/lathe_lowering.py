@@ -127,7 +127,7 @@ def _turret(block: Block, ctx: Context, turning: bool) -> bool:
     if isinstance(select, ToolSelect) and isinstance(select.number, int) and "ToolChange" not in block.sections:
         if turning:
             err = UnsupportedError(f"a turret index (T{select.number:04d}) with the spindle turning: a mill "
-                                   "control changes the tool (M6) with the spindle stopped, the lathe keeps it "
+                                   "control changes the tool with the spindle stopped, the lathe keeps it "
                                    "turning (stop the spindle before the index)", ctx.at(block))
             if ctx.on_unsupported != "warn":
                 ctx.diagnostics.error(err)

@@ -323,7 +323,8 @@ class NgcWordBlockSyntax(WordBlockSyntax):
         tool = _spindle_tool(ctx)
         if tool is None or (isinstance(tool, int) and tool == 0 and _LOADED_KEY in ctx.state.extra):
             known = "not known here (no tool change before it, no startTool in the set-up's <Machine>)" \
-                if tool is None else "tool 0 after T0 M6 (rs274 then keeps the last tool's radius)"
+                if tool is None else "tool 0 (a tool change that empties the spindle: rs274 then keeps the last " \
+                "tool's radius)"
             raise ProgramError(f"cutter compensation without D takes the radius of the tool in the spindle, which "
                                f"is {known}: program D", ctx.at(block, ctx.column_of(block, "G")))
         values["D"] = tool

@@ -17,7 +17,6 @@ from typing import Callable, ClassVar, Iterator
 from postproc.compensation.rules import ARC_CORNERS
 from postproc.dialect import Dialect, Lazy, Reader
 from postproc.rs274.order_of_execution import stops_after_motion
-from postproc.rs274.return_level import return_level_in_force
 from postproc.errors import Diagnostics
 from postproc.hookspecs import hookimpl
 from postproc.ir import Block
@@ -79,10 +78,10 @@ class Linuxcnc(Dialect):
     """``( )`` and ``;`` comments; ``(MSG,`` ``(LOGOPEN,`` ... act (``active_comments.ACTIVE``)."""
     LINE_RULE = Lazy[LineRule](".lines:LINES")
     """rs274 reads at most 252 bytes a line: a longer comment is shortened (``lines.py``)."""
-    LOWERING = (stops_after_motion, return_level_in_force, _subprogram_layout)
+    LOWERING = (stops_after_motion, _subprogram_layout)
     """A moving block's spindle stop and coolant off go in a block of their own after it: LinuxCNC runs
     them before the motion (``postproc.rs274.order_of_execution``); another dialect's subprograms stand
-    after their callers (``layout``)."""
+    after their callers, and a cycle gets the return level its source assumed (``layout``)."""
     CYCLE_SEMANTICS = "rs274"
     """How the native cycles move: start below R rises to R first, G98 returns to the old Z only when
     it is above R, G91 R is measured from the Z at the block's start, G74/G84/G89 feed out to the

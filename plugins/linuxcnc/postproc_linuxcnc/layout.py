@@ -20,29 +20,35 @@ from postproc.control import CONTROL, Call
 from postproc.dialect import Dialect
 from postproc.errors import UnsupportedError
 from postproc.ir import Block
+from postproc.rs274.return_level import ReturnLevels
 
 _Group = tuple[str | None, list[Block]]
 """A subprogram's number (None: what stands before the first one) and its blocks, in source order."""
 
 
 def subprograms_after_callers(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
-    """Lowering step for LinuxCNC (see the module docstring); a LinuxCNC source is written as it is."""
+    """Lowering step for LinuxCNC (see the module docstring), which also writes the return level a cycle
+    needs as the text comes (``postproc.rs274.return_level``: one loop for both); a LinuxCNC source is
+    written as it is."""
     if ctx.dialect == target.NAME:
         yield from blocks
         return
+    see = ReturnLevels(target).see
     ended = False
     groups: list[_Group] | None = None
     for block in blocks:
         sections = block.sections
+        if "CannedCycle" in sections or "ReturnLevel" in sections:  # most blocks have neither: two tests
+            see(block)
         if groups is None:
-            start = sections.get("ProgramStart")
-            number = getattr(start, "number", None)
-            if ended and number is not None:
-                groups = [(str(int(number)), [block])]
-                continue
-            end = sections.get("ProgramControl")
-            if end is not None and getattr(end, "kind", None) in ("end", "end_rewind"):
-                ended = True
+            if "ProgramStart" in sections or "ProgramControl" in sections:
+                number = getattr(sections.get("ProgramStart"), "number", None)
+                if ended and number is not None:
+                    groups = [(str(int(number)), [block])]
+                    continue
+                end = sections.get("ProgramControl")
+                if end is not None and getattr(end, "kind", None) in ("end", "end_rewind"):
+                    ended = True
             yield block
             continue
         if "TapeMark" in sections:
