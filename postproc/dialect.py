@@ -295,6 +295,8 @@ class Dialect:
         ctx.stops_before_motion = cls.STOPS_BEFORE_MOTION
         ctx.feed_before_units = cls.FEED_BEFORE_UNITS
         ctx.peck_clearance_mm = cls.PECK_CLEARANCE_MM
+        if cls.INVERSE_TIME_FEED:
+            ctx.run_data[INVERSE_TIME_KEY] = True  # its programs may run in G93 (``postproc.inverse_time``)
         ctx.lathe = cls.reads_lathe(setup)
         ctx.diameter = ctx.lathe and cls.DIAMETER_PROGRAMMING and setup.input.x_programming == "diameter"
         ctx.one_block = ctx.lathe and cls.LATHE_ONE_BLOCK and setup.input.lathe_cycle_format == "one-block"
@@ -306,6 +308,10 @@ class Dialect:
             ctx.state.plane = "ZX"  # a lathe turns in the ZX plane (G18) from the start
             ctx.state.feed_mode = cls.LATHE_FEED_AT_START
         return ctx
+
+
+INVERSE_TIME_KEY = "inverse_time"
+"""``Context.run_data`` key, set when the reading dialect has G93 (``Dialect.INVERSE_TIME_FEED``)."""
 
 
 def _package_folder(package: str) -> Path | None:

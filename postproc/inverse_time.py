@@ -25,7 +25,7 @@ from typing import Any, Final, Iterable, Iterator
 
 from .block_rules import ArcError, arc_centre
 from .context import Context
-from .dialect import Dialect
+from .dialect import INVERSE_TIME_KEY, Dialect
 from .errors import UnsupportedError
 from .expr import Expr
 from .geometry import arc_sweep
@@ -58,8 +58,10 @@ def move_length(start: dict[str, float], end: dict[str, float], plane: str, mode
 
 
 def convert_inverse_time(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
-    """Lowering step (module docstring); a target with G93 gets the blocks as they are."""
-    if target.INVERSE_TIME_FEED:
+    """Lowering step (module docstring); a target with G93, and any program read by a dialect without it
+    (no block can be in inverse time: a dialect reads and writes by one code table), get the blocks as they
+    are, so the common translations pay nothing for the step."""
+    if target.INVERSE_TIME_FEED or INVERSE_TIME_KEY not in ctx.run_data:
         return blocks
     return _convert(blocks, ctx, target)
 

@@ -107,7 +107,7 @@ REFUSED = {
     "X with a polar word": ("G21 G90 G0 X1 Y1\nG0 @5 X2\nM2\n", "t.ngc:2:7: error: cannot use both polar"),
     "outside G17": ("G21 G18 G90 G0 X1 Y1 Z1\nG0 @5 ^10\nM2\n", "t.ngc:2:4: error: polar coordinates are used only"),
     "G91 at the origin": ("G21 G90 G0 X0 Y0\nG91 G0 ^10\nM2\n", "t.ngc:2:8: error: incremental polar"),
-    "radius alone at the origin": ("G21 G90 G0 X0 Y0\nG0 @10\nM2\n", "t.ngc:2:4: error: polar coordinate @ alone"),
+    "radius alone at the origin": ("G21 G90 G0 X0 Y0\nG0 @10\nM2\n", "t.ngc:2:4: error: a polar radius alone at the origin"),
     "with G53": ("G21 G90 G0 X1 Y1\nG53 G0 @10 ^5\nM2\n", "t.ngc:2:8: error: polar coordinates cannot be used with G53"),
     "with G92": ("G21 G90 G0 X1 Y1\nG92 @10 ^5\nM2\n", "t.ngc:2:5: error: polar coordinates cannot be used with G92"),
 }

@@ -25,7 +25,6 @@ flattened for another target; kept as it is for LinuxCNC, it is refused here (no
 
 from __future__ import annotations
 
-import math
 from typing import Callable, Final, Iterable, Iterator
 
 from postproc.context import Context
@@ -33,6 +32,7 @@ from postproc.errors import Location, ProgramError
 from postproc.expr import Expr
 from postproc.interp import spell_number
 from postproc.ir import Block
+from postproc.polar import clean as _clean, polar_absolute as _absolute, polar_turned as _turned
 from postproc.syntax import Syntax
 
 POLAR: Final = ("@", "^")
@@ -43,7 +43,6 @@ _MOTION: Final = frozenset((0.0, 1.0, 2.0, 3.0, 33.0, 33.1, 38.2, 38.3, 38.4, 38
 _NOT_MOTION: Final = {10.0: "G10", 28.0: "G28", 28.1: "G28.1", 30.0: "G30", 30.1: "G30.1", 52.0: "G52",
                       53.0: "G53", 92.0: "G92", 92.1: "G92.1", 92.2: "G92.2", 92.3: "G92.3"}
 _PLANES: Final = {17.0: "XY", 18.0: "ZX", 19.0: "YZ"}
-EPS: Final = 1e-12
 
 
 class PolarSyntax(Syntax):
@@ -150,30 +149,6 @@ class PolarSyntax(Syntax):
                                                       ("Y", spell_number(_clean(by - ay)))])
 
 
-def _absolute(x: float, y: float, radius: float | None, angle: float | None, cycle: bool,
-              where: Location) -> tuple[float, float]:
-    """The G90 end point (find_ends; convert_cycle_xy takes the missing one from the tool unchecked)."""
-    if radius is None:
-        radius = math.hypot(x, y)
-    elif angle is None and not cycle and abs(x) < EPS and abs(y) < EPS:
-        raise ProgramError("polar coordinate @ alone at the origin needs an angle ^ (rs274)", where)
-    theta = math.radians(angle) if angle is not None else math.atan2(y, x)
-    return radius * math.cos(theta), radius * math.sin(theta)
-
-
-def _turned(x: float, y: float, radius: float | None, angle: float | None, where: Location) -> tuple[float, float]:
-    """The G91 end point: the radius stretched, then the angle turned, about the origin."""
-    if abs(x) < EPS and abs(y) < EPS:
-        raise ProgramError("incremental polar coordinates are indeterminate at the origin (rs274)", where)
-    if radius is not None:
-        theta, r = math.atan2(y, x), math.hypot(x, y) + radius
-        x, y = r * math.cos(theta), r * math.sin(theta)
-    if angle is not None:
-        theta, r = math.atan2(y, x) + math.radians(angle), math.hypot(x, y)
-        x, y = r * math.cos(theta), r * math.sin(theta)
-    return x, y
-
-
 def _replaced(words: list[tuple[str, str]], x: float, y: float, drop_repeat: bool) -> list[tuple[str, str]]:
     """The words with the polar pair replaced by X and Y where the first of them stood."""
     out: list[tuple[str, str]] = []
@@ -187,12 +162,6 @@ def _replaced(words: list[tuple[str, str]], x: float, y: float, drop_repeat: boo
         elif not (drop_repeat and letter.upper() == "L"):
             out.append((letter, num))
     return out
-
-
-def _clean(value: float) -> float:
-    """A coordinate within float noise of a round value is that value (cos 90 deg is 6e-17, not 0)."""
-    rounded = round(value, 9)
-    return rounded + 0.0 if abs(value - rounded) < 1e-12 else value
 
 
 def _columns(block: Block, ctx: Context) -> Callable[..., Location]:
