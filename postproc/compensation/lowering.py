@@ -45,7 +45,8 @@ def resolve_cutter_compensation(blocks: Iterator[Block], ctx: Context, target: t
     if ctx.dialect == target.NAME or target.CUTTER_COMPENSATION:
         return blocks
     from ..plugins import default_registry
-    rules = default_registry().dialect(ctx.dialect).CUTTER_RULES
+    source = default_registry().dialects.get(ctx.dialect)  # none for a program written from the neutral IR
+    rules = None if source is None else source.CUTTER_RULES
     if rules is None:
         return blocks
     return _Resolver(ctx, rules).run(blocks)
