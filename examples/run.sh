@@ -12,10 +12,11 @@ run() { echo "\$ postproc $*"; "$P" "$@"; }
 for f in examples/fanuc/*.nc; do
   n=$(basename "$f" .nc)
   run translate "$f" --from fanuc --to fanuc --normalize -o "out/$n.fanuc.nc"
-  # Every example uses G43 H (a tool table), which grbl lacks: warn, keep the motion, say so. Verify
-  # simulates the tool lengths of the set-up: on a router whose tools are touched off at each change
-  # (all zero) the paths agree, and --allow-ignored accepts the cutter compensation it cannot compare.
-  run translate "$f" --from fanuc --to grbl --on-unsupported warn -o "out/$n.grbl.nc"
+  # Every example uses G43 H (a tool table), which grbl lacks: on a router whose tools are touched off at
+  # each change (<Machine toolLengths="touched_off">) each offset is dropped with a comment and verify
+  # says why; on a machine with lengths, grbl gets G43.1 Z<length>. --on-unsupported warn drops what grbl
+  # cannot run (a block delete), and --allow-ignored accepts a setting it cannot compare.
+  run translate "$f" --from fanuc --to grbl --on-unsupported warn --machine "$TOUCHED_OFF" -o "out/$n.grbl.nc"
   run verify "$f" "out/$n.grbl.nc" --from fanuc --to grbl --allow-ignored --machine "$TOUCHED_OFF"
   # LinuxCNC keeps a program's loops and variables where it can spell them; otherwise it is flattened.
   run translate "$f" --from fanuc --to linuxcnc -o "out/$n.ngc"

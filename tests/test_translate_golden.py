@@ -17,6 +17,8 @@ from postproc.verify import verify_lines
 from tests.support.tools import with_tools
 
 ROOT = Path(__file__).parent / "golden" / "translate"
+SETUP = with_tools(lengths={n: 100.0 + n for n in range(1, 10)})
+"""The machine every case runs on: tool n is 100 + n mm long (grbl's G43.1 lengths come from it)."""
 CASES = sorted(p for p in ROOT.glob("*__*/*") if ".expected." not in p.name)
 
 
@@ -36,7 +38,7 @@ def test_golden_translation(source: Path) -> None:
     out = io.StringIO(newline="")
     with source.open(encoding="utf-8", newline="") as lines:
         translate(lines, out, file=str(source), source=src, target=dst, on_unsupported="warn",
-                  diagnostics=Diagnostics(ErrorLevel.RAISE, warn_stream=io.StringIO()))
+                  diagnostics=Diagnostics(ErrorLevel.RAISE, warn_stream=io.StringIO()), setup=SETUP)
     assert out.getvalue() == _expected(source).read_text(encoding="utf-8")
 
 
@@ -46,9 +48,9 @@ def test_golden_translation_moves_the_tool_as_its_source(source: Path) -> None:
     expected = _expected(source)
     with source.open(encoding="utf-8", newline="") as a, expected.open(encoding="utf-8", newline="") as b:
         report = verify_lines(a, b, file_in=str(source), file_out=str(expected), source=src, target=dst,
-                              allow_ignored=True, setup=with_tools())
+                              allow_ignored=True, setup=SETUP)
     assert report.ok, report.summary()
-    # only grbl (no tool table, no cutter compensation) leaves out settings that move the tool
+    # only grbl (no cutter compensation for Fanuc's rules) leaves out settings that move the tool
     assert not report.left_out_moves or dst == "grbl", report.summary()
 
 

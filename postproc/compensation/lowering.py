@@ -16,6 +16,7 @@ reference return, a plane other than XY, a start point not known) is a located e
 
 from __future__ import annotations
 
+import math
 from typing import Iterator
 
 from ..block_rules import ArcError, arc_centre
@@ -30,6 +31,12 @@ from .rules import CutterRules
 from .tool_table import ToolTable
 
 MM_PER_INCH = 25.4
+ARC_OFF_MM = 0.005
+ARC_OFF_RATIO = 0.001
+"""How far an arc's end may lie off the circle through its start before a controller refuses it: [V] grbl
+``gcode.c`` (error 33 beyond 0.005 mm and 0.1 % of the radius). LinuxCNC joins an arc to a move within
+its corner tolerance (0.05 rad) without moving the start onto the compensated circle, so its compensated
+arc may start off the circle; such an arc is refused here rather than written one grbl rejects."""
 PLANE_WORDS = ("X", "Y")
 MOVES = frozenset(("rapid", "linear", "cw", "ccw"))
 _SEGMENT_KIND = {"rapid": "rapid", "linear": "feed", "cw": "cw", "ccw": "ccw"}
@@ -45,7 +52,8 @@ def resolve_cutter_compensation(blocks: Iterator[Block], ctx: Context, target: t
     if ctx.dialect == target.NAME or target.CUTTER_COMPENSATION:
         return blocks
     from ..plugins import default_registry
-    rules = default_registry().dialect(ctx.dialect).CUTTER_RULES
+    source = default_registry().dialects.get(ctx.dialect)  # none for a program written from the neutral IR
+    rules = None if source is None else source.CUTTER_RULES
     if rules is None:
         return blocks
     return _Resolver(ctx, rules).run(blocks)
@@ -291,7 +299,13 @@ class _Resolver:
             axes["Z"] = seg.end["Z"] / scale
         center: dict[str, float | Expr] | None = None
         if seg.turn != 0 and seg.ccentre is not None:
-            center = {"X": (seg.ccentre[0] - self.at[0]) / scale, "Y": (seg.ccentre[1] - self.at[1]) / scale}
+            cc = seg.ccentre
+            off = abs(math.hypot(self.at[0] - cc[0], self.at[1] - cc[1]) - math.hypot(xy[0] - cc[0], xy[1] - cc[1]))
+            if off > ARC_OFF_MM and off > ARC_OFF_RATIO * math.hypot(xy[0] - cc[0], xy[1] - cc[1]):
+                raise UnsupportedError(f"the compensated arc starts {off:.4f} mm off its circle (the source controller "
+                                       "joins it to a nearly tangent move without a corner and runs it so; written as "
+                                       "an arc, the target refuses it)", self.ctx.at(block))
+            center = {"X": (cc[0] - self.at[0]) / scale, "Y": (cc[1] - self.at[1]) / scale}
         sections["Motion"] = Motion(_MOTION_MODE[seg.kind], axes, center, None)
         self.at = xy
         if incremental:
