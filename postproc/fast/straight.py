@@ -58,6 +58,9 @@ class CopyLane:
 
     def __init__(self, writer: WordWriter) -> None:
         self.writer = writer
+        self.per_rev_checked = bool(writer.PER_REV_NEEDS_SPEED)
+        """The general path checks the spindle speed of a move in feed per revolution: such a move is left
+        to it (read once: a class attribute of an interpreted class is a look-up by name)."""
 
     def write(self, block: Block) -> str | None:
         """The block's source line, or None."""
@@ -69,8 +72,8 @@ class CopyLane:
             if key not in STRAIGHT_KEYS:
                 return None
         writer = self.writer
-        if writer.PER_REV_NEEDS_SPEED and writer.modal.feed_mode == "per_rev":
-            return None  # (the general path checks the spindle speed)
+        if self.per_rev_checked and writer.modal.feed_mode == "per_rev":
+            return None
         if "Feed" in sections:
             writer.modal.apply(sections)
         if writer.carry:
@@ -98,6 +101,8 @@ class StraightLane:
         driven = writer.DRIVEN_AXES
         self.driven: frozenset[str] = AXES if driven is None else driven
         """The axes a move may have to take the lane (another is left to the general path)."""
+        self.per_rev_checked = bool(writer.PER_REV_NEEDS_SPEED)
+        """As ``CopyLane.per_rev_checked``."""
 
     def write(self, block: Block) -> str | None:
         """The block's text, or None."""
@@ -107,8 +112,8 @@ class StraightLane:
         motion = sections.get("Motion")
         if not isinstance(motion, Motion) or text is None or writer.carry or not writer.source_numbers:
             return None
-        if writer.PER_REV_NEEDS_SPEED and writer.modal.feed_mode == "per_rev":
-            return None  # (the general path checks the spindle speed)
+        if self.per_rev_checked and writer.modal.feed_mode == "per_rev":
+            return None
         mode = motion.mode
         axes = motion.axes
         if mode is None or not axes:
