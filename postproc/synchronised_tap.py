@@ -32,6 +32,8 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any, Iterator
 
+from mypy_extensions import mypyc_attr
+
 from .context import Context
 from .dialect import Dialect
 from .errors import PostprocError, ProgramError, UnsupportedError
@@ -46,6 +48,7 @@ if TYPE_CHECKING:
     from lxml import etree
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class RigidTap(Section):
     """A spindle-synchronised tap from where the tool stands to ``axes`` and back (see the module).
 
