@@ -44,74 +44,22 @@ def write_backplot(events: Iterable[Event], out: Any, fmt: str, start: dict[str,
             plot.write_png(out)
 
 
-FLOATS_KEPT = 4096
-"""Spellings of floats ``event_encoder`` keeps at most (then it starts again)."""
-
-
 def event_encoder() -> Callable[[Event], str]:
-    """``json.JSONEncoder(allow_nan=False).encode`` for a toolpath's events, faster on what they hold.
-
-    Writing a float's shortest spelling (``float.__repr__``, as json does) is most of a toolpath's cost
-    (3,500 instructions a float, six floats a move under a tool length: callgrind), yet a path repeats
-    its numbers: the controlled point shares X and Y with the programmed one, Z stays through a pass. So
-    the spelling of each float is kept (by value; zero, whose two signs compare equal, is spelled every
-    time). An event is an object of string keys whose values are strings, ints, floats, booleans, None
-    or such an object; anything else (a list, a subclass) is left to json's encoder, whose text this
-    is, byte for byte (``tests/test_toolpath_numbers.py`` compares the two on random events). A float
-    that is not finite raises ``ValueError``, as json's does under ``allow_nan=False``."""
-    fallback = json.JSONEncoder(allow_nan=False).encode
-    string = json.encoder.encode_basestring_ascii  # json's spelling of a string (ensure_ascii)
-    spelled: dict[float, str] = {}
-    names: dict[str, str] = {}
-    float_repr, int_repr = float.__repr__, int.__repr__
-
-    def encode(ev: Event) -> str:
-        parts: list[str] = []
-        for key, value in ev.items():
-            kind = type(value)
-            if kind is float:
-                text = spelled.get(value)
-                if text is None:
-                    if value - value != 0.0:  # inf or nan
-                        raise ValueError(f"Out of range float values are not JSON compliant: {value!r}")
-                    text = float_repr(value)
-                    if value:
-                        if len(spelled) >= FLOATS_KEPT:
-                            spelled.clear()
-                        spelled[value] = text
-            elif kind is int:
-                text = int_repr(value)
-            elif kind is str:
-                text = string(value)
-            elif kind is dict:
-                text = encode(value)
-            elif value is None:
-                text = "null"
-            elif value is True:
-                text = "true"
-            elif value is False:
-                text = "false"
-            else:
-                raise _Unusual
-            name = names.get(key) if type(key) is str else None
-            if name is None:
-                if type(key) is not str:
-                    raise _Unusual
-                name = names[key] = string(key) + ": "
-            parts.append(name + text)
-        return "{" + ", ".join(parts) + "}"
-
-    def event(ev: Event) -> str:
-        try:
-            return encode(ev)
-        except _Unusual:
-            return fallback(ev)
-
-    return event
-
-
-class _Unusual(Exception):
-    """An event holds what ``event_encoder`` leaves to json's encoder."""
+    """``json.JSONEncoder(allow_nan=False).encode`` for one event, made once: ``encode`` makes json's C
+    encoder anew at every call, so the C encoder it would make is made here and kept (a fifth less CPU a
+    toolpath event; writing each event's own floats with a kept spelling, in Python, cost more than it
+    saved). Where json has none (not CPython), ``encode`` itself. Its text is json's
+    (``tests/test_toolpath_numbers.py`` compares the two on random events)."""
+    encoder = json.JSONEncoder(allow_nan=False)
+    make = getattr(json.encoder, "c_make_encoder", None)
+    if make is None:
+        return encoder.encode
+    # the arguments JSONEncoder.iterencode passes its C encoder, but no markers: an event holds no cycle
+    chunks = make(None, encoder.default, json.encoder.encode_basestring_ascii, encoder.indent,
+                  encoder.key_separator, encoder.item_separator, encoder.sort_keys, encoder.skipkeys,
+                  encoder.allow_nan)
+    join = "".join
+    return lambda ev: join(chunks(ev, 0))
 
 
 def write_jsonl(events: Iterable[Event], out: TextIO, file: str = "<toolpath>") -> None:
