@@ -25,7 +25,7 @@ class Context:
     reading dialect tells the neutral steps about its words."""
 
     __slots__ = ("file", "setup", "diagnostics", "state", "dialect", "cycle_words", "on_unsupported",
-                 "program_mode", "keep_check", "reader", "stops_before_motion", "feed_before_units", "run_data",
+                 "program_mode", "keep_check", "reader", "stops_before_motion", "feed_before_units", "cutter_rules", "run_data",
                  "point_mix", "lathe", "increments", "diameter", "one_block", "peck_clearance_mm", "moves_made")
 
     def __init__(self, file: str, setup: MachineSetup, diagnostics: Diagnostics, dialect: str,
@@ -51,6 +51,8 @@ class Context:
         True unless the dialect says otherwise, so a step never skips flags it was not told are absent)."""
         self.feed_before_units = False
         """An F in a block that changes units is in the old units (``Dialect.FEED_BEFORE_UNITS``)."""
+        self.cutter_rules: Any = None
+        """The reading dialect's cutter compensation rules (``Dialect.CUTTER_RULES``; None: not modelled)."""
         self.point_mix: Any = NOT_SET
         """A reading step's tracker of words written with and without a decimal point
         (``postproc.rs274.point_mix``): ``NOT_SET`` until it starts, None once it has nothing left to look

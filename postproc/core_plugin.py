@@ -23,7 +23,8 @@ from .lower import Lowering
 from .setup import MachineSetup
 from .syntax import Pipeline
 from .syntaxes.modal_state import ModalStateSyntax
-from .synchronised_tap import RigidTap, resolve_rigid_taps
+from .cycles.rigid_tap_lowering import resolve_rigid_taps
+from .synchronised_tap import RigidTap
 from .xmlio import XFactory
 
 

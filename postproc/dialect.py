@@ -294,6 +294,7 @@ class Dialect:
         ctx.reader = cls.READER
         ctx.stops_before_motion = cls.STOPS_BEFORE_MOTION
         ctx.feed_before_units = cls.FEED_BEFORE_UNITS
+        ctx.cutter_rules = cls.CUTTER_RULES
         ctx.peck_clearance_mm = cls.PECK_CLEARANCE_MM
         if cls.INVERSE_TIME_FEED:
             ctx.run_data[INVERSE_TIME_KEY] = True  # its programs may run in G93 (``postproc.inverse_time``)

@@ -54,7 +54,7 @@ from .plugins import Registry, default_registry
 from .setup import MachineSetup
 from .travel import TravelCheck, TravelError
 from .state import MM_PER_INCH, MODAL_KEYS, PLANE_AXES, ModalState
-from .synchronised_tap import resolve_rigid_taps
+from .cycles.rigid_tap_lowering import resolve_rigid_taps
 from .context import Context
 
 UNEVALUATED = "a computed word reaches the simulation unevaluated"

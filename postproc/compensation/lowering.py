@@ -51,9 +51,7 @@ def resolve_cutter_compensation(blocks: Iterator[Block], ctx: Context, target: t
     where the source dialect's rules are modelled (see the module docstring)."""
     if ctx.dialect == target.NAME or target.CUTTER_COMPENSATION:
         return blocks
-    from ..plugins import default_registry
-    source = default_registry().dialects.get(ctx.dialect)  # none for a program written from the neutral IR
-    rules = None if source is None else source.CUTTER_RULES
+    rules: CutterRules | None = ctx.cutter_rules  # none for a program written from the neutral IR
     if rules is None:
         return blocks
     return _Resolver(ctx, rules).run(blocks)

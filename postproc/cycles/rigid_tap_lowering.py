@@ -1,0 +1,136 @@
+"""The lowering step of rigid (spindle-synchronised) tapping: each ``RigidTap`` (``postproc.synchronised_tap``,
+where the rules are described) kept as the target's synchronised move, written as its rigid tap cycle, or
+refused. It lives with the cycles because it writes a tap cycle (``CannedCycle``), and the cycles package
+reads ``RigidTap``: the section below, the step here."""
+
+from __future__ import annotations
+
+from typing import Iterator
+
+from ..context import Context
+from ..dialect import Dialect
+from ..errors import PostprocError, ProgramError, UnsupportedError
+from ..expr import Expr
+from ..ir import (Block, Comments, CompoundMotion, CycleCancel, DistanceMode, Feed, MachineFunction, ReturnLevel,
+                  SpindleSpeed)
+from ..state import PLANE_AXES
+from ..machine_functions import RIGID_TAP
+from ..synchronised_tap import RigidTap, rigid_taps
+from .section import CannedCycle
+
+
+def resolve_rigid_taps(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """Lowering step (the module docstring): after ``expand_canned_cycles``, so an expanded rigid tap cycle
+    shows its taps. A refused block is reported and not written, whatever ``--on-unsupported`` says. Back to
+    its own dialect with no cycle expanded by force, every tap stays as written: the stream passes through."""
+    if target.NAME == ctx.dialect and not ctx.setup.cycles.expanded():
+        return blocks
+    return _resolve(blocks, ctx, target)
+
+
+def _resolve(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    synchronises = target.SYNCHRONISED_TAP
+    family = target.family()
+    cycle_code = target.RIGID_TAP_CODE
+    for block in blocks:
+        sections = block.sections
+        if "MachineFunction" not in sections and "RigidTap" not in sections and "CompoundMotion" not in sections:
+            yield block  # the common block
+            continue
+        code = sections.get("MachineFunction")
+        if synchronises and isinstance(code, MachineFunction) and code.action == RIGID_TAP and code.family != family:
+            _leave_out(block, code)
+        taps = rigid_taps(block)
+        if not taps:
+            yield block
+            continue
+        if cycle_code and not synchronises and "RigidTap" in sections:
+            try:
+                yield from as_tap_cycle(block, ctx, target, sections["RigidTap"])  # type: ignore[arg-type]
+            except PostprocError as err:
+                ctx.diagnostics.error(err)
+            continue
+        why = _refusal(taps, target)
+        if why is not None:
+            ctx.diagnostics.error(UnsupportedError(why, ctx.at(block)))
+            continue
+        yield block
+
+
+def _leave_out(block: Block, code: MachineFunction) -> None:
+    """The rigid-tapping code goes; a comment says where its meaning went."""
+    del block.sections["MachineFunction"]
+    comments = block.sections.get("Comments")
+    texts = list(comments.texts) if isinstance(comments, Comments) else []
+    block.sections["Comments"] = Comments([*texts, f"{code.describe()}: the taps after it are written "
+                                                  "spindle-synchronised"])
+    block.changed()
+
+
+def _refusal(taps: list[RigidTap], target: type[Dialect]) -> str | None:
+    """Why ``target`` cannot run these taps exactly, or None."""
+    if not target.SYNCHRONISED_TAP:
+        return (f"a rigid (spindle-synchronised) tap: this translation writes no synchronised tap for {target.NAME}, "
+                "and a tap fed without the spindle in step breaks: refused, even with --on-unsupported warn")
+    if any(tap.dwell for tap in taps):
+        return (f"a rigid tap with a dwell at the bottom (P): {target.NAME}'s synchronised tap reverses at once "
+                "and has no dwell there: refused, even with --on-unsupported warn")
+    return None
+
+
+def as_tap_cycle(block: Block, ctx: Context, target: type[Dialect], tap: RigidTap) -> Iterator[Block]:
+    """A synchronised tap as the target's rigid tap cycle (the module docstring): three blocks."""
+    state = ctx.state
+    at = ctx.at(block)
+    normal = PLANE_AXES[state.plane][2]
+    if tap.dwell or isinstance(tap.pitch, Expr) or any(isinstance(v, Expr) for v in tap.axes.values()):
+        raise UnsupportedError("a rigid tap with a computed word or a dwell: no tap cycle is written for it", at)
+    incremental = state.distance == "incremental"
+    start = state.position.get(normal)
+    if start is None:
+        raise ProgramError(f"a rigid tap where the tool's {normal} position is unknown: {target.NAME}'s tap cycle "
+                           "needs its start as the R level (program a move to a known point first)", at)
+    for axis, value in tap.axes.items():
+        if axis != normal and (value != 0.0 if incremental else value != state.position.get(axis)):
+            raise UnsupportedError(f"a rigid tap that moves {axis} (an oblique tap): {target.NAME}'s tap cycle "
+                                   f"taps along {normal} only", at)
+    if normal not in tap.axes:
+        raise UnsupportedError(f"a rigid tap that does not move {normal}: {target.NAME}'s tap cycle taps along "
+                               f"{normal} only", at)
+    end = tap.axes[normal]
+    assert not isinstance(end, Expr)  # (refused above)
+    bottom = float(end) + (start if incremental else 0.0)
+    rpm, direction, mode = state.spindle_rpm, state.spindle, state.feed_mode
+    if direction not in ("cw", "ccw") or not rpm:
+        raise ProgramError("a rigid tap with the spindle stopped or at no speed cannot be run", at)
+    if mode not in ("per_min", "per_rev"):
+        raise UnsupportedError(f"a rigid tap in {mode.replace('_', ' ')} feed: no tap cycle feed says its pitch", at)
+    pitch = tap.pitch
+    assert not isinstance(pitch, Expr)
+    code = MachineFunction(target.family(), target.RIGID_TAP_CODE, target.RIGID_TAP_CODE, RIGID_TAP,
+                           "rigid tapping")
+    head = Block(block.line, None, block.eol or "\n")
+    head.sections = {"MachineFunction": code, "SpindleSpeed": SpindleSpeed(float(rpm))}
+    yield head
+    del block.sections["RigidTap"]
+    block.changed()
+    sections = block.sections
+    if incremental:
+        sections["DistanceMode"] = DistanceMode("absolute")
+    sections["ReturnLevel"] = ReturnLevel("r")
+    sections["CannedCycle"] = CannedCycle(
+        "tap" if direction == "cw" else "tap_left", call=True, semantics="fanuc", return_level="r",
+        plane=state.plane, r=start, bottom=bottom, spindle=direction, pitch=pitch,
+        words={normal: bottom, ctx.cycle_words.level if ctx.cycle_words is not None else "R": start},
+        feed=pitch * float(rpm) if mode == "per_min" else pitch)
+    sections["Feed"] = Feed(pitch * float(rpm) if mode == "per_min" else pitch)
+    yield block
+    tail = Block(block.line, None, block.eol or "\n")
+    tail.sections = {"CycleCancel": CycleCancel()}
+    if state.return_level != "r":
+        tail.sections["ReturnLevel"] = ReturnLevel(state.return_level)
+    if isinstance(state.feed, (int, float)):
+        tail.sections["Feed"] = Feed(float(state.feed))
+    if incremental:
+        tail.sections["DistanceMode"] = DistanceMode("incremental")
+    yield tail
