@@ -1,5 +1,5 @@
 """One run for benchmarks/callgrind.sh, as ``make bench`` runs it: the ``postproc`` command's process
-(``postproc.launch``: the command line, reading the file and writing one), in this interpreter so that
+(``postproc.commands.launch``: the command line, reading the file and writing one), in this interpreter so that
 valgrind follows it. python callgrind_once.py SRC TGT NORMALIZE FILE.
 
 TGT ``toolpath``: ``postproc toolpath FILE --dialect SRC --format jsonl`` on the benchmark machine;
@@ -12,7 +12,7 @@ import os
 import sys
 import tempfile
 
-from postproc.launch import run
+from postproc.commands.launch import run
 
 source, target, normalize, path = sys.argv[1:5]
 machine = os.path.join(os.path.dirname(os.path.abspath(__file__)), "machine.xml")

@@ -46,7 +46,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Callable, Iterable, cast
 
 if TYPE_CHECKING:
-    from postproc.setup import MachineSetup
+    from postproc.setup.machine_setup import MachineSetup
 
 ROOT = Path(__file__).resolve().parents[1]
 if str(ROOT) not in sys.path:
@@ -129,7 +129,7 @@ def targets(program: Program) -> list[str]:
 
 def _setup(program: Program) -> MachineSetup:
     """The program's set-up with a tool table in which every length and radius register has a value."""
-    from postproc.setup import MachineSetup, load_setup
+    from postproc.setup.machine_setup import MachineSetup, load_setup
     from tests.support.tools import REGISTERS, with_tools
     if program.setup:
         folder = ROOT if program.setup.startswith("examples/") else Path(program.folder)
@@ -181,7 +181,7 @@ def _errors_outcome(program: Program, target: str, errors: list[object]) -> Outc
 def check_source(program: Program) -> Outcome:
     """Simulate the source on its set-up: the pairs of a program that cannot run at all are excused."""
     from postproc.errors import Diagnostics, ErrorLevel, ErrorList, PostprocError
-    from postproc.toolpath import toolpath_events
+    from postproc.simulate.toolpath import toolpath_events
     diagnostics = Diagnostics(ErrorLevel.RAISE, warn_stream=io.StringIO())
     try:
         for _ in toolpath_events(_lines(_source(program)), file=program.path, dialect=program.dialect,
@@ -203,7 +203,7 @@ def run_pair(program: Program, target: str) -> Outcome:
     """Translate ``program`` to ``target`` and verify the translation (see the module docstring)."""
     from postproc.api import translate
     from postproc.errors import Diagnostics, ErrorLevel, ErrorList, PostprocError
-    from postproc.verify import verify_lines
+    from postproc.simulate.verify import verify_lines
     setup = _setup(program)
     text = _source(program)
     out = io.StringIO(newline="")
@@ -312,7 +312,7 @@ def run_corpus(programs: list[Program], jobs: int = 2, timeout: float = TIMEOUT_
     """The source checks, then every pair of every program whose source is not excused."""
     # imports before forking: every child starts with the dialects loaded
     import postproc.api  # noqa: F401
-    import postproc.verify  # noqa: F401
+    import postproc.simulate.verify  # noqa: F401
     sources = run_tasks([(p, "") for p in programs], jobs, timeout, fork)
     excused = {o.program: o for o in sources if o.kind == EXCUSED}
     tasks = [(p, t) for p in programs if p.path not in excused for t in targets(p)]

@@ -1,5 +1,5 @@
-"""``python -m postproc``: the command line (the process of the ``postproc`` command: postproc.launch)."""
+"""``python -m postproc``: the command line (the process of the ``postproc`` command: postproc.commands.launch)."""
 
-from .launch import run
+from .commands.launch import run
 
 run()

@@ -13,12 +13,12 @@ native.install()  # the compiled hot path, before any of its modules is imported
 from .dialect import Dialect
 from .errors import Diagnostics, ErrorLevel, PostprocError, UsageError
 from .ir import Block
-from .lower import lower_for
+from .lowering.lower import lower_for
 from .plugins import Registry, default_registry
 from .reading import gc_paused as gc_paused, read_blocks as read_blocks  # public API names
-from .interp.step import TARGET_OMITS_VACANT, ProgramSyntax
-from .sequences import Sequences
-from .setup import MachineSetup
+from .syntaxes.program import TARGET_OMITS_VACANT, ProgramSyntax
+from .lowering.sequences import Sequences
+from .setup.machine_setup import MachineSetup
 from .source_map import OutputMap
 from .syntax import Pipeline
 from .context import Context
@@ -52,7 +52,7 @@ def translate(lines: Iterable[str], out: TextIO, *, file: str, source: str, targ
             ctx.run_data[TARGET_OMITS_VACANT] = _omits_vacant_words(dst, setup)
 
         if setup.travel_limited():
-            from .toolpath import check_travel
+            from .simulate.toolpath import check_travel
             lines = list(lines)  # read twice: the travel check simulates the source first
             check_travel(lines, file=file, dialect=src, setup=setup, diagnostics=diagnostics,
                          on_unsupported=on_unsupported, registry=registry)

@@ -1,4 +1,4 @@
-"""What makes a block invalid whatever the target: one place for the simulator (``postproc.toolpath``)
+"""What makes a block invalid whatever the target: one place for the simulator (``postproc.simulate.toolpath``)
 and ``translate``, so ``translate``, ``toolpath`` and ``verify`` never disagree about the same block.
 A negative F or S is refused by the reading pipeline's modal-state step (every reading passes there);
 a feed move with no feed rate by the simulator and, for ``translate``, the ``check_blocks`` lowering

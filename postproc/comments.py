@@ -6,7 +6,7 @@ dialect's comment - reaches a target only inside a comment, so it must neither e
 (a closing parenthesis, a line break) nor make it one the controller acts on (LinuxCNC runs
 ``(MSG,`` ``(DEBUG,`` ``(LOGOPEN,`` ... comments; grbl acts on ``!`` anywhere). ``text`` makes any text
 safe; ``comments`` finds the comments of a written line, so a template's output can be checked to hold
-every value inside a passive one (``postproc.template_values``).
+every value inside a passive one (``postproc.output.template_values``).
 """
 
 from __future__ import annotations

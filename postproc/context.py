@@ -10,7 +10,7 @@ from mypy_extensions import mypyc_attr
 from .cycle_words import CycleWords
 from .errors import Diagnostics, Location
 from .ir import Block
-from .setup import MachineSetup
+from .setup.machine_setup import MachineSetup
 from .source_map import locate
 from .state import ModalState
 

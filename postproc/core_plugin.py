@@ -6,21 +6,21 @@ from typing import Callable
 
 from . import cycles, patterns
 from .block_rules import check_blocks
-from .machine_functions import drop_foreign_machine_functions
-from .program_end import comment_after_end
-from .program_frame import frame_program
+from .lowering.machine_functions import drop_foreign_machine_functions
+from .lowering.program_end import comment_after_end
+from .lowering.program_frame import frame_program
 from .control import register_control
 from .cycles.lathe_lowering import expand_lathe_cycles
 from .cycles.lowering import expand_canned_cycles
 from .hookspecs import hookimpl
-from .inverse_time import convert_inverse_time
-from .interp import ProgramSyntax
+from .lowering.inverse_time import convert_inverse_time
+from .syntaxes.program import ProgramSyntax
 from .expr import register_expressions
 from .frames import evaluate_frames, register_frames
 from .ir import register_sections
 from .lathe_sections import register_lathe_sections
-from .lower import Lowering
-from .setup import MachineSetup
+from .lowering.lower import Lowering
+from .setup.machine_setup import MachineSetup
 from .syntax import Pipeline
 from .syntaxes.modal_state import ModalStateSyntax
 from .cycles.rigid_tap_lowering import resolve_rigid_taps
@@ -36,7 +36,7 @@ def postproc_register_xml(factory: XFactory) -> None:
     register_frames(factory)
     register_control(factory)
     from .rs274.lathe_cycles import LatheCycleSyntax
-    from .sequences import GeneratedText
+    from .lowering.sequences import GeneratedText
     for cls in (Pipeline, MachineSetup, ModalStateSyntax, ProgramSyntax, LatheCycleSyntax, GeneratedText, RigidTap):
         cls.reg(factory)
     cycles.register(factory)

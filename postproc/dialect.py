@@ -2,7 +2,7 @@
 
 As in sqlglot, a dialect overrides only what differs; the base never names a concrete dialect.
 Capabilities are UPPER_CASE class attributes, each documented, and lowering transforms are chosen
-from them (``postproc.lower``).
+from them (``postproc.lowering.lower``).
 """
 
 from __future__ import annotations
@@ -13,13 +13,13 @@ from typing import TYPE_CHECKING, Callable, ClassVar, Generic, Iterable, Iterato
 
 from .comments import CommentSyntax
 from .errors import Diagnostics
-from .line_format import LineRule
+from .output.line_format import LineRule
 from .ir import Block
-from .setup import MachineSetup
+from .setup.machine_setup import MachineSetup
 from .context import Context
 from .cycle_words import CycleWords
 from .syntax import Pipeline, load_pipeline
-from .writer_base import Writer as Writer
+from .output.writer_base import Writer as Writer
 
 if TYPE_CHECKING:
     from .compensation.rules import CutterRules
@@ -103,7 +103,7 @@ class Dialect:
     """Name of the reading pipeline XML shipped in the dialect's package (``pipeline_file``); a dialect
     may also declare it in Python (``python_pipeline``)."""
     LOWERING: ClassVar[tuple[Callable[..., Iterator[Block]], ...]] = ()
-    """Lowering steps only this dialect needs as a target (``postproc.lower``), run after the generic
+    """Lowering steps only this dialect needs as a target (``postproc.lowering.lower``), run after the generic
     ones, in order: pure block-stream transforms ``step(blocks, ctx, target)``."""
     CYCLE_WORDS: ClassVar[CycleWords | None] = None
     """Which letters carry the hole-cycle words when this dialect is read, and how it names its
@@ -116,7 +116,7 @@ class Dialect:
     written as the cycle at every point (``expand_hole_patterns``)."""
     INVERSE_TIME_FEED: ClassVar[bool] = False
     """The controller runs G93 inverse-time feed as RS274/NGC does (a move in 1/F minutes); else a
-    translation writes each move's feed per minute (``postproc.inverse_time``)."""
+    translation writes each move's feed per minute (``postproc.lowering.inverse_time``)."""
     SPINDLE_ORIENTATION: ClassVar[bool] = True
     """The controller can stop the spindle at an angle (cycles that need it are handled per the set-up's
     ``Cycles orientation`` otherwise)."""
@@ -212,10 +212,10 @@ class Dialect:
     COMMENTS: ClassVar[CommentSyntax] = CommentSyntax(parens=False)
     """How the controller writes comments (``postproc.comments``): what text is safe inside one, and where
     a line's comments are. The values a set-up template writes stand only inside a comment
-    (``postproc.template_values``); the default knows no comment, so a dialect that declares none has
+    (``postproc.output.template_values``); the default knows no comment, so a dialect that declares none has
     every such value refused."""
     LINE_RULE: ClassVar[LineRule | None] = None
-    """Rules every written line obeys on this controller (``postproc.line_format.LineRule``: grbl's line
+    """Rules every written line obeys on this controller (``postproc.output.line_format.LineRule``: grbl's line
     buffer and real-time characters), applied to whatever the writer emits; None: no rule."""
     LATHE_ONE_BLOCK: ClassVar[bool] = False
     """The control reads the one-block forms ``G71 P Q U W D F`` and ``G76 X Z I K D F A P`` (Fanuc
@@ -297,7 +297,7 @@ class Dialect:
         ctx.cutter_rules = cls.CUTTER_RULES
         ctx.peck_clearance_mm = cls.PECK_CLEARANCE_MM
         if cls.INVERSE_TIME_FEED:
-            ctx.run_data[INVERSE_TIME_KEY] = True  # its programs may run in G93 (``postproc.inverse_time``)
+            ctx.run_data[INVERSE_TIME_KEY] = True  # its programs may run in G93 (``postproc.lowering.inverse_time``)
         ctx.lathe = cls.reads_lathe(setup)
         ctx.diameter = ctx.lathe and cls.DIAMETER_PROGRAMMING and setup.input.x_programming == "diameter"
         ctx.one_block = ctx.lathe and cls.LATHE_ONE_BLOCK and setup.input.lathe_cycle_format == "one-block"

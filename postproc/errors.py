@@ -77,7 +77,7 @@ class UnsupportedError(PostprocError):
 
     section: str | None = None
     """The key of the block's section the writer refused, where it knows it (``--on-unsupported warn``
-    then writes the block without that section: ``postproc.partial_block``)."""
+    then writes the block without that section: ``postproc.output.partial_block``)."""
 
 
 class ConfigError(PostprocError):

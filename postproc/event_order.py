@@ -1,6 +1,6 @@
 """Which of a block's actions run before its motion and which after, as a controller runs them.
 
-One rule for the writer and the simulator (``postproc.toolpath``): a block that holds both motion and
+One rule for the writer and the simulator (``postproc.simulate.toolpath``): a block that holds both motion and
 machine actions does what the motion needs first (tool change, spindle start, coolant on, a dwell,
 every modal setting) and what ends it last (spindle stop, orientation, coolant off, program stop or
 end). An expanded canned cycle written as several lines keeps that order, so the hole is never fed with

@@ -13,8 +13,8 @@ import pluggy
 from .xmlio import XFactory
 
 if TYPE_CHECKING:
-    from .lower import Lowering
-    from .setup import SetupGroup
+    from .lowering.lower import Lowering
+    from .setup.machine_setup import SetupGroup
 
 hookspec = pluggy.HookspecMarker("postproc")
 hookimpl = pluggy.HookimplMarker("postproc")
@@ -35,7 +35,7 @@ def postproc_register_xml(factory: XFactory) -> None:
 def postproc_register_lowerings(register: Callable[["Lowering"], None]) -> None:
     """Register generic lowering steps by calling ``register(step)`` once per step, in the order they
     should run. A step is a pure block-stream transform ``step(blocks, ctx, target) -> blocks`` (see
-    ``postproc.lower``) that applies to every translation and decides from the target dialect's
+    ``postproc.lowering.lower``) that applies to every translation and decides from the target dialect's
     capabilities whether it changes anything. A rewrite only one target needs belongs in that dialect's
     ``LOWERING`` instead."""
 
@@ -43,7 +43,7 @@ def postproc_register_lowerings(register: Callable[["Lowering"], None]) -> None:
 @hookspec
 def postproc_register_setup_groups(register: Callable[[type["SetupGroup"]], None]) -> None:
     """Register set-up groups by calling ``register(GroupClass)`` once per group: a subclass of
-    ``postproc.setup.SetupGroup`` (a dataclass: fields with defaults, bounds by ``postproc.setup.setting``,
+    ``postproc.setup.machine_setup.SetupGroup`` (a dataclass: fields with defaults, bounds by ``postproc.setup.machine_setup.setting``,
     camelCase attributes) whose ``TAG`` names its element. A set-up
     may then hold ``<TAG attr="..."/>``, validated, located in every error, inherited through ``extends``
     and written back by ``config dump``; the plugin reads it with ``setup.group(GroupClass)``. A tag the

@@ -549,7 +549,7 @@ class MachineFunction(Section):
     """A machine-specific code (an M code of the machine builder, a machine G code such as a smoothing
     setting) with the words it takes, as written (``text``). It passes verbatim between controllers of
     ``family`` and has no equivalent anywhere else; the simulation runs its ``action`` (one of
-    ``postproc.setup.MachineCode``'s). ``declared``: the set-up or the family's defaults know it."""
+    ``postproc.setup.machine_setup.MachineCode``'s). ``declared``: the set-up or the family's defaults know it."""
 
     XNAME = "MachineFunction"
 

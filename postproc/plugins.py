@@ -21,8 +21,8 @@ from .entry_points import load as load_entry_point
 from .errors import UsageError
 from .expr import register_expressions
 from .ir import register_sections
-from .lower import Lowering, register_transform
-from .setup import SetupGroup, builtin_groups
+from .lowering.lower import Lowering, register_transform
+from .setup.machine_setup import SetupGroup, builtin_groups
 from .xmlio import DEFAULT, XFactory
 
 RESERVED_SETUP_TAGS = frozenset(("Templates", "Library", "MachineCodes", "CodeCall", "Axes", "WorkOffsets", "Tools"))

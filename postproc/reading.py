@@ -17,7 +17,7 @@ from .dialect import Dialect
 from .errors import Diagnostics, Location, UsageError
 from .ir import Block
 from .lines import checked_lines
-from .setup import MachineSetup
+from .setup.machine_setup import MachineSetup
 
 
 @contextlib.contextmanager
@@ -56,7 +56,7 @@ def macro_arguments(dialect: type[Dialect], arguments: Mapping[str, float]) -> C
     ``arguments`` (``--arg A=30``: address -> value), which set the locals the dialect's argument
     specification gives them (``Dialect.MACRO_ARGUMENTS``; the interpreter step starts with them). An
     address the dialect does not take is wrong usage."""
-    from .interp.step import ARGUMENTS_KEY
+    from .syntaxes.program import ARGUMENTS_KEY
     table = dialect.MACRO_ARGUMENTS
     if not table:
         raise UsageError(f"--arg: the {dialect.NAME} dialect has no macro call arguments")

@@ -20,7 +20,7 @@ if os.environ.get("CI"):
 from tests.support import output_rules
 
 output_rules.install()  # every grbl and LinuxCNC program the suite writes is checked: see output_rules
-from postproc.cli import main  # noqa: E402
+from postproc.commands.cli import main  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
 

@@ -15,8 +15,8 @@ import pytest
 
 from postproc.api import read_program, translate
 from postproc.errors import ConfigError, Diagnostics, ErrorLevel
-from postproc.setup import MachineSetup, OutputSettings, load_setup
-from postproc.verify import verify_lines
+from postproc.setup.machine_setup import MachineSetup, OutputSettings, load_setup
+from postproc.simulate.verify import verify_lines
 
 WRITERS = ["fanuc", "linuxcnc", "grbl", "mach3", "isg", "fagor"]
 ON_GRID = """G21 G90 G17

@@ -8,9 +8,9 @@ import math
 import pytest
 from lxml import etree
 
-from postproc.backplot import DASH, HEIGHT, WIDTH, Backplot, dashes
-from postproc.export import export_toolpath
-from postproc.toolpath import toolpath_events
+from postproc.drawing.backplot import DASH, HEIGHT, WIDTH, Backplot, dashes
+from postproc.commands.export import export_toolpath
+from postproc.simulate.toolpath import toolpath_events
 
 SVG = "{http://www.w3.org/2000/svg}"
 PROGRAM = "G21 G90\nG00 X10. Y0. Z5.\nG01 Z-1. F100.\nG03 X-10. Y0. I-10. J0.\nG00 Z5.\nX30.\nG01 Z0.\nM30\n"
@@ -95,7 +95,7 @@ def test_backplot_from_events_api() -> None:
 def test_a_long_run_is_split_into_bounded_paths_that_join_up(monkeypatch: pytest.MonkeyPatch) -> None:
     """Memory stays bounded on long programs: at most PATH_POINTS points per <path>, and each piece
     starts where the previous one ended, so the drawing is unbroken."""
-    import postproc.backplot as backplot
+    import postproc.drawing.backplot as backplot
     monkeypatch.setattr(backplot, "PATH_POINTS", 10)
     moves = "".join(f"X{i}. Y{(i % 3)}.\n" for i in range(1, 26))
     root = svg_of("G21 G90\nG00 X0. Y0. Z0.\nG01 F100.\n" + moves + "M30\n")

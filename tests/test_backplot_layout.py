@@ -12,11 +12,11 @@ from typing import Any
 import pytest
 from lxml import etree
 
-from postproc.backplot import HEIGHT, WIDTH
-CHAR_WIDTH = 7.0  # postproc.canvas.CHAR_WIDTH (kept here: the test must run against the layout before it)
-from postproc.export import export_toolpath
-from postproc.setup import InputSettings, MachineSettings, MachineSetup
-from postproc.toolpath import toolpath_events
+from postproc.drawing.backplot import HEIGHT, WIDTH
+CHAR_WIDTH = 7.0  # postproc.drawing.canvas.CHAR_WIDTH (kept here: the test must run against the layout before it)
+from postproc.commands.export import export_toolpath
+from postproc.setup.machine_setup import InputSettings, MachineSettings, MachineSetup
+from postproc.simulate.toolpath import toolpath_events
 
 SVG = "{http://www.w3.org/2000/svg}"
 LATHE = MachineSetup(input=InputSettings(machine_type="lathe"), machine=MachineSettings(axes="XZ"))

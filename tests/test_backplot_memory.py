@@ -20,9 +20,9 @@ ROOT = Path(__file__).resolve().parent.parent
 MEASURE = r"""
 import os, sys, tracemalloc
 from itertools import chain
-from postproc.export import write_backplot
-from postproc.setup import load_setup
-from postproc.toolpath import start_position, toolpath_events
+from postproc.commands.export import write_backplot
+from postproc.setup.machine_setup import load_setup
+from postproc.simulate.toolpath import start_position, toolpath_events
 
 setup = load_setup(sys.argv[2])  # tools measured as zero: the simulation needs the lengths G43 reads
 setup.limits.kept_prefix = 100

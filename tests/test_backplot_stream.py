@@ -16,8 +16,8 @@ from typing import Any, Callable
 
 import pytest
 
-import postproc.backplot as backplot
-import postproc.pointstore as pointstore
+import postproc.drawing.backplot as backplot
+import postproc.drawing.pointstore as pointstore
 
 ROOT = Path(__file__).resolve().parent.parent
 GOLDEN = ROOT / "tests" / "golden" / "backplot"

@@ -10,9 +10,9 @@ import re
 
 from lxml import etree
 
-from postproc.backplot import Backplot
-from postproc.export import export_toolpath
-from postproc.setup import InputSettings, MachineSetup
+from postproc.drawing.backplot import Backplot
+from postproc.commands.export import export_toolpath
+from postproc.setup.machine_setup import InputSettings, MachineSetup
 
 SVG = "{http://www.w3.org/2000/svg}"
 TWO_TOOLS = ("G21 G90 G17\nT1 M06\nG00 X-20. Y-10. Z5.\nG01 Z-1. F100.\nX40.\nG03 X60. Y10. I0. J20.\n"

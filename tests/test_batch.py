@@ -11,8 +11,8 @@ from pathlib import Path
 
 import pytest
 
-from postproc.batch.plan import chunks, plan_jobs
-from postproc.batch.progress import BatchProgress
+from postproc.commands.batch.plan import chunks, plan_jobs
+from postproc.commands.batch.progress import BatchProgress
 from postproc.errors import UsageError
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -305,7 +305,7 @@ def test_a_file_that_kills_its_worker_fails_alone(cli, tree, tmp_path, monkeypat
     import multiprocessing
 
     import postproc.api
-    import postproc.batch.local
+    import postproc.commands.batch.local
 
     real = postproc.api.translate
 
@@ -316,7 +316,7 @@ def test_a_file_that_kills_its_worker_fails_alone(cli, tree, tmp_path, monkeypat
 
     monkeypatch.setattr(postproc.api, "translate", dies_on_crash)
     # forked workers run this test's translate (a fork server's would import the real one)
-    monkeypatch.setattr(postproc.batch.local, "_start_method", lambda: multiprocessing.get_context("fork"))
+    monkeypatch.setattr(postproc.commands.batch.local, "_start_method", lambda: multiprocessing.get_context("fork"))
     shutil.copy(EXAMPLES[0], tree / "sub" / "crash.nc")
     out, report = tmp_path / "out", tmp_path / "report.jsonl"
     result = cli("translate", tree, "-o", out, "--from", "fanuc", "--to", "fanuc", "--jobs", "2",
@@ -354,8 +354,8 @@ def test_defines_reach_the_templates_of_every_file(cli, tree, tmp_path):
 def test_the_summary_counts_warnings_among_the_files_ok():
     """"ok N (M with warnings)": M counts the files translated ok that warned, never more than N (a file
     with errors and warnings is counted under errors only)."""
-    from postproc.batch.report import Tally
-    from postproc.batch.work import FileResult
+    from postproc.commands.batch.report import Tally
+    from postproc.commands.batch.work import FileResult
     tally = Tally(files=4)
     tally.add(FileResult("a.nc", "o/a.nc", "ok", 0, warnings=["a.nc:1:1: warning: w"]))
     tally.add(FileResult("b.nc", "o/b.nc", "ok", 0))

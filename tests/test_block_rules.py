@@ -10,7 +10,7 @@ import pytest
 
 from postproc.api import translate
 from postproc.errors import ErrorList
-from postproc.toolpath import toolpath_events
+from postproc.simulate.toolpath import toolpath_events
 
 CASES = [
     ("G1 X10. F-100.", "p.nc:3:9: error: feed rate F-100 cannot be negative"),
@@ -92,7 +92,7 @@ def test_a_program_that_computes_leaves_the_feed_order_to_the_run() -> None:
     from postproc.errors import Diagnostics
     from postproc.ir import Block, Feed, Motion
     from postproc.block_rules import check_blocks
-    from postproc.setup import MachineSetup
+    from postproc.setup.machine_setup import MachineSetup
 
     def block(line: int, *sections: object) -> Block:
         b = Block(line, None, "\n")
@@ -137,7 +137,7 @@ def test_translate_refuses_the_arcs_the_toolpath_refuses(arc: str, message: str,
 def test_a_feed_rate_written_as_zero_is_refused(target: str, normalize: bool) -> None:
     """F0.0000001 is no zero feed in the source, but the output's resolution writes it F0., which the
     controller refuses for the feed move after it: the translation fails instead."""
-    from postproc.setup import MachineSetup
+    from postproc.setup.machine_setup import MachineSetup
 
     setup = MachineSetup()
     setup.output.normalize = normalize

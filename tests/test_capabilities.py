@@ -15,7 +15,7 @@ from postproc.errors import ErrorList
 from postproc.plugins import default_registry
 from postproc.api import translate
 from postproc.dialect import Dialect
-from postproc.setup import MachineSetup
+from postproc.setup.machine_setup import MachineSetup
 from tests.support.tools import with_tools
 
 REGISTRY = default_registry()
@@ -108,7 +108,7 @@ def test_every_capability_is_declared_documented_and_read_by_code() -> None:
 
 
 def test_the_dialects_command_lists_every_capability(capsys: pytest.CaptureFixture[str]) -> None:
-    from postproc.cli import main
+    from postproc.commands.cli import main
     assert main(["dialects"]) == 0
     listed = capsys.readouterr().out
     for dialect in REGISTRY.dialects.values():

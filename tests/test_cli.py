@@ -11,8 +11,8 @@ from pathlib import Path
 
 import pytest
 
-import postproc.cli
-import postproc.progress
+import postproc.commands.cli
+import postproc.commands.progress
 
 ROOT = Path(__file__).resolve().parents[1]
 PROGRAM = ROOT / "examples/fanuc/o1003_pocket_and_edge.nc"
@@ -139,7 +139,7 @@ def test_internal_errors_are_reported_briefly(cli, monkeypatch):
     def boom(args):
         raise RuntimeError("boom")
 
-    monkeypatch.setattr(postproc.cli, "cmd_dialects", boom)
+    monkeypatch.setattr(postproc.commands.cli, "cmd_dialects", boom)
     monkeypatch.delenv("POSTPROC_DEBUG", raising=False)
     result = cli("dialects")
     assert result.status == 1
@@ -150,7 +150,7 @@ def test_postproc_debug_shows_the_traceback(cli, monkeypatch):
     def boom(args):
         raise RuntimeError("boom")
 
-    monkeypatch.setattr(postproc.cli, "cmd_dialects", boom)
+    monkeypatch.setattr(postproc.commands.cli, "cmd_dialects", boom)
     monkeypatch.setenv("POSTPROC_DEBUG", "1")
     with pytest.raises(RuntimeError, match="boom"):
         cli("dialects")
@@ -238,7 +238,7 @@ def test_output_from_standard_input_is_written_with_the_umask(tmp_path):
 
 @pytest.mark.parametrize("command", ["translate", "toolpath", "verify", "ir", "dialects", "config"])
 def test_help_describes_every_option_and_shows_an_example(cli, command):
-    parser = postproc.cli.build_parser()
+    parser = postproc.commands.cli.build_parser()
     sub = next(a for a in parser._actions if isinstance(a, argparse._SubParsersAction)).choices[command]
     for action in sub._actions:
         assert action.help, f"{command}: {action.dest} has no description"
@@ -257,10 +257,10 @@ def test_help_is_as_wide_as_argparse_would_make_it(monkeypatch, columns):
         monkeypatch.delenv("COLUMNS", raising=False)
     else:
         monkeypatch.setenv("COLUMNS", columns)
-    assert postproc.cli._columns() == shutil.get_terminal_size().columns
-    ours = postproc.cli.build_parser().format_help()
-    monkeypatch.setattr(postproc.cli, "_Formatter", argparse.RawDescriptionHelpFormatter)
-    assert ours == postproc.cli.build_parser().format_help()
+    assert postproc.commands.cli._columns() == shutil.get_terminal_size().columns
+    ours = postproc.commands.cli.build_parser().format_help()
+    monkeypatch.setattr(postproc.commands.cli, "_Formatter", argparse.RawDescriptionHelpFormatter)
+    assert ours == postproc.commands.cli.build_parser().format_help()
 
 
 def test_the_console_script_is_installed_beside_the_interpreter():
@@ -279,7 +279,7 @@ def test_a_long_file_shows_a_progress_bar_on_a_terminal_and_erases_it(tmp_path):
     import pty
     big = tmp_path / "big.nc"
     _long_program(big)
-    assert big.stat().st_size >= postproc.progress.MIN_BYTES
+    assert big.stat().st_size >= postproc.commands.progress.MIN_BYTES
     parent, child = pty.openpty()
     try:
         done = _run_input(b"", "translate", big, "--from", "fanuc", "--to", "grbl", "-o", tmp_path / "o.gcode",
@@ -316,12 +316,12 @@ def test_a_short_file_gets_no_bar_even_on_a_terminal(tmp_path):
         def isatty(self) -> bool:
             return True
 
-    assert postproc.progress.progress_for(str(PROGRAM), Tty()) is None
+    assert postproc.commands.progress.progress_for(str(PROGRAM), Tty()) is None
     big = tmp_path / "big.nc"
     _long_program(big)
-    assert postproc.progress.progress_for(str(big), Tty()) is not None
-    assert postproc.progress.progress_for("-", Tty()) is None
-    assert postproc.progress.progress_for(str(big), io.StringIO()) is None
+    assert postproc.commands.progress.progress_for(str(big), Tty()) is not None
+    assert postproc.commands.progress.progress_for("-", Tty()) is None
+    assert postproc.commands.progress.progress_for(str(big), io.StringIO()) is None
 
 
 # -- issue 12, item 6: error reports a person can act on ----------------------------------------------

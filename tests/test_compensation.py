@@ -9,10 +9,10 @@ from typing import Any
 import pytest
 
 from postproc.errors import ErrorList
-from postproc.setup import MachineSetup
-from postproc.setup_machine import ToolData
-from postproc.toolpath import toolpath_events
-from postproc.verify import verify_lines
+from postproc.setup.machine_setup import MachineSetup
+from postproc.setup.machine import ToolData
+from postproc.simulate.toolpath import toolpath_events
+from postproc.simulate.verify import verify_lines
 
 
 def machine(**tools: tuple[float | None, float | None]) -> MachineSetup:
@@ -169,7 +169,7 @@ def test_a_dialect_without_rules_keeps_the_setting_for_verify() -> None:
 
 
 def test_the_verify_picture_draws_the_controlled_paths_it_compares() -> None:
-    from postproc.overlay import Overlay
+    from postproc.drawing.overlay import Overlay
     setup = machine(T1=(100.0, None))
     source = "G21 G90\nG0 X0 Y0 Z200.\nG43 H1 Z10.\nG1 X10. F100.\nM30\n"
     written = "G21 G90\nG0 X0 Y0 Z200.\nG0 Z110.\nG1 X10. F100.\nM30\n"

@@ -18,14 +18,14 @@ from postproc.api import read_program, translate
 from postproc.cycles.semantics import FANUC, RS274
 from postproc.errors import Diagnostics, ErrorList
 from postproc.ir import Block
-from postproc.toolpath import toolpath_events
-from postproc.verify import verify_lines
+from postproc.simulate.toolpath import toolpath_events
+from postproc.simulate.verify import verify_lines
 from tests.support.tools import with_tools
 from tests.support.fuzzing import WRITERS
 from tests.support.output_rules import problems
 from tests.support.rs274 import available, canonical_moves, motions, run_rs274
 from tests.support.section_types import mistyped
-from postproc.setup import MachineSetup
+from postproc.setup.machine_setup import MachineSetup
 
 
 def _translate(program: str, source: str, target: str) -> tuple[str, list[str]]:
@@ -156,7 +156,7 @@ def test_cycle_rules_are_shared_by_copies() -> None:
 # -- lathes: G50 and the turret's T ---------------------------------------------------------------------
 
 def _lathe() -> MachineSetup:
-    from postproc.setup import load_setup
+    from postproc.setup.machine_setup import load_setup
     return load_setup("examples/setups/fanuc_0i_tf.xml")
 
 

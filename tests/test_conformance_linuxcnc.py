@@ -22,7 +22,7 @@ from typing import Any
 
 import pytest
 
-from postproc.toolpath import toolpath_events
+from postproc.simulate.toolpath import toolpath_events
 from tests.support.rs274 import canonical_moves, motions
 
 CONFORMANCE = Path(os.environ.get("POSTPROC_CONFORMANCE", "/work/shared/conformance")) / "linuxcnc"

@@ -1,4 +1,4 @@
-"""Cutter compensation resolved for grbl (``postproc.compensation.lowering``), against LinuxCNC's own
+"""Cutter compensation resolved for grbl (``postproc.lowering.cutter_compensation``), against LinuxCNC's own
 interpreter: the seeded LinuxCNC programs of ``test_cutter_compensation_rs274`` (G41/G42 over lines and
 arcs, both sides, entry and exit moves, inside and outside corners, rapids, Z moves, coolant and dwell
 waiting behind a held move, G91 blocks, several radii) are translated to grbl, whose output has no G41/G42
@@ -20,7 +20,7 @@ import pytest
 
 from postproc.api import translate
 from postproc.errors import Diagnostics, ErrorList
-from postproc.toolpath import toolpath_events
+from postproc.simulate.toolpath import toolpath_events
 from tests.support.rs274 import RS274Error, available, run_rs274
 from tests.test_cutter_compensation_rs274 import BATCH, PROGRAMS, generate, rs274_path
 

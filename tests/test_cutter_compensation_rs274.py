@@ -30,9 +30,9 @@ from typing import Any, Iterator
 import pytest
 
 from postproc.errors import Diagnostics
-from postproc.setup import MachineSetup
-from postproc.setup_machine import ToolData
-from postproc.toolpath import toolpath_events
+from postproc.setup.machine_setup import MachineSetup
+from postproc.setup.machine import ToolData
+from postproc.simulate.toolpath import toolpath_events
 from tests.support.rs274 import RS274Error, available, run_rs274
 
 pytestmark = pytest.mark.skipif(not available(), reason="the LinuxCNC interpreter rs274 is not installed")

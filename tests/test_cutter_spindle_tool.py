@@ -17,10 +17,10 @@ import pytest
 
 from postproc.api import translate
 from postproc.errors import ErrorList
-from postproc.setup import MachineSetup
-from postproc.setup_groups import MachineSettings
-from postproc.setup_machine import ToolData
-from postproc.toolpath import toolpath_events
+from postproc.setup.machine_setup import MachineSetup
+from postproc.setup.groups import MachineSettings
+from postproc.setup.machine import ToolData
+from postproc.simulate.toolpath import toolpath_events
 from tests.support.rs274 import available, canonical_moves, run_rs274
 
 BODY = "G41 G1 X10 Y0 F100\nG1 X20\nG40 G1 X30 Y-5\nM2\n"

@@ -13,7 +13,7 @@ import pytest
 from postproc.api import translate
 from postproc.cycles import expansion
 from postproc.errors import ErrorList
-from postproc.setup import Limits, MachineSetup
+from postproc.setup.machine_setup import Limits, MachineSetup
 
 
 def _errors(cycle_line: str, *, source: str = "fanuc", target: str = "grbl",

@@ -16,7 +16,7 @@ from postproc.cycle_words import CycleWords
 from postproc.cycles import CannedCycleResolveSyntax
 from postproc.errors import Diagnostics, ErrorLevel, PostprocError
 from postproc.ir import Block
-from postproc.setup import InputSettings, MachineSetup
+from postproc.setup.machine_setup import InputSettings, MachineSetup
 from postproc.syntax import Pipeline, Syntax
 from postproc.syntaxes.modal_state import ModalStateSyntax
 

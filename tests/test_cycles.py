@@ -10,8 +10,8 @@ from lxml import etree
 
 from postproc.api import read_blocks, read_program
 from postproc.cycles import (
-    XML_CLASSES, BackBoringSyntax, BoringSyntax, CannedCycle, CannedCycleResolveSyntax, DrillingSyntax,
-    FineBoringSyntax, ManualBoringSyntax, PeckDrillingSyntax, TappingSyntax,
+    XML_CLASSES, BackBoringExpansion, BoringExpansion, CannedCycle, CannedCycleResolveSyntax, DrillingExpansion,
+    FineBoringExpansion, ManualBoringExpansion, PeckDrillingExpansion, TappingExpansion,
 )
 from postproc.cycles.expansion import ToolPath
 from postproc.errors import Diagnostics, ErrorList, ErrorLevel
@@ -19,7 +19,7 @@ from postproc.ir import (
     Block, CompoundMotion, Dwell, Feed, Motion, ProgramControl, Section, SpindleControl, SpindleOrientation,
 )
 from postproc.plugins import default_registry
-from postproc.setup import CycleSettings, InputSettings, MachineSetup
+from postproc.setup.machine_setup import CycleSettings, InputSettings, MachineSetup
 from postproc.xmlio import DEFAULT, parse_xml_bytes, to_bytes
 
 HEAD = "G21 G17 G90 G54\nS1000 M03\nG00 X0. Y0. Z50.\n"
@@ -97,11 +97,11 @@ def test_seed_back_boring_from_a_resolved_section() -> None:
                         shift={"X": 1.0}, words={"X": 50.0, "Y": 30.0, "Z": -10.0, "R": 2.0, "Q": 1.0})
     block = Block(1, "G87 G98 X50. Y30. Z-10. R2. Q1. F600.")
     block.add(cycle)
-    BackBoringSyntax().build(block, None)  # type: ignore[arg-type]
+    BackBoringExpansion().build(block, None)  # type: ignore[arg-type]
     compound = block.sections["CompoundMotion"]
     assert compound == CompoundMotion("back_bore", SEED_ITEMS)
     assert len(compound.items) == 11
-    assert BackBoringSyntax().expand(cycle)[1] == {"X": 50.0, "Y": 30.0, "Z": 0.0}
+    assert BackBoringExpansion().expand(cycle)[1] == {"X": 50.0, "Y": 30.0, "Z": 0.0}
 
 
 def test_seed_back_boring_from_a_program() -> None:
@@ -237,8 +237,8 @@ def test_manual_boring_program_stop() -> None:
 
 
 def test_every_kind_has_exactly_one_family() -> None:
-    families = [DrillingSyntax, PeckDrillingSyntax, TappingSyntax, BoringSyntax, FineBoringSyntax,
-                BackBoringSyntax, ManualBoringSyntax]
+    families = [DrillingExpansion, PeckDrillingExpansion, TappingExpansion, BoringExpansion, FineBoringExpansion,
+                BackBoringExpansion, ManualBoringExpansion]
     kinds = [k for f in families for k in f.KINDS]
     assert len(kinds) == len(set(kinds)) == 12
 
@@ -396,9 +396,9 @@ def full_section() -> CannedCycle:
 @pytest.mark.parametrize("node", [
     full_section(), CannedCycle("drill", semantics="fanuc"), CannedCycle("fine_bore", semantics="rs274", shift={}),
     CannedCycleResolveSyntax("fanuc"), CannedCycleResolveSyntax("rs274"),
-    CannedCycleResolveSyntax("fanuc", [BackBoringSyntax()]),
-    DrillingSyntax(), PeckDrillingSyntax(), TappingSyntax(), BoringSyntax(), FineBoringSyntax(),
-    BackBoringSyntax(), ManualBoringSyntax(),
+    CannedCycleResolveSyntax("fanuc", [BackBoringExpansion()]),
+    DrillingExpansion(), PeckDrillingExpansion(), TappingExpansion(), BoringExpansion(), FineBoringExpansion(),
+    BackBoringExpansion(), ManualBoringExpansion(),
 ], ids=repr)
 def test_xml_round_trip(node: Any) -> None:
     default_registry()

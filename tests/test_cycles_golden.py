@@ -14,7 +14,7 @@ from postproc.api import read_program
 from postproc.errors import ErrorList
 from postproc.ir import Block, Dwell, Motion, ProgramControl, SpindleControl, SpindleOrientation
 from postproc.plugins import default_registry
-from postproc.setup import CycleSettings, MachineSetup
+from postproc.setup.machine_setup import CycleSettings, MachineSetup
 
 GOLDEN = Path(__file__).resolve().parent / "golden" / "fanuc"
 CASES = sorted(p.stem for p in (GOLDEN / "cycles").glob("*.nc"))

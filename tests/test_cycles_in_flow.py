@@ -15,8 +15,8 @@ import pytest
 
 from postproc.api import translate
 from postproc.errors import ErrorList
-from postproc.setup import MachineSetup
-from postproc.toolpath import toolpath_events
+from postproc.setup.machine_setup import MachineSetup
+from postproc.simulate.toolpath import toolpath_events
 from tests.support.rs274 import available, canonical_moves, run_rs274
 
 ROOT = Path(__file__).resolve().parents[1]

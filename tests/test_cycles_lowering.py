@@ -15,10 +15,10 @@ from postproc.api import read_blocks, translate
 from postproc.cycles.lowering import expand_canned_cycles
 from postproc.dialect import Dialect
 from postproc.errors import Diagnostics, ErrorLevel
-from postproc.lower import TRANSFORMS, lower_for
+from postproc.lowering.lower import TRANSFORMS, lower_for
 from postproc.plugins import default_registry
 from postproc.rs274.codes import CodeTable
-from postproc.setup import CycleSettings, MachineSetup
+from postproc.setup.machine_setup import CycleSettings, MachineSetup
 
 GOLDEN = Path(__file__).resolve().parent / "golden" / "fanuc" / "cycles"
 HEAD = "G21 G17 G90 G54\nS1000 M03\nG00 X0. Y0. Z50.\n"

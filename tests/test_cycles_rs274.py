@@ -16,7 +16,7 @@ from postproc.cycles import CannedCycleResolveSyntax
 from postproc.errors import Diagnostics, ErrorLevel, PostprocError
 from postproc.ir import Block, Dwell, Motion, ProgramControl, Section, SpindleControl, SpindleOrientation
 from postproc.plugins import default_registry
-from postproc.setup import CycleSettings, InputSettings, MachineSetup
+from postproc.setup.machine_setup import CycleSettings, InputSettings, MachineSetup
 from postproc.context import Context
 from postproc.syntax import Pipeline
 from postproc.syntaxes.modal_state import ModalStateSyntax

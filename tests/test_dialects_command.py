@@ -6,7 +6,7 @@ import json
 from typing import ClassVar
 
 from postproc.dialect import Dialect
-from postproc.dialect_table import dialect_info, render_table
+from postproc.commands.dialect_table import dialect_info, render_table
 from postproc.plugins import default_registry
 
 REGISTRY = default_registry()

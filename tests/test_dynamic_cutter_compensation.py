@@ -12,7 +12,7 @@ import pytest
 
 from postproc.api import translate
 from postproc.errors import ErrorList
-from postproc.toolpath import toolpath_events
+from postproc.simulate.toolpath import toolpath_events
 from tests.support.rs274 import RS274Error, available, canonical_moves, run_rs274
 
 ROOT = Path(__file__).resolve().parents[1]

@@ -12,9 +12,9 @@ import itertools
 import pytest
 
 from postproc.api import translate
-from postproc.setup import CycleSettings, MachineSetup
-from postproc.toolpath import toolpath_events
-from postproc.verify import verify_lines
+from postproc.setup.machine_setup import CycleSettings, MachineSetup
+from postproc.simulate.toolpath import toolpath_events
+from postproc.simulate.verify import verify_lines
 
 SPINDLE = ("", "M3", "M4", "M5")
 COOLANT = ("", "M8", "M9")

@@ -19,9 +19,9 @@ from postproc.api import translate
 from postproc.errors import Diagnostics, ErrorList
 from postproc.expr import Binary, Expr, Func, Num, Unary, Var
 from postproc.isg_family.expressions import BINARY, FUNCTIONS, P_BASE, spell_expr, spell_word_value
-from postproc.setup import CycleSettings, MachineSetup
-from postproc.toolpath import toolpath_events
-from postproc.verify import verify_lines
+from postproc.setup.machine_setup import CycleSettings, MachineSetup
+from postproc.simulate.toolpath import toolpath_events
+from postproc.simulate.verify import verify_lines
 
 from dialects.fagor import Fagor
 from dialects.fagor.reader import FagorReader

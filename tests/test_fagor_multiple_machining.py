@@ -16,13 +16,13 @@ import pytest
 
 from dialects.fagor.multiple_machining import pattern_words
 from postproc.api import read_blocks, translate
-from postproc.bounded import run_bounded
+from postproc.output.bounded import run_bounded
 from postproc.errors import Diagnostics, PostprocError
 from postproc.ir import Block, Feed, Motion
 from postproc.plugins import default_registry
-from postproc.setup import CycleSettings, MachineSetup
-from postproc.toolpath import toolpath_events
-from postproc.verify import verify_lines
+from postproc.setup.machine_setup import CycleSettings, MachineSetup
+from postproc.simulate.toolpath import toolpath_events
+from postproc.simulate.verify import verify_lines
 
 PRELUDE = ["%1000", "; multiple machining after a drilling cycle", "G71 G90 G17", "G00 X0 Y0 Z50", "M03 S1000",
            "; the pattern's point 1: the cycle drills X20 Y0", "; (reference plane Z2, depth I-5, back to Z50)",
@@ -308,7 +308,7 @@ def test_fagor_to_fagor_keeps_the_pattern_byte_for_byte(text):
 def test_a_pattern_block_generated_from_its_section_reads_back_to_the_same_pattern():
     # a pattern block marked rewritten (as a transformation would) is written from its HolePattern
     # section; read back, it is the same pattern
-    from postproc.lower import lower_for
+    from postproc.lowering.lower import lower_for
 
     program = [*PRELUDE, "N90 G163 X-20 Y0 I-60 C2 F500 P3", "G80", "M30"]
     fagor = default_registry().dialect("fagor")

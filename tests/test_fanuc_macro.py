@@ -20,11 +20,11 @@ from postproc.control import Assign, Call, EndWhile, Goto, ModalCall, ModalCallC
 from postproc.errors import Diagnostics, ErrorLevel, ErrorList, UnsupportedError
 from postproc.expr import Binary, Expr, Num, Unary, Var
 from postproc.plugins import default_registry
-from postproc.program_xml import dump_program, load_program
+from postproc.commands.program_xml import dump_program, load_program
 from postproc.rs274.expressions import FANUC_SPELLING, spell_word_value
 from postproc.rs274.lexer import lex_block
-from postproc.setup import MachineSetup
-from postproc.toolpath import toolpath_events
+from postproc.setup.machine_setup import MachineSetup
+from postproc.simulate.toolpath import toolpath_events
 from tests.test_rs274_expressions import _has_round, trees
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -245,7 +245,7 @@ def test_generated_word_expressions_round_trip(tree: Expr) -> None:
 @pytest.mark.parametrize("on_unsupported", ["error", "warn"])
 def test_renumbering_a_program_that_jumps_is_refused(on_unsupported: str) -> None:
     """The GOTO would name a block number that no longer exists: no output rather than a broken loop."""
-    from postproc.setup import MachineSetup, OutputSettings
+    from postproc.setup.machine_setup import MachineSetup, OutputSettings
     program = HEAD + "#1=0\nN10 #1=#1+1\nIF [#1 LT 3] GOTO 10\nM30\n"
     setup = MachineSetup(output=OutputSettings(renumber_start=100))
     with pytest.raises(ErrorList, match=r"t\.nc:4:1: error: --renumber cannot renumber a program that jumps"):

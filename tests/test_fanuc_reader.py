@@ -24,8 +24,8 @@ from postproc.ir import (
     ProgramStart, Sequence, SpindleControl, SpindleSpeed, TapeMark, ToolChange, ToolSelect, Units,
 )
 from postproc.plugins import default_registry
-from postproc.program_xml import dump_program, load_program
-from postproc.setup import InputSettings, MachineSetup, OutputSettings
+from postproc.commands.program_xml import dump_program, load_program
+from postproc.setup.machine_setup import InputSettings, MachineSetup, OutputSettings
 
 ROOT = Path(__file__).resolve().parents[1]
 ROUNDTRIP = ROOT / "tests/golden/fanuc/roundtrip"

@@ -13,9 +13,9 @@ import pytest
 
 from postproc.api import read_program, translate
 from postproc.errors import Diagnostics, ErrorList, ErrorLevel
-from postproc.setup import ControllerSettings, InputSettings, MachineSettings, MachineSetup
-from postproc.toolpath import toolpath_events
-from postproc.verify import verify_lines
+from postproc.setup.machine_setup import ControllerSettings, InputSettings, MachineSettings, MachineSetup
+from postproc.simulate.toolpath import toolpath_events
+from postproc.simulate.verify import verify_lines
 from tests.support import rs274
 
 HAAS = MachineSetup(controller=ControllerSettings(variant="haas"))

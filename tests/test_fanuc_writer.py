@@ -20,7 +20,7 @@ from postproc.ir import (
     Units, WorkOffset,
 )
 from postproc.plugins import default_registry
-from postproc.setup import InputSettings, MachineSetup, OutputSettings
+from postproc.setup.machine_setup import InputSettings, MachineSetup, OutputSettings
 
 ROOT = Path(__file__).resolve().parents[1]
 LATHE_EXAMPLES = {"gsk": ("gsk", "gsk_980tdc.xml"), "fanuc-lathe": ("fanuc", "fanuc_0i_tf.xml")}

@@ -15,7 +15,7 @@ import pytest
 
 from postproc.api import translate
 from postproc.plugins import default_registry
-from postproc.toolpath import toolpath_events
+from postproc.simulate.toolpath import toolpath_events
 from tests.support.rs274 import available, canonical_moves, run_rs274
 
 GRBL = "G21 G90 G0 X0. Y0. Z10.\nG1 X5. F100.\nG20 G1 X1. F10.\nG1 X2.\nG21 G1 X10. F200.\nM30\n"

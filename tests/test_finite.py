@@ -9,11 +9,11 @@ from pathlib import Path
 import pytest
 
 from postproc.errors import ConfigError, ErrorList, ProgramError
-from postproc.setup import load_setup
-from postproc.export import write_jsonl
+from postproc.setup.machine_setup import load_setup
+from postproc.commands.export import write_jsonl
 from postproc.geometry import MAX_ARC_POINTS, arc_points, centre_from_radius
-from postproc.toolpath import toolpath_events
-from postproc.verify import verify_lines
+from postproc.simulate.toolpath import toolpath_events
+from postproc.simulate.verify import verify_lines
 
 BIG = "1" + "0" * 29 + "."
 """1e200 written out: finite, but its square overflows."""

@@ -23,8 +23,8 @@ from hypothesis import strategies as st
 
 from postproc.api import translate
 from postproc.errors import ErrorList
-from postproc.toolpath import toolpath_events
-from postproc.verify import verify_lines
+from postproc.simulate.toolpath import toolpath_events
+from postproc.simulate.verify import verify_lines
 from tests.support.rs274 import available, canonical_moves, run_rs274
 
 TOLERANCE_MM = 5e-4

@@ -9,7 +9,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from postproc.setup import MachineSetup
+from postproc.setup.machine_setup import MachineSetup
 from tests.support.fuzzing import (PAIRS, READERS, check_toolpath, check_translation, known_defect, programs,
                                    setups)
 

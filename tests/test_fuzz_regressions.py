@@ -9,7 +9,7 @@ import pytest
 
 from postproc.api import translate
 from postproc.errors import ErrorList
-from postproc.verify import verify_lines
+from postproc.simulate.verify import verify_lines
 
 HEAD = "G21 G90 G0 X0. Y0. Z10.\n"
 

@@ -15,8 +15,8 @@ from postproc.api import read_program, translate
 from postproc.errors import Diagnostics, ErrorList, ErrorLevel
 from postproc.ir import ToolChange
 from postproc.plugins import default_registry
-from postproc.setup import CycleSettings, MachineSetup
-from postproc.toolpath import toolpath_events
+from postproc.setup.machine_setup import CycleSettings, MachineSetup
+from postproc.simulate.toolpath import toolpath_events
 from postproc_grbl import Grbl
 
 HEAD = "G21 G00 X0. Y0. Z10.\n"

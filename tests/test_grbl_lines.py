@@ -13,8 +13,8 @@ from hypothesis import given, settings, strategies as st
 
 from postproc.api import translate
 from postproc.errors import ErrorList
-from postproc.setup import load_setup
-from postproc.verify import verify_lines
+from postproc.setup.machine_setup import load_setup
+from postproc.simulate.verify import verify_lines
 from postproc_grbl.text import KEPT, kept, shortened
 
 from tests.support.grbl_rules import GrblError, _protocol, grbl_problems

@@ -16,8 +16,8 @@ from postproc.cycles.lowering import expand_canned_cycles
 from postproc.errors import Diagnostics, ErrorLevel
 from postproc.ir import Block
 from postproc.plugins import default_registry
-from postproc.setup import MachineSetup
-from postproc.verify import verify_lines
+from postproc.setup.machine_setup import MachineSetup
+from postproc.simulate.verify import verify_lines
 from postproc.rs274.order_of_execution import stops_after_motion
 from postproc_grbl import Grbl, resolve_cutter_compensation, write_tool_lengths
 from postproc.rs274.lean_controller import (

@@ -11,10 +11,10 @@ import pytest
 
 from postproc.api import translate
 from postproc.errors import Diagnostics, ErrorLevel, ErrorList
-from postproc.setup import MachineSetup, MachineSettings
-from postproc.setup_machine import ToolData
-from postproc.toolpath import toolpath_events
-from postproc.verify import verify_lines
+from postproc.setup.machine_setup import MachineSetup, MachineSettings
+from postproc.setup.machine import ToolData
+from postproc.simulate.toolpath import toolpath_events
+from postproc.simulate.verify import verify_lines
 
 
 def _setup(lengths: dict[int, float], units: str = "mm", touched_off: bool = False) -> MachineSetup:

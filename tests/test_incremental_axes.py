@@ -11,9 +11,9 @@ from postproc.context import Context
 from postproc.errors import Diagnostics, ErrorLevel
 from postproc.ir import Block, Feed, Motion
 from postproc.plugins import default_registry
-from postproc.setup import MachineSetup
+from postproc.setup.machine_setup import MachineSetup
 from postproc.syntaxes.modal_state import ModalStateSyntax
-from postproc.toolpath import simulate
+from postproc.simulate.toolpath import simulate
 
 
 def _context(increments: dict[str, str]) -> Context:

@@ -18,10 +18,10 @@ from postproc.control import (
 )
 from postproc.errors import Diagnostics, ErrorList, ErrorLevel
 from postproc.expr import Binary, Expr, Func, Num, Var
-from postproc.interp import ProgramSyntax
+from postproc.syntaxes.program import ProgramSyntax
 from postproc.rs274.variables import MacroBVariables, NgcVariables
 from postproc.ir import Block, ProgramStart, Sequence
-from postproc.setup import Limits, MachineSetup
+from postproc.setup.machine_setup import Limits, MachineSetup
 from postproc.source_map import ExecutedBlock
 from postproc.context import Context
 from postproc.plugins import default_registry
@@ -521,7 +521,7 @@ LIMITS_XML = (b"<?xml version='1.0' encoding='UTF-8'?>\n<MachineSetup name=\"m\"
 
 
 def test_limits_and_library_load_and_dump_identically(tmp_path):
-    from postproc.setup import load_setup
+    from postproc.setup.machine_setup import load_setup
     from postproc.xmlio import to_bytes
     path = tmp_path / "m.xml"
     path.write_bytes(LIMITS_XML)
@@ -538,7 +538,7 @@ def test_limits_and_library_load_and_dump_identically(tmp_path):
 ])
 def test_bad_limits_are_located(tmp_path, body, message, line):
     from postproc.errors import ConfigError
-    from postproc.setup import load_setup
+    from postproc.setup.machine_setup import load_setup
     path = tmp_path / "m.xml"
     path.write_text(f'<MachineSetup name="m">\n{body}\n</MachineSetup>\n')
     with pytest.raises(ConfigError) as info:

@@ -18,8 +18,8 @@ from postproc.api import translate
 from postproc.control import EndWhile, While
 from postproc.errors import Diagnostics, ErrorList
 from postproc.expr import Num
-from postproc.setup import Limits, MachineSetup
-from postproc.toolpath import toolpath_events
+from postproc.setup.machine_setup import Limits, MachineSetup
+from postproc.simulate.toolpath import toolpath_events
 from tests.test_interp import P, error_of, run, v, words
 
 

@@ -12,8 +12,8 @@ import pytest
 
 from postproc.api import translate
 from postproc.errors import ErrorList
-from postproc.toolpath import toolpath_events
-from postproc.verify import Report, verify_lines
+from postproc.simulate.toolpath import toolpath_events
+from postproc.simulate.verify import Report, verify_lines
 from tests.support.rs274 import available, canonical_moves, run_rs274
 
 PROGRAM = """G21 G90 G17

@@ -25,8 +25,11 @@ from postproc.ir import (
     register_sections,
 )
 from postproc.plugins import default_registry
-from postproc.program_xml import load_program
-from postproc.setup import load_setup, LatheCycleSettings, InputSettings, MachineSettings, MachineSetup, OutputSettings, CycleSettings, Templates
+from postproc.commands.program_xml import load_program
+from postproc.setup.machine_setup import (
+    load_setup, LatheCycleSettings, InputSettings, MachineSettings, MachineSetup, OutputSettings, CycleSettings,
+    Templates,
+)
 from postproc.xmlio import XFactory, parse_xml_bytes, to_bytes
 from tests.support.control_samples import CONTROL_SAMPLES
 
@@ -93,7 +96,7 @@ SAMPLES: dict[str, list[tuple[Builder, str]]] = {
          '<FrameChange kind="origin" rules="rs274" family="linuxcnc" text="G92 X#1">\n'
          '  <Words>\n    <Value of="X">\n      <Var>\n        <Num value="1.0"/>\n      </Var>\n    </Value>\n  </Words>\n</FrameChange>')],
     "Generated": [
-        (lambda c: __import__("postproc.sequences", fromlist=["GeneratedText"]).GeneratedText("(LOAD T1)", "tool_change"),
+        (lambda c: __import__("postproc.lowering.sequences", fromlist=["GeneratedText"]).GeneratedText("(LOAD T1)", "tool_change"),
          '<Generated text="(LOAD T1)" template="tool_change"/>')],
     "MachineFunction": [
         (lambda c: MachineFunction("fanuc", "M88", "M88", "coolant-on", "through-spindle coolant on"),

@@ -14,9 +14,9 @@ import pytest
 
 from postproc.api import read_program, translate
 from postproc.errors import Diagnostics, ErrorList
-from postproc.setup import Limits, MachineSetup
-from postproc.toolpath import toolpath_events
-from postproc.verify import verify_lines
+from postproc.setup.machine_setup import Limits, MachineSetup
+from postproc.simulate.toolpath import toolpath_events
+from postproc.simulate.verify import verify_lines
 
 ROOT = Path(__file__).resolve().parents[1]
 EXAMPLES = sorted((ROOT / "examples" / "isg").glob("*.nc")) + sorted(
@@ -90,7 +90,7 @@ def test_isg_structure_is_read_into_neutral_sections() -> None:
 
 
 def test_a_number_without_a_point_is_millimetres_whatever_the_set_up_says() -> None:
-    from postproc.setup import InputSettings
+    from postproc.setup.machine_setup import InputSettings
     setup = MachineSetup(input=InputSettings(decimal_point="least-increment"))
     moves = _moves("G71 G90 G00 X10 Y2.5 Z-3\n", "isg", setup)
     assert (moves[0]["x"], moves[0]["y"], moves[0]["z"]) == (10, 2.5, -3)
@@ -352,7 +352,7 @@ def test_a_local_subroutine_becomes_a_numbered_fanuc_subprogram_after_the_main_p
 # -- implicit subroutine calls G80-G89 --------------------------------------------------------------------
 
 def test_an_implicit_call_runs_the_file_the_set_up_names(tmp_path: Path) -> None:
-    from postproc.setup import load_setup
+    from postproc.setup.machine_setup import load_setup
     (tmp_path / "lib").mkdir()
     (tmp_path / "lib" / "drill_cycle.nc").write_text("%drill_cycle.nc\nG00 Z2\nG01 Z-5 F100\nG00 Z10\nM17\n")
     (tmp_path / "m.xml").write_text('<MachineSetup name="isg" dialect="isg"><Library path="lib"/>'
@@ -378,7 +378,7 @@ def test_an_implicit_call_runs_the_file_the_set_up_names(tmp_path: Path) -> None
 ])
 def test_code_call_set_up_errors(tmp_path: Path, element: str, message: str) -> None:
     from postproc.errors import ConfigError
-    from postproc.setup import load_setup
+    from postproc.setup.machine_setup import load_setup
     (tmp_path / "m.xml").write_text(f'<MachineSetup name="isg">{element}</MachineSetup>')
     with pytest.raises(ConfigError) as caught:
         load_setup(tmp_path / "m.xml")

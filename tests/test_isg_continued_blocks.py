@@ -15,7 +15,7 @@ import pytest
 
 from postproc.api import translate
 from postproc.errors import Diagnostics, ErrorList
-from postproc.toolpath import toolpath_events
+from postproc.simulate.toolpath import toolpath_events
 
 CONTINUED = "%1\nG71 G90 G00 X0 Y0 Z10\nP1=1\nG01 X10 F100 \\\nP5=P{p}+1\nG01 X[P5]\nM30\n"
 

@@ -10,7 +10,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from postproc.setup import Limits, MachineSetup
+from postproc.setup.machine_setup import Limits, MachineSetup
 from tests.support.fuzzing import WRITERS, check_toolpath, check_translation, known_defect
 
 LINES = [

@@ -17,8 +17,8 @@ from typing import Any
 import pytest
 
 from postproc.api import translate
-from postproc.toolpath import toolpath_events
-from postproc.verify import verify_lines
+from postproc.simulate.toolpath import toolpath_events
+from postproc.simulate.verify import verify_lines
 from tests.support.rs274 import available, canonical_moves, run_rs274
 
 ROOT = Path(__file__).resolve().parents[1]

@@ -16,9 +16,9 @@ from postproc.api import read_program, translate
 from postproc.errors import ErrorList
 from postproc.ir import Block
 from postproc.lathe_sections import LatheCycle
-from postproc.setup import InputSettings, LatheCycleSettings, MachineSettings, MachineSetup
-from postproc.toolpath import toolpath_events
-from postproc.verify import verify_lines
+from postproc.setup.machine_setup import InputSettings, LatheCycleSettings, MachineSettings, MachineSetup
+from postproc.simulate.toolpath import toolpath_events
+from postproc.simulate.verify import verify_lines
 
 LATHE = MachineSetup(input=InputSettings(machine_type="lathe"), machine=MachineSettings(axes="XZ"))
 MILL = MachineSetup()
@@ -427,7 +427,7 @@ def test_roughing_grooving_and_facing_expand_and_verify(target: str) -> None:
 
 
 def test_lathe_backplot_draws_the_zx_plane_in_radii(tmp_path: Any) -> None:
-    from postproc.export import export_toolpath
+    from postproc.commands.export import export_toolpath
     out = io.StringIO()
     export_toolpath(lines(SEED), out, file="in.nc", dialect="gsk", setup=LATHE, fmt="svg")
     svg = out.getvalue()

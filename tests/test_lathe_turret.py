@@ -15,9 +15,9 @@ import pytest
 
 from postproc.api import translate
 from postproc.errors import ErrorList
-from postproc.setup import InputSettings, MachineSetup
-from postproc.toolpath import toolpath_events
-from postproc.verify import verify_lines
+from postproc.setup.machine_setup import InputSettings, MachineSetup
+from postproc.simulate.toolpath import toolpath_events
+from postproc.simulate.verify import verify_lines
 from tests.support.rs274 import available, canonical_moves, run_rs274
 
 LATHE = MachineSetup(input=InputSettings(machine_type="lathe"))

@@ -10,8 +10,8 @@ import pytest
 
 from postproc.api import translate
 from postproc.errors import ErrorList
-from postproc.setup import InputSettings, MachineSettings, MachineSetup
-from postproc.toolpath import toolpath_events
+from postproc.setup.machine_setup import InputSettings, MachineSettings, MachineSetup
+from postproc.simulate.toolpath import toolpath_events
 
 LATHE = MachineSetup(input=InputSettings(machine_type="lathe"), machine=MachineSettings(axes="XZ"))
 MESSAGE = "a feed move at a zero feed rate (F0 is in force: program a feed rate above 0 first)"

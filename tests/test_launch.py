@@ -1,4 +1,4 @@
-"""The command's process (``postproc.launch``): the collector is off only while the modules load, runs
+"""The command's process (``postproc.commands.launch``): the collector is off only while the modules load, runs
 during the command, and what the imports and the command made is frozen; the exit status is main's."""
 
 from __future__ import annotations
@@ -10,7 +10,7 @@ from pathlib import Path
 
 import pytest
 
-from postproc import cli, launch
+from postproc.commands import cli, launch
 
 
 @pytest.fixture

@@ -14,7 +14,7 @@ import pytest
 
 from postproc.dialect import Dialect, Lazy, Reader
 from postproc.plugins import default_registry
-from postproc.setup import MachineSetup
+from postproc.setup.machine_setup import MachineSetup
 
 ROOT = Path(__file__).resolve().parents[1]
 SHIPPED = ("fanuc", "gsk", "isg", "fagor", "grbl", "linuxcnc", "mach3")
@@ -22,7 +22,7 @@ SHIPPED = ("fanuc", "gsk", "isg", "fagor", "grbl", "linuxcnc", "mach3")
 PACKAGE = {
     "__init__.py": '''
 from postproc.dialect import Dialect, Lazy, Reader
-from postproc.writer_base import Writer
+from postproc.output.writer_base import Writer
 
 class Toy(Dialect):
     NAME = "lazytoy"
@@ -91,7 +91,7 @@ def test_a_lazy_attribute_that_cannot_be_imported_says_so(toy_package: str) -> N
 
 @pytest.mark.parametrize("name", SHIPPED)
 def test_every_shipped_dialect_reads_and_writes_through_its_lazy_classes(name: str) -> None:
-    from postproc.writer_base import Writer
+    from postproc.output.writer_base import Writer
     dialect = default_registry().dialect(name)
     assert dialect.READER is not None and issubclass(dialect.READER, Reader)
     assert dialect.WRITER is not None and issubclass(dialect.WRITER, Writer)

@@ -10,7 +10,7 @@ import pytest
 
 from postproc.api import read_program, translate
 from postproc.errors import ConfigError, ErrorList
-from postproc.setup import MachineSetup, OutputSettings
+from postproc.setup.machine_setup import MachineSetup, OutputSettings
 
 PROGRAM = "%\nO0010 (TEST)\n(FIRST OP)\nN5 G21 G90 G17\nT1 M06\nG0 X1. Y2.\nN99 G1 Z-1. F100.\n/G0 Z5.\nM30\n%\n"
 
@@ -87,7 +87,7 @@ def test_a_line_too_long_is_a_located_error():
 
 
 def test_defaults_change_nothing_and_stay_off_the_hot_path():
-    from postproc.line_format import LineFormat
+    from postproc.output.line_format import LineFormat
     from postproc.errors import Diagnostics
     from postproc.plugins import default_registry
     fanuc = default_registry().dialect("fanuc")

@@ -1,4 +1,4 @@
-"""The quick test of a target's line rule (``LineRule.fits``, what ``postproc.line_format`` runs on every
+"""The quick test of a target's line rule (``LineRule.fits``, what ``postproc.output.line_format`` runs on every
 written text) is held to the rule itself (``LineRule.fit``, line by line): whatever text it passes, every
 line of it is one the rule keeps as it is, without a warning. It must also pass an expanded cycle's many
 short lines, so that those are not checked line by line."""
@@ -9,7 +9,7 @@ from hypothesis import given, settings, strategies as st
 from postproc_grbl.text import LINES as GRBL_LINES
 from postproc_linuxcnc.lines import LINES as LINUXCNC_LINES
 
-from postproc.line_format import LineRule
+from postproc.output.line_format import LineRule
 
 RULES: list[LineRule] = [GRBL_LINES, LINUXCNC_LINES]
 

@@ -13,8 +13,8 @@ import pytest
 from postproc.api import translate
 from postproc.errors import ErrorList
 from postproc.plugins import default_registry
-from postproc.setup import Limits, MachineSetup
-from postproc.toolpath import toolpath_events
+from postproc.setup.machine_setup import Limits, MachineSetup
+from postproc.simulate.toolpath import toolpath_events
 
 READABLE = sorted(n for n, c in default_registry().dialects.items() if c.READER is not None)
 
@@ -129,7 +129,7 @@ def _stream_errors(stream: io.TextIOBase) -> list[str]:
 
 
 def test_a_line_of_50_mb_is_counted_in_pieces_and_reading_goes_on():
-    from postproc.bounded import run_bounded
+    from postproc.output.bounded import run_bounded
 
     def errors() -> list[str]:
         return _stream_errors(_Endless("G21 G90\n", "X", 50_000_000, "\nG0 X1.2.3\nM30\n"))

@@ -17,9 +17,9 @@ from postproc.api import read_program, translate
 from postproc.errors import Diagnostics, ErrorList, ErrorLevel
 from postproc.ir import Block, Dwell, Motion, SpindleOrientation, ToolLengthOffset
 from postproc.plugins import default_registry
-from postproc.setup import CycleSettings, MachineSetup
+from postproc.setup.machine_setup import CycleSettings, MachineSetup
 from postproc.syntax import load_pipeline
-from postproc.toolpath import toolpath_events
+from postproc.simulate.toolpath import toolpath_events
 from postproc.xmlio import to_bytes
 import postproc_linuxcnc
 from postproc_linuxcnc import Linuxcnc

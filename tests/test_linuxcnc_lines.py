@@ -11,7 +11,7 @@ import pytest
 
 from postproc.api import translate
 from postproc.errors import Diagnostics, ErrorList
-from postproc.setup import load_setup
+from postproc.setup.machine_setup import load_setup
 from postproc_linuxcnc.lines import LINE_LENGTH
 
 from tests.support.linuxcnc_rules import available, linuxcnc_problems

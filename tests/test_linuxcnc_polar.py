@@ -13,7 +13,7 @@ import pytest
 
 from postproc.api import translate
 from postproc.errors import ErrorList
-from postproc.toolpath import toolpath_events
+from postproc.simulate.toolpath import toolpath_events
 from tests.support.rs274 import RS274Error, available, canonical_moves, run_rs274
 
 TOLERANCE_MM = 2e-4

@@ -20,9 +20,9 @@ from typing import Any
 import pytest
 
 from postproc.api import translate
-from postproc.setup import MachineSetup
-from postproc.setup_machine import ToolData
-from postproc.toolpath import toolpath_events
+from postproc.setup.machine_setup import MachineSetup
+from postproc.setup.machine import ToolData
+from postproc.simulate.toolpath import toolpath_events
 from tests.support import rs274
 
 TOLERANCE_MM = 3e-3

@@ -15,8 +15,8 @@ from typing import Any
 import pytest
 
 from postproc.api import translate
-from postproc.setup import CycleSettings, MachineSetup
-from postproc.toolpath import toolpath_events
+from postproc.setup.machine_setup import CycleSettings, MachineSetup
+from postproc.simulate.toolpath import toolpath_events
 from tests.support.rs274 import available, canonical_moves, run_rs274
 from tests.support.tools import with_tools
 

@@ -22,7 +22,7 @@ from postproc.errors import ErrorList
 from postproc.evaluation import MappingEnv, evaluate_number
 from postproc.expr import Arithmetic, Vacancy
 from postproc.rs274.expressions import LINUXCNC_SPELLING, parse_expr
-from postproc.toolpath import toolpath_events
+from postproc.simulate.toolpath import toolpath_events
 from tests.support.rs274 import available, run_rs274
 
 LCNC = MappingEnv({}, Vacancy.LINUXCNC, arithmetic=Arithmetic.X86_64_C)

@@ -13,9 +13,9 @@ import pytest
 from postproc.api import read_program, translate
 from postproc.errors import ConfigError, Diagnostics, ErrorList, ErrorLevel
 from postproc.ir import MachineFunction
-from postproc.setup import ControllerSettings, MachineCode, MachineSetup, load_setup
-from postproc.toolpath import toolpath_events
-from postproc.verify import verify_lines
+from postproc.setup.machine_setup import ControllerSettings, MachineCode, MachineSetup, load_setup
+from postproc.simulate.toolpath import toolpath_events
+from postproc.simulate.verify import verify_lines
 
 DECLARATION = "<?xml version='1.0' encoding='UTF-8'?>\n"
 HAAS = MachineSetup(controller=ControllerSettings(variant="haas"))

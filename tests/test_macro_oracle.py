@@ -17,7 +17,7 @@ from typing import Any
 import pytest
 
 from postproc.api import translate
-from postproc.toolpath import toolpath_events
+from postproc.simulate.toolpath import toolpath_events
 from tests.support.rs274 import available, canonical_moves, run_rs274
 
 ROOT = Path(__file__).resolve().parents[1]

@@ -14,7 +14,7 @@ import random
 
 import pytest
 
-from postproc.toolpath import toolpath_events
+from postproc.simulate.toolpath import toolpath_events
 from tests.support.rs274 import available, canonical_moves, run_rs274
 
 SEEDS = range(30)

@@ -30,8 +30,8 @@ from postproc.plugins import default_registry
 from postproc.rs274.expressions import LINUXCNC_SPELLING, spell_word_value
 from postproc.rs274.ngc_lexer import lex_block
 from postproc.rs274.oword import OwordParser
-from postproc.setup import Limits, MachineSetup
-from postproc.toolpath import toolpath_events
+from postproc.setup.machine_setup import Limits, MachineSetup
+from postproc.simulate.toolpath import toolpath_events
 
 ROOT = Path(__file__).resolve().parents[1]
 MACRO = sorted((ROOT / "tests" / "golden" / "macro").glob("*.ngc"))

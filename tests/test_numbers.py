@@ -13,8 +13,8 @@ from hypothesis import strategies as st
 from postproc.api import translate
 from postproc.errors import ErrorList, ProgramError
 from postproc.numbers import EXACT, EXACT_INCH, MAX_PLACES, decimal_value, format_decimal
-from postproc.setup import MachineSetup, OutputSettings
-from postproc.verify import verify_lines
+from postproc.setup.machine_setup import MachineSetup, OutputSettings
+from postproc.simulate.verify import verify_lines
 
 FINITE = st.floats(allow_nan=False, allow_infinity=False)
 PLACES = st.integers(min_value=0, max_value=7)

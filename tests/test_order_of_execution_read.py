@@ -12,9 +12,9 @@ from typing import Any
 import pytest
 
 from postproc.api import read_program, translate
-from postproc.program_xml import load_program
-from postproc.toolpath import toolpath_events
-from postproc.verify import verify_lines
+from postproc.commands.program_xml import load_program
+from postproc.simulate.toolpath import toolpath_events
+from postproc.simulate.verify import verify_lines
 from tests.support.rs274 import available, canonical_moves, run_rs274
 
 HEAD = "G21 G90 G0 X0 Y0 Z5\nS1000 M3 M8\n"

@@ -187,7 +187,7 @@ def test_a_full_device_is_a_usage_error(cli, tmp_path: Path) -> None:
 # -- the temporary file, made with os alone (tempfile costs a one-line translation ~3 ms) -----------
 
 def test_the_temporary_file_is_new_private_and_beside_the_target(tmp_path: Path) -> None:
-    from postproc.outfile import TEMPORARY_PREFIX, temporary_file
+    from postproc.output.outfile import TEMPORARY_PREFIX, temporary_file
     fd, name = temporary_file(str(tmp_path))
     os.close(fd)
     assert os.path.dirname(name) == str(tmp_path) and os.path.basename(name).startswith(TEMPORARY_PREFIX)
@@ -199,7 +199,7 @@ def test_the_temporary_file_is_new_private_and_beside_the_target(tmp_path: Path)
 
 def test_a_taken_name_is_drawn_again_and_left_alone(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     """A file or a symlink already under the drawn name is never opened (O_EXCL): another name is drawn."""
-    from postproc import outfile
+    from postproc.output import outfile
     draws = iter([b"\0" * 8, b"\0" * 8, b"\1" * 8])
     monkeypatch.setattr(outfile.os, "urandom", lambda n: next(draws))
     taken = tmp_path / (outfile.TEMPORARY_PREFIX + "00" * 8)
@@ -213,7 +213,7 @@ def test_a_taken_name_is_drawn_again_and_left_alone(tmp_path: Path, monkeypatch:
 
 
 def test_a_folder_that_cannot_be_written_is_an_error(tmp_path: Path) -> None:
-    from postproc.outfile import temporary_file
+    from postproc.output.outfile import temporary_file
     with pytest.raises(FileNotFoundError):
         temporary_file(str(tmp_path / "missing"))
 
@@ -221,7 +221,7 @@ def test_a_folder_that_cannot_be_written_is_an_error(tmp_path: Path) -> None:
 def test_without_a_folder_the_first_usable_temporary_folder_is_used(tmp_path: Path,
                                                                      monkeypatch: pytest.MonkeyPatch) -> None:
     """As ``tempfile.gettempdir``: $TMPDIR, $TEMP, $TMP in that order, skipping one that is not usable."""
-    from postproc.outfile import temporary_file
+    from postproc.output.outfile import temporary_file
     (tmp_path / "temp").mkdir()
     monkeypatch.setenv("TMPDIR", str(tmp_path / "missing"))
     monkeypatch.setenv("TEMP", str(tmp_path / "temp"))

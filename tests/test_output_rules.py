@@ -234,7 +234,7 @@ def test_every_translation_to_grbl_is_checked_and_a_refused_one_is_reported() ->
     before = output_rules.checked["grbl"]
     _translate(f"G21 G0 X0 Y0 Z10.\nG01 X5. F100. ({uuid.uuid4().hex.upper()})\n", "fanuc", "grbl")  # never seen
     assert output_rules.checked["grbl"] == before + 1 and output_rules.take_violations() == []
-    from postproc.setup import MachineSetup
+    from postproc.setup.machine_setup import MachineSetup
     output_rules._check("grbl", "G80 G0 Z1.\n", MachineSetup())
     found = output_rules.take_violations()
     assert len(found) == 1 and "error:21" in found[0] and "G80 G0 Z1." in found[0]
@@ -245,7 +245,7 @@ def test_a_program_written_without_translate_is_checked_too() -> None:
     """The hook sits on the writers' ``write``: the conformance suite's generated programs (written from a
     neutral IR, no ``translate``) are held to the rules like translations."""
     from postproc.plugins import default_registry
-    from postproc.setup import MachineSetup
+    from postproc.setup.machine_setup import MachineSetup
     from postproc.testing.neutral import NeutralProgram, write_neutral
     before = output_rules.checked["grbl"]
     y = float(uuid.uuid4().int % 1000)  # a program never seen, so it is checked, not found in the cache

@@ -1,5 +1,5 @@
 """``--on-unsupported warn`` drops only what the target refuses (issue #26, item 4;
-``postproc.partial_block``): the rest of the block is written after a comment of the source line, what
+``postproc.output.partial_block``): the rest of the block is written after a comment of the source line, what
 cannot be written without the refused section goes with it and is named, and ``verify`` reports the loss."""
 
 from __future__ import annotations
@@ -10,7 +10,7 @@ import pytest
 
 from postproc.api import translate
 from postproc.errors import Diagnostics, ErrorList
-from postproc.verify import verify_lines
+from postproc.simulate.verify import verify_lines
 from tests.support.tools import with_tools
 
 START = "G21 G90 G0 X0 Y0 Z50.\nS1000 M03\n"

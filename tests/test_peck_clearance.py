@@ -16,9 +16,9 @@ import io
 import pytest
 
 from postproc.api import translate
-from postproc.setup import CycleSettings, MachineSetup
-from postproc.toolpath import toolpath_events
-from postproc.verify import verify_lines
+from postproc.setup.machine_setup import CycleSettings, MachineSetup
+from postproc.simulate.toolpath import toolpath_events
+from postproc.simulate.verify import verify_lines
 from tests.support.rs274 import available, canonical_moves, motions, run_rs274
 
 PECKS = """G21 G17 G90 G94

@@ -22,7 +22,7 @@ from postproc.errors import ErrorList
 from postproc.ir import Block
 from postproc.plugins import default_registry
 from postproc.rs274.block_syntax import WordBlockSyntax
-from postproc.setup import MachineSetup
+from postproc.setup.machine_setup import MachineSetup
 from postproc.syntax import Pipeline
 
 READINGS = (("fanuc", "mill"), ("fanuc", "lathe"), ("gsk", "lathe"), ("isg", "mill"), ("fagor", "mill"))

@@ -23,7 +23,7 @@ from postproc.hookspecs import hookimpl
 from postproc.context import Context
 from postproc.cycles.lowering import expand_canned_cycles
 from postproc.ir import Block, Coolant, Section
-from postproc.lower import Lowering
+from postproc.lowering.lower import Lowering
 from postproc.plugins import PROJECT, Registry, default_registry, make_plugin_manager
 from postproc.rs274.codes import CodeTable
 from postproc.rs274.writer import WordWriter

@@ -1,4 +1,4 @@
-"""What follows a program's end is never live code in another dialect (``postproc.program_end``), and
+"""What follows a program's end is never live code in another dialect (``postproc.lowering.program_end``), and
 ``verify`` compares it: grbl is streamed to and runs whatever follows M30, while both simulators stop
 at the end."""
 
@@ -14,10 +14,10 @@ from postproc.context import Context
 from postproc.dialect import Dialect
 from postproc.errors import Diagnostics
 from postproc.ir import Block, Motion, ProgramControl, ProgramStart
-from postproc.program_end import comment_after_end
-from postproc.setup import MachineSetup
-from postproc.toolpath import toolpath_events
-from postproc.verify import verify_lines
+from postproc.lowering.program_end import comment_after_end
+from postproc.setup.machine_setup import MachineSetup
+from postproc.simulate.toolpath import toolpath_events
+from postproc.simulate.verify import verify_lines
 from tests.support.rs274 import available as rs274_available, run_rs274
 
 AFTER_M30 = "G21 G90\nG0 X1.\nM30\nG0 X100. (CRASH)\nG1 Y5. F10.\n"

@@ -1,5 +1,5 @@
 """``<Output tapeMarks programNumber>``: the program's ``%`` lines and main program number on output
-(``postproc.program_frame``). Outputs are read back by the target and verified against the source."""
+(``postproc.lowering.program_frame``). Outputs are read back by the target and verified against the source."""
 
 from __future__ import annotations
 
@@ -10,8 +10,8 @@ import pytest
 
 from postproc.api import translate
 from postproc.errors import ConfigError
-from postproc.setup import MachineSetup, OutputSettings
-from postproc.verify import verify_lines
+from postproc.setup.machine_setup import MachineSetup, OutputSettings
+from postproc.simulate.verify import verify_lines
 from tests.support.tools import with_tools
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -78,7 +78,7 @@ def test_a_program_number_out_of_range_is_refused(value):
 
 
 def test_the_attributes_load_and_dump(tmp_path):
-    from postproc.setup import load_setup
+    from postproc.setup.machine_setup import load_setup
     path = tmp_path / "m.xml"
     text = ('<?xml version=\'1.0\' encoding=\'UTF-8\'?>\n<MachineSetup name="m">\n'
             '  <Output tapeMarks="always" programNumber="1001"/>\n</MachineSetup>\n')

@@ -11,9 +11,9 @@ import pytest
 
 from postproc.api import translate
 from postproc.errors import Diagnostics
-from postproc.setup import MachineSetup, OutputSettings
-from postproc.toolpath import toolpath_events
-from postproc.verify import verify_lines
+from postproc.setup.machine_setup import MachineSetup, OutputSettings
+from postproc.simulate.toolpath import toolpath_events
+from postproc.simulate.verify import verify_lines
 
 BODY = "N10 G01 X10 Y10 F100\nN20 G00 Z5\nM30\n"
 STREAMING = "% TestProgram for streaming mode\n" + BODY

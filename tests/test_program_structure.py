@@ -20,8 +20,8 @@ import pytest
 
 from postproc.api import translate
 from postproc.errors import ErrorList
-from postproc.toolpath import toolpath_events
-from postproc.verify import verify_lines
+from postproc.simulate.toolpath import toolpath_events
+from postproc.simulate.verify import verify_lines
 
 TARGETS = ("fanuc", "linuxcnc", "isg", "grbl", "mach3")
 

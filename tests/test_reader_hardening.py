@@ -14,7 +14,7 @@ from typing import Any
 
 from postproc.api import translate
 from postproc.errors import Diagnostics, ErrorLevel
-from postproc.toolpath import toolpath_events
+from postproc.simulate.toolpath import toolpath_events
 
 
 def events(text: str, dialect: str) -> tuple[list[dict[str, Any]], list[str]]:

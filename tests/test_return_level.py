@@ -13,7 +13,7 @@ from typing import Any
 import pytest
 
 from postproc.api import translate
-from postproc.toolpath import toolpath_events
+from postproc.simulate.toolpath import toolpath_events
 from tests.support.rs274 import available, canonical_moves, run_rs274
 
 CYCLE = "G21 G90 G0 X0 Y0 Z10\nG81 X5 Y5 Z-2 R2 F100\nX10\nG80\nM2\n"

@@ -20,9 +20,9 @@ import pytest
 
 from postproc.api import translate
 from postproc.errors import Diagnostics, ErrorLevel, ErrorList
-from postproc.setup import MachineSetup
-from postproc.toolpath import toolpath_events
-from postproc.verify import verify_lines
+from postproc.setup.machine_setup import MachineSetup
+from postproc.simulate.toolpath import toolpath_events
+from postproc.simulate.verify import verify_lines
 from tests.support import rs274
 
 TOLERANCE_MM = 3e-3

@@ -10,9 +10,9 @@ import pytest
 
 from postproc.api import translate
 from postproc.errors import ConfigError
-from postproc.setup import load_setup
+from postproc.setup.machine_setup import load_setup
 from postproc.source_map import OutputMap
-from postproc.verify import verify_lines
+from postproc.simulate.verify import verify_lines
 from tests.support.tools import with_tools
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -174,7 +174,7 @@ def test_the_output_map_marks_template_lines_as_generated(tmp_path):
 def test_without_block_templates_or_tools_the_program_streams(tmp_path):
     from postproc.errors import Diagnostics
     from postproc.plugins import default_registry
-    from postproc.sequences import Sequences
+    from postproc.lowering.sequences import Sequences
     fanuc = default_registry().dialect("fanuc")
     setup = load_setup(_setup(tmp_path, "    <Header>(H {{ program }})</Header>\n"))
     blocks = iter([])

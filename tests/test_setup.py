@@ -8,7 +8,7 @@ from pathlib import Path
 import pytest
 
 from postproc.errors import ConfigError
-from postproc.setup import InputSettings, MachineSetup, load_setup
+from postproc.setup.machine_setup import InputSettings, MachineSetup, load_setup
 
 ROOT = Path(__file__).resolve().parents[1]
 SETUPS = sorted((ROOT / "examples/setups").glob("*.xml"))
@@ -304,7 +304,7 @@ def test_a_missing_pipeline_file_is_an_error(cli, tmp_path):
 def test_a_pipeline_that_is_no_regular_file_is_refused_without_opening_it(tmp_path, kind):
     # open() on a FIFO waits for a writer: the run would block before any message
     import os
-    from postproc.bounded import run_bounded
+    from postproc.output.bounded import run_bounded
     machine = tmp_path / "m.xml"
     machine.write_text(DECLARATION + '<MachineSetup name="x"\n  pipeline="in/pipe.xml"/>\n')
     (tmp_path / "in").mkdir()

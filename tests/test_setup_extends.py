@@ -11,8 +11,8 @@ import pytest
 from postproc.errors import ConfigError, ErrorList
 from postproc.hookspecs import hookimpl
 from postproc.plugins import Registry, make_plugin_manager
-from postproc.setup import MachineSetup, SetupGroup, load_setup, setting
-from postproc.setup_load import BASES
+from postproc.setup.machine_setup import MachineSetup, SetupGroup, load_setup, setting
+from postproc.setup.load import BASES
 from postproc.xmlio import XFactory
 
 DECLARATION = "<?xml version='1.0' encoding='UTF-8'?>\n"

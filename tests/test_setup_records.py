@@ -8,10 +8,10 @@ from typing import Any
 
 import pytest
 
-from postproc.setup import GROUPS, MachineCode, SetupGroup
-from postproc.setup_machine import CONTAINERS
-from postproc.setup_record import alias_of, values
-from postproc.setup_validate import Invalid, validate
+from postproc.setup.machine_setup import GROUPS, MachineCode, SetupGroup
+from postproc.setup.machine import CONTAINERS
+from postproc.setup.record import alias_of, values
+from postproc.setup.validate import Invalid, validate
 
 BOUNDED = [(cls, f) for cls in [*GROUPS, *CONTAINERS.values()] for f in dataclasses.fields(cls)
            if {"ge", "gt", "le"} & set(f.metadata)]
@@ -54,7 +54,7 @@ def test_a_machine_code_pattern_is_enforced() -> None:
 
 
 def test_values_writes_xml_names_and_leaves_defaults_out() -> None:
-    from postproc.setup import CycleSettings
+    from postproc.setup.machine_setup import CycleSettings
     cycles = CycleSettings(peck_retract=0.2, shift_direction="-Y")
     assert values(cycles, by_alias=True, exclude_defaults=True) == {"peckRetract": 0.2, "shiftDirection": "-Y"}
     assert list(values(cycles))[:2] == ["peck_retract", "peck_clearance"]

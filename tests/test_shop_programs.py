@@ -15,9 +15,9 @@ import pytest
 
 from postproc.api import translate
 from postproc.errors import Diagnostics, ErrorLevel
-from postproc.setup import MachineSetup, load_setup
-from postproc.toolpath import toolpath_events
-from postproc.verify import verify_lines
+from postproc.setup.machine_setup import MachineSetup, load_setup
+from postproc.simulate.toolpath import toolpath_events
+from postproc.simulate.verify import verify_lines
 from tests.support import rs274
 from tests.support.tools import REGISTERS, with_tools
 
@@ -257,7 +257,7 @@ for here."""
 
 @pytest.mark.parametrize("name", ISG_READY)
 def test_isg_translation_selects_d_and_returns_home_and_verifies(name: str) -> None:
-    from postproc.setup_machine import AxisTravel
+    from postproc.setup.machine import AxisTravel
     setup = with_tools(_machine(name), lengths={n: 100.0 + n for n in REGISTERS})
     setup.travel = {a: AxisTravel(name=a, home=-5.0 if a == "Z" else 0.0) for a in "XYZ"}  # type: ignore[arg-type]
     out, _ = _translate(name, "isg", setup)

@@ -11,8 +11,8 @@ import pytest
 
 from postproc.api import translate
 from postproc.errors import Diagnostics, ErrorList, ErrorLevel
-from postproc.setup import ControllerSettings, MachineSetup, load_setup
-from postproc.toolpath import toolpath_events
+from postproc.setup.machine_setup import ControllerSettings, MachineSetup, load_setup
+from postproc.simulate.toolpath import toolpath_events
 from tests.support.tools import with_tools
 
 HAAS = MachineSetup(controller=ControllerSettings(variant="haas"))

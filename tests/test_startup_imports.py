@@ -4,8 +4,8 @@ must not load is pydantic (set-up validation), jinja2 (templates), the batch and
 toolpath, verify and backplot code; with a set-up file (``--machine``) pydantic is loaded, by design.
 Nor the standard modules a plain run has no use for: decimal (an exponent's spelling), threading, json (the
 compiled build's manifest is plain lines: ``postproc.native.MANIFEST``), tempfile
-and shutil with what they import (the temporary output is made with ``os`` alone: ``postproc.outfile``;
-argparse's formatter is sized without shutil: ``postproc.cli._Formatter``); and a command that reads and
+and shutil with what they import (the temporary output is made with ``os`` alone: ``postproc.output.outfile``;
+argparse's formatter is sized without shutil: ``postproc.commands.cli._Formatter``); and a command that reads and
 writes no XML does not load lxml (``postproc.xmlio.lxml_etree``): neither ``postproc dialects`` nor a
 translation without a set-up file, whose dialects declare their reading pipelines in Python
 (``Dialect.python_pipeline``). Every installed dialect is registered, but a translation imports the
@@ -32,9 +32,9 @@ runpy.run_module("postproc", run_name="__main__")
 """Runs a command and writes the names of the modules loaded when it ends, one a line (it imports no
 module of its own that a run might not: json is one the runs must not load)."""
 NEVER_BY_DEFAULT = ("pydantic", "pydantic_core", "annotated_types", "jinja2", "dask", "distributed", "PIL",
-                    "postproc.setup_validate", "postproc.setup_load", "postproc.templates", "postproc.batch.command",
-                    "postproc.batch.local", "postproc.batch.cluster", "postproc.toolpath", "postproc.verify",
-                    "postproc.backplot", "postproc.canvas", "postproc.export")
+                    "postproc.setup.validate", "postproc.setup.load", "postproc.output.templates", "postproc.commands.batch.command",
+                    "postproc.commands.batch.local", "postproc.commands.batch.cluster", "postproc.simulate.toolpath", "postproc.simulate.verify",
+                    "postproc.drawing.backplot", "postproc.drawing.canvas", "postproc.commands.export")
 NOT_AT_START = ("decimal", "threading", "tempfile", "shutil", "random", "bz2", "lzma", "json")
 """Standard modules imported where they are used (a top-level import of one of them fails here)."""
 ONLY_FOR_XML = ("lxml",)
@@ -141,7 +141,7 @@ def test_listing_the_dialects_loads_no_xml_parser(tmp_path: Path) -> None:
     """Every module that reads or writes XML imports lxml on first use (each dialect's reader and writer
     are imported here: the table says whether it has them)."""
     modules = warm_modules_after(tmp_path, "dialects")
-    assert "postproc.xmlio" in modules and "postproc.outfile" in modules  # the probe saw them imported
+    assert "postproc.xmlio" in modules and "postproc.output.outfile" in modules  # the probe saw them imported
     assert [name for name in NOT_AT_START + ONLY_FOR_XML if loaded(modules, name)] == []
 
 
@@ -150,7 +150,7 @@ def test_a_set_up_file_is_validated_with_pydantic(tmp_path: Path, one_line: Path
     setup = ROOT / "examples/setups" / "fanuc_0i_mf_vmc.xml"
     modules = modules_after(tmp_path, "translate", str(one_line), "--from", "fanuc", "--to", "linuxcnc",
                             "--machine", str(setup))
-    assert loaded(modules, "pydantic") and "postproc.setup_validate" in modules
+    assert loaded(modules, "pydantic") and "postproc.setup.validate" in modules
 
 
 ALL_MODULES = """

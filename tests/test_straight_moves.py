@@ -26,8 +26,8 @@ from postproc.fast.straight import CopyLane, StraightLane
 from postproc.ir import Block
 from postproc.plugins import default_registry
 from postproc.rs274.writer import WordWriter
-from postproc.setup import MachineSetup
-from postproc.writer_base import Writer
+from postproc.setup.machine_setup import MachineSetup
+from postproc.output.writer_base import Writer
 
 SOURCES = ("fanuc", "linuxcnc")
 """Dialects that read the random programs (Fanuc's words; LinuxCNC reads most of them alike)."""

@@ -14,7 +14,7 @@ import re
 import pytest
 
 from postproc.api import translate
-from postproc.toolpath import toolpath_events
+from postproc.simulate.toolpath import toolpath_events
 from tests.support.rs274 import available, canonical_moves, run_rs274
 
 pytestmark = pytest.mark.skipif(not available(), reason="the LinuxCNC interpreter rs274 is not installed")

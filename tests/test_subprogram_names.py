@@ -17,8 +17,8 @@ import pytest
 from postproc.api import translate
 from postproc.errors import Diagnostics, UnsupportedError
 from postproc.subprogram_names import NameRule, SubprogramNames
-from postproc.toolpath import toolpath_events
-from postproc.verify import verify_lines
+from postproc.simulate.toolpath import toolpath_events
+from postproc.simulate.verify import verify_lines
 from tests.support.rs274 import available, canonical_moves, run_rs274
 
 FANUC = NameRule(numbers=range(1, 10000), spare=range(2000, 8000), names=False)

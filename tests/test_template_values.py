@@ -16,9 +16,9 @@ from postproc.api import translate
 from postproc.comments import CommentSyntax
 from postproc.errors import ConfigError, Location
 from postproc.plugins import default_registry
-from postproc.setup import load_setup
-from postproc.template_values import CLOSE, OPEN, mark, seal
-from postproc.verify import verify_lines
+from postproc.setup.machine_setup import load_setup
+from postproc.output.template_values import CLOSE, OPEN, mark, seal
+from postproc.simulate.verify import verify_lines
 
 from tests.support.rs274 import available as rs274_available, run_rs274
 

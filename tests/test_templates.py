@@ -9,10 +9,10 @@ from pathlib import Path
 import pytest
 
 from postproc.errors import ConfigError
-from postproc.setup import MachineSetup, Templates, load_setup
-from postproc.bounded import MEMORY_LIMIT, _mapped_bytes, run_bounded
-from postproc.sequences import check_templates, sample_variables
-from postproc.templates import MAX_OUTPUT, TIME_LIMIT, render
+from postproc.setup.machine_setup import MachineSetup, Templates, load_setup
+from postproc.output.bounded import MEMORY_LIMIT, _mapped_bytes, run_bounded
+from postproc.lowering.sequences import check_templates, sample_variables
+from postproc.output.templates import MAX_OUTPUT, TIME_LIMIT, render
 
 ROOT = Path(__file__).resolve().parents[1]
 DECLARATION = "<?xml version='1.0' encoding='UTF-8'?>\n"
@@ -97,7 +97,7 @@ def test_operators_that_exhaust_memory_are_refused(text, message):
 
 
 def test_a_runaway_loop_is_stopped(monkeypatch):
-    import postproc.templates as templates
+    import postproc.output.templates as templates
     monkeypatch.setattr(templates, "TIME_LIMIT", 0.2)
     loops = "{% for i in range(100000) %}{% for j in range(100000) %}{% endfor %}{% endfor %}"
     with pytest.raises(ConfigError, match="ran longer than 0.2 s"):
@@ -213,7 +213,7 @@ def test_sample_values_cover_every_variable_the_writer_passes() -> None:
     templates with the names of a tool change too."""
     from postproc.errors import Diagnostics
     from postproc.plugins import default_registry
-    from postproc.sequences import Sequences
+    from postproc.lowering.sequences import Sequences
     fanuc = default_registry().dialect("fanuc")
     sequences = Sequences(fanuc.context("o1.nc", MachineSetup(), Diagnostics()), "fanuc", fanuc)
     sequences.tools = []

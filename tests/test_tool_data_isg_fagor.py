@@ -15,10 +15,10 @@ import pytest
 
 from postproc.api import translate
 from postproc.errors import Diagnostics, ErrorList
-from postproc.setup import MachineSetup
-from postproc.setup_machine import AxisTravel, ToolData
-from postproc.toolpath import toolpath_events
-from postproc.verify import verify_lines
+from postproc.setup.machine_setup import MachineSetup
+from postproc.setup.machine import AxisTravel, ToolData
+from postproc.simulate.toolpath import toolpath_events
+from postproc.simulate.verify import verify_lines
 
 
 def _setup(home: float | None = 0.0) -> MachineSetup:

@@ -9,10 +9,10 @@ import pytest
 
 from postproc.errors import Diagnostics, ErrorList, ErrorLevel
 from postproc.ir import Block, CompoundMotion, Dwell, Feed, Motion, SpindleControl, SpindleOrientation
-from postproc.setup import InputSettings, MachineSettings, MachineSetup
+from postproc.setup.machine_setup import InputSettings, MachineSettings, MachineSetup
 from postproc.context import Context
 from postproc.geometry import arc_points, arc_sweep, centre_from_radius
-from postproc.toolpath import num, simulate, toolpath_events
+from postproc.simulate.toolpath import num, simulate, toolpath_events
 
 HEADER = {"toolpath": 1, "units": "mm", "dialect": "fanuc"}
 

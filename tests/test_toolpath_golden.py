@@ -9,8 +9,8 @@ from typing import Any
 
 import pytest
 
-from postproc.setup import CycleSettings, MachineSetup
-from postproc.toolpath import toolpath_events
+from postproc.setup.machine_setup import CycleSettings, MachineSetup
+from postproc.simulate.toolpath import toolpath_events
 from tests.support.tools import with_tools
 
 ROOT = Path(__file__).parent

@@ -11,8 +11,8 @@ import pytest
 from hypothesis import given, settings, strategies as st
 
 from postproc.errors import ProgramError
-from postproc.export import event_encoder
-from postproc.toolpath import num
+from postproc.commands.export import event_encoder
+from postproc.simulate.toolpath import num
 
 
 @settings(max_examples=500, deadline=None)

@@ -13,7 +13,7 @@ import pytest
 
 from postproc.api import translate
 from postproc.errors import Diagnostics, ErrorLevel
-from postproc.verify import verify_lines
+from postproc.simulate.verify import verify_lines
 from tests.support.tools import with_tools
 
 ROOT = Path(__file__).parent / "golden" / "translate"

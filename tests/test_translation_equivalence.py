@@ -12,8 +12,8 @@ from hypothesis import strategies as st
 
 from postproc.api import translate
 from postproc.plugins import default_registry
-from postproc.setup import CycleSettings, MachineSetup
-from postproc.verify import verify_lines
+from postproc.setup.machine_setup import CycleSettings, MachineSetup
+from postproc.simulate.verify import verify_lines
 
 REGISTRY = default_registry()
 READABLE_WRITERS = sorted(n for n, c in REGISTRY.dialects.items()

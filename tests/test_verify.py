@@ -10,8 +10,8 @@ import pytest
 
 from postproc.api import translate
 from postproc.errors import ErrorList
-from postproc.setup import MachineSettings, MachineSetup, OutputSettings
-from postproc.verify import Report, compare, normalise, verify_lines
+from postproc.setup.machine_setup import MachineSettings, MachineSetup, OutputSettings
+from postproc.simulate.verify import Report, compare, normalise, verify_lines
 from tests.support.tools import with_tools
 
 G90 = """%

@@ -8,7 +8,7 @@ import io
 from pathlib import Path
 from typing import Any
 
-from postproc.verify import verify_lines
+from postproc.simulate.verify import verify_lines
 
 FANUC = """G21 G90 G17
 G00 X0 Y0 S1000 M03

@@ -13,7 +13,7 @@ from postproc.errors import Diagnostics, ErrorLevel, UnsupportedError
 from postproc.ir import Block, Section
 from postproc.plugins import default_registry
 from postproc.rs274.writer import WordWriter
-from postproc.setup import MachineSetup
+from postproc.setup.machine_setup import MachineSetup
 
 PROGRAM = "G21 G90 G0 X0. Y0. Z10.\nG1 X5. F100.\nM30\n"
 

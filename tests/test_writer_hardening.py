@@ -12,8 +12,8 @@ import pytest
 
 from postproc.api import read_program, translate
 from postproc.errors import Diagnostics, ErrorLevel, ErrorList
-from postproc.setup import MachineSetup, OutputSettings
-from postproc.verify import verify_lines
+from postproc.setup.machine_setup import MachineSetup, OutputSettings
+from postproc.simulate.verify import verify_lines
 from tests.support.rs274 import available, run_rs274
 
 HEAD = "G21 G90 G00 X0. Y0. Z10.\n"
@@ -159,7 +159,7 @@ def test_machine_coordinates_without_a_move_are_not_written(target: str) -> None
 
 @pytest.mark.parametrize("dialect", ["linuxcnc", "grbl"])
 def test_the_ngc_readers_refuse_g53_alone_under_an_arc_mode(dialect: str) -> None:
-    from postproc.toolpath import toolpath_events
+    from postproc.simulate.toolpath import toolpath_events
     with pytest.raises(ErrorList) as info:
         list(toolpath_events(io.StringIO("G21 G2 X1. Y1. R1. F100.\nG53\n"), file="t.ngc", dialect=dialect))
     assert [str(e) for e in info.value.errors] == ["t.ngc:2:1: error: G53 needs G0 or G1 in force"]

@@ -7,12 +7,12 @@ from pathlib import Path
 
 import pytest
 
-import postproc.setup_load as setup_load
+import postproc.setup.load as setup_load
 from postproc import xmlio
 from postproc.api import read_program
 from postproc.errors import ConfigError
-from postproc.program_xml import dump_program, load_program
-from postproc.setup import load_setup
+from postproc.commands.program_xml import dump_program, load_program
+from postproc.setup.machine_setup import load_setup
 from postproc.xmlio import MAX_ATTRIBUTES, MAX_ELEMENTS, MAX_VALUE_CHARS, parse_xml_bytes, parse_xml_file
 
 

@@ -6,7 +6,7 @@ hundredths of a second, the 8055's)."""
 from __future__ import annotations
 
 from postproc.cycle_words import CycleWords
-from postproc.setup import MachineSetup
+from postproc.setup.machine_setup import MachineSetup
 
 NAMES = {"drill_dwell": "G81", "bore_dwell_feed": "G89"}
 """How messages name Fagor's cycles."""

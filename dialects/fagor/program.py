@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from typing import ClassVar
 
-from postproc.interp import ProgramSyntax
+from postproc.syntaxes.program import ProgramSyntax
 from postproc.interp.rules import SubprogramRules
 from postproc.interp.variables import VariablesFactory
 

@@ -8,13 +8,13 @@ from typing import Callable
 
 from postproc.comments import CommentSyntax
 from postproc.dialect import Dialect, Lazy, Reader
-from postproc.setup import MachineSetup
+from postproc.setup.machine_setup import MachineSetup
 from postproc.syntax import Pipeline
 from postproc.hookspecs import hookimpl
 from postproc.rs274.cycle_words import rs274_cycle_words
 from postproc.rs274.lathe_axes import LATHE_INCREMENTS
 from postproc.rs274.order_of_execution import stops_before_motion
-from postproc.writer_base import Writer
+from postproc.output.writer_base import Writer
 from postproc.xmlio import XFactory
 
 from .arguments import LETTER_LOCALS

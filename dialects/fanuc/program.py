@@ -11,7 +11,7 @@ from __future__ import annotations
 from typing import Callable, ClassVar
 
 from postproc.context import Context
-from postproc.interp import ProgramSyntax
+from postproc.syntaxes.program import ProgramSyntax
 from postproc.interp.variables import Variables, VariablesFactory
 from postproc.rs274.variables import MacroBVariables
 

@@ -16,9 +16,9 @@ from postproc.comments import CommentSyntax
 from postproc.dialect import Dialect, Lazy, Reader
 from postproc.hookspecs import hookimpl
 from postproc.rs274.lathe_axes import LATHE_INCREMENTS
-from postproc.setup import MachineSetup
+from postproc.setup.machine_setup import MachineSetup
 from postproc.syntax import Pipeline
-from postproc.writer_base import Writer
+from postproc.output.writer_base import Writer
 from postproc.xmlio import XFactory
 
 

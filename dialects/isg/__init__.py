@@ -15,9 +15,9 @@ from postproc.comments import CommentSyntax
 from postproc.dialect import Dialect, Lazy, Reader
 from postproc.hookspecs import hookimpl
 from postproc.rs274.order_of_execution import stops_before_motion
-from postproc.setup import MachineSetup
+from postproc.setup.machine_setup import MachineSetup
 from postproc.syntax import Pipeline
-from postproc.writer_base import Writer
+from postproc.output.writer_base import Writer
 from postproc.xmlio import XFactory
 
 if TYPE_CHECKING:

@@ -11,8 +11,8 @@ from __future__ import annotations
 from collections import deque
 from typing import ClassVar
 
-from postproc.interp import ProgramSyntax
-from postproc.interp.step import Kept, kept_line
+from postproc.syntaxes.program import ProgramSyntax
+from postproc.syntaxes.program import Kept, kept_line
 from postproc.interp.rules import SubprogramRules
 from postproc.interp.variables import VariablesFactory
 

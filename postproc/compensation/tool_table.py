@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from ..errors import ProgramError
 from ..ir import DataSetting
-from ..setup import MachineSetup
+from ..setup.machine_setup import MachineSetup
 
 TABLES = {"tool_length": ("length", False), "tool_length_wear": ("length", True),
           "cutter_offset": ("radius", False), "cutter_offset_wear": ("radius", True)}

@@ -9,23 +9,23 @@ from __future__ import annotations
 
 from postproc.xmlio import XFactory, XmlNode
 
-from .back_boring import BackBoringSyntax
-from .boring import BoringSyntax
-from .drilling import DrillingSyntax
+from .back_boring import BackBoringExpansion
+from .boring import BoringExpansion
+from .drilling import DrillingExpansion
 from .expansion import CycleExpansion
-from .fine_boring import FineBoringSyntax
-from .manual_boring import ManualBoringSyntax
-from .peck_drilling import PeckDrillingSyntax
+from .fine_boring import FineBoringExpansion
+from .manual_boring import ManualBoringExpansion
+from .peck_drilling import PeckDrillingExpansion
 from .resolve import EXPANSIONS, CannedCycleResolveSyntax
 from .section import CannedCycle
-from .tapping import TappingSyntax
+from .tapping import TappingExpansion
 
 XML_CLASSES: tuple[type[XmlNode], ...] = (CannedCycle, CannedCycleResolveSyntax, *EXPANSIONS)
 """Every XML node class of the package."""
 
 __all__ = [
-    "BackBoringSyntax", "BoringSyntax", "CannedCycle", "CannedCycleResolveSyntax", "CycleExpansion",
-    "DrillingSyntax", "FineBoringSyntax", "ManualBoringSyntax", "PeckDrillingSyntax", "TappingSyntax",
+    "BackBoringExpansion", "BoringExpansion", "CannedCycle", "CannedCycleResolveSyntax", "CycleExpansion",
+    "DrillingExpansion", "FineBoringExpansion", "ManualBoringExpansion", "PeckDrillingExpansion", "TappingExpansion",
     "XML_CLASSES", "register",
 ]
 

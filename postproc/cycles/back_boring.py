@@ -11,7 +11,7 @@ from .section import CannedCycle
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
-class BackBoringSyntax(CycleExpansion):
+class BackBoringExpansion(CycleExpansion):
     """G87 back boring (Fanuc). Supports modal repetition. Reads absolute levels from the cycle
     section resolved by CannedCycleResolveSyntax: the cut starts at ``bottom`` and goes up to ``top``.
 

@@ -9,7 +9,7 @@ from .section import CannedCycle
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
-class BoringSyntax(CycleExpansion):
+class BoringExpansion(CycleExpansion):
     """Fanuc: G85 feed to the bottom, feed to R, (G98: rapid to the initial level); G89 the same with a
     dwell P at the bottom; G86 feed, spindle stop, rapid out, spindle CW (no dwell).
 

@@ -9,7 +9,7 @@ from .section import CannedCycle
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
-class DrillingSyntax(CycleExpansion):
+class DrillingExpansion(CycleExpansion):
     """G81/G82. The rapid out goes straight from the bottom to the return level, not through R."""
 
     XNAME = "DrillingSyntax"

@@ -11,7 +11,7 @@ from .section import CannedCycle
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
-class FineBoringSyntax(CycleExpansion):
+class FineBoringExpansion(CycleExpansion):
     """Feed to the bottom, dwell P, oriented stop, rapid shift by Q (direction from the set-up),
     rapid out to the return level still shifted, shift back, spindle CW. No orientation on the way in.
     """

@@ -9,7 +9,7 @@ from .section import CannedCycle
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
-class ManualBoringSyntax(CycleExpansion):
+class ManualBoringExpansion(CycleExpansion):
     """Fanuc: feed to the bottom, dwell P, spindle stop, program stop; on cycle start the tool (taken
     as still at the bottom: the operator's hand moves are not simulated) rapids to the return level
     and the spindle restarts CW.

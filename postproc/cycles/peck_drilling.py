@@ -13,7 +13,7 @@ from .section import CannedCycle
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
-class PeckDrillingSyntax(CycleExpansion):
+class PeckDrillingExpansion(CycleExpansion):
     """G73: feed q, rapid back by d, feed q + d, ... (the tool stays in the hole).
     G83: feed q, rapid to R, rapid to d above the last bottom, feed q + d, ...
 

@@ -24,31 +24,31 @@ from postproc.cycle_words import CycleWords
 from postproc.errors import ConfigError, Location, PostprocError, ProgramError, UnsupportedError
 from postproc.expr import Expr
 from postproc.ir import Block, CompoundMotion, NativeCode, Section
-from postproc.setup import CycleSettings
+from postproc.setup.machine_setup import CycleSettings
 from postproc.source_map import ExecutedBlock
 from postproc.state import MM_PER_INCH, PLANE_AXES, CycleState, ModalState
 from postproc.context import Context
 from postproc.syntax import Syntax
 from postproc.xmlio import DEFAULT, lxml_etree
 
-from .back_boring import BackBoringSyntax
-from .boring import BoringSyntax
-from .drilling import DrillingSyntax
+from .back_boring import BackBoringExpansion
+from .boring import BoringExpansion
+from .drilling import DrillingExpansion
 from .expansion import CycleExpansion, TooManyMoves
-from .fine_boring import FineBoringSyntax
-from .manual_boring import ManualBoringSyntax
-from .peck_drilling import PeckDrillingSyntax
+from .fine_boring import FineBoringExpansion
+from .manual_boring import ManualBoringExpansion
+from .peck_drilling import PeckDrillingExpansion
 from .rigid_tap import RIGID_KEY, end_rigid_mode, note_rigid_mode, rigid_pitch
 from .section import WORD_ORDER, CannedCycle
 from .semantics import DWELLING, PECK, SEMANTICS, SHIFT, TAP, Semantics
-from .tapping import TappingSyntax
+from .tapping import TappingExpansion
 
 if TYPE_CHECKING:  # annotations only: lxml is imported where XML is read or written (postproc.xmlio)
     from lxml import etree
 
 EXPANSIONS: Final[tuple[type[CycleExpansion], ...]] = (
-    DrillingSyntax, PeckDrillingSyntax, TappingSyntax, BoringSyntax, FineBoringSyntax, BackBoringSyntax,
-    ManualBoringSyntax,
+    DrillingExpansion, PeckDrillingExpansion, TappingExpansion, BoringExpansion, FineBoringExpansion, BackBoringExpansion,
+    ManualBoringExpansion,
 )
 """The built-in family expansions, one per cycle family."""
 

@@ -3,7 +3,7 @@
 A machine code declared ``action="rigid-tap"`` (Fanuc ``M29 S..``) puts the control in rigid tapping mode
 [K: Fanuc 0i-MF operator's manual, "Rigid tapping": M29 S.. before G84/G74]; the tap cycles (G84, G74) that
 follow then cut in step with the spindle, and the cycle resolution gives them a ``pitch``
-(``CannedCycle.pitch``), which ``TappingSyntax`` expands into ``RigidTap`` moves. The mode ends with the
+(``CannedCycle.pitch``), which ``TappingExpansion`` expands into ``RigidTap`` moves. The mode ends with the
 cycle cancel or a group-01 motion code [K: same manual, "Rigid tapping mode is cancelled by G80, a G code of
 group 01, or reset"]; a hole cycle other than a tap while it is on is refused [?: Fanuc raises an alarm], and
 so is an axis move between the code and its tap cycle [K: Fanuc 0i alarm PS0204 "illegal axis operation",
@@ -21,7 +21,7 @@ from typing import Any, Callable, Final
 
 from postproc.errors import ProgramError
 from postproc.ir import MachineFunction
-from postproc.machine_functions import RIGID_TAP
+from postproc.lowering.machine_functions import RIGID_TAP
 from postproc.state import ModalState
 
 RIGID_KEY: Final = "RigidTapMode"

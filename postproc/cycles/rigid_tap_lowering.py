@@ -14,7 +14,7 @@ from ..expr import Expr
 from ..ir import (Block, Comments, CompoundMotion, CycleCancel, DistanceMode, Feed, MachineFunction, ReturnLevel,
                   SpindleSpeed)
 from ..state import PLANE_AXES
-from ..machine_functions import RIGID_TAP
+from ..lowering.machine_functions import RIGID_TAP
 from ..synchronised_tap import RigidTap, rigid_taps
 from .section import CannedCycle
 

@@ -13,7 +13,7 @@ from .section import CannedCycle
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
-class TappingSyntax(CycleExpansion):
+class TappingExpansion(CycleExpansion):
     """Fanuc: feed to the bottom, dwell P, reverse, feed back to R, (G98: rapid to the initial level),
     restore the direction. RS274 (LinuxCNC's interpreter): feed to the bottom, stop, reverse, dwell
     (0 without P), feed out to the clear level, stop, restore.

@@ -15,7 +15,7 @@ from typing import Callable, Final
 
 from ..ir import Block
 from ..rs274.writer import WordWriter
-from ..writer_base import Writer
+from ..output.writer_base import Writer
 from .straight import STRAIGHT_KEYS, CopyLane, StraightLane
 
 STRAIGHT_METHODS: Final = ("write_block", "words_block", "generate", "_generate", "section_words", "section_writer",

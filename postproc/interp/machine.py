@@ -34,7 +34,7 @@ from ..evaluation import evaluate, evaluate_number
 from ..expr import EvalError, Expr, Value
 from ..evaluation import var_key
 from ..ir import Block, Comments
-from ..setup import Limits
+from ..setup.machine_setup import Limits
 from ..source_map import CallSite, ExecutedBlock, Origin
 from .rules import STORED_PROGRAMS, SubprogramRules
 from .store import Program, ProgramStore, source_text

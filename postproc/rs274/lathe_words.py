@@ -18,7 +18,7 @@ from postproc.context import Context
 from postproc.errors import ParseError, ProgramError
 from postproc.ir import Block
 from postproc.lathe_sections import LatheCycle
-from postproc.setup_record import values
+from postproc.setup.record import values
 
 DEFAULTS_KEY = "lathe_words.defaults"
 """``ctx.state.extra`` key: the data parameters in force (a dict, from the set-up, then as programmed)."""

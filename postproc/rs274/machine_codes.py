@@ -11,7 +11,7 @@ from __future__ import annotations
 from typing import Mapping
 
 from postproc.context import Context
-from postproc.setup import CodeAction, MachineCode
+from postproc.setup.machine_setup import CodeAction, MachineCode
 
 Defaults = Mapping[str, tuple[MachineCode, ...]]
 """Controller variant -> the machine codes it has besides its family's common ones."""

@@ -17,7 +17,7 @@ from ..dialect import Dialect
 from ..errors import UnsupportedError
 from ..expr import Binary, Expr, Num
 from ..ir import Block, Motion
-from ..machine_functions import RIGID_TAP, refused_rigid_tap
+from ..lowering.machine_functions import RIGID_TAP, refused_rigid_tap
 from ..state import MM_PER_INCH
 from .codes import CodeTable
 from .word_numbers import NumberWriter
@@ -293,7 +293,7 @@ class SectionWords(NumberWriter):
 
     def machine_function_words(self, s: Any, block: Block) -> list[str]:
         """A machine-specific code as written, for a controller of its family; elsewhere it has no
-        equivalent (``postproc.machine_functions`` comments it out under ``--on-unsupported warn``)."""
+        equivalent (``postproc.lowering.machine_functions`` comments it out under ``--on-unsupported warn``)."""
         family = self.target.family() if self.target is not None else self.DIALECT
         if s.family != family and s.action == RIGID_TAP:
             raise UnsupportedError(refused_rigid_tap(s, self.DIALECT), self.ctx.at(block))

@@ -81,7 +81,7 @@ class WordWriter(MotionWords):
         super().__init__(ctx, source_dialect, target)
         out = ctx.setup.output
         renumber = out.renumber_start if out.block_numbers == "keep" else 0
-        """``blockNumbers`` other than keep numbers the written lines (``postproc.line_format``) instead."""
+        """``blockNumbers`` other than keep numbers the written lines (``postproc.output.line_format``) instead."""
         self.normalize = out.normalize or bool(renumber) or self.rounding
         """Renumbering and decimals per address rewrite the words, so they imply normalising."""
         self.renumber = renumber
@@ -271,7 +271,7 @@ class WordWriter(MotionWords):
                         self.unsupported(f"{key}", block)
         except UnsupportedError as err:
             if err.section is None:
-                err.section = current  # which section: --on-unsupported warn drops it (postproc.partial_block)
+                err.section = current  # which section: --on-unsupported warn drops it (postproc.output.partial_block)
             raise
         start = sections.get("ProgramStart")
         if start is not None:

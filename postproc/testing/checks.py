@@ -21,10 +21,10 @@ from ..dialect import Dialect
 from ..errors import Diagnostics, ErrorList, PostprocError
 from ..ir import Block
 from ..plugins import default_registry
-from ..program_xml import dump_program, load_program
-from ..setup import InputSettings, MachineSetup, load_setup
-from ..toolpath import start_position, toolpath_events
-from ..verify import compare, verify_lines
+from ..commands.program_xml import dump_program, load_program
+from ..setup.machine_setup import InputSettings, MachineSetup, load_setup
+from ..simulate.toolpath import start_position, toolpath_events
+from ..simulate.verify import compare, verify_lines
 from ..xmlio import to_bytes
 from .neutral import NeutralProgram, simulate_neutral, write_neutral
 
@@ -159,7 +159,7 @@ class CliRun:
 
 def run_cli(*args: str) -> CliRun:
     """``postproc ARGS`` in this process (stdout discarded)."""
-    from ..cli import main  # late: the cli binds postproc.api.translate when imported, which a test may wrap
+    from ..commands.cli import main  # late: the cli binds postproc.api.translate when imported, which a test may wrap
 
     err = io.StringIO()
     out = io.TextIOWrapper(io.BytesIO(), encoding="utf-8")  # ``-o -`` writes bytes to ``stdout.buffer``

@@ -21,11 +21,11 @@ from ..ir import (
     Block, Comments, CompoundMotion, Coolant, CycleCancel, DistanceMode, Dwell, Feed, Motion,
     Plane, ProgramControl, ReturnLevel, Section, Sequence, SpindleControl, SpindleSpeed, Units,
 )
-from ..lower import lower_for
+from ..lowering.lower import lower_for
 from ..rs274.cycle_words import NEUTRAL_CYCLE_WORDS
 from ..plugins import Registry, default_registry
-from ..setup import MachineSetup
-from ..toolpath import TRANSLATE_ONLY, ToolpathTarget, simulate
+from ..setup.machine_setup import MachineSetup
+from ..simulate.toolpath import TRANSLATE_ONLY, ToolpathTarget, simulate
 
 NEUTRAL = "neutral IR"
 """The reading dialect a neutral program claims: no dialect's name, so every lowering step runs."""

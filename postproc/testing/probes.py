@@ -24,7 +24,7 @@ from ..ir import (
     CutterCompensation, Dwell, Feed, Motion, Section, SpindleControl, SpindleOrientation, SpindleSpeed, ToolChange,
     ToolLengthOffset, ToolSelect,
 )
-from ..setup import MachineSetup
+from ..setup.machine_setup import MachineSetup
 from .neutral import NeutralProgram, Op, drill_cycle, write_neutral
 
 PROBE_LINE = 3
@@ -153,7 +153,7 @@ def _with_probe_tool(setup: MachineSetup) -> MachineSetup:
     values, and the probes are about the spelling, not the values."""
     if "1" in setup.tools:
         return setup
-    from ..setup_machine import ToolData
+    from ..setup.machine import ToolData
     out = copy.copy(setup)
     out.tools = {**setup.tools, "1": ToolData(number=1, length=0.0, radius=0.0)}
     return out

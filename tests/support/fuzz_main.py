@@ -20,7 +20,7 @@ from typing import Callable, Iterator
 from hypothesis import HealthCheck, Phase, given, settings
 from hypothesis import strategies as st
 
-from postproc.setup import MachineSetup
+from postproc.setup.machine_setup import MachineSetup
 from tests.support.fuzzing import PAIRS, READERS, check_toolpath, check_translation, known_defect, programs, setups
 from tests.support.generators import Case, strategies
 

@@ -16,9 +16,9 @@ from hypothesis import strategies as st
 from postproc.api import read_program, translate
 from postproc.errors import Diagnostics, ErrorList, PostprocError
 from postproc.plugins import default_registry
-from postproc.setup import InputSettings, MachineSetup, OutputSettings
-from postproc.toolpath import toolpath_events
-from postproc.verify import verify_lines
+from postproc.setup.machine_setup import InputSettings, MachineSetup, OutputSettings
+from postproc.simulate.toolpath import toolpath_events
+from postproc.simulate.verify import verify_lines
 
 from .output_rules import problems
 from .tools import with_tools

@@ -26,7 +26,7 @@ from __future__ import annotations
 
 from typing import Any, Callable, Iterable, TextIO
 
-from postproc.setup import MachineSetup
+from postproc.setup.machine_setup import MachineSetup
 
 from .grbl_rules import grbl_problems
 from .linuxcnc_rules import available as rs274_available, linuxcnc_problems

@@ -6,8 +6,8 @@ from __future__ import annotations
 
 import copy
 
-from postproc.setup import MachineSetup
-from postproc.setup_machine import ToolData
+from postproc.setup.machine_setup import MachineSetup
+from postproc.setup.machine import ToolData
 
 REGISTERS = range(1, 100)
 

@@ -27,7 +27,7 @@ from postproc.rs274.cycle_words import rs274_cycle_words
 from postproc.rs274.order_of_execution import stops_after_motion
 from postproc.rs274.return_level import return_level_in_force
 from postproc.rs274.writer import WordWriter
-from postproc.setup import MachineSetup
+from postproc.setup.machine_setup import MachineSetup
 from postproc.syntax import Pipeline
 from postproc.xmlio import XFactory
 
@@ -122,7 +122,7 @@ class Mach3(Dialect):
     """The cycles move by the RS274/NGC rules (``postproc.cycles.semantics``)."""
     COMMENTS = CommentSyntax(parens=True, nested=False, semicolon=True)
     """``( )`` and ``;`` comments, as RS274/NGC [K: Mach3 G-code manual]; a template's values stand only
-    inside them (``postproc.template_values``)."""
+    inside them (``postproc.output.template_values``)."""
     SPINDLE_ORIENTATION = False
     """No M19: cycles that need an oriented stop follow the set-up's ``Cycles orientation``."""
     STOPS_BEFORE_MOTION = True

@@ -35,11 +35,11 @@ from typing import TYPE_CHECKING, Callable, ClassVar, Iterator
 from postproc.comments import CommentSyntax
 from postproc.dialect import Dialect, Lazy, Reader
 from postproc.hookspecs import hookimpl
-from postproc.line_format import LineRule
+from postproc.output.line_format import LineRule
 from postproc.rs274.cycle_words import rs274_cycle_words
-from postproc.setup import MachineSetup
+from postproc.setup.machine_setup import MachineSetup
 from postproc.syntax import Pipeline
-from postproc.writer_base import Writer
+from postproc.output.writer_base import Writer
 from postproc.xmlio import XFactory
 from postproc.rs274.lean_controller import lower_for_lean_controller
 
@@ -57,8 +57,8 @@ def write_tool_lengths(blocks: Iterator[Block], ctx: Context, target: type[Diale
 
 
 def resolve_cutter_compensation(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
-    """``postproc.compensation.lowering.resolve_cutter_compensation``, imported when first used."""
-    from postproc.compensation.lowering import resolve_cutter_compensation as step
+    """``postproc.lowering.cutter_compensation.resolve_cutter_compensation``, imported when first used."""
+    from postproc.lowering.cutter_compensation import resolve_cutter_compensation as step
     return step(blocks, ctx, target)
 
 
@@ -88,7 +88,7 @@ class Grbl(Dialect):
     LOWERING = (write_tool_lengths, resolve_cutter_compensation, lower_for_lean_controller)
     """Rewrites into what grbl runs: a G43 H as ``G43.1 Z<length>`` from the set-up's tool table
     (``lengths.py``); G41/G42 as the compensated path, where the source's rules are modelled
-    (``postproc.compensation.lowering``); tool change as a pause, G49 before motion, full circles with an end point; a
+    (``postproc.lowering.cutter_compensation``); tool change as a pause, G49 before motion, full circles with an end point; a
     moving block's spindle stop and coolant off after it (grbl runs them before the motion:
     ``postproc.rs274.order_of_execution``)."""
     PATH_CONTROL = "cutting"

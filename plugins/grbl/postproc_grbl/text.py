@@ -1,5 +1,5 @@
 """What grbl's serial and protocol layers do to a line before its parser sees it, as the rules every
-written line obeys (``LINES``, through ``postproc.line_format``) and grbl's comment syntax (``COMMENTS``).
+written line obeys (``LINES``, through ``postproc.output.line_format``) and grbl's comment syntax (``COMMENTS``).
 
 From ``grbl/serial.c`` and ``grbl/protocol.c`` (github.com/gnea/grbl, stored commit bfb67f0) [V]:
 
@@ -94,7 +94,7 @@ def shortened(line: str) -> str:
 
 
 class GrblLines:
-    """The rules of every line written for grbl (``postproc.line_format.LineRule``)."""
+    """The rules of every line written for grbl (``postproc.output.line_format.LineRule``)."""
 
     def fits(self, text: str) -> bool:
         """Every line of ``text`` is plain ASCII and short enough, as it is (the test of a usual block, and

@@ -16,11 +16,11 @@ pause, G49 before motion, full circles) are the lean-controller lowering steps g
 * ``%`` and an O-number, which grbl's parser rejects, are written as comments;
 * grbl's serial layer acts on ``?``, ``!``, ``~`` and bytes above 0x7F wherever they stand, and its
   protocol layer keeps 79 characters of a line: every line written obeys ``Grbl.LINE_RULE``
-  (``text.py``), applied where lines are emitted (``postproc.line_format``), so no path - a block, a
+  (``text.py``), applied where lines are emitted (``postproc.output.line_format``), so no path - a block, a
   template's output, a comment copied from grbl itself - writes one of them.
 
 With ``--on-unsupported warn``, a block loses only what grbl refuses and what cannot be written without it,
-after a comment of the original block, as for every writer (``postproc.partial_block``).
+after a comment of the original block, as for every writer (``postproc.output.partial_block``).
 """
 
 from __future__ import annotations

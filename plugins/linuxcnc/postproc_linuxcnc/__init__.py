@@ -20,13 +20,13 @@ from postproc.rs274.order_of_execution import stops_after_motion
 from postproc.errors import Diagnostics
 from postproc.hookspecs import hookimpl
 from postproc.ir import Block
-from postproc.line_format import LineRule
-from postproc.lower import Lowering
-from postproc.setup import MachineSetup
+from postproc.output.line_format import LineRule
+from postproc.lowering.lower import Lowering
+from postproc.setup.machine_setup import MachineSetup
 from postproc.context import Context
 from postproc.rs274.cycle_words import rs274_cycle_words
 from postproc.syntax import Pipeline
-from postproc.writer_base import Writer
+from postproc.output.writer_base import Writer
 from postproc.xmlio import XFactory
 
 from .codes import CODES

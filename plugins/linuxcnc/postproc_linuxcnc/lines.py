@@ -1,5 +1,5 @@
 """How long a line LinuxCNC reads (``Linuxcnc.LINE_RULE``, applied to every line written through
-``postproc.line_format``).
+``postproc.output.line_format``).
 
 rs274 (linuxcnc-uspace 2.9, run here) reads a line of at most 252 bytes, a ``\\r`` before the ``\\n``
 included, comments and spaces included, a character outside ASCII counting its UTF-8 bytes; one more is
@@ -20,7 +20,7 @@ LINE_LENGTH: Final = 252
 
 def size(text: str) -> int:
     """``text``'s bytes as written (UTF-8, the bytes a reader kept as surrogates as themselves:
-    ``postproc.outfile``)."""
+    ``postproc.output.outfile``)."""
     if text.isascii():
         return len(text)
     try:
@@ -30,7 +30,7 @@ def size(text: str) -> int:
 
 
 class LinuxcncLines:
-    """The rule of every line written for LinuxCNC (``postproc.line_format.LineRule``)."""
+    """The rule of every line written for LinuxCNC (``postproc.output.line_format.LineRule``)."""
 
     def fits(self, text: str) -> bool:
         """Every line of ``text`` is short enough as it is (the test of a usual block, and of an expanded

@@ -18,7 +18,8 @@ from typing import ClassVar
 from postproc.errors import ProgramError
 from postproc.interp.rules import SubprogramRules
 from postproc.interp.variables import VariablesFactory
-from postproc.interp import ProgramSyntax, spell_number
+from postproc.syntaxes.program import ProgramSyntax
+from postproc.interp import spell_number
 from postproc.rs274.variables import NgcVariables
 
 INTEGER_TOLERANCE = 0.0001

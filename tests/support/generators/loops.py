@@ -17,7 +17,7 @@ from typing import Callable
 
 from hypothesis import strategies as st
 
-from postproc.setup import Limits, MachineSetup
+from postproc.setup.machine_setup import Limits, MachineSetup
 from tests.support.fuzzing import check_toolpath, check_translation
 
 from . import Case

@@ -16,7 +16,7 @@ import math
 from hypothesis import strategies as st
 
 from postproc.errors import Diagnostics
-from postproc.toolpath import toolpath_events
+from postproc.simulate.toolpath import toolpath_events
 from tests.support.rs274 import RS274Error, available, canonical_moves, run_rs274
 
 from . import Case

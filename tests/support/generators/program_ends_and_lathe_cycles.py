@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from hypothesis import strategies as st
 
-from postproc.setup import InputSettings, MachineSettings, MachineSetup
+from postproc.setup.machine_setup import InputSettings, MachineSettings, MachineSetup
 
 from ..fuzzing import REGISTRY, WRITERS, check_translation
 from . import Case

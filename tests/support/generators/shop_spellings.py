@@ -18,8 +18,8 @@ from hypothesis import strategies as st
 
 from postproc.api import read_program, translate
 from postproc.errors import Diagnostics, ErrorList
-from postproc.setup import ControllerSettings, MachineSetup
-from postproc.toolpath import toolpath_events
+from postproc.setup.machine_setup import ControllerSettings, MachineSetup
+from postproc.simulate.toolpath import toolpath_events
 from tests.support.fuzzing import WRITERS, check_translation, located
 from tests.support.output_rules import problems
 

@@ -16,8 +16,8 @@ from hypothesis import strategies as st
 
 from postproc.api import translate
 from postproc.errors import ConfigError, Diagnostics, ErrorList, PostprocError
-from postproc.setup import MachineSetup
-from postproc.setup_groups import Templates
+from postproc.setup.machine_setup import MachineSetup
+from postproc.setup.groups import Templates
 from tests.support.fuzzing import WRITERS, _check_output, located
 from tests.support.generators import Case
 

@@ -25,7 +25,7 @@ from hypothesis import strategies as st
 from postproc.api import read_program
 from postproc.errors import ErrorList
 from postproc.ir import Block
-from postproc.setup import MachineSetup, load_setup
+from postproc.setup.machine_setup import MachineSetup, load_setup
 from tests.support.tools import with_tools
 
 from ..fuzzing import WRITERS, check_translation

@@ -1,1 +1,0 @@
-"""Set-up bases shipped with postproc, named by file in ``extends`` (``postproc.setup_load.BASES``)."""

@@ -1,0 +1,316 @@
+"""Cutter radius compensation resolved for a target without it (grbl): the compensated path, written
+as plain moves.
+
+The path is the simulation's (``cutter_radius.CutterRadius`` under the source dialect's rules,
+``Dialect.CUTTER_RULES``), so it is the source controller's path move for move: each move of the
+compensated stretch is rewritten to its compensated end (an arc to its compensated centre, in I/J
+from the compensated start), an outside corner adds its arc (a rapid's: a straight traverse) in a
+block of its own, and a block without motion keeps its place behind the move the compensation holds
+back. The compensated stretch is written in absolute positions: a block the program wrote in G91 gets
+a G90 and a G91 after it. A source whose rules are not modelled leaves its G41/G42 to the writer,
+which refuses them.
+
+What the simulation refuses under compensation (a canned cycle, a move in machine coordinates, a
+reference return, a plane other than XY, a start point not known) is a located error here too.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Iterator
+
+from ..block_rules import ArcError, arc_centre
+from ..context import Context
+from ..dialect import Dialect
+from ..errors import PostprocError, ProgramError, UnsupportedError
+from ..expr import Expr
+from ..ir import (Block, CutterCompensation, DataSetting, DistanceMode, Feed, Motion, Plane, ProgramControl,
+                  Section, ToolChange, ToolSelect, Units, WorkOffset)
+from ..compensation.cutter_radius import CutterRadius, Item, Segment
+from ..compensation.rules import CutterRules
+from ..compensation.tool_table import ToolTable
+
+MM_PER_INCH = 25.4
+ARC_OFF_MM = 0.005
+ARC_OFF_RATIO = 0.001
+"""How far an arc's end may lie off the circle through its start before a controller refuses it: [V] grbl
+``gcode.c`` (error 33 beyond 0.005 mm and 0.1 % of the radius). LinuxCNC joins an arc to a move within
+its corner tolerance (0.05 rad) without moving the start onto the compensated circle, so its compensated
+arc may start off the circle; such an arc is refused here rather than written one grbl rejects."""
+PLANE_WORDS = ("X", "Y")
+MOVES = frozenset(("rapid", "linear", "cw", "ccw"))
+_SEGMENT_KIND = {"rapid": "rapid", "linear": "feed", "cw": "cw", "ccw": "ccw"}
+_MOTION_MODE = {"rapid": "rapid", "feed": "linear", "cw": "cw", "ccw": "ccw"}
+_MODAL = frozenset(("Units", "DistanceMode", "Plane", "DataSetting", "WorkOffset", "ToolSelect", "ToolChange"))
+"""Settings the resolver keeps while no compensation is on (a block with none of them, and no G41/G42, is
+only a move to track, or passes untouched)."""
+
+
+def resolve_cutter_compensation(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """Lowering step: G41/G42 become the compensated path for a target without cutter compensation,
+    where the source dialect's rules are modelled (see the module docstring)."""
+    if ctx.dialect == target.NAME or target.CUTTER_COMPENSATION:
+        return blocks
+    rules: CutterRules | None = ctx.cutter_rules  # none for a program written from the neutral IR
+    if rules is None:
+        return blocks
+    return _Resolver(ctx, rules).run(blocks)
+
+
+class _Resolver:
+    """The compensation state of one translation, and the blocks it has released."""
+
+    def __init__(self, ctx: Context, rules: CutterRules) -> None:
+        self.ctx = ctx
+        self.rules = rules
+        self.cutter = CutterRadius(rules, self._release)
+        self.table = ToolTable(ctx.setup)
+        self.scale = 1.0
+        """mm per program unit."""
+        self.absolute = True
+        self.plane = "XY"
+        self.work_offset = 1
+        self.selected: int | None = None
+        self.spindle_tool: int | None = None
+        self.pos: dict[str, float | None] = {"X": None, "Y": None, "Z": None}
+        """The programmed point, mm (None: not known since the origin moved or a reference return)."""
+        self.at: tuple[float, float] = (0.0, 0.0)
+        """The controlled point in the plane the last released move ends at, mm."""
+        self.held: dict[int, tuple[Block, bool]] = {}
+        """A queued move (by ``id``) -> its block, and whether it was written in G91."""
+        self.out: list[Block] = []
+        self.failed = False
+
+    def run(self, blocks: Iterator[Block]) -> Iterator[Block]:
+        idle = True
+        for block in blocks:
+            sections = block.sections
+            if idle and "CutterCompensation" not in sections and _MODAL.isdisjoint(sections):
+                motion = sections.get("Motion")  # the common block: a move, tracked for a later entry move
+                if isinstance(motion, Motion) and self.absolute and motion.mode in MOVES \
+                        and "MachineCoordinates" not in sections:
+                    pos, scale = self.pos, self.scale
+                    for axis, value in motion.axes.items():
+                        if axis in pos:
+                            pos[axis] = value * scale if type(value) is float else None
+                elif motion is not None or "CompoundMotion" in sections or "MachineCoordinates" in sections:
+                    self._track(block)
+                yield block
+                continue
+            if not self.failed:
+                try:
+                    self.block(block)
+                except PostprocError as err:
+                    self.ctx.diagnostics.error(err.located(self.ctx.at(block)) if err.location is None else err)
+                    self.failed = True  # the queue no longer matches the program: nothing more is resolved
+                    self.out.append(block)
+            else:
+                self.out.append(block)
+            if self.out:
+                yield from self.out
+                self.out.clear()
+            idle = self.failed or self._idle()
+        if not self.failed:
+            try:
+                self.cutter.finish()
+            except PostprocError as err:
+                self.ctx.diagnostics.error(err)
+        yield from self.out
+
+    # -- one block -----------------------------------------------------------------------------------
+    def block(self, block: Block) -> None:
+        sections = block.sections
+        self._modal(sections)
+        cc = sections.get("CutterCompensation")
+        if isinstance(cc, CutterCompensation):
+            del sections["CutterCompensation"]
+            block.changed()
+            if cc.mode == "off":
+                self.cutter.cancel()
+            else:
+                if self.plane != "XY":
+                    raise UnsupportedError(f"cutter compensation in the {self.plane} plane cannot be resolved")
+                if self._idle() and self.pos["X"] is not None and self.pos["Y"] is not None:
+                    self.at = (self.pos["X"], self.pos["Y"])  # where the entry move starts
+                self.cutter.start(cc.mode, self._radius(cc.register))
+        if self._idle():
+            self._track(block)
+            self.out.append(block)
+            return
+        if "CompoundMotion" in sections or "CannedCycle" in sections:
+            raise ProgramError("a canned cycle with cutter compensation on cannot be run (cancel it first)")
+        motion = sections.get("Motion")
+        if isinstance(motion, Motion) and motion.axes:
+            self._move(block, motion)
+        elif isinstance(motion, Motion) and motion.mode is not None and motion.mode not in MOVES:
+            raise UnsupportedError(f"motion '{motion.mode}' with cutter compensation on cannot be resolved")
+        else:
+            self.cutter.event({"block": block})
+        control = sections.get("ProgramControl")
+        if isinstance(control, ProgramControl):
+            if control.kind in ("stop", "optional_stop"):
+                self.cutter.stop()  # a stop writes the queued move at its compensated end [V]
+            elif control.kind in ("end", "end_rewind"):
+                self.cutter.stop()
+                self.cutter.cancel()
+
+    def _modal(self, sections: dict[str, Section]) -> None:
+        units = sections.get("Units")
+        if isinstance(units, Units):
+            scale = MM_PER_INCH if units.system == "inch" else 1.0
+            self.scale = scale
+            self.cutter.sweep_slack = 0.001 if units.system == "inch" else 0.0254
+        distance = sections.get("DistanceMode")
+        if isinstance(distance, DistanceMode):
+            self.absolute = distance.mode == "absolute"
+        plane = sections.get("Plane")
+        if isinstance(plane, Plane):
+            self.plane = plane.plane
+        setting = sections.get("DataSetting")
+        if isinstance(setting, DataSetting):
+            if setting.table.startswith("work_offset"):
+                self._origin_moved()
+            else:
+                self.table.write(setting, self.scale)
+        offset = sections.get("WorkOffset")
+        if isinstance(offset, WorkOffset) and offset.index != self.work_offset:
+            self.work_offset = offset.index
+            self._origin_moved()
+        select = sections.get("ToolSelect")
+        if isinstance(select, ToolSelect) and isinstance(select.number, int):
+            self.selected = select.number
+        if isinstance(sections.get("ToolChange"), ToolChange):
+            self.spindle_tool = self.selected
+
+    def _origin_moved(self) -> None:
+        if not self._idle():
+            raise UnsupportedError("a change of the work origin with cutter compensation on cannot be resolved")
+        self.pos = {axis: None for axis in self.pos}
+
+    def _radius(self, register: int | Expr | None) -> float:
+        if isinstance(register, Expr):
+            raise UnsupportedError("cutter compensation with a computed register cannot be resolved")
+        if register is None:
+            if self.rules.register_absent != "tool" or self.spindle_tool is None:
+                raise ProgramError("cutter compensation without its register takes the tool in the spindle, which "
+                                   "is not known here (no tool change before it): program its register")
+            register = self.spindle_tool
+        return self.table.radius(register)
+
+    # -- positions -----------------------------------------------------------------------------------
+    def _target(self, motion: Motion) -> dict[str, float | None]:
+        target = dict(self.pos)
+        for axis, value in motion.axes.items():
+            if isinstance(value, Expr):
+                raise UnsupportedError("a computed position under cutter compensation cannot be resolved")
+            if axis not in target:
+                raise UnsupportedError(f"motion of axis {axis} with cutter compensation on cannot be resolved")
+            if self.absolute:
+                target[axis] = value * self.scale
+            else:
+                known = target[axis]
+                target[axis] = None if known is None else known + value * self.scale
+        return target
+
+    def _track(self, block: Block) -> None:
+        """The programmed point after a block run with no compensation on."""
+        sections = block.sections
+        motion = sections.get("Motion")
+        if "CompoundMotion" in sections or "MachineCoordinates" in sections:
+            self.pos = {axis: None for axis in self.pos}
+        elif isinstance(motion, Motion) and motion.axes:
+            if motion.mode in ("home", "home2"):
+                self.pos = {axis: None for axis in self.pos}
+                return
+            try:
+                self.pos = {axis: value for axis, value in self._target(motion).items()}
+            except UnsupportedError:
+                self.pos = {axis: None for axis in self.pos}
+        if self.pos["X"] is not None and self.pos["Y"] is not None:
+            self.at = (self.pos["X"], self.pos["Y"])
+
+    def _move(self, block: Block, motion: Motion) -> None:
+        if "MachineCoordinates" in block.sections or motion.mode in ("home", "home2"):
+            raise ProgramError("a move in machine coordinates or a reference return with cutter compensation on "
+                               "cannot be run")
+        kind = _SEGMENT_KIND.get(motion.mode or "")
+        if kind is None:
+            raise UnsupportedError(f"motion '{motion.mode}' with cutter compensation on cannot be resolved")
+        start_x, start_y = self.pos["X"], self.pos["Y"]
+        target = self._target(motion)
+        if start_x is None or start_y is None or target["X"] is None or target["Y"] is None:
+            raise ProgramError("the start point of a compensated move is not known (program X and Y absolutely "
+                               "after the origin moved)")
+        end = {axis: value for axis, value in target.items() if value is not None}
+        seg = Segment(kind, {"line": block.line}, end, self.pos["Z"] or 0.0)
+        seg.fields["source"] = id(seg)
+        start = (start_x, start_y)
+        self.held[id(seg)] = (block, not self.absolute)
+        if kind in ("cw", "ccw"):
+            offsets = {a: v * self.scale for a, v in (motion.center or {}).items() if isinstance(v, (int, float))}
+            if isinstance(motion.radius, Expr) or any(isinstance(v, Expr) for v in (motion.center or {}).values()):
+                raise UnsupportedError("a computed arc under cutter compensation cannot be resolved")
+            radius = None if motion.radius is None else motion.radius * self.scale
+            try:
+                c = arc_centre(start, (end["X"], end["Y"]), PLANE_WORDS, radius, offsets, kind == "cw")
+            except ArcError as err:
+                raise ProgramError(err.message) from None
+            if c is None:
+                raise ProgramError("a zero-length arc under cutter compensation cannot be resolved")
+            seg.centre = seg.ccentre = c
+            seg.turn = 1 if kind == "ccw" else -1
+            self.cutter.arc(seg, start)
+        else:
+            self.cutter.line(seg, start)
+        self.pos = target
+
+    def _idle(self) -> bool:
+        cutter = self.cutter
+        return cutter.side is None and not cutter.queue and not cutter.arc_banned
+
+    # -- what the compensation releases --------------------------------------------------------------
+    def _release(self, item: Item) -> None:
+        if not isinstance(item, Segment):
+            self.out.append(item["block"])
+            return
+        own = self.held.pop(id(item), None)
+        if own is not None:
+            block, incremental = own
+            self._rewrite(block, item, incremental)
+            return
+        source = self.held.get(item.fields.get("source", 0))  # an outside corner, before the move that makes it
+        corner = Block(item.fields["line"], None, "\n")
+        if source is not None:
+            feed = source[0].sections.get("Feed")
+            if isinstance(feed, Feed):
+                corner.sections["Feed"] = feed  # the corner runs at the feed of the move after it
+        self._rewrite(corner, item, source is not None and source[1])
+
+    def _rewrite(self, block: Block, seg: Segment, incremental: bool) -> None:
+        """The block's move as the compensated one, in absolute program units."""
+        sections = block.sections
+        scale = self.scale
+        xy = seg.xy if seg.xy is not None else (seg.end["X"], seg.end["Y"])
+        old = sections.get("Motion")
+        axes: dict[str, float | Expr] = {"X": xy[0] / scale, "Y": xy[1] / scale}
+        if isinstance(old, Motion) and "Z" in old.axes and "Z" in seg.end:
+            axes["Z"] = seg.end["Z"] / scale
+        center: dict[str, float | Expr] | None = None
+        if seg.turn != 0 and seg.ccentre is not None:
+            cc = seg.ccentre
+            off = abs(math.hypot(self.at[0] - cc[0], self.at[1] - cc[1]) - math.hypot(xy[0] - cc[0], xy[1] - cc[1]))
+            if off > ARC_OFF_MM and off > ARC_OFF_RATIO * math.hypot(xy[0] - cc[0], xy[1] - cc[1]):
+                raise UnsupportedError(f"the compensated arc starts {off:.4f} mm off its circle (the source controller "
+                                       "joins it to a nearly tangent move without a corner and runs it so; written as "
+                                       "an arc, the target refuses it)", self.ctx.at(block))
+            center = {"X": (cc[0] - self.at[0]) / scale, "Y": (cc[1] - self.at[1]) / scale}
+        sections["Motion"] = Motion(_MOTION_MODE[seg.kind], axes, center, None)
+        self.at = xy
+        if incremental:
+            sections["DistanceMode"] = DistanceMode("absolute")
+        block.changed()
+        self.out.append(block)
+        if incremental:
+            back = Block(block.line, None, "\n")
+            back.sections = {"DistanceMode": DistanceMode("incremental")}
+            self.out.append(back)

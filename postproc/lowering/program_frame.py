@@ -1,0 +1,78 @@
+"""The program's frame on output: ``%`` lines and the main program's number, as the set-up's
+``<Output tapeMarks programNumber>`` ask (a lowering step; by default it changes nothing and costs no
+step per block).
+
+A controller that stores programs by number needs one (Fanuc ``O1001``), a tape reader or a DNC link
+wants the program between ``%`` lines, and a controller without them (grbl) must get neither. Whether a
+dialect has them is its ``TAPE_MARKS`` and ``PROGRAM_NUMBERS``; asking a dialect for what it lacks is
+an error of the set-up, found before any block is written.
+"""
+
+from __future__ import annotations
+
+from typing import Iterator
+
+from ..context import Context
+from ..dialect import Dialect
+from ..errors import ConfigError, Location
+from ..ir import Block, ProgramStart, TapeMark
+
+
+def frame_program(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    out = ctx.setup.output
+    marks, number = out.tape_marks, out.program_number
+    if marks == "keep" and number == "keep":
+        return blocks
+    where = Location(ctx.setup.source or "<set-up>", 1, 1)
+    if marks == "always" and not target.TAPE_MARKS:
+        raise ConfigError(f"<Output tapeMarks=\"always\">: the {target.NAME} dialect has no % lines", where)
+    if isinstance(number, int) and not target.PROGRAM_NUMBERS:
+        raise ConfigError(f"<Output programNumber=\"{number}\">: the {target.NAME} dialect writes no program "
+                          "number", where)
+    return _framed(blocks, marks, number)
+
+
+def _framed(blocks: Iterator[Block], marks: str, number: str | int) -> Iterator[Block]:
+    opened = False  # a block other than a tape mark went by
+    numbered = number == "keep"  # the main program's number is settled
+    last: Block | None = None
+    for block in blocks:
+        sections = block.sections
+        if "TapeMark" in sections:
+            if marks == "never":
+                continue
+            if marks == "always" and opened and last is not None and "TapeMark" in last.sections:
+                continue  # one closing mark
+        elif not opened:
+            opened = True
+            if marks == "always" and last is None:
+                yield _line(block.line, TapeMark())
+        if not numbered and "TapeMark" not in sections:
+            numbered = True
+            if "ProgramStart" in sections:
+                block = _renumbered(block, number)
+            elif isinstance(number, int):
+                yield _line(block.line, ProgramStart(number))
+        if block.sections:
+            last = block
+            yield block
+    if marks == "always" and (last is None or "TapeMark" not in last.sections or not opened):
+        yield _line(last.line if last is not None else 1, TapeMark())
+
+
+def _renumbered(block: Block, number: str | int) -> Block:
+    """The main program's own line with the number asked for (a name it had stays, for a writer that
+    keeps it as a comment), or without it (its comment stays)."""
+    block.changed()
+    if number == "none":
+        del block.sections["ProgramStart"]
+    else:
+        old = block.sections["ProgramStart"]
+        block.sections["ProgramStart"] = ProgramStart(int(number), getattr(old, "name", None))
+    return block
+
+
+def _line(line: int, section: ProgramStart | TapeMark) -> Block:
+    block = Block(line, None)
+    block.add(section)
+    return block

@@ -1,0 +1,190 @@
+"""The set-up's line formatting (``<Output>``): block numbers, letter case, line ending, line length.
+
+Applied to the written text, line by line, after the writer (so every writer honours it alike), and
+only when the set-up asks for one of them: ``LineFormat.for_run`` returns None otherwise and the writer
+emits with no step per block. Settings are read once per translation.
+
+* ``blockNumbers``: ``keep`` (as written), ``all`` (every line with words, from ``renumberStart`` by
+  ``renumberStep``), ``tool-changes`` (only the tool-change block, or the first line the tool-change
+  template writes), ``none``. A number past ``numberMax`` wraps to ``renumberStart`` (the N address of
+  Fanuc 0i and LinuxCNC takes five digits: a sixth is an alarm, so posts wrap; a block number is a
+  label, repeated numbers only matter to jumps). A program that jumps to block numbers cannot be
+  renumbered: its targets would change (a located error). Comment lines, ``%`` and program-number,
+  O-word, ``$`` and label lines get no number.
+* ``case``: ``upper``, or ``lower`` where the target's reader accepts lower case (``LOWER_CASE``);
+  comments keep their text.
+* ``lineEnding``: ``lf`` or ``crlf`` for every line (``keep``: as read, LF for generated lines).
+* ``maxLineLength``: a longer line (without its line ending) is a located error; nothing is split.
+
+The target's own rules for a line (``Dialect.LINE_RULE``: grbl's line buffer and real-time characters)
+apply here too, to every line written - blocks, templates' output, whatever a writer emits - so no path
+around them exists: a line is rewritten as the rule says (with a warning), or refused, located.
+"""
+
+from __future__ import annotations
+
+import re
+from typing import TYPE_CHECKING, Callable, Protocol
+
+from ..control import CONTROL
+from ..errors import ConfigError, Location, ProgramError
+from ..ir import Block
+
+if TYPE_CHECKING:
+    from ..context import Context
+
+_NUMBER = re.compile(r"(/\d?\s*)?[Nn]\d+\s*")
+"""A block number at the start of a line, after an optional block delete."""
+_SLASH = re.compile(r"/\d?\s*")
+_UNNUMBERED = ("(", ";", "%", "O", "o", "$", "[", "#", "'")
+"""Lines that start so carry no block number (comments, tape marks, program numbers, O-words, ISG
+statements and labels, macro assignments stay as written)."""
+_COMMENT = re.compile(r"\([^)]*\)?|;.*")
+
+
+class LineRule(Protocol):
+    """A controller's rules for every line written to it (``Dialect.LINE_RULE``)."""
+
+    def fits(self, text: str) -> bool:
+        """Every line of ``text`` passes as it is (a quick test of the whole; False: ``fit`` each line)."""
+
+    def fit(self, line: str, eol: str) -> tuple[str, str | None, str | None]:
+        """``line`` (without its end ``eol``) as the controller must receive it, a warning when that changed
+        its text, and why the line cannot be sent at all (None: it can)."""
+
+
+class LineFormat:
+    """One translation's line formatting, wrapped around the writer's ``emit``."""
+
+    def __init__(self, ctx: "Context", target: str | None, lower_case: bool, rule: LineRule | None = None) -> None:
+        """``target``: the dialect written (None: the source's own); ``lower_case``: its reader takes
+        lower-case addresses (the dialect's ``LOWER_CASE``); ``rule``: its ``LINE_RULE``."""
+        out = ctx.setup.output
+        self.rule = rule
+        self.warned = False
+        """The rule's warning has been given (once a run)."""
+        self.formats = not (out.block_numbers == "keep" and out.case == "keep" and out.line_ending == "keep"
+                            and not out.max_line_length)
+        """The set-up asks for a format (otherwise only the rule applies)."""
+        self.ctx = ctx
+        self.mode = out.block_numbers
+        self.start = out.renumber_start or out.renumber_step
+        self.step = out.renumber_step
+        self.max = out.number_max
+        self.next = self.start
+        self.case = out.case
+        self.eol = {"keep": None, "lf": "\n", "crlf": "\r\n"}[out.line_ending]
+        self.max_length = out.max_line_length
+        self.block: Block | None = None
+        """The block whose text is being written (None: a template's)."""
+        self.template: str | None = None
+        if self.case == "lower" and target is not None and not lower_case:
+            raise ConfigError(f"<Output case=\"lower\">: the {target} reader takes upper-case addresses only",
+                              Location(ctx.setup.source or "<set-up>", 1, 1))
+
+    @classmethod
+    def for_run(cls, ctx: "Context", target: str | None, lower_case: bool,
+                rule: LineRule | None = None) -> "LineFormat | None":
+        out = ctx.setup.output
+        if (out.block_numbers == "keep" and out.case == "keep" and out.line_ending == "keep"
+                and not out.max_line_length and rule is None):
+            return None
+        return cls(ctx, target, lower_case, rule)
+
+    def wrap(self, emit: Callable[[str], object]) -> Callable[[str], object]:
+        rule = self.rule
+        if rule is not None and not self.formats:  # only the target's rule: most text passes its quick test
+            fits = rule.fits
+            format_ = self.format
+
+            def ruled(text: str) -> object:
+                return emit(text if fits(text) else format_(text))
+            return ruled
+
+        def formatted(text: str) -> object:
+            return emit(self.format(text))
+        return formatted
+
+    def format(self, text: str) -> str:
+        rule = self.rule
+        block = self.block
+        if block is not None and self.mode != "keep":
+            control = block.sections.get(CONTROL)
+            if control is not None and getattr(control, "target", None) is not None:
+                self._error("block numbers cannot be rewritten in a program that jumps to block numbers (GOTO, "
+                            "a return to a block number): the numbers it names would change")
+        number_first = self.mode == "all" or (self.mode == "tool-changes" and (
+            self.template == "tool_change" or (block is not None and "ToolChange" in block.sections)))
+        out: list[str] = []
+        for line in text.splitlines(keepends=True):
+            body = line.rstrip("\r\n")
+            eol = line[len(body):]
+            if self.mode != "keep":
+                body, number_first = self._number(body, number_first)
+            if self.case != "keep":
+                body = _recase(body, self.case)
+            if rule is not None:
+                body = self._ruled(rule, body, self.eol if self.eol is not None and eol else eol)
+            if self.max_length and len(body) > self.max_length:
+                self._error(f"a written line is {len(body)} characters long, more than <Output maxLineLength="
+                            f"\"{self.max_length}\">: {body[:40]}...")
+            if self.eol is not None and eol:
+                eol = self.eol
+            out.append(body + eol)
+        return "".join(out)
+
+    def _number(self, body: str, number: bool) -> tuple[str, bool]:
+        """Drop the line's block number; give it the next one when ``number`` and it takes one. Returns
+        the line and whether the next line is still to be numbered (``all``: always)."""
+        head = body.lstrip()
+        if not head or head.startswith(_UNNUMBERED):
+            return body, number
+        match = _NUMBER.match(head)
+        slash = ""
+        if match is not None:
+            slash = (match.group(1) or "").strip()
+            head = head[match.end():]
+            if not head.strip() and not number:
+                return (slash + " " if slash else ""), number
+        else:
+            slash_match = _SLASH.match(head)
+            if slash_match is not None:
+                slash, head = slash_match.group(0).strip(), head[slash_match.end():]
+        if not number:
+            return (f"{slash} " if slash else "") + head, False
+        text = f"N{self.next}"
+        self.next += self.step
+        if self.next > self.max:
+            self.next = self.start
+        return (f"{slash} " if slash else "") + text + (" " + head if head else ""), self.mode == "all"
+
+    def _ruled(self, rule: LineRule, body: str, eol: str) -> str:
+        line, warning, problem = rule.fit(body, eol)
+        if problem is not None:
+            self._error(problem)
+        elif warning is not None and not self.warned:
+            self.warned = True
+            self.ctx.diagnostics.warn(warning, self._where())
+        return line
+
+    def _error(self, message: str) -> None:
+        self.ctx.diagnostics.error(ProgramError(message, self._where()))
+
+    def _where(self) -> Location:
+        if self.block is not None:
+            return self.ctx.at(self.block)
+        setup = self.ctx.setup
+        return Location(setup.source or "<set-up>", setup.template_lines.get(self.template or "", 1), 1)
+
+
+def _recase(body: str, case: str) -> str:
+    """``body`` in upper or lower case outside its comments."""
+    change = str.upper if case == "upper" else str.lower
+    parts: list[str] = []
+    at = 0
+    for match in _COMMENT.finditer(body):
+        parts.append(change(body[at:match.start()]))
+        parts.append(match.group(0))
+        at = match.end()
+    parts.append(change(body[at:]))
+    return "".join(parts)

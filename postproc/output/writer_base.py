@@ -1,0 +1,220 @@
+"""The writer base class: turns a dialect's blocks into text, with the set-up's templates, line format
+and output map around every block.
+
+Its own module (re-exported by ``postproc.dialect``) so that the per-block loop ``Writer.write`` is
+compiled with the RS274 word writer that subclasses it (``pyproject.toml`` ``[tool.postproc] compiled``).
+"""
+
+from __future__ import annotations
+
+import abc
+from typing import Any, Callable, Iterable, Protocol, TextIO, Final
+
+from mypy_extensions import mypyc_attr
+
+from ..context import Context
+from ..cycle_words import CycleWords
+from ..errors import PostprocError, UnsupportedError
+from ..ir import Block, one_line
+from .line_format import LineFormat
+from .partial_block import write_without_refused
+
+@mypyc_attr(allow_interpreted_subclasses=True)
+class WrittenDialect(Protocol):
+    """What a writer reads of the dialect it writes: a ``postproc.dialect.Dialect`` subclass (the class
+    itself), its name and the capability flags writers read. Declared here so the writers' base needs
+    nothing from ``postproc.dialect``, which builds on it (and re-exports ``Writer``)."""
+
+    NAME: str
+    LOWER_CASE: bool
+    DWELL_UNIT: str
+    CYCLE_WORDS: CycleWords | None
+    CYCLE_SEMANTICS: str
+    MACHINE_TYPES: frozenset[str]
+
+    def family(self) -> str: ...
+
+
+@mypyc_attr(allow_interpreted_subclasses=True)
+class TemplateSource(Protocol):
+    """The set-up's templates as the writer meets them (``postproc.lowering.sequences.Sequences``): text to write
+    at the header and footer, and whether blocks carry a template's output (``Generated``)."""
+
+    per_block: bool
+
+    def render(self, name: str) -> str: ...
+
+
+@mypyc_attr(allow_interpreted_subclasses=True)
+class _NoTemplates:
+    per_block = False
+
+    def render(self, name: str) -> str:
+        return ""
+
+
+_NO_TEMPLATES: Final = _NoTemplates()
+
+
+def _only_comments(sections: dict[str, Any]) -> bool:
+    return len(sections) == 1 and "Comments" in sections
+
+
+@mypyc_attr(allow_interpreted_subclasses=True)
+class Writer(abc.ABC):
+    """Turns blocks into text. Subclasses implement ``write_block``."""
+
+    def __init__(self, ctx: Context, source_dialect: str, target: WrittenDialect | None = None) -> None:
+        self.ctx = ctx
+        self.source_dialect = source_dialect
+        self.target = target
+        """The dialect written, whose capability flags the writer reads (None: every flag holds)."""
+        self.lane: Callable[[Block], str | None] | None = None
+        """A speed-only shortcut the run installed (``postproc.fast``): ``write`` offers it a canonical source
+        block first; it writes what ``write_block`` would, or answers None."""
+        self.set_aside: list[str] | None = None
+        """Where ``write`` puts each block's text while the writer sets a part of the program aside to write
+        it elsewhere (a subprogram the dialect writes after the main program, in ``finish``); None: out."""
+        self.opening: bool | None = None
+        """Whether the written program opened with a tape mark ('%'): None until ``write`` has written its
+        first block that does more than comment, then whether that block was a tape mark (a writer reads
+        it while that block is written as the state before it)."""
+        self.last_line = 0
+        """The source line of the last block ``write`` was given (0: none yet), for ``finish``'s notes."""
+
+    def capable(self, flag: str) -> bool:
+        """Whether the target has the capability ``flag`` (an UPPER_CASE attribute of ``Dialect``, read by
+        name: every flag, not only those ``WrittenDialect`` declares)."""
+        return self.target is None or bool(getattr(self.target, flag))
+
+    def write(self, blocks: Iterable[Block], out: TextIO) -> None:
+        """Write every block. A block the target cannot express is an error, or with
+        ``--on-unsupported warn`` a warning and the source block written as a comment.
+        The header goes after an opening tape mark and the footer before the closing one; a block a
+        set-up template wrote (``postproc.lowering.sequences``) is written as it is."""
+        write_block = self.write_block
+        lane = self.lane
+        sequences = self.sequences()
+        output_map = self.ctx.run_data.get("output_map")
+        emit = out.write if output_map is None else output_map.writer(out)
+        target = self.target
+        line_format = LineFormat.for_run(self.ctx, None if target is None else target.NAME,
+                                         target is None or target.LOWER_CASE, getattr(target, "LINE_RULE", None))
+        if line_format is not None:
+            emit = line_format.wrap(emit)
+        generated = sequences.per_block
+        footer: str | None = None
+        started = False
+        line = 0
+        for block in blocks:
+            line = block.line
+            tape_mark = "TapeMark" in block.sections
+            if not started and not tape_mark:
+                started = True
+                self._emit_template(emit, output_map, line_format, "header", sequences.render("header"))
+            elif started and tape_mark and footer is None:
+                footer = sequences.render("footer")
+                self._emit_template(emit, output_map, line_format, "footer", footer)
+            if generated and "Generated" in block.sections:
+                text_of = block.sections["Generated"]
+                if line_format is not None:
+                    line_format.block, line_format.template = None, getattr(text_of, "template")
+                self._emit_template(emit, output_map, line_format, getattr(text_of, "template"), getattr(text_of, "text"))
+                continue
+            failed = False
+            try:
+                text = lane(block) if lane is not None and block.canonical else None
+                if text is None:
+                    text = write_block(block)
+            except UnsupportedError as err:
+                text = self.unsupported_block(block, err)
+            except PostprocError as err:
+                self.ctx.diagnostics.error(err.located(self.ctx.at(block)))
+                text = None
+                failed = True
+            if self.opening is None and block.sections and not _only_comments(block.sections):
+                self.opening = tape_mark
+            if failed:
+                continue
+            set_aside = self.set_aside
+            if set_aside is not None:
+                if text:
+                    set_aside.append(text)
+                continue
+            if text is not None:
+                if (not text or text.isspace()) and block.text is not None and (block.words or block.sections):
+                    text = self.nothing_written(block) if not self._failed() else text
+                if output_map is not None:
+                    output_map.source = block.line
+                if line_format is not None:
+                    line_format.block, line_format.template = block, None
+                emit(text)
+        if not started:
+            self._emit_template(emit, output_map, line_format, "header", sequences.render("header"))
+        self.last_line = line
+        tail = self.finish()
+        if tail:
+            emit(tail)
+        if footer is None:
+            self._emit_template(emit, output_map, line_format, "footer", sequences.render("footer"))
+
+    @staticmethod
+    def _emit_template(emit: Callable[[str], object], output_map: Any, line_format: LineFormat | None, name: str,
+                       text: str) -> None:
+        if not text:
+            return
+        if line_format is not None:
+            line_format.block, line_format.template = None, name
+        if output_map is not None:
+            output_map.source = None
+            output_map.template = name
+        emit(text)
+        if output_map is not None:
+            output_map.template = None
+
+    def sequences(self) -> "TemplateSource":
+        """The translation's templates, which ``translate`` puts in the context (``postproc.lowering.sequences``);
+        a writer used on its own writes none."""
+        found = self.ctx.run_data.get("sequences")
+        return found if found is not None else _NO_TEMPLATES
+
+    def unsupported_block(self, block: Block, err: UnsupportedError) -> str | None:
+        """An error; with ``--on-unsupported warn``, the block without what the target cannot express and
+        what depends on it (``postproc.output.partial_block``), or, where nothing can be kept, as a comment."""
+        err.located(self.ctx.at(block))
+        if self.ctx.on_unsupported == "warn":
+            kept = write_without_refused(self, block, err)
+            if kept is not None:
+                return kept
+            self.ctx.diagnostics.warn(err.message + "; written as a comment", err.location)
+            return self.comment_out(block)
+        self.ctx.diagnostics.error(err)
+        return None
+
+    def _failed(self) -> bool:
+        """The run has errors (its output is discarded): a block its reading refused says nothing more."""
+        diagnostics = self.ctx.diagnostics
+        return bool(diagnostics.errors or diagnostics.consequences)
+
+    def nothing_written(self, block: Block) -> str:
+        """A source block whose words all mean nothing to the target (grbl's G64: it always blends) is
+        written as a comment with a warning, never as an empty line (a generated block that writes
+        nothing, such as an expansion's cycle cancel for grbl, has no source line to keep)."""
+        err = PostprocError(f"nothing in this block has a meaning in {self.target.NAME if self.target else 'the target'}"
+                            "; written as a comment", self.ctx.at(block))
+        self.ctx.diagnostics.warn(err.message, err.location)
+        text = (block.text or " ".join(a + n for a, n in block.words)).replace("(", "[").replace(")", "]")
+        return f"(LINE {block.line}: {text.strip()})" + (block.eol or "\n")
+
+    def comment_out(self, block: Block) -> str:
+        """The source block as a comment line (for ``--on-unsupported warn``)."""
+        text = one_line(block.text or " ".join(a + n for a, n in block.words)).replace("(", "[").replace(")", "]")
+        return f"(UNSUPPORTED LINE {block.line}: {text.strip()})" + (block.eol or "\n")
+
+    @abc.abstractmethod
+    def write_block(self, block: Block) -> str | None:
+        """The text of one block (with its end of line), or None to write nothing."""
+
+    def finish(self) -> str:
+        """Text to append after the last block (e.g. a footer)."""
+        return ""

@@ -1,0 +1,122 @@
+"""The machine's geometry in a set-up: axis travel and home (``<Axes>``), work offsets (``<WorkOffsets>``)
+and tool offsets (``<Tools>``), in the set-up's machine units (``<Machine units>``).
+
+Kept apart from ``postproc.setup.machine_setup`` (the controller's parameters) because only the travel check
+(``postproc.simulate.travel``) reads them: they say where the program's points are on the machine.
+Each entry is keyed (axis letter, work-system number, tool number), so a set-up that ``extends`` another
+overrides one entry, or one attribute of one entry, without repeating the rest.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any, ClassVar, Literal
+
+from .record import MAX_COORDINATE, pydantic_config, setting, values
+
+__all__ = ["MAX_COORDINATE", "AxisTravel", "WorkOffsetData", "ToolData", "CONTAINERS", "entry_values"]
+
+ROTARY_AXES = frozenset("ABC")
+AXIS_LETTERS = "XYZABCUVW"
+
+
+def coordinate(alias: str | None = None) -> Any:
+    """An optional length or angle (absent: unknown), bounded by ``MAX_COORDINATE``."""
+    return setting(None, ge=-MAX_COORDINATE, le=MAX_COORDINATE, alias=alias)
+
+
+@dataclass(frozen=True)
+class Entry:
+    """One keyed entry, stored as the attributes of one element (a plain record: see
+    ``postproc.setup.record``)."""
+
+    __pydantic_config__: ClassVar[dict[str, Any]] = pydantic_config(None)
+    TAG: ClassVar[str] = ""
+    KEY: ClassVar[str] = ""
+    """The attribute naming the entry (an ``extends`` child overrides the entry with the same key)."""
+
+    def key(self) -> str:
+        return str(getattr(self, self.KEY))
+
+
+@dataclass(frozen=True)
+class AxisTravel(Entry):
+    """``<Axis name="X" min="-762.0" max="0.0" home="0.0"/>``: the axis's travel in machine coordinates
+    and its reference (home) position, where G28 goes."""
+
+    TAG = "Axis"
+    KEY = "name"
+    name: Literal["X", "Y", "Z", "A", "B", "C", "U", "V", "W"]
+    minimum: float | None = coordinate(alias="min")
+    maximum: float | None = coordinate(alias="max")
+    """Travel limits (machine coordinates). A rotary axis without them turns without limit."""
+    home: float | None = coordinate()
+    """The reference position (machine coordinates); unknown when absent (a G28 on a checked axis is
+    then an error rather than a guess)."""
+
+    def __post_init__(self) -> None:
+        if self.minimum is not None and self.maximum is not None and self.minimum >= self.maximum:
+            raise ValueError(f"axis {self.name}: min {self.minimum:g} is not below max {self.maximum:g}")
+        if self.home is not None and not self.within(self.home):
+            raise ValueError(f"axis {self.name}: home {self.home:g} is outside the travel")
+
+    def within(self, value: float) -> bool:
+        return ((self.minimum is None or value >= self.minimum)
+                and (self.maximum is None or value <= self.maximum))
+
+    def limited(self) -> bool:
+        return self.minimum is not None or self.maximum is not None
+
+
+@dataclass(frozen=True)
+class WorkOffsetData(Entry):
+    """``<Offset number="1" x="-400.0" y="-250.0" z="-500.0"/>``: where a work system's zero is in machine
+    coordinates, as the operator set it (1 = G54 ... 6 = G59; 0 = the external offset added to all)."""
+
+    TAG = "Offset"
+    KEY = "number"
+    number: int = setting(ge=0, le=6)
+    x: float | None = coordinate()
+    y: float | None = coordinate()
+    z: float | None = coordinate()
+    a: float | None = coordinate()
+    b: float | None = coordinate()
+    c: float | None = coordinate()
+    u: float | None = coordinate()
+    v: float | None = coordinate()
+    w: float | None = coordinate()
+
+    def axes(self) -> dict[str, float]:
+        """Axis letter -> offset, for the axes the entry gives (an absent axis is unknown, not zero)."""
+        return {a: v for a in AXIS_LETTERS if (v := getattr(self, a.lower())) is not None}
+
+
+@dataclass(frozen=True)
+class ToolData(Entry):
+    """``<Tool number="1" length="152.4" radius="5.0"/>`` (a mill's length register H1 and radius register
+    D1) or ``<Tool number="1" x="-2.5" z="-1.2"/>`` (a lathe's offset 01 of ``T0101``): what the controller adds to the programmed
+    point while the offset is in force."""
+
+    TAG = "Tool"
+    KEY = "number"
+    number: int = setting(ge=0, le=9999)
+    length: float | None = coordinate()
+    """G43/G44 tool length: G43 adds it to Z, G44 subtracts it."""
+    radius: float | None = coordinate()
+    """Cutter radius G41/G42 offsets the path by (register D n; a negative radius puts the cutter on the
+    other side, as Fanuc and LinuxCNC do). A LinuxCNC tool table gives diameters: halve them."""
+    x: float | None = coordinate()
+    z: float | None = coordinate()
+    """Lathe geometry offsets, added to X (as the set-up's X: diameter on a diameter lathe) and Z."""
+
+
+CONTAINERS: dict[str, type[Entry]] = {"Axes": AxisTravel, "WorkOffsets": WorkOffsetData, "Tools": ToolData}
+"""Container element -> the entry class of its children."""
+
+
+def entry_values(entry: Entry, only: set[str] | None = None) -> dict[str, Any]:
+    """The entry's attributes as XML writes them (aliases, defaults left out), key first."""
+    written = values(entry, by_alias=True, exclude_none=True)
+    if only is not None:
+        written = {k: v for k, v in written.items() if k in only or k == entry.KEY}
+    return written
