@@ -206,6 +206,9 @@ class Dialect:
     """The motion mode ("rapid", "linear") a program is in before it programs one, for a controller that
     powers on in one (the set-up's ``<Controller startMotion>`` may say the other); None: axis words need
     a motion code first."""
+    MIST_COOLANT: ClassVar[bool] = True
+    """The controller runs mist coolant in every build; False: only in a build that has it, which the set-up
+    says with ``<Controller mistCoolant="true">`` (otherwise mist coolant is refused, never written)."""
     LOWER_CASE: ClassVar[bool] = False
     """The reader takes lower-case addresses (``g1 x10``): the set-up's ``<Output case="lower">`` is
     refused otherwise."""

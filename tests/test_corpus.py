@@ -27,8 +27,6 @@ KNOWN_FAILURES: dict[tuple[str, str], str] = {
     ("linuxcnc/comp.ngc", ""): "cutter compensation in the ZX plane is not simulated",
     ("linuxcnc/g10_l1_l10.ngc", ""): "G10 L1/L10 tool offsets along X and Y (and their #5401 parameters) are not "
                                      "simulated; only Z and R are (issue 26 item 3: tapping)",
-    ("linuxcnc/gmoccapy_two_tools_comp.ngc", "grbl"): "grbl: M7 (mist) is written for every build, but a grbl "
-                                                     "1.1 built without ENABLE_M7 (the default) refuses it",
 }
 """(program, target or '' for the source check) -> the defect, as found by this corpus."""
 

@@ -51,6 +51,9 @@ class SectionWords(NumberWriter):
         """The code table written (a dialect with one per machine type picks it from the context)."""
         self.named_numbered = False
         """A named program's start was written with ``UNNAMED_PROGRAM_NUMBER`` (a second one is a comment)."""
+        mist = ctx.setup.controller.mist_coolant
+        self.mist_coolant = (target is None or target.MIST_COOLANT) if mist is None else mist
+        """Mist coolant may be written: the target runs it in every build, or the set-up says this one does."""
 
     def table(self) -> CodeTable:
         """The code table to write with; the dialect's ``CODES`` unless it has one per machine type."""
@@ -249,6 +252,9 @@ class SectionWords(NumberWriter):
         return [code]
 
     def coolant_words(self, s: Any, block: Block) -> list[str]:
+        if s.mode == "mist" and not self.mist_coolant:
+            self.unsupported(f"mist coolant: {self.DIALECT} runs it only in a build that has it (say so with "
+                             "<Controller mistCoolant=\"true\"/> in the set-up)", block)
         return self._code("coolant", s.mode, f"coolant {s.mode}", block)
 
     def program_control_words(self, s: Any, block: Block) -> list[str]:

@@ -254,6 +254,10 @@ class ControllerSettings(SetupGroup):
     (``Dialect.MOTION_AT_START``; Fanuc: G00 or G01 by parameter 3402#0 G01). None: the dialect's
     default. A dialect without a power-on mode (axis words need a motion code first) ignores it."""
 
+    mist_coolant: bool | None = None
+    """The controller's build runs mist coolant. None: as the dialect says (``Dialect.MIST_COOLANT``: every
+    build but grbl's, where it takes ENABLE_M7)."""
+
     def dwell_seconds_rule(self) -> bool:
         return self.variant == "haas" if self.dwell_seconds is None else self.dwell_seconds
 

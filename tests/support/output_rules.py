@@ -33,8 +33,8 @@ from .linuxcnc_rules import available as rs274_available, linuxcnc_problems
 
 
 def _grbl(text: str, setup: MachineSetup) -> list[str]:
-    """Stock grbl 1.1, with M19 where the set-up says the machine has it."""
-    return grbl_problems(text, m19=setup.cycles.orientation == "m19")
+    """Stock grbl 1.1, with M19 and M7 where the set-up says the machine's build has them."""
+    return grbl_problems(text, m19=setup.cycles.orientation == "m19", m7=bool(setup.controller.mist_coolant))
 
 
 def _linuxcnc(text: str, setup: MachineSetup) -> list[str]:
@@ -73,7 +73,7 @@ def problems(target: str, text: str, setup: MachineSetup) -> list[str]:
     checker = CHECKERS.get(target)
     if checker is None:
         return []
-    key = (target, text, setup.cycles.orientation)
+    key = (target, text, setup.cycles.orientation, setup.controller.mist_coolant)
     found = _seen.get(key)
     if found is None:
         found = _seen[key] = checker(text, setup)
