@@ -84,10 +84,10 @@ class Grbl(Dialect):
     STOPS_BEFORE_MOTION = True
     """The RS274/NGC order of execution: M5 and M9 act before the block's motion."""
     FEED_BEFORE_UNITS = False
+    """grbl reads F in the block's new units [K: grbl gcode.c converts F by the block's G20/G21]."""
     MIST_COOLANT = False
     """M7 runs only in a build with ENABLE_M7, off by default [K: grbl 1.1 config.h ``ENABLE_M7``; gcode.c
     answers error 20 without it]: a set-up says ``<Controller mistCoolant="true">`` for such a build."""
-    """grbl reads F in the block's new units [K: grbl gcode.c converts F by the block's G20/G21]."""
     LOWERING = (write_tool_lengths, resolve_cutter_compensation, lower_for_lean_controller)
     """Rewrites into what grbl runs: a G43 H as ``G43.1 Z<length>`` from the set-up's tool table
     (``lengths.py``); G41/G42 as the compensated path, where the source's rules are modelled
