@@ -144,10 +144,23 @@ class SectionWords(NumberWriter):
             words.append("H" + self.register(s.register, block))
         return words
 
+    WRITES_PATH_TOLERANCE: ClassVar[bool] = False
+    """The dialect writes a cutting mode's blending tolerances (LinuxCNC's ``P``/``Q``); one that does not
+    warns where a program gave them, as the tolerance is left to the machine's own parameters."""
+
     def path_control_words(self, s: Any, block: Block) -> list[str]:
         if s.one_shot:
             return self._code("path_once", s.mode, "a one-shot exact stop", block)
+        self.note_unwritten_tolerance(s, block)
         return self._code("path", s.mode, f"path control {s.mode}", block)
+
+    def note_unwritten_tolerance(self, s: Any, block: Block) -> None:
+        """Warn where a program's blending tolerances are not written (``WRITES_PATH_TOLERANCE``)."""
+        if not self.WRITES_PATH_TOLERANCE and (s.tolerance is not None or s.naive is not None):
+            given = ", ".join(f"{name} {value:g}" for name, value in (("path", s.tolerance), ("naive-CAM", s.naive))
+                              if value is not None)
+            self.ctx.diagnostics.warn(f"the blending tolerance ({given}) is not written: {self.DIALECT}'s cutting "
+                                      "mode blends as the machine's own parameters say", self.ctx.at(block))
 
     MACHINE_MOVES: ClassVar[frozenset[str]] = frozenset(("rapid", "linear"))
     """Motion modes a block in machine coordinates may move in (RS274/NGC: G0 or G1 in force)."""

@@ -91,6 +91,7 @@ class GrblWriter(WordWriter):
 
     def path_control_words(self, s: Any, block: Block) -> list[str]:
         if not s.one_shot and s.mode == "cutting":
+            self.note_unwritten_tolerance(s, block)  # grbl always blends, by its junction deviation setting
             return []
         return super().path_control_words(s, block)
 

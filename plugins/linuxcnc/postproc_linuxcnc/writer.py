@@ -164,6 +164,9 @@ class LinuxcncWriter(WordWriter):
             self.unsupported("G28/G30 with cutter compensation on (rs274: \"Cannot use g28 or g30 with cutter "
                              "radius comp\")", block)
 
+    WRITES_PATH_TOLERANCE: ClassVar[bool] = True
+    """``G64 P.. Q..`` (``path_control_words``)."""
+
     def path_control_words(self, s: Any, block: Block) -> list[str]:
         """``G64 P.. Q..`` with the blending tolerances the program gave (``block_syntax``)."""
         words = super().path_control_words(s, block)
