@@ -65,6 +65,10 @@ KNOWN_DEFECTS: list[tuple[str, str | None, re.Pattern[str]]] = [
                 r"cannot be simulated")),
     ("LinuxCNC codes kept verbatim (G76 threading, G87/G88 with their own words) are not simulated", None,
      re.compile(r"^translated, but verify fails: in\.nc:\d+:\d+: error: G\d+ \((RS274/NGC|threading).*cannot be simulated")),
+    ("ISG P parameter arrays (P100[2]=5) are kept verbatim between ISG programs and not simulated (not "
+     "modelled), so an ISG to ISG copy cannot be verified (found by the derandomized ISG fuzz in CI)", "isg",
+     re.compile(r"^translated, but verify fails: in\.nc:\d+:\d+: error: P parameter arrays \(not modelled\) "
+                r"cannot be simulated")),
     ("ISG codes kept verbatim (mirroring G20-G23, software limits G98/G99, homing G74, preset G92, G80-G89 calls, "
      "blending) copy to ISG unchanged and are not simulated", "isg",
      re.compile(r"^translated, but verify fails: in\.nc:\d+:\d+: error: G\d+ \([^)]*\) cannot be simulated")),
