@@ -22,6 +22,7 @@ from .setup.machine_setup import MachineSetup
 from .source_map import OutputMap
 from .syntax import Pipeline
 from .context import Context
+from .transforms import ProgramOptions, ProgramTransform, program_options, transform_program
 
 
 
@@ -30,11 +31,15 @@ def translate(lines: Iterable[str], out: TextIO, *, file: str, source: str, targ
               setup: MachineSetup | None = None, registry: Registry | None = None,
               on_unsupported: str = "error", level: ErrorLevel = ErrorLevel.RAISE,
               diagnostics: Diagnostics | None = None, defines: dict[str, str] | None = None,
-              output_map: OutputMap | None = None) -> Diagnostics:
+              output_map: OutputMap | None = None, units: str | None = None,
+              transform: str | ProgramTransform | None = None) -> Diagnostics:
     """Translate a program from ``source`` to ``target`` dialect, streaming into ``out``.
 
     ``defines`` are the user variables the set-up's templates see (``--define``); ``output_map``, when
-    given, is filled with the source line (or template) of every written line.
+    given, is filled with the source line (or template) of every written line. ``units`` ('mm' or
+    'inch') converts the whole program, ``transform`` (``postproc.transforms.spec``'s text, or one parsed)
+    moves it (``postproc.transforms``); a program that computes is then flattened where the target can
+    take it no other way, and refused where it cannot be flattened.
 
     Raises ``ErrorList`` when the program has errors (``out`` then holds a partial result the caller
     must discard); returns the diagnostics (warnings) otherwise.
@@ -43,12 +48,13 @@ def translate(lines: Iterable[str], out: TextIO, *, file: str, source: str, targ
     setup = setup or MachineSetup()
     diagnostics = diagnostics or Diagnostics(level)
     src, dst = registry.dialect(source), registry.dialect(target)
+    options = program_options(units, transform)
     if dst.WRITER is None:
         raise UsageError(f"the {dst.NAME} dialect cannot be written (it is read-only)")
     with gc_paused():
         def prepare(ctx: Context) -> None:
             ctx.on_unsupported = on_unsupported
-            ctx.keep_check = _keep_check(src, dst, ctx, registry)
+            ctx.keep_check = _keep_check(src, dst, ctx, registry, options)
             ctx.run_data[TARGET_OMITS_VACANT] = _omits_vacant_words(dst, setup)
 
         if setup.travel_limited():
@@ -56,13 +62,14 @@ def translate(lines: Iterable[str], out: TextIO, *, file: str, source: str, targ
             lines = list(lines)  # read twice: the travel check simulates the source first
             check_travel(lines, file=file, dialect=src, setup=setup, diagnostics=diagnostics,
                          on_unsupported=on_unsupported, registry=registry)
-        mode = "keep" if src.NAME == dst.NAME else "auto" if dst.PROGRAMS else "execute"
+        mode = "keep" if src.NAME == dst.NAME and not options.active() else "auto" if dst.PROGRAMS else "execute"
         ctx, blocks = read_blocks(lines, file, src, setup, diagnostics, program_mode=mode, prepare=prepare)
         sequences = Sequences(ctx, src.NAME, dst, defines)
         ctx.run_data["sequences"] = sequences
         if output_map is not None:
             ctx.run_data["output_map"] = output_map
         lowered = lower_for(sequences.before_lowering(blocks), ctx, dst, on_unsupported, registry.lowerings)
+        lowered = transform_program(lowered, ctx, options)
         writer = dst.WRITER(ctx, src.NAME, dst)
         from .fast import install as install_fast_lane  # (imported with the writer's modules, not at start)
         install_fast_lane(writer)
@@ -71,8 +78,8 @@ def translate(lines: Iterable[str], out: TextIO, *, file: str, source: str, targ
     return diagnostics
 
 
-def _keep_check(src: type[Dialect], dst: type[Dialect], ctx: Context,
-                registry: Registry) -> Callable[[list[Block]], str | None]:
+def _keep_check(src: type[Dialect], dst: type[Dialect], ctx: Context, registry: Registry,
+                options: ProgramOptions) -> Callable[[list[Block]], str | None]:
     """A dry run deciding whether a program that computes can reach ``dst`` symbolically: the rest of
     the program goes through the reading steps after the interpreter step, lowering and ``dst``'s
     writer, from a copy of the modal state where the program stands; the first error found (a
@@ -90,7 +97,7 @@ def _keep_check(src: type[Dialect], dst: type[Dialect], ctx: Context,
         trial.run_data["dry_run"] = True  # what it writes is a part of the program, read back and discarded
         steps = [step for step in src.pipeline(ctx.setup).steps if not isinstance(step, ProgramSyntax)]
         blocks = Pipeline(src.NAME, steps).run(body, trial)
-        lowered = lower_for(blocks, trial, dst, "error", registry.lowerings)
+        lowered = transform_program(lower_for(blocks, trial, dst, "error", registry.lowerings), trial, options)
         writer = dst.WRITER(trial, src.NAME, dst) if dst.WRITER is not None else None
         text = io.StringIO()
         try:

@@ -1,0 +1,14 @@
+"""Program transforms the user asks for (issue #27): ``--units mm|inch`` and ``--transform``.
+
+``spec`` reads the transform text into one affine map (``postproc.frames.affine``), ``carry`` moves every
+point of a program through it, ``units`` converts every length, ``apply`` runs them on a translation's
+lowered blocks; ``postproc.simulate.verify`` compares an output against its source's toolpath moved by the
+same map.
+"""
+
+from __future__ import annotations
+
+from .apply import ProgramOptions, program_options, transform_program
+from .spec import ProgramTransform, parse_transform
+
+__all__ = ["ProgramOptions", "ProgramTransform", "parse_transform", "program_options", "transform_program"]

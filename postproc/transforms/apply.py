@@ -1,0 +1,52 @@
+"""The user's program transforms (``translate --units --transform``), run on the lowered blocks before the
+writer: first the map (in the program's own units, as it tracks them), then the units conversion.
+
+They run last so that every step before them (frames evaluated, cycles expanded, compensation resolved)
+has made the blocks the target gets: what they carry is what is written.
+"""
+
+from __future__ import annotations
+
+from typing import Iterator
+
+from ..context import Context
+from ..errors import UsageError
+from ..ir import Block
+from ..records import record
+from .carry import move_program
+from .spec import ProgramTransform, parse_transform
+from .units import convert_units
+
+
+@record(frozen=True, slots=True)
+class ProgramOptions:
+    """What the user asked a translation to do to the program besides translating it."""
+
+    units: str | None = None
+    """'mm' or 'inch': the output's units (None: as the program has them)."""
+    transform: ProgramTransform | None = None
+
+    def active(self) -> bool:
+        return self.units is not None or self.transform is not None
+
+
+def program_options(units: str | None = None, transform: str | ProgramTransform | None = None) -> ProgramOptions:
+    """Checked options: a ``UsageError`` for units other than mm or inch, or a transform text that does not
+    read (``postproc.transforms.spec``)."""
+    if units is not None and units not in ("mm", "inch"):
+        raise UsageError(f"--units is mm or inch, not {units!r}")
+    if isinstance(transform, str):
+        transform = parse_transform(transform)
+    return ProgramOptions(units, transform)
+
+
+def transform_program(blocks: Iterator[Block], ctx: Context, options: ProgramOptions) -> Iterator[Block]:
+    """The map, then the units (each only when asked for)."""
+    if options.active() and ctx.lathe:
+        raise UsageError("--units and --transform take mill programs only (a lathe's diameters, its cycles and "
+                         "its surface speed are not converted)")
+    if options.transform is not None:
+        blocks = move_program(blocks, ctx, options.transform)
+    if options.units is not None:
+        blocks = convert_units(blocks, ctx, options.units)
+    return blocks

@@ -1,0 +1,287 @@
+"""move_program: the user's ``--transform`` applied to every point of a program, in its work coordinates.
+
+It runs after the target's lowering (``postproc.transforms.apply``), on the blocks the writer gets: the
+program's own frames are evaluated by then (a target of another dialect), cycles the target cannot run
+are expanded (their moves carried like any), compensation a target lacks is resolved. Each move goes
+through the map as the frames lowering carries a move (``postproc.frames.lowering``): an absolute point
+to its absolute image on every axis the map mixes into (``X10`` under a rotation writes X and Y: an omitted
+coordinate it needs is the tracked program position, or a located error), an increment as its image
+vector; an arc keeps its exact centre (its offsets turned as vectors), its radius is scaled, a mirror
+turns its direction over, and a map that makes it an ellipse (unequal scaling in its plane, a rotation
+out of it) is a located error. A mirror of the XY plane swaps cutter compensation left and right.
+
+A hole cycle the target runs stays a cycle: its hole position is carried like a point, its levels (R, the
+bottom) by the drilling axis's own scale and shift (an increment by the scale alone), a peck depth by the
+scale; a map that tilts the drilling axis, turns it over or turns a shifting cycle's shift is refused.
+
+What cannot be carried exactly is a located error: the program's frame commands kept as written, a work
+system rotation, a reference return or a machine-coordinate move on an axis the map changes, a rotary or
+parallel axis under a map that is more than a translation, a computed word.
+"""
+
+from __future__ import annotations
+
+import copy
+from typing import Final, Iterator
+
+from ..context import Context
+from ..cycles.section import CannedCycle
+from ..errors import PostprocError, ProgramError
+from ..expr import Expr
+from ..frames.affine import EXACT, INDEX, XYZ, Affine
+from ..frames.frame import PLANE_AXES
+from ..ir import Block, CompoundMotion, CutterCompensation, DataSetting, Motion, Section
+from ..state import MM_PER_INCH, ModalState
+from .spec import ProgramTransform
+from .words import COMPUTED, COMPUTES, INERT, SYMBOLIC, cycle_roles
+
+WHAT: Final = "transformed"
+_MOVES: Final = frozenset(("rapid", "linear", "cw", "ccw"))
+_TURNED: Final = {"cw": "ccw", "ccw": "cw"}
+_SWAPPED: Final = {"left": "right", "right": "left"}
+_OWN: Final = frozenset(("Units", "Feed", "ToolLengthOffset", "PathControl"))
+"""Sections this step leaves alone although they hold lengths (a feed is a speed, a tool length is the
+tool's); the units step converts them."""
+
+
+def move_program(blocks: Iterator[Block], ctx: Context, transform: ProgramTransform) -> Iterator[Block]:
+    """The lowering step (see the module docstring); each error is reported at its block."""
+    mover = ProgramMover(ctx, transform.map)
+    report = ctx.diagnostics.error
+    for block in blocks:
+        if block.sections:
+            try:
+                mover.block(block)
+            except PostprocError as err:
+                report(err.located(ctx.at(block)))
+                continue
+        yield block
+
+
+class ProgramMover:
+    """The map, the modal state the blocks leave, and the program position (work coordinates, mm)."""
+
+    def __init__(self, ctx: Context, fmap: Affine) -> None:
+        self.map = fmap
+        self.modal = ModalState()
+        machine = ctx.setup.machine
+        start = {"X": machine.start_x, "Y": machine.start_y, "Z": machine.start_z}
+        self.p: dict[str, float | None] = {a: float(start[a]) * machine.mm() for a in XYZ}
+        self.linear = fmap.m != Affine().m
+        self.cycle_words = ctx.cycle_words
+
+    @property
+    def scale(self) -> float:
+        return MM_PER_INCH if self.modal.units == "inch" else 1.0
+
+    def block(self, block: Block) -> None:
+        s = block.sections
+        for key in s:
+            if key in COMPUTES:
+                raise ProgramError(SYMBOLIC.format(what=WHAT))
+            if key not in INERT and key not in _OWN and key not in _HANDLED:
+                raise ProgramError(f"{key} cannot be {WHAT} (it is not carried through a program transform)")
+        self.modal.apply(s)
+        changed = False
+        setting = s.get("DataSetting")
+        if isinstance(setting, DataSetting) and setting.table == "work_offset" and "R" in setting.values:
+            raise ProgramError(f"{setting.describe()}: a work system rotation kept for the target cannot be "
+                               f"{WHAT} (the target would turn the transformed program again)")
+        if "WorkOffset" in s or isinstance(setting, DataSetting) and setting.table.startswith("work_offset"):
+            self.p = dict.fromkeys(XYZ)  # the tool stays; where it stands in the new system is not known here
+        cc = s.get("CutterCompensation")
+        if isinstance(cc, CutterCompensation) and cc.mode in _SWAPPED and _mirrors(self.map):
+            s["CutterCompensation"] = CutterCompensation(_SWAPPED[cc.mode], cc.register)
+            changed = True
+        cycle = s.get("CannedCycle")
+        m = s.get("Motion")
+        if isinstance(m, Motion) and m.mode is not None:
+            s["Motion"] = self.move(m, self.modal.distance == "incremental", "MachineCoordinates" in s)
+            changed = True
+        if isinstance(cycle, CannedCycle):
+            if isinstance(m, Motion) and m.mode is None and m.axes:
+                raise ProgramError(f"a cycle repeat's own axis words cannot be {WHAT} here")
+            s["CannedCycle"] = self.cycle(cycle)
+            changed = True
+        compound = s.get("CompoundMotion")
+        if isinstance(compound, CompoundMotion):
+            items = [self.item(item) for item in compound.items]  # (they track the position a cycle leaves)
+            if native(s):
+                del s["CompoundMotion"]
+            else:
+                s["CompoundMotion"] = CompoundMotion(compound.term, items)
+            changed = True
+        if "RigidTap" in s:
+            raise ProgramError(f"a rigid tap cannot be {WHAT} (its axes are not carried)")
+        if changed:
+            block.changed()
+
+    # -- moves ---------------------------------------------------------------------------------------
+    def item(self, item: Section) -> Section:
+        if isinstance(item, Motion) and item.mode is not None:
+            return self.move(item, False, False)
+        if type(item).__name__ not in INERT and type(item).__name__ not in _OWN:
+            raise ProgramError(f"{type(item).__name__} in the expanded motion cannot be {WHAT}")
+        return item
+
+    def move(self, m: Motion, incremental: bool, machine: bool) -> Motion:
+        if m.mode not in _MOVES or machine:
+            return self.fixed(m)
+        fmap, scale, p = self.map, self.scale, self.p
+        given: dict[str, float] = {}
+        for axis, value in m.axes.items():
+            if isinstance(value, Expr):
+                raise ProgramError(COMPUTED.format(what=WHAT))
+            if axis not in INDEX and self.linear:
+                raise ProgramError(f"the {axis} axis under a transform that rotates, mirrors or scales cannot be "
+                                   f"{WHAT} (only X, Y and Z are)")
+            given[axis] = value * scale if axis in XYZ else value
+        out: dict[str, float | Expr] = {}
+        if incremental:
+            dw = fmap.linear([given.get(a, 0.0) for a in XYZ])
+            for i, axis in enumerate(XYZ):
+                if axis in given or abs(dw[i]) > EXACT:
+                    out[axis] = dw[i] / scale
+                here = p[axis]
+                p[axis] = None if here is None else here + given.get(axis, 0.0)
+        else:
+            point = [given.get(a, p[a]) for a in XYZ]
+            columns = [INDEX[a] for a in given if a in INDEX]
+            for i, axis in enumerate(XYZ):
+                if not any(fmap.mixes(i, j) for j in columns):
+                    continue
+                for j in range(3):
+                    if fmap.mixes(i, j) and point[j] is None:
+                        raise ProgramError(f"this move's {axis} under the transform needs the program's {XYZ[j]}, "
+                                           f"which is not known here: program {XYZ[j]} absolutely")
+                out[axis] = fmap.point([v if v is not None else 0.0 for v in point])[i] / scale
+            for axis in XYZ:
+                if axis in given:
+                    p[axis] = given[axis]
+        for axis, value in m.axes.items():
+            if axis not in INDEX:
+                out[axis] = value
+        if m.mode in ("cw", "ccw"):
+            return self.arc(m, out)
+        return Motion(m.mode, out)
+
+    def arc(self, m: Motion, out: dict[str, float | Expr]) -> Motion:
+        plane = PLANE_AXES[self.modal.plane]
+        found = self.map.arc_factor(plane)
+        if found is None:
+            raise ProgramError(f"an arc in the {self.modal.plane} plane cannot be {WHAT} by this map: unequal "
+                               "scaling, or a rotation out of its plane, makes it no arc")
+        factor, turned = found
+        centre: dict[str, float | Expr] | None = None
+        radius: float | Expr | None = None
+        if m.center is not None:
+            fm = self.map.m
+            vector = [0.0, 0.0, 0.0]
+            for axis, value in m.center.items():
+                if isinstance(value, Expr):
+                    raise ProgramError(COMPUTED.format(what=WHAT))
+                vector[INDEX[axis]] = value
+            turned_vector = self.map.linear(vector)
+            centre = {a: turned_vector[INDEX[a]] for a in plane[:2]}
+            assert all(abs(fm[3 * INDEX[plane[2]] + INDEX[a]]) <= EXACT for a in plane[:2])
+        elif m.radius is not None:
+            if isinstance(m.radius, Expr):
+                raise ProgramError(COMPUTED.format(what=WHAT))
+            radius = m.radius * factor
+        return Motion(_TURNED[str(m.mode)] if turned else m.mode, out, centre, radius)
+
+    def fixed(self, m: Motion) -> Motion:
+        """A reference return or a machine-coordinate move: it goes where the machine is, not where the
+        program is, so it stays as written, allowed only on axes the map leaves alone."""
+        for axis in m.axes:
+            if axis in INDEX and not _untouched(self.map, INDEX[axis]):
+                raise ProgramError(f"a move to machine coordinates or a reference point on {axis} cannot be {WHAT}: "
+                                   f"the transform changes {axis}")
+            self.p[axis] = None
+        return m
+
+    # -- hole cycles -----------------------------------------------------------------------------------
+    def cycle(self, cycle: CannedCycle) -> CannedCycle:
+        if self.cycle_words is None:
+            raise ProgramError(f"a hole cycle cannot be {WHAT} here (its reading dialect names no cycle words)")
+        first, second, normal = PLANE_AXES[cycle.plane]
+        i1, i2, n = INDEX[first], INDEX[second], INDEX[normal]
+        fmap, scale = self.map, self.scale
+        if any(fmap.mixes(n, j) or fmap.mixes(j, n) for j in (i1, i2)) or fmap.m[4 * n] <= 0.0:
+            raise ProgramError(f"a hole cycle in the {cycle.plane} plane cannot be {WHAT} by a map that tilts or "
+                               f"turns over its drilling axis {normal} (a rotation out of its plane, a mirror in "
+                               f"{normal})")
+        roles = cycle_roles(cycle, self.cycle_words)
+        incremental = self.modal.distance == "incremental"
+        sz, tz = fmap.m[4 * n], fmap.t[n]
+        new = copy.copy(cycle)
+        words: dict[str, float | int] = dict(cycle.words)
+        if "shift" in roles.values() and any(fmap.m[3 * a + b] != (1.0 if a == b else 0.0)
+                                             for a in (i1, i2) for b in (i1, i2)):
+            raise ProgramError(f"a shifting cycle ({cycle.kind.replace('_', ' ')}) cannot be {WHAT} by a map that "
+                               "rotates, mirrors or scales its plane (its shift direction is the machine's)")
+        hole = {a: words[a] for a in (first, second) if a in words}
+        if hole:
+            carried = self.move(Motion("linear", dict(hole)), incremental, False)
+            for axis in (first, second):
+                words.pop(axis, None)
+            for axis in XYZ:
+                if axis in carried.axes:
+                    words[axis] = carried.axes[axis]  # type: ignore[assignment]
+        for letter, role in roles.items():
+            value = cycle.words[letter]
+            if role in ("level", "bottom"):
+                words[letter] = value * sz if incremental else (value * scale * sz + tz) / scale
+            elif role == "peck":
+                words[letter] = value * sz
+        new.words = {k: words[k] for k in _ordered(words)}
+        self.p[normal] = None  # where the cycle leaves the drilling axis depends on its return level
+        if incremental and cycle.repeat != 1:
+            self.p[first] = self.p[second] = None
+        new.position = self._points(cycle.position)
+        new.start = self._points(cycle.start)
+        new.step = {k: v for k, v in zip(XYZ, fmap.linear([cycle.step.get(a, 0.0) for a in XYZ]))
+                    if k in cycle.step or abs(v) > EXACT}
+        for level in ("initial", "r", "bottom", "top"):
+            value = getattr(cycle, level)
+            if value is not None:
+                setattr(new, level, (value * scale * sz + tz) / scale)
+        if cycle.q is not None and cycle.kind not in ("fine_bore", "back_bore"):
+            new.q = cycle.q * sz
+        return new
+
+    def _points(self, values: dict[str, float]) -> dict[str, float]:
+        """A record's absolute point (program units): its carried image on the axes it has."""
+        if not values:
+            return values
+        scale = self.scale
+        point = self.map.point([values.get(a, 0.0) * scale for a in XYZ])
+        return {a: (point[INDEX[a]] / scale if a in INDEX else v) for a, v in values.items()}
+
+
+_HANDLED: Final = frozenset(("Motion", "CompoundMotion", "CannedCycle", "CutterCompensation", "MachineCoordinates",
+                             "DataSetting", "RigidTap"))
+
+
+def native(s: dict[str, Section]) -> bool:
+    """A hole cycle the target runs itself: a changed block must not write its expansion too (a target of
+    the reading dialect gets both sections, and a block copied unchanged writes neither)."""
+    cycle = s.get("CannedCycle")
+    return isinstance(cycle, CannedCycle) and not cycle.expand and "CompoundMotion" in s
+
+
+def _ordered(words: dict[str, float | int]) -> list[str]:
+    from ..cycles.section import WORD_ORDER
+    order = {c: i for i, c in enumerate(WORD_ORDER)}
+    return sorted(words, key=lambda k: order.get(k, 99))
+
+
+def _mirrors(fmap: Affine) -> bool:
+    m = fmap.m
+    return m[0] * m[4] - m[1] * m[3] < 0.0
+
+
+def _untouched(fmap: Affine, i: int) -> bool:
+    """The map leaves coordinate ``i`` alone and mixes it into no other."""
+    return fmap.t[i] == 0.0 and fmap.m[4 * i] == 1.0 and not any(
+        fmap.mixes(i, j) or fmap.mixes(j, i) for j in range(3) if j != i)
