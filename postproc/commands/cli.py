@@ -22,6 +22,7 @@ from ..output.outfile import BUFFER, ENCODING, write_output
 from ..plugins import default_registry
 from .progress import AboveProgress, progress_for
 from ..setup.machine_setup import MachineSetup, check_named_file, load_setup
+from ..transforms.spec import transform_argument
 from ..xmlio import parse_xml_file, to_bytes
 
 EXIT_INTERRUPTED = 128 + signal.SIGINT
@@ -224,6 +225,10 @@ def build_parser() -> argparse.ArgumentParser:
     t.add_argument("--define", action="append", default=[], metavar="NAME=VALUE",
                    help="a variable the set-up's templates see as NAME (repeatable)")
     _batch_arguments(t)
+    t.add_argument("--units", choices=("mm", "inch"), help="convert the whole program to these units")
+    t.add_argument("--transform", type=transform_argument, metavar="OPS",
+                   help="move the whole program: 'translate DX,DY[,DZ]', 'rotate DEG [about X,Y] [in xy|zx|yz]', "
+                        "'mirror x|y|z.. [about V]', 'scale S[,SY,SZ] [about X,Y,Z]', joined by ';' (mm, degrees)")
     t.set_defaults(run=cmd_translate)
 
     tp = command("toolpath", "simulate a program and export its toolpath",
@@ -260,6 +265,9 @@ def build_parser() -> argparse.ArgumentParser:
                    help="also draw both toolpaths over each other with the largest deviation marked (SVG, or "
                         "PNG with the render extra); written whatever the verdict")
     v.add_argument("--arg", action="append", default=[], metavar="LETTER=VALUE", help=ARG)
+    v.add_argument("--units", choices=("mm", "inch"), help="OUT was translated with --units (both paths are in mm)")
+    v.add_argument("--transform", type=transform_argument, metavar="OPS",
+                   help="OUT was translated with this --transform: IN's path is moved by it before comparing")
     v.set_defaults(run=cmd_verify)
 
     i = command("ir", "print a program's IR as XML",
@@ -404,6 +412,8 @@ def cmd_translate(args: argparse.Namespace) -> int:
         raise UsageError("--tolerance and --allow-ignored go with --verify")
     from .batch import is_batch
     if is_batch(args):
+        if args.units or args.transform:
+            raise UsageError("--units and --transform translate one program: not with several inputs")
         if args.program_number is not None:
             raise UsageError("--program-number numbers one program: not with several inputs")
         from .batch.command import run_batch
@@ -428,7 +438,8 @@ def cmd_translate(args: argparse.Namespace) -> int:
         lines, diagnostics = _watched(path, src, setup)
         write_output(_output(args.output), lambda out: translate(
             lines, out, file=_name(path), source=args.source, target=args.target, setup=setup,
-            on_unsupported=args.on_unsupported, diagnostics=diagnostics, defines=defines),
+            on_unsupported=args.on_unsupported, diagnostics=diagnostics, defines=defines, units=args.units,
+            transform=args.transform),
             input_path=_input_path(path), in_place=args.in_place)
     return 0
 
@@ -509,7 +520,7 @@ def cmd_verify(args: argparse.Namespace) -> int:
                                   source=args.source, target=args.target, setup=setup,
                                   target_setup=target_setup, tolerance=args.tolerance,
                                   allow_ignored=args.allow_ignored, overlay=overlay,
-                                  arguments=_arguments(args.arg))
+                                  arguments=_arguments(args.arg), transform=args.transform)
         if overlay is not None:
             write_output(args.plot, lambda out: overlay.write(out, str(fmt), report), binary=fmt == "png",
                          input_path=_input_path(args.input))

@@ -24,6 +24,8 @@ from ..plugins import Registry, default_registry
 from ..setup.machine_setup import MachineSetup
 from ..geometry import CENTRE_KEYS, PLANE_INDEX, arc_sweep
 from ..drawing.overlay import Overlay
+from ..transforms.events import moved_events, moved_start
+from ..transforms.spec import ProgramTransform
 from .toolpath import MOVES_THE_TOOL, Event, start_position, toolpath_events
 
 Point = tuple[float, float, float]
@@ -419,12 +421,15 @@ def verify_lines(lines_in: Iterable[str], lines_out: Iterable[str], *, file_in: 
                  source: str, target: str, setup: MachineSetup | None = None,
                  target_setup: MachineSetup | None = None, tolerance: float = 0.001,
                  registry: Registry | None = None, allow_ignored: bool = False,
-                 overlay: Overlay | None = None, arguments: Mapping[str, float] | None = None) -> Report:
+                 overlay: Overlay | None = None, arguments: Mapping[str, float] | None = None,
+                 transform: ProgramTransform | None = None) -> Report:
     """Compare two programs given as lines. Raises ``ErrorList`` with both programs' errors, if any.
     ``allow_ignored``: settings that move the tool may differ (they are listed either way).
     ``overlay``: collects both toolpaths as they stream past, for a picture of the two. ``arguments``: both
     are macro files run with these call arguments (``toolpath_events``); a program whose dialect has no
-    such arguments (a flattened translation) is run without them."""
+    such arguments (a flattened translation) is run without them. ``transform``: OUT was translated with it
+    (``translate --transform``), so IN's toolpath is moved by it before the comparison (a units conversion
+    needs nothing: both toolpaths are in mm)."""
     if not math.isfinite(tolerance) or tolerance < 0:
         raise UsageError(f"the tolerance must be a finite number of at least 0, got {tolerance:g}")
     setup = setup or MachineSetup()
@@ -444,13 +449,17 @@ def verify_lines(lines_in: Iterable[str], lines_out: Iterable[str], *, file_in: 
     events_out = toolpath_events(lines_out, file=file_out, dialect=target, setup=target_setup,
                                  registry=registry, diagnostics=diag_out, check=False, live_after_end=after_out,
                                  unsimulated=settings_out, compensate=compensate, arguments=out_arguments)
+    start_in = start_position(setup)
+    if transform is not None:
+        events_in = moved_events(events_in, transform)
+        start_in = moved_start(start_in, transform)
     if overlay is not None:
         reading = dialects.dialect(source)
         overlay.begin(start_position(setup), start_position(target_setup), reading.reads_lathe(setup))
         # the picture shows the paths compared (the controlled points), where the deviation is circled
         events_in = overlay.source_events(_controlled(iter(events_in)))
         events_out = overlay.target_events(_controlled(iter(events_out)))
-    report = compare(events_in, events_out, start_in=start_position(setup),
+    report = compare(events_in, events_out, start_in=start_in,
                      start_out=start_position(target_setup), tolerance=tolerance)
     report.allow_ignored = allow_ignored
     compare_after_end(report, after_in, after_out)

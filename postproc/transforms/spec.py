@@ -152,3 +152,12 @@ def _numbers(text: str, least: int, most: int, step: str) -> tuple[float, ...]:
             raise UsageError(f"--transform {step!r}: {part!r} is out of range")
         values.append(value)
     return tuple(values)
+
+
+def transform_argument(text: str) -> ProgramTransform:
+    """``parse_transform`` as an argparse ``type``: bad text is a usage error before any file is opened."""
+    import argparse
+    try:
+        return parse_transform(text)
+    except UsageError as err:
+        raise argparse.ArgumentTypeError(err.message) from None

@@ -1,0 +1,64 @@
+"""A toolpath moved by a program transform: what ``verify --transform`` compares a transformed output with.
+
+Each move's programmed end point and arc centre go through the map; an arc whose plane the map turns over
+changes direction. The controlled point (``controlled``: where tool length and cutter radius put the tool)
+is the moved programmed point plus the tool's own offset, which the map does not scale or move: the
+length along Z stays as it is, the cutter's offset in XY turns with the plane (a rotation or mirror) and
+keeps its length (a uniform scaling in XY does not widen the cutter). Events other than moves pass as
+they are.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any, Iterable, Iterator
+
+from ..frames.affine import Affine
+from .spec import ProgramTransform
+
+Event = dict[str, Any]
+_POINT = (("x", "y", "z"), ("cx", "cy", "cz"))
+_PLANES = {"XY": (0, 1), "ZX": (2, 0), "YZ": (1, 2)}
+_TURNED = {"cw": "ccw", "ccw": "cw"}
+
+
+def moved_events(events: Iterable[Event], transform: ProgramTransform) -> Iterator[Event]:
+    fmap = transform.map
+    m = fmap.m
+    xy_factor = math.sqrt(abs(m[0] * m[4] - m[1] * m[3])) or 1.0
+    for ev in events:
+        if "move" not in ev:
+            yield ev
+            continue
+        out = dict(ev)
+        for keys in _POINT:
+            if keys[0] in ev:
+                out.update(zip(keys, fmap.point([float(ev.get(k, 0.0)) for k in keys])))
+        kind = ev["move"]
+        if kind in _TURNED and _turns_over(fmap, str(ev.get("plane", "XY"))):
+            out["move"] = _TURNED[kind]
+        controlled = ev.get("controlled")
+        if isinstance(controlled, dict):
+            moved: Event = {}
+            for keys in _POINT:
+                if keys[0] not in controlled and keys[0] not in ev:
+                    continue
+                d = [float(controlled.get(k, ev.get(k, 0.0))) - float(ev.get(k, 0.0)) for k in keys]
+                turned = fmap.linear((d[0] / xy_factor, d[1] / xy_factor, 0.0))
+                for i, k in enumerate(keys):
+                    if k in controlled or k in ev:
+                        moved[k] = out.get(k, 0.0) + turned[i] + (d[2] if i == 2 else 0.0)
+            out["controlled"] = {k: v for k, v in moved.items() if k in controlled}
+        yield out
+
+
+def moved_start(start: dict[str, float], transform: ProgramTransform) -> dict[str, float]:
+    """The start position (machine axis letter -> mm) carried like a point."""
+    point = transform.map.point([start.get(a, 0.0) for a in "XYZ"])
+    return {a: (point["XYZ".index(a)] if a in "XYZ" else v) for a, v in start.items()}
+
+
+def _turns_over(fmap: Affine, plane: str) -> bool:
+    i, j = _PLANES.get(plane, (0, 1))
+    m = fmap.m
+    return m[3 * i + i] * m[3 * j + j] - m[3 * i + j] * m[3 * j + i] < 0.0
