@@ -24,7 +24,7 @@ from ..plugins import Registry, default_registry
 from ..setup.machine_setup import MachineSetup
 from ..geometry import CENTRE_KEYS, PLANE_INDEX, arc_sweep
 from ..drawing.overlay import Overlay
-from ..transforms.events import moved_events, moved_start
+from ..transforms.events import moved_events, moved_setup
 from ..transforms.spec import ProgramTransform
 from .toolpath import MOVES_THE_TOOL, Event, start_position, toolpath_events
 
@@ -435,6 +435,8 @@ def verify_lines(lines_in: Iterable[str], lines_out: Iterable[str], *, file_in: 
     setup = setup or MachineSetup()
     if target_setup is None:
         target_setup = _same_machine(setup, source, registry)
+    if transform is not None:
+        target_setup = moved_setup(target_setup, transform)
     diag_in, diag_out = Diagnostics(), Diagnostics()
     after_in: list[int] = []
     after_out: list[int] = []
@@ -452,7 +454,7 @@ def verify_lines(lines_in: Iterable[str], lines_out: Iterable[str], *, file_in: 
     start_in = start_position(setup)
     if transform is not None:
         events_in = moved_events(events_in, transform)
-        start_in = moved_start(start_in, transform)
+        start_in = start_position(target_setup)
     if overlay is not None:
         reading = dialects.dialect(source)
         overlay.begin(start_position(setup), start_position(target_setup), reading.reads_lathe(setup))

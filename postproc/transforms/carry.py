@@ -22,12 +22,14 @@ parallel axis under a map that is more than a translation, a computed word.
 from __future__ import annotations
 
 import copy
+import math
 from typing import Final, Iterator
 
 from ..context import Context
 from ..cycles.section import CannedCycle
 from ..errors import PostprocError, ProgramError
 from ..expr import Expr
+from ..geometry import centre_from_radius
 from ..frames.affine import EXACT, INDEX, XYZ, Affine
 from ..frames.frame import PLANE_AXES
 from ..ir import Block, CompoundMotion, CutterCompensation, DataSetting, Motion, Section
@@ -128,6 +130,7 @@ class ProgramMover:
         if m.mode not in _MOVES or machine:
             return self.fixed(m)
         fmap, scale, p = self.map, self.scale, self.p
+        start = dict(p)
         given: dict[str, float] = {}
         for axis, value in m.axes.items():
             if isinstance(value, Expr):
@@ -162,7 +165,7 @@ class ProgramMover:
             if axis not in INDEX:
                 out[axis] = value
         if m.mode in ("cw", "ccw"):
-            return self.arc(m, out)
+            return self.arc(_centred(m, start, p, self.modal.plane, scale), out)
         return Motion(m.mode, out)
 
     def arc(self, m: Motion, out: dict[str, float | Expr]) -> Motion:
@@ -261,6 +264,28 @@ class ProgramMover:
 
 _HANDLED: Final = frozenset(("Motion", "CompoundMotion", "CannedCycle", "CutterCompensation", "MachineCoordinates",
                              "DataSetting", "RigidTap"))
+
+
+NEAR_HALF: Final = 0.999
+"""An R-form arc whose chord is more than this part of its diameter is written with its centre: moved end
+points rounded to the output's places would move the centre of a half circle by the square root of that
+rounding (a 1e-6 mm change of the chord moves it about 3e-3 mm on R20)."""
+
+
+def _centred(m: Motion, start: dict[str, float | None], end: dict[str, float | None], plane: str,
+             scale: float) -> Motion:
+    """``m`` with its centre offsets in place of a radius close to half its chord (``NEAR_HALF``), where
+    both of its end points are known (mm, program coordinates)."""
+    a1, a2, _ = PLANE_AXES[plane]
+    s1, s2, e1, e2 = start.get(a1), start.get(a2), end.get(a1), end.get(a2)
+    if m.radius is None or isinstance(m.radius, Expr) or None in (s1, s2, e1, e2) or m.radius == 0.0:
+        return m
+    assert s1 is not None and s2 is not None and e1 is not None and e2 is not None
+    radius = m.radius * scale
+    if math.hypot(e1 - s1, e2 - s2) / 2.0 < NEAR_HALF * abs(radius):
+        return m
+    c1, c2 = centre_from_radius((s1, s2), (e1, e2), radius, m.mode == "cw")
+    return Motion(m.mode, m.axes, {a1: (c1 - s1) / scale, a2: (c2 - s2) / scale})
 
 
 def native(s: dict[str, Section]) -> bool:

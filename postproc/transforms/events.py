@@ -10,10 +10,13 @@ they are.
 
 from __future__ import annotations
 
+import copy
+import dataclasses
 import math
 from typing import Any, Iterable, Iterator
 
 from ..frames.affine import Affine
+from ..setup.machine_setup import MachineSetup
 from .spec import ProgramTransform
 
 Event = dict[str, Any]
@@ -52,10 +55,16 @@ def moved_events(events: Iterable[Event], transform: ProgramTransform) -> Iterat
         yield out
 
 
-def moved_start(start: dict[str, float], transform: ProgramTransform) -> dict[str, float]:
-    """The start position (machine axis letter -> mm) carried like a point."""
-    point = transform.map.point([start.get(a, 0.0) for a in "XYZ"])
-    return {a: (point["XYZ".index(a)] if a in "XYZ" else v) for a, v in start.items()}
+def moved_setup(setup: MachineSetup, transform: ProgramTransform) -> MachineSetup:
+    """``setup`` with the tool starting at its start position's image: the transformed program is run
+    from where the moved source would stand (a first move to the start, dropped as zero-length in the
+    source's path, is dropped in the output's too)."""
+    machine = setup.machine
+    mm = machine.mm()
+    x, y, z = transform.map.point((machine.start_x * mm, machine.start_y * mm, machine.start_z * mm))
+    moved = copy.copy(setup)
+    moved.machine = dataclasses.replace(machine, start_x=x / mm, start_y=y / mm, start_z=z / mm)
+    return moved
 
 
 def _turns_over(fmap: Affine, plane: str) -> bool:

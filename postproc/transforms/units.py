@@ -25,6 +25,7 @@ from ..context import Context
 from ..cycles.section import CannedCycle
 from ..errors import PostprocError, ProgramError
 from ..expr import Expr
+from ..frames.frame import PLANE_AXES
 from ..frames.section import FrameChange
 from ..ir import (Block, CompoundMotion, DataSetting, Feed, Motion, NativeCode, PathControl, Section, ToolLengthOffset,
                   Units)
@@ -74,6 +75,9 @@ class UnitConverter:
         self.per_time = True
         """The feed is a speed (per minute or per revolution), not inverse time."""
         self.cycle_words = ctx.cycle_words
+        self.plane = "XY"
+        self.angle: str | None = None
+        """Polar coordinates (G16) are on: this axis word is an angle in degrees, not a length."""
 
     def block(self, block: Block) -> None:
         s = block.sections
@@ -84,6 +88,13 @@ class UnitConverter:
             if units.system != self.target:
                 s["Units"] = Units(self.target)
                 changed = True
+        plane = s.get("Plane")
+        if plane is not None:
+            self.plane = getattr(plane, "plane", "XY")
+        frame = s.get("FrameChange")
+        if isinstance(frame, FrameChange) and frame.kind in ("polar", "polar_off"):
+            # [V] Fanuc 16/18-MC operator's manual 9.2: under G16 the plane's second axis word is an angle
+            self.angle = PLANE_AXES[self.plane][1] if frame.kind == "polar" else None
         mode = s.get("FeedMode")
         if mode is not None:
             self.per_time = getattr(mode, "mode", "") != "inverse_time"
@@ -112,7 +123,7 @@ class UnitConverter:
         if k == 1.0:
             return section
         if isinstance(section, Motion):
-            return Motion(section.mode, _lengths(section.axes, k), None if section.center is None else
+            return Motion(section.mode, _lengths(section.axes, k, self.angle), None if section.center is None else
                           _lengths(section.center, k), None if section.radius is None else _times(section.radius, k))
         if isinstance(section, Feed):
             return Feed(_times(section.value, k)) if self.per_time else section
@@ -143,7 +154,7 @@ class UnitConverter:
             raise ProgramError(f"a hole cycle cannot be {WHAT} here (its reading dialect names no cycle words)")
         roles = cycle_roles(cycle, self.cycle_words)
         new = copy.copy(cycle)
-        new.words = {letter: value * k if roles[letter] in _LENGTH_ROLES else value
+        new.words = {letter: value * k if roles[letter] in _LENGTH_ROLES and letter != self.angle else value
                      for letter, value in cycle.words.items()}
         for name in ("initial", "r", "bottom", "top", "q", "clearance", "pitch"):
             setattr(new, name, _maybe(getattr(cycle, name), k))
@@ -179,5 +190,5 @@ def _maybe(value: float | None, k: float) -> float | None:
     return None if value is None else value * k
 
 
-def _lengths(values: dict[str, float | Expr], k: float) -> dict[str, float | Expr]:
-    return {a: _times(v, k) if a in LINEAR else v for a, v in values.items()}
+def _lengths(values: dict[str, float | Expr], k: float, angle: str | None = None) -> dict[str, float | Expr]:
+    return {a: _times(v, k) if a in LINEAR and a != angle else v for a, v in values.items()}
