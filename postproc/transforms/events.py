@@ -46,7 +46,7 @@ def moved_events(events: Iterable[Event], transform: ProgramTransform) -> Iterat
             for keys in _POINT:
                 if keys[0] not in controlled and keys[0] not in ev:
                     continue
-                d = [float(controlled.get(k, ev.get(k, 0.0))) - float(ev.get(k, 0.0)) for k in keys]
+                d = [float(controlled.get(k, ev.get(k, 0.0)) or 0.0) - float(ev.get(k, 0.0) or 0.0) for k in keys]
                 turned = fmap.linear((d[0] / xy_factor, d[1] / xy_factor, 0.0))
                 for i, k in enumerate(keys):
                     if k in controlled or k in ev:

@@ -139,8 +139,8 @@ class UnitConverter:
         if isinstance(section, PathControl):
             return PathControl(section.mode, section.one_shot, _maybe(section.tolerance, k), _maybe(section.naive, k))
         if isinstance(section, FrameChange):
-            words = {a: _times(v, k) if a in LINEAR else v for a, v in section.words.items()}
-            changed = {a: float(v) for a, v in words.items() if a in LINEAR}
+            changed = {a: _times(v, k) for a, v in section.words.items() if a in LINEAR}
+            words = {**section.words, **changed}
             return FrameChange(section.kind, words, section.rules, section.family, respell(section.text, changed))
         if isinstance(section, RigidTap):
             return RigidTap(_lengths(section.axes, k), _times(section.pitch, k), section.dwell, section.speedup)
@@ -175,8 +175,9 @@ def _setting(setting: DataSetting, k: float) -> DataSetting:
         lengths = set(setting.values)
     else:
         raise ProgramError(f"{setting.describe()}: what its values measure is not known here; it cannot be {WHAT}")
-    values = {a: _times(v, k) if a in lengths else v for a, v in setting.values.items()}
-    text = respell(setting.text, {a: float(v) for a, v in values.items() if a in lengths})
+    changed = {a: _times(v, k) for a, v in setting.values.items() if a in lengths}
+    values = {**setting.values, **changed}
+    text = respell(setting.text, changed)
     return DataSetting(setting.family, setting.table, setting.index, values, setting.incremental, text)
 
 
