@@ -27,6 +27,7 @@ from typing import Final, Iterator
 
 from ..context import Context
 from ..cycles.section import CannedCycle
+from ..cycles.semantics import PECK
 from ..errors import PostprocError, ProgramError
 from ..expr import Expr
 from ..geometry import centre_from_radius
@@ -215,6 +216,9 @@ class ProgramMover:
                                f"turns over its drilling axis {normal} (a rotation out of its plane, a mirror in "
                                f"{normal})")
         roles = cycle_roles(cycle, self.cycle_words)
+        if cycle.kind in PECK and fmap.m[4 * n] != 1.0:
+            raise ProgramError(f"a peck drilling cycle cannot be {WHAT} by a map that scales its drilling axis "
+                               f"{normal}: its retract and clearance are machine settings that do not scale")
         incremental = self.modal.distance == "incremental"
         sz, tz = fmap.m[4 * n], fmap.t[n]
         new = copy.copy(cycle)
