@@ -57,7 +57,8 @@ def translate(lines: Iterable[str], out: TextIO, *, file: str, source: str, targ
             ctx.keep_check = _keep_check(src, dst, ctx, registry, options)
             ctx.run_data[TARGET_OMITS_VACANT] = _omits_vacant_words(dst, setup)
 
-        if setup.travel_limited():
+        moved = setup.travel_limited() and options.transform is not None
+        if setup.travel_limited() and not moved:
             from .simulate.toolpath import check_travel
             lines = list(lines)  # read twice: the travel check simulates the source first
             check_travel(lines, file=file, dialect=src, setup=setup, diagnostics=diagnostics,
@@ -73,7 +74,17 @@ def translate(lines: Iterable[str], out: TextIO, *, file: str, source: str, targ
         writer = dst.WRITER(ctx, src.NAME, dst)
         from .fast import install as install_fast_lane  # (imported with the writer's modules, not at start)
         install_fast_lane(writer)
-        writer.write(sequences.after_lowering(lowered), out)
+        if not moved:
+            writer.write(sequences.after_lowering(lowered), out)
+        else:  # the travel that matters is the moved program's: it is checked before a line leaves
+            text = io.StringIO()
+            writer.write(sequences.after_lowering(lowered), text)
+            if not diagnostics.errors:
+                from .simulate.toolpath import check_travel
+                check_travel(io.StringIO(text.getvalue(), newline=""), file=f"{file} (moved by --transform)",
+                             dialect=dst, setup=setup, diagnostics=diagnostics, on_unsupported=on_unsupported,
+                             registry=registry)
+            out.write(text.getvalue())
     diagnostics.check()
     return diagnostics
 

@@ -218,3 +218,18 @@ def test_a_macro_program_is_flattened() -> None:
     code = [line for line in out.splitlines() if not line.startswith("(")]
     assert not any("#" in line or "WHILE" in line for line in code)
     assert [m[1:3] for m in moves(out, "linuxcnc")] == [(0.0, 5.0), (10.0, 5.0), (20.0, 5.0)]  # G1 X0 stays put
+
+
+def test_travel_limits_are_checked_on_the_moved_program() -> None:
+    """The VMC's X travels -800..0 with G54 at X-400: the plate fits, moved 900 mm it does not (machine X
+    -400 + 15 + 900 = 515); the error names the moved program."""
+    from pathlib import Path
+    from postproc.setup.machine_setup import load_setup
+    root = Path(__file__).resolve().parent.parent
+    setup = root / "examples" / "setups" / "fanuc_0i_mf_vmc.xml"
+    text = (root / "examples" / "fanuc" / "o1001_plate_drill_tap.nc").read_text()
+    run(text, "fanuc", "fanuc", "translate 10,0", setup=load_setup(str(setup)))
+    with pytest.raises(ErrorList) as info:
+        run(text, "fanuc", "fanuc", "translate 900,0", setup=load_setup(str(setup)))
+    assert str(info.value.errors[0]).startswith(
+        "t.nc (moved by --transform):13:13: error: X+515.000 mm beyond the limit 0.000")
