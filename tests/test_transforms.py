@@ -161,6 +161,11 @@ def test_an_omitted_coordinate_comes_from_the_program_position() -> None:
     assert moves(out, "linuxcnc")[-1] == ("feed", -2.0, 5.0, 0.0)
 
 
+def test_the_active_work_system_selected_again_keeps_the_position() -> None:
+    text = "G21 G90\nG54 G00 X0. Y2. Z0.\nG54\nG01 X5. F50.\nM30\n"
+    assert moves(run(text, "fanuc", "linuxcnc", "rotate 90"), "linuxcnc")[-1] == ("feed", -2.0, 5.0, 0.0)
+
+
 def test_cutter_compensation_side_swaps_under_a_mirror() -> None:
     text = "G21 G90\nG00 X0. Y0. Z0.\nG41 D1 G01 X10. F50.\nG40 G00 X0.\nM30\n"
     out = run(text, "fanuc", "fanuc", "mirror y")
@@ -195,11 +200,13 @@ def test_incremental_cycle_levels_scale_without_the_shift() -> None:
      "t.nc:3:1: error: a hole cycle in the XY plane cannot be transformed by a map that tilts or turns over"),
     ("G21 G90\nG00 X0. Y0. Z10.\nG83 X1. Y1. Z-9. R1. Q2. F50.\nG80\nM30\n", "scale 2",
      "t.nc:3:1: error: a peck drilling cycle cannot be transformed by a map that scales its drilling axis Z"),
+    ("G21 G90\nG00 X0. Y0. Z0.\nG55\nG01 X5. F50.\nM30\n", "rotate 90",
+     "t.nc:4:1: error: this move's X under the transform needs the program's Y, which is not known here"),
     ("G21 G90\nG28 X0. Y0.\nM30\n", "translate 1,0",
      "t.nc:2:1: error: a move to machine coordinates or a reference point on X cannot be transformed"),
     ("G21 G90 G00 X0. Y0. A10.\nM30\n", "rotate 5",
      "t.nc:1:1: error: the A axis under a transform that rotates, mirrors or scales cannot be transformed"),
-    ("G21 G90\nG52 X5.\nG00 X1. Y1.\nM30\n", "translate 1,0", "t.nc:2:1: error: FrameChange cannot be transformed"),
+    ("G21 G90\nG52 X5.\nG00 X1. Y1.\nM30\n", "translate 1,0", "t.nc:2:1: error: G52 X5. (local): a coordinate frame kept for the program's own dialect cannot be"),
 ])
 def test_refused_at_the_line(text: str, transform: str, message: str) -> None:
     assert any(e.startswith(message) for e in refused(text, "fanuc", "fanuc", transform)), refused(

@@ -33,6 +33,7 @@ from ..expr import Expr
 from ..geometry import centre_from_radius
 from ..frames.affine import EXACT, INDEX, XYZ, Affine
 from ..frames.frame import PLANE_AXES
+from ..frames.section import FrameChange
 from ..ir import Block, CompoundMotion, CutterCompensation, DataSetting, Motion, Section
 from ..state import MM_PER_INCH, ModalState
 from .spec import ProgramTransform
@@ -79,18 +80,23 @@ class ProgramMover:
 
     def block(self, block: Block) -> None:
         s = block.sections
-        for key in s:
+        for key, section in s.items():
             if key in COMPUTES:
                 raise ProgramError(SYMBOLIC.format(what=WHAT))
+            if isinstance(section, FrameChange):
+                raise ProgramError(f"{section.describe()}: a coordinate frame kept for the program's own dialect "
+                                   f"cannot be {WHAT} (a translation to another dialect evaluates it)")
             if key not in INERT and key not in _OWN and key not in _HANDLED:
                 raise ProgramError(f"{key} cannot be {WHAT} (it is not carried through a program transform)")
+        work = self.modal.work_offset
         self.modal.apply(s)
         changed = False
         setting = s.get("DataSetting")
         if isinstance(setting, DataSetting) and setting.table == "work_offset" and "R" in setting.values:
             raise ProgramError(f"{setting.describe()}: a work system rotation kept for the target cannot be "
                                f"{WHAT} (the target would turn the transformed program again)")
-        if "WorkOffset" in s or isinstance(setting, DataSetting) and setting.table.startswith("work_offset"):
+        if self.modal.work_offset != work or isinstance(setting, DataSetting) and (
+                setting.table != "work_offset" or setting.index in (0, work)) and setting.table.startswith("work"):
             self.p = dict.fromkeys(XYZ)  # the tool stays; where it stands in the new system is not known here
         cc = s.get("CutterCompensation")
         if isinstance(cc, CutterCompensation) and cc.mode in _SWAPPED and _mirrors(self.map):
