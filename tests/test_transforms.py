@@ -200,7 +200,7 @@ def test_incremental_cycle_levels_scale_without_the_shift() -> None:
      "t.nc:3:1: error: a hole cycle in the XY plane cannot be transformed by a map that tilts or turns over"),
     ("G21 G90\nG00 X0. Y0. Z10.\nG83 X1. Y1. Z-9. R1. Q2. F50.\nG80\nM30\n", "scale 2",
      "t.nc:3:1: error: a peck drilling cycle cannot be transformed by a map that scales its drilling axis Z"),
-    ("G21 G90\nG00 X0. Y0. Z0.\nG55\nG01 X5. F50.\nM30\n", "rotate 90",
+    ("G21 G90\nG00 X0. Y0. Z0.\nG55\nG01 X5. F50.\nM30\n", "rotate 30",
      "t.nc:4:1: error: this move's X under the transform needs the program's Y, which is not known here"),
     ("G21 G90\nG28 X0. Y0.\nM30\n", "translate 1,0",
      "t.nc:2:1: error: a move to machine coordinates or a reference point on X cannot be transformed"),
