@@ -152,3 +152,8 @@ def programs(draw: st.DrawFn) -> str:
 def test_random_programs_cut_the_same_path(text: str, units: str, target: str) -> None:
     out = run(text, "fanuc", target, units)
     same_path(text, out, "fanuc", target)
+
+
+def test_a_program_in_the_units_asked_for_is_written_as_it_was() -> None:
+    text = "%\nO0002\nG21 G90 G17\nG0 X0 Y0 Z10.\nG99 G81 X10. Y5. Z-3. R2. F100.\nX20.\nG80\nM30\n%\n"
+    assert run(text, "fanuc", "fanuc", "mm") == text

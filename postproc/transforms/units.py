@@ -99,9 +99,6 @@ class UnitConverter:
         if mode is not None:
             self.per_time = getattr(mode, "mode", "") != "inverse_time"
         k = 1.0 if self.source == self.target else MM_PER_INCH if self.target == "mm" else 1.0 / MM_PER_INCH
-        if native(s):
-            del s["CompoundMotion"]
-            changed = True
         for key, section in list(s.items()):
             if key in COMPUTES:
                 raise ProgramError(SYMBOLIC.format(what=WHAT))
@@ -112,6 +109,8 @@ class UnitConverter:
                 s[key] = converted
                 changed = True
         if changed:
+            if native(s):
+                del s["CompoundMotion"]  # a changed cycle block would write its expansion too
             block.changed()
 
     def section(self, section: Section, k: float) -> Section:
