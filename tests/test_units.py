@@ -157,3 +157,28 @@ def test_random_programs_cut_the_same_path(text: str, units: str, target: str) -
 def test_a_program_in_the_units_asked_for_is_written_as_it_was() -> None:
     text = "%\nO0002\nG21 G90 G17\nG0 X0 Y0 Z10.\nG99 G81 X10. Y5. Z-3. R2. F100.\nX20.\nG80\nM30\n%\n"
     assert run(text, "fanuc", "fanuc", "mm") == text
+
+
+# -- rs274 as the oracle ------------------------------------------------------------------------------
+@pytest.mark.skipif(not __import__("tests.support.rs274", fromlist=["available"]).available(),
+                    reason="the LinuxCNC interpreter rs274 is not installed")
+def test_rs274_runs_the_converted_program_along_the_same_path() -> None:
+    """Random LinuxCNC programs (moves, incremental moves, full circles, helices, R arcs, drilling and peck
+    cycles) and their inch conversions run in rs274: the same moves in mm, within rs274's printed places
+    (4 decimals of an inch: 1.3e-3 mm)."""
+    from tests.support.rs274 import canonical_moves, run_rs274
+    from tests.test_transforms_verify import _batch, _segments, program
+    texts = [program(seed, "linuxcnc") for seed in range(20)]
+    outs = [run(text, "linuxcnc", "linuxcnc", "inch") for text in texts]
+    assert all("G20" in out for out in outs)
+    sources = _segments(run_rs274(_batch(texts), timeout=120), len(texts))
+    results = _segments(run_rs274(_batch(outs), timeout=120), len(texts))
+    for text, out, theirs, ours in zip(texts, outs, sources, results):
+        want = [e for e in canonical_moves(theirs) if "move" in e]
+        got = [e for e in canonical_moves(ours) if "move" in e]
+        assert len(got) == len(want), f"{text}\n---\n{out}"
+        for a, b in zip(want, got):
+            assert a["move"] == b["move"]
+            for key in ("x", "y", "z", "cx", "cy", "cz"):
+                if key in a:
+                    assert abs(a[key] - b[key]) <= 1.5e-3, f"{key}\n{a}\n{b}\n{text}\n---\n{out}"
