@@ -240,3 +240,10 @@ def test_travel_limits_are_checked_on_the_moved_program() -> None:
         run(text, "fanuc", "fanuc", "translate 900,0", setup=load_setup(str(setup)))
     assert str(info.value.errors[0]).startswith(
         "t.nc (moved by --transform):13:13: error: X+515.000 mm beyond the limit 0.000")
+
+
+def test_moved_then_converted() -> None:
+    """An inch program moved by 25.4 mm (1 in) in X, then written in mm: X1. -> 2 in = 50.8 mm."""
+    text = "G20 G90\nG00 X1. Y0.5 Z0.1\nM30\n"
+    out = run(text, "fanuc", "fanuc", "translate 25.4,0", units="mm")
+    assert out.splitlines()[:2] == ["G21 G90", "G00 X50.8 Y12.7 Z2.54"]
