@@ -182,3 +182,9 @@ def test_rs274_runs_the_converted_program_along_the_same_path() -> None:
             for key in ("x", "y", "z", "cx", "cy", "cz"):
                 if key in a:
                     assert abs(a[key] - b[key]) <= 1.5e-3, f"{key}\n{a}\n{b}\n{text}\n---\n{out}"
+
+
+def test_a_macro_program_already_in_the_units_asked_for_stays_symbolic() -> None:
+    text = "G21 G90 G00 X0. Y0. Z1.\n#1=25.4\nG01 X#1 F100.\nM30\n"
+    assert run(text, "fanuc", "fanuc", "mm") == text
+    assert "#1" in run(text, "fanuc", "linuxcnc", "mm")

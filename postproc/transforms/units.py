@@ -100,7 +100,7 @@ class UnitConverter:
             self.per_time = getattr(mode, "mode", "") != "inverse_time"
         k = 1.0 if self.source == self.target else MM_PER_INCH if self.target == "mm" else 1.0 / MM_PER_INCH
         for key, section in list(s.items()):
-            if key in COMPUTES:
+            if key in COMPUTES and k != 1.0:  # (in the target's units already, a computed word stays right)
                 raise ProgramError(SYMBOLIC.format(what=WHAT))
             if key in INERT or key in ("Units", "CutterCompensation", "MachineCoordinates"):
                 continue
