@@ -37,7 +37,7 @@ from ..frames.section import FrameChange
 from ..ir import Block, CompoundMotion, CutterCompensation, DataSetting, Motion, Section
 from ..state import MM_PER_INCH, ModalState
 from .spec import ProgramTransform
-from .words import COMPUTED, COMPUTES, INERT, SYMBOLIC, cycle_roles
+from .words import COMPUTED, COMPUTES, INERT, SYMBOLIC, cycle_roles, named
 
 WHAT: Final = "transformed"
 _MOVES: Final = frozenset(("rapid", "linear", "cw", "ccw"))
@@ -87,7 +87,8 @@ class ProgramMover:
                 raise ProgramError(f"{section.describe()}: a coordinate frame kept for the program's own dialect "
                                    f"cannot be {WHAT} (a translation to another dialect evaluates it)")
             if key not in INERT and key not in _OWN and key not in _HANDLED:
-                raise ProgramError(f"{key} cannot be {WHAT} (it is not carried through a program transform)")
+                raise ProgramError(f"{named(key, section)} cannot be {WHAT} (it is not carried through a program "
+                                   "transform)")
         work = self.modal.work_offset
         self.modal.apply(s)
         changed = False

@@ -32,7 +32,7 @@ from ..ir import (Block, CompoundMotion, DataSetting, Feed, Motion, NativeCode, 
 from ..state import MM_PER_INCH
 from ..synchronised_tap import RigidTap
 from .carry import native
-from .words import COMPUTED, COMPUTES, INERT, SYMBOLIC, cycle_roles, respell
+from .words import COMPUTED, COMPUTES, INERT, SYMBOLIC, cycle_roles, named, respell
 
 WHAT: Final = "converted to other units"
 LINEAR: Final = frozenset("XYZUVW")
@@ -145,8 +145,8 @@ class UnitConverter:
             return RigidTap(_lengths(section.axes, k), _times(section.pitch, k), section.dwell, section.speedup)
         if type(section).__name__ in INERT:
             return section
-        raise ProgramError(f"{section.KEY or type(section).__name__} cannot be {WHAT} (its lengths are not known "
-                           "here)")
+        raise ProgramError(f"{named(section.KEY or type(section).__name__, section)} cannot be {WHAT} (its lengths "
+                           "are not known here)")
 
     def cycle(self, cycle: CannedCycle, k: float) -> CannedCycle:
         if self.cycle_words is None:

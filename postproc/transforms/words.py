@@ -62,6 +62,16 @@ def cycle_roles(cycle: CannedCycle, words: CycleWords) -> dict[str, str]:
     return roles
 
 
+def named(key: str, section: object) -> str:
+    """How a message names a section: a native construct by what it is (``#SLOPE (acceleration profile)``),
+    a pattern or setting by its own description, anything else by its IR name."""
+    what = getattr(section, "what", None)
+    if isinstance(what, str):
+        return what
+    describe = getattr(section, "describe", None)
+    return str(describe()) if callable(describe) else key
+
+
 def number_text(value: float) -> str:
     """A number with its decimal point (``10.``, ``-0.25``): read the same by every dialect's rules."""
     text = f"{round(value, 6):.6f}".rstrip("0")
