@@ -22,6 +22,7 @@ from .setup.machine_setup import MachineSetup
 from .source_map import OutputMap
 from .syntax import Pipeline
 from .context import Context
+from .frames.lowering import EVALUATE_KEY
 from .transforms import ProgramOptions, ProgramTransform, program_options, transform_program
 
 
@@ -56,6 +57,7 @@ def translate(lines: Iterable[str], out: TextIO, *, file: str, source: str, targ
             ctx.on_unsupported = on_unsupported
             ctx.keep_check = _keep_check(src, dst, ctx, registry, options)
             ctx.run_data[TARGET_OMITS_VACANT] = _omits_vacant_words(dst, setup)
+            ctx.run_data[EVALUATE_KEY] = options.transform is not None
 
         moved = setup.travel_limited() and options.transform is not None
         if setup.travel_limited() and not moved:
@@ -105,6 +107,7 @@ def _keep_check(src: type[Dialect], dst: type[Dialect], ctx: Context, registry: 
         trial.state = copy.deepcopy(ctx.state)
         trial.on_unsupported = "error"
         trial.run_data["sequences"] = Sequences(trial, src.NAME, dst, enabled=False)  # a dry run renders none
+        trial.run_data[EVALUATE_KEY] = options.transform is not None
         trial.run_data["dry_run"] = True  # what it writes is a part of the program, read back and discarded
         steps = [step for step in src.pipeline(ctx.setup).steps if not isinstance(step, ProgramSyntax)]
         blocks = Pipeline(src.NAME, steps).run(body, trial)

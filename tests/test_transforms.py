@@ -206,11 +206,18 @@ def test_incremental_cycle_levels_scale_without_the_shift() -> None:
      "t.nc:2:1: error: a move to machine coordinates or a reference point on X cannot be transformed"),
     ("G21 G90 G00 X0. Y0. A10.\nM30\n", "rotate 5",
      "t.nc:1:1: error: the A axis under a transform that rotates, mirrors or scales cannot be transformed"),
-    ("G21 G90\nG52 X5.\nG00 X1. Y1.\nM30\n", "translate 1,0", "t.nc:2:1: error: G52 X5. (local): a coordinate frame kept for the program's own dialect cannot be"),
 ])
 def test_refused_at_the_line(text: str, transform: str, message: str) -> None:
     assert any(e.startswith(message) for e in refused(text, "fanuc", "fanuc", transform)), refused(
         text, "fanuc", "fanuc", transform)
+
+
+def test_the_program_s_own_frames_are_evaluated_first() -> None:
+    """Back to its own dialect too: G52 X5. then X1. is work X6., moved by translate 1,0 to X7."""
+    text = "G21 G90\nG00 X0. Y0. Z0.\nG52 X5.\nG00 X1. Y1.\nG52 X0.\nM30\n"
+    out = run(text, "fanuc", "fanuc", "translate 1,0")
+    assert "G52" not in out.replace("(G52 X5. evaluated)", "").replace("(G52 X0. evaluated)", "")
+    assert moves(out, "fanuc")[-1] == ("rapid", 7.0, 1.0, 0.0)
 
 
 def test_a_reference_return_on_an_axis_the_map_leaves_alone_passes() -> None:

@@ -45,7 +45,7 @@ def verified(text: str, out: str, source: str, target: str, transform: str, **kw
     ("fanuc/o1002_bracket_inch.nc", "fanuc", "linuxcnc", "rotate -90; translate 100,0"),
     ("fanuc/o1004_flange_least_increment.nc", "fanuc", "fanuc", "rotate 30 about 10,20"),
     ("fanuc/o1005_bolt_circle_macro.nc", "fanuc", "linuxcnc", "mirror y; scale 1.5"),
-    ("fanuc/o1006_fixture_frames.nc", "fanuc", "grbl", "rotate 45 about 150,0"),
+    ("fanuc/o1006_fixture_frames.nc", "fanuc", "fanuc", "rotate 45 about 150,0"),  # its frames evaluated
     ("linuxcnc/cover_profile.ngc", "linuxcnc", "linuxcnc", "translate 5,-3,1"),
     ("linuxcnc/plate_drill_peck.ngc", "linuxcnc", "fanuc", "mirror xy about 50,40"),
     ("isg/prof_contour_xy.nc", "isg", "isg", "rotate 15"),

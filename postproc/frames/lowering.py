@@ -67,9 +67,14 @@ _SWAPPED: Final = {"left": "right", "right": "left"}
 _TURNED: Final = {"cw": "ccw", "ccw": "cw"}
 
 
+EVALUATE_KEY: Final = "frames.evaluate"
+"""``ctx.run_data`` key: evaluate the frames back to the reading dialect too (a program transform,
+``postproc.transforms``, moves the evaluated points)."""
+
+
 def evaluate_frames(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
     """Lowering step (see the module docstring): back to its own dialect the stream passes through."""
-    if target.NAME == ctx.dialect or ctx.lathe:
+    if target.NAME == ctx.dialect and not ctx.run_data.get(EVALUATE_KEY) or ctx.lathe:
         return blocks
     return FrameEvaluator(ctx, target.WRITER is not None).run(blocks)
 
