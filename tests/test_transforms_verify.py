@@ -207,3 +207,28 @@ def test_the_generators_cover_every_operation() -> None:
         assert word in texts, word
     for op in ("translate", "rotate", "mirror x", "mirror y", "scale"):
         assert op in hows, op
+
+
+# -- the command line --------------------------------------------------------------------------------------
+@pytest.mark.parametrize("args, fragment", [
+    (["--transform", "rotate 30 about 1"], "argument --transform: --transform 'rotate 30 about 1': '1' should be 2"),
+    (["--transform", "G0 X5"], "argument --transform: --transform: unknown operation 'G0' in 'G0 X5'"),
+    (["--units", "cm"], "argument --units: invalid choice: 'cm'"),
+])
+def test_bad_options_are_usage_errors(cli: Any, tmp_path: Path, args: list[str], fragment: str) -> None:
+    out = tmp_path / "o.nc"
+    result = cli("translate", ROOT / "examples/fanuc/o1003_pocket_and_edge.nc", "--from", "fanuc", "--to", "fanuc",
+                 "-o", out, *args)
+    assert result.status == 2 and fragment in result.err, result.err
+    assert not out.exists()
+
+
+def test_translate_then_verify_on_the_command_line(cli: Any, tmp_path: Path) -> None:
+    source = ROOT / "examples/fanuc/o1003_pocket_and_edge.nc"
+    out = tmp_path / "o.ngc"
+    how = ["--transform", "mirror y about 40; translate 3,0", "--units", "inch"]
+    assert cli("translate", source, "--from", "fanuc", "--to", "linuxcnc", "-o", out, *how).status == 0
+    assert "G20" in out.read_text()
+    machine = ["--machine", TOUCHED_OFF]
+    assert cli("verify", source, out, "--from", "fanuc", "--to", "linuxcnc", *machine, *how).status == 0
+    assert cli("verify", source, out, "--from", "fanuc", "--to", "linuxcnc", *machine).status == 1
