@@ -36,11 +36,6 @@ class ProgramTransform:
     """As the user wrote it (for messages and the output's comment)."""
     map: Affine
 
-    def mirrors(self) -> bool:
-        """The map turns the XY plane over (a mirror in X or Y): arcs and cutter compensation sides swap."""
-        m = self.map.m
-        return m[0] * m[4] - m[1] * m[3] < 0.0
-
 
 def parse_transform(text: str) -> ProgramTransform:
     """Read ``text`` (see the module docstring) into one map; a ``UsageError`` for anything else."""
