@@ -17,6 +17,7 @@ from .. import native
 native.install()  # the compiled hot path, before any of its modules is imported
 
 from ..api import read_blocks, translate
+from ..lowering.arcs import ArcOption, parse_arc_option
 from ..errors import ConfigError, Diagnostics, ErrorList, Location, PostprocError, UsageError
 from ..output.outfile import BUFFER, ENCODING, write_output
 from ..plugins import default_registry
@@ -223,6 +224,9 @@ def build_parser() -> argparse.ArgumentParser:
                         "a comment); as <Output programNumber>")
     t.add_argument("--define", action="append", default=[], metavar="NAME=VALUE",
                    help="a variable the set-up's templates see as NAME (repeatable)")
+    t.add_argument("--arcs", type=_arcs, metavar="lines:TOL|ijk|r",
+                   help="rewrite every arc: as lines within TOL mm of it, in centre form (I J K) or in radius "
+                        "form (R); a program that computes is flattened (see docs/cli.md)")
     _batch_arguments(t)
     t.set_defaults(run=cmd_translate)
 
@@ -339,6 +343,14 @@ def _tolerance(text: str) -> float:
     return value
 
 
+def _arcs(text: str) -> ArcOption:
+    """``--arcs lines:TOL|ijk|r`` (argparse turns the error into usage, exit 2)."""
+    try:
+        return parse_arc_option(text)
+    except UsageError as err:
+        raise argparse.ArgumentTypeError(err.message) from None
+
+
 def _setup(path: str | None, lib: Sequence[str] = ()) -> MachineSetup:
     if path:
         check_named_file(path)
@@ -406,6 +418,8 @@ def cmd_translate(args: argparse.Namespace) -> int:
     if is_batch(args):
         if args.program_number is not None:
             raise UsageError("--program-number numbers one program: not with several inputs")
+        if args.arcs is not None:
+            raise UsageError("--arcs rewrites one program: not with several inputs or the batch options")
         from .batch.command import run_batch
         if args.tolerance is None:
             args.tolerance = 0.001
@@ -428,7 +442,7 @@ def cmd_translate(args: argparse.Namespace) -> int:
         lines, diagnostics = _watched(path, src, setup)
         write_output(_output(args.output), lambda out: translate(
             lines, out, file=_name(path), source=args.source, target=args.target, setup=setup,
-            on_unsupported=args.on_unsupported, diagnostics=diagnostics, defines=defines),
+            on_unsupported=args.on_unsupported, diagnostics=diagnostics, defines=defines, arcs=args.arcs),
             input_path=_input_path(path), in_place=args.in_place)
     return 0
 
