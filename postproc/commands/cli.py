@@ -264,6 +264,9 @@ def build_parser() -> argparse.ArgumentParser:
                    help="also draw both toolpaths over each other with the largest deviation marked (SVG, or "
                         "PNG with the render extra); written whatever the verdict")
     v.add_argument("--arg", action="append", default=[], metavar="LETTER=VALUE", help=ARG)
+    v.add_argument("--arcs", type=_arcs, metavar="lines:TOL|ijk|r",
+                   help="OUT was translated with --arcs: with lines:TOL its chords may lie within TOL mm of IN's "
+                        "arcs (each checked against its arc); ijk and r change nothing to compare")
     v.set_defaults(run=cmd_verify)
 
     i = command("ir", "print a program's IR as XML",
@@ -523,7 +526,8 @@ def cmd_verify(args: argparse.Namespace) -> int:
                                   source=args.source, target=args.target, setup=setup,
                                   target_setup=target_setup, tolerance=args.tolerance,
                                   allow_ignored=args.allow_ignored, overlay=overlay,
-                                  arguments=_arguments(args.arg))
+                                  arguments=_arguments(args.arg),
+                                  chord_tolerance=args.arcs.tolerance if args.arcs and args.arcs.form == "lines" else None)
         if overlay is not None:
             write_output(args.plot, lambda out: overlay.write(out, str(fmt), report), binary=fmt == "png",
                          input_path=_input_path(args.input))
