@@ -44,6 +44,7 @@ WRITE_SLACK_MM = 2 * EXACT
 """What the writer's rounding may move a point (``postproc.numbers.EXACT``, at both ends of a chord)."""
 ARCS = frozenset(("cw", "ccw"))
 MOVES = frozenset(("rapid", "linear", "cw", "ccw"))
+COMPENSATION = frozenset(("CutterCompensation", "DynamicCutterCompensation"))
 
 
 @dataclass(frozen=True)
@@ -108,7 +109,7 @@ class _Rewriter:
     # -- one block ----------------------------------------------------------------------------------
     def block(self, block: Block) -> Iterator[Block]:
         sections = block.sections
-        if not changes_nothing(sections):
+        if not changes_nothing(sections) or not COMPENSATION.isdisjoint(sections):
             self._settings(sections)
         coords = sections.get("CoordinateSet")
         if coords is not None:
