@@ -112,7 +112,7 @@ def arcs(draw: st.DrawFn) -> tuple[Arc, float]:
     return Arc(start, end, (cx, cy), clockwise, helix), tolerance
 
 
-@settings(max_examples=300, deadline=None)
+@settings(max_examples=150, deadline=None)
 @given(arcs())
 def test_every_chord_lies_within_the_tolerance_and_ends_exactly(case: tuple[Arc, float]) -> None:
     arc, tolerance = case

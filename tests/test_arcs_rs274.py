@@ -5,7 +5,7 @@ translation, and postproc's comparison of toolpaths (``verify.compare``, with ``
 lines) must find them equal. The arcs rs274 computes are its own: centres from R by its own rules.
 
 rs274 prints 4 decimals, so positions agree to 1e-4 mm: ``TOLERANCE`` allows that.
-``POSTPROC_ARCS_PROGRAMS`` raises the number of programs (40 by default).
+``POSTPROC_ARCS_PROGRAMS`` raises the number of programs (25 by default).
 """
 
 from __future__ import annotations
@@ -25,7 +25,7 @@ from tests.support.rs274 import available, canonical_moves, run_rs274
 
 pytestmark = pytest.mark.skipif(not available(), reason="the LinuxCNC interpreter rs274 is not installed")
 
-PROGRAMS = int(os.environ.get("POSTPROC_ARCS_PROGRAMS", "40"))
+PROGRAMS = int(os.environ.get("POSTPROC_ARCS_PROGRAMS", "25"))
 TOLERANCE = 0.001
 """mm: rs274 prints 4 decimals of the unit (2.5e-3 mm in inches: ``TOLERANCE_INCH``)."""
 TOLERANCE_INCH = 0.006
