@@ -114,6 +114,9 @@ EXAMPLES = {
   postproc verify o1001.nc o1001.gcode --from fanuc --to grbl --plot diff.svg   # both toolpaths, overlaid""",
     "ir": """\
   postproc ir o1001.nc --dialect fanuc -o o1001.xml""",
+    "info": """\
+  postproc info o1001.nc --dialect fanuc                       # extent, tools, run time, targets
+  postproc info o1001.nc --dialect fanuc --machine vmc.xml --format json""",
     "dialects": """\
   postproc dialects                  # one column per dialect, one row per capability
   postproc dialects --format json    # the same for tools""",
@@ -276,6 +279,19 @@ def build_parser() -> argparse.ArgumentParser:
     i.add_argument("--machine", metavar="M.xml", help=MACHINE)
     i.add_argument("-o", "--output", metavar="OUT", help=OUTPUT)
     i.set_defaults(run=cmd_ir)
+
+    n = command("info", "report a program's extent, tools, run time, holes, features and targets",
+                "Simulate a program and report what a machinist asks before running it: its extent per axis (in "
+                "machine coordinates too with --machine), the tools in order with their feed distance and time, the "
+                "estimated run time, its holes and cycles, the features it uses, and which dialects can take it "
+                "(each translation tried, nothing written).")
+    n.add_argument("input", metavar="IN", help=f"the program ({STDIO})")
+    n.add_argument("--dialect", required=True, metavar="DIALECT", help="dialect of IN")
+    n.add_argument("--machine", metavar="M.xml", help=MACHINE + "; its <Axis rapid> rates time the rapids")
+    n.add_argument("--lib", action="append", default=[], metavar="DIR", help=LIB)
+    n.add_argument("--format", choices=("text", "json"), default="text",
+                   help="text (default, for people) or json (for tools; the schema is in docs/cli.md)")
+    n.set_defaults(run=cmd_info)
 
     d = command("dialects", "list installed dialects and their capabilities",
                 "List the installed dialects: what each reads and writes and its capability table.")
@@ -552,6 +568,19 @@ def cmd_ir(args: argparse.Namespace) -> int:
         diagnostics.check()
 
     write_output(_output(args.output), write, binary=True, input_path=_input_path(args.input))
+    return 0
+
+
+def cmd_info(args: argparse.Namespace) -> int:
+    from .info import program_info, render_text
+    setup = _setup(args.machine, args.lib) if args.machine or args.lib else None
+    with _open_program(args.input) as src:
+        report = program_info(src, file=_name(args.input), dialect=args.dialect, setup=setup)
+    if args.format == "json":
+        import json
+        print(json.dumps(report, indent=2))
+    else:
+        render_text(report, sys.stdout)
     return 0
 
 
