@@ -318,10 +318,11 @@ class ProgramInfo:
         return said
 
 
-class _Discard(io.TextIOBase):
-    """An output that keeps nothing: a trial translation's text is not needed."""
+class _Discard(io.StringIO):
+    """An output that keeps nothing: a trial translation's text is not needed (a long program's would
+    otherwise be held whole, once per target)."""
 
-    def write(self, text: str) -> int:  # type: ignore[override]
+    def write(self, text: str) -> int:
         return len(text)
 
 

@@ -98,10 +98,12 @@ def _quantize(value: float, quantum: float) -> float:
 
 
 def signed_radius(arc: Arc) -> float:
-    """The R word of an arc: its start radius, negative over half a turn (the RS274 convention: [V] LinuxCNC
-    G-code reference "Radius format arc": a negative R is an arc of more than 180 degrees; [V] grbl
-    ``gcode.c``: "CCW arc > 180 degrees: negative R"; [K] Fanuc 0i-MF operator's manual "Circular
-    interpolation": an arc over 180 degrees takes a negative R)."""
+    """The R word of an arc: its start radius, negative over half a turn (the RS274 convention). [V] LinuxCNC:
+    its interpreter rs274 runs the negative R this writes as the long arc (tests/test_arcs_rs274.py); [K] grbl
+    ``gcode.c`` (and the ports derived from it): a negative R puts the centre on the far side of the chord,
+    "an arc of more than 180 degrees"; [K] Fanuc operator's manuals, circular interpolation: an arc over 180
+    degrees is programmed with a negative R; [K] Beckhoff ISG: "with negative radius value the largest
+    possible circle" (infosys, Radius programming)."""
     r = arc.radii[0]
     return -r if arc.sweep > HALF_TURN else r
 

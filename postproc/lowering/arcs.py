@@ -345,7 +345,7 @@ class _Geometry:
         for axis in offsets:
             if axis not in self.plane:
                 raise ProgramError(f"arc centre offset along {axis} is outside the {self.owner.state.plane} plane")
-        radius = None if m.radius is None else float(m.radius) * mm
+        radius = None if m.radius is None else float(m.radius) * mm  # type: ignore[arg-type]  # checked above
         try:
             c = arc_centre((s[0] * mm, s[1] * mm), (e[0] * mm, e[1] * mm), self.plane, radius,
                            {a: v * mm for a, v in offsets.items()}, m.mode == "cw")
@@ -375,7 +375,7 @@ class _Geometry:
             increment, address = self.forms[axis]
             axes[address] = round(target[axis] - self.written[axis], 9) if increment else target[axis]
         self.written.update(target)
-        centre_words = None if centre is None else {a1: centre[0], a2: centre[1]}
+        centre_words: dict[str, float | Expr] | None = None if centre is None else {a1: centre[0], a2: centre[1]}
         return Motion(mode, axes, centre_words, radius)
 
     def finish(self) -> None:
