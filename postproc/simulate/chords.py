@@ -10,25 +10,33 @@ from __future__ import annotations
 
 import math
 from itertools import zip_longest
-from typing import TYPE_CHECKING, Any, Iterable, Iterator
+from typing import Any, Iterable, Iterator, Protocol
 
 from ..geometry import PLANE_INDEX
-
-if TYPE_CHECKING:
-    from .verify import Move, Report
+from .moves import Move, same_feed
 
 Item = Any
-"""A normalised move (``verify.Move``) or a machine event (a dict)."""
+"""A normalised move (``Move``) or a machine event (a dict)."""
 
 
-def pair_with_chords(ins: Iterable[Item], outs: Iterable[Item], report: "Report") -> Iterator[tuple[Item, Item]]:
+class Report(Protocol):
+    """What the pairing reads and fills of ``verify.Report``."""
+
+    tolerance: float
+    chord_tolerance: float | None
+    chord_deviation: float
+    chord_where: tuple[int, int] | None
+    mismatch: str | None
+    mismatch_at: tuple[int | None, int | None]
+
+
+def pair_with_chords(ins: Iterable[Item], outs: Iterable[Item], report: Report) -> Iterator[tuple[Item, Item]]:
     """``zip_longest(ins, outs)``, except that an arc of IN met by a straight feed of OUT takes as many of
     OUT's feeds as make up the arc, paired as one arc move that stands for them. Their distance from the
     arc goes to ``report.chord_deviation``; chords that do not make up the arc are a mismatch."""
     if report.chord_tolerance is None:
         yield from zip_longest(ins, outs)
         return
-    from .verify import Move
     rest = iter(outs)
     for a in ins:
         b = next(rest, None)
@@ -40,8 +48,7 @@ def pair_with_chords(ins: Iterable[Item], outs: Iterable[Item], report: "Report"
         yield None, b
 
 
-def _chords(arc: "Move", first: "Move", rest: Iterator[Item], report: "Report") -> "Move":
-    from .verify import Move, _same_feed
+def _chords(arc: Move, first: Move, rest: Iterator[Item], report: Report) -> Move:
     i, j, _ = PLANE_INDEX[arc.plane or "XY"]
     pi, pj = "xyz"[i], "xyz"[j]
     c = arc.centre
@@ -62,7 +69,7 @@ def _chords(arc: "Move", first: "Move", rest: Iterator[Item], report: "Report") 
     problem: str | None = None
     near = report.tolerance + 1e-9
     while True:
-        if not _same_feed(chord.f, arc.f):
+        if not same_feed(chord.f, arc.f):
             problem = f"IN's arc feeds at F{arc.f:g}, OUT's line at F{chord.f:g}"
             break
         s, e = chord.start, chord.end

@@ -23,34 +23,13 @@ from ..plugins import Registry, default_registry
 from ..setup.machine_setup import MachineSetup
 from ..geometry import CENTRE_KEYS, PLANE_INDEX, arc_sweep
 from ..drawing.overlay import Overlay
+from .moves import FEED_TOLERANCE as FEED_TOLERANCE, Move, same_feed as _same_feed  # (public names here too)
 from .toolpath import MOVES_THE_TOOL, Event, start_position, toolpath_events
 
 Point = tuple[float, float, float]
 
 EVENT_TOLERANCE = 1e-6
 """Numbers in machine events (dwell seconds, angles) compare within this."""
-FEED_TOLERANCE = 1e-4
-"""Relative: feeds agree when within 0.01 % (a converted inch feed written with fewer places)."""
-
-
-@dataclass(slots=True)
-class Move:
-    """A normalised move: possibly several merged moves of one file."""
-
-    kind: str
-    start: dict[str, float]
-    end: dict[str, float]
-    f: float | None
-    first_line: int
-    last_line: int
-    direction: dict[str, float] | None = None
-    """Unit vector of a straight run (None for arcs)."""
-    centre: tuple[float, float] | None = None
-    plane: str | None = None
-    radius: float = 0.0
-    sweep: float = 0.0
-
-
 @dataclass(slots=True)
 class Report:
     """The outcome of a comparison; ``ok`` only when within tolerance and structurally the same."""
@@ -188,12 +167,6 @@ def _one_helix(run: Move, m: Move, eps: float) -> bool:
             if abs(m.end[k] - m.start.get(k, 0.0) - rate * m.sweep) > eps:
                 return False
     return True
-
-
-def _same_feed(a: float | None, b: float | None) -> bool:
-    if a is None or b is None:
-        return a is b
-    return abs(a - b) <= max(1e-9, FEED_TOLERANCE * max(abs(a), abs(b)))
 
 
 def normalise(events: Iterable[Event], start: dict[str, float], eps: float) -> Iterator[Move | Event]:
