@@ -15,6 +15,8 @@ Decisions (docs/cli.md says the same):
   centre far) the arc is split into equal pieces of at most 120 degrees, each written with R. Where
   even that moves the centre more than ``R_FORM_TOLERANCE_MM`` (an I/J/K arc whose end lies off its
   circle) it keeps its centre form, with a warning at its line.
+- In the profile of a lathe cycle the target keeps (its block numbers delimit the profile), an arc is
+  not split: ``lines`` refuses it, ``r`` keeps it in centre form with a warning.
 - The start point must be known (programmed absolutely since the origin last moved) unless every word
   of the arc is incremental; else a located error. A program that computes is executed (flattened):
   an arc in a loop starts somewhere else each time.
@@ -27,6 +29,7 @@ from dataclasses import dataclass
 from typing import Iterator
 
 from ..context import Context
+from ..dialect import Dialect
 from ..errors import PostprocError, ProgramError, UnsupportedError, UsageError
 from ..event_order import after_motion
 from ..expr import Expr
@@ -73,9 +76,9 @@ def parse_arc_option(text: str) -> ArcOption:
     raise UsageError(f"--arcs takes lines:TOL, ijk or r, got {text!r}")
 
 
-def rewrite_arcs(blocks: Iterator[Block], ctx: Context, option: ArcOption) -> Iterator[Block]:
-    """The lowered program with its arcs rewritten as ``option`` asks (see the module docstring)."""
-    rewriter = _Rewriter(ctx, option)
+def rewrite_arcs(blocks: Iterator[Block], ctx: Context, option: ArcOption, target: type[Dialect]) -> Iterator[Block]:
+    """The program lowered for ``target`` with its arcs rewritten as ``option`` asks (see the module docstring)."""
+    rewriter = _Rewriter(ctx, option, target)
     for block in blocks:
         try:
             yield from rewriter.block(block)
@@ -89,9 +92,14 @@ class _Rewriter:
     """Where the program stands (program units, as programmed: a diameter stays a diameter) and the
     settings an arc depends on."""
 
-    def __init__(self, ctx: Context, option: ArcOption) -> None:
+    def __init__(self, ctx: Context, option: ArcOption, target: type[Dialect]) -> None:
         self.ctx = ctx
         self.option = option
+        self.diameter = ctx.diameter and "lathe" in target.MACHINE_TYPES and target.DIAMETER_PROGRAMMING
+        """X words are diameters in the lowered program (a target that programs radii got them halved:
+        ``postproc.cycles.lathe_lowering``)."""
+        self.in_profile = False
+        """The block is in the profile of a lathe cycle the target keeps: run by the cycle, not in turn."""
         self.state = ModalState()
         if ctx.lathe:
             self.state.plane = "ZX"
@@ -109,6 +117,10 @@ class _Rewriter:
     # -- one block ----------------------------------------------------------------------------------
     def block(self, block: Block) -> Iterator[Block]:
         sections = block.sections
+        in_profile = "InProfile" in sections
+        if in_profile != self.in_profile:
+            self.unknown()  # a profile starts where its cycle stood, and after it the cycle's end is not tracked
+            self.in_profile = in_profile
         if not changes_nothing(sections) or not COMPENSATION.isdisjoint(sections):
             self._settings(sections)
         coords = sections.get("CoordinateSet")
@@ -134,8 +146,8 @@ class _Rewriter:
             self.unknown()  # a native canned cycle (or its repeat) ends where its rules say
         if isinstance(compound, CompoundMotion):
             self._compound(block, compound)
-        if "CannedCycle" in sections:
-            self.unknown()
+        if "CannedCycle" in sections or "LatheCycle" in sections and compound is None:
+            self.unknown()  # a native cycle ends where its controller's rules say
         yield from out
 
     def _settings(self, sections: dict[str, Section]) -> None:
@@ -217,6 +229,9 @@ class _Rewriter:
             except ValueError as err:
                 raise UnsupportedError(f"--arcs lines: {err}") from None
             motions = [geometry.piece("linear", p, others, None, None) for p, others in points]
+            if self.in_profile and len(motions) > 1:
+                raise UnsupportedError("--arcs lines: an arc in the profile of a lathe cycle the target keeps cannot "
+                                       "become lines (the cycle's block numbers delimit its profile)")
             self.restate = True
         elif form == "ijk":
             motions = [geometry.piece(motion.mode or "cw", arc.end, {a: e for a, (_, e) in arc.along.items()},
@@ -236,6 +251,10 @@ class _Rewriter:
         pieces = [arc] if r_centre_error(arc, slack) * mm <= R_FORM_TOLERANCE_MM else split(
             arc, r_pieces(arc), geometry.quantum)
         worst = max(r_centre_error(piece, slack) for piece in pieces) * mm
+        if len(pieces) > 1 and self.in_profile:
+            self.ctx.diagnostics.warn("--arcs r: the arc keeps its centre form: R needs it split, and it is in the "
+                                      "profile of a lathe cycle the target keeps", self.ctx.at(block))
+            return None
         if worst > R_FORM_TOLERANCE_MM:
             self.ctx.diagnostics.warn(f"--arcs r: the arc keeps its centre form: written with R its centre would "
                                       f"move {worst:.4f} mm (its end point lies off its circle)", self.ctx.at(block))
@@ -292,7 +311,7 @@ class _Geometry:
         self.quantum = 1e-7 if owner.state.units == "inch" else 1e-6
         """Intermediate points are rounded to this (program units): finer than the writer's ``EXACT``."""
         increments = owner.ctx.increments
-        self.diameter = owner.ctx.diameter
+        self.diameter = owner.diameter
         if isinstance(motion.radius, Expr) or any(isinstance(v, Expr) for v in (motion.center or {}).values()):
             raise UnsupportedError("--arcs: a computed arc cannot be rewritten")
         self.forms: dict[str, tuple[bool, str]] = {}
