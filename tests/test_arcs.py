@@ -298,3 +298,14 @@ def test_lines_under_inverse_time_is_refused() -> None:
 def test_too_fine_a_tolerance_for_a_huge_arc_is_refused() -> None:
     message = _error("G21 G90 G17 F100\nG0 X0 Y0\nG2 X0 Y0 I900000 J0\nM2\n", "lines:0.0001")
     assert message.startswith("t.ngc:3:") and "chords would be needed" in message
+
+
+def test_under_warn_a_refused_arc_is_written_as_it_was() -> None:
+    text = "G21 G90 G17 F100\nT1 M6\nG0 X-10 Y0\nG41 D1 G1 X0 Y0\nG2 X10 Y0 R5\nG40 G1 X20\nM2\n"
+    warnings = io.StringIO()
+    from postproc.errors import Diagnostics
+    out = io.StringIO()
+    translate(io.StringIO(text), out, file="t.ngc", source="linuxcnc", target="linuxcnc", on_unsupported="warn",
+              diagnostics=Diagnostics(warn_stream=warnings), arcs=parse_arc_option("lines:0.01"))
+    assert "G2 X10 Y0 R5" in out.getvalue()
+    assert "t.ngc:5:" in warnings.getvalue() and "written as it was" in warnings.getvalue()

@@ -17,6 +17,7 @@ Decisions (docs/cli.md says the same):
   circle) it keeps its centre form, with a warning at its line.
 - In the profile of a lathe cycle the target keeps (its block numbers delimit the profile), an arc is
   not split: ``lines`` refuses it, ``r`` keeps it in centre form with a warning.
+- Under ``--on-unsupported warn`` a refused arc is written as it was, with a warning at its line.
 - The start point must be known (programmed absolutely since the origin last moved) unless every word
   of the arc is incremental; else a located error. A program that computes is executed (flattened):
   an arc in a loop starts somewhere else each time.
@@ -83,7 +84,11 @@ def rewrite_arcs(blocks: Iterator[Block], ctx: Context, option: ArcOption, targe
         try:
             yield from rewriter.block(block)
         except PostprocError as err:
-            ctx.diagnostics.error(err if err.location is not None else err.located(ctx.at(block)))
+            located = err if err.location is not None else err.located(ctx.at(block))
+            if isinstance(err, UnsupportedError) and ctx.on_unsupported == "warn":
+                ctx.diagnostics.warn(f"{err.message} (the arc is written as it was)", located.location)
+            else:
+                ctx.diagnostics.error(located)
             rewriter.unknown()
             yield block
 
