@@ -134,3 +134,18 @@ def test_a_program_that_cannot_run_is_a_located_error(cli, tmp_path) -> None:
     program.write_text("G21 G90\nG1 X10\nM2\n")  # a feed move with no feed rate
     result = cli("info", program, "--dialect", "linuxcnc")
     assert result.status == 1 and result.err.startswith(f"{program}:2:")
+
+
+def test_a_lathe_program_in_diameters(root) -> None:
+    from postproc.setup.machine_setup import load_setup
+    from postproc.plugins import default_registry
+    setup = load_setup(str(root / "examples/setups/gsk_980tdc.xml"), groups=default_registry().setup_groups)
+    path = root / "examples/gsk/o0101_stepped_shaft.nc"
+    report = program_info(path.read_text().splitlines(True), file="o0101.nc", dialect="gsk", setup=setup,
+                          targets=False)
+    # the G70 finish pass reaches the profile's X18 (N10) and the arc's end Z-55; the last rapid X100 Z50
+    assert report["x_mode"] == "diameter"
+    assert report["extent"]["work"] == {"X": {"min": 18, "max": 100}, "Z": {"min": -55, "max": 50}}
+    # one G71 (its two blocks: the first holds data only) and one G70; no hole
+    assert report["cycles"] == {"turn_finish": 1, "turn_rough": 1} and report["holes"] == 0
+    assert {"lathe cycles", "diameter programming", "arcs in radius form"} <= set(report["features"])

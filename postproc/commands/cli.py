@@ -575,7 +575,8 @@ def cmd_info(args: argparse.Namespace) -> int:
     from .info import program_info, render_text
     setup = _setup(args.machine, args.lib) if args.machine or args.lib else None
     with _open_program(args.input) as src:
-        report = program_info(src, file=_name(args.input), dialect=args.dialect, setup=setup)
+        report = program_info(src, file=_name(args.input), dialect=args.dialect, setup=setup,
+                              machine=args.machine is not None)
     if args.format == "json":
         import json
         print(json.dumps(report, indent=2))

@@ -109,8 +109,8 @@ class ProgramInfo:
             for step in registry.lowerings:
                 if step in TRANSLATE_ONLY:
                     continue
-                if step in (expand_canned_cycles, expand_lathe_cycles):
-                    steps.append(self.features.count_cycles)  # each cycle block still whole, a pattern's points made
+                if step in (expand_canned_cycles, expand_lathe_cycles) and self.features.count_cycles not in steps:
+                    steps.append(self.features.count_cycles)  # once, before either expansion: a pattern's points made
                 steps.append(step)
             lowered = lower_for(self.features.observe(blocks, ctx), ctx, ToolpathTarget, "error", steps)
             sim = Simulator(ctx, False, self.dialect.CUTTER_RULES)
@@ -333,12 +333,14 @@ def _n(value: float) -> float:
 
 
 def program_info(lines: Iterable[str], *, file: str, dialect: str, setup: MachineSetup | None = None,
-                 registry: Registry | None = None, targets: bool = True) -> dict[str, Any]:
+                 registry: Registry | None = None, targets: bool = True, machine: bool | None = None) -> dict[str, Any]:
     """The report of a program as the JSON ``postproc info --format json`` prints (docs/cli.md). Raises
-    ``ErrorList`` when the program cannot be simulated."""
+    ``ErrorList`` when the program cannot be simulated. ``machine``: report the extent in machine
+    coordinates too (default: when a set-up is given)."""
     registry = registry or default_registry()
     text = list(lines)
-    info = ProgramInfo(file, registry.dialect(dialect), setup or MachineSetup(), setup is not None)
+    info = ProgramInfo(file, registry.dialect(dialect), setup or MachineSetup(),
+                       setup is not None if machine is None else machine)
     info.collect(text, registry, Diagnostics(warn_stream=io.StringIO()))
     if targets:
         info.try_targets(text, registry)

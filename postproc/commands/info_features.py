@@ -82,7 +82,7 @@ class Features:
                     kind = cycle.kind  # type: ignore[attr-defined]
                     self.cycles[kind] = self.cycles.get(kind, 0) + 1
             lathe = sections.get("LatheCycle")
-            if lathe is not None:
+            if lathe is not None and getattr(lathe, "form", "") != "first":  # a first block holds data only
                 kind = str(getattr(lathe, "kind", "lathe cycle"))
                 self.cycles[kind] = self.cycles.get(kind, 0) + 1
             yield block
