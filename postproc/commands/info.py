@@ -22,13 +22,12 @@ from __future__ import annotations
 
 import io
 import math
-from typing import Any, Callable, Iterable, Iterator, TextIO
+from typing import Any, Iterable, TextIO
 
 from ..cycles.lowering import expand_canned_cycles
 from ..cycles.lathe_lowering import expand_lathe_cycles
-from ..context import Context
 from ..dialect import Dialect
-from ..errors import Diagnostics, ErrorList, Location, PostprocError, UsageError
+from ..errors import Diagnostics, ErrorList, PostprocError, UsageError
 from ..geometry import CENTRE_KEYS, PLANE_INDEX, arc_sweep
 from ..ir import Block
 from ..lowering.lower import Lowering, lower_for
@@ -37,7 +36,7 @@ from ..reading import gc_paused, read_blocks
 from ..setup.machine import ROTARY_AXES
 from ..setup.machine_setup import MachineSetup
 from ..simulate.toolpath import TRANSLATE_ONLY, Simulator, ToolpathTarget, start_position
-from ..simulate.travel import TravelCheck, TravelError
+from ..simulate.travel import TravelCheck
 from .info_features import Features
 
 SCHEMA = 1
