@@ -10,7 +10,7 @@ Assumptions (the text and the JSON say them where they apply):
   Machine coordinates (with ``--machine``) add the set-up's work and tool offsets as the travel check
   does (``postproc.simulate.travel``); an axis whose offset the set-up lacks is unknown, with why.
 - Time: a feed move takes its length at its feed (per minute; per revolution at the programmed spindle
-  speed; inverse time as programmed); a rapid takes its slowest axis's distance at that axis's
+  speed, untimed under constant surface speed; inverse time as programmed); a rapid takes its slowest axis's distance at that axis's
   ``<Axis rapid>`` rate; dwells their seconds. Acceleration, tool changes and M-code waits take no
   time. A move whose time cannot be known (a rapid on an axis without a rate, a feed per revolution
   without a spindle speed) is left out of the total, which then says "at least".
@@ -97,6 +97,9 @@ class ProgramInfo:
         self.diameter = False
         self.untimed_rapid_axes: set[str] = set()
         self.per_rev_without_speed = False
+        self.css = False
+        """Constant surface speed is on: S is a surface speed, the revolutions vary with the diameter."""
+        self.per_rev_under_css = False
         self.targets: dict[str, dict[str, Any]] = {}
 
     # -- the simulation ------------------------------------------------------------------------------
@@ -120,6 +123,9 @@ class ProgramInfo:
             self.tally: _Tally | None = None
             out: list[dict[str, Any]] = []
             for block in lowered:
+                mode = block.sections.get("SpindleMode")
+                if mode is not None:
+                    self.css = getattr(mode, "mode", "rpm") == "css"
                 try:
                     sim.block(block, out.append)
                 except PostprocError as err:
@@ -232,6 +238,9 @@ class ProgramInfo:
             return None
         mode = sim.modal.feed_mode
         if ev["move"] == "tap" or mode == "per_rev":
+            if self.css:
+                self.per_rev_under_css = True
+                return None
             rpm = sim.modal.spindle_rpm
             if not isinstance(rpm, (int, float)) or rpm <= 0:
                 self.per_rev_without_speed = True
@@ -312,6 +321,9 @@ class ProgramInfo:
             said.append("rapids at the set-up's rates, the slowest axis deciding")
         if self.per_rev_without_speed:
             said.append("feeds per revolution without a programmed spindle speed are not timed")
+        if self.per_rev_under_css:
+            said.append("feeds per revolution under constant surface speed are not timed (the revolutions "
+                        "follow the diameter)")
         if not self.machine:
             said.append("work offsets are zero unless the program sets them; no machine extent without --machine")
         return said
