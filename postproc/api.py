@@ -13,6 +13,7 @@ native.install()  # the compiled hot path, before any of its modules is imported
 from .dialect import Dialect
 from .errors import Diagnostics, ErrorLevel, PostprocError, UsageError
 from .ir import Block
+from .lowering.arcs import ArcOption, rewrite_arcs
 from .lowering.lower import lower_for
 from .plugins import Registry, default_registry
 from .reading import gc_paused as gc_paused, read_blocks as read_blocks  # public API names
@@ -33,14 +34,15 @@ def translate(lines: Iterable[str], out: TextIO, *, file: str, source: str, targ
               on_unsupported: str = "error", level: ErrorLevel = ErrorLevel.RAISE,
               diagnostics: Diagnostics | None = None, defines: dict[str, str] | None = None,
               output_map: OutputMap | None = None, units: str | None = None,
-              transform: str | ProgramTransform | None = None) -> Diagnostics:
+              transform: str | ProgramTransform | None = None, arcs: ArcOption | None = None) -> Diagnostics:
     """Translate a program from ``source`` to ``target`` dialect, streaming into ``out``.
 
     ``defines`` are the user variables the set-up's templates see (``--define``); ``output_map``, when
     given, is filled with the source line (or template) of every written line. ``units`` ('mm' or
     'inch') converts the whole program, ``transform`` (``postproc.transforms.spec``'s text, or one parsed)
     moves it (``postproc.transforms``); a program that computes is then flattened where the target can
-    take it no other way, and refused where it cannot be flattened.
+    take it no other way, and refused where it cannot be flattened. ``arcs`` rewrites every arc after
+    that (``postproc.lowering.arcs``; a program that computes is then executed).
 
     Raises ``ErrorList`` when the program has errors (``out`` then holds a partial result the caller
     must discard); returns the diagnostics (warnings) otherwise.
@@ -65,7 +67,8 @@ def translate(lines: Iterable[str], out: TextIO, *, file: str, source: str, targ
             lines = list(lines)  # read twice: the travel check simulates the source first
             check_travel(lines, file=file, dialect=src, setup=setup, diagnostics=diagnostics,
                          on_unsupported=on_unsupported, registry=registry)
-        mode = "keep" if src.NAME == dst.NAME and not options.active() else "auto" if dst.PROGRAMS else "execute"
+        mode = ("keep" if src.NAME == dst.NAME and not options.active() and arcs is None
+                else "auto" if dst.PROGRAMS and arcs is None else "execute")
         ctx, blocks = read_blocks(lines, file, src, setup, diagnostics, program_mode=mode, prepare=prepare)
         sequences = Sequences(ctx, src.NAME, dst, defines)
         ctx.run_data["sequences"] = sequences
@@ -73,6 +76,8 @@ def translate(lines: Iterable[str], out: TextIO, *, file: str, source: str, targ
             ctx.run_data["output_map"] = output_map
         lowered = lower_for(sequences.before_lowering(blocks), ctx, dst, on_unsupported, registry.lowerings)
         lowered = transform_program(lowered, ctx, options)
+        if arcs is not None:
+            lowered = rewrite_arcs(lowered, ctx, arcs, dst)
         writer = dst.WRITER(ctx, src.NAME, dst)
         from .fast import install as install_fast_lane  # (imported with the writer's modules, not at start)
         install_fast_lane(writer)

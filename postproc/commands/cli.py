@@ -17,6 +17,7 @@ from .. import native
 native.install()  # the compiled hot path, before any of its modules is imported
 
 from ..api import read_blocks, translate
+from ..lowering.arcs import ArcOption, parse_arc_option
 from ..errors import ConfigError, Diagnostics, ErrorList, Location, PostprocError, UsageError
 from ..output.outfile import BUFFER, ENCODING, write_output
 from ..plugins import default_registry
@@ -114,6 +115,9 @@ EXAMPLES = {
   postproc verify o1001.nc o1001.gcode --from fanuc --to grbl --plot diff.svg   # both toolpaths, overlaid""",
     "ir": """\
   postproc ir o1001.nc --dialect fanuc -o o1001.xml""",
+    "info": """\
+  postproc info o1001.nc --dialect fanuc                       # extent, tools, run time, targets
+  postproc info o1001.nc --dialect fanuc --machine vmc.xml --format json""",
     "dialects": """\
   postproc dialects                  # one column per dialect, one row per capability
   postproc dialects --format json    # the same for tools""",
@@ -224,6 +228,9 @@ def build_parser() -> argparse.ArgumentParser:
                         "a comment); as <Output programNumber>")
     t.add_argument("--define", action="append", default=[], metavar="NAME=VALUE",
                    help="a variable the set-up's templates see as NAME (repeatable)")
+    t.add_argument("--arcs", type=_arcs, metavar="lines:TOL|ijk|r",
+                   help="rewrite every arc: as lines within TOL mm of it, in centre form (I J K) or in radius "
+                        "form (R); a program that computes is flattened (see docs/cli.md)")
     _batch_arguments(t)
     t.add_argument("--units", choices=("mm", "inch"), help="convert the whole program to these units")
     t.add_argument("--transform", type=transform_argument, metavar="OPS",
@@ -268,6 +275,9 @@ def build_parser() -> argparse.ArgumentParser:
     v.add_argument("--units", choices=("mm", "inch"), help="OUT was translated with --units (both paths are in mm)")
     v.add_argument("--transform", type=transform_argument, metavar="OPS",
                    help="OUT was translated with this --transform: IN's path is moved by it before comparing")
+    v.add_argument("--arcs", type=_arcs, metavar="lines:TOL|ijk|r",
+                   help="OUT was translated with --arcs: with lines:TOL its chords may lie within TOL mm of IN's "
+                        "arcs (each checked against its arc); ijk and r change nothing to compare")
     v.set_defaults(run=cmd_verify)
 
     i = command("ir", "print a program's IR as XML",
@@ -277,6 +287,19 @@ def build_parser() -> argparse.ArgumentParser:
     i.add_argument("--machine", metavar="M.xml", help=MACHINE)
     i.add_argument("-o", "--output", metavar="OUT", help=OUTPUT)
     i.set_defaults(run=cmd_ir)
+
+    n = command("info", "report a program's extent, tools, run time, holes, features and targets",
+                "Simulate a program and report what a machinist asks before running it: its extent per axis (in "
+                "machine coordinates too with --machine), the tools in order with their feed distance and time, the "
+                "estimated run time, its holes and cycles, the features it uses, and which dialects can take it "
+                "(each translation tried, nothing written).")
+    n.add_argument("input", metavar="IN", help=f"the program ({STDIO})")
+    n.add_argument("--dialect", required=True, metavar="DIALECT", help="dialect of IN")
+    n.add_argument("--machine", metavar="M.xml", help=MACHINE + "; its <Axis rapid> rates time the rapids")
+    n.add_argument("--lib", action="append", default=[], metavar="DIR", help=LIB)
+    n.add_argument("--format", choices=("text", "json"), default="text",
+                   help="text (default, for people) or json (for tools; the schema is in docs/cli.md)")
+    n.set_defaults(run=cmd_info)
 
     d = command("dialects", "list installed dialects and their capabilities",
                 "List the installed dialects: what each reads and writes and its capability table.")
@@ -345,6 +368,14 @@ def _tolerance(text: str) -> float:
     if not math.isfinite(value) or value < 0:
         raise argparse.ArgumentTypeError(f"must be a finite number of at least 0, got {text!r}")
     return value
+
+
+def _arcs(text: str) -> ArcOption:
+    """``--arcs lines:TOL|ijk|r`` (argparse turns the error into usage, exit 2)."""
+    try:
+        return parse_arc_option(text)
+    except UsageError as err:
+        raise argparse.ArgumentTypeError(err.message) from None
 
 
 def _setup(path: str | None, lib: Sequence[str] = ()) -> MachineSetup:
@@ -416,6 +447,8 @@ def cmd_translate(args: argparse.Namespace) -> int:
             raise UsageError("--units and --transform translate one program: not with several inputs")
         if args.program_number is not None:
             raise UsageError("--program-number numbers one program: not with several inputs")
+        if args.arcs is not None:
+            raise UsageError("--arcs rewrites one program: not with several inputs or the batch options")
         from .batch.command import run_batch
         if args.tolerance is None:
             args.tolerance = 0.001
@@ -439,7 +472,7 @@ def cmd_translate(args: argparse.Namespace) -> int:
         write_output(_output(args.output), lambda out: translate(
             lines, out, file=_name(path), source=args.source, target=args.target, setup=setup,
             on_unsupported=args.on_unsupported, diagnostics=diagnostics, defines=defines, units=args.units,
-            transform=args.transform),
+            transform=args.transform, arcs=args.arcs),
             input_path=_input_path(path), in_place=args.in_place)
     return 0
 
@@ -520,7 +553,8 @@ def cmd_verify(args: argparse.Namespace) -> int:
                                   source=args.source, target=args.target, setup=setup,
                                   target_setup=target_setup, tolerance=args.tolerance,
                                   allow_ignored=args.allow_ignored, overlay=overlay,
-                                  arguments=_arguments(args.arg), transform=args.transform)
+                                  arguments=_arguments(args.arg), transform=args.transform,
+                                  chord_tolerance=args.arcs.tolerance if args.arcs and args.arcs.form == "lines" else None)
         if overlay is not None:
             write_output(args.plot, lambda out: overlay.write(out, str(fmt), report), binary=fmt == "png",
                          input_path=_input_path(args.input))
@@ -545,6 +579,20 @@ def cmd_ir(args: argparse.Namespace) -> int:
         diagnostics.check()
 
     write_output(_output(args.output), write, binary=True, input_path=_input_path(args.input))
+    return 0
+
+
+def cmd_info(args: argparse.Namespace) -> int:
+    from .info import program_info, render_text
+    setup = _setup(args.machine, args.lib) if args.machine or args.lib else None
+    with _open_program(args.input) as src:
+        report = program_info(src, file=_name(args.input), dialect=args.dialect, setup=setup,
+                              machine=args.machine is not None)
+    if args.format == "json":
+        import json
+        print(json.dumps(report, indent=2))
+    else:
+        render_text(report, sys.stdout)
     return 0
 
 

@@ -53,6 +53,9 @@ class AxisTravel(Entry):
     home: float | None = coordinate()
     """The reference position (machine coordinates); unknown when absent (a G28 on a checked axis is
     then an error rather than a guess)."""
+    rapid: float | None = setting(None, gt=0, le=1_000_000)
+    """The axis's rapid traverse rate (set-up units, or degrees, per minute), for ``postproc info``'s run
+    time; unknown when absent."""
 
     def __post_init__(self) -> None:
         if self.minimum is not None and self.maximum is not None and self.minimum >= self.maximum:

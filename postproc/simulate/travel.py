@@ -158,9 +158,10 @@ class TravelCheck:
         extremes: dict[str, list[float]] = {}
         a1, a2 = plane
         shift = {a: None if new.get(a) is None else new[a] - end[a] for a in plane}  # type: ignore[operator]
-        if shift[a1] is not None and shift[a2] is not None:
-            for index, point in _arc_extremes((start[a1], start[a2]), (end[a1], end[a2]), centre, clockwise):
-                extremes.setdefault(plane[index], []).append(point + shift[plane[index]])  # type: ignore[operator]
+        for index, point in _arc_extremes((start[a1], start[a2]), (end[a1], end[a2]), centre, clockwise):
+            moved = shift[plane[index]]  # an axis whose machine position is known (the other's may not be)
+            if moved is not None:
+                extremes.setdefault(plane[index], []).append(point + moved)
         for name in self.checked:
             reached = new.get(name)
             if self._check(block, name, reached, None) or reached is None:

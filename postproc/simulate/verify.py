@@ -15,7 +15,6 @@ import copy
 import dataclasses
 import math
 from dataclasses import dataclass, field
-from itertools import zip_longest
 from typing import Any, Iterable, Iterator, Mapping
 
 from ..lowering.inverse_time import per_minute
@@ -26,34 +25,13 @@ from ..geometry import CENTRE_KEYS, PLANE_INDEX, arc_sweep
 from ..drawing.overlay import Overlay
 from ..transforms.events import moved_events, moved_setup
 from ..transforms.spec import ProgramTransform
+from .moves import FEED_TOLERANCE as FEED_TOLERANCE, Move, same_feed as _same_feed  # (public names here too)
 from .toolpath import MOVES_THE_TOOL, Event, start_position, toolpath_events
 
 Point = tuple[float, float, float]
 
 EVENT_TOLERANCE = 1e-6
 """Numbers in machine events (dwell seconds, angles) compare within this."""
-FEED_TOLERANCE = 1e-4
-"""Relative: feeds agree when within 0.01 % (a converted inch feed written with fewer places)."""
-
-
-@dataclass(slots=True)
-class Move:
-    """A normalised move: possibly several merged moves of one file."""
-
-    kind: str
-    start: dict[str, float]
-    end: dict[str, float]
-    f: float | None
-    first_line: int
-    last_line: int
-    direction: dict[str, float] | None = None
-    """Unit vector of a straight run (None for arcs)."""
-    centre: tuple[float, float] | None = None
-    plane: str | None = None
-    radius: float = 0.0
-    sweep: float = 0.0
-
-
 @dataclass(slots=True)
 class Report:
     """The outcome of a comparison; ``ok`` only when within tolerance and structurally the same."""
@@ -77,11 +55,17 @@ class Report:
     differs between the programs: the paths compared are not the paths cut."""
     allow_ignored: bool = False
     """``--allow-ignored``: such a difference does not fail the comparison."""
+    chord_tolerance: float | None = None
+    """``--arcs lines:TOL``: OUT may cut an arc of IN into chords within TOL mm of it (``postproc.simulate.chords``)."""
+    chord_deviation: float = 0.0
+    chord_where: tuple[int, int] | None = None
+    """Source lines (IN, OUT) of the chord furthest from its arc."""
 
     @property
     def ok(self) -> bool:
         return (self.mismatch is None and self.max_deviation <= self.tolerance
-                and (self.allow_ignored or not self.left_out_moves))
+                and (self.allow_ignored or not self.left_out_moves)
+                and self.chord_deviation <= (self.chord_tolerance or 0.0) + self.tolerance)
 
     def summary(self) -> str:
         where = f"IN:{self.where[0]} / OUT:{self.where[1]}" if self.where else "IN:- / OUT:-"
@@ -89,6 +73,8 @@ class Report:
             verdict = "structure differs"
         elif self.max_deviation > self.tolerance:
             verdict = f"exceeds tolerance {self.tolerance:g} mm"
+        elif self.chord_deviation > (self.chord_tolerance or 0.0) + self.tolerance:
+            verdict = f"a chord lies beyond the chord tolerance {self.chord_tolerance:g} mm of its arc"
         elif self.left_out_moves and not self.allow_ignored:
             verdict = "settings that move the tool differ (listed below; --allow-ignored accepts them)"
         elif self.left_out_moves:
@@ -96,6 +82,9 @@ class Report:
         else:
             verdict = "ok"
         text = f"max deviation {self.max_deviation:.4f} mm over {self.moves} moves ({where}): {verdict}"
+        if self.chord_tolerance is not None:
+            at = f"IN:{self.chord_where[0]} / OUT:{self.chord_where[1]}" if self.chord_where else "IN:- / OUT:-"
+            text += f"\nchords at most {self.chord_deviation:.4f} mm from their arcs ({at}; --arcs lines:{self.chord_tolerance:g})"
         if self.mismatch is not None:
             a, b = self.mismatch_at
             text += (f"\nfirst difference at IN:{'-' if a is None else a} / OUT:{'-' if b is None else b}: "
@@ -161,7 +150,7 @@ def _merge(run: Move, m: Move, eps: float) -> bool:
         return True
     if run.centre is not None and m.centre is not None and run.plane == m.plane:
         if (math.hypot(run.centre[0] - m.centre[0], run.centre[1] - m.centre[1]) > eps
-                or abs(run.radius - m.radius) > eps or not (_flat(run, eps) and _flat(m, eps))):
+                or abs(run.radius - m.radius) > eps or not _one_helix(run, m, eps)):
             return False
         run.end, run.last_line = m.end, m.last_line
         run.sweep += m.sweep
@@ -169,17 +158,17 @@ def _merge(run: Move, m: Move, eps: float) -> bool:
     return False
 
 
-def _flat(m: Move, eps: float) -> bool:
-    """True when only the plane axes move (no helix, no other axis), so arcs may be joined."""
+def _one_helix(run: Move, m: Move, eps: float) -> bool:
+    """True when the axes outside the plane move in ``m`` at the rate per angle they moved in ``run`` (none:
+    a flat arc; the same: one helix, as an arc split into pieces), so the arcs may be joined."""
     i, j, _ = PLANE_INDEX[m.plane or "XY"]
     plane_keys = {"xyz"[i], "xyz"[j]}
-    return all(abs(m.end[k] - m.start.get(k, 0.0)) <= eps for k in m.end if k not in plane_keys)
-
-
-def _same_feed(a: float | None, b: float | None) -> bool:
-    if a is None or b is None:
-        return a is b
-    return abs(a - b) <= max(1e-9, FEED_TOLERANCE * max(abs(a), abs(b)))
+    for k in m.end:
+        if k not in plane_keys:
+            rate = (run.end[k] - run.start.get(k, 0.0)) / run.sweep
+            if abs(m.end[k] - m.start.get(k, 0.0) - rate * m.sweep) > eps:
+                return False
+    return True
 
 
 def normalise(events: Iterable[Event], start: dict[str, float], eps: float) -> Iterator[Move | Event]:
@@ -254,9 +243,11 @@ def _same_event(a: Event, b: Event) -> bool:
 
 
 def compare(events_in: Iterable[Event], events_out: Iterable[Event], *, start_in: dict[str, float],
-            start_out: dict[str, float], tolerance: float) -> Report:
-    """Walk two toolpaths (each with its header first) and report their largest deviation."""
-    report = Report(tolerance)
+            start_out: dict[str, float], tolerance: float, chord_tolerance: float | None = None) -> Report:
+    """Walk two toolpaths (each with its header first) and report their largest deviation.
+    ``chord_tolerance``: OUT may cut IN's arcs into chords within it (``postproc.simulate.chords``)."""
+    from .chords import pair_with_chords
+    report = Report(tolerance, chord_tolerance=chord_tolerance)
     # feeds compared per minute: an inverse-time program and its translation for a target without G93
     it_in = per_minute(_controlled(iter(events_in)), start_in)
     it_out = per_minute(_controlled(iter(events_out)), start_out)
@@ -273,8 +264,8 @@ def compare(events_in: Iterable[Event], events_out: Iterable[Event], *, start_in
     eps = tolerance / 2.0
     codes_in: list[Event] = []
     codes_out: list[Event] = []
-    pairs = zip_longest(normalise(_without_codes(it_in, codes_in), start_in, eps),
-                        normalise(_without_codes(it_out, codes_out), start_out, eps))
+    pairs = pair_with_chords(normalise(_without_codes(it_in, codes_in), start_in, eps),
+                             normalise(_without_codes(it_out, codes_out), start_out, eps), report)
     for a, b in pairs:
         if report.mismatch is not None:
             continue  # drain both streams: a program error still has to surface
@@ -422,14 +413,15 @@ def verify_lines(lines_in: Iterable[str], lines_out: Iterable[str], *, file_in: 
                  target_setup: MachineSetup | None = None, tolerance: float = 0.001,
                  registry: Registry | None = None, allow_ignored: bool = False,
                  overlay: Overlay | None = None, arguments: Mapping[str, float] | None = None,
-                 transform: ProgramTransform | None = None) -> Report:
+                 transform: ProgramTransform | None = None, chord_tolerance: float | None = None) -> Report:
     """Compare two programs given as lines. Raises ``ErrorList`` with both programs' errors, if any.
     ``allow_ignored``: settings that move the tool may differ (they are listed either way).
     ``overlay``: collects both toolpaths as they stream past, for a picture of the two. ``arguments``: both
     are macro files run with these call arguments (``toolpath_events``); a program whose dialect has no
     such arguments (a flattened translation) is run without them. ``transform``: OUT was translated with it
     (``translate --transform``), so IN's toolpath is moved by it before the comparison (a units conversion
-    needs nothing: both toolpaths are in mm)."""
+    needs nothing: both toolpaths are in mm). ``chord_tolerance``: OUT is a translation with
+    ``--arcs lines:TOL`` (``compare``)."""
     if not math.isfinite(tolerance) or tolerance < 0:
         raise UsageError(f"the tolerance must be a finite number of at least 0, got {tolerance:g}")
     setup = setup or MachineSetup()
@@ -462,7 +454,7 @@ def verify_lines(lines_in: Iterable[str], lines_out: Iterable[str], *, file_in: 
         events_in = overlay.source_events(_controlled(iter(events_in)))
         events_out = overlay.target_events(_controlled(iter(events_out)))
     report = compare(events_in, events_out, start_in=start_in,
-                     start_out=start_position(target_setup), tolerance=tolerance)
+                     start_out=start_position(target_setup), tolerance=tolerance, chord_tolerance=chord_tolerance)
     report.allow_ignored = allow_ignored
     compare_after_end(report, after_in, after_out)
     fixed = dialects.dialect(target).PATH_CONTROL

@@ -1,0 +1,418 @@
+"""``translate --arcs``: every arc of the lowered program rewritten as chords (``lines:TOL``), in centre
+form (``ijk``) or in radius form (``r``), for any target, after every other lowering step (so the arcs
+of expanded cycles and patterns, and the compensated path a target without compensation receives, are
+rewritten too).
+
+Decisions (docs/cli.md says the same):
+- ``lines:TOL``: TOL is in mm whatever the program's units (as ``verify --tolerance``). Each arc becomes
+  the fewest equal-angle chords within TOL of it (helices: the other axes move in proportion); the last
+  chord ends at the arc's own end point, as programmed. Refused at the arc's line: an arc under cutter
+  compensation the target keeps native (it would compensate each chord, not the arc), under inverse-time
+  feed (each chord would take the arc's time), or under scaling or polar coordinates the target keeps.
+- ``ijk``: an R arc gets the centre offsets of the centre its controller computes.
+- ``r``: a centre arc gets R (negative over 180 degrees). Where R places the centre badly (a full
+  circle, which R cannot give, or an arc within reach of 180 degrees, where a rounding of R moves the
+  centre far) the arc is split into equal pieces of at most 120 degrees, each written with R. Where
+  even that moves the centre more than ``R_FORM_TOLERANCE_MM`` (an I/J/K arc whose end lies off its
+  circle) it keeps its centre form, with a warning at its line.
+- In the profile of a lathe cycle the target keeps (its block numbers delimit the profile), an arc is
+  not split: ``lines`` refuses it, ``r`` keeps it in centre form with a warning.
+- Under ``--on-unsupported warn`` a refused arc is written as it was, with a warning at its line.
+- The start point must be known (programmed absolutely since the origin last moved) unless every word
+  of the arc is incremental; else a located error. A program that computes is executed (flattened):
+  an arc in a loop starts somewhere else each time.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Iterator
+
+from ..context import Context
+from ..dialect import Dialect
+from ..errors import PostprocError, ProgramError, UnsupportedError, UsageError
+from ..event_order import after_motion
+from ..expr import Expr
+from ..ir import Block, CompoundMotion, Motion, Section
+from ..numbers import EXACT
+from ..state import MM_PER_INCH, PLANE_AXES, ModalState, changes_nothing
+from .arc_geometry import Arc, chord_points, r_centre_error, r_pieces, signed_radius, split
+
+FORMS = ("lines", "ijk", "r")
+MIN_TOLERANCE_MM = 1e-4
+"""Finest chord tolerance accepted: below it the written numbers' rounding (``EXACT``) is no longer small."""
+R_FORM_TOLERANCE_MM = 0.0005
+"""Most an R form may move an arc's centre (half of ``verify``'s default tolerance)."""
+WRITE_SLACK_MM = 2 * EXACT
+"""What the writer's rounding may move a point (``postproc.numbers.EXACT``, at both ends of a chord)."""
+ARCS = frozenset(("cw", "ccw"))
+MOVES = frozenset(("rapid", "linear", "cw", "ccw"))
+COMPENSATION = frozenset(("CutterCompensation", "DynamicCutterCompensation"))
+
+
+@dataclass(frozen=True)
+class ArcOption:
+    """What ``--arcs`` asks: ``form`` one of ``FORMS``; ``tolerance`` the chord tolerance in mm (lines)."""
+
+    form: str
+    tolerance: float = 0.0
+
+
+def parse_arc_option(text: str) -> ArcOption:
+    """``lines:TOL``, ``ijk`` or ``r`` (a ``UsageError`` otherwise)."""
+    form, colon, value = text.strip().partition(":")
+    form = form.lower()
+    if form == "lines":
+        try:
+            tolerance = float(value)
+        except ValueError:
+            raise UsageError(f"--arcs lines takes a chord tolerance in mm (lines:0.01), got {text!r}") from None
+        if not math.isfinite(tolerance) or tolerance < MIN_TOLERANCE_MM:
+            raise UsageError(f"--arcs lines: the chord tolerance must be a finite number of at least "
+                             f"{MIN_TOLERANCE_MM:g} mm, got {value!r}")
+        return ArcOption("lines", tolerance)
+    if form in ("ijk", "r") and not colon:
+        return ArcOption(form)
+    raise UsageError(f"--arcs takes lines:TOL, ijk or r, got {text!r}")
+
+
+def rewrite_arcs(blocks: Iterator[Block], ctx: Context, option: ArcOption, target: type[Dialect]) -> Iterator[Block]:
+    """The program lowered for ``target`` with its arcs rewritten as ``option`` asks (see the module docstring)."""
+    rewriter = _Rewriter(ctx, option, target)
+    for block in blocks:
+        try:
+            yield from rewriter.block(block)
+        except PostprocError as err:
+            located = err if err.location is not None else err.located(ctx.at(block))
+            if isinstance(err, UnsupportedError) and ctx.on_unsupported == "warn":
+                ctx.diagnostics.warn(f"{err.message} (the arc is written as it was)", located.location)
+            else:
+                ctx.diagnostics.error(located)
+            rewriter.unknown()
+            yield block
+
+
+class _Rewriter:
+    """Where the program stands (program units, as programmed: a diameter stays a diameter) and the
+    settings an arc depends on."""
+
+    def __init__(self, ctx: Context, option: ArcOption, target: type[Dialect]) -> None:
+        self.ctx = ctx
+        self.option = option
+        self.diameter = ctx.diameter and "lathe" in target.MACHINE_TYPES and target.DIAMETER_PROGRAMMING
+        """X words are diameters in the lowered program (a target that programs radii got them halved:
+        ``postproc.cycles.lathe_lowering``)."""
+        self.in_profile = False
+        """The block is in the profile of a lathe cycle the target keeps: run by the cycle, not in turn."""
+        self.state = ModalState()
+        if ctx.lathe:
+            self.state.plane = "ZX"
+        self.compensating = False
+        self.scaling = False
+        self.restate = False
+        """An arc became lines: the next move is written from its sections (a modal G2 it relied on is gone)."""
+
+    def unknown(self, axes: object = None) -> None:
+        """The position is not known (on ``axes``, default all) until programmed absolutely again."""
+        position = self.state.position
+        for axis in list(position) if axes is None else axes:  # type: ignore[attr-defined]
+            position[axis] = None
+
+    # -- one block ----------------------------------------------------------------------------------
+    def block(self, block: Block) -> Iterator[Block]:
+        sections = block.sections
+        in_profile = "InProfile" in sections
+        if in_profile != self.in_profile:
+            self.unknown()  # a profile starts where its cycle stood, and after it the cycle's end is not tracked
+            self.in_profile = in_profile
+        if not changes_nothing(sections) or not COMPENSATION.isdisjoint(sections):
+            self._settings(sections)
+        coords = sections.get("CoordinateSet")
+        if coords is not None:
+            for axis, value in coords.axes.items():  # type: ignore[attr-defined]
+                self.state.position[axis] = None if isinstance(value, Expr) else value
+        motion = sections.get("Motion")
+        compound = sections.get("CompoundMotion")
+        out: list[Block] = [block]
+        if isinstance(motion, Motion) and motion.mode is not None:
+            if self.restate and motion.mode in MOVES:
+                block.changed()
+                block.canonical = False
+                self.restate = False
+            machine = "MachineCoordinates" in sections
+            if motion.mode in ARCS:
+                pieces = self._arc(block, motion, self.state.distance == "incremental", machine)
+                if pieces is not None:
+                    out = self._split_block(block, pieces)
+            else:
+                self._track(motion, self.state.distance == "incremental", machine)
+        elif isinstance(motion, Motion) or "CannedCycle" in sections:
+            self.unknown()  # a native canned cycle (or its repeat) ends where its rules say
+        if isinstance(compound, CompoundMotion):
+            self._compound(block, compound)
+        if "CannedCycle" in sections or "LatheCycle" in sections and compound is None:
+            self.unknown()  # a native cycle ends where its controller's rules say
+        yield from out
+
+    def _settings(self, sections: dict[str, Section]) -> None:
+        self.state.apply(sections)
+        cc = sections.get("CutterCompensation")
+        if cc is not None:
+            self.compensating = getattr(cc, "mode", "off") != "off"
+        if "DynamicCutterCompensation" in sections:
+            self.compensating = True
+        frame = sections.get("FrameChange")
+        if frame is not None:
+            kind = getattr(frame, "kind", "")
+            if kind == "scale":
+                self.scaling = True
+            elif kind == "scale_off":
+                self.scaling = False
+
+    def _compound(self, block: Block, compound: CompoundMotion) -> None:
+        """An expansion's moves (absolute, program units): its arcs rewritten in place."""
+        items: list[Section] = []
+        changed = False
+        for item in compound.items:
+            if isinstance(item, Motion) and item.mode in ARCS:
+                pieces = self._arc(block, item, False, False)
+                if pieces is not None:
+                    items.extend(pieces)
+                    changed = True
+                    continue
+            elif isinstance(item, Motion) and item.mode is not None:
+                self._track(item, False, False)
+            items.append(item)
+        if changed:
+            compound.items = items
+            block.changed()
+
+    # -- positions ------------------------------------------------------------------------------------
+    def _track(self, motion: Motion, incremental: bool, machine: bool) -> None:
+        position = self.state.position
+        if motion.mode in ("home", "home2") or machine:
+            self.unknown(self._real(a) for a in motion.axes)
+            return
+        increments = self.ctx.increments
+        for axis, value in motion.axes.items():
+            real = increments.get(axis) if increments else None
+            if isinstance(value, Expr):
+                position[real or axis] = None
+            elif real is not None or incremental:
+                known = position.get(real or axis)
+                position[real or axis] = None if known is None else known + value
+            else:
+                position[axis] = value
+
+    def _real(self, axis: str) -> str:
+        increments = self.ctx.increments
+        return increments.get(axis, axis) if increments else axis
+
+    # -- one arc ------------------------------------------------------------------------------------
+    def _arc(self, block: Block, motion: Motion, incremental: bool, machine: bool) -> list[Motion] | None:
+        """The motions that replace the arc, or None when it stays as it is (position tracked)."""
+        form = self.option.form
+        if form == "ijk" and motion.radius is None or form == "r" and motion.radius is not None:
+            self._track(motion, incremental, machine)
+            return None
+        if machine:
+            raise ProgramError("an arc in machine coordinates cannot be run")
+        if form == "lines":
+            self._check_lines()
+        if self.state.extra.get("polar"):
+            raise UnsupportedError("--arcs: an arc in polar coordinates (kept for the target) cannot be rewritten")
+        plane = self.state.plane
+        a1, a2, _ = PLANE_AXES[plane]
+        geometry = _Geometry(self, motion, incremental, (a1, a2))
+        arc = geometry.arc()
+        if form == "lines":
+            mm = self._mm()
+            tolerance = (self.option.tolerance - WRITE_SLACK_MM) / mm
+            try:
+                points = list(chord_points(arc, tolerance, geometry.quantum))
+            except ValueError as err:
+                raise UnsupportedError(f"--arcs lines: {err}") from None
+            motions = [geometry.piece("linear", p, others, None, None) for p, others in points]
+            if self.in_profile and len(motions) > 1:
+                raise UnsupportedError("--arcs lines: an arc in the profile of a lathe cycle the target keeps cannot "
+                                       "become lines (the cycle's block numbers delimit its profile)")
+            self.restate = True
+        elif form == "ijk":
+            motions = [geometry.piece(motion.mode or "cw", arc.end, {a: e for a, (_, e) in arc.along.items()},
+                                       (arc.centre[0] - arc.start[0], arc.centre[1] - arc.start[1]), None)]
+        else:
+            replaced = self._r_form(block, arc, geometry, motion.mode or "cw")
+            if replaced is None:
+                geometry.finish()
+                return None
+            motions = replaced
+        geometry.finish()
+        return motions
+
+    def _r_form(self, block: Block, arc: Arc, geometry: "_Geometry", mode: str) -> list[Motion] | None:
+        mm = self._mm()
+        slack = WRITE_SLACK_MM / mm
+        pieces = [arc] if r_centre_error(arc, slack) * mm <= R_FORM_TOLERANCE_MM else split(
+            arc, r_pieces(arc), geometry.quantum)
+        worst = max(r_centre_error(piece, slack) for piece in pieces) * mm
+        if len(pieces) > 1 and self.in_profile:
+            self.ctx.diagnostics.warn("--arcs r: the arc keeps its centre form: R needs it split, and it is in the "
+                                      "profile of a lathe cycle the target keeps", self.ctx.at(block))
+            return None
+        if worst > R_FORM_TOLERANCE_MM:
+            self.ctx.diagnostics.warn(f"--arcs r: the arc keeps its centre form: written with R its centre would "
+                                      f"move {worst:.4f} mm (its end point lies off its circle)", self.ctx.at(block))
+            return None
+        motions = []
+        for piece in pieces:
+            motions.append(geometry.piece(mode, piece.end, {a: e for a, (_, e) in piece.along.items()}, None,
+                                           signed_radius(piece)))
+        return motions
+
+    def _check_lines(self) -> None:
+        if self.compensating:
+            raise UnsupportedError("--arcs lines: an arc under cutter compensation the target keeps cannot become "
+                                   "lines (the target would compensate each chord, not the arc)")
+        if self.state.feed_mode == "inverse_time":
+            raise UnsupportedError("--arcs lines: an arc under inverse-time feed cannot become lines (each chord "
+                                   "would take the arc's time)")
+        if self.scaling:
+            raise UnsupportedError("--arcs lines: an arc under scaling the target keeps cannot become lines (the "
+                                   "scaling would scale the chord tolerance)")
+
+    def _mm(self) -> float:
+        """mm per program unit."""
+        return MM_PER_INCH if self.state.units == "inch" else 1.0
+
+    def _split_block(self, block: Block, motions: list[Motion]) -> list[Block]:
+        """The block with its arc as ``motions``: what acts before the motion stays with the first, what
+        acts after it (and an expansion, which runs after the block's motion) goes with the last."""
+        block.changed()
+        block.canonical = False
+        block.sections["Motion"] = motions[0]
+        if len(motions) == 1:
+            return [block]
+        out = [block]
+        for motion in motions[1:]:
+            piece = Block(block.line, None, block.eol)
+            piece.sections["Motion"] = motion
+            out.append(piece)
+        last = out[-1].sections
+        for key, section in list(block.sections.items()):
+            if key == "CompoundMotion" or after_motion(key, section):
+                last[key] = block.sections.pop(key)
+        return out
+
+
+class _Geometry:
+    """One arc's numbers: its plane points in true geometry (a diameter halved), and how to write a
+    point back in the arc's own words (absolute or incremental per address, a diameter doubled)."""
+
+    def __init__(self, owner: _Rewriter, motion: Motion, incremental: bool, plane: tuple[str, str]) -> None:
+        self.owner = owner
+        self.source = motion
+        self.plane = plane
+        self.quantum = 1e-7 if owner.state.units == "inch" else 1e-6
+        """Intermediate points are rounded to this (program units): finer than the writer's ``EXACT``."""
+        increments = owner.ctx.increments
+        self.diameter = owner.diameter
+        if isinstance(motion.radius, Expr) or any(isinstance(v, Expr) for v in (motion.center or {}).values()):
+            raise UnsupportedError("--arcs: a computed arc cannot be rewritten")
+        self.forms: dict[str, tuple[bool, str]] = {}
+        """Real axis -> (written as an increment, address)."""
+        given: dict[str, float] = {}
+        for address, value in motion.axes.items():
+            if isinstance(value, Expr):
+                raise UnsupportedError("--arcs: a computed arc cannot be rewritten")
+            real = increments.get(address) if increments else None
+            self.forms[real or address] = (incremental or real is not None, address)
+            given[real or address] = value
+        position = owner.state.position
+        axes = set(plane) | set(given)
+        self.relative = any(position.get(a) is None for a in axes)
+        """The start is not known: the arc is computed from its start taken as zero (all its words are increments)."""
+        backwards = {real: address for address, real in increments.items()} if increments else {}
+        for a in plane:
+            if a in self.forms:
+                continue
+            if incremental:
+                self.forms[a] = (True, a)
+            elif not self.relative:
+                self.forms[a] = (False, a)
+            elif a in backwards:
+                self.forms[a] = (True, backwards[a])
+        if self.relative and (len(self.forms) < len(axes) or not all(inc for inc, _ in self.forms.values())):
+            raise ProgramError("--arcs: the start point of this arc is not known here (program an absolute move on "
+                               "its axes after the origin moved)")
+        self.start = {a: 0.0 if self.relative else float(position[a]) for a in axes}  # type: ignore[arg-type]
+        self.end = {a: self.start[a] + v if self.forms[a][0] else v for a, v in given.items()}
+        for a in plane:
+            self.end.setdefault(a, self.start[a])
+        self.written = dict(self.start)
+        """The point the previous piece ended at (an increment of the next piece is relative to it)."""
+
+    def _geo(self, axis: str, value: float) -> float:
+        return value * 0.5 if self.diameter and axis == "X" else value
+
+    def _prog(self, axis: str, value: float) -> float:
+        return value * 2.0 if self.diameter and axis == "X" else value
+
+    def arc(self) -> Arc:
+        from ..block_rules import ArcError, arc_centre
+        a1, a2 = self.plane
+        s = (self._geo(a1, self.start[a1]), self._geo(a2, self.start[a2]))
+        e = self.end_geo()
+        mm = self.owner._mm()
+        m = self.source
+        offsets = {a: float(v) for a, v in (m.center or {}).items()}  # type: ignore[arg-type]
+        for axis in offsets:
+            if axis not in self.plane:
+                raise ProgramError(f"arc centre offset along {axis} is outside the {self.owner.state.plane} plane")
+        radius = None if m.radius is None else float(m.radius) * mm  # type: ignore[arg-type]  # checked above
+        try:
+            c = arc_centre((s[0] * mm, s[1] * mm), (e[0] * mm, e[1] * mm), self.plane, radius,
+                           {a: v * mm for a, v in offsets.items()}, m.mode == "cw")
+        except ArcError as err:
+            raise ProgramError(err.message) from None
+        if c is None:
+            raise ProgramError("--arcs: a zero-radius arc cannot be rewritten")
+        along = {a: (self.start[a], self.end[a]) for a in self.end if a not in self.plane}
+        return Arc(s, e, (c[0] / mm, c[1] / mm), m.mode == "cw", along)
+
+    def end_geo(self) -> tuple[float, float]:
+        a1, a2 = self.plane
+        return self._geo(a1, self.end[a1]), self._geo(a2, self.end[a2])
+
+    def piece(self, mode: str, point: tuple[float, float], others: dict[str, float],
+              centre: tuple[float, float] | None, radius: float | None) -> Motion:
+        """A piece ending at ``point`` (true geometry) with the other axes at ``others``, in the arc's words;
+        ``centre`` as offsets from the piece's start (true geometry: a lathe's I is a radius)."""
+        a1, a2 = self.plane
+        target = dict(others)
+        if point == self.end_geo():
+            target[a1], target[a2] = self.end[a1], self.end[a2]  # the programmed values themselves
+        else:
+            target[a1], target[a2] = self._prog(a1, point[0]), self._prog(a2, point[1])
+        axes: dict[str, float | Expr] = {}
+        for axis in sorted(target, key=_axis_order):
+            increment, address = self.forms[axis]
+            axes[address] = round(target[axis] - self.written[axis], 9) if increment else target[axis]
+        self.written.update(target)
+        centre_words: dict[str, float | Expr] | None = None if centre is None else {a1: centre[0], a2: centre[1]}
+        return Motion(mode, axes, centre_words, radius)
+
+    def finish(self) -> None:
+        """The position after the arc: its end (absolute), or moved by its increments."""
+        position = self.owner.state.position
+        for axis, value in self.end.items():
+            if self.relative:
+                known = position.get(axis)
+                position[axis] = None if known is None else known + value
+            else:
+                position[axis] = value
+
+
+def _axis_order(axis: str) -> int:
+    order = "XYZUVWABC"
+    return order.index(axis) if axis in order else len(order)

@@ -1,0 +1,108 @@
+"""``verify --arcs lines:TOL``: an arc of the source against the run of straight feeds its translation
+cut it into (``translate --arcs lines:TOL``), checked on its own terms rather than with the translator's
+arithmetic: every chord end lies on the arc (the radius interpolated along it, as the simulator draws
+an arc whose end radius differs), every chord's middle lies within TOL of it, the axes outside the
+plane move in proportion to the angle (a helix), each chord turns the arc's way by at most half a turn,
+and together they end where the arc ends, at its feed.
+"""
+
+from __future__ import annotations
+
+import math
+from itertools import zip_longest
+from typing import Any, Iterable, Iterator, Protocol
+
+from ..geometry import PLANE_INDEX
+from .moves import Move, same_feed
+
+Item = Any
+"""A normalised move (``Move``) or a machine event (a dict)."""
+
+
+class Report(Protocol):
+    """What the pairing reads and fills of ``verify.Report``."""
+
+    tolerance: float
+    chord_tolerance: float | None
+    chord_deviation: float
+    chord_where: tuple[int, int] | None
+    mismatch: str | None
+    mismatch_at: tuple[int | None, int | None]
+
+
+def pair_with_chords(ins: Iterable[Item], outs: Iterable[Item], report: Report) -> Iterator[tuple[Item, Item]]:
+    """``zip_longest(ins, outs)``, except that an arc of IN met by a straight feed of OUT takes as many of
+    OUT's feeds as make up the arc, paired as one arc move that stands for them. Their distance from the
+    arc goes to ``report.chord_deviation``; chords that do not make up the arc are a mismatch."""
+    if report.chord_tolerance is None:
+        yield from zip_longest(ins, outs)
+        return
+    rest = iter(outs)
+    for a in ins:
+        b = next(rest, None)
+        if (report.mismatch is None and isinstance(a, Move) and a.centre is not None and isinstance(b, Move)
+                and b.kind == "feed"):
+            b = _chords(a, b, rest, report)
+        yield a, b
+    for b in rest:
+        yield None, b
+
+
+def _chords(arc: Move, first: Move, rest: Iterator[Item], report: Report) -> Move:
+    i, j, _ = PLANE_INDEX[arc.plane or "XY"]
+    pi, pj = "xyz"[i], "xyz"[j]
+    c = arc.centre
+    assert c is not None
+    turn = -1.0 if arc.kind == "cw" else 1.0
+    r0 = arc.radius
+    r1 = math.hypot(arc.end.get(pi, 0.0) - c[0], arc.end.get(pj, 0.0) - c[1])
+    along = [k for k in arc.end if k not in (pi, pj)]
+
+    def angle(p: dict[str, float]) -> float:
+        return math.atan2(p.get(pj, 0.0) - c[1], p.get(pi, 0.0) - c[0])
+
+    def radius_at(t: float) -> float:
+        return r0 + (r1 - r0) * t
+
+    swept, worst, at = 0.0, 0.0, first.first_line
+    chord: Move = first
+    problem: str | None = None
+    near = report.tolerance + 1e-9
+    while True:
+        if not same_feed(chord.f, arc.f):
+            problem = f"IN's arc feeds at F{arc.f:g}, OUT's line at F{chord.f:g}"
+            break
+        s, e = chord.start, chord.end
+        step = (turn * (angle(e) - angle(s))) % (2.0 * math.pi)
+        if step == 0.0 or step > math.pi + 1e-12:
+            problem = "OUT's straight move does not turn the arc's way"
+            break
+        t0, swept = swept / arc.sweep, swept + step
+        t = swept / arc.sweep
+        if t > 1.0 + 1e-9 + near / max(r0, 1e-9):
+            problem = "OUT's straight moves run past the end of IN's arc"
+            break
+        mid = {k: (s.get(k, 0.0) + e.get(k, 0.0)) / 2.0 for k in (pi, pj)}
+        deviation = max(abs(math.hypot(e.get(pi, 0.0) - c[0], e.get(pj, 0.0) - c[1]) - radius_at(t)),
+                        abs(radius_at((t0 + t) / 2.0) - math.hypot(mid[pi] - c[0], mid[pj] - c[1])))
+        for k in along:
+            expected = arc.start.get(k, 0.0) + (arc.end[k] - arc.start.get(k, 0.0)) * t
+            deviation = max(deviation, abs(e.get(k, 0.0) - expected))
+        if deviation > worst:
+            worst, at = deviation, chord.last_line
+        if swept >= arc.sweep - min(math.pi / 2.0, arc.sweep / 2.0) and \
+                math.dist([e.get(k, 0.0) for k in arc.end], [arc.end[k] for k in arc.end]) <= near:
+            break
+        following = next(rest, None)
+        if not isinstance(following, Move) or following.kind != "feed":
+            problem = "OUT's straight moves end before IN's arc does"
+            break
+        chord = following
+    if worst > report.chord_deviation or report.chord_where is None:
+        report.chord_deviation = max(worst, report.chord_deviation)
+        report.chord_where = (arc.first_line, at) if worst >= report.chord_deviation else report.chord_where
+    if problem is not None and report.mismatch is None:
+        report.mismatch = problem
+        report.mismatch_at = (arc.first_line, chord.last_line)
+    return Move(arc.kind, first.start, chord.end, chord.f, first.first_line, chord.last_line, None, arc.centre,
+                arc.plane, arc.radius, swept)
