@@ -23,6 +23,7 @@ from .output.writer_base import Writer as Writer
 
 if TYPE_CHECKING:
     from .compensation.rules import CutterRules
+    from .cycles.section import CannedCycle
 
 
 class Reader(abc.ABC):
@@ -244,6 +245,14 @@ class Dialect:
                     table[key] = sorted(value) if isinstance(value, frozenset) else \
                         dict(value) if isinstance(value, Mapping) else value
         return table
+
+    @classmethod
+    def moves_like(cls, cycle: CannedCycle) -> bool:
+        """Whether the controller's native cycle of ``cycle.kind`` moves as ``cycle`` does, resolved under its
+        source's family rules (``cycle.semantics``): by default when the families are the same
+        (``CYCLE_SEMANTICS``). A controller whose cycles follow rules of their own judges each block (grblHAL's
+        G98 level); a block judged otherwise is expanded (``postproc.cycles.lowering``)."""
+        return cycle.semantics == cls.CYCLE_SEMANTICS
 
     @classmethod
     def family(cls) -> str:

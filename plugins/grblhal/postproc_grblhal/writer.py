@@ -1,0 +1,89 @@
+"""grblHAL writer: the grbl family's writer (``postproc.grbl_family.writer``: ``%`` and O-numbers as comments,
+M19 per the set-up, a pause that stops the spindle, G43 H from the tool table where the build has one) with
+grblHAL's table.
+
+* A native G81/G82 arrives only where it moves as its source's cycle (``cycles``): it is written with the
+  words grblHAL needs. A block that programs the cycle code gets R, Z and (G82) P from the resolved cycle
+  when its source carried them over: grblHAL carries nothing over from another cycle [V: ``gcode.c``,
+  ``canned_cycle_change`` needs R, the drilling axis word, and P for G82]. Another dialect's words are
+  written by their roles (a Fanuc dwell in milliseconds as seconds, its K as L).
+* G80 is a motion code (grblHAL's ``MotionMode_None``): ``G80 G0`` is refused, and after it axis words need
+  a motion code [V: ``gcode.c``, "[G80 Errors]"].
+* G64 writes nothing (path blending is off in every build: grblHAL always blends by junction deviation),
+  with the tolerance it drops noted; G95 only for a spindle with an encoder (``<Controller spindleSync>``).
+* ``/`` block delete is written: grblHAL skips the block when its switch is on.
+"""
+
+from __future__ import annotations
+
+from typing import Any, ClassVar
+
+from postproc.grbl_family.writer import GrblFamilyWriter
+from postproc.ir import Block
+from postproc.rs274.codes import CodeTable
+
+from .codes import CODES
+
+GRBLHAL_AXES = frozenset("XYZABC")
+"""Axes a grblHAL build may drive (``N_AXIS`` up to 6 with A, B, C; a set-up may say fewer)."""
+
+
+class GrblhalWriter(GrblFamilyWriter):
+    DIALECT: ClassVar[str] = "grblhal"
+    CODES: ClassVar[CodeTable] = CODES
+    WORK_OFFSET_SETTING: ClassVar[str] = "G10 L2"
+    """G10 L2 P1-P9 sets work system P's offset, absolutely (G91 does not change it)."""
+    WORK_OFFSET_COUNT: ClassVar[int] = 9
+    SETTING_AXES: ClassVar[frozenset[str]] = GRBLHAL_AXES
+    DWELL_WORD: ClassVar[str] = "P"
+    CYCLE_CANCEL_IS_MOTION: ClassVar[bool] = True
+    """G80 is a motion code here: ``G80 G0`` is refused, a block's G0-G3 ends the cycle by itself."""
+    BARE_FEED_MOTION_NEEDS_FEED: ClassVar[bool] = True
+    DRIVEN_AXES: ClassVar[frozenset[str]] = GRBLHAL_AXES
+    FULL_CIRCLE_HELIX: ClassVar[bool] = False
+    """grblHAL's arcs need an end point in the plane, as grbl's (its ``gcode.c`` is grbl's)."""
+    STRUCTURE: ClassVar[frozenset[str]] = frozenset(("TapeMark",))
+    BLANK_AS_TRACE: ClassVar[bool] = True
+    """G64 and the like are not grblHAL's: a block of nothing else is a trace of its source."""
+
+    def table_refusal(self, register: int | None) -> str:
+        number = "" if register is None else f" H{register}"
+        return (f"a tool length offset from a table (G43{number}) on a grblHAL build without a tool table: a set-up "
+                "with <Controller toolTable=\"true\"/> has one")
+
+    def path_control_words(self, s: Any, block: Block) -> list[str]:
+        if not s.one_shot and s.mode == "cutting":
+            self.note_unwritten_tolerance(s, block)  # grblHAL always blends, by its junction deviation setting
+            return []
+        return super().path_control_words(s, block)
+
+    def feed_mode_words(self, s: Any, block: Block) -> list[str]:
+        if s.mode == "per_rev" and not self.ctx.setup.controller.spindle_sync:
+            self.unsupported("feed per revolution (G95) on a grblHAL spindle without an encoder: a set-up with "
+                             "<Controller spindleSync=\"true\"/> has one", block)
+        return super().feed_mode_words(s, block)
+
+    def canned_cycle_words(self, s: Any, block: Block) -> list[str]:
+        """The cycle as programmed (from grblHAL itself), or by its words' roles with what grblHAL needs
+        added (module docstring)."""
+        if self.source_dialect == self.DIALECT:
+            return super().canned_cycle_words(s, block)
+        words: list[str] = []
+        if s.call:
+            words.append(self.code("cycle", s.kind, f"the {s.kind.replace('_', ' ')} cycle", block))
+        source, target = self.ctx.cycle_words, self.target_cycle_words()
+        if source is not None and target is not None:
+            words.extend(self.cycle_role_words(s, block, source, target))
+        if s.call:
+            have = {word[0] for word in words}
+            extra = [("Z", s.bottom), ("R", s.r)]
+            if s.kind == "drill_dwell":
+                extra.append(("P", None))
+            for letter, value in extra:
+                if letter in have:
+                    continue
+                if letter == "P":
+                    words.append("P" + self.number(round(s.dwell or 0.0, 9)))
+                else:
+                    words.append(letter + self.length(value, block, letter))
+        return words
