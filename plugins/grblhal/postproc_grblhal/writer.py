@@ -8,7 +8,10 @@ grblHAL's table.
   ``canned_cycle_change`` needs R, the drilling axis word, and P for G82]. Another dialect's words are
   written by their roles (a Fanuc dwell in milliseconds as seconds, its K as L).
 * G80 is a motion code (grblHAL's ``MotionMode_None``): ``G80 G0`` is refused, and after it axis words need
-  a motion code [V: ``gcode.c``, "[G80 Errors]"].
+  a motion code, even those of ``G43.1 Z`` or ``G28 Z`` [V: ``gcode.c``, "[G80 Errors]"]. So a cancel is written
+  only where a native cycle is in force, and as the group-01 code the source returns to after it (``G0``
+  alone: grblHAL ends the cycle and moves nothing [V: ``gcode.c``, G0 without axis words]); a cancel with no
+  native cycle in force writes nothing (the cycles before it arrived expanded).
 * G64 writes nothing (path blending is off in every build: grblHAL always blends by junction deviation),
   with the tolerance it drops noted; G95 only for a spindle with an encoder (``<Controller spindleSync>``).
 * ``/`` block delete is written: grblHAL skips the block when its switch is on.
@@ -18,12 +21,15 @@ from __future__ import annotations
 
 from typing import Any, ClassVar
 
+from postproc.context import Context
+from postproc.dialect import Dialect
 from postproc.grbl_family.writer import GrblFamilyWriter
-from postproc.ir import Block
+from postproc.ir import Block, Motion
 from postproc.rs274.codes import CodeTable
 
 from .codes import CODES
 
+_GROUP_01 = frozenset(("rapid", "linear", "cw", "ccw"))
 GRBLHAL_AXES = frozenset("XYZABC")
 """Axes a grblHAL build may drive (``N_AXIS`` up to 6 with A, B, C; a set-up may say fewer)."""
 
@@ -46,6 +52,26 @@ class GrblhalWriter(GrblFamilyWriter):
     BLANK_AS_TRACE: ClassVar[bool] = True
     """G64 and the like are not grblHAL's: a block of nothing else is a trace of its source."""
 
+    def __init__(self, ctx: Context, source_dialect: str, target: type[Dialect] | None = None) -> None:
+        super().__init__(ctx, source_dialect, target)
+        self.cycle_motion: str | None = None
+        """The group-01 mode around the native cycle in force on the controller; None: none in force."""
+
+    def write_block(self, block: Block) -> str | None:
+        motion = block.sections.get("Motion")
+        if isinstance(motion, Motion) and motion.mode in _GROUP_01:
+            self.cycle_motion = None  # the motion code ends the cycle on grblHAL
+        return super().write_block(block)
+
+    def cycle_cancel_words(self, s: Any, block: Block) -> list[str]:
+        """Nothing where no native cycle is in force; else the motion code the source returns to (module
+        docstring), or nothing where the block's own motion code ends the cycle."""
+        mode, self.cycle_motion = self.cycle_motion, None
+        motion = block.sections.get("Motion")
+        if mode is None or (isinstance(motion, Motion) and motion.mode in _GROUP_01):
+            return []
+        return [self.code("motion", mode if mode in _GROUP_01 else "rapid", "the motion mode after a cycle", block)]
+
     def table_refusal(self, register: int | None) -> str:
         number = "" if register is None else f" H{register}"
         return (f"a tool length offset from a table (G43{number}) on a grblHAL build without a tool table: a set-up "
@@ -66,18 +92,20 @@ class GrblhalWriter(GrblFamilyWriter):
     def canned_cycle_words(self, s: Any, block: Block) -> list[str]:
         """The cycle as programmed (from grblHAL itself), or by its words' roles with what grblHAL needs
         added (module docstring)."""
+        self.cycle_motion = s.motion or "rapid"
         if self.source_dialect == self.DIALECT:
             return super().canned_cycle_words(s, block)
         words: list[str] = []
+        kind = "drill" if s.kind == "drill_dwell" and not s.dwell else s.kind  # a dwell of 0: G82 P0 would dwell
         if s.call:
-            words.append(self.code("cycle", s.kind, f"the {s.kind.replace('_', ' ')} cycle", block))
+            words.append(self.code("cycle", kind, f"the {kind.replace('_', ' ')} cycle", block))
         source, target = self.ctx.cycle_words, self.target_cycle_words()
         if source is not None and target is not None:
-            words.extend(self.cycle_role_words(s, block, source, target))
+            words.extend(self.cycle_role_words(s, block, source, target, dwell=kind == "drill_dwell"))
         if s.call:
             have = {word[0] for word in words}
             extra = [("Z", s.bottom), ("R", s.r)]
-            if s.kind == "drill_dwell":
+            if kind == "drill_dwell":
                 extra.append(("P", None))
             for letter, value in extra:
                 if letter in have:
