@@ -42,6 +42,7 @@ from postproc.hookspecs import hookimpl
 from postproc.output.line_format import LineRule
 from postproc.output.writer_base import Writer
 from postproc.rs274.cycle_words import rs274_cycle_words
+from postproc.rs274.lean_controller import close_full_circles
 from postproc.rs274.order_of_execution import stops_after_motion
 from postproc.setup.machine_setup import MachineSetup
 from postproc.syntax import Pipeline
@@ -97,10 +98,13 @@ class Grblhal(GrblFamily):
     MIST_COOLANT = False
     """M7 runs only with a driver that has mist coolant [V: gcode.c, ``hal.coolant_cap.mist``]: a set-up says
     ``<Controller mistCoolant="true">`` for such a build."""
-    LOWERING = (write_tool_lengths, resolve_cutter_compensation, stops_after_motion)
+    LOWERING = (write_tool_lengths, resolve_cutter_compensation, close_full_circles, stops_after_motion)
     """Rewrites into what grblHAL runs: a G43 H as ``G43.1 Z<length>`` where the build has no tool table
     (``postproc.grbl_family.lengths``); G41/G42 as the compensated path, where the source's rules are modelled;
-    a moving block's spindle stop and coolant off after it (``postproc.rs274.order_of_execution``)."""
+    a full circle with an end point in its plane (grbl's arc rules, ``postproc.rs274.lean_controller``); a
+    moving block's spindle stop and coolant off after it (``postproc.rs274.order_of_execution``). Not grbl's
+    G49 before motion: grblHAL's G49 is no axis command [V: gcode.c, "changed to match LinuxCNC behaviour in
+    build 20210513"], nor its tool change pause (M6 exists)."""
     PATH_CONTROL = "cutting"
     """grblHAL always blends (junction deviation; ``ENABLE_PATH_BLENDING`` is off): G61 changes nothing."""
     CUTTER_COMPENSATION = False
