@@ -30,6 +30,12 @@ class GrblFamilyWriter(WordWriter):
         target = self.target
         return isinstance(target, type) and issubclass(target, GrblFamily) and target.tool_table(self.ctx.setup)
 
+    def capable(self, flag: str) -> bool:
+        """A tool table is the build's (``tool_table``), the other capabilities the dialect's."""
+        if flag == "TOOL_LENGTH_OFFSET" and self.tool_table():
+            return True
+        return super().capable(flag)
+
     # -- blocks ------------------------------------------------------------------------------------
     def structure_block(self, block: Block) -> str | None:
         """The parser rejects '%': a tape mark is written as a comment."""

@@ -22,6 +22,7 @@ from __future__ import annotations
 from typing import Any, ClassVar
 
 from postproc.context import Context
+from postproc.cycles.section import WORD_ORDER
 from postproc.dialect import Dialect
 from postproc.grbl_family.writer import GrblFamilyWriter
 from postproc.ir import Block, Motion
@@ -103,7 +104,7 @@ class GrblhalWriter(GrblFamilyWriter):
         if source is not None and target is not None:
             words.extend(self.cycle_role_words(s, block, source, target, dwell=kind == "drill_dwell"))
         if s.call:
-            have = {word[0] for word in words}
+            have = {word[0] for word in words[1:]}
             extra = [("Z", s.bottom), ("R", s.r)]
             if kind == "drill_dwell":
                 extra.append(("P", None))
@@ -114,4 +115,6 @@ class GrblhalWriter(GrblFamilyWriter):
                     words.append("P" + self.number(round(s.dwell or 0.0, 9)))
                 else:
                     words.append(letter + self.length(value, block, letter))
-        return words
+        order = {letter: at for at, letter in enumerate(WORD_ORDER)}
+        head = words[:1] if s.call else []
+        return head + sorted(words[len(head):], key=lambda word: order.get(word[0], len(order)))
