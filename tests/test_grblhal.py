@@ -197,7 +197,7 @@ EXAMPLES = sorted((ROOT / "tests" / "conformance" / "grblhal").glob("*.*"))
 @pytest.mark.parametrize("path", EXAMPLES, ids=lambda p: p.name)
 def test_grblhal_programs_round_trip_byte_for_byte(path: Path) -> None:
     text = path.read_text()
-    setup = load_setup(ROOT / "tests" / "support" / "grblhal_table.xml")
+    setup = load_setup(ROOT / "tests" / "support" / "grblhal_expressions.xml")
     out = io.StringIO(newline="")
     translate(io.StringIO(text, newline=""), out, file=path.name, source="grblhal", target="grblhal", setup=setup)
     assert out.getvalue() == text

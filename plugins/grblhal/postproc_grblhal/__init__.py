@@ -17,9 +17,10 @@ What grblHAL accepts, from its source (github.com/grblHAL/core, stored commit f8
 * Parameters, expressions (LinuxCNC's operators, precedence and functions: ``ngc_expr.c``) and o-word
   flow control (``ngc_flowctrl.c``: if/elseif/else/endif, do/while/endwhile, repeat/endrepeat,
   break/continue, sub/endsub/call/return; loops and subroutines only in a program run from the
-  controller's file system) exist only with ``NGC_EXPRESSIONS_ENABLE`` (off by default): this dialect reads
-  and writes none of them (a program that computes reaches grblHAL flattened, and ``#`` or an o-word read
-  from grblHAL is an error). G65/G66 need a macro plugin (``grbl.on_macro_execute``): refused.
+  controller's file system) exist only with ``NGC_EXPRESSIONS_ENABLE`` (off by default): read and written
+  for a set-up that says the build has them (``<Controller expressions="true">``, ``program``), subroutines
+  aside (refused when read; a program with calls reaches grblHAL flattened). G65/G66 need a macro plugin
+  (``grbl.on_macro_execute``): refused.
 * Lathe mode (``$32``): G7/G8, G33, G76 threading, G96/G97, and G70-G72 with ``LATHE_UVW_OPTION``: not
   modelled (refused at their line); G41/G42 only with ``CUTTER_COMP_ENABLE`` (off, experimental): the
   compensated path is written instead, as for grbl. No G52, G44 or M19.
@@ -27,8 +28,8 @@ What grblHAL accepts, from its source (github.com/grblHAL/core, stored commit f8
   (``LINE_BUFFER_SIZE`` 257, ``protocol.h``), comments and spaces included; ``?``, ``!``, ``~`` and bytes above
   0x7F are real-time commands (``text``).
 
-What a build chooses is said by the set-up's ``<Controller toolTable spindleSync mistCoolant>``, read
-where a program is read and written.
+What a build chooses is said by the set-up's ``<Controller toolTable spindleSync mistCoolant expressions>``,
+read where a program is read and written.
 """
 
 from __future__ import annotations
@@ -114,6 +115,12 @@ class Grblhal(GrblFamily):
     (``tool_table``); without it a G43 H is written as G43.1 with the register's value."""
     DWELL_UNIT = "seconds"
     """G4 P is in seconds."""
+    PROGRAMS = True
+    """Parameters, expressions and o-word conditions and loops, on a build with them (``<Controller
+    expressions="true">``: ``expressions``); on any other the writer refuses every statement, so a program
+    that computes reaches grblHAL flattened."""
+    TAPE_MARKS = False
+    """``%`` is no word of grblHAL's parser: written as a comment."""
     COMMENTS = Lazy[CommentSyntax](".text:COMMENTS")
     """``( )`` and ``;`` comments, without a real-time character inside (``postproc.grbl_family.text``)."""
     LINE_RULE = Lazy[LineRule](".text:LINES")
@@ -125,6 +132,16 @@ class Grblhal(GrblFamily):
         return bool(setup.controller.tool_table)
 
     @classmethod
+    def expressions(cls, setup: MachineSetup) -> bool:
+        """A build with ``NGC_EXPRESSIONS_ENABLE``, as the set-up says (``<Controller expressions>``; none by default)."""
+        return bool(setup.controller.expressions)
+
+    @classmethod
+    def pipeline_file(cls, setup: MachineSetup) -> str | None:
+        """``grblhal_expressions.xml`` (the interpreter step first) for a build with expressions."""
+        return "grblhal_expressions.xml" if cls.expressions(setup) else cls.PIPELINE_FILE
+
+    @classmethod
     def moves_like(cls, cycle: CannedCycle) -> bool:
         """G81/G82 whose motion on grblHAL is the source's (``cycles.native_motion_matches``)."""
         from .cycles import native_motion_matches
@@ -132,13 +149,15 @@ class Grblhal(GrblFamily):
 
     @classmethod
     def python_pipeline(cls, setup: MachineSetup) -> Pipeline:
-        """``grblhal.xml``, built in Python."""
+        """``grblhal.xml`` (``grblhal_expressions.xml`` for a build with expressions), built in Python."""
         from postproc.cycles.resolve import CannedCycleResolveSyntax
         from postproc.syntaxes.modal_state import ModalStateSyntax
         from .block_syntax import GrblhalBlockSyntax
         from .cycles import GrblhalCycleRules
-        return Pipeline(cls.NAME, [GrblhalBlockSyntax(), CannedCycleResolveSyntax("rs274"), GrblhalCycleRules(),
-                                   ModalStateSyntax()])
+        from .program import GrblhalProgramSyntax
+        first = [GrblhalProgramSyntax()] if cls.expressions(setup) else []
+        return Pipeline(cls.NAME, [*first, GrblhalBlockSyntax(), CannedCycleResolveSyntax("rs274"),
+                                   GrblhalCycleRules(), ModalStateSyntax()])
 
 
 @hookimpl
@@ -150,3 +169,4 @@ def postproc_register_dialects(register: Callable[[type], None]) -> None:
 def postproc_register_xml(factory: XFactory) -> None:
     factory.register_lazy("GrblhalBlockSyntax", f"{__name__}.block_syntax:GrblhalBlockSyntax")
     factory.register_lazy("GrblhalCycleRules", f"{__name__}.cycles:GrblhalCycleRules")
+    factory.register_lazy("GrblhalProgramSyntax", f"{__name__}.program:GrblhalProgramSyntax")

@@ -15,6 +15,12 @@ grblHAL's table.
 * G64 writes nothing (path blending is off in every build: grblHAL always blends by junction deviation),
   with the tolerance it drops noted; G95 only for a spindle with an encoder (``<Controller spindleSync>``).
 * ``/`` block delete is written: grblHAL skips the block when its switch is on.
+* Parameters, expressions and o-word flow control, for a build with them (``<Controller expressions="true">``,
+  ``program``): a computed word in LinuxCNC's spelling (``X[#1*2.]``), an assignment as ``#1=5.``, a condition
+  or loop as its o-word line, from a grblHAL or LinuxCNC program (the same o-words: their labels are kept).
+  Everything else that computes is an ``UnsupportedError`` (so the program reaches grblHAL flattened): any
+  statement on a build without expressions, a subroutine definition, call or return (not modelled), and
+  another family's control flow (Fanuc's ``WHILE .. DO1`` reuses its labels, ISG's ``$FOR``...).
 """
 
 from __future__ import annotations
@@ -22,6 +28,11 @@ from __future__ import annotations
 from typing import Any, ClassVar
 
 from postproc.context import Context
+from postproc.control import Assign, Break, Continue, Do, DoWhile, Else, ElseIf, EndIf, EndRepeat, EndWhile, If, \
+    Repeat, While
+from postproc.expr import Expr
+from postproc.rs274.expressions import ExprSpelling
+from postproc.rs274.oword import spell_assignments, spell_oword
 from postproc.cycles.section import WORD_ORDER
 from postproc.dialect import Dialect
 from postproc.grbl_family.writer import GrblFamilyWriter
@@ -29,6 +40,12 @@ from postproc.ir import Block, Motion
 from postproc.rs274.codes import CodeTable
 
 from .codes import CODES
+from .program import GRBLHAL_SPELLING
+
+_FLOW = (If, ElseIf, Else, EndIf, While, EndWhile, Do, DoWhile, Repeat, EndRepeat, Break, Continue)
+"""The o-word statements written (a subroutine's are not modelled)."""
+_SAME_OWORDS = frozenset(("grblhal", "linuxcnc"))
+"""Sources whose o-word labels and meanings are grblHAL's (ngc_flowctrl.c is rs274's)."""
 
 _GROUP_01 = frozenset(("rapid", "linear", "cw", "ccw"))
 GRBLHAL_AXES = frozenset("XYZABC")
@@ -52,6 +69,7 @@ class GrblhalWriter(GrblFamilyWriter):
     STRUCTURE: ClassVar[frozenset[str]] = frozenset(("TapeMark",))
     BLANK_AS_TRACE: ClassVar[bool] = True
     """G64 and the like are not grblHAL's: a block of nothing else is a trace of its source."""
+    SPELLING: ClassVar[ExprSpelling | None] = GRBLHAL_SPELLING
 
     def __init__(self, ctx: Context, source_dialect: str, target: type[Dialect] | None = None) -> None:
         super().__init__(ctx, source_dialect, target)
@@ -72,6 +90,28 @@ class GrblhalWriter(GrblFamilyWriter):
         if mode is None or (isinstance(motion, Motion) and motion.mode in _GROUP_01):
             return []
         return [self.code("motion", mode if mode in _GROUP_01 else "rapid", "the motion mode after a cycle", block)]
+
+    def expressions(self) -> bool:
+        """The build runs parameters, expressions and o-words (``<Controller expressions="true">``)."""
+        return bool(self.ctx.setup.controller.expressions)
+
+    def expression(self, expr: Expr, block: Block, what: str = "a computed word") -> str:
+        if not self.expressions():
+            self.unsupported(f"{what} on a grblHAL build without expressions (NGC_EXPRESSIONS_ENABLE): a set-up "
+                             "with <Controller expressions=\"true\"/> has them", block)
+        return super().expression(expr, block, what)
+
+    def statement_words(self, section: Any, block: Block) -> list[str]:
+        """An assignment or an o-word line (module docstring); anything else is refused."""
+        if not self.expressions():
+            self.unsupported("parameters and o-word flow control on a grblHAL build without expressions "
+                             "(NGC_EXPRESSIONS_ENABLE): a set-up with <Controller expressions=\"true\"/> has them",
+                             block)
+        if isinstance(section, Assign):
+            return [spell_assignments(section)]
+        if isinstance(section, _FLOW) and self.source_dialect in _SAME_OWORDS:
+            return [spell_oword(section)]
+        return super().statement_words(section, block)
 
     def table_refusal(self, register: int | None) -> str:
         number = "" if register is None else f" H{register}"

@@ -1,7 +1,7 @@
 ; grblHAL router: a frame with rounded corners, lower-case words, a block skipped by the operator's switch
 g21 g90 g17
 t3 m6
-g43 h3
+g43.1 z30
 m3 s18000
 g0 x0 y0 z5
 g1 z-1 f300
