@@ -304,3 +304,92 @@ def test_g81_g82_read_from_grblhal_move_as_rs274_or_are_refused_where_g98_differ
             continue
         assert ours == theirs, (n, text)
     assert refused < 8
+
+
+# -- parameters, expressions and o-words (a build with NGC_EXPRESSIONS_ENABLE) ---------------------------
+
+EXPRESSIONS = MachineSetup(controller=ControllerSettings(expressions=True))
+LOOP = """G21 G17 G90
+#1 = 0
+#<depth> = -2
+G0 X0 Y0 Z5
+o100 while [#1 LT 3]
+  G1 X[#1*10] Y0 Z#<depth> F100
+  o101 if [#1 EQ 1]
+    G0 Z5
+  o101 else
+    G1 Y5
+  o101 endif
+  #1 = [#1 + 1]
+o100 endwhile
+G0 Z5
+M2
+"""
+"""A LinuxCNC program whose o-words and expressions grblHAL reads alike (ngc_flowctrl.c, ngc_expr.c)."""
+
+
+def _translate(text: str, source: str, setup: MachineSetup | None) -> tuple[str, list[str]]:
+    out = io.StringIO(newline="")
+    diagnostics = Diagnostics(ErrorLevel.RAISE, warn_stream=io.StringIO())
+    translate(io.StringIO(text, newline=""), out, file="t.ngc", source=source, target="grblhal", setup=setup,
+              diagnostics=diagnostics)
+    return out.getvalue(), [str(w) for w in diagnostics.warnings]
+
+
+def test_o_words_and_expressions_stay_native_on_a_build_with_them() -> None:
+    text, warnings = _translate(LOOP, "linuxcnc", EXPRESSIONS)
+    assert warnings == []
+    assert text == ("G17 G21 G90\n#1=0.\n#<depth>=-2.\nG0 X0. Y0. Z5.\no100 while [#1 LT 3.]\n"
+                    "G1 X[#1*10.] Z#<depth> Y0. F100.\no101 if [#1 EQ 1.]\nG0 Z5.\no101 else\nG1 Y5.\n"
+                    "o101 endif\n#1=[#1+1.]\no100 endwhile\nG0 Z5.\nM2\n")
+    report = verify_lines(io.StringIO(LOOP), io.StringIO(text), file_in="t.ngc", file_out="t.gcode",
+                          source="linuxcnc", target="grblhal", setup=EXPRESSIONS, tolerance=0.0)
+    assert report.ok and report.moves > 0
+
+
+def test_without_expressions_the_program_is_flattened_with_a_warning() -> None:
+    text, warnings = _translate(LOOP, "linuxcnc", None)
+    code = [row for row in text.splitlines() if not row.startswith("(")]
+    assert not any("#" in row or row.startswith("o") for row in code)
+    assert text.count("(LINE 5: o100 while [#1 LT 3], iteration)") == 3
+    assert warnings == ["t.ngc:2:1: warning: the program is flattened (its evaluated motion is written): line 2: "
+                        "the grblhal dialect cannot express parameters and o-word flow control on a grblHAL build "
+                        "without expressions (NGC_EXPRESSIONS_ENABLE): a set-up with <Controller "
+                        "expressions=\"true\"/> has them"]
+
+
+def test_another_familys_loops_are_flattened() -> None:
+    """Fanuc's WHILE .. DO1 reuses its labels and its variables are Macro B's: not written as o-words."""
+    fanuc = "G21 G90 G00 X0. Y0. Z5.\n#1=0\nWHILE [#1 LT 2] DO1\nG01 X#1 F100.\n#1=#1+1\nEND1\nM30\n"
+    out = io.StringIO(newline="")
+    diagnostics = Diagnostics(ErrorLevel.RAISE, warn_stream=io.StringIO())
+    translate(io.StringIO(fanuc), out, file="t.nc", source="fanuc", target="grblhal", setup=EXPRESSIONS,
+              diagnostics=diagnostics)
+    assert "while" not in out.getvalue() and "G1 X1. F100." in out.getvalue()
+    assert "flattened" in str(diagnostics.warnings[0])
+
+
+def test_reading_o_words_needs_a_build_with_them_and_subroutines_are_refused() -> None:
+    assert errors_of(lambda: read_program(io.StringIO(LOOP), file="t.gcode", dialect="grblhal"))[0].startswith(
+        "t.gcode:2:1: error:")
+    sub = "G21\no100 sub\nG0 X1\no100 endsub\no100 call\nM2\n"
+    found = errors_of(lambda: read_program(io.StringIO(sub), file="t.gcode", dialect="grblhal", setup=EXPRESSIONS))
+    assert found[0].startswith("t.gcode:2:1: error: grblHAL's o-word subroutines (sub, endsub, call, return) are "
+                               "not modelled")
+
+
+@pytest.mark.skipif(not rs274.available(), reason="the LinuxCNC interpreter rs274 is not installed")
+def test_the_o_word_output_runs_in_rs274_as_this_dialect_simulates_it() -> None:
+    """grblHAL's o-words and expressions are rs274's (ngc_flowctrl.c, ngc_expr.c are its port): the written
+    program, run by rs274, moves as the grblHAL simulation of it does (and as the pocket example does)."""
+    text, _ = _translate(LOOP, "linuxcnc", EXPRESSIONS)
+    pocket = (ROOT / "tests" / "conformance" / "grblhal" / "pocket_loop.nc").read_text().replace("T1 M6\n", "")
+    for program in (text, pocket):
+        ours = [e for e in _ours_with(program, EXPRESSIONS) if "move" in e]
+        theirs = [e for e in _theirs(program) if "move" in e]
+        assert ours == theirs and len(ours) > 5, program
+
+
+def _ours_with(text: str, setup: MachineSetup) -> list[dict[str, Any]]:
+    return [{"move": e["move"], "x": round(e["x"], 3), "y": round(e["y"], 3), "z": round(e["z"], 3)}
+            for e in events(text, setup) if "move" in e]
