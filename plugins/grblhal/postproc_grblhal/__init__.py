@@ -37,7 +37,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Callable, ClassVar, Iterator
 
 from postproc.comments import CommentSyntax
-from postproc.dialect import Dialect, Lazy, Reader
+from postproc.dialect import Dialect, Lazy, Reader, ResolvedCycle
 from postproc.grbl_family.dialect import GrblFamily
 from postproc.hookspecs import hookimpl
 from postproc.output.line_format import LineRule
@@ -53,7 +53,6 @@ from .codes import CODES
 
 if TYPE_CHECKING:
     from postproc.context import Context
-    from postproc.cycles.section import CannedCycle
     from postproc.ir import Block
 
 
@@ -142,10 +141,11 @@ class Grblhal(GrblFamily):
         return "grblhal_expressions.xml" if cls.expressions(setup) else cls.PIPELINE_FILE
 
     @classmethod
-    def moves_like(cls, cycle: CannedCycle) -> bool:
+    def moves_like(cls, cycle: ResolvedCycle) -> bool:
         """G81/G82 whose motion on grblHAL is the source's (``cycles.native_motion_matches``)."""
+        from postproc.cycles.section import CannedCycle
         from .cycles import native_motion_matches
-        return native_motion_matches(cycle)
+        return isinstance(cycle, CannedCycle) and native_motion_matches(cycle)
 
     @classmethod
     def python_pipeline(cls, setup: MachineSetup) -> Pipeline:
