@@ -86,6 +86,8 @@ def test_registered_through_its_own_entry_point_on_the_grbl_family_base() -> Non
     # values Fanuc carried over
     ("G99 G81 X10. Y10. Z-5. R2. F100.\nG82 X20. P250\nG80\nM30\n",
      "G99 G81 X10. Y10. Z-5. R2. F100.\nG82 X20. Z-5. R2. P0.25\nG0\nM30\n"),
+    # a cancel beside G28's axis words stands alone first: a bare G0 there would conflict with G28 (error 37)
+    ("G99 G81 X10. Y10. Z-5. R2. F100.\nG80 G28 Z10.\nM30\n", "G99 G81 X10. Y10. Z-5. R2. F100.\nG0\nG28 Z10.\nM30\n"),
     # a motion code ends the cycle on both: nothing to cancel
     ("G99 G81 X10. Y10. Z-5. R2. F100.\nG00 X0.\nM30\n", "G99 G81 X10. Y10. Z-5. R2. F100.\nG0 X0.\nM30\n"),
 ])
@@ -125,6 +127,19 @@ def test_a_length_offset_is_written_from_the_table_where_the_build_has_one() -> 
     assert to_grblhal("G43 H01 Z20.\nM30\n", with_tools(TABLE, lengths={1: 12.5})) == "G43 H01 G0 Z20.\nM30\n"
     # without a table (N_TOOLS 0, the default), grbl's rule: G43.1 with the register's length, alone
     assert to_grblhal("G43 H01 Z20.\nM30\n", with_tools(lengths={1: 12.5})) == "G43.1 Z12.5\nG0 Z20.\nM30\n"
+
+
+def test_a_dynamic_length_offset_after_a_cycle_is_accepted() -> None:
+    """After G80, grblHAL refuses G43.1 Z (axis words with no motion mode, error 31): the cancel is a bare G0,
+    so the translation reads back (the reader keeps grblHAL's rule) and moves as the source."""
+    fanuc = HEAD + "G99 G81 X10. Y10. Z-5. R2. F100.\nG80\nT2 M06\nG43 H02 Z20.\nG00 X0.\nM30\n"
+    setup = with_tools(lengths={2: 7.5})
+    out = io.StringIO(newline="")
+    translate(io.StringIO(fanuc), out, file="t.nc", source="fanuc", target="grblhal", setup=setup)
+    assert "G0\nT2 M6\nG43.1 Z7.5\n" in out.getvalue()
+    report = verify_lines(io.StringIO(fanuc), io.StringIO(out.getvalue()), file_in="t.nc", file_out="t.gcode",
+                          source="fanuc", target="grblhal", setup=setup, tolerance=0.0)
+    assert report.ok, report.mismatch
 
 
 def test_a_tool_change_is_m6() -> None:

@@ -62,6 +62,12 @@ def write_tool_lengths(blocks: Iterator[Block], ctx: Context, target: type[Diale
     return step(blocks, ctx, target)
 
 
+def cancel_cycles_alone(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """``cancels.cancel_cycles_alone``, imported when a translation first lowers for grblHAL."""
+    from .cancels import cancel_cycles_alone as step
+    return step(blocks, ctx, target)
+
+
 def resolve_cutter_compensation(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
     """``postproc.lowering.cutter_compensation.resolve_cutter_compensation``, imported when first used."""
     from postproc.lowering.cutter_compensation import resolve_cutter_compensation as step
@@ -98,11 +104,12 @@ class Grblhal(GrblFamily):
     MIST_COOLANT = False
     """M7 runs only with a driver that has mist coolant [V: gcode.c, ``hal.coolant_cap.mist``]: a set-up says
     ``<Controller mistCoolant="true">`` for such a build."""
-    LOWERING = (write_tool_lengths, resolve_cutter_compensation, close_full_circles, stops_after_motion)
+    LOWERING = (write_tool_lengths, resolve_cutter_compensation, close_full_circles, cancel_cycles_alone,
+                stops_after_motion)
     """Rewrites into what grblHAL runs: a G43 H as ``G43.1 Z<length>`` where the build has no tool table
     (``postproc.grbl_family.lengths``); G41/G42 as the compensated path, where the source's rules are modelled;
-    a full circle with an end point in its plane (grbl's arc rules, ``postproc.rs274.lean_controller``); a
-    moving block's spindle stop and coolant off after it (``postproc.rs274.order_of_execution``). Not grbl's
+    a full circle with an end point in its plane (grbl's arc rules, ``postproc.rs274.lean_controller``); a cycle
+    cancel beside an axis command in a block of its own (``cancels``: it is written as a bare G0); a moving block's spindle stop and coolant off after it (``postproc.rs274.order_of_execution``). Not grbl's
     G49 before motion: grblHAL's G49 is no axis command [V: gcode.c, "changed to match LinuxCNC behaviour in
     build 20210513"], nor its tool change pause (M6 exists)."""
     PATH_CONTROL = "cutting"

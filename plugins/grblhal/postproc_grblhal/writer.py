@@ -8,10 +8,11 @@ grblHAL's table.
   ``canned_cycle_change`` needs R, the drilling axis word, and P for G82]. Another dialect's words are
   written by their roles (a Fanuc dwell in milliseconds as seconds, its K as L).
 * G80 is a motion code (grblHAL's ``MotionMode_None``): ``G80 G0`` is refused, and after it axis words need
-  a motion code, even those of ``G43.1 Z`` or ``G28 Z`` [V: ``gcode.c``, "[G80 Errors]"]. So a cancel is written
-  only where a native cycle is in force, and as the group-01 code the source returns to after it (``G0``
-  alone: grblHAL ends the cycle and moves nothing [V: ``gcode.c``, G0 without axis words]); a cancel with no
-  native cycle in force writes nothing (the cycles before it arrived expanded).
+  a motion code, even those of ``G43.1 Z`` [V: ``gcode.c``, "[G80 Errors]"; ``G28 Z`` is exempt, a non-modal
+  axis command]. So a cancel is written only where a native cycle is in force, as the group-01 code the
+  source returns to after it (``G0`` alone: grblHAL ends the cycle and moves nothing [V: ``gcode.c``, G0
+  without axis words]; a cancel beside an axis command of its own stands alone before it, ``cancels``); a
+  cancel with no native cycle in force writes nothing (the cycles before it arrived expanded).
 * G64 writes nothing (path blending is off in every build: grblHAL always blends by junction deviation),
   with the tolerance it drops noted; G95 only for a spindle with an encoder (``<Controller spindleSync>``).
 * ``/`` block delete is written: grblHAL skips the block when its switch is on.
@@ -30,15 +31,16 @@ from typing import Any, ClassVar
 from postproc.context import Context
 from postproc.control import Assign, Break, Continue, Do, DoWhile, Else, ElseIf, EndIf, EndRepeat, EndWhile, If, \
     Repeat, While
-from postproc.expr import Expr
-from postproc.rs274.expressions import ExprSpelling
-from postproc.rs274.oword import spell_assignments, spell_oword
 from postproc.cycles.section import WORD_ORDER
 from postproc.dialect import Dialect
+from postproc.expr import Expr
 from postproc.grbl_family.writer import GrblFamilyWriter
 from postproc.ir import Block, Motion
 from postproc.rs274.codes import CodeTable
+from postproc.rs274.expressions import ExprSpelling
+from postproc.rs274.oword import spell_assignments, spell_oword
 
+from .cancels import GROUP_01
 from .codes import CODES
 from .program import GRBLHAL_SPELLING
 
@@ -47,7 +49,6 @@ _FLOW = (If, ElseIf, Else, EndIf, While, EndWhile, Do, DoWhile, Repeat, EndRepea
 _SAME_OWORDS = frozenset(("grblhal", "linuxcnc"))
 """Sources whose o-word labels and meanings are grblHAL's (ngc_flowctrl.c is rs274's)."""
 
-_GROUP_01 = frozenset(("rapid", "linear", "cw", "ccw"))
 GRBLHAL_AXES = frozenset("XYZABC")
 """Axes a grblHAL build may drive (``N_AXIS`` up to 6 with A, B, C; a set-up may say fewer)."""
 
@@ -78,7 +79,7 @@ class GrblhalWriter(GrblFamilyWriter):
 
     def write_block(self, block: Block) -> str | None:
         motion = block.sections.get("Motion")
-        if isinstance(motion, Motion) and motion.mode in _GROUP_01:
+        if isinstance(motion, Motion) and motion.mode in GROUP_01:
             self.cycle_motion = None  # the motion code ends the cycle on grblHAL
         return super().write_block(block)
 
@@ -87,9 +88,9 @@ class GrblhalWriter(GrblFamilyWriter):
         docstring), or nothing where the block's own motion code ends the cycle."""
         mode, self.cycle_motion = self.cycle_motion, None
         motion = block.sections.get("Motion")
-        if mode is None or (isinstance(motion, Motion) and motion.mode in _GROUP_01):
+        if mode is None or (isinstance(motion, Motion) and motion.mode in GROUP_01):
             return []
-        return [self.code("motion", mode if mode in _GROUP_01 else "rapid", "the motion mode after a cycle", block)]
+        return [self.code("motion", mode if mode in GROUP_01 else "rapid", "the motion mode after a cycle", block)]
 
     def expressions(self) -> bool:
         """The build runs parameters, expressions and o-words (``<Controller expressions="true">``)."""
