@@ -408,3 +408,25 @@ def test_the_o_word_output_runs_in_rs274_as_this_dialect_simulates_it() -> None:
 def _ours_with(text: str, setup: MachineSetup) -> list[dict[str, Any]]:
     return [{"move": e["move"], "x": round(e["x"], 3), "y": round(e["y"], 3), "z": round(e["z"], 3)}
             for e in events(text, setup) if "move" in e]
+
+
+# -- the output checker (tests/support/grblhal_rules.py) holds what it says -----------------------------
+
+@pytest.mark.parametrize("program, problem", [
+    ("G21 G90\nG0 X0 Y0 Z10\nG0 Z5\nM2\n", None),
+    ("G21\nG80\nG43.1 Z5\nM2\n", "3: axis words while G80 is in force (error 31)"),
+    ("G21\nG80 G28 Z5\nG0\nG43.1 Z5\nM2\n", None),
+    ("G21\nG0 G28 Z5\nM2\n", "2: axis command conflict (error 24/37)"),
+    ("G21\nF100\nG81 X1 Y1 Z-1\nM2\n", "3: G81 newly programmed without R and Z (value word missing)"),
+    ("G21\nF100\nG82 X1 Y1 Z-1 R1\nM2\n", "3: G82 newly programmed without P (value word missing)"),
+    ("G21\nF100\nG81 X1 Y1 Z-1 R1 L0\nM2\n", "3: a repeat count L of 0 or less (error: non-positive value)"),
+    ("G21\nF100\nG85 X1 Y1 Z-1 R1\nM2\n", "3: G85 is parsed but never run by grblHAL's motion control"),
+    ("G21\nG1 X1\nM2\n", "2: a feed move with no feed rate (undefined feed rate, error 22)"),
+    ("G21\nM19\nM2\n", "2: M19 is no code of grblHAL's (unsupported command, error 20)"),
+    ("G21\nG43 H1\nM2\n", "2: G43 without a tool table (unsupported command, error 20)"),
+    ("G21\nG0 X1 (what?)\nM2\n", "2: real-time character '?' (status report)"),
+    ("G21\n(" + "C" * 255 + ")\nM2\n", "2: line overflow (257 characters kept, 256 fit)"),
+])
+def test_the_grblhal_checker_finds_what_grblhal_refuses(program: str, problem: str | None) -> None:
+    from tests.support.grblhal_rules import grblhal_problems
+    assert grblhal_problems(program) == ([] if problem is None else [problem])
