@@ -125,6 +125,8 @@ def test_a_cycle_expanded_once_stays_expanded_to_its_cancel() -> None:
 def test_a_length_offset_is_written_from_the_table_where_the_build_has_one() -> None:
     # G43 with G0 in one block: only G43.1 is an axis command in grblHAL (gcode.c, build 20210513)
     assert to_grblhal("G43 H01 Z20.\nM30\n", with_tools(TABLE, lengths={1: 12.5})) == "G43 H01 G0 Z20.\nM30\n"
+    # grblHAL has no G44, table or not: the negated length as G43.1, alone (G43.1 is an axis command)
+    assert to_grblhal("G44 H01 Z20.\nM30\n", with_tools(TABLE, lengths={1: 12.5})) == "G43.1 Z-12.5\nG0 Z20.\nM30\n"
     # without a table (N_TOOLS 0, the default), grbl's rule: G43.1 with the register's length, alone
     assert to_grblhal("G43 H01 Z20.\nM30\n", with_tools(lengths={1: 12.5})) == "G43.1 Z12.5\nG0 Z20.\nM30\n"
 

@@ -35,13 +35,14 @@ _WATCHED = frozenset(("ToolLengthOffset", "DataSetting", "Units"))
 
 def write_tool_lengths(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
     """Lowering step: ``G43 H<n>``/``G44 H<n>`` -> ``G43.1 Z<length>`` (see the module docstring)."""
-    if ctx.dialect == target.NAME or target.TOOL_LENGTH_OFFSET \
-            or (issubclass(target, GrblFamily) and target.tool_table(ctx.setup)):
+    if ctx.dialect == target.NAME or target.TOOL_LENGTH_OFFSET:
         return blocks
-    return _write_tool_lengths(blocks, ctx)
+    if issubclass(target, GrblFamily) and target.tool_table(ctx.setup):
+        return _write_tool_lengths(blocks, ctx, ("negative",))  # a table runs G43 H, but the family has no G44
+    return _write_tool_lengths(blocks, ctx, ("positive", "negative"))
 
 
-def _write_tool_lengths(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
+def _write_tool_lengths(blocks: Iterator[Block], ctx: Context, modes: tuple[str, ...]) -> Iterator[Block]:
     table = ToolTable(ctx.setup)
     inch = False  # every controller here powers on in mm (``ModalState``), as the simulation starts
     for block in blocks:
@@ -56,7 +57,7 @@ def _write_tool_lengths(blocks: Iterator[Block], ctx: Context) -> Iterator[Block
         if isinstance(setting, DataSetting):
             table.write(setting, MM_PER_INCH if inch else 1.0)
         offset = sections.get("ToolLengthOffset")
-        if not isinstance(offset, ToolLengthOffset) or offset.mode not in ("positive", "negative"):
+        if not isinstance(offset, ToolLengthOffset) or offset.mode not in modes:
             yield block
             continue
         at = ctx.at(block, ctx.column_of(block, "H"))  # before the block is rewritten (a rare block)
