@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import abc
 from pathlib import Path
-from typing import TYPE_CHECKING, Callable, ClassVar, Generic, Iterable, Iterator, Mapping, TypeVar, cast
+from typing import TYPE_CHECKING, Callable, ClassVar, Generic, Iterable, Iterator, Mapping, Protocol, TypeVar, cast
 
 from .comments import CommentSyntax
 from .errors import Diagnostics
@@ -23,6 +23,14 @@ from .output.writer_base import Writer as Writer
 
 if TYPE_CHECKING:
     from .compensation.rules import CutterRules
+
+
+class ResolvedCycle(Protocol):
+    """What ``Dialect.moves_like`` reads of a resolved hole cycle (``postproc.cycles.section.CannedCycle``,
+    which the dialects' base does not import: the cycles build on it)."""
+
+    kind: str
+    semantics: str
 
 
 class Reader(abc.ABC):
@@ -244,6 +252,14 @@ class Dialect:
                     table[key] = sorted(value) if isinstance(value, frozenset) else \
                         dict(value) if isinstance(value, Mapping) else value
         return table
+
+    @classmethod
+    def moves_like(cls, cycle: ResolvedCycle) -> bool:
+        """Whether the controller's native cycle of ``cycle.kind`` moves as ``cycle`` does, resolved under its
+        source's family rules (``cycle.semantics``): by default when the families are the same
+        (``CYCLE_SEMANTICS``). A controller whose cycles follow rules of their own judges each block (grblHAL's
+        G98 level); a block judged otherwise is expanded (``postproc.cycles.lowering``)."""
+        return cycle.semantics == cls.CYCLE_SEMANTICS
 
     @classmethod
     def family(cls) -> str:

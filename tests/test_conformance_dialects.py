@@ -29,6 +29,8 @@ CASES = {
     "fagor": DialectUnderTest("fagor", ROOT / "examples/fagor", HERE / "fagor/invalid"),
     "linuxcnc": DialectUnderTest("linuxcnc", ROOT / "examples/linuxcnc", HERE / "linuxcnc/invalid", ZERO_TOOLS),
     "grbl": DialectUnderTest("grbl", HERE / "grbl", HERE / "grbl/invalid"),
+    "grblhal": DialectUnderTest("grblhal", HERE / "grblhal", HERE / "grblhal/invalid",
+                                ROOT / "tests/support/grblhal_expressions.xml"),
     "mach3": DialectUnderTest("mach3", ROOT / "plugins/example_dialect/examples",
                               ROOT / "plugins/example_dialect/examples/invalid", ZERO_TOOLS),
 }

@@ -1,6 +1,6 @@
 """grbl's dynamic tool length offset (``G43.1 Z<length>``, [V] grbl wiki "Grbl v1.1 Commands"): read and
 simulated, and written for a Fanuc ``G43 H``/``G44 H`` from the set-up's tool table
-(``postproc_grbl.lengths``). Expected points and lengths are worked out by hand in the comments."""
+(``postproc.grbl_family.lengths``). Expected points and lengths are worked out by hand in the comments."""
 
 from __future__ import annotations
 

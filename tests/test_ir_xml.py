@@ -219,7 +219,8 @@ SAMPLES: dict[str, list[tuple[Builder, str]]] = {
               '<Func name="atan2">\n  <Num value="1.0"/>\n  <Num value="2.0"/>\n</Func>')],
     **{name: _empty(name) for name in (
         "FanucBlockSyntax", "FanucLatheBlockSyntax", "GskBlockSyntax", "LatheCycleSyntax", "FanucProgramSyntax",
-        "ModalStateSyntax", "GrblBlockSyntax", "NgcBlockSyntax", "Mach3BlockSyntax",
+        "ModalStateSyntax", "GrblBlockSyntax", "GrblhalBlockSyntax", "GrblhalCycleRules", "GrblhalProgramSyntax",
+        "NgcBlockSyntax", "Mach3BlockSyntax",
         "LinuxcncProgramSyntax", "PolarSyntax", "IsgBlockSyntax", "IsgProgramSyntax", "FagorBlockSyntax",
         "FagorProgramSyntax", "DrillingSyntax",
         "PeckDrillingSyntax", "TappingSyntax", "BoringSyntax", "FineBoringSyntax", "BackBoringSyntax",

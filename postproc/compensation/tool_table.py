@@ -3,7 +3,7 @@ wrote (a programmable data input of the neutral tables ``tool_length``, ``tool_l
 ``cutter_offset``, ``cutter_offset_wear``), else the set-up's ``<Tools><Tool>``. Geometry written by the
 program replaces the set-up's; wear is added to either. A register with neither is unknown: the
 simulation refuses to guess it, and the error names the element that would give it. Translation reads
-them too, where a target without a tool table needs the values written (``postproc_grbl.lengths``)."""
+them too, where a target without a tool table needs the values written (``postproc.grbl_family.lengths``)."""
 
 from __future__ import annotations
 

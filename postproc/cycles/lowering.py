@@ -2,7 +2,8 @@
 
 A cycle is expanded when the target does not run its kind natively, when the set-up asks for it
 (``<Cycles expand="drill,back_bore"/>`` or ``"all"``), or when the target's controller moves through
-its native cycles by other rules (``CYCLE_SEMANTICS`` on the dialect; one that names none has every cycle expanded), or, for G73
+its native cycles by other rules (``CYCLE_SEMANTICS`` on the dialect, judged per block by ``Dialect.moves_like``; one
+that names none has every cycle expanded), or, for G73
 and G83, with another retract or clearance than the program was read with (``PECK_CLEARANCE_MM``,
 else the set-up's ``<Cycles peckRetract peckClearance>``: LinuxCNC's fixed 0.254 mm against a Mach3
 machine's 0.5): the expansion is exact, the native cycle there would not be. Once a block of a cycle is expanded, the
@@ -61,7 +62,7 @@ def expands(cycle: CannedCycle, ctx: Context, target: type[Dialect]) -> bool:
     if target.NAME == ctx.dialect and not forced:
         return False
     return "all" in forced or cycle.expand or cycle.kind in forced or cycle.kind not in target.NATIVE_CYCLES \
-        or cycle.semantics != target.CYCLE_SEMANTICS or cycle.kind in _other_clearances(ctx, target)
+        or not target.moves_like(cycle) or cycle.kind in _other_clearances(ctx, target)
 
 
 def cancels(sections: dict[str, Section]) -> bool:

@@ -258,6 +258,17 @@ class ControllerSettings(SetupGroup):
     """The controller's build runs mist coolant. None: as the dialect says (``Dialect.MIST_COOLANT``: every
     build but grbl's, where it takes ENABLE_M7)."""
 
+    tool_table: bool | None = None
+    """The controller's build keeps a tool table, so a length offset from a register is written as such
+    (grblHAL with ``N_TOOLS`` above 0 or a tool table plugin). None: as the dialect says (the family's
+    ``GrblFamily.tool_table``); a dialect that always or never has one ignores it."""
+    expressions: bool | None = None
+    """The controller's build runs parameters, expressions and o-word flow control (grblHAL with
+    ``NGC_EXPRESSIONS_ENABLE``, the program run from its file system). None: as the dialect says."""
+    spindle_sync: bool | None = None
+    """The controller's spindle reports its position, so feed per revolution runs (grblHAL: a spindle with
+    an encoder). None: as the dialect says."""
+
     def dwell_seconds_rule(self) -> bool:
         return self.variant == "haas" if self.dwell_seconds is None else self.dwell_seconds
 

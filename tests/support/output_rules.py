@@ -4,7 +4,7 @@
 writers, the one place their programs are made, so every program written is checked: translations
 (``postproc.api.translate``, the command line run in the suite's process), the conformance suite's
 generated programs (``postproc.testing``), a writer used on its own. grbl's by ``grbl_rules.grbl_problems``
-(grbl 1.1's parser, written from its source), LinuxCNC's by ``linuxcnc_rules.linuxcnc_problems`` (LinuxCNC's
+(grbl 1.1's parser, written from its source), grblHAL's by ``grblhal_rules.grblhal_problems`` (likewise), LinuxCNC's by ``linuxcnc_rules.linuxcnc_problems`` (LinuxCNC's
 own interpreter, when it is installed). What a writer writes is unchanged; the problems found are
 collected, and ``conftest.py`` fails the test that produced them, with the program. A run with errors
 (its output is discarded) is not checked, nor a translation's dry run (``api._keep_check`` writes the rest
@@ -29,6 +29,7 @@ from typing import Any, Callable, Iterable, TextIO
 from postproc.setup.machine_setup import MachineSetup
 
 from .grbl_rules import grbl_problems
+from .grblhal_rules import grblhal_problems
 from .linuxcnc_rules import available as rs274_available, linuxcnc_problems
 
 
@@ -37,19 +38,26 @@ def _grbl(text: str, setup: MachineSetup) -> list[str]:
     return grbl_problems(text, m19=setup.cycles.orientation == "m19", m7=bool(setup.controller.mist_coolant))
 
 
+def _grblhal(text: str, setup: MachineSetup) -> list[str]:
+    """grblHAL, with the build the set-up describes (tool table, spindle encoder, mist coolant, M19)."""
+    controller = setup.controller
+    return grblhal_problems(text, tool_table=bool(controller.tool_table), spindle_sync=bool(controller.spindle_sync),
+                            mist=bool(controller.mist_coolant), m19=setup.cycles.orientation == "m19")
+
+
 def _linuxcnc(text: str, setup: MachineSetup) -> list[str]:
     return linuxcnc_problems(text)
 
 
-CHECKERS: dict[str, Callable[[str, MachineSetup], list[str]]] = {"grbl": _grbl}
+CHECKERS: dict[str, Callable[[str, MachineSetup], list[str]]] = {"grbl": _grbl, "grblhal": _grblhal}
 if rs274_available():
     CHECKERS["linuxcnc"] = _linuxcnc
 
 violations: list[str] = []
 """Problems found since the last ``take_violations()``."""
-checked = {"grbl": 0, "linuxcnc": 0}
+checked = {"grbl": 0, "grblhal": 0, "linuxcnc": 0}
 """How many distinct outputs were checked per target (for the report at the end of a run)."""
-_seen: dict[tuple[str, str, str], list[str]] = {}
+_seen: dict[tuple[object, ...], list[str]] = {}
 """Outputs already checked (fuzzing writes the same program many times), with their problems."""
 
 
@@ -73,7 +81,9 @@ def problems(target: str, text: str, setup: MachineSetup) -> list[str]:
     checker = CHECKERS.get(target)
     if checker is None:
         return []
-    key = (target, text, setup.cycles.orientation, setup.controller.mist_coolant)
+    controller = setup.controller
+    key = (target, text, setup.cycles.orientation, controller.mist_coolant, controller.tool_table,
+           controller.spindle_sync)
     found = _seen.get(key)
     if found is None:
         found = _seen[key] = checker(text, setup)

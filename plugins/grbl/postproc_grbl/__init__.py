@@ -1,6 +1,7 @@
 """grbl 1.1 (and grbl-class) controllers: a dialect plugin written as a third party would write one.
 
-It registers through the ``postproc`` entry points and hooks only. Writing is its purpose; it also
+It registers through the ``postproc`` entry points and hooks only, and builds on the grbl family base
+``postproc.grbl_family`` (shared with grblHAL: line rules, tool lengths, writer, reader). Writing is its purpose; it also
 reads grbl (the RS274/NGC rules with grbl's code tables) so that ``postproc verify`` can simulate a
 translated program from its text.
 
@@ -17,7 +18,7 @@ stored commit 0b5604b) and the "Grbl v1.1 Commands" wiki page (github.com/gnea/g
 * Words F I J K L N P R S T X Y Z. **No canned cycles** (G73-G89 and G98/G99 are unsupported, so the
   lowering expands them: NATIVE_CYCLES is empty), no G41/G42 (the compensated path is written instead,
   where the source's rules are modelled), **no G43 H** (no tool table: a G43 H
-  is written as G43.1 Z with the register's value from the set-up, ``lengths.py``), no G95, no H, D
+  is written as G43.1 Z with the register's value from the set-up, ``postproc.grbl_family.lengths``), no G95, no H, D
   or Q words, no parameters or expressions.
 * T is read and ignored. ``( )`` and ``;`` comments are stripped by the protocol layer; ``/`` block
   delete is ignored (the block runs); ``%`` is not supported. A line keeps at most 79 characters
@@ -34,6 +35,7 @@ from typing import TYPE_CHECKING, Callable, ClassVar, Iterator
 
 from postproc.comments import CommentSyntax
 from postproc.dialect import Dialect, Lazy, Reader
+from postproc.grbl_family.dialect import GrblFamily
 from postproc.hookspecs import hookimpl
 from postproc.output.line_format import LineRule
 from postproc.rs274.cycle_words import rs274_cycle_words
@@ -51,8 +53,8 @@ if TYPE_CHECKING:
 
 
 def write_tool_lengths(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
-    """``lengths.write_tool_lengths``, imported when a translation first lowers for grbl."""
-    from .lengths import write_tool_lengths as step
+    """``postproc.grbl_family.lengths.write_tool_lengths``, imported when a translation first lowers for grbl."""
+    from postproc.grbl_family.lengths import write_tool_lengths as step
     return step(blocks, ctx, target)
 
 
@@ -62,7 +64,7 @@ def resolve_cutter_compensation(blocks: Iterator[Block], ctx: Context, target: t
     return step(blocks, ctx, target)
 
 
-class Grbl(Dialect):
+class Grbl(GrblFamily):
     NAME = "grbl"
     LOWER_CASE: ClassVar[bool] = True
     """The reader takes lower-case words (the controller reads them as upper case)."""
@@ -90,7 +92,7 @@ class Grbl(Dialect):
     answers error 20 without it]: a set-up says ``<Controller mistCoolant="true">`` for such a build."""
     LOWERING = (write_tool_lengths, resolve_cutter_compensation, lower_for_lean_controller)
     """Rewrites into what grbl runs: a G43 H as ``G43.1 Z<length>`` from the set-up's tool table
-    (``lengths.py``); G41/G42 as the compensated path, where the source's rules are modelled
+    (``postproc.grbl_family.lengths``); G41/G42 as the compensated path, where the source's rules are modelled
     (``postproc.lowering.cutter_compensation``); tool change as a pause, G49 before motion, full circles with an end point; a
     moving block's spindle stop and coolant off after it (grbl runs them before the motion:
     ``postproc.rs274.order_of_execution``)."""
@@ -99,7 +101,8 @@ class Grbl(Dialect):
     CUTTER_COMPENSATION = False
     """Only G40."""
     TOOL_LENGTH_OFFSET = False
-    """No tool table: a G43 H is written as grbl's own G43.1 with the register's value (``lengths.py``)."""
+    """No tool table: a G43 H is written as grbl's own G43.1 with the register's value
+    (``postproc.grbl_family.lengths``)."""
     DWELL_UNIT = "seconds"
     """G4 P is in seconds."""
     COMMENTS = Lazy[CommentSyntax](".text:COMMENTS")

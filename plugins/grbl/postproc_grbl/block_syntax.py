@@ -1,26 +1,24 @@
 """GrblBlockSyntax: RS274/NGC block rules with grbl's code tables.
 
 grbl's parser follows the NIST RS274/NGC rules (no decimal-point scaling, G4 P in seconds, G80 leaves
-no motion mode) and accepts a subset of the codes, so this is the family's ``NgcWordBlockSyntax`` with
-grbl's table.
+no motion mode) and accepts a subset of the codes, so this is the grbl family's block syntax
+(``postproc.grbl_family.block_syntax``: M19 only where the set-up has it) with grbl's table.
 Reading grbl matters for ``verify``: the toolpath of a translated program is simulated from its text.
 """
 
 from __future__ import annotations
 
-from typing import Any, ClassVar, Mapping
+from typing import ClassVar, Mapping
 
 from postproc.context import Context
-from postproc.errors import ParseError
+from postproc.grbl_family.block_syntax import GrblFamilyBlockSyntax
 from postproc.ir import Block, ToolChange
-from postproc.rs274.block_syntax import col_of_word
 from postproc.rs274.codes import CodeTable
-from postproc.rs274.ngc_block_syntax import NgcWordBlockSyntax
 
 from .codes import CODES, M_GROUPS, NO_M19
 
 
-class GrblBlockSyntax(NgcWordBlockSyntax):
+class GrblBlockSyntax(GrblFamilyBlockSyntax):
     """Lexed words -> neutral sections, for grbl 1.1."""
 
     XNAME = "GrblBlockSyntax"
@@ -35,6 +33,7 @@ class GrblBlockSyntax(NgcWordBlockSyntax):
     REAL_LETTERS = frozenset("XYZIJKRPF")
     INTEGER_LETTERS = frozenset("NTL")
     M_GROUPS = M_GROUPS
+    NO_M19 = NO_M19
 
     def build(self, block: Block, ctx: Context) -> None:
         """As RS274/NGC, plus grbl's spelling of a manual tool change: ``T<n> M0`` (grbl ignores T, so a
@@ -45,9 +44,3 @@ class GrblBlockSyntax(NgcWordBlockSyntax):
         if stop is not None and stop.kind == "stop" and "ToolSelect" in sections:  # type: ignore[attr-defined]
             del sections["ProgramControl"]
             block.add(ToolChange())
-
-    def orient(self, block: Block, ctx: Context, num: str, values: dict[str, Any], used: set[str]) -> None:
-        """M19 exists only on machines whose set-up says so (``<Cycles orientation="m19"/>``)."""
-        if ctx.setup.cycles.orientation != "m19":
-            raise ParseError(NO_M19, ctx.at(block, col_of_word(block, "M", num)))
-        super().orient(block, ctx, num, values, used)

@@ -1,124 +1,16 @@
-"""What grbl's serial and protocol layers do to a line before its parser sees it, as the rules every
-written line obeys (``LINES``, through ``postproc.output.line_format``) and grbl's comment syntax (``COMMENTS``).
-
-From ``grbl/serial.c`` and ``grbl/protocol.c`` (github.com/gnea/grbl, stored commit bfb67f0) [V]:
-
-* the serial layer acts on ``?`` (status), ``!`` (feed hold), ``~`` (cycle start) and Ctrl-X wherever
-  they stand, comments included, and bytes above 0x7F are real-time commands (grbl 1.1's extended
-  set: feed and spindle overrides, ...): no written line holds one. Text is written in ASCII without
-  them (``Ø`` as ``DIA``, ``°`` as ``DEG``, accents dropped, anything else ``_``), with one warning.
-* ``protocol_main_loop`` keeps a line in ``line[LINE_BUFFER_SIZE]`` (80, ``protocol.h``) without spaces,
-  control characters, ``/`` and comments (``( )`` to the first ``)``, ``;`` to the end of the line);
-  the 80th character kept sets the overflow flag: error 11, "Max characters per line exceeded". A
-  longer line has its numbers written shorter where that is exact (``X10.500`` as ``X10.5``, ``-0.5``
-  as ``-.5``: grbl's ``read_float`` reads both alike); one still too long is refused, located.
-"""
+"""grbl 1.1's line rules and comments: the family's (``postproc.grbl_family.text``) with grbl 1.1's line
+buffer of 80 characters, counted without spaces and comments [V: ``grbl/protocol.c``, ``protocol.h``]."""
 
 from __future__ import annotations
 
-import re
-import unicodedata
 from typing import Final
 
-from postproc.comments import CommentSyntax
+from postproc.grbl_family.text import (
+    COMMENTS as COMMENTS, GRBL_KEPT, GRBL_LINE_BUFFER_SIZE, GrblLines, REALTIME as _REALTIME, grbl_safe as grbl_safe,
+    kept as kept, plain_ascii as plain_ascii, shortened as shortened,
+)
 
-LINE_BUFFER_SIZE: Final = 80
-"""grbl 1.1's ``LINE_BUFFER_SIZE`` (``protocol.h``): at most 79 characters of a line are kept [V]."""
-KEPT: Final = LINE_BUFFER_SIZE - 1
-
-_REALTIME = re.compile(r"[?!~\x00-\x08\x0b\x0c\x0e-\x1f\x7f]")
-"""Characters grbl acts on (or that have no place in a line): replaced in what is written."""
-_SYMBOLS = {"\u00d8": "DIA", "\u00f8": "DIA", "\u2300": "DIA", "\u00b0": "DEG", "\u00b1": "+/-", "\u00b5": "U",
-            "\u2013": "-", "\u2014": "-", "\u2018": "'", "\u2019": "'", "\u201c": '"', "\u201d": '"'}
-_MARKED: Final = bytes(0 if code < 128 and not _REALTIME.match(chr(code)) else 1 for code in range(256))
-"""``bytes.translate`` table: the ASCII characters grbl takes as they are (those ``_REALTIME`` does not
-match) to 0, every other byte to 1."""
-_NUMBER = re.compile(r"([-+]?)(\d*)\.?(\d*)")
-_WORD_NUMBER = re.compile(r"(?<=[A-Za-z])\s*[-+]?(?:\d+\.?\d*|\.\d+)")
-_COMMENT = re.compile(r"\([^)]*\)?|;.*")
-
-
-def plain_ascii(text: str) -> bool:
-    """``text`` is ASCII without a character of ``_REALTIME``: no byte of it is marked (a byte loop in C.
-    Deleting the plain bytes instead, ``translate(None, delete)``, builds a table of 256 entries a call:
-    1,500 instructions, a twentieth of a written block's cost, measured with callgrind)."""
-    return text.isascii() and 1 not in text.encode("ascii").translate(_MARKED)  # an int: no TypeError tried first
-
-
-def grbl_safe(text: str) -> str:
-    """``text`` in ASCII without grbl's real-time characters (see the module docstring)."""
-    out: list[str] = []
-    for ch in text:
-        if ch.isascii():
-            out.append("_" if _REALTIME.match(ch) else ch)
-        elif ch in _SYMBOLS:
-            out.append(_SYMBOLS[ch])
-        else:
-            plain = unicodedata.normalize("NFKD", ch).encode("ascii", "ignore").decode()
-            out.append("_" if not plain or _REALTIME.search(plain) else plain)
-    return "".join(out)
-
-
-COMMENTS: Final = CommentSyntax(parens=True, nested=False, semicolon=True, clean=grbl_safe)
-"""``( )`` to the first ``)`` and ``;`` to the end of the line (``protocol.c``) [V]; no real-time
-character inside."""
-
-
-def kept(line: str) -> int:
-    """How many characters of ``line`` grbl's protocol layer keeps (see the module docstring)."""
-    return sum(1 for ch in _COMMENT.sub("", line) if ch > " " and ch != "/")
-
-
-def _shorter(match: re.Match[str]) -> str:
-    """A word's number in its shortest exact spelling (no sign '+', leading or trailing zero, or point)."""
-    text = match.group(0).strip()
-    parts = _NUMBER.fullmatch(text)
-    if parts is None:
-        return text
-    sign, whole, frac = parts.group(1), parts.group(2).lstrip("0"), parts.group(3).rstrip("0")
-    if not whole and not frac:
-        return "0"
-    return ("-" if sign == "-" else "") + (whole or "") + ("." + frac if frac else "")
-
-
-def shortened(line: str) -> str:
-    """``line`` with every word's number shortest, its comments as they are."""
-    out: list[str] = []
-    at = 0
-    for match in _COMMENT.finditer(line):
-        out.append(_WORD_NUMBER.sub(_shorter, line[at:match.start()]))
-        out.append(match.group(0))
-        at = match.end()
-    out.append(_WORD_NUMBER.sub(_shorter, line[at:]))
-    return "".join(out)
-
-
-class GrblLines:
-    """The rules of every line written for grbl (``postproc.output.line_format.LineRule``)."""
-
-    def fits(self, text: str) -> bool:
-        """Every line of ``text`` is plain ASCII and short enough, as it is (the test of a usual block, and
-        of an expanded cycle's many lines). Plain ASCII has no line break but CR and LF, so each line lies
-        within a piece between two LFs, and a piece shorter than the buffer holds a line ``fit`` keeps."""
-        return plain_ascii(text) and (len(text) < LINE_BUFFER_SIZE
-                                      or max(map(len, text.split("\n"))) < LINE_BUFFER_SIZE)
-
-    def fit(self, line: str, eol: str) -> tuple[str, str | None, str | None]:
-        """``line`` as grbl must receive it, a warning when its text changed, and why it cannot be sent."""
-        warning = None
-        if not plain_ascii(line):
-            line = grbl_safe(line)
-            warning = ("grbl acts on '?', '!', '~' and bytes above 0x7F even inside a comment: text is written "
-                       "without them")
-        if len(line) < LINE_BUFFER_SIZE or kept(line) <= KEPT:
-            return line, warning, None
-        short = shortened(line)
-        count = kept(short)
-        if count <= KEPT:
-            return short, warning, None
-        return line, warning, (f"the line keeps {count} characters without spaces and comments, more than the "
-                               f"{KEPT} grbl 1.1 holds (LINE_BUFFER_SIZE {LINE_BUFFER_SIZE}, error 11): split "
-                               "the block, or write its numbers with fewer digits")
-
-
-LINES: Final = GrblLines()
+LINE_BUFFER_SIZE: Final = GRBL_LINE_BUFFER_SIZE
+KEPT: Final = GRBL_KEPT
+LINES: Final = GrblLines("grbl", "grbl 1.1", LINE_BUFFER_SIZE, kept, " without spaces and comments")
+"""Every line written for grbl 1.1."""

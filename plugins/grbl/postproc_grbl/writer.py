@@ -1,4 +1,5 @@
-"""grbl writer: the RS274 word writer with grbl 1.1's tables and its refusals.
+"""grbl writer: the grbl family's writer (``postproc.grbl_family.writer``: ``%`` and O-numbers as comments,
+M19 per the set-up, a pause that stops the spindle) with grbl 1.1's tables and its refusals.
 
 What grbl lacks is an ``UnsupportedError`` naming the construct, except where the target has one
 faithful spelling of the same physical action. The block rewrites (a tool change as a ``T<n> M0``
@@ -27,9 +28,9 @@ from __future__ import annotations
 
 from typing import Any, ClassVar
 
-from postproc.ir import Block, ProgramControl, Section
+from postproc.grbl_family.writer import GrblFamilyWriter
+from postproc.ir import Block
 from postproc.rs274.codes import CodeTable
-from postproc.rs274.writer import WordWriter
 
 from .codes import CODES
 
@@ -37,7 +38,7 @@ GRBL_AXES = frozenset("XYZ")
 """Axes of a stock grbl 1.1 build."""
 
 
-class GrblWriter(WordWriter):
+class GrblWriter(GrblFamilyWriter):
     DIALECT: ClassVar[str] = "grbl"
     CODES: ClassVar[CodeTable] = CODES
     WORK_OFFSET_SETTING: ClassVar[str] = "G10 L2"
@@ -56,27 +57,11 @@ class GrblWriter(WordWriter):
     BLANK_AS_TRACE: ClassVar[bool] = True
     """G80, G98/G99, G64 and the like are not grbl's: a block of nothing else is a trace of its source."""
 
-    # -- blocks ------------------------------------------------------------------------------------
-    def structure_block(self, block: Block) -> str | None:
-        """grbl's parser rejects '%': a tape mark is written as a comment."""
-        return self.comment("%") + (block.eol or "\n")
-
-    def item_line(self, item: Section, block: Block) -> str:
-        """A pause inside an expansion is for the operator to work at the tool (orient it by hand, jog it
-        out): grbl's M0 leaves the spindle turning, so a running spindle is stopped first."""
-        line = super().item_line(item, block)
-        pause = isinstance(item, ProgramControl) and item.kind == "stop"
-        if pause and self.modal.spindle != "stop":
-            self.modal.spindle = "stop"
-            return self.code("spindle", "stop", "spindle stop", block) + "\n" + line
-        return line
+    def table_refusal(self, register: int | None) -> str:
+        number = "" if register is None else f" H{register}"
+        return f"a tool length offset from a table (G43{number}; grbl has only G43.1)"
 
     # -- section words -----------------------------------------------------------------------------
-    def program_start(self, s: Any, block: Block) -> str:
-        """grbl's parser rejects the letter O: the program number survives as a comment."""
-        name = f"O{int(s.number):04d}" if s.number is not None else str(s.name)
-        return self.comment(name)
-
     def block_delete_words(self, s: Any, block: Block) -> list[str]:
         self.unsupported("block delete '/' (grbl ignores it: the block would always run)", block)
         return []
@@ -95,35 +80,7 @@ class GrblWriter(WordWriter):
             return []
         return super().path_control_words(s, block)
 
-    def tool_length_offset_words(self, s: Any, block: Block) -> list[str]:
-        """``G43.1 Z<length>`` (what ``lengths.write_tool_lengths`` makes of a G43 H) or ``G49``."""
-        if s.mode == "dynamic":
-            if not isinstance(s.length, (int, float)):
-                self.unsupported("a dynamic tool length offset whose length is computed", block)
-            return [self.code("length", "dynamic", "a dynamic tool length offset", block), "Z" + self.number(s.length, "Z")]
-        if s.mode != "cancel":
-            register = f" H{s.register}" if isinstance(s.register, int) else ""
-            self.unsupported(f"a tool length offset from a table (G43{register}; grbl has only G43.1)", block)
-        return super().tool_length_offset_words(s, block)
-
     def tool_change_words(self, s: Any, block: Block) -> list[str]:
         """What ``pause_for_tool_change`` leaves: a tool change with no tool selected before it."""
         self.unsupported("a tool change with no tool selected (grbl's manual tool change, T<n> M0, names the "
                          "tool to load: program T before M6)", block)
-
-    def spindle_orientation_words(self, s: Any, block: Block) -> list[str]:
-        mode = self.ctx.setup.cycles.orientation
-        angle = float(s.angle)
-        if mode == "m19":
-            return [self.code("orient", None, "an oriented spindle stop", block)] + (
-                [f"R{self.number(angle)}"] if angle else [])
-        if mode == "stop":
-            stop = self.code("spindle", "stop", "spindle stop", block)
-            words = [] if self.modal.spindle == "stop" or "SpindleControl" in block.sections else [stop]
-            self.modal.spindle = "stop"
-            pause = self.code("program", "stop", "a program stop", block)
-            note = self.comment(f"ORIENT THE SPINDLE TO {self.number(angle)} DEG BY HAND, THEN CYCLE START")
-            return words + [pause, note]
-        self.unsupported("an oriented spindle stop (M19); a set-up with <Cycles orientation=\"stop\"/> "
-                         "pauses for the operator instead", block)
-        return []

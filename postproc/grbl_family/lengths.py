@@ -1,4 +1,5 @@
-"""Tool length offsets for grbl, which has no tool table: a length offset from a register (Fanuc and
+"""Tool length offsets for a grbl-family controller without a tool table (grbl 1.1; a grblHAL build without
+one, ``GrblFamily.tool_table``): a length offset from a register (Fanuc and
 LinuxCNC ``G43 H<n>``, ``G44 H<n>``) becomes grbl's dynamic offset ``G43.1 Z<length>`` with the
 register's value, taken where the simulation takes it (``postproc.compensation.tool_table``: the
 program's own data settings, else the set-up's ``<Tools><Tool length>``); ``G49`` stays.
@@ -24,6 +25,7 @@ from typing import Iterator
 from postproc.compensation.tool_table import ToolTable
 from postproc.context import Context
 from postproc.dialect import Dialect
+from postproc.grbl_family.dialect import GrblFamily
 from postproc.errors import PostprocError, UnsupportedError
 from postproc.ir import Block, Comments, DataSetting, Section, ToolLengthOffset, Units
 
@@ -35,10 +37,12 @@ def write_tool_lengths(blocks: Iterator[Block], ctx: Context, target: type[Diale
     """Lowering step: ``G43 H<n>``/``G44 H<n>`` -> ``G43.1 Z<length>`` (see the module docstring)."""
     if ctx.dialect == target.NAME or target.TOOL_LENGTH_OFFSET:
         return blocks
-    return _write_tool_lengths(blocks, ctx)
+    if issubclass(target, GrblFamily) and target.tool_table(ctx.setup):
+        return _write_tool_lengths(blocks, ctx, ("negative",))  # a table runs G43 H, but the family has no G44
+    return _write_tool_lengths(blocks, ctx, ("positive", "negative"))
 
 
-def _write_tool_lengths(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
+def _write_tool_lengths(blocks: Iterator[Block], ctx: Context, modes: tuple[str, ...]) -> Iterator[Block]:
     table = ToolTable(ctx.setup)
     inch = False  # every controller here powers on in mm (``ModalState``), as the simulation starts
     for block in blocks:
@@ -53,7 +57,7 @@ def _write_tool_lengths(blocks: Iterator[Block], ctx: Context) -> Iterator[Block
         if isinstance(setting, DataSetting):
             table.write(setting, MM_PER_INCH if inch else 1.0)
         offset = sections.get("ToolLengthOffset")
-        if not isinstance(offset, ToolLengthOffset) or offset.mode not in ("positive", "negative"):
+        if not isinstance(offset, ToolLengthOffset) or offset.mode not in modes:
             yield block
             continue
         at = ctx.at(block, ctx.column_of(block, "H"))  # before the block is rewritten (a rare block)
@@ -68,7 +72,7 @@ def _dynamic(block: Block, ctx: Context, table: ToolTable, offset: ToolLengthOff
     it, or (tools touched off) by a comment."""
     register = offset.register
     if not isinstance(register, int):
-        raise UnsupportedError("a tool length offset whose register is computed (grbl's G43.1 needs its value)")
+        raise UnsupportedError("a tool length offset whose register is computed (the dynamic offset needs its value)")
     sections = block.sections
     del sections["ToolLengthOffset"]
     block.changed()

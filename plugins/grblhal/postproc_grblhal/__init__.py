@@ -1,0 +1,179 @@
+"""grblHAL controllers: a dialect plugin on the grbl family base (``postproc.grbl_family``), written as a third
+party would write one. It registers through the ``postproc`` entry points and hooks only.
+
+What grblHAL accepts, from its source (github.com/grblHAL/core, stored commit f80fc34, ``GRBL_BUILD``
+20260817), tagged [V] where read there:
+
+* grbl 1.1's codes [V: ``gcode.c``], and: G43 H from the tool table and G43.2, only with a tool table
+  (``N_TOOLS`` above 0, default 0 in ``config.h``, or a tool table plugin: ``grbl.tool_table.n_tools``);
+  G59.1-G59.3 (nine work systems with ``COMPATIBILITY_LEVEL`` <= 1, the default); G95 feed per revolution,
+  only with a spindle that reports its position (``spindle->hal->get_data``); G98/G99; M6 (every build: the
+  ``$341`` setting asks for a manual change or ignores it, an ATC runs it); G5/G5.1 splines, G10 L1/L10/L11
+  (tool data), G92.2/G92.3, M61-M68 and M70-M73 kept verbatim.
+* Canned cycles G73, G81-G89 are parsed; the motion control runs G73 and G81-G84 (``motion_control.c``
+  ``mc_canned_drill``), G85/G86/G89 are "not implemented" (``gcode.h``). G81/G82 move as RS274/NGC's
+  except for G98's level (``cycles``), so they stay native where the source's cycle moves alike; G73/G83
+  (a 0.25 s dwell at each peck, G83 feeding from the retract level) and the experimental G84 are expanded.
+* Parameters, expressions (LinuxCNC's operators, precedence and functions: ``ngc_expr.c``) and o-word
+  flow control (``ngc_flowctrl.c``: if/elseif/else/endif, do/while/endwhile, repeat/endrepeat,
+  break/continue, sub/endsub/call/return; loops and subroutines only in a program run from the
+  controller's file system) exist only with ``NGC_EXPRESSIONS_ENABLE`` (off by default): read and written
+  for a set-up that says the build has them (``<Controller expressions="true">``, ``program``), subroutines
+  aside (refused when read; a program with calls reaches grblHAL flattened). G65/G66 need a macro plugin
+  (``grbl.on_macro_execute``): refused.
+* Lathe mode (``$32``): G7/G8, G33, G76 threading, G96/G97, and G70-G72 with ``LATHE_UVW_OPTION``: not
+  modelled (refused at their line); G41/G42 only with ``CUTTER_COMP_ENABLE`` (off, experimental): the
+  compensated path is written instead, as for grbl. No G52, G44 or M19.
+* ``( )`` and ``;`` comments; ``/`` block delete at the start of a block; a line keeps 256 characters
+  (``LINE_BUFFER_SIZE`` 257, ``protocol.h``), comments and spaces included; ``?``, ``!``, ``~`` and bytes above
+  0x7F are real-time commands (``text``).
+
+What a build chooses is said by the set-up's ``<Controller toolTable spindleSync mistCoolant expressions>``,
+read where a program is read and written.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Callable, ClassVar, Iterator
+
+from postproc.comments import CommentSyntax
+from postproc.dialect import Dialect, Lazy, Reader, ResolvedCycle
+from postproc.grbl_family.dialect import GrblFamily
+from postproc.hookspecs import hookimpl
+from postproc.output.line_format import LineRule
+from postproc.output.writer_base import Writer
+from postproc.rs274.cycle_words import rs274_cycle_words
+from postproc.rs274.lean_controller import close_full_circles
+from postproc.rs274.order_of_execution import stops_after_motion
+from postproc.setup.machine_setup import MachineSetup
+from postproc.syntax import Pipeline
+from postproc.xmlio import XFactory
+
+from .codes import CODES
+
+if TYPE_CHECKING:
+    from postproc.context import Context
+    from postproc.ir import Block
+
+
+def write_tool_lengths(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """``postproc.grbl_family.lengths.write_tool_lengths``, imported when a translation first lowers for grblHAL."""
+    from postproc.grbl_family.lengths import write_tool_lengths as step
+    return step(blocks, ctx, target)
+
+
+def cancel_cycles_alone(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """``cancels.cancel_cycles_alone``, imported when a translation first lowers for grblHAL."""
+    from .cancels import cancel_cycles_alone as step
+    return step(blocks, ctx, target)
+
+
+def resolve_cutter_compensation(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """``postproc.lowering.cutter_compensation.resolve_cutter_compensation``, imported when first used."""
+    from postproc.lowering.cutter_compensation import resolve_cutter_compensation as step
+    return step(blocks, ctx, target)
+
+
+class Grblhal(GrblFamily):
+    NAME = "grblhal"
+    LOWER_CASE: ClassVar[bool] = True
+    """The reader takes lower-case words (the controller reads them as upper case)."""
+    DESCRIPTION = "grblHAL (G81/G82 native, M6, a tool table and G95 where the build has them; G4 P in seconds)"
+    READER = Lazy[type[Reader]](".reader:GrblhalReader")
+    """Imported when a run first reads grblHAL (``Lazy``), as are the writer and the block syntax."""
+    WRITER = Lazy[type[Writer]](".writer:GrblhalWriter")
+    PIPELINE_FILE = "grblhal.xml"
+    CYCLE_WORDS = rs274_cycle_words(CODES, ("L",))
+    """R level, P dwell (seconds), L repeats."""
+    NATIVE_CYCLES = frozenset({"drill", "drill_dwell"})
+    """G81 and G82, kept native where they move as the source's cycle (``moves_like``); every other cycle
+    is expanded."""
+    CYCLE_SEMANTICS = "rs274"
+    """grblHAL's G81/G82 are read under RS274/NGC rules (``cycles``: a block where grblHAL's G98 differs is
+    refused when read, expanded when written)."""
+    INVERSE_TIME_FEED = True
+    """G93: a move in 1/F minutes [V: gcode.c, ``FeedMode_InverseTime``]."""
+    SPINDLE_ORIENTATION = False
+    """No M19: cycles that need an oriented stop follow the set-up's ``Cycles orientation``."""
+    TOOL_CHANGER = True
+    """M6 is accepted by every build (``$341``: a manual change, or ignored; an ATC runs it)."""
+    STOPS_BEFORE_MOTION = True
+    """The RS274/NGC order of execution: M5 and M9 act before the block's motion (grbl's ``gcode.c``)."""
+    FEED_BEFORE_UNITS = False
+    """grblHAL reads F in the block's new units [K: its gcode.c, grbl's, converts F by the block's G20/G21]."""
+    MIST_COOLANT = False
+    """M7 runs only with a driver that has mist coolant [V: gcode.c, ``hal.coolant_cap.mist``]: a set-up says
+    ``<Controller mistCoolant="true">`` for such a build."""
+    LOWERING = (write_tool_lengths, resolve_cutter_compensation, close_full_circles, cancel_cycles_alone,
+                stops_after_motion)
+    """Rewrites into what grblHAL runs: a G43 H as ``G43.1 Z<length>`` where the build has no tool table
+    (``postproc.grbl_family.lengths``); G41/G42 as the compensated path, where the source's rules are modelled;
+    a full circle with an end point in its plane (grbl's arc rules, ``postproc.rs274.lean_controller``); a cycle
+    cancel beside an axis command in a block of its own (``cancels``: it is written as a bare G0); a moving block's spindle stop and coolant off after it (``postproc.rs274.order_of_execution``). Not grbl's
+    G49 before motion: grblHAL's G49 is no axis command [V: gcode.c, "changed to match LinuxCNC behaviour in
+    build 20210513"], nor its tool change pause (M6 exists)."""
+    PATH_CONTROL = "cutting"
+    """grblHAL always blends (junction deviation; ``ENABLE_PATH_BLENDING`` is off): G61 changes nothing."""
+    CUTTER_COMPENSATION = False
+    """Only G40 (``CUTTER_COMP_ENABLE`` is off, experimental)."""
+    TOOL_LENGTH_OFFSET = False
+    """No tool table in a default build (``N_TOOLS`` 0): ``<Controller toolTable="true">`` says a build has one
+    (``tool_table``); without it a G43 H is written as G43.1 with the register's value."""
+    DWELL_UNIT = "seconds"
+    """G4 P is in seconds."""
+    PROGRAMS = True
+    """Parameters, expressions and o-word conditions and loops, on a build with them (``<Controller
+    expressions="true">``: ``expressions``); on any other the writer refuses every statement, so a program
+    that computes reaches grblHAL flattened."""
+    TAPE_MARKS = False
+    """``%`` is no word of grblHAL's parser: written as a comment."""
+    COMMENTS = Lazy[CommentSyntax](".text:COMMENTS")
+    """``( )`` and ``;`` comments, without a real-time character inside (``postproc.grbl_family.text``)."""
+    LINE_RULE = Lazy[LineRule](".text:LINES")
+    """Every line written is ASCII without real-time characters and keeps at most 256 characters."""
+
+    @classmethod
+    def tool_table(cls, setup: MachineSetup) -> bool:
+        """A build with a tool table, as the set-up says (``<Controller toolTable>``; none by default)."""
+        return bool(setup.controller.tool_table)
+
+    @classmethod
+    def expressions(cls, setup: MachineSetup) -> bool:
+        """A build with ``NGC_EXPRESSIONS_ENABLE``, as the set-up says (``<Controller expressions>``; none by default)."""
+        return bool(setup.controller.expressions)
+
+    @classmethod
+    def pipeline_file(cls, setup: MachineSetup) -> str | None:
+        """``grblhal_expressions.xml`` (the interpreter step first) for a build with expressions."""
+        return "grblhal_expressions.xml" if cls.expressions(setup) else cls.PIPELINE_FILE
+
+    @classmethod
+    def moves_like(cls, cycle: ResolvedCycle) -> bool:
+        """G81/G82 whose motion on grblHAL is the source's (``cycles.native_motion_matches``)."""
+        from postproc.cycles.section import CannedCycle
+        from .cycles import native_motion_matches
+        return isinstance(cycle, CannedCycle) and native_motion_matches(cycle)
+
+    @classmethod
+    def python_pipeline(cls, setup: MachineSetup) -> Pipeline:
+        """``grblhal.xml`` (``grblhal_expressions.xml`` for a build with expressions), built in Python."""
+        from postproc.cycles.resolve import CannedCycleResolveSyntax
+        from postproc.syntaxes.modal_state import ModalStateSyntax
+        from .block_syntax import GrblhalBlockSyntax
+        from .cycles import GrblhalCycleRules
+        from .program import GrblhalProgramSyntax
+        first = [GrblhalProgramSyntax()] if cls.expressions(setup) else []
+        return Pipeline(cls.NAME, [*first, GrblhalBlockSyntax(), CannedCycleResolveSyntax("rs274"),
+                                   GrblhalCycleRules(), ModalStateSyntax()])
+
+
+@hookimpl
+def postproc_register_dialects(register: Callable[[type], None]) -> None:
+    register(Grblhal)
+
+
+@hookimpl
+def postproc_register_xml(factory: XFactory) -> None:
+    factory.register_lazy("GrblhalBlockSyntax", f"{__name__}.block_syntax:GrblhalBlockSyntax")
+    factory.register_lazy("GrblhalCycleRules", f"{__name__}.cycles:GrblhalCycleRules")
+    factory.register_lazy("GrblhalProgramSyntax", f"{__name__}.program:GrblhalProgramSyntax")

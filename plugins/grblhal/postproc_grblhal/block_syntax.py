@@ -1,0 +1,49 @@
+"""GrblhalBlockSyntax: the grbl family's block rules (``postproc.grbl_family.block_syntax``) with grblHAL's code
+table, and what a build may lack checked against the set-up where the program is read: G43 H needs the tool
+table (``<Controller toolTable="true">``), G95 a spindle with an encoder (``spindleSync``) [V: grblHAL core
+``gcode.c``: G43 needs ``grbl.tool_table.n_tools``, feed per revolution ``spindle->hal->get_data``]."""
+
+from __future__ import annotations
+
+from typing import ClassVar, Mapping
+
+from postproc.context import Context
+from postproc.errors import ParseError
+from postproc.grbl_family.block_syntax import GrblFamilyBlockSyntax
+from postproc.ir import Block, FeedMode, ToolLengthOffset
+from postproc.rs274.block_syntax import col_of_word
+from postproc.rs274.codes import CodeTable
+
+from .codes import CODES, M_GROUPS, NO_M19
+
+NO_TABLE = ("this grblHAL build has no tool table (G43 H needs N_TOOLS above 0 or a tool table plugin): a set-up "
+            "with <Controller toolTable=\"true\"/> has one")
+NO_SYNC = ("this grblHAL build runs no feed per revolution (G95 needs a spindle with an encoder): a set-up with "
+           "<Controller spindleSync=\"true\"/> has one")
+
+
+class GrblhalBlockSyntax(GrblFamilyBlockSyntax):
+    """Lexed words -> neutral sections, for grblHAL."""
+
+    XNAME = "GrblhalBlockSyntax"
+    __slots__ = ()
+    DIALECT: ClassVar[str] = "grblhal"
+    CONTROL: ClassVar[str] = "grblHAL"
+    CODES: ClassVar[CodeTable] = CODES
+    DATA_TABLES: ClassVar[Mapping[int, tuple[str, int, int]]] = {2: ("work_offset", 0, 9)}
+    """G10 L2 P0-P9 sets a work system's offset (P0 the active one); other G10 forms are kept verbatim."""
+    DATA_INCREMENTAL: ClassVar[bool] = False
+    DATA_P0_ACTIVE: ClassVar[bool] = True
+    M_GROUPS = M_GROUPS
+    NO_M19 = NO_M19
+
+    def build(self, block: Block, ctx: Context) -> None:
+        super().build(block, ctx)
+        sections = block.sections
+        offset = sections.get("ToolLengthOffset")
+        if isinstance(offset, ToolLengthOffset) and offset.mode == "positive" \
+                and not ctx.setup.controller.tool_table:
+            raise ParseError(NO_TABLE, ctx.at(block, col_of_word(block, "G", "43")))
+        mode = sections.get("FeedMode")
+        if isinstance(mode, FeedMode) and mode.mode == "per_rev" and not ctx.setup.controller.spindle_sync:
+            raise ParseError(NO_SYNC, ctx.at(block, col_of_word(block, "G", "95")))

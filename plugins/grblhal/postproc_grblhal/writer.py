@@ -1,0 +1,161 @@
+"""grblHAL writer: the grbl family's writer (``postproc.grbl_family.writer``: ``%`` and O-numbers as comments,
+M19 per the set-up, a pause that stops the spindle, G43 H from the tool table where the build has one) with
+grblHAL's table.
+
+* A native G81/G82 arrives only where it moves as its source's cycle (``cycles``): it is written with the
+  words grblHAL needs. A block that programs the cycle code gets R, Z and (G82) P from the resolved cycle
+  when its source carried them over: grblHAL carries nothing over from another cycle [V: ``gcode.c``,
+  ``canned_cycle_change`` needs R, the drilling axis word, and P for G82]. Another dialect's words are
+  written by their roles (a Fanuc dwell in milliseconds as seconds, its K as L).
+* G80 is a motion code (grblHAL's ``MotionMode_None``): ``G80 G0`` is refused, and after it axis words need
+  a motion code, even those of ``G43.1 Z`` [V: ``gcode.c``, "[G80 Errors]"; ``G28 Z`` is exempt, a non-modal
+  axis command]. So a cancel is written only where a native cycle is in force, as the group-01 code the
+  source returns to after it (``G0`` alone: grblHAL ends the cycle and moves nothing [V: ``gcode.c``, G0
+  without axis words]; a cancel beside an axis command of its own stands alone before it, ``cancels``); a
+  cancel with no native cycle in force writes nothing (the cycles before it arrived expanded).
+* G64 writes nothing (path blending is off in every build: grblHAL always blends by junction deviation),
+  with the tolerance it drops noted; G95 only for a spindle with an encoder (``<Controller spindleSync>``).
+* ``/`` block delete is written: grblHAL skips the block when its switch is on.
+* Parameters, expressions and o-word flow control, for a build with them (``<Controller expressions="true">``,
+  ``program``): a computed word in LinuxCNC's spelling (``X[#1*2.]``), an assignment as ``#1=5.``, a condition
+  or loop as its o-word line, from a grblHAL or LinuxCNC program (the same o-words: their labels are kept).
+  Everything else that computes is an ``UnsupportedError`` (so the program reaches grblHAL flattened): any
+  statement on a build without expressions, a subroutine definition, call or return (not modelled), and
+  another family's control flow (Fanuc's ``WHILE .. DO1`` reuses its labels, ISG's ``$FOR``...).
+"""
+
+from __future__ import annotations
+
+from typing import Any, ClassVar
+
+from postproc.context import Context
+from postproc.control import Assign, Break, Continue, Do, DoWhile, Else, ElseIf, EndIf, EndRepeat, EndWhile, If, \
+    Repeat, While
+from postproc.cycles.section import WORD_ORDER
+from postproc.dialect import Dialect
+from postproc.expr import Expr
+from postproc.grbl_family.writer import GrblFamilyWriter
+from postproc.ir import Block, Motion
+from postproc.rs274.codes import CodeTable
+from postproc.rs274.expressions import ExprSpelling
+from postproc.rs274.oword import spell_assignments, spell_oword
+
+from .cancels import GROUP_01
+from .codes import CODES
+from .program import GRBLHAL_SPELLING
+
+_FLOW = (If, ElseIf, Else, EndIf, While, EndWhile, Do, DoWhile, Repeat, EndRepeat, Break, Continue)
+"""The o-word statements written (a subroutine's are not modelled)."""
+_SAME_OWORDS = frozenset(("grblhal", "linuxcnc"))
+"""Sources whose o-word labels and meanings are grblHAL's (ngc_flowctrl.c is rs274's)."""
+
+GRBLHAL_AXES = frozenset("XYZABC")
+"""Axes a grblHAL build may drive (``N_AXIS`` up to 6 with A, B, C; a set-up may say fewer)."""
+
+
+class GrblhalWriter(GrblFamilyWriter):
+    DIALECT: ClassVar[str] = "grblhal"
+    CODES: ClassVar[CodeTable] = CODES
+    WORK_OFFSET_SETTING: ClassVar[str] = "G10 L2"
+    """G10 L2 P1-P9 sets work system P's offset, absolutely (G91 does not change it)."""
+    WORK_OFFSET_COUNT: ClassVar[int] = 9
+    SETTING_AXES: ClassVar[frozenset[str]] = GRBLHAL_AXES
+    DWELL_WORD: ClassVar[str] = "P"
+    CYCLE_CANCEL_IS_MOTION: ClassVar[bool] = True
+    """G80 is a motion code here: ``G80 G0`` is refused, a block's G0-G3 ends the cycle by itself."""
+    BARE_FEED_MOTION_NEEDS_FEED: ClassVar[bool] = True
+    DRIVEN_AXES: ClassVar[frozenset[str]] = GRBLHAL_AXES
+    FULL_CIRCLE_HELIX: ClassVar[bool] = False
+    """grblHAL's arcs need an end point in the plane, as grbl's (its ``gcode.c`` is grbl's)."""
+    STRUCTURE: ClassVar[frozenset[str]] = frozenset(("TapeMark",))
+    BLANK_AS_TRACE: ClassVar[bool] = True
+    """G64 and the like are not grblHAL's: a block of nothing else is a trace of its source."""
+    SPELLING: ClassVar[ExprSpelling | None] = GRBLHAL_SPELLING
+
+    def __init__(self, ctx: Context, source_dialect: str, target: type[Dialect] | None = None) -> None:
+        super().__init__(ctx, source_dialect, target)
+        self.cycle_motion: str | None = None
+        """The group-01 mode around the native cycle in force on the controller; None: none in force."""
+
+    def write_block(self, block: Block) -> str | None:
+        motion = block.sections.get("Motion")
+        if isinstance(motion, Motion) and motion.mode in GROUP_01:
+            self.cycle_motion = None  # the motion code ends the cycle on grblHAL
+        return super().write_block(block)
+
+    def cycle_cancel_words(self, s: Any, block: Block) -> list[str]:
+        """Nothing where no native cycle is in force; else the motion code the source returns to (module
+        docstring), or nothing where the block's own motion code ends the cycle."""
+        mode, self.cycle_motion = self.cycle_motion, None
+        motion = block.sections.get("Motion")
+        if mode is None or (isinstance(motion, Motion) and motion.mode in GROUP_01):
+            return []
+        return [self.code("motion", mode if mode in GROUP_01 else "rapid", "the motion mode after a cycle", block)]
+
+    def expressions(self) -> bool:
+        """The build runs parameters, expressions and o-words (``<Controller expressions="true">``)."""
+        return bool(self.ctx.setup.controller.expressions)
+
+    def expression(self, expr: Expr, block: Block, what: str = "a computed word") -> str:
+        if not self.expressions():
+            self.unsupported(f"{what} on a grblHAL build without expressions (NGC_EXPRESSIONS_ENABLE): a set-up "
+                             "with <Controller expressions=\"true\"/> has them", block)
+        return super().expression(expr, block, what)
+
+    def statement_words(self, section: Any, block: Block) -> list[str]:
+        """An assignment or an o-word line (module docstring); anything else is refused."""
+        if not self.expressions():
+            self.unsupported("parameters and o-word flow control on a grblHAL build without expressions "
+                             "(NGC_EXPRESSIONS_ENABLE): a set-up with <Controller expressions=\"true\"/> has them",
+                             block)
+        if isinstance(section, Assign):
+            return [spell_assignments(section)]
+        if isinstance(section, _FLOW) and self.source_dialect in _SAME_OWORDS:
+            return [spell_oword(section)]
+        return super().statement_words(section, block)
+
+    def table_refusal(self, register: int | None) -> str:
+        number = "" if register is None else f" H{register}"
+        return (f"a tool length offset from a table (G43{number}) on a grblHAL build without a tool table: a set-up "
+                "with <Controller toolTable=\"true\"/> has one")
+
+    def path_control_words(self, s: Any, block: Block) -> list[str]:
+        if not s.one_shot and s.mode == "cutting":
+            self.note_unwritten_tolerance(s, block)  # grblHAL always blends, by its junction deviation setting
+            return []
+        return super().path_control_words(s, block)
+
+    def feed_mode_words(self, s: Any, block: Block) -> list[str]:
+        if s.mode == "per_rev" and not self.ctx.setup.controller.spindle_sync:
+            self.unsupported("feed per revolution (G95) on a grblHAL spindle without an encoder: a set-up with "
+                             "<Controller spindleSync=\"true\"/> has one", block)
+        return super().feed_mode_words(s, block)
+
+    def canned_cycle_words(self, s: Any, block: Block) -> list[str]:
+        """The cycle as programmed (from grblHAL itself), or by its words' roles with what grblHAL needs
+        added (module docstring)."""
+        self.cycle_motion = s.motion or "rapid"
+        if self.source_dialect == self.DIALECT:
+            return super().canned_cycle_words(s, block)
+        words: list[str] = []
+        kind = "drill" if s.kind == "drill_dwell" and not s.dwell else s.kind  # a dwell of 0: G82 P0 would dwell
+        if s.call:
+            words.append(self.code("cycle", kind, f"the {kind.replace('_', ' ')} cycle", block))
+        source, target = self.ctx.cycle_words, self.target_cycle_words()
+        if source is not None and target is not None:
+            words.extend(self.cycle_role_words(s, block, source, target, dwell=kind == "drill_dwell"))
+        if s.call:
+            have = {word[0] for word in words[1:]}
+            extra = [("Z", s.bottom), ("R", s.r)]
+            if kind == "drill_dwell":
+                extra.append(("P", None))
+            for letter, value in extra:
+                if letter in have:
+                    continue
+                if letter == "P":
+                    words.append("P" + self.number(round(s.dwell or 0.0, 9)))
+                else:
+                    words.append(letter + self.length(value, block, letter))
+        order = {letter: at for at, letter in enumerate(WORD_ORDER)}
+        head = words[:1] if s.call else []
+        return head + sorted(words[len(head):], key=lambda word: order.get(word[0], len(order)))

@@ -1,0 +1,27 @@
+(grblHAL: two rows of holes and counterbores, written as grblHAL runs them)
+G21 G17 G90 G94
+G54
+T1 M6
+G43.1 Z10
+S1500 M3
+M8
+G0 X0 Y0 Z50
+G99 G81 X20 Y20 Z-15 R2 F180
+X40
+X60
+X80
+G80
+G0 Z50
+T2 M6
+G43.1 Z20
+S900 M3
+G0 X20 Y50 Z30
+G98 G82 X20 Y50 Z-4 R2 P0.5 F120
+X40
+X60 L2
+G80
+G0 Z50
+M9
+M5
+G49
+M30
