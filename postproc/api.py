@@ -10,6 +10,7 @@ from typing import Callable, Iterable, Iterator, TextIO
 from . import native
 native.install()  # the compiled hot path, before any of its modules is imported
 
+from .block_rules import check_blocks
 from .dialect import Dialect
 from .errors import Diagnostics, ErrorLevel, PostprocError, UsageError
 from .ir import Block
@@ -119,7 +120,8 @@ def _run_check(src: type[Dialect], ctx: Context) -> Callable[[Iterable[Block]], 
     """The reading steps after the interpreter step over a program's run before it is kept symbolically
     (``ProgramSyntax.RUN_BEFORE_KEEP``), from a copy of the modal state where the program stands: each
     error they find in the run (an arc whose computed end is off its circle, which the symbolic text
-    hides from them) is reported at its line, as when the program is flattened."""
+    hides from them; a feed move before any feed rate, ``check_blocks``) is reported at its line, as when
+    the program is flattened."""
 
     def later_steps(run: Iterable[Block]) -> Iterator[Block]:
         found = Diagnostics(ErrorLevel.RAISE, max_errors=1_000_000, warn_stream=io.StringIO())
@@ -133,7 +135,10 @@ def _run_check(src: type[Dialect], ctx: Context) -> Callable[[Iterable[Block]], 
                 ctx.diagnostics.error(err)
             found.errors.clear()
 
-        for block in Pipeline(src.NAME, steps).run(run, trial):
+        blocks = Pipeline(src.NAME, steps).run(run, trial)
+        if trial.state.feed is None:  # no feed rate in force where the program stands: as when flattened,
+            blocks = check_blocks(blocks, trial, src)  # a feed move before the run's first F is refused
+        for block in blocks:
             forward()
             yield block
         forward()

@@ -354,6 +354,19 @@ def test_an_arc_with_a_computed_end_on_its_circle_is_still_kept_symbolically() -
     assert "#501" in out and not warnings
 
 
+def test_a_feed_move_before_any_feed_rate_in_a_program_kept_symbolically_is_a_located_error() -> None:
+    # LinuxCNC refuses 'G1 X#501' with no F in force when it runs it; flattened for grbl, the same error
+    text = "G71 G90 G00 X0 Y0 Z10\nP1=1\nG01 X[P1]\nM30\n"
+    expected = ["in.nc:3:1: error: a feed move with no feed rate (program F first)"]
+    assert _errors(text, "isg", "linuxcnc") == expected
+    assert _errors(text, "isg", "grbl") == expected
+
+
+def test_a_feed_rate_before_the_first_construct_is_in_force_for_the_run() -> None:
+    out, _ = _translate("G71 G90 G00 X0 Y0 Z10\nG01 X1 F50\nP1=1\nG01 X[P1]\nM30\n", "isg", "linuxcnc")
+    assert "G1 X#501\n" in out
+
+
 def test_a_return_in_the_main_program_is_refused_not_a_restart() -> None:
     # Fanuc's M99 in a main program starts it again: ISG's M17 there must not become one
     assert _errors("G71 G90 G00 X0 Y0 Z10\nP1=1\nM17\n", "isg", "fanuc") == [

@@ -35,8 +35,8 @@ LINES = [
 def programs() -> st.SearchStrategy[str]:
     return st.lists(st.sampled_from(LINES), min_size=1, max_size=12).map(
         lambda lines: "G71 G90 G00 X0 Y0 Z10 F100\nP1=1\n" + "\n".join(lines) + "\n")
-# F in the first line: a feed move before any feed rate in a program kept symbolically reaches LinuxCNC,
-# which refuses it at run time (a known gap: translate checks it only up to the first construct)
+# F in the first line: without it most programs would be refused for a feed move before any feed rate
+# (translate finds it in a program kept symbolically too: the run before keeping passes check_blocks)
 
 
 SETUP = MachineSetup(limits=Limits(loop_iterations=2000, call_depth=8))
