@@ -5,11 +5,12 @@ from __future__ import annotations
 
 import copy
 import io
-from typing import Callable, Iterable, TextIO
+from typing import Callable, Iterable, Iterator, TextIO
 
 from . import native
 native.install()  # the compiled hot path, before any of its modules is imported
 
+from .block_rules import check_blocks
 from .dialect import Dialect
 from .errors import Diagnostics, ErrorLevel, PostprocError, UsageError
 from .ir import Block
@@ -17,7 +18,7 @@ from .lowering.arcs import ArcOption, rewrite_arcs
 from .lowering.lower import lower_for
 from .plugins import Registry, default_registry
 from .reading import gc_paused as gc_paused, read_blocks as read_blocks  # public API names
-from .syntaxes.program import TARGET_OMITS_VACANT, ProgramSyntax
+from .syntaxes.program import RUN_CHECK, TARGET_OMITS_VACANT, ProgramSyntax
 from .lowering.sequences import Sequences
 from .setup.machine_setup import MachineSetup
 from .source_map import OutputMap
@@ -58,6 +59,7 @@ def translate(lines: Iterable[str], out: TextIO, *, file: str, source: str, targ
         def prepare(ctx: Context) -> None:
             ctx.on_unsupported = on_unsupported
             ctx.keep_check = _keep_check(src, dst, ctx, registry, options)
+            ctx.run_data[RUN_CHECK] = _run_check(src, ctx)
             ctx.run_data[TARGET_OMITS_VACANT] = _omits_vacant_words(dst, setup)
             ctx.run_data[EVALUATE_KEY] = options.transform is not None
 
@@ -138,6 +140,36 @@ def _keep_check(src: type[Dialect], dst: type[Dialect], ctx: Context, registry: 
         return None
 
     return reason
+
+
+def _run_check(src: type[Dialect], ctx: Context) -> Callable[[Iterable[Block]], Iterator[Block]]:
+    """The reading steps after the interpreter step over a program's run before it is kept symbolically
+    (``ProgramSyntax.RUN_BEFORE_KEEP``), from a copy of the modal state where the program stands: each
+    error they find in the run (an arc whose computed end is off its circle, which the symbolic text
+    hides from them; a feed move before any feed rate, ``check_blocks``) is reported at its line, as when
+    the program is flattened."""
+
+    def later_steps(run: Iterable[Block]) -> Iterator[Block]:
+        found = Diagnostics(ErrorLevel.RAISE, max_errors=1_000_000, warn_stream=io.StringIO())
+        trial = src.context(ctx.file, ctx.setup, found)
+        trial.state = copy.deepcopy(ctx.state)
+        trial.on_unsupported = ctx.on_unsupported
+        steps = [step for step in src.pipeline(ctx.setup).steps if not isinstance(step, ProgramSyntax)]
+
+        def forward() -> None:  # errors in the run's order; no warnings (the program's own pass gives those)
+            for err in found.errors:
+                ctx.diagnostics.error(err)
+            found.errors.clear()
+
+        blocks = Pipeline(src.NAME, steps).run(run, trial)
+        if trial.state.feed is None:  # no feed rate in force where the program stands: as when flattened,
+            blocks = check_blocks(blocks, trial, src)  # a feed move before the run's first F is refused
+        for block in blocks:
+            forward()
+            yield block
+        forward()
+
+    return later_steps
 
 
 def _omits_vacant_words(dialect: type[Dialect], setup: MachineSetup) -> bool:

@@ -83,3 +83,6 @@ def pytest_testnodedown(node: object, error: object) -> None:
 def pytest_terminal_summary(terminalreporter: pytest.TerminalReporter) -> None:
     counts = ", ".join(f"{n} {target}" for target, n in output_rules.checked.items())
     terminalreporter.write_line(f"outputs checked against their controller's rules: {counts}")
+    # a failure log then says whether its examples can be drawn again (CI) or were new ones
+    examples = "derandomized (CI is set)" if settings.default.derandomize else "random (CI is not set)"
+    terminalreporter.write_line(f"hypothesis examples: {examples}")

@@ -251,3 +251,23 @@ def test_a_tool_change_that_turns_compensation_on_is_written() -> None:
     out = io.StringIO()
     translate(io.StringIO(HEAD + "T1 G41 D01 M06\nG40\nM30\n"), out, file="t.nc", source="fanuc", target="linuxcnc")
     assert "G41 D01 T1 M6" in out.getvalue().splitlines()
+
+
+PAST_END = [
+    # make fuzz (isg fragments): the Fanuc output jumped to a block it had commented out after M30
+    ("isg", "fanuc", "G71 G90 G00 X0 Y0 Z10 F100\nP1=1\n$GOTO N20\nG70\nM30\nN20: G00 Z5\n",
+     "t.nc:3:1: error: '$GOTO N20' jumps to line 6, past the end of the program at line 5: where a controller "
+     "runs from there is not modelled"),
+    # flattened for LinuxCNC, the run ended at the jump: Fanuc's move to Z5 after M30 went missing
+    ("fanuc", "linuxcnc", "G21 G90 G00 X0 Y0 Z10\n#1=1\nGOTO 20\nM30\nN20 G00 Z5\nM30\n",
+     "t.nc:3:1: error: 'GOTO 20' jumps to line 5, past the end of the program at line 4: where a controller "
+     "runs from there is not modelled"),
+]
+
+
+@pytest.mark.parametrize("source, target, program, message", PAST_END)
+def test_a_jump_past_the_program_end_is_a_located_error(source: str, target: str, program: str,
+                                                          message: str) -> None:
+    with pytest.raises(ErrorList) as exc:
+        translate(io.StringIO(program), io.StringIO(), file="t.nc", source=source, target=target)
+    assert [str(e) for e in exc.value.errors] == [message]

@@ -318,6 +318,55 @@ def test_an_unset_p_parameter_fails_translation_where_fanuc_would_read_it_vacant
         "in.nc:3:5: error: P2 is read before it is set"]
 
 
+# An arc whose end is computed: from X1 Y0 with its centre 5 mm along +X (6, 0), the end X20 Y0 lies
+# 14 mm from the centre, not 5 (by hand). The symbolic text hides that from the reading steps; the
+# run before keeping finds it (LinuxCNC would refuse the kept program only when it runs).
+COMPUTED_BAD_ARC = "G71 G90 G00 X0 Y0 Z10 F100\nP1=1\nG01 X[P1] Y0\nG02 X20 Y0 I5 J0\nM30\n"
+BAD_ARC_ERROR = ("in.nc:4:12: error: arc end point is not on the circle: radius 5.0000 mm at the start, "
+                 "14.0000 mm at the end")
+
+
+@pytest.mark.parametrize("target", ["linuxcnc", "fanuc", "fagor"])
+def test_an_arc_off_its_circle_in_a_program_kept_symbolically_is_a_located_error(target: str) -> None:
+    assert _errors(COMPUTED_BAD_ARC, "isg", target) == [BAD_ARC_ERROR]
+
+
+def test_an_arc_off_its_circle_is_the_same_error_kept_symbolically_and_flattened() -> None:
+    # grbl has no variables: the program is flattened, and the reading steps see the evaluated arc
+    assert _errors(COMPUTED_BAD_ARC, "isg", "grbl") == [BAD_ARC_ERROR]
+
+
+def test_an_arc_off_its_circle_in_a_loop_is_refused_at_each_pass_as_flattened() -> None:
+    # passes P1 = 0, 1, 2: the arc starts at X0, X1, X2 with its centre 5 mm further along X; its end
+    # X20 lies 15, 14, 13 mm from that centre
+    text = ("G71 G90 G00 X0 Y0 Z10 F100\nP1=0\n$WHILE P1 < 3\nG01 X[P1] Y0\nG02 X20 Y0 I5 J0\nP1=P1+1\n"
+            "$ENDWHILE\nM30\n")
+    expected = [f"in.nc:5:12: error: arc end point is not on the circle: radius 5.0000 mm at the start, "
+                f"{r}.0000 mm at the end" for r in (15, 14, 13)]
+    assert _errors(text, "isg", "linuxcnc") == expected
+    assert _errors(text, "isg", "grbl") == expected
+
+
+def test_an_arc_with_a_computed_end_on_its_circle_is_still_kept_symbolically() -> None:
+    # from X1 Y0 around (6, 0): X11 Y0 is 5 mm from the centre, a half circle
+    out, warnings = _translate("G71 G90 G00 X0 Y0 Z10 F100\nP1=1\nG01 X[P1] Y0\nG02 X[P1+10] Y0 I5 J0\nM30\n",
+                               "isg", "linuxcnc")
+    assert "#501" in out and not warnings
+
+
+def test_a_feed_move_before_any_feed_rate_in_a_program_kept_symbolically_is_a_located_error() -> None:
+    # LinuxCNC refuses 'G1 X#501' with no F in force when it runs it; flattened for grbl, the same error
+    text = "G71 G90 G00 X0 Y0 Z10\nP1=1\nG01 X[P1]\nM30\n"
+    expected = ["in.nc:3:1: error: a feed move with no feed rate (program F first)"]
+    assert _errors(text, "isg", "linuxcnc") == expected
+    assert _errors(text, "isg", "grbl") == expected
+
+
+def test_a_feed_rate_before_the_first_construct_is_in_force_for_the_run() -> None:
+    out, _ = _translate("G71 G90 G00 X0 Y0 Z10\nG01 X1 F50\nP1=1\nG01 X[P1]\nM30\n", "isg", "linuxcnc")
+    assert "G1 X#501\n" in out
+
+
 def test_a_return_in_the_main_program_is_refused_not_a_restart() -> None:
     # Fanuc's M99 in a main program starts it again: ISG's M17 there must not become one
     assert _errors("G71 G90 G00 X0 Y0 Z10\nP1=1\nM17\n", "isg", "fanuc") == [

@@ -290,6 +290,7 @@ class Interpreter:
             target = program.find_sequence(number, pos)
             if target is None:
                 raise ProgramError(self._missing_sequence(program, number, source_text(block)))
+            self._within(frame, target, block)
             self._spend(block, "jump", back=target <= pos)
             yield from self._note(frame, block, "jump")
             frame.pc = target
@@ -300,6 +301,7 @@ class Interpreter:
             found = program.find_label(control.label, pos)
             if found is None:
                 raise ProgramError(f"'{source_text(block)}': no block labelled {control.label} in {program.file}")
+            self._within(frame, found, block)
             self._spend(block, "jump", back=found <= pos)
             yield from self._note(frame, block, "jump")
             frame.pc = found
@@ -626,6 +628,18 @@ class Interpreter:
             n = self.limits.loop_iterations
             raise ProgramError(f"{what} '{source_text(block)}' exceeds the set-up's bound of {n} loop iterations, "
                                f"jumps and calls in total (<Limits loopIterations=\"{n}\"/>)")
+
+    @staticmethod
+    def _within(frame: _Frame, target: int, block: Block) -> None:
+        """Refuse a jump past the end of the running program (the main program's M30, a subprogram's
+        last block): the run here would end there silently, but a controller that keeps the blocks after
+        the end (Fanuc searches its whole program for the number) runs on from the target, and a
+        translation that comments them out (``postproc.lowering.program_end``) jumps nowhere."""
+        if target >= frame.end:
+            blocks = frame.program.blocks
+            raise ProgramError(f"'{source_text(block)}' jumps to line {blocks[target].line}, past the end of the "
+                               f"program at line {blocks[frame.end - 1].line}: where a controller runs from "
+                               "there is not modelled")
 
     def _missing_sequence(self, program: Program, number: int, text: str) -> str:
         message = f"'{text}': no block numbered {number} in {program.file}"

@@ -40,6 +40,10 @@ ENCODING = {"encoding": "utf-8", "errors": "surrogateescape", "newline": ""}
 TARGET_OMITS_VACANT = "target_omits_vacant"
 """``ctx.run_data`` key: whether the translation's target omits a word whose value is vacant
 (``ProgramSyntax.OMITS_VACANT_WORDS`` of its step; absent: it does, nothing is checked)."""
+RUN_CHECK = "run_check"
+"""``ctx.run_data`` key: the reading steps after this one, as a function of the blocks a run yields
+(``RUN_BEFORE_KEEP``): what they refuse in the run (an arc whose computed end is not on its circle) is
+reported at its line, as the flattened program's would be (absent: the run alone is checked)."""
 ARGUMENTS_KEY = "macro_arguments"
 """``ctx.run_data`` key of the locals a program run on its own starts with (``--arg A=30``: {1: 30.0})."""
 Kept = str | tuple[str, str] | None
@@ -217,11 +221,16 @@ class ProgramSyntax(Syntax):
 
     def _check_runs(self, body: list[Block], ctx: Context, kept: deque[Kept], seen: int) -> None:
         """Run fresh copies of the program to its end, reporting the interpreter's first error (located in
-        the program): a program kept symbolically then fails to translate where it fails to run."""
+        the program) and what the later reading steps refuse in the run (``RUN_CHECK``: an arc whose
+        computed end is off its circle): a program kept symbolically then fails to translate where it
+        fails to run."""
         copies = self._copies(body, ctx, kept)
-        if copies:
-            for _ in self._run(copies[0], iter(copies[1:]), ctx, kept, seen):
-                pass
+        if not copies:
+            return
+        run = self._run(copies[0], iter(copies[1:]), ctx, kept, seen)
+        later: Callable[[Iterable[Block]], Iterator[Block]] | None = ctx.run_data.get(RUN_CHECK)
+        for _ in run if later is None else later(run):
+            pass
 
     def _copies(self, body: list[Block], ctx: Context, kept: deque[Kept]) -> list[Block]:
         """Fresh blocks of ``body``, read as the program reads them: after the lines of the streamed

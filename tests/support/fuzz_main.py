@@ -1,14 +1,17 @@
 """The long-running fuzz target (``make fuzz``; not in CI): the suite's checks on random cases until a
 time budget runs out, every case under a time limit. Prints the case count and each outcome; saves
 every new failure (reduced to a small program) and one example of each known defect to a folder.
+A round gives every pair and generator ``--per-round`` cases; the budget is checked before each case, so
+a run ends on time (its last round then covers only the pairs it reached: the counts per pair say which).
 
-    python -m tests.support.fuzz_main [--minutes 10] [--out fuzz-failures] [--case-seconds 5]
+    python -m tests.support.fuzz_main [--minutes 10] [--per-round 50] [--out fuzz-failures] [--case-seconds 5]
 """
 
 from __future__ import annotations
 
 import argparse
 import contextlib
+import math
 import re
 import signal
 import sys
@@ -24,8 +27,8 @@ from postproc.setup.machine_setup import MachineSetup
 from tests.support.fuzzing import PAIRS, READERS, check_toolpath, check_translation, known_defect, programs, setups
 from tests.support.generators import Case, strategies
 
-ROUND = 200
-"""Cases per pair and round (a hypothesis run without shrinking; we reduce failures ourselves)."""
+ROUND = 50
+"""Cases per pair and round by default (a hypothesis run without shrinking; we reduce failures ourselves)."""
 
 
 class CaseTimeout(Exception):
@@ -47,12 +50,20 @@ def time_limit(seconds: float) -> Iterator[None]:
 
 
 class Fuzzer:
-    def __init__(self, out: Path, case_seconds: float) -> None:
+    def __init__(self, out: Path, case_seconds: float, end: float = math.inf, per_round: int = ROUND) -> None:
         self.out = out
         self.case_seconds = case_seconds
+        self.end = end
+        """``time.monotonic()`` at which the budget runs out: later cases are not run."""
+        self.per_round = per_round
         self.cases = 0
         self.outcomes: Counter[str] = Counter()
+        self.per_name: Counter[str] = Counter()
+        """Cases run per pair or generator kind."""
         self.saved: set[str] = set()
+
+    def over(self) -> bool:
+        return time.monotonic() >= self.end
 
     def outcome(self, run: Callable[[str], object], program: str, target: str) -> tuple[str, str]:
         """(kind, message) of one case: 'ok', 'refused', 'known: ...' or 'NEW: ...'."""
@@ -71,7 +82,10 @@ class Fuzzer:
             return "NEW: internal error " + _signature(message), message
 
     def record(self, name: str, run: Callable[[str], object], program: str, target: str, setup: object) -> None:
+        if self.over():
+            return  # the budget ran out: the rest of the round's draws are not run
         self.cases += 1
+        self.per_name[name] += 1
         kind, message = self.outcome(run, program, target)
         self.outcomes[kind] += 1
         key = f"{name} {kind}"
@@ -89,7 +103,10 @@ class Fuzzer:
         for source, target in PAIRS:
             name = f"{source}-{target}"
 
-            @settings(max_examples=ROUND, deadline=None, database=None, phases=[Phase.generate],
+            if self.over():
+                return
+
+            @settings(max_examples=self.per_round, deadline=None, database=None, phases=[Phase.generate],
                       suppress_health_check=list(HealthCheck))
             @given(program=programs(), setup=setups(), warn=st.booleans())
             def case(program: str, setup: MachineSetup, warn: bool) -> None:
@@ -98,7 +115,10 @@ class Fuzzer:
 
             case()
         for dialect in READERS:
-            @settings(max_examples=ROUND // 4, deadline=None, database=None, phases=[Phase.generate],
+            if self.over():
+                return
+
+            @settings(max_examples=max(1, self.per_round // 4), deadline=None, database=None, phases=[Phase.generate],
                       suppress_health_check=list(HealthCheck))
             @given(program=programs(), setup=setups())
             def path_case(program: str, setup: MachineSetup) -> None:
@@ -107,7 +127,10 @@ class Fuzzer:
 
             path_case()
         for kind, strategy in strategies().items():
-            @settings(max_examples=ROUND, deadline=None, database=None, phases=[Phase.generate],
+            if self.over():
+                return
+
+            @settings(max_examples=self.per_round, deadline=None, database=None, phases=[Phase.generate],
                       suppress_health_check=list(HealthCheck))
             @given(case=strategy)
             def generated_case(case: Case) -> None:
@@ -156,15 +179,20 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--minutes", type=float, default=10.0)
     parser.add_argument("--out", type=Path, default=Path("fuzz-failures"))
     parser.add_argument("--case-seconds", type=float, default=5.0)
+    parser.add_argument("--per-round", type=int, default=ROUND, help="cases per pair (and generator) per round")
     args = parser.parse_args(argv)
-    fuzzer = Fuzzer(args.out, args.case_seconds)
-    end = time.monotonic() + args.minutes * 60
+    start = time.monotonic()
+    fuzzer = Fuzzer(args.out, args.case_seconds, start + args.minutes * 60, max(1, args.per_round))
     rounds = 0
-    while time.monotonic() < end:
+    while not fuzzer.over():
         fuzzer.round()
         rounds += 1
         print(f"round {rounds}: {fuzzer.cases} cases", flush=True)
-    print(f"\n{fuzzer.cases} cases in {rounds} rounds")
+    print(f"\n{fuzzer.cases} cases in {rounds} rounds, {(time.monotonic() - start) / 60:.1f} minutes")
+    print("cases per pair or generator:")
+    for name, count in sorted(fuzzer.per_name.items()):
+        print(f"{count:8d}  {name}")
+    print("outcomes:")
     for kind, count in sorted(fuzzer.outcomes.items(), key=lambda kv: (-kv[1], kv[0])):
         print(f"{count:8d}  {kind}")
     new = sum(c for k, c in fuzzer.outcomes.items() if k.startswith("NEW"))
