@@ -315,7 +315,13 @@ class ProgramSyntax(Syntax):
                                   annotate=True, rules=self.SUBPROGRAM_RULES, counts=ctx)
         interpreter.called = arguments is not None
         interpreter.vacant_word = vacant_word
-        yield from interpreter.run(start=len(prefix))
+        closing = _closing_mark(body)
+        last_was_mark = False
+        for block in interpreter.run(start=len(prefix)):
+            last_was_mark = "TapeMark" in block.sections
+            yield block
+        if closing is not None and not last_was_mark:
+            yield closing  # the run ended at M30/M2: the tape closes as the source's did
 
     def _reread(self, kept: deque[Kept], ctx: Context, first_line: int) -> list[Block]:
         """The kept prefix as fresh blocks (the streamed ones were changed by the later steps). Its
@@ -328,6 +334,17 @@ class ProgramSyntax(Syntax):
         for block in blocks:
             block.line += offset
         return blocks
+
+
+def _closing_mark(body: list[Block]) -> Block | None:
+    """The source's closing tape mark (a '%' line after the program, when one opened it too), which a run
+    that ends at the program's end never reaches: a tape reader or rs274 ("percent sign missing from end
+    of file") wants the written program closed as it was opened."""
+    marks = [block for block in body if "TapeMark" in block.sections]
+    last = next((block for block in reversed(body) if block.sections), None)
+    if len(marks) < 2 or last is not marks[-1]:
+        return None
+    return last
 
 
 def _physical(texts: list[str]) -> list[str]:
