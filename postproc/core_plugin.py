@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from typing import Callable
+from typing import TYPE_CHECKING, Callable, Iterator
 
 from . import cycles, patterns
 from .block_rules import check_blocks
@@ -27,6 +27,11 @@ from .cycles.rigid_tap_lowering import resolve_rigid_taps
 from .synchronised_tap import RigidTap
 from .xmlio import XFactory
 
+if TYPE_CHECKING:
+    from .context import Context
+    from .dialect import Dialect
+    from .ir import Block
+
 
 @hookimpl
 def postproc_register_xml(factory: XFactory) -> None:
@@ -44,6 +49,13 @@ def postproc_register_xml(factory: XFactory) -> None:
 
 
 
+def resolve_dynamic_cutter_compensation(blocks: Iterator[Block], ctx: Context,
+                                        target: type[Dialect]) -> Iterator[Block]:
+    """``lowering.cutter_compensation.resolve_dynamic_cutter_compensation``, imported when first used."""
+    from .lowering.cutter_compensation import resolve_dynamic_cutter_compensation as step
+    return step(blocks, ctx, target)
+
+
 @hookimpl
 def postproc_register_lowerings(register: Callable[[Lowering], None]) -> None:
     register(check_blocks)  # first: it sees every expansion before a native target's are dropped
@@ -51,6 +63,7 @@ def postproc_register_lowerings(register: Callable[[Lowering], None]) -> None:
     register(evaluate_frames)  # before the cycles: a cycle under a frame is expanded at carried points
     register(expand_canned_cycles)
     register(expand_lathe_cycles)
+    register(resolve_dynamic_cutter_compensation)  # before inverse time: its feeds follow the resolved moves
     register(convert_inverse_time)  # after the expansions: it follows the moves they leave
     register(comment_after_end)
     register(resolve_rigid_taps)  # after the cycles: an expanded rigid tap cycle shows its taps

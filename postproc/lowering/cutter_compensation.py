@@ -12,6 +12,13 @@ which refuses them.
 
 What the simulation refuses under compensation (a canned cycle, a move in machine coordinates, a
 reference return, a plane other than XY, a start point not known) is a located error here too.
+
+Compensation by a diameter in the program (LinuxCNC's G41.1/G42.1, ``DynamicCutterCompensation``) is
+resolved the same way for every target but its source's own (``resolve_dynamic_cutter_compensation``):
+no other dialect spells it, and a target with G41/G42 would need a register holding that radius, which
+the set-up does not promise. The G41/G42 such a target writes itself pass untouched. A computed diameter
+(``G41.1 D#100`` in a subprogram) keeps its block verbatim, which the target refuses: the program is
+then flattened, each run's diameter a number.
 """
 
 from __future__ import annotations
@@ -27,6 +34,7 @@ from ..expr import Expr
 from ..ir import (Block, CutterCompensation, DataSetting, DistanceMode, Feed, Motion, Plane, ProgramControl,
                   Section, ToolChange, ToolSelect, Units, WorkOffset)
 from ..compensation.cutter_radius import CutterRadius, Item, Segment
+from ..compensation.dynamic import DynamicCutterCompensation
 from ..compensation.rules import CutterRules
 from ..compensation.tool_table import ToolTable
 
@@ -57,12 +65,25 @@ def resolve_cutter_compensation(blocks: Iterator[Block], ctx: Context, target: t
     return _Resolver(ctx, rules).run(blocks)
 
 
+def resolve_dynamic_cutter_compensation(blocks: Iterator[Block], ctx: Context,
+                                        target: type[Dialect]) -> Iterator[Block]:
+    """Lowering step: G41.1/G42.1 (compensation by a diameter) become the compensated path for every
+    target but the source's own dialect (see the module docstring); a G41/G42 by register is left to the
+    target where it has cutter compensation."""
+    rules: CutterRules | None = ctx.cutter_rules
+    if ctx.dialect == target.NAME or rules is None:
+        return blocks
+    return _Resolver(ctx, rules, dynamic_only=target.CUTTER_COMPENSATION).run(blocks)
+
+
 class _Resolver:
     """The compensation state of one translation, and the blocks it has released."""
 
-    def __init__(self, ctx: Context, rules: CutterRules) -> None:
+    def __init__(self, ctx: Context, rules: CutterRules, dynamic_only: bool = False) -> None:
         self.ctx = ctx
         self.rules = rules
+        self.dynamic_only = dynamic_only
+        """Resolve only compensation by a diameter; a G41/G42 by register stays for the target to write."""
         self.cutter = CutterRadius(rules, self._release)
         self.table = ToolTable(ctx.setup)
         self.scale = 1.0
@@ -85,7 +106,8 @@ class _Resolver:
         idle = True
         for block in blocks:
             sections = block.sections
-            if idle and "CutterCompensation" not in sections and _MODAL.isdisjoint(sections):
+            if idle and ("CutterCompensation" not in sections or self.dynamic_only) \
+                    and "DynamicCutterCompensation" not in sections and _MODAL.isdisjoint(sections):
                 motion = sections.get("Motion")  # the common block: a move, tracked for a later entry move
                 if isinstance(motion, Motion) and self.absolute and motion.mode in MOVES \
                         and "MachineCoordinates" not in sections:
@@ -122,7 +144,20 @@ class _Resolver:
         sections = block.sections
         self._modal(sections)
         cc = sections.get("CutterCompensation")
-        if isinstance(cc, CutterCompensation):
+        if self.dynamic_only and self._idle():
+            cc = None  # the target writes its own G41/G42/G40
+        dynamic = sections.get("DynamicCutterCompensation")
+        if isinstance(dynamic, DynamicCutterCompensation):
+            del sections["DynamicCutterCompensation"]
+            sections.pop("NativeCode", None)  # its G41.1/G42.1 D.., which the section says (inert)
+            block.changed()
+            if self.plane != "XY":
+                raise UnsupportedError(f"cutter compensation by a diameter in the {self.plane} plane cannot be "
+                                       "resolved")
+            if self._idle() and self.pos["X"] is not None and self.pos["Y"] is not None:
+                self.at = (self.pos["X"], self.pos["Y"])
+            self.cutter.start(dynamic.mode, dynamic.radius(self.scale))  # negative: the other side
+        elif isinstance(cc, CutterCompensation):
             del sections["CutterCompensation"]
             block.changed()
             if cc.mode == "off":
@@ -133,6 +168,8 @@ class _Resolver:
                 if self._idle() and self.pos["X"] is not None and self.pos["Y"] is not None:
                     self.at = (self.pos["X"], self.pos["Y"])  # where the entry move starts
                 self.cutter.start(cc.mode, self._radius(cc.register))
+        if (isinstance(dynamic, DynamicCutterCompensation) or isinstance(cc, CutterCompensation)) and not sections:
+            return  # the block only turned compensation on or off: nothing is left to write
         if self._idle():
             self._track(block)
             self.out.append(block)
