@@ -19,6 +19,7 @@ from postproc.setup.machine_setup import MachineSetup
 from postproc.setup.machine import AxisTravel, ToolData
 from postproc.simulate.toolpath import toolpath_events
 from postproc.simulate.verify import verify_lines
+from tests.support import rs274
 
 
 def _setup(home: float | None = 0.0) -> MachineSetup:
@@ -128,6 +129,41 @@ def test_isg_applies_a_new_length_only_at_an_absolute_z() -> None:
         "in.nc:2:5: error: the new tool length is applied only at a move of Z (ISG: programmed absolutely, "
         "P-CHAN-00100 by default; Fagor: when the axis moves): program the length offset beside a Z move"]
     assert "D01 G00 Z50." in _translate("G21 G90\nG43 H01 Z50.\nM30\n", "fanuc", "isg").splitlines()
+
+
+LINUXCNC_LENGTH_ALONE = "G21 G90 G0 X0 Y0 Z50\nT1 M6\nG43 H1\nG0 X10\nG0 Z5\nG49\nG0 X20\nG0 Z50\nM2\n"
+"""LinuxCNC changes the length in blocks without Z (as gmoccapy's and hk_ba20's programs in the corpus do)."""
+
+
+@pytest.mark.skipif(not rs274.available(), reason="the LinuxCNC interpreter rs274 is not installed")
+def test_linuxcnc_applies_a_length_change_only_at_the_next_z() -> None:
+    """The premise, from rs274: canonical points are program points (the length not added), so the X10
+    traverse at program Z 50 - 1 (inch table: length 1 inch = 25.4 mm) is the machine Z 50 unmoved; after
+    G49 the X20 traverse is at program Z 5 + 25.4, again the machine Z unmoved."""
+    calls = rs274.run_rs274(LINUXCNC_LENGTH_ALONE, tool_table="T1 P1 Z1.0 D0.1 ;\n")
+    moves = [m for m in rs274.canonical_moves(calls) if "move" in m]
+    assert [(m["x"], m["z"]) for m in moves] == [(0, 50), (10, 50 - 25.4), (10, 5), (20, 5 + 25.4), (20, 50)]
+
+
+@pytest.mark.parametrize("target, lines", [
+    ("isg", ["G71 G90 G00 X0. Y0. Z50.", "T1 M06", "D01", "G00 X10.", "G00 Z5.", "D0", "G00 X20.", "G00 Z50.", "M02"]),
+    ("fagor", ["G71 G90 G00 X0. Y0. Z50.", "T1 M06", "G43 D01", "G00 X10.", "G00 Z5.", "G44", "G00 X20.", "G00 Z50.",
+               "M02"])])
+def test_a_linuxcnc_length_change_without_z_keeps_its_place(target: str, lines: list[str]) -> None:
+    """LinuxCNC and ISG (P-CHAN-00100 = 0) both apply the new length at the next absolute Z, so the D
+    goes where the G43 was; Fagor applies it when Z moves, the next Z move being absolute here."""
+    out = _translate(LINUXCNC_LENGTH_ALONE, "linuxcnc", target)
+    assert out.splitlines() == lines
+    assert _verify(LINUXCNC_LENGTH_ALONE, out, "linuxcnc", target).ok
+
+
+def test_a_linuxcnc_length_change_then_an_incremental_z_is_refused_towards_fagor() -> None:
+    text = "G21 G90 G0 X0 Y0 Z50\nT1 M6\nG43 H1\nG0 X10\nG91 G0 Z-5\nG90 G0 Z50\nM2\n"
+    assert _errors(text, "linuxcnc", "fagor") == [
+        "in.nc:5:8: error: the tool length changed before is applied by this incremental Z move on the target "
+        "(when the axis moves [?]), on the source's controller only at the next absolute Z: program Z absolutely "
+        "here"]
+    assert "D01" in _translate(text, "linuxcnc", "isg").splitlines()  # ISG waits for an absolute Z too
 
 
 def test_a_missing_length_names_the_element_to_add() -> None:

@@ -52,6 +52,10 @@ class Isg(Dialect):
     Fanuc ``G43 H``/``G41 D`` is written as the D it needs; a negative offset (G44) is refused."""
     LENGTH_TOGGLES = False
     """No length on/off code: the selected D's length applies [V: TF5200 "Tool offset"]."""
+    LENGTH_AT_PROGRAMMED_AXIS = True
+    """A D's new length reaches an axis at its next absolute position only; ``D16`` then ``G91 G00 X0``
+    moves nothing [V: TF5200 "Tool geometry compensation" (tccncprogramming/15557086347) and
+    P-CHAN-00100 (tf5200_channel_parameter/149123467), default 0]."""
     COMMENTS = CommentSyntax(parens=True, nested=True, semicolon=True)
     """``( )`` comments nest, ``;`` runs to the end of the block [V: DIALECTS.md 1.3]; a value in a
     ``#COMMENT BEGIN`` ... ``#COMMENT END`` block is not recognised as commented (refused: the safe side)."""

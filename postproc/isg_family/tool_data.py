@@ -16,6 +16,13 @@ The facts:
   offset's radius. With no D selected the 8070 takes ``D1``. [?] The 8070 keeps its offsets per tool
   (T and D); here ``D<n>`` is the set-up's ``<Tool number="n">``, as on the 8055's offset table.
 
+When the new length applies: ISG takes it at the next absolute position of Z (P-CHAN-00100 = 0, its
+default; see ``Dialect.LENGTH_AT_PROGRAMMED_AXIS``), Fagor when the axis moves [?]. A source with the
+same rule (LinuxCNC: a change moves nothing, the next programmed Z applies it) may change the length in
+a block without Z: towards ISG as it is, towards Fagor while the next Z move is absolute (an incremental
+one, where the two may differ, is a located error). A source without that rule (Fanuc: by its parameters
+the axis may move at the change) must change the length beside an absolute Z move.
+
 Writing from separate registers: one D carries both values, so the D written is the radius register
 while radius compensation is on, else the length register (ISG: D0 without a length). Where that D would
 bring another length than the program's (``G43 H1`` then ``G41 D21`` with another length in register
@@ -36,7 +43,7 @@ from ..ir import Block, CutterCompensation, DataSetting, DistanceMode, Motion, T
 
 SELECTED_KEY = "isg_family.tool_data"
 """``ModalState.extra`` key of the D selected while reading (an int or an expression)."""
-_WATCHED = frozenset(("ToolLengthOffset", "CutterCompensation", "DataSetting", "Units"))
+_WATCHED = frozenset(("ToolLengthOffset", "CutterCompensation", "DataSetting", "Units", "DistanceMode"))
 MM_PER_INCH = 25.4
 SAME_MM = 1e-9
 
@@ -87,6 +94,8 @@ class _Selection:
     """The length (mm) the output applies."""
     absolute: bool = True
     """The distance mode in force (ISG applies a new length at an absolute Z only)."""
+    pending: bool = False
+    """A length changed without a Z move, waiting for the next Z move (which must be absolute: Fagor)."""
 
 
 def select_tool_data(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
@@ -95,15 +104,30 @@ def select_tool_data(blocks: Iterator[Block], ctx: Context, target: type[Dialect
     programs pass. ``target.LENGTH_TOGGLES``: the target turns the length on and off by code (Fagor)."""
     if ctx.dialect == target.NAME:
         return blocks
-    return _select(blocks, ctx, target.LENGTH_TOGGLES)
+    from ..plugins import default_registry
+    source = default_registry().dialects.get(ctx.dialect)
+    shifts = source is not None and source.LENGTH_AT_PROGRAMMED_AXIS
+    return _select(blocks, ctx, target.LENGTH_TOGGLES, shifts and not target.LENGTH_AT_PROGRAMMED_AXIS if shifts
+                   else None)
 
 
-def _select(blocks: Iterator[Block], ctx: Context, toggles: bool) -> Iterator[Block]:
+def _select(blocks: Iterator[Block], ctx: Context, toggles: bool, later_z: bool | None) -> Iterator[Block]:
+    """``later_z``: a length may change without a Z move (the source applies it at the next Z, as the
+    target does), True where that next Z move must then be absolute; None: it may not."""
     table = ToolTable(ctx.setup)
     state = _Selection()
     inch = False
     for block in blocks:
         sections = block.sections
+        if state.pending and _z_move(block):
+            state.pending = False
+            distance = sections.get("DistanceMode")
+            absolute = distance.mode == "absolute" if isinstance(distance, DistanceMode) else state.absolute
+            if later_z and not absolute:
+                ctx.diagnostics.error(UnsupportedError(
+                    "the tool length changed before is applied by this incremental Z move on the target (when "
+                    "the axis moves [?]), on the source's controller only at the next absolute Z: program Z "
+                    "absolutely here", ctx.at(block, ctx.column_of(block, "Z"))))
         if _WATCHED.isdisjoint(sections):
             yield block
             continue
@@ -119,7 +143,7 @@ def _select(blocks: Iterator[Block], ctx: Context, toggles: bool) -> Iterator[Bl
         if "ToolLengthOffset" in sections or "CutterCompensation" in sections:
             at = ctx.at(block, ctx.column_of(block, "H" if "ToolLengthOffset" in sections else "D"))
             try:
-                _rewrite(block, table, state, toggles)
+                _rewrite(block, table, state, toggles, later_z is not None)
             except PostprocError as err:
                 ctx.diagnostics.error(err.located(at))
                 continue
@@ -132,7 +156,7 @@ def _register(value: int | Expr | None, what: str) -> int | None:
     raise UnsupportedError(f"a {what} register that is computed (the D selecting it is chosen from its value)")
 
 
-def _rewrite(block: Block, table: ToolTable, state: _Selection, toggles: bool) -> None:
+def _rewrite(block: Block, table: ToolTable, state: _Selection, toggles: bool, later_z: bool) -> None:
     """The block's length and radius registers as the D (and, with ``toggles``, G43/G44) they need."""
     sections = block.sections
     offset = sections.get("ToolLengthOffset")
@@ -165,9 +189,12 @@ def _rewrite(block: Block, table: ToolTable, state: _Selection, toggles: bool) -
                    else "zero the program runs with (no length offset)")
                 + f": give register {want} that length in the set-up's <Tools>, or use one register for both")
     if abs(wanted_mm - state.applied) > SAME_MM and not _moves_z(block, state.absolute or toggles):
-        raise UnsupportedError("the new tool length is applied only at a move of Z (ISG: programmed absolutely, "
-                               "P-CHAN-00100 by default; Fagor: when the axis moves): program the length offset "
-                               "beside a Z move")
+        if later_z:
+            state.pending = True  # both apply it at the next (absolute) Z: checked there
+        else:
+            raise UnsupportedError("the new tool length is applied only at a move of Z (ISG: programmed absolutely, "
+                                   "P-CHAN-00100 by default; Fagor: when the axis moves): program the length offset "
+                                   "beside a Z move")
     state.applied = wanted_mm
     sections.pop("ToolLengthOffset", None)
     if toggles:  # Fagor: G43 D<n> / G44, and G41 D<r>
@@ -185,6 +212,11 @@ def _rewrite(block: Block, table: ToolTable, state: _Selection, toggles: bool) -
             sections["ToolLengthOffset"] = ToolLengthOffset("positive", want) if want else ToolLengthOffset("cancel")
             state.written = want
     block.changed()
+
+
+def _z_move(block: Block) -> bool:
+    motion = block.sections.get("Motion")
+    return isinstance(motion, Motion) and "Z" in motion.axes
 
 
 def _moves_z(block: Block, absolute: bool) -> bool:
