@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Callable, Iterator
+from typing import Callable
 
 from . import cycles, patterns
 from .block_rules import check_blocks
@@ -24,13 +24,9 @@ from .setup.machine_setup import MachineSetup
 from .syntax import Pipeline
 from .syntaxes.modal_state import ModalStateSyntax
 from .cycles.rigid_tap_lowering import resolve_rigid_taps
+from .compensation.dynamic import resolve_dynamic_cutter_compensation
 from .synchronised_tap import RigidTap
 from .xmlio import XFactory
-
-if TYPE_CHECKING:
-    from .context import Context
-    from .dialect import Dialect
-    from .ir import Block
 
 
 @hookimpl
@@ -47,13 +43,6 @@ def postproc_register_xml(factory: XFactory) -> None:
     cycles.register(factory)
     patterns.register(factory)
 
-
-
-def resolve_dynamic_cutter_compensation(blocks: Iterator[Block], ctx: Context,
-                                        target: type[Dialect]) -> Iterator[Block]:
-    """``lowering.cutter_compensation.resolve_dynamic_cutter_compensation``, imported when first used."""
-    from .lowering.cutter_compensation import resolve_dynamic_cutter_compensation as step
-    return step(blocks, ctx, target)
 
 
 @hookimpl

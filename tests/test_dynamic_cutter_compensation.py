@@ -145,12 +145,25 @@ def test_the_resolved_path_moves_as_rs274_runs_the_source(name: str, target: str
 
 @needs_rs274
 @pytest.mark.parametrize("target", ["fanuc", "grbl", "isg", "mach3"])
-@pytest.mark.parametrize("program", ["inside_corners_trimmed.ngc", "inverse_time_with_comp.ngc"])
-def test_the_corpus_programs_translate_to_the_path_rs274_cuts(program: str, target: str) -> None:
+def test_the_corpus_program_translates_to_the_path_rs274_cuts(target: str) -> None:
     """A computed diameter in a subprogram called three times (``G41.1 D#100``): the program is flattened,
     each call's path resolved with its own diameter."""
+    program = "inside_corners_trimmed.ngc"
     text = (CORPUS / program).read_text()
     _same(_written(_translated(text, target, program), target), _theirs(text), 0.0018)
+
+
+@pytest.mark.parametrize("target", TARGETS)
+def test_inverse_time_under_resolved_compensation_is_a_located_refusal(target: str) -> None:
+    """rs274 times a compensated G93 move by its programmed length (``inverse.ngc``: ``g93 g1 x1 f30`` with
+    radius .2 ends at X1 Y-.2, a move of 1.0198 inch, at ``SET_FEED_RATE(30.0000)``): as plain moves the
+    target would time the compensated length, so the translation refuses it at the first such move."""
+    program = "inverse_time_with_comp.ngc"
+    with pytest.raises(ErrorList) as info:
+        _translated((CORPUS / program).read_text(), target, program)
+    assert str(info.value.errors[0]).startswith(
+        f"{program}:5:1: error: an inverse time feed (G93) under cutter compensation cannot be resolved"), \
+        str(info.value.errors[0])
 
 
 def test_compensation_by_a_diameter_outside_the_xy_plane_is_a_located_refusal() -> None:

@@ -166,6 +166,33 @@ def test_a_linuxcnc_length_change_then_an_incremental_z_is_refused_towards_fagor
     assert "D01" in _translate(text, "linuxcnc", "isg").splitlines()  # ISG waits for an absolute Z too
 
 
+LINUXCNC_RADIUS_ONLY = ("G21 G90 G0 X0 Y0 Z5\nT1 M6\nG41 D1\nG1 X20 Y0 F100\nG1 X20 Y20\nG1 X0 Y20\n"
+                        "G40 G1 X-10 Y10\nM2\n")
+"""G41 D1 with no length offset in force (the corpus's comp_g1, comp311): ISG's D1 would bring tool 1's
+100 mm length with its radius."""
+
+
+def test_a_radius_whose_d_brings_another_length_is_written_as_the_compensated_path_for_isg() -> None:
+    """Radius 3 on the left of the square's sides: the entry move ends at the inside corner X17 Y3, then
+    X17 Y17 and X0 Y17 (hand-derived, the points rs274 gives below); no D, so no length either."""
+    out = _translate(LINUXCNC_RADIUS_ONLY, "linuxcnc", "isg")
+    assert out.splitlines() == ["G71 G90 G00 X0. Y0. Z5.", "T1 M06", "G01 X17. Y3. F100.", "G01 X17. Y17.",
+                                "G01 X0. Y17.", "G01 X-10. Y10.", "M02"]
+    report = _verify(LINUXCNC_RADIUS_ONLY, out, "linuxcnc", "isg")
+    assert report.ok and report.max_deviation == 0, report.summary()
+    if rs274.available():
+        calls = rs274.run_rs274(LINUXCNC_RADIUS_ONLY, tool_table=f"T1 P1 Z{100 / 25.4:.6f} D{6 / 25.4:.6f} ;\n")
+        theirs = [(m["x"], m["y"]) for m in rs274.canonical_moves(calls) if "move" in m]
+        assert theirs == [(m["x"], m["y"]) for m in _moves(out, "isg")]
+
+
+def test_a_radius_whose_d_brings_the_length_in_force_stays_g41_for_isg() -> None:
+    """Register 21 has H1's length (100): D21 carries both, so the target compensates itself."""
+    text = LINUXCNC_RADIUS_ONLY.replace("G41 D1", "G43 H1 Z5\nG41 D21")
+    lines = _translate(text, "linuxcnc", "isg").splitlines()
+    assert "G41 D21" in lines and "G01 X20. Y0. F100." in lines, lines
+
+
 def test_a_missing_length_names_the_element_to_add() -> None:
     assert _errors("G21 G90\nG43 H07 Z50.\nM30\n", "fanuc", "isg") == [
         'in.nc:2:5: error: the set-up gives tool length register 7 no value: add <Tool number="7" length=".."/> to '

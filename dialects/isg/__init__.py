@@ -32,6 +32,12 @@ def select_tool_data(blocks: Iterator[Block], ctx: Context, target: type[Dialect
     return step(blocks, ctx, target)
 
 
+def resolve_radius_where_d_cannot(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """``postproc.isg_family.tool_data.resolve_radius_where_d_cannot``, imported when first used."""
+    from postproc.isg_family.tool_data import resolve_radius_where_d_cannot as step
+    return step(blocks, ctx, target)
+
+
 class Isg(Dialect):
     NAME = "isg"
     DESCRIPTION = "Beckhoff TwinCAT CNC (ISG kernel) milling: P parameters, $ control flow, %L subroutines"
@@ -61,10 +67,12 @@ class Isg(Dialect):
     ``#COMMENT BEGIN`` ... ``#COMMENT END`` block is not recognised as commented (refused: the safe side)."""
     PROGRAMS = True
     """P parameters, expressions, $IF/$SWITCH/$FOR/$WHILE/$DO/$REPEAT, $GOTO, %L/LL and L subroutines."""
-    LOWERING = (stops_before_motion, select_tool_data)
+    LOWERING = (stops_before_motion, resolve_radius_where_d_cannot, select_tool_data)
     """A spindle stop or coolant off that the source made before its block's motion goes in a block of
-    its own before it (ISG acts on M05/M09 after the block's motion, as Fanuc [?]); another family's
-    length and radius registers become the D that selects them (``select_tool_data``)."""
+    its own before it (ISG acts on M05/M09 after the block's motion, as Fanuc [?]); a G41/G42 whose D
+    would bring another length than the one in force becomes the compensated path where the source's
+    rules are modelled (``resolve_radius_where_d_cannot``); another family's length and radius
+    registers become the D that selects them (``select_tool_data``)."""
 
     @classmethod
     def python_pipeline(cls, setup: MachineSetup) -> Pipeline:

@@ -26,7 +26,9 @@ the axis may move at the change) must change the length beside an absolute Z mov
 Writing from separate registers: one D carries both values, so the D written is the radius register
 while radius compensation is on, else the length register (ISG: D0 without a length). Where that D would
 bring another length than the program's (``G43 H1`` then ``G41 D21`` with another length in register
-21), the translation is a located error naming both registers; the set-up's ``<Tools>`` decides.
+21; a G41 D1 run with no length offset), ISG is given the compensated path instead, as plain moves,
+where the source's compensation rules are modelled (``resolve_radius_where_d_cannot``, exact to them);
+otherwise the translation is a located error naming both registers; the set-up's ``<Tools>`` decides.
 """
 
 from __future__ import annotations
@@ -81,6 +83,31 @@ def expects_register(values: dict[str, Any], ctx: Context, first: int) -> None:
 
 
 # -- writing -----------------------------------------------------------------------------------------
+
+def resolve_radius_where_d_cannot(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """Lowering step for a target whose D always brings its length (ISG): a G41/G42 whose register has
+    another length than the one in force becomes the compensated path (see the module docstring)."""
+    if ctx.dialect == target.NAME or target.LENGTH_TOGGLES:
+        return blocks
+    from ..lowering.cutter_compensation import resolve_cutter_compensation_unless
+    return resolve_cutter_compensation_unless(blocks, ctx, _d_keeps_the_length)
+
+
+def _d_keeps_the_length(resolver: Any, cc: CutterCompensation) -> bool:
+    """Whether the D of ``cc``'s register brings the length in force (else the path is resolved); a
+    register not known here is left to ``select_tool_data``, which says what is missing."""
+    register = cc.register if cc.register is not None else resolver.spindle_tool
+    length = resolver.length_register
+    if not isinstance(register, int) or not (length is None or isinstance(length, int)):
+        return True
+    table: ToolTable = resolver.table
+    try:
+        have = table.length(register) if register else 0.0
+        wanted = table.length(length) if length else 0.0
+    except PostprocError:
+        return True
+    return abs(have - wanted) <= SAME_MM
+
 
 @dataclass
 class _Selection:

@@ -24,20 +24,22 @@ then flattened, each run's diameter a number.
 from __future__ import annotations
 
 import math
-from typing import Iterator
+from typing import Callable, Iterator
 
 from ..block_rules import ArcError, arc_centre
 from ..context import Context
 from ..dialect import Dialect
 from ..errors import PostprocError, ProgramError, UnsupportedError
 from ..expr import Expr
-from ..ir import (Block, CutterCompensation, DataSetting, DistanceMode, Feed, Motion, Plane, ProgramControl,
-                  Section, ToolChange, ToolSelect, Units, WorkOffset)
+from ..ir import (Block, CutterCompensation, DataSetting, DistanceMode, Feed, FeedMode, Motion, Plane,
+                  ProgramControl, Section, ToolChange, ToolLengthOffset, ToolSelect, Units, WorkOffset)
 from ..compensation.cutter_radius import CutterRadius, Item, Segment
 from ..compensation.dynamic import DynamicCutterCompensation
 from ..compensation.rules import CutterRules
 from ..compensation.tool_table import ToolTable
 
+Keeps = Callable[["_Resolver", CutterCompensation], bool]
+"""Whether the target writes a G41/G42 itself (given the resolver, for the tool data it tracks)."""
 MM_PER_INCH = 25.4
 ARC_OFF_MM = 0.005
 ARC_OFF_RATIO = 0.001
@@ -49,7 +51,8 @@ PLANE_WORDS = ("X", "Y")
 MOVES = frozenset(("rapid", "linear", "cw", "ccw"))
 _SEGMENT_KIND = {"rapid": "rapid", "linear": "feed", "cw": "cw", "ccw": "ccw"}
 _MOTION_MODE = {"rapid": "rapid", "feed": "linear", "cw": "cw", "ccw": "ccw"}
-_MODAL = frozenset(("Units", "DistanceMode", "Plane", "DataSetting", "WorkOffset", "ToolSelect", "ToolChange"))
+_MODAL = frozenset(("Units", "DistanceMode", "Plane", "DataSetting", "WorkOffset", "ToolSelect", "ToolChange",
+                    "ToolLengthOffset", "FeedMode"))
 """Settings the resolver keeps while no compensation is on (a block with none of them, and no G41/G42, is
 only a move to track, or passes untouched)."""
 
@@ -73,17 +76,35 @@ def resolve_dynamic_cutter_compensation(blocks: Iterator[Block], ctx: Context,
     rules: CutterRules | None = ctx.cutter_rules
     if ctx.dialect == target.NAME or rules is None:
         return blocks
-    return _Resolver(ctx, rules, dynamic_only=target.CUTTER_COMPENSATION).run(blocks)
+    return _Resolver(ctx, rules, _native if target.CUTTER_COMPENSATION else None).run(blocks)
+
+
+def resolve_cutter_compensation_unless(blocks: Iterator[Block], ctx: Context,
+                                       keeps: Keeps) -> Iterator[Block]:
+    """G41/G42 become the compensated path where ``keeps`` says the target cannot write them as they are
+    (and the source's rules are modelled: else the target's own step decides); G41.1/G42.1 always."""
+    rules: CutterRules | None = ctx.cutter_rules
+    if rules is None:
+        return blocks
+    return _Resolver(ctx, rules, keeps).run(blocks)
+
+
+def _native(resolver: "_Resolver", cc: CutterCompensation) -> bool:
+    return True
 
 
 class _Resolver:
     """The compensation state of one translation, and the blocks it has released."""
 
-    def __init__(self, ctx: Context, rules: CutterRules, dynamic_only: bool = False) -> None:
+    def __init__(self, ctx: Context, rules: CutterRules, keeps: Keeps | None = None) -> None:
         self.ctx = ctx
         self.rules = rules
-        self.dynamic_only = dynamic_only
-        """Resolve only compensation by a diameter; a G41/G42 by register stays for the target to write."""
+        self.keeps = keeps
+        """Whether a G41/G42 by register stays for the target to write (with its G40); None: none does."""
+        self.inverse_time = False
+        """G93 in force: a compensated move is not resolved then (see ``_move``)."""
+        self.length_register: int | Expr | None = None
+        """The tool length register in force (None: no length offset)."""
         self.cutter = CutterRadius(rules, self._release)
         self.table = ToolTable(ctx.setup)
         self.scale = 1.0
@@ -106,8 +127,8 @@ class _Resolver:
         idle = True
         for block in blocks:
             sections = block.sections
-            if idle and ("CutterCompensation" not in sections or self.dynamic_only) \
-                    and "DynamicCutterCompensation" not in sections and _MODAL.isdisjoint(sections):
+            if idle and "CutterCompensation" not in sections and "DynamicCutterCompensation" not in sections \
+                    and _MODAL.isdisjoint(sections):
                 motion = sections.get("Motion")  # the common block: a move, tracked for a later entry move
                 if isinstance(motion, Motion) and self.absolute and motion.mode in MOVES \
                         and "MachineCoordinates" not in sections:
@@ -144,7 +165,8 @@ class _Resolver:
         sections = block.sections
         self._modal(sections)
         cc = sections.get("CutterCompensation")
-        if self.dynamic_only and self._idle():
+        if isinstance(cc, CutterCompensation) and self.keeps is not None and self._idle() \
+                and (cc.mode == "off" or self.keeps(self, cc)):
             cc = None  # the target writes its own G41/G42/G40
         dynamic = sections.get("DynamicCutterCompensation")
         if isinstance(dynamic, DynamicCutterCompensation):
@@ -213,6 +235,12 @@ class _Resolver:
         if isinstance(offset, WorkOffset) and offset.index != self.work_offset:
             self.work_offset = offset.index
             self._origin_moved()
+        feed_mode = sections.get("FeedMode")
+        if isinstance(feed_mode, FeedMode):
+            self.inverse_time = feed_mode.mode == "inverse_time"
+        length = sections.get("ToolLengthOffset")
+        if isinstance(length, ToolLengthOffset):
+            self.length_register = length.register if length.mode == "positive" else None
         select = sections.get("ToolSelect")
         if isinstance(select, ToolSelect) and isinstance(select.number, int):
             self.selected = select.number
@@ -273,6 +301,12 @@ class _Resolver:
         kind = _SEGMENT_KIND.get(motion.mode or "")
         if kind is None:
             raise UnsupportedError(f"motion '{motion.mode}' with cutter compensation on cannot be resolved")
+        if self.inverse_time and kind != "rapid":
+            # [V] rs274 2.9 (LinuxCNC tests/interp/inverse-time-with-comp): the rate per minute is F times the
+            # *programmed* move's length, run along the compensated move, an outside corner's arc at the rate
+            # of the move after it; written as moves, G93 F would time the compensated length instead
+            raise UnsupportedError("an inverse time feed (G93) under cutter compensation cannot be resolved: the "
+                                   "controller times the programmed move, the resolved path another length")
         start_x, start_y = self.pos["X"], self.pos["Y"]
         target = self._target(motion)
         if start_x is None or start_y is None or target["X"] is None or target["Y"] is None:

@@ -55,6 +55,7 @@ from ..setup.machine_setup import MachineSetup
 from .travel import TravelCheck, TravelError
 from ..state import MM_PER_INCH, MODAL_KEYS, PLANE_AXES, ModalState
 from ..cycles.rigid_tap_lowering import resolve_rigid_taps
+from ..compensation.dynamic import resolve_dynamic_cutter_compensation
 from ..context import Context
 
 UNEVALUATED = "a computed word reaches the simulation unevaluated"
@@ -68,10 +69,11 @@ LINEAR_AXES = frozenset("XYZUVW")
 """Axes converted from inches; rotary axes (A, B, C) are in degrees whatever the length unit."""
 
 
-TRANSLATE_ONLY = (check_blocks, comment_after_end, drop_foreign_machine_functions, resolve_rigid_taps)
+TRANSLATE_ONLY = (check_blocks, comment_after_end, drop_foreign_machine_functions, resolve_rigid_taps,
+                  resolve_dynamic_cutter_compensation)
 """Generic lowering steps a simulation skips: it checks the feed itself, it must see the blocks after
-the program end as they are written (to record the live ones), and it runs machine-specific codes and
-rigid taps."""
+the program end as they are written (to record the live ones), and it runs machine-specific codes,
+rigid taps and compensation by a diameter (keeping the programmed point beside the controlled one)."""
 
 
 class ToolpathTarget(Dialect):
