@@ -15,6 +15,7 @@ from postproc.api import translate
 from postproc.errors import Diagnostics, ErrorList
 from postproc.simulate.toolpath import toolpath_events
 from postproc.simulate.verify import verify_lines
+from postproc.lowering.inverse_time import per_minute
 from tests.support.rs274 import RS274Error, available, canonical_moves, run_rs274
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -153,17 +154,41 @@ def test_the_corpus_program_translates_to_the_path_rs274_cuts(target: str) -> No
     _same(_written(_translated(text, target, program), target), _theirs(text), 0.0018)
 
 
+INVERSE_EXIT = "g20\ng0x0y0z0\ng42.1d.4\ng93g1x1f30\ny1f20\ng40 x2 y2 f10\nx3 f10\ng94\nm2\n"
+"""G93 through the stretch and after it: rs274 runs the compensated moves at F times the programmed length
+(30, 20, the corner arc at 20, the exit move from the programmed X1 Y1 at 10 x 1.4142), then X3 at 10."""
+
+
+def _feeds(text: str, target: str) -> list[tuple[str, float, float, float]]:
+    """The moves a translation programs with their feed per minute (mm/min)."""
+    events = toolpath_events(io.StringIO(text, newline=""), file="out", dialect=target)
+    return [(e["move"], e["x"], e["y"], e.get("f", 0.0)) for e in per_minute(events, {"X": 0, "Y": 0, "Z": 0})
+            if "move" in e]
+
+
+def _their_feeds(text: str) -> list[tuple[str, float, float, float]]:
+    return [(e["move"], e["x"], e["y"], e.get("f", 0.0))
+            for e in canonical_moves(run_rs274(text), start=(0.0, 0.0, 0.0), feeds=True) if "move" in e]
+
+
+@needs_rs274
 @pytest.mark.parametrize("target", TARGETS)
-def test_inverse_time_under_resolved_compensation_is_a_located_refusal(target: str) -> None:
-    """rs274 times a compensated G93 move by its programmed length (``inverse.ngc``: ``g93 g1 x1 f30`` with
-    radius .2 ends at X1 Y-.2, a move of 1.0198 inch, at ``SET_FEED_RATE(30.0000)``): as plain moves the
-    target would time the compensated length, so the translation refuses it at the first such move."""
-    program = "inverse_time_with_comp.ngc"
-    with pytest.raises(ErrorList) as info:
-        _translated((CORPUS / program).read_text(), target, program)
-    assert str(info.value.errors[0]).startswith(
-        f"{program}:5:1: error: an inverse time feed (G93) under cutter compensation cannot be resolved"), \
-        str(info.value.errors[0])
+@pytest.mark.parametrize("program", ["inverse_time_with_comp.ngc", "exit"])
+def test_inverse_time_under_compensation_runs_at_the_rates_rs274_gives(program: str, target: str) -> None:
+    """A compensated G93 move runs at F times its programmed length per minute (the corpus program:
+    ``g93 g1 x1 f30`` compensated to X1 Y-.2 at 30 ipm, not 30 x 1.0198): the resolved stretch is written
+    per minute with those rates, corner arcs at the next move's, and G93 comes back after it."""
+    text = INVERSE_EXIT if program == "exit" else (CORPUS / program).read_text()
+    ours, theirs = _feeds(_translated(text, target, "t.ngc"), target), _their_feeds(text)
+    assert len(ours) == len(theirs)
+    for n, (a, b) in enumerate(zip(ours, theirs)):
+        assert a[0] == b[0] and math.dist(a[1:3], b[1:3]) <= 0.0018 and abs(a[3] - b[3]) <= 0.01, (n, a, b)
+
+
+def test_g93_comes_back_after_the_resolved_stretch() -> None:
+    assert _translated(INVERSE_EXIT, "grbl").splitlines()[2:7] == [
+        "G94 G1 X1. Y-0.2 F30.", "G3 X1.2 Y0. I0. J0.2 F20.", "G1 X1.2 Y1. F20.", "G1 X2. Y2. F14.14213562",
+        "G93 G1 X3. F10."]
 
 
 def test_compensation_by_a_diameter_outside_the_xy_plane_is_a_located_refusal() -> None:
@@ -197,3 +222,17 @@ def test_a_block_that_also_moves_is_not_simulated_past() -> None:
     with pytest.raises(ErrorList) as info:
         _controlled("G21 G90 G0 X0 Y0\nG41.1 D2 G1 X10 F100\nG40 G1 X20\nM2\n")
     assert "t.ngc:2:" in str(info.value.errors[0]) and "cannot be simulated" in str(info.value.errors[0])
+
+
+@needs_rs274
+def test_the_source_simulation_gives_the_rates_rs274_gives() -> None:
+    """The simulation of the LinuxCNC source itself (what verify compares a translation with)."""
+    text = (CORPUS / "inverse_time_with_comp.ngc").read_text()
+    events = ({**e, **e.get("controlled", {})} for e in toolpath_events(io.StringIO(text), file="t.ngc",
+                                                                        dialect="linuxcnc"))
+    ours = [(e["move"], e["x"], e["y"], e.get("f", 0.0)) for e in per_minute(events, {"X": 0, "Y": 0, "Z": 0})
+            if "move" in e]
+    theirs = _their_feeds(text)
+    assert len(ours) == len(theirs)
+    for n, (a, b) in enumerate(zip(ours, theirs)):
+        assert a[0] == b[0] and math.dist(a[1:3], b[1:3]) <= 0.0018 and abs(a[3] - b[3]) <= 0.01, (n, a, b)

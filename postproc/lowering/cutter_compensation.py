@@ -13,6 +13,12 @@ which refuses them.
 What the simulation refuses under compensation (a canned cycle, a move in machine coordinates, a
 reference return, a plane other than XY, a start point not known) is a located error here too.
 
+Inverse time (G93) under compensation: the controller runs each compensated move at F times the
+length of the *programmed* move per minute, an outside corner's arc at the rate of the move after it
+[V: rs274 2.9, LinuxCNC's tests/interp/inverse-time-with-comp]. Written as moves, G93 would time the
+compensated length instead, so the resolved stretch is written per minute (G94 with those rates) and
+G93 comes back with the first block after it.
+
 Compensation by a diameter in the program (LinuxCNC's G41.1/G42.1, ``DynamicCutterCompensation``) is
 resolved the same way for every target but its source's own (``resolve_dynamic_cutter_compensation``):
 no other dialect spells it, and a target with G41/G42 would need a register holding that radius, which
@@ -37,6 +43,7 @@ from ..compensation.cutter_radius import CutterRadius, Item, Segment
 from ..compensation.dynamic import DynamicCutterCompensation
 from ..compensation.rules import CutterRules
 from ..compensation.tool_table import ToolTable
+from .inverse_time import move_length
 
 Keeps = Callable[["_Resolver", CutterCompensation], bool]
 """Whether the target writes a G41/G42 itself (given the resolver, for the tool data it tracks)."""
@@ -102,7 +109,9 @@ class _Resolver:
         self.keeps = keeps
         """Whether a G41/G42 by register stays for the target to write (with its G40); None: none does."""
         self.inverse_time = False
-        """G93 in force: a compensated move is not resolved then (see ``_move``)."""
+        """G93 in force (a compensated move is then written per minute: see the module docstring)."""
+        self.per_minute = False
+        """The output was switched to G94 for a resolved stretch under G93 (G93 is due back)."""
         self.length_register: int | Expr | None = None
         """The tool length register in force (None: no length offset)."""
         self.cutter = CutterRadius(rules, self._release)
@@ -138,6 +147,8 @@ class _Resolver:
                             pos[axis] = value * scale if type(value) is float else None
                 elif motion is not None or "CompoundMotion" in sections or "MachineCoordinates" in sections:
                     self._track(block)
+                if self.per_minute:
+                    self._back_to_inverse_time(block)
                 yield block
                 continue
             if not self.failed:
@@ -194,6 +205,7 @@ class _Resolver:
             return  # the block only turned compensation on or off: nothing is left to write
         if self._idle():
             self._track(block)
+            self._back_to_inverse_time(block)
             self.out.append(block)
             return
         if "CompoundMotion" in sections or "CannedCycle" in sections:
@@ -301,12 +313,6 @@ class _Resolver:
         kind = _SEGMENT_KIND.get(motion.mode or "")
         if kind is None:
             raise UnsupportedError(f"motion '{motion.mode}' with cutter compensation on cannot be resolved")
-        if self.inverse_time and kind != "rapid":
-            # [V] rs274 2.9 (LinuxCNC tests/interp/inverse-time-with-comp): the rate per minute is F times the
-            # *programmed* move's length, run along the compensated move, an outside corner's arc at the rate
-            # of the move after it; written as moves, G93 F would time the compensated length instead
-            raise UnsupportedError("an inverse time feed (G93) under cutter compensation cannot be resolved: the "
-                                   "controller times the programmed move, the resolved path another length")
         start_x, start_y = self.pos["X"], self.pos["Y"]
         target = self._target(motion)
         if start_x is None or start_y is None or target["X"] is None or target["Y"] is None:
@@ -330,10 +336,39 @@ class _Resolver:
                 raise ProgramError("a zero-length arc under cutter compensation cannot be resolved")
             seg.centre = seg.ccentre = c
             seg.turn = 1 if kind == "ccw" else -1
+            self._per_minute(block, kind, target, c)
             self.cutter.arc(seg, start)
         else:
+            self._per_minute(block, kind, target, None)
             self.cutter.line(seg, start)
         self.pos = target
+
+    def _per_minute(self, block: Block, kind: str, target: dict[str, float | None],
+                    centre: tuple[float, float] | None) -> None:
+        """Under G93, the block's feed per minute: F times its programmed length (see the module docstring)."""
+        if not self.inverse_time or kind == "rapid":
+            return
+        feed = block.sections.get("Feed")
+        if not isinstance(feed, Feed) or isinstance(feed.value, Expr):
+            raise ProgramError("an inverse-time move without its F under cutter compensation")
+        start, end = {a: self.pos.get(a) for a in "XYZ"}, {a: target.get(a) for a in "XYZ"}
+        if any(v is None for v in (*start.values(), *end.values())):
+            raise ProgramError("the start point of a compensated inverse-time move is not known (program X, Y and "
+                               "Z absolutely first)")
+        length = move_length(start, end, "XY", "linear" if kind == "feed" else kind, centre)  # type: ignore[arg-type]
+        block.sections["Feed"] = Feed(feed.value * length / self.scale)
+        if not self.per_minute or "FeedMode" in block.sections:  # the first of the stretch, or its own G93
+            block.sections["FeedMode"] = FeedMode("per_min")
+        block.changed()
+        self.per_minute = True
+
+    def _back_to_inverse_time(self, block: Block) -> None:
+        """The first block after a stretch written per minute brings G93 back (unless it sets a mode)."""
+        if self.per_minute and self.inverse_time and self._idle():
+            self.per_minute = False
+            if "FeedMode" not in block.sections:
+                block.sections["FeedMode"] = FeedMode("inverse_time")
+                block.changed()
 
     def _idle(self) -> bool:
         cutter = self.cutter
@@ -355,6 +390,9 @@ class _Resolver:
             feed = source[0].sections.get("Feed")
             if isinstance(feed, Feed):
                 corner.sections["Feed"] = feed  # the corner runs at the feed of the move after it
+                mode = source[0].sections.get("FeedMode")
+                if isinstance(mode, FeedMode) and mode.mode == "per_min":
+                    corner.sections["FeedMode"] = mode  # that feed per minute (G93 resolved)
         self._rewrite(corner, item, source is not None and source[1])
 
     def _rewrite(self, block: Block, seg: Segment, incremental: bool) -> None:

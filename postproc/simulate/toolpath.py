@@ -49,6 +49,7 @@ from ..compensation.tool_table import ToolTable
 from ..event_order import after_motion
 from ..geometry import CENTRE_KEYS, PLACES
 from ..ir import Block, DataSetting, MachineFunction, Motion, Section
+from ..lowering.inverse_time import move_length
 from ..lowering.lower import lower_for
 from ..plugins import Registry, default_registry
 from ..setup.machine_setup import MachineSetup
@@ -723,6 +724,8 @@ class Simulator:
         fields: Event = {"line": line}
         if kind != "rapid":
             self._feed_into(fields)
+            if self.modal.feed_mode == "inverse_time" and self.sync is None and not self._cutter_idle():
+                self._programmed_rate(fields, kind, target, centre, plane)
         pos = self.pos
         seg = Segment(kind, fields, target, pos.get(LENGTH_AXIS, 0.0), self.length.offset)
         cutter = self.cutter
@@ -744,6 +747,23 @@ class Simulator:
         self.pos = target
         self.rounded = {a: num(v) for a, v in target.items()}
         self._settle()
+
+    def _programmed_rate(self, fields: Event, kind: str, target: dict[str, float],
+                         centre: tuple[float, float] | None, plane: str | None) -> None:
+        """An inverse-time move under cutter compensation runs at F times the length of the *programmed*
+        move per minute, along the compensated one (an outside corner's arc at the rate of the move after
+        it, whose fields it takes): the feed is given per minute [V: rs274 2.9, LinuxCNC's
+        tests/interp/inverse-time-with-comp: ``g93 g1 x1 f30`` compensated to X1 Y-.2 runs at
+        ``SET_FEED_RATE(30)``; an exit move ``g40 x2 y2 f10`` from the programmed X1 Y1 at 14.1421]."""
+        assert self.feed is not None  # _feed_into refused a move without it
+        start = {a: self.pos.get(a, 0.0) for a in ("X", "Y", "Z")}
+        end = {a: target.get(a, 0.0) for a in ("X", "Y", "Z")}
+        mode = "linear" if kind == "feed" else kind
+        fields["f"] = num(self.feed * move_length(start, end, plane or "XY", mode, centre))
+        if self.header_mode == "per_min":
+            fields.pop("feed_mode", None)
+        else:
+            fields["feed_mode"] = "per_min"
 
     def _offset_line(self, kind: str, target: dict[str, float], line: int) -> None:
         """A straight move under a tool length alone (a whole program after its G43): ``_write``'s result,
