@@ -351,11 +351,12 @@ class _Resolver:
         feed = block.sections.get("Feed")
         if not isinstance(feed, Feed) or isinstance(feed.value, Expr):
             raise ProgramError("an inverse-time move without its F under cutter compensation")
-        start, end = {a: self.pos.get(a) for a in "XYZ"}, {a: target.get(a) for a in "XYZ"}
-        if any(v is None for v in (*start.values(), *end.values())):
+        start = {a: v for a in "XYZ" if (v := self.pos.get(a)) is not None}
+        end = {a: v for a in "XYZ" if (v := target.get(a)) is not None}
+        if len(start) < 3 or len(end) < 3:
             raise ProgramError("the start point of a compensated inverse-time move is not known (program X, Y and "
                                "Z absolutely first)")
-        length = move_length(start, end, "XY", "linear" if kind == "feed" else kind, centre)  # type: ignore[arg-type]
+        length = move_length(start, end, "XY", "linear" if kind == "feed" else kind, centre)
         block.sections["Feed"] = Feed(feed.value * length / self.scale)
         if not self.per_minute or "FeedMode" in block.sections:  # the first of the stretch, or its own G93
             block.sections["FeedMode"] = FeedMode("per_min")
