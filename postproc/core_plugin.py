@@ -24,7 +24,7 @@ from .setup.machine_setup import MachineSetup
 from .syntax import Pipeline
 from .syntaxes.modal_state import ModalStateSyntax
 from .cycles.rigid_tap_lowering import resolve_rigid_taps
-from .compensation.dynamic import resolve_dynamic_cutter_compensation
+from .lowering.deferred import resolve_dynamic_cutter_compensation
 from .synchronised_tap import RigidTap
 from .xmlio import XFactory
 

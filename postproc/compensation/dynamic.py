@@ -7,22 +7,16 @@ rs274 2.9 run here]. A reader that meets it keeps its block verbatim (``NativeCo
 simulation: this section says what it does) and adds this section only when the block does nothing
 else, so the simulation never passes over another word of it. A target without the code refuses the
 block (its ``NativeCode``) unless a lowering step resolves it into the compensated path first
-(``resolve_dynamic_cutter_compensation``: every target but the source's own dialect).
+(``lowering.cutter_compensation.resolve_dynamic_cutter_compensation``: every target but the source's
+own dialect).
 """
 
 from __future__ import annotations
-
-from typing import TYPE_CHECKING, Iterator
 
 from mypy_extensions import mypyc_attr
 
 from ..ir import Section
 from ..xmlio import XAttr, XFactory
-
-if TYPE_CHECKING:
-    from ..context import Context
-    from ..dialect import Dialect
-    from ..ir import Block
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
@@ -53,10 +47,3 @@ def register(factory: XFactory | None = None) -> None:
     """Register the section with ``factory`` (the default one if None); idempotent."""
     DynamicCutterCompensation.reg(factory)
 
-
-def resolve_dynamic_cutter_compensation(blocks: Iterator[Block], ctx: Context,
-                                        target: type[Dialect]) -> Iterator[Block]:
-    """Lowering step (a translation's only: the simulation applies the section itself):
-    ``postproc.lowering.cutter_compensation.resolve_dynamic_cutter_compensation``, imported when first used."""
-    from ..lowering.cutter_compensation import resolve_dynamic_cutter_compensation as step
-    return step(blocks, ctx, target)

@@ -56,7 +56,7 @@ from ..setup.machine_setup import MachineSetup
 from .travel import TravelCheck, TravelError
 from ..state import MM_PER_INCH, MODAL_KEYS, PLANE_AXES, ModalState
 from ..cycles.rigid_tap_lowering import resolve_rigid_taps
-from ..compensation.dynamic import resolve_dynamic_cutter_compensation
+from ..lowering.deferred import resolve_dynamic_cutter_compensation
 from ..context import Context
 
 UNEVALUATED = "a computed word reaches the simulation unevaluated"
