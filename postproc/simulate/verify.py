@@ -439,8 +439,13 @@ def verify_lines(lines_in: Iterable[str], lines_out: Iterable[str], *, file_in: 
     dialects = registry or default_registry()
     compensate = _both_compensate(source, target, registry)
     if not compensate and dialects.dialect(source).CUTTER_RULES is not None:
-        lines_out = list(lines_out)  # read twice: the output is looked through first
-        compensate = not _compensates(lines_out, file_out, target, target_setup, dialects)
+        if isinstance(lines_out, io.IOBase) and lines_out.seekable():  # a file: read again, not held
+            mark = lines_out.tell()
+            compensate = not _compensates(lines_out, file_out, target, target_setup, dialects)
+            lines_out.seek(mark)
+        else:
+            lines_out = list(lines_out)  # read twice: the output is looked through first
+            compensate = not _compensates(lines_out, file_out, target, target_setup, dialects)
     events_in = toolpath_events(lines_in, file=file_in, dialect=source, setup=setup, registry=registry,
                                 diagnostics=diag_in, check=False, live_after_end=after_in, unsimulated=settings_in,
                                 compensate=compensate, arguments=arguments)
@@ -486,7 +491,7 @@ def _both_compensate(source: str, target: str, registry: Registry | None) -> boo
                                                               or not out.CUTTER_COMPENSATION)
 
 
-def _compensates(lines: list[str], file: str, dialect: str, setup: MachineSetup, registry: Registry) -> bool:
+def _compensates(lines: Iterable[str], file: str, dialect: str, setup: MachineSetup, registry: Registry) -> bool:
     """Whether a program turns cutter radius compensation on (or cannot be read: the caller's run says
     why). A translation that resolved the source's compensation into its path has none left, so the
     source's compensated path is what it must cut: compared as a path, not as a setting."""
