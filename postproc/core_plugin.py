@@ -24,6 +24,7 @@ from .setup.machine_setup import MachineSetup
 from .syntax import Pipeline
 from .syntaxes.modal_state import ModalStateSyntax
 from .cycles.rigid_tap_lowering import resolve_rigid_taps
+from .lowering.deferred import resolve_dynamic_cutter_compensation
 from .synchronised_tap import RigidTap
 from .xmlio import XFactory
 
@@ -51,6 +52,7 @@ def postproc_register_lowerings(register: Callable[[Lowering], None]) -> None:
     register(evaluate_frames)  # before the cycles: a cycle under a frame is expanded at carried points
     register(expand_canned_cycles)
     register(expand_lathe_cycles)
+    register(resolve_dynamic_cutter_compensation)  # before inverse time: its feeds follow the resolved moves
     register(convert_inverse_time)  # after the expansions: it follows the moves they leave
     register(comment_after_end)
     register(resolve_rigid_taps)  # after the cycles: an expanded rigid tap cycle shows its taps

@@ -151,6 +151,11 @@ class Dialect:
     LENGTH_TOGGLES: ClassVar[bool] = True
     """The tool length offset is turned on and off by code (G43/G49, Fagor's G43/G44); False: it applies
     whenever tool data is selected (ISG's ``D``, ``postproc.isg_family.tool_data``)."""
+    LENGTH_AT_PROGRAMMED_AXIS: ClassVar[bool] = False
+    """A change of the tool length offset moves nothing: axes keep their machine position until the
+    length axis is next programmed absolutely, where the new length applies (LinuxCNC, ISG by default).
+    False: not known to hold, so a program of this dialect that changes the length without a Z move is
+    refused towards a target that has this rule (``postproc.isg_family.tool_data``)."""
     TAPE_MARKS: ClassVar[bool] = False
     """A ``%`` line may open and close a program (Fanuc, GSK, LinuxCNC): ``<Output tapeMarks="always">``."""
     PROGRAM_NUMBERS: ClassVar[bool] = False

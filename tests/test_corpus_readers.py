@@ -51,10 +51,10 @@ def test_a_computed_fraction_after_g41_is_refused_as_rs274_refuses_it() -> None:
 
 def test_a_computed_diameter_after_g41_1_is_read_as_a_diameter() -> None:
     # LinuxCNC's tests/interp/inside-corners: G41.1 D#100 with #100 = -.15 (a negative diameter changes
-    # sides, rs274 "cutter radius compensation on right"); read, it reaches the target's own refusal
+    # sides, rs274 "cutter radius compensation on right"): read, then resolved into the path rs274 cuts,
+    # radius .075 on the right of X0 -> X1 (rs274: STRAIGHT_FEED(1.0000, -0.0750, ...)), then the exit move
     text = "g20 f10\n#100=-.15\ng0 x0 y0\ng41.1 d#100\ng1 x1 y0\ng40\ng1 x2\nm2\n"
-    with pytest.raises(ErrorList) as info:
-        _translate(text, "mach3")
-    assert all(isinstance(e, UnsupportedError) and "G41.1" in str(e) for e in info.value.errors)
+    assert _translate(text, "mach3").splitlines() == [
+        "G20 F10.", "G0 X0.0000 Y0.0000", "G1 X1.0000 Y-0.0750", "G1 X2.0000 Y0.0000", "M2"]
     if rs274.available():
         assert _rs274_accepts(text)

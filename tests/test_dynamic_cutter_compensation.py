@@ -1,6 +1,7 @@
 """LinuxCNC G41.1/G42.1 (cutter compensation by the diameter D; issue 26, corpus ``inside_corners_trimmed``,
 ``inverse_time_with_comp``): simulated as rs274 runs them (the controlled points are rs274's, move by
-move), kept verbatim for LinuxCNC, and a located refusal for targets without them. The expected points of
+move), kept verbatim for LinuxCNC, and resolved into the compensated path for every other target (its
+moves compared with rs274's run of the source). The expected points of
 the first program are also derived by hand."""
 
 from __future__ import annotations
@@ -11,8 +12,10 @@ from pathlib import Path
 import pytest
 
 from postproc.api import translate
-from postproc.errors import ErrorList
+from postproc.errors import Diagnostics, ErrorList
 from postproc.simulate.toolpath import toolpath_events
+from postproc.simulate.verify import verify_lines
+from postproc.lowering.inverse_time import per_minute
 from tests.support.rs274 import RS274Error, available, canonical_moves, run_rs274
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -91,14 +94,108 @@ def test_the_corpus_programs_move_as_rs274_runs_them(program: str) -> None:
     _same(_controlled(text, program), _theirs(text), 0.0018)
 
 
-def test_linuxcnc_gets_the_block_back_and_other_targets_a_located_refusal() -> None:
+TARGETS = ("fanuc", "grbl", "isg", "fagor", "mach3")
+
+
+def _translated(text: str, target: str, file: str = "t.ngc") -> str:
     out = io.StringIO(newline="")
-    translate(io.StringIO(SQUARE, newline=""), out, file="t.ngc", source="linuxcnc", target="linuxcnc")
-    assert out.getvalue() == SQUARE
-    for target in ("fanuc", "grbl", "isg", "fagor", "mach3"):
-        with pytest.raises(ErrorList) as info:
-            translate(io.StringIO(SQUARE, newline=""), io.StringIO(), file="t.ngc", source="linuxcnc", target=target)
-        assert str(info.value.errors[0]).startswith("t.ngc:3:1: error: G41.1"), (target, str(info.value.errors[0]))
+    translate(io.StringIO(text, newline=""), out, file=file, source="linuxcnc", target=target,
+              diagnostics=Diagnostics(warn_stream=io.StringIO()))
+    return out.getvalue()
+
+
+def _written(text: str, target: str) -> list[tuple[str, float, float, float]]:
+    """The moves a translation programs (no compensation left in it: the programmed point is the tool's)."""
+    return [(e["move"], e["x"], e["y"], e["z"])
+            for e in toolpath_events(io.StringIO(text, newline=""), file="out", dialect=target) if "move" in e]
+
+
+def test_linuxcnc_gets_the_block_back() -> None:
+    assert _translated(SQUARE, "linuxcnc") == SQUARE
+
+
+@pytest.mark.parametrize("target", TARGETS)
+def test_other_targets_get_the_compensated_path_derived_by_hand(target: str) -> None:
+    """No other controller spells G41.1: the path rs274 cuts is written as plain moves (the points of
+    ``test_the_square_is_compensated_as_derived_by_hand``), with no compensation code left."""
+    out = _translated(SQUARE, target)
+    assert not any(code in out for code in ("G41", "G42", "41.1", "42.1")), out
+    moves = _written(out, target)
+    assert [m[1:3] for m in moves[2:5]] == [(18, 2), (18, 20), (2, 20)]
+    assert moves[5][1:3] == (0, 0) and moves[7][1:3] == (30, -4)
+    report = verify_lines(io.StringIO(SQUARE, newline=""), io.StringIO(out, newline=""), file_in="t.ngc",
+                          file_out="out", source="linuxcnc", target=target)
+    assert report.ok and report.max_deviation == 0, report.summary()
+
+
+def test_a_target_with_g41_keeps_its_own_compensation_beside_a_resolved_one() -> None:
+    """G41 D1 by register stays G41 for Fanuc (it has it); only the G41.1 stretch becomes moves."""
+    text = ("G21 G90 G0 X0 Y0 Z1\nG41.1 D4\nG1 X20 Y0 F100\nG1 X20 Y20\nG40 G1 X30 Y30\n"
+            "G41 D1 G1 X40 Y30\nG1 X50\nG40 G1 X60 Y40\nM2\n")
+    lines = _translated(text, "fanuc").splitlines()
+    assert sum("G41" in line for line in lines) == 1 and any(line.startswith("G41 D01") for line in lines), lines
+
+
+@needs_rs274
+@pytest.mark.parametrize("target", TARGETS)
+@pytest.mark.parametrize("name", PROGRAMS)
+def test_the_resolved_path_moves_as_rs274_runs_the_source(name: str, target: str) -> None:
+    text = PROGRAMS[name]
+    _same(_written(_translated(text, target), target), _theirs(text), 0.0018 if "G20" in text else TOLERANCE_MM)
+
+
+@needs_rs274
+@pytest.mark.parametrize("target", ["fanuc", "grbl", "isg", "mach3"])
+def test_the_corpus_program_translates_to_the_path_rs274_cuts(target: str) -> None:
+    """A computed diameter in a subprogram called three times (``G41.1 D#100``): the program is flattened,
+    each call's path resolved with its own diameter."""
+    program = "inside_corners_trimmed.ngc"
+    text = (CORPUS / program).read_text()
+    _same(_written(_translated(text, target, program), target), _theirs(text), 0.0018)
+
+
+INVERSE_EXIT = "g20\ng0x0y0z0\ng42.1d.4\ng93g1x1f30\ny1f20\ng40 x2 y2 f10\nx3 f10\ng94\nm2\n"
+"""G93 through the stretch and after it: rs274 runs the compensated moves at F times the programmed length
+(30, 20, the corner arc at 20, the exit move from the programmed X1 Y1 at 10 x 1.4142), then X3 at 10."""
+
+
+def _feeds(text: str, target: str) -> list[tuple[str, float, float, float]]:
+    """The moves a translation programs with their feed per minute (mm/min)."""
+    events = toolpath_events(io.StringIO(text, newline=""), file="out", dialect=target)
+    return [(e["move"], e["x"], e["y"], e.get("f", 0.0)) for e in per_minute(events, {"X": 0, "Y": 0, "Z": 0})
+            if "move" in e]
+
+
+def _their_feeds(text: str) -> list[tuple[str, float, float, float]]:
+    return [(e["move"], e["x"], e["y"], e.get("f", 0.0))
+            for e in canonical_moves(run_rs274(text), start=(0.0, 0.0, 0.0), feeds=True) if "move" in e]
+
+
+@needs_rs274
+@pytest.mark.parametrize("target", TARGETS)
+@pytest.mark.parametrize("program", ["inverse_time_with_comp.ngc", "exit"])
+def test_inverse_time_under_compensation_runs_at_the_rates_rs274_gives(program: str, target: str) -> None:
+    """A compensated G93 move runs at F times its programmed length per minute (the corpus program:
+    ``g93 g1 x1 f30`` compensated to X1 Y-.2 at 30 ipm, not 30 x 1.0198): the resolved stretch is written
+    per minute with those rates, corner arcs at the next move's, and G93 comes back after it."""
+    text = INVERSE_EXIT if program == "exit" else (CORPUS / program).read_text()
+    ours, theirs = _feeds(_translated(text, target, "t.ngc"), target), _their_feeds(text)
+    assert len(ours) == len(theirs)
+    for n, (a, b) in enumerate(zip(ours, theirs)):
+        assert a[0] == b[0] and math.dist(a[1:3], b[1:3]) <= 0.0018 and abs(a[3] - b[3]) <= 0.01, (n, a, b)
+
+
+def test_g93_comes_back_after_the_resolved_stretch() -> None:
+    assert _translated(INVERSE_EXIT, "grbl").splitlines()[2:7] == [
+        "G94 G1 X1. Y-0.2 F30.", "G3 X1.2 Y0. I0. J0.2 F20.", "G1 X1.2 Y1. F20.", "G1 X2. Y2. F14.14213562",
+        "G93 G1 X3. F10."]
+
+
+def test_compensation_by_a_diameter_outside_the_xy_plane_is_a_located_refusal() -> None:
+    with pytest.raises(ErrorList) as info:
+        _translated("G21 G90 G18 G0 X0 Y0 Z0\nG41.1 D2\nG1 X10 Z-1 F100\nG40 G1 X20\nM2\n", "fanuc")
+    assert str(info.value.errors[0]).startswith("t.ngc:2:1: error: cutter compensation by a diameter in the ZX plane"), \
+        str(info.value.errors[0])
 
 
 REFUSED = {
@@ -125,3 +222,17 @@ def test_a_block_that_also_moves_is_not_simulated_past() -> None:
     with pytest.raises(ErrorList) as info:
         _controlled("G21 G90 G0 X0 Y0\nG41.1 D2 G1 X10 F100\nG40 G1 X20\nM2\n")
     assert "t.ngc:2:" in str(info.value.errors[0]) and "cannot be simulated" in str(info.value.errors[0])
+
+
+@needs_rs274
+def test_the_source_simulation_gives_the_rates_rs274_gives() -> None:
+    """The simulation of the LinuxCNC source itself (what verify compares a translation with)."""
+    text = (CORPUS / "inverse_time_with_comp.ngc").read_text()
+    events = ({**e, **e.get("controlled", {})} for e in toolpath_events(io.StringIO(text), file="t.ngc",
+                                                                        dialect="linuxcnc"))
+    ours = [(e["move"], e["x"], e["y"], e.get("f", 0.0)) for e in per_minute(events, {"X": 0, "Y": 0, "Z": 0})
+            if "move" in e]
+    theirs = _their_feeds(text)
+    assert len(ours) == len(theirs)
+    for n, (a, b) in enumerate(zip(ours, theirs)):
+        assert a[0] == b[0] and math.dist(a[1:3], b[1:3]) <= 0.0018 and abs(a[3] - b[3]) <= 0.01, (n, a, b)

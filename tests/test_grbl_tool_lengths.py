@@ -115,3 +115,19 @@ def test_touched_off_round_trips_through_config_dump(cli: Any, tmp_path: Any) ->
     path.write_text('<MachineSetup name="router">\n  <Machine toolLengths="zeroed"/>\n</MachineSetup>\n')
     result = cli("config", "check", path)
     assert result.status == 1 and "toolLengths" in result.err
+
+
+def test_a_g43_1_written_ahead_of_the_blocks_own_g20_is_in_the_units_before_it() -> None:
+    """``G43 H1 G20`` (LinuxCNC's cds.ngc, ``n0090 G43 H1 g20``): the G43.1 goes in a block of its own
+    ahead of the G20, so grbl reads its Z in mm (the power-on units): 101 mm, not 101 / 25.4 read as mm."""
+    setup = _setup({1: 101.0})
+    text = "G90\nG43 H1 G20\nG0 X0 Y0 Z3\nM2\n"
+    out = io.StringIO()
+    translate(io.StringIO(text).readlines(), out, file="t.ngc", source="linuxcnc", target="grbl", setup=setup,
+              diagnostics=Diagnostics(ErrorLevel.RAISE, warn_stream=io.StringIO()))
+    assert out.getvalue().splitlines()[1:3] == ["G43.1 Z101.", "G20"]
+    moves = _moves(out.getvalue(), "grbl", setup)
+    assert moves[0]["controlled"]["z"] == pytest.approx(3 * 25.4 + 101.0)  # Z3 inch + 101 mm
+    report = verify_lines(io.StringIO(text).readlines(), io.StringIO(out.getvalue()).readlines(), file_in="t.ngc",
+                          file_out="t.gcode", source="linuxcnc", target="grbl", setup=setup)
+    assert report.ok and report.max_deviation == 0, report.summary()

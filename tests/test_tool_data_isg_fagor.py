@@ -19,6 +19,7 @@ from postproc.setup.machine_setup import MachineSetup
 from postproc.setup.machine import AxisTravel, ToolData
 from postproc.simulate.toolpath import toolpath_events
 from postproc.simulate.verify import verify_lines
+from tests.support import rs274
 
 
 def _setup(home: float | None = 0.0) -> MachineSetup:
@@ -128,6 +129,68 @@ def test_isg_applies_a_new_length_only_at_an_absolute_z() -> None:
         "in.nc:2:5: error: the new tool length is applied only at a move of Z (ISG: programmed absolutely, "
         "P-CHAN-00100 by default; Fagor: when the axis moves): program the length offset beside a Z move"]
     assert "D01 G00 Z50." in _translate("G21 G90\nG43 H01 Z50.\nM30\n", "fanuc", "isg").splitlines()
+
+
+LINUXCNC_LENGTH_ALONE = "G21 G90 G0 X0 Y0 Z50\nT1 M6\nG43 H1\nG0 X10\nG0 Z5\nG49\nG0 X20\nG0 Z50\nM2\n"
+"""LinuxCNC changes the length in blocks without Z (as gmoccapy's and hk_ba20's programs in the corpus do)."""
+
+
+@pytest.mark.skipif(not rs274.available(), reason="the LinuxCNC interpreter rs274 is not installed")
+def test_linuxcnc_applies_a_length_change_only_at_the_next_z() -> None:
+    """The premise, from rs274: canonical points are program points (the length not added), so the X10
+    traverse at program Z 50 - 1 (inch table: length 1 inch = 25.4 mm) is the machine Z 50 unmoved; after
+    G49 the X20 traverse is at program Z 5 + 25.4, again the machine Z unmoved."""
+    calls = rs274.run_rs274(LINUXCNC_LENGTH_ALONE, tool_table="T1 P1 Z1.0 D0.1 ;\n")
+    moves = [m for m in rs274.canonical_moves(calls) if "move" in m]
+    assert [(m["x"], m["z"]) for m in moves] == [(0, 50), (10, 50 - 25.4), (10, 5), (20, 5 + 25.4), (20, 50)]
+
+
+@pytest.mark.parametrize("target, lines", [
+    ("isg", ["G71 G90 G00 X0. Y0. Z50.", "T1 M06", "D01", "G00 X10.", "G00 Z5.", "D0", "G00 X20.", "G00 Z50.", "M02"]),
+    ("fagor", ["G71 G90 G00 X0. Y0. Z50.", "T1 M06", "G43 D01", "G00 X10.", "G00 Z5.", "G44", "G00 X20.", "G00 Z50.",
+               "M02"])])
+def test_a_linuxcnc_length_change_without_z_keeps_its_place(target: str, lines: list[str]) -> None:
+    """LinuxCNC and ISG (P-CHAN-00100 = 0) both apply the new length at the next absolute Z, so the D
+    goes where the G43 was; Fagor applies it when Z moves, the next Z move being absolute here."""
+    out = _translate(LINUXCNC_LENGTH_ALONE, "linuxcnc", target)
+    assert out.splitlines() == lines
+    assert _verify(LINUXCNC_LENGTH_ALONE, out, "linuxcnc", target).ok
+
+
+def test_a_linuxcnc_length_change_then_an_incremental_z_is_refused_towards_fagor() -> None:
+    text = "G21 G90 G0 X0 Y0 Z50\nT1 M6\nG43 H1\nG0 X10\nG91 G0 Z-5\nG90 G0 Z50\nM2\n"
+    assert _errors(text, "linuxcnc", "fagor") == [
+        "in.nc:5:8: error: the tool length changed before is applied by this incremental Z move on the target "
+        "(when the axis moves [?]), on the source's controller only at the next absolute Z: program Z absolutely "
+        "here"]
+    assert "D01" in _translate(text, "linuxcnc", "isg").splitlines()  # ISG waits for an absolute Z too
+
+
+LINUXCNC_RADIUS_ONLY = ("G21 G90 G0 X0 Y0 Z5\nT1 M6\nG41 D1\nG1 X20 Y0 F100\nG1 X20 Y20\nG1 X0 Y20\n"
+                        "G40 G1 X-10 Y10\nM2\n")
+"""G41 D1 with no length offset in force (the corpus's comp_g1, comp311): ISG's D1 would bring tool 1's
+100 mm length with its radius."""
+
+
+def test_a_radius_whose_d_brings_another_length_is_written_as_the_compensated_path_for_isg() -> None:
+    """Radius 3 on the left of the square's sides: the entry move ends at the inside corner X17 Y3, then
+    X17 Y17 and X0 Y17 (hand-derived, the points rs274 gives below); no D, so no length either."""
+    out = _translate(LINUXCNC_RADIUS_ONLY, "linuxcnc", "isg")
+    assert out.splitlines() == ["G71 G90 G00 X0. Y0. Z5.", "T1 M06", "G01 X17. Y3. F100.", "G01 X17. Y17.",
+                                "G01 X0. Y17.", "G01 X-10. Y10.", "M02"]
+    report = _verify(LINUXCNC_RADIUS_ONLY, out, "linuxcnc", "isg")
+    assert report.ok and report.max_deviation == 0, report.summary()
+    if rs274.available():
+        calls = rs274.run_rs274(LINUXCNC_RADIUS_ONLY, tool_table=f"T1 P1 Z{100 / 25.4:.6f} D{6 / 25.4:.6f} ;\n")
+        theirs = [(m["x"], m["y"]) for m in rs274.canonical_moves(calls) if "move" in m]
+        assert theirs == [(m["x"], m["y"]) for m in _moves(out, "isg")]
+
+
+def test_a_radius_whose_d_brings_the_length_in_force_stays_g41_for_isg() -> None:
+    """Register 21 has H1's length (100): D21 carries both, so the target compensates itself."""
+    text = LINUXCNC_RADIUS_ONLY.replace("G41 D1", "G43 H1 Z5\nG41 D21")
+    lines = _translate(text, "linuxcnc", "isg").splitlines()
+    assert "G41 D21" in lines and "G01 X20. Y0. F100." in lines, lines
 
 
 def test_a_missing_length_names_the_element_to_add() -> None:

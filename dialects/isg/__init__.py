@@ -32,6 +32,12 @@ def select_tool_data(blocks: Iterator[Block], ctx: Context, target: type[Dialect
     return step(blocks, ctx, target)
 
 
+def resolve_radius_where_d_cannot(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """``postproc.isg_family.tool_data.resolve_radius_where_d_cannot``, imported when first used."""
+    from postproc.isg_family.tool_data import resolve_radius_where_d_cannot as step
+    return step(blocks, ctx, target)
+
+
 class Isg(Dialect):
     NAME = "isg"
     DESCRIPTION = "Beckhoff TwinCAT CNC (ISG kernel) milling: P parameters, $ control flow, %L subroutines"
@@ -52,15 +58,21 @@ class Isg(Dialect):
     Fanuc ``G43 H``/``G41 D`` is written as the D it needs; a negative offset (G44) is refused."""
     LENGTH_TOGGLES = False
     """No length on/off code: the selected D's length applies [V: TF5200 "Tool offset"]."""
+    LENGTH_AT_PROGRAMMED_AXIS = True
+    """A D's new length reaches an axis at its next absolute position only; ``D16`` then ``G91 G00 X0``
+    moves nothing [V: TF5200 "Tool geometry compensation" (tccncprogramming/15557086347) and
+    P-CHAN-00100 (tf5200_channel_parameter/149123467), default 0]."""
     COMMENTS = CommentSyntax(parens=True, nested=True, semicolon=True)
     """``( )`` comments nest, ``;`` runs to the end of the block [V: DIALECTS.md 1.3]; a value in a
     ``#COMMENT BEGIN`` ... ``#COMMENT END`` block is not recognised as commented (refused: the safe side)."""
     PROGRAMS = True
     """P parameters, expressions, $IF/$SWITCH/$FOR/$WHILE/$DO/$REPEAT, $GOTO, %L/LL and L subroutines."""
-    LOWERING = (stops_before_motion, select_tool_data)
+    LOWERING = (stops_before_motion, resolve_radius_where_d_cannot, select_tool_data)
     """A spindle stop or coolant off that the source made before its block's motion goes in a block of
-    its own before it (ISG acts on M05/M09 after the block's motion, as Fanuc [?]); another family's
-    length and radius registers become the D that selects them (``select_tool_data``)."""
+    its own before it (ISG acts on M05/M09 after the block's motion, as Fanuc [?]); a G41/G42 whose D
+    would bring another length than the one in force becomes the compensated path where the source's
+    rules are modelled (``resolve_radius_where_d_cannot``); another family's length and radius
+    registers become the D that selects them (``select_tool_data``)."""
 
     @classmethod
     def python_pipeline(cls, setup: MachineSetup) -> Pipeline:

@@ -6,7 +6,9 @@ convert_cutter_compensation_on: radius = D / 2, L only in G18, a negative radius
 rs274 2.9 run here]. A reader that meets it keeps its block verbatim (``NativeCode``, inert for the
 simulation: this section says what it does) and adds this section only when the block does nothing
 else, so the simulation never passes over another word of it. A target without the code refuses the
-block (its ``NativeCode``); writing the compensated path instead is not done.
+block (its ``NativeCode``) unless a lowering step resolves it into the compensated path first
+(``lowering.cutter_compensation.resolve_dynamic_cutter_compensation``: every target but the source's
+own dialect).
 """
 
 from __future__ import annotations
@@ -44,3 +46,4 @@ class DynamicCutterCompensation(Section):
 def register(factory: XFactory | None = None) -> None:
     """Register the section with ``factory`` (the default one if None); idempotent."""
     DynamicCutterCompensation.reg(factory)
+

@@ -1,8 +1,10 @@
 """The offset registers a program reads (H for tool length, D for cutter radius): what the program itself
 wrote (a programmable data input of the neutral tables ``tool_length``, ``tool_length_wear``,
 ``cutter_offset``, ``cutter_offset_wear``), else the set-up's ``<Tools><Tool>``. Geometry written by the
-program replaces the set-up's; wear is added to either. A register with neither is unknown: the
-simulation refuses to guess it, and the error names the element that would give it. Translation reads
+program replaces the set-up's, wear written replaces the set-up's wear; the wear is added to the
+geometry. A register the set-up declares shared by H and D (Fanuc memory A/B, ``<Tool offset>``) is one
+value: a write of its length is its radius too. A register with neither is unknown: the simulation
+refuses to guess it, and the error names the element that would give it. Translation reads
 them too, where a target without a tool table needs the values written (``postproc.grbl_family.lengths``)."""
 
 from __future__ import annotations
@@ -43,15 +45,21 @@ class ToolTable:
         value = setting.values.get("R")
         if not isinstance(value, (int, float)):
             return True  # no R: nothing written (an Expr never reaches the simulator)
+        tool = self.tools.get(str(setting.index))
+        if wear and tool is not None and tool.shared() and tool.offset_wear is None:
+            wear = False  # memory A has no wear: G10 L11 writes the one value [K] (see ToolData)
         key = (quantity, setting.index)
         store = self.wear if wear else self.written
         if setting.incremental:
             known = store.get(key)
-            if known is None and not wear:
-                known = self._declared(quantity, setting.index)
-            store[key] = (known or 0.0) + value * scale
+            if known is None:
+                known = self._declared_wear(quantity, setting.index) if wear else self._declared(quantity,
+                                                                                                setting.index)
+            new = (known or 0.0) + value * scale
         else:
-            store[key] = value * scale
+            new = value * scale
+        for other in self._sharing(quantity, setting.index):
+            store[(other, setting.index)] = new
         return True
 
     def _entry(self, setting: DataSetting, scale: float) -> None:
@@ -64,7 +72,13 @@ class ToolTable:
 
     def set(self, quantity: str, register: int, value: float) -> None:
         """Write register ``register``'s ``quantity`` ("length" or "radius"), mm, as the program's own."""
-        self.written[(quantity, register)] = value
+        for other in self._sharing(quantity, register):
+            self.written[(other, register)] = value
+
+    def _sharing(self, quantity: str, register: int) -> tuple[str, ...]:
+        """The quantities a write of ``quantity`` sets: both where the register is one value for H and D."""
+        tool = self.tools.get(str(register))
+        return ("length", "radius") if tool is not None and tool.shared() else (quantity,)
 
     def length(self, register: int) -> float:
         """The tool length in register ``register`` (mm), or a ProgramError naming what to add; zero on a
@@ -88,9 +102,14 @@ class ToolTable:
             raise ProgramError(f"the set-up gives tool {quantity} register {register} no value: add "
                                f"<Tool number=\"{register}\" {quantity}=\"..\"/> to its <Tools>, or write the "
                                f"register in the program")
-        return value + self.wear.get(key, 0.0)
+        wear = self.wear.get(key)
+        return value + (wear if wear is not None else self._declared_wear(quantity, register))
 
     def _declared(self, quantity: str, register: int) -> float | None:
         tool = self.tools.get(str(register))
-        value = None if tool is None else getattr(tool, quantity)
+        value = None if tool is None else tool.geometry(quantity)
         return None if value is None else float(value) * self.mm
+
+    def _declared_wear(self, quantity: str, register: int) -> float:
+        tool = self.tools.get(str(register))
+        return 0.0 if tool is None else float(tool.wear(quantity)) * self.mm

@@ -50,6 +50,7 @@ def _write_tool_lengths(blocks: Iterator[Block], ctx: Context, modes: tuple[str,
         if _WATCHED.isdisjoint(sections):
             yield block
             continue
+        before = inch
         units = sections.get("Units")
         if isinstance(units, Units):
             inch = units.system == "inch"
@@ -62,14 +63,16 @@ def _write_tool_lengths(blocks: Iterator[Block], ctx: Context, modes: tuple[str,
             continue
         at = ctx.at(block, ctx.column_of(block, "H"))  # before the block is rewritten (a rare block)
         try:
-            yield from _dynamic(block, ctx, table, offset, inch)
+            yield from _dynamic(block, ctx, table, offset, inch, before)
         except PostprocError as err:
             ctx.diagnostics.error(err.located(at))
 
 
-def _dynamic(block: Block, ctx: Context, table: ToolTable, offset: ToolLengthOffset, inch: bool) -> list[Block]:
+def _dynamic(block: Block, ctx: Context, table: ToolTable, offset: ToolLengthOffset, inch: bool,
+             before: bool) -> list[Block]:
     """The block with its offset from a register replaced: by ``G43.1`` in a block of its own before
-    it, or (tools touched off) by a comment."""
+    it, or (tools touched off) by a comment. ``inch``: the units after the block, ``before``: before it
+    (the units a ``G43.1`` written ahead of the block's own G20/G21 is read in)."""
     register = offset.register
     if not isinstance(register, int):
         raise UnsupportedError("a tool length offset whose register is computed (the dynamic offset needs its value)")
@@ -81,16 +84,17 @@ def _dynamic(block: Block, ctx: Context, table: ToolTable, offset: ToolLengthOff
         comments = sections.get("Comments")
         sections["Comments"] = Comments(([*comments.texts] if isinstance(comments, Comments) else []) + [note])
         return [block]
-    length = table.length(register) / (MM_PER_INCH if inch else 1.0)
-    dynamic = ToolLengthOffset("dynamic", None, length if offset.mode == "positive" else -length)
+    def dynamic(inch: bool) -> ToolLengthOffset:
+        length = table.length(register) / (MM_PER_INCH if inch else 1.0)
+        return ToolLengthOffset("dynamic", None, length if offset.mode == "positive" else -length)
     if not _rest(sections):
-        sections["ToolLengthOffset"] = dynamic
+        sections["ToolLengthOffset"] = dynamic(inch)
         return [block]
     first = Block(block.line, None, "\n")
     first.sections = {key: sections.pop(key) for key in ("Sequence",) if key in sections}
     if "BlockDelete" in sections:  # both halves are skipped with the block
         first.sections["BlockDelete"] = sections["BlockDelete"]
-    first.sections["ToolLengthOffset"] = dynamic
+    first.sections["ToolLengthOffset"] = dynamic(before)  # run before the block's G20/G21
     return [first, block]
 
 

@@ -16,10 +16,19 @@ The facts:
   offset's radius. With no D selected the 8070 takes ``D1``. [?] The 8070 keeps its offsets per tool
   (T and D); here ``D<n>`` is the set-up's ``<Tool number="n">``, as on the 8055's offset table.
 
+When the new length applies: ISG takes it at the next absolute position of Z (P-CHAN-00100 = 0, its
+default; see ``Dialect.LENGTH_AT_PROGRAMMED_AXIS``), Fagor when the axis moves [?]. A source with the
+same rule (LinuxCNC: a change moves nothing, the next programmed Z applies it) may change the length in
+a block without Z: towards ISG as it is, towards Fagor while the next Z move is absolute (an incremental
+one, where the two may differ, is a located error). A source without that rule (Fanuc: by its parameters
+the axis may move at the change) must change the length beside an absolute Z move.
+
 Writing from separate registers: one D carries both values, so the D written is the radius register
 while radius compensation is on, else the length register (ISG: D0 without a length). Where that D would
 bring another length than the program's (``G43 H1`` then ``G41 D21`` with another length in register
-21), the translation is a located error naming both registers; the set-up's ``<Tools>`` decides.
+21; a G41 D1 run with no length offset), ISG is given the compensated path instead, as plain moves,
+where the source's compensation rules are modelled (``resolve_radius_where_d_cannot``, exact to them);
+otherwise the translation is a located error naming both registers; the set-up's ``<Tools>`` decides.
 """
 
 from __future__ import annotations
@@ -36,7 +45,7 @@ from ..ir import Block, CutterCompensation, DataSetting, DistanceMode, Motion, T
 
 SELECTED_KEY = "isg_family.tool_data"
 """``ModalState.extra`` key of the D selected while reading (an int or an expression)."""
-_WATCHED = frozenset(("ToolLengthOffset", "CutterCompensation", "DataSetting", "Units"))
+_WATCHED = frozenset(("ToolLengthOffset", "CutterCompensation", "DataSetting", "Units", "DistanceMode"))
 MM_PER_INCH = 25.4
 SAME_MM = 1e-9
 
@@ -75,6 +84,31 @@ def expects_register(values: dict[str, Any], ctx: Context, first: int) -> None:
 
 # -- writing -----------------------------------------------------------------------------------------
 
+def resolve_radius_where_d_cannot(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """Lowering step for a target whose D always brings its length (ISG): a G41/G42 whose register has
+    another length than the one in force becomes the compensated path (see the module docstring)."""
+    if ctx.dialect == target.NAME or target.LENGTH_TOGGLES:
+        return blocks
+    from ..lowering.cutter_compensation import resolve_cutter_compensation_unless
+    return resolve_cutter_compensation_unless(blocks, ctx, _d_keeps_the_length)
+
+
+def _d_keeps_the_length(resolver: Any, cc: CutterCompensation) -> bool:
+    """Whether the D of ``cc``'s register brings the length in force (else the path is resolved); a
+    register not known here is left to ``select_tool_data``, which says what is missing."""
+    register = cc.register if cc.register is not None else resolver.spindle_tool
+    length = resolver.length_register
+    if not isinstance(register, int) or not (length is None or isinstance(length, int)):
+        return True
+    table: ToolTable = resolver.table
+    try:
+        have = table.length(register) if register else 0.0
+        wanted = table.length(length) if length else 0.0
+    except PostprocError:
+        return True
+    return abs(have - wanted) <= SAME_MM
+
+
 @dataclass
 class _Selection:
     length: int | None = None
@@ -87,6 +121,8 @@ class _Selection:
     """The length (mm) the output applies."""
     absolute: bool = True
     """The distance mode in force (ISG applies a new length at an absolute Z only)."""
+    pending: bool = False
+    """A length changed without a Z move, waiting for the next Z move (which must be absolute: Fagor)."""
 
 
 def select_tool_data(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
@@ -95,15 +131,30 @@ def select_tool_data(blocks: Iterator[Block], ctx: Context, target: type[Dialect
     programs pass. ``target.LENGTH_TOGGLES``: the target turns the length on and off by code (Fagor)."""
     if ctx.dialect == target.NAME:
         return blocks
-    return _select(blocks, ctx, target.LENGTH_TOGGLES)
+    from ..plugins import default_registry
+    source = default_registry().dialects.get(ctx.dialect)
+    shifts = source is not None and source.LENGTH_AT_PROGRAMMED_AXIS
+    return _select(blocks, ctx, target.LENGTH_TOGGLES, shifts and not target.LENGTH_AT_PROGRAMMED_AXIS if shifts
+                   else None)
 
 
-def _select(blocks: Iterator[Block], ctx: Context, toggles: bool) -> Iterator[Block]:
+def _select(blocks: Iterator[Block], ctx: Context, toggles: bool, later_z: bool | None) -> Iterator[Block]:
+    """``later_z``: a length may change without a Z move (the source applies it at the next Z, as the
+    target does), True where that next Z move must then be absolute; None: it may not."""
     table = ToolTable(ctx.setup)
     state = _Selection()
     inch = False
     for block in blocks:
         sections = block.sections
+        if state.pending and _z_move(block):
+            state.pending = False
+            distance = sections.get("DistanceMode")
+            absolute = distance.mode == "absolute" if isinstance(distance, DistanceMode) else state.absolute
+            if later_z and not absolute:
+                ctx.diagnostics.error(UnsupportedError(
+                    "the tool length changed before is applied by this incremental Z move on the target (when "
+                    "the axis moves [?]), on the source's controller only at the next absolute Z: program Z "
+                    "absolutely here", ctx.at(block, ctx.column_of(block, "Z"))))
         if _WATCHED.isdisjoint(sections):
             yield block
             continue
@@ -119,7 +170,7 @@ def _select(blocks: Iterator[Block], ctx: Context, toggles: bool) -> Iterator[Bl
         if "ToolLengthOffset" in sections or "CutterCompensation" in sections:
             at = ctx.at(block, ctx.column_of(block, "H" if "ToolLengthOffset" in sections else "D"))
             try:
-                _rewrite(block, table, state, toggles)
+                _rewrite(block, table, state, toggles, later_z is not None)
             except PostprocError as err:
                 ctx.diagnostics.error(err.located(at))
                 continue
@@ -132,7 +183,7 @@ def _register(value: int | Expr | None, what: str) -> int | None:
     raise UnsupportedError(f"a {what} register that is computed (the D selecting it is chosen from its value)")
 
 
-def _rewrite(block: Block, table: ToolTable, state: _Selection, toggles: bool) -> None:
+def _rewrite(block: Block, table: ToolTable, state: _Selection, toggles: bool, later_z: bool) -> None:
     """The block's length and radius registers as the D (and, with ``toggles``, G43/G44) they need."""
     sections = block.sections
     offset = sections.get("ToolLengthOffset")
@@ -165,9 +216,12 @@ def _rewrite(block: Block, table: ToolTable, state: _Selection, toggles: bool) -
                    else "zero the program runs with (no length offset)")
                 + f": give register {want} that length in the set-up's <Tools>, or use one register for both")
     if abs(wanted_mm - state.applied) > SAME_MM and not _moves_z(block, state.absolute or toggles):
-        raise UnsupportedError("the new tool length is applied only at a move of Z (ISG: programmed absolutely, "
-                               "P-CHAN-00100 by default; Fagor: when the axis moves): program the length offset "
-                               "beside a Z move")
+        if later_z:
+            state.pending = True  # both apply it at the next (absolute) Z: checked there
+        else:
+            raise UnsupportedError("the new tool length is applied only at a move of Z (ISG: programmed absolutely, "
+                                   "P-CHAN-00100 by default; Fagor: when the axis moves): program the length offset "
+                                   "beside a Z move")
     state.applied = wanted_mm
     sections.pop("ToolLengthOffset", None)
     if toggles:  # Fagor: G43 D<n> / G44, and G41 D<r>
@@ -185,6 +239,11 @@ def _rewrite(block: Block, table: ToolTable, state: _Selection, toggles: bool) -
             sections["ToolLengthOffset"] = ToolLengthOffset("positive", want) if want else ToolLengthOffset("cancel")
             state.written = want
     block.changed()
+
+
+def _z_move(block: Block) -> bool:
+    motion = block.sections.get("Motion")
+    return isinstance(motion, Motion) and "Z" in motion.axes
 
 
 def _moves_z(block: Block, absolute: bool) -> bool:

@@ -12,24 +12,41 @@ which refuses them.
 
 What the simulation refuses under compensation (a canned cycle, a move in machine coordinates, a
 reference return, a plane other than XY, a start point not known) is a located error here too.
+
+Inverse time (G93) under compensation: the controller runs each compensated move at F times the
+length of the *programmed* move per minute, an outside corner's arc at the rate of the move after it
+[V: rs274 2.9, LinuxCNC's tests/interp/inverse-time-with-comp]. Written as moves, G93 would time the
+compensated length instead, so the resolved stretch is written per minute (G94 with those rates) and
+G93 comes back with the first block after it.
+
+Compensation by a diameter in the program (LinuxCNC's G41.1/G42.1, ``DynamicCutterCompensation``) is
+resolved the same way for every target but its source's own (``resolve_dynamic_cutter_compensation``):
+no other dialect spells it, and a target with G41/G42 would need a register holding that radius, which
+the set-up does not promise. The G41/G42 such a target writes itself pass untouched. A computed diameter
+(``G41.1 D#100`` in a subprogram) keeps its block verbatim, which the target refuses: the program is
+then flattened, each run's diameter a number.
 """
 
 from __future__ import annotations
 
 import math
-from typing import Iterator
+from typing import Callable, Iterator
 
 from ..block_rules import ArcError, arc_centre
 from ..context import Context
 from ..dialect import Dialect
 from ..errors import PostprocError, ProgramError, UnsupportedError
 from ..expr import Expr
-from ..ir import (Block, CutterCompensation, DataSetting, DistanceMode, Feed, Motion, Plane, ProgramControl,
-                  Section, ToolChange, ToolSelect, Units, WorkOffset)
+from ..ir import (Block, CutterCompensation, DataSetting, DistanceMode, Feed, FeedMode, Motion, Plane,
+                  ProgramControl, Section, ToolChange, ToolLengthOffset, ToolSelect, Units, WorkOffset)
 from ..compensation.cutter_radius import CutterRadius, Item, Segment
+from ..compensation.dynamic import DynamicCutterCompensation
 from ..compensation.rules import CutterRules
 from ..compensation.tool_table import ToolTable
+from .inverse_time import move_length
 
+Keeps = Callable[["_Resolver", CutterCompensation], bool]
+"""Whether the target writes a G41/G42 itself (given the resolver, for the tool data it tracks)."""
 MM_PER_INCH = 25.4
 ARC_OFF_MM = 0.005
 ARC_OFF_RATIO = 0.001
@@ -41,7 +58,8 @@ PLANE_WORDS = ("X", "Y")
 MOVES = frozenset(("rapid", "linear", "cw", "ccw"))
 _SEGMENT_KIND = {"rapid": "rapid", "linear": "feed", "cw": "cw", "ccw": "ccw"}
 _MOTION_MODE = {"rapid": "rapid", "feed": "linear", "cw": "cw", "ccw": "ccw"}
-_MODAL = frozenset(("Units", "DistanceMode", "Plane", "DataSetting", "WorkOffset", "ToolSelect", "ToolChange"))
+_MODAL = frozenset(("Units", "DistanceMode", "Plane", "DataSetting", "WorkOffset", "ToolSelect", "ToolChange",
+                    "ToolLengthOffset", "FeedMode"))
 """Settings the resolver keeps while no compensation is on (a block with none of them, and no G41/G42, is
 only a move to track, or passes untouched)."""
 
@@ -57,12 +75,45 @@ def resolve_cutter_compensation(blocks: Iterator[Block], ctx: Context, target: t
     return _Resolver(ctx, rules).run(blocks)
 
 
+def resolve_dynamic_cutter_compensation(blocks: Iterator[Block], ctx: Context,
+                                        target: type[Dialect]) -> Iterator[Block]:
+    """Lowering step: G41.1/G42.1 (compensation by a diameter) become the compensated path for every
+    target but the source's own dialect (see the module docstring); a G41/G42 by register is left to the
+    target where it has cutter compensation."""
+    rules: CutterRules | None = ctx.cutter_rules
+    if ctx.dialect == target.NAME or rules is None:
+        return blocks
+    return _Resolver(ctx, rules, _native if target.CUTTER_COMPENSATION else None).run(blocks)
+
+
+def resolve_cutter_compensation_unless(blocks: Iterator[Block], ctx: Context,
+                                       keeps: Keeps) -> Iterator[Block]:
+    """G41/G42 become the compensated path where ``keeps`` says the target cannot write them as they are
+    (and the source's rules are modelled: else the target's own step decides); G41.1/G42.1 always."""
+    rules: CutterRules | None = ctx.cutter_rules
+    if rules is None:
+        return blocks
+    return _Resolver(ctx, rules, keeps).run(blocks)
+
+
+def _native(resolver: "_Resolver", cc: CutterCompensation) -> bool:
+    return True
+
+
 class _Resolver:
     """The compensation state of one translation, and the blocks it has released."""
 
-    def __init__(self, ctx: Context, rules: CutterRules) -> None:
+    def __init__(self, ctx: Context, rules: CutterRules, keeps: Keeps | None = None) -> None:
         self.ctx = ctx
         self.rules = rules
+        self.keeps = keeps
+        """Whether a G41/G42 by register stays for the target to write (with its G40); None: none does."""
+        self.inverse_time = False
+        """G93 in force (a compensated move is then written per minute: see the module docstring)."""
+        self.per_minute = False
+        """The output was switched to G94 for a resolved stretch under G93 (G93 is due back)."""
+        self.length_register: int | Expr | None = None
+        """The tool length register in force (None: no length offset)."""
         self.cutter = CutterRadius(rules, self._release)
         self.table = ToolTable(ctx.setup)
         self.scale = 1.0
@@ -85,7 +136,8 @@ class _Resolver:
         idle = True
         for block in blocks:
             sections = block.sections
-            if idle and "CutterCompensation" not in sections and _MODAL.isdisjoint(sections):
+            if idle and "CutterCompensation" not in sections and "DynamicCutterCompensation" not in sections \
+                    and _MODAL.isdisjoint(sections):
                 motion = sections.get("Motion")  # the common block: a move, tracked for a later entry move
                 if isinstance(motion, Motion) and self.absolute and motion.mode in MOVES \
                         and "MachineCoordinates" not in sections:
@@ -95,6 +147,8 @@ class _Resolver:
                             pos[axis] = value * scale if type(value) is float else None
                 elif motion is not None or "CompoundMotion" in sections or "MachineCoordinates" in sections:
                     self._track(block)
+                if self.per_minute:
+                    self._back_to_inverse_time(block)
                 yield block
                 continue
             if not self.failed:
@@ -122,7 +176,21 @@ class _Resolver:
         sections = block.sections
         self._modal(sections)
         cc = sections.get("CutterCompensation")
-        if isinstance(cc, CutterCompensation):
+        if isinstance(cc, CutterCompensation) and self.keeps is not None and self._idle() \
+                and (cc.mode == "off" or self.keeps(self, cc)):
+            cc = None  # the target writes its own G41/G42/G40
+        dynamic = sections.get("DynamicCutterCompensation")
+        if isinstance(dynamic, DynamicCutterCompensation):
+            del sections["DynamicCutterCompensation"]
+            sections.pop("NativeCode", None)  # its G41.1/G42.1 D.., which the section says (inert)
+            block.changed()
+            if self.plane != "XY":
+                raise UnsupportedError(f"cutter compensation by a diameter in the {self.plane} plane cannot be "
+                                       "resolved")
+            if self._idle() and self.pos["X"] is not None and self.pos["Y"] is not None:
+                self.at = (self.pos["X"], self.pos["Y"])
+            self.cutter.start(dynamic.mode, dynamic.radius(self.scale))  # negative: the other side
+        elif isinstance(cc, CutterCompensation):
             del sections["CutterCompensation"]
             block.changed()
             if cc.mode == "off":
@@ -133,8 +201,11 @@ class _Resolver:
                 if self._idle() and self.pos["X"] is not None and self.pos["Y"] is not None:
                     self.at = (self.pos["X"], self.pos["Y"])  # where the entry move starts
                 self.cutter.start(cc.mode, self._radius(cc.register))
+        if (isinstance(dynamic, DynamicCutterCompensation) or isinstance(cc, CutterCompensation)) and not sections:
+            return  # the block only turned compensation on or off: nothing is left to write
         if self._idle():
             self._track(block)
+            self._back_to_inverse_time(block)
             self.out.append(block)
             return
         if "CompoundMotion" in sections or "CannedCycle" in sections:
@@ -176,6 +247,12 @@ class _Resolver:
         if isinstance(offset, WorkOffset) and offset.index != self.work_offset:
             self.work_offset = offset.index
             self._origin_moved()
+        feed_mode = sections.get("FeedMode")
+        if isinstance(feed_mode, FeedMode):
+            self.inverse_time = feed_mode.mode == "inverse_time"
+        length = sections.get("ToolLengthOffset")
+        if isinstance(length, ToolLengthOffset):
+            self.length_register = length.register if length.mode == "positive" else None
         select = sections.get("ToolSelect")
         if isinstance(select, ToolSelect) and isinstance(select.number, int):
             self.selected = select.number
@@ -259,10 +336,40 @@ class _Resolver:
                 raise ProgramError("a zero-length arc under cutter compensation cannot be resolved")
             seg.centre = seg.ccentre = c
             seg.turn = 1 if kind == "ccw" else -1
+            self._per_minute(block, kind, target, c)
             self.cutter.arc(seg, start)
         else:
+            self._per_minute(block, kind, target, None)
             self.cutter.line(seg, start)
         self.pos = target
+
+    def _per_minute(self, block: Block, kind: str, target: dict[str, float | None],
+                    centre: tuple[float, float] | None) -> None:
+        """Under G93, the block's feed per minute: F times its programmed length (see the module docstring)."""
+        if not self.inverse_time or kind == "rapid":
+            return
+        feed = block.sections.get("Feed")
+        if not isinstance(feed, Feed) or isinstance(feed.value, Expr):
+            raise ProgramError("an inverse-time move without its F under cutter compensation")
+        start = {a: v for a in "XYZ" if (v := self.pos.get(a)) is not None}
+        end = {a: v for a in "XYZ" if (v := target.get(a)) is not None}
+        if len(start) < 3 or len(end) < 3:
+            raise ProgramError("the start point of a compensated inverse-time move is not known (program X, Y and "
+                               "Z absolutely first)")
+        length = move_length(start, end, "XY", "linear" if kind == "feed" else kind, centre)
+        block.sections["Feed"] = Feed(feed.value * length / self.scale)
+        if not self.per_minute or "FeedMode" in block.sections:  # the first of the stretch, or its own G93
+            block.sections["FeedMode"] = FeedMode("per_min")
+        block.changed()
+        self.per_minute = True
+
+    def _back_to_inverse_time(self, block: Block) -> None:
+        """The first block after a stretch written per minute brings G93 back (unless it sets a mode)."""
+        if self.per_minute and self.inverse_time and self._idle():
+            self.per_minute = False
+            if "FeedMode" not in block.sections:
+                block.sections["FeedMode"] = FeedMode("inverse_time")
+                block.changed()
 
     def _idle(self) -> bool:
         cutter = self.cutter
@@ -284,6 +391,9 @@ class _Resolver:
             feed = source[0].sections.get("Feed")
             if isinstance(feed, Feed):
                 corner.sections["Feed"] = feed  # the corner runs at the feed of the move after it
+                mode = source[0].sections.get("FeedMode")
+                if isinstance(mode, FeedMode) and mode.mode == "per_min":
+                    corner.sections["FeedMode"] = mode  # that feed per minute (G93 resolved)
         self._rewrite(corner, item, source is not None and source[1])
 
     def _rewrite(self, block: Block, seg: Segment, incremental: bool) -> None:

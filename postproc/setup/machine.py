@@ -98,7 +98,16 @@ class WorkOffsetData(Entry):
 class ToolData(Entry):
     """``<Tool number="1" length="152.4" radius="5.0"/>`` (a mill's length register H1 and radius register
     D1) or ``<Tool number="1" x="-2.5" z="-1.2"/>`` (a lathe's offset 01 of ``T0101``): what the controller adds to the programmed
-    point while the offset is in force."""
+    point while the offset is in force.
+
+    Fanuc's tool compensation memories [K: Fanuc Series 0i Model B connection manual (function)
+    B-63833EN-1/02, 10.2 "Tool compensation memory"]: memory A holds one value per offset number, read as
+    the length by ``H n`` and as the radius by ``D n`` (``offset``); memory B adds a wear value to it, still
+    shared (``offsetWear``); memory C keeps separate geometry and wear for H and for D (``length``,
+    ``lengthWear``, ``radius``, ``radiusWear``, as LinuxCNC's and Haas's tables do). One entry is of one
+    kind: a shared value beside a separate one is an error. An entry with ``offset`` and no ``offsetWear``
+    is memory A's: a program's wear write (``G10 L11``) sets its one value [K: the same manual, G10 for
+    memory A]."""
 
     TAG = "Tool"
     KEY = "number"
@@ -108,9 +117,35 @@ class ToolData(Entry):
     radius: float | None = coordinate()
     """Cutter radius G41/G42 offsets the path by (register D n; a negative radius puts the cutter on the
     other side, as Fanuc and LinuxCNC do). A LinuxCNC tool table gives diameters: halve them."""
+    length_wear: float | None = coordinate(alias="lengthWear")
+    radius_wear: float | None = coordinate(alias="radiusWear")
+    """Wear added to the length and to the radius (Fanuc memory C's wear columns)."""
+    offset: float | None = coordinate()
+    offset_wear: float | None = coordinate(alias="offsetWear")
+    """Fanuc memory A/B: the one value of offset n (and its wear), the length of ``H n`` and the radius of
+    ``D n`` alike."""
     x: float | None = coordinate()
     z: float | None = coordinate()
     """Lathe geometry offsets, added to X (as the set-up's X: diameter on a diameter lathe) and Z."""
+
+    def __post_init__(self) -> None:
+        if self.shared() and any(v is not None for v in (self.length, self.radius, self.length_wear,
+                                                        self.radius_wear)):
+            raise ValueError(f"tool {self.number}: offset/offsetWear (one value for H and D: Fanuc memory A/B) "
+                             "beside length/radius (separate H and D: memory C)")
+
+    def shared(self) -> bool:
+        """The entry is one value for H and D (Fanuc memory A/B)."""
+        return self.offset is not None or self.offset_wear is not None
+
+    def geometry(self, quantity: str) -> float | None:
+        """The "length" or "radius" the entry gives (None: not given)."""
+        return self.offset if self.shared() else self.length if quantity == "length" else self.radius
+
+    def wear(self, quantity: str) -> float:
+        """The wear the entry adds to its ``quantity`` (zero when not given)."""
+        value = self.offset_wear if self.shared() else self.length_wear if quantity == "length" else self.radius_wear
+        return value or 0.0
 
 
 CONTAINERS: dict[str, type[Entry]] = {"Axes": AxisTravel, "WorkOffsets": WorkOffsetData, "Tools": ToolData}

@@ -49,12 +49,14 @@ from ..compensation.tool_table import ToolTable
 from ..event_order import after_motion
 from ..geometry import CENTRE_KEYS, PLACES
 from ..ir import Block, DataSetting, MachineFunction, Motion, Section
+from ..lowering.inverse_time import move_length
 from ..lowering.lower import lower_for
 from ..plugins import Registry, default_registry
 from ..setup.machine_setup import MachineSetup
 from .travel import TravelCheck, TravelError
 from ..state import MM_PER_INCH, MODAL_KEYS, PLANE_AXES, ModalState
 from ..cycles.rigid_tap_lowering import resolve_rigid_taps
+from ..lowering.deferred import resolve_dynamic_cutter_compensation
 from ..context import Context
 
 UNEVALUATED = "a computed word reaches the simulation unevaluated"
@@ -68,10 +70,11 @@ LINEAR_AXES = frozenset("XYZUVW")
 """Axes converted from inches; rotary axes (A, B, C) are in degrees whatever the length unit."""
 
 
-TRANSLATE_ONLY = (check_blocks, comment_after_end, drop_foreign_machine_functions, resolve_rigid_taps)
+TRANSLATE_ONLY = (check_blocks, comment_after_end, drop_foreign_machine_functions, resolve_rigid_taps,
+                  resolve_dynamic_cutter_compensation)
 """Generic lowering steps a simulation skips: it checks the feed itself, it must see the blocks after
-the program end as they are written (to record the live ones), and it runs machine-specific codes and
-rigid taps."""
+the program end as they are written (to record the live ones), and it runs machine-specific codes,
+rigid taps and compensation by a diameter (keeping the programmed point beside the controlled one)."""
 
 
 class ToolpathTarget(Dialect):
@@ -721,6 +724,8 @@ class Simulator:
         fields: Event = {"line": line}
         if kind != "rapid":
             self._feed_into(fields)
+            if self.modal.feed_mode == "inverse_time" and self.sync is None and not self._cutter_idle():
+                self._programmed_rate(fields, kind, target, centre, plane)
         pos = self.pos
         seg = Segment(kind, fields, target, pos.get(LENGTH_AXIS, 0.0), self.length.offset)
         cutter = self.cutter
@@ -742,6 +747,23 @@ class Simulator:
         self.pos = target
         self.rounded = {a: num(v) for a, v in target.items()}
         self._settle()
+
+    def _programmed_rate(self, fields: Event, kind: str, target: dict[str, float],
+                         centre: tuple[float, float] | None, plane: str | None) -> None:
+        """An inverse-time move under cutter compensation runs at F times the length of the *programmed*
+        move per minute, along the compensated one (an outside corner's arc at the rate of the move after
+        it, whose fields it takes): the feed is given per minute [V: rs274 2.9, LinuxCNC's
+        tests/interp/inverse-time-with-comp: ``g93 g1 x1 f30`` compensated to X1 Y-.2 runs at
+        ``SET_FEED_RATE(30)``; an exit move ``g40 x2 y2 f10`` from the programmed X1 Y1 at 14.1421]."""
+        assert self.feed is not None  # _feed_into refused a move without it
+        start = {a: self.pos.get(a, 0.0) for a in ("X", "Y", "Z")}
+        end = {a: target.get(a, 0.0) for a in ("X", "Y", "Z")}
+        mode = "linear" if kind == "feed" else kind
+        fields["f"] = num(self.feed * move_length(start, end, plane or "XY", mode, centre))
+        if self.header_mode == "per_min":
+            fields.pop("feed_mode", None)
+        else:
+            fields["feed_mode"] = "per_min"
 
     def _offset_line(self, kind: str, target: dict[str, float], line: int) -> None:
         """A straight move under a tool length alone (a whole program after its G43): ``_write``'s result,

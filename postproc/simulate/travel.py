@@ -253,10 +253,15 @@ class TravelCheck:
         length = self.lengths.get(register)
         if length is None:
             tool = self.setup.tools.get(str(register))
-            if tool is None or tool.length is None:
+            geometry = None if tool is None else tool.geometry("length")
+            if geometry is None:
                 return None
-            length = tool.length * self.factor[axis]
-        length += self.wear.get(register, 0.0)
+            length = geometry * self.factor[axis]
+        wear = self.wear.get(register)
+        if wear is None:  # the set-up's wear column (Fanuc memory B/C), unless the program wrote one
+            tool = self.setup.tools.get(str(register))
+            wear = 0.0 if tool is None else tool.wear("length") * self.factor[axis]
+        length += wear
         return length if self.length_mode == "positive" else -length
 
     def _tool_reason(self, axis: str) -> str:

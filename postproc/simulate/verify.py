@@ -13,12 +13,13 @@ from __future__ import annotations
 
 import copy
 import dataclasses
+import io
 import math
 from dataclasses import dataclass, field
 from typing import Any, Iterable, Iterator, Mapping
 
 from ..lowering.inverse_time import per_minute
-from ..errors import Diagnostics, ErrorList, UsageError
+from ..errors import Diagnostics, ErrorList, PostprocError, UsageError
 from ..plugins import Registry, default_registry
 from ..setup.machine_setup import MachineSetup
 from ..geometry import CENTRE_KEYS, PLANE_INDEX, arc_sweep
@@ -436,6 +437,14 @@ def verify_lines(lines_in: Iterable[str], lines_out: Iterable[str], *, file_in: 
     settings_out: list[tuple[int, str, str]] = []
     dialects = registry or default_registry()
     compensate = _both_compensate(source, target, registry)
+    if not compensate and dialects.dialect(source).CUTTER_RULES is not None:
+        if isinstance(lines_out, io.IOBase) and lines_out.seekable():  # a file: read again, not held
+            mark = lines_out.tell()
+            compensate = not _compensates(lines_out, file_out, target, target_setup, dialects)
+            lines_out.seek(mark)
+        else:
+            lines_out = list(lines_out)  # read twice: the output is looked through first
+            compensate = not _compensates(lines_out, file_out, target, target_setup, dialects)
     events_in = toolpath_events(lines_in, file=file_in, dialect=source, setup=setup, registry=registry,
                                 diagnostics=diag_in, check=False, live_after_end=after_in, unsimulated=settings_in,
                                 compensate=compensate, arguments=arguments)
@@ -483,6 +492,23 @@ def _both_compensate(source: str, target: str, registry: Registry | None) -> boo
     out = reg.dialect(target)
     return reg.dialect(source).CUTTER_RULES is not None and (out.CUTTER_RULES is not None
                                                               or not out.CUTTER_COMPENSATION)
+
+
+def _compensates(lines: Iterable[str], file: str, dialect: str, setup: MachineSetup, registry: Registry) -> bool:
+    """Whether a program turns cutter radius compensation on (or cannot be read: the caller's run says
+    why). A translation that resolved the source's compensation into its path has none left, so the
+    source's compensated path is what it must cut: compared as a path, not as a setting."""
+    from ..reading import read_blocks
+    diagnostics = Diagnostics(warn_stream=io.StringIO())
+    try:
+        _, blocks = read_blocks(iter(lines), file, registry.dialect(dialect), setup, diagnostics)
+        for block in blocks:
+            cc = block.sections.get("CutterCompensation")
+            if cc is not None and getattr(cc, "mode", "off") != "off":
+                return True
+    except PostprocError:
+        return True
+    return bool(diagnostics.errors)
 
 
 def _same_machine(setup: MachineSetup, source: str, registry: Registry | None) -> MachineSetup:

@@ -65,6 +65,10 @@ class Linuxcnc(Dialect):
     SYNCHRONISED_TAP = True
     """G33.1 Z.. K..: a rigid tap, spindle-synchronised in and out (``rigid_tap``); another family's rigid
     tap cycle (Fanuc M29 + G84/G74) is written with it."""
+    LENGTH_AT_PROGRAMMED_AXIS = True
+    """[V: rs274 2.9 run here: ``T1 M6`` ``G43`` then ``G0 X1`` keeps the machine Z (the program Z shifts by
+    the length, ``STRAIGHT_TRAVERSE(1, 0, 4)`` from Z5 with length 1); the next ``Z2`` ends at 2 + 1; a
+    ``G91 Z-1`` moves by -1; after ``G49``, ``X3`` again keeps the machine Z]."""
     CUTTER_RULES = ARC_CORNERS
     """rs274's cutter radius compensation: tangent entry, arcs around outside corners."""
     PROGRAMS = True
