@@ -220,6 +220,9 @@ class Dialect:
     LINE_RULE: ClassVar[LineRule | None] = None
     """Rules every written line obeys on this controller (``postproc.output.line_format.LineRule``: grbl's line
     buffer and real-time characters), applied to whatever the writer emits; None: no rule."""
+    LATHE_TURRET: ClassVar[bool] = True
+    """On a lathe, T indexes the turret with its offset (Fanuc-family ``T0101``); False: the control changes a
+    lathe tool as a mill's, with ``M6`` (LinuxCNC), and a turret index is written so."""
     LATHE_ONE_BLOCK: ClassVar[bool] = False
     """The control reads the one-block forms ``G71 P Q U W D F`` and ``G76 X Z I K D F A P`` (Fanuc
     10/11/15-T) when the set-up's ``latheCycleFormat`` says so; without it every cycle has two blocks."""

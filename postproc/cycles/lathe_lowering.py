@@ -8,10 +8,11 @@ cycle loses its ``LatheCycle`` and is written as its ``CompoundMotion`` (a comme
 line, then the moves); its first block becomes a comment, and each profile block a comment too (the
 controller never ran it where it stands).
 
-For a target that reads no lathe programs (grbl, LinuxCNC's milling reading), the moves are made its
-own: the ZX plane is selected first, U/W increments become absolute X/Z (from the tracked position; a
+For a target that reads no lathe programs (grbl), the moves are made its own: the ZX plane is selected first, U/W increments become absolute X/Z (from the tracked position; a
 located error where it is unknown), and on a diameter program X is halved (such a target takes a
-radius: ``Dialect.DIAMETER_PROGRAMMING``).
+radius: ``Dialect.DIAMETER_PROGRAMMING``). A lathe target without the source's incremental addresses
+(LinuxCNC, whose U/W are axes) gets absolute X/Z too, and one that changes lathe tools with M6
+(``Dialect.LATHE_TURRET`` False) gets the turret index as a tool change.
 """
 
 from __future__ import annotations
@@ -58,7 +59,10 @@ def _lower(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iter
     native = _native(target, ctx)
     foreign = "lathe" not in target.MACHINE_TYPES
     radius = ctx.diameter and (foreign or not target.DIAMETER_PROGRAMMING)
-    tracker = _Position(ctx, radius) if foreign or radius else None
+    absolute = dict(target.INCREMENTAL_AXES) != dict(ctx.increments)
+    """The target has not the source's incremental addresses (LinuxCNC's U/W are axes): U/W become X/Z."""
+    tracker = _Position(ctx, radius) if foreign or radius or absolute else None
+    turret = foreign or not target.LATHE_TURRET
     plane_set = not foreign
     start_mode = ctx.state.feed_mode  # read before any block: the source's mode at the start
     target_mode = target.LATHE_FEED_AT_START if not foreign else "per_min"
@@ -95,7 +99,7 @@ def _lower(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iter
             if "FeedMode" not in block.sections:
                 block.add(FeedMode(start_mode))  # the target starts in another feed mode: say the source's
                 block.changed()
-        if foreign:
+        if turret:
             if not _turret(block, ctx, turning):
                 continue
             turning = _turns_after(block, turning)
