@@ -13,9 +13,14 @@ from __future__ import annotations
 import math
 
 
+ROUNDING = 1e-9
+"""Relative: a move at 45 degrees whose travels differ by rounding alone has Z as its major axis (at 45
+degrees either axis gives the same lead)."""
+
+
 def major_is_z(dx: float, dz: float) -> bool:
     """Whether Z is the thread's major axis (``dx`` a radius travel)."""
-    return abs(dz) >= abs(dx)
+    return abs(dz) >= abs(dx) * (1.0 - ROUNDING)
 
 
 def lead_along_path(lead: float, dx: float, dz: float) -> float:
