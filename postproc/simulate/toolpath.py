@@ -452,6 +452,8 @@ class Simulator:
         value = self.feed if lead is None else lead.lead * self.scale  # type: ignore[attr-defined]
         if value is None:
             raise ProgramError(NO_FEED, self._at(block), needs="F")
+        if self.header_mode is None:
+            self.header_mode = self.modal.feed_mode  # as a first feed move would set it
         self.sync = value
         try:
             self.line_move("feed", target, block.line, emit)
