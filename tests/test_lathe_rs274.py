@@ -40,6 +40,9 @@ ROOT = Path(__file__).resolve().parents[1]
 SETUPS = ROOT / "examples" / "setups"
 SEEDS = int(os.environ.get("POSTPROC_LATHE_DIFFERENTIAL", "100"))
 """Programs per differential (two differentials: 200 in the suite)."""
+TOOLS = "".join(f"T{t} P{t} X0 Z0 D0 ;\n" for t in range(1, 100))
+"""rs274's tool table: every turret position a program may index, without offsets (the toolpath compares
+programmed points)."""
 TOLERANCE = 2e-4
 """mm: rs274 prints 4 decimals (radii from diameters on a 0.5 grid, and computed cycle points)."""
 
@@ -67,7 +70,7 @@ def theirs(ngc: str) -> list[dict[str, Any]]:
     """rs274's moves, a synchronised move's lead along its major axis as ``f``."""
     moves: list[dict[str, Any]] = []
     pos: tuple[float, float] | None = None
-    for ev in canonical_moves(run_rs274(ngc), start=(0.0, 0.0, 0.0), feeds=True, synced=True):
+    for ev in canonical_moves(run_rs274(ngc, tool_table=TOOLS), start=(0.0, 0.0, 0.0), feeds=True, synced=True):
         if "move" not in ev:
             continue
         if "sync" in ev and pos is not None:
