@@ -63,6 +63,7 @@ def _lower(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iter
     """The target has not the source's incremental addresses (LinuxCNC's U/W are axes): U/W become X/Z."""
     tracker = _Position(ctx, radius) if foreign or radius or absolute else None
     turret = foreign or not target.LATHE_TURRET
+    offsets_noted = False
     plane_set = not foreign
     start_mode = ctx.state.feed_mode  # read before any block: the source's mode at the start
     target_mode = target.LATHE_FEED_AT_START if not foreign else "per_min"
@@ -100,6 +101,8 @@ def _lower(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iter
                 block.add(FeedMode(start_mode))  # the target starts in another feed mode: say the source's
                 block.changed()
         if turret:
+            if not foreign and not offsets_noted:
+                offsets_noted = _note_offsets(block, ctx, target)
             if not _turret(block, ctx, turning):
                 continue
             turning = _turns_after(block, turning)
@@ -146,6 +149,20 @@ def _turret(block: Block, ctx: Context, turning: bool) -> bool:
         block.sections["ToolSelect"] = ToolSelect(lathe_tool(select.number))
         block.add(ToolChange())
         block.changed()
+    return True
+
+
+def _note_offsets(block: Block, ctx: Context, target: type[Dialect]) -> bool:
+    """A lathe target that changes tools with M6 applies the tool's X/Z offsets from its own tool table only
+    with G43 [K: LinuxCNC lathe tool table and G43], which is not written (the set-up holds no lathe offsets to
+    simulate it with): a warning at the first index that names an offset. True once warned."""
+    select = block.sections.get("ToolSelect")
+    if not isinstance(select, ToolSelect) or not isinstance(select.number, int) or select.number < 100 \
+            or select.number % 100 == 0:
+        return False
+    ctx.diagnostics.warn(f"T{select.number:04d} selects offset {select.number % 100:02d}: {target.NAME} changes the tool "
+                         f"with M6 and applies its offsets from its own tool table only with G43, which is not "
+                         "written (set the tool table and add G43, or make M6 apply them)", ctx.at(block))
     return True
 
 

@@ -122,6 +122,13 @@ class LatheWordWriter(WordWriter):
             return str(count)
         return self.number(float(value), letter)
 
+    def cycle_cancel_words(self, s: Any, block: Block) -> list[str]:
+        """A lathe reads no drilling cycle into a neutral one (they stay verbatim), so its canned-cycle cancel
+        (G80 on Fanuc T and Haas) has nothing to end: a control without the code writes nothing for it."""
+        if self.ctx.lathe and self.codes.spell("cycle_cancel", None) is None:
+            return []
+        return super().cycle_cancel_words(s, block)
+
     def coordinate_set_words(self, s: Any, block: Block) -> list[str]:
         code = self.code("coordinate_set", None, "coordinate setting", block)
         return [code, *(axis + self.length(value, block, axis) for axis, value in s.axes.items())]
