@@ -45,6 +45,8 @@ TOOLS = "".join(f"T{t} P{t} X0 Z0 D0 ;\n" for t in range(1, 100))
 programmed points)."""
 TOLERANCE = 2e-4
 """mm: rs274 prints 4 decimals (radii from diameters on a 0.5 grid, and computed cycle points)."""
+INCH_TOLERANCE = 1.3e-3
+"""mm: in an inch program rs274 prints 4 decimals of an inch (0.00254 mm)."""
 
 
 def _setup(name: str) -> MachineSetup:
@@ -80,14 +82,15 @@ def theirs(ngc: str) -> list[dict[str, Any]]:
     return moves
 
 
-def difference(a: list[dict[str, Any]], b: list[dict[str, Any]]) -> str | None:
+def difference(a: list[dict[str, Any]], b: list[dict[str, Any]], tolerance: float = TOLERANCE) -> str | None:
+    """The first move where ``a`` and ``b`` differ by more than ``tolerance`` mm, or None."""
     for n, (x, y) in enumerate(zip(a, b)):
         if x["move"] != y["move"]:
             return f"move {n}: ours {x}, rs274 {y}"
         keys = ["x", "z"] + (["cx", "cz"] if x["move"] in ("cw", "ccw") else []) + \
             (["f"] if x["move"] != "rapid" else [])
         dev = max(abs(float(x[k]) - float(y[k])) for k in keys)
-        if dev > TOLERANCE or math.isnan(dev):
+        if dev > tolerance or math.isnan(dev):
             return f"move {n}: {dev:.6f} apart: ours {x}, rs274 {y}"
     if len(a) != len(b):
         return f"ours has {len(a)} moves, rs274 {len(b)}"

@@ -153,16 +153,17 @@ def _turret(block: Block, ctx: Context, turning: bool) -> bool:
 
 
 def _note_offsets(block: Block, ctx: Context, target: type[Dialect]) -> bool:
-    """A lathe target that changes tools with M6 applies the tool's X/Z offsets from its own tool table only
-    with G43 [K: LinuxCNC lathe tool table and G43], which is not written (the set-up holds no lathe offsets to
+    """A lathe target that changes tools as a mill does applies the tool's X/Z offsets from its own tool table
+    only with its tool length offset code [K: LinuxCNC's lathe tool table and G43], which is not written (the set-up holds no lathe offsets to
     simulate it with): a warning at the first index that names an offset. True once warned."""
     select = block.sections.get("ToolSelect")
     if not isinstance(select, ToolSelect) or not isinstance(select.number, int) or select.number < 100 \
             or select.number % 100 == 0:
         return False
     ctx.diagnostics.warn(f"T{select.number:04d} selects offset {select.number % 100:02d}: {target.NAME} changes the tool "
-                         f"with M6 and applies its offsets from its own tool table only with G43, which is not "
-                         "written (set the tool table and add G43, or make M6 apply them)", ctx.at(block))
+                         "as a mill does and applies the tool's offsets from its own tool table only with its tool "
+                         "length offset code, which is not written (set the tool table and add that code, or make "
+                         "the tool change apply them)", ctx.at(block))
     return True
 
 

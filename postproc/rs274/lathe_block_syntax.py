@@ -57,9 +57,12 @@ class LatheBlockSyntax(WordBlockSyntax):
                     cancel = num
         extra = ctx.state.extra
         if cancel is not None and not motion and SINGLE_KEY in extra:
+            codes = self.table(ctx)
+            rapid, linear = codes.spell("motion", "rapid"), codes.spell("motion", "linear")
             raise ProgramError(f"G{cancel} while the single cycle {extra[SINGLE_KEY][1]} is in force: whether it ends "
-                               "it differs between controls (Haas: it does [K], Fanuc T: only G00-G03 do [K]); "
-                               "program G00 or G01 instead", ctx.at(block, col_of_word(block, "G", cancel)))
+                               "it differs between controls (Haas: it does [K], Fanuc T: only a motion code does "
+                               f"[K]); program {rapid} or {linear} instead",
+                               ctx.at(block, col_of_word(block, "G", cancel)))
         if cycle is not None:
             self._cycle_block(block, ctx, cycle[0], cycle[1])
             if table[g_key(cycle[1][1:])][0] == "01":
