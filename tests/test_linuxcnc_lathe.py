@@ -158,3 +158,30 @@ def test_a_linuxcnc_lathe_program_round_trips_byte_for_byte() -> None:
     out = io.StringIO()
     translate(io.StringIO(text), out, file="in.ngc", source="linuxcnc", target="linuxcnc", setup=LINUXCNC_LATHE)
     assert out.getvalue() == text
+
+
+# -- LinuxCNC lathe programs towards the Fanuc family ------------------------------------------------
+
+def from_linuxcnc(text: str, target: str) -> str:
+    out = io.StringIO()
+    translate(io.StringIO(text), out, file="in.ngc", source="linuxcnc", target=target, setup=LINUXCNC_LATHE)
+    return out.getvalue()
+
+
+@pytest.mark.parametrize("target", ["fanuc", "gsk"])
+def test_g96_with_its_clamp_is_g50_s_then_g96(target: str) -> None:
+    text = from_linuxcnc("G18 G7 G21 G95\nG96 S150 D2200 M3\nG0 X20. Z2.\nM2\n", target)
+    assert text.splitlines()[1:3] == ["G50 S2200", "G96 S150 M03"]  # one block would hold two S words
+
+
+@pytest.mark.parametrize("target", ["fanuc", "gsk"])
+def test_a_g33_thread_is_g32_with_its_lead_and_the_feed_rate_restated(target: str) -> None:
+    program = ("G18 G7 G21 G95\nS500 M3\nG0 X20. Z2.\nG1 Z0. F0.2\nG33 Z-10. K1.5\nG0 X24.\nG1 X22. Z-12.\n"
+               "G33 X24. Z-16. K2.\nG1 X30.\nM2\n")
+    text = from_linuxcnc(program, target)
+    # K2. along a path of radius 1 over Z 4 is a lead of 2 * 4 / sqrt(17) = 1.940285 along Z
+    assert text.splitlines()[4:9] == ["G32 Z-10. F1.5", "G00 X24.", "G01 X22. Z-12. F0.2",
+                                      "G32 X24. Z-16. F1.940285", "G01 X30. F0.2"]
+    report = verify_lines(io.StringIO(program), io.StringIO(text), file_in="in.ngc", file_out="out.nc",
+                          source="linuxcnc", target=target, setup=LINUXCNC_LATHE, tolerance=0.0)
+    assert report.ok, report.summary()
