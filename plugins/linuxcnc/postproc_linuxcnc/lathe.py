@@ -110,6 +110,8 @@ def _travel(block: Block, ctx: Context, motion: Motion, col: int) -> tuple[float
         start = state.position.get(axis)
         if value is None:
             return 0.0
+        if isinstance(value, Expr):
+            return None  # (refused before: ``read_thread``)
         if incremental:
             return float(value)
         return None if start is None else float(value) - float(start)

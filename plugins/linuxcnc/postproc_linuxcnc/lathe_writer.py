@@ -120,6 +120,7 @@ def clamp_words(writer: Any, modes: LatheModes, rpm: float | Expr, block: Block)
     else nothing yet (the next G96 writes it)."""
     if isinstance(rpm, Expr):
         writer.unsupported("a computed spindle clamp (G96 D takes a number)", block)
+        return []
     modes.clamp = float(rpm)
     if not modes.css or "SpindleMode" in block.sections:
         return []
@@ -152,4 +153,4 @@ def surface_speed(writer: Any, block: Block) -> str:
     if rpm is None:
         writer.unsupported("constant surface speed with no surface speed S programmed (LinuxCNC's G96 needs S)",
                            block)
-    return "S" + (writer.expression(rpm, block) if isinstance(rpm, Expr) else writer.speed(rpm))
+    return "S" + str(writer.expression(rpm, block) if isinstance(rpm, Expr) else writer.speed(rpm))

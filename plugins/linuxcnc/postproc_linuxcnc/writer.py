@@ -134,16 +134,18 @@ class LinuxcncWriter(WordWriter):
         if lathe is None:
             return super().motion_words(s, block)
         incremental = self.modal.distance == "incremental" and not self.expanding
-        k = None
+        k: float | None = None
         if s.mode == "thread":
             given = block.sections.get("ThreadLead")
             feed = block.sections.get("Feed")
             lead = given.lead if given is not None else feed.value if feed is not None else self.modal.feed  # type: ignore[attr-defined]
             if not isinstance(lead, (int, float)):
                 self.unsupported("a thread move without a known lead (F)", block)
-            k = lathe.thread_k(s, float(lead), incremental)
-            if isinstance(k, str):
-                self.unsupported(k, block)
+            along = lathe.thread_k(s, float(lead), incremental)
+            if isinstance(along, str):
+                self.unsupported(along, block)
+                return []
+            k = along
         words = super().motion_words(s, block)
         lathe.follow(s, incremental)
         if k is not None:
