@@ -101,10 +101,11 @@ def _lower(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iter
                 block.add(FeedMode(start_mode))  # the target starts in another feed mode: say the source's
                 block.changed()
         if turret:
-            if not foreign and not offsets_noted:
-                offsets_noted = _note_offsets(block, ctx, target)
+            select = sections.get("ToolSelect")
             if not _turret(block, ctx, turning):
                 continue
+            if not foreign and not offsets_noted and "ToolSelect" in block.sections:
+                offsets_noted = _note_offsets(select, block, ctx, target)
             turning = _turns_after(block, turning)
         if tracker is not None:
             if not plane_set and ("Motion" in sections or "CompoundMotion" in sections):
@@ -152,11 +153,11 @@ def _turret(block: Block, ctx: Context, turning: bool) -> bool:
     return True
 
 
-def _note_offsets(block: Block, ctx: Context, target: type[Dialect]) -> bool:
+def _note_offsets(select: object, block: Block, ctx: Context, target: type[Dialect]) -> bool:
     """A lathe target that changes tools as a mill does applies the tool's X/Z offsets from its own tool table
     only with its tool length offset code [K: LinuxCNC's lathe tool table and G43], which is not written (the set-up holds no lathe offsets to
-    simulate it with): a warning at the first index that names an offset. True once warned."""
-    select = block.sections.get("ToolSelect")
+    simulate it with): a warning at the first index written that names an offset (``select``, the block's
+    T as read). True once warned."""
     if not isinstance(select, ToolSelect) or not isinstance(select.number, int) or select.number < 100 \
             or select.number % 100 == 0:
         return False
