@@ -7,6 +7,13 @@ none of its text is copied here): safe start, ``G50`` clamp with ``G96``, one-bl
 with ``G70``, one-block ``G76 X Z K D F``. It round-trips byte for byte, and translates to GSK (two-block
 forms) and LinuxCNC (expanded, G33 passes), each verified against the source; the LinuxCNC output runs in
 rs274 with the same moves.
+
+Gear ranges declared in the shipped lathe set-ups (``<MachineCodes>``, kept verbatim within a family and
+refused elsewhere): Fanuc T M41-M44, the machine builder's [K: the Fanuc family defaults,
+``dialects/fanuc/machine_codes.py``]; GSK 980TDc M41-M44 automatic spindle gear shift [K: the 980TDc user
+manual's M-code list; the public copy could not be read past its preface]; Haas lathes M41 low gear, M42
+high gear [K: Haas lathe operator's manual M-code list], M43/M44 as the family's defaults. The Haas set-up's
+``threadMinDepth`` 0.0254 mm (0.001 in) stands for a machine setting [?].
 """
 
 from __future__ import annotations

@@ -59,8 +59,9 @@ def _lower(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iter
     native = _native(target, ctx)
     foreign = "lathe" not in target.MACHINE_TYPES
     radius = ctx.diameter and (foreign or not target.DIAMETER_PROGRAMMING)
-    absolute = dict(target.INCREMENTAL_AXES) != dict(ctx.increments)
-    """The target has not the source's incremental addresses (LinuxCNC's U/W are axes): U/W become X/Z."""
+    absolute = target.WRITER is not None and dict(target.INCREMENTAL_AXES) != dict(ctx.increments)
+    """A target written to has not the source's incremental addresses (LinuxCNC's U/W are axes): U/W become
+    X/Z. (The simulator, which writes nothing, reads the source's own.)"""
     tracker = _Position(ctx, radius) if foreign or radius or absolute else None
     turret = foreign or not target.LATHE_TURRET
     offsets_noted = False
