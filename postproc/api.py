@@ -63,7 +63,10 @@ def translate(lines: Iterable[str], out: TextIO, *, file: str, source: str, targ
         if output_map is not None:
             ctx.run_data["output_map"] = output_map
         lowered = lower_for(sequences.before_lowering(blocks), ctx, dst, on_unsupported, registry.lowerings)
-        writer = dst.WRITER(ctx, src.NAME, dst)
+        writer_class = dst.writer_class(ctx)
+        if writer_class is None:
+            raise UsageError(f"the {dst.NAME} dialect cannot write this program (it has no writer for it)")
+        writer = writer_class(ctx, src.NAME, dst)
         from .fast import install as install_fast_lane  # (imported with the writer's modules, not at start)
         install_fast_lane(writer)
         writer.write(sequences.after_lowering(lowered), out)
@@ -91,7 +94,8 @@ def _keep_check(src: type[Dialect], dst: type[Dialect], ctx: Context,
         steps = [step for step in src.pipeline(ctx.setup).steps if not isinstance(step, ProgramSyntax)]
         blocks = Pipeline(src.NAME, steps).run(body, trial)
         lowered = lower_for(blocks, trial, dst, "error", registry.lowerings)
-        writer = dst.WRITER(trial, src.NAME, dst) if dst.WRITER is not None else None
+        writer_class = dst.writer_class(trial)
+        writer = writer_class(trial, src.NAME, dst) if writer_class is not None else None
         text = io.StringIO()
         try:
             if writer is not None:

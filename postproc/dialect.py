@@ -228,6 +228,12 @@ class Dialect:
     10/11/15-T) when the set-up's ``latheCycleFormat`` says so; without it every cycle has two blocks."""
 
     @classmethod
+    def writer_class(cls, ctx: Context) -> type[Writer] | None:
+        """The writer of a run whose program was read under ``ctx`` (``WRITER``; a dialect with a writer of its
+        own for lathe programs picks it here, as LinuxCNC does)."""
+        return cls.WRITER
+
+    @classmethod
     def reads_lathe(cls, setup: MachineSetup) -> bool:
         """Whether a program is read (and written) with lathe meanings under ``setup``."""
         types = cls.MACHINE_TYPES
@@ -236,7 +242,7 @@ class Dialect:
     @classmethod
     def capabilities(cls) -> dict[str, object]:
         """The capability table: every UPPER_CASE attribute that describes the controller."""
-        skip = {"NAME", "DESCRIPTION", "READER", "WRITER", "PIPELINE_FILE", "LATHE_PIPELINE_FILE", "CYCLE_WORDS",
+        skip = {"NAME", "DESCRIPTION", "READER", "WRITER", "LATHE_WRITER", "PIPELINE_FILE", "LATHE_PIPELINE_FILE", "CYCLE_WORDS",
                 "LOWERING", "COMMENTS", "LINE_RULE", "MACRO_ARGUMENTS"}
         table: dict[str, object] = {}
         for klass in reversed(cls.__mro__):

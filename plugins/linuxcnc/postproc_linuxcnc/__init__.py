@@ -60,6 +60,8 @@ class Linuxcnc(Dialect):
     """Imported when a run first reads LinuxCNC (``Lazy``), as are the writer and the syntax objects (with
     the O-word and expression readers)."""
     WRITER = Lazy[type[Writer]](".writer:LinuxcncWriter")
+    LATHE_WRITER = Lazy[type[Writer]](".lathe_writer:LinuxcncLatheWriter")
+    """The writer of a lathe program (``writer_class``): its own class, so a mill's keeps the fast lane."""
     PIPELINE_FILE = "linuxcnc.xml"
     CYCLE_WORDS = rs274_cycle_words(CODES, ("L",))
     """R level, Q peck/shift, P dwell (seconds), L repeats."""
@@ -127,6 +129,11 @@ class Linuxcnc(Dialect):
         from .program import LinuxcncProgramSyntax
         return Pipeline(cls.NAME, [LinuxcncProgramSyntax(), PolarSyntax(), NgcBlockSyntax(),
                                    CannedCycleResolveSyntax("rs274"), ModalStateSyntax()])
+
+    @classmethod
+    def writer_class(cls, ctx: Context) -> type[Writer] | None:
+        """``LATHE_WRITER`` for a lathe program, else ``WRITER``."""
+        return cls.LATHE_WRITER if ctx.lathe else cls.WRITER
 
     @classmethod
     def context(cls, file: str, setup: MachineSetup, diagnostics: Diagnostics) -> Context:

@@ -81,10 +81,14 @@ class NgcBlockSyntax(NgcWordBlockSyntax):
 
     def _g_code(self, ctx: Context, block: Block, num: str, codes: dict[str, Any], natives: list[str],
                 key: str | None = None) -> None:
-        """G7/G8 on a lathe set-up are read against its ``xProgramming`` (``lathe.read_x_mode``); elsewhere
-        they stay verbatim."""
-        if ctx.lathe and g_key(num) in lathe.MODES:
+        """G7/G8 on a lathe set-up are read against its ``xProgramming`` (``lathe.read_x_mode``), G33 and
+        G96/G97 into lathe sections; on a mill all stay verbatim."""
+        code = g_key(num) if key is None else key
+        if ctx.lathe and code in lathe.MODES:
             lathe.read_x_mode(block, ctx, num)
+            return
+        if not ctx.lathe and code in lathe.LATHE_ONLY:
+            natives.append(code)  # G33, G96/G97 on a mill: verbatim, as before the lathe reading
             return
         super()._g_code(ctx, block, num, codes, natives, key)
 

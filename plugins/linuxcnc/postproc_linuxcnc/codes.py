@@ -4,8 +4,9 @@ Rows are ``(spelling, modal group, kind, argument)`` (see ``postproc.rs274.codes
 codes without leading zeros (``G0``, ``M3``). The rows were copied from the Fanuc milling table and
 changed where the same number means something else or does not exist: no G9 or G44, G76 is threading
 and G87/G88 follow the NIST RS274/NGC words and motion (kept verbatim, see ``NATIVE_G``); G59.1-G59.3,
-G61.1 and G93 are added; G33 (spindle-synchronised motion, K the distance per revolution), G96 S D/G97
-(constant surface speed with its clamp) and, on a lathe set-up, G7/G8 read into lathe sections (``lathe``); G33.1 (rigid tapping) reads into ``RigidTap`` and G90.1/G91.1 (the arc centre
+G61.1 and G93 are added; on a lathe set-up G33 (spindle-synchronised motion, K the distance per revolution),
+G96 S D/G97 (constant surface speed with its clamp) and G7/G8 read into lathe sections (``lathe``), on a
+mill they stay verbatim (``NATIVE_G``); G33.1 (rigid tapping) reads into ``RigidTap`` and G90.1/G91.1 (the arc centre
 mode, kind ``arc_centres``, which no section carries) into offsets from the arc's start (``block_syntax``). G61 (exact path) and G61.1 (exact stop) both read as exact stop (the IR does
 not tell them apart); G61 is written. Sources: LinuxCNC ``docs/src/gcode/g-code.adoc`` and
 ``m-code.adoc``, and DIALECTS.md §2.1 "LinuxCNC / RS274-NGC baseline". G52 and G92-G92.3 are frame
@@ -94,7 +95,7 @@ NATIVE_G: dict[str, str] = {
     "5": "cubic spline", "5.1": "quadratic spline", "5.2": "NURBS block", "5.3": "NURBS block end",
     "7": "lathe diameter mode", "8": "lathe radius mode", "10": "set offsets (G10 L)",
     "17.1": "UV plane", "18.1": "WU plane", "19.1": "VW plane", "28.1": "store G28 position",
-    "30.1": "store G30 position",
+    "30.1": "store G30 position", "33": "spindle-synchronised motion",
     "38.2": "probe toward, error on failure", "38.3": "probe toward", "38.4": "probe away, error on failure",
     "38.5": "probe away", "41.1": "dynamic cutter compensation left",
     "42.1": "dynamic cutter compensation right", "43.1": "dynamic tool length offset",
@@ -102,6 +103,7 @@ NATIVE_G: dict[str, str] = {
     "71.1": "lathe roughing cycle", "71.2": "lathe roughing cycle", "72": "lathe facing cycle",
     "72.1": "lathe facing cycle", "72.2": "lathe facing cycle", "76": "threading cycle",
     "87": "RS274/NGC back boring (I/J shift, K top)", "88": "RS274/NGC manual boring",
+    "96": "constant surface speed", "97": "spindle speed in rpm",
 }
 """LinuxCNC codes kept verbatim: they round-trip to LinuxCNC and are unsupported anywhere else."""
 

@@ -30,6 +30,8 @@ from postproc.thread_lead import lead_along_major
 
 MODES = {"7": "diameter", "8": "radius"}
 """G7/G8 -> how X reads."""
+LATHE_ONLY = frozenset(("33", "96", "97"))
+"""Codes the table reads into lathe sections on a lathe set-up only; a mill keeps them verbatim."""
 CLAMP_KEY = "linuxcnc.spindle_clamp"
 """``ctx.state.extra`` key: the clamp of the last G96 (D), while one is in force."""
 

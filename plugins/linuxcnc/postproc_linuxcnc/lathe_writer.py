@@ -2,6 +2,10 @@
 
 The rules, each checked with rs274 (2.9) [V] (see ``lathe`` for the reading side):
 
+The lathe writer is its own class (``LinuxcncLatheWriter``, picked by ``Linuxcnc.writer_class`` for a lathe
+run), so a mill program keeps the family's fast lane (``postproc.fast``: it serves only a writer that overrides
+none of the word writer's block methods).
+
 * A translated lathe program starts with ``G18 G7`` (or ``G8`` when it programs radii): a LinuxCNC lathe's
   start-up code may leave either mode, so the program says it (``LatheModes.preamble``).
 * ``G96 S.. D..``: the Fanuc-family clamp (``G50 S``) is a state of its own; LinuxCNC clamps only on the
@@ -18,13 +22,15 @@ The rules, each checked with rs274 (2.9) [V] (see ``lathe`` for the reading side
 
 from __future__ import annotations
 
-from typing import Any, Iterator
+from typing import Any, ClassVar, Iterator
 
 from postproc.context import Context
 from postproc.dialect import Dialect
 from postproc.expr import Expr
 from postproc.ir import Block, Motion
 from postproc.thread_lead import lead_along_path, major_is_z
+
+from .writer import LinuxcncWriter
 
 _QUIET = frozenset(("TapeMark", "ProgramStart", "Comments", "Sequence"))
 """Sections of the lines that may stand before the mode line (the program's opening)."""
@@ -154,3 +160,48 @@ def surface_speed(writer: Any, block: Block) -> str:
         writer.unsupported("constant surface speed with no surface speed S programmed (LinuxCNC's G96 needs S)",
                            block)
     return "S" + str(writer.expression(rpm, block) if isinstance(rpm, Expr) else writer.speed(rpm))
+
+
+class LinuxcncLatheWriter(LinuxcncWriter):
+    """LinuxCNC's writer for a lathe program: the mode line, G96 with its clamp, G33 with K."""
+
+    IGNORED: ClassVar[frozenset[str]] = frozenset(("ThreadLead",))
+    """A thread move's lead is written as its K (``motion_words``)."""
+
+    def __init__(self, ctx: Context, source_dialect: str, target: type[Dialect] | None = None) -> None:
+        super().__init__(ctx, source_dialect, target)
+        self.lathe = LatheModes(ctx, self.foreign)
+
+    def write_block(self, block: Block) -> str | None:
+        """A lathe program translated here opens with its mode line (``LatheModes.opening``)."""
+        return self.lathe.opening(block, super().write_block(block))
+
+    def motion_words(self, s: Any, block: Block) -> list[str]:
+        """A thread move is ``G33 .. K..`` (``LatheModes.thread_k``); every move is followed."""
+        lathe = self.lathe
+        incremental = self.modal.distance == "incremental" and not self.expanding
+        k: float | None = None
+        if s.mode == "thread":
+            given = block.sections.get("ThreadLead")
+            feed = block.sections.get("Feed")
+            lead = given.lead if given is not None else feed.value if feed is not None else self.modal.feed  # type: ignore[attr-defined]
+            if not isinstance(lead, (int, float)):
+                self.unsupported("a thread move without a known lead (F)", block)
+                return []
+            along = lathe.thread_k(s, float(lead), incremental)
+            if isinstance(along, str):
+                self.unsupported(along, block)
+                return []
+            k = along
+        words = super().motion_words(s, block)
+        lathe.follow(s, incremental)
+        if k is not None:
+            words.append("K" + self.length(k, block, "K"))
+        return words
+
+    def spindle_mode_words(self, s: Any, block: Block) -> list[str]:
+        return css_words(self, self.lathe, s.mode, block)
+
+    def spindle_clamp_words(self, s: Any, block: Block) -> list[str]:
+        """A spindle clamp goes with G96 (``clamp_words``)."""
+        return clamp_words(self, self.lathe, s.rpm, block)

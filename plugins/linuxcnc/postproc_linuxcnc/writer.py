@@ -48,7 +48,6 @@ from postproc.subprogram_names import NameRule, SubprogramNames
 
 from .active_comments import COMMENTS
 from .codes import CODES
-from .lathe_writer import LatheModes, clamp_words, css_words
 
 
 _AFTER_ORIENT = frozenset({"SpindleOrientation", "Coolant", "ProgramControl"})
@@ -117,51 +116,6 @@ class LinuxcncWriter(WordWriter):
         start or tape mark, or at the end of the output)."""
         self._counted: dict[str, tuple[Var, float]] = {}
         """Source label of an open counted loop -> its counter and step."""
-        self.lathe = LatheModes(ctx, self.foreign) if ctx.lathe else None
-        """A lathe program's modes (``lathe_writer``); None for a mill's."""
-
-    IGNORED: ClassVar[frozenset[str]] = frozenset(("ThreadLead",))
-    """A thread move's lead is written as its K (``motion_words``)."""
-
-    def write_block(self, block: Block) -> str | None:
-        """A lathe program translated here opens with its mode line (``LatheModes.opening``)."""
-        text = super().write_block(block)
-        return text if self.lathe is None else self.lathe.opening(block, text)
-
-    def motion_words(self, s: Any, block: Block) -> list[str]:
-        """On a lathe, a thread move is ``G33 .. K..`` (``LatheModes.thread_k``) and every move is followed."""
-        lathe = self.lathe
-        if lathe is None:
-            return super().motion_words(s, block)
-        incremental = self.modal.distance == "incremental" and not self.expanding
-        k: float | None = None
-        if s.mode == "thread":
-            given = block.sections.get("ThreadLead")
-            feed = block.sections.get("Feed")
-            lead = given.lead if given is not None else feed.value if feed is not None else self.modal.feed  # type: ignore[attr-defined]
-            if not isinstance(lead, (int, float)):
-                self.unsupported("a thread move without a known lead (F)", block)
-            along = lathe.thread_k(s, float(lead), incremental)
-            if isinstance(along, str):
-                self.unsupported(along, block)
-                return []
-            k = along
-        words = super().motion_words(s, block)
-        lathe.follow(s, incremental)
-        if k is not None:
-            words.append("K" + self.length(k, block, "K"))
-        return words
-
-    def spindle_mode_words(self, s: Any, block: Block) -> list[str]:
-        if self.lathe is None:
-            return super().spindle_mode_words(s, block)
-        return css_words(self, self.lathe, s.mode, block)
-
-    def spindle_clamp_words(self, s: Any, block: Block) -> list[str]:
-        """A spindle clamp goes with G96 (``lathe_writer.clamp_words``)."""
-        if self.lathe is None:
-            self.unsupported("a spindle speed clamp outside a lathe program", block)
-        return clamp_words(self, self.lathe, s.rpm, block)
 
     def comment(self, text: str) -> str:
         """Another dialect's comment text as a comment that does not act (LinuxCNC reads ``(MSG,``,
