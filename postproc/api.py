@@ -80,7 +80,10 @@ def translate(lines: Iterable[str], out: TextIO, *, file: str, source: str, targ
         lowered = transform_program(lowered, ctx, options)
         if arcs is not None:
             lowered = rewrite_arcs(lowered, ctx, arcs, dst)
-        writer = dst.WRITER(ctx, src.NAME, dst)
+        writer_class = dst.writer_class(ctx)
+        if writer_class is None:
+            raise UsageError(f"the {dst.NAME} dialect cannot write this program (it has no writer for it)")
+        writer = writer_class(ctx, src.NAME, dst)
         from .fast import install as install_fast_lane  # (imported with the writer's modules, not at start)
         install_fast_lane(writer)
         if not moved:
@@ -119,7 +122,8 @@ def _keep_check(src: type[Dialect], dst: type[Dialect], ctx: Context, registry: 
         steps = [step for step in src.pipeline(ctx.setup).steps if not isinstance(step, ProgramSyntax)]
         blocks = Pipeline(src.NAME, steps).run(body, trial)
         lowered = transform_program(lower_for(blocks, trial, dst, "error", registry.lowerings), trial, options)
-        writer = dst.WRITER(trial, src.NAME, dst) if dst.WRITER is not None else None
+        writer_class = dst.writer_class(trial)
+        writer = writer_class(trial, src.NAME, dst) if writer_class is not None else None
         text = io.StringIO()
         try:
             if writer is not None:

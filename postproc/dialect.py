@@ -233,9 +233,18 @@ class Dialect:
     LINE_RULE: ClassVar[LineRule | None] = None
     """Rules every written line obeys on this controller (``postproc.output.line_format.LineRule``: grbl's line
     buffer and real-time characters), applied to whatever the writer emits; None: no rule."""
+    LATHE_TURRET: ClassVar[bool] = True
+    """On a lathe, T indexes the turret with its offset (Fanuc-family ``T0101``); False: the control changes a
+    lathe tool as a mill's, with ``M6`` (LinuxCNC), and a turret index is written so."""
     LATHE_ONE_BLOCK: ClassVar[bool] = False
     """The control reads the one-block forms ``G71 P Q U W D F`` and ``G76 X Z I K D F A P`` (Fanuc
     10/11/15-T) when the set-up's ``latheCycleFormat`` says so; without it every cycle has two blocks."""
+
+    @classmethod
+    def writer_class(cls, ctx: Context) -> type[Writer] | None:
+        """The writer of a run whose program was read under ``ctx`` (``WRITER``; a dialect with a writer of its
+        own for lathe programs picks it here, as LinuxCNC does)."""
+        return cls.WRITER
 
     @classmethod
     def reads_lathe(cls, setup: MachineSetup) -> bool:
@@ -246,7 +255,7 @@ class Dialect:
     @classmethod
     def capabilities(cls) -> dict[str, object]:
         """The capability table: every UPPER_CASE attribute that describes the controller."""
-        skip = {"NAME", "DESCRIPTION", "READER", "WRITER", "PIPELINE_FILE", "LATHE_PIPELINE_FILE", "CYCLE_WORDS",
+        skip = {"NAME", "DESCRIPTION", "READER", "WRITER", "LATHE_WRITER", "PIPELINE_FILE", "LATHE_PIPELINE_FILE", "CYCLE_WORDS",
                 "LOWERING", "COMMENTS", "LINE_RULE", "MACRO_ARGUMENTS"}
         table: dict[str, object] = {}
         for klass in reversed(cls.__mro__):

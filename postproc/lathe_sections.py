@@ -76,6 +76,23 @@ class CoordinateSet(Section):
         return (tuple(sorted(self.axes.items())),)  # by axis: XML gives the numbers, then the expressions
 
 
+class ThreadLead(Section):
+    """The lead of this block's thread move (``Motion`` mode 'thread'), per spindle revolution along the
+    thread's major axis (Z where the move's Z travel is at least its X travel as a radius, else X), in
+    program units; the block's feed rate F stays what it was. It is what a control writes beside its
+    thread code where F is no lead (LinuxCNC's ``G33 K``, which it measures along the path: the reader
+    converts it, ``postproc.thread_lead``); a control whose thread move takes its lead from F (Fanuc
+    ``G32 F``) has none."""
+
+    XNAME = KEY = "ThreadLead"
+    __slots__ = ("lead",)
+    XATTRS = (XAttr("lead", float),)
+    lead: float
+
+    def __init__(self, lead: float) -> None:
+        self.lead = lead
+
+
 class InProfile(Section):
     """This block is part of the profile (ns..nf) of the lathe cycle programmed on line ``cycle``: the
     controller runs it only through the cycle, never when the program reaches it."""
@@ -137,7 +154,7 @@ class LatheCycle(Section):
         return f"LatheCycle({self.kind!r}, {self.form!r}, {self.params!r})"
 
 
-LATHE_SECTIONS: tuple[type[Section], ...] = (SpindleMode, SpindleClamp, CoordinateSet, InProfile, LatheCycle)
+LATHE_SECTIONS: tuple[type[Section], ...] = (SpindleMode, SpindleClamp, CoordinateSet, ThreadLead, InProfile, LatheCycle)
 
 
 def register_lathe_sections(factory: XFactory) -> None:

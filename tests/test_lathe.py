@@ -88,8 +88,10 @@ def test_seed_is_expanded_for_a_target_without_lathe_cycles(target: str) -> None
     assert "(turn_rough from line 5: G71 P10 Q20 U0.5 W0.1 F0.25 K1)" in text
     assert "(turn_finish from line 11: G70 P10 Q20)" in text
     assert "(PROFILE LINE 6: N10 G00 X20.)" in text
-    # X is a radius there (no diameter mode): the first move to X60. is written X30.
-    assert code[0].startswith("G18") and "X30." in code[0]
+    if target == "grbl":  # X is a radius there (no diameter mode): the first move to X60. is written X30.
+        assert code[0].startswith("G18") and "X30." in code[0]
+    else:  # a LinuxCNC lathe in diameter mode (G7): X60. stays
+        assert code[0] == "G18 G7" and "X60." in code[1]
     assert deviation(SEED, text, "gsk", target) == 0.0
 
 
@@ -441,7 +443,8 @@ def test_each_control_starts_in_its_own_feed_mode() -> None:
     """Fanuc T starts in G99 (per revolution), GSK in G98, grbl and LinuxCNC per minute: a program that
     relies on its control's start gets the mode written for a target that starts in another."""
     program = "G97 S500 M03\nG00 X60. Z5.\nG01 X50. F0.2\n"  # a spindle turning: LinuxCNC feeds per rev only then
-    assert write(program, "fanuc", "linuxcnc").splitlines()[0].startswith("G95 ")
+    assert write(program, "fanuc", "linuxcnc").splitlines()[:2][0] == "G18 G7"  # the LinuxCNC lathe's modes
+    assert write(program, "fanuc", "linuxcnc").splitlines()[1].startswith("G95 ")
     assert events(program, "fanuc")[0]["feed_mode"] == "per_rev"
     assert "feed_mode" not in events(program, "gsk")[0]
     assert write(program, "fanuc", "fanuc") == program

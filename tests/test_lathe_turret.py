@@ -3,8 +3,8 @@ spindle [V: rs274 prints STOP_SPINDLE_TURNING before CHANGE_TOOL], the turret do
 code only indexes]. With the spindle stopped the two agree and the index is written as the tool change;
 with it turning the block is refused where it stands.
 
-Expected moves are hand-derived (X a diameter on the lathe, a radius for the mill control); rs274 runs
-the LinuxCNC output.
+Expected moves are hand-derived (X a diameter on the lathe, a radius in rs274's canonical calls: LinuxCNC's
+lathe mode G7 reads the diameter and prints the radius); rs274 runs the LinuxCNC output.
 """
 
 from __future__ import annotations
@@ -45,7 +45,7 @@ def test_an_index_with_the_spindle_turning_is_refused_where_it_stands(target: st
 
 def test_with_warn_only_the_t_word_is_left_out() -> None:
     text, warnings = _translate(TURNING, "linuxcnc", warn=True)
-    assert "(UNSUPPORTED T0202)" in text and "M6" not in text and "G1 X20. F0.2" in text, text
+    assert "(UNSUPPORTED T0202)" in text and "M6" not in text and "G1 X40. F0.2" in text, text  # G7: a diameter
     assert len(warnings) == 1 and "l.nc:5:1: warning: a turret index (T0202)" in warnings[0]
 
 

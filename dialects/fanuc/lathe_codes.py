@@ -5,6 +5,11 @@ The set-up's ``machineType="lathe"`` selects these tables instead of the milling
 threading cycle in A and coordinate setting in B and C; G98/G99 are feed modes in A only). Rows are
 ``(spelling, modal group, kind, argument)`` as in ``codes.py``; groups follow the Fanuc T manuals
 (01 motion and the single cycles, 00 one-shot codes and G70-G76, 02 spindle speed mode, 16 planes).
+G80 is the canned-cycle cancel in every system [K: Fanuc 0i-TF G-code list, "G80: canned cycle for drilling
+cancel"; Haas lathe operator's manual G80 "Canned Cycle Cancel", which Haas programs write in their first
+block, ``G00 G18 G20 G40 G80 G99``]: the drilling cycles it cancels stay verbatim (system A), and a G80
+while a single cycle (G90/G92/G94) is in force is refused (``LatheBlockSyntax``: whether it ends one differs
+between controls).
 """
 
 from __future__ import annotations
@@ -32,6 +37,7 @@ COMMON: tuple[Row, ...] = (
     ("G57", "14", "offset", 4),
     ("G58", "14", "offset", 5),
     ("G59", "14", "offset", 6),
+    ("G80", "09", "cycle_cancel", None),
     ("G96", "02", "spindle_mode", "css"),
     ("G97", "02", "spindle_mode", "rpm"),
     ("M00", "", "program", "stop"),
@@ -122,7 +128,7 @@ NATIVE_G = {
 NATIVE_M = {98: "subprogram call", 99: "subprogram return"}
 
 LATHE_CODES: dict[str, CodeTable] = {
-    "A": CodeTable(SYSTEM_A, native_g={**NATIVE_G, **{str(n): "lathe drilling cycle" for n in (80, 83, 84, 85, 87, 88, 89)}},
+    "A": CodeTable(SYSTEM_A, native_g={**NATIVE_G, **{str(n): "lathe drilling cycle" for n in (83, 84, 85, 87, 88, 89)}},
                    native_m=NATIVE_M),
     "B": CodeTable(SYSTEM_B, native_g={**NATIVE_G, "98": "drilling cycle return to the initial level",
                                        "99": "drilling cycle return to the R level"}, native_m=NATIVE_M),

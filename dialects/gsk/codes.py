@@ -2,7 +2,8 @@
 
 The layout is Fanuc lathe G-code system A (DIALECTS.md 1.2): G90/G92/G94 single cycles, G70-G76 compound
 cycles, G32 threading, G50 coordinate setting and spindle clamp, G98/G99 feed per minute/revolution,
-U/W incremental addresses. Rows are ``(spelling, modal group, kind, argument)`` (``postproc.rs274.codes``).
+U/W incremental addresses. G18 selects the ZX plane, the only one a two-axis lathe turns in (a G17/G19 is an
+unknown code) [?: issue 29 and Fanuc T practice; the 980TDc G-code list was not reached]. Rows are ``(spelling, modal group, kind, argument)`` (``postproc.rs274.codes``).
 """
 
 from __future__ import annotations
@@ -15,6 +16,7 @@ ROWS = (
     ("G02", "01", "motion", "cw"),
     ("G03", "01", "motion", "ccw"),
     ("G04", "00", "dwell", None),
+    ("G18", "16", "plane", "ZX"),
     ("G20", "06", "units", "inch"),
     ("G21", "06", "units", "mm"),
     ("G28", "00", "home", "home"),

@@ -8,10 +8,11 @@ cycle loses its ``LatheCycle`` and is written as its ``CompoundMotion`` (a comme
 line, then the moves); its first block becomes a comment, and each profile block a comment too (the
 controller never ran it where it stands).
 
-For a target that reads no lathe programs (grbl, LinuxCNC's milling reading), the moves are made its
-own: the ZX plane is selected first, U/W increments become absolute X/Z (from the tracked position; a
+For a target that reads no lathe programs (grbl), the moves are made its own: the ZX plane is selected first, U/W increments become absolute X/Z (from the tracked position; a
 located error where it is unknown), and on a diameter program X is halved (such a target takes a
-radius: ``Dialect.DIAMETER_PROGRAMMING``).
+radius: ``Dialect.DIAMETER_PROGRAMMING``). A lathe target without the source's incremental addresses
+(LinuxCNC, whose U/W are axes) gets absolute X/Z too, and one that changes lathe tools with M6
+(``Dialect.LATHE_TURRET`` False) gets the turret index as a tool change.
 """
 
 from __future__ import annotations
@@ -58,7 +59,12 @@ def _lower(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iter
     native = _native(target, ctx)
     foreign = "lathe" not in target.MACHINE_TYPES
     radius = ctx.diameter and (foreign or not target.DIAMETER_PROGRAMMING)
-    tracker = _Position(ctx, radius) if foreign or radius else None
+    absolute = target.WRITER is not None and dict(target.INCREMENTAL_AXES) != dict(ctx.increments)
+    """A target written to has not the source's incremental addresses (LinuxCNC's U/W are axes): U/W become
+    X/Z. (The simulator, which writes nothing, reads the source's own.)"""
+    tracker = _Position(ctx, radius) if foreign or radius or absolute else None
+    turret = foreign or not target.LATHE_TURRET
+    offsets_noted = False
     plane_set = not foreign
     start_mode = ctx.state.feed_mode  # read before any block: the source's mode at the start
     target_mode = target.LATHE_FEED_AT_START if not foreign else "per_min"
@@ -95,9 +101,12 @@ def _lower(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iter
             if "FeedMode" not in block.sections:
                 block.add(FeedMode(start_mode))  # the target starts in another feed mode: say the source's
                 block.changed()
-        if foreign:
+        if turret:
+            select = sections.get("ToolSelect")
             if not _turret(block, ctx, turning):
                 continue
+            if not foreign and not offsets_noted and "ToolSelect" in block.sections:
+                offsets_noted = _note_offsets(select, block, ctx, target)
             turning = _turns_after(block, turning)
         if tracker is not None:
             if not plane_set and ("Motion" in sections or "CompoundMotion" in sections):
@@ -142,6 +151,21 @@ def _turret(block: Block, ctx: Context, turning: bool) -> bool:
         block.sections["ToolSelect"] = ToolSelect(lathe_tool(select.number))
         block.add(ToolChange())
         block.changed()
+    return True
+
+
+def _note_offsets(select: object, block: Block, ctx: Context, target: type[Dialect]) -> bool:
+    """A lathe target that changes tools as a mill does applies the tool's X/Z offsets from its own tool table
+    only with its tool length offset code [K: LinuxCNC's lathe tool table and G43], which is not written (the set-up holds no lathe offsets to
+    simulate it with): a warning at the first index written that names an offset (``select``, the block's
+    T as read). True once warned."""
+    if not isinstance(select, ToolSelect) or not isinstance(select.number, int) or select.number < 100 \
+            or select.number % 100 == 0:
+        return False
+    ctx.diagnostics.warn(f"T{select.number:04d} selects offset {select.number % 100:02d}: {target.NAME} changes the tool "
+                         "as a mill does and applies the tool's offsets from its own tool table only with its tool "
+                         "length offset code, which is not written (set the tool table and add that code, or make "
+                         "the tool change apply them)", ctx.at(block))
     return True
 
 

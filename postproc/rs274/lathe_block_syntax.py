@@ -45,6 +45,7 @@ class LatheBlockSyntax(WordBlockSyntax):
         table = self.table(ctx).g
         cycle: tuple[str, str] | None = None
         motion = False
+        cancel: str | None = None
         for letter, num in words:
             if _UPPER.get(letter) == "G":
                 entry = table.get(g_key(num))
@@ -52,7 +53,16 @@ class LatheBlockSyntax(WordBlockSyntax):
                     cycle = (str(entry[2]), "G" + num)
                 elif entry is not None and entry[0] == "01":
                     motion = True
+                elif entry is not None and entry[1] == "cycle_cancel":
+                    cancel = num
         extra = ctx.state.extra
+        if cancel is not None and not motion and SINGLE_KEY in extra:
+            codes = self.table(ctx)
+            rapid, linear = codes.spell("motion", "rapid"), codes.spell("motion", "linear")
+            raise ProgramError(f"G{cancel} while the single cycle {extra[SINGLE_KEY][1]} is in force: whether it ends "
+                               "it differs between controls (Haas: it does [K], Fanuc T: only a motion code does "
+                               f"[K]); program {rapid} or {linear} instead",
+                               ctx.at(block, col_of_word(block, "G", cancel)))
         if cycle is not None:
             self._cycle_block(block, ctx, cycle[0], cycle[1])
             if table[g_key(cycle[1][1:])][0] == "01":

@@ -16,7 +16,7 @@ from typing import Any, ClassVar
 from ..errors import UnsupportedError
 from ..expr import Expr
 from ..ir import Block, Motion, Section
-from ..lathe_sections import LatheCycle
+from ..lathe_sections import LatheCycle, ThreadLead
 from .lathe_words import FIRST_WORDS, ONE_WORDS, SECOND_WORDS
 from .writer import WordWriter
 
@@ -29,7 +29,7 @@ _LETTER_ORDER: dict[str, tuple[str, ...]] = {
 class LatheWordWriter(WordWriter):
     """Writes lathe sections; a dialect with lathe tables subclasses it (mill blocks are unchanged)."""
 
-    IGNORED: ClassVar[frozenset[str]] = frozenset(("InProfile",))
+    IGNORED: ClassVar[frozenset[str]] = frozenset(("InProfile", "ThreadLead"))
     MONOTONIC_CHECK_WORD: ClassVar[str] = ""
     """The letter of the profile monotonicity check of G71/G72 (GSK: K), '' where there is none (the
     check is left out: the translation has already checked the profile)."""
@@ -68,8 +68,12 @@ class LatheWordWriter(WordWriter):
 
     def generate(self, block: Block) -> str:
         """A block; a one-block cycle written as two gets its first block on a line before it, and a
-        first block merged into a one-block cycle leaves a comment where it stood."""
-        if "LatheCycle" not in block.sections:
+        first block merged into a one-block cycle leaves a comment where it stood. A spindle clamp beside a
+        spindle speed (LinuxCNC's ``G96 S.. D..``) goes on a line of its own before it: both are S here."""
+        sections = block.sections
+        if "SpindleClamp" in sections and "SpindleSpeed" in sections and "CoordinateSet" not in sections:
+            return self._clamp_first(block)
+        if "LatheCycle" not in sections:
             return WordWriter.generate(self, block)  # the common block: no cycle words to place
         self._pending_first = None
         self._merged_first = False
@@ -81,6 +85,13 @@ class LatheWordWriter(WordWriter):
             note = self.comment(f"{self.source_text(block)}: in the next block")
             text = (rest + " " if rest else "") + note + (block.eol or "\n")
         return text
+
+    def _clamp_first(self, block: Block) -> str:
+        first = Block(block.line, None, "\n")
+        first.sections = {k: v for k, v in block.sections.items() if k in ("BlockDelete", "SpindleClamp")}
+        rest = Block(block.line, None, block.eol)
+        rest.sections = {k: v for k, v in block.sections.items() if k != "SpindleClamp"}
+        return self.generate(first) + self.generate(rest)
 
     def _words(self, s: LatheCycle, table: dict[str, tuple[str, str]], block: Block,
                order: tuple[str, ...] | None = None) -> list[str]:
@@ -122,6 +133,13 @@ class LatheWordWriter(WordWriter):
             return str(count)
         return self.number(float(value), letter)
 
+    def cycle_cancel_words(self, s: Any, block: Block) -> list[str]:
+        """A lathe reads no drilling cycle into a neutral one (they stay verbatim), so its canned-cycle cancel
+        (G80 on Fanuc T and Haas) has nothing to end: a control without the code writes nothing for it."""
+        if self.ctx.lathe and self.codes.spell("cycle_cancel", None) is None:
+            return []
+        return super().cycle_cancel_words(s, block)
+
     def coordinate_set_words(self, s: Any, block: Block) -> list[str]:
         code = self.code("coordinate_set", None, "coordinate setting", block)
         return [code, *(axis + self.length(value, block, axis) for axis, value in s.axes.items())]
@@ -134,7 +152,37 @@ class LatheWordWriter(WordWriter):
             return []
         return super().distance_mode_words(s, block)
 
+    _feed_stale = False
+    """A thread move's lead was written as F (``ThreadLead``), where the source's feed rate stayed: the next
+    feed move restates it."""
+
     def motion_words(self, s: Motion, block: Block) -> list[str]:
+        """A lathe's move (``_lathe_motion_words``). A thread move whose lead is no feed rate (``ThreadLead``,
+        read from LinuxCNC's ``G33 K``) is written with its lead as F, which here sets the feed rate too: the
+        next feed move that names none writes the source's rate again."""
+        words = self._lathe_motion_words(s, block)
+        sections = block.sections
+        if "Feed" in sections:
+            self._feed_stale = False
+        lead = sections.get("ThreadLead")
+        if s.mode == "thread" and isinstance(lead, ThreadLead):
+            if "Feed" in sections:
+                self.unsupported("a thread move with both a lead and a feed rate", block)
+            words.append("F" + self.feed_number(lead.lead, block))
+            self._feed_stale = True
+        elif self._feed_stale and s.mode in ("linear", "cw", "ccw") and "Feed" not in sections:
+            rate = self.modal.feed
+            if not isinstance(rate, (int, float)):
+                self.unsupported("a feed move after a thread, at a feed rate not known here", block)
+            words.append("F" + self.feed_number(float(rate), block))
+            self._feed_stale = False
+        return words
+
+    def feed_words(self, s: Any, block: Block) -> list[str]:
+        self._feed_stale = False
+        return super().feed_words(s, block)
+
+    def _lathe_motion_words(self, s: Motion, block: Block) -> list[str]:
         """In incremental mode on a lathe without G91, X and Z are written as U and W. A lathe-only target
         refuses a mill program's motion (its Y, its XY arcs and their centres mean nothing there)."""
         if not self.ctx.lathe and self.target is not None and "mill" not in self.target.MACHINE_TYPES:

@@ -439,12 +439,29 @@ class Simulator:
                         self.incremental and not (absolute or machine), machine)
         if mode == "rapid":
             self.line_move("rapid", target, line, emit)
-        elif mode == "linear" or mode == "thread":
+        elif mode == "linear":
             self.line_move("feed", target, line, emit)
+        elif mode == "thread":
+            self.thread_move(block, target, emit)
         elif mode in ("cw", "ccw"):
             self.arc_move(block, m, target, emit, absolute or machine)
         else:
             raise UnsupportedError(f"motion '{mode}' cannot be simulated", self._at(block))
+
+    def thread_move(self, block: Block, target: dict[str, float], emit: Callable[[Event], None]) -> None:
+        """A spindle-synchronised thread move: ``f`` is its lead per revolution whatever the feed mode (Fanuc
+        ``G32 F``: F is the lead [K]; LinuxCNC ``G33 K``: the block's ``ThreadLead``)."""
+        lead = block.sections.get("ThreadLead")
+        value = self.feed if lead is None else lead.lead * self.scale  # type: ignore[attr-defined]
+        if value is None:
+            raise ProgramError(NO_FEED, self._at(block), needs="F")
+        if self.header_mode is None:
+            self.header_mode = self.modal.feed_mode  # as a first feed move would set it
+        self.sync = value
+        try:
+            self.line_move("feed", target, block.line, emit)
+        finally:
+            self.sync = None
 
     def rigid_tap(self, block: Block, tap: Any, absolute: bool, emit: Callable[[Event], None]) -> None:
         """A spindle-synchronised tap (``postproc.synchronised_tap``): a ``tap`` move to the end point and

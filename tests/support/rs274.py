@@ -193,12 +193,15 @@ def _mm(v: float, scale: float) -> float:
 
 
 def canonical_moves(lines: Iterable[str] | str, *, start: tuple[float, float, float] | None = None,
-                    feeds: bool = False) -> list[dict[str, Any]]:
+                    feeds: bool = False, synced: bool = False) -> list[dict[str, Any]]:
     """Parse canonical call lines (rs274 output or an ``expected`` file) into toolpath events (see module doc).
 
     With ``feeds``, feed moves and arcs carry ``"f"``: the last ``SET_FEED_RATE``, read in the units in
     force when it was called (LinuxCNC keeps the physical rate across a unit change), in mm per
     minute, or mm per revolution under G95 (inverse time, G93, is not modelled).
+
+    With ``synced``, a spindle-synchronised feed (G33, G76: between ``START_SPEED_FEED_SYNC`` and
+    ``STOP_SPEED_FEED_SYNCH``) carries ``"sync"``: its distance per revolution along the path, in mm.
 
     ``start`` is the position in mm (canonical frame) before the first call; by default it is unknown, so the first straight move is never dropped as zero-length and an arc as the
     very first motion takes its normal-axis centre from its end point. (Standalone rs274 starts at 0, 0, 0.)
@@ -214,6 +217,7 @@ def canonical_moves(lines: Iterable[str] | str, *, start: tuple[float, float, fl
     flood = mist = False
     feed: float | None = None  # mm per minute (or per rev)
     sync: float | None = None  # the pitch of a spindle-synchronised move (START_SPEED_FEED_SYNC), mm
+    in_sync = False  # between START_SPEED_FEED_SYNC and STOP_SPEED_FEED_SYNCH
     for line in lines:
         m = _CALL.match(line)
         if not m:
@@ -225,6 +229,9 @@ def canonical_moves(lines: Iterable[str] | str, *, start: tuple[float, float, fl
             feed = _numbers(args)[0] * scale
         elif name == "START_SPEED_FEED_SYNC":
             sync = _numbers(args)[0] * scale
+            in_sync = True
+        elif name == "STOP_SPEED_FEED_SYNCH":
+            in_sync = False
         elif name == "RIGID_TAP":
             v = _numbers(args)
             back = pos or (0.0, 0.0, 0.0)
@@ -245,6 +252,8 @@ def canonical_moves(lines: Iterable[str] | str, *, start: tuple[float, float, fl
                            "x": _mm(v[0], scale), "y": _mm(v[1], scale), "z": _mm(v[2], scale)})
             if feeds and name == "STRAIGHT_FEED" and feed is not None:
                 events[-1]["f"] = round(feed, PLACES)
+            if synced and in_sync and name == "STRAIGHT_FEED" and sync is not None:
+                events[-1]["sync"] = round(abs(sync), PLACES)
         elif name == "ARC_FEED":
             v = _numbers(args)
             first, second, c_first, c_second, rotation, normal_end = v[:6]

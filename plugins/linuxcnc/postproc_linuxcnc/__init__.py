@@ -1,4 +1,4 @@
-"""LinuxCNC (RS274/NGC) milling dialect, shipped as a separate plugin distribution.
+"""LinuxCNC (RS274/NGC) milling and lathe dialect, shipped as a separate plugin distribution.
 
 It registers through the ``postproc`` entry-point group and hooks, exactly as a third party would.
 Reading follows the RS274/NGC rules (DIALECTS.md §2.1 "LinuxCNC / RS274-NGC baseline"): numbers
@@ -39,6 +39,12 @@ NATIVE = frozenset({
 })
 
 
+def _thread_feed_apart(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """``lathe_writer.feed_apart``, imported when a translation to LinuxCNC first runs."""
+    from .lathe_writer import feed_apart
+    return feed_apart(blocks, ctx, target)
+
+
 def _subprogram_layout(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
     """``layout.subprograms_after_callers``, imported when a translation to LinuxCNC first runs."""
     from .layout import subprograms_after_callers
@@ -49,11 +55,13 @@ class Linuxcnc(Dialect):
     NAME = "linuxcnc"
     LOWER_CASE: ClassVar[bool] = True
     """The reader takes lower-case words (the controller reads them as upper case)."""
-    DESCRIPTION = "LinuxCNC 2.9 milling (RS274/NGC with O-words, parameters and expressions)"
+    DESCRIPTION = "LinuxCNC 2.9 milling and turning (RS274/NGC with O-words, parameters and expressions)"
     READER = Lazy[type[Reader]](".reader:LinuxcncReader")
     """Imported when a run first reads LinuxCNC (``Lazy``), as are the writer and the syntax objects (with
     the O-word and expression readers)."""
     WRITER = Lazy[type[Writer]](".writer:LinuxcncWriter")
+    LATHE_WRITER = Lazy[type[Writer]](".lathe_writer:LinuxcncLatheWriter")
+    """The writer of a lathe program (``writer_class``): its own class, so a mill's keeps the fast lane."""
     PIPELINE_FILE = "linuxcnc.xml"
     CYCLE_WORDS = rs274_cycle_words(CODES, ("L",))
     """R level, Q peck/shift, P dwell (seconds), L repeats."""
@@ -82,10 +90,11 @@ class Linuxcnc(Dialect):
     """``( )`` and ``;`` comments; ``(MSG,`` ``(LOGOPEN,`` ... act (``active_comments.ACTIVE``)."""
     LINE_RULE = Lazy[LineRule](".lines:LINES")
     """rs274 reads at most 252 bytes a line: a longer comment is shortened (``lines.py``)."""
-    LOWERING = (stops_after_motion, _subprogram_layout)
+    LOWERING = (stops_after_motion, _subprogram_layout, _thread_feed_apart)
     """A moving block's spindle stop and coolant off go in a block of their own after it: LinuxCNC runs
     them before the motion (``postproc.rs274.order_of_execution``); another dialect's subprograms stand
-    after their callers, and a cycle gets the return level its source assumed (``layout``)."""
+    after their callers, and a cycle gets the return level its source assumed (``layout``); a thread
+    block's F goes on a line before it (``lathe_writer.feed_apart``: G33 refuses F)."""
     CYCLE_SEMANTICS = "rs274"
     """How the native cycles move: start below R rises to R first, G98 returns to the old Z only when
     it is above R, G91 R is measured from the Z at the block's start, G74/G84/G89 feed out to the
@@ -96,6 +105,19 @@ class Linuxcnc(Dialect):
     """G4 P and a cycle's P are seconds."""
     START_RETURN_LEVEL = "r"
     """The retract mode in force at program start (LinuxCNC's interpreter starts in G99)."""
+    MACHINE_TYPES = frozenset({"mill", "lathe"})
+    """Mills and lathes (the set-up's ``machineType``; mill when it says nothing). A lathe reads G7/G8, G33 K,
+    G96 S D into lathe sections (``lathe``); the RS274/NGC lathe cycles (G70-G72, G76) stay verbatim."""
+    DIAMETER_PROGRAMMING = True
+    """G7: X is a diameter (G8 a radius), per the set-up's ``xProgramming``; a translation writes the mode
+    (and G18) before its first block, as a LinuxCNC lathe's start-up code may say either [K: the
+    interpreter starts in G17 and radius mode unless the ini's RS274NGC_STARTUP_CODE says otherwise]."""
+    LATHE_FEED_AT_START = "per_min"
+    """LinuxCNC starts in G94, units per minute [K: RS274/NGC default; V: rs274 resets to
+    ``SET_FEED_MODE(0, 0)`` at the program end]."""
+    LATHE_TURRET = False
+    """A lathe tool is changed as a mill's, ``T1 M6`` (its offsets from the tool table): a Fanuc-family
+    turret index ``T0101`` is written so (``postproc.cycles.lathe_lowering``)."""
     PECK_CLEARANCE_MM = 0.254
     """G73 retract and G83 re-approach clearance: a constant of the interpreter (0.010 in), not a
     machine parameter, so reading LinuxCNC uses it whatever the set-up's ``Cycles`` say, and a peck
@@ -111,6 +133,11 @@ class Linuxcnc(Dialect):
         from .program import LinuxcncProgramSyntax
         return Pipeline(cls.NAME, [LinuxcncProgramSyntax(), PolarSyntax(), NgcBlockSyntax(),
                                    CannedCycleResolveSyntax("rs274"), ModalStateSyntax()])
+
+    @classmethod
+    def writer_class(cls, ctx: Context) -> type[Writer] | None:
+        """``LATHE_WRITER`` for a lathe program, else ``WRITER``."""
+        return cls.LATHE_WRITER if ctx.lathe else cls.WRITER
 
     @classmethod
     def context(cls, file: str, setup: MachineSetup, diagnostics: Diagnostics) -> Context:

@@ -18,7 +18,7 @@ from postproc.ir import Block, NativeCode, PathControl
 from postproc.rs274.codes import CodeTable, g_key
 from postproc.rs274.ngc_block_syntax import NgcWordBlockSyntax
 
-from . import arc_centres
+from . import arc_centres, lathe
 from .codes import CODES, M_GROUPS
 from .rigid_tap import MODE as RIGID_TAP, read_rigid_tap
 from .tool_entry import TABLES as TOOL_TABLES, read_tool_entry
@@ -79,8 +79,25 @@ class NgcBlockSyntax(NgcWordBlockSyntax):
         block.add(DynamicCutterCompensation(side, float(diameter),
                                             None if orientation is None else int(orientation)))
 
+    def _g_code(self, ctx: Context, block: Block, num: str, codes: dict[str, Any], natives: list[str],
+                key: str | None = None) -> None:
+        """G7/G8 on a lathe set-up are read against its ``xProgramming`` (``lathe.read_x_mode``), G33 and
+        G96/G97 into lathe sections; on a mill all stay verbatim."""
+        code = g_key(num) if key is None else key
+        if ctx.lathe and code in lathe.MODES:
+            lathe.read_x_mode(block, ctx, num)
+            return
+        if not ctx.lathe and code in lathe.LATHE_ONLY:
+            natives.append(code)  # G33, G96/G97 on a mill: verbatim, as before the lathe reading
+            return
+        super()._g_code(ctx, block, num, codes, natives, key)
+
     def g_sections(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],
                    used: set[str], cycle_block: bool) -> None:
+        for group, (_, kind, arg, num) in list(codes.items()):
+            if kind == "spindle_mode":  # G96 S D / G97 (``lathe``)
+                del codes[group]
+                lathe.read_spindle_mode(block, ctx, str(arg), num, values, used)
         super().g_sections(block, ctx, codes, values, used, cycle_block)
         if arc_centres.GROUP in codes or arc_centres.STATE_KEY in ctx.state.extra:
             arc_centres.apply_mode(block, ctx, codes)
@@ -90,7 +107,9 @@ class NgcBlockSyntax(NgcWordBlockSyntax):
                 "P" in values and "P" not in used or "Q" in values and "Q" not in used):
             _blending_tolerance(block, ctx, path, values, used)  # type: ignore[arg-type]
         motion = sections.get("Motion")
-        if motion is not None and motion.mode == RIGID_TAP:  # type: ignore[attr-defined]
+        if motion is not None and motion.mode == "thread":  # type: ignore[attr-defined]
+            lathe.read_thread(block, ctx, motion, values, used)  # type: ignore[arg-type]
+        elif motion is not None and motion.mode == RIGID_TAP:  # type: ignore[attr-defined]
             read_rigid_tap(block, ctx, motion, values, used)  # type: ignore[arg-type]
 
     def _data_setting(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],

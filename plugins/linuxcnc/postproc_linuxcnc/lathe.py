@@ -1,0 +1,126 @@
+"""LinuxCNC's lathe words, read into neutral sections: ``G7``/``G8``, ``G96 S.. D..``/``G97`` and ``G33 K``.
+
+Each rule was checked with the packaged rs274 (2.9) [V], beside LinuxCNC ``docs/src/gcode/g-code.adoc``:
+
+* ``G7`` (diameter mode) and ``G8`` (radius mode) say how X reads. The reading (and the translation of
+  every other line) follows the set-up's ``xProgramming``, so the one that agrees with it is read and
+  the other is refused at its column: a program that switches mode mid-way is not read.
+* ``G96 S.. D..``: constant surface speed S (m/min under G21, ft/min under G20, as Fanuc's G96 S) with
+  the spindle clamped at D rpm. G96 needs S ("S word missing with G96"); D is refused beside anything
+  but G96 and cutter compensation ("D word with no G41 ... or G96 to use it"); a G96 without D lifts
+  the clamp (rs274 prints ``SET_SPINDLE_MODE(0 1e30)``). A Fanuc-family clamp (``G50 S``) stays until the
+  next, so a later G96 without D, after one with D, means what no other control here says: refused.
+* ``G33 X.. Z.. K..``: a spindle-synchronised move, K the distance per revolution along the path
+  ("K word missing with g33/g33.1"; an F beside it is refused: "F word used with a g33/g33.1"). It
+  changes neither the feed rate nor the feed mode. K becomes the neutral lead along the major axis
+  (``postproc.thread_lead``); a taper from a position not yet known is refused.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from postproc.context import Context
+from postproc.errors import ProgramError
+from postproc.expr import Expr
+from postproc.ir import Block, Motion
+from postproc.lathe_sections import SpindleClamp, SpindleMode, ThreadLead
+from postproc.rs274.codes import g_key
+from postproc.thread_lead import lead_along_major
+
+MODES = {"7": "diameter", "8": "radius"}
+"""G7/G8 -> how X reads."""
+LATHE_ONLY = frozenset(("33", "96", "97"))
+"""Codes the table reads into lathe sections on a lathe set-up only; a mill keeps them verbatim."""
+CLAMP_KEY = "linuxcnc.spindle_clamp"
+"""``ctx.state.extra`` key: the clamp of the last G96 (D), while one is in force."""
+
+
+def _col(block: Block, ctx: Context, num: str) -> int:
+    return ctx.column_of(block, "G", num)
+
+
+def read_x_mode(block: Block, ctx: Context, num: str) -> None:
+    """G7/G8 on a lathe: refused where it disagrees with the set-up's ``xProgramming``."""
+    mode = MODES[g_key(num)]
+    programmed = "diameter" if ctx.diameter else "radius"
+    if mode != programmed:
+        raise ProgramError(f"G{num} ({mode} mode) in a program read as {programmed}s: the set-up's "
+                           f"<Input xProgramming=\"{programmed}\"> decides how X reads (set it to {mode}; a "
+                           "program that switches mode is not read)", ctx.at(block, _col(block, ctx, num)))
+
+
+def read_spindle_mode(block: Block, ctx: Context, mode: str, num: str, values: dict[str, Any],
+                      used: set[str]) -> None:
+    """``G96 S.. [D..]`` or ``G97``: the mode, and on G96 its clamp."""
+    extra = ctx.state.extra
+    block.add(SpindleMode(mode))
+    if mode != "css":
+        return
+    if "S" not in values:
+        raise ProgramError(f"G{num} needs S, the surface speed (rs274: \"S word missing with G96\")",
+                           ctx.at(block, _col(block, ctx, num)))
+    clamp = values.get("D")
+    if clamp is None:
+        if extra.get(CLAMP_KEY) is not None:
+            raise ProgramError(f"G{num} without D after a G96 with D: LinuxCNC lifts the spindle clamp, which "
+                               "the Fanuc-family clamp (G50 S) cannot say; write D again",
+                               ctx.at(block, _col(block, ctx, num)))
+        return
+    if isinstance(clamp, Expr):
+        raise ProgramError("a computed D in G96 is not supported (write the number)",
+                           ctx.at(block, ctx.column_of(block, "D")))
+    if clamp <= 0:
+        raise ProgramError(f"G{num} D{clamp:g}: the spindle clamp must be positive",
+                           ctx.at(block, ctx.column_of(block, "D")))
+    used.add("D")
+    extra[CLAMP_KEY] = float(clamp)
+    block.add(SpindleClamp(float(clamp)))
+
+
+def read_thread(block: Block, ctx: Context, motion: Motion, values: dict[str, Any], used: set[str]) -> None:
+    """``G33``'s K -> the block's ``ThreadLead``; K and the refusals as rs274 makes them."""
+    code = next((num for letter, num in block.words if letter.upper() == "G" and g_key(num) == "33"), None)
+    col = _col(block, ctx, code) if code is not None else 1
+    if "F" in values:
+        raise ProgramError("F beside G33 (rs274: \"F word used with a g33/g33.1\"; set the feed rate in a block "
+                           "before)", ctx.at(block, ctx.column_of(block, "F")))
+    along = values.get("K")
+    if along is None:
+        raise ProgramError("G33 needs K, the distance per spindle revolution (rs274: \"K word missing with "
+                           "g33/g33.1\")", ctx.at(block, col))
+    used.add("K")
+    if isinstance(along, Expr) or any(isinstance(v, Expr) for v in motion.axes.values()):
+        raise ProgramError("a computed word in G33 is not supported (write the numbers)", ctx.at(block, col))
+    if along <= 0:
+        raise ProgramError(f"G33 K{along:g}: the distance per revolution must be positive",
+                           ctx.at(block, ctx.column_of(block, "K")))
+    dx, dz = _travel(block, ctx, motion, col)
+    block.add(ThreadLead(lead_along_major(float(along), dx, dz)))
+
+
+def _travel(block: Block, ctx: Context, motion: Motion, col: int) -> tuple[float, float]:
+    """The move's X travel (a radius) and Z travel; a start not yet known matters only for a taper."""
+    state = ctx.state
+    incremental = state.distance == "incremental"
+    distance = block.sections.get("DistanceMode")
+    if distance is not None:
+        incremental = distance.mode == "incremental"  # type: ignore[attr-defined]
+
+    def travel(axis: str) -> float | None:
+        value = motion.axes.get(axis)
+        start = state.position.get(axis)
+        if value is None:
+            return 0.0
+        if isinstance(value, Expr):
+            return None  # (refused before: ``read_thread``)
+        if incremental:
+            return float(value)
+        return None if start is None else float(value) - float(start)
+
+    dx, dz = travel("X"), travel("Z")
+    if dx is None or dz is None and dx != 0.0:
+        axis = "X" if dx is None else "Z"
+        raise ProgramError(f"G33 moving X from a {axis} not yet known (program an absolute {axis} first)",
+                           ctx.at(block, col))
+    return (dx / 2.0 if ctx.diameter else dx), (dz or 0.0)

@@ -1,0 +1,187 @@
+"""LinuxCNC as a lathe: reading its lathe words, and Fanuc T / GSK lathe programs translated to it.
+
+Expected texts are derived by hand from the rules in ``postproc_linuxcnc.lathe`` / ``lathe_writer`` (each
+checked with rs274 2.9): the mode line ``G18 G7``, ``G96 S.. D..`` carrying the Fanuc-family clamp, a thread
+as ``G33 .. K..`` with its F on a line before it, K along the path (``postproc.thread_lead``). The done-when
+programs (the bundled Fanuc T and GSK examples, and the seed's GSK G71/G70) verify at zero deviation and
+run in rs274 with the same moves as their source.
+"""
+
+from __future__ import annotations
+
+import io
+import math
+import re
+from pathlib import Path
+
+import pytest
+
+from postproc.api import translate
+from postproc.errors import ErrorList
+from postproc.ir import NativeCode
+from postproc.lathe_sections import SpindleClamp, SpindleMode, ThreadLead
+from postproc.setup.machine_setup import InputSettings, MachineSetup, load_setup
+from postproc.simulate.verify import verify_lines
+from postproc.api import read_program
+from tests.support.rs274 import available
+from tests.test_lathe import SEED
+from tests.test_lathe_rs274 import difference, ours, theirs
+
+ROOT = Path(__file__).resolve().parents[1]
+SETUPS = ROOT / "examples" / "setups"
+FANUC_T = load_setup(str(SETUPS / "fanuc_0i_tf.xml"))
+GSK = load_setup(str(SETUPS / "gsk_980tdc.xml"))
+LINUXCNC_LATHE = load_setup(str(SETUPS / "linuxcnc_lathe.xml"))
+PROGRAMS = [("fanuc", FANUC_T, p) for p in sorted((ROOT / "examples" / "fanuc-lathe").glob("*.nc"))] + \
+    [("gsk", GSK, p) for p in sorted((ROOT / "examples" / "gsk").glob("*.nc"))]
+
+
+def write(text: str, source: str, setup: MachineSetup) -> str:
+    out = io.StringIO()
+    translate(io.StringIO(text), out, file="in.nc", source=source, target="linuxcnc", setup=setup)
+    return out.getvalue()
+
+
+def code_lines(text: str) -> list[str]:
+    return [line for line in text.splitlines() if line[:1] not in ("(", "%", "")]
+
+
+# -- done when ---------------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("dialect,setup,path", [*PROGRAMS, ("gsk", GSK, "seed")],
+                         ids=[p.name for _, _, p in PROGRAMS] + ["gsk-seed"])
+def test_done_when_lathe_programs_verify_and_run_in_rs274(dialect: str, setup: MachineSetup, path: Path | str) -> None:
+    text = SEED if path == "seed" else Path(path).read_text()
+    ngc = write(text, dialect, setup)
+    assert code_lines(ngc)[0] == "G18 G7"
+    report = verify_lines(io.StringIO(text), io.StringIO(ngc), file_in="in.nc", file_out="out.ngc", source=dialect,
+                          target="linuxcnc", setup=setup, tolerance=0.0)
+    assert report.ok and report.max_deviation == 0.0, report.summary()
+    if available():
+        problem = difference(ours(text, dialect, setup), theirs(ngc))
+        assert problem is None, f"{problem}\n\n{ngc}"
+
+
+def test_done_when_the_bundled_programs_carry_css_feed_per_rev_and_threads() -> None:
+    outputs = {p.name: write(p.read_text(), d, s) for d, s, p in PROGRAMS}
+    assert "G96 D2500 S180 M3" in outputs["o2001_stepped_shaft.nc"].splitlines()  # G50 S2500 + G96 S180
+    assert all("G95" in text for name, text in outputs.items() if name.startswith("o2"))  # Fanuc T: G99
+    for name in ("o2003_thread.nc", "o0103_thread.nc"):
+        assert any(line.startswith("G33 ") and " K" in line for line in outputs[name].splitlines()), name
+
+
+# -- writing, by hand ----------------------------------------------------------------------------------
+
+def test_a_clamp_while_css_is_on_is_a_new_g96_with_the_speed_in_force() -> None:
+    text = write("G96 S180 M03\nG00 X50. Z2.\nG50 S3000\nG01 X40. F0.2\nG97 S800\nG96 S150\n", "fanuc", FANUC_T)
+    assert code_lines(text) == ["G18 G7", "G95 G96 S180 M3", "G0 X50. Z2.", "G96 S180 D3000",
+                                "G1 X40. F0.2", "G97 S800", "G96 D3000 S150", "M2"]
+
+
+def test_a_clamp_before_css_waits_for_its_g96() -> None:
+    text = write("G50 S2000\nG97 S500 M03\nG96 S120\n", "gsk", GSK)
+    assert code_lines(text) == ["G18 G7", "G97 S500 M3", "G96 D2000 S120", "M2"]
+    assert "(G50 S2000)" in text  # the block itself wrote nothing: its trace
+
+
+def test_a_straight_thread_is_g33_with_its_lead_and_f_before_it() -> None:
+    text = write("G97 S500 M03\nG00 X30. Z5.\nG32 Z-20. F1.5\nG00 X40.\nG01 Z-25.\n", "fanuc", FANUC_T)
+    assert code_lines(text)[3:] == ["F1.5", "G33 Z-20. K1.5", "G0 X40.", "G1 Z-25.", "M2"]  # F stays the lead
+
+
+def test_a_taper_thread_gets_k_along_its_path() -> None:
+    text = write("G97 S500 M03\nG00 X30. Z5.\nG32 X32. Z-15. F2.\n", "fanuc", FANUC_T)
+    line = next(line for line in text.splitlines() if line.startswith("G33"))
+    k = float(re.search(r"K([0-9.]+)", line).group(1))  # type: ignore[union-attr]
+    assert k == pytest.approx(2.0 * math.hypot(1.0, 20.0) / 20.0, abs=1e-6)  # radius 1 over Z 20
+
+
+def test_a_face_thread_is_refused_at_its_line() -> None:
+    with pytest.raises(ErrorList) as caught:
+        write("G97 S500 M03\nG00 X30. Z5.\nG32 X60. Z4. F1.\n", "fanuc", FANUC_T)
+    assert [str(e) for e in caught.value.errors] == [
+        "in.nc:3:1: error: the linuxcnc dialect cannot express a thread whose major axis is X (a face thread: "
+        "LinuxCNC's G33 K along such a path in diameter mode is not in our sources)"]
+
+
+def test_a_radius_program_gets_g8_and_keeps_its_x() -> None:
+    radius = MachineSetup(input=InputSettings(machine_type="lathe", x_programming="radius"))
+    assert code_lines(write("G99 G00 X30. Z5.\n", "fanuc", radius)) == ["G18 G8", "G95 G0 X30. Z5.", "M2"]
+
+
+# -- reading LinuxCNC lathe programs -----------------------------------------------------------------
+
+def read(text: str, setup: MachineSetup = LINUXCNC_LATHE) -> list:  # type: ignore[type-arg]
+    return read_program(io.StringIO(text), file="in.ngc", dialect="linuxcnc", setup=setup)
+
+
+def errors(text: str) -> list[str]:
+    with pytest.raises(ErrorList) as caught:
+        read(text)
+    return [str(e) for e in caught.value.errors]
+
+
+def test_lathe_words_read_into_sections() -> None:
+    blocks = read("G18 G7 G21\nG96 S150 D2200 M3\nG0 X20. Z2.\nG33 X22. Z-2. K1.\nG97 S500\nM2\n")
+    css = blocks[1].sections
+    assert css["SpindleMode"] == SpindleMode("css") and css["SpindleClamp"] == SpindleClamp(2200.0)
+    lead = blocks[3].sections["ThreadLead"]
+    assert isinstance(lead, ThreadLead)
+    assert lead.lead == pytest.approx(1.0 * 4.0 / math.hypot(1.0, 4.0))  # K along the path, radius 1 over Z 4
+    assert blocks[4].sections["SpindleMode"] == SpindleMode("rpm")
+
+
+def test_lathe_words_refused_as_rs274_refuses_them() -> None:
+    assert errors("G8\nM2\n") == [
+        'in.ngc:1:1: error: G8 (radius mode) in a program read as diameters: the set-up\'s <Input '
+        'xProgramming="diameter"> decides how X reads (set it to radius; a program that switches mode is not read)']
+    assert errors("G96 D2000 M3\nM2\n") == [
+        'in.ngc:1:1: error: G96 needs S, the surface speed (rs274: "S word missing with G96")']
+    assert errors("G0 X20. Z2.\nG33 Z-10.\nM2\n") == [
+        'in.ngc:2:1: error: G33 needs K, the distance per spindle revolution (rs274: "K word missing with '
+        'g33/g33.1")']
+    assert errors("G0 X20. Z2.\nG33 Z-10. K1. F0.2\nM2\n") == [
+        'in.ngc:2:15: error: F beside G33 (rs274: "F word used with a g33/g33.1"; set the feed rate in a block '
+        'before)']
+    assert errors("G96 S100 D2000\nG97 S500\nG96 S120\nM2\n") == [
+        "in.ngc:3:1: error: G96 without D after a G96 with D: LinuxCNC lifts the spindle clamp, which the "
+        "Fanuc-family clamp (G50 S) cannot say; write D again"]
+
+
+def test_g7_on_a_mill_set_up_stays_verbatim() -> None:
+    blocks = read("G7\nM2\n", MachineSetup())
+    assert isinstance(blocks[0].sections.get("NativeCode"), NativeCode)
+
+
+def test_a_linuxcnc_lathe_program_round_trips_byte_for_byte() -> None:
+    text = "G18 G7 G21 G95\nG96 S150 D2200 M3\nG0 X20. Z2.\nF0.2\nG33 X22. Z-2. K1.\nG1 X30.\nM2\n"
+    out = io.StringIO()
+    translate(io.StringIO(text), out, file="in.ngc", source="linuxcnc", target="linuxcnc", setup=LINUXCNC_LATHE)
+    assert out.getvalue() == text
+
+
+# -- LinuxCNC lathe programs towards the Fanuc family ------------------------------------------------
+
+def from_linuxcnc(text: str, target: str) -> str:
+    out = io.StringIO()
+    translate(io.StringIO(text), out, file="in.ngc", source="linuxcnc", target=target, setup=LINUXCNC_LATHE)
+    return out.getvalue()
+
+
+@pytest.mark.parametrize("target", ["fanuc", "gsk"])
+def test_g96_with_its_clamp_is_g50_s_then_g96(target: str) -> None:
+    text = from_linuxcnc("G18 G7 G21 G95\nG96 S150 D2200 M3\nG0 X20. Z2.\nM2\n", target)
+    assert text.splitlines()[1:3] == ["G50 S2200", "G96 S150 M03"]  # one block would hold two S words
+
+
+@pytest.mark.parametrize("target", ["fanuc", "gsk"])
+def test_a_g33_thread_is_g32_with_its_lead_and_the_feed_rate_restated(target: str) -> None:
+    program = ("G18 G7 G21 G95\nS500 M3\nG0 X20. Z2.\nG1 Z0. F0.2\nG33 Z-10. K1.5\nG0 X24.\nG1 X22. Z-12.\n"
+               "G33 X24. Z-16. K2.\nG1 X30.\nM2\n")
+    text = from_linuxcnc(program, target)
+    # K2. along a path of radius 1 over Z 4 is a lead of 2 * 4 / sqrt(17) = 1.940285 along Z
+    assert text.splitlines()[4:9] == ["G32 Z-10. F1.5", "G00 X24.", "G01 X22. Z-12. F0.2",
+                                      "G32 X24. Z-16. F1.940285", "G01 X30. F0.2"]
+    report = verify_lines(io.StringIO(program), io.StringIO(text), file_in="in.ngc", file_out="out.nc",
+                          source="linuxcnc", target=target, setup=LINUXCNC_LATHE, tolerance=0.0)
+    assert report.ok, report.summary()
