@@ -7,6 +7,8 @@ from __future__ import annotations
 
 from typing import Callable
 
+from mypy_extensions import mypyc_attr
+
 from ..block_rules import NO_FEED, ArcError, arc_centre
 from ..compensation.cutter_radius import CutterRadius, Item, Segment
 from ..compensation.rules import CutterRules
@@ -30,6 +32,7 @@ def _nowhere(ev: Event) -> None:
     raise AssertionError("an event released outside a block")
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class Moves:
     """Position, units and compensation of one program run; its moves become events (``out``)."""
 

@@ -7,6 +7,8 @@ from __future__ import annotations
 
 from typing import Any, Callable, Iterable, Iterator
 
+from mypy_extensions import mypyc_attr
+
 from ..block_rules import NO_FEED, needs_feed
 from ..compensation.rules import CutterRules
 from ..compensation.tool_length import AXIS as LENGTH_AXIS
@@ -26,6 +28,7 @@ _EVENT_KEYS = frozenset(("ToolSelect", "ToolChange", "SpindleControl", "Coolant"
                          "ProgramControl", "MachineFunction"))
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class Simulator(Moves):
     """Modal state and position of one program run; ``block`` emits the block's events in order."""
 
