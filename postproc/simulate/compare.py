@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from itertools import zip_longest
+from itertools import chain, zip_longest
 from typing import Iterable, Iterator
 
 from mypy_extensions import mypyc_attr
@@ -249,8 +249,8 @@ def compare(events_in: Iterable[Event], events_out: Iterable[Event], *, start_in
     """Walk two toolpaths (each with its header first) and report their largest deviation."""
     report = Report(tolerance)
     # feeds compared per minute: an inverse-time program and its translation for a target without G93
-    it_in = per_minute(_controlled(iter(events_in)), start_in)
-    it_out = per_minute(_controlled(iter(events_out)), start_out)
+    it_in = per_minute_from_first(_controlled(iter(events_in)), start_in)
+    it_out = per_minute_from_first(_controlled(iter(events_out)), start_out)
     head_in, head_out = next(it_in, {}), next(it_out, {})
     if head_in.get("x_mode") != head_out.get("x_mode"):
         # a diameter program and its radius translation: compare both as radii (true geometry)
@@ -277,6 +277,31 @@ def compare(events_in: Iterable[Event], events_out: Iterable[Event], *, start_in
     if head_in.get("x_mode") == "diameter" and report.where_at is not None:  # both diameters: as radii
         report.where_at = tuple((x / 2.0, y, z) for x, y, z in report.where_at)  # type: ignore[assignment]
     return report
+
+
+def per_minute_from_first(events: Iterator[Event], start: dict[str, float]) -> Iterator[Event]:
+    """``per_minute(events, start)``, which converts the path from its first inverse-time feed on: until then
+    the events pass as they are (``per_minute`` follows every move's end point, a dict of three floats a
+    move, to know where an inverse-time move starts), and from there ``per_minute`` continues from the
+    last move's end, where it would stand. A header in inverse time: ``per_minute`` from the start.
+    ``tests/test_verify.py`` holds this to ``per_minute`` on random paths."""
+    head = next(events, None)
+    if head is None:
+        return
+    if head.get("feed_mode") == "inverse_time":
+        yield from per_minute(chain((head,), events), start)
+        return
+    yield head
+    last: Event | None = None
+    for ev in events:
+        if ev.get("feed_mode") == "inverse_time":
+            rest = per_minute(chain((head, ev), events), start if last is None else last)
+            next(rest)  # the header, already given
+            yield from rest
+            return
+        if "move" in ev:
+            last = ev
+        yield ev
 
 
 def _controlled(events: Iterator[Event]) -> Iterator[Event]:
