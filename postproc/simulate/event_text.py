@@ -16,32 +16,40 @@ str, int, bool, None, float or such a dict values is handed whole to ``fallback`
 from __future__ import annotations
 
 from json.encoder import encode_basestring_ascii
-from typing import Any, Callable
+from typing import Any, Callable, Final
 
 from ..geometry import PLACES
 
-_UNITS: int = 10 ** PLACES
-_SCALE = float(_UNITS)
-_SMALLEST = 1e-4
+_PLACES: Final = 6
+_UNITS: Final = 1_000_000
+_SCALE: Final = 1e6
+_SMALLEST: Final = 1e-4
 """``float.__repr__`` writes an exponent below this (``9e-05``) and from 1e16 on."""
-_LARGEST = 1e8
+_LARGEST: Final = 1e8
 """Below this a whole number of millionths has at most 14 digits (one float per decimal)."""
-_KEYS: dict[str, str] = {}
+_KEYS: Final[dict[str, str]] = {}
 """Key -> its text with the separator (``'"x": '``): a toolpath has a dozen keys."""
-_WORDS: dict[str, str] = {}
+_WORDS: Final[dict[str, str]] = {}
 """Short string values (``"feed"``, ``"XY"``, ``"cw"``) -> their text; at most ``_MOST_WORDS`` kept."""
-_MOST_WORDS = 512
+_MOST_WORDS: Final = 512
+assert _PLACES == PLACES and _UNITS == 10 ** PLACES == _SCALE
+# Final: compiled, a constant is a C constant, not a look-up in the module's dictionary (17 a float)
 
 
 def float_text(value: float) -> str:
     """``float.__repr__(value)``; ValueError for a value that is not finite (json's ``allow_nan=False``)."""
     if _SMALLEST <= value < _LARGEST or -_LARGEST < value <= -_SMALLEST:
         units = int(value * _SCALE + (0.5 if value > 0.0 else -0.5))
-        if units % _UNITS != 0 and units / _SCALE == value:
-            digits = str(abs(units))
-            whole = digits[:-PLACES] or "0"
-            fraction = digits[-PLACES:].rjust(PLACES, "0").rstrip("0")
-            return ("-" if units < 0 else "") + whole + "." + fraction
+        magnitude = -units if units < 0 else units
+        whole = magnitude // _UNITS
+        fraction = magnitude - whole * _UNITS
+        if fraction != 0 and units / _SCALE == value:
+            digits = str(fraction + _UNITS)  # "1" and the six digits, leading zeros kept
+            end = _PLACES + 1
+            while fraction % 10 == 0:
+                fraction //= 10
+                end -= 1
+            return f"{'-' if units < 0 else ''}{whole}.{digits[1:end]}"
     if value - value != 0.0:  # inf - inf and nan - nan are nan
         raise ValueError(f"Out of range float values are not JSON compliant: {value!r}")
     return float.__repr__(value)

@@ -4,7 +4,7 @@ simulation records instead of applying (``verify`` compares those). Compiled wit
 
 from __future__ import annotations
 
-from typing import Any
+from typing import Any, Final
 
 from ..context import Context
 from ..errors import ProgramError
@@ -22,16 +22,18 @@ LINEAR_AXES = frozenset("XYZUVW")
 """Axes converted from inches; rotary axes (A, B, C) are in degrees whatever the length unit."""
 
 
-_UNITS: int = 10 ** PLACES
+_UNITS: Final = 1_000_000
 """A toolpath's numbers count in these units (millionths of a mm): ``num`` rounds to a whole number of them."""
-_SCALE = float(_UNITS)
-_FAST = 1e14
+_SCALE: Final = 1e6
+_FAST: Final = 1e14
 """``num``'s integer path holds for values below this many units: the units (< 2**47) are exact in a
 float, the value's error in units is below 0.012 (half an ulp), and a whole number of units divided by
 ``_SCALE`` is correctly rounded and integral only when the units are a multiple of ``_UNITS``."""
-_TIE = 2.3e-16
+_TIE: Final = 2.3e-16
 """Relative error of ``value * _SCALE`` (a product's half ulp, 2**-53, with margin): a fraction of a
 unit that close to one half may lie on the other side of it, and goes to ``round``."""
+assert _UNITS == 10 ** PLACES == _SCALE
+# Final: compiled, a constant is a C constant, not a look-up in the module's dictionary (six a call)
 
 
 def num(value: float) -> float | int:

@@ -5,14 +5,14 @@ dispatch that drives them is ``postproc.simulate.simulator``; what the simulator
 
 from __future__ import annotations
 
-from typing import Callable
+from typing import Callable, Final
 
 from mypy_extensions import mypyc_attr
 
 from ..block_rules import NO_FEED, ArcError, arc_centre
 from ..compensation.cutter_radius import CutterRadius, Item, Segment
 from ..compensation.rules import CutterRules
-from ..compensation.tool_length import AXIS as LENGTH_AXIS, ToolLength
+from ..compensation.tool_length import AXIS as _AXIS, ToolLength
 from ..compensation.tool_table import ToolTable
 from ..context import Context
 from ..errors import Location, PostprocError, ProgramError, UnsupportedError
@@ -21,9 +21,12 @@ from ..geometry import CENTRE_KEYS
 from ..ir import Block, DataSetting, Motion
 from ..lowering.program_end import EndTracker
 from ..state import PLANE_AXES, ModalState
-from .events import LINEAR_AXES, TOUCH_OFF, UNEVALUATED, Event, num, start_position
+from .events import LINEAR_AXES as _LINEAR, TOUCH_OFF, UNEVALUATED, Event, num, start_position
 from .travel import TravelCheck, TravelError
 
+LENGTH_AXIS: Final = _AXIS
+LINEAR_AXES: Final = _LINEAR
+# Final: compiled, a C constant, not a look-up in the module's dictionary (every move reads them)
 _INITIAL_SETTINGS = {"cutter compensation": "off", "work offset": "1"}
 _CENTRE_LETTER = {"X": "I", "Y": "J", "Z": "K"}
 

@@ -5,26 +5,29 @@ into the toolpath's events (``postproc.simulate.toolpath`` assembles the reading
 
 from __future__ import annotations
 
-from typing import Any, Callable, Iterable, Iterator
+from typing import Any, Callable, Final, Iterable, Iterator
 
 from mypy_extensions import mypyc_attr
 
 from ..block_rules import NO_FEED, needs_feed
 from ..compensation.rules import CutterRules
-from ..compensation.tool_length import AXIS as LENGTH_AXIS
+from ..compensation.tool_length import AXIS as _AXIS
 from ..context import Context
 from ..cycles.lathe_lowering import lathe_tool
 from ..errors import PostprocError, ProgramError, UnsupportedError
 from ..event_order import after_motion
 from ..expr import Expr
 from ..ir import Block, MachineFunction, Motion, Section
-from ..state import MM_PER_INCH, MODAL_KEYS
+from ..state import MM_PER_INCH, MODAL_KEYS as _MODAL
 from .events import HEADER_LOOKAHEAD, UNEVALUATED, UNSIMULATED, Event, header, num, _setting_text
 from .moves import Moves
 
-_SETTING_KEYS = frozenset((*UNSIMULATED, "DataSetting", "ToolLengthOffset", "DynamicCutterCompensation"))
-_COMPENSATION_KEYS = frozenset(("CutterCompensation", "ToolLengthOffset", "DynamicCutterCompensation"))
-_EVENT_KEYS = frozenset(("ToolSelect", "ToolChange", "SpindleControl", "Coolant", "Dwell", "SpindleOrientation",
+LENGTH_AXIS: Final = _AXIS
+MODAL_KEYS: Final = _MODAL
+# Final: compiled, a C constant, not a look-up in the module's dictionary (every block reads them)
+_SETTING_KEYS: Final = frozenset((*UNSIMULATED, "DataSetting", "ToolLengthOffset", "DynamicCutterCompensation"))
+_COMPENSATION_KEYS: Final = frozenset(("CutterCompensation", "ToolLengthOffset", "DynamicCutterCompensation"))
+_EVENT_KEYS: Final = frozenset(("ToolSelect", "ToolChange", "SpindleControl", "Coolant", "Dwell", "SpindleOrientation",
                          "ProgramControl", "MachineFunction"))
 
 
