@@ -10,18 +10,27 @@ NATIVE := $(VENV)/.compiled
 
 .PHONY: install compile run test bench typecheck fuzz clean
 
+# The build's own requirements (pyproject.toml [build-system] requires: setuptools, the pinned mypy, pydantic),
+# installed into the venv once, so that no pip install below makes a throw-away build environment of its
+# own (two of them on a fresh machine, each fetching mypy) and the compile step starts at once. Built in the
+# venv, setuptools' warning that an editable install is editable would print a box per package: silenced.
+BUILD_REQUIRES = $(shell $(PYTHON) -c 'import tomllib; print(" ".join(chr(39) + r + chr(39) for r in tomllib.load(open("pyproject.toml", "rb"))["build-system"]["requires"]))')
+
 $(STAMP): pyproject.toml setup.py $(PLUGINS)
-	@echo "make: creating $(VENV) and installing postproc, its plugins and their dependencies (about a minute)"
+	@echo "make: [1/2] creating $(VENV): postproc, its plugins, their dependencies and the build tools (about a minute)"
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/pip install --quiet --upgrade pip
-	POSTPROC_PURE=1 $(BIN)/pip install --quiet -e '.[test,render,dask]' $(foreach p,$(PLUGINS),-e $(dir $(p)))
+	$(BIN)/pip install --quiet $(BUILD_REQUIRES)
+	POSTPROC_PURE=1 PYTHONWARNINGS=ignore::UserWarning $(BIN)/pip install --quiet --no-build-isolation -e '.[test,render,dask]' $(foreach p,$(PLUGINS),-e $(dir $(p)))
 	touch $(STAMP)
 
 # Compiles the hot path (pure Python where there is no C compiler), again when a hot module is edited
-# (meanwhile postproc runs it as pure Python: postproc --version says which).
+# (meanwhile postproc runs it as pure Python: postproc --version says which). mypyc type-checks and writes
+# a C file a module (about a minute on one core), then the C compiler runs on every core (setup.py).
 $(NATIVE): $(STAMP) $(HOT)
-	@echo "make: compiling the $(words $(HOT)) hot modules with mypyc (a minute or two; postproc already runs, as pure Python)"
-	$(BIN)/pip install --quiet --no-deps -e .
+	@echo "make: [2/2] compiling the $(words $(HOT)) hot modules with mypyc: type-checking, then C on $$(nproc) cores (a few minutes; postproc already runs, as pure Python)"
+	@start=$$(date +%s); PYTHONWARNINGS=ignore::UserWarning $(BIN)/pip install --quiet --no-deps --no-build-isolation -e . && \
+	  echo "make: compiled in $$(( $$(date +%s) - start )) s: $$($(BIN)/postproc --version)"
 	touch $(NATIVE)
 
 # Byte-compile the editable packages (core, dialects, plugins) once, so that a start does not compile

@@ -109,8 +109,10 @@ def test_rounds_report_a_failing_command_and_a_wrong_output(tmp_path: Path) -> N
 
 
 SUMMARY_ROWS = [
-    "translate fanuc->fanuc --normalize", "translate fanuc->grbl (warn)", "translate fanuc->linuxcnc",
-    "toolpath --format jsonl", "verify fanuc / linuxcnc", "cycles fanuc->grbl", "cycles fanuc->linuxcnc",
+    "translate fanuc->fanuc --normalize", "translate fanuc->fanuc (copy)", "translate fanuc->grbl (warn)",
+    "translate fanuc->linuxcnc", "translate fanuc->isg", "translate fanuc->fagor (warn)",
+    "toolpath --format jsonl", "verify fanuc / linuxcnc", "peak RSS verify fanuc / linuxcnc",
+    "RSS growth toolpath --format jsonl", "RSS growth verify fanuc / linuxcnc", "cycles fanuc->grbl", "cycles fanuc->linuxcnc",
     "macro WHILE loop fanuc->grbl", "start-up: translate a one-line program", "start-up: postproc dialects",
     "peak RSS translate fanuc->fanuc --normalize", "RSS growth translate fanuc->linuxcnc",
     "batch --jobs 1", "batch --jobs 2",
@@ -136,6 +138,9 @@ def test_quick_run_end_to_end(tmp_path: Path) -> None:
         assert figure and figure.group(1) != "-", line
         if "peer" not in line and "gcode-lib" not in line:  # a peer may be missing; baselines never
             assert re.search(r"\s\d+\.\d\d\s", line), line
+    for row in ("toolpath --format jsonl", "verify fanuc / linuxcnc", "translate fanuc->isg", "translate fanuc->fagor"):
+        # issue 30's targets: every throughput row of the simulator and of a lowering translation has one
+        assert all(re.search(r"\s>= [\d.]+x\s+(PASS|MISS|n/a)", line) for line in summary if line.startswith(row)), row
     verdicts = re.findall(r"\s(PASS|MISS|n/a)\s", "\n".join(summary) + "\n")
     assert len(verdicts) == sum(1 for line in summary if re.search(r"\s[<>]=? ", line))
     assert re.search(r"^targets: \d+ PASS, \d+ MISS, \d+ not measured$", out, re.M)

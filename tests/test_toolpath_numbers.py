@@ -1,6 +1,7 @@
-"""How a toolpath writes its numbers and its lines: ``toolpath.num`` against its definition on any float,
-and the JSON lines encoder of a run (``export.event_encoder``) against ``json.JSONEncoder(allow_nan=False)
-.encode``, the definition of the format, on any event."""
+"""How a toolpath writes its numbers and its lines: ``toolpath.num`` against its definition on any float
+(and on the near-ties its integer path hands to ``round``), and the JSON lines encoders of a run
+(``export.event_encoder``, ``event_text.event_text``) against ``json.JSONEncoder(allow_nan=False).encode``,
+the definition of the format, on any event and on the events a simulation makes."""
 
 from __future__ import annotations
 
@@ -12,6 +13,7 @@ from hypothesis import given, settings, strategies as st
 
 from postproc.errors import ProgramError
 from postproc.commands.export import event_encoder
+from postproc.simulate.event_text import event_text, float_text
 from postproc.simulate.toolpath import num
 
 
@@ -49,3 +51,80 @@ def test_the_encoder_refuses_what_is_not_finite(bad: float) -> None:
         ENCODER({"line": 3, "move": "feed", "x": bad})
     with pytest.raises(ValueError):
         ENCODER({"line": 3, "move": "feed", "controlled": {"x": bad}})
+
+
+def _by_round(value: float) -> float | int:
+    r = round(value, 6)
+    return 0 if r == 0 else int(r) if r.is_integer() else r
+
+
+def _near_ties() -> st.SearchStrategy[float]:
+    """Values within a few ulps of a half millionth (where ``value * 1e6`` may round across the half),
+    of a whole millionth, and decimals as a CAM program writes them."""
+    units = st.integers(-10**14, 10**14)
+    half = units.map(lambda k: (k + 0.5) / 1e6)
+    whole = units.map(lambda k: k / 1e6)
+    stepped = st.tuples(st.one_of(half, whole), st.integers(-4, 4)).map(
+        lambda t: _step(t[0], t[1]))
+    decimal = st.tuples(st.integers(-10**9, 10**9), st.integers(0, 9)).map(lambda t: float(f"{t[0]}e-{t[1]}"))
+    return st.one_of(stepped, decimal)
+
+
+def _step(value: float, ulps: int) -> float:
+    for _ in range(abs(ulps)):
+        value = math.nextafter(value, math.inf if ulps > 0 else -math.inf)
+    return value
+
+
+@settings(max_examples=2000, deadline=None)
+@given(value=st.one_of(_near_ties(), st.floats(allow_nan=False, allow_infinity=False, min_value=-1e9, max_value=1e9)))
+def test_num_is_round_on_near_ties_too(value: float) -> None:
+    written, expected = num(value), _by_round(value)
+    assert type(written) is type(expected) and written == expected
+
+
+@pytest.mark.parametrize("value", [0.5e-6, -0.5e-6, 1.5e-6, 2.5e-6, 1.2345675, -1.2345675, 0.0000125, 99999999.9999995,
+                                   1e14 / 1e6 - 0.5e-6, -0.0, 5e-324, 1e300, 0.1 + 0.2])
+def test_num_is_round_at_chosen_ties(value: float) -> None:
+    written, expected = num(value), _by_round(value)
+    assert type(written) is type(expected) and written == expected
+
+
+@settings(max_examples=2000, deadline=None)
+@given(value=st.one_of(_near_ties().map(num), st.floats(allow_nan=False, allow_infinity=False)))
+def test_float_text_is_repr(value: float) -> None:
+    if isinstance(value, float):
+        assert float_text(value) == repr(value)
+
+
+def _json(event: dict[object, object]) -> str:
+    return json.JSONEncoder(allow_nan=False).encode(event)
+
+
+@settings(max_examples=500, deadline=None)
+@given(event=EVENTS)
+def test_event_text_writes_what_json_writes(event: dict[object, object]) -> None:
+    assert event_text(event, ENCODER) == _json(event)
+
+
+AXES = st.one_of(_near_ties().map(num), st.integers(-10**6, 10**6))
+MOVES = st.fixed_dictionaries(
+    {"line": st.integers(1, 10**7), "move": st.sampled_from(["rapid", "feed", "cw", "ccw", "tap"]),
+     "x": AXES, "y": AXES, "z": AXES},
+    optional={"cx": AXES, "cy": AXES, "plane": st.sampled_from(["XY", "ZX", "YZ"]), "f": AXES,
+              "feed_mode": st.sampled_from(["per_rev", "inverse_time"]),
+              "controlled": st.fixed_dictionaries({"x": AXES, "y": AXES, "z": AXES})})
+
+
+@settings(max_examples=1000, deadline=None)
+@given(event=MOVES)
+def test_event_text_writes_moves_as_json_does(event: dict[object, object]) -> None:
+    assert event_text(event, ENCODER) == _json(event)
+
+
+@pytest.mark.parametrize("bad", [math.inf, -math.inf, math.nan])
+def test_event_text_refuses_what_is_not_finite(bad: float) -> None:
+    with pytest.raises(ValueError):
+        event_text({"line": 3, "move": "feed", "x": bad}, ENCODER)
+    with pytest.raises(ValueError):
+        event_text({"line": 3, "move": "feed", "controlled": {"x": bad}}, ENCODER)

@@ -248,3 +248,50 @@ def test_fanuc_to_grbl_translation_verifies(name: str, longest: float) -> None:
     report.allow_ignored = True
     assert not report.ok  # measured, not left out: --allow-ignored does not accept it
     assert report.moves > 20
+
+
+# -- verify's per-minute shortcut against per_minute itself ---------------------------------------------
+
+from hypothesis import given, settings, strategies as st  # noqa: E402
+
+from postproc.lowering.inverse_time import per_minute  # noqa: E402
+from postproc.simulate.compare import per_minute_from_first  # noqa: E402
+
+_COORD = st.integers(-50, 50).map(float)
+_MODES = st.sampled_from([None, "inverse_time", "per_min", "per_rev"])
+
+
+@st.composite
+def _path(draw: Any) -> list[dict[str, Any]]:
+    """A toolpath: a header (per minute or in inverse time), then straight and arc moves in any feed mode
+    and machine events between them (arcs on a circle of their own, so their centre is consistent)."""
+    head: dict[str, Any] = {"toolpath": 1, "units": "mm", "dialect": "fanuc"}
+    if draw(st.booleans()):
+        head["feed_mode"] = draw(st.sampled_from(["inverse_time", "per_rev"]))
+    events: list[dict[str, Any]] = [head]
+    x = y = 0.0
+    for line in range(1, draw(st.integers(0, 12)) + 1):
+        kind = draw(st.sampled_from(["rapid", "feed", "feed", "ccw", "event"]))
+        if kind == "event":
+            events.append({"line": line, "event": "coolant", "on": draw(st.booleans())})
+            continue
+        ev: dict[str, Any] = {"line": line, "move": kind}
+        if kind == "ccw":  # a half circle about a centre one unit left of here
+            ev.update(x=x - 2.0, y=y, z=draw(_COORD), cx=x - 1.0, cy=y, plane="XY")
+        else:
+            ev.update(x=draw(_COORD), y=draw(_COORD), z=draw(_COORD))
+        if kind != "rapid":
+            ev["f"] = draw(st.integers(1, 500))
+            mode = draw(_MODES)
+            if mode is not None:
+                ev["feed_mode"] = mode
+        x, y = ev["x"], ev["y"]
+        events.append(ev)
+    return events
+
+
+@settings(max_examples=300, deadline=None)
+@given(path=_path(), start=st.one_of(st.none(), st.fixed_dictionaries({"X": _COORD, "Y": _COORD, "Z": _COORD})))
+def test_per_minute_from_first_is_per_minute(path: list[dict[str, Any]], start: dict[str, float] | None) -> None:
+    start = start or {"X": 0.0, "Y": 0.0, "Z": 0.0}
+    assert list(per_minute_from_first(iter(path), start)) == list(per_minute(path, start))

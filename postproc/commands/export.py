@@ -10,6 +10,7 @@ from ..errors import Diagnostics, Location, ProgramError, UsageError
 from ..setup.machine_setup import MachineSetup
 from ..dialect import Dialect
 from ..drawing.backplot import Backplot
+from ..simulate.event_text import event_text
 from ..simulate.toolpath import Event, start_position, toolpath_events
 
 
@@ -64,12 +65,13 @@ def event_encoder() -> Callable[[Event], str]:
 
 def write_jsonl(events: Iterable[Event], out: TextIO, file: str = "<toolpath>") -> None:
     """One JSON object a line; strict JSON (no ``NaN``/``Infinity``): a non-finite value is an error
-    at the event's source line."""
+    at the event's source line. The text is json's (``postproc.simulate.event_text``, which hands what it
+    does not write itself to json's encoder)."""
     write = out.write
     encode = event_encoder()
     for ev in events:
         try:
-            text = encode(ev)
+            text = event_text(ev, encode)
         except ValueError:
             bad = ", ".join(k for k, v in ev.items() if isinstance(v, float) and not math.isfinite(v))
             raise ProgramError(f"the toolpath has a value beyond the range of a float ({bad})",

@@ -13,7 +13,7 @@ from itertools import zip_longest
 from typing import Any, Iterable, Iterator, Protocol
 
 from ..geometry import PLANE_INDEX
-from .moves import Move, same_feed
+from .normal_move import Move, same_feed
 
 Item = Any
 """A normalised move (``Move``) or a machine event (a dict)."""

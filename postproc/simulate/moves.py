@@ -1,33 +1,527 @@
-"""A normalised move of a toolpath (``verify`` compares two streams of them; ``chords`` reads them too)."""
+"""The simulator's position and moves: programmed points to mm, straight and arc moves as events, and
+the tool length and cutter radius compensation they pass through (``postproc.compensation``). The block
+dispatch that drives them is ``postproc.simulate.simulator``; what the simulator assumes is in
+``postproc.simulate.toolpath``'s docstring."""
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from typing import Callable, Final
 
-FEED_TOLERANCE = 1e-4
-"""Relative: feeds agree when within 0.01 % (a converted inch feed written with fewer places)."""
+from mypy_extensions import mypyc_attr
+
+from ..block_rules import NO_FEED, ArcError, arc_centre
+from ..compensation.cutter_radius import CutterRadius, Item, Segment
+from ..compensation.rules import CutterRules
+from ..compensation.tool_length import AXIS as _AXIS, ToolLength
+from ..compensation.tool_table import ToolTable
+from ..context import Context
+from ..errors import Location, PostprocError, ProgramError, UnsupportedError
+from ..expr import Expr
+from ..geometry import CENTRE_KEYS
+from ..ir import Block, DataSetting, Motion
+from ..lowering.inverse_time import move_length
+from ..lowering.program_end import EndTracker
+from ..state import PLANE_AXES, ModalState
+from .events import LINEAR_AXES as _LINEAR, TOUCH_OFF, UNEVALUATED, Event, num, start_position
+from .travel import TravelCheck, TravelError
+
+LENGTH_AXIS: Final = _AXIS
+LINEAR_AXES: Final = _LINEAR
+# Final: compiled, a C constant, not a look-up in the module's dictionary (every move reads them)
+_INITIAL_SETTINGS = {"cutter compensation": "off", "work offset": "1"}
+_CENTRE_LETTER = {"X": "I", "Y": "J", "Z": "K"}
 
 
-@dataclass(slots=True)
-class Move:
-    """A normalised move: possibly several merged moves of one file."""
-
-    kind: str
-    start: dict[str, float]
-    end: dict[str, float]
-    f: float | None
-    first_line: int
-    last_line: int
-    direction: dict[str, float] | None = None
-    """Unit vector of a straight run (None for arcs)."""
-    centre: tuple[float, float] | None = None
-    plane: str | None = None
-    radius: float = 0.0
-    sweep: float = 0.0
+def _nowhere(ev: Event) -> None:
+    raise AssertionError("an event released outside a block")
 
 
-def same_feed(a: float | None, b: float | None) -> bool:
-    """Feeds agree within ``FEED_TOLERANCE`` (relative); a rapid's None only with None."""
-    if a is None or b is None:
-        return a is b
-    return abs(a - b) <= max(1e-9, FEED_TOLERANCE * max(abs(a), abs(b)))
+@mypyc_attr(allow_interpreted_subclasses=True)
+class Moves:
+    """Position, units and compensation of one program run; its moves become events (``out``)."""
+
+    def __init__(self, ctx: Context, travel_warn: bool = False, cutter_rules: CutterRules | None = None) -> None:
+        setup = ctx.setup
+        self.ctx = ctx
+        self.axes = tuple(setup.machine.axes)
+        self.keys = tuple((a, a.lower()) for a in self.axes)
+        self.pos = start_position(setup)
+        self.rounded = {a: num(v) for a, v in self.pos.items()}
+        self.modal = ModalState()
+        """The program's modal state (units, plane, distance and feed mode, tool...), in program terms."""
+        self.home = {axis: t.home * setup.machine.mm() for axis, t in setup.travel.items()
+                     if t.home is not None and axis in self.axes and axis in LINEAR_AXES}
+        """Where a reference return goes on a mill, mm: the set-up's ``<Axis home>`` (machine coordinates,
+        which are the work coordinates here), else machine zero."""
+        self.scale = 1.0
+        """mm per program unit (from ``modal.units``)."""
+        self.incremental = False
+        """``modal.distance`` is incremental (kept at hand: every move reads it)."""
+        self.feed: float | None = None
+        """The feed in force in mm/min (or the inverse-time value), None until programmed."""
+        self.header_mode: str | None = None
+        """Feed mode the header states, fixed by the first feed move (None until then)."""
+        self.spindle: str | None = None
+        """Spindle direction of the last spindle event (None before the first): a tool change stops a
+        turning spindle first, as a tool changer does, and stopping a stopped spindle is no event."""
+        self.lathe = ctx.lathe
+        self.increments = ctx.increments
+        """Addresses that move an axis by an increment (a lathe's U and W: ``Dialect.INCREMENTAL_AXES``)."""
+        self.diameter = ctx.diameter
+        """X words are diameters: the position is kept as a radius (true geometry, arcs with radius I) and
+        written as a diameter."""
+        if self.lathe:
+            self.modal.plane = "ZX"
+            self.modal.feed_mode = ctx.state.feed_mode  # the reading dialect's mode at the start
+        self.ended = False
+        self.end = EndTracker()
+        self.live_after_end: list[int] = []
+        """Lines of the live blocks after the program end (code a streamed controller would run)."""
+        self.current: Block | None = None
+        """The block being simulated (for error locations)."""
+        self.unsimulated: list[tuple[int, str, str]] = []
+        """(line, setting, value) each time a setting the simulation does not apply changes
+        (``UNSIMULATED``): ``verify`` compares these between the two programs."""
+        self.settings: dict[str, str] = dict(_INITIAL_SETTINGS)
+        self.undeclared: set[str] = set()
+        """Machine-specific codes warned about as undeclared (once each)."""
+        self.offsets: dict[int, dict[str, float]] = {}
+        """Work offsets a G10 set, mm per axis, by work system (1 = G54; 0 the external offset)."""
+        self.shift: dict[str, float] = {}
+        """What the active work system adds to an absolute point (empty until a G10 sets an offset)."""
+        self.travel: TravelCheck | None = None
+        """The travel-limit check, when the set-up declares limits (``postproc.simulate.travel``)."""
+        self.travel_warn = travel_warn
+        """A move beyond the travel is a warning (``--on-unsupported warn``), not an error."""
+        if setup.travel_limited():
+            self.travel = TravelCheck(self, self._travel_report)
+        self.tools = ToolTable(setup)
+        self.length = ToolLength(self.tools)
+        self.cutter = None if cutter_rules is None else CutterRadius(cutter_rules, self._release)
+        """Cutter radius compensation, when the dialect's rules are known (else it stays a setting)."""
+        self.compensating = False
+        """Moves go through ``postproc.compensation`` (an offset is in force, a move waits in the cutter
+        queue, or the controlled point has not yet met the programmed one again)."""
+        self.crounded = dict(self.rounded)
+        """The controlled point of the last move written, rounded (while ``compensating``)."""
+        self.out: Callable[[Event], None] = _nowhere
+        """Where released events go (the ``emit`` of the block being run)."""
+        self.spindle_tool: int | None = setup.machine.start_tool
+        """The tool the last tool change put in the spindle (before any: the set-up's ``startTool``, None:
+        the machine's, unknown)."""
+        self.sync: float | None = None
+        """While a rigid tap moves (``rigid_tap``): its pitch in mm per revolution, the ``f`` of its moves."""
+
+
+    def target(self, block: Block, axes: dict[str, float | Expr], absolute: bool,
+               machine: bool = False) -> dict[str, float]:
+        """End point in mm of programmed axis words (absolute or incremental); an absolute point in work
+        coordinates is shifted by the work offset a G10 set (``shift``), one in machine coordinates not."""
+        pos = self.pos
+        out = dict(pos)
+        incremental = self.incremental and not absolute
+        shift = self.shift if not machine and not incremental else None
+        increments = self.increments  # empty on a mill: one test of an empty dict per word
+        for axis, value in axes.items():
+            if isinstance(value, Expr):
+                raise ProgramError(UNEVALUATED, self._at(block, axis))
+            real = increments.get(axis) if increments else None
+            if real is not None:
+                if real not in pos:
+                    raise ProgramError(f"axis {real} is not on this machine (axes {''.join(self.axes)})",
+                                       self._at(block, axis))
+                v = value * self.scale * (0.5 if self.diameter and real == "X" else 1.0)
+                out[real] = out[real] + v
+                continue
+            if axis not in pos:
+                raise ProgramError(f"axis {axis} is not on this machine (axes {''.join(self.axes)})",
+                                   self._at(block, axis))
+            v = value * self.scale if axis in LINEAR_AXES else value
+            if self.diameter and axis == "X":
+                v *= 0.5
+            out[axis] = pos[axis] + v if incremental else v + shift.get(axis, 0.0) if shift else v
+        return out
+
+
+    def data_setting(self, block: Block, setting: DataSetting) -> None:
+        """G10: a work offset is kept (mm, per axis) and shifts later absolute points in its system; a tool
+        register is kept for the offsets that read it; other data is recorded for ``verify``."""
+        if setting.table in TOUCH_OFF:
+            self.touch_off(block, setting)
+            return
+        if not setting.table.startswith("work_offset"):
+            if not self.tools.write(setting, self.scale):
+                self.unsimulated.append((block.line, "tool offset data", setting.text))
+            return
+        key = setting.index if setting.table == "work_offset" else 100 + setting.index
+        entry = self.offsets.setdefault(key, {})
+        for axis, value in setting.values.items():
+            if isinstance(value, Expr):
+                raise ProgramError(UNEVALUATED, self._at(block, axis))
+            v = value * self.scale if axis in LINEAR_AXES else value
+            entry[axis] = entry.get(axis, 0.0) + v if setting.incremental else v
+        self._shift()
+
+    def touch_off(self, block: Block, setting: DataSetting) -> None:
+        """A tool entry measured where the tool stands (LinuxCNC ``G10 L10``/``L11``): the length that makes
+        the current point read Z in the active work system (its offset cancels) or in work system 9, with
+        the length in force now; R sets the radius (``postproc_linuxcnc.tool_entry``)."""
+        for letter in setting.values:
+            if isinstance(setting.values[letter], Expr):
+                raise ProgramError(UNEVALUATED, self._at(block, letter))
+        z = setting.values.get("Z")
+        if isinstance(z, (int, float)):
+            if LENGTH_AXIS not in self.pos:
+                raise ProgramError(f"axis {LENGTH_AXIS} is not on this machine", self._at(block, "Z"))
+            machine = self.pos[LENGTH_AXIS] + self.length.offset
+            system = self.shift.get(LENGTH_AXIS, 0.0) if setting.table == TOUCH_OFF[0] \
+                else self.offsets.get(9, {}).get(LENGTH_AXIS, 0.0)
+            self.tools.set("length", setting.index, machine - (z * self.scale + system))
+        r = setting.values.get("R")
+        if isinstance(r, (int, float)):
+            self.tools.set("radius", setting.index, r * self.scale)
+
+    def compensation(self, block: Block, emit: Callable[[Event], None]) -> None:
+        """A block's cutter compensation and tool length changes (before its motion, as the controller
+        runs them): compensation ends first, so the move it queued is written with the old setting."""
+        get = block.sections.get
+        cutter, cc = self.cutter, get("CutterCompensation")
+        if cutter is not None and cc is not None:
+            mode = cc.mode  # type: ignore[attr-defined]
+            if mode == "off":
+                cutter.cancel()
+            elif mode in ("left", "right"):
+                if self.modal.plane != "XY":
+                    raise UnsupportedError(f"cutter compensation in the {self.modal.plane} plane cannot be "
+                                           "simulated", self._at(block))
+                cutter.start(mode, self._cutter_radius(block, cc.register))  # type: ignore[attr-defined]
+                self._begin()
+            else:
+                raise UnsupportedError(f"cutter compensation '{mode}' cannot be simulated", self._at(block))
+        dynamic = get("DynamicCutterCompensation")
+        if dynamic is not None:
+            if cutter is None or self.modal.plane != "XY":
+                raise UnsupportedError(f"cutter compensation by a diameter in the {self.modal.plane} plane cannot be "
+                                       "simulated", self._at(block))
+            cutter.start(dynamic.mode, dynamic.radius(self.scale))  # type: ignore[attr-defined]  # D/2, negative: other side
+            self._begin()
+        tl = get("ToolLengthOffset")
+        if tl is not None:
+            try:
+                self.length.change(tl.mode, tl.register, tl.length, self.scale)  # type: ignore[attr-defined]
+            except PostprocError as err:
+                raise err.located(self._at(block, "H")) from None
+            if self.length.offset:
+                self._begin()
+
+    def _cutter_radius(self, block: Block, register: int | None) -> float:
+        """The radius a G41/G42 takes: its register's, or by the rules the spindle tool's (LinuxCNC)."""
+        if register is None:
+            assert self.cutter is not None
+            if self.cutter.rules.register_absent != "tool":
+                raise UnsupportedError("cutter compensation without its register cannot be simulated",
+                                       self._at(block))
+            if self.spindle_tool is None:
+                raise ProgramError("cutter compensation without its register takes the tool in the spindle, which "
+                                   "is not known here (no tool change before it): program its register",
+                                   self._at(block))
+            register = self.spindle_tool
+        try:
+            return self.tools.radius(register)
+        except PostprocError as err:
+            raise err.located(self._at(block, "D")) from None
+
+    def _begin(self) -> None:
+        """Moves from here on go through the compensation."""
+        if not self.compensating:
+            self.compensating = True
+            self.crounded = dict(self.rounded)
+
+    def _shift(self) -> None:
+        """The offset of the active work system plus the external one (P0), applied to absolute points."""
+        active = self.offsets.get(self.modal.work_offset, {})
+        common = self.offsets.get(0, {})
+        self.shift = {a: active.get(a, 0.0) + common.get(a, 0.0) for a in set(active) | set(common)}
+
+    def _coordinate(self, block: Block, axis: str, value: float) -> None:
+        """Coordinate setting: the tool's present point gets ``value`` on ``axis``; nothing moves."""
+        if axis not in self.pos:
+            raise ProgramError(f"axis {axis} is not on this machine (axes {''.join(self.axes)})", self._at(block, axis))
+        v = value * self.scale * (0.5 if self.diameter and axis == "X" else 1.0)
+        if self.travel is not None:
+            self.travel.coordinate_set(axis, v)
+        self.pos[axis] = v
+        self.rounded[axis] = num(v)
+
+    def line_move(self, kind: str, target: dict[str, float], line: int, emit: Callable[[Event], None]) -> None:
+        if self.compensating:
+            if self._cutter_idle() and not self.diameter:
+                self._offset_line(kind, target, line)
+            else:
+                self._compensated(kind, target, line, None, None)
+            return
+        pos = self.pos
+        rounded = self.rounded.copy()
+        for axis, value in target.items():
+            if value != pos[axis]:
+                rounded[axis] = num(value)
+        if rounded == self.rounded:
+            self.pos = target
+            return
+        ev: Event = {"line": line, "move": kind}
+        for axis, key in self.keys:
+            ev[key] = rounded[axis]
+        if self.diameter and "x" in ev:
+            ev["x"] = num(target["X"] * 2.0)
+        if kind != "rapid":
+            self._feed_into(ev)
+        self.pos, self.rounded = target, rounded
+        emit(ev)
+
+    def _programmed(self, axes: dict[str, float | Expr]) -> set[str]:
+        """The machine axes a block's axis words name (a lathe's U and W are X and Z)."""
+        increments = self.increments
+        return {increments.get(a, a) for a in axes} if increments else set(axes)
+
+    def _travel_report(self, err: TravelError) -> None:
+        """A travel problem: an error, or a warning under ``--on-unsupported warn``; the block's events
+        stay (the path is still drawn)."""
+        if self.travel_warn:
+            self.ctx.diagnostics.warn(err.message, err.location)
+        else:
+            self.ctx.diagnostics.error(err)
+
+    def arc_move(self, block: Block, m: Motion, target: dict[str, float], emit: Callable[[Event], None],
+                 absolute: bool = False) -> None:
+        plane = self.modal.plane
+        a1, a2, normal = PLANE_AXES[plane]
+        pos = self.pos
+        for axis in (a1, a2):
+            if axis not in pos:
+                raise ProgramError(f"an arc in the {plane} plane needs axis {axis}, not on this machine",
+                                   self._at(block))
+        s = (pos[a1], pos[a2])
+        e = (target[a1], target[a2])
+        clockwise = m.mode == "cw"
+        offsets: dict[str, float] = {}
+        for axis, value in (m.center or {}).items():
+            if axis not in (a1, a2):
+                raise ProgramError(f"arc centre offset along {axis} is outside the {plane} plane",
+                                   self._at(block, _CENTRE_LETTER.get(axis, "G")))
+            if isinstance(value, Expr):
+                raise ProgramError(UNEVALUATED, self._at(block, _CENTRE_LETTER.get(axis, "G")))
+            offsets[axis] = value
+        scale = self.scale
+        if isinstance(m.radius, Expr):
+            raise ProgramError(UNEVALUATED, self._at(block, "R"))
+        radius = None if m.radius is None else m.radius * scale
+        try:
+            c = arc_centre(s, e, (a1, a2), radius, {a: v * scale for a, v in offsets.items()}, clockwise)
+        except ArcError as err:
+            raise err.located(self._at(block, err.letter)) from None
+        if self.travel is not None:
+            programmed = self._programmed(m.axes)
+            incremental = self.incremental and not absolute
+            if c is None:
+                self.travel.line(block, pos, target, programmed, incremental, False)
+            else:
+                self.travel.arc(block, pos, target, programmed, incremental, c, (a1, a2), clockwise)
+        if c is None:
+            self.line_move("feed", target, block.line, emit)  # zero radius, zero length: dropped
+            return
+        if self.compensating:
+            self._compensated(m.mode or "cw", target, block.line, c, plane)
+            return
+        rounded = {a: num(v) for a, v in target.items()}
+        ev: Event = {"line": block.line, "move": m.mode}
+        for axis, key in self.keys:
+            ev[key] = rounded[axis]
+        centre = {a1: c[0], a2: c[1], normal: pos.get(normal, 0.0)}
+        for axis in ("X", "Y", "Z"):
+            if axis in pos:
+                ev[CENTRE_KEYS[axis]] = num(centre[axis])
+        if self.diameter and "x" in ev:
+            ev["x"] = num(target["X"] * 2.0)
+            ev[CENTRE_KEYS["X"]] = num(centre["X"] * 2.0)
+        ev["plane"] = plane
+        self._feed_into(ev)
+        self.pos, self.rounded = target, rounded
+        emit(ev)
+
+    # -- compensation -------------------------------------------------------------------------------
+    def _compensated(self, kind: str, target: dict[str, float], line: int, centre: tuple[float, float] | None,
+                     plane: str | None) -> None:
+        """A move handed to the compensation: the cutter queue (when compensating the radius) or straight
+        to ``_write``; the programmed point moves on at once."""
+        fields: Event = {"line": line}
+        if kind != "rapid":
+            self._feed_into(fields)
+            if self.modal.feed_mode == "inverse_time" and self.sync is None and not self._cutter_idle():
+                self._programmed_rate(fields, kind, target, centre, plane)
+        pos = self.pos
+        seg = Segment(kind, fields, target, pos.get(LENGTH_AXIS, 0.0), self.length.offset)
+        cutter = self.cutter
+        if centre is not None:
+            seg.centre = seg.ccentre = centre
+            seg.turn = 1 if kind == "ccw" else -1
+            seg.normal = pos.get(PLANE_AXES[plane or "XY"][2], 0.0)
+        if not self._cutter_idle():
+            assert cutter is not None
+            if cutter.on and (self.modal.plane != "XY" or "X" not in pos or "Y" not in pos):
+                raise UnsupportedError(f"cutter compensation in the {self.modal.plane} plane cannot be simulated")
+            start = (pos.get("X", 0.0), pos.get("Y", 0.0))
+            if centre is None:
+                cutter.line(seg, start)
+            else:
+                cutter.arc(seg, start)
+        else:
+            self._write(seg)
+        self.pos = target
+        self.rounded = {a: num(v) for a, v in target.items()}
+        self._settle()
+
+    def _programmed_rate(self, fields: Event, kind: str, target: dict[str, float],
+                         centre: tuple[float, float] | None, plane: str | None) -> None:
+        """An inverse-time move under cutter compensation runs at F times the length of the *programmed*
+        move per minute, along the compensated one (an outside corner's arc at the rate of the move after
+        it, whose fields it takes): the feed is given per minute [V: rs274 2.9, LinuxCNC's
+        tests/interp/inverse-time-with-comp: ``g93 g1 x1 f30`` compensated to X1 Y-.2 runs at
+        ``SET_FEED_RATE(30)``; an exit move ``g40 x2 y2 f10`` from the programmed X1 Y1 at 14.1421]."""
+        assert self.feed is not None  # _feed_into refused a move without it
+        start = {a: self.pos.get(a, 0.0) for a in ("X", "Y", "Z")}
+        end = {a: target.get(a, 0.0) for a in ("X", "Y", "Z")}
+        mode = "linear" if kind == "feed" else kind
+        fields["f"] = num(self.feed * move_length(start, end, plane or "XY", mode, centre))
+        if self.header_mode == "per_min":
+            fields.pop("feed_mode", None)
+        else:
+            fields["feed_mode"] = "per_min"
+
+    def _offset_line(self, kind: str, target: dict[str, float], line: int) -> None:
+        """A straight move under a tool length alone (a whole program after its G43): ``_write``'s result,
+        the programmed point rounded only on the axes that move (as ``line_move``)."""
+        pos = self.pos
+        rounded = self.rounded.copy()
+        for axis, value in target.items():
+            if value != pos[axis]:
+                rounded[axis] = num(value)
+        crounded = rounded.copy()
+        if LENGTH_AXIS in crounded:
+            crounded[LENGTH_AXIS] = num(target[LENGTH_AXIS] + self.length.offset)
+        if crounded == self.crounded:
+            self.pos, self.rounded = target, rounded
+            self._settle()
+            return
+        ev: Event = {"line": line, "move": kind}
+        ctrl: Event = {}
+        for axis, key in self.keys:
+            ev[key] = rounded[axis]
+            ctrl[key] = crounded[axis]
+        if kind != "rapid":
+            self._feed_into(ev)
+        if crounded != rounded:
+            ev["controlled"] = ctrl
+        self.pos, self.rounded, self.crounded = target, rounded, crounded
+        self.out(ev)
+        self._settle()
+
+    def _cutter_idle(self) -> bool:
+        """No cutter compensation is on, queued or pending its exit move."""
+        cutter = self.cutter
+        return cutter is None or (cutter.side is None and not cutter.queue and not cutter.arc_banned)
+
+    def _event(self, ev: Event) -> None:
+        """A non-motion event while compensating: behind a queued move, if any."""
+        if self.cutter is not None:
+            self.cutter.event(ev)
+        else:
+            self.out(ev)
+
+    def _release(self, item: Item) -> None:
+        if isinstance(item, Segment):
+            self._write(item)
+        else:
+            self.out(item)
+
+    def _write(self, seg: Segment) -> None:
+        """A compensated move as its event: the programmed point in the usual keys, the controlled one in
+        ``controlled`` when it differs; a straight move the controlled point does not make is dropped."""
+        end = seg.end
+        control = dict(end)
+        if seg.xy is not None:
+            control["X"], control["Y"] = seg.xy
+        if seg.dz and LENGTH_AXIS in control:
+            control[LENGTH_AXIS] += seg.dz
+        crounded = {a: num(v) for a, v in control.items()}
+        kind = seg.kind
+        if kind in ("rapid", "feed") and crounded == self.crounded:
+            return
+        self.crounded = crounded
+        ev: Event = {"line": seg.fields["line"], "move": kind}
+        ctrl: Event = {}
+        diameter = self.diameter
+        for axis, key in self.keys:
+            ev[key] = num(end[axis] * 2.0) if diameter and axis == "X" else num(end[axis])
+            ctrl[key] = num(control[axis] * 2.0) if diameter and axis == "X" else crounded[axis]
+        if seg.centre is not None:
+            plane = self.modal.plane
+            a1, a2, normal = PLANE_AXES[plane]
+            centre = {a1: seg.centre[0], a2: seg.centre[1], normal: seg.normal}
+            cc = seg.ccentre or seg.centre
+            ccentre = {a1: cc[0], a2: cc[1], normal: seg.normal}
+            if seg.dz and LENGTH_AXIS in ccentre:
+                ccentre[LENGTH_AXIS] += seg.dz
+            for axis in ("X", "Y", "Z"):
+                if axis in self.pos:
+                    scale = 2.0 if diameter and axis == "X" else 1.0
+                    ev[CENTRE_KEYS[axis]] = num(centre[axis] * scale)
+                    ctrl[CENTRE_KEYS[axis]] = num(ccentre[axis] * scale)
+            ev["plane"] = plane
+        for key, value in seg.fields.items():
+            if key != "line":
+                ev[key] = value
+        if any(ev[key] != value for key, value in ctrl.items()):
+            ev["controlled"] = ctrl
+        self.out(ev)
+
+    def _settle(self) -> None:
+        """Leave the compensation once nothing offsets the tool and it stands at the programmed point."""
+        if not self.length.offset and self._cutter_idle() and self.rounded == self.crounded:
+            self.compensating = False
+
+    def finish(self) -> None:
+        """The end of the input: a move still waiting in the cutter queue is written as it stands."""
+        if self.cutter is not None:
+            self.cutter.finish()
+
+    # -- feed --------------------------------------------------------------------------------------
+    def _set_feed(self, value: float) -> None:
+        self.feed = value if self.modal.feed_mode == "inverse_time" else value * self.scale
+
+    def _feed_into(self, ev: Event) -> None:
+        if self.sync is not None:  # a rigid tap: its pitch, per revolution whatever the feed mode
+            ev["f"] = num(self.sync)
+            if self.header_mode != "per_rev":
+                ev["feed_mode"] = "per_rev"
+            return
+        if self.feed is None:
+            raise ProgramError(NO_FEED, self._at(), needs="F")
+        ev["f"] = num(self.feed)
+        if self.header_mode is None:
+            self.header_mode = self.modal.feed_mode
+        elif self.modal.feed_mode != self.header_mode:
+            ev["feed_mode"] = self.modal.feed_mode
+
+    # -- locations (computed only for errors) ------------------------------------------------------
+    def _at(self, block: Block | None = None, word: str | None = None) -> Location:
+        """Where ``word`` (a letter, or a code such as 'G68') stands in the block; column 1 if unknown."""
+        block = block or self.current
+        if block is None:
+            return Location(self.ctx.file, 0, 1)
+        if word is None:
+            return self.ctx.at(block)
+        if len(word) > 1:
+            i = (block.text or "").upper().find(word.upper())
+            return self.ctx.at(block, i + 1 if i >= 0 else 1)
+        return self.ctx.at(block, self.ctx.column_of(block, word))
+

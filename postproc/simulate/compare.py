@@ -1,0 +1,420 @@
+"""verify's comparison of two toolpaths as they stream: each normalised (moves merged into runs), then
+compared pair by pair (``verify``'s docstring says how). Compiled with the simulator (``pyproject.toml
+[tool.postproc] compiled``): verify runs this for every event of both programs."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from itertools import chain
+from typing import Iterable, Iterator
+
+from mypy_extensions import mypyc_attr
+
+from ..geometry import CENTRE_KEYS, PLANE_INDEX, arc_sweep
+from ..lowering.inverse_time import per_minute
+from .chords import pair_with_chords
+from .events import MOVES_THE_TOOL, Event
+from .normal_move import FEED_TOLERANCE as FEED_TOLERANCE, Move, same_feed as _same_feed  # (public names here too)
+
+Point = tuple[float, float, float]
+
+EVENT_TOLERANCE = 1e-6
+"""Numbers in machine events (dwell seconds, angles) compare within this."""
+@mypyc_attr(allow_interpreted_subclasses=True)
+@dataclass
+class Report:
+    """The outcome of a comparison; ``ok`` only when within tolerance and structurally the same."""
+
+    tolerance: float
+    moves: int = 0
+    max_deviation: float = 0.0
+    where: tuple[int, int] | None = None
+    """Source lines (IN, OUT) of the largest deviation."""
+    where_at: tuple[Point, Point] | None = None
+    """End points (IN, OUT) of the moves with the largest deviation: X, Y, Z in mm, true geometry (a
+    lathe's x as a radius), as a backplot draws them."""
+    mismatch: str | None = None
+    mismatch_at: tuple[int | None, int | None] = (None, None)
+    notes: list[str] = field(default_factory=list)
+    ignored: list[str] = field(default_factory=list)
+    """What the comparison left out (machine-specific codes, settings the simulation does not apply),
+    one line each."""
+    left_out_moves: bool = False
+    """A setting that moves the tool (cutter compensation, tool length or work offset, path control)
+    differs between the programs: the paths compared are not the paths cut."""
+    allow_ignored: bool = False
+    """``--allow-ignored``: such a difference does not fail the comparison."""
+    chord_tolerance: float | None = None
+    """``--arcs lines:TOL``: OUT may cut an arc of IN into chords within TOL mm of it (``postproc.simulate.chords``)."""
+    chord_deviation: float = 0.0
+    chord_where: tuple[int, int] | None = None
+    """Source lines (IN, OUT) of the chord furthest from its arc."""
+
+    @property
+    def ok(self) -> bool:
+        return (self.mismatch is None and self.max_deviation <= self.tolerance
+                and (self.allow_ignored or not self.left_out_moves)
+                and self.chord_deviation <= (self.chord_tolerance or 0.0) + self.tolerance)
+
+    def summary(self) -> str:
+        where = f"IN:{self.where[0]} / OUT:{self.where[1]}" if self.where else "IN:- / OUT:-"
+        if self.mismatch is not None:
+            verdict = "structure differs"
+        elif self.max_deviation > self.tolerance:
+            verdict = f"exceeds tolerance {self.tolerance:g} mm"
+        elif self.chord_deviation > (self.chord_tolerance or 0.0) + self.tolerance:
+            verdict = f"a chord lies beyond the chord tolerance {self.chord_tolerance:g} mm of its arc"
+        elif self.left_out_moves and not self.allow_ignored:
+            verdict = "settings that move the tool differ (listed below; --allow-ignored accepts them)"
+        elif self.left_out_moves:
+            verdict = "ok, with settings that move the tool left out (--allow-ignored)"
+        else:
+            verdict = "ok"
+        text = f"max deviation {self.max_deviation:.4f} mm over {self.moves} moves ({where}): {verdict}"
+        if self.chord_tolerance is not None:
+            at = f"IN:{self.chord_where[0]} / OUT:{self.chord_where[1]}" if self.chord_where else "IN:- / OUT:-"
+            text += f"\nchords at most {self.chord_deviation:.4f} mm from their arcs ({at}; --arcs lines:{self.chord_tolerance:g})"
+        if self.mismatch is not None:
+            a, b = self.mismatch_at
+            text += (f"\nfirst difference at IN:{'-' if a is None else a} / OUT:{'-' if b is None else b}: "
+                     f"{self.mismatch}")
+        if self.ignored:
+            text += "\nnot compared:\n" + "\n".join(f"  {line}" for line in self.ignored)
+        return text
+
+
+# -- normalising -------------------------------------------------------------------------------------
+
+_AXIS_KEYS = frozenset("xyzabcuvw")
+
+
+def _axes(ev: Event) -> dict[str, float]:
+    """The end point of a move event, in its order (the machine's axes)."""
+    return {k: float(v) for k, v in ev.items() if k in _AXIS_KEYS}
+
+
+def _dist(a: dict[str, float], b: dict[str, float]) -> float:
+    """Euclidean distance over ``a``'s axes (``math.dist`` scales: no overflow near the float range)."""
+    return math.dist([a[k] for k in a], [b.get(k, 0.0) for k in a])
+
+
+def _plane_point(p: dict[str, float], plane: str) -> tuple[float, float]:
+    i, j, _ = PLANE_INDEX[plane]
+    return p.get("xyz"[i], 0.0), p.get("xyz"[j], 0.0)
+
+
+def _move(ev: Event, start: dict[str, float]) -> Move:
+    end = _axes(ev)
+    kind = ev["move"]
+    f = ev.get("f")
+    m = Move(kind, start, end, None if f is None else float(f), ev["line"], ev["line"])
+    if kind in ("cw", "ccw"):
+        plane = ev.get("plane", "XY")
+        i, j, _ = PLANE_INDEX[plane]
+        ci, cj = "XYZ"[i], "XYZ"[j]
+        s, e = _plane_point(start, plane), _plane_point(end, plane)
+        c = (float(ev.get(CENTRE_KEYS[ci], s[0])), float(ev.get(CENTRE_KEYS[cj], s[1])))
+        m.plane, m.centre = plane, c
+        m.radius = math.hypot(s[0] - c[0], s[1] - c[1])
+        m.sweep = arc_sweep(s, e, c, kind == "cw")
+    else:
+        length = m.length = _dist(end, start)
+        m.direction = {k: (end[k] - start.get(k, 0.0)) / length for k in end} if length > 0 else None
+    return m
+
+
+def _merge(run: Move, m: Move, eps: float) -> bool:
+    """Extend ``run`` by ``m`` when they are one line or one circle (same kind and feed)."""
+    if m.kind != run.kind or not _same_feed(run.f, m.f):
+        return False
+    if run.direction is not None and m.direction is not None:
+        u, s = run.direction, run.start
+        along_old = sum((run.end[k] - s.get(k, 0.0)) * u[k] for k in u)
+        rel = {k: m.end[k] - s.get(k, 0.0) for k in m.end}
+        along = sum(rel[k] * u.get(k, 0.0) for k in rel)
+        off = math.hypot(*(rel[k] - along * u.get(k, 0.0) for k in rel))  # distance from the line
+        if off > eps or along <= along_old:
+            return False
+        run.end, run.last_line = m.end, m.last_line
+        return True
+    if run.centre is not None and m.centre is not None and run.plane == m.plane:
+        if (math.hypot(run.centre[0] - m.centre[0], run.centre[1] - m.centre[1]) > eps
+                or abs(run.radius - m.radius) > eps or not _one_helix(run, m, eps)):
+            return False
+        run.end, run.last_line = m.end, m.last_line
+        run.sweep += m.sweep
+        return True
+    return False
+
+
+def _one_helix(run: Move, m: Move, eps: float) -> bool:
+    """True when the axes outside the plane move in ``m`` at the rate per angle they moved in ``run`` (none:
+    a flat arc; the same: one helix, as an arc split into pieces), so the arcs may be joined."""
+    i, j, _ = PLANE_INDEX[m.plane or "XY"]
+    plane_keys = {"xyz"[i], "xyz"[j]}
+    for k in m.end:
+        if k not in plane_keys:
+            rate = (run.end[k] - run.start.get(k, 0.0)) / run.sweep
+            if abs(m.end[k] - m.start.get(k, 0.0) - rate * m.sweep) > eps:
+                return False
+    return True
+
+
+def normalise(events: Iterable[Event], start: dict[str, float], eps: float) -> Iterator[Move | Event]:
+    """Moves merged into runs, machine events as they are; the header is skipped."""
+    pos = {k.lower(): v for k, v in start.items()}
+    run: Move | None = None
+    for ev in events:
+        if "toolpath" in ev:
+            continue
+        if "move" not in ev:
+            if run is not None:
+                yield run
+                run = None
+            yield ev
+            continue
+        m = _move(ev, pos)
+        pos = m.end
+        if m.centre is None and m.length == 0.0:
+            continue
+        if run is not None and _merge(run, m, eps):
+            continue
+        if run is not None:
+            yield run
+        run = m
+    if run is not None:
+        yield run
+
+
+# -- comparing -------------------------------------------------------------------------------------
+
+def describe(item: Move | Event) -> str:
+    """A short human description of a move or event, for mismatch messages."""
+    if isinstance(item, Move):
+        where = " ".join(f"{k.upper()}{v:.4f}".rstrip("0").rstrip(".") for k, v in item.end.items())
+        feed = "" if item.f is None else f" F{item.f:g}"
+        name = {"rapid": "rapid", "feed": "feed", "cw": "cw arc", "ccw": "ccw arc"}.get(item.kind, item.kind)
+        return f"a {name} to {where}{feed}"
+    kind = item.get("event")
+    if kind == "dwell":
+        return f"a dwell of {item.get('seconds')} s"
+    if kind == "spindle":
+        return f"spindle {item.get('dir')}"
+    if kind == "orient":
+        return f"a spindle orientation to {item.get('angle')} deg"
+    if kind == "tool":
+        return f"tool change to T{item.get('number')}"
+    if kind == "coolant":
+        return f"coolant {'on' if item.get('on') else 'off'}"
+    if kind == "stop":
+        return "an optional stop" if item.get("optional") else "a program stop"
+    if kind == "end":
+        return "the program end"
+    return f"event {kind}"
+
+
+def _line(item: Move | Event | None) -> int | None:
+    if item is None:
+        return None
+    return item.first_line if isinstance(item, Move) else item.get("line")
+
+
+def _same_event(a: Event, b: Event) -> bool:
+    keys = (set(a) | set(b)) - {"line"}
+    for k in keys:
+        x, y = a.get(k), b.get(k)
+        if isinstance(x, (int, float)) and isinstance(y, (int, float)) and not isinstance(x, bool):
+            if abs(x - y) > EVENT_TOLERANCE:
+                return False
+        elif x != y:
+            return False
+    return True
+
+
+def compare(events_in: Iterable[Event], events_out: Iterable[Event], *, start_in: dict[str, float],
+            start_out: dict[str, float], tolerance: float, chord_tolerance: float | None = None) -> Report:
+    """Walk two toolpaths (each with its header first) and report their largest deviation.
+    ``chord_tolerance``: OUT may cut IN's arcs into chords within it (``postproc.simulate.chords``)."""
+    report = Report(tolerance, chord_tolerance=chord_tolerance)
+    # feeds compared per minute: an inverse-time program and its translation for a target without G93
+    it_in = per_minute_from_first(_controlled(iter(events_in)), start_in)
+    it_out = per_minute_from_first(_controlled(iter(events_out)), start_out)
+    head_in, head_out = next(it_in, {}), next(it_out, {})
+    if head_in.get("x_mode") != head_out.get("x_mode"):
+        # a diameter program and its radius translation: compare both as radii (true geometry)
+        it_in, it_out = _as_radius(it_in, head_in), _as_radius(it_out, head_out)
+        head_in = {k: v for k, v in head_in.items() if k != "x_mode"}
+        head_out = {k: v for k, v in head_out.items() if k != "x_mode"}
+    for key in ("units", "x_mode", "feed_mode"):
+        if head_in.get(key) != head_out.get(key):
+            report.mismatch = f"the toolpath headers differ in {key}: {head_in.get(key)} vs {head_out.get(key)}"
+            report.mismatch_at = (1, 1)
+    eps = tolerance / 2.0
+    codes_in: list[Event] = []
+    codes_out: list[Event] = []
+    pairs = pair_with_chords(normalise(_without_codes(it_in, codes_in), start_in, eps),
+                             normalise(_without_codes(it_out, codes_out), start_out, eps), report)
+    for a, b in pairs:
+        if report.mismatch is not None:
+            continue  # drain both streams: a program error still has to surface
+        problem = _differ(a, b, report)
+        if problem is not None:
+            report.mismatch = problem
+            report.mismatch_at = (_line(a), _line(b))
+    compare_machine_codes(report, codes_in, codes_out)
+    if head_in.get("x_mode") == "diameter" and report.where_at is not None:  # both diameters: as radii
+        report.where_at = tuple((x / 2.0, y, z) for x, y, z in report.where_at)  # type: ignore[assignment]
+    return report
+
+
+def per_minute_from_first(events: Iterator[Event], start: dict[str, float]) -> Iterator[Event]:
+    """``per_minute(events, start)``, which converts the path from its first inverse-time feed on: until then
+    the events pass as they are (``per_minute`` follows every move's end point, a dict of three floats a
+    move, to know where an inverse-time move starts), and from there ``per_minute`` continues from the
+    last move's end, where it would stand. A header in inverse time: ``per_minute`` from the start.
+    ``tests/test_verify.py`` holds this to ``per_minute`` on random paths."""
+    head = next(events, None)
+    if head is None:
+        return
+    if head.get("feed_mode") == "inverse_time":
+        yield from per_minute(chain((head,), events), start)
+        return
+    yield head
+    last: Event | None = None
+    for ev in events:
+        if ev.get("feed_mode") == "inverse_time":
+            rest = per_minute(chain((head, ev), events), start if last is None else last)
+            next(rest)  # the header, already given
+            yield from rest
+            return
+        if "move" in ev:
+            last = ev
+        yield ev
+
+
+def _controlled(events: Iterator[Event]) -> Iterator[Event]:
+    """The path the machine runs: a move's controlled point (tool length, cutter radius) in place of its
+    programmed one, so a program that offsets the tool and one that writes the offset path compare equal."""
+    for ev in events:
+        controlled = ev.get("controlled")
+        if controlled is None:
+            yield ev
+        else:
+            moved = dict(ev)  # the keys in their order: the controlled axes replace the programmed ones
+            del moved["controlled"]
+            moved.update(controlled)
+            yield moved
+
+
+def _without_codes(events: Iterator[Event], sink: list[Event]) -> Iterator[Event]:
+    """The events of a path but a machine-specific code's (they carry ``code``), which go to ``sink``:
+    another family has no such code, so they are listed, not compared."""
+    for ev in events:
+        if "code" in ev:
+            sink.append(ev)
+        else:
+            yield ev
+
+
+def compare_machine_codes(report: Report, codes_in: list[Event], codes_out: list[Event]) -> None:
+    """List each machine-specific code of either program: how often each side has it, from which line."""
+    seen: dict[str, tuple[str, list[int], list[int]]] = {}
+    for side, events in ((1, codes_in), (2, codes_out)):
+        for ev in events:
+            name, lines_in, lines_out = seen.setdefault(ev["code"], (ev.get("name", ""), [], []))
+            (lines_in if side == 1 else lines_out).append(ev["line"])
+    for code, (name, lines_in, lines_out) in seen.items():
+        what = f"{code} ({name})" if name else code
+        report.ignored.append(f"{what}, a machine-specific code: {_count(lines_in, 'IN')}, {_count(lines_out, 'OUT')}")
+
+
+def _count(lines: list[int], side: str) -> str:
+    if not lines:
+        return f"{side} none"
+    return f"{side} {len(lines)}x from line {lines[0]}"
+
+
+def compare_settings(report: Report, settings_in: list[tuple[int, str, str]],
+                     settings_out: list[tuple[int, str, str]]) -> None:
+    """Compare the changes of the settings the simulation does not apply, setting by setting: the same
+    sequence on both sides is a note when the setting moves the tool; a different one is listed, and
+    fails the comparison when the setting moves the tool (unless ``--allow-ignored``)."""
+    kinds = list(dict.fromkeys(kind for _, kind, _ in settings_in + settings_out))
+    for kind in kinds:
+        a = [(line, value) for line, k, value in settings_in if k == kind]
+        b = [(line, value) for line, k, value in settings_out if k == kind]
+        if [v for _, v in a] == [v for _, v in b]:
+            if kind in MOVES_THE_TOOL:  # the paths compared are the programmed ones, not those cut
+                report.ignored.append(f"{kind}: not simulated, the same on both sides ({_values(a)})")
+            continue
+        report.ignored.append(f"{kind} differs: IN {_values(a) or 'never set'}; OUT {_values(b) or 'never set'}")
+        if kind in MOVES_THE_TOOL:
+            report.left_out_moves = True
+
+
+def _values(changes: list[tuple[int, str]], most: int = 4) -> str:
+    text = ", ".join(f"{value} (line {line})" for line, value in changes[:most])
+    return text + (f", ... {len(changes) - most} more" if len(changes) > most else "")
+def _as_radius(events: Iterator[Event], head: Event) -> Iterator[Event]:
+    """The events of a toolpath whose x is a diameter (``x_mode``), with x and cx as radii."""
+    if head.get("x_mode") != "diameter":
+        yield from events
+        return
+    for ev in events:
+        if "x" in ev or "cx" in ev:
+            ev = dict(ev)
+            for key in ("x", "cx"):
+                if key in ev:
+                    ev[key] = ev[key] / 2.0
+        yield ev
+
+
+def _differ(a: Move | Event | None, b: Move | Event | None, report: Report) -> str | None:
+    """Record the deviation of a pair; return a description when they differ in structure."""
+    if a is None:
+        if _is_end(b):
+            return None  # IN ends by running out there, OUT says so (M2: LinuxCNC refuses a file without one)
+        return f"IN has no more moves or events, OUT has {describe(b)}"  # type: ignore[arg-type]
+    if b is None:  # an end OUT lacks is a difference: M2/M30 stop the spindle and coolant, running out does not
+        return f"OUT has no more moves or events, IN has {describe(a)}"
+    if not isinstance(a, Move) or not isinstance(b, Move):
+        if isinstance(a, Move) or isinstance(b, Move) or not _same_event(a, b):
+            return f"IN has {describe(a)}, OUT {describe(b)}"
+        return None
+    if a.kind != b.kind or a.plane != b.plane:
+        return f"IN has {describe(a)}, OUT {describe(b)}"
+    if not _same_feed(a.f, b.f):
+        return f"IN feeds at F{a.f:g}, OUT at F{b.f:g} ({describe(a)})"
+    keys = set(a.end) & set(b.end)
+    dev = math.dist([a.end[k] for k in keys], [b.end[k] for k in keys])
+    if a.centre is not None and b.centre is not None:
+        dev = max(dev, math.hypot(a.centre[0] - b.centre[0], a.centre[1] - b.centre[1]),
+                  abs(a.sweep * a.radius - b.sweep * b.radius))
+    report.moves += 1
+    if report.where is None or dev > report.max_deviation:
+        report.max_deviation = dev
+        report.where = (a.last_line, b.last_line)
+        report.where_at = (_xyz(a.end), _xyz(b.end))
+    return None
+
+
+def _is_end(item: Move | Event | None) -> bool:
+    """The program end event (M2/M30)."""
+    return not isinstance(item, Move) and item is not None and item.get("event") == "end"
+
+
+def _xyz(p: dict[str, float]) -> Point:
+    return p.get("x", 0.0), p.get("y", 0.0), p.get("z", 0.0)
+
+
+def compare_after_end(report: Report, lines_in: list[int], lines_out: list[int]) -> None:
+    """Live blocks after the program end run on a controller that is streamed to: the translation having
+    them where the source has none is a structural mismatch (reported when nothing before differed).
+    The reverse is the safe translation of dead code (written as comments), not a mismatch. Only their
+    presence is compared: an expanded cycle there is one block in one file and several in the other."""
+    if report.mismatch is not None or not lines_out or lines_in:
+        return
+    report.mismatch = (f"OUT has live blocks after the program end (from line {lines_out[0]}), IN has none "
+                       "(a controller that is streamed to would run them)")
+    report.mismatch_at = (None, lines_out[0])

@@ -1,0 +1,117 @@
+"""The toolpath's events: their numbers, the header line, the start position, and the settings a
+simulation records instead of applying (``verify`` compares those). Compiled with the simulator
+(``pyproject.toml [tool.postproc] compiled``): ``num`` runs five times a move."""
+
+from __future__ import annotations
+
+from typing import Any, Final
+
+from ..context import Context
+from ..errors import ProgramError
+from ..geometry import PLACES
+from ..setup.machine_setup import MachineSetup
+
+UNEVALUATED = "a computed word reaches the simulation unevaluated"
+"""The interpreter evaluates every expression first: an ``Expr`` here is a defect, reported where it is."""
+
+Event = dict[str, Any]
+
+HEADER_LOOKAHEAD = 1000
+"""Events held back at most while waiting for the first feed move to fix the header's feed mode."""
+LINEAR_AXES = frozenset("XYZUVW")
+"""Axes converted from inches; rotary axes (A, B, C) are in degrees whatever the length unit."""
+
+
+_UNITS: Final = 1_000_000
+"""A toolpath's numbers count in these units (millionths of a mm): ``num`` rounds to a whole number of them."""
+_SCALE: Final = 1e6
+_FAST: Final = 1e14
+"""``num``'s integer path holds for values below this many units: the units (< 2**47) are exact in a
+float, the value's error in units is below 0.012 (half an ulp), and a whole number of units divided by
+``_SCALE`` is correctly rounded and integral only when the units are a multiple of ``_UNITS``."""
+_TIE: Final = 2.3e-16
+"""Relative error of ``value * _SCALE`` (a product's half ulp, 2**-53, with margin): a fraction of a
+unit that close to one half may lie on the other side of it, and goes to ``round``."""
+assert _UNITS == 10 ** PLACES == _SCALE
+# Final: compiled, a constant is a C constant, not a look-up in the module's dictionary (six a call)
+
+
+def num(value: float) -> float | int:
+    """A number as written to a toolpath: ``round(value, 6)``, integral values as int, never -0, always
+    finite (a value beyond the float range fails at its block, rather than as JSON's invalid ``Infinity``).
+
+    ``round(value, 6)`` is the float nearest the decimal that rounds the value to six places, half to
+    even; it costs a correctly rounded decimal conversion (about 2,500 instructions, five a move). The
+    same result by integer arithmetic: the value in millionths, rounded to the nearest whole one (the
+    product's error is far from a half but for near-ties, which go to ``round``), then divided by a
+    million (one correctly rounded division of two exact floats: the float nearest the same decimal).
+    ``tests/test_toolpath_numbers.py`` holds it to ``round`` on any float and on near-ties."""
+    y = value * _SCALE
+    if -_FAST < y < _FAST:  # false for nan; an infinity is beyond
+        units = int(y)
+        if units > y:
+            units -= 1  # the floor
+        fraction = y - units  # exact: both below 2**47
+        if abs(fraction - 0.5) > abs(y) * _TIE:
+            if fraction > 0.5:
+                units += 1
+            if units % _UNITS == 0:
+                return units // _UNITS  # 0 for -0.0 too
+            return units / _SCALE
+    r = round(value, PLACES)
+    if r == 0:
+        return 0
+    if r.is_integer():
+        return int(r)
+    if r - r != 0.0:  # inf - inf and nan - nan are nan
+        raise ProgramError(f"a value beyond the range of a float ({value!r}) cannot be simulated"
+                           if value == value else "a value that is not a number (nan) cannot be simulated")
+    return r
+
+
+def start_position(setup: MachineSetup) -> dict[str, float]:
+    """Where a program starts, per machine axis, in mm (rotary axes at 0)."""
+    m = setup.machine
+    start = {"X": m.start_x, "Y": m.start_y, "Z": m.start_z}
+    return {a: float(start.get(a, 0.0)) * (m.mm() if a in LINEAR_AXES else 1.0) for a in m.axes}
+
+
+
+def header(ctx: Context, feed_mode: str | None, program_units: str = "mm") -> Event:
+    """The first line of a toolpath; keys beyond the fixed three only when they apply. ``program_units``:
+    the units of the program's first move (lengths here are mm whatever they are; a backplot labels its
+    drawing in the program's own)."""
+    head: Event = {"toolpath": 1, "units": "mm", "dialect": ctx.dialect}
+    if ctx.diameter:
+        head["x_mode"] = "diameter"
+    if feed_mode is not None and feed_mode != "per_min":
+        head["feed_mode"] = feed_mode
+    if program_units == "inch":
+        head["program_units"] = "inch"
+    return head
+
+
+
+TOUCH_OFF = ("tool_entry_at_point", "tool_entry_at_point_9")
+"""Tool tables whose length the tool's position decides: in the active work system, in work system 9."""
+
+UNSIMULATED = {"CutterCompensation": "cutter compensation", "WorkOffset": "work offset",
+               "PathControl": "path control", "SpindleSpeed": "spindle speed"}
+"""Settings the simulation does not apply, by section key: ``verify`` compares their changes instead.
+Cutter compensation is among them only for a dialect without ``CUTTER_RULES``; the work offset is
+recorded although a G10's values are applied (the set-up's are not: the path stays in work
+coordinates)."""
+MOVES_THE_TOOL = frozenset(("cutter compensation", "work offset", "path control", "tool offset data"))
+
+
+def _setting_text(key: str, section: Any) -> str | None:
+    """How a setting reads in a verify report (None: it changes nothing, e.g. a one-shot exact stop)."""
+    if key == "CutterCompensation":
+        return section.mode if section.register is None else f"{section.mode} D{section.register}"
+    if key == "ToolLengthOffset":
+        return section.mode if section.register is None else f"{section.mode} H{section.register}"
+    if key == "WorkOffset":
+        return str(section.index)
+    if key == "PathControl":
+        return None if section.one_shot else section.mode.replace("_", " ")
+    return f"S{section.rpm:g}" if isinstance(section.rpm, (int, float)) else None

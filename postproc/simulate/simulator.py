@@ -1,0 +1,403 @@
+"""The simulator's block dispatch: a block's settings, machine events and motion in the order a
+controller runs them (``Simulator.block``), and ``simulate``, the loop that turns a lowered block stream
+into the toolpath's events (``postproc.simulate.toolpath`` assembles the reading and lowering before it).
+"""
+
+from __future__ import annotations
+
+from typing import Any, Callable, Final, Iterable, Iterator
+
+from mypy_extensions import mypyc_attr
+
+from ..block_rules import NO_FEED, needs_feed
+from ..compensation.rules import CutterRules
+from ..compensation.tool_length import AXIS as _AXIS
+from ..context import Context
+from ..cycles.lathe_lowering import lathe_tool
+from ..errors import PostprocError, ProgramError, UnsupportedError
+from ..event_order import after_motion
+from ..expr import Expr
+from ..ir import Block, MachineFunction, Motion, Section
+from ..state import MM_PER_INCH, MODAL_KEYS as _MODAL
+from .events import HEADER_LOOKAHEAD, UNEVALUATED, UNSIMULATED, Event, header, num, _setting_text
+from .moves import Moves
+
+LENGTH_AXIS: Final = _AXIS
+MODAL_KEYS: Final = _MODAL
+# Final: compiled, a C constant, not a look-up in the module's dictionary (every block reads them)
+_SETTING_KEYS: Final = frozenset((*UNSIMULATED, "DataSetting", "ToolLengthOffset", "DynamicCutterCompensation"))
+_COMPENSATION_KEYS: Final = frozenset(("CutterCompensation", "ToolLengthOffset", "DynamicCutterCompensation"))
+_EVENT_KEYS: Final = frozenset(("ToolSelect", "ToolChange", "SpindleControl", "Coolant", "Dwell", "SpindleOrientation",
+                         "ProgramControl", "MachineFunction"))
+
+
+@mypyc_attr(allow_interpreted_subclasses=True)
+class Simulator(Moves):
+    """Modal state and position of one program run; ``block`` emits the block's events in order."""
+
+    # -- one block ---------------------------------------------------------------------------------
+    def block(self, block: Block, emit: Callable[[Event], None]) -> None:
+        sections = block.sections
+        if not sections:
+            return
+        if self.ended or "TapeMark" in sections:
+            self._tape_or_after_end(block)
+            return
+        self.current = block
+        if "InProfile" in sections:
+            return  # the controller runs a profile block only through its cycle
+        self.out = emit
+        if self.compensating:
+            emit = self._event
+        get: Callable[[str], Any] = sections.get
+        native = get("NativeCode")
+        if native is not None and not native.inert:
+            code = native.what.split(" ", 1)[0]
+            raise UnsupportedError(f"{native.what} cannot be simulated", self._at(block, code))
+        keys = sections.keys()
+        if not keys.isdisjoint(MODAL_KEYS):
+            self.apply_modal(sections)
+        if self.travel is not None:
+            self.travel.settings(block)
+        if not keys.isdisjoint(_SETTING_KEYS):
+            self.record_settings(block)
+            setting = get("DataSetting")
+            if setting is not None:
+                self.data_setting(block, setting)
+            if not keys.isdisjoint(_COMPENSATION_KEYS):
+                self.compensation(block, emit)
+                if self.compensating:
+                    emit = self._event
+        line = block.line
+        before = not keys.isdisjoint(_EVENT_KEYS)
+        spindle = get("SpindleControl")
+        coolant = get("Coolant")
+        machine = get("MachineFunction")
+        if before:
+            s = get("ToolSelect")
+            if s is not None:
+                if self.lathe and "ToolChange" not in sections:
+                    emit({"line": line, "event": "tool", "number": lathe_tool(s.number)})
+            if "ToolChange" in sections:
+                if self.cutter is not None and self.cutter.side is not None:
+                    raise ProgramError("a tool change with cutter compensation on cannot be run (cancel it "
+                                       "first)", self._at(block))
+                self.spindle_tool = self.modal.tool if isinstance(self.modal.tool, int) else None
+                if self.spindle in ("cw", "ccw"):
+                    self.spindle_event(line, "stop", emit)
+                emit({"line": line, "event": "tool", "number": self.modal.tool})
+            if spindle is not None and not after_motion("SpindleControl", spindle):
+                self.spindle_event(line, spindle.direction, emit)
+            if coolant is not None and not after_motion("Coolant", coolant):
+                emit({"line": line, "event": "coolant", "on": coolant.mode != "off"})
+            if machine is not None and not after_motion("MachineFunction", machine):
+                self.machine_function(block, machine, emit)
+            s = get("Dwell")
+            if s is not None:
+                emit({"line": line, "event": "dwell", "seconds": num(s.seconds)})
+        compound = get("CompoundMotion")
+        motion = get("Motion")
+        coords = get("CoordinateSet")
+        if coords is not None:
+            for axis, value in coords.axes.items():
+                self._coordinate(block, axis, value)
+        if compound is not None:
+            if self.cutter is not None and self.cutter.side is not None:
+                raise ProgramError("a canned cycle with cutter compensation on cannot be run (cancel it first)",
+                                   self._at(block))  # [V] rs274 "Cannot use canned cycles with cutter compensation on"
+            if motion is not None and motion.mode is not None:
+                self.motion(block, motion, False, emit)
+            for item in compound.items:
+                self.item(block, item, emit)
+        elif motion is not None:
+            if motion.mode is None and "CannedCycle" not in sections:
+                raise UnsupportedError("a canned-cycle repeat cannot be simulated: the cycle was not "
+                                       "resolved to motion", self._at(block))
+            if motion.mode is not None:
+                self.motion(block, motion, False, emit)
+        elif "CycleCall" in sections and "CannedCycle" not in sections:
+            raise UnsupportedError(f"canned cycle '{get('CycleCall').kind}' cannot be simulated: it was not "
+                                   "resolved to motion", self._at(block))
+        tap = get("RigidTap")
+        if tap is not None:
+            self.rigid_tap(block, tap, False, emit)
+        if not before:
+            return
+        if spindle is not None and after_motion("SpindleControl", spindle):
+            self.spindle_event(line, "stop", emit)
+        s = get("SpindleOrientation")
+        if s is not None:
+            emit({"line": line, "event": "orient", "angle": num(s.angle)})
+        if coolant is not None and after_motion("Coolant", coolant):
+            emit({"line": line, "event": "coolant", "on": False})
+        if machine is not None and after_motion("MachineFunction", machine):
+            self.machine_function(block, machine, emit)
+        s = get("ProgramControl")
+        if s is not None:
+            self.program_control(line, s.kind, emit)
+
+    def record_settings(self, block: Block) -> None:
+        """Note a change of a setting the path does not show (work offset, path control, cutter compensation
+        where its rules are not modelled...)."""
+        for key, section in block.sections.items():
+            kind = UNSIMULATED.get(key)
+            if kind is None or (key == "CutterCompensation" and self.cutter is not None):
+                continue
+            value = _setting_text(key, section)
+            if value is not None and value != self.settings.get(kind):
+                self.settings[kind] = value
+                self.unsimulated.append((block.line, kind, value))
+
+    def machine_function(self, block: Block, code: MachineFunction, emit: Callable[[Event], None]) -> None:
+        """A machine-specific code: the event of its declared action, carrying the code (``verify`` lists
+        these rather than comparing them: another family has no such code). An undeclared code is
+        warned about once and moves nothing."""
+        line, action = block.line, code.action
+        if not code.declared and code.code not in self.undeclared:
+            self.undeclared.add(code.code)
+            self.ctx.diagnostics.warn(
+                f"{code.code} is not declared for this machine (the set-up's <MachineCodes> or the "
+                f"{code.family} family's defaults): simulated as a code that moves nothing",
+                self._at(block, code.code))
+        ev: Event
+        if action in ("spindle-cw", "spindle-ccw", "spindle-stop"):
+            direction = action[len("spindle-"):]
+            if direction == "stop" and self.spindle == "stop":
+                return
+            self.spindle = direction
+            ev = {"line": line, "event": "spindle", "dir": direction}
+        elif action in ("coolant-on", "coolant-off"):
+            ev = {"line": line, "event": "coolant", "on": action == "coolant-on"}
+        elif action in ("stop", "optional-stop"):
+            ev = {"line": line, "event": "stop", "optional": action == "optional-stop"}
+        elif action == "tool-change":
+            ev = {"line": line, "event": "tool", "number": self.modal.tool}
+        else:
+            ev = {"line": line, "event": "machine"}
+            if action != "none":
+                ev["action"] = action
+        ev["code"] = code.code
+        if code.name:
+            ev["name"] = code.name
+        emit(ev)
+
+    def _tape_or_after_end(self, block: Block) -> None:
+        """A ``%`` closes the program once it has content; after the end, live blocks are recorded."""
+        end = self.end
+        if not self.ended:
+            end.started = self.current is not None
+            end.before_end(block.sections)
+            self.ended = end.ended
+        elif end.after_end(block.sections) == "live":
+            self.live_after_end.append(block.line)
+
+    def apply_modal(self, sections: dict[str, Section]) -> None:
+        """Apply the block's modal settings (before its motion, as a controller does); its feed is
+        converted with the units and feed mode the block leaves in force."""
+        modal = self.modal
+        modal.apply(sections)
+        self.scale = MM_PER_INCH if modal.units == "inch" else 1.0
+        self.incremental = modal.distance == "incremental"
+        if self.cutter is not None:
+            self.cutter.sweep_slack = 0.001 if modal.units == "inch" else 0.0254
+        s = sections.get("Feed")
+        if s is not None:
+            self._set_feed(s.value)  # type: ignore[attr-defined]
+        if self.offsets and "WorkOffset" in sections:
+            self._shift()
+
+    def spindle_event(self, line: int, direction: str, emit: Callable[[Event], None]) -> None:
+        """A spindle change; stopping a stopped spindle is no event (two programs that differ only
+        there move the machine alike)."""
+        if direction == "stop" and self.spindle == "stop":
+            return
+        self.spindle = direction
+        emit({"line": line, "event": "spindle", "dir": direction})
+
+    def item(self, block: Block, item: Section, emit: Callable[[Event], None]) -> None:
+        """One item of a compound motion (absolute, program units)."""
+        key, line = item.KEY, block.line
+        if key == "Motion":
+            self.motion(block, item, True, emit)  # type: ignore[arg-type]
+        elif key == "Feed":
+            self.modal.feed = item.value  # type: ignore[attr-defined]
+            self._set_feed(item.value)  # type: ignore[attr-defined]
+        elif key == "Dwell":
+            emit({"line": line, "event": "dwell", "seconds": num(item.seconds)})  # type: ignore[attr-defined]
+        elif key == "SpindleControl":
+            self.spindle_event(line, item.direction, emit)  # type: ignore[attr-defined]
+        elif key == "SpindleOrientation":
+            emit({"line": line, "event": "orient", "angle": num(item.angle)})  # type: ignore[attr-defined]
+        elif key == "ProgramControl":
+            self.program_control(line, item.kind, emit)  # type: ignore[attr-defined]
+        elif key == "RigidTap":
+            self.rigid_tap(block, item, True, emit)
+        else:
+            raise UnsupportedError(f"{key} inside a compound motion cannot be simulated", self._at(block))
+
+    def program_control(self, line: int, kind: str, emit: Callable[[Event], None]) -> None:
+        if kind in ("stop", "optional_stop"):
+            if self.cutter is not None:
+                self.cutter.stop()  # a stop writes the queued move at its compensated end [V]
+            emit({"line": line, "event": "stop", "optional": kind == "optional_stop"})
+        elif kind in ("end", "end_rewind"):
+            if self.cutter is not None:
+                self.cutter.stop()
+                self.cutter.cancel()  # the program end cancels compensation (LinuxCNC, Fanuc)
+            emit({"line": line, "event": "end"})
+            self.ended = self.end.ended = True
+        else:
+            raise UnsupportedError(f"program control '{kind}' cannot be simulated")
+
+    # -- motion ------------------------------------------------------------------------------------
+    def motion(self, block: Block, m: Motion, absolute: bool, emit: Callable[[Event], None]) -> None:
+        mode, line = m.mode, block.line
+        travel = self.travel
+        if mode in ("home", "home2"):
+            if not m.axes:
+                return
+            if self.cutter is not None and self.cutter.side is not None:
+                raise ProgramError("a reference return with cutter compensation on cannot be run", self._at(block))
+            via = self.target(block, m.axes, absolute)
+            if travel is not None:
+                travel.line(block, self.pos, via, self._programmed(m.axes), self.incremental and not absolute, False)
+            self.line_move("rapid", via, line, emit)
+            ref = dict(self.pos)
+            for axis in m.axes:
+                key = self.increments.get(axis, axis)
+                ref[key] = self.home.get(key, 0.0) if mode == "home" and not self.lathe else 0.0
+            if self.length.offset and LENGTH_AXIS in m.axes:
+                ref[LENGTH_AXIS] -= self.length.offset  # the reference point is a machine position
+            if travel is not None:
+                travel.home(block, self._programmed(m.axes))
+            self.line_move("rapid", ref, line, emit)
+            return
+        if self.feed is None and needs_feed(m):
+            raise ProgramError(NO_FEED, self._at(block), needs="F")
+        machine = "MachineCoordinates" in block.sections
+        target = self.target(block, m.axes, absolute or machine, machine)
+        if machine and self.compensating:
+            self._machine_coordinates(block, m, target)
+        if travel is not None and mode not in ("cw", "ccw"):
+            travel.line(block, self.pos, target, self._programmed(m.axes),
+                        self.incremental and not (absolute or machine), machine)
+        if mode == "rapid":
+            self.line_move("rapid", target, line, emit)
+        elif mode == "linear":
+            self.line_move("feed", target, line, emit)
+        elif mode == "thread":
+            self.thread_move(block, target, emit)
+        elif mode in ("cw", "ccw"):
+            self.arc_move(block, m, target, emit, absolute or machine)
+        else:
+            raise UnsupportedError(f"motion '{mode}' cannot be simulated", self._at(block))
+
+    def thread_move(self, block: Block, target: dict[str, float], emit: Callable[[Event], None]) -> None:
+        """A spindle-synchronised thread move: ``f`` is its lead per revolution whatever the feed mode (Fanuc
+        ``G32 F``: F is the lead [K]; LinuxCNC ``G33 K``: the block's ``ThreadLead``)."""
+        lead = block.sections.get("ThreadLead")
+        value = self.feed if lead is None else lead.lead * self.scale  # type: ignore[attr-defined]
+        if value is None:
+            raise ProgramError(NO_FEED, self._at(block), needs="F")
+        if self.header_mode is None:
+            self.header_mode = self.modal.feed_mode  # as a first feed move would set it
+        self.sync = value
+        try:
+            self.line_move("feed", target, block.line, emit)
+        finally:
+            self.sync = None
+
+    def rigid_tap(self, block: Block, tap: Any, absolute: bool, emit: Callable[[Event], None]) -> None:
+        """A spindle-synchronised tap (``postproc.synchronised_tap``): a ``tap`` move to the end point and
+        one back to the start, ``f`` the pitch in mm/rev; a dwell between them if the tap has one."""
+        if self.cutter is not None and self.cutter.side is not None:
+            raise ProgramError("a rigid tap with cutter compensation on cannot be run (cancel it first)",
+                               self._at(block))
+        if self.spindle not in ("cw", "ccw"):
+            raise ProgramError("a rigid tap with the spindle stopped cannot be run (start it first)",
+                               self._at(block))  # [V] rs274: "Spindle not turning in G33.1"
+        pitch = tap.pitch
+        if isinstance(pitch, Expr):
+            raise ProgramError(UNEVALUATED, self._at(block, "K"))
+        start = dict(self.pos)
+        end = self.target(block, tap.axes, absolute)
+        if self.travel is not None:
+            self.travel.line(block, start, end, self._programmed(tap.axes), self.incremental and not absolute, False)
+        self.sync = pitch * self.scale
+        try:
+            self.line_move("tap", end, block.line, emit)
+            if tap.dwell:
+                emit({"line": block.line, "event": "dwell", "seconds": num(tap.dwell)})
+            self.line_move("tap", start, block.line, emit)
+        finally:
+            self.sync = None
+
+    def _machine_coordinates(self, block: Block, m: Motion, target: dict[str, float]) -> None:
+        """A move in machine coordinates: its value is where the machine's controlled point goes, without
+        the tool length ([K] Fanuc, Haas: ``G53 Z0`` retracts the spindle to the top whatever the tool;
+        [?] LinuxCNC), so the programmed point is what lies the offset below it. Cutter compensation
+        refuses it ([V] LinuxCNC "Cannot use g53 with cutter radius comp")."""
+        if self.cutter is not None and self.cutter.side is not None:
+            raise ProgramError("a move in machine coordinates with cutter compensation on cannot be run",
+                               self._at(block))
+        if self.length.offset and LENGTH_AXIS in self._programmed(m.axes):
+            target[LENGTH_AXIS] -= self.length.offset
+
+
+def simulate(blocks: Iterable[Block], ctx: Context, live_after_end: list[int] | None = None,
+             unsimulated: list[tuple[int, str, str]] | None = None, travel_warn: bool = False,
+             cutter_rules: CutterRules | None = None) -> Iterator[Event]:
+    """Blocks (already lowered for ``ToolpathTarget``) -> the header, then events in execution order.
+
+    Errors are reported to ``ctx.diagnostics`` with the block's location and the block is skipped;
+    the caller raises them at the end (``Diagnostics.check``). Events are held back only until the
+    first feed move fixes the header's feed mode (at most ``HEADER_LOOKAHEAD`` of them).
+    """
+    sim = Simulator(ctx, travel_warn, cutter_rules)
+    if live_after_end is not None:
+        sim.live_after_end = live_after_end  # the caller reads the lines recorded there
+    if unsimulated is not None:
+        sim.unsimulated = unsimulated  # so does verify the settings the path does not show
+    report = ctx.diagnostics.error
+    held: list[Event] = []
+    holding = True
+    units: str | None = None  # the program's units at its first move, for the header
+    out: list[Event] = []
+    for block in blocks:
+        try:
+            sim.block(block, out.append)
+        except PostprocError as err:
+            report(err.located(ctx.at(block)))
+            out.clear()
+            continue
+        if not out:
+            continue
+        if holding:
+            if units is None and any("move" in ev for ev in out):
+                units = sim.modal.units
+            held.extend(out)
+            out.clear()
+            if sim.header_mode is None and len(held) < HEADER_LOOKAHEAD:
+                continue
+            if sim.header_mode is None:
+                sim.header_mode = "per_min"
+            yield header(ctx, sim.header_mode, units or sim.modal.units)
+            yield from held
+            held, holding = [], False
+        else:
+            yield from out
+            out.clear()
+    try:
+        sim.out = out.append
+        sim.finish()
+    except PostprocError as err:
+        report(err.located(ctx.at(sim.current)) if sim.current is not None else err)
+        out.clear()
+    if out and not holding:
+        yield from out
+    elif out:
+        held.extend(out)
+    if holding:
+        yield header(ctx, sim.header_mode, units or sim.modal.units)
+        yield from held
+
