@@ -64,7 +64,7 @@ def translate(lines: Iterable[str], out: TextIO, *, file: str, source: str, targ
             ctx.run_data["output_map"] = output_map
         lowered = lower_for(sequences.before_lowering(blocks), ctx, dst, on_unsupported, registry.lowerings)
         writer = dst.WRITER(ctx, src.NAME, dst)
-        from .fast import install as install_fast_lane  # (imported with the writer's modules, not at start)
+        from .fast.lane import install as install_fast_lane  # (imported with the writer's modules, not at start)
         install_fast_lane(writer)
         writer.write(sequences.after_lowering(lowered), out)
     diagnostics.check()

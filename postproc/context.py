@@ -10,6 +10,7 @@ from mypy_extensions import mypyc_attr
 from .cycle_words import CycleWords
 from .errors import Diagnostics, Location
 from .ir import Block
+from .lanes import BlockLane, HoleLane
 from .setup.machine_setup import MachineSetup
 from .source_map import locate
 from .state import ModalState
@@ -26,7 +27,8 @@ class Context:
 
     __slots__ = ("file", "setup", "diagnostics", "state", "dialect", "cycle_words", "on_unsupported",
                  "program_mode", "keep_check", "reader", "stops_before_motion", "feed_before_units", "cutter_rules", "run_data",
-                 "point_mix", "lathe", "increments", "diameter", "one_block", "peck_clearance_mm", "moves_made")
+                 "point_mix", "lathe", "increments", "diameter", "one_block", "peck_clearance_mm", "moves_made",
+                 "block_lane", "hole_lane")
 
     def __init__(self, file: str, setup: MachineSetup, diagnostics: Diagnostics, dialect: str,
                  cycle_words: CycleWords | None = None) -> None:
@@ -81,6 +83,11 @@ class Context:
         self.keep_check: Callable[[list[Block]], str | None] | None = None
         """For 'auto': given the program from its first construct on, the reason it cannot be kept
         symbolically for the target (None: it can)."""
+        self.block_lane: BlockLane | None = None
+        """The run's plain-block lane (``postproc.fast.reading``): the block syntax offers it a block first."""
+        self.hole_lane: HoleLane | None = None
+        """The run's next-hole lane (``postproc.fast.reading``): the cycle resolver offers it a block that
+        repeats the active cycle first."""
 
     def at(self, block: Block, col: int = 1) -> Location:
         """Where ``block`` (column ``col``) is, through the source map: the one way to locate a block."""

@@ -47,6 +47,8 @@ def read_blocks(lines: Iterable[str], file: str, dialect: type[Dialect], setup: 
     if prepare is not None:
         prepare(ctx)
     pipeline = dialect.pipeline(setup)
+    from .fast.reading import install_reading  # (imported with the steps' modules, not at start)
+    install_reading(pipeline, ctx)
     blocks = dialect.READER(ctx).read(checked_lines(lines, ctx, dialect.READER.BLANKS))
     return ctx, pipeline.run(_warn_if_empty(blocks, ctx), ctx)
 
