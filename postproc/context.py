@@ -1,7 +1,14 @@
-"""The run's context: what every step of one run shares, and word columns for error locations."""
+"""The run's context: what every step of one run shares, and word columns for error locations.
+
+What a step offers the run's speed-only shortcuts is here too (``BlockLane``, ``HoleLane``): a step that
+reads one way (the block syntax, the cycle resolver) asks the lane the run installed (``postproc.fast``)
+first and reads the block itself when the lane answers no; it knows only these two interfaces, and
+compiled each is a direct method call on every block.
+"""
 
 from __future__ import annotations
 
+import abc
 import re
 from typing import Any, Callable, Final, Mapping
 
@@ -10,7 +17,6 @@ from mypy_extensions import mypyc_attr
 from .cycle_words import CycleWords
 from .errors import Diagnostics, Location
 from .ir import Block
-from .lanes import BlockLane, HoleLane
 from .setup.machine_setup import MachineSetup
 from .source_map import locate
 from .state import ModalState
@@ -18,6 +24,34 @@ from .state import ModalState
 
 NOT_SET: Any = object()
 """A ``Context`` attribute a step has not initialised yet."""
+
+
+@mypyc_attr(allow_interpreted_subclasses=True)
+class BlockLane(abc.ABC):
+    """Reads the commonest blocks of a word block syntax, as its general path reads them."""
+
+    __slots__ = ()
+
+    @abc.abstractmethod
+    def read(self, block: Block, ctx: Context, words: list[tuple[str, str]]) -> bool:
+        """Give ``block`` its sections and return True, or return False leaving it as it was (the step
+        then reads it)."""
+
+
+@mypyc_attr(allow_interpreted_subclasses=True)
+class HoleLane(abc.ABC):
+    """Resolves a block that moves an active hole cycle to its next hole, as the cycle resolver does."""
+
+    __slots__ = ()
+
+    @abc.abstractmethod
+    def repeat(self, block: Block, ctx: Context) -> bool:
+        """Resolve ``block`` and return True, or return False leaving it as it was (the resolver then
+        resolves it from its words and calls ``resolved``)."""
+
+    @abc.abstractmethod
+    def resolved(self, block: Block, ctx: Context) -> None:
+        """The resolver resolved ``block`` from its words (after ``repeat`` said False)."""
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)

@@ -15,11 +15,10 @@ from typing import Any, Final
 
 from mypy_extensions import mypyc_attr
 
-from ..context import Context
+from ..context import Context, HoleLane
 from ..errors import PostprocError
 from ..expr import Expr
 from ..ir import Block
-from ..lanes import HoleLane
 from ..state import PLANE_AXES, ModalState
 from ..cycles.expansion import CycleExpansion
 from ..cycles.resolve import (DWELL_KEY, STATE_KEY, WORD_RANK, CannedCycleResolveSyntax, Failer, LazyExpansion,

@@ -15,10 +15,9 @@ from typing import Final
 
 from mypy_extensions import mypyc_attr
 
-from ..context import Context
+from ..context import BlockLane, Context
 from ..expr import Expr
 from ..ir import Block, Feed, Motion, Sequence
-from ..lanes import BlockLane
 from ..numbers import decimal_value
 from ..rs274.block_syntax import AXIS_LETTERS, CENTER_AXIS, WordBlockSyntax
 from ..rs274.lathe_block_syntax import SINGLE_KEY

@@ -13,9 +13,8 @@ from __future__ import annotations
 
 from typing import Final
 
-from ..context import Context
+from ..context import BlockLane, Context, HoleLane
 from ..cycles.resolve import CannedCycleResolveSyntax
-from ..lanes import BlockLane, HoleLane
 from ..rs274.block_syntax import WordBlockSyntax
 from ..rs274.lathe_block_syntax import LatheBlockSyntax
 from ..syntax import Pipeline
