@@ -57,7 +57,9 @@ def translate(lines: Iterable[str], out: TextIO, *, file: str, source: str, targ
             check_travel(lines, file=file, dialect=src, setup=setup, diagnostics=diagnostics,
                          on_unsupported=on_unsupported, registry=registry)
         mode = "keep" if src.NAME == dst.NAME else "auto" if dst.PROGRAMS else "execute"
-        ctx, blocks = read_blocks(lines, file, src, setup, diagnostics, program_mode=mode, prepare=prepare)
+        from .fast.reading import install_reading  # (imported with the steps' modules, not at start)
+        ctx, blocks = read_blocks(lines, file, src, setup, diagnostics, program_mode=mode, prepare=prepare,
+                                  lanes=install_reading)
         sequences = Sequences(ctx, src.NAME, dst, defines)
         ctx.run_data["sequences"] = sequences
         if output_map is not None:
@@ -137,7 +139,9 @@ def read_program(lines: Iterable[str], *, file: str, dialect: str, setup: Machin
     registry = registry or default_registry()
     diagnostics = Diagnostics(level)
     with gc_paused():
-        _, blocks = read_blocks(lines, file, registry.dialect(dialect), setup or MachineSetup(), diagnostics)
+        from .fast.reading import install_reading
+        _, blocks = read_blocks(lines, file, registry.dialect(dialect), setup or MachineSetup(), diagnostics,
+                                lanes=install_reading)
         result = list(blocks)
     diagnostics.check()
     return result
