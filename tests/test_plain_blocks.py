@@ -119,6 +119,7 @@ def programs(draw: st.DrawFn) -> list[str]:
 @example(program=["G21", "G90", "G0 X0. Y0. Z5.", "G99 G81 X1. Y2. Z-3. R1. F100.", "X2.", "N30 Y3.5", "X4 Y5",
                   "x5.", "Z-4.", "X6. R0.5", "X7. F90.", "N40", "X1. X2.", "G80", "X8."])  # the next holes of a cycle
 @example(program=["G21", "G90", "G1 F100.", "X1. U2.", "Z1. W-1.", "G2 X2. Z1. I1. J0."])  # lathe: its own refusals
+@example(program=[":1234", "G21 G90", "G1 X1. F100."])  # ISO's program number address
 def test_the_lane_reads_what_the_general_path_reads(program: list[str], dialect: str, machine: str) -> None:
     fast = _read(program, dialect, machine)
     with lanes(lambda syntax: None):

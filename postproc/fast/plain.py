@@ -24,6 +24,7 @@ from ..rs274.lathe_block_syntax import SINGLE_KEY
 from ..rs274.point_mix import point_mix
 
 _UPPER: Final = {c: c.upper() for c in "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"}
+_UPPER[":"] = "O"  # ':' is ISO's spelling of the program number address (as ``WordBlockSyntax`` reads it)
 _ARC_LETTERS: Final = frozenset("IJKR")
 _AXIS: Final = 1
 _N: Final = 2
