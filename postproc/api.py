@@ -71,7 +71,9 @@ def translate(lines: Iterable[str], out: TextIO, *, file: str, source: str, targ
                          on_unsupported=on_unsupported, registry=registry)
         mode = ("keep" if src.NAME == dst.NAME and not options.active() and arcs is None
                 else "auto" if dst.PROGRAMS and arcs is None else "execute")
-        ctx, blocks = read_blocks(lines, file, src, setup, diagnostics, program_mode=mode, prepare=prepare)
+        from .fast.reading import install_reading  # (imported with the steps' modules, not at start)
+        ctx, blocks = read_blocks(lines, file, src, setup, diagnostics, program_mode=mode, prepare=prepare,
+                                  lanes=install_reading)
         sequences = Sequences(ctx, src.NAME, dst, defines)
         ctx.run_data["sequences"] = sequences
         if output_map is not None:
@@ -84,7 +86,7 @@ def translate(lines: Iterable[str], out: TextIO, *, file: str, source: str, targ
         if writer_class is None:
             raise UsageError(f"the {dst.NAME} dialect cannot write this program (it has no writer for it)")
         writer = writer_class(ctx, src.NAME, dst)
-        from .fast import install as install_fast_lane  # (imported with the writer's modules, not at start)
+        from .fast.lane import install as install_fast_lane  # (imported with the writer's modules, not at start)
         install_fast_lane(writer)
         if not moved:
             writer.write(sequences.after_lowering(lowered), out)
@@ -199,7 +201,9 @@ def read_program(lines: Iterable[str], *, file: str, dialect: str, setup: Machin
     registry = registry or default_registry()
     diagnostics = Diagnostics(level)
     with gc_paused():
-        _, blocks = read_blocks(lines, file, registry.dialect(dialect), setup or MachineSetup(), diagnostics)
+        from .fast.reading import install_reading
+        _, blocks = read_blocks(lines, file, registry.dialect(dialect), setup or MachineSetup(), diagnostics,
+                                lanes=install_reading)
         result = list(blocks)
     diagnostics.check()
     return result

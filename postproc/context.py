@@ -1,7 +1,14 @@
-"""The run's context: what every step of one run shares, and word columns for error locations."""
+"""The run's context: what every step of one run shares, and word columns for error locations.
+
+What a step offers the run's speed-only shortcuts is here too (``BlockLane``, ``HoleLane``): a step that
+reads one way (the block syntax, the cycle resolver) asks the lane the run installed (``postproc.fast``)
+first and reads the block itself when the lane answers no; it knows only these two interfaces, and
+compiled each is a direct method call on every block.
+"""
 
 from __future__ import annotations
 
+import abc
 import re
 from typing import Any, Callable, Final, Mapping
 
@@ -20,13 +27,42 @@ NOT_SET: Any = object()
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
+class BlockLane(abc.ABC):
+    """Reads the commonest blocks of a word block syntax, as its general path reads them."""
+
+    __slots__ = ()
+
+    @abc.abstractmethod
+    def read(self, block: Block, ctx: Context, words: list[tuple[str, str]]) -> bool:
+        """Give ``block`` its sections and return True, or return False leaving it as it was (the step
+        then reads it)."""
+
+
+@mypyc_attr(allow_interpreted_subclasses=True)
+class HoleLane(abc.ABC):
+    """Resolves a block that moves an active hole cycle to its next hole, as the cycle resolver does."""
+
+    __slots__ = ()
+
+    @abc.abstractmethod
+    def repeat(self, block: Block, ctx: Context) -> bool:
+        """Resolve ``block`` and return True, or return False leaving it as it was (the resolver then
+        resolves it from its words and calls ``resolved``)."""
+
+    @abc.abstractmethod
+    def resolved(self, block: Block, ctx: Context) -> None:
+        """The resolver resolved ``block`` from its words (after ``repeat`` said False)."""
+
+
+@mypyc_attr(allow_interpreted_subclasses=True)
 class Context:
     """What every step of one run shares: file name, set-up, diagnostics, modal state, and what the
     reading dialect tells the neutral steps about its words."""
 
     __slots__ = ("file", "setup", "diagnostics", "state", "dialect", "cycle_words", "on_unsupported",
                  "program_mode", "keep_check", "reader", "stops_before_motion", "feed_before_units", "cutter_rules", "run_data",
-                 "point_mix", "lathe", "increments", "diameter", "one_block", "peck_clearance_mm", "moves_made")
+                 "point_mix", "lathe", "increments", "diameter", "one_block", "peck_clearance_mm", "moves_made",
+                 "block_lane", "hole_lane")
 
     def __init__(self, file: str, setup: MachineSetup, diagnostics: Diagnostics, dialect: str,
                  cycle_words: CycleWords | None = None) -> None:
@@ -81,6 +117,11 @@ class Context:
         self.keep_check: Callable[[list[Block]], str | None] | None = None
         """For 'auto': given the program from its first construct on, the reason it cannot be kept
         symbolically for the target (None: it can)."""
+        self.block_lane: BlockLane | None = None
+        """The run's plain-block lane (``postproc.fast.reading``): the block syntax offers it a block first."""
+        self.hole_lane: HoleLane | None = None
+        """The run's next-hole lane (``postproc.fast.reading``): the cycle resolver offers it a block that
+        repeats the active cycle first."""
 
     def at(self, block: Block, col: int = 1) -> Location:
         """Where ``block`` (column ``col``) is, through the source map: the one way to locate a block."""

@@ -18,6 +18,7 @@ from .errors import Diagnostics, Location, UsageError
 from .ir import Block
 from .lines import checked_lines
 from .setup.machine_setup import MachineSetup
+from .syntax import Pipeline
 
 
 @contextlib.contextmanager
@@ -34,12 +35,15 @@ def gc_paused() -> Iterator[None]:
 
 def read_blocks(lines: Iterable[str], file: str, dialect: type[Dialect], setup: MachineSetup,
                 diagnostics: Diagnostics, *, program_mode: str = "keep",
-                prepare: Callable[[Context], None] | None = None) -> tuple[Context, Iterator[Block]]:
+                prepare: Callable[[Context], None] | None = None,
+                lanes: Callable[[Pipeline, Context], None] | None = None) -> tuple[Context, Iterator[Block]]:
     """Text -> IR: the dialect's reader, then its syntax pipeline. Returns the run's context too.
 
     ``program_mode`` says what the interpreter step does with a program that computes ('keep',
     'execute' or 'auto', see ``Context.program_mode``); it is set before the pipeline is built, as is
-    whatever ``prepare`` adds to the context, so the steps choose their path once."""
+    whatever ``prepare`` adds to the context, so the steps choose their path once. ``lanes`` installs the
+    run's speed-only shortcuts for the pipeline (``postproc.fast.reading.install_reading``, passed by the
+    commands above the fast lane); None: every block takes the steps' general path."""
     if dialect.READER is None:
         raise UsageError(f"the {dialect.NAME} dialect cannot be read (it is write-only)")
     ctx = dialect.context(file, setup, diagnostics)
@@ -47,6 +51,8 @@ def read_blocks(lines: Iterable[str], file: str, dialect: type[Dialect], setup: 
     if prepare is not None:
         prepare(ctx)
     pipeline = dialect.pipeline(setup)
+    if lanes is not None:
+        lanes(pipeline, ctx)
     blocks = dialect.READER(ctx).read(checked_lines(lines, ctx, dialect.READER.BLANKS))
     return ctx, pipeline.run(_warn_if_empty(blocks, ctx), ctx)
 

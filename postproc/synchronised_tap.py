@@ -35,7 +35,7 @@ from typing import TYPE_CHECKING, Any
 from mypy_extensions import mypyc_attr
 
 from .expr import Expr
-from .ir import Block, CompoundMotion, Section, _axes_from_xml, _axes_to_xml
+from .ir import Block, CompoundMotion, Section, axes_from_xml, axes_to_xml
 from .xmlio import computed_value, lxml_etree
 
 if TYPE_CHECKING:
@@ -68,7 +68,7 @@ class RigidTap(Section):
         axes: dict[str, float | Expr] = {}
         for child in el:
             if child.tag == "Axes":
-                axes = _axes_from_xml(child)
+                axes = axes_from_xml(child)
             elif isinstance(child.tag, str) and child.tag != "Value":
                 raise ValueError(f"unexpected <{child.tag}>")
         raw = el.get("pitch")
@@ -89,7 +89,7 @@ class RigidTap(Section):
             el.set("dwell", repr(float(self.dwell)))
         if self.speedup is not None:
             el.set("speedup", repr(float(self.speedup)))
-        _axes_to_xml(el, "Axes", self.axes)
+        axes_to_xml(el, "Axes", self.axes)
         return el
 
     def _key(self) -> tuple[Any, ...]:

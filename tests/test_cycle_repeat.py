@@ -1,8 +1,9 @@
-"""A block that only moves an active cycle to its next hole (``X.. Y..``) is resolved from the block before it
-when nothing it depends on has changed (``CannedCycleResolveSyntax._repeat``): the record, its motion, where
-the tool ends and every error must be what resolving it from its words gives. Programs mix next-hole blocks
-with every change that touches a cycle (feed, levels, G98/G99, G90/G91, units, plane, spindle, dwell,
-repeats, cancels, moves) and are read twice, remembering and not."""
+"""The next-hole lane (``postproc.fast.holes``): a block that only moves an active cycle to its next hole
+(``X.. Y..``) is resolved from the block before it when nothing it depends on has changed. The record, its
+motion, where the tool ends and every error must be what resolving it from its words gives. Programs mix
+next-hole blocks with every change that touches a cycle (feed, levels, G98/G99, G90/G91, units, plane,
+spindle, dwell, repeats, cancels, moves) and are read twice, with the lane and without it
+(``postproc.fast.reading.hole_lane`` answering None), for every reading dialect the lane is chosen for."""
 
 from __future__ import annotations
 
@@ -14,11 +15,14 @@ import pytest
 from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
+import postproc.fast.reading as reading
 from postproc.api import read_program
 from postproc.cycles.resolve import CannedCycleResolveSyntax
 from postproc.errors import ErrorLevel, ErrorList
+from postproc.fast.holes import NextHoleLane
 from postproc.ir import Block, CompoundMotion
 from postproc.plugins import default_registry
+from postproc.setup.machine_setup import MachineSetup
 
 CALLS = ["G81", "G82 P300", "G83 Q2.", "G73 Q1.5", "G84", "G85", "G86", "G89 P200", "G76 Q0.5", "G87 Q0.5"]
 """Cycle codes with the words each needs besides the levels (fanuc and LinuxCNC read them all)."""
@@ -47,42 +51,33 @@ def programs(draw: st.DrawFn) -> str:
     return "\n".join(lines) + "\nG80\nM30\n"
 
 
-@contextmanager
-def resolvers(make: Any) -> Iterator[None]:
-    """The cycle resolver of the fanuc and LinuxCNC pipelines replaced by ``make(resolver)``."""
+def _lane_dialects() -> tuple[str, ...]:
+    """The reading dialects whose resolver takes the lane (Fagor's letters differ: its programs are refused
+    alike, or read alike)."""
     registry = default_registry()
-    saved = {}
-    for name in ("fanuc", "linuxcnc"):
+    out = []
+    for name in sorted(registry.dialects):
         dialect = registry.dialect(name)
-        saved[name] = dialect.__dict__.get("pipeline")  # None: inherited
-        original = dialect.pipeline
+        steps = dialect.pipeline(MachineSetup()).steps
+        if any(isinstance(step, CannedCycleResolveSyntax) and reading.hole_lane(step) is not None for step in steps):
+            out.append(name)
+    return tuple(out)
 
-        def pipeline(cls: Any, setup: Any, original: Any = original) -> Any:
-            made = original(setup)
-            made.steps = [make(step) if isinstance(step, CannedCycleResolveSyntax) else step for step in made.steps]
-            return made
 
-        dialect.pipeline = classmethod(pipeline)  # type: ignore[method-assign,assignment]
-    try:
+DIALECTS = _lane_dialects()
+
+
+@contextmanager
+def lanes(make: Any) -> Iterator[None]:
+    """The run's next-hole lane made by ``make(resolver)`` (None: no lane)."""
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(reading, "hole_lane", make)
         yield
-    finally:
-        for name, method in saved.items():
-            if method is None:
-                del registry.dialect(name).pipeline
-            else:
-                registry.dialect(name).pipeline = method  # type: ignore[method-assign]
-
-
-def remembering(on: bool) -> Any:
-    def make(step: CannedCycleResolveSyntax) -> CannedCycleResolveSyntax:
-        step.remember = on
-        return step
-    return resolvers(make)
 
 
 def resolved(program: str, dialect: str, remember: bool) -> list[Any]:
     """Each block's sections (the cycle's motion made) and the errors, comparable."""
-    with remembering(remember):
+    with lanes(reading.hole_lane if remember else lambda resolver: None):
         try:
             blocks = read_program(program.splitlines(keepends=True), file="t.nc", dialect=dialect)
         except ErrorList as err:
@@ -104,8 +99,8 @@ def _sections(block: Block) -> list[Any]:
     return out
 
 
-@pytest.mark.parametrize("dialect", ["fanuc", "linuxcnc"])
-@settings(max_examples=200, deadline=None)
+@pytest.mark.parametrize("dialect", DIALECTS)
+@settings(max_examples=100, deadline=None)
 @given(program=programs())
 @example(program="G21 G17 G90 G0 X0. Y0. Z20.\nS1000 M03\nF150.\nG99 G81 X1. Y2. Z-5. R2.\nX4.\nY3.\nF80.\nX0.\n"
                  "G98\nX-7.5\nG91\nX4.\nG90\nY-2.\nG80\nM30\n")
@@ -123,16 +118,29 @@ def test_next_hole_blocks_are_remembered() -> None:
     words again."""
     made: list[bool] = []
 
-    class Spy(CannedCycleResolveSyntax):
-        def _repeat(self, block: Block, ctx: Any) -> bool:
-            done = super()._repeat(block, ctx)
+    class Spy(NextHoleLane):
+        def repeat(self, block: Block, ctx: Any) -> bool:
+            done = super().repeat(block, ctx)
             made.append(done)
             return done
 
     program = "G21 G17 G90 G0 X0. Y0. Z20.\nG99 G81 X1. Y2. Z-5. R2. F100.\nX2.\nX3.\nX4.\nF90.\nX5.\nX6.\nM30\n"
-    with resolvers(lambda step: Spy(step.semantics, step.expansions)):
+    with lanes(Spy):
         blocks = read_program(program.splitlines(keepends=True), file="t.nc", dialect="fanuc")
     assert made == [False, True, True, False, True]
     assert [b.sections["CannedCycle"].position["X"] for b in blocks if "CannedCycle" in b.sections] == [
         1.0, 2.0, 3.0, 4.0, 5.0, 6.0]
     assert [b.sections["CannedCycle"].feed for b in blocks if "CannedCycle" in b.sections] == [100.0] * 4 + [90.0] * 2
+
+
+def test_the_lane_is_chosen_where_the_base_resolves() -> None:
+    """Fanuc's and LinuxCNC's resolvers take the lane; a resolver class that overrides a method the lane
+    skips does not, whatever the override does (a plugin declares nothing)."""
+
+    class Checking(CannedCycleResolveSyntax):
+        def _check(self, *args: Any) -> None:
+            super()._check(*args)
+
+    assert {"fanuc", "linuxcnc"} <= set(DIALECTS)
+    assert isinstance(reading.hole_lane(CannedCycleResolveSyntax("fanuc")), NextHoleLane)
+    assert reading.hole_lane(Checking("fanuc")) is None

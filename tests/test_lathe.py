@@ -470,7 +470,7 @@ def test_an_absolute_and_an_incremental_word_of_one_axis_are_refused() -> None:
 
 @pytest.mark.parametrize("line", ["X20. U2.", "N20 Z-5. W1.5", "G1 X20. U2."])
 def test_a_cam_line_with_both_words_of_an_axis_is_refused_too(line: str) -> None:
-    """A canonical CAM line (no G code) takes the block syntax's fast path, which once accepted ``X20. U2.``
+    """A canonical CAM line (no G code) takes the plain-block lane (``postproc.fast.plain``), which once accepted ``X20. U2.``
     (run as X22) while ``G1 X20. U2.`` was refused: both are."""
     with pytest.raises(ErrorList) as info:
         blocks(f"G00 X60. Z5. S500 M03\nG01 X50. F0.2\n{line}\n", "fanuc")

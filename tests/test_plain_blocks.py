@@ -1,31 +1,35 @@
-"""The block syntax's fast path (``WordBlockSyntax._plain``) reads a block as the general path does.
+"""The plain-block lane (``postproc.fast.plain``) reads a block as the block syntax's general path does.
 
 A CAM program's usual blocks (``N.. G1 X.. Y.. F..``, ``G2 X.. Y.. R..``, ``G3 X.. Y.. I.. J..``, or axis
 words alone) are read in one pass; anything else goes to the general path, which also explains every
-error. Random programs of such blocks, mixed with what must leave the path (a second code, point-less
+error. Random programs of such blocks, mixed with what must leave the lane (a second code, point-less
 numbers, I/J/K/R beside a straight move, both arc forms, a repeated address, lower-case letters, under an
-active canned cycle anything but N and axis words), are read twice, as shipped and with the fast path turned off (a subclass whose
-``_plain`` declines every block): blocks, sections, warnings and errors must be the same. Mill and
-lathe readings, and the dialects whose numbers without a point are in mm (ISG, Fagor).
+active canned cycle anything but N and axis words), are read twice, with the lane and without it
+(``postproc.fast.reading.block_lane`` answering None): blocks, sections, warnings and errors must be the
+same, for every reading the lane is chosen for (mill and lathe).
 """
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from contextlib import contextmanager
 from typing import Any
 
 import pytest
 from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
 
+import postproc.fast.reading as reading
 from postproc.api import read_program
 from postproc.errors import ErrorList
+from postproc.fast.plain import PlainLane, PlainLatheLane
 from postproc.ir import Block
 from postproc.plugins import default_registry
 from postproc.rs274.block_syntax import WordBlockSyntax
 from postproc.setup.machine_setup import MachineSetup
-from postproc.syntax import Pipeline
 
-READINGS = (("fanuc", "mill"), ("fanuc", "lathe"), ("gsk", "lathe"), ("isg", "mill"), ("fagor", "mill"))
+CANDIDATES = (("fanuc", "mill"), ("fanuc", "lathe"), ("gsk", "lathe"), ("isg", "mill"), ("fagor", "mill"),
+              ("linuxcnc", "mill"))
 
 
 def _setup(machine: str) -> MachineSetup:
@@ -34,15 +38,27 @@ def _setup(machine: str) -> MachineSetup:
     return setup
 
 
-def _general(step: Any) -> Any:
-    """The same step with the fast path off: an interpreted subclass declines every block."""
-    cls = type(step)
-    general = type(f"General{cls.__name__}", (cls,), {"__slots__": (), "_plain": lambda self, block, ctx, words: False})
-    copy = general.__new__(general)
-    for name in (slot for klass in cls.__mro__ for slot in getattr(klass, "__slots__", ())):
-        if hasattr(step, name):
-            setattr(copy, name, getattr(step, name))
-    return copy
+def _syntax(dialect: str, machine: str) -> WordBlockSyntax | None:
+    """The block syntax of the reading (None: it has none of the family's)."""
+    steps = default_registry().dialect(dialect).pipeline(_setup(machine)).steps
+    return next((step for step in steps if isinstance(step, WordBlockSyntax)), None)
+
+
+def _takes_lane(dialect: str, machine: str) -> bool:
+    syntax = _syntax(dialect, machine)
+    return syntax is not None and reading.block_lane(syntax) is not None
+
+
+READINGS = tuple(reading_ for reading_ in CANDIDATES if _takes_lane(*reading_))
+"""The readings the lane is chosen for."""
+
+
+@contextmanager
+def lanes(make: Any) -> Iterator[None]:
+    """The run's plain-block lane made by ``make(syntax)`` (None: no lane)."""
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(reading, "block_lane", make)
+        yield
 
 
 def _read(program: list[str], dialect: str, machine: str) -> str:
@@ -102,54 +118,54 @@ def programs(draw: st.DrawFn) -> list[str]:
                   "G2 X1. I1. I2."])  # repeated addresses: the general path refuses them
 @example(program=["G21", "G90", "G0 X0. Y0. Z5.", "G99 G81 X1. Y2. Z-3. R1. F100.", "X2.", "N30 Y3.5", "X4 Y5",
                   "x5.", "Z-4.", "X6. R0.5", "X7. F90.", "N40", "X1. X2.", "G80", "X8."])  # the next holes of a cycle
-def test_the_fast_path_reads_what_the_general_path_reads(program: list[str], dialect: str, machine: str,
-                                                         monkeypatch: pytest.MonkeyPatch) -> None:
-    cls = default_registry().dialect(dialect)
+@example(program=["G21", "G90", "G1 F100.", "X1. U2.", "Z1. W-1.", "G2 X2. Z1. I1. J0."])  # lathe: its own refusals
+@example(program=[":1234", "G21 G90", "G1 X1. F100."])  # ISO's program number address
+def test_the_lane_reads_what_the_general_path_reads(program: list[str], dialect: str, machine: str) -> None:
     fast = _read(program, dialect, machine)
-    shipped = cls.pipeline
-
-    def general_pipeline(setup: MachineSetup) -> Pipeline:
-        pipeline = shipped(setup)
-        steps = [_general(s) if isinstance(s, WordBlockSyntax) else s for s in pipeline.steps]
-        assert steps != pipeline.steps or not any(isinstance(s, WordBlockSyntax) for s in steps)
-        return Pipeline(pipeline.dialect, steps)
-
-    with monkeypatch.context() as patch:  # undone before hypothesis's next example reads "as shipped"
-        patch.setattr(cls, "pipeline", general_pipeline)
+    with lanes(lambda syntax: None):
         slow = _read(program, dialect, machine)
     assert fast == slow
 
 
-def test_cam_blocks_take_the_fast_path(monkeypatch: pytest.MonkeyPatch) -> None:
-    """The test above would pass with the path never taken: count the blocks that take it."""
-    cls = default_registry().dialect("fanuc")
-    shipped = cls.pipeline
+def test_the_lane_is_chosen_where_the_base_reads() -> None:
+    """Fanuc's mill and lathe readings and GSK's take the lane; a reading whose class overrides a method the
+    lane skips (ISG's and Fagor's ``g_sections``) or replaces ``build`` (RS274/NGC) does not: the test above
+    would pass with no lane ever chosen."""
+    assert {("fanuc", "mill"), ("fanuc", "lathe"), ("gsk", "lathe")} <= set(READINGS)
+    assert not {("isg", "mill"), ("fagor", "mill"), ("linuxcnc", "mill")} & set(READINGS)
+    lathe = _syntax("fanuc", "lathe")
+    assert lathe is not None and type(reading.block_lane(lathe)) is PlainLatheLane
+
+    class Overriding(type(_syntax("fanuc", "mill"))):  # type: ignore[misc]
+        __slots__ = ()
+
+        def finish_words(self, *args: Any) -> None:
+            super().finish_words(*args)
+
+    assert reading.block_lane(Overriding()) is None
+
+
+def test_cam_blocks_take_the_lane() -> None:
+    """Count the blocks the lane reads: each plain one, in order."""
     taken: list[int] = []
 
-    def counting(step: Any) -> Any:
-        base = type(step)
+    class Counted(PlainLane):
+        __slots__ = ()
 
-        def plain(self: Any, block: Block, ctx: Any, words: Any) -> bool:
-            took = bool(base._plain(self, block, ctx, words))
+        def read(self, block: Block, ctx: Any, words: Any) -> bool:
+            took = super().read(block, ctx, words)
             if took:
                 taken.append(block.line)
             return took
 
-        counted = type("Counted", (base,), {"__slots__": (), "_plain": plain})
-        return counted.__new__(counted)
-
-    def counting_pipeline(setup: MachineSetup) -> Pipeline:
-        pipeline = shipped(setup)
-        return Pipeline(pipeline.dialect, [counting(s) if isinstance(s, WordBlockSyntax) else s for s in pipeline.steps])
-
-    monkeypatch.setattr(cls, "pipeline", counting_pipeline)
     program = ["G21 G90 G17", "G0 X0. Y0.", "N10 G01 Z-1. F300.", "N20 X10.5 Y2.25", "G02 X12. Y4. R2.",
                "N30 G3 X10. Y6. I-2. J0.", "X8. Y4. I0. J-2.", "G1 X0. Y0. F1200.", "G0 Z5. M9"]
-    read_program([line + "\n" for line in program], file="p.nc", dialect="fanuc")
+    with lanes(Counted):
+        read_program([line + "\n" for line in program], file="p.nc", dialect="fanuc")
     assert taken == [2, 3, 4, 5, 6, 7, 8]
 
 
 def test_modal_arc_without_centre_is_refused_where_it_is() -> None:
-    """The fast path declines an arc with no centre; the general path refuses it, located."""
+    """The lane declines an arc with no centre; the general path refuses it, located."""
     with pytest.raises(ErrorList, match=r"p\.nc:3:1: error: an arc needs a centre"):
         read_program(["G21 G90\n", "G2 X1. Y1. R1.\n", "X2. Y2.\n"], file="p.nc", dialect="fanuc")

@@ -5,7 +5,7 @@ section dispatch, for the runs whose writer class writes such a block with the w
 (the lane decides, ``postproc.fast.lane``). Random programs of such blocks, mixed with what must leave the
 lane (arcs, other axes, numbers with more places than are written exactly, incremental moves that carry
 rounding, block numbers with leading zeros, a units change, cycles), are translated twice: with the lane,
-and without it (``postproc.fast.install`` replaced by nothing); text, warnings and errors must be the
+and without it (``postproc.fast.lane.install`` replaced by nothing); text, warnings and errors must be the
 same, for every dialect pair a lane is chosen for.
 """
 
@@ -18,7 +18,7 @@ import pytest
 from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
 
-import postproc.fast
+import postproc.fast.lane
 from postproc.api import translate
 from postproc.errors import Diagnostics, ErrorList
 from postproc.fast.lane import COPY_METHODS, STRAIGHT_METHODS, choose, own
@@ -181,7 +181,7 @@ def _run(program: list[str], target: str, source: str = "fanuc") -> str:
 
 
 def _no_lane(writer: Writer) -> None:
-    """``postproc.fast.install`` turned off: every block takes the general path."""
+    """``postproc.fast.lane.install`` turned off: every block takes the general path."""
 
 
 @pytest.mark.parametrize(("source", "target"), PAIRS)
@@ -202,7 +202,7 @@ def test_the_lane_writes_what_the_general_path_writes(program: list[str], source
                                                      monkeypatch: pytest.MonkeyPatch) -> None:
     fast = _run(program, target, source)
     with monkeypatch.context() as patch:
-        patch.setattr(postproc.fast, "install", _no_lane)
+        patch.setattr(postproc.fast.lane, "install", _no_lane)
         slow = _run(program, target, source)
     assert fast == slow
 
@@ -219,7 +219,7 @@ def test_the_lane_is_chosen_where_the_base_writes() -> None:
 def test_cam_blocks_take_the_lane(target: str, monkeypatch: pytest.MonkeyPatch) -> None:
     """A CAM program's straight blocks take the lane (``Writer.lane``): each block it answers, in order."""
     taken: list[str] = []
-    install = postproc.fast.install
+    install = postproc.fast.lane.install
 
     def counting(writer: Writer) -> None:
         install(writer)
@@ -233,7 +233,7 @@ def test_cam_blocks_take_the_lane(target: str, monkeypatch: pytest.MonkeyPatch) 
             return text
         writer.lane = counted
 
-    monkeypatch.setattr(postproc.fast, "install", counting)
+    monkeypatch.setattr(postproc.fast.lane, "install", counting)
     program = ["G21 G90 G17", "G0 X0. Y0.", "N10 G1 Z-1. F300.", "N20 X10.5 Y2.25", "N30 X-3.125 Y0.5 F1200.",
                "X0.000001 Y7.", "N40 Y8.5 Z-1.5", "G0 X5.", "N50 X2.", "G1 X0. Y0.", "N60 G02 X4. Y0. I2. J0.",
                "G3 X0. Y0. R2.5", "X4. Y0. I2. J0."]

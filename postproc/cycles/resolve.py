@@ -55,18 +55,16 @@ EXPANSIONS: Final[tuple[type[CycleExpansion], ...]] = (
 GROUP_01: Final = frozenset(("rapid", "linear", "cw", "ccw"))
 """Motion modes that cancel a canned cycle."""
 AXIS_LETTERS: Final = frozenset("XYZABCUVW")
-_STATE_KEY: Final = "CannedCycleResolveSyntax"
+STATE_KEY: Final = "CannedCycleResolveSyntax"
 """``ctx.state.extra`` key: the plane the active cycle was commanded in."""
-_DWELL_KEY: Final = "CannedCycleResolveSyntax.P"
+DWELL_KEY: Final = "CannedCycleResolveSyntax.P"
 _NATIVE_KEY: Final = "CannedCycleResolveSyntax.native"
 """Set while the active cycle is one with computed words, kept verbatim."""
 """``ctx.state.extra`` key: the last cycle P, which RS274 tapping falls back on even after G80."""
-_REPEAT_KEY: Final = "CannedCycleResolveSyntax.repeat"
-"""``ctx.state.extra`` key: the last resolved next-hole block and the state it was resolved in (``_Repeat``)."""
 ACTIVE_KEY: Final = "CannedCycleResolveSyntax.active"
 """``ctx.state.extra`` key: (the last resolved ``CannedCycle``, its expansion) while the cycle is active,
 for a hole pattern that repeats it (``active_cycle``)."""
-_WORD_RANK: Final = {letter: rank for rank, letter in enumerate(WORD_ORDER)}
+WORD_RANK: Final = {letter: rank for rank, letter in enumerate(WORD_ORDER)}
 """Cycle word letter -> its place in ``WORD_ORDER`` (a block's words are kept in that order)."""
 _SHIFT_AXIS: Final = {"+X": (1.0, 0), "-X": (-1.0, 0), "+Y": (1.0, 1), "-Y": (-1.0, 1)}
 """Set-up shift direction -> sign and plane axis (first/second), Fanuc's parameter table for G17-G19."""
@@ -77,7 +75,7 @@ class CannedCycleResolveSyntax(Syntax):
     """Resolves hole cycles per ``semantics``; child elements replace the built-in family expansions."""
 
     XNAME = "CannedCycleResolveSyntax"
-    __slots__ = ("semantics", "expansions", "_rules", "_by_kind", "_words_of", "remember")
+    __slots__ = ("semantics", "expansions", "_rules", "_by_kind", "_words_of")
 
     def __init__(self, semantics: str, expansions: list[CycleExpansion] | None = None) -> None:
         if semantics not in SEMANTICS:
@@ -94,9 +92,6 @@ class CannedCycleResolveSyntax(Syntax):
         for expansion in [cls() for cls in EXPANSIONS] + self.expansions:
             for kind in expansion.KINDS:
                 self._by_kind[kind] = expansion
-        self.remember = True
-        """Resolve a block that only moves to the next hole from the block before it (``_repeat``); off, every
-        block is resolved from its words (the tests compare the two)."""
 
     @classmethod
     def from_xml(cls, el: etree._Element) -> "CannedCycleResolveSyntax":
@@ -164,68 +159,12 @@ class CannedCycleResolveSyntax(Syntax):
             if _NATIVE_KEY in state.extra or _computed(block):  # a hole known only when the program runs
                 self._native(block, ctx, state.cycle.kind)
                 return
-            if self.remember and state.distance == "absolute" and _next_hole_only(block, state.plane):
-                if not self._repeat(block, ctx):
-                    self._resolve_or_drop(block, ctx, state.cycle.kind, False)
-                    self._remember(block, ctx)
-                return
-            self._resolve_or_drop(block, ctx, state.cycle.kind, False)
-
-    def _remember(self, block: Block, ctx: Context) -> None:
-        """Keep a resolved next-hole block (``_next_hole_only``) as the pattern of the next ones, with the
-        state it was resolved in."""
-        cycle = block.sections.get("CannedCycle")
-        if isinstance(cycle, CannedCycle) and cycle.repeat == 1 and not cycle.step:
-            cw = _cycle_words(ctx)
-            ctx.state.extra[_REPEAT_KEY] = _Repeat(self, _signature(ctx.state), cycle, cw.name(cycle.kind), cw.peck,
-                                                   ctx.setup.limits.moves_per_block)
-
-    def _repeat(self, block: Block, ctx: Context) -> bool:
-        """Resolve a block that only moves to the next hole (``_next_hole_only``) as the one remembered
-        (``_remember``), when everything ``_resolve`` reads besides the block's hole position and where the
-        tool stands is as it was then: the same cycle record at another spot. False when it is not."""
-        state = ctx.state
-        memo = state.extra.get(_REPEAT_KEY)
-        if type(memo) is not _Repeat or memo.owner is not self or memo.signature != _signature(state):
-            return False
-        pattern = memo.cycle
-        first, second, normal = PLANE_AXES[pattern.plane]
-        tool = state.position
-        a, b, n = tool.get(first), tool.get(second), tool.get(normal)
-        if a is None or b is None or n is None:
-            return False  # ``_resolve`` says what is unknown
-        values = block.values
-        words: dict[str, float | int] = {}
-        for letter in memo.order:
-            value = values.get(letter)
-            if value is not None:
-                if type(value) is not float and isinstance(value, Expr):  # (a float first: cheaper)
-                    return False  # ``build`` sends a computed word to ``_native`` first
-                words[letter] = value
-        spot = {first: float(words[first]) if first in words else a,
-                second: float(words[second]) if second in words else b}
-        here = {k: v for k, v in tool.items() if k in "XYZ" and v is not None}
-        cycle = CannedCycle(
-            pattern.kind, call=False, semantics=pattern.semantics, return_level=pattern.return_level,
-            plane=pattern.plane, initial=pattern.initial, r=pattern.r, bottom=pattern.bottom, top=pattern.top,
-            q=pattern.q, clearance=pattern.clearance, dwell=pattern.dwell, orient=pattern.orient, feed=pattern.feed,
-            repeat=1, spindle=pattern.spindle, motion=pattern.motion, start=here, position=spot, step={},
-            shift=pattern.shift, words=words,
-        )
-        fail = _Failer(ctx, block, memo.code, False)
-        fail.words = words
-        expansion = memo.expansion
-        end: dict[str, float] | None = None
-        if expansion.ENDS_OVER_THE_SPOT:  # its levels passed ``end``'s checks for the remembered block
-            end = dict(here)
-            end[first], end[second], end[normal] = spot[first], spot[second], expansion.return_level(cycle)
-        try:
-            self._install(block, ctx, cycle, _LazyExpansion(expansion, cycle, memo.limit, fail, memo.code,
-                                                            memo.peck, None, ctx), end)
-        except PostprocError:
-            _drop_cycle_sections(block)
-            raise
-        return True
+            lane = ctx.hole_lane  # the run's next-hole lane, where it applies (``postproc.fast.holes``)
+            if lane is None:
+                self._resolve_or_drop(block, ctx, state.cycle.kind, False)
+            elif not lane.repeat(block, ctx):
+                self._resolve_or_drop(block, ctx, state.cycle.kind, False)
+                lane.resolved(block, ctx)
 
     def _native(self, block: Block, ctx: Context, kind: str) -> None:
         """A cycle with computed words (a program kept symbolically): its holes are known only when the
@@ -247,14 +186,14 @@ class CannedCycleResolveSyntax(Syntax):
         try:
             self._resolve(block, ctx, kind, call)
         except PostprocError:
-            _drop_cycle_sections(block)
+            drop_cycle_sections(block)
             raise
 
     def _letters(self, ctx: Context) -> tuple[frozenset[str], frozenset[str], tuple[str, ...]]:
         """The addresses that carry cycle data (axes, the level, peck/shift, dwell and the repeat count),
         those of them a cycle record keeps (in ``WORD_ORDER``), and the repeat-count letters in order of
         preference: the same for every block of a run."""
-        cw = _cycle_words(ctx)
+        cw = cycle_words(ctx)
         address = ctx.setup.input.repeat_address
         known = self._words_of
         if known[0] is not cw or known[1] != address:
@@ -268,9 +207,9 @@ class CannedCycleResolveSyntax(Syntax):
         rules = self._rules
         sections = block.sections
         state = ctx.state
-        cw = _cycle_words(ctx)
+        cw = cycle_words(ctx)
         code = cw.name(kind)
-        fail = _Failer(ctx, block, code, call)
+        fail = Failer(ctx, block, code, call)
         if kind in rules.unsupported:
             raise UnsupportedError(f"{code} has no {kind.replace('_', ' ')} meaning under {rules.name} "
                                    "cycle semantics", fail.at_code())
@@ -282,7 +221,7 @@ class CannedCycleResolveSyntax(Syntax):
         # numbers only: a cycle with computed words went to _native
         values = block.values
         words: dict[str, float | int] = {
-            k: values[k] for k in sorted(kept.intersection(values), key=_WORD_RANK.__getitem__)}  # type: ignore[misc]
+            k: values[k] for k in sorted(kept.intersection(values), key=WORD_RANK.__getitem__)}  # type: ignore[misc]
         fail.words = words
         first, second, normal = PLANE_AXES[plane]
         for letter in words:
@@ -290,7 +229,7 @@ class CannedCycleResolveSyntax(Syntax):
                 raise fail(f"{code} cannot move axis {letter}: only {first}, {second} and {normal} "
                            "take part in a hole cycle", letter)
         active = state.cycle
-        if active is not None and state.extra.get(_STATE_KEY, plane) != plane:
+        if active is not None and state.extra.get(STATE_KEY, plane) != plane:
             raise fail(f"the plane cannot change while {code} is active (cancel the cycle first)")
         same = active is not None and (rules.carry_over or active.kind == kind)
         modal = dict(active.words) if same and active is not None else {}
@@ -298,9 +237,9 @@ class CannedCycleResolveSyntax(Syntax):
         modal_letters = (cw.level, cw.peck, cw.shift, cw.dwell, depth)  # in force until the cycle is cancelled
         modal.update({k: v for k, v in words.items() if k in modal_letters})
         if cw.dwell in words:
-            state.extra[_DWELL_KEY] = words[cw.dwell]
-        elif rules.sticky_tap_dwell and kind in TAP and _DWELL_KEY in state.extra:
-            modal[cw.dwell] = state.extra[_DWELL_KEY]
+            state.extra[DWELL_KEY] = words[cw.dwell]
+        elif rules.sticky_tap_dwell and kind in TAP and DWELL_KEY in state.extra:
+            modal[cw.dwell] = state.extra[DWELL_KEY]
         holes = self._holes(ctx, words, call, plane, repeat_letters, fail)
         feed = _modal(sections, "Feed", "value", state.feed)
         return_level = _modal(sections, "ReturnLevel", "level", state.return_level)
@@ -329,14 +268,18 @@ class CannedCycleResolveSyntax(Syntax):
         expansion, limit = self._by_kind[kind], ctx.setup.limits.moves_per_block
         repeat = next((k for k in repeat_letters if k in words), None)
 
-        self._install(block, ctx, cycle, _LazyExpansion(expansion, cycle, limit, fail, code, cw.peck, repeat, ctx))
+        self.install(block, ctx, cycle, LazyExpansion(expansion, cycle, limit, fail, code, cw.peck, repeat, ctx))
         if active is not None:
             active.kind, active.words = kind, modal  # the initial level stays while a cycle is active
         else:
             state.cycle = CycleState(kind, modal, initial)
-        state.extra[_STATE_KEY] = plane
+        state.extra[STATE_KEY] = plane
 
-    def _install(self, block: Block, ctx: Context, cycle: CannedCycle, lazy: "_LazyExpansion",
+    def expansion(self, kind: str) -> CycleExpansion:
+        """The expansion that makes ``kind``'s motion (the XML's, else the built-in one)."""
+        return self._by_kind[kind]
+
+    def install(self, block: Block, ctx: Context, cycle: CannedCycle, lazy: "LazyExpansion",
                  end: dict[str, float] | None = None) -> None:
         """Give the block its cycle record and its motion (made when read), and move the tracked tool to
         where the block leaves it (``end``, found by the expansion when not given)."""
@@ -361,7 +304,7 @@ class CannedCycleResolveSyntax(Syntax):
             position[axis] = value
 
     def _holes(self, ctx: Context, words: dict[str, Any], call: bool, plane: str, repeat_letters: tuple[str, ...],
-               fail: "_Failer") -> int:
+               fail: "Failer") -> int:
         """How many holes the block makes: K/L (once without), none without hole position data."""
         rules = self._rules
         repeat, letter = 1, None
@@ -371,7 +314,7 @@ class CannedCycleResolveSyntax(Syntax):
                 break
         if letter is not None and repeat < 0:
             raise fail(f"repeat count {letter} cannot be negative", letter)
-        most = _cycle_words(ctx).max_repeat
+        most = cycle_words(ctx).max_repeat
         if letter is not None and most is not None and repeat > most:
             raise fail(f"repeat count {letter}{repeat} is more than the controller accepts ({letter}0-{letter}{most})",
                        letter)
@@ -382,7 +325,7 @@ class CannedCycleResolveSyntax(Syntax):
         return repeat if call or any(k in words for k in position_words) else 0
 
     def _check(self, kind: str, code: str, modal: dict[str, Any], cw: CycleWords, depth: str,
-               feed: float | None, return_level: str, spindle: str, call: bool, fail: "_Failer") -> None:
+               feed: float | None, return_level: str, spindle: str, call: bool, fail: "Failer") -> None:
         """The words the cycle needs, and the combinations the controller refuses."""
         rs274 = self._rules.name == "rs274"
         if depth not in modal:
@@ -426,7 +369,7 @@ class CannedCycleResolveSyntax(Syntax):
             raise fail(f"{code} needs the spindle turning")
 
     def _levels(self, ctx: Context, kind: str, code: str, modal: dict[str, Any], normal: str, level: str,
-                depth: str, incremental: bool, fail: "_Failer") -> tuple[float, float, float, float | None]:
+                depth: str, incremental: bool, fail: "Failer") -> tuple[float, float, float, float | None]:
         """(initial level, R level, bottom, top of a counterbore) on the drilling axis. The initial
         level is the one the active cycle started at; G91 R is measured from it."""
         start = ctx.state.position.get(normal)
@@ -456,7 +399,7 @@ class CannedCycleResolveSyntax(Syntax):
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
-class _LazyExpansion:
+class LazyExpansion:
     """A cycle block's moves, made when a step asks for them (``CompoundMotion.lazy``). A class and not a
     closure: it holds what the expansion needs and nothing of the block that holds it (a compiled closure
     keeps every local of its function, the block too: a reference cycle per cycle block, which only the
@@ -464,7 +407,7 @@ class _LazyExpansion:
 
     __slots__ = ("expansion", "cycle", "limit", "fail", "code", "peck", "repeat", "ctx")
 
-    def __init__(self, expansion: CycleExpansion, cycle: CannedCycle, limit: int, fail: _Failer, code: str,
+    def __init__(self, expansion: CycleExpansion, cycle: CannedCycle, limit: int, fail: Failer, code: str,
                  peck: str, repeat: str | None, ctx: Context) -> None:
         self.expansion, self.cycle, self.limit, self.fail = expansion, cycle, limit, fail
         self.code, self.peck, self.repeat, self.ctx = code, peck, repeat, ctx
@@ -482,52 +425,7 @@ class _LazyExpansion:
         return self.fail(f"{self.code}: {err.message}", self.peck if err.role == "peck" else self.repeat)
 
 
-@mypyc_attr(allow_interpreted_subclasses=True)
-class _Repeat:
-    """A resolved next-hole block (``CannedCycleResolveSyntax._remember``): its cycle record, and what
-    ``_resolve`` read from the state to make it (``_signature``), kept in the run's state."""
-
-    __slots__ = ("owner", "signature", "cycle", "expansion", "code", "peck", "limit", "order")
-
-    def __init__(self, owner: CannedCycleResolveSyntax, signature: tuple[Any, ...], cycle: CannedCycle, code: str,
-                 peck: str, limit: int) -> None:
-        self.owner, self.signature, self.cycle, self.code, self.peck = owner, signature, cycle, code, peck
-        self.expansion = owner._by_kind[cycle.kind]
-        self.limit = limit
-        first, second, _ = PLANE_AXES[cycle.plane]
-        self.order = (first, second) if _WORD_RANK[first] < _WORD_RANK[second] else (second, first)
-        """The plane's two axes in ``WORD_ORDER``, the order ``_resolve`` keeps a block's words in."""
-
-
-def _signature(state: ModalState) -> tuple[Any, ...]:
-    """Everything of the state ``_resolve`` reads to resolve a next-hole block, but where the tool is: the
-    active cycle (its record of modal words is replaced, never changed in place, so the same object means
-    the same words), units, plane, distance mode, feed, spindle, return level, group-01 mode, the plane the
-    cycle was commanded in and RS274's remembered tapping dwell."""
-    active = state.cycle
-    extra = state.extra
-    return (active, None if active is None else active.kind, None if active is None else active.words,
-            None if active is None else active.initial, state.units, state.plane, state.distance, state.feed,
-            state.spindle, state.return_level, state.motion, extra.get(_STATE_KEY), extra.get(_DWELL_KEY))
-
-
-_NEXT_HOLE_SECTIONS: Final = frozenset(("Motion", "Sequence", "Comments"))
-
-
-def _next_hole_only(block: Block, plane: str) -> bool:
-    """A block that only moves an active cycle to its next hole: position words on the plane's two axes
-    (``X.. Y..`` in G17), maybe a block number and a comment."""
-    first, second, _ = PLANE_AXES[plane]
-    for letter in block.values:
-        if letter != first and letter != second:
-            return False
-    for key in block.sections:
-        if key not in _NEXT_HOLE_SECTIONS:
-            return False
-    return True
-
-
-def _drop_cycle_sections(block: Block) -> None:
+def drop_cycle_sections(block: Block) -> None:
     """A block whose cycle is refused loses its cycle sections, so later steps do not report it again (the
     error itself is reported by the pipeline)."""
     block.sections.pop("CycleCall", None)
@@ -546,7 +444,7 @@ def _any_key(mapping: dict[str, Any], keys: frozenset[str]) -> bool:
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
-class _Failer:
+class Failer:
     """Makes a located ProgramError: at the named word when the block has it, else at the cycle's G word.
     Where that is gets worked out only when an error is made (a ``Location`` per hole cost the cycles
     benchmark ~16k instructions a hole)."""
@@ -583,7 +481,7 @@ class _Failer:
 
 
 def _positions(code: str, words: dict[str, Any], here: dict[str, float], plane: str, incremental: bool,
-               holes: int, fail: _Failer) -> tuple[dict[str, float], dict[str, float]]:
+               holes: int, fail: Failer) -> tuple[dict[str, float], dict[str, float]]:
     """The first hole in the plane and the step to the next (G91: increments from where the tool is)."""
     position: dict[str, float] = {}
     step: dict[str, float] = {}
@@ -602,7 +500,7 @@ def _positions(code: str, words: dict[str, Any], here: dict[str, float], plane: 
     return position, step
 
 
-def _cycle_words(ctx: Context) -> CycleWords:
+def cycle_words(ctx: Context) -> CycleWords:
     """The reading dialect's cycle words; a dialect with canned cycles must declare them."""
     cw = ctx.cycle_words
     if cw is None:
@@ -624,7 +522,7 @@ def _computed(block: Block) -> bool:
 def _cancel(state: ModalState) -> None:
     end_rigid_mode(state)
     state.cycle = None
-    state.extra.pop(_STATE_KEY, None)
+    state.extra.pop(STATE_KEY, None)
     state.extra.pop(ACTIVE_KEY, None)
 
 

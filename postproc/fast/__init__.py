@@ -1,13 +1,15 @@
-"""The fast lane: every speed-only shortcut of a translation, in one place above the family bases.
+"""The fast lane: every speed-only shortcut of a run, in one place above the family bases.
 
-The classes dialects extend (the word writer, the block syntax, the resolver) each write or read one way;
-a shortcut here copies part of that way for the commonest blocks, is chosen per run by the lane itself
-where the classes it copies are the base's own (``postproc.fast.lane``), and is held to the general path
-by differential property tests (``tests/test_straight_moves.py``). A plugin declares nothing for it.
+The classes dialects extend (the word writer, the block syntax, the cycle resolver) each write or read one
+way; a shortcut here copies part of that way for the commonest blocks, is chosen per run by the lane itself
+where the classes it copies are the base's own, and is held to the general path by a differential
+property test. A plugin declares nothing for it.
+
+* ``lane``: the writer's lane (``install``), ``straight``: its shortcuts (``StraightLane``, ``CopyLane``);
+  ``tests/test_straight_moves.py``.
+* ``reading``: the reading lanes (``install_reading``), ``plain``: the plain-block lane of the block syntax
+  (``tests/test_plain_blocks.py``), ``holes``: the next-hole lane of the cycle resolver
+  (``tests/test_cycle_repeat.py``).
+
+Nothing is imported here: a run imports the lanes it installs, with the modules they copy.
 """
-
-from __future__ import annotations
-
-from .lane import choose, install
-
-__all__ = ["choose", "install"]

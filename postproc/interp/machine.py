@@ -22,7 +22,7 @@ Rules (each a choice where the contract is silent, and tested):
 
 from __future__ import annotations
 
-from typing import Iterator, Protocol
+from typing import Iterator
 
 from ..control import (
     ASSIGN, CONTROL, LABEL, GotoLabel, Assign, Break, Call, Case, Continue, Default, Do, DoWhile, Else, ElseIf, EndFor, EndIf,
@@ -36,68 +36,13 @@ from ..evaluation import var_key
 from ..ir import Block, Comments
 from ..setup.machine_setup import Limits
 from ..source_map import CallSite, ExecutedBlock, Origin
+from .frame import Frame
+from .host import NO_MOVES, Host, Interrupt, MoveCount, Reporter
 from .rules import STORED_PROGRAMS, SubprogramRules
 from .store import Program, ProgramStore, source_text
 from .variables import ProgramAlarm, Variables
 
 NON_WORD_SECTIONS = frozenset((CONTROL, ASSIGN, LABEL))
-
-
-class Host(Protocol):
-    """What the interpreter needs from the reading dialect."""
-
-    @property
-    def SEQUENCE_LETTER(self) -> str:
-        """The address of block numbers (its word alone does not make a control block run)."""
-
-    @property
-    def AXIS_LETTERS(self) -> frozenset[str]:
-        """Addresses that move an axis (a modal call follows such a block)."""
-
-    @property
-    def MACRO_LOCALS(self) -> int:
-        """Highest local variable number an argument may set."""
-
-    def spell_evaluated(self, letter: str, value: float) -> str:
-        """The number text of an evaluated word (raises ``ProgramError`` if the address cannot take it)."""
-
-    def program_label(self, name: str) -> str:
-        """A subprogram name as the dialect writes it (``O2000``, ``o<probe>``)."""
-
-    def is_program_end(self, block: Block) -> bool:
-        """The block ends the program (M02/M30): nothing after it runs."""
-
-
-class Interrupt(Exception):
-    """Stops the run after a located error was reported."""
-
-
-class _Frame:
-    """One running program level: where it runs, how it was called, what it repeats."""
-
-    __slots__ = ("program", "pc", "end", "origin", "new_level", "call_block", "remaining", "index", "count",
-                 "args", "start", "repeats", "modal", "site", "needs_return", "fors")
-
-    def __init__(self, program: Program, start: int, end: int, origin: Origin | None, new_level: bool,
-                 call_block: Block | None, index: int, count: int, args: dict[int, Value], modal: bool,
-                 site: CallSite | None) -> None:
-        self.program = program
-        self.start = start
-        self.pc = start
-        self.end = end
-        self.origin = origin
-        self.new_level = new_level
-        self.call_block = call_block
-        self.index = index
-        self.count = count
-        self.args = args
-        self.repeats: dict[int, int] = {}
-        self.fors: dict[int, tuple[float, float]] = {}
-        """Position of a running counted loop -> its (end, step), evaluated when it was entered."""
-        self.modal = modal
-        self.site = site
-        self.needs_return = False
-        """The body ends only at a return (LinuxCNC's ``O<n>`` ... ``M99``): running off its end is an error."""
 
 
 def _is_number(text: str) -> bool:
@@ -113,7 +58,7 @@ class Interpreter:
     before each call, loop iteration and jump taken (for a flattened program's reader)."""
 
     def __init__(self, store: ProgramStore, host: Host, variables: Variables, limits: Limits,
-                 report: "Reporter", annotate: bool = False, rules: SubprogramRules | None = None,
+                 report: Reporter, annotate: bool = False, rules: SubprogramRules | None = None,
                  counts: MoveCount | None = None) -> None:
         self.store = store
         self.host = host
@@ -124,14 +69,14 @@ class Interpreter:
         self.budget = limits.loop_iterations
         self.work = limits.repeated_work
         """Blocks and moves left to run again (``Limits.repeated_work``)."""
-        self.counts: MoveCount = counts if counts is not None else _NO_MOVES
+        self.counts: MoveCount = counts if counts is not None else NO_MOVES
         self.moves_seen = 0
         """``counts.moves_made`` when the interpreter last looked."""
         self.again = False
         """The block run last had run before: the moves made since are repeated work."""
-        self.repeated: tuple[_Frame, Block, str] | None = None
+        self.repeated: tuple[Frame, Block, str] | None = None
         """The last repetition spent (frame, block, what): the one the work bound names."""
-        self.frames: list[_Frame] = []
+        self.frames: list[Frame] = []
         self.modal: tuple[ModalCall, dict[int, Value], int, Block] | None = None
         self.ended = False
         self.rules = rules or STORED_PROGRAMS
@@ -147,7 +92,7 @@ class Interpreter:
     # -- running ---------------------------------------------------------------------------------
     def run(self, start: int = 0) -> Iterator[Block]:
         main = self.store.main
-        self.frames = [_Frame(main, start, main.main_end, None, False, None, 1, 1, {}, False, None)]
+        self.frames = [Frame(main, start, main.main_end, None, False, None, 1, 1, {}, False, None)]
         try:
             yield from self._loop()
         except Interrupt:
@@ -193,19 +138,19 @@ class Interpreter:
             except PostprocError as err:
                 self._fail(err, frame, block, 1)
 
-    def _fail(self, err: PostprocError, frame: _Frame, block: Block, col: int) -> None:
+    def _fail(self, err: PostprocError, frame: Frame, block: Block, col: int) -> None:
         if err.location is None:
             err.location = self._where(frame, block, col)
         self.report(err)
         raise Interrupt()
 
-    def _where(self, frame: _Frame, block: Block, col: int = 1) -> Location:
+    def _where(self, frame: Frame, block: Block, col: int = 1) -> Location:
         origin = frame.origin
         if origin is None:
             return Location(frame.program.file, block.line, col)
         return Location(origin.file, block.line, col, origin.note())
 
-    def _step(self, frame: _Frame, block: Block) -> Iterator[Block]:
+    def _step(self, frame: Frame, block: Block) -> Iterator[Block]:
         sections = block.sections
         control = sections.get(CONTROL)
         assign = sections.get(ASSIGN)
@@ -228,7 +173,7 @@ class Interpreter:
         yield from self._control(frame, block, control)
 
     # -- words and assignments -------------------------------------------------------------------
-    def _concrete(self, frame: _Frame, block: Block, statement: bool) -> ExecutedBlock | None:
+    def _concrete(self, frame: Frame, block: Block, statement: bool) -> ExecutedBlock | None:
         values = block.values
         words = block.words
         changed = False
@@ -278,7 +223,7 @@ class Interpreter:
         return any(letter.upper() in axes for letter, _ in block.words)
 
     # -- control statements ----------------------------------------------------------------------
-    def _control(self, frame: _Frame, block: Block, control: object) -> Iterator[Block]:
+    def _control(self, frame: Frame, block: Block, control: object) -> Iterator[Block]:
         pos = frame.pc
         program = frame.program
         vars_ = self.vars
@@ -454,18 +399,18 @@ class Interpreter:
         else:
             raise ProgramError(f"'{source_text(block)}' cannot be executed ({type(control).__name__})")
 
-    def _note(self, frame: _Frame, block: Block, what: str) -> Iterator[Block]:
+    def _note(self, frame: Frame, block: Block, what: str) -> Iterator[Block]:
         if self.annotate:
             yield self._comment(frame, block, what)
 
-    def _comment(self, frame: _Frame, block: Block, what: str) -> ExecutedBlock:
+    def _comment(self, frame: Frame, block: Block, what: str) -> ExecutedBlock:
         text = source_text(block).replace("(", "[").replace(")", "]")
         note = ExecutedBlock(block.line, None, block.eol or "\n", [], frame.origin)
         note.sections["Comments"] = Comments([f"LINE {block.line}: {text}, {what}"])
         return note
 
     # -- calls and returns -----------------------------------------------------------------------
-    def _call(self, frame: _Frame, block: Block, call: Call) -> Iterator[Block]:
+    def _call(self, frame: Frame, block: Block, call: Call) -> Iterator[Block]:
         name = self._name(call.name)
         args = self._args(call.args)
         count = 1 if call.repeat is None else self._count(call.repeat, "the repeat count")
@@ -474,12 +419,12 @@ class Interpreter:
             return
         yield from self._enter(frame, block, name, args, count, call.kind == "macro", modal=False)
 
-    def _modal_call(self, frame: _Frame, block: Block) -> Iterator[Block]:
+    def _modal_call(self, frame: Frame, block: Block) -> Iterator[Block]:
         assert self.modal is not None
         call, args, count, at = self.modal
         yield from self._enter(frame, block, self._name(call.name), dict(args), count, True, modal=True)
 
-    def _enter(self, frame: _Frame, block: Block, name: str, args: dict[int, Value], count: int,
+    def _enter(self, frame: Frame, block: Block, name: str, args: dict[int, Value], count: int,
                new_level: bool, modal: bool, index: int = 1) -> Iterator[Block]:
         label = self.host.program_label(name)
         if self.rules.forward_search:
@@ -497,14 +442,14 @@ class Interpreter:
         site = CallSite(label, caller_file, block.line, index, count)
         stack = (site,) + (frame.origin.stack if frame.origin is not None else ())
         origin = Origin(program.file, stack)
-        callee = _Frame(program, start, end, origin, new_level, block, index, count, args,
+        callee = Frame(program, start, end, origin, new_level, block, index, count, args,
                         modal or frame.modal, site)
         callee.needs_return = self.rules.forward_search and not new_level
         self.vars.enter(args, new_level)
         self.frames.append(callee)
         yield from self._note(frame, block, f"call {index} of {count}" if count > 1 else "call")
 
-    def _return(self, frame: _Frame, block: Block | None, value: Value, target: int | None) -> None:
+    def _return(self, frame: Frame, block: Block | None, value: Value, target: int | None) -> None:
         frames = self.frames
         if len(frames) == 1 and self.called and target is None:
             self.ended = True  # a macro file run on its own returns to its (absent) caller: the run ends
@@ -525,7 +470,7 @@ class Interpreter:
         caller = frames[-1]
         if frame.index < frame.count and target is None:
             call_block = frame.call_block
-            again = _Frame(frame.program, frame.start, frame.end, None, frame.new_level, call_block,
+            again = Frame(frame.program, frame.start, frame.end, None, frame.new_level, call_block,
                            frame.index + 1, frame.count, frame.args, frame.modal, frame.site)
             assert call_block is not None and frame.site is not None  # set on every called frame
             self._spend(call_block, "call")
@@ -544,7 +489,7 @@ class Interpreter:
                 raise ProgramError(self._missing_sequence(caller.program, target, source_text(block)))
             caller.pc = pos
 
-    def _find_forward(self, frame: _Frame, block: Block, name: str, label: str,
+    def _find_forward(self, frame: Frame, block: Block, name: str, label: str,
                       new_level: bool) -> tuple[Program, int, int] | None:
         """LinuxCNC: an ``M98`` finds ``O<n>`` from the call onward (``SubprogramRules``); an o-word call
         finds ``o<n> sub`` in the store, and refuses an ``O<n>``."""
@@ -607,7 +552,7 @@ class Interpreter:
             raise EvalError(f"{what} cannot be negative ({value})")
         return value
 
-    def _out_of_work(self, frame: _Frame, block: Block) -> None:
+    def _out_of_work(self, frame: Frame, block: Block) -> None:
         """Report the work bound (``Limits.repeated_work``), located at the repetition that ran last."""
         n = self.limits.repeated_work
         if self.repeated is not None:
@@ -666,24 +611,6 @@ class Interpreter:
         return i + 1 if i >= 0 else 1
 
 
-class MoveCount(Protocol):
-    """Where the moves made downstream are counted (the run's ``Context``)."""
-
-    @property
-    def moves_made(self) -> int: ...
-
-
-class _NoMoves:
-    moves_made = 0
-
-
-_NO_MOVES = _NoMoves()
-
-
-class Reporter(Protocol):
-    def __call__(self, err: PostprocError) -> None: ...
-
-
 def _counting(value: float, end: float, step: float) -> bool:
     """A counted loop runs on while its counter has not passed its end (step 0: always)."""
     return value <= end if step > 0.0 else value >= end if step < 0.0 else True
@@ -692,6 +619,3 @@ def _counting(value: float, end: float, step: float) -> bool:
 def _true(value: Value) -> bool:
     """A condition holds when its value is a non-zero number (vacant is false)."""
     return value is not None and value != 0.0
-
-
-

@@ -21,11 +21,10 @@ from typing import Any, ClassVar, Mapping, Final
 
 from postproc.errors import ParseError, ProgramError
 from postproc.expr import Binary, Expr, Num
-from postproc.numbers import decimal_value
 from postproc.ir import (
     Block, DataSetting, MachineFunction, Coolant, CutterCompensation, CycleCall, CycleCancel, DistanceMode, Dwell, Feed, FeedMode,
     MachineCoordinates, Motion, NativeCode, PathControl, Plane, ProgramControl, ReturnLevel,
-    Sequence, SpindleControl, SpindleOrientation, SpindleSpeed, ToolChange, ToolLengthOffset, ToolSelect, Units,
+    SpindleControl, SpindleOrientation, SpindleSpeed, ToolChange, ToolLengthOffset, ToolSelect, Units,
     WorkOffset,
 )
 from postproc.context import Context, word_columns
@@ -35,6 +34,7 @@ from postproc.syntax import Syntax
 from .codes import CodeTable, g_key
 from .machine_codes import Defaults, machine_table
 from .point_mix import point_mix
+from .word_values import increments_divisor, milliseconds, real, whole, whole_index
 
 AXIS_LETTERS: Final = frozenset("XYZABCUVW")
 DECIMAL_LETTERS: Final = frozenset("XYZABCUVWIJKRQ")
@@ -43,18 +43,6 @@ INTEGER_LETTERS: Final = frozenset("NOTHDLP")
 _UPPER: Final = {c: c.upper() for c in "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"}
 _UPPER[":"] = "O"  # ':' is ISO's spelling of the program number address
 CENTER_AXIS: Final = {"I": "X", "J": "Y", "K": "Z"}
-_ARC_LETTERS: Final = frozenset("IJKR")
-_AXIS: Final = 1
-_N: Final = 2
-_F: Final = 3
-_G: Final = 4
-_ARC: Final = 5
-_PLAIN_KIND: Final = bytes(_AXIS if c in AXIS_LETTERS else _N if c == "N" else _F if c == "F" else _G if c == "G"
-                           else _ARC if c in _ARC_LETTERS else 0 for c in "ABCDEFGHIJKLMNOPQRSTUVWXYZ")
-"""What ``_plain`` does with each letter A-Z (by ``ord(letter) - 65``): one byte read instead of set tests."""
-_MOTION_KEYS: Final = {"0": "0", "00": "0", "1": "1", "01": "1", "2": "2", "02": "2", "3": "3", "03": "3"}
-"""The spellings of G0-G3 ``_plain`` reads (their ``g_key``); the table says what each means."""
-_MOTION_MODES: Final = frozenset(("rapid", "linear", "cw", "ccw"))
 _ROTATION: Final = frozenset("R")
 DATA_KEY: Final = "10"
 """The number of the family's programmable data input code (``DataSetting``)."""
@@ -117,8 +105,10 @@ class WordBlockSyntax(Syntax):
                 up = "G" if "G" in values else "M"
                 block.add(NativeCode(self.DIALECT, f"a computed {up} code", block.text or ""))
                 return
-        elif self._plain(block, ctx, words):
-            return
+        else:
+            lane = ctx.block_lane  # the run's plain-block lane, where it applies (``postproc.fast.plain``)
+            if lane is not None and lane.read(block, ctx, words):
+                return
         codes: dict[str, tuple[str, str, object, str]] = {}
         natives: list[str] = []
         mcodes: list[tuple[int, str]] = []
@@ -153,7 +143,7 @@ class WordBlockSyntax(Syntax):
             units = unit[2]  # type: ignore[assignment]
         cycle_block = "09" in codes and codes["09"][1] == "cycle" or (
             state.cycle is not None and "01" not in codes and "09" not in codes)
-        divisor = 0 if self.POINTLESS_IN_UNITS else _divisor(ctx, units)
+        divisor = 0 if self.POINTLESS_IN_UNITS else increments_divisor(ctx, units)
         mix = point_mix(ctx) if divisor else None
         for up, num in raw.items():
             if up in values:
@@ -173,7 +163,7 @@ class WordBlockSyntax(Syntax):
                 else:
                     values[up] = float(int(num))
             elif up == "P" and "." in num and ctx.setup.controller.dwell_seconds_rule():
-                values[up] = _milliseconds(block, ctx, num)
+                values[up] = milliseconds(block, ctx, num)
             elif up in INTEGER_LETTERS or up == "K":
                 if "." in num:
                     if up == "K" and block.text is None:
@@ -206,107 +196,18 @@ class WordBlockSyntax(Syntax):
     def finish_words(self, block: Block, ctx: Context, values: dict[str, Any], used: set[str]) -> None:
         """F, S and T sections, then refuse any word no section took: nothing is dropped silently."""
         if "F" in values:
-            block.add(Feed(_real(values["F"])))
+            block.add(Feed(real(values["F"])))
             used.add("F")
         if "S" in values:
-            block.add(SpindleSpeed(_real(values["S"])))
+            block.add(SpindleSpeed(real(values["S"])))
             used.add("S")
         if "T" in values:
-            block.add(ToolSelect(_whole(values["T"])))
+            block.add(ToolSelect(whole(values["T"])))
             used.add("T")
         unused = [k for k in values if k not in used]
         if unused:
             up = unused[0]
             raise ProgramError(f"address {up} has no meaning in this block", ctx.at(block, ctx.column_of(block, up)))
-
-    def _plain(self, block: Block, ctx: Context, words: list[tuple[str, str]]) -> bool:
-        """The likeliest CAM block: N, maybe one motion code (G0-G3), axis words with decimal points, an
-        arc's centre I/J/K or radius R, maybe F; under an active cycle, N and axis words only (the next hole
-        of a row: ``Motion(None)``, the cycle resolve step reads the words).
-
-        One pass with the same meaning as the general path (``g_sections``, ``finish_words``; property-
-        tested in ``tests/test_plain_blocks.py``). Returns False, leaving the block as it found it, at the
-        first word it does not handle (another code, a point-less number, a repeated address) or for a
-        block the general path refuses, so that path reads the block and reports its errors.
-        """
-        values = block.values
-        axes: dict[str, float | Expr] = {}
-        mode: str | None = None
-        arc_words = False
-        upper = block.canonical  # a canonical block's letters are upper-case already (numbers.CANONICAL_BLOCK)
-        sequence = block.sections.get("Sequence") if upper else None  # its first word's number, read
-        seen = 0  # the addresses met, one bit per letter (a repeated one leaves the path)
-        cycle = ctx.state.cycle is not None
-        for letter, num in words:
-            up = letter if upper else _UPPER[letter]
-            index = ord(up) - 65
-            if index < 0 or index > 25:
-                break
-            bit = 1 << index
-            if seen & bit:
-                break
-            seen |= bit
-            kind = _PLAIN_KIND[index]
-            if kind == _AXIS and (upper or "." in num):  # canonical: an axis number has its point
-                # boxed once, shared by both dictionaries (compiled)
-                number: object = decimal_value(num)
-                values[up] = axes[up] = number  # type: ignore[assignment]
-            elif kind == _N and "." not in num:
-                values["N"] = sequence.number if isinstance(sequence, Sequence) else int(num)
-            elif cycle:
-                break  # a code, F or a cycle word under an active cycle: the general path
-            elif kind == _F:
-                values["F"] = decimal_value(num)
-            elif kind == _G and mode is None:
-                key = _MOTION_KEYS.get(num)
-                entry = self.table(ctx).g.get(key) if key is not None else None
-                if entry is None or entry[1] != "motion" or entry[2] not in _MOTION_MODES:
-                    break
-                mode = str(entry[2])
-            elif kind == _ARC and (upper or "." in num):
-                values[up] = decimal_value(num)
-                arc_words = True
-            else:
-                break
-        else:
-            if cycle:
-                if axes:
-                    block.sections["Motion"] = Motion(None, axes)
-                    _saw_pointed(ctx, axes, block.line)
-                return True
-            if mode is None and axes:
-                mode = ctx.state.motion
-                if mode is None:
-                    values.clear()
-                    return False  # the general path explains the error
-            if mode is not None:
-                center: dict[str, float | Expr] | None = None
-                radius: float | Expr | None = None
-                if mode == "cw" or mode == "ccw":
-                    if "R" in values:
-                        if "I" in values or "J" in values or "K" in values:
-                            values.clear()
-                            return False  # both forms of an arc: the general path refuses it
-                        radius = values["R"]
-                    else:
-                        center = {CENTER_AXIS[k]: values[k] for k in "IJK" if k in values}
-                        if not center:
-                            values.clear()
-                            return False  # no centre: the general path refuses it
-                elif arc_words:
-                    values.clear()
-                    return False  # I/J/K/R beside a straight move: the general path refuses it
-                block.sections["Motion"] = Motion(mode, axes, center, radius)
-                if axes:
-                    _saw_pointed(ctx, axes, block.line)
-            elif arc_words:
-                values.clear()
-                return False  # I/J/K/R with no motion: the general path refuses it
-            if "F" in values:
-                block.sections["Feed"] = Feed(values["F"])
-            return True
-        values.clear()
-        return False
 
     def _g_code(self, ctx: Context, block: Block, num: str, codes: dict[str, Any], natives: list[str],
                 key: str | None = None) -> None:
@@ -349,7 +250,7 @@ class WordBlockSyntax(Syntax):
         is known only when it runs: the interpreter reads the block again with numbers)."""
         number = next(n for l, n in block.words if _UPPER[l] == "G" and g_key(n) == DATA_KEY)
         at = ctx.at(block, col_of_word(block, "G", number))
-        ell = _index(values.get("L"))
+        ell = whole_index(values.get("L"))
         table = None if ell is None else self.DATA_TABLES.get(ell)
         native = f"G{number} ({self.table(ctx).native_g[DATA_KEY]})"
         if table is None or isinstance(values.get("P"), Expr):
@@ -357,14 +258,14 @@ class WordBlockSyntax(Syntax):
             return False
         name, first, last = table
         code = f"G{number} L{ell}"
-        p = _index(values.get("P"))
+        p = whole_index(values.get("P"))
         if p is None:
             raise ProgramError(f"{code} needs the entry it sets, P{first}-P{last}", at)
         if not first <= p <= last:
             raise ProgramError(f"{code} P{p}: the entry is P{first}-P{last}", ctx.at(block, ctx.column_of(block, "P")))
         letters = (AXIS_LETTERS | _ROTATION if self.DATA_ROTATION and name == "work_offset" else AXIS_LETTERS) \
             if name.startswith("work_offset") else frozenset("R")
-        data = {k: _real(v) for k, v in values.items() if k in letters}
+        data = {k: real(v) for k, v in values.items() if k in letters}
         if set(values) - letters - {"L", "P", "N", "O"}:  # a word the IR does not model (LinuxCNC's R)
             block.add(NativeCode(self.DIALECT, native, block.text or ""))
             return False
@@ -482,7 +383,7 @@ class WordBlockSyntax(Syntax):
             # (ModalStateSyntax leaves the mode alone for machine-coordinate blocks).
             if motion_mode is not None:
                 state.motion = motion_mode
-            block.add(Motion("rapid", {k: _real(v) for k, v in axes.items()}))
+            block.add(Motion("rapid", {k: real(v) for k, v in axes.items()}))
             used.update(axes)
             return
         mode = motion_mode
@@ -501,10 +402,10 @@ class WordBlockSyntax(Syntax):
         center = None
         radius = None
         if mode in ("cw", "ccw"):
-            center = {CENTER_AXIS[k]: _real(values[k]) for k in "IJK" if k in values}
+            center = {CENTER_AXIS[k]: real(values[k]) for k in "IJK" if k in values}
             used.update(k for k in "IJK" if k in values)
             if "R" in values:
-                radius = _real(values["R"])
+                radius = real(values["R"])
                 used.add("R")
                 if center:
                     raise ProgramError("an arc takes either I/J/K or R, not both",
@@ -513,7 +414,7 @@ class WordBlockSyntax(Syntax):
             elif not center:
                 raise ProgramError("an arc needs a centre (I/J/K) or a radius R",
                                    ctx.at(block, _motion_col(block, ctx, codes, axes)))
-        block.add(Motion(mode, {k: _real(v) for k, v in axes.items()}, center, radius))
+        block.add(Motion(mode, {k: real(v) for k, v in axes.items()}, center, radius))
 
     def _length_register(self, block: Block, ctx: Context, values: dict[str, Any], used: set[str]) -> None:
         """An offset register H without G43/G44/G49 in its block (``G53 G0 Z0 H0``): while a tool length
@@ -546,7 +447,7 @@ class WordBlockSyntax(Syntax):
             seconds = Binary("div", p, Num(1000.0)) if isinstance(p, Expr) else int(p) / 1000.0
             used.add("P")
         elif "X" in values:
-            seconds = _real(values["X"])
+            seconds = real(values["X"])
             used.add("X")
         else:
             raise ProgramError(f"{self.spell('dwell')} needs a dwell time X (seconds) or P (milliseconds)",
@@ -647,45 +548,6 @@ def _dwells(codes: dict[str, tuple[str, str, object, str]], cycle_block: bool) -
     return False
 
 
-def _real(value: Any) -> Any:
-    """A section's real value: the number as a float, or a computed value (``Expr``) as it is."""
-    return value if isinstance(value, Expr) else float(value)
-
-
-def _whole(value: Any) -> Any:
-    """A section's integer value: the number as an int, or a computed value (``Expr``) as it is."""
-    return value if isinstance(value, Expr) else int(value)
-
-
-def _index(value: Any) -> int | None:
-    """A whole-number word (G10's L and P) as an int; None when absent, computed or fractional."""
-    if isinstance(value, bool) or not isinstance(value, (int, float)) or not float(value).is_integer():
-        return None
-    return int(value)
-
-
-def _milliseconds(block: Block, ctx: Context, num: str) -> int:
-    """A dwell P written with a decimal point, in seconds (the Haas rule), as the whole milliseconds a
-    point-less P means, so both spellings read alike."""
-    ms = float(num) * 1000.0
-    if abs(ms - round(ms)) > 1e-6:
-        raise ParseError(f"dwell P{num} (seconds) is finer than a millisecond",
-                         ctx.at(block, ctx.column_of(block, "P")))
-    return int(round(ms))
-
-
-_INCREMENTS_PER_MM: Final = {"IS-A": 100, "IS-B": 1000, "IS-C": 10000}
-
-
-def _divisor(ctx: Context, units: str) -> int:
-    """Divisor turning a point-less value into program units (0 for calculator-type input)."""
-    inp = ctx.setup.input
-    if inp.decimal_point == "calculator":
-        return 0
-    base = _INCREMENTS_PER_MM[inp.increment_system]
-    return base if units == "mm" else base * 10
-
-
 def _motion_col(block: Block, ctx: Context, codes: dict[str, Any], axes: dict[str, Any]) -> int:
     """Column of the block's motion code, or of its first axis word when the motion is modal."""
     if "01" in codes:
@@ -713,13 +575,3 @@ def _use_present(used: set[str], values: dict[str, Any], letters: str) -> None:
     for letter in values:
         if len(letter) == 1 and letter in letters:  # a one-letter address among them, not a substring
             used.add(letter)
-
-
-def _saw_pointed(ctx: Context, axes: dict[str, float | Expr], line: int) -> None:
-    """Tell the point-mix check (``postproc.rs274.point_mix``), while it still looks, of the axis words
-    with a decimal point a ``_plain`` block has."""
-    if ctx.point_mix is not None:
-        mix = point_mix(ctx)
-        if mix is not None:
-            for up in axes:
-                mix.saw_pointed(ctx, up, line)

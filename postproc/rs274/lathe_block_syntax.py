@@ -76,16 +76,6 @@ class LatheBlockSyntax(WordBlockSyntax):
             extra.pop(SINGLE_KEY, None)
         super().build(block, ctx)
 
-    def _plain(self, block: Block, ctx: Context, words: list[tuple[str, str]]) -> bool:
-        if SINGLE_KEY in ctx.state.extra:
-            return False  # a bare X/Z repeats the single cycle: the general path decides
-        letters = {_UPPER.get(letter, letter) for letter, _ in words}
-        if "X" in letters and "U" in letters or "Z" in letters and "W" in letters:
-            return False  # the absolute and the incremental word of one axis: ``g_sections`` refuses it
-        if "J" in letters:
-            return False  # an arc centre off the ZX plane: ``g_sections`` refuses it
-        return super()._plain(block, ctx, words)
-
     def _cycle_block(self, block: Block, ctx: Context, kind: str, code: str | None) -> None:
         """A cycle block: its code, F/S/T and M codes become sections; the other words stay in
         ``block.words`` for the cycle step, which knows what they mean in this cycle."""

@@ -97,8 +97,9 @@ def toolpath_events(lines: Iterable[str], *, file: str, dialect: str | type[Dial
     prepare = macro_arguments(dialect, arguments) if arguments else None
     with gc_paused():
         # a simulation runs the program's loops, jumps and calls
+        from ..fast.reading import install_reading  # the reading lanes (postproc.fast), as a translation has
         ctx, blocks = read_blocks(lines, file, dialect, setup, diagnostics, program_mode="execute",
-                                  prepare=prepare)
+                                  prepare=prepare, lanes=install_reading)
         steps = [step for step in registry.lowerings if step not in TRANSLATE_ONLY]
         lowered = lower_for(blocks, ctx, ToolpathTarget, "error", steps)
         yield from simulate(lowered, ctx, live_after_end, unsimulated, on_unsupported == "warn",

@@ -32,7 +32,7 @@ from ..interp.rules import STORED_PROGRAMS, SubprogramRules
 from ..interp.variables import Variables, VariablesFactory
 
 if TYPE_CHECKING:
-    from ..interp.machine import Reporter
+    from ..interp.host import Reporter
     from ..interp.store import Program
     from ..interp.structure import StreamCheck
 
@@ -99,7 +99,7 @@ class ProgramSyntax(Syntax):
                               "computes cannot be run")
         return make(increment)
 
-    # -- the host protocol (postproc.interp.machine.Host) -----------------------------------------
+    # -- the host protocol (postproc.interp.host.Host) -----------------------------------------
     def spell_evaluated(self, letter: str, value: float) -> str:
         if letter in self.INTEGER_ADDRESSES:
             return spell_integer(letter, value)

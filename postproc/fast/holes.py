@@ -1,0 +1,141 @@
+"""The next-hole lane: a block that only moves an active hole cycle to its next hole (``X.. Y..``),
+resolved as the same cycle record at another spot when nothing else it depends on changed.
+
+A speed-only copy of what ``CannedCycleResolveSyntax`` makes of such a block, kept apart from the classes
+dialects extend (STYLE.md 11). ``postproc.fast.reading`` installs it for a run only where the resolver
+class resolves with the base's own methods, and ``tests/test_cycle_repeat.py`` holds it to resolving
+from the block's words on random programs. It remembers the last next-hole block the resolver resolved
+from its words, with everything of the state the resolver read to do it (``signature``); a later one in
+the same state is that record with its hole position and start moved.
+"""
+
+from __future__ import annotations
+
+from typing import Any, Final
+
+from mypy_extensions import mypyc_attr
+
+from ..context import Context, HoleLane
+from ..errors import PostprocError
+from ..expr import Expr
+from ..ir import Block
+from ..state import PLANE_AXES, ModalState
+from ..cycles.expansion import CycleExpansion
+from ..cycles.resolve import (DWELL_KEY, STATE_KEY, WORD_RANK, CannedCycleResolveSyntax, Failer, LazyExpansion,
+                              cycle_words, drop_cycle_sections)
+from ..cycles.section import CannedCycle
+
+_NEXT_HOLE_SECTIONS: Final = frozenset(("Motion", "Sequence", "Comments"))
+
+
+@mypyc_attr(allow_interpreted_subclasses=True)
+class Remembered:
+    """A next-hole block the resolver resolved from its words: its cycle record, and what the resolver
+    read from the state to make it (``signature``)."""
+
+    __slots__ = ("signature", "cycle", "expansion", "code", "peck", "limit", "order")
+
+    def __init__(self, signature: tuple[Any, ...], cycle: CannedCycle, expansion: CycleExpansion, code: str,
+                 peck: str, limit: int) -> None:
+        self.signature, self.cycle, self.expansion, self.code, self.peck = signature, cycle, expansion, code, peck
+        self.limit = limit
+        first, second, _ = PLANE_AXES[cycle.plane]
+        self.order = (first, second) if WORD_RANK[first] < WORD_RANK[second] else (second, first)
+        """The plane's two axes in ``WORD_ORDER``, the order the resolver keeps a block's words in."""
+
+
+@mypyc_attr(allow_interpreted_subclasses=True)
+class NextHoleLane(HoleLane):
+    """Resolves a next-hole block from the one before it (``repeat``), remembering each the resolver
+    resolved from its words (``resolved``)."""
+
+    __slots__ = ("resolver", "memo", "offered")
+
+    def __init__(self, resolver: CannedCycleResolveSyntax) -> None:
+        self.resolver = resolver
+        self.memo: Remembered | None = None
+        self.offered = False
+        """The block ``repeat`` last declined is a next-hole block, so ``resolved`` remembers it."""
+
+    def repeat(self, block: Block, ctx: Context) -> bool:
+        state = ctx.state
+        self.offered = state.distance == "absolute" and _next_hole_only(block, state.plane)
+        if not self.offered:
+            return False
+        memo = self.memo
+        if memo is None or memo.signature != signature(state):
+            return False
+        pattern = memo.cycle
+        first, second, normal = PLANE_AXES[pattern.plane]
+        tool = state.position
+        a, b, n = tool.get(first), tool.get(second), tool.get(normal)
+        if a is None or b is None or n is None:
+            return False  # the resolver says what is unknown
+        values = block.values
+        words: dict[str, float | int] = {}
+        for letter in memo.order:
+            value = values.get(letter)
+            if value is not None:
+                if type(value) is not float and isinstance(value, Expr):  # (a float first: cheaper)
+                    return False  # the resolver keeps a computed word verbatim first
+                words[letter] = value
+        spot = {first: float(words[first]) if first in words else a,
+                second: float(words[second]) if second in words else b}
+        here = {k: v for k, v in tool.items() if k in "XYZ" and v is not None}
+        cycle = CannedCycle(
+            pattern.kind, call=False, semantics=pattern.semantics, return_level=pattern.return_level,
+            plane=pattern.plane, initial=pattern.initial, r=pattern.r, bottom=pattern.bottom, top=pattern.top,
+            q=pattern.q, clearance=pattern.clearance, dwell=pattern.dwell, orient=pattern.orient, feed=pattern.feed,
+            repeat=1, spindle=pattern.spindle, motion=pattern.motion, start=here, position=spot, step={},
+            shift=pattern.shift, words=words,
+        )
+        fail = Failer(ctx, block, memo.code, False)
+        fail.words = words
+        expansion = memo.expansion
+        end: dict[str, float] | None = None
+        if expansion.ENDS_OVER_THE_SPOT:  # its levels passed ``end``'s checks for the remembered block
+            end = dict(here)
+            end[first], end[second], end[normal] = spot[first], spot[second], expansion.return_level(cycle)
+        self.offered = False
+        try:
+            self.resolver.install(block, ctx, cycle, LazyExpansion(expansion, cycle, memo.limit, fail, memo.code,
+                                                                   memo.peck, None, ctx), end)
+        except PostprocError:
+            drop_cycle_sections(block)
+            raise
+        return True
+
+    def resolved(self, block: Block, ctx: Context) -> None:
+        if not self.offered:
+            return
+        self.offered = False
+        cycle = block.sections.get("CannedCycle")
+        if isinstance(cycle, CannedCycle) and cycle.repeat == 1 and not cycle.step:
+            cw = cycle_words(ctx)
+            self.memo = Remembered(signature(ctx.state), cycle, self.resolver.expansion(cycle.kind),
+                                   cw.name(cycle.kind), cw.peck, ctx.setup.limits.moves_per_block)
+
+
+def signature(state: ModalState) -> tuple[Any, ...]:
+    """Everything of the state the resolver reads to resolve a next-hole block, but where the tool is: the
+    active cycle (its record of modal words is replaced, never changed in place, so the same object means
+    the same words), units, plane, distance mode, feed, spindle, return level, group-01 mode, the plane the
+    cycle was commanded in and RS274's remembered tapping dwell."""
+    active = state.cycle
+    extra = state.extra
+    return (active, None if active is None else active.kind, None if active is None else active.words,
+            None if active is None else active.initial, state.units, state.plane, state.distance, state.feed,
+            state.spindle, state.return_level, state.motion, extra.get(STATE_KEY), extra.get(DWELL_KEY))
+
+
+def _next_hole_only(block: Block, plane: str) -> bool:
+    """A block that only moves an active cycle to its next hole: position words on the plane's two axes
+    (``X.. Y..`` in G17), maybe a block number and a comment."""
+    first, second, _ = PLANE_AXES[plane]
+    for letter in block.values:
+        if letter != first and letter != second:
+            return False
+    for key in block.sections:
+        if key not in _NEXT_HOLE_SECTIONS:
+            return False
+    return True

@@ -1,0 +1,167 @@
+"""The plain-block lane: a CAM program's usual block, ``N.. G1 X.. Y.. F..``, read in one pass.
+
+A speed-only copy of what ``WordBlockSyntax.build`` reads from such a block (``g_sections``,
+``finish_words``), kept apart from the classes dialects extend (STYLE.md 11). ``postproc.fast.reading``
+installs it for a run only where the block syntax class reads such a block with the family base's own
+methods, and ``tests/test_plain_blocks.py`` holds it to the general path on random programs. It answers
+False, leaving the block as it found it, at the first word it does not handle (another code, a point-less
+number, a repeated address) or for a block the general path refuses, so that path reads the block and
+reports its errors.
+"""
+
+from __future__ import annotations
+
+from typing import Final
+
+from mypy_extensions import mypyc_attr
+
+from ..context import BlockLane, Context
+from ..expr import Expr
+from ..ir import Block, Feed, Motion, Sequence
+from ..numbers import decimal_value
+from ..rs274.block_syntax import AXIS_LETTERS, CENTER_AXIS, WordBlockSyntax
+from ..rs274.lathe_block_syntax import SINGLE_KEY
+from ..rs274.point_mix import point_mix
+
+_UPPER: Final = {c: c.upper() for c in "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"}
+_UPPER[":"] = "O"  # ':' is ISO's spelling of the program number address (as ``WordBlockSyntax`` reads it)
+_ARC_LETTERS: Final = frozenset("IJKR")
+_AXIS: Final = 1
+_N: Final = 2
+_F: Final = 3
+_G: Final = 4
+_ARC: Final = 5
+_KIND: Final = bytes(_AXIS if c in AXIS_LETTERS else _N if c == "N" else _F if c == "F" else _G if c == "G"
+                     else _ARC if c in _ARC_LETTERS else 0 for c in "ABCDEFGHIJKLMNOPQRSTUVWXYZ")
+"""What the lane does with each letter A-Z (by ``ord(letter) - 65``): one byte read instead of set tests."""
+_MOTION_KEYS: Final = {"0": "0", "00": "0", "1": "1", "01": "1", "2": "2", "02": "2", "3": "3", "03": "3"}
+"""The spellings of G0-G3 the lane reads (their ``g_key``); the table says what each means."""
+_MOTION_MODES: Final = frozenset(("rapid", "linear", "cw", "ccw"))
+
+
+@mypyc_attr(allow_interpreted_subclasses=True)
+class PlainLane(BlockLane):
+    """N, maybe one motion code (G0-G3), axis words with decimal points, an arc's centre I/J/K or radius R,
+    maybe F; under an active cycle, N and axis words only (the next hole of a row: ``Motion(None)``, the
+    cycle resolve step reads the words)."""
+
+    __slots__ = ("syntax",)
+
+    def __init__(self, syntax: WordBlockSyntax) -> None:
+        self.syntax = syntax
+        """The run's block syntax, whose code table says what G0-G3 mean."""
+
+    def read(self, block: Block, ctx: Context, words: list[tuple[str, str]]) -> bool:
+        values = block.values
+        axes: dict[str, float | Expr] = {}
+        mode: str | None = None
+        arc_words = False
+        upper = block.canonical  # a canonical block's letters are upper-case already (numbers.CANONICAL_BLOCK)
+        sequence = block.sections.get("Sequence") if upper else None  # its first word's number, read
+        seen = 0  # the addresses met, one bit per letter (a repeated one leaves the lane)
+        cycle = ctx.state.cycle is not None
+        for letter, num in words:
+            up = letter if upper else _UPPER[letter]
+            index = ord(up) - 65
+            if index < 0 or index > 25:
+                break
+            bit = 1 << index
+            if seen & bit:
+                break
+            seen |= bit
+            kind = _KIND[index]
+            if kind == _AXIS and (upper or "." in num):  # canonical: an axis number has its point
+                # boxed once, shared by both dictionaries (compiled)
+                number: object = decimal_value(num)
+                values[up] = axes[up] = number  # type: ignore[assignment]
+            elif kind == _N and "." not in num:
+                values["N"] = sequence.number if isinstance(sequence, Sequence) else int(num)
+            elif cycle:
+                break  # a code, F or a cycle word under an active cycle: the general path
+            elif kind == _F:
+                values["F"] = decimal_value(num)
+            elif kind == _G and mode is None:
+                key = _MOTION_KEYS.get(num)
+                entry = self.syntax.table(ctx).g.get(key) if key is not None else None
+                if entry is None or entry[1] != "motion" or entry[2] not in _MOTION_MODES:
+                    break
+                mode = str(entry[2])
+            elif kind == _ARC and (upper or "." in num):
+                values[up] = decimal_value(num)
+                arc_words = True
+            else:
+                break
+        else:
+            if cycle:
+                if axes:
+                    block.sections["Motion"] = Motion(None, axes)
+                    _saw_pointed(ctx, axes, block.line)
+                return True
+            if mode is None and axes:
+                mode = ctx.state.motion
+                if mode is None:
+                    values.clear()
+                    return False  # the general path explains the error
+            if mode is not None:
+                center: dict[str, float | Expr] | None = None
+                radius: float | Expr | None = None
+                if mode == "cw" or mode == "ccw":
+                    if "R" in values:
+                        if "I" in values or "J" in values or "K" in values:
+                            values.clear()
+                            return False  # both forms of an arc: the general path refuses it
+                        radius = values["R"]
+                    else:
+                        center = {CENTER_AXIS[k]: values[k] for k in "IJK" if k in values}
+                        if not center:
+                            values.clear()
+                            return False  # no centre: the general path refuses it
+                elif arc_words:
+                    values.clear()
+                    return False  # I/J/K/R beside a straight move: the general path refuses it
+                block.sections["Motion"] = Motion(mode, axes, center, radius)
+                if axes:
+                    _saw_pointed(ctx, axes, block.line)
+            elif arc_words:
+                values.clear()
+                return False  # I/J/K/R with no motion: the general path refuses it
+            if "F" in values:
+                block.sections["Feed"] = Feed(values["F"])
+            return True
+        values.clear()
+        return False
+
+
+@mypyc_attr(allow_interpreted_subclasses=True)
+class PlainLatheLane(PlainLane):
+    """The plain-block lane of the lathe reading (``LatheBlockSyntax``): a block its lathe steps give a
+    meaning of their own (a repeat of the single cycle in force, an absolute and an incremental word of one
+    axis, an arc centre J off the ZX plane) is left to the general path, which reads or refuses it."""
+
+    __slots__ = ()
+
+    def read(self, block: Block, ctx: Context, words: list[tuple[str, str]]) -> bool:
+        if SINGLE_KEY in ctx.state.extra:
+            return False  # a bare X/Z repeats the single cycle: the general path decides
+        x = z = u = w = False
+        for letter, _ in words:
+            up = _UPPER.get(letter, letter)
+            if up == "J":
+                return False  # an arc centre off the ZX plane: ``LatheBlockSyntax.g_sections`` refuses it
+            x = x or up == "X"
+            z = z or up == "Z"
+            u = u or up == "U"
+            w = w or up == "W"
+        if x and u or z and w:
+            return False  # the absolute and the incremental word of one axis: ``g_sections`` refuses it
+        return super().read(block, ctx, words)
+
+
+def _saw_pointed(ctx: Context, axes: dict[str, float | Expr], line: int) -> None:
+    """Tell the point-mix check (``postproc.rs274.point_mix``), while it still looks, of the axis words
+    with a decimal point a plain block has."""
+    if ctx.point_mix is not None:
+        mix = point_mix(ctx)
+        if mix is not None:
+            for up in axes:
+                mix.saw_pointed(ctx, up, line)

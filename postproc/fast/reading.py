@@ -1,0 +1,55 @@
+"""Chooses a run's reading lanes: the plain-block lane for its block syntax, the next-hole lane for its
+cycle resolver, each installed on the run's context only where it reads what the step's general path reads.
+
+The choice is the lane's own, never a plugin's declaration: a lane copies the family base's methods, so
+it is taken only when the step's class uses the base's own method for every step the lane skips
+(``BLOCK_METHODS``, ``RESOLVE_METHODS``). A dialect that overrides one of them is read by its general
+path, whatever the override does. (The step's ``build`` is not among them: the lane is consulted inside
+it, so an override that wraps it keeps the lane, and one that replaces it never consults it.) A pipeline
+with two steps of a kind gets no lane of that kind.
+"""
+
+from __future__ import annotations
+
+from typing import Final
+
+from ..context import BlockLane, Context, HoleLane
+from ..cycles.resolve import CannedCycleResolveSyntax
+from ..rs274.block_syntax import WordBlockSyntax
+from ..rs274.lathe_block_syntax import LatheBlockSyntax
+from ..syntax import Pipeline
+from .holes import NextHoleLane
+from .lane import own_in
+from .plain import PlainLane, PlainLatheLane
+
+BLOCK_METHODS: Final = ("g_sections", "m_sections", "finish_words", "_g_code", "cycle_data_letters")
+"""What the block syntax's general path calls to read a block the plain-block lane reads (``PlainLane``)."""
+RESOLVE_METHODS: Final = ("_resolve_or_drop", "_resolve", "_letters", "_holes", "_check", "_levels", "install",
+                          "expansion")
+"""What the cycle resolver calls to resolve a next-hole block from its words (``NextHoleLane``)."""
+
+_WORD_BASE: Final = frozenset(WordBlockSyntax.__mro__)
+_LATHE_BASE: Final = frozenset(LatheBlockSyntax.__mro__)
+_RESOLVE_BASE: Final = frozenset(CannedCycleResolveSyntax.__mro__)
+
+
+def block_lane(syntax: WordBlockSyntax) -> BlockLane | None:
+    """The plain-block lane for ``syntax``'s run, or None (its general path reads every block)."""
+    cls = type(syntax)
+    if issubclass(cls, LatheBlockSyntax):
+        return PlainLatheLane(syntax) if own_in(cls, BLOCK_METHODS, _LATHE_BASE) else None
+    return PlainLane(syntax) if own_in(cls, BLOCK_METHODS, _WORD_BASE) else None
+
+
+def hole_lane(resolver: CannedCycleResolveSyntax) -> HoleLane | None:
+    """The next-hole lane for ``resolver``'s run, or None (it resolves every block from its words)."""
+    return NextHoleLane(resolver) if own_in(type(resolver), RESOLVE_METHODS, _RESOLVE_BASE) else None
+
+
+def install_reading(pipeline: Pipeline, ctx: Context) -> None:
+    """Give the run of ``pipeline`` in ``ctx`` its reading lanes (``Context.block_lane``, ``hole_lane``),
+    where they apply."""
+    syntaxes = [step for step in pipeline.steps if isinstance(step, WordBlockSyntax)]
+    resolvers = [step for step in pipeline.steps if isinstance(step, CannedCycleResolveSyntax)]
+    ctx.block_lane = block_lane(syntaxes[0]) if len(syntaxes) == 1 else None
+    ctx.hole_lane = hole_lane(resolvers[0]) if len(resolvers) == 1 else None

@@ -1,0 +1,36 @@
+"""One running program level of the interpreter: where it runs, how it was called, what it repeats."""
+
+from __future__ import annotations
+
+from ..expr import Value
+from ..ir import Block
+from ..source_map import CallSite, Origin
+from .store import Program
+
+
+class Frame:
+    """One running program level: where it runs, how it was called, what it repeats."""
+
+    __slots__ = ("program", "pc", "end", "origin", "new_level", "call_block", "remaining", "index", "count",
+                 "args", "start", "repeats", "modal", "site", "needs_return", "fors")
+
+    def __init__(self, program: Program, start: int, end: int, origin: Origin | None, new_level: bool,
+                 call_block: Block | None, index: int, count: int, args: dict[int, Value], modal: bool,
+                 site: CallSite | None) -> None:
+        self.program = program
+        self.start = start
+        self.pc = start
+        self.end = end
+        self.origin = origin
+        self.new_level = new_level
+        self.call_block = call_block
+        self.index = index
+        self.count = count
+        self.args = args
+        self.repeats: dict[int, int] = {}
+        self.fors: dict[int, tuple[float, float]] = {}
+        """Position of a running counted loop -> its (end, step), evaluated when it was entered."""
+        self.modal = modal
+        self.site = site
+        self.needs_return = False
+        """The body ends only at a return (LinuxCNC's ``O<n>`` ... ``M99``): running off its end is an error."""
