@@ -575,7 +575,7 @@ class Interpreter:
                                f"jumps and calls in total (<Limits loopIterations=\"{n}\"/>)")
 
     @staticmethod
-    def _within(frame: _Frame, target: int, block: Block) -> None:
+    def _within(frame: Frame, target: int, block: Block) -> None:
         """Refuse a jump past the end of the running program (the main program's M30, a subprogram's
         last block): the run here would end there silently, but a controller that keeps the blocks after
         the end (Fanuc searches its whole program for the number) runs on from the target, and a

@@ -24,7 +24,8 @@ from ..setup.machine_setup import MachineSetup
 from ..drawing.overlay import Overlay
 from ..transforms.events import moved_events, moved_setup
 from ..transforms.spec import ProgramTransform
-from .compare import (Move, Report, _controlled, compare, compare_after_end, compare_settings, describe,
+from .normal_move import Move
+from .compare import (Report, _controlled, compare, compare_after_end, compare_settings, describe,
                       normalise)
 from .toolpath import start_position, toolpath_events
 
