@@ -241,8 +241,10 @@ def compare(events_in: Iterable[Event], events_out: Iterable[Event], *, start_in
     it_in = per_minute_from_first(_controlled(iter(events_in)), start_in)
     it_out = per_minute_from_first(_controlled(iter(events_out)), start_out)
     head_in, head_out = next(it_in, {}), next(it_out, {})
-    if head_in.get("x_mode") != head_out.get("x_mode"):
-        # a diameter program and its radius translation: compare both as radii (true geometry)
+    modes = (head_in.get("x_mode"), head_out.get("x_mode"))
+    if modes[0] != modes[1] or (chord_tolerance is not None and "diameter" in modes):
+        # a diameter program and its radius translation: compare both as radii (true geometry); chords
+        # are checked against their arc in true geometry too (a diameter stretches the arc into an ellipse)
         it_in, it_out = _as_radius(it_in, head_in), _as_radius(it_out, head_out)
         head_in = {k: v for k, v in head_in.items() if k != "x_mode"}
         head_out = {k: v for k, v in head_out.items() if k != "x_mode"}
