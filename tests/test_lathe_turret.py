@@ -52,7 +52,8 @@ def test_with_warn_only_the_t_word_is_left_out() -> None:
 @pytest.mark.skipif(not available(), reason="the LinuxCNC interpreter rs274 is not installed")
 def test_an_index_with_the_spindle_stopped_is_the_tool_change_and_moves_alike() -> None:
     text, _ = _translate(STOPPED, "linuxcnc")
-    assert "T2 M6" in text.splitlines() and "T3 M6" in text.splitlines(), text
+    # the index's offset number is LinuxCNC's G43 register: its tool table entry's X and Z offsets
+    assert "G43 H02 T2 M6" in text.splitlines() and "G43 H03 T3 M6" in text.splitlines(), text
     moves = [(e["move"], round(e["x"], 4), round(e["z"], 4))
              for e in canonical_moves(run_rs274(text), start=(0.0, 0.0, 0.0)) if "move" in e]
     assert moves == RADIUS_MOVES
@@ -62,3 +63,45 @@ def test_an_index_with_the_spindle_stopped_is_the_tool_change_and_moves_alike() 
     report = verify_lines(io.StringIO(STOPPED), io.StringIO(text), file_in="l.nc", file_out="l.ngc",
                           source="fanuc", target="linuxcnc", setup=LATHE, tolerance=0.0)
     assert report.ok, report.summary()
+
+
+# -- the offset number ---------------------------------------------------------------------------------
+
+OFFSETS = ("O0001\nG21 G18 G99\nT0102\nM03 S1000\nG0 X50. Z5.\nG1 X40. F0.2\nM05\nT0100\nG0 X60.\n"
+           "M30\n")
+TABLE = "T1 P1 X0 Z0 D0\nT2 P2 X0.1 Z0.2 D0\n"
+"""Entry 2 shifts X by 0.1 in and Z by 0.2 in (a standalone rs274 reads its table in inches)."""
+
+
+def test_the_offset_number_becomes_the_register_and_offset_zero_the_cancel() -> None:
+    text, warnings = _translate(OFFSETS, "linuxcnc")
+    lines = text.splitlines()
+    assert "G43 H02 T1 M6" in lines and "G49 T1 M6" in lines, text  # T0102: tool 1, offset 2
+    assert warnings == []
+
+
+@pytest.mark.skipif(not available(), reason="the LinuxCNC interpreter rs274 is not installed")
+def test_rs274_applies_the_offset_the_turret_index_selected() -> None:
+    """[V] rs274: G43 H2 on a lathe applies entry 2's X and Z offsets (USE_TOOL_LENGTH_OFFSET), and G49
+    takes them off: what Fanuc's T0102 and T0100 do with offset register 2."""
+    text, _ = _translate(OFFSETS, "linuxcnc")
+    calls = [c for c in run_rs274(text, tool_table=TABLE) if "TOOL_LENGTH_OFFSET" in c]
+    assert len(calls) == 2, calls
+    first = [float(v) for v in calls[0].split("(", 1)[1].rstrip(")").replace(",", " ").split()]
+    last = [float(v) for v in calls[1].split("(", 1)[1].rstrip(")").replace(",", " ").split()]
+    assert first[0] == pytest.approx(0.1 * 25.4) and first[2] == pytest.approx(0.2 * 25.4), calls
+    assert all(v == 0 for v in last), calls
+
+
+def test_verify_compares_the_offset_selected_on_both_sides() -> None:
+    """The set-up holds no lathe offsets to apply: the selection is compared, and another register fails."""
+    text, _ = _translate(OFFSETS, "linuxcnc")
+    same = verify_lines(io.StringIO(OFFSETS), io.StringIO(text), file_in="l.nc", file_out="l.ngc",
+                        source="fanuc", target="linuxcnc", setup=LATHE, tolerance=0.0)
+    assert same.ok, same.summary()
+    other = verify_lines(io.StringIO(OFFSETS), io.StringIO(text.replace("G43 H02", "G43 H03")), file_in="l.nc",
+                         file_out="l.ngc", source="fanuc", target="linuxcnc", setup=LATHE, tolerance=0.0)
+    assert not other.ok and "lathe tool offset" in other.summary(), other.summary()
+    none = verify_lines(io.StringIO(OFFSETS), io.StringIO(text.replace("G43 H02 ", "")), file_in="l.nc",
+                        file_out="l.ngc", source="fanuc", target="linuxcnc", setup=LATHE, tolerance=0.0)
+    assert not none.ok, none.summary()

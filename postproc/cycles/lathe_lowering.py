@@ -12,7 +12,8 @@ For a target that reads no lathe programs (grbl), the moves are made its own: th
 located error where it is unknown), and on a diameter program X is halved (such a target takes a
 radius: ``Dialect.DIAMETER_PROGRAMMING``). A lathe target without the source's incremental addresses
 (LinuxCNC, whose U/W are axes) gets absolute X/Z too, and one that changes lathe tools with M6
-(``Dialect.LATHE_TURRET`` False) gets the turret index as a tool change.
+(``Dialect.LATHE_TURRET`` False) gets the turret index as a tool change and its offset number as the
+register of its tool length offset code.
 """
 
 from __future__ import annotations
@@ -24,7 +25,8 @@ from postproc.dialect import Dialect
 from postproc.expr import Expr
 from postproc.errors import UnsupportedError
 from postproc.ir import (
-    Block, Comments, CompoundMotion, DistanceMode, FeedMode, Motion, Plane, SpindleControl, ToolChange, ToolSelect,
+    Block, Comments, CompoundMotion, DistanceMode, FeedMode, Motion, Plane, SpindleControl, ToolChange, ToolLengthOffset,
+    ToolSelect,
 )
 from postproc.lathe_sections import CoordinateSet, LatheCycle
 
@@ -64,7 +66,6 @@ def _lower(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iter
     X/Z. (The simulator, which writes nothing, reads the source's own.)"""
     tracker = _Position(ctx, radius) if foreign or radius or absolute else None
     turret = foreign or not target.LATHE_TURRET
-    offsets_noted = False
     plane_set = not foreign
     start_mode = ctx.state.feed_mode  # read before any block: the source's mode at the start
     target_mode = target.LATHE_FEED_AT_START if not foreign else "per_min"
@@ -105,8 +106,8 @@ def _lower(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iter
             select = sections.get("ToolSelect")
             if not _turret(block, ctx, turning):
                 continue
-            if not foreign and not offsets_noted and "ToolSelect" in block.sections:
-                offsets_noted = _note_offsets(select, block, ctx, target)
+            if not foreign and "ToolSelect" in block.sections:
+                _select_offset(select, block, ctx)
             turning = _turns_after(block, turning)
         if tracker is not None:
             if not plane_set and ("Motion" in sections or "CompoundMotion" in sections):
@@ -154,19 +155,20 @@ def _turret(block: Block, ctx: Context, turning: bool) -> bool:
     return True
 
 
-def _note_offsets(select: object, block: Block, ctx: Context, target: type[Dialect]) -> bool:
-    """A lathe target that changes tools as a mill does applies the tool's X/Z offsets from its own tool table
-    only with its tool length offset code [K: LinuxCNC's lathe tool table and G43], which is not written (the set-up holds no lathe offsets to
-    simulate it with): a warning at the first index written that names an offset (``select``, the block's
-    T as read). True once warned."""
-    if not isinstance(select, ToolSelect) or not isinstance(select.number, int) or select.number < 100 \
-            or select.number % 100 == 0:
-        return False
-    ctx.diagnostics.warn(f"T{select.number:04d} selects offset {select.number % 100:02d}: {target.NAME} changes the tool "
-                         "as a mill does and applies the tool's offsets from its own tool table only with its tool "
-                         "length offset code, which is not written (set the tool table and add that code, or make "
-                         "the tool change apply them)", ctx.at(block))
-    return True
+def _select_offset(select: object, block: Block, ctx: Context) -> None:
+    """A lathe target that changes tools as a mill does (LinuxCNC) applies the X/Z offsets of a tool table
+    entry with its tool length offset code [K: LinuxCNC lathe tool table, G43 H uses entry H's X and Z
+    offsets], not with the tool change: the turret index's offset number (``T0102``: tool 1, offset 2)
+    becomes that code's register (``G43 H2``), offset 0 its cancel. Without it the machine would cut
+    with no offset at all."""
+    if not isinstance(select, ToolSelect) or not isinstance(select.number, int):
+        return
+    if "ToolLengthOffset" in block.sections:
+        raise UnsupportedError("a turret index and a tool length offset in one block (the index selects the "
+                               "offset itself)", ctx.at(block))
+    offset = select.number % 100
+    block.add(ToolLengthOffset("positive", offset) if offset else ToolLengthOffset("cancel"))
+    block.changed()
 
 
 def _turns_after(block: Block, turning: bool) -> bool:

@@ -101,7 +101,10 @@ UNSIMULATED = {"CutterCompensation": "cutter compensation", "WorkOffset": "work 
 Cutter compensation is among them only for a dialect without ``CUTTER_RULES``; the work offset is
 recorded although a G10's values are applied (the set-up's are not: the path stays in work
 coordinates)."""
-MOVES_THE_TOOL = frozenset(("cutter compensation", "work offset", "path control", "tool offset data"))
+LATHE_TOOL_OFFSET: Final = "lathe tool offset"
+"""The setting a lathe's tool offset selection is recorded as (``Moves.lathe_offset``)."""
+MOVES_THE_TOOL = frozenset(("cutter compensation", "work offset", "path control", "tool offset data",
+                            LATHE_TOOL_OFFSET))
 
 
 def _setting_text(key: str, section: Any) -> str | None:

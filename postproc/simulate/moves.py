@@ -22,13 +22,13 @@ from ..ir import Block, DataSetting, Motion
 from ..lowering.inverse_time import move_length
 from ..lowering.program_end import EndTracker
 from ..state import PLANE_AXES, ModalState
-from .events import LINEAR_AXES as _LINEAR, TOUCH_OFF, UNEVALUATED, Event, num, start_position
+from .events import LATHE_TOOL_OFFSET, LINEAR_AXES as _LINEAR, TOUCH_OFF, UNEVALUATED, Event, num, start_position
 from .travel import TravelCheck, TravelError
 
 LENGTH_AXIS: Final = _AXIS
 LINEAR_AXES: Final = _LINEAR
 # Final: compiled, a C constant, not a look-up in the module's dictionary (every move reads them)
-_INITIAL_SETTINGS = {"cutter compensation": "off", "work offset": "1"}
+_INITIAL_SETTINGS = {"cutter compensation": "off", "work offset": "1", LATHE_TOOL_OFFSET: "cancel"}
 _CENTRE_LETTER = {"X": "I", "Y": "J", "Z": "K"}
 
 
@@ -206,13 +206,25 @@ class Moves:
             cutter.start(dynamic.mode, dynamic.radius(self.scale))  # type: ignore[attr-defined]  # D/2, negative: other side
             self._begin()
         tl = get("ToolLengthOffset")
-        if tl is not None:
+        if tl is not None and self.lathe and tl.mode in ("positive", "cancel"):  # type: ignore[attr-defined]
+            register = tl.register if tl.register is not None else self.spindle_tool  # type: ignore[attr-defined]
+            self.lathe_offset(block.line, "cancel" if tl.mode == "cancel" else f"offset {register}")  # type: ignore[attr-defined]
+        elif tl is not None:
             try:
                 self.length.change(tl.mode, tl.register, tl.length, self.scale)  # type: ignore[attr-defined]
             except PostprocError as err:
                 raise err.located(self._at(block, "H")) from None
             if self.length.offset:
                 self._begin()
+
+    def lathe_offset(self, line: int, value: str) -> None:
+        """A lathe's tool offset register selected (Fanuc T/GSK ``T0101``'s last digits, LinuxCNC's lathe
+        ``G43 H1``): the set-up holds no lathe tool offsets (X and Z) to apply, so the selection is a
+        setting that moves the tool, compared between the programs (``verify``), never taken as zero
+        silently."""
+        if value != self.settings.get(LATHE_TOOL_OFFSET):
+            self.settings[LATHE_TOOL_OFFSET] = value
+            self.unsimulated.append((line, LATHE_TOOL_OFFSET, value))
 
     def _cutter_radius(self, block: Block, register: int | None) -> float:
         """The radius a G41/G42 takes: its register's, or by the rules the spindle tool's (LinuxCNC)."""

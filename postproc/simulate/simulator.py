@@ -78,6 +78,9 @@ class Simulator(Moves):
             if s is not None:
                 if self.lathe and "ToolChange" not in sections:
                     emit({"line": line, "event": "tool", "number": lathe_tool(s.number)})
+                    offset = s.number % 100 if isinstance(s.number, int) else None
+                    if offset is not None:
+                        self.lathe_offset(line, f"offset {offset}" if offset else "cancel")
             if "ToolChange" in sections:
                 if self.cutter is not None and self.cutter.side is not None:
                     raise ProgramError("a tool change with cutter compensation on cannot be run (cancel it "
