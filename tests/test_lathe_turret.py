@@ -105,3 +105,14 @@ def test_verify_compares_the_offset_selected_on_both_sides() -> None:
     none = verify_lines(io.StringIO(OFFSETS), io.StringIO(text.replace("G43 H02 ", "")), file_in="l.nc",
                         file_out="l.ngc", source="fanuc", target="linuxcnc", setup=LATHE, tolerance=0.0)
     assert not none.ok, none.summary()
+
+
+def test_a_mill_control_without_lathe_offsets_warns_and_verify_reports_the_lost_offset() -> None:
+    """grbl has no lathe tool offsets: the translation says the offset is not applied, and verify fails
+    on it (the old output passed verify with the offset silently lost)."""
+    source = OFFSETS.replace("G99", "G98").replace("F0.2", "F200.")  # feed per minute: grbl has no other
+    text, warnings = _translate(source, "grbl")
+    assert len(warnings) == 1 and "T0102 selects offset 02: grbl has no lathe tool offsets" in warnings[0]
+    report = verify_lines(io.StringIO(source), io.StringIO(text), file_in="l.nc", file_out="l.gcode",
+                          source="fanuc", target="grbl", setup=LATHE, tolerance=0.0)
+    assert not report.ok and "lathe tool offset" in report.summary(), report.summary()

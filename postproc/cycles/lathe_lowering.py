@@ -66,6 +66,7 @@ def _lower(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iter
     X/Z. (The simulator, which writes nothing, reads the source's own.)"""
     tracker = _Position(ctx, radius) if foreign or radius or absolute else None
     turret = foreign or not target.LATHE_TURRET
+    offset_lost = False
     plane_set = not foreign
     start_mode = ctx.state.feed_mode  # read before any block: the source's mode at the start
     target_mode = target.LATHE_FEED_AT_START if not foreign else "per_min"
@@ -108,6 +109,8 @@ def _lower(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iter
                 continue
             if not foreign and "ToolSelect" in block.sections:
                 _select_offset(select, block, ctx)
+            elif foreign and not offset_lost and "ToolSelect" in block.sections:
+                offset_lost = _warn_lost_offset(select, block, ctx, target)
             turning = _turns_after(block, turning)
         if tracker is not None:
             if not plane_set and ("Motion" in sections or "CompoundMotion" in sections):
@@ -169,6 +172,18 @@ def _select_offset(select: object, block: Block, ctx: Context) -> None:
     offset = select.number % 100
     block.add(ToolLengthOffset("positive", offset) if offset else ToolLengthOffset("cancel"))
     block.changed()
+
+
+def _warn_lost_offset(select: object, block: Block, ctx: Context, target: type[Dialect]) -> bool:
+    """A mill control (grbl) has no lathe tool offsets: the index's offset (X and Z) is not applied there.
+    A warning at the first index that names one (``verify`` then reports the lost "lathe tool offset").
+    True once warned."""
+    if not isinstance(select, ToolSelect) or not isinstance(select.number, int) or select.number % 100 == 0:
+        return False
+    ctx.diagnostics.warn(f"T{select.number:04d} selects offset {select.number % 100:02d}: {target.NAME} has no lathe "
+                         "tool offsets, so the tool's X/Z offsets are not applied (program the tool's tip as "
+                         "touched off, or choose a lathe target)", ctx.at(block))
+    return True
 
 
 def _turns_after(block: Block, turning: bool) -> bool:
