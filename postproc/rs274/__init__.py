@@ -8,6 +8,7 @@ public names they subclass or call. It names no dialect and holds no dialect's c
 * ``block_syntax``: ``WordBlockSyntax`` (ISO word rules through ``CODES``), ``col_of_word``,
   ``second_col``.
 * ``ngc_block_syntax``: ``NgcWordBlockSyntax`` (RS274/NGC word rules).
+* ``ngc_program``: ``NgcProgramSyntax`` (the o-word interpreter step LinuxCNC and grblHAL subclass).
 * ``writer``: ``WordWriter`` (every code spelt from ``CODES``; no table of its own).
 * ``cycle_words``: ``rs274_cycle_words`` (the family's hole-cycle letters, named from a table).
 """

@@ -23,45 +23,21 @@ from __future__ import annotations
 import dataclasses
 from typing import ClassVar, Final
 
-from postproc.errors import ProgramError
-from postproc.interp import spell_number
 from postproc.interp.rules import SubprogramRules
-from postproc.interp.variables import VariablesFactory
 from postproc.rs274.expressions import LINUXCNC_SPELLING, ExprSpelling
-from postproc.rs274.variables import NgcVariables
-from postproc.syntaxes.program import ProgramSyntax
+from postproc.rs274.ngc_program import NgcProgramSyntax
 
 GRBLHAL_SPELLING: Final[ExprSpelling] = dataclasses.replace(LINUXCNC_SPELLING, name="grblhal", parameters=(1, 5060))
 """LinuxCNC's operators and functions (``ngc_expr.c``), writable parameters #1-#5060 (``ngc_params.c``)."""
 
-INTEGER_TOLERANCE = 0.0001
-"""How far from an integer an integer word may be (``gcode.c``'s mantissa check is coarser, this is safe)."""
 
-
-class GrblhalProgramSyntax(ProgramSyntax):
-    """Stores and runs grblHAL programs that compute (parameters, expressions, o-word flow control)."""
+class GrblhalProgramSyntax(NgcProgramSyntax):
+    """Stores and runs grblHAL programs that compute (parameters, expressions, o-word flow control): the
+    RS274/NGC step (``postproc.rs274.ngc_program``) with a named sub's file ``<name>.macro``."""
 
     XNAME = "GrblhalProgramSyntax"
     __slots__ = ()
-    INTEGER_ADDRESSES: ClassVar[frozenset[str]] = frozenset("MNTHL")
-    END_CODES: ClassVar[frozenset[tuple[str, int]]] = frozenset({("M", 2), ("M", 30)})
-    MACRO_LOCALS: ClassVar[int] = 30
-    VARIABLES: ClassVar[VariablesFactory] = NgcVariables
     LIBRARY_FILES: ClassVar[tuple[str, ...]] = ("{name}.macro",)
-    PROGRAM_LABEL: ClassVar[str] = "o{raw}"
     SUBPROGRAM_RULES: ClassVar[SubprogramRules] = SubprogramRules(forward_search=False,
                                                                   main_return_words=(("M", "2"),),
                                                                   definition_runs_its_end=False)
-
-    def spell_evaluated(self, letter: str, value: float) -> str:
-        if letter in self.INTEGER_ADDRESSES:
-            nearest = round(value)
-            if abs(value - nearest) > INTEGER_TOLERANCE:
-                raise ProgramError(f"address {letter} takes an integer, the expression gives {value:g}")
-            return str(int(nearest))
-        if letter == "G":
-            tenths = round(value * 10.0)
-            if abs(value * 10.0 - tenths) > INTEGER_TOLERANCE:
-                raise ProgramError(f"G codes have at most one decimal place, the expression gives {value:g}")
-            return str(tenths // 10) if tenths % 10 == 0 else f"{tenths // 10}.{tenths % 10}"
-        return spell_number(value)
