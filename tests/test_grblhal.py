@@ -386,13 +386,13 @@ def test_another_familys_loops_are_flattened() -> None:
     assert "flattened" in str(diagnostics.warnings[0])
 
 
-def test_reading_o_words_needs_a_build_with_them_and_subroutines_are_refused() -> None:
+def test_reading_o_words_needs_a_build_with_them_and_named_subroutines_are_refused() -> None:
     assert errors_of(lambda: read_program(io.StringIO(LOOP), file="t.gcode", dialect="grblhal"))[0].startswith(
         "t.gcode:2:1: error:")
-    sub = "G21\no100 sub\nG0 X1\no100 endsub\no100 call\nM2\n"
+    sub = "G21\no<probe> sub\nG0 X1\no<probe> endsub\no<probe> call\nM2\n"
     found = errors_of(lambda: read_program(io.StringIO(sub), file="t.gcode", dialect="grblhal", setup=EXPRESSIONS))
-    assert found[0].startswith("t.gcode:2:1: error: grblHAL's o-word subroutines (sub, endsub, call, return) are "
-                               "not modelled")
+    assert found[0].startswith("t.gcode:2:1: error: a named grblHAL subroutine (o<name> sub, o<name> call) is the "
+                               "file <name>.macro")
 
 
 @pytest.mark.skipif(not rs274.available(), reason="the LinuxCNC interpreter rs274 is not installed")

@@ -13,9 +13,9 @@ From grblHAL core (stored commit f80fc34) [V]:
   named ones ``#<name>``; ``#n=`` and ``#<name>=`` assignments (``gcode.c``).
 * o-words (``ngc_flowctrl.c``): if/elseif/else/endif; do/while/endwhile, repeat/endrepeat, break/continue only
   in a program run from the controller's file system (``hal.stream.file``, else "not executing macro"); sub/
-  endsub/call/return likewise, a named sub being a file ``<name>.macro``. Subroutines are not modelled here
-  (their scoping of named parameters and the file lookup): reading one is refused, and a program with calls
-  reaches grblHAL flattened.
+  endsub/call/return likewise, a named sub being a file ``<name>.macro``. Numbered subs are run as grblHAL runs
+  them: found once the flow has passed their definition (the reader's rules), arguments not given inherited
+  from the caller (``variables``); named subs (the file lookup) are refused where read.
 """
 
 from __future__ import annotations
@@ -25,7 +25,10 @@ from typing import ClassVar, Final
 
 from postproc.interp.rules import SubprogramRules
 from postproc.rs274.expressions import LINUXCNC_SPELLING, ExprSpelling
+from postproc.interp.variables import VariablesFactory
 from postproc.rs274.ngc_program import NgcProgramSyntax
+
+from .variables import GrblhalVariables
 
 GRBLHAL_SPELLING: Final[ExprSpelling] = dataclasses.replace(LINUXCNC_SPELLING, name="grblhal", parameters=(1, 5060))
 """LinuxCNC's operators and functions (``ngc_expr.c``), writable parameters #1-#5060 (``ngc_params.c``)."""
@@ -37,6 +40,8 @@ class GrblhalProgramSyntax(NgcProgramSyntax):
 
     XNAME = "GrblhalProgramSyntax"
     __slots__ = ()
+    VARIABLES: ClassVar[VariablesFactory] = GrblhalVariables
+    """A call's arguments not given are the caller's (``variables``)."""
     LIBRARY_FILES: ClassVar[tuple[str, ...]] = ("{name}.macro",)
     SUBPROGRAM_RULES: ClassVar[SubprogramRules] = SubprogramRules(forward_search=False,
                                                                   main_return_words=(("M", "2"),),

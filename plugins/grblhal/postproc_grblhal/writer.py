@@ -19,9 +19,13 @@ grblHAL's table.
 * Parameters, expressions and o-word flow control, for a build with them (``<Controller expressions="true">``,
   ``program``): a computed word in LinuxCNC's spelling (``X[#1*2.]``), an assignment as ``#1=5.``, a condition
   or loop as its o-word line, from a grblHAL or LinuxCNC program (the same o-words: their labels are kept).
+  Numbered subs too (``o100 sub``/``endsub``/``call``/``return``), where grblHAL runs them as the source does
+  (``ngc_flowctrl.c`` [V]): a call after its sub's definition (grblHAL finds no sub it has not passed; rs274
+  looks ahead), and from LinuxCNC with all 30 arguments written (``[0]`` for those not given: grblHAL hands
+  the callee the caller's ``#k`` for an argument not given, rs274 reads 0: ``variables``).
   Everything else that computes is an ``UnsupportedError`` (so the program reaches grblHAL flattened): any
-  statement on a build without expressions, a subroutine definition, call or return (not modelled), and
-  another family's control flow (Fanuc's ``WHILE .. DO1`` reuses its labels, ISG's ``$FOR``...).
+  statement on a build without expressions, a named sub, and another family's control flow (Fanuc's
+  ``WHILE .. DO1`` reuses its labels, ISG's ``$FOR``...).
 """
 
 from __future__ import annotations
@@ -29,11 +33,11 @@ from __future__ import annotations
 from typing import Any, ClassVar
 
 from postproc.context import Context
-from postproc.control import Assign, Break, Continue, Do, DoWhile, Else, ElseIf, EndIf, EndRepeat, EndWhile, If, \
-    Repeat, While
+from postproc.control import Assign, Break, Call, Continue, Do, DoWhile, Else, ElseIf, EndIf, EndRepeat, EndWhile, \
+    If, Repeat, Return, SubEnd, SubStart, While
 from postproc.cycles.section import WORD_ORDER
 from postproc.dialect import Dialect
-from postproc.expr import Expr
+from postproc.expr import Expr, Num
 from postproc.grbl_family.writer import GrblFamilyWriter
 from postproc.ir import Block, Motion
 from postproc.rs274.codes import CodeTable
@@ -44,8 +48,11 @@ from .cancels import GROUP_01
 from .codes import CODES
 from .program import GRBLHAL_SPELLING
 
-_FLOW = (If, ElseIf, Else, EndIf, While, EndWhile, Do, DoWhile, Repeat, EndRepeat, Break, Continue)
-"""The o-word statements written (a subroutine's are not modelled)."""
+_FLOW = (If, ElseIf, Else, EndIf, While, EndWhile, Do, DoWhile, Repeat, EndRepeat, Break, Continue, SubStart, SubEnd,
+         Return)
+"""The o-word statements written as they are (a call: ``call_words``)."""
+CALL_ARGUMENTS = 30
+"""``#1``-``#30``: what an o-word call may set, all of them written for a LinuxCNC call."""
 _SAME_OWORDS = frozenset(("grblhal", "linuxcnc"))
 """Sources whose o-word labels and meanings are grblHAL's (ngc_flowctrl.c is rs274's)."""
 
@@ -76,6 +83,8 @@ class GrblhalWriter(GrblFamilyWriter):
         super().__init__(ctx, source_dialect, target)
         self.cycle_motion: str | None = None
         """The group-01 mode around the native cycle in force on the controller; None: none in force."""
+        self.subs: set[str] = set()
+        """The numbered subs whose definition is written (a call finds only those on grblHAL)."""
 
     def write_block(self, block: Block) -> str | None:
         motion = block.sections.get("Motion")
@@ -110,9 +119,28 @@ class GrblhalWriter(GrblFamilyWriter):
                              block)
         if isinstance(section, Assign):
             return [spell_assignments(section)]
+        if isinstance(section, (SubStart, Call)) and not (isinstance(section.name, str) and section.name.isdigit()):
+            self.unsupported("a named sub (grblHAL looks o<name> up as the file <name>.macro: not modelled)", block)
+        if isinstance(section, SubEnd):
+            self.subs.add(section.name)
         if isinstance(section, _FLOW) and self.source_dialect in _SAME_OWORDS:
             return [spell_oword(section)]
+        if isinstance(section, Call) and self.source_dialect in _SAME_OWORDS:
+            return [self.call_words(section, block)]
         return super().statement_words(section, block)
+
+    def call_words(self, call: Call, block: Block) -> str:
+        """``o<n> call [..]`` after its sub's definition; from LinuxCNC with its 30 arguments (module docstring)."""
+        assert isinstance(call.name, str)
+        if call.name not in self.subs:
+            self.unsupported(f"a call of o{call.name} before its sub's definition (grblHAL finds a sub only once "
+                             "the program has passed it)", block)
+        if self.source_dialect != self.DIALECT and call.kind == "macro" and len(call.args) < CALL_ARGUMENTS:
+            given = dict(call.args)
+            for k in range(1, CALL_ARGUMENTS + 1):
+                given.setdefault(k, Num(0.0))
+            call = Call(call.name, given, call.repeat, call.kind)
+        return spell_oword(call)
 
     def table_refusal(self, register: int | None) -> str:
         number = "" if register is None else f" H{register}"
