@@ -16,7 +16,8 @@ grblHAL's source (github.com/grblHAL/core, stored commit f80fc34), independently
   positive; G85, G86 and G89 are parsed but never run (``motion_control.c``: the block would not move).
 
 Lines that compute (parameters, expressions, o-words: ``#``, ``[``, a leading ``o``) are checked for their
-characters and length only; after one, the motion mode and the feed rate are unknown (not checked) until
+characters and length, and a numbered ``o<n> call`` for a definition ``o<n> sub`` on an earlier line
+(``ngc_flowctrl.c``: the flow registers a sub when it passes it, a call finds only a registered one); after one, the motion mode and the feed rate are unknown (not checked) until
 programmed again.
 """
 
@@ -30,6 +31,7 @@ LINE_BUFFER_SIZE = 257
 REALTIME = {"?": "status report", "!": "feed hold", "~": "cycle start", "\x18": "soft reset"}
 _WORD = re.compile(r"([A-Z])([-+]?(?:\d+\.?\d*|\.\d+))")
 _COMMENT = re.compile(r"\([^)]*\)|;.*")
+_SUB = re.compile(r"O(\d+)(SUB|CALL)")
 AXES = frozenset("XYZABC")
 
 G_ACCEPTED = {
@@ -69,6 +71,7 @@ def grblhal_problems(text: str, *, tool_table: bool = False, spindle_sync: bool 
     found: list[str] = []
     motion: str | None = "0"  # grblHAL starts in G0; None: unknown (after a line that computes)
     feed = False
+    subs: set[int] = set()
     for n, raw in enumerate(text.splitlines(), start=1):
         for ch in raw:
             if ch in REALTIME or ord(ch) > 0x7F:
@@ -82,6 +85,11 @@ def grblhal_problems(text: str, *, tool_table: bool = False, spindle_sync: bool 
         if not code:
             continue
         if code.startswith("O") or "#" in code or "[" in code:
+            sub = _SUB.match(code)
+            if sub and sub.group(2) == "SUB":
+                subs.add(int(sub.group(1)))
+            elif sub and int(sub.group(1)) not in subs:
+                found.append(f"{n}: o{int(sub.group(1))} call before its sub's definition (flow control syntax error)")
             motion, feed = None, True
             continue
         words = _WORD.findall(code)
