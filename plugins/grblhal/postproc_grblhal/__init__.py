@@ -74,6 +74,12 @@ def resolve_cutter_compensation(blocks: Iterator[Block], ctx: Context, target: t
     return step(blocks, ctx, target)
 
 
+def subprograms_as_subs(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """``subprograms.subprograms_as_subs``, imported when a translation first lowers for grblHAL."""
+    from .subprograms import subprograms_as_subs as step
+    return step(blocks, ctx, target)
+
+
 class Grblhal(GrblFamily):
     NAME = "grblhal"
     LOWER_CASE: ClassVar[bool] = True
@@ -105,11 +111,11 @@ class Grblhal(GrblFamily):
     """M7 runs only with a driver that has mist coolant [V: gcode.c, ``hal.coolant_cap.mist``]: a set-up says
     ``<Controller mistCoolant="true">`` for such a build."""
     LOWERING = (write_tool_lengths, resolve_cutter_compensation, close_full_circles, cancel_cycles_alone,
-                stops_after_motion)
+                stops_after_motion, subprograms_as_subs)
     """Rewrites into what grblHAL runs: a G43 H as ``G43.1 Z<length>`` where the build has no tool table
     (``postproc.grbl_family.lengths``); G41/G42 as the compensated path, where the source's rules are modelled;
     a full circle with an end point in its plane (grbl's arc rules, ``postproc.rs274.lean_controller``); a cycle
-    cancel beside an axis command in a block of its own (``cancels``: it is written as a bare G0); a moving block's spindle stop and coolant off after it (``postproc.rs274.order_of_execution``). Not grbl's
+    cancel beside an axis command in a block of its own (``cancels``: it is written as a bare G0); a moving block's spindle stop and coolant off after it (``postproc.rs274.order_of_execution``); ``M98`` subprograms as o-word subs written before the first call, on a build with expressions (``subprograms``). Not grbl's
     G49 before motion: grblHAL's G49 is no axis command [V: gcode.c, "changed to match LinuxCNC behaviour in
     build 20210513"], nor its tool change pause (M6 exists)."""
     PATH_CONTROL = "cutting"

@@ -22,7 +22,8 @@ grblHAL's table.
   Numbered subs too (``o100 sub``/``endsub``/``call``/``return``), where grblHAL runs them as the source does
   (``ngc_flowctrl.c`` [V]): a call after its sub's definition (grblHAL finds no sub it has not passed; rs274
   looks ahead), and from LinuxCNC with all 30 arguments written (``[0]`` for those not given: grblHAL hands
-  the callee the caller's ``#k`` for an argument not given, rs274 reads 0: ``variables``).
+  the callee the caller's ``#k`` for an argument not given, rs274 reads 0: ``variables``). ``M98`` subprograms
+  of a program that computes nothing arrive as subs from the lowering step ``subprograms``.
   Everything else that computes is an ``UnsupportedError`` (so the program reaches grblHAL flattened): any
   statement on a build without expressions, a named sub, and another family's control flow (Fanuc's
   ``WHILE .. DO1`` reuses its labels, ISG's ``$FOR``...).
@@ -47,6 +48,7 @@ from postproc.rs274.oword import spell_assignments, spell_oword
 from .cancels import GROUP_01
 from .codes import CODES
 from .program import GRBLHAL_SPELLING
+from .subprograms import CONVERTED
 
 _FLOW = (If, ElseIf, Else, EndIf, While, EndWhile, Do, DoWhile, Repeat, EndRepeat, Break, Continue, SubStart, SubEnd,
          Return)
@@ -123,9 +125,10 @@ class GrblhalWriter(GrblFamilyWriter):
             self.unsupported("a named sub (grblHAL looks o<name> up as the file <name>.macro: not modelled)", block)
         if isinstance(section, SubEnd):
             self.subs.add(section.name)
-        if isinstance(section, _FLOW) and self.source_dialect in _SAME_OWORDS:
+        own = self.source_dialect in _SAME_OWORDS or CONVERTED in self.ctx.run_data
+        if isinstance(section, _FLOW) and own:
             return [spell_oword(section)]
-        if isinstance(section, Call) and self.source_dialect in _SAME_OWORDS:
+        if isinstance(section, Call) and own:
             return [self.call_words(section, block)]
         return super().statement_words(section, block)
 
@@ -135,7 +138,7 @@ class GrblhalWriter(GrblFamilyWriter):
         if call.name not in self.subs:
             self.unsupported(f"a call of o{call.name} before its sub's definition (grblHAL finds a sub only once "
                              "the program has passed it)", block)
-        if self.source_dialect != self.DIALECT and call.kind == "macro" and len(call.args) < CALL_ARGUMENTS:
+        if self.source_dialect == "linuxcnc" and call.kind == "macro" and len(call.args) < CALL_ARGUMENTS:
             given = dict(call.args)
             for k in range(1, CALL_ARGUMENTS + 1):
                 given.setdefault(k, Num(0.0))
