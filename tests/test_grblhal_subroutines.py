@@ -9,6 +9,7 @@ the oracle where grblHAL and LinuxCNC run the same text alike (a call that gives
 from __future__ import annotations
 
 import io
+from pathlib import Path
 import pytest
 
 from postproc.api import read_program, translate
@@ -162,3 +163,115 @@ def test_the_checker_refuses_a_call_before_its_sub() -> None:
         "2: o100 call before its sub's definition (flow control syntax error)"]
     assert grblhal_problems("G21\no100 sub\no100 endsub\no100 call\nM2\n") == []
 
+
+
+# -- Fanuc subprograms (M98 P L, O<n> .. M99) as grblHAL subs ------------------------------------------------
+
+ROOT = Path(__file__).resolve().parents[1]
+REPEAT = ROOT / "tests" / "golden" / "macro" / "subprogram_repeat.nc"
+"""Fanuc M98 P L and the packed P form; beside it a hand-written LinuxCNC equivalent (``.ngc``)."""
+NESTED = """%
+O0010
+G21 G17 G90
+G00 X0 Y0 Z5.
+M98 P100 L2
+G00 Z20.
+M30
+O100 (COLUMN OF TWO HOLES)
+G91 G00 X10.
+M98 P200
+G00 Y10.
+M98 P200
+G00 Y-10.
+G90
+M99
+O200 (ONE HOLE)
+G91 G01 Z-3. F80.
+G00 Z3. M99
+%
+"""
+"""A subprogram calling one written after it, and an M99 in a block that moves."""
+NESTED_MOVES = [("rapid", 0, 0, 5)] + [
+    move for column in (10, 20) for move in (
+        ("rapid", column, 0, 5), ("feed", column, 0, 2), ("rapid", column, 0, 5),
+        ("rapid", column, 10, 5), ("feed", column, 10, 2), ("rapid", column, 10, 5), ("rapid", column, 0, 5))
+] + [("rapid", 20, 0, 20)]
+"""By hand from the Fanuc program: per call of O100, step X+10, a hole, Y+10, a hole, back to Y0."""
+
+
+def _fanuc_to(target: str, text: str) -> tuple[str, list[str]]:
+    out = io.StringIO(newline="")
+    diagnostics = Diagnostics(ErrorLevel.RAISE, warn_stream=io.StringIO())
+    translate(io.StringIO(text, newline=""), out, file="t.nc", source="fanuc", target=target, setup=EXPRESSIONS,
+              diagnostics=diagnostics)
+    return out.getvalue(), [str(w) for w in diagnostics.warnings]
+
+
+def _verified(source: str, text: str) -> int:
+    report = verify_lines(io.StringIO(source), io.StringIO(text), file_in="t.nc", file_out="t.gcode",
+                          source="fanuc", target="grblhal", setup=EXPRESSIONS, tolerance=0.0)
+    assert report.ok, report
+    return report.moves
+
+
+def test_fanuc_subprograms_become_subs_before_the_first_call() -> None:
+    source = REPEAT.read_text()
+    text, warnings = _fanuc_to("grblhal", source)
+    assert warnings == []
+    assert text == ("(%)\n(O2004) (M98 P L REPEATS AND THE PACKED P FORM)\nG17 G21 G90\nG0 X0. Y0. Z5.\nS1000 M3\n"
+                    "o2100 sub (ONE SLOT STEP, INCREMENTAL)\nG91 G0 X10.\nG1 Z-7. F100.\nG0 Z7.\nG90\no2100 endsub\n"
+                    "o1 repeat [4.]\no2100 call\no1 endrepeat\nG0 X0. Y20.\no2 repeat [3.]\no2100 call\no2 endrepeat\n"
+                    "G90 G0 Z50.\nM5\nM30\n(%)\n")
+    assert grblhal_problems(text) == []
+    assert _verified(source, text) == 23
+
+
+def test_a_subprogram_that_calls_a_later_one_is_written_after_it() -> None:
+    text, warnings = _fanuc_to("grblhal", NESTED)
+    assert warnings == []
+    code = [row for row in text.splitlines() if not row.startswith("(")]
+    assert code[2:] == ["o200 sub (ONE HOLE)", "G91 G1 Z-3. F80.", "G0 Z3.", "o200 endsub",
+                        "o100 sub (COLUMN OF TWO HOLES)", "G91 G0 X10.", "o200 call", "G0 Y10.", "o200 call",
+                        "G0 Y-10.", "G90", "o100 endsub", "o1 repeat [2.]", "o100 call", "o1 endrepeat", "G0 Z20.",
+                        "M30"]
+    assert grblhal_problems(text) == []
+    assert _moves(NESTED, "fanuc") == _moves(text, "grblhal") == NESTED_MOVES
+    assert _verified(NESTED, text) == len(NESTED_MOVES)
+
+
+@pytest.mark.skipif(not rs274.available(), reason="the LinuxCNC interpreter rs274 is not installed")
+def test_the_written_subs_run_in_rs274_as_the_hand_written_linuxcnc_program() -> None:
+    """grblHAL's subs without arguments in a program that computes nothing are rs274's: LinuxCNC's interpreter
+    runs the output as it runs the hand-written equivalent of the Fanuc program."""
+    text, _ = _fanuc_to("grblhal", REPEAT.read_text())
+    theirs = _rs274_moves(text.replace("(%)", "%"))
+    assert theirs == _rs274_moves(REPEAT.with_suffix(".ngc").read_text()) == _moves(text, "grblhal")
+    assert len(theirs) == 24  # 7 slots of three moves, the first rapid, two repositionings
+    nested, _ = _fanuc_to("grblhal", NESTED)
+    assert _rs274_moves(nested.replace("(%)", "%")) == NESTED_MOVES
+
+
+def test_grblhal_output_is_shorter_than_grbls_with_the_same_toolpath() -> None:
+    for source in (REPEAT.read_text(), NESTED):
+        hal, _ = _fanuc_to("grblhal", source)
+        grbl, _ = _fanuc_to("grbl", source)
+        assert len(hal.splitlines()) < len(grbl.splitlines())
+        assert _moves(hal, "grblhal") == _moves(grbl, "grbl")
+
+
+def test_a_program_that_computes_with_subprograms_is_flattened_with_the_reason() -> None:
+    """An M98 subprogram shares its caller's locals, a grblHAL call opens its own: not written as subs."""
+    program = "O1\nG21 G90 G0 X0 Y0 Z5.\n#1=2.\nM98 P100\nM30\nO100\nG91 G1 X#1 F100.\nG90\nM99\n"
+    text, warnings = _fanuc_to("grblhal", program)
+    assert [row for row in text.splitlines() if not row.startswith("(")] == [
+        "G21 G90 G0 X0. Y0. Z5.", "G91 G1 X2. F100.", "G90", "M30"]
+    assert warnings == ["t.nc:3:1: warning: the program is flattened (its evaluated motion is written): a program "
+                        "that computes, with subprograms (an M98 subprogram shares its caller's locals, a grblHAL "
+                        "call opens its own)"]
+
+
+def test_dead_code_after_a_subprograms_m99_stays_a_comment_between_the_subs() -> None:
+    program = "O1\nG21 G90 G0 X0 Y0 Z5.\nM98 P100\nM30\nO100\nG91 G1 X1. F100.\nG90\nM99\nG1 X5.\nO200\nM99\n"
+    text, _ = _fanuc_to("grblhal", program)
+    assert "o100 endsub\n(AFTER PROGRAM END, LINE 9: G1 X5.)\no200 sub\n" in text
+    assert _moves(text, "grblhal") == [("rapid", 0, 0, 5), ("feed", 1, 0, 5)]

@@ -139,6 +139,7 @@ def _sub(number: int, body: list[Block], ctx: Context, numbers: set[int], labels
             if not _CODE.issuperset(block.sections):
                 raise UnsupportedError(f"code after subprogram O{number}'s M99 (it never runs there; on grblHAL it "
                                        "would run before the main program)", ctx.at(block))
+            yield block  # a comment (dead code the reading steps turned into one)
             continue
         if isinstance(control, Return):
             if control.target is not None or control.value is not None:
