@@ -170,7 +170,8 @@ def test_a_line_keeps_256_characters() -> None:
 # -- reading grblHAL ----------------------------------------------------------------------------------
 
 @pytest.mark.parametrize("text, message", [
-    ("G83 X10 Y10 Z-5 R2 Q1 F100\n", "3:1: error: grblHAL's peck cycles move by rules of their own"),
+    ("G84 X10 Y10 Z-5 R2 P1 F100\n", "3:1: error: grblHAL's G84 is experimental"),
+    ("G99 G83 X10 Y10 Z-5 R2 Q1 F100\nG98 X20\n", "4:1: error: this grblHAL cycle block moves by rules not modelled"),
     ("G85 X10 Y10 Z-5 R2 F100\n", "3:1: error: grblHAL's parser accepts G85, G86 and G89 but its motion control"),
     ("G43 H1\n", "3:1: error: this grblHAL build has no tool table"),
     ("G95 G1 X10 F0.1\n", "3:1: error: this grblHAL build runs no feed per revolution"),

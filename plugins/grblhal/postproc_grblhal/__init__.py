@@ -94,6 +94,9 @@ class Grblhal(GrblFamily):
     NATIVE_CYCLES = frozenset({"drill", "drill_dwell"})
     """G81 and G82, kept native where they move as the source's cycle (``moves_like``); every other cycle
     is expanded."""
+    PECK_CLEARANCE_MM = 0.1
+    """G73's retract after each peck: the setting ``$73``, 0.1 mm by default [V: ``config.h``
+    ``DEFAULT_G73_RETRACT``; a build whose ``$73`` differs is not modelled]. G83 has no clearance (``pecking``)."""
     CYCLE_SEMANTICS = "rs274"
     """grblHAL's G81/G82 are read under RS274/NGC rules (``cycles``: a block where grblHAL's G98 differs is
     refused when read, expanded when written)."""
@@ -167,9 +170,10 @@ class Grblhal(GrblFamily):
         from postproc.syntaxes.modal_state import ModalStateSyntax
         from .block_syntax import GrblhalBlockSyntax
         from .cycles import GrblhalCycleRules
+        from .pecking import GrblhalPeckExpansion
         from .program import GrblhalProgramSyntax
         first = [GrblhalProgramSyntax()] if cls.expressions(setup) else []
-        return Pipeline(cls.NAME, [*first, GrblhalBlockSyntax(), CannedCycleResolveSyntax("rs274"),
+        return Pipeline(cls.NAME, [*first, GrblhalBlockSyntax(), CannedCycleResolveSyntax("rs274", [GrblhalPeckExpansion()]),
                                    GrblhalCycleRules(), ModalStateSyntax()])
 
 
@@ -182,4 +186,5 @@ def postproc_register_dialects(register: Callable[[type], None]) -> None:
 def postproc_register_xml(factory: XFactory) -> None:
     factory.register_lazy("GrblhalBlockSyntax", f"{__name__}.block_syntax:GrblhalBlockSyntax")
     factory.register_lazy("GrblhalCycleRules", f"{__name__}.cycles:GrblhalCycleRules")
+    factory.register_lazy("GrblhalPeckSyntax", f"{__name__}.pecking:GrblhalPeckExpansion")
     factory.register_lazy("GrblhalProgramSyntax", f"{__name__}.program:GrblhalProgramSyntax")

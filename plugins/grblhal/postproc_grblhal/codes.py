@@ -3,7 +3,7 @@
 Rows are ``(spelling, modal group, kind, argument)`` (see ``postproc.rs274.codes``), for what grblHAL's
 parser (``gcode.c``, ``gc_execute_block``, github.com/grblHAL/core stored commit f80fc34) accepts [V]: grbl
 1.1's codes, and G43 (from the tool table), G59.1-G59.3 (nine work systems with ``COMPATIBILITY_LEVEL`` <= 1,
-the default), G81/G82 (run as RS274/NGC runs them, ``cycles``), G95 (a spindle with an encoder),
+the default), G81/G82 (run as RS274/NGC runs them, ``cycles``), G73/G83 (read as grblHAL runs them, ``pecking``), G95 (a spindle with an encoder),
 G98/G99, M6. grblHAL writes codes without leading zeros. What a build may lack is checked against the
 set-up where it is read or written (``Grblhal``); codes a Fanuc or LinuxCNC program carries that grblHAL
 refuses, or runs by rules not modelled here, get a message saying why (``REFUSED_G``/``REFUSED_M``).
@@ -42,8 +42,10 @@ ROWS = (
     ("G59.3", "14", "offset", 9),
     ("G61", "15", "path", "exact_stop"),
     ("G80", "09", "cycle_cancel", None),
+    ("G73", "09", "cycle", "peck_chip"),
     ("G81", "09", "cycle", "drill"),
     ("G82", "09", "cycle", "drill_dwell"),
+    ("G83", "09", "cycle", "peck_deep"),
     ("G90", "03", "distance", "absolute"),
     ("G91", "03", "distance", "incremental"),
     ("G93", "05", "feed_mode", "inverse_time"),
@@ -80,14 +82,10 @@ NATIVE_G: dict[str, str] = {
 }
 """grblHAL codes kept verbatim: they round-trip to grblHAL and are unsupported anywhere else [V: gcode.c]."""
 
-_PECK = ("grblHAL's peck cycles move by rules of their own (each peck dwells 0.25 s; G83 feeds down from the "
-         "retract level; G73's retract is the $-setting g73_retract): not modelled, so a translation expands "
-         "them and reading grblHAL refuses them")
 _NOT_RUN = ("grblHAL's parser accepts G85, G86 and G89 but its motion control runs only G73 and G81-G84 "
             "(motion_control.c mc_canned_drill), so the block would not move: refused")
 _LATHE = "grblHAL's lathe mode (G7/G8, G33, G76, G96/G97) is not modelled by this dialect"
 REFUSED_G: dict[str, str] = {
-    "73": _PECK, "83": _PECK,
     "84": ("grblHAL's G84 is experimental (a spindle with the at-speed capability reverses at the bottom, "
            "and P is required): not modelled, so a translation expands it"),
     "85": _NOT_RUN, "86": _NOT_RUN, "89": _NOT_RUN,

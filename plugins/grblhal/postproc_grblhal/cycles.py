@@ -14,8 +14,10 @@ stored commit f80fc34) [V]:
   X/Y between holes, in G90 drill the same hole again; L <= 0 is an error;
 * a block that changes the cycle code needs R and the drilling axis word (and P for G82): nothing carries
   over from another cycle; a block that only repeats the cycle keeps them;
-* G73 and G83 dwell 0.25 s at each peck, G83 feeds down from the retract level each time, G84 reverses a
-  spindle with the at-speed capability, G85/G86/G89 are parsed and not run: none of them is kept native.
+* G73 and G83 dwell 0.25 s at each peck, G83 feeds down from the retract level each time (``pecking``): no
+  other family's peck cycle moves so, so they are read (a grblHAL program keeps them) and never written from
+  another dialect; G84 reverses a spindle with the at-speed capability (its moves and spindle events are not
+  modelled: refused where read, expanded where written), G85/G86/G89 are parsed and not run.
 
 The RS274/NGC family (LinuxCNC) and Fanuc differ from that only in the level a G98 block returns to (their
 initial level, remembered from the block that started the cycle; rs274 takes R when it is higher) and, for
@@ -36,14 +38,24 @@ from postproc.ir import Block
 from postproc.syntax import Syntax
 
 NATIVE: Final = frozenset({"drill", "drill_dwell"})
-"""The cycles grblHAL runs by rules this module models (G81, G82)."""
+"""The cycles grblHAL runs as another family does (G81, G82): kept native from another dialect."""
+PECK: Final = frozenset({"peck_chip", "peck_deep"})
+"""G73 and G83: grblHAL's own moves (``pecking``), which no other family makes."""
+READ: Final = NATIVE | PECK
+"""The cycles read from grblHAL."""
 _SAME: Final = 1e-9
 
 
 def native_motion_matches(cycle: CannedCycle) -> bool:
     """The native G81/G82 on grblHAL moves as ``cycle`` does under its source family's rules (module
     docstring); False for every other cycle."""
-    if cycle.kind not in NATIVE or cycle.plane != "XY" or cycle.step or cycle.repeat < 1:
+    return cycle.kind in NATIVE and positions_alike(cycle)
+
+
+def positions_alike(cycle: CannedCycle) -> bool:
+    """grblHAL positions for the hole, and retracts, as ``cycle``'s family does (module docstring): absolute
+    distances, the XY plane, a retract level that agrees."""
+    if cycle.plane != "XY" or cycle.step or cycle.repeat < 1:
         return False
     start, r, initial = cycle.start.get("Z"), cycle.r, cycle.initial
     if start is None or r is None or initial is None:
@@ -61,16 +73,21 @@ def native_motion_matches(cycle: CannedCycle) -> bool:
 
 class GrblhalCycleRules(Syntax):
     """Refuses a cycle block read from grblHAL whose motion the resolve step (RS274/NGC rules) would not
-    simulate as grblHAL moves (module docstring): incremental distances, another plane, or a G98 block
-    that starts below the cycle's initial level."""
+    simulate as grblHAL moves (module docstring): incremental distances, another plane, a G98 block that
+    starts below the cycle's initial level, or a cycle other than G73/G81/G82/G83. A G73/G83 block, which
+    only grblHAL runs so (``pecking``), is marked to be expanded for any other controller."""
 
     XNAME = "GrblhalCycleRules"
     __slots__ = ()
 
     def build(self, block: Block, ctx: Context) -> None:
         cycle = block.sections.get("CannedCycle")
-        if isinstance(cycle, CannedCycle) and not native_motion_matches(cycle):
+        if not isinstance(cycle, CannedCycle):
+            return
+        if cycle.kind not in READ or not positions_alike(cycle):
             raise ParseError("this grblHAL cycle block moves by rules not modelled here (grblHAL retracts a G98 "
                              "block to the level it starts at and measures a G91 R from it): only absolute "
-                             "G81/G82 blocks in the XY plane that start at the cycle's clear level are read",
+                             "G73/G81/G82/G83 blocks in the XY plane that start at the cycle's clear level are read",
                              ctx.at(block))
+        if cycle.kind in PECK:
+            cycle.expand = True
