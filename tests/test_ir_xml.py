@@ -224,7 +224,7 @@ SAMPLES: dict[str, list[tuple[Builder, str]]] = {
         "NgcBlockSyntax", "Mach3BlockSyntax",
         "LinuxcncProgramSyntax", "PolarSyntax", "IsgBlockSyntax", "IsgProgramSyntax", "FagorBlockSyntax",
         "FagorProgramSyntax", "DrillingSyntax",
-        "PeckDrillingSyntax", "TappingSyntax", "BoringSyntax", "FineBoringSyntax", "BackBoringSyntax",
+        "PeckDrillingSyntax", "GrblhalPeckSyntax", "TappingSyntax", "BoringSyntax", "FineBoringSyntax", "BackBoringSyntax",
         "ManualBoringSyntax",
     )},
     "DynamicCutterCompensation": [
