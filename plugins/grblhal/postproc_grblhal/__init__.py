@@ -13,14 +13,15 @@ What grblHAL accepts, from its source (github.com/grblHAL/core, stored commit f8
 * Canned cycles G73, G81-G89 are parsed; the motion control runs G73 and G81-G84 (``motion_control.c``
   ``mc_canned_drill``), G85/G86/G89 are "not implemented" (``gcode.h``). G81/G82 move as RS274/NGC's
   except for G98's level (``cycles``), so they stay native where the source's cycle moves alike; G73/G83
-  (a 0.25 s dwell at each peck, G83 feeding from the retract level) and the experimental G84 are expanded.
+  (a 0.25 s dwell at each peck, G83 feeding from the retract level: ``pecking``) are read as grblHAL runs them
+  and expanded from any other family; the experimental G84 is expanded.
 * Parameters, expressions (LinuxCNC's operators, precedence and functions: ``ngc_expr.c``) and o-word
   flow control (``ngc_flowctrl.c``: if/elseif/else/endif, do/while/endwhile, repeat/endrepeat,
   break/continue, sub/endsub/call/return; loops and subroutines only in a program run from the
   controller's file system) exist only with ``NGC_EXPRESSIONS_ENABLE`` (off by default): read and written
-  for a set-up that says the build has them (``<Controller expressions="true">``, ``program``), subroutines
-  aside (refused when read; a program with calls reaches grblHAL flattened). G65/G66 need a macro plugin
-  (``grbl.on_macro_execute``): refused.
+  for a set-up that says the build has them (``<Controller expressions="true">``, ``program``); numbered subs
+  as grblHAL runs them (``reader``, ``variables``), Fanuc-style subprograms as subs (``subprograms``), named
+  subs refused. G65/G66 and M98 need a macro plugin (``grbl.on_macro_execute``): refused.
 * Lathe mode (``$32``): G7/G8, G33, G76 threading, G96/G97, and G70-G72 with ``LATHE_UVW_OPTION``: not
   modelled (refused at their line); G41/G42 only with ``CUTTER_COMP_ENABLE`` (off, experimental): the
   compensated path is written instead, as for grbl. No G52, G44 or M19.
