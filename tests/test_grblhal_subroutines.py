@@ -275,3 +275,24 @@ def test_dead_code_after_a_subprograms_m99_stays_a_comment_between_the_subs() ->
     text, _ = _fanuc_to("grblhal", program)
     assert "o100 endsub\n(AFTER PROGRAM END, LINE 9: G1 X5.)\no200 sub\n" in text
     assert _moves(text, "grblhal") == [("rapid", 0, 0, 5), ("feed", 1, 0, 5)]
+
+
+def _chain(depth: int, times: str = "") -> str:
+    """A main program calling O100, which calls O101, ... ``depth`` subprograms deep."""
+    lines = ["O1", "G21 G90 G0 X0 Y0 Z5.", "M98 P100" + times, "M30"]
+    for number in range(100, 100 + depth):
+        lines += [f"O{number}", "G91 G1 X1. F100.", "G90"]
+        lines += [f"M98 P{number + 1}{times}"] if number < 99 + depth else []
+        lines.append("M99")
+    return "\n".join(lines) + "\n"
+
+
+@pytest.mark.parametrize("program, kept", [
+    (_chain(10), True), (_chain(11), False),  # NGC_MAX_CALL_LEVEL 10
+    (_chain(10, " L2"), True),  # 10 calls and 10 repeats: the 20 constructs of NGC_STACK_DEPTH
+])
+def test_subprograms_nested_deeper_than_grblhal_runs_are_flattened(program: str, kept: bool) -> None:
+    text, warnings = _fanuc_to("grblhal", program)
+    assert ("o100 call" in text) == kept and bool(warnings) != kept, (text, warnings)
+    if not kept:
+        assert "subprograms nested 11 calls deep: grblHAL runs 10 nested calls" in warnings[0]

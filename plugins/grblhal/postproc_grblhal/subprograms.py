@@ -33,6 +33,10 @@ CONVERTED = "grblhal_subprograms"
 statements it made, whatever the source's family)."""
 LAST_LABEL = 65535
 """``NGC_MAX_PARAM_ID``: a higher o-word label is a string parameter's id (a named sub) [V: ngc_params.h]."""
+CALL_LEVELS = 10
+"""Nested calls grblHAL runs (``NGC_MAX_CALL_LEVEL`` 10, ``ngc_call_push``) [V: ngc_params.c]. A call here is at
+most two open o-word constructs (its repeat and itself): 20 at 10 levels, which ``NGC_STACK_DEPTH`` (20,
+``ngc_flowctrl.c``) holds."""
 _CODE = frozenset(("Comments", "ProgramStart"))
 """Sections that are no code (a block of only these may stand after a subprogram's ``M99``)."""
 
@@ -83,8 +87,10 @@ def subprograms_as_subs(blocks: Iterator[Block], ctx: Context, target: type[Dial
                                "written after the main program's end", ctx.at(held[0]))
     numbers = {number for number, _ in subs}
     labels = (label for label in range(1, LAST_LABEL + 1) if label not in numbers)
+    ordered = list(_callees_first(subs, ctx))
+    _check_nesting(ordered, held, ctx)
     ctx.run_data[CONVERTED] = True
-    for number, body in _callees_first(subs, ctx):
+    for number, body in ordered:
         yield from _sub(number, body, ctx, numbers, labels)
     for block in held:
         yield from _main_block(block, ctx, numbers, labels)
@@ -108,6 +114,19 @@ def _callees_first(subs: list[tuple[int, list[Block]]], ctx: Context) -> Iterato
         left.remove(ready)
         done.add(subs[ready][0])
         yield subs[ready]
+
+
+def _check_nesting(ordered: list[tuple[int, list[Block]]], main: list[Block], ctx: Context) -> None:
+    """grblHAL's bound on nested calls (``CALL_LEVELS``), over the deepest chain of calls from the main program
+    (``ordered``: callees first)."""
+    deepest: dict[int | None, int] = {}
+    """A subprogram's deepest chain of calls, its own call included."""
+    for number, body in [*ordered, (None, main)]:
+        deepest[number] = max((deepest.get(_called(block), 0) + 1 for block in body if _called(block) is not None),
+                              default=0)
+    if deepest[None] > CALL_LEVELS:
+        raise UnsupportedError(f"subprograms nested {deepest[None]} calls deep: grblHAL runs {CALL_LEVELS} nested "
+                               "calls", ctx.at(main[0]))
 
 
 def _called(block: Block) -> int | None:
