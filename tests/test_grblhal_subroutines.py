@@ -296,3 +296,14 @@ def test_subprograms_nested_deeper_than_grblhal_runs_are_flattened(program: str,
     assert ("o100 call" in text) == kept and bool(warnings) != kept, (text, warnings)
     if not kept:
         assert "subprograms nested 11 calls deep: grblHAL runs 10 nested calls" in warnings[0]
+
+
+def test_linuxcncs_fanuc_style_subprograms_become_subs_too() -> None:
+    """LinuxCNC's M98/M99 (``O<n>`` after the main program) share the caller's parameters as Fanuc's do."""
+    program = "G21 G90 G0 X0 Y0 Z5\nM98 P100 L2\nM2\nO100\nG91 G1 X1 F100\nG90\nM99\n"
+    text, warnings = _translate(program, "linuxcnc")
+    assert warnings == []
+    assert text == ("G21 G90 G0 X0. Y0. Z5.\no100 sub\nG91 G1 X1. F100.\nG90\no100 endsub\no1 repeat [2.]\n"
+                    "o100 call\no1 endrepeat\nM2\n")
+    assert _moves(text, "grblhal") == _moves(program, "linuxcnc") == [
+        ("rapid", 0, 0, 5), ("feed", 1, 0, 5), ("feed", 2, 0, 5)]

@@ -133,12 +133,13 @@ class GrblhalWriter(GrblFamilyWriter):
         return super().statement_words(section, block)
 
     def call_words(self, call: Call, block: Block) -> str:
-        """``o<n> call [..]`` after its sub's definition; from LinuxCNC with its 30 arguments (module docstring)."""
+        """``o<n> call [..]`` after its sub's definition; from LinuxCNC with its 30 arguments (module docstring), but
+        for the calls of ``M98`` subprograms (``subprograms``: a program that computes nothing)."""
         assert isinstance(call.name, str)
         if call.name not in self.subs:
             self.unsupported(f"a call of o{call.name} before its sub's definition (grblHAL finds a sub only once "
                              "the program has passed it)", block)
-        if self.source_dialect == "linuxcnc" and call.kind == "macro" and len(call.args) < CALL_ARGUMENTS:
+        if self.source_dialect == "linuxcnc" and CONVERTED not in self.ctx.run_data and len(call.args) < CALL_ARGUMENTS:
             given = dict(call.args)
             for k in range(1, CALL_ARGUMENTS + 1):
                 given.setdefault(k, Num(0.0))
