@@ -42,10 +42,14 @@ _CODE = frozenset(("Comments", "ProgramStart"))
 
 
 def subprograms_as_subs(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
-    """Lowering step for grblHAL (module docstring); a program without subprogram calls streams through."""
+    """Lowering step for grblHAL (module docstring); a program without subprogram calls streams through, and
+    on a build without expressions, or from grblHAL itself, the step is not in the stream at all."""
     if not ctx.setup.controller.expressions or ctx.dialect == target.NAME:
-        yield from blocks
-        return
+        return blocks
+    return _as_subs(blocks, ctx)
+
+
+def _as_subs(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
     held: list[Block] | None = None
     computes: Block | None = None
     for block in blocks:
