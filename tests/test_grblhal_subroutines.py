@@ -307,3 +307,18 @@ def test_linuxcncs_fanuc_style_subprograms_become_subs_too() -> None:
                     "o100 call\no1 endrepeat\nM2\n")
     assert _moves(text, "grblhal") == _moves(program, "linuxcnc") == [
         ("rapid", 0, 0, 5), ("feed", 1, 0, 5), ("feed", 2, 0, 5)]
+
+
+def test_a_call_in_a_block_that_moves_moves_first_and_l0_calls_nothing() -> None:
+    program = "O1\nG21 G90 G0 X0 Y0 Z5.\nG0 X3. M98 P100 L0\nG0 Y2. M98 P100\nM30\nO100\nG91 G1 X1. F100.\nG90\nM99\n"
+    text, warnings = _fanuc_to("grblhal", program)
+    assert warnings == []
+    assert text.endswith("o100 endsub\nG0 X3.\nG0 Y2.\no100 call\nM30\n"), text
+    assert _moves(text, "grblhal") == _moves(program, "fanuc") == [
+        ("rapid", 0, 0, 5), ("rapid", 3, 0, 5), ("rapid", 3, 2, 5), ("feed", 4, 2, 5)]
+
+
+def test_a_call_under_block_delete_is_not_split_from_its_block() -> None:
+    program = "O1\nG21 G90 G0 X0 Y0 Z5.\n/M98 P100\nM30\nO100\nG91 G1 X1. F100.\nG90\nM99\n"
+    text, warnings = _fanuc_to("grblhal", program)
+    assert "o100" not in text and "under block delete" in warnings[0]

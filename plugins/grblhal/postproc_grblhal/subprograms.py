@@ -87,8 +87,8 @@ def _as_subs(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
         else:
             tail.append(block)
     if not ended:
-        raise UnsupportedError("a subprogram call in a program without an end (M2/M30): grblHAL's subs are "
-                               "written after the main program's end", ctx.at(held[0]))
+        raise UnsupportedError("a subprogram call in a program without an end (M2/M30), after which its "
+                               "subprograms stand", ctx.at(held[0]))
     numbers = {number for number, _ in subs}
     labels = (label for label in range(1, LAST_LABEL + 1) if label not in numbers)
     ordered = list(_callees_first(subs, ctx))
@@ -165,6 +165,7 @@ def _sub(number: int, body: list[Block], ctx: Context, numbers: set[int], labels
             yield block  # a comment (dead code the reading steps turned into one)
             continue
         if isinstance(control, Return):
+            _whole(block, ctx)
             if control.target is not None or control.value is not None:
                 raise UnsupportedError("an M99 that continues at a sequence number (no grblHAL o-word return does)",
                                        ctx.at(block))
@@ -197,12 +198,14 @@ def _main_block(block: Block, ctx: Context, numbers: set[int], labels: Iterator[
     count = _number(control.repeat) if control.repeat is not None else 1
     if count is None:
         raise UnsupportedError("a computed repeat count", ctx.at(block))
+    _whole(block, ctx)
     call = Call(str(number), {}, None, "macro")
     if count == 1:
         yield from _without_control(block, call)
         return
-    if count < 1:
-        return  # L0: the subprogram does not run
+    if count < 1:  # L0: the subprogram does not run, the rest of the block does
+        yield from _without_control(block, None)
+        return
     label = str(next(labels))
     yield from _without_control(block, Repeat(label, Num(float(count))))
     inner = Block(block.line, None, block.eol)
@@ -213,13 +216,22 @@ def _main_block(block: Block, ctx: Context, numbers: set[int], labels: Iterator[
     yield end
 
 
-def _without_control(block: Block, statement: SubEnd | Call | Repeat) -> Iterator[Block]:
-    """The block's other sections, if any, then ``statement`` in a block of its own."""
+def _whole(block: Block, ctx: Context) -> None:
+    """Refuses a call or return the operator's block delete may skip: its o-word lines would be split from the
+    block (whether grblHAL's ``/`` skips an o-word line is not in the sources read [?])."""
+    if "BlockDelete" in block.sections:
+        raise UnsupportedError("a subprogram call or return under block delete (/)", ctx.at(block))
+
+
+def _without_control(block: Block, statement: SubEnd | Call | Repeat | None) -> Iterator[Block]:
+    """The block's other sections, if any, then ``statement`` (if any) in a block of its own."""
     rest = {key: section for key, section in block.sections.items() if key != CONTROL}
     if rest:
         before = Block(block.line, None, block.eol)
         before.sections.update(rest)
         yield before
+    if statement is None:
+        return
     alone = Block(block.line, None, block.eol)
     alone.sections[CONTROL] = statement
     yield alone
