@@ -85,6 +85,9 @@ class Interpreter:
         going back to its start."""
         self.found: dict[tuple[str, str], int] = {}
         """(file, program number) -> position of the ``O`` block an ``M98`` found (forward search)."""
+        self.skip_refused: str | None = None
+        """Set: a statement under block delete (``/``) is an error with this explanation: a flattened program
+        bakes in what the statement did, so the operator's switch could no longer skip it."""
         self.vacant_word: str | None = None
         """Set: a word whose value is vacant is an error with this explanation instead of being omitted (the
         check run of a program kept symbolically for a target that would not omit it)."""
@@ -157,6 +160,9 @@ class Interpreter:
         if len(self.frames) > 1 and ("TapeMark" in sections or "ProgramStart" in sections) and control is None:
             frame.pc += 1  # a subprogram's file framing and label are not statements
             return
+        if self.skip_refused is not None and "BlockDelete" in sections and (
+                control is not None or assign is not None or (self.modal is not None and self._moves(block))):
+            raise ProgramError(f"'{source_text(block)}' is under block delete: {self.skip_refused}")
         concrete = self._concrete(frame, block, control is not None or assign is not None)
         if assign is not None:
             self._assign(assign)  # type: ignore[arg-type]

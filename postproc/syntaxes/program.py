@@ -217,7 +217,7 @@ class ProgramSyntax(Syntax):
                                  ctx.at(block))
             block, blocks = body[0], iter(body[1:])
             check = None  # checked
-        yield from self._run(block, blocks, ctx, kept, seen, check)
+        yield from self._run(block, blocks, ctx, kept, seen, check, flattening=True)
 
     def _check_runs(self, body: list[Block], ctx: Context, kept: deque[Kept], seen: int) -> None:
         """Run fresh copies of the program to its end, reporting the interpreter's first error (located in
@@ -280,10 +280,12 @@ class ProgramSyntax(Syntax):
 
     def _run(self, first: Block, rest: Iterator[Block], ctx: Context, kept: deque[Kept],
              seen: int, check: StreamCheck | None = None, report: Reporter | None = None,
-             vacant_word: str | None = None) -> Iterator[Block]:
+             vacant_word: str | None = None, flattening: bool = False) -> Iterator[Block]:
         """Run the program from ``first`` on; ``check``: the structure check of what streamed before it,
         to finish on the rest (None: the rest was checked); ``report``: where its errors go (the
-        diagnostics); ``vacant_word``: a vacant word is an error saying so (``Interpreter.vacant_word``)."""
+        diagnostics); ``vacant_word``: a vacant word is an error saying so (``Interpreter.vacant_word``);
+        ``flattening``: the run is written, so a statement under block delete is an error
+        (``Interpreter.skip_refused``)."""
         dropped = seen - len(kept)
         prefix = self._reread(kept, ctx, first_line=first.line - len(kept))
         body = prefix + [first]
@@ -315,6 +317,9 @@ class ProgramSyntax(Syntax):
                                   annotate=True, rules=self.SUBPROGRAM_RULES, counts=ctx)
         interpreter.called = arguments is not None
         interpreter.vacant_word = vacant_word
+        if flattening:  # the run's output is written: a statement the switch may skip cannot be baked in
+            interpreter.skip_refused = ("the program is flattened, which writes what the statement did, so the "
+                                        "block delete switch could no longer skip it")
         closing = _closing_mark(body)
         last_was_mark = False
         for block in interpreter.run(start=len(prefix)):
