@@ -21,6 +21,7 @@ refuses it as a bug, unscaled it runs it. Such a program is compared unscaled (w
 
 from __future__ import annotations
 
+import io
 import math
 import os
 import random
@@ -278,3 +279,39 @@ def check(seed: int) -> str:
 def test_nose_compensated_paths_equal_rs274(batch: int) -> None:
     outcomes = [check(seed) for seed in range(batch * BATCH, min(PROGRAMS, (batch + 1) * BATCH))]
     assert "moves" in outcomes  # the batch compared paths, not only refusals
+
+
+DYNAMIC = """G18 G21 G7 G90 G94
+G0 X60 Z5
+G42.1 D1.6 L{orientation}
+G1 X40 Z0 F100
+G1 Z-20
+G1 X60 Z-30
+G3 X80 Z-40 K-10 I0
+G1 X100
+G2 X120 Z-50 I10 K0
+G40 G0 X130 Z5
+M2
+"""
+
+
+@pytest.mark.parametrize("orientation", range(10))
+def test_dynamic_nose_compensation_equals_rs274(orientation: int) -> None:
+    """G42.1 D.. L..: the diameter and orientation in the block (L in LinuxCNC's numbers) [V: rs274]."""
+    text = DYNAMIC.format(orientation=orientation)
+    scaled = "\n".join(re.sub(r"([XZIKD])(-?[\d.]+)", lambda m: m.group(1) + _number(float(m.group(2)) * SCALE), line)
+                       for line in text.splitlines()) + "\n"
+    theirs = rs274_path(run_rs274(scaled), 11, SCALE)
+    setup = load_setup(SETUP)
+    ours = []
+    for ev in toolpath_events(io.StringIO(text), file="d.ngc", dialect="linuxcnc", setup=setup):
+        if "move" in ev:
+            point = {**ev, **ev.get("controlled", {})}
+            ours.append({k: (point[k] / 2.0 if k in ("x", "cx") else point[k])
+                         for k in ("move", "x", "z", "cx", "cz") if k in point})
+    assert [m["move"] for m in ours] == [m["move"] for m in theirs]
+    for a, b in zip(ours, theirs):
+        assert a.keys() == b.keys()
+        for key in a:
+            if key != "move":
+                assert a[key] == pytest.approx(b[key], abs=TOLERANCE), (key, ours, theirs)

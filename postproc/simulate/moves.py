@@ -192,9 +192,9 @@ class Moves:
             if mode == "off":
                 cutter.cancel()
             elif mode in ("left", "right"):
-                register = self._cutter_register(block, cc.register)  # type: ignore[attr-defined]
-                cutter.start(mode, self._cutter_radius(block, register), PLANE_AXES[self.modal.plane],
-                             self._nose_tip(block, register))
+                reads = self._cutter_register(block, cc.register)  # type: ignore[attr-defined]
+                cutter.start(mode, self._cutter_radius(block, reads), PLANE_AXES[self.modal.plane],
+                             self._nose_tip(block, reads))
                 self._begin()
             else:
                 raise UnsupportedError(f"cutter compensation '{mode}' cannot be simulated", self._at(block))
