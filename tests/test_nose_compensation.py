@@ -169,3 +169,33 @@ def test_roughing_cycle_under_nose_compensation_stays_only_for_its_own_controlle
     with pytest.raises(PostprocError) as err:
         translate(io.StringIO(text), io.StringIO(), file="t.nc", source="fanuc", target="gsk", setup=setup)
     assert "t.nc:7:1: error: a lathe cycle (turn_rough) under tool nose radius compensation" in str(err.value)
+
+
+# -- resolved for a target without compensation (grbl) ------------------------------------------------
+
+def _to_grbl(tip: int) -> tuple[str, object]:
+    from postproc.simulate.verify import verify_lines
+    setup = _lathe(tip)
+    out = io.StringIO()
+    translate(io.StringIO(PROFILE), out, file="p.ngc", source="linuxcnc", target="grbl", setup=setup)
+    report = verify_lines(io.StringIO(PROFILE), io.StringIO(out.getvalue()), file_in="p.ngc", file_out="p.nc",
+                          source="linuxcnc", target="grbl", setup=setup)
+    return out.getvalue(), report
+
+
+@pytest.mark.parametrize("tip", range(10))
+def test_grbl_gets_the_imaginary_tip_path_and_verify_agrees(tip: int) -> None:
+    """grbl has no G41/G42: it gets the tip's path as plain moves (X a radius), which verify compares with
+    LinuxCNC's compensated run of the source at zero deviation."""
+    text, report = _to_grbl(tip)
+    assert "G41" not in text and "G42" not in text and "G40" not in text
+    assert report.ok and report.max_deviation < 1e-5  # type: ignore[attr-defined]
+
+
+def test_grbl_resolved_turning_tool_by_hand() -> None:
+    """Tip 3, r 0.8, the module docstring's points moved by (-r, -r), X a radius: the entry ends at Z 2 - 2r
+    on the turned diameter, the turn at Z -10 - r, the arc (about (-10 - r, 30 - r), from the turn's end) at
+    the face Z-20 and X 30 - r, the face at X 40 - r."""
+    text, _ = _to_grbl(3)
+    lines = [line for line in text.splitlines() if line.startswith(("G1 ", "G2 ", "G3 "))]
+    assert lines == ["G1 X20. Z0.4", "G1 X20. Z-10.8", "G2 X29.2 Z-20. I9.2 K0.", "G1 X39.2 Z-20."]
