@@ -199,3 +199,38 @@ def test_grbl_resolved_turning_tool_by_hand() -> None:
     text, _ = _to_grbl(3)
     lines = [line for line in text.splitlines() if line.startswith(("G1 ", "G2 ", "G3 "))]
     assert lines == ["G1 X20. Z0.4", "G1 X20. Z-10.8", "G2 X29.2 Z-20. I9.2 K0.", "G1 X39.2 Z-20."]
+
+
+# -- kept native between lathe controllers ---------------------------------------------------------------
+
+TURNING = """O2011
+G21 G18 G40 G99
+T0102
+G96 S180 M03
+G50 S2500
+G0 X62. Z2.
+G42 G0 X20. Z2.
+G1 Z-15. F0.2
+X40. Z-25.
+G2 X50. Z-30. R5.
+G1 X60.
+G40 G0 X100. Z50.
+M30
+"""
+
+
+@pytest.mark.parametrize("target,written", [("gsk", "G42 G00 X20. Z2."), ("linuxcnc", "G42 D02 G0 X20. Z2.")])
+def test_fanuc_nose_compensation_stays_native_and_verifies(target: str, written: str) -> None:
+    """Fanuc T's G42 by offset 02 is GSK's G42 (the same offset columns) and LinuxCNC's G42 D02: verify
+    compares the setting, read as register 2 on every side (LinuxCNC's D02; Fanuc's and GSK's the offset
+    T0102 selected)."""
+    from postproc.simulate.verify import verify_lines
+    setup = load_setup(str(SETUPS / "fanuc_0i_tf.xml"))
+    out = io.StringIO()
+    translate(io.StringIO(TURNING), out, file="t.nc", source="fanuc", target=target, setup=setup)
+    assert written in out.getvalue()
+    report = verify_lines(io.StringIO(TURNING), io.StringIO(out.getvalue()), file_in="t.nc", file_out="o.nc",
+                          source="fanuc", target=target, setup=setup)
+    assert report.ok, report
+    assert any("cutter compensation: not simulated, the same on both sides (right D2 (line 7)" in note
+               for note in report.ignored)
