@@ -234,3 +234,23 @@ def test_fanuc_nose_compensation_stays_native_and_verifies(target: str, written:
     assert report.ok, report
     assert any("cutter compensation: not simulated, the same on both sides (right D2 (line 7)" in note
                for note in report.ignored)
+
+
+def test_a_register_is_no_word_on_a_turret_lathe() -> None:
+    """LinuxCNC's G42 D1 towards GSK: its G42 reads the offset of the T code, so the D is refused where it
+    stands, not written."""
+    text = "G18 G21 G7 G90 G94\nG0 X60 Z2\nG42 D1 G1 X40 Z2 F100\nG40 G0 X100 Z5\nM2\n"
+    with pytest.raises(PostprocError) as err:
+        translate(io.StringIO(text), io.StringIO(), file="l.ngc", source="linuxcnc", target="gsk", setup=_lathe(3))
+    assert "l.ngc:3:1: error: the gsk dialect cannot express tool nose radius compensation by register 1" in str(err.value)
+
+
+def test_a_tip_outside_0_to_9_is_a_located_set_up_error(tmp_path: Path) -> None:
+    from postproc.errors import ConfigError
+    xml = tmp_path / "s.xml"
+    xml.write_text('<MachineSetup name="t" dialect="linuxcnc">\n  <Input machineType="lathe"/>\n'
+                   '  <Machine axes="XZ"/>\n  <Tools>\n    <Tool number="2" radius="0.4" tip="12"/>\n'
+                   '  </Tools>\n</MachineSetup>\n')
+    with pytest.raises(ConfigError) as err:
+        load_setup(str(xml))
+    assert f"{xml}:5:" in str(err.value) and "tip" in str(err.value)
