@@ -155,7 +155,7 @@ def test_roughing_cycle_under_nose_compensation_is_refused_where_it_stands() -> 
     text = FANUC_T.replace("G0 X62. Z2.\n", "G42 G0 X62. Z2.\n", 1).replace("G42 G0 X62. Z2.\nG70", "G70")
     with pytest.raises(PostprocError) as err:
         _to_linuxcnc(text)
-    assert "t.nc:7:1: error: a lathe cycle (turn_rough) under tool nose radius compensation" in str(err.value)
+    assert "t.nc:8:1: error: a lathe cycle (turn rough) under tool nose radius compensation" in str(err.value)
 
 
 def test_roughing_cycle_under_nose_compensation_stays_only_for_its_own_controller() -> None:
@@ -168,7 +168,7 @@ def test_roughing_cycle_under_nose_compensation_stays_only_for_its_own_controlle
     assert "G71 P10 Q20" in same.getvalue()
     with pytest.raises(PostprocError) as err:
         translate(io.StringIO(text), io.StringIO(), file="t.nc", source="fanuc", target="gsk", setup=setup)
-    assert "t.nc:7:1: error: a lathe cycle (turn_rough) under tool nose radius compensation" in str(err.value)
+    assert "t.nc:8:1: error: a lathe cycle (turn rough) under tool nose radius compensation" in str(err.value)
 
 
 # -- resolved for a target without compensation (grbl) ------------------------------------------------

@@ -165,11 +165,13 @@ class _NoseCompensation:
                 sections["CutterCompensation"] = CutterCompensation(cc.mode, self.offset)
                 block.changed()
         cycle = sections.get("LatheCycle")
-        if self.on and self.refuse_cycles and isinstance(cycle, LatheCycle) and cycle.kind != "turn_finish":
-            raise UnsupportedError(f"a lathe cycle ({cycle.kind}) under tool nose radius compensation: how the "
-                                   "controller compensates inside it is not modelled (Fanuc's type I/II rules), so its "
-                                   "moves are not known; cancel compensation (G40) before the cycle and turn it on for "
-                                   "the finishing pass (G70)", self.ctx.at(block))
+        if self.on and self.refuse_cycles and isinstance(cycle, LatheCycle) and cycle.kind != "turn_finish" \
+                and cycle.form != "first":  # reported once, at the block that runs the cycle
+            self.ctx.diagnostics.error(UnsupportedError(
+                f"a lathe cycle ({cycle.kind.replace('_', ' ')}) under tool nose radius compensation: how the "
+                "controller compensates inside it is not modelled (Fanuc's type I/II rules), so its moves are not "
+                "known; cancel compensation before the cycle and turn it on for the finishing cycle",
+                self.ctx.at(block)))
 
 
 def _turret(block: Block, ctx: Context, turning: bool) -> bool:

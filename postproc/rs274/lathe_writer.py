@@ -147,7 +147,8 @@ class LatheWordWriter(WordWriter):
         control would not read as one."""
         if self.ctx.lathe and s.mode != "off" and s.register is not None:
             self.unsupported(f"tool nose radius compensation by register {s.register} (a turret lathe compensates by "
-                             "the offset its T code selected: select that offset with T, and G41/G42 alone)", block)
+                             "the offset its tool code selected: select that offset there, and turn compensation on "
+                             "without a register)", block)
         return super().cutter_compensation_words(s, block)
 
     def coordinate_set_words(self, s: Any, block: Block) -> list[str]:
