@@ -7,6 +7,12 @@ comes between (moves along Z only, spindle, coolant, dwell) waits behind it, in 
 one move in the plane and what followed it, at most ``QUEUE_LIMIT`` items: a program that runs longer
 than that without a move in the plane is refused rather than held in memory.
 
+The plane is the one compensation starts in (``start``): XY on a mill, ZX on a lathe, where the point
+written is the nose centre moved to the imaginary tool tip (``postproc.compensation.nose``) for every
+move the compensation made, as LinuxCNC offsets each queued move when it leaves the queue ([V]
+``interp_queue.cc`` ``dequeue_canons``, ``latheorigin_x``/``latheorigin_z``); the exit move after G40 is
+not offset.
+
 The geometry follows LinuxCNC's interpreter (``CutterRules`` ``ARC_CORNERS``; [V] ``interp_convert.cc``
 ``convert_straight_comp1/2``, ``convert_arc_comp1/2``, ``convert_cutter_compensation_off``, and
 ``interp_queue.cc`` ``move_endpoint_and_flush``), checked move by move against ``rs274``
@@ -96,10 +102,14 @@ class CutterRadius:
         if (rules.entry, rules.outside_corner) != ("tangent", "arc"):
             raise UnsupportedError(f"cutter compensation rules of {rules.name} cannot be simulated yet")
         self.rules = rules
-        self.release = release
+        self.write = release
         self.side: str | None = None
         """"left", "right", or None (off)."""
         self.radius = 0.0
+        self.axes: tuple[str, str, str] = ("X", "Y", "Z")
+        """The plane's first and second axis and its normal (``postproc.state.PLANE_AXES``)."""
+        self.tip: Point = (0.0, 0.0)
+        """From the nose centre to the imaginary tool tip, mm in the plane (a lathe tool's; zero: a mill's)."""
         self.first = True
         """The next move in the plane is the entry move."""
         self.current: Point = (0.0, 0.0)
@@ -120,13 +130,30 @@ class CutterRadius:
         """Compensation moves the tool (it is on with a radius above zero)."""
         return self.side is not None and self.radius > 0.0
 
-    def start(self, side: str, radius: float) -> None:
-        """G41/G42 with the register's radius (a negative radius swaps the side [V][K])."""
+    def start(self, side: str, radius: float, axes: tuple[str, str, str] = ("X", "Y", "Z"),
+              tip: Point = (0.0, 0.0)) -> None:
+        """G41/G42 with the register's radius (a negative radius swaps the side [V][K]) in the plane of
+        ``axes``; ``tip``: the direction (signs) from the nose centre to a lathe tool's imaginary tip."""
         if self.side is not None:
             raise ProgramError("cutter compensation is turned on while it is on (cancel it first)")
         if radius < 0.0:
             side, radius = ("right" if side == "left" else "left"), -radius
         self.side, self.radius, self.first = side, radius, True
+        self.axes = axes
+        self.tip = (tip[0] * radius, tip[1] * radius)
+
+    def release(self, item: Item) -> None:
+        """Write a move or an event; a move the compensation made is moved to the imaginary tool tip."""
+        tip = self.tip
+        if isinstance(item, Segment) and item.xy is not None and tip != (0.0, 0.0):
+            item.xy = (item.xy[0] + tip[0], item.xy[1] + tip[1])
+            if item.ccentre is not None:
+                item.ccentre = (item.ccentre[0] + tip[0], item.ccentre[1] + tip[1])
+        self.write(item)
+
+    def _plane_point(self, end: dict[str, float]) -> Point:
+        a1, a2, _ = self.axes
+        return end[a1], end[a2]
 
     def cancel(self) -> None:
         """G40: the last move keeps its compensated end; the next move (the exit move) goes from there to
@@ -160,7 +187,7 @@ class CutterRadius:
         if not self.on:
             self.release(seg)
             return
-        p = (seg.end["X"], seg.end["Y"])
+        p = self._plane_point(seg.end)
         if self.first:
             self._line_entry(seg, start, p)
         else:
@@ -194,7 +221,7 @@ class CutterRadius:
         point, about a centre on the line from the end through the programmed centre."""
         assert seg.centre is not None
         r, centre, turn = self.radius, seg.centre, seg.turn
-        e = (seg.end["X"], seg.end["Y"])
+        e = self._plane_point(seg.end)
         if math.hypot(e[0] - c[0], e[1] - c[1]) <= r:
             raise ProgramError("the entry arc of cutter compensation does not end farther than the tool "
                                "radius from its start")
@@ -213,6 +240,16 @@ class CutterRadius:
         seg.ccentre = _towards(end, half_chord / cos_a, to_centre)
         seg.sweep = find_turn(c, seg.ccentre, turn, end)
         self.endpoint = None
+        if self.tip != (0.0, 0.0):
+            # a lathe tool's origin moves to the tip first, or the arc would not start on its circle; that
+            # move is queued, and moved with the arc's end by a corner after it [V] convert_arc_comp1
+            a1, a2, normal = self.axes
+            to_start = dict(seg.end)
+            to_start[a1], to_start[a2] = c
+            if normal in to_start:
+                to_start[normal] = seg.normal
+            self.queue.append(Segment("feed", dict(seg.fields), to_start, seg.normal, seg.dz, xy=c))
+            self.endpoint = c
         self._enter(seg)
 
     def _enter(self, seg: Segment) -> None:
@@ -285,7 +322,7 @@ class CutterRadius:
         assert seg.centre is not None
         r, small, left, turn = self.radius, self.rules.corner_tolerance, self.side == "left", seg.turn
         centre, c = seg.centre, self.current
-        e = (seg.end["X"], seg.end["Y"])
+        e = self._plane_point(seg.end)
         arc_radius = math.hypot(centre[0] - e[0], centre[1] - e[1])
         theta = math.atan2(c[1] - op[1], c[0] - op[0])
         theta = theta - HALF_PI if left else theta + HALF_PI
@@ -373,9 +410,10 @@ class CutterRadius:
         """The move around an outside corner: an arc about the programmed corner (its programmed point),
         made at the height the tool stands at; a rapid goes straight to the arc's end."""
         corner = dict(seg.end)
-        corner["X"], corner["Y"] = op
-        if "Z" in corner:
-            corner["Z"] = seg.normal  # the block's start height
+        a1, a2, normal = self.axes
+        corner[a1], corner[a2] = op
+        if normal in corner:
+            corner[normal] = seg.normal  # the block's start height
         turn = -1 if self.side == "left" else 1
         if not arc:
             return Segment("rapid", dict(seg.fields), corner, seg.normal, seg.dz, xy=mid)

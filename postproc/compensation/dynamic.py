@@ -22,7 +22,8 @@ from ..xmlio import XAttr, XFactory
 @mypyc_attr(allow_interpreted_subclasses=True)
 class DynamicCutterCompensation(Section):
     """'left' or 'right' of the path, by ``diameter`` (program units; negative: the other side), with a
-    lathe tool's ``orientation`` (None: 0, a mill's)."""
+    lathe tool's ``orientation`` (None: 0, a mill's), numbered as LinuxCNC's L word numbers it (X mirrored
+    from Fanuc's tip numbers: ``postproc.compensation.nose.mirrored``)."""
 
     XNAME = "DynamicCutterCompensation"
     KEY = "DynamicCutterCompensation"

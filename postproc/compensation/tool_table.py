@@ -91,6 +91,12 @@ class ToolTable:
         """The cutter radius in register ``register`` (mm), or a ProgramError naming what to add."""
         return self._value("radius", register)
 
+    def tip(self, register: int) -> int:
+        """The imaginary tool nose direction of lathe offset ``register`` (``<Tool tip>``, Fanuc's numbers;
+        0, the nose centre, when not given)."""
+        tool = self.tools.get(str(register))
+        return 0 if tool is None or tool.tip is None else tool.tip
+
     def _value(self, quantity: str, register: int) -> float:
         if register == 0:
             return 0.0  # [K] Fanuc's H00/D00 hold zero; [?] LinuxCNC's tool 0 is "no tool"

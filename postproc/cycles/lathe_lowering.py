@@ -13,7 +13,16 @@ located error where it is unknown), and on a diameter program X is halved (such 
 radius: ``Dialect.DIAMETER_PROGRAMMING``). A lathe target without the source's incremental addresses
 (LinuxCNC, whose U/W are axes) gets absolute X/Z too, and one that changes lathe tools with M6
 (``Dialect.LATHE_TURRET`` False) gets the turret index as a tool change and its offset number as the
-register of its tool length offset code.
+register of its tool length offset code, and of a G41/G42 that names none: a turret lathe's tool nose
+radius compensation takes the nose radius and tip of the offset in force [K: Fanuc T, GSK: the radius
+and tip columns of the offset the T code selected], LinuxCNC's G41 without D the spindle tool's entry,
+which is not the offset's (``T0102``).
+
+A lathe cycle under tool nose radius compensation is refused where its compensated moves are not known:
+towards another controller (Fanuc's type I/II rules for G71/G72 under compensation are not modelled here;
+LinuxCNC refuses G71/G72 with compensation on [V: ``interp_g7x.cc``]), and in the simulation of a
+source whose compensation is simulated (LinuxCNC's). A finishing cycle (G70) is its profile, which
+compensation runs as any other moves: it stays.
 """
 
 from __future__ import annotations
@@ -25,8 +34,8 @@ from postproc.dialect import Dialect
 from postproc.expr import Expr
 from postproc.errors import UnsupportedError
 from postproc.ir import (
-    Block, Comments, CompoundMotion, DistanceMode, FeedMode, Motion, Plane, SpindleControl, ToolChange, ToolLengthOffset,
-    ToolSelect,
+    Block, Comments, CompoundMotion, CutterCompensation, DistanceMode, FeedMode, Motion, Plane, SpindleControl, ToolChange,
+    ToolLengthOffset, ToolSelect,
 )
 from postproc.lathe_sections import CoordinateSet, LatheCycle
 
@@ -73,8 +82,10 @@ def _lower(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iter
     mode_set = start_mode == target_mode
     turning = False
     """The spindle turns before the block (a turret index must not become a tool change then)."""
+    nose = _NoseCompensation(ctx, target, turret and not foreign)
     for block in blocks:
         sections = block.sections
+        nose.block(block)
         profile = sections.get("InProfile")
         if profile is not None:
             if native:
@@ -109,6 +120,7 @@ def _lower(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iter
                 continue
             if not foreign and "ToolSelect" in block.sections:
                 _select_offset(select, block, ctx)
+                nose.select(select)
             elif foreign and not offset_lost and "ToolSelect" in block.sections:
                 offset_lost = _warn_lost_offset(select, block, ctx, target)
             turning = _turns_after(block, turning)
@@ -123,6 +135,43 @@ def _lower(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iter
                 yield back  # the reference return went in incremental mode: back to absolute
                 continue
         yield block
+
+
+class _NoseCompensation:
+    """Tool nose radius compensation through the lowering: the register a G41/G42 without one reads, and
+    the lathe cycles it must not run over (see the module docstring)."""
+
+    __slots__ = ("ctx", "on", "offset", "name_register", "refuse_cycles")
+
+    def __init__(self, ctx: Context, target: type[Dialect], name_register: bool) -> None:
+        self.ctx = ctx
+        self.on = False
+        self.offset: int | None = None
+        """The offset number of the last turret index (``T0102``: 2)."""
+        self.name_register = name_register
+        self.refuse_cycles = (target.NAME != ctx.dialect if target.WRITER is not None
+                              else ctx.cutter_rules is not None)
+
+    def select(self, select: object) -> None:
+        if isinstance(select, ToolSelect) and isinstance(select.number, int):
+            self.offset = select.number % 100
+
+    def block(self, block: Block) -> None:
+        sections = block.sections
+        cc = sections.get("CutterCompensation")
+        if isinstance(cc, CutterCompensation):
+            self.on = cc.mode != "off"
+            if self.on and cc.register is None and self.name_register and self.offset:
+                sections["CutterCompensation"] = CutterCompensation(cc.mode, self.offset)
+                block.changed()
+        cycle = sections.get("LatheCycle")
+        if self.on and self.refuse_cycles and isinstance(cycle, LatheCycle) and cycle.kind != "turn_finish" \
+                and cycle.form != "first":  # reported once, at the block that runs the cycle
+            self.ctx.diagnostics.error(UnsupportedError(
+                f"a lathe cycle ({cycle.kind.replace('_', ' ')}) under tool nose radius compensation: how the "
+                "controller compensates inside it is not modelled (Fanuc's type I/II rules), so its moves are not "
+                "known; cancel compensation before the cycle and turn it on for the finishing cycle",
+                self.ctx.at(block)))
 
 
 def _turret(block: Block, ctx: Context, turning: bool) -> bool:

@@ -11,7 +11,14 @@ a G90 and a G91 after it. A source whose rules are not modelled leaves its G41/G
 which refuses them.
 
 What the simulation refuses under compensation (a canned cycle, a move in machine coordinates, a
-reference return, a plane other than XY, a start point not known) is a located error here too.
+reference return, a plane other than XY -- or ZX on a lathe --, a start point not known) is a located
+error here too.
+
+On a lathe (the ZX plane) the path is the imaginary tool tip's, as the simulation writes it: the nose
+centre one nose radius beside the programmed path, moved by the radius in the tip's direction
+(``<Tool tip>``, ``postproc.compensation.nose``). The lathe lowering has written X as a radius for a
+target that is no lathe control (``postproc.cycles.lathe_lowering``), so the geometry is true; a target
+that takes diameters and lacks compensation is refused (none is registered).
 
 Inverse time (G93) under compensation: the controller runs each compensated move at F times the
 length of the *programmed* move per minute, an outside corner's arc at the rate of the move after it
@@ -41,6 +48,7 @@ from ..ir import (Block, CutterCompensation, DataSetting, DistanceMode, Feed, Fe
                   ProgramControl, Section, ToolChange, ToolLengthOffset, ToolSelect, Units, WorkOffset)
 from ..compensation.cutter_radius import CutterRadius, Item, Segment
 from ..compensation.dynamic import DynamicCutterCompensation
+from ..compensation.nose import TIPS, mirrored
 from ..compensation.rules import CutterRules
 from ..compensation.tool_table import ToolTable
 from .inverse_time import move_length
@@ -54,7 +62,8 @@ ARC_OFF_RATIO = 0.001
 ``gcode.c`` (error 33 beyond 0.005 mm and 0.1 % of the radius). LinuxCNC joins an arc to a move within
 its corner tolerance (0.05 rad) without moving the start onto the compensated circle, so its compensated
 arc may start off the circle; such an arc is refused here rather than written one grbl rejects."""
-PLANE_WORDS = ("X", "Y")
+PLANES = {"XY": ("X", "Y", "Z"), "ZX": ("Z", "X", "Y")}
+"""The planes compensation is resolved in: first and second axis, then the normal (``state.PLANE_AXES``)."""
 MOVES = frozenset(("rapid", "linear", "cw", "ccw"))
 _SEGMENT_KIND = {"rapid": "rapid", "linear": "feed", "cw": "cw", "ccw": "ccw"}
 _MOTION_MODE = {"rapid": "rapid", "feed": "linear", "cw": "cw", "ccw": "ccw"}
@@ -72,7 +81,12 @@ def resolve_cutter_compensation(blocks: Iterator[Block], ctx: Context, target: t
     rules: CutterRules | None = ctx.cutter_rules  # none for a program written from the neutral IR
     if rules is None:
         return blocks
-    return _Resolver(ctx, rules).run(blocks)
+    return _Resolver(ctx, rules, diameters=_takes_diameters(ctx, target)).run(blocks)
+
+
+def _takes_diameters(ctx: Context, target: type[Dialect]) -> bool:
+    """The blocks still hold X as a diameter (a lathe target programmed in diameters)."""
+    return ctx.diameter and "lathe" in target.MACHINE_TYPES and target.DIAMETER_PROGRAMMING
 
 
 def resolve_dynamic_cutter_compensation(blocks: Iterator[Block], ctx: Context,
@@ -83,7 +97,8 @@ def resolve_dynamic_cutter_compensation(blocks: Iterator[Block], ctx: Context,
     rules: CutterRules | None = ctx.cutter_rules
     if ctx.dialect == target.NAME or rules is None:
         return blocks
-    return _Resolver(ctx, rules, _native if target.CUTTER_COMPENSATION else None).run(blocks)
+    return _Resolver(ctx, rules, _native if target.CUTTER_COMPENSATION else None,
+                     _takes_diameters(ctx, target)).run(blocks)
 
 
 def resolve_cutter_compensation_unless(blocks: Iterator[Block], ctx: Context,
@@ -103,8 +118,10 @@ def _native(resolver: "_Resolver", cc: CutterCompensation) -> bool:
 class _Resolver:
     """The compensation state of one translation, and the blocks it has released."""
 
-    def __init__(self, ctx: Context, rules: CutterRules, keeps: Keeps | None = None) -> None:
+    def __init__(self, ctx: Context, rules: CutterRules, keeps: Keeps | None = None, diameters: bool = False) -> None:
         self.ctx = ctx
+        self.diameters = diameters
+        """X words are diameters in the blocks (compensation on a lathe is then refused)."""
         self.rules = rules
         self.keeps = keeps
         """Whether a G41/G42 by register stays for the target to write (with its G40); None: none does."""
@@ -119,7 +136,7 @@ class _Resolver:
         self.scale = 1.0
         """mm per program unit."""
         self.absolute = True
-        self.plane = "XY"
+        self.plane = "ZX" if ctx.lathe else "XY"
         self.work_offset = 1
         self.selected: int | None = None
         self.spindle_tool: int | None = None
@@ -184,23 +201,22 @@ class _Resolver:
             del sections["DynamicCutterCompensation"]
             sections.pop("NativeCode", None)  # its G41.1/G42.1 D.., which the section says (inert)
             block.changed()
-            if self.plane != "XY":
-                raise UnsupportedError(f"cutter compensation by a diameter in the {self.plane} plane cannot be "
-                                       "resolved")
-            if self._idle() and self.pos["X"] is not None and self.pos["Y"] is not None:
-                self.at = (self.pos["X"], self.pos["Y"])
-            self.cutter.start(dynamic.mode, dynamic.radius(self.scale))  # negative: the other side
+            axes = self._plane_axes("cutter compensation by a diameter")
+            self._entry_start(axes)
+            tip = TIPS[mirrored(dynamic.orientation or 0)] if self.plane == "ZX" else (0, 0)
+            self.cutter.start(dynamic.mode, dynamic.radius(self.scale), axes,  # negative: the other side
+                              (float(tip[0]), float(tip[1])))
         elif isinstance(cc, CutterCompensation):
             del sections["CutterCompensation"]
             block.changed()
             if cc.mode == "off":
                 self.cutter.cancel()
             else:
-                if self.plane != "XY":
-                    raise UnsupportedError(f"cutter compensation in the {self.plane} plane cannot be resolved")
-                if self._idle() and self.pos["X"] is not None and self.pos["Y"] is not None:
-                    self.at = (self.pos["X"], self.pos["Y"])  # where the entry move starts
-                self.cutter.start(cc.mode, self._radius(cc.register))
+                axes = self._plane_axes("cutter compensation")
+                self._entry_start(axes)
+                register = self._register(cc.register)
+                tip = TIPS[self.table.tip(register)] if self.plane == "ZX" else (0, 0)
+                self.cutter.start(cc.mode, self.table.radius(register), axes, (float(tip[0]), float(tip[1])))
         if (isinstance(dynamic, DynamicCutterCompensation) or isinstance(cc, CutterCompensation)) and not sections:
             return  # the block only turned compensation on or off: nothing is left to write
         if self._idle():
@@ -264,7 +280,23 @@ class _Resolver:
             raise UnsupportedError("a change of the work origin with cutter compensation on cannot be resolved")
         self.pos = {axis: None for axis in self.pos}
 
-    def _radius(self, register: int | Expr | None) -> float:
+    def _plane_axes(self, what: str) -> tuple[str, str, str]:
+        """The axes of the plane compensation starts in, or why it cannot be resolved there."""
+        axes = PLANES.get(self.plane)
+        if axes is None or (self.plane == "ZX") != self.ctx.lathe:
+            raise UnsupportedError(f"{what} in the {self.plane} plane cannot be resolved")
+        if self.plane == "ZX" and self.diameters:
+            raise UnsupportedError(f"{what} on a lathe cannot be resolved for a target programmed in diameters")
+        return axes
+
+    def _entry_start(self, axes: tuple[str, str, str]) -> None:
+        """Where the entry move starts: the programmed point, when no compensation is on or queued."""
+        a1, a2, _ = axes
+        first, second = self.pos.get(a1), self.pos.get(a2)
+        if self._idle() and first is not None and second is not None:
+            self.at = (first, second)
+
+    def _register(self, register: int | Expr | None) -> int:
         if isinstance(register, Expr):
             raise UnsupportedError("cutter compensation with a computed register cannot be resolved")
         if register is None:
@@ -272,7 +304,7 @@ class _Resolver:
                 raise ProgramError("cutter compensation without its register takes the tool in the spindle, which "
                                    "is not known here (no tool change before it): program its register")
             register = self.spindle_tool
-        return self.table.radius(register)
+        return register
 
     # -- positions -----------------------------------------------------------------------------------
     def _target(self, motion: Motion) -> dict[str, float | None]:
@@ -303,8 +335,10 @@ class _Resolver:
                 self.pos = {axis: value for axis, value in self._target(motion).items()}
             except UnsupportedError:
                 self.pos = {axis: None for axis in self.pos}
-        if self.pos["X"] is not None and self.pos["Y"] is not None:
-            self.at = (self.pos["X"], self.pos["Y"])
+        a1, a2, _ = PLANES.get(self.plane, PLANES["XY"])
+        first, second = self.pos.get(a1), self.pos.get(a2)
+        if first is not None and second is not None:
+            self.at = (first, second)
 
     def _move(self, block: Block, motion: Motion) -> None:
         if "MachineCoordinates" in block.sections or motion.mode in ("home", "home2"):
@@ -313,13 +347,15 @@ class _Resolver:
         kind = _SEGMENT_KIND.get(motion.mode or "")
         if kind is None:
             raise UnsupportedError(f"motion '{motion.mode}' with cutter compensation on cannot be resolved")
-        start_x, start_y = self.pos["X"], self.pos["Y"]
+        a1, a2, normal = self.cutter.axes
+        start_x, start_y = self.pos[a1], self.pos[a2]
         target = self._target(motion)
-        if start_x is None or start_y is None or target["X"] is None or target["Y"] is None:
-            raise ProgramError("the start point of a compensated move is not known (program X and Y absolutely "
-                               "after the origin moved)")
+        end_x, end_y = target[a1], target[a2]
+        if start_x is None or start_y is None or end_x is None or end_y is None:
+            raise ProgramError(f"the start point of a compensated move is not known (program {a1} and {a2} "
+                               "absolutely after the origin moved)")
         end = {axis: value for axis, value in target.items() if value is not None}
-        seg = Segment(kind, {"line": block.line}, end, self.pos["Z"] or 0.0)
+        seg = Segment(kind, {"line": block.line}, end, self.pos.get(normal) or 0.0)
         seg.fields["source"] = id(seg)
         start = (start_x, start_y)
         self.held[id(seg)] = (block, not self.absolute)
@@ -329,7 +365,7 @@ class _Resolver:
                 raise UnsupportedError("a computed arc under cutter compensation cannot be resolved")
             radius = None if motion.radius is None else motion.radius * self.scale
             try:
-                c = arc_centre(start, (end["X"], end["Y"]), PLANE_WORDS, radius, offsets, kind == "cw")
+                c = arc_centre(start, (end_x, end_y), (a1, a2), radius, offsets, kind == "cw")
             except ArcError as err:
                 raise ProgramError(err.message) from None
             if c is None:
@@ -400,11 +436,13 @@ class _Resolver:
         """The block's move as the compensated one, in absolute program units."""
         sections = block.sections
         scale = self.scale
-        xy = seg.xy if seg.xy is not None else (seg.end["X"], seg.end["Y"])
+        a1, a2, normal = self.cutter.axes
+        xy = seg.xy if seg.xy is not None else (seg.end[a1], seg.end[a2])
         old = sections.get("Motion")
-        axes: dict[str, float | Expr] = {"X": xy[0] / scale, "Y": xy[1] / scale}
-        if isinstance(old, Motion) and "Z" in old.axes and "Z" in seg.end:
-            axes["Z"] = seg.end["Z"] / scale
+        point = {a1: xy[0] / scale, a2: xy[1] / scale}
+        if isinstance(old, Motion) and normal in old.axes and normal in seg.end:
+            point[normal] = seg.end[normal] / scale
+        axes: dict[str, float | Expr] = {axis: point[axis] for axis in "XYZ" if axis in point}  # written X, Y, Z
         center: dict[str, float | Expr] | None = None
         if seg.turn != 0 and seg.ccentre is not None:
             cc = seg.ccentre
@@ -413,7 +451,8 @@ class _Resolver:
                 raise UnsupportedError(f"the compensated arc starts {off:.4f} mm off its circle (the source controller "
                                        "joins it to a nearly tangent move without a corner and runs it so; written as "
                                        "an arc, the target refuses it)", self.ctx.at(block))
-            center = {"X": (cc[0] - self.at[0]) / scale, "Y": (cc[1] - self.at[1]) / scale}
+            offsets = {a1: (cc[0] - self.at[0]) / scale, a2: (cc[1] - self.at[1]) / scale}
+            center = {axis: offsets[axis] for axis in "XYZ" if axis in offsets}
         sections["Motion"] = Motion(_MOTION_MODE[seg.kind], axes, center, None)
         self.at = xy
         if incremental:

@@ -140,6 +140,17 @@ class LatheWordWriter(WordWriter):
             return []
         return super().cycle_cancel_words(s, block)
 
+    def cutter_compensation_words(self, s: Any, block: Block) -> list[str]:
+        """A turret lathe's G41/G42 names no register: the nose radius and tip are those of the offset the T
+        code selected [K: Fanuc T and GSK offset pages, radius R and tip T per offset number]. A register from
+        another controller (LinuxCNC's ``G42 D2``) has no word here: refused rather than written as a D the
+        control would not read as one."""
+        if self.ctx.lathe and s.mode != "off" and s.register is not None:
+            self.unsupported(f"tool nose radius compensation by register {s.register} (a turret lathe compensates by "
+                             "the offset its tool code selected: select that offset there, and turn compensation on "
+                             "without a register)", block)
+        return super().cutter_compensation_words(s, block)
+
     def coordinate_set_words(self, s: Any, block: Block) -> list[str]:
         code = self.code("coordinate_set", None, "coordinate setting", block)
         return [code, *(axis + self.length(value, block, axis) for axis, value in s.axes.items())]

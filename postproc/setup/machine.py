@@ -127,6 +127,11 @@ class ToolData(Entry):
     x: float | None = coordinate()
     z: float | None = coordinate()
     """Lathe geometry offsets, added to X (as the set-up's X: diameter on a diameter lathe) and Z."""
+    tip: int | None = setting(None, ge=0, le=9)
+    """Lathe: the imaginary tool nose direction of the offset (Fanuc's T column, 0-9), whose nose radius is
+    ``radius``: G41/G42 run the nose centre one radius beside the path and the imaginary tip (the point
+    the offsets measure) is that centre moved by the radius in this direction
+    (``postproc.compensation.nose``). Absent: 0, the nose centre is the point."""
 
     def __post_init__(self) -> None:
         if self.shared() and any(v is not None for v in (self.length, self.radius, self.length_wear,

@@ -11,6 +11,7 @@ from mypy_extensions import mypyc_attr
 
 from ..block_rules import NO_FEED, ArcError, arc_centre
 from ..compensation.cutter_radius import CutterRadius, Item, Segment
+from ..compensation.nose import TIPS, mirrored
 from ..compensation.rules import CutterRules
 from ..compensation.tool_length import AXIS as _AXIS, ToolLength
 from ..compensation.tool_table import ToolTable
@@ -191,19 +192,21 @@ class Moves:
             if mode == "off":
                 cutter.cancel()
             elif mode in ("left", "right"):
-                if self.modal.plane != "XY":
-                    raise UnsupportedError(f"cutter compensation in the {self.modal.plane} plane cannot be "
-                                           "simulated", self._at(block))
-                cutter.start(mode, self._cutter_radius(block, cc.register))  # type: ignore[attr-defined]
+                reads = self._cutter_register(block, cc.register)  # type: ignore[attr-defined]
+                cutter.start(mode, self._cutter_radius(block, reads), PLANE_AXES[self.modal.plane],
+                             self._nose_tip(block, reads))
                 self._begin()
             else:
                 raise UnsupportedError(f"cutter compensation '{mode}' cannot be simulated", self._at(block))
         dynamic = get("DynamicCutterCompensation")
         if dynamic is not None:
-            if cutter is None or self.modal.plane != "XY":
+            lathe = self.modal.plane == "ZX" and self.lathe
+            if cutter is None or (self.modal.plane != "XY" and not lathe):
                 raise UnsupportedError(f"cutter compensation by a diameter in the {self.modal.plane} plane cannot be "
                                        "simulated", self._at(block))
-            cutter.start(dynamic.mode, dynamic.radius(self.scale))  # type: ignore[attr-defined]  # D/2, negative: other side
+            tip = TIPS[mirrored(dynamic.orientation or 0)] if lathe else (0, 0)  # type: ignore[attr-defined]
+            cutter.start(dynamic.mode, dynamic.radius(self.scale), PLANE_AXES[self.modal.plane],  # type: ignore[attr-defined]
+                         (float(tip[0]), float(tip[1])))  # D/2, negative: other side
             self._begin()
         tl = get("ToolLengthOffset")
         if tl is not None and self.lathe and tl.mode in ("positive", "cancel"):  # type: ignore[attr-defined]
@@ -226,8 +229,14 @@ class Moves:
             self.settings[LATHE_TOOL_OFFSET] = value
             self.unsimulated.append((line, LATHE_TOOL_OFFSET, value))
 
-    def _cutter_radius(self, block: Block, register: int | None) -> float:
-        """The radius a G41/G42 takes: its register's, or by the rules the spindle tool's (LinuxCNC)."""
+    def _cutter_register(self, block: Block, register: int | None) -> int:
+        """The register a G41/G42 reads: its own, or by the rules the spindle tool's (LinuxCNC); in a plane
+        compensation is not simulated in, an error before anything is read."""
+        plane = self.modal.plane
+        if plane != "XY" and not (plane == "ZX" and self.lathe):
+            raise UnsupportedError(f"cutter compensation in the {plane} plane cannot be simulated"
+                                   + ("" if self.lathe else " (tool nose radius compensation runs on a lathe)"),
+                                   self._at(block))
         if register is None:
             assert self.cutter is not None
             if self.cutter.rules.register_absent != "tool":
@@ -238,10 +247,22 @@ class Moves:
                                    "is not known here (no tool change before it): program its register",
                                    self._at(block))
             register = self.spindle_tool
+        return register
+
+    def _cutter_radius(self, block: Block, register: int) -> float:
+        """The radius register ``register`` holds (a lathe tool's nose radius)."""
         try:
             return self.tools.radius(register)
         except PostprocError as err:
             raise err.located(self._at(block, "D")) from None
+
+    def _nose_tip(self, block: Block, register: int) -> tuple[float, float]:
+        """On a lathe (the ZX plane), the direction from the tool's nose centre to its imaginary tip, by
+        the register's ``<Tool tip>`` (``postproc.compensation.nose``); a mill's tool has none."""
+        if self.modal.plane != "ZX":
+            return (0.0, 0.0)
+        direction = TIPS[self.tools.tip(register)]
+        return float(direction[0]), float(direction[1])
 
     def _begin(self) -> None:
         """Moves from here on go through the compensation."""
@@ -379,9 +400,11 @@ class Moves:
             seg.normal = pos.get(PLANE_AXES[plane or "XY"][2], 0.0)
         if not self._cutter_idle():
             assert cutter is not None
-            if cutter.on and (self.modal.plane != "XY" or "X" not in pos or "Y" not in pos):
-                raise UnsupportedError(f"cutter compensation in the {self.modal.plane} plane cannot be simulated")
-            start = (pos.get("X", 0.0), pos.get("Y", 0.0))
+            a1, a2, _ = cutter.axes
+            if cutter.on and (PLANE_AXES[self.modal.plane] != cutter.axes or a1 not in pos or a2 not in pos):
+                raise UnsupportedError(f"cutter compensation in the {self.modal.plane} plane cannot be simulated "
+                                       "(the plane changed while it is on, or an axis of its plane is missing)")
+            start = (pos.get(a1, 0.0), pos.get(a2, 0.0))
             if centre is None:
                 cutter.line(seg, start)
             else:
@@ -461,7 +484,8 @@ class Moves:
         end = seg.end
         control = dict(end)
         if seg.xy is not None:
-            control["X"], control["Y"] = seg.xy
+            a1, a2, _ = self.cutter.axes if self.cutter is not None else PLANE_AXES["XY"]
+            control[a1], control[a2] = seg.xy
         if seg.dz and LENGTH_AXIS in control:
             control[LENGTH_AXIS] += seg.dz
         crounded = {a: num(v) for a, v in control.items()}

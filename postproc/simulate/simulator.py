@@ -19,7 +19,7 @@ from ..event_order import after_motion
 from ..expr import Expr
 from ..ir import Block, MachineFunction, Motion, Section
 from ..state import MM_PER_INCH, MODAL_KEYS as _MODAL
-from .events import HEADER_LOOKAHEAD, UNEVALUATED, UNSIMULATED, Event, header, num, _setting_text
+from .events import HEADER_LOOKAHEAD, LATHE_TOOL_OFFSET, UNEVALUATED, UNSIMULATED, Event, header, num, _setting_text
 from .moves import Moves
 
 LENGTH_AXIS: Final = _AXIS
@@ -147,9 +147,17 @@ class Simulator(Moves):
             if kind is None or (key == "CutterCompensation" and self.cutter is not None):
                 continue
             value = _setting_text(key, section)
+            if key == "CutterCompensation" and self.lathe and value in ("left", "right"):
+                value = self._turret_register(value)
             if value is not None and value != self.settings.get(kind):
                 self.settings[kind] = value
                 self.unsimulated.append((block.line, kind, value))
+
+    def _turret_register(self, side: str) -> str:
+        """A turret lathe's G41/G42 names no register: it compensates by the offset the last T selected
+        [K: Fanuc T, GSK], so the setting reads as that register (as LinuxCNC's ``G42 D02`` does)."""
+        offset = self.settings.get(LATHE_TOOL_OFFSET, "")
+        return f"{side} D{offset.split()[1]}" if offset.startswith("offset ") else side
 
     def machine_function(self, block: Block, code: MachineFunction, emit: Callable[[Event], None]) -> None:
         """A machine-specific code: the event of its declared action, carrying the code (``verify`` lists
