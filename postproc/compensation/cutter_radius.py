@@ -1,5 +1,11 @@
-"""Cutter radius compensation in the XY plane: the tool's centre runs one radius beside the programmed
-path, on the left (G41) or the right (G42) looking along the motion.
+"""Cutter radius compensation in the XY or ZX plane: the tool's centre runs one radius beside the
+programmed path, on the left (G41) or the right (G42) looking along the motion.
+
+A plane's points are (first axis, second axis) as ``state.PLANE_AXES`` gives them: (X, Y) for G17, (Z, X)
+for G18, so left and right are seen from the normal's positive end (+Z, +Y) [V: LinuxCNC
+``interp_convert.cc`` ``comp_get_current``: in the XZ plane x is Z and y is X; ``convert_set_plane``:
+compensation runs in XY or XZ only, and the plane cannot change while it is on]. Which planes a
+controller compensates in is its rules' ``planes``.
 
 Where a move ends depends on the move after it (an inside corner shortens it, an outside corner adds an
 arc), so the last move waits in a small queue until the next move in the plane decides its end; what
@@ -20,6 +26,7 @@ from dataclasses import dataclass, field
 from typing import Any, Callable, Union
 
 from ..errors import ProgramError, UnsupportedError
+from ..state import PLANE_AXES
 from .rules import CutterRules
 
 Point = tuple[float, float]
@@ -50,7 +57,7 @@ class Segment:
     dz: float = 0.0
     """The tool length the move is made with (added to the controlled Z)."""
     xy: Point | None = None
-    """The controlled end in the plane; None: the programmed one."""
+    """The controlled end in the plane (first, second axis); None: the programmed one."""
     centre: Point | None = None
     """An arc's programmed centre (a corner arc: the corner)."""
     ccentre: Point | None = None
@@ -104,6 +111,8 @@ class CutterRadius:
         """The next move in the plane is the entry move."""
         self.current: Point = (0.0, 0.0)
         """The controlled point in the plane (while compensating)."""
+        self.axes: tuple[str, str, str] = PLANE_AXES["XY"]
+        """The plane compensation runs in: its first and second axis, then its normal (set by ``start``)."""
         self.queue: list[Item] = []
         self.endpoint: Point | None = None
         """Where the first queued move starts (None: unknown, its end is not checked when moved)."""
@@ -120,13 +129,22 @@ class CutterRadius:
         """Compensation moves the tool (it is on with a radius above zero)."""
         return self.side is not None and self.radius > 0.0
 
-    def start(self, side: str, radius: float) -> None:
-        """G41/G42 with the register's radius (a negative radius swaps the side [V][K])."""
+    def start(self, side: str, radius: float, plane: str = "XY") -> None:
+        """G41/G42 with the register's radius (a negative radius swaps the side [V][K]) in ``plane``."""
         if self.side is not None:
             raise ProgramError("cutter compensation is turned on while it is on (cancel it first)")
+        if plane not in self.rules.planes:
+            raise ProgramError(f"{self.rules.name} runs cutter compensation only in the "
+                               f"{' or '.join(self.rules.planes)} plane, not in {plane}")
         if radius < 0.0:
             side, radius = ("right" if side == "left" else "left"), -radius
         self.side, self.radius, self.first = side, radius, True
+        self.axes = PLANE_AXES[plane]
+
+    def in_plane(self, end: dict[str, float]) -> Point:
+        """A point's coordinates in the compensation's plane."""
+        a1, a2, _ = self.axes
+        return end[a1], end[a2]
 
     def cancel(self) -> None:
         """G40: the last move keeps its compensated end; the next move (the exit move) goes from there to
@@ -160,7 +178,7 @@ class CutterRadius:
         if not self.on:
             self.release(seg)
             return
-        p = (seg.end["X"], seg.end["Y"])
+        p = self.in_plane(seg.end)
         if self.first:
             self._line_entry(seg, start, p)
         else:
@@ -194,7 +212,7 @@ class CutterRadius:
         point, about a centre on the line from the end through the programmed centre."""
         assert seg.centre is not None
         r, centre, turn = self.radius, seg.centre, seg.turn
-        e = (seg.end["X"], seg.end["Y"])
+        e = self.in_plane(seg.end)
         if math.hypot(e[0] - c[0], e[1] - c[1]) <= r:
             raise ProgramError("the entry arc of cutter compensation does not end farther than the tool "
                                "radius from its start")
@@ -285,7 +303,7 @@ class CutterRadius:
         assert seg.centre is not None
         r, small, left, turn = self.radius, self.rules.corner_tolerance, self.side == "left", seg.turn
         centre, c = seg.centre, self.current
-        e = (seg.end["X"], seg.end["Y"])
+        e = self.in_plane(seg.end)
         arc_radius = math.hypot(centre[0] - e[0], centre[1] - e[1])
         theta = math.atan2(c[1] - op[1], c[0] - op[0])
         theta = theta - HALF_PI if left else theta + HALF_PI
@@ -372,10 +390,11 @@ class CutterRadius:
     def _corner(self, seg: Segment, op: Point, mid: Point, arc: bool) -> Segment:
         """The move around an outside corner: an arc about the programmed corner (its programmed point),
         made at the height the tool stands at; a rapid goes straight to the arc's end."""
+        a1, a2, normal = self.axes
         corner = dict(seg.end)
-        corner["X"], corner["Y"] = op
-        if "Z" in corner:
-            corner["Z"] = seg.normal  # the block's start height
+        corner[a1], corner[a2] = op
+        if normal in corner:
+            corner[normal] = seg.normal  # the block's start height
         turn = -1 if self.side == "left" else 1
         if not arc:
             return Segment("rapid", dict(seg.fields), corner, seg.normal, seg.dz, xy=mid)

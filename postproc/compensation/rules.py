@@ -30,6 +30,8 @@ class CutterRules:
     """Radians within which two directions count as one (no corner)."""
     arc_after_cancel: bool
     """Whether the move after a cancel (the exit move) may be an arc."""
+    planes: tuple[str, ...] = ("XY",)
+    """The planes compensation runs in (``state.PLANE_AXES`` names); another is a program error."""
 
 
 ARC_CORNERS = CutterRules(
@@ -39,6 +41,7 @@ ARC_CORNERS = CutterRules(
     outside_corner="arc",  # [V] convert_straight_comp2 / convert_arc_comp2 insert an arc about the corner
     corner_tolerance=0.05,  # [V] TOLERANCE_CONCAVE_CORNER (interp_internal.hh)
     arc_after_cancel=False,  # [V] "The move just after exiting cutter compensation mode must be straight"
+    planes=("XY", "ZX"),  # [V] convert_cutter_compensation_on: NCE_RADIUS_COMP_ONLY_IN_XY_OR_XZ
 )
 """LinuxCNC's interpreter (``interp_convert.cc``, ``interp_queue.cc``): the oracle of the differential test
 ``tests/test_cutter_compensation_rs274.py``."""

@@ -191,10 +191,11 @@ class Moves:
             if mode == "off":
                 cutter.cancel()
             elif mode in ("left", "right"):
-                if self.modal.plane != "XY":
-                    raise UnsupportedError(f"cutter compensation in the {self.modal.plane} plane cannot be "
-                                           "simulated", self._at(block))
-                cutter.start(mode, self._cutter_radius(block, cc.register))  # type: ignore[attr-defined]
+                radius = self._cutter_radius(block, cc.register)  # type: ignore[attr-defined]
+                try:
+                    cutter.start(mode, radius, self.modal.plane)
+                except PostprocError as err:
+                    raise err.located(self._at(block)) from None
                 self._begin()
             else:
                 raise UnsupportedError(f"cutter compensation '{mode}' cannot be simulated", self._at(block))
@@ -371,17 +372,22 @@ class Moves:
             if self.modal.feed_mode == "inverse_time" and self.sync is None and not self._cutter_idle():
                 self._programmed_rate(fields, kind, target, centre, plane)
         pos = self.pos
-        seg = Segment(kind, fields, target, pos.get(LENGTH_AXIS, 0.0), self.length.offset)
         cutter = self.cutter
+        a1, a2, normal = cutter.axes if cutter is not None else PLANE_AXES["XY"]
+        seg = Segment(kind, fields, target, pos.get(normal, 0.0), self.length.offset)
         if centre is not None:
             seg.centre = seg.ccentre = centre
             seg.turn = 1 if kind == "ccw" else -1
             seg.normal = pos.get(PLANE_AXES[plane or "XY"][2], 0.0)
         if not self._cutter_idle():
             assert cutter is not None
-            if cutter.on and (self.modal.plane != "XY" or "X" not in pos or "Y" not in pos):
-                raise UnsupportedError(f"cutter compensation in the {self.modal.plane} plane cannot be simulated")
-            start = (pos.get("X", 0.0), pos.get("Y", 0.0))
+            if cutter.on and PLANE_AXES[self.modal.plane] != cutter.axes:
+                raise ProgramError(f"the plane cannot change to {self.modal.plane} while cutter compensation is on "
+                                   "(cancel it first)", self._at())
+            if cutter.on and (a1 not in pos or a2 not in pos):
+                raise ProgramError(f"cutter compensation in the {self.modal.plane} plane needs axes {a1} and {a2}",
+                                   self._at())
+            start = (pos.get(a1, 0.0), pos.get(a2, 0.0))
             if centre is None:
                 cutter.line(seg, start)
             else:
@@ -461,7 +467,8 @@ class Moves:
         end = seg.end
         control = dict(end)
         if seg.xy is not None:
-            control["X"], control["Y"] = seg.xy
+            a1, a2, _ = self.cutter.axes if self.cutter is not None else PLANE_AXES["XY"]
+            control[a1], control[a2] = seg.xy
         if seg.dz and LENGTH_AXIS in control:
             control[LENGTH_AXIS] += seg.dz
         crounded = {a: num(v) for a, v in control.items()}
