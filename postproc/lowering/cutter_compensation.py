@@ -11,7 +11,8 @@ a G90 and a G91 after it. A source whose rules are not modelled leaves its G41/G
 which refuses them.
 
 What the simulation refuses under compensation (a canned cycle, a move in machine coordinates, a
-reference return, a plane other than XY, a start point not known) is a located error here too.
+reference return, a plane the rules do not compensate in, a start point not known) is a located error here
+too. In the ZX plane (G18) the plane's points are (Z, X), as the simulation has them.
 
 Inverse time (G93) under compensation: the controller runs each compensated move at F times the
 length of the *programmed* move per minute, an outside corner's arc at the rate of the move after it
@@ -43,6 +44,7 @@ from ..compensation.cutter_radius import CutterRadius, Item, Segment
 from ..compensation.dynamic import DynamicCutterCompensation
 from ..compensation.rules import CutterRules
 from ..compensation.tool_table import ToolTable
+from ..state import PLANE_AXES
 from .inverse_time import move_length
 
 Keeps = Callable[["_Resolver", CutterCompensation], bool]
@@ -54,7 +56,6 @@ ARC_OFF_RATIO = 0.001
 ``gcode.c`` (error 33 beyond 0.005 mm and 0.1 % of the radius). LinuxCNC joins an arc to a move within
 its corner tolerance (0.05 rad) without moving the start onto the compensated circle, so its compensated
 arc may start off the circle; such an arc is refused here rather than written one grbl rejects."""
-PLANE_WORDS = ("X", "Y")
 MOVES = frozenset(("rapid", "linear", "cw", "ccw"))
 _SEGMENT_KIND = {"rapid": "rapid", "linear": "feed", "cw": "cw", "ccw": "ccw"}
 _MOTION_MODE = {"rapid": "rapid", "feed": "linear", "cw": "cw", "ccw": "ccw"}
@@ -187,8 +188,7 @@ class _Resolver:
             if self.plane != "XY":
                 raise UnsupportedError(f"cutter compensation by a diameter in the {self.plane} plane cannot be "
                                        "resolved")
-            if self._idle() and self.pos["X"] is not None and self.pos["Y"] is not None:
-                self.at = (self.pos["X"], self.pos["Y"])
+            self._entry_start()
             self.cutter.start(dynamic.mode, dynamic.radius(self.scale))  # negative: the other side
         elif isinstance(cc, CutterCompensation):
             del sections["CutterCompensation"]
@@ -196,11 +196,11 @@ class _Resolver:
             if cc.mode == "off":
                 self.cutter.cancel()
             else:
-                if self.plane != "XY":
-                    raise UnsupportedError(f"cutter compensation in the {self.plane} plane cannot be resolved")
-                if self._idle() and self.pos["X"] is not None and self.pos["Y"] is not None:
-                    self.at = (self.pos["X"], self.pos["Y"])  # where the entry move starts
-                self.cutter.start(cc.mode, self._radius(cc.register))
+                radius = self._radius(cc.register)
+                if self._idle():
+                    self.cutter.axes = PLANE_AXES[self.plane]
+                    self._entry_start()
+                self.cutter.start(cc.mode, radius, self.plane)
         if (isinstance(dynamic, DynamicCutterCompensation) or isinstance(cc, CutterCompensation)) and not sections:
             return  # the block only turned compensation on or off: nothing is left to write
         if self._idle():
@@ -236,6 +236,9 @@ class _Resolver:
             self.absolute = distance.mode == "absolute"
         plane = sections.get("Plane")
         if isinstance(plane, Plane):
+            if plane.plane != self.plane and self.cutter.side is not None:
+                raise ProgramError(f"the plane cannot change to {plane.plane} while cutter compensation is on "
+                                   "(cancel it first)")
             self.plane = plane.plane
         setting = sections.get("DataSetting")
         if isinstance(setting, DataSetting):
@@ -275,6 +278,16 @@ class _Resolver:
         return self.table.radius(register)
 
     # -- positions -----------------------------------------------------------------------------------
+    def _in_plane(self, point: dict[str, float | None]) -> tuple[float | None, float | None]:
+        a1, a2, _ = self.cutter.axes
+        return point.get(a1), point.get(a2)
+
+    def _entry_start(self) -> None:
+        """Where the entry move starts: the programmed point, when known."""
+        u, v = self._in_plane(self.pos)
+        if self._idle() and u is not None and v is not None:
+            self.at = (u, v)
+
     def _target(self, motion: Motion) -> dict[str, float | None]:
         target = dict(self.pos)
         for axis, value in motion.axes.items():
@@ -303,8 +316,9 @@ class _Resolver:
                 self.pos = {axis: value for axis, value in self._target(motion).items()}
             except UnsupportedError:
                 self.pos = {axis: None for axis in self.pos}
-        if self.pos["X"] is not None and self.pos["Y"] is not None:
-            self.at = (self.pos["X"], self.pos["Y"])
+        u, v = self._in_plane(self.pos)
+        if u is not None and v is not None:
+            self.at = (u, v)
 
     def _move(self, block: Block, motion: Motion) -> None:
         if "MachineCoordinates" in block.sections or motion.mode in ("home", "home2"):
@@ -313,15 +327,17 @@ class _Resolver:
         kind = _SEGMENT_KIND.get(motion.mode or "")
         if kind is None:
             raise UnsupportedError(f"motion '{motion.mode}' with cutter compensation on cannot be resolved")
-        start_x, start_y = self.pos["X"], self.pos["Y"]
+        a1, a2, normal = self.cutter.axes
+        start_1, start_2 = self._in_plane(self.pos)
         target = self._target(motion)
-        if start_x is None or start_y is None or target["X"] is None or target["Y"] is None:
-            raise ProgramError("the start point of a compensated move is not known (program X and Y absolutely "
-                               "after the origin moved)")
+        end_1, end_2 = self._in_plane(target)
+        if start_1 is None or start_2 is None or end_1 is None or end_2 is None:
+            raise ProgramError(f"the start point of a compensated move is not known (program {a1} and {a2} "
+                               "absolutely after the origin moved)")
         end = {axis: value for axis, value in target.items() if value is not None}
-        seg = Segment(kind, {"line": block.line}, end, self.pos["Z"] or 0.0)
+        seg = Segment(kind, {"line": block.line}, end, self.pos.get(normal) or 0.0)
         seg.fields["source"] = id(seg)
-        start = (start_x, start_y)
+        start = (start_1, start_2)
         self.held[id(seg)] = (block, not self.absolute)
         if kind in ("cw", "ccw"):
             offsets = {a: v * self.scale for a, v in (motion.center or {}).items() if isinstance(v, (int, float))}
@@ -329,7 +345,7 @@ class _Resolver:
                 raise UnsupportedError("a computed arc under cutter compensation cannot be resolved")
             radius = None if motion.radius is None else motion.radius * self.scale
             try:
-                c = arc_centre(start, (end["X"], end["Y"]), PLANE_WORDS, radius, offsets, kind == "cw")
+                c = arc_centre(start, (end_1, end_2), (a1, a2), radius, offsets, kind == "cw")
             except ArcError as err:
                 raise ProgramError(err.message) from None
             if c is None:
@@ -356,7 +372,7 @@ class _Resolver:
         if len(start) < 3 or len(end) < 3:
             raise ProgramError("the start point of a compensated inverse-time move is not known (program X, Y and "
                                "Z absolutely first)")
-        length = move_length(start, end, "XY", "linear" if kind == "feed" else kind, centre)
+        length = move_length(start, end, self.plane, "linear" if kind == "feed" else kind, centre)
         block.sections["Feed"] = Feed(feed.value * length / self.scale)
         if not self.per_minute or "FeedMode" in block.sections:  # the first of the stretch, or its own G93
             block.sections["FeedMode"] = FeedMode("per_min")
@@ -400,11 +416,12 @@ class _Resolver:
         """The block's move as the compensated one, in absolute program units."""
         sections = block.sections
         scale = self.scale
-        xy = seg.xy if seg.xy is not None else (seg.end["X"], seg.end["Y"])
+        a1, a2, normal = self.cutter.axes
+        xy = seg.xy if seg.xy is not None else (seg.end[a1], seg.end[a2])
         old = sections.get("Motion")
-        axes: dict[str, float | Expr] = {"X": xy[0] / scale, "Y": xy[1] / scale}
-        if isinstance(old, Motion) and "Z" in old.axes and "Z" in seg.end:
-            axes["Z"] = seg.end["Z"] / scale
+        axes: dict[str, float | Expr] = {a1: xy[0] / scale, a2: xy[1] / scale}
+        if isinstance(old, Motion) and normal in old.axes and normal in seg.end:
+            axes[normal] = seg.end[normal] / scale
         center: dict[str, float | Expr] | None = None
         if seg.turn != 0 and seg.ccentre is not None:
             cc = seg.ccentre
@@ -413,7 +430,7 @@ class _Resolver:
                 raise UnsupportedError(f"the compensated arc starts {off:.4f} mm off its circle (the source controller "
                                        "joins it to a nearly tangent move without a corner and runs it so; written as "
                                        "an arc, the target refuses it)", self.ctx.at(block))
-            center = {"X": (cc[0] - self.at[0]) / scale, "Y": (cc[1] - self.at[1]) / scale}
+            center = {a1: (cc[0] - self.at[0]) / scale, a2: (cc[1] - self.at[1]) / scale}
         sections["Motion"] = Motion(_MOTION_MODE[seg.kind], axes, center, None)
         self.at = xy
         if incremental:
