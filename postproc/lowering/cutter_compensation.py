@@ -185,11 +185,10 @@ class _Resolver:
             del sections["DynamicCutterCompensation"]
             sections.pop("NativeCode", None)  # its G41.1/G42.1 D.., which the section says (inert)
             block.changed()
-            if self.plane != "XY":
-                raise UnsupportedError(f"cutter compensation by a diameter in the {self.plane} plane cannot be "
-                                       "resolved")
-            self._entry_start()
-            self.cutter.start(dynamic.mode, dynamic.radius(self.scale))  # negative: the other side
+            if self._idle():
+                self.cutter.axes = PLANE_AXES[self.plane]
+                self._entry_start()
+            self.cutter.start(dynamic.mode, dynamic.radius(self.scale), self.plane)  # negative: the other side
         elif isinstance(cc, CutterCompensation):
             del sections["CutterCompensation"]
             block.changed()

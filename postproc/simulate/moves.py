@@ -201,10 +201,13 @@ class Moves:
                 raise UnsupportedError(f"cutter compensation '{mode}' cannot be simulated", self._at(block))
         dynamic = get("DynamicCutterCompensation")
         if dynamic is not None:
-            if cutter is None or self.modal.plane != "XY":
-                raise UnsupportedError(f"cutter compensation by a diameter in the {self.modal.plane} plane cannot be "
-                                       "simulated", self._at(block))
-            cutter.start(dynamic.mode, dynamic.radius(self.scale))  # type: ignore[attr-defined]  # D/2, negative: other side
+            if cutter is None:
+                raise UnsupportedError("cutter compensation by a diameter cannot be simulated under the rules of "
+                                       f"{self.ctx.dialect}", self._at(block))
+            try:  # D/2, negative: the other side
+                cutter.start(dynamic.mode, dynamic.radius(self.scale), self.modal.plane)  # type: ignore[attr-defined]
+            except PostprocError as err:
+                raise err.located(self._at(block)) from None
             self._begin()
         tl = get("ToolLengthOffset")
         if tl is not None and self.lathe and tl.mode in ("positive", "cancel"):  # type: ignore[attr-defined]
