@@ -16,7 +16,9 @@ than that without a move in the plane is refused rather than held in memory.
 The geometry follows LinuxCNC's interpreter (``CutterRules`` ``ARC_CORNERS``; [V] ``interp_convert.cc``
 ``convert_straight_comp1/2``, ``convert_arc_comp1/2``, ``convert_cutter_compensation_off``, and
 ``interp_queue.cc`` ``move_endpoint_and_flush``), checked move by move against ``rs274``
-(``tests/test_cutter_compensation_rs274.py``). Angles in radians, lengths in mm.
+(``tests/test_cutter_compensation_rs274.py``). The NIST version 3 rules (``NIST_V3``, Mach3's) differ in
+three places, each a rule field: the entry move (``entry="touching"``), inside corners (an error, no
+look-ahead) and a rapid around an outside corner (straight to its end). Angles in radians, lengths in mm.
 """
 
 from __future__ import annotations
@@ -100,7 +102,7 @@ class CutterRadius:
     """The compensation state of one run and its queue; ``release`` writes a segment or an event."""
 
     def __init__(self, rules: CutterRules, release: Callable[[Item], None]) -> None:
-        if (rules.entry, rules.outside_corner) != ("tangent", "arc"):
+        if rules.entry not in ("tangent", "touching") or rules.outside_corner != "arc":
             raise UnsupportedError(f"cutter compensation rules of {rules.name} cannot be simulated yet")
         self.rules = rules
         self.release = release
@@ -187,6 +189,9 @@ class CutterRadius:
     def arc(self, seg: Segment, start: Point) -> None:
         """An arc from the programmed ``start`` about ``seg.centre``."""
         if self.arc_banned:
+            if not self.rules.exit_arc_known:
+                raise UnsupportedError(f"an arc right after cutter compensation is cancelled cannot be simulated "
+                                       f"under the rules of {self.rules.name}")
             raise ProgramError("the move after cutter compensation is cancelled must be straight, not an arc")
         if not self.on:
             self.release(seg)
@@ -199,11 +204,19 @@ class CutterRadius:
     def _line_entry(self, seg: Segment, c: Point, p: Point) -> None:
         """The tool ends beside ``p``, perpendicular to the line from the start point to ``p``."""
         r = self.radius
-        if math.hypot(p[0] - c[0], p[1] - c[1]) <= r:
+        distance = math.hypot(p[0] - c[0], p[1] - c[1])
+        if distance <= r:
             raise ProgramError("the entry move of cutter compensation is not longer than the tool radius")
-        alpha = math.atan2(p[1] - c[1], p[0] - c[0]) + (HALF_PI if self.side == "left" else -HALF_PI)
+        if self.rules.entry == "touching":  # beside p, square to the line from p touching the circle about c
+            theta = math.acos(r / distance)
+            back = math.atan2(c[1] - p[1], c[0] - p[0])
+            alpha = back - theta if self.side == "left" else back + theta
+        else:
+            alpha = math.atan2(p[1] - c[1], p[0] - c[0]) + (HALF_PI if self.side == "left" else -HALF_PI)
         seg.xy = _towards(p, r, alpha)
         seg.direction = (math.cos(alpha), math.sin(alpha))
+        if self.rules.entry == "touching":  # the move's own way (its end is never moved back: no look-ahead)
+            seg.direction = (seg.xy[0] - c[0], seg.xy[1] - c[1])
         self.endpoint = c
         self._enter(seg)
 
@@ -211,6 +224,9 @@ class CutterRadius:
         """The tool ends on the arc's radius through its end; the arc it runs passes through the start
         point, about a centre on the line from the end through the programmed centre."""
         assert seg.centre is not None
+        if self.rules.entry != "tangent":
+            raise UnsupportedError(f"an entry arc of cutter compensation cannot be simulated under the rules of "
+                                   f"{self.rules.name} (start it with a straight move)")
         r, centre, turn = self.radius, seg.centre, seg.turn
         e = self.in_plane(seg.end)
         if math.hypot(e[0] - c[0], e[1] - c[1]) <= r:
@@ -260,9 +276,16 @@ class CutterRadius:
         mid = _towards(op, r, alpha + gamma)
         front = self.queue[0] if self.queue else None
         after_arc = isinstance(front, Segment) and front.turn != 0
+        meet = self.rules.inside_corner == "meet"
         concave = (beta < -small or beta > math.pi + small
-                   or (beta > math.pi - small and after_arc and (front.turn > 0) != left))  # type: ignore[union-attr]
-        if not concave and beta > small:  # outside corner: an arc about it (a rapid goes straight)
+                   or (meet and beta > math.pi - small and after_arc and (front.turn > 0) != left))  # type: ignore[union-attr]
+        if concave and not meet:
+            raise ProgramError(f"an inside corner under cutter compensation: {self.rules.name} stops there "
+                               "(concave corner with cutter radius compensation)")
+        if not concave and beta > small and seg.kind != "feed" and self.rules.rapid_corner == "direct":
+            self._move_end_and_flush(c)  # a rapid around an outside corner: one traverse to its end
+            self.endpoint = c
+        elif not concave and beta > small:  # outside corner: an arc about it (a rapid goes straight)
             self._move_end_and_flush(c)
             self.release(self._corner(seg, op, mid, arc=seg.kind == "feed"))
             self.endpoint = mid
@@ -323,7 +346,11 @@ class CutterRadius:
             gamma = math.atan2(e[1] - centre[1], e[0] - centre[0])
             delta += math.pi
         end = _towards(e, r, gamma)
-        if beta < -small or beta > math.pi + small or (abs(beta - math.pi) < small and not inside):
+        meet = self.rules.inside_corner == "meet"
+        if beta < -small or beta > math.pi + small or (meet and abs(beta - math.pi) < small and not inside):
+            if not meet:
+                raise ProgramError(f"an inside corner under cutter compensation: {self.rules.name} stops there "
+                                   "(concave corner with cutter radius compensation)")
             front = self._front()
             if front.turn == 0:
                 mid = self._line_meets_arc(centre, arc_radius, beta, theta, inside, turn)

@@ -7,7 +7,11 @@ compensated stretch is rewritten to its compensated end (an arc to its compensat
 from the compensated start), an outside corner adds its arc (a rapid's: a straight traverse) in a
 block of its own, and a block without motion keeps its place behind the move the compensation holds
 back. The compensated stretch is written in absolute positions: a block the program wrote in G91 gets
-a G90 and a G91 after it. A source whose rules are not modelled leaves its G41/G42 to the writer,
+a G90 and a G91 after it. A program that moves only by increments from where the tool stands (its
+start point unknown: an incremental thread milling program) is compensated in a frame of its own, its
+start point at zero, and its stretch written by increments (compensation moves with the path, so the
+increments are the same wherever it starts); an absolute word on such an axis within the stretch is a
+located error. A source whose rules are not modelled leaves its G41/G42 to the writer,
 which refuses them.
 
 What the simulation refuses under compensation (a canned cycle, a move in machine coordinates, a
@@ -80,11 +84,20 @@ def resolve_dynamic_cutter_compensation(blocks: Iterator[Block], ctx: Context,
                                         target: type[Dialect]) -> Iterator[Block]:
     """Lowering step: G41.1/G42.1 (compensation by a diameter) become the compensated path for every
     target but the source's own dialect (see the module docstring); a G41/G42 by register is left to the
-    target where it has cutter compensation."""
+    target where it has cutter compensation, unless its modelled rules differ from the source's."""
     rules: CutterRules | None = ctx.cutter_rules
     if ctx.dialect == target.NAME or rules is None:
         return blocks
-    return _Resolver(ctx, rules, _native if target.CUTTER_COMPENSATION else None).run(blocks)
+    keeps = _native if target.CUTTER_COMPENSATION and not _rules_differ(rules, target) else None
+    return _Resolver(ctx, rules, keeps).run(blocks)
+
+
+def _rules_differ(rules: CutterRules, target: type[Dialect]) -> bool:
+    """The target compensates by rules of its own that are modelled and not the source's (NIST version 3's
+    entry move and inside corners against LinuxCNC's): its G41/G42 would cut another path, so the source's
+    compensated path is written as moves."""
+    theirs: CutterRules | None = target.CUTTER_RULES
+    return theirs is not None and theirs != rules
 
 
 def resolve_cutter_compensation_unless(blocks: Iterator[Block], ctx: Context,
@@ -95,6 +108,18 @@ def resolve_cutter_compensation_unless(blocks: Iterator[Block], ctx: Context,
     if rules is None:
         return blocks
     return _Resolver(ctx, rules, keeps).run(blocks)
+
+
+def _noise_free(value: float | Expr) -> float | Expr:
+    """A computed coordinate rounded to 1e-9 program units: the conversions leave float noise (0.1 in as
+    2.54 mm and back is 0.10000000000000002), which a writer that keeps every digit a value needs (Mach3's)
+    would write; 1e-9 is far below any controller's resolution."""
+    return round(value, 9) if isinstance(value, float) else value
+
+
+def _full_circle(motion: Motion) -> bool:
+    """An arc with its centre and no end point (``G3 I-20``): a full turn back to where it starts."""
+    return motion.mode in ("cw", "ccw") and bool(motion.center)
 
 
 def _native(resolver: "_Resolver", cc: CutterCompensation) -> bool:
@@ -128,6 +153,12 @@ class _Resolver:
         """The programmed point, mm (None: not known since the origin moved or a reference return)."""
         self.at: tuple[float, float] = (0.0, 0.0)
         """The controlled point in the plane the last released move ends at, mm."""
+        self.at_normal = 0.0
+        """The programmed point along the plane's normal where the last released move ends, mm."""
+        self.floating: set[str] = set()
+        """Axes whose ``pos`` counts from an unknown start point (see the module docstring)."""
+        self.by_increments = False
+        """The compensated stretch is written by increments (it started with a floating axis)."""
         self.held: dict[int, tuple[Block, bool]] = {}
         """A queued move (by ``id``) -> its block, and whether it was written in G91."""
         self.out: list[Block] = []
@@ -146,6 +177,7 @@ class _Resolver:
                     for axis, value in motion.axes.items():
                         if axis in pos:
                             pos[axis] = value * scale if type(value) is float else None
+                            self.floating.discard(axis)
                 elif motion is not None or "CompoundMotion" in sections or "MachineCoordinates" in sections:
                     self._track(block)
                 if self.per_minute:
@@ -210,7 +242,7 @@ class _Resolver:
         if "CompoundMotion" in sections or "CannedCycle" in sections:
             raise ProgramError("a canned cycle with cutter compensation on cannot be run (cancel it first)")
         motion = sections.get("Motion")
-        if isinstance(motion, Motion) and motion.axes:
+        if isinstance(motion, Motion) and (motion.axes or _full_circle(motion)):
             self._move(block, motion)
         elif isinstance(motion, Motion) and motion.mode is not None and motion.mode not in MOVES:
             raise UnsupportedError(f"motion '{motion.mode}' with cutter compensation on cannot be resolved")
@@ -282,10 +314,20 @@ class _Resolver:
         return point.get(a1), point.get(a2)
 
     def _entry_start(self) -> None:
-        """Where the entry move starts: the programmed point, when known."""
+        """Where the entry move starts: the programmed point, when known; in incremental mode an unknown
+        point is the zero of a frame of its own (``floating``)."""
+        if not self._idle():
+            return
+        if not self.absolute:
+            for axis, value in self.pos.items():
+                if value is None:
+                    self.pos[axis] = 0.0
+                    self.floating.add(axis)
+        self.by_increments = bool(self.floating)
         u, v = self._in_plane(self.pos)
-        if self._idle() and u is not None and v is not None:
+        if u is not None and v is not None:
             self.at = (u, v)
+        self.at_normal = self.pos.get(self.cutter.axes[2]) or 0.0
 
     def _target(self, motion: Motion) -> dict[str, float | None]:
         target = dict(self.pos)
@@ -295,6 +337,11 @@ class _Resolver:
             if axis not in target:
                 raise UnsupportedError(f"motion of axis {axis} with cutter compensation on cannot be resolved")
             if self.absolute:
+                if axis in self.floating:
+                    if not self._idle():
+                        raise ProgramError(f"an absolute {axis} in a compensated stretch of a program that moved by "
+                                           "increments from an unknown start point")
+                    self.floating.discard(axis)
                 target[axis] = value * self.scale
             else:
                 known = target[axis]
@@ -418,9 +465,11 @@ class _Resolver:
         a1, a2, normal = self.cutter.axes
         xy = seg.xy if seg.xy is not None else (seg.end[a1], seg.end[a2])
         old = sections.get("Motion")
-        axes: dict[str, float | Expr] = {a1: xy[0] / scale, a2: xy[1] / scale}
+        by_increments = self.by_increments
+        origin = self.at if by_increments else (0.0, 0.0)
+        axes: dict[str, float | Expr] = {a1: (xy[0] - origin[0]) / scale, a2: (xy[1] - origin[1]) / scale}
         if isinstance(old, Motion) and normal in old.axes and normal in seg.end:
-            axes[normal] = seg.end[normal] / scale
+            axes[normal] = (seg.end[normal] - (self.at_normal if by_increments else 0.0)) / scale
         center: dict[str, float | Expr] | None = None
         if seg.turn != 0 and seg.ccentre is not None:
             cc = seg.ccentre
@@ -430,13 +479,18 @@ class _Resolver:
                                        "joins it to a nearly tangent move without a corner and runs it so; written as "
                                        "an arc, the target refuses it)", self.ctx.at(block))
             center = {a1: (cc[0] - self.at[0]) / scale, a2: (cc[1] - self.at[1]) / scale}
+        axes = {a: _noise_free(v) for a, v in axes.items()}
+        if center is not None:
+            center = {a: _noise_free(v) for a, v in center.items()}
         sections["Motion"] = Motion(_MOTION_MODE[seg.kind], axes, center, None)
         self.at = xy
-        if incremental:
-            sections["DistanceMode"] = DistanceMode("absolute")
+        self.at_normal = seg.end.get(normal, self.at_normal)
+        switched = incremental != by_increments  # the block's own mode is not the one it is written in
+        if switched:
+            sections["DistanceMode"] = DistanceMode("incremental" if by_increments else "absolute")
         block.changed()
         self.out.append(block)
-        if incremental:
+        if switched:
             back = Block(block.line, None, "\n")
-            back.sections = {"DistanceMode": DistanceMode("incremental")}
+            back.sections = {"DistanceMode": DistanceMode("incremental" if incremental else "absolute")}
             self.out.append(back)
