@@ -24,7 +24,6 @@ _spec.loader.exec_module(harness)
 PROGRAMS = harness.load_manifest()
 
 KNOWN_FAILURES: dict[tuple[str, str], str] = {
-    ("linuxcnc/comp.ngc", ""): "cutter compensation in the ZX plane is not simulated",
     ("linuxcnc/g10_l1_l10.ngc", ""): "G10 L1/L10 tool offsets along X and Y (and their #5401 parameters) are not "
                                      "simulated; only Z and R are (issue 26 item 3: tapping)",
 }

@@ -1,6 +1,6 @@
 """Cutter compensation resolved for grbl (``postproc.lowering.cutter_compensation``), against LinuxCNC's own
-interpreter: the seeded LinuxCNC programs of ``test_cutter_compensation_rs274`` (G41/G42 over lines and
-arcs, both sides, entry and exit moves, inside and outside corners, rapids, Z moves, coolant and dwell
+interpreter: the seeded LinuxCNC programs of ``test_cutter_compensation_rs274`` (G41/G42 in the XY and ZX
+planes, over lines and arcs, both sides, entry and exit moves, inside and outside corners, rapids, Z moves, coolant and dwell
 waiting behind a held move, G91 blocks, several radii) are translated to grbl, whose output has no G41/G42
 left; the moves grbl then runs (its program simulated plainly) must be rs274's compensated moves, within
 the output's rounding. A program rs274 refuses must fail to translate at the same block; one whose
@@ -49,7 +49,7 @@ def check(seed: int) -> str:
     p = generate(seed)
     try:
         theirs: list[dict[str, Any]] | None = rs274_path(run_rs274(p.text(p.scale), tool_table=p.tool_table()),
-                                                       len(p.blocks), p.scale, p.unit)
+                                                       len(p.blocks), p.scale, p.unit, p.plane)
         refused_at = None
     except RS274Error as err:
         theirs = None

@@ -9,6 +9,10 @@ agree within ``TOLERANCE`` move by move (arc centres and feeds too), the events 
 rs274 refuses (a gouge, an entry move too short, an arc after G40) must be refused by postproc at the
 same block.
 
+A quarter of the programs run in the ZX plane (G18): the same program with its words renamed (X Y Z I J ->
+Z X Y K I), the plane's first axis Z and its second X as LinuxCNC's ``comp_get_current`` has them, and its
+arcs' ``ARC_FEED`` read back as (Z, X) with Y along the normal.
+
 A quarter of the programs are in inches (G20: the same numbers read as inches, the radii the same
 lengths). rs274 prints 4 decimals, so it runs the program scaled by ``SCALE`` (every length word and the
 tool table; ten times more in inches): its output divided back resolves 1e-7 mm (2.5e-7 mm in inches). Every rule it checks is an angle or a ratio, so the
@@ -63,7 +67,9 @@ def _report(request: pytest.FixtureRequest) -> Iterator[None]:
 
 # -- programs ----------------------------------------------------------------------------------------
 
-LENGTH_WORDS = frozenset("XYZIJR")
+LENGTH_WORDS = frozenset("XYZIJKR")
+ZX_WORDS = {"X": "Z", "Y": "X", "Z": "Y", "I": "K", "J": "I", "G17": "G18"}
+"""A program in the XY plane renamed into the ZX plane: its first axis Z, its second X, its normal Y."""
 
 
 @dataclass
@@ -76,7 +82,10 @@ class Program:
     """Tool radii and lengths by register, mm."""
     unit: float = 1.0
     """mm per program unit (25.4 in a G20 program)."""
+    plane: str = "XY"
+    """"ZX": the words are renamed by ``ZX_WORDS`` when written."""
     pos: list[float] = field(default_factory=lambda: [0.0, 0.0, 0.0])
+    """The programmed point (first plane axis, second, normal), mm."""
     last_dir: tuple[float, float] = (1.0, 0.0)
 
     def add(self, *words: tuple[str, float | None]) -> None:
@@ -87,6 +96,8 @@ class Program:
         for n, words in enumerate(self.blocks, start=1):
             parts = [f"N{n}"]
             for letter, value in words:
+                if self.plane == "ZX":
+                    letter = ZX_WORDS.get(letter, letter)
                 if value is None:
                     parts.append(letter)
                 elif letter in LENGTH_WORDS:
@@ -217,6 +228,8 @@ def generate(seed: int) -> Program:
     p.lengths = {n: rng.choice([0, 500, 1000, 1625]) * 0.0254 for n in range(1, 7)}
     if rng.random() < 0.25:
         p.unit = MM_PER_INCH
+    if random.Random(-1 - seed).random() < 0.25:  # its own stream: the XY programs stay those of earlier runs
+        p.plane = "ZX"
     p.add(("G20" if p.unit != 1.0 else "G21", None), ("G17", None), ("G90", None), ("G40", None), ("G49", None),
           ("G94", None), ("F", 200.0))
     tool = None
@@ -270,10 +283,11 @@ def generate(seed: int) -> Program:
 _CALL = re.compile(r"^N(\d+|\.+)\s+([A-Z_]+)\((.*)\)\s*$")
 
 
-def rs274_path(calls: list[str], end: int, scale: float, unit: float) -> list[dict[str, Any]]:
+def rs274_path(calls: list[str], end: int, scale: float, unit: float, plane: str = "XY") -> list[dict[str, Any]]:
     """rs274's moves with the tool length added (controlled points), coolant and dwell, in mm (its calls
     are in program units times ``scale``); the block ``end`` (M2) is left out: what M2 resets (coolant
-    off...) is no part of the path."""
+    off...) is no part of the path. An arc's ``ARC_FEED`` gives (first, second) plane axis, then the
+    normal: (X, Y), Z in the XY plane, (Z, X), Y in the ZX plane."""
     mm = unit / scale
     out: list[dict[str, Any]] = []
     pos = (0.0, 0.0, 0.0)
@@ -305,9 +319,13 @@ def rs274_path(calls: list[str], end: int, scale: float, unit: float) -> list[di
             pos = new
         elif name == "ARC_FEED":
             e1, e2, c1, c2, rotation, e3 = nums[:6]
-            out.append({"move": "ccw" if rotation > 0 else "cw", "x": e1 * mm, "y": e2 * mm,
-                        "z": e3 * mm + dz, "cx": c1 * mm, "cy": c2 * mm, "cz": pos[2] + dz, "f": feed})
-            pos = (e1 * mm, e2 * mm, e3 * mm)
+            if plane == "ZX":
+                end_point, centre = (e2 * mm, e3 * mm, e1 * mm), (c2 * mm, pos[1], c1 * mm)
+            else:
+                end_point, centre = (e1 * mm, e2 * mm, e3 * mm), (c1 * mm, c2 * mm, pos[2])
+            out.append({"move": "ccw" if rotation > 0 else "cw", "x": end_point[0], "y": end_point[1],
+                        "z": end_point[2] + dz, "cx": centre[0], "cy": centre[1], "cz": centre[2] + dz, "f": feed})
+            pos = end_point
         elif name in ("FLOOD_ON", "FLOOD_OFF"):
             if flood != (name == "FLOOD_ON"):
                 flood = name == "FLOOD_ON"
@@ -338,7 +356,7 @@ def check(seed: int) -> None:
     p = generate(seed)
     try:
         theirs: list[dict[str, Any]] | None = rs274_path(run_rs274(p.text(p.scale), tool_table=p.tool_table()),
-                                                       len(p.blocks), p.scale, p.unit)
+                                                       len(p.blocks), p.scale, p.unit, p.plane)
         refused_at = None
     except RS274Error as err:
         theirs = None

@@ -146,10 +146,10 @@ def test_the_resolved_path_moves_as_rs274_runs_the_source(name: str, target: str
 
 @needs_rs274
 @pytest.mark.parametrize("target", ["fanuc", "grbl", "isg", "mach3"])
-def test_the_corpus_program_translates_to_the_path_rs274_cuts(target: str) -> None:
+@pytest.mark.parametrize("program", ["inside_corners_trimmed.ngc", "inside_corners_zx_trimmed.ngc"])
+def test_the_corpus_program_translates_to_the_path_rs274_cuts(program: str, target: str) -> None:
     """A computed diameter in a subprogram called three times (``G41.1 D#100``): the program is flattened,
     each call's path resolved with its own diameter."""
-    program = "inside_corners_trimmed.ngc"
     text = (CORPUS / program).read_text()
     _same(_written(_translated(text, target, program), target), _theirs(text), 0.0018)
 
@@ -191,11 +191,30 @@ def test_g93_comes_back_after_the_resolved_stretch() -> None:
         "G93 G1 X3. F10."]
 
 
-def test_compensation_by_a_diameter_outside_the_xy_plane_is_a_located_refusal() -> None:
+ZX_ENTRY = "G21 G90 G18 G0 X0 Y0 Z0\nG41.1 D2\nG1 X10 Z-1 F100\nG40 G1 X20\nM2\n"
+"""In the ZX plane the tool runs left of the path seen from +Y, the plane's points (Z, X): the entry move from
+(Z0, X0) to (Z-1, X10) has direction (-1, 10) in (Z, X), its left normal (-10, -1) / sqrt(101), so the tool
+ends 1 mm that way from (Z-1, X10): Z -1.995037, X 9.900496 (derived by hand; rs274 agrees below)."""
+
+
+def test_compensation_by_a_diameter_in_the_zx_plane_is_derived_by_hand() -> None:
+    moves = _controlled(ZX_ENTRY)
+    root = math.sqrt(101.0)
+    assert moves[0][0] == "feed" and math.dist((moves[0][3], moves[0][1]), (-1 - 10 / root, 10 - 1 / root)) < 1e-6
+
+
+@needs_rs274
+def test_compensation_by_a_diameter_in_the_zx_plane_is_rs274s() -> None:
+    _same(_controlled(ZX_ENTRY), _theirs(ZX_ENTRY))
+    _same(_written(_translated(ZX_ENTRY, "fanuc"), "fanuc"), _theirs(ZX_ENTRY))
+
+
+def test_compensation_in_the_yz_plane_is_a_located_error_as_in_linuxcnc() -> None:
+    """[V] LinuxCNC refuses cutter compensation outside XY and XZ (NCE_RADIUS_COMP_ONLY_IN_XY_OR_XZ)."""
     with pytest.raises(ErrorList) as info:
-        _translated("G21 G90 G18 G0 X0 Y0 Z0\nG41.1 D2\nG1 X10 Z-1 F100\nG40 G1 X20\nM2\n", "fanuc")
-    assert str(info.value.errors[0]).startswith("t.ngc:2:1: error: cutter compensation by a diameter in the ZX plane"), \
-        str(info.value.errors[0])
+        _translated("G21 G90 G19 G0 X0 Y0 Z0\nG41.1 D2\nG1 Y10 Z-1 F100\nG40 G1 Y20\nM2\n", "fanuc")
+    assert str(info.value.errors[0]).startswith("t.ngc:2:1: error: LinuxCNC runs cutter compensation only in the XY "
+                                                "or ZX plane, not in YZ"), str(info.value.errors[0])
 
 
 REFUSED = {

@@ -1,5 +1,11 @@
-"""Cutter radius compensation in the XY plane: the tool's centre runs one radius beside the programmed
-path, on the left (G41) or the right (G42) looking along the motion.
+"""Cutter radius compensation in the XY or ZX plane: the tool's centre runs one radius beside the
+programmed path, on the left (G41) or the right (G42) looking along the motion.
+
+A plane's points are (first axis, second axis) as ``state.PLANE_AXES`` gives them: (X, Y) for G17, (Z, X)
+for G18, so left and right are seen from the normal's positive end (+Z, +Y) [V: LinuxCNC
+``interp_convert.cc`` ``comp_get_current``: in the XZ plane x is Z and y is X; ``convert_set_plane``:
+compensation runs in XY or XZ only, and the plane cannot change while it is on]. Which planes a
+controller compensates in is its rules' ``planes``.
 
 Where a move ends depends on the move after it (an inside corner shortens it, an outside corner adds an
 arc), so the last move waits in a small queue until the next move in the plane decides its end; what
@@ -16,7 +22,9 @@ not offset.
 The geometry follows LinuxCNC's interpreter (``CutterRules`` ``ARC_CORNERS``; [V] ``interp_convert.cc``
 ``convert_straight_comp1/2``, ``convert_arc_comp1/2``, ``convert_cutter_compensation_off``, and
 ``interp_queue.cc`` ``move_endpoint_and_flush``), checked move by move against ``rs274``
-(``tests/test_cutter_compensation_rs274.py``). Angles in radians, lengths in mm.
+(``tests/test_cutter_compensation_rs274.py``). The NIST version 3 rules (``NIST_V3``, Mach3's) differ in
+three places, each a rule field: the entry move (``entry="touching"``), inside corners (an error, no
+look-ahead) and a rapid around an outside corner (straight to its end). Angles in radians, lengths in mm.
 """
 
 from __future__ import annotations
@@ -26,6 +34,7 @@ from dataclasses import dataclass, field
 from typing import Any, Callable, Union
 
 from ..errors import ProgramError, UnsupportedError
+from ..state import PLANE_AXES
 from .rules import CutterRules
 
 Point = tuple[float, float]
@@ -56,7 +65,7 @@ class Segment:
     dz: float = 0.0
     """The tool length the move is made with (added to the controlled Z)."""
     xy: Point | None = None
-    """The controlled end in the plane; None: the programmed one."""
+    """The controlled end in the plane (first, second axis); None: the programmed one."""
     centre: Point | None = None
     """An arc's programmed centre (a corner arc: the corner)."""
     ccentre: Point | None = None
@@ -99,21 +108,21 @@ class CutterRadius:
     """The compensation state of one run and its queue; ``release`` writes a segment or an event."""
 
     def __init__(self, rules: CutterRules, release: Callable[[Item], None]) -> None:
-        if (rules.entry, rules.outside_corner) != ("tangent", "arc"):
+        if rules.entry not in ("tangent", "touching") or rules.outside_corner != "arc":
             raise UnsupportedError(f"cutter compensation rules of {rules.name} cannot be simulated yet")
         self.rules = rules
         self.write = release
         self.side: str | None = None
         """"left", "right", or None (off)."""
         self.radius = 0.0
-        self.axes: tuple[str, str, str] = ("X", "Y", "Z")
-        """The plane's first and second axis and its normal (``postproc.state.PLANE_AXES``)."""
         self.tip: Point = (0.0, 0.0)
         """From the nose centre to the imaginary tool tip, mm in the plane (a lathe tool's; zero: a mill's)."""
         self.first = True
         """The next move in the plane is the entry move."""
         self.current: Point = (0.0, 0.0)
         """The controlled point in the plane (while compensating)."""
+        self.axes: tuple[str, str, str] = PLANE_AXES["XY"]
+        """The plane compensation runs in: its first and second axis, then its normal (set by ``start``)."""
         self.queue: list[Item] = []
         self.endpoint: Point | None = None
         """Where the first queued move starts (None: unknown, its end is not checked when moved)."""
@@ -130,16 +139,18 @@ class CutterRadius:
         """Compensation moves the tool (it is on with a radius above zero)."""
         return self.side is not None and self.radius > 0.0
 
-    def start(self, side: str, radius: float, axes: tuple[str, str, str] = ("X", "Y", "Z"),
-              tip: Point = (0.0, 0.0)) -> None:
-        """G41/G42 with the register's radius (a negative radius swaps the side [V][K]) in the plane of
-        ``axes``; ``tip``: the direction (signs) from the nose centre to a lathe tool's imaginary tip."""
+    def start(self, side: str, radius: float, plane: str = "XY", tip: Point = (0.0, 0.0)) -> None:
+        """G41/G42 with the register's radius (a negative radius swaps the side [V][K]) in ``plane``;
+        ``tip``: the direction (signs) from the nose centre to a lathe tool's imaginary tip."""
         if self.side is not None:
             raise ProgramError("cutter compensation is turned on while it is on (cancel it first)")
+        if plane not in self.rules.planes:
+            raise ProgramError(f"{self.rules.name} runs cutter compensation only in the "
+                               f"{' or '.join(self.rules.planes)} plane, not in {plane}")
         if radius < 0.0:
             side, radius = ("right" if side == "left" else "left"), -radius
         self.side, self.radius, self.first = side, radius, True
-        self.axes = axes
+        self.axes = PLANE_AXES[plane]
         self.tip = (tip[0] * radius, tip[1] * radius)
 
     def release(self, item: Item) -> None:
@@ -151,7 +162,8 @@ class CutterRadius:
                 item.ccentre = (item.ccentre[0] + tip[0], item.ccentre[1] + tip[1])
         self.write(item)
 
-    def _plane_point(self, end: dict[str, float]) -> Point:
+    def in_plane(self, end: dict[str, float]) -> Point:
+        """A point's coordinates in the compensation's plane."""
         a1, a2, _ = self.axes
         return end[a1], end[a2]
 
@@ -187,7 +199,7 @@ class CutterRadius:
         if not self.on:
             self.release(seg)
             return
-        p = self._plane_point(seg.end)
+        p = self.in_plane(seg.end)
         if self.first:
             self._line_entry(seg, start, p)
         else:
@@ -196,6 +208,9 @@ class CutterRadius:
     def arc(self, seg: Segment, start: Point) -> None:
         """An arc from the programmed ``start`` about ``seg.centre``."""
         if self.arc_banned:
+            if not self.rules.exit_arc_known:
+                raise UnsupportedError(f"an arc right after cutter compensation is cancelled cannot be simulated "
+                                       f"under the rules of {self.rules.name}")
             raise ProgramError("the move after cutter compensation is cancelled must be straight, not an arc")
         if not self.on:
             self.release(seg)
@@ -208,11 +223,19 @@ class CutterRadius:
     def _line_entry(self, seg: Segment, c: Point, p: Point) -> None:
         """The tool ends beside ``p``, perpendicular to the line from the start point to ``p``."""
         r = self.radius
-        if math.hypot(p[0] - c[0], p[1] - c[1]) <= r:
+        distance = math.hypot(p[0] - c[0], p[1] - c[1])
+        if distance <= r:
             raise ProgramError("the entry move of cutter compensation is not longer than the tool radius")
-        alpha = math.atan2(p[1] - c[1], p[0] - c[0]) + (HALF_PI if self.side == "left" else -HALF_PI)
+        if self.rules.entry == "touching":  # beside p, square to the line from p touching the circle about c
+            theta = math.acos(r / distance)
+            back = math.atan2(c[1] - p[1], c[0] - p[0])
+            alpha = back - theta if self.side == "left" else back + theta
+        else:
+            alpha = math.atan2(p[1] - c[1], p[0] - c[0]) + (HALF_PI if self.side == "left" else -HALF_PI)
         seg.xy = _towards(p, r, alpha)
         seg.direction = (math.cos(alpha), math.sin(alpha))
+        if self.rules.entry == "touching":  # the move's own way (its end is never moved back: no look-ahead)
+            seg.direction = (seg.xy[0] - c[0], seg.xy[1] - c[1])
         self.endpoint = c
         self._enter(seg)
 
@@ -220,8 +243,11 @@ class CutterRadius:
         """The tool ends on the arc's radius through its end; the arc it runs passes through the start
         point, about a centre on the line from the end through the programmed centre."""
         assert seg.centre is not None
+        if self.rules.entry != "tangent":
+            raise UnsupportedError(f"an entry arc of cutter compensation cannot be simulated under the rules of "
+                                   f"{self.rules.name} (start it with a straight move)")
         r, centre, turn = self.radius, seg.centre, seg.turn
-        e = self._plane_point(seg.end)
+        e = self.in_plane(seg.end)
         if math.hypot(e[0] - c[0], e[1] - c[1]) <= r:
             raise ProgramError("the entry arc of cutter compensation does not end farther than the tool "
                                "radius from its start")
@@ -279,9 +305,16 @@ class CutterRadius:
         mid = _towards(op, r, alpha + gamma)
         front = self.queue[0] if self.queue else None
         after_arc = isinstance(front, Segment) and front.turn != 0
+        meet = self.rules.inside_corner == "meet"
         concave = (beta < -small or beta > math.pi + small
-                   or (beta > math.pi - small and after_arc and (front.turn > 0) != left))  # type: ignore[union-attr]
-        if not concave and beta > small:  # outside corner: an arc about it (a rapid goes straight)
+                   or (meet and beta > math.pi - small and after_arc and (front.turn > 0) != left))  # type: ignore[union-attr]
+        if concave and not meet:
+            raise ProgramError(f"an inside corner under cutter compensation: {self.rules.name} stops there "
+                               "(concave corner with cutter radius compensation)")
+        if not concave and beta > small and seg.kind != "feed" and self.rules.rapid_corner == "direct":
+            self._move_end_and_flush(c)  # a rapid around an outside corner: one traverse to its end
+            self.endpoint = c
+        elif not concave and beta > small:  # outside corner: an arc about it (a rapid goes straight)
             self._move_end_and_flush(c)
             self.release(self._corner(seg, op, mid, arc=seg.kind == "feed"))
             self.endpoint = mid
@@ -322,7 +355,7 @@ class CutterRadius:
         assert seg.centre is not None
         r, small, left, turn = self.radius, self.rules.corner_tolerance, self.side == "left", seg.turn
         centre, c = seg.centre, self.current
-        e = self._plane_point(seg.end)
+        e = self.in_plane(seg.end)
         arc_radius = math.hypot(centre[0] - e[0], centre[1] - e[1])
         theta = math.atan2(c[1] - op[1], c[0] - op[0])
         theta = theta - HALF_PI if left else theta + HALF_PI
@@ -342,7 +375,11 @@ class CutterRadius:
             gamma = math.atan2(e[1] - centre[1], e[0] - centre[0])
             delta += math.pi
         end = _towards(e, r, gamma)
-        if beta < -small or beta > math.pi + small or (abs(beta - math.pi) < small and not inside):
+        meet = self.rules.inside_corner == "meet"
+        if beta < -small or beta > math.pi + small or (meet and abs(beta - math.pi) < small and not inside):
+            if not meet:
+                raise ProgramError(f"an inside corner under cutter compensation: {self.rules.name} stops there "
+                                   "(concave corner with cutter radius compensation)")
             front = self._front()
             if front.turn == 0:
                 mid = self._line_meets_arc(centre, arc_radius, beta, theta, inside, turn)
@@ -409,8 +446,8 @@ class CutterRadius:
     def _corner(self, seg: Segment, op: Point, mid: Point, arc: bool) -> Segment:
         """The move around an outside corner: an arc about the programmed corner (its programmed point),
         made at the height the tool stands at; a rapid goes straight to the arc's end."""
-        corner = dict(seg.end)
         a1, a2, normal = self.axes
+        corner = dict(seg.end)
         corner[a1], corner[a2] = op
         if normal in corner:
             corner[normal] = seg.normal  # the block's start height

@@ -46,6 +46,10 @@ class ToolTable:
         if not isinstance(value, (int, float)):
             return True  # no R: nothing written (an Expr never reaches the simulator)
         tool = self.tools.get(str(setting.index))
+        if tool is not None and tool.by_diameter() and "radius" in self._sharing(quantity, setting.index):
+            raise ProgramError(f"register {setting.index} is given by its diameter in the set-up (<Tool diameter>): "
+                               "whether this write's R is a diameter or a radius (Haas setting 40) is not "
+                               "confirmed [?]")
         if wear and tool is not None and tool.shared() and tool.offset_wear is None:
             wear = False  # memory A has no wear: G10 L11 writes the one value [K] (see ToolData)
         key = (quantity, setting.index)

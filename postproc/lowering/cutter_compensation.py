@@ -7,12 +7,16 @@ compensated stretch is rewritten to its compensated end (an arc to its compensat
 from the compensated start), an outside corner adds its arc (a rapid's: a straight traverse) in a
 block of its own, and a block without motion keeps its place behind the move the compensation holds
 back. The compensated stretch is written in absolute positions: a block the program wrote in G91 gets
-a G90 and a G91 after it. A source whose rules are not modelled leaves its G41/G42 to the writer,
+a G90 and a G91 after it. A program that moves only by increments from where the tool stands (its
+start point unknown: an incremental thread milling program) is compensated in a frame of its own, its
+start point at zero, and its stretch written by increments (compensation moves with the path, so the
+increments are the same wherever it starts); an absolute word on such an axis within the stretch is a
+located error. A source whose rules are not modelled leaves its G41/G42 to the writer,
 which refuses them.
 
 What the simulation refuses under compensation (a canned cycle, a move in machine coordinates, a
-reference return, a plane other than XY -- or ZX on a lathe --, a start point not known) is a located
-error here too.
+reference return, a plane the rules do not compensate in, a start point not known) is a located error here
+too. In the ZX plane (G18) the plane's points are (Z, X), as the simulation has them.
 
 On a lathe (the ZX plane) the path is the imaginary tool tip's, as the simulation writes it: the nose
 centre one nose radius beside the programmed path, moved by the radius in the tip's direction
@@ -51,6 +55,7 @@ from ..compensation.dynamic import DynamicCutterCompensation
 from ..compensation.nose import TIPS, mirrored
 from ..compensation.rules import CutterRules
 from ..compensation.tool_table import ToolTable
+from ..state import PLANE_AXES
 from .inverse_time import move_length
 
 Keeps = Callable[["_Resolver", CutterCompensation], bool]
@@ -62,8 +67,6 @@ ARC_OFF_RATIO = 0.001
 ``gcode.c`` (error 33 beyond 0.005 mm and 0.1 % of the radius). LinuxCNC joins an arc to a move within
 its corner tolerance (0.05 rad) without moving the start onto the compensated circle, so its compensated
 arc may start off the circle; such an arc is refused here rather than written one grbl rejects."""
-PLANES = {"XY": ("X", "Y", "Z"), "ZX": ("Z", "X", "Y")}
-"""The planes compensation is resolved in: first and second axis, then the normal (``state.PLANE_AXES``)."""
 MOVES = frozenset(("rapid", "linear", "cw", "ccw"))
 _SEGMENT_KIND = {"rapid": "rapid", "linear": "feed", "cw": "cw", "ccw": "ccw"}
 _MOTION_MODE = {"rapid": "rapid", "feed": "linear", "cw": "cw", "ccw": "ccw"}
@@ -93,12 +96,20 @@ def resolve_dynamic_cutter_compensation(blocks: Iterator[Block], ctx: Context,
                                         target: type[Dialect]) -> Iterator[Block]:
     """Lowering step: G41.1/G42.1 (compensation by a diameter) become the compensated path for every
     target but the source's own dialect (see the module docstring); a G41/G42 by register is left to the
-    target where it has cutter compensation."""
+    target where it has cutter compensation, unless its modelled rules differ from the source's."""
     rules: CutterRules | None = ctx.cutter_rules
     if ctx.dialect == target.NAME or rules is None:
         return blocks
-    return _Resolver(ctx, rules, _native if target.CUTTER_COMPENSATION else None,
-                     _takes_diameters(ctx, target)).run(blocks)
+    keeps = _native if target.CUTTER_COMPENSATION and not _rules_differ(rules, target) else None
+    return _Resolver(ctx, rules, keeps, _takes_diameters(ctx, target)).run(blocks)
+
+
+def _rules_differ(rules: CutterRules, target: type[Dialect]) -> bool:
+    """The target compensates by rules of its own that are modelled and not the source's (NIST version 3's
+    entry move and inside corners against LinuxCNC's): its G41/G42 would cut another path, so the source's
+    compensated path is written as moves."""
+    theirs: CutterRules | None = target.CUTTER_RULES
+    return theirs is not None and theirs != rules
 
 
 def resolve_cutter_compensation_unless(blocks: Iterator[Block], ctx: Context,
@@ -109,6 +120,18 @@ def resolve_cutter_compensation_unless(blocks: Iterator[Block], ctx: Context,
     if rules is None:
         return blocks
     return _Resolver(ctx, rules, keeps).run(blocks)
+
+
+def _noise_free(value: float | Expr) -> float | Expr:
+    """A computed coordinate rounded to 1e-9 program units: the conversions leave float noise (0.1 in as
+    2.54 mm and back is 0.10000000000000002), which a writer that keeps every digit a value needs (Mach3's)
+    would write; 1e-9 is far below any controller's resolution."""
+    return round(value, 9) if isinstance(value, float) else value
+
+
+def _full_circle(motion: Motion) -> bool:
+    """An arc with its centre and no end point (``G3 I-20``): a full turn back to where it starts."""
+    return motion.mode in ("cw", "ccw") and bool(motion.center)
 
 
 def _native(resolver: "_Resolver", cc: CutterCompensation) -> bool:
@@ -144,6 +167,12 @@ class _Resolver:
         """The programmed point, mm (None: not known since the origin moved or a reference return)."""
         self.at: tuple[float, float] = (0.0, 0.0)
         """The controlled point in the plane the last released move ends at, mm."""
+        self.at_normal = 0.0
+        """The programmed point along the plane's normal where the last released move ends, mm."""
+        self.floating: set[str] = set()
+        """Axes whose ``pos`` counts from an unknown start point (see the module docstring)."""
+        self.by_increments = False
+        """The compensated stretch is written by increments (it started with a floating axis)."""
         self.held: dict[int, tuple[Block, bool]] = {}
         """A queued move (by ``id``) -> its block, and whether it was written in G91."""
         self.out: list[Block] = []
@@ -162,6 +191,7 @@ class _Resolver:
                     for axis, value in motion.axes.items():
                         if axis in pos:
                             pos[axis] = value * scale if type(value) is float else None
+                            self.floating.discard(axis)
                 elif motion is not None or "CompoundMotion" in sections or "MachineCoordinates" in sections:
                     self._track(block)
                 if self.per_minute:
@@ -201,10 +231,12 @@ class _Resolver:
             del sections["DynamicCutterCompensation"]
             sections.pop("NativeCode", None)  # its G41.1/G42.1 D.., which the section says (inert)
             block.changed()
-            axes = self._plane_axes("cutter compensation by a diameter")
-            self._entry_start(axes)
-            tip = TIPS[mirrored(dynamic.orientation or 0)] if self.plane == "ZX" else (0, 0)
-            self.cutter.start(dynamic.mode, dynamic.radius(self.scale), axes,  # negative: the other side
+            self._lathe_check("cutter compensation by a diameter")
+            if self._idle():
+                self.cutter.axes = PLANE_AXES[self.plane]
+                self._entry_start()
+            tip = TIPS[mirrored(dynamic.orientation or 0)] if self._nose() else (0, 0)
+            self.cutter.start(dynamic.mode, dynamic.radius(self.scale), self.plane,  # negative: the other side
                               (float(tip[0]), float(tip[1])))
         elif isinstance(cc, CutterCompensation):
             del sections["CutterCompensation"]
@@ -212,11 +244,14 @@ class _Resolver:
             if cc.mode == "off":
                 self.cutter.cancel()
             else:
-                axes = self._plane_axes("cutter compensation")
-                self._entry_start(axes)
+                self._lathe_check("cutter compensation")
                 register = self._register(cc.register)
-                tip = TIPS[self.table.tip(register)] if self.plane == "ZX" else (0, 0)
-                self.cutter.start(cc.mode, self.table.radius(register), axes, (float(tip[0]), float(tip[1])))
+                radius = self.table.radius(register)
+                tip = TIPS[self.table.tip(register)] if self._nose() else (0, 0)
+                if self._idle():
+                    self.cutter.axes = PLANE_AXES[self.plane]
+                    self._entry_start()
+                self.cutter.start(cc.mode, radius, self.plane, (float(tip[0]), float(tip[1])))
         if (isinstance(dynamic, DynamicCutterCompensation) or isinstance(cc, CutterCompensation)) and not sections:
             return  # the block only turned compensation on or off: nothing is left to write
         if self._idle():
@@ -227,7 +262,7 @@ class _Resolver:
         if "CompoundMotion" in sections or "CannedCycle" in sections:
             raise ProgramError("a canned cycle with cutter compensation on cannot be run (cancel it first)")
         motion = sections.get("Motion")
-        if isinstance(motion, Motion) and motion.axes:
+        if isinstance(motion, Motion) and (motion.axes or _full_circle(motion)):
             self._move(block, motion)
         elif isinstance(motion, Motion) and motion.mode is not None and motion.mode not in MOVES:
             raise UnsupportedError(f"motion '{motion.mode}' with cutter compensation on cannot be resolved")
@@ -252,6 +287,9 @@ class _Resolver:
             self.absolute = distance.mode == "absolute"
         plane = sections.get("Plane")
         if isinstance(plane, Plane):
+            if plane.plane != self.plane and self.cutter.side is not None:
+                raise ProgramError(f"the plane cannot change to {plane.plane} while cutter compensation is on "
+                                   "(cancel it first)")
             self.plane = plane.plane
         setting = sections.get("DataSetting")
         if isinstance(setting, DataSetting):
@@ -280,21 +318,15 @@ class _Resolver:
             raise UnsupportedError("a change of the work origin with cutter compensation on cannot be resolved")
         self.pos = {axis: None for axis in self.pos}
 
-    def _plane_axes(self, what: str) -> tuple[str, str, str]:
-        """The axes of the plane compensation starts in, or why it cannot be resolved there."""
-        axes = PLANES.get(self.plane)
-        if axes is None or (self.plane == "ZX") != self.ctx.lathe:
-            raise UnsupportedError(f"{what} in the {self.plane} plane cannot be resolved")
-        if self.plane == "ZX" and self.diameters:
+    def _lathe_check(self, what: str) -> None:
+        """Tool nose compensation needs X as a radius in the written path: a lathe target programmed in
+        diameters that lacks compensation is refused."""
+        if self._nose() and self.diameters:
             raise UnsupportedError(f"{what} on a lathe cannot be resolved for a target programmed in diameters")
-        return axes
 
-    def _entry_start(self, axes: tuple[str, str, str]) -> None:
-        """Where the entry move starts: the programmed point, when no compensation is on or queued."""
-        a1, a2, _ = axes
-        first, second = self.pos.get(a1), self.pos.get(a2)
-        if self._idle() and first is not None and second is not None:
-            self.at = (first, second)
+    def _nose(self) -> bool:
+        """Compensation on a lathe, in its ZX plane: the path is the imaginary tool tip's."""
+        return self.plane == "ZX" and self.ctx.lathe
 
     def _register(self, register: int | Expr | None) -> int:
         if isinstance(register, Expr):
@@ -307,6 +339,26 @@ class _Resolver:
         return register
 
     # -- positions -----------------------------------------------------------------------------------
+    def _in_plane(self, point: dict[str, float | None]) -> tuple[float | None, float | None]:
+        a1, a2, _ = self.cutter.axes
+        return point.get(a1), point.get(a2)
+
+    def _entry_start(self) -> None:
+        """Where the entry move starts: the programmed point, when known; in incremental mode an unknown
+        point is the zero of a frame of its own (``floating``)."""
+        if not self._idle():
+            return
+        if not self.absolute:
+            for axis, value in self.pos.items():
+                if value is None:
+                    self.pos[axis] = 0.0
+                    self.floating.add(axis)
+        self.by_increments = bool(self.floating)
+        u, v = self._in_plane(self.pos)
+        if u is not None and v is not None:
+            self.at = (u, v)
+        self.at_normal = self.pos.get(self.cutter.axes[2]) or 0.0
+
     def _target(self, motion: Motion) -> dict[str, float | None]:
         target = dict(self.pos)
         for axis, value in motion.axes.items():
@@ -315,6 +367,11 @@ class _Resolver:
             if axis not in target:
                 raise UnsupportedError(f"motion of axis {axis} with cutter compensation on cannot be resolved")
             if self.absolute:
+                if axis in self.floating:
+                    if not self._idle():
+                        raise ProgramError(f"an absolute {axis} in a compensated stretch of a program that moved by "
+                                           "increments from an unknown start point")
+                    self.floating.discard(axis)
                 target[axis] = value * self.scale
             else:
                 known = target[axis]
@@ -335,10 +392,9 @@ class _Resolver:
                 self.pos = {axis: value for axis, value in self._target(motion).items()}
             except UnsupportedError:
                 self.pos = {axis: None for axis in self.pos}
-        a1, a2, _ = PLANES.get(self.plane, PLANES["XY"])
-        first, second = self.pos.get(a1), self.pos.get(a2)
-        if first is not None and second is not None:
-            self.at = (first, second)
+        u, v = self._in_plane(self.pos)
+        if u is not None and v is not None:
+            self.at = (u, v)
 
     def _move(self, block: Block, motion: Motion) -> None:
         if "MachineCoordinates" in block.sections or motion.mode in ("home", "home2"):
@@ -348,16 +404,16 @@ class _Resolver:
         if kind is None:
             raise UnsupportedError(f"motion '{motion.mode}' with cutter compensation on cannot be resolved")
         a1, a2, normal = self.cutter.axes
-        start_x, start_y = self.pos[a1], self.pos[a2]
+        start_1, start_2 = self._in_plane(self.pos)
         target = self._target(motion)
-        end_x, end_y = target[a1], target[a2]
-        if start_x is None or start_y is None or end_x is None or end_y is None:
+        end_1, end_2 = self._in_plane(target)
+        if start_1 is None or start_2 is None or end_1 is None or end_2 is None:
             raise ProgramError(f"the start point of a compensated move is not known (program {a1} and {a2} "
                                "absolutely after the origin moved)")
         end = {axis: value for axis, value in target.items() if value is not None}
         seg = Segment(kind, {"line": block.line}, end, self.pos.get(normal) or 0.0)
         seg.fields["source"] = id(seg)
-        start = (start_x, start_y)
+        start = (start_1, start_2)
         self.held[id(seg)] = (block, not self.absolute)
         if kind in ("cw", "ccw"):
             offsets = {a: v * self.scale for a, v in (motion.center or {}).items() if isinstance(v, (int, float))}
@@ -365,7 +421,7 @@ class _Resolver:
                 raise UnsupportedError("a computed arc under cutter compensation cannot be resolved")
             radius = None if motion.radius is None else motion.radius * self.scale
             try:
-                c = arc_centre(start, (end_x, end_y), (a1, a2), radius, offsets, kind == "cw")
+                c = arc_centre(start, (end_1, end_2), (a1, a2), radius, offsets, kind == "cw")
             except ArcError as err:
                 raise ProgramError(err.message) from None
             if c is None:
@@ -392,7 +448,7 @@ class _Resolver:
         if len(start) < 3 or len(end) < 3:
             raise ProgramError("the start point of a compensated inverse-time move is not known (program X, Y and "
                                "Z absolutely first)")
-        length = move_length(start, end, "XY", "linear" if kind == "feed" else kind, centre)
+        length = move_length(start, end, self.plane, "linear" if kind == "feed" else kind, centre)
         block.sections["Feed"] = Feed(feed.value * length / self.scale)
         if not self.per_minute or "FeedMode" in block.sections:  # the first of the stretch, or its own G93
             block.sections["FeedMode"] = FeedMode("per_min")
@@ -439,10 +495,11 @@ class _Resolver:
         a1, a2, normal = self.cutter.axes
         xy = seg.xy if seg.xy is not None else (seg.end[a1], seg.end[a2])
         old = sections.get("Motion")
-        point = {a1: xy[0] / scale, a2: xy[1] / scale}
+        by_increments = self.by_increments
+        origin = self.at if by_increments else (0.0, 0.0)
+        axes: dict[str, float | Expr] = {a1: (xy[0] - origin[0]) / scale, a2: (xy[1] - origin[1]) / scale}
         if isinstance(old, Motion) and normal in old.axes and normal in seg.end:
-            point[normal] = seg.end[normal] / scale
-        axes: dict[str, float | Expr] = {axis: point[axis] for axis in "XYZ" if axis in point}  # written X, Y, Z
+            axes[normal] = (seg.end[normal] - (self.at_normal if by_increments else 0.0)) / scale
         center: dict[str, float | Expr] | None = None
         if seg.turn != 0 and seg.ccentre is not None:
             cc = seg.ccentre
@@ -451,15 +508,19 @@ class _Resolver:
                 raise UnsupportedError(f"the compensated arc starts {off:.4f} mm off its circle (the source controller "
                                        "joins it to a nearly tangent move without a corner and runs it so; written as "
                                        "an arc, the target refuses it)", self.ctx.at(block))
-            offsets = {a1: (cc[0] - self.at[0]) / scale, a2: (cc[1] - self.at[1]) / scale}
-            center = {axis: offsets[axis] for axis in "XYZ" if axis in offsets}
+            center = {a1: (cc[0] - self.at[0]) / scale, a2: (cc[1] - self.at[1]) / scale}
+        axes = {a: _noise_free(axes[a]) for a in "XYZ" if a in axes}  # written X, Y, Z
+        if center is not None:
+            center = {a: _noise_free(center[a]) for a in "XYZ" if a in center}
         sections["Motion"] = Motion(_MOTION_MODE[seg.kind], axes, center, None)
         self.at = xy
-        if incremental:
-            sections["DistanceMode"] = DistanceMode("absolute")
+        self.at_normal = seg.end.get(normal, self.at_normal)
+        switched = incremental != by_increments  # the block's own mode is not the one it is written in
+        if switched:
+            sections["DistanceMode"] = DistanceMode("incremental" if by_increments else "absolute")
         block.changed()
         self.out.append(block)
-        if incremental:
+        if switched:
             back = Block(block.line, None, "\n")
-            back.sections = {"DistanceMode": DistanceMode("incremental")}
+            back.sections = {"DistanceMode": DistanceMode("incremental" if incremental else "absolute")}
             self.out.append(back)

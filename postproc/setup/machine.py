@@ -120,6 +120,11 @@ class ToolData(Entry):
     length_wear: float | None = coordinate(alias="lengthWear")
     radius_wear: float | None = coordinate(alias="radiusWear")
     """Wear added to the length and to the radius (Fanuc memory C's wear columns)."""
+    diameter: float | None = coordinate()
+    diameter_wear: float | None = coordinate(alias="diameterWear")
+    """Haas's cutter compensation columns when they hold diameters (its setting 40, Tool Offset Measure:
+    Diameter; the offsets page's DIA GEOMETRY and DIA WEAR) [K: Haas mill operator's manual]: ``D n``
+    offsets the path by half of them. Instead of ``radius``/``radiusWear``, never beside them."""
     offset: float | None = coordinate()
     offset_wear: float | None = coordinate(alias="offsetWear")
     """Fanuc memory A/B: the one value of offset n (and its wear), the length of ``H n`` and the radius of
@@ -135,9 +140,16 @@ class ToolData(Entry):
 
     def __post_init__(self) -> None:
         if self.shared() and any(v is not None for v in (self.length, self.radius, self.length_wear,
-                                                        self.radius_wear)):
+                                                        self.radius_wear, self.diameter, self.diameter_wear)):
             raise ValueError(f"tool {self.number}: offset/offsetWear (one value for H and D: Fanuc memory A/B) "
-                             "beside length/radius (separate H and D: memory C)")
+                             "beside length/radius or diameter (separate H and D: memory C)")
+        if self.by_diameter() and (self.radius is not None or self.radius_wear is not None):
+            raise ValueError(f"tool {self.number}: diameter/diameterWear (Haas's columns by diameter) beside "
+                             "radius/radiusWear: give the cutter by one of them")
+
+    def by_diameter(self) -> bool:
+        """The entry gives its cutter by diameter (Haas's setting 40 on Diameter)."""
+        return self.diameter is not None or self.diameter_wear is not None
 
     def shared(self) -> bool:
         """The entry is one value for H and D (Fanuc memory A/B)."""
@@ -145,12 +157,19 @@ class ToolData(Entry):
 
     def geometry(self, quantity: str) -> float | None:
         """The "length" or "radius" the entry gives (None: not given)."""
-        return self.offset if self.shared() else self.length if quantity == "length" else self.radius
+        if self.shared():
+            return self.offset
+        if quantity == "length":
+            return self.length
+        return self.diameter / 2.0 if self.diameter is not None else self.radius
 
     def wear(self, quantity: str) -> float:
         """The wear the entry adds to its ``quantity`` (zero when not given)."""
-        value = self.offset_wear if self.shared() else self.length_wear if quantity == "length" else self.radius_wear
-        return value or 0.0
+        if self.shared():
+            return self.offset_wear or 0.0
+        if quantity == "length":
+            return self.length_wear or 0.0
+        return (self.diameter_wear or 0.0) / 2.0 if self.by_diameter() else self.radius_wear or 0.0
 
 
 CONTAINERS: dict[str, type[Entry]] = {"Axes": AxisTravel, "WorkOffsets": WorkOffsetData, "Tools": ToolData}

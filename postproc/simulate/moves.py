@@ -193,20 +193,26 @@ class Moves:
                 cutter.cancel()
             elif mode in ("left", "right"):
                 reads = self._cutter_register(block, cc.register)  # type: ignore[attr-defined]
-                cutter.start(mode, self._cutter_radius(block, reads), PLANE_AXES[self.modal.plane],
-                             self._nose_tip(block, reads))
+                try:
+                    cutter.start(mode, self._cutter_radius(block, reads), self.modal.plane,
+                                 self._nose_tip(block, reads))
+                except PostprocError as err:
+                    raise err.located(self._at(block)) from None
                 self._begin()
             else:
                 raise UnsupportedError(f"cutter compensation '{mode}' cannot be simulated", self._at(block))
         dynamic = get("DynamicCutterCompensation")
         if dynamic is not None:
+            if cutter is None:
+                raise UnsupportedError("cutter compensation by a diameter cannot be simulated under the rules of "
+                                       f"{self.ctx.dialect}", self._at(block))
             lathe = self.modal.plane == "ZX" and self.lathe
-            if cutter is None or (self.modal.plane != "XY" and not lathe):
-                raise UnsupportedError(f"cutter compensation by a diameter in the {self.modal.plane} plane cannot be "
-                                       "simulated", self._at(block))
             tip = TIPS[mirrored(dynamic.orientation or 0)] if lathe else (0, 0)  # type: ignore[attr-defined]
-            cutter.start(dynamic.mode, dynamic.radius(self.scale), PLANE_AXES[self.modal.plane],  # type: ignore[attr-defined]
-                         (float(tip[0]), float(tip[1])))  # D/2, negative: other side
+            try:  # D/2, negative: the other side
+                cutter.start(dynamic.mode, dynamic.radius(self.scale), self.modal.plane,  # type: ignore[attr-defined]
+                             (float(tip[0]), float(tip[1])))
+            except PostprocError as err:
+                raise err.located(self._at(block)) from None
             self._begin()
         tl = get("ToolLengthOffset")
         if tl is not None and self.lathe and tl.mode in ("positive", "cancel"):  # type: ignore[attr-defined]
@@ -230,13 +236,8 @@ class Moves:
             self.unsimulated.append((line, LATHE_TOOL_OFFSET, value))
 
     def _cutter_register(self, block: Block, register: int | None) -> int:
-        """The register a G41/G42 reads: its own, or by the rules the spindle tool's (LinuxCNC); in a plane
-        compensation is not simulated in, an error before anything is read."""
-        plane = self.modal.plane
-        if plane != "XY" and not (plane == "ZX" and self.lathe):
-            raise UnsupportedError(f"cutter compensation in the {plane} plane cannot be simulated"
-                                   + ("" if self.lathe else " (tool nose radius compensation runs on a lathe)"),
-                                   self._at(block))
+        """The register a G41/G42 reads: its own, or by the rules the spindle tool's (LinuxCNC). The plane
+        is checked by ``CutterRadius.start`` (``CutterRules.planes``)."""
         if register is None:
             assert self.cutter is not None
             if self.cutter.rules.register_absent != "tool":
@@ -259,7 +260,7 @@ class Moves:
     def _nose_tip(self, block: Block, register: int) -> tuple[float, float]:
         """On a lathe (the ZX plane), the direction from the tool's nose centre to its imaginary tip, by
         the register's ``<Tool tip>`` (``postproc.compensation.nose``); a mill's tool has none."""
-        if self.modal.plane != "ZX":
+        if self.modal.plane != "ZX" or not self.lathe:
             return (0.0, 0.0)
         direction = TIPS[self.tools.tip(register)]
         return float(direction[0]), float(direction[1])
@@ -392,18 +393,21 @@ class Moves:
             if self.modal.feed_mode == "inverse_time" and self.sync is None and not self._cutter_idle():
                 self._programmed_rate(fields, kind, target, centre, plane)
         pos = self.pos
-        seg = Segment(kind, fields, target, pos.get(LENGTH_AXIS, 0.0), self.length.offset)
         cutter = self.cutter
+        a1, a2, normal = cutter.axes if cutter is not None else PLANE_AXES["XY"]
+        seg = Segment(kind, fields, target, pos.get(normal, 0.0), self.length.offset)
         if centre is not None:
             seg.centre = seg.ccentre = centre
             seg.turn = 1 if kind == "ccw" else -1
             seg.normal = pos.get(PLANE_AXES[plane or "XY"][2], 0.0)
         if not self._cutter_idle():
             assert cutter is not None
-            a1, a2, _ = cutter.axes
-            if cutter.on and (PLANE_AXES[self.modal.plane] != cutter.axes or a1 not in pos or a2 not in pos):
-                raise UnsupportedError(f"cutter compensation in the {self.modal.plane} plane cannot be simulated "
-                                       "(the plane changed while it is on, or an axis of its plane is missing)")
+            if cutter.on and PLANE_AXES[self.modal.plane] != cutter.axes:
+                raise ProgramError(f"the plane cannot change to {self.modal.plane} while cutter compensation is on "
+                                   "(cancel it first)", self._at())
+            if cutter.on and (a1 not in pos or a2 not in pos):
+                raise ProgramError(f"cutter compensation in the {self.modal.plane} plane needs axes {a1} and {a2}",
+                                   self._at())
             start = (pos.get(a1, 0.0), pos.get(a2, 0.0))
             if centre is None:
                 cutter.line(seg, start)

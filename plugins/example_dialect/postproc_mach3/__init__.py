@@ -18,6 +18,7 @@ from __future__ import annotations
 from typing import Any, Callable, ClassVar
 
 from postproc.comments import CommentSyntax
+from postproc.compensation.rules import NIST_V3
 from postproc.dialect import Dialect, Lazy, Reader
 from postproc.expr import Expr
 from postproc.hookspecs import hookimpl
@@ -140,6 +141,11 @@ class Mach3(Dialect):
     start level since it was written, and a LinuxCNC program leaving its cycles to G99 is written with G99]."""
     DWELL_UNIT = "seconds"
     """G4 P is in seconds."""
+    CUTTER_RULES = NIST_V3
+    """Cutter radius compensation as the NIST RS274/NGC version 3 interpreter runs it (its entry move, an
+    arc around each outside corner, an inside corner an error) [?: Mach3's interpreter follows that one; not
+    run on a Mach3 here]: simulated, resolved into moves for a target without compensation, and for one
+    whose rules differ (LinuxCNC)."""
 
     @classmethod
     def python_pipeline(cls, setup: MachineSetup) -> Pipeline:
