@@ -33,8 +33,8 @@ PLANE_AXES: Final = {"XY": ("X", "Y", "Z"), "ZX": ("Z", "X", "Y"), "YZ": ("Y", "
 class Frame:
     """The frame in force (lengths in mm, angles in degrees)."""
 
-    __slots__ = ("rules", "offset", "saved", "local", "rotation", "scaling", "mirror", "turns", "work", "map",
-                 "polar")
+    __slots__ = ("rules", "offset", "saved", "applied", "local", "rotation", "scaling", "mirror", "turns", "work",
+                 "map", "polar")
 
     def __init__(self, rules: str = "rs274") -> None:
         self.rules = rules
@@ -42,6 +42,9 @@ class Frame:
         """G92's offset (rs274: shared with G52; fanuc: the G92 shift of every work system)."""
         self.saved: dict[str, float] = {}
         """rs274: the offset's parameters (#5211-#5219), what G92.3 restores."""
+        self.applied = False
+        """rs274: the offset is in force (#5210: G52 and G92 set it, G92.1 and G92.2 clear it, G92.3 sets it
+        [V] ``interp_convert.cc`` ``convert_axis_offsets``)."""
         self.local: dict[str, float] = {}
         """fanuc: the G52 local offset."""
         self.rotation: tuple[str, float, float, float] | None = None
@@ -102,6 +105,7 @@ class Frame:
             store[axis] = value
         if self.rules == "rs274":
             self.saved = dict(self.offset)
+            self.applied = True
         self.compose()
 
     def set_origin(self, values: dict[str, float], p: Position, why: str) -> None:
@@ -116,6 +120,7 @@ class Frame:
             p[axis] = value
         if self.rules == "rs274":
             self.saved = dict(self.offset)
+            self.applied = True
         self.compose()
 
     def clear_origin(self, p: Position, keep_parameters: bool) -> None:
@@ -124,6 +129,7 @@ class Frame:
             here = p.get(axis)
             p[axis] = None if here is None else here + value
         self.offset = {}
+        self.applied = False
         if not keep_parameters:
             self.saved = {}
         self.compose()
@@ -134,6 +140,7 @@ class Frame:
             here = p.get(axis)
             p[axis] = None if here is None else here + self.offset.get(axis, 0.0) - self.saved.get(axis, 0.0)
         self.offset = dict(self.saved)
+        self.applied = True
         self.compose()
 
     def rotate(self, plane: str, c1: float, c2: float, degrees: float, p: Position) -> None:

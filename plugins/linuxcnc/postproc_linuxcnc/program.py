@@ -13,11 +13,13 @@
 
 from __future__ import annotations
 
-from typing import ClassVar
+from typing import Callable, ClassVar
 
+from postproc.context import Context
 from postproc.errors import ProgramError
+from postproc.frames.parameters import FrameReadings
 from postproc.interp.rules import SubprogramRules
-from postproc.interp.variables import VariablesFactory
+from postproc.interp.variables import Variables, VariablesFactory
 from postproc.syntaxes.program import ProgramSyntax
 from postproc.interp import spell_number
 from postproc.rs274.variables import NgcVariables
@@ -42,6 +44,11 @@ class LinuxcncProgramSyntax(ProgramSyntax):
                                                                   definition_runs_its_end=True)
     """rs274: M98 looks for O<n> from the call on and runs to M99; M99 in the main program is M2; a
     definition met in the flow runs its endsub."""
+
+    def variables(self, ctx: Context, increment: Callable[[], float]) -> Variables:
+        """The offset parameters (#5210-#5219, a work system's #5221..) read the run's frame, in the
+        machine's length units (``NgcVariables``)."""
+        return NgcVariables(increment, FrameReadings(ctx), ctx.setup.machine.mm())
 
     def spell_evaluated(self, letter: str, value: float) -> str:
         if letter == "D" and abs(value - round(value)) <= INTEGER_TOLERANCE:

@@ -1,0 +1,59 @@
+"""What a running program reads of its own frame: the values behind a family's frame parameters (LinuxCNC's
+``#5210``-``#5219``, a work system's offsets and rotation), as the frame evaluation has reached them.
+
+The interpreter runs ahead of the lowering by one block at most: the blocks stream, so when it evaluates a
+block, every block before it has been through ``evaluate_frames`` (``FrameRun`` in ``ctx.state.extra``).
+Where no evaluation runs (a program translated back to its own dialect keeps its frame commands for the
+machine), or where the program has not set a value itself (a work offset from the set-up's table), the
+value is known only to the machine: ``None``, which the family's table reports by name.
+
+Lengths are in mm, angles in degrees; the family's table converts them to its own units.
+"""
+
+from __future__ import annotations
+
+from ..context import Context
+from .lowering import RUN_KEY, FrameRun
+
+
+class FrameReadings:
+    """The frame values of one run (``ctx``), read where the program stands."""
+
+    __slots__ = ("ctx",)
+
+    def __init__(self, ctx: Context) -> None:
+        self.ctx = ctx
+
+    def _run(self) -> FrameRun | None:
+        run = self.ctx.state.extra.get(RUN_KEY)
+        return run if isinstance(run, FrameRun) else None
+
+    def origin_applied(self) -> bool | None:
+        """The shared G52/G92 offset (rs274 rules) is in force; None where the frame is not evaluated."""
+        run = self._run()
+        if run is None:
+            return None
+        return run.frame is not None and run.frame.rules == "rs274" and run.frame.applied
+
+    def origin_parameter(self, axis: str) -> float | None:
+        """The offset's stored value on ``axis`` (what G92.3 restores: kept by G92.2, cleared by G92.1)."""
+        run = self._run()
+        if run is None:
+            return None
+        if run.frame is None or run.frame.rules != "rs274":
+            return 0.0
+        return run.frame.saved.get(axis, 0.0)
+
+    def work_offset(self, index: int, axis: str) -> float | None:
+        """Work system ``index``'s offset on ``axis`` where the program set it (a G10 before)."""
+        run = self._run()
+        if run is None:
+            return None
+        return run.g5x.get(index, {}).get(axis)
+
+    def work_rotation(self, index: int) -> float | None:
+        """Work system ``index``'s XY rotation where the program set it (``G10 L2 R``)."""
+        run = self._run()
+        if run is None or run.frame is None or run.frame.rules != "rs274":
+            return None
+        return run.frame.turns.get(index)
