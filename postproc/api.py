@@ -25,6 +25,7 @@ from .source_map import OutputMap
 from .syntax import Pipeline
 from .context import Context
 from .frames.lowering import EVALUATE_KEY
+from .frames.parameters import frame_parameter_read
 from .transforms import ProgramOptions, ProgramTransform, program_options, transform_program
 
 
@@ -111,9 +112,16 @@ def _keep_check(src: type[Dialect], dst: type[Dialect], ctx: Context, registry: 
     construct ``dst`` cannot spell, a cycle with computed words it would have to expand...) is the
     reason to flatten instead."""
 
+    program = next((step for step in src.pipeline(ctx.setup).steps if isinstance(step, ProgramSyntax)), None)
+    frame_evaluated = dst.NAME != src.NAME or options.transform is not None
+
     def reason(body: list[Block]) -> str | None:
         if not dst.PROGRAMS:
             return f"the {dst.NAME} dialect has no variables or control flow"
+        if frame_evaluated and program is not None:
+            read = frame_parameter_read(body, program.reads_frame)
+            if read is not None:
+                return f"it reads its coordinate frame ({read}), which is evaluated into the coordinates here"
         dry = Diagnostics(ErrorLevel.RAISE, max_errors=1_000_000, warn_stream=io.StringIO())
         trial = src.context(ctx.file, ctx.setup, dry)
         trial.state = copy.deepcopy(ctx.state)

@@ -17,7 +17,7 @@ from typing import Any
 import pytest
 
 from postproc.api import translate
-from postproc.errors import ErrorList
+from postproc.errors import Diagnostics, ErrorLevel, ErrorList
 from postproc.setup.machine_setup import MachineSetup, MachineSettings
 from postproc.simulate.toolpath import toolpath_events
 from tests.support.rs274 import available, run_rs274
@@ -137,3 +137,32 @@ def test_the_generator_reads_every_kind_of_parameter() -> None:
     text = "".join(_ParameterGen(seed).program() for seed in SEEDS)
     for word in ("#5210", "#5211", "#5212", "#5213", "#5221", "#5222", "#5230"):
         assert word in text, word
+
+
+READS = "G21 G90 G0 X10 Y5\nG92 X0 Y0\n#1=#5211\nG1 X#1 F100\nM2\n"
+"""A program that computes and reads its G92 offset (#5211 = 10 mm): G1 X10 goes to work X20."""
+
+
+def _translated(text: str, target: str, transform: str | None = None) -> tuple[str, str]:
+    out, warned = io.StringIO(), io.StringIO()
+    translate(io.StringIO(text), out, file="t.ngc", source="linuxcnc", target=target, transform=transform,
+              diagnostics=Diagnostics(ErrorLevel.RAISE, warn_stream=warned))
+    return out.getvalue(), warned.getvalue()
+
+
+def test_a_program_reading_its_frame_is_flattened_where_the_frame_is_evaluated() -> None:
+    """Fanuc's #5211 is an external work offset, and the evaluated G92 sets nothing there: kept symbolically
+    the program would read another value. Flattened, it moves to X20."""
+    out, warned = _translated(READS, "fanuc")
+    assert "#" not in out and "G01 X20. F100." in out.splitlines()
+    assert "it reads its coordinate frame (#5211)" in warned
+
+
+def test_a_program_reading_its_frame_stays_symbolic_where_the_frame_stays_native() -> None:
+    out, warned = _translated(READS, "linuxcnc")
+    assert out == READS and warned == ""
+
+
+def test_a_transform_evaluates_the_frame_back_to_its_own_dialect_so_the_program_is_flattened() -> None:
+    out, warned = _translated(READS, "linuxcnc", transform="translate 1,0")
+    assert "#" not in out and "G1 X21. F100." in out.splitlines()

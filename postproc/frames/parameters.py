@@ -12,7 +12,10 @@ Lengths are in mm, angles in degrees; the family's table converts them to its ow
 
 from __future__ import annotations
 
+from typing import Callable, Iterable
+
 from ..context import Context
+from ..ir import Block
 from .lowering import RUN_KEY, FrameRun
 
 
@@ -57,3 +60,22 @@ class FrameReadings:
         if run is None or run.frame is None or run.frame.rules != "rs274":
             return None
         return run.frame.turns.get(index)
+
+
+def frame_parameter_read(blocks: Iterable[Block], reads_frame: Callable[[int], bool]) -> str | None:
+    """The first frame parameter (``reads_frame``: the reading family's numbers) that ``blocks`` read, as
+    ``#5211``; None when they read none. A program kept symbolically for a target whose frame is evaluated
+    must not read one: the target's variable of that number holds no such frame (another dialect's
+    numbering, or the frame the evaluation took out of the program), so such a program is flattened, and
+    the flattening run reads the values here. Found through each section's XML (every section has one), so
+    no construct's words are missed; a variable with a computed number is not decided here [?]."""
+    for block in blocks:
+        for section in block.sections.values():
+            for var in section.make_xml_source().iter("Var"):
+                kids = [kid for kid in var if isinstance(kid.tag, str)]
+                if len(kids) != 1 or kids[0].tag != "Num":
+                    continue
+                number = float(kids[0].get("value", "nan"))
+                if number.is_integer() and reads_frame(int(number)):
+                    return f"#{int(number)}"
+    return None

@@ -206,11 +206,16 @@ class NgcVariables:
         raise EvalError(f"#{key} is not a LinuxCNC parameter (1 to 5602)")
 
     def read(self, key: VarKey) -> Value:
-        if isinstance(key, int) and NGC_ORIGIN_APPLIED <= key < NGC_WORK_FIRST + NGC_WORK_STRIDE * NGC_WORK_SYSTEMS:
+        if isinstance(key, int) and self.reads_frame(key):
             found = self.read_frame(key)
             if found is not None:
                 return found
         return self._store(key).get(key)  # type: ignore[arg-type]
+
+    @staticmethod
+    def reads_frame(key: int) -> bool:
+        """Whether ``key`` is one of the offset parameters (#5210-#5219, a work system's #5221..#5390)."""
+        return NGC_ORIGIN_APPLIED <= key < NGC_WORK_FIRST + NGC_WORK_STRIDE * NGC_WORK_SYSTEMS
 
     def read_frame(self, key: int) -> float | None:
         """An offset parameter the run's frame knows (None: the machine's, reported by ``_store``)."""

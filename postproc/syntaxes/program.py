@@ -99,6 +99,11 @@ class ProgramSyntax(Syntax):
                               "computes cannot be run")
         return make(increment)
 
+    def reads_frame(self, key: int) -> bool:
+        """Whether variable ``key`` is one of the family's frame parameters (LinuxCNC #5211): a program that
+        reads one is flattened where its frame is evaluated (``postproc.frames.parameters``); none here."""
+        return False
+
     # -- the host protocol (postproc.interp.host.Host) -----------------------------------------
     def spell_evaluated(self, letter: str, value: float) -> str:
         if letter in self.INTEGER_ADDRESSES:

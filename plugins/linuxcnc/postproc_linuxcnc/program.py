@@ -50,6 +50,9 @@ class LinuxcncProgramSyntax(ProgramSyntax):
         machine's length units (``NgcVariables``)."""
         return NgcVariables(increment, FrameReadings(ctx), ctx.setup.machine.mm())
 
+    def reads_frame(self, key: int) -> bool:
+        return NgcVariables.reads_frame(key)
+
     def spell_evaluated(self, letter: str, value: float) -> str:
         if letter == "D" and abs(value - round(value)) <= INTEGER_TOLERANCE:
             return str(int(round(value)))
