@@ -33,8 +33,8 @@ PLANE_AXES: Final = {"XY": ("X", "Y", "Z"), "ZX": ("Z", "X", "Y"), "YZ": ("Y", "
 class Frame:
     """The frame in force (lengths in mm, angles in degrees)."""
 
-    __slots__ = ("rules", "offset", "saved", "applied", "local", "rotation", "scaling", "mirror", "turns", "work",
-                 "map", "polar")
+    __slots__ = ("rules", "offset", "saved", "applied", "local", "rotation", "last_angle", "scaling", "mirror", "turns",
+                 "work", "map", "polar")
 
     def __init__(self, rules: str = "rs274") -> None:
         self.rules = rules
@@ -49,6 +49,8 @@ class Frame:
         """fanuc: the G52 local offset."""
         self.rotation: tuple[str, float, float, float] | None = None
         """fanuc G68: (plane, first and second centre coordinate, degrees)."""
+        self.last_angle: float | None = None
+        """fanuc: the angle of the program's last G68, kept through G69 (an incremental R's reference)."""
         self.scaling: tuple[tuple[float, float, float], tuple[float, float, float]] | None = None
         """fanuc G51: (centre, factor per axis X, Y, Z)."""
         self.mirror: dict[str, float] = {}
@@ -146,6 +148,7 @@ class Frame:
     def rotate(self, plane: str, c1: float, c2: float, degrees: float, p: Position) -> None:
         """G68 (fanuc): the program position on the plane's axes is unknown until programmed again."""
         self.rotation = (plane, c1, c2, degrees)
+        self.last_angle = degrees
         self._forget(PLANE_AXES[plane][:2], p)
 
     def unrotate(self, p: Position) -> None:

@@ -315,9 +315,20 @@ class FrameEvaluator:
             raise ProgramError(f"{change.describe()} without R takes its angle from parameter 5410, not known "
                                "here: program R")
         a1, a2, _ = PLANE_AXES[plane]
+        if self.modal.distance == "incremental" and (a1 in words or a2 in words):
+            raise ProgramError(f"{change.describe()} in incremental mode is not simulated (whether its centre words "
+                               "are increments is not settled [?]): program the centre in absolute mode")
         c1 = words[a1] if a1 in words else self._here(a1, change)
         c2 = words[a2] if a2 in words else self._here(a2, change)
-        frame.rotate(plane, c1, c2, words["R"], self.p)
+        degrees = words["R"]
+        if self.ctx.setup.controller.rotation_incremental and self.modal.distance == "incremental":
+            # [V] Fanuc 0i-A connection manual, parameter 5400#0 RIN = 1: R follows G90/G91; [K] Haas setting
+            # 73: "each G68 command changes the rotation angle by the value in R"
+            if frame.last_angle is None:
+                raise ProgramError(f"{change.describe()}: an incremental angle needs a rotation before it (its "
+                                   "reference at the program's start is not settled [?]): program R absolutely")
+            degrees += frame.last_angle
+        frame.rotate(plane, c1, c2, degrees, self.p)
 
     def _here(self, axis: str, change: FrameChange) -> float:
         """The current point as a centre the command omits ([V] Fanuc 15i/16i: the tool position)."""
