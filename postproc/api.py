@@ -26,6 +26,7 @@ from .syntax import Pipeline
 from .context import Context
 from .frames.lowering import EVALUATE_KEY
 from .frames.parameters import frame_parameter_read
+from .patterns.lowering import POINT_BY_POINT_KEY
 from .transforms import ProgramOptions, ProgramTransform, program_options, transform_program
 
 
@@ -63,6 +64,7 @@ def translate(lines: Iterable[str], out: TextIO, *, file: str, source: str, targ
             ctx.run_data[RUN_CHECK] = _run_check(src, ctx)
             ctx.run_data[TARGET_OMITS_VACANT] = _omits_vacant_words(dst, setup)
             ctx.run_data[EVALUATE_KEY] = options.transform is not None
+            ctx.run_data[POINT_BY_POINT_KEY] = options.active()
 
         moved = setup.travel_limited() and options.transform is not None
         if setup.travel_limited() and not moved:
@@ -128,6 +130,7 @@ def _keep_check(src: type[Dialect], dst: type[Dialect], ctx: Context, registry: 
         trial.on_unsupported = "error"
         trial.run_data["sequences"] = Sequences(trial, src.NAME, dst, enabled=False)  # a dry run renders none
         trial.run_data[EVALUATE_KEY] = options.transform is not None
+        trial.run_data[POINT_BY_POINT_KEY] = options.active()
         trial.run_data["dry_run"] = True  # what it writes is a part of the program, read back and discarded
         steps = [step for step in src.pipeline(ctx.setup).steps if not isinstance(step, ProgramSyntax)]
         blocks = Pipeline(src.NAME, steps).run(body, trial)
