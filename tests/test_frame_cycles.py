@@ -1,7 +1,7 @@
 """Hole cycles under Fanuc scaling (issue #27): the hole positions scale as any point, a negative factor
 mirrors them; the Z moves are those of the unscaled cycle when only X and Y scale (Haas scales no Z move of a
-cycle, Fanuc never Q or d: the controllers agree there). A Z factor other than 1 and a boring cycle's shift
-are refused by name.
+cycle, Fanuc never Q or d: the controllers agree there). A Z factor other than 1 is refused by name, and so is a boring cycle's shift under any frame that turns,
+scales or mirrors (it follows the spindle's oriented stop, fixed to the machine).
 
 Expected toolpaths: the holes carried by hand (``x' = cx + f (x - cx)``), drilled by the same cycle written
 at those points without a frame.
@@ -46,7 +46,11 @@ def test_a_hole_cycle_under_scaling_drills_the_scaled_holes(scaled: str, by_hand
 @pytest.mark.parametrize("text, message", [
     ("G51 X0 Y0 Z0 P2000\nG00 Z5.\nG81 X5. Y5. Z-2. R1. F100.\nG80\nG50\n", "a canned cycle under a scaling of Z"),
     ("G51 X0 Y0 I2000 J2000\nG76 X5. Y5. Z-2. R1. Q0.5 F100.\nG80\nG50\n",
-     "a boring cycle with a shift under scaling"),
+     "a boring cycle with a shift under coordinate rotation, scaling or a mirror"),
+    ("G68 X0 Y0 R30.\nG87 X5. Y5. Z-8. R-2. Q0.5 F100.\nG80\nG69\n",
+     "a boring cycle with a shift under coordinate rotation, scaling or a mirror"),
+    ("G51.1 X0\nG76 X5. Y5. Z-2. R1. Q0.5 F100.\nG80\nG50.1 X0\n",
+     "a boring cycle with a shift under coordinate rotation, scaling or a mirror"),
 ])
 def test_what_the_controllers_scale_differently_is_refused(text: str, message: str) -> None:
     with pytest.raises(ErrorList) as info:

@@ -392,7 +392,11 @@ class FrameEvaluator:
     def cycle(self, s: dict[str, Section], compound: CompoundMotion, frame: Frame) -> None:
         """A canned cycle's moves, carried one by one; the cycle is expanded for the target."""
         if frame.scaling is not None:
-            self.scaled_cycle(s, frame.scaling[1])
+            self.scaled_cycle(frame.scaling[1])
+        if frame.linear_active() and getattr(s.get("CannedCycle"), "kind", None) in _SHIFTING:
+            raise ProgramError("a boring cycle with a shift under coordinate rotation, scaling or a mirror is not "
+                               "simulated: its shift follows the spindle's oriented stop, a machine setting (Fanuc "
+                               "parameter 5101), and whether the frame turns it is not settled [?]")
         if frame.map.mixes(2, 0) or frame.map.mixes(2, 1) or frame.map.m[8] != 1.0:
             raise ProgramError("a canned cycle under a frame that moves the drilling axis is not simulated")
         items: list[Section] = []
@@ -406,21 +410,18 @@ class FrameEvaluator:
             s["CannedCycle"] = cycle
 
     @staticmethod
-    def scaled_cycle(s: dict[str, Section], factors: tuple[float, float, float]) -> None:
+    def scaled_cycle(factors: tuple[float, float, float]) -> None:
         """A hole cycle under scaling: its hole positions scale as any point (a negative factor mirrors
         them) [K: Fanuc 0i-MF operator's manual, scaling; Haas 96-8000 manual, G51]. What else scales
         differs: Haas scales none of a cycle's Z moves (levels, depths, increments) [K: Haas 96-8000, G51],
         Fanuc scales R and Z per its axis parameters (5401 SCLx) but never Q or the retract d [K: 0i-MF],
-        and neither scales a boring shift Q [K: 0i-MF]. So a Z factor other than 1 and a shifting boring
-        cycle are refused; with X and Y scaled alone the controllers agree."""
+        and neither scales a boring shift Q [K: 0i-MF]. So a Z factor other than 1 is refused (a shifting
+        boring cycle is, under any frame that turns, scales or mirrors: ``cycle``); with X and Y scaled alone
+        the controllers agree."""
         if factors[2] != 1.0:
             raise ProgramError("a canned cycle under a scaling of Z is not simulated (which of its levels and depths "
                                "scale differs between controllers and machine parameters): scale X and Y only "
                                "(I, J) or cancel scaling first")
-        cycle = s.get("CannedCycle")
-        if getattr(cycle, "kind", None) in _SHIFTING:
-            raise ProgramError("a boring cycle with a shift under scaling is not simulated (its shift is not scaled "
-                               "[K]): cancel scaling first")
 
     def move(self, s: dict[str, Section], m: Motion, incremental: bool) -> Motion:
         """One move carried through the frame (see the module docstring)."""
@@ -583,7 +584,8 @@ _WATCHED: Final = frozenset(("Units", "Plane", "DistanceMode", "WorkOffset", "Da
 """Sections that make a block more than a move to follow, before any frame."""
 _MOVES: Final = frozenset(("rapid", "linear", "cw", "ccw"))
 _SHIFTING: Final = frozenset(("fine_bore", "back_bore"))
-"""Hole cycles that shift the tool sideways by Q (fine and back boring): the shift is not scaled [K]."""
+"""Hole cycles that shift the tool sideways by Q (fine and back boring): the shift is not scaled [K] and runs
+along the spindle's oriented stop, fixed to the machine (Fanuc parameter 5101) [K]."""
 
 
 def _computed(m: Motion) -> bool:
