@@ -120,8 +120,8 @@ def _keep_check(src: type[Dialect], dst: type[Dialect], ctx: Context, registry: 
     def reason(body: list[Block]) -> str | None:
         if not dst.PROGRAMS:
             return f"the {dst.NAME} dialect has no variables or control flow"
-        if frame_evaluated and program is not None:
-            read = frame_parameter_read(body, program.reads_frame)
+        if frame_evaluated and program is not None and program.FRAME_PARAMETERS:
+            read = frame_parameter_read(body, program.FRAME_PARAMETERS.__contains__)
             if read is not None:
                 return f"it reads its coordinate frame ({read}), which is evaluated into the coordinates here"
         dry = Diagnostics(ErrorLevel.RAISE, max_errors=1_000_000, warn_stream=io.StringIO())

@@ -76,6 +76,8 @@ G92.1 [V: ``interp_parameter_def.hh``, ``interp_convert.cc`` ``convert_axis_offs
 NGC_WORK_FIRST, NGC_WORK_STRIDE, NGC_WORK_SYSTEMS = 5221, 20, 9
 """Work system n (1 = G54 .. 9 = G59.3): X at 5221 + 20 (n - 1), then Y Z A B C U V W, R (its XY rotation,
 degrees) the tenth [V: ``interp_parameter_def.hh``]."""
+NGC_FRAME_PARAMETERS = range(NGC_ORIGIN_APPLIED, NGC_WORK_FIRST + NGC_WORK_STRIDE * NGC_WORK_SYSTEMS)
+"""Every offset parameter (#5210-#5219, #5220, each work system's #5221..#5390)."""
 
 
 class MacroBVariables:
@@ -206,16 +208,11 @@ class NgcVariables:
         raise EvalError(f"#{key} is not a LinuxCNC parameter (1 to 5602)")
 
     def read(self, key: VarKey) -> Value:
-        if isinstance(key, int) and self.reads_frame(key):
+        if isinstance(key, int) and key in NGC_FRAME_PARAMETERS:
             found = self.read_frame(key)
             if found is not None:
                 return found
         return self._store(key).get(key)  # type: ignore[arg-type]
-
-    @staticmethod
-    def reads_frame(key: int) -> bool:
-        """Whether ``key`` is one of the offset parameters (#5210-#5219, a work system's #5221..#5390)."""
-        return NGC_ORIGIN_APPLIED <= key < NGC_WORK_FIRST + NGC_WORK_STRIDE * NGC_WORK_SYSTEMS
 
     def read_frame(self, key: int) -> float | None:
         """An offset parameter the run's frame knows (None: the machine's, reported by ``_store``)."""

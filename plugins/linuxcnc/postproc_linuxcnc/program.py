@@ -22,7 +22,7 @@ from postproc.interp.rules import SubprogramRules
 from postproc.interp.variables import Variables, VariablesFactory
 from postproc.syntaxes.program import ProgramSyntax
 from postproc.interp import spell_number
-from postproc.rs274.variables import NgcVariables
+from postproc.rs274.variables import NGC_FRAME_PARAMETERS, NgcVariables
 
 INTEGER_TOLERANCE = 0.0001
 """How far from an integer rs274 still reads an integer word (``interp_read.cc``)."""
@@ -37,6 +37,7 @@ class LinuxcncProgramSyntax(ProgramSyntax):
     END_CODES: ClassVar[frozenset[tuple[str, int]]] = frozenset({("M", 2), ("M", 30)})
     MACRO_LOCALS: ClassVar[int] = 30
     VARIABLES: ClassVar[VariablesFactory] = NgcVariables
+    FRAME_PARAMETERS: ClassVar[range] = NGC_FRAME_PARAMETERS
     LIBRARY_FILES: ClassVar[tuple[str, ...]] = ("{name}.ngc",)
     PROGRAM_LABEL: ClassVar[str] = "o{raw}"
     SUBPROGRAM_RULES: ClassVar[SubprogramRules] = SubprogramRules(forward_search=True,
@@ -49,9 +50,6 @@ class LinuxcncProgramSyntax(ProgramSyntax):
         """The offset parameters (#5210-#5219, a work system's #5221..) read the run's frame, in the
         machine's length units (``NgcVariables``)."""
         return NgcVariables(increment, FrameReadings(ctx), ctx.setup.machine.mm())
-
-    def reads_frame(self, key: int) -> bool:
-        return NgcVariables.reads_frame(key)
 
     def spell_evaluated(self, letter: str, value: float) -> str:
         if letter == "D" and abs(value - round(value)) <= INTEGER_TOLERANCE:
