@@ -25,6 +25,8 @@ from .source_map import OutputMap
 from .syntax import Pipeline
 from .context import Context
 from .frames.lowering import EVALUATE_KEY
+from .frames.parameters import frame_parameter_read
+from .patterns.lowering import POINT_BY_POINT_KEY
 from .transforms import ProgramOptions, ProgramTransform, program_options, transform_program
 
 
@@ -62,6 +64,7 @@ def translate(lines: Iterable[str], out: TextIO, *, file: str, source: str, targ
             ctx.run_data[RUN_CHECK] = _run_check(src, ctx)
             ctx.run_data[TARGET_OMITS_VACANT] = _omits_vacant_words(dst, setup)
             ctx.run_data[EVALUATE_KEY] = options.transform is not None
+            ctx.run_data[POINT_BY_POINT_KEY] = options.active()
 
         moved = setup.travel_limited() and options.transform is not None
         if setup.travel_limited() and not moved:
@@ -111,15 +114,23 @@ def _keep_check(src: type[Dialect], dst: type[Dialect], ctx: Context, registry: 
     construct ``dst`` cannot spell, a cycle with computed words it would have to expand...) is the
     reason to flatten instead."""
 
+    program = next((step for step in src.pipeline(ctx.setup).steps if isinstance(step, ProgramSyntax)), None)
+    frame_evaluated = dst.NAME != src.NAME or options.transform is not None
+
     def reason(body: list[Block]) -> str | None:
         if not dst.PROGRAMS:
             return f"the {dst.NAME} dialect has no variables or control flow"
+        if frame_evaluated and program is not None and program.FRAME_PARAMETERS:
+            read = frame_parameter_read(body, program.FRAME_PARAMETERS.__contains__)
+            if read is not None:
+                return f"it reads its coordinate frame ({read}), which is evaluated into the coordinates here"
         dry = Diagnostics(ErrorLevel.RAISE, max_errors=1_000_000, warn_stream=io.StringIO())
         trial = src.context(ctx.file, ctx.setup, dry)
         trial.state = copy.deepcopy(ctx.state)
         trial.on_unsupported = "error"
         trial.run_data["sequences"] = Sequences(trial, src.NAME, dst, enabled=False)  # a dry run renders none
         trial.run_data[EVALUATE_KEY] = options.transform is not None
+        trial.run_data[POINT_BY_POINT_KEY] = options.active()
         trial.run_data["dry_run"] = True  # what it writes is a part of the program, read back and discarded
         steps = [step for step in src.pipeline(ctx.setup).steps if not isinstance(step, ProgramSyntax)]
         blocks = Pipeline(src.NAME, steps).run(body, trial)

@@ -55,12 +55,16 @@ def test_wrong_arcs_option_is_usage(cli, tmp_path, args, fragment) -> None:
     assert result.status == 2 and fragment in result.err
 
 
-def test_arcs_is_refused_for_a_batch(cli, tmp_path) -> None:
-    program = tmp_path / "a.ngc"
-    program.write_text("G0 X0\nM2\n")
-    result = cli("translate", program, program, "-o", tmp_path / "out", "--from", "linuxcnc", "--to", "grbl",
-                 "--arcs", "ijk")
-    assert result.status == 2 and "--arcs rewrites one program" in result.err
+def test_arcs_reaches_every_file_of_a_batch(cli, tmp_path) -> None:
+    """A batch rewrites each file's arcs as the single-file command does (``tests/test_batch.py`` verifies a
+    batch with --arcs lines against its sources)."""
+    for name in ("a.ngc", "b.ngc"):
+        (tmp_path / name).write_text("G0 X0 Y0\nG2 X10 Y0 R5 F100\nM2\n")
+    result = cli("translate", tmp_path / "a.ngc", tmp_path / "b.ngc", "-o", tmp_path / "out", "--from", "linuxcnc",
+                 "--to", "grbl", "--arcs", "ijk")
+    assert result.status == 0, result.err
+    for name in ("a.ngc", "b.ngc"):
+        assert "G2 X10. Y0. I5. J0. F100." in (tmp_path / "out" / name).read_text().splitlines()
 
 
 # -- geometry, by hand --------------------------------------------------------------------------------

@@ -366,3 +366,25 @@ def test_the_summary_counts_warnings_among_the_files_ok():
     ok_line = next(line for line in tally.summary(source="fanuc", target="fanuc", where="1 job", report=None)
                    .splitlines() if line.strip().startswith("ok"))
     assert ok_line.split()[1:] == ["2", "(1", "with", "warnings)"]
+
+
+@pytest.mark.parametrize("jobs", ["1", "2"])
+def test_units_transform_and_arcs_reach_every_file_and_verify(cli, tmp_path, jobs):
+    """Each output is the single-file command's with the same options, and verifies with them (the batch's
+    --verify moves each input by the transform and checks each chord against its arc)."""
+    progs = tmp_path / "progs"
+    progs.mkdir()
+    names = ["o1001_plate_drill_tap.nc", "o1002_bracket_inch.nc", "o1005_bolt_circle_macro.nc"]
+    for name in names:
+        shutil.copy(ROOT / "examples/fanuc" / name, progs / name)
+    setup = ROOT / "examples/setups/fanuc_0i_mf_vmc.xml"
+    options = ("--from", "fanuc", "--to", "linuxcnc", "--machine", setup, "--units", "inch",
+               "--transform", "rotate 30 about 5,5; translate 1,2", "--arcs", "lines:0.01")
+    out = tmp_path / "out"
+    result = cli("translate", progs, "-o", out, *options, "--verify", "--jobs", jobs, "--files-per-task", "1",
+                 "--report", tmp_path / "r.jsonl")
+    assert result.status == 0, result.err
+    for name in names:
+        assert (out / name).read_bytes() == single(cli, progs / name, *options), name
+        assert b"G20" in (out / name).read_bytes() and b"G2 " not in (out / name).read_bytes()
+    assert all(line["verify"] is not None for line in report_lines(tmp_path / "r.jsonl"))

@@ -443,12 +443,8 @@ def cmd_translate(args: argparse.Namespace) -> int:
         raise UsageError("--tolerance and --allow-ignored go with --verify")
     from .batch import is_batch
     if is_batch(args):
-        if args.units or args.transform:
-            raise UsageError("--units and --transform translate one program: not with several inputs")
         if args.program_number is not None:
             raise UsageError("--program-number numbers one program: not with several inputs")
-        if args.arcs is not None:
-            raise UsageError("--arcs rewrites one program: not with several inputs or the batch options")
         from .batch.command import run_batch
         if args.tolerance is None:
             args.tolerance = 0.001

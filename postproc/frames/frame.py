@@ -33,8 +33,8 @@ PLANE_AXES: Final = {"XY": ("X", "Y", "Z"), "ZX": ("Z", "X", "Y"), "YZ": ("Y", "
 class Frame:
     """The frame in force (lengths in mm, angles in degrees)."""
 
-    __slots__ = ("rules", "offset", "saved", "local", "rotation", "scaling", "mirror", "turns", "work", "map",
-                 "polar")
+    __slots__ = ("rules", "offset", "saved", "applied", "local", "rotation", "last_angle", "scaling", "mirror", "turns",
+                 "work", "map", "polar")
 
     def __init__(self, rules: str = "rs274") -> None:
         self.rules = rules
@@ -42,10 +42,15 @@ class Frame:
         """G92's offset (rs274: shared with G52; fanuc: the G92 shift of every work system)."""
         self.saved: dict[str, float] = {}
         """rs274: the offset's parameters (#5211-#5219), what G92.3 restores."""
+        self.applied = False
+        """rs274: the offset is in force (#5210: G52 and G92 set it, G92.1 and G92.2 clear it, G92.3 sets it
+        [V] ``interp_convert.cc`` ``convert_axis_offsets``)."""
         self.local: dict[str, float] = {}
         """fanuc: the G52 local offset."""
         self.rotation: tuple[str, float, float, float] | None = None
         """fanuc G68: (plane, first and second centre coordinate, degrees)."""
+        self.last_angle: float | None = None
+        """fanuc: the angle of the program's last G68, kept through G69 (an incremental R's reference)."""
         self.scaling: tuple[tuple[float, float, float], tuple[float, float, float]] | None = None
         """fanuc G51: (centre, factor per axis X, Y, Z)."""
         self.mirror: dict[str, float] = {}
@@ -102,6 +107,7 @@ class Frame:
             store[axis] = value
         if self.rules == "rs274":
             self.saved = dict(self.offset)
+            self.applied = True
         self.compose()
 
     def set_origin(self, values: dict[str, float], p: Position, why: str) -> None:
@@ -116,6 +122,7 @@ class Frame:
             p[axis] = value
         if self.rules == "rs274":
             self.saved = dict(self.offset)
+            self.applied = True
         self.compose()
 
     def clear_origin(self, p: Position, keep_parameters: bool) -> None:
@@ -124,6 +131,7 @@ class Frame:
             here = p.get(axis)
             p[axis] = None if here is None else here + value
         self.offset = {}
+        self.applied = False
         if not keep_parameters:
             self.saved = {}
         self.compose()
@@ -134,11 +142,13 @@ class Frame:
             here = p.get(axis)
             p[axis] = None if here is None else here + self.offset.get(axis, 0.0) - self.saved.get(axis, 0.0)
         self.offset = dict(self.saved)
+        self.applied = True
         self.compose()
 
     def rotate(self, plane: str, c1: float, c2: float, degrees: float, p: Position) -> None:
         """G68 (fanuc): the program position on the plane's axes is unknown until programmed again."""
         self.rotation = (plane, c1, c2, degrees)
+        self.last_angle = degrees
         self._forget(PLANE_AXES[plane][:2], p)
 
     def unrotate(self, p: Position) -> None:

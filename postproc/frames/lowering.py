@@ -315,9 +315,20 @@ class FrameEvaluator:
             raise ProgramError(f"{change.describe()} without R takes its angle from parameter 5410, not known "
                                "here: program R")
         a1, a2, _ = PLANE_AXES[plane]
+        if self.modal.distance == "incremental" and (a1 in words or a2 in words):
+            raise ProgramError(f"{change.describe()} in incremental mode is not simulated (whether its centre words "
+                               "are increments is not settled [?]): program the centre in absolute mode")
         c1 = words[a1] if a1 in words else self._here(a1, change)
         c2 = words[a2] if a2 in words else self._here(a2, change)
-        frame.rotate(plane, c1, c2, words["R"], self.p)
+        degrees = words["R"]
+        if self.ctx.setup.controller.rotation_incremental and self.modal.distance == "incremental":
+            # [V] Fanuc 0i-A connection manual, parameter 5400#0 RIN = 1: R follows G90/G91; [K] Haas setting
+            # 73: "each G68 command changes the rotation angle by the value in R"
+            if frame.last_angle is None:
+                raise ProgramError(f"{change.describe()}: an incremental angle needs a rotation before it (its "
+                                   "reference at the program's start is not settled [?]): program R absolutely")
+            degrees += frame.last_angle
+        frame.rotate(plane, c1, c2, degrees, self.p)
 
     def _here(self, axis: str, change: FrameChange) -> float:
         """The current point as a centre the command omits ([V] Fanuc 15i/16i: the tool position)."""
@@ -381,8 +392,11 @@ class FrameEvaluator:
     def cycle(self, s: dict[str, Section], compound: CompoundMotion, frame: Frame) -> None:
         """A canned cycle's moves, carried one by one; the cycle is expanded for the target."""
         if frame.scaling is not None:
-            raise ProgramError("a canned cycle under scaling is not simulated (which of its levels and depths scale "
-                               "is a machine parameter [?]): cancel scaling first")
+            self.scaled_cycle(frame.scaling[1])
+        if frame.linear_active() and getattr(s.get("CannedCycle"), "kind", None) in _SHIFTING:
+            raise ProgramError("a boring cycle with a shift under coordinate rotation, scaling or a mirror is not "
+                               "simulated: its shift follows the spindle's oriented stop, a machine setting (Fanuc "
+                               "parameter 5101), and whether the frame turns it is not settled [?]")
         if frame.map.mixes(2, 0) or frame.map.mixes(2, 1) or frame.map.m[8] != 1.0:
             raise ProgramError("a canned cycle under a frame that moves the drilling axis is not simulated")
         items: list[Section] = []
@@ -394,6 +408,20 @@ class FrameEvaluator:
             cycle = copy.copy(cycle)
             cycle.expand = True  # the target's native cycle would drill at the unrotated points
             s["CannedCycle"] = cycle
+
+    @staticmethod
+    def scaled_cycle(factors: tuple[float, float, float]) -> None:
+        """A hole cycle under scaling: its hole positions scale as any point (a negative factor mirrors
+        them) [K: Fanuc 0i-MF operator's manual, scaling; Haas 96-8000 manual, G51]. What else scales
+        differs: Haas scales none of a cycle's Z moves (levels, depths, increments) [K: Haas 96-8000, G51],
+        Fanuc scales R and Z per its axis parameters (5401 SCLx) but never Q or the retract d [K: 0i-MF],
+        and neither scales a boring shift Q [K: 0i-MF]. So a Z factor other than 1 is refused (a shifting
+        boring cycle is, under any frame that turns, scales or mirrors: ``cycle``); with X and Y scaled alone
+        the controllers agree."""
+        if factors[2] != 1.0:
+            raise ProgramError("a canned cycle under a scaling of Z is not simulated (which of its levels and depths "
+                               "scale differs between controllers and machine parameters): scale X and Y only "
+                               "(I, J) or cancel scaling first")
 
     def move(self, s: dict[str, Section], m: Motion, incremental: bool) -> Motion:
         """One move carried through the frame (see the module docstring)."""
@@ -555,6 +583,9 @@ _WATCHED: Final = frozenset(("Units", "Plane", "DistanceMode", "WorkOffset", "Da
                              CONTROL, "CutterCompensation", "CompoundMotion", "MachineCoordinates"))
 """Sections that make a block more than a move to follow, before any frame."""
 _MOVES: Final = frozenset(("rapid", "linear", "cw", "ccw"))
+_SHIFTING: Final = frozenset(("fine_bore", "back_bore"))
+"""Hole cycles that shift the tool sideways by Q (fine and back boring): the shift is not scaled [K] and runs
+along the spindle's oriented stop, fixed to the machine (Fanuc parameter 5101) [K]."""
 
 
 def _computed(m: Motion) -> bool:

@@ -9,7 +9,8 @@ the active cycle there (``CannedCycle``) with its share of the pattern's motion 
 ``expand_canned_cycles``, which runs next, keeps those repeats native where the target runs the cycle
 (``X.. Y..`` under the modal cycle) and writes their motion otherwise. Moves between points other than
 rapids (a feed move, an arc) cancel a cycle on every RS274-family target, so such a pattern's points
-are marked ``expand`` and written as motion, with the rest of the cycle after them.
+are marked ``expand`` and written as motion, with the rest of the cycle after them. Under ``--units`` or
+``--transform`` every pattern is written point by point (``POINT_BY_POINT_KEY``).
 """
 
 from __future__ import annotations
@@ -29,9 +30,14 @@ from .resolve import cycle_at
 from .section import HolePattern
 
 
+POINT_BY_POINT_KEY = "patterns.point_by_point"
+"""``ctx.run_data`` key: write every pattern point by point, back to a target that runs it too (a program
+transform or unit conversion carries each point's cycle exactly; a pattern's own words it does not know)."""
+
+
 def expand_hole_patterns(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
     """Lowering transform (see the module docstring)."""
-    native = target.HOLE_PATTERNS
+    native = frozenset() if ctx.run_data.get(POINT_BY_POINT_KEY) else target.HOLE_PATTERNS
     expanding = False  # the target gets the active cycle as motion (``expand_canned_cycles`` decides alike)
     for block in blocks:
         sections = block.sections

@@ -11,10 +11,13 @@ Reading or writing a variable only the machine knows is an ``EvalError`` naming 
 
 from __future__ import annotations
 
-from typing import Callable
+from typing import TYPE_CHECKING, Callable
 
 from ..expr import Arithmetic, EvalError, Vacancy, Value, VarKey
 from ..interp.variables import MACHINE_ONLY, ProgramAlarm, SystemRanges, system_variable
+
+if TYPE_CHECKING:  # an annotation only: the frames are loaded where a run evaluates them
+    from ..frames.parameters import FrameReadings
 
 ALARM = 3000
 """Custom Macro B's alarm variable: ``#3000=n (MESSAGE)`` stops the machine with alarm n and the block's
@@ -64,6 +67,17 @@ NGC_SYSTEM: SystemRanges = (
     (5001, 5602, "machine parameter"),
 )
 """LinuxCNC's numbered parameters above 5000 (the first matching range names one)."""
+
+NGC_AXES = "XYZABCUVW"
+"""The axis order of LinuxCNC's offset parameters (#5211-#5219, and a work system's first nine)."""
+NGC_ORIGIN_APPLIED = 5210
+"""1 while the G52/G92 offset is in force, else 0; #5211-#5219 hold its value, kept by G92.2 and cleared by
+G92.1 [V: ``interp_parameter_def.hh``, ``interp_convert.cc`` ``convert_axis_offsets``]."""
+NGC_WORK_FIRST, NGC_WORK_STRIDE, NGC_WORK_SYSTEMS = 5221, 20, 9
+"""Work system n (1 = G54 .. 9 = G59.3): X at 5221 + 20 (n - 1), then Y Z A B C U V W, R (its XY rotation,
+degrees) the tenth [V: ``interp_parameter_def.hh``]."""
+NGC_FRAME_PARAMETERS = range(NGC_ORIGIN_APPLIED, NGC_WORK_FIRST + NGC_WORK_STRIDE * NGC_WORK_SYSTEMS)
+"""Every offset parameter (#5210-#5219, #5220, each work system's #5221..#5390)."""
 
 
 class MacroBVariables:
@@ -146,13 +160,22 @@ class MacroBVariables:
 
 
 class NgcVariables:
-    """LinuxCNC parameters (vacancy: LinuxCNC, an unset number reads 0, an unset name is an error)."""
+    """LinuxCNC parameters (vacancy: LinuxCNC, an unset number reads 0, an unset name is an error).
 
-    __slots__ = ("numbered", "named", "globals_", "_increment")
+    ``frames``: the run's frame, which the offset parameters read (``read_frame``); without it they are
+    known only to the machine."""
+
+    __slots__ = ("numbered", "named", "globals_", "_increment", "frames", "machine_mm")
     LOCALS = 30
     LAST_GLOBAL = 5000
 
-    def __init__(self, increment: Callable[[], float]) -> None:
+    def __init__(self, increment: Callable[[], float], frames: FrameReadings | None = None,
+                 machine_mm: float = 1.0) -> None:
+        self.frames = frames
+        self.machine_mm = machine_mm
+        """mm per machine length unit: the offset parameters are stored in the machine's units, whatever
+        the program's (``PROGRAM_TO_USER_LEN`` [V: ``units.h``, ``interp_convert.cc``]; a standalone rs274
+        without an INI file stores inches)."""
         self.numbered: list[dict[int, float]] = [{}]
         self.named: list[dict[str, float]] = [{}]
         self.globals_: dict[VarKey, float] = {"_value": 0.0, "_value_returned": 0.0}
@@ -185,7 +208,37 @@ class NgcVariables:
         raise EvalError(f"#{key} is not a LinuxCNC parameter (1 to 5602)")
 
     def read(self, key: VarKey) -> Value:
+        if isinstance(key, int) and key in NGC_FRAME_PARAMETERS:
+            found = self.read_frame(key)
+            if found is not None:
+                return found
         return self._store(key).get(key)  # type: ignore[arg-type]
+
+    def read_frame(self, key: int) -> float | None:
+        """An offset parameter the run's frame knows (None: the machine's, reported by ``_store``)."""
+        frames = self.frames
+        if frames is None:
+            return None
+        if key == NGC_ORIGIN_APPLIED:
+            applied = frames.origin_applied()
+            return None if applied is None else float(applied)
+        if key < NGC_WORK_FIRST - 1:
+            axis = NGC_AXES[key - NGC_ORIGIN_APPLIED - 1]
+            return self._in_machine_units(axis, frames.origin_parameter(axis))
+        if key < NGC_WORK_FIRST:
+            return None  # #5220, the active work system: the reading state's, not the frame's [?: not read here]
+        system, item = divmod(key - NGC_WORK_FIRST, NGC_WORK_STRIDE)
+        if item < len(NGC_AXES):
+            axis = NGC_AXES[item]
+            return self._in_machine_units(axis, frames.work_offset(system + 1, axis))
+        if item == len(NGC_AXES):
+            return frames.work_rotation(system + 1)
+        return None
+
+    def _in_machine_units(self, axis: str, mm: float | None) -> float | None:
+        if mm is None or axis in "ABC":
+            return mm
+        return mm / self.machine_mm
 
     def exists(self, key: VarKey) -> bool:
         """EXISTS[#<name>]: the name has a value; a numbered parameter always exists (rs274, src)."""

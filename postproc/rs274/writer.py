@@ -34,7 +34,7 @@ from .word_numbers import _position
 SECTION_ORDER = (
     "BlockDelete", "Sequence", "Assign", "Control", "MachineCoordinates", "PathControl", "Plane", "Units", "DistanceMode",
     "DataSetting", "WorkOffset", "FeedMode", "SpindleMode", "CutterCompensation", "ToolLengthOffset", "ReturnLevel",
-    "CycleCancel", "Dwell", "CoordinateSet", "FrameChange", "Motion", "CannedCycle", "HolePattern", "LatheCycle", "Feed", "SpindleClamp",
+    "CycleCancel", "Dwell", "CoordinateSet", "FrameChange", "Motion", "RigidTap", "CannedCycle", "HolePattern", "LatheCycle", "Feed", "SpindleClamp",
     "SpindleSpeed", "ToolSelect", "ToolChange", "SpindleControl", "SpindleOrientation", "Coolant", "MachineFunction",
     "ProgramControl", "NativeCode", "Comments",
 )

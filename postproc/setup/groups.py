@@ -268,6 +268,10 @@ class ControllerSettings(SetupGroup):
     spindle_sync: bool | None = None
     """The controller's spindle reports its position, so feed per revolution runs (grblHAL: a spindle with
     an encoder). None: as the dialect says."""
+    rotation_incremental: bool = False
+    """A coordinate rotation's angle R follows G90/G91: under G91 it is added to the angle of the program's
+    previous rotation (Fanuc parameter 5400#0 RIN = 1 [V: 0i-A connection manual B-63503EN, 5400];
+    Haas setting 73 "G68 incremental R" [K: Haas mill operator's manual, G68]). False: R is absolute."""
 
     def dwell_seconds_rule(self) -> bool:
         return self.variant == "haas" if self.dwell_seconds is None else self.dwell_seconds

@@ -69,6 +69,9 @@ class ProgramSyntax(Syntax):
     """Words that end the program (nothing after them runs), e.g. ``("M", 30)``."""
     MACRO_LOCALS: ClassVar[int] = 0
     """Highest local variable a call argument may set (0: calls pass no numbered arguments)."""
+    FRAME_PARAMETERS: ClassVar[range] = range(0)
+    """The numbers of the family's frame parameters (LinuxCNC #5210-#5390): a program that reads one is
+    flattened where its frame is evaluated (``postproc.frames.parameters``); none here."""
     VARIABLES: ClassVar[VariablesFactory | None] = None
     """The variable model (and vacancy rules) of the dialect's family, e.g. ``postproc.rs274.variables``'
     ``MacroBVariables``; None: the dialect runs no program that computes (one is a located error)."""

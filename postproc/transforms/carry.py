@@ -14,6 +14,9 @@ A hole cycle the target runs stays a cycle: its hole position is carried like a 
 bottom) by the drilling axis's own scale and shift (an increment by the scale alone), a peck depth by the
 scale; a map that tilts the drilling axis, turns it over or turns a shifting cycle's shift is refused.
 
+A rigid tap's end point is carried like a point where the map keeps Z as it is (the tap runs along Z with
+its own pitch); otherwise it is refused.
+
 What cannot be carried exactly is a located error: the program's frame commands kept as written, a work
 system rotation, a reference return or a machine-coordinate move on an axis the map changes, a rotary or
 parallel axis under a map that is more than a translation, a computed word.
@@ -36,6 +39,7 @@ from ..frames.frame import PLANE_AXES
 from ..frames.section import FrameChange
 from ..ir import Block, CompoundMotion, CutterCompensation, DataSetting, Motion, Section
 from ..state import MM_PER_INCH, ModalState
+from ..synchronised_tap import RigidTap
 from .spec import ProgramTransform
 from .words import COMPUTED, COMPUTES, INERT, SYMBOLIC, cycle_roles, named
 
@@ -121,8 +125,10 @@ class ProgramMover:
             else:
                 s["CompoundMotion"] = CompoundMotion(compound.term, items)
             changed = True
-        if "RigidTap" in s:
-            raise ProgramError(f"a rigid tap cannot be {WHAT} (its axes are not carried)")
+        tap = s.get("RigidTap")
+        if isinstance(tap, RigidTap):
+            s["RigidTap"] = self.tap(tap, self.modal.distance == "incremental")
+            changed = True
         if changed:
             block.changed()
 
@@ -130,6 +136,8 @@ class ProgramMover:
     def item(self, item: Section) -> Section:
         if isinstance(item, Motion) and item.mode is not None:
             return self.move(item, False, False)
+        if isinstance(item, RigidTap):
+            return self.tap(item, False)
         if type(item).__name__ not in INERT and type(item).__name__ not in _OWN:
             raise ProgramError(f"{type(item).__name__} in the expanded motion cannot be {WHAT}")
         return item
@@ -175,6 +183,20 @@ class ProgramMover:
         if m.mode in ("cw", "ccw"):
             return self.arc(_centred(m, start, p, self.modal.plane, scale), out)
         return Motion(m.mode, out)
+
+    def tap(self, tap: RigidTap, incremental: bool) -> RigidTap:
+        """A rigid tap's end point carried like a move's; the tool comes back to where it stood, so the
+        position stays. Only under a map that moves the part rigidly about Z (a translation, a rotation
+        about Z, a mirror of X or Y: nothing scaled, Z neither turned over nor mixed with X or Y): the tap
+        then runs the same length in the same sense, and its pitch (the tap's thread) is the same."""
+        found = self.map.arc_factor(PLANE_AXES["XY"])
+        if not _untouched_direction(self.map, INDEX["Z"]) or found is None or abs(found[0] - 1.0) > 1e-12:
+            raise ProgramError(f"a rigid tap cannot be {WHAT} by a map that scales, or turns over or tilts Z (the "
+                               "tap's pitch and direction are the tool's)")
+        here = dict(self.p)
+        carried = self.move(Motion("linear", tap.axes), incremental, False)
+        self.p = here
+        return RigidTap(carried.axes, tap.pitch, tap.dwell, tap.speedup)
 
     def arc(self, m: Motion, out: dict[str, float | Expr]) -> Motion:
         plane = PLANE_AXES[self.modal.plane]
@@ -315,6 +337,12 @@ def _ordered(words: dict[str, float | int]) -> list[str]:
 def _mirrors(fmap: Affine) -> bool:
     m = fmap.m
     return m[0] * m[4] - m[1] * m[3] < 0.0
+
+
+def _untouched_direction(fmap: Affine, i: int) -> bool:
+    """The map keeps axis ``i``'s direction and scale and mixes it into no other (a shift along it is
+    allowed)."""
+    return fmap.m[4 * i] == 1.0 and not any(fmap.mixes(i, j) or fmap.mixes(j, i) for j in range(3) if j != i)
 
 
 def _untouched(fmap: Affine, i: int) -> bool:

@@ -10,10 +10,14 @@ M2/M30, integer words within 0.0001) with LinuxCNC's lookup, subprogram rules an
 
 from __future__ import annotations
 
-from typing import ClassVar
+from typing import Callable, ClassVar
 
+from postproc.context import Context
+from postproc.frames.parameters import FrameReadings
 from postproc.interp.rules import SubprogramRules
+from postproc.interp.variables import Variables
 from postproc.rs274.ngc_program import INTEGER_TOLERANCE, NgcProgramSyntax
+from postproc.rs274.variables import NGC_FRAME_PARAMETERS, NgcVariables
 
 
 class LinuxcncProgramSyntax(NgcProgramSyntax):
@@ -21,12 +25,18 @@ class LinuxcncProgramSyntax(NgcProgramSyntax):
 
     XNAME = "LinuxcncProgramSyntax"
     __slots__ = ()
+    FRAME_PARAMETERS: ClassVar[range] = NGC_FRAME_PARAMETERS
     LIBRARY_FILES: ClassVar[tuple[str, ...]] = ("{name}.ngc",)
     SUBPROGRAM_RULES: ClassVar[SubprogramRules] = SubprogramRules(forward_search=True,
                                                                   main_return_words=(("M", "2"),),
                                                                   definition_runs_its_end=True)
     """rs274: M98 looks for O<n> from the call on and runs to M99; M99 in the main program is M2; a
     definition met in the flow runs its endsub."""
+
+    def variables(self, ctx: Context, increment: Callable[[], float]) -> Variables:
+        """The offset parameters (#5210-#5219, a work system's #5221..) read the run's frame, in the
+        machine's length units (``NgcVariables``)."""
+        return NgcVariables(increment, FrameReadings(ctx), ctx.setup.machine.mm())
 
     def spell_evaluated(self, letter: str, value: float) -> str:
         if letter == "D" and abs(value - round(value)) <= INTEGER_TOLERANCE:

@@ -15,6 +15,7 @@ import uuid
 from typing import Generator
 
 from ...errors import UsageError
+from ...lowering.arcs import ArcOption
 from ...plugins import default_registry
 from ...setup.machine_setup import check_named_file, load_setup
 from .cluster import run_cluster
@@ -110,7 +111,16 @@ def _options(args: argparse.Namespace, renumber: tuple[int, int | None] | None) 
     return Options(source=args.source, target=args.target, machine=machine,
                    lib=tuple(os.path.abspath(folder) for folder in args.lib), on_unsupported=args.on_unsupported,
                    normalize=args.normalize, renumber=renumber, verify=args.verify, tolerance=args.tolerance,
-                   allow_ignored=args.allow_ignored, defines=tuple(parse_defines(args.define).items()))
+                   allow_ignored=args.allow_ignored, defines=tuple(parse_defines(args.define).items()),
+                   units=args.units, transform=args.transform.text if args.transform is not None else None,
+                   arcs=_arc_text(args.arcs))
+
+
+def _arc_text(arcs: ArcOption | None) -> str | None:
+    """``--arcs`` back as text (what a worker parses again)."""
+    if arcs is None:
+        return None
+    return f"{arcs.form}:{arcs.tolerance!r}" if arcs.form == "lines" else arcs.form
 
 
 def _sweep(folders: set[str], run_id: str) -> None:

@@ -19,6 +19,7 @@ from typing import Any, Sequence
 
 from ... import api
 from ...errors import Diagnostics, ErrorList, PostprocError, UsageError
+from ...lowering.arcs import ArcOption, parse_arc_option
 from ...output.outfile import BUFFER, ENCODING
 from ...plugins import default_registry
 from ...setup.machine_setup import MachineSetup, load_setup
@@ -47,6 +48,12 @@ class Options:
     allow_ignored: bool = False
     defines: tuple[tuple[str, str], ...] = ()
     """``--define NAME=VALUE`` for the set-up's templates, as (name, value) pairs."""
+    units: str | None = None
+    """``--units``: every file converted to mm or inch."""
+    transform: str | None = None
+    """``--transform`` as written (parsed again by each worker: plain text travels)."""
+    arcs: str | None = None
+    """``--arcs`` as written (``lines:0.01``, ``ijk``, ``r``)."""
 
 
 @dataclass(slots=True)
@@ -125,7 +132,8 @@ def _translate(job: Job, options: Options, run_id: str, result: FileResult) -> N
             with src, os.fdopen(fd, "w", buffering=BUFFER, **ENCODING) as out:  # type: ignore[call-overload]
                 api.translate(src, out, file=job.name, source=options.source, target=options.target,
                               setup=setup, on_unsupported=options.on_unsupported, diagnostics=diagnostics,
-                              defines=dict(options.defines))
+                              defines=dict(options.defines), units=options.units, transform=options.transform,
+                              arcs=_arcs(options))
         finally:
             result.warnings.extend(str(w) for w in diagnostics.warnings)
         if options.verify and not _verified(job, tmp, options, result):
@@ -140,16 +148,24 @@ def _translate(job: Job, options: Options, run_id: str, result: FileResult) -> N
 def _verified(job: Job, tmp: str, options: Options, result: FileResult) -> bool:
     """Verify the finished temporary output against the input; a failure is the file's result."""
     from ...simulate.verify import verify_lines
+    from ...transforms.spec import parse_transform
+    arcs = _arcs(options)
     with open(job.path, "r", **ENCODING) as a, open(tmp, "r", **ENCODING) as b:  # type: ignore[call-overload]
         report = verify_lines(a, b, file_in=job.name, file_out=job.output_name, source=options.source,
                               target=options.target, setup=_setup(options), tolerance=options.tolerance,
-                              allow_ignored=options.allow_ignored)
+                              allow_ignored=options.allow_ignored,
+                              transform=parse_transform(options.transform) if options.transform else None,
+                              chord_tolerance=arcs.tolerance if arcs is not None and arcs.form == "lines" else None)
     result.max_deviation = report.max_deviation
     result.verify = report.summary()
     if not report.ok:
         _failed(result, "verify", EXIT_ERRORS,
                 [f"postproc: {job.name}: verification failed, not written: {report.summary().splitlines()[0]}"])
     return report.ok
+
+
+def _arcs(options: Options) -> ArcOption | None:
+    return parse_arc_option(options.arcs) if options.arcs else None
 
 
 @functools.lru_cache(maxsize=4)

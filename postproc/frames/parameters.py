@@ -1,0 +1,81 @@
+"""What a running program reads of its own frame: the values behind a family's frame parameters (LinuxCNC's
+``#5210``-``#5219``, a work system's offsets and rotation), as the frame evaluation has reached them.
+
+The interpreter runs ahead of the lowering by one block at most: the blocks stream, so when it evaluates a
+block, every block before it has been through ``evaluate_frames`` (``FrameRun`` in ``ctx.state.extra``).
+Where no evaluation runs (a program translated back to its own dialect keeps its frame commands for the
+machine), or where the program has not set a value itself (a work offset from the set-up's table), the
+value is known only to the machine: ``None``, which the family's table reports by name.
+
+Lengths are in mm, angles in degrees; the family's table converts them to its own units.
+"""
+
+from __future__ import annotations
+
+from typing import Callable, Iterable
+
+from ..context import Context
+from ..ir import Block
+from .lowering import RUN_KEY, FrameRun
+
+
+class FrameReadings:
+    """The frame values of one run (``ctx``), read where the program stands."""
+
+    __slots__ = ("ctx",)
+
+    def __init__(self, ctx: Context) -> None:
+        self.ctx = ctx
+
+    def _run(self) -> FrameRun | None:
+        run = self.ctx.state.extra.get(RUN_KEY)
+        return run if isinstance(run, FrameRun) else None
+
+    def origin_applied(self) -> bool | None:
+        """The shared G52/G92 offset (rs274 rules) is in force; None where the frame is not evaluated."""
+        run = self._run()
+        if run is None:
+            return None
+        return run.frame is not None and run.frame.rules == "rs274" and run.frame.applied
+
+    def origin_parameter(self, axis: str) -> float | None:
+        """The offset's stored value on ``axis`` (what G92.3 restores: kept by G92.2, cleared by G92.1)."""
+        run = self._run()
+        if run is None:
+            return None
+        if run.frame is None or run.frame.rules != "rs274":
+            return 0.0
+        return run.frame.saved.get(axis, 0.0)
+
+    def work_offset(self, index: int, axis: str) -> float | None:
+        """Work system ``index``'s offset on ``axis`` where the program set it (a G10 before)."""
+        run = self._run()
+        if run is None:
+            return None
+        return run.g5x.get(index, {}).get(axis)
+
+    def work_rotation(self, index: int) -> float | None:
+        """Work system ``index``'s XY rotation where the program set it (``G10 L2 R``)."""
+        run = self._run()
+        if run is None or run.frame is None or run.frame.rules != "rs274":
+            return None
+        return run.frame.turns.get(index)
+
+
+def frame_parameter_read(blocks: Iterable[Block], reads_frame: Callable[[int], bool]) -> str | None:
+    """The first frame parameter (``reads_frame``: the reading family's numbers) that ``blocks`` read, as
+    ``#5211``; None when they read none. A program kept symbolically for a target whose frame is evaluated
+    must not read one: the target's variable of that number holds no such frame (another dialect's
+    numbering, or the frame the evaluation took out of the program), so such a program is flattened, and
+    the flattening run reads the values here. Found through each section's XML (every section has one), so
+    no construct's words are missed; a variable with a computed number is not decided here [?]."""
+    for block in blocks:
+        for section in block.sections.values():
+            for var in section.make_xml_source().iter("Var"):
+                kids = [kid for kid in var if isinstance(kid.tag, str)]
+                if len(kids) != 1 or kids[0].tag != "Num":
+                    continue
+                number = float(kids[0].get("value", "nan"))
+                if number.is_integer() and reads_frame(int(number)):
+                    return f"#{int(number)}"
+    return None
