@@ -319,6 +319,9 @@ def test_a_call_in_a_block_that_moves_moves_first_and_l0_calls_nothing() -> None
 
 
 def test_a_call_under_block_delete_is_not_split_from_its_block() -> None:
+    """Not written as a sub (the '/' would leave its block), and not flattened either: the flattened moves
+    would run whatever the operator's switch says (``tests/test_flattened_block_delete.py``)."""
     program = "O1\nG21 G90 G0 X0 Y0 Z5.\n/M98 P100\nM30\nO100\nG91 G1 X1. F100.\nG90\nM99\n"
-    text, warnings = _fanuc_to("grblhal", program)
-    assert "o100" not in text and "under block delete" in warnings[0]
+    with pytest.raises(ErrorList) as caught:
+        _fanuc_to("grblhal", program)
+    assert [str(err).split(" error: ")[0] for err in caught.value.errors] == ["t.nc:3:1:"]
