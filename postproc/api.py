@@ -26,6 +26,7 @@ from .syntax import Pipeline
 from .context import Context
 from .frames.lowering import EVALUATE_KEY
 from .frames.parameters import frame_parameter_read
+from .interp.numbers import foreign_number
 from .patterns.lowering import POINT_BY_POINT_KEY
 from .transforms import ProgramOptions, ProgramTransform, program_options, transform_program
 
@@ -116,6 +117,8 @@ def _keep_check(src: type[Dialect], dst: type[Dialect], ctx: Context, registry: 
 
     program = next((step for step in src.pipeline(ctx.setup).steps if isinstance(step, ProgramSyntax)), None)
     frame_evaluated = dst.NAME != src.NAME or options.transform is not None
+    theirs = None if dst.NAME == src.NAME else next(
+        (step for step in dst.pipeline(ctx.setup).steps if isinstance(step, ProgramSyntax)), None)
 
     def reason(body: list[Block]) -> str | None:
         if not dst.PROGRAMS:
@@ -124,6 +127,11 @@ def _keep_check(src: type[Dialect], dst: type[Dialect], ctx: Context, registry: 
             read = frame_parameter_read(body, program.FRAME_PARAMETERS.__contains__)
             if read is not None:
                 return f"it reads its coordinate frame ({read}), which is evaluated into the coordinates here"
+        if program is not None and theirs is not None and program.VARIABLES is not None \
+                and theirs.VARIABLES is not None:
+            foreign = foreign_number(body, program.VARIABLES, theirs.VARIABLES, (src.NAME, dst.NAME))
+            if foreign is not None:
+                return foreign
         dry = Diagnostics(ErrorLevel.RAISE, max_errors=1_000_000, warn_stream=io.StringIO())
         trial = src.context(ctx.file, ctx.setup, dry)
         trial.state = copy.deepcopy(ctx.state)

@@ -15,6 +15,7 @@ from __future__ import annotations
 from typing import Callable, Iterable
 
 from ..context import Context
+from ..interp.numbers import COMPUTED, numbered_variables
 from ..ir import Block
 from .lowering import RUN_KEY, FrameRun
 
@@ -69,13 +70,7 @@ def frame_parameter_read(blocks: Iterable[Block], reads_frame: Callable[[int], b
     numbering, or the frame the evaluation took out of the program), so such a program is flattened, and
     the flattening run reads the values here. Found through each section's XML (every section has one), so
     no construct's words are missed; a variable with a computed number is not decided here [?]."""
-    for block in blocks:
-        for section in block.sections.values():
-            for var in section.make_xml_source().iter("Var"):
-                kids = [kid for kid in var if isinstance(kid.tag, str)]
-                if len(kids) != 1 or kids[0].tag != "Num":
-                    continue
-                number = float(kids[0].get("value", "nan"))
-                if number.is_integer() and reads_frame(int(number)):
-                    return f"#{int(number)}"
+    for number in numbered_variables(blocks):
+        if number != COMPUTED and reads_frame(number):
+            return f"#{number}"
     return None

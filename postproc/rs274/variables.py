@@ -76,7 +76,10 @@ G92.1 [V: ``interp_parameter_def.hh``, ``interp_convert.cc`` ``convert_axis_offs
 NGC_WORK_FIRST, NGC_WORK_STRIDE, NGC_WORK_SYSTEMS = 5221, 20, 9
 """Work system n (1 = G54 .. 9 = G59.3): X at 5221 + 20 (n - 1), then Y Z A B C U V W, R (its XY rotation,
 degrees) the tenth [V: ``interp_parameter_def.hh``]."""
-NGC_FRAME_PARAMETERS = range(NGC_ORIGIN_APPLIED, NGC_WORK_FIRST + NGC_WORK_STRIDE * NGC_WORK_SYSTEMS)
+NGC_WORK_WORDS = 10
+"""A work system's parameters: its nine axes and R; the other ten of its stride are unused."""
+NGC_FRAME_PARAMETERS = range(NGC_ORIGIN_APPLIED,
+                             NGC_WORK_FIRST + NGC_WORK_STRIDE * (NGC_WORK_SYSTEMS - 1) + NGC_WORK_WORDS)
 """Every offset parameter (#5210-#5219, #5220, each work system's #5221..#5390)."""
 
 
