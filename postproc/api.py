@@ -127,9 +127,10 @@ def _keep_check(src: type[Dialect], dst: type[Dialect], ctx: Context, registry: 
             read = frame_parameter_read(body, program.FRAME_PARAMETERS.__contains__)
             if read is not None:
                 return f"it reads its coordinate frame ({read}), which is evaluated into the coordinates here"
-        if program is not None and theirs is not None and program.VARIABLES is not None \
-                and theirs.VARIABLES is not None:
-            foreign = foreign_number(body, program.VARIABLES, theirs.VARIABLES, (src.NAME, dst.NAME))
+        ours_made = None if program is None else type(program).VARIABLES
+        theirs_made = None if theirs is None else type(theirs).VARIABLES
+        if ours_made is not None and theirs_made is not None:
+            foreign = foreign_number(body, ours_made, theirs_made, (src.NAME, dst.NAME))
             if foreign is not None:
                 return foreign
         dry = Diagnostics(ErrorLevel.RAISE, max_errors=1_000_000, warn_stream=io.StringIO())

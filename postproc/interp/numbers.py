@@ -70,7 +70,9 @@ def foreign_number(blocks: Iterable[Block], source: VariablesFactory, target: Va
         seen.add(number)
         if number == COMPUTED:
             return "it computes a variable number, which may name a variable of another meaning there"
-        for family, name, other in ((source, *names), (target, *reversed(names))):
+        sides: tuple[tuple[VariablesFactory, str, str], ...] = ((source, names[0], names[1]),
+                                                               (target, names[1], names[0]))
+        for family, name, other in sides:
             if not plain_variable(family, number):
                 return f"#{number} is no plain variable of {name}, so {other}'s #{number} would mean something else"
     return None
