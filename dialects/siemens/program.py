@@ -1,0 +1,29 @@
+"""SiemensProgramSyntax: the interpreter step with SINUMERIK's data (R parameters, DEF variables, control
+structures and jumps).
+
+Integer addresses (G, M, T, D, H) are written without a point when evaluated; the program ends at
+M30/M2. Subprograms are not modelled (their calls are kept verbatim by the reader).
+"""
+
+from __future__ import annotations
+
+from typing import ClassVar
+
+from postproc.interp.variables import VariablesFactory
+from postproc.syntaxes.program import ProgramSyntax
+
+from .variables import SiemensVariables
+
+
+class SiemensProgramSyntax(ProgramSyntax):
+    XNAME = "SiemensProgramSyntax"
+    __slots__ = ()
+
+    INTEGER_ADDRESSES: ClassVar[frozenset[str]] = frozenset("GMNTDH")
+    END_CODES: ClassVar[frozenset[tuple[str, int]]] = frozenset({("M", 30), ("M", 2)})
+    MACRO_LOCALS: ClassVar[int] = 0
+    VARIABLES: ClassVar[VariablesFactory] = SiemensVariables
+    LIBRARY_FILES: ClassVar[tuple[str, ...]] = ("{name}.SPF", "{name}.spf", "{name}")
+    RUN_BEFORE_KEEP: ClassVar[bool] = True
+    """An R parameter never set stops the run here but reads vacant (Fanuc) or 0 (LinuxCNC): a program kept
+    symbolically must run here first, or the target could move where SINUMERIK stops."""
