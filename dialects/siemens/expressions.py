@@ -108,11 +108,13 @@ def parse_variable(text: str, pos: int) -> tuple[int, Var]:
 
 
 class _Parser:
-    __slots__ = ("text", "depth")
+    __slots__ = ("text", "depth", "joined")
 
     def __init__(self, text: str) -> None:
         self.text = text
         self.depth = 0
+        self.joined = False
+        """A logical operator joined operands at the level being read (outside parentheses)."""
 
     def deeper(self, pos: int) -> None:
         self.depth += 1
@@ -121,22 +123,26 @@ class _Parser:
 
     def top(self, pos: int) -> tuple[int, Expr]:
         """A comparison of two logical expressions, or one logical expression."""
+        saved = self.joined
+        self.joined = False
         start = skip(self.text, pos)
         pos, left = self.logical(start)
         at = skip(self.text, pos)
         end, word = self.comparison(at)
         if word is None:
+            self.joined = saved
             return pos, left
-        if isinstance(left, Binary) and left.op in ("and", "or", "xor"):
+        if self.joined:
             raise ExprSyntaxError("a comparison after AND/OR/XOR without parentheses: SINUMERIK compares "
                                   "last, so write the comparisons in parentheses: (R1>1) AND (R2<2)", at)
         pos, right = self.logical(end)
-        if isinstance(right, Binary) and right.op in ("and", "or", "xor"):
+        if self.joined:
             raise ExprSyntaxError("a comparison before AND/OR/XOR without parentheses: SINUMERIK compares "
                                   "last, so write the comparisons in parentheses: (R1>1) AND (R2<2)", at)
         after = skip(self.text, pos)
         if self.comparison(after)[1] is not None:
             raise ExprSyntaxError("a chain of comparisons: write it with parentheses", after)
+        self.joined = saved
         return pos, Binary(COMPARISONS[word], left, right)
 
     def comparison(self, pos: int) -> tuple[int, str | None]:
@@ -160,6 +166,7 @@ class _Parser:
             op, prec = LOGICAL[word]
             if prec <= min_prec:
                 return pos, left
+            self.joined = True
             self.deeper(at)
             pos, right = self.logical(end, prec)
             self.depth -= 1
@@ -329,19 +336,21 @@ def _index(var: Var) -> str:
 
 
 _UNARY_PREC = 5
+_TOP = -100
+"""``outer`` of an expression that stands alone (a word's value, a condition, a function's argument)."""
 
 
-def spell_expr(expr: Expr, outer: int = -2) -> str:
+def spell_expr(expr: Expr, outer: int = _TOP) -> str:
     """``expr`` in SINUMERIK's spelling, with parentheses where a priority needs them."""
     if isinstance(expr, Num):
         text = spell_number(expr.value)
-        return f"({text})" if expr.value < 0 and outer > -2 else text
+        return f"({text})" if expr.value < 0 and outer != _TOP else text
     if isinstance(expr, Var):
         return spell_var(expr)
     if isinstance(expr, Unary):
         inner = spell_expr(expr.operand, _UNARY_PREC)
         text = {"neg": "-", "pos": "+", "not": "NOT "}[expr.op] + inner
-        return f"({text})" if outer > -2 else text
+        return f"({text})" if outer != _TOP else text
     if isinstance(expr, Func):
         word = _INVERSE_FUNCTIONS.get(expr.name)
         if word is None:
@@ -350,7 +359,7 @@ def spell_expr(expr: Expr, outer: int = -2) -> str:
     if isinstance(expr, Binary):
         if expr.op in _INVERSE_COMPARISONS:
             text = f"{spell_expr(expr.left, -1)}{_INVERSE_COMPARISONS[expr.op]}{spell_expr(expr.right, -1)}"
-            return f"({text})" if outer > -2 else text
+            return f"({text})" if outer != _TOP else text
         found = _INVERSE_ARITHMETIC.get(expr.op) or _INVERSE_LOGICAL.get(expr.op)
         if found is None:
             raise UnsupportedError(f"the operator {expr.op} has no SINUMERIK spelling")

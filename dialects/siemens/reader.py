@@ -178,10 +178,11 @@ class _State:
         self.words(block, code, pos)
 
     def header(self, code: str, pos: int, line: int) -> str:
-        """``%_N_NAME_MPF`` -> ``NAME_MPF`` [K: the program header of an 840D file]."""
+        """``%_N_NAME_MPF`` -> ``NAME_MPF`` [K: the program header of an 840D file; a name starts with a letter
+        or ``_`` (Fundamentals, "Program names": the first two characters, not checked here [?])]."""
         rest = code[pos + 1:].strip()
         if not rest.startswith("_N_") or not (rest.endswith("_MPF") or rest.endswith("_SPF")) \
-                or len(rest) <= 7 or any(not (c.isalnum() or c == "_") for c in rest):
+                or len(rest) <= 7 or any(not (c.isalnum() or c == "_") for c in rest) or rest[3].isdigit():
             raise self.error(line, pos + 1, f"a program header is %_N_<NAME>_MPF or %_N_<NAME>_SPF, not %{rest}")
         return rest[3:]
 
@@ -363,7 +364,8 @@ class _State:
                 letter = "R"
             elif up in ADDRESSES and single and not assigned and code[pos + 1:pos + 2] in _NUMBER_START:
                 letter = c
-                assigned = False
+            elif up in ADDRESSES and end == pos + 1:
+                raise self.error(block.line, pos + 1, f"address {up} needs a value")
             else:
                 if upper[:1] == "$":
                     raise self.error(block.line, pos + 1, f"a system variable {name} alone: set it with "

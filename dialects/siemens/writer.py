@@ -11,6 +11,7 @@ comments and ``%_N_NAME_MPF`` headers.
   "G4 must be programmed in a separate block"]; what acts before it goes in a block before.
 * Tool data: ``D<n>`` selects cutting edge n (its length and radius), ``D0`` none: a Fanuc ``G43 H``/``G41 D``
   is written as the D it needs (``postproc.isg_family.tool_data``); a negative offset (G44) is refused.
+* Another dialect's tape mark ``%`` is the comment ``;%`` (a SINUMERIK ``%`` line is a header).
 * Units: ``G710``/``G700`` (lengths and feeds), never G71/G70 (lengths only).
 """
 
@@ -45,6 +46,8 @@ class SiemensWriter(WordWriter):
 
     def generate(self, block: Block) -> str:
         sections = block.sections
+        if "TapeMark" in sections:
+            return ";%" + (block.eol or "\n")  # another dialect's tape mark: a SINUMERIK % line is a header
         if "Dwell" in sections and any(k not in _ALONE_WITH_DWELL for k in sections) \
                 and "CompoundMotion" not in sections:
             return self.around_dwell(block, _WITH_DWELL)
