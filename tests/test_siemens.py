@@ -345,3 +345,31 @@ def test_a_fanuc_program_with_cycles_reads_back_from_siemens_to_the_same_toolpat
     _verify(FANUC_DRILLING, out, "fanuc", "siemens", setup)
     again = _translate(out, "siemens", "linuxcnc", setup)
     _verify(out, again, "siemens", "linuxcnc", setup)
+
+
+# -- subprograms ---------------------------------------------------------------------------------------
+
+def _library(tmp_path: Path) -> MachineSetup:
+    (tmp_path / "STEP.SPF").write_text("%_N_STEP_SPF\nPROC STEP\nR1=R1+1\nG1 X=R1*10 F100\nRET\n")
+    (tmp_path / "HOLE.SPF").write_text("G0 Z-1\nDEF REAL R\nR=2\nG0 Z=R\nM17\n")
+    (tmp_path / "ENDS.SPF").write_text("G0 Z-1\nM30\n")
+    return MachineSetup(library=[str(tmp_path)])
+
+
+def test_a_subprogram_call_with_repetitions_runs_the_spf_file(tmp_path: Path) -> None:
+    setup = _library(tmp_path)
+    text = "%_N_MAIN_MPF\nG710 G90 G0 X0 Y0 Z0\nR1=0\nSTEP P3\nHOLE\nG0 X=R1\nM30\n"
+    # STEP three times (X 10, 20, 30), HOLE once (its DEF variable R is its own), then X at R1 = 3
+    assert _moves(text, setup=setup) == [("feed", 10, 0, 0), ("feed", 20, 0, 0), ("feed", 30, 0, 0),
+                                         ("rapid", 30, 0, -1), ("rapid", 30, 0, 2), ("rapid", 3, 0, 2)]
+    assert _translate(text, "siemens", "siemens", setup) == text
+    _verify(text, _translate(text, "siemens", "linuxcnc", setup), "siemens", "linuxcnc", setup)
+
+
+def test_subprogram_ends_and_parameters_that_are_not_modelled(tmp_path: Path) -> None:
+    setup = _library(tmp_path)
+    assert "M30 in a subprogram: write RET or M17" in _errors("G710 G90 G0 X0\nENDS\nM30\n", "siemens",
+                                                               "linuxcnc", setup)[0]
+    assert "a call of STEP with parameters (not modelled)" in _errors("G710 G90 G0 X0\nSTEP(1, 2)\nM30\n",
+                                                                      "siemens", "linuxcnc", setup)[0]
+    assert "RET" in _errors("G710 G90 G0 X0\nRET\n", "siemens", "linuxcnc", setup)[0]

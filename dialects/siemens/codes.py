@@ -17,7 +17,7 @@ means something else on a Fanuc control, the table is what tells them apart (iss
 * ``G53``/``G153`` suppress the frames for one block (not Fanuc's move in machine coordinates, and the tool
   offset stays [?]): kept verbatim, as are ``G641``/``G642`` (corner rounding: the path is not sharp)
   and ``G9``'s companions ``G601``-``G603``.
-* ``M17`` ends a subprogram (subprograms are not modelled: kept verbatim).
+* ``M17`` ends a subprogram: the reader reads it as a return.
 """
 
 from __future__ import annotations
@@ -87,7 +87,7 @@ CODES = CodeTable(
         "450": "corner behaviour under radius compensation", "451": "corner behaviour under radius compensation",
         "291": "ISO dialect mode", "290": "SINUMERIK mode",
     },
-    native_m={17: "end of subprogram", 19: "spindle positioning"},
+    native_m={19: "spindle positioning"},
 )
 """The 840D table. ``native_g``/``native_m``: kept verbatim (round trip to SINUMERIK only, refused
 anywhere else and never simulated)."""

@@ -21,9 +21,12 @@ Read into neutral sections:
   ``GOTOF``/``GOTOB`` target must lie in its direction (checked when the file ends): the neutral jump
   searches forward, then from the start, which is then each of them exactly.
 
+Subprograms: ``NAME`` / ``NAME P3`` alone in a block calls ``NAME.SPF`` (3 times); ``PROC NAME`` (no
+parameters) or an ``_SPF`` header makes the file a subprogram; ``RET``/``M17`` return.
+
 Kept verbatim (``NativeCode`` tagged ``siemens``: round trip byte for byte, refused by every other dialect
 and by the simulator, by name): frames (``TRANS``, ``ROT``...), cycles (``CYCLE81``...), ``MCALL``,
-subprogram calls, ``PROC``/``RET``, every other instruction word (``SOFT``, ``BRISK``, ``SPOS``...),
+calls with parameters and ``PROC`` with parameters, every other instruction word (``SOFT``, ``BRISK``, ``SPOS``...),
 multi-letter addresses other than ``CR`` (``AR=``, ``TURN=``, ``I1=``...), ``T="name"``, string, array,
 ``CHAR``/``STRING``/``AXIS``/``FRAME`` declarations and the operators the IR lacks (``DIV``, ``B_AND``...).
 
@@ -36,7 +39,7 @@ from dataclasses import dataclass, field
 from typing import Iterable, Iterator
 
 from postproc.control import (
-    Assign, Do, Else, EndFor, EndIf, EndWhile, For, Goto, GotoLabel, If, Label, Until, While,
+    CONTROL, Assign, Call, Do, Else, EndFor, EndIf, EndWhile, For, Goto, GotoLabel, If, Label, Return, Until, While,
 )
 from postproc.dialect import Reader
 from postproc.errors import Location, ParseError, PostprocError
@@ -66,7 +69,7 @@ _JUMPS = ("GOTOF", "GOTOB", "GOTOC", "GOTO")
 class SiemensReader(Reader):
     def read(self, lines: Iterable[str]) -> Iterator[Block]:
         report = self.ctx.diagnostics.error
-        state = _State(self.ctx.file)
+        state = _State(self.ctx.file, subprogram=self.ctx.file.upper().endswith(".SPF"))
         for number, text, eol in split_lines(lines):
             try:
                 yield state.block(number, text, eol)
@@ -102,6 +105,9 @@ class _State:
     jumps: list[_Jump] = field(default_factory=list)
     types: dict[str, str] = field(default_factory=dict)
     """Declared user variables (lower case) -> their type."""
+    subprogram: bool = False
+    """The file is a subprogram: a ``.SPF`` file (every file a call loads is one), an ``_SPF`` header or a
+    ``PROC`` line."""
 
     def error(self, line: int, col: int, message: str) -> ParseError:
         return ParseError(message, Location(self.file, line, col))
@@ -132,7 +138,13 @@ class _State:
         n = len(code)
         pos = skip(code, 0)
         if pos < n and code[pos] == "%":
-            block.add(ProgramStart(None, self.header(code, pos, line)))
+            name = self.header(code, pos, line)
+            if name.endswith("_SPF"):
+                self.subprogram = True  # a subprogram file: its header names it, and starts nothing
+                if "Comments" not in block.sections:
+                    block.add(Comments([code.strip()]))
+                return
+            block.add(ProgramStart(None, name))
             return
         if pos < n and code[pos] == "/":
             end = pos + 1
@@ -172,10 +184,16 @@ class _State:
             if word == "DEF":
                 self.declare(block, code, end)
                 return
+            if word in ("PROC", "RET"):
+                self.procedure(block, code, pos, end, word)
+                return
             what = describe(word)
             if what is not None:
                 raise Unmodelled(what, pos)
+            if self.call(block, code, pos, end):
+                return
         self.words(block, code, pos)
+        self.returns(block, code)
 
     def header(self, code: str, pos: int, line: int) -> str:
         """``%_N_NAME_MPF`` -> ``NAME_MPF`` [K: the program header of an 840D file; a name starts with a letter
@@ -185,6 +203,70 @@ class _State:
                 or len(rest) <= 7 or any(not (c.isalnum() or c == "_") for c in rest) or rest[3].isdigit():
             raise self.error(line, pos + 1, f"a program header is %_N_<NAME>_MPF or %_N_<NAME>_SPF, not %{rest}")
         return rest[3:]
+
+    # -- subprograms -------------------------------------------------------------------------------------
+    def procedure(self, block: Block, code: str, pos: int, end: int, word: str) -> None:
+        """``PROC NAME`` opens a subprogram without parameters (the file is its body); ``RET`` returns [K:
+        840D Fundamentals, "Subprograms"]. Parameters (``PROC NAME(REAL A)``) and ``SAVE``/``DISPLOF`` are
+        not modelled (kept verbatim)."""
+        at = skip(code, end)
+        if word == "RET":
+            if at < len(code):
+                raise Unmodelled("RET with a target or a value", at)
+            block.add(Return())
+            return
+        stop = name_at(code, at)
+        if stop == at or code[at] not in _NAME_START:
+            raise self.error(block.line, at + 1, "PROC needs a subprogram name")
+        if skip(code, stop) < len(code):
+            raise Unmodelled("PROC with parameters or attributes (SAVE, DISPLOF)", skip(code, stop))
+        self.subprogram = True
+        if "Comments" not in block.sections:
+            block.add(Comments([code[pos:].strip()]))
+
+    def call(self, block: Block, code: str, pos: int, end: int) -> bool:
+        """``NAME`` or ``NAME P3`` alone in its block: a call of subprogram ``NAME`` (file ``NAME.SPF``), run
+        3 times, with its own local variables [K: 840D Fundamentals, "Subprogram call", "Program repetition
+        P"]. ``NAME(..)`` (parameters) is not modelled. Anything else is no call (the words are read)."""
+        name = code[pos:end]
+        upper = name.upper()
+        n = len(code)
+        at = skip(code, end)
+        if upper[:1] == "R" and upper[1:].isdigit() or name.lower() in self.types or upper[:1] == "$" \
+                or len(name) == 1 or upper[:1] in ADDRESSES and upper[1:2] in _NUMBER_START \
+                or code[at:at + 1] == "=":
+            return False
+        if code[at:at + 1] == "(":
+            raise Unmodelled(f"a call of {upper} with parameters", pos)
+        repeat: Expr | None = None
+        if at < n:
+            if code[at] not in "Pp":
+                raise Unmodelled(f"'{name}' (an instruction or a subprogram call)", pos)
+            start = skip(code, at + 1 + (code[skip(code, at + 1):skip(code, at + 1) + 1] == "="))
+            stop = start
+            while stop < n and code[stop] in _DIGITS:
+                stop += 1
+            if stop == start or skip(code, stop) < n:
+                raise self.error(block.line, at + 1, f"a call of {upper} repeats a whole number of times: {upper} P3")
+            repeat = Num(float(int(code[start:stop])))
+        block.add(Call(upper, repeat=repeat, kind="macro"))
+        return True
+
+    def returns(self, block: Block, code: str) -> None:
+        """``M17`` returns from a subprogram; ``M2``/``M30`` in a subprogram file is refused (whether it
+        returns or ends the program is not confirmed here [?])."""
+        for i, (letter, num) in enumerate(block.words):
+            if letter not in "Mm" or not num.isdigit():
+                continue
+            if int(num) == 17:
+                if CONTROL in block.sections:
+                    raise self.error(block.line, 1, "M17: one call or return per block")
+                del block.words[i]
+                block.add(Return())
+                return
+            if int(num) in (2, 30) and self.subprogram:
+                raise self.error(block.line, 1, f"M{num} in a subprogram: write RET or M17 (whether M{num} returns "
+                                                "or ends the program is not confirmed here)")
 
     # -- control statements -----------------------------------------------------------------------------
     def open(self, word: str, line: int) -> str:
