@@ -373,3 +373,28 @@ def test_subprogram_ends_and_parameters_that_are_not_modelled(tmp_path: Path) ->
     assert "a call of STEP with parameters (not modelled)" in _errors("G710 G90 G0 X0\nSTEP(1, 2)\nM30\n",
                                                                       "siemens", "linuxcnc", setup)[0]
     assert "RET" in _errors("G710 G90 G0 X0\nRET\n", "siemens", "linuxcnc", setup)[0]
+
+
+# -- frames --------------------------------------------------------------------------------------------
+
+TRANS_PROGRAM = "G710 G90 G0 X0 Y0 Z0\nTRANS X10 Y5\nG1 X1 Y1 F100\nTRANS Z-2\nG1 X2 Y2 Z1\nTRANS\nG1 X3 Y3\nM30\n"
+
+
+def test_trans_replaces_the_programmable_offset_and_trans_alone_clears_it() -> None:
+    # (1,1) + (10,5); then the offset is Z-2 only (X, Y back to 0): (2,2,1-2); then none: (3,3) at Z -1 (Z not
+    # programmed: the tool stays)
+    assert _moves(TRANS_PROGRAM) == [("feed", 11, 6, 0), ("feed", 2, 2, -1), ("feed", 3, 3, -1)]
+    assert _translate(TRANS_PROGRAM, "siemens", "siemens") == TRANS_PROGRAM
+
+
+@pytest.mark.parametrize("target", ["fanuc", "linuxcnc", "grbl"])
+def test_trans_is_evaluated_for_other_controls(target: str) -> None:
+    _verify(TRANS_PROGRAM, _translate(TRANS_PROGRAM, "siemens", target), "siemens", target)
+
+
+def test_additive_and_computed_frames_are_kept_verbatim() -> None:
+    for line, name in (("ATRANS X1", "ATRANS (an additive frame offset)"), ("TRANS X=R1", "TRANS with computed"),
+                       ("TRANS A10", "TRANS with other than X, Y, Z"), ("ROT RPL=30", "ROT (a frame rotation)")):
+        text = f"G710 G90 G0 X0\nR1=1\n{line}\nM30\n"
+        assert _translate(text, "siemens", "siemens") == text
+        assert name in _errors(text, "siemens", "fanuc")[0]

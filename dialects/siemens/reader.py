@@ -14,6 +14,7 @@ Read into neutral sections:
 * ``X=AC(..)``/``X=IC(..)``: the value as a plain word when the block's own ``G90``/``G91`` says the same
   thing (and ``I=IC(..)``: centres are incremental by default [K]); otherwise the per-address distance
   mode is not modelled and the block is kept verbatim;
+* ``TRANS X.. Y.. Z..`` (numbers, alone in its block): the neutral local offset (``trans``);
 * ``DEF REAL|INT|BOOL NAME[=value], ...`` (an assignment of the value, 0 when none is given [K]);
 * ``IF``/``ELSE``/``ENDIF``, ``WHILE``/``ENDWHILE``, ``FOR``/``TO``/``ENDFOR``, ``REPEAT``/``UNTIL``,
   ``LOOP``/``ENDLOOP`` (liufang-robot SPEC; Job planning p.107 [K]); ``GOTOF``/``GOTOB``/``GOTO``/``GOTOC``
@@ -44,6 +45,7 @@ from postproc.control import (
 from postproc.dialect import Reader
 from postproc.errors import Location, ParseError, PostprocError
 from postproc.expr import Binary, Expr, Func, Num, Var
+from postproc.frames.section import FrameChange
 from postproc.ir import Block, BlockDelete, Comments, NativeCode, ProgramStart, Section, Sequence
 from postproc.isg_family.expressions import Unmodelled
 from postproc.rs274.expressions import ExprSyntaxError
@@ -187,6 +189,9 @@ class _State:
             if word in ("PROC", "RET"):
                 self.procedure(block, code, pos, end, word)
                 return
+            if word == "TRANS":
+                self.trans(block, code, pos, end)
+                return
             what = describe(word)
             if what is not None:
                 raise Unmodelled(what, pos)
@@ -203,6 +208,35 @@ class _State:
                 or len(rest) <= 7 or any(not (c.isalnum() or c == "_") for c in rest) or rest[3].isdigit():
             raise self.error(line, pos + 1, f"a program header is %_N_<NAME>_MPF or %_N_<NAME>_SPF, not %{rest}")
         return rest[3:]
+
+    # -- frames -----------------------------------------------------------------------------------------
+    def trans(self, block: Block, code: str, pos: int, end: int) -> None:
+        """``TRANS X10 Y5`` replaces the whole programmable frame by that offset (an axis not named: 0), and
+        ``TRANS`` alone clears it [K: SINUMERIK ONE NC programming 12/2019 p.309, "the plain forms replace
+        the programmable frame"; 808D manual p.56]. Alone in its block ("Frame statements must be programmed
+        in a separate NC block" [K]). Read as the neutral local offset (Fanuc G52's meaning) on X, Y and Z:
+        exact, as the rotation, scaling and mirroring it would also clear are never modelled (their blocks
+        are kept verbatim, so a program with them is not simulated). Computed values, other axes and the
+        additive ``ATRANS`` are kept verbatim. A work offset selected later keeps it, as Fanuc's G52 stays in
+        every work system [K: the programmable frame is chained after the settable one (G54...), which
+        replaces only its own]."""
+        words: dict[str, float | Expr] = {"X": 0.0, "Y": 0.0, "Z": 0.0}
+        n = len(code)
+        at = skip(code, end)
+        while at < n:
+            letter = code[at].upper()
+            if letter not in "XYZ":
+                raise Unmodelled("TRANS with other than X, Y, Z offsets", at)
+            start = at + 1
+            stop = start + (code[start:start + 1] in ("+", "-"))
+            while stop < n and (code[stop] in _DIGITS or code[stop] == "."):
+                stop += 1
+            number = code[start:stop]
+            if not _plain(number) or stop < n and code[stop] not in " \t":
+                raise Unmodelled("TRANS with computed or malformed offsets", at)
+            words[letter] = float(number)
+            at = skip(code, stop)
+        block.add(FrameChange("local", words, "fanuc", "siemens", code[pos:].strip()))
 
     # -- subprograms -------------------------------------------------------------------------------------
     def procedure(self, block: Block, code: str, pos: int, end: int, word: str) -> None:

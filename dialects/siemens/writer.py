@@ -28,7 +28,7 @@ from .codes import CODES
 
 _WITH_DWELL = ("Dwell", "Sequence")
 _ALONE_WITH_DWELL = frozenset((*_WITH_DWELL, "Comments", "BlockDelete"))
-_OWN_TEXT = frozenset((ASSIGN, CONTROL, LABEL, "NativeCode", "ProgramStart"))
+_OWN_TEXT = frozenset((ASSIGN, CONTROL, LABEL, "NativeCode", "ProgramStart", "FrameChange"))
 """Sections whose block keeps its text when normalised."""
 
 
