@@ -398,3 +398,30 @@ def test_additive_and_computed_frames_are_kept_verbatim() -> None:
         text = f"G710 G90 G0 X0\nR1=1\n{line}\nM30\n"
         assert _translate(text, "siemens", "siemens") == text
         assert name in _errors(text, "siemens", "fanuc")[0]
+
+
+# -- the spelling of each construct, both ways (a validate_all-style table) ------------------------------
+
+WRITE_TABLE = [
+    # (Fanuc block after "G21 G90 G0 X0 Y0 Z0", the SINUMERIK line written), by the facts in codes.py
+    ("G17", "G17"), ("G18", "G18"), ("G19", "G19"),
+    ("G54", "G54"), ("G55", "G55"), ("G56", "G56"), ("G57", "G57"), ("G58", "G505"), ("G59", "G506"),
+    ("G61", "G60"), ("G64", "G64"), ("G09 G01 X1. F10.", "G9 G1 X1. F10."),
+    ("G91", "G91"), ("G94", "G94"), ("G20", "G700"),
+    ("M03 S100", "S100 M3"), ("M04 S100", "S100 M4"), ("M05", "M5"), ("M08", "M8"), ("M09", "M9"),
+    ("M00", "M0"), ("M01", "M1"),
+    ("G04 P1500", "G4 F1.5"), ("/G01 X1. F10.", "/ G1 X1. F10."),
+]
+
+
+@pytest.mark.parametrize("fanuc, siemens", WRITE_TABLE)
+def test_a_fanuc_construct_is_written_with_the_siemens_spelling_and_reads_back(fanuc: str, siemens: str) -> None:
+    out = _translate(f"G21 G90 G0 X0 Y0 Z0\n{fanuc}\nM30\n", "fanuc", "siemens")
+    assert out.splitlines()[1] == siemens
+    back = _translate(out, "siemens", "fanuc")  # read back: the same meaning (G505 -> G58, G4 F -> G4 X)
+    assert len(back.splitlines()) == 3
+
+
+def test_a_line_longer_than_the_limit_is_a_located_error() -> None:
+    errors = _errors("G710 G90 G0 X1 " + "Y1 " * 30000 + "\nM30\n", "siemens", "linuxcnc")
+    assert errors[0].startswith("in.mpf:1:65537: error: the line is 90015 characters long")
