@@ -251,12 +251,12 @@ def test_d_selects_the_tool_data_and_fanuc_g43_h_becomes_d() -> None:
 
 
 def test_a_name_as_a_tool_and_the_cycles_are_kept_verbatim() -> None:
-    text = "G710 G90\nT=\"DRILL\"\nCYCLE81(10,0,2,-5)\nMCALL CYCLE82(10,0,2,-5,,1)\nMCALL\nM30\n"
+    text = "G710 G90\nT=\"DRILL\"\nCYCLE81(10,0,2,-5)\nMCALL CYCLE86(10,0,2,-5,,1)\nMCALL\nM30\n"
     assert _translate(text, "siemens", "siemens") == text
     errors = _errors(text, "siemens", "fanuc")
     assert "T=\"..\" (a name as the value)" in errors[0]
     assert "CYCLE81 (a standard cycle)" in errors[1]
-    assert "MCALL (a modal subprogram or cycle call)" in errors[2]
+    assert "MCALL CYCLE86 (a modal subprogram or cycle call)" in errors[2]
 
 
 @pytest.mark.parametrize("text, message", [
@@ -425,3 +425,55 @@ def test_a_fanuc_construct_is_written_with_the_siemens_spelling_and_reads_back(f
 def test_a_line_longer_than_the_limit_is_a_located_error() -> None:
     errors = _errors("G710 G90 G0 X1 " + "Y1 " * 30000 + "\nM30\n", "siemens", "linuxcnc")
     assert errors[0].startswith("in.mpf:1:65537: error: the line is 90015 characters long")
+
+
+# -- drilling cycles (MCALL CYCLE81/82) -------------------------------------------------------------------
+
+CYCLES = ("G710 G17 G90 G0 X0 Y0 Z10\nG1 F100\nG0\nMCALL CYCLE81(10, 0, 2, -5)\nX10 Y10\nX20\nMCALL\nG0 Z50\n"
+          "MCALL CYCLE82(5, 0, 5, , 3, 0.5)\nX30\nMCALL\nM30\n")
+
+
+def test_mcall_cycles_move_as_the_manual_describes() -> None:
+    # CYCLE81: rapid to RFP+SDIS = 2, feed to DP = -5, rapid to RTP = 10 (the Z at MCALL), at each position;
+    # CYCLE82: RFP+SDIS = 5 = RTP, depth RFP-DPR = -3, dwell 0.5 s, rapid to RTP 5; nothing at MCALL itself
+    assert _moves(CYCLES) == [
+        ("rapid", 0, 0, 10),
+        ("rapid", 10, 10, 10), ("rapid", 10, 10, 2), ("feed", 10, 10, -5), ("rapid", 10, 10, 10),
+        ("rapid", 20, 10, 10), ("rapid", 20, 10, 2), ("feed", 20, 10, -5), ("rapid", 20, 10, 10),
+        ("rapid", 20, 10, 50),
+        ("rapid", 30, 10, 50), ("rapid", 30, 10, 5), ("feed", 30, 10, -3), ("dwell", 0.5), ("rapid", 30, 10, 5)]
+
+
+def test_mcall_cycles_are_fanuc_cycles_natively_and_expanded_elsewhere() -> None:
+    out = _translate(CYCLES, "siemens", "fanuc")
+    assert "G98 G81 Z-5. R2. K0\nX10. Y10.\nX20.\nG80\n" in out
+    assert "G99 G82 Z-3. R5. P500 K0\nX30.\nG80\n" in out
+    for target in ("fanuc", "linuxcnc", "grbl"):
+        _verify(CYCLES, _translate(CYCLES, "siemens", target), "siemens", target)
+    assert _translate(CYCLES, "siemens", "siemens") == CYCLES
+
+
+@pytest.mark.parametrize("lines, message", [
+    ("G0 Z20\nMCALL CYCLE81(10, 0, 2, -5)", "RTP 10 is neither RFP+SDIS (2) nor the tool's Z at MCALL (20)"),
+    ("G1\nMCALL CYCLE81(10, 0, 2, -5)", "MCALL moves to each hole in the motion mode in force"),
+    ("MCALL CYCLE81(10, 0, 2, -5)\nG1 X5", "G1 under MCALL"),
+    ("MCALL CYCLE81(10, 0, 2, -5)\nX5 Z2", "Z under MCALL"),
+    ("MCALL CYCLE81(10, 0, 2, -5, 3)", "give exactly one of DP and DPR"),
+    ("MCALL CYCLE81(10, 0, , -5)", "SDIS is empty"),
+    ("MCALL CYCLE82(10, 0, 2, -5, , 0.0005)", "DTB is a dwell of whole milliseconds"),
+    ("G91\nMCALL CYCLE81(10, 0, 2, -5)", "read in G17 and G90 only"),
+])
+def test_a_cycle_call_fanuc_cannot_mean_is_a_located_error(lines: str, message: str) -> None:
+    errors = _errors(f"G710 G17 G90 G1 X0 Y0 Z10 F100\nG0\n{lines}\nMCALL\nM30\n", "siemens", "fanuc")
+    assert any(message in e for e in errors), errors
+
+
+def test_other_cycle_calls_are_kept_verbatim() -> None:
+    for line, name in (("CYCLE81(10, 0, 2, -5)", "CYCLE81 (a standard cycle)"),
+                       ("MCALL CYCLE83(10, 0, 2, -20, , -5, , 2, 0, 0, 1, 0)", "MCALL CYCLE83"),
+                       ("MCALL CYCLE81(R1, 0, 2, -5)", "MCALL CYCLE81 with computed parameters"),
+                       ("MCALL MYSUB", "MCALL MYSUB"),
+                       ("MCALL CYCLE81(10, 0, 2, -5, , 0, 1, 0)", "MCALL CYCLE81 with parameters after DPR")):
+        text = f"G710 G90 G0 X0 Z10\nR1=10\n{line}\nM30\n"
+        assert _translate(text, "siemens", "siemens") == text
+        assert name in _errors(text, "siemens", "fanuc")[0]

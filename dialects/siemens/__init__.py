@@ -13,6 +13,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Callable, Iterator
 
 from postproc.comments import CommentSyntax
+from postproc.cycle_words import CycleWords
 from postproc.dialect import Dialect, Lazy, Reader
 from postproc.hookspecs import hookimpl
 from postproc.rs274.order_of_execution import stops_before_motion
@@ -40,8 +41,14 @@ class Siemens(Dialect):
     """Imported when a run first reads SINUMERIK (``Lazy``), as are the writer and the syntax objects."""
     WRITER = Lazy[type[Writer]](".writer:SiemensWriter")
     PIPELINE_FILE = "siemens.xml"
+    CYCLE_WORDS = CycleWords(names={"drill": "MCALL CYCLE81", "drill_dwell": "MCALL CYCLE82"},
+                             return_to_r="RTP=RFP+SDIS", level="R", peck="Q", shift="Q", dwell="P", repeat=("K",))
+    """``MCALL CYCLE81``/``CYCLE82`` are read as the Fanuc-family words of their meaning (``cycles``: R level,
+    Z depth, P dwell in ms, K0 for the call that drills nothing)."""
     NATIVE_CYCLES = frozenset()
-    """``CYCLE81``... are read verbatim and not written yet: every cycle is expanded."""
+    """``CYCLE8x`` are not written yet: every cycle is expanded for SINUMERIK."""
+    CYCLE_SEMANTICS = "fanuc"
+    """How the cycles read move (``cycles``: only where a Fanuc cycle moves the same)."""
     PROGRAM_NUMBERS = True
     """``%_N_NAME_MPF`` names the main program."""
     SPINDLE_ORIENTATION = False
@@ -82,3 +89,4 @@ def postproc_register_dialects(register: Callable[[type], None]) -> None:
 def postproc_register_xml(factory: XFactory) -> None:
     factory.register_lazy("SiemensBlockSyntax", f"{__name__}.block_syntax:SiemensBlockSyntax")
     factory.register_lazy("SiemensProgramSyntax", f"{__name__}.program:SiemensProgramSyntax")
+    factory.register_lazy("SiemensCycleLevels", f"{__name__}.cycles:CycleLevels")

@@ -18,12 +18,13 @@ from typing import Any, ClassVar
 from postproc.context import Context
 from postproc.errors import ProgramError
 from postproc.expr import Expr
-from postproc.ir import Block, Dwell
+from postproc.ir import Block, Dwell, ReturnLevel
 from postproc.isg_family.tool_data import read_tool_data
 from postproc.rs274.block_syntax import WordBlockSyntax, col_of_word
 from postproc.rs274.codes import CodeTable, g_key
 
 from .codes import CODES, GEOMETRY_UNITS
+from .cycles import MCALL_KEY, CycleLevels, SiemensCycleRules
 
 GEOMETRY_KEY = "siemens_geometry_units"
 """``ctx.state.extra`` key: True while G70/G71 (lengths only) is the units code in force."""
@@ -39,8 +40,20 @@ class SiemensBlockSyntax(WordBlockSyntax):
     CODES: ClassVar[CodeTable] = CODES
     POINTLESS_IN_UNITS: ClassVar[bool] = True
 
+    def build(self, block: Block, ctx: Context) -> None:
+        levels = block.sections.pop(CycleLevels.KEY, None)
+        if isinstance(levels, CycleLevels):
+            block.add(ReturnLevel(SiemensCycleRules.call(block, ctx, levels)))
+        elif "CycleCancel" in block.sections:
+            ctx.state.extra.pop(MCALL_KEY, None)
+        super().build(block, ctx)
+
     def g_sections(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],
                    used: set[str], cycle_block: bool) -> None:
+        if "CycleCall" in block.sections:
+            used.update("RZKP")  # the words of ``MCALL CYCLE8x`` (``cycles``), read by the resolve step
+        elif ctx.state.extra.get(MCALL_KEY) and ctx.state.cycle is not None:
+            SiemensCycleRules.position(block, ctx, codes, values)
         units = codes.get("06")
         extra = ctx.state.extra
         if units is not None:

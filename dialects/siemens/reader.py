@@ -14,6 +14,7 @@ Read into neutral sections:
 * ``X=AC(..)``/``X=IC(..)``: the value as a plain word when the block's own ``G90``/``G91`` says the same
   thing (and ``I=IC(..)``: centres are incremental by default [K]); otherwise the per-address distance
   mode is not modelled and the block is kept verbatim;
+* ``MCALL CYCLE81(..)``/``MCALL CYCLE82(..)`` and a bare ``MCALL`` (``cycles``);
 * ``TRANS X.. Y.. Z..`` (numbers, alone in its block): the neutral local offset (``trans``);
 * ``DEF REAL|INT|BOOL NAME[=value], ...`` (an assignment of the value, 0 when none is given [K]);
 * ``IF``/``ELSE``/``ENDIF``, ``WHILE``/``ENDWHILE``, ``FOR``/``TO``/``ENDFOR``, ``REPEAT``/``UNTIL``,
@@ -46,11 +47,12 @@ from postproc.dialect import Reader
 from postproc.errors import Location, ParseError, PostprocError
 from postproc.expr import Binary, Expr, Func, Num, Var
 from postproc.frames.section import FrameChange
-from postproc.ir import Block, BlockDelete, Comments, NativeCode, ProgramStart, Section, Sequence
+from postproc.ir import Block, BlockDelete, Comments, CycleCall, CycleCancel, NativeCode, ProgramStart, Section, Sequence
 from postproc.isg_family.expressions import Unmodelled
 from postproc.rs274.expressions import ExprSyntaxError
 from postproc.rs274.lexer import split_lines
 
+from .cycles import KINDS, PARAMETERS, cycle_words
 from .expressions import name_at, parse_expr, parse_variable, skip
 from .keywords import INSTRUCTIONS, describe
 
@@ -192,6 +194,9 @@ class _State:
             if word == "TRANS":
                 self.trans(block, code, pos, end)
                 return
+            if word == "MCALL":
+                self.mcall(block, code, pos, end)
+                return
             what = describe(word)
             if what is not None:
                 raise Unmodelled(what, pos)
@@ -237,6 +242,47 @@ class _State:
             words[letter] = float(number)
             at = skip(code, stop)
         block.add(FrameChange("local", words, "fanuc", "siemens", code[pos:].strip()))
+
+    def mcall(self, block: Block, code: str, pos: int, end: int) -> None:
+        """``MCALL CYCLE81(..)``/``MCALL CYCLE82(..)`` with number parameters: the cycle's data block
+        (``cycles``); a bare ``MCALL`` cancels it. Other modal calls are kept verbatim."""
+        at = skip(code, end)
+        if at >= len(code):
+            block.add(CycleCancel())
+            return
+        stop = name_at(code, at)
+        name = code[at:stop].upper()
+        if name not in KINDS or code[skip(code, stop):skip(code, stop) + 1] != "(":
+            raise Unmodelled(f"MCALL {name or '..'} (a modal subprogram or cycle call)", pos)
+        params: list[float | None] = []
+        at = skip(code, stop) + 1
+        while True:
+            at = skip(code, at)
+            if code[at:at + 1] in (",", ")"):
+                params.append(None)
+            else:
+                at, value = parse_expr(code, at)
+                if not isinstance(value, Num):
+                    raise Unmodelled(f"MCALL {name} with computed parameters", pos)
+                params.append(value.value)
+                at = skip(code, at)
+            if code[at:at + 1] == ",":
+                at += 1
+                continue
+            if code[at:at + 1] != ")":
+                raise self.error(block.line, at + 1, f"',' or ')' expected in {name}(..)")
+            break
+        if skip(code, at + 1) < len(code):
+            raise self.error(block.line, skip(code, at + 1) + 1, f"MCALL {name}(..) is alone in its block")
+        if len(params) > len(PARAMETERS[name]):
+            raise Unmodelled(f"MCALL {name} with parameters after {PARAMETERS[name][-1]} (GMODE, DMODE...)", pos)
+        try:
+            words, levels = cycle_words(name, params, pos)
+        except ValueError as err:
+            raise self.error(block.line, pos + 1, str(err)) from None
+        block.words.extend(words)
+        block.add(levels)
+        block.add(CycleCall(KINDS[name]))
 
     # -- subprograms -------------------------------------------------------------------------------------
     def procedure(self, block: Block, code: str, pos: int, end: int, word: str) -> None:
