@@ -4,8 +4,10 @@ SINUMERIK is neither in the RS274 family nor in ISG's: it has its own reader (``
 R parameters, ``DEF`` variables, labels, ``IF``/``WHILE``/``FOR``/``REPEAT``/``LOOP`` and ``GOTOF``...) and
 expressions (``expressions``), reads its words through the family's word rules with the 840D table
 (``codes``, ``block_syntax``) and selects tool data with ``D`` as ISG does
-(``postproc.isg_family.tool_data``). What the IR does not model (frames, cycles, subprograms, ``AC``/``IC``
-against the block's mode...) is kept verbatim, named (``keywords``).
+(``postproc.isg_family.tool_data``). ``MCALL CYCLE81/82`` are read on the neutral cycle IR (``cycles``), ``TRANS``
+as the neutral local offset, ``NAME P3`` as a subprogram call. What the IR does not model (other frames and
+cycles, parameters of subprograms, ``AC``/``IC`` against the block's mode...) is kept verbatim, named
+(``keywords``).
 """
 
 from __future__ import annotations
@@ -46,9 +48,9 @@ class Siemens(Dialect):
     """``MCALL CYCLE81``/``CYCLE82`` are read as the Fanuc-family words of their meaning (``cycles``: R level,
     Z depth, P dwell in ms, K0 for the call that drills nothing)."""
     NATIVE_CYCLES = frozenset()
-    """``CYCLE8x`` are not written yet: every cycle is expanded for SINUMERIK."""
-    CYCLE_SEMANTICS = "fanuc"
-    """How the cycles read move (``cycles``: only where a Fanuc cycle moves the same)."""
+    """``CYCLE8x`` are not written yet: every cycle is expanded for SINUMERIK (so no ``CYCLE_SEMANTICS``; the
+    cycles read move by Fanuc's rules, the reading pipeline's ``CannedCycleResolveSyntax("fanuc")``)."""
+
     PROGRAM_NUMBERS = True
     """``%_N_NAME_MPF`` names the main program."""
     SPINDLE_ORIENTATION = False
