@@ -27,6 +27,8 @@ CASES = {
     "gsk": DialectUnderTest("gsk", ROOT / "examples/gsk", HERE / "gsk/invalid"),
     "isg": DialectUnderTest("isg", ROOT / "examples/isg", HERE / "isg/invalid"),
     "fagor": DialectUnderTest("fagor", ROOT / "examples/fagor", HERE / "fagor/invalid"),
+    "siemens": DialectUnderTest("siemens", ROOT / "examples/siemens", HERE / "siemens/invalid",
+                                ROOT / "examples/setups/siemens_840d_mill.xml"),
     "linuxcnc": DialectUnderTest("linuxcnc", ROOT / "examples/linuxcnc", HERE / "linuxcnc/invalid", ZERO_TOOLS),
     "grbl": DialectUnderTest("grbl", HERE / "grbl", HERE / "grbl/invalid"),
     "grblhal": DialectUnderTest("grblhal", HERE / "grblhal", HERE / "grblhal/invalid",

@@ -88,7 +88,8 @@ def test_a_wrong_format_is_usage(cli):
 
 def test_the_core_declares_no_family_and_each_dialect_shows_its_own():
     """The base class names no family; the rows come from each dialect's own declarations (hand-checked:
-    Fanuc and Fagor run Fanuc's cycle rules, LinuxCNC, Mach3 and grblHAL RS274/NGC's, grbl, GSK and ISG none; the
+    Fanuc and Fagor run Fanuc's cycle rules, LinuxCNC, Mach3 and grblHAL RS274/NGC's, grbl, GSK, ISG and SINUMERIK
+    (no native cycles written) none; the
     two lathe dialects read U/W as incremental X/Z)."""
     assert (Dialect.CYCLE_SEMANTICS, dict(Dialect.INCREMENTAL_AXES)) == ("", {})
     rows = _rows(render_table(dialect_info(REGISTRY.dialects)))
@@ -96,4 +97,4 @@ def test_the_core_declares_no_family_and_each_dialect_shows_its_own():
              for i, name in enumerate(rows["capability"])}
     assert shown == {"fagor": ("fanuc", "-"), "fanuc": ("fanuc", "U=X,W=Z"), "grbl": ("-", "-"), "grblhal": ("rs274", "-"),
                      "gsk": ("-", "U=X,W=Z"), "isg": ("-", "-"), "linuxcnc": ("rs274", "-"),
-                     "mach3": ("rs274", "-")}
+                     "mach3": ("rs274", "-"), "siemens": ("-", "-")}

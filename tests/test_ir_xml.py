@@ -223,7 +223,7 @@ SAMPLES: dict[str, list[tuple[Builder, str]]] = {
         "ModalStateSyntax", "GrblBlockSyntax", "GrblhalBlockSyntax", "GrblhalCycleRules", "GrblhalProgramSyntax",
         "NgcBlockSyntax", "Mach3BlockSyntax",
         "LinuxcncProgramSyntax", "PolarSyntax", "IsgBlockSyntax", "IsgProgramSyntax", "FagorBlockSyntax",
-        "FagorProgramSyntax", "DrillingSyntax",
+        "FagorProgramSyntax", "SiemensBlockSyntax", "SiemensProgramSyntax", "DrillingSyntax",
         "PeckDrillingSyntax", "GrblhalPeckSyntax", "TappingSyntax", "BoringSyntax", "FineBoringSyntax", "BackBoringSyntax",
         "ManualBoringSyntax",
     )},
@@ -231,6 +231,8 @@ SAMPLES: dict[str, list[tuple[Builder, str]]] = {
         (lambda c: DynamicCutterCompensation("right", -0.8), '<DynamicCutterCompensation mode="right" diameter="-0.8"/>'),
         (lambda c: DynamicCutterCompensation("left", 0.4, 2),
          '<DynamicCutterCompensation mode="left" diameter="0.4" orientation="2"/>')],
+    "SiemensCycleLevels": [(lambda c: c["SiemensCycleLevels"](10.0, 2.5),
+                            '<SiemensCycleLevels retract="10.0" r="2.5"/>')],
     **CONTROL_SAMPLES,
 }
 

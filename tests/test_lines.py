@@ -27,8 +27,10 @@ def _errors(program: str, dialect: str, setup: MachineSetup | None = None) -> li
 
 
 def _metric(dialect: str, prologue: str) -> str:
-    """Fagor's metric code is G71 (its G21 is no code of the 8070 reference)."""
-    return prologue.replace("G21", "G71") if dialect == "fagor" else prologue
+    """Fagor's metric code is G71 (its G21 is no code of the 8070 reference), SINUMERIK's G710 (lengths and
+    feeds; its G21 is no code)."""
+    metric = {"fagor": "G71", "siemens": "G710"}.get(dialect)
+    return prologue.replace("G21", metric) if metric else prologue
 
 
 @pytest.mark.parametrize("dialect", READABLE)

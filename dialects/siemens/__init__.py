@@ -1,0 +1,94 @@
+"""Siemens SINUMERIK 840D sl / 828D milling dialect: reader, writer, reading pipeline, capability table.
+
+SINUMERIK is neither in the RS274 family nor in ISG's: it has its own reader (``reader``: ``=`` forms,
+R parameters, ``DEF`` variables, labels, ``IF``/``WHILE``/``FOR``/``REPEAT``/``LOOP`` and ``GOTOF``...) and
+expressions (``expressions``), reads its words through the family's word rules with the 840D table
+(``codes``, ``block_syntax``) and selects tool data with ``D`` as ISG does
+(``postproc.isg_family.tool_data``). ``MCALL CYCLE81/82`` are read on the neutral cycle IR (``cycles``), ``TRANS``
+as the neutral local offset, ``NAME P3`` as a subprogram call. What the IR does not model (other frames and
+cycles, parameters of subprograms, ``AC``/``IC`` against the block's mode...) is kept verbatim, named
+(``keywords``).
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Callable, Iterator
+
+from postproc.comments import CommentSyntax
+from postproc.cycle_words import CycleWords
+from postproc.dialect import Dialect, Lazy, Reader
+from postproc.hookspecs import hookimpl
+from postproc.rs274.order_of_execution import stops_before_motion
+from postproc.setup.machine_setup import MachineSetup
+from postproc.syntax import Pipeline
+from postproc.output.writer_base import Writer
+from postproc.xmlio import XFactory
+
+if TYPE_CHECKING:
+    from postproc.context import Context
+    from postproc.ir import Block
+
+
+def select_tool_data(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """``postproc.isg_family.tool_data.select_tool_data``, imported when a translation first lowers for
+    this dialect."""
+    from postproc.isg_family.tool_data import select_tool_data as step
+    return step(blocks, ctx, target)
+
+
+class Siemens(Dialect):
+    NAME = "siemens"
+    DESCRIPTION = "Siemens SINUMERIK 840D sl / 828D milling: R parameters, DEF variables, IF/WHILE/FOR, GOTOF labels"
+    READER = Lazy[type[Reader]](".reader:SiemensReader")
+    """Imported when a run first reads SINUMERIK (``Lazy``), as are the writer and the syntax objects."""
+    WRITER = Lazy[type[Writer]](".writer:SiemensWriter")
+    PIPELINE_FILE = "siemens.xml"
+    CYCLE_WORDS = CycleWords(names={"drill": "MCALL CYCLE81", "drill_dwell": "MCALL CYCLE82"},
+                             return_to_r="RTP=RFP+SDIS", level="R", peck="Q", shift="Q", dwell="P", repeat=("K",))
+    """``MCALL CYCLE81``/``CYCLE82`` are read as the Fanuc-family words of their meaning (``cycles``: R level,
+    Z depth, P dwell in ms, K0 for the call that drills nothing)."""
+    NATIVE_CYCLES = frozenset()
+    """``CYCLE8x`` are not written yet: every cycle is expanded for SINUMERIK (so no ``CYCLE_SEMANTICS``; the
+    cycles read move by Fanuc's rules, the reading pipeline's ``CannedCycleResolveSyntax("fanuc")``)."""
+
+    PROGRAM_NUMBERS = True
+    """``%_N_NAME_MPF`` names the main program."""
+    SPINDLE_ORIENTATION = False
+    """``SPOS`` is not written yet (M19 is the machine builder's [?])."""
+    CUTTER_COMPENSATION = True
+    """G40/G41/G42 with the radius of the selected D."""
+    TOOL_LENGTH_OFFSET = True
+    """``D<n>`` selects cutting edge n, length and radius together (``postproc.isg_family.tool_data``)."""
+    LENGTH_TOGGLES = False
+    """No length on/off code: the selected D's length applies [K: 840D Fundamentals "Tool offsets"]."""
+    COMMENTS = CommentSyntax(parens=False, semicolon=True)
+    """``;`` to the end of the block [K: 802D manual p.133]; ``(`` is an expression's."""
+    PROGRAMS = False
+    """Variables and control flow are read (and run, to translate); the writer spells no statement yet, so a
+    program that computes reaches SINUMERIK flattened (SINUMERIK to SINUMERIK is copied as it is)."""
+    LOWERING = (stops_before_motion, select_tool_data)
+    """A spindle stop or coolant off that the source made before its block's motion goes in a block of its
+    own before it (SINUMERIK acts on M5/M9 after the block's motion, as Fanuc [?]); another family's length
+    and radius registers become the D that selects them (``select_tool_data``)."""
+
+    @classmethod
+    def python_pipeline(cls, setup: MachineSetup) -> Pipeline:
+        """``siemens.xml``, built in Python."""
+        from postproc.cycles.resolve import CannedCycleResolveSyntax
+        from postproc.syntaxes.modal_state import ModalStateSyntax
+        from .block_syntax import SiemensBlockSyntax
+        from .program import SiemensProgramSyntax
+        return Pipeline(cls.NAME, [SiemensProgramSyntax(), SiemensBlockSyntax(), CannedCycleResolveSyntax("fanuc"),
+                                   ModalStateSyntax()])
+
+
+@hookimpl
+def postproc_register_dialects(register: Callable[[type], None]) -> None:
+    register(Siemens)
+
+
+@hookimpl
+def postproc_register_xml(factory: XFactory) -> None:
+    factory.register_lazy("SiemensBlockSyntax", f"{__name__}.block_syntax:SiemensBlockSyntax")
+    factory.register_lazy("SiemensProgramSyntax", f"{__name__}.program:SiemensProgramSyntax")
+    factory.register_lazy("SiemensCycleLevels", f"{__name__}.cycles:CycleLevels")

@@ -1,0 +1,84 @@
+"""SiemensBlockSyntax: the SINUMERIK reading of a block's words, the family's word rules with the 840D table.
+
+* A number without a decimal point is in mm/inch (``X10`` = 10 mm) [K: SINUMERIK has no least-increment
+  input], whatever the set-up's ``Input`` says.
+* ``G4 F2.5`` dwells 2.5 seconds: that F is the time, not a feed (the feed in force stays) [K: 840D
+  Fundamentals "Dwell time (G4)"; Autodesk post ``onDwell``]; ``G4 S`` (revolutions) is not modelled.
+* ``G70``/``G71`` set the units of lengths only: an F in a program under them is in the basic system's
+  unit (the set-up's machine units) [K: Fundamentals "Inch/metric dimensions"], so an F where they differ
+  is a located error (G700/G710 say it without doubt).
+* ``D<n>`` selects cutting edge n of the tool: its length applies (``D0``: none) and G41/G42 take its
+  radius (``postproc.isg_family.tool_data``, as on ISG).
+"""
+
+from __future__ import annotations
+
+from typing import Any, ClassVar
+
+from postproc.context import Context
+from postproc.errors import ProgramError
+from postproc.expr import Expr
+from postproc.ir import Block, Dwell, ReturnLevel
+from postproc.isg_family.tool_data import read_tool_data
+from postproc.rs274.block_syntax import WordBlockSyntax, col_of_word
+from postproc.rs274.codes import CodeTable, g_key
+
+from .codes import CODES, GEOMETRY_UNITS
+from .cycles import MCALL_KEY, CycleLevels, SiemensCycleRules
+
+GEOMETRY_KEY = "siemens_geometry_units"
+"""``ctx.state.extra`` key: True while G70/G71 (lengths only) is the units code in force."""
+
+
+class SiemensBlockSyntax(WordBlockSyntax):
+    """Words -> neutral sections, for SINUMERIK 840D sl / 828D mills."""
+
+    XNAME = "SiemensBlockSyntax"
+    __slots__ = ()
+    DIALECT: ClassVar[str] = "siemens"
+    TITLE: ClassVar[str] = "SINUMERIK"
+    CODES: ClassVar[CodeTable] = CODES
+    POINTLESS_IN_UNITS: ClassVar[bool] = True
+
+    def build(self, block: Block, ctx: Context) -> None:
+        levels = block.sections.pop(CycleLevels.KEY, None)
+        if isinstance(levels, CycleLevels):
+            block.add(ReturnLevel(SiemensCycleRules.call(block, ctx, levels)))
+        elif "CycleCancel" in block.sections:
+            ctx.state.extra.pop(MCALL_KEY, None)
+        super().build(block, ctx)
+
+    def g_sections(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],
+                   used: set[str], cycle_block: bool) -> None:
+        if "CycleCall" in block.sections:
+            used.update("RZKP")  # the words of ``MCALL CYCLE8x`` (``cycles``), read by the resolve step
+        elif ctx.state.extra.get(MCALL_KEY) and ctx.state.cycle is not None:
+            SiemensCycleRules.position(block, ctx, codes, values)
+        units = codes.get("06")
+        extra = ctx.state.extra
+        if units is not None:
+            extra[GEOMETRY_KEY] = g_key(units[3]) in GEOMETRY_UNITS
+        dwell = any(kind == "dwell" for _, kind, _, _ in codes.values())
+        if "F" in values and not dwell and extra.get(GEOMETRY_KEY):
+            selected = units[2] if units is not None else ctx.state.units
+            if selected != ctx.setup.machine.units:
+                raise ProgramError(f"F under G70/G71 is in the basic system's unit ({ctx.setup.machine.units}), not "
+                                   f"the program's {selected}: write G700/G710 to program the feed in {selected}",
+                                   ctx.at(block, ctx.column_of(block, "F")))
+        super().g_sections(block, ctx, codes, values, used, cycle_block)
+        read_tool_data(block, ctx, values, used, toggles=False, first=0)
+
+    def _dwell(self, block: Block, ctx: Context, values: dict[str, Any], used: set[str], num: str) -> None:
+        """``G4 F<seconds>``; the F is popped so no feed is made of it."""
+        at = ctx.at(block, col_of_word(block, "G", num))
+        if "S" in values:
+            raise ProgramError("G4 S (a dwell in spindle revolutions) is not modelled", at)
+        if "F" not in values:
+            raise ProgramError("G4 needs its time in F (seconds): G4 F2.5", at)
+        time = values.pop("F")
+        if isinstance(time, Expr):
+            block.add(Dwell(time))
+            return
+        if time < 0:
+            raise ProgramError("a dwell time cannot be negative", at)
+        block.add(Dwell(float(time)))

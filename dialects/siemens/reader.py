@@ -1,0 +1,642 @@
+"""SINUMERIK reader: physical lines -> blocks with words, assignments, control statements and jump labels.
+
+Block structure [K: 802D programming manual, "block structure" (manualslib.de manual 107156 p.133);
+840D sl Job planning 02/2011]: ``/`` skip (``/0``-``/9``; a plain ``/`` is ``/0``), ``N10`` or ``:10``
+(a main block), a jump label ``NAME:``, then words, then a ``;`` comment to the end of the line.
+Addresses with more than one letter, expressions and R parameters as values take ``=``
+(``X=R2``, ``CR=5``, ``X=AC(10)``); ``R1=5`` and ``DEPTH=R1*2`` (a ``DEF`` variable) are assignments.
+
+Read into neutral sections:
+
+* ``%_N_NAME_MPF`` / ``%_N_NAME_SPF`` headers (``ProgramStart`` named ``NAME_MPF``/``NAME_SPF``);
+* skip levels: ``/k`` is the neutral level ``k + 1`` (``/`` and ``/0`` are level 1, Fanuc's ``/``);
+* ``CR=`` (arc radius, negative for more than 180 degrees, as Fanuc's R [K]) as the arc's radius word;
+* ``X=AC(..)``/``X=IC(..)``: the value as a plain word when the block's own ``G90``/``G91`` says the same
+  thing (and ``I=IC(..)``: centres are incremental by default [K]); otherwise the per-address distance
+  mode is not modelled and the block is kept verbatim;
+* ``MCALL CYCLE81(..)``/``MCALL CYCLE82(..)`` and a bare ``MCALL`` (``cycles``);
+* ``TRANS X.. Y.. Z..`` (numbers, alone in its block): the neutral local offset (``trans``);
+* ``DEF REAL|INT|BOOL NAME[=value], ...`` (an assignment of the value, 0 when none is given [K]);
+* ``IF``/``ELSE``/``ENDIF``, ``WHILE``/``ENDWHILE``, ``FOR``/``TO``/``ENDFOR``, ``REPEAT``/``UNTIL``,
+  ``LOOP``/``ENDLOOP`` (liufang-robot SPEC; Job planning p.107 [K]); ``GOTOF``/``GOTOB``/``GOTO``/``GOTOC``
+  to a label or a block number, alone or after ``IF cond``. A label must be unique in its file and a
+  ``GOTOF``/``GOTOB`` target must lie in its direction (checked when the file ends): the neutral jump
+  searches forward, then from the start, which is then each of them exactly.
+
+Subprograms: ``NAME`` / ``NAME P3`` alone in a block calls ``NAME.SPF`` (3 times); ``PROC NAME`` (no
+parameters) or an ``_SPF`` header makes the file a subprogram; ``RET``/``M17`` return.
+
+Kept verbatim (``NativeCode`` tagged ``siemens``: round trip byte for byte, refused by every other dialect
+and by the simulator, by name): frames (``TRANS``, ``ROT``...), cycles (``CYCLE81``...), ``MCALL``,
+calls with parameters and ``PROC`` with parameters, every other instruction word (``SOFT``, ``BRISK``, ``SPOS``...),
+multi-letter addresses other than ``CR`` (``AR=``, ``TURN=``, ``I1=``...), ``T="name"``, string, array,
+``CHAR``/``STRING``/``AXIS``/``FRAME`` declarations and the operators the IR lacks (``DIV``, ``B_AND``...).
+
+Errors are reported per block; the block is kept as text only, and reading goes on.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Iterable, Iterator
+
+from postproc.control import (
+    CONTROL, Assign, Call, Do, Else, EndFor, EndIf, EndWhile, For, Goto, GotoLabel, If, Label, Return, Until, While,
+)
+from postproc.dialect import Reader
+from postproc.errors import Location, ParseError, PostprocError
+from postproc.expr import Binary, Expr, Func, Num, Var
+from postproc.frames.section import FrameChange
+from postproc.ir import Block, BlockDelete, Comments, CycleCall, CycleCancel, NativeCode, ProgramStart, Section, Sequence
+from postproc.isg_family.expressions import Unmodelled
+from postproc.rs274.expressions import ExprSyntaxError
+from postproc.rs274.lexer import split_lines
+
+from .cycles import KINDS, PARAMETERS, cycle_words
+from .expressions import name_at, parse_expr, parse_variable, skip
+from .keywords import INSTRUCTIONS, describe
+
+ADDRESSES = frozenset("GXYZABCIJKFSTDMH")
+"""Single-letter addresses a word may have."""
+SKIP_LEVELS = 9
+"""Block skip ``/0`` ... ``/9`` [K]."""
+TYPES = {"REAL": "real", "INT": "int", "BOOL": "bool"}
+"""DEF types whose values the IR models (numbers)."""
+_DIGITS = frozenset("0123456789")
+_NUMBER_START = frozenset("0123456789+-.")
+_NAME_START = frozenset("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz_")
+_OPENERS = {"IF": "ENDIF", "WHILE": "ENDWHILE", "FOR": "ENDFOR", "REPEAT": "UNTIL", "LOOP": "ENDLOOP"}
+_CLOSERS = {close: open_ for open_, close in _OPENERS.items()}
+_JUMPS = ("GOTOF", "GOTOB", "GOTOC", "GOTO")
+
+
+class SiemensReader(Reader):
+    def read(self, lines: Iterable[str]) -> Iterator[Block]:
+        report = self.ctx.diagnostics.error
+        state = _State(self.ctx.file, subprogram=self.ctx.file.upper().endswith(".SPF"))
+        for number, text, eol in split_lines(lines):
+            try:
+                yield state.block(number, text, eol)
+            except ExprSyntaxError as err:
+                report(err.at(self.ctx.file, number) if err.location is None else err)
+                yield Block(number, text, eol)
+            except PostprocError as err:
+                report(err)
+                yield Block(number, text, eol)
+        for problem in state.finish():
+            report(problem)
+
+
+@dataclass
+class _Jump:
+    word: str
+    target: str
+    """A label's name (lower case) or ``N<number>``."""
+    line: int
+    col: int
+
+
+@dataclass
+class _State:
+    """What reading a file remembers between blocks."""
+
+    file: str
+    stack: list[tuple[str, str, int]] = field(default_factory=list)
+    """Open constructs: (opening word, label, line)."""
+    count: int = 0
+    labels: dict[str, list[int]] = field(default_factory=dict)
+    """Jump label (lower case) or ``N<number>`` -> the lines that carry it."""
+    jumps: list[_Jump] = field(default_factory=list)
+    types: dict[str, str] = field(default_factory=dict)
+    """Declared user variables (lower case) -> their type."""
+    subprogram: bool = False
+    """The file is a subprogram: a ``.SPF`` file (every file a call loads is one), an ``_SPF`` header or a
+    ``PROC`` line."""
+
+    def error(self, line: int, col: int, message: str) -> ParseError:
+        return ParseError(message, Location(self.file, line, col))
+
+    def block(self, number: int, text: str, eol: str) -> Block:
+        block = Block(number, text, eol)
+        code, comment = _strip_comment(text)
+        if comment is not None:
+            block.add(Comments([comment]))
+        try:
+            self.lex(block, code)
+        except Unmodelled as err:
+            self.native(block, f"{err.what} (not modelled)")
+        return block
+
+    def native(self, block: Block, what: str) -> None:
+        comments = block.sections.get("Comments")
+        block.sections.clear()
+        block.words.clear()
+        block.values.clear()
+        if comments is not None:
+            block.add(comments)
+        block.add(NativeCode("siemens", what, block.text or ""))
+
+    # -- the block's structure --------------------------------------------------------------------------
+    def lex(self, block: Block, code: str) -> None:
+        line = block.line
+        n = len(code)
+        pos = skip(code, 0)
+        if pos < n and code[pos] == "%":
+            name = self.header(code, pos, line)
+            if name.endswith("_SPF"):
+                self.subprogram = True  # a subprogram file: its header names it, and starts nothing
+                if "Comments" not in block.sections:
+                    block.add(Comments([code.strip()]))
+                return
+            block.add(ProgramStart(None, name))
+            return
+        if pos < n and code[pos] == "/":
+            end = pos + 1
+            while end < n and code[end] in _DIGITS:
+                end += 1
+            level = int(code[pos + 1:end]) if end > pos + 1 else 0
+            if level > SKIP_LEVELS:
+                raise self.error(line, pos + 1, f"block skip level /{level} (levels are /0 to /{SKIP_LEVELS})")
+            block.add(BlockDelete(level + 1))
+            pos = skip(code, end)
+        if pos < n and (code[pos] in "Nn:" and code[pos + 1:pos + 2].isdigit()):
+            end = pos + 1
+            while end < n and code[end] in _DIGITS:
+                end += 1
+            if end < n and code[end] == ".":
+                raise self.error(line, pos + 1, "a block number is a whole number")
+            number = code[pos + 1:end]
+            block.words.append(("N", number))
+            block.add(Sequence(int(number)))
+            self.labels.setdefault(f"N{int(number)}", []).append(line)
+            pos = skip(code, end)
+        if pos < n and code[pos] in _NAME_START:
+            end = name_at(code, pos)
+            if code[end:end + 1] == ":" and code[end + 1:end + 2] != "=":
+                name = code[pos:end].lower()
+                block.add(Label(name))
+                self.labels.setdefault(name, []).append(line)
+                pos = skip(code, end + 1)
+        if pos >= n:
+            return
+        if code[pos] in _NAME_START:
+            end = name_at(code, pos)
+            word = code[pos:end].upper()
+            if word in _OPENERS or word in _CLOSERS or word in ("ELSE", *_JUMPS):
+                block.add(self.statement(code, pos, end, word, line))
+                return
+            if word == "DEF":
+                self.declare(block, code, end)
+                return
+            if word in ("PROC", "RET"):
+                self.procedure(block, code, pos, end, word)
+                return
+            if word == "TRANS":
+                self.trans(block, code, pos, end)
+                return
+            if word == "MCALL":
+                self.mcall(block, code, pos, end)
+                return
+            what = describe(word)
+            if what is not None:
+                raise Unmodelled(what, pos)
+            if self.call(block, code, pos, end):
+                return
+        self.words(block, code, pos)
+        self.returns(block, code)
+
+    def header(self, code: str, pos: int, line: int) -> str:
+        """``%_N_NAME_MPF`` -> ``NAME_MPF`` [K: the program header of an 840D file; a name starts with a letter
+        or ``_`` (Fundamentals, "Program names": the first two characters, not checked here [?])]."""
+        rest = code[pos + 1:].strip()
+        if not rest.startswith("_N_") or not (rest.endswith("_MPF") or rest.endswith("_SPF")) \
+                or len(rest) <= 7 or any(not (c.isalnum() or c == "_") for c in rest) or rest[3].isdigit():
+            raise self.error(line, pos + 1, f"a program header is %_N_<NAME>_MPF or %_N_<NAME>_SPF, not %{rest}")
+        return rest[3:]
+
+    # -- frames -----------------------------------------------------------------------------------------
+    def trans(self, block: Block, code: str, pos: int, end: int) -> None:
+        """``TRANS X10 Y5`` replaces the whole programmable frame by that offset (an axis not named: 0), and
+        ``TRANS`` alone clears it [K: SINUMERIK ONE NC programming 12/2019 p.309, "the plain forms replace
+        the programmable frame"; 808D manual p.56]. Alone in its block ("Frame statements must be programmed
+        in a separate NC block" [K]). Read as the neutral local offset (Fanuc G52's meaning) on X, Y and Z:
+        exact, as the rotation, scaling and mirroring it would also clear are never modelled (their blocks
+        are kept verbatim, so a program with them is not simulated). Computed values, other axes and the
+        additive ``ATRANS`` are kept verbatim. A work offset selected later keeps it, as Fanuc's G52 stays in
+        every work system [K: the programmable frame is chained after the settable one (G54...), which
+        replaces only its own]."""
+        words: dict[str, float | Expr] = {"X": 0.0, "Y": 0.0, "Z": 0.0}
+        n = len(code)
+        at = skip(code, end)
+        while at < n:
+            letter = code[at].upper()
+            if letter not in "XYZ":
+                raise Unmodelled("TRANS with other than X, Y, Z offsets", at)
+            start = at + 1
+            stop = start + (code[start:start + 1] in ("+", "-"))
+            while stop < n and (code[stop] in _DIGITS or code[stop] == "."):
+                stop += 1
+            number = code[start:stop]
+            if not _plain(number) or stop < n and code[stop] not in " \t":
+                raise Unmodelled("TRANS with computed or malformed offsets", at)
+            words[letter] = float(number)
+            at = skip(code, stop)
+        block.add(FrameChange("local", words, "fanuc", "siemens", code[pos:].strip()))
+
+    def mcall(self, block: Block, code: str, pos: int, end: int) -> None:
+        """``MCALL CYCLE81(..)``/``MCALL CYCLE82(..)`` with number parameters: the cycle's data block
+        (``cycles``); a bare ``MCALL`` cancels it. Other modal calls are kept verbatim."""
+        at = skip(code, end)
+        if at >= len(code):
+            block.add(CycleCancel())
+            return
+        stop = name_at(code, at)
+        name = code[at:stop].upper()
+        if name not in KINDS or code[skip(code, stop):skip(code, stop) + 1] != "(":
+            raise Unmodelled(f"MCALL {name or '..'} (a modal subprogram or cycle call)", pos)
+        params: list[float | None] = []
+        at = skip(code, stop) + 1
+        while True:
+            at = skip(code, at)
+            if code[at:at + 1] in (",", ")"):
+                params.append(None)
+            else:
+                at, value = parse_expr(code, at)
+                if not isinstance(value, Num):
+                    raise Unmodelled(f"MCALL {name} with computed parameters", pos)
+                params.append(value.value)
+                at = skip(code, at)
+            if code[at:at + 1] == ",":
+                at += 1
+                continue
+            if code[at:at + 1] != ")":
+                raise self.error(block.line, at + 1, f"',' or ')' expected in {name}(..)")
+            break
+        if skip(code, at + 1) < len(code):
+            raise self.error(block.line, skip(code, at + 1) + 1, f"MCALL {name}(..) is alone in its block")
+        if len(params) > len(PARAMETERS[name]):
+            raise Unmodelled(f"MCALL {name} with parameters after {PARAMETERS[name][-1]} (GMODE, DMODE...)", pos)
+        try:
+            words, levels = cycle_words(name, params, pos)
+        except ValueError as err:
+            raise self.error(block.line, pos + 1, str(err)) from None
+        block.words.extend(words)
+        block.add(levels)
+        block.add(CycleCall(KINDS[name]))
+
+    # -- subprograms -------------------------------------------------------------------------------------
+    def procedure(self, block: Block, code: str, pos: int, end: int, word: str) -> None:
+        """``PROC NAME`` opens a subprogram without parameters (the file is its body); ``RET`` returns [K:
+        840D Fundamentals, "Subprograms"]. Parameters (``PROC NAME(REAL A)``) and ``SAVE``/``DISPLOF`` are
+        not modelled (kept verbatim)."""
+        at = skip(code, end)
+        if word == "RET":
+            if at < len(code):
+                raise Unmodelled("RET with a target or a value", at)
+            block.add(Return())
+            return
+        stop = name_at(code, at)
+        if stop == at or code[at] not in _NAME_START:
+            raise self.error(block.line, at + 1, "PROC needs a subprogram name")
+        if skip(code, stop) < len(code):
+            raise Unmodelled("PROC with parameters or attributes (SAVE, DISPLOF)", skip(code, stop))
+        self.subprogram = True
+        if "Comments" not in block.sections:
+            block.add(Comments([code[pos:].strip()]))
+
+    def call(self, block: Block, code: str, pos: int, end: int) -> bool:
+        """``NAME`` or ``NAME P3`` alone in its block: a call of subprogram ``NAME`` (file ``NAME.SPF``), run
+        3 times, with its own local variables [K: 840D Fundamentals, "Subprogram call", "Program repetition
+        P"]. ``NAME(..)`` (parameters) is not modelled. Anything else is no call (the words are read)."""
+        name = code[pos:end]
+        upper = name.upper()
+        n = len(code)
+        at = skip(code, end)
+        if upper[:1] == "R" and upper[1:].isdigit() or name.lower() in self.types or upper[:1] == "$" \
+                or len(name) == 1 or upper[:1] in ADDRESSES and upper[1:2] in _NUMBER_START \
+                or code[at:at + 1] == "=":
+            return False
+        if code[at:at + 1] == "(":
+            raise Unmodelled(f"a call of {upper} with parameters", pos)
+        repeat: Expr | None = None
+        if at < n:
+            if code[at] not in "Pp":
+                raise Unmodelled(f"'{name}' (an instruction or a subprogram call)", pos)
+            start = skip(code, at + 1 + (code[skip(code, at + 1):skip(code, at + 1) + 1] == "="))
+            stop = start
+            while stop < n and code[stop] in _DIGITS:
+                stop += 1
+            if stop == start or skip(code, stop) < n:
+                raise self.error(block.line, at + 1, f"a call of {upper} repeats a whole number of times: {upper} P3")
+            repeat = Num(float(int(code[start:stop])))
+        block.add(Call(upper, repeat=repeat, kind="macro"))
+        return True
+
+    def returns(self, block: Block, code: str) -> None:
+        """``M17`` returns from a subprogram; ``M2``/``M30`` in a subprogram file is refused (whether it
+        returns or ends the program is not confirmed here [?])."""
+        for i, (letter, num) in enumerate(block.words):
+            if letter not in "Mm" or not num.isdigit():
+                continue
+            if int(num) == 17:
+                if CONTROL in block.sections:
+                    raise self.error(block.line, 1, "M17: one call or return per block")
+                del block.words[i]
+                block.add(Return())
+                return
+            if int(num) in (2, 30) and self.subprogram:
+                raise self.error(block.line, 1, f"M{num} in a subprogram: write RET or M17 (whether M{num} returns "
+                                                "or ends the program is not confirmed here)")
+
+    # -- control statements -----------------------------------------------------------------------------
+    def open(self, word: str, line: int) -> str:
+        self.count += 1
+        label = str(self.count)
+        self.stack.append((word, label, line))
+        return label
+
+    def close(self, word: str, line: int, col: int) -> str:
+        opener = _CLOSERS[word]
+        if not self.stack or self.stack[-1][0] != opener:
+            found = f" (the innermost open construct is {self.stack[-1][0]} from line {self.stack[-1][2]})" \
+                if self.stack else ""
+            raise self.error(line, col, f"{word} does not close an open {opener}{found}")
+        return self.stack.pop()[1]
+
+    def statement(self, code: str, pos: int, end: int, word: str, line: int) -> Section:
+        col = pos + 1
+        n = len(code)
+
+        def done(at: int, section: Section) -> Section:
+            at = skip(code, at)
+            if at < n:
+                raise self.error(line, at + 1, f"unexpected {code[at:].strip()[:20]!r} after {word}")
+            return section
+
+        if word in _JUMPS:
+            return done(*self.jump(code, end, word, line, None))
+        if word == "IF":
+            at, cond = parse_expr(code, end)
+            after = skip(code, at)
+            jump_end = name_at(code, after)
+            jump = code[after:jump_end].upper()
+            if jump in _JUMPS:
+                return done(*self.jump(code, jump_end, jump, line, cond))
+            return done(at, If(self.open("IF", line), cond))
+        if word == "ELSE":
+            if not self.stack or self.stack[-1][0] != "IF":
+                raise self.error(line, col, "ELSE outside IF ... ENDIF")
+            return done(end, Else(self.stack[-1][1]))
+        if word == "ENDIF":
+            return done(end, EndIf(self.close(word, line, col)))
+        if word == "WHILE":
+            at, cond = parse_expr(code, end)
+            return done(at, While(self.open(word, line), cond))
+        if word == "ENDWHILE":
+            return done(end, EndWhile(self.close(word, line, col)))
+        if word == "LOOP":
+            return done(end, While(self.open(word, line), Num(1.0)))
+        if word == "ENDLOOP":
+            return done(end, EndWhile(self.close(word, line, col)))
+        if word == "REPEAT":
+            if skip(code, end) < n:
+                raise Unmodelled("REPEAT of a program section (REPEAT label P=n)", pos)
+            return done(end, Do(self.open(word, line)))
+        if word == "UNTIL":
+            at, cond = parse_expr(code, end)
+            return done(at, Until(self.close(word, line, col), cond))
+        if word == "FOR":
+            return self.for_loop(code, end, line)
+        return done(end, EndFor(self.close(word, line, col)))  # ENDFOR
+
+    def for_loop(self, code: str, end: int, line: int) -> Section:
+        """``FOR R1=0 TO 10`` / ``FOR I=1 TO R2``: counting up by 1 while the counter is at most the end
+        value [K: Job planning "FOR counter loop"; the counter is a variable or an R parameter]."""
+        start = skip(code, end)
+        at, counter = parse_variable(code, start)
+        if counter.name is not None and counter.name.startswith("$"):
+            raise self.error(line, start + 1, "a FOR counter is an R parameter or a user variable")
+        at = skip(code, at)
+        if code[at:at + 1] != "=":
+            raise self.error(line, at + 1, "FOR needs '=': FOR R1=0 TO 10")
+        at, first = parse_expr(code, at + 1)
+        to = skip(code, at)
+        if code[to:to + 2].upper() != "TO" or code[to + 2:to + 3] not in ("", " ", "\t", "(", "R", "r") \
+                and code[to + 2:to + 3].isalnum():
+            raise self.error(line, to + 1, "FOR needs TO: FOR R1=0 TO 10")
+        at, last = parse_expr(code, to + 2)
+        rest = skip(code, at)
+        if rest < len(code):
+            raise self.error(line, rest + 1, f"unexpected {code[rest:].strip()[:20]!r} after FOR")
+        return For(self.open("FOR", line), counter, first, last, Num(1.0))
+
+    def jump(self, code: str, end: int, word: str, line: int, cond: Expr | None) -> tuple[int, Section]:
+        at = skip(code, end)
+        stop = name_at(code, at)
+        target = code[at:stop]
+        if not target:
+            raise self.error(line, at + 1, f"{word} needs a label or a block number")
+        if target[:1] in "Nn" and target[1:].isdigit():
+            key = f"N{int(target[1:])}"
+            section: Section = Goto(Num(float(int(target[1:]))), cond)
+        elif target[:1] in _NAME_START:
+            key = target.lower()
+            section = GotoLabel(key, cond)
+        else:
+            raise self.error(line, at + 1, f"{word} needs a label or a block number, not {target!r}")
+        self.jumps.append(_Jump(word, key, line, at + 1))
+        return stop, section
+
+    # -- declarations and words -------------------------------------------------------------------------
+    def declare(self, block: Block, code: str, end: int) -> None:
+        """``DEF REAL A, B=2``: each variable gets its value (0 when none is given [K])."""
+        at = skip(code, end)
+        type_end = name_at(code, at)
+        kind = code[at:type_end].upper()
+        if kind not in TYPES:
+            raise Unmodelled(f"a DEF {kind or '..'} declaration (only REAL, INT and BOOL values are modelled)", at)
+        items: list[tuple[Var, Expr]] = []
+        at = type_end
+        while True:
+            at = skip(code, at)
+            name_end = name_at(code, at)
+            name = code[at:name_end]
+            if not name or code[at] not in _NAME_START:
+                raise self.error(block.line, at + 1, "DEF needs a variable name")
+            upper = name.upper()
+            if upper[:1] == "R" and upper[1:].isdigit() or len(name) == 1 and upper in ADDRESSES:
+                raise self.error(block.line, at + 1, f"'{name}' is an address or an R parameter, not a variable name")
+            if code[skip(code, name_end):skip(code, name_end) + 1] == "[":
+                raise Unmodelled("arrays", at)
+            var = Var(name=name.lower())
+            self.types[name.lower()] = TYPES[kind]
+            at = skip(code, name_end)
+            value: Expr = Num(0.0)
+            if code[at:at + 1] == "=":
+                at, value = parse_expr(code, at + 1)
+                at = skip(code, at)
+            items.append((var, self.stored(var, value)))
+            if code[at:at + 1] == ",":
+                at += 1
+                continue
+            if at < len(code):
+                raise self.error(block.line, at + 1, f"unexpected {code[at:].strip()[:20]!r} in DEF")
+            break
+        block.add(Assign(items))
+
+    def stored(self, var: Var, value: Expr) -> Expr:
+        """What a typed variable holds: an INT the rounded value [K: REAL -> INT conversion rounds], a BOOL
+        1 or 0 (non-zero is TRUE [K])."""
+        kind = self.types.get(var.name or "")
+        if kind == "int" and not (isinstance(value, Num) and value.value.is_integer()):
+            return Func("round", [value])
+        if kind == "bool" and not (isinstance(value, Num) and value.value in (0.0, 1.0)):
+            return Binary("ne", value, Num(0.0))
+        return value
+
+    def words(self, block: Block, code: str, pos: int) -> None:
+        n = len(code)
+        assigns: list[tuple[Var, Expr]] = []
+        modes: list[tuple[str, str, int]] = []
+        seen: set[str] = set()
+        while True:
+            pos = skip(code, pos)
+            if pos >= n:
+                break
+            c = code[pos]
+            up = c.upper()
+            if c not in _NAME_START and c != "$":
+                raise self.error(block.line, pos + 1, f"unexpected character {c!r}")
+            end = name_at(code, pos)
+            eq = skip(code, end)
+            assigned = code[eq:eq + 1] == "=" and code[eq + 1:eq + 2] != "="
+            name = code[pos:end]
+            upper = name.upper()
+            if assigned and (upper[:1] == "R" and upper[1:].isdigit() or name.lower() in self.types
+                             or upper[:1] == "$"):
+                target = parse_variable(code, pos)[1]
+                at, value = parse_expr(code, eq + 1)
+                assigns.append((target, self.stored(target, value)))
+                pos = at
+                continue
+            single = end == pos + 1 or upper[1:2].isdigit()
+            if up in ADDRESSES and assigned and end == pos + 1:
+                letter = c
+            elif upper == "CR" and assigned:
+                letter = "R"
+            elif up in ADDRESSES and single and not assigned and code[pos + 1:pos + 2] in _NUMBER_START:
+                letter = c
+            elif up in ADDRESSES and end == pos + 1:
+                raise self.error(block.line, pos + 1, f"address {up} needs a value")
+            else:
+                if upper[:1] == "$":
+                    raise self.error(block.line, pos + 1, f"a system variable {name} alone: set it with "
+                                                          f"{name}=<value> or use it as a value (X={name})")
+                what = describe(upper) or (f"the address {upper}= " if assigned else
+                                           f"'{name}' (an instruction or a subprogram call)")
+                raise Unmodelled(what, pos)
+            key = letter.upper()
+            if key not in "GM" and key in seen:
+                raise self.error(block.line, pos + 1, f"address {key} appears twice in one block")
+            seen.add(key)
+            if assigned:
+                pos = self.value(block, code, pos, eq + 1, letter, modes)
+            else:
+                pos = self.number(block, code, pos, letter)
+        if modes:
+            self.distance_modes(block, modes)
+        if assigns:
+            block.add(Assign(assigns))
+
+    def number(self, block: Block, code: str, pos: int, letter: str) -> int:
+        n = len(code)
+        start = pos + 1
+        end = start
+        if end < n and code[end] in "+-":
+            end += 1
+        digits = end
+        while end < n and code[end] in _DIGITS:
+            end += 1
+        if end < n and code[end] == ".":
+            end += 1
+            while end < n and code[end] in _DIGITS:
+                end += 1
+        number = code[start:end]
+        if end == digits or number.lstrip("+-") == ".":
+            raise self.error(block.line, pos + 1, f"address {letter.upper()} needs a value")
+        block.words.append((letter, number))
+        return end
+
+    def value(self, block: Block, code: str, pos: int, start: int, letter: str,
+              modes: list[tuple[str, str, int]]) -> int:
+        """``X=10``, ``X=R1*2``, ``X=AC(10)``; a ``"string"`` (``T="DRILL"``) is not modelled."""
+        at = skip(code, start)
+        if code[at:at + 1] == '"':
+            raise Unmodelled(f"{letter.upper()}=\"..\" (a name as the value)", pos)
+        head = code[at:at + 3].upper()
+        mode = ""
+        if head in ("AC(", "IC("):
+            mode = head[:2]
+            modes.append((letter.upper(), mode, pos))
+            at += 2
+        if code[at:at + 3].upper() in ("DC(", "ACP", "ACN"):
+            raise Unmodelled(f"{letter.upper()}={code[at:at + 3].upper().rstrip('(')}() (rotary positioning)", pos)
+        end, value = parse_expr(code, at)
+        text = code[at:end].strip()
+        if mode:
+            text = text[1:-1].strip() if text.startswith("(") and text.endswith(")") else text
+        if isinstance(value, Num) and _plain(text):
+            block.words.append((letter, text))
+        else:
+            block.words.append((letter, text))
+            block.values[letter.upper()] = value
+        return end
+
+    def distance_modes(self, block: Block, modes: list[tuple[str, str, int]]) -> None:
+        """``=AC()``/``=IC()`` as plain values where the block's own G90/G91 means the same (and ``IC`` on a
+        centre, incremental by default); else the per-address mode is not modelled."""
+        codes = {num.lstrip("0") for letter, num in block.words if letter in "Gg"}
+        for letter, mode, pos in modes:
+            if letter in "IJK" and mode == "IC":
+                continue
+            if letter in "XYZABC" and (mode == "AC" and "90" in codes or mode == "IC" and "91" in codes):
+                continue
+            raise Unmodelled(f"{letter}={mode}(..) (a per-address distance mode; written plain in a block "
+                             f"with the same G90/G91 it is read)", pos)
+
+    def finish(self) -> list[ParseError]:
+        errors = [self.error(line, 1, f"{word} is never closed ({_OPENERS[word]} missing)")
+                  for word, _, line in self.stack]
+        for jump in self.jumps:
+            lines = self.labels.get(jump.target, [])
+            shown = jump.target.upper() if jump.target.startswith("N") else jump.target
+            if len(lines) > 1:
+                errors.append(self.error(jump.line, jump.col, f"{jump.word} {shown}: the target is on more than "
+                                                              f"one line ({', '.join(map(str, lines))})"))
+            elif not lines:
+                errors.append(self.error(jump.line, jump.col, f"{jump.word} {shown}: no such target in this file"))
+            elif jump.word == "GOTOF" and lines[0] <= jump.line:
+                errors.append(self.error(jump.line, jump.col, f"GOTOF {shown}: the target (line {lines[0]}) is not "
+                                                              f"after the jump (GOTOF searches forward)"))
+            elif jump.word == "GOTOB" and lines[0] > jump.line:
+                errors.append(self.error(jump.line, jump.col, f"GOTOB {shown}: the target (line {lines[0]}) is not "
+                                                              f"before the jump (GOTOB searches backward)"))
+        return errors
+
+
+def _plain(text: str) -> bool:
+    body = text[1:] if text[:1] in "+-" else text
+    return bool(body) and body.replace(".", "", 1).isdigit()
+
+
+def _strip_comment(text: str) -> tuple[str, str | None]:
+    """The code before ``;`` (outside a ``"string"``) blanked to the line's length, and the comment."""
+    if ";" not in text:
+        return text, None
+    quoted = False
+    for i, c in enumerate(text):
+        if c == '"':
+            quoted = not quoted
+        elif c == ";" and not quoted:
+            return text[:i] + " " * (len(text) - i), text[i + 1:]
+    return text, None

@@ -1,0 +1,82 @@
+"""SINUMERIK variables while a program runs (the interpreter's ``Env``).
+
+* R parameters (the neutral ``#500``-``#999``, see ``expressions``) are the channel's: shared by the main
+  program and its subprograms, and retentive on the control, so one the program never set holds what an
+  earlier program left: reading it is an error (no value is made up) [K: R parameters are channel-global
+  user data].
+* User variables (``DEF``) belong to the program level that declared them (LUD) [K].
+* ``$`` system variables are the machine's: reading or setting one is an error naming it, so a program
+  that needs one cannot be simulated or flattened (issue 28, item 5; as for Fanuc ``#5021``).
+"""
+
+from __future__ import annotations
+
+from typing import Callable
+
+from postproc.expr import Arithmetic, EvalError, Vacancy, Value, VarKey
+from postproc.interp.variables import MACHINE_ONLY
+
+from .expressions import R_BASE, R_LAST
+
+
+class SiemensVariables:
+    __slots__ = ("shared", "levels", "_increment")
+
+    def __init__(self, increment: Callable[[], float]) -> None:
+        self.shared: dict[int, float] = {}
+        self.levels: list[dict[str, float]] = [{}]
+        self._increment = increment
+
+    @property
+    def vacancy(self) -> Vacancy:
+        return Vacancy.FANUC  # never consulted for a vacant value: an unset variable is an error here
+
+    @property
+    def arithmetic(self) -> Arithmetic:
+        """IEEE double [?]: the manuals we read name the functions (degrees) but not their precision."""
+        return Arithmetic.DOUBLE
+
+    @property
+    def increment(self) -> float:
+        return self._increment()
+
+    def _check(self, key: VarKey) -> None:
+        if isinstance(key, int):
+            if not R_BASE <= key <= R_BASE + R_LAST:
+                raise EvalError(f"#{key} is not a SINUMERIK R parameter (R0-R{R_LAST})")
+        elif key.startswith("$"):
+            raise EvalError(f"{key.upper()} (a system variable) {MACHINE_ONLY}")
+
+    def read(self, key: VarKey) -> Value:
+        self._check(key)
+        value = self.shared.get(key) if isinstance(key, int) else self.levels[-1].get(key)
+        if value is None:
+            raise EvalError(f"{_spell(key)} is read before it is set")
+        return float(value)
+
+    def exists(self, key: VarKey) -> bool:
+        raise EvalError("SINUMERIK has no test for a variable's existence here")
+
+    def write(self, key: VarKey, value: Value) -> None:
+        self._check(key)
+        if value is None:
+            raise EvalError(f"{_spell(key)} cannot be set to a vacant value")
+        if isinstance(key, int):
+            self.shared[key] = value
+        else:
+            self.levels[-1][key] = value
+
+    def enter(self, args: dict[int, Value], new_level: bool) -> None:
+        if new_level:
+            self.levels.append({})
+
+    def leave(self, new_level: bool, value: Value = None) -> None:
+        if new_level and len(self.levels) > 1:
+            self.levels.pop()
+
+    def returned(self, value: Value) -> None:
+        """Subprograms return no value here."""
+
+
+def _spell(key: VarKey) -> str:
+    return f"R{key - R_BASE}" if isinstance(key, int) else key.upper()

@@ -1,0 +1,117 @@
+"""SINUMERIK writer: words spelt from the 840D table (G710/G700 units, G4 F seconds, ``CR=`` radii), ``;``
+comments and ``%_N_NAME_MPF`` headers.
+
+* A block read from SINUMERIK and unchanged is copied byte for byte (``WordWriter``); normalised, a block
+  with an ``=`` form, a statement, a label or a main-block number keeps its own text (only plain words are
+  rebuilt).
+* Programs that compute reach SINUMERIK flattened (``Siemens.PROGRAMS`` is False: the writer spells no
+  statements yet); canned cycles arrive expanded (``CYCLE81``... are not written yet): the return level and
+  the cycle cancel of the source say nothing here and are not written.
+* A dwell is ``G4 F<seconds>`` alone in its block (only a block number joins it) [K: 840D Fundamentals,
+  "G4 must be programmed in a separate block"]; what acts before it goes in a block before.
+* Tool data: ``D<n>`` selects cutting edge n (its length and radius), ``D0`` none: a Fanuc ``G43 H``/``G41 D``
+  is written as the D it needs (``postproc.isg_family.tool_data``); a negative offset (G44) is refused.
+* Another dialect's tape mark ``%`` is the comment ``;%`` (a SINUMERIK ``%`` line is a header).
+* Units: ``G710``/``G700`` (lengths and feeds), never G71/G70 (lengths only).
+"""
+
+from __future__ import annotations
+
+from typing import Any, ClassVar
+
+from postproc.control import ASSIGN, CONTROL, LABEL
+from postproc.ir import Block, Motion
+from postproc.rs274.codes import CodeTable
+from postproc.rs274.writer import WordWriter
+
+from .codes import CODES
+
+_WITH_DWELL = ("Dwell", "Sequence")
+_ALONE_WITH_DWELL = frozenset((*_WITH_DWELL, "Comments", "BlockDelete"))
+_OWN_TEXT = frozenset((ASSIGN, CONTROL, LABEL, "NativeCode", "ProgramStart", "FrameChange"))
+"""Sections whose block keeps its text when normalised."""
+
+
+class SiemensWriter(WordWriter):
+    DIALECT: ClassVar[str] = "siemens"
+    CODES: ClassVar[CodeTable] = CODES
+    DWELL_WORD: ClassVar[str] = "F"
+
+    def normalized(self, block: Block) -> str:
+        text = block.text or ""
+        if block.values or not _OWN_TEXT.isdisjoint(block.sections) or "=" in text or ":" in text \
+                or any(letter in "Rr" for letter, _ in block.words):
+            return text.rstrip()
+        return super().normalized(block)
+
+    def generate(self, block: Block) -> str:
+        sections = block.sections
+        if "TapeMark" in sections:
+            return ";%" + (block.eol or "\n")  # another dialect's tape mark: a SINUMERIK % line is a header
+        if "Dwell" in sections and any(k not in _ALONE_WITH_DWELL for k in sections) \
+                and "CompoundMotion" not in sections:
+            return self.around_dwell(block, _WITH_DWELL)
+        return super().generate(block)
+
+    def program_start(self, s: Any, block: Block) -> str:
+        """``%_N_NAME_MPF``; a numbered program is ``%_N_PROG<number>_MPF`` [?: a name starts with a
+        letter]."""
+        name = str(s.name) if s.name is not None else f"PROG{int(s.number)}"
+        name = "".join(c if c.isalnum() or c == "_" else "_" for c in name).upper()
+        if not (name.endswith("_MPF") or name.endswith("_SPF")):
+            name += "_MPF"
+        if not name[:1].isalpha():
+            name = "P" + name
+        return f"%_N_{name}"
+
+    def comment(self, text: str) -> str:
+        return ";" + " ".join(text.splitlines())
+
+    def comment_out(self, block: Block) -> str:
+        text = " ".join((block.text or " ".join(a + n for a, n in block.words)).split())
+        return f";UNSUPPORTED LINE {block.line}: {text}" + (block.eol or "\n")
+
+    def nothing_written(self, block: Block) -> str:
+        super().nothing_written(block)  # the warning
+        text = " ".join((block.text or " ".join(a + n for a, n in block.words)).split())
+        return f";LINE {block.line}: {text}" + (block.eol or "\n")
+
+    def block_delete_words(self, s: Any, block: Block) -> list[str]:
+        """Neutral level k is ``/k-1`` (level 1, Fanuc's ``/``, is SINUMERIK's plain ``/``)."""
+        if s.level - 1 > 9:
+            self.unsupported(f"block skip level {s.level} (SINUMERIK has /0 to /9)", block)
+        return ["/" if s.level == 1 else f"/{s.level - 1}"]
+
+    def motion_words(self, s: Motion, block: Block) -> list[str]:
+        """An arc by radius is ``CR=`` (negative for more than 180 degrees, as Fanuc's R) [K]."""
+        words = super().motion_words(s, block)
+        if s.radius is not None and words and words[-1].startswith("R"):
+            words[-1] = "CR=" + words[-1][1:]
+        return words
+
+    def return_level_words(self, s: Any, block: Block) -> list[str]:
+        """Fanuc's G98/G99 steer canned cycles, which reach SINUMERIK expanded: nothing to write."""
+        return []
+
+    def cycle_cancel_words(self, s: Any, block: Block) -> list[str]:
+        """Cycles reach SINUMERIK expanded, so there is nothing to cancel."""
+        return []
+
+    # -- tool data (``postproc.isg_family.tool_data`` chose the D) ---------------------------------------
+    def tool_length_offset_words(self, s: Any, block: Block) -> list[str]:
+        """``D<n>`` selects cutting edge n (its length applies), ``D0`` none."""
+        if s.mode == "cancel":
+            return ["D0"]
+        if s.mode == "negative":
+            self.unsupported("a negative tool length offset (Fanuc G44): D adds the tool's length, and no code "
+                             "subtracts it", block)
+        if s.mode != "positive" or s.register is None:
+            self.unsupported(f"tool length offset {s.mode} (SINUMERIK selects a tool's data with D)", block)
+        return ["D" + self.register(s.register, block)]
+
+    def cutter_compensation_words(self, s: Any, block: Block) -> list[str]:
+        """``G41``/``G42`` take the radius of the selected D: a D is written only where no ``D`` of the
+        block's length offset selects it already."""
+        if "ToolLengthOffset" in block.sections:
+            return self._code("cutter", s.mode, f"cutter compensation {s.mode}", block)
+        return super().cutter_compensation_words(s, block)
