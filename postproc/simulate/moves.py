@@ -65,6 +65,8 @@ class Moves:
         """Spindle direction of the last spindle event (None before the first): a tool change stops a
         turning spindle first, as a tool changer does, and stopping a stopped spindle is no event."""
         self.lathe = ctx.lathe
+        self.length_at_axis = ctx.length_at_axis
+        """A length change keeps the machine point (``Dialect.LENGTH_AT_PROGRAMMED_AXIS``)."""
         self.increments = ctx.increments
         """Addresses that move an axis by an increment (a lathe's U and W: ``Dialect.INCREMENTAL_AXES``)."""
         self.diameter = ctx.diameter
@@ -210,12 +212,31 @@ class Moves:
             register = tl.register if tl.register is not None else self.spindle_tool  # type: ignore[attr-defined]
             self.lathe_offset(block.line, "cancel" if tl.mode == "cancel" else f"offset {register}")  # type: ignore[attr-defined]
         elif tl is not None:
+            before = self.length.offset
             try:
                 self.length.change(tl.mode, tl.register, tl.length, self.scale)  # type: ignore[attr-defined]
             except PostprocError as err:
                 raise err.located(self._at(block, "H")) from None
-            if self.length.offset:
+            if self.length_at_axis and self.length.offset != before:
+                self._keep_machine_point(self.length.offset - before)
+            elif self.length.offset:
                 self._begin()
+
+    def _keep_machine_point(self, change: float) -> None:
+        """A length change on a controller that moves nothing until the length axis is programmed
+        absolutely: the controlled point stays, the programmed point takes the change instead ([V] rs274:
+        ``G43 H1`` then ``G1 X10`` keeps machine Z, the canonical Z reads ``old - length``; [V] grbl
+        ``gcode.c``: an axis without a word keeps ``gc_state.position``, the machine position, and only an
+        absolute word adds ``tool_length_offset``). A later incremental move moves the machine by its
+        increment, an absolute one goes to the programmed point plus the new length."""
+        if LENGTH_AXIS not in self.pos:
+            return
+        self._begin()  # the controlled point before the change is the one kept
+        self.pos = dict(self.pos)  # the old dict may be a queued segment's end
+        self.pos[LENGTH_AXIS] -= change
+        self.rounded = dict(self.rounded)
+        self.rounded[LENGTH_AXIS] = num(self.pos[LENGTH_AXIS])
+        self._settle()
 
     def lathe_offset(self, line: int, value: str) -> None:
         """A lathe's tool offset register selected (Fanuc T/GSK ``T0101``'s last digits, LinuxCNC's lathe
