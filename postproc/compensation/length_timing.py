@@ -1,0 +1,202 @@
+"""When a tool length change applies, carried across controllers that disagree (a generic lowering step).
+
+Two rules (``Dialect.LENGTH_AT_PROGRAMMED_AXIS``):
+
+* at the programmed axis ([V] LinuxCNC rs274, [V] grbl ``gcode.c``, [V] ISG by default): a change moves
+  nothing; the machine keeps its Z until Z is next programmed absolutely, where the new length applies
+  (an incremental Z moves the machine by its increment);
+* at the next move (the simulation's model of Fanuc and the rest, ``postproc.compensation.tool_length``):
+  the next move of any axis takes the controlled Z to the programmed Z plus the new length.
+
+A change beside an absolute Z move means the same under both, and so does every other block of a
+program that changes the length there (typical posts: ``G43 H1 Z15.``). Otherwise:
+
+* towards "at the next move" from "at the programmed axis": the change is moved to the next block that
+  programs Z absolutely (the moves between keep the machine Z under both rules; an incremental Z moves it
+  by the same increment under the old length as under the new one). Where a later change replaces it
+  first, only the last is written; one still waiting at the program end changed no move and is left out.
+  A canned cycle, a tool table write or a cutter compensation change while it waits is a located error
+  (the two would then differ).
+* towards "at the programmed axis" from "at the next move": the change goes to the next motion block,
+  which gets the Z the program stands at (absolute, program units) if it has none, so the target moves Z
+  there as the source does; where that Z is not known (no absolute Z since the start or a work offset
+  change, or the next move is incremental, a reference return, a cycle or a machine-coordinate move) the
+  change is a located error asking for Z beside it, and so is a tool table write between the two.
+
+ISG and Fagor targets get their D words from ``postproc.isg_family.tool_data`` after this step.
+"""
+
+from __future__ import annotations
+
+from typing import Iterator
+
+from ..context import Context
+from ..dialect import Dialect
+from ..errors import UnsupportedError
+from ..expr import Expr
+from ..ir import Block, DistanceMode, Motion, Section, ToolLengthOffset, Units
+
+AXIS = "Z"
+MM_PER_INCH = 25.4
+_WATCHED = frozenset(("ToolLengthOffset", "Motion", "CompoundMotion", "CycleCall", "DistanceMode", "Units",
+                      "WorkOffset", "CoordinateSet", "DataSetting", "CutterCompensation", "RigidTap"))
+_PLAIN = frozenset(("rapid", "linear", "cw", "ccw"))
+
+
+def time_length_changes(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """Lowering step: a tool length change placed where the target applies it as the source does (see
+    the module docstring); nothing to do between controllers with the same rule, or on a lathe."""
+    if ctx.dialect == target.NAME or ctx.lathe or not target.TOOL_LENGTH_OFFSET and not _writes_lengths(target):
+        return blocks
+    if ctx.length_at_axis == target.LENGTH_AT_PROGRAMMED_AXIS:
+        return blocks
+    return _defer(blocks, ctx) if ctx.length_at_axis else _complete(blocks, ctx)
+
+
+def _writes_lengths(target: type[Dialect]) -> bool:
+    """A target without a tool table that still gets lengths written (grbl: ``G43.1 Z<length>``)."""
+    return target.LENGTH_AT_PROGRAMMED_AXIS
+
+
+def _key(offset: ToolLengthOffset) -> tuple[str, object, object]:
+    return offset.mode, offset.register, offset.length
+
+
+def _absolute_z(block: Block, absolute: bool) -> bool:
+    """The block programs Z absolutely in work coordinates (a plain move or a reference return's
+    intermediate point)."""
+    motion = block.sections.get("Motion")
+    return (isinstance(motion, Motion) and motion.mode is not None and AXIS in motion.axes and absolute
+            and "MachineCoordinates" not in block.sections)
+
+
+def _distance(block: Block, absolute: bool) -> bool:
+    distance = block.sections.get("DistanceMode")
+    return distance.mode == "absolute" if isinstance(distance, DistanceMode) else absolute
+
+
+def _defer(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
+    """Towards a target that applies a change at the next move: each change goes to the next absolute Z."""
+    pending: ToolLengthOffset | None = None
+    written: tuple[str, object, object] = ("cancel", None, None)
+    absolute = True
+    for block in blocks:
+        sections = block.sections
+        if _WATCHED.isdisjoint(sections):
+            yield block
+            continue
+        absolute = _distance(block, absolute)
+        offset = sections.get("ToolLengthOffset")
+        if isinstance(offset, ToolLengthOffset):
+            if _absolute_z(block, absolute):
+                pending = None
+                written = _key(offset)
+                yield block
+                continue
+            del sections["ToolLengthOffset"]
+            block.changed()
+            pending = offset
+            if not sections:
+                continue  # nothing else in the block: the change is written where it applies
+        if pending is not None:
+            clash = _clash(sections)
+            if clash is not None:
+                ctx.diagnostics.error(UnsupportedError(
+                    f"{clash} while a tool length change waits for the next absolute Z (the source applies it "
+                    "there, the target at its next move): program Z beside the length change",
+                    ctx.at(block)))
+                pending = None
+            elif _absolute_z(block, absolute):
+                if _key(pending) != written:
+                    sections["ToolLengthOffset"] = pending
+                    written = _key(pending)
+                    block.changed()
+                pending = None
+        yield block
+
+
+def _clash(sections: dict[str, Section]) -> str | None:
+    """What a waiting change cannot be carried past."""
+    if "CompoundMotion" in sections or "CycleCall" in sections or "RigidTap" in sections:
+        return "a canned cycle"
+    if "DataSetting" in sections:
+        return "a data setting"
+    if "CutterCompensation" in sections:
+        return "a cutter compensation change"
+    return None
+
+
+def _complete(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
+    """Towards a target that applies a change at the programmed axis: the change goes to the next move,
+    which gets the Z the program stands at."""
+    z: float | None = None  # the programmed Z, program units; None: not known here
+    inch = False
+    absolute = True
+    pending: tuple[ToolLengthOffset, Block] | None = None  # a change waiting for the next move, and its block
+    for block in blocks:
+        sections = block.sections
+        if _WATCHED.isdisjoint(sections):
+            yield block
+            continue
+        units = sections.get("Units")
+        if isinstance(units, Units) and (units.system == "inch") != inch:
+            inch = units.system == "inch"
+            if z is not None:
+                z = z / MM_PER_INCH if inch else z * MM_PER_INCH
+        absolute = _distance(block, absolute)
+        if "WorkOffset" in sections or "CoordinateSet" in sections:
+            z = None
+        moves = "Motion" in sections or "CompoundMotion" in sections or "RigidTap" in sections
+        offset = sections.get("ToolLengthOffset")
+        if isinstance(offset, ToolLengthOffset):
+            pending = None  # a later change replaces a waiting one
+            if not moves:
+                del sections["ToolLengthOffset"]
+                block.changed()
+                pending = offset, block
+                if not sections:
+                    continue
+        elif pending is not None and not moves:
+            clash = _clash(sections)
+            if clash is not None:
+                _refuse(ctx, pending[1], f"{clash} follows it")
+                pending = None
+        if moves and (pending is not None or isinstance(offset, ToolLengthOffset)):
+            if pending is not None:
+                sections["ToolLengthOffset"] = pending[0]
+                block.changed()
+            at = block if pending is None else pending[1]
+            pending = None
+            if not _absolute_z(block, absolute):
+                motion = sections.get("Motion")
+                if (isinstance(motion, Motion) and motion.mode in _PLAIN and absolute and z is not None
+                        and "MachineCoordinates" not in sections and "CompoundMotion" not in sections):
+                    motion.axes[AXIS] = z
+                    block.changed()
+                else:
+                    _refuse(ctx, at, "the programmed Z is not known where it applies")
+        z = _follow(block, z, absolute)
+        yield block
+
+
+def _refuse(ctx: Context, at: Block, why: str) -> None:
+    ctx.diagnostics.error(UnsupportedError(
+        f"this tool length change applies at the next move on the source's controller and only at the next "
+        f"absolute Z on the target's, and {why}: program Z beside the length change",
+        ctx.at(at, ctx.column_of(at, "H"))))
+
+
+def _follow(block: Block, z: float | None, absolute: bool) -> float | None:
+    """The programmed Z after the block's motion (program units), None where it is not known."""
+    sections = block.sections
+    if "CompoundMotion" in sections or "RigidTap" in sections or "CycleCall" in sections:
+        return None  # a cycle ends at its return level: not followed here
+    motion = sections.get("Motion")
+    if not isinstance(motion, Motion) or AXIS not in motion.axes:
+        return z
+    value = motion.axes[AXIS]
+    if isinstance(value, Expr) or motion.mode not in _PLAIN or "MachineCoordinates" in sections:
+        return None
+    if absolute:
+        return float(value)
+    return None if z is None else z + float(value)
