@@ -32,7 +32,7 @@ from typing import Iterator
 
 from ..context import Context
 from ..dialect import Dialect
-from ..errors import UnsupportedError
+from ..errors import Location, UnsupportedError
 from ..expr import Expr
 from ..ir import Block, DistanceMode, Motion, Section, ToolLengthOffset, Units
 
@@ -132,7 +132,7 @@ def _complete(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
     z: float | None = None  # the programmed Z, program units; None: not known here
     inch = False
     absolute = True
-    pending: tuple[ToolLengthOffset, Block] | None = None  # a change waiting for the next move, and its block
+    pending: tuple[ToolLengthOffset, Location] | None = None  # a change waiting for the next move, and where
     for block in blocks:
         sections = block.sections
         if _WATCHED.isdisjoint(sections):
@@ -151,9 +151,9 @@ def _complete(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
         if isinstance(offset, ToolLengthOffset):
             pending = None  # a later change replaces a waiting one
             if not moves:
+                pending = offset, ctx.at(block, ctx.column_of(block, "H"))
                 del sections["ToolLengthOffset"]
                 block.changed()
-                pending = offset, block
                 if not sections:
                     continue
         elif pending is not None and not moves:
@@ -162,28 +162,29 @@ def _complete(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
                 _refuse(ctx, pending[1], f"{clash} follows it")
                 pending = None
         if moves and (pending is not None or isinstance(offset, ToolLengthOffset)):
+            at = ctx.at(block, ctx.column_of(block, "H")) if pending is None else pending[1]
+            motion = sections.get("Motion")
+            if _absolute_z(block, absolute):
+                pass
+            elif (isinstance(motion, Motion) and motion.mode in _PLAIN and absolute and z is not None
+                    and "MachineCoordinates" not in sections and "CompoundMotion" not in sections):
+                motion.axes[AXIS] = z
+                block.changed()
+            else:
+                _refuse(ctx, at, "the programmed Z is not known where it applies")
+                pending = None  # refused once, not again by a later step
             if pending is not None:
                 sections["ToolLengthOffset"] = pending[0]
                 block.changed()
-            at = block if pending is None else pending[1]
             pending = None
-            if not _absolute_z(block, absolute):
-                motion = sections.get("Motion")
-                if (isinstance(motion, Motion) and motion.mode in _PLAIN and absolute and z is not None
-                        and "MachineCoordinates" not in sections and "CompoundMotion" not in sections):
-                    motion.axes[AXIS] = z
-                    block.changed()
-                else:
-                    _refuse(ctx, at, "the programmed Z is not known where it applies")
         z = _follow(block, z, absolute)
         yield block
 
 
-def _refuse(ctx: Context, at: Block, why: str) -> None:
+def _refuse(ctx: Context, at: Location, why: str) -> None:
     ctx.diagnostics.error(UnsupportedError(
         f"this tool length change applies at the next move on the source's controller and only at the next "
-        f"absolute Z on the target's, and {why}: program Z beside the length change",
-        ctx.at(at, ctx.column_of(at, "H"))))
+        f"absolute Z on the target's, and {why}: program Z beside the length change", at))
 
 
 def _follow(block: Block, z: float | None, absolute: bool) -> float | None:
