@@ -86,3 +86,16 @@ def test_linuxcnc_change_waiting_at_a_tool_table_write_is_a_located_error() -> N
     assert [str(e) for e in caught.value.errors][:1] == [
         "in.nc:3:1: error: a data setting while a tool length change waits for the next absolute Z (the source "
         "applies it there, the target at its next move): program Z beside the length change"]
+
+
+def test_a_change_that_changes_nothing_stays_where_it_is() -> None:
+    """The G49 of a start-up line cancels no length in force: written as it stands, both ways; a G49
+    left waiting at the program end changed no move and is left out (written alone, a Fanuc G49 could
+    move Z there)."""
+    start = "G21 G90 G49\nG0 X0 Y0\nG0 Z50\nM2\n"
+    assert _verified(start, "linuxcnc", "fanuc")[0] == "G21 G90 G49"
+    assert _verified(start.replace("M2", "M30"), "fanuc", "linuxcnc")[0] == "G21 G90 G49"
+    trailing = "G21 G90 G0 X0 Y0 Z50\nG43 H1 Z60\nG49\nM2\n"
+    assert _verified(trailing, "linuxcnc", "fanuc")[1:] == ["G43 H01 G00 Z60.", "M02"]
+    fanuc = trailing.replace("M2", "M30").replace("Z60", "Z60.")
+    assert _verified(fanuc, "fanuc", "linuxcnc")[1:] == ["G43 H01 G0 Z60.", "G49", "M30"]

@@ -78,7 +78,8 @@ def _distance(block: Block, absolute: bool) -> bool:
 def _defer(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
     """Towards a target that applies a change at the next move: each change goes to the next absolute Z."""
     pending: ToolLengthOffset | None = None
-    written: tuple[str, object, object] = ("cancel", None, None)
+    written: tuple[str, object, object] = ("cancel", None, None)  # what the target has in force
+    in_force: tuple[str, object, object] = ("cancel", None, None)  # what the source has programmed
     absolute = True
     for block in blocks:
         sections = block.sections
@@ -88,6 +89,11 @@ def _defer(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
         absolute = _distance(block, absolute)
         offset = sections.get("ToolLengthOffset")
         if isinstance(offset, ToolLengthOffset):
+            same = _key(offset) == in_force
+            in_force = _key(offset)
+            if same and pending is None:
+                yield block  # changes nothing (a G49 in a start-up line): left where it is
+                continue
             if _absolute_z(block, absolute):
                 pending = None
                 written = _key(offset)
@@ -126,17 +132,30 @@ def _clash(sections: dict[str, Section]) -> str | None:
     return None
 
 
+HELD = 1000
+"""Blocks without motion held behind a waiting change at most (then it stays where it was written)."""
+
+
 def _complete(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
     """Towards a target that applies a change at the programmed axis: the change goes to the next move,
-    which gets the Z the program stands at."""
+    which gets the Z the program stands at. The blocks between are held (at most ``HELD``); a change
+    that meets no move (the program ends first) stays where it was written."""
     z: float | None = None  # the programmed Z, program units; None: not known here
     inch = False
     absolute = True
-    pending: tuple[ToolLengthOffset, Location] | None = None  # a change waiting for the next move, and where
+    in_force: tuple[str, object, object] = ("cancel", None, None)
+    held: list[Block] = []  # the changing block and the blocks after it, while a change waits
+    pending: tuple[ToolLengthOffset, Location] | None = None  # the waiting change, and where it was written
     for block in blocks:
         sections = block.sections
         if _WATCHED.isdisjoint(sections):
-            yield block
+            if pending is None:
+                yield block
+                continue
+            held.append(block)
+            if len(held) >= HELD:
+                yield from _release(held, pending[0])
+                pending = None
             continue
         units = sections.get("Units")
         if isinstance(units, Units) and (units.system == "inch") != inch:
@@ -148,22 +167,31 @@ def _complete(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
             z = None
         moves = "Motion" in sections or "CompoundMotion" in sections or "RigidTap" in sections
         offset = sections.get("ToolLengthOffset")
+        change = isinstance(offset, ToolLengthOffset) and _key(offset) != in_force
         if isinstance(offset, ToolLengthOffset):
-            pending = None  # a later change replaces a waiting one
-            if not moves:
+            in_force = _key(offset)
+            if pending is not None:  # a later change replaces the waiting one
+                yield from _release(held, None)
+                pending = None
+            if change and not moves:
                 pending = offset, ctx.at(block, ctx.column_of(block, "H"))
-                del sections["ToolLengthOffset"]
-                block.changed()
-                if not sections:
-                    continue
+                held.append(block)
+                continue
         elif pending is not None and not moves:
             clash = _clash(sections)
             if clash is not None:
                 _refuse(ctx, pending[1], f"{clash} follows it")
+                yield from _release(held, pending[0])
                 pending = None
-        if moves and (pending is not None or isinstance(offset, ToolLengthOffset)):
+                z = _follow(block, z, absolute)
+                yield block
+                continue
+            held.append(block)
+            continue
+        if moves and (pending is not None or change):
             at = ctx.at(block, ctx.column_of(block, "H")) if pending is None else pending[1]
             motion = sections.get("Motion")
+            moved = pending is not None
             if _absolute_z(block, absolute):
                 pass
             elif (isinstance(motion, Motion) and motion.mode in _PLAIN and absolute and z is not None
@@ -172,13 +200,33 @@ def _complete(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
                 block.changed()
             else:
                 _refuse(ctx, at, "the programmed Z is not known where it applies")
-                pending = None  # refused once, not again by a later step
+                moved = False  # refused once: taken out, so no later step refuses it again
+                if pending is None:
+                    del sections["ToolLengthOffset"]
+                    block.changed()
             if pending is not None:
+                yield from _release(held, None)
+            if moved and pending is not None:
                 sections["ToolLengthOffset"] = pending[0]
                 block.changed()
             pending = None
         z = _follow(block, z, absolute)
         yield block
+    if pending is not None:
+        yield from _release(held, pending[0])
+
+
+def _release(held: list[Block], keep: ToolLengthOffset | None) -> Iterator[Block]:
+    """The held blocks, the first (the changing one) without its change unless ``keep``; a block left
+    with nothing is dropped."""
+    first = held[0]
+    if keep is None:
+        del first.sections["ToolLengthOffset"]
+        first.changed()
+    for block in held:
+        if block is not first or block.sections:
+            yield block
+    held.clear()
 
 
 def _refuse(ctx: Context, at: Location, why: str) -> None:
