@@ -32,9 +32,10 @@ from typing import Iterator
 
 from ..context import Context
 from ..dialect import Dialect
-from ..errors import Location, UnsupportedError
+from ..errors import Location, PostprocError, UnsupportedError
 from ..expr import Expr
-from ..ir import Block, DistanceMode, Motion, Section, ToolLengthOffset, Units
+from ..ir import Block, DataSetting, DistanceMode, Motion, Section, ToolLengthOffset, Units
+from .tool_table import ToolTable
 
 AXIS = "Z"
 MM_PER_INCH = 25.4
@@ -145,6 +146,7 @@ def _complete(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
     absolute = True
     in_force: tuple[str, object, object] = ("cancel", None, None)
     held: list[Block] = []  # the changing block and the blocks after it, while a change waits
+    table = ToolTable(ctx.setup)
     pending: tuple[ToolLengthOffset, Location] | None = None  # the waiting change, and where it was written
     for block in blocks:
         sections = block.sections
@@ -165,6 +167,9 @@ def _complete(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
         absolute = _distance(block, absolute)
         if "WorkOffset" in sections or "CoordinateSet" in sections:
             z = None
+        setting = sections.get("DataSetting")
+        if isinstance(setting, DataSetting):
+            table.write(setting, MM_PER_INCH if inch else 1.0)
         moves = "Motion" in sections or "CompoundMotion" in sections or "RigidTap" in sections
         offset = sections.get("ToolLengthOffset")
         change = isinstance(offset, ToolLengthOffset) and _key(offset) != in_force
@@ -183,7 +188,7 @@ def _complete(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
                 _refuse(ctx, pending[1], f"{clash} follows it")
                 yield from _release(held, pending[0])
                 pending = None
-                z = _follow(block, z, absolute)
+                z = _follow(block, z, absolute, _length(in_force, table, inch))
                 yield block
                 continue
             held.append(block)
@@ -192,7 +197,7 @@ def _complete(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
             at = ctx.at(block, ctx.column_of(block, "H")) if pending is None else pending[1]
             motion = sections.get("Motion")
             moved = pending is not None
-            if _absolute_z(block, absolute):
+            if _sets_z(block, absolute):
                 pass
             elif (isinstance(motion, Motion) and motion.mode in _PLAIN and absolute and z is not None
                     and "MachineCoordinates" not in sections and "CompoundMotion" not in sections):
@@ -210,7 +215,7 @@ def _complete(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
                 sections["ToolLengthOffset"] = pending[0]
                 block.changed()
             pending = None
-        z = _follow(block, z, absolute)
+        z = _follow(block, z, absolute, _length(in_force, table, inch))
         yield block
     if pending is not None:
         yield from _release(held, pending[0])
@@ -235,8 +240,9 @@ def _refuse(ctx: Context, at: Location, why: str) -> None:
         f"absolute Z on the target's, and {why}: program Z beside the length change", at))
 
 
-def _follow(block: Block, z: float | None, absolute: bool) -> float | None:
-    """The programmed Z after the block's motion (program units), None where it is not known."""
+def _follow(block: Block, z: float | None, absolute: bool, length: float | None) -> float | None:
+    """The programmed Z after the block's motion (program units), None where it is not known; ``length``:
+    the length in force in program units (a machine-coordinate Z is the programmed Z plus it)."""
     sections = block.sections
     if "CompoundMotion" in sections or "RigidTap" in sections or "CycleCall" in sections:
         return None  # a cycle ends at its return level: not followed here
@@ -244,8 +250,35 @@ def _follow(block: Block, z: float | None, absolute: bool) -> float | None:
     if not isinstance(motion, Motion) or AXIS not in motion.axes:
         return z
     value = motion.axes[AXIS]
-    if isinstance(value, Expr) or motion.mode not in _PLAIN or "MachineCoordinates" in sections:
+    if isinstance(value, Expr) or motion.mode not in _PLAIN:
         return None
+    if "MachineCoordinates" in sections:
+        return None if length is None else float(value) - length
     if absolute:
         return float(value)
     return None if z is None else z + float(value)
+
+
+def _length(key: tuple[str, object, object], table: ToolTable, inch: bool) -> float | None:
+    """The length a ``_key`` puts in force, program units; None where the set-up does not give it."""
+    mode, register, length = key
+    scale = MM_PER_INCH if inch else 1.0
+    if mode == "cancel":
+        return 0.0
+    if mode == "dynamic":
+        return float(length) if isinstance(length, (int, float)) else None
+    if not isinstance(register, int) or mode not in ("positive", "negative"):
+        return None
+    try:
+        value = table.length(register)
+    except PostprocError:
+        return None
+    return (value if mode == "positive" else -value) / scale
+
+
+def _sets_z(block: Block, absolute: bool) -> bool:
+    """The block's move ends at a Z programmed absolutely, in work or in machine coordinates: where the
+    two rules agree."""
+    motion = block.sections.get("Motion")
+    return (isinstance(motion, Motion) and motion.mode in _PLAIN and AXIS in motion.axes
+            and (absolute or "MachineCoordinates" in block.sections))

@@ -127,12 +127,28 @@ class ToolData(Entry):
     x: float | None = coordinate()
     z: float | None = coordinate()
     """Lathe geometry offsets, added to X (as the set-up's X: diameter on a diameter lathe) and Z."""
+    x_wear: float | None = coordinate(alias="xWear")
+    z_wear: float | None = coordinate(alias="zWear")
+    """Lathe wear offsets, added to the geometry ones [K: Fanuc Series 0i-TC/TD operator's manual, "Tool
+    offset": the offset memory holds geometry and wear per offset number, both applied by ``T□□△△``;
+    parameter LGN (5002#1) picks the geometry number: the wear number, as here, or the tool number]."""
 
     def __post_init__(self) -> None:
         if self.shared() and any(v is not None for v in (self.length, self.radius, self.length_wear,
                                                         self.radius_wear)):
             raise ValueError(f"tool {self.number}: offset/offsetWear (one value for H and D: Fanuc memory A/B) "
                              "beside length/radius (separate H and D: memory C)")
+        if (self.x is None) != (self.z is None):
+            raise ValueError(f"tool {self.number}: a lathe offset gives {'x' if self.x is not None else 'z'} "
+                             f"without {'z' if self.x is not None else 'x'} (give both; 0 where it is zero)")
+        if self.x is None and (self.x_wear is not None or self.z_wear is not None):
+            raise ValueError(f"tool {self.number}: xWear/zWear without the geometry x and z")
+
+    def lathe(self) -> tuple[float, float] | None:
+        """The lathe offset (X, Z) in set-up units, geometry plus wear; None when the entry gives none."""
+        if self.x is None or self.z is None:
+            return None
+        return self.x + (self.x_wear or 0.0), self.z + (self.z_wear or 0.0)
 
     def shared(self) -> bool:
         """The entry is one value for H and D (Fanuc memory A/B)."""
