@@ -145,3 +145,66 @@ def test_linuxcnc_lathe_offsets_equal_rs274(batch: int) -> None:
         text = _program(random.Random(seed))
         ours, theirs = _ours(text), _rs274(text)
         assert ours == theirs, f"seed {seed}\n{text}\nours   {ours}\nrs274  {theirs}"
+
+
+# -- translations -----------------------------------------------------------------------------------------
+
+def _translate(text: str, target: str, setup: MachineSetup) -> str:
+    out = io.StringIO()
+    translate(io.StringIO(text), out, file="l.nc", source="fanuc", target=target, setup=setup,
+              diagnostics=Diagnostics(warn_stream=io.StringIO()))
+    return out.getvalue()
+
+
+def _verified(text: str, target: str, setup: MachineSetup) -> list[str]:
+    out = _translate(text, target, setup)
+    report = verify_lines(io.StringIO(text), io.StringIO(out), file_in="l.nc", file_out="out", source="fanuc",
+                          target=target, setup=setup, tolerance=0.0)
+    assert report.ok, report.summary() + "\n" + out
+    return [line for line in out.splitlines() if "TOOL CHANGE" not in line]
+
+
+PER_MINUTE = FANUC_T.replace("G99", "G98").replace("F0.2", "F200.")
+
+
+def test_towards_grbl_the_offsets_are_written_into_the_coordinates() -> None:
+    """grbl takes radii: X50 is 25, + offset 2's 4/2 = 27; Z5 - 1.5 = 3.5 (the X50 Z5 traverse after T0102).
+    After T0103 the Z10 traverse takes X too: 40/2 + 0.2/2 = 20.1, Z 10 + 1.9 = 11.9; T0100: the X70
+    traverse (35) takes Z back to the programmed 10 as well."""
+    lines = _verified(PER_MINUTE, "grbl", _lathe({2: (4.0, -1.5), 3: (0.0, 2.0)}, {3: (0.2, -0.1)}))
+    moves = [line for line in lines if line.startswith(("G0 ", "G1 ", "G18 G0"))]
+    assert moves == ["G18 G0 X50. Z50.", "G0 X27. Z3.5", "G1 X22. F200.", "G1 Z-11.5", "G0 Z11.9 X20.1", "G0 X35. Z10."]
+
+
+def test_towards_linuxcnc_the_register_goes_to_the_move_that_applies_it() -> None:
+    lines = _verified(FANUC_T, "linuxcnc", _lathe({2: (4.0, -1.5), 3: (0.0, 2.0)}, {3: (0.2, -0.1)}))
+    assert "G43 H02 G0 X50. Z5." in lines and "G43 H03 G0 Z10. X40." in lines and "G49 G0 X70. Z10." in lines
+
+
+def _fanuc_t(rng: random.Random) -> str:
+    lines = ["O0001", "G21 G18 G98", "G0 X100. Z50."]
+    for _ in range(rng.randint(5, 12)):
+        op = rng.random()
+        if op < 0.3:
+            lines.append(f"T01{rng.choice([0, 1, 2, 3, 4]):02d}")
+        elif op < 0.55:
+            lines.append(f"G1 X{rng.randint(10, 90)}. F150.")
+        elif op < 0.8:
+            lines.append(f"G0 Z{rng.randint(-30, 40)}.")
+        else:
+            lines.append(f"G1 X{rng.randint(10, 90)}. Z{rng.randint(-30, 40)}. F120.")
+    lines.append("M30")
+    return "\n".join(lines) + "\n"
+
+
+@pytest.mark.skipif(not available(), reason="the LinuxCNC interpreter rs274 is not installed")
+def test_fanuc_t_with_offsets_runs_alike_in_rs274() -> None:
+    """Seeded Fanuc T programs with offsets changing mid-program, translated to LinuxCNC: rs274 (its table
+    the set-up's offsets) runs the same controlled points as the Fanuc T simulation."""
+    setup = _linuxcnc_setup()
+    for seed in range(20):
+        text = _fanuc_t(random.Random(seed))
+        ngc = _translate(text, "linuxcnc", setup)
+        ours = [(round(m[2], 4), round(m[3], 4)) for m in _moves(text, "fanuc", setup)]
+        theirs = [(m[2], m[3]) for m in _rs274(ngc)]
+        assert ours[1:] == theirs[1:], f"seed {seed}\n{text}\n{ngc}\nours   {ours}\nrs274  {theirs}"

@@ -47,10 +47,12 @@ _PLAIN = frozenset(("rapid", "linear", "cw", "ccw"))
 def time_length_changes(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
     """Lowering step: a tool length change placed where the target applies it as the source does (see
     the module docstring); nothing to do between controllers with the same rule, or on a lathe."""
-    if ctx.dialect == target.NAME or ctx.lathe or not target.TOOL_LENGTH_OFFSET and not _writes_lengths(target):
+    if ctx.dialect == target.NAME or not target.TOOL_LENGTH_OFFSET and not _writes_lengths(target):
         return blocks
     if ctx.length_at_axis == target.LENGTH_AT_PROGRAMMED_AXIS:
         return blocks
+    if ctx.lathe:  # Fanuc T/GSK T0102 -> LinuxCNC's lathe G43 H02 (``postproc.cycles.lathe_lowering``)
+        return blocks if ctx.length_at_axis else _complete(blocks, ctx)
     return _defer(blocks, ctx) if ctx.length_at_axis else _complete(blocks, ctx)
 
 
@@ -141,7 +143,8 @@ def _complete(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
     """Towards a target that applies a change at the programmed axis: the change goes to the next move,
     which gets the Z the program stands at. The blocks between are held (at most ``HELD``); a change
     that meets no move (the program ends first) stays where it was written."""
-    z: float | None = None  # the programmed Z, program units; None: not known here
+    axes = ("X", AXIS) if ctx.lathe else (AXIS,)  # a lathe offset moves X and Z (LinuxCNC's lathe G43 H)
+    pos: dict[str, float | None] = {a: None for a in axes}  # the programmed point, program units; None: unknown
     inch = False
     absolute = True
     in_force: tuple[str, object, object] = ("cancel", None, None)
@@ -162,11 +165,10 @@ def _complete(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
         units = sections.get("Units")
         if isinstance(units, Units) and (units.system == "inch") != inch:
             inch = units.system == "inch"
-            if z is not None:
-                z = z / MM_PER_INCH if inch else z * MM_PER_INCH
+            pos = {a: None if v is None else v / MM_PER_INCH if inch else v * MM_PER_INCH for a, v in pos.items()}
         absolute = _distance(block, absolute)
         if "WorkOffset" in sections or "CoordinateSet" in sections:
-            z = None
+            pos = {a: None for a in axes}
         setting = sections.get("DataSetting")
         if isinstance(setting, DataSetting):
             table.write(setting, MM_PER_INCH if inch else 1.0)
@@ -188,7 +190,7 @@ def _complete(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
                 _refuse(ctx, pending[1], f"{clash} follows it")
                 yield from _release(held, pending[0])
                 pending = None
-                z = _follow(block, z, absolute, _length(in_force, table, inch))
+                pos = _follow(block, pos, absolute, None if ctx.lathe else _length(in_force, table, inch))
                 yield block
                 continue
             held.append(block)
@@ -197,14 +199,17 @@ def _complete(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
             at = ctx.at(block, ctx.column_of(block, "H")) if pending is None else pending[1]
             motion = sections.get("Motion")
             moved = pending is not None
-            if _sets_z(block, absolute):
+            missing = [] if not isinstance(motion, Motion) else [a for a in axes if a not in motion.axes]
+            if _sets_z(block, absolute, axes):
                 pass
-            elif (isinstance(motion, Motion) and motion.mode in _PLAIN and absolute and z is not None
+            elif (isinstance(motion, Motion) and motion.mode in _PLAIN and absolute
+                    and all(pos[a] is not None for a in missing) and all(a in motion.axes or a in missing for a in axes)
                     and "MachineCoordinates" not in sections and "CompoundMotion" not in sections):
-                motion.axes[AXIS] = z
+                for a in missing:
+                    motion.axes[a] = pos[a]  # type: ignore[assignment]  # known: tested above
                 block.changed()
             else:
-                _refuse(ctx, at, "the programmed Z is not known where it applies")
+                _refuse(ctx, at, f"the programmed {' and '.join(axes)} is not known where it applies")
                 moved = False  # refused once: taken out, so no later step refuses it again
                 if pending is None:
                     del sections["ToolLengthOffset"]
@@ -215,7 +220,7 @@ def _complete(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
                 sections["ToolLengthOffset"] = pending[0]
                 block.changed()
             pending = None
-        z = _follow(block, z, absolute, _length(in_force, table, inch))
+        pos = _follow(block, pos, absolute, None if ctx.lathe else _length(in_force, table, inch))
         yield block
     if pending is not None:
         yield from _release(held, pending[0])
@@ -240,23 +245,32 @@ def _refuse(ctx: Context, at: Location, why: str) -> None:
         f"absolute Z on the target's, and {why}: program Z beside the length change", at))
 
 
-def _follow(block: Block, z: float | None, absolute: bool, length: float | None) -> float | None:
-    """The programmed Z after the block's motion (program units), None where it is not known; ``length``:
-    the length in force in program units (a machine-coordinate Z is the programmed Z plus it)."""
+def _follow(block: Block, pos: dict[str, float | None], absolute: bool,
+            length: float | None) -> dict[str, float | None]:
+    """The programmed point after the block's motion (program units), None where it is not known;
+    ``length``: the mill's length in force in program units (a machine-coordinate Z is the programmed Z
+    plus it; None: not known)."""
     sections = block.sections
     if "CompoundMotion" in sections or "RigidTap" in sections or "CycleCall" in sections:
-        return None  # a cycle ends at its return level: not followed here
+        return {a: None for a in pos}  # a cycle ends at its return level: not followed here
     motion = sections.get("Motion")
-    if not isinstance(motion, Motion) or AXIS not in motion.axes:
-        return z
-    value = motion.axes[AXIS]
-    if isinstance(value, Expr) or motion.mode not in _PLAIN:
-        return None
-    if "MachineCoordinates" in sections:
-        return None if length is None else float(value) - length
-    if absolute:
-        return float(value)
-    return None if z is None else z + float(value)
+    if not isinstance(motion, Motion) or pos.keys().isdisjoint(motion.axes):
+        return pos
+    out = dict(pos)
+    for axis in pos:
+        if axis not in motion.axes:
+            continue
+        value = motion.axes[axis]
+        if isinstance(value, Expr) or motion.mode not in _PLAIN:
+            out[axis] = None
+        elif "MachineCoordinates" in sections:
+            out[axis] = None if length is None or axis != AXIS else float(value) - length
+        elif absolute:
+            out[axis] = float(value)
+        else:
+            known = pos[axis]
+            out[axis] = None if known is None else known + float(value)
+    return out
 
 
 def _length(key: tuple[str, object, object], table: ToolTable, inch: bool) -> float | None:
@@ -276,9 +290,9 @@ def _length(key: tuple[str, object, object], table: ToolTable, inch: bool) -> fl
     return (value if mode == "positive" else -value) / scale
 
 
-def _sets_z(block: Block, absolute: bool) -> bool:
-    """The block's move ends at a Z programmed absolutely, in work or in machine coordinates: where the
-    two rules agree."""
+def _sets_z(block: Block, absolute: bool, axes: tuple[str, ...]) -> bool:
+    """The block's move ends at every one of ``axes`` programmed absolutely, in work or in machine
+    coordinates: where the two rules agree."""
     motion = block.sections.get("Motion")
-    return (isinstance(motion, Motion) and motion.mode in _PLAIN and AXIS in motion.axes
+    return (isinstance(motion, Motion) and motion.mode in _PLAIN and all(a in motion.axes for a in axes)
             and (absolute or "MachineCoordinates" in block.sections))
