@@ -208,3 +208,34 @@ def test_fanuc_t_with_offsets_runs_alike_in_rs274() -> None:
         ours = [(round(m[2], 4), round(m[3], 4)) for m in _moves(text, "fanuc", setup)]
         theirs = [(m[2], m[3]) for m in _rs274(ngc)]
         assert ours[1:] == theirs[1:], f"seed {seed}\n{text}\n{ngc}\nours   {ours}\nrs274  {theirs}"
+
+
+# -- the set-up -------------------------------------------------------------------------------------------
+
+LATHE_SETUP = """<?xml version='1.0' encoding='UTF-8'?>
+<MachineSetup name="lathe offsets">
+  <Input machineType="lathe"/>
+  <Tools>
+    <Tool number="2" x="4.0" z="-1.5"/>
+    <Tool number="3" x="0.0" z="2.0" xWear="0.2" zWear="-0.1"/>
+  </Tools>
+</MachineSetup>
+"""
+
+
+def test_lathe_offsets_round_trip_through_config_dump(cli: Any, tmp_path: Any) -> None:
+    path = tmp_path / "lathe.xml"
+    path.write_text(LATHE_SETUP)
+    assert cli("config", "check", path).status == 0
+    result = cli("config", "dump", path)
+    assert result.status == 0 and result.out.decode() == LATHE_SETUP
+
+
+@pytest.mark.parametrize("tool, message", [
+    ('<Tool number="2" x="4.0"/>', "a lathe offset gives x without z"),
+    ('<Tool number="2" xWear="0.1"/>', "xWear/zWear without the geometry x and z")])
+def test_config_check_names_a_missing_lathe_value(cli: Any, tmp_path: Any, tool: str, message: str) -> None:
+    path = tmp_path / "lathe.xml"
+    path.write_text(LATHE_SETUP.replace('<Tool number="2" x="4.0" z="-1.5"/>', tool))
+    result = cli("config", "check", path)
+    assert result.status != 0 and f'lathe.xml:5:1: error: <Tool number="2"> tool 2: {message}' in result.err
