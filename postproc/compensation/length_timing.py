@@ -23,7 +23,10 @@ program that changes the length there (typical posts: ``G43 H1 Z15.``). Otherwis
   change, or the next move is incremental, a reference return, a cycle or a machine-coordinate move) the
   change is a located error asking for Z beside it, and so is a tool table write between the two.
 
-ISG and Fagor targets get their D words from ``postproc.isg_family.tool_data`` after this step.
+On a lathe the same holds for X and Z together: a Fanuc T/GSK offset (``T0102``, become LinuxCNC's lathe
+``G43 H02`` in ``postproc.cycles.lathe_lowering``) applies at the next move of any axis, LinuxCNC's where
+each axis is programmed, so the move gets both. ISG and Fagor targets get their D words from
+``postproc.isg_family.tool_data`` after this step.
 """
 
 from __future__ import annotations
