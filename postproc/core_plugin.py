@@ -25,7 +25,7 @@ from .syntax import Pipeline
 from .syntaxes.modal_state import ModalStateSyntax
 from .cycles.rigid_tap_lowering import resolve_rigid_taps
 from .lowering.deferred import resolve_dynamic_cutter_compensation
-from .compensation.length_timing import time_length_changes
+from .lowering.length_timing import time_length_changes
 from .synchronised_tap import RigidTap
 from .xmlio import XFactory
 

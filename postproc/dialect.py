@@ -156,7 +156,7 @@ class Dialect:
     length axis is next programmed absolutely, where the new length applies (LinuxCNC, ISG by default,
     grbl's G43.1); the simulator then moves the programmed point instead (``Moves.compensation``).
     False: the new length applies with the next move of any axis (the simulation's Fanuc model); a
-    translation across the two rules moves or completes the change (``postproc.compensation.length_timing``,
+    translation across the two rules moves or completes the change (``postproc.lowering.length_timing``,
     ``postproc.isg_family.tool_data``)."""
     TAPE_MARKS: ClassVar[bool] = False
     """A ``%`` line may open and close a program (Fanuc, GSK, LinuxCNC): ``<Output tapeMarks="always">``."""

@@ -1,5 +1,5 @@
 """A tool length change translated between controllers that apply it at different moments
-(``postproc.compensation.length_timing``): LinuxCNC and grbl at the next absolute Z ([V] rs274, grbl
+(``postproc.lowering.length_timing``): LinuxCNC and grbl at the next absolute Z ([V] rs274, grbl
 ``gcode.c``), Fanuc at the next move (the simulation's model). Expected texts are written out by hand;
 ``verify`` (both sides simulated by their own rule) must pass at zero deviation. Tool 1: 100 mm."""
 

@@ -156,7 +156,7 @@ def test_linuxcnc_applies_a_length_change_only_at_the_next_z() -> None:
 def test_a_linuxcnc_length_change_without_z_keeps_its_place(target: str, lines: list[str]) -> None:
     """LinuxCNC and ISG (P-CHAN-00100 = 0) both apply the new length at the next absolute Z, so the D
     goes where the G43 was; Fagor (simulated as applying it at the next move, [?] when Z moves) gets it
-    at the next absolute Z (``postproc.compensation.length_timing``)."""
+    at the next absolute Z (``postproc.lowering.length_timing``)."""
     out = _translate(LINUXCNC_LENGTH_ALONE, "linuxcnc", target)
     assert out.splitlines() == lines
     assert _verify(LINUXCNC_LENGTH_ALONE, out, "linuxcnc", target).ok

@@ -45,7 +45,7 @@ from ..reading import gc_paused, macro_arguments, read_blocks
 from ..setup.machine_setup import MachineSetup
 from ..cycles.rigid_tap_lowering import resolve_rigid_taps
 from ..lowering.deferred import resolve_dynamic_cutter_compensation
-from ..compensation.length_timing import time_length_changes
+from ..lowering.length_timing import time_length_changes
 from .events import MOVES_THE_TOOL, UNSIMULATED, Event, header, num, start_position
 from .simulator import Simulator, simulate
 from .travel import TravelError

@@ -38,7 +38,7 @@ from ..dialect import Dialect
 from ..errors import Location, PostprocError, UnsupportedError
 from ..expr import Expr
 from ..ir import Block, DataSetting, DistanceMode, Motion, Section, ToolLengthOffset, Units
-from .tool_table import ToolTable
+from ..compensation.tool_table import ToolTable
 
 AXIS = "Z"
 MM_PER_INCH = 25.4
