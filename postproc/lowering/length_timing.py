@@ -49,7 +49,8 @@ _PLAIN = frozenset(("rapid", "linear", "cw", "ccw"))
 
 def time_length_changes(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
     """Lowering step: a tool length change placed where the target applies it as the source does (see
-    the module docstring); nothing to do between controllers with the same rule, or on a lathe."""
+    the module docstring); nothing to do between controllers with the same rule. On a lathe only the
+    way to a controller that applies it at the programmed axes is taken (Fanuc T/GSK -> LinuxCNC)."""
     if ctx.dialect == target.NAME or not target.TOOL_LENGTH_OFFSET and not _writes_lengths(target):
         return blocks
     if ctx.length_at_axis == target.LENGTH_AT_PROGRAMMED_AXIS:
