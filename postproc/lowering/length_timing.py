@@ -140,13 +140,13 @@ def _clash(sections: dict[str, Section]) -> str | None:
 
 
 HELD = 1000
-"""Blocks without motion held behind a waiting change at most (then it stays where it was written)."""
+"""Blocks without motion held behind a waiting change at most (then it is refused where it was written)."""
 
 
 def _complete(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
     """Towards a target that applies a change at the programmed axis: the change goes to the next move,
-    which gets the Z the program stands at. The blocks between are held (at most ``HELD``); a change
-    that meets no move (the program ends first) stays where it was written."""
+    which gets the Z the program stands at. The blocks between are held (at most ``HELD``, else a located
+    error); a change that meets no move (the program ends first) stays where it was written."""
     axes = ("X", AXIS) if ctx.lathe else (AXIS,)  # a lathe offset moves X and Z (LinuxCNC's lathe G43 H)
     pos: dict[str, float | None] = {a: None for a in axes}  # the programmed point, program units; None: unknown
     inch = False
@@ -163,6 +163,7 @@ def _complete(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
                 continue
             held.append(block)
             if len(held) >= HELD:
+                _refuse(ctx, pending[1], f"no move follows it within {HELD} blocks")
                 yield from _release(held, pending[0])
                 pending = None
             continue
