@@ -170,10 +170,12 @@ def _complete(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
         units = sections.get("Units")
         if isinstance(units, Units) and (units.system == "inch") != inch:
             inch = units.system == "inch"
-            pos = {a: None if v is None else v / MM_PER_INCH if inch else v * MM_PER_INCH for a, v in pos.items()}
+            for a, v in pos.items():
+                pos[a] = None if v is None else v / MM_PER_INCH if inch else v * MM_PER_INCH
         absolute = _distance(block, absolute)
         if "WorkOffset" in sections or "CoordinateSet" in sections:
-            pos = {a: None for a in axes}
+            for a in axes:
+                pos[a] = None
         setting = sections.get("DataSetting")
         if isinstance(setting, DataSetting):
             table.write(setting, MM_PER_INCH if inch else 1.0)
@@ -195,7 +197,7 @@ def _complete(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
                 _refuse(ctx, pending[1], f"{clash} follows it")
                 yield from _release(held, pending[0])
                 pending = None
-                pos = _follow(block, pos, absolute, None if ctx.lathe else _length(in_force, table, inch))
+                _follow(block, pos, absolute, in_force, None if ctx.lathe else table, inch)
                 yield block
                 continue
             held.append(block)
@@ -225,7 +227,7 @@ def _complete(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
                 sections["ToolLengthOffset"] = pending[0]
                 block.changed()
             pending = None
-        pos = _follow(block, pos, absolute, None if ctx.lathe else _length(in_force, table, inch))
+        _follow(block, pos, absolute, in_force, None if ctx.lathe else table, inch)
         yield block
     if pending is not None:
         yield from _release(held, pending[0])
@@ -250,32 +252,34 @@ def _refuse(ctx: Context, at: Location, why: str) -> None:
         f"absolute Z on the target's, and {why}: program Z beside the length change", at))
 
 
-def _follow(block: Block, pos: dict[str, float | None], absolute: bool,
-            length: float | None) -> dict[str, float | None]:
-    """The programmed point after the block's motion (program units), None where it is not known;
-    ``length``: the mill's length in force in program units (a machine-coordinate Z is the programmed Z
-    plus it; None: not known)."""
+def _follow(block: Block, pos: dict[str, float | None], absolute: bool, in_force: tuple[str, object, object],
+            table: ToolTable | None, inch: bool) -> None:
+    """Move ``pos`` (program units) to the point after the block's motion, None where it is not known. A
+    machine-coordinate Z is the programmed Z plus the mill's length in force (``in_force`` read in
+    ``table``; None on a lathe: not followed)."""
     sections = block.sections
     if "CompoundMotion" in sections or "RigidTap" in sections or "CycleCall" in sections:
-        return {a: None for a in pos}  # a cycle ends at its return level: not followed here
+        for axis in pos:
+            pos[axis] = None  # a cycle ends at its return level: not followed here
+        return
     motion = sections.get("Motion")
-    if not isinstance(motion, Motion) or pos.keys().isdisjoint(motion.axes):
-        return pos
-    out = dict(pos)
+    if not isinstance(motion, Motion):
+        return
+    axes = motion.axes
     for axis in pos:
-        if axis not in motion.axes:
+        value = axes.get(axis)
+        if value is None:
             continue
-        value = motion.axes[axis]
         if isinstance(value, Expr) or motion.mode not in _PLAIN:
-            out[axis] = None
+            pos[axis] = None
         elif "MachineCoordinates" in sections:
-            out[axis] = None if length is None or axis != AXIS else float(value) - length
+            length = None if table is None or axis != AXIS else _length(in_force, table, inch)
+            pos[axis] = None if length is None else float(value) - length
         elif absolute:
-            out[axis] = float(value)
+            pos[axis] = float(value)
         else:
             known = pos[axis]
-            out[axis] = None if known is None else known + float(value)
-    return out
+            pos[axis] = None if known is None else known + float(value)
 
 
 def _length(key: tuple[str, object, object], table: ToolTable, inch: bool) -> float | None:
