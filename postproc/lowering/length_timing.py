@@ -45,6 +45,8 @@ MM_PER_INCH = 25.4
 _WATCHED = frozenset(("ToolLengthOffset", "Motion", "CompoundMotion", "CycleCall", "DistanceMode", "Units",
                       "WorkOffset", "CoordinateSet", "DataSetting", "CutterCompensation", "RigidTap"))
 _PLAIN = frozenset(("rapid", "linear", "cw", "ccw"))
+_STATE = _WATCHED - {"Motion"} | {"MachineCoordinates"}
+"""What a block must lack for ``_complete``'s short way (a plain move or none, nothing else to follow)."""
 
 
 def time_length_changes(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
@@ -157,6 +159,17 @@ def _complete(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
     pending: tuple[ToolLengthOffset, Location] | None = None  # the waiting change, and where it was written
     for block in blocks:
         sections = block.sections
+        if pending is None and _STATE.isdisjoint(sections):  # the common block: at most a plain move
+            motion = sections.get("Motion")
+            if motion is not None:
+                for axis in axes:
+                    value = motion.axes.get(axis)  # type: ignore[attr-defined]
+                    if value is not None:
+                        known = pos[axis]
+                        pos[axis] = (None if isinstance(value, Expr) or motion.mode not in _PLAIN  # type: ignore[attr-defined]
+                                     else float(value) if absolute else None if known is None else known + value)
+            yield block
+            continue
         if _WATCHED.isdisjoint(sections):
             if pending is None:
                 yield block
