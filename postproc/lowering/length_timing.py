@@ -92,7 +92,9 @@ def _defer(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
     absolute = True
     for block in blocks:
         sections = block.sections
-        if _WATCHED.isdisjoint(sections):
+        if pending is None and "ToolLengthOffset" not in sections:  # nothing to carry: only the distance mode
+            if "DistanceMode" in sections:
+                absolute = _distance(block, absolute)
             yield block
             continue
         absolute = _distance(block, absolute)
