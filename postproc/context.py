@@ -60,7 +60,8 @@ class Context:
     reading dialect tells the neutral steps about its words."""
 
     __slots__ = ("file", "setup", "diagnostics", "state", "dialect", "cycle_words", "on_unsupported",
-                 "program_mode", "keep_check", "reader", "stops_before_motion", "feed_before_units", "cutter_rules", "run_data",
+                 "program_mode", "keep_check", "reader", "stops_before_motion", "feed_before_units", "cutter_rules", "length_at_axis",
+                 "run_data",
                  "point_mix", "lathe", "increments", "diameter", "one_block", "peck_clearance_mm", "moves_made",
                  "block_lane", "hole_lane")
 
@@ -87,6 +88,9 @@ class Context:
         True unless the dialect says otherwise, so a step never skips flags it was not told are absent)."""
         self.feed_before_units = False
         """An F in a block that changes units is in the old units (``Dialect.FEED_BEFORE_UNITS``)."""
+        self.length_at_axis = False
+        """A tool length change moves nothing until the length axis is next programmed absolutely
+        (``Dialect.LENGTH_AT_PROGRAMMED_AXIS`` of the reading dialect)."""
         self.cutter_rules: Any = None
         """The reading dialect's cutter compensation rules (``Dialect.CUTTER_RULES``; None: not modelled)."""
         self.point_mix: Any = NOT_SET

@@ -25,6 +25,7 @@ from .syntax import Pipeline
 from .syntaxes.modal_state import ModalStateSyntax
 from .cycles.rigid_tap_lowering import resolve_rigid_taps
 from .lowering.deferred import resolve_dynamic_cutter_compensation
+from .lowering.length_timing import time_length_changes
 from .synchronised_tap import RigidTap
 from .xmlio import XFactory
 
@@ -56,5 +57,6 @@ def postproc_register_lowerings(register: Callable[[Lowering], None]) -> None:
     register(convert_inverse_time)  # after the expansions: it follows the moves they leave
     register(comment_after_end)
     register(resolve_rigid_taps)  # after the cycles: an expanded rigid tap cycle shows its taps
+    register(time_length_changes)  # after the cycles: a change is carried to the move that applies it
     register(drop_foreign_machine_functions)
     register(frame_program)  # last: the frame goes around what the steps before made

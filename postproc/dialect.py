@@ -153,9 +153,11 @@ class Dialect:
     whenever tool data is selected (ISG's ``D``, ``postproc.isg_family.tool_data``)."""
     LENGTH_AT_PROGRAMMED_AXIS: ClassVar[bool] = False
     """A change of the tool length offset moves nothing: axes keep their machine position until the
-    length axis is next programmed absolutely, where the new length applies (LinuxCNC, ISG by default).
-    False: not known to hold, so a program of this dialect that changes the length without a Z move is
-    refused towards a target that has this rule (``postproc.isg_family.tool_data``)."""
+    length axis is next programmed absolutely, where the new length applies (LinuxCNC, ISG by default,
+    grbl's G43.1); the simulator then moves the programmed point instead (``Moves.compensation``).
+    False: the new length applies with the next move of any axis (the simulation's Fanuc model); a
+    translation across the two rules moves or completes the change (``postproc.lowering.length_timing``,
+    ``postproc.isg_family.tool_data``)."""
     TAPE_MARKS: ClassVar[bool] = False
     """A ``%`` line may open and close a program (Fanuc, GSK, LinuxCNC): ``<Output tapeMarks="always">``."""
     PROGRAM_NUMBERS: ClassVar[bool] = False
@@ -328,6 +330,7 @@ class Dialect:
         ctx.stops_before_motion = cls.STOPS_BEFORE_MOTION
         ctx.feed_before_units = cls.FEED_BEFORE_UNITS
         ctx.cutter_rules = cls.CUTTER_RULES
+        ctx.length_at_axis = cls.LENGTH_AT_PROGRAMMED_AXIS
         ctx.peck_clearance_mm = cls.PECK_CLEARANCE_MM
         if cls.INVERSE_TIME_FEED:
             ctx.run_data[INVERSE_TIME_KEY] = True  # its programs may run in G93 (``postproc.lowering.inverse_time``)

@@ -52,8 +52,10 @@ def test_with_warn_only_the_t_word_is_left_out() -> None:
 @pytest.mark.skipif(not available(), reason="the LinuxCNC interpreter rs274 is not installed")
 def test_an_index_with_the_spindle_stopped_is_the_tool_change_and_moves_alike() -> None:
     text, _ = _translate(STOPPED, "linuxcnc")
-    # the index's offset number is LinuxCNC's G43 register: its tool table entry's X and Z offsets
-    assert "G43 H02 T2 M6" in text.splitlines() and "G43 H03 T3 M6" in text.splitlines(), text
+    # the index's offset number is LinuxCNC's G43 register: its tool table entry's X and Z offsets; Fanuc
+    # applies it with the next move (both axes), LinuxCNC where X and Z are programmed: the move gets both
+    lines = text.splitlines()
+    assert "T2 M6" in lines and "G43 H02 G1 X40. Z5. F0.2" in lines and "G43 H03 G1 X30. Z-10." in lines, text
     moves = [(e["move"], round(e["x"], 4), round(e["z"], 4))
              for e in canonical_moves(run_rs274(text), start=(0.0, 0.0, 0.0)) if "move" in e]
     assert moves == RADIUS_MOVES
@@ -76,7 +78,8 @@ TABLE = "T1 P1 X0 Z0 D0\nT2 P2 X0.1 Z0.2 D0\n"
 def test_the_offset_number_becomes_the_register_and_offset_zero_the_cancel() -> None:
     text, warnings = _translate(OFFSETS, "linuxcnc")
     lines = text.splitlines()
-    assert "G43 H02 T1 M6" in lines and "G49 T1 M6" in lines, text  # T0102: tool 1, offset 2
+    # T0102: tool 1, offset 2, applied by the next move (with both axes, as Fanuc T moves both there)
+    assert "G43 H02 G0 X50. Z5." in lines and "G49 G0 X60. Z5." in lines, text
     assert warnings == []
 
 
@@ -107,12 +110,13 @@ def test_verify_compares_the_offset_selected_on_both_sides() -> None:
     assert not none.ok, none.summary()
 
 
-def test_a_mill_control_without_lathe_offsets_warns_and_verify_reports_the_lost_offset() -> None:
-    """grbl has no lathe tool offsets: the translation says the offset is not applied, and verify fails
-    on it (the old output passed verify with the offset silently lost)."""
+def test_a_mill_control_without_lathe_offsets_needs_the_set_up_values() -> None:
+    """grbl has no lathe tool offsets: they are written into the coordinates from the set-up, so a
+    set-up that gives none is a located error naming the element (it warned, and verify failed, before)."""
     source = OFFSETS.replace("G99", "G98").replace("F0.2", "F200.")  # feed per minute: grbl has no other
-    text, warnings = _translate(source, "grbl")
-    assert len(warnings) == 1 and "T0102 selects offset 02: grbl has no lathe tool offsets" in warnings[0]
-    report = verify_lines(io.StringIO(source), io.StringIO(text), file_in="l.nc", file_out="l.gcode",
-                          source="fanuc", target="grbl", setup=LATHE, tolerance=0.0)
-    assert not report.ok and "lathe tool offset" in report.summary(), report.summary()
+    with pytest.raises(ErrorList) as caught:
+        _translate(source, "grbl")
+    assert [str(e) for e in caught.value.errors] == [
+        'l.nc:3:1: error: T0102 selects lathe offset 02, which the target has no way to apply: it is written into '
+        'the coordinates from the set-up, which gives offset 2 no X and Z (add <Tool number="2" x=".." z=".."/> '
+        'to its <Tools>)']

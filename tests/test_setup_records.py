@@ -9,10 +9,12 @@ from typing import Any
 import pytest
 
 from postproc.setup.machine_setup import GROUPS, MachineCode, SetupGroup
-from postproc.setup.machine import CONTAINERS
+from postproc.setup.machine import CONTAINERS, ToolData
 from postproc.setup.record import alias_of, values
 from postproc.setup.validate import Invalid, validate
 
+PARTNERS = {name: {"x": "0", "z": "0"} for name in ("x", "z", "x_wear", "z_wear")}
+"""A lathe offset's fields need their partners (``ToolData``: x and z are given together)."""
 BOUNDED = [(cls, f) for cls in [*GROUPS, *CONTAINERS.values()] for f in dataclasses.fields(cls)
            if {"ge", "gt", "le"} & set(f.metadata)]
 
@@ -31,6 +33,7 @@ def test_every_declared_bound_is_enforced_at_its_edge(cls: type[Any], field: dat
     alias = alias_of(cls, field)
     named = getattr(cls, "KEY", "")  # an entry needs its key (the key's own bounds are tested as a field)
     key = {named: "1" if named == "number" else "X"} if named and named != field.name else {}
+    key.update({k: v for k, v in PARTNERS.get(field.name, {}).items() if k != alias} if cls is ToolData else {})
     whole = "int" in str(field.type)
     step = 1 if whole else 1e-9
     edges = [("ge", -step, "greater than or equal to"), ("gt", 0, "greater than"), ("le", step, "less than or equal to")]

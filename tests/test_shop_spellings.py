@@ -120,7 +120,8 @@ def test_h0_beside_g53_under_g49_cancels_nothing_and_moves_in_machine_coordinate
 
 def test_h_alone_under_g43_selects_that_register() -> None:
     out = translated("G43 H1 Z10.\nG53 G0 Z0 H0\nG00 X1. H2\nM30", "linuxcnc").splitlines()
-    assert out[1:3] == ["G53 G43 H00 G0 Z0.", "G43 H02 G0 X1."]
+    # the X move applies H2 on Fanuc: LinuxCNC gets the Z it stands at (machine Z0, H0 in force: Z0)
+    assert out[1:3] == ["G53 G43 H00 G0 Z0.", "G43 H02 G0 X1. Z0."]
 
 
 def test_h_alone_under_g49_is_refused_naming_g43() -> None:

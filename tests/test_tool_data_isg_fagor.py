@@ -125,10 +125,14 @@ def test_one_d_cannot_carry_two_registers_of_different_lengths(target: str) -> N
 
 def test_isg_applies_a_new_length_only_at_an_absolute_z() -> None:
     """[V] TF5200 P-CHAN-00100 (default 0): a D's length reaches Z at the next absolute Z move only."""
-    assert _errors("G21 G90\nG43 H01\nG00 Z50.\nM30\n", "fanuc", "isg") == [
-        "in.nc:2:5: error: the new tool length is applied only at a move of Z (ISG: programmed absolutely, "
-        "P-CHAN-00100 by default; Fagor: when the axis moves): program the length offset beside a Z move"]
+    assert _errors("G21 G90\nG43 H01\nG91 G00 Z5.\nM30\n", "fanuc", "isg") == [
+        "in.nc:2:5: error: this tool length change applies at the next move on the source's controller and only "
+        "at the next absolute Z on the target's, and the programmed Z is not known where it applies: program Z "
+        "beside the length change"]
     assert "D01 G00 Z50." in _translate("G21 G90\nG43 H01 Z50.\nM30\n", "fanuc", "isg").splitlines()
+    alone = "G21 G90\nG43 H01\nG00 Z50.\nM30\n"  # the next move applies it on Fanuc: it goes there
+    out = _translate(alone, "fanuc", "isg")
+    assert "D01 G00 Z50." in out.splitlines() and _verify(alone, out, "fanuc", "isg").ok
 
 
 LINUXCNC_LENGTH_ALONE = "G21 G90 G0 X0 Y0 Z50\nT1 M6\nG43 H1\nG0 X10\nG0 Z5\nG49\nG0 X20\nG0 Z50\nM2\n"
@@ -147,22 +151,25 @@ def test_linuxcnc_applies_a_length_change_only_at_the_next_z() -> None:
 
 @pytest.mark.parametrize("target, lines", [
     ("isg", ["G71 G90 G00 X0. Y0. Z50.", "T1 M06", "D01", "G00 X10.", "G00 Z5.", "D0", "G00 X20.", "G00 Z50.", "M02"]),
-    ("fagor", ["G71 G90 G00 X0. Y0. Z50.", "T1 M06", "G43 D01", "G00 X10.", "G00 Z5.", "G44", "G00 X20.", "G00 Z50.",
+    ("fagor", ["G71 G90 G00 X0. Y0. Z50.", "T1 M06", "G00 X10.", "G43 D01 G00 Z5.", "G00 X20.", "G44 G00 Z50.",
                "M02"])])
 def test_a_linuxcnc_length_change_without_z_keeps_its_place(target: str, lines: list[str]) -> None:
     """LinuxCNC and ISG (P-CHAN-00100 = 0) both apply the new length at the next absolute Z, so the D
-    goes where the G43 was; Fagor applies it when Z moves, the next Z move being absolute here."""
+    goes where the G43 was; Fagor (simulated as applying it at the next move, [?] when Z moves) gets it
+    at the next absolute Z (``postproc.lowering.length_timing``)."""
     out = _translate(LINUXCNC_LENGTH_ALONE, "linuxcnc", target)
     assert out.splitlines() == lines
     assert _verify(LINUXCNC_LENGTH_ALONE, out, "linuxcnc", target).ok
 
 
-def test_a_linuxcnc_length_change_then_an_incremental_z_is_refused_towards_fagor() -> None:
+def test_a_linuxcnc_length_change_then_an_incremental_z_goes_to_the_absolute_z_towards_fagor() -> None:
+    """The incremental Z moves the machine 5 down under either length (rs274: by its increment), so Fagor
+    gets the change at the absolute Z, where LinuxCNC applies it, whichever Fagor rule holds."""
     text = "G21 G90 G0 X0 Y0 Z50\nT1 M6\nG43 H1\nG0 X10\nG91 G0 Z-5\nG90 G0 Z50\nM2\n"
-    assert _errors(text, "linuxcnc", "fagor") == [
-        "in.nc:5:8: error: the tool length changed before is applied by this incremental Z move on the target "
-        "(when the axis moves [?]), on the source's controller only at the next absolute Z: program Z absolutely "
-        "here"]
+    out = _translate(text, "linuxcnc", "fagor")
+    assert out.splitlines() == ["G71 G90 G00 X0. Y0. Z50.", "T1 M06", "G00 X10.", "G91 G00 Z-5.",
+                                "G90 G43 D01 G00 Z50.", "M02"]
+    assert _verify(text, out, "linuxcnc", "fagor").ok
     assert "D01" in _translate(text, "linuxcnc", "isg").splitlines()  # ISG waits for an absolute Z too
 
 

@@ -1,7 +1,9 @@
 """Tool length compensation: G43 adds the length of its register to Z, G44 subtracts it, G49 cancels it
 ([V] LinuxCNC: ``USE_TOOL_LENGTH_OFFSET`` with the table's length; [K] Fanuc: offset along Z, the sign by
 G43/G44). The offset takes effect with the next move: a block that only changes it moves nothing here
-([V] LinuxCNC; [?] a controller that moves the axis at the changing block itself ends at the same point).
+([?] Fanuc: a controller that moves the axis at the changing block itself ends at the same point). A
+controller that moves nothing until the axis is programmed (``Dialect.LENGTH_AT_PROGRAMMED_AXIS``: [V]
+LinuxCNC, grbl) keeps the controlled point instead (``Moves.compensation``).
 
 The simulator keeps the programmed point in its own frame and writes the controlled point (programmed +
 offset) beside it; a reference return ends at the reference point with no offset ([V] LinuxCNC computes

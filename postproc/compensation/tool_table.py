@@ -123,3 +123,16 @@ class ToolTable:
     def _declared_wear(self, quantity: str, register: int) -> float:
         tool = self.tools.get(str(register))
         return 0.0 if tool is None else float(tool.wear(quantity)) * self.mm
+
+    def lathe(self, register: int, diameter: bool) -> tuple[float, float] | None:
+        """Lathe offset register ``register`` (``T0102``'s 2, LinuxCNC's lathe ``G43 H2``) as (X, Z) in mm,
+        X a radius (the set-up's x is a diameter where ``diameter``); None when the set-up declares no
+        lathe offsets for it (the selection is then compared, not applied: ``Moves.lathe_offset``).
+        Register 0 is no offset."""
+        if register == 0:
+            return 0.0, 0.0
+        tool = self.tools.get(str(register))
+        values = None if tool is None else tool.lathe()
+        if values is None:
+            return None
+        return values[0] * self.mm * (0.5 if diameter else 1.0), values[1] * self.mm

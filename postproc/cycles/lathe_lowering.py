@@ -10,7 +10,8 @@ controller never ran it where it stands).
 
 For a target that reads no lathe programs (grbl), the moves are made its own: the ZX plane is selected first, U/W increments become absolute X/Z (from the tracked position; a
 located error where it is unknown), and on a diameter program X is halved (such a target takes a
-radius: ``Dialect.DIAMETER_PROGRAMMING``). A lathe target without the source's incremental addresses
+radius: ``Dialect.DIAMETER_PROGRAMMING``), and the set-up's lathe tool offsets are written into its
+coordinates (``postproc.cycles.lathe_offsets``). A lathe target without the source's incremental addresses
 (LinuxCNC, whose U/W are axes) gets absolute X/Z too, and one that changes lathe tools with M6
 (``Dialect.LATHE_TURRET`` False) gets the turret index as a tool change and its offset number as the
 register of its tool length offset code, and of a G41/G42 that names none: a turret lathe's tool nose
@@ -27,17 +28,19 @@ compensation runs as any other moves: it stays.
 
 from __future__ import annotations
 
-from typing import Iterator
+from typing import Any, Callable, Iterator
 
 from postproc.context import Context
 from postproc.dialect import Dialect
 from postproc.expr import Expr
-from postproc.errors import UnsupportedError
+from postproc.errors import PostprocError, UnsupportedError
 from postproc.ir import (
     Block, Comments, CompoundMotion, CutterCompensation, DistanceMode, FeedMode, Motion, Plane, SpindleControl, ToolChange,
     ToolLengthOffset, ToolSelect,
 )
 from postproc.lathe_sections import CoordinateSet, LatheCycle
+
+from .lathe_offsets import LatheOffsets
 
 def lathe_tool(number: int) -> int:
     """The tool of a lathe T word: T0101 (tool and offset, four digits) is tool 1; T1 to T99 name the tool."""
@@ -75,7 +78,7 @@ def _lower(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iter
     X/Z. (The simulator, which writes nothing, reads the source's own.)"""
     tracker = _Position(ctx, radius) if foreign or radius or absolute else None
     turret = foreign or not target.LATHE_TURRET
-    offset_lost = False
+    offsets = LatheOffsets(ctx, radius) if foreign else None
     plane_set = not foreign
     start_mode = ctx.state.feed_mode  # read before any block: the source's mode at the start
     target_mode = target.LATHE_FEED_AT_START if not foreign else "per_min"
@@ -121,14 +124,17 @@ def _lower(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iter
             if not foreign and "ToolSelect" in block.sections:
                 _select_offset(select, block, ctx)
                 nose.select(select)
-            elif foreign and not offset_lost and "ToolSelect" in block.sections:
-                offset_lost = _warn_lost_offset(select, block, ctx, target)
+            elif offsets is not None and "ToolSelect" in block.sections:
+                _report(offsets.select, block, ctx, select)
             turning = _turns_after(block, turning)
         if tracker is not None:
             if not plane_set and ("Motion" in sections or "CompoundMotion" in sections):
                 block.add(Plane("ZX"))
                 plane_set = True
-            if tracker.block(block):
+            back_to_absolute = tracker.block(block)
+            if offsets is not None:
+                _report(offsets.block, block, ctx, tracker)
+            if back_to_absolute:
                 yield block
                 back = Block(block.line, None, block.eol)
                 back.add(DistanceMode("absolute"))
@@ -223,16 +229,12 @@ def _select_offset(select: object, block: Block, ctx: Context) -> None:
     block.changed()
 
 
-def _warn_lost_offset(select: object, block: Block, ctx: Context, target: type[Dialect]) -> bool:
-    """A mill control (grbl) has no lathe tool offsets: the index's offset (X and Z) is not applied there.
-    A warning at the first index that names one (``verify`` then reports the lost "lathe tool offset").
-    True once warned."""
-    if not isinstance(select, ToolSelect) or not isinstance(select.number, int) or select.number % 100 == 0:
-        return False
-    ctx.diagnostics.warn(f"T{select.number:04d} selects offset {select.number % 100:02d}: {target.NAME} has no lathe "
-                         "tool offsets, so the tool's X/Z offsets are not applied (program the tool's tip as "
-                         "touched off, or choose a lathe target)", ctx.at(block))
-    return True
+def _report(step: Callable[[Block, Any], None], block: Block, ctx: Context, arg: Any) -> None:
+    """Run a step of the lathe offsets on ``block``; its error is reported (located at the block)."""
+    try:
+        step(block, arg)
+    except PostprocError as err:
+        ctx.diagnostics.error(err if err.location is not None else err.located(ctx.at(block)))
 
 
 def _turns_after(block: Block, turning: bool) -> bool:

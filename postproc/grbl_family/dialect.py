@@ -12,6 +12,12 @@ from postproc.setup.machine_setup import MachineSetup
 class GrblFamily(Dialect):
     """A grbl-family dialect (subclassed by each; it registers none itself)."""
 
+    LENGTH_AT_PROGRAMMED_AXIS = True
+    """[V] grbl ``gcode.c``: ``G43.1``/``G49`` change ``tool_length_offset`` and move nothing; an axis without
+    a word keeps ``gc_state.position`` (machine), an absolute word adds the offset, an incremental one adds
+    to the machine position. [K] grblHAL ``gcode.c``: the same (``gc_get_block_offset`` adds the length to
+    absolute words only)."""
+
     @classmethod
     def tool_table(cls, setup: MachineSetup) -> bool:
         """The controller under ``setup`` runs ``G43 H`` from its own tool table (else a length offset from a

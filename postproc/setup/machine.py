@@ -137,6 +137,11 @@ class ToolData(Entry):
     ``radius``: G41/G42 run the nose centre one radius beside the path and the imaginary tip (the point
     the offsets measure) is that centre moved by the radius in this direction
     (``postproc.compensation.nose``). Absent: 0, the nose centre is the point."""
+    x_wear: float | None = coordinate(alias="xWear")
+    z_wear: float | None = coordinate(alias="zWear")
+    """Lathe wear offsets, added to the geometry ones [K: Fanuc Series 0i-TC/TD operator's manual, "Tool
+    offset": the offset memory holds geometry and wear per offset number, both applied by ``T□□△△``;
+    parameter LGN (5002#1) picks the geometry number: the wear number, as here, or the tool number]."""
 
     def __post_init__(self) -> None:
         if self.shared() and any(v is not None for v in (self.length, self.radius, self.length_wear,
@@ -146,10 +151,21 @@ class ToolData(Entry):
         if self.by_diameter() and (self.radius is not None or self.radius_wear is not None):
             raise ValueError(f"tool {self.number}: diameter/diameterWear (Haas's columns by diameter) beside "
                              "radius/radiusWear: give the cutter by one of them")
+        if (self.x is None) != (self.z is None):
+            raise ValueError(f"tool {self.number}: a lathe offset gives {'x' if self.x is not None else 'z'} "
+                             f"without {'z' if self.x is not None else 'x'} (give both; 0 where it is zero)")
+        if self.x is None and (self.x_wear is not None or self.z_wear is not None):
+            raise ValueError(f"tool {self.number}: xWear/zWear without the geometry x and z")
 
     def by_diameter(self) -> bool:
         """The entry gives its cutter by diameter (Haas's setting 40 on Diameter)."""
         return self.diameter is not None or self.diameter_wear is not None
+
+    def lathe(self) -> tuple[float, float] | None:
+        """The lathe offset (X, Z) in set-up units, geometry plus wear; None when the entry gives none."""
+        if self.x is None or self.z is None:
+            return None
+        return self.x + (self.x_wear or 0.0), self.z + (self.z_wear or 0.0)
 
     def shared(self) -> bool:
         """The entry is one value for H and D (Fanuc memory A/B)."""

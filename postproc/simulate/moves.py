@@ -66,6 +66,8 @@ class Moves:
         """Spindle direction of the last spindle event (None before the first): a tool change stops a
         turning spindle first, as a tool changer does, and stopping a stopped spindle is no event."""
         self.lathe = ctx.lathe
+        self.length_at_axis = ctx.length_at_axis
+        """A length change keeps the machine point (``Dialect.LENGTH_AT_PROGRAMMED_AXIS``)."""
         self.increments = ctx.increments
         """Addresses that move an axis by an increment (a lathe's U and W: ``Dialect.INCREMENTAL_AXES``)."""
         self.diameter = ctx.diameter
@@ -98,6 +100,8 @@ class Moves:
             self.travel = TravelCheck(self, self._travel_report)
         self.tools = ToolTable(setup)
         self.length = ToolLength(self.tools)
+        self.lathe_shift: dict[str, float] = {}
+        """The lathe tool offset in force (``lathe_offset``): mm added to the programmed X (a radius) and Z."""
         self.cutter = None if cutter_rules is None else CutterRadius(cutter_rules, self._release)
         """Cutter radius compensation, when the dialect's rules are known (else it stays a setting)."""
         self.compensating = False
@@ -217,23 +221,74 @@ class Moves:
         tl = get("ToolLengthOffset")
         if tl is not None and self.lathe and tl.mode in ("positive", "cancel"):  # type: ignore[attr-defined]
             register = tl.register if tl.register is not None else self.spindle_tool  # type: ignore[attr-defined]
-            self.lathe_offset(block.line, "cancel" if tl.mode == "cancel" else f"offset {register}")  # type: ignore[attr-defined]
+            self.lathe_offset(block, 0 if tl.mode == "cancel" else register)  # type: ignore[attr-defined]
         elif tl is not None:
+            before = self.length.offset
             try:
                 self.length.change(tl.mode, tl.register, tl.length, self.scale)  # type: ignore[attr-defined]
             except PostprocError as err:
                 raise err.located(self._at(block, "H")) from None
-            if self.length.offset:
+            if self.length_at_axis and self.length.offset != before:
+                self._keep_machine_point(self.length.offset - before)
+            elif self.length.offset:
                 self._begin()
 
-    def lathe_offset(self, line: int, value: str) -> None:
-        """A lathe's tool offset register selected (Fanuc T/GSK ``T0101``'s last digits, LinuxCNC's lathe
-        ``G43 H1``): the set-up holds no lathe tool offsets (X and Z) to apply, so the selection is a
-        setting that moves the tool, compared between the programs (``verify``), never taken as zero
-        silently."""
-        if value != self.settings.get(LATHE_TOOL_OFFSET):
-            self.settings[LATHE_TOOL_OFFSET] = value
-            self.unsimulated.append((line, LATHE_TOOL_OFFSET, value))
+    def _keep_machine_point(self, change: float) -> None:
+        """A length change on a controller that moves nothing until the length axis is programmed
+        absolutely: the controlled point stays, the programmed point takes the change instead ([V] rs274:
+        ``G43 H1`` then ``G1 X10`` keeps machine Z, the canonical Z reads ``old - length``; [V] grbl
+        ``gcode.c``: an axis without a word keeps ``gc_state.position``, the machine position, and only an
+        absolute word adds ``tool_length_offset``). A later incremental move moves the machine by its
+        increment, an absolute one goes to the programmed point plus the new length."""
+        if LENGTH_AXIS not in self.pos:
+            return
+        self._begin()  # the controlled point before the change is the one kept
+        self.pos = dict(self.pos)  # the old dict may be a queued segment's end
+        self.pos[LENGTH_AXIS] -= change
+        self.rounded = dict(self.rounded)
+        self.rounded[LENGTH_AXIS] = num(self.pos[LENGTH_AXIS])
+        self._settle()
+
+    def lathe_offset(self, block: Block, register: object) -> None:
+        """A lathe's tool offset register selected (Fanuc T/GSK ``T0102``'s last digits, LinuxCNC's lathe
+        ``G43 H2``; 0 cancels). Where the set-up gives the register's X and Z (``<Tool x z>``), they move
+        the controlled point: from the next move on (Fanuc T, GSK: the simulation's model, as for a mill's
+        length [?]: Fanuc's parameter LWM chooses the T block itself or the next move, the end point of
+        that move is the same), or where the axis is next programmed absolutely on a controller that moves
+        nothing at the change ([V] rs274: lathe ``G43 H2`` prints ``USE_TOOL_LENGTH_OFFSET`` with entry 2's
+        X and Z and moves nothing). Where it gives none, the selection is a setting that moves the tool,
+        compared between the programs (``verify``), never taken as zero silently."""
+        values = self.tools.lathe(register, self.diameter) if isinstance(register, int) else None
+        if values is None:
+            self._lathe_shift(0.0, 0.0)
+            value = "cancel" if register == 0 else f"offset {register}"
+            if value != self.settings.get(LATHE_TOOL_OFFSET):
+                self.settings[LATHE_TOOL_OFFSET] = value
+                self.unsimulated.append((block.line, LATHE_TOOL_OFFSET, value))
+            return
+        if self.settings.get(LATHE_TOOL_OFFSET) != "cancel":
+            self.settings[LATHE_TOOL_OFFSET] = "cancel"  # applied from here on: nothing left to compare
+            self.unsimulated.append((block.line, LATHE_TOOL_OFFSET, "cancel"))
+        self._lathe_shift(*values)
+
+    def _lathe_shift(self, x: float, z: float) -> None:
+        """Put the lathe offset (X radius, Z; mm) in force."""
+        old = self.lathe_shift
+        new = {"X": x, "Z": z} if x or z else {}
+        if new == old:
+            return
+        if self.length_at_axis:
+            self._begin()
+            self.pos, self.rounded = dict(self.pos), dict(self.rounded)
+            for axis in ("X", "Z"):
+                change = new.get(axis, 0.0) - old.get(axis, 0.0)
+                if change and axis in self.pos:
+                    self.pos[axis] -= change
+                    self.rounded[axis] = num(self.pos[axis])
+        self.lathe_shift = new
+        if new:
+            self._begin()
+        self._settle()
 
     def _cutter_register(self, block: Block, register: int | None) -> int:
         """The register a G41/G42 reads: its own, or by the rules the spindle tool's (LinuxCNC). The plane
@@ -447,6 +502,9 @@ class Moves:
         crounded = rounded.copy()
         if LENGTH_AXIS in crounded:
             crounded[LENGTH_AXIS] = num(target[LENGTH_AXIS] + self.length.offset)
+        for axis, shift in self.lathe_shift.items():
+            if axis in crounded:
+                crounded[axis] = num(target[axis] + shift + (self.length.offset if axis == LENGTH_AXIS else 0.0))
         if crounded == self.crounded:
             self.pos, self.rounded = target, rounded
             self._settle()
@@ -492,6 +550,9 @@ class Moves:
             control[a1], control[a2] = seg.xy
         if seg.dz and LENGTH_AXIS in control:
             control[LENGTH_AXIS] += seg.dz
+        for axis, shift in self.lathe_shift.items():
+            if axis in control:
+                control[axis] += shift
         crounded = {a: num(v) for a, v in control.items()}
         kind = seg.kind
         if kind in ("rapid", "feed") and crounded == self.crounded:
@@ -511,6 +572,9 @@ class Moves:
             ccentre = {a1: cc[0], a2: cc[1], normal: seg.normal}
             if seg.dz and LENGTH_AXIS in ccentre:
                 ccentre[LENGTH_AXIS] += seg.dz
+            for axis, shift in self.lathe_shift.items():
+                if axis in ccentre:
+                    ccentre[axis] += shift
             for axis in ("X", "Y", "Z"):
                 if axis in self.pos:
                     scale = 2.0 if diameter and axis == "X" else 1.0
@@ -526,7 +590,7 @@ class Moves:
 
     def _settle(self) -> None:
         """Leave the compensation once nothing offsets the tool and it stands at the programmed point."""
-        if not self.length.offset and self._cutter_idle() and self.rounded == self.crounded:
+        if not self.length.offset and not self.lathe_shift and self._cutter_idle() and self.rounded == self.crounded:
             self.compensating = False
 
     def finish(self) -> None:

@@ -78,9 +78,8 @@ class Simulator(Moves):
             if s is not None:
                 if self.lathe and "ToolChange" not in sections:
                     emit({"line": line, "event": "tool", "number": lathe_tool(s.number)})
-                    offset = s.number % 100 if isinstance(s.number, int) else None
-                    if offset is not None:
-                        self.lathe_offset(line, f"offset {offset}" if offset else "cancel")
+                    if isinstance(s.number, int):
+                        self.lathe_offset(block, s.number % 100)
             if "ToolChange" in sections:
                 if self.cutter is not None and self.cutter.side is not None:
                     raise ProgramError("a tool change with cutter compensation on cannot be run (cancel it "
@@ -279,6 +278,9 @@ class Simulator(Moves):
                 ref[key] = self.home.get(key, 0.0) if mode == "home" and not self.lathe else 0.0
             if self.length.offset and LENGTH_AXIS in m.axes:
                 ref[LENGTH_AXIS] -= self.length.offset  # the reference point is a machine position
+            for axis, shift in self.lathe_shift.items():
+                if axis in self._programmed(m.axes):
+                    ref[axis] -= shift
             if travel is not None:
                 travel.home(block, self._programmed(m.axes))
             self.line_move("rapid", ref, line, emit)
@@ -353,6 +355,9 @@ class Simulator(Moves):
                                self._at(block))
         if self.length.offset and LENGTH_AXIS in self._programmed(m.axes):
             target[LENGTH_AXIS] -= self.length.offset
+        for axis, shift in self.lathe_shift.items():
+            if axis in self._programmed(m.axes):
+                target[axis] -= shift
 
 
 def simulate(blocks: Iterable[Block], ctx: Context, live_after_end: list[int] | None = None,

@@ -45,6 +45,7 @@ from ..reading import gc_paused, macro_arguments, read_blocks
 from ..setup.machine_setup import MachineSetup
 from ..cycles.rigid_tap_lowering import resolve_rigid_taps
 from ..lowering.deferred import resolve_dynamic_cutter_compensation
+from ..lowering.length_timing import time_length_changes
 from .events import MOVES_THE_TOOL, UNSIMULATED, Event, header, num, start_position
 from .simulator import Simulator, simulate
 from .travel import TravelError
@@ -53,10 +54,11 @@ __all__ = ["MOVES_THE_TOOL", "UNSIMULATED", "Event", "Simulator", "ToolpathTarge
            "header", "num", "simulate", "start_position", "toolpath_events"]
 
 TRANSLATE_ONLY = (check_blocks, comment_after_end, drop_foreign_machine_functions, resolve_rigid_taps,
-                  resolve_dynamic_cutter_compensation)
+                  resolve_dynamic_cutter_compensation, time_length_changes)
 """Generic lowering steps a simulation skips: it checks the feed itself, it must see the blocks after
 the program end as they are written (to record the live ones), and it runs machine-specific codes,
-rigid taps and compensation by a diameter (keeping the programmed point beside the controlled one)."""
+rigid taps and compensation by a diameter (keeping the programmed point beside the controlled one), and
+it applies a tool length change by the reading dialect's own rule (``time_length_changes``)."""
 
 
 class ToolpathTarget(Dialect):

@@ -1,0 +1,322 @@
+"""When a tool length change applies, carried across controllers that disagree (a generic lowering step).
+
+Two rules (``Dialect.LENGTH_AT_PROGRAMMED_AXIS``):
+
+* at the programmed axis ([V] LinuxCNC rs274, [V] grbl ``gcode.c``, [V] ISG by default): a change moves
+  nothing; the machine keeps its Z until Z is next programmed absolutely, where the new length applies
+  (an incremental Z moves the machine by its increment);
+* at the next move (the simulation's model of Fanuc and the rest, ``postproc.compensation.tool_length``):
+  the next move of any axis takes the controlled Z to the programmed Z plus the new length.
+
+A change beside an absolute Z move means the same under both, and so does every other block of a
+program that changes the length there (typical posts: ``G43 H1 Z15.``). Otherwise:
+
+* towards "at the next move" from "at the programmed axis": the change is moved to the next block that
+  programs Z absolutely (the moves between keep the machine Z under both rules; an incremental Z moves it
+  by the same increment under the old length as under the new one). Where a later change replaces it
+  first, only the last is written; one still waiting at the program end changed no move and is left out.
+  A canned cycle, a tool table write or a cutter compensation change while it waits is a located error
+  (the two would then differ).
+* towards "at the programmed axis" from "at the next move": the change goes to the next motion block,
+  which gets the Z the program stands at (absolute, program units) if it has none, so the target moves Z
+  there as the source does; where that Z is not known (no absolute Z since the start or a work offset
+  change, or the next move is incremental, a reference return, a cycle or a machine-coordinate move) the
+  change is a located error asking for Z beside it, and so is a tool table write between the two.
+
+On a lathe the same holds for X and Z together: a Fanuc T/GSK offset (``T0102``, become LinuxCNC's lathe
+``G43 H02`` in ``postproc.cycles.lathe_lowering``) applies at the next move of any axis, LinuxCNC's where
+each axis is programmed, so the move gets both. ISG and Fagor targets get their D words from
+``postproc.isg_family.tool_data`` after this step.
+"""
+
+from __future__ import annotations
+
+from typing import Iterator
+
+from ..context import Context
+from ..dialect import Dialect
+from ..errors import Location, PostprocError, UnsupportedError
+from ..expr import Expr
+from ..ir import Block, DataSetting, DistanceMode, Motion, Section, ToolLengthOffset, Units
+from ..compensation.tool_table import ToolTable
+
+AXIS = "Z"
+MM_PER_INCH = 25.4
+_WATCHED = frozenset(("ToolLengthOffset", "Motion", "CompoundMotion", "CycleCall", "DistanceMode", "Units",
+                      "WorkOffset", "CoordinateSet", "DataSetting", "CutterCompensation", "RigidTap"))
+_PLAIN = frozenset(("rapid", "linear", "cw", "ccw"))
+_STATE = _WATCHED - {"Motion"} | {"MachineCoordinates"}
+"""What a block must lack for ``_complete``'s short way (a plain move or none, nothing else to follow)."""
+
+
+def time_length_changes(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """Lowering step: a tool length change placed where the target applies it as the source does (see
+    the module docstring); nothing to do between controllers with the same rule. On a lathe only the
+    way to a controller that applies it at the programmed axes is taken (Fanuc T/GSK -> LinuxCNC)."""
+    if ctx.dialect == target.NAME or not target.TOOL_LENGTH_OFFSET and not _writes_lengths(target):
+        return blocks
+    if ctx.length_at_axis == target.LENGTH_AT_PROGRAMMED_AXIS:
+        return blocks
+    if ctx.lathe:  # Fanuc T/GSK T0102 -> LinuxCNC's lathe G43 H02 (``postproc.cycles.lathe_lowering``)
+        return blocks if ctx.length_at_axis else _complete(blocks, ctx)
+    return _defer(blocks, ctx) if ctx.length_at_axis else _complete(blocks, ctx)
+
+
+def _writes_lengths(target: type[Dialect]) -> bool:
+    """A target without a tool table that still gets lengths written (grbl: ``G43.1 Z<length>``)."""
+    return target.LENGTH_AT_PROGRAMMED_AXIS
+
+
+def _key(offset: ToolLengthOffset) -> tuple[str, object, object]:
+    return offset.mode, offset.register, offset.length
+
+
+def _absolute_z(block: Block, absolute: bool) -> bool:
+    """The block programs Z absolutely in work coordinates (a plain move or a reference return's
+    intermediate point)."""
+    motion = block.sections.get("Motion")
+    return (isinstance(motion, Motion) and motion.mode is not None and AXIS in motion.axes and absolute
+            and "MachineCoordinates" not in block.sections)
+
+
+def _distance(block: Block, absolute: bool) -> bool:
+    distance = block.sections.get("DistanceMode")
+    return distance.mode == "absolute" if isinstance(distance, DistanceMode) else absolute
+
+
+def _defer(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
+    """Towards a target that applies a change at the next move: each change goes to the next absolute Z."""
+    pending: ToolLengthOffset | None = None
+    written: tuple[str, object, object] = ("cancel", None, None)  # what the target has in force
+    in_force: tuple[str, object, object] = ("cancel", None, None)  # what the source has programmed
+    absolute = True
+    for block in blocks:
+        sections = block.sections
+        if pending is None and "ToolLengthOffset" not in sections:  # nothing to carry: only the distance mode
+            if "DistanceMode" in sections:
+                absolute = _distance(block, absolute)
+            yield block
+            continue
+        absolute = _distance(block, absolute)
+        offset = sections.get("ToolLengthOffset")
+        if isinstance(offset, ToolLengthOffset):
+            same = _key(offset) == in_force
+            in_force = _key(offset)
+            if same and pending is None:
+                yield block  # changes nothing (a G49 in a start-up line): left where it is
+                continue
+            if _absolute_z(block, absolute):
+                pending = None
+                written = _key(offset)
+                yield block
+                continue
+            del sections["ToolLengthOffset"]
+            block.changed()
+            pending = offset
+            if not sections:
+                continue  # nothing else in the block: the change is written where it applies
+        if pending is not None:
+            clash = _clash(sections)
+            if clash is not None:
+                ctx.diagnostics.error(UnsupportedError(
+                    f"{clash} while a tool length change waits for the next absolute Z (the source applies it "
+                    "there, the target at its next move): program Z beside the length change",
+                    ctx.at(block)))
+                pending = None
+            elif _absolute_z(block, absolute):
+                if _key(pending) != written:
+                    sections["ToolLengthOffset"] = pending
+                    written = _key(pending)
+                    block.changed()
+                pending = None
+        yield block
+
+
+def _clash(sections: dict[str, Section]) -> str | None:
+    """What a waiting change cannot be carried past."""
+    if "CompoundMotion" in sections or "CycleCall" in sections or "RigidTap" in sections:
+        return "a canned cycle"
+    if "DataSetting" in sections:
+        return "a data setting"
+    if "CutterCompensation" in sections:
+        return "a cutter compensation change"
+    return None
+
+
+HELD = 1000
+"""Blocks without motion held behind a waiting change at most (then it is refused where it was written)."""
+
+
+def _complete(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
+    """Towards a target that applies a change at the programmed axis: the change goes to the next move,
+    which gets the Z the program stands at. The blocks between are held (at most ``HELD``, else a located
+    error); a change that meets no move (the program ends first) stays where it was written."""
+    axes = ("X", AXIS) if ctx.lathe else (AXIS,)  # a lathe offset moves X and Z (LinuxCNC's lathe G43 H)
+    pos: dict[str, float | None] = {a: None for a in axes}  # the programmed point, program units; None: unknown
+    inch = False
+    absolute = True
+    in_force: tuple[str, object, object] = ("cancel", None, None)
+    held: list[Block] = []  # the changing block and the blocks after it, while a change waits
+    table = ToolTable(ctx.setup)
+    pending: tuple[ToolLengthOffset, Location] | None = None  # the waiting change, and where it was written
+    for block in blocks:
+        sections = block.sections
+        if pending is None and _STATE.isdisjoint(sections):  # the common block: at most a plain move
+            motion = sections.get("Motion")
+            if motion is not None:
+                for axis in axes:
+                    value = motion.axes.get(axis)  # type: ignore[attr-defined]
+                    if value is not None:
+                        known = pos[axis]
+                        pos[axis] = (None if isinstance(value, Expr) or motion.mode not in _PLAIN  # type: ignore[attr-defined]
+                                     else float(value) if absolute else None if known is None else known + value)
+            yield block
+            continue
+        if _WATCHED.isdisjoint(sections):
+            if pending is None:
+                yield block
+                continue
+            held.append(block)
+            if len(held) >= HELD:
+                _refuse(ctx, pending[1], f"no move follows it within {HELD} blocks")
+                yield from _release(held, pending[0])
+                pending = None
+            continue
+        units = sections.get("Units")
+        if isinstance(units, Units) and (units.system == "inch") != inch:
+            inch = units.system == "inch"
+            for a, v in pos.items():
+                pos[a] = None if v is None else v / MM_PER_INCH if inch else v * MM_PER_INCH
+        absolute = _distance(block, absolute)
+        if "WorkOffset" in sections or "CoordinateSet" in sections:
+            for a in axes:
+                pos[a] = None
+        setting = sections.get("DataSetting")
+        if isinstance(setting, DataSetting):
+            table.write(setting, MM_PER_INCH if inch else 1.0)
+        moves = "Motion" in sections or "CompoundMotion" in sections or "RigidTap" in sections
+        offset = sections.get("ToolLengthOffset")
+        change = isinstance(offset, ToolLengthOffset) and _key(offset) != in_force
+        if isinstance(offset, ToolLengthOffset):
+            in_force = _key(offset)
+            if pending is not None:  # a later change replaces the waiting one
+                yield from _release(held, None)
+                pending = None
+            if change and not moves:
+                pending = offset, ctx.at(block, ctx.column_of(block, "H"))
+                held.append(block)
+                continue
+        elif pending is not None and not moves:
+            clash = _clash(sections)
+            if clash is not None:
+                _refuse(ctx, pending[1], f"{clash} follows it")
+                yield from _release(held, pending[0])
+                pending = None
+                _follow(block, pos, absolute, in_force, None if ctx.lathe else table, inch)
+                yield block
+                continue
+            held.append(block)
+            continue
+        if moves and (pending is not None or change):
+            at = ctx.at(block, ctx.column_of(block, "H")) if pending is None else pending[1]
+            motion = sections.get("Motion")
+            moved = pending is not None
+            missing = [] if not isinstance(motion, Motion) else [a for a in axes if a not in motion.axes]
+            if _sets_z(block, absolute, axes):
+                pass
+            elif (isinstance(motion, Motion) and motion.mode in _PLAIN and absolute
+                    and all(pos[a] is not None for a in missing) and all(a in motion.axes or a in missing for a in axes)
+                    and "MachineCoordinates" not in sections and "CompoundMotion" not in sections):
+                for a in missing:
+                    motion.axes[a] = pos[a]  # type: ignore[assignment]  # known: tested above
+                block.changed()
+            else:
+                _refuse(ctx, at, f"the programmed {' and '.join(axes)} is not known where it applies")
+                moved = False  # refused once: taken out, so no later step refuses it again
+                if pending is None:
+                    del sections["ToolLengthOffset"]
+                    block.changed()
+            if pending is not None:
+                yield from _release(held, None)
+            if moved and pending is not None:
+                sections["ToolLengthOffset"] = pending[0]
+                block.changed()
+            pending = None
+        _follow(block, pos, absolute, in_force, None if ctx.lathe else table, inch)
+        yield block
+    if pending is not None:
+        yield from _release(held, pending[0])
+
+
+def _release(held: list[Block], keep: ToolLengthOffset | None) -> Iterator[Block]:
+    """The held blocks, the first (the changing one) without its change unless ``keep``; a block left
+    with nothing is dropped."""
+    first = held[0]
+    if keep is None:
+        del first.sections["ToolLengthOffset"]
+        first.changed()
+    for block in held:
+        if block is not first or block.sections:
+            yield block
+    held.clear()
+
+
+def _refuse(ctx: Context, at: Location, why: str) -> None:
+    ctx.diagnostics.error(UnsupportedError(
+        f"this tool length change applies at the next move on the source's controller and only at the next "
+        f"absolute Z on the target's, and {why}: program Z beside the length change", at))
+
+
+def _follow(block: Block, pos: dict[str, float | None], absolute: bool, in_force: tuple[str, object, object],
+            table: ToolTable | None, inch: bool) -> None:
+    """Move ``pos`` (program units) to the point after the block's motion, None where it is not known. A
+    machine-coordinate Z is the programmed Z plus the mill's length in force (``in_force`` read in
+    ``table``; None on a lathe: not followed)."""
+    sections = block.sections
+    if "CompoundMotion" in sections or "RigidTap" in sections or "CycleCall" in sections:
+        for axis in pos:
+            pos[axis] = None  # a cycle ends at its return level: not followed here
+        return
+    motion = sections.get("Motion")
+    if not isinstance(motion, Motion):
+        return
+    axes = motion.axes
+    for axis in pos:
+        value = axes.get(axis)
+        if value is None:
+            continue
+        if isinstance(value, Expr) or motion.mode not in _PLAIN:
+            pos[axis] = None
+        elif "MachineCoordinates" in sections:
+            length = None if table is None or axis != AXIS else _length(in_force, table, inch)
+            pos[axis] = None if length is None else float(value) - length
+        elif absolute:
+            pos[axis] = float(value)
+        else:
+            known = pos[axis]
+            pos[axis] = None if known is None else known + float(value)
+
+
+def _length(key: tuple[str, object, object], table: ToolTable, inch: bool) -> float | None:
+    """The length a ``_key`` puts in force, program units; None where the set-up does not give it."""
+    mode, register, length = key
+    scale = MM_PER_INCH if inch else 1.0
+    if mode == "cancel":
+        return 0.0
+    if mode == "dynamic":
+        return float(length) if isinstance(length, (int, float)) else None
+    if not isinstance(register, int) or mode not in ("positive", "negative"):
+        return None
+    try:
+        value = table.length(register)
+    except PostprocError:
+        return None
+    return (value if mode == "positive" else -value) / scale
+
+
+def _sets_z(block: Block, absolute: bool, axes: tuple[str, ...]) -> bool:
+    """The block's move ends at every one of ``axes`` programmed absolutely, in work or in machine
+    coordinates: where the two rules agree."""
+    motion = block.sections.get("Motion")
+    return (isinstance(motion, Motion) and motion.mode in _PLAIN and all(a in motion.axes for a in axes)
+            and (absolute or "MachineCoordinates" in block.sections))
