@@ -60,7 +60,7 @@ class Context:
     reading dialect tells the neutral steps about its words."""
 
     __slots__ = ("file", "setup", "diagnostics", "state", "dialect", "cycle_words", "on_unsupported",
-                 "program_mode", "keep_check", "reader", "stops_before_motion", "feed_before_units", "cutter_rules", "length_at_axis",
+                 "program_mode", "keep_check", "reader", "stops_before_motion", "feed_before_units", "cutter_rules", "length_at_axis", "lathe_turret",
                  "run_data",
                  "point_mix", "lathe", "increments", "diameter", "one_block", "peck_clearance_mm", "moves_made",
                  "block_lane", "hole_lane")
@@ -91,6 +91,8 @@ class Context:
         self.length_at_axis = False
         """A tool length change moves nothing until the length axis is next programmed absolutely
         (``Dialect.LENGTH_AT_PROGRAMMED_AXIS`` of the reading dialect)."""
+        self.lathe_turret = True
+        """On a lathe the reading dialect's T indexes the turret with its offset (``Dialect.LATHE_TURRET``)."""
         self.cutter_rules: Any = None
         """The reading dialect's cutter compensation rules (``Dialect.CUTTER_RULES``; None: not modelled)."""
         self.point_mix: Any = NOT_SET

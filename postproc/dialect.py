@@ -331,6 +331,7 @@ class Dialect:
         ctx.feed_before_units = cls.FEED_BEFORE_UNITS
         ctx.cutter_rules = cls.CUTTER_RULES
         ctx.length_at_axis = cls.LENGTH_AT_PROGRAMMED_AXIS
+        ctx.lathe_turret = cls.LATHE_TURRET
         ctx.peck_clearance_mm = cls.PECK_CLEARANCE_MM
         if cls.INVERSE_TIME_FEED:
             ctx.run_data[INVERSE_TIME_KEY] = True  # its programs may run in G93 (``postproc.lowering.inverse_time``)

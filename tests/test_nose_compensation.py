@@ -144,9 +144,9 @@ def _to_linuxcnc(text: str) -> str:
 
 def test_turret_offset_is_the_register_of_g42_towards_linuxcnc() -> None:
     """Fanuc T's G42 compensates by the offset T0102 selected (02) [K]; LinuxCNC's G42 without D would take
-    the spindle tool's entry (1), so D02 is written, as G43 H02 for its X/Z."""
+    the spindle tool's entry (1), so D02 is written, as G43 H02 for its X/Z (on the move that applies them)."""
     ngc = _to_linuxcnc(FANUC_T)
-    assert "G43 H02 T1 M6" in ngc
+    assert "T1 M6" in ngc and "G43 H02 G0 X62. Z2." in ngc  # H02 on the move that applies it (offsets' rule)
     assert "G42 D02 G0 X62. Z2." in ngc
     assert "G40 G0 X100. Z50." in ngc
 

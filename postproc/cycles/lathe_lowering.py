@@ -78,7 +78,8 @@ def _lower(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iter
     X/Z. (The simulator, which writes nothing, reads the source's own.)"""
     tracker = _Position(ctx, radius) if foreign or radius or absolute else None
     turret = foreign or not target.LATHE_TURRET
-    offsets = LatheOffsets(ctx, radius) if foreign else None
+    offsets = LatheOffsets(ctx, radius) if foreign and ctx.lathe_turret else None
+    """A turret index applies its offset (LinuxCNC's ``T1 M6`` applies none: its ``G43 H`` does)."""
     plane_set = not foreign
     start_mode = ctx.state.feed_mode  # read before any block: the source's mode at the start
     target_mode = target.LATHE_FEED_AT_START if not foreign else "per_min"
