@@ -6,10 +6,13 @@ from __future__ import annotations
 
 from typing import Final
 
+from mypy_extensions import mypyc_attr
+
 FEED_TOLERANCE: Final = 1e-4
 """Relative: feeds agree when within 0.01 % (a converted inch feed written with fewer places)."""
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class Move:
     """A normalised move: possibly several merged moves of one file. A plain class, not a dataclass:
     compiled, a dataclass's ``__init__`` is the one ``dataclasses`` writes, run as Python (about 4,000

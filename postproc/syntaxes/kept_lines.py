@@ -12,6 +12,8 @@ from __future__ import annotations
 
 from typing import Final, Iterator, Union
 
+from mypy_extensions import mypyc_attr
+
 Kept = Union[str, tuple[str, str], None]
 """A streamed line: its text (ending in ``\\n``), its text and another end of line, or None (no text)."""
 
@@ -19,6 +21,7 @@ CHUNK: Final = 256
 """Lines a chunk holds before it is joined."""
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class KeptLines:
     """The last ``maxlen`` lines appended, oldest first (``len``, iteration and ``reversed`` as a deque's)."""
 
