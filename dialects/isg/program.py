@@ -8,11 +8,10 @@ Integer addresses (G, M, N, T, D, H) are written without a point when evaluated 
 
 from __future__ import annotations
 
-from collections import deque
 from typing import ClassVar
 
-from postproc.syntaxes.program import ProgramSyntax
-from postproc.syntaxes.program import Kept, kept_line
+from postproc.syntaxes.kept_lines import KeptLines
+from postproc.syntaxes.program import ProgramSyntax, kept_line
 from postproc.interp.rules import SubprogramRules
 from postproc.interp.variables import VariablesFactory
 
@@ -38,7 +37,7 @@ class IsgProgramSyntax(ProgramSyntax):
     """``M17``/``M29`` end a subroutine; in the main program they are an error [?: the manual we read does
     not say what they do there, and Fanuc's ``M99`` would restart the program]."""
 
-    def reading_context(self, kept: deque[Kept]) -> list[str]:
+    def reading_context(self, kept: KeptLines) -> list[str]:
         """The streamed lines from a ``#VAR`` (or ``#COMMENT BEGIN``) still open where the construct starts:
         a declaration is read as one only inside it."""
         closing = set(OPENING.values())

@@ -30,6 +30,8 @@ import copy
 import math
 from typing import Final, Iterator
 
+from mypy_extensions import mypyc_attr
+
 from ..context import Context
 from ..dialect import Dialect
 from ..errors import PostprocError, ProgramError
@@ -49,6 +51,7 @@ RUN_KEY: Final = "frames.run"
 """``ctx.state.extra`` key of the frame and program position the lowering has reached (``FrameRun``)."""
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class FrameRun:
     """What the evaluation has reached: copied with the reading state into a translation's dry run."""
 
@@ -79,6 +82,7 @@ def evaluate_frames(blocks: Iterator[Block], ctx: Context, target: type[Dialect]
     return FrameEvaluator(ctx, target.WRITER is not None).run(blocks)
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class FrameEvaluator:
     """The frame and the program position of one run, and the rewriting of each block."""
 

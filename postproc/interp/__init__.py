@@ -2,7 +2,8 @@
 
 Public API: ``spell_number``/``spell_integer`` (how evaluated words are written back). The step that runs
 the interpreter in a reading pipeline is ``postproc.syntaxes.program.ProgramSyntax``; the execution
-itself is ``postproc.interp.machine`` (``Interpreter``; its ``Host`` in ``postproc.interp.host``) over
+itself is ``postproc.interp.machine`` (``Interpreter``, on its ``RunState`` in ``postproc.interp.run_state``;
+its ``Host`` in ``postproc.interp.host``) over
 ``postproc.interp.store`` (``ProgramStore`` of ``Program``s), imported only when a program is run: a
 straight program never loads it.
 """

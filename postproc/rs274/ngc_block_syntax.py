@@ -26,6 +26,8 @@ modal sections, motion, arcs, modal cycle repetition) and replaces what RS274/NG
 
 from __future__ import annotations
 
+from mypy_extensions import mypyc_attr
+
 from typing import Any, ClassVar
 
 from postproc.context import Context, word_columns
@@ -54,6 +56,7 @@ in the tool table" (G43 H-1), "G41 requires D word to be a whole number" (D-1), 
 is only G10's, whose L-1 it does not know)."""
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class NgcWordBlockSyntax(WordBlockSyntax):
     """Lexed words -> neutral sections, RS274/NGC word rules; subclasses give the code table."""
 

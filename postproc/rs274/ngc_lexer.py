@@ -24,6 +24,8 @@ Line splitting and the word number syntax are the ISO lexer's. ``NgcReader`` is 
 
 from __future__ import annotations
 
+from mypy_extensions import mypyc_attr
+
 import re
 from typing import Callable, Iterable, Iterator
 
@@ -244,6 +246,7 @@ def _unsupported_value(ch: str, dialect: str) -> str:
     return f"expressions ([...]) are not supported by the {dialect} reader"
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class NgcReader(Reader):
     """Physical lines -> lexed blocks under the RS274/NGC rules; errors are reported per block and the
     block is kept."""

@@ -95,8 +95,9 @@ def _axes(ev: Event) -> dict[str, float]:
 
 
 def _dist(a: dict[str, float], b: dict[str, float]) -> float:
-    """Euclidean distance over ``a``'s axes (``math.dist`` scales: no overflow near the float range)."""
-    return math.dist([a[k] for k in a], [b.get(k, 0.0) for k in a])
+    """Euclidean distance over ``a``'s axes (``math.hypot`` scales: no overflow near the float range; it is
+    ``math.dist``'s norm of the same differences, without the two lists of coordinates)."""
+    return math.hypot(*[a[k] - b.get(k, 0.0) for k in a])
 
 
 def _plane_point(p: dict[str, float], plane: str) -> tuple[float, float]:
@@ -119,8 +120,10 @@ def _move(ev: Event, start: dict[str, float]) -> Move:
         m.radius = math.hypot(s[0] - c[0], s[1] - c[1])
         m.sweep = arc_sweep(s, e, c, kind == "cw")
     else:
-        length = m.length = _dist(end, start)
-        m.direction = {k: (end[k] - start.get(k, 0.0)) / length for k in end} if length > 0 else None
+        steps = {k: v - start.get(k, 0.0) for k, v in end.items()}
+        length = m.length = math.hypot(*steps.values())  # _dist(end, start), its differences kept
+        if length > 0:
+            m.direction = {k: step / length for k, step in steps.items()}
     return m
 
 
@@ -129,11 +132,15 @@ def _merge(run: Move, m: Move, eps: float) -> bool:
     if m.kind != run.kind or not _same_feed(run.f, m.f):
         return False
     if run.direction is not None and m.direction is not None:
-        u, s = run.direction, run.start
-        along_old = sum((run.end[k] - s.get(k, 0.0)) * u[k] for k in u)
-        rel = {k: m.end[k] - s.get(k, 0.0) for k in m.end}
-        along = sum(rel[k] * u.get(k, 0.0) for k in rel)
-        off = math.hypot(*(rel[k] - along * u.get(k, 0.0) for k in rel))  # distance from the line
+        u, s, run_end = run.direction, run.start, run.end
+        along_old = 0.0
+        for k, uk in u.items():
+            along_old += (run_end[k] - s.get(k, 0.0)) * uk
+        rel = [(m.end[k] - s.get(k, 0.0), u.get(k, 0.0)) for k in m.end]
+        along = 0.0
+        for r, uk in rel:
+            along += r * uk
+        off = math.hypot(*[r - along * uk for r, uk in rel])  # distance from the line
         if off > eps or along <= along_old:
             return False
         run.end, run.last_line = m.end, m.last_line
@@ -161,12 +168,18 @@ def _one_helix(run: Move, m: Move, eps: float) -> bool:
     return True
 
 
-def normalise(events: Iterable[Event], start: dict[str, float], eps: float) -> Iterator[Move | Event]:
-    """Moves merged into runs, machine events as they are; the header is skipped."""
+def normalise(events: Iterable[Event], start: dict[str, float], eps: float,
+              codes: list[Event] | None = None) -> Iterator[Move | Event]:
+    """Moves merged into runs, machine events as they are; the header is skipped. ``codes``: the events of a
+    machine-specific code (they carry ``code``) go there instead: another family has no such code, so they
+    are listed, not compared (``compare_machine_codes``)."""
     pos = {k.lower(): v for k, v in start.items()}
     run: Move | None = None
     for ev in events:
         if "toolpath" in ev:
+            continue
+        if codes is not None and "code" in ev:
+            codes.append(ev)
             continue
         if "move" not in ev:
             if run is not None:
@@ -255,8 +268,8 @@ def compare(events_in: Iterable[Event], events_out: Iterable[Event], *, start_in
     eps = tolerance / 2.0
     codes_in: list[Event] = []
     codes_out: list[Event] = []
-    pairs = pair_with_chords(normalise(_without_codes(it_in, codes_in), start_in, eps),
-                             normalise(_without_codes(it_out, codes_out), start_out, eps), report)
+    pairs = pair_with_chords(normalise(it_in, start_in, eps, codes_in), normalise(it_out, start_out, eps, codes_out),
+                             report)
     for a, b in pairs:
         if report.mismatch is not None:
             continue  # drain both streams: a program error still has to surface
@@ -307,16 +320,6 @@ def _controlled(events: Iterator[Event]) -> Iterator[Event]:
             del moved["controlled"]
             moved.update(controlled)
             yield moved
-
-
-def _without_codes(events: Iterator[Event], sink: list[Event]) -> Iterator[Event]:
-    """The events of a path but a machine-specific code's (they carry ``code``), which go to ``sink``:
-    another family has no such code, so they are listed, not compared."""
-    for ev in events:
-        if "code" in ev:
-            sink.append(ev)
-        else:
-            yield ev
 
 
 def compare_machine_codes(report: Report, codes_in: list[Event], codes_out: list[Event]) -> None:
@@ -389,7 +392,7 @@ def _differ(a: Move | Event | None, b: Move | Event | None, report: Report) -> s
     if not _same_feed(a.f, b.f):
         return f"IN feeds at F{a.f:g}, OUT at F{b.f:g} ({describe(a)})"
     keys = set(a.end) & set(b.end)
-    dev = math.dist([a.end[k] for k in keys], [b.end[k] for k in keys])
+    dev = math.hypot(*[a.end[k] - b.end[k] for k in keys])  # math.dist's norm, one list
     if a.centre is not None and b.centre is not None:
         dev = max(dev, math.hypot(a.centre[0] - b.centre[0], a.centre[1] - b.centre[1]),
                   abs(a.sweep * a.radius - b.sweep * b.radius))

@@ -90,15 +90,19 @@ def _value_text(value: object) -> str | None:
 def _dict_text(items: dict[Any, Any]) -> str | None:
     if not items:
         return "{}"
-    parts: list[str] = []
+    parts: list[str] = ["{"]  # joined once: no string made per item
     for key, value in items.items():
         if not isinstance(key, str):
             return None
         text = _value_text(value)
         if text is None:
             return None
-        parts.append(_key_text(key) + text)
-    return "{" + ", ".join(parts) + "}"
+        if len(parts) > 1:
+            parts.append(", ")
+        parts.append(_key_text(key))
+        parts.append(text)
+    parts.append("}")
+    return "".join(parts)
 
 
 def event_text(event: dict[Any, Any], fallback: Callable[[Any], str]) -> str:

@@ -4,7 +4,6 @@ is one."""
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from typing import Final
 
 from mypy_extensions import mypyc_attr
@@ -14,24 +13,33 @@ FEED_TOLERANCE: Final = 1e-4
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
-@dataclass
 class Move:
-    """A normalised move: possibly several merged moves of one file."""
+    """A normalised move: possibly several merged moves of one file. A plain class, not a dataclass:
+    compiled, a dataclass's ``__init__`` is the one ``dataclasses`` writes, run as Python (about 4,000
+    instructions a move of each program; this one is native)."""
 
-    kind: str
-    start: dict[str, float]
-    end: dict[str, float]
-    f: float | None
-    first_line: int
-    last_line: int
-    direction: dict[str, float] | None = None
-    """Unit vector of a straight run (None for arcs)."""
-    centre: tuple[float, float] | None = None
-    plane: str | None = None
-    radius: float = 0.0
-    sweep: float = 0.0
-    length: float = 0.0
-    """A straight move's length (an arc's is not needed: a full circle is not zero-length)."""
+    def __init__(self, kind: str, start: dict[str, float], end: dict[str, float], f: float | None,
+                 first_line: int, last_line: int, direction: dict[str, float] | None = None,
+                 centre: tuple[float, float] | None = None, plane: str | None = None, radius: float = 0.0,
+                 sweep: float = 0.0, length: float = 0.0) -> None:
+        self.kind = kind
+        self.start = start
+        self.end = end
+        self.f = f
+        self.first_line = first_line
+        self.last_line = last_line
+        self.direction = direction
+        """Unit vector of a straight run (None for arcs)."""
+        self.centre = centre
+        self.plane = plane
+        self.radius = radius
+        self.sweep = sweep
+        self.length = length
+        """A straight move's length (an arc's is not needed: a full circle is not zero-length)."""
+
+    def __repr__(self) -> str:
+        return (f"Move({self.kind!r}, {self.start!r}, {self.end!r}, f={self.f!r}, lines {self.first_line}-"
+                f"{self.last_line}, centre={self.centre!r}, sweep={self.sweep!r})")
 
 
 def same_feed(a: float | None, b: float | None) -> bool:

@@ -37,7 +37,7 @@ class Simulator(Moves):
 
     # -- one block ---------------------------------------------------------------------------------
     def block(self, block: Block, emit: Callable[[Event], None]) -> None:
-        sections = block.sections
+        sections: dict[str, Any] = block.sections  # each section read by its key: Any
         if not sections:
             return
         if self.ended or "TapeMark" in sections:
@@ -49,8 +49,7 @@ class Simulator(Moves):
         self.out = emit
         if self.compensating:
             emit = self._event
-        get: Callable[[str], Any] = sections.get
-        native = get("NativeCode")
+        native = sections.get("NativeCode")
         if native is not None and not native.inert:
             code = native.what.split(" ", 1)[0]
             raise UnsupportedError(f"{native.what} cannot be simulated", self._at(block, code))
@@ -61,7 +60,7 @@ class Simulator(Moves):
             self.travel.settings(block)
         if not keys.isdisjoint(_SETTING_KEYS):
             self.record_settings(block)
-            setting = get("DataSetting")
+            setting = sections.get("DataSetting")
             if setting is not None:
                 self.data_setting(block, setting)
             if not keys.isdisjoint(_COMPENSATION_KEYS):
@@ -70,11 +69,14 @@ class Simulator(Moves):
                     emit = self._event
         line = block.line
         before = not keys.isdisjoint(_EVENT_KEYS)
-        spindle = get("SpindleControl")
-        coolant = get("Coolant")
-        machine = get("MachineFunction")
+        spindle: Any = None
+        coolant: Any = None
+        machine: Any = None
         if before:
-            s = get("ToolSelect")
+            spindle = sections.get("SpindleControl")
+            coolant = sections.get("Coolant")
+            machine = sections.get("MachineFunction")
+            s = sections.get("ToolSelect")
             if s is not None:
                 if self.lathe and "ToolChange" not in sections:
                     emit({"line": line, "event": "tool", "number": lathe_tool(s.number)})
@@ -94,12 +96,12 @@ class Simulator(Moves):
                 emit({"line": line, "event": "coolant", "on": coolant.mode != "off"})
             if machine is not None and not after_motion("MachineFunction", machine):
                 self.machine_function(block, machine, emit)
-            s = get("Dwell")
+            s = sections.get("Dwell")
             if s is not None:
                 emit({"line": line, "event": "dwell", "seconds": num(s.seconds)})
-        compound = get("CompoundMotion")
-        motion = get("Motion")
-        coords = get("CoordinateSet")
+        compound = sections.get("CompoundMotion")
+        motion = sections.get("Motion")
+        coords = sections.get("CoordinateSet")
         if coords is not None:
             for axis, value in coords.axes.items():
                 self._coordinate(block, axis, value)
@@ -118,23 +120,23 @@ class Simulator(Moves):
             if motion.mode is not None:
                 self.motion(block, motion, False, emit)
         elif "CycleCall" in sections and "CannedCycle" not in sections:
-            raise UnsupportedError(f"canned cycle '{get('CycleCall').kind}' cannot be simulated: it was not "
+            raise UnsupportedError(f"canned cycle '{sections['CycleCall'].kind}' cannot be simulated: it was not "
                                    "resolved to motion", self._at(block))
-        tap = get("RigidTap")
+        tap = sections.get("RigidTap")
         if tap is not None:
             self.rigid_tap(block, tap, False, emit)
         if not before:
             return
         if spindle is not None and after_motion("SpindleControl", spindle):
             self.spindle_event(line, "stop", emit)
-        s = get("SpindleOrientation")
+        s = sections.get("SpindleOrientation")
         if s is not None:
             emit({"line": line, "event": "orient", "angle": num(s.angle)})
         if coolant is not None and after_motion("Coolant", coolant):
             emit({"line": line, "event": "coolant", "on": False})
         if machine is not None and after_motion("MachineFunction", machine):
             self.machine_function(block, machine, emit)
-        s = get("ProgramControl")
+        s = sections.get("ProgramControl")
         if s is not None:
             self.program_control(line, s.kind, emit)
 

@@ -15,7 +15,6 @@ above all, which the base does not choose) and, if it needs to, its ``spell_eval
 from __future__ import annotations
 
 import io
-from collections import deque
 from pathlib import Path
 from typing import TYPE_CHECKING, Callable, ClassVar, Iterable, Iterator
 
@@ -27,6 +26,7 @@ from ..expr import Expr, Var
 from ..ir import AXES, Block
 from ..context import Context
 from ..syntax import Syntax
+from .kept_lines import Kept, KeptLines
 from ..interp.spelling import spell_integer, spell_number
 from ..interp.rules import STORED_PROGRAMS, SubprogramRules
 from ..interp.variables import Variables, VariablesFactory
@@ -46,7 +46,6 @@ RUN_CHECK = "run_check"
 reported at its line, as the flattened program's would be (absent: the run alone is checked)."""
 ARGUMENTS_KEY = "macro_arguments"
 """``ctx.run_data`` key of the locals a program run on its own starts with (``--arg A=30``: {1: 30.0})."""
-Kept = str | tuple[str, str] | None
 """What the step keeps of a streamed block, for a backward jump (``ProgramSyntax._reread``): its text
 (ending ``\n``), its text and end of line, or None (a block without text). Most blocks keep the reader's
 own string: no object per block."""
@@ -180,7 +179,7 @@ class ProgramSyntax(Syntax):
 
     def _execute(self, blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
         limit = ctx.setup.limits.kept_prefix
-        kept: deque[Kept] = deque(maxlen=limit)
+        kept = KeptLines(limit)  # compact: one string a chunk of lines (postproc.syntaxes.kept_lines)
         keep = kept.append
         seen = 0
         check: StreamCheck | None = None
@@ -222,7 +221,7 @@ class ProgramSyntax(Syntax):
             check = None  # checked
         yield from self._run(block, blocks, ctx, kept, seen, check, flattening=True)
 
-    def _check_runs(self, body: list[Block], ctx: Context, kept: deque[Kept], seen: int) -> None:
+    def _check_runs(self, body: list[Block], ctx: Context, kept: KeptLines, seen: int) -> None:
         """Run fresh copies of the program to its end, reporting the interpreter's first error (located in
         the program) and what the later reading steps refuse in the run (``RUN_CHECK``: an arc whose
         computed end is off its circle): a program kept symbolically then fails to translate where it
@@ -235,7 +234,7 @@ class ProgramSyntax(Syntax):
         for _ in run if later is None else later(run):
             pass
 
-    def _copies(self, body: list[Block], ctx: Context, kept: deque[Kept]) -> list[Block]:
+    def _copies(self, body: list[Block], ctx: Context, kept: KeptLines) -> list[Block]:
         """Fresh blocks of ``body``, read as the program reads them: after the lines of the streamed
         prefix the reader needs for that (``reading_context``), which are left out again."""
         lead = self.reading_context(kept)
@@ -245,12 +244,12 @@ class ProgramSyntax(Syntax):
             copy.line = original.line
         return copies
 
-    def reading_context(self, kept: deque[Kept]) -> list[str]:
+    def reading_context(self, kept: KeptLines) -> list[str]:
         """The last lines of the streamed prefix (``kept``, oldest first) that change how the reader reads
         the lines after them (ISG: an open ``#VAR`` block), each ending in its end of line; none here."""
         return []
 
-    def _vacancy_reason(self, body: list[Block], ctx: Context, kept: deque[Kept], seen: int) -> str | None:
+    def _vacancy_reason(self, body: list[Block], ctx: Context, kept: KeptLines, seen: int) -> str | None:
         """Why ``body`` cannot travel symbolically to a target that does not omit vacant words: the first
         error of a run on fresh copies where a vacant word is an error (a vacant word, or an error that
         hides whether one follows: the flattening run then reports it). None: no word can be vacant."""
@@ -273,7 +272,7 @@ class ProgramSyntax(Syntax):
         where = found[0].location
         return (f"line {where.line}: " if where is not None else "") + found[0].message
 
-    def _keep_reason(self, body: list[Block], ctx: Context, kept: deque[Kept]) -> str | None:
+    def _keep_reason(self, body: list[Block], ctx: Context, kept: KeptLines) -> str | None:
         """Why ``body`` (the program from its first construct on) cannot travel symbolically, through
         ``ctx.keep_check`` on fresh copies (the check runs the later steps, which change blocks)."""
         check = ctx.keep_check
@@ -281,7 +280,7 @@ class ProgramSyntax(Syntax):
             return "the target's spelling of the program's constructs was not checked"
         return check(self._copies(body, ctx, kept))
 
-    def _run(self, first: Block, rest: Iterator[Block], ctx: Context, kept: deque[Kept],
+    def _run(self, first: Block, rest: Iterator[Block], ctx: Context, kept: KeptLines,
              seen: int, check: StreamCheck | None = None, report: Reporter | None = None,
              vacant_word: str | None = None, flattening: bool = False) -> Iterator[Block]:
         """Run the program from ``first`` on; ``check``: the structure check of what streamed before it,
@@ -331,7 +330,7 @@ class ProgramSyntax(Syntax):
         if closing is not None and not last_was_mark:
             yield closing  # the run ended at M30/M2: the tape closes as the source's did
 
-    def _reread(self, kept: deque[Kept], ctx: Context, first_line: int) -> list[Block]:
+    def _reread(self, kept: KeptLines, ctx: Context, first_line: int) -> list[Block]:
         """The kept prefix as fresh blocks (the streamed ones were changed by the later steps). Its
         errors were reported when it streamed, so they are not reported again."""
         if not kept:

@@ -1,0 +1,164 @@
+"""The interpreter's run state and its bookkeeping (``postproc.interp.machine`` runs the statements on
+it): the frames and bounds of one run (loop iterations, repeated work, call depth), the values of call
+arguments and counts, and where an error is located. Kept apart from the statement dispatch so that each
+module has one job."""
+
+from __future__ import annotations
+
+from ..control import ModalCall
+from ..errors import Location, PostprocError, ProgramError
+from ..evaluation import evaluate, evaluate_number
+from ..expr import EvalError, Expr, Value
+from ..ir import Block
+from ..setup.machine_setup import Limits
+from .frame import Frame
+from .host import NO_MOVES, Host, Interrupt, MoveCount, Reporter
+from .rules import STORED_PROGRAMS, SubprogramRules
+from .store import Program, ProgramStore, source_text
+from .variables import Variables
+
+
+def is_number(text: str) -> bool:
+    """A word's text is a plain number (not an expression the interpreter evaluates)."""
+    try:
+        float(text)
+    except ValueError:
+        return False
+    return True
+
+
+class RunState:
+    """One run of a program store: its frames, the bounds it spends, and the located failure that stops it."""
+
+    def __init__(self, store: ProgramStore, host: Host, variables: Variables, limits: Limits,
+                 report: Reporter, annotate: bool = False, rules: SubprogramRules | None = None,
+                 counts: MoveCount | None = None) -> None:
+        self.store = store
+        self.host = host
+        self.vars = variables
+        self.limits = limits
+        self.report = report
+        self.annotate = annotate
+        self.budget = limits.loop_iterations
+        self.work = limits.repeated_work
+        """Blocks and moves left to run again (``Limits.repeated_work``)."""
+        self.counts: MoveCount = counts if counts is not None else NO_MOVES
+        self.moves_seen = 0
+        """``counts.moves_made`` when the interpreter last looked."""
+        self.again = False
+        """The block run last had run before: the moves made since are repeated work."""
+        self.repeated: tuple[Frame, Block, str] | None = None
+        """The last repetition spent (frame, block, what): the one the work bound names."""
+        self.frames: list[Frame] = []
+        self.modal: tuple[ModalCall, dict[int, Value], int, Block] | None = None
+        self.ended = False
+        self.rules = rules or STORED_PROGRAMS
+        self.called = False
+        """The main program runs as a called macro (``--arg``): its plain return ends the run instead of
+        going back to its start."""
+        self.found: dict[tuple[str, str], int] = {}
+        """(file, program number) -> position of the ``O`` block an ``M98`` found (forward search)."""
+        self.skip_refused: str | None = None
+        """Set: a statement under block delete (``/``) is an error with this explanation: a flattened program
+        bakes in what the statement did, so the operator's switch could no longer skip it."""
+        self.vacant_word: str | None = None
+        """Set: a word whose value is vacant is an error with this explanation instead of being omitted (the
+        check run of a program kept symbolically for a target that would not omit it)."""
+
+
+    def _fail(self, err: PostprocError, frame: Frame, block: Block, col: int) -> None:
+        if err.location is None:
+            err.location = self._where(frame, block, col)
+        self.report(err)
+        raise Interrupt()
+
+    def _where(self, frame: Frame, block: Block, col: int = 1) -> Location:
+        origin = frame.origin
+        if origin is None:
+            return Location(frame.program.file, block.line, col)
+        return Location(origin.file, block.line, col, origin.note())
+
+    # -- values ----------------------------------------------------------------------------------
+    def _args(self, args: dict[int, Expr]) -> dict[int, Value]:
+        limit = self.host.MACRO_LOCALS
+        values: dict[int, Value] = {}
+        for n, expr in args.items():
+            if not 1 <= n <= limit:
+                raise ProgramError(f"argument #{n} is outside the locals #1-#{limit}")
+            values[n] = evaluate(expr, self.vars)
+        return values
+
+    def _name(self, name: str | Expr) -> str:
+        if isinstance(name, str):
+            return name
+        return str(self._integer(name, "the subprogram number"))
+
+    def _integer(self, expr: Expr, what: str) -> int:
+        value = evaluate_number(expr, self.vars, what)
+        if not value.is_integer():
+            raise EvalError(f"{what} must be an integer, {value:g} is not")
+        return int(value)
+
+    def _count(self, expr: Expr, what: str) -> int:
+        value = self._integer(expr, what)
+        if value < 0:
+            raise EvalError(f"{what} cannot be negative ({value})")
+        return value
+
+    def _out_of_work(self, frame: Frame, block: Block) -> None:
+        """Report the work bound (``Limits.repeated_work``), located at the repetition that ran last."""
+        n = self.limits.repeated_work
+        if self.repeated is not None:
+            frame, block, what = self.repeated
+            named = f"{what} '{source_text(block)}'"
+        else:  # nothing repeated yet: a guard (a block runs again only after a repetition)
+            named = f"'{source_text(block)}'"
+        self._fail(ProgramError(f"{named} repeats more than {n} blocks and moves in all (the set-up's bound on "
+                                f"work run again, <Limits repeatedWork=\"{n}\"/>)"), frame, block, 1)
+
+    def _spend(self, block: Block, what: str, back: bool = True) -> None:
+        """Count a repetition (``back``: it runs blocks again, so the work bound may name it; a jump
+        forward skips blocks)."""
+        if back:
+            self.repeated = (self.frames[-1], block, what)
+        self.budget -= 1
+        if self.budget < 0:
+            n = self.limits.loop_iterations
+            raise ProgramError(f"{what} '{source_text(block)}' exceeds the set-up's bound of {n} loop iterations, "
+                               f"jumps and calls in total (<Limits loopIterations=\"{n}\"/>)")
+
+    @staticmethod
+    def _within(frame: Frame, target: int, block: Block) -> None:
+        """Refuse a jump past the end of the running program (the main program's M30, a subprogram's
+        last block): the run here would end there silently, but a controller that keeps the blocks after
+        the end (Fanuc searches its whole program for the number) runs on from the target, and a
+        translation that comments them out (``postproc.lowering.program_end``) jumps nowhere."""
+        if target >= frame.end:
+            blocks = frame.program.blocks
+            raise ProgramError(f"'{source_text(block)}' jumps to line {blocks[target].line}, past the end of the "
+                               f"program at line {blocks[frame.end - 1].line}: where a controller runs from "
+                               "there is not modelled")
+
+    def _missing_sequence(self, program: Program, number: int, text: str) -> str:
+        message = f"'{text}': no block numbered {number} in {program.file}"
+        dropped = self.store.dropped
+        if program is self.store.main and dropped:
+            n = self.store.kept_limit
+            message += (f" after its first {dropped} blocks, which are not kept for jumps back (the set-up keeps "
+                        f"the last {n}: <Limits keptPrefix=\"{n}\"/>)")
+        return message
+
+    # -- columns (computed only for errors) ------------------------------------------------------
+    def _column(self, block: Block, err: EvalError) -> int:
+        """The column of the first expression word of ``block`` (where an evaluation error most likely
+        is), else 1."""
+        for letter, text in block.words:
+            if isinstance(block.values.get(letter.upper()), Expr) and not is_number(text):
+                return self._word_column(block, letter, text)
+        return 1
+
+    @staticmethod
+    def _word_column(block: Block, letter: str, text: str) -> int:
+        source = block.text or ""
+        i = source.find(letter + text)
+        return i + 1 if i >= 0 else 1
