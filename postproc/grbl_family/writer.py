@@ -75,6 +75,9 @@ class GrblFamilyWriter(WordWriter):
 
     def spindle_orientation_words(self, s: Any, block: Block) -> list[str]:
         mode = self.ctx.setup.cycles.orientation
+        if not isinstance(s.angle, (int, float)):  # kept symbolically (LinuxCNC M19 R#<a>): flattened instead
+            self.unsupported("an oriented spindle stop at a computed angle", block)
+            return []
         angle = float(s.angle)
         if mode == "m19":
             return [self.code("orient", None, "an oriented spindle stop", block)] + (
