@@ -158,3 +158,20 @@ def test_verify_takes_an_end_where_the_source_runs_out_as_the_same_program() -> 
     assert _verify("G21 G0 X1.\nM30\n", "G21 G0 X1.\n", "fanuc", "fanuc")[0] is False
     ok, why = _verify("G21 G0 X1.\n", "G21 G0 X1.\nM30\nG0 X2.\n", "fanuc", "grbl")
     assert not ok  # an end that is not the last thing is no end where the program runs out
+
+
+@pytest.mark.parametrize("setup_expressions", [False, True])
+def test_a_numbered_subprogram_after_m30_is_no_live_code_on_grblhal(setup_expressions: bool) -> None:
+    """grblHAL reads o-word subs only [V ngc_flowctrl.c]: an uncalled Fanuc O2000 .. M99 after M30 was
+    written as '(O2000)' and a live 'G0 X90.' after the end, which a streamed grblHAL runs."""
+    from postproc.setup.groups import ControllerSettings
+    program = "O1\nG21 G90 G17\nG0 X1. Y1. Z5.\nM30\nO2000\nG00 X90.\nM99\n"
+    out = io.StringIO()
+    setup = MachineSetup(controller=ControllerSettings(expressions=setup_expressions))
+    translate(io.StringIO(program), out, file="p.nc", source="fanuc", target="grblhal", setup=setup,
+              diagnostics=Diagnostics(warn_stream=io.StringIO()))
+    lines = out.getvalue().splitlines()
+    assert lines[lines.index("M30") + 1:] and all(line.startswith("(") for line in lines[lines.index("M30") + 1:])
+    report = verify_lines(io.StringIO(program), io.StringIO(out.getvalue()), file_in="in", file_out="out",
+                          source="fanuc", target="grblhal", setup=setup)
+    assert report.ok, report.summary()

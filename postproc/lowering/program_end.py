@@ -3,7 +3,8 @@
 A controller that reads a whole file stops at the end; one that is streamed to (grbl) runs whatever
 comes next. So when translating to another dialect, the blocks after the end are written as comments
 (with one warning), except subprogram definitions (a Fanuc ``O2000`` ... ``M99``, a LinuxCNC
-``o<name> sub`` ... ``endsub``) when the target runs subprograms itself (``Dialect.PROGRAMS``).
+``o<name> sub`` ... ``endsub``) when the target runs subprograms itself (``Dialect.PROGRAMS``) and reads
+that form of definition (``Dialect.NUMBERED_SUBPROGRAMS``: grblHAL reads no ``O2000``).
 Back to the same dialect nothing changes: the target reads the end as the source does.
 
 ``EndTracker`` is the one rule, shared by the ``comment_after_end`` lowering step and the simulator
@@ -76,10 +77,11 @@ def comment_after_end(blocks: Iterator[Block], ctx: Context, target: type[Dialec
     """Lowering step (see the module docstring)."""
     if target.NAME == ctx.dialect:
         return blocks
-    return _comment_after_end(blocks, ctx, target.PROGRAMS)
+    return _comment_after_end(blocks, ctx, target.PROGRAMS, target.NUMBERED_SUBPROGRAMS)
 
 
-def _comment_after_end(blocks: Iterator[Block], ctx: Context, keep_subs: bool) -> Iterator[Block]:
+def _comment_after_end(blocks: Iterator[Block], ctx: Context, keep_subs: bool,
+                       keep_numbered: bool) -> Iterator[Block]:
     tracker = EndTracker()
     started = False
     for block in blocks:  # before the end: kept cheap, every block of the program passes here
@@ -96,10 +98,14 @@ def _comment_after_end(blocks: Iterator[Block], ctx: Context, keep_subs: bool) -
             started = True
         yield block
     warned = False
+    numbered = False
+    """The definition being read opened with a program number (``O2000``), not the target's own form."""
     for block in blocks:
         sections = block.sections
         kind = tracker.after_end(sections)
-        if kind == "inert" or (kind == "sub" and keep_subs):
+        if kind == "sub" and ("ProgramStart" in sections or isinstance(sections.get(CONTROL), SubStart)):
+            numbered = "ProgramStart" in sections
+        if kind == "inert" or (kind == "sub" and keep_subs and (keep_numbered or not numbered)):
             yield block
             continue
         if not warned:

@@ -133,6 +133,10 @@ class Grblhal(GrblFamily):
     DWELL_UNIT = "seconds"
     """G4 P is in seconds."""
     PROGRAMS = True
+    NUMBERED_SUBPROGRAMS = False
+    """[V] grblHAL ``ngc_flowctrl.c``: subroutines are ``o<n> sub`` .. ``endsub`` only; a Fanuc ``O2000`` ..
+    ``M99`` left after the end would be live code (the calls made of it are written as o-word subs by
+    ``subprograms``)."""
     """Parameters, expressions and o-word conditions and loops, on a build with them (``<Controller
     expressions="true">``: ``expressions``); on any other the writer refuses every statement, so a program
     that computes reaches grblHAL flattened."""
