@@ -61,6 +61,11 @@ class Siemens(Dialect):
     """``D<n>`` selects cutting edge n, length and radius together (``postproc.isg_family.tool_data``)."""
     LENGTH_TOGGLES = False
     """No length on/off code: the selected D's length applies [K: 840D Fundamentals "Tool offsets"]."""
+    LENGTH_AT_PROGRAMMED_AXIS = True
+    """[K: SINUMERIK 840D sl Function Manual Basic Functions W1 (11/2006, 6FC5397-0BP10-2BA0) 2.1.1 "Activating
+    the tool compensations": tool length compensation is performed on the first traversing motion of the axis
+    it acts on (G0/G1)]. Whether an incremental first motion also takes it, as LinuxCNC's rule here does not,
+    is not stated [?]."""
     COMMENTS = CommentSyntax(parens=False, semicolon=True)
     """``;`` to the end of the block [K: 802D manual p.133]; ``(`` is an expression's."""
     PROGRAMS = False

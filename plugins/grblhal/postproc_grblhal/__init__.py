@@ -133,13 +133,13 @@ class Grblhal(GrblFamily):
     DWELL_UNIT = "seconds"
     """G4 P is in seconds."""
     PROGRAMS = True
+    """Parameters, expressions and o-word conditions and loops, on a build with them (``<Controller
+    expressions="true">``: ``expressions``); on any other the writer refuses every statement, so a program
+    that computes reaches grblHAL flattened."""
     NUMBERED_SUBPROGRAMS = False
     """[V] grblHAL ``ngc_flowctrl.c``: subroutines are ``o<n> sub`` .. ``endsub`` only; a Fanuc ``O2000`` ..
     ``M99`` left after the end would be live code (the calls made of it are written as o-word subs by
     ``subprograms``)."""
-    """Parameters, expressions and o-word conditions and loops, on a build with them (``<Controller
-    expressions="true">``: ``expressions``); on any other the writer refuses every statement, so a program
-    that computes reaches grblHAL flattened."""
     TAPE_MARKS = False
     """``%`` is no word of grblHAL's parser: written as a comment."""
     COMMENTS = Lazy[CommentSyntax](".text:COMMENTS")
