@@ -72,6 +72,10 @@ KNOWN_DEFECTS: list[tuple[str, str | None, re.Pattern[str]]] = [
     ("ISG codes kept verbatim (mirroring G20-G23, software limits G98/G99, homing G74, preset G92, G80-G89 calls, "
      "blending) copy to ISG unchanged and are not simulated", "isg",
      re.compile(r"^translated, but verify fails: in\.nc:\d+:\d+: error: G\d+ \([^)]*\) cannot be simulated")),
+    ("--on-unsupported warn comments out a move (a lathe G32 thread towards grbl): the next arc then starts "
+     "elsewhere, off its circle, and grbl refuses it (error 33/34) (found by the lathe threading fuzz)", None,
+     re.compile(r"^the grbl(hal)? (controller|reader) refuses the grbl(hal)? output: [^\n]*\barc\b(?s:.*)"
+                r"\(UNSUPPORTED LINE \d+: [^)]*\b[XZUW]-?[\d.]")),
 ]
 """Defects outside this suite's reach (writers, block syntaxes, lowering), listed so the suite stays green
 and they stay visible: ``make fuzz`` counts them. Each entry: description, target (None: any), message."""
@@ -89,8 +93,10 @@ def located(err: PostprocError) -> None:
     assert err.location is not None and err.location.line >= 1 and err.location.col >= 1, str(err)
 
 
-def check_translation(source: str, target: str, program: str, setup: MachineSetup, warn: bool) -> str:
-    """One case: translate, then the output's own checks. Returns what happened ('ok', 'refused')."""
+def check_translation(source: str, target: str, program: str, setup: MachineSetup, warn: bool,
+                      tolerance: float = 0.0) -> str:
+    """One case: translate, then the output's own checks. Returns what happened ('ok', 'refused').
+    ``tolerance`` (mm) is verify's: 0 unless the output rounds computed points (8 decimals of an inch)."""
     out = io.StringIO()
     try:
         diagnostics = translate(io.StringIO(program), out, file="fuzz.nc", source=source, target=target,
@@ -106,10 +112,11 @@ def check_translation(source: str, target: str, program: str, setup: MachineSetu
     if REGISTRY.dialects[target].READER is None:
         return "ok"
     with contextlib.redirect_stderr(io.StringIO()):  # the readers' warnings (e.g. grbl ignoring '/')
-        return _check_output(source, target, program, text, setup, warn and bool(diagnostics.warnings))
+        return _check_output(source, target, program, text, setup, warn and bool(diagnostics.warnings), tolerance)
 
 
-def _check_output(source: str, target: str, program: str, text: str, setup: MachineSetup, warned: bool) -> str:
+def _check_output(source: str, target: str, program: str, text: str, setup: MachineSetup, warned: bool,
+                  tolerance: float = 0.0) -> str:
     refused = problems(target, text, setup) if source != target else []
     assert not refused, f"the {target} controller refuses the {target} output: {'; '.join(refused)}\n{text}"
     try:
@@ -120,7 +127,7 @@ def _check_output(source: str, target: str, program: str, text: str, setup: Mach
         return "ok"  # commented-out blocks: the toolpaths differ by design
     try:
         report = verify_lines(io.StringIO(program), io.StringIO(text), file_in="in.nc", file_out="out.nc",
-                              source=source, target=target, setup=setup, tolerance=0.0)
+                              source=source, target=target, setup=setup, tolerance=tolerance)
     except ErrorList as errs:
         raise AssertionError(f"translated, but verify fails: {errs}\n{text}") from None
     assert report.ok, f"translated, but verify says: {report.summary()}\n{text}"
