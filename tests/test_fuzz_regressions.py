@@ -271,3 +271,45 @@ def test_a_jump_past_the_program_end_is_a_located_error(source: str, target: str
     with pytest.raises(ErrorList) as exc:
         translate(io.StringIO(program), io.StringIO(), file="t.nc", source=source, target=target)
     assert [str(e) for e in exc.value.errors] == [message]
+
+
+@pytest.mark.parametrize("source", ["grbl", "grblhal"])
+def test_a_grbl_arc_with_no_axis_word_is_refused_where_it_stands(source: str) -> None:
+    """make fuzz (program options): 'G2 I7.5 J7.5' was read by the grbl readers as a full circle and copied to
+    the grbl output, where grbl 1.1 refuses it (gcode.c: an arc without axis words, error 26); grblHAL too."""
+    with pytest.raises(ErrorList) as exc:
+        translate(io.StringIO(HEAD + "G2 I7.5 J7.5 F100.\nM2\n"), io.StringIO(), file="t.nc", source=source,
+                  target=source)
+    control = "grbl" if source == "grbl" else "grblHAL"
+    assert [str(e) for e in exc.value.errors] == [
+        f"t.nc:2:1: error: {control} refuses an arc with no axis word (G2 with I/J/K alone, error 26): program its "
+        "end point (the start point, for a full circle)"]
+    out = io.StringIO()  # the full circle grbl runs: its end point (the start) programmed
+    translate(io.StringIO(HEAD + "G2 X0 I7.5 J7.5 F100.\nM2\n"), out, file="t.nc", source=source, target=source)
+    assert "G2 X0 I7.5 J7.5 F100." in out.getvalue()
+
+
+def test_verify_pairs_compensation_sides_under_a_transform_that_mirrors() -> None:
+    """make fuzz (program options): under 'mirror x' translate writes G41 as G42 (the path runs the other way
+    round the part); verify compared IN's 'left' with OUT's 'right' and failed the right translation. The
+    mirrored output with G41 kept (the wrong side) must still fail."""
+    from postproc.transforms.spec import parse_transform
+    program = HEAD + "G41 D01 G1 X10. Y-16. F100.\nX20.\nG40 G0 X0. Y0.\nM30\n"
+    mirror = parse_transform("mirror x")
+    out = io.StringIO()
+    translate(io.StringIO(program), out, file="t.nc", source="linuxcnc", target="fagor", transform=mirror)
+    text = out.getvalue()
+    assert "G42 D01" in text and "G41" not in text, text
+
+    def verified(output: str) -> bool:
+        return verify_lines(io.StringIO(program), io.StringIO(output), file_in="a.ngc", file_out="b.nc",
+                            source="linuxcnc", target="fagor", tolerance=1e-3, transform=mirror).ok
+
+    assert verified(text)
+    assert not verified(text.replace("G42 D01", "G41 D01"))
+    rotate = parse_transform("rotate 90")  # no mirror: the side stays
+    out = io.StringIO()
+    translate(io.StringIO(program), out, file="t.nc", source="linuxcnc", target="fagor", transform=rotate)
+    assert "G41 D01" in out.getvalue()
+    assert verify_lines(io.StringIO(program), io.StringIO(out.getvalue()), file_in="a.ngc", file_out="b.nc",
+                        source="linuxcnc", target="fagor", tolerance=1e-3, transform=rotate).ok

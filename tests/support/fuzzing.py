@@ -74,7 +74,7 @@ KNOWN_DEFECTS: list[tuple[str, str | None, re.Pattern[str]]] = [
      re.compile(r"^translated, but verify fails: in\.nc:\d+:\d+: error: G\d+ \([^)]*\) cannot be simulated")),
     ("--on-unsupported warn comments out a move (a lathe G32 thread towards grbl): the next arc then starts "
      "elsewhere, off its circle, and grbl refuses it (error 33/34) (found by the lathe threading fuzz)", None,
-     re.compile(r"^the grbl(hal)? (controller|reader) refuses the grbl(hal)? output: [^\n]*\barc\b(?s:.*)"
+     re.compile(r"^the grbl(hal)? (controller|reader) refuses the grbl(hal)? output: [^\n]*\b(arc|circle)\b(?s:.*)"
                 r"\(UNSUPPORTED LINE \d+: [^)]*\b[XZUW]-?[\d.]")),
 ]
 """Defects outside this suite's reach (writers, block syntaxes, lowering), listed so the suite stays green
