@@ -130,12 +130,13 @@ def transforms(draw: st.DrawFn) -> str | None:
     return "; ".join(ops)
 
 
-def check(source: str, target: str, program: str, units: str | None, how: str | None, arcs: str | None) -> str:
+def check(source: str, target: str, program: str, units: str | None, how: str | None, arcs: str | None,
+          setup: MachineSetup = SETUP) -> str:
     transform = parse_transform(how) if how else None
     arc_option = parse_arc_option(arcs) if arcs else None
     out = io.StringIO()
     try:
-        translate(io.StringIO(program), out, file="in.nc", source=source, target=target, setup=SETUP,
+        translate(io.StringIO(program), out, file="in.nc", source=source, target=target, setup=setup,
                   units=units, transform=transform, arcs=arc_option, diagnostics=Diagnostics(warn_stream=io.StringIO()))
     except ErrorList as errs:
         for err in errs.errors:
@@ -146,16 +147,16 @@ def check(source: str, target: str, program: str, units: str | None, how: str | 
     text = out.getvalue()
     bad = NON_FINITE.search(text)
     assert bad is None, f"non-finite number {bad.group(0)!r} in the output:\n{text}"
-    refused = problems(target, text, SETUP)
+    refused = problems(target, text, setup)
     assert not refused, f"the {target} controller refuses the {target} output: {'; '.join(refused)}\n{text}"
     with contextlib.redirect_stderr(io.StringIO()):
         try:
-            read_program(io.StringIO(text), file="out.nc", dialect=target, setup=SETUP)
+            read_program(io.StringIO(text), file="out.nc", dialect=target, setup=setup)
         except ErrorList as errs:
             raise AssertionError(f"the {target} reader refuses the {target} output: {errs}\n{text}") from None
         try:
             report = verify_lines(io.StringIO(program), io.StringIO(text), file_in="in.nc", file_out="out.nc",
-                                  source=source, target=target, setup=SETUP, tolerance=TOLERANCE,
+                                  source=source, target=target, setup=setup, tolerance=TOLERANCE,
                                   transform=transform,
                                   chord_tolerance=arc_option.tolerance if arc_option and arc_option.form == "lines"
                                   else None)
@@ -165,12 +166,32 @@ def check(source: str, target: str, program: str, units: str | None, how: str | 
     return "ok"
 
 
-def _case(source: str, target: str, program: str, units: str | None, how: str | None, arcs: str | None) -> Case:
-    return Case(f"options {source}-{target}", target, program, lambda p: check(source, target, p, units, how, arcs),
+def _case(source: str, target: str, program: str, units: str | None, how: str | None, arcs: str | None,
+          setup: MachineSetup = SETUP) -> Case:
+    lathe = "lathe " if setup is not SETUP else ""
+    return Case(f"options {lathe}{source}-{target}", target, program,
+                lambda p: check(source, target, p, units, how, arcs, setup),
                 f"--units {units} --transform {how!r} --arcs {arcs}")
 
 
+def lathe_cases() -> st.SearchStrategy[Case]:
+    """Fanuc T and GSK lathe programs (``lathe_threading``) with the options, to the lathe writers and
+    LinuxCNC; transforms that keep the turning axis (along and across Z, scaled, mirrored in Z)."""
+    from .lathe_threading import lathe_setup, programs as lathe_programs
+    lathe_transforms = st.sampled_from([None, None, "translate 0,0,-5", "translate 2,0,3", "mirror z", "scale 2",
+                                        "scale 1,1,0.5", "rotate 180 in zx", "mirror x"])
+    return st.builds(lambda source, target, program, units, how, arcs:
+                     _case(source, target, program, units, how, arcs, lathe_setup(source)),
+                     st.sampled_from(["fanuc", "gsk"]), st.sampled_from(["linuxcnc", "fanuc", "gsk"]),
+                     lathe_programs(), st.sampled_from([None, "mm", "inch"]), lathe_transforms,
+                     st.sampled_from([None, None, "lines:0.01", "ijk", "r"]))
+
+
 def cases() -> st.SearchStrategy[Case]:
+    return st.one_of(mill_cases(), mill_cases(), lathe_cases())
+
+
+def mill_cases() -> st.SearchStrategy[Case]:
     return st.builds(lambda source, target, program, *options: _case(source, target, spelled(source, program), *options),
                      st.sampled_from(SOURCES), st.sampled_from(TARGETS), programs(),
                      st.sampled_from([None, None, "mm", "inch"]), transforms(),
