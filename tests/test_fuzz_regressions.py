@@ -8,7 +8,8 @@ import io
 import pytest
 
 from postproc.api import translate
-from postproc.errors import ErrorList
+from postproc.errors import Diagnostics, ErrorList
+from postproc.setup.machine_setup import InputSettings, MachineSettings, MachineSetup
 from postproc.simulate.verify import verify_lines
 
 HEAD = "G21 G90 G0 X0. Y0. Z10.\n"
@@ -313,3 +314,39 @@ def test_verify_pairs_compensation_sides_under_a_transform_that_mirrors() -> Non
     assert "G41 D01" in out.getvalue()
     assert verify_lines(io.StringIO(program), io.StringIO(out.getvalue()), file_in="a.ngc", file_out="b.nc",
                         source="linuxcnc", target="fagor", tolerance=1e-3, transform=rotate).ok
+
+
+LATHE_SETUP = MachineSetup(input=InputSettings(machine_type="lathe"), machine=MachineSettings(axes="XZ"))
+
+
+@pytest.mark.parametrize("source", ["grbl", "grblhal", "mach3"])
+@pytest.mark.parametrize("on_unsupported", ["error", "warn"])
+def test_a_mill_program_on_a_lathe_set_up_is_refused_for_fanuc(source: str, on_unsupported: str) -> None:
+    """make fuzz (new words): grbl 'G21 G90 G0 X0. Z10.' on a lathe set-up became Fanuc 'G21 G90 G00 X0. Z10.',
+    which Fanuc T (the set-up's reading) takes as a G90 turning cycle; with --on-unsupported warn the line
+    'G21 G90' was kept alone. LinuxCNC reads its own program with lathe meanings, and is still written."""
+    program = "G21 G90 G0 X0. Z10.\nG1 X5. F100.\nM30\n"
+    with pytest.raises(ErrorList) as exc:
+        translate(io.StringIO(program), io.StringIO(), file="t.nc", source=source, target="fanuc", setup=LATHE_SETUP,
+                  on_unsupported=on_unsupported, diagnostics=Diagnostics(warn_stream=io.StringIO()))
+    assert [str(e) for e in exc.value.errors] == [
+        "t.nc:1:1: error: a milling program on a lathe set-up: the fanuc lathe reads its words with lathe meanings "
+        "(G90 a turning cycle, G94 a facing cycle); read it with a dialect that has lathe meanings, or with a "
+        "mill set-up"]
+    out = io.StringIO()
+    translate(io.StringIO(program), out, file="t.nc", source="linuxcnc", target="fanuc", setup=LATHE_SETUP)
+    assert out.getvalue() == "G21 G98 G00 X0. Z10.\nG01 X5. F100.\nM30\n"
+
+
+def test_the_lathe_lowerings_refusals_come_in_the_error_list() -> None:
+    """make fuzz (new words): a W move from an unknown Z, towards a target without W, escaped translate as a
+    bare UnsupportedError (the first one alone, not an ErrorList); now every such block is reported."""
+    program = "G21 G98 G0 X10.\nW-1.\nU2. W-1.\nM30\n"
+    with pytest.raises(ErrorList) as exc:
+        translate(io.StringIO(program), io.StringIO(), file="t.nc", source="fanuc", target="grbl",
+                  setup=LATHE_SETUP)
+    assert [str(e) for e in exc.value.errors] == [
+        "t.nc:2:1: error: an incremental W move from an unknown position (the target has no W address: program an "
+        "absolute Z first)",
+        "t.nc:3:1: error: an incremental W move from an unknown position (the target has no W address: program an "
+        "absolute Z first)"]
