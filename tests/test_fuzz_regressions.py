@@ -350,3 +350,20 @@ def test_the_lathe_lowerings_refusals_come_in_the_error_list() -> None:
         "absolute Z first)",
         "t.nc:3:1: error: an incremental W move from an unknown position (the target has no W address: program an "
         "absolute Z first)"]
+
+
+def test_a_percent_after_a_comment_is_no_opening_one_for_linuxcnc() -> None:
+    """make fuzz (malformed input, caught by the suite's rs274 check): Fanuc '(C)', '%', ... ends at the '%'
+    (the blocks after it are commented); LinuxCNC got '(C)' then '%', which rs274 refuses ("Bad character '%'
+    used": a '%' opens a file only on its first line). The program ends there: M2, the '%' as a comment."""
+    program = "(C)\n%\nG0 X1.\nM30\n%\n"
+    out = io.StringIO()
+    translate(io.StringIO(program), out, file="t.nc", source="fanuc", target="linuxcnc",
+              diagnostics=Diagnostics(warn_stream=io.StringIO()))
+    assert out.getvalue().splitlines()[:3] == ["(C)", "M2", "(%)"]
+    report = verify_lines(io.StringIO(program), io.StringIO(out.getvalue()), file_in="a.nc", file_out="b.ngc",
+                          source="fanuc", target="linuxcnc", tolerance=0.0)
+    assert report.ok, report.summary()
+    out = io.StringIO()  # a '%' on the first line still opens the program
+    translate(io.StringIO("%\n(C)\nG0 X1.\nM30\n%\n"), out, file="t.nc", source="fanuc", target="linuxcnc")
+    assert out.getvalue() == "%\n(C)\nG0 X1.\nM30\n%\n"

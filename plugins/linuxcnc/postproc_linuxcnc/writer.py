@@ -109,6 +109,10 @@ class LinuxcncWriter(WordWriter):
         """An orientation split's part is being written: it is one line (``split_block``)."""
         self._closed = False
         """A '%' closed the program opened with one (rs274 then needs no M2/M30)."""
+        self._lines_before = False
+        """A line (a comment) was written before any '%': rs274 takes a '%' as the opening one only on the
+        file's first line, and refuses it anywhere else ("Bad character '%' used") [V: rs274 2.9, found
+        by make fuzz]."""
         self.names = SubprogramNames(NAMES)
         """Another dialect's subprograms: their o-word names and how each is called."""
         self._body: str | None = None
@@ -336,13 +340,19 @@ class LinuxcncWriter(WordWriter):
             self.unsupported(f"{code} sharing its line with other words ({', '.join(others)}): rs274 refuses it",
                              block)
 
+    def write_block(self, block: Block) -> str | None:
+        text = super().write_block(block)
+        if text and self.opening is None and "TapeMark" not in block.sections:
+            self._lines_before = True
+        return text
+
     def structure_block(self, block: Block) -> str | None:
         sections = block.sections
         if self._body is not None and ("TapeMark" in sections or "ProgramStart" in sections):
             ended = self._end_body()
             return ended + (self.write_block(block) or "")
         if "TapeMark" in sections:
-            if self.opening is False and not self._ended:
+            if (self.opening is False or self.opening is None and self._lines_before) and not self._ended:
                 return self._lone_tape_mark(block)
             self._closed = self.opening is True  # a '%' after the opening one
         text = super().structure_block(block)
