@@ -367,3 +367,16 @@ def test_a_percent_after_a_comment_is_no_opening_one_for_linuxcnc() -> None:
     out = io.StringIO()  # a '%' on the first line still opens the program
     translate(io.StringIO("%\n(C)\nG0 X1.\nM30\n%\n"), out, file="t.nc", source="fanuc", target="linuxcnc")
     assert out.getvalue() == "%\n(C)\nG0 X1.\nM30\n%\n"
+
+
+def test_a_source_with_cr_line_ends_reaches_linuxcnc_with_lf() -> None:
+    """make fuzz (malformed input): a Fanuc file with CR line ends (kept as read) became a LinuxCNC file with
+    CR line ends, one long line for rs274 ("Command too long"); CR LF stays CR LF."""
+    out = io.StringIO()
+    translate(io.StringIO("G21 G90 G0 X0. Y0. Z10.\rG1 X5. F100.\rM30\r", newline=""), out, file="t.nc",
+              source="fanuc", target="linuxcnc")
+    assert out.getvalue() == "G21 G90 G0 X0. Y0. Z10.\nG1 X5. F100.\nM30\n"
+    out = io.StringIO()
+    translate(io.StringIO("G21 G90 G0 X0. Y0. Z10.\r\nM30\r\n", newline=""), out, file="t.nc", source="fanuc",
+              target="linuxcnc")
+    assert out.getvalue() == "G21 G90 G0 X0. Y0. Z10.\r\nM30\r\n"

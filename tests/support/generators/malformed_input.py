@@ -4,7 +4,8 @@ empty, brackets nested deep, a very long line, CR or NUL bytes, a byte-order mar
 path a user has: ``translate`` (to another dialect and to the same), ``toolpath`` and ``info``.
 
 Each must finish (within ``make fuzz``'s time limit per case) either with a result or with errors that
-each name FILE:LINE:COL on a line of the file; a traceback (any other exception) is a defect.
+each name FILE:LINE:COL on a line of the file; a traceback (any other exception) is a defect. A translation
+to another dialect must meet that controller's rules (grbl, grblHAL, LinuxCNC by ``rs274``).
 """
 
 from __future__ import annotations
@@ -22,6 +23,7 @@ from postproc.errors import Diagnostics, ErrorList, PostprocError
 from postproc.simulate.toolpath import toolpath_events
 
 from ..fuzzing import READERS
+from ..output_rules import problems
 from ..tools import with_tools
 from . import Case
 
@@ -95,8 +97,12 @@ def check(dialect: str, target: str, text: str) -> str:
         for run in ("translate", "toolpath", "info"):
             try:
                 if run == "translate":
-                    translate(io.StringIO(text, newline=""), io.StringIO(), file="bad.nc", source=dialect,
+                    out = io.StringIO()
+                    translate(io.StringIO(text, newline=""), out, file="bad.nc", source=dialect,
                               target=target, setup=setup, diagnostics=Diagnostics(warn_stream=io.StringIO()))
+                    if dialect != target:  # (a program copied to its own dialect is the input itself)
+                        bad = problems(target, out.getvalue(), setup)
+                        assert not bad, f"the {target} controller refuses the output: {'; '.join(bad)}\n{out.getvalue()}"
                 elif run == "toolpath":
                     for _ in toolpath_events(io.StringIO(text, newline=""), file="bad.nc", dialect=dialect,
                                              setup=setup, diagnostics=Diagnostics(warn_stream=io.StringIO())):
