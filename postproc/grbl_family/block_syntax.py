@@ -25,10 +25,12 @@ class GrblFamilyBlockSyntax(NgcWordBlockSyntax):
     def build(self, block: Block, ctx: Context) -> None:
         super().build(block, ctx)
         motion = block.sections.get("Motion")
-        if isinstance(motion, Motion) and motion.mode in ("cw", "ccw") and not motion.axes:
+        if isinstance(motion, Motion) and motion.mode in ("cw", "ccw") and not motion.axes \
+                and motion.radius is None:
             # grbl 1.1 gcode.c, G2/G3: "if (!axis_words) FAIL(STATUS_GCODE_NO_AXIS_WORDS)" (error 26); grblHAL
             # the same [K: tests/support/grbl_rules.py, written from both parsers]: there is no full circle
-            # from I/J/K alone, its end point is programmed (where it starts)
+            # from I/J/K alone, its end point is programmed (where it starts); an R arc without axis words is
+            # refused by the modal step, which names the R
             code = "G2" if motion.mode == "cw" else "G3"
             raise ParseError(f"{self.CONTROL} refuses an arc with no axis word ({code} with I/J/K alone, error 26): "
                              "program its end point (the start point, for a full circle)",
