@@ -135,8 +135,8 @@ class LatheWordWriter(WordWriter):
 
     def write(self, blocks: Iterable[Block], out: TextIO) -> None:
         target = self.target
-        if not self.ctx.lathe and target is not None and "mill" in target.MACHINE_TYPES \
-                and target.reads_lathe(self.ctx.setup):
+        if not self.ctx.lathe and target is not None and {"mill", "lathe"} <= target.MACHINE_TYPES \
+                and self.ctx.setup.input.machine_type == "lathe":  # (the target reads this set-up as a lathe)
             blocks = self._mill_program_refused(blocks, target.NAME)
         super().write(blocks, out)
 
