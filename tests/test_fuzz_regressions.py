@@ -283,7 +283,7 @@ def test_a_grbl_arc_with_no_axis_word_is_refused_where_it_stands(source: str) ->
                   target=source)
     control = "grbl" if source == "grbl" else "grblHAL"
     assert [str(e) for e in exc.value.errors] == [
-        f"t.nc:2:1: error: {control} refuses an arc with no axis word (G2 with I/J/K alone, error 26): program its "
+        f"t.nc:2:1: error: {control} refuses an arc with no axis word (its centre alone, error 26): program its "
         "end point (the start point, for a full circle)"]
     out = io.StringIO()  # the full circle grbl runs: its end point (the start) programmed
     translate(io.StringIO(HEAD + "G2 X0 I7.5 J7.5 F100.\nM2\n"), out, file="t.nc", source=source, target=source)
@@ -331,8 +331,8 @@ def test_a_mill_program_on_a_lathe_set_up_is_refused_for_fanuc(source: str, on_u
                   on_unsupported=on_unsupported, diagnostics=Diagnostics(warn_stream=io.StringIO()))
     assert [str(e) for e in exc.value.errors] == [
         "t.nc:1:1: error: a milling program on a lathe set-up: the fanuc lathe reads its words with lathe meanings "
-        "(G90 a turning cycle, G94 a facing cycle); read it with a dialect that has lathe meanings, or with a "
-        "mill set-up"]
+        "(a mill's distance and feed mode codes are its turning and facing cycles); read it with a dialect that "
+        "has lathe meanings, or with a mill set-up"]
     out = io.StringIO()
     translate(io.StringIO(program), out, file="t.nc", source="linuxcnc", target="fanuc", setup=LATHE_SETUP)
     assert out.getvalue() == "G21 G98 G00 X0. Z10.\nG01 X5. F100.\nM30\n"

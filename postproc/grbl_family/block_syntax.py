@@ -31,8 +31,7 @@ class GrblFamilyBlockSyntax(NgcWordBlockSyntax):
             # the same [K: tests/support/grbl_rules.py, written from both parsers]: there is no full circle
             # from I/J/K alone, its end point is programmed (where it starts); an R arc without axis words is
             # refused by the modal step, which names the R
-            code = "G2" if motion.mode == "cw" else "G3"
-            raise ParseError(f"{self.CONTROL} refuses an arc with no axis word ({code} with I/J/K alone, error 26): "
+            raise ParseError(f"{self.CONTROL} refuses an arc with no axis word (its centre alone, error 26): "
                              "program its end point (the start point, for a full circle)",
                              ctx.at(block, _motion_col(block)))
 

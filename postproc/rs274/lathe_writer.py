@@ -151,8 +151,8 @@ class LatheWordWriter(WordWriter):
             if block.sections:
                 self.ctx.diagnostics.error(UnsupportedError(
                     f"a milling program on a lathe set-up: the {name} lathe reads its words with lathe meanings "
-                    "(G90 a turning cycle, G94 a facing cycle); read it with a dialect that has lathe meanings, "
-                    "or with a mill set-up", self.ctx.at(block)))
+                    "(a mill's distance and feed mode codes are its turning and facing cycles); read it with a "
+                    "dialect that has lathe meanings, or with a mill set-up", self.ctx.at(block)))
                 break
         yield from it
 

@@ -123,7 +123,20 @@ def check_translation(source: str, target: str, program: str, setup: MachineSetu
     if REGISTRY.dialects[target].READER is None:
         return "ok"
     with contextlib.redirect_stderr(io.StringIO()):  # the readers' warnings (e.g. grbl ignoring '/')
-        return _check_output(source, target, program, text, setup, warn and bool(diagnostics.warnings), tolerance)
+        try:
+            return _check_output(source, target, program, text, setup, warn and bool(diagnostics.warnings),
+                                 tolerance)
+        except AssertionError as exc:
+            if diagnostics.warnings and LOST_OFFSET.search(str(exc)):
+                return "warned: lathe tool offset"
+            raise
+
+
+LOST_OFFSET = re.compile(r"^translated, but verify says: max deviation 0\.0000 mm .*: settings that move the tool "
+                         r"differ .*\nnot compared:\n(  lathe tool offset differs: IN offset \d+ \(line \d+\); OUT "
+                         r"never set\n)+\S")
+"""A lathe tool offset a mill control (grbl, Fagor, ISG...) cannot apply, the only difference: by design the
+translation warns at the turret index that names it and verify lists it (commit 91f98e5)."""
 
 
 def _check_output(source: str, target: str, program: str, text: str, setup: MachineSetup, warned: bool,

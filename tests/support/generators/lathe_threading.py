@@ -13,7 +13,6 @@ radii, feeds, thread leads) must be the source's (``test_lathe_rs274.difference`
 from __future__ import annotations
 
 import io
-import re
 from pathlib import Path
 
 from hypothesis import strategies as st
@@ -188,13 +187,6 @@ def moves_agree_with_rs274(source: str, program: str, setup: MachineSetup) -> No
     assert problem is None, f"the {source} source and rs274 running its translation differ: {problem}\n{text}"
 
 
-_LOST_OFFSET = re.compile(r"^translated, but verify says: max deviation 0\.0000 mm .*: settings that move the tool "
-                          r"differ .*\nnot compared:\n(  lathe tool offset differs: IN offset \d+ \(line \d+\); OUT "
-                          r"never set\n)+\S")
-"""A lathe tool offset a mill control (grbl) cannot apply, the only difference: by design the translation
-warns at the turret index that names it and verify lists it (commit b3cc0e2's sibling, 91f98e5)."""
-
-
 INCH_ROUNDING = 1e-5
 """mm: verify's tolerance for an inch program, whose computed cycle points (G76 passes) are written to 8
 decimals of an inch and simulated through inch-to-mm conversions on both sides (deviations of a few
@@ -203,12 +195,7 @@ nanometres found; a real defect moves by more than the 4 decimals other writers 
 
 def check(source: str, target: str, program: str, warn: bool) -> str:
     setup = lathe_setup(source)
-    try:
-        result = check_translation(source, target, program, setup, warn, INCH_ROUNDING if "G20" in program else 0.0)
-    except AssertionError as exc:
-        if target.startswith("grbl") and _LOST_OFFSET.search(str(exc)):
-            return "warned: lathe tool offset"
-        raise
+    result = check_translation(source, target, program, setup, warn, INCH_ROUNDING if "G20" in program else 0.0)
     if result == "ok" and target == "linuxcnc" and not warn:
         moves_agree_with_rs274(source, program, setup)
     return result
