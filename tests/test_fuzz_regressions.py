@@ -8,7 +8,8 @@ import io
 import pytest
 
 from postproc.api import translate
-from postproc.errors import ErrorList
+from postproc.errors import Diagnostics, ErrorList
+from postproc.setup.machine_setup import InputSettings, MachineSettings, MachineSetup
 from postproc.simulate.verify import verify_lines
 
 HEAD = "G21 G90 G0 X0. Y0. Z10.\n"
@@ -271,3 +272,111 @@ def test_a_jump_past_the_program_end_is_a_located_error(source: str, target: str
     with pytest.raises(ErrorList) as exc:
         translate(io.StringIO(program), io.StringIO(), file="t.nc", source=source, target=target)
     assert [str(e) for e in exc.value.errors] == [message]
+
+
+@pytest.mark.parametrize("source", ["grbl", "grblhal"])
+def test_a_grbl_arc_with_no_axis_word_is_refused_where_it_stands(source: str) -> None:
+    """make fuzz (program options): 'G2 I7.5 J7.5' was read by the grbl readers as a full circle and copied to
+    the grbl output, where grbl 1.1 refuses it (gcode.c: an arc without axis words, error 26); grblHAL too."""
+    with pytest.raises(ErrorList) as exc:
+        translate(io.StringIO(HEAD + "G2 I7.5 J7.5 F100.\nM2\n"), io.StringIO(), file="t.nc", source=source,
+                  target=source)
+    control = "grbl" if source == "grbl" else "grblHAL"
+    assert [str(e) for e in exc.value.errors] == [
+        f"t.nc:2:1: error: {control} refuses an arc with no axis word (its centre alone, error 26): program its "
+        "end point (the start point, for a full circle)"]
+    out = io.StringIO()  # the full circle grbl runs: its end point (the start) programmed
+    translate(io.StringIO(HEAD + "G2 X0 I7.5 J7.5 F100.\nM2\n"), out, file="t.nc", source=source, target=source)
+    assert "G2 X0 I7.5 J7.5 F100." in out.getvalue()
+
+
+def test_verify_pairs_compensation_sides_under_a_transform_that_mirrors() -> None:
+    """make fuzz (program options): under 'mirror x' translate writes G41 as G42 (the path runs the other way
+    round the part); verify compared IN's 'left' with OUT's 'right' and failed the right translation. The
+    mirrored output with G41 kept (the wrong side) must still fail."""
+    from postproc.transforms.spec import parse_transform
+    program = HEAD + "G41 D01 G1 X10. Y-16. F100.\nX20.\nG40 G0 X0. Y0.\nM30\n"
+    mirror = parse_transform("mirror x")
+    out = io.StringIO()
+    translate(io.StringIO(program), out, file="t.nc", source="linuxcnc", target="fagor", transform=mirror)
+    text = out.getvalue()
+    assert "G42 D01" in text and "G41" not in text, text
+
+    def verified(output: str) -> bool:
+        return verify_lines(io.StringIO(program), io.StringIO(output), file_in="a.ngc", file_out="b.nc",
+                            source="linuxcnc", target="fagor", tolerance=1e-3, transform=mirror).ok
+
+    assert verified(text)
+    assert not verified(text.replace("G42 D01", "G41 D01"))
+    rotate = parse_transform("rotate 90")  # no mirror: the side stays
+    out = io.StringIO()
+    translate(io.StringIO(program), out, file="t.nc", source="linuxcnc", target="fagor", transform=rotate)
+    assert "G41 D01" in out.getvalue()
+    assert verify_lines(io.StringIO(program), io.StringIO(out.getvalue()), file_in="a.ngc", file_out="b.nc",
+                        source="linuxcnc", target="fagor", tolerance=1e-3, transform=rotate).ok
+
+
+LATHE_SETUP = MachineSetup(input=InputSettings(machine_type="lathe"), machine=MachineSettings(axes="XZ"))
+
+
+@pytest.mark.parametrize("source", ["grbl", "grblhal", "mach3"])
+@pytest.mark.parametrize("on_unsupported", ["error", "warn"])
+def test_a_mill_program_on_a_lathe_set_up_is_refused_for_fanuc(source: str, on_unsupported: str) -> None:
+    """make fuzz (new words): grbl 'G21 G90 G0 X0. Z10.' on a lathe set-up became Fanuc 'G21 G90 G00 X0. Z10.',
+    which Fanuc T (the set-up's reading) takes as a G90 turning cycle; with --on-unsupported warn the line
+    'G21 G90' was kept alone. LinuxCNC reads its own program with lathe meanings, and is still written."""
+    program = "G21 G90 G0 X0. Z10.\nG1 X5. F100.\nM30\n"
+    with pytest.raises(ErrorList) as exc:
+        translate(io.StringIO(program), io.StringIO(), file="t.nc", source=source, target="fanuc", setup=LATHE_SETUP,
+                  on_unsupported=on_unsupported, diagnostics=Diagnostics(warn_stream=io.StringIO()))
+    assert [str(e) for e in exc.value.errors] == [
+        "t.nc:1:1: error: a milling program on a lathe set-up: the fanuc lathe reads its words with lathe meanings "
+        "(a mill's distance and feed mode codes are its turning and facing cycles); read it with a dialect that "
+        "has lathe meanings, or with a mill set-up"]
+    out = io.StringIO()
+    translate(io.StringIO(program), out, file="t.nc", source="linuxcnc", target="fanuc", setup=LATHE_SETUP)
+    assert out.getvalue() == "G21 G98 G00 X0. Z10.\nG01 X5. F100.\nM30\n"
+
+
+def test_the_lathe_lowerings_refusals_come_in_the_error_list() -> None:
+    """make fuzz (new words): a W move from an unknown Z, towards a target without W, escaped translate as a
+    bare UnsupportedError (the first one alone, not an ErrorList); now every such block is reported."""
+    program = "G21 G98 G0 X10.\nW-1.\nU2. W-1.\nM30\n"
+    with pytest.raises(ErrorList) as exc:
+        translate(io.StringIO(program), io.StringIO(), file="t.nc", source="fanuc", target="grbl",
+                  setup=LATHE_SETUP)
+    assert [str(e) for e in exc.value.errors] == [
+        "t.nc:2:1: error: an incremental W move from an unknown position (the target has no W address: program an "
+        "absolute Z first)",
+        "t.nc:3:1: error: an incremental W move from an unknown position (the target has no W address: program an "
+        "absolute Z first)"]
+
+
+def test_a_percent_after_a_comment_is_no_opening_one_for_linuxcnc() -> None:
+    """make fuzz (malformed input, caught by the suite's rs274 check): Fanuc '(C)', '%', ... ends at the '%'
+    (the blocks after it are commented); LinuxCNC got '(C)' then '%', which rs274 refuses ("Bad character '%'
+    used": a '%' opens a file only on its first line). The program ends there: M2, the '%' as a comment."""
+    program = "(C)\n%\nG0 X1.\nM30\n%\n"
+    out = io.StringIO()
+    translate(io.StringIO(program), out, file="t.nc", source="fanuc", target="linuxcnc",
+              diagnostics=Diagnostics(warn_stream=io.StringIO()))
+    assert out.getvalue().splitlines()[:3] == ["(C)", "M2", "(%)"]
+    report = verify_lines(io.StringIO(program), io.StringIO(out.getvalue()), file_in="a.nc", file_out="b.ngc",
+                          source="fanuc", target="linuxcnc", tolerance=0.0)
+    assert report.ok, report.summary()
+    out = io.StringIO()  # a '%' on the first line still opens the program
+    translate(io.StringIO("%\n(C)\nG0 X1.\nM30\n%\n"), out, file="t.nc", source="fanuc", target="linuxcnc")
+    assert out.getvalue() == "%\n(C)\nG0 X1.\nM30\n%\n"
+
+
+def test_a_source_with_cr_line_ends_reaches_linuxcnc_with_lf() -> None:
+    """make fuzz (malformed input): a Fanuc file with CR line ends (kept as read) became a LinuxCNC file with
+    CR line ends, one long line for rs274 ("Command too long"); CR LF stays CR LF."""
+    out = io.StringIO()
+    translate(io.StringIO("G21 G90 G0 X0. Y0. Z10.\rG1 X5. F100.\rM30\r", newline=""), out, file="t.nc",
+              source="fanuc", target="linuxcnc")
+    assert out.getvalue() == "G21 G90 G0 X0. Y0. Z10.\nG1 X5. F100.\nM30\n"
+    out = io.StringIO()
+    translate(io.StringIO("G21 G90 G0 X0. Y0. Z10.\r\nM30\r\n", newline=""), out, file="t.nc", source="fanuc",
+              target="linuxcnc")
+    assert out.getvalue() == "G21 G90 G0 X0. Y0. Z10.\r\nM30\r\n"

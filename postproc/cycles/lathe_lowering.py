@@ -118,29 +118,34 @@ def _lower(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iter
             if "FeedMode" not in block.sections:
                 block.add(FeedMode(start_mode))  # the target starts in another feed mode: say the source's
                 block.changed()
-        if turret:
-            select = sections.get("ToolSelect")
-            if not _turret(block, ctx, turning):
-                continue
-            if not foreign and "ToolSelect" in block.sections:
-                _select_offset(select, block, ctx)
-                nose.select(select)
-            elif offsets is not None and "ToolSelect" in block.sections:
-                _report(offsets.select, block, ctx, select)
-            turning = _turns_after(block, turning)
-        if tracker is not None:
-            if not plane_set and ("Motion" in sections or "CompoundMotion" in sections):
-                block.add(Plane("ZX"))
-                plane_set = True
-            back_to_absolute = tracker.block(block)
-            if offsets is not None:
-                _report(offsets.block, block, ctx, tracker)
-            if back_to_absolute:
-                yield block
-                back = Block(block.line, None, block.eol)
-                back.add(DistanceMode("absolute"))
-                yield back  # the reference return went in incremental mode: back to absolute
-                continue
+        try:  # a refusal below is reported where it stands and the block left out: the run goes on to the
+            # program's other errors (raised, it ended the translation with no error list)
+            if turret:
+                select = sections.get("ToolSelect")
+                if not _turret(block, ctx, turning):
+                    continue
+                if not foreign and "ToolSelect" in block.sections:
+                    _select_offset(select, block, ctx)
+                    nose.select(select)
+                elif offsets is not None and "ToolSelect" in block.sections:
+                    _report(offsets.select, block, ctx, select)
+                turning = _turns_after(block, turning)
+            if tracker is not None:
+                if not plane_set and ("Motion" in sections or "CompoundMotion" in sections):
+                    block.add(Plane("ZX"))
+                    plane_set = True
+                back_to_absolute = tracker.block(block)
+                if offsets is not None:
+                    _report(offsets.block, block, ctx, tracker)
+                if back_to_absolute:
+                    yield block
+                    back = Block(block.line, None, block.eol)
+                    back.add(DistanceMode("absolute"))
+                    yield back  # the reference return went in incremental mode: back to absolute
+                    continue
+        except UnsupportedError as err:
+            ctx.diagnostics.error(err)
+            continue
         yield block
 
 

@@ -11,7 +11,7 @@ next block), and a one-block cycle read elsewhere is written as two blocks.
 
 from __future__ import annotations
 
-from typing import Any, ClassVar
+from typing import Any, ClassVar, Iterable, Iterator, TextIO
 
 from ..errors import UnsupportedError
 from ..expr import Expr
@@ -133,6 +133,29 @@ class LatheWordWriter(WordWriter):
             return str(count)
         return self.number(float(value), letter)
 
+    def write(self, blocks: Iterable[Block], out: TextIO) -> None:
+        target = self.target
+        if not self.ctx.lathe and target is not None and {"mill", "lathe"} <= target.MACHINE_TYPES \
+                and self.ctx.setup.input.machine_type == "lathe":  # (the target reads this set-up as a lathe)
+            blocks = self._mill_program_refused(blocks, target.NAME)
+        super().write(blocks, out)
+
+    def _mill_program_refused(self, blocks: Iterable[Block], name: str) -> Iterator[Block]:
+        """A mill dialect's program (grbl, Mach3: read with mill meanings) on a lathe set-up, for a target that
+        reads that set-up's programs as a lathe's: its words would be read back with other meanings (Fanuc T:
+        G90 a turning cycle, G94 a facing cycle, G98/G99 feed modes). Refused at its first block, whatever
+        ``--on-unsupported`` says: no block of it means there what it says [found by make fuzz]."""
+        it = iter(blocks)
+        for block in it:
+            yield block
+            if block.sections:
+                self.ctx.diagnostics.error(UnsupportedError(
+                    f"a milling program on a lathe set-up: the {name} lathe reads its words with lathe meanings "
+                    "(a mill's distance and feed mode codes are its turning and facing cycles); read it with a "
+                    "dialect that has lathe meanings, or with a mill set-up", self.ctx.at(block)))
+                break
+        yield from it
+
     def cycle_cancel_words(self, s: Any, block: Block) -> list[str]:
         """A lathe reads no drilling cycle into a neutral one (they stay verbatim), so its canned-cycle cancel
         (G80 on Fanuc T and Haas) has nothing to end: a control without the code writes nothing for it."""
@@ -196,8 +219,9 @@ class LatheWordWriter(WordWriter):
     def _lathe_motion_words(self, s: Motion, block: Block) -> list[str]:
         """In incremental mode on a lathe without G91, X and Z are written as U and W. A lathe-only target
         refuses a mill program's motion (its Y, its XY arcs and their centres mean nothing there)."""
-        if not self.ctx.lathe and self.target is not None and "mill" not in self.target.MACHINE_TYPES:
-            self.unsupported(f"motion read from a milling program ({self.target.NAME} is a lathe control: read "
+        target = self.target
+        if not self.ctx.lathe and target is not None and "mill" not in target.MACHINE_TYPES:
+            self.unsupported(f"motion read from a milling program ({target.NAME} is a lathe control: read "
                              "the program with a lathe set-up)", block)
         if self.modal.distance == "incremental" and self.ctx.lathe and self.codes.spell("distance", "incremental") is None \
                 and s.mode not in ("home", "home2"):

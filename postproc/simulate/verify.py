@@ -22,6 +22,7 @@ from ..errors import Diagnostics, ErrorList, PostprocError, UsageError
 from ..plugins import Registry, default_registry
 from ..setup.machine_setup import MachineSetup
 from ..drawing.overlay import Overlay
+from ..transforms.carry import mirrors_xy
 from ..transforms.events import moved_events, moved_setup
 from ..transforms.spec import ProgramTransform
 from .normal_move import Move
@@ -98,6 +99,9 @@ def verify_lines(lines_in: Iterable[str], lines_out: Iterable[str], *, file_in: 
         settings_in = [s for s in settings_in if s[1] != "path control"]
         settings_out = [s for s in settings_out if s[1] != "path control"]
         report.ignored.append(f"path control: {target} always runs in {fixed} mode, as the source asks")
+    if transform is not None and mirrors_xy(transform.map):
+        settings_in = [(line, kind, _other_side(value) if kind == "cutter compensation" else value)
+                       for line, kind, value in settings_in]
     compare_settings(report, settings_in, settings_out)
     if setup.machine.tool_lengths == "touched_off":
         report.ignored.append("tool lengths: zero on both sides, the set-up's tools are touched off at their "
@@ -106,6 +110,14 @@ def verify_lines(lines_in: Iterable[str], lines_out: Iterable[str], *, file_in: 
     if errors:
         raise ErrorList(errors)
     return report
+
+
+def _other_side(value: str) -> str:
+    """A cutter compensation setting ('left D1') on the other side of the path: a program moved by a
+    transform that mirrors the XY plane cuts on the other side (``translate --transform`` writes it so)."""
+    side, _, rest = value.partition(" ")
+    swapped = {"left": "right", "right": "left"}.get(side, side)
+    return f"{swapped} {rest}".rstrip()
 
 
 def _both_compensate(source: str, target: str, registry: Registry | None) -> bool:

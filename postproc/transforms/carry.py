@@ -104,7 +104,7 @@ class ProgramMover:
                 setting.table != "work_offset" or setting.index in (0, work)) and setting.table.startswith("work"):
             self.p = dict.fromkeys(XYZ)  # the tool stays; where it stands in the new system is not known here
         cc = s.get("CutterCompensation")
-        if isinstance(cc, CutterCompensation) and cc.mode in _SWAPPED and _mirrors(self.map):
+        if isinstance(cc, CutterCompensation) and cc.mode in _SWAPPED and mirrors_xy(self.map):
             s["CutterCompensation"] = CutterCompensation(_SWAPPED[cc.mode], cc.register)
             changed = True
         cycle = s.get("CannedCycle")
@@ -334,7 +334,8 @@ def _ordered(words: dict[str, float | int]) -> list[str]:
     return sorted(words, key=lambda k: order.get(k, 99))
 
 
-def _mirrors(fmap: Affine) -> bool:
+def mirrors_xy(fmap: Affine) -> bool:
+    """The map turns the XY plane over (cutter compensation changes sides; ``verify`` pairs them so)."""
     m = fmap.m
     return m[0] * m[4] - m[1] * m[3] < 0.0
 

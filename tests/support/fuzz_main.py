@@ -5,6 +5,10 @@ A round gives every pair and generator ``--per-round`` cases; the budget is chec
 a run ends on time (its last round then covers only the pairs it reached: the counts per pair say which).
 
     python -m tests.support.fuzz_main [--minutes 10] [--per-round 50] [--out fuzz-failures] [--case-seconds 5]
+                                      [--only KIND ...]
+
+``--only`` runs just the named generator kinds (``tests/support/generators``; 'pairs' and 'toolpath' name
+the random fragments' translations and simulations), to give one generator the whole budget.
 """
 
 from __future__ import annotations
@@ -50,8 +54,11 @@ def time_limit(seconds: float) -> Iterator[None]:
 
 
 class Fuzzer:
-    def __init__(self, out: Path, case_seconds: float, end: float = math.inf, per_round: int = ROUND) -> None:
+    def __init__(self, out: Path, case_seconds: float, end: float = math.inf, per_round: int = ROUND,
+                 only: frozenset[str] = frozenset()) -> None:
         self.out = out
+        self.only = only
+        """Kinds to run (empty: all)."""
         self.case_seconds = case_seconds
         self.end = end
         """``time.monotonic()`` at which the budget runs out: later cases are not run."""
@@ -89,7 +96,7 @@ class Fuzzer:
         kind, message = self.outcome(run, program, target)
         self.outcomes[kind] += 1
         key = f"{name} {kind}"
-        if kind in ("ok", "refused") or key in self.saved:
+        if not kind.startswith(("NEW", "known")) or key in self.saved:  # ok, refused, warned: ...
             return
         self.saved.add(key)
         small = reduce(program, lambda p: self.outcome(run, p, target)[0] == kind)
@@ -99,8 +106,11 @@ class Fuzzer:
                         f"--- message (original program) ---\n{message}\n--- original program ---\n{program}")
         print(f"  {kind} [{name}] -> {path}", flush=True)
 
+    def runs(self, kind: str) -> bool:
+        return not self.only or kind in self.only
+
     def round(self) -> None:
-        for source, target in PAIRS:
+        for source, target in PAIRS if self.runs("pairs") else ():
             name = f"{source}-{target}"
 
             if self.over():
@@ -114,7 +124,7 @@ class Fuzzer:
                             setup)
 
             case()
-        for dialect in READERS:
+        for dialect in READERS if self.runs("toolpath") else ():
             if self.over():
                 return
 
@@ -127,6 +137,8 @@ class Fuzzer:
 
             path_case()
         for kind, strategy in strategies().items():
+            if not self.runs(kind):
+                continue
             if self.over():
                 return
 
@@ -180,9 +192,15 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--out", type=Path, default=Path("fuzz-failures"))
     parser.add_argument("--case-seconds", type=float, default=5.0)
     parser.add_argument("--per-round", type=int, default=ROUND, help="cases per pair (and generator) per round")
+    parser.add_argument("--only", action="append", default=[], metavar="KIND",
+                        help="run only this generator kind ('pairs', 'toolpath' or a generator's KIND); repeatable")
     args = parser.parse_args(argv)
+    unknown = set(args.only) - {"pairs", "toolpath", *strategies()}
+    if unknown:
+        parser.error(f"--only: unknown kind(s) {sorted(unknown)}; known: pairs, toolpath, {', '.join(strategies())}")
     start = time.monotonic()
-    fuzzer = Fuzzer(args.out, args.case_seconds, start + args.minutes * 60, max(1, args.per_round))
+    fuzzer = Fuzzer(args.out, args.case_seconds, start + args.minutes * 60, max(1, args.per_round),
+                    frozenset(args.only))
     rounds = 0
     while not fuzzer.over():
         fuzzer.round()

@@ -72,6 +72,26 @@ KNOWN_DEFECTS: list[tuple[str, str | None, re.Pattern[str]]] = [
     ("ISG codes kept verbatim (mirroring G20-G23, software limits G98/G99, homing G74, preset G92, G80-G89 calls, "
      "blending) copy to ISG unchanged and are not simulated", "isg",
      re.compile(r"^translated, but verify fails: in\.nc:\d+:\d+: error: G\d+ \([^)]*\) cannot be simulated")),
+    ("translate does not check axis words against the set-up's axes (<Machine axes>): a Y on an XZ lathe, a U/W "
+     "on an XYZ mill is written (LinuxCNC's rs274 without those axes refuses a W); toolpath and verify refuse it "
+     "by name (found by the new words fuzz)", None,
+     re.compile(r"^translated, but verify fails: in\.nc:\d+:\d+: error: axis [A-Z] is not on this machine|"
+                r"^the linuxcnc controller refuses the linuxcnc output: Bad character '[uvwabc]' used")),
+    ("LinuxCNC codes the mill simulation does not model (G33, G96/G97, G7/G8; G41.1/G42.1 in a block with a move, "
+     "which rs274 runs) are copied verbatim from LinuxCNC to LinuxCNC and not simulated (found by the new words "
+     "fuzz)", "linuxcnc",
+     re.compile(r"^translated, but verify fails: in\.nc:\d+:\d+: error: G[\d.]+ \((spindle-synchronised motion|"
+                r"constant surface speed|spindle speed in rpm|lathe radius mode|lathe diameter mode|"
+                r"dynamic cutter compensation (left|right))\) cannot be simulated")),
+    ("--arcs lines:0.001 on incremental (G91) arcs, mm or inch, with or without --transform: verify finds the "
+     "chords (written as rounded increments) running past the end of the arc; lines:0.01 passes (found by the "
+     "program options fuzz; not fixed: likely the increments' rounding adding up over ~80 chords)", None,
+     re.compile(r"^translated, but verify says: .*structure differs\nchords at most .*--arcs lines:.*\nfirst "
+                r"difference at IN:\d+ / OUT:\d+: OUT's straight moves run past the end of IN's arc")),
+    ("--on-unsupported warn comments out a move (a lathe G32 thread towards grbl): the next arc then starts "
+     "elsewhere, off its circle, and grbl refuses it (error 33/34) (found by the lathe threading fuzz)", None,
+     re.compile(r"^the grbl(hal)? (controller|reader) refuses the grbl(hal)? output: [^\n]*\b(arc|circle)\b(?s:.*)"
+                r"\(UNSUPPORTED LINE \d+: [^)]*\b[XZUW]-?[\d.]")),
 ]
 """Defects outside this suite's reach (writers, block syntaxes, lowering), listed so the suite stays green
 and they stay visible: ``make fuzz`` counts them. Each entry: description, target (None: any), message."""
@@ -89,8 +109,10 @@ def located(err: PostprocError) -> None:
     assert err.location is not None and err.location.line >= 1 and err.location.col >= 1, str(err)
 
 
-def check_translation(source: str, target: str, program: str, setup: MachineSetup, warn: bool) -> str:
-    """One case: translate, then the output's own checks. Returns what happened ('ok', 'refused')."""
+def check_translation(source: str, target: str, program: str, setup: MachineSetup, warn: bool,
+                      tolerance: float = 0.0) -> str:
+    """One case: translate, then the output's own checks. Returns what happened ('ok', 'refused').
+    ``tolerance`` (mm) is verify's: 0 unless the output rounds computed points (8 decimals of an inch)."""
     out = io.StringIO()
     try:
         diagnostics = translate(io.StringIO(program), out, file="fuzz.nc", source=source, target=target,
@@ -106,10 +128,24 @@ def check_translation(source: str, target: str, program: str, setup: MachineSetu
     if REGISTRY.dialects[target].READER is None:
         return "ok"
     with contextlib.redirect_stderr(io.StringIO()):  # the readers' warnings (e.g. grbl ignoring '/')
-        return _check_output(source, target, program, text, setup, warn and bool(diagnostics.warnings))
+        try:
+            return _check_output(source, target, program, text, setup, warn and bool(diagnostics.warnings),
+                                 tolerance)
+        except AssertionError as exc:
+            if diagnostics.warnings and LOST_OFFSET.search(str(exc)):
+                return "warned: lathe tool offset"
+            raise
 
 
-def _check_output(source: str, target: str, program: str, text: str, setup: MachineSetup, warned: bool) -> str:
+LOST_OFFSET = re.compile(r"^translated, but verify says: max deviation 0\.0000 mm .*: settings that move the tool "
+                         r"differ .*\nnot compared:\n(  lathe tool offset differs: IN offset \d+ \(line \d+\); OUT "
+                         r"never set\n)+\S")
+"""A lathe tool offset a mill control (grbl, Fagor, ISG...) cannot apply, the only difference: by design the
+translation warns at the turret index that names it and verify lists it (commit 91f98e5)."""
+
+
+def _check_output(source: str, target: str, program: str, text: str, setup: MachineSetup, warned: bool,
+                  tolerance: float = 0.0) -> str:
     refused = problems(target, text, setup) if source != target else []
     assert not refused, f"the {target} controller refuses the {target} output: {'; '.join(refused)}\n{text}"
     try:
@@ -120,7 +156,7 @@ def _check_output(source: str, target: str, program: str, text: str, setup: Mach
         return "ok"  # commented-out blocks: the toolpaths differ by design
     try:
         report = verify_lines(io.StringIO(program), io.StringIO(text), file_in="in.nc", file_out="out.nc",
-                              source=source, target=target, setup=setup, tolerance=0.0)
+                              source=source, target=target, setup=setup, tolerance=tolerance)
     except ErrorList as errs:
         raise AssertionError(f"translated, but verify fails: {errs}\n{text}") from None
     assert report.ok, f"translated, but verify says: {report.summary()}\n{text}"

@@ -29,7 +29,8 @@
 from __future__ import annotations
 
 import copy
-from typing import Any, ClassVar
+import re
+from typing import Any, ClassVar, Iterable, TextIO, cast
 
 from postproc.errors import Location, UnsupportedError
 from postproc.ir import Block, ProgramControl, Section
@@ -63,6 +64,23 @@ _LABELLED = (*_OPENING, *_CLOSING, ElseIf, Else, Break, Continue)
 NAMES = NameRule(numbers=range(0, 2**31), spare=range(0), names=True, lower_case=True, one_kind=True)
 """o-word numbers and ``<names>`` (rs274 lower-cases a line outside its comments); the kind of call
 fixed by the definition (``postproc.interp.rules``)."""
+
+
+_LONE_CR = re.compile(r"\r(?!\n)")
+
+
+class _LineFeeds:
+    """The output with a source's lone CR line ends (kept as read) written as LF: rs274 ends a line at LF
+    only, so a CR-only file is one long line it refuses ("Command too long") [V: rs274 2.9, found by make
+    fuzz]; CR LF it reads."""
+
+    __slots__ = ("out",)
+
+    def __init__(self, out: TextIO) -> None:
+        self.out = out
+
+    def write(self, text: str) -> int:
+        return self.out.write(_LONE_CR.sub("\n", text) if "\r" in text else text)
 
 
 class LinuxcncWriter(WordWriter):
@@ -109,6 +127,10 @@ class LinuxcncWriter(WordWriter):
         """An orientation split's part is being written: it is one line (``split_block``)."""
         self._closed = False
         """A '%' closed the program opened with one (rs274 then needs no M2/M30)."""
+        self._lines_before = False
+        """A line (a comment) was written before any '%': rs274 takes a '%' as the opening one only on the
+        file's first line, and refuses it anywhere else ("Bad character '%' used") [V: rs274 2.9, found
+        by make fuzz]."""
         self.names = SubprogramNames(NAMES)
         """Another dialect's subprograms: their o-word names and how each is called."""
         self._body: str | None = None
@@ -336,13 +358,22 @@ class LinuxcncWriter(WordWriter):
             self.unsupported(f"{code} sharing its line with other words ({', '.join(others)}): rs274 refuses it",
                              block)
 
+    def write(self, blocks: Iterable[Block], out: TextIO) -> None:
+        super().write(blocks, cast(TextIO, _LineFeeds(out)))
+
+    def write_block(self, block: Block) -> str | None:
+        text = super().write_block(block)
+        if text and self.opening is None and "TapeMark" not in block.sections:
+            self._lines_before = True
+        return text
+
     def structure_block(self, block: Block) -> str | None:
         sections = block.sections
         if self._body is not None and ("TapeMark" in sections or "ProgramStart" in sections):
             ended = self._end_body()
             return ended + (self.write_block(block) or "")
         if "TapeMark" in sections:
-            if self.opening is False and not self._ended:
+            if (self.opening is False or self.opening is None and self._lines_before) and not self._ended:
                 return self._lone_tape_mark(block)
             self._closed = self.opening is True  # a '%' after the opening one
         text = super().structure_block(block)
