@@ -30,7 +30,8 @@ from . import Case
 KIND = "malformed input"
 EXAMPLES = Path(__file__).resolve().parents[3] / "examples"
 _FOLDERS = {"fagor": ["fagor"], "fanuc": ["fanuc", "fanuc-lathe"], "gsk": ["gsk"], "isg": ["isg"],
-            "linuxcnc": ["linuxcnc"], "grbl": ["linuxcnc"], "grblhal": ["linuxcnc"], "mach3": ["linuxcnc"]}
+            "linuxcnc": ["linuxcnc"], "grbl": ["linuxcnc"], "grblhal": ["linuxcnc"], "mach3": ["linuxcnc"],
+            "siemens": ["siemens"]}
 """Where each reader's seeds come from (grbl, grblHAL and Mach3 read RS274/NGC too: LinuxCNC's examples)."""
 HOSTILE = list("[]()#=*/;%<>\"'$@:?{}!&|^~\\,.-+eE0123456789GMNOPXYZIJKRFSTHDLQ \t") + [
     "\x00", "\r", "\ufeff", "é", "\u2212", "\x1a", "\x7f", "\u00a0"]
@@ -40,7 +41,7 @@ NUMBERS = ["1e999", "9" * 400, "-0", ".", "-.", "+", "1.2.3", "0x10", "1e-400", 
 
 def seeds(dialect: str) -> list[str]:
     return sorted(str(p) for folder in _FOLDERS[dialect] for p in (EXAMPLES / folder).glob("*")
-                  if p.suffix in (".nc", ".ngc"))
+                  if p.suffix in (".nc", ".ngc", ".mpf"))
 
 
 @st.composite
