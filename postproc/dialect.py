@@ -170,10 +170,6 @@ class Dialect:
     """Variables, expressions and control flow (loops, jumps, subprograms) can be written: a program that
     computes is translated symbolically when every construct has a spelling here, else flattened (its
     evaluated motion). Without it every such program reaches this target flattened."""
-    NUMBERED_SUBPROGRAMS: ClassVar[bool] = True
-    """With ``PROGRAMS``: a numbered subprogram defined after the main program's end (Fanuc ``O2000`` ..
-    ``M99``) is read as a definition; False: the target reads only its own form (grblHAL's ``o100 sub``), so
-    such a definition would be live code after the end (``postproc.lowering.program_end``)."""
     START_RETURN_LEVEL: ClassVar[str] = "initial"
     """The canned-cycle return level in force at program start ("initial": G98, "r": G99), which a cycle
     that programs none returns to (``postproc.rs274.return_level`` writes it where a source assumed the

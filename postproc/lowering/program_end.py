@@ -4,7 +4,7 @@ A controller that reads a whole file stops at the end; one that is streamed to (
 comes next. So when translating to another dialect, the blocks after the end are written as comments
 (with one warning), except subprogram definitions (a Fanuc ``O2000`` ... ``M99``, a LinuxCNC
 ``o<name> sub`` ... ``endsub``) when the target runs subprograms itself (``Dialect.PROGRAMS``) and reads
-that form of definition (``Dialect.NUMBERED_SUBPROGRAMS``: grblHAL reads no ``O2000``).
+that form of definition (``comment_numbered_subs_after_end``: grblHAL reads no ``O2000``).
 Back to the same dialect nothing changes: the target reads the end as the source does.
 
 ``EndTracker`` is the one rule, shared by the ``comment_after_end`` lowering step and the simulator
@@ -77,7 +77,16 @@ def comment_after_end(blocks: Iterator[Block], ctx: Context, target: type[Dialec
     """Lowering step (see the module docstring)."""
     if target.NAME == ctx.dialect:
         return blocks
-    return _comment_after_end(blocks, ctx, target.PROGRAMS, target.NUMBERED_SUBPROGRAMS)
+    return _comment_after_end(blocks, ctx, target.PROGRAMS, True)
+
+
+def comment_numbered_subs_after_end(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """Lowering step for a target that reads only its own form of subprogram (grblHAL's ``o100 sub``): a
+    numbered definition (``O2000`` .. ``M99``) still after the end once the target's own steps ran (none
+    called it) is written as comments, as any other code there."""
+    if target.NAME == ctx.dialect:
+        return blocks
+    return _comment_after_end(blocks, ctx, target.PROGRAMS, False)
 
 
 def _comment_after_end(blocks: Iterator[Block], ctx: Context, keep_subs: bool,

@@ -41,6 +41,7 @@ from postproc.comments import CommentSyntax
 from postproc.dialect import Dialect, Lazy, Reader, ResolvedCycle
 from postproc.grbl_family.dialect import GrblFamily
 from postproc.hookspecs import hookimpl
+from postproc.lowering.program_end import comment_numbered_subs_after_end
 from postproc.output.line_format import LineRule
 from postproc.output.writer_base import Writer
 from postproc.rs274.cycle_words import rs274_cycle_words
@@ -116,11 +117,11 @@ class Grblhal(GrblFamily):
     """M7 runs only with a driver that has mist coolant [V: gcode.c, ``hal.coolant_cap.mist``]: a set-up says
     ``<Controller mistCoolant="true">`` for such a build."""
     LOWERING = (write_tool_lengths, resolve_cutter_compensation, close_full_circles, cancel_cycles_alone,
-                stops_after_motion, subprograms_as_subs)
+                stops_after_motion, subprograms_as_subs, comment_numbered_subs_after_end)
     """Rewrites into what grblHAL runs: a G43 H as ``G43.1 Z<length>`` where the build has no tool table
     (``postproc.grbl_family.lengths``); G41/G42 as the compensated path, where the source's rules are modelled;
     a full circle with an end point in its plane (grbl's arc rules, ``postproc.rs274.lean_controller``); a cycle
-    cancel beside an axis command in a block of its own (``cancels``: it is written as a bare G0); a moving block's spindle stop and coolant off after it (``postproc.rs274.order_of_execution``); ``M98`` subprograms as o-word subs written before the first call, on a build with expressions (``subprograms``). Not grbl's
+    cancel beside an axis command in a block of its own (``cancels``: it is written as a bare G0); a moving block's spindle stop and coolant off after it (``postproc.rs274.order_of_execution``); ``M98`` subprograms as o-word subs written before the first call, on a build with expressions (``subprograms``); a numbered definition no call made a sub, left after the end, as comments (grblHAL reads only ``o<n> sub`` [V: ngc_flowctrl.c]: it was live code after the end). Not grbl's
     G49 before motion: grblHAL's G49 is no axis command [V: gcode.c, "changed to match LinuxCNC behaviour in
     build 20210513"], nor its tool change pause (M6 exists)."""
     PATH_CONTROL = "cutting"
@@ -136,10 +137,6 @@ class Grblhal(GrblFamily):
     """Parameters, expressions and o-word conditions and loops, on a build with them (``<Controller
     expressions="true">``: ``expressions``); on any other the writer refuses every statement, so a program
     that computes reaches grblHAL flattened."""
-    NUMBERED_SUBPROGRAMS = False
-    """[V] grblHAL ``ngc_flowctrl.c``: subroutines are ``o<n> sub`` .. ``endsub`` only; a Fanuc ``O2000`` ..
-    ``M99`` left after the end would be live code (the calls made of it are written as o-word subs by
-    ``subprograms``)."""
     TAPE_MARKS = False
     """``%`` is no word of grblHAL's parser: written as a comment."""
     COMMENTS = Lazy[CommentSyntax](".text:COMMENTS")
