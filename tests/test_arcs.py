@@ -317,12 +317,13 @@ def test_under_warn_a_refused_arc_is_written_as_it_was() -> None:
 
 @st.composite
 def s_curves(draw: st.DrawFn) -> str:
-    """Incremental (G91) arcs turning one way then the other, each tangent to the one before (an S), then a
-    line tangent to the last: the last chord of one arc and the next move are nearly in line."""
+    """A line, then incremental (G91) arcs turning one way then the other, each tangent to the move before
+    (an S), then a line tangent to the last: a chord at either end of an arc and the move next to it are
+    nearly in line."""
     inch = draw(st.booleans())
-    lines = ["G20" if inch else "G21", "G90 G17 G94 G0 X0 Y0 Z0", "G91 G1 X0 Y0 F100"]
     heading = draw(st.floats(0.0, 2.0 * math.pi))
-    x = y = 0.0
+    x, y = (round(draw(st.floats(0.05, 5.0)) * f(heading), 4) for f in (math.cos, math.sin))
+    lines = ["G20" if inch else "G21", "G90 G17 G94 G0 X0 Y0 Z0", f"G91 G1 X{x:.4f} Y{y:.4f} F100"]
     ccw = draw(st.booleans())
     for _ in range(draw(st.integers(2, 3))):
         r = draw(st.floats(0.5, 8.0))
@@ -342,12 +343,14 @@ def s_curves(draw: st.DrawFn) -> str:
 
 
 @settings(max_examples=40, deadline=None)
-@given(s_curves(), st.sampled_from(["lines:0.001", "lines:0.0005"]), st.sampled_from(["grbl", "fanuc", "linuxcnc"]))
+@given(s_curves(), st.sampled_from(["lines:0.001", "lines:0.0005", "lines:0.0001"]),
+       st.sampled_from(["grbl", "fanuc", "linuxcnc"]))
 def test_verify_follows_chords_merged_across_an_arcs_end(program: str, arcs: str, target: str) -> None:
     """verify merges straight moves within half its tolerance of one line: at an S's turn (or into a tangent
-    line) the last chord of an arc and the next move merge into one run, which verify's chord check cuts at
-    the arc's end again (it reported "OUT's straight moves run past the end of IN's arc": the fuzz's known
-    defect, put down to the increments' rounding, which it was not)."""
+    line) the last chord of an arc and the next move merge into one run, and so do a line and the first
+    chord of the arc it runs into; verify's chord check cuts the run at the arc's (the line's) end again.
+    Before, it reported "OUT's straight moves run past the end of IN's arc" (the fuzz's known defect, put
+    down to the increments' rounding, which it was not) or the line's end a chord's length off."""
     out = _translate(program, arcs, target=target)
     tolerance = float(arcs.partition(":")[2])
     for verify_tolerance in (0.001, 0.002, 0.005):

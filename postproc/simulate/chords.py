@@ -8,8 +8,9 @@ and together they end where the arc ends, at its feed.
 verify merges OUT's straight feeds that continue one line (within half its tolerance) before they come
 here, so a run may go on through the arc's end: where an arc turns into the next one the other way
 (an S), or into a tangent line, the last chord and the next move are nearly in line, and the finer the
-chords the more certainly they merge. Such a run is cut where it passes the arc's end; its rest goes
-back to OUT's stream for IN's next move.
+chords the more certainly they merge; so do a line and the first chord of an arc it runs into. Such a
+run is cut where it passes the arc's end (or the line's); its rest goes back to OUT's stream for IN's
+next move.
 """
 
 from __future__ import annotations
@@ -46,9 +47,14 @@ def pair_with_chords(ins: Iterable[Item], outs: Iterable[Item], report: Report) 
     rest = _Pushback(outs)
     for a in ins:
         b = next(rest, None)
-        if (report.mismatch is None and isinstance(a, Move) and a.centre is not None and isinstance(b, Move)
-                and b.kind == "feed"):
-            b = _chords(a, b, rest, report)
+        if report.mismatch is None and isinstance(a, Move) and isinstance(b, Move) and b.kind == "feed":
+            if a.centre is not None:
+                b = _chords(a, b, rest, report)
+            elif a.kind == "feed":
+                cut = _through(b.start, b.end, a.end, report.tolerance + 1e-9)
+                if cut is not None:  # a line into an arc, merged with the arc's first chord
+                    b, tail = _cut(b, cut)
+                    rest.push(tail)
         yield a, b
     for b in rest:
         yield None, b
