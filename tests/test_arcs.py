@@ -362,7 +362,8 @@ def test_verify_follows_chords_merged_across_an_arcs_end(program: str, arcs: str
 def test_the_fuzz_case_of_chords_past_an_arcs_end() -> None:
     """The program options fuzz's case (Fanuc to grbl): a long G3 R arc, then a long G2 R arc, tangent at the
     turn; the last chord of the first (OUT:177) merged with the first of the second (OUT:179)."""
-    program = "G21 G17 G90 G94\nG0 X0. Y0. Z10.\nG91 G3 X11. Y11. R-11. F90.\nG90\nG91 G2 X7.75 Y7.75 R-7.75\nG90\nM30\n"
+    program = ("G21 G17 G90 G94\nG0 X0. Y0. Z10.\nG91 G3 X11. Y11. R-11. F90.\nG90\nG91 G2 X7.75 Y7.75 R-7.75\n"
+               "G90\nM30\n")
     out = _translate(program, "lines:0.001", source="fanuc", target="grbl")
     report = verify_lines(io.StringIO(program), io.StringIO(out), file_in="a", file_out="b", source="fanuc",
                           target="grbl", tolerance=0.002, chord_tolerance=0.001)
