@@ -368,3 +368,19 @@ def test_the_fuzz_case_of_chords_past_an_arcs_end() -> None:
     report = verify_lines(io.StringIO(program), io.StringIO(out), file_in="a", file_out="b", source="fanuc",
                           target="grbl", tolerance=0.002, chord_tolerance=0.001)
     assert report.ok and report.mismatch is None, report.summary()
+
+
+def test_a_run_that_ends_within_the_tolerance_of_the_line_is_not_cut() -> None:
+    """A line's end, rotated by the transform, lies 1.5e-7 mm before where OUT writes it: not a run past the
+    line's end to cut (a first version of the cut paired the nanometre left over with the circle after it)."""
+    from postproc.transforms.spec import parse_transform
+    program = ("G21 G17 G90 G94\nG0 X0. Y0. Z10.\nG1 X13.75 Y-40. Z8. F200.\nG91 G3 X0. I-6.5 J13.75 F100.\n"
+               "G90 G0 Z10.\nM30\n")
+    transform = parse_transform("rotate 12.5 about 10,5")
+    out = io.StringIO()
+    translate(io.StringIO(program), out, file="t.ngc", source="linuxcnc", target="fanuc", transform=transform,
+              arcs=parse_arc_option("lines:0.001"))
+    report = verify_lines(io.StringIO(program), io.StringIO(out.getvalue()), file_in="a", file_out="b",
+                          source="linuxcnc", target="fanuc", tolerance=0.002, transform=transform,
+                          chord_tolerance=0.001)
+    assert report.ok, report.summary()

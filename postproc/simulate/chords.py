@@ -78,14 +78,15 @@ class _Pushback:
 
 
 def _through(s: dict[str, float], e: dict[str, float], point: dict[str, float], near: float) -> dict[str, float] | None:
-    """The point of the straight move ``s``-``e`` strictly inside it nearest ``point``, when within ``near``."""
+    """The point of the straight move ``s``-``e`` nearest ``point``, when within ``near`` of it and more than
+    ``near`` before ``e`` (a move that ends within ``near`` of ``point`` ends there, within the tolerance)."""
     keys = sorted(set(s) | set(e) | set(point))
     d = [e.get(k, 0.0) - s.get(k, 0.0) for k in keys]
     length2 = sum(v * v for v in d)
     if length2 == 0.0:
         return None
     u = sum((point.get(k, 0.0) - s.get(k, 0.0)) * v for k, v in zip(keys, d)) / length2
-    if not 1e-9 < u < 1.0 - 1e-9:
+    if u <= 1e-9 or (1.0 - u) * math.sqrt(length2) <= near:
         return None
     cut = {k: s.get(k, 0.0) + u * v for k, v in zip(keys, d)}
     return cut if math.dist([cut[k] for k in keys], [point.get(k, 0.0) for k in keys]) <= near else None
