@@ -4,6 +4,13 @@ arithmetic: every chord end lies on the arc (the radius interpolated along it, a
 an arc whose end radius differs), every chord's middle lies within TOL of it, the axes outside the
 plane move in proportion to the angle (a helix), each chord turns the arc's way by at most half a turn,
 and together they end where the arc ends, at its feed.
+
+verify merges OUT's straight feeds that continue one line (within half its tolerance) before they come
+here, so a run may go on through the arc's end: where an arc turns into the next one the other way
+(an S), or into a tangent line, the last chord and the next move are nearly in line, and the finer the
+chords the more certainly they merge; so do a line and the first chord of an arc it runs into. Such a
+run is cut where it passes the arc's end (or the line's); its rest goes back to OUT's stream for IN's
+next move.
 """
 
 from __future__ import annotations
@@ -37,18 +44,64 @@ def pair_with_chords(ins: Iterable[Item], outs: Iterable[Item], report: Report) 
     if report.chord_tolerance is None:
         yield from zip_longest(ins, outs)
         return
-    rest = iter(outs)
+    rest = _Pushback(outs)
     for a in ins:
         b = next(rest, None)
-        if (report.mismatch is None and isinstance(a, Move) and a.centre is not None and isinstance(b, Move)
-                and b.kind == "feed"):
-            b = _chords(a, b, rest, report)
+        if report.mismatch is None and isinstance(a, Move) and isinstance(b, Move) and b.kind == "feed":
+            if a.centre is not None:
+                b = _chords(a, b, rest, report)
+            elif a.kind == "feed":
+                cut = _through(b.start, b.end, a.end, report.tolerance + 1e-9)
+                if cut is not None:  # a line into an arc, merged with the arc's first chord
+                    b, tail = _cut(b, cut)
+                    rest.push(tail)
         yield a, b
     for b in rest:
         yield None, b
 
 
-def _chords(arc: Move, first: Move, rest: Iterator[Item], report: Report) -> Move:
+class _Pushback:
+    """OUT's items, with room to put one back (the rest of a run cut at an arc's end)."""
+
+    def __init__(self, items: Iterable[Item]) -> None:
+        self.items = iter(items)
+        self.back: list[Item] = []
+
+    def __iter__(self) -> "_Pushback":
+        return self
+
+    def __next__(self) -> Item:
+        return self.back.pop() if self.back else next(self.items)
+
+    def push(self, item: Item) -> None:
+        self.back.append(item)
+
+
+def _through(s: dict[str, float], e: dict[str, float], point: dict[str, float], near: float) -> dict[str, float] | None:
+    """The point of the straight move ``s``-``e`` nearest ``point``, when within ``near`` of it and more than
+    ``near`` before ``e`` (a move that ends within ``near`` of ``point`` ends there, within the tolerance)."""
+    keys = sorted(set(s) | set(e) | set(point))
+    d = [e.get(k, 0.0) - s.get(k, 0.0) for k in keys]
+    length2 = sum(v * v for v in d)
+    if length2 == 0.0:
+        return None
+    u = sum((point.get(k, 0.0) - s.get(k, 0.0)) * v for k, v in zip(keys, d)) / length2
+    if u <= 1e-9 or (1.0 - u) * math.sqrt(length2) <= near:
+        return None
+    cut = {k: s.get(k, 0.0) + u * v for k, v in zip(keys, d)}
+    return cut if math.dist([cut[k] for k in keys], [point.get(k, 0.0) for k in keys]) <= near else None
+
+
+def _cut(chord: Move, at: dict[str, float]) -> tuple[Move, Move]:
+    """A straight run as two: up to ``at`` (a point on it) and from there on."""
+    head = Move(chord.kind, chord.start, at, chord.f, chord.first_line, chord.last_line, chord.direction,
+                length=math.dist([at.get(k, 0.0) for k in at], [chord.start.get(k, 0.0) for k in at]))
+    tail = Move(chord.kind, at, chord.end, chord.f, chord.last_line, chord.last_line, chord.direction,
+                length=math.dist([at.get(k, 0.0) for k in at], [chord.end.get(k, 0.0) for k in at]))
+    return head, tail
+
+
+def _chords(arc: Move, first: Move, rest: _Pushback, report: Report) -> Move:
     i, j, _ = PLANE_INDEX[arc.plane or "XY"]
     pi, pj = "xyz"[i], "xyz"[j]
     c = arc.centre
@@ -73,6 +126,13 @@ def _chords(arc: Move, first: Move, rest: Iterator[Item], report: Report) -> Mov
             problem = f"IN's arc feeds at F{arc.f:g}, OUT's line at F{chord.f:g}"
             break
         s, e = chord.start, chord.end
+        cut = _through(s, e, arc.end, near)
+        if cut is not None:
+            to_cut = (turn * (angle(cut) - angle(s))) % (2.0 * math.pi)
+            if 0.0 < to_cut <= math.pi + 1e-12 and swept + to_cut >= arc.sweep - min(math.pi / 2.0, arc.sweep / 2.0):
+                chord, tail = _cut(chord, cut)  # the run goes on past the arc's end: its rest is OUT's next move
+                rest.push(tail)
+                e = cut
         step = (turn * (angle(e) - angle(s))) % (2.0 * math.pi)
         if step == 0.0 or step > math.pi + 1e-12:
             problem = "OUT's straight move does not turn the arc's way"

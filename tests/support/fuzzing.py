@@ -83,11 +83,6 @@ KNOWN_DEFECTS: list[tuple[str, str | None, re.Pattern[str]]] = [
      re.compile(r"^translated, but verify fails: in\.nc:\d+:\d+: error: G[\d.]+ \((spindle-synchronised motion|"
                 r"constant surface speed|spindle speed in rpm|lathe radius mode|lathe diameter mode|"
                 r"dynamic cutter compensation (left|right))\) cannot be simulated")),
-    ("--arcs lines:0.001 on incremental (G91) arcs, mm or inch, with or without --transform: verify finds the "
-     "chords (written as rounded increments) running past the end of the arc; lines:0.01 passes (found by the "
-     "program options fuzz; not fixed: likely the increments' rounding adding up over ~80 chords)", None,
-     re.compile(r"^translated, but verify says: .*structure differs\nchords at most .*--arcs lines:.*\nfirst "
-                r"difference at IN:\d+ / OUT:\d+: OUT's straight moves run past the end of IN's arc")),
     ("--on-unsupported warn comments out a move (a lathe G32 thread towards grbl): the next arc then starts "
      "elsewhere, off its circle, and grbl refuses it (error 33/34) (found by the lathe threading fuzz)", None,
      re.compile(r"^the grbl(hal)? (controller|reader) refuses the grbl(hal)? output: [^\n]*\b(arc|circle)\b(?s:.*)"
