@@ -74,12 +74,16 @@ class _LineFeeds:
     only, so a CR-only file is one long line it refuses ("Command too long") [V: rs274 2.9, found by make
     fuzz]; CR LF it reads."""
 
-    __slots__ = ("out",)
+    __slots__ = ("out", "wrote")
 
     def __init__(self, out: TextIO) -> None:
         self.out = out
+        self.wrote = False
+        """Text was written: a '%' now is not on the file's first line."""
 
     def write(self, text: str) -> int:
+        if text:
+            self.wrote = True
         return self.out.write(_LONE_CR.sub("\n", text) if "\r" in text else text)
 
 
@@ -127,10 +131,11 @@ class LinuxcncWriter(WordWriter):
         """An orientation split's part is being written: it is one line (``split_block``)."""
         self._closed = False
         """A '%' closed the program opened with one (rs274 then needs no M2/M30)."""
-        self._lines_before = False
-        """A line (a comment) was written before any '%': rs274 takes a '%' as the opening one only on the
-        file's first line, and refuses it anywhere else ("Bad character '%' used") [V: rs274 2.9, found
-        by make fuzz]."""
+        self._feeds: _LineFeeds | None = None
+        """The output (``write``); once it ``wrote`` a line (a comment) before any '%', a '%' is no opening
+        one: rs274 takes a '%' as the opening one only on the file's first line, and refuses it anywhere
+        else ("Bad character '%' used") [V: rs274 2.9, found by make fuzz]. Followed on the output, not in
+        ``write_block``, which the straight lane of plain blocks needs unchanged (``postproc.fast.lane``)."""
         self.names = SubprogramNames(NAMES)
         """Another dialect's subprograms: their o-word names and how each is called."""
         self._body: str | None = None
@@ -359,13 +364,8 @@ class LinuxcncWriter(WordWriter):
                              block)
 
     def write(self, blocks: Iterable[Block], out: TextIO) -> None:
-        super().write(blocks, cast(TextIO, _LineFeeds(out)))
-
-    def write_block(self, block: Block) -> str | None:
-        text = super().write_block(block)
-        if text and self.opening is None and "TapeMark" not in block.sections:
-            self._lines_before = True
-        return text
+        self._feeds = _LineFeeds(out)
+        super().write(blocks, cast(TextIO, self._feeds))
 
     def structure_block(self, block: Block) -> str | None:
         sections = block.sections
@@ -373,7 +373,8 @@ class LinuxcncWriter(WordWriter):
             ended = self._end_body()
             return ended + (self.write_block(block) or "")
         if "TapeMark" in sections:
-            if (self.opening is False or self.opening is None and self._lines_before) and not self._ended:
+            lines_before = self._feeds is not None and self._feeds.wrote
+            if (self.opening is False or self.opening is None and lines_before) and not self._ended:
                 return self._lone_tape_mark(block)
             self._closed = self.opening is True  # a '%' after the opening one
         text = super().structure_block(block)
