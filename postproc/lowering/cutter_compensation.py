@@ -398,8 +398,24 @@ class _Resolver:
 
     def _move(self, block: Block, motion: Motion) -> None:
         if "MachineCoordinates" in block.sections or motion.mode in ("home", "home2"):
-            raise ProgramError("a move in machine coordinates or a reference return with cutter compensation on "
-                               "cannot be run")
+            if self.cutter.side is not None or self.cutter.queue:
+                raise ProgramError("a move in machine coordinates or a reference return with cutter compensation "
+                                   "on cannot be run")
+            # the first move after G40 (the exit move) in machine coordinates: [V] rs274 (LinuxCNC's
+            # mmount.ngc, G40 then G53 G0 Z0) runs it straight from the compensated end to the programmed
+            # point, X and Y included; written as it is, it keeps the compensated X and Y, so it passes
+            # only where they are the programmed ones (a machine position for them needs the work offset)
+            u, v = self._in_plane(self.pos)
+            if u is None or v is None or math.dist((u, v), self.at) > 1e-9:
+                a1, a2, _ = self.cutter.axes
+                raise UnsupportedError(f"a move in machine coordinates (G53) or a reference return as the first "
+                                       f"move after G40 cannot be resolved: it also takes {a1} and {a2} from the "
+                                       "compensated point back to the programmed one, which needs the work offset "
+                                       "(program a move in work coordinates after G40 first)")
+            self.cutter.arc_banned = False
+            self._track(block)
+            self.out.append(block)
+            return
         kind = _SEGMENT_KIND.get(motion.mode or "")
         if kind is None:
             raise UnsupportedError(f"motion '{motion.mode}' with cutter compensation on cannot be resolved")
