@@ -132,6 +132,10 @@ class Dialect:
     """The controller writes a rigid tap as one spindle-synchronised move (LinuxCNC's G33.1,
     ``postproc.synchronised_tap``): a rigid tap cycle of another family is written with it; without it such
     a tap is refused."""
+    TAP_STROKES: ClassVar[bool] = False
+    """The controller programs a rigid tap as two synchronised strokes, in and out with the spindle reversed
+    (ISG's ``G331``/``G332``): a synchronised tap of another family is written as the two strokes
+    (``postproc.cycles.rigid_tap_lowering``), and only such a controller writes a lone stroke."""
     RIGID_TAP_CODE: ClassVar[str] = ""
     """The machine code that makes the tap cycles after it rigid (Fanuc ``M29 S..``): a synchronised tap of
     another family is written as that code and a tap cycle (``postproc.synchronised_tap``); '' for none."""

@@ -50,18 +50,23 @@ class RigidTap(Section):
     as every item there); ``pitch`` is the distance per spindle revolution in program units; ``dwell`` the
     seconds the tool waits at the end point before reversing (Fanuc's P; None: none); ``speedup`` the
     spindle speed factor of the way out (LinuxCNC's I; None: the same speed). Neither changes a point.
+    ``stroke`` is None for the whole tap (in and back); "in" or "out" for one stroke of a controller that
+    programs them apart (ISG's ``G331`` in, ``G332`` out with the spindle reversed: ``Dialect.TAP_STROKES``),
+    a move to ``axes`` that does change the point; the sign of its ``pitch`` is then the thread's hand
+    (negative: left-hand, [V] TF5200 "Tapping (G331/G332)").
     """
 
     XNAME = "RigidTap"
     KEY = "RigidTap"
-    __slots__ = ("axes", "pitch", "dwell", "speedup")
+    __slots__ = ("axes", "pitch", "dwell", "speedup", "stroke")
 
     def __init__(self, axes: dict[str, float | Expr], pitch: float | Expr, dwell: float | None = None,
-                 speedup: float | None = None) -> None:
+                 speedup: float | None = None, stroke: str | None = None) -> None:
         self.axes = axes
         self.pitch = pitch
         self.dwell = dwell
         self.speedup = speedup
+        self.stroke = stroke
 
     @classmethod
     def from_xml(cls, el: etree._Element) -> "RigidTap":
@@ -76,7 +81,8 @@ class RigidTap(Section):
         if pitch is None:
             raise ValueError("<RigidTap> needs its pitch")
         dwell, speedup = el.get("dwell"), el.get("speedup")
-        return cls(axes, pitch, None if dwell is None else float(dwell), None if speedup is None else float(speedup))
+        return cls(axes, pitch, None if dwell is None else float(dwell), None if speedup is None else float(speedup),
+                   el.get("stroke"))
 
     def make_xml_source(self, base_dir: str = ".", rel_file: str = "", exhibition_only: bool = False) -> etree._Element:
         etree = lxml_etree()
@@ -89,14 +95,17 @@ class RigidTap(Section):
             el.set("dwell", repr(float(self.dwell)))
         if self.speedup is not None:
             el.set("speedup", repr(float(self.speedup)))
+        if self.stroke is not None:
+            el.set("stroke", self.stroke)
         axes_to_xml(el, "Axes", self.axes)
         return el
 
     def _key(self) -> tuple[Any, ...]:
-        return (self.axes, self.pitch, self.dwell, self.speedup)
+        return (self.axes, self.pitch, self.dwell, self.speedup, self.stroke)
 
     def __repr__(self) -> str:
-        return f"RigidTap({self.axes!r}, pitch={self.pitch!r}, dwell={self.dwell!r}, speedup={self.speedup!r})"
+        return (f"RigidTap({self.axes!r}, pitch={self.pitch!r}, dwell={self.dwell!r}, speedup={self.speedup!r}, "
+                f"stroke={self.stroke!r})")
 
 
 def rigid_taps(block: Block) -> list[RigidTap]:

@@ -51,6 +51,9 @@ class Isg(Dialect):
     """``%1001`` names the main program (``%`` is no tape mark here)."""
     SPINDLE_ORIENTATION = True
     """M19 to the machine's angle [?]."""
+    TAP_STROKES = True
+    """A rigid tap is the strokes ``G331`` (in) and ``G332`` (out, the spindle reversed) [V: TF5200 "Tapping
+    (G331/G332)"]: a synchronised tap of another family is written as them (``taps``)."""
     CUTTER_COMPENSATION = True
     """G40/G41/G42."""
     TOOL_LENGTH_OFFSET = True

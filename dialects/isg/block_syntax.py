@@ -18,6 +18,7 @@ from postproc.rs274.block_syntax import WordBlockSyntax
 from postproc.rs274.codes import CodeTable
 
 from .codes import CODES
+from .taps import MODES, read_tap_stroke
 
 
 class IsgBlockSyntax(WordBlockSyntax):
@@ -35,6 +36,9 @@ class IsgBlockSyntax(WordBlockSyntax):
         super().g_sections(block, ctx, codes, values, used, cycle_block)
         read_tool_data(block, ctx, values, used, toggles=False, first=0)
         motion = block.sections.get("Motion")
+        if isinstance(motion, Motion) and motion.mode in MODES:
+            read_tap_stroke(block, ctx, motion, values, used)
+            return
         if "MachineCoordinates" in block.sections and isinstance(motion, Motion):
             mode = ctx.state.motion  # ``#SUPPRESS OFFSETS`` moves in the motion mode in force
             if mode not in ("rapid", "linear"):

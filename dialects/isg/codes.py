@@ -16,6 +16,7 @@ control are where the table matters (DIALECTS.md 1.3, 3.3):
   block (Fanuc ``G09``), ``G360`` selects it (Fanuc ``G61``), ``G359`` deselects it (Fanuc ``G64``).
 * ``G53`` deselects the zero offsets (modal), not Fanuc's one-block move in machine coordinates: kept
   verbatim. A move in machine coordinates is ``#SUPPRESS OFFSETS`` (``writer``).
+* ``G331``/``G332`` tap in and out spindle-synchronised (``taps``) [V: TF5200 "Tapping (G331/G332)"].
 * ``M19`` orients the spindle to the machine's angle (the set-up's ``orientAngle``) [?: a DIN M code
   whose ISG meaning we did not read].
 * ``M17``/``M29`` (subroutine end) are read by the reader (``reader.RETURN_CODES``), not here.
@@ -51,6 +52,8 @@ ROWS = (
     ("G94", "05", "feed_mode", "per_min"),
     ("G95", "05", "feed_mode", "per_rev"),
     ("G162", "16", "arc_centre", "relative"),
+    ("G331", "01", "motion", "tap_in"),
+    ("G332", "01", "motion", "tap_out"),
     ("G359", "15", "path", "cutting"),
     ("G360", "15", "path", "exact_stop"),
     ("M00", "", "program", "stop"),

@@ -212,6 +212,20 @@ class IsgWriter(WordWriter):
             return ["LL " + self.local_name(call.name, block)]
         return ["L " + call.name]
 
+    def rigid_tap_words(self, s: Any, block: Block) -> list[str]:
+        """A rigid tap stroke, ``G331 Z.. K..`` in or ``G332 Z.. K..`` out (``taps``); a whole tap arrives
+        split into strokes (``postproc.cycles.rigid_tap_lowering.as_strokes``), the pitch signed by the
+        thread's hand."""
+        if s.stroke is None or s.dwell or s.speedup is not None:
+            self.unsupported("a rigid tap as one move in and out (ISG taps by the strokes G331/G332)", block)
+        words = [self.code("motion", "tap_in" if s.stroke == "in" else "tap_out", "a rigid tap stroke", block)]
+        incremental = self.modal.distance == "incremental"
+        for axis, value in s.axes.items():
+            words.append(axis + (self.expression(value, block) if isinstance(value, Expr)
+                                 else self.position(axis, value, incremental)))
+        words.append("K" + self.length(s.pitch, block, "K"))
+        return words
+
     def return_level_words(self, s: Any, block: Block) -> list[str]:
         """Fanuc's G98/G99 steer canned cycles, which reach ISG expanded: nothing to write."""
         return []

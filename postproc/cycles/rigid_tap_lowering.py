@@ -11,8 +11,8 @@ from ..context import Context
 from ..dialect import Dialect
 from ..errors import PostprocError, ProgramError, UnsupportedError
 from ..expr import Expr
-from ..ir import (Block, Comments, CompoundMotion, CycleCancel, DistanceMode, Feed, MachineFunction, ReturnLevel,
-                  SpindleSpeed)
+from ..ir import (Block, Comments, CompoundMotion, CycleCancel, DistanceMode, Feed, MachineFunction, Motion,
+                  ReturnLevel, SpindleControl, SpindleSpeed)
 from ..state import PLANE_AXES
 from ..lowering.machine_functions import RIGID_TAP
 from ..synchronised_tap import RigidTap, rigid_taps
@@ -44,6 +44,13 @@ def _resolve(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> It
         if not taps:
             yield block
             continue
+        own = sections.get("RigidTap")
+        if target.TAP_STROKES and isinstance(own, RigidTap) and own.stroke is None:
+            try:
+                yield from as_strokes(block, ctx, target, own)
+            except PostprocError as err:
+                ctx.diagnostics.error(err)
+            continue
         if cycle_code and not synchronises and "RigidTap" in sections:
             try:
                 yield from as_tap_cycle(block, ctx, target, sections["RigidTap"])  # type: ignore[arg-type]
@@ -69,6 +76,10 @@ def _leave_out(block: Block, code: MachineFunction) -> None:
 
 def _refusal(taps: list[RigidTap], target: type[Dialect]) -> str | None:
     """Why ``target`` cannot run these taps exactly, or None."""
+    if any(tap.stroke is not None for tap in taps) and not target.TAP_STROKES:
+        return (f"one stroke of a rigid tap (in, or out with the spindle reversed): {target.NAME} programs a rigid "
+                "tap as one move in and out, and a stroke is not paired with its other here: refused, even with "
+                "--on-unsupported warn")
     if not target.SYNCHRONISED_TAP:
         return (f"a rigid (spindle-synchronised) tap: this translation writes no synchronised tap for {target.NAME}, "
                 "and a tap fed without the spindle in step breaks: refused, even with --on-unsupported warn")
@@ -129,6 +140,62 @@ def as_tap_cycle(block: Block, ctx: Context, target: type[Dialect], tap: RigidTa
     tail.sections = {"CycleCancel": CycleCancel()}
     if state.return_level != "r":
         tail.sections["ReturnLevel"] = ReturnLevel(state.return_level)
+    if isinstance(state.feed, (int, float)):
+        tail.sections["Feed"] = Feed(float(state.feed))
+    if incremental:
+        tail.sections["DistanceMode"] = DistanceMode("incremental")
+    yield tail
+
+
+def as_strokes(block: Block, ctx: Context, target: type[Dialect], tap: RigidTap) -> Iterator[Block]:
+    """A synchronised tap as the target's two strokes (``Dialect.TAP_STROKES``, ISG ``G331``/``G332``):
+    in to the end point with the spindle speed in force, out to the start; the sign of the pitch is the
+    spindle's direction, the thread's hand ([V] TF5200 "Tapping (G331/G332)": K negative is a left-hand
+    thread, G332 reverses the spindle itself, and M03/M04/M05 may not be programmed with G331/G332). A
+    third block deselects the strokes with G01 and says again the spindle direction and the feed in force:
+    whether the spindle turns back after G332, and which feed rate the next move has, are not confirmed
+    [?], so neither is left to the controller."""
+    state = ctx.state
+    at = ctx.at(block)
+    normal = PLANE_AXES[state.plane][2]
+    if tap.dwell or isinstance(tap.pitch, Expr) or any(isinstance(v, Expr) for v in tap.axes.values()):
+        raise UnsupportedError(f"a rigid tap with a computed word or a dwell: {target.NAME}'s strokes are not "
+                               "written for it", at)
+    if tap.speedup is not None and tap.speedup > 1.0:
+        raise UnsupportedError(f"a rigid tap whose way out is faster (by {tap.speedup:g} times): {target.NAME}'s "
+                               "retraction stroke runs at the speed of the way in", at)
+    incremental = state.distance == "incremental"
+    start = state.position.get(normal)
+    if start is None:
+        raise ProgramError(f"a rigid tap where the tool's {normal} position is unknown: {target.NAME}'s "
+                           "retraction stroke needs it (program a move to a known point first)", at)
+    for axis, value in tap.axes.items():
+        if axis != normal and (value != 0.0 if incremental else value != state.position.get(axis)):
+            raise UnsupportedError(f"a rigid tap that moves {axis} (an oblique tap): {target.NAME}'s strokes tap "
+                                   f"along {normal} only", at)
+    if normal not in tap.axes:
+        raise UnsupportedError(f"a rigid tap that does not move {normal}: {target.NAME}'s strokes tap along "
+                               f"{normal} only", at)
+    end = tap.axes[normal]
+    assert not isinstance(end, Expr)  # (refused above)
+    bottom = float(end) + (start if incremental else 0.0)
+    rpm, direction = state.spindle_rpm, state.spindle
+    if direction not in ("cw", "ccw") or not rpm:
+        raise ProgramError("a rigid tap with the spindle stopped or at no speed cannot be run", at)
+    pitch = float(tap.pitch) if direction == "cw" else -float(tap.pitch)
+    del block.sections["RigidTap"]
+    block.changed()
+    sections = block.sections
+    if incremental:
+        sections["DistanceMode"] = DistanceMode("absolute")
+    sections["RigidTap"] = RigidTap({normal: bottom}, pitch, stroke="in")
+    sections["SpindleSpeed"] = SpindleSpeed(float(rpm))
+    yield block
+    out = Block(block.line, None, block.eol or "\n")
+    out.sections = {"RigidTap": RigidTap({normal: start}, pitch, stroke="out")}
+    yield out
+    tail = Block(block.line, None, block.eol or "\n")
+    tail.sections = {"Motion": Motion("linear", {}), "SpindleControl": SpindleControl(direction)}
     if isinstance(state.feed, (int, float)):
         tail.sections["Feed"] = Feed(float(state.feed))
     if incremental:

@@ -408,10 +408,10 @@ class _Resolver:
             u, v = self._in_plane(self.pos)
             if u is None or v is None or math.dist((u, v), self.at) > 1e-9:
                 a1, a2, _ = self.cutter.axes
-                raise UnsupportedError(f"a move in machine coordinates (G53) or a reference return as the first "
-                                       f"move after G40 cannot be resolved: it also takes {a1} and {a2} from the "
-                                       "compensated point back to the programmed one, which needs the work offset "
-                                       "(program a move in work coordinates after G40 first)")
+                raise UnsupportedError(f"a move in machine coordinates or a reference return as the first move "
+                                       f"after compensation is cancelled cannot be resolved: it also takes {a1} and "
+                                       f"{a2} from the compensated point back to the programmed one, which needs the "
+                                       "work offset (program a move in work coordinates after the cancel first)")
             self.cutter.arc_banned = False
             self._track(block)
             self.out.append(block)

@@ -65,6 +65,8 @@ class Moves:
         self.spindle: str | None = None
         """Spindle direction of the last spindle event (None before the first): a tool change stops a
         turning spindle first, as a tool changer does, and stopping a stopped spindle is no event."""
+        self.after_tap: str | None = None
+        """The spindle direction before a tap's out stroke, until the next spindle code (``Simulator._restates``)."""
         self.lathe = ctx.lathe
         self.length_at_axis = ctx.length_at_axis
         """A length change keeps the machine point (``Dialect.LENGTH_AT_PROGRAMMED_AXIS``)."""

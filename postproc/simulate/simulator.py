@@ -174,7 +174,7 @@ class Simulator(Moves):
         ev: Event
         if action in ("spindle-cw", "spindle-ccw", "spindle-stop"):
             direction = action[len("spindle-"):]
-            if direction == "stop" and self.spindle == "stop":
+            if direction == "stop" and self.spindle == "stop" or self._restates(direction):
                 return
             self.spindle = direction
             ev = {"line": line, "event": "spindle", "dir": direction}
@@ -220,11 +220,19 @@ class Simulator(Moves):
 
     def spindle_event(self, line: int, direction: str, emit: Callable[[Event], None]) -> None:
         """A spindle change; stopping a stopped spindle is no event (two programs that differ only
-        there move the machine alike)."""
-        if direction == "stop" and self.spindle == "stop":
+        there move the machine alike), nor is the direction said again after a tap's out stroke."""
+        if direction == "stop" and self.spindle == "stop" or self._restates(direction):
             return
         self.spindle = direction
         emit({"line": line, "event": "spindle", "dir": direction})
+
+    def _restates(self, direction: str) -> bool:
+        """The first spindle code after a tap's out stroke (ISG ``G332``), in the direction it turned before
+        the tap: it puts the spindle back to turning as it did (the stroke reversed it; a program says the
+        direction again, ``postproc.cycles.rigid_tap_lowering.as_strokes``), so it is no change against a
+        tap that reverses back by itself (LinuxCNC ``G33.1``)."""
+        after, self.after_tap = self.after_tap, None
+        return after is not None and direction == after == self.spindle
 
     def item(self, block: Block, item: Section, emit: Callable[[Event], None]) -> None:
         """One item of a compound motion (absolute, program units)."""
@@ -338,6 +346,19 @@ class Simulator(Moves):
         end = self.target(block, tap.axes, absolute)
         if self.travel is not None:
             self.travel.line(block, start, end, self._programmed(tap.axes), self.incremental and not absolute, False)
+        if tap.stroke is not None:  # one stroke (ISG G331/G332): its pitch's sign is the thread's hand
+            hand = "cw" if pitch > 0 else "ccw"
+            if hand != self.spindle:
+                raise ProgramError(f"a {'right' if pitch > 0 else 'left'}-hand tap stroke (K{pitch:g}) with the spindle "
+                                   f"turning {'counter-' if self.spindle == 'cw' else ''}clockwise: which way the "
+                                   "spindle then turns is not modelled [?]", self._at(block, "K"))
+            self.sync = abs(pitch) * self.scale
+            try:
+                self.line_move("tap", end, block.line, emit)
+            finally:
+                self.sync = None
+            self.after_tap = self.spindle if tap.stroke == "out" else None
+            return
         self.sync = pitch * self.scale
         try:
             self.line_move("tap", end, block.line, emit)

@@ -1,0 +1,56 @@
+"""ISG's rigid tap strokes, ``G331 Z.. K.. S..`` (in) and ``G332 Z.. [K..] [S..]`` (out), read into the neutral
+``RigidTap`` with its ``stroke`` (``postproc.synchronised_tap``).
+
+[V] Beckhoff TF5200 programming manual, "Tapping (G331/G332)" (CNC build V3.1.3067.01 on): G331 taps to the
+target point in step with a position-controlled spindle, K the pitch in mm (inch) per revolution, its
+sign the thread's hand (negative: left-hand); G332 retracts to its target point, the spindle reversed by
+the control; its K is optional (the G331's applies) and must be the G331's; both are modal. The spindle
+speed word in the block is read as every S is. An axis-only block under G331/G332 is another stroke with
+the pitch in force.
+"""
+
+from __future__ import annotations
+
+from typing import Any, Final
+
+from postproc.context import Context
+from postproc.errors import ProgramError
+from postproc.expr import Expr
+from postproc.ir import Block, Motion
+from postproc.synchronised_tap import RigidTap
+
+MODES: Final = {"tap_in": "in", "tap_out": "out"}
+"""The code table's motion modes of G331/G332 -> the stroke."""
+PITCH: Final = "isg_tap_pitch"
+"""``ctx.state.extra`` key: the pitch of the last G331 (signed), for a G332 without K."""
+
+
+def read_tap_stroke(block: Block, ctx: Context, motion: Motion, values: dict[str, Any], used: set[str]) -> None:
+    """Replace the block's ``Motion`` (mode ``tap_in``/``tap_out``) by its ``RigidTap`` stroke; K is taken."""
+    stroke = MODES[str(motion.mode)]
+    code = "G331" if stroke == "in" else "G332"
+    col = ctx.column_of(block, "G")
+    del block.sections["Motion"]  # (first: a refused block leaves no motion the simulation cannot run)
+    if not motion.axes:
+        if "K" in values:
+            raise ProgramError(f"{code} with K and no axis word: the target point of the stroke is missing",
+                               ctx.at(block, col))
+        return  # the mode alone (a modal G331/G332 block without a move)
+    pitch = values.get("K")
+    if isinstance(pitch, Expr):
+        raise ProgramError(f"a computed K in {code} is not supported (write the number)",
+                           ctx.at(block, ctx.column_of(block, "K")))
+    if pitch is None:  # G332's K is optional; an axis-only block under G331 taps again with its pitch
+        pitch = ctx.state.extra.get(PITCH) if stroke == "out" or ctx.state.motion == "tap_in" else None
+        if pitch is None:
+            raise ProgramError(f"{code} needs K, the thread pitch (distance per spindle revolution)", ctx.at(block, col))
+    elif float(pitch) == 0.0:
+        raise ProgramError(f"{code} K0: the thread pitch must not be zero", ctx.at(block, ctx.column_of(block, "K")))
+    used.add("K")
+    if stroke == "in":
+        ctx.state.extra[PITCH] = float(pitch)
+    elif PITCH in ctx.state.extra and float(pitch) != ctx.state.extra[PITCH]:
+        raise ProgramError(f"G332 K{float(pitch):g}: the pitch must be the G331's (K{ctx.state.extra[PITCH]:g})",
+                           ctx.at(block, ctx.column_of(block, "K")))
+    block.add(RigidTap(dict(motion.axes), float(pitch), stroke=stroke))
+    ctx.state.motion = str(motion.mode)
