@@ -224,6 +224,9 @@ class IsgWriter(WordWriter):
             words.append(axis + (self.expression(value, block) if isinstance(value, Expr)
                                  else self.position(axis, value, incremental)))
         words.append("K" + self.length(s.pitch, block, "K"))
+        rpm = self.modal.spindle_rpm
+        if s.stroke == "in" and "SpindleSpeed" not in block.sections and isinstance(rpm, (int, float)) and rpm:
+            words.append("S" + self.speed(rpm))  # G331 names the speed it taps at [V]
         return words
 
     def return_level_words(self, s: Any, block: Block) -> list[str]:

@@ -12,7 +12,7 @@ from ..dialect import Dialect
 from ..errors import PostprocError, ProgramError, UnsupportedError
 from ..expr import Expr
 from ..ir import (Block, Comments, CompoundMotion, CycleCancel, DistanceMode, Feed, MachineFunction, Motion,
-                  ReturnLevel, SpindleControl, SpindleSpeed)
+                  ReturnLevel, Section, SpindleControl, SpindleSpeed)
 from ..state import PLANE_AXES
 from ..lowering.machine_functions import RIGID_TAP
 from ..synchronised_tap import RigidTap, rigid_taps
@@ -38,7 +38,8 @@ def _resolve(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> It
             yield block  # the common block
             continue
         code = sections.get("MachineFunction")
-        if synchronises and isinstance(code, MachineFunction) and code.action == RIGID_TAP and code.family != family:
+        if (synchronises or target.TAP_STROKES) and isinstance(code, MachineFunction) and code.action == RIGID_TAP \
+                and code.family != family:
             _leave_out(block, code)
         taps = rigid_taps(block)
         if not taps:
@@ -50,6 +51,15 @@ def _resolve(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> It
                 yield from as_strokes(block, ctx, target, own)
             except PostprocError as err:
                 ctx.diagnostics.error(err)
+            continue
+        compound = sections.get("CompoundMotion")
+        if target.TAP_STROKES and isinstance(compound, CompoundMotion) and "CannedCycle" not in sections:
+            try:
+                _strokes_in_expansion(block, ctx, target, compound)
+            except PostprocError as err:
+                ctx.diagnostics.error(err)
+                continue
+            yield block
             continue
         if cycle_code and not synchronises and "RigidTap" in sections:
             try:
@@ -179,25 +189,73 @@ def as_strokes(block: Block, ctx: Context, target: type[Dialect], tap: RigidTap)
     end = tap.axes[normal]
     assert not isinstance(end, Expr)  # (refused above)
     bottom = float(end) + (start if incremental else 0.0)
-    rpm, direction = state.spindle_rpm, state.spindle
-    if direction not in ("cw", "ccw") or not rpm:
-        raise ProgramError("a rigid tap with the spindle stopped or at no speed cannot be run", at)
-    pitch = float(tap.pitch) if direction == "cw" else -float(tap.pitch)
+    stroke_in, stroke_out, *after = _strokes(ctx, tap, normal, start, bottom, state.spindle, at)
     del block.sections["RigidTap"]
     block.changed()
     sections = block.sections
     if incremental:
         sections["DistanceMode"] = DistanceMode("absolute")
-    sections["RigidTap"] = RigidTap({normal: bottom}, pitch, stroke="in")
-    sections["SpindleSpeed"] = SpindleSpeed(float(rpm))
+    sections["RigidTap"] = stroke_in
+    sections["SpindleSpeed"] = SpindleSpeed(float(state.spindle_rpm or 0.0))
     yield block
     out = Block(block.line, None, block.eol or "\n")
-    out.sections = {"RigidTap": RigidTap({normal: start}, pitch, stroke="out")}
+    out.sections = {"RigidTap": stroke_out}
     yield out
     tail = Block(block.line, None, block.eol or "\n")
-    tail.sections = {"Motion": Motion("linear", {}), "SpindleControl": SpindleControl(direction)}
-    if isinstance(state.feed, (int, float)):
-        tail.sections["Feed"] = Feed(float(state.feed))
+    tail.sections = {item.KEY: item for item in after}
     if incremental:
         tail.sections["DistanceMode"] = DistanceMode("incremental")
     yield tail
+
+
+def _strokes(ctx: Context, tap: RigidTap, normal: str, start: float, bottom: float, direction: str | None,
+             at: object) -> list[Section]:
+    """The in and out strokes of a tap from ``start`` to ``bottom`` along ``normal`` with the spindle turning
+    in ``direction``, then what the third block says (``as_strokes``): the linear mode, the spindle
+    direction, the feed in force."""
+    state = ctx.state
+    rpm = state.spindle_rpm
+    if direction not in ("cw", "ccw") or not rpm:
+        raise ProgramError("a rigid tap with the spindle stopped or at no speed cannot be run", at)  # type: ignore[arg-type]
+    assert not isinstance(tap.pitch, Expr)
+    pitch = float(tap.pitch) if direction == "cw" else -float(tap.pitch)
+    after: list[Section] = [RigidTap({normal: bottom}, pitch, stroke="in"), RigidTap({normal: start}, pitch, stroke="out"),
+                            Motion("linear", {}), SpindleControl(direction)]
+    if isinstance(state.feed, (int, float)):
+        after.append(Feed(float(state.feed)))
+    return after
+
+
+def _strokes_in_expansion(block: Block, ctx: Context, target: type[Dialect], compound: CompoundMotion) -> None:
+    """An expanded rigid tap cycle (Fanuc ``M29`` then ``G84``): each synchronised tap among its items becomes
+    the strokes and what follows them (``_strokes``), from the level the item before it reached."""
+    if not any(isinstance(item, RigidTap) for item in compound.items):
+        return
+    state = ctx.state
+    at = ctx.at(block)
+    normal = PLANE_AXES[state.plane][2]
+    position: dict[str, float | Expr | None] = dict(state.position)
+    direction = state.spindle
+    items: list[Section] = []
+    for item in compound.items:
+        if isinstance(item, SpindleControl):
+            direction = item.direction  # (a left-hand tap cycle turns the spindle counter-clockwise first)
+        if isinstance(item, RigidTap):
+            if item.stroke is not None:
+                items.append(item)
+                continue
+            if item.dwell or isinstance(item.pitch, Expr) or any(isinstance(v, Expr) for v in item.axes.values()):
+                raise UnsupportedError(f"a rigid tap with a computed word or a dwell: {target.NAME}'s strokes are "
+                                       "not written for it", at)
+            start = position.get(normal)
+            end = item.axes.get(normal)
+            if not isinstance(start, float) or not isinstance(end, float) or set(item.axes) != {normal}:
+                raise UnsupportedError(f"a rigid tap that does not tap along {normal} alone from a known level: "
+                                       f"{target.NAME}'s strokes are not written for it", at)
+            items.extend(_strokes(ctx, item, normal, start, end, direction, at))
+            continue
+        if isinstance(item, Motion):
+            position.update(item.axes)
+        items.append(item)
+    block.sections["CompoundMotion"] = CompoundMotion(compound.term, items)
+    block.changed()

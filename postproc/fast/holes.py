@@ -23,6 +23,7 @@ from ..state import PLANE_AXES, ModalState
 from ..cycles.expansion import CycleExpansion
 from ..cycles.resolve import (DWELL_KEY, STATE_KEY, WORD_RANK, CannedCycleResolveSyntax, Failer, LazyExpansion,
                               cycle_words, drop_cycle_sections)
+from ..cycles.rigid_tap import RIGID_KEY
 from ..cycles.section import CannedCycle
 
 _NEXT_HOLE_SECTIONS: Final = frozenset(("Motion", "Sequence", "Comments"))
@@ -87,7 +88,7 @@ class NextHoleLane(HoleLane):
             plane=pattern.plane, initial=pattern.initial, r=pattern.r, bottom=pattern.bottom, top=pattern.top,
             q=pattern.q, clearance=pattern.clearance, dwell=pattern.dwell, orient=pattern.orient, feed=pattern.feed,
             repeat=1, spindle=pattern.spindle, motion=pattern.motion, start=here, position=spot, step={},
-            shift=pattern.shift, words=words,
+            shift=pattern.shift, words=words, pitch=pattern.pitch,  # a rigid tap stays rigid at every hole
         )
         fail = Failer(ctx, block, memo.code, False)
         fail.words = words
@@ -120,12 +121,14 @@ def signature(state: ModalState) -> tuple[Any, ...]:
     """Everything of the state the resolver reads to resolve a next-hole block, but where the tool is: the
     active cycle (its record of modal words is replaced, never changed in place, so the same object means
     the same words), units, plane, distance mode, feed, spindle, return level, group-01 mode, the plane the
-    cycle was commanded in and RS274's remembered tapping dwell."""
+    cycle was commanded in and RS274's remembered tapping dwell; and what a rigid tap's pitch is worked out
+    from (the rigid tapping mode, the spindle speed, the feed mode: ``postproc.cycles.rigid_tap``)."""
     active = state.cycle
     extra = state.extra
     return (active, None if active is None else active.kind, None if active is None else active.words,
             None if active is None else active.initial, state.units, state.plane, state.distance, state.feed,
-            state.spindle, state.return_level, state.motion, extra.get(STATE_KEY), extra.get(DWELL_KEY))
+            state.spindle, state.return_level, state.motion, extra.get(STATE_KEY), extra.get(DWELL_KEY),
+            extra.get(RIGID_KEY), state.spindle_rpm, state.feed_mode)
 
 
 def _next_hole_only(block: Block, plane: str) -> bool:
