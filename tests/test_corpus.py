@@ -24,8 +24,8 @@ _spec.loader.exec_module(harness)
 PROGRAMS = harness.load_manifest()
 
 KNOWN_FAILURES: dict[tuple[str, str], str] = {
-    ("linuxcnc/g10_l1_l10.ngc", ""): "G10 L1/L10 tool offsets along X and Y (and their #5401 parameters) are not "
-                                     "simulated; only Z and R are (issue 26 item 3: tapping)",
+    ("linuxcnc/g10_l1_l10.ngc", ""): "G10 L10 tool offsets along X and Y (measured where the tool stands, under a "
+                                     "G10 L2 R rotation) are not simulated; G10 L1 X/Y/Z/R and L10 Z/R are",
 }
 """(program, target or '' for the source check) -> the defect, as found by this corpus."""
 

@@ -17,7 +17,10 @@ TABLES = {"tool_length": ("length", False), "tool_length_wear": ("length", True)
           "cutter_offset": ("radius", False), "cutter_offset_wear": ("radius", True)}
 """Neutral table name -> (the register's quantity, whether it is the wear)."""
 ENTRY = "tool_entry"
-"""A whole entry of a tool table by tool number (LinuxCNC's): ``Z`` the length, ``R`` the radius."""
+"""A whole entry of a tool table by tool number (LinuxCNC's): ``Z`` the length, ``R`` the radius, ``X`` and
+``Y`` the offsets a mill's length offset applies along X and Y."""
+SIDEWAYS = ("X", "Y")
+"""The entry's offsets across the spindle axis (``ToolTable.sideways``)."""
 
 
 class ToolTable:
@@ -31,6 +34,8 @@ class ToolTable:
         """mm per set-up length unit (``<Machine units>``)."""
         self.written: dict[tuple[str, int], float] = {}
         self.wear: dict[tuple[str, int], float] = {}
+        self.across: dict[int, dict[str, float]] = {}
+        """X and Y offsets a program wrote into an entry (mm), by tool number."""
 
     def write(self, setting: DataSetting, scale: float) -> bool:
         """A programmable data input into a tool table (values in program units, ``scale`` mm per unit);
@@ -73,6 +78,15 @@ class ToolTable:
             value = setting.values.get(letter)
             if isinstance(value, (int, float)):
                 self.set(quantity, setting.index, value * scale)
+        for axis in SIDEWAYS:
+            value = setting.values.get(axis)
+            if isinstance(value, (int, float)):
+                self.across.setdefault(setting.index, {})[axis] = value * scale
+
+    def sideways(self, register: int) -> dict[str, float]:
+        """The X and Y offsets of entry ``register`` that are not zero (mm): a mill's tool length offset
+        applies them too ([V] LinuxCNC, ``postproc_linuxcnc.tool_entry``); none but what a program wrote."""
+        return {axis: value for axis, value in self.across.get(register, {}).items() if value}
 
     def set(self, quantity: str, register: int, value: float) -> None:
         """Write register ``register``'s ``quantity`` ("length" or "radius"), mm, as the program's own."""

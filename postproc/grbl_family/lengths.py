@@ -76,6 +76,10 @@ def _dynamic(block: Block, ctx: Context, table: ToolTable, offset: ToolLengthOff
     register = offset.register
     if not isinstance(register, int):
         raise UnsupportedError("a tool length offset whose register is computed (the dynamic offset needs its value)")
+    across = table.sideways(register)
+    if across:
+        raise UnsupportedError(f"a tool offset along {' and '.join(across)} (entry {register} of the tool table): "
+                               "the dynamic length offset moves the spindle axis only")
     sections = block.sections
     del sections["ToolLengthOffset"]
     block.changed()

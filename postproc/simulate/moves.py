@@ -234,6 +234,10 @@ class Moves:
                 self._keep_machine_point(self.length.offset - before)
             elif self.length.offset:
                 self._begin()
+            register = tl.register  # type: ignore[attr-defined]
+            across = self.tools.sideways(register) if tl.mode == "positive" and isinstance(register, int) else {}  # type: ignore[attr-defined]
+            if across or self.lathe_shift:
+                self._tool_shift(across)  # the entry's X and Y offsets (LinuxCNC ``G10 L1 X.. Y..``)
 
     def _keep_machine_point(self, change: float) -> None:
         """A length change on a controller that moves nothing until the length axis is programmed
@@ -275,14 +279,18 @@ class Moves:
 
     def _lathe_shift(self, x: float, z: float) -> None:
         """Put the lathe offset (X radius, Z; mm) in force."""
+        self._tool_shift({"X": x, "Z": z} if x or z else {})
+
+    def _tool_shift(self, new: dict[str, float]) -> None:
+        """Put a tool offset along the axes of ``new`` (mm) in force, beside the length along the spindle axis:
+        a lathe tool's X and Z, a mill's entry X and Y (``ToolTable.sideways``); kept in ``lathe_shift``."""
         old = self.lathe_shift
-        new = {"X": x, "Z": z} if x or z else {}
         if new == old:
             return
         if self.length_at_axis:
             self._begin()
             self.pos, self.rounded = dict(self.pos), dict(self.rounded)
-            for axis in ("X", "Z"):
+            for axis in sorted(set(new) | set(old)):
                 change = new.get(axis, 0.0) - old.get(axis, 0.0)
                 if change and axis in self.pos:
                     self.pos[axis] -= change

@@ -13,10 +13,13 @@ entry P: LinuxCNC's H and D registers are tool numbers), or for L10/L11 ``tool_e
 ``tool_entry_at_point_9``, whose length only the simulation can work out (where the tool is): [V] rs274 with
 G54 Z3, G59.3 Z-4, tool 3 of length 0 at Z5: ``G10 L10 P3 Z7`` sets the length -2 (5 + 0 - 7: the active
 offset cancels), then at Z6 with that length ``G10 L11 P3 Z2`` sets 9 (machine 6 + 3 - 2 = 7, minus 2 - 4);
-G91 changes neither (the values are absolute). The other words of G10 L1 (X, Y and the other
-axes' offsets, a lathe tool's I, J, Q) are not modelled: such a block is kept verbatim (``NativeCode``), which
-translates to LinuxCNC alone and is refused by the simulation. Like every G10 L1, the values are absolute
-whatever the distance mode.
+G91 changes neither (the values are absolute). On a mill, ``G10 L1`` also sets the entry's X and Y
+offsets, which ``G43`` applies to X and Y as it applies Z [V: rs274 prints ``USE_TOOL_LENGTH_OFFSET(1 2 3,
+...)`` after ``G10 L1 P1 X1 Y2 Z3`` and ``T1 M6 G43``; after ``G49`` and ``G0 X0`` the canonical point reads
+Y2 Z3: like Z, X and Y keep the machine position until programmed]. The other words (the offsets of the
+other axes, a lathe tool's X and its I, J, Q, and X/Y of L10/L11) are not modelled: such a block is kept
+verbatim (``NativeCode``), which translates to LinuxCNC alone and is refused by the simulation. Like every
+G10 L1, the values are absolute whatever the distance mode.
 """
 
 from __future__ import annotations
@@ -34,7 +37,9 @@ TABLES: Final = {1: TABLE, 10: "tool_entry_at_point", 11: "tool_entry_at_point_9
 """G10's L -> the neutral table it writes."""
 L: Final = 1
 MODELLED: Final = frozenset("ZR")
-"""The words of G10 L1 the IR models."""
+"""The words of G10 L1/L10/L11 the IR models (everywhere)."""
+MILL_ENTRY: Final = frozenset("XYZR")
+"""The words of a mill's G10 L1 the IR models (its X and Y offsets too)."""
 NOT_VALUES: Final = frozenset("GLPN")
 
 
@@ -43,12 +48,13 @@ def read_tool_entry(block: Block, ctx: Context, number: str, values: dict[str, A
     does not model or its P is computed."""
     words = set(values) - NOT_VALUES
     p = values.get("P")
-    if words - MODELLED or isinstance(p, Expr) or not words:
+    modelled = MILL_ENTRY if ell == L and not ctx.lathe else MODELLED
+    if words - modelled or isinstance(p, Expr) or not words:
         return False
     if p is None or isinstance(p, float) and not p.is_integer() or int(p) < 1:
         raise ProgramError(f"G{number} L{ell} needs the tool number it sets (P1 or more)",
                            ctx.at(block, ctx.column_of(block, "P") if p is not None else 1))
-    data: dict[str, float | Expr] = {k: v if isinstance(v, Expr) else float(v) for k, v in values.items() if k in MODELLED}
-    text = " ".join(letter + num for letter, num in block.words if letter.upper() in "GLPZR")
+    data: dict[str, float | Expr] = {k: v if isinstance(v, Expr) else float(v) for k, v in values.items() if k in modelled}
+    text = " ".join(letter + num for letter, num in block.words if letter.upper() in "GLP" or letter.upper() in modelled)
     block.add(DataSetting("linuxcnc", TABLES[ell], int(p), data, False, text))
     return True
