@@ -90,7 +90,7 @@ RIGID = "G21 G90 G0 X0 Y0 Z10.\nM29 S500\nG99 G84 X10. Y10. Z-10. R2. F750.\nG80
 moves on a machine without the holder's play, the tap breaks."""
 
 
-@pytest.mark.parametrize("target", ["grbl", "isg", "fagor", "mach3"])
+@pytest.mark.parametrize("target", ["grbl", "fagor", "mach3"])  # (ISG taps by strokes: test_isg_tap_strokes_26)
 @pytest.mark.parametrize("mode", ["warn", "error"])
 def test_rigid_tapping_is_refused_towards_another_family_even_with_warn(target: str, mode: str) -> None:
     with pytest.raises(ErrorList) as info:
