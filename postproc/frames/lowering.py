@@ -39,7 +39,7 @@ from ..control import ASSIGN, CONTROL
 from ..expr import Binary, Expr, Num
 from ..ir import AXES, Block, Comments, CompoundMotion, CutterCompensation, DataSetting, Motion, Section
 from ..state import MM_PER_INCH, ModalState, changes_nothing
-from .affine import EXACT, INDEX, XYZ
+from .affine import EXACT, IDENTITY, INDEX, XYZ, Affine, diagonal, rotation, translation
 from .frame import PLANE_AXES, Frame, Position
 from .section import FrameChange
 
@@ -67,6 +67,8 @@ class FrameRun:
         self.symbolic = False
         """A construct (an assignment, a control statement) went by: the program is kept symbolically."""
 _SWAPPED: Final = {"left": "right", "right": "left"}
+_ABOUT: Final = {"A": ("Y", "Z"), "B": ("Z", "X"), "C": ("X", "Y")}
+"""A chain rotation's letter -> the plane it turns (right-handed about X, Y, Z)."""
 _TURNED: Final = {"cw": "ccw", "ccw": "cw"}
 
 
@@ -160,6 +162,8 @@ class FrameEvaluator:
             del s["FrameChange"]
             _trace(s, change)
             frame, changed = self.frame, True
+        if frame is not None and frame.pending:
+            self.pending(s, frame)
         if frame is None or frame.plain():
             self.track(s)
         else:
@@ -185,6 +189,8 @@ class FrameEvaluator:
                 self.p[axis] = None  # the tool stays; its place in the new system is not known here
             if frame is not None:
                 frame.select_work(modal.work_offset)
+                if frame.rules == "chain":
+                    frame.pending.update(XYZ)  # SD42440 applies to a settable offset too [K: K2 1.3]
 
     def data_setting(self, block: Block, s: dict[str, Section]) -> bool:
         """G10 L2: a work system's rotation (R) goes into the frame and out of the setting; an offset of
@@ -261,10 +267,14 @@ class FrameEvaluator:
                                "increments is not settled [?]): program it in absolute mode")
         compensating = self.modal.extra.get("frames.cutter") in _SWAPPED
         if compensating and (kind in ("local", "origin", "origin_clear", "origin_suspend", "origin_restore")
-                             or fanuc):
+                             or fanuc or frame.rules == "chain"):
             # [V] rs274: "Cannot change axis offsets with cutter radius comp"; [K] Fanuc commands mirror,
-            # scaling and rotation before compensation starts and cancels them after it ends
+            # scaling and rotation before compensation starts and cancels them after it ends; a SINUMERIK
+            # frame change under G41/G42 is not simulated [?: how the compensated path joins across it]
             raise ProgramError(f"{change.describe()} with cutter compensation on cannot be run (cancel it first)")
+        if frame.rules == "chain":
+            frame.chain(self.component(change, words), kind.endswith("_add"), p)
+            return
         if kind == "local":
             frame.set_local(_axes(words), p)
         elif kind == "origin":
@@ -307,6 +317,48 @@ class FrameEvaluator:
             frame.polar = self.modal.plane
         elif kind == "polar_off":
             frame.polar = None
+
+    def component(self, change: FrameChange, words: dict[str, float]) -> Affine:
+        """A chain command's one component (``postproc.frames.section``), lengths in mm. A rotation ``R`` turns
+        in the active plane from its first axis toward its second, about the plane's third axis, as ``A``,
+        ``B``, ``C`` turn about X, Y, Z: right-handed [K: SINUMERIK ONE NC programming 12/2019 p.316, ROT
+        about the named geometry axis, RPL "in the current working plane (G17/G18/G19)"; 808D programming
+        manual p.56, positive angles in each plane]."""
+        kind = change.kind.removesuffix("_add")
+        if kind == "local":
+            return translation(tuple(words.get(a, 0.0) for a in XYZ))
+        if kind == "rotate":
+            if "R" in words:
+                return Affine(rotation(PLANE_AXES[self.modal.plane][:2], words["R"]))
+            for letter, plane in _ABOUT.items():
+                if letter in words:
+                    return Affine(rotation(plane, words[letter]))
+            return IDENTITY
+        if kind == "scale":
+            factors = tuple(words.get(f, 1.0) for f in "IJK")
+            if 0.0 in factors:
+                raise ProgramError(f"{change.describe()}: a scale factor of 0")
+            return Affine(diagonal(factors))
+        if kind == "mirror":
+            return Affine(diagonal(tuple(-1.0 if a in words else 1.0 for a in XYZ)))
+        raise ProgramError(f"{change.describe()} is not a command of a chained programmable frame")
+
+    def pending(self, s: dict[str, Section], frame: Frame) -> None:
+        """chain rules: the first incremental move on an axis a frame change moved is refused: whether it
+        also travels that change is setting data SD42440 FRAME_OFFSET_INCR_PROG (1, the default: it does;
+        0: only the increment) [K: 840D Function Manual K2 08/2005 1.3 "Frames with G91"]. An absolute move
+        settles the axis."""
+        m = s.get("Motion")
+        if not isinstance(m, Motion) or m.mode is None or "MachineCoordinates" in s:
+            return
+        if self.modal.distance == "incremental":
+            for axis in m.axes:
+                if axis in frame.pending:
+                    raise ProgramError(f"an incremental {axis} after a frame change: whether it also travels the "
+                                       "change is setting data SD42440 (FRAME_OFFSET_INCR_PROG): program "
+                                       f"{axis} absolutely first")
+            return
+        frame.pending.difference_update(m.axes)
 
     def rotate(self, frame: Frame, change: FrameChange, words: dict[str, float]) -> None:
         plane = self.modal.plane
