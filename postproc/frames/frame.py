@@ -14,6 +14,8 @@ system, G54...) as ``w = map p`` on X, Y, Z, and as ``w = p + offset`` on the ot
   G92 shift. G68 rotates about its centre in the active plane (R absolute: parameter 5400#0 RIN = 0,
   [V] 0i-A connection manual), G51 scales about its centre (a negative factor mirrors), G51.1 mirrors
   about a line per axis.
+* ``isg`` (Beckhoff TwinCAT CNC): ``w = T(Rot(p))``, G68's rotation about its centre acting on the
+  programmed coordinates before any offset (``postproc.frames.lowering`` ``isg_rotate``).
 * ``chain`` (SINUMERIK's programmable frame, ``$P_PFRAME``): ``w = F p`` where each replacing command
   (TRANS, ROT, SCALE, MIRROR) sets ``F`` to its one component, clearing offset, rotation, scaling and
   mirroring alike, and each additive one (ATRANS, AROT, ASCALE, AMIRROR) chains its component onto the

@@ -180,8 +180,15 @@ class FrameEvaluator:
         self.plain_mm = self.scale == 1.0 and modal.distance == "absolute"
         frame = self.frame
         if modal.plane != plane and frame is not None and frame.rotation is not None:
-            # [V] Fanuc 15i/16i operator's manuals: no plane selection in the mode of coordinate rotation
-            raise ProgramError("the plane cannot change while coordinate rotation is on")
+            if frame.rules == "isg":
+                # [V] Beckhoff TF5200 programming manual, "Rotate the coordinate system in the plane (G68/G69)": a
+                # change of plane deselects the contour rotation, with a warning
+                frame.unrotate(self.p)
+                self.ctx.diagnostics.warn("the plane change ends the coordinate rotation (as the control does)",
+                                          self.ctx.at(block))
+            else:
+                # [V] Fanuc 15i/16i operator's manuals: no plane selection in the mode of coordinate rotation
+                raise ProgramError("the plane cannot change while coordinate rotation is on")
         if modal.work_offset != work:
             if frame is not None and frame.rules == "fanuc" and frame.linear_active():
                 raise ProgramError(_FANUC_FORBIDDEN.format(what="a work system change"))
@@ -267,7 +274,7 @@ class FrameEvaluator:
                                "increments is not settled [?]): program it in absolute mode")
         compensating = self.modal.extra.get("frames.cutter") in _SWAPPED
         if compensating and (kind in ("local", "origin", "origin_clear", "origin_suspend", "origin_restore")
-                             or fanuc or frame.rules == "chain"):
+                             or frame.rules in ("fanuc", "chain", "isg")):
             # [V] rs274: "Cannot change axis offsets with cutter radius comp"; [K] Fanuc commands mirror,
             # scaling and rotation before compensation starts and cancels them after it ends; a SINUMERIK
             # frame change under G41/G42 is not simulated [?: how the compensated path joins across it]
@@ -361,6 +368,9 @@ class FrameEvaluator:
         frame.pending.difference_update(m.axes)
 
     def rotate(self, frame: Frame, change: FrameChange, words: dict[str, float]) -> None:
+        if frame.rules == "isg":
+            self.isg_rotate(frame, change, words)
+            return
         plane = self.modal.plane
         if plane != "XY":
             raise ProgramError(f"{change.describe()} in the {plane} plane is not simulated (the sense of a rotation "
@@ -385,6 +395,25 @@ class FrameEvaluator:
                                    "reference at the program's start is not settled [?]): program R absolutely")
             degrees += frame.last_angle
         frame.rotate(plane, c1, c2, degrees, self.p)
+
+    def isg_rotate(self, frame: Frame, change: FrameChange, words: dict[str, float]) -> None:
+        """ISG G68 [V: Beckhoff TF5200 programming manual, "Rotate the coordinate system in the plane
+        (G68/G69)"]: R in degrees, absolute (none: 0); the centre's absolute coordinates on the plane's two
+        axes (G91 or not), an omitted one the current position; a G68 replaces the rotation in force. The
+        rotation acts on the programmed coordinates before every offset and mirror, which stay in the machine's
+        axis directions: ``w = offsets(R p)``. Refused [?]: outside G17 (the sense of a positive angle in G18
+        and G19 is drawn, not stated), and an omitted centre while a rotation is on (whether "the current
+        position" is then read turned is not stated)."""
+        plane = self.modal.plane
+        if plane != "XY":
+            raise ProgramError(f"{change.describe()} in the {plane} plane is not simulated (the sense of a rotation "
+                               "there is not settled [?]): only in G17")
+        if frame.rotation is not None and ("X" not in words or "Y" not in words):
+            raise ProgramError(f"{change.describe()} without its centre while a rotation is on: whether the current "
+                               "position is read turned is not settled [?]: program X and Y")
+        c1 = words["X"] if "X" in words else self._here("X", change)
+        c2 = words["Y"] if "Y" in words else self._here("Y", change)
+        frame.rotate(plane, c1, c2, words.get("R", 0.0), self.p)
 
     def _here(self, axis: str, change: FrameChange) -> float:
         """The current point as a centre the command omits ([V] Fanuc 15i/16i: the tool position)."""

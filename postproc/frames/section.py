@@ -3,7 +3,7 @@
 Neutral, as the rest of the IR: ``kind`` says "local offset" or "rotation", never "G52" or "G68". The
 words are those the command takes, by letter, in program units (an angle in degrees): an axis letter
 is an offset, a centre or a mirror line on that axis; ``R`` an angle; ``P`` a common scale factor and
-``I J K`` per-axis factors. ``rules`` names whose semantics the command has ('fanuc', 'rs274' or 'chain', see
+``I J K`` per-axis factors. ``rules`` names whose semantics the command has ('fanuc', 'rs274', 'isg' or 'chain', see
 ``postproc.frames.frame``). ``family`` and ``text`` keep the command as written, for a target of the same
 family that runs it natively (``postproc.frames.lowering``).
 
@@ -39,7 +39,7 @@ KINDS: Final = frozenset(("local", "origin", "origin_clear", "origin_suspend", "
                           "rotate_off", "scale", "scale_off", "mirror", "mirror_off", "polar", "polar_off", "local_add",
                           "rotate_add", "scale_add", "mirror_add"))
 """Every kind of frame change the IR models."""
-RULES: Final = frozenset(("fanuc", "rs274", "chain"))
+RULES: Final = frozenset(("fanuc", "rs274", "chain", "isg"))
 """The semantics a frame change may have (``postproc.frames.frame``)."""
 
 
