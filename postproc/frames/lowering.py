@@ -55,7 +55,7 @@ RUN_KEY: Final = "frames.run"
 class FrameRun:
     """What the evaluation has reached: copied with the reading state into a translation's dry run."""
 
-    __slots__ = ("frame", "p", "g5x", "symbolic")
+    __slots__ = ("frame", "p", "g5x", "symbolic", "work")
 
     def __init__(self, p: Position) -> None:
         self.frame: Frame | None = None
@@ -66,6 +66,8 @@ class FrameRun:
         """Work offsets a G10 in the program set, mm (the rest are unknown here)."""
         self.symbolic = False
         """A construct (an assignment, a control statement) went by: the program is kept symbolically."""
+        self.work: int | None = None
+        """The work system the program selected last (1 = G54); None before it selects one (the machine's)."""
 _SWAPPED: Final = {"left": "right", "right": "left"}
 _ABOUT: Final = {"A": ("Y", "Z"), "B": ("Z", "X"), "C": ("X", "Y")}
 """A chain rotation's letter -> the plane it turns (right-handed about X, Y, Z)."""
@@ -176,6 +178,8 @@ class FrameEvaluator:
         modal = self.modal
         work, plane = modal.work_offset, modal.plane
         modal.apply(s)
+        if "WorkOffset" in s:
+            self.reached.work = modal.work_offset
         self.scale = MM_PER_INCH if modal.units == "inch" else 1.0
         self.plain_mm = self.scale == 1.0 and modal.distance == "absolute"
         frame = self.frame
