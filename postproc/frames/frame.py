@@ -237,6 +237,36 @@ class Frame:
         self.compose()
 
 
+_ABOUT: Final = {"A": ("Y", "Z"), "B": ("Z", "X"), "C": ("X", "Y")}
+"""A chain rotation's letter -> the plane it turns (right-handed about X, Y, Z)."""
+
+
+def chain_component(kind: str, words: dict[str, float], plane: str, what: str) -> Affine:
+    """A chain command's one component (``postproc.frames.section``), lengths in mm; ``plane`` is the active
+    one, ``what`` names the command for errors. A rotation ``R`` turns in the active plane from its first
+    axis toward its second, about the plane's third axis, as ``A``, ``B``, ``C`` turn about X, Y, Z:
+    right-handed [K: SINUMERIK ONE NC programming 12/2019 p.316, ROT about the named geometry axis, RPL "in
+    the current working plane (G17/G18/G19)"; 808D programming manual p.56, positive angles in each plane]."""
+    kind = kind.removesuffix("_add")
+    if kind == "local":
+        return translation(tuple(words.get(a, 0.0) for a in XYZ))
+    if kind == "rotate":
+        if "R" in words:
+            return Affine(rotation(PLANE_AXES[plane][:2], words["R"]))
+        for letter, turned in _ABOUT.items():
+            if letter in words:
+                return Affine(rotation(turned, words[letter]))
+        return IDENTITY
+    if kind == "scale":
+        factors = tuple(words.get(f, 1.0) for f in "IJK")
+        if 0.0 in factors:
+            raise ProgramError(f"{what}: a scale factor of 0")
+        return Affine(diagonal(factors))
+    if kind == "mirror":
+        return Affine(diagonal(tuple(-1.0 if a in words else 1.0 for a in XYZ)))
+    raise ProgramError(f"{what} is not a command of a chained programmable frame")
+
+
 def orthogonal_columns(m: tuple[float, ...]) -> bool:
     """The linear part is a rotation times a diagonal (its columns are at right angles)."""
     columns = [(m[j], m[3 + j], m[6 + j]) for j in range(3)]

@@ -13,6 +13,9 @@ direction turned over by a mirror, and refused where the frame makes it an ellip
 frame other than offsets is expanded (its holes carried like moves), and a mirror swaps the side of
 cutter compensation. The frame commands themselves leave the block.
 
+Over 600 lines: one class carries the frame through every kind of block, and it is compiled whole (it runs
+for every translation to another dialect); the rules of each command live in ``frame``.
+
 The program position is tracked in program coordinates (mm), None where unknown; a move that needs an
 unknown coordinate (an axis it omits, that the frame mixes into the ones it programs) is a located error.
 
@@ -39,8 +42,8 @@ from ..control import ASSIGN, CONTROL
 from ..expr import Binary, Expr, Num
 from ..ir import AXES, Block, Comments, CompoundMotion, CutterCompensation, DataSetting, Motion, Section
 from ..state import MM_PER_INCH, ModalState, changes_nothing
-from .affine import EXACT, IDENTITY, INDEX, XYZ, Affine, diagonal, rotation, translation
-from .frame import PLANE_AXES, Frame, Position
+from .affine import EXACT, INDEX, XYZ
+from .frame import PLANE_AXES, Frame, Position, chain_component
 from .section import FrameChange
 
 LINEAR: Final = frozenset("XYZUVW")
@@ -69,8 +72,6 @@ class FrameRun:
         self.work: int | None = None
         """The work system the program selected last (1 = G54); None before it selects one (the machine's)."""
 _SWAPPED: Final = {"left": "right", "right": "left"}
-_ABOUT: Final = {"A": ("Y", "Z"), "B": ("Z", "X"), "C": ("X", "Y")}
-"""A chain rotation's letter -> the plane it turns (right-handed about X, Y, Z)."""
 _TURNED: Final = {"cw": "ccw", "ccw": "cw"}
 
 
@@ -284,7 +285,8 @@ class FrameEvaluator:
             # frame change under G41/G42 is not simulated [?: how the compensated path joins across it]
             raise ProgramError(f"{change.describe()} with cutter compensation on cannot be run (cancel it first)")
         if frame.rules == "chain":
-            frame.chain(self.component(change, words), kind.endswith("_add"), p)
+            frame.chain(chain_component(change.kind, words, self.modal.plane, change.describe()),
+                        kind.endswith("_add"), p)
             return
         if kind == "local":
             frame.set_local(_axes(words), p)
@@ -328,31 +330,6 @@ class FrameEvaluator:
             frame.polar = self.modal.plane
         elif kind == "polar_off":
             frame.polar = None
-
-    def component(self, change: FrameChange, words: dict[str, float]) -> Affine:
-        """A chain command's one component (``postproc.frames.section``), lengths in mm. A rotation ``R`` turns
-        in the active plane from its first axis toward its second, about the plane's third axis, as ``A``,
-        ``B``, ``C`` turn about X, Y, Z: right-handed [K: SINUMERIK ONE NC programming 12/2019 p.316, ROT
-        about the named geometry axis, RPL "in the current working plane (G17/G18/G19)"; 808D programming
-        manual p.56, positive angles in each plane]."""
-        kind = change.kind.removesuffix("_add")
-        if kind == "local":
-            return translation(tuple(words.get(a, 0.0) for a in XYZ))
-        if kind == "rotate":
-            if "R" in words:
-                return Affine(rotation(PLANE_AXES[self.modal.plane][:2], words["R"]))
-            for letter, plane in _ABOUT.items():
-                if letter in words:
-                    return Affine(rotation(plane, words[letter]))
-            return IDENTITY
-        if kind == "scale":
-            factors = tuple(words.get(f, 1.0) for f in "IJK")
-            if 0.0 in factors:
-                raise ProgramError(f"{change.describe()}: a scale factor of 0")
-            return Affine(diagonal(factors))
-        if kind == "mirror":
-            return Affine(diagonal(tuple(-1.0 if a in words else 1.0 for a in XYZ)))
-        raise ProgramError(f"{change.describe()} is not a command of a chained programmable frame")
 
     def pending(self, s: dict[str, Section], frame: Frame) -> None:
         """chain rules: the first incremental move on an axis a frame change moved is refused: whether it
