@@ -114,6 +114,11 @@ def _frame_change(state: ModalState, s: Any) -> None:
     rotation, scaling or mirror: on every axis of the plane) until programmed again."""
     position = state.position
     kind, words = s.kind, s.words
+    if s.rules == "chain":  # a replacing command clears every component: any axis may move
+        for axis in "XYZ":
+            if axis in position:
+                position[axis] = None
+        return
     if kind in ("polar", "polar_off"):
         state.extra["polar"] = kind == "polar"  # words are a radius and an angle: the arc check waits for the run
         for axis in PLANE_AXES[state.plane][:2]:

@@ -72,6 +72,21 @@ def test_a_work_systems_parameters_read_what_g10_set_in_the_program() -> None:
     assert [(e["x"], e["y"], e["z"]) for e in got] == [(14, -6, 30)]
 
 
+WORK_SYSTEM = "G21 G90 G0 X0 Y0\nG59.1\n#1=#5220\nG55\nG0 X#1 Y#5220\nG54\nG0 X#5220\nM2\n"
+
+
+def test_the_active_work_system_number_reads_the_last_selection() -> None:
+    """#5220 is 1 (G54) to 9 (G59.3) [V: interp_parameter_def.hh]: G59.1 makes it 7, G55 2: X7 Y2; G54: X1. The
+    work offsets are the set-up's (none: zero), so the points are the words."""
+    assert [(e["x"], e["y"]) for e in moves(WORK_SYSTEM)] == [(7, 2), (1, 2)]
+
+
+@pytest.mark.skipif(not available(), reason="the LinuxCNC interpreter rs274 is not installed")
+def test_the_active_work_system_number_as_rs274_reads_it() -> None:
+    theirs = [(e["x"], e["y"]) for e in _machine(run_rs274(WORK_SYSTEM)) if e["move"] == "rapid"]
+    assert theirs[1:] == [(7, 2), (1, 2)]
+
+
 @pytest.mark.parametrize("text, named", [
     ("G21 G0 X#5221\nM2\n", "#5221 (work offset)"),  # the set-up's G54, not set by the program
     ("G21 G0 X#5220\nM2\n", "#5220 (active coordinate system)"),

@@ -392,9 +392,9 @@ def test_trans_is_evaluated_for_other_controls(target: str) -> None:
     _verify(TRANS_PROGRAM, _translate(TRANS_PROGRAM, "siemens", target), "siemens", target)
 
 
-def test_additive_and_computed_frames_are_kept_verbatim() -> None:
-    for line, name in (("ATRANS X1", "ATRANS (an additive frame offset)"), ("TRANS X=R1", "TRANS with computed"),
-                       ("TRANS A10", "TRANS with other than X, Y, Z"), ("ROT RPL=30", "ROT (a frame rotation)")):
+def test_unmodelled_and_computed_frames_are_kept_verbatim() -> None:
+    for line, name in (("ROT X30 Y10", "ROT about more than one axis"), ("TRANS X=R1", "TRANS with computed"),
+                       ("TRANS A10", "TRANS with other than X, Y, Z"), ("ROTS X10 Y10", "ROTS (a frame rotation")):
         text = f"G710 G90 G0 X0\nR1=1\n{line}\nM30\n"
         assert _translate(text, "siemens", "siemens") == text
         assert name in _errors(text, "siemens", "fanuc")[0]

@@ -118,10 +118,12 @@ def test_refused_at_the_line(text: str, source: str, message: str) -> None:
     assert any(str(e).startswith(message) for e in info.value.errors), info.value.errors
 
 
-def test_a_lathe_program_is_refused() -> None:
-    from postproc.errors import UsageError
-    with pytest.raises(UsageError, match="mill programs only"):
-        run("G21 G0 X20. Z1.\nM30\n", "gsk", "gsk", "inch")
+def test_a_lathe_program_is_converted() -> None:
+    """X20 (a diameter) is 0.7874 in, Z1 0.0394 in (more in tests/test_frames_lathe_units.py)."""
+    text = "G21 G0 X20. Z1.\nM30\n"
+    out = run(text, "gsk", "gsk", "inch")
+    assert "G20" in out and "X0.787401" in out and "Z0.03937" in out, out
+    same_path(text, out, "gsk", "gsk")
 
 
 # -- random programs ----------------------------------------------------------------------------------

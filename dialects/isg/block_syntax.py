@@ -30,6 +30,8 @@ class IsgBlockSyntax(WordBlockSyntax):
     TITLE: ClassVar[str] = "ISG"
     CODES: ClassVar[CodeTable] = CODES
     POINTLESS_IN_UNITS: ClassVar[bool] = True
+    FRAME_RULES: ClassVar[str] = "isg"
+    """G68/G69 (``codes``) under the ``isg`` rules of ``postproc.frames``."""
 
     def g_sections(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],
                    used: set[str], cycle_block: bool) -> None:

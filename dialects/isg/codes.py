@@ -19,6 +19,10 @@ control are where the table matters (DIALECTS.md 1.3, 3.3):
 * ``G331``/``G332`` tap in and out spindle-synchronised (``taps``) [V: TF5200 "Tapping (G331/G332)"].
 * ``M19`` orients the spindle to the machine's angle (the set-up's ``orientAngle``) [?: a DIN M code
   whose ISG meaning we did not read].
+* ``G68 R.. X.. Y..``/``G69`` rotate the programmed contour in the plane [V: TF5200 programming manual, "Rotate
+  the coordinate system in the plane (G68/G69)", CNC build V3.1.3079.33 on]: read as the neutral frame change
+  under the ``isg`` rules (``postproc.frames``). ``#ROTATION`` is kept verbatim (its ``CENTER1``/``CENTER2``
+  are "the offset of the main axis relative to the centre", whose sign is not settled [?]).
 * ``M17``/``M29`` (subroutine end) are read by the reader (``reader.RETURN_CODES``), not here.
 """
 
@@ -39,6 +43,8 @@ ROWS = (
     ("G41", "07", "cutter", "left"),
     ("G42", "07", "cutter", "right"),
     ("G54", "14", "offset", 1),
+    ("G68", "16", "frame", "rotate"),
+    ("G69", "16", "frame", "rotate_off"),
     ("G55", "14", "offset", 2),
     ("G56", "14", "offset", 3),
     ("G57", "14", "offset", 4),

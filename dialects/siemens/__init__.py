@@ -4,9 +4,9 @@ SINUMERIK is neither in the RS274 family nor in ISG's: it has its own reader (``
 R parameters, ``DEF`` variables, labels, ``IF``/``WHILE``/``FOR``/``REPEAT``/``LOOP`` and ``GOTOF``...) and
 expressions (``expressions``), reads its words through the family's word rules with the 840D table
 (``codes``, ``block_syntax``) and selects tool data with ``D`` as ISG does
-(``postproc.isg_family.tool_data``). ``MCALL CYCLE81/82`` are read on the neutral cycle IR (``cycles``), ``TRANS``
-as the neutral local offset, ``NAME P3`` as a subprogram call. What the IR does not model (other frames and
-cycles, parameters of subprograms, ``AC``/``IC`` against the block's mode...) is kept verbatim, named
+(``postproc.isg_family.tool_data``). ``MCALL CYCLE81/82`` are read on the neutral cycle IR (``cycles``), the
+programmable frame statements (``TRANS``, ``AROT``...) on the neutral frame change (``frames``), ``NAME P3`` as
+a subprogram call. What the IR does not model (``ROTS`` and computed frames, other cycles, parameters of subprograms, ``AC``/``IC`` against the block's mode...) is kept verbatim, named
 (``keywords``).
 """
 

@@ -15,7 +15,8 @@ Read into neutral sections:
   thing (and ``I=IC(..)``: centres are incremental by default [K]); otherwise the per-address distance
   mode is not modelled and the block is kept verbatim;
 * ``MCALL CYCLE81(..)``/``MCALL CYCLE82(..)`` and a bare ``MCALL`` (``cycles``);
-* ``TRANS X.. Y.. Z..`` (numbers, alone in its block): the neutral local offset (``trans``);
+* ``TRANS``/``ATRANS``, ``ROT``/``AROT``, ``SCALE``/``ASCALE``, ``MIRROR``/``AMIRROR`` with numbers, alone in
+  their block: the neutral frame change under the ``chain`` rules (``frames``);
 * ``DEF REAL|INT|BOOL NAME[=value], ...`` (an assignment of the value, 0 when none is given [K]);
 * ``IF``/``ELSE``/``ENDIF``, ``WHILE``/``ENDWHILE``, ``FOR``/``TO``/``ENDFOR``, ``REPEAT``/``UNTIL``,
   ``LOOP``/``ENDLOOP`` (liufang-robot SPEC; Job planning p.107 [K]); ``GOTOF``/``GOTOB``/``GOTO``/``GOTOC``
@@ -27,7 +28,7 @@ Subprograms: ``NAME`` / ``NAME P3`` alone in a block calls ``NAME.SPF`` (3 times
 parameters) or an ``_SPF`` header makes the file a subprogram; ``RET``/``M17`` return.
 
 Kept verbatim (``NativeCode`` tagged ``siemens``: round trip byte for byte, refused by every other dialect
-and by the simulator, by name): frames (``TRANS``, ``ROT``...), cycles (``CYCLE81``...), ``MCALL``,
+and by the simulator, by name): the frames ``frames`` does not model (``ROTS``, computed values...), cycles (``CYCLE81``...), ``MCALL``,
 calls with parameters and ``PROC`` with parameters, every other instruction word (``SOFT``, ``BRISK``, ``SPOS``...),
 multi-letter addresses other than ``CR`` (``AR=``, ``TURN=``, ``I1=``...), ``T="name"``, string, array,
 ``CHAR``/``STRING``/``AXIS``/``FRAME`` declarations and the operators the IR lacks (``DIV``, ``B_AND``...).
@@ -46,13 +47,13 @@ from postproc.control import (
 from postproc.dialect import Reader
 from postproc.errors import Location, ParseError, PostprocError
 from postproc.expr import Binary, Expr, Func, Num, Var
-from postproc.frames.section import FrameChange
 from postproc.ir import Block, BlockDelete, Comments, CycleCall, CycleCancel, NativeCode, ProgramStart, Section, Sequence
 from postproc.isg_family.expressions import Unmodelled
 from postproc.rs274.expressions import ExprSyntaxError
 from postproc.rs274.lexer import split_lines
 
 from .cycles import KINDS, PARAMETERS, cycle_words
+from .frames import STATEMENTS as FRAME_STATEMENTS, read_frame
 from .expressions import name_at, parse_expr, parse_variable, skip
 from .keywords import INSTRUCTIONS, describe
 
@@ -191,8 +192,8 @@ class _State:
             if word in ("PROC", "RET"):
                 self.procedure(block, code, pos, end, word)
                 return
-            if word == "TRANS":
-                self.trans(block, code, pos, end)
+            if word in FRAME_STATEMENTS:
+                block.add(read_frame(word, code, pos, end, self.file, line))
                 return
             if word == "MCALL":
                 self.mcall(block, code, pos, end)
@@ -213,35 +214,6 @@ class _State:
                 or len(rest) <= 7 or any(not (c.isalnum() or c == "_") for c in rest) or rest[3].isdigit():
             raise self.error(line, pos + 1, f"a program header is %_N_<NAME>_MPF or %_N_<NAME>_SPF, not %{rest}")
         return rest[3:]
-
-    # -- frames -----------------------------------------------------------------------------------------
-    def trans(self, block: Block, code: str, pos: int, end: int) -> None:
-        """``TRANS X10 Y5`` replaces the whole programmable frame by that offset (an axis not named: 0), and
-        ``TRANS`` alone clears it [K: SINUMERIK ONE NC programming 12/2019 p.309, "the plain forms replace
-        the programmable frame"; 808D manual p.56]. Alone in its block ("Frame statements must be programmed
-        in a separate NC block" [K]). Read as the neutral local offset (Fanuc G52's meaning) on X, Y and Z:
-        exact, as the rotation, scaling and mirroring it would also clear are never modelled (their blocks
-        are kept verbatim, so a program with them is not simulated). Computed values, other axes and the
-        additive ``ATRANS`` are kept verbatim. A work offset selected later keeps it, as Fanuc's G52 stays in
-        every work system [K: the programmable frame is chained after the settable one (G54...), which
-        replaces only its own]."""
-        words: dict[str, float | Expr] = {"X": 0.0, "Y": 0.0, "Z": 0.0}
-        n = len(code)
-        at = skip(code, end)
-        while at < n:
-            letter = code[at].upper()
-            if letter not in "XYZ":
-                raise Unmodelled("TRANS with other than X, Y, Z offsets", at)
-            start = at + 1
-            stop = start + (code[start:start + 1] in ("+", "-"))
-            while stop < n and (code[stop] in _DIGITS or code[stop] == "."):
-                stop += 1
-            number = code[start:stop]
-            if not _plain(number) or stop < n and code[stop] not in " \t":
-                raise Unmodelled("TRANS with computed or malformed offsets", at)
-            words[letter] = float(number)
-            at = skip(code, stop)
-        block.add(FrameChange("local", words, "fanuc", "siemens", code[pos:].strip()))
 
     def mcall(self, block: Block, code: str, pos: int, end: int) -> None:
         """``MCALL CYCLE81(..)``/``MCALL CYCLE82(..)`` with number parameters: the cycle's data block

@@ -14,6 +14,20 @@ system, G54...) as ``w = map p`` on X, Y, Z, and as ``w = p + offset`` on the ot
   G92 shift. G68 rotates about its centre in the active plane (R absolute: parameter 5400#0 RIN = 0,
   [V] 0i-A connection manual), G51 scales about its centre (a negative factor mirrors), G51.1 mirrors
   about a line per axis.
+* ``isg`` (Beckhoff TwinCAT CNC): ``w = T(Rot(p))``, G68's rotation about its centre acting on the
+  programmed coordinates before any offset (``postproc.frames.lowering`` ``isg_rotate``).
+* ``chain`` (SINUMERIK's programmable frame, ``$P_PFRAME``): ``w = F p`` where each replacing command
+  (TRANS, ROT, SCALE, MIRROR) sets ``F`` to its one component, clearing offset, rotation, scaling and
+  mirroring alike, and each additive one (ATRANS, AROT, ASCALE, AMIRROR) chains its component onto the
+  frame in force, ``F = F . c``: it acts in the coordinates the frame already makes, so an ATRANS after a
+  SCALE is scaled and an AROT after a TRANS turns about the shifted zero [K: SINUMERIK 808D programming
+  manual 01/2014 p.56 "deletes old instructions for offsetting, rotation, scaling factor, mirroring" and
+  "additive to existing instructions"; 840D Function Manual K2 08/2005 1.3 "frame chaining"; ONE NC
+  programming 12/2019 p.309: "ASCALE ... based on a previous scaling, rotation, translation or
+  mirroring"]. The frame is held as offset, rotation, scale and mirror components [K: K2, "frame
+  components"], so a chain whose map is no longer a rotation of a scaling (an AROT after unequal scale
+  factors in its plane) is not what the controller holds: refused [?]. The settable frame (G54...) is the
+  work system's, outside ``F``: a work system selected later keeps ``F`` [K: K2 $P_ACTFRAME chain].
 
 The program position is tracked beside the frame by the caller (``postproc.frames.lowering``); each
 command here says how it moves that position (the tool stays where it is) or makes it unknown (None).
@@ -21,10 +35,11 @@ command here says how it moves that position (the tool stays where it is) or mak
 
 from __future__ import annotations
 
+import math
 from typing import Final
 
 from ..errors import ProgramError
-from .affine import IDENTITY, XYZ, Affine, about, diagonal, rotation, translation
+from .affine import EXACT, IDENTITY, XYZ, Affine, about, diagonal, rotation, translation
 
 Position = dict[str, "float | None"]
 PLANE_AXES: Final = {"XY": ("X", "Y", "Z"), "ZX": ("Z", "X", "Y"), "YZ": ("Y", "Z", "X")}
@@ -34,7 +49,7 @@ class Frame:
     """The frame in force (lengths in mm, angles in degrees)."""
 
     __slots__ = ("rules", "offset", "saved", "applied", "local", "rotation", "last_angle", "scaling", "mirror", "turns",
-                 "work", "map", "polar")
+                 "work", "map", "polar", "pending")
 
     def __init__(self, rules: str = "rs274") -> None:
         self.rules = rules
@@ -62,6 +77,9 @@ class Frame:
         """X, Y, Z: program point -> work point."""
         self.polar: str | None = None
         """fanuc G16: the plane whose first axis word is a radius and second an angle (None: G15)."""
+        self.pending: set[str] = set()
+        """chain: the axes a frame change moved in program coordinates, until a move programs them
+        absolutely (an incremental move there is refused: ``postproc.frames.lowering``)."""
 
     # -- the map ----------------------------------------------------------------------------------
     def plain(self) -> bool:
@@ -77,6 +95,8 @@ class Frame:
         return self.offset.get(axis, 0.0) + self.local.get(axis, 0.0)
 
     def compose(self) -> None:
+        if self.rules == "chain":
+            return  # the map is the chained frame itself (``chain``)
         offset = tuple(self.offset.get(a, 0.0) + self.local.get(a, 0.0) for a in XYZ)
         if self.rules == "rs274":
             turn = self.turns.get(self.work, 0.0)
@@ -191,6 +211,23 @@ class Frame:
         self.work = work
         self.compose()
 
+    def chain(self, component: Affine, additive: bool, p: Position) -> None:
+        """chain rules: the programmable frame becomes ``component`` (replacing) or the frame in force
+        chained with it (additive). The tool stays; an axis whose program coordinate the change can move
+        is unknown until programmed again, and pending for the incremental rule."""
+        old = self.map
+        new = component.then(old) if additive else component
+        if not orthogonal_columns(new.m):
+            raise ProgramError("a rotation chained after unequal scale factors in its plane: the controller holds "
+                               "its frame as offset, rotation, scaling and mirroring, which cannot express this "
+                               "(whether it refuses it or reorders it is not settled [?]): scale equally, or "
+                               "rotate before scaling")
+        self.map = new
+        for i, axis in enumerate(XYZ):
+            if not (_alone(old, i) and _alone(new, i) and old.m[4 * i] == new.m[4 * i] and old.t[i] == new.t[i]):
+                p[axis] = None
+                self.pending.add(axis)
+
     def _forget(self, axes: tuple[str, ...], p: Position) -> None:
         """Where the program stands on ``axes`` in the new frame is not taken as known: the next move
         programs them [?: Fanuc keeps a 'programmed position' that the manuals do not state for a
@@ -198,6 +235,52 @@ class Frame:
         for axis in axes:
             p[axis] = None
         self.compose()
+
+
+_ABOUT: Final = {"A": ("Y", "Z"), "B": ("Z", "X"), "C": ("X", "Y")}
+"""A chain rotation's letter -> the plane it turns (right-handed about X, Y, Z)."""
+
+
+def chain_component(kind: str, words: dict[str, float], plane: str, what: str) -> Affine:
+    """A chain command's one component (``postproc.frames.section``), lengths in mm; ``plane`` is the active
+    one, ``what`` names the command for errors. A rotation ``R`` turns in the active plane from its first
+    axis toward its second, about the plane's third axis, as ``A``, ``B``, ``C`` turn about X, Y, Z:
+    right-handed [K: SINUMERIK ONE NC programming 12/2019 p.316, ROT about the named geometry axis, RPL "in
+    the current working plane (G17/G18/G19)"; 808D programming manual p.56, positive angles in each plane]."""
+    kind = kind.removesuffix("_add")
+    if kind == "local":
+        return translation(tuple(words.get(a, 0.0) for a in XYZ))
+    if kind == "rotate":
+        if "R" in words:
+            return Affine(rotation(PLANE_AXES[plane][:2], words["R"]))
+        for letter, turned in _ABOUT.items():
+            if letter in words:
+                return Affine(rotation(turned, words[letter]))
+        return IDENTITY
+    if kind == "scale":
+        factors = tuple(words.get(f, 1.0) for f in "IJK")
+        if 0.0 in factors:
+            raise ProgramError(f"{what}: a scale factor of 0")
+        return Affine(diagonal(factors))
+    if kind == "mirror":
+        return Affine(diagonal(tuple(-1.0 if a in words else 1.0 for a in XYZ)))
+    raise ProgramError(f"{what} is not a command of a chained programmable frame")
+
+
+def orthogonal_columns(m: tuple[float, ...]) -> bool:
+    """The linear part is a rotation times a diagonal (its columns are at right angles)."""
+    columns = [(m[j], m[3 + j], m[6 + j]) for j in range(3)]
+    for j, k in ((0, 1), (0, 2), (1, 2)):
+        a, b = columns[j], columns[k]
+        size = math.hypot(*a) * math.hypot(*b)
+        if abs(a[0] * b[0] + a[1] * b[1] + a[2] * b[2]) > 1e-9 * max(size, 1.0):
+            return False
+    return True
+
+
+def _alone(f: Affine, i: int) -> bool:
+    """Axis ``i`` neither mixes into another axis nor takes from one under ``f``."""
+    return all(abs(f.m[3 * i + j]) <= EXACT and abs(f.m[3 * j + i]) <= EXACT for j in range(3) if j != i)
 
 
 def reversed_args(scaling: tuple[tuple[float, float, float], tuple[float, float, float]]) -> tuple[

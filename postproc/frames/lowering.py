@@ -13,6 +13,9 @@ direction turned over by a mirror, and refused where the frame makes it an ellip
 frame other than offsets is expanded (its holes carried like moves), and a mirror swaps the side of
 cutter compensation. The frame commands themselves leave the block.
 
+Over 600 lines: one class carries the frame through every kind of block, and it is compiled whole (it runs
+for every translation to another dialect); the rules of each command live in ``frame``.
+
 The program position is tracked in program coordinates (mm), None where unknown; a move that needs an
 unknown coordinate (an axis it omits, that the frame mixes into the ones it programs) is a located error.
 
@@ -40,7 +43,7 @@ from ..expr import Binary, Expr, Num
 from ..ir import AXES, Block, Comments, CompoundMotion, CutterCompensation, DataSetting, Motion, Section
 from ..state import MM_PER_INCH, ModalState, changes_nothing
 from .affine import EXACT, INDEX, XYZ
-from .frame import PLANE_AXES, Frame, Position
+from .frame import PLANE_AXES, Frame, Position, chain_component
 from .section import FrameChange
 
 LINEAR: Final = frozenset("XYZUVW")
@@ -55,7 +58,7 @@ RUN_KEY: Final = "frames.run"
 class FrameRun:
     """What the evaluation has reached: copied with the reading state into a translation's dry run."""
 
-    __slots__ = ("frame", "p", "g5x", "symbolic")
+    __slots__ = ("frame", "p", "g5x", "symbolic", "work")
 
     def __init__(self, p: Position) -> None:
         self.frame: Frame | None = None
@@ -66,6 +69,8 @@ class FrameRun:
         """Work offsets a G10 in the program set, mm (the rest are unknown here)."""
         self.symbolic = False
         """A construct (an assignment, a control statement) went by: the program is kept symbolically."""
+        self.work: int | None = None
+        """The work system the program selected last (1 = G54); None before it selects one (the machine's)."""
 _SWAPPED: Final = {"left": "right", "right": "left"}
 _TURNED: Final = {"cw": "ccw", "ccw": "cw"}
 
@@ -160,6 +165,8 @@ class FrameEvaluator:
             del s["FrameChange"]
             _trace(s, change)
             frame, changed = self.frame, True
+        if frame is not None and frame.pending:
+            self.pending(s, frame)
         if frame is None or frame.plain():
             self.track(s)
         else:
@@ -172,12 +179,21 @@ class FrameEvaluator:
         modal = self.modal
         work, plane = modal.work_offset, modal.plane
         modal.apply(s)
+        if "WorkOffset" in s:
+            self.reached.work = modal.work_offset
         self.scale = MM_PER_INCH if modal.units == "inch" else 1.0
         self.plain_mm = self.scale == 1.0 and modal.distance == "absolute"
         frame = self.frame
         if modal.plane != plane and frame is not None and frame.rotation is not None:
-            # [V] Fanuc 15i/16i operator's manuals: no plane selection in the mode of coordinate rotation
-            raise ProgramError("the plane cannot change while coordinate rotation is on")
+            if frame.rules == "isg":
+                # [V] Beckhoff TF5200 programming manual, "Rotate the coordinate system in the plane (G68/G69)": a
+                # change of plane deselects the contour rotation, with a warning
+                frame.unrotate(self.p)
+                self.ctx.diagnostics.warn("the plane change ends the coordinate rotation (as the control does)",
+                                          self.ctx.at(block))
+            else:
+                # [V] Fanuc 15i/16i operator's manuals: no plane selection in the mode of coordinate rotation
+                raise ProgramError("the plane cannot change while coordinate rotation is on")
         if modal.work_offset != work:
             if frame is not None and frame.rules == "fanuc" and frame.linear_active():
                 raise ProgramError(_FANUC_FORBIDDEN.format(what="a work system change"))
@@ -185,6 +201,8 @@ class FrameEvaluator:
                 self.p[axis] = None  # the tool stays; its place in the new system is not known here
             if frame is not None:
                 frame.select_work(modal.work_offset)
+                if frame.rules == "chain":
+                    frame.pending.update(XYZ)  # SD42440 applies to a settable offset too [K: K2 1.3]
 
     def data_setting(self, block: Block, s: dict[str, Section]) -> bool:
         """G10 L2: a work system's rotation (R) goes into the frame and out of the setting; an offset of
@@ -261,10 +279,15 @@ class FrameEvaluator:
                                "increments is not settled [?]): program it in absolute mode")
         compensating = self.modal.extra.get("frames.cutter") in _SWAPPED
         if compensating and (kind in ("local", "origin", "origin_clear", "origin_suspend", "origin_restore")
-                             or fanuc):
+                             or frame.rules in ("fanuc", "chain", "isg")):
             # [V] rs274: "Cannot change axis offsets with cutter radius comp"; [K] Fanuc commands mirror,
-            # scaling and rotation before compensation starts and cancels them after it ends
+            # scaling and rotation before compensation starts and cancels them after it ends; a SINUMERIK
+            # frame change under G41/G42 is not simulated [?: how the compensated path joins across it]
             raise ProgramError(f"{change.describe()} with cutter compensation on cannot be run (cancel it first)")
+        if frame.rules == "chain":
+            frame.chain(chain_component(change.kind, words, self.modal.plane, change.describe()),
+                        kind.endswith("_add"), p)
+            return
         if kind == "local":
             frame.set_local(_axes(words), p)
         elif kind == "origin":
@@ -308,7 +331,27 @@ class FrameEvaluator:
         elif kind == "polar_off":
             frame.polar = None
 
+    def pending(self, s: dict[str, Section], frame: Frame) -> None:
+        """chain rules: the first incremental move on an axis a frame change moved is refused: whether it
+        also travels that change is setting data SD42440 FRAME_OFFSET_INCR_PROG (1, the default: it does;
+        0: only the increment) [K: 840D Function Manual K2 08/2005 1.3 "Frames with G91"]. An absolute move
+        settles the axis."""
+        m = s.get("Motion")
+        if not isinstance(m, Motion) or m.mode is None or "MachineCoordinates" in s:
+            return
+        if self.modal.distance == "incremental":
+            for axis in m.axes:
+                if axis in frame.pending:
+                    raise ProgramError(f"an incremental {axis} after a frame change: whether it also travels the "
+                                       "change is setting data SD42440 (FRAME_OFFSET_INCR_PROG): program "
+                                       f"{axis} absolutely first")
+            return
+        frame.pending.difference_update(m.axes)
+
     def rotate(self, frame: Frame, change: FrameChange, words: dict[str, float]) -> None:
+        if frame.rules == "isg":
+            self.isg_rotate(frame, change, words)
+            return
         plane = self.modal.plane
         if plane != "XY":
             raise ProgramError(f"{change.describe()} in the {plane} plane is not simulated (the sense of a rotation "
@@ -333,6 +376,25 @@ class FrameEvaluator:
                                    "reference at the program's start is not settled [?]): program R absolutely")
             degrees += frame.last_angle
         frame.rotate(plane, c1, c2, degrees, self.p)
+
+    def isg_rotate(self, frame: Frame, change: FrameChange, words: dict[str, float]) -> None:
+        """ISG G68 [V: Beckhoff TF5200 programming manual, "Rotate the coordinate system in the plane
+        (G68/G69)"]: R in degrees, absolute (none: 0); the centre's absolute coordinates on the plane's two
+        axes (G91 or not), an omitted one the current position; a G68 replaces the rotation in force. The
+        rotation acts on the programmed coordinates before every offset and mirror, which stay in the machine's
+        axis directions: ``w = offsets(R p)``. Refused [?]: outside G17 (the sense of a positive angle in G18
+        and G19 is drawn, not stated), and an omitted centre while a rotation is on (whether "the current
+        position" is then read turned is not stated)."""
+        plane = self.modal.plane
+        if plane != "XY":
+            raise ProgramError(f"{change.describe()} in the {plane} plane is not simulated (the sense of a rotation "
+                               "there is not settled [?]): only in G17")
+        if frame.rotation is not None and ("X" not in words or "Y" not in words):
+            raise ProgramError(f"{change.describe()} without its centre while a rotation is on: whether the current "
+                               "position is read turned is not settled [?]: program X and Y")
+        c1 = words["X"] if "X" in words else self._here("X", change)
+        c2 = words["Y"] if "Y" in words else self._here("Y", change)
+        frame.rotate(plane, c1, c2, words.get("R", 0.0), self.p)
 
     def _here(self, axis: str, change: FrameChange) -> float:
         """The current point as a centre the command omits ([V] Fanuc 15i/16i: the tool position)."""

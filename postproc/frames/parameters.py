@@ -48,6 +48,13 @@ class FrameReadings:
             return 0.0
         return run.frame.saved.get(axis, 0.0)
 
+    def work_system(self) -> int | None:
+        """The work system the program selected last (1 = the first, G54); None before it selects one (the
+        machine's, kept from its last program [K: LinuxCNC keeps #5220 between runs]) or where the frame is
+        not evaluated."""
+        run = self._run()
+        return None if run is None else run.work
+
     def work_offset(self, index: int, axis: str) -> float | None:
         """Work system ``index``'s offset on ``axis`` where the program set it (a G10 before)."""
         run = self._run()

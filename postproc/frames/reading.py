@@ -45,6 +45,10 @@ def read_frame(block: Block, ctx: Context, kind: str, code: str, values: dict[st
     elif kind == "rotate":
         plane = ctx.state.plane
         words = {k: v for k, v in values.items() if k in plane}
+        third = {"XY": "Z", "ZX": "Y", "YZ": "X"}[plane]
+        if rules == "isg" and third in values:
+            # [V] Beckhoff TF5200 diagnosis ID 22156: only the plane's two main axes give the centre
+            raise ProgramError(f"{code} takes the centre on the plane's two axes: {third} belongs in the next block", at)
         if "R" in values:
             words["R"] = _angle(block, values["R"], rules)
     elif kind == "scale":

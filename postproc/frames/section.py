@@ -3,7 +3,7 @@
 Neutral, as the rest of the IR: ``kind`` says "local offset" or "rotation", never "G52" or "G68". The
 words are those the command takes, by letter, in program units (an angle in degrees): an axis letter
 is an offset, a centre or a mirror line on that axis; ``R`` an angle; ``P`` a common scale factor and
-``I J K`` per-axis factors. ``rules`` names whose semantics the command has ('fanuc' or 'rs274', see
+``I J K`` per-axis factors. ``rules`` names whose semantics the command has ('fanuc', 'rs274', 'isg' or 'chain', see
 ``postproc.frames.frame``). ``family`` and ``text`` keep the command as written, for a target of the same
 family that runs it natively (``postproc.frames.lowering``).
 
@@ -15,6 +15,13 @@ Kinds (what each does is in ``postproc.frames.frame``):
 - ``scale`` / ``scale_off``: scaling about a centre (Fanuc G51 / G50);
 - ``mirror`` / ``mirror_off``: programmable mirror image (Fanuc G51.1 / G50.1);
 - ``polar`` / ``polar_off``: polar coordinates in the active plane (Fanuc G16 / G15).
+
+Under the ``chain`` rules (a programmable frame that each command replaces or extends) ``local``,
+``rotate``, ``scale`` and ``mirror`` replace the whole programmable frame by one component (no words: the
+frame is cleared), and ``local_add``, ``rotate_add``, ``scale_add`` and ``mirror_add`` chain the component
+onto the frame in force. Their words: ``local``: X Y Z offsets; ``rotate``: ``R`` (degrees in the active
+plane) or one of ``A B C`` (degrees about X, Y or Z); ``scale``: ``I J K`` factors on X, Y, Z; ``mirror``:
+the axes whose direction turns over (their values mean nothing).
 """
 
 from __future__ import annotations
@@ -29,9 +36,10 @@ if TYPE_CHECKING:  # annotations only: lxml is imported where XML is read or wri
     from lxml import etree
 
 KINDS: Final = frozenset(("local", "origin", "origin_clear", "origin_suspend", "origin_restore", "rotate",
-                          "rotate_off", "scale", "scale_off", "mirror", "mirror_off", "polar", "polar_off"))
+                          "rotate_off", "scale", "scale_off", "mirror", "mirror_off", "polar", "polar_off", "local_add",
+                          "rotate_add", "scale_add", "mirror_add"))
 """Every kind of frame change the IR models."""
-RULES: Final = frozenset(("fanuc", "rs274"))
+RULES: Final = frozenset(("fanuc", "rs274", "chain", "isg"))
 """The semantics a frame change may have (``postproc.frames.frame``)."""
 
 

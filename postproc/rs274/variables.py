@@ -229,7 +229,10 @@ class NgcVariables:
             axis = NGC_AXES[key - NGC_ORIGIN_APPLIED - 1]
             return self._in_machine_units(axis, frames.origin_parameter(axis))
         if key < NGC_WORK_FIRST:
-            return None  # #5220, the active work system: the reading state's, not the frame's [?: not read here]
+            # #5220, the active work system, 1 (G54) to 9 (G59.3) [V: interp_parameter_def.hh], once the program
+            # selected one
+            work = frames.work_system()
+            return None if work is None else float(work)
         system, item = divmod(key - NGC_WORK_FIRST, NGC_WORK_STRIDE)
         if item < len(NGC_AXES):
             axis = NGC_AXES[item]

@@ -1,6 +1,11 @@
 """The user's program transforms (``translate --units --transform``), run on the lowered blocks before the
 writer: first the map (in the program's own units, as it tracks them), then the units conversion.
 
+A lathe program (``Context.lathe``) takes ``--units``: its X is a length like any (a diameter converts as its
+radius), its surface speed under G96 with the lengths (``units``); a lathe cycle kept for the target is refused
+(its parameters are not converted), one the target lacks arrives as its moves. ``--transform`` is refused on a
+lathe (``transform_program``).
+
 They run last so that every step before them (frames evaluated, cycles expanded, compensation resolved)
 has made the blocks the target gets: what they carry is what is written.
 """
@@ -42,9 +47,10 @@ def program_options(units: str | None = None, transform: str | ProgramTransform 
 
 def transform_program(blocks: Iterator[Block], ctx: Context, options: ProgramOptions) -> Iterator[Block]:
     """The map, then the units (each only when asked for)."""
-    if options.active() and ctx.lathe:
-        raise UsageError("--units and --transform take mill programs only (a lathe's diameters, its cycles and "
-                         "its surface speed are not converted)")
+    if options.transform is not None and ctx.lathe:
+        raise UsageError("--transform takes mill programs only: on a lathe X is a diameter or radius about the "
+                         "spindle's axis, its incremental U/W, reference returns and cycles are not carried, and "
+                         "verify cannot yet follow a reference return under a moved program")
     if options.transform is not None:
         blocks = move_program(blocks, ctx, options.transform)
     if options.units is not None:

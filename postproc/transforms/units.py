@@ -2,8 +2,9 @@
 
 Every length is multiplied by the factor from the units it is programmed in (the program's own ``Units``
 as it goes; millimetres before any, as the simulation reads it) to the target's: coordinates absolute
-and incremental, arc centre offsets and radii, feeds per minute and per revolution (an inverse-time feed
-is a time and stays), hole cycle words by their role (the hole position, the R level, the bottom, a peck
+and incremental (a lathe's X diameter too), arc centre offsets and radii, feeds per minute and per revolution
+(an inverse-time feed is a time and stays), a surface speed under G96 (metres to feet per minute), a lathe's
+coordinate setting and thread lead, hole cycle words by their role (the hole position, the R level, the bottom, a peck
 depth or a shift; a dwell and a repeat count stay) with the cycle's resolved levels, tool data and work
 offsets a ``G10`` writes (a work system rotation is an angle and stays), a dynamic tool length, blending
 tolerances, the lengths of a frame command kept as written, a rigid tap's end point and pitch. Each
@@ -27,8 +28,9 @@ from ..errors import PostprocError, ProgramError
 from ..expr import Expr
 from ..frames.frame import PLANE_AXES
 from ..frames.section import FrameChange
-from ..ir import (Block, CompoundMotion, DataSetting, Feed, Motion, NativeCode, PathControl, Section, ToolLengthOffset,
-                  Units)
+from ..lathe_sections import CoordinateSet, InProfile, LatheCycle, SpindleMode, ThreadLead
+from ..ir import (Block, CompoundMotion, DataSetting, Feed, Motion, NativeCode, PathControl, Section, SpindleSpeed,
+                  ToolLengthOffset, Units)
 from ..state import MM_PER_INCH
 from ..synchronised_tap import RigidTap
 from .carry import native
@@ -37,6 +39,9 @@ from .words import COMPUTED, COMPUTES, INERT, SYMBOLIC, cycle_roles, named, resp
 WHAT: Final = "converted to other units"
 LINEAR: Final = frozenset("XYZUVW")
 _LENGTH_ROLES: Final = frozenset(("first", "second", "level", "bottom", "peck", "shift"))
+SURFACE_SPEED: Final = {"inch": 1.0 / 0.3048, "mm": 0.3048}
+"""A surface speed (G96 S) into the target's units: metres per minute under mm, feet per minute under inch
+[V: LinuxCNC G-code reference, G96; K: Fanuc 0i-TF operator's manual, constant surface speed control]."""
 _TOOL_TABLES: Final = frozenset(("tool_length", "tool_length_wear", "cutter_offset", "cutter_offset_wear"))
 _OPENING: Final = frozenset(("TapeMark", "ProgramStart", "Comments", "Sequence", "BlockDelete"))
 """Sections of the blocks a program opens with before it does anything (the unit code goes after them)."""
@@ -78,6 +83,8 @@ class UnitConverter:
         self.plane = "XY"
         self.angle: str | None = None
         """Polar coordinates (G16) are on: this axis word is an angle in degrees, not a length."""
+        self.css = False
+        """Constant surface speed (G96) is on: S is metres or feet per minute, converted with the lengths."""
 
     def block(self, block: Block) -> None:
         s = block.sections
@@ -98,7 +105,14 @@ class UnitConverter:
         mode = s.get("FeedMode")
         if mode is not None:
             self.per_time = getattr(mode, "mode", "") != "inverse_time"
+        spindle = s.get("SpindleMode")
+        if isinstance(spindle, SpindleMode):
+            self.css = spindle.mode == "css"
         k = 1.0 if self.source == self.target else MM_PER_INCH if self.target == "mm" else 1.0 / MM_PER_INCH
+        speed = s.get("SpindleSpeed")
+        if self.css and k != 1.0 and isinstance(speed, SpindleSpeed):
+            s["SpindleSpeed"] = SpindleSpeed(_times(speed.rpm, SURFACE_SPEED[self.target]))
+            changed = True
         for key, section in list(s.items()):
             if key in COMPUTES and k != 1.0:  # (in the target's units already, a computed word stays right)
                 raise ProgramError(SYMBOLIC.format(what=WHAT))
@@ -119,8 +133,17 @@ class UnitConverter:
             if section.inert:
                 return section
             raise ProgramError(f"{section.what} is kept as written and cannot be {WHAT}")
+        if isinstance(section, LatheCycle):
+            raise ProgramError(f"a lathe cycle kept for the target ({section.kind.replace('_', ' ')}) cannot be {WHAT}: "
+                               "its parameters are not converted (a target that lacks the cycle gets its moves)")
+        if isinstance(section, (SpindleMode, InProfile)):
+            return section
         if k == 1.0:
             return section
+        if isinstance(section, CoordinateSet):
+            return CoordinateSet(_lengths(section.axes, k, None))
+        if isinstance(section, ThreadLead):
+            return ThreadLead(section.lead * k)
         if isinstance(section, Motion):
             return Motion(section.mode, _lengths(section.axes, k, self.angle), None if section.center is None else
                           _lengths(section.center, k), None if section.radius is None else _times(section.radius, k))

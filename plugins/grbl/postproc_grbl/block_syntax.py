@@ -30,6 +30,8 @@ class GrblBlockSyntax(GrblFamilyBlockSyntax):
     """G10 L2 P0-P6 sets a work system's offset (P0 the active one); other G10 forms are kept verbatim."""
     DATA_INCREMENTAL: ClassVar[bool] = False
     DATA_P0_ACTIVE: ClassVar[bool] = True
+    FRAME_RULES: ClassVar[str] = "rs274"
+    """G92/G92.1 (``codes``) mean LinuxCNC's."""
     REAL_LETTERS = frozenset("XYZIJKRPF")
     INTEGER_LETTERS = frozenset("NTL")
     M_GROUPS = M_GROUPS

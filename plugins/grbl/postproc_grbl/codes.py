@@ -38,6 +38,8 @@ ROWS = (
     ("G80", "09", "cycle_cancel", None),
     ("G90", "03", "distance", "absolute"),
     ("G91", "03", "distance", "incremental"),
+    ("G92", "00", "frame", "origin"),
+    ("G92.1", "00", "frame", "origin_clear"),
     ("G93", "05", "feed_mode", "inverse_time"),
     ("G94", "05", "feed_mode", "per_min"),
     ("M0", "", "program", "stop"),
@@ -54,13 +56,15 @@ ROWS = (
 )
 """Codes whose meaning the IR models and grbl runs (G43.1 takes its length from the Z word of its block:
 a tool length offset ``dynamic``; G61 is accepted and has no effect in grbl; M1 is
-accepted and ignored; M7 needs ENABLE_M7 in config.h)."""
+accepted and ignored; M7 needs ENABLE_M7 in config.h). G92 and G92.1 are LinuxCNC's, read into the frame under
+its rules (``postproc.frames``): G92 makes the current point read its words, ``G92 = MPos - WCS - TLO - WPos``
+on each named axis, absolute whatever G90/G91, kept through a work system change until G92.1 clears it [V: grbl
+1.1 ``gcode.c``, NON_MODAL_SET_COORDINATE_OFFSET; error 26 without an axis word]."""
 
 NATIVE_G: dict[str, str] = {
     "10": "set work offsets (G10 L2/L20)", "28.1": "store G28 position", "30.1": "store G30 position",
     "38.2": "probe toward, error on failure", "38.3": "probe toward", "38.4": "probe away, error on failure",
     "38.5": "probe away", "91.1": "incremental arc centres (the default)",
-    "92": "coordinate system offset", "92.1": "clear G92 offsets",
 }
 """grbl codes kept verbatim: they round-trip to grbl and are unsupported anywhere else."""
 

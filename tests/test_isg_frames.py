@@ -1,0 +1,145 @@
+"""ISG (Beckhoff TwinCAT CNC) ``G68 R.. X.. Y..`` / ``G69``: the contour rotation in G17, read on the neutral frame
+change under the ``isg`` rules (``postproc/frames/lowering.py`` ``isg_rotate``) [V: TF5200 programming manual,
+"Rotate the coordinate system in the plane (G68/G69)"].
+
+Expected points by hand: program (x, y) turned by a about (cx, cy) is
+(cx + (x-cx) cos a - (y-cy) sin a, cy + (x-cx) sin a + (y-cy) cos a). The LinuxCNC translations are run by rs274.
+"""
+
+from __future__ import annotations
+
+import io
+import math
+import random
+from typing import Any
+
+import pytest
+
+from postproc.api import translate
+from postproc.errors import Diagnostics, ErrorList
+from postproc.simulate.toolpath import toolpath_events
+from postproc.simulate.verify import verify_lines
+from tests.support.rs274 import available, canonical_moves, run_rs274
+
+HEAD = "N1 G71 G90 G17 G00 X0 Y0 Z0\n"
+
+
+def _translate(text: str, target: str, warnings: io.StringIO | None = None) -> str:
+    out = io.StringIO(newline="")
+    translate(io.StringIO(text, newline=""), out, file="in.nc", source="isg", target=target,
+              diagnostics=Diagnostics(warn_stream=warnings or io.StringIO()))
+    return out.getvalue()
+
+
+def _errors(text: str, target: str = "linuxcnc") -> list[str]:
+    with pytest.raises(ErrorList) as caught:
+        _translate(text, target)
+    return [str(e) for e in caught.value.errors]
+
+
+def _events(text: str) -> list[dict[str, Any]]:
+    return [e for e in toolpath_events(io.StringIO(text), file="in.nc", dialect="isg") if "move" in e]
+
+
+def _points(body: str) -> list[tuple[Any, ...]]:
+    return [(e["move"], round(e["x"], 6) + 0.0, round(e["y"], 6) + 0.0) for e in _events(HEAD + body + "M30\n")]
+
+
+def _turned(x: float, y: float, a: float, cx: float, cy: float) -> tuple[float, float]:
+    c, s = math.cos(math.radians(a)), math.sin(math.radians(a))
+    return round(cx + (x - cx) * c - (y - cy) * s, 6) + 0.0, round(cy + (x - cx) * s + (y - cy) * c, 6) + 0.0
+
+
+def test_g68_turns_the_programmed_points_about_its_centre() -> None:
+    # R90 about (10, 0): (20, 0) -> (10, 10); G91 X5: the increment turned, (0, 5) -> (10, 15); G69: (20, 0) as written
+    assert _points("G68 R90 X10 Y0\nG01 X20 Y0 F100\nG91 X5\nG90 G69\nG01 X20 Y0\n") == [
+        ("feed", 10, 10), ("feed", 10, 15), ("feed", 20, 0)]
+
+
+def test_a_second_g68_replaces_the_angle_and_r_is_absolute() -> None:
+    # R30 about (0, 0), then R45 about (0, 0): the second is 45 degrees, not 75
+    assert _points("G68 R30 X0 Y0\nG01 X10 Y0 F100\nG68 R45 X0 Y0\nG01 X10 Y0\n") == [
+        ("feed", *_turned(10, 0, 30, 0, 0)), ("feed", *_turned(10, 0, 45, 0, 0))]
+
+
+def test_an_omitted_centre_is_the_current_position_and_r_omitted_is_zero() -> None:
+    # the tool at (5, 5): G68 R60 turns about it; G68 X0 Y0 without R: 0 degrees
+    assert _points("G01 X5 Y5 F100\nG68 R60\nG01 X15 Y5\nG68 X0 Y0\nG01 X15 Y5\n") == [
+        ("feed", 5, 5), ("feed", *_turned(15, 5, 60, 5, 5)), ("feed", 15, 5)]
+
+
+def test_an_arc_keeps_its_centre_and_direction() -> None:
+    # R90 about (0, 0): G02 from (10, 0) to (0, -10) about (0, 0) becomes G02 from (0, 10) to (10, 0) about (0, 0)
+    arcs = [(e["move"], round(e["x"], 6) + 0.0, round(e["y"], 6) + 0.0, round(e["cx"], 6) + 0.0,
+             round(e["cy"], 6) + 0.0) for e in _events(HEAD + "G01 X10 Y0 F100\nG68 R90 X0 Y0\nG01 X10 Y0\n"
+                                                         "G02 X0 Y-10 I-10 J0\nM30\n") if e["move"] == "cw"]
+    assert arcs == [("cw", 10, 0, 0, 0)]
+
+
+def test_a_plane_change_ends_the_rotation_with_a_warning() -> None:
+    warnings = io.StringIO()
+    text = HEAD + "G68 R90 X0 Y0\nG01 X10 Y0 F100\nG18\nG17\nG01 X10 Y0\nM30\n"
+    out = _translate(text, "linuxcnc", warnings)
+    assert "the plane change ends the coordinate rotation" in warnings.getvalue()
+    assert _points("G68 R90 X0 Y0\nG01 X10 Y0 F100\nG18\nG17\nG01 X10 Y0\n") == [("feed", 0, 10), ("feed", 10, 0)]
+    _verify(text, out, "linuxcnc")
+
+
+def test_what_is_not_settled_or_not_allowed_is_refused() -> None:
+    assert "Z belongs in the next block" in _errors(HEAD + "G68 R30 X0 Y0 Z5\nM30\n")[0]
+    assert "only in G17" in _errors(HEAD + "G18\nG68 R30 Z0 X0\nM30\n")[0]
+    assert "without its centre while a rotation is on" in _errors(HEAD + "G68 R30 X0 Y0\nG68 R40\nM30\n")[0]
+    assert "with cutter compensation on" in _errors(
+        HEAD + "D1\nG41 G01 X10 Y0 F100\nG68 R30 X0 Y0\nG01 X20\nG40 G01 X0 Y0\nM30\n")[0]
+
+
+def test_isg_to_isg_keeps_g68_as_written() -> None:
+    text = HEAD + "G68 R30 X1 Y2\nG01 X10 Y0 F100\nG69\nM30\n"
+    assert _translate(text, "isg") == text
+
+
+def _verify(a: str, b: str, target: str) -> None:
+    report = verify_lines(io.StringIO(a), io.StringIO(b), file_in="a", file_out="b", source="isg", target=target,
+                          tolerance=1e-3)
+    assert report.ok, report.summary() + "\n--- a\n" + a + "--- b\n" + b
+
+
+def _program(seed: int) -> str:
+    rng = random.Random(seed)
+    lines = ["%frames", "N1 G71 G90 G17 G00 X0 Y0 Z5"]
+    for _ in range(rng.randint(2, 5)):
+        if rng.random() < 0.2:
+            lines.append("G69")
+        else:
+            lines.append(f"G68 R{rng.uniform(-180, 180):.3f} X{rng.randint(-20, 20)} Y{rng.randint(-20, 20)}")
+        x, y = rng.randint(-20, 20), rng.randint(-20, 20)
+        lines.append(f"G01 X{x} Y{y} Z{rng.randint(-3, 3)} F{rng.randint(50, 500)}")
+        kind = rng.choice(["r", "ij", "incremental"])
+        if kind == "r":
+            ex, ey = x + rng.randint(-15, 15), y + rng.randint(1, 15)
+            radius = math.hypot(ex - x, ey - y) / 2 * rng.uniform(1.05, 3.0)
+            lines.append(f"G0{rng.choice('23')} X{ex} Y{ey} R{radius:.4f}")
+        elif kind == "ij":
+            i, j = rng.randint(-9, 9) or 3, rng.randint(-9, 9)
+            turn = math.radians(rng.uniform(20, 300))
+            ex = x + i - i * math.cos(turn) + j * math.sin(turn)
+            ey = y + j - i * math.sin(turn) - j * math.cos(turn)
+            lines.append(f"G0{rng.choice('23')} X{ex:.4f} Y{ey:.4f} I{i} J{j}")
+        else:
+            lines.append(f"G91 G01 X{rng.randint(-5, 5)} Y{rng.randint(-5, 5)}\nG90")
+    lines += ["G69", "G00 Z50", "M30"]
+    return "\n".join(lines) + "\n"
+
+
+@pytest.mark.skipif(not available(), reason="the LinuxCNC interpreter rs274 is not installed")
+@pytest.mark.parametrize("seed", range(10))
+def test_a_random_rotated_program_moves_in_rs274_as_its_isg_toolpath(seed: int) -> None:
+    text = _program(seed)
+    out = _translate(text, "linuxcnc")
+    theirs = [e for e in canonical_moves(run_rs274(out), start=(0.0, 0.0, 0.0)) if "move" in e]
+    ours = _events(text)
+    assert len(ours) == len(theirs), f"{len(ours)} moves here, {len(theirs)} in rs274\n{text}\n{out}"
+    for n, (a, b) in enumerate(zip(ours, theirs)):
+        assert a["move"] == b["move"], (n, a, b, text, out)
+        assert max(abs(float(a[k]) - float(b[k])) for k in "xyz") <= 2e-4, (n, a, b, text, out)
+    _verify(text, _translate(text, "grbl"), "grbl")
