@@ -43,7 +43,10 @@ class SiemensBlockSyntax(WordBlockSyntax):
     def build(self, block: Block, ctx: Context) -> None:
         levels = block.sections.pop(CycleLevels.KEY, None)
         if isinstance(levels, CycleLevels):
-            block.add(ReturnLevel(SiemensCycleRules.call(block, ctx, levels)))
+            level = SiemensCycleRules.call(block, ctx, levels)
+            if level is None:
+                return  # kept verbatim (``cycles.keep_verbatim``)
+            block.add(ReturnLevel(level))
         elif "CycleCancel" in block.sections:
             ctx.state.extra.pop(MCALL_KEY, None)
         super().build(block, ctx)

@@ -14,7 +14,8 @@ Read into neutral sections:
 * ``X=AC(..)``/``X=IC(..)``: the value as a plain word when the block's own ``G90``/``G91`` says the same
   thing (and ``I=IC(..)``: centres are incremental by default [K]); otherwise the per-address distance
   mode is not modelled and the block is kept verbatim;
-* ``MCALL CYCLE81(..)``/``MCALL CYCLE82(..)`` and a bare ``MCALL`` (``cycles``);
+* ``CYCLE81(..)`` ... ``CYCLE89(..)``, ``CYCLE840(..)`` alone in a block (called once), ``MCALL CYCLE8x(..)``
+  and a bare ``MCALL`` (``cycles``: which are read, which kept verbatim);
 * ``TRANS X.. Y.. Z..`` (numbers, alone in its block): the neutral local offset (``trans``);
 * ``DEF REAL|INT|BOOL NAME[=value], ...`` (an assignment of the value, 0 when none is given [K]);
 * ``IF``/``ELSE``/``ENDIF``, ``WHILE``/``ENDWHILE``, ``FOR``/``TO``/``ENDFOR``, ``REPEAT``/``UNTIL``,
@@ -27,7 +28,7 @@ Subprograms: ``NAME`` / ``NAME P3`` alone in a block calls ``NAME.SPF`` (3 times
 parameters) or an ``_SPF`` header makes the file a subprogram; ``RET``/``M17`` return.
 
 Kept verbatim (``NativeCode`` tagged ``siemens``: round trip byte for byte, refused by every other dialect
-and by the simulator, by name): frames (``TRANS``, ``ROT``...), cycles (``CYCLE81``...), ``MCALL``,
+and by the simulator, by name): frames (``TRANS``, ``ROT``...), the cycles ``cycles`` keeps verbatim, other ``MCALL``s,
 calls with parameters and ``PROC`` with parameters, every other instruction word (``SOFT``, ``BRISK``, ``SPOS``...),
 multi-letter addresses other than ``CR`` (``AR=``, ``TURN=``, ``I1=``...), ``T="name"``, string, array,
 ``CHAR``/``STRING``/``AXIS``/``FRAME`` declarations and the operators the IR lacks (``DIV``, ``B_AND``...).
@@ -52,12 +53,14 @@ from postproc.isg_family.expressions import Unmodelled
 from postproc.rs274.expressions import ExprSyntaxError
 from postproc.rs274.lexer import split_lines
 
-from .cycles import KINDS, PARAMETERS, cycle_words
+from .cycles import CYCLES, NotModelled, cycle_words
 from .expressions import name_at, parse_expr, parse_variable, skip
 from .keywords import INSTRUCTIONS, describe
 
 ADDRESSES = frozenset("GXYZABCIJKFSTDMH")
 """Single-letter addresses a word may have."""
+MAX_PARAMETERS = 64
+"""A cycle call with more parameters is a located error (no cycle has as many: hostile input)."""
 SKIP_LEVELS = 9
 """Block skip ``/0`` ... ``/9`` [K]."""
 TYPES = {"REAL": "real", "INT": "int", "BOOL": "bool"}
@@ -197,6 +200,10 @@ class _State:
             if word == "MCALL":
                 self.mcall(block, code, pos, end)
                 return
+            if word in CYCLES and code[skip(code, end):skip(code, end) + 1] == "(" \
+                    and BlockDelete.KEY not in block.sections:
+                self.cycle(block, code, pos, end, word, once=True)
+                return
             what = describe(word)
             if what is not None:
                 raise Unmodelled(what, pos)
@@ -244,16 +251,22 @@ class _State:
         block.add(FrameChange("local", words, "fanuc", "siemens", code[pos:].strip()))
 
     def mcall(self, block: Block, code: str, pos: int, end: int) -> None:
-        """``MCALL CYCLE81(..)``/``MCALL CYCLE82(..)`` with number parameters: the cycle's data block
-        (``cycles``); a bare ``MCALL`` cancels it. Other modal calls are kept verbatim."""
+        """``MCALL CYCLE8x(..)`` with number parameters: the cycle's data block (``cycles``); a bare ``MCALL``
+        cancels it. Other modal calls are kept verbatim."""
         at = skip(code, end)
         if at >= len(code):
             block.add(CycleCancel())
             return
         stop = name_at(code, at)
         name = code[at:stop].upper()
-        if name not in KINDS or code[skip(code, stop):skip(code, stop) + 1] != "(":
+        if name not in CYCLES or code[skip(code, stop):skip(code, stop) + 1] != "(":
             raise Unmodelled(f"MCALL {name or '..'} (a modal subprogram or cycle call)", pos)
+        self.cycle(block, code, pos, stop, name, once=False)
+
+    def cycle(self, block: Block, code: str, pos: int, stop: int, name: str, once: bool) -> None:
+        """``name(p1, , p3)`` from ``stop`` (after the name) to the end of the block: read on the neutral cycle
+        IR (``cycles``), or kept verbatim."""
+        shown = name if once else f"MCALL {name}"
         params: list[float | None] = []
         at = skip(code, stop) + 1
         while True:
@@ -263,9 +276,11 @@ class _State:
             else:
                 at, value = parse_expr(code, at)
                 if not isinstance(value, Num):
-                    raise Unmodelled(f"MCALL {name} with computed parameters", pos)
+                    raise Unmodelled(f"{shown} with computed parameters", pos)
                 params.append(value.value)
                 at = skip(code, at)
+            if len(params) > MAX_PARAMETERS:
+                raise self.error(block.line, at + 1, f"{name}(..) has more than {MAX_PARAMETERS} parameters")
             if code[at:at + 1] == ",":
                 at += 1
                 continue
@@ -273,16 +288,19 @@ class _State:
                 raise self.error(block.line, at + 1, f"',' or ')' expected in {name}(..)")
             break
         if skip(code, at + 1) < len(code):
-            raise self.error(block.line, skip(code, at + 1) + 1, f"MCALL {name}(..) is alone in its block")
-        if len(params) > len(PARAMETERS[name]):
-            raise Unmodelled(f"MCALL {name} with parameters after {PARAMETERS[name][-1]} (GMODE, DMODE...)", pos)
+            raise self.error(block.line, skip(code, at + 1) + 1, f"{shown}(..) is alone in its block")
+        names = CYCLES[name].parameters
+        if len(params) > len(names):
+            raise Unmodelled(f"{shown} with parameters after {names[-1]} (GMODE, DMODE...)", pos)
         try:
-            words, levels = cycle_words(name, params, pos)
+            kind, words, levels = cycle_words(name, params, once)
+        except NotModelled as err:
+            raise Unmodelled(err.what if once else f"MCALL {err.what}", pos) from None
         except ValueError as err:
             raise self.error(block.line, pos + 1, str(err)) from None
         block.words.extend(words)
         block.add(levels)
-        block.add(CycleCall(KINDS[name]))
+        block.add(CycleCall(kind))
 
     # -- subprograms -------------------------------------------------------------------------------------
     def procedure(self, block: Block, code: str, pos: int, end: int, word: str) -> None:
