@@ -24,12 +24,13 @@ Read into neutral sections:
   ``GOTOF``/``GOTOB`` target must lie in its direction (checked when the file ends): the neutral jump
   searches forward, then from the start, which is then each of them exactly.
 
-Subprograms: ``NAME`` / ``NAME P3`` alone in a block calls ``NAME.SPF`` (3 times); ``PROC NAME`` (no
-parameters) or an ``_SPF`` header makes the file a subprogram; ``RET``/``M17`` return.
+Subprograms: ``NAME`` / ``NAME P3`` alone in a block calls ``NAME.SPF`` (3 times), ``NAME(1, R2)`` with
+arguments; ``PROC NAME`` or ``PROC NAME(REAL A, INT B)`` (parameters by value) or an ``_SPF`` header makes the
+file a subprogram; ``RET``/``M17`` return.
 
 Kept verbatim (``NativeCode`` tagged ``siemens``: round trip byte for byte, refused by every other dialect
 and by the simulator, by name): frames (``TRANS``, ``ROT``...), the cycles ``cycles`` keeps verbatim, other ``MCALL``s,
-calls with parameters and ``PROC`` with parameters, every other instruction word (``SOFT``, ``BRISK``, ``SPOS``...),
+parameters by reference (``VAR``), every other instruction word (``SOFT``, ``BRISK``, ``SPOS``...),
 multi-letter addresses other than ``CR`` (``AR=``, ``TURN=``, ``I1=``...), ``T="name"``, string, array,
 ``CHAR``/``STRING``/``AXIS``/``FRAME`` declarations and the operators the IR lacks (``DIV``, ``B_AND``...).
 
@@ -60,7 +61,9 @@ from .keywords import INSTRUCTIONS, describe
 ADDRESSES = frozenset("GXYZABCIJKFSTDMH")
 """Single-letter addresses a word may have."""
 MAX_PARAMETERS = 64
-"""A cycle call with more parameters is a located error (no cycle has as many: hostile input)."""
+"""A cycle call, a ``PROC`` or a call with more parameters is a located error (hostile input)."""
+PARAMETER_COUNT = "%n"
+"""The variable a ``PROC`` with parameters sets to their number (``variables``: more arguments are an error)."""
 SKIP_LEVELS = 9
 """Block skip ``/0`` ... ``/9`` [K]."""
 TYPES = {"REAL": "real", "INT": "int", "BOOL": "bool"}
@@ -304,9 +307,11 @@ class _State:
 
     # -- subprograms -------------------------------------------------------------------------------------
     def procedure(self, block: Block, code: str, pos: int, end: int, word: str) -> None:
-        """``PROC NAME`` opens a subprogram without parameters (the file is its body); ``RET`` returns [K:
-        840D Fundamentals, "Subprograms"]. Parameters (``PROC NAME(REAL A)``) and ``SAVE``/``DISPLOF`` are
-        not modelled (kept verbatim)."""
+        """``PROC NAME`` opens a subprogram (the file is its body); ``RET`` returns [K: 840D Fundamentals,
+        "Subprograms"]. ``PROC NAME(REAL A, INT B)``: parameters called by value, each a local variable of
+        the subprogram set from the call's argument in its place (``procedure_parameters``). Parameters by
+        reference (``VAR``), arrays and the attributes ``SAVE``/``DISPLOF`` are not modelled (kept
+        verbatim)."""
         at = skip(code, end)
         if word == "RET":
             if at < len(code):
@@ -316,16 +321,64 @@ class _State:
         stop = name_at(code, at)
         if stop == at or code[at] not in _NAME_START:
             raise self.error(block.line, at + 1, "PROC needs a subprogram name")
-        if skip(code, stop) < len(code):
-            raise Unmodelled("PROC with parameters or attributes (SAVE, DISPLOF)", skip(code, stop))
+        rest = skip(code, stop)
+        if code[rest:rest + 1] == "(":
+            rest = self.procedure_parameters(block, code, rest)
+        if rest < len(code):
+            raise Unmodelled("PROC with attributes (SAVE, DISPLOF)", rest)
         self.subprogram = True
         if "Comments" not in block.sections:
             block.add(Comments([code[pos:].strip()]))
 
+    def procedure_parameters(self, block: Block, code: str, at: int) -> int:
+        """``(REAL A, INT B)`` from its ``(``: each parameter is declared (its type rounds an INT, as ``DEF``
+        does) and assigned the call's argument in its place; the position after ``)``. A call passes its
+        arguments as the subprogram level's ``%1``, ``%2``... (``variables``); ``%n`` set to the number of
+        parameters first makes a call with more arguments an error [K: 840D Job planning, "Subprogram with
+        parameter transfer (PROC, VAR)": call by value, parameters typed and positional; an argument left
+        out is not read here [?: its default is not confirmed]]."""
+        items: list[tuple[Var, Expr]] = []
+        while True:
+            at = skip(code, at + 1)
+            if code[at:at + 1] == ")" and not items:
+                break
+            type_end = name_at(code, at)
+            kind = code[at:type_end].upper()
+            if kind == "VAR":
+                raise Unmodelled("a parameter by reference (VAR)", at)
+            if kind not in TYPES:
+                raise Unmodelled(f"a PROC parameter of type {kind or '..'} (only REAL, INT and BOOL values are "
+                                 "modelled)", at)
+            start = skip(code, type_end)
+            name_end = name_at(code, start)
+            name = code[start:name_end]
+            upper = name.upper()
+            if not name or code[start] not in _NAME_START or upper[:1] == "R" and upper[1:].isdigit() \
+                    or len(name) == 1 and upper in ADDRESSES:
+                raise self.error(block.line, start + 1, "a PROC parameter needs a name that is no address or R "
+                                                        "parameter")
+            at = skip(code, name_end)
+            if code[at:at + 1] == "[":
+                raise Unmodelled("array parameters", start)
+            if len(items) >= MAX_PARAMETERS:
+                raise self.error(block.line, start + 1, f"PROC has more than {MAX_PARAMETERS} parameters")
+            var = Var(name=name.lower())
+            self.types[name.lower()] = TYPES[kind]
+            items.append((var, self.stored(var, Var(name=f"%{len(items) + 1}"))))
+            if code[at:at + 1] == ",":
+                continue
+            if code[at:at + 1] != ")":
+                raise self.error(block.line, at + 1, "',' or ')' expected in the PROC parameters")
+            break
+        if items:
+            block.add(Assign([(Var(name=PARAMETER_COUNT), Num(float(len(items)))), *items]))
+        return skip(code, at + 1)
+
     def call(self, block: Block, code: str, pos: int, end: int) -> bool:
         """``NAME`` or ``NAME P3`` alone in its block: a call of subprogram ``NAME`` (file ``NAME.SPF``), run
         3 times, with its own local variables [K: 840D Fundamentals, "Subprogram call", "Program repetition
-        P"]. ``NAME(..)`` (parameters) is not modelled. Anything else is no call (the words are read)."""
+        P"]. ``NAME(1, R2*2)``: a call with arguments, by value, in the order of the subprogram's ``PROC``
+        parameters (``procedure_parameters``). Anything else is no call (the words are read)."""
         name = code[pos:end]
         upper = name.upper()
         n = len(code)
@@ -334,10 +387,13 @@ class _State:
                 or len(name) == 1 or upper[:1] in ADDRESSES and upper[1:2] in _NUMBER_START \
                 or code[at:at + 1] == "=":
             return False
+        args: dict[int, Expr] = {}
         if code[at:at + 1] == "(":
-            raise Unmodelled(f"a call of {upper} with parameters", pos)
+            at = self.arguments(block, code, at, upper, args)
         repeat: Expr | None = None
         if at < n:
+            if args:
+                raise Unmodelled(f"a call of {upper} with arguments and more after them (P repetitions)", pos)
             if code[at] not in "Pp":
                 raise Unmodelled(f"'{name}' (an instruction or a subprogram call)", pos)
             start = skip(code, at + 1 + (code[skip(code, at + 1):skip(code, at + 1) + 1] == "="))
@@ -347,8 +403,29 @@ class _State:
             if stop == start or skip(code, stop) < n:
                 raise self.error(block.line, at + 1, f"a call of {upper} repeats a whole number of times: {upper} P3")
             repeat = Num(float(int(code[start:stop])))
-        block.add(Call(upper, repeat=repeat, kind="macro"))
+        block.add(Call(upper, args, repeat=repeat, kind="macro"))
         return True
+
+    def arguments(self, block: Block, code: str, at: int, name: str, args: dict[int, Expr]) -> int:
+        """``(1, R2*2)`` from its ``(`` into ``args`` (1, 2...); the position after ``)``."""
+        while True:
+            at = skip(code, at + 1)
+            if code[at:at + 1] == ")" and not args:
+                break
+            if code[at:at + 1] in (",", ")"):
+                raise self.error(block.line, at + 1, f"an empty argument of {name}: its default is not confirmed "
+                                                     "here [?]")
+            if len(args) >= MAX_PARAMETERS:
+                raise self.error(block.line, at + 1, f"a call of {name} has more than {MAX_PARAMETERS} arguments")
+            at, value = parse_expr(code, at)
+            args[len(args) + 1] = value
+            at = skip(code, at)
+            if code[at:at + 1] == ",":
+                continue
+            if code[at:at + 1] != ")":
+                raise self.error(block.line, at + 1, f"',' or ')' expected in the arguments of {name}")
+            break
+        return skip(code, at + 1)
 
     def returns(self, block: Block, code: str) -> None:
         """``M17`` returns from a subprogram; ``M2``/``M30`` in a subprogram file is refused (whether it
