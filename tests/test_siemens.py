@@ -371,7 +371,7 @@ def test_subprogram_ends_and_parameters_that_are_not_modelled(tmp_path: Path) ->
     assert "M30 in a subprogram: write RET or M17" in _errors("G710 G90 G0 X0\nENDS\nM30\n", "siemens",
                                                                "linuxcnc", setup)[0]
     assert "the call passes 2 arguments to a subprogram without PROC parameters" in _errors(
-        "G710 G90 G0 X0\nSTEP(1, 2)\nM30\n", "siemens", "linuxcnc", setup)[0]
+        "G710 G90 G0 X0\nR1=0\nSTEP(1, 2)\nM30\n", "siemens", "linuxcnc", setup)[0]
     assert "RET" in _errors("G710 G90 G0 X0\nRET\n", "siemens", "linuxcnc", setup)[0]
 
 
