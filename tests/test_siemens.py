@@ -254,7 +254,7 @@ def test_a_name_as_a_tool_and_the_cycles_are_kept_verbatim() -> None:
     text = "G710 G90\nT=\"DRILL\"\nCYCLE83(10,0,2,-5)\nMCALL CYCLE86(10,0,2,-5,,1)\nMCALL\nM30\n"
     assert _translate(text, "siemens", "siemens") == text
     errors = _errors(text, "siemens", "fanuc")
-    assert "T=\"..\" (a name as the value)" in errors[0]
+    assert "T=\"DRILL\" (no tool of the set-up has this name" in errors[0]
     assert "CYCLE83 (its degression DAM" in errors[1]
     assert "MCALL CYCLE86 (its lift-off RPA/RPO/RPAP in three axes has no neutral cycle)" in errors[2]
 

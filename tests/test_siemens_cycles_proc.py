@@ -128,3 +128,43 @@ def test_what_a_proc_line_has_beyond_values_is_kept_verbatim(tmp_path: Path, pro
 def test_a_malformed_proc_line_is_a_located_error(tmp_path: Path, proc: str, message: str) -> None:
     errors = _errors(f"%_N_BAD_SPF\n{proc}\nG1 X1 F100\nRET\n", _library(tmp_path))
     assert any(message in e for e in errors), errors
+
+
+# -- T="name" ------------------------------------------------------------------------------------------------
+
+def _named_tools() -> MachineSetup:
+    from postproc.setup.machine_setup import load_setup
+    return load_setup(str(Path(__file__).resolve().parents[1] / "tests" / "support" / "named_tools.xml"))
+
+
+def test_a_tool_by_name_is_the_set_ups_tool_of_that_name() -> None:
+    setup = _named_tools()
+    text = 'G710 G17 G90 G0 X0 Y0 Z5\nT="DRILL_8" D1\nM6\nG0 X10\nM30\n'
+    numbered = 'G710 G17 G90 G0 X0 Y0 Z5\nT3 D1\nM6\nG0 X10\nM30\n'
+    assert _translate(text, "siemens", setup) == text
+    for target in ("fanuc", "linuxcnc"):  # named tool 3 is T3 (the set-up says so), nothing else changes
+        assert _translate(text, target, setup) == _translate(numbered, target, setup)
+        assert "T3" in _translate(text, target, setup)
+
+
+@pytest.mark.parametrize("line, message", [
+    ('T="NOPE"', '2:1: error: T="NOPE" (no tool of the set-up has this name'),
+    ('T="drill_8"', '2:1: error: T="drill_8" (no tool of the set-up has this name'),
+    ('T="DRILL_8', "2:3: error: the tool's name has no closing '\"'"),
+])
+def test_a_tool_name_the_set_up_lacks_is_a_located_error(line: str, message: str) -> None:
+    if "NOPE" in line:  # kept verbatim: a SINUMERIK program is still copied
+        assert _translate(f"G710 G90 G0 X0\n{line}\nM30\n", "siemens", _named_tools()) == f"G710 G90 G0 X0\n{line}\nM30\n"
+    with pytest.raises(ErrorList) as caught:
+        _translate(f"G710 G90 G0 X0\n{line}\nM30\n", "linuxcnc", _named_tools())
+    assert message in str(caught.value.errors[0])
+
+
+def test_a_tool_name_with_a_quote_or_too_long_is_refused_by_the_set_up(tmp_path: Path) -> None:
+    from postproc.errors import ConfigError
+    from postproc.setup.machine_setup import load_setup
+    for name in ("A" * 33, "A&quot;B"):
+        path = tmp_path / "bad.xml"
+        path.write_text(f'<MachineSetup><Tools><Tool number="1" name="{name}"/></Tools></MachineSetup>')
+        with pytest.raises(ConfigError):
+            load_setup(str(path))

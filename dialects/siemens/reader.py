@@ -31,7 +31,8 @@ file a subprogram; ``RET``/``M17`` return.
 Kept verbatim (``NativeCode`` tagged ``siemens``: round trip byte for byte, refused by every other dialect
 and by the simulator, by name): frames (``TRANS``, ``ROT``...), the cycles ``cycles`` keeps verbatim, other ``MCALL``s,
 parameters by reference (``VAR``), every other instruction word (``SOFT``, ``BRISK``, ``SPOS``...),
-multi-letter addresses other than ``CR`` (``AR=``, ``TURN=``, ``I1=``...), ``T="name"``, string, array,
+multi-letter addresses other than ``CR`` (``AR=``, ``TURN=``, ``I1=``...), strings other than ``T="name"``
+(the set-up's tool of that name), array,
 ``CHAR``/``STRING``/``AXIS``/``FRAME`` declarations and the operators the IR lacks (``DIV``, ``B_AND``...).
 
 Errors are reported per block; the block is kept as text only, and reading goes on.
@@ -79,7 +80,8 @@ _JUMPS = ("GOTOF", "GOTOB", "GOTOC", "GOTO")
 class SiemensReader(Reader):
     def read(self, lines: Iterable[str]) -> Iterator[Block]:
         report = self.ctx.diagnostics.error
-        state = _State(self.ctx.file, subprogram=self.ctx.file.upper().endswith(".SPF"))
+        state = _State(self.ctx.file, subprogram=self.ctx.file.upper().endswith(".SPF"),
+                       tool_names={t.name: t.number for t in self.ctx.setup.tools.values() if t.name is not None})
         for number, text, eol in split_lines(lines):
             try:
                 yield state.block(number, text, eol)
@@ -115,6 +117,8 @@ class _State:
     jumps: list[_Jump] = field(default_factory=list)
     types: dict[str, str] = field(default_factory=dict)
     """Declared user variables (lower case) -> their type."""
+    tool_names: dict[str, int] = field(default_factory=dict)
+    """The set-up's tool names -> their numbers (``T="name"``)."""
     subprogram: bool = False
     """The file is a subprogram: a ``.SPF`` file (every file a call loads is one), an ``_SPF`` header or a
     ``PROC`` line."""
@@ -664,9 +668,12 @@ class _State:
 
     def value(self, block: Block, code: str, pos: int, start: int, letter: str,
               modes: list[tuple[str, str, int]]) -> int:
-        """``X=10``, ``X=R1*2``, ``X=AC(10)``; a ``"string"`` (``T="DRILL"``) is not modelled."""
+        """``X=10``, ``X=R1*2``, ``X=AC(10)``; ``T="DRILL"`` (``tool``); any other ``"string"`` is not
+        modelled."""
         at = skip(code, start)
         if code[at:at + 1] == '"':
+            if letter.upper() == "T":
+                return self.tool(block, code, at)
             raise Unmodelled(f"{letter.upper()}=\"..\" (a name as the value)", pos)
         head = code[at:at + 3].upper()
         mode = ""
@@ -686,6 +693,23 @@ class _State:
             block.words.append((letter, text))
             block.values[letter.upper()] = value
         return end
+
+    def tool(self, block: Block, code: str, at: int) -> int:
+        """``T="DRILL_8"`` from its opening quote: the set-up's tool of that name, read as its number (``T3``);
+        a name no tool has keeps the block verbatim (a SINUMERIK program is still copied; elsewhere it is a
+        located error naming it). The name is matched exactly [?: whether tool management
+        compares names ignoring case is not confirmed here]."""
+        close = code.find('"', at + 1)
+        if close < 0:
+            raise self.error(block.line, at + 1, "the tool's name has no closing '\"'")
+        name = code[at + 1:close]
+        number = self.tool_names.get(name)
+        if number is None:
+            known = ", ".join(sorted(self.tool_names)) or "none has a name"
+            raise Unmodelled(f'T="{name}" (no tool of the set-up has this name: <Tool number=".." name="{name}"/>; '
+                             f'named: {known})', at)
+        block.words.append(("T", str(number)))
+        return close + 1
 
     def distance_modes(self, block: Block, modes: list[tuple[str, str, int]]) -> None:
         """``=AC()``/``=IC()`` as plain values where the block's own G90/G91 means the same (and ``IC`` on a
