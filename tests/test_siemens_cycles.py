@@ -241,7 +241,78 @@ def test_any_drilling_call_once_moves_to_r_cuts_to_the_depth_and_rises_to_rtp(
 
 
 def _close(ours: list[tuple[object, ...]], expected: list[tuple[object, ...]]) -> None:
+    """The same events, coordinates within 1e-6 (the toolpath writes 6 decimals)."""
     assert len(ours) == len(expected), (ours, expected)
     for a, b in zip(ours, expected):
         assert a[0] == b[0], (ours, expected)
-        assert all(abs(float(str(x)) - float(str(y))) < 1e-9 for x, y in zip(a[1:], b[1:])), (ours, expected)
+        assert all(abs(float(str(x)) - float(str(y))) < 1e-6 for x, y in zip(a[1:], b[1:])), (ours, expected)
+
+
+# -- HOLES1 / HOLES2 under MCALL ---------------------------------------------------------------------------
+
+HOLES = (START + "MCALL CYCLE81(50, 0, 2, -5)\nHOLES1(10, 10, 30, 4, 6, 3)\nHOLES2(60, 40, 10, 90, 0, 4)\n"
+         "HOLES2(60, 40, 10, 0, -45, 2)\nMCALL\nM30\n")
+
+
+def _drill(x: float, y: float) -> list[tuple[object, ...]]:
+    """CYCLE81(50, 0, 2, -5) at (x, y) from Z50: over the hole, G0 to 2, G1 to -5, G0 to 50."""
+    return [("rapid", x, y, 50), ("rapid", x, y, 2), ("feed", x, y, -5), ("rapid", x, y, 50)]
+
+
+def test_holes1_and_holes2_run_the_modal_cycle_at_hand_derived_points() -> None:
+    c30, s30 = 3 ** 0.5 / 2, 0.5
+    h = 0.5 ** 0.5 * 10
+    expected = (
+        # HOLES1: from (10, 10) at 30 degrees, 4 to the first hole, 6 between: distances 4, 10, 16
+        _drill(10 + 4 * c30, 10 + 4 * s30) + _drill(10 + 10 * c30, 10 + 10 * s30) + _drill(10 + 16 * c30, 10 + 16 * s30)
+        # HOLES2: centre (60, 40), radius 10, from 90 degrees, INDA 0: 4 holes 90 degrees apart (counter-clockwise)
+        + _drill(60, 50) + _drill(50, 40) + _drill(60, 30) + _drill(70, 40)
+        # INDA -45: from 0 degrees clockwise; the first hole is where the tool stands (no move over it)
+        + _drill(70, 40)[1:] + _drill(60 + h, 40 - h))
+    _close(_after_start(HOLES[len(START):]), expected)
+
+
+@pytest.mark.parametrize("target", ["fanuc", "linuxcnc", "grbl", "siemens"])
+def test_hole_patterns_translate_exactly(target: str) -> None:
+    if target == "siemens":
+        assert _translate(HOLES, target) == HOLES
+    else:
+        _verify(HOLES, target)
+
+
+@pytest.mark.parametrize("lines, name", [
+    ("HOLES1(10, 10, 0, 5, 10, 3)", "HOLES1 without an active MCALL cycle"),
+    ("MCALL CYCLE81(50, 0, 2, -5)\nHOLES1(-40, 5, 0, 5, 10, 3)", "HOLES1 with the tool not nearer its first hole"),
+    ("MCALL CYCLE83(50, 0, 2, -20, , -5, , 2, 0, 0, 1, 1)\nHOLES2(60, 40, 10, 90, 0, 4)",
+     "MCALL CYCLE83 (its degression DAM"),
+])
+def test_a_pattern_that_is_not_read_is_kept_verbatim(lines: str, name: str) -> None:
+    text = f"{START}{lines}\nMCALL\nM30\n"
+    assert _translate(text, "siemens") == text
+    assert name in _errors(text, "linuxcnc")[0]
+
+
+@pytest.mark.parametrize("line, message", [
+    ("HOLES1(10, 10, 0, 5, 10)", "6:1: error: HOLES1 takes its 6 parameters, each given"),
+    ("HOLES1(10, 10, 0, , 10, 3)", "HOLES1 takes its 6 parameters, each given"),
+    ("HOLES1(10, 10, 0, 5, 10, 2.5)", "NUM is a whole number of holes from 1 to 10000, not 2.5"),
+    ("HOLES2(60, 40, 10, 0, 0, 0)", "NUM is a whole number of holes from 1 to 10000, not 0"),
+    ("HOLES2(60, 40, 10, 0, 0, 1EX9)", "NUM is a whole number of holes from 1 to 10000"),
+    ("HOLES1(10, 10, 0, -5, 10, 3)", "HOLES1: FDIS and DBH have no sign"),
+    ("HOLES2(60, 40, 0, 0, 0, 3)", "HOLES2: the radius RAD is positive"),
+])
+def test_a_bad_pattern_call_is_a_located_error(line: str, message: str) -> None:
+    errors = _errors(f"{START}MCALL CYCLE81(50, 0, 2, -5)\n{line}\nMCALL\nM30\n", "linuxcnc")
+    assert any(message in e for e in errors), errors
+
+
+def test_the_moves_of_a_pattern_are_bounded_by_the_set_up(tmp_path: Path) -> None:
+    from postproc.setup.machine_setup import load_setup
+    path = tmp_path / "limits.xml"
+    path.write_text('<MachineSetup><Limits movesPerBlock="100"/></MachineSetup>')
+    text = f"{START}MCALL CYCLE81(50, 0, 2, -5)\nHOLES2(60, 40, 10, 0, 0, 30)\nMCALL\nM30\n"
+    out = io.StringIO()
+    with pytest.raises(ErrorList) as caught:  # 30 holes of 4 moves: 120 moves
+        translate(io.StringIO(text), out, file="in.mpf", source="siemens", target="linuxcnc",
+                  setup=load_setup(str(path)), diagnostics=Diagnostics(warn_stream=io.StringIO()))
+    assert "6:1: error: HOLES2: 30 holes make more than 100 moves in one block" in str(caught.value.errors[0])

@@ -25,6 +25,8 @@ from postproc.rs274.codes import CodeTable, g_key
 
 from .codes import CODES, GEOMETRY_UNITS
 from .cycles import MCALL_KEY, CycleLevels, SiemensCycleRules
+from .holes import SiemensHoles
+from .holes import resolve as resolve_holes
 
 GEOMETRY_KEY = "siemens_geometry_units"
 """``ctx.state.extra`` key: True while G70/G71 (lengths only) is the units code in force."""
@@ -41,6 +43,11 @@ class SiemensBlockSyntax(WordBlockSyntax):
     POINTLESS_IN_UNITS: ClassVar[bool] = True
 
     def build(self, block: Block, ctx: Context) -> None:
+        holes = block.sections.pop(SiemensHoles.KEY, None)
+        if isinstance(holes, SiemensHoles):
+            resolve_holes(block, ctx, holes)
+            if "NativeCode" in block.sections:
+                return  # kept verbatim (``holes``)
         levels = block.sections.pop(CycleLevels.KEY, None)
         if isinstance(levels, CycleLevels):
             level = SiemensCycleRules.call(block, ctx, levels)

@@ -15,7 +15,7 @@ Read into neutral sections:
   thing (and ``I=IC(..)``: centres are incremental by default [K]); otherwise the per-address distance
   mode is not modelled and the block is kept verbatim;
 * ``CYCLE81(..)`` ... ``CYCLE89(..)``, ``CYCLE840(..)`` alone in a block (called once), ``MCALL CYCLE8x(..)``
-  and a bare ``MCALL`` (``cycles``: which are read, which kept verbatim);
+  and a bare ``MCALL`` (``cycles``: which are read, which kept verbatim); ``HOLES1(..)``/``HOLES2(..)`` (``holes``);
 * ``TRANS X.. Y.. Z..`` (numbers, alone in its block): the neutral local offset (``trans``);
 * ``DEF REAL|INT|BOOL NAME[=value], ...`` (an assignment of the value, 0 when none is given [K]);
 * ``IF``/``ELSE``/``ENDIF``, ``WHILE``/``ENDWHILE``, ``FOR``/``TO``/``ENDFOR``, ``REPEAT``/``UNTIL``,
@@ -56,6 +56,8 @@ from postproc.rs274.expressions import ExprSyntaxError
 from postproc.rs274.lexer import split_lines
 
 from .cycles import CYCLES, NotModelled, cycle_words
+from .holes import PARAMETERS as HOLES
+from .holes import read_holes
 from .expressions import name_at, parse_expr, parse_variable, skip
 from .keywords import INSTRUCTIONS, describe
 
@@ -207,7 +209,7 @@ class _State:
             if word == "MCALL":
                 self.mcall(block, code, pos, end)
                 return
-            if word in CYCLES and code[skip(code, end):skip(code, end) + 1] == "(" \
+            if (word in CYCLES or word in HOLES) and code[skip(code, end):skip(code, end) + 1] == "(" \
                     and BlockDelete.KEY not in block.sections:
                 self.cycle(block, code, pos, end, word, once=True)
                 return
@@ -296,6 +298,12 @@ class _State:
             break
         if skip(code, at + 1) < len(code):
             raise self.error(block.line, skip(code, at + 1) + 1, f"{shown}(..) is alone in its block")
+        if name in HOLES:
+            try:
+                block.add(read_holes(name, params))
+            except ValueError as err:
+                raise self.error(block.line, pos + 1, str(err)) from None
+            return
         names = CYCLES[name].parameters
         if len(params) > len(names):
             raise Unmodelled(f"{shown} with parameters after {names[-1]} (GMODE, DMODE...)", pos)
