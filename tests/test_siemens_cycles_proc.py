@@ -168,3 +168,18 @@ def test_a_tool_name_with_a_quote_or_too_long_is_refused_by_the_set_up(tmp_path:
         path.write_text(f'<MachineSetup><Tools><Tool number="1" name="{name}"/></Tools></MachineSetup>')
         with pytest.raises(ConfigError):
             load_setup(str(path))
+
+
+# -- against LinuxCNC's interpreter ----------------------------------------------------------------------------
+
+def test_a_program_calling_with_arguments_moves_in_rs274_as_its_siemens_toolpath(tmp_path: Path) -> None:
+    from tests.support.rs274 import available, canonical_moves, run_rs274
+    if not available():
+        pytest.skip("the LinuxCNC interpreter rs274 is not installed")
+    setup = _library(tmp_path)
+    out = _translate(MAIN, "linuxcnc", setup)
+    theirs = [e for e in canonical_moves(run_rs274(out), start=(0.0, 0.0, 0.0)) if "move" in e]
+    ours = [e for e in toolpath_events(io.StringIO(MAIN), file="in.mpf", dialect="siemens", setup=setup)
+            if "move" in e]
+    assert [(e["move"], e["x"], e["y"], e["z"]) for e in ours] == [
+        (e["move"], round(e["x"], 4), round(e["y"], 4), round(e["z"], 4)) for e in theirs], out
