@@ -71,7 +71,7 @@ class SiemensVariables:
             self.levels[-1][key] = value
 
     def enter(self, args: dict[int, Value], new_level: bool) -> None:
-        """A call's arguments are the new level's ``%1``, ``%2``... (``reader.procedure_parameters``)."""
+        """A call's arguments are the new level's ``%1``, ``%2``... (``call_reading.CallReading.procedure_parameters``)."""
         if new_level:
             self.levels.append({f"%{n}": value for n, value in args.items() if value is not None})
             if len(self.levels) > 1 and args:
