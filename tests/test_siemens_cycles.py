@@ -316,3 +316,15 @@ def test_the_moves_of_a_pattern_are_bounded_by_the_set_up(tmp_path: Path) -> Non
         translate(io.StringIO(text), out, file="in.mpf", source="siemens", target="linuxcnc",
                   setup=load_setup(str(path)), diagnostics=Diagnostics(warn_stream=io.StringIO()))
     assert "6:1: error: HOLES2: 30 holes make more than 100 moves in one block" in str(caught.value.errors[0])
+
+
+def test_the_siemens_cycle_sections_are_xml_serialisable_through_the_registry() -> None:
+    from postproc.plugins import default_registry
+    from postproc.xmlio import DEFAULT
+
+    from dialects.siemens.cycles import CycleLevels, SiemensCycleEnd
+    from dialects.siemens.holes import SiemensHoles
+    default_registry()
+    for node in (CycleLevels(10.0, 2.0, True, 100.0, "CYCLE85"), SiemensHoles("HOLES2", 1.0, 2.0, 3.0, 4.0, 5.0, 6),
+                 SiemensCycleEnd()):
+        assert DEFAULT.create(node.make_xml_source()) == node
