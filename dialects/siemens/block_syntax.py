@@ -23,6 +23,7 @@ from postproc.isg_family.tool_data import read_tool_data
 from postproc.rs274.block_syntax import WordBlockSyntax, col_of_word
 from postproc.rs274.codes import CodeTable, g_key
 
+from .arcs import SiemensArc, arc_words
 from .codes import CODES, GEOMETRY_UNITS
 from .cycles import MCALL_KEY, CycleLevels, SiemensCycleRules
 from .holes import SiemensHoles
@@ -43,6 +44,9 @@ class SiemensBlockSyntax(WordBlockSyntax):
     POINTLESS_IN_UNITS: ClassVar[bool] = True
 
     def build(self, block: Block, ctx: Context) -> None:
+        arc = block.sections.pop(SiemensArc.KEY, None)
+        if isinstance(arc, SiemensArc):
+            arc_words(block, ctx, arc)
         holes = block.sections.pop(SiemensHoles.KEY, None)
         if isinstance(holes, SiemensHoles):
             resolve_holes(block, ctx, holes)

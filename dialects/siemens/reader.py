@@ -31,7 +31,7 @@ file a subprogram; ``RET``/``M17`` return.
 Kept verbatim (``NativeCode`` tagged ``siemens``: round trip byte for byte, refused by every other dialect
 and by the simulator, by name): frames (``TRANS``, ``ROT``...), the cycles ``cycles`` keeps verbatim, other ``MCALL``s,
 parameters by reference (``VAR``), every other instruction word (``SOFT``, ``BRISK``, ``SPOS``...),
-multi-letter addresses other than ``CR`` (``AR=``, ``TURN=``, ``I1=``...), strings other than ``T="name"``
+multi-letter addresses other than ``CR`` and ``AR`` (``arcs``) (``TURN=``, ``I1=``...), strings other than ``T="name"``
 (the set-up's tool of that name), array,
 ``CHAR``/``STRING``/``AXIS``/``FRAME`` declarations and the operators the IR lacks (``DIV``, ``B_AND``...).
 
@@ -59,6 +59,7 @@ from .call_reading import ADDRESSES, TYPES, CallReading
 from .call_reading import DIGITS as _DIGITS
 from .call_reading import NAME_START as _NAME_START
 from .call_reading import NUMBER_START as _NUMBER_START
+from .arcs import SiemensArc
 from .cycles import CYCLES
 from .holes import PARAMETERS as HOLES
 from .expressions import name_at, parse_expr, parse_variable, skip
@@ -427,6 +428,9 @@ class _State(CallReading):
                 letter = c
             elif upper == "CR" and assigned:
                 letter = "R"
+            elif upper == "AR" and assigned:
+                pos = self.opening_angle(block, code, pos, eq + 1)
+                continue
             elif up in ADDRESSES and single and not assigned and code[pos + 1:pos + 2] in _NUMBER_START:
                 letter = c
             elif up in ADDRESSES and end == pos + 1:
@@ -448,8 +452,20 @@ class _State(CallReading):
                 pos = self.number(block, code, pos, letter)
         if modes:
             self.distance_modes(block, modes)
+        if SiemensArc.KEY in block.sections and not block.values.keys().isdisjoint("XYIJ"):
+            raise Unmodelled("AR= with computed coordinates", 0)
         if assigns:
             block.add(Assign(assigns))
+
+    def opening_angle(self, block: Block, code: str, pos: int, start: int) -> int:
+        """``AR=90``: the circle's opening angle (``arcs``), a number."""
+        if SiemensArc.KEY in block.sections:
+            raise self.error(block.line, pos + 1, "AR appears twice in one block")
+        end, value = parse_expr(code, start)
+        if not isinstance(value, Num):
+            raise Unmodelled("AR= with a computed angle", pos)
+        block.add(SiemensArc(value.value))
+        return end
 
     def number(self, block: Block, code: str, pos: int, letter: str) -> int:
         n = len(code)
