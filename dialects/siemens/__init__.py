@@ -102,3 +102,4 @@ def postproc_register_xml(factory: XFactory) -> None:
     factory.register_lazy("SiemensCycleEnd", f"{__name__}.cycles:SiemensCycleEnd")
     factory.register_lazy("SiemensHoles", f"{__name__}.holes:SiemensHoles")
     factory.register_lazy("SiemensArc", f"{__name__}.arcs:SiemensArc")
+    factory.register_lazy("SiemensCip", f"{__name__}.arcs:SiemensCip")

@@ -1,4 +1,7 @@
-"""``AR=``: a circle by its opening angle, with its centre (``G3 I-10 J0 AR=90``) or with its end point
+"""``AR=`` and ``CIP``: a circle by its opening angle (``arc_words``) or through an intermediate point
+(``cip_words``).
+
+``AR=``: a circle by its opening angle, with its centre (``G3 I-10 J0 AR=90``) or with its end point
 (``G2 X10 Y0 AR=120``) [K: 840D sl Fundamentals, "Circular interpolation with opening angle and center
 point (AR, I, J, K)" and "... with opening angle and end point (AR, X, Y, Z)"; the Autodesk
 ``siemens-840d.cps`` post formats AR= in degrees]. The angle is in degrees, more than 0 and less than 360
@@ -92,3 +95,56 @@ def arc_words(block: Block, ctx: Context, arc: SiemensArc) -> None:
 
 def _spell(value: float) -> str:
     return repr(float(value))
+
+
+CIP_KEY = "siemens_cip"
+"""``ctx.state.extra`` key: True while ``CIP`` is the motion code in force."""
+
+
+class SiemensCip(Section):
+    """A ``CIP`` block's intermediate point (``I1=``, ``J1=``, ``K1=``; None: not given), turned into arc words
+    by ``cip_words`` (which removes it)."""
+
+    XNAME = KEY = "SiemensCip"
+    __slots__ = ("i1", "j1", "k1")
+    XATTRS = (XAttr("i1", float, None), XAttr("j1", float, None), XAttr("k1", float, None))
+    i1: float | None
+    j1: float | None
+    k1: float | None
+
+    def __init__(self, i1: float | None = None, j1: float | None = None, k1: float | None = None) -> None:
+        self.i1, self.j1, self.k1 = i1, j1, k1
+
+
+def cip_words(block: Block, ctx: Context, cip: SiemensCip) -> bool:
+    """``CIP X.. Y.. I1=.. J1=..``: the circle from where the tool stands through the intermediate point to the
+    end point [K: 840D sl Fundamentals, "Circular interpolation with intermediate and end points (CIP)"; the
+    Autodesk ``siemens-840d.cps`` post writes ``CIP X Y Z I1= J1= K1=`` with the intermediate point absolute,
+    and treats CIP as a motion code in force afterwards]. Read as G2/G3 with its centre where the three points
+    lie in the XY plane at one Z under G17 and G90, ``CIP`` first in its block (elsewhere the reader keeps
+    the block verbatim); False (the block is kept verbatim) otherwise: a circle in
+    space has no neutral arc, and whether I1/J1 are measured from the start under G91 is not confirmed here
+    [?]. Three points on a line are a located error."""
+    state = ctx.state
+    at = ctx.at(block, (block.text or "").upper().find("CIP") + 1 or 1)
+    codes = {num.lstrip("0") for letter, num in block.words if letter in "Gg"}
+    if state.plane != "XY" or codes & {"18", "19"} or "91" in codes or state.distance == "incremental" \
+            and "90" not in codes or cip.i1 is None or cip.j1 is None or not block.values.keys().isdisjoint("XYZ"):
+        return False
+    words = {letter.upper(): num for letter, num in block.words}
+    x, y, z = state.position.get("X"), state.position.get("Y"), state.position.get("Z")
+    if x is None or y is None:
+        raise ProgramError("CIP: the tool's X and Y are unknown (position them absolutely first)", at)
+    if "Z" in words and (z is None or float(words["Z"]) != z) or cip.k1 is not None and cip.k1 != z:
+        return False
+    ex, ey = float(words.get("X", x)), float(words.get("Y", y))
+    mx, my = cip.i1, cip.j1
+    d = 2.0 * ((mx - x) * (ey - my) - (my - y) * (ex - mx))  # twice the signed area: > 0 turns left
+    scale = max(abs(ex - x), abs(ey - y), abs(mx - x), abs(my - y), 1.0)
+    if abs(d) <= 1e-12 * scale * scale:
+        raise ProgramError("CIP: the start, the intermediate point and the end point lie on one line", at)
+    s2, m2, e2 = x * x + y * y, mx * mx + my * my, ex * ex + ey * ey
+    cx = (s2 * (my - ey) + m2 * (ey - y) + e2 * (y - my)) / d  # the circumcentre of the three points
+    cy = (s2 * (ex - mx) + m2 * (x - ex) + e2 * (mx - x)) / d
+    block.words.extend([("G", "3" if d > 0 else "2"), ("I", _spell(cx - x)), ("J", _spell(cy - y))])
+    return True

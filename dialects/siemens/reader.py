@@ -59,7 +59,7 @@ from .call_reading import ADDRESSES, TYPES, CallReading
 from .call_reading import DIGITS as _DIGITS
 from .call_reading import NAME_START as _NAME_START
 from .call_reading import NUMBER_START as _NUMBER_START
-from .arcs import SiemensArc
+from .arcs import SiemensArc, SiemensCip
 from .cycles import CYCLES
 from .holes import PARAMETERS as HOLES
 from .expressions import name_at, parse_expr, parse_variable, skip
@@ -202,14 +202,17 @@ class _State(CallReading):
             if word == "MCALL":
                 self.mcall(block, code, pos, end)
                 return
+            if word == "CIP":
+                block.add(SiemensCip())
+                pos = end
             if (word in CYCLES or word in HOLES) and code[skip(code, end):skip(code, end) + 1] == "(" \
                     and BlockDelete.KEY not in block.sections:
                 self.cycle(block, code, pos, end, word, once=True)
                 return
-            what = describe(word)
+            what = describe(word) if word != "CIP" else None
             if what is not None:
                 raise Unmodelled(what, pos)
-            if self.call(block, code, pos, end):
+            if word != "CIP" and self.call(block, code, pos, end):
                 return
         self.words(block, code, pos)
         self.returns(block, code)
@@ -431,6 +434,9 @@ class _State(CallReading):
             elif upper == "AR" and assigned:
                 pos = self.opening_angle(block, code, pos, eq + 1)
                 continue
+            elif upper in ("I1", "J1", "K1") and assigned and SiemensCip.KEY in block.sections:
+                pos = self.intermediate_point(block, code, pos, eq + 1, upper)
+                continue
             elif up in ADDRESSES and single and not assigned and code[pos + 1:pos + 2] in _NUMBER_START:
                 letter = c
             elif up in ADDRESSES and end == pos + 1:
@@ -456,6 +462,18 @@ class _State(CallReading):
             raise Unmodelled("AR= with computed coordinates", 0)
         if assigns:
             block.add(Assign(assigns))
+
+    def intermediate_point(self, block: Block, code: str, pos: int, start: int, name: str) -> int:
+        """``I1=5`` in a ``CIP`` block: a coordinate of the circle's intermediate point (``arcs``), a number."""
+        cip = block.sections[SiemensCip.KEY]
+        attr = name[0].lower() + "1"
+        if getattr(cip, attr) is not None:
+            raise self.error(block.line, pos + 1, f"{name} appears twice in one block")
+        end, value = parse_expr(code, start)
+        if not isinstance(value, Num):
+            raise Unmodelled(f"{name}= with a computed value", pos)
+        setattr(cip, attr, value.value)
+        return end
 
     def opening_angle(self, block: Block, code: str, pos: int, start: int) -> int:
         """``AR=90``: the circle's opening angle (``arcs``), a number."""
