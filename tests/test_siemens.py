@@ -251,12 +251,12 @@ def test_d_selects_the_tool_data_and_fanuc_g43_h_becomes_d() -> None:
 
 
 def test_a_name_as_a_tool_and_the_cycles_are_kept_verbatim() -> None:
-    text = "G710 G90\nT=\"DRILL\"\nCYCLE81(10,0,2,-5)\nMCALL CYCLE86(10,0,2,-5,,1)\nMCALL\nM30\n"
+    text = "G710 G90\nT=\"DRILL\"\nCYCLE83(10,0,2,-5)\nMCALL CYCLE86(10,0,2,-5,,1)\nMCALL\nM30\n"
     assert _translate(text, "siemens", "siemens") == text
     errors = _errors(text, "siemens", "fanuc")
-    assert "T=\"..\" (a name as the value)" in errors[0]
-    assert "CYCLE81 (a standard cycle)" in errors[1]
-    assert "MCALL CYCLE86 (a modal subprogram or cycle call)" in errors[2]
+    assert "T=\"DRILL\" (no tool of the set-up has this name" in errors[0]
+    assert "CYCLE83 (its degression DAM" in errors[1]
+    assert "MCALL CYCLE86 (its lift-off RPA/RPO/RPAP in three axes has no neutral cycle)" in errors[2]
 
 
 @pytest.mark.parametrize("text, message", [
@@ -370,8 +370,8 @@ def test_subprogram_ends_and_parameters_that_are_not_modelled(tmp_path: Path) ->
     setup = _library(tmp_path)
     assert "M30 in a subprogram: write RET or M17" in _errors("G710 G90 G0 X0\nENDS\nM30\n", "siemens",
                                                                "linuxcnc", setup)[0]
-    assert "a call of STEP with parameters (not modelled)" in _errors("G710 G90 G0 X0\nSTEP(1, 2)\nM30\n",
-                                                                      "siemens", "linuxcnc", setup)[0]
+    assert "the call passes 2 arguments to a subprogram without PROC parameters" in _errors(
+        "G710 G90 G0 X0\nR1=0\nSTEP(1, 2)\nM30\n", "siemens", "linuxcnc", setup)[0]
     assert "RET" in _errors("G710 G90 G0 X0\nRET\n", "siemens", "linuxcnc", setup)[0]
 
 
@@ -469,7 +469,7 @@ def test_a_cycle_call_fanuc_cannot_mean_is_a_located_error(lines: str, message: 
 
 
 def test_other_cycle_calls_are_kept_verbatim() -> None:
-    for line, name in (("CYCLE81(10, 0, 2, -5)", "CYCLE81 (a standard cycle)"),
+    for line, name in (("CYCLE83(10, 0, 2, -5)", "CYCLE83 (its degression DAM"),
                        ("MCALL CYCLE83(10, 0, 2, -20, , -5, , 2, 0, 0, 1, 0)", "MCALL CYCLE83"),
                        ("MCALL CYCLE81(R1, 0, 2, -5)", "MCALL CYCLE81 with computed parameters"),
                        ("MCALL MYSUB", "MCALL MYSUB"),

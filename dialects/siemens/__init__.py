@@ -4,9 +4,10 @@ SINUMERIK is neither in the RS274 family nor in ISG's: it has its own reader (``
 R parameters, ``DEF`` variables, labels, ``IF``/``WHILE``/``FOR``/``REPEAT``/``LOOP`` and ``GOTOF``...) and
 expressions (``expressions``), reads its words through the family's word rules with the 840D table
 (``codes``, ``block_syntax``) and selects tool data with ``D`` as ISG does
-(``postproc.isg_family.tool_data``). ``MCALL CYCLE81/82`` are read on the neutral cycle IR (``cycles``), the
-programmable frame statements (``TRANS``, ``AROT``...) on the neutral frame change (``frames``), ``NAME P3`` as
-a subprogram call. What the IR does not model (``ROTS`` and computed frames, other cycles, parameters of subprograms, ``AC``/``IC`` against the block's mode...) is kept verbatim, named
+(``postproc.isg_family.tool_data``). ``CYCLE8x`` called once or by ``MCALL`` are read on the neutral cycle IR (``cycles``),
+the programmable frame statements (``TRANS``, ``AROT``...) on the neutral frame change (``frames``), ``NAME P3``
+as a subprogram call. What the IR does not model (``ROTS`` and computed frames, other cycles, parameters by
+reference, ``AC``/``IC`` against the block's mode...) is kept verbatim, named
 (``keywords``).
 """
 
@@ -43,10 +44,11 @@ class Siemens(Dialect):
     """Imported when a run first reads SINUMERIK (``Lazy``), as are the writer and the syntax objects."""
     WRITER = Lazy[type[Writer]](".writer:SiemensWriter")
     PIPELINE_FILE = "siemens.xml"
-    CYCLE_WORDS = CycleWords(names={"drill": "MCALL CYCLE81", "drill_dwell": "MCALL CYCLE82"},
+    CYCLE_WORDS = CycleWords(names={"drill": "CYCLE81", "drill_dwell": "CYCLE82", "bore_feed": "CYCLE85",
+                                    "bore_manual": "CYCLE88", "bore_dwell_feed": "CYCLE89"},
                              return_to_r="RTP=RFP+SDIS", level="R", peck="Q", shift="Q", dwell="P", repeat=("K",))
-    """``MCALL CYCLE81``/``CYCLE82`` are read as the Fanuc-family words of their meaning (``cycles``: R level,
-    Z depth, P dwell in ms, K0 for the call that drills nothing)."""
+    """``CYCLE81``/``82``/``85``/``87``/``88``/``89`` are read as the Fanuc-family words of their meaning
+    (``cycles``: R level, Z depth, P dwell in ms, K0 for the modal call that drills nothing)."""
     NATIVE_CYCLES = frozenset()
     """``CYCLE8x`` are not written yet: every cycle is expanded for SINUMERIK (so no ``CYCLE_SEMANTICS``; the
     cycles read move by Fanuc's rules, the reading pipeline's ``CannedCycleResolveSyntax("fanuc")``)."""
@@ -82,9 +84,10 @@ class Siemens(Dialect):
         from postproc.cycles.resolve import CannedCycleResolveSyntax
         from postproc.syntaxes.modal_state import ModalStateSyntax
         from .block_syntax import SiemensBlockSyntax
+        from .cycles import SiemensCycleEnd
         from .program import SiemensProgramSyntax
         return Pipeline(cls.NAME, [SiemensProgramSyntax(), SiemensBlockSyntax(), CannedCycleResolveSyntax("fanuc"),
-                                   ModalStateSyntax()])
+                                   SiemensCycleEnd(), ModalStateSyntax()])
 
 
 @hookimpl
@@ -97,3 +100,7 @@ def postproc_register_xml(factory: XFactory) -> None:
     factory.register_lazy("SiemensBlockSyntax", f"{__name__}.block_syntax:SiemensBlockSyntax")
     factory.register_lazy("SiemensProgramSyntax", f"{__name__}.program:SiemensProgramSyntax")
     factory.register_lazy("SiemensCycleLevels", f"{__name__}.cycles:CycleLevels")
+    factory.register_lazy("SiemensCycleEnd", f"{__name__}.cycles:SiemensCycleEnd")
+    factory.register_lazy("SiemensHoles", f"{__name__}.holes:SiemensHoles")
+    factory.register_lazy("SiemensArc", f"{__name__}.arcs:SiemensArc")
+    factory.register_lazy("SiemensCip", f"{__name__}.arcs:SiemensCip")

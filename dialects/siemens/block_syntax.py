@@ -23,9 +23,14 @@ from postproc.isg_family.tool_data import read_tool_data
 from postproc.rs274.block_syntax import WordBlockSyntax, col_of_word
 from postproc.rs274.codes import CodeTable, g_key
 
+from .arcs import CIP_KEY, SiemensArc, SiemensCip, arc_words, cip_words
 from .codes import CODES, GEOMETRY_UNITS
-from .cycles import MCALL_KEY, CycleLevels, SiemensCycleRules
+from .cycles import MCALL_KEY, CycleLevels, SiemensCycleRules, keep_verbatim
+from .holes import SiemensHoles
+from .holes import resolve as resolve_holes
 
+_MOTION = frozenset(("", "1", "2", "3", "33"))
+"""Group-1 codes (G0 ... G3, G33; ``lstrip("0")`` of G0 is empty) that end ``CIP``."""
 GEOMETRY_KEY = "siemens_geometry_units"
 """``ctx.state.extra`` key: True while G70/G71 (lengths only) is the units code in force."""
 
@@ -41,12 +46,49 @@ class SiemensBlockSyntax(WordBlockSyntax):
     POINTLESS_IN_UNITS: ClassVar[bool] = True
 
     def build(self, block: Block, ctx: Context) -> None:
+        arc = block.sections.pop(SiemensArc.KEY, None)
+        if isinstance(arc, SiemensArc):
+            arc_words(block, ctx, arc)
+        if not self.circle_through(block, ctx):
+            return  # kept verbatim (``arcs``)
+        holes = block.sections.pop(SiemensHoles.KEY, None)
+        if isinstance(holes, SiemensHoles):
+            resolve_holes(block, ctx, holes)
+            if "NativeCode" in block.sections:
+                return  # kept verbatim (``holes``)
         levels = block.sections.pop(CycleLevels.KEY, None)
         if isinstance(levels, CycleLevels):
-            block.add(ReturnLevel(SiemensCycleRules.call(block, ctx, levels)))
+            level = SiemensCycleRules.call(block, ctx, levels)
+            if level is None:
+                return  # kept verbatim (``cycles.keep_verbatim``)
+            block.add(ReturnLevel(level))
         elif "CycleCancel" in block.sections:
             ctx.state.extra.pop(MCALL_KEY, None)
         super().build(block, ctx)
+
+    @staticmethod
+    def circle_through(block: Block, ctx: Context) -> bool:
+        """``CIP`` (``arcs.cip_words``), and the blocks while it is the motion code in force: one that moves
+        with no motion code of its own is kept verbatim (each CIP block names its intermediate point).
+        False when the block was kept verbatim."""
+        extra = ctx.state.extra
+        cip = block.sections.pop(SiemensCip.KEY, None)
+        if isinstance(cip, SiemensCip):
+            if not cip_words(block, ctx, cip):
+                keep_verbatim(block, "CIP off the XY plane, in G91 or without its intermediate point I1, J1")
+                extra[CIP_KEY] = True
+                return False
+            extra[CIP_KEY] = True
+            return True
+        if CIP_KEY not in extra:
+            return True
+        if any(letter in "Gg" and num.lstrip("0") in _MOTION for letter, num in block.words):
+            del extra[CIP_KEY]
+            return True
+        if any(letter.upper() in "XYZ" for letter, _ in block.words):
+            keep_verbatim(block, "a move under CIP without its own intermediate point")
+            return False
+        return True
 
     def g_sections(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],
                    used: set[str], cycle_block: bool) -> None:

@@ -1,68 +1,162 @@
-"""SINUMERIK drilling cycles on the neutral cycle IR: ``MCALL CYCLE81(..)`` / ``MCALL CYCLE82(..)`` and the bare
-``MCALL`` that deselects them.
+"""SINUMERIK drilling cycles on the neutral cycle IR: ``CYCLE81`` ... ``CYCLE89``, ``CYCLE840`` called once
+(``CYCLE81(..)`` alone in a block) or modally (``MCALL CYCLE81(..)``, deselected by a bare ``MCALL``).
 
-Parameters, positional, comma-separated [K: USERS-AND-SIEMENS.md 3.2: Autodesk ``siemens-840d.cps``
-``onCycle``; PGZ cycles manual 11/2006 p.2-86]: ``CYCLE81(RTP, RFP, SDIS, DP, DPR)``, ``CYCLE82(RTP, RFP,
-SDIS, DP, DPR, DTB)``. RTP retraction plane, RFP reference plane, DP final depth (absolute), SDIS safety
-distance and DPR depth relative to RFP (no sign), DTB dwell at the depth in seconds. The cycle: rapid to
-RFP+SDIS, feed (the F in force) to the depth, dwell DTB (CYCLE82), rapid to RTP [K: same sources].
+Parameters are positional and comma-separated; an empty position is a parameter not given [K: USERS-AND-SIEMENS.md
+3.2: Autodesk ``siemens-840d.cps`` ``onCycle``; PGZ cycles manual 11/2006 6FC5398-3BP20-0BA0 p.2-86]. The
+leading five are common: RTP retraction plane and RFP reference plane (absolute), SDIS safety distance
+(incremental, no sign), DP final depth (absolute) or DPR depth relative to RFP (no sign) [K: PGZ 2.1.2].
+Every cycle starts where the tool stands: rapid to RFP+SDIS, work to the depth, back to RTP [K: PGZ 2.1.2].
 
-Modal call [K: 3.2]: ``MCALL CYCLE8x(..)`` drills nothing itself; every later block that moves runs the cycle
-at its end, until a bare ``MCALL``. That is Fanuc's ``G81``/``G82`` data block with no hole (``K0``) and its
-hole blocks, exactly when:
+=========  ==========================================================  =========================================
+cycle      what the manual says it does [K: PGZ 2.1.2-2.1.10]         read as (Fanuc's kind)
+=========  ==========================================================  =========================================
+CYCLE81    G1 to the depth at the F in force, G0 to RTP                drill (G81)
+CYCLE82    as CYCLE81, dwell DTB seconds at the depth                  drill_dwell (G82, P in ms)
+CYCLE85    G1 to the depth at FFR, dwell DTB, G1 at RFF to RFP+SDIS,   bore_feed (G85), with DTB bore_dwell_feed
+           G0 to RTP                                                   (G89), when FFR = RFF = the F in force
+CYCLE87    G1 to the depth, M5, M0; on NC start G0 to RTP, spindle     bore_manual (G88) without dwell, SDIR 3
+           in SDIR (3: M3, 4: M4)
+CYCLE88    as CYCLE87 with a dwell DTB before M5                       bore_manual (G88), SDIR 3
+CYCLE89    G1 to the depth, dwell DTB, G1 at the same F to RFP+SDIS,   bore_dwell_feed (G89)
+           G0 to RTP
+CYCLE83    deep hole: first depth FDEP/FDPR, degression DAM, dwells    kept verbatim [?]
+           DTB/DTS, first-pass factor FRF, VARI 0 chip breaking / 1
+           swarf removal with a computed anticipation distance
+CYCLE84    rigid tap at SST (SST1 out) with pitch MPIT/PIT, spindle    kept verbatim [?]
+           oriented to POSS, direction SDAC after it
+CYCLE840   tap with a compensating chuck: reversal SDR, SDAC after,   kept verbatim [?]
+           with or without an encoder (ENC), feed from the pitch
+CYCLE86    oriented stop at POSS, lift-off RPA/RPO/RPAP in three axes  kept verbatim (no neutral kind lifts in
+                                                                       three axes) [K]
+=========  ==========================================================  =========================================
 
-* RTP is RFP+SDIS (Fanuc's R level, ``G99``), or the tool's Z when ``MCALL`` is read (Fanuc's initial level,
+"Kept verbatim" is the reader's ``NativeCode`` named by the cycle: a Siemens program with it is copied byte
+for byte, every other dialect and the simulator refuse it by name. So are parameters after the modelled
+ones (``GMODE``, ``DMODE``, ``AMODE`` of newer software), computed parameters, a ``CYCLE87``/``CYCLE88``
+with SDIR 4 (Fanuc's G88 restarts the spindle clockwise) or an empty SDIR (its default is not confirmed
+here [?]), and a ``CYCLE85`` whose RFF differs from FFR. Empty RTP, RFP or SDIS, and both or neither of DP
+and DPR, are located errors (their defaults, and which of DP and DPR wins, are not confirmed here [?]); an
+empty DTB is no dwell [K: PGZ 2.1.3, DTB is the dwell "if programmed"].
+
+Mapping onto Fanuc's words (``R`` RFP+SDIS, ``Z`` the depth, ``P`` DTB in ms, ``K0`` for the modal call that
+drills nothing itself) is exact when [K]:
+
+* under ``MCALL``, RTP is RFP+SDIS (Fanuc's R level, ``G99``) or the tool's Z at ``MCALL`` (the initial level,
   ``G98``): otherwise the retraction plane has no Fanuc level (a located error);
-* G0 is in force at ``MCALL`` and the positioning blocks carry no motion code and no Z (Fanuc positions at
-  rapid, a motion code would cancel its cycle, and its Z is the cycle's depth): located errors otherwise;
 * G17 and G90 are in force (the parameters are absolute Z levels);
-* only one of DP and DPR is given (which wins is not confirmed here [?]), and RTP, RFP, SDIS are given
-  (their defaults for an empty position are not confirmed [?]); DTB is a whole number of milliseconds.
+* under ``MCALL``, G0 is in force and the positioning blocks carry no motion code and no Z (Fanuc positions
+  at rapid, a motion code would cancel its cycle, and its Z is the cycle's depth): located errors otherwise;
+* DTB is a whole number of milliseconds.
 
-A one-shot ``CYCLE81(..)``, the other cycles and computed parameters are kept verbatim (``reader``).
+A call once (``CYCLE81(..)`` alone in its block) drills where the tool stands, retracts to RTP whatever it is,
+and leaves no cycle active (``SiemensCycleEnd``): its record is marked ``expand``, so every other dialect gets
+its exact moves and no cycle stays active there either. The cycles are subprograms that restore the modal G functions they change
+[K: the shipped cycles' ``PROC CYCLE8x(..) SAVE`` lines, as the PGZ quotes them [?]]: the motion mode after
+one is the one before it. A one-shot call while a ``MCALL`` is active is kept verbatim (whether the modal
+call then runs too is not confirmed here [?]).
 """
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any, ClassVar
 
+from postproc.cycles.resolve import ACTIVE_KEY, STATE_KEY
+from postproc.cycles.rigid_tap import end_rigid_mode
+from postproc.cycles.section import CannedCycle
 from postproc.errors import ProgramError
-from postproc.ir import Section
+from postproc.ir import NativeCode, Section
+from postproc.syntax import Syntax
 from postproc.xmlio import XAttr
 
 if TYPE_CHECKING:
     from postproc.context import Context
     from postproc.ir import Block
 
-KINDS = {"CYCLE81": "drill", "CYCLE82": "drill_dwell"}
-"""Cycle name -> the neutral cycle kind (Fanuc G81, G82)."""
-PARAMETERS = {"CYCLE81": ("RTP", "RFP", "SDIS", "DP", "DPR"), "CYCLE82": ("RTP", "RFP", "SDIS", "DP", "DPR", "DTB")}
+COMMON = ("RTP", "RFP", "SDIS", "DP", "DPR")
 LEVEL_TOLERANCE = 1e-9
 MCALL_KEY = "siemens_mcall"
 """``ctx.state.extra`` key: True while a modal cycle call is active."""
+ONCE_KEY = "siemens_cycle_once"
+"""``ctx.state.extra`` key: (the ``id`` of the block calling a cycle once, its RTP), from the block syntax to
+``SiemensCycleEnd``."""
+
+
+@dataclass(frozen=True)
+class CycleSpec:
+    """One SINUMERIK cycle: its parameters in order, the neutral kind it is read as (None: kept verbatim)
+    and why it is kept verbatim."""
+
+    parameters: tuple[str, ...]
+    kind: str | None = None
+    verbatim: str = ""
+
+
+CYCLES: dict[str, CycleSpec] = {
+    "CYCLE81": CycleSpec(COMMON, "drill"),
+    "CYCLE82": CycleSpec((*COMMON, "DTB"), "drill_dwell"),
+    "CYCLE85": CycleSpec((*COMMON, "DTB", "FFR", "RFF"), "bore_feed"),
+    "CYCLE87": CycleSpec((*COMMON, "SDIR"), "bore_manual"),
+    "CYCLE88": CycleSpec((*COMMON, "DTB", "SDIR"), "bore_manual"),
+    "CYCLE89": CycleSpec((*COMMON, "DTB"), "bore_dwell_feed"),
+    "CYCLE83": CycleSpec((*COMMON, "FDEP", "FDPR", "DAM", "DTB", "DTS", "FRF", "VARI", "_AXN", "_MDEP", "_VRT",
+                          "_DTD", "_DIS1"),
+                         verbatim="its degression DAM, dwells DTB/DTS, first-pass feed factor FRF and computed "
+                                  "anticipation distance (VARI=1) are not confirmed against Fanuc's G73/G83 here"),
+    "CYCLE84": CycleSpec((*COMMON, "DTB", "SDAC", "MPIT", "PIT", "POSS", "SST", "SST1", "_AXN", "_PTAB", "_TECHNO",
+                          "_VARI", "_DAM", "_VRT"),
+                         verbatim="a rigid tap at its own speeds SST/SST1 with an oriented start POSS is not "
+                                  "confirmed against Fanuc's rigid G84 here"),
+    "CYCLE840": CycleSpec((*COMMON, "DTB", "SDR", "SDAC", "ENC", "MPIT", "PIT", "_AXN", "_PTAB", "_TECHNO"),
+                          verbatim="its reversal SDR, direction SDAC and feed from the pitch with or without an "
+                                   "encoder (ENC) are not confirmed against Fanuc's G84 here"),
+    "CYCLE86": CycleSpec((*COMMON, "DTB", "SDIR", "RPA", "RPO", "RPAP", "POSS"),
+                         verbatim="its lift-off RPA/RPO/RPAP in three axes has no neutral cycle"),
+}
+"""Cycle name -> what is read of it [K: parameter orders from USERS-AND-SIEMENS.md 3.2]."""
+class NotModelled(Exception):
+    """A cycle call the IR does not model: the reader keeps its block verbatim, named by ``what``."""
+
+    def __init__(self, what: str) -> None:
+        super().__init__(what)
+        self.what = what
 
 
 class CycleLevels(Section):
-    """The levels of a ``MCALL CYCLE8x`` the block syntax still has to check against the tool's Z (then it
-    becomes the block's return level and leaves the block)."""
+    """What the block syntax still has to check of a cycle call against the modal state: the levels (the
+    return level is the one RTP is), whether the call is once, and the feed it works at (None: the F in
+    force). It leaves the block there."""
 
     XNAME = KEY = "SiemensCycleLevels"
-    __slots__ = ("retract", "r")
-    XATTRS = (XAttr("retract", float), XAttr("r", float))
+    __slots__ = ("retract", "r", "once", "feed", "name")
+    XATTRS = (XAttr("retract", float), XAttr("r", float), XAttr("once", bool, False), XAttr("feed", float, None),
+              XAttr("name", str, "CYCLE81"))
     retract: float
     r: float
+    once: bool
+    feed: float | None
+    name: str
 
-    def __init__(self, retract: float, r: float) -> None:
+    def __init__(self, retract: float, r: float, once: bool = False, feed: float | None = None,
+                 name: str = "CYCLE81") -> None:
         self.retract = retract
         self.r = r
+        self.once = once
+        self.feed = feed
+        self.name = name
 
 
-def cycle_words(name: str, params: list[float | None], at: int) -> tuple[list[tuple[str, str]], CycleLevels]:
-    """The Fanuc-family words (``R``, ``Z``, ``P`` in ms, ``K0``) of ``MCALL name(params)``; a ``ValueError``
-    names what is missing or ambiguous."""
-    names = PARAMETERS[name]
+def cycle_words(name: str, params: list[float | None], once: bool = False
+                ) -> tuple[str, list[tuple[str, str]], CycleLevels]:
+    """The neutral kind and the Fanuc-family words (``R``, ``Z``, ``P`` in ms, ``K0`` for a modal call) of
+    ``name(params)``. A ``ValueError`` names what is missing or contradictory, a ``NotModelled`` what is
+    kept verbatim."""
+    spec = CYCLES[name]
+    names = spec.parameters
     if len(params) > len(names):
-        raise ValueError(f"{name} takes {len(names)} parameters here ({', '.join(names)}), not {len(params)}")
+        raise ValueError(f"{name} takes at most {len(names)} parameters ({', '.join(names)}), not {len(params)}")
+    if spec.kind is None:
+        raise NotModelled(f"{name} ({spec.verbatim})")
     given = dict(zip(names, params))
     for required in ("RTP", "RFP", "SDIS"):
         if given.get(required) is None:
@@ -74,44 +168,90 @@ def cycle_words(name: str, params: list[float | None], at: int) -> tuple[list[tu
     rtp, rfp, sdis = float(given["RTP"] or 0.0), float(given["RFP"] or 0.0), float(given["SDIS"] or 0.0)
     if sdis < 0 or dpr is not None and dpr < 0:
         raise ValueError(f"{name}: SDIS and DPR have no sign")
-    bottom = dp if dp is not None else rfp - float(dpr or 0.0)
-    words = [("R", _spell(rfp + sdis)), ("Z", _spell(float(bottom))), ("K", "0")]
+    bottom = float(dp) if dp is not None else rfp - float(dpr or 0.0)
+    if bottom > rfp + sdis:
+        raise ValueError(f"{name}: the final depth {bottom:g} is above RFP+SDIS ({rfp + sdis:g})")
+    kind = spec.kind
+    feed = None
+    if name == "CYCLE85":
+        feed, back = given.get("FFR"), given.get("RFF")
+        if feed is None or back is None or feed <= 0:
+            raise ValueError("CYCLE85 needs its feeds FFR (in) and RFF (out), both positive")
+        if abs(feed - back) > LEVEL_TOLERANCE:
+            raise NotModelled("CYCLE85 with RFF other than FFR (Fanuc's G85/G89 feed out at the feed in)")
+    if name in ("CYCLE87", "CYCLE88"):
+        sdir = given.get("SDIR")
+        if sdir != 3:
+            raise NotModelled(f"{name} with SDIR {'empty' if sdir is None else f'{sdir:g}'} (read with SDIR=3: "
+                              "Fanuc's G88 restarts the spindle clockwise)")
+    words = [("R", _spell(rfp + sdis)), ("Z", _spell(bottom))]
     dtb = given.get("DTB")
-    if dtb is not None:
+    if dtb is not None and "DTB" in names:
         ms = dtb * 1000.0
         if dtb < 0 or abs(ms - round(ms)) > 1e-6:
-            raise ValueError(f"{name}: DTB is a dwell of whole milliseconds here, not {dtb}")
-        words.append(("P", str(int(round(ms)))))
-    return words, CycleLevels(rtp, rfp + sdis)
+            raise ValueError(f"{name}: DTB is a dwell of whole milliseconds here, not {dtb:g}")
+        if name == "CYCLE85" and dtb > 0:
+            kind = "bore_dwell_feed"
+        if kind != "bore_feed":
+            words.append(("P", str(int(round(ms)))))
+    if not once:
+        words.append(("K", "0"))
+    return kind, words, CycleLevels(rtp, rfp + sdis, once, feed, name)
 
 
 def _spell(value: float) -> str:
     return repr(float(value))
 
 
+def keep_verbatim(block: Block, what: str) -> None:
+    """Make ``block`` the reader's verbatim block (its comment kept), named by ``what``."""
+    comments = block.sections.get("Comments")
+    block.sections.clear()
+    block.words.clear()
+    block.values.clear()
+    if comments is not None:
+        block.add(comments)
+    block.add(NativeCode("siemens", f"{what} (not modelled)", block.text or ""))
+
+
 class SiemensCycleRules:
-    """The block syntax's checks of a modal cycle call and its positioning blocks (see the module)."""
+    """The block syntax's checks of a cycle call and of the positioning blocks under ``MCALL``."""
 
     EXTRA: ClassVar[str] = MCALL_KEY
 
     @staticmethod
-    def call(block: Block, ctx: Context, levels: CycleLevels) -> str:
-        """The return level of ``MCALL CYCLE8x`` ('initial' or 'r'), or a located error."""
+    def call(block: Block, ctx: Context, levels: CycleLevels) -> str | None:
+        """The return level of the cycle call ('initial' or 'r'), or None when the block is kept verbatim
+        (``keep_verbatim``); a located error for what no Fanuc cycle means."""
         state = ctx.state
         at = ctx.at(block)
+        name = levels.name
         if state.plane != "XY" or state.distance != "absolute":
-            raise ProgramError("MCALL CYCLE8x is read in G17 and G90 only (its levels are absolute Z values)", at)
-        if state.motion != "rapid":
+            raise ProgramError(f"{name} is read in G17 and G90 only (its levels are absolute Z values)", at)
+        if levels.once and state.extra.get(MCALL_KEY):
+            keep_verbatim(block, f"{name} called once under MCALL")
+            return None
+        if not levels.once and state.motion != "rapid":
             raise ProgramError("MCALL moves to each hole in the motion mode in force: program G0 before it (Fanuc's "
                                "cycles position at rapid)", at)
-        state.extra[MCALL_KEY] = True
+        if levels.feed is not None and levels.feed != state.feed:
+            keep_verbatim(block, f"{name} with FFR {levels.feed:g} other than the F in force (Fanuc's G85/G89 "
+                                 "feed at it)")
+            return None
+        if levels.once:
+            state.extra[ONCE_KEY] = (id(block), levels.retract)
+            return "r" if abs(levels.retract - levels.r) <= LEVEL_TOLERANCE else "initial"
         if abs(levels.retract - levels.r) <= LEVEL_TOLERANCE:
-            return "r"
-        z = state.position.get("Z")
-        if z is not None and abs(z - levels.retract) <= LEVEL_TOLERANCE:
-            return "initial"
-        raise ProgramError(f"RTP {levels.retract:g} is neither RFP+SDIS ({levels.r:g}) nor the tool's Z at MCALL "
-                           f"({'unknown' if z is None else f'{z:g}'}): no Fanuc level retracts there", at)
+            level = "r"
+        else:
+            z = state.position.get("Z")
+            if z is None or abs(z - levels.retract) > LEVEL_TOLERANCE:
+                raise ProgramError(f"RTP {levels.retract:g} is neither RFP+SDIS ({levels.r:g}) nor the tool's Z at "
+                                   f"MCALL ({'unknown' if z is None else f'{z:g}'}): no Fanuc level retracts there",
+                                   at)
+            level = "initial"
+        state.extra[MCALL_KEY] = True
+        return level
 
     @staticmethod
     def position(block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any]) -> None:
@@ -122,3 +262,29 @@ class SiemensCycleRules:
         if "Z" in values:
             raise ProgramError("Z under MCALL: SINUMERIK moves Z before the cycle, Fanuc's Z is the cycle's depth "
                                "(not read)", ctx.at(block, ctx.column_of(block, "Z")))
+
+
+class SiemensCycleEnd(Syntax):
+    """After the cycle resolution: a cycle called once ends with its block (``ONCE_KEY``), and is written as
+    its moves for every other dialect (its record's ``expand``: there no cycle may stay active after it)."""
+
+    XNAME = "SiemensCycleEnd"
+    __slots__ = ()
+
+    def build(self, block: Block, ctx: Context) -> None:
+        extra = ctx.state.extra
+        if ONCE_KEY not in extra:
+            return
+        called, retract = extra.pop(ONCE_KEY)
+        if called != id(block):
+            return  # the call's own block was refused before it came here
+        state = ctx.state
+        cycle = block.sections.get("CannedCycle")
+        if isinstance(cycle, CannedCycle):
+            cycle.expand = True
+            cycle.initial, cycle.return_level = retract, "initial"  # straight back to RTP
+            state.position["Z"] = retract
+        end_rigid_mode(state)
+        state.cycle = None
+        extra.pop(STATE_KEY, None)
+        extra.pop(ACTIVE_KEY, None)

@@ -22,7 +22,8 @@ class SiemensProgramSyntax(ProgramSyntax):
 
     INTEGER_ADDRESSES: ClassVar[frozenset[str]] = frozenset("GMNTDH")
     END_CODES: ClassVar[frozenset[tuple[str, int]]] = frozenset({("M", 30), ("M", 2)})
-    MACRO_LOCALS: ClassVar[int] = 0
+    MACRO_LOCALS: ClassVar[int] = 64
+    """A call passes at most 64 arguments (``call_reading.MAX_PARAMETERS``), the callee's ``%1``...``%64``."""
     VARIABLES: ClassVar[VariablesFactory] = SiemensVariables
     LIBRARY_FILES: ClassVar[tuple[str, ...]] = ("{name}.SPF", "{name}.spf")
     SUBPROGRAM_RULES: ClassVar[SubprogramRules] = SubprogramRules(forward_search=False, main_return_words=None,

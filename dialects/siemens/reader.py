@@ -14,7 +14,8 @@ Read into neutral sections:
 * ``X=AC(..)``/``X=IC(..)``: the value as a plain word when the block's own ``G90``/``G91`` says the same
   thing (and ``I=IC(..)``: centres are incremental by default [K]); otherwise the per-address distance
   mode is not modelled and the block is kept verbatim;
-* ``MCALL CYCLE81(..)``/``MCALL CYCLE82(..)`` and a bare ``MCALL`` (``cycles``);
+* ``CYCLE81(..)`` ... ``CYCLE89(..)``, ``CYCLE840(..)`` alone in a block (called once), ``MCALL CYCLE8x(..)``
+  and a bare ``MCALL`` (``cycles``: which are read, which kept verbatim); ``HOLES1(..)``/``HOLES2(..)`` (``holes``);
 * ``TRANS``/``ATRANS``, ``ROT``/``AROT``, ``SCALE``/``ASCALE``, ``MIRROR``/``AMIRROR`` with numbers, alone in
   their block: the neutral frame change under the ``chain`` rules (``frames``);
 * ``DEF REAL|INT|BOOL NAME[=value], ...`` (an assignment of the value, 0 when none is given [K]);
@@ -24,13 +25,15 @@ Read into neutral sections:
   ``GOTOF``/``GOTOB`` target must lie in its direction (checked when the file ends): the neutral jump
   searches forward, then from the start, which is then each of them exactly.
 
-Subprograms: ``NAME`` / ``NAME P3`` alone in a block calls ``NAME.SPF`` (3 times); ``PROC NAME`` (no
-parameters) or an ``_SPF`` header makes the file a subprogram; ``RET``/``M17`` return.
+Subprograms: ``NAME`` / ``NAME P3`` alone in a block calls ``NAME.SPF`` (3 times), ``NAME(1, R2)`` with
+arguments; ``PROC NAME`` or ``PROC NAME(REAL A, INT B)`` (parameters by value) or an ``_SPF`` header makes the
+file a subprogram; ``RET``/``M17`` return.
 
 Kept verbatim (``NativeCode`` tagged ``siemens``: round trip byte for byte, refused by every other dialect
-and by the simulator, by name): the frames ``frames`` does not model (``ROTS``, computed values...), cycles (``CYCLE81``...), ``MCALL``,
-calls with parameters and ``PROC`` with parameters, every other instruction word (``SOFT``, ``BRISK``, ``SPOS``...),
-multi-letter addresses other than ``CR`` (``AR=``, ``TURN=``, ``I1=``...), ``T="name"``, string, array,
+and by the simulator, by name): the frames ``frames`` does not model (``ROTS``, computed values...), the cycles
+``cycles`` keeps verbatim, other ``MCALL``s, parameters by reference (``VAR``), every other instruction word
+(``SOFT``, ``BRISK``, ``SPOS``...), multi-letter addresses other than ``CR`` and ``AR`` (``arcs``) (``TURN=``,
+``I1=``...), strings other than ``T="name"`` (the set-up's tool of that name), array,
 ``CHAR``/``STRING``/``AXIS``/``FRAME`` declarations and the operators the IR lacks (``DIV``, ``B_AND``...).
 
 Errors are reported per block; the block is kept as text only, and reading goes on.
@@ -42,30 +45,29 @@ from dataclasses import dataclass, field
 from typing import Iterable, Iterator
 
 from postproc.control import (
-    CONTROL, Assign, Call, Do, Else, EndFor, EndIf, EndWhile, For, Goto, GotoLabel, If, Label, Return, Until, While,
+    Assign, Do, Else, EndFor, EndIf, EndWhile, For, Goto, GotoLabel, If, Label, Until, While,
 )
 from postproc.dialect import Reader
 from postproc.errors import Location, ParseError, PostprocError
 from postproc.expr import Binary, Expr, Func, Num, Var
-from postproc.ir import Block, BlockDelete, Comments, CycleCall, CycleCancel, NativeCode, ProgramStart, Section, Sequence
+from postproc.ir import Block, BlockDelete, Comments, NativeCode, ProgramStart, Section, Sequence
 from postproc.isg_family.expressions import Unmodelled
 from postproc.rs274.expressions import ExprSyntaxError
 from postproc.rs274.lexer import split_lines
 
-from .cycles import KINDS, PARAMETERS, cycle_words
+from .call_reading import ADDRESSES, TYPES, CallReading
+from .call_reading import DIGITS as _DIGITS
+from .call_reading import NAME_START as _NAME_START
+from .call_reading import NUMBER_START as _NUMBER_START
+from .arcs import SiemensArc, SiemensCip
+from .cycles import CYCLES
 from .frames import STATEMENTS as FRAME_STATEMENTS, read_frame
+from .holes import PARAMETERS as HOLES
 from .expressions import name_at, parse_expr, parse_variable, skip
 from .keywords import INSTRUCTIONS, describe
 
-ADDRESSES = frozenset("GXYZABCIJKFSTDMH")
-"""Single-letter addresses a word may have."""
 SKIP_LEVELS = 9
 """Block skip ``/0`` ... ``/9`` [K]."""
-TYPES = {"REAL": "real", "INT": "int", "BOOL": "bool"}
-"""DEF types whose values the IR models (numbers)."""
-_DIGITS = frozenset("0123456789")
-_NUMBER_START = frozenset("0123456789+-.")
-_NAME_START = frozenset("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz_")
 _OPENERS = {"IF": "ENDIF", "WHILE": "ENDWHILE", "FOR": "ENDFOR", "REPEAT": "UNTIL", "LOOP": "ENDLOOP"}
 _CLOSERS = {close: open_ for open_, close in _OPENERS.items()}
 _JUMPS = ("GOTOF", "GOTOB", "GOTOC", "GOTO")
@@ -74,7 +76,8 @@ _JUMPS = ("GOTOF", "GOTOB", "GOTOC", "GOTO")
 class SiemensReader(Reader):
     def read(self, lines: Iterable[str]) -> Iterator[Block]:
         report = self.ctx.diagnostics.error
-        state = _State(self.ctx.file, subprogram=self.ctx.file.upper().endswith(".SPF"))
+        state = _State(self.ctx.file, subprogram=self.ctx.file.upper().endswith(".SPF"),
+                       tool_names={t.name: t.number for t in self.ctx.setup.tools.values() if t.name is not None})
         for number, text, eol in split_lines(lines):
             try:
                 yield state.block(number, text, eol)
@@ -98,8 +101,8 @@ class _Jump:
 
 
 @dataclass
-class _State:
-    """What reading a file remembers between blocks."""
+class _State(CallReading):
+    """What reading a file remembers between blocks (calls, cycles and tools: ``CallReading``)."""
 
     file: str
     stack: list[tuple[str, str, int]] = field(default_factory=list)
@@ -110,6 +113,8 @@ class _State:
     jumps: list[_Jump] = field(default_factory=list)
     types: dict[str, str] = field(default_factory=dict)
     """Declared user variables (lower case) -> their type."""
+    tool_names: dict[str, int] = field(default_factory=dict)
+    """The set-up's tool names -> their numbers (``T="name"``)."""
     subprogram: bool = False
     """The file is a subprogram: a ``.SPF`` file (every file a call loads is one), an ``_SPF`` header or a
     ``PROC`` line."""
@@ -198,10 +203,17 @@ class _State:
             if word == "MCALL":
                 self.mcall(block, code, pos, end)
                 return
-            what = describe(word)
+            if word == "CIP":
+                block.add(SiemensCip())
+                pos = end
+            if (word in CYCLES or word in HOLES) and code[skip(code, end):skip(code, end) + 1] == "(" \
+                    and BlockDelete.KEY not in block.sections:
+                self.cycle(block, code, pos, end, word, once=True)
+                return
+            what = describe(word) if word != "CIP" else None
             if what is not None:
                 raise Unmodelled(what, pos)
-            if self.call(block, code, pos, end):
+            if word != "CIP" and self.call(block, code, pos, end):
                 return
         self.words(block, code, pos)
         self.returns(block, code)
@@ -215,110 +227,6 @@ class _State:
             raise self.error(line, pos + 1, f"a program header is %_N_<NAME>_MPF or %_N_<NAME>_SPF, not %{rest}")
         return rest[3:]
 
-    def mcall(self, block: Block, code: str, pos: int, end: int) -> None:
-        """``MCALL CYCLE81(..)``/``MCALL CYCLE82(..)`` with number parameters: the cycle's data block
-        (``cycles``); a bare ``MCALL`` cancels it. Other modal calls are kept verbatim."""
-        at = skip(code, end)
-        if at >= len(code):
-            block.add(CycleCancel())
-            return
-        stop = name_at(code, at)
-        name = code[at:stop].upper()
-        if name not in KINDS or code[skip(code, stop):skip(code, stop) + 1] != "(":
-            raise Unmodelled(f"MCALL {name or '..'} (a modal subprogram or cycle call)", pos)
-        params: list[float | None] = []
-        at = skip(code, stop) + 1
-        while True:
-            at = skip(code, at)
-            if code[at:at + 1] in (",", ")"):
-                params.append(None)
-            else:
-                at, value = parse_expr(code, at)
-                if not isinstance(value, Num):
-                    raise Unmodelled(f"MCALL {name} with computed parameters", pos)
-                params.append(value.value)
-                at = skip(code, at)
-            if code[at:at + 1] == ",":
-                at += 1
-                continue
-            if code[at:at + 1] != ")":
-                raise self.error(block.line, at + 1, f"',' or ')' expected in {name}(..)")
-            break
-        if skip(code, at + 1) < len(code):
-            raise self.error(block.line, skip(code, at + 1) + 1, f"MCALL {name}(..) is alone in its block")
-        if len(params) > len(PARAMETERS[name]):
-            raise Unmodelled(f"MCALL {name} with parameters after {PARAMETERS[name][-1]} (GMODE, DMODE...)", pos)
-        try:
-            words, levels = cycle_words(name, params, pos)
-        except ValueError as err:
-            raise self.error(block.line, pos + 1, str(err)) from None
-        block.words.extend(words)
-        block.add(levels)
-        block.add(CycleCall(KINDS[name]))
-
-    # -- subprograms -------------------------------------------------------------------------------------
-    def procedure(self, block: Block, code: str, pos: int, end: int, word: str) -> None:
-        """``PROC NAME`` opens a subprogram without parameters (the file is its body); ``RET`` returns [K:
-        840D Fundamentals, "Subprograms"]. Parameters (``PROC NAME(REAL A)``) and ``SAVE``/``DISPLOF`` are
-        not modelled (kept verbatim)."""
-        at = skip(code, end)
-        if word == "RET":
-            if at < len(code):
-                raise Unmodelled("RET with a target or a value", at)
-            block.add(Return())
-            return
-        stop = name_at(code, at)
-        if stop == at or code[at] not in _NAME_START:
-            raise self.error(block.line, at + 1, "PROC needs a subprogram name")
-        if skip(code, stop) < len(code):
-            raise Unmodelled("PROC with parameters or attributes (SAVE, DISPLOF)", skip(code, stop))
-        self.subprogram = True
-        if "Comments" not in block.sections:
-            block.add(Comments([code[pos:].strip()]))
-
-    def call(self, block: Block, code: str, pos: int, end: int) -> bool:
-        """``NAME`` or ``NAME P3`` alone in its block: a call of subprogram ``NAME`` (file ``NAME.SPF``), run
-        3 times, with its own local variables [K: 840D Fundamentals, "Subprogram call", "Program repetition
-        P"]. ``NAME(..)`` (parameters) is not modelled. Anything else is no call (the words are read)."""
-        name = code[pos:end]
-        upper = name.upper()
-        n = len(code)
-        at = skip(code, end)
-        if upper[:1] == "R" and upper[1:].isdigit() or name.lower() in self.types or upper[:1] == "$" \
-                or len(name) == 1 or upper[:1] in ADDRESSES and upper[1:2] in _NUMBER_START \
-                or code[at:at + 1] == "=":
-            return False
-        if code[at:at + 1] == "(":
-            raise Unmodelled(f"a call of {upper} with parameters", pos)
-        repeat: Expr | None = None
-        if at < n:
-            if code[at] not in "Pp":
-                raise Unmodelled(f"'{name}' (an instruction or a subprogram call)", pos)
-            start = skip(code, at + 1 + (code[skip(code, at + 1):skip(code, at + 1) + 1] == "="))
-            stop = start
-            while stop < n and code[stop] in _DIGITS:
-                stop += 1
-            if stop == start or skip(code, stop) < n:
-                raise self.error(block.line, at + 1, f"a call of {upper} repeats a whole number of times: {upper} P3")
-            repeat = Num(float(int(code[start:stop])))
-        block.add(Call(upper, repeat=repeat, kind="macro"))
-        return True
-
-    def returns(self, block: Block, code: str) -> None:
-        """``M17`` returns from a subprogram; ``M2``/``M30`` in a subprogram file is refused (whether it
-        returns or ends the program is not confirmed here [?])."""
-        for i, (letter, num) in enumerate(block.words):
-            if letter not in "Mm" or not num.isdigit():
-                continue
-            if int(num) == 17:
-                if CONTROL in block.sections:
-                    raise self.error(block.line, 1, "M17: one call or return per block")
-                del block.words[i]
-                block.add(Return())
-                return
-            if int(num) in (2, 30) and self.subprogram:
-                raise self.error(block.line, 1, f"M{num} in a subprogram: write RET or M17 (whether M{num} returns "
-                                                "or ends the program is not confirmed here)")
 
     # -- control statements -----------------------------------------------------------------------------
     def open(self, word: str, line: int) -> str:
@@ -496,6 +404,12 @@ class _State:
                 letter = c
             elif upper == "CR" and assigned:
                 letter = "R"
+            elif upper == "AR" and assigned:
+                pos = self.opening_angle(block, code, pos, eq + 1)
+                continue
+            elif upper in ("I1", "J1", "K1") and assigned and SiemensCip.KEY in block.sections:
+                pos = self.intermediate_point(block, code, pos, eq + 1, upper)
+                continue
             elif up in ADDRESSES and single and not assigned and code[pos + 1:pos + 2] in _NUMBER_START:
                 letter = c
             elif up in ADDRESSES and end == pos + 1:
@@ -517,8 +431,32 @@ class _State:
                 pos = self.number(block, code, pos, letter)
         if modes:
             self.distance_modes(block, modes)
+        if SiemensArc.KEY in block.sections and not block.values.keys().isdisjoint("XYIJ"):
+            raise Unmodelled("AR= with computed coordinates", 0)
         if assigns:
             block.add(Assign(assigns))
+
+    def intermediate_point(self, block: Block, code: str, pos: int, start: int, name: str) -> int:
+        """``I1=5`` in a ``CIP`` block: a coordinate of the circle's intermediate point (``arcs``), a number."""
+        cip = block.sections[SiemensCip.KEY]
+        attr = name[0].lower() + "1"
+        if getattr(cip, attr) is not None:
+            raise self.error(block.line, pos + 1, f"{name} appears twice in one block")
+        end, value = parse_expr(code, start)
+        if not isinstance(value, Num):
+            raise Unmodelled(f"{name}= with a computed value", pos)
+        setattr(cip, attr, value.value)
+        return end
+
+    def opening_angle(self, block: Block, code: str, pos: int, start: int) -> int:
+        """``AR=90``: the circle's opening angle (``arcs``), a number."""
+        if SiemensArc.KEY in block.sections:
+            raise self.error(block.line, pos + 1, "AR appears twice in one block")
+        end, value = parse_expr(code, start)
+        if not isinstance(value, Num):
+            raise Unmodelled("AR= with a computed angle", pos)
+        block.add(SiemensArc(value.value))
+        return end
 
     def number(self, block: Block, code: str, pos: int, letter: str) -> int:
         n = len(code)
@@ -541,9 +479,12 @@ class _State:
 
     def value(self, block: Block, code: str, pos: int, start: int, letter: str,
               modes: list[tuple[str, str, int]]) -> int:
-        """``X=10``, ``X=R1*2``, ``X=AC(10)``; a ``"string"`` (``T="DRILL"``) is not modelled."""
+        """``X=10``, ``X=R1*2``, ``X=AC(10)``; ``T="DRILL"`` (``tool``); any other ``"string"`` is not
+        modelled."""
         at = skip(code, start)
         if code[at:at + 1] == '"':
+            if letter.upper() == "T":
+                return self.tool(block, code, at)
             raise Unmodelled(f"{letter.upper()}=\"..\" (a name as the value)", pos)
         head = code[at:at + 3].upper()
         mode = ""

@@ -61,22 +61,36 @@ class SiemensVariables:
         self._check(key)
         if value is None:
             raise EvalError(f"{_spell(key)} cannot be set to a vacant value")
+        if key == "%n":  # a PROC's number of parameters: a call may pass no more arguments
+            passed = self.levels[-1].get("%passed", 0.0)
+            if passed > value:
+                raise EvalError(f"the call passes {passed:g} arguments, the PROC takes {value:g}")
         if isinstance(key, int):
             self.shared[key] = value
         else:
             self.levels[-1][key] = value
 
     def enter(self, args: dict[int, Value], new_level: bool) -> None:
+        """A call's arguments are the new level's ``%1``, ``%2``... (``call_reading.CallReading.procedure_parameters``)."""
         if new_level:
-            self.levels.append({})
+            self.levels.append({f"%{n}": value for n, value in args.items() if value is not None})
+            if len(self.levels) > 1 and args:
+                self.levels[-1]["%passed"] = float(max(args))
 
     def leave(self, new_level: bool, value: Value = None) -> None:
         if new_level and len(self.levels) > 1:
-            self.levels.pop()
+            level = self.levels.pop()
+            if "%passed" in level and "%n" not in level:
+                raise EvalError(f"the call passes {level['%passed']:g} arguments to a subprogram without PROC "
+                                "parameters")
 
     def returned(self, value: Value) -> None:
         """Subprograms return no value here."""
 
 
 def _spell(key: VarKey) -> str:
-    return f"R{key - R_BASE}" if isinstance(key, int) else key.upper()
+    if isinstance(key, int):
+        return f"R{key - R_BASE}"
+    if key.startswith("%"):
+        return f"argument {key[1:]} (the call passes none in its place)"
+    return key.upper()

@@ -112,6 +112,9 @@ class ToolData(Entry):
     TAG = "Tool"
     KEY = "number"
     number: int = setting(ge=0, le=9999)
+    name: str | None = setting(None, pattern=r'^[^"\x00-\x1f]{1,32}$')
+    """The tool's name, which SINUMERIK selects it by (``T="DRILL_8"``) [K: 840D sl Fundamentals, "Tool change
+    with T": tool management addresses a tool by its name; [?] the 32-character bound]. None: no name."""
     length: float | None = coordinate()
     """G43/G44 tool length: G43 adds it to Z, G44 subtracts it."""
     radius: float | None = coordinate()
