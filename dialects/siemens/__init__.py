@@ -36,6 +36,12 @@ def select_tool_data(blocks: Iterator[Block], ctx: Context, target: type[Dialect
     return step(blocks, ctx, target)
 
 
+def resolve_radius_where_d_cannot(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """``postproc.isg_family.tool_data.resolve_radius_where_d_cannot``, imported when first used."""
+    from postproc.isg_family.tool_data import resolve_radius_where_d_cannot as step
+    return step(blocks, ctx, target)
+
+
 class Siemens(Dialect):
     NAME = "siemens"
     DESCRIPTION = "Siemens SINUMERIK 840D sl / 828D milling: R parameters, DEF variables, IF/WHILE/FOR, GOTOF labels"
@@ -71,10 +77,13 @@ class Siemens(Dialect):
     PROGRAMS = False
     """Variables and control flow are read (and run, to translate); the writer spells no statement yet, so a
     program that computes reaches SINUMERIK flattened (SINUMERIK to SINUMERIK is copied as it is)."""
-    LOWERING = (stops_before_motion, select_tool_data)
+    LOWERING = (stops_before_motion, resolve_radius_where_d_cannot, select_tool_data)
     """A spindle stop or coolant off that the source made before its block's motion goes in a block of its
-    own before it (SINUMERIK acts on M5/M9 after the block's motion, as Fanuc [?]); another family's length
-    and radius registers become the D that selects them (``select_tool_data``)."""
+    own before it (SINUMERIK acts on M5/M9 after the block's motion, as Fanuc [?]); a G41/G42 whose D would
+    bring another length than the one in force (a D carries the edge's length and radius together [K: 840D
+    Fundamentals "Tool offsets"]) becomes the compensated path where the source's rules are modelled
+    (``resolve_radius_where_d_cannot``, as for ISG); another family's length and radius registers become the
+    D that selects them (``select_tool_data``)."""
 
     @classmethod
     def python_pipeline(cls, setup: MachineSetup) -> Pipeline:
