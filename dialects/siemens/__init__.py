@@ -74,9 +74,10 @@ class Siemens(Dialect):
     is not stated [?]."""
     COMMENTS = CommentSyntax(parens=False, semicolon=True)
     """``;`` to the end of the block [K: 802D manual p.133]; ``(`` is an expression's."""
-    PROGRAMS = False
-    """Variables and control flow are read (and run, to translate); the writer spells no statement yet, so a
-    program that computes reaches SINUMERIK flattened (SINUMERIK to SINUMERIK is copied as it is)."""
+    PROGRAMS = True
+    """Variables and control flow are read, run and written: another dialect's program that computes is kept
+    symbolic where every construct has an exact SINUMERIK spelling (``control_writing``: R parameters,
+    IF/WHILE/REPEAT/FOR, GOTOF/GOTOB), else flattened with the usual warning."""
     LOWERING = (stops_before_motion, resolve_radius_where_d_cannot, select_tool_data)
     """A spindle stop or coolant off that the source made before its block's motion goes in a block of its
     own before it (SINUMERIK acts on M5/M9 after the block's motion, as Fanuc [?]); a G41/G42 whose D would

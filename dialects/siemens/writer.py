@@ -4,9 +4,11 @@ comments and ``%_N_NAME_MPF`` headers.
 * A block read from SINUMERIK and unchanged is copied byte for byte (``WordWriter``); normalised, a block
   with an ``=`` form, a statement, a label or a main-block number keeps its own text (only plain words are
   rebuilt).
-* Programs that compute reach SINUMERIK flattened (``Siemens.PROGRAMS`` is False: the writer spells no
-  statements yet); canned cycles arrive expanded (``CYCLE81``... are not written yet): the return level and
-  the cycle cancel of the source say nothing here and are not written.
+* Variables and control flow of another dialect are written where each construct has an exact SINUMERIK
+  spelling (``control_writing``: R parameters, ``IF``/``WHILE``/``REPEAT``/``FOR``, ``GOTOF``/``GOTOB`` to
+  block numbers and labels), else the program is flattened; a computed word is ``X=<expr>``. Canned cycles
+  arrive expanded (``CYCLE81``... are not written yet): the return level and the cycle cancel of the source
+  say nothing here and are not written.
 * A dwell is ``G4 F<seconds>`` alone in its block (only a block number joins it) [K: 840D Fundamentals,
   "G4 must be programmed in a separate block"]; what acts before it goes in a block before.
 * Tool data: ``D<n>`` selects cutting edge n (its length and radius), ``D0`` none: a Fanuc ``G43 H``/``G41 D``
@@ -19,23 +21,35 @@ from __future__ import annotations
 
 from typing import Any, ClassVar
 
+from postproc.context import Context
 from postproc.control import ASSIGN, CONTROL, LABEL
-from postproc.ir import Block, Motion
+from postproc.dialect import Dialect
+from postproc.errors import UnsupportedError
+from postproc.expr import Expr
+from postproc.ir import Block, Motion, Section
 from postproc.rs274.codes import CodeTable
 from postproc.rs274.writer import WordWriter
 
 from .codes import CODES
+from .control_writing import JumpTargets, expression, label_name, statement
 
 _WITH_DWELL = ("Dwell", "Sequence")
 _ALONE_WITH_DWELL = frozenset((*_WITH_DWELL, "Comments", "BlockDelete"))
 _OWN_TEXT = frozenset((ASSIGN, CONTROL, LABEL, "NativeCode", "ProgramStart", "FrameChange"))
 """Sections whose block keeps its text when normalised."""
+_BESIDE_ASSIGN = frozenset((ASSIGN, "Sequence", "Comments", "BlockDelete", LABEL))
+"""What may share a block with an assignment."""
 
 
 class SiemensWriter(WordWriter):
     DIALECT: ClassVar[str] = "siemens"
     CODES: ClassVar[CodeTable] = CODES
     DWELL_WORD: ClassVar[str] = "F"
+
+    def __init__(self, ctx: Context, source_dialect: str, target: type[Dialect] | None = None) -> None:
+        super().__init__(ctx, source_dialect, target)
+        self.targets = JumpTargets()
+        """Block numbers and labels written, and the jumps to them (``control_writing``)."""
 
     def normalized(self, block: Block) -> str:
         text = block.text or ""
@@ -51,7 +65,54 @@ class SiemensWriter(WordWriter):
         if "Dwell" in sections and any(k not in _ALONE_WITH_DWELL for k in sections) \
                 and "CompoundMotion" not in sections:
             return self.around_dwell(block, _WITH_DWELL)
-        return super().generate(block)
+        label = sections.get(LABEL)
+        sequence = sections.get("Sequence")
+        if sequence is not None:
+            self.targets.mark(f"N{getattr(sequence, 'number')}")
+        if label is None:
+            return super().generate(block)
+        name = self._label(getattr(label, "name"), block)
+        self.targets.mark(name)
+        text = super().generate(block)
+        body = text.lstrip()
+        head = ""
+        if body[:1] == "/":  # a block skip, then the block number, then the label [K]
+            head, _, body = body.partition(" ")
+            head += " "
+        if body[:1] == "N" and body[1:2].isdigit():
+            number, _, body = body.partition(" ")
+            head += number + " "
+        return f"{head}{name}: {body}" if body.strip() else f"{head}{name}:" + (block.eol or "\n")
+
+    def _label(self, name: str, block: Block) -> str:
+        try:
+            return label_name(name)
+        except UnsupportedError as err:
+            self.unsupported(err.message, block)
+
+    def statement_words(self, section: Section, block: Block) -> list[str]:
+        """Variables and control flow (``control_writing``); an assignment shares its block with nothing
+        that acts (in which order SINUMERIK evaluates an assignment and the block's words is not
+        confirmed here [?])."""
+        if ASSIGN in block.sections and any(key not in _BESIDE_ASSIGN for key in block.sections):
+            self.unsupported("an assignment beside other words in one block", block)
+        try:
+            return statement(section, self.targets, self.ctx.at(block))
+        except UnsupportedError as err:
+            self.unsupported(err.message, block)
+
+    def expression(self, expr: Expr, block: Block, what: str = "a computed word") -> str:
+        """A computed word is ``<address>=<expr>`` [K: 840D Fundamentals, "an address with an expression
+        takes '='"]."""
+        try:
+            return "=" + expression(expr)
+        except UnsupportedError as err:
+            self.unsupported(err.message, block)
+
+    def finish(self) -> str:
+        for problem in self.targets.problems():
+            self.ctx.diagnostics.error(problem)
+        return super().finish()
 
     def program_start(self, s: Any, block: Block) -> str:
         """``%_N_NAME_MPF``; a numbered program is ``%_N_PROG<number>_MPF`` [?: a name starts with a
@@ -86,7 +147,8 @@ class SiemensWriter(WordWriter):
         """An arc by radius is ``CR=`` (negative for more than 180 degrees, as Fanuc's R) [K]."""
         words = super().motion_words(s, block)
         if s.radius is not None and words and words[-1].startswith("R"):
-            words[-1] = "CR=" + words[-1][1:]
+            value = words[-1][1:]
+            words[-1] = "CR" + value if value.startswith("=") else "CR=" + value
         return words
 
     def return_level_words(self, s: Any, block: Block) -> list[str]:
