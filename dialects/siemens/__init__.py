@@ -16,7 +16,7 @@ from typing import TYPE_CHECKING, Callable, Iterator
 
 from postproc.comments import CommentSyntax
 from postproc.cycle_words import CycleWords
-from postproc.dialect import Dialect, Lazy, Reader
+from postproc.dialect import Dialect, Lazy, Reader, ResolvedCycle
 from postproc.hookspecs import hookimpl
 from postproc.rs274.order_of_execution import stops_before_motion
 from postproc.setup.machine_setup import MachineSetup
@@ -53,9 +53,11 @@ class Siemens(Dialect):
                              return_to_r="RTP=RFP+SDIS", level="R", peck="Q", shift="Q", dwell="P", repeat=("K",))
     """``MCALL CYCLE81``/``CYCLE82`` are read as the Fanuc-family words of their meaning (``cycles``: R level,
     Z depth, P dwell in ms, K0 for the call that drills nothing)."""
-    NATIVE_CYCLES = frozenset()
-    """``CYCLE8x`` are not written yet: every cycle is expanded for SINUMERIK (so no ``CYCLE_SEMANTICS``; the
-    cycles read move by Fanuc's rules, the reading pipeline's ``CannedCycleResolveSyntax("fanuc")``)."""
+    NATIVE_CYCLES = frozenset({"drill", "drill_dwell"})
+    """Fanuc G81/G82 are written as ``MCALL CYCLE81``/``CYCLE82`` where they move the same (``moves_like``,
+    ``cycle_writing``); every other cycle is expanded for SINUMERIK."""
+    CYCLE_SEMANTICS = "fanuc"
+    """The cycles read move by Fanuc's rules (the reading pipeline's ``CannedCycleResolveSyntax("fanuc")``)."""
 
     PROGRAM_NUMBERS = True
     """``%_N_NAME_MPF`` names the main program."""
@@ -85,6 +87,16 @@ class Siemens(Dialect):
     Fundamentals "Tool offsets"]) becomes the compensated path where the source's rules are modelled
     (``resolve_radius_where_d_cannot``, as for ISG); another family's length and radius registers become the
     D that selects them (``select_tool_data``)."""
+
+    @classmethod
+    def moves_like(cls, cycle: ResolvedCycle) -> bool:
+        """A Fanuc-family G81/G82 block that ``MCALL CYCLE81``/``CYCLE82`` and a position block drill alike
+        (``cycle_writing.writable``); any other is expanded."""
+        if not super().moves_like(cycle):
+            return False
+        from postproc.cycles.section import CannedCycle
+        from .cycle_writing import writable
+        return isinstance(cycle, CannedCycle) and writable(cycle)
 
     @classmethod
     def python_pipeline(cls, setup: MachineSetup) -> Pipeline:
