@@ -13,9 +13,10 @@ Exactly where the meanings match, which is where the reader (``cycles``) reads t
   expands it too) are expanded, as is a block that repeats (K/L), has no new position in the plane, is not in
   G17, programs its levels incrementally (G91) or computes a word;
 * the cycle runs after each block that moves [K: 3.2 "every later block that moves runs the cycle at its
-  end"], so a hole is a position block with X/Y only, in G0 (written before the ``MCALL`` where another
-  motion mode is in force), and anything that moves otherwise while the call is active (a motion code, an
-  expansion, the cycle cancel) gets the bare ``MCALL`` first.
+  end"], so a hole is a position block with X/Y only, in G0 (written before each ``MCALL``), and anything that
+  moves otherwise while the call is active (a motion code, an expansion, the cycle cancel, the program end)
+  gets the bare ``MCALL`` first. A hole where the tool already stands is written as the cycle's own moves
+  outside the call (``in_place_moves``), the call taken up again at the next hole.
 """
 
 from __future__ import annotations
@@ -31,6 +32,27 @@ SAME = 1e-9
 """Levels closer than this (program units) are the same level."""
 
 
+def moves_in_plane(cycle: CannedCycle) -> bool:
+    """Whether the hole's block moves in the plane. One that does not (a hole where the tool stands: the
+    cycle's first block after a positioning move, usually) is written as the cycle's moves, outside the
+    call: whether a block that moves by nothing runs the modal call is not confirmed [?]."""
+    for axis in ("X", "Y"):
+        start = cycle.start.get(axis)
+        if axis in cycle.words and (start is None or abs(start - cycle.position[axis]) > SAME):
+            return True
+    return False
+
+
+def in_place_moves(cycle: CannedCycle, call: "Call") -> list[tuple[str, float]]:
+    """The moves of Fanuc's G81/G82 at the hole where the tool stands [K: Fanuc 0i-MF operator's manual,
+    "Drilling cycle, spot drilling (G81)": rapid to R, feed to Z, (G82: dwell), rapid to the return level];
+    ``("dwell", seconds)`` for the dwell."""
+    moves = [("rapid", call.rfp), ("linear", call.dp)]
+    if call.dtb:
+        moves.append(("dwell", call.dtb))
+    return moves + [("rapid", call.rtp)]
+
+
 def writable(cycle: CannedCycle) -> bool:
     """Whether ``cycle``'s block is written natively (see the module docstring); else it is expanded."""
     if cycle.kind not in NAMES or cycle.plane != "XY" or cycle.repeat != 1 or cycle.expand:
@@ -43,15 +65,9 @@ def writable(cycle: CannedCycle) -> bool:
     if "Z" in words and abs(float(words["Z"]) - cycle.bottom) > SAME \
             or "R" in words and abs(float(words["R"]) - cycle.r) > SAME:
         return False  # incremental levels (G91)
-    moved = False
     for axis in ("X", "Y"):
-        if axis in words:
-            if abs(float(words[axis]) - cycle.position.get(axis, float("nan"))) > SAME:
-                return False  # an incremental position
-            start = cycle.start.get(axis)
-            moved = moved or start is None or abs(start - cycle.position[axis]) > SAME
-    if not moved:
-        return False  # a hole without a move in the plane: whether the call runs is not confirmed [?]
+        if axis in words and abs(float(words[axis]) - cycle.position.get(axis, float("nan"))) > SAME:
+            return False  # an incremental position
     if cycle.dwell is not None and abs(cycle.dwell * 1000 - round(cycle.dwell * 1000)) > 1e-6:
         return False
     if cycle.return_level == "initial":

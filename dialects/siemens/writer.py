@@ -29,13 +29,13 @@ from postproc.dialect import Dialect
 from postproc.errors import UnsupportedError
 from postproc.event_order import after_motion
 from postproc.expr import Expr
-from postproc.ir import Block, Motion, Section
+from postproc.ir import Block, Dwell, Motion, Section
 from postproc.rs274.codes import CodeTable
 from postproc.rs274.writer import WordWriter
 
 from .codes import CODES
 from .control_writing import JumpTargets, expression, label_name, statement
-from .cycle_writing import Call
+from .cycle_writing import Call, in_place_moves, moves_in_plane
 
 _WITH_DWELL = ("Dwell", "Sequence")
 _ALONE_WITH_DWELL = frozenset((*_WITH_DWELL, "Comments", "BlockDelete"))
@@ -190,20 +190,29 @@ class SiemensWriter(WordWriter):
                              "whether the block runs or not)", block)
         if self.modal.distance != "absolute" or self.modal.plane != "XY":
             self.unsupported("a drilling cycle outside G17 G90 written as a modal call", block)
-        if self.flowing and cycle.return_level == "initial":
-            self.unsupported("a G98 cycle after a control statement (its retraction plane, the initial level, is "
-                             "that of one run)", block)
+        if self.flowing:
+            self.unsupported("a drilling cycle after a control statement or label as a modal call (which call is "
+                             "active, and the initial level, depend on the run; the text is written in its order)",
+                             block)
         call = Call.of(cycle)
-        eol = block.eol or "\n"
         head = {k: v for k, v in sections.items() if k not in _CYCLE_OWN and not after_motion(k, v)}
         tail = {k: v for k, v in sections.items() if k not in _CYCLE_OWN and k not in head}
         sequence = sections.get("Sequence")
         lines: list[str] = []
         if sequence is not None:
             self.targets.mark(f"N{getattr(sequence, 'number')}")
-            head = {"Sequence": sequence, **head}
         if head:
             lines.append(self._part(block, head))
+        if not moves_in_plane(cycle):
+            if self.call is not None:
+                lines.append("MCALL\n")
+                self.call = None
+            for kind, value in in_place_moves(cycle, call):
+                part = {"Dwell": Dwell(value)} if kind == "dwell" else {"Motion": Motion(kind, {"Z": value})}
+                lines.append(self._part(block, part))
+            if tail:
+                lines.append(self._part(block, tail))
+            return self._cycle_text(block, lines)
         if call != self.call:
             if self.call is not None:
                 lines.append("MCALL\n")
@@ -220,9 +229,17 @@ class SiemensWriter(WordWriter):
         lines.append(" ".join(words) + "\n")
         if tail:
             lines.append(self._part(block, tail))
+        return self._cycle_text(block, lines)
+
+    def _cycle_text(self, block: Block, lines: list[str]) -> str:
+        """The lines of a cycle block, its block number on the first, its end of line on the last."""
+        sections = block.sections
         self._track({k: v for k, v in sections.items() if k != "CannedCycle"})
+        sequence = sections.get("Sequence")
+        if sequence is not None:
+            lines[0] = " ".join(self.sequence_words(sequence, block)) + " " + lines[0]
         text = "".join(lines)
-        return text[:-1] + eol if text.endswith("\n") else text
+        return text[:-1] + (block.eol or "\n") if text.endswith("\n") else text
 
     def end_call(self, block: Block) -> str:
         """The bare ``MCALL`` before a block that moves otherwise or ends the program."""
