@@ -208,7 +208,8 @@ class SiemensWriter(WordWriter):
                 lines.append("MCALL\n")
                 self.call = None
             for kind, value in in_place_moves(cycle, call):
-                part = {"Dwell": Dwell(value)} if kind == "dwell" else {"Motion": Motion(kind, {"Z": value})}
+                part: dict[str, Section] = ({"Dwell": Dwell(value)} if kind == "dwell"
+                                            else {"Motion": Motion(kind, {"Z": value})})
                 lines.append(self._part(block, part))
             if tail:
                 lines.append(self._part(block, tail))
