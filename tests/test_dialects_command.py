@@ -97,4 +97,4 @@ def test_the_core_declares_no_family_and_each_dialect_shows_its_own():
              for i, name in enumerate(rows["capability"])}
     assert shown == {"fagor": ("fanuc", "-"), "fanuc": ("fanuc", "U=X,W=Z"), "grbl": ("-", "-"), "grblhal": ("rs274", "-"),
                      "gsk": ("-", "U=X,W=Z"), "isg": ("-", "-"), "linuxcnc": ("rs274", "-"),
-                     "mach3": ("rs274", "-"), "siemens": ("-", "-")}
+                     "mach3": ("rs274", "-"), "siemens": ("fanuc", "-")}

@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING, Callable, Iterator
 
 from postproc.comments import CommentSyntax
 from postproc.cycle_words import CycleWords
-from postproc.dialect import Dialect, Lazy, Reader
+from postproc.dialect import Dialect, Lazy, Reader, ResolvedCycle
 from postproc.hookspecs import hookimpl
 from postproc.rs274.order_of_execution import stops_before_motion
 from postproc.setup.machine_setup import MachineSetup
@@ -37,6 +37,12 @@ def select_tool_data(blocks: Iterator[Block], ctx: Context, target: type[Dialect
     return step(blocks, ctx, target)
 
 
+def resolve_radius_where_d_cannot(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """``postproc.isg_family.tool_data.resolve_radius_where_d_cannot``, imported when first used."""
+    from postproc.isg_family.tool_data import resolve_radius_where_d_cannot as step
+    return step(blocks, ctx, target)
+
+
 class Siemens(Dialect):
     NAME = "siemens"
     DESCRIPTION = "Siemens SINUMERIK 840D sl / 828D milling: R parameters, DEF variables, IF/WHILE/FOR, GOTOF labels"
@@ -49,9 +55,11 @@ class Siemens(Dialect):
                              return_to_r="RTP=RFP+SDIS", level="R", peck="Q", shift="Q", dwell="P", repeat=("K",))
     """``CYCLE81``/``82``/``85``/``87``/``88``/``89`` are read as the Fanuc-family words of their meaning
     (``cycles``: R level, Z depth, P dwell in ms, K0 for the modal call that drills nothing)."""
-    NATIVE_CYCLES = frozenset()
-    """``CYCLE8x`` are not written yet: every cycle is expanded for SINUMERIK (so no ``CYCLE_SEMANTICS``; the
-    cycles read move by Fanuc's rules, the reading pipeline's ``CannedCycleResolveSyntax("fanuc")``)."""
+    NATIVE_CYCLES = frozenset({"drill", "drill_dwell"})
+    """Fanuc G81/G82 are written as ``MCALL CYCLE81``/``CYCLE82`` where they move the same (``moves_like``,
+    ``cycle_writing``); every other cycle is expanded for SINUMERIK."""
+    CYCLE_SEMANTICS = "fanuc"
+    """The cycles read move by Fanuc's rules (the reading pipeline's ``CannedCycleResolveSyntax("fanuc")``)."""
 
     PROGRAM_NUMBERS = True
     """``%_N_NAME_MPF`` names the main program."""
@@ -70,13 +78,27 @@ class Siemens(Dialect):
     is not stated [?]."""
     COMMENTS = CommentSyntax(parens=False, semicolon=True)
     """``;`` to the end of the block [K: 802D manual p.133]; ``(`` is an expression's."""
-    PROGRAMS = False
-    """Variables and control flow are read (and run, to translate); the writer spells no statement yet, so a
-    program that computes reaches SINUMERIK flattened (SINUMERIK to SINUMERIK is copied as it is)."""
-    LOWERING = (stops_before_motion, select_tool_data)
+    PROGRAMS = True
+    """Variables and control flow are read, run and written: another dialect's program that computes is kept
+    symbolic where every construct has an exact SINUMERIK spelling (``control_writing``: R parameters,
+    IF/WHILE/REPEAT/FOR, GOTOF/GOTOB), else flattened with the usual warning."""
+    LOWERING = (stops_before_motion, resolve_radius_where_d_cannot, select_tool_data)
     """A spindle stop or coolant off that the source made before its block's motion goes in a block of its
-    own before it (SINUMERIK acts on M5/M9 after the block's motion, as Fanuc [?]); another family's length
-    and radius registers become the D that selects them (``select_tool_data``)."""
+    own before it (SINUMERIK acts on M5/M9 after the block's motion, as Fanuc [?]); a G41/G42 whose D would
+    bring another length than the one in force (a D carries the edge's length and radius together [K: 840D
+    Fundamentals "Tool offsets"]) becomes the compensated path where the source's rules are modelled
+    (``resolve_radius_where_d_cannot``, as for ISG); another family's length and radius registers become the
+    D that selects them (``select_tool_data``)."""
+
+    @classmethod
+    def moves_like(cls, cycle: ResolvedCycle) -> bool:
+        """A Fanuc-family G81/G82 block that ``MCALL CYCLE81``/``CYCLE82`` and a position block drill alike
+        (``cycle_writing.writable``); any other is expanded."""
+        if not super().moves_like(cycle):
+            return False
+        from postproc.cycles.section import CannedCycle
+        from .cycle_writing import writable
+        return isinstance(cycle, CannedCycle) and writable(cycle)
 
     @classmethod
     def python_pipeline(cls, setup: MachineSetup) -> Pipeline:

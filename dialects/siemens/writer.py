@@ -4,9 +4,12 @@ comments and ``%_N_NAME_MPF`` headers.
 * A block read from SINUMERIK and unchanged is copied byte for byte (``WordWriter``); normalised, a block
   with an ``=`` form, a statement, a label or a main-block number keeps its own text (only plain words are
   rebuilt).
-* Programs that compute reach SINUMERIK flattened (``Siemens.PROGRAMS`` is False: the writer spells no
-  statements yet); canned cycles arrive expanded (``CYCLE81``... are not written yet): the return level and
-  the cycle cancel of the source say nothing here and are not written.
+* Variables and control flow of another dialect are written where each construct has an exact SINUMERIK
+  spelling (``control_writing``: R parameters, ``IF``/``WHILE``/``REPEAT``/``FOR``, ``GOTOF``/``GOTOB`` to
+  block numbers and labels), else the program is flattened; a computed word is ``X=<expr>``.
+* Fanuc G81/G82 are ``MCALL CYCLE81``/``CYCLE82`` with the holes as position blocks and a bare ``MCALL`` before
+  anything else that moves (``cycle_writing``, which says where; every other cycle arrives expanded). The
+  return level is in the call's RTP, so G98/G99 write nothing.
 * A dwell is ``G4 F<seconds>`` alone in its block (only a block number joins it) [K: 840D Fundamentals,
   "G4 must be programmed in a separate block"]; what acts before it goes in a block before.
 * Tool data: ``D<n>`` selects cutting edge n (its length and radius), ``D0`` none: a Fanuc ``G43 H``/``G41 D``
@@ -19,23 +22,47 @@ from __future__ import annotations
 
 from typing import Any, ClassVar
 
+from postproc.context import Context
 from postproc.control import ASSIGN, CONTROL, LABEL
-from postproc.ir import Block, Motion
+from postproc.cycles.section import CannedCycle
+from postproc.dialect import Dialect
+from postproc.errors import UnsupportedError
+from postproc.event_order import after_motion
+from postproc.expr import Expr
+from postproc.ir import Block, Dwell, Motion, Section
 from postproc.rs274.codes import CodeTable
 from postproc.rs274.writer import WordWriter
 
 from .codes import CODES
+from .control_writing import JumpTargets, expression, label_name, statement
+from .cycle_writing import Call, in_place_moves, moves_in_plane
 
 _WITH_DWELL = ("Dwell", "Sequence")
 _ALONE_WITH_DWELL = frozenset((*_WITH_DWELL, "Comments", "BlockDelete"))
 _OWN_TEXT = frozenset((ASSIGN, CONTROL, LABEL, "NativeCode", "ProgramStart", "FrameChange"))
 """Sections whose block keeps its text when normalised."""
+_BESIDE_ASSIGN = frozenset((ASSIGN, "Sequence", "Comments", "BlockDelete", LABEL))
+"""What may share a block with an assignment."""
+_CYCLE_OWN = frozenset(("CannedCycle", "ReturnLevel", "Comments", "Sequence"))
+"""Sections of a cycle block the call and its position block write themselves."""
+_ENDS_CALL = frozenset(("Motion", "CompoundMotion", "CycleCancel"))
+"""Sections after which a modal call must not stay active: they move (the call would run after them) or end
+the source's cycle."""
 
 
 class SiemensWriter(WordWriter):
     DIALECT: ClassVar[str] = "siemens"
     CODES: ClassVar[CodeTable] = CODES
     DWELL_WORD: ClassVar[str] = "F"
+
+    def __init__(self, ctx: Context, source_dialect: str, target: type[Dialect] | None = None) -> None:
+        super().__init__(ctx, source_dialect, target)
+        self.targets = JumpTargets()
+        """Block numbers and labels written, and the jumps to them (``control_writing``)."""
+        self.call: Call | None = None
+        """The active ``MCALL`` (``cycle_writing``)."""
+        self.flowing = False
+        """A control statement or label was written: from there a block may run from another state."""
 
     def normalized(self, block: Block) -> str:
         text = block.text or ""
@@ -51,7 +78,61 @@ class SiemensWriter(WordWriter):
         if "Dwell" in sections and any(k not in _ALONE_WITH_DWELL for k in sections) \
                 and "CompoundMotion" not in sections:
             return self.around_dwell(block, _WITH_DWELL)
-        return super().generate(block)
+        cycle = sections.get("CannedCycle")
+        if isinstance(cycle, CannedCycle):
+            return self.cycle_block(block, cycle)
+        if self.call is not None and (not _ENDS_CALL.isdisjoint(sections) or _ends_program(sections)):
+            return self.end_call(block)
+        label = sections.get(LABEL)
+        sequence = sections.get("Sequence")
+        if sequence is not None:
+            self.targets.mark(f"N{getattr(sequence, 'number')}")
+        if label is None:
+            return super().generate(block)
+        name = self._label(getattr(label, "name"), block)
+        self.targets.mark(name)
+        self.flowing = True
+        text = super().generate(block)
+        body = text.lstrip()
+        head = ""
+        if body[:1] == "/":  # a block skip, then the block number, then the label [K]
+            head, _, body = body.partition(" ")
+            head += " "
+        if body[:1] == "N" and body[1:2].isdigit():
+            number, _, body = body.partition(" ")
+            head += number + " "
+        return f"{head}{name}: {body}" if body.strip() else f"{head}{name}:" + (block.eol or "\n")
+
+    def _label(self, name: str, block: Block) -> str:
+        try:
+            return label_name(name)
+        except UnsupportedError as err:
+            self.unsupported(err.message, block)
+
+    def statement_words(self, section: Section, block: Block) -> list[str]:
+        """Variables and control flow (``control_writing``); an assignment shares its block with nothing
+        that acts (in which order SINUMERIK evaluates an assignment and the block's words is not
+        confirmed here [?])."""
+        if ASSIGN in block.sections and any(key not in _BESIDE_ASSIGN for key in block.sections):
+            self.unsupported("an assignment beside other words in one block", block)
+        self.flowing = True
+        try:
+            return statement(section, self.targets, self.ctx.at(block))
+        except UnsupportedError as err:
+            self.unsupported(err.message, block)
+
+    def expression(self, expr: Expr, block: Block, what: str = "a computed word") -> str:
+        """A computed word is ``<address>=<expr>`` [K: 840D Fundamentals, "an address with an expression
+        takes '='"]."""
+        try:
+            return "=" + expression(expr)
+        except UnsupportedError as err:
+            self.unsupported(err.message, block)
+
+    def finish(self) -> str:
+        for problem in self.targets.problems():
+            self.ctx.diagnostics.error(problem)
+        return super().finish()
 
     def program_start(self, s: Any, block: Block) -> str:
         """``%_N_NAME_MPF``; a numbered program is ``%_N_PROG<number>_MPF`` [?: a name starts with a
@@ -86,16 +167,93 @@ class SiemensWriter(WordWriter):
         """An arc by radius is ``CR=`` (negative for more than 180 degrees, as Fanuc's R) [K]."""
         words = super().motion_words(s, block)
         if s.radius is not None and words and words[-1].startswith("R"):
-            words[-1] = "CR=" + words[-1][1:]
+            value = words[-1][1:]
+            words[-1] = "CR" + value if value.startswith("=") else "CR=" + value
         return words
 
     def return_level_words(self, s: Any, block: Block) -> list[str]:
-        """Fanuc's G98/G99 steer canned cycles, which reach SINUMERIK expanded: nothing to write."""
+        """Fanuc's G98/G99: the level is the RTP of the ``MCALL`` written for a cycle (``cycle_writing``)."""
         return []
 
     def cycle_cancel_words(self, s: Any, block: Block) -> list[str]:
-        """Cycles reach SINUMERIK expanded, so there is nothing to cancel."""
+        """The bare ``MCALL`` is written by ``end_call`` where a call is active; an expanded cycle has nothing
+        to cancel."""
         return []
+
+    # -- drilling cycles (``cycle_writing``) ----------------------------------------------------------------
+    def cycle_block(self, block: Block, cycle: CannedCycle) -> str:
+        """A native hole: what acts before it, the ``MCALL`` where the call changes (G0 before it), the position
+        block, what acts after it."""
+        sections = block.sections
+        if "BlockDelete" in sections:
+            self.unsupported("a block skip on a drilling cycle written as a modal call (the call stays active "
+                             "whether the block runs or not)", block)
+        if self.modal.distance != "absolute" or self.modal.plane != "XY":
+            self.unsupported("a drilling cycle outside G17 G90 written as a modal call", block)
+        if self.flowing:
+            self.unsupported("a drilling cycle after a control statement or label as a modal call (which call is "
+                             "active, and the initial level, depend on the run; the text is written in its order)",
+                             block)
+        call = Call.of(cycle)
+        head = {k: v for k, v in sections.items() if k not in _CYCLE_OWN and not after_motion(k, v)}
+        tail = {k: v for k, v in sections.items() if k not in _CYCLE_OWN and k not in head}
+        sequence = sections.get("Sequence")
+        lines: list[str] = []
+        if sequence is not None:
+            self.targets.mark(f"N{getattr(sequence, 'number')}")
+        if head:
+            lines.append(self._part(block, head))
+        if not moves_in_plane(cycle):
+            if self.call is not None:
+                lines.append("MCALL\n")
+                self.call = None
+            for kind, value in in_place_moves(cycle, call):
+                part: dict[str, Section] = ({"Dwell": Dwell(value)} if kind == "dwell"
+                                            else {"Motion": Motion(kind, {"Z": value})})
+                lines.append(self._part(block, part))
+            if tail:
+                lines.append(self._part(block, tail))
+            return self._cycle_text(block, lines)
+        if call != self.call:
+            if self.call is not None:
+                lines.append("MCALL\n")
+            # G0 in force at the call: the holes are reached at rapid (the writer does not track the motion mode
+            # written, so it is always stated)
+            lines.append(self.code("motion", "rapid", "rapid motion", block) + "\n")
+            lines.append(call.text(lambda value: self.number(value, "Z")) + "\n")
+            self.call = call
+        axes: dict[str, float | Expr] = {a: float(cycle.words[a]) for a in ("X", "Y") if a in cycle.words}
+        words = self.motion_words(Motion("rapid", axes), block)[1:]
+        comments = sections.get("Comments")
+        if comments is not None:
+            words.extend(self.comment(t) for t in getattr(comments, "texts"))
+        lines.append(" ".join(words) + "\n")
+        if tail:
+            lines.append(self._part(block, tail))
+        return self._cycle_text(block, lines)
+
+    def _cycle_text(self, block: Block, lines: list[str]) -> str:
+        """The lines of a cycle block, its block number on the first, its end of line on the last."""
+        sections = block.sections
+        self._track({k: v for k, v in sections.items() if k != "CannedCycle"})
+        sequence = sections.get("Sequence")
+        if sequence is not None:
+            lines[0] = " ".join(self.sequence_words(sequence, block)) + " " + lines[0]
+        text = "".join(lines)
+        return text[:-1] + (block.eol or "\n") if text.endswith("\n") else text
+
+    def end_call(self, block: Block) -> str:
+        """The bare ``MCALL`` before a block that moves otherwise or ends the program."""
+        if "BlockDelete" in block.sections:
+            self.unsupported("a block skip on the block that ends a modal cycle call", block)
+        self.call = None
+        rest = self.generate(block)
+        return "MCALL\n" + ("" if not rest.strip() or rest.strip() == ";" else rest)
+
+    def _part(self, block: Block, sections: dict[str, Section]) -> str:
+        part = Block(block.line, None, "\n")
+        part.sections = sections
+        return self.generate(part)
 
     # -- tool data (``postproc.isg_family.tool_data`` chose the D) ---------------------------------------
     def tool_length_offset_words(self, s: Any, block: Block) -> list[str]:
@@ -115,3 +273,8 @@ class SiemensWriter(WordWriter):
         if "ToolLengthOffset" in block.sections:
             return self._code("cutter", s.mode, f"cutter compensation {s.mode}", block)
         return super().cutter_compensation_words(s, block)
+
+
+def _ends_program(sections: dict[str, Section]) -> bool:
+    control = sections.get("ProgramControl")
+    return control is not None and getattr(control, "kind", "") in ("end", "end_rewind")

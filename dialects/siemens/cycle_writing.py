@@ -1,0 +1,108 @@
+"""Fanuc-family drilling cycles written as SINUMERIK modal cycle calls: ``MCALL CYCLE81(RTP, RFP, SDIS, DP)`` /
+``MCALL CYCLE82(RTP, RFP, SDIS, DP, , DTB)``, the holes as plain position blocks, a bare ``MCALL`` to end.
+
+Exactly where the meanings match, which is where the reader (``cycles``) reads them back to the same cycle
+[K: USERS-AND-SIEMENS.md 3.2, PGZ cycles manual 11/2006 p.2-86; the Autodesk ``siemens-840d.cps`` mapping]:
+
+* Fanuc's R level is RFP+SDIS: written ``RFP = R``, ``SDIS = 0`` [?: whether a control objects to SDIS 0 is not
+  confirmed; the cycle's approach is then RFP itself]; ``DP`` is Fanuc's Z (absolute); ``RTP`` is R under G99
+  and the initial level under G98, which SINUMERIK takes as an absolute plane: a G98 block is native only where
+  the tool stands at the initial level before it (true at a cycle's first block and after each G98 hole);
+* G81 and G82 only (``CYCLE81``/``CYCLE82``; DTB the dwell in seconds, whole milliseconds): the reader models
+  no other cycle yet, so G73, G83, G85-G89, G76 and back boring (G87: no SINUMERIK call, the Autodesk post
+  expands it too) are expanded, as is a block that repeats (K/L), has no new position in the plane, is not in
+  G17, programs its levels incrementally (G91) or computes a word;
+* the cycle runs after each block that moves [K: 3.2 "every later block that moves runs the cycle at its
+  end"], so a hole is a position block with X/Y only, in G0 (written before each ``MCALL``), and anything that
+  moves otherwise while the call is active (a motion code, an expansion, the cycle cancel, the program end)
+  gets the bare ``MCALL`` first. A hole where the tool already stands is written as the cycle's own moves
+  outside the call (``in_place_moves``), the call taken up again at the next hole.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Callable
+
+from postproc.cycles.section import CannedCycle
+
+NAMES = {"drill": "CYCLE81", "drill_dwell": "CYCLE82"}
+"""Neutral cycle kind -> the SINUMERIK cycle written for it."""
+SAME = 1e-9
+"""Levels closer than this (program units) are the same level."""
+
+
+def moves_in_plane(cycle: CannedCycle) -> bool:
+    """Whether the hole's block moves in the plane. One that does not (a hole where the tool stands: the
+    cycle's first block after a positioning move, usually) is written as the cycle's moves, outside the
+    call: whether a block that moves by nothing runs the modal call is not confirmed [?]."""
+    for axis in ("X", "Y"):
+        start = cycle.start.get(axis)
+        if axis in cycle.words and (start is None or abs(start - cycle.position[axis]) > SAME):
+            return True
+    return False
+
+
+def in_place_moves(cycle: CannedCycle, call: "Call") -> list[tuple[str, float]]:
+    """The moves of Fanuc's G81/G82 at the hole where the tool stands [K: Fanuc 0i-MF operator's manual,
+    "Drilling cycle, spot drilling (G81)": rapid to R, feed to Z, (G82: dwell), rapid to the return level];
+    ``("dwell", seconds)`` for the dwell."""
+    moves = [("rapid", call.rfp), ("linear", call.dp)]
+    if call.dtb:
+        moves.append(("dwell", call.dtb))
+    return moves + [("rapid", call.rtp)]
+
+
+def writable(cycle: CannedCycle) -> bool:
+    """Whether ``cycle``'s block is written natively (see the module docstring); else it is expanded."""
+    if cycle.kind not in NAMES or cycle.plane != "XY" or cycle.repeat != 1 or cycle.expand:
+        return False
+    if cycle.r is None or cycle.bottom is None or cycle.initial is None:
+        return False
+    words = cycle.words
+    if any(type(value) not in (int, float) for value in words.values()):
+        return False
+    if "Z" in words and abs(float(words["Z"]) - cycle.bottom) > SAME \
+            or "R" in words and abs(float(words["R"]) - cycle.r) > SAME:
+        return False  # incremental levels (G91)
+    for axis in ("X", "Y"):
+        if axis in words and abs(float(words[axis]) - cycle.position.get(axis, float("nan"))) > SAME:
+            return False  # an incremental position
+    if cycle.dwell is not None and abs(cycle.dwell * 1000 - round(cycle.dwell * 1000)) > 1e-6:
+        return False
+    if cycle.return_level == "initial":
+        z = cycle.start.get("Z")
+        return z is not None and abs(z - cycle.initial) <= SAME
+    return cycle.return_level == "r"
+
+
+@dataclass(frozen=True)
+class Call:
+    """The parameters of one ``MCALL CYCLE8x(..)``."""
+
+    name: str
+    rtp: float
+    rfp: float
+    dp: float
+    dtb: float | None
+
+    @classmethod
+    def of(cls, cycle: CannedCycle) -> "Call":
+        assert cycle.r is not None and cycle.bottom is not None and cycle.initial is not None
+        rtp = cycle.r if cycle.return_level == "r" else cycle.initial
+        dwell = cycle.dwell if cycle.kind == "drill_dwell" else None
+        return cls(NAMES[cycle.kind], rtp, cycle.r, cycle.bottom, 0.0 if cycle.kind == "drill_dwell" and dwell is None
+                   else dwell)
+
+    def text(self, number: Callable[[float], str]) -> str:
+        """``number`` spells a level as the writer spells a Z value."""
+        params = [number(self.rtp), number(self.rfp), "0", number(self.dp)]
+        if self.dtb is not None:
+            params += ["", _seconds(self.dtb)]
+        return f"MCALL {self.name}({', '.join(params)})"
+
+
+def _seconds(value: float) -> str:
+    text = f"{round(value * 1000) / 1000:.3f}".rstrip("0")
+    return text + "0" if text.endswith(".") else text
+
