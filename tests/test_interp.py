@@ -334,7 +334,7 @@ def test_endless_while_hits_the_loop_bound():
     p = P()
     p(control=While("1", Num(1.0)))
     p(("X", "1."))
-    p(control=EndWhile("1"))
+    p(control=EndWhile("1"), assign=[(v(1), Binary("add", v(1), Num(1.0)))])  # counts: no iteration repeats
     assert error_of(p, limits=Limits(loop_iterations=100)) == (
         "main.nc:3:1: error: loop '(statement 3)' exceeds the set-up's bound of 100 loop iterations, jumps "
         "and calls in total (<Limits loopIterations=\"100\"/>)")

@@ -15,7 +15,7 @@ from .frame import Frame
 from .host import NO_MOVES, Host, Interrupt, MoveCount, Reporter
 from .rules import STORED_PROGRAMS, SubprogramRules
 from .store import Program, ProgramStore, source_text
-from .variables import Variables
+from .variables import Snapshots, Variables
 
 
 def is_number(text: str) -> bool:
@@ -61,6 +61,8 @@ class RunState:
         self.skip_refused: str | None = None
         """Set: a statement under block delete (``/``) is an error with this explanation: a flattened program
         bakes in what the statement did, so the operator's switch could no longer skip it."""
+        self.snapshots: Snapshots | None = variables if isinstance(variables, Snapshots) else None
+        """The variables, where they can say all a program reads of them at once (``_endless``)."""
         self.vacant_word: str | None = None
         """Set: a word whose value is vacant is an error with this explanation instead of being omitted (the
         check run of a program kept symbolically for a target that would not omit it)."""
@@ -115,6 +117,23 @@ class RunState:
             named = f"'{source_text(block)}'"
         self._fail(ProgramError(f"{named} repeats more than {n} blocks and moves in all (the set-up's bound on "
                                 f"work run again, <Limits repeatedWork=\"{n}\"/>)"), frame, block, 1)
+
+    def _endless(self, frame: Frame, head: int, block: Block) -> None:
+        """A while loop's end (``block``) runs with everything its program can read as when it ran last
+        (the variables, the modal call): from here every iteration repeats the last and the loop never
+        ends, so it is refused now rather than run to the work bound (a damaged loop that lost its
+        counter took seconds to reach it)."""
+        snapshots = self.snapshots
+        if snapshots is None:
+            return
+        values = snapshots.snapshot()
+        if values is None:
+            return
+        now = (values, self.modal)
+        if frame.seen.get(head) == now:
+            raise ProgramError(f"loop '{source_text(block)}' never ends: an iteration ended with every variable "
+                               "as the one before it, so its test can never change (does it count its variable?)")
+        frame.seen[head] = now
 
     def _spend(self, block: Block, what: str, back: bool = True) -> None:
         """Count a repetition (``back``: it runs blocks again, so the work bound may name it; a jump
