@@ -27,7 +27,6 @@ from __future__ import annotations
 import math
 import os
 import random
-import re
 from dataclasses import dataclass, field
 from typing import Any, Iterator
 
@@ -35,7 +34,7 @@ import pytest
 
 from postproc.setup.machine_setup import MachineSetup
 from postproc.setup.machine import ToolData
-from tests.support.compensation_rs274 import CALL, assert_same, postproc_path, refused_line
+from tests.support.compensation_rs274 import assert_same, calls_before, postproc_path, refused_line
 from tests.support.rs274 import RS274Error, available, run_rs274
 
 pytestmark = pytest.mark.skipif(not available(), reason="the LinuxCNC interpreter rs274 is not installed")
@@ -291,14 +290,7 @@ def rs274_path(calls: list[str], end: int, scale: float, unit: float, plane: str
     feed = 0.0
     units = 1.0  # mm per unit of the calls made so far (rs274 sets a block's F before its G20/G21)
     flood = False
-    for line in calls:
-        m = CALL.match(line.strip())
-        if not m:
-            continue
-        name, args = m.group(2), m.group(3)
-        if m.group(1) == str(end):
-            break
-        nums = [float(t) for t in re.split(r"[,\s]+", args.strip()) if re.fullmatch(r"-?\d+(\.\d*)?", t)]
+    for name, args, nums in calls_before(calls, end):
         if name == "USE_TOOL_LENGTH_OFFSET":
             dz = nums[2] * mm
         elif name == "USE_LENGTH_UNITS":

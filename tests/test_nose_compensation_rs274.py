@@ -34,7 +34,7 @@ from postproc.compensation.nose import mirrored
 from postproc.setup.machine import ToolData
 from postproc.setup.machine_setup import MachineSetup, load_setup
 from postproc.simulate.toolpath import toolpath_events
-from tests.support.compensation_rs274 import CALL, assert_same, postproc_path, refused_line
+from tests.support.compensation_rs274 import assert_same, calls_before, postproc_path, refused_line
 from tests.support.rs274 import RS274Error, available, run_rs274
 
 pytestmark = pytest.mark.skipif(not available(), reason="the LinuxCNC interpreter rs274 is not installed")
@@ -190,14 +190,7 @@ def rs274_path(calls: list[str], end: int, scale: float) -> list[dict[str, Any]]
     out: list[dict[str, Any]] = []
     pos = (0.0, 0.0)
     flood = False
-    for line in calls:
-        m = CALL.match(line.strip())
-        if not m:
-            continue
-        name, args = m.group(2), m.group(3)
-        if m.group(1) == str(end):
-            break
-        nums = [float(t) for t in re.split(r"[,\s]+", args.strip()) if re.fullmatch(r"-?\d+(\.\d*)?", t)]
+    for name, _, nums in calls_before(calls, end):
         if name in ("STRAIGHT_TRAVERSE", "STRAIGHT_FEED"):
             new = (nums[0] * mm, nums[2] * mm)
             if max(abs(a - b) for a, b in zip(new, pos)) > 1e-9:

@@ -6,7 +6,7 @@ move by move. Each test reads rs274's canonical calls itself (the planes and off
 from __future__ import annotations
 
 import re
-from typing import Any
+from typing import Any, Iterator
 
 from postproc.errors import Diagnostics
 from postproc.setup.machine_setup import MachineSetup
@@ -15,6 +15,20 @@ from tests.support.rs274 import RS274Error
 
 CALL = re.compile(r"^N(\d+|\.+)\s+([A-Z_]+)\((.*)\)\s*$")
 """One canonical call line of ``rs274 -g``: its block number, name and arguments."""
+
+
+def calls_before(calls: list[str], end: int) -> Iterator[tuple[str, str, list[float]]]:
+    """Each canonical call before block ``end`` (the program's M2: what it resets is no part of the path):
+    its name, its arguments and the numbers among them."""
+    for line in calls:
+        m = CALL.match(line.strip())
+        if not m:
+            continue
+        if m.group(1) == str(end):
+            return
+        args = m.group(3)
+        yield m.group(2), args, [float(t) for t in re.split(r"[,\s]+", args.strip())
+                                 if re.fullmatch(r"-?\d+(\.\d*)?", t)]
 
 
 def refused_line(err: RS274Error) -> int:
