@@ -74,3 +74,20 @@ def test_g7_on_a_linuxcnc_mill_set_up_is_refused_at_its_code() -> None:
 def test_g8_on_a_linuxcnc_mill_set_up_is_what_the_mill_reads_already() -> None:
     text = "G21 G90\nG0 X0 Y0 Z5\nG8\nG0 X10\nM2\n"
     assert written(text, "linuxcnc", "linuxcnc", MachineSetup(), "in.ngc") == text
+
+
+@pytest.mark.parametrize("line, error", [
+    ("G33 Z-10 K1.5", "G33 (spindle-synchronised motion) cannot be simulated"),
+    ("G96 D2000 S100", "G96 (constant surface speed) cannot be simulated"),
+    ("G97 S500", "G97 (spindle speed in rpm) cannot be simulated"),
+])
+def test_linuxcnc_lathe_codes_kept_on_a_mill_are_a_located_error_where_they_would_be_simulated(
+        line: str, error: str) -> None:
+    from postproc.errors import Diagnostics
+    from postproc.simulate.toolpath import toolpath_events
+    text = f"G21 G90 G17\nS500 M3\nG0 X0 Y0 Z5\n{line}\nM2\n"
+    with pytest.raises(ErrorList) as caught:
+        list(toolpath_events(io.StringIO(text), file="in.ngc", dialect="linuxcnc", setup=MachineSetup(),
+                             diagnostics=Diagnostics(warn_stream=io.StringIO())))
+    assert [str(e) for e in caught.value.errors] == [f"in.ngc:4:1: error: {error}"]
+    assert written(text, "linuxcnc", "linuxcnc", MachineSetup(), "in.ngc") == text  # native LinuxCNC, copied
