@@ -22,8 +22,8 @@ BOLT_CIRCLE = (Path(__file__).resolve().parent.parent / "examples" / "fanuc" / "
                ).read_text(encoding="utf-8")
 SETUP = with_tools(lengths={2: 100.0})
 SMALL = MachineSetup(limits=Limits(repeated_work=20_000))
-NEVER = ("loop 'END1' never ends: an iteration ended with every variable as the one before it, so its test can "
-         "never change (does it count its variable?)")
+NEVER = ("loop 'END1' never ends: it runs again with every variable as the time before, so nothing can change "
+         "(does the program count its variable?)")
 
 
 def errors(text: str, setup: MachineSetup, target: str = "grbl") -> list[str]:
@@ -73,3 +73,14 @@ def test_the_bolt_circle_itself_runs() -> None:
     translate(io.StringIO(BOLT_CIRCLE), out, file="in.nc", source="fanuc", target="grbl", setup=SETUP,
               diagnostics=Diagnostics(warn_stream=io.StringIO()))
     assert out.getvalue().count("G1 Z-12.") + out.getvalue().count("Z-12.") >= 8
+
+
+def test_a_main_program_that_returns_to_its_start_unchanged_is_refused_at_its_second_return() -> None:
+    # found by make fuzz (malformed fanuc: the bolt circle with its WHILE line moved to the top); the
+    # loop never runs (#10 and #1 vacant), M99 returns to the start again and again
+    program = "WHILE [#10 LT #1] DO1\nEND1\nM99\n"
+    assert errors(program, SMALL, "toolpath") == errors(program, SMALL, "grbl") == [
+        "in.nc:3:1: error: return 'M99' never ends: it runs again with every variable as the time before, so "
+        "nothing can change (does the program count its variable?)"]
+    counting = "#1=#1+1\nG0 X#1\nM99\n"  # counts: runs to the work bound
+    assert errors(counting, SMALL, "toolpath")[0].startswith("in.nc:3:1: error: return 'M99' repeats more than")

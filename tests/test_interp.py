@@ -284,7 +284,7 @@ def test_m99_p_returns_to_a_sequence_number_of_the_caller():
 def test_m99_in_the_main_program_runs_it_again_until_the_bound():
     p = P()
     p(("G", "91"), ("X", "1."))
-    p(control=Return())
+    p(control=Return(), assign=[(v(1), Binary("add", v(1), Num(1.0)))])  # counts: no run repeats the last
     message = error_of(p, limits=Limits(loop_iterations=3))
     assert message == ("main.nc:2:1: error: return '(statement 2)' exceeds the set-up's bound of 3 loop iterations, "
                        "jumps and calls in total (<Limits loopIterations=\"3\"/>)")

@@ -70,7 +70,7 @@ def _stream(program: P, limits: Limits):
 
 HOSTILE = [
     # (dialect, program, the repetition named: line:col and how; a recursion: either of its two calls)
-    ("fanuc", "G0 X1\nM99\n", "2:1: error: return 'M99'"),
+    ("fanuc", "#1=#1+1\nM99\n", "2:1: error: return 'M99'"),
     ("fanuc", "#1=0\nWHILE [1 EQ 1] DO1\nG0 X#1\n#1=#1+1\nEND1\nM30\n", "5:1: error: loop 'END1'"),
     ("fanuc", "#1=0\nN1 G0 X#1\nGOTO 1\nM30\n", "3:1: error: jump 'GOTO 1'"),
     # each level calls itself twice down to level 40: 2^40 calls
@@ -119,7 +119,7 @@ def test_the_default_bound():
     an endless loop ends in about ten seconds. Its message, at a tenth of it (a second)."""
     assert Limits().repeated_work == 1_000_000
     with pytest.raises(ErrorList) as info:
-        list(toolpath_events(io.StringIO("G0 X1\nM99\n"), file="t.nc", dialect="fanuc",
+        list(toolpath_events(io.StringIO("#1=#1+1\nM99\n"), file="t.nc", dialect="fanuc",
                              setup=MachineSetup(limits=Limits(repeated_work=100_000)),
                              diagnostics=Diagnostics(warn_stream=io.StringIO())))
     assert [str(e) for e in info.value.errors] == [

@@ -216,7 +216,7 @@ class Interpreter(RunState):
         elif isinstance(control, EndWhile):
             self._spend(block, "loop")
             head = program.pairs[pos]
-            self._endless(frame, head, block)
+            self._endless(frame, head, block, "loop")
             frame.pc = head  # back to the head: its test runs again
             frame.back = head
         elif isinstance(control, Do):
@@ -413,6 +413,7 @@ class Interpreter(RunState):
         if len(frames) == 1:  # a return in the main program: back to its start (Fanuc M99)
             assert block is not None
             self._spend(block, "return")
+            self._endless(frame, -1 - frame.pc, block, "return")  # (below 0: no while loop's head)
             if target is None:
                 frame.pc = 0
                 return

@@ -118,22 +118,23 @@ class RunState:
         self._fail(ProgramError(f"{named} repeats more than {n} blocks and moves in all (the set-up's bound on "
                                 f"work run again, <Limits repeatedWork=\"{n}\"/>)"), frame, block, 1)
 
-    def _endless(self, frame: Frame, head: int, block: Block) -> None:
-        """A while loop's end (``block``) runs with everything its program can read as when it ran last
-        (the variables, the modal call): from here every iteration repeats the last and the loop never
-        ends, so it is refused now rather than run to the work bound (a damaged loop that lost its
-        counter took seconds to reach it)."""
+    def _endless(self, frame: Frame, key: int, block: Block, what: str) -> None:
+        """A while loop's end, or a return to the main program's start (``block``; ``key``: where it is
+        kept in ``frame.seen``), runs with everything the program can read as when it ran last (the
+        variables, the modal call, the frame's counted loops): the run is deterministic, so from here
+        each repetition repeats the last and it never ends. Refused now rather than run to the work
+        bound (a damaged loop that lost its counter took seconds to reach it)."""
         snapshots = self.snapshots
         if snapshots is None:
             return
         values = snapshots.snapshot()
         if values is None:
             return
-        now = (values, self.modal)
-        if frame.seen.get(head) == now:
-            raise ProgramError(f"loop '{source_text(block)}' never ends: an iteration ended with every variable "
-                               "as the one before it, so its test can never change (does it count its variable?)")
-        frame.seen[head] = now
+        now = (values, self.modal, tuple(sorted(frame.repeats.items())), tuple(sorted(frame.fors.items())))
+        if frame.seen.get(key) == now:
+            raise ProgramError(f"{what} '{source_text(block)}' never ends: it runs again with every variable as "
+                               "the time before, so nothing can change (does the program count its variable?)")
+        frame.seen[key] = now
 
     def _spend(self, block: Block, what: str, back: bool = True) -> None:
         """Count a repetition (``back``: it runs blocks again, so the work bound may name it; a jump
