@@ -149,6 +149,10 @@ class Context:
         return 1
 
 
+DROPPED_MOVES: Final = "dropped_moves"
+"""``Context.run_data`` key: the blocks whose moves a lowering step dropped with ``--on-unsupported warn``
+(written as comments), which the writer then treats as displacing what follows (``postproc.output.displacement``)."""
+
 _WORD_AT: Final = re.compile(r"([A-Za-z:])[ \t]*([-+]?(?:\d+\.?\d*|\.\d+))")
 _COMMENT_AT: Final = re.compile(r"\([^()]*\)|\([^()]*$|;.*$")
 

@@ -88,3 +88,14 @@ def test_a_dropped_linuxcnc_g33_on_a_mill_is_put_right_by_an_absolute_z() -> Non
     assert "(UNSUPPORTED LINE 5: G33 Z-10 K1.5)" in out and "G1 Z-20." in out
     assert refused(start + "G0 X5\nM30\n", "linuxcnc", "grbl", MachineSetup(), "in.ngc") == [
         f"in.ngc:6:1: error: {DISPLACED.replace('line 7', 'line 5')}"]
+
+
+def test_a_hole_cycle_a_lowering_step_comments_out_displaces_what_follows() -> None:
+    # G76 needs an oriented stop grbl cannot make: the cycle's holes are gone, the tool stays at X0 Y0 Z50
+    # instead of X10 Y10 and the R level Z2 (G99)
+    start = "G21 G90 G0 X0 Y0 Z50.\nS1000 M03\nG99 G76 X10. Y10. Z-5. R2. Q0.1 F100.\nG80\n"
+    assert refused(start + "G0 X20.\nM30\n", "fanuc", "grbl", MachineSetup()) == [
+        "in.nc:5:1: error: this move would start or run axes YZ where the move dropped at line 3 left them, not "
+        "where the source has them: after a dropped move, only straight moves to absolute points of every axis it "
+        "moved can be written exactly (--on-unsupported warn fails here rather than write a displaced program)"]
+    assert "G0 X20. Y20. Z50." in warned(start + "G0 X20. Y20. Z50.\nM30\n", "fanuc", "grbl", MachineSetup())

@@ -53,6 +53,13 @@ class Displacement:
                 self.line = block.line
             self.axes |= moved
 
+    def lowered(self, lines: list[int]) -> None:
+        """A lowering step dropped the moves of these source lines (a hole cycle): every axis is displaced."""
+        if not self.axes:
+            self.line = lines[0]
+        self.axes |= self.machine_axes
+        lines.clear()
+
     def problem(self, block: Block) -> str | None:
         """Why ``block`` cannot be written exactly after the drop (None: it can, or it does not move);
         a straight absolute move puts right the displaced axes it programs."""

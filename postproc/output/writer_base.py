@@ -12,7 +12,7 @@ from typing import Any, Callable, Iterable, Protocol, TextIO, Final
 
 from mypy_extensions import mypyc_attr
 
-from ..context import Context
+from ..context import DROPPED_MOVES, Context
 from ..cycle_words import CycleWords
 from ..errors import PostprocError, ProgramError, UnsupportedError
 from ..ir import Block, one_line
@@ -191,6 +191,9 @@ class Writer(abc.ABC):
         move dropped before it."""
         if "DistanceMode" in block.sections:
             displacement.note(block.sections)
+        lowered = self.ctx.run_data.get(DROPPED_MOVES)
+        if lowered:
+            displacement.lowered(lowered)  # (the block itself is the comment the step left: it moves nothing)
         if not displacement.axes:
             return False
         problem = displacement.problem(block)
