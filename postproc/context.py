@@ -62,7 +62,7 @@ class Context:
     __slots__ = ("file", "setup", "diagnostics", "state", "dialect", "cycle_words", "on_unsupported",
                  "program_mode", "keep_check", "reader", "stops_before_motion", "feed_before_units", "cutter_rules", "length_at_axis", "lathe_turret",
                  "run_data",
-                 "point_mix", "lathe", "increments", "diameter", "one_block", "peck_clearance_mm", "moves_made",
+                 "point_mix", "lathe", "increments", "axis_words", "diameter", "one_block", "peck_clearance_mm", "moves_made",
                  "block_lane", "hole_lane")
 
     def __init__(self, file: str, setup: MachineSetup, diagnostics: Diagnostics, dialect: str,
@@ -111,6 +111,10 @@ class Context:
         self.increments: Mapping[str, str] = {}
         """Addresses that move an axis by an increment whatever the distance mode -> that axis
         (``Dialect.INCREMENTAL_AXES`` on a lathe: ``U`` -> ``X``); empty on a mill."""
+        self.axis_words: frozenset[str] = frozenset(setup.machine.axes)
+        """The set-up's axes (``<Machine axes>``): a move may program these and their increments
+        (``increments``). The simulator refuses any other (``postproc.simulate.moves``); the modal-state
+        step refuses it at reading, so ``translate`` never writes a word the machine has no axis for."""
         self.diameter = False
         """Lathe X words (and the increments of X) are diameters (the set-up's ``xProgramming`` on a dialect that has it)."""
         self.one_block = False
@@ -144,6 +148,10 @@ class Context:
                     return col
         return 1
 
+
+DROPPED_MOVES: Final = "dropped_moves"
+"""``Context.run_data`` key: the blocks whose moves a lowering step dropped with ``--on-unsupported warn``
+(written as comments), which the writer then treats as displacing what follows (``postproc.output.displacement``)."""
 
 _WORD_AT: Final = re.compile(r"([A-Za-z:])[ \t]*([-+]?(?:\d+\.?\d*|\.\d+))")
 _COMMENT_AT: Final = re.compile(r"\([^()]*\)|\([^()]*$|;.*$")

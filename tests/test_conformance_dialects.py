@@ -25,7 +25,8 @@ CASES = {
     "fanuc-lathe": DialectUnderTest("fanuc", ROOT / "examples/fanuc-lathe", HERE / "fanuc-lathe/invalid",
                                     ROOT / "examples/setups/fanuc_0i_tf.xml", name="fanuc-lathe"),
     "gsk": DialectUnderTest("gsk", ROOT / "examples/gsk", HERE / "gsk/invalid"),
-    "isg": DialectUnderTest("isg", ROOT / "examples/isg", HERE / "isg/invalid"),
+    "isg": DialectUnderTest("isg", ROOT / "examples/isg", HERE / "isg/invalid",
+                            ROOT / "examples/setups/isg_twincat_cylinder.xml"),  # prof_open_close.nc: axis U
     "fagor": DialectUnderTest("fagor", ROOT / "examples/fagor", HERE / "fagor/invalid"),
     "siemens": DialectUnderTest("siemens", ROOT / "examples/siemens", HERE / "siemens/invalid",
                                 ROOT / "examples/setups/siemens_840d_mill.xml"),

@@ -27,16 +27,14 @@ from __future__ import annotations
 import math
 import os
 import random
-import re
 from dataclasses import dataclass, field
 from typing import Any, Iterator
 
 import pytest
 
-from postproc.errors import Diagnostics
 from postproc.setup.machine_setup import MachineSetup
 from postproc.setup.machine import ToolData
-from postproc.simulate.toolpath import toolpath_events
+from tests.support.compensation_rs274 import assert_same, calls_before, postproc_path, refused_line
 from tests.support.rs274 import RS274Error, available, run_rs274
 
 pytestmark = pytest.mark.skipif(not available(), reason="the LinuxCNC interpreter rs274 is not installed")
@@ -280,9 +278,6 @@ def generate(seed: int) -> Program:
 
 # -- running both --------------------------------------------------------------------------------------
 
-_CALL = re.compile(r"^N(\d+|\.+)\s+([A-Z_]+)\((.*)\)\s*$")
-
-
 def rs274_path(calls: list[str], end: int, scale: float, unit: float, plane: str = "XY") -> list[dict[str, Any]]:
     """rs274's moves with the tool length added (controlled points), coolant and dwell, in mm (its calls
     are in program units times ``scale``); the block ``end`` (M2) is left out: what M2 resets (coolant
@@ -295,14 +290,7 @@ def rs274_path(calls: list[str], end: int, scale: float, unit: float, plane: str
     feed = 0.0
     units = 1.0  # mm per unit of the calls made so far (rs274 sets a block's F before its G20/G21)
     flood = False
-    for line in calls:
-        m = _CALL.match(line.strip())
-        if not m:
-            continue
-        name, args = m.group(2), m.group(3)
-        if m.group(1) == str(end):
-            break
-        nums = [float(t) for t in re.split(r"[,\s]+", args.strip()) if re.fullmatch(r"-?\d+(\.\d*)?", t)]
+    for name, args, nums in calls_before(calls, end):
         if name == "USE_TOOL_LENGTH_OFFSET":
             dz = nums[2] * mm
         elif name == "USE_LENGTH_UNITS":
@@ -335,23 +323,6 @@ def rs274_path(calls: list[str], end: int, scale: float, unit: float, plane: str
     return out
 
 
-def postproc_path(p: Program) -> tuple[list[dict[str, Any]], list[int]]:
-    """postproc's controlled moves, coolant and dwell events; and the lines of its errors."""
-    diagnostics = Diagnostics(max_errors=100)
-    events = list(toolpath_events(p.text().splitlines(keepends=True), file="p.ngc", dialect="linuxcnc",
-                                  setup=p.setup(), diagnostics=diagnostics, check=False))[1:]
-    out = []
-    flood = False
-    for ev in events:
-        if "move" in ev:
-            point = {**ev, **ev.get("controlled", {})}
-            out.append({k: point[k] for k in ("move", "x", "y", "z", "cx", "cy", "cz", "f") if k in point})
-        elif ev.get("event") == "dwell" or (ev.get("event") == "coolant" and ev["on"] != flood):
-            flood = ev.get("on", flood)
-            out.append({k: v for k, v in ev.items() if k != "line"})  # coolant: changes only, as rs274_path
-    return out, [e.location.line for e in diagnostics.errors if e.location is not None]
-
-
 def check(seed: int) -> None:
     p = generate(seed)
     try:
@@ -360,30 +331,14 @@ def check(seed: int) -> None:
         refused_at = None
     except RS274Error as err:
         theirs = None
-        found = re.findall(r"^N(\d+)\b", err.stderr, re.M)
-        refused_at = int(found[-1]) if found else -1
-    ours, errors = postproc_path(p)
+        refused_at = refused_line(err)
+    ours, errors = postproc_path(p.text(), p.setup(), ("move", "x", "y", "z", "cx", "cy", "cz", "f"))
     listing = f"seed {seed}:\n{p.text()}\ntool table (mm): radii {p.radii}, lengths {p.lengths}"
     RESULTS["programs"] += 1
-    if theirs is None:
-        assert errors and errors[0] == refused_at, f"rs274 refused line {refused_at}, postproc: {errors}\n{listing}"
+    if assert_same(ours, errors, theirs, refused_at, TOLERANCE, listing) == "refused":
         RESULTS["agreed_errors"] += 1
-        return
-    assert not errors, f"postproc refused lines {errors}, rs274 ran it\n{listing}"
-    assert [e.get("move", e.get("event")) for e in ours] == [e.get("move", e.get("event")) for e in theirs], (
-        f"{_show(ours)}\n--- rs274:\n{_show(theirs)}\n{listing}")
-    for n, (a, b) in enumerate(zip(ours, theirs)):
-        for key in set(a) | set(b):
-            if key in ("move", "event"):
-                continue
-            x, y = a.get(key), b.get(key)
-            assert isinstance(x, (int, float)) and isinstance(y, (int, float)) and abs(x - y) <= TOLERANCE, (
-                f"item {n} {key}: postproc {x}, rs274 {y}\n{_show(ours)}\n--- rs274:\n{_show(theirs)}\n{listing}")
-    RESULTS["agreed_moves"] += sum(1 for e in ours if "move" in e)
-
-
-def _show(path: list[dict[str, Any]]) -> str:
-    return "\n".join(str(e) for e in path)
+    else:
+        RESULTS["agreed_moves"] += sum(1 for e in ours if "move" in e)
 
 
 @pytest.mark.parametrize("batch", range(math.ceil(PROGRAMS / BATCH)))

@@ -8,6 +8,7 @@ a located ``ParseError``/``ProgramError``, never another exception.
 
 from __future__ import annotations
 
+import copy
 import io
 import math
 import string
@@ -33,7 +34,16 @@ FUZZ = settings(max_examples=300, deadline=None, suppress_health_check=[HealthCh
 
 
 def read(text: str, setup: MachineSetup | None = None, file: str = "t.nc"):
-    return read_program(io.StringIO(text, newline=""), file=file, dialect="fanuc", setup=setup)
+    return read_program(io.StringIO(text, newline=""), file=file, dialect="fanuc", setup=every_axis(setup))
+
+
+def every_axis(setup: MachineSetup | None) -> MachineSetup:
+    """``setup`` (default: the defaults) on a machine with the rotary axes the generated programs program
+    (an axis the machine lacks is refused)."""
+    out = copy.copy(setup or MachineSetup())
+    out.machine = copy.copy(out.machine)
+    out.machine.axes = "XYZABC"
+    return out
 
 
 def lex(text: str):
@@ -315,7 +325,8 @@ def program(draw):
 
 def _translate(text: str, setup: MachineSetup | None = None, file: str = "p.nc") -> str:
     out = io.StringIO(newline="")
-    translate(io.StringIO(text, newline=""), out, file=file, source="fanuc", target="fanuc", setup=setup)
+    translate(io.StringIO(text, newline=""), out, file=file, source="fanuc", target="fanuc",
+              setup=every_axis(setup))
     return out.getvalue()
 
 

@@ -17,7 +17,9 @@ from postproc.simulate.toolpath import simulate
 
 
 def _context(increments: dict[str, str]) -> Context:
-    ctx = Context("t.nc", MachineSetup(), Diagnostics(ErrorLevel.RAISE), "probe")
+    setup = MachineSetup()
+    setup.machine.axes = "XYZUW"  # U and W are axes here unless the dialect declares them increments
+    ctx = Context("t.nc", setup, Diagnostics(ErrorLevel.RAISE), "probe")
     ctx.lathe = True
     ctx.increments = increments
     ctx.state.plane = "ZX"

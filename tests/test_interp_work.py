@@ -17,7 +17,7 @@ import pytest
 from postproc.api import translate
 from postproc.control import EndWhile, While
 from postproc.errors import Diagnostics, ErrorList
-from postproc.expr import Num
+from postproc.expr import Binary, Num, Var
 from postproc.setup.machine_setup import Limits, MachineSetup
 from postproc.simulate.toolpath import toolpath_events
 from tests.test_interp import P, error_of, run, v, words
@@ -31,7 +31,7 @@ def test_the_bound_counts_blocks_run_again_not_iterations():
     p(control=While("1", Num(1.0)))
     for i in range(10):
         p(("X", f"{i}."))
-    p(control=EndWhile("1"))
+    p(control=EndWhile("1"), assign=[(Var(Num(1.0)), Binary("add", Var(Num(1.0)), Num(1.0)))])  # counts: no iteration repeats
     p(("M", "30"))
     limits = Limits(repeated_work=100, loop_iterations=1_000_000)
     assert error_of(p, limits=limits) == (
@@ -70,8 +70,8 @@ def _stream(program: P, limits: Limits):
 
 HOSTILE = [
     # (dialect, program, the repetition named: line:col and how; a recursion: either of its two calls)
-    ("fanuc", "G0 X1\nM99\n", "2:1: error: return 'M99'"),
-    ("fanuc", "#1=0\nWHILE [1 EQ 1] DO1\nG0 X#1\nEND1\nM30\n", "4:1: error: loop 'END1'"),
+    ("fanuc", "#1=#1+1\nM99\n", "2:1: error: return 'M99'"),
+    ("fanuc", "#1=0\nWHILE [1 EQ 1] DO1\nG0 X#1\n#1=#1+1\nEND1\nM30\n", "5:1: error: loop 'END1'"),
     ("fanuc", "#1=0\nN1 G0 X#1\nGOTO 1\nM30\n", "3:1: error: jump 'GOTO 1'"),
     # each level calls itself twice down to level 40: 2^40 calls
     ("fanuc", "O1\n#1=0\nM98 P1000\nM30\nO1000\n#1=#1+1\nIF [#1 GT 40] GOTO 9\nM98 P1000\nM98 P1000\n"
@@ -119,7 +119,7 @@ def test_the_default_bound():
     an endless loop ends in about ten seconds. Its message, at a tenth of it (a second)."""
     assert Limits().repeated_work == 1_000_000
     with pytest.raises(ErrorList) as info:
-        list(toolpath_events(io.StringIO("G0 X1\nM99\n"), file="t.nc", dialect="fanuc",
+        list(toolpath_events(io.StringIO("#1=#1+1\nM99\n"), file="t.nc", dialect="fanuc",
                              setup=MachineSetup(limits=Limits(repeated_work=100_000)),
                              diagnostics=Diagnostics(warn_stream=io.StringIO())))
     assert [str(e) for e in info.value.errors] == [

@@ -12,6 +12,7 @@ import pytest
 
 from postproc.api import translate
 from postproc.errors import ErrorList
+from postproc.setup.machine_setup import MachineSetup
 from postproc.simulate.toolpath import toolpath_events
 from postproc.simulate.verify import Report, verify_lines
 from tests.support.rs274 import available, canonical_moves, run_rs274
@@ -95,9 +96,15 @@ REFUSED = {
 }
 
 
+ROTARY = MachineSetup()
+ROTARY.machine.axes = "XYZA"
+"""A machine with the rotary axis A (one without it refuses an A word before anything else)."""
+
+
 @pytest.mark.parametrize("name", REFUSED)
 def test_what_cannot_be_converted_exactly_is_a_located_error(name: str) -> None:
     source, message = REFUSED[name]
     with pytest.raises(ErrorList) as info:
-        translate(io.StringIO(source, newline=""), io.StringIO(), file="t.ngc", source="linuxcnc", target="fanuc")
+        translate(io.StringIO(source, newline=""), io.StringIO(), file="t.ngc", source="linuxcnc", target="fanuc",
+                  setup=ROTARY)
     assert str(info.value.errors[0]).startswith(message), str(info.value.errors[0])

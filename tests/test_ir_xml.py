@@ -359,7 +359,7 @@ EXAMPLES = sorted(ROOT.glob("examples/**/*.nc")) + [
 def test_ir_command_output_loads_back_to_the_read_blocks(cli, tmp_path, path):
     out = tmp_path / "ir.xml"
     name, setup_file = {"gsk": ("gsk", "gsk_980tdc.xml"), "fanuc-lathe": ("fanuc", "fanuc_0i_tf.xml"),
-                        "isg": ("isg", None), "fagor": ("fagor", None),
+                        "isg": ("isg", "isg_twincat_cylinder.xml"), "fagor": ("fagor", None),
                         }.get(path.parent.name, ("fanuc", None))  # examples/<dialect>/
     machine = ["--machine", ROOT / "examples/setups" / setup_file] if setup_file else []
     result = cli("ir", path, "--dialect", name, "-o", out, *machine)

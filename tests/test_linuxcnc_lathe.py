@@ -148,8 +148,8 @@ def test_lathe_words_refused_as_rs274_refuses_them() -> None:
         "Fanuc-family clamp (G50 S) cannot say; write D again"]
 
 
-def test_g7_on_a_mill_set_up_stays_verbatim() -> None:
-    blocks = read("G7\nM2\n", MachineSetup())
+def test_g33_on_a_mill_set_up_stays_verbatim() -> None:
+    blocks = read("G33 Z-1. K1.\nM2\n", MachineSetup())
     assert isinstance(blocks[0].sections.get("NativeCode"), NativeCode)
 
 

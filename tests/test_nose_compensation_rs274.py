@@ -31,10 +31,10 @@ from typing import Any
 import pytest
 
 from postproc.compensation.nose import mirrored
-from postproc.errors import Diagnostics
 from postproc.setup.machine import ToolData
 from postproc.setup.machine_setup import MachineSetup, load_setup
 from postproc.simulate.toolpath import toolpath_events
+from tests.support.compensation_rs274 import assert_same, calls_before, postproc_path, refused_line
 from tests.support.rs274 import RS274Error, available, run_rs274
 
 pytestmark = pytest.mark.skipif(not available(), reason="the LinuxCNC interpreter rs274 is not installed")
@@ -184,23 +184,13 @@ def generate(seed: int) -> Program:
     return p
 
 
-_CALL = re.compile(r"^N(\d+|\.+)\s+([A-Z_]+)\((.*)\)\s*$")
-
-
 def rs274_path(calls: list[str], end: int, scale: float) -> list[dict[str, Any]]:
     """rs274's moves (X a radius), coolant and dwell events, mm; the M2 block left out."""
     mm = 1.0 / scale
     out: list[dict[str, Any]] = []
     pos = (0.0, 0.0)
     flood = False
-    for line in calls:
-        m = _CALL.match(line.strip())
-        if not m:
-            continue
-        name, args = m.group(2), m.group(3)
-        if m.group(1) == str(end):
-            break
-        nums = [float(t) for t in re.split(r"[,\s]+", args.strip()) if re.fullmatch(r"-?\d+(\.\d*)?", t)]
+    for name, _, nums in calls_before(calls, end):
         if name in ("STRAIGHT_TRAVERSE", "STRAIGHT_FEED"):
             new = (nums[0] * mm, nums[2] * mm)
             if max(abs(a - b) for a, b in zip(new, pos)) > 1e-9:
@@ -220,24 +210,6 @@ def rs274_path(calls: list[str], end: int, scale: float) -> list[dict[str, Any]]
     return out
 
 
-def postproc_path(p: Program) -> tuple[list[dict[str, Any]], list[int]]:
-    """postproc's controlled points (X halved to a radius), coolant and dwell; and its error lines."""
-    diagnostics = Diagnostics(max_errors=100)
-    events = list(toolpath_events(p.text().splitlines(keepends=True), file="p.ngc", dialect="linuxcnc",
-                                  setup=p.setup(), diagnostics=diagnostics, check=False))[1:]
-    out = []
-    flood = False
-    for ev in events:
-        if "move" in ev:
-            point = {**ev, **ev.get("controlled", {})}
-            out.append({k: (point[k] / 2.0 if k in ("x", "cx") else point[k])
-                        for k in ("move", "x", "z", "cx", "cz") if k in point})
-        elif ev.get("event") == "dwell" or (ev.get("event") == "coolant" and ev["on"] != flood):
-            flood = ev.get("on", flood)
-            out.append({k: v for k, v in ev.items() if k != "line"})
-    return out, [e.location.line for e in diagnostics.errors if e.location is not None]
-
-
 def check(seed: int) -> str:
     """Compare one program; what happened ("moves" or "refused")."""
     p = generate(seed)
@@ -254,25 +226,10 @@ def check(seed: int) -> str:
         refused_at = None
     except RS274Error as err:
         theirs = None
-        found = re.findall(r"^N(\d+)\b", err.stderr, re.M)
-        refused_at = int(found[-1]) if found else -1
-    ours, errors = postproc_path(p)
+        refused_at = refused_line(err)
+    ours, errors = postproc_path(p.text(), p.setup(), ("move", "x", "z", "cx", "cz"), radius_x=True)
     listing = f"seed {seed}:\n{p.text()}\nnose radius {p.radius} mm, tip {p.tip} (rs274 Q{mirrored(p.tip)})"
-    if theirs is None:
-        assert errors and errors[0] == refused_at, f"rs274 refused line {refused_at}, postproc: {errors}\n{listing}"
-        return "refused"
-    assert not errors, f"postproc refused lines {errors}, rs274 ran it\n{listing}"
-    show = "\n".join(map(str, ours)) + "\n--- rs274:\n" + "\n".join(map(str, theirs))
-    assert [e.get("move", e.get("event")) for e in ours] == [e.get("move", e.get("event")) for e in theirs], (
-        f"{show}\n{listing}")
-    for n, (a, b) in enumerate(zip(ours, theirs)):
-        for key in set(a) | set(b):
-            if key in ("move", "event"):
-                continue
-            x, y = a.get(key), b.get(key)
-            assert isinstance(x, (int, float)) and isinstance(y, (int, float)) and abs(x - y) <= tolerance, (
-                f"item {n} {key}: postproc {x}, rs274 {y}\n{show}\n{listing}")
-    return "moves"
+    return assert_same(ours, errors, theirs, refused_at, tolerance, listing)
 
 
 @pytest.mark.parametrize("batch", range(math.ceil(PROGRAMS / BATCH)))

@@ -12,6 +12,7 @@ import pytest
 
 from postproc.api import translate
 from postproc.errors import ErrorList, UsageError
+from postproc.setup.machine_setup import MachineSetup
 from postproc.simulate.toolpath import toolpath_events
 from postproc.transforms import parse_transform
 
@@ -34,8 +35,10 @@ def moves(text: str, dialect: str) -> list[tuple[Any, ...]]:
 
 
 def refused(text: str, source: str, target: str, transform: str) -> list[str]:
+    setup = MachineSetup()
+    setup.machine.axes = "XYZA"  # (a machine without A refuses an A word before any transform)
     with pytest.raises(ErrorList) as info:
-        run(text, source, target, transform)
+        run(text, source, target, transform, setup=setup)
     return [str(e) for e in info.value.errors]
 
 

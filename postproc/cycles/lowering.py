@@ -33,7 +33,7 @@ from postproc.errors import PostprocError, UnsupportedError
 from postproc.ir import (
     Block, Comments, CompoundMotion, Motion, ProgramControl, Section, SpindleControl, SpindleOrientation, one_line,
 )
-from postproc.context import Context
+from postproc.context import DROPPED_MOVES, Context
 from postproc.control import CONTROL, LABEL
 from postproc.source_map import ExecutedBlock
 
@@ -171,6 +171,7 @@ def _handle_orientation(block: Block, compound: CompoundMotion, ctx: Context, mo
                            f"make (set <Cycles orientation=\"stop\"/> or \"m19\")", ctx.at(block))
     if ctx.on_unsupported == "warn":
         ctx.diagnostics.warn(err.message + "; written as a comment", err.location)
+        ctx.run_data.setdefault(DROPPED_MOVES, []).append(block.line)  # its holes' moves: the writer's to judge
         block.sections = {"Comments": Comments([f"UNSUPPORTED LINE {block.line}: {source}"])}
         return True
     ctx.diagnostics.error(err)

@@ -12,7 +12,7 @@ class Frame:
     """One running program level: where it runs, how it was called, what it repeats."""
 
     __slots__ = ("program", "pc", "end", "origin", "new_level", "call_block", "remaining", "index", "count",
-                 "args", "start", "repeats", "modal", "site", "needs_return", "fors")
+                 "args", "start", "repeats", "modal", "site", "needs_return", "fors", "seen", "back")
 
     def __init__(self, program: Program, start: int, end: int, origin: Origin | None, new_level: bool,
                  call_block: Block | None, index: int, count: int, args: dict[int, Value], modal: bool,
@@ -30,6 +30,11 @@ class Frame:
         self.repeats: dict[int, int] = {}
         self.fors: dict[int, tuple[float, float]] = {}
         """Position of a running counted loop -> its (end, step), evaluated when it was entered."""
+        self.seen: dict[int, object] = {}
+        """Position of a running while loop (-1 - position of a return to the main program's start) ->
+        what the program could read when its end (the return) last ran (``RunState._endless``)."""
+        self.back = -1
+        """The while loop whose end ran last, until its test runs (-1: none): the test then continues it."""
         self.modal = modal
         self.site = site
         self.needs_return = False

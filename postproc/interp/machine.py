@@ -205,6 +205,9 @@ class Interpreter(RunState):
                 self._assign(control.assign)
             frame.pc += 1
         elif isinstance(control, While):
+            if frame.back != pos:
+                frame.seen.pop(pos, None)  # entered afresh: its earlier runs say nothing of this one
+            frame.back = -1
             if _true(evaluate(control.cond, vars_)):
                 frame.pc += 1
                 yield from self._note(frame, block, "iteration")
@@ -212,7 +215,10 @@ class Interpreter(RunState):
                 frame.pc = program.pairs[pos] + 1
         elif isinstance(control, EndWhile):
             self._spend(block, "loop")
-            frame.pc = program.pairs[pos]  # back to the head: its test runs again
+            head = program.pairs[pos]
+            self._endless(frame, head, block, "loop")
+            frame.pc = head  # back to the head: its test runs again
+            frame.back = head
         elif isinstance(control, Do):
             frame.pc += 1
             yield from self._note(frame, block, "iteration")
@@ -407,6 +413,7 @@ class Interpreter(RunState):
         if len(frames) == 1:  # a return in the main program: back to its start (Fanuc M99)
             assert block is not None
             self._spend(block, "return")
+            self._endless(frame, -1 - frame.pc, block, "return")  # (below 0: no while loop's head)
             if target is None:
                 frame.pc = 0
                 return

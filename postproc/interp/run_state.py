@@ -15,7 +15,7 @@ from .frame import Frame
 from .host import NO_MOVES, Host, Interrupt, MoveCount, Reporter
 from .rules import STORED_PROGRAMS, SubprogramRules
 from .store import Program, ProgramStore, source_text
-from .variables import Variables
+from .variables import Snapshots, Variables
 
 
 def is_number(text: str) -> bool:
@@ -61,6 +61,8 @@ class RunState:
         self.skip_refused: str | None = None
         """Set: a statement under block delete (``/``) is an error with this explanation: a flattened program
         bakes in what the statement did, so the operator's switch could no longer skip it."""
+        self.snapshots: Snapshots | None = variables if isinstance(variables, Snapshots) else None
+        """The variables, where they can say all a program reads of them at once (``_endless``)."""
         self.vacant_word: str | None = None
         """Set: a word whose value is vacant is an error with this explanation instead of being omitted (the
         check run of a program kept symbolically for a target that would not omit it)."""
@@ -115,6 +117,24 @@ class RunState:
             named = f"'{source_text(block)}'"
         self._fail(ProgramError(f"{named} repeats more than {n} blocks and moves in all (the set-up's bound on "
                                 f"work run again, <Limits repeatedWork=\"{n}\"/>)"), frame, block, 1)
+
+    def _endless(self, frame: Frame, key: int, block: Block, what: str) -> None:
+        """A while loop's end, or a return to the main program's start (``block``; ``key``: where it is
+        kept in ``frame.seen``), runs with everything the program can read as when it ran last (the
+        variables, the modal call, the frame's counted loops): the run is deterministic, so from here
+        each repetition repeats the last and it never ends. Refused now rather than run to the work
+        bound (a damaged loop that lost its counter took seconds to reach it)."""
+        snapshots = self.snapshots
+        if snapshots is None:
+            return
+        values = snapshots.snapshot()
+        if values is None:
+            return
+        now = (values, self.modal, tuple(sorted(frame.repeats.items())), tuple(sorted(frame.fors.items())))
+        if frame.seen.get(key) == now:
+            raise ProgramError(f"{what} '{source_text(block)}' never ends: it runs again with every variable as "
+                               "the time before, so nothing can change (does the program count its variable?)")
+        frame.seen[key] = now
 
     def _spend(self, block: Block, what: str, back: bool = True) -> None:
         """Count a repetition (``back``: it runs blocks again, so the work bound may name it; a jump

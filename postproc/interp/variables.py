@@ -9,7 +9,7 @@ program cannot be simulated or flattened.
 
 from __future__ import annotations
 
-from typing import Callable, Protocol
+from typing import Callable, Hashable, Protocol, runtime_checkable
 
 from ..expr import Arithmetic, EvalError, Vacancy, Value, VarKey
 
@@ -70,6 +70,16 @@ class Variables(Protocol):
         """A subprogram's end ran with ``value`` (None: without one), on a return or where the flow passes
         a definition and the rules say its end runs (``SubprogramRules.definition_runs_its_end``): what
         the program then reads of it (LinuxCNC ``#<_value>``); nothing for a family without one."""
+
+
+@runtime_checkable
+class Snapshots(Protocol):
+    """Variables that can say everything a program reads of them as one comparable value: the interpreter
+    then knows a while loop that ends an iteration as it ended the one before can never end."""
+
+    def snapshot(self) -> Hashable | None:
+        """Every value a program can read now (None: some depend on more than the variables, such as
+        the machine's frames, so no two moments compare)."""
 
 
 VariablesFactory = Callable[[Callable[[], float]], Variables]

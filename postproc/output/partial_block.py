@@ -61,9 +61,11 @@ _WHAT: Final[dict[str, str]] = {
 }
 
 
-def write_without_refused(writer: Any, block: Block, err: UnsupportedError) -> str | None:
+def write_without_refused(writer: Any, block: Block, err: UnsupportedError,
+                          dropped: set[str] | None = None) -> str | None:
     """The block's text without the section ``err`` refused and its dependants (warned), trying again while
-    the writer refuses another; None where the block must be a comment instead."""
+    the writer refuses another; None where the block must be a comment instead. ``dropped`` receives the
+    keys of the sections left out of the text returned."""
     refused: list[tuple[UnsupportedError, str, list[str]]] = []
     current = block
     for _ in range(len(block.sections)):
@@ -81,6 +83,8 @@ def write_without_refused(writer: Any, block: Block, err: UnsupportedError) -> s
             err = again
             continue
         where = writer.ctx.at(block)
+        if dropped is not None:
+            dropped.update(block.sections.keys() - current.sections.keys())
         for why, key, gone in refused:
             writer.ctx.diagnostics.warn(_message(why, block, key, gone), where)
         trace: str = writer.comment_out(block)  # the source line stays beside what is kept

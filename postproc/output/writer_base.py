@@ -12,11 +12,12 @@ from typing import Any, Callable, Iterable, Protocol, TextIO, Final
 
 from mypy_extensions import mypyc_attr
 
-from ..context import Context
+from ..context import DROPPED_MOVES, Context
 from ..cycle_words import CycleWords
-from ..errors import PostprocError, UnsupportedError
+from ..errors import PostprocError, ProgramError, UnsupportedError
 from ..ir import Block, one_line
 from .line_format import LineFormat
+from .displacement import Displacement
 from .partial_block import write_without_refused
 
 @mypyc_attr(allow_interpreted_subclasses=True)
@@ -81,6 +82,8 @@ class Writer(abc.ABC):
         it while that block is written as the state before it)."""
         self.last_line = 0
         """The source line of the last block ``write`` was given (0: none yet), for ``finish``'s notes."""
+        self.displacement: Displacement | None = None
+        """With ``--on-unsupported warn``: the axes a dropped move left elsewhere (``postproc.output.displacement``)."""
 
     def capable(self, flag: str) -> bool:
         """Whether the target has the capability ``flag`` (an UPPER_CASE attribute of ``Dialect``, read by
@@ -103,6 +106,9 @@ class Writer(abc.ABC):
         if line_format is not None:
             emit = line_format.wrap(emit)
         generated = sequences.per_block
+        displacement = None
+        if self.ctx.on_unsupported == "warn":
+            displacement = self.displacement = Displacement(self.ctx.increments, self.ctx.axis_words)
         footer: str | None = None
         started = False
         line = 0
@@ -122,6 +128,8 @@ class Writer(abc.ABC):
                 self._emit_template(emit, output_map, line_format, getattr(text_of, "template"), getattr(text_of, "text"))
                 continue
             failed = False
+            if displacement is not None and self._displaced(displacement, block):
+                continue
             try:
                 text = lane(block) if lane is not None and block.canonical else None
                 if text is None:
@@ -178,16 +186,38 @@ class Writer(abc.ABC):
         found = self.ctx.run_data.get("sequences")
         return found if found is not None else _NO_TEMPLATES
 
+    def _displaced(self, displacement: Displacement, block: Block) -> bool:
+        """Follow the distance mode; True (an error reported) where ``block`` would move displaced by a
+        move dropped before it."""
+        if "DistanceMode" in block.sections:
+            displacement.note(block.sections)
+        lowered = self.ctx.run_data.get(DROPPED_MOVES)
+        if lowered:
+            displacement.lowered(lowered)  # (the block itself is the comment the step left: it moves nothing)
+        if not displacement.axes:
+            return False
+        problem = displacement.problem(block)
+        if problem is None:
+            return False
+        displacement.axes.clear()  # one error says it: the output is discarded
+        self.ctx.diagnostics.error(ProgramError(problem, self.ctx.at(block)))
+        return True
+
     def unsupported_block(self, block: Block, err: UnsupportedError) -> str | None:
         """An error; with ``--on-unsupported warn``, the block without what the target cannot express and
-        what depends on it (``postproc.output.partial_block``), or, where nothing can be kept, as a comment."""
+        what depends on it (``postproc.output.partial_block``), or, where nothing can be kept, as a comment;
+        a move so dropped displaces what follows (``postproc.output.displacement``)."""
         err.located(self.ctx.at(block))
         if self.ctx.on_unsupported == "warn":
-            kept = write_without_refused(self, block, err)
-            if kept is not None:
-                return kept
-            self.ctx.diagnostics.warn(err.message + "; written as a comment", err.location)
-            return self.comment_out(block)
+            dropped: set[str] = set()
+            kept = write_without_refused(self, block, err, dropped)
+            if kept is None:
+                self.ctx.diagnostics.warn(err.message + "; written as a comment", err.location)
+                kept = self.comment_out(block)
+                dropped = set(block.sections)
+            if self.displacement is not None:
+                self.displacement.dropped(block, dropped)
+            return kept
         self.ctx.diagnostics.error(err)
         return None
 

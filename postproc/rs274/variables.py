@@ -11,7 +11,7 @@ Reading or writing a variable only the machine knows is an ``EvalError`` naming 
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Callable
+from typing import TYPE_CHECKING, Callable, Hashable
 
 from ..expr import Arithmetic, EvalError, Vacancy, Value, VarKey
 from ..interp.variables import MACHINE_ONLY, ProgramAlarm, SystemRanges, system_variable
@@ -121,6 +121,12 @@ class MacroBVariables:
             return None
         raise self._unknown(key)
 
+    def snapshot(self) -> Hashable | None:
+        """The locals of the running level and the commons: all a program can read (a system variable is
+        refused, ``MACHINE_ONLY``); the least increment, which rounds what is read, beside them."""
+        return (len(self.levels), tuple(sorted(self.levels[-1].items())), tuple(sorted(self.commons.items())),
+                self._increment())
+
     def exists(self, key: VarKey) -> bool:
         """Custom Macro B has no test of existence: a variable that is read is vacant or not."""
         raise EvalError("Custom Macro B has no test of whether a variable exists")
@@ -216,6 +222,15 @@ class NgcVariables:
             if found is not None:
                 return found
         return self._store(key).get(key)  # type: ignore[arg-type]
+
+    def snapshot(self) -> Hashable | None:
+        """The parameters the running level reads (numbered, named and global); None where the run's
+        frame answers the offset parameters (``read_frame``): G10 and G92 change those."""
+        if self.frames is not None:
+            return None
+        return (len(self.numbered), tuple(sorted(self.numbered[-1].items())),
+                tuple(sorted(self.named[-1].items())), tuple(sorted(self.globals_.items(), key=str)),
+                self._increment())
 
     def read_frame(self, key: int) -> float | None:
         """An offset parameter the run's frame knows (None: the machine's, reported by ``_store``)."""

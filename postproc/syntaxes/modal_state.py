@@ -66,6 +66,8 @@ class ModalStateSyntax(Syntax):
             check_values(block, ctx)  # after the state is carried: an error keeps the block's settings
 
     def _move(self, block: Block, ctx: Context, motion: Motion) -> None:
+        if not ctx.axis_words.issuperset(motion.axes):
+            _check_axes(block, ctx, motion)
         state = ctx.state
         mode = motion.mode
         machine = "MachineCoordinates" in block.sections
@@ -97,6 +99,23 @@ class ModalStateSyntax(Syntax):
 
 
 _FEED_MOTION: Final = frozenset(("linear", "cw", "ccw", "thread"))
+
+
+def _check_axes(block: Block, ctx: Context, motion: Motion) -> None:
+    """Refuse a move with a word for an axis the set-up's machine lacks (``Context.axis_words``, or an
+    increment of one: ``Context.increments``), as the simulator does: written out, the target would move
+    an axis that is not there or alarm. The move goes from the block (reported once, here) and the tool's
+    place on its axes is unknown after it."""
+    axes = ctx.axis_words
+    increments = ctx.increments
+    letter = next((a for a in motion.axes if increments.get(a, a) not in axes), None)
+    if letter is None:
+        return
+    del block.sections["Motion"]
+    for axis in motion.axes:
+        ctx.state.position[increments.get(axis, axis)] = None
+    raise ProgramError(f"axis {increments.get(letter, letter)} is not on this machine "
+                       f"(axes {ctx.setup.machine.axes})", ctx.at(block, ctx.column_of(block, letter)))
 
 
 def _check_turning(block: Block, ctx: Context, motion: Motion, before: str) -> None:

@@ -81,10 +81,10 @@ class NgcBlockSyntax(NgcWordBlockSyntax):
 
     def _g_code(self, ctx: Context, block: Block, num: str, codes: dict[str, Any], natives: list[str],
                 key: str | None = None) -> None:
-        """G7/G8 on a lathe set-up are read against its ``xProgramming`` (``lathe.read_x_mode``), G33 and
-        G96/G97 into lathe sections; on a mill all stay verbatim."""
+        """G7/G8 are read against how X reads (``lathe.read_x_mode``), G33 and G96/G97 into lathe sections
+        on a lathe set-up; on a mill those stay verbatim (``toolpath`` and ``verify`` refuse them)."""
         code = g_key(num) if key is None else key
-        if ctx.lathe and code in lathe.MODES:
+        if code in lathe.MODES:
             lathe.read_x_mode(block, ctx, num)
             return
         if not ctx.lathe and code in lathe.LATHE_ONLY:

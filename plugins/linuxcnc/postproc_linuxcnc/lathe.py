@@ -3,8 +3,8 @@
 Each rule was checked with the packaged rs274 (2.9) [V], beside LinuxCNC ``docs/src/gcode/g-code.adoc``:
 
 * ``G7`` (diameter mode) and ``G8`` (radius mode) say how X reads. The reading (and the translation of
-  every other line) follows the set-up's ``xProgramming``, so the one that agrees with it is read and
-  the other is refused at its column: a program that switches mode mid-way is not read.
+  every other line) follows the set-up's ``xProgramming`` (a mill's: radius), so the one that agrees with
+  it is read and the other is refused at its column: a program that switches mode mid-way is not read.
 * ``G96 S.. D..``: constant surface speed S (m/min under G21, ft/min under G20, as Fanuc's G96 S) with
   the spindle clamped at D rpm. G96 needs S ("S word missing with G96"); D is refused beside anything
   but G96 and cutter compensation ("D word with no G41 ... or G96 to use it"); a G96 without D lifts
@@ -41,9 +41,15 @@ def _col(block: Block, ctx: Context, num: str) -> int:
 
 
 def read_x_mode(block: Block, ctx: Context, num: str) -> None:
-    """G7/G8 on a lathe: refused where it disagrees with the set-up's ``xProgramming``."""
+    """G7/G8: refused where it disagrees with how X is read (a lathe: the set-up's ``xProgramming``; a
+    mill: radius). Kept verbatim on a mill, a G7 would make the target read every later X as a diameter
+    while the translation and the simulation read radii."""
     mode = MODES[g_key(num)]
     programmed = "diameter" if ctx.diameter else "radius"
+    if mode != programmed and not ctx.lathe:
+        raise ProgramError(f"G{num} ({mode} mode) on a mill set-up, which reads X as a radius (a lathe set-up "
+                           "with <Input xProgramming=\"diameter\"> reads diameters)",
+                           ctx.at(block, _col(block, ctx, num)))
     if mode != programmed:
         raise ProgramError(f"G{num} ({mode} mode) in a program read as {programmed}s: the set-up's "
                            f"<Input xProgramming=\"{programmed}\"> decides how X reads (set it to {mode}; a "
