@@ -16,9 +16,10 @@ from postproc.errors import ProgramError
 from postproc.expr import Expr
 from postproc.ir import Block, NativeCode, PathControl
 from postproc.rs274.codes import CodeTable, g_key
+from postproc.rs274 import ngc_lathe as lathe
 from postproc.rs274.ngc_block_syntax import NgcWordBlockSyntax
 
-from . import arc_centres, lathe
+from . import arc_centres
 from .codes import CODES, M_GROUPS
 from .rigid_tap import MODE as RIGID_TAP, read_rigid_tap
 from .tool_entry import TABLES as TOOL_TABLES, read_tool_entry
@@ -81,7 +82,7 @@ class NgcBlockSyntax(NgcWordBlockSyntax):
 
     def _g_code(self, ctx: Context, block: Block, num: str, codes: dict[str, Any], natives: list[str],
                 key: str | None = None) -> None:
-        """G7/G8 on a lathe set-up are read against its ``xProgramming`` (``lathe.read_x_mode``), G33 and
+        """G7/G8 on a lathe set-up are read against its ``xProgramming`` (``postproc.rs274.ngc_lathe.read_x_mode``), G33 and
         G96/G97 into lathe sections; on a mill all stay verbatim."""
         code = g_key(num) if key is None else key
         if ctx.lathe and code in lathe.MODES:

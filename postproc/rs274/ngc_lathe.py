@@ -1,6 +1,11 @@
-"""LinuxCNC's lathe words, read into neutral sections: ``G7``/``G8``, ``G96 S.. D..``/``G97`` and ``G33 K``.
+"""The RS274/NGC lathe words, read into neutral sections: ``G7``/``G8``, ``G96 S.. D..``/``G97`` and ``G33 K``.
+Shared by the controllers that spell them so (LinuxCNC, grblHAL in lathe mode): each passes what its own
+interpreter says where it refuses a word (``Said``).
 
-Each rule was checked with the packaged rs274 (2.9) [V], beside LinuxCNC ``docs/src/gcode/g-code.adoc``:
+Each rule was checked with the packaged rs274 (2.9) [V], beside LinuxCNC ``docs/src/gcode/g-code.adoc``;
+grblHAL's ``gcode.c`` (github.com/grblHAL/core, stored commit f80fc34) reads them alike [V] (its
+differences are refused by its plugin, or read here more strictly than grblHAL: a G33 without K, which
+grblHAL takes from the last G33, and an F beside G33, which it accepts):
 
 * ``G7`` (diameter mode) and ``G8`` (radius mode) say how X reads. The reading (and the translation of
   every other line) follows the set-up's ``xProgramming``, so the one that agrees with it is read and
@@ -18,6 +23,7 @@ Each rule was checked with the packaged rs274 (2.9) [V], beside LinuxCNC ``docs/
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from typing import Any
 
 from postproc.context import Context
@@ -32,8 +38,25 @@ MODES = {"7": "diameter", "8": "radius"}
 """G7/G8 -> how X reads."""
 LATHE_ONLY = frozenset(("33", "96", "97"))
 """Codes the table reads into lathe sections on a lathe set-up only; a mill keeps them verbatim."""
-CLAMP_KEY = "linuxcnc.spindle_clamp"
+CLAMP_KEY = "ngc.spindle_clamp"
 """``ctx.state.extra`` key: the clamp of the last G96 (D), while one is in force."""
+
+
+@dataclass(frozen=True)
+class Said:
+    """What a controller's interpreter says where it refuses a lathe word, quoted in the reader's message."""
+
+    s_missing: str
+    """G96 without S."""
+    f_beside: str
+    """F in a G33 block."""
+    k_missing: str
+    """G33 without K."""
+
+
+RS274_SAID = Said(s_missing='rs274: "S word missing with G96"', f_beside='rs274: "F word used with a g33/g33.1"',
+                  k_missing='rs274: "K word missing with g33/g33.1"')
+"""LinuxCNC's messages [V: rs274 2.9]."""
 
 
 def _col(block: Block, ctx: Context, num: str) -> int:
@@ -51,14 +74,14 @@ def read_x_mode(block: Block, ctx: Context, num: str) -> None:
 
 
 def read_spindle_mode(block: Block, ctx: Context, mode: str, num: str, values: dict[str, Any],
-                      used: set[str]) -> None:
+                      used: set[str], said: Said = RS274_SAID) -> None:
     """``G96 S.. [D..]`` or ``G97``: the mode, and on G96 its clamp."""
     extra = ctx.state.extra
     block.add(SpindleMode(mode))
     if mode != "css":
         return
     if "S" not in values:
-        raise ProgramError(f"G{num} needs S, the surface speed (rs274: \"S word missing with G96\")",
+        raise ProgramError(f"G{num} needs S, the surface speed ({said.s_missing})",
                            ctx.at(block, _col(block, ctx, num)))
     clamp = values.get("D")
     if clamp is None:
@@ -78,17 +101,18 @@ def read_spindle_mode(block: Block, ctx: Context, mode: str, num: str, values: d
     block.add(SpindleClamp(float(clamp)))
 
 
-def read_thread(block: Block, ctx: Context, motion: Motion, values: dict[str, Any], used: set[str]) -> None:
+def read_thread(block: Block, ctx: Context, motion: Motion, values: dict[str, Any], used: set[str],
+                said: Said = RS274_SAID) -> None:
     """``G33``'s K -> the block's ``ThreadLead``; K and the refusals as rs274 makes them."""
     code = next((num for letter, num in block.words if letter.upper() == "G" and g_key(num) == "33"), None)
     col = _col(block, ctx, code) if code is not None else 1
     if "F" in values:
-        raise ProgramError("F beside G33 (rs274: \"F word used with a g33/g33.1\"; set the feed rate in a block "
+        raise ProgramError(f"F beside G33 ({said.f_beside}; set the feed rate in a block "
                            "before)", ctx.at(block, ctx.column_of(block, "F")))
     along = values.get("K")
     if along is None:
-        raise ProgramError("G33 needs K, the distance per spindle revolution (rs274: \"K word missing with "
-                           "g33/g33.1\")", ctx.at(block, col))
+        raise ProgramError(f"G33 needs K, the distance per spindle revolution ({said.k_missing})",
+                           ctx.at(block, col))
     used.add("K")
     if isinstance(along, Expr) or any(isinstance(v, Expr) for v in motion.axes.values()):
         raise ProgramError("a computed word in G33 is not supported (write the numbers)", ctx.at(block, col))
