@@ -37,3 +37,5 @@ NOT_LATHE: Final = ("grblHAL runs G{num} in lathe mode only ($32, error 20 other
                     "machineType=\"lathe\"/> reads and writes grblHAL's lathe mode")
 NO_SYNC: Final = ("G33 needs a grblHAL spindle that reports its position (error 20 otherwise): a set-up with "
                   "<Controller spindleSync=\"true\"/> has one")
+NO_SYNC_WRITTEN: Final = ("a thread move (G33) on a grblHAL spindle without an encoder: a set-up with <Controller "
+                          "spindleSync=\"true\"/> has one")

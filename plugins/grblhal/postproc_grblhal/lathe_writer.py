@@ -15,7 +15,7 @@ from postproc.ir import Block, Motion, SpindleControl
 from postproc.lathe_sections import SpindleMode
 from postproc.rs274.ngc_lathe_writer import NgcLatheWriting
 
-from .lathe import NO_SYNC
+from .lathe import NO_SYNC_WRITTEN
 from .writer import GrblhalWriter
 
 _FEED_MOVES = frozenset(("linear", "cw", "ccw", "thread"))
@@ -51,6 +51,6 @@ class GrblhalLatheWriter(NgcLatheWriting, GrblhalWriter):
     def motion_words(self, s: Any, block: Block) -> list[str]:
         """G33 needs a spindle encoder (``lathe``)."""
         if s.mode == "thread" and not self.ctx.setup.controller.spindle_sync:
-            self.unsupported(NO_SYNC, block)
+            self.unsupported(NO_SYNC_WRITTEN, block)
             return []
         return super().motion_words(s, block)
