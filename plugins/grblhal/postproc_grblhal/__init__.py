@@ -95,7 +95,7 @@ class Grblhal(GrblFamily):
     LOWER_CASE: ClassVar[bool] = True
     """The reader takes lower-case words (the controller reads them as upper case)."""
     DESCRIPTION = ("grblHAL (G81/G82 native, its G73/G83 read, M6, a tool table, G95 and o-word subs where the build "
-                   "has them; G4 P in seconds)")
+                   "has them; lathe mode: G7, G96 S D, G33 K; G4 P in seconds)")
     READER = Lazy[type[Reader]](".reader:GrblhalReader")
     """Imported when a run first reads grblHAL (``Lazy``), as are the writer and the block syntax."""
     WRITER = Lazy[type[Writer]](".writer:GrblhalWriter")
