@@ -1,7 +1,7 @@
 """LinuxCNC's own ``G76`` threading cycle read on a lathe set-up (``postproc_linuxcnc.threading``).
 
 The oracle is rs274 2.9 in lathe mode: a seeded random differential of G76 blocks (outside and inside threads,
-towards -Z and +Z, degression, compound angle, spring passes, an end X, G91) read by our LinuxCNC dialect and
+towards -Z and +Z, degression, compound angle, spring passes, entry and exit tapers, an end X, G91) read by our LinuxCNC dialect and
 run by rs274, move by move (``tests/test_lathe_rs274``: end points as radii, the lead of each synchronised
 move). One case is derived by hand from ``interp_convert.cc`` ``threading_pass``. A translation to Fanuc T and
 to grblHAL writes the passes as thread moves and verifies at zero deviation; a LinuxCNC program keeps its G76.
@@ -69,6 +69,8 @@ def _g76(rng: random.Random) -> str:
         words.append(f"Q{rng.choice((0., 29.5, 30.))}")
     if rng.random() < 0.5:
         words.append(f"H{rng.choice((0, 1, 2))}")
+    if rng.random() < 0.5:
+        words.append(f"E{rng.choice((0.5, 1., 2.))} L{rng.choice((0, 1, 2, 3))}")
     incremental = rng.random() < 0.2
     if rng.random() < 0.4:
         words.append(f"X{x + (4 if not inside else -4):g}." if not incremental else "X2.")
@@ -117,7 +119,7 @@ def test_a_linuxcnc_program_keeps_its_g76() -> None:
     ("G76 Z-10. I-2. J0.4 K1.6", "5:1: error: G76 needs P, the thread pitch"),
     ("G76 P1.5 Z-10. I-2. J0.4 K0.4", "5:26: error: In G76, K must be greater than J"),
     ("G76 P1.5 Z-10. I0 J0.4 K1.6", "5:16: error: In G76, I must not be 0"),
-    ("G76 P1.5 Z-10. I-2. J0.4 K1.6 E2. L3", "5:31: error: G76 with an entry or exit taper"),
+    ("G76 P1.5 Z-10. I-2. J0.4 K1.6 E2. L4", "5:35: error: G76 L says which ends are tapered: 0 to 3"),
     ("G76 P1.5 Z-10. I-2. J0.4 K1.6 H1.5", "5:31: error: address H takes a whole number"),
 ])
 def test_what_g76_needs_or_this_reader_does_not_model_is_refused(block: str, message: str) -> None:

@@ -14,6 +14,10 @@ The moves follow LinuxCNC's ``src/emc/rs274ngc/interp_convert.cc`` ``convert_thr
   tool is, both axes at once), rapid in X to the pass's depth, feed spindle-synchronised, P per revolution,
   to Z = the end + |K| tan Q - zoff, rapid out to the X the pass came in at; zoff = (depth - |I|) tan Q, Q the
   compound angle in degrees (negated when the thread runs towards +Z; Q left out is 0);
+* E, with L 1 (entry), 2 (exit) or 3 (both): the pass's ends are tapered over E along Z, synchronised at
+  P * hypot(E, K) / E along the path: at the entry a feed in X from the rapid's X to the crest, then to the
+  pass's depth E further along; at the exit, from E short of the end, out to the crest at the end (E
+  negated when the thread runs towards +Z); E left out, 0 or below, or L 0, none;
 * at the end, a rapid to the block's end point (its X, or the drive line, and its Z).
 
 G76 needs a turning spindle and cutter compensation off, I not 0, J above 0, K above J, and P (rs274: "P word
@@ -21,8 +25,8 @@ missing with G76"). G76 stays the motion mode: a later block with axis words alo
 refused here (program G0 or G1 first). The cycle sets no feed rate: the feed in force before it is in force
 after it (the moves end by saying it again).
 
-Not modelled, so refused where read: the entry and exit tapers (E with L 1-3: feeds synchronised at another
-pitch, along X first), a computed word, a Q of 90 degrees or more, H not a whole number at least 0.
+Not modelled, so refused where read: a computed word, a Q of 90 degrees or more, H not a whole number at least
+0, L above 3 (rs274 reads its bits; 4 and more are not documented).
 """
 
 from __future__ import annotations
@@ -36,6 +40,7 @@ from postproc.cycles.turning.profile import TurnMove
 from postproc.errors import ProgramError
 from postproc.expr import Expr
 from postproc.ir import Block, CompoundMotion, Feed, Motion
+from postproc.thread_lead import lead_along_major
 
 MODE: Final = "ngc_thread_cycle"
 """The motion kind the code table gives G76 on a lathe (replaced by its moves where read)."""
@@ -44,9 +49,10 @@ WORDS: Final = "PIJKRQHEL"
 
 
 def g76_moves(start: tuple[float, float], end: tuple[float, float], pitch: float, i: float, j: float, k: float,
-              degression: float = 1.0, angle: float = 0.0, spring: int = 0, limit: int = 100_000) -> list[TurnMove]:
+              degression: float = 1.0, angle: float = 0.0, spring: int = 0, taper: float = 0.0, ends: int = 0,
+              limit: int = 100_000) -> list[TurnMove]:
     """The moves of ``G76`` from ``start`` (x radius, z) to ``end`` (module docstring): ``i``, ``j``, ``k`` as
-    radii, ``angle`` in degrees as programmed. At most ``limit`` passes."""
+    radii, ``angle`` in degrees as programmed, ``taper`` E and ``ends`` L. At most ``limit`` passes."""
     safe_x, start_z = start
     end_x, end_z = end
     toward = 1.0 if i > 0.0 else -1.0  # +X for a bore
@@ -57,14 +63,36 @@ def g76_moves(start: tuple[float, float], end: tuple[float, float], pitch: float
         q = -q
     tan_q = math.tan(q)
     target_z = end_z + height * tan_q
+    taper = max(taper, 0.0)
+    taper_pitch = pitch * math.hypot(taper, height) / taper if taper > 0.0 else pitch
+    if end_z > start_z:
+        taper = -taper
+    entry = taper != 0.0 and ends > 0 and bool(ends & 1)
+    exit_ = taper != 0.0 and ends > 0 and bool(ends & 2)
     moves: list[TurnMove] = []
+
+    def thread(x: float, z: float, along_path: float) -> None:
+        """A synchronised feed to (x, z), ``along_path`` per revolution along it (its lead along the major axis)."""
+        last = moves[-1]
+        lead = lead_along_major(along_path, x - last.x, z - last.z)
+        moves.append(TurnMove("feed", x, z, feed=lead, note="thread"))
 
     def cut(depth: float) -> None:
         zoff = (depth - crest) * tan_q
         back = safe_x + toward * (depth - full)
+        bottom = safe_x + toward * depth
+        crest_x = safe_x + toward * (depth - height)
         moves.append(TurnMove("rapid", back, start_z - zoff, note="back"))
-        moves.append(TurnMove("rapid", safe_x + toward * depth, start_z - zoff, note="in"))
-        moves.append(TurnMove("feed", safe_x + toward * depth, target_z - zoff, feed=pitch, note="thread"))
+        if entry:
+            thread(crest_x, start_z - zoff, taper_pitch)
+            thread(bottom, start_z - zoff - taper, taper_pitch)
+        else:
+            moves.append(TurnMove("rapid", bottom, start_z - zoff, note="in"))
+        if exit_:
+            thread(bottom, target_z - zoff + taper, pitch)
+            thread(crest_x, target_z - zoff, taper_pitch)
+        else:
+            thread(bottom, target_z - zoff, pitch)
         moves.append(TurnMove("rapid", back, target_z - zoff, note="out"))
 
     depth, passes = crest + first, 1
@@ -112,10 +140,9 @@ def read_g76(block: Block, ctx: Context, motion: Motion, values: dict[str, Any],
     if k <= j:
         raise refuse("In G76, K must be greater than J (rs274)", "K")
     taper = words.get("E", 0.0)
-    ends = int(words.get("L", -1))
-    if taper > 0.0 and ends > 0:
-        raise refuse("G76 with an entry or exit taper (E with L 1-3) is not modelled (its feeds are synchronised "
-                     "at another pitch, along X first): program the taper as G33 moves", "E")
+    ends = words.get("L", -1.0)
+    if ends != int(ends) or ends > 3:
+        raise refuse("G76 L says which ends are tapered: 0 to 3", "L")
     angle = words.get("Q", -1.0)
     if angle == -1.0:
         angle = 0.0  # rs274 reads a Q of -1 as none
@@ -146,7 +173,7 @@ def read_g76(block: Block, ctx: Context, motion: Motion, values: dict[str, Any],
     start = (float(x0) / scale, float(z0))
     finish = (end("X", float(x0)) / scale, end("Z", float(z0)))
     moves = g76_moves(start, finish, pitch, i / scale, j / scale, k / scale, degression, angle,
-                      int(spring), ctx.setup.limits.moves_per_block)
+                      int(spring), taper, int(ends), ctx.setup.limits.moves_per_block)
     if len(moves) > ctx.setup.limits.moves_per_block:
         raise refuse(f"G76 makes {len(moves)} moves, more than <Limits movesPerBlock> "
                      f"({ctx.setup.limits.moves_per_block})")
