@@ -133,11 +133,14 @@ def test_a_g76_repeated_by_axis_words_alone_is_refused() -> None:
     assert found and found[0].startswith("prog:6:"), found
 
 
-def test_g76_needs_a_turning_spindle() -> None:
-    found = errors("G18 G7 G21 G90 G95\nF0.2\nG0 X30. Z2.\nG76 P1.5 Z-10. I-2. J0.4 K1.6\nM2\n")
-    assert found and "spindle" in found[0], found
+@pytest.mark.parametrize("head,block", [("", ""), ("S500 M3\n", " M5")])
+def test_g76_needs_a_turning_spindle(head: str, block: str) -> None:
+    """rs274: "Chosen spindle (0) not turning in G76"; an M5 in the block stops the spindle before the motion."""
+    found = errors("G18 G7 G21 G90 G95\n" + head + "F0.2\nG0 X30. Z2.\nG76 P1.5 Z-10. I-2. J0.4 K1.6" + block + "\nM2\n")
+    assert found and "spindle stopped" in found[0], found
 
 
-def test_passes_are_bounded() -> None:
-    found = errors(HEAD + "G0 X30. Z2.\nG76 P1.5 Z-10. I-2. J0.0001 K1.6 R30.\nM2\n")
-    assert found and "more than" in found[0], found
+@pytest.mark.parametrize("words", ["J0.0001 K1.6 R30.", "J0.4 K1.6 H1000000000"])
+def test_passes_are_bounded(words: str) -> None:
+    found = errors(HEAD + "G0 X30. Z2.\nG76 P1.5 Z-10. I-2. " + words + "\nM2\n")
+    assert found and "more" in found[0], found

@@ -42,6 +42,8 @@ from postproc.expr import Expr
 from postproc.ir import Block, CompoundMotion, Feed, Motion
 from postproc.thread_lead import lead_along_major
 
+from .codes import CODES
+
 MODE: Final = "ngc_thread_cycle"
 """The motion kind the code table gives G76 on a lathe (replaced by its moves where read)."""
 WORDS: Final = "PIJKRQHEL"
@@ -151,9 +153,13 @@ def read_g76(block: Block, ctx: Context, motion: Motion, values: dict[str, Any],
     spring = words.get("H", 0.0)
     if spring != int(spring) or spring < 0:
         raise refuse("G76 H must be a whole number of spring passes, 0 or more", "H")
+    if spring >= ctx.setup.limits.moves_per_block:
+        raise refuse(f"G76 H{spring:g} makes more moves than <Limits movesPerBlock> "
+                     f"({ctx.setup.limits.moves_per_block})", "H")
     r = words.get("R")
     degression = max(r, 1.0) if r is not None else 1.0  # rs274: below 1, or left out, is 1
-    if state.spindle not in ("cw", "ccw") and block.sections.get("SpindleControl") is None:
+    turning = _spindle_of(block) or state.spindle  # (LinuxCNC starts or stops the spindle before the motion)
+    if turning not in ("cw", "ccw"):
         raise refuse("G76 with the spindle stopped (rs274: \"Chosen spindle (0) not turning in G76\")")
     x0, z0 = state.position.get("X"), state.position.get("Z")
     if x0 is None or z0 is None:
@@ -188,3 +194,13 @@ def read_g76(block: Block, ctx: Context, motion: Motion, values: dict[str, Any],
     state.position["X"] = finish[0] * scale
     state.position["Z"] = finish[1]
     state.motion = None  # G76 stays in force on LinuxCNC: a block of axis words alone is refused
+
+
+def _spindle_of(block: Block) -> str | None:
+    """What the block's own M3/M4/M5 does to the spindle (its M codes are read after its G codes), or None."""
+    for letter, num in block.words:
+        if letter.upper() == "M" and num.isdigit():
+            entry = CODES.m.get(int(num))
+            if entry is not None and entry[0] == "spindle":
+                return str(entry[1])
+    return None
