@@ -132,8 +132,8 @@ def test_a_build_without_a_spindle_encoder_has_no_g33() -> None:
 def test_a_build_without_a_tool_table_cannot_apply_a_lathe_offset() -> None:
     setup = lathe("fanuc_0i_tf.xml", ControllerSettings(spindle_sync=True))
     assert errors("G21 G98\nT0101\nG00 X40. Z2.\nM30\n", setup=setup) == [
-        "in.nc:3:1: error: a lathe tool's offsets (G43 H1: X and Z) on a build without a tool table (G43.1 would "
-        "take only Z): a set-up with <Controller toolTable=\"true\"/> has one"]
+        "in.nc:3:1: error: a lathe tool's offsets (register 1: X and Z) on a build without a tool table (the dynamic "
+        "offset would take only Z): a set-up with <Controller toolTable=\"true\"/> has one"]
 
 
 def test_no_feed_move_under_css_with_the_spindle_stopped() -> None:

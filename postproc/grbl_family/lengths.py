@@ -80,8 +80,9 @@ def _dynamic(block: Block, ctx: Context, table: ToolTable, offset: ToolLengthOff
     (the units a ``G43.1`` written ahead of the block's own G20/G21 is read in)."""
     register = offset.register
     if ctx.lathe:
-        raise UnsupportedError(f"a lathe tool's offsets (G43 H{register}: X and Z) on a build without a tool table "
-                               "(G43.1 would take only Z): a set-up with <Controller toolTable=\"true\"/> has one")
+        raise UnsupportedError(f"a lathe tool's offsets (register {register}: X and Z) on a build without a tool table "
+                               "(the dynamic offset would take only Z): a set-up with <Controller toolTable=\"true\"/> "
+                               "has one")
     if not isinstance(register, int):
         raise UnsupportedError("a tool length offset whose register is computed (the dynamic offset needs its value)")
     sections = block.sections

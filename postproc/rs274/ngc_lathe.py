@@ -54,10 +54,6 @@ class Said:
     """G33 without K."""
 
 
-RS274_SAID = Said(s_missing='rs274: "S word missing with G96"', f_beside='rs274: "F word used with a g33/g33.1"',
-                  k_missing='rs274: "K word missing with g33/g33.1"')
-"""LinuxCNC's messages [V: rs274 2.9]."""
-
 
 def _col(block: Block, ctx: Context, num: str) -> int:
     return ctx.column_of(block, "G", num)
@@ -74,7 +70,7 @@ def read_x_mode(block: Block, ctx: Context, num: str) -> None:
 
 
 def read_spindle_mode(block: Block, ctx: Context, mode: str, num: str, values: dict[str, Any],
-                      used: set[str], said: Said = RS274_SAID) -> None:
+                      used: set[str], said: Said) -> None:
     """``G96 S.. [D..]`` or ``G97``: the mode, and on G96 its clamp."""
     extra = ctx.state.extra
     block.add(SpindleMode(mode))
@@ -86,12 +82,12 @@ def read_spindle_mode(block: Block, ctx: Context, mode: str, num: str, values: d
     clamp = values.get("D")
     if clamp is None:
         if extra.get(CLAMP_KEY) is not None:
-            raise ProgramError(f"G{num} without D after a G96 with D: LinuxCNC lifts the spindle clamp, which "
-                               "the Fanuc-family clamp (G50 S) cannot say; write D again",
+            raise ProgramError(f"G{num} without D after one with D: the controller lifts the spindle clamp, which "
+                               "the Fanuc family's clamp cannot say; write D again",
                                ctx.at(block, _col(block, ctx, num)))
         return
     if isinstance(clamp, Expr):
-        raise ProgramError("a computed D in G96 is not supported (write the number)",
+        raise ProgramError(f"a computed D in G{num} is not supported (write the number)",
                            ctx.at(block, ctx.column_of(block, "D")))
     if clamp <= 0:
         raise ProgramError(f"G{num} D{clamp:g}: the spindle clamp must be positive",
@@ -102,28 +98,29 @@ def read_spindle_mode(block: Block, ctx: Context, mode: str, num: str, values: d
 
 
 def read_thread(block: Block, ctx: Context, motion: Motion, values: dict[str, Any], used: set[str],
-                said: Said = RS274_SAID) -> None:
+                said: Said) -> None:
     """``G33``'s K -> the block's ``ThreadLead``; K and the refusals as rs274 makes them."""
     code = next((num for letter, num in block.words if letter.upper() == "G" and g_key(num) == "33"), None)
     col = _col(block, ctx, code) if code is not None else 1
+    name = f"G{code}" if code is not None else "the thread move"
     if "F" in values:
-        raise ProgramError(f"F beside G33 ({said.f_beside}; set the feed rate in a block "
+        raise ProgramError(f"F beside {name} ({said.f_beside}; set the feed rate in a block "
                            "before)", ctx.at(block, ctx.column_of(block, "F")))
     along = values.get("K")
     if along is None:
-        raise ProgramError(f"G33 needs K, the distance per spindle revolution ({said.k_missing})",
+        raise ProgramError(f"{name} needs K, the distance per spindle revolution ({said.k_missing})",
                            ctx.at(block, col))
     used.add("K")
     if isinstance(along, Expr) or any(isinstance(v, Expr) for v in motion.axes.values()):
-        raise ProgramError("a computed word in G33 is not supported (write the numbers)", ctx.at(block, col))
+        raise ProgramError(f"a computed word in {name} is not supported (write the numbers)", ctx.at(block, col))
     if along <= 0:
-        raise ProgramError(f"G33 K{along:g}: the distance per revolution must be positive",
+        raise ProgramError(f"{name} K{along:g}: the distance per revolution must be positive",
                            ctx.at(block, ctx.column_of(block, "K")))
-    dx, dz = _travel(block, ctx, motion, col)
+    dx, dz = _travel(block, ctx, motion, col, name)
     block.add(ThreadLead(lead_along_major(float(along), dx, dz)))
 
 
-def _travel(block: Block, ctx: Context, motion: Motion, col: int) -> tuple[float, float]:
+def _travel(block: Block, ctx: Context, motion: Motion, col: int, name: str) -> tuple[float, float]:
     """The move's X travel (a radius) and Z travel; a start not yet known matters only for a taper."""
     state = ctx.state
     incremental = state.distance == "incremental"
@@ -145,6 +142,6 @@ def _travel(block: Block, ctx: Context, motion: Motion, col: int) -> tuple[float
     dx, dz = travel("X"), travel("Z")
     if dx is None or dz is None and dx != 0.0:
         axis = "X" if dx is None else "Z"
-        raise ProgramError(f"G33 moving X from a {axis} not yet known (program an absolute {axis} first)",
+        raise ProgramError(f"{name} moving X from a {axis} not yet known (program an absolute {axis} first)",
                            ctx.at(block, col))
     return (dx / 2.0 if ctx.diameter else dx), (dz or 0.0)

@@ -63,9 +63,9 @@ class LatheModes:
 
     __slots__ = ("preamble", "clamp", "css", "x", "z", "diameter")
 
-    def __init__(self, ctx: Context, foreign: bool) -> None:
+    def __init__(self, ctx: Context, mode_line: str | None) -> None:
         self.diameter = ctx.diameter
-        self.preamble: str | None = ("G18 " + ("G7" if ctx.diameter else "G8")) if foreign else None
+        self.preamble: str | None = mode_line
         """The mode line, until it is written before the first block that acts."""
         self.clamp: float | None = None
         self.css = False
@@ -117,8 +117,8 @@ class LatheModes:
         dx = dx / 2.0 if self.diameter else dx
         dz = dz or 0.0
         if not major_is_z(dx, dz):
-            return ("a thread whose major axis is X (a face thread: LinuxCNC's G33 K along such a path in "
-                    "diameter mode is not in our sources)")
+            return ("a thread whose major axis is X (a face thread: LinuxCNC's distance per revolution K along such "
+                    "a path in diameter mode is not in our sources)")
         return lead_along_path(lead, dx, dz)
 
 
@@ -126,7 +126,7 @@ def clamp_words(writer: Any, modes: LatheModes, rpm: float | Expr, block: Block)
     """A new clamp: ``G96 S.. D..`` while constant surface speed is on and the block does not set the mode,
     else nothing yet (the next G96 writes it)."""
     if isinstance(rpm, Expr):
-        writer.unsupported("a computed spindle clamp (G96 D takes a number)", block)
+        writer.unsupported("a computed spindle clamp (the clamp D takes a number)", block)
         return []
     modes.clamp = float(rpm)
     if not modes.css or "SpindleMode" in block.sections:
@@ -159,7 +159,7 @@ def surface_speed(writer: Any, block: Block) -> str:
     ``Status_GcodeValueWordMissing``)."""
     rpm = writer.modal.spindle_rpm
     if rpm is None:
-        writer.unsupported("constant surface speed with no surface speed S programmed (G96 needs S)", block)
+        writer.unsupported("constant surface speed with no surface speed S programmed (its code needs S)", block)
     return "S" + str(writer.expression(rpm, block) if isinstance(rpm, Expr) else writer.speed(rpm))
 
 
@@ -170,10 +170,13 @@ class NgcLatheWriting(WordWriter):
 
     IGNORED: ClassVar[frozenset[str]] = frozenset(("ThreadLead",))
     """A thread move's lead is written as its K (``motion_words``)."""
+    MODE_LINES: ClassVar[dict[str, str]]
+    """The controller's mode line, by how X reads ("diameter", "radius"): set by each controller's writer."""
 
     def __init__(self, ctx: Context, source_dialect: str, target: type[Dialect] | None = None) -> None:
         super().__init__(ctx, source_dialect, target)
-        self.lathe = LatheModes(ctx, source_dialect != self.DIALECT)
+        foreign = source_dialect != self.DIALECT
+        self.lathe = LatheModes(ctx, self.MODE_LINES["diameter" if ctx.diameter else "radius"] if foreign else None)
 
     def write_block(self, block: Block) -> str | None:
         """A lathe program translated here opens with its mode line (``LatheModes.opening``)."""

@@ -8,7 +8,7 @@ mill program's writer is unchanged.
 
 from __future__ import annotations
 
-from typing import Any
+from typing import Any, ClassVar
 
 from postproc.event_order import after_motion
 from postproc.ir import Block, Motion, SpindleControl
@@ -24,6 +24,9 @@ _FEED_MOVES = frozenset(("linear", "cw", "ccw", "thread"))
 
 class GrblhalLatheWriter(NgcLatheWriting, GrblhalWriter):
     """grblHAL's writer for a lathe program (module docstring)."""
+
+    MODE_LINES: ClassVar[dict[str, str]] = {"diameter": "G18 G7", "radius": "G18 G8"}
+    """The ZX plane and how X reads, first in a program translated here."""
 
     def write_block(self, block: Block) -> str | None:
         self.refuse_css_with_spindle_stopped(block)

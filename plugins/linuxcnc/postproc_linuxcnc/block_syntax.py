@@ -25,6 +25,10 @@ from .rigid_tap import MODE as RIGID_TAP, read_rigid_tap
 from .threading import MODE as THREAD_CYCLE, read_g76
 from .tool_entry import TABLES as TOOL_TABLES, read_tool_entry
 
+RS274_SAID = lathe.Said(s_missing='rs274: "S word missing with G96"',
+                        f_beside='rs274: "F word used with a g33/g33.1"',
+                        k_missing='rs274: "K word missing with g33/g33.1"')
+"""What rs274 2.9 says where the lathe words are refused [V]."""
 DYNAMIC_SIDES: dict[str, str] = {"41.1": "left", "42.1": "right"}
 """G41.1/G42.1 -> the side of the path."""
 _DYNAMIC_WORDS = frozenset("NDL")
@@ -108,7 +112,7 @@ class NgcBlockSyntax(NgcWordBlockSyntax):
         for group, (_, kind, arg, num) in list(codes.items()):
             if kind == "spindle_mode":  # G96 S D / G97 (``lathe``)
                 del codes[group]
-                lathe.read_spindle_mode(block, ctx, str(arg), num, values, used)
+                lathe.read_spindle_mode(block, ctx, str(arg), num, values, used, RS274_SAID)
             elif arg == THREAD_CYCLE:  # G76: H spring passes, E/L its tapers (``threading``)
                 spring.update((letter, values.pop(letter)) for letter in ("H", "E", "L") if letter in values)
         super().g_sections(block, ctx, codes, values, used, cycle_block)
@@ -122,7 +126,7 @@ class NgcBlockSyntax(NgcWordBlockSyntax):
             _blending_tolerance(block, ctx, path, values, used)  # type: ignore[arg-type]
         motion = sections.get("Motion")
         if motion is not None and motion.mode == "thread":  # type: ignore[attr-defined]
-            lathe.read_thread(block, ctx, motion, values, used)  # type: ignore[arg-type]
+            lathe.read_thread(block, ctx, motion, values, used, RS274_SAID)  # type: ignore[arg-type]
         elif motion is not None and motion.mode == RIGID_TAP:  # type: ignore[attr-defined]
             read_rigid_tap(block, ctx, motion, values, used)  # type: ignore[arg-type]
         elif motion is not None and motion.mode == THREAD_CYCLE:  # type: ignore[attr-defined]

@@ -17,6 +17,8 @@ R K Q H E L``: the two cycles never move alike, so a native cycle would change t
 
 from __future__ import annotations
 
+from typing import ClassVar
+
 from postproc.rs274.ngc_lathe_writer import NgcLatheWriting, feed_apart
 
 from .writer import LinuxcncWriter
@@ -26,3 +28,6 @@ __all__ = ["LinuxcncLatheWriter", "feed_apart"]
 
 class LinuxcncLatheWriter(NgcLatheWriting, LinuxcncWriter):
     """LinuxCNC's writer for a lathe program: the mode line, G96 with its clamp, G33 with K."""
+
+    MODE_LINES: ClassVar[dict[str, str]] = {"diameter": "G18 G7", "radius": "G18 G8"}
+    """The ZX plane and how X reads, first in a program translated here."""
