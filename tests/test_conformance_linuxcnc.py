@@ -10,7 +10,9 @@ compared move by move, within 1.5e-4 program units (the ``expected`` files print
   G18/G19 tapping feeds are wrong, so those feed moves are not trusted; the rapids still check
   positioning, the rise to R and the return to the clear level.
 * M98/M99: Fanuc-style numbered subprograms (``O1`` ... ``M99`` after the main program, ``M98 P1 L3``,
-  ``L0``, ``#1`` shared with the caller): every move. The lathe cases are out (``SKIPPED`` says why).
+  ``L0``, ``#1`` shared with the caller): every move.
+* G76 (the threading cycle, inch, exit taper, spring passes, degression 2, compound angle 29.5): every move,
+  read on a lathe set-up. The G71/G72 lathe cases are out (``SKIPPED`` says why).
 """
 
 from __future__ import annotations
@@ -22,6 +24,7 @@ from typing import Any
 
 import pytest
 
+from postproc.setup.machine_setup import InputSettings, MachineSetup
 from postproc.simulate.toolpath import toolpath_events
 from tests.support.rs274 import canonical_moves, motions
 
@@ -31,10 +34,14 @@ MM_PER_INCH = 25.4
 TOLERANCE = 1.5e-4
 """In program units (the cases are inch programs: converted to mm before comparing)."""
 
-_G7X = ("LinuxCNC's own lathe cycles (G70/G71.x/G72.x with an O-word profile and D/I/R words, its G76 "
-        "P/I/J/K/R/Q/H/E/L) are not read by the linuxcnc dialect; the Fanuc T/GSK cycles are modelled, and "
-        "tests/test_turning_* compare their geometry with these cases' moves where the cut is the same")
-SKIPPED = {"g71": _G7X, "g72": _G7X, "g76": _G7X}
+_G7X = ("LinuxCNC's own lathe cycles (G70/G71.x/G72.x with an O-word profile and D/I/R words) are not read by "
+        "the linuxcnc dialect; the Fanuc T/GSK cycles are modelled, and tests/test_turning_* compare their geometry "
+        "with these cases' moves where the cut is the same")
+SKIPPED = {"g71": _G7X, "g72": _G7X}
+LATHE_CASES = ("g76",)
+"""Cases run on a lathe (G76 is the threading cycle there, ``postproc_linuxcnc.threading``): read with a lathe
+set-up in radius mode, as the standalone interpreter starts (no G7 in the program)."""
+LATHE = MachineSetup(input=InputSettings(machine_type="lathe", x_programming="radius"))
 RAPIDS_ONLY = ("g84-g18", "g84-g19")
 """Cases whose tapping feeds are wrong upstream (conformance README: G84 in G18/G19): rapids only."""
 
@@ -56,9 +63,9 @@ def _program(case: Path) -> Path:
     return programs[0]
 
 
-def _ours(program: Path) -> list[dict[str, Any]]:
+def _ours(program: Path, setup: MachineSetup | None = None) -> list[dict[str, Any]]:
     with open(program, encoding="utf-8", newline="") as src:
-        events = list(toolpath_events(src, file=str(program), dialect="linuxcnc"))
+        events = list(toolpath_events(src, file=str(program), dialect="linuxcnc", setup=setup))
     return [e for e in events[1:] if "move" in e]
 
 
@@ -86,7 +93,7 @@ def _mismatch(ours: list[dict[str, Any]], theirs: list[dict[str, Any]], tol_mm: 
 def test_conformance_case(case: Path) -> None:
     program = _program(case)
     expected = motions(canonical_moves((case / "expected").read_text(encoding="utf-8")))
-    ours = _ours(program)
+    ours = _ours(program, LATHE if case.name.startswith(LATHE_CASES) else None)
     if case.name.startswith(RAPIDS_ONLY):
         expected = [m for m in expected if m["move"] == "rapid"]
         ours = [m for m in ours if m["move"] == "rapid"]

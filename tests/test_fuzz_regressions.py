@@ -319,12 +319,15 @@ def test_verify_pairs_compensation_sides_under_a_transform_that_mirrors() -> Non
 LATHE_SETUP = MachineSetup(input=InputSettings(machine_type="lathe"), machine=MachineSettings(axes="XZ"))
 
 
-@pytest.mark.parametrize("source", ["grbl", "grblhal", "mach3"])
+@pytest.mark.parametrize("source", ["grbl", "mach3"])
 @pytest.mark.parametrize("on_unsupported", ["error", "warn"])
-def test_a_mill_program_on_a_lathe_set_up_is_refused_for_fanuc(source: str, on_unsupported: str) -> None:
+@pytest.mark.parametrize("lathe_source", ["linuxcnc", "grblhal"])
+def test_a_mill_program_on_a_lathe_set_up_is_refused_for_fanuc(source: str, on_unsupported: str,
+                                                               lathe_source: str) -> None:
     """make fuzz (new words): grbl 'G21 G90 G0 X0. Z10.' on a lathe set-up became Fanuc 'G21 G90 G00 X0. Z10.',
     which Fanuc T (the set-up's reading) takes as a G90 turning cycle; with --on-unsupported warn the line
-    'G21 G90' was kept alone. LinuxCNC reads its own program with lathe meanings, and is still written."""
+    'G21 G90' was kept alone. LinuxCNC and grblHAL (its lathe mode) read their own programs with lathe
+    meanings, and are still written."""
     program = "G21 G90 G0 X0. Z10.\nG1 X5. F100.\nM30\n"
     with pytest.raises(ErrorList) as exc:
         translate(io.StringIO(program), io.StringIO(), file="t.nc", source=source, target="fanuc", setup=LATHE_SETUP,
@@ -334,7 +337,7 @@ def test_a_mill_program_on_a_lathe_set_up_is_refused_for_fanuc(source: str, on_u
         "(a mill's distance and feed mode codes are its turning and facing cycles); read it with a dialect that "
         "has lathe meanings, or with a mill set-up"]
     out = io.StringIO()
-    translate(io.StringIO(program), out, file="t.nc", source="linuxcnc", target="fanuc", setup=LATHE_SETUP)
+    translate(io.StringIO(program), out, file="t.nc", source=lathe_source, target="fanuc", setup=LATHE_SETUP)
     assert out.getvalue() == "G21 G98 G00 X0. Z10.\nG01 X5. F100.\nM30\n"
 
 

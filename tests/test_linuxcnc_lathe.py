@@ -101,7 +101,7 @@ def test_a_face_thread_is_refused_at_its_line() -> None:
         write("G97 S500 M03\nG00 X30. Z5.\nG32 X60. Z4. F1.\n", "fanuc", FANUC_T)
     assert [str(e) for e in caught.value.errors] == [
         "in.nc:3:1: error: the linuxcnc dialect cannot express a thread whose major axis is X (a face thread: "
-        "LinuxCNC's G33 K along such a path in diameter mode is not in our sources)"]
+        "LinuxCNC's distance per revolution K along such a path in diameter mode is not in our sources)"]
 
 
 def test_a_radius_program_gets_g8_and_keeps_its_x() -> None:
@@ -144,8 +144,8 @@ def test_lathe_words_refused_as_rs274_refuses_them() -> None:
         'in.ngc:2:15: error: F beside G33 (rs274: "F word used with a g33/g33.1"; set the feed rate in a block '
         'before)']
     assert errors("G96 S100 D2000\nG97 S500\nG96 S120\nM2\n") == [
-        "in.ngc:3:1: error: G96 without D after a G96 with D: LinuxCNC lifts the spindle clamp, which the "
-        "Fanuc-family clamp (G50 S) cannot say; write D again"]
+        "in.ngc:3:1: error: G96 without D after one with D: the controller lifts the spindle clamp, which the "
+        "Fanuc family's clamp cannot say; write D again"]
 
 
 def test_g33_on_a_mill_set_up_stays_verbatim() -> None:

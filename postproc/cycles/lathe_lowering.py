@@ -77,7 +77,9 @@ def _lower(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iter
     """A target written to has not the source's incremental addresses (LinuxCNC's U/W are axes): U/W become
     X/Z. (The simulator, which writes nothing, reads the source's own.)"""
     tracker = _Position(ctx, radius) if foreign or radius or absolute else None
-    turret = foreign or not target.LATHE_TURRET
+    turret = foreign or ctx.lathe_turret and not target.LATHE_TURRET
+    """A turret index becomes a tool change: not from a source that changes tools with M6 (LinuxCNC, grblHAL),
+    whose ``T1 M6`` applies no offset (its ``G43 H`` does, and is its own)."""
     offsets = LatheOffsets(ctx, radius) if foreign and ctx.lathe_turret else None
     """A turret index applies its offset (LinuxCNC's ``T1 M6`` applies none: its ``G43 H`` does)."""
     plane_set = not foreign

@@ -16,6 +16,11 @@ where it stood; the simulation of such a machine reads every length as zero, so 
 the same path on both sides.
 
 A register the set-up does not give is a located error naming the ``<Tool>`` element to add.
+
+On a lathe (grblHAL's lathe mode) a register's offset has an X as well as a Z (a turret index ``T0101``
+written ``T1 M6`` .. ``G43 H1``): ``G43.1 Z`` would drop the X, and a ``G43.1 X`` is halved under G7 [V: grblHAL
+``gcode.c`` halves every X word in diameter mode], which is not modelled, so the offset is refused and the
+set-up is told to say the build has a tool table.
 """
 
 from __future__ import annotations
@@ -74,6 +79,10 @@ def _dynamic(block: Block, ctx: Context, table: ToolTable, offset: ToolLengthOff
     it, or (tools touched off) by a comment. ``inch``: the units after the block, ``before``: before it
     (the units a ``G43.1`` written ahead of the block's own G20/G21 is read in)."""
     register = offset.register
+    if ctx.lathe:
+        raise UnsupportedError(f"a lathe tool's offsets (register {register}: X and Z) on a build without a tool table "
+                               "(the dynamic offset would take only Z): a set-up with <Controller toolTable=\"true\"/> "
+                               "has one")
     if not isinstance(register, int):
         raise UnsupportedError("a tool length offset whose register is computed (the dynamic offset needs its value)")
     across = table.sideways(register)

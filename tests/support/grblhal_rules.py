@@ -7,8 +7,9 @@ grblHAL's source (github.com/grblHAL/core, stored commit f80fc34), independently
 * ``protocol.c``/``protocol.h``: a line keeps at most 256 characters (``LINE_BUFFER_SIZE`` 257), comments and
   spaces included, leading blanks and control characters not; ``?``, ``!``, ``~``, Ctrl-X and bytes above 0x7F
   are real-time commands wherever they stand;
-* ``gcode.c`` ``gc_execute_block``: the G and M codes it accepts (the lathe mode's G7/G8, G33, G76, G96/G97
-  only in lathe mode; G43/G43.2 only with a tool table; G95 only with a spindle encoder; M7 only with mist
+* ``gcode.c`` ``gc_execute_block``: the G and M codes it accepts (the lathe mode's G7/G8, G33, G96/G97
+  only in lathe mode, ``lathe``: G33 with a spindle encoder and a K, in its block or from an earlier G33, G96
+  with S; a feed move under G96 while the spindle is stopped, or at S0, is error 41; G76 is not checked here; G43/G43.2 only with a tool table; G95 only with a spindle encoder; M7 only with mist
   coolant; M19 is no code of its); one command per modal group; a motion code beside another axis command
   (G10, G28, G30, G92, G43.1) is an axis command conflict; axis words while G80 is in force are refused
   unless a non-modal command (G10, G28, G30, G92) takes them; a feed move needs a feed rate; a block that
@@ -55,7 +56,10 @@ GROUPS = {
     **dict.fromkeys(("40",), "cutter"), **dict.fromkeys(("43", "43.1", "43.2", "49"), "length"),
     **dict.fromkeys(("54", "55", "56", "57", "58", "59", "59.1", "59.2", "59.3"), "coordinates"),
     **dict.fromkeys(("61",), "path"), **dict.fromkeys(("98", "99"), "return"),
+    "33": "motion", **dict.fromkeys(("7", "8"), "lathe diameter"), **dict.fromkeys(("96", "97"), "spindle speed mode"),
 }
+LATHE_G = {"7", "8", "33", "96", "97"}
+"""Codes of the lathe mode (``$32``)."""
 M_GROUPS = {**dict.fromkeys((0, 1, 2, 30), "stopping"), **dict.fromkeys((3, 4, 5), "spindle"),
             **dict.fromkeys((7, 8, 9), "coolant"), 6: "tool", 61: "tool"}
 
@@ -65,10 +69,21 @@ def _code(number: str) -> str:
     return f"{value:g}"
 
 
+class _Lathe:
+    """What the lathe mode's checks carry from line to line."""
+
+    def __init__(self) -> None:
+        self.css = False
+        self.spindle_on = False
+        self.rpm = 0.0
+        self.k = 0.0
+
+
 def grblhal_problems(text: str, *, tool_table: bool = False, spindle_sync: bool = False, mist: bool = False,
-                     m19: bool = False) -> list[str]:
+                     m19: bool = False, lathe: bool = False) -> list[str]:
     """The lines of ``text`` grblHAL refuses (see the module docstring), as ``LINE: message``."""
     found: list[str] = []
+    turning = _Lathe() if lathe else None
     motion: str | None = "0"  # grblHAL starts in G0; None: unknown (after a line that computes)
     feed = False
     subs: set[int] = set()
@@ -96,7 +111,7 @@ def grblhal_problems(text: str, *, tool_table: bool = False, spindle_sync: bool 
         if "".join(letter + number for letter, number in words) != code:
             found.append(f"{n}: not a sequence of words: {code!r}")
             continue
-        problem = _block(words, motion, feed, tool_table, spindle_sync, mist, m19)
+        problem = _block(words, motion, feed, tool_table, spindle_sync, mist, m19, turning)
         if isinstance(problem, str):
             found.append(f"{n}: {problem}")
             continue
@@ -105,7 +120,7 @@ def grblhal_problems(text: str, *, tool_table: bool = False, spindle_sync: bool 
 
 
 def _block(words: list[tuple[str, str]], motion: str | None, feed: bool, tool_table: bool, spindle_sync: bool,
-           mist: bool, m19: bool) -> str | tuple[str | None, bool]:
+           mist: bool, m19: bool, lathe: _Lathe | None = None) -> str | tuple[str | None, bool]:
     """A problem, or the motion mode and whether a feed rate is in force after the block."""
     gs = [_code(number) for letter, number in words if letter == "G"]
     ms = [float(number) for letter, number in words if letter == "M"]
@@ -120,7 +135,11 @@ def _block(words: list[tuple[str, str]], motion: str | None, feed: bool, tool_ta
             return "G95 without a spindle encoder (unsupported command)"
         if g in ("85", "86", "89"):
             return f"G{g} is parsed but never run by grblHAL's motion control"
-        if g not in G_ACCEPTED and g not in ("43", "43.2", "95"):
+        if g in LATHE_G and lathe is None:
+            return f"G{g} outside lathe mode (unsupported command, error 20)"
+        if g == "33" and not spindle_sync:
+            return "G33 without a spindle encoder (unsupported command, error 20)"
+        if g not in G_ACCEPTED and g not in ("43", "43.2", "95") and g not in LATHE_G:
             return f"G{g} is no code of grblHAL's (unsupported command, error 20)"
     for m in ms:
         if not (m in M_ACCEPTED or (m == 7 and mist) or (m == 19 and m19)):
@@ -151,6 +170,38 @@ def _block(words: list[tuple[str, str]], motion: str | None, feed: bool, tool_ta
             return f"G{motion} newly programmed without Q (value word missing)"
         if "L" in values and values["L"] <= 0:
             return "a repeat count L of 0 or less (error: non-positive value)"
-    if uses_motion and motion not in ("0", "80") and not feed:
+    if lathe is not None:
+        problem = _lathe_block(lathe, gs, ms, values, motion, bool(uses_motion) or new_motion is not None)
+        if problem is not None:
+            return problem
+    if uses_motion and motion not in ("0", "80", "33") and not feed:
         return "a feed move with no feed rate (undefined feed rate, error 22)"
     return motion, feed
+
+
+def _lathe_block(lathe: _Lathe, gs: list[str], ms: list[float], values: dict[str, float], motion: str | None,
+                 moves: bool) -> str | None:
+    """The lathe mode's checks of a block, and what it changes (``gcode.c``)."""
+    if "96" in gs:
+        if "S" not in values:
+            return "G96 without S (value word missing, error 28)"
+        lathe.css = True
+    elif "97" in gs:
+        lathe.css = False
+    if "S" in values:
+        lathe.rpm = values["S"]
+    for m in ms:
+        if m in (3, 4):
+            lathe.spindle_on = True
+        elif m in (5, 30, 2):
+            lathe.spindle_on = False
+    if "D" in values and "96" not in gs:
+        return "D without G96 (unused word)"
+    if motion == "33" and "K" in values:
+        lathe.k = values["K"]
+    if moves and motion not in ("0", "80", None):
+        if lathe.css and (not lathe.spindle_on or lathe.rpm == 0):
+            return "a feed move under G96 with the spindle stopped (spindle not running, error 41)"
+        if motion == "33" and lathe.k == 0:
+            return "G33 with no K (value out of range)"
+    return None

@@ -39,10 +39,11 @@ def _grbl(text: str, setup: MachineSetup) -> list[str]:
 
 
 def _grblhal(text: str, setup: MachineSetup) -> list[str]:
-    """grblHAL, with the build the set-up describes (tool table, spindle encoder, mist coolant, M19)."""
+    """grblHAL, with the build the set-up describes (tool table, spindle encoder, mist coolant, M19, lathe mode)."""
     controller = setup.controller
     return grblhal_problems(text, tool_table=bool(controller.tool_table), spindle_sync=bool(controller.spindle_sync),
-                            mist=bool(controller.mist_coolant), m19=setup.cycles.orientation == "m19")
+                            mist=bool(controller.mist_coolant), m19=setup.cycles.orientation == "m19",
+                            lathe=setup.input.machine_type == "lathe")
 
 
 def _linuxcnc(text: str, setup: MachineSetup) -> list[str]:

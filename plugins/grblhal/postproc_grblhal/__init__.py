@@ -22,9 +22,11 @@ What grblHAL accepts, from its source (github.com/grblHAL/core, stored commit f8
   for a set-up that says the build has them (``<Controller expressions="true">``, ``program``); numbered subs
   as grblHAL runs them (``reader``, ``variables``), Fanuc-style subprograms as subs (``subprograms``), named
   subs refused. G65/G66 and M98 need a macro plugin (``grbl.on_macro_execute``): refused.
-* Lathe mode (``$32``): G7/G8, G33, G76 threading, G96/G97, and G70-G72 with ``LATHE_UVW_OPTION``: not
-  modelled (refused at their line); G41/G42 only with ``CUTTER_COMP_ENABLE`` (off, experimental): the
-  compensated path is written instead, as for grbl. No G52, G44 or M19.
+* Lathe mode (``$32``): G7/G8, G33 K, G96 S D/G97 read and written on a lathe set-up (``lathe``), with G95 and
+  G43 H as a mill's; its G76 threading cycle and G70-G72 (``LATHE_UVW_OPTION``) are not modelled (refused at
+  their line; another controller's threading cycle is written as G33 passes); G41/G42 only with
+  ``CUTTER_COMP_ENABLE`` (off, experimental): the compensated path is written instead, as for grbl. No G52,
+  G44 or M19.
 * ``( )`` and ``;`` comments; ``/`` block delete at the start of a block; a line keeps 256 characters
   (``LINE_BUFFER_SIZE`` 257, ``protocol.h``), comments and spaces included; ``?``, ``!``, ``~`` and bytes above
   0x7F are real-time commands (``text``).
@@ -76,6 +78,12 @@ def resolve_cutter_compensation(blocks: Iterator[Block], ctx: Context, target: t
     return step(blocks, ctx, target)
 
 
+def thread_feed_apart(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """``postproc.rs274.ngc_lathe_writer.feed_apart``, imported when a translation first lowers for grblHAL."""
+    from postproc.rs274.ngc_lathe_writer import feed_apart
+    return feed_apart(blocks, ctx, target)
+
+
 def subprograms_as_subs(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
     """``subprograms.subprograms_as_subs``, imported when a translation first lowers for grblHAL."""
     from .subprograms import subprograms_as_subs as step
@@ -87,10 +95,12 @@ class Grblhal(GrblFamily):
     LOWER_CASE: ClassVar[bool] = True
     """The reader takes lower-case words (the controller reads them as upper case)."""
     DESCRIPTION = ("grblHAL (G81/G82 native, its G73/G83 read, M6, a tool table, G95 and o-word subs where the build "
-                   "has them; G4 P in seconds)")
+                   "has them; lathe mode: G7, G96 S D, G33 K; G4 P in seconds)")
     READER = Lazy[type[Reader]](".reader:GrblhalReader")
     """Imported when a run first reads grblHAL (``Lazy``), as are the writer and the block syntax."""
     WRITER = Lazy[type[Writer]](".writer:GrblhalWriter")
+    LATHE_WRITER = Lazy[type[Writer]](".lathe_writer:GrblhalLatheWriter")
+    """The writer of a lathe program (``writer_class``)."""
     PIPELINE_FILE = "grblhal.xml"
     CYCLE_WORDS = rs274_cycle_words(CODES, ("L",))
     """R level, P dwell (seconds), L repeats."""
@@ -117,13 +127,24 @@ class Grblhal(GrblFamily):
     """M7 runs only with a driver that has mist coolant [V: gcode.c, ``hal.coolant_cap.mist``]: a set-up says
     ``<Controller mistCoolant="true">`` for such a build."""
     LOWERING = (write_tool_lengths, resolve_cutter_compensation, close_full_circles, cancel_cycles_alone,
-                stops_after_motion, subprograms_as_subs, comment_numbered_subs_after_end)
+                stops_after_motion, subprograms_as_subs, comment_numbered_subs_after_end, thread_feed_apart)
     """Rewrites into what grblHAL runs: a G43 H as ``G43.1 Z<length>`` where the build has no tool table
     (``postproc.grbl_family.lengths``); G41/G42 as the compensated path, where the source's rules are modelled;
     a full circle with an end point in its plane (grbl's arc rules, ``postproc.rs274.lean_controller``); a cycle
-    cancel beside an axis command in a block of its own (``cancels``: it is written as a bare G0); a moving block's spindle stop and coolant off after it (``postproc.rs274.order_of_execution``); ``M98`` subprograms as o-word subs written before the first call, on a build with expressions (``subprograms``); a numbered definition no call made a sub, left after the end, as comments (grblHAL reads only ``o<n> sub`` [V: ngc_flowctrl.c]: it was live code after the end). Not grbl's
+    cancel beside an axis command in a block of its own (``cancels``: it is written as a bare G0); a moving block's spindle stop and coolant off after it (``postproc.rs274.order_of_execution``); ``M98`` subprograms as o-word subs written before the first call, on a build with expressions (``subprograms``); a numbered definition no call made a sub, left after the end, as comments (grblHAL reads only ``o<n> sub`` [V: ngc_flowctrl.c]: it was live code after the end); a thread block's F on a line before it (the lathe writer writes K: ``postproc.rs274.ngc_lathe_writer.feed_apart``). Not grbl's
     G49 before motion: grblHAL's G49 is no axis command [V: gcode.c, "changed to match LinuxCNC behaviour in
     build 20210513"], nor its tool change pause (M6 exists)."""
+    MACHINE_TYPES = frozenset({"mill", "lathe"})
+    """Mills and lathes (the set-up's ``machineType``): a lathe set-up is grblHAL's lathe mode, ``$32``
+    (``lathe``)."""
+    DIAMETER_PROGRAMMING = True
+    """G7: X is a diameter (G8 a radius), per the set-up's ``xProgramming``; a translation writes ``G18 G7``
+    before its first block [V: gcode.c, G7/G8 set ``diameter_mode`` in lathe mode]."""
+    LATHE_FEED_AT_START = "per_min"
+    """grblHAL starts in G94 [K: grbl's power-on modes, ``gc_init``]."""
+    LATHE_TURRET = False
+    """A lathe tool is changed with M6 and its offsets applied by ``G43 H`` (``lathe``): ``T0101`` is written
+    ``T1 M6`` .. ``G43 H1`` (``postproc.cycles.lathe_lowering``)."""
     PATH_CONTROL = "cutting"
     """grblHAL always blends (junction deviation; ``ENABLE_PATH_BLENDING`` is off): G61 changes nothing."""
     CUTTER_COMPENSATION = False
@@ -143,6 +164,11 @@ class Grblhal(GrblFamily):
     """``( )`` and ``;`` comments, without a real-time character inside (``postproc.grbl_family.text``)."""
     LINE_RULE = Lazy[LineRule](".text:LINES")
     """Every line written is ASCII without real-time characters and keeps at most 256 characters."""
+
+    @classmethod
+    def writer_class(cls, ctx: Context) -> type[Writer] | None:
+        """``LATHE_WRITER`` for a lathe program (grblHAL's lathe mode), else ``WRITER``."""
+        return cls.LATHE_WRITER if ctx.lathe else cls.WRITER
 
     @classmethod
     def tool_table(cls, setup: MachineSetup) -> bool:

@@ -1,20 +1,23 @@
 """GrblhalBlockSyntax: the grbl family's block rules (``postproc.grbl_family.block_syntax``) with grblHAL's code
 table, and what a build may lack checked against the set-up where the program is read: G43 H needs the tool
 table (``<Controller toolTable="true">``), G95 a spindle with an encoder (``spindleSync``) [V: grblHAL core
-``gcode.c``: G43 needs ``grbl.tool_table.n_tools``, feed per revolution ``spindle->hal->get_data``]."""
+``gcode.c``: G43 needs ``grbl.tool_table.n_tools``, feed per revolution ``spindle->hal->get_data``]. On a lathe
+set-up G7/G8, G33 K and G96 S D/G97 are read as grblHAL's lathe mode runs them (``lathe``), elsewhere refused."""
 
 from __future__ import annotations
 
-from typing import ClassVar, Mapping
+from typing import Any, ClassVar, Mapping
 
 from postproc.context import Context
 from postproc.errors import ParseError
 from postproc.grbl_family.block_syntax import GrblFamilyBlockSyntax
-from postproc.ir import Block, FeedMode, ToolLengthOffset
+from postproc.ir import Block, FeedMode, Motion, ToolLengthOffset
+from postproc.rs274 import ngc_lathe
 from postproc.rs274.block_syntax import col_of_word
-from postproc.rs274.codes import CodeTable
+from postproc.rs274.codes import CodeTable, g_key
 
 from .codes import CODES, M_GROUPS, NO_M19
+from .lathe import GRBLHAL_SAID, NO_SYNC as NO_THREAD_SYNC, NOT_LATHE
 
 NO_TABLE = ("this grblHAL build has no tool table (G43 H needs N_TOOLS above 0 or a tool table plugin): a set-up "
             "with <Controller toolTable=\"true\"/> has one")
@@ -47,3 +50,29 @@ class GrblhalBlockSyntax(GrblFamilyBlockSyntax):
         mode = sections.get("FeedMode")
         if isinstance(mode, FeedMode) and mode.mode == "per_rev" and not ctx.setup.controller.spindle_sync:
             raise ParseError(NO_SYNC, ctx.at(block, col_of_word(block, "G", "95")))
+
+    def _g_code(self, ctx: Context, block: Block, num: str, codes: dict[str, Any], natives: list[str],
+                key: str | None = None) -> None:
+        """G7/G8, G33, G96/G97 only on a lathe set-up (``lathe``); G7/G8 read against its ``xProgramming``."""
+        code = g_key(num) if key is None else key
+        if code in ngc_lathe.MODES or code in ngc_lathe.LATHE_ONLY:
+            where = ctx.at(block, col_of_word(block, "G", num))
+            if not ctx.lathe:
+                raise ParseError(NOT_LATHE.format(num=num), where)
+            if code in ngc_lathe.MODES:
+                ngc_lathe.read_x_mode(block, ctx, num)
+                return
+            if code == "33" and not ctx.setup.controller.spindle_sync:
+                raise ParseError(NO_THREAD_SYNC, where)
+        super()._g_code(ctx, block, num, codes, natives, key)
+
+    def g_sections(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],
+                   used: set[str], cycle_block: bool) -> None:
+        for group, (_, kind, arg, num) in list(codes.items()):
+            if kind == "spindle_mode":  # G96 S D / G97 (``postproc.rs274.ngc_lathe``)
+                del codes[group]
+                ngc_lathe.read_spindle_mode(block, ctx, str(arg), num, values, used, GRBLHAL_SAID)
+        super().g_sections(block, ctx, codes, values, used, cycle_block)
+        motion = block.sections.get("Motion")
+        if isinstance(motion, Motion) and motion.mode == "thread":
+            ngc_lathe.read_thread(block, ctx, motion, values, used, GRBLHAL_SAID)

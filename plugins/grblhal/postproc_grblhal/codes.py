@@ -4,7 +4,7 @@ Rows are ``(spelling, modal group, kind, argument)`` (see ``postproc.rs274.codes
 parser (``gcode.c``, ``gc_execute_block``, github.com/grblHAL/core stored commit f80fc34) accepts [V]: grbl
 1.1's codes, and G43 (from the tool table), G59.1-G59.3 (nine work systems with ``COMPATIBILITY_LEVEL`` <= 1,
 the default), G81/G82 (run as RS274/NGC runs them, ``cycles``), G73/G83 (read as grblHAL runs them, ``pecking``), G95 (a spindle with an encoder),
-G98/G99, M6. grblHAL writes codes without leading zeros. What a build may lack is checked against the
+G98/G99, M6, and in lathe mode G7/G8, G33, G96/G97 (``lathe``). grblHAL writes codes without leading zeros. What a build may lack is checked against the
 set-up where it is read or written (``Grblhal``); codes a Fanuc or LinuxCNC program carries that grblHAL
 refuses, or runs by rules not modelled here, get a message saying why (``REFUSED_G``/``REFUSED_M``).
 """
@@ -18,6 +18,7 @@ ROWS = (
     ("G1", "01", "motion", "linear"),
     ("G2", "01", "motion", "cw"),
     ("G3", "01", "motion", "ccw"),
+    ("G33", "01", "motion", "thread"),
     ("G4", "00", "dwell", None),
     ("G17", "02", "plane", "XY"),
     ("G18", "02", "plane", "ZX"),
@@ -51,6 +52,8 @@ ROWS = (
     ("G93", "05", "feed_mode", "inverse_time"),
     ("G94", "05", "feed_mode", "per_min"),
     ("G95", "05", "feed_mode", "per_rev"),
+    ("G96", "96", "spindle_mode", "css"),
+    ("G97", "96", "spindle_mode", "rpm"),
     ("G98", "10", "return", "initial"),
     ("G99", "10", "return", "r"),
     ("M0", "", "program", "stop"),
@@ -70,7 +73,9 @@ ROWS = (
 takes its length from the Z word of its block; G61 is accepted and changes nothing (path blending is off
 in every build: ``ENABLE_PATH_BLENDING``, "do NOT enable" in ``config.h``); M6 is accepted by every build
 (``$341`` chooses a manual change, or ignores it; an ATC runs it); M7 needs a driver with mist coolant
-(``hal.coolant_cap.mist``); M19 is a row for a build with a user M code for it (the set-up says so)."""
+(``hal.coolant_cap.mist``); M19 is a row for a build with a user M code for it (the set-up says so). G33 (K the
+distance per revolution along the path) and G96 S D/G97 are read on a lathe set-up only, with G7/G8
+(``lathe``): grblHAL's lathe mode, ``$32``."""
 
 NATIVE_G: dict[str, str] = {
     "5": "cubic spline", "5.1": "quadratic spline", "10": "set offsets and tool data (G10 L1/L2/L10/L11/L20)",
@@ -84,13 +89,14 @@ NATIVE_G: dict[str, str] = {
 
 _NOT_RUN = ("grblHAL's parser accepts G85, G86 and G89 but its motion control runs only G73 and G81-G84 "
             "(motion_control.c mc_canned_drill), so the block would not move: refused")
-_LATHE = "grblHAL's lathe mode (G7/G8, G33, G76, G96/G97) is not modelled by this dialect"
+_G76 = ("grblHAL's G76 threading cycle (mc_thread, its LinuxCNC-like P I J K R Q H E L words) is not modelled by this "
+        "dialect: a translation writes another controller's threading cycle as G33 passes")
 REFUSED_G: dict[str, str] = {
     "84": ("grblHAL's G84 is experimental (a spindle with the at-speed capability reverses at the bottom, "
            "and P is required): not modelled, so a translation expands it"),
     "85": _NOT_RUN, "86": _NOT_RUN, "89": _NOT_RUN,
     "74": "grblHAL has no G74 (left-hand tapping cycle)",
-    "76": _LATHE, "7": _LATHE, "8": _LATHE, "33": _LATHE, "96": _LATHE, "97": _LATHE,
+    "76": _G76,
     "41": "cutter radius compensation (G41/G42) is off in grblHAL builds (CUTTER_COMP_ENABLE, experimental)",
     "42": "cutter radius compensation (G41/G42) is off in grblHAL builds (CUTTER_COMP_ENABLE, experimental)",
     "44": "grblHAL has no G44 (negative tool length offset)",

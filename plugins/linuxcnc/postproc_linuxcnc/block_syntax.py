@@ -16,13 +16,19 @@ from postproc.errors import ProgramError
 from postproc.expr import Expr
 from postproc.ir import Block, NativeCode, PathControl
 from postproc.rs274.codes import CodeTable, g_key
-from postproc.rs274.ngc_block_syntax import NgcWordBlockSyntax
+from postproc.rs274 import ngc_lathe as lathe
+from postproc.rs274.ngc_block_syntax import REAL_LETTERS, NgcWordBlockSyntax
 
-from . import arc_centres, lathe
+from . import arc_centres
 from .codes import CODES, M_GROUPS
 from .rigid_tap import MODE as RIGID_TAP, read_rigid_tap
+from .threading import MODE as THREAD_CYCLE, read_g76
 from .tool_entry import TABLES as TOOL_TABLES, read_tool_entry
 
+RS274_SAID = lathe.Said(s_missing='rs274: "S word missing with G96"',
+                        f_beside='rs274: "F word used with a g33/g33.1"',
+                        k_missing='rs274: "K word missing with g33/g33.1"')
+"""What rs274 2.9 says where the lathe words are refused [V]."""
 DYNAMIC_SIDES: dict[str, str] = {"41.1": "left", "42.1": "right"}
 """G41.1/G42.1 -> the side of the path."""
 _DYNAMIC_WORDS = frozenset("NDL")
@@ -43,6 +49,8 @@ class NgcBlockSyntax(NgcWordBlockSyntax):
     """[K: LinuxCNC G-code reference, G41/G42: "if there is no D word, the radius of the currently loaded
     tool is used"; V: rs274, T1 M6 then G41 offsets by tool 1's radius]."""
     CYCLE_CANCEL_WITH_MOTION: ClassVar[bool] = True
+    REAL_LETTERS: ClassVar[frozenset[str]] = REAL_LETTERS | {"E"}
+    """E: G76's taper length (``threading``); anywhere else an unused word."""
     M_GROUPS: ClassVar[dict[int, str]] = M_GROUPS
     DATA_TABLES: ClassVar[Mapping[int, tuple[str, int, int]]] = {
         2: ("work_offset", 0, 9), 1: ("tool_entry", 1, 2**31 - 1), 10: ("tool_entry_at_point", 1, 2**31 - 1),
@@ -81,24 +89,35 @@ class NgcBlockSyntax(NgcWordBlockSyntax):
 
     def _g_code(self, ctx: Context, block: Block, num: str, codes: dict[str, Any], natives: list[str],
                 key: str | None = None) -> None:
-        """G7/G8 are read against how X reads (``lathe.read_x_mode``), G33 and G96/G97 into lathe sections
-        on a lathe set-up; on a mill those stay verbatim (``toolpath`` and ``verify`` refuse them)."""
+        """G7/G8 are read against how X reads (``postproc.rs274.ngc_lathe.read_x_mode``: a lathe's
+        ``xProgramming``, a mill's radius), G33 and G96/G97 into lathe sections, G76 into its moves
+        (``threading``) on a lathe set-up; on a mill those stay verbatim (``toolpath`` and ``verify`` refuse them)."""
         code = g_key(num) if key is None else key
         if code in lathe.MODES:
             lathe.read_x_mode(block, ctx, num)
             return
-        if not ctx.lathe and code in lathe.LATHE_ONLY:
-            natives.append(code)  # G33, G96/G97 on a mill: verbatim, as before the lathe reading
+        if not ctx.lathe and (code in lathe.LATHE_ONLY or code == "76"):
+            natives.append(code)  # G33, G76, G96/G97 on a mill: verbatim, as before the lathe reading
             return
         super()._g_code(ctx, block, num, codes, natives, key)
 
+    def _check_cycle_words(self, block: Block, ctx: Context, values: dict[str, Any], cycle_block: bool) -> None:
+        """A lathe's G76 takes L (its tapers, ``threading``), no repeat count."""
+        if ctx.lathe and any(letter.upper() == "G" and g_key(num) == "76" for letter, num in block.words):
+            return
+        super()._check_cycle_words(block, ctx, values, cycle_block)
+
     def g_sections(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],
                    used: set[str], cycle_block: bool) -> None:
+        spring: dict[str, Any] = {}
         for group, (_, kind, arg, num) in list(codes.items()):
             if kind == "spindle_mode":  # G96 S D / G97 (``lathe``)
                 del codes[group]
-                lathe.read_spindle_mode(block, ctx, str(arg), num, values, used)
+                lathe.read_spindle_mode(block, ctx, str(arg), num, values, used, RS274_SAID)
+            elif arg == THREAD_CYCLE:  # G76: H spring passes, E/L its tapers (``threading``)
+                spring.update((letter, values.pop(letter)) for letter in ("H", "E", "L") if letter in values)
         super().g_sections(block, ctx, codes, values, used, cycle_block)
+        values.update(spring)
         if arc_centres.GROUP in codes or arc_centres.STATE_KEY in ctx.state.extra:
             arc_centres.apply_mode(block, ctx, codes)
         sections = block.sections
@@ -108,9 +127,11 @@ class NgcBlockSyntax(NgcWordBlockSyntax):
             _blending_tolerance(block, ctx, path, values, used)  # type: ignore[arg-type]
         motion = sections.get("Motion")
         if motion is not None and motion.mode == "thread":  # type: ignore[attr-defined]
-            lathe.read_thread(block, ctx, motion, values, used)  # type: ignore[arg-type]
+            lathe.read_thread(block, ctx, motion, values, used, RS274_SAID)  # type: ignore[arg-type]
         elif motion is not None and motion.mode == RIGID_TAP:  # type: ignore[attr-defined]
             read_rigid_tap(block, ctx, motion, values, used)  # type: ignore[arg-type]
+        elif motion is not None and motion.mode == THREAD_CYCLE:  # type: ignore[attr-defined]
+            read_g76(block, ctx, motion, values, used)  # type: ignore[arg-type]
 
     def _data_setting(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],
                       used: set[str]) -> bool:

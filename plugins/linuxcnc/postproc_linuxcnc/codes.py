@@ -5,8 +5,8 @@ codes without leading zeros (``G0``, ``M3``). The rows were copied from the Fanu
 changed where the same number means something else or does not exist: no G9 or G44, G76 is threading
 and G87/G88 follow the NIST RS274/NGC words and motion (kept verbatim, see ``NATIVE_G``); G59.1-G59.3,
 G61.1 and G93 are added; on a lathe set-up G33 (spindle-synchronised motion, K the distance per revolution),
-G96 S D/G97 (constant surface speed with its clamp) and G7/G8 read into lathe sections (``lathe``), on a
-mill they stay verbatim (``NATIVE_G``); G33.1 (rigid tapping) reads into ``RigidTap`` and G90.1/G91.1 (the arc centre
+G96 S D/G97 (constant surface speed with its clamp) and G7/G8 read into lathe sections (``lathe``), and G76 (the
+threading cycle) into its moves (``threading``); on a mill they stay verbatim (``NATIVE_G``); G33.1 (rigid tapping) reads into ``RigidTap`` and G90.1/G91.1 (the arc centre
 mode, kind ``arc_centres``, which no section carries) into offsets from the arc's start (``block_syntax``). G61 (exact path) and G61.1 (exact stop) both read as exact stop (the IR does
 not tell them apart); G61 is written. Sources: LinuxCNC ``docs/src/gcode/g-code.adoc`` and
 ``m-code.adoc``, and DIALECTS.md §2.1 "LinuxCNC / RS274-NGC baseline". G52 and G92-G92.3 are frame
@@ -24,6 +24,7 @@ ROWS = (
     ("G3", "01", "motion", "ccw"),
     ("G33", "01", "motion", "thread"),
     ("G33.1", "01", "motion", "rigid_tap"),
+    ("G76", "01", "motion", "ngc_thread_cycle"),
     ("G4", "00", "dwell", None),
     ("G17", "02", "plane", "XY"),
     ("G18", "02", "plane", "ZX"),

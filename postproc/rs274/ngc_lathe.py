@@ -1,6 +1,11 @@
-"""LinuxCNC's lathe words, read into neutral sections: ``G7``/``G8``, ``G96 S.. D..``/``G97`` and ``G33 K``.
+"""The RS274/NGC lathe words, read into neutral sections: ``G7``/``G8``, ``G96 S.. D..``/``G97`` and ``G33 K``.
+Shared by the controllers that spell them so (LinuxCNC, grblHAL in lathe mode): each passes what its own
+interpreter says where it refuses a word (``Said``).
 
-Each rule was checked with the packaged rs274 (2.9) [V], beside LinuxCNC ``docs/src/gcode/g-code.adoc``:
+Each rule was checked with the packaged rs274 (2.9) [V], beside LinuxCNC ``docs/src/gcode/g-code.adoc``;
+grblHAL's ``gcode.c`` (github.com/grblHAL/core, stored commit f80fc34) reads them alike [V] (its
+differences are refused by its plugin, or read here more strictly than grblHAL: a G33 without K, which
+grblHAL takes from the last G33, and an F beside G33, which it accepts):
 
 * ``G7`` (diameter mode) and ``G8`` (radius mode) say how X reads. The reading (and the translation of
   every other line) follows the set-up's ``xProgramming`` (a mill's: radius), so the one that agrees with
@@ -18,6 +23,7 @@ Each rule was checked with the packaged rs274 (2.9) [V], beside LinuxCNC ``docs/
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from typing import Any
 
 from postproc.context import Context
@@ -32,8 +38,21 @@ MODES = {"7": "diameter", "8": "radius"}
 """G7/G8 -> how X reads."""
 LATHE_ONLY = frozenset(("33", "96", "97"))
 """Codes the table reads into lathe sections on a lathe set-up only; a mill keeps them verbatim."""
-CLAMP_KEY = "linuxcnc.spindle_clamp"
+CLAMP_KEY = "ngc.spindle_clamp"
 """``ctx.state.extra`` key: the clamp of the last G96 (D), while one is in force."""
+
+
+@dataclass(frozen=True)
+class Said:
+    """What a controller's interpreter says where it refuses a lathe word, quoted in the reader's message."""
+
+    s_missing: str
+    """G96 without S."""
+    f_beside: str
+    """F in a G33 block."""
+    k_missing: str
+    """G33 without K."""
+
 
 
 def _col(block: Block, ctx: Context, num: str) -> int:
@@ -57,24 +76,24 @@ def read_x_mode(block: Block, ctx: Context, num: str) -> None:
 
 
 def read_spindle_mode(block: Block, ctx: Context, mode: str, num: str, values: dict[str, Any],
-                      used: set[str]) -> None:
+                      used: set[str], said: Said) -> None:
     """``G96 S.. [D..]`` or ``G97``: the mode, and on G96 its clamp."""
     extra = ctx.state.extra
     block.add(SpindleMode(mode))
     if mode != "css":
         return
     if "S" not in values:
-        raise ProgramError(f"G{num} needs S, the surface speed (rs274: \"S word missing with G96\")",
+        raise ProgramError(f"G{num} needs S, the surface speed ({said.s_missing})",
                            ctx.at(block, _col(block, ctx, num)))
     clamp = values.get("D")
     if clamp is None:
         if extra.get(CLAMP_KEY) is not None:
-            raise ProgramError(f"G{num} without D after a G96 with D: LinuxCNC lifts the spindle clamp, which "
-                               "the Fanuc-family clamp (G50 S) cannot say; write D again",
+            raise ProgramError(f"G{num} without D after one with D: the controller lifts the spindle clamp, which "
+                               "the Fanuc family's clamp cannot say; write D again",
                                ctx.at(block, _col(block, ctx, num)))
         return
     if isinstance(clamp, Expr):
-        raise ProgramError("a computed D in G96 is not supported (write the number)",
+        raise ProgramError(f"a computed D in G{num} is not supported (write the number)",
                            ctx.at(block, ctx.column_of(block, "D")))
     if clamp <= 0:
         raise ProgramError(f"G{num} D{clamp:g}: the spindle clamp must be positive",
@@ -84,28 +103,30 @@ def read_spindle_mode(block: Block, ctx: Context, mode: str, num: str, values: d
     block.add(SpindleClamp(float(clamp)))
 
 
-def read_thread(block: Block, ctx: Context, motion: Motion, values: dict[str, Any], used: set[str]) -> None:
+def read_thread(block: Block, ctx: Context, motion: Motion, values: dict[str, Any], used: set[str],
+                said: Said) -> None:
     """``G33``'s K -> the block's ``ThreadLead``; K and the refusals as rs274 makes them."""
     code = next((num for letter, num in block.words if letter.upper() == "G" and g_key(num) == "33"), None)
     col = _col(block, ctx, code) if code is not None else 1
+    name = f"G{code}" if code is not None else "the thread move"
     if "F" in values:
-        raise ProgramError("F beside G33 (rs274: \"F word used with a g33/g33.1\"; set the feed rate in a block "
+        raise ProgramError(f"F beside {name} ({said.f_beside}; set the feed rate in a block "
                            "before)", ctx.at(block, ctx.column_of(block, "F")))
     along = values.get("K")
     if along is None:
-        raise ProgramError("G33 needs K, the distance per spindle revolution (rs274: \"K word missing with "
-                           "g33/g33.1\")", ctx.at(block, col))
+        raise ProgramError(f"{name} needs K, the distance per spindle revolution ({said.k_missing})",
+                           ctx.at(block, col))
     used.add("K")
     if isinstance(along, Expr) or any(isinstance(v, Expr) for v in motion.axes.values()):
-        raise ProgramError("a computed word in G33 is not supported (write the numbers)", ctx.at(block, col))
+        raise ProgramError(f"a computed word in {name} is not supported (write the numbers)", ctx.at(block, col))
     if along <= 0:
-        raise ProgramError(f"G33 K{along:g}: the distance per revolution must be positive",
+        raise ProgramError(f"{name} K{along:g}: the distance per revolution must be positive",
                            ctx.at(block, ctx.column_of(block, "K")))
-    dx, dz = _travel(block, ctx, motion, col)
+    dx, dz = _travel(block, ctx, motion, col, name)
     block.add(ThreadLead(lead_along_major(float(along), dx, dz)))
 
 
-def _travel(block: Block, ctx: Context, motion: Motion, col: int) -> tuple[float, float]:
+def _travel(block: Block, ctx: Context, motion: Motion, col: int, name: str) -> tuple[float, float]:
     """The move's X travel (a radius) and Z travel; a start not yet known matters only for a taper."""
     state = ctx.state
     incremental = state.distance == "incremental"
@@ -127,6 +148,6 @@ def _travel(block: Block, ctx: Context, motion: Motion, col: int) -> tuple[float
     dx, dz = travel("X"), travel("Z")
     if dx is None or dz is None and dx != 0.0:
         axis = "X" if dx is None else "Z"
-        raise ProgramError(f"G33 moving X from a {axis} not yet known (program an absolute {axis} first)",
+        raise ProgramError(f"{name} moving X from a {axis} not yet known (program an absolute {axis} first)",
                            ctx.at(block, col))
     return (dx / 2.0 if ctx.diameter else dx), (dz or 0.0)

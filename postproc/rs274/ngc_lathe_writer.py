@@ -1,0 +1,213 @@
+"""Writing a lathe program in the RS274/NGC lathe words (LinuxCNC, grblHAL in lathe mode): the mode line,
+constant surface speed with its clamp, and G33. Each controller's lathe writer is a class of its own (picked
+by its ``writer_class`` for a lathe run), so a mill program keeps the family's fast lane (``postproc.fast``: it
+serves only a writer that overrides none of the word writer's block methods); it calls these helpers.
+
+The rules, each checked with rs274 (2.9) [V] (see ``ngc_lathe`` for the reading side); grblHAL's ``gcode.c``
+(stored commit f80fc34) runs them alike [V: G96 without D clamps at the spindle's maximum, G33's K is the
+planner's distance per revolution along the path]:
+
+* A translated lathe program starts with ``G18 G7`` (or ``G8`` when it programs radii): a LinuxCNC lathe's
+  start-up code may leave either mode, so the program says it (``LatheModes.preamble``).
+* ``G96 S.. D..``: the Fanuc-family clamp (``G50 S``) is a state of its own; LinuxCNC clamps only on the
+  G96 line, and a G96 without D lifts the clamp. So every G96 gets the clamp in force, and a new clamp
+  while constant surface speed is on is written as ``G96 S<the speed in force> D<clamp>`` (a clamp while it
+  is off waits for the next G96). G96 needs S: the surface speed in force is written where the block has
+  none.
+* A thread move is ``G33 X.. Z.. K..``, K the distance per revolution along the path
+  (``postproc.thread_lead``). G33 refuses an F beside it, so a thread block's F goes on a line of its own
+  before it (``feed_apart``, a lowering step); F is then the lead, as the source's F is. A thread whose
+  major axis is X (a face thread) is refused: LinuxCNC's K along such a path in diameter mode is not in
+  our sources [?].
+"""
+
+from __future__ import annotations
+
+from typing import Any, ClassVar, Iterator
+
+from postproc.context import Context
+from postproc.dialect import Dialect
+from postproc.expr import Expr
+from postproc.ir import Block, Motion
+from postproc.thread_lead import lead_along_path, major_is_z
+
+from .writer import WordWriter
+
+_QUIET = frozenset(("TapeMark", "ProgramStart", "Comments", "Sequence"))
+"""Sections of the lines that may stand before the mode line (the program's opening)."""
+
+
+def feed_apart(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """Lowering step: a thread block's F on a line of its own before it (rs274: "F word used with a
+    g33/g33.1"). Only a lathe program has thread moves."""
+    if not ctx.lathe:
+        return blocks
+    return _feed_apart(blocks)
+
+
+def _feed_apart(blocks: Iterator[Block]) -> Iterator[Block]:
+    for block in blocks:
+        sections = block.sections
+        motion = sections.get("Motion")
+        if isinstance(motion, Motion) and motion.mode == "thread" and "Feed" in sections:
+            first = Block(block.line, None, "\n")
+            first.sections = {"Feed": sections.pop("Feed")}
+            block.changed()
+            yield first
+        yield block
+
+
+class LatheModes:
+    """What the writer keeps of a lathe program: the clamp in force, constant surface speed, where X and Z
+    were written last (for a taper thread's K)."""
+
+    __slots__ = ("preamble", "clamp", "css", "x", "z", "diameter")
+
+    def __init__(self, ctx: Context, mode_line: str | None) -> None:
+        self.diameter = ctx.diameter
+        self.preamble: str | None = mode_line
+        """The mode line, until it is written before the first block that acts."""
+        self.clamp: float | None = None
+        self.css = False
+        self.x: float | None = None
+        self.z: float | None = None
+
+    def opening(self, block: Block, text: str | None) -> str | None:
+        """``text`` with the mode line before it when ``block`` is the first that acts."""
+        if self.preamble is None or not text or _QUIET.issuperset(block.sections):
+            return text
+        line, self.preamble = self.preamble, None
+        return line + "\n" + text
+
+    def follow(self, s: Motion, incremental: bool) -> None:
+        """Where the move leaves X and Z (None where it is not known)."""
+        axes = s.axes
+        if s.mode in ("home", "home2"):
+            if "X" in axes:
+                self.x = None
+            if "Z" in axes:
+                self.z = None
+            return
+        for axis in ("X", "Z"):
+            value = axes.get(axis)
+            if value is None:
+                continue
+            known = self.x if axis == "X" else self.z
+            new = None if isinstance(value, Expr) or incremental and known is None else \
+                float(value) + (known or 0.0) if incremental else float(value)
+            if axis == "X":
+                self.x = new
+            else:
+                self.z = new
+
+    def thread_k(self, s: Motion, lead: float, incremental: bool) -> float | str:
+        """G33's K for a move with major-axis lead ``lead``, or why it cannot be written."""
+        def travel(axis: str, known: float | None) -> float | None:
+            value = s.axes.get(axis)
+            if value is None:
+                return 0.0
+            if isinstance(value, Expr):
+                return None
+            if incremental:
+                return float(value)
+            return None if known is None else float(value) - known
+        dx, dz = travel("X", self.x), travel("Z", self.z)
+        if dx is None or dz is None and dx != 0.0:
+            return "a thread move from a position not known here (its K along the path needs the start)"
+        dx = dx / 2.0 if self.diameter else dx
+        dz = dz or 0.0
+        if not major_is_z(dx, dz):
+            return ("a thread whose major axis is X (a face thread: LinuxCNC's distance per revolution K along such "
+                    "a path in diameter mode is not in our sources)")
+        return lead_along_path(lead, dx, dz)
+
+
+def clamp_words(writer: Any, modes: LatheModes, rpm: float | Expr, block: Block) -> list[str]:
+    """A new clamp: ``G96 S.. D..`` while constant surface speed is on and the block does not set the mode,
+    else nothing yet (the next G96 writes it)."""
+    if isinstance(rpm, Expr):
+        writer.unsupported("a computed spindle clamp (the clamp D takes a number)", block)
+        return []
+    modes.clamp = float(rpm)
+    if not modes.css or "SpindleMode" in block.sections:
+        return []
+    words = [writer.code("spindle_mode", "css", "constant surface speed", block)]
+    if "SpindleSpeed" not in block.sections:
+        words.append(surface_speed(writer, block))
+    return [*words, "D" + writer.speed(modes.clamp)]
+
+
+def css_words(writer: Any, modes: LatheModes, mode: str, block: Block) -> list[str]:
+    """``G96 [S..] D..`` or ``G97``."""
+    modes.css = mode == "css"
+    words = [writer.code("spindle_mode", mode, "constant surface speed" if modes.css else "spindle speed in rpm",
+                         block)]
+    if not modes.css:
+        return words
+    clamp = block.sections.get("SpindleClamp")
+    if clamp is not None and not isinstance(clamp.rpm, Expr):  # type: ignore[attr-defined]
+        modes.clamp = float(clamp.rpm)  # type: ignore[attr-defined]
+    if "SpindleSpeed" not in block.sections:
+        words.append(surface_speed(writer, block))
+    if modes.clamp is not None:
+        words.append("D" + writer.speed(modes.clamp))
+    return words
+
+
+def surface_speed(writer: Any, block: Block) -> str:
+    """The S in force, for a G96 whose block has none (LinuxCNC: "S word missing with G96"; grblHAL: error
+    ``Status_GcodeValueWordMissing``)."""
+    rpm = writer.modal.spindle_rpm
+    if rpm is None:
+        writer.unsupported("constant surface speed with no surface speed S programmed (its code needs S)", block)
+    return "S" + str(writer.expression(rpm, block) if isinstance(rpm, Expr) else writer.speed(rpm))
+
+
+class NgcLatheWriting(WordWriter):
+    """The lathe words on a controller's word writer: ``class XLatheWriter(NgcLatheWriting, XWriter)``. The
+    mode line before the first block that acts when the program comes from another dialect, G96 with its clamp,
+    G33 with K."""
+
+    IGNORED: ClassVar[frozenset[str]] = frozenset(("ThreadLead",))
+    """A thread move's lead is written as its K (``motion_words``)."""
+    MODE_LINES: ClassVar[dict[str, str]]
+    """The controller's mode line, by how X reads ("diameter", "radius"): set by each controller's writer."""
+
+    def __init__(self, ctx: Context, source_dialect: str, target: type[Dialect] | None = None) -> None:
+        super().__init__(ctx, source_dialect, target)
+        foreign = source_dialect != self.DIALECT
+        self.lathe = LatheModes(ctx, self.MODE_LINES["diameter" if ctx.diameter else "radius"] if foreign else None)
+
+    def write_block(self, block: Block) -> str | None:
+        """A lathe program translated here opens with its mode line (``LatheModes.opening``)."""
+        return self.lathe.opening(block, super().write_block(block))
+
+    def motion_words(self, s: Any, block: Block) -> list[str]:
+        """A thread move is ``G33 .. K..`` (``LatheModes.thread_k``); every move is followed."""
+        lathe = self.lathe
+        incremental = self.modal.distance == "incremental" and not self.expanding
+        k: float | None = None
+        if s.mode == "thread":
+            given = block.sections.get("ThreadLead")
+            feed = block.sections.get("Feed")
+            lead = given.lead if given is not None else feed.value if feed is not None else self.modal.feed  # type: ignore[attr-defined]
+            if not isinstance(lead, (int, float)):
+                self.unsupported("a thread move without a known lead (F)", block)
+                return []
+            along = lathe.thread_k(s, float(lead), incremental)
+            if isinstance(along, str):
+                self.unsupported(along, block)
+                return []
+            k = along
+        words = super().motion_words(s, block)
+        lathe.follow(s, incremental)
+        if k is not None:
+            words.append("K" + self.length(k, block, "K"))
+        return words
+
+    def spindle_mode_words(self, s: Any, block: Block) -> list[str]:
+        return css_words(self, self.lathe, s.mode, block)
+
+    def spindle_clamp_words(self, s: Any, block: Block) -> list[str]:
+        """A spindle clamp goes with G96 (``clamp_words``)."""
+        return clamp_words(self, self.lathe, s.rpm, block)
