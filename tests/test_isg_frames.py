@@ -87,7 +87,7 @@ def test_a_plane_change_ends_the_rotation_with_a_warning() -> None:
 
 def test_what_is_not_settled_or_not_allowed_is_refused() -> None:
     assert "Z belongs in the next block" in _errors(HEAD + "G68 R30 X0 Y0 Z5\nM30\n")[0]
-    assert "only in G17" in _errors(HEAD + "G18\nG68 R30 Z0 X0\nM30\n")[0]
+    assert "only in the XY plane" in _errors(HEAD + "G18\nG68 R30 Z0 X0\nM30\n")[0]
     assert "without its centre while a rotation is on" in _errors(HEAD + "G68 R30 X0 Y0\nG68 R40\nM30\n")[0]
     assert "with cutter compensation on" in _errors(
         HEAD + "D1\nG41 G01 X10 Y0 F100\nG68 R30 X0 Y0\nG01 X20\nG40 G01 X0 Y0\nM30\n")[0]

@@ -388,7 +388,7 @@ class FrameEvaluator:
         plane = self.modal.plane
         if plane != "XY":
             raise ProgramError(f"{change.describe()} in the {plane} plane is not simulated (the sense of a rotation "
-                               "there is not settled [?]): only in G17")
+                               "there is not settled [?]): only in the XY plane")
         if frame.rotation is not None and ("X" not in words or "Y" not in words):
             raise ProgramError(f"{change.describe()} without its centre while a rotation is on: whether the current "
                                "position is read turned is not settled [?]: program X and Y")
