@@ -7,6 +7,7 @@ from __future__ import annotations
 from typing import Callable
 
 from postproc.comments import CommentSyntax
+from postproc.compensation.rules import FANUC_A
 from postproc.dialect import Dialect, Lazy, Reader
 from postproc.setup.machine_setup import MachineSetup
 from postproc.syntax import Pipeline
@@ -74,6 +75,9 @@ class Fanuc(Dialect):
     set-up's ``<Controller startMotion="linear"/>``) [K: Fanuc 0i-F operator's manual, G code list notes;
     cnc.wiki "Fanuc Parameter 3402"]."""
     LATHE_PIPELINE_FILE = "fanuc_lathe.xml"
+    CUTTER_RULES = FANUC_A
+    """Cutter compensation C with start-up type A, parameter SUP (5003#0) = 0, the default
+    (``postproc.compensation.rules``, where each rule is tagged with its source)."""
     LOWERING = (stops_before_motion,)
     """A spindle stop or coolant off that the source made before its block's motion goes in a block of
     its own before it (Fanuc makes them after the motion)."""

@@ -53,7 +53,7 @@ from ..ir import (Block, CutterCompensation, DataSetting, DistanceMode, Feed, Fe
 from ..compensation.cutter_radius import CutterRadius, Item, Segment
 from ..compensation.dynamic import DynamicCutterCompensation
 from ..compensation.nose import TIPS, mirrored
-from ..compensation.rules import CutterRules
+from ..compensation.rules import CutterRules, cutter_for
 from ..compensation.tool_table import ToolTable
 from ..state import PLANE_AXES
 from .inverse_time import move_length
@@ -154,7 +154,7 @@ class _Resolver:
         """The output was switched to G94 for a resolved stretch under G93 (G93 is due back)."""
         self.length_register: int | Expr | None = None
         """The tool length register in force (None: no length offset)."""
-        self.cutter = CutterRadius(rules, self._release)
+        self.cutter = cutter_for(rules, self._release)
         self.table = ToolTable(ctx.setup)
         self.scale = 1.0
         """mm per program unit."""

@@ -12,7 +12,7 @@ from mypy_extensions import mypyc_attr
 from ..block_rules import NO_FEED, ArcError, arc_centre
 from ..compensation.cutter_radius import CutterRadius, Item, Segment
 from ..compensation.nose import TIPS, mirrored
-from ..compensation.rules import CutterRules
+from ..compensation.rules import CutterRules, cutter_for
 from ..compensation.tool_length import AXIS as _AXIS, ToolLength
 from ..compensation.tool_table import ToolTable
 from ..context import Context
@@ -102,7 +102,7 @@ class Moves:
         self.length = ToolLength(self.tools)
         self.lathe_shift: dict[str, float] = {}
         """The lathe tool offset in force (``lathe_offset``): mm added to the programmed X (a radius) and Z."""
-        self.cutter = None if cutter_rules is None else CutterRadius(cutter_rules, self._release)
+        self.cutter = None if cutter_rules is None else cutter_for(cutter_rules, self._release)
         """Cutter radius compensation, when the dialect's rules are known (else it stays a setting)."""
         self.compensating = False
         """Moves go through ``postproc.compensation`` (an offset is in force, a move waits in the cutter
