@@ -57,6 +57,7 @@ from ..compensation.rules import CutterRules, cutter_for
 from ..compensation.tool_table import ToolTable
 from ..state import PLANE_AXES
 from .inverse_time import move_length
+from .rule_trial import STRETCH_LIMIT, RuleTrial
 
 Keeps = Callable[["_Resolver", CutterCompensation], bool]
 """Whether the target writes a G41/G42 itself (given the resolver, for the tool data it tracks)."""
@@ -100,14 +101,17 @@ def resolve_dynamic_cutter_compensation(blocks: Iterator[Block], ctx: Context,
     rules: CutterRules | None = ctx.cutter_rules
     if ctx.dialect == target.NAME or rules is None:
         return blocks
-    keeps = _native if target.CUTTER_COMPENSATION and not _rules_differ(rules, target) else None
-    return _Resolver(ctx, rules, keeps, _takes_diameters(ctx, target)).run(blocks)
+    differ = _rules_differ(rules, target)
+    keeps = _native if target.CUTTER_COMPENSATION and not differ else None
+    trial = target.CUTTER_RULES if target.CUTTER_COMPENSATION and differ else None
+    return _Resolver(ctx, rules, keeps, _takes_diameters(ctx, target), trial).run(blocks)
 
 
 def _rules_differ(rules: CutterRules, target: type[Dialect]) -> bool:
     """The target compensates by rules of its own that are modelled and not the source's (NIST version 3's
-    entry move and inside corners against LinuxCNC's): its G41/G42 would cut another path, so the source's
-    compensated path is written as moves."""
+    entry move and inside corners against LinuxCNC's, Fanuc's straight outer corners against LinuxCNC's
+    arcs): its G41/G42 may cut another path, so each stretch is tried under both (``rule_trial``) and
+    written as the source's compensated moves where the paths differ."""
     theirs: CutterRules | None = target.CUTTER_RULES
     return theirs is not None and theirs != rules
 
@@ -134,6 +138,11 @@ def _full_circle(motion: Motion) -> bool:
     return motion.mode in ("cw", "ccw") and bool(motion.center)
 
 
+def _stop_and_cancel(cutter: CutterRadius) -> None:
+    cutter.stop()
+    cutter.cancel()
+
+
 def _native(resolver: "_Resolver", cc: CutterCompensation) -> bool:
     return True
 
@@ -141,7 +150,8 @@ def _native(resolver: "_Resolver", cc: CutterCompensation) -> bool:
 class _Resolver:
     """The compensation state of one translation, and the blocks it has released."""
 
-    def __init__(self, ctx: Context, rules: CutterRules, keeps: Keeps | None = None, diameters: bool = False) -> None:
+    def __init__(self, ctx: Context, rules: CutterRules, keeps: Keeps | None = None, diameters: bool = False,
+                 trial: CutterRules | None = None) -> None:
         self.ctx = ctx
         self.diameters = diameters
         """X words are diameters in the blocks (compensation on a lathe is then refused)."""
@@ -177,6 +187,14 @@ class _Resolver:
         """A queued move (by ``id``) -> its block, and whether it was written in G91."""
         self.out: list[Block] = []
         self.failed = False
+        self.trial_rules = trial
+        """The target's own rules, when modelled and not the source's: each stretch is tried under both."""
+        self.trial: RuleTrial | None = None
+        """The stretch being tried (its blocks held back until it ends)."""
+        self.stretch: list[tuple[Block, dict[str, Section], str | None]] = []
+        """The tried stretch's blocks as read (sections and text), to write them native again."""
+        self.stretch_out: list[Block] = []
+        """The tried stretch's blocks as resolved."""
 
     def run(self, blocks: Iterator[Block]) -> Iterator[Block]:
         idle = True
@@ -198,6 +216,8 @@ class _Resolver:
                     self._back_to_inverse_time(block)
                 yield block
                 continue
+            if not self.failed and self.trial_rules is not None:
+                self._try(block)
             if not self.failed:
                 try:
                     self.block(block)
@@ -207,16 +227,53 @@ class _Resolver:
                     self.out.append(block)
             else:
                 self.out.append(block)
+            idle = self.failed or self._idle()
+            if self.trial is not None:
+                self.stretch_out.extend(self.out)
+                self.out.clear()
+                if idle or len(self.stretch) > STRETCH_LIMIT:
+                    yield from self._tried(idle and not self.failed)
             if self.out:
                 yield from self.out
                 self.out.clear()
-            idle = self.failed or self._idle()
         if not self.failed:
             try:
                 self.cutter.finish()
             except PostprocError as err:
                 self.ctx.diagnostics.error(err)
+        if self.trial is not None:
+            self.stretch_out.extend(self.out)
+            self.out.clear()
+            yield from self._tried(not self.failed)
         yield from self.out
+
+    # -- a stretch tried under the target's rules ------------------------------------------------------
+    def _try(self, block: Block) -> None:
+        """Hold a block of a stretch compensated by register (a stretch by a diameter is always resolved)."""
+        sections = block.sections
+        if self.trial is None:
+            cc = sections.get("CutterCompensation")
+            if not (self._idle() and isinstance(cc, CutterCompensation) and cc.mode != "off"
+                    and "DynamicCutterCompensation" not in sections):
+                return
+            assert self.trial_rules is not None
+            self.trial = RuleTrial(self.trial_rules)
+        self.stretch.append((block, dict(sections), block.text))
+
+    def _tried(self, decided: bool) -> list[Block]:
+        """The stretch's blocks: as read where both rules cut the same path, else as resolved."""
+        trial, stretch, resolved = self.trial, self.stretch, self.stretch_out
+        self.trial, self.stretch, self.stretch_out = None, [], []
+        assert trial is not None
+        if not (decided and trial.same()):
+            return resolved
+        for block, sections, text in stretch:
+            block.sections, block.text = sections, text
+        return [block for block, _, _ in stretch]
+
+    def _mirror(self, call: Callable[[CutterRadius], None]) -> None:
+        if self.trial is not None:
+            self.trial.mirror(call)
 
     # -- one block -----------------------------------------------------------------------------------
     def block(self, block: Block) -> None:
@@ -243,6 +300,7 @@ class _Resolver:
             block.changed()
             if cc.mode == "off":
                 self.cutter.cancel()
+                self._mirror(lambda cutter: cutter.cancel())
             else:
                 self._lathe_check("cutter compensation")
                 register = self._register(cc.register)
@@ -252,6 +310,10 @@ class _Resolver:
                     self.cutter.axes = PLANE_AXES[self.plane]
                     self._entry_start()
                 self.cutter.start(cc.mode, radius, self.plane, (float(tip[0]), float(tip[1])))
+                if self.trial is not None:
+                    plane, mode = self.plane, cc.mode
+                    self.trial.cutter.sweep_slack = self.cutter.sweep_slack
+                    self._mirror(lambda cutter: cutter.start(mode, radius, plane, (float(tip[0]), float(tip[1]))))
         if (isinstance(dynamic, DynamicCutterCompensation) or isinstance(cc, CutterCompensation)) and not sections:
             return  # the block only turned compensation on or off: nothing is left to write
         if self._idle():
@@ -268,13 +330,16 @@ class _Resolver:
             raise UnsupportedError(f"motion '{motion.mode}' with cutter compensation on cannot be resolved")
         else:
             self.cutter.event({"block": block})
+            self._mirror(lambda cutter: cutter.event({}))
         control = sections.get("ProgramControl")
         if isinstance(control, ProgramControl):
             if control.kind in ("stop", "optional_stop"):
                 self.cutter.stop()  # a stop writes the queued move at its compensated end [V]
+                self._mirror(lambda cutter: cutter.stop())
             elif control.kind in ("end", "end_rewind"):
                 self.cutter.stop()
                 self.cutter.cancel()
+                self._mirror(_stop_and_cancel)
 
     def _modal(self, sections: dict[str, Section]) -> None:
         units = sections.get("Units")
@@ -429,9 +494,13 @@ class _Resolver:
             seg.centre = seg.ccentre = c
             seg.turn = 1 if kind == "ccw" else -1
             self._per_minute(block, kind, target, c)
+            if self.trial is not None:
+                self.trial.move(seg, start)
             self.cutter.arc(seg, start)
         else:
             self._per_minute(block, kind, target, None)
+            if self.trial is not None:
+                self.trial.move(seg, start)
             self.cutter.line(seg, start)
         self.pos = target
 
@@ -469,6 +538,8 @@ class _Resolver:
 
     # -- what the compensation releases --------------------------------------------------------------
     def _release(self, item: Item) -> None:
+        if self.trial is not None:
+            self.trial.record(item)
         if not isinstance(item, Segment):
             self.out.append(item["block"])
             return

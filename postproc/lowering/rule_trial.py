@@ -1,0 +1,82 @@
+"""Whether a compensated stretch cuts the same path under the target's cutter compensation rules as under
+the source's: the resolver (``cutter_compensation``) runs the target's rules beside the source's on the
+same programmed moves, and keeps the stretch's G41/G42 native where every compensated move ends at the
+same point (and an arc about the same centre); else the source's path is written as moves.
+
+A Fanuc contour whose corners are all inner or tangent, entered and left along its own direction, cuts
+the same path under LinuxCNC's rules (inner corners meet, start-up and cancel square to the move), so its
+G41/G42 stays; an outer corner is an arc about the corner under LinuxCNC's and straight under Fanuc's, so
+a stretch with one is written as moves. A stretch longer than ``STRETCH_LIMIT`` blocks is resolved
+without trial (the blocks it holds back are bounded).
+"""
+
+from __future__ import annotations
+
+import copy
+import math
+from typing import Any, Callable
+
+from ..compensation.cutter_radius import CutterRadius, Item, Segment
+from ..compensation.rules import CutterRules, cutter_for
+from ..errors import PostprocError
+
+SAME_POINT = 1e-6
+"""mm within which two compensated points are one."""
+STRETCH_LIMIT = 10_000
+"""Most blocks of one compensated stretch held back to decide whether it stays native."""
+
+Mark = tuple[str, Any, Any]
+
+
+def _mark(item: Item) -> Mark | None:
+    if not isinstance(item, Segment):
+        return None
+    return item.kind, item.xy, item.ccentre if item.turn != 0 else None
+
+
+class RuleTrial:
+    """The target's rules run beside the source's over one compensated stretch."""
+
+    def __init__(self, rules: CutterRules) -> None:
+        self.ours: list[Mark] = []
+        self.theirs: list[Mark] = []
+        self.failed = False
+        """The target's rules refuse the stretch (or cannot be simulated): it is written as moves."""
+        self.cutter: CutterRadius = cutter_for(rules, self._release)
+
+    def _release(self, item: Item) -> None:
+        mark = _mark(item)
+        if mark is not None:
+            self.theirs.append(mark)
+
+    def record(self, item: Item) -> None:
+        """A move the source's rules released."""
+        mark = _mark(item)
+        if mark is not None:
+            self.ours.append(mark)
+
+    def mirror(self, call: Callable[[CutterRadius], None]) -> None:
+        """Run the same step under the target's rules."""
+        if self.failed:
+            return
+        try:
+            call(self.cutter)
+        except PostprocError:
+            self.failed = True
+
+    def move(self, seg: Segment, start: tuple[float, float]) -> None:
+        twin = copy.copy(seg)
+        self.mirror(lambda cutter: cutter.line(twin, start) if twin.turn == 0 else cutter.arc(twin, start))
+
+    def same(self) -> bool:
+        """Every compensated move of the stretch ends at the same point under both rules."""
+        self.mirror(lambda cutter: cutter.finish())
+        if self.failed or len(self.ours) != len(self.theirs):
+            return False
+        return all(a[0] == b[0] and _near(a[1], b[1]) and _near(a[2], b[2]) for a, b in zip(self.ours, self.theirs))
+
+
+def _near(a: Any, b: Any) -> bool:
+    if a is None or b is None:
+        return a is b
+    return bool(math.dist(a, b) <= SAME_POINT)
