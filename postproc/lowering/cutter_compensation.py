@@ -57,7 +57,7 @@ from ..compensation.rules import CutterRules, cutter_for
 from ..compensation.tool_table import ToolTable
 from ..state import PLANE_AXES
 from .inverse_time import move_length
-from .rule_trial import STRETCH_LIMIT, RuleTrial
+from .rule_trial import STAND_IN_RADIUS, STRETCH_LIMIT, RuleTrial
 
 Keeps = Callable[["_Resolver", CutterCompensation], bool]
 """Whether the target writes a G41/G42 itself (given the resolver, for the tool data it tracks)."""
@@ -101,18 +101,18 @@ def resolve_dynamic_cutter_compensation(blocks: Iterator[Block], ctx: Context,
     rules: CutterRules | None = ctx.cutter_rules
     if ctx.dialect == target.NAME or rules is None:
         return blocks
-    differ = _rules_differ(rules, target)
+    differ = _rules_differ(rules, target, ctx)
     keeps = _native if target.CUTTER_COMPENSATION and not differ else None
-    trial = target.CUTTER_RULES if target.CUTTER_COMPENSATION and differ else None
+    trial = target.cutter_rules(ctx.setup) if target.CUTTER_COMPENSATION and differ else None
     return _Resolver(ctx, rules, keeps, _takes_diameters(ctx, target), trial).run(blocks)
 
 
-def _rules_differ(rules: CutterRules, target: type[Dialect]) -> bool:
+def _rules_differ(rules: CutterRules, target: type[Dialect], ctx: Context) -> bool:
     """The target compensates by rules of its own that are modelled and not the source's (NIST version 3's
     entry move and inside corners against LinuxCNC's, Fanuc's straight outer corners against LinuxCNC's
     arcs): its G41/G42 may cut another path, so each stretch is tried under both (``rule_trial``) and
     written as the source's compensated moves where the paths differ."""
-    theirs: CutterRules | None = target.CUTTER_RULES
+    theirs: CutterRules | None = target.cutter_rules(ctx.setup)
     return theirs is not None and theirs != rules
 
 
@@ -173,6 +173,8 @@ class _Resolver:
         self.work_offset = 1
         self.selected: int | None = None
         self.spindle_tool: int | None = None
+        self.last_register: int | None = None
+        """The cutter compensation register programmed last (``register_absent="modal"``)."""
         self.pos: dict[str, float | None] = {"X": None, "Y": None, "Z": None}
         """The programmed point, mm (None: not known since the origin moved or a reference return)."""
         self.at: tuple[float, float] = (0.0, 0.0)
@@ -222,9 +224,13 @@ class _Resolver:
                 try:
                     self.block(block)
                 except PostprocError as err:
-                    self.ctx.diagnostics.error(err.located(self.ctx.at(block)) if err.location is None else err)
+                    located = err.located(self.ctx.at(block)) if err.location is None else err
                     self.failed = True  # the queue no longer matches the program: nothing more is resolved
-                    self.out.append(block)
+                    if self.trial is not None and isinstance(err, UnsupportedError):
+                        self._untried(located)
+                    else:
+                        self.ctx.diagnostics.error(located)
+                        self.out.append(block)
             else:
                 self.out.append(block)
             idle = self.failed or self._idle()
@@ -266,10 +272,33 @@ class _Resolver:
         self.trial, self.stretch, self.stretch_out = None, [], []
         assert trial is not None
         if not (decided and trial.same()):
-            return resolved
+            if trial.missing is None:
+                return resolved
+            self.ctx.diagnostics.error(trial.missing)  # moves with a stand-in radius: none is written
         for block, sections, text in stretch:
             block.sections, block.text = sections, text
         return [block for block, _, _ in stretch]
+
+    def _untried(self, err: PostprocError) -> None:
+        """The source's rules cannot be simulated in a tried stretch: its G41/G42 stay as written (the
+        target has its own), the path unchecked; nothing more is resolved."""
+        self.ctx.diagnostics.warn(f"{err.message}: cutter compensation is kept as written, its path under the "
+                                  "target's own rules unchecked", err.location)
+        for block, sections, text in self.stretch:
+            block.sections, block.text = sections, text
+        self.out = [block for block, _, _ in self.stretch]
+        self.trial, self.stretch, self.stretch_out = None, [], []
+
+    def _radius(self, register: int, block: Block) -> float:
+        """The register's radius; in a tried stretch an unknown one is a stand-in, and an error only where
+        the rules' paths differ (the path is then written as moves, which needs the radius)."""
+        try:
+            return self.table.radius(register)
+        except PostprocError as err:
+            if self.trial is None:
+                raise
+            self.trial.missing = err.located(self.ctx.at(block)) if err.location is None else err
+            return STAND_IN_RADIUS
 
     def _mirror(self, call: Callable[[CutterRadius], None]) -> None:
         if self.trial is not None:
@@ -304,7 +333,7 @@ class _Resolver:
             else:
                 self._lathe_check("cutter compensation")
                 register = self._register(cc.register)
-                radius = self.table.radius(register)
+                radius = self._radius(register, block)
                 tip = TIPS[self.table.tip(register)] if self._nose() else (0, 0)
                 if self._idle():
                     self.cutter.axes = PLANE_AXES[self.plane]
@@ -396,11 +425,17 @@ class _Resolver:
     def _register(self, register: int | Expr | None) -> int:
         if isinstance(register, Expr):
             raise UnsupportedError("cutter compensation with a computed register cannot be resolved")
+        if register is None and self.rules.register_absent == "modal":
+            if self.last_register is None:
+                raise ProgramError("cutter compensation without its register takes the register programmed last, "
+                                   "and none was: program D")
+            return self.last_register
         if register is None:
             if self.rules.register_absent != "tool" or self.spindle_tool is None:
                 raise ProgramError("cutter compensation without its register takes the tool in the spindle, which "
                                    "is not known here (no tool change before it): program its register")
             register = self.spindle_tool
+        self.last_register = register
         return register
 
     # -- positions -----------------------------------------------------------------------------------

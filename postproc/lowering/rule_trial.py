@@ -22,6 +22,11 @@ from ..errors import PostprocError
 
 SAME_POINT = 1e-6
 """mm within which two compensated points are one."""
+STAND_IN_RADIUS = 1.0
+"""mm: the radius a stretch is tried with when the set-up lacks its register's. Which corners are inner,
+outer or straight does not depend on the radius, nor do the rules' constructions, so two rules that agree
+for it agree for the true radius; where they differ the path must be written, which needs the radius
+(then a located error naming the register)."""
 STRETCH_LIMIT = 10_000
 """Most blocks of one compensated stretch held back to decide whether it stays native."""
 
@@ -43,6 +48,8 @@ class RuleTrial:
         self.failed = False
         """The target's rules refuse the stretch (or cannot be simulated): it is written as moves."""
         self.cutter: CutterRadius = cutter_for(rules, self._release)
+        self.missing: PostprocError | None = None
+        """The set-up lacks a register's radius: the stretch was tried with ``STAND_IN_RADIUS``."""
 
     def _release(self, item: Item) -> None:
         mark = _mark(item)

@@ -112,6 +112,8 @@ class Moves:
         self.out: Callable[[Event], None] = _nowhere
         """Where released events go (the ``emit`` of the block being run)."""
         self.spindle_tool: int | None = setup.machine.start_tool
+        self.cutter_register: int | None = None
+        """The cutter compensation register programmed last (a Fanuc G41 without D reads it)."""
         """The tool the last tool change put in the spindle (before any: the set-up's ``startTool``, None:
         the machine's, unknown)."""
         self.sync: float | None = None
@@ -293,8 +295,13 @@ class Moves:
     def _cutter_register(self, block: Block, register: int | None) -> int:
         """The register a G41/G42 reads: its own, or by the rules the spindle tool's (LinuxCNC). The plane
         is checked by ``CutterRadius.start`` (``CutterRules.planes``)."""
+        assert self.cutter is not None
+        if register is None and self.cutter.rules.register_absent == "modal":
+            if self.cutter_register is None:
+                raise ProgramError("cutter compensation without its register takes the register programmed "
+                                   "last, and none was: program D", self._at(block))
+            return self.cutter_register
         if register is None:
-            assert self.cutter is not None
             if self.cutter.rules.register_absent != "tool":
                 raise UnsupportedError("cutter compensation without its register cannot be simulated",
                                        self._at(block))
@@ -303,6 +310,7 @@ class Moves:
                                    "is not known here (no tool change before it): program its register",
                                    self._at(block))
             register = self.spindle_tool
+        self.cutter_register = register
         return register
 
     def _cutter_radius(self, block: Block, register: int) -> float:
