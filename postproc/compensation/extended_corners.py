@@ -35,6 +35,7 @@ from typing import Any, Callable
 from ..errors import ProgramError, UnsupportedError
 from .cutter_radius import CutterRadius, Item, Point, Segment, find_turn
 from .rules import CutterRules
+from ..state import PLANE_AXES
 
 STRAIGHT = 1e-6
 """Radians within which two directions make no corner (the second move goes straight on)."""
@@ -70,6 +71,13 @@ class ExtendedCorners(CutterRadius):
 
     # -- state -------------------------------------------------------------------------------------
     def start(self, side: str, radius: float, plane: str = "XY", tip: Point = (0.0, 0.0)) -> None:
+        if self.side is not None:
+            if radius < 0.0:
+                side, radius = ("right" if side == "left" else "left"), -radius
+            if (side, radius, PLANE_AXES[plane]) == (self.side, self.radius, self.axes):
+                return  # [K] G41 in G41 mode with the same offset: the mode goes on
+            raise UnsupportedError(f"a change of cutter compensation side or offset while it is on cannot be "
+                                   f"simulated under the rules of {self.rules.name} (cancel it first)")
         if self.prev is not None:
             raise UnsupportedError(f"cutter compensation turned on again before the move after a cancel cannot be "
                                    f"simulated under the rules of {self.rules.name}")

@@ -271,7 +271,7 @@ class _Resolver:
         trial, stretch, resolved = self.trial, self.stretch, self.stretch_out
         self.trial, self.stretch, self.stretch_out = None, [], []
         assert trial is not None
-        if not (decided and trial.same()):
+        if not (decided and trial.same()) and not (trial.failed and trial.missing is not None):
             if trial.missing is None:
                 return resolved
             self.ctx.diagnostics.error(trial.missing)  # moves with a stand-in radius: none is written
@@ -324,6 +324,8 @@ class _Resolver:
             tip = TIPS[mirrored(dynamic.orientation or 0)] if self._nose() else (0, 0)
             self.cutter.start(dynamic.mode, dynamic.radius(self.scale), self.plane,  # negative: the other side
                               (float(tip[0]), float(tip[1])))
+        elif isinstance(cc, CutterCompensation) and cc.mode == "off" and self._idle():
+            pass  # a G40 with nothing to cancel: written as it is (grbl has G40)
         elif isinstance(cc, CutterCompensation):
             del sections["CutterCompensation"]
             block.changed()
