@@ -13,6 +13,8 @@ import math
 from typing import Any
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from postproc.compensation.cutter_radius import Segment
 from postproc.compensation.rules import FANUC_A, FANUC_B, cutter_for
@@ -179,3 +181,85 @@ def test_what_type_b_leaves_unread_is_refused_by_name() -> None:
 def test_a_move_that_turns_back_on_itself_is_an_alarm() -> None:
     with pytest.raises(ProgramError, match="turns back on itself"):
         _run(FANUC_A, "left", [(0.0, 0.0), (10.0, 0.0), (20.0, 0.0), (5.0, 0.0)])
+
+
+# -- properties over random convex contours ---------------------------------------------------------------
+
+def _contour(angles: list[float], clockwise: bool) -> list[tuple[float, float]]:
+    """A convex polygon on a circle of radius 20 (corners at ``angles``, degrees), closed, entered from the
+    centre and run once round, then on along its first side."""
+    corners = [(20 * math.cos(math.radians(a)), 20 * math.sin(math.radians(a))) for a in sorted(set(angles))]
+    if clockwise:
+        corners.reverse()
+    return corners + [corners[0], corners[1]]
+
+
+def _distance_to_line(p: tuple[float, float], a: tuple[float, float], b: tuple[float, float]) -> float:
+    """Signed: positive on the left of a->b."""
+    dx, dy = b[0] - a[0], b[1] - a[1]
+    return (dx * (p[1] - a[1]) - dy * (p[0] - a[0])) / math.hypot(dx, dy)
+
+
+def _distance_to_segment(p: tuple[float, float], a: tuple[float, float], b: tuple[float, float]) -> float:
+    dx, dy = b[0] - a[0], b[1] - a[1]
+    t = max(0.0, min(1.0, ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / (dx * dx + dy * dy)))
+    return math.dist(p, (a[0] + t * dx, a[1] + t * dy))
+
+
+def _compensated(path: list[tuple[float, float]], side: str) -> list[tuple[Segment, tuple[float, float]]]:
+    """Each released move with the programmed move it belongs to (its end), radius 0.5."""
+    out: list[Segment] = []
+    cutter = cutter_for(FANUC_A, out.append)
+    cutter.start(side, 0.5)
+    cutter.line(Segment("feed", {}, {"X": path[0][0], "Y": path[0][1], "Z": 0.0}), (0.0, 0.0))
+    for a, b in zip(path, path[1:]):
+        cutter.line(Segment("feed", {}, {"X": b[0], "Y": b[1], "Z": 0.0}), a)
+    cutter.stop()
+    return [(s, (s.end["X"], s.end["Y"])) for s in out]
+
+
+def _gaps(angles: list[float]) -> list[float]:
+    ordered = sorted(angles)
+    return [b - a for a, b in zip(ordered, ordered[1:] + [ordered[0] + 360.0])]
+
+
+ANGLES = st.lists(st.integers(0, 17).map(lambda k: k * 20.0), min_size=3, max_size=18,
+                  unique=True).filter(lambda a: max(_gaps(a)) <= 160.0)
+"""Corners at least 20 and at most 160 degrees apart on the circle (the centre inside): sides of 6.9 mm or
+more, corners of 20 degrees or more. Inside, a side is cut short by r (cot(A/2) + cot(B/2)) at its
+corners A and B, at most 11.4 mm per mm of radius: a radius of 0.5 never makes it vanish."""
+
+
+@settings(max_examples=60, deadline=None)
+@given(ANGLES)
+def test_inside_a_convex_contour_every_corner_is_at_the_radius_from_both_sides(angles: list[float]) -> None:
+    """Left of a counter-clockwise contour (inside): every end of a side's move is the intersection, one
+    radius (0.5) inside both sides that meet there."""
+    path = _contour(angles, clockwise=False)
+    moves = _compensated(path, "left")[1:-1]  # the sides run once round (not the start-up, nor the last)
+    assert len(moves) == len(path) - 2
+    for k, (seg, end) in enumerate(moves):
+        before, after = path[k], path[k + 2]
+        assert end == path[k + 1]
+        assert seg.xy is not None
+        assert _distance_to_line(seg.xy, before, end) == pytest.approx(0.5, abs=1e-9)
+        assert _distance_to_line(seg.xy, end, after) == pytest.approx(0.5, abs=1e-9)
+
+
+@settings(max_examples=60, deadline=None)
+@given(ANGLES)
+def test_outside_a_convex_contour_the_tool_never_comes_nearer_than_its_radius(angles: list[float]) -> None:
+    """Left of a clockwise contour (outside): each side's move ends one radius outside its side (an acute
+    corner's extension too), and no point of the path comes nearer the contour than the radius; the moves
+    added at acute corners are exactly the corners under 90 degrees."""
+    path = _contour(angles, clockwise=True)
+    sides = list(zip(path[:-2], path[1:-1]))
+    moves = _compensated(path, "left")[1:]
+    for seg, _ in moves:
+        assert seg.xy is not None
+        assert min(_distance_to_segment(seg.xy, a, b) for a, b in sides) >= 0.5 - 1e-9
+    own = [(seg, end) for seg, end in moves if seg.xy is not None]
+    acute = sum(1 for k in range(len(path) - 2)
+                if (path[k][0] - path[k + 1][0]) * (path[k + 2][0] - path[k + 1][0])
+                + (path[k][1] - path[k + 1][1]) * (path[k + 2][1] - path[k + 1][1]) > 0)
+    assert len(own) == (len(path) - 1) + acute  # one move per side, plus one at each acute corner
