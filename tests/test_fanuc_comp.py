@@ -17,7 +17,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from postproc.compensation.cutter_radius import Segment
-from postproc.compensation.rules import FANUC_A, FANUC_B, cutter_for
+from postproc.compensation.geometry_for import cutter_for
+from postproc.compensation.rules import FANUC_A, FANUC_B
 from postproc.errors import ErrorList, ProgramError, UnsupportedError
 from postproc.setup.machine_setup import MachineSetup
 from postproc.simulate.toolpath import toolpath_events

@@ -8,12 +8,7 @@ Tags as in DIALECTS.md: [V] verified against the controller or its interpreter, 
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Callable
-
 from ..records import record
-
-if TYPE_CHECKING:
-    from .cutter_radius import CutterRadius, Item  # noqa: F401
 
 
 @record(frozen=True)  # made at every start (the LinuxCNC plugin's): a dataclass's generated methods cost ~0.4 ms
@@ -140,12 +135,3 @@ FANUC_B = CutterRules(
 )
 """Fanuc cutter compensation C, start-up type B (parameter SUP = 1)."""
 
-
-def cutter_for(rules: CutterRules, release: Callable[[Item], None]) -> CutterRadius:
-    """The compensation geometry ``rules`` need: arcs about outside corners (``cutter_radius``) or
-    straight corners (``extended_corners``)."""
-    from .cutter_radius import CutterRadius
-    from .extended_corners import ExtendedCorners
-    if rules.outside_corner == "extend":
-        return ExtendedCorners(rules, release)
-    return CutterRadius(rules, release)

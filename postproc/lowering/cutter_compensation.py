@@ -30,6 +30,11 @@ length of the *programmed* move per minute, an outside corner's arc at the rate 
 compensated length instead, so the resolved stretch is written per minute (G94 with those rates) and
 G93 comes back with the first block after it.
 
+Towards a target whose own modelled rules differ (Fanuc's and LinuxCNC's), each stretch from G41/G42 to
+the move after G40 is held back and run under both rules (``rule_trial``): it keeps its G41/G42 where both
+cut the same path, else it is written as the source's moves. (Over 600 lines: the resolver is one state
+machine whose queue, positions and modes the trial shares; split, each half would reach into the other.)
+
 Compensation by a diameter in the program (LinuxCNC's G41.1/G42.1, ``DynamicCutterCompensation``) is
 resolved the same way for every target but its source's own (``resolve_dynamic_cutter_compensation``):
 no other dialect spells it, and a target with G41/G42 would need a register holding that radius, which
@@ -53,7 +58,8 @@ from ..ir import (Block, CutterCompensation, DataSetting, DistanceMode, Feed, Fe
 from ..compensation.cutter_radius import CutterRadius, Item, Segment
 from ..compensation.dynamic import DynamicCutterCompensation
 from ..compensation.nose import TIPS, mirrored
-from ..compensation.rules import CutterRules, cutter_for
+from ..compensation.geometry_for import cutter_for
+from ..compensation.rules import CutterRules
 from ..compensation.tool_table import ToolTable
 from ..state import PLANE_AXES
 from .inverse_time import move_length
@@ -193,10 +199,6 @@ class _Resolver:
         """The target's own rules, when modelled and not the source's: each stretch is tried under both."""
         self.trial: RuleTrial | None = None
         """The stretch being tried (its blocks held back until it ends)."""
-        self.stretch: list[tuple[Block, dict[str, Section], str | None]] = []
-        """The tried stretch's blocks as read (sections and text), to write them native again."""
-        self.stretch_out: list[Block] = []
-        """The tried stretch's blocks as resolved."""
 
     def run(self, blocks: Iterator[Block]) -> Iterator[Block]:
         idle = True
@@ -235,9 +237,9 @@ class _Resolver:
                 self.out.append(block)
             idle = self.failed or self._idle()
             if self.trial is not None:
-                self.stretch_out.extend(self.out)
+                self.trial.resolved.extend(self.out)
                 self.out.clear()
-                if idle or len(self.stretch) > STRETCH_LIMIT:
+                if idle or len(self.trial.stretch) > STRETCH_LIMIT:
                     yield from self._tried(idle and not self.failed)
             if self.out:
                 yield from self.out
@@ -248,46 +250,36 @@ class _Resolver:
             except PostprocError as err:
                 self.ctx.diagnostics.error(err)
         if self.trial is not None:
-            self.stretch_out.extend(self.out)
+            self.trial.resolved.extend(self.out)
             self.out.clear()
             yield from self._tried(not self.failed)
         yield from self.out
 
-    # -- a stretch tried under the target's rules ------------------------------------------------------
+    # -- a stretch tried under the target's rules (``rule_trial``) -------------------------------------
     def _try(self, block: Block) -> None:
         """Hold a block of a stretch compensated by register (a stretch by a diameter is always resolved)."""
-        sections = block.sections
         if self.trial is None:
-            cc = sections.get("CutterCompensation")
+            cc = block.sections.get("CutterCompensation")
             if not (self._idle() and isinstance(cc, CutterCompensation) and cc.mode != "off"
-                    and "DynamicCutterCompensation" not in sections):
+                    and "DynamicCutterCompensation" not in block.sections):
                 return
             assert self.trial_rules is not None
             self.trial = RuleTrial(self.trial_rules)
-        self.stretch.append((block, dict(sections), block.text))
+        self.trial.hold(block)
 
     def _tried(self, decided: bool) -> list[Block]:
-        """The stretch's blocks: as read where both rules cut the same path, else as resolved."""
-        trial, stretch, resolved = self.trial, self.stretch, self.stretch_out
-        self.trial, self.stretch, self.stretch_out = None, [], []
+        trial, self.trial = self.trial, None
         assert trial is not None
-        if not (decided and trial.same()) and not (trial.failed and trial.missing is not None):
-            if trial.missing is None:
-                return resolved
-            self.ctx.diagnostics.error(trial.missing)  # moves with a stand-in radius: none is written
-        for block, sections, text in stretch:
-            block.sections, block.text = sections, text
-        return [block for block, _, _ in stretch]
+        return trial.outcome(decided, self.ctx.diagnostics)
 
     def _untried(self, err: PostprocError) -> None:
         """The source's rules cannot be simulated in a tried stretch: its G41/G42 stay as written (the
         target has its own), the path unchecked; nothing more is resolved."""
         self.ctx.diagnostics.warn(f"{err.message}: cutter compensation is kept as written, its path under the "
                                   "target's own rules unchecked", err.location)
-        for block, sections, text in self.stretch:
-            block.sections, block.text = sections, text
-        self.out = [block for block, _, _ in self.stretch]
-        self.trial, self.stretch, self.stretch_out = None, [], []
+        assert self.trial is not None
+        self.out = self.trial.as_read()
+        self.trial = None
 
     def _radius(self, register: int, block: Block) -> float:
         """The register's radius; in a tried stretch an unknown one is a stand-in, and an error only where

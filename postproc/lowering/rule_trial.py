@@ -17,8 +17,10 @@ import math
 from typing import Any, Callable
 
 from ..compensation.cutter_radius import CutterRadius, Item, Segment
-from ..compensation.rules import CutterRules, cutter_for
-from ..errors import PostprocError
+from ..compensation.geometry_for import cutter_for
+from ..compensation.rules import CutterRules
+from ..errors import Diagnostics, PostprocError
+from ..ir import Block, Section
 
 SAME_POINT = 1e-6
 """mm within which two compensated points are one."""
@@ -50,6 +52,31 @@ class RuleTrial:
         self.cutter: CutterRadius = cutter_for(rules, self._release)
         self.missing: PostprocError | None = None
         """The set-up lacks a register's radius: the stretch was tried with ``STAND_IN_RADIUS``."""
+        self.stretch: list[tuple[Block, dict[str, Section], str | None]] = []
+        """The stretch's blocks as read (sections and text), to write them native again."""
+        self.resolved: list[Block] = []
+        """The stretch's blocks as resolved (the source's path as moves)."""
+
+    def hold(self, block: Block) -> None:
+        """A block of the stretch, before the resolver rewrites it."""
+        self.stretch.append((block, dict(block.sections), block.text))
+
+    def as_read(self) -> list[Block]:
+        """The stretch's blocks as they were read (their G41/G42 native)."""
+        for block, sections, text in self.stretch:
+            block.sections, block.text = sections, text
+        return [block for block, _, _ in self.stretch]
+
+    def outcome(self, decided: bool, diagnostics: Diagnostics) -> list[Block]:
+        """The stretch's blocks: as read where both rules cut the same path (or the target's refuse it and
+        no radius is known: the target's writer speaks), else as resolved; a path that needs the radius
+        the set-up lacks is the set-up's located error."""
+        if (decided and self.same()) or (self.failed and self.missing is not None):
+            return self.as_read()
+        if self.missing is None:
+            return self.resolved
+        diagnostics.error(self.missing)  # moves made with a stand-in radius: none is written
+        return self.as_read()
 
     def _release(self, item: Item) -> None:
         mark = _mark(item)

@@ -12,7 +12,8 @@ from mypy_extensions import mypyc_attr
 from ..block_rules import NO_FEED, ArcError, arc_centre
 from ..compensation.cutter_radius import CutterRadius, Item, Segment
 from ..compensation.nose import TIPS, mirrored
-from ..compensation.rules import CutterRules, cutter_for
+from ..compensation.geometry_for import cutter_for
+from ..compensation.rules import CutterRules
 from ..compensation.tool_length import AXIS as _AXIS, ToolLength
 from ..compensation.tool_table import ToolTable
 from ..context import Context
