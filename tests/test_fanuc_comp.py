@@ -149,9 +149,9 @@ def _run(rules: Any, side: str, path: list[tuple[float, float]], cancel: bool = 
         cutter.line(Segment("feed", {}, {"X": b[0], "Y": b[1], "Z": 0.0}), a)
     if cancel:
         cutter.cancel()
-    else:
+    elif rules is FANUC_A:
         cutter.stop()
-    return [s.xy for s in out]
+    return [s.xy for s in out]  # type B: what the corners released (a stop is refused)
 
 
 def test_start_up_type_a_is_square_to_the_next_move_type_b_meets_it() -> None:
@@ -264,3 +264,74 @@ def test_outside_a_convex_contour_the_tool_never_comes_nearer_than_its_radius(an
                 if (path[k][0] - path[k + 1][0]) * (path[k + 2][0] - path[k + 1][0])
                 + (path[k][1] - path[k + 1][1]) * (path[k + 2][1] - path[k + 1][1]) > 0)
     assert len(own) == (len(path) - 1) + acute  # one move per side, plus one at each acute corner
+
+
+# -- the set-up's start-up type, and translations ----------------------------------------------------------
+
+def test_the_set_up_chooses_start_up_type_b_and_its_unread_cancel_is_refused() -> None:
+    from dialects.fanuc import Fanuc
+    setup = with_tools(radii={1: 1.0})
+    assert Fanuc.cutter_rules(setup) is FANUC_A
+    setup.controller.cutter_startup = "B"
+    assert Fanuc.cutter_rules(setup) is FANUC_B
+    lathe = with_tools()
+    lathe.input.machine_type = "lathe"
+    assert Fanuc.cutter_rules(lathe) is None  # Fanuc T: not simulated
+    text = HEAD.format(x="0", y="0") + "G42 D1 G1 X10. F100.\nX20. Y10.\nX30. Y20.\nG40 X40.\nM30\n"
+    with pytest.raises(ErrorList) as info:
+        list(toolpath_events(io.StringIO(text), file="t.nc", dialect="fanuc", setup=setup))
+    assert str(info.value.errors[0]).startswith("t.nc:5:1: error: the cancel move of start-up type B"), info.value
+
+
+def _translate(text: str, target: str, setup: MachineSetup = SETUP) -> str:
+    from postproc.api import translate
+    from postproc.errors import Diagnostics, ErrorLevel
+    out = io.StringIO()
+    translate(io.StringIO(text).readlines(), out, file="t.nc", source="fanuc", target=target, setup=setup,
+              diagnostics=Diagnostics(ErrorLevel.RAISE, warn_stream=io.StringIO()))
+    return out.getvalue()
+
+
+@pytest.mark.parametrize("text", [TRIANGLE, ARCS, POCKET])
+@pytest.mark.parametrize("target", ["linuxcnc", "grbl", "mach3"])
+def test_where_the_rules_differ_the_fanuc_path_is_written_as_moves_and_verifies(text: str, target: str) -> None:
+    """Towards LinuxCNC and Mach3 (arcs about outer corners, another start-up) and grbl (no compensation)
+    the Fanuc path is written as moves: no G41/G42 is left, and verify finds it at zero deviation."""
+    import re
+    from postproc.simulate.verify import verify_lines
+    out = _translate(text, target)
+    assert not re.search(r"\bG4[12]\b", out), out
+    report = verify_lines(io.StringIO(text), io.StringIO(out), file_in="t.nc", file_out="o", source="fanuc",
+                          target=target, setup=SETUP)
+    assert report.ok and report.max_deviation == 0, report.summary()
+
+
+ALONG = (HEAD.format(x="5.", y="0") + "G41 D2 G1 X10. Y0 F100.\nX20.\nY20.\nX0\nY0\nX8.\nG40 X8. Y10.\nM30\n")
+"""The pocket entered along its first side and left square to its last: start-up (type A: square to the
+next move, on along +X) and LinuxCNC's entry (square to the start-up move itself) both end at (10, 2);
+every corner is inner (both rules meet there); the cancel leaves from (8, 2) under both."""
+
+
+def test_where_both_rules_cut_the_same_path_g41_stays_native() -> None:
+    """Towards LinuxCNC; not towards Mach3, whose NIST rules stop at an inner corner: there the moves."""
+    from postproc.simulate.verify import verify_lines
+    out = _translate(ALONG, "linuxcnc")
+    assert "G41 D02 G1 X10. Y0. F100." in out, out
+    assert "G41" not in _translate(ALONG, "mach3")
+    report = verify_lines(io.StringIO(ALONG), io.StringIO(out), file_in="t.nc", file_out="o", source="fanuc",
+                          target="linuxcnc", setup=SETUP)
+    assert report.ok and report.max_deviation == 0, report.summary()
+    _close(_points(ALONG), [(10, 2), (18, 2), (18, 18), (2, 18), (2, 2), (8, 2), (8, 10)])
+
+
+def test_the_native_stretch_runs_in_rs274_as_fanuc_cuts_it() -> None:
+    """The independent check of "the same path": rs274 compensates the G41 kept for LinuxCNC by its own
+    rules (tool 2 of 4 mm diameter, 0.15748 in in its standalone table) and cuts the hand-derived Fanuc
+    points of ``ALONG``."""
+    from tests.support.rs274 import available, canonical_moves, run_rs274
+    if not available():
+        pytest.skip("the LinuxCNC interpreter rs274 is not installed")
+    out = _translate(ALONG, "linuxcnc")
+    moves = [e for e in canonical_moves(run_rs274(out, tool_table="T2 P2 D%r Z0 ;\n" % (4.0 / 25.4)),
+                                        start=(0.0, 0.0, 0.0)) if "move" in e]
+    _close([(m["x"], m["y"]) for m in moves[1:]], [(10, 2), (18, 2), (18, 18), (2, 18), (2, 2), (8, 2), (8, 10)])

@@ -100,11 +100,14 @@ class ExtendedCorners(CutterRadius):
         self.side, self.first = None, True
 
     def stop(self) -> None:
-        """A program stop or end: the queued move ends beside its end point."""
+        """A program stop or end: the queued move ends beside its end point (as before a cancel)."""
         if self.prev is not None:
             if self.entering:
                 raise UnsupportedError(f"a stop right after the start-up move of cutter compensation cannot be "
                                        f"simulated under the rules of {self.rules.name}")
+            if self.rules.entry != "perpendicular":
+                raise UnsupportedError(f"a stop with cutter compensation on under start-up type B cannot be "
+                                       f"simulated under the rules of {self.rules.name} (set start-up type A)")
             self._finish_prev(self._offset_end())
         elif self.queue:
             self._flush()
