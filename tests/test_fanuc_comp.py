@@ -277,6 +277,9 @@ def test_the_set_up_chooses_start_up_type_b_and_its_unread_cancel_is_refused() -
     lathe = with_tools()
     lathe.input.machine_type = "lathe"
     assert Fanuc.cutter_rules(lathe) is None  # Fanuc T: not simulated
+    haas = with_tools()
+    haas.controller.variant = "haas"
+    assert Fanuc.cutter_rules(haas) is None  # Haas: its own settings, not modelled
     text = HEAD.format(x="0", y="0") + "G42 D1 G1 X10. F100.\nX20. Y10.\nX30. Y20.\nG40 X40.\nM30\n"
     with pytest.raises(ErrorList) as info:
         list(toolpath_events(io.StringIO(text), file="t.nc", dialect="fanuc", setup=setup))

@@ -86,11 +86,11 @@ class Fanuc(Dialect):
     @classmethod
     def cutter_rules(cls, setup: MachineSetup) -> CutterRules | None:
         """Fanuc M: cutter compensation C, start-up type A or B by parameter SUP (the set-up's
-        ``cutterStartup``). Fanuc T's tool nose radius compensation is not simulated yet (its offset
+        ``cutterStartup``). Haas's and Fanuc T's are not simulated yet (Fanuc T's offset
         register is the T code's, and its start-up and corner figures, 15.3 of the lathe manual, were not
         checked against the mill's): verify compares the setting."""
-        if cls.reads_lathe(setup):
-            return None
+        if cls.reads_lathe(setup) or setup.controller.variant == "haas":
+            return None  # Haas: its settings 43 and 58 choose among rules not read here [?]
         return FANUC_B if setup.controller.cutter_startup == "B" else FANUC_A
 
     @classmethod
