@@ -240,7 +240,7 @@ class _Resolver:
                 self.trial.resolved.extend(self.out)
                 self.out.clear()
                 if idle or len(self.trial.stretch) > STRETCH_LIMIT:
-                    yield from self._tried(idle and not self.failed)
+                    yield from self._tried(idle)
             if self.out:
                 yield from self.out
                 self.out.clear()
@@ -248,11 +248,14 @@ class _Resolver:
             try:
                 self.cutter.finish()
             except PostprocError as err:
-                self.ctx.diagnostics.error(err)
+                if self.trial is not None and isinstance(err, UnsupportedError):
+                    self._untried(err)
+                else:
+                    self.ctx.diagnostics.error(err)
         if self.trial is not None:
             self.trial.resolved.extend(self.out)
             self.out.clear()
-            yield from self._tried(not self.failed)
+            yield from self._tried(True)
         yield from self.out
 
     # -- a stretch tried under the target's rules (``rule_trial``) -------------------------------------
@@ -270,7 +273,7 @@ class _Resolver:
     def _tried(self, decided: bool) -> list[Block]:
         trial, self.trial = self.trial, None
         assert trial is not None
-        return trial.outcome(decided, self.ctx.diagnostics)
+        return trial.outcome(decided and not self.failed, self.ctx.diagnostics, refused=self.failed)
 
     def _untried(self, err: PostprocError) -> None:
         """The source's rules cannot be simulated in a tried stretch: its G41/G42 stay as written (the
