@@ -135,7 +135,7 @@ class ExtendedCorners(CutterRadius):
             self.release(seg)
             return
         if self.first:
-            raise ProgramError("cutter compensation cannot start with an arc (start it with G00 or G01)")
+            raise ProgramError("cutter compensation cannot start with an arc (start it with a straight move)")
         assert seg.centre is not None
         e = self.in_plane(seg.end)
         radius = math.hypot(e[0] - seg.centre[0], e[1] - seg.centre[1])
