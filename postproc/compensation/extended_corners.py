@@ -255,7 +255,7 @@ class ExtendedCorners(CutterRadius):
     def _wait_block(self, item: Item) -> None:
         """A block without motion in the plane between two moves in it: the controller looks past
         ``rules.look_ahead`` of them."""
-        waiting = sum(1 for it in self.queue[1:])
+        waiting = len(self.queue) - 1
         if waiting >= self.rules.look_ahead:
             raise UnsupportedError(f"more than {self.rules.look_ahead} block(s) without motion in the plane under "
                                    f"cutter compensation cannot be simulated under the rules of {self.rules.name} "
