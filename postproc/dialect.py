@@ -253,6 +253,12 @@ class Dialect:
         return cls.WRITER
 
     @classmethod
+    def cutter_rules(cls, setup: MachineSetup) -> CutterRules | None:
+        """The cutter compensation rules the controller follows under ``setup`` (a parameter may choose
+        among the family's, or leave a machine type unsimulated); by default ``CUTTER_RULES``."""
+        return cls.CUTTER_RULES
+
+    @classmethod
     def reads_lathe(cls, setup: MachineSetup) -> bool:
         """Whether a program is read (and written) with lathe meanings under ``setup``."""
         types = cls.MACHINE_TYPES
@@ -333,7 +339,7 @@ class Dialect:
         ctx.reader = cls.READER
         ctx.stops_before_motion = cls.STOPS_BEFORE_MOTION
         ctx.feed_before_units = cls.FEED_BEFORE_UNITS
-        ctx.cutter_rules = cls.CUTTER_RULES
+        ctx.cutter_rules = cls.cutter_rules(setup)
         ctx.length_at_axis = cls.LENGTH_AT_PROGRAMMED_AXIS
         ctx.lathe_turret = cls.LATHE_TURRET
         ctx.peck_clearance_mm = cls.PECK_CLEARANCE_MM

@@ -106,27 +106,30 @@ def test_the_exit_status_is_the_worst_files(cli, tree, tmp_path):
 
 
 def test_verify_writes_only_what_verifies(cli, tree, tmp_path):
-    """A Fanuc G41 reaches grbl, which has no cutter compensation, as a dropped word (--on-unsupported warn;
-    Fanuc's compensation rules are not modelled, so no compensated path is written): verification fails
-    on the setting left out, and that output is not written, unless --allow-ignored accepts it. o1001's
-    G43 H offsets are written as G43.1 with the machine's lengths, and verify, long tools or not."""
+    """An oriented spindle stop (M19) reaches grbl, which has none, as a dropped word (--on-unsupported
+    warn): verification fails on the orientation left out, and that output is not written, even with
+    --allow-ignored (a move of the machine, not a setting). A Fanuc G41 reaches grbl as the compensated path
+    (Fanuc's rules are modelled), and verifies. o1001's G43 H offsets are written as G43.1 with the
+    machine's lengths, and verify, long tools or not."""
     plain = tmp_path / "plain.nc"
     plain.write_text(PLAIN)
     compensated = tmp_path / "edge.nc"
     compensated.write_text("G21 G90 G00 X-10. Y0. Z5.\nG41 D01 G01 X0. F100.\nG01 Y20.\nG40 G01 X-10.\nM30\n")
+    oriented = tmp_path / "oriented.nc"
+    oriented.write_text("G21 G90 G00 X-10. Y0. Z5.\nG01 X0. F100. M19\nG01 Y20.\nM30\n")
     out, report = tmp_path / "out", tmp_path / "report.jsonl"
     support = Path(__file__).resolve().parent / "support"
-    args = ("translate", tree / "o1001_plate_drill_tap.nc", plain, compensated, "-o", out,
+    args = ("translate", tree / "o1001_plate_drill_tap.nc", plain, compensated, oriented, "-o", out,
             "--from", "fanuc", "--to", "grbl", "--on-unsupported", "warn", "--verify", "--report", report)
     result = cli(*args, "--machine", support / "long_tools.xml")
     assert result.status == 1
     lines = {Path(str(line["file"])).name: line for line in report_lines(report)}
-    failed = lines["edge.nc"]
+    failed = lines["oriented.nc"]
     assert (failed["status"], failed["exit"]) == ("verify", 1)
-    assert "cutter compensation differs" in str(failed["verify"])
-    assert failed["warnings"] and "cutter radius compensation" in str(failed["warnings"][0])  # type: ignore[index]
-    assert not (out / "edge.nc").exists()
-    for name in ("o1001_plate_drill_tap.nc", "plain.nc"):
+    assert "spindle orientation" in str(failed["verify"])
+    assert failed["warnings"] and "oriented spindle stop" in str(failed["warnings"][0])  # type: ignore[index]
+    assert not (out / "oriented.nc").exists()
+    for name in ("o1001_plate_drill_tap.nc", "plain.nc", "edge.nc"):
         assert (lines[name]["status"], lines[name]["max_deviation"]) == ("ok", 0.0), lines[name]
         assert str(lines[name]["verify"]).endswith(": ok")
     assert [line.split()[-1] for line in (out / "o1001_plate_drill_tap.nc").read_text().splitlines()
@@ -135,9 +138,9 @@ def test_verify_writes_only_what_verifies(cli, tree, tmp_path):
         cli, plain, "--from", "fanuc", "--to", "grbl", "--on-unsupported", "warn")
 
     result = cli(*args, "--machine", support / "zero_tools.xml", "--allow-ignored")
-    assert result.status == 0, result.err
-    assert (out / "edge.nc").exists()
-    assert {line["status"] for line in report_lines(report)} == {"ok"}
+    assert result.status == 1, result.err
+    assert (out / "edge.nc").exists() and not (out / "oriented.nc").exists()
+    assert {Path(str(line["file"])).name: line["status"] for line in report_lines(report)}["oriented.nc"] == "verify"
     assert leftovers(out) == []
 
 

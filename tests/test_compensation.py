@@ -163,8 +163,9 @@ def test_what_linuxcnc_refuses_is_a_located_error(blocks: tuple[str, ...], messa
 
 
 def test_a_dialect_without_rules_keeps_the_setting_for_verify() -> None:
-    # Fanuc's start-up and corner rules are not modelled yet: the path stays the programmed one
-    got = moves(run("G21 G90 G0 X0 Y0\nG41 D1 G1 X10. F100.\nG40 G0 X0\nM30\n"))
+    # ISG's start-up and corner rules are not modelled (Fanuc's are: tests/test_fanuc_comp.py): the path
+    # stays the programmed one
+    got = moves(run("G71 G90 G0 X0 Y0\nG41 D1 G1 X10 F100\nG40 G0 X0\nM30\n", "isg", machine(T1=(0.0, 5.0))))
     assert all("controlled" not in m for m in got)
 
 

@@ -106,5 +106,5 @@ def test_a_fanuc_g41_without_d_takes_the_register_in_force_written_for_linuxcnc(
     with pytest.raises(ErrorList) as caught:
         translate(io.StringIO("G21 G90 G0 X0. Y0. Z10.\nT1 M06\nG41 G1 X10. F100.\nM30\n"), io.StringIO(),
                   file="f.nc", source="fanuc", target="linuxcnc")
-    assert str(caught.value.errors[0]).startswith("f.nc:3:1: error: the linuxcnc dialect cannot express cutter "
-                                                  "compensation left without its register"), caught.value
+    assert str(caught.value.errors[0]).startswith("f.nc:3:1: error: cutter compensation without its register "
+                                                  "takes the register programmed last, and none was"), caught.value

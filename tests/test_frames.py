@@ -26,6 +26,7 @@ from postproc.errors import ErrorList
 from postproc.simulate.toolpath import toolpath_events
 from postproc.simulate.verify import verify_lines
 from tests.support.rs274 import available, canonical_moves, run_rs274
+from tests.support.tools import with_tools
 
 TOLERANCE_MM = 5e-4
 """rs274 prints 4 decimals; a rotated point carries that rounding into both of its coordinates."""
@@ -130,17 +131,23 @@ def test_a_mirror_swaps_the_side_of_cutter_compensation_in_a_translation() -> No
 @pytest.mark.skipif(not available(), reason="the LinuxCNC interpreter rs274 is not installed")
 def test_a_mirrored_compensated_contour_runs_in_rs274_as_the_contour_mirrored_by_hand() -> None:
     """G51.1 X0 over a G41 contour, translated for LinuxCNC, against the same contour written mirrored by hand
-    (X negated, G41 -> G42, G02 -> G03): rs274 compensates both with a 6 mm tool, move for move."""
+    (X negated, G41 -> G42, G02 -> G03) and simulated under Fanuc's rules with a 6 mm tool: the translation
+    carries Fanuc's compensated path as moves (its corners are not LinuxCNC's), which rs274 runs move for
+    move."""
     fanuc = ("G21 G17 G90 G94\nG00 X0. Y-20. Z5.\nG01 Z-1. F100.\nG51.1 X0.\nG01 G41 D01 X10. Y-10.\n"
              "G01 Y10.\nG02 X20. Y20. R10.\nG01 X40.\nG01 G40 X50. Y30.\nG50.1 X0.\nG00 Z5.\nM30\n")
-    by_hand = ("G21 G17 G90 G94\nG0 X0 Y-20 Z5\nG1 Z-1 F100\nG42 D1 G1 X-10 Y-10\nG1 Y10\nG3 X-20 Y20 R10\n"
-               "G1 X-40\nG40 G1 X-50 Y30\nG0 Z5\nM2\n")
+    by_hand = ("G21 G17 G90 G94\nG00 X0. Y-20. Z5.\nG01 Z-1. F100.\nG42 D01 G01 X-10. Y-10.\nG01 Y10.\n"
+               "G03 X-20. Y20. R10.\nG01 X-40.\nG40 G01 X-50. Y30.\nG00 Z5.\nM30\n")
+    setup = with_tools(radii={1: 3.0})
     out = io.StringIO()
-    translate(io.StringIO(fanuc), out, file="t.nc", source="fanuc", target="linuxcnc")
-    table = "T1 P1 D0.23622047 Z0\n"  # 6 mm (standalone rs274 reads its tool table in inches)
-    ours = [e for e in canonical_moves(run_rs274(out.getvalue(), tool_table=table)) if "move" in e]
-    theirs = [e for e in canonical_moves(run_rs274(by_hand, tool_table=table)) if "move" in e]
-    assert ours == theirs
+    translate(io.StringIO(fanuc), out, file="t.nc", source="fanuc", target="linuxcnc", setup=setup)
+    assert not re.search(r"\bG4[12]\b", out.getvalue()), out.getvalue()
+    ours = [e for e in canonical_moves(run_rs274(out.getvalue())) if "move" in e]
+    events = toolpath_events(io.StringIO(by_hand), file="h.nc", dialect="fanuc", setup=setup)
+    theirs = [{**e, **e.get("controlled", {})} for e in events if "move" in e]
+    assert [e["move"] for e in ours] == [e["move"] for e in theirs]
+    for a, b in zip(ours, theirs):
+        assert math.dist((a["x"], a["y"], a["z"]), (b["x"], b["y"], b["z"])) < 1e-4, (ours, theirs)
     assert any(abs(e["x"]) not in (0, 10, 20, 40, 50) for e in ours if e["z"] == -1)  # the path is offset
 
 

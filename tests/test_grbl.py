@@ -18,6 +18,7 @@ from postproc.plugins import default_registry
 from postproc.setup.machine_setup import CycleSettings, MachineSetup
 from postproc.simulate.toolpath import toolpath_events
 from postproc_grbl import Grbl
+from tests.support.tools import with_tools
 
 HEAD = "G21 G00 X0. Y0. Z10.\n"
 """Every Fanuc snippet starts here; it is written for grbl as ``GRBL_HEAD``."""
@@ -116,8 +117,8 @@ def test_a_plain_pause_stays_a_pause() -> None:
 @pytest.mark.parametrize("fanuc, message", [
     ("G43 H01 Z50.\n", "t.nc:2:5: error: the set-up gives tool length register 1 no value: add <Tool "
                        "number=\"1\" length=\"..\"/> to its <Tools>, or write the register in the program"),
-    ("G41 D01 G01 X5. F100.\n", "t.nc:2:1: error: the grbl dialect cannot express cutter radius compensation "
-                                "(left)"),
+    ("G41 D01 G01 X5. F100.\n", "t.nc:2:1: error: the set-up gives tool radius register 1 no value: add <Tool "
+                                "number=\"1\" radius=\"..\"/> to its <Tools>, or write the register in the program"),
     ("M19\n", "t.nc:2:1: error: the grbl dialect cannot express an oriented spindle stop (M19); a set-up with "
               "<Cycles orientation=\"stop\"/> pauses for the operator instead"),
     ("/G04 X3.\n", "t.nc:2:1: error: the grbl dialect cannot express block delete '/' (grbl ignores it: the "
@@ -131,11 +132,18 @@ def test_unsupported_constructs_are_located_errors(fanuc: str, message: str) -> 
 
 
 def test_warn_mode_keeps_the_motion_of_a_block_and_comments_the_original() -> None:
-    text, warnings = to_grbl("N60 G41 D01 G01 X5. F100. M08\n", on_unsupported="warn")
-    assert text == "(UNSUPPORTED LINE 2: N60 G41 D01 G01 X5. F100. M08)\nN60 G1 X5. F100. M8\n"
-    assert warnings == ["t.nc:2:1: warning: the grbl dialect cannot express cutter radius compensation (left); "
-                        "dropped (D01) (the block's motion moves the tool's centre along the programmed path); the "
+    text, warnings = to_grbl("N60 G09 G01 X5. F100. M08\n", on_unsupported="warn")
+    assert text == "(UNSUPPORTED LINE 2: N60 G09 G01 X5. F100. M08)\nN60 G1 X5. F100. M8\n"
+    assert warnings == ["t.nc:2:1: warning: the grbl dialect cannot express a one-shot exact stop; dropped; the "
                         "rest of the block is written"]
+
+
+def test_fanuc_cutter_compensation_is_the_compensated_path_in_grbl() -> None:
+    """Fanuc's rules (start-up type A: square to the next move, here on along +X; cancel square to the last
+    move): radius 1 on the left of +X is Y1, then the cancel move to its programmed end."""
+    text, warnings = to_grbl("N60 G41 D01 G01 X5. F100. M08\nN70 X10.\nN80 G40 X10. Y-5.\n",
+                             with_tools(radii={1: 1.0}), on_unsupported="warn")
+    assert text == "N60 G1 X5. Y1. F100. M8\nN70 G1 X10. Y1.\nN80 G1 X10. Y-5.\n" and warnings == []
 
 
 def test_warn_mode_drops_a_motion_with_the_mode_it_needs() -> None:

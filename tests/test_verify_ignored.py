@@ -8,7 +8,9 @@ import io
 from pathlib import Path
 from typing import Any
 
+from postproc.setup.machine_setup import MachineSetup
 from postproc.simulate.verify import verify_lines
+from tests.support.tools import with_tools
 
 FANUC = """G21 G90 G17
 G00 X0 Y0 S1000 M03
@@ -19,14 +21,21 @@ M30
 """
 
 
-def verify(source: str, target: str, dialect: str = "linuxcnc", allow: bool = False) -> Any:
+LATHE = "G21 G18 G40 G99\nT0101 S500 M03\nG0 X60. Z2.\nG42 G1 X40. F0.2\nZ-10.\nG40 G0 X80. Z5.\nM30\n"
+LATHE_WITHOUT = LATHE.replace("G42 ", "").replace("G40 G0", "G0")
+
+
+def verify(source: str, target: str, dialect: str = "linuxcnc", allow: bool = False,
+           setup: MachineSetup | None = None) -> Any:
     return verify_lines(io.StringIO(source), io.StringIO(target), file_in="a.nc", file_out="b.ngc",
-                        source="fanuc", target=dialect, allow_ignored=allow)
+                        source="fanuc", target=dialect, allow_ignored=allow, setup=setup)
 
 
 def test_the_same_compensation_on_both_sides_is_a_note() -> None:
-    out = "G17 G21 G90\nG0 X0. Y0. S1000 M3\nG41 D01 G1 X10. F100.\nG1 Y10.\nG40 G0 X0. Y0.\nM30\n"
-    report = verify(FANUC, out)
+    # ISG's compensation rules are not modelled: the setting is compared (Fanuc's and LinuxCNC's are both
+    # simulated, their paths compared: tests/test_fanuc_comp.py)
+    out = "G71 G90 G17\nG0 X0 Y0 S1000 M3\nG41 D1 G1 X10 F100\nG1 Y10\nG40 G0 X0 Y0\nM30\n"
+    report = verify(FANUC, out, "isg", setup=with_tools())
     assert report.ok
     assert report.ignored == ["cutter compensation: not simulated, the same on both sides (left D1 (line 3), off "
                               "(line 5))"]
@@ -34,16 +43,30 @@ def test_the_same_compensation_on_both_sides_is_a_note() -> None:
 
 
 def test_compensation_left_out_fails_unless_allowed() -> None:
-    out = "G17 G21 G90\nG0 X0. Y0. S1000 M3\nG1 X10. F100.\nG1 Y10.\nG0 X0. Y0.\nM30\n"
-    report = verify(FANUC, out)
+    # from a Fanuc T program, whose nose compensation is not simulated: the setting is compared
+    source, out = LATHE, LATHE_WITHOUT
+    lathe = with_tools()
+    lathe.input.machine_type = "lathe"
+    report = verify(source, out, "fanuc", setup=lathe)
     assert not report.ok and report.left_out_moves and report.max_deviation == 0
-    assert report.ignored == ["cutter compensation differs: IN left D1 (line 3), off (line 5); OUT never set"]
+    assert report.ignored == ["lathe tool offset: not simulated, the same on both sides (offset 1 (line 2))",
+                              "cutter compensation differs: IN right D1 (line 4), off (line 6); OUT never set"]
     assert report.summary().splitlines()[0] == (
-        "max deviation 0.0000 mm over 3 moves (IN:3 / OUT:3): settings that move the tool differ (listed below; "
+        "max deviation 0.0000 mm over 4 moves (IN:3 / OUT:3): settings that move the tool differ (listed below; "
         "--allow-ignored accepts them)")
-    allowed = verify(FANUC, out, allow=True)
+    allowed = verify(source, out, "fanuc", allow=True, setup=lathe)
     assert allowed.ok
     assert allowed.summary().splitlines()[0].endswith(": ok, with settings that move the tool left out (--allow-ignored)")
+
+
+def test_fanuc_mill_compensation_left_out_is_a_deviation_not_a_setting() -> None:
+    """Fanuc M's compensation is simulated: leaving it out moves the tool by the radius (start-up type A:
+    the start-up move ends at (10 - 2, 0), square to the next move along +Y), which --allow-ignored does
+    not excuse."""
+    out = "G17 G21 G90\nG0 X0. Y0. S1000 M3\nG1 X10. F100.\nG1 Y10.\nG0 X0. Y0.\nM30\n"
+    for allow in (False, True):
+        report = verify(FANUC, out, allow=allow, setup=with_tools(radii={1: 2.0}))
+        assert not report.ok and report.max_deviation == 2 and report.ignored == []
 
 
 def test_a_different_spindle_speed_is_listed_but_moves_nothing() -> None:
@@ -66,11 +89,13 @@ def test_tool_length_data_is_simulated_where_an_offset_reads_it() -> None:
 
 def test_cli_allow_ignored(cli: Any, tmp_path: Path) -> None:
     a, b = tmp_path / "a.nc", tmp_path / "b.ngc"
-    a.write_text(FANUC)
-    b.write_text("G17 G21 G90\nG0 X0. Y0. S1000 M3\nG1 X10. F100.\nG1 Y10.\nG0 X0. Y0.\nM30\n")
-    plain = cli("verify", a, b, "--from", "fanuc", "--to", "linuxcnc")
+    a.write_text(LATHE)
+    b.write_text(LATHE_WITHOUT)
+    machine = Path(__file__).resolve().parents[1] / "examples" / "setups" / "fanuc_0i_tf.xml"
+    plain = cli("verify", a, b, "--from", "fanuc", "--to", "fanuc", "--machine", machine)
     assert plain.status == 1
     assert plain.out.decode().splitlines()[1:] == [
-        "not compared:", "  cutter compensation differs: IN left D1 (line 3), off (line 5); OUT never set"]
-    allowed = cli("verify", a, b, "--from", "fanuc", "--to", "linuxcnc", "--allow-ignored")
+        "not compared:", "  lathe tool offset: not simulated, the same on both sides (offset 1 (line 2))",
+        "  cutter compensation differs: IN right D1 (line 4), off (line 6); OUT never set"]
+    allowed = cli("verify", a, b, "--from", "fanuc", "--to", "fanuc", "--machine", machine, "--allow-ignored")
     assert allowed.status == 0 and allowed.out.decode().splitlines()[1:] == plain.out.decode().splitlines()[1:]

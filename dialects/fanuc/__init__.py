@@ -7,6 +7,7 @@ from __future__ import annotations
 from typing import Callable
 
 from postproc.comments import CommentSyntax
+from postproc.compensation.rules import FANUC_A, FANUC_B, CutterRules
 from postproc.dialect import Dialect, Lazy, Reader
 from postproc.setup.machine_setup import MachineSetup
 from postproc.syntax import Pipeline
@@ -74,9 +75,23 @@ class Fanuc(Dialect):
     set-up's ``<Controller startMotion="linear"/>``) [K: Fanuc 0i-F operator's manual, G code list notes;
     cnc.wiki "Fanuc Parameter 3402"]."""
     LATHE_PIPELINE_FILE = "fanuc_lathe.xml"
+    CUTTER_RULES = FANUC_A
+    """Cutter compensation C with start-up type A, parameter SUP (5003#0) = 0, the default
+    (``postproc.compensation.rules``, where each rule is tagged with its source); type B by the set-up's
+    ``<Controller cutterStartup="B">`` (``cutter_rules``)."""
     LOWERING = (stops_before_motion,)
     """A spindle stop or coolant off that the source made before its block's motion goes in a block of
     its own before it (Fanuc makes them after the motion)."""
+
+    @classmethod
+    def cutter_rules(cls, setup: MachineSetup) -> CutterRules | None:
+        """Fanuc M: cutter compensation C, start-up type A or B by parameter SUP (the set-up's
+        ``cutterStartup``). Haas's and Fanuc T's are not simulated yet (Fanuc T's offset
+        register is the T code's, and its start-up and corner figures, 15.3 of the lathe manual, were not
+        checked against the mill's): verify compares the setting."""
+        if cls.reads_lathe(setup) or setup.controller.variant == "haas":
+            return None  # Haas: its settings 43 and 58 choose among rules not read here [?]
+        return FANUC_B if setup.controller.cutter_startup == "B" else FANUC_A
 
     @classmethod
     def pipeline_file(cls, setup: MachineSetup) -> str:

@@ -115,7 +115,7 @@ class ProgramInfo:
                     steps.append(self.features.count_cycles)  # once, before either expansion: a pattern's points made
                 steps.append(step)
             lowered = lower_for(self.features.observe(blocks, ctx), ctx, ToolpathTarget, "error", steps)
-            sim = Simulator(ctx, False, self.dialect.CUTTER_RULES)
+            sim = Simulator(ctx, False, ctx.cutter_rules)
             if self.machine:
                 sim.travel = self.machine_extent = _MachineExtent(sim)
             self.rates = self._rates(sim)

@@ -107,8 +107,8 @@ def _towards(p: Point, length: float, angle: float) -> Point:
 class CutterRadius:
     """The compensation state of one run and its queue; ``release`` writes a segment or an event."""
 
-    def __init__(self, rules: CutterRules, release: Callable[[Item], None]) -> None:
-        if rules.entry not in ("tangent", "touching") or rules.outside_corner != "arc":
+    def __init__(self, rules: CutterRules, release: Callable[[Item], None], checked: bool = True) -> None:
+        if checked and (rules.entry not in ("tangent", "touching") or rules.outside_corner != "arc"):
             raise UnsupportedError(f"cutter compensation rules of {rules.name} cannot be simulated yet")
         self.rules = rules
         self.write = release

@@ -24,11 +24,16 @@ class CutterRules:
     """The first move after compensation starts: ``"tangent"``, the tool ends beside the move's end point,
     perpendicular to the line from the start point (an arc: beside its end, on its radius);
     ``"touching"``, the tool ends beside the end point, perpendicular to the line from the end point that
-    touches the tool's circle about the start point (an entry arc is not modelled: refused)."""
+    touches the tool's circle about the start point (an entry arc is not modelled: refused);
+    ``"perpendicular"``, the tool ends beside the start of the *next* move, square to it (start-up type A,
+    with ``outside_corner="extend"``); ``"corner"``, the start-up move ends as a corner of offset mode
+    would (start-up type B)."""
     outside_corner: str
     """``"arc"``: the tool rolls around an outside corner on an arc about the programmed corner (a rapid
     cuts the arc short with a straight traverse to the arc's end, or goes straight to the move's
-    compensated end: ``rapid_corner``)."""
+    compensated end: ``rapid_corner``); ``"extend"``: the offset paths are extended to their
+    intersection, an acute corner by the radius along both moves and a straight move between
+    (``extended_corners``)."""
     corner_tolerance: float
     """Radians within which two directions count as one (no corner)."""
     arc_after_cancel: bool
@@ -44,6 +49,10 @@ class CutterRules:
     exit_arc_known: bool = True
     """Whether the rules for an arc right after a cancel are known (``arc_after_cancel`` says which); when
     not, such an arc is refused as not simulated."""
+    look_ahead: int = 10_000
+    """Blocks without motion in the plane the controller looks past to find the next move (the corner it
+    makes past more is not modelled: refused). LinuxCNC's queue has no such bound (``cutter_radius``'s
+    ``QUEUE_LIMIT`` bounds the memory)."""
 
 
 ARC_CORNERS = CutterRules(
@@ -77,3 +86,52 @@ NIST_V3 = CutterRules(
 """The NIST RS274/NGC version 3 interpreter's rules, before LinuxCNC's 2009 look-ahead (entry move and
 concave corners): Mach3's, whose interpreter follows that one [?: Mach3's manual follows the NIST report;
 its source is closed]."""
+
+# Cutter compensation C of the Fanuc family, as the operator's manuals describe it: B-62764EN (Series
+# 16/18-C MC) section 15.5 and 15.6 "Details of cutter compensation C" (15.6.2 start-up, 15.6.3 offset
+# mode, 15.6.4 cancel, 15.6.5 interference check), the same chapters in B-64484EN / B-63944EN (30i).
+# [V] B-62764EN 15.5 (text read here): the start-up move is G00 or G01, "circular interpolation (G02,
+#     G03) cannot be used"; compensation runs in the G17/G18/G19 plane; a negative value swaps G41/G42.
+# [V] B-63782EN/B-63784EN (15i) 14.3 text: an arc in the cancel block is alarm PS034.
+# [V] B-62764EN 15.6.1 (text read here): a corner is "inner" when the angle between the two moves on the
+#     workpiece side is 180 degrees or more, else "outer"; an intersection is where the two programmed
+#     paths meet once each is shifted by the radius.
+# [K] 15.6.3 figures: inner corner at the intersection of the offset paths (line or arc); outer corner of
+#     90 degrees or more at the intersection; an acute outer corner extends both paths by the radius and
+#     joins them with a straight move (no arc, for either start-up type); no solution is alarm PS033,
+#     a compensated move turned against its programmed direction is the interference alarm PS041.
+# [K] 15.6.2 figures: start-up type A (parameter SUP, No. 5003#0 = 0, the default) ends the start-up move
+#     with a vector square to the next move at its start; type B ends it as an outer corner of offset mode
+#     (intersection, or the radius extensions when acute).
+# [K] 15.6.4 figures, type A: the last compensated move ends with a vector square to it at its end; the
+#     cancel move goes from there to its programmed end.
+# [K] 15.6.1/15.6.3: the control reads two blocks ahead: one block without motion in the offset plane
+#     between two moves is looked past; two or more make the corner from the previous move alone, which
+#     is not modelled (refused).
+# [?] not read in this session: the type B figures for an inner start-up corner and for the cancel move
+#     (refused by name), the less-than-1-degree outer start-up case (simulated as any acute corner).
+FANUC_A = CutterRules(
+    name="Fanuc cutter compensation C",
+    register_absent="modal",  # [K] the D register stays in force until another is programmed
+    entry="perpendicular",  # [K] 15.6.2 type A
+    outside_corner="extend",  # [K] 15.6.3
+    corner_tolerance=1e-6,
+    arc_after_cancel=False,  # [V] alarm PS034
+    planes=("XY", "ZX", "YZ"),  # [V] 15.5: the plane G17/G18/G19 selects
+    inside_corner="meet",  # [K] 15.6.3: the intersection
+    look_ahead=1,  # [K] two blocks read ahead
+)
+"""Fanuc cutter compensation C, start-up type A (parameter SUP = 0, the factory setting)."""
+FANUC_B = CutterRules(
+    name="Fanuc cutter compensation C (start-up type B)",
+    register_absent="modal",
+    entry="corner",  # [K] 15.6.2 type B
+    outside_corner="extend",
+    corner_tolerance=1e-6,
+    arc_after_cancel=False,
+    planes=("XY", "ZX", "YZ"),
+    inside_corner="meet",
+    look_ahead=1,
+)
+"""Fanuc cutter compensation C, start-up type B (parameter SUP = 1)."""
+

@@ -30,6 +30,11 @@ length of the *programmed* move per minute, an outside corner's arc at the rate 
 compensated length instead, so the resolved stretch is written per minute (G94 with those rates) and
 G93 comes back with the first block after it.
 
+Towards a target whose own modelled rules differ (Fanuc's and LinuxCNC's), each stretch from G41/G42 to
+the move after G40 is held back and run under both rules (``rule_trial``): it keeps its G41/G42 where both
+cut the same path, else it is written as the source's moves. (Over 600 lines: the resolver is one state
+machine whose queue, positions and modes the trial shares; split, each half would reach into the other.)
+
 Compensation by a diameter in the program (LinuxCNC's G41.1/G42.1, ``DynamicCutterCompensation``) is
 resolved the same way for every target but its source's own (``resolve_dynamic_cutter_compensation``):
 no other dialect spells it, and a target with G41/G42 would need a register holding that radius, which
@@ -53,10 +58,12 @@ from ..ir import (Block, CutterCompensation, DataSetting, DistanceMode, Feed, Fe
 from ..compensation.cutter_radius import CutterRadius, Item, Segment
 from ..compensation.dynamic import DynamicCutterCompensation
 from ..compensation.nose import TIPS, mirrored
+from ..compensation.geometry_for import cutter_for
 from ..compensation.rules import CutterRules
 from ..compensation.tool_table import ToolTable
 from ..state import PLANE_AXES
 from .inverse_time import move_length
+from .rule_trial import STAND_IN_RADIUS, STRETCH_LIMIT, RuleTrial
 
 Keeps = Callable[["_Resolver", CutterCompensation], bool]
 """Whether the target writes a G41/G42 itself (given the resolver, for the tool data it tracks)."""
@@ -100,15 +107,18 @@ def resolve_dynamic_cutter_compensation(blocks: Iterator[Block], ctx: Context,
     rules: CutterRules | None = ctx.cutter_rules
     if ctx.dialect == target.NAME or rules is None:
         return blocks
-    keeps = _native if target.CUTTER_COMPENSATION and not _rules_differ(rules, target) else None
-    return _Resolver(ctx, rules, keeps, _takes_diameters(ctx, target)).run(blocks)
+    differ = _rules_differ(rules, target, ctx)
+    keeps = _native if target.CUTTER_COMPENSATION and not differ else None
+    trial = target.cutter_rules(ctx.setup) if target.CUTTER_COMPENSATION and differ else None
+    return _Resolver(ctx, rules, keeps, _takes_diameters(ctx, target), trial).run(blocks)
 
 
-def _rules_differ(rules: CutterRules, target: type[Dialect]) -> bool:
+def _rules_differ(rules: CutterRules, target: type[Dialect], ctx: Context) -> bool:
     """The target compensates by rules of its own that are modelled and not the source's (NIST version 3's
-    entry move and inside corners against LinuxCNC's): its G41/G42 would cut another path, so the source's
-    compensated path is written as moves."""
-    theirs: CutterRules | None = target.CUTTER_RULES
+    entry move and inside corners against LinuxCNC's, Fanuc's straight outer corners against LinuxCNC's
+    arcs): its G41/G42 may cut another path, so each stretch is tried under both (``rule_trial``) and
+    written as the source's compensated moves where the paths differ."""
+    theirs: CutterRules | None = target.cutter_rules(ctx.setup)
     return theirs is not None and theirs != rules
 
 
@@ -134,6 +144,11 @@ def _full_circle(motion: Motion) -> bool:
     return motion.mode in ("cw", "ccw") and bool(motion.center)
 
 
+def _stop_and_cancel(cutter: CutterRadius) -> None:
+    cutter.stop()
+    cutter.cancel()
+
+
 def _native(resolver: "_Resolver", cc: CutterCompensation) -> bool:
     return True
 
@@ -141,7 +156,8 @@ def _native(resolver: "_Resolver", cc: CutterCompensation) -> bool:
 class _Resolver:
     """The compensation state of one translation, and the blocks it has released."""
 
-    def __init__(self, ctx: Context, rules: CutterRules, keeps: Keeps | None = None, diameters: bool = False) -> None:
+    def __init__(self, ctx: Context, rules: CutterRules, keeps: Keeps | None = None, diameters: bool = False,
+                 trial: CutterRules | None = None) -> None:
         self.ctx = ctx
         self.diameters = diameters
         """X words are diameters in the blocks (compensation on a lathe is then refused)."""
@@ -154,7 +170,7 @@ class _Resolver:
         """The output was switched to G94 for a resolved stretch under G93 (G93 is due back)."""
         self.length_register: int | Expr | None = None
         """The tool length register in force (None: no length offset)."""
-        self.cutter = CutterRadius(rules, self._release)
+        self.cutter = cutter_for(rules, self._release)
         self.table = ToolTable(ctx.setup)
         self.scale = 1.0
         """mm per program unit."""
@@ -163,6 +179,8 @@ class _Resolver:
         self.work_offset = 1
         self.selected: int | None = None
         self.spindle_tool: int | None = None
+        self.last_register: int | None = None
+        """The cutter compensation register programmed last (``register_absent="modal"``)."""
         self.pos: dict[str, float | None] = {"X": None, "Y": None, "Z": None}
         """The programmed point, mm (None: not known since the origin moved or a reference return)."""
         self.at: tuple[float, float] = (0.0, 0.0)
@@ -177,6 +195,10 @@ class _Resolver:
         """A queued move (by ``id``) -> its block, and whether it was written in G91."""
         self.out: list[Block] = []
         self.failed = False
+        self.trial_rules = trial
+        """The target's own rules, when modelled and not the source's: each stretch is tried under both."""
+        self.trial: RuleTrial | None = None
+        """The stretch being tried (its blocks held back until it ends)."""
 
     def run(self, blocks: Iterator[Block]) -> Iterator[Block]:
         idle = True
@@ -198,25 +220,84 @@ class _Resolver:
                     self._back_to_inverse_time(block)
                 yield block
                 continue
+            if not self.failed and self.trial_rules is not None:
+                self._try(block)
             if not self.failed:
                 try:
                     self.block(block)
                 except PostprocError as err:
-                    self.ctx.diagnostics.error(err.located(self.ctx.at(block)) if err.location is None else err)
+                    located = err.located(self.ctx.at(block)) if err.location is None else err
                     self.failed = True  # the queue no longer matches the program: nothing more is resolved
-                    self.out.append(block)
+                    if self.trial is not None and isinstance(err, UnsupportedError):
+                        self._untried(located)
+                    else:
+                        self.ctx.diagnostics.error(located)
+                        self.out.append(block)
             else:
                 self.out.append(block)
+            idle = self.failed or self._idle()
+            if self.trial is not None:
+                self.trial.resolved.extend(self.out)
+                self.out.clear()
+                if idle or len(self.trial.stretch) > STRETCH_LIMIT:
+                    yield from self._tried(idle)
             if self.out:
                 yield from self.out
                 self.out.clear()
-            idle = self.failed or self._idle()
         if not self.failed:
             try:
                 self.cutter.finish()
             except PostprocError as err:
-                self.ctx.diagnostics.error(err)
+                if self.trial is not None and isinstance(err, UnsupportedError):
+                    self._untried(err)
+                else:
+                    self.ctx.diagnostics.error(err)
+        if self.trial is not None:
+            self.trial.resolved.extend(self.out)
+            self.out.clear()
+            yield from self._tried(True)
         yield from self.out
+
+    # -- a stretch tried under the target's rules (``rule_trial``) -------------------------------------
+    def _try(self, block: Block) -> None:
+        """Hold a block of a stretch compensated by register (a stretch by a diameter is always resolved)."""
+        if self.trial is None:
+            cc = block.sections.get("CutterCompensation")
+            if not (self._idle() and isinstance(cc, CutterCompensation) and cc.mode != "off"
+                    and "DynamicCutterCompensation" not in block.sections):
+                return
+            assert self.trial_rules is not None
+            self.trial = RuleTrial(self.trial_rules)
+        self.trial.hold(block)
+
+    def _tried(self, decided: bool) -> list[Block]:
+        trial, self.trial = self.trial, None
+        assert trial is not None
+        return trial.outcome(decided and not self.failed, self.ctx.diagnostics, refused=self.failed)
+
+    def _untried(self, err: PostprocError) -> None:
+        """The source's rules cannot be simulated in a tried stretch: its G41/G42 stay as written (the
+        target has its own), the path unchecked; nothing more is resolved."""
+        self.ctx.diagnostics.warn(f"{err.message}: cutter compensation is kept as written, its path under the "
+                                  "target's own rules unchecked", err.location)
+        assert self.trial is not None
+        self.out = self.trial.as_read()
+        self.trial = None
+
+    def _radius(self, register: int, block: Block) -> float:
+        """The register's radius; in a tried stretch an unknown one is a stand-in, and an error only where
+        the rules' paths differ (the path is then written as moves, which needs the radius)."""
+        try:
+            return self.table.radius(register)
+        except PostprocError as err:
+            if self.trial is None:
+                raise
+            self.trial.missing = err.located(self.ctx.at(block)) if err.location is None else err
+            return STAND_IN_RADIUS
+
+    def _mirror(self, call: Callable[[CutterRadius], None]) -> None:
+        if self.trial is not None:
+            self.trial.mirror(call)
 
     # -- one block -----------------------------------------------------------------------------------
     def block(self, block: Block) -> None:
@@ -238,20 +319,27 @@ class _Resolver:
             tip = TIPS[mirrored(dynamic.orientation or 0)] if self._nose() else (0, 0)
             self.cutter.start(dynamic.mode, dynamic.radius(self.scale), self.plane,  # negative: the other side
                               (float(tip[0]), float(tip[1])))
+        elif isinstance(cc, CutterCompensation) and cc.mode == "off" and self._idle():
+            pass  # a G40 with nothing to cancel: written as it is (grbl has G40)
         elif isinstance(cc, CutterCompensation):
             del sections["CutterCompensation"]
             block.changed()
             if cc.mode == "off":
                 self.cutter.cancel()
+                self._mirror(lambda cutter: cutter.cancel())
             else:
                 self._lathe_check("cutter compensation")
                 register = self._register(cc.register)
-                radius = self.table.radius(register)
+                radius = self._radius(register, block)
                 tip = TIPS[self.table.tip(register)] if self._nose() else (0, 0)
                 if self._idle():
                     self.cutter.axes = PLANE_AXES[self.plane]
                     self._entry_start()
                 self.cutter.start(cc.mode, radius, self.plane, (float(tip[0]), float(tip[1])))
+                if self.trial is not None:
+                    plane, mode = self.plane, cc.mode
+                    self.trial.cutter.sweep_slack = self.cutter.sweep_slack
+                    self._mirror(lambda cutter: cutter.start(mode, radius, plane, (float(tip[0]), float(tip[1]))))
         if (isinstance(dynamic, DynamicCutterCompensation) or isinstance(cc, CutterCompensation)) and not sections:
             return  # the block only turned compensation on or off: nothing is left to write
         if self._idle():
@@ -268,13 +356,16 @@ class _Resolver:
             raise UnsupportedError(f"motion '{motion.mode}' with cutter compensation on cannot be resolved")
         else:
             self.cutter.event({"block": block})
+            self._mirror(lambda cutter: cutter.event({}))
         control = sections.get("ProgramControl")
         if isinstance(control, ProgramControl):
             if control.kind in ("stop", "optional_stop"):
                 self.cutter.stop()  # a stop writes the queued move at its compensated end [V]
+                self._mirror(lambda cutter: cutter.stop())
             elif control.kind in ("end", "end_rewind"):
                 self.cutter.stop()
                 self.cutter.cancel()
+                self._mirror(_stop_and_cancel)
 
     def _modal(self, sections: dict[str, Section]) -> None:
         units = sections.get("Units")
@@ -331,11 +422,17 @@ class _Resolver:
     def _register(self, register: int | Expr | None) -> int:
         if isinstance(register, Expr):
             raise UnsupportedError("cutter compensation with a computed register cannot be resolved")
+        if register is None and self.rules.register_absent == "modal":
+            if self.last_register is None:
+                raise ProgramError("cutter compensation without its register takes the register programmed last, "
+                                   "and none was: program D")
+            return self.last_register
         if register is None:
             if self.rules.register_absent != "tool" or self.spindle_tool is None:
                 raise ProgramError("cutter compensation without its register takes the tool in the spindle, which "
                                    "is not known here (no tool change before it): program its register")
             register = self.spindle_tool
+        self.last_register = register
         return register
 
     # -- positions -----------------------------------------------------------------------------------
@@ -445,9 +542,13 @@ class _Resolver:
             seg.centre = seg.ccentre = c
             seg.turn = 1 if kind == "ccw" else -1
             self._per_minute(block, kind, target, c)
+            if self.trial is not None:
+                self.trial.move(seg, start)
             self.cutter.arc(seg, start)
         else:
             self._per_minute(block, kind, target, None)
+            if self.trial is not None:
+                self.trial.move(seg, start)
             self.cutter.line(seg, start)
         self.pos = target
 
@@ -485,6 +586,8 @@ class _Resolver:
 
     # -- what the compensation releases --------------------------------------------------------------
     def _release(self, item: Item) -> None:
+        if self.trial is not None:
+            self.trial.record(item)
         if not isinstance(item, Segment):
             self.out.append(item["block"])
             return

@@ -249,6 +249,11 @@ class ControllerSettings(SetupGroup):
     """G41/G42 may take the offset register from H when the block has no D and no tool length
     offset (Fanuc 0M ``G42 H19``). None: as the variant does (0M: yes)."""
 
+    cutter_startup: Literal["A", "B"] = "A"
+    """How cutter compensation starts on a Fanuc-family control: start-up type A, the start-up move ends
+    square to the next move, or B, it ends as a corner of offset mode would (Fanuc parameter SUP, No.
+    5003#0: 0 type A, the default, 1 type B [K: B-62764EN 15.6.2]); ``postproc.compensation.rules``."""
+
     start_motion: Literal["rapid", "linear"] | None = None
     """The motion mode in force at power-on, before a program programs one, on a controller that has one
     (``Dialect.MOTION_AT_START``; Fanuc: G00 or G01 by parameter 3402#0 G01). None: the dialect's

@@ -13,6 +13,7 @@ from mypy_extensions import mypyc_attr
 from ..block_rules import NO_FEED, ArcError, arc_centre
 from ..compensation.cutter_radius import CutterRadius, Item, Segment
 from ..compensation.nose import TIPS, mirrored
+from ..compensation.geometry_for import cutter_for
 from ..compensation.rules import CutterRules
 from ..compensation.tool_length import AXIS as _AXIS, ToolLength
 from ..compensation.tool_table import ToolTable
@@ -105,7 +106,7 @@ class Moves:
         self.length = ToolLength(self.tools)
         self.lathe_shift: dict[str, float] = {}
         """The lathe tool offset in force (``lathe_offset``): mm added to the programmed X (a radius) and Z."""
-        self.cutter = None if cutter_rules is None else CutterRadius(cutter_rules, self._release)
+        self.cutter = None if cutter_rules is None else cutter_for(cutter_rules, self._release)
         """Cutter radius compensation, when the dialect's rules are known (else it stays a setting)."""
         self.compensating = False
         """Moves go through ``postproc.compensation`` (an offset is in force, a move waits in the cutter
@@ -115,6 +116,8 @@ class Moves:
         self.out: Callable[[Event], None] = _nowhere
         """Where released events go (the ``emit`` of the block being run)."""
         self.spindle_tool: int | None = setup.machine.start_tool
+        self.cutter_register: int | None = None
+        """The cutter compensation register programmed last (a Fanuc G41 without D reads it)."""
         """The tool the last tool change put in the spindle (before any: the set-up's ``startTool``, None:
         the machine's, unknown)."""
         self.sync: float | None = None
@@ -304,8 +307,13 @@ class Moves:
     def _cutter_register(self, block: Block, register: int | None) -> int:
         """The register a G41/G42 reads: its own, or by the rules the spindle tool's (LinuxCNC). The plane
         is checked by ``CutterRadius.start`` (``CutterRules.planes``)."""
+        assert self.cutter is not None
+        if register is None and self.cutter.rules.register_absent == "modal":
+            if self.cutter_register is None:
+                raise ProgramError("cutter compensation without its register takes the register programmed "
+                                   "last, and none was: program D", self._at(block))
+            return self.cutter_register
         if register is None:
-            assert self.cutter is not None
             if self.cutter.rules.register_absent != "tool":
                 raise UnsupportedError("cutter compensation without its register cannot be simulated",
                                        self._at(block))
@@ -314,6 +322,7 @@ class Moves:
                                    "is not known here (no tool change before it): program its register",
                                    self._at(block))
             register = self.spindle_tool
+        self.cutter_register = register
         return register
 
     def _cutter_radius(self, block: Block, register: int) -> float:

@@ -105,7 +105,7 @@ def toolpath_events(lines: Iterable[str], *, file: str, dialect: str | type[Dial
         steps = [step for step in registry.lowerings if step not in TRANSLATE_ONLY]
         lowered = lower_for(blocks, ctx, ToolpathTarget, "error", steps)
         yield from simulate(lowered, ctx, live_after_end, unsimulated, on_unsupported == "warn",
-                            dialect.CUTTER_RULES if compensate else None)
+                            ctx.cutter_rules if compensate else None)
     if check:
         diagnostics.check()
 

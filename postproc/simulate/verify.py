@@ -63,8 +63,8 @@ def verify_lines(lines_in: Iterable[str], lines_out: Iterable[str], *, file_in: 
     settings_in: list[tuple[int, str, str]] = []
     settings_out: list[tuple[int, str, str]] = []
     dialects = registry or default_registry()
-    compensate = _both_compensate(source, target, registry)
-    if not compensate and dialects.dialect(source).CUTTER_RULES is not None:
+    compensate = _both_compensate(source, target, registry, setup, target_setup)
+    if not compensate and dialects.dialect(source).cutter_rules(setup) is not None:
         if isinstance(lines_out, io.IOBase) and lines_out.seekable():  # a file: read again, not held
             mark = lines_out.tell()
             compensate = not _compensates(lines_out, file_out, target, target_setup, dialects)
@@ -120,7 +120,8 @@ def _other_side(value: str) -> str:
     return f"{swapped} {rest}".rstrip()
 
 
-def _both_compensate(source: str, target: str, registry: Registry | None) -> bool:
+def _both_compensate(source: str, target: str, registry: Registry | None, setup: MachineSetup,
+                     target_setup: MachineSetup) -> bool:
     """Cutter radius compensation is simulated on both sides or on neither: a dialect without its rules
     keeps the programmed path, and the setting is compared instead (``compare_settings``). A target
     without compensation at all (grbl) receives the compensated path itself (``postproc.compensation.
@@ -128,7 +129,7 @@ def _both_compensate(source: str, target: str, registry: Registry | None) -> boo
     from ..plugins import default_registry
     reg = registry or default_registry()
     out = reg.dialect(target)
-    return reg.dialect(source).CUTTER_RULES is not None and (out.CUTTER_RULES is not None
+    return reg.dialect(source).cutter_rules(setup) is not None and (out.cutter_rules(target_setup) is not None
                                                               or not out.CUTTER_COMPENSATION)
 
 
