@@ -29,9 +29,10 @@ def _setup() -> MachineSetup:
     return setup
 
 
-def _translate(text: str, source: str) -> str:
+def _translate(text: str, source: str, setup: MachineSetup | None = None) -> str:
     out = io.StringIO(newline="")
-    translate(io.StringIO(text, newline=""), out, file="in.nc", source=source, target="siemens", setup=_setup(),
+    translate(io.StringIO(text, newline=""), out, file="in.nc", source=source, target="siemens",
+              setup=_setup() if setup is None else setup,
               diagnostics=Diagnostics(warn_stream=io.StringIO()))
     return out.getvalue()
 
@@ -74,10 +75,13 @@ def test_a_radius_whose_d_brings_the_length_in_force_stays_g41() -> None:
 
 
 def test_a_d_that_cannot_carry_both_registers_names_the_register_to_set() -> None:
-    """Fanuc's compensation rules are not modelled here, so the path cannot be resolved: H1 is 100 mm long,
-    register 19 (the radius) 7 mm, and one D cannot give the length of the one and the radius of the other."""
+    """A Haas's compensation rules are not modelled (its settings choose among them), so the path cannot be
+    resolved: H1 is 100 mm long, register 19 (the radius) 7 mm, and one D cannot give the length of the one and
+    the radius of the other."""
+    haas = _setup()
+    haas.controller.variant = "haas"
     with pytest.raises(ErrorList) as caught:
-        _translate("G21 G90\nG43 H01 Z50.\nG42 D19 G01 X0. Y0. F100.\nM30\n", "fanuc")
+        _translate("G21 G90\nG43 H01 Z50.\nG42 D19 G01 X0. Y0. F100.\nM30\n", "fanuc", haas)
     assert [str(e) for e in caught.value.errors] == [
         "in.nc:3:5: error: D19 selects the length and the radius together, and its length (7 mm) is not the length "
         "of register 1 (100 mm) in force: give register 19 that length in the set-up's <Tools>, or use one register "
