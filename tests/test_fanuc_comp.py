@@ -13,7 +13,7 @@ import math
 from typing import Any
 
 import pytest
-from hypothesis import given, settings
+from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
 from postproc.compensation.cutter_radius import Segment
@@ -252,7 +252,11 @@ def test_inside_a_convex_contour_every_corner_is_at_the_radius_from_both_sides(a
 def test_outside_a_convex_contour_the_tool_never_comes_nearer_than_its_radius(angles: list[float]) -> None:
     """Left of a clockwise contour (outside): each side's move ends one radius outside its side (an acute
     corner's extension too), and no point of the path comes nearer the contour than the radius; the moves
-    added at acute corners are exactly the corners under 90 degrees."""
+    added at acute corners are exactly the corners under 90 degrees. A corner of exactly 90 degrees (its two
+    sides span 180 degrees of the circle: hypothesis found 0, 100, 140, 280) is left out: there the extension
+    and the intersection are one point, and which construction the rounding picks is not the property."""
+    gaps = _gaps(angles)
+    assume(all(a + b != 180.0 for a, b in zip(gaps, gaps[1:] + gaps[:1])))
     path = _contour(angles, clockwise=True)
     sides = list(zip(path[:-2], path[1:-1]))
     moves = _compensated(path, "left")[1:]

@@ -277,12 +277,19 @@ class _Resolver:
 
     def _untried(self, err: PostprocError) -> None:
         """The source's rules cannot be simulated in a tried stretch: its G41/G42 stay as written (the
-        target has its own), the path unchecked; nothing more is resolved."""
+        target has its own), the path unchecked, unless the target's rules refuse the stretch as far as it
+        was tried (a LinuxCNC entry arc for a Fanuc): then nothing can be written, a located error. Nothing
+        more is resolved."""
+        assert self.trial is not None
+        trial, self.trial = self.trial, None
+        self.out = trial.as_read()
+        if trial.refusal is not None:
+            self.ctx.diagnostics.error(UnsupportedError(
+                f"{err.message}; nor can the stretch be kept as written: the target's rules refuse it or cannot be simulated on it "
+                f"({trial.refusal.message})", err.location))
+            return
         self.ctx.diagnostics.warn(f"{err.message}: cutter compensation is kept as written, its path under the "
                                   "target's own rules unchecked", err.location)
-        assert self.trial is not None
-        self.out = self.trial.as_read()
-        self.trial = None
 
     def _radius(self, register: int, block: Block) -> float:
         """The register's radius; in a tried stretch an unknown one is a stand-in, and an error only where

@@ -49,6 +49,8 @@ class RuleTrial:
         self.theirs: list[Mark] = []
         self.failed = False
         """The target's rules refuse the stretch (or cannot be simulated): it is written as moves."""
+        self.refusal: PostprocError | None = None
+        """Why the target's rules refuse the stretch (its first error)."""
         self.cutter: CutterRadius = cutter_for(rules, self._release)
         self.missing: PostprocError | None = None
         """The set-up lacks a register's radius: the stretch was tried with ``STAND_IN_RADIUS``."""
@@ -68,11 +70,10 @@ class RuleTrial:
         return [block for block, _, _ in self.stretch]
 
     def outcome(self, decided: bool, diagnostics: Diagnostics, refused: bool = False) -> list[Block]:
-        """The stretch's blocks: as read where both rules cut the same path (or the target's refuse it and
-        no radius is known, or the source's rules refused the program (``refused``, reported): the target's
-        writer speaks), else as resolved; a path that needs the radius the set-up lacks is the set-up's
-        located error."""
-        if refused or (decided and self.same()) or (self.failed and self.missing is not None):
+        """The stretch's blocks: as read where both rules cut the same path (or the source's rules refused
+        the program: ``refused``, reported), else as resolved; a path that needs the radius the set-up lacks
+        (the rules differ, or the target's refuse the stretch) is the set-up's located error."""
+        if refused or (decided and self.same()):
             return self.as_read()
         if self.missing is None:
             return self.resolved
@@ -96,8 +97,9 @@ class RuleTrial:
             return
         try:
             call(self.cutter)
-        except PostprocError:
+        except PostprocError as err:
             self.failed = True
+            self.refusal = err
 
     def move(self, seg: Segment, start: tuple[float, float]) -> None:
         twin = copy.copy(seg)
