@@ -27,7 +27,7 @@ from __future__ import annotations
 from mypy_extensions import mypyc_attr
 
 import re
-from typing import Callable, Iterable, Iterator
+from typing import Callable, ClassVar, Iterable, Iterator
 
 from postproc.control import Assign
 from postproc.dialect import Reader
@@ -251,14 +251,14 @@ class NgcReader(Reader):
     """Physical lines -> lexed blocks under the RS274/NGC rules; errors are reported per block and the
     block is kept."""
 
-    DIALECT = ""
+    DIALECT: ClassVar[str] = ""
     """Names the dialect in lexical error messages."""
-    BLOCK_DELETE = True
+    BLOCK_DELETE: ClassVar[bool] = True
     """``/`` at the start of a block skips it when the operator's switch is on; False (grbl): the character
     is ignored wherever it stands and the block runs, with a warning."""
-    PARAMETRIC = False
+    PARAMETRIC: ClassVar[bool] = False
     """The dialect reads o-words, parameters and expressions (LinuxCNC); else they are errors (grbl)."""
-    POLAR = False
+    POLAR: ClassVar[bool] = False
     """The dialect reads ``@`` and ``^`` words (LinuxCNC's polar coordinates); else they are errors."""
 
     def read_call(self, block: Block, code: str) -> None:
