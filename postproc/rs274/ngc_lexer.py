@@ -27,7 +27,7 @@ from __future__ import annotations
 from mypy_extensions import mypyc_attr
 
 import re
-from typing import Callable, ClassVar, Iterable, Iterator
+from typing import Callable, ClassVar, Final, Iterable, Iterator
 
 from postproc.control import Assign
 from postproc.dialect import Reader
@@ -41,14 +41,14 @@ from .oword import OwordParser, parse_assignments
 
 __all__ = ["NgcReader", "lex_block", "split_lines", "strip_comments"]
 
-_WORD = re.compile(r"([A-Za-z])[ \t]*(" + NUMBER + ")")
-_WORDS_ONLY = re.compile(r"(?:[ \t]*+[A-Za-z][ \t]*+[-+]?+(?:\d++\.?+\d*+|\.\d++))*+[ \t]*+")
+_WORD: Final = re.compile(r"([A-Za-z])[ \t]*(" + NUMBER + ")")
+_WORDS_ONLY: Final = re.compile(r"(?:[ \t]*+[A-Za-z][ \t]*+[-+]?+(?:\d++\.?+\d*+|\.\d++))*+[ \t]*+")
 """A line of words only (``NUMBER`` spelt possessively: one reading, never backtrack)."""
-_SPACED_NUMBER = re.compile(r"[ \t]*+(?:[-+][ \t]*+)?+(?:\d[\d \t]*+(?:\.[\d \t]*+)?+|\.[ \t]*+\d[\d \t]*+)")
+_SPACED_NUMBER: Final = re.compile(r"[ \t]*+(?:[-+][ \t]*+)?+(?:\d[\d \t]*+(?:\.[\d \t]*+)?+|\.[ \t]*+\d[\d \t]*+)")
 """A number with blanks anywhere in it, also around its sign (RS274/NGC ignores them); at least one digit."""
-_SKIP = re.compile(r"[ \t]*/")
-_COMMENT_CHARS = frozenset("();")
-_O_WORDS = "O-words (subprograms, loops, conditions) are not supported by the {} reader"
+_SKIP: Final = re.compile(r"[ \t]*/")
+_COMMENT_CHARS: Final = frozenset("();")
+_O_WORDS: Final = "O-words (subprograms, loops, conditions) are not supported by the {} reader"
 
 
 def lex_block(file: str, number: int, text: str, eol: str, dialect: str,
@@ -212,7 +212,7 @@ def _slow_words(file: str, line: int, code: str, dialect: str, block: Block,
     return words
 
 
-_VALUE_START = frozenset("#[")
+_VALUE_START: Final = frozenset("#[")
 
 
 def _starts_value(code: str, j: int) -> bool:
