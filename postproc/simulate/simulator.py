@@ -29,13 +29,13 @@ _SETTING_KEYS: Final = frozenset((*UNSIMULATED, "DataSetting", "ToolLengthOffset
 _COMPENSATION_KEYS: Final = frozenset(("CutterCompensation", "ToolLengthOffset", "DynamicCutterCompensation"))
 _EVENT_KEYS: Final = frozenset(("ToolSelect", "ToolChange", "SpindleControl", "Coolant", "Dwell", "SpindleOrientation",
                          "ProgramControl", "MachineFunction"))
-_MODAL: Final = 1
-_SETTING: Final = 2
-_COMPENSATION: Final = 4
-_EVENT: Final = 8
+_KIND_MODAL: Final = 1
+_KIND_SETTING: Final = 2
+_KIND_COMPENSATION: Final = 4
+_KIND_EVENT: Final = 8
 _KEY_KINDS: Final[dict[str, int]] = {
-    key: (_MODAL if key in MODAL_KEYS else 0) | (_SETTING if key in _SETTING_KEYS else 0)
-    | (_COMPENSATION if key in _COMPENSATION_KEYS else 0) | (_EVENT if key in _EVENT_KEYS else 0)
+    key: (_KIND_MODAL if key in MODAL_KEYS else 0) | (_KIND_SETTING if key in _SETTING_KEYS else 0)
+    | (_KIND_COMPENSATION if key in _COMPENSATION_KEYS else 0) | (_KIND_EVENT if key in _EVENT_KEYS else 0)
     for key in MODAL_KEYS | _SETTING_KEYS | _COMPENSATION_KEYS | _EVENT_KEYS}
 """Section key -> the kinds of work it asks of ``Simulator.block`` (bits above): one look-up a section, where
 four ``keys().isdisjoint`` tests were four bound method calls a block (~2,700 instructions compiled)."""
@@ -66,21 +66,21 @@ class Simulator(Moves):
         kinds = 0
         for key in sections:
             kinds |= _KEY_KINDS.get(key, 0)
-        if kinds & _MODAL:
+        if kinds & _KIND_MODAL:
             self.apply_modal(sections)
         if self.travel is not None:
             self.travel.settings(block)
-        if kinds & _SETTING:
+        if kinds & _KIND_SETTING:
             self.record_settings(block)
             setting = sections.get("DataSetting")
             if setting is not None:
                 self.data_setting(block, setting)
-            if kinds & _COMPENSATION:
+            if kinds & _KIND_COMPENSATION:
                 self.compensation(block, emit)
                 if self.compensating:
                     emit = self._event
         line = block.line
-        before = kinds & _EVENT != 0
+        before = kinds & _KIND_EVENT != 0
         spindle: Any = None
         coolant: Any = None
         machine: Any = None
