@@ -115,7 +115,9 @@ def test_compiled_types_keep_no_constant_in_an_instance_slot() -> None:
                     assert type(value).__name__ != "getset_descriptor", f"{cls.name}.{name} is an instance slot"
     from postproc_linuxcnc.reader import LinuxcncReader
     from postproc.context import Context
+    from postproc.errors import Diagnostics
     from postproc.setup.machine_setup import MachineSetup
-    reader = LinuxcncReader(Context(MachineSetup(), file="t.ngc"))
+    diagnostics = Diagnostics()
+    reader = LinuxcncReader(Context("t.ngc", MachineSetup(), diagnostics, "linuxcnc"))
     block = next(iter(reader.read(["o100 sub\n"])))
-    assert "Control" in block.sections, block.sections
+    assert not diagnostics.errors and "Control" in block.sections, (diagnostics.errors, block.sections)
