@@ -102,6 +102,60 @@ def test_the_scan_finds_a_bare_constant() -> None:
     assert _first_declaration(reader, "X", classes) == "class"
 
 
+def _inherits(cls: ast.ClassDef, base: str, classes: dict[str, tuple[ast.ClassDef, str]], depth: int = 0) -> bool:
+    """``cls`` derives from the class named ``base`` (bases resolved by name in ``classes``)."""
+    for b in cls.bases:
+        name = ast.unparse(b).rsplit(".", 1)[-1]
+        if name == base:
+            return True
+        found = classes.get(name)
+        if found is not None and found[0] is not cls and depth < 20 and _inherits(found[0], base, classes, depth + 1):
+            return True
+    return False
+
+
+def _static_names(cls: ast.ClassDef) -> set[str]:
+    """The static and class methods ``cls``'s own code calls through ``self`` (``self.helper()``)."""
+    statics = {f.name for f in cls.body if isinstance(f, ast.FunctionDef)
+               and any(ast.unparse(d) in ("staticmethod", "classmethod") for d in f.decorator_list)}
+    called = {node.func.attr for node in ast.walk(cls) if isinstance(node, ast.Call)
+              and isinstance(node.func, ast.Attribute) and isinstance(node.func.value, ast.Name)
+              and node.func.value.id == "self"}
+    return statics & called
+
+
+def test_no_subclass_overrides_a_static_method_of_an_open_compiled_class() -> None:
+    """Compiled, ``self.helper()`` of a static (or class) method calls the base's own function directly: a
+    plugin's override is never reached (LinuxCNC's ``_path_tolerance`` read no ``G64 P Q`` so). Such a
+    helper a subclass overrides must be a plain method."""
+    classes = _classes()
+    everything = []
+    for folder in ("postproc", "dialects", "plugins"):
+        for path in sorted((ROOT / folder).rglob("*.py")):
+            tree = ast.parse(path.read_text(encoding="utf-8"))
+            everything += [(node, str(path.relative_to(ROOT))) for node in ast.walk(tree) if isinstance(node, ast.ClassDef)]
+    wrong = []
+    for cls, source in _compiled_open_classes():
+        statics = _static_names(cls)
+        if not statics:
+            continue
+        for sub, where in everything:
+            if _inherits(sub, cls.name, classes):
+                for f in sub.body:
+                    if isinstance(f, ast.FunctionDef) and f.name in statics:
+                        wrong.append(f"{where}: {sub.name}.{f.name} overrides {source}: {cls.name}.{f.name}")
+    assert not wrong, "\n".join(wrong)
+
+
+def test_the_scan_finds_an_overridden_static_method() -> None:
+    tree = ast.parse("class Base:\n    @staticmethod\n    def helper() -> None: ...\n"
+                     "    def run(self) -> None:\n        self.helper()\n"
+                     "class Mid(Base): ...\nclass Plugin(Mid):\n    def helper(self) -> None: ...\n")
+    classes = {node.name: (node, "t.py") for node in tree.body if isinstance(node, ast.ClassDef)}
+    assert _static_names(classes["Base"][0]) == {"helper"}
+    assert _inherits(classes["Plugin"][0], "Base", classes) and not _inherits(classes["Base"][0], "Plugin", classes)
+
+
 @pytest.mark.skipif(not native.compiled_modules(), reason="pure Python: no compiled types to look at")
 def test_compiled_types_keep_no_constant_in_an_instance_slot() -> None:
     """On the compiled types: an UPPER_CASE name of an open class is no native attribute (a getset

@@ -278,9 +278,10 @@ class NgcWordBlockSyntax(WordBlockSyntax):
                              ctx.at(block, col_of_word(block, "G", num)))
         codes[group] = (group, entry[1], entry[2], num)
 
-    @staticmethod
-    def _path_tolerance(codes: dict[str, Any], natives: list[str], raw: dict[str, str]) -> None:
-        """``G64 P Q`` (blending with a tolerance) has no neutral meaning: keep it verbatim."""
+    def _path_tolerance(self, codes: dict[str, Any], natives: list[str], raw: dict[str, str]) -> None:
+        """``G64 P Q`` (blending with a tolerance) has no neutral meaning: keep it verbatim. A method, not a
+        static method: compiled, a static method is called directly and a plugin's override (LinuxCNC reads
+        the tolerances) is never reached."""
         path = codes.get("15")
         if path is not None and path[2] == "cutting" and ("P" in raw or "Q" in raw):
             natives.append("64")
