@@ -261,6 +261,11 @@ class NgcReader(Reader):
     POLAR: ClassVar[bool] = False
     """The dialect reads ``@`` and ``^`` words (LinuxCNC's polar coordinates); else they are errors."""
 
+    def parametric(self) -> bool:
+        """Whether this reader reads o-words, parameters and expressions: ``PARAMETRIC``, or a choice of the
+        set-up's (grblHAL's expressions option) in a subclass's override."""
+        return self.PARAMETRIC
+
     def read_call(self, block: Block, code: str) -> None:
         """Turn a lexed block's subprogram call or return words into its control section (a parametric
         dialect with numbered subprograms overrides this; the family has none)."""
@@ -269,8 +274,9 @@ class NgcReader(Reader):
         file = self.ctx.file
         dialect = self.DIALECT
         report = self.ctx.diagnostics.error
-        oword = OwordParser() if self.PARAMETRIC else None
-        calls = self.read_call if self.PARAMETRIC else None
+        parametric = self.parametric()
+        oword = OwordParser() if parametric else None
+        calls = self.read_call if parametric else None
         ignore_slash = None if self.BLOCK_DELETE else self._ignored_slash
         polar = self.POLAR
         for number, text, eol in split_lines(lines):
