@@ -28,7 +28,7 @@ from __future__ import annotations
 
 from mypy_extensions import mypyc_attr
 
-from typing import Any, ClassVar
+from typing import Any, ClassVar, Final
 
 from postproc.context import Context, word_columns
 from postproc.errors import ParseError, ProgramError
@@ -43,11 +43,11 @@ from .codes import g_key
 REAL_LETTERS = frozenset("XYZABCUVWIJKRQPF")
 """Addresses read as real numbers, exactly as written."""
 INTEGER_LETTERS = frozenset("NTHDL")
-_STATE_KEY = "NgcBlockSyntax"
+_STATE_KEY: Final = "NgcBlockSyntax"
 """``ctx.state.extra`` key: True while a cycle cancel leaves no motion mode in force."""
-_LOADED_KEY = "NgcBlockSyntax.loaded"
+_LOADED_KEY: Final = "NgcBlockSyntax.loaded"
 """``ctx.state.extra`` key: the tool the last tool change loaded (absent or None: unknown)."""
-_MOTION_GROUP = ("01", "09")
+_MOTION_GROUP: Final = ("01", "09")
 _NOT_NEGATIVE = {"T": "a tool number", "H": "a tool length register", "D": "a cutter radius register",
                  "L": "a repeat count"}
 """Whole-number addresses rs274 refuses negative [V: "Negative tool id" (T-1), "Requested tool -1 not found
@@ -278,9 +278,10 @@ class NgcWordBlockSyntax(WordBlockSyntax):
                              ctx.at(block, col_of_word(block, "G", num)))
         codes[group] = (group, entry[1], entry[2], num)
 
-    @staticmethod
-    def _path_tolerance(codes: dict[str, Any], natives: list[str], raw: dict[str, str]) -> None:
-        """``G64 P Q`` (blending with a tolerance) has no neutral meaning: keep it verbatim."""
+    def _path_tolerance(self, codes: dict[str, Any], natives: list[str], raw: dict[str, str]) -> None:
+        """``G64 P Q`` (blending with a tolerance) has no neutral meaning: keep it verbatim. A method, not a
+        static method: compiled, a static method is called directly and a plugin's override (LinuxCNC reads
+        the tolerances) is never reached."""
         path = codes.get("15")
         if path is not None and path[2] == "cutting" and ("P" in raw or "Q" in raw):
             natives.append("64")

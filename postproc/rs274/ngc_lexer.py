@@ -27,7 +27,7 @@ from __future__ import annotations
 from mypy_extensions import mypyc_attr
 
 import re
-from typing import Callable, Iterable, Iterator
+from typing import Callable, ClassVar, Final, Iterable, Iterator
 
 from postproc.control import Assign
 from postproc.dialect import Reader
@@ -41,14 +41,14 @@ from .oword import OwordParser, parse_assignments
 
 __all__ = ["NgcReader", "lex_block", "split_lines", "strip_comments"]
 
-_WORD = re.compile(r"([A-Za-z])[ \t]*(" + NUMBER + ")")
-_WORDS_ONLY = re.compile(r"(?:[ \t]*+[A-Za-z][ \t]*+[-+]?+(?:\d++\.?+\d*+|\.\d++))*+[ \t]*+")
+_WORD: Final = re.compile(r"([A-Za-z])[ \t]*(" + NUMBER + ")")
+_WORDS_ONLY: Final = re.compile(r"(?:[ \t]*+[A-Za-z][ \t]*+[-+]?+(?:\d++\.?+\d*+|\.\d++))*+[ \t]*+")
 """A line of words only (``NUMBER`` spelt possessively: one reading, never backtrack)."""
-_SPACED_NUMBER = re.compile(r"[ \t]*+(?:[-+][ \t]*+)?+(?:\d[\d \t]*+(?:\.[\d \t]*+)?+|\.[ \t]*+\d[\d \t]*+)")
+_SPACED_NUMBER: Final = re.compile(r"[ \t]*+(?:[-+][ \t]*+)?+(?:\d[\d \t]*+(?:\.[\d \t]*+)?+|\.[ \t]*+\d[\d \t]*+)")
 """A number with blanks anywhere in it, also around its sign (RS274/NGC ignores them); at least one digit."""
-_SKIP = re.compile(r"[ \t]*/")
-_COMMENT_CHARS = frozenset("();")
-_O_WORDS = "O-words (subprograms, loops, conditions) are not supported by the {} reader"
+_SKIP: Final = re.compile(r"[ \t]*/")
+_COMMENT_CHARS: Final = frozenset("();")
+_O_WORDS: Final = "O-words (subprograms, loops, conditions) are not supported by the {} reader"
 
 
 def lex_block(file: str, number: int, text: str, eol: str, dialect: str,
@@ -212,7 +212,7 @@ def _slow_words(file: str, line: int, code: str, dialect: str, block: Block,
     return words
 
 
-_VALUE_START = frozenset("#[")
+_VALUE_START: Final = frozenset("#[")
 
 
 def _starts_value(code: str, j: int) -> bool:
@@ -251,15 +251,20 @@ class NgcReader(Reader):
     """Physical lines -> lexed blocks under the RS274/NGC rules; errors are reported per block and the
     block is kept."""
 
-    DIALECT = ""
+    DIALECT: ClassVar[str] = ""
     """Names the dialect in lexical error messages."""
-    BLOCK_DELETE = True
+    BLOCK_DELETE: ClassVar[bool] = True
     """``/`` at the start of a block skips it when the operator's switch is on; False (grbl): the character
     is ignored wherever it stands and the block runs, with a warning."""
-    PARAMETRIC = False
+    PARAMETRIC: ClassVar[bool] = False
     """The dialect reads o-words, parameters and expressions (LinuxCNC); else they are errors (grbl)."""
-    POLAR = False
+    POLAR: ClassVar[bool] = False
     """The dialect reads ``@`` and ``^`` words (LinuxCNC's polar coordinates); else they are errors."""
+
+    def parametric(self) -> bool:
+        """Whether this reader reads o-words, parameters and expressions: ``PARAMETRIC``, or a choice of the
+        set-up's (grblHAL's expressions option) in a subclass's override."""
+        return self.PARAMETRIC
 
     def read_call(self, block: Block, code: str) -> None:
         """Turn a lexed block's subprogram call or return words into its control section (a parametric
@@ -269,8 +274,9 @@ class NgcReader(Reader):
         file = self.ctx.file
         dialect = self.DIALECT
         report = self.ctx.diagnostics.error
-        oword = OwordParser() if self.PARAMETRIC else None
-        calls = self.read_call if self.PARAMETRIC else None
+        parametric = self.parametric()
+        oword = OwordParser() if parametric else None
+        calls = self.read_call if parametric else None
         ignore_slash = None if self.BLOCK_DELETE else self._ignored_slash
         polar = self.POLAR
         for number, text, eol in split_lines(lines):

@@ -7,7 +7,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 from itertools import chain
-from typing import Iterable, Iterator
+from typing import Final, Iterable, Iterator
 
 from mypy_extensions import mypyc_attr
 
@@ -19,7 +19,9 @@ from .normal_move import FEED_TOLERANCE as FEED_TOLERANCE, Move, same_feed as _s
 
 Point = tuple[float, float, float]
 
-EVENT_TOLERANCE = 1e-6
+_hypot: Final = math.hypot
+"""Compiled, ``math.hypot`` is an attribute look-up on the module each call; a Final is a C static."""
+EVENT_TOLERANCE: Final = 1e-6
 """Numbers in machine events (dwell seconds, angles) compare within this."""
 @mypyc_attr(allow_interpreted_subclasses=True)
 @dataclass
@@ -86,18 +88,23 @@ class Report:
 
 # -- normalising -------------------------------------------------------------------------------------
 
-_AXIS_KEYS = frozenset("xyzabcuvw")
+_AXIS_KEYS: Final = frozenset("xyzabcuvw")
 
 
 def _axes(ev: Event) -> dict[str, float]:
-    """The end point of a move event, in its order (the machine's axes)."""
-    return {k: float(v) for k, v in ev.items() if k in _AXIS_KEYS}
+    """The end point of a move event, in its order (the machine's axes). A float is taken as it is: compiled,
+    ``float(v)`` of a value of unknown type is a call of the builtin through Python (~250 instructions)."""
+    end: dict[str, float] = {}
+    for k, v in ev.items():
+        if k in _AXIS_KEYS:
+            end[k] = v if isinstance(v, float) else float(v)
+    return end
 
 
 def _dist(a: dict[str, float], b: dict[str, float]) -> float:
     """Euclidean distance over ``a``'s axes (``math.hypot`` scales: no overflow near the float range; it is
     ``math.dist``'s norm of the same differences, without the two lists of coordinates)."""
-    return math.hypot(*[a[k] - b.get(k, 0.0) for k in a])
+    return _hypot(*[a[k] - b.get(k, 0.0) for k in a])
 
 
 def _plane_point(p: dict[str, float], plane: str) -> tuple[float, float]:
@@ -117,11 +124,11 @@ def _move(ev: Event, start: dict[str, float]) -> Move:
         s, e = _plane_point(start, plane), _plane_point(end, plane)
         c = (float(ev.get(CENTRE_KEYS[ci], s[0])), float(ev.get(CENTRE_KEYS[cj], s[1])))
         m.plane, m.centre = plane, c
-        m.radius = math.hypot(s[0] - c[0], s[1] - c[1])
+        m.radius = _hypot(s[0] - c[0], s[1] - c[1])
         m.sweep = arc_sweep(s, e, c, kind == "cw")
     else:
         steps = {k: v - start.get(k, 0.0) for k, v in end.items()}
-        length = m.length = math.hypot(*steps.values())  # _dist(end, start), its differences kept
+        length = m.length = _hypot(*steps.values())  # _dist(end, start), its differences kept
         if length > 0:
             m.direction = {k: step / length for k, step in steps.items()}
     return m
@@ -140,13 +147,13 @@ def _merge(run: Move, m: Move, eps: float) -> bool:
         along = 0.0
         for r, uk in rel:
             along += r * uk
-        off = math.hypot(*[r - along * uk for r, uk in rel])  # distance from the line
+        off = _hypot(*[r - along * uk for r, uk in rel])  # distance from the line
         if off > eps or along <= along_old:
             return False
         run.end, run.last_line = m.end, m.last_line
         return True
     if run.centre is not None and m.centre is not None and run.plane == m.plane:
-        if (math.hypot(run.centre[0] - m.centre[0], run.centre[1] - m.centre[1]) > eps
+        if (_hypot(run.centre[0] - m.centre[0], run.centre[1] - m.centre[1]) > eps
                 or abs(run.radius - m.radius) > eps or not _one_helix(run, m, eps)):
             return False
         run.end, run.last_line = m.end, m.last_line
@@ -392,9 +399,9 @@ def _differ(a: Move | Event | None, b: Move | Event | None, report: Report) -> s
     if not _same_feed(a.f, b.f):
         return f"IN feeds at F{a.f:g}, OUT at F{b.f:g} ({describe(a)})"
     keys = set(a.end) & set(b.end)
-    dev = math.hypot(*[a.end[k] - b.end[k] for k in keys])  # math.dist's norm, one list
+    dev = _hypot(*[a.end[k] - b.end[k] for k in keys])  # math.dist's norm, one list
     if a.centre is not None and b.centre is not None:
-        dev = max(dev, math.hypot(a.centre[0] - b.centre[0], a.centre[1] - b.centre[1]),
+        dev = max(dev, _hypot(a.centre[0] - b.centre[0], a.centre[1] - b.centre[1]),
                   abs(a.sweep * a.radius - b.sweep * b.radius))
     report.moves += 1
     if report.where is None or dev > report.max_deviation:

@@ -71,6 +71,8 @@ def _value_text(value: object) -> str | None:
         return float_text(value)
     if isinstance(value, bool):
         return "true" if value else "false"
+    if type(value) is int:
+        return str(value)  # int's own spelling, without a method look-up (a line number each event)
     if isinstance(value, int):
         return int.__repr__(value)
     if isinstance(value, str):

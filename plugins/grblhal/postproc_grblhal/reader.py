@@ -17,7 +17,6 @@ from __future__ import annotations
 
 from typing import Iterable, Iterator
 
-from postproc.context import Context
 from postproc.control import CONTROL, Call, Return, SubEnd, SubStart
 from postproc.errors import Location, ParseError
 from postproc.grbl_family.reader import GrblFamilyReader
@@ -36,9 +35,9 @@ OUTSIDE = ("a grblHAL return outside the body of the sub it names (M99, or o<n> 
 class GrblhalReader(GrblFamilyReader):
     DIALECT = "grblHAL"
 
-    def __init__(self, ctx: Context) -> None:
-        super().__init__(ctx)
-        self.PARAMETRIC = bool(ctx.setup.controller.expressions)
+    def parametric(self) -> bool:
+        """o-words, parameters and expressions where the set-up enables grblHAL's expressions."""
+        return bool(self.ctx.setup.controller.expressions)
 
     def read(self, lines: Iterable[str]) -> Iterator[Block]:
         defined: set[str] = set()
