@@ -70,10 +70,11 @@ class RuleTrial:
         return [block for block, _, _ in self.stretch]
 
     def outcome(self, decided: bool, diagnostics: Diagnostics, refused: bool = False) -> list[Block]:
-        """The stretch's blocks: as read where both rules cut the same path (or the source's rules refused
-        the program: ``refused``, reported), else as resolved; a path that needs the radius the set-up lacks
-        (the rules differ, or the target's refuse the stretch) is the set-up's located error."""
-        if refused or (decided and self.same()):
+        """The stretch's blocks: as read where both rules cut the same path (or the target's refuse it and
+        no radius is known, or the source's rules refused the program (``refused``, reported): the target's
+        writer speaks), else as resolved; a path that needs the radius the set-up lacks is the set-up's
+        located error."""
+        if refused or (decided and self.same()) or (self.failed and self.missing is not None):
             return self.as_read()
         if self.missing is None:
             return self.resolved
