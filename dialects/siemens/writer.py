@@ -16,6 +16,8 @@ comments and ``%_N_NAME_MPF`` headers.
   is written as the D it needs (``postproc.isg_family.tool_data``); a negative offset (G44) is refused.
 * Another dialect's tape mark ``%`` is the comment ``;%`` (a SINUMERIK ``%`` line is a header).
 * Units: ``G710``/``G700`` (lengths and feeds), never G71/G70 (lengths only).
+* A reference return (Fanuc ``G28``) is its intermediate point, then ``G75 FP=1`` to the set-up's home
+  (``fixed_point``).
 """
 
 from __future__ import annotations
@@ -36,6 +38,7 @@ from postproc.rs274.writer import WordWriter
 from .codes import CODES
 from .control_writing import JumpTargets, expression, label_name, statement
 from .cycle_writing import Call, in_place_moves, moves_in_plane
+from .fixed_point import reference_return
 
 _WITH_DWELL = ("Dwell", "Sequence")
 _ALONE_WITH_DWELL = frozenset((*_WITH_DWELL, "Comments", "BlockDelete"))
@@ -83,6 +86,9 @@ class SiemensWriter(WordWriter):
             return self.cycle_block(block, cycle)
         if self.call is not None and (not _ENDS_CALL.isdisjoint(sections) or _ends_program(sections)):
             return self.end_call(block)
+        motion = sections.get("Motion")
+        if isinstance(motion, Motion) and motion.mode in ("home", "home2"):
+            return reference_return(self, block, motion)
         label = sections.get(LABEL)
         sequence = sections.get("Sequence")
         if sequence is not None:
@@ -202,7 +208,7 @@ class SiemensWriter(WordWriter):
         if sequence is not None:
             self.targets.mark(f"N{getattr(sequence, 'number')}")
         if head:
-            lines.append(self._part(block, head))
+            lines.append(self.part(block, head))
         if not moves_in_plane(cycle):
             if self.call is not None:
                 lines.append("MCALL\n")
@@ -210,9 +216,9 @@ class SiemensWriter(WordWriter):
             for kind, value in in_place_moves(cycle, call):
                 part: dict[str, Section] = ({"Dwell": Dwell(value)} if kind == "dwell"
                                             else {"Motion": Motion(kind, {"Z": value})})
-                lines.append(self._part(block, part))
+                lines.append(self.part(block, part))
             if tail:
-                lines.append(self._part(block, tail))
+                lines.append(self.part(block, tail))
             return self._cycle_text(block, lines)
         if call != self.call:
             if self.call is not None:
@@ -229,7 +235,7 @@ class SiemensWriter(WordWriter):
             words.extend(self.comment(t) for t in getattr(comments, "texts"))
         lines.append(" ".join(words) + "\n")
         if tail:
-            lines.append(self._part(block, tail))
+            lines.append(self.part(block, tail))
         return self._cycle_text(block, lines)
 
     def _cycle_text(self, block: Block, lines: list[str]) -> str:
@@ -250,7 +256,8 @@ class SiemensWriter(WordWriter):
         rest = self.generate(block)
         return "MCALL\n" + ("" if not rest.strip() or rest.strip() == ";" else rest)
 
-    def _part(self, block: Block, sections: dict[str, Section]) -> str:
+    def part(self, block: Block, sections: dict[str, Section]) -> str:
+        """The text of some of ``block``'s sections as a block of their own (a block split in order)."""
         part = Block(block.line, None, "\n")
         part.sections = sections
         return self.generate(part)

@@ -1,0 +1,144 @@
+"""A reference return (Fanuc ``G28``) towards SINUMERIK as a fixed-point approach, ``G75 FP=1 Z1=0``.
+
+Why ``G75`` and not ``G53``/``G153``/``SUPA``: those suppress the frames for one block, but whether they
+suppress the tool length and radius too is machine data (``$MN_G53_TOOLCORR``) [V: SINUMERIK 802D sl/840D
+ISO Milling programming manual 04.07, 3.1.1 "Machine coordinate system (G53)"], so their meaning is not
+certain from the program. ``G75`` is [K: 840D sl Fundamentals "Fixed point approach (G75)", as quoted on
+en.cncforum.net/t/196]:
+
+* non-modal, in a block of its own; the group-1 code in force before it (G0, G1...) is in force after it;
+* it moves the named machine axes at rapid to fixed point ``FP=<n>`` (1 when no FP is written), a
+  position in machine data (``MD30600 $MA_FIX_POINT_POS``), with no offset in effect (no frame, no work
+  offset, no tool length): where Fanuc's G28 puts the spindle, at its reference point (a parameter too);
+* the axes are machine axes, each written with any value (ignored), e.g. ``Z1=0``. ``X1``/``Y1``/``Z1`` are
+  the default machine axis names [?: MD10000 ``AXCONF_MACHAX_NAME_TAB``; a machine builder may rename them].
+
+So fixed point 1 is the set-up's ``<Axis home>`` (where a reference return goes, as on ISG): the writer
+writes the intermediate point as a ``G0`` move, then ``G75 FP=1``; the reader reads ``G75 FP=1`` back as a
+rapid move in machine coordinates to the set-up's home, which is how the simulator runs Fanuc's ``G28``
+(the spindle at the home position, the tool's length below it). A set-up with no home for an axis is a
+located error naming the element, on both sides; a return to the second reference point (``G30``) is
+refused (the set-up has no element for fixed point 2), as is any ``FP`` other than 1 when reading.
+"""
+
+from __future__ import annotations
+
+import re
+from typing import TYPE_CHECKING
+
+from postproc.errors import ProgramError
+from postproc.event_order import after_motion
+from postproc.ir import MachineCoordinates, Motion, Section
+from postproc.state import MM_PER_INCH
+from postproc.xmlio import XAttr
+
+if TYPE_CHECKING:
+    from postproc.context import Context
+    from postproc.ir import Block
+    from postproc.setup.machine_setup import MachineSetup
+
+    from .writer import SiemensWriter
+
+MACHINE_AXES = {"X": "X1", "Y": "Y1", "Z": "Z1"}
+"""Geometry axis -> its machine axis name in a G75 block (the 840D defaults [?], module docstring)."""
+_GEOMETRY = {machine: axis for axis, machine in MACHINE_AXES.items()}
+_BLOCK = re.compile(r"G0*75\s+FP\s*=\s*(\d+)((?:\s+[XYZ]1\s*=\s*[-+]?(?:\d+\.?\d*|\.\d+))+)\s*$", re.IGNORECASE)
+"""``G75 FP=<n>`` and its machine axes, alone in the block (after a skip, a block number or a label)."""
+_AXIS = re.compile(r"([XYZ]1)\s*=", re.IGNORECASE)
+
+
+class SiemensFixedPoint(Section):
+    """A ``G75 FP=<n>`` block as read: the fixed point and the geometry axes it moves, in order
+    (``resolve`` turns it into a move in machine coordinates)."""
+
+    XNAME = KEY = "SiemensFixedPoint"
+    __slots__ = ("number", "axes")
+    XATTRS = (XAttr("number", int), XAttr("axes", str))
+    number: int
+    axes: str
+
+    def __init__(self, number: int, axes: str) -> None:
+        self.number = number
+        self.axes = axes
+
+
+def read_fixed_point(code: str, pos: int) -> SiemensFixedPoint | None:
+    """The fixed-point approach of a block's words from ``pos``, or None when they are no plain
+    ``G75 FP=<n> Z1=0`` (any other G75 block is read as before: kept verbatim)."""
+    found = _BLOCK.match(code, pos)
+    if found is None:
+        return None
+    axes = "".join(_GEOMETRY[name.upper()] for name in _AXIS.findall(found.group(2)))
+    if len(set(axes)) != len(axes):
+        return None
+    return SiemensFixedPoint(int(found.group(1)), axes)
+
+
+def home_position(setup: MachineSetup, axis: str, inch: bool) -> float | None:
+    """The set-up's home of ``axis`` (machine coordinates) in program units, None where it gives none."""
+    travel = setup.travel.get(axis)
+    if travel is None or travel.home is None:
+        return None
+    return travel.home * setup.machine.mm() / (MM_PER_INCH if inch else 1.0)
+
+
+def missing_home(axis: str) -> str:
+    """The message for an axis whose home the set-up does not give."""
+    return (f"a reference return of axis {axis}: SINUMERIK writes it as G75 FP=1, fixed point 1 being the "
+            f"set-up's home position, which it does not give (add <Axes><Axis name=\"{axis}\" home=\"..\"/>)")
+
+
+def resolve(block: Block, ctx: Context, point: SiemensFixedPoint) -> None:
+    """``G75 FP=1``: a rapid move in machine coordinates to the set-up's home of each named axis."""
+    text = (block.text or "").upper()
+    if point.number != 1:
+        raise ProgramError(f"G75 FP={point.number}: only fixed point 1 is known (the set-up's <Axis home>); "
+                           "the set-up has no element for the others", ctx.at(block, text.find("FP") + 1 or 1))
+    inch = ctx.state.units == "inch"
+    axes: dict[str, float] = {}
+    for axis in point.axes:
+        value = home_position(ctx.setup, axis, inch)
+        if value is None:
+            raise ProgramError(f"G75 FP=1 moves axis {axis} to fixed point 1, taken as the set-up's home "
+                               f"position, which it does not give (add <Axes><Axis name=\"{axis}\" home=\"..\"/>)",
+                               ctx.at(block, text.find(MACHINE_AXES[axis]) + 1 or 1))
+        axes[axis] = value
+    block.add(MachineCoordinates())
+    block.add(Motion("rapid", axes))
+
+
+def g75_line(axes: list[str]) -> str:
+    """The fixed-point approach of ``axes`` (geometry names), without its end of line."""
+    return "G75 FP=1 " + " ".join(MACHINE_AXES[axis] + "=0" for axis in axes)
+
+
+def reference_return(writer: SiemensWriter, block: Block, motion: Motion) -> str:
+    """A reference return written for SINUMERIK: what the block sets in a block before, the intermediate
+    point as a ``G0`` move (none for Fanuc's ``G91 G28 Z0``), ``G75 FP=1`` alone, what the block ends after."""
+    sections = block.sections
+    if motion.mode != "home":
+        writer.unsupported("a return to the second reference position (G30): the set-up has no element for it "
+                           "(only each axis's home, written as fixed point 1)", block)
+    if "BlockDelete" in sections:
+        writer.unsupported("a block skip on a reference return (G75 is a block of its own)", block)
+    inch = writer.modal.units == "inch"
+    for axis in motion.axes:
+        if axis not in MACHINE_AXES:
+            writer.unsupported(f"a reference return of axis {axis} (G75 is written for X, Y and Z)", block)
+        if home_position(writer.ctx.setup, axis, inch) is None:
+            writer.unsupported(missing_home(axis), block)
+    moving = ("Motion", "Sequence")
+    before = {k: v for k, v in sections.items() if k not in moving and not after_motion(k, v)}
+    after = {k: v for k, v in sections.items() if k not in moving and k not in before}
+    if "Sequence" in sections:
+        before = {"Sequence": sections["Sequence"], **before}
+    text = writer.part(block, before) if before else ""
+    if motion.axes and (writer.modal.distance == "absolute" or any(v != 0 for v in motion.axes.values())):
+        text += writer.part(block, {"Motion": Motion("rapid", dict(motion.axes))})  # the intermediate point
+    for axis in motion.axes:
+        writer.carry.pop(axis, None)  # the axis is at its home: the next word of it is written
+    text += g75_line(list(motion.axes)) + "\n"
+    if after:
+        text += writer.part(block, after)
+    eol = block.eol or "\n"
+    return text[:-1] + eol if text.endswith("\n") else text
