@@ -28,6 +28,7 @@ from typing import TYPE_CHECKING
 
 from postproc.errors import ProgramError
 from postproc.event_order import after_motion
+from postproc.expr import Expr
 from postproc.ir import MachineCoordinates, Motion, Section
 from postproc.state import MM_PER_INCH
 from postproc.xmlio import XAttr
@@ -95,7 +96,7 @@ def resolve(block: Block, ctx: Context, point: SiemensFixedPoint) -> None:
         raise ProgramError(f"G75 FP={point.number}: only fixed point 1 is known (the set-up's <Axis home>); "
                            "the set-up has no element for the others", ctx.at(block, text.find("FP") + 1 or 1))
     inch = ctx.state.units == "inch"
-    axes: dict[str, float] = {}
+    axes: dict[str, float | Expr] = {}
     for axis in point.axes:
         value = home_position(ctx.setup, axis, inch)
         if value is None:
