@@ -27,7 +27,6 @@ import re
 from typing import TYPE_CHECKING
 
 from postproc.errors import ProgramError
-from postproc.event_order import after_motion
 from postproc.expr import Expr
 from postproc.ir import MachineCoordinates, Motion, Section
 from postproc.state import MM_PER_INCH
@@ -37,8 +36,6 @@ if TYPE_CHECKING:
     from postproc.context import Context
     from postproc.ir import Block
     from postproc.setup.machine_setup import MachineSetup
-
-    from .writer import SiemensWriter
 
 MACHINE_AXES = {"X": "X1", "Y": "Y1", "Z": "Z1"}
 """Geometry axis -> its machine axis name in a G75 block (the 840D defaults [?], module docstring)."""
@@ -83,6 +80,19 @@ def home_position(setup: MachineSetup, axis: str, inch: bool) -> float | None:
     return travel.home * setup.machine.mm() / (MM_PER_INCH if inch else 1.0)
 
 
+def reference_problem(setup: MachineSetup, motion: Motion, inch: bool) -> str | None:
+    """Why a reference return cannot be written as ``G75 FP=1``, or None when it can."""
+    if motion.mode != "home":
+        return ("a return to the second reference position (G30): the set-up has no element for it (only each "
+                "axis's home, written as fixed point 1)")
+    for axis in motion.axes:
+        if axis not in MACHINE_AXES:
+            return f"a reference return of axis {axis} (G75 is written for X, Y and Z)"
+        if home_position(setup, axis, inch) is None:
+            return missing_home(axis)
+    return None
+
+
 def missing_home(axis: str) -> str:
     """The message for an axis whose home the set-up does not give."""
     return (f"a reference return of axis {axis}: SINUMERIK writes it as G75 FP=1, fixed point 1 being the "
@@ -112,34 +122,3 @@ def g75_line(axes: list[str]) -> str:
     """The fixed-point approach of ``axes`` (geometry names), without its end of line."""
     return "G75 FP=1 " + " ".join(MACHINE_AXES[axis] + "=0" for axis in axes)
 
-
-def reference_return(writer: SiemensWriter, block: Block, motion: Motion) -> str:
-    """A reference return written for SINUMERIK: what the block sets in a block before, the intermediate
-    point as a ``G0`` move (none for Fanuc's ``G91 G28 Z0``), ``G75 FP=1`` alone, what the block ends after."""
-    sections = block.sections
-    if motion.mode != "home":
-        writer.unsupported("a return to the second reference position (G30): the set-up has no element for it "
-                           "(only each axis's home, written as fixed point 1)", block)
-    if "BlockDelete" in sections:
-        writer.unsupported("a block skip on a reference return (G75 is a block of its own)", block)
-    inch = writer.modal.units == "inch"
-    for axis in motion.axes:
-        if axis not in MACHINE_AXES:
-            writer.unsupported(f"a reference return of axis {axis} (G75 is written for X, Y and Z)", block)
-        if home_position(writer.ctx.setup, axis, inch) is None:
-            writer.unsupported(missing_home(axis), block)
-    moving = ("Motion", "Sequence")
-    before = {k: v for k, v in sections.items() if k not in moving and not after_motion(k, v)}
-    after = {k: v for k, v in sections.items() if k not in moving and k not in before}
-    if "Sequence" in sections:
-        before = {"Sequence": sections["Sequence"], **before}
-    text = writer.part(block, before) if before else ""
-    if motion.axes and (writer.modal.distance == "absolute" or any(v != 0 for v in motion.axes.values())):
-        text += writer.part(block, {"Motion": Motion("rapid", dict(motion.axes))})  # the intermediate point
-    for axis in motion.axes:
-        writer.carry.pop(axis, None)  # the axis is at its home: the next word of it is written
-    text += g75_line(list(motion.axes)) + "\n"
-    if after:
-        text += writer.part(block, after)
-    eol = block.eol or "\n"
-    return text[:-1] + eol if text.endswith("\n") else text

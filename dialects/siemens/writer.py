@@ -38,7 +38,7 @@ from postproc.rs274.writer import WordWriter
 from .codes import CODES
 from .control_writing import JumpTargets, expression, label_name, statement
 from .cycle_writing import Call, in_place_moves, moves_in_plane
-from .fixed_point import reference_return
+from .fixed_point import g75_line, reference_problem
 
 _WITH_DWELL = ("Dwell", "Sequence")
 _ALONE_WITH_DWELL = frozenset((*_WITH_DWELL, "Comments", "BlockDelete"))
@@ -88,7 +88,7 @@ class SiemensWriter(WordWriter):
             return self.end_call(block)
         motion = sections.get("Motion")
         if isinstance(motion, Motion) and motion.mode in ("home", "home2"):
-            return reference_return(self, block, motion)
+            return self.reference_return(block, motion)
         label = sections.get(LABEL)
         sequence = sections.get("Sequence")
         if sequence is not None:
@@ -208,7 +208,7 @@ class SiemensWriter(WordWriter):
         if sequence is not None:
             self.targets.mark(f"N{getattr(sequence, 'number')}")
         if head:
-            lines.append(self.part(block, head))
+            lines.append(self._part(block, head))
         if not moves_in_plane(cycle):
             if self.call is not None:
                 lines.append("MCALL\n")
@@ -216,9 +216,9 @@ class SiemensWriter(WordWriter):
             for kind, value in in_place_moves(cycle, call):
                 part: dict[str, Section] = ({"Dwell": Dwell(value)} if kind == "dwell"
                                             else {"Motion": Motion(kind, {"Z": value})})
-                lines.append(self.part(block, part))
+                lines.append(self._part(block, part))
             if tail:
-                lines.append(self.part(block, tail))
+                lines.append(self._part(block, tail))
             return self._cycle_text(block, lines)
         if call != self.call:
             if self.call is not None:
@@ -235,7 +235,7 @@ class SiemensWriter(WordWriter):
             words.extend(self.comment(t) for t in getattr(comments, "texts"))
         lines.append(" ".join(words) + "\n")
         if tail:
-            lines.append(self.part(block, tail))
+            lines.append(self._part(block, tail))
         return self._cycle_text(block, lines)
 
     def _cycle_text(self, block: Block, lines: list[str]) -> str:
@@ -256,11 +256,36 @@ class SiemensWriter(WordWriter):
         rest = self.generate(block)
         return "MCALL\n" + ("" if not rest.strip() or rest.strip() == ";" else rest)
 
-    def part(self, block: Block, sections: dict[str, Section]) -> str:
-        """The text of some of ``block``'s sections as a block of their own (a block split in order)."""
+    def _part(self, block: Block, sections: dict[str, Section]) -> str:
         part = Block(block.line, None, "\n")
         part.sections = sections
         return self.generate(part)
+
+    # -- reference returns (``fixed_point``) --------------------------------------------------------------
+    def reference_return(self, block: Block, motion: Motion) -> str:
+        """What the block sets in a block before, the intermediate point as a ``G0`` move (none for Fanuc's
+        ``G91 G28 Z0``), ``G75 FP=1`` alone, what the block ends after."""
+        sections = block.sections
+        problem = reference_problem(self.ctx.setup, motion, self.modal.units == "inch")
+        if problem is not None:
+            self.unsupported(problem, block)
+        if "BlockDelete" in sections:
+            self.unsupported("a block skip on a reference return (G75 is a block of its own)", block)
+        moving = ("Motion", "Sequence")
+        before = {k: v for k, v in sections.items() if k not in moving and not after_motion(k, v)}
+        after = {k: v for k, v in sections.items() if k not in moving and k not in before}
+        if "Sequence" in sections:
+            before = {"Sequence": sections["Sequence"], **before}
+        text = self._part(block, before) if before else ""
+        if motion.axes and (self.modal.distance == "absolute" or any(v != 0 for v in motion.axes.values())):
+            text += self._part(block, {"Motion": Motion("rapid", dict(motion.axes))})  # the intermediate point
+        for axis in motion.axes:
+            self.carry.pop(axis, None)  # the axis is at its home: its next word is written whole
+        text += g75_line(list(motion.axes)) + "\n"
+        if after:
+            text += self._part(block, after)
+        eol = block.eol or "\n"
+        return text[:-1] + eol if text.endswith("\n") else text
 
     # -- tool data (``postproc.isg_family.tool_data`` chose the D) ---------------------------------------
     def tool_length_offset_words(self, s: Any, block: Block) -> list[str]:
