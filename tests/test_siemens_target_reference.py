@@ -87,3 +87,11 @@ def test_reading_a_fixed_point_the_set_up_does_not_give_is_a_located_error(block
         _moves(f"%_N_T_MPF\nG0 X0 Y0 Z5\n{block}\nM30\n", setup)
     text = str(caught.value) + "".join(str(e) for e in getattr(caught.value, "errors", []))
     assert "out:3:" in text and needle in text
+
+
+@pytest.mark.parametrize("block", ["G75 FP=1 Z1=0", "G75 Z1=5", "N40 g75 fp=1 z1=0"])
+def test_g75_reads_as_a_rapid_to_the_home_with_no_tool(block: str, tmp_path: Path) -> None:
+    """No FP is fixed point 1, the value written is ignored [K]; with no D in force the tip is at Z's home."""
+    setup = _setup(tmp_path)
+    assert _moves(f"%_N_T_MPF\nG0 X5 Y6 Z3\n{block}\nG1 X7 F100\nM30\n", setup) == [
+        (5, 6, 3), (5, 6, -10), (7, 6, -10)]

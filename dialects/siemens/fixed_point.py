@@ -3,15 +3,19 @@
 Why ``G75`` and not ``G53``/``G153``/``SUPA``: those suppress the frames for one block, but whether they
 suppress the tool length and radius too is machine data (``$MN_G53_TOOLCORR``) [V: SINUMERIK 802D sl/840D
 ISO Milling programming manual 04.07, 3.1.1 "Machine coordinate system (G53)"], so their meaning is not
-certain from the program. ``G75`` is [K: 840D sl Fundamentals "Fixed point approach (G75)", as quoted on
+certain from the program. ``G75`` is [K: SINUMERIK ONE NC programming, Programming Manual 12/2019
+6FC5398-2EP40-0BA0, 2.14 p.361; 840D sl Fundamentals "Fixed point approach (G75)", as quoted on
 en.cncforum.net/t/196]:
 
 * non-modal, in a block of its own; the group-1 code in force before it (G0, G1...) is in force after it;
-* it moves the named machine axes at rapid to fixed point ``FP=<n>`` (1 when no FP is written), a
-  position in machine data (``MD30600 $MA_FIX_POINT_POS``), with no offset in effect (no frame, no work
-  offset, no tool length): where Fanuc's G28 puts the spindle, at its reference point (a parameter too);
-* the axes are machine axes, each written with any value (ignored), e.g. ``Z1=0``. ``X1``/``Y1``/``Z1`` are
-  the default machine axis names [?: MD10000 ``AXCONF_MACHAX_NAME_TAB``; a machine builder may rename them].
+* it moves the named axes as machine axes at rapid (internally ``SUPA`` with ``G0 RTLIOF``) to fixed point
+  ``FP=<n>`` (1 when no FP is written), a position in machine data (``MD30600 $MA_FIX_POINT_POS``): all
+  active frames are ignored and no offset is in effect, so no tool length either: the slide goes where
+  Fanuc's G28 puts the spindle, at its reference point (a parameter too). An external work offset, DRF and
+  ``$AA_OFF`` still shift it [K: p.361]: machine state a translation never sets;
+* each axis is written by its machine axis name with any value (ignored), e.g. ``Z1=0``. ``X1``/``Y1``/``Z1``
+  are the default machine axis names [?: MD10000 ``AXCONF_MACHAX_NAME_TAB``; a machine builder may rename
+  them], and the spelling shop programs use (``G75 FP=1 Z1=0 Y1=0 X1=0``) [K].
 
 So fixed point 1 is the set-up's ``<Axis home>`` (where a reference return goes, as on ISG): the writer
 writes the intermediate point as a ``G0`` move, then ``G75 FP=1``; the reader reads ``G75 FP=1`` back as a
@@ -40,7 +44,7 @@ if TYPE_CHECKING:
 MACHINE_AXES = {"X": "X1", "Y": "Y1", "Z": "Z1"}
 """Geometry axis -> its machine axis name in a G75 block (the 840D defaults [?], module docstring)."""
 _GEOMETRY = {machine: axis for axis, machine in MACHINE_AXES.items()}
-_BLOCK = re.compile(r"G0*75\s+FP\s*=\s*(\d+)((?:\s+[XYZ]1\s*=\s*[-+]?(?:\d+\.?\d*|\.\d+))+)\s*$", re.IGNORECASE)
+_BLOCK = re.compile(r"G0*75(?:\s+FP\s*=\s*(\d+))?((?:\s+[XYZ]1\s*=\s*[-+]?(?:\d+\.?\d*|\.\d+))+)\s*$", re.IGNORECASE)
 """``G75 FP=<n>`` and its machine axes, alone in the block (after a skip, a block number or a label)."""
 _AXIS = re.compile(r"([XYZ]1)\s*=", re.IGNORECASE)
 
@@ -69,7 +73,7 @@ def read_fixed_point(code: str, pos: int) -> SiemensFixedPoint | None:
     axes = "".join(_GEOMETRY[name.upper()] for name in _AXIS.findall(found.group(2)))
     if len(set(axes)) != len(axes):
         return None
-    return SiemensFixedPoint(int(found.group(1)), axes)
+    return SiemensFixedPoint(int(found.group(1) or 1), axes)
 
 
 def home_position(setup: MachineSetup, axis: str, inch: bool) -> float | None:
