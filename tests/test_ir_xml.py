@@ -242,6 +242,7 @@ SAMPLES: dict[str, list[tuple[Builder, str]]] = {
     "SiemensArc": [(lambda c: c["SiemensArc"](90.0), '<SiemensArc angle="90.0"/>')],
     "SiemensCip": [(lambda c: c["SiemensCip"](0.0, 10.0), '<SiemensCip i1="0.0" j1="10.0"/>'),
                    (lambda c: c["SiemensCip"](1.0, 2.0, 3.0), '<SiemensCip i1="1.0" j1="2.0" k1="3.0"/>')],
+    "SiemensFixedPoint": [(lambda c: c["SiemensFixedPoint"](1, "ZY"), '<SiemensFixedPoint number="1" axes="ZY"/>')],
     **CONTROL_SAMPLES,
 }
 

@@ -132,9 +132,10 @@ def _examples() -> list[Path]:
 
 @pytest.mark.parametrize("path", _examples(), ids=lambda p: p.name)
 def test_bundled_fanuc_examples_read_back_to_the_same_toolpath(path: Path) -> None:
-    """Each bundled Fanuc example, its reference returns (``G91 G28 Z0.``, which the SINUMERIK writer refuses:
-    no reference return is written for it yet) replaced by a rapid to Z100: the G81/G82 cycles are native
-    wherever a G81 drills holes after its first, and the translation verifies at zero deviation."""
+    """Each bundled Fanuc example, its reference returns (``G91 G28 Z0.``, written ``G75 FP=1`` only where the
+    set-up gives the home: ``test_siemens_target_reference``; this one gives none) replaced by a rapid to Z100:
+    the G81/G82 cycles are native wherever a G81 drills holes after its first, and the translation verifies at
+    zero deviation."""
     text = re.sub(r"G91 G28 Z0\.", "G90 G0 Z100.", path.read_text())
     out, _ = _translate(text)
     _verified(text, out)

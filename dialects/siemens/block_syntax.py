@@ -25,6 +25,8 @@ from postproc.rs274.codes import CodeTable, g_key
 
 from .arcs import CIP_KEY, SiemensArc, SiemensCip, arc_words, cip_words
 from .codes import CODES, GEOMETRY_UNITS
+from .fixed_point import SiemensFixedPoint
+from .fixed_point import resolve as resolve_fixed_point
 from .cycles import MCALL_KEY, CycleLevels, SiemensCycleRules, keep_verbatim
 from .holes import SiemensHoles
 from .holes import resolve as resolve_holes
@@ -46,6 +48,10 @@ class SiemensBlockSyntax(WordBlockSyntax):
     POINTLESS_IN_UNITS: ClassVar[bool] = True
 
     def build(self, block: Block, ctx: Context) -> None:
+        point = block.sections.pop(SiemensFixedPoint.KEY, None)
+        if isinstance(point, SiemensFixedPoint):
+            resolve_fixed_point(block, ctx, point)
+            return
         arc = block.sections.pop(SiemensArc.KEY, None)
         if isinstance(arc, SiemensArc):
             arc_words(block, ctx, arc)

@@ -14,8 +14,9 @@ means something else on a Fanuc control, the table is what tells them apart (iss
   frame G500 holds) is kept verbatim [?].
 * ``G4`` takes its time in ``F`` (seconds) or ``S`` (spindle revolutions, not modelled), never a feed.
 * ``G33`` is thread cutting, ``G331``/``G332`` rigid tapping: kept verbatim.
-* ``G53``/``G153`` suppress the frames for one block (not Fanuc's move in machine coordinates, and the tool
-  offset stays [?]): kept verbatim, as are ``G641``/``G642`` (corner rounding: the path is not sharp)
+* ``G53``/``G153`` suppress the frames for one block (not Fanuc's move in machine coordinates; whether the
+  tool offsets stay is machine data ``$MN_G53_TOOLCORR`` [V: 802D sl/840D ISO Milling 04.07, 3.1.1]): kept
+  verbatim (a reference return is written as ``G75``: ``fixed_point``), as are ``G641``/``G642`` (corner rounding: the path is not sharp)
   and ``G9``'s companions ``G601``-``G603``.
 * ``M17`` ends a subprogram: the reader reads it as a return.
 """

@@ -18,6 +18,8 @@ Read into neutral sections:
   and a bare ``MCALL`` (``cycles``: which are read, which kept verbatim); ``HOLES1(..)``/``HOLES2(..)`` (``holes``);
 * ``TRANS``/``ATRANS``, ``ROT``/``AROT``, ``SCALE``/``ASCALE``, ``MIRROR``/``AMIRROR`` with numbers, alone in
   their block: the neutral frame change under the ``chain`` rules (``frames``);
+* ``G75 FP=1 Z1=0`` alone in a block (``fixed_point``: a rapid move in machine coordinates to the set-up's
+  home);
 * ``DEF REAL|INT|BOOL NAME[=value], ...`` (an assignment of the value, 0 when none is given [K]);
 * ``IF``/``ELSE``/``ENDIF``, ``WHILE``/``ENDWHILE``, ``FOR``/``TO``/``ENDFOR``, ``REPEAT``/``UNTIL``,
   ``LOOP``/``ENDLOOP`` (liufang-robot SPEC; Job planning p.107 [K]); ``GOTOF``/``GOTOB``/``GOTO``/``GOTOC``
@@ -61,6 +63,7 @@ from .call_reading import NAME_START as _NAME_START
 from .call_reading import NUMBER_START as _NUMBER_START
 from .arcs import SiemensArc, SiemensCip
 from .cycles import CYCLES
+from .fixed_point import read_fixed_point
 from .frames import STATEMENTS as FRAME_STATEMENTS, read_frame
 from .holes import PARAMETERS as HOLES
 from .expressions import name_at, parse_expr, parse_variable, skip
@@ -184,6 +187,10 @@ class _State(CallReading):
                 self.labels.setdefault(name, []).append(line)
                 pos = skip(code, end + 1)
         if pos >= n:
+            return
+        point = read_fixed_point(code, pos)
+        if point is not None:
+            block.add(point)
             return
         if code[pos] in _NAME_START:
             end = name_at(code, pos)

@@ -16,6 +16,8 @@ comments and ``%_N_NAME_MPF`` headers.
   is written as the D it needs (``postproc.isg_family.tool_data``); a negative offset (G44) is refused.
 * Another dialect's tape mark ``%`` is the comment ``;%`` (a SINUMERIK ``%`` line is a header).
 * Units: ``G710``/``G700`` (lengths and feeds), never G71/G70 (lengths only).
+* A reference return (Fanuc ``G28``) is its intermediate point, then ``G75 FP=1`` to the set-up's home
+  (``fixed_point``).
 """
 
 from __future__ import annotations
@@ -36,6 +38,7 @@ from postproc.rs274.writer import WordWriter
 from .codes import CODES
 from .control_writing import JumpTargets, expression, label_name, statement
 from .cycle_writing import Call, in_place_moves, moves_in_plane
+from .fixed_point import g75_line, reference_problem
 
 _WITH_DWELL = ("Dwell", "Sequence")
 _ALONE_WITH_DWELL = frozenset((*_WITH_DWELL, "Comments", "BlockDelete"))
@@ -83,6 +86,9 @@ class SiemensWriter(WordWriter):
             return self.cycle_block(block, cycle)
         if self.call is not None and (not _ENDS_CALL.isdisjoint(sections) or _ends_program(sections)):
             return self.end_call(block)
+        motion = sections.get("Motion")
+        if isinstance(motion, Motion) and motion.mode in ("home", "home2"):
+            return self.reference_return(block, motion)
         label = sections.get(LABEL)
         sequence = sections.get("Sequence")
         if sequence is not None:
@@ -254,6 +260,32 @@ class SiemensWriter(WordWriter):
         part = Block(block.line, None, "\n")
         part.sections = sections
         return self.generate(part)
+
+    # -- reference returns (``fixed_point``) --------------------------------------------------------------
+    def reference_return(self, block: Block, motion: Motion) -> str:
+        """What the block sets in a block before, the intermediate point as a ``G0`` move (none for Fanuc's
+        ``G91 G28 Z0``), ``G75 FP=1`` alone, what the block ends after."""
+        sections = block.sections
+        problem = reference_problem(self.ctx.setup, motion, self.modal.units == "inch")
+        if problem is not None:
+            self.unsupported(problem, block)
+        if "BlockDelete" in sections:
+            self.unsupported("a block skip on a reference return (G75 is a block of its own)", block)
+        moving = ("Motion", "Sequence")
+        before = {k: v for k, v in sections.items() if k not in moving and not after_motion(k, v)}
+        after = {k: v for k, v in sections.items() if k not in moving and k not in before}
+        if "Sequence" in sections:
+            before = {"Sequence": sections["Sequence"], **before}
+        text = self._part(block, before) if before else ""
+        if motion.axes and (self.modal.distance == "absolute" or any(v != 0 for v in motion.axes.values())):
+            text += self._part(block, {"Motion": Motion("rapid", dict(motion.axes))})  # the intermediate point
+        for axis in motion.axes:
+            self.carry.pop(axis, None)  # the axis is at its home: its next word is written whole
+        text += g75_line(list(motion.axes)) + "\n"
+        if after:
+            text += self._part(block, after)
+        eol = block.eol or "\n"
+        return text[:-1] + eol if text.endswith("\n") else text
 
     # -- tool data (``postproc.isg_family.tool_data`` chose the D) ---------------------------------------
     def tool_length_offset_words(self, s: Any, block: Block) -> list[str]:
