@@ -48,6 +48,8 @@ from __future__ import annotations
 import math
 from typing import Callable, Iterator
 
+from mypy_extensions import mypyc_attr
+
 from ..block_rules import ArcError, arc_centre
 from ..context import Context
 from ..dialect import Dialect
@@ -153,6 +155,7 @@ def _native(resolver: "_Resolver", cc: CutterCompensation) -> bool:
     return True
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class _Resolver:
     """The compensation state of one translation, and the blocks it has released."""
 
