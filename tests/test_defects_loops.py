@@ -38,23 +38,29 @@ def errors(text: str, setup: MachineSetup, target: str = "grbl") -> list[str]:
 
 
 @pytest.mark.parametrize("target", ["grbl", "toolpath"])
-def test_the_bolt_circle_without_its_counter_is_refused_at_its_second_end(target: str) -> None:
+def test_the_bolt_circle_without_its_counter_is_refused_at_its_head(target: str) -> None:
     damaged = BOLT_CIRCLE.replace("#10=#10+1\n", "")
-    # END1 is line 19 once the counter's line 18 is gone; the first G65 call (line 8) runs it
-    assert errors(damaged, SETUP, target) == [f"in.nc:19:1: error: {NEVER} (in O9010, called from in.nc line 8)"]
+    # nothing in the loop sets #10 or #1 once the counter's line 18 is gone: its test (line 16) cannot change
+    # (``postproc.interp.fixed_test``); the first G65 call (line 8) runs it
+    assert errors(damaged, SETUP, target) == [
+        "in.nc:16:1: error: loop 'WHILE [#10 LT #1] DO1' never ends: its test reads no variable the loop sets and "
+        "nothing in the loop leaves it (does the program count the variable it tests?) (in O9010, called from "
+        "in.nc line 8)"]
 
 
 @pytest.mark.parametrize("target", ["grbl", "toolpath"])
 def test_an_endless_loop_of_moves_is_refused_long_before_the_work_bound(target: str) -> None:
-    program = "G21 G90 G0 X0 Y0 Z5.\n#1=0\nWHILE [#1 LT 10] DO1\nG01 X1. F100.\nX0.\nEND1\nM30\n"
-    assert errors(program, SMALL, target) == [f"in.nc:6:1: error: {NEVER}"]
+    # the loop sets the variable it tests (so its test may change), to the value it had
+    program = "G21 G90 G0 X0 Y0 Z5.\n#1=0\nWHILE [#1 LT 10] DO1\nG01 X1. F100.\nX0.\n#1=#1\nEND1\nM30\n"
+    assert errors(program, SMALL, target) == [f"in.nc:7:1: error: {NEVER}"]
 
 
-def test_a_loop_that_counts_a_variable_it_never_tests_still_meets_the_work_bound() -> None:
+def test_a_loop_that_counts_a_variable_it_never_tests_is_refused_at_its_head() -> None:
+    """It met the work bound (seconds); now its test is seen to be fixed (tests/test_defects_fixed_tests.py)."""
     program = "#1=0\nWHILE [#1 LT 10] DO1\n#2=#2+1\nEND1\nM30\n"
     assert errors(program, SMALL) == [
-        "in.nc:4:1: error: loop 'END1' repeats more than 20000 blocks and moves in all (the set-up's bound on work "
-        "run again, <Limits repeatedWork=\"20000\"/>)"]
+        "in.nc:2:1: error: loop 'WHILE [#1 LT 10] DO1' never ends: its test reads no variable the loop sets and "
+        "nothing in the loop leaves it (does the program count the variable it tests?)"]
 
 
 def test_loops_that_repeat_their_variables_across_calls_and_entries_run() -> None:

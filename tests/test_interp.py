@@ -332,7 +332,7 @@ def test_library_subprogram_is_read_through_the_dialects_reader(tmp_path):
 
 def test_endless_while_hits_the_loop_bound():
     p = P()
-    p(control=While("1", Num(1.0)))
+    p(control=While("1", Binary("ne", v(1), Num(-1.0))))  # tests the count (a fixed test is refused at once)
     p(("X", "1."))
     p(control=EndWhile("1"), assign=[(v(1), Binary("add", v(1), Num(1.0)))])  # counts: no iteration repeats
     assert error_of(p, limits=Limits(loop_iterations=100)) == (

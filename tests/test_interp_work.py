@@ -28,7 +28,7 @@ def test_the_bound_counts_blocks_run_again_not_iterations():
     # again (the while, ten moves, the end): iterations 2-9 run 96, the tenth its while and three moves
     # (100), and its fourth move is the 101st
     p = P()
-    p(control=While("1", Num(1.0)))
+    p(control=While("1", Binary("ne", Var(Num(1.0)), Num(-1.0))))  # tests the count (a fixed test is refused at once)
     for i in range(10):
         p(("X", f"{i}."))
     p(control=EndWhile("1"), assign=[(Var(Num(1.0)), Binary("add", Var(Num(1.0)), Num(1.0)))])  # counts: no iteration repeats
@@ -71,19 +71,19 @@ def _stream(program: P, limits: Limits):
 HOSTILE = [
     # (dialect, program, the repetition named: line:col and how; a recursion: either of its two calls)
     ("fanuc", "#1=#1+1\nM99\n", "2:1: error: return 'M99'"),
-    ("fanuc", "#1=0\nWHILE [1 EQ 1] DO1\nG0 X#1\n#1=#1+1\nEND1\nM30\n", "5:1: error: loop 'END1'"),
+    ("fanuc", "#1=0\nWHILE [#1 GE 0] DO1\nG0 X#1\n#1=#1+1\nEND1\nM30\n", "5:1: error: loop 'END1'"),
     ("fanuc", "#1=0\nN1 G0 X#1\nGOTO 1\nM30\n", "3:1: error: jump 'GOTO 1'"),
     # each level calls itself twice down to level 40: 2^40 calls
     ("fanuc", "O1\n#1=0\nM98 P1000\nM30\nO1000\n#1=#1+1\nIF [#1 GT 40] GOTO 9\nM98 P1000\nM98 P1000\n"
               "N9 #1=#1-1\nM99\n", ("8:1: error: call 'M98 P1000'", "9:1: error: call 'M98 P1000'")),
-    ("isg", "%1\nP1=0\n$WHILE 1\nG0 X[P1]\n$ENDWHILE\nM30\n", "5:1: error: loop '$ENDWHILE'"),
-    ("isg", "%1\n$FOR P1 = 0, 10, 0\nG0 X[P1]\n$ENDFOR\nM30\n", "4:1: error: loop '$ENDFOR'"),
+    ("isg", "%1\nP1=0\n$WHILE P1 >= 0\nG0 X[P1]\nP1=P1+1\n$ENDWHILE\nM30\n", "6:1: error: loop '$ENDWHILE'"),
+    ("isg", "%1\n$FOR P1 = 0, 1000000000, 1\nG0 X[P1]\n$ENDFOR\nM30\n", "4:1: error: loop '$ENDFOR'"),
     ("linuxcnc", "o100 repeat [99999999]\nG0 X1\no100 endrepeat\nM2\n", "3:1: error: loop 'o100 endrepeat'"),
     # a cycle of 9999 holes (4 moves each) in an endless loop: the moves of a block run again count
-    ("fanuc", "G90 G0 X0 Y0 Z10\n#1=0\nWHILE [1 EQ 1] DO1\nG81 X0 Y0 Z-1 R1 K9999 F100\nG80\nEND1\nM30\n",
-     "6:1: error: loop 'END1'"),
-    ("linuxcnc", "G90 G0 X0 Y0 Z10\no1 while [1]\nG81 X0 Y0 Z-1 R1 L9999 F100\nG80\no1 endwhile\nM2\n",
-     "5:1: error: loop 'o1 endwhile'"),
+    ("fanuc", "G90 G0 X0 Y0 Z10\n#1=0\nWHILE [#1 GE 0] DO1\nG81 X0 Y0 Z-1 R1 K9999 F100\nG80\n#1=#1+1\nEND1\nM30\n",
+     "7:1: error: loop 'END1'"),
+    ("linuxcnc", "G90 G0 X0 Y0 Z10\no1 while [#1 GE 0]\nG81 X0 Y0 Z-1 R1 L9999 F100\nG80\n#1=[#1+1]\no1 endwhile\nM2\n",
+     "6:1: error: loop 'o1 endwhile'"),
     ("linuxcnc", "o<w> sub\n#<d>=[#1+1]\no100 if [#<d> LT 40]\no<w> call [#<d>]\no<w> call [#<d>]\no100 endif\n"
                  "G0 X1\no<w> endsub\no<w> call [0]\nM2\n",
      ("4:1: error: call 'o<w> call [#<d>]'", "5:1: error: call 'o<w> call [#<d>]'")),

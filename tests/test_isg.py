@@ -285,10 +285,13 @@ def test_cyl_is_never_simulated() -> None:
 
 SMALL = MachineSetup(limits=Limits(loop_iterations=1000, call_depth=8))
 HOSTILE = [
-    ("G71\nP1=1\n$WHILE P1 > 0\nG01 X1 F100\n$ENDWHILE\nM30\n", "in.nc:5:1: error: loop '$ENDWHILE' exceeds the "
+    ("G71\nP1=1\n$WHILE P1 > 0\nG01 X1 F100\nP1=P1+1\n$ENDWHILE\nM30\n", "in.nc:6:1: error: loop '$ENDWHILE' "
+     "exceeds the set-up's bound of 1000 loop iterations"),
+    ("G71\n$FOR P1 = 0, 1000000000, 1\nG01 X1 F100\n$ENDFOR\nM30\n", "in.nc:4:1: error: loop '$ENDFOR' exceeds the "
      "set-up's bound of 1000 loop iterations"),
-    ("G71\n$FOR P1 = 0, 10, 0\nG01 X1 F100\n$ENDFOR\nM30\n", "in.nc:4:1: error: loop '$ENDFOR' exceeds the "
-     "set-up's bound of 1000 loop iterations"),
+    # a test nothing in the loop changes, or an iteration as the one before: refused at once (test_defects_loops)
+    ("G71\nP1=1\n$WHILE P1 > 0\nG01 X1 F100\n$ENDWHILE\nM30\n", "in.nc:3:1: error: loop '$WHILE P1 > 0' never ends"),
+    ("G71\n$FOR P1 = 0, 10, 0\nG01 X1 F100\n$ENDFOR\nM30\n", "in.nc:4:1: error: loop '$ENDFOR' never ends"),
     ("%L REC\nG01 X1 F100\nLL REC\nM17\n%main\nG71\nLL REC\nM30\n", "in.nc:3:1: error: 'LL REC' exceeds the "
      "set-up's bound of 8 nested calls"),
     ("G71\nP1=0\nG01 X[10/P1] F100\nM30\n", "in.nc:3:5: error: division by zero in 10/#501"),

@@ -300,7 +300,8 @@ def test_if_else_and_def_int_rounds() -> None:
 
 
 def test_an_endless_loop_is_stopped_by_the_bound() -> None:
-    errors = _errors("G710 G90 G0 X0\nLOOP\nG1 X1 F10\nG1 X0\nENDLOOP\nM30\n", "siemens", "linuxcnc")
+    errors = _errors("G710 G90 G0 X0\nR1=0\nWHILE R1>=0\nG1 X1 F10\nG1 X0\nR1=R1+1\nENDWHILE\nM30\n", "siemens",
+                     "linuxcnc")
     assert "repeats more than" in errors[0]
 
 

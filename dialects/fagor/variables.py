@@ -9,7 +9,7 @@
 
 from __future__ import annotations
 
-from typing import Callable
+from typing import Callable, Hashable
 
 from postproc.expr import Arithmetic, EvalError, Vacancy, Value, VarKey
 from postproc.interp.variables import MACHINE_ONLY
@@ -49,6 +49,14 @@ class FagorVariables:
         if value is None:
             raise EvalError(f"P{int(key) - P_BASE} is read before it is set")
         return value
+
+    def snapshot(self) -> Hashable | None:
+        """The P parameters: all a program can read (a ``V.`` variable is refused); the least increment."""
+        return (tuple(sorted(self.shared.items())), self._increment())
+
+    def plain(self, key: VarKey) -> bool:
+        """The P parameters (only assignments change them)."""
+        return isinstance(key, int) and P_BASE + 1 <= key <= P_BASE + P_LAST
 
     def exists(self, key: VarKey) -> bool:
         """The family reads ``EXIST[..]`` (ISG's); whether the 8070 has it is not known [?]."""

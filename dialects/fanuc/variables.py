@@ -59,6 +59,17 @@ class HaasVariables(MacroBVariables):
         self._saw(key)
         super().write(key, value)
 
+    def plain(self, key: VarKey) -> bool:
+        """Fanuc's plain variables and the NGC's general-purpose ones, but a common of a numbering the
+        program has not used first (its write may be the error of mixing the two)."""
+        if not isinstance(key, int):
+            return False
+        ngc = GENERAL[0] <= key <= GENERAL[1] and not any(low <= key <= high for low, high, _ in HAAS_SYSTEM)
+        if not ngc and not super().plain(key):
+            return False
+        numbering = "NGC" if ngc else "legacy" if _legacy(key) else None
+        return numbering is None or self.numbering is not None and self.numbering[0] == numbering
+
     def _ngc(self, key: int) -> bool:
         """True for a general-purpose NGC number (the program's); a machine-set one is refused here."""
         if not GENERAL[0] <= key <= GENERAL[1] and not HAAS_SYSTEM[-1][0] <= key <= HAAS_SYSTEM[-1][1]:

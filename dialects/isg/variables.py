@@ -12,7 +12,7 @@
 
 from __future__ import annotations
 
-from typing import Callable
+from typing import Callable, Hashable
 
 from postproc.expr import Arithmetic, EvalError, Vacancy, Value, VarKey
 from postproc.interp.variables import MACHINE_ONLY
@@ -63,6 +63,20 @@ class IsgVariables:
         if value is None:
             raise EvalError(f"{_spell(key)} is read before it is set")
         return float(value)
+
+    def snapshot(self) -> Hashable | None:
+        """The P parameters, the shared and this level's self-defined variables: all a program can read (a
+        machine's variable is refused); the least increment beside them."""
+        return (len(self.levels), tuple(sorted(self.shared.items(), key=str)), tuple(sorted(self.levels[-1].items())),
+                self._increment())
+
+    def plain(self, key: VarKey) -> bool:
+        """The P parameters and the self-defined variables (only assignments change them)."""
+        try:
+            self._store(key)
+        except EvalError:
+            return False
+        return True
 
     def exists(self, key: VarKey) -> bool:
         """EXIST[V.P.NAME]: the self-defined variable was declared or set (a P parameter: was set); a

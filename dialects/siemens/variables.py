@@ -11,7 +11,7 @@
 
 from __future__ import annotations
 
-from typing import Callable
+from typing import Callable, Hashable
 
 from postproc.expr import Arithmetic, EvalError, Vacancy, Value, VarKey
 from postproc.interp.variables import MACHINE_ONLY
@@ -53,6 +53,18 @@ class SiemensVariables:
         if value is None:
             raise EvalError(f"{_spell(key)} is read before it is set")
         return float(value)
+
+    def snapshot(self) -> Hashable | None:
+        """The R parameters and this level's user variables and arguments: all a program can read (a ``$``
+        variable is refused); the least increment beside them."""
+        return (len(self.levels), tuple(sorted(self.shared.items())), tuple(sorted(self.levels[-1].items())),
+                self._increment())
+
+    def plain(self, key: VarKey) -> bool:
+        """The R parameters and the user variables (not the ``%`` ones a call sets)."""
+        if isinstance(key, int):
+            return R_BASE <= key <= R_BASE + R_LAST
+        return not key.startswith(("$", "%"))
 
     def exists(self, key: VarKey) -> bool:
         raise EvalError("SINUMERIK has no test for a variable's existence here")

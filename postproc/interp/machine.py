@@ -205,10 +205,13 @@ class Interpreter(RunState):
                 self._assign(control.assign)
             frame.pc += 1
         elif isinstance(control, While):
-            if frame.back != pos:
+            fresh = frame.back != pos
+            if fresh:
                 frame.seen.pop(pos, None)  # entered afresh: its earlier runs say nothing of this one
             frame.back = -1
             if _true(evaluate(control.cond, vars_)):
+                if fresh:
+                    self._fixed(frame, pos, program.pairs[pos], control.cond, block)
                 frame.pc += 1
                 yield from self._note(frame, block, "iteration")
             else:
@@ -220,12 +223,16 @@ class Interpreter(RunState):
             frame.pc = head  # back to the head: its test runs again
             frame.back = head
         elif isinstance(control, Do):
+            frame.seen.pop(pos, None)  # entered afresh (its end goes back past it)
             frame.pc += 1
             yield from self._note(frame, block, "iteration")
         elif isinstance(control, DoWhile):
             if _true(evaluate(control.cond, vars_)):
                 self._spend(block, "loop")
-                frame.pc = program.pairs[pos] + 1
+                head = program.pairs[pos]
+                self._fixed(frame, head, pos, control.cond, block)
+                self._endless(frame, head, block, "loop")
+                frame.pc = head + 1
                 yield from self._note(frame, program.blocks[program.pairs[pos]], "iteration")
             else:
                 frame.pc += 1
@@ -254,6 +261,7 @@ class Interpreter(RunState):
             stride = evaluate_number(control.step, vars_, "the loop's step")
             vars_.write(var_key(control.counter, vars_), first)
             frame.fors[pos] = (last, stride)
+            frame.seen.pop(pos, None)  # entered afresh (its end goes back past it)
             if _counting(first, last, stride):
                 frame.pc += 1
                 yield from self._note(frame, block, "iteration")
@@ -268,6 +276,7 @@ class Interpreter(RunState):
             vars_.write(key, counted)
             if _counting(counted, last, stride):
                 self._spend(block, "loop")
+                self._endless(frame, head, block, "loop")
                 frame.pc = head + 1
                 yield from self._note(frame, program.blocks[head], "iteration")
             else:
@@ -277,7 +286,10 @@ class Interpreter(RunState):
                 frame.pc += 1
             else:
                 self._spend(block, "loop")
-                frame.pc = program.pairs[pos] + 1
+                head = program.pairs[pos]
+                self._fixed(frame, head, pos, control.cond, block)
+                self._endless(frame, head, block, "loop")
+                frame.pc = head + 1
                 yield from self._note(frame, program.blocks[program.pairs[pos]], "iteration")
         elif isinstance(control, Switch):
             selector = evaluate_number(control.value, vars_, "the switch value")

@@ -14,6 +14,7 @@ from ..setup.machine_setup import Limits
 from .frame import Frame
 from .host import NO_MOVES, Host, Interrupt, MoveCount, Reporter
 from .rules import STORED_PROGRAMS, SubprogramRules
+from .fixed_test import test_is_fixed
 from .store import Program, ProgramStore, source_text
 from .variables import Snapshots, Variables
 
@@ -63,6 +64,8 @@ class RunState:
         bakes in what the statement did, so the operator's switch could no longer skip it."""
         self.snapshots: Snapshots | None = variables if isinstance(variables, Snapshots) else None
         """The variables, where they can say all a program reads of them at once (``_endless``)."""
+        self.fixed_tests: dict[tuple[int, int], bool] = {}
+        """(id of a program, position of a loop's head) -> whether its test can never change (``_fixed``)."""
         self.vacant_word: str | None = None
         """Set: a word whose value is vacant is an error with this explanation instead of being omitted (the
         check run of a program kept symbolically for a target that would not omit it)."""
@@ -135,6 +138,38 @@ class RunState:
             raise ProgramError(f"{what} '{source_text(block)}' never ends: it runs again with every variable as "
                                "the time before, so nothing can change (does the program count its variable?)")
         frame.seen[key] = now
+
+    def _fixed(self, frame: Frame, head: int, end: int, cond: Expr, block: Block) -> None:
+        """A loop (blocks ``head`` .. ``end``) runs on because its test ``cond`` (in ``block``) holds: refuse
+        it now if the test can never change and nothing in the loop leaves it (``fixed_test``), rather
+        than run it to the work bound (a loop counting a variable it never tests took ten seconds)."""
+        snapshots = self.snapshots
+        if snapshots is None or self.modal is not None:
+            return  # a modal call in force runs a macro after each move
+        key = (id(frame.program), head)
+        fixed = self.fixed_tests.get(key)
+        if fixed is None:
+            fixed = test_is_fixed(frame.program, head, end, head, cond, snapshots.plain, self._may_end)
+            self.fixed_tests[key] = fixed
+        if fixed:
+            raise ProgramError(f"loop '{source_text(block)}' never ends: its test reads no variable the loop "
+                               "sets and nothing in the loop leaves it (does the program count the variable it "
+                               "tests?)")
+
+    def _may_end(self, block: Block) -> bool:
+        """The stored ``block`` ends the program, or may: a word of an end code's letter whose number is
+        computed (every computed word of a letter that moves no axis, where the host names no end codes)."""
+        if self.host.is_program_end(block):
+            return True
+        codes = getattr(self.host, "END_CODES", None)
+        letters = None if codes is None else {letter.upper() for letter, _ in codes}
+        values = block.values
+        for letter, text in block.words:
+            up = letter.upper()
+            if isinstance(values.get(up), Expr) and not is_number(text) and (
+                    up in letters if letters is not None else up not in self.host.AXIS_LETTERS):
+                return True
+        return False
 
     def _spend(self, block: Block, what: str, back: bool = True) -> None:
         """Count a repetition (``back``: it runs blocks again, so the work bound may name it; a jump

@@ -75,11 +75,17 @@ class Variables(Protocol):
 @runtime_checkable
 class Snapshots(Protocol):
     """Variables that can say everything a program reads of them as one comparable value: the interpreter
-    then knows a while loop that ends an iteration as it ended the one before can never end."""
+    then knows a loop that ends an iteration as it ended the one before can never end, and which of them
+    only the program's assignments change."""
 
     def snapshot(self) -> Hashable | None:
         """Every value a program can read now (None: some depend on more than the variables, such as
         the machine's frames, so no two moments compare)."""
+
+    def plain(self, key: VarKey) -> bool:
+        """Only the program's assignments change ``key``, and assigning it does nothing else (False: the
+        machine's, an alarm, or one a call sets): a loop whose test reads only plain variables its body
+        never sets cannot end by its test (``postproc.interp.fixed_test``)."""
 
 
 VariablesFactory = Callable[[Callable[[], float]], Variables]

@@ -127,6 +127,10 @@ class MacroBVariables:
         return (len(self.levels), tuple(sorted(self.levels[-1].items())), tuple(sorted(self.commons.items())),
                 self._increment())
 
+    def plain(self, key: VarKey) -> bool:
+        """The locals and commons (``#3000`` raises an alarm; the rest is the machine's)."""
+        return isinstance(key, int) and (1 <= key <= self.LOCALS or 100 <= key <= 199 or 500 <= key <= 999)
+
     def exists(self, key: VarKey) -> bool:
         """Custom Macro B has no test of existence: a variable that is read is vacant or not."""
         raise EvalError("Custom Macro B has no test of whether a variable exists")
@@ -231,6 +235,13 @@ class NgcVariables:
         return (len(self.numbered), tuple(sorted(self.numbered[-1].items())),
                 tuple(sorted(self.named[-1].items())), tuple(sorted(self.globals_.items(), key=str)),
                 self._increment())
+
+    def plain(self, key: VarKey) -> bool:
+        """Every parameter up to #5000 and every name but ``#<_value>``/``#<_value_returned>`` (a call's
+        return sets them); the offset parameters are the frame's (``G10`` changes them)."""
+        if isinstance(key, str):
+            return key not in ("_value", "_value_returned")
+        return 1 <= key <= self.LAST_GLOBAL
 
     def read_frame(self, key: int) -> float | None:
         """An offset parameter the run's frame knows (None: the machine's, reported by ``_store``)."""
