@@ -99,3 +99,42 @@ def test_a_hole_cycle_a_lowering_step_comments_out_displaces_what_follows() -> N
         "where the source has them: after a dropped move, only straight moves to absolute points of every axis it "
         "moved can be written exactly (--on-unsupported warn fails here rather than write a displaced program)"]
     assert "G0 X20. Y20. Z50." in warned(start + "G0 X20. Y20. Z50.\nM30\n", "fanuc", "grbl", MachineSetup())
+
+
+# -- a dropped reference return (G28), and lathe increments after it (defects2, item 3) -------------------
+# A target that cannot express G28 (Fagor; ISG and SINUMERIK without the set-up's home positions) drops it
+# under --on-unsupported warn. Where the source's tool then is (the reference point) is not known in work
+# coordinates, so a move that keeps the returned axis where it is, or starts from it incrementally, cannot
+# be written exactly: each fails at its own line, located, never a traceback; a straight absolute move of
+# the returned axis puts it right and is written.
+VMC = MachineSetup()
+"""No home positions: ISG and SINUMERIK cannot write the return either (with them they do)."""
+MILL = "G21 G90 G0 X0 Y0 Z50.\nG91 G28 Z0.\n"
+"""A mill program up to a reference return of Z (line 2)."""
+LATHE_G28 = "%\nO1\nG21 G98\nM03 S500\nG00 X20. Z2.\nG28 U0.\n"
+"""A lathe program up to a reference return of X (line 6)."""
+
+
+@pytest.mark.parametrize("target", ["fagor", "isg", "siemens"])
+@pytest.mark.parametrize("rest, line", [
+    ("G90 G0 X10.\nM30\n", 3),                       # moves X at the unreturned Z
+    ("G0 X5.\nG90 G0 X0 Y0 Z5.\nM30\n", 3),          # still incremental: starts from the reference point
+])
+def test_a_move_after_a_dropped_reference_return_fails_at_its_line(target: str, rest: str, line: int) -> None:
+    assert refused(MILL + rest, "fanuc", target, VMC) == [f"in.nc:{line}:1: error: {DISPLACED.replace('line 7', 'line 2')}"]
+
+
+@pytest.mark.parametrize("target", ["fagor", "isg", "siemens"])
+def test_an_absolute_move_of_the_returned_axis_after_a_dropped_reference_return_is_written(target: str) -> None:
+    out = warned(MILL + "G90 G0 Z10.\nG1 X10. F100.\nM30\n", "fanuc", target, VMC)
+    assert "UNSUPPORTED LINE 2: G91 G28 Z0." in out
+    moves = [e for e in toolpath_events(io.StringIO(out), file="out", dialect=target, setup=VMC) if "move" in e]
+    assert [(m["x"], m["y"], m["z"]) for m in moves[-2:]] == [(0, 0, 10), (10, 0, 10)]
+
+
+@pytest.mark.parametrize("target", ["grbl", "linuxcnc", "fagor", "isg", "siemens", "mach3"])
+@pytest.mark.parametrize("rest", ["G00 U4. W12.\nM30\n%\n", "G00 U2. Z1.\nM30\n%\n"])
+def test_a_lathe_increment_after_a_reference_return_fails_at_its_line(target: str, rest: str) -> None:
+    # U starts from the reference point of X, which the program does not know (on every target)
+    found = refused(LATHE_G28 + rest, "fanuc", target, LATHE)
+    assert len(found) == 1 and found[0].startswith("in.nc:7:1: error: an incremental U move from an unknown position")
