@@ -7,7 +7,8 @@ from typing import Any, Iterator
 
 from ..context import Context
 from ..dialect import Dialect
-from ..ir import Block, Motion
+from ..ir import Block, CompoundMotion, Motion
+from ..state import PLANE_AXES
 
 _BY_SECTION = {
     "CutterCompensation": "cutter radius compensation", "DynamicCutterCompensation": "cutter radius compensation",
@@ -21,6 +22,8 @@ _BY_SECTION = {
 _OFF = frozenset(("off", "cancel"))
 _FEED_MODES = {"per_rev": "feed per revolution", "inverse_time": "inverse-time feed"}
 _MOTIONS = {"home": "reference return", "home2": "reference return", "thread": "threading"}
+SAME_LEVEL = 1e-9
+"""Program units: a move ending this close to a cycle's bottom arrives there."""
 
 
 class Features:
@@ -77,7 +80,7 @@ class Features:
             sections = block.sections
             cycle = sections.get("CannedCycle")
             if cycle is not None:
-                self.holes += cycle.repeat  # type: ignore[attr-defined]
+                self.holes += holes_made(cycle, block)
                 if cycle.call:  # type: ignore[attr-defined]
                     kind = cycle.kind  # type: ignore[attr-defined]
                     self.cycles[kind] = self.cycles.get(kind, 0) + 1
@@ -94,3 +97,25 @@ class Features:
             self.used.add("lathe")
         if ctx.diameter:
             self.used.add("diameter programming")
+
+
+def holes_made(cycle: Any, block: Block) -> int:
+    """The holes a cycle block makes: its repeat count, but where the block's motion is written whatever
+    the target (``expand``: a SINUMERIK ``HOLES1``/``HOLES2`` row or circle made in one block with the first
+    hole's record), the times that motion arrives at the cycle's bottom along the drilling axis (each hole
+    reaches it once; a shift or dwell there stays at it)."""
+    compound = block.sections.get("CompoundMotion")
+    bottom = cycle.bottom
+    if not cycle.expand or not isinstance(compound, CompoundMotion) or bottom is None:
+        return int(cycle.repeat)
+    normal = PLANE_AXES.get(cycle.plane, ("X", "Y", "Z"))[2]
+    level = cycle.start.get(normal)
+    arrivals = 0
+    for item in compound.items:
+        if isinstance(item, Motion):
+            value = item.axes.get(normal)
+            if isinstance(value, (int, float)):
+                if abs(value - bottom) <= SAME_LEVEL and (level is None or abs(level - bottom) > SAME_LEVEL):
+                    arrivals += 1
+                level = float(value)
+    return arrivals or int(cycle.repeat)
