@@ -183,6 +183,9 @@ class Dialect:
     block: the controller sets the feed rate before the length units (the RS274/NGC order of execution).
     The reader converts such an F into the block's units (the neutral Feed) and the writer back
     (``ctx.feed_before_units``); False: it is in the block's new units (grbl, Fanuc)."""
+    WHOLE_SPINDLE_SPEED: ClassVar[bool] = False
+    """An S word takes a whole number only (a decimal point is an alarm): the writer rounds a decimal speed
+    to the nearest whole one, as the controller rounds a computed S, and warns (``NumberWriter.speed``)."""
     STOPS_BEFORE_MOTION: ClassVar[bool] = False
     """The controller stops the spindle and the coolant before the block's motion (the RS274/NGC order
     of execution), and its reader flags such stops ``before_motion`` (``postproc.event_order``). A

@@ -55,6 +55,11 @@ class Fanuc(Dialect):
     [K: DIALECTS.md 1.1]."""
     PROGRAMS = True
     """Custom Macro B variables, expressions, IF/GOTO, WHILE, M98/G65 subprograms."""
+    WHOLE_SPINDLE_SPEED = True
+    """``S1000.0`` is an illegal statement (S takes an integer); a computed ``S[1000.5]`` runs as S1001, rounded
+    half away from zero; parameter 3451#2 (mills only) admits one decimal place, still run rounded to the
+    whole number [K: cncarea.com / cnccode.com "CNC Macro: real versus integer values", after Smid's Fanuc
+    Custom Macros; B-64484EN's decimal-point address list leaves S out [?: not read here]]."""
     MACHINE_TYPES = frozenset({"mill", "lathe"})
     """Fanuc M and Fanuc T (the set-up's ``machineType``; mill when it says nothing)."""
     DIAMETER_PROGRAMMING = True

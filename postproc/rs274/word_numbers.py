@@ -65,6 +65,8 @@ class NumberWriter(Writer):
         """What the written program has in force so far (units, distance mode, feed, plane, spindle...)."""
         self.feed_before_units = target is not None and target.FEED_BEFORE_UNITS
         """The target reads an F in a block that changes units in the units before it (``feed_beside_units``)."""
+        self.whole_speed = target is not None and target.WHOLE_SPINDLE_SPEED
+        """The target's S takes a whole number only (``Dialect.WHOLE_SPINDLE_SPEED``)."""
         self.units_before = self.modal.units
         """Units in force before the block being written."""
         self.carry: dict[str, float] = {}
@@ -107,6 +109,17 @@ class NumberWriter(Writer):
                 f"source by up to {0.5 * 10.0 ** -places:g} {unit}",
                 self.ctx.at(self.at_block) if self.at_block is not None else None)
         return text
+
+    def whole_rpm(self, rpm: float) -> str:
+        """``rpm`` rounded half away from zero; the first speed rounded is a warning."""
+        whole = math.floor(abs(rpm) + 0.5) * (1 if rpm >= 0 else -1)
+        if "S" not in self.rounded_warned:
+            self.rounded_warned.add("S")
+            self.ctx.diagnostics.warn(
+                f"the {self.DIALECT} dialect takes a whole number in S: {rpm:.6g} is written S{whole} (as the "
+                "controller rounds a computed S); this and later S words may differ from the source by up to 0.5",
+                self.ctx.at(self.at_block) if self.at_block is not None else None)
+        return str(whole)
 
     @staticmethod
     def integer(value: float | int) -> str:
@@ -166,7 +179,10 @@ class NumberWriter(Writer):
 
     def speed(self, rpm: float) -> str:
         """A spindle speed: a whole number without a point, else a decimal; ``S0`` places round it to a
-        whole number."""
+        whole number, as does a target whose S takes whole numbers only (rounded half away from zero, as it
+        rounds a computed S, with a warning: the speed differs from the source's by up to half a unit)."""
+        if self.whole_speed and not float(rpm).is_integer():
+            return self.whole_rpm(float(rpm))
         if self.rounding:
             text = self.number(float(rpm), "S")
             if text.endswith("."):

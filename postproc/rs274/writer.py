@@ -135,7 +135,7 @@ class WordWriter(MotionWords):
     def words_block(self, block: Block) -> str | None:
         """A block copied from the dialect itself, normalised back to it, or generated from its sections."""
         sections = block.sections
-        if self.rounding:
+        if self.rounding or self.whole_speed:
             self.at_block = block  # where a rounding warning points
         if block.text is not None and self.copy_ok:
             if not changes_nothing(sections):
