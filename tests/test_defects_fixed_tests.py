@@ -137,3 +137,23 @@ def test_an_iteration_that_ends_as_the_one_before_is_refused_at_its_second_end(d
 def test_loops_entered_again_with_the_same_variables_run(dialect: str, text: str) -> None:
     """The inner counted loop starts from the same variables on each entry: an entry is not a repetition."""
     assert len([ev for ev in run(text, dialect) if "move" in ev]) == 6
+
+
+JUMPS = [
+    # (dialect, program, the jump back that runs as before): a loop made of a label and a jump back
+    ("fanuc", "#1=0\nN1 G0 X#1\nGOTO 1\nM30\n", "3:1: error: jump 'GOTO 1'"),
+    ("siemens", "L1:\nG0 X1\nGOTOB L1\nM30\n", "3:1: error: jump 'GOTOB L1'"),
+    ("isg", "%1\nP1=0\nN10 G0 X[P1]\n$GOTO N10\nM30\n", "4:1: error: jump '$GOTO N10'"),
+]
+
+
+@pytest.mark.parametrize("dialect, text, jump", JUMPS)
+def test_a_jump_back_with_every_variable_as_before_is_refused_at_its_second_run(dialect: str, text: str,
+                                                                                 jump: str) -> None:
+    """It ran to the work bound: more than a minute of wall time on a busy machine (a SINUMERIK GOTOB loop)."""
+    assert errors(text, dialect) == [f"in.nc:{jump} {REPEATS}"]
+
+
+def test_a_jump_back_that_counts_runs() -> None:
+    moves = [ev for ev in run("#1=0\nN1 G0 X#1\n#1=#1+1\nIF [#1 LT 5] GOTO 1\nM30\n", "fanuc") if "move" in ev]
+    assert [m["x"] for m in moves] == [1, 2, 3, 4]  # X0 is where the tool starts: no move

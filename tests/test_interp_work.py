@@ -72,7 +72,7 @@ HOSTILE = [
     # (dialect, program, the repetition named: line:col and how; a recursion: either of its two calls)
     ("fanuc", "#1=#1+1\nM99\n", "2:1: error: return 'M99'"),
     ("fanuc", "#1=0\nWHILE [#1 GE 0] DO1\nG0 X#1\n#1=#1+1\nEND1\nM30\n", "5:1: error: loop 'END1'"),
-    ("fanuc", "#1=0\nN1 G0 X#1\nGOTO 1\nM30\n", "3:1: error: jump 'GOTO 1'"),
+    ("fanuc", "#1=0\nN1 G0 X#1\n#1=#1+1\nGOTO 1\nM30\n", "4:1: error: jump 'GOTO 1'"),
     # each level calls itself twice down to level 40: 2^40 calls
     ("fanuc", "O1\n#1=0\nM98 P1000\nM30\nO1000\n#1=#1+1\nIF [#1 GT 40] GOTO 9\nM98 P1000\nM98 P1000\n"
               "N9 #1=#1-1\nM99\n", ("8:1: error: call 'M98 P1000'", "9:1: error: call 'M98 P1000'")),

@@ -31,8 +31,9 @@ class Frame:
         self.fors: dict[int, tuple[float, float]] = {}
         """Position of a running counted loop -> its (end, step), evaluated when it was entered."""
         self.seen: dict[int, object] = {}
-        """Position of a running while loop (-1 - position of a return to the main program's start) ->
-        what the program could read when its end (the return) last ran (``RunState._endless``)."""
+        """Position of a running loop's head (-1 - position of a return to the main program's start; the
+        number of blocks + position of a jump back) -> what the program could read when its end (the return,
+        the jump) last ran (``RunState._endless``)."""
         self.back = -1
         """The while loop whose end ran last, until its test runs (-1: none): the test then continues it."""
         self.modal = modal

@@ -187,6 +187,8 @@ class Interpreter(RunState):
                 raise ProgramError(self._missing_sequence(program, number, source_text(block)))
             self._within(frame, target, block)
             self._spend(block, "jump", back=target <= pos)
+            if target <= pos:
+                self._endless(frame, len(program.blocks) + pos, block, "jump")
             yield from self._note(frame, block, "jump")
             frame.pc = target
         elif isinstance(control, GotoLabel):
@@ -198,6 +200,8 @@ class Interpreter(RunState):
                 raise ProgramError(f"'{source_text(block)}': no block labelled {control.label} in {program.file}")
             self._within(frame, found, block)
             self._spend(block, "jump", back=found <= pos)
+            if found <= pos:
+                self._endless(frame, len(program.blocks) + pos, block, "jump")
             yield from self._note(frame, block, "jump")
             frame.pc = found
         elif isinstance(control, IfThen):

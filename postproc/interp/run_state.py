@@ -122,8 +122,8 @@ class RunState:
                                 f"work run again, <Limits repeatedWork=\"{n}\"/>)"), frame, block, 1)
 
     def _endless(self, frame: Frame, key: int, block: Block, what: str) -> None:
-        """A while loop's end, or a return to the main program's start (``block``; ``key``: where it is
-        kept in ``frame.seen``), runs with everything the program can read as when it ran last (the
+        """A loop's end, a jump back or a return to the main program's start (``block``; ``key``: where it
+        is kept in ``frame.seen``) runs with everything the program can read as when it ran last (the
         variables, the modal call, the frame's counted loops): the run is deterministic, so from here
         each repetition repeats the last and it never ends. Refused now rather than run to the work
         bound (a damaged loop that lost its counter took seconds to reach it)."""
