@@ -149,9 +149,10 @@ class IsgWriter(WordWriter):
                 self.unsupported("a computed position in machine coordinates", block)
             words.append(axis + self.number(float(value), axis))
             self.carry.pop(axis, None)
-        text += " ".join(modes) + "\n" + "#SUPPRESS OFFSETS " + " ".join(words) + "\n"
-        if incremental:
-            text += self.code("distance", "incremental", "incremental distance mode", block) + "\n"
+        if words:  # a return naming no axis moves none (Fanuc G28 alone): nothing to write for it
+            text += " ".join(modes) + "\n" + "#SUPPRESS OFFSETS " + " ".join(words) + "\n"
+            if incremental:
+                text += self.code("distance", "incremental", "incremental distance mode", block) + "\n"
         text += self._part(block, after)
         if not text.endswith(block.eol or "\n"):
             text = text[:-1] + (block.eol or "\n")

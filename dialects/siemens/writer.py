@@ -281,7 +281,8 @@ class SiemensWriter(WordWriter):
             text += self._part(block, {"Motion": Motion("rapid", dict(motion.axes))})  # the intermediate point
         for axis in motion.axes:
             self.carry.pop(axis, None)  # the axis is at its home: its next word is written whole
-        text += g75_line(list(motion.axes)) + "\n"
+        if motion.axes:  # a return naming no axis moves none (Fanuc G28 alone): no G75, which needs its axes
+            text += g75_line(list(motion.axes)) + "\n"
         if after:
             text += self._part(block, after)
         eol = block.eol or "\n"

@@ -75,6 +75,8 @@ class MotionWords(SectionWords):
             first, second, _ = PLANE_AXES[plane.plane if plane is not None else self.modal.plane]  # type: ignore[attr-defined]
             if first not in s.axes and second not in s.axes:
                 self.unsupported("a helical full circle with no end point in its plane, in absolute mode", block)
+        if s.mode in MOTION_KIND and not s.axes:
+            return []  # a return naming no axis moves none (Fanuc); a bare code would move every axis (LinuxCNC)
         if s.mode in MOTION_KIND:
             self.check_reference_return(s, block)
         elif self.ZERO_RADIUS_ARC and (s.mode == "cw" or s.mode == "ccw") and s.radius is None \

@@ -56,6 +56,10 @@ in the tool table" (G43 H-1), "G41 requires D word to be a whole number" (D-1), 
 is only G10's, whose L-1 it does not know)."""
 
 
+_RETURN_AXES: Final = "XYZABCUVW"
+"""The axis words a reference return may name (its intermediate point)."""
+
+
 @mypyc_attr(allow_interpreted_subclasses=True)
 class NgcWordBlockSyntax(WordBlockSyntax):
     """Lexed words -> neutral sections, RS274/NGC word rules; subclasses give the code table."""
@@ -142,6 +146,13 @@ class NgcWordBlockSyntax(WordBlockSyntax):
         cycle_block = "09" in codes and codes["09"][1] == "cycle" or (
             state.cycle is not None and "01" not in codes and "09" not in codes)
         self._check_cycle_words(block, ctx, values, cycle_block)
+        home = codes.get("00")
+        if home is not None and home[1] == "home" and not any(k in values for k in _RETURN_AXES):
+            # [V] rs274: a bare G28 prints a traverse of every axis to the stored G28 position (0 0 0 in a fresh
+            # run); [K] grbl and RS274/NGC v3 (Mach3) go to the stored position too; Fanuc moves no axis
+            raise ProgramError(f"G{home[3]} with no axis word moves every axis to the position stored on the machine "
+                               f"(by G{home[3]}.1 or its settings), which the program does not give: name the axes "
+                               "it returns", ctx.at(block, col_of_word(block, "G", home[3])))
         if any(self.CODES.m.get(number, ("", None))[0] == "tool_change" for number, _ in mcodes):
             selected = values["T"] if "T" in values else state.tool
             extra[_LOADED_KEY] = selected if isinstance(selected, (int, Expr)) else None  # M6 runs before G43

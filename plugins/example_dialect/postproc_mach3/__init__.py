@@ -56,8 +56,8 @@ class Mach3Writer(WordWriter):
     def motion_words(self, s: Motion, block: Block) -> list[str]:
         if s.mode is None:
             self.unsupported("a canned-cycle repetition without its cycle", block)
-        if self.left_out(s, block):
-            return []
+        if self.left_out(s, block) or s.mode in ("home", "home2") and not s.axes:
+            return []  # a return naming no axis moves none (Fanuc); a bare G28 here would move every axis
         words = self._code("home" if s.mode in ("home", "home2") else "motion", s.mode, f"{s.mode} motion", block)
         if self.rounding:  # rounded by the set-up: the base's position() carries what rounding left behind
             incremental = self.modal.distance == "incremental" and "MachineCoordinates" not in block.sections
