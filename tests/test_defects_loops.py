@@ -41,7 +41,7 @@ def errors(text: str, setup: MachineSetup, target: str = "grbl") -> list[str]:
 def test_the_bolt_circle_without_its_counter_is_refused_at_its_head(target: str) -> None:
     damaged = BOLT_CIRCLE.replace("#10=#10+1\n", "")
     # nothing in the loop sets #10 or #1 once the counter's line 18 is gone: its test (line 16) cannot change
-    # (``postproc.interp.fixed_test``); the first G65 call (line 8) runs it
+    # (``postproc.interp.fixed_condition``); the first G65 call (line 8) runs it
     assert errors(damaged, SETUP, target) == [
         "in.nc:16:1: error: loop 'WHILE [#10 LT #1] DO1' never ends: its test reads no variable the loop sets and "
         "nothing in the loop leaves it (does the program count the variable it tests?) (in O9010, called from "
@@ -56,7 +56,7 @@ def test_an_endless_loop_of_moves_is_refused_long_before_the_work_bound(target: 
 
 
 def test_a_loop_that_counts_a_variable_it_never_tests_is_refused_at_its_head() -> None:
-    """It met the work bound (seconds); now its test is seen to be fixed (tests/test_defects_fixed_tests.py)."""
+    """It met the work bound (seconds); now its test is seen to be fixed (tests/test_defects_fixed_conditions.py)."""
     program = "#1=0\nWHILE [#1 LT 10] DO1\n#2=#2+1\nEND1\nM30\n"
     assert errors(program, SMALL) == [
         "in.nc:2:1: error: loop 'WHILE [#1 LT 10] DO1' never ends: its test reads no variable the loop sets and "

@@ -14,7 +14,7 @@ from ..setup.machine_setup import Limits
 from .frame import Frame
 from .host import NO_MOVES, Host, Interrupt, MoveCount, Reporter
 from .rules import STORED_PROGRAMS, SubprogramRules
-from .fixed_test import test_is_fixed
+from .fixed_condition import condition_is_fixed
 from .store import Program, ProgramStore, source_text
 from .variables import Snapshots, Variables
 
@@ -64,7 +64,7 @@ class RunState:
         bakes in what the statement did, so the operator's switch could no longer skip it."""
         self.snapshots: Snapshots | None = variables if isinstance(variables, Snapshots) else None
         """The variables, where they can say all a program reads of them at once (``_endless``)."""
-        self.fixed_tests: dict[tuple[int, int], bool] = {}
+        self.fixed_conditions: dict[tuple[int, int], bool] = {}
         """(id of a program, position of a loop's head) -> whether its test can never change (``_fixed``)."""
         self.vacant_word: str | None = None
         """Set: a word whose value is vacant is an error with this explanation instead of being omitted (the
@@ -141,16 +141,16 @@ class RunState:
 
     def _fixed(self, frame: Frame, head: int, end: int, cond: Expr, block: Block) -> None:
         """A loop (blocks ``head`` .. ``end``) runs on because its test ``cond`` (in ``block``) holds: refuse
-        it now if the test can never change and nothing in the loop leaves it (``fixed_test``), rather
+        it now if the test can never change and nothing in the loop leaves it (``fixed_condition``), rather
         than run it to the work bound (a loop counting a variable it never tests took ten seconds)."""
         snapshots = self.snapshots
         if snapshots is None or self.modal is not None:
             return  # a modal call in force runs a macro after each move
         key = (id(frame.program), head)
-        fixed = self.fixed_tests.get(key)
+        fixed = self.fixed_conditions.get(key)
         if fixed is None:
-            fixed = test_is_fixed(frame.program, head, end, head, cond, snapshots.plain, self._may_end)
-            self.fixed_tests[key] = fixed
+            fixed = condition_is_fixed(frame.program, head, end, head, cond, snapshots.plain, self._may_end)
+            self.fixed_conditions[key] = fixed
         if fixed:
             raise ProgramError(f"loop '{source_text(block)}' never ends: its test reads no variable the loop "
                                "sets and nothing in the loop leaves it (does the program count the variable it "

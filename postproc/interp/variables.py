@@ -85,7 +85,7 @@ class Snapshots(Protocol):
     def plain(self, key: VarKey) -> bool:
         """Only the program's assignments change ``key``, and assigning it does nothing else (False: the
         machine's, an alarm, or one a call sets): a loop whose test reads only plain variables its body
-        never sets cannot end by its test (``postproc.interp.fixed_test``)."""
+        never sets cannot end by its test (``postproc.interp.fixed_condition``)."""
 
 
 VariablesFactory = Callable[[Callable[[], float]], Variables]

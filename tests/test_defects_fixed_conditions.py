@@ -1,7 +1,7 @@
 """Defects: a loop that counts a variable it never tests (``WHILE [#1 LT 10] DO1`` whose body increments #2)
 ran until the work bound (about ten seconds at the default million) before its error. Now a loop whose
 test holds, reads only variables nothing in the loop sets, and has no other way out is refused at its
-head when it is entered (``postproc.interp.fixed_test``), in every dialect whose loops the interpreter
+head when it is entered (``postproc.interp.fixed_condition``), in every dialect whose loops the interpreter
 runs: Custom Macro B, LinuxCNC and grblHAL o-words, ISG and SINUMERIK. And the repeated-state check
 (an iteration that ends as the one before can never end), which ran only at a while loop's end, runs at
 the end of every kind of loop (do-while, repeat-until, counted) of ISG and SINUMERIK too. (It needs the

@@ -1,5 +1,5 @@
 """Whether a loop's test can ever change: a static look at the loop's blocks, done once when the loop is
-entered (``RunState._fixed_test``).
+entered (``RunState._fixed``).
 
 A loop whose test holds now and reads only variables nothing in the loop sets, with no way out but its
 test, never ends: the run would spend the set-up's work bound (seconds) before its error. The proof is
@@ -56,8 +56,8 @@ def _nodes(expr: Expr) -> Iterator[Expr]:
             stack += node.args
 
 
-def test_is_fixed(program: Program, first: int, last: int, head: int, cond: Expr, plain: Callable[[VarKey], bool],
-                  ends: Callable[[Block], bool]) -> bool:
+def condition_is_fixed(program: Program, first: int, last: int, head: int, cond: Expr,
+                       plain: Callable[[VarKey], bool], ends: Callable[[Block], bool]) -> bool:
     """True when ``cond`` (the test of the loop headed at ``head``, whose blocks are ``first`` .. ``last``
     inclusive, the test's own block included) can never change while the loop runs and nothing in it leaves
     the loop: then the loop never ends once its test holds. ``plain(key)``: only an assignment changes the
