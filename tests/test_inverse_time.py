@@ -91,7 +91,7 @@ def test_verify_compares_inverse_time_with_per_minute_feeds(target: str) -> None
 
 
 REFUSED = {
-    "start unknown": ("G21 G90\nG28\nG93 G1 X1 Y1 Z1 F2\nM2\n", "t.ngc:3:1: error: an inverse-time move"),
+    "start unknown": ("G21 G90\nG28 X0 Y0 Z0\nG93 G1 X1 Y1 Z1 F2\nM2\n", "t.ngc:3:1: error: an inverse-time move"),
     "rotary axis": ("G21 G90 G0 X0 Y0 Z0 A0\nG93 G1 X1 A90 F2\nM2\n", "t.ngc:2:1: error: an inverse-time move of a rotary"),
 }
 

@@ -75,10 +75,10 @@ class MotionWords(SectionWords):
             first, second, _ = PLANE_AXES[plane.plane if plane is not None else self.modal.plane]  # type: ignore[attr-defined]
             if first not in s.axes and second not in s.axes:
                 self.unsupported("a helical full circle with no end point in its plane, in absolute mode", block)
-        if s.mode in MOTION_KIND and not s.axes:
-            return []  # a return naming no axis moves none (Fanuc); a bare code would move every axis (LinuxCNC)
         if s.mode in MOTION_KIND:
             self.check_reference_return(s, block)
+            if not s.axes:
+                return []  # a return naming no axis moves none (Fanuc); a bare code would move every axis (LinuxCNC)
         elif self.ZERO_RADIUS_ARC and (s.mode == "cw" or s.mode == "ccw") and s.radius is None \
                 and s.center is not None and _at_start(s.center):
             self.unsupported(f"an arc of zero radius (a controller that runs it does nothing; {self.ZERO_RADIUS_ARC})",
