@@ -87,6 +87,8 @@ _NOT_PLAIN: Final = _MODAL | {"CutterCompensation", "DynamicCutterCompensation"}
 """A block with one of these goes the general way even while no compensation is on (``_Resolver.block``)."""
 _NOT_TRACKED: Final = frozenset(("MachineCoordinates", "CompoundMotion"))
 """A block with one of these is not a plain move to track (``_Resolver._track`` says where it leaves the tool)."""
+_NOT_NOTED: Final = _NOT_PLAIN | _NOT_TRACKED
+"""A block with none of these is at most a move to note (one set look-up a key for the common block)."""
 _X: Final = 1
 _Y: Final = 2
 _Z: Final = 4
@@ -228,11 +230,14 @@ class _Resolver:
             odd = False
             if plain:  # one look at the keys: none asks for the general way (a G41/G42, a setting)
                 for key in sections:
-                    if key in _NOT_PLAIN:
-                        plain = False
-                        break
-                    if key in _NOT_TRACKED:
+                    if key in _NOT_NOTED:
                         odd = True
+                        break
+                if odd:
+                    for key in sections:
+                        if key in _NOT_PLAIN:
+                            plain = False
+                            break
             if plain:
                 motion = sections.get("Motion")  # the common block: a move, noted for a later entry move
                 if isinstance(motion, Motion) and self.absolute and motion.mode in MOVES \
