@@ -100,3 +100,19 @@ def test_a_move_of_one_axis_keeps_the_others_from_earlier_blocks() -> None:
     report = verify_lines(io.StringIO(text), io.StringIO(out), file_in="t.nc", file_out="o", source="fanuc",
                           target="grbl", setup=SETUP)
     assert report.ok and report.max_deviation == 0, report.summary()
+
+
+def test_after_a_refused_stretch_a_later_one_is_left_to_the_target_writer() -> None:
+    """The generic step resolves every G41/G42 for grbl and, after an error, nothing more (its queue no longer
+    matches the program); grbl's own step finds nothing left to do (``RESOLVED``), so a later stretch is
+    grbl's writer's refusal, not a second resolver's guess."""
+    text = ("G21 G90 G17\nT1 M6\nG0 X0 Y0 Z5\nG41 G1 X10 Y0 F100\nY10\nX0\nG40 Y0\n"
+            "G41 G1 X10 Y0 D1\nY10\nG40 X0\nM30\n")
+    out = io.StringIO()
+    diagnostics = Diagnostics(ErrorLevel.RAISE, warn_stream=io.StringIO())
+    with pytest.raises(ErrorList) as info:
+        translate(io.StringIO(text).readlines(), out, file="t.nc", source="fanuc", target="grbl", setup=SETUP,
+                  diagnostics=diagnostics)
+    messages = [str(e) for e in info.value.errors]
+    assert messages[0].startswith("t.nc:4:1: error: cutter compensation without its register"), messages
+    assert all("t.nc:4:" in m or "cannot express cutter radius compensation" in m for m in messages), messages

@@ -89,6 +89,12 @@ _NOT_TRACKED: Final = frozenset(("MachineCoordinates", "CompoundMotion"))
 """A block with one of these is not a plain move to track (``_Resolver._track`` says where it leaves the tool)."""
 _NOT_NOTED: Final = _NOT_PLAIN | _NOT_TRACKED
 """A block with none of these is at most a move to note (one set look-up a key for the common block)."""
+RESOLVED: Final = "cutter_compensation_resolved"
+"""``Context.run_data`` key: the target for which ``resolve_dynamic_cutter_compensation`` resolves every G41/G42
+as well (it keeps none and tries none), so the target's own ``resolve_cutter_compensation`` (grbl's, after
+steps that leave compensation alone) finds nothing left and passes the blocks untouched: a second resolver
+was ~1.8k instructions a block (``fanuc grbl 0``). After an error the first resolves nothing more, and
+neither does the second now: a later G41/G42 is the target writer's refusal."""
 _X: Final = 1
 _Y: Final = 2
 _Z: Final = 4
@@ -101,8 +107,8 @@ def resolve_cutter_compensation(blocks: Iterator[Block], ctx: Context, target: t
     if ctx.dialect == target.NAME or target.CUTTER_COMPENSATION:
         return blocks
     rules: CutterRules | None = ctx.cutter_rules  # none for a program written from the neutral IR
-    if rules is None:
-        return blocks
+    if rules is None or ctx.run_data.get(RESOLVED) is target:
+        return blocks  # (the generic step already resolved every G41/G42 for this target)
     return _Resolver(ctx, rules, diameters=_takes_diameters(ctx, target)).run(blocks)
 
 
@@ -122,6 +128,8 @@ def resolve_dynamic_cutter_compensation(blocks: Iterator[Block], ctx: Context,
     differ = _rules_differ(rules, target, ctx)
     keeps = _native if target.CUTTER_COMPENSATION and not differ else None
     trial = target.cutter_rules(ctx.setup) if target.CUTTER_COMPENSATION and differ else None
+    if keeps is None and trial is None:
+        ctx.run_data[RESOLVED] = target
     return _Resolver(ctx, rules, keeps, _takes_diameters(ctx, target), trial).run(blocks)
 
 
