@@ -93,7 +93,7 @@ RESOLVED: Final = "cutter_compensation_resolved"
 """``Context.run_data`` key: the target for which ``resolve_dynamic_cutter_compensation`` resolves every G41/G42
 as well (it keeps none and tries none), so the target's own ``resolve_cutter_compensation`` (grbl's, after
 steps that leave compensation alone) finds nothing left and passes the blocks untouched: a second resolver
-was ~1.8k instructions a block (``fanuc grbl 0``). After an error the first resolves nothing more, and
+was ~1.5k instructions a block (``fanuc grbl 0``, compiled). After an error the first resolves nothing more, and
 neither does the second now: a later G41/G42 is the target writer's refusal."""
 _X: Final = 1
 _Y: Final = 2
