@@ -46,7 +46,7 @@ then flattened, each run's diameter a number.
 from __future__ import annotations
 
 import math
-from typing import Callable, Iterator
+from typing import Callable, Final, Iterator
 
 from mypy_extensions import mypyc_attr
 
@@ -76,13 +76,29 @@ ARC_OFF_RATIO = 0.001
 ``gcode.c`` (error 33 beyond 0.005 mm and 0.1 % of the radius). LinuxCNC joins an arc to a move within
 its corner tolerance (0.05 rad) without moving the start onto the compensated circle, so its compensated
 arc may start off the circle; such an arc is refused here rather than written one grbl rejects."""
-MOVES = frozenset(("rapid", "linear", "cw", "ccw"))
-_SEGMENT_KIND = {"rapid": "rapid", "linear": "feed", "cw": "cw", "ccw": "ccw"}
-_MOTION_MODE = {"rapid": "rapid", "feed": "linear", "cw": "cw", "ccw": "ccw"}
-_MODAL = frozenset(("Units", "DistanceMode", "Plane", "DataSetting", "WorkOffset", "ToolSelect", "ToolChange",
-                    "ToolLengthOffset", "FeedMode"))
+MOVES: Final = frozenset(("rapid", "linear", "cw", "ccw"))
+_SEGMENT_KIND: Final = {"rapid": "rapid", "linear": "feed", "cw": "cw", "ccw": "ccw"}
+_MOTION_MODE: Final = {"rapid": "rapid", "feed": "linear", "cw": "cw", "ccw": "ccw"}
+_MODAL: Final = frozenset(("Units", "DistanceMode", "Plane", "DataSetting", "WorkOffset", "ToolSelect",
+                           "ToolChange", "ToolLengthOffset", "FeedMode"))
 """Settings the resolver keeps while no compensation is on (a block with none of them, and no G41/G42, is
 only a move to track, or passes untouched)."""
+_NOT_PLAIN: Final = _MODAL | {"CutterCompensation", "DynamicCutterCompensation"}
+"""A block with one of these goes the general way even while no compensation is on (``_Resolver.block``)."""
+_NOT_TRACKED: Final = frozenset(("MachineCoordinates", "CompoundMotion"))
+"""A block with one of these is not a plain move to track (``_Resolver._track`` says where it leaves the tool)."""
+_NOT_NOTED: Final = _NOT_PLAIN | _NOT_TRACKED
+"""A block with none of these is at most a move to note (one set look-up a key for the common block)."""
+RESOLVED: Final = "cutter_compensation_resolved"
+"""``Context.run_data`` key: the target for which ``resolve_dynamic_cutter_compensation`` resolves every G41/G42
+as well (it keeps none and tries none), so the target's own ``resolve_cutter_compensation`` (grbl's, after
+steps that leave compensation alone) finds nothing left and passes the blocks untouched: a second resolver
+was ~1.5k instructions a block (``fanuc grbl 0``, compiled). After an error the first resolves nothing more, and
+neither does the second now: a later G41/G42 is the target writer's refusal."""
+_X: Final = 1
+_Y: Final = 2
+_Z: Final = 4
+"""The bits of ``_Resolver.noted``: the axes a plain move noted since ``pos`` was last brought up to date."""
 
 
 def resolve_cutter_compensation(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
@@ -91,8 +107,8 @@ def resolve_cutter_compensation(blocks: Iterator[Block], ctx: Context, target: t
     if ctx.dialect == target.NAME or target.CUTTER_COMPENSATION:
         return blocks
     rules: CutterRules | None = ctx.cutter_rules  # none for a program written from the neutral IR
-    if rules is None:
-        return blocks
+    if rules is None or ctx.run_data.get(RESOLVED) is target:
+        return blocks  # (the generic step already resolved every G41/G42 for this target)
     return _Resolver(ctx, rules, diameters=_takes_diameters(ctx, target)).run(blocks)
 
 
@@ -112,6 +128,8 @@ def resolve_dynamic_cutter_compensation(blocks: Iterator[Block], ctx: Context,
     differ = _rules_differ(rules, target, ctx)
     keeps = _native if target.CUTTER_COMPENSATION and not differ else None
     trial = target.cutter_rules(ctx.setup) if target.CUTTER_COMPENSATION and differ else None
+    if keeps is None and trial is None:
+        ctx.run_data[RESOLVED] = target
     return _Resolver(ctx, rules, keeps, _takes_diameters(ctx, target), trial).run(blocks)
 
 
@@ -185,7 +203,16 @@ class _Resolver:
         self.last_register: int | None = None
         """The cutter compensation register programmed last (``register_absent="modal"``)."""
         self.pos: dict[str, float | None] = {"X": None, "Y": None, "Z": None}
-        """The programmed point, mm (None: not known since the origin moved or a reference return)."""
+        """The programmed point, mm (None: not known since the origin moved or a reference return); the axes a
+        plain move noted since (``noted``) are brought into it before anything reads it (``_settle``)."""
+        self.noted = 0
+        """Bits (``_X``, ``_Y``, ``_Z``) of the axes the plain moves since the last ``_settle`` programmed: a
+        plain move, the common block, only notes its numbers (no dictionary written, no number boxed)."""
+        self.unknown = 0
+        """Bits of the noted axes whose last number was computed (an expression): not known."""
+        self.noted_x = 0.0
+        self.noted_y = 0.0
+        self.noted_z = 0.0
         self.at: tuple[float, float] = (0.0, 0.0)
         """The controlled point in the plane the last released move ends at, mm."""
         self.at_normal = 0.0
@@ -207,22 +234,31 @@ class _Resolver:
         idle = True
         for block in blocks:
             sections = block.sections
-            if idle and "CutterCompensation" not in sections and "DynamicCutterCompensation" not in sections \
-                    and _MODAL.isdisjoint(sections):
-                motion = sections.get("Motion")  # the common block: a move, tracked for a later entry move
+            plain = idle
+            odd = False
+            if plain:  # one look at the keys: none asks for the general way (a G41/G42, a setting)
+                for key in sections:
+                    if key in _NOT_NOTED:
+                        odd = True
+                        break
+                if odd:
+                    for key in sections:
+                        if key in _NOT_PLAIN:
+                            plain = False
+                            break
+            if plain:
+                motion = sections.get("Motion")  # the common block: a move, noted for a later entry move
                 if isinstance(motion, Motion) and self.absolute and motion.mode in MOVES \
-                        and "MachineCoordinates" not in sections:
-                    pos, scale = self.pos, self.scale
-                    for axis, value in motion.axes.items():
-                        if axis in pos:
-                            pos[axis] = value * scale if type(value) is float else None
-                            self.floating.discard(axis)
-                elif motion is not None or "CompoundMotion" in sections or "MachineCoordinates" in sections:
+                        and not (odd and "MachineCoordinates" in sections):
+                    self._note(motion)
+                elif motion is not None or odd:
+                    self._settle()
                     self._track(block)
                 if self.per_minute:
                     self._back_to_inverse_time(block)
                 yield block
                 continue
+            self._settle()
             if not self.failed and self.trial_rules is not None:
                 self._try(block)
             if not self.failed:
@@ -446,6 +482,54 @@ class _Resolver:
         return register
 
     # -- positions -----------------------------------------------------------------------------------
+    def _note(self, motion: Motion) -> None:
+        """A plain absolute move while no compensation is on: its X, Y and Z, in mm, noted for ``_settle``."""
+        axes = motion.axes
+        scale = self.scale
+        x = axes.get("X")
+        if x is not None:
+            self.noted |= _X
+            if type(x) is float:
+                self.noted_x = x * scale
+                self.unknown &= ~_X
+            else:
+                self.unknown |= _X
+        y = axes.get("Y")
+        if y is not None:
+            self.noted |= _Y
+            if type(y) is float:
+                self.noted_y = y * scale
+                self.unknown &= ~_Y
+            else:
+                self.unknown |= _Y
+        z = axes.get("Z")
+        if z is not None:
+            self.noted |= _Z
+            if type(z) is float:
+                self.noted_z = z * scale
+                self.unknown &= ~_Z
+            else:
+                self.unknown |= _Z
+
+    def _settle(self) -> None:
+        """Bring the axes the plain moves noted into ``pos`` (an absolute number also ends an axis's frame of
+        its own, ``floating``)."""
+        noted = self.noted
+        if not noted:
+            return
+        self.noted = 0
+        unknown = self.unknown
+        pos = self.pos
+        if noted & _X:
+            pos["X"] = None if unknown & _X else self.noted_x
+            self.floating.discard("X")
+        if noted & _Y:
+            pos["Y"] = None if unknown & _Y else self.noted_y
+            self.floating.discard("Y")
+        if noted & _Z:
+            pos["Z"] = None if unknown & _Z else self.noted_z
+            self.floating.discard("Z")
+
     def _in_plane(self, point: dict[str, float | None]) -> tuple[float | None, float | None]:
         a1, a2, _ = self.cutter.axes
         return point.get(a1), point.get(a2)

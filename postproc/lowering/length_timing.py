@@ -160,7 +160,7 @@ def _complete(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
     """Towards a target that applies a change at the programmed axis: the change goes to the next move,
     which gets the Z the program stands at. The blocks between are held (at most ``HELD``, else a located
     error); a change that meets no move (the program ends first) stays where it was written."""
-    axes = ("X", AXIS) if ctx.lathe else (AXIS,)  # a lathe offset moves X and Z (LinuxCNC's lathe G43 H)
+    axes: tuple[str, ...] = ("X", AXIS) if ctx.lathe else (AXIS,)  # a lathe offset moves X and Z (LinuxCNC's lathe G43 H)
     pos: dict[str, float | None] = {a: None for a in axes}  # the programmed point, program units; None: unknown
     inch = False
     absolute = True
@@ -172,13 +172,23 @@ def _complete(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
         sections = block.sections
         if pending is None and _plain(sections):  # the common block: at most a plain move
             motion = sections.get("Motion")
-            if motion is not None:
+            if isinstance(motion, Motion):  # (typed: its fields are read natively, not by name)
+                plain = motion.mode in _PLAIN
+                words = motion.axes
                 for axis in axes:
-                    value = motion.axes.get(axis)  # type: ignore[attr-defined]
-                    if value is not None:
+                    value = words.get(axis)
+                    if value is None:
+                        continue
+                    if not plain:
+                        pos[axis] = None
+                    elif type(value) is float:
                         known = pos[axis]
-                        pos[axis] = (None if isinstance(value, Expr) or motion.mode not in _PLAIN  # type: ignore[attr-defined]
-                                     else float(value) if absolute else None if known is None else known + value)
+                        pos[axis] = value if absolute else None if known is None else known + value
+                    elif isinstance(value, Expr):
+                        pos[axis] = None
+                    else:
+                        known = pos[axis]
+                        pos[axis] = float(value) if absolute else None if known is None else known + value
             yield block
             continue
         if _WATCHED.isdisjoint(sections):
