@@ -15,6 +15,10 @@ with Fanuc's numbers means here (DIALECTS.md 1.4, 2.3, 3.4):
   ``G88`` are the rectangular and circular pockets, not Fanuc's back and manual boring. So a Fanuc
   ``G73``, ``G74``, ``G76``, ``G83``, ``G84``, ``G86``, ``G87`` or ``G88`` reaches Fagor expanded, never
   as the Fagor code of the same number.
+* A rigid (spindle-synchronised) tap is refused by name (``Fagor`` has neither ``TAP_STROKES`` nor
+  ``SYNCHRONISED_TAP``): the 8070's ``G84`` takes an ``R`` word that selects normal or rigid tapping [?:
+  DIALECTS.md 2.3; Autodesk's post for a Fagor 8065 writes ``G84 .. Z I K R0 F``], and ``G63`` is named a
+  rigid tap in Fagor's lists [?], but neither's words nor how the feed follows the pitch are confirmed.
 * ``G04 K`` dwells, ``K`` in the unit of the cycle dwell (the set-up's ``fagorDwellUnit``) [?: the 8055
   family's form; the 8070's unit is not confirmed, as for the cycle ``K``].
 * ``M19`` orients the spindle to the machine's angle (the set-up's ``orientAngle``) [?: the ISO M code;
