@@ -13,7 +13,7 @@ comments, ``%name`` headers, and the hole cycles Fagor runs with its own words.
 * No block skip and no oriented spindle stop are written: their 8070 spelling is not confirmed [?] (a
   located error names them).
 * The cutting mode (Fanuc/LinuxCNC ``G64``) is ``G05``, the square corner ``G07``/``G60`` (``codes``).
-* A move in machine coordinates (Fanuc ``G53``) is ``G53`` with ``G00``/``G01`` in absolute positions
+* A move in machine coordinates (Fanuc ``G53``, always a rapid) is ``G53 G00`` in absolute positions
   (``G90`` before it and ``G91`` after it under incremental distance); a reference return (``G28``) is
   its intermediate move, then ``G53 G00`` to the set-up's ``<Axis home>`` of each axis it names, as ISG
   writes it with ``#SUPPRESS OFFSETS`` (``codes``: [K] for the 8070's G53).
@@ -49,6 +49,8 @@ class FagorWriter(WordWriter):
     DIALECT: ClassVar[str] = "fagor"
     CODES: ClassVar[CodeTable] = CODES
     DWELL_WORD: ClassVar[str] = ""
+    MACHINE_MOVES: ClassVar[frozenset[str]] = frozenset(("rapid",))
+    """``G53`` is written with ``G00`` only (``codes``: a feed move under G53 is not confirmed [?])."""
 
     dwell_in_force: float | None = None
     """The cycle dwell (seconds) the written program has in force: None before any cycle and after a
