@@ -100,7 +100,7 @@ def programs(draw: st.DrawFn) -> str:
         elif kind == "path":
             lines.append(draw(st.sampled_from(["G64", "G61"])))
         else:
-            lines.append(draw(st.sampled_from(["G43 H02 Z20.", "G49"])))
+            lines.append(draw(st.sampled_from(["G43 H02 Z20.", "G49 Z30."])))  # (a length change beside Z)
     return "\n".join(lines + ["M30"]) + "\n"
 
 
