@@ -76,6 +76,21 @@ def test_a_reference_return_with_an_intermediate_point_moves_there_first() -> No
     _verify(text, out, "fanuc", "fagor")
 
 
+def test_what_a_reference_return_block_ends_comes_after_the_return() -> None:
+    """Fanuc ends the block's M05 after its motion: after the G53 move (and the G91 restored), not before."""
+    text = "G21 G90\nG00 Z5.\nS100 M03\nG91 G28 Z0. M05\nG90\nM30\n"
+    out = _translate(text, "fanuc", "fagor")
+    assert out.splitlines()[3:7] == ["G91", "G53 G90 G00 Z-12.5", "G91", "M05"]
+    _verify(text, out, "fanuc", "fagor")
+
+
+def test_a_reference_return_of_no_axis_moves_nothing() -> None:
+    text = "G21 G90\nG00 Z5.\nG28\nM30\n"
+    out = _translate(text, "fanuc", "fagor")
+    assert out.splitlines()[2] == ";LINE 3: G28"
+    _verify(text, out, "fanuc", "fagor")
+
+
 MOVE = st.sampled_from(["G00", "G01"])
 VALUE = st.integers(-40, 40).map(lambda v: f"{v / 4:g}" if v % 4 else f"{v // 4}.")
 

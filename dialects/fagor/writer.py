@@ -29,6 +29,7 @@ from typing import Any, ClassVar
 
 from postproc.cycle_words import CycleWords
 from postproc.errors import UnsupportedError
+from postproc.event_order import after_motion
 from postproc.expr import Expr
 from postproc.ir import Block, DistanceMode, MachineCoordinates, Motion, Section
 from postproc.state import MM_PER_INCH
@@ -63,6 +64,9 @@ class FagorWriter(WordWriter):
         if "TapeMark" in block.sections:
             return ";%" + (block.eol or "\n")  # a tape's start or end: no Fagor block, kept as a trace
         motion = block.sections.get("Motion")
+        if isinstance(motion, Motion) and motion.mode in _REFERENCE and not motion.axes:
+            rest = {k: v for k, v in block.sections.items() if k != "Motion"}  # a return of no axis: no move
+            return self._part(block, rest)[:-1] + (block.eol or "\n") if rest else ""
         if isinstance(motion, Motion) and motion.axes \
                 and (motion.mode in _REFERENCE or "MachineCoordinates" in block.sections):
             return self.machine_move(block, motion)
@@ -130,11 +134,6 @@ class FagorWriter(WordWriter):
     def return_level_words(self, s: Any, block: Block) -> list[str]:
         return self._code("return", s.level, "a cycle return level", block)
 
-    def motion_words(self, s: Motion, block: Block) -> list[str]:
-        if s.mode in _REFERENCE and s.axes:
-            self.unsupported("a reference return (G28/G30) in a block with other settings", block)
-        return super().motion_words(s, block)
-
     # -- machine coordinates ---------------------------------------------------------------------------
     def machine_move(self, block: Block, motion: Motion) -> str:
         """A move in machine coordinates or a reference return (the module docstring): ``G53`` positions
@@ -143,8 +142,11 @@ class FagorWriter(WordWriter):
         if "BlockDelete" in sections:
             self.block_delete_words(sections["BlockDelete"], block)
         rest = {k: v for k, v in sections.items() if k not in ("Motion", "MachineCoordinates")}
-        if motion.mode in _REFERENCE:
-            text = self._part(block, rest) if rest else ""  # (its distance mode included: the return's own)
+        after: dict[str, Section] = {}
+        if motion.mode in _REFERENCE:  # what the block sets goes before the return, what it ends after it
+            after = {k: v for k, v in rest.items() if after_motion(k, v)}
+            before = {k: v for k, v in rest.items() if k not in after}
+            text = self._part(block, before) if before else ""  # (its distance mode included: the return's own)
             if self.modal.distance == "absolute" or any(v != 0 for v in motion.axes.values()):
                 text += self._part(block, {"Motion": Motion("rapid", dict(motion.axes))})  # intermediate point
             moving: dict[str, Section] = {"Motion": Motion("rapid", dict(self._reference(motion, block)))}
@@ -160,6 +162,8 @@ class FagorWriter(WordWriter):
         text += self._part(block, {"MachineCoordinates": MachineCoordinates(), **moving})
         if incremental:
             text += self._part(block, {"DistanceMode": DistanceMode("incremental")})
+        if after:
+            text += self._part(block, after)
         return text[:-1] + (block.eol or "\n")
 
     def _part(self, block: Block, sections: dict[str, Section]) -> str:
