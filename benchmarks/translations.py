@@ -36,14 +36,14 @@ TRANSLATIONS: dict[str, Translation] = {
     "linuxcnc": Translation("linuxcnc", 1.5),
     "grbl": Translation("grbl", 1.5, warn=True, machine=True),
     "isg": Translation("isg", 1.5, machine=True),
-    "fagor": Translation("fagor", 1.5, warn=True, machine=True),
+    "fagor": Translation("fagor", 1.5, machine=True),
 }
 """``--rows`` name -> translation. fanuc->fanuc without ``--normalize`` is the lossless copy (the program's
 own text where nothing changes); ``--normalize`` rewrites every block. grbl writes the program's ``G43 H..``
 (about one block in 10,000) as ``G43.1 Z<length>`` from the bench machine's tools, and warns at what else it
 cannot express; ISG writes the closing ``G91 G28 Z0.`` as a move to the machine's Z home (the bench machine
-gives it); Fagor cannot express that reference return [?] and drops it with a warning (one block), and
-needs the tools' lengths for ``G43 H..``. Every lowering target (linuxcnc, grbl, isg, fagor) has issue 30's
+gives it); Fagor writes it as ``G53 G00 Z<home>`` from the same set-up, and needs the tools' lengths for
+``G43 H..``. Every lowering target (linuxcnc, grbl, isg, fagor) has issue 30's
 target of 1.5x gcode-lib's parse, the copy 2x, ``--normalize`` its former 1.5x (it keeps its lead)."""
 
 

@@ -28,8 +28,8 @@ def warned(body: str, target: str) -> tuple[list[str], list[str]]:
 NEGATIVE = {"isg": "D adds the tool's length, and no code subtracts it",
             "fagor": "Fagor's G44 cancels the offset, and no code subtracts a length"}
 """Why ISG and Fagor refuse Fanuc's negative tool length offset (a G43 H is written as their D)."""
-MACHINE = ("the 8070's machine-coordinate move (G53) and home search (G74) are not confirmed to run as Fanuc's [?], "
-           "and resolving it into work coordinates needs the work offset and tool length the machine holds")
+MACHINE = "motion in machine coordinates"
+"""Why SINUMERIK refuses Fanuc's G53 move (its G53 suppresses the frames, not a move in machine coordinates)."""
 
 
 @pytest.mark.parametrize("target, comment", [("isg", "(UNSUPPORTED LINE 3: G44 H18 Z1. M08)"),
@@ -44,18 +44,16 @@ def test_a_refused_tool_length_offset_leaves_its_motion_and_coolant(target: str,
 
 def test_a_move_in_machine_coordinates_goes_with_g53_and_the_coolant_stays() -> None:
     """``Z0.`` without ``G53`` is the work zero, usually the part's top: the rapid is not written."""
-    lines, warnings = warned("G53 G0 Z0. M09\n", "fagor")
-    assert lines == [";UNSUPPORTED LINE 3: G53 G0 Z0. M09", "M09"]
-    assert warnings == ["t.nc:3:1: warning: the fagor dialect cannot express a move in machine coordinates (G53): "
-                        f"{MACHINE}; dropped, with Z0. (the block's motion), which cannot be written without it; "
+    lines, warnings = warned("G53 G0 Z0. M09\n", "siemens")
+    assert lines == [";UNSUPPORTED LINE 3: G53 G0 Z0. M09", "M9"]
+    assert warnings == [f"t.nc:3:1: warning: the siemens dialect cannot express {MACHINE}; dropped, with Z0. (the block's motion), which cannot be written without it; "
                         "the rest of the block is written"]
 
 
 def test_a_block_with_nothing_left_is_a_comment() -> None:
-    lines, warnings = warned("G53 G0 Z0.\n", "fagor")
+    lines, warnings = warned("G53 G0 Z0.\n", "siemens")
     assert lines == [";UNSUPPORTED LINE 3: G53 G0 Z0."]
-    assert warnings == ["t.nc:3:1: warning: the fagor dialect cannot express a move in machine coordinates (G53): "
-                        f"{MACHINE}; written as a comment"]
+    assert warnings == [f"t.nc:3:1: warning: the siemens dialect cannot express {MACHINE}; written as a comment"]
 
 
 def test_without_warn_the_same_block_is_a_located_error() -> None:

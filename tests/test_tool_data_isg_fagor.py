@@ -254,10 +254,36 @@ def test_a_reference_return_needs_the_home_position() -> None:
     assert "second reference position" in _errors("G21\nG91 G30 Z0.\nM30\n", "fanuc", "isg")[0]
 
 
-def test_fagor_machine_moves_are_located_errors() -> None:
-    errors = _errors(REFERENCE, "fanuc", "fagor")
-    assert [e.split(": error: ")[0] for e in errors] == ["in.nc:4:1", "in.nc:5:1"]
-    assert "reference return (G28/G30)" in errors[0] and "move in machine coordinates (G53)" in errors[1]
+def test_fanuc_g28_and_g53_become_fagor_g53_at_rapid_in_absolute_positions() -> None:
+    """Hand-derived: the G28's intermediate point is where the tool is (G91 Z0), so only the G53 rapid to the
+    set-up's home (-12.5) is written, with G90 for it and G91 again after; the G53 block gives its own G90."""
+    out = _translate(REFERENCE, "fanuc", "fagor", _setup(home=-12.5))
+    assert out.splitlines() == [
+        "G71 G90", "G43 D02 G00 Z50.", "G01 X5. F100.",
+        "G91", "G53 G90 G00 Z-12.5", "G91",
+        "G53 G90 G00 X-10. Y-20. M05",
+        "G01 X1.", "M30"]
+    report = _verify(REFERENCE, out, "fanuc", "fagor", _setup(home=-12.5))
+    assert report.ok and report.max_deviation == 0, report.summary()
+    moves = _moves(out, "fagor", _setup(home=-12.5))
+    # G53 positions the controlled point, whatever tool length D2 (25.5) is in force
+    assert [(m["move"], m["controlled"]["x"], m["controlled"]["z"]) for m in moves[2:4]] == [
+        ("rapid", 5, -12.5), ("rapid", -10, -12.5)]
+    assert _translate(out, "fagor", "fanuc", _setup(home=-12.5)).splitlines()[6] == "G53 G90 G00 X-10. Y-20. M05"
+
+
+def test_fagor_g53_under_g91_is_written_absolute() -> None:
+    text = "G21 G91\nG00 X1.\nG53 G00 Z-3.\nX1.\nM30\n"
+    out = _translate(text, "fanuc", "fagor")
+    assert out.splitlines()[2:4] == ["G53 G90 G00 Z-3.", "G91"]
+    assert _verify(text, out, "fanuc", "fagor").ok
+
+
+def test_fagor_reference_returns_it_cannot_place_are_located_errors() -> None:
+    assert _errors("G21\nG91 G28 Z0.\nM30\n", "fanuc", "fagor", _setup(home=None)) == [
+        "in.nc:2:1: error: the fagor dialect cannot express a reference return of axis Z: Fagor writes it as a G53 "
+        "move to the home position, which the set-up does not give (add <Axes><Axis name=\"Z\" home=\"..\"/>)"]
+    assert "second reference position" in _errors("G21\nG91 G30 Z0.\nM30\n", "fanuc", "fagor")[0]
 
 
 # -- path modes ------------------------------------------------------------------------------------------------
@@ -270,10 +296,20 @@ def test_fanuc_exact_stop_is_fagor_square_corner_never_g61(fanuc: str, fagor: st
     assert _translate(out, "fagor", "fanuc").splitlines()[1] == fanuc
 
 
-def test_fagor_corner_rounding_is_not_fanuc_and_g64_is_refused() -> None:
+def test_fanuc_cutting_mode_is_fagor_g05_and_back() -> None:
+    """8070 REF 1709 p.197: G05 rounds the corners (modal) as the #ROUNDPAR in force says, G61 one block."""
+    text = "G21\nG64\nG01 X1. F100.\nY1.\nG61\nX0.\nM30\n"
+    out = _translate(text, "fanuc", "fagor")
+    assert out.splitlines()[1:6] == ["G05", "G01 X1. F100.", "G01 Y1.", "G07", "G01 X0."]
+    assert _verify(text, out, "fanuc", "fagor").ok
+    assert _translate(out, "fagor", "fanuc").splitlines()[1] == "G64"
+
+
+def test_fagor_corner_rounding_for_one_block_and_roundpar_are_not_fanuc() -> None:
     assert _errors("G71\nG61 G01 X1 F100\nM30\n", "fagor", "fanuc")[0].startswith(
         "in.nc:2:1: error: G61 (corner rounding for one block) from fagor has no equivalent in fanuc")
-    assert "the cutting mode (Fanuc G64)" in _errors("G21\nG64\nG00 X1.\nM30\n", "fanuc", "fagor")[0]
+    assert _errors("G71\n#ROUNDPAR [4,0.1]\nG05\nG01 X1 F100\nM30\n", "fagor", "fanuc")[0].startswith(
+        "in.nc:2:1: error: #ROUNDPAR")
 
 
 def test_g53_means_two_things_and_is_pinned_both_ways() -> None:

@@ -6,6 +6,10 @@ table and hole-cycle words.
   the set-up's unit, not a repeat count); the resolve step reads them through ``Fagor.CYCLE_WORDS``.
   Fagor's cycle words are read in the XY plane (G17) only: which axis ``Z`` names in G18/G19 is not
   confirmed [?], so a cycle there is a located error.
+* ``G53`` qualifies the block's move, at rapid and in absolute positions (``codes``): a ``G53`` with no axis
+  word, under ``G91`` or with ``G01`` (or another motion than ``G00``) in force is a located error, as what
+  the 8070 does then (a zero offset deselection? incremental machine positions? a feed move?) is not
+  confirmed [?].
 * ``M19`` only where the set-up says ``<Cycles orientation="m19"/>`` [?].
 * ``G04 K``: a dwell of K in the cycle dwell's unit.
 * ``D<n>`` selects tool offset n (the 8070 takes ``D1`` before any); ``G43`` applies its length, ``G44``
@@ -22,7 +26,7 @@ from typing import Any, ClassVar
 from postproc.context import Context
 from postproc.errors import ProgramError, UnsupportedError
 from postproc.expr import Binary, Expr, Num
-from postproc.ir import Block, Dwell
+from postproc.ir import Block, Dwell, Motion
 from postproc.rs274.block_syntax import WordBlockSyntax, col_of_word
 from postproc.rs274.codes import CodeTable, g_key
 
@@ -70,6 +74,26 @@ class FagorBlockSyntax(WordBlockSyntax):
             expects_register(values, ctx, FIRST_OFFSET)
         super().g_sections(block, ctx, codes, values, used, cycle_block)
         read_tool_data(block, ctx, values, used, toggles=True, first=FIRST_OFFSET)
+        if "MachineCoordinates" in block.sections:
+            self.machine_move(block, ctx, codes)
+
+    @staticmethod
+    def machine_move(block: Block, ctx: Context, codes: dict[str, Any]) -> None:
+        """``G53`` read only where its meaning is the confirmed one: a rapid move, in absolute positions (the
+        family's reading makes every ``G53`` move a rapid, Fanuc's rule)."""
+        motion = block.sections.get("Motion")
+        distance = block.sections.get("DistanceMode")
+        at = ctx.at(block, col_of_word(block, "G", "53"))
+        if not isinstance(motion, Motion) or not motion.axes:
+            raise UnsupportedError("G53 without an axis word: what it does on the 8070 (a zero offset deselection?) "
+                                   "is not confirmed", at)
+        if (ctx.state.distance if distance is None else getattr(distance, "mode", None)) != "absolute":
+            raise UnsupportedError("G53 under G91: whether the 8070 takes its positions as increments is not "
+                                   "confirmed (write G90 in the block)", at)
+        code = codes.get("01")
+        if (ctx.state.motion if code is None else code[2]) != "rapid":
+            raise UnsupportedError("G53 with a motion other than G00 in force: whether the 8070 then moves at the "
+                                   "feed rate is not confirmed (write G00 in the block)", at)
 
     def cycle_data_letters(self, ctx: Context) -> str:
         """Z (the reference plane, an axis letter already), I (the depth) and K (the dwell)."""

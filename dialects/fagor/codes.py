@@ -15,18 +15,37 @@ with Fanuc's numbers means here (DIALECTS.md 1.4, 2.3, 3.4):
   ``G88`` are the rectangular and circular pockets, not Fanuc's back and manual boring. So a Fanuc
   ``G73``, ``G74``, ``G76``, ``G83``, ``G84``, ``G86``, ``G87`` or ``G88`` reaches Fagor expanded, never
   as the Fagor code of the same number.
+* A rigid (spindle-synchronised) tap is refused by name (``Fagor`` has neither ``TAP_STROKES`` nor
+  ``SYNCHRONISED_TAP``): the 8070's ``G84`` takes an ``R`` word that selects normal or rigid tapping [?:
+  DIALECTS.md 2.3; Autodesk's post for a Fagor 8065 writes ``G84 .. Z I K R0 F``], and ``G63`` is named a
+  rigid tap in Fagor's lists [?], but neither's words nor how the feed follows the pitch are confirmed.
 * ``G04 K`` dwells, ``K`` in the unit of the cycle dwell (the set-up's ``fagorDwellUnit``) [?: the 8055
   family's form; the 8070's unit is not confirmed, as for the cycle ``K``].
 * ``M19`` orients the spindle to the machine's angle (the set-up's ``orientAngle``) [?: the ISO M code;
   an expansion writes it only when the set-up says ``<Cycles orientation="m19"/>``].
 * ``G160``-``G165`` (multiple machining) are routed by the block syntax to its hook, not read here.
 * ``M17``/``M29`` end a local subroutine [?]: kept verbatim.
-* Corners [V: 8070 programming manual REF 1709 p.197, "Controlled corner rounding (G05/G61)"]: ``G05``
-  (modal) and ``G61`` (one block) round the corner as ``#ROUNDPAR`` says, and exclude ``G07``, ``G50``,
-  ``G60``. ``G07`` is the square corner (each block ends in position) and ``G60`` its one-block form [K:
-  the 8055 family's G07; G60's one-block meaning from the 8070's list]: Fanuc's ``G61``/``G09`` are written
-  so. ``G05``, ``G50`` and ``G61`` are kept verbatim: which of them (if any) is Fanuc's ``G64`` cutting
-  mode is not confirmed [?], so a Fanuc ``G64`` is refused, and Fanuc's ``G61`` is never written ``G61``.
+* Corners [V: 8070 programming manual REF 1709 p.197, "Controlled corner rounding, radius blend
+  (G05/G61)"]: ``G05`` (modal) and ``G61`` (one block) round each corner along a curve, not an arc, whose
+  shape the ``#ROUNDPAR`` type in force and the axes' feed and acceleration set; ``G05`` excludes ``G07``,
+  ``G50``, ``G60`` and ``G61``, and at power-up, ``M02``/``M30`` or a reset the CNC takes ``G05``, ``G07`` or
+  ``G50`` as the OEM's parameter ICORNER says. ``G05`` is read and written as the cutting mode (Fanuc's
+  ``G64``, LinuxCNC's ``G64`` without ``P``): the path runs through each corner without an exact stop, the
+  deviation left to the machine (its ``#ROUNDPAR``), as every dialect that writes no blending tolerance
+  leaves it (``WordWriter.note_unwritten_tolerance`` warns where a program gave one) [K: the p.197 text
+  against Fanuc's cutting mode]. A ``#ROUNDPAR`` line is kept verbatim, so a Fagor program that sets the
+  rounding is refused elsewhere, never read as the default. ``G07`` is the square corner (each block ends in
+  position) and ``G60`` its one-block form [K: the 8055 family's G07; G60's one-block meaning from the 8070's
+  list; the 8060/8065 ISO lists "G07 square corner (modal), see G60"]: Fanuc's ``G61``/``G09`` are written so.
+  ``G50`` and ``G61`` are kept verbatim: ``G61`` rounds one block (Fanuc has no such one-shot mode) and
+  ``G50``'s rounding is not confirmed [?]; Fanuc's ``G61`` is never written ``G61``.
+* ``G53`` (one block) moves to coordinates referred to machine zero, without the zero offsets and the
+  tool length and radius compensation [K: the 8055 family's "programming with respect to machine zero
+  (G53)", not modal, which cancels the compensations for its block; the 8065/8070 language keeps G53 for
+  machine-coordinate moves (Autodesk's post for a Fagor 8065 retracts with ``G53``)]. A reference return
+  (Fanuc ``G28``) is written as its intermediate point and a ``G53`` rapid to the set-up's home position of
+  each axis it names (``FagorWriter.machine_move``); Fagor's own home search ``G74`` (which references the
+  axes against their switches) is not written [?].
 * ``G43`` applies the length of the selected tool offset ``D``; ``G44`` **cancels** it [V: 8055 programming
   manual 8.2, "G44: cancellation of tool length compensation"; [K] the 8070 keeps them]. Fanuc's ``G44`` is a
   negative offset: it is never written as Fagor's ``G44`` (refused, ``postproc.isg_family.tool_data``), and
@@ -58,6 +77,8 @@ ROWS = (
     ("G58", "14", "offset", 5),
     ("G59", "14", "offset", 6),
     ("G07", "15", "path", "exact_stop"),
+    ("G05", "15", "path", "cutting"),
+    ("G53", "00", "machine", None),
     ("G60", "00", "path_once", "exact_stop"),
     *((f"G159={n}", "14", "offset", n) for n in range(1, 7)),
     ("G70", "06", "units", "inch"),
@@ -101,7 +122,7 @@ CODES = CodeTable(
         "82": "drilling with variable peck [?]", "83": "deep-hole drilling with constant peck [?]",
         "84": "tapping [?]", "85": "reaming [?]", "86": "boring with rapid withdrawal [?]",
         "87": "rectangular pocket", "88": "circular pocket",
-        "5": "corner rounding by #ROUNDPAR", "50": "controlled corner rounding",
+        "50": "controlled corner rounding",
         "61": "corner rounding for one block",
         **{f"159={n}": f"zero offset {n}" for n in range(7, MAX_OFFSET + 1)},
     },

@@ -10,8 +10,13 @@ comments, ``%name`` headers, and the hole cycles Fagor runs with its own words.
   Every other cycle arrives expanded (``Fagor.NATIVE_CYCLES``).
 * Another dialect's tape mark ``%`` is written as the comment ``;%`` (a Fagor ``%`` line is a header).
 * A dwell is ``G04 K`` in the set-up's unit (as the cycle ``K`` [?]).
-* No block skip, no oriented spindle stop and no tool length offset are written:
-  their 8070 spelling is not confirmed [?] (a located error names them).
+* No block skip and no oriented spindle stop are written: their 8070 spelling is not confirmed [?] (a
+  located error names them).
+* The cutting mode (Fanuc/LinuxCNC ``G64``) is ``G05``, the square corner ``G07``/``G60`` (``codes``).
+* A move in machine coordinates (Fanuc ``G53``, always a rapid) is ``G53 G00`` in absolute positions
+  (``G90`` before it and ``G91`` after it under incremental distance); a reference return (``G28``) is
+  its intermediate move, then ``G53 G00`` to the set-up's ``<Axis home>`` of each axis it names, as ISG
+  writes it with ``#SUPPRESS OFFSETS`` (``codes``: [K] for the 8070's G53).
 * Multiple machining: a ``HolePattern`` (kept native: ``Fagor.HOLE_PATTERNS``) read from Fagor and
   unchanged is copied byte for byte like any block; regenerated, it is written by
   ``multiple_machining.pattern_words`` (``G160``-``G164``, its points by step and count, skipped points
@@ -24,8 +29,10 @@ from typing import Any, ClassVar
 
 from postproc.cycle_words import CycleWords
 from postproc.errors import UnsupportedError
+from postproc.event_order import after_motion
 from postproc.expr import Expr
-from postproc.ir import Block, Motion
+from postproc.ir import Block, DistanceMode, MachineCoordinates, Motion, Section
+from postproc.state import MM_PER_INCH
 from postproc.rs274.codes import CodeTable
 from postproc.rs274.cycle_words import NEUTRAL_CYCLE_WORDS
 from postproc.rs274.writer import WordWriter
@@ -35,12 +42,16 @@ from .cycle_words import cycle_words
 from .multiple_machining import pattern_words
 
 _CANCELS = frozenset(("rapid", "linear", "cw", "ccw"))
+_REFERENCE = frozenset(("home", "home2"))
+"""Motion modes of a reference return."""
 
 
 class FagorWriter(WordWriter):
     DIALECT: ClassVar[str] = "fagor"
     CODES: ClassVar[CodeTable] = CODES
     DWELL_WORD: ClassVar[str] = ""
+    MACHINE_MOVES: ClassVar[frozenset[str]] = frozenset(("rapid",))
+    """``G53`` is written with ``G00`` only (``codes``: a feed move under G53 is not confirmed [?])."""
 
     dwell_in_force: float | None = None
     """The cycle dwell (seconds) the written program has in force: None before any cycle and after a
@@ -52,6 +63,13 @@ class FagorWriter(WordWriter):
     def generate(self, block: Block) -> str:
         if "TapeMark" in block.sections:
             return ";%" + (block.eol or "\n")  # a tape's start or end: no Fagor block, kept as a trace
+        motion = block.sections.get("Motion")
+        if isinstance(motion, Motion) and motion.mode in _REFERENCE and not motion.axes:
+            rest = {k: v for k, v in block.sections.items() if k != "Motion"}  # a return of no axis: no move
+            return self._part(block, rest)[:-1] + (block.eol or "\n") if rest else ""
+        if isinstance(motion, Motion) and motion.axes \
+                and (motion.mode in _REFERENCE or "MachineCoordinates" in block.sections):
+            return self.machine_move(block, motion)
         text = super().generate(block)
         sections = block.sections
         motion = sections.get("Motion")
@@ -116,28 +134,59 @@ class FagorWriter(WordWriter):
     def return_level_words(self, s: Any, block: Block) -> list[str]:
         return self._code("return", s.level, "a cycle return level", block)
 
-    # -- what the 8070 has no confirmed spelling for -----------------------------------------------------
-    def path_control_words(self, s: Any, block: Block) -> list[str]:
-        if s.mode == "cutting" and not s.one_shot:
-            self.unsupported("the cutting mode (Fanuc G64): which of the 8070's corner modes (G05 with "
-                             "#ROUNDPAR, G50) runs the path as it does is not confirmed", block)
-        return super().path_control_words(s, block)
+    # -- machine coordinates ---------------------------------------------------------------------------
+    def machine_move(self, block: Block, motion: Motion) -> str:
+        """A move in machine coordinates or a reference return (the module docstring): ``G53`` positions
+        are absolute, so ``G90`` comes before them (and ``G91`` after) under incremental distance."""
+        sections = block.sections
+        if "BlockDelete" in sections:
+            self.block_delete_words(sections["BlockDelete"], block)
+        rest = {k: v for k, v in sections.items() if k not in ("Motion", "MachineCoordinates")}
+        after: dict[str, Section] = {}
+        if motion.mode in _REFERENCE:  # what the block sets goes before the return, what it ends after it
+            after = {k: v for k, v in rest.items() if after_motion(k, v)}
+            before = {k: v for k, v in rest.items() if k not in after}
+            text = self._part(block, before) if before else ""  # (its distance mode included: the return's own)
+            if self.modal.distance == "absolute" or any(v != 0 for v in motion.axes.values()):
+                text += self._part(block, {"Motion": Motion("rapid", dict(motion.axes))})  # intermediate point
+            moving: dict[str, Section] = {"Motion": Motion("rapid", dict(self._reference(motion, block)))}
+        else:
+            text = ""
+            moving = {**rest, "Motion": motion}
+        mode = moving.get("DistanceMode")
+        incremental = (self.modal.distance if mode is None else getattr(mode, "mode", None)) != "absolute"
+        if any(isinstance(v, Expr) for v in moving["Motion"].axes.values()):  # type: ignore[attr-defined]
+            self.unsupported("a computed position in machine coordinates", block)
+        if incremental:
+            moving["DistanceMode"] = DistanceMode("absolute")
+        text += self._part(block, {"MachineCoordinates": MachineCoordinates(), **moving})
+        if incremental:
+            text += self._part(block, {"DistanceMode": DistanceMode("incremental")})
+        if after:
+            text += self._part(block, after)
+        return text[:-1] + (block.eol or "\n")
 
-    def motion_words(self, s: Motion, block: Block) -> list[str]:
-        if s.mode in ("home", "home2"):
-            self._no_machine_move("a reference return (G28/G30)", block)
-        return super().motion_words(s, block)
+    def _part(self, block: Block, sections: dict[str, Section]) -> str:
+        part = Block(block.line, None, "\n")
+        part.sections = sections
+        return super().generate(part)
 
-    def machine_coordinates_words(self, s: Any, block: Block) -> list[str]:
-        motion = block.sections.get("Motion")
-        if motion is not None and getattr(motion, "axes", None):
-            self._no_machine_move("a move in machine coordinates (G53)", block)
-        return []
-
-    def _no_machine_move(self, what: str, block: Block) -> None:
-        self.unsupported(f"{what}: the 8070's machine-coordinate move (G53) and home search (G74) are not "
-                         "confirmed to run as Fanuc's [?], and resolving it into work coordinates needs the "
-                         "work offset and tool length the machine holds", block)
+    def _reference(self, motion: Motion, block: Block) -> dict[str, float]:
+        """The home position of each axis a reference return names, from the set-up, in program units."""
+        if motion.mode != "home":
+            self.unsupported("a return to the second reference position (G30): the set-up has no element for "
+                             "it (only each axis's home)", block)
+        setup = self.ctx.setup
+        scale = setup.machine.mm() / (MM_PER_INCH if self.modal.units == "inch" else 1.0)
+        target = {}
+        for axis in motion.axes:
+            travel = setup.travel.get(axis)
+            if travel is None or travel.home is None:
+                self.unsupported(f"a reference return of axis {axis}: Fagor writes it as a G53 move to the home "
+                                 f"position, which the set-up does not give (add <Axes><Axis name=\"{axis}\" "
+                                 f"home=\"..\"/>)", block)
+            target[axis] = travel.home * scale
+        return target
 
     # -- tool data (``postproc.isg_family.tool_data`` chose the D) ---------------------------------------
     def tool_length_offset_words(self, s: Any, block: Block) -> list[str]:

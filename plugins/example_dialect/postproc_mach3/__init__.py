@@ -126,6 +126,11 @@ class Mach3(Dialect):
     inside them (``postproc.output.template_values``)."""
     SPINDLE_ORIENTATION = False
     """No M19: cycles that need an oriented stop follow the set-up's ``Cycles orientation``."""
+    SYNCHRONISED_TAP = False
+    """No spindle-synchronised (rigid) tap: Mach3's G84 is the floating tap holder's cycle, and Mach3 has no
+    rigid tap code [V: Dynomotion's Mach3 plugin help, "Mach3 Plugin - Rigid Tapping": a rigid tap there is
+    an M84 macro that hands the cycle to the motion card]. A rigid tap of another dialect (LinuxCNC
+    ``G33.1``, Fanuc ``M29``+``G84``) is refused by name, never written as a floating tap's feed moves."""
     STOPS_BEFORE_MOTION = True
     """The RS274/NGC order of execution: M5 and M9 act before the block's motion."""
     FEED_BEFORE_UNITS = True

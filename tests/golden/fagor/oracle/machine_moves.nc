@@ -1,0 +1,16 @@
+%1202
+; Fagor G05 (corner rounding) and G53 moves in machine coordinates, against LinuxCNC
+G71 G90 G17
+G00 X0 Y0 Z30
+M03 S1000
+G05
+G01 X20 Y5 Z-1 F400
+X35 Y20
+G53 G00 Z0
+G00 X-5 Y-5
+G01 Z-2 F300
+G91 G01 X10 Y10
+G53 G90 G00 Z-10 X3
+G91 X1 Y1
+G90 G00 Z30
+M30
