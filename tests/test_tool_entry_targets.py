@@ -174,3 +174,56 @@ def test_one_register_for_length_and_radius_takes_one_value() -> None:
 
 def test_isg_refuses_the_entry_by_name() -> None:
     assert "G10 L1 P1 Z3 (setting tool length 1)" in _refusal("G21\nG10 L1 P1 Z3\nM2\n", "isg")
+
+
+FANUC = """%
+O0001
+G21 G17 G90 G40
+G10 L10 P1 R12.5
+G10 L12 P1 R2.
+T1 M06
+G43 H01 G00 X-5. Y-5. Z5.
+G01 Z-1. F100.
+G41 D01 G01 X0. Y0.
+X10.
+Y10.
+X0.
+Y0.
+G40 G01 X-5. Y-5.
+G00 Z5.
+M30
+%
+"""
+"""By hand (Fanuc's compensation C, radius 2 on the left of the square X0 Y0 - X10 - Y10 - X0 - Y0): X0 Y2
+(the start-up ends square to the next side), X8 Y2, X8 Y8, X2 Y8, X2 Y0, then X-5 Y-5; Z plus 12.5."""
+FANUC_POINTS = [(-5.0, -5.0, 17.5), (-5.0, -5.0, 11.5), (0.0, 2.0, 11.5), (8.0, 2.0, 11.5), (8.0, 8.0, 11.5),
+                (2.0, 8.0, 11.5), (2.0, 0.0, 11.5), (-5.0, -5.0, 11.5), (-5.0, -5.0, 17.5)]
+
+
+def _from_fanuc(target: str) -> str:
+    out = io.StringIO(newline="")
+    translate(_lines(FANUC), out, file="t.nc", source="fanuc", target=target, setup=SETUP,
+              diagnostics=Diagnostics(ErrorLevel.RAISE, warn_stream=io.StringIO()))
+    return out.getvalue()
+
+
+@pytest.mark.skipif(not available(), reason="the LinuxCNC interpreter rs274 is not installed")
+def test_fanuc_registers_become_linuxcnc_entries_that_rs274_runs() -> None:
+    text = _from_fanuc("linuxcnc")
+    assert [line for line in text.splitlines() if line.startswith("G10")] == ["G10 L1 P1 Z12.5", "G10 L1 P1 R2."]
+    assert _rs274_points(text) == FANUC_POINTS  # rs274's table says tool 1 is 2 in long: the program's wins
+
+
+@pytest.mark.parametrize("target", ["grbl", "linuxcnc"])
+def test_fanuc_registers_translate_where_the_target_cuts_them(target: str) -> None:
+    text = _from_fanuc(target)
+    assert _our_points(text, target) == FANUC_POINTS
+    report = verify_lines(_lines(FANUC), _lines(text), file_in="t.nc", file_out="out", source="fanuc",
+                          target=target, setup=SETUP)
+    assert report.ok, report.summary()
+
+
+def test_a_wear_register_has_no_linuxcnc_column() -> None:
+    text = "%\nO0001\nG21 G90\nG10 L11 P1 R0.1\nM30\n%\n"
+    with pytest.raises(ErrorList, match="no such table can be set from a program"):
+        translate(_lines(text), io.StringIO(), file="t.nc", source="fanuc", target="linuxcnc", setup=SETUP)

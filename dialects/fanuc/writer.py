@@ -47,8 +47,8 @@ class FanucWriter(LatheWordWriter):
     """G10 L2 P1-P6 sets G54-G59's offset (P0 is the external offset, which other dialects lack)."""
     WORK_OFFSET_COUNT: ClassVar[int] = 6
     SETTING_ADDS_IN_INCREMENTAL: ClassVar[bool] = True
-    TOOL_DATA_SETTINGS: ClassVar[Mapping[str, tuple[str, int]]] = {
-        table: (f"G10 L{ell}", highest) for ell, (table, _, highest) in FanucBlockSyntax.DATA_TABLES.items()
+    TOOL_DATA_SETTINGS: ClassVar[Mapping[str, tuple[str, int, str]]] = {
+        table: (f"G10 L{ell}", highest, "R") for ell, (table, _, highest) in FanucBlockSyntax.DATA_TABLES.items()
         if table.startswith(("tool_length", "cutter_offset"))}
     """G10 L10-L13 P R (the milling offset memory's registers), the reader's own table read backwards; under
     G91 the value adds to the register [K: Fanuc 0i-MD operator's manual B-64304EN, "Changing of tool

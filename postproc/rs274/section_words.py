@@ -287,9 +287,10 @@ class SectionWords(NumberWriter):
     """The dialect's work offset setting adds to the offset in incremental mode (Fanuc's G10 under G91):
     an absolute setting cannot be written while the program is incremental."""
 
-    TOOL_DATA_SETTINGS: ClassVar[Mapping[str, tuple[str, int]]] = {}
+    TOOL_DATA_SETTINGS: ClassVar[Mapping[str, tuple[str, int, str]]] = {}
     """How the dialect writes an offset register from the program, by neutral table ('tool_length' ->
-    ('G10 L10', the highest register)), then P and R, absolute; empty when it has no such spelling."""
+    ('G10 L10', the highest register, the value's letter 'R')), then P and the value, absolute; empty when
+    it has no such spelling."""
 
     def data_setting_words(self, s: Any, block: Block) -> list[str]:
         """A G10 data setting: as written for a controller of its family; else, where exact, the target's
@@ -318,7 +319,7 @@ class SectionWords(NumberWriter):
 
     def _register_setting(self, s: Any, block: Block) -> list[str]:
         """An offset register's value (``postproc.compensation.entries`` makes them from a tool table entry)."""
-        spelling, highest = self.TOOL_DATA_SETTINGS[s.table]
+        spelling, highest, letter = self.TOOL_DATA_SETTINGS[s.table]
         why = ""
         if s.incremental:
             why = "it sets offsets absolutely only (the source adds to the offset in incremental mode)"
@@ -330,7 +331,7 @@ class SectionWords(NumberWriter):
             why = "it sets one value per register (R)"
         if why:
             self.unsupported(f"{s.describe()}: {why}", block)
-        return [*spelling.split(), f"P{s.index}", "R" + self.length(s.values["R"], block, "R")]
+        return [*spelling.split(), f"P{s.index}", letter + self.length(s.values["R"], block, letter)]
 
     def machine_function_words(self, s: Any, block: Block) -> list[str]:
         """A machine-specific code as written, for a controller of its family; elsewhere it has no
