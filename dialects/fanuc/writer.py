@@ -51,8 +51,11 @@ class FanucWriter(LatheWordWriter):
         table: (f"G10 L{ell}", highest, "R") for ell, (table, _, highest) in FanucBlockSyntax.DATA_TABLES.items()
         if table.startswith(("tool_length", "cutter_offset"))}
     """G10 L10-L13 P R (the milling offset memory's registers), the reader's own table read backwards; under
-    G91 the value adds to the register [K: Fanuc 0i-MD operator's manual B-64304EN, "Changing of tool
-    offset value (programmable data input) (G10)"], so it is written in absolute mode only."""
+    G91 the value adds to the register, so it is written in absolute mode only. [K] L10/L11 the H geometry/
+    wear, L12/L13 the D geometry/wear, and G90 sets while G91 adds: Fanuc 0i-MD B-64304EN "Changing of tool
+    offset value (programmable data input) (G10)" from memory; the same table and rule in the Fanuc-compatible
+    Mitsubishi M700V manual 12.7 ("tool compensation memory II") and the Allen-Bradley 9-series mill manual
+    20.4 (stored pages); B-63324EN/03 (15i-MA) appendix B lists memory A's one value as G10 L11 P R."""
     SUBPROGRAM_NAMES: ClassVar[NameRule] = NameRule(numbers=range(1, 10000), spare=range(2000, 8000), names=False)
     """Program numbers are ``O0001``-``O9999`` (DIALECTS.md 1.1 [K]; 8 digits only on a 30i with an option);
     a subprogram of another dialect without one gets the first free number from O2000 (below O8000,
