@@ -8,7 +8,7 @@ from . import cycles, patterns
 from .block_rules import check_blocks
 from .lowering.machine_functions import drop_foreign_machine_functions
 from .lowering.program_end import comment_after_end
-from .compensation.entries import write_tool_entries
+from .lowering.tool_entries import write_tool_entries
 from .lowering.program_frame import frame_program
 from .control import register_control
 from .cycles.lathe_lowering import expand_lathe_cycles

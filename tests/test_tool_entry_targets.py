@@ -1,4 +1,4 @@
-"""LinuxCNC ``G10 L1 P- Z- R-`` towards other targets (issue 26, ``postproc.compensation.entries``): the entry's
+"""LinuxCNC ``G10 L1 P- Z- R-`` towards other targets (issue 26, ``postproc.lowering.tool_entries``): the entry's
 length and radius become the target's own register settings (Fanuc ``G10 L10``/``L12``) or, on grbl without
 a tool table, are taken into the path (``G43.1 Z<length>``, the compensated moves). Seeded programs: each
 translation's controlled points are rs274's (its canonical points, cutter compensation applied, plus the Z

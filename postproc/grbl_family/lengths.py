@@ -115,7 +115,7 @@ def drop_resolved_tool_data(blocks: Iterator[Block], ctx: Context, target: type[
     """Lowering step, after ``write_tool_lengths`` and the cutter compensation's resolution: on a controller
     without a tool table every length and radius a program writes into a register has been read where it
     is used (``G43.1 Z<length>``, the compensated path), so the setting itself is left as a comment
-    (``postproc.compensation.entries`` makes them from a tool table entry; a Fanuc ``G10 L10``..``L13``).
+    (``postproc.lowering.tool_entries`` makes them from a tool table entry; a Fanuc ``G10 L10``..``L13``).
     With a tool table the writer refuses it (it would be the machine's own register)."""
     if ctx.dialect == target.NAME or (issubclass(target, GrblFamily) and target.tool_table(ctx.setup)):
         return blocks

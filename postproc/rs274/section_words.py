@@ -318,7 +318,7 @@ class SectionWords(NumberWriter):
                 *(axis + self.length(value, block, axis) for axis, value in s.values.items())]
 
     def _register_setting(self, s: Any, block: Block) -> list[str]:
-        """An offset register's value (``postproc.compensation.entries`` makes them from a tool table entry)."""
+        """An offset register's value (``postproc.lowering.tool_entries`` makes them from a tool table entry)."""
         spelling, highest, letter = self.TOOL_DATA_SETTINGS[s.table]
         why = ""
         if s.incremental:

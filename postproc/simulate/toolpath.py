@@ -40,7 +40,7 @@ from ..errors import Diagnostics
 from ..lowering.lower import lower_for
 from ..lowering.machine_functions import drop_foreign_machine_functions
 from ..lowering.program_end import comment_after_end
-from ..compensation.entries import write_tool_entries
+from ..lowering.tool_entries import write_tool_entries
 from ..plugins import Registry, default_registry
 from ..reading import gc_paused, macro_arguments, read_blocks
 from ..setup.machine_setup import MachineSetup

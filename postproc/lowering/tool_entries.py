@@ -26,11 +26,11 @@ from __future__ import annotations
 
 from typing import Iterator
 
+from ..compensation.tool_table import ENTRY, SIDEWAYS
 from ..context import Context
 from ..dialect import Dialect
 from ..errors import UnsupportedError
 from ..ir import Block, Comments, DataSetting
-from .tool_table import ENTRY, SIDEWAYS
 
 LENGTH, RADIUS = "Z", "R"
 """The entry's words for its length and its radius."""
