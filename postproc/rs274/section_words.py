@@ -317,11 +317,18 @@ class SectionWords(NumberWriter):
         return [*self.WORK_OFFSET_SETTING.split(), f"P{s.index}",
                 *(axis + self.length(value, block, axis) for axis, value in s.values.items())]
 
+    TOOL_DATA_IN_TABLE: ClassVar[bool] = False
+    """The controller sets only a register its tool table already holds (LinuxCNC: a tool the set-up's
+    ``<Tools>`` does not list is refused)."""
+
     def _register_setting(self, s: Any, block: Block) -> list[str]:
         """An offset register's value (``postproc.lowering.tool_entries`` makes them from a tool table entry)."""
         spelling, highest, letter = self.TOOL_DATA_SETTINGS[s.table]
         why = ""
-        if s.incremental:
+        if self.TOOL_DATA_IN_TABLE and str(s.index) not in self.ctx.setup.tools:
+            why = (f"it sets only a tool its table holds, and the set-up's <Tools> has no tool {s.index} (add "
+                   f"<Tool number=\"{s.index}\" .../>)")
+        elif s.incremental:
             why = "it sets offsets absolutely only (the source adds to the offset in incremental mode)"
         elif self.SETTING_ADDS_IN_INCREMENTAL and self.modal.distance == "incremental":
             why = "in incremental mode its setting adds to the offset (program absolute mode first)"

@@ -98,6 +98,9 @@ class LinuxcncWriter(WordWriter):
     """Another family's length and radius registers (Fanuc memory C's H and D geometry) as the tool table
     entry of that number, whose Z ``G43 H`` and whose R ``G41 D`` read (``tool_entry``: [V] LinuxCNC
     g-code.adoc "G10 L1"); absolute whatever the distance mode. A wear register has no column here."""
+    TOOL_DATA_IN_TABLE: ClassVar[bool] = True
+    """[V] rs274: ``G10 L1 P5 Z1`` with no tool 5 in its table is "Requested tool 5 not found in the tool table"
+    (``convert_setup_tool`` looks the tool up first): the set-up's ``<Tools>`` stand for that table."""
     """G76 threads, G87/G88 take other words: no row spells Fanuc's fine, back or manual boring."""
     DWELL_WORD: ClassVar[str] = "P"
     CYCLE_CANCEL_IS_MOTION: ClassVar[bool] = True
