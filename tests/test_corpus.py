@@ -26,12 +26,6 @@ PROGRAMS = harness.load_manifest()
 KNOWN_FAILURES: dict[tuple[str, str], str] = {
     ("linuxcnc/g10_l1_l10.ngc", ""): "G10 L10 tool offsets along X and Y (measured where the tool stands, under a "
                                      "G10 L2 R rotation) are not simulated; G10 L1 X/Y/Z/R and L10 Z/R are",
-    ("linuxcnc/mmount.ngc", "isg"): "verify cannot compare a program whose cutter compensation is partly native "
-                                    "(G41 D4, compared as a setting: ISG's rules are not modelled) and partly resolved "
-                                    "into the path (G41 D15, whose D would bring another length): it compares the "
-                                    "programmed points throughout, and the resolved stretch's are the compensated ones "
-                                    "(the controlled points agree, -16.649 27.677 at line 251); for the compensation/"
-                                    "verify owner",
 }
 """(program, target or '' for the source check) -> the defect, as found by this corpus."""
 

@@ -219,9 +219,12 @@ def test_g10_translation_verifies_at_zero() -> None:
     ("G21 G90\nG10 L2 P0 X5.\nM30", "linuxcnc",
      "t.nc:2:1: error: the linuxcnc dialect cannot express G10 L2 P0 X5. (setting work offset 0): P0 here is not "
      "the offset common to all work systems"),
-    ("G21 G90\nG10 L10 P5 R-123.4\nM30", "linuxcnc",
-     "t.nc:2:1: error: the linuxcnc dialect cannot express G10 L10 P5 R-123.4 (setting tool length 5): no such "
-     "table can be set from a program"),
+    ("G21 G90\nG10 L11 P5 R-123.4\nM30", "linuxcnc",  # a wear register (G10 L10, the geometry, is G10 L1 P5 Z)
+     "t.nc:2:1: error: the linuxcnc dialect cannot express G10 L11 P5 R-123.4 (setting tool length wear 5): no "
+     "such table can be set from a program"),
+    ("G21 G90\nG10 L10 P5 R-123.4\nM30", "linuxcnc",  # the default set-up lists no tools
+     "t.nc:2:1: error: the linuxcnc dialect cannot express G10 L10 P5 R-123.4 (setting tool length 5): it sets "
+     "only a tool its table holds, and the set-up's <Tools> has no tool 5 (add <Tool number=\"5\" .../>)"),
     ("G21 G90\nG10 L2 P1 X5. A90.\nM30", "grbl",
      "t.nc:2:1: error: the grbl dialect cannot express G10 L2 P1 X5. A90. (setting work offset 1): it sets axes "
      "XYZ only"),

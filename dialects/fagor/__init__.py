@@ -35,6 +35,12 @@ def select_tool_data(blocks: Iterator[Block], ctx: Context, target: type[Dialect
     return step(blocks, ctx, target)
 
 
+def resolve_radius_where_d_cannot(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """``postproc.isg_family.tool_data.resolve_radius_where_d_cannot``, imported when first used."""
+    from postproc.isg_family.tool_data import resolve_radius_where_d_cannot as step
+    return step(blocks, ctx, target)
+
+
 class Fagor(Dialect):
     NAME = "fagor"
     DESCRIPTION = "Fagor CNC 8070 milling: Z/I/K drilling words, G70/G71 units, G159 offsets, P parameters"
@@ -69,10 +75,12 @@ class Fagor(Dialect):
     PROGRAMS = False
     """P parameters and expressions are read [K]; control flow and subroutines are kept verbatim [?], so a
     program that computes reaches Fagor flattened."""
-    LOWERING = (stops_before_motion, select_tool_data)
+    LOWERING = (stops_before_motion, resolve_radius_where_d_cannot, select_tool_data)
     """A spindle stop or coolant off that the source made before its block's motion goes in a block of
-    its own before it (Fagor acts on M05/M09 after the block's motion, as Fanuc [?]); another family's
-    length and radius registers become the D that selects them (``select_tool_data``)."""
+    its own before it (Fagor acts on M05/M09 after the block's motion, as Fanuc [?]); a G41/G42 whose D
+    would bring another length than the one G43 has on is the compensated path, where the source's rules
+    are modelled (``resolve_radius_where_d_cannot``, as for ISG); another family's length and radius
+    registers become the D that selects them (``select_tool_data``)."""
 
     @classmethod
     def python_pipeline(cls, setup: MachineSetup) -> Pipeline:

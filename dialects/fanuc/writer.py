@@ -9,7 +9,7 @@ where Fanuc finds it. Its number, for the definition and every call alike, is de
 
 from __future__ import annotations
 
-from typing import Any, ClassVar
+from typing import Any, ClassVar, Mapping
 
 from postproc.context import Context
 from postproc.control import (
@@ -26,6 +26,7 @@ from postproc.rs274.macro_b import spell_statement_fanuc
 from postproc.rs274.lathe_writer import LatheWordWriter
 from postproc.subprogram_names import NameRule, SubprogramNames
 
+from .block_syntax import FanucBlockSyntax
 from .codes import CODES
 from .lathe_codes import LATHE_CODES
 from .macro import LOCAL_LETTERS
@@ -46,6 +47,15 @@ class FanucWriter(LatheWordWriter):
     """G10 L2 P1-P6 sets G54-G59's offset (P0 is the external offset, which other dialects lack)."""
     WORK_OFFSET_COUNT: ClassVar[int] = 6
     SETTING_ADDS_IN_INCREMENTAL: ClassVar[bool] = True
+    TOOL_DATA_SETTINGS: ClassVar[Mapping[str, tuple[str, int, str]]] = {
+        table: (f"G10 L{ell}", highest, "R") for ell, (table, _, highest) in FanucBlockSyntax.DATA_TABLES.items()
+        if table.startswith(("tool_length", "cutter_offset"))}
+    """G10 L10-L13 P R (the milling offset memory's registers), the reader's own table read backwards; under
+    G91 the value adds to the register, so it is written in absolute mode only. [K] L10/L11 the H geometry/
+    wear, L12/L13 the D geometry/wear, and G90 sets while G91 adds: Fanuc 0i-MD B-64304EN "Changing of tool
+    offset value (programmable data input) (G10)" from memory; the same table and rule in the Fanuc-compatible
+    Mitsubishi M700V manual 12.7 ("tool compensation memory II") and the Allen-Bradley 9-series mill manual
+    20.4 (stored pages); B-63324EN/03 (15i-MA) appendix B lists memory A's one value as G10 L11 P R."""
     SUBPROGRAM_NAMES: ClassVar[NameRule] = NameRule(numbers=range(1, 10000), spare=range(2000, 8000), names=False)
     """Program numbers are ``O0001``-``O9999`` (DIALECTS.md 1.1 [K]; 8 digits only on a 30i with an option);
     a subprogram of another dialect without one gets the first free number from O2000 (below O8000,

@@ -107,7 +107,13 @@ its source is closed]."""
 #     cancel move goes from there to its programmed end.
 # [K] 15.6.1/15.6.3: the control reads two blocks ahead: one block without motion in the offset plane
 #     between two moves is looked past; two or more make the corner from the previous move alone, which
-#     is not modelled (refused).
+#     is not modelled (refused). [V] the mechanism, B-63324EN/03 (15i-MA) 14.4.3 text (read in the stored
+#     pages, cncmanuals.com): the intersection needs two moving blocks among the N read ahead, so it is
+#     made while the blocks without motion are at most N - 2, otherwise overcutting or undercutting;
+#     there N is parameter 6009 [?: the 16/18 and 0i value of N, kept at the [K] above].
+# Checked in this session (issue 26, tooltab): the stored pages hold the text of B-62764EN 15.5/15.6.1,
+#     B-63324EN 14.3/14.4.3 and B-63944EN-2 (30i) 6.x, but the corner and start-up constructions are in
+#     the figures, which carry no text there: the [K] tags on the figure rules below stay [K].
 # [?] not read in this session: the type B figures for an inner start-up corner and for the cancel move
 #     (refused by name), the less-than-1-degree outer start-up case (simulated as any acute corner).
 FANUC_A = CutterRules(

@@ -27,7 +27,7 @@ from __future__ import annotations
 
 from typing import Final, Iterator
 
-from postproc.compensation.tool_table import ToolTable
+from postproc.compensation.tool_table import TABLES, ToolTable
 from postproc.context import Context
 from postproc.dialect import Dialect
 from postproc.grbl_family.dialect import GrblFamily
@@ -118,6 +118,30 @@ def _dynamic(block: Block, ctx: Context, table: ToolTable, offset: ToolLengthOff
         first.sections["BlockDelete"] = sections["BlockDelete"]
     first.sections["ToolLengthOffset"] = dynamic(before)  # run before the block's G20/G21
     return [first, block]
+
+
+def drop_resolved_tool_data(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """Lowering step, after ``write_tool_lengths`` and the cutter compensation's resolution: on a controller
+    without a tool table every length and radius a program writes into a register has been read where it
+    is used (``G43.1 Z<length>``, the compensated path), so the setting itself is left as a comment
+    (``postproc.lowering.tool_entries`` makes them from a tool table entry; a Fanuc ``G10 L10``..``L13``).
+    With a tool table the writer refuses it (it would be the machine's own register)."""
+    if ctx.dialect == target.NAME or (issubclass(target, GrblFamily) and target.tool_table(ctx.setup)):
+        return blocks
+    return _drop_resolved(blocks)
+
+
+def _drop_resolved(blocks: Iterator[Block]) -> Iterator[Block]:
+    for block in blocks:
+        setting = block.sections.get("DataSetting")
+        if isinstance(setting, DataSetting) and setting.table in TABLES:
+            sections = block.sections
+            del sections["DataSetting"]
+            block.changed()
+            note = f"{setting.table.replace('_', ' ').upper()} {setting.index} SET: TAKEN INTO THE PATH"
+            comments = sections.get("Comments")
+            sections["Comments"] = Comments(([*comments.texts] if isinstance(comments, Comments) else []) + [note])
+        yield block
 
 
 def _rest(sections: dict[str, Section]) -> bool:

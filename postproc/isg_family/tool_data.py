@@ -85,12 +85,20 @@ def expects_register(values: dict[str, Any], ctx: Context, first: int) -> None:
 # -- writing -----------------------------------------------------------------------------------------
 
 def resolve_radius_where_d_cannot(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
-    """Lowering step for a target whose D always brings its length (ISG): a G41/G42 whose register has
-    another length than the one in force becomes the compensated path (see the module docstring)."""
-    if ctx.dialect == target.NAME or target.LENGTH_TOGGLES:
+    """Lowering step for a target whose D brings its length (ISG always; Fagor while ``G43`` is on,
+    ``LENGTH_TOGGLES``): a G41/G42 whose register has another length than the one in force becomes the
+    compensated path (see the module docstring)."""
+    if ctx.dialect == target.NAME:
         return blocks
     from ..lowering.cutter_compensation import resolve_cutter_compensation_unless
-    return resolve_cutter_compensation_unless(blocks, ctx, _d_keeps_the_length)
+    return resolve_cutter_compensation_unless(blocks, ctx, _d_keeps_the_length_on if target.LENGTH_TOGGLES
+                                              else _d_keeps_the_length)
+
+
+def _d_keeps_the_length_on(resolver: Any, cc: CutterCompensation) -> bool:
+    """``_d_keeps_the_length`` on a target that applies a D's length only while its length code is on
+    (Fagor ``G43``): with no length offset in force the D brings none, whatever its register holds."""
+    return resolver.length_register is None or _d_keeps_the_length(resolver, cc)
 
 
 def _d_keeps_the_length(resolver: Any, cc: CutterCompensation) -> bool:

@@ -8,7 +8,7 @@ never another dialect's spelling.
 
 from __future__ import annotations
 
-from typing import Any, ClassVar, Final
+from typing import Any, ClassVar, Final, Mapping
 
 from mypy_extensions import mypyc_attr
 
@@ -287,12 +287,19 @@ class SectionWords(NumberWriter):
     """The dialect's work offset setting adds to the offset in incremental mode (Fanuc's G10 under G91):
     an absolute setting cannot be written while the program is incremental."""
 
+    TOOL_DATA_SETTINGS: ClassVar[Mapping[str, tuple[str, int, str]]] = {}
+    """How the dialect writes an offset register from the program, by neutral table ('tool_length' ->
+    ('G10 L10', the highest register, the value's letter 'R')), then P and the value, absolute; empty when
+    it has no such spelling."""
+
     def data_setting_words(self, s: Any, block: Block) -> list[str]:
         """A G10 data setting: as written for a controller of its family; else, where exact, the target's
-        absolute work offset setting; anything else has no equivalent here."""
+        absolute work offset or offset register setting; anything else has no equivalent here."""
         family = self.target.family() if self.target is not None else self.DIALECT
         if s.family == family:
             return [s.text]
+        if s.table in self.TOOL_DATA_SETTINGS:
+            return self._register_setting(s, block)
         why = ""
         if s.table != "work_offset" or not self.WORK_OFFSET_SETTING:
             why = "no such table can be set from a program"
@@ -309,6 +316,29 @@ class SectionWords(NumberWriter):
             self.unsupported(f"{s.describe()}: {why}", block)
         return [*self.WORK_OFFSET_SETTING.split(), f"P{s.index}",
                 *(axis + self.length(value, block, axis) for axis, value in s.values.items())]
+
+    TOOL_DATA_IN_TABLE: ClassVar[bool] = False
+    """The controller sets only a register its tool table already holds (LinuxCNC: a tool the set-up's
+    ``<Tools>`` does not list is refused)."""
+
+    def _register_setting(self, s: Any, block: Block) -> list[str]:
+        """An offset register's value (``postproc.lowering.tool_entries`` makes them from a tool table entry)."""
+        spelling, highest, letter = self.TOOL_DATA_SETTINGS[s.table]
+        why = ""
+        if self.TOOL_DATA_IN_TABLE and str(s.index) not in self.ctx.setup.tools:
+            why = (f"it sets only a tool its table holds, and the set-up's <Tools> has no tool {s.index} (add "
+                   f"<Tool number=\"{s.index}\" .../>)")
+        elif s.incremental:
+            why = "it sets offsets absolutely only (the source adds to the offset in incremental mode)"
+        elif self.SETTING_ADDS_IN_INCREMENTAL and self.modal.distance == "incremental":
+            why = "in incremental mode its setting adds to the offset (program absolute mode first)"
+        elif not 1 <= s.index <= highest:
+            why = f"its offset registers are P1-P{highest}"
+        elif set(s.values) != {"R"}:
+            why = "it sets one value per register (R)"
+        if why:
+            self.unsupported(f"{s.describe()}: {why}", block)
+        return [*spelling.split(), f"P{s.index}", letter + self.length(s.values["R"], block, letter)]
 
     def machine_function_words(self, s: Any, block: Block) -> list[str]:
         """A machine-specific code as written, for a controller of its family; elsewhere it has no

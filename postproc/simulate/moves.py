@@ -118,6 +118,12 @@ class Moves:
         self.spindle_tool: int | None = setup.machine.start_tool
         self.cutter_register: int | None = None
         """The cutter compensation register programmed last (a Fanuc G41 without D reads it)."""
+        self.kept_native: Callable[[str], bool] | None = None
+        """``verify``, where the program it compares with keeps some stretches of cutter compensation as a
+        setting (under rules not modelled) and resolved the others into its path: given a G41/G42's
+        setting ("left D4"), whether this stretch is one kept (compared as a setting, not compensated here)."""
+        self.native_stretch = False
+        """The compensation in force is a stretch ``kept_native`` chose: a setting, not simulated."""
         """The tool the last tool change put in the spindle (before any: the set-up's ``startTool``, None:
         the machine's, unknown)."""
         self.sync: float | None = None
@@ -201,6 +207,8 @@ class Moves:
             mode = cc.mode  # type: ignore[attr-defined]
             if mode == "off":
                 cutter.cancel()
+            elif mode in ("left", "right") and self.native_stretch:
+                cutter.cancel()  # recorded as a setting (``record_settings``), as without rules
             elif mode in ("left", "right"):
                 reads = self._cutter_register(block, cc.register)  # type: ignore[attr-defined]
                 try:

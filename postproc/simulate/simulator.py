@@ -157,14 +157,29 @@ class Simulator(Moves):
         where its rules are not modelled...)."""
         for key, section in block.sections.items():
             kind = UNSIMULATED.get(key)
-            if kind is None or (key == "CutterCompensation" and self.cutter is not None):
+            if kind is None or (key == "CutterCompensation" and self.cutter is not None and self.kept_native is None):
                 continue
             value = _setting_text(key, section)
             if key == "CutterCompensation" and self.lathe and value in ("left", "right"):
                 value = self._turret_register(value)
+            if key == "CutterCompensation" and self.cutter is not None and not self._kept_native(kind, value):
+                continue
             if value is not None and value != self.settings.get(kind):
                 self.settings[kind] = value
                 self.unsimulated.append((block.line, kind, value))
+
+    def _kept_native(self, kind: str, value: str | None) -> bool:
+        """Whether a compensation change is recorded as a setting while the rules are simulated (``verify``
+        comparing with a program that keeps some stretches native): a start when ``kept_native`` chooses
+        it, the cancel that ends such a stretch."""
+        assert self.kept_native is not None
+        if value == self.settings.get(kind):
+            return self.native_stretch  # no change: the stretch goes on as it is
+        if value is None or value == "off":
+            native, self.native_stretch = self.native_stretch, False
+            return native
+        self.native_stretch = self.kept_native(value)
+        return self.native_stretch
 
     def _turret_register(self, side: str) -> str:
         """A turret lathe's G41/G42 names no register: it compensates by the offset the last T selected
@@ -397,7 +412,8 @@ class Simulator(Moves):
 
 def simulate(blocks: Iterable[Block], ctx: Context, live_after_end: list[int] | None = None,
              unsimulated: list[tuple[int, str, str]] | None = None, travel_warn: bool = False,
-             cutter_rules: CutterRules | None = None) -> Iterator[Event]:
+             cutter_rules: CutterRules | None = None,
+             kept_native: Callable[[str], bool] | None = None) -> Iterator[Event]:
     """Blocks (already lowered for ``ToolpathTarget``) -> the header, then events in execution order.
 
     Errors are reported to ``ctx.diagnostics`` with the block's location and the block is skipped;
@@ -405,6 +421,7 @@ def simulate(blocks: Iterable[Block], ctx: Context, live_after_end: list[int] | 
     first feed move fixes the header's feed mode (at most ``HEADER_LOOKAHEAD`` of them).
     """
     sim = Simulator(ctx, travel_warn, cutter_rules)
+    sim.kept_native = kept_native  # verify's choice of the stretches compared as settings (``Moves.kept_native``)
     if live_after_end is not None:
         sim.live_after_end = live_after_end  # the caller reads the lines recorded there
     if unsimulated is not None:

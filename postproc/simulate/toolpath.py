@@ -32,7 +32,7 @@ Assumptions (a simulator knows no machine data):
 from __future__ import annotations
 
 import io
-from typing import Iterable, Iterator, Mapping
+from typing import Callable, Iterable, Iterator, Mapping
 
 from ..block_rules import check_blocks
 from ..dialect import Dialect
@@ -40,6 +40,7 @@ from ..errors import Diagnostics
 from ..lowering.lower import lower_for
 from ..lowering.machine_functions import drop_foreign_machine_functions
 from ..lowering.program_end import comment_after_end
+from ..lowering.tool_entries import write_tool_entries
 from ..plugins import Registry, default_registry
 from ..reading import gc_paused, macro_arguments, read_blocks
 from ..setup.machine_setup import MachineSetup
@@ -54,7 +55,7 @@ __all__ = ["MOVES_THE_TOOL", "UNSIMULATED", "Event", "Simulator", "ToolpathTarge
            "header", "num", "simulate", "start_position", "toolpath_events"]
 
 TRANSLATE_ONLY = (check_blocks, comment_after_end, drop_foreign_machine_functions, resolve_rigid_taps,
-                  resolve_dynamic_cutter_compensation, time_length_changes)
+                  resolve_dynamic_cutter_compensation, time_length_changes, write_tool_entries)
 """Generic lowering steps a simulation skips: it checks the feed itself, it must see the blocks after
 the program end as they are written (to record the live ones), and it runs machine-specific codes,
 rigid taps and compensation by a diameter (keeping the programmed point beside the controlled one), and
@@ -81,7 +82,8 @@ def toolpath_events(lines: Iterable[str], *, file: str, dialect: str | type[Dial
                     live_after_end: list[int] | None = None,
                     unsimulated: list[tuple[int, str, str]] | None = None,
                     on_unsupported: str = "error", compensate: bool = True,
-                    arguments: Mapping[str, float] | None = None) -> Iterator[Event]:
+                    arguments: Mapping[str, float] | None = None,
+                    kept_native: Callable[[str], bool] | None = None) -> Iterator[Event]:
     """Read a program in ``dialect`` and yield its toolpath (header first). Raises ``ErrorList`` at the
     end when the program had errors (unless ``check`` is False: the caller then checks
     ``diagnostics``); events already yielded then belong to a failed run. ``live_after_end``, if given,
@@ -90,7 +92,8 @@ def toolpath_events(lines: Iterable[str], *, file: str, dialect: str | type[Dial
     beyond the travel a warning. ``compensate=False`` leaves cutter radius compensation unsimulated even
     where the dialect has rules for it (``verify`` against a dialect that has none). ``arguments``
     (``{"A": 30.0}``): the program is a macro file run on its own, as called with these arguments
-    (``postproc.reading.macro_arguments``)."""
+    (``postproc.reading.macro_arguments``). ``kept_native``: which stretches of cutter compensation stay
+    settings while the others are simulated (``Moves.kept_native``, for ``verify``)."""
     setup = setup or MachineSetup()
     diagnostics = diagnostics or Diagnostics()
     registry = registry or default_registry()
@@ -105,7 +108,7 @@ def toolpath_events(lines: Iterable[str], *, file: str, dialect: str | type[Dial
         steps = [step for step in registry.lowerings if step not in TRANSLATE_ONLY]
         lowered = lower_for(blocks, ctx, ToolpathTarget, "error", steps)
         yield from simulate(lowered, ctx, live_after_end, unsimulated, on_unsupported == "warn",
-                            ctx.cutter_rules if compensate else None)
+                            ctx.cutter_rules if compensate else None, kept_native)
     if check:
         diagnostics.check()
 

@@ -16,7 +16,7 @@ import copy
 import dataclasses
 import io
 import math
-from typing import Any, Iterable, Mapping
+from typing import Any, Callable, Iterable, Mapping
 
 from ..errors import Diagnostics, ErrorList, PostprocError, UsageError
 from ..plugins import Registry, default_registry
@@ -64,18 +64,25 @@ def verify_lines(lines_in: Iterable[str], lines_out: Iterable[str], *, file_in: 
     settings_out: list[tuple[int, str, str]] = []
     dialects = registry or default_registry()
     compensate = _both_compensate(source, target, registry, setup, target_setup)
+    out_arguments = arguments if arguments and dialects.dialect(target).MACRO_ARGUMENTS else None
+    kept: Callable[[str], bool] | None = None
     if not compensate and dialects.dialect(source).cutter_rules(setup) is not None:
         if isinstance(lines_out, io.IOBase) and lines_out.seekable():  # a file: read again, not held
             mark = lines_out.tell()
             compensate = not _compensates(lines_out, file_out, target, target_setup, dialects)
             lines_out.seek(mark)
+            if not compensate:
+                kept = _kept_native(lines_out, file_out, target, target_setup, dialects, out_arguments)
+                lines_out.seek(mark)
         else:
             lines_out = list(lines_out)  # read twice: the output is looked through first
             compensate = not _compensates(lines_out, file_out, target, target_setup, dialects)
+            if not compensate:
+                kept = _kept_native(lines_out, file_out, target, target_setup, dialects, out_arguments)
+        compensate = compensate or kept is not None
     events_in = toolpath_events(lines_in, file=file_in, dialect=source, setup=setup, registry=registry,
                                 diagnostics=diag_in, check=False, live_after_end=after_in, unsimulated=settings_in,
-                                compensate=compensate, arguments=arguments)
-    out_arguments = arguments if arguments and dialects.dialect(target).MACRO_ARGUMENTS else None
+                                compensate=compensate, arguments=arguments, kept_native=kept)
     events_out = toolpath_events(lines_out, file=file_out, dialect=target, setup=target_setup,
                                  registry=registry, diagnostics=diag_out, check=False, live_after_end=after_out,
                                  unsimulated=settings_out, compensate=compensate, arguments=out_arguments)
@@ -148,6 +155,34 @@ def _compensates(lines: Iterable[str], file: str, dialect: str, setup: MachineSe
     except PostprocError:
         return True
     return bool(diagnostics.errors)
+
+
+def _kept_native(lines: Iterable[str], file: str, dialect: str, setup: MachineSetup, registry: Registry,
+                 arguments: Mapping[str, float] | None) -> Callable[[str], bool] | None:
+    """Which stretches of the source's cutter compensation the output kept native, for a source whose
+    rules are simulated and an output whose are not, which compensates some stretches itself and was given
+    others resolved into its path (ISG, where a D would bring another length: ``postproc.isg_family.
+    tool_data``). The output's compensation settings in execution order ("left D4", ...) are matched in
+    order against the source's: a source stretch the output also turns on is compared as a setting, one it
+    does not was resolved, and is compared as the source's compensated path (DESIGN.md: verify compares
+    controlled points). None when the output's run fails (its own run then says why)."""
+    settings: list[tuple[int, str, str]] = []
+    diagnostics = Diagnostics(warn_stream=io.StringIO())
+    for _ in toolpath_events(lines, file=file, dialect=dialect, setup=setup, registry=registry,
+                             diagnostics=diagnostics, check=False, unsimulated=settings, compensate=False,
+                             arguments=arguments):
+        pass
+    if diagnostics.errors:
+        return None
+    starts = iter([value for _, kind, value in settings if kind == "cutter compensation" and value != "off"])
+    pending = [next(starts, None)]
+
+    def kept(value: str) -> bool:
+        if value != pending[0]:
+            return False
+        pending[0] = next(starts, None)
+        return True
+    return kept
 
 
 def _same_machine(setup: MachineSetup, source: str, registry: Registry | None) -> MachineSetup:

@@ -58,6 +58,12 @@ def write_tool_lengths(blocks: Iterator[Block], ctx: Context, target: type[Diale
     return step(blocks, ctx, target)
 
 
+def drop_resolved_tool_data(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """``postproc.grbl_family.lengths.drop_resolved_tool_data``, imported when a translation first lowers for grbl."""
+    from postproc.grbl_family.lengths import drop_resolved_tool_data as step
+    return step(blocks, ctx, target)
+
+
 def resolve_cutter_compensation(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
     """``postproc.lowering.cutter_compensation.resolve_cutter_compensation``, imported when first used."""
     from postproc.lowering.cutter_compensation import resolve_cutter_compensation as step
@@ -90,7 +96,7 @@ class Grbl(GrblFamily):
     MIST_COOLANT = False
     """M7 runs only in a build with ENABLE_M7, off by default [K: grbl 1.1 config.h ``ENABLE_M7``; gcode.c
     answers error 20 without it]: a set-up says ``<Controller mistCoolant="true">`` for such a build."""
-    LOWERING = (write_tool_lengths, resolve_cutter_compensation, lower_for_lean_controller)
+    LOWERING = (write_tool_lengths, resolve_cutter_compensation, drop_resolved_tool_data, lower_for_lean_controller)
     """Rewrites into what grbl runs: a G43 H as ``G43.1 Z<length>`` from the set-up's tool table
     (``postproc.grbl_family.lengths``); G41/G42 as the compensated path, where the source's rules are modelled
     (``postproc.lowering.cutter_compensation``); tool change as a pause, G49 before motion, full circles with an end point; a

@@ -66,6 +66,12 @@ def write_tool_lengths(blocks: Iterator[Block], ctx: Context, target: type[Diale
     return step(blocks, ctx, target)
 
 
+def drop_resolved_tool_data(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """``postproc.grbl_family.lengths.drop_resolved_tool_data``, imported when a translation first lowers for grblHAL."""
+    from postproc.grbl_family.lengths import drop_resolved_tool_data as step
+    return step(blocks, ctx, target)
+
+
 def cancel_cycles_alone(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
     """``cancels.cancel_cycles_alone``, imported when a translation first lowers for grblHAL."""
     from .cancels import cancel_cycles_alone as step
@@ -126,7 +132,7 @@ class Grblhal(GrblFamily):
     MIST_COOLANT = False
     """M7 runs only with a driver that has mist coolant [V: gcode.c, ``hal.coolant_cap.mist``]: a set-up says
     ``<Controller mistCoolant="true">`` for such a build."""
-    LOWERING = (write_tool_lengths, resolve_cutter_compensation, close_full_circles, cancel_cycles_alone,
+    LOWERING = (write_tool_lengths, resolve_cutter_compensation, drop_resolved_tool_data, close_full_circles, cancel_cycles_alone,
                 stops_after_motion, subprograms_as_subs, comment_numbered_subs_after_end, thread_feed_apart)
     """Rewrites into what grblHAL runs: a G43 H as ``G43.1 Z<length>`` where the build has no tool table
     (``postproc.grbl_family.lengths``); G41/G42 as the compensated path, where the source's rules are modelled;

@@ -30,7 +30,7 @@ from __future__ import annotations
 
 import copy
 import re
-from typing import Any, ClassVar, Iterable, TextIO, cast
+from typing import Any, ClassVar, Iterable, Mapping, TextIO, cast
 
 from postproc.errors import Location, UnsupportedError
 from postproc.ir import Block, ProgramControl, Section
@@ -93,6 +93,14 @@ class LinuxcncWriter(WordWriter):
     WORK_OFFSET_SETTING: ClassVar[str] = "G10 L2"
     """G10 L2 P1-P9 sets work system P's offset, absolutely (G91 does not change it)."""
     WORK_OFFSET_COUNT: ClassVar[int] = 9
+    TOOL_DATA_SETTINGS: ClassVar[Mapping[str, tuple[str, int, str]]] = {
+        "tool_length": ("G10 L1", 2**31 - 1, "Z"), "cutter_offset": ("G10 L1", 2**31 - 1, "R")}
+    """Another family's length and radius registers (Fanuc memory C's H and D geometry) as the tool table
+    entry of that number, whose Z ``G43 H`` and whose R ``G41 D`` read (``tool_entry``: [V] LinuxCNC
+    g-code.adoc "G10 L1"); absolute whatever the distance mode. A wear register has no column here."""
+    TOOL_DATA_IN_TABLE: ClassVar[bool] = True
+    """[V] rs274: ``G10 L1 P5 Z1`` with no tool 5 in its table is "Requested tool 5 not found in the tool table"
+    (``convert_setup_tool`` looks the tool up first): the set-up's ``<Tools>`` stand for that table."""
     """G76 threads, G87/G88 take other words: no row spells Fanuc's fine, back or manual boring."""
     DWELL_WORD: ClassVar[str] = "P"
     CYCLE_CANCEL_IS_MOTION: ClassVar[bool] = True
