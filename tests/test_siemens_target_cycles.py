@@ -91,7 +91,7 @@ def test_a_move_in_cycle_mode_ends_the_call_first() -> None:
 
 
 @pytest.mark.parametrize("cycle", [
-    "G99 G83 X10. Y5. Z-9. R2. Q3. F100.",  # peck drilling: CYCLE83 is not read back here
+    "G99 G83 X10. Y5. Z-9. R2. Q3. F100.",  # 11 deep: no whole number of pecks (deep_hole reads only those)
     "G99 G73 X10. Y5. Z-9. R2. Q3. F100.",
     "G99 G85 X10. Y5. Z-9. R2. F100.",
     "G99 G89 X10. Y5. Z-9. R2. P500 F100.",

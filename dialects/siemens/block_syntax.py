@@ -99,7 +99,7 @@ class SiemensBlockSyntax(WordBlockSyntax):
     def g_sections(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],
                    used: set[str], cycle_block: bool) -> None:
         if "CycleCall" in block.sections:
-            used.update("RZKP")  # the words of ``MCALL CYCLE8x`` (``cycles``), read by the resolve step
+            used.update("RZKPQ")  # the words of ``MCALL CYCLE8x`` (``cycles``), read by the resolve step
         elif ctx.state.extra.get(MCALL_KEY) and ctx.state.cycle is not None:
             SiemensCycleRules.position(block, ctx, codes, values)
         units = codes.get("06")

@@ -26,7 +26,7 @@ from typing import Callable
 
 from postproc.cycles.section import CannedCycle
 
-NAMES = {"drill": "CYCLE81", "drill_dwell": "CYCLE82"}
+NAMES = {"drill": "CYCLE81", "drill_dwell": "CYCLE82", "peck_deep": "CYCLE83"}
 """Neutral cycle kind -> the SINUMERIK cycle written for it."""
 SAME = 1e-9
 """Levels closer than this (program units) are the same level."""
@@ -44,13 +44,37 @@ def moves_in_plane(cycle: CannedCycle) -> bool:
 
 
 def in_place_moves(cycle: CannedCycle, call: "Call") -> list[tuple[str, float]]:
-    """The moves of Fanuc's G81/G82 at the hole where the tool stands [K: Fanuc 0i-MF operator's manual,
-    "Drilling cycle, spot drilling (G81)": rapid to R, feed to Z, (G82: dwell), rapid to the return level];
+    """The moves of Fanuc's G81/G82/G83 at the hole where the tool stands [K: Fanuc 0i-MF operator's manual,
+    "Drilling cycle, spot drilling (G81)": rapid to R, feed to Z, (G82: dwell), rapid to the return level;
+    "Peck drilling cycle (G83)": feed Q, rapid to R, rapid to d above the last depth, feed Q + d, ...];
     ``("dwell", seconds)`` for the dwell."""
-    moves = [("rapid", call.rfp), ("linear", call.dp)]
+    moves = [("rapid", call.rfp)]
+    if call.stroke is not None:
+        for k in range(1, strokes(call.rfp - call.dp, call.stroke)):
+            depth = call.rfp - k * call.stroke
+            moves += [("linear", depth), ("rapid", call.rfp), ("rapid", depth + call.clearance)]
+    moves.append(("linear", call.dp))
     if call.dtb:
         moves.append(("dwell", call.dtb))
     return moves + [("rapid", call.rtp)]
+
+
+def strokes(depth: float, stroke: float) -> int:
+    """How many strokes of ``stroke`` drill ``depth`` (whole, or one when the stroke reaches the bottom)."""
+    return max(1, round(depth / stroke))
+
+
+def whole_strokes(cycle: CannedCycle) -> bool:
+    """Whether a G83's depth is drilled in strokes of Q that are all the same (``CYCLE83`` is read only so:
+    ``deep_hole``), or in one; and it has its clearance d and no dwell (Fanuc's G83 ignores P [?])."""
+    assert cycle.r is not None and cycle.bottom is not None
+    q, d, depth = cycle.q, cycle.clearance, cycle.r - cycle.bottom
+    if q is None or q <= 0 or d is None or d <= 0 or cycle.dwell:
+        return False
+    if q >= depth - SAME:
+        return True
+    count = depth / q
+    return abs(count - round(count)) <= 1e-9 * count
 
 
 def writable(cycle: CannedCycle) -> bool:
@@ -70,6 +94,8 @@ def writable(cycle: CannedCycle) -> bool:
             return False  # an incremental position
     if cycle.dwell is not None and abs(cycle.dwell * 1000 - round(cycle.dwell * 1000)) > 1e-6:
         return False
+    if cycle.kind == "peck_deep" and not whole_strokes(cycle):
+        return False
     if cycle.return_level == "initial":
         z = cycle.start.get("Z")
         return z is not None and abs(z - cycle.initial) <= SAME
@@ -85,19 +111,32 @@ class Call:
     rfp: float
     dp: float
     dtb: float | None
+    stroke: float | None = None
+    """A deep hole's stroke (Fanuc's Q, at most the depth)."""
+    clearance: float = 0.0
+    """A deep hole's anticipation distance (Fanuc's d)."""
 
     @classmethod
     def of(cls, cycle: CannedCycle) -> "Call":
         assert cycle.r is not None and cycle.bottom is not None and cycle.initial is not None
         rtp = cycle.r if cycle.return_level == "r" else cycle.initial
+        if cycle.kind == "peck_deep":
+            assert cycle.q is not None and cycle.clearance is not None
+            return cls(NAMES[cycle.kind], rtp, cycle.r, cycle.bottom, None, min(cycle.q, cycle.r - cycle.bottom),
+                       cycle.clearance)
         dwell = cycle.dwell if cycle.kind == "drill_dwell" else None
         return cls(NAMES[cycle.kind], rtp, cycle.r, cycle.bottom, 0.0 if cycle.kind == "drill_dwell" and dwell is None
                    else dwell)
 
     def text(self, number: Callable[[float], str]) -> str:
-        """``number`` spells a level as the writer spells a Z value."""
+        """``number`` spells a level as the writer spells a Z value. A deep hole: ``FDEP`` the first stroke's
+        depth, ``DAM``, ``DTB``, ``DTS`` 0, ``FRF`` 1, ``VARI`` 1 (swarf removal), ``_DTD`` 0 and ``_DIS1`` d
+        (``deep_hole``, which reads it back)."""
         params = [number(self.rtp), number(self.rfp), "0", number(self.dp)]
-        if self.dtb is not None:
+        if self.stroke is not None:
+            params += ["", number(self.rfp - self.stroke), "", "0", "0", "0", "1", "1", "", "", "", "0",
+                       number(self.clearance)]
+        elif self.dtb is not None:
             params += ["", _seconds(self.dtb)]
         return f"MCALL {self.name}({', '.join(params)})"
 
