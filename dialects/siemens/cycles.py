@@ -252,7 +252,7 @@ class SiemensCycleRules:
             d = peck_clearance_mm("peck_deep", ctx.peck_clearance_mm, ctx.setup.cycles)
             d = d if state.units == "mm" else d / MM_PER_INCH
             if abs(levels.clearance - d) > LEVEL_TOLERANCE:
-                keep_verbatim(block, f"{name} with _DIS1 {levels.clearance:g} other than the set-up's G83 clearance "
+                keep_verbatim(block, f"{'' if levels.once else 'MCALL '}{name} with _DIS1 {levels.clearance:g} other than the set-up's G83 clearance "
                                      f"{d:g} (<Cycles peckClearance>, in mm)")
                 return None
         if levels.feed is not None and levels.feed != state.feed:
