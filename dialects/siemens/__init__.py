@@ -55,9 +55,9 @@ class Siemens(Dialect):
                              return_to_r="RTP=RFP+SDIS", level="R", peck="Q", shift="Q", dwell="P", repeat=("K",))
     """``CYCLE81``/``82``/``83``/``85``/``87``/``88``/``89`` are read as the Fanuc-family words of their meaning
     (``cycles``: R level, Z depth, Q stroke, P dwell in ms, K0 for the modal call that drills nothing)."""
-    NATIVE_CYCLES = frozenset({"drill", "drill_dwell", "peck_deep"})
-    """Fanuc G81/G82/G83 are written as ``MCALL CYCLE81``/``CYCLE82``/``CYCLE83`` where they move the same
-    (``moves_like``, ``cycle_writing``); every other cycle is expanded for SINUMERIK."""
+    NATIVE_CYCLES = frozenset({"drill", "drill_dwell", "peck_deep", "bore_feed", "bore_dwell_feed", "bore_manual"})
+    """Fanuc G81/G82/G83/G85/G89/G88 are written as ``MCALL CYCLE81``/``82``/``83``/``85``/``89``/``88`` where
+    they move the same (``moves_like``, ``cycle_writing``); every other cycle is expanded for SINUMERIK."""
     CYCLE_SEMANTICS = "fanuc"
     """The cycles read move by Fanuc's rules (the reading pipeline's ``CannedCycleResolveSyntax("fanuc")``)."""
 

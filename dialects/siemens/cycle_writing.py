@@ -1,5 +1,6 @@
 """Fanuc-family drilling cycles written as SINUMERIK modal cycle calls: ``MCALL CYCLE81(RTP, RFP, SDIS, DP)`` /
-``MCALL CYCLE82(RTP, RFP, SDIS, DP, , DTB)``, the holes as plain position blocks, a bare ``MCALL`` to end.
+``MCALL CYCLE82(RTP, RFP, SDIS, DP, , DTB)`` and the others below, the holes as plain position blocks, a bare
+``MCALL`` to end.
 
 Exactly where the meanings match, which is where the reader (``cycles``) reads them back to the same cycle
 [K: USERS-AND-SIEMENS.md 3.2, PGZ cycles manual 11/2006 p.2-86; the Autodesk ``siemens-840d.cps`` mapping]:
@@ -8,10 +9,15 @@ Exactly where the meanings match, which is where the reader (``cycles``) reads t
   confirmed; the cycle's approach is then RFP itself]; ``DP`` is Fanuc's Z (absolute); ``RTP`` is R under G99
   and the initial level under G98, which SINUMERIK takes as an absolute plane: a G98 block is native only where
   the tool stands at the initial level before it (true at a cycle's first block and after each G98 hole);
-* G81 and G82 only (``CYCLE81``/``CYCLE82``; DTB the dwell in seconds, whole milliseconds): the reader models
-  no other cycle yet, so G73, G83, G85-G89, G76 and back boring (G87: no SINUMERIK call, the Autodesk post
-  expands it too) are expanded, as is a block that repeats (K/L), has no new position in the plane, is not in
-  G17, programs its levels incrementally (G91) or computes a word;
+* G81 ``CYCLE81``; G82 ``CYCLE82`` (DTB the dwell in seconds, whole milliseconds); G83 ``CYCLE83`` with
+  ``FDEP`` the first stroke's depth, ``VARI`` 1, no degression and no dwells, ``_DIS1`` the clearance d, where
+  the depth is a whole number of pecks (``deep_hole`` says why); G85 ``CYCLE85`` with FFR = RFF = the feed;
+  G89 ``CYCLE89``; G88 ``CYCLE88`` with SDIR 3 (Fanuc restarts the spindle clockwise). Expanded: G73 (chip
+  breaking retracts at the feed on SINUMERIK), G74/G84 (``CYCLE84``/``CYCLE840`` are not read), G86 and G76
+  (``CYCLE86`` orients the spindle and lifts off in three axes), back boring (G87: no SINUMERIK call, the
+  Autodesk post expands it too), and a block that repeats (K/L), has no new position in the plane (G88: its
+  moves stop the program, so it is not written outside the call either), is not in G17, programs its levels
+  incrementally (G91) or computes a word;
 * the cycle runs after each block that moves [K: 3.2 "every later block that moves runs the cycle at its
   end"], so a hole is a position block with X/Y only, in G0 (written before each ``MCALL``), and anything that
   moves otherwise while the call is active (a motion code, an expansion, the cycle cancel, the program end)
@@ -26,10 +32,13 @@ from typing import Callable
 
 from postproc.cycles.section import CannedCycle
 
-NAMES = {"drill": "CYCLE81", "drill_dwell": "CYCLE82", "peck_deep": "CYCLE83"}
+NAMES = {"drill": "CYCLE81", "drill_dwell": "CYCLE82", "peck_deep": "CYCLE83", "bore_feed": "CYCLE85",
+         "bore_dwell_feed": "CYCLE89", "bore_manual": "CYCLE88"}
 """Neutral cycle kind -> the SINUMERIK cycle written for it."""
 SAME = 1e-9
 """Levels closer than this (program units) are the same level."""
+BORING = frozenset(("bore_feed", "bore_dwell_feed"))
+"""The kinds written with their feed in and out (``CYCLE85``'s FFR and RFF, ``CYCLE89``'s F in force)."""
 
 
 def moves_in_plane(cycle: CannedCycle) -> bool:
@@ -56,6 +65,8 @@ def in_place_moves(cycle: CannedCycle, call: "Call") -> list[tuple[str, float]]:
     moves.append(("linear", call.dp))
     if call.dtb:
         moves.append(("dwell", call.dtb))
+    if call.feed is not None:  # G85/G89: feed out to R [K: Fanuc 0i-MF, "Boring cycle (G85)", "(G89)"]
+        moves.append(("linear", call.rfp))
     return moves + [("rapid", call.rtp)]
 
 
@@ -96,6 +107,10 @@ def writable(cycle: CannedCycle) -> bool:
         return False
     if cycle.kind == "peck_deep" and not whole_strokes(cycle):
         return False
+    if cycle.kind in BORING and (cycle.feed is None or cycle.feed <= 0):
+        return False
+    if cycle.kind == "bore_manual" and not moves_in_plane(cycle):
+        return False  # its moves where the tool stands stop the program: not written outside the call
     if cycle.return_level == "initial":
         z = cycle.start.get("Z")
         return z is not None and abs(z - cycle.initial) <= SAME
@@ -115,6 +130,8 @@ class Call:
     """A deep hole's stroke (Fanuc's Q, at most the depth)."""
     clearance: float = 0.0
     """A deep hole's anticipation distance (Fanuc's d)."""
+    feed: float | None = None
+    """A bore that feeds out: the feed in and out (``CYCLE85``'s FFR and RFF)."""
 
     @classmethod
     def of(cls, cycle: CannedCycle) -> "Call":
@@ -124,6 +141,10 @@ class Call:
             assert cycle.q is not None and cycle.clearance is not None
             return cls(NAMES[cycle.kind], rtp, cycle.r, cycle.bottom, None, min(cycle.q, cycle.r - cycle.bottom),
                        cycle.clearance)
+        if cycle.kind in BORING or cycle.kind == "bore_manual":
+            dwell = cycle.dwell if cycle.kind != "bore_feed" else None
+            return cls(NAMES[cycle.kind], rtp, cycle.r, cycle.bottom, dwell or None,
+                       feed=cycle.feed if cycle.kind in BORING else None)
         dwell = cycle.dwell if cycle.kind == "drill_dwell" else None
         return cls(NAMES[cycle.kind], rtp, cycle.r, cycle.bottom, 0.0 if cycle.kind == "drill_dwell" and dwell is None
                    else dwell)
@@ -133,12 +154,22 @@ class Call:
         depth, ``DAM``, ``DTB``, ``DTS`` 0, ``FRF`` 1, ``VARI`` 1 (swarf removal), ``_DTD`` 0 and ``_DIS1`` d
         (``deep_hole``, which reads it back)."""
         params = [number(self.rtp), number(self.rfp), "0", number(self.dp)]
+        dtb = "" if self.dtb is None else _seconds(self.dtb)
         if self.stroke is not None:
             params += ["", number(self.rfp - self.stroke), "", "0", "0", "0", "1", "1", "", "", "", "0",
                        number(self.clearance)]
+        elif self.name == "CYCLE85":
+            assert self.feed is not None
+            params += ["", dtb, _feed(self.feed), _feed(self.feed)]
+        elif self.name == "CYCLE88":
+            params += ["", dtb, "3"]
         elif self.dtb is not None:
-            params += ["", _seconds(self.dtb)]
+            params += ["", dtb]
         return f"MCALL {self.name}({', '.join(params)})"
+
+
+def _feed(value: float) -> str:
+    return f"{value:.6f}".rstrip("0").rstrip(".")
 
 
 def _seconds(value: float) -> str:
