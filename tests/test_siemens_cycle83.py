@@ -206,3 +206,10 @@ def test_random_g83_programs_read_back_from_siemens_to_the_same_toolpath() -> No
         out = _verify(text, "fanuc", "siemens")
         assert out.count("MCALL CYCLE83(") == native, (text, out)
         _verify(out, "siemens", "fanuc")
+
+
+def test_a_stroke_so_small_the_pecks_pass_the_set_ups_bound_is_a_located_error() -> None:
+    text = START + "MCALL CYCLE83(50, 0, 0, -10, , -0.0001, , 0, 0, 0, 1, 1, , , , , 0.5)\nX10\nMCALL\nM30\n"
+    errors = _errors(text, "linuxcnc")
+    assert errors[0].startswith("in.mpf:6:1: error: CYCLE83: the expansion makes more than 100000 moves in one block"), \
+        errors

@@ -18,11 +18,12 @@ from typing import Any, ClassVar
 from postproc.context import Context
 from postproc.errors import ProgramError
 from postproc.expr import Expr
-from postproc.ir import Block, Dwell, ReturnLevel
+from postproc.ir import Block, Dwell, MachineCoordinates, ReturnLevel
 from postproc.isg_family.tool_data import read_tool_data
 from postproc.rs274.block_syntax import WordBlockSyntax, col_of_word
 from postproc.rs274.codes import CodeTable, g_key
 
+from . import frame_suppression
 from .arcs import CIP_KEY, SiemensArc, SiemensCip, arc_words, cip_words
 from .codes import CODES, GEOMETRY_UNITS
 from .fixed_point import SiemensFixedPoint
@@ -62,6 +63,14 @@ class SiemensBlockSyntax(WordBlockSyntax):
             resolve_holes(block, ctx, holes)
             if "NativeCode" in block.sections:
                 return  # kept verbatim (``holes``)
+        suppression = frame_suppression.take(block)
+        if suppression is not None:
+            why = frame_suppression.problem(block, ctx)
+            if why is not None:
+                keep_verbatim(block, f"{suppression} (frame suppression) {why}")
+                return
+            block.add(MachineCoordinates())
+        frame_suppression.note_cutter(block, ctx)
         levels = block.sections.pop(CycleLevels.KEY, None)
         if isinstance(levels, CycleLevels):
             level = SiemensCycleRules.call(block, ctx, levels)

@@ -64,6 +64,7 @@ from .call_reading import NUMBER_START as _NUMBER_START
 from .arcs import SiemensArc, SiemensCip
 from .cycles import CYCLES
 from .fixed_point import read_fixed_point
+from .frame_suppression import SiemensSupa
 from .frames import STATEMENTS as FRAME_STATEMENTS, read_frame
 from .holes import PARAMETERS as HOLES
 from .expressions import name_at, parse_expr, parse_variable, skip
@@ -74,6 +75,8 @@ SKIP_LEVELS = 9
 _OPENERS = {"IF": "ENDIF", "WHILE": "ENDWHILE", "FOR": "ENDFOR", "REPEAT": "UNTIL", "LOOP": "ENDLOOP"}
 _CLOSERS = {close: open_ for open_, close in _OPENERS.items()}
 _JUMPS = ("GOTOF", "GOTOB", "GOTOC", "GOTO")
+_WORDS_READ = frozenset(("CIP", "SUPA"))
+"""Instruction words that start a block and are read with its words (``arcs``, ``frame_suppression``)."""
 
 
 class SiemensReader(Reader):
@@ -217,10 +220,10 @@ class _State(CallReading):
                     and BlockDelete.KEY not in block.sections:
                 self.cycle(block, code, pos, end, word, once=True)
                 return
-            what = describe(word) if word != "CIP" else None
+            what = describe(word) if word not in _WORDS_READ else None
             if what is not None:
                 raise Unmodelled(what, pos)
-            if word != "CIP" and self.call(block, code, pos, end):
+            if word not in _WORDS_READ and self.call(block, code, pos, end):
                 return
         self.words(block, code, pos)
         self.returns(block, code)
@@ -421,6 +424,10 @@ class _State(CallReading):
                 letter = c
             elif up in ADDRESSES and end == pos + 1:
                 raise self.error(block.line, pos + 1, f"address {up} needs a value")
+            elif upper == "SUPA" and not assigned:
+                block.add(SiemensSupa())  # frames suppressed in this block (``frame_suppression``)
+                pos = end
+                continue
             else:
                 if upper[:1] == "$":
                     raise self.error(block.line, pos + 1, f"a system variable {name} alone: set it with "
