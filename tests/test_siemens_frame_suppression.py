@@ -85,3 +85,46 @@ def test_a_block_without_frames_whose_meaning_is_machine_data_is_kept_verbatim(l
 def load_setup_plain() -> MachineSetup:
     """A set-up with no travel or tools to check: SINUMERIK to SINUMERIK copies the verbatim block."""
     return load_setup(str(Path(__file__).resolve().parent / "support" / "zero_tools.xml"))
+
+
+# -- Fanuc G53 written as SUPA ---------------------------------------------------------------------------------
+
+def _from_fanuc(text: str, setup: MachineSetup) -> str:
+    out = io.StringIO(newline="")
+    translate(io.StringIO(text, newline=""), out, file="in.nc", source="fanuc", target="siemens", setup=setup,
+              diagnostics=Diagnostics(warn_stream=io.StringIO()))
+    return out.getvalue()
+
+
+def test_fanuc_g53_is_supa_where_no_tool_offset_is_in_force_and_reads_back(tmp_path: Path) -> None:
+    """SUPA leaves out every frame and offset (the neutral machine coordinates); G49 is D0 (no length), and tool
+    1 is 0 long, so D1 brings none either."""
+    setup = _setup(tmp_path)
+    text = ("G21 G90 G17 G0 X5. Y5. Z5.\nG52 X2. Y3.\nG53 G0 Z0.\nG53 X20. Y20.\nG0 X1.\nT1 M6\nG43 H1 Z10.\n"
+            "G53 Z0.\nT2 M6\nG43 H2 Z10.\nG49 G0 Z20.\nG53 Z0.\nM30\n")
+    out = _from_fanuc(text, setup)
+    assert [line for line in out.splitlines() if "SUPA" in line] == ["SUPA G0 Z0.", "SUPA G0 X20. Y20.",
+                                                                      "SUPA G0 Z0.", "SUPA G0 Z0."], out
+    report = verify_lines(io.StringIO(text), io.StringIO(out), file_in="a", file_out="b", source="fanuc",
+                          target="siemens", setup=setup, tolerance=0.0)
+    assert report.ok and report.max_deviation == 0, report.summary() + "\n" + out
+    back = _translate(out, "fanuc", setup)
+    assert back.count("G53 G00") == 4, back
+
+
+def test_fanuc_g53_in_g1_is_at_rapid_so_supa_is_written_with_g0(tmp_path: Path) -> None:
+    """Fanuc's G53 positions at rapid whatever the modal motion; the G1 in force is taken up again after it."""
+    setup = _setup(tmp_path)
+    text = "G21 G90 G17 G0 X5. Y5. Z5.\nG1 F100.\nG53 X0.\nX3.\nM30\n"
+    out = _from_fanuc(text, setup)
+    assert "SUPA G0 X0.\nG1 X3.\n" in out, out
+    report = verify_lines(io.StringIO(text), io.StringIO(out), file_in="a", file_out="b", source="fanuc",
+                          target="siemens", setup=setup, tolerance=0.0)
+    assert report.ok and report.max_deviation == 0, report.summary() + "\n" + out
+
+
+@pytest.mark.parametrize("lines", ["T2 M6\nG43 H2 Z10.\nG53 Z0.", "G41 D2 G1 X10. F100.\nG0\nG53 Z0."])
+def test_fanuc_g53_with_a_tool_offset_in_force_is_refused(lines: str, tmp_path: Path) -> None:
+    with pytest.raises(ErrorList) as caught:
+        _from_fanuc(f"G21 G90 G17 G0 X5. Y5. Z5.\n{lines}\nM30\n", _setup(tmp_path))
+    assert any("machine coordinates" in str(e) for e in caught.value.errors), [str(e) for e in caught.value.errors]
