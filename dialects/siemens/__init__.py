@@ -128,3 +128,4 @@ def postproc_register_xml(factory: XFactory) -> None:
     factory.register_lazy("SiemensCip", f"{__name__}.arcs:SiemensCip")
     factory.register_lazy("SiemensFixedPoint", f"{__name__}.fixed_point:SiemensFixedPoint")
     factory.register_lazy("SiemensSupa", f"{__name__}.frame_suppression:SiemensSupa")
+    factory.register_lazy("SiemensTurn", f"{__name__}.helix:SiemensTurn")

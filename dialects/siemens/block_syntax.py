@@ -23,12 +23,13 @@ from postproc.isg_family.tool_data import read_tool_data
 from postproc.rs274.block_syntax import WordBlockSyntax, col_of_word
 from postproc.rs274.codes import CodeTable, g_key
 
-from . import frame_suppression
+from . import frame_suppression, helix
 from .arcs import CIP_KEY, SiemensArc, SiemensCip, arc_words, cip_words
 from .codes import CODES, GEOMETRY_UNITS
 from .fixed_point import SiemensFixedPoint
 from .fixed_point import resolve as resolve_fixed_point
 from .cycles import MCALL_KEY, CycleLevels, SiemensCycleRules, keep_verbatim
+from .helix import SiemensTurn
 from .holes import SiemensHoles
 from .holes import resolve as resolve_holes
 
@@ -58,6 +59,12 @@ class SiemensBlockSyntax(WordBlockSyntax):
             arc_words(block, ctx, arc)
         if not self.circle_through(block, ctx):
             return  # kept verbatim (``arcs``)
+        turn = block.sections.pop(SiemensTurn.KEY, None)
+        start = None
+        if isinstance(turn, SiemensTurn):
+            start = helix.before(block, ctx, turn)
+            if "NativeCode" in block.sections:
+                return  # kept verbatim (``helix``)
         holes = block.sections.pop(SiemensHoles.KEY, None)
         if isinstance(holes, SiemensHoles):
             resolve_holes(block, ctx, holes)
@@ -80,6 +87,8 @@ class SiemensBlockSyntax(WordBlockSyntax):
         elif "CycleCancel" in block.sections:
             ctx.state.extra.pop(MCALL_KEY, None)
         super().build(block, ctx)
+        if isinstance(turn, SiemensTurn) and start is not None:
+            helix.after(block, ctx, turn, start)
 
     @staticmethod
     def circle_through(block: Block, ctx: Context) -> bool:
