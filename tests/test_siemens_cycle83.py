@@ -213,3 +213,12 @@ def test_a_stroke_so_small_the_pecks_pass_the_set_ups_bound_is_a_located_error()
     errors = _errors(text, "linuxcnc")
     assert errors[0].startswith("in.mpf:6:1: error: CYCLE83: the expansion makes more than 100000 moves in one block"), \
         errors
+
+
+def test_an_inch_g83_reads_back_with_its_clearance_written_to_8_decimals(tmp_path: Path) -> None:
+    """0.3 mm is 0.011811023... inch, written 0.01181102: read back as the set-up's clearance."""
+    setup = _setup(tmp_path, 0.3)
+    text = "G20 G90 G17\nG0 X0. Y0. Z1.\nG99 G83 X1. Y0.5 Z-0.4 R0.1 Q0.25 F10.\nX2.\nG80\nM30\n"
+    out = _verify(text, "fanuc", "siemens", setup)
+    assert "MCALL CYCLE83(0.1, 0.1, 0, -0.4, , -0.15, , 0, 0, 0, 1, 1, , , , 0, 0.01181102)" in out, out
+    assert "G99 G83 Z-0.4 R0.1 Q0.25 K0" in _verify(out, "siemens", "fanuc", setup)

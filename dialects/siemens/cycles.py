@@ -82,6 +82,9 @@ DEEP_HOLE = (*COMMON, "FDEP", "FDPR", "DAM", "DTB", "DTS", "FRF", "VARI", "_AXN"
 """CYCLE83's parameters in order [K: USERS-AND-SIEMENS.md 3.2; the Autodesk ``siemens-840d.cps`` ``onCycle``
 writes the same seventeen, in this order]."""
 LEVEL_TOLERANCE = 1e-9
+CLEARANCE_TOLERANCE = 1e-8
+"""``_DIS1`` is the set-up's G83 clearance within this (program units): an inch program's ``_DIS1`` written
+with 8 decimals (0.3 mm is 0.01181102 inch, 4e-9 off) reads back as the same clearance."""
 MCALL_KEY = "siemens_mcall"
 """``ctx.state.extra`` key: True while a modal cycle call is active."""
 ONCE_KEY = "siemens_cycle_once"
@@ -251,7 +254,7 @@ class SiemensCycleRules:
         if levels.clearance is not None:
             d = peck_clearance_mm("peck_deep", ctx.peck_clearance_mm, ctx.setup.cycles)
             d = d if state.units == "mm" else d / MM_PER_INCH
-            if abs(levels.clearance - d) > LEVEL_TOLERANCE:
+            if abs(levels.clearance - d) > CLEARANCE_TOLERANCE:
                 keep_verbatim(block, f"{'' if levels.once else 'MCALL '}{name} with _DIS1 {levels.clearance:g} other than the set-up's G83 clearance "
                                      f"{d:g} (<Cycles peckClearance>, in mm)")
                 return None
