@@ -183,7 +183,7 @@ def test_boring_cycles_are_their_siemens_cycles_with_the_feed_in_and_out() -> No
     an empty DTB. RTP as for CYCLE81 (R under G99, the initial level under G98)."""
     out, _ = _translate(BORES)
     calls = [line for line in out.splitlines() if line.startswith("MCALL ")]
-    assert calls == ["MCALL CYCLE85(30., 2., 0, -12., , , 120, 120)", "MCALL CYCLE89(1., 1., 0, -6., , 0.25)",
+    assert calls == ["MCALL CYCLE85(30., 2., 0, -12., , , 120., 120.)", "MCALL CYCLE89(1., 1., 0, -6., , 0.25)",
                      "MCALL CYCLE88(30., 2., 0, -8., , 1.0, 3)", "MCALL CYCLE89(30., 2., 0, -8.)"], out
     _verified(BORES, out)
     back = io.StringIO(newline="")

@@ -149,9 +149,10 @@ class Call:
         return cls(NAMES[cycle.kind], rtp, cycle.r, cycle.bottom, 0.0 if cycle.kind == "drill_dwell" and dwell is None
                    else dwell)
 
-    def text(self, number: Callable[[float], str]) -> str:
-        """``number`` spells a level as the writer spells a Z value. A deep hole: ``FDEP`` the first stroke's
-        depth, ``DAM``, ``DTB``, ``DTS`` 0, ``FRF`` 1, ``VARI`` 1 (swarf removal), ``_DTD`` 0 and ``_DIS1`` d
+    def text(self, number: Callable[[float], str], feed: Callable[[float], str]) -> str:
+        """``number`` spells a level as the writer spells a Z value, ``feed`` a feed as it spells F (so
+        ``CYCLE85``'s FFR reads back as the F in force). A deep hole: ``FDEP`` the first stroke's depth,
+        ``DAM``, ``DTB``, ``DTS`` 0, ``FRF`` 1, ``VARI`` 1 (swarf removal), ``_DTD`` 0 and ``_DIS1`` d
         (``deep_hole``, which reads it back)."""
         params = [number(self.rtp), number(self.rfp), "0", number(self.dp)]
         dtb = "" if self.dtb is None else _seconds(self.dtb)
@@ -160,16 +161,12 @@ class Call:
                        number(self.clearance)]
         elif self.name == "CYCLE85":
             assert self.feed is not None
-            params += ["", dtb, _feed(self.feed), _feed(self.feed)]
+            params += ["", dtb, feed(self.feed), feed(self.feed)]
         elif self.name == "CYCLE88":
             params += ["", dtb, "3"]
         elif self.dtb is not None:
             params += ["", dtb]
         return f"MCALL {self.name}({', '.join(params)})"
-
-
-def _feed(value: float) -> str:
-    return f"{value:.6f}".rstrip("0").rstrip(".")
 
 
 def _seconds(value: float) -> str:

@@ -231,7 +231,7 @@ class SiemensWriter(WordWriter):
             # G0 in force at the call: the holes are reached at rapid (the writer does not track the motion mode
             # written, so it is always stated)
             lines.append(self.code("motion", "rapid", "rapid motion", block) + "\n")
-            lines.append(call.text(lambda value: self.number(value, "Z")) + "\n")
+            lines.append(call.text(lambda value: self.number(value, "Z"), lambda value: self.number(value, "F")) + "\n")
             self.call = call
         axes: dict[str, float | Expr] = {a: float(cycle.words[a]) for a in ("X", "Y") if a in cycle.words}
         words = self.motion_words(Motion("rapid", axes), block)[1:]
