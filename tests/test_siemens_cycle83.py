@@ -96,14 +96,25 @@ def test_mcall_cycle83_translates_exactly(target: str) -> None:
         _verify(START + DEEP, "siemens", target)
 
 
-def test_an_anticipation_distance_other_than_the_set_ups_is_kept_verbatim(tmp_path: Path) -> None:
-    """_DIS1 is the cycle's d; it is read only where it is the set-up's G83 clearance (Fanuc's parameter)."""
+def test_an_anticipation_distance_other_than_the_set_ups_is_each_holes_own(tmp_path: Path) -> None:
+    """_DIS1 is the cycle's d. Fanuc's G83 takes the set-up's (a machine parameter): where _DIS1 is another,
+    every other dialect gets the holes' exact moves with it (here d = 0.3: back down to -4 + 0.3 = -3.7)."""
     text = START + DEEP.replace(", 0.5)", ", 0.3)")
     assert _translate(text, "siemens", "siemens") == text
-    assert "MCALL CYCLE83 with _DIS1 0.3 other than the set-up's G83 clearance 0.5" in _errors(text, "fanuc")[0]
-    setup = _setup(tmp_path, 0.3)
-    out = _verify(text, "siemens", "fanuc", setup)
+    assert _moves(text)[1:4] == [("rapid", 10, 10, 50), ("rapid", 10, 10, 0), ("feed", 10, 10, -4)]
+    assert _moves(text)[5] == ("rapid", 10, 10, -3.7)
+    out = _verify(text, "siemens", "fanuc")
+    assert "G83" not in out and "G00 Z-3.7" in out, out
+    out = _verify(text, "siemens", "fanuc", _setup(tmp_path, 0.3))
     assert "G98 G83 Z-12. R0. Q4. K0" in out
+
+
+def test_a_g83_with_another_clearance_than_the_set_ups_is_written_with_it(tmp_path: Path) -> None:
+    """A Fanuc-family source whose G83 clearance is its own (grblHAL's fixed 0.1 mm) towards a set-up whose
+    SINUMERIK takes 0.5: the lowering expands it (the clearances differ)."""
+    text = "G21 G90 G17\nG0 X0. Y0. Z20.\nG99 G83 X10. Y5. Z-10. R2. Q4. F120.\nX20.\nG80\nM30\n"
+    out = _verify(text, "grblhal", "siemens")
+    assert "CYCLE83" not in out, out
 
 
 @pytest.mark.parametrize("params, name", [

@@ -21,8 +21,8 @@ CYCLE89    G1 to the depth, dwell DTB, G1 at the same F to RFP+SDIS,   bore_dwel
            G0 to RTP
 CYCLE83    deep hole: first depth FDEP/FDPR, degression DAM, dwells    peck_deep (G83, Q the stroke) with VARI=1,
            DTB/DTS, first-pass factor FRF, VARI 0 chip breaking / 1    DAM 0, no dwells, FRF 1, SDIS 0, a whole
-           swarf removal, anticipation distance _DIS1 [K: 2.1.4]       number of strokes, _DIS1 the set-up's d
-                                                                       (``deep_hole``); else kept verbatim
+           swarf removal, anticipation distance _DIS1 [K: 2.1.4]       number of strokes, d = _DIS1 (``deep_hole``);
+                                                                       else kept verbatim
 CYCLE84    rigid tap at SST (SST1 out) with pitch MPIT/PIT, spindle    kept verbatim [?]
            oriented to POSS, direction SDAC after it
 CYCLE840   tap with a compensating chuck: reversal SDR, SDAC after,   kept verbatim [?]
@@ -87,6 +87,9 @@ CLEARANCE_TOLERANCE = 1e-8
 with 8 decimals (0.3 mm is 0.01181102 inch, 4e-9 off) reads back as the same clearance."""
 MCALL_KEY = "siemens_mcall"
 """``ctx.state.extra`` key: True while a modal cycle call is active."""
+DIS1_KEY = "siemens_dis1"
+"""``ctx.state.extra`` key: a deep hole's anticipation distance ``_DIS1`` while its call is active, and whether
+it differs from the set-up's G83 clearance (``SiemensCycleEnd`` gives it to each hole)."""
 ONCE_KEY = "siemens_cycle_once"
 """``ctx.state.extra`` key: (the ``id`` of the block calling a cycle once, its RTP), from the block syntax to
 ``SiemensCycleEnd``."""
@@ -251,17 +254,16 @@ class SiemensCycleRules:
         if not levels.once and state.motion != "rapid":
             raise ProgramError("MCALL moves to each hole in the motion mode in force: program G0 before it (Fanuc's "
                                "cycles position at rapid)", at)
-        if levels.clearance is not None:
-            d = peck_clearance_mm("peck_deep", ctx.peck_clearance_mm, ctx.setup.cycles)
-            d = d if state.units == "mm" else d / MM_PER_INCH
-            if abs(levels.clearance - d) > CLEARANCE_TOLERANCE:
-                keep_verbatim(block, f"{'' if levels.once else 'MCALL '}{name} with _DIS1 {levels.clearance:g} other than the set-up's G83 clearance "
-                                     f"{d:g} (<Cycles peckClearance>, in mm)")
-                return None
         if levels.feed is not None and levels.feed != state.feed:
             keep_verbatim(block, f"{name} with FFR {levels.feed:g} other than the F in force (Fanuc's G85/G89 "
                                  "feed at it)")
             return None
+        if levels.clearance is not None:
+            d = peck_clearance_mm("peck_deep", ctx.peck_clearance_mm, ctx.setup.cycles)
+            d = d if state.units == "mm" else d / MM_PER_INCH
+            state.extra[DIS1_KEY] = (levels.clearance, abs(levels.clearance - d) > CLEARANCE_TOLERANCE)
+        else:
+            state.extra.pop(DIS1_KEY, None)
         if levels.once:
             state.extra[ONCE_KEY] = (id(block), levels.retract)
             return "r" if abs(levels.retract - levels.r) <= LEVEL_TOLERANCE else "initial"
@@ -297,8 +299,11 @@ class SiemensCycleEnd(Syntax):
 
     def build(self, block: Block, ctx: Context) -> None:
         extra = ctx.state.extra
+        if DIS1_KEY in extra:
+            deep_hole_clearance(block, ctx)
         if ONCE_KEY not in extra:
             return
+        extra.pop(DIS1_KEY, None)
         called, retract = extra.pop(ONCE_KEY)
         if called != id(block):
             return  # the call's own block was refused before it came here
@@ -312,3 +317,16 @@ class SiemensCycleEnd(Syntax):
         state.cycle = None
         extra.pop(STATE_KEY, None)
         extra.pop(ACTIVE_KEY, None)
+
+
+def deep_hole_clearance(block: Block, ctx: Context) -> None:
+    """Give the block's deep hole (and the active cycle's record, which hole patterns copy) the call's
+    ``_DIS1`` as its clearance d; where it is not the set-up's G83 clearance, which every Fanuc-family
+    target's G83 takes, the hole is expanded for every other dialect (``expand``), with that d."""
+    extra = ctx.state.extra
+    dis1, differs = extra[DIS1_KEY]
+    active = extra.get(ACTIVE_KEY)
+    for cycle in (block.sections.get("CannedCycle"), active[0] if isinstance(active, tuple) else None):
+        if isinstance(cycle, CannedCycle) and cycle.kind == "peck_deep":
+            cycle.clearance = dis1
+            cycle.expand = cycle.expand or differs

@@ -23,12 +23,15 @@ Read natively only where nothing unconfirmed is involved; kept verbatim (``Uncon
 * a whole number of strokes: how the cycle shares out a remainder (the manual's "the last two strokes are
   of equal length" is said of the degression) is not confirmed for DAM 0 [?];
 * ``FRF`` 1 as written (an empty FRF's default is not confirmed [?]); ``DAM``, ``DTB``, ``DTS`` and ``_DTD``
-  empty or 0 (Fanuc's G83 has no dwells); ``_AXN`` empty or 3 (the tool along Z); ``_DIS1`` positive and the
-  set-up's G83 clearance (``<Cycles peckClearance>``: the simulator's and every Fanuc-family target's d,
-  checked by the block syntax, ``cycles.SiemensCycleRules``); ``_MDEP`` (the least stroke under
-  degression) empty or not above the stroke; ``_VRT`` is chip breaking's and is not read;
+  empty or 0 (Fanuc's G83 has no dwells); ``_AXN`` empty or 3 (the tool along Z); ``_DIS1`` positive (0 is
+  the distance the cycle computes [?]); ``_MDEP`` (the least stroke under degression) empty or not above the
+  stroke; ``_VRT`` is chip breaking's and is not read;
 * exactly one of ``FDEP`` (absolute) and ``FDPR`` (below RFP, no sign), the first depth not below the final
   one.
+
+``_DIS1`` is each hole's own d (``cycles.deep_hole_clearance``). Fanuc's G83 takes its d from a machine
+parameter, the set-up's ``<Cycles peckClearance>``: where ``_DIS1`` is another, every other dialect gets the
+holes' exact moves instead of a native G83.
 """
 
 from __future__ import annotations
