@@ -240,6 +240,8 @@ SAMPLES: dict[str, list[tuple[Builder, str]]] = {
     "SiemensHoles": [(lambda c: c["SiemensHoles"]("HOLES2", 60.0, 40.0, 10.0, 90.0, 0.0, 4),
                       '<SiemensHoles name="HOLES2" a="60.0" b="40.0" c="10.0" d="90.0" e="0.0" num="4"/>')],
     "SiemensArc": [(lambda c: c["SiemensArc"](90.0), '<SiemensArc angle="90.0"/>')],
+    "SiemensSupa": [(lambda c: c["SiemensSupa"](), '<SiemensSupa/>')],
+    "SiemensTurn": [(lambda c: c["SiemensTurn"](3), '<SiemensTurn turns="3"/>')],
     "SiemensCip": [(lambda c: c["SiemensCip"](0.0, 10.0), '<SiemensCip i1="0.0" j1="10.0"/>'),
                    (lambda c: c["SiemensCip"](1.0, 2.0, 3.0), '<SiemensCip i1="1.0" j1="2.0" k1="3.0"/>')],
     "SiemensFixedPoint": [(lambda c: c["SiemensFixedPoint"](1, "ZY"), '<SiemensFixedPoint number="1" axes="ZY"/>')],

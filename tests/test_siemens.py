@@ -255,7 +255,7 @@ def test_a_name_as_a_tool_and_the_cycles_are_kept_verbatim() -> None:
     assert _translate(text, "siemens", "siemens") == text
     errors = _errors(text, "siemens", "fanuc")
     assert "T=\"DRILL\" (no tool of the set-up has this name" in errors[0]
-    assert "CYCLE83 (its degression DAM" in errors[1]
+    assert "CYCLE83 with VARI empty" in errors[1]
     assert "MCALL CYCLE86 (its lift-off RPA/RPO/RPAP in three axes has no neutral cycle)" in errors[2]
 
 
@@ -470,8 +470,8 @@ def test_a_cycle_call_fanuc_cannot_mean_is_a_located_error(lines: str, message: 
 
 
 def test_other_cycle_calls_are_kept_verbatim() -> None:
-    for line, name in (("CYCLE83(10, 0, 2, -5)", "CYCLE83 (its degression DAM"),
-                       ("MCALL CYCLE83(10, 0, 2, -20, , -5, , 2, 0, 0, 1, 0)", "MCALL CYCLE83"),
+    for line, name in (("CYCLE83(10, 0, 2, -5)", "CYCLE83 with VARI empty"),
+                       ("MCALL CYCLE83(10, 0, 2, -20, , -5, , 2, 0, 0, 1, 0)", "MCALL CYCLE83 with VARI 0"),
                        ("MCALL CYCLE81(R1, 0, 2, -5)", "MCALL CYCLE81 with computed parameters"),
                        ("MCALL MYSUB", "MCALL MYSUB"),
                        ("MCALL CYCLE81(10, 0, 2, -5, , 0, 1, 0)", "MCALL CYCLE81 with parameters after DPR")):

@@ -168,11 +168,11 @@ def test_mcall_cycles_translate_exactly(target: str) -> None:
 # -- what is kept verbatim, and what is refused -------------------------------------------------------------
 
 @pytest.mark.parametrize("line, name", [
-    ("CYCLE83(10, 0, 2, -20, , -5, , 2, 0, 0, 1, 1)", "CYCLE83 (its degression DAM"),
+    ("CYCLE83(10, 0, 0, -20, , -5, , 2, 0, 0, 1, 1, , , , , 0.5)", "CYCLE83 with DAM"),
     ("CYCLE84(10, 0, 2, -20, , 0, 3, , 1.25, 0, 400, 400)", "CYCLE84 (a rigid tap"),
     ("CYCLE840(10, 0, 2, -20, , 0, 0, 3, 1, , 1.25)", "CYCLE840 (its reversal SDR"),
     ("CYCLE86(10, 0, 2, -20, , 0, 3, 0.1, 0, 0, 0)", "CYCLE86 (its lift-off RPA/RPO/RPAP"),
-    ("MCALL CYCLE83(10, 0, 2, -20, , -5, , 2, 0, 0, 1, 1)", "MCALL CYCLE83 (its degression DAM"),
+    ("MCALL CYCLE83(10, 0, 2, -20, , -5, , 0, 0, 0, 1, 1, , , , , 0.5)", "MCALL CYCLE83 with SDIS other than 0"),
     ("CYCLE87(20, 0, 2, -8, , 4)", "CYCLE87 with SDIR 4"),
     ("CYCLE88(20, 0, 2, -8, , 2)", "CYCLE88 with SDIR empty"),
     ("CYCLE85(12, 0, 2, -6, , , 100, 200)", "CYCLE85 with RFF other than FFR"),
@@ -284,7 +284,7 @@ def test_hole_patterns_translate_exactly(target: str) -> None:
     ("HOLES1(10, 10, 0, 5, 10, 3)", "HOLES1 without an active MCALL cycle"),
     ("MCALL CYCLE81(50, 0, 2, -5)\nHOLES1(-40, 5, 0, 5, 10, 3)", "HOLES1 with the tool not nearer its first hole"),
     ("MCALL CYCLE83(50, 0, 2, -20, , -5, , 2, 0, 0, 1, 1)\nHOLES2(60, 40, 10, 90, 0, 4)",
-     "MCALL CYCLE83 (its degression DAM"),
+     "MCALL CYCLE83 with SDIS other than 0"),
 ])
 def test_a_pattern_that_is_not_read_is_kept_verbatim(lines: str, name: str) -> None:
     text = f"{START}{lines}\nMCALL\nM30\n"

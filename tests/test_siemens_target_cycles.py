@@ -91,10 +91,10 @@ def test_a_move_in_cycle_mode_ends_the_call_first() -> None:
 
 
 @pytest.mark.parametrize("cycle", [
-    "G99 G83 X10. Y5. Z-9. R2. Q3. F100.",  # peck drilling: CYCLE83 is not read back here
+    "G99 G83 X10. Y5. Z-9. R2. Q3. F100.",  # 11 deep: no whole number of pecks (deep_hole reads only those)
     "G99 G73 X10. Y5. Z-9. R2. Q3. F100.",
-    "G99 G85 X10. Y5. Z-9. R2. F100.",
-    "G99 G89 X10. Y5. Z-9. R2. P500 F100.",
+    "G99 G86 X10. Y5. Z-9. R2. F100.",  # CYCLE86 orients the spindle and lifts off: no Fanuc G86
+    "G99 G74 X10. Y5. Z-9. R2. F100.",
     "G99 G81 X10. Y5. Z-9. R2. K3 F100.",  # a repeat
     "G91 G99 G81 X10. Y5. Z-11. R-8. F100.",  # incremental levels
 ])
@@ -167,4 +167,58 @@ def test_random_hole_programs_are_native_and_read_back_to_the_same_toolpath() ->
         text = _random_holes(rng)
         out, _ = _translate(text)
         assert out.count("MCALL CYCLE8") == text.count("G8") - text.count("G80"), (text, out)
+        _verified(text, out)
+
+
+# -- G85 / G89 / G88 as MCALL CYCLE85 / CYCLE89 / CYCLE88 ---------------------------------------------------
+
+BORES = ("G21 G90 G17\nG0 X0. Y0. Z30.\nS1000 M3\nG98 G85 X10. Y10. Z-12. R2. F120.\nX20.\nG80\n"
+         "G99 G89 X30. Z-6. R1. P250 F80.\nX40. Y5.\nG80\nG0 Z30.\nG98 G88 X50. Z-8. R2. P1000\nX60.\nG80\n"
+         "G98 G89 X70. Z-8. R2.\nG80\nM30\n")
+
+
+def test_boring_cycles_are_their_siemens_cycles_with_the_feed_in_and_out() -> None:
+    """G85: CYCLE85 with FFR = RFF = the feed (Fanuc feeds in and out at F); G89: CYCLE89 with DTB the dwell
+    in seconds; G88: CYCLE88 with DTB and SDIR 3 (Fanuc's G88 restarts the spindle clockwise); G89 without P:
+    an empty DTB. RTP as for CYCLE81 (R under G99, the initial level under G98)."""
+    out, _ = _translate(BORES)
+    calls = [line for line in out.splitlines() if line.startswith("MCALL ")]
+    assert calls == ["MCALL CYCLE85(30., 2., 0, -12., , , 120., 120.)", "MCALL CYCLE89(1., 1., 0, -6., , 0.25)",
+                     "MCALL CYCLE88(30., 2., 0, -8., , 1.0, 3)", "MCALL CYCLE89(30., 2., 0, -8.)"], out
+    _verified(BORES, out)
+    back = io.StringIO(newline="")
+    translate(io.StringIO(out, newline=""), back, file="out.mpf", source="siemens", target="fanuc", setup=_setup(),
+              diagnostics=Diagnostics(warn_stream=io.StringIO()))
+    for native in ("G98 G85 Z-12. R2. K0", "G99 G89 Z-6. R1. P250 K0", "G98 G88 Z-8. R2. P1000 K0",
+                   "G98 G89 Z-8. R2. K0"):
+        assert native in back.getvalue(), back.getvalue()
+    report = verify_lines(io.StringIO(out), io.StringIO(back.getvalue()), file_in="out.mpf", file_out="back.nc",
+                          source="siemens", target="fanuc", setup=_setup())
+    assert report.ok and report.max_deviation == 0, report.summary()
+
+
+def test_a_g88_hole_where_the_tool_stands_is_expanded_with_its_cycle() -> None:
+    """Its moves stop the program (M0): they are not written outside a call; the cycle is expanded."""
+    text = "G21 G90 G17\nG0 X0. Y0. Z30.\nS1000 M3\nG98 G88 Z-8. R2. P1000 F100.\nX10.\nG80\nM30\n"
+    out, _ = _translate(text)
+    assert "MCALL" not in out, out
+    _verified(text, out)
+
+
+def test_random_boring_programs_read_back_to_the_same_toolpath() -> None:
+    rng = random.Random(2885)
+    for _ in range(20):
+        lines = ["G21 G90 G17", f"G0 X0. Y0. Z{rng.randint(10, 40)}.", "S900 M3"]
+        for _ in range(rng.randint(1, 3)):
+            code = rng.choice(["G85", "G89", "G88"])
+            dwell = f" P{rng.randint(1, 2000)}" if code != "G85" and rng.random() < 0.7 else ""
+            x, y = rng.randint(-50, 50), rng.randint(-50, 50)
+            lines.append(f"G98 {code} X{x}. Y{y}. Z{-rng.randint(1, 20)}. R{rng.randint(1, 5)}.{dwell} "
+                         f"F{rng.randint(50, 400)}.")
+            for _ in range(rng.randint(1, 4)):
+                lines.append(f"X{x + rng.randint(1, 30)}. Y{y + rng.randint(-20, 20)}.")
+            lines += ["G80", f"G0 Z{rng.randint(10, 40)}."]
+        text = "\n".join(lines + ["M30"]) + "\n"
+        out, _ = _translate(text)
+        assert out.count("MCALL CYCLE8") == text.count(" G8"), (text, out)
         _verified(text, out)

@@ -50,14 +50,14 @@ class Siemens(Dialect):
     """Imported when a run first reads SINUMERIK (``Lazy``), as are the writer and the syntax objects."""
     WRITER = Lazy[type[Writer]](".writer:SiemensWriter")
     PIPELINE_FILE = "siemens.xml"
-    CYCLE_WORDS = CycleWords(names={"drill": "CYCLE81", "drill_dwell": "CYCLE82", "bore_feed": "CYCLE85",
-                                    "bore_manual": "CYCLE88", "bore_dwell_feed": "CYCLE89"},
+    CYCLE_WORDS = CycleWords(names={"drill": "CYCLE81", "drill_dwell": "CYCLE82", "peck_deep": "CYCLE83",
+                                    "bore_feed": "CYCLE85", "bore_manual": "CYCLE88", "bore_dwell_feed": "CYCLE89"},
                              return_to_r="RTP=RFP+SDIS", level="R", peck="Q", shift="Q", dwell="P", repeat=("K",))
-    """``CYCLE81``/``82``/``85``/``87``/``88``/``89`` are read as the Fanuc-family words of their meaning
-    (``cycles``: R level, Z depth, P dwell in ms, K0 for the modal call that drills nothing)."""
-    NATIVE_CYCLES = frozenset({"drill", "drill_dwell"})
-    """Fanuc G81/G82 are written as ``MCALL CYCLE81``/``CYCLE82`` where they move the same (``moves_like``,
-    ``cycle_writing``); every other cycle is expanded for SINUMERIK."""
+    """``CYCLE81``/``82``/``83``/``85``/``87``/``88``/``89`` are read as the Fanuc-family words of their meaning
+    (``cycles``: R level, Z depth, Q stroke, P dwell in ms, K0 for the modal call that drills nothing)."""
+    NATIVE_CYCLES = frozenset({"drill", "drill_dwell", "peck_deep", "bore_feed", "bore_dwell_feed", "bore_manual"})
+    """Fanuc G81/G82/G83/G85/G89/G88 are written as ``MCALL CYCLE81``/``82``/``83``/``85``/``89``/``88`` where
+    they move the same (``moves_like``, ``cycle_writing``); every other cycle is expanded for SINUMERIK."""
     CYCLE_SEMANTICS = "fanuc"
     """The cycles read move by Fanuc's rules (the reading pipeline's ``CannedCycleResolveSyntax("fanuc")``)."""
 
@@ -127,3 +127,5 @@ def postproc_register_xml(factory: XFactory) -> None:
     factory.register_lazy("SiemensArc", f"{__name__}.arcs:SiemensArc")
     factory.register_lazy("SiemensCip", f"{__name__}.arcs:SiemensCip")
     factory.register_lazy("SiemensFixedPoint", f"{__name__}.fixed_point:SiemensFixedPoint")
+    factory.register_lazy("SiemensSupa", f"{__name__}.frame_suppression:SiemensSupa")
+    factory.register_lazy("SiemensTurn", f"{__name__}.helix:SiemensTurn")

@@ -18,16 +18,18 @@ from typing import Any, ClassVar
 from postproc.context import Context
 from postproc.errors import ProgramError
 from postproc.expr import Expr
-from postproc.ir import Block, Dwell, ReturnLevel
+from postproc.ir import Block, Dwell, MachineCoordinates, ReturnLevel
 from postproc.isg_family.tool_data import read_tool_data
 from postproc.rs274.block_syntax import WordBlockSyntax, col_of_word
 from postproc.rs274.codes import CodeTable, g_key
 
+from . import frame_suppression, helix
 from .arcs import CIP_KEY, SiemensArc, SiemensCip, arc_words, cip_words
 from .codes import CODES, GEOMETRY_UNITS
 from .fixed_point import SiemensFixedPoint
 from .fixed_point import resolve as resolve_fixed_point
-from .cycles import MCALL_KEY, CycleLevels, SiemensCycleRules, keep_verbatim
+from .cycles import DIS1_KEY, MCALL_KEY, CycleLevels, SiemensCycleRules, keep_verbatim
+from .helix import SiemensTurn
 from .holes import SiemensHoles
 from .holes import resolve as resolve_holes
 
@@ -57,11 +59,25 @@ class SiemensBlockSyntax(WordBlockSyntax):
             arc_words(block, ctx, arc)
         if not self.circle_through(block, ctx):
             return  # kept verbatim (``arcs``)
+        turn = block.sections.pop(SiemensTurn.KEY, None)
+        start = None
+        if isinstance(turn, SiemensTurn):
+            start = helix.before(block, ctx, turn)
+            if "NativeCode" in block.sections:
+                return  # kept verbatim (``helix``)
         holes = block.sections.pop(SiemensHoles.KEY, None)
         if isinstance(holes, SiemensHoles):
             resolve_holes(block, ctx, holes)
             if "NativeCode" in block.sections:
                 return  # kept verbatim (``holes``)
+        suppression = frame_suppression.take(block)
+        if suppression is not None:
+            why = frame_suppression.problem(block, ctx)
+            if why is not None:
+                keep_verbatim(block, f"{suppression} (frame suppression) {why}")
+                return
+            block.add(MachineCoordinates())
+        frame_suppression.note_cutter(block, ctx)
         levels = block.sections.pop(CycleLevels.KEY, None)
         if isinstance(levels, CycleLevels):
             level = SiemensCycleRules.call(block, ctx, levels)
@@ -70,7 +86,10 @@ class SiemensBlockSyntax(WordBlockSyntax):
             block.add(ReturnLevel(level))
         elif "CycleCancel" in block.sections:
             ctx.state.extra.pop(MCALL_KEY, None)
+            ctx.state.extra.pop(DIS1_KEY, None)
         super().build(block, ctx)
+        if isinstance(turn, SiemensTurn) and start is not None:
+            helix.after(block, ctx, turn, start)
 
     @staticmethod
     def circle_through(block: Block, ctx: Context) -> bool:
@@ -99,7 +118,7 @@ class SiemensBlockSyntax(WordBlockSyntax):
     def g_sections(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],
                    used: set[str], cycle_block: bool) -> None:
         if "CycleCall" in block.sections:
-            used.update("RZKP")  # the words of ``MCALL CYCLE8x`` (``cycles``), read by the resolve step
+            used.update("RZKPQ")  # the words of ``MCALL CYCLE8x`` (``cycles``), read by the resolve step
         elif ctx.state.extra.get(MCALL_KEY) and ctx.state.cycle is not None:
             SiemensCycleRules.position(block, ctx, codes, values)
         units = codes.get("06")

@@ -15,9 +15,10 @@ means something else on a Fanuc control, the table is what tells them apart (iss
 * ``G4`` takes its time in ``F`` (seconds) or ``S`` (spindle revolutions, not modelled), never a feed.
 * ``G33`` is thread cutting, ``G331``/``G332`` rigid tapping: kept verbatim.
 * ``G53``/``G153`` suppress the frames for one block (not Fanuc's move in machine coordinates; whether the
-  tool offsets stay is machine data ``$MN_G53_TOOLCORR`` [V: 802D sl/840D ISO Milling 04.07, 3.1.1]): kept
-  verbatim (a reference return is written as ``G75``: ``fixed_point``), as are ``G641``/``G642`` (corner rounding: the path is not sharp)
-  and ``G9``'s companions ``G601``-``G603``.
+  tool offsets stay is machine data ``$MN_G53_TOOLCORR`` [V: 802D sl/840D ISO Milling 04.07, 3.1.1]): the
+  block syntax reads them, with ``SUPA``, where that cannot matter (``frame_suppression``), else keeps them
+  verbatim (a reference return is written as ``G75``: ``fixed_point``). ``G641``/``G642`` (corner rounding:
+  the path is not sharp) and ``G9``'s companions ``G601``-``G603`` are kept verbatim.
 * ``M17`` ends a subprogram: the reader reads it as a return.
 """
 
@@ -77,7 +78,6 @@ CODES = CodeTable(
     native_g={
         "5": "high-speed grinding", "25": "working area limitation", "26": "working area limitation",
         "33": "thread cutting", "331": "rigid tapping", "332": "rigid tapping retraction",
-        "53": "frame suppression for one block", "153": "frame suppression for one block",
         "58": "axial programmable offset", "59": "axial programmable offset",
         "500": "settable zero offset deselection", "93": "inverse-time feed", "96": "constant cutting speed",
         "97": "constant cutting speed off", "110": "polar pole", "111": "polar pole", "112": "polar pole",

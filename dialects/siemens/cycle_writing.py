@@ -1,5 +1,6 @@
 """Fanuc-family drilling cycles written as SINUMERIK modal cycle calls: ``MCALL CYCLE81(RTP, RFP, SDIS, DP)`` /
-``MCALL CYCLE82(RTP, RFP, SDIS, DP, , DTB)``, the holes as plain position blocks, a bare ``MCALL`` to end.
+``MCALL CYCLE82(RTP, RFP, SDIS, DP, , DTB)`` and the others below, the holes as plain position blocks, a bare
+``MCALL`` to end.
 
 Exactly where the meanings match, which is where the reader (``cycles``) reads them back to the same cycle
 [K: USERS-AND-SIEMENS.md 3.2, PGZ cycles manual 11/2006 p.2-86; the Autodesk ``siemens-840d.cps`` mapping]:
@@ -8,10 +9,15 @@ Exactly where the meanings match, which is where the reader (``cycles``) reads t
   confirmed; the cycle's approach is then RFP itself]; ``DP`` is Fanuc's Z (absolute); ``RTP`` is R under G99
   and the initial level under G98, which SINUMERIK takes as an absolute plane: a G98 block is native only where
   the tool stands at the initial level before it (true at a cycle's first block and after each G98 hole);
-* G81 and G82 only (``CYCLE81``/``CYCLE82``; DTB the dwell in seconds, whole milliseconds): the reader models
-  no other cycle yet, so G73, G83, G85-G89, G76 and back boring (G87: no SINUMERIK call, the Autodesk post
-  expands it too) are expanded, as is a block that repeats (K/L), has no new position in the plane, is not in
-  G17, programs its levels incrementally (G91) or computes a word;
+* G81 ``CYCLE81``; G82 ``CYCLE82`` (DTB the dwell in seconds, whole milliseconds); G83 ``CYCLE83`` with
+  ``FDEP`` the first stroke's depth, ``VARI`` 1, no degression and no dwells, ``_DIS1`` the clearance d, where
+  the depth is a whole number of pecks (``deep_hole`` says why); G85 ``CYCLE85`` with FFR = RFF = the feed;
+  G89 ``CYCLE89``; G88 ``CYCLE88`` with SDIR 3 (Fanuc restarts the spindle clockwise). Expanded: G73 (chip
+  breaking retracts at the feed on SINUMERIK), G74/G84 (``CYCLE84``/``CYCLE840`` are not read), G86 and G76
+  (``CYCLE86`` orients the spindle and lifts off in three axes), back boring (G87: no SINUMERIK call, the
+  Autodesk post expands it too), and a block that repeats (K/L), has no new position in the plane (G88: its
+  moves stop the program, so it is not written outside the call either), is not in G17, programs its levels
+  incrementally (G91) or computes a word;
 * the cycle runs after each block that moves [K: 3.2 "every later block that moves runs the cycle at its
   end"], so a hole is a position block with X/Y only, in G0 (written before each ``MCALL``), and anything that
   moves otherwise while the call is active (a motion code, an expansion, the cycle cancel, the program end)
@@ -26,10 +32,13 @@ from typing import Callable
 
 from postproc.cycles.section import CannedCycle
 
-NAMES = {"drill": "CYCLE81", "drill_dwell": "CYCLE82"}
+NAMES = {"drill": "CYCLE81", "drill_dwell": "CYCLE82", "peck_deep": "CYCLE83", "bore_feed": "CYCLE85",
+         "bore_dwell_feed": "CYCLE89", "bore_manual": "CYCLE88"}
 """Neutral cycle kind -> the SINUMERIK cycle written for it."""
 SAME = 1e-9
 """Levels closer than this (program units) are the same level."""
+BORING = frozenset(("bore_feed", "bore_dwell_feed"))
+"""The kinds written with their feed in and out (``CYCLE85``'s FFR and RFF, ``CYCLE89``'s F in force)."""
 
 
 def moves_in_plane(cycle: CannedCycle) -> bool:
@@ -44,13 +53,39 @@ def moves_in_plane(cycle: CannedCycle) -> bool:
 
 
 def in_place_moves(cycle: CannedCycle, call: "Call") -> list[tuple[str, float]]:
-    """The moves of Fanuc's G81/G82 at the hole where the tool stands [K: Fanuc 0i-MF operator's manual,
-    "Drilling cycle, spot drilling (G81)": rapid to R, feed to Z, (G82: dwell), rapid to the return level];
+    """The moves of Fanuc's G81/G82/G83 at the hole where the tool stands [K: Fanuc 0i-MF operator's manual,
+    "Drilling cycle, spot drilling (G81)": rapid to R, feed to Z, (G82: dwell), rapid to the return level;
+    "Peck drilling cycle (G83)": feed Q, rapid to R, rapid to d above the last depth, feed Q + d, ...];
     ``("dwell", seconds)`` for the dwell."""
-    moves = [("rapid", call.rfp), ("linear", call.dp)]
+    moves = [("rapid", call.rfp)]
+    if call.stroke is not None:
+        for k in range(1, strokes(call.rfp - call.dp, call.stroke)):
+            depth = call.rfp - k * call.stroke
+            moves += [("linear", depth), ("rapid", call.rfp), ("rapid", depth + call.clearance)]
+    moves.append(("linear", call.dp))
     if call.dtb:
         moves.append(("dwell", call.dtb))
+    if call.feed is not None:  # G85/G89: feed out to R [K: Fanuc 0i-MF, "Boring cycle (G85)", "(G89)"]
+        moves.append(("linear", call.rfp))
     return moves + [("rapid", call.rtp)]
+
+
+def strokes(depth: float, stroke: float) -> int:
+    """How many strokes of ``stroke`` drill ``depth`` (whole, or one when the stroke reaches the bottom)."""
+    return max(1, round(depth / stroke))
+
+
+def whole_strokes(cycle: CannedCycle) -> bool:
+    """Whether a G83's depth is drilled in strokes of Q that are all the same (``CYCLE83`` is read only so:
+    ``deep_hole``), or in one; and it has its clearance d and no dwell (Fanuc's G83 ignores P [?])."""
+    assert cycle.r is not None and cycle.bottom is not None
+    q, d, depth = cycle.q, cycle.clearance, cycle.r - cycle.bottom
+    if q is None or q <= 0 or d is None or d <= 0 or cycle.dwell:
+        return False
+    if q >= depth - SAME:
+        return True
+    count = depth / q
+    return abs(count - round(count)) <= 1e-9 * count
 
 
 def writable(cycle: CannedCycle) -> bool:
@@ -70,6 +105,12 @@ def writable(cycle: CannedCycle) -> bool:
             return False  # an incremental position
     if cycle.dwell is not None and abs(cycle.dwell * 1000 - round(cycle.dwell * 1000)) > 1e-6:
         return False
+    if cycle.kind == "peck_deep" and not whole_strokes(cycle):
+        return False
+    if cycle.kind in BORING and (cycle.feed is None or cycle.feed <= 0):
+        return False
+    if cycle.kind == "bore_manual" and not moves_in_plane(cycle):
+        return False  # its moves where the tool stands stop the program: not written outside the call
     if cycle.return_level == "initial":
         z = cycle.start.get("Z")
         return z is not None and abs(z - cycle.initial) <= SAME
@@ -85,20 +126,46 @@ class Call:
     rfp: float
     dp: float
     dtb: float | None
+    stroke: float | None = None
+    """A deep hole's stroke (Fanuc's Q, at most the depth)."""
+    clearance: float = 0.0
+    """A deep hole's anticipation distance (Fanuc's d)."""
+    feed: float | None = None
+    """A bore that feeds out: the feed in and out (``CYCLE85``'s FFR and RFF)."""
 
     @classmethod
     def of(cls, cycle: CannedCycle) -> "Call":
         assert cycle.r is not None and cycle.bottom is not None and cycle.initial is not None
         rtp = cycle.r if cycle.return_level == "r" else cycle.initial
+        if cycle.kind == "peck_deep":
+            assert cycle.q is not None and cycle.clearance is not None
+            return cls(NAMES[cycle.kind], rtp, cycle.r, cycle.bottom, None, min(cycle.q, cycle.r - cycle.bottom),
+                       cycle.clearance)
+        if cycle.kind in BORING or cycle.kind == "bore_manual":
+            dwell = cycle.dwell if cycle.kind != "bore_feed" else None
+            return cls(NAMES[cycle.kind], rtp, cycle.r, cycle.bottom, dwell or None,
+                       feed=cycle.feed if cycle.kind in BORING else None)
         dwell = cycle.dwell if cycle.kind == "drill_dwell" else None
         return cls(NAMES[cycle.kind], rtp, cycle.r, cycle.bottom, 0.0 if cycle.kind == "drill_dwell" and dwell is None
                    else dwell)
 
-    def text(self, number: Callable[[float], str]) -> str:
-        """``number`` spells a level as the writer spells a Z value."""
+    def text(self, number: Callable[[float], str], feed: Callable[[float], str]) -> str:
+        """``number`` spells a level as the writer spells a Z value, ``feed`` a feed as it spells F (so
+        ``CYCLE85``'s FFR reads back as the F in force). A deep hole: ``FDEP`` the first stroke's depth,
+        ``DAM``, ``DTB``, ``DTS`` 0, ``FRF`` 1, ``VARI`` 1 (swarf removal), ``_DTD`` 0 and ``_DIS1`` d
+        (``deep_hole``, which reads it back)."""
         params = [number(self.rtp), number(self.rfp), "0", number(self.dp)]
-        if self.dtb is not None:
-            params += ["", _seconds(self.dtb)]
+        dtb = "" if self.dtb is None else _seconds(self.dtb)
+        if self.stroke is not None:
+            params += ["", number(self.rfp - self.stroke), "", "0", "0", "0", "1", "1", "", "", "", "0",
+                       number(self.clearance)]
+        elif self.name == "CYCLE85":
+            assert self.feed is not None
+            params += ["", dtb, feed(self.feed), feed(self.feed)]
+        elif self.name == "CYCLE88":
+            params += ["", dtb, "3"]
+        elif self.dtb is not None:
+            params += ["", dtb]
         return f"MCALL {self.name}({', '.join(params)})"
 
 

@@ -19,9 +19,10 @@ CYCLE87    G1 to the depth, M5, M0; on NC start G0 to RTP, spindle     bore_manu
 CYCLE88    as CYCLE87 with a dwell DTB before M5                       bore_manual (G88), SDIR 3
 CYCLE89    G1 to the depth, dwell DTB, G1 at the same F to RFP+SDIS,   bore_dwell_feed (G89)
            G0 to RTP
-CYCLE83    deep hole: first depth FDEP/FDPR, degression DAM, dwells    kept verbatim [?]
-           DTB/DTS, first-pass factor FRF, VARI 0 chip breaking / 1
-           swarf removal with a computed anticipation distance
+CYCLE83    deep hole: first depth FDEP/FDPR, degression DAM, dwells    peck_deep (G83, Q the stroke) with VARI=1,
+           DTB/DTS, first-pass factor FRF, VARI 0 chip breaking / 1    DAM 0, no dwells, FRF 1, SDIS 0, a whole
+           swarf removal, anticipation distance _DIS1 [K: 2.1.4]       number of strokes, d = _DIS1 (``deep_hole``);
+                                                                       else kept verbatim
 CYCLE84    rigid tap at SST (SST1 out) with pitch MPIT/PIT, spindle    kept verbatim [?]
            oriented to POSS, direction SDAC after it
 CYCLE840   tap with a compensating chuck: reversal SDR, SDAC after,   kept verbatim [?]
@@ -61,22 +62,34 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any, ClassVar
 
-from postproc.cycles.resolve import ACTIVE_KEY, STATE_KEY
+from postproc.cycles.resolve import ACTIVE_KEY, STATE_KEY, peck_clearance_mm
 from postproc.cycles.rigid_tap import end_rigid_mode
 from postproc.cycles.section import CannedCycle
 from postproc.errors import ProgramError
 from postproc.ir import NativeCode, Section
+from postproc.state import MM_PER_INCH
 from postproc.syntax import Syntax
 from postproc.xmlio import XAttr
+
+from .deep_hole import Unconfirmed, deep_hole
 
 if TYPE_CHECKING:
     from postproc.context import Context
     from postproc.ir import Block
 
 COMMON = ("RTP", "RFP", "SDIS", "DP", "DPR")
+DEEP_HOLE = (*COMMON, "FDEP", "FDPR", "DAM", "DTB", "DTS", "FRF", "VARI", "_AXN", "_MDEP", "_VRT", "_DTD", "_DIS1")
+"""CYCLE83's parameters in order [K: USERS-AND-SIEMENS.md 3.2; the Autodesk ``siemens-840d.cps`` ``onCycle``
+writes the same seventeen, in this order]."""
 LEVEL_TOLERANCE = 1e-9
+CLEARANCE_TOLERANCE = 1e-8
+"""``_DIS1`` is the set-up's G83 clearance within this (program units): an inch program's ``_DIS1`` written
+with 8 decimals (0.3 mm is 0.01181102 inch, 4e-9 off) reads back as the same clearance."""
 MCALL_KEY = "siemens_mcall"
 """``ctx.state.extra`` key: True while a modal cycle call is active."""
+DIS1_KEY = "siemens_dis1"
+"""``ctx.state.extra`` key: a deep hole's anticipation distance ``_DIS1`` while its call is active, and whether
+it differs from the set-up's G83 clearance (``SiemensCycleEnd`` gives it to each hole)."""
 ONCE_KEY = "siemens_cycle_once"
 """``ctx.state.extra`` key: (the ``id`` of the block calling a cycle once, its RTP), from the block syntax to
 ``SiemensCycleEnd``."""
@@ -99,10 +112,7 @@ CYCLES: dict[str, CycleSpec] = {
     "CYCLE87": CycleSpec((*COMMON, "SDIR"), "bore_manual"),
     "CYCLE88": CycleSpec((*COMMON, "DTB", "SDIR"), "bore_manual"),
     "CYCLE89": CycleSpec((*COMMON, "DTB"), "bore_dwell_feed"),
-    "CYCLE83": CycleSpec((*COMMON, "FDEP", "FDPR", "DAM", "DTB", "DTS", "FRF", "VARI", "_AXN", "_MDEP", "_VRT",
-                          "_DTD", "_DIS1"),
-                         verbatim="its degression DAM, dwells DTB/DTS, first-pass feed factor FRF and computed "
-                                  "anticipation distance (VARI=1) are not confirmed against Fanuc's G73/G83 here"),
+    "CYCLE83": CycleSpec(DEEP_HOLE, "peck_deep"),
     "CYCLE84": CycleSpec((*COMMON, "DTB", "SDAC", "MPIT", "PIT", "POSS", "SST", "SST1", "_AXN", "_PTAB", "_TECHNO",
                           "_VARI", "_DAM", "_VRT"),
                          verbatim="a rigid tap at its own speeds SST/SST1 with an oriented start POSS is not "
@@ -125,25 +135,28 @@ class NotModelled(Exception):
 class CycleLevels(Section):
     """What the block syntax still has to check of a cycle call against the modal state: the levels (the
     return level is the one RTP is), whether the call is once, and the feed it works at (None: the F in
-    force). It leaves the block there."""
+    force) and a deep hole's anticipation distance (``_DIS1``, which must be the set-up's G83 clearance). It
+    leaves the block there."""
 
     XNAME = KEY = "SiemensCycleLevels"
-    __slots__ = ("retract", "r", "once", "feed", "name")
+    __slots__ = ("retract", "r", "once", "feed", "name", "clearance")
     XATTRS = (XAttr("retract", float), XAttr("r", float), XAttr("once", bool, False), XAttr("feed", float, None),
-              XAttr("name", str, "CYCLE81"))
+              XAttr("name", str, "CYCLE81"), XAttr("clearance", float, None))
     retract: float
     r: float
     once: bool
     feed: float | None
     name: str
+    clearance: float | None
 
     def __init__(self, retract: float, r: float, once: bool = False, feed: float | None = None,
-                 name: str = "CYCLE81") -> None:
+                 name: str = "CYCLE81", clearance: float | None = None) -> None:
         self.retract = retract
         self.r = r
         self.once = once
         self.feed = feed
         self.name = name
+        self.clearance = clearance
 
 
 def cycle_words(name: str, params: list[float | None], once: bool = False
@@ -185,8 +198,15 @@ def cycle_words(name: str, params: list[float | None], once: bool = False
             raise NotModelled(f"{name} with SDIR {'empty' if sdir is None else f'{sdir:g}'} (read with SDIR=3: "
                               "Fanuc's G88 restarts the spindle clockwise)")
     words = [("R", _spell(rfp + sdis)), ("Z", _spell(bottom))]
+    clearance = None
+    if name == "CYCLE83":
+        try:
+            stroke, clearance = deep_hole(given, rfp + sdis, bottom)
+        except Unconfirmed as err:
+            raise NotModelled(err.what) from None
+        words.append(("Q", _spell(stroke)))
     dtb = given.get("DTB")
-    if dtb is not None and "DTB" in names:
+    if dtb is not None and "DTB" in names and name != "CYCLE83":  # CYCLE83's DTB is 0 (``deep_hole``)
         ms = dtb * 1000.0
         if dtb < 0 or abs(ms - round(ms)) > 1e-6:
             raise ValueError(f"{name}: DTB is a dwell of whole milliseconds here, not {dtb:g}")
@@ -196,7 +216,7 @@ def cycle_words(name: str, params: list[float | None], once: bool = False
             words.append(("P", str(int(round(ms)))))
     if not once:
         words.append(("K", "0"))
-    return kind, words, CycleLevels(rtp, rfp + sdis, once, feed, name)
+    return kind, words, CycleLevels(rtp, rfp + sdis, once, feed, name, clearance)
 
 
 def _spell(value: float) -> str:
@@ -238,6 +258,12 @@ class SiemensCycleRules:
             keep_verbatim(block, f"{name} with FFR {levels.feed:g} other than the F in force (Fanuc's G85/G89 "
                                  "feed at it)")
             return None
+        if levels.clearance is not None:
+            d = peck_clearance_mm("peck_deep", ctx.peck_clearance_mm, ctx.setup.cycles)
+            d = d if state.units == "mm" else d / MM_PER_INCH
+            state.extra[DIS1_KEY] = (levels.clearance, abs(levels.clearance - d) > CLEARANCE_TOLERANCE)
+        else:
+            state.extra.pop(DIS1_KEY, None)
         if levels.once:
             state.extra[ONCE_KEY] = (id(block), levels.retract)
             return "r" if abs(levels.retract - levels.r) <= LEVEL_TOLERANCE else "initial"
@@ -273,8 +299,11 @@ class SiemensCycleEnd(Syntax):
 
     def build(self, block: Block, ctx: Context) -> None:
         extra = ctx.state.extra
+        if DIS1_KEY in extra:
+            deep_hole_clearance(block, ctx)
         if ONCE_KEY not in extra:
             return
+        extra.pop(DIS1_KEY, None)
         called, retract = extra.pop(ONCE_KEY)
         if called != id(block):
             return  # the call's own block was refused before it came here
@@ -288,3 +317,16 @@ class SiemensCycleEnd(Syntax):
         state.cycle = None
         extra.pop(STATE_KEY, None)
         extra.pop(ACTIVE_KEY, None)
+
+
+def deep_hole_clearance(block: Block, ctx: Context) -> None:
+    """Give the block's deep hole (and the active cycle's record, which hole patterns copy) the call's
+    ``_DIS1`` as its clearance d; where it is not the set-up's G83 clearance, which every Fanuc-family
+    target's G83 takes, the hole is expanded for every other dialect (``expand``), with that d."""
+    extra = ctx.state.extra
+    dis1, differs = extra[DIS1_KEY]
+    active = extra.get(ACTIVE_KEY)
+    for cycle in (block.sections.get("CannedCycle"), active[0] if isinstance(active, tuple) else None):
+        if isinstance(cycle, CannedCycle) and cycle.kind == "peck_deep":
+            cycle.clearance = dis1
+            cycle.expand = cycle.expand or differs

@@ -34,8 +34,8 @@ file a subprogram; ``RET``/``M17`` return.
 Kept verbatim (``NativeCode`` tagged ``siemens``: round trip byte for byte, refused by every other dialect
 and by the simulator, by name): the frames ``frames`` does not model (``ROTS``, computed values...), the cycles
 ``cycles`` keeps verbatim, other ``MCALL``s, parameters by reference (``VAR``), every other instruction word
-(``SOFT``, ``BRISK``, ``SPOS``...), multi-letter addresses other than ``CR`` and ``AR`` (``arcs``) (``TURN=``,
-``I1=``...), strings other than ``T="name"`` (the set-up's tool of that name), array,
+(``SOFT``, ``BRISK``, ``SPOS``...; ``SUPA`` is read: ``frame_suppression``), multi-letter addresses other
+than ``CR``, ``AR``, ``I1=``.. of ``CIP`` (``arcs``) and ``TURN`` (``helix``), strings other than ``T="name"`` (the set-up's tool of that name), array,
 ``CHAR``/``STRING``/``AXIS``/``FRAME`` declarations and the operators the IR lacks (``DIV``, ``B_AND``...).
 
 Errors are reported per block; the block is kept as text only, and reading goes on.
@@ -64,6 +64,8 @@ from .call_reading import NUMBER_START as _NUMBER_START
 from .arcs import SiemensArc, SiemensCip
 from .cycles import CYCLES
 from .fixed_point import read_fixed_point
+from .frame_suppression import SiemensSupa
+from .helix import MAX_TURNS, SiemensTurn
 from .frames import STATEMENTS as FRAME_STATEMENTS, read_frame
 from .holes import PARAMETERS as HOLES
 from .expressions import name_at, parse_expr, parse_variable, skip
@@ -74,6 +76,8 @@ SKIP_LEVELS = 9
 _OPENERS = {"IF": "ENDIF", "WHILE": "ENDWHILE", "FOR": "ENDFOR", "REPEAT": "UNTIL", "LOOP": "ENDLOOP"}
 _CLOSERS = {close: open_ for open_, close in _OPENERS.items()}
 _JUMPS = ("GOTOF", "GOTOB", "GOTOC", "GOTO")
+_WORDS_READ = frozenset(("CIP", "SUPA"))
+"""Instruction words that start a block and are read with its words (``arcs``, ``frame_suppression``)."""
 
 
 class SiemensReader(Reader):
@@ -217,10 +221,10 @@ class _State(CallReading):
                     and BlockDelete.KEY not in block.sections:
                 self.cycle(block, code, pos, end, word, once=True)
                 return
-            what = describe(word) if word != "CIP" else None
+            what = describe(word) if word not in _WORDS_READ else None
             if what is not None:
                 raise Unmodelled(what, pos)
-            if word != "CIP" and self.call(block, code, pos, end):
+            if word not in _WORDS_READ and self.call(block, code, pos, end):
                 return
         self.words(block, code, pos)
         self.returns(block, code)
@@ -421,6 +425,13 @@ class _State(CallReading):
                 letter = c
             elif up in ADDRESSES and end == pos + 1:
                 raise self.error(block.line, pos + 1, f"address {up} needs a value")
+            elif upper == "TURN" and assigned:
+                pos = self.turns(block, code, pos, eq + 1)
+                continue
+            elif upper == "SUPA" and not assigned:
+                block.add(SiemensSupa())  # frames suppressed in this block (``frame_suppression``)
+                pos = end
+                continue
             else:
                 if upper[:1] == "$":
                     raise self.error(block.line, pos + 1, f"a system variable {name} alone: set it with "
@@ -453,6 +464,19 @@ class _State(CallReading):
         if not isinstance(value, Num):
             raise Unmodelled(f"{name}= with a computed value", pos)
         setattr(cip, attr, value.value)
+        return end
+
+    def turns(self, block: Block, code: str, pos: int, start: int) -> int:
+        """``TURN=3``: a helix's additional full circles (``helix``), a whole number from 0 to 999."""
+        if SiemensTurn.KEY in block.sections:
+            raise self.error(block.line, pos + 1, "TURN appears twice in one block")
+        end, value = parse_expr(code, start)
+        if not isinstance(value, Num):
+            raise Unmodelled("TURN= with a computed value", pos)
+        if value.value != int(value.value) or not 0 <= value.value <= MAX_TURNS:
+            raise self.error(block.line, pos + 1, f"TURN={value.value:g}: a whole number of full circles from 0 "
+                                                  f"to {MAX_TURNS}")
+        block.add(SiemensTurn(int(value.value)))
         return end
 
     def opening_angle(self, block: Block, code: str, pos: int, start: int) -> int:

@@ -28,7 +28,8 @@ from postproc.context import Context
 from postproc.control import ASSIGN, CONTROL, LABEL
 from postproc.cycles.section import CannedCycle
 from postproc.dialect import Dialect
-from postproc.errors import UnsupportedError
+from postproc.compensation.tool_table import ToolTable
+from postproc.errors import PostprocError, UnsupportedError
 from postproc.event_order import after_motion
 from postproc.expr import Expr
 from postproc.ir import Block, Dwell, Motion, Section
@@ -66,6 +67,10 @@ class SiemensWriter(WordWriter):
         """The active ``MCALL`` (``cycle_writing``)."""
         self.flowing = False
         """A control statement or label was written: from there a block may run from another state."""
+        self.length_register: int | None = None
+        """The D whose length is in force (None: D0; -1: computed)."""
+        self.radius_on = False
+        """G41/G42 in force."""
 
     def normalized(self, block: Block) -> str:
         text = block.text or ""
@@ -226,7 +231,7 @@ class SiemensWriter(WordWriter):
             # G0 in force at the call: the holes are reached at rapid (the writer does not track the motion mode
             # written, so it is always stated)
             lines.append(self.code("motion", "rapid", "rapid motion", block) + "\n")
-            lines.append(call.text(lambda value: self.number(value, "Z")) + "\n")
+            lines.append(call.text(lambda value: self.number(value, "Z"), lambda value: self.number(value, "F")) + "\n")
             self.call = call
         axes: dict[str, float | Expr] = {a: float(cycle.words[a]) for a in ("X", "Y") if a in cycle.words}
         words = self.motion_words(Motion("rapid", axes), block)[1:]
@@ -288,9 +293,42 @@ class SiemensWriter(WordWriter):
         eol = block.eol or "\n"
         return text[:-1] + eol if text.endswith("\n") else text
 
+    # -- machine coordinates (``frame_suppression``) -------------------------------------------------------
+    MACHINE_MOVES: ClassVar[frozenset[str]] = frozenset(("rapid",))
+    """A block without frames moves in the mode in force; the reader reads it back in G0 only."""
+
+    def machine_coordinates_words(self, s: Any, block: Block) -> list[str]:
+        """``SUPA``: the block without any frame or offset, which is what the neutral machine coordinates are,
+        where neither a tool length nor radius compensation is in force (whether SUPA suppresses them is machine
+        data ``$MN_G53_TOOLCORR``: ``frame_suppression``)."""
+        sections = block.sections
+        motion = sections.get("Motion")
+        if not isinstance(motion, Motion) or not motion.axes:
+            return []  # no move to qualify: it does nothing
+        if motion.mode not in self.MACHINE_MOVES:
+            self.unsupported(f"a {motion.mode} move in machine coordinates (read back in G0 only)", block)
+        if self.radius_on or "CutterCompensation" in sections or "ToolLengthOffset" in sections \
+                or not self.no_length():
+            self.unsupported("a move in machine coordinates with a tool length or radius compensation in force "
+                             "(whether SUPA suppresses them is machine data $MN_G53_TOOLCORR)", block)
+        return ["SUPA"]
+
+    def no_length(self) -> bool:
+        """Whether the D in force brings no length (D0, or the set-up's tool of that number is 0 long)."""
+        register = self.length_register
+        if register is None:
+            return True
+        try:
+            return ToolTable(self.ctx.setup).length(register) == 0.0
+        except PostprocError:
+            return False
+
     # -- tool data (``postproc.isg_family.tool_data`` chose the D) ---------------------------------------
     def tool_length_offset_words(self, s: Any, block: Block) -> list[str]:
         """``D<n>`` selects cutting edge n (its length applies), ``D0`` none."""
+        self.length_register = s.register if s.mode == "positive" and isinstance(s.register, int) else None
+        if s.mode == "positive" and not isinstance(s.register, int):
+            self.length_register = -1  # computed: unknown
         if s.mode == "cancel":
             return ["D0"]
         if s.mode == "negative":
@@ -303,6 +341,7 @@ class SiemensWriter(WordWriter):
     def cutter_compensation_words(self, s: Any, block: Block) -> list[str]:
         """``G41``/``G42`` take the radius of the selected D: a D is written only where no ``D`` of the
         block's length offset selects it already."""
+        self.radius_on = s.mode != "off"
         if "ToolLengthOffset" in block.sections:
             return self._code("cutter", s.mode, f"cutter compensation {s.mode}", block)
         return super().cutter_compensation_words(s, block)

@@ -54,9 +54,10 @@ def _ops(*sections: Section) -> Callable[[type[Dialect]], list[Op]]:
 
 
 CYCLE_KINDS: dict[str, dict[str, float]] = {
-    "drill": {}, "peck_deep": {"q": 2.0}, "peck_chip": {"q": 2.0}, "bore_feed": {},
+    "drill": {}, "peck_deep": {"q": 3.5}, "peck_chip": {"q": 2.0}, "bore_feed": {},
 }
-"""Hole cycles probed against ``NATIVE_CYCLES``, with the words each needs besides X Y Z R F (cycles
+"""Hole cycles probed against ``NATIVE_CYCLES``, with the words each needs besides X Y Z R F (G83's Q makes
+whole pecks of the 7 from R to Z: SINUMERIK's CYCLE83 is read only so, ``dialects/siemens/deep_hole.py``; cycles
 with a dwell are left out: their P word is spelt in the reading dialect's unit, which a neutral
 program has none of)."""
 SPELT_ONLY = ("drill_dwell", "tap", "tap_left", "bore_stop", "bore_manual", "bore_dwell_feed")

@@ -1,0 +1,130 @@
+"""SINUMERIK ``G53``/``G153``/``SUPA`` (``dialects/siemens/frame_suppression.py``): read as a rapid move in
+machine coordinates where the tool offsets cannot matter (no length, no radius compensation: whether they stay
+is machine data), kept verbatim and refused elsewhere by name otherwise.
+
+Expected points are worked out by hand: ``TRANS X2 Y3`` moves the programmable frame, which a suppressed block
+does not apply (the set-up has no work offset: machine and work positions are the same numbers; the toolpath
+takes work offsets as settings, not as positions).
+"""
+
+from __future__ import annotations
+
+import io
+from pathlib import Path
+
+import pytest
+
+from postproc.api import translate
+from postproc.errors import Diagnostics, ErrorList
+from postproc.setup.machine_setup import MachineSetup, load_setup
+from postproc.simulate.toolpath import toolpath_events
+from postproc.simulate.verify import verify_lines
+
+TOOLS = '<Tool number="1" length="0.0" radius="0.0"/><Tool number="2" length="75.0" radius="4.0"/>'
+START = "G710 G17 G90 G54 G0 X5 Y5 Z5\nTRANS X2 Y3\n"
+
+
+def _setup(tmp_path: Path) -> MachineSetup:
+    path = tmp_path / "machine.xml"
+    path.write_text(f'<MachineSetup name="t"><Tools>{TOOLS}</Tools></MachineSetup>')
+    return load_setup(path)
+
+
+def _translate(text: str, target: str, setup: MachineSetup) -> str:
+    out = io.StringIO(newline="")
+    translate(io.StringIO(text, newline=""), out, file="in.mpf", source="siemens", target=target, setup=setup,
+              diagnostics=Diagnostics(warn_stream=io.StringIO()))
+    return out.getvalue()
+
+
+def _moves(text: str, setup: MachineSetup) -> list[tuple[str, float, float, float]]:
+    return [(e["move"], float(e["x"]), float(e["y"]), float(e["z"]))
+            for e in toolpath_events(io.StringIO(text), file="in.mpf", dialect="siemens", setup=setup) if "move" in e]
+
+
+@pytest.mark.parametrize("line", ["G53 G0 X20 Y20", "G153 X20 Y20", "SUPA G0 X20 Y20", "G0 SUPA X20 Y20",
+                                  "G0 G53 X20 Y20"])
+def test_a_block_without_frames_goes_to_the_machine_position(line: str, tmp_path: Path) -> None:
+    """X20 Y20 without TRANS X2 Y3 (with it: X22 Y23); Z stays; the frame applies again to the next block
+    (G0 X1: X 1 + 2 = 3)."""
+    setup = _setup(tmp_path)
+    moves = _moves(START + line + "\nG0 X1\nM30\n", setup)
+    assert moves[1:] == [("rapid", 20, 20, 5), ("rapid", 3, 20, 5)]
+
+
+@pytest.mark.parametrize("target", ["fanuc", "linuxcnc", "grbl"])
+def test_a_block_without_frames_translates_exactly(target: str, tmp_path: Path) -> None:
+    setup = _setup(tmp_path)
+    text = START + "T1 D1 M6\nG53 G0 Z0\nSUPA X20 Y20\nG0 X1 Y1\nM30\n"
+    out = _translate(text, target, setup)
+    assert "G53" in out, out
+    report = verify_lines(io.StringIO(text), io.StringIO(out), file_in="a", file_out="b", source="siemens",
+                          target=target, setup=setup, tolerance=0.0)
+    assert report.ok and report.max_deviation == 0, report.summary() + "\n" + out
+
+
+@pytest.mark.parametrize("lines, why", [
+    ("G1 F100\nG53 X0", "G53 (frame suppression) in G1"),
+    ("G53 G1 X0 F100", "G53 (frame suppression) in G1"),
+    ("G91 G53 Z-2", "G53 (frame suppression) in G91"),
+    ("G53 G0 A10", "G53 (frame suppression) with other axes than X, Y, Z"),
+    ("T2 D2 M6\nG53 G0 Z0", "G53 (frame suppression) with the length of D2 in force"),
+    ("G53 G0 Z0 D1", "G53 (frame suppression) selecting tool data"),
+    ("G1 G41 X10 F100\nG0\nG153 X0", "G153 (frame suppression) under radius compensation"),
+])
+def test_a_block_without_frames_whose_meaning_is_machine_data_is_kept_verbatim(lines: str, why: str,
+                                                                            tmp_path: Path) -> None:
+    setup = _setup(tmp_path)
+    text = START + lines + "\nM30\n"
+    assert _translate(text, "siemens", load_setup_plain()) == text
+    with pytest.raises(ErrorList) as caught:
+        _translate(text, "fanuc", setup)
+    assert any(why in str(e) for e in caught.value.errors), [str(e) for e in caught.value.errors]
+
+
+def load_setup_plain() -> MachineSetup:
+    """A set-up with no travel or tools to check: SINUMERIK to SINUMERIK copies the verbatim block."""
+    return load_setup(str(Path(__file__).resolve().parent / "support" / "zero_tools.xml"))
+
+
+# -- Fanuc G53 written as SUPA ---------------------------------------------------------------------------------
+
+def _from_fanuc(text: str, setup: MachineSetup) -> str:
+    out = io.StringIO(newline="")
+    translate(io.StringIO(text, newline=""), out, file="in.nc", source="fanuc", target="siemens", setup=setup,
+              diagnostics=Diagnostics(warn_stream=io.StringIO()))
+    return out.getvalue()
+
+
+def test_fanuc_g53_is_supa_where_no_tool_offset_is_in_force_and_reads_back(tmp_path: Path) -> None:
+    """SUPA leaves out every frame and offset (the neutral machine coordinates); G49 is D0 (no length), and tool
+    1 is 0 long, so D1 brings none either."""
+    setup = _setup(tmp_path)
+    text = ("G21 G90 G17 G0 X5. Y5. Z5.\nG52 X2. Y3.\nG53 G0 Z0.\nG53 X20. Y20.\nG0 X1.\nT1 M6\nG43 H1 Z10.\n"
+            "G53 Z0.\nT2 M6\nG43 H2 Z10.\nG49 G0 Z20.\nG53 Z0.\nM30\n")
+    out = _from_fanuc(text, setup)
+    assert [line for line in out.splitlines() if "SUPA" in line] == ["SUPA G0 Z0.", "SUPA G0 X20. Y20.",
+                                                                      "SUPA G0 Z0.", "SUPA G0 Z0."], out
+    report = verify_lines(io.StringIO(text), io.StringIO(out), file_in="a", file_out="b", source="fanuc",
+                          target="siemens", setup=setup, tolerance=0.0)
+    assert report.ok and report.max_deviation == 0, report.summary() + "\n" + out
+    back = _translate(out, "fanuc", setup)
+    assert back.count("G53 G00") == 4, back
+
+
+def test_fanuc_g53_in_g1_is_at_rapid_so_supa_is_written_with_g0(tmp_path: Path) -> None:
+    """Fanuc's G53 positions at rapid whatever the modal motion; the G1 in force is taken up again after it."""
+    setup = _setup(tmp_path)
+    text = "G21 G90 G17 G0 X5. Y5. Z5.\nG1 F100.\nG53 X0.\nX3.\nM30\n"
+    out = _from_fanuc(text, setup)
+    assert "SUPA G0 X0.\nG1 X3.\n" in out, out
+    report = verify_lines(io.StringIO(text), io.StringIO(out), file_in="a", file_out="b", source="fanuc",
+                          target="siemens", setup=setup, tolerance=0.0)
+    assert report.ok and report.max_deviation == 0, report.summary() + "\n" + out
+
+
+@pytest.mark.parametrize("lines", ["T2 M6\nG43 H2 Z10.\nG53 Z0.", "G41 D2 G1 X10. F100.\nG0\nG53 Z0."])
+def test_fanuc_g53_with_a_tool_offset_in_force_is_refused(lines: str, tmp_path: Path) -> None:
+    with pytest.raises(ErrorList) as caught:
+        _from_fanuc(f"G21 G90 G17 G0 X5. Y5. Z5.\n{lines}\nM30\n", _setup(tmp_path))
+    assert any("machine coordinates" in str(e) for e in caught.value.errors), [str(e) for e in caught.value.errors]
