@@ -97,6 +97,15 @@ def test_float_text_is_repr(value: float) -> None:
         assert float_text(value) == repr(value)
 
 
+def test_float_text_keeps_repr_across_its_kept_texts_filling_and_emptying() -> None:
+    """``float_text`` keeps the texts it spells (bounded, emptied when full): a value asked again, before and
+    after the store was emptied, and a value near it are still spelt as ``repr`` spells them."""
+    values = [num(k * 0.000731 - 40.0) for k in range(9000)]  # twice the store's capacity, distinct values
+    for value in values + values[::-1] + [num(v + 1e-6) for v in values[::7]]:
+        if isinstance(value, float):
+            assert float_text(value) == repr(value)
+
+
 def _json(event: dict[object, object]) -> str:
     return json.JSONEncoder(allow_nan=False).encode(event)
 
