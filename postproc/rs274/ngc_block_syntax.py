@@ -76,6 +76,10 @@ class NgcWordBlockSyntax(WordBlockSyntax):
     """A feed mode code (G93/G94/G95) sets the feed rate to zero, even one that selects the mode in force
     (LinuxCNC; checked with rs274); grbl keeps it unless it leaves inverse time."""
     M_GROUPS: ClassVar[dict[int, str]] = {}
+    SPECIAL_G: ClassVar[frozenset[str]] = frozenset()
+    """G codes (``g_key``) the dialect reads itself (``special_g_code``) before its code table does: a
+    hook called for these only, so that the other codes of every block stay in the compiled family base
+    (an interpreted override of ``_g_code`` cost LinuxCNC's reading ~8k instructions a G word)."""
     CUTTER_TAKES_LOADED_TOOL: ClassVar[bool] = False
     """G41/G42 without D takes the radius of the tool in the spindle (LinuxCNC); the reading fills in its
     number as the register, or refuses the block where it is not known. False: the register stays absent."""
@@ -121,15 +125,16 @@ class NgcWordBlockSyntax(WordBlockSyntax):
             self._native(block, ctx, natives, raw)
             return
         values = block.values
+        real, integer, dialect = self.REAL_LETTERS, self.INTEGER_LETTERS, self.DIALECT  # a plugin's: read once
         if exprs:
             for up, num in raw.items():
                 if up not in values:
-                    values[up] = self._value(block, ctx, up, num)
-                elif up not in self.REAL_LETTERS and up not in self.INTEGER_LETTERS and up != "S":
-                    self._value(block, ctx, up, num)  # an address the dialect does not use
+                    values[up] = _word_value(block, ctx, up, num, real, integer, dialect)
+                elif up not in real and up not in integer and up != "S":
+                    _word_value(block, ctx, up, num, real, integer, dialect)  # an address the dialect does not use
         else:
             for up, num in raw.items():
-                values[up] = self._value(block, ctx, up, num)
+                values[up] = _word_value(block, ctx, up, num, real, integer, dialect)
         if data_setting:
             used = {"N"}
             if self._data_setting(block, ctx, codes, values, used):
@@ -233,28 +238,13 @@ class NgcWordBlockSyntax(WordBlockSyntax):
                 return True
         return False
 
-    def _value(self, block: Block, ctx: Context, up: str, num: str) -> float | int:
-        if up in self.REAL_LETTERS:
-            return float(num)
-        if up in self.INTEGER_LETTERS:
-            if "." in num:
-                raise ParseError(f"address {up} takes a whole number ({up}{num})",
-                                 ctx.at(block, ctx.column_of(block, up)))
-            value = int(num)
-            if value < 0 and up in _NOT_NEGATIVE:
-                raise ParseError(f"{up}{num}: {_NOT_NEGATIVE[up]} cannot be negative",
-                                 ctx.at(block, ctx.column_of(block, up)))
-            return value
-        if up == "S":
-            return float(num) if "." in num else int(num)
-        raise ParseError(f"address {up} is not used by the {self.DIALECT} dialect",
-                         ctx.at(block, ctx.column_of(block, up)))
-
     def _g_code(self, ctx: Context, block: Block, num: str, codes: dict[str, Any], natives: list[str],
                 key: str | None = None) -> None:
         """Read G``num`` (``key``: its ``g_key`` when the caller has it) into ``codes`` or ``natives``."""
         if key is None:
             key = g_key(num)
+        if key in self.SPECIAL_G and self.special_g_code(ctx, block, num, key, natives):
+            return
         refused = self.CODES.refused_g.get(key)
         if refused is not None:
             raise ParseError(refused, ctx.at(block, col_of_word(block, "G", num)))
@@ -277,6 +267,11 @@ class NgcWordBlockSyntax(WordBlockSyntax):
             raise ParseError(f"G codes G{other[3]} and G{num} are both in one modal group",
                              ctx.at(block, col_of_word(block, "G", num)))
         codes[group] = (group, entry[1], entry[2], num)
+
+    def special_g_code(self, ctx: Context, block: Block, num: str, key: str, natives: list[str]) -> bool:
+        """Read G``num`` (``key``, one of ``SPECIAL_G``) the dialect's own way: True when read, False to
+        leave it to the code table. The family reads none."""
+        return False
 
     def _path_tolerance(self, codes: dict[str, Any], natives: list[str], raw: dict[str, str]) -> None:
         """``G64 P Q`` (blending with a tolerance) has no neutral meaning: keep it verbatim. A method, not a
@@ -377,6 +372,28 @@ class NgcWordBlockSyntax(WordBlockSyntax):
         angle = values.get("R", ctx.setup.cycles.orient_angle)
         block.add(SpindleOrientation(angle if isinstance(angle, Expr) else float(angle)))
         used.update("RQP")
+
+
+def _word_value(block: Block, ctx: Context, up: str, num: str, real: frozenset[str], integer: frozenset[str],
+                dialect: str) -> float | int:
+    """A word's number as the dialect reads its address: ``real`` letters as written, ``integer`` ones whole
+    (and not negative where rs274 refuses it), S either. A function, not a method: compiled, a method of a
+    class plugins subclass is called through Python for a plugin's instance (~1.4k instructions a word)."""
+    if up in real:
+        return float(num)
+    if up in integer:
+        if "." in num:
+            raise ParseError(f"address {up} takes a whole number ({up}{num})",
+                             ctx.at(block, ctx.column_of(block, up)))
+        value = int(num)
+        if value < 0 and up in _NOT_NEGATIVE:
+            raise ParseError(f"{up}{num}: {_NOT_NEGATIVE[up]} cannot be negative",
+                             ctx.at(block, ctx.column_of(block, up)))
+        return value
+    if up == "S":
+        return float(num) if "." in num else int(num)
+    raise ParseError(f"address {up} is not used by the {dialect} dialect",
+                     ctx.at(block, ctx.column_of(block, up)))
 
 
 def _spindle_tool(ctx: Context) -> Any:

@@ -87,19 +87,20 @@ class NgcBlockSyntax(NgcWordBlockSyntax):
         block.add(DynamicCutterCompensation(side, float(diameter),
                                             None if orientation is None else int(orientation)))
 
-    def _g_code(self, ctx: Context, block: Block, num: str, codes: dict[str, Any], natives: list[str],
-                key: str | None = None) -> None:
+    SPECIAL_G: ClassVar[frozenset[str]] = frozenset(lathe.MODES) | lathe.LATHE_ONLY | {"76"}
+    """G7/G8, G33, G96/G97 and G76: read here (``special_g_code``) before the code table."""
+
+    def special_g_code(self, ctx: Context, block: Block, num: str, key: str, natives: list[str]) -> bool:
         """G7/G8 are read against how X reads (``postproc.rs274.ngc_lathe.read_x_mode``: a lathe's
         ``xProgramming``, a mill's radius), G33 and G96/G97 into lathe sections, G76 into its moves
         (``threading``) on a lathe set-up; on a mill those stay verbatim (``toolpath`` and ``verify`` refuse them)."""
-        code = g_key(num) if key is None else key
-        if code in lathe.MODES:
+        if key in lathe.MODES:
             lathe.read_x_mode(block, ctx, num)
-            return
-        if not ctx.lathe and (code in lathe.LATHE_ONLY or code == "76"):
-            natives.append(code)  # G33, G76, G96/G97 on a mill: verbatim, as before the lathe reading
-            return
-        super()._g_code(ctx, block, num, codes, natives, key)
+            return True
+        if not ctx.lathe and (key in lathe.LATHE_ONLY or key == "76"):
+            natives.append(key)  # G33, G76, G96/G97 on a mill: verbatim, as before the lathe reading
+            return True
+        return False
 
     def _check_cycle_words(self, block: Block, ctx: Context, values: dict[str, Any], cycle_block: bool) -> None:
         """A lathe's G76 takes L (its tapers, ``threading``), no repeat count."""
