@@ -76,6 +76,15 @@ class NgcWordBlockSyntax(WordBlockSyntax):
     """A feed mode code (G93/G94/G95) sets the feed rate to zero, even one that selects the mode in force
     (LinuxCNC; checked with rs274); grbl keeps it unless it leaves inverse time."""
     M_GROUPS: ClassVar[dict[int, str]] = {}
+    OWN_CODES: ClassVar[frozenset[str]] = frozenset()
+    """The dialect reads a block further itself (``before_sections``, ``after_sections``) when one of its G codes
+    has its modal group, kind or argument here, ``OWN_STATE``, or ``OWN_MOTION``; every other block stays in the
+    compiled family code (an interpreted override of ``g_sections`` cost LinuxCNC's reading ~8k instructions
+    a block)."""
+    OWN_STATE: ClassVar[frozenset[str]] = frozenset()
+    """... or while one of these ``ctx.state.extra`` keys is set ..."""
+    OWN_MOTION: ClassVar[frozenset[str]] = frozenset()
+    """... or when its motion mode (after the family's sections) is one of these (``after_sections`` only)."""
     SPECIAL_G: ClassVar[frozenset[str]] = frozenset()
     """G codes (``g_key``) the dialect reads itself (``special_g_code``) before its code table does: a
     hook called for these only, so that the other codes of every block stay in the compiled family base
@@ -267,6 +276,46 @@ class NgcWordBlockSyntax(WordBlockSyntax):
             raise ParseError(f"G codes G{other[3]} and G{num} are both in one modal group",
                              ctx.at(block, col_of_word(block, "G", num)))
         codes[group] = (group, entry[1], entry[2], num)
+
+    def g_sections(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],
+                   used: set[str], cycle_block: bool) -> None:
+        """The family's sections, with the dialect's own reading around them for the blocks ``OWN_CODES``,
+        ``OWN_STATE`` and ``OWN_MOTION`` select."""
+        own = self._owns(ctx, codes)
+        kept = self.before_sections(block, ctx, codes, values, used) if own else None
+        super().g_sections(block, ctx, codes, values, used, cycle_block)
+        if not own:
+            motions = self.OWN_MOTION
+            if motions:
+                motion = block.sections.get("Motion")
+                own = motion is not None and motion.mode in motions  # type: ignore[attr-defined]
+        if own:
+            self.after_sections(block, ctx, codes, values, used, kept)
+
+    def _owns(self, ctx: Context, codes: dict[str, Any]) -> bool:
+        """A G code of the block, or the state, selects the dialect's own reading (``OWN_CODES``, ``OWN_STATE``)."""
+        own = self.OWN_CODES
+        if own:
+            for group, kind, arg, _ in codes.values():
+                if group in own or kind in own or isinstance(arg, str) and arg in own:
+                    return True
+        states = self.OWN_STATE
+        if states:
+            extra = ctx.state.extra
+            for key in states:
+                if key in extra:
+                    return True
+        return False
+
+    def before_sections(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],
+                        used: set[str]) -> dict[str, Any] | None:
+        """Read what the dialect reads before the family's sections; what it returns goes to ``after_sections``."""
+        return None
+
+    def after_sections(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],
+                       used: set[str], kept: dict[str, Any] | None) -> None:
+        """Read what the dialect reads after the family's sections (``kept``: ``before_sections``' answer, None
+        where it did not run)."""
 
     def special_g_code(self, ctx: Context, block: Block, num: str, key: str, natives: list[str]) -> bool:
         """Read G``num`` (``key``, one of ``SPECIAL_G``) the dialect's own way: True when read, False to

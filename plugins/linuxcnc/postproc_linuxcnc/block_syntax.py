@@ -108,8 +108,14 @@ class NgcBlockSyntax(NgcWordBlockSyntax):
             return
         super()._check_cycle_words(block, ctx, values, cycle_block)
 
-    def g_sections(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],
-                   used: set[str], cycle_block: bool) -> None:
+    OWN_CODES: ClassVar[frozenset[str]] = frozenset(("spindle_mode", THREAD_CYCLE, arc_centres.GROUP, "path"))
+    """G96/G97, G76, G90.1/G91.1 and G61/G64: read around the family's sections (``before_sections``,
+    ``after_sections``)."""
+    OWN_STATE: ClassVar[frozenset[str]] = frozenset((arc_centres.STATE_KEY,))
+    OWN_MOTION: ClassVar[frozenset[str]] = frozenset(("thread", RIGID_TAP, THREAD_CYCLE))
+
+    def before_sections(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],
+                        used: set[str]) -> dict[str, Any] | None:
         spring: dict[str, Any] = {}
         for group, (_, kind, arg, num) in list(codes.items()):
             if kind == "spindle_mode":  # G96 S D / G97 (``lathe``)
@@ -117,8 +123,12 @@ class NgcBlockSyntax(NgcWordBlockSyntax):
                 lathe.read_spindle_mode(block, ctx, str(arg), num, values, used, RS274_SAID)
             elif arg == THREAD_CYCLE:  # G76: H spring passes, E/L its tapers (``threading``)
                 spring.update((letter, values.pop(letter)) for letter in ("H", "E", "L") if letter in values)
-        super().g_sections(block, ctx, codes, values, used, cycle_block)
-        values.update(spring)
+        return spring
+
+    def after_sections(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],
+                       used: set[str], kept: dict[str, Any] | None) -> None:
+        if kept:
+            values.update(kept)
         if arc_centres.GROUP in codes or arc_centres.STATE_KEY in ctx.state.extra:
             arc_centres.apply_mode(block, ctx, codes)
         sections = block.sections
