@@ -127,8 +127,12 @@ class NgcWordBlockSyntax(WordBlockSyntax):
                 raise ParseError(f"address {up} appears twice in one block", ctx.at(block, second_col(block, up)))
             else:
                 raw[up] = num
-        self._check_m_groups(block, ctx, mcodes)
-        self._path_tolerance(codes, natives, raw)
+        # each check below is called only where it can find something: compiled, a method call on a plugin's
+        # instance goes through Python (~1.2k instructions), and a plain block needs none of them
+        if len(mcodes) > 1:
+            self._check_m_groups(block, ctx, mcodes)
+        if "15" in codes:
+            self._path_tolerance(codes, natives, raw)
         data_setting = natives == [DATA_KEY] and bool(self.DATA_TABLES)
         if natives and not data_setting:
             self._native(block, ctx, natives, raw)
@@ -155,7 +159,8 @@ class NgcWordBlockSyntax(WordBlockSyntax):
         extra = state.extra
         cycle_block = "09" in codes and codes["09"][1] == "cycle" or (
             state.cycle is not None and "01" not in codes and "09" not in codes)
-        self._check_cycle_words(block, ctx, values, cycle_block)
+        if cycle_block or "L" in values:
+            self._check_cycle_words(block, ctx, values, cycle_block)
         if any(self.CODES.m.get(number, ("", None))[0] == "tool_change" for number, _ in mcodes):
             selected = values["T"] if "T" in values else state.tool
             extra[_LOADED_KEY] = selected if isinstance(selected, (int, Expr)) else None  # M6 runs before G43
@@ -174,7 +179,8 @@ class NgcWordBlockSyntax(WordBlockSyntax):
                 raise ProgramError(f"axis words with no motion mode in force ({self.spell('cycle_cancel')} cancels it: "
                                    f"program {self.spell('motion', 'rapid')} or {self.spell('motion', 'linear')})",
                                    ctx.at(block, ctx.column_of(block, axis)))
-        self._check_feed_mode_code(block, ctx, codes, values)
+        if "01" in codes:
+            self._check_feed_mode_code(block, ctx, codes, values)
         used = {"N"}
         if cycle_block:
             used.add("L")
@@ -208,6 +214,7 @@ class NgcWordBlockSyntax(WordBlockSyntax):
                                  ctx.at(block, col))
 
     def _check_m_groups(self, block: Block, ctx: Context, mcodes: list[tuple[int, str]]) -> None:
+        """Two M codes of one modal group (``M_GROUPS``) in a block are an error (called for two or more)."""
         groups = self.M_GROUPS
         if len(mcodes) < 2 or not groups:
             return
@@ -225,7 +232,7 @@ class NgcWordBlockSyntax(WordBlockSyntax):
     def _check_feed_mode_code(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any]) -> None:
         """A feed motion code needs a feed rate in force even with no axis words: rs274 refuses a bare
         ``G1`` ("Cannot do g1 with zero feed rate"), grbl too (error 22). A program that computes is
-        left to the run, where the order of execution is known."""
+        left to the run, where the order of execution is known. Called for a block with a motion code."""
         motion = codes.get("01")
         if motion is None or motion[2] not in ("linear", "cw", "ccw") or ctx.state.symbolic:
             return
@@ -325,7 +332,7 @@ class NgcWordBlockSyntax(WordBlockSyntax):
     def _path_tolerance(self, codes: dict[str, Any], natives: list[str], raw: dict[str, str]) -> None:
         """``G64 P Q`` (blending with a tolerance) has no neutral meaning: keep it verbatim. A method, not a
         static method: compiled, a static method is called directly and a plugin's override (LinuxCNC reads
-        the tolerances) is never reached."""
+        the tolerances) is never reached. Called for a block with a path control code (group 15)."""
         path = codes.get("15")
         if path is not None and path[2] == "cutting" and ("P" in raw or "Q" in raw):
             natives.append("64")
@@ -341,7 +348,8 @@ class NgcWordBlockSyntax(WordBlockSyntax):
                 values[up] = float(num) if "." in num else int(num)
 
     def _check_cycle_words(self, block: Block, ctx: Context, values: dict[str, Any], cycle_block: bool) -> None:
-        """L counts repeats only in a cycle block; K is refused there, and so is L0."""
+        """L counts repeats only in a cycle block; K is refused there, and so is L0. Called for a cycle block
+        and for a block with L."""
         if not cycle_block:
             if "L" in values:
                 raise ProgramError("L (repeat count) outside a canned cycle",
