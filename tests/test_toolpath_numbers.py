@@ -97,15 +97,6 @@ def test_float_text_is_repr(value: float) -> None:
         assert float_text(value) == repr(value)
 
 
-def test_float_text_keeps_repr_across_its_kept_texts_filling_and_emptying() -> None:
-    """``float_text`` keeps the texts it spells (bounded, emptied when full): a value asked again, before and
-    after the store was emptied, and a value near it are still spelt as ``repr`` spells them."""
-    values = [num(k * 0.000731 - 40.0) for k in range(9000)]  # twice the store's capacity, distinct values
-    for value in values + values[::-1] + [num(v + 1e-6) for v in values[::7]]:
-        if isinstance(value, float):
-            assert float_text(value) == repr(value)
-
-
 def _json(event: dict[object, object]) -> str:
     return json.JSONEncoder(allow_nan=False).encode(event)
 
@@ -128,6 +119,20 @@ MOVES = st.fixed_dictionaries(
 @settings(max_examples=1000, deadline=None)
 @given(event=MOVES)
 def test_event_text_writes_moves_as_json_does(event: dict[object, object]) -> None:
+    assert event_text(event, ENCODER) == _json(event)
+
+
+@settings(max_examples=300, deadline=None)
+@given(event=MOVES, shared=st.lists(st.sampled_from("xyz"), max_size=3))
+def test_event_text_writes_a_controlled_point_sharing_the_programmed_floats_as_json_does(
+        event: dict[str, object], shared: list[str]) -> None:
+    """The controlled point holds the very float objects of the programmed one on some axes (as the simulator
+    makes it: ``Moves._offset_line``), which ``event_text`` writes once and repeats."""
+    controlled = {k: event[k] for k in "xyz"}
+    for k in "xyz":
+        if k not in shared and isinstance(event[k], float):
+            controlled[k] = float(event[k]) + 0.5  # type: ignore[arg-type]
+    event["controlled"] = controlled
     assert event_text(event, ENCODER) == _json(event)
 
 

@@ -32,42 +32,24 @@ _KEYS: Final[dict[str, str]] = {}
 _WORDS: Final[dict[str, str]] = {}
 """Short string values (``"feed"``, ``"XY"``, ``"cw"``) -> their text; at most ``_MOST_WORDS`` kept."""
 _MOST_WORDS: Final = 512
-_FLOATS: Final[dict[float, str]] = {}
-"""Float -> its text, for the floats ``float_text`` spells by integer arithmetic; at most ``_MOST_FLOATS``."""
-_MOST_FLOATS: Final = 4096
-_ZEROS: Final = "00000"
-"""Zeros between the point and the digits of a value below 0.1 (at most five: below 1e-4 is ``repr``'s)."""
 assert _PLACES == PLACES and _UNITS == 10 ** PLACES == _SCALE
 # Final: compiled, a constant is a C constant, not a look-up in the module's dictionary (17 a float)
 
 
 def float_text(value: float) -> str:
-    """``float.__repr__(value)``; ValueError for a value that is not finite (json's ``allow_nan=False``).
-
-    The texts of the integer path are kept (``_FLOATS``, emptied when full): a move's controlled point
-    repeats the programmed one on the axes its offset does not move, and a feed or a depth is written
-    again and again (a fanuc toolpath finds about half its floats there)."""
-    text = _FLOATS.get(value)
-    if text is not None:
-        return text
+    """``float.__repr__(value)``; ValueError for a value that is not finite (json's ``allow_nan=False``)."""
     if _SMALLEST <= value < _LARGEST or -_LARGEST < value <= -_SMALLEST:
         units = int(value * _SCALE + (0.5 if value > 0.0 else -0.5))
-        if units % _UNITS != 0 and units / _SCALE == value:
-            magnitude = -units if units < 0 else units
-            places = _PLACES
-            while magnitude % 10 == 0:  # not 0: the fraction is not
-                magnitude //= 10
-                places -= 1
-            digits = str(magnitude)  # one conversion: the point goes in by slicing
-            cut = len(digits) - places
-            if cut > 0:
-                text = f"{'-' if units < 0 else ''}{digits[:cut]}.{digits[cut:]}"
-            else:
-                text = f"{'-' if units < 0 else ''}0.{_ZEROS[:-cut]}{digits}"
-            if len(_FLOATS) >= _MOST_FLOATS:
-                _FLOATS.clear()
-            _FLOATS[value] = text
-            return text
+        magnitude = -units if units < 0 else units
+        whole = magnitude // _UNITS
+        fraction = magnitude - whole * _UNITS
+        if fraction != 0 and units / _SCALE == value:
+            digits = str(fraction + _UNITS)  # "1" and the six digits, leading zeros kept
+            end = _PLACES + 1
+            while fraction % 10 == 0:
+                fraction //= 10
+                end -= 1
+            return f"{'-' if units < 0 else ''}{whole}.{digits[1:end]}"
     if value - value != 0.0:  # inf - inf and nan - nan are nan
         raise ValueError(f"Out of range float values are not JSON compliant: {value!r}")
     return float.__repr__(value)
@@ -107,16 +89,32 @@ def _value_text(value: object) -> str | None:
     return None
 
 
-def _dict_text(items: dict[Any, Any]) -> str | None:
+def _dict_text(items: dict[Any, Any], written: list[tuple[object, str]] | None = None) -> str | None:
+    """``items`` as JSON. ``written``: the floats of the enclosing event with their texts; a value that is
+    the same object is not spelt again (a controlled point shares the programmed point's floats on the axes
+    its offset does not move: two of a move's six floats under a tool length)."""
     if not items:
         return "{}"
     parts: list[str] = ["{"]  # joined once: no string made per item
+    floats: list[tuple[object, str]] = []
     for key, value in items.items():
         if not isinstance(key, str):
             return None
-        text = _value_text(value)
+        text: str | None = None
+        if written is not None:
+            for prior, prior_text in written:
+                if prior is value:
+                    text = prior_text
+                    break
         if text is None:
-            return None
+            if isinstance(value, dict):
+                text = _dict_text(value, floats)
+            else:
+                text = _value_text(value)
+                if text is not None and written is None and isinstance(value, float):
+                    floats.append((value, text))
+            if text is None:
+                return None
         if len(parts) > 1:
             parts.append(", ")
         parts.append(_key_text(key))
