@@ -8,13 +8,15 @@
 # --program cycles measures per hole instead: a 20k-hole minus a 10k-hole run of the drilling rows
 # (generate.py --kind cycles), divided by 10k holes.
 # POSTPROC_PURE=1 measures the pure-Python fallback (postproc --version says which build runs).
+# CALLGRIND_SMALL/CALLGRIND_LARGE (thousands of blocks, default 20 and 40) measure smaller CAM programs: a
+# verify row on a busy machine takes most of an hour at 20k/40k under valgrind.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 program=cam
 if [ "${1:-}" = "--program" ]; then program=$2; shift 2; fi
 src=$1 tgt=$2 norm=$3 label=${4:-$1-$2-$3}
 case $program in
-  cam) small=20 large=40 unit=block ;;
+  cam) small=${CALLGRIND_SMALL:-20} large=${CALLGRIND_LARGE:-40} unit=block ;;
   cycles) small=10 large=20 unit=hole label=cycles-$label ;;
   *) echo "unknown program $program (cam or cycles)" >&2; exit 2 ;;
 esac

@@ -122,6 +122,20 @@ def test_event_text_writes_moves_as_json_does(event: dict[object, object]) -> No
     assert event_text(event, ENCODER) == _json(event)
 
 
+@settings(max_examples=300, deadline=None)
+@given(event=MOVES, shared=st.lists(st.sampled_from("xyz"), max_size=3))
+def test_event_text_writes_a_controlled_point_sharing_the_programmed_floats_as_json_does(
+        event: dict[str, object], shared: list[str]) -> None:
+    """The controlled point holds the very float objects of the programmed one on some axes (as the simulator
+    makes it: ``Moves._offset_line``), which ``event_text`` writes once and repeats."""
+    controlled = {k: event[k] for k in "xyz"}
+    for k in "xyz":
+        if k not in shared and isinstance(event[k], float):
+            controlled[k] = float(event[k]) + 0.5  # type: ignore[arg-type]
+    event["controlled"] = controlled
+    assert event_text(event, ENCODER) == _json(event)
+
+
 @pytest.mark.parametrize("bad", [math.inf, -math.inf, math.nan])
 def test_event_text_refuses_what_is_not_finite(bad: float) -> None:
     with pytest.raises(ValueError):

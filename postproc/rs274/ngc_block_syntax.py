@@ -80,6 +80,19 @@ class NgcWordBlockSyntax(WordBlockSyntax):
     """A feed mode code (G93/G94/G95) sets the feed rate to zero, even one that selects the mode in force
     (LinuxCNC; checked with rs274); grbl keeps it unless it leaves inverse time."""
     M_GROUPS: ClassVar[dict[int, str]] = {}
+    OWN_CODES: ClassVar[frozenset[str]] = frozenset()
+    """The dialect reads a block further itself (``before_sections``, ``after_sections``) when one of its G codes
+    has its modal group, kind or argument here, ``OWN_STATE``, or ``OWN_MOTION``; every other block stays in the
+    compiled family code (an interpreted override of ``g_sections`` cost LinuxCNC's reading ~8k instructions
+    a block)."""
+    OWN_STATE: ClassVar[frozenset[str]] = frozenset()
+    """... or while one of these ``ctx.state.extra`` keys is set ..."""
+    OWN_MOTION: ClassVar[frozenset[str]] = frozenset()
+    """... or when its motion mode (after the family's sections) is one of these (``after_sections`` only)."""
+    SPECIAL_G: ClassVar[frozenset[str]] = frozenset()
+    """G codes (``g_key``) the dialect reads itself (``special_g_code``) before its code table does: a
+    hook called for these only, so that the other codes of every block stay in the compiled family base
+    (an interpreted override of ``_g_code`` cost LinuxCNC's reading ~8k instructions a G word)."""
     CUTTER_TAKES_LOADED_TOOL: ClassVar[bool] = False
     """G41/G42 without D takes the radius of the tool in the spindle (LinuxCNC); the reading fills in its
     number as the register, or refuses the block where it is not known. False: the register stays absent."""
@@ -118,22 +131,27 @@ class NgcWordBlockSyntax(WordBlockSyntax):
                 raise ParseError(f"address {up} appears twice in one block", ctx.at(block, second_col(block, up)))
             else:
                 raw[up] = num
-        self._check_m_groups(block, ctx, mcodes)
-        self._path_tolerance(codes, natives, raw)
+        # each check below is called only where it can find something: compiled, a method call on a plugin's
+        # instance goes through Python (~1.2k instructions), and a plain block needs none of them
+        if len(mcodes) > 1:
+            self._check_m_groups(block, ctx, mcodes)
+        if "15" in codes:
+            self._path_tolerance(codes, natives, raw)
         data_setting = natives == [DATA_KEY] and bool(self.DATA_TABLES)
         if natives and not data_setting:
             self._native(block, ctx, natives, raw)
             return
         values = block.values
+        real, integer, dialect = self.REAL_LETTERS, self.INTEGER_LETTERS, self.DIALECT  # a plugin's: read once
         if exprs:
             for up, num in raw.items():
                 if up not in values:
-                    values[up] = self._value(block, ctx, up, num)
-                elif up not in self.REAL_LETTERS and up not in self.INTEGER_LETTERS and up != "S":
-                    self._value(block, ctx, up, num)  # an address the dialect does not use
+                    values[up] = _word_value(block, ctx, up, num, real, integer, dialect)
+                elif up not in real and up not in integer and up != "S":
+                    _word_value(block, ctx, up, num, real, integer, dialect)  # an address the dialect does not use
         else:
             for up, num in raw.items():
-                values[up] = self._value(block, ctx, up, num)
+                values[up] = _word_value(block, ctx, up, num, real, integer, dialect)
         if data_setting:
             used = {"N"}
             if self._data_setting(block, ctx, codes, values, used):
@@ -145,7 +163,8 @@ class NgcWordBlockSyntax(WordBlockSyntax):
         extra = state.extra
         cycle_block = "09" in codes and codes["09"][1] == "cycle" or (
             state.cycle is not None and "01" not in codes and "09" not in codes)
-        self._check_cycle_words(block, ctx, values, cycle_block)
+        if cycle_block or "L" in values:
+            self._check_cycle_words(block, ctx, values, cycle_block)
         home = codes.get("00")
         if home is not None and home[1] == "home" and not any(k in values for k in _RETURN_AXES):
             # [V] rs274: a bare G28 prints a traverse of every axis to the stored G28 position (0 0 0 in a fresh
@@ -171,7 +190,8 @@ class NgcWordBlockSyntax(WordBlockSyntax):
                 raise ProgramError(f"axis words with no motion mode in force ({self.spell('cycle_cancel')} cancels it: "
                                    f"program {self.spell('motion', 'rapid')} or {self.spell('motion', 'linear')})",
                                    ctx.at(block, ctx.column_of(block, axis)))
-        self._check_feed_mode_code(block, ctx, codes, values)
+        if "01" in codes:
+            self._check_feed_mode_code(block, ctx, codes, values)
         used = {"N"}
         if cycle_block:
             used.add("L")
@@ -205,6 +225,7 @@ class NgcWordBlockSyntax(WordBlockSyntax):
                                  ctx.at(block, col))
 
     def _check_m_groups(self, block: Block, ctx: Context, mcodes: list[tuple[int, str]]) -> None:
+        """Two M codes of one modal group (``M_GROUPS``) in a block are an error (called for two or more)."""
         groups = self.M_GROUPS
         if len(mcodes) < 2 or not groups:
             return
@@ -222,7 +243,7 @@ class NgcWordBlockSyntax(WordBlockSyntax):
     def _check_feed_mode_code(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any]) -> None:
         """A feed motion code needs a feed rate in force even with no axis words: rs274 refuses a bare
         ``G1`` ("Cannot do g1 with zero feed rate"), grbl too (error 22). A program that computes is
-        left to the run, where the order of execution is known."""
+        left to the run, where the order of execution is known. Called for a block with a motion code."""
         motion = codes.get("01")
         if motion is None or motion[2] not in ("linear", "cw", "ccw") or ctx.state.symbolic:
             return
@@ -244,28 +265,13 @@ class NgcWordBlockSyntax(WordBlockSyntax):
                 return True
         return False
 
-    def _value(self, block: Block, ctx: Context, up: str, num: str) -> float | int:
-        if up in self.REAL_LETTERS:
-            return float(num)
-        if up in self.INTEGER_LETTERS:
-            if "." in num:
-                raise ParseError(f"address {up} takes a whole number ({up}{num})",
-                                 ctx.at(block, ctx.column_of(block, up)))
-            value = int(num)
-            if value < 0 and up in _NOT_NEGATIVE:
-                raise ParseError(f"{up}{num}: {_NOT_NEGATIVE[up]} cannot be negative",
-                                 ctx.at(block, ctx.column_of(block, up)))
-            return value
-        if up == "S":
-            return float(num) if "." in num else int(num)
-        raise ParseError(f"address {up} is not used by the {self.DIALECT} dialect",
-                         ctx.at(block, ctx.column_of(block, up)))
-
     def _g_code(self, ctx: Context, block: Block, num: str, codes: dict[str, Any], natives: list[str],
                 key: str | None = None) -> None:
         """Read G``num`` (``key``: its ``g_key`` when the caller has it) into ``codes`` or ``natives``."""
         if key is None:
             key = g_key(num)
+        if key in self.SPECIAL_G and self.special_g_code(ctx, block, num, key, natives):
+            return
         refused = self.CODES.refused_g.get(key)
         if refused is not None:
             raise ParseError(refused, ctx.at(block, col_of_word(block, "G", num)))
@@ -289,10 +295,55 @@ class NgcWordBlockSyntax(WordBlockSyntax):
                              ctx.at(block, col_of_word(block, "G", num)))
         codes[group] = (group, entry[1], entry[2], num)
 
+    def g_sections(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],
+                   used: set[str], cycle_block: bool) -> None:
+        """The family's sections, with the dialect's own reading around them for the blocks ``OWN_CODES``,
+        ``OWN_STATE`` and ``OWN_MOTION`` select."""
+        own = self._owns(ctx, codes)
+        kept = self.before_sections(block, ctx, codes, values, used) if own else None
+        super().g_sections(block, ctx, codes, values, used, cycle_block)
+        if not own:
+            motions = self.OWN_MOTION
+            if motions:
+                motion = block.sections.get("Motion")
+                own = motion is not None and motion.mode in motions  # type: ignore[attr-defined]
+        if own:
+            self.after_sections(block, ctx, codes, values, used, kept)
+
+    def _owns(self, ctx: Context, codes: dict[str, Any]) -> bool:
+        """A G code of the block, or the state, selects the dialect's own reading (``OWN_CODES``, ``OWN_STATE``)."""
+        own = self.OWN_CODES
+        if own:
+            for group, kind, arg, _ in codes.values():
+                if group in own or kind in own or isinstance(arg, str) and arg in own:
+                    return True
+        states = self.OWN_STATE
+        if states:
+            extra = ctx.state.extra
+            for key in states:
+                if key in extra:
+                    return True
+        return False
+
+    def before_sections(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],
+                        used: set[str]) -> dict[str, Any] | None:
+        """Read what the dialect reads before the family's sections; what it returns goes to ``after_sections``."""
+        return None
+
+    def after_sections(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],
+                       used: set[str], kept: dict[str, Any] | None) -> None:
+        """Read what the dialect reads after the family's sections (``kept``: ``before_sections``' answer, None
+        where it did not run)."""
+
+    def special_g_code(self, ctx: Context, block: Block, num: str, key: str, natives: list[str]) -> bool:
+        """Read G``num`` (``key``, one of ``SPECIAL_G``) the dialect's own way: True when read, False to
+        leave it to the code table. The family reads none."""
+        return False
+
     def _path_tolerance(self, codes: dict[str, Any], natives: list[str], raw: dict[str, str]) -> None:
         """``G64 P Q`` (blending with a tolerance) has no neutral meaning: keep it verbatim. A method, not a
         static method: compiled, a static method is called directly and a plugin's override (LinuxCNC reads
-        the tolerances) is never reached."""
+        the tolerances) is never reached. Called for a block with a path control code (group 15)."""
         path = codes.get("15")
         if path is not None and path[2] == "cutting" and ("P" in raw or "Q" in raw):
             natives.append("64")
@@ -308,7 +359,8 @@ class NgcWordBlockSyntax(WordBlockSyntax):
                 values[up] = float(num) if "." in num else int(num)
 
     def _check_cycle_words(self, block: Block, ctx: Context, values: dict[str, Any], cycle_block: bool) -> None:
-        """L counts repeats only in a cycle block; K is refused there, and so is L0."""
+        """L counts repeats only in a cycle block; K is refused there, and so is L0. Called for a cycle block
+        and for a block with L."""
         if not cycle_block:
             if "L" in values:
                 raise ProgramError("L (repeat count) outside a canned cycle",
@@ -388,6 +440,28 @@ class NgcWordBlockSyntax(WordBlockSyntax):
         angle = values.get("R", ctx.setup.cycles.orient_angle)
         block.add(SpindleOrientation(angle if isinstance(angle, Expr) else float(angle)))
         used.update("RQP")
+
+
+def _word_value(block: Block, ctx: Context, up: str, num: str, real: frozenset[str], integer: frozenset[str],
+                dialect: str) -> float | int:
+    """A word's number as the dialect reads its address: ``real`` letters as written, ``integer`` ones whole
+    (and not negative where rs274 refuses it), S either. A function, not a method: compiled, a method of a
+    class plugins subclass is called through Python for a plugin's instance (~1.4k instructions a word)."""
+    if up in real:
+        return float(num)
+    if up in integer:
+        if "." in num:
+            raise ParseError(f"address {up} takes a whole number ({up}{num})",
+                             ctx.at(block, ctx.column_of(block, up)))
+        value = int(num)
+        if value < 0 and up in _NOT_NEGATIVE:
+            raise ParseError(f"{up}{num}: {_NOT_NEGATIVE[up]} cannot be negative",
+                             ctx.at(block, ctx.column_of(block, up)))
+        return value
+    if up == "S":
+        return float(num) if "." in num else int(num)
+    raise ParseError(f"address {up} is not used by the {dialect} dialect",
+                     ctx.at(block, ctx.column_of(block, up)))
 
 
 def _spindle_tool(ctx: Context) -> Any:

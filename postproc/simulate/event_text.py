@@ -89,16 +89,32 @@ def _value_text(value: object) -> str | None:
     return None
 
 
-def _dict_text(items: dict[Any, Any]) -> str | None:
+def _dict_text(items: dict[Any, Any], written: list[tuple[object, str]] | None = None) -> str | None:
+    """``items`` as JSON. ``written``: the floats of the enclosing event with their texts; a value that is
+    the same object is not spelt again (a controlled point shares the programmed point's floats on the axes
+    its offset does not move: two of a move's six floats under a tool length)."""
     if not items:
         return "{}"
     parts: list[str] = ["{"]  # joined once: no string made per item
+    floats: list[tuple[object, str]] = []
     for key, value in items.items():
         if not isinstance(key, str):
             return None
-        text = _value_text(value)
+        text: str | None = None
+        if written is not None:
+            for prior, prior_text in written:
+                if prior is value:
+                    text = prior_text
+                    break
         if text is None:
-            return None
+            if isinstance(value, dict):
+                text = _dict_text(value, floats)
+            else:
+                text = _value_text(value)
+                if text is not None and written is None and isinstance(value, float):
+                    floats.append((value, text))
+            if text is None:
+                return None
         if len(parts) > 1:
             parts.append(", ")
         parts.append(_key_text(key))

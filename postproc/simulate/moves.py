@@ -6,7 +6,7 @@ controlled point (length, lathe and entry offsets, cutter radius) read and chang
 
 from __future__ import annotations
 
-from typing import Callable, Final
+from typing import Any, Callable, Final
 
 from mypy_extensions import mypyc_attr
 
@@ -521,30 +521,42 @@ class Moves:
 
     def _offset_line(self, kind: str, target: dict[str, float], line: int) -> None:
         """A straight move under a tool length alone (a whole program after its G43): ``_write``'s result,
-        the programmed point rounded only on the axes that move (as ``line_move``)."""
-        pos = self.pos
-        rounded = self.rounded.copy()
-        for axis, value in target.items():
-            if value != pos[axis]:
-                rounded[axis] = num(value)
-        crounded = rounded.copy()
-        if LENGTH_AXIS in crounded:
-            crounded[LENGTH_AXIS] = num(target[LENGTH_AXIS] + self.length.offset)
-        for axis, shift in self.lathe_shift.items():
-            if axis in crounded:
-                crounded[axis] = num(target[axis] + shift + (self.length.offset if axis == LENGTH_AXIS else 0.0))
-        if crounded == self.crounded:
+        the programmed point rounded only on the axes that move (as ``line_move``). One pass over the axes
+        builds both points and the event: the values stay the objects ``num`` made (an int stays an int in
+        the JSON line), compared per axis rather than as dictionaries."""
+        pos, old, before = self.pos, self.rounded, self.crounded
+        offset = self.length.offset
+        shifts = self.lathe_shift
+        rounded: dict[str, Any] = {}
+        crounded: dict[str, Any] = {}
+        ev: Event = {"line": line, "move": kind}
+        ctrl: Event = {}
+        moved = apart = False
+        for axis, key in self.keys:
+            value = target[axis]
+            r: Any = old[axis] if value == pos[axis] else num(value)
+            c: Any = r
+            if axis == LENGTH_AXIS:
+                c = num(value + offset)
+            if shifts:
+                shift = shifts.get(axis)
+                if shift is not None:
+                    c = num(value + shift + (offset if axis == LENGTH_AXIS else 0.0))
+            rounded[axis] = r
+            crounded[axis] = c
+            ev[key] = r
+            ctrl[key] = c
+            if not moved and c != before[axis]:
+                moved = True
+            if not apart and c != r:
+                apart = True
+        if not moved:
             self.pos, self.rounded = target, rounded
             self._settle()
             return
-        ev: Event = {"line": line, "move": kind}
-        ctrl: Event = {}
-        for axis, key in self.keys:
-            ev[key] = rounded[axis]
-            ctrl[key] = crounded[axis]
         if kind != "rapid":
             self._feed_into(ev)
-        if crounded != rounded:
+        if apart:
             ev["controlled"] = ctrl
         self.pos, self.rounded, self.crounded = target, rounded, crounded
         self.out(ev)

@@ -87,19 +87,20 @@ class NgcBlockSyntax(NgcWordBlockSyntax):
         block.add(DynamicCutterCompensation(side, float(diameter),
                                             None if orientation is None else int(orientation)))
 
-    def _g_code(self, ctx: Context, block: Block, num: str, codes: dict[str, Any], natives: list[str],
-                key: str | None = None) -> None:
+    SPECIAL_G: ClassVar[frozenset[str]] = frozenset(lathe.MODES) | lathe.LATHE_ONLY | {"76"}
+    """G7/G8, G33, G96/G97 and G76: read here (``special_g_code``) before the code table."""
+
+    def special_g_code(self, ctx: Context, block: Block, num: str, key: str, natives: list[str]) -> bool:
         """G7/G8 are read against how X reads (``postproc.rs274.ngc_lathe.read_x_mode``: a lathe's
         ``xProgramming``, a mill's radius), G33 and G96/G97 into lathe sections, G76 into its moves
         (``threading``) on a lathe set-up; on a mill those stay verbatim (``toolpath`` and ``verify`` refuse them)."""
-        code = g_key(num) if key is None else key
-        if code in lathe.MODES:
+        if key in lathe.MODES:
             lathe.read_x_mode(block, ctx, num)
-            return
-        if not ctx.lathe and (code in lathe.LATHE_ONLY or code == "76"):
-            natives.append(code)  # G33, G76, G96/G97 on a mill: verbatim, as before the lathe reading
-            return
-        super()._g_code(ctx, block, num, codes, natives, key)
+            return True
+        if not ctx.lathe and (key in lathe.LATHE_ONLY or key == "76"):
+            natives.append(key)  # G33, G76, G96/G97 on a mill: verbatim, as before the lathe reading
+            return True
+        return False
 
     def _check_cycle_words(self, block: Block, ctx: Context, values: dict[str, Any], cycle_block: bool) -> None:
         """A lathe's G76 takes L (its tapers, ``threading``), no repeat count."""
@@ -107,8 +108,14 @@ class NgcBlockSyntax(NgcWordBlockSyntax):
             return
         super()._check_cycle_words(block, ctx, values, cycle_block)
 
-    def g_sections(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],
-                   used: set[str], cycle_block: bool) -> None:
+    OWN_CODES: ClassVar[frozenset[str]] = frozenset(("spindle_mode", THREAD_CYCLE, arc_centres.GROUP, "path"))
+    """G96/G97, G76, G90.1/G91.1 and G61/G64: read around the family's sections (``before_sections``,
+    ``after_sections``)."""
+    OWN_STATE: ClassVar[frozenset[str]] = frozenset((arc_centres.STATE_KEY,))
+    OWN_MOTION: ClassVar[frozenset[str]] = frozenset(("thread", RIGID_TAP, THREAD_CYCLE))
+
+    def before_sections(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],
+                        used: set[str]) -> dict[str, Any] | None:
         spring: dict[str, Any] = {}
         for group, (_, kind, arg, num) in list(codes.items()):
             if kind == "spindle_mode":  # G96 S D / G97 (``lathe``)
@@ -116,8 +123,12 @@ class NgcBlockSyntax(NgcWordBlockSyntax):
                 lathe.read_spindle_mode(block, ctx, str(arg), num, values, used, RS274_SAID)
             elif arg == THREAD_CYCLE:  # G76: H spring passes, E/L its tapers (``threading``)
                 spring.update((letter, values.pop(letter)) for letter in ("H", "E", "L") if letter in values)
-        super().g_sections(block, ctx, codes, values, used, cycle_block)
-        values.update(spring)
+        return spring
+
+    def after_sections(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],
+                       used: set[str], kept: dict[str, Any] | None) -> None:
+        if kept:
+            values.update(kept)
         if arc_centres.GROUP in codes or arc_centres.STATE_KEY in ctx.state.extra:
             arc_centres.apply_mode(block, ctx, codes)
         sections = block.sections

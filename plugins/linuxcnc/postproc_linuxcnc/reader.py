@@ -36,10 +36,14 @@ class LinuxcncReader(NgcReader):
             elif sections or block.words:
                 if opened is None:
                     opened = False
-                ended = ended or any(a in "Mm" and n.lstrip("0") in ("2", "30") for a, n in block.words)
+                if not ended:
+                    for a, n in block.words:  # a plain loop: a generator per block cost ~3k instructions
+                        if (a == "M" or a == "m") and n.lstrip("0") in ("2", "30"):
+                            ended = True
+                            break
             yield block
 
     def read_call(self, block: Block, code: str) -> None:
         """``M98 P L`` and ``M99`` (``calls``): rs274's Fanuc-style subprograms."""
-        if "9" in code:
+        if "9" in code and ("M" in code or "m" in code):  # no M word, no M98/M99: most lines, not read twice
             read_call(block, self.ctx.file, code)
