@@ -89,6 +89,9 @@ class Moves:
         self.unsimulated: list[tuple[int, str, str]] = []
         """(line, setting, value) each time a setting the simulation does not apply changes
         (``UNSIMULATED``): ``verify`` compares these between the two programs."""
+        self.mark_held = False
+        """A reference return's move to the reference point carries ``"held"``: the axes it put at a machine
+        position (``verify --transform`` leaves them where they are: ``postproc.transforms.events``)."""
         self.settings: dict[str, str] = dict(_INITIAL_SETTINGS)
         self.undeclared: set[str] = set()
         """Machine-specific codes warned about as undeclared (once each)."""

@@ -305,7 +305,15 @@ class Simulator(Moves):
                     ref[axis] -= shift
             if travel is not None:
                 travel.home(block, self._programmed(m.axes))
-            self.line_move("rapid", ref, line, emit)
+            if self.mark_held:
+                legs: list[Event] = []
+                self.line_move("rapid", ref, line, legs.append)
+                held = "".join(sorted(self._programmed(m.axes))).lower()
+                for ev in legs:
+                    ev["held"] = held
+                    emit(ev)
+            else:
+                self.line_move("rapid", ref, line, emit)
             return
         if self.feed is None and needs_feed(m):
             raise ProgramError(NO_FEED, self._at(block), needs="F")
@@ -397,7 +405,7 @@ class Simulator(Moves):
 
 def simulate(blocks: Iterable[Block], ctx: Context, live_after_end: list[int] | None = None,
              unsimulated: list[tuple[int, str, str]] | None = None, travel_warn: bool = False,
-             cutter_rules: CutterRules | None = None) -> Iterator[Event]:
+             cutter_rules: CutterRules | None = None, mark_held: bool = False) -> Iterator[Event]:
     """Blocks (already lowered for ``ToolpathTarget``) -> the header, then events in execution order.
 
     Errors are reported to ``ctx.diagnostics`` with the block's location and the block is skipped;
@@ -409,6 +417,7 @@ def simulate(blocks: Iterable[Block], ctx: Context, live_after_end: list[int] | 
         sim.live_after_end = live_after_end  # the caller reads the lines recorded there
     if unsimulated is not None:
         sim.unsimulated = unsimulated  # so does verify the settings the path does not show
+    sim.mark_held = mark_held
     report = ctx.diagnostics.error
     held: list[Event] = []
     holding = True

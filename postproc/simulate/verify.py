@@ -55,14 +55,14 @@ def verify_lines(lines_in: Iterable[str], lines_out: Iterable[str], *, file_in: 
     setup = setup or MachineSetup()
     if target_setup is None:
         target_setup = _same_machine(setup, source, registry)
-    if transform is not None:
-        target_setup = moved_setup(target_setup, transform)
+    dialects = registry or default_registry()
+    if transform is not None and not dialects.dialect(source).reads_lathe(setup):
+        target_setup = moved_setup(target_setup, transform)  # (a lathe's start is held: not moved)
     diag_in, diag_out = Diagnostics(), Diagnostics()
     after_in: list[int] = []
     after_out: list[int] = []
     settings_in: list[tuple[int, str, str]] = []
     settings_out: list[tuple[int, str, str]] = []
-    dialects = registry or default_registry()
     compensate = _both_compensate(source, target, registry, setup, target_setup)
     if not compensate and dialects.dialect(source).cutter_rules(setup) is not None:
         if isinstance(lines_out, io.IOBase) and lines_out.seekable():  # a file: read again, not held
@@ -74,7 +74,7 @@ def verify_lines(lines_in: Iterable[str], lines_out: Iterable[str], *, file_in: 
             compensate = not _compensates(lines_out, file_out, target, target_setup, dialects)
     events_in = toolpath_events(lines_in, file=file_in, dialect=source, setup=setup, registry=registry,
                                 diagnostics=diag_in, check=False, live_after_end=after_in, unsimulated=settings_in,
-                                compensate=compensate, arguments=arguments)
+                                compensate=compensate, arguments=arguments, mark_held=transform is not None)
     out_arguments = arguments if arguments and dialects.dialect(target).MACRO_ARGUMENTS else None
     events_out = toolpath_events(lines_out, file=file_out, dialect=target, setup=target_setup,
                                  registry=registry, diagnostics=diag_out, check=False, live_after_end=after_out,

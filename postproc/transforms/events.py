@@ -6,6 +6,10 @@ is the moved programmed point plus the tool's own offset, which the map does not
 length along Z stays as it is, the cutter's offset in XY turns with the plane (a rotation or mirror) and
 keeps its length (a uniform scaling in XY does not widen the cutter). Events other than moves pass as
 they are.
+
+A reference return's move to the reference point (marked ``"held"`` by the simulator: ``toolpath_events(...,
+mark_held=True)``) keeps the axes it names where they are: they are machine positions, which the transform
+does not move (``translate --transform`` keeps the return as written: ``postproc.transforms.carry``).
 """
 
 from __future__ import annotations
@@ -34,9 +38,12 @@ def moved_events(events: Iterable[Event], transform: ProgramTransform) -> Iterat
             yield ev
             continue
         out = dict(ev)
+        held = str(out.pop("held", ""))
         for keys in _POINT:
             if keys[0] in ev:
                 out.update(zip(keys, fmap.point([float(ev.get(k, 0.0)) for k in keys])))
+        for key in held:
+            out[key] = ev[key]
         kind = ev["move"]
         if kind in _TURNED and _turns_over(fmap, str(ev.get("plane", "XY"))):
             out["move"] = _TURNED[kind]
@@ -51,14 +58,15 @@ def moved_events(events: Iterable[Event], transform: ProgramTransform) -> Iterat
                 for i, k in enumerate(keys):
                     if k in controlled or k in ev:
                         moved[k] = out.get(k, 0.0) + turned[i] + (d[2] if i == 2 else 0.0)
-            out["controlled"] = {k: v for k, v in moved.items() if k in controlled}
+            out["controlled"] = {k: controlled[k] if k in held else v for k, v in moved.items() if k in controlled}
         yield out
 
 
 def moved_setup(setup: MachineSetup, transform: ProgramTransform) -> MachineSetup:
     """``setup`` with the tool starting at its start position's image: the transformed program is run
     from where the moved source would stand (a first move to the start, dropped as zero-length in the
-    source's path, is dropped in the output's too)."""
+    source's path, is dropped in the output's too). Not on a lathe: there the start is where the machine
+    stands, held like a reference point (``postproc.transforms.carry``), so the caller keeps ``setup``."""
     machine = setup.machine
     mm = machine.mm()
     x, y, z = transform.map.point((machine.start_x * mm, machine.start_y * mm, machine.start_z * mm))
