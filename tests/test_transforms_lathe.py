@@ -115,10 +115,11 @@ def test_every_other_map_is_refused_by_what_it_does(how: str, says: str) -> None
 
 
 @pytest.mark.parametrize("lines, line, says", [
-    (["G01 W-5. F0.2"], 4, "this move starts from a machine position on Z"),  # the start is held
-    (["G00 X40. Z2.", "G28 W0.", "G00 X20."], 6, "this move starts from a machine position on Z"),
-    (["G28 W5."], 4, "this reference return starts from a machine position on Z"),
-    (["G00 X40. Z2.", "G28 W0.", "G28 U0."], 6, "this reference return starts from a machine position on Z"),
+    (["G01 W-5. F100."], 4, "this move starts from a machine position on Z"),  # the start is held
+    (["G00 X40. Z2.", "G28 W0.", "G01 W-2. F100."], 6, "this move starts from a machine position on Z"),
+    (["G00 X40. Z2.", "G28 W0.", "G02 X50. R5. F100."], 6, "an arc from a machine position on Z"),
+    (["G28 W5."], 4, "this reference return's intermediate point is an increment from a machine position on Z"),
+    (["G00 X40. Z2.", "G28 W0.", "G28 W3."], 6, "this reference return's intermediate point is an increment"),
     (["G50 X100. Z50."], 4, "a coordinate setting (the tool's point given new coordinates) cannot be transformed"),
 ])
 def test_what_cannot_be_moved_is_a_located_error(lines: list[str], line: int, says: str) -> None:
@@ -126,6 +127,16 @@ def test_what_cannot_be_moved_is_a_located_error(lines: list[str], line: int, sa
     with pytest.raises(ErrorList) as caught:
         _translate(text, "fanuc", SHIFT)
     assert f"t.nc:{line}:1: error: {says}" in str(caught.value.errors[0]), caught.value.errors
+
+
+def test_a_move_that_leaves_z_alone_leaves_it_at_the_reference_point() -> None:
+    # after G28 W0. the tool stands at the reference point on Z (0, machine coordinates): G00 X20. moves X only, in
+    # the source and the output alike; Z is a point of the program again from Z10. on (written Z5.)
+    text = "%\nO3004\nG21 G98\nG00 X40. Z2.\nG28 W0.\nG00 X20.\nG00 Z10.\nM30\n%\n"
+    out = _translate(text, "fanuc", SHIFT)
+    assert "G28 W0.\nG00 X20.\nG00 Z5." in out, out
+    assert _points(out, "fanuc") == [("rapid", 40, -3), ("rapid", 40, 0), ("rapid", 20, 0), ("rapid", 20, 5)]
+    assert _verify(text, out, "fanuc", SHIFT).ok
 
 
 def test_a_lathe_cycle_kept_for_the_target_is_refused() -> None:
@@ -142,7 +153,7 @@ def _moved_source(text: str, dialect: str, setup: MachineSetup, transform: str) 
     """The source's toolpath moved by ``transform`` (reference returns held), X and centres as radii."""
     events = toolpath_events(io.StringIO(text), file="t.nc", dialect=dialect, setup=setup, mark_held=True)
     moves = []
-    for ev in moved_events(events, parse_transform(transform)):
+    for ev in moved_events(events, parse_transform(transform), {"X": 0.0, "Z": 0.0}):
         if "move" in ev:
             moves.append({k: float(v) / 2.0 if k in ("x", "cx") else v for k, v in ev.items()})
     return moves

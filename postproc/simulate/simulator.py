@@ -403,6 +403,28 @@ class Simulator(Moves):
                 target[axis] -= shift
 
 
+def _mark_programmed(block: Block, sim: Simulator, out: list[Event], programmed: str) -> str:
+    """``mark_held``: the axes a block programs absolutely in work coordinates (``"programmed": "xy"``) on the
+    first move event it makes, or on a later block's where it makes none (a move to where the tool stands):
+    ``verify --transform`` moves a held machine position from there (``postproc.transforms.events``). Returns
+    what is still to be marked."""
+    s = block.sections
+    m = s.get("Motion")
+    axes = ""
+    if sim.modal.distance == "absolute" and "MachineCoordinates" not in s:
+        if isinstance(m, Motion) and m.mode not in (None, "home", "home2"):
+            axes = "".join(a.lower() for a in m.axes if a in "XYZ")
+        cycle = s.get("CannedCycle")
+        if cycle is not None:
+            axes += "".join(a.lower() for a in str(getattr(cycle, "plane", "")) if a in getattr(cycle, "words", ()))
+    programmed = "".join(sorted(set(programmed + axes)))
+    for ev in out:
+        if "move" in ev and programmed:
+            ev["programmed"] = programmed
+            return ""
+    return programmed
+
+
 def simulate(blocks: Iterable[Block], ctx: Context, live_after_end: list[int] | None = None,
              unsimulated: list[tuple[int, str, str]] | None = None, travel_warn: bool = False,
              cutter_rules: CutterRules | None = None, mark_held: bool = False) -> Iterator[Event]:
@@ -423,6 +445,7 @@ def simulate(blocks: Iterable[Block], ctx: Context, live_after_end: list[int] | 
     holding = True
     units: str | None = None  # the program's units at its first move, for the header
     out: list[Event] = []
+    programmed = ""
     for block in blocks:
         try:
             sim.block(block, out.append)
@@ -430,6 +453,8 @@ def simulate(blocks: Iterable[Block], ctx: Context, live_after_end: list[int] | 
             report(err.located(ctx.at(block)))
             out.clear()
             continue
+        if mark_held:
+            programmed = _mark_programmed(block, sim, out, programmed)
         if not out:
             continue
         if holding:

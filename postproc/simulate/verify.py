@@ -23,7 +23,7 @@ from ..plugins import Registry, default_registry
 from ..setup.machine_setup import MachineSetup
 from ..drawing.overlay import Overlay
 from ..transforms.carry import mirrors_xy
-from ..transforms.events import moved_events, moved_setup
+from ..transforms.events import moved_events
 from ..transforms.spec import ProgramTransform
 from .normal_move import Move
 from .compare import (Report, _controlled, compare, compare_after_end, compare_settings, describe,
@@ -56,8 +56,6 @@ def verify_lines(lines_in: Iterable[str], lines_out: Iterable[str], *, file_in: 
     if target_setup is None:
         target_setup = _same_machine(setup, source, registry)
     dialects = registry or default_registry()
-    if transform is not None and not dialects.dialect(source).reads_lathe(setup):
-        target_setup = moved_setup(target_setup, transform)  # (a lathe's start is held: not moved)
     diag_in, diag_out = Diagnostics(), Diagnostics()
     after_in: list[int] = []
     after_out: list[int] = []
@@ -81,8 +79,7 @@ def verify_lines(lines_in: Iterable[str], lines_out: Iterable[str], *, file_in: 
                                  unsimulated=settings_out, compensate=compensate, arguments=out_arguments)
     start_in = start_position(setup)
     if transform is not None:
-        events_in = moved_events(events_in, transform)
-        start_in = start_position(target_setup)
+        events_in = moved_events(events_in, transform, start_in)  # (the start is where the machine stands)
     if overlay is not None:
         reading = dialects.dialect(source)
         overlay.begin(start_position(setup), start_position(target_setup), reading.reads_lathe(setup))

@@ -17,18 +17,23 @@ scale; a map that tilts the drilling axis, turns it over or turns a shifting cyc
 A rigid tap's end point is carried like a point where the map keeps Z as it is (the tap runs along Z with
 its own pitch); otherwise it is refused.
 
+Machine positions stay where the machine has them: the start, and a reference return, whose intermediate
+point (work coordinates) is carried and whose return is kept as written. An axis the map changes is *held*
+there (``held``) until the program names it absolutely: an increment from a held position, an arc in a plane
+with a held axis, a hole cycle along a held axis, an absolute move whose image needs a held coordinate, or
+an intermediate point that moves a held axis by more than 0 is a located error (it would be no point of the
+moved program); a move that leaves a held axis alone leaves it where the machine has it (``verify``
+follows the same rule: ``postproc.transforms.events``).
+
 What cannot be carried exactly is a located error: the program's frame commands kept as written, a work
-system rotation, a reference return or a machine-coordinate move on an axis the map changes (on a mill), a
-rotary or parallel axis under a map that is more than a translation, a computed word.
+system rotation, a move in machine coordinates on an axis the map changes, a reference return whose
+intermediate point the map moves on an axis it does not return, a rotary or parallel axis under a map that
+is more than a translation, a computed word.
 
 A lathe program (``Context.lathe``) takes only a shift along Z (``lathe_refusal`` names what else a map
 does and why the program would no longer be valid). Its moves are carried with their incremental addresses
-(U, W: ``Context.increments``), thread moves like feed moves. A reference return or a machine-coordinate move
-stays where the machine has it: its intermediate point (work coordinates) is carried, the return itself is
-not; so is the machine's start position. From such a fixed position an axis the map changes must be
-programmed absolutely before it moves again (an increment from a machine position is not a point of the
-moved program): a located error otherwise. A lathe cycle kept for the target and a coordinate setting (which
-declares where the tool stands) are refused by name.
+(U, W: ``Context.increments``: an increment, held as any), thread moves like feed moves. A lathe cycle kept for
+the target and a coordinate setting (which declares where the tool stands) are refused by name.
 """
 
 from __future__ import annotations
@@ -94,13 +99,14 @@ class ProgramMover:
         self.increments = ctx.increments
         """A lathe's incremental addresses (U -> X, W -> Z)."""
         self.diameter = ctx.diameter
-        self.touched = frozenset(a for a in XYZ if not _untouched(fmap, INDEX[a]))
-        self.held: set[str] = set()
-        """Axes the map changes whose position is a machine position (the start on a lathe, after a reference
-        return or a machine-coordinate move) until programmed absolutely."""
+        self.touched = frozenset(a for a in XYZ if not untouched(fmap, INDEX[a]))
+        self.held: set[str] = set(self.touched)
+        """Axes the map changes whose position is a machine position (the start, a reference return) until
+        programmed absolutely (the module docstring); their program position is not known."""
+        for axis in self.held:
+            self.p[axis] = None
         if self.lathe:
             self.modal.plane = "ZX"
-            self.held = set(self.touched)  # the lathe's start is where the machine stands (not moved)
 
     @property
     def scale(self) -> float:
@@ -193,6 +199,11 @@ class ProgramMover:
                                    f"{WHAT} (only X, Y and Z are)")
             given[axis] = value * scale if axis in XYZ else value
         self._from_held(given, stepped, incremental, via)
+        if m.mode in ("cw", "ccw"):
+            for axis in PLANE_AXES[self.modal.plane][:2]:
+                if axis in self.held and not (axis in given and not incremental):
+                    raise ProgramError(f"an arc from a machine position on {axis} (the start or a reference return), "
+                                       f"which the transform does not move: program {axis} absolutely before it")
         for axis, step in stepped.items():
             here = p[axis]
             p[axis] = None if here is None else here + step
@@ -218,6 +229,8 @@ class ProgramMover:
             for axis in XYZ:
                 if axis in given:
                     p[axis] = given[axis]
+            if not via:
+                self.held.difference_update(given)
         for axis, value in m.axes.items():
             if axis not in INDEX:
                 out[axis] = value  # (a lathe's U and W: the map is a shift along Z, which an increment keeps)
@@ -226,26 +239,24 @@ class ProgramMover:
         return Motion(m.mode, out)
 
     def _from_held(self, given: dict[str, float], stepped: dict[str, float], incremental: bool, via: bool) -> None:
-        """A move from a machine position (``held``): each axis the map changes must be programmed absolutely
-        here, or the move is not a point of the moved program; those so programmed are work positions again.
-        A reference return's intermediate point (``via``) may also stay where the tool is (an increment of 0)."""
+        """A move from a machine position (``held``): an increment on a held axis, or one the map turns into it,
+        is no point of the moved program. A reference return's intermediate point (``via``) names a held axis
+        absolutely or with an increment of 0 (it stays where the tool is)."""
         if not self.held:
             return
-        if via:
-            for axis in sorted(self.held):
-                if not (axis in given and not incremental or stepped.get(axis, given.get(axis)) == 0.0):
-                    raise ProgramError(f"this reference return starts from a machine position on {axis} (the start, "
-                                       f"a reference return or a move in machine coordinates), which the transform "
-                                       f"does not move: name {axis} in it with an increment of 0, or program {axis} "
-                                       f"absolutely before it")
-            return
-        if not incremental:
-            self.held.difference_update(given)
-        if self.held:
-            axis = sorted(self.held)[0]
-            raise ProgramError(f"this move starts from a machine position on {axis} (the start, a reference return or "
-                               f"a move in machine coordinates), which the transform does not move: program {axis} "
-                               f"absolutely before this move")
+        for axis in sorted(self.held):
+            if via:
+                if axis in stepped or axis in given and incremental:
+                    if stepped.get(axis, given.get(axis)) != 0.0:
+                        raise ProgramError(f"this reference return's intermediate point is an increment from a machine "
+                                           f"position on {axis} (the start or a reference return), which the transform "
+                                           f"does not move: program {axis} absolutely before it, or name it with 0")
+                continue
+            i = INDEX[axis]
+            if axis in stepped or incremental and any(self.map.mixes(i, INDEX[a]) for a in given if a in INDEX):
+                raise ProgramError(f"this move starts from a machine position on {axis} (the start or a reference "
+                                   f"return), which the transform does not move: program {axis} absolutely before "
+                                   f"an increment")
 
     def tap(self, tap: RigidTap, incremental: bool) -> RigidTap:
         """A rigid tap's end point carried like a move's; the tool comes back to where it stood, so the
@@ -256,9 +267,9 @@ class ProgramMover:
         if not _untouched_direction(self.map, INDEX["Z"]) or found is None or abs(found[0] - 1.0) > 1e-12:
             raise ProgramError(f"a rigid tap cannot be {WHAT} by a map that scales, or turns over or tilts Z (the "
                                "tap's pitch and direction are the tool's)")
-        here = dict(self.p)
+        here, held = dict(self.p), set(self.held)
         carried = self.move(Motion("linear", tap.axes), incremental, False)
-        self.p = here
+        self.p, self.held = here, held
         return RigidTap(carried.axes, tap.pitch, tap.dwell, tap.speedup)
 
     def arc(self, m: Motion, out: dict[str, float | Expr]) -> Motion:
@@ -288,24 +299,31 @@ class ProgramMover:
 
     def fixed(self, m: Motion) -> Motion:
         """A reference return or a machine-coordinate move: it goes where the machine is, not where the
-        program is, so it stays as written, allowed only on axes the map leaves alone. On a lathe a
-        reference return's intermediate point is carried (it is a point of the program) and the return
-        stays (``lathe_refusal``: the map is a shift along Z, which carries the point axis by axis)."""
-        if self.lathe and m.mode in ("home", "home2"):
-            return self._lathe_return(m)
+        program is, so it stays as written. A reference return's intermediate point is carried (a point of
+        the program: ``reference_return``); a machine-coordinate move is allowed only on axes the map leaves
+        alone."""
+        if m.mode in ("home", "home2"):
+            return self.reference_return(m)
         for axis in m.axes:
             axis = self.increments.get(axis, axis)
-            if axis in INDEX and not _untouched(self.map, INDEX[axis]):
+            if axis in INDEX and not untouched(self.map, INDEX[axis]):
                 raise ProgramError(f"a move to machine coordinates or a reference point on {axis} cannot be {WHAT}: "
                                    f"the transform changes {axis}")
             self.p[axis] = None
         return m
 
-    def _lathe_return(self, m: Motion) -> Motion:
+    def reference_return(self, m: Motion) -> Motion:
+        """The intermediate point carried like a move, on the axes the return names only (a map that moves
+        it on another axis would send that one home too: refused); the returned axes the map changes are
+        held at the reference point."""
         incremental = self.modal.distance == "incremental"
         via = self.move(Motion("rapid", dict(m.axes)), incremental, False, True)
-        for axis in m.axes:
-            axis = self.increments.get(axis, axis)
+        named = {self.increments.get(a, a) for a in m.axes}
+        for axis in via.axes:
+            if self.increments.get(axis, axis) not in named:
+                raise ProgramError(f"this reference return's intermediate point moves {axis} under the transform, "
+                                   f"which it does not return: it cannot be {WHAT}")
+        for axis in named:
             self.p[axis] = None
             if axis in self.touched:
                 self.held.add(axis)
@@ -322,6 +340,10 @@ class ProgramMover:
             raise ProgramError(f"a hole cycle in the {cycle.plane} plane cannot be {WHAT} by a map that tilts or "
                                f"turns over its drilling axis {normal} (a rotation out of its plane, a mirror in "
                                f"{normal})")
+        if normal in self.held:
+            raise ProgramError(f"a hole cycle from a machine position on {normal} (the start or a reference return), "
+                               f"which the transform does not move: its initial level would be that position: "
+                               f"program {normal} absolutely before it")
         roles = cycle_roles(cycle, self.cycle_words)
         if cycle.kind in PECK and fmap.m[4 * n] != 1.0:
             raise ProgramError(f"a peck drilling cycle cannot be {WHAT} by a map that scales its drilling axis "
@@ -428,7 +450,7 @@ def _untouched_direction(fmap: Affine, i: int) -> bool:
     return fmap.m[4 * i] == 1.0 and not any(fmap.mixes(i, j) or fmap.mixes(j, i) for j in range(3) if j != i)
 
 
-def _untouched(fmap: Affine, i: int) -> bool:
+def untouched(fmap: Affine, i: int) -> bool:
     """The map leaves coordinate ``i`` alone and mixes it into no other."""
     return fmap.t[i] == 0.0 and fmap.m[4 * i] == 1.0 and not any(
         fmap.mixes(i, j) or fmap.mixes(j, i) for j in range(3) if j != i)
