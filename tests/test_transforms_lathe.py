@@ -102,6 +102,7 @@ def test_linuxcnc_gets_the_shift_and_its_own_reference_return() -> None:
 @pytest.mark.parametrize("how, says", [
     ("rotate 10 in zx", "it rotates the program"),
     ("mirror x", "it mirrors X, which puts the tool past the spindle's centre line"),
+    ("rotate 180 in zx", "it turns X and Z over (a half turn in the ZX plane)"),
     ("mirror z about -25", "it mirrors Z, which turns the cut end for end"),
     ("scale 2", "it scales the program"),
     ("translate 5,0,0", "it shifts X, which moves the part off the spindle's centre line"),

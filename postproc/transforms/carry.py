@@ -467,6 +467,9 @@ def lathe_refusal(transform: ProgramTransform) -> str | None:
     if any(abs(m[3 * i + j]) > EXACT for i in range(3) for j in range(3) if i != j):
         return f"{said}: it rotates the program, which turns it off the spindle's axis (only 'translate 0,0,DZ' " \
                "keeps a lathe program valid)"
+    if m[0] < 0.0 and m[8] < 0.0:
+        return f"{said}: it turns X and Z over (a half turn in the ZX plane), which puts the tool past the spindle's " \
+               "centre line and turns the cut end for end (only 'translate 0,0,DZ' keeps a lathe program valid)"
     if m[0] < 0.0:
         return f"{said}: it mirrors X, which puts the tool past the spindle's centre line (only 'translate 0,0,DZ' " \
                "keeps a lathe program valid)"
