@@ -279,6 +279,18 @@ def test_a_macro_drilling_a_rotated_bolt_circle_translates_and_verifies(target: 
     assert {(float(x), float(y)) for x, y in holes} == {(x + 0.0, y + 0.0) for x, y in want}
 
 
+@pytest.mark.skipif(not available(), reason="the LinuxCNC interpreter rs274 is not installed")
+@pytest.mark.parametrize("target", ["linuxcnc", "grbl"])
+def test_the_rotated_bolt_circle_s_translation_moves_in_rs274_as_the_fanuc_toolpath(target: str) -> None:
+    """The done-when's macro, its LinuxCNC (and grbl: RS274/NGC rs274 reads) output run by the real interpreter:
+    the same moves, move by move (the six holes at 25 mm on 60-degree steps: checked by hand above)."""
+    out = io.StringIO()
+    translate(io.StringIO(FANUC_BOLT_CIRCLE), out, file="t.nc", source="fanuc", target=target)
+    ours = moves(FANUC_BOLT_CIRCLE)
+    assert sum(1 for e in ours if e["z"] == -5) == 6
+    _same(ours, _machine(run_rs274(out.getvalue())), out.getvalue(), 0)
+
+
 LOCAL_LOOP = "G21 G17 G90\nG00 X0. Y0. Z5.\nG52 X100.\n#1=0\nWHILE [#1 LT 3] DO1\nG00 X[#1*10.] Y0.\n#1=#1+1\nEND1\n"
 
 

@@ -1,7 +1,8 @@
 """Lathe programs under the user's program transforms (issue #27 item 3, on the frame machinery): ``--units``
 converts a lathe program (X diameters, Z, arc radii, feeds and thread leads per revolution, and the surface
 speed under G96: metres to feet per minute [V: LinuxCNC G-code reference, G96; K: Fanuc 0i-TF operator's
-manual]); a lathe cycle kept for the target and ``--transform`` are refused by name. Each conversion verifies.
+manual]); a lathe cycle kept for the target is refused by name. Each conversion verifies. (``--transform`` on a
+lathe: ``tests/test_transforms_lathe.py``.)
 """
 
 from __future__ import annotations
@@ -13,7 +14,7 @@ from pathlib import Path
 import pytest
 
 from postproc.api import translate
-from postproc.errors import Diagnostics, ErrorList, UsageError
+from postproc.errors import Diagnostics, ErrorList
 from postproc.setup.machine_setup import load_setup
 from postproc.simulate.verify import verify_lines
 
@@ -88,7 +89,3 @@ def test_a_lathe_cycle_kept_for_the_target_is_refused_by_name() -> None:
         _translate(text, "fanuc", "fanuc", FANUC_T, units="inch")
     assert "a lathe cycle kept for the target (groove) cannot be converted" in str(caught.value.errors[0])
 
-
-def test_a_transform_of_a_lathe_program_is_refused() -> None:
-    with pytest.raises(UsageError, match="--transform takes mill programs only"):
-        _translate(PROGRAM, "fanuc", "fanuc", FANUC_T, transform="translate 0,0,5")

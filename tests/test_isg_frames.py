@@ -1,9 +1,11 @@
-"""ISG (Beckhoff TwinCAT CNC) ``G68 R.. X.. Y..`` / ``G69``: the contour rotation in G17, read on the neutral frame
-change under the ``isg`` rules (``postproc/frames/lowering.py`` ``isg_rotate``) [V: TF5200 programming manual,
-"Rotate the coordinate system in the plane (G68/G69)"].
+"""ISG (Beckhoff TwinCAT CNC) ``G68 R.. X.. Y..`` / ``G69``: the contour rotation in G17, G18 and G19, read on the
+neutral frame change under the ``isg`` rules (``postproc/frames/lowering.py`` ``isg_rotate``) [V: TF5200
+programming manual, "Rotate the coordinate system in the plane (G68/G69)"; K: the sense in G18/G19, from the
+plane's first main axis toward its second].
 
 Expected points by hand: program (x, y) turned by a about (cx, cy) is
-(cx + (x-cx) cos a - (y-cy) sin a, cy + (x-cx) sin a + (y-cy) cos a). The LinuxCNC translations are run by rs274.
+(cx + (x-cx) cos a - (y-cy) sin a, cy + (x-cx) sin a + (y-cy) cos a), with (x, y) the plane's first and second
+main axes (G18: Z, X; G19: Y, Z). The LinuxCNC translations are run by rs274.
 """
 
 from __future__ import annotations
@@ -87,10 +89,55 @@ def test_a_plane_change_ends_the_rotation_with_a_warning() -> None:
 
 def test_what_is_not_settled_or_not_allowed_is_refused() -> None:
     assert "Z belongs in the next block" in _errors(HEAD + "G68 R30 X0 Y0 Z5\nM30\n")[0]
-    assert "only in the XY plane" in _errors(HEAD + "G18\nG68 R30 Z0 X0\nM30\n")[0]
+    assert "Y belongs in the next block" in _errors(HEAD + "G18\nG68 R30 Z0 X0 Y1\nM30\n")[0]
+    assert "program Z and X" in _errors(HEAD + "G18\nG68 R30 Z0 X0\nG68 R40 Z1\nM30\n")[0]
     assert "without its centre while a rotation is on" in _errors(HEAD + "G68 R30 X0 Y0\nG68 R40\nM30\n")[0]
     assert "with cutter compensation on" in _errors(
         HEAD + "D1\nG41 G01 X10 Y0 F100\nG68 R30 X0 Y0\nG01 X20\nG40 G01 X0 Y0\nM30\n")[0]
+
+
+def _plane_points(body: str) -> list[tuple[Any, ...]]:
+    return [(e["move"], *(round(e[k], 6) + 0.0 for k in ("x", "y", "z"))) for e in _events(HEAD + body + "M30\n")]
+
+
+def test_g68_in_g18_turns_from_z_toward_x() -> None:
+    # R90 about (Z0, X0): (Z10, X0) -> (Z0, X10); (Z10, X5) -> (Z-5, X10); G91 Z5 turned: X + 5; G69: as written
+    assert _plane_points("G18\nG68 R90 Z0 X0\nG01 Z10 X0 F100\nZ10 X5\nG91 Z5\nG90\nG69\nG01 Z10 X0\n") == [
+        ("feed", 10, 0, 0), ("feed", 10, 0, -5), ("feed", 15, 0, -5), ("feed", 0, 0, 10)]
+    # R30 about (Z2, X4): (Z12, X4) -> Z 2 + 10 cos 30, X 4 + 10 sin 30
+    z, x = _turned(12, 4, 30, 2, 4)
+    assert _plane_points("G18\nG68 R30 Z2 X4\nG01 Z12 X4 F100\n") == [("feed", x, 0, z)]
+
+
+def test_g68_in_g19_turns_from_y_toward_z_and_keeps_an_arc_s_centre_and_direction() -> None:
+    # R90 about (Y0, Z0): (Y10, Z0) -> (Y0, Z10); G02 to (Y0, Z10) about (0, 0) -> G02 to (Y-10, Z0) about (0, 0)
+    events = _events(HEAD + "G19\nG68 R90 Y0 Z0\nG01 Y10 Z0 F100\nG02 Y0 Z10 J-10 K0\nG69\nM30\n")
+    assert [(e["move"], e["x"], e["y"], e["z"]) for e in events] == [("feed", 0, 0, 10), ("cw", 0, -10, 0)]
+    assert (events[1]["cy"], events[1]["cz"], events[1]["plane"]) == (0, 0, "YZ")
+
+
+def test_rotation_on_with_its_centre_at_the_origin_is_the_contour_rotation() -> None:
+    # [V] TF5200 "#ROTATION ON/OFF": G68's rotation spelled otherwise; ANGLE 90 about the origin: (10, 0) -> (0, 10);
+    # OFF: as written; in G18 (Z10, X0) -> (Z0, X10); ANGLE without '=' as the manual's example writes it
+    assert _points("#ROTATION ON [ANGLE=90 CENTER1=0 CENTER2=0]\nG01 X10 Y0 F100\n#ROTATION OFF\nG01 X10 Y0\n") == [
+        ("feed", 0, 10), ("feed", 10, 0)]
+    assert _points("#ROTATION ON [ANGLE=30 CENTER1=0 CENTER2=0]\nG01 X10 Y5 F100\nG69\nG01 X0 Y0\n") == [
+        ("feed", *_turned(10, 5, 30, 0, 0)), ("feed", 0, 0)]
+    assert _plane_points("G18\n#ROTATION ON [ANGLE -90, CENTER1=0 CENTER2=0]\nG01 Z10 X0 F100\n") == [
+        ("feed", -10, 0, 0)]
+
+
+def test_rotation_on_is_kept_verbatim_where_its_meaning_is_not_settled() -> None:
+    text = HEAD + "#ROTATION ON [ANGLE=30 CENTER1=0 CENTER2=0]\nG01 X10 Y0 F100\n#ROTATION OFF\nM30\n"
+    assert _translate(text, "isg") == text
+    out = _translate(text, "grbl")
+    _verify(text, out, "grbl")
+    for command in ("#ROTATION ON [ANGLE=30 CENTER1=10 CENTER2=0]", "#ROTATION ON [ANGLE=30]", "#ROTATION ON",
+                    "#ROTATION ON [ANGLE=P1 CENTER1=0 CENTER2=0]", "#ROTATION ON [ANGLE=30 CENTER1=0 CENTER2=0 X=1]"):
+        kept = HEAD + command + "\nG01 X10 Y0 F100\nM30\n"
+        assert _translate(kept, "isg") == kept
+        assert f"in.nc:2:1: error: {command.split(' [')[0]} from isg has no equivalent in linuxcnc" in \
+            _errors(kept)[0], command
 
 
 def test_isg_to_isg_keeps_g68_as_written() -> None:
@@ -104,35 +151,46 @@ def _verify(a: str, b: str, target: str) -> None:
     assert report.ok, report.summary() + "\n--- a\n" + a + "--- b\n" + b
 
 
+_PLANES = {"G17": ("X", "Y", "Z", "I", "J"), "G18": ("Z", "X", "Y", "K", "I"), "G19": ("Y", "Z", "X", "J", "K")}
+"""Plane code -> its first, second and third axis and the centre words of the first two."""
+
+
 def _program(seed: int) -> str:
+    """Rotations, moves and arcs in one plane per program (G17 for seeds 0-9, as before; then G18 and G19
+    too): a plane change would end the rotation with a warning."""
     rng = random.Random(seed)
-    lines = ["%frames", "N1 G71 G90 G17 G00 X0 Y0 Z5"]
+    code = "G17" if seed < 10 else rng.choice(list(_PLANES))
+    a1, a2, a3, i1, i2 = _PLANES[code]
+    lines = ["%frames", f"N1 G71 G90 G17 G00 X0 Y0 Z5", code]
+    spelled = seed >= 10 and rng.random() < 0.5  # #ROTATION ON/OFF, its centre at the origin, in place of G68/G69
     for _ in range(rng.randint(2, 5)):
         if rng.random() < 0.2:
-            lines.append("G69")
+            lines.append("#ROTATION OFF" if spelled else "G69")
+        elif spelled:
+            lines.append(f"#ROTATION ON [ANGLE={rng.uniform(-180, 180):.3f} CENTER1=0 CENTER2=0]")
         else:
-            lines.append(f"G68 R{rng.uniform(-180, 180):.3f} X{rng.randint(-20, 20)} Y{rng.randint(-20, 20)}")
+            lines.append(f"G68 R{rng.uniform(-180, 180):.3f} {a1}{rng.randint(-20, 20)} {a2}{rng.randint(-20, 20)}")
         x, y = rng.randint(-20, 20), rng.randint(-20, 20)
-        lines.append(f"G01 X{x} Y{y} Z{rng.randint(-3, 3)} F{rng.randint(50, 500)}")
+        lines.append(f"G01 {a1}{x} {a2}{y} {a3}{rng.randint(-3, 3)} F{rng.randint(50, 500)}")
         kind = rng.choice(["r", "ij", "incremental"])
         if kind == "r":
             ex, ey = x + rng.randint(-15, 15), y + rng.randint(1, 15)
             radius = math.hypot(ex - x, ey - y) / 2 * rng.uniform(1.05, 3.0)
-            lines.append(f"G0{rng.choice('23')} X{ex} Y{ey} R{radius:.4f}")
+            lines.append(f"G0{rng.choice('23')} {a1}{ex} {a2}{ey} R{radius:.4f}")
         elif kind == "ij":
             i, j = rng.randint(-9, 9) or 3, rng.randint(-9, 9)
             turn = math.radians(rng.uniform(20, 300))
             ex = x + i - i * math.cos(turn) + j * math.sin(turn)
             ey = y + j - i * math.sin(turn) - j * math.cos(turn)
-            lines.append(f"G0{rng.choice('23')} X{ex:.4f} Y{ey:.4f} I{i} J{j}")
+            lines.append(f"G0{rng.choice('23')} {a1}{ex:.4f} {a2}{ey:.4f} {i1}{i} {i2}{j}")
         else:
-            lines.append(f"G91 G01 X{rng.randint(-5, 5)} Y{rng.randint(-5, 5)}\nG90")
+            lines.append(f"G91 G01 {a1}{rng.randint(-5, 5)} {a2}{rng.randint(-5, 5)}\nG90")
     lines += ["G69", "G00 Z50", "M30"]
     return "\n".join(lines) + "\n"
 
 
 @pytest.mark.skipif(not available(), reason="the LinuxCNC interpreter rs274 is not installed")
-@pytest.mark.parametrize("seed", range(10))
+@pytest.mark.parametrize("seed", range(30))
 def test_a_random_rotated_program_moves_in_rs274_as_its_isg_toolpath(seed: int) -> None:
     text = _program(seed)
     out = _translate(text, "linuxcnc")

@@ -205,8 +205,18 @@ def test_incremental_cycle_levels_scale_without_the_shift() -> None:
      "t.nc:3:1: error: a peck drilling cycle cannot be transformed by a map that scales its drilling axis Z"),
     ("G21 G90\nG00 X0. Y0. Z0.\nG55\nG01 X5. F50.\nM30\n", "rotate 30",
      "t.nc:4:1: error: this move's X under the transform needs the program's Y, which is not known here"),
-    ("G21 G90\nG28 X0. Y0.\nM30\n", "translate 1,0",
+    ("G21 G90\nG53 G00 X0. Y0.\nM30\n", "translate 1,0",
      "t.nc:2:1: error: a move to machine coordinates or a reference point on X cannot be transformed"),
+    ("G21 G90\nG00 X0. Y0. Z5.\nG91 G28 Z0.\nG90 G01 X5. F50.\nG91 G01 Z-1.\nM30\n", "translate 0,0,-1",
+     "t.nc:5:1: error: this move starts from a machine position on Z (the start or a reference return)"),
+    ("G21 G90\nG91 G28 Z0.\nG90 G01 X10. F50.\nM30\n", "rotate 30 in zx",
+     "t.nc:3:1: error: this move's X under the transform needs the program's Z, which is not known here"),
+    ("G21 G90\nG91 G28 Z5.\nM30\n", "translate 0,0,-1",
+     "t.nc:2:1: error: this reference return's intermediate point is an increment from a machine position on Z"),
+    ("G21 G90\nG00 X0. Y0. Z5.\nG28 X10.\nM30\n", "rotate 30",
+     "t.nc:3:1: error: this reference return's intermediate point moves Y under the transform, which it does not "
+     "return"),
+
     ("G21 G90 G00 X0. Y0. A10.\nM30\n", "rotate 5",
      "t.nc:1:1: error: the A axis under a transform that rotates, mirrors or scales cannot be transformed"),
 ])
@@ -257,3 +267,21 @@ def test_moved_then_converted() -> None:
     text = "G20 G90\nG00 X1. Y0.5 Z0.1\nM30\n"
     out = run(text, "fanuc", "fanuc", "translate 25.4,0", units="mm")
     assert out.splitlines()[:2] == ["G21 G90", "G00 X50.8 Y12.7 Z2.54"]
+
+
+def test_a_reference_return_stays_and_holds_its_axis_at_the_reference_point() -> None:
+    """G91 G28 Z0. under a shift of Z: written as it was (the reference point is a machine position); the XY
+    move after it leaves Z there (at the reference point, 0 here: no <Axis home>), the next Z is a program
+    point again, moved. By hand: Z50 -> 49; G28 -> Z0; X10 Y0 -> (13, -2) at Z0; Z5 -> 4."""
+    text = "G21 G90 G17\nG00 X0. Y0. Z50.\nG91 G28 Z0.\nG90 G00 X10. Y0.\nG00 Z5.\nM30\n"
+    out = run(text, "fanuc", "fanuc", "translate 3,-2,-1")
+    assert "G91 G28 Z0.\nG90 G00 X13. Y-2.\nG00 Z4." in out, out
+    assert moves(out, "fanuc") == [("rapid", 3, -2, 49), ("rapid", 3, -2, 0), ("rapid", 13, -2, 0),
+                                   ("rapid", 13, -2, 4)]
+    from postproc.simulate.verify import verify_lines
+    report = verify_lines(io.StringIO(text), io.StringIO(out), file_in="a", file_out="b", source="fanuc",
+                          target="fanuc", transform=parse_transform("translate 3,-2,-1"))
+    assert report.ok, report.summary()
+    moved = out.replace("G91 G28 Z0.\n", "G90 G00 Z-1.\n")  # a return moved with the program fails verify
+    assert not verify_lines(io.StringIO(text), io.StringIO(moved), file_in="a", file_out="b", source="fanuc",
+                            target="fanuc", transform=parse_transform("translate 3,-2,-1")).ok

@@ -50,6 +50,10 @@ def verified(text: str, out: str, source: str, target: str, transform: str, **kw
     ("linuxcnc/plate_drill_peck.ngc", "linuxcnc", "fanuc", "mirror xy about 50,40"),
     ("isg/prof_contour_xy.nc", "isg", "isg", "rotate 15"),
     ("fagor/bolt_circle_arcs.nc", "fagor", "fanuc", "scale 2 about 0,0,0"),
+    # a reference return (G91 G28 Z0.) on an axis the map moves: kept, the tool held at the reference point
+    ("fanuc/o1001_plate_drill_tap.nc", "fanuc", "linuxcnc", "translate 5,-3,1"),
+    ("fanuc/o1002_bracket_inch.nc", "fanuc", "grbl", "translate 0,0,-2; rotate 90"),
+    ("fanuc/o1005_bolt_circle_macro.nc", "fanuc", "fanuc", "translate 0,0,-0.5"),
 ])
 def test_examples_verify_with_the_same_transform(path: str, source: str, target: str, transform: str) -> None:
     setup = load_setup(str(TOUCHED_OFF))

@@ -21,8 +21,10 @@ control are where the table matters (DIALECTS.md 1.3, 3.3):
   whose ISG meaning we did not read].
 * ``G68 R.. X.. Y..``/``G69`` rotate the programmed contour in the plane [V: TF5200 programming manual, "Rotate
   the coordinate system in the plane (G68/G69)", CNC build V3.1.3079.33 on]: read as the neutral frame change
-  under the ``isg`` rules (``postproc.frames``). ``#ROTATION`` is kept verbatim (its ``CENTER1``/``CENTER2``
-  are "the offset of the main axis relative to the centre", whose sign is not settled [?]).
+  under the ``isg`` rules (``postproc.frames``), in G17, G18 (centre Z, X) and G19 (centre Y, Z). ``#ROTATION
+  ON/OFF`` is read as the same rotation where its centre offsets are 0 (``rotation``); with others it is kept
+  verbatim (its ``CENTER1``/``CENTER2`` are "the offset of the main axis relative to the centre", whose sign is
+  not settled [?]).
 * ``M17``/``M29`` (subroutine end) are read by the reader (``reader.RETURN_CODES``), not here.
 """
 

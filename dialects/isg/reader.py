@@ -11,7 +11,7 @@ are calls with their own level of ``V.L.`` variables (P parameters are shared, s
 
 A block continued with ``\\`` at the end of its line is one block whose text holds every line (written
 back as it was); it is located at its first line. ``#COMMENT BEGIN`` ... ``#COMMENT END`` lines are
-comment blocks. ``#VAR`` ... ``#ENDVAR``: declarations, typed or not (``declarations``). ``#SUPPRESS OFFSETS`` with axis positions is a move in machine coordinates. Every other ``#`` command is kept verbatim (``NativeCode``): it round-trips in ISG and
+comment blocks. ``#VAR`` ... ``#ENDVAR``: declarations, typed or not (``declarations``). ``#SUPPRESS OFFSETS`` with axis positions is a move in machine coordinates; ``#ROTATION`` is the contour rotation where its meaning is settled (``rotation``). Every other ``#`` command is kept verbatim (``NativeCode``): it round-trips in ISG and
 is refused by every other dialect and by the simulator, naming the command. So is a block using an
 array element (``P100[3]``, ``V.L.A[2]``), which the IR does not model (in a ``$`` statement it is an
 error: the statement's construct could not be paired).
@@ -37,6 +37,7 @@ from postproc.expr import Expr, Num, Var
 from postproc.rs274.expressions import ExprSyntaxError
 
 from .commands import command_name, describe_command
+from .rotation import rotation_command
 from .declarations import IsgTypes, parse_declaration, stored
 from postproc.isg_family.expressions import Unmodelled
 from postproc.isg_family.lexer import Lexed, lex, strip_comments
@@ -261,6 +262,11 @@ class _State:
         if words[:2] == ["#SUPPRESS", "OFFSETS"] and "[" not in code[pos:]:
             self.suppress_offsets(block, code, pos)
             return
+        if words[:1] == ["#ROTATION"]:
+            change = rotation_command(code[pos:].rstrip())
+            if change is not None:
+                block.add(change)
+                return
         name = command_name(code, pos)
         block.add(NativeCode("isg", describe_command(name), code[pos:].rstrip()))
 

@@ -380,20 +380,21 @@ class FrameEvaluator:
     def isg_rotate(self, frame: Frame, change: FrameChange, words: dict[str, float]) -> None:
         """ISG G68 [V: Beckhoff TF5200 programming manual, "Rotate the coordinate system in the plane
         (G68/G69)"]: R in degrees, absolute (none: 0); the centre's absolute coordinates on the plane's two
-        axes (G91 or not), an omitted one the current position; a G68 replaces the rotation in force. The
-        rotation acts on the programmed coordinates before every offset and mirror, which stay in the machine's
-        axis directions: ``w = offsets(R p)``. Refused [?]: outside G17 (the sense of a positive angle in G18
-        and G19 is drawn, not stated), and an omitted centre while a rotation is on (whether "the current
-        position" is then read turned is not stated)."""
+        main axes (G17 X and Y, G18 Z and X, G19 Y and Z; G91 or not), an omitted one the current position; a
+        G68 replaces the rotation in force. The rotation acts on the programmed coordinates before every
+        offset and mirror, which stay in the machine's axis directions: ``w = offsets(R p)``. A positive angle
+        turns from the plane's first main axis toward its second (G17: X toward Y, as the manual's figure
+        draws; G18: Z toward X; G19: Y toward Z), counter-clockwise seen from the third axis, the sense G03
+        runs in that plane [K: the G17 figure and the planes' axis order of "Selection of planes (G17/G18/G19)";
+        the sense in G18/G19 is not drawn]. Refused [?]: an omitted centre while a rotation is on (whether "the
+        current position" is then read turned is not stated)."""
         plane = self.modal.plane
-        if plane != "XY":
-            raise ProgramError(f"{change.describe()} in the {plane} plane is not simulated (the sense of a rotation "
-                               "there is not settled [?]): only in the XY plane")
-        if frame.rotation is not None and ("X" not in words or "Y" not in words):
+        a1, a2, _ = PLANE_AXES[plane]
+        if frame.rotation is not None and (a1 not in words or a2 not in words):
             raise ProgramError(f"{change.describe()} without its centre while a rotation is on: whether the current "
-                               "position is read turned is not settled [?]: program X and Y")
-        c1 = words["X"] if "X" in words else self._here("X", change)
-        c2 = words["Y"] if "Y" in words else self._here("Y", change)
+                               f"position is read turned is not settled [?]: program {a1} and {a2}")
+        c1 = words[a1] if a1 in words else self._here(a1, change)
+        c2 = words[a2] if a2 in words else self._here(a2, change)
         frame.rotate(plane, c1, c2, words.get("R", 0.0), self.p)
 
     def _here(self, axis: str, change: FrameChange) -> float:

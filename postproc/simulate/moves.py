@@ -89,6 +89,11 @@ class Moves:
         self.unsimulated: list[tuple[int, str, str]] = []
         """(line, setting, value) each time a setting the simulation does not apply changes
         (``UNSIMULATED``): ``verify`` compares these between the two programs."""
+        self.mark_held = False
+        """For ``verify --transform`` (``postproc.transforms.events``): a reference return's move to the reference
+        point carries ``"held"``, the axes it put at a machine position; a straight move that goes nowhere is
+        kept, ``"still": True`` (moving the program may move it); ``simulator.simulate`` marks what a block
+        programs absolutely (``"programmed"``)."""
         self.settings: dict[str, str] = dict(_INITIAL_SETTINGS)
         self.undeclared: set[str] = set()
         """Machine-specific codes warned about as undeclared (once each)."""
@@ -384,6 +389,15 @@ class Moves:
                 rounded[axis] = num(value)
         if rounded == self.rounded:
             self.pos = target
+            if self.mark_held:  # ``verify --transform`` may move it to somewhere else (``mark_held``)
+                still: Event = {"line": line, "move": kind, "still": True}
+                for axis, key in self.keys:
+                    still[key] = rounded[axis]
+                if self.diameter and "x" in still:
+                    still["x"] = num(target["X"] * 2.0)
+                if kind != "rapid":
+                    self._feed_into(still)
+                emit(still)
             return
         ev: Event = {"line": line, "move": kind}
         for axis, key in self.keys:

@@ -320,7 +320,15 @@ class Simulator(Moves):
                     ref[axis] -= shift
             if travel is not None:
                 travel.home(block, self._programmed(m.axes))
-            self.line_move("rapid", ref, line, emit)
+            if self.mark_held:
+                legs: list[Event] = []
+                self.line_move("rapid", ref, line, legs.append)
+                held = "".join(sorted(self._programmed(m.axes))).lower()
+                for ev in legs:
+                    ev["held"] = held
+                    emit(ev)
+            else:
+                self.line_move("rapid", ref, line, emit)
             return
         if self.feed is None and needs_feed(m):
             raise ProgramError(NO_FEED, self._at(block), needs="F")
@@ -410,10 +418,32 @@ class Simulator(Moves):
                 target[axis] -= shift
 
 
+def _mark_programmed(block: Block, sim: Simulator, out: list[Event], programmed: str) -> str:
+    """``mark_held``: the axes a block programs absolutely in work coordinates (``"programmed": "xy"``) on the
+    first move event it makes, or on a later block's where it makes none (a move to where the tool stands):
+    ``verify --transform`` moves a held machine position from there (``postproc.transforms.events``). Returns
+    what is still to be marked."""
+    s = block.sections
+    m = s.get("Motion")
+    axes = ""
+    if sim.modal.distance == "absolute" and "MachineCoordinates" not in s:
+        if isinstance(m, Motion) and m.mode not in (None, "home", "home2"):
+            axes = "".join(a.lower() for a in m.axes if a in "XYZ")
+        cycle = s.get("CannedCycle")
+        if cycle is not None:
+            axes += "".join(a.lower() for a in str(getattr(cycle, "plane", "")) if a in getattr(cycle, "words", ()))
+    programmed = "".join(sorted(set(programmed + axes)))
+    for ev in out:
+        if "move" in ev and programmed:
+            ev["programmed"] = programmed
+            return ""
+    return programmed
+
+
 def simulate(blocks: Iterable[Block], ctx: Context, live_after_end: list[int] | None = None,
              unsimulated: list[tuple[int, str, str]] | None = None, travel_warn: bool = False,
              cutter_rules: CutterRules | None = None,
-             kept_native: Callable[[str], bool] | None = None) -> Iterator[Event]:
+             kept_native: Callable[[str], bool] | None = None, mark_held: bool = False) -> Iterator[Event]:
     """Blocks (already lowered for ``ToolpathTarget``) -> the header, then events in execution order.
 
     Errors are reported to ``ctx.diagnostics`` with the block's location and the block is skipped;
@@ -426,11 +456,13 @@ def simulate(blocks: Iterable[Block], ctx: Context, live_after_end: list[int] | 
         sim.live_after_end = live_after_end  # the caller reads the lines recorded there
     if unsimulated is not None:
         sim.unsimulated = unsimulated  # so does verify the settings the path does not show
+    sim.mark_held = mark_held
     report = ctx.diagnostics.error
     held: list[Event] = []
     holding = True
     units: str | None = None  # the program's units at its first move, for the header
     out: list[Event] = []
+    programmed = ""
     for block in blocks:
         try:
             sim.block(block, out.append)
@@ -438,6 +470,8 @@ def simulate(blocks: Iterable[Block], ctx: Context, live_after_end: list[int] | 
             report(err.located(ctx.at(block)))
             out.clear()
             continue
+        if mark_held:
+            programmed = _mark_programmed(block, sim, out, programmed)
         if not out:
             continue
         if holding:

@@ -83,7 +83,7 @@ def toolpath_events(lines: Iterable[str], *, file: str, dialect: str | type[Dial
                     unsimulated: list[tuple[int, str, str]] | None = None,
                     on_unsupported: str = "error", compensate: bool = True,
                     arguments: Mapping[str, float] | None = None,
-                    kept_native: Callable[[str], bool] | None = None) -> Iterator[Event]:
+                    kept_native: Callable[[str], bool] | None = None, mark_held: bool = False) -> Iterator[Event]:
     """Read a program in ``dialect`` and yield its toolpath (header first). Raises ``ErrorList`` at the
     end when the program had errors (unless ``check`` is False: the caller then checks
     ``diagnostics``); events already yielded then belong to a failed run. ``live_after_end``, if given,
@@ -93,7 +93,9 @@ def toolpath_events(lines: Iterable[str], *, file: str, dialect: str | type[Dial
     where the dialect has rules for it (``verify`` against a dialect that has none). ``arguments``
     (``{"A": 30.0}``): the program is a macro file run on its own, as called with these arguments
     (``postproc.reading.macro_arguments``). ``kept_native``: which stretches of cutter compensation stay
-    settings while the others are simulated (``Moves.kept_native``, for ``verify``)."""
+    settings while the others are simulated (``Moves.kept_native``, for ``verify``). ``mark_held``: a reference
+    return's move to the reference point names the axes it put at a machine position (``"held": "xz"``;
+    ``verify --transform``)."""
     setup = setup or MachineSetup()
     diagnostics = diagnostics or Diagnostics()
     registry = registry or default_registry()
@@ -108,7 +110,7 @@ def toolpath_events(lines: Iterable[str], *, file: str, dialect: str | type[Dial
         steps = [step for step in registry.lowerings if step not in TRANSLATE_ONLY]
         lowered = lower_for(blocks, ctx, ToolpathTarget, "error", steps)
         yield from simulate(lowered, ctx, live_after_end, unsimulated, on_unsupported == "warn",
-                            ctx.cutter_rules if compensate else None, kept_native)
+                            ctx.cutter_rules if compensate else None, kept_native, mark_held)
     if check:
         diagnostics.check()
 

@@ -23,7 +23,7 @@ from ..plugins import Registry, default_registry
 from ..setup.machine_setup import MachineSetup
 from ..drawing.overlay import Overlay
 from ..transforms.carry import mirrors_xy
-from ..transforms.events import moved_events, moved_setup
+from ..transforms.events import moved_events
 from ..transforms.spec import ProgramTransform
 from .normal_move import Move
 from .compare import (Report, _controlled, compare, compare_after_end, compare_settings, describe,
@@ -55,14 +55,12 @@ def verify_lines(lines_in: Iterable[str], lines_out: Iterable[str], *, file_in: 
     setup = setup or MachineSetup()
     if target_setup is None:
         target_setup = _same_machine(setup, source, registry)
-    if transform is not None:
-        target_setup = moved_setup(target_setup, transform)
+    dialects = registry or default_registry()
     diag_in, diag_out = Diagnostics(), Diagnostics()
     after_in: list[int] = []
     after_out: list[int] = []
     settings_in: list[tuple[int, str, str]] = []
     settings_out: list[tuple[int, str, str]] = []
-    dialects = registry or default_registry()
     compensate = _both_compensate(source, target, registry, setup, target_setup)
     out_arguments = arguments if arguments and dialects.dialect(target).MACRO_ARGUMENTS else None
     kept: Callable[[str], bool] | None = None
@@ -82,14 +80,14 @@ def verify_lines(lines_in: Iterable[str], lines_out: Iterable[str], *, file_in: 
         compensate = compensate or kept is not None
     events_in = toolpath_events(lines_in, file=file_in, dialect=source, setup=setup, registry=registry,
                                 diagnostics=diag_in, check=False, live_after_end=after_in, unsimulated=settings_in,
-                                compensate=compensate, arguments=arguments, kept_native=kept)
+                                compensate=compensate, arguments=arguments, kept_native=kept,
+                                mark_held=transform is not None)
     events_out = toolpath_events(lines_out, file=file_out, dialect=target, setup=target_setup,
                                  registry=registry, diagnostics=diag_out, check=False, live_after_end=after_out,
                                  unsimulated=settings_out, compensate=compensate, arguments=out_arguments)
     start_in = start_position(setup)
     if transform is not None:
-        events_in = moved_events(events_in, transform)
-        start_in = start_position(target_setup)
+        events_in = moved_events(events_in, transform, start_in)  # (the start is where the machine stands)
     if overlay is not None:
         reading = dialects.dialect(source)
         overlay.begin(start_position(setup), start_position(target_setup), reading.reads_lathe(setup))

@@ -3,8 +3,8 @@ writer: first the map (in the program's own units, as it tracks them), then the 
 
 A lathe program (``Context.lathe``) takes ``--units``: its X is a length like any (a diameter converts as its
 radius), its surface speed under G96 with the lengths (``units``); a lathe cycle kept for the target is refused
-(its parameters are not converted), one the target lacks arrives as its moves. ``--transform`` is refused on a
-lathe (``transform_program``).
+(its parameters are not converted), one the target lacks arrives as its moves. ``--transform`` takes a shift
+along Z on a lathe and refuses any other map by what it does (``carry.lathe_refusal``).
 
 They run last so that every step before them (frames evaluated, cycles expanded, compensation resolved)
 has made the blocks the target gets: what they carry is what is written.
@@ -18,7 +18,7 @@ from ..context import Context
 from ..errors import UsageError
 from ..ir import Block
 from ..records import record
-from .carry import move_program
+from .carry import lathe_refusal, move_program
 from .spec import ProgramTransform, parse_transform
 from .units import convert_units
 
@@ -48,9 +48,9 @@ def program_options(units: str | None = None, transform: str | ProgramTransform 
 def transform_program(blocks: Iterator[Block], ctx: Context, options: ProgramOptions) -> Iterator[Block]:
     """The map, then the units (each only when asked for)."""
     if options.transform is not None and ctx.lathe:
-        raise UsageError("--transform takes mill programs only: on a lathe X is a diameter or radius about the "
-                         "spindle's axis, its incremental U/W, reference returns and cycles are not carried, and "
-                         "verify cannot yet follow a reference return under a moved program")
+        refusal = lathe_refusal(options.transform)
+        if refusal is not None:
+            raise UsageError(refusal)
     if options.transform is not None:
         blocks = move_program(blocks, ctx, options.transform)
     if options.units is not None:

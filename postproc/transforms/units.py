@@ -161,7 +161,9 @@ class UnitConverter:
         if isinstance(section, PathControl):
             return PathControl(section.mode, section.one_shot, _maybe(section.tolerance, k), _maybe(section.naive, k))
         if isinstance(section, FrameChange):
-            changed = {a: _times(v, k) for a, v in section.words.items() if a in LINEAR}
+            # (a length of 0 stays 0: ISG's #ROTATION centred at the origin has no X/Y/Z words to respell)
+            changed = {a: _times(v, k) for a, v in section.words.items() if a in LINEAR
+                       and not (isinstance(v, float) and v == 0.0)}
             words = {**section.words, **changed}
             return FrameChange(section.kind, words, section.rules, section.family, respell(section.text, changed))
         if isinstance(section, RigidTap):

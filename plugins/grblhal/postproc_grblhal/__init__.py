@@ -9,7 +9,8 @@ What grblHAL accepts, from its source (github.com/grblHAL/core, stored commit f8
   G59.1-G59.3 (nine work systems with ``COMPATIBILITY_LEVEL`` <= 1, the default); G95 feed per revolution,
   only with a spindle that reports its position (``spindle->hal->get_data``); G98/G99; M6 (every build: the
   ``$341`` setting asks for a manual change or ignores it, an ATC runs it); G5/G5.1 splines, G10 L1/L10/L11
-  (tool data), G92.2/G92.3, M61-M68 and M70-M73 kept verbatim.
+  (tool data), G92.3, M61-M68 and M70-M73 kept verbatim. G92, G92.1 and G92.2 are LinuxCNC's, simulated and
+  evaluated for other targets as grbl's G92 (``codes``).
 * Canned cycles G73, G81-G89 are parsed; the motion control runs G73 and G81-G84 (``motion_control.c``
   ``mc_canned_drill``), G85/G86/G89 are "not implemented" (``gcode.h``). G81/G82 move as RS274/NGC's
   except for G98's level (``cycles``), so they stay native where the source's cycle moves alike; G73/G83

@@ -37,6 +37,8 @@ class GrblhalBlockSyntax(GrblFamilyBlockSyntax):
     """G10 L2 P0-P9 sets a work system's offset (P0 the active one); other G10 forms are kept verbatim."""
     DATA_INCREMENTAL: ClassVar[bool] = False
     DATA_P0_ACTIVE: ClassVar[bool] = True
+    FRAME_RULES: ClassVar[str] = "rs274"
+    """G92/G92.1/G92.2 (``codes``) mean LinuxCNC's."""
     M_GROUPS = M_GROUPS
     NO_M19 = NO_M19
 

@@ -49,6 +49,9 @@ ROWS = (
     ("G83", "09", "cycle", "peck_deep"),
     ("G90", "03", "distance", "absolute"),
     ("G91", "03", "distance", "incremental"),
+    ("G92", "00", "frame", "origin"),
+    ("G92.1", "00", "frame", "origin_clear"),
+    ("G92.2", "00", "frame", "origin_suspend"),
     ("G93", "05", "feed_mode", "inverse_time"),
     ("G94", "05", "feed_mode", "per_min"),
     ("G95", "05", "feed_mode", "per_rev"),
@@ -75,15 +78,22 @@ in every build: ``ENABLE_PATH_BLENDING``, "do NOT enable" in ``config.h``); M6 i
 (``$341`` chooses a manual change, or ignores it; an ATC runs it); M7 needs a driver with mist coolant
 (``hal.coolant_cap.mist``); M19 is a row for a build with a user M code for it (the set-up says so). G33 (K the
 distance per revolution along the path) and G96 S D/G97 are read on a lathe set-up only, with G7/G8
-(``lathe``): grblHAL's lathe mode, ``$32``."""
+(``lathe``): grblHAL's lathe mode, ``$32``.
+
+G92, G92.1 and G92.2 are LinuxCNC's, read into the frame under its rules (``postproc.frames``), as grbl's
+[V: ``gcode.c`` NonModal_SetCoordinateOffset: ``G92 = MPos - WCS - TLO - WPos`` on each named axis, the others
+kept, absolute whatever G90/G91, error 26 without an axis word; G92.1 zeroes the offset in force and the stored
+one; G92.2 zeroes the offset in force only]. G92.3 stays verbatim (``NATIVE_G``): it restores the offset from
+non-volatile storage, which G92 writes only while G92 persistence is on (``$384=0``, the default at
+``COMPATIBILITY_LEVEL`` <= 1); with ``$384=1`` it restores whatever an earlier run stored, which no program
+says [?: the set-up does not say which]."""
 
 NATIVE_G: dict[str, str] = {
     "5": "cubic spline", "5.1": "quadratic spline", "10": "set offsets and tool data (G10 L1/L2/L10/L11/L20)",
     "28.1": "store G28 position", "30.1": "store G30 position",
     "38.2": "probe toward, error on failure", "38.3": "probe toward", "38.4": "probe away, error on failure",
     "38.5": "probe away", "43.2": "additional tool length offset", "91.1": "incremental arc centres (the default)",
-    "92": "coordinate system offset", "92.1": "clear G92 offsets", "92.2": "suspend G92 offsets",
-    "92.3": "restore G92 offsets",
+    "92.3": "restore G92 offsets from storage (what they are depends on the $384 setting)",
 }
 """grblHAL codes kept verbatim: they round-trip to grblHAL and are unsupported anywhere else [V: gcode.c]."""
 
