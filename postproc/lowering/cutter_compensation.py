@@ -21,8 +21,11 @@ too. In the ZX plane (G18) the plane's points are (Z, X), as the simulation has 
 On a lathe (the ZX plane) the path is the imaginary tool tip's, as the simulation writes it: the nose
 centre one nose radius beside the programmed path, moved by the radius in the tip's direction
 (``<Tool tip>``, ``postproc.compensation.nose``). The lathe lowering has written X as a radius for a
-target that is no lathe control (``postproc.cycles.lathe_lowering``), so the geometry is true; a target
-that takes diameters and lacks compensation is refused (none is registered).
+target that is no lathe control (``postproc.cycles.lathe_lowering``), so the geometry is true. A lathe
+target programmed in diameters (a Fanuc T stretch towards LinuxCNC in G7, whose rules differ) keeps X a
+diameter in its blocks: the resolver halves it where it reads it and doubles it where it writes it; an
+arc's I stays a radius [V: rs274 2.9, G7 G18 ``G2 X20 Z-5 I5 K0`` from X10 Z0 turns about X radius 10;
+K: Fanuc T, I is a radius in either mode].
 
 Inverse time (G93) under compensation: the controller runs each compensated move at F times the
 length of the *programmed* move per minute, an outside corner's arc at the rate of the move after it
@@ -163,7 +166,7 @@ class _Resolver:
                  trial: CutterRules | None = None) -> None:
         self.ctx = ctx
         self.diameters = diameters
-        """X words are diameters in the blocks (compensation on a lathe is then refused)."""
+        """X words are diameters in the blocks (read halved, written doubled: see the module docstring)."""
         self.rules = rules
         self.keeps = keeps
         """Whether a G41/G42 by register stays for the target to write (with its G40); None: none does."""
@@ -205,12 +208,14 @@ class _Resolver:
 
     def run(self, blocks: Iterator[Block]) -> Iterator[Block]:
         idle = True
+        radii = not self.diameters
+        """X is a radius in the blocks: the common block's move is tracked here (else by ``_track``)."""
         for block in blocks:
             sections = block.sections
             if idle and "CutterCompensation" not in sections and "DynamicCutterCompensation" not in sections \
                     and _MODAL.isdisjoint(sections):
                 motion = sections.get("Motion")  # the common block: a move, tracked for a later entry move
-                if isinstance(motion, Motion) and self.absolute and motion.mode in MOVES \
+                if isinstance(motion, Motion) and self.absolute and motion.mode in MOVES and radii \
                         and "MachineCoordinates" not in sections:
                     pos, scale = self.pos, self.scale
                     for axis, value in motion.axes.items():
@@ -322,7 +327,6 @@ class _Resolver:
             del sections["DynamicCutterCompensation"]
             sections.pop("NativeCode", None)  # its G41.1/G42.1 D.., which the section says (inert)
             block.changed()
-            self._lathe_check("cutter compensation by a diameter")
             if self._idle():
                 self.cutter.axes = PLANE_AXES[self.plane]
                 self._entry_start()
@@ -338,7 +342,6 @@ class _Resolver:
                 self.cutter.cancel()
                 self._mirror(lambda cutter: cutter.cancel())
             else:
-                self._lathe_check("cutter compensation")
                 register = self._register(cc.register)
                 radius = self._radius(register, block)
                 tip = TIPS[self.table.tip(register)] if self._nose() else (0, 0)
@@ -419,12 +422,6 @@ class _Resolver:
             raise UnsupportedError("a change of the work origin with cutter compensation on cannot be resolved")
         self.pos = {axis: None for axis in self.pos}
 
-    def _lathe_check(self, what: str) -> None:
-        """Tool nose compensation needs X as a radius in the written path: a lathe target programmed in
-        diameters that lacks compensation is refused."""
-        if self._nose() and self.diameters:
-            raise UnsupportedError(f"{what} on a lathe cannot be resolved for a target programmed in diameters")
-
     def _nose(self) -> bool:
         """Compensation on a lathe, in its ZX plane: the path is the imaginary tool tip's."""
         return self.plane == "ZX" and self.ctx.lathe
@@ -432,6 +429,9 @@ class _Resolver:
     def _register(self, register: int | Expr | None) -> int:
         if isinstance(register, Expr):
             raise UnsupportedError("cutter compensation with a computed register cannot be resolved")
+        if register is None and self.rules.register_absent == "offset":  # the lathe lowering names it
+            raise ProgramError("tool nose radius compensation takes the radius of the offset the T code selected, "
+                               "and none is (program T with its offset number, T0101)")
         if register is None and self.rules.register_absent == "modal":
             if self.last_register is None:
                 raise ProgramError("cutter compensation without its register takes the register programmed last, "
@@ -473,16 +473,17 @@ class _Resolver:
                 raise UnsupportedError("a computed position under cutter compensation cannot be resolved")
             if axis not in target:
                 raise UnsupportedError(f"motion of axis {axis} with cutter compensation on cannot be resolved")
+            scale = self.scale * 0.5 if axis == "X" and self.diameters else self.scale
             if self.absolute:
                 if axis in self.floating:
                     if not self._idle():
                         raise ProgramError(f"an absolute {axis} in a compensated stretch of a program that moved by "
                                            "increments from an unknown start point")
                     self.floating.discard(axis)
-                target[axis] = value * self.scale
+                target[axis] = value * scale
             else:
                 known = target[axis]
-                target[axis] = None if known is None else known + value * self.scale
+                target[axis] = None if known is None else known + value * scale
         return target
 
     def _track(self, block: Block) -> None:
@@ -638,6 +639,8 @@ class _Resolver:
                                        "joins it to a nearly tangent move without a corner and runs it so; written as "
                                        "an arc, the target refuses it)", self.ctx.at(block))
             center = {a1: (cc[0] - self.at[0]) / scale, a2: (cc[1] - self.at[1]) / scale}
+        if self.diameters and "X" in axes:
+            axes["X"] = axes["X"] * 2.0  # a diameter (an arc's I stays a radius)
         axes = {a: _noise_free(axes[a]) for a in "XYZ" if a in axes}  # written X, Y, Z
         if center is not None:
             center = {a: _noise_free(center[a]) for a in "XYZ" if a in center}
