@@ -135,10 +135,16 @@ M30
 """
 
 
+def _turret_lathe(tip: int = 3) -> MachineSetup:
+    """The Fanuc 0i-TF set-up with offset 02 holding a nose radius of ``R`` and ``tip``."""
+    setup = load_setup(str(SETUPS / "fanuc_0i_tf.xml"))
+    setup.tools = {"2": ToolData(number=2, radius=R, tip=tip)}
+    return setup
+
+
 def _to_linuxcnc(text: str) -> str:
     out = io.StringIO()
-    translate(io.StringIO(text), out, file="t.nc", source="fanuc", target="linuxcnc",
-              setup=load_setup(str(SETUPS / "fanuc_0i_tf.xml")))
+    translate(io.StringIO(text), out, file="t.nc", source="fanuc", target="linuxcnc", setup=_turret_lathe())
     return out.getvalue()
 
 

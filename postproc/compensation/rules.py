@@ -50,6 +50,9 @@ class CutterRules:
     exit_arc_known: bool = True
     """Whether the rules for an arc right after a cancel are known (``arc_after_cancel`` says which); when
     not, such an arc is refused as not simulated."""
+    profile_cycles: frozenset[str] = frozenset()
+    """The lathe cycles (``LatheCycle`` kinds) the controller runs under G41/G42, compensating the moves
+    of their profile as any others (Fanuc T's G70); any other cycle under compensation is refused."""
     look_ahead: int = 10_000
     """Blocks without motion in the plane the controller looks past to find the next move (the corner it
     makes past more is not modelled: refused). LinuxCNC's queue has no such bound (``cutter_radius``'s
@@ -148,6 +151,9 @@ FANUC_B = CutterRules(
 #     compensated at its start and fully compensated at its end; the departure starts "at a right angle to
 #     the last programmed block" (the type A cancel).
 # [K] Fanuc T: G41/G42 name no register, the offset number of the T code is the register (T0102: 2).
+# [K] Fanuc T multiple repetitive cycles (0i-D, "Stock removal in turning (G71)", its notes on tool nose
+#     radius compensation): G41/G42 is programmed before G70-G73 and G40 outside the finishing shape's
+#     blocks ns..nf (G40/G41/G42 inside them is an alarm); G70 then runs the shape compensated.
 # [?] GSK980TDc: the user manual's "tool nose radius compensation" chapter (C type, start-up, offset mode,
 #     cancel; T column 0-9) is assumed to follow Fanuc's type A figures: not read in this session.
 FANUC_T = CutterRules(
@@ -160,6 +166,7 @@ FANUC_T = CutterRules(
     planes=("XY", "ZX", "YZ"),  # [K] the plane G17/G18/G19 selects (a lathe's G18)
     inside_corner="meet",
     look_ahead=1,  # [K] two blocks read ahead
+    profile_cycles=frozenset(("turn_finish",)),  # [K] G41/G42 before G70, G40 after it, none in ns..nf
 )
 """Fanuc T (and GSK) tool nose radius compensation, start-up type A (parameter SUP = 0)."""
 FANUC_T_B = CutterRules(
@@ -172,5 +179,6 @@ FANUC_T_B = CutterRules(
     planes=("XY", "ZX", "YZ"),
     inside_corner="meet",
     look_ahead=1,
+    profile_cycles=frozenset(("turn_finish",)),
 )
 """Fanuc T tool nose radius compensation, start-up type B (parameter SUP = 1)."""

@@ -58,7 +58,7 @@ from ..context import Context
 from ..dialect import Dialect
 from ..errors import PostprocError, ProgramError, UnsupportedError
 from ..expr import Expr
-from ..ir import (Block, CutterCompensation, DataSetting, DistanceMode, Feed, FeedMode, Motion, Plane,
+from ..ir import (Block, CompoundMotion, CutterCompensation, DataSetting, DistanceMode, Feed, FeedMode, Motion, Plane,
                   ProgramControl, Section, ToolChange, ToolLengthOffset, ToolSelect, Units, WorkOffset)
 from ..compensation.cutter_radius import CutterRadius, Item, Segment
 from ..compensation.dynamic import DynamicCutterCompensation
@@ -360,10 +360,16 @@ class _Resolver:
             self._back_to_inverse_time(block)
             self.out.append(block)
             return
-        if "CompoundMotion" in sections or "CannedCycle" in sections:
+        compound = sections.get("CompoundMotion")
+        if isinstance(compound, CompoundMotion) and "CannedCycle" not in sections \
+                and compound.term in self.rules.profile_cycles:
+            self._compound(block, compound)
+        elif "CompoundMotion" in sections or "CannedCycle" in sections:
             raise ProgramError("a canned cycle with cutter compensation on cannot be run (cancel it first)")
         motion = sections.get("Motion")
-        if isinstance(motion, Motion) and (motion.axes or _full_circle(motion)):
+        if compound is not None:
+            pass
+        elif isinstance(motion, Motion) and (motion.axes or _full_circle(motion)):
             self._move(block, motion)
         elif isinstance(motion, Motion) and motion.mode is not None and motion.mode not in MOVES:
             raise UnsupportedError(f"motion '{motion.mode}' with cutter compensation on cannot be resolved")
@@ -379,6 +385,29 @@ class _Resolver:
                 self.cutter.stop()
                 self.cutter.cancel()
                 self._mirror(_stop_and_cancel)
+
+    def _compound(self, block: Block, compound: CompoundMotion) -> None:
+        """A lathe finishing cycle the source compensates as its profile (``CutterRules.profile_cycles``):
+        the block without its moves waits as an event, then each move goes through the compensation as a
+        block of its own (at the feed the cycle gives it), written as the compensated move."""
+        del block.sections["CompoundMotion"]
+        block.changed()
+        if block.sections:
+            self.cutter.event({"block": block})
+            self._mirror(lambda cutter: cutter.event({}))
+        feed: Feed | None = None
+        for item in compound.items:
+            if isinstance(item, Feed):
+                feed = item
+            elif isinstance(item, Motion) and item.mode in MOVES:
+                move = Block(block.line, None, "\n")
+                move.sections = {"Motion": item}
+                if feed is not None and item.mode != "rapid":
+                    move.sections["Feed"], feed = feed, None
+                self._move(move, item)
+            else:
+                raise UnsupportedError(f"a {type(item).__name__} inside a lathe cycle under tool nose radius "
+                                       "compensation cannot be resolved")
 
     def _modal(self, sections: dict[str, Section]) -> None:
         units = sections.get("Units")
@@ -490,7 +519,10 @@ class _Resolver:
         """The programmed point after a block run with no compensation on."""
         sections = block.sections
         motion = sections.get("Motion")
-        if "CompoundMotion" in sections or "MachineCoordinates" in sections:
+        compound = sections.get("CompoundMotion")
+        if isinstance(compound, CompoundMotion) and "MachineCoordinates" not in sections:
+            self._track_compound(compound)
+        elif "CompoundMotion" in sections or "MachineCoordinates" in sections:
             self.pos = {axis: None for axis in self.pos}
         elif isinstance(motion, Motion) and motion.axes:
             if motion.mode in ("home", "home2"):
@@ -503,6 +535,21 @@ class _Resolver:
         u, v = self._in_plane(self.pos)
         if u is not None and v is not None:
             self.at = (u, v)
+
+    def _track_compound(self, compound: CompoundMotion) -> None:
+        """Where an expanded cycle (a lathe roughing cycle, before a G42 for its finishing cycle) leaves the
+        tool: its moves are absolute (``CompoundMotion``); anything else makes the point unknown."""
+        absolute, self.absolute = self.absolute, True
+        try:
+            for item in compound.items:
+                if isinstance(item, Motion) and item.mode in MOVES:
+                    self.pos = self._target(item)
+                elif isinstance(item, Motion):
+                    self.pos = {axis: None for axis in self.pos}
+        except UnsupportedError:
+            self.pos = {axis: None for axis in self.pos}
+        finally:
+            self.absolute = absolute
 
     def _move(self, block: Block, motion: Motion) -> None:
         if "MachineCoordinates" in block.sections or motion.mode in ("home", "home2"):
