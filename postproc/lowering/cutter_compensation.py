@@ -686,8 +686,9 @@ class _Resolver:
                                        "joins it to a nearly tangent move without a corner and runs it so; written as "
                                        "an arc, the target refuses it)", self.ctx.at(block))
             center = {a1: (cc[0] - self.at[0]) / scale, a2: (cc[1] - self.at[1]) / scale}
-        if self.diameters and "X" in axes:
-            axes["X"] = axes["X"] * 2.0  # a diameter (an arc's I stays a radius)
+        x = axes.get("X")
+        if self.diameters and isinstance(x, float):
+            axes["X"] = x * 2.0  # a diameter (an arc's I stays a radius)
         axes = {a: _noise_free(axes[a]) for a in "XYZ" if a in axes}  # written X, Y, Z
         if center is not None:
             center = {a: _noise_free(center[a]) for a in "XYZ" if a in center}
