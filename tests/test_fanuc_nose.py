@@ -352,3 +352,21 @@ def test_linuxcnc_g42_by_register_becomes_gsk_moves() -> None:
     out, report = _translate(text, "linuxcnc", "gsk", setup)
     assert "G42" not in out and "G01 X38.4 Z0.4 F100." in out
     assert report.ok and report.max_deviation < 1e-6, report
+
+
+def test_start_up_type_b_ends_as_an_outer_corner() -> None:
+    """``<Controller cutterStartup="B">`` (parameter SUP = 1): the start-up move (along +X from X radius 5 to
+    10 at Z2) ends as the outer 90 degree corner with the turn after it would, where the offset lines
+    meet: Z = 2 + r (right of +X), X = 10 + r (right of -Z); type A would end at Z2. Tip 3: (2, 10). The
+    type B cancel is not modelled: refused where it stands."""
+    text = PROFILE.replace("G0 X62. Z2.\n", "G0 X10. Z2.\n").replace("G42 G0 X20. Z2.", "G42 G1 X20. Z2. F0.2")
+    setup = _setup(3)
+    setup.controller.cutter_startup = "B"
+    moves: list[dict[str, Any]] = []
+    with pytest.raises(PostprocError) as err:
+        for ev in toolpath_events(io.StringIO(text), file="t.nc", dialect="fanuc", setup=setup):
+            if "move" in ev:
+                moves.append({**ev, **ev.get("controlled", {})})
+    assert moves[1]["line"] == 7
+    assert moves[1]["z"] == pytest.approx(2.0 + R - R) and moves[1]["x"] == pytest.approx(2 * (10.0 + R - R))
+    assert "t.nc:13:1: error: the cancel move of start-up type B" in str(err.value)
