@@ -25,6 +25,7 @@ target that is no lathe control (``postproc.cycles.lathe_lowering``), so the geo
 target programmed in diameters (a Fanuc T stretch towards LinuxCNC in G7, whose rules differ) keeps X a
 diameter in its blocks: the resolver halves it where it reads it and doubles it where it writes it; an
 arc's I stays a radius [V: rs274 2.9, G7 G18 ``G2 X20 Z-5 I5 K0`` from X10 Z0 turns about X radius 10;
+V: grblHAL core ``gcode.c`` (f80fc34), diameter mode halves the X word only, an arc's IJK untouched;
 K: Fanuc T, I is a radius in either mode].
 
 Inverse time (G93) under compensation: the controller runs each compensated move at F times the
