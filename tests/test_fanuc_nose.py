@@ -342,6 +342,22 @@ def test_grbl_gets_the_tip_path_as_moves(tip: int) -> None:
     assert words["X"] == pytest.approx(x + tx * R) and words["Z"] == pytest.approx(z + tz * R)  # a radius
 
 
+def test_grblhal_in_diameter_mode_gets_the_tip_path_in_diameters() -> None:
+    """grblHAL's lathe mode (G7) has no nose compensation here: the tip's path as moves, X diameters and an
+    arc's I a radius [V: grblHAL ``gcode.c`` halves the X word only], the hand-derived points of tip 3."""
+    setup = _setup(3)
+    setup.tools["2"] = ToolData(number=2, radius=R, tip=3, x=0.0, z=0.0)
+    setup.controller.tool_table = True  # a build with a tool table takes the offset as G43 H02
+    out, report = _translate(PROFILE.replace("G99", "G98").replace("G96 S180 M03\nG50 S2500\n", "S800 M03\n")
+                             .replace("F0.2", "F100."), "fanuc", "grblhal", setup)
+    assert "G7" in out and "G42" not in out
+    moves = _moves(out)[:-1]
+    for line, point in zip(moves, _expected(3)[1:-1]):
+        words = dict((w[0], float(w[1:])) for w in line.split()[1:] if w[0] in "XZ")
+        assert words["X"] == point["x"] and words["Z"] == point["z"], line
+    assert report.ok and report.max_deviation < 1e-6, report
+
+
 def test_linuxcnc_g42_by_register_becomes_gsk_moves() -> None:
     """LinuxCNC's G42 D1 cuts another path than GSK's G42 would (its entry ends square to the entry move):
     GSK gets LinuxCNC's path as moves. By hand (tip 3, r 0.8): the entry from (2, 30) to (2, 20) along -X
