@@ -142,7 +142,9 @@ FANUC_B = CutterRules(
 
 # Tool nose radius compensation of Fanuc T (and GSK, which follows Fanuc T's rules), as data: the same
 # offset vector rules as cutter compensation C, in the ZX plane, the radius and the imaginary tool nose
-# direction read from the offset the T code selected.
+# direction read from the offset the T code selected. The [K] tags below are the manuals as known; their
+# text was not re-read in this session (the search corpora hold none of it): the hand-derived tests
+# (tests/test_fanuc_nose.py) check the geometry these rules make, not the rules themselves.
 # [K] B-64304EN (0i-D operator's manual, common to M and T) describes "tool radius / tool nose radius
 #     compensation" in one chapter: start-up types A and B by parameter SUP, offset mode corners and the
 #     cancel are one set of figures for both; the lathe adds the imaginary tool nose (a direction 0-9 in

@@ -362,14 +362,12 @@ class _Resolver:
             self.out.append(block)
             return
         compound = sections.get("CompoundMotion")
-        if isinstance(compound, CompoundMotion) and "CannedCycle" not in sections \
-                and compound.term in self.rules.profile_cycles:
-            self._compound(block, compound)
-        elif "CompoundMotion" in sections or "CannedCycle" in sections:
+        if "CannedCycle" in sections or (compound is not None and not (
+                isinstance(compound, CompoundMotion) and compound.term in self.rules.profile_cycles)):
             raise ProgramError("a canned cycle with cutter compensation on cannot be run (cancel it first)")
         motion = sections.get("Motion")
-        if compound is not None:
-            pass
+        if isinstance(compound, CompoundMotion):
+            self._compound(block, compound)  # a finishing cycle's profile, compensated move by move
         elif isinstance(motion, Motion) and (motion.axes or _full_circle(motion)):
             self._move(block, motion)
         elif isinstance(motion, Motion) and motion.mode is not None and motion.mode not in MOVES:
