@@ -18,7 +18,7 @@ from hypothesis import strategies as st
 
 from postproc.compensation.cutter_radius import Segment
 from postproc.compensation.geometry_for import cutter_for
-from postproc.compensation.rules import FANUC_A, FANUC_B
+from postproc.compensation.rules import FANUC_A, FANUC_B, FANUC_T, FANUC_T_B
 from postproc.errors import ErrorList, ProgramError, UnsupportedError
 from postproc.setup.machine_setup import MachineSetup
 from postproc.simulate.toolpath import toolpath_events
@@ -280,7 +280,9 @@ def test_the_set_up_chooses_start_up_type_b_and_its_unread_cancel_is_refused() -
     assert Fanuc.cutter_rules(setup) is FANUC_B
     lathe = with_tools()
     lathe.input.machine_type = "lathe"
-    assert Fanuc.cutter_rules(lathe) is None  # Fanuc T: not simulated
+    assert Fanuc.cutter_rules(lathe) is FANUC_T  # Fanuc T: tool nose radius compensation, by the same SUP
+    lathe.controller.cutter_startup = "B"
+    assert Fanuc.cutter_rules(lathe) is FANUC_T_B
     haas = with_tools()
     haas.controller.variant = "haas"
     assert Fanuc.cutter_rules(haas) is None  # Haas: its own settings, not modelled

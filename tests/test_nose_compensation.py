@@ -135,20 +135,29 @@ M30
 """
 
 
+def _turret_lathe(tip: int = 3) -> MachineSetup:
+    """The Fanuc 0i-TF set-up with offset 02 holding a nose radius of ``R`` and ``tip``."""
+    setup = load_setup(str(SETUPS / "fanuc_0i_tf.xml"))
+    setup.tools = {"2": ToolData(number=2, radius=R, tip=tip)}
+    return setup
+
+
 def _to_linuxcnc(text: str) -> str:
     out = io.StringIO()
-    translate(io.StringIO(text), out, file="t.nc", source="fanuc", target="linuxcnc",
-              setup=load_setup(str(SETUPS / "fanuc_0i_tf.xml")))
+    translate(io.StringIO(text), out, file="t.nc", source="fanuc", target="linuxcnc", setup=_turret_lathe())
     return out.getvalue()
 
 
 def test_turret_offset_is_the_register_of_g42_towards_linuxcnc() -> None:
-    """Fanuc T's G42 compensates by the offset T0102 selected (02) [K]; LinuxCNC's G42 without D would take
-    the spindle tool's entry (1), so D02 is written, as G43 H02 for its X/Z (on the move that applies them)."""
+    """Fanuc T's G42 compensates by the offset T0102 selected (02) [K], written as G43 H02 for its X/Z (on
+    the move that applies them). LinuxCNC's own G42 would cut another path around G70's profile (its
+    entry, its arcs about outer corners), so the stretch is Fanuc's compensated moves: the profile's first
+    move starts it, ending square to the turn after it, nose centre (2, 10 + r), tip 3 at (2 - r, 10): X20
+    Z1.2 (``test_fanuc_nose`` keeps ``G42 D02`` where both rules agree)."""
     ngc = _to_linuxcnc(FANUC_T)
     assert "T1 M6" in ngc and "G43 H02 G0 X62. Z2." in ngc  # H02 on the move that applies it (offsets' rule)
-    assert "G42 D02 G0 X62. Z2." in ngc
-    assert "G40 G0 X100. Z50." in ngc
+    assert "G42" not in ngc and "G0 X20. Z1.2\n" in ngc
+    assert "G0 X100. Z50." in ngc
 
 
 def test_roughing_cycle_under_nose_compensation_is_refused_where_it_stands() -> None:
@@ -219,27 +228,28 @@ M30
 """
 
 
-@pytest.mark.parametrize("target,written", [("gsk", "G42 G00 X20. Z2."), ("linuxcnc", "G42 D02 G0 X20. Z2.")])
+@pytest.mark.parametrize("target,written", [("gsk", "G42 G00 X20. Z2.")])
 def test_fanuc_nose_compensation_stays_native_and_verifies(target: str, written: str) -> None:
-    """Fanuc T's G42 by offset 02 is GSK's G42 (the same offset columns) and LinuxCNC's G42 D02: verify
-    compares the setting, read as register 2 on every side (LinuxCNC's D02; Fanuc's and GSK's the offset
-    T0102 selected)."""
+    """Fanuc T's G42 by offset 02 is GSK's G42 (the same offset columns and rules): verify simulates both
+    (LinuxCNC: ``test_fanuc_nose``)."""
     from postproc.simulate.verify import verify_lines
-    setup = load_setup(str(SETUPS / "fanuc_0i_tf.xml"))
+    setup = _turret_lathe()
     out = io.StringIO()
     translate(io.StringIO(TURNING), out, file="t.nc", source="fanuc", target=target, setup=setup)
     assert written in out.getvalue()
     report = verify_lines(io.StringIO(TURNING), io.StringIO(out.getvalue()), file_in="t.nc", file_out="o.nc",
                           source="fanuc", target=target, setup=setup)
-    assert report.ok, report
-    assert any("cutter compensation: not simulated, the same on both sides (right D2 (line 7)" in note
-               for note in report.ignored)
+    assert report.ok and report.max_deviation == 0.0, report
+    assert not any("cutter compensation" in note for note in report.ignored)
 
 
 def test_a_register_is_no_word_on_a_turret_lathe() -> None:
-    """LinuxCNC's G42 D1 towards GSK: its G42 reads the offset of the T code, so the D is refused where it
-    stands, not written."""
-    text = "G18 G21 G7 G90 G94\nG0 X60 Z2\nG42 D1 G1 X40 Z2 F100\nG40 G0 X100 Z5\nM2\n"
+    """LinuxCNC's G42 D1 towards GSK, on a stretch both rules cut alike (an entry in line with the turn
+    after it, then an inner corner): kept as G42, but GSK's G42 reads the offset of the T code, so the D
+    is refused where it stands, not written. (Where the rules differ the path is written as moves:
+    ``test_fanuc_nose``.)"""
+    text = ("G18 G21 G7 G90 G94\nG0 X40 Z10\nG42 D1 G1 X40 Z2 F100\nG1 Z-10\nG1 X60 Z-20\nG40 G0 X100 Z5\n"
+            "M2\n")
     with pytest.raises(PostprocError) as err:
         translate(io.StringIO(text), io.StringIO(), file="l.ngc", source="linuxcnc", target="gsk", setup=_lathe(3))
     assert "l.ngc:3:1: error: the gsk dialect cannot express tool nose radius compensation by register 1" in str(err.value)

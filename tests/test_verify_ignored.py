@@ -43,10 +43,11 @@ def test_the_same_compensation_on_both_sides_is_a_note() -> None:
 
 
 def test_compensation_left_out_fails_unless_allowed() -> None:
-    # from a Fanuc T program, whose nose compensation is not simulated: the setting is compared
+    # from a Haas lathe program, whose nose compensation is not simulated: the setting is compared
     source, out = LATHE, LATHE_WITHOUT
     lathe = with_tools()
     lathe.input.machine_type = "lathe"
+    lathe.controller.variant = "haas"
     report = verify(source, out, "fanuc", setup=lathe)
     assert not report.ok and report.left_out_moves and report.max_deviation == 0
     assert report.ignored == ["lathe tool offset: not simulated, the same on both sides (offset 1 (line 2))",
@@ -67,6 +68,20 @@ def test_fanuc_mill_compensation_left_out_is_a_deviation_not_a_setting() -> None
     for allow in (False, True):
         report = verify(FANUC, out, allow=allow, setup=with_tools(radii={1: 2.0}))
         assert not report.ok and report.max_deviation == 2 and report.ignored == []
+
+
+def test_fanuc_lathe_compensation_left_out_is_a_deviation_not_a_setting() -> None:
+    """Fanuc T's nose compensation is simulated: leaving it out moves the tool by the nose radius (tip 3,
+    r 1: the start-up move ends with the nose centre at X radius 20 + 1, square to the turn after it, the
+    tip one radius lower and one nearer the chuck: X40 Z1 against X40 Z2), which --allow-ignored does not
+    excuse."""
+    from postproc.setup.machine import ToolData
+    lathe = with_tools()
+    lathe.input.machine_type = "lathe"
+    lathe.tools["1"] = ToolData(number=1, length=0.0, radius=1.0, tip=3)
+    for allow in (False, True):
+        report = verify(LATHE, LATHE_WITHOUT, "fanuc", allow=allow, setup=lathe)
+        assert not report.ok and report.max_deviation == 1 and report.where == (4, 4), report
 
 
 def test_a_different_spindle_speed_is_listed_but_moves_nothing() -> None:
@@ -91,7 +106,7 @@ def test_cli_allow_ignored(cli: Any, tmp_path: Path) -> None:
     a, b = tmp_path / "a.nc", tmp_path / "b.ngc"
     a.write_text(LATHE)
     b.write_text(LATHE_WITHOUT)
-    machine = Path(__file__).resolve().parents[1] / "examples" / "setups" / "fanuc_0i_tf.xml"
+    machine = Path(__file__).resolve().parents[1] / "examples" / "setups" / "haas_st10_lathe.xml"
     plain = cli("verify", a, b, "--from", "fanuc", "--to", "fanuc", "--machine", machine)
     assert plain.status == 1
     assert plain.out.decode().splitlines()[1:] == [

@@ -7,7 +7,7 @@ from __future__ import annotations
 from typing import Callable
 
 from postproc.comments import CommentSyntax
-from postproc.compensation.rules import FANUC_A, FANUC_B, CutterRules
+from postproc.compensation.rules import FANUC_A, FANUC_B, FANUC_T, FANUC_T_B, CutterRules
 from postproc.dialect import Dialect, Lazy, Reader
 from postproc.setup.machine_setup import MachineSetup
 from postproc.syntax import Pipeline
@@ -90,12 +90,13 @@ class Fanuc(Dialect):
 
     @classmethod
     def cutter_rules(cls, setup: MachineSetup) -> CutterRules | None:
-        """Fanuc M: cutter compensation C, start-up type A or B by parameter SUP (the set-up's
-        ``cutterStartup``). Haas's and Fanuc T's are not simulated yet (Fanuc T's offset
-        register is the T code's, and its start-up and corner figures, 15.3 of the lathe manual, were not
-        checked against the mill's): verify compares the setting."""
-        if cls.reads_lathe(setup) or setup.controller.variant == "haas":
+        """Fanuc M: cutter compensation C, Fanuc T: tool nose radius compensation, start-up type A or B by
+        parameter SUP (the set-up's ``cutterStartup``). Haas's are not simulated yet: verify compares the
+        setting."""
+        if setup.controller.variant == "haas":
             return None  # Haas: its settings 43 and 58 choose among rules not read here [?]
+        if cls.reads_lathe(setup):
+            return FANUC_T_B if setup.controller.cutter_startup == "B" else FANUC_T
         return FANUC_B if setup.controller.cutter_startup == "B" else FANUC_A
 
     @classmethod

@@ -19,7 +19,8 @@ class CutterRules:
     """Who follows these rules (for messages and documentation)."""
     register_absent: str
     """Where the radius comes from when the block names no register: ``"tool"``, the register of the tool
-    in the spindle; ``"modal"``, the register named last."""
+    in the spindle; ``"modal"``, the register named last; ``"offset"``, the offset register a lathe's T
+    code selected last (``T0102``: 2), whose columns hold the nose radius and tip."""
     entry: str
     """The first move after compensation starts: ``"tangent"``, the tool ends beside the move's end point,
     perpendicular to the line from the start point (an arc: beside its end, on its radius);
@@ -49,6 +50,9 @@ class CutterRules:
     exit_arc_known: bool = True
     """Whether the rules for an arc right after a cancel are known (``arc_after_cancel`` says which); when
     not, such an arc is refused as not simulated."""
+    profile_cycles: frozenset[str] = frozenset()
+    """The lathe cycles (``LatheCycle`` kinds) the controller runs under G41/G42, compensating the moves
+    of their profile as any others (Fanuc T's G70); any other cycle under compensation is refused."""
     look_ahead: int = 10_000
     """Blocks without motion in the plane the controller looks past to find the next move (the corner it
     makes past more is not modelled: refused). LinuxCNC's queue has no such bound (``cutter_radius``'s
@@ -141,3 +145,48 @@ FANUC_B = CutterRules(
 )
 """Fanuc cutter compensation C, start-up type B (parameter SUP = 1)."""
 
+
+# Tool nose radius compensation of Fanuc T (and GSK, which follows Fanuc T's rules), as data: the same
+# offset vector rules as cutter compensation C, in the ZX plane, the radius and the imaginary tool nose
+# direction read from the offset the T code selected. The [K] tags below are the manuals as known; their
+# text was not re-read in this session (the search corpora hold none of it): the hand-derived tests
+# (tests/test_fanuc_nose.py) check the geometry these rules make, not the rules themselves.
+# [K] B-64304EN (0i-D operator's manual, common to M and T) describes "tool radius / tool nose radius
+#     compensation" in one chapter: start-up types A and B by parameter SUP, offset mode corners and the
+#     cancel are one set of figures for both; the lathe adds the imaginary tool nose (a direction 0-9 in
+#     the offset's T column, 0 and 9 the nose centre) and the radius in the offset's R column.
+# [K] Haas lathe operator's manual, "Approach and Departure Moves For TNC": the approach move is not
+#     compensated at its start and fully compensated at its end; the departure starts "at a right angle to
+#     the last programmed block" (the type A cancel).
+# [K] Fanuc T: G41/G42 name no register, the offset number of the T code is the register (T0102: 2).
+# [K] Fanuc T multiple repetitive cycles (0i-D, "Stock removal in turning (G71)", its notes on tool nose
+#     radius compensation): G41/G42 is programmed before G70-G73 and G40 outside the finishing shape's
+#     blocks ns..nf (G40/G41/G42 inside them is an alarm); G70 then runs the shape compensated.
+# [?] GSK980TDc: the user manual's "tool nose radius compensation" chapter (C type, start-up, offset mode,
+#     cancel; T column 0-9) is assumed to follow Fanuc's type A figures: not read in this session.
+FANUC_T = CutterRules(
+    name="Fanuc T tool nose radius compensation",
+    register_absent="offset",  # [K] the T code's offset number
+    entry="perpendicular",  # [K] start-up type A (SUP = 0, the default)
+    outside_corner="extend",  # [K] the common chapter's offset mode figures
+    corner_tolerance=1e-6,
+    arc_after_cancel=False,  # [K] the cancel block is G00 or G01 (an arc: alarm PS034)
+    planes=("XY", "ZX", "YZ"),  # [K] the plane G17/G18/G19 selects (a lathe's G18)
+    inside_corner="meet",
+    look_ahead=1,  # [K] two blocks read ahead
+    profile_cycles=frozenset(("turn_finish",)),  # [K] G41/G42 before G70, G40 after it, none in ns..nf
+)
+"""Fanuc T (and GSK) tool nose radius compensation, start-up type A (parameter SUP = 0)."""
+FANUC_T_B = CutterRules(
+    name="Fanuc T tool nose radius compensation (start-up type B)",
+    register_absent="offset",
+    entry="corner",  # [K] start-up type B (SUP = 1)
+    outside_corner="extend",
+    corner_tolerance=1e-6,
+    arc_after_cancel=False,
+    planes=("XY", "ZX", "YZ"),
+    inside_corner="meet",
+    look_ahead=1,
+    profile_cycles=frozenset(("turn_finish",)),
+)
+"""Fanuc T tool nose radius compensation, start-up type B (parameter SUP = 1)."""

@@ -17,7 +17,8 @@ coordinates (``postproc.cycles.lathe_offsets``). A lathe target without the sour
 register of its tool length offset code, and of a G41/G42 that names none: a turret lathe's tool nose
 radius compensation takes the nose radius and tip of the offset in force [K: Fanuc T, GSK: the radius
 and tip columns of the offset the T code selected], LinuxCNC's G41 without D the spindle tool's entry,
-which is not the offset's (``T0102``).
+which is not the offset's (``T0102``). A target that is no lathe control gets that register named too: its
+compensation is resolved into moves with the offset's radius and tip (``lowering.cutter_compensation``).
 
 A lathe cycle under tool nose radius compensation is refused where its compensated moves are not known:
 towards another controller (Fanuc's type I/II rules for G71/G72 under compensation are not modelled here;
@@ -88,7 +89,7 @@ def _lower(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iter
     mode_set = start_mode == target_mode
     turning = False
     """The spindle turns before the block (a turret index must not become a tool change then)."""
-    nose = _NoseCompensation(ctx, target, turret and not foreign)
+    nose = _NoseCompensation(ctx, target, turret and ctx.lathe_turret)
     for block in blocks:
         sections = block.sections
         nose.block(block)
@@ -128,9 +129,9 @@ def _lower(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iter
                     continue
                 if not foreign and "ToolSelect" in block.sections:
                     _select_offset(select, block, ctx)
-                    nose.select(select)
                 elif offsets is not None and "ToolSelect" in block.sections:
                     _report(offsets.select, block, ctx, select)
+                nose.select(select)
                 turning = _turns_after(block, turning)
             if tracker is not None:
                 if not plane_set and ("Motion" in sections or "CompoundMotion" in sections):

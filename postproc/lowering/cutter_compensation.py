@@ -21,8 +21,12 @@ too. In the ZX plane (G18) the plane's points are (Z, X), as the simulation has 
 On a lathe (the ZX plane) the path is the imaginary tool tip's, as the simulation writes it: the nose
 centre one nose radius beside the programmed path, moved by the radius in the tip's direction
 (``<Tool tip>``, ``postproc.compensation.nose``). The lathe lowering has written X as a radius for a
-target that is no lathe control (``postproc.cycles.lathe_lowering``), so the geometry is true; a target
-that takes diameters and lacks compensation is refused (none is registered).
+target that is no lathe control (``postproc.cycles.lathe_lowering``), so the geometry is true. A lathe
+target programmed in diameters (a Fanuc T stretch towards LinuxCNC in G7, whose rules differ) keeps X a
+diameter in its blocks: the resolver halves it where it reads it and doubles it where it writes it; an
+arc's I stays a radius [V: rs274 2.9, G7 G18 ``G2 X20 Z-5 I5 K0`` from X10 Z0 turns about X radius 10;
+V: grblHAL core ``gcode.c`` (f80fc34), diameter mode halves the X word only, an arc's IJK untouched;
+K: Fanuc T, I is a radius in either mode].
 
 Inverse time (G93) under compensation: the controller runs each compensated move at F times the
 length of the *programmed* move per minute, an outside corner's arc at the rate of the move after it
@@ -55,7 +59,7 @@ from ..context import Context
 from ..dialect import Dialect
 from ..errors import PostprocError, ProgramError, UnsupportedError
 from ..expr import Expr
-from ..ir import (Block, CutterCompensation, DataSetting, DistanceMode, Feed, FeedMode, Motion, Plane,
+from ..ir import (Block, CompoundMotion, CutterCompensation, DataSetting, DistanceMode, Feed, FeedMode, Motion, Plane,
                   ProgramControl, Section, ToolChange, ToolLengthOffset, ToolSelect, Units, WorkOffset)
 from ..compensation.cutter_radius import CutterRadius, Item, Segment
 from ..compensation.dynamic import DynamicCutterCompensation
@@ -181,7 +185,7 @@ class _Resolver:
                  trial: CutterRules | None = None) -> None:
         self.ctx = ctx
         self.diameters = diameters
-        """X words are diameters in the blocks (compensation on a lathe is then refused)."""
+        """X words are diameters in the blocks (read halved, written doubled: see the module docstring)."""
         self.rules = rules
         self.keeps = keeps
         """Whether a G41/G42 by register stays for the target to write (with its G40); None: none does."""
@@ -232,6 +236,8 @@ class _Resolver:
 
     def run(self, blocks: Iterator[Block]) -> Iterator[Block]:
         idle = True
+        radii = not self.diameters
+        """X is a radius in the blocks: the common block's move is tracked here (else by ``_track``)."""
         for block in blocks:
             sections = block.sections
             plain = idle
@@ -248,7 +254,7 @@ class _Resolver:
                             break
             if plain:
                 motion = sections.get("Motion")  # the common block: a move, noted for a later entry move
-                if isinstance(motion, Motion) and self.absolute and motion.mode in MOVES \
+                if isinstance(motion, Motion) and self.absolute and motion.mode in MOVES and radii \
                         and not (odd and "MachineCoordinates" in sections):
                     self._note(motion)
                 elif motion is not None or odd:
@@ -358,7 +364,6 @@ class _Resolver:
             del sections["DynamicCutterCompensation"]
             sections.pop("NativeCode", None)  # its G41.1/G42.1 D.., which the section says (inert)
             block.changed()
-            self._lathe_check("cutter compensation by a diameter")
             if self._idle():
                 self.cutter.axes = PLANE_AXES[self.plane]
                 self._entry_start()
@@ -374,7 +379,6 @@ class _Resolver:
                 self.cutter.cancel()
                 self._mirror(lambda cutter: cutter.cancel())
             else:
-                self._lathe_check("cutter compensation")
                 register = self._register(cc.register)
                 radius = self._radius(register, block)
                 tip = TIPS[self.table.tip(register)] if self._nose() else (0, 0)
@@ -393,10 +397,14 @@ class _Resolver:
             self._back_to_inverse_time(block)
             self.out.append(block)
             return
-        if "CompoundMotion" in sections or "CannedCycle" in sections:
+        compound = sections.get("CompoundMotion")
+        if "CannedCycle" in sections or (compound is not None and not (
+                isinstance(compound, CompoundMotion) and compound.term in self.rules.profile_cycles)):
             raise ProgramError("a canned cycle with cutter compensation on cannot be run (cancel it first)")
         motion = sections.get("Motion")
-        if isinstance(motion, Motion) and (motion.axes or _full_circle(motion)):
+        if isinstance(compound, CompoundMotion):
+            self._compound(block, compound)  # a finishing cycle's profile, compensated move by move
+        elif isinstance(motion, Motion) and (motion.axes or _full_circle(motion)):
             self._move(block, motion)
         elif isinstance(motion, Motion) and motion.mode is not None and motion.mode not in MOVES:
             raise UnsupportedError(f"motion '{motion.mode}' with cutter compensation on cannot be resolved")
@@ -412,6 +420,29 @@ class _Resolver:
                 self.cutter.stop()
                 self.cutter.cancel()
                 self._mirror(_stop_and_cancel)
+
+    def _compound(self, block: Block, compound: CompoundMotion) -> None:
+        """A lathe finishing cycle the source compensates as its profile (``CutterRules.profile_cycles``):
+        the block without its moves waits as an event, then each move goes through the compensation as a
+        block of its own (at the feed the cycle gives it), written as the compensated move."""
+        del block.sections["CompoundMotion"]
+        block.changed()
+        if block.sections:
+            self.cutter.event({"block": block})
+            self._mirror(lambda cutter: cutter.event({}))
+        feed: Feed | None = None
+        for item in compound.items:
+            if isinstance(item, Feed):
+                feed = item
+            elif isinstance(item, Motion) and item.mode in MOVES:
+                move = Block(block.line, None, "\n")
+                move.sections = {"Motion": item}
+                if feed is not None and item.mode != "rapid":
+                    move.sections["Feed"], feed = feed, None
+                self._move(move, item)
+            else:
+                raise UnsupportedError(f"a {type(item).__name__} inside a lathe cycle under tool nose radius "
+                                       "compensation cannot be resolved")
 
     def _modal(self, sections: dict[str, Section]) -> None:
         units = sections.get("Units")
@@ -455,12 +486,6 @@ class _Resolver:
             raise UnsupportedError("a change of the work origin with cutter compensation on cannot be resolved")
         self.pos = {axis: None for axis in self.pos}
 
-    def _lathe_check(self, what: str) -> None:
-        """Tool nose compensation needs X as a radius in the written path: a lathe target programmed in
-        diameters that lacks compensation is refused."""
-        if self._nose() and self.diameters:
-            raise UnsupportedError(f"{what} on a lathe cannot be resolved for a target programmed in diameters")
-
     def _nose(self) -> bool:
         """Compensation on a lathe, in its ZX plane: the path is the imaginary tool tip's."""
         return self.plane == "ZX" and self.ctx.lathe
@@ -468,6 +493,9 @@ class _Resolver:
     def _register(self, register: int | Expr | None) -> int:
         if isinstance(register, Expr):
             raise UnsupportedError("cutter compensation with a computed register cannot be resolved")
+        if register is None and self.rules.register_absent == "offset":  # the lathe lowering names it
+            raise ProgramError("tool nose radius compensation takes the radius of the offset the T code selected, "
+                               "and none is (program T with its offset number, T0101)")
         if register is None and self.rules.register_absent == "modal":
             if self.last_register is None:
                 raise ProgramError("cutter compensation without its register takes the register programmed last, "
@@ -557,23 +585,27 @@ class _Resolver:
                 raise UnsupportedError("a computed position under cutter compensation cannot be resolved")
             if axis not in target:
                 raise UnsupportedError(f"motion of axis {axis} with cutter compensation on cannot be resolved")
+            scale = self.scale * 0.5 if axis == "X" and self.diameters else self.scale
             if self.absolute:
                 if axis in self.floating:
                     if not self._idle():
                         raise ProgramError(f"an absolute {axis} in a compensated stretch of a program that moved by "
                                            "increments from an unknown start point")
                     self.floating.discard(axis)
-                target[axis] = value * self.scale
+                target[axis] = value * scale
             else:
                 known = target[axis]
-                target[axis] = None if known is None else known + value * self.scale
+                target[axis] = None if known is None else known + value * scale
         return target
 
     def _track(self, block: Block) -> None:
         """The programmed point after a block run with no compensation on."""
         sections = block.sections
         motion = sections.get("Motion")
-        if "CompoundMotion" in sections or "MachineCoordinates" in sections:
+        compound = sections.get("CompoundMotion")
+        if isinstance(compound, CompoundMotion) and "MachineCoordinates" not in sections:
+            self._track_compound(compound)
+        elif "CompoundMotion" in sections or "MachineCoordinates" in sections:
             self.pos = {axis: None for axis in self.pos}
         elif isinstance(motion, Motion) and motion.axes:
             if motion.mode in ("home", "home2"):
@@ -586,6 +618,21 @@ class _Resolver:
         u, v = self._in_plane(self.pos)
         if u is not None and v is not None:
             self.at = (u, v)
+
+    def _track_compound(self, compound: CompoundMotion) -> None:
+        """Where an expanded cycle (a lathe roughing cycle, before a G42 for its finishing cycle) leaves the
+        tool: its moves are absolute (``CompoundMotion``); anything else makes the point unknown."""
+        absolute, self.absolute = self.absolute, True
+        try:
+            for item in compound.items:
+                if isinstance(item, Motion) and item.mode in MOVES:
+                    self.pos = self._target(item)
+                elif isinstance(item, Motion):
+                    self.pos = {axis: None for axis in self.pos}
+        except UnsupportedError:
+            self.pos = {axis: None for axis in self.pos}
+        finally:
+            self.absolute = absolute
 
     def _move(self, block: Block, motion: Motion) -> None:
         if "MachineCoordinates" in block.sections or motion.mode in ("home", "home2"):
@@ -722,6 +769,9 @@ class _Resolver:
                                        "joins it to a nearly tangent move without a corner and runs it so; written as "
                                        "an arc, the target refuses it)", self.ctx.at(block))
             center = {a1: (cc[0] - self.at[0]) / scale, a2: (cc[1] - self.at[1]) / scale}
+        x = axes.get("X")
+        if self.diameters and isinstance(x, float):
+            axes["X"] = x * 2.0  # a diameter (an arc's I stays a radius)
         axes = {a: _noise_free(axes[a]) for a in "XYZ" if a in axes}  # written X, Y, Z
         if center is not None:
             center = {a: _noise_free(center[a]) for a in "XYZ" if a in center}

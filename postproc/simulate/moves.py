@@ -129,6 +129,8 @@ class Moves:
         setting ("left D4"), whether this stretch is one kept (compared as a setting, not compensated here)."""
         self.native_stretch = False
         """The compensation in force is a stretch ``kept_native`` chose: a setting, not simulated."""
+        self.offset_register: int | None = None
+        """The lathe offset register the T code selected last (a Fanuc T G41 reads it; 0: none)."""
         """The tool the last tool change put in the spindle (before any: the set-up's ``startTool``, None:
         the machine's, unknown)."""
         self.sync: float | None = None
@@ -281,6 +283,7 @@ class Moves:
         nothing at the change ([V] rs274: lathe ``G43 H2`` prints ``USE_TOOL_LENGTH_OFFSET`` with entry 2's
         X and Z and moves nothing). Where it gives none, the selection is a setting that moves the tool,
         compared between the programs (``verify``), never taken as zero silently."""
+        self.offset_register = register if isinstance(register, int) else None
         values = self.tools.lathe(register, self.diameter) if isinstance(register, int) else None
         if values is None:
             self._lathe_shift(0.0, 0.0)
@@ -321,6 +324,12 @@ class Moves:
         """The register a G41/G42 reads: its own, or by the rules the spindle tool's (LinuxCNC). The plane
         is checked by ``CutterRadius.start`` (``CutterRules.planes``)."""
         assert self.cutter is not None
+        if register is None and self.cutter.rules.register_absent == "offset":
+            if not self.offset_register:
+                raise ProgramError("tool nose radius compensation takes the radius of the offset the T code "
+                                   "selected, and none is (program T with its offset number, T0101)",
+                                   self._at(block))
+            register = self.offset_register
         if register is None and self.cutter.rules.register_absent == "modal":
             if self.cutter_register is None:
                 raise ProgramError("cutter compensation without its register takes the register programmed "

@@ -118,7 +118,8 @@ class Simulator(Moves):
             for axis, value in coords.axes.items():
                 self._coordinate(block, axis, value)
         if compound is not None:
-            if self.cutter is not None and self.cutter.side is not None:
+            if self.cutter is not None and self.cutter.side is not None \
+                    and (compound.term not in self.cutter.rules.profile_cycles or "CannedCycle" in sections):
                 raise ProgramError("a canned cycle with cutter compensation on cannot be run (cancel it first)",
                                    self._at(block))  # [V] rs274 "Cannot use canned cycles with cutter compensation on"
             if motion is not None and motion.mode is not None:
