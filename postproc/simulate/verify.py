@@ -64,19 +64,24 @@ def verify_lines(lines_in: Iterable[str], lines_out: Iterable[str], *, file_in: 
     compensate = _both_compensate(source, target, registry, setup, target_setup)
     out_arguments = arguments if arguments and dialects.dialect(target).MACRO_ARGUMENTS else None
     kept: Callable[[str], bool] | None = None
+    mirrored = transform is not None and mirrors_xy(transform.map)  # OUT's sides are the other ones
     if not compensate and dialects.dialect(source).cutter_rules(setup) is not None:
         if isinstance(lines_out, io.IOBase) and lines_out.seekable():  # a file: read again, not held
             mark = lines_out.tell()
             compensate = not _compensates(lines_out, file_out, target, target_setup, dialects)
             lines_out.seek(mark)
             if not compensate:
-                kept = _kept_native(lines_out, file_out, target, target_setup, dialects, out_arguments)
+                lines_in = list(lines_in)  # read twice too
+                kept = _kept_native(lines_out, file_out, target, target_setup, dialects, out_arguments, mirrored,
+                                    _starts(lines_in, file_in, source, setup, dialects, arguments))
                 lines_out.seek(mark)
         else:
             lines_out = list(lines_out)  # read twice: the output is looked through first
             compensate = not _compensates(lines_out, file_out, target, target_setup, dialects)
             if not compensate:
-                kept = _kept_native(lines_out, file_out, target, target_setup, dialects, out_arguments)
+                lines_in = list(lines_in)  # read twice too
+                kept = _kept_native(lines_out, file_out, target, target_setup, dialects, out_arguments, mirrored,
+                                    _starts(lines_in, file_in, source, setup, dialects, arguments))
         compensate = compensate or kept is not None
     events_in = toolpath_events(lines_in, file=file_in, dialect=source, setup=setup, registry=registry,
                                 diagnostics=diag_in, check=False, live_after_end=after_in, unsimulated=settings_in,
@@ -155,15 +160,10 @@ def _compensates(lines: Iterable[str], file: str, dialect: str, setup: MachineSe
     return bool(diagnostics.errors)
 
 
-def _kept_native(lines: Iterable[str], file: str, dialect: str, setup: MachineSetup, registry: Registry,
-                 arguments: Mapping[str, float] | None) -> Callable[[str], bool] | None:
-    """Which stretches of the source's cutter compensation the output kept native, for a source whose
-    rules are simulated and an output whose are not, which compensates some stretches itself and was given
-    others resolved into its path (ISG, where a D would bring another length: ``postproc.isg_family.
-    tool_data``). The output's compensation settings in execution order ("left D4", ...) are matched in
-    order against the source's: a source stretch the output also turns on is compared as a setting, one it
-    does not was resolved, and is compared as the source's compensated path (DESIGN.md: verify compares
-    controlled points). None when the output's run fails (its own run then says why)."""
+def _starts(lines: Iterable[str], file: str, dialect: str, setup: MachineSetup, registry: Registry,
+            arguments: Mapping[str, float] | None) -> list[str] | None:
+    """A program's cutter compensation starts ("left D4", ...) in execution order, compensation not simulated;
+    None when its run fails (its own run then says why)."""
     settings: list[tuple[int, str, str]] = []
     diagnostics = Diagnostics(warn_stream=io.StringIO())
     for _ in toolpath_events(lines, file=file, dialect=dialect, setup=setup, registry=registry,
@@ -172,7 +172,29 @@ def _kept_native(lines: Iterable[str], file: str, dialect: str, setup: MachineSe
         pass
     if diagnostics.errors:
         return None
-    starts = iter([value for _, kind, value in settings if kind == "cutter compensation" and value != "off"])
+    return [value for _, kind, value in settings if kind == "cutter compensation" and value != "off"]
+
+
+def _kept_native(lines: Iterable[str], file: str, dialect: str, setup: MachineSetup, registry: Registry,
+                 arguments: Mapping[str, float] | None, mirrored: bool = False,
+                 source_starts: list[str] | None = None) -> Callable[[str], bool] | None:
+    """Which stretches of the source's cutter compensation the output kept native, for a source whose
+    rules are simulated and an output whose are not, which compensates some stretches itself and was given
+    others resolved into its path (ISG, where a D would bring another length: ``postproc.isg_family.
+    tool_data``). The output's compensation settings in execution order ("left D4", ...) are matched in
+    order against the source's: a source stretch the output also turns on is compared as a setting, one it
+    does not was resolved, and is compared as the source's compensated path (DESIGN.md: verify compares
+    controlled points). None too (all compared as settings) where the output keeps every stretch, or turns on
+    one the source does not (``source_starts``, the source's in order). ``mirrored``: OUT was written under a transform that mirrors the plane, its sides are
+    the other ones. None when the output's run fails (its own run then says why)."""
+    found = _starts(lines, file, dialect, setup, registry, arguments)
+    if found is None or source_starts is None:
+        return None
+    out_starts = [_other_side(value) if mirrored else value for value in found]
+    rest = iter(source_starts)
+    if out_starts == source_starts or not all(value in rest for value in out_starts):
+        return None  # every stretch kept, or the output's are not the source's: compared as settings
+    starts = iter(out_starts)
     pending = [next(starts, None)]
 
     def kept(value: str) -> bool:
