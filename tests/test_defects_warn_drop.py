@@ -18,6 +18,7 @@ from postproc.api import translate
 from postproc.errors import Diagnostics, ErrorList
 from postproc.setup.machine_setup import MachineSetup, load_setup
 from postproc.simulate.toolpath import toolpath_events
+from tests.support.tools import with_tools
 
 SETUPS = Path(__file__).resolve().parent.parent / "examples" / "setups"
 LATHE = load_setup(SETUPS / "fanuc_0i_tf.xml")
@@ -76,11 +77,13 @@ def test_a_straight_move_to_an_absolute_point_puts_the_tool_back_on_the_source_p
 
 
 def test_a_dropped_machine_retract_fails_the_move_along_x_at_the_unretracted_z() -> None:
-    start = "G21 G90 G0 X0 Y0 Z50.\nS1000 M03\nG1 Z1. F100.\n"
-    # (SINUMERIK's G53 suppresses the frames, not Fanuc's move in machine coordinates: it is dropped)
-    assert refused(start + "G53 G0 Z0.\nG1 X10.\nM30\n", "fanuc", "siemens", MachineSetup()) == [
-        f"in.nc:5:1: error: {DISPLACED.replace('line 7', 'line 4')}"]
-    assert "G1 X10." in warned(start + "G53 G0 Z0.\nG0 Z50.\nG1 X10.\nM30\n", "fanuc", "siemens", MachineSetup())
+    start = "G21 G90 G0 X0 Y0 Z50.\nS1000 M03\nG43 H1 Z50.\nG1 Z1. F100.\n"
+    # (SINUMERIK's SUPA under a tool length offset: whether it suppresses the offset is machine data, so
+    # Fanuc's move in machine coordinates is dropped)
+    setup = with_tools(lengths={1: 100.0})
+    assert refused(start + "G53 G0 Z0.\nG1 X10.\nM30\n", "fanuc", "siemens", setup) == [
+        f"in.nc:6:1: error: {DISPLACED.replace('line 7', 'line 5')}"]
+    assert "G1 X10." in warned(start + "G53 G0 Z0.\nG0 Z50.\nG1 X10.\nM30\n", "fanuc", "siemens", setup)
 
 
 def test_a_dropped_linuxcnc_g33_on_a_mill_is_put_right_by_an_absolute_z() -> None:

@@ -16,12 +16,13 @@ from tests.support.tools import with_tools
 START = "G21 G90 G0 X0 Y0 Z50.\nS1000 M03\n"
 
 
-def warned(body: str, target: str) -> tuple[list[str], list[str]]:
-    """The translated lines after the start, and the warnings."""
+def warned(body: str, target: str, lengths: dict[int, float] | None = None) -> tuple[list[str], list[str]]:
+    """The translated lines after the start, and the warnings (``lengths``: the set-up's tool lengths)."""
     warnings = io.StringIO()
     out = io.StringIO()
     translate(io.StringIO(START + body + "M30\n"), out, file="t.nc", source="fanuc", target=target,
-              on_unsupported="warn", diagnostics=Diagnostics(warn_stream=warnings))
+              on_unsupported="warn", diagnostics=Diagnostics(warn_stream=warnings),
+              setup=with_tools(lengths=lengths or {}))
     return out.getvalue().splitlines()[2:-1], warnings.getvalue().splitlines()
 
 
@@ -42,18 +43,23 @@ def test_a_refused_tool_length_offset_leaves_its_motion_and_coolant(target: str,
                         "point without the tool's length); the rest of the block is written"]
 
 
+# SUPA under a tool length offset: whether it suppresses the offset is machine data (``$MN_G53_TOOLCORR``)
+SUPA_REFUSED = ("a move in machine coordinates with a tool length or radius compensation in force (whether SUPA "
+           "suppresses them is machine data $MN_G53_TOOLCORR)")
+
+
 def test_a_move_in_machine_coordinates_goes_with_g53_and_the_coolant_stays() -> None:
     """``Z0.`` without ``G53`` is the work zero, usually the part's top: the rapid is not written."""
-    lines, warnings = warned("G53 G0 Z0. M09\n", "siemens")
-    assert lines == [";UNSUPPORTED LINE 3: G53 G0 Z0. M09", "M9"]
-    assert warnings == [f"t.nc:3:1: warning: the siemens dialect cannot express {MACHINE}; dropped, with Z0. (the block's motion), which cannot be written without it; "
+    lines, warnings = warned("G43 H1 Z50.\nG53 G0 Z0. M09\n", "siemens", {1: 100.0})
+    assert lines[1:] == [";UNSUPPORTED LINE 4: G53 G0 Z0. M09", "M9"]
+    assert warnings == [f"t.nc:4:1: warning: the siemens dialect cannot express {SUPA_REFUSED}; dropped, with Z0. (the block's motion), which cannot be written without it; "
                         "the rest of the block is written"]
 
 
 def test_a_block_with_nothing_left_is_a_comment() -> None:
-    lines, warnings = warned("G53 G0 Z0.\n", "siemens")
-    assert lines == [";UNSUPPORTED LINE 3: G53 G0 Z0."]
-    assert warnings == [f"t.nc:3:1: warning: the siemens dialect cannot express {MACHINE}; written as a comment"]
+    lines, warnings = warned("G43 H1 Z50.\nG53 G0 Z0.\n", "siemens", {1: 100.0})
+    assert lines[1:] == [";UNSUPPORTED LINE 4: G53 G0 Z0."]
+    assert warnings == [f"t.nc:4:1: warning: the siemens dialect cannot express {SUPA_REFUSED}; written as a comment"]
 
 
 def test_without_warn_the_same_block_is_a_located_error() -> None:
