@@ -90,7 +90,21 @@ def whole_strokes(cycle: CannedCycle) -> bool:
 
 def writable(cycle: CannedCycle) -> bool:
     """Whether ``cycle``'s block is written natively (see the module docstring); else it is expanded."""
-    if cycle.kind not in NAMES or cycle.plane != "XY" or cycle.repeat != 1 or cycle.expand:
+    if cycle.repeat != 1 or cycle.expand or not parameters_writable(cycle):
+        return False
+    if cycle.kind == "bore_manual" and not moves_in_plane(cycle):
+        return False  # its moves where the tool stands stop the program: not written outside the call
+    if cycle.return_level == "initial":
+        z, initial = cycle.start.get("Z"), cycle.initial
+        return z is not None and initial is not None and abs(z - initial) <= SAME
+    return cycle.return_level == "r"
+
+
+def parameters_writable(cycle: CannedCycle) -> bool:
+    """Whether ``cycle``'s levels, dwell and strokes are a ``CYCLE8x`` call's parameters (``Call``), wherever
+    the call stands: a G17 cycle of a kind in ``NAMES`` with absolute levels and position, a dwell of whole
+    milliseconds, a deep hole of whole strokes, a bore with its feed."""
+    if cycle.kind not in NAMES or cycle.plane != "XY":
         return False
     if cycle.r is None or cycle.bottom is None or cycle.initial is None:
         return False
@@ -107,14 +121,7 @@ def writable(cycle: CannedCycle) -> bool:
         return False
     if cycle.kind == "peck_deep" and not whole_strokes(cycle):
         return False
-    if cycle.kind in BORING and (cycle.feed is None or cycle.feed <= 0):
-        return False
-    if cycle.kind == "bore_manual" and not moves_in_plane(cycle):
-        return False  # its moves where the tool stands stop the program: not written outside the call
-    if cycle.return_level == "initial":
-        z = cycle.start.get("Z")
-        return z is not None and abs(z - cycle.initial) <= SAME
-    return cycle.return_level == "r"
+    return not (cycle.kind in BORING and (cycle.feed is None or cycle.feed <= 0))
 
 
 @dataclass(frozen=True)
@@ -149,11 +156,12 @@ class Call:
         return cls(NAMES[cycle.kind], rtp, cycle.r, cycle.bottom, 0.0 if cycle.kind == "drill_dwell" and dwell is None
                    else dwell)
 
-    def text(self, number: Callable[[float], str], feed: Callable[[float], str]) -> str:
+    def text(self, number: Callable[[float], str], feed: Callable[[float], str], once: bool = False) -> str:
         """``number`` spells a level as the writer spells a Z value, ``feed`` a feed as it spells F (so
         ``CYCLE85``'s FFR reads back as the F in force). A deep hole: ``FDEP`` the first stroke's depth,
         ``DAM``, ``DTB``, ``DTS`` 0, ``FRF`` 1, ``VARI`` 1 (swarf removal), ``_DTD`` 0 and ``_DIS1`` d
-        (``deep_hole``, which reads it back)."""
+        (``deep_hole``, which reads it back). ``once``: the call alone, which drills where the tool stands and
+        leaves no call active (``cycles``: how the reader reads it)."""
         params = [number(self.rtp), number(self.rfp), "0", number(self.dp)]
         dtb = "" if self.dtb is None else _seconds(self.dtb)
         if self.stroke is not None:
@@ -166,7 +174,7 @@ class Call:
             params += ["", dtb, "3"]
         elif self.dtb is not None:
             params += ["", dtb]
-        return f"MCALL {self.name}({', '.join(params)})"
+        return f"{'' if once else 'MCALL '}{self.name}({', '.join(params)})"
 
 
 def _seconds(value: float) -> str:

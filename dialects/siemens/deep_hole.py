@@ -21,7 +21,8 @@ Read natively only where nothing unconfirmed is involved; kept verbatim (``Uncon
 * ``SDIS`` 0: whether the later strokes are measured from RFP or from RFP+SDIS is not confirmed [?] (the
   two agree when SDIS is 0);
 * a whole number of strokes: how the cycle shares out a remainder (the manual's "the last two strokes are
-  of equal length" is said of the degression) is not confirmed for DAM 0 [?];
+  of equal length" is said of the degression) is not confirmed for DAM 0 [?]; a remainder within the
+  written numbers' rounding (``WRITTEN``: an inch program's 8 decimals) is none, the stroke the depth's share;
 * ``FRF`` 1 as written (an empty FRF's default is not confirmed [?]); ``DAM``, ``DTB``, ``DTS`` and ``_DTD``
   empty or 0 (Fanuc's G83 has no dwells); ``_AXN`` empty or 3 (the tool along Z); ``_DIS1`` positive (0 is
   the distance the cycle computes [?]); ``_MDEP`` (the least stroke under degression) empty or not above the
@@ -38,6 +39,10 @@ from __future__ import annotations
 
 SAME = 1e-9
 """Lengths closer than this (program units) are the same."""
+WRITTEN = 1e-8
+"""How far one written number may be from the length it stands for (program units): 8 decimals of an inch
+(the writers' places) round by up to 5e-9, so a depth of n strokes converted to inches and written reads
+back up to (n + 1) * 1e-8 off n times its stroke (RFP, FDEP, DP each rounded); that is no remainder."""
 
 
 class Unconfirmed(Exception):
@@ -75,10 +80,11 @@ def deep_hole(given: dict[str, float | None], r: float, bottom: float) -> tuple[
     depth = r - bottom
     if stroke <= SAME or first < bottom - SAME:
         raise Unconfirmed("CYCLE83 whose first depth is not between RFP and the final depth")
-    count = depth / stroke
-    if abs(count - round(count)) > 1e-9 * max(1.0, count):
+    strokes = max(1, round(depth / stroke))
+    if abs(depth - strokes * stroke) > WRITTEN * (strokes + 1):
         raise Unconfirmed(f"CYCLE83 whose depth {depth:g} is not a whole number of strokes of {stroke:g} (how it "
                           "shares out a remainder is not confirmed here)")
+    stroke = depth / strokes  # the strokes, all the same, that make the depth (the written numbers' rounding out)
     mdep = given.get("_MDEP")
     if mdep is not None and mdep > stroke + SAME:
         raise Unconfirmed("CYCLE83 with _MDEP above its stroke")

@@ -9,7 +9,10 @@ comments and ``%_N_NAME_MPF`` headers.
   block numbers and labels), else the program is flattened; a computed word is ``X=<expr>``.
 * Fanuc G81/G82 are ``MCALL CYCLE81``/``CYCLE82`` with the holes as position blocks and a bare ``MCALL`` before
   anything else that moves (``cycle_writing``, which says where; every other cycle arrives expanded). The
-  return level is in the call's RTP, so G98/G99 write nothing.
+  return level is in the call's RTP, so G98/G99 write nothing. A cycle read from SINUMERIK arrives here only
+  when a program transform changed it (no lowering step expands a cycle back to its own dialect): a call once
+  is written once again, the ``MCALL`` definition writes nothing until its first hole, a ``HOLES1``/``HOLES2``
+  block its moves (``cycle_block``).
 * A dwell is ``G4 F<seconds>`` alone in its block (only a block number joins it) [K: 840D Fundamentals,
   "G4 must be programmed in a separate block"]; what acts before it goes in a block before.
 * Tool data: ``D<n>`` selects cutting edge n (its length and radius), ``D0`` none: a Fanuc ``G43 H``/``G41 D``
@@ -32,13 +35,13 @@ from postproc.compensation.tool_table import ToolTable
 from postproc.errors import PostprocError, UnsupportedError
 from postproc.event_order import after_motion
 from postproc.expr import Expr
-from postproc.ir import Block, Dwell, Motion, Section
+from postproc.ir import Block, CompoundMotion, Dwell, Motion, Section
 from postproc.rs274.codes import CodeTable
 from postproc.rs274.writer import WordWriter
 
 from .codes import CODES
 from .control_writing import JumpTargets, expression, label_name, statement
-from .cycle_writing import Call, in_place_moves, moves_in_plane
+from .cycle_writing import Call, in_place_moves, moves_in_plane, parameters_writable
 from .fixed_point import g75_line, reference_problem
 
 _WITH_DWELL = ("Dwell", "Sequence")
@@ -47,8 +50,9 @@ _OWN_TEXT = frozenset((ASSIGN, CONTROL, LABEL, "NativeCode", "ProgramStart", "Fr
 """Sections whose block keeps its text when normalised."""
 _BESIDE_ASSIGN = frozenset((ASSIGN, "Sequence", "Comments", "BlockDelete", LABEL))
 """What may share a block with an assignment."""
-_CYCLE_OWN = frozenset(("CannedCycle", "ReturnLevel", "Comments", "Sequence"))
-"""Sections of a cycle block the call and its position block write themselves."""
+_CYCLE_OWN = frozenset(("CannedCycle", "ReturnLevel", "Comments", "Sequence", "CompoundMotion"))
+"""Sections of a cycle block the call and its position block write themselves (a cycle read from SINUMERIK and
+changed by a program transform still has its expansion: written only where the block is written as motion)."""
 _ENDS_CALL = frozenset(("Motion", "CompoundMotion", "CycleCancel"))
 """Sections after which a modal call must not stay active: they move (the call would run after them) or end
 the source's cycle."""
@@ -191,8 +195,61 @@ class SiemensWriter(WordWriter):
         to cancel."""
         return []
 
+    def words_block(self, block: Block) -> str | None:
+        """A bare ``MCALL`` copied as written ends the call this writer made active (a program transform
+        rewrites the cycle blocks around it, not it)."""
+        if self.call is not None and self.copy_ok and block.text is not None and "CycleCancel" in block.sections:
+            self.call = None
+        return super().words_block(block)
+
     # -- drilling cycles (``cycle_writing``) ----------------------------------------------------------------
     def cycle_block(self, block: Block, cycle: CannedCycle) -> str:
+        """A cycle block by what it is (a block read from SINUMERIK and changed by a program transform reaches
+        here with its record as the reader made it, ``cycles``): a call once (``CYCLE81(..)``: ``call``,
+        ``expand``) is written once where its parameters are a call's, a block the reader marked ``expand``
+        (a ``HOLES1``/``HOLES2`` call's holes, a call once that is not) as its moves with any active call ended
+        first, the block that only defines the modal call (``MCALL CYCLE81(..)``: repeat 0) as nothing of it
+        (the ``MCALL`` goes before the first hole, ``hole_block``), a hole as ``hole_block`` writes it."""
+        compound = block.sections.get("CompoundMotion")
+        if cycle.expand:
+            if cycle.call and cycle.repeat == 1 and not moves_in_plane(cycle) and parameters_writable(cycle):
+                return self.once_block(block, cycle)
+            if not isinstance(compound, CompoundMotion):
+                self.unsupported(f"a {cycle.kind.replace('_', ' ')} cycle whose moves are not known here", block)
+            rest = {k: v for k, v in block.sections.items() if k not in ("CannedCycle", "ReturnLevel")}
+            text = "MCALL\n" if self.call is not None else ""
+            self.call = None
+            return text + self.compound(_with(block, rest), compound)
+        if cycle.repeat == 0:
+            rest = {k: v for k, v in block.sections.items() if k not in _CYCLE_OWN or k in ("Comments", "Sequence")}
+            return self.generate(_with(block, rest)) if rest else ""
+        if cycle.repeat != 1 or not parameters_writable(cycle):
+            self.unsupported(f"a {cycle.kind.replace('_', ' ')} cycle block that no CYCLE8x call writes "
+                             "(its levels, dwell or strokes)", block)
+        return self.hole_block(block, cycle)
+
+    def once_block(self, block: Block, cycle: CannedCycle) -> str:
+        """``CYCLE8x(..)`` alone: it drills where the tool stands, retracts to RTP (the record's initial level,
+        ``cycles.SiemensCycleEnd``) and leaves no call active; what acts before and after it in blocks of
+        their own."""
+        sections = block.sections
+        if self.call is not None:
+            self.unsupported("a drilling cycle called once while a modal call is active (whether the modal call "
+                             "runs too is not confirmed)", block)
+        head = {k: v for k, v in sections.items() if k not in _CYCLE_OWN and not after_motion(k, v)}
+        tail = {k: v for k, v in sections.items() if k not in _CYCLE_OWN and k not in head}
+        lines = [self._part(block, head)] if head else []
+        call = Call.of(cycle)
+        text = call.text(lambda value: self.number(value, "Z"), lambda value: self.number(value, "F"), once=True)
+        comments = sections.get("Comments")
+        if comments is not None:
+            text = " ".join([text, *(self.comment(t) for t in getattr(comments, "texts"))])
+        lines.append(text + "\n")
+        if tail:
+            lines.append(self._part(block, tail))
+        return self._cycle_text(block, lines)
+
+    def hole_block(self, block: Block, cycle: CannedCycle) -> str:
         """A native hole: what acts before it, the ``MCALL`` where the call changes (G0 before it), the position
         block, what acts after it."""
         sections = block.sections
@@ -345,6 +402,14 @@ class SiemensWriter(WordWriter):
         if "ToolLengthOffset" in block.sections:
             return self._code("cutter", s.mode, f"cutter compensation {s.mode}", block)
         return super().cutter_compensation_words(s, block)
+
+
+def _with(block: Block, sections: dict[str, Section]) -> Block:
+    """A block of ``block``'s line and end with ``sections`` in place of its own (its source text kept for the
+    expansion's comment)."""
+    part = Block(block.line, block.text, block.eol, block.words)
+    part.sections = sections
+    return part
 
 
 def _ends_program(sections: dict[str, Section]) -> bool:
