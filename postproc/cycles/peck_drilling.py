@@ -5,11 +5,23 @@ from __future__ import annotations
 from mypy_extensions import mypyc_attr
 
 import math
+from typing import Final
 
 from postproc.errors import ProgramError
 
-from .expansion import EPS, UNBOUNDED, CycleExpansion, ToolPath, level
+from .expansion import UNBOUNDED, CycleExpansion, ToolPath, level
 from .section import CannedCycle
+
+PECK_REMAINDER: Final = 1e-5
+"""mm: a last peck shorter than this is the rounding of the written numbers, not a peck (a depth that is a
+whole number of Q, written in inch to 8 decimals, stops some 1e-7 mm short of the bottom). Below the finest
+least input increment a controller is given (IS-C, 0.0001 mm [K: Fanuc increment systems IS-B/IS-C]), and at most
+a thousandth of the peck (``remainder_tolerance``), so a Q below it still counts every peck."""
+
+
+def remainder_tolerance(q: float) -> float:
+    """The last peck's length, mm, below which it is no peck (``PECK_REMAINDER``)."""
+    return min(PECK_REMAINDER, q * 1e-3)
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
@@ -35,7 +47,7 @@ class PeckDrillingExpansion(CycleExpansion):
         pecks = (r - bottom) / q
         if not pecks < UNBOUNDED:
             return UNBOUNDED  # Q so small the count overflows
-        return max(1, math.ceil(pecks - EPS))
+        return max(1, math.ceil(pecks - remainder_tolerance(q) / q))
 
     def hole_end(self, path: ToolPath, cycle: CannedCycle, a: float, b: float) -> None:
         self.over_the_spot(path, cycle, a, b)
@@ -48,7 +60,8 @@ class PeckDrillingExpansion(CycleExpansion):
         d = cycle.clearance or 0.0
         k = 1
         depth = r - q
-        while depth > bottom + EPS:
+        last = bottom + remainder_tolerance(q)
+        while depth > last:
             path.cut(depth, cycle.feed)
             if cycle.kind == "peck_deep":
                 path.rapid(level=r)
