@@ -32,7 +32,7 @@ from postproc.errors import UnsupportedError
 from postproc.event_order import after_motion
 from postproc.expr import Expr
 from postproc.ir import Block, DistanceMode, MachineCoordinates, Motion, Section
-from postproc.state import MM_PER_INCH
+from postproc.output.home_position import add_home, home_position
 from postproc.rs274.codes import CodeTable
 from postproc.rs274.cycle_words import NEUTRAL_CYCLE_WORDS
 from postproc.rs274.writer import WordWriter
@@ -176,16 +176,14 @@ class FagorWriter(WordWriter):
         if motion.mode != "home":
             self.unsupported("a return to the second reference position (G30): the set-up has no element for "
                              "it (only each axis's home)", block)
-        setup = self.ctx.setup
-        scale = setup.machine.mm() / (MM_PER_INCH if self.modal.units == "inch" else 1.0)
         target = {}
         for axis in motion.axes:
-            travel = setup.travel.get(axis)
-            if travel is None or travel.home is None:
-                self.unsupported(f"a reference return of axis {axis}: Fagor writes it as a G53 move to the home "
-                                 f"position, which the set-up does not give (add <Axes><Axis name=\"{axis}\" "
-                                 f"home=\"..\"/>)", block)
-            target[axis] = travel.home * scale
+            home = home_position(self.ctx.setup, axis, self.modal.units == "inch")
+            if home is None:
+                self.unsupported(f"a reference return of axis {axis}: Fagor writes it as a G53 move to the home position, which the set-up does not give "
+                                 f"({add_home(axis)})", block)
+            else:
+                target[axis] = home
         return target
 
     # -- tool data (``postproc.isg_family.tool_data`` chose the D) ---------------------------------------

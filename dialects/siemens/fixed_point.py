@@ -33,7 +33,7 @@ from typing import TYPE_CHECKING
 from postproc.errors import ProgramError
 from postproc.expr import Expr
 from postproc.ir import MachineCoordinates, Motion, Section
-from postproc.state import MM_PER_INCH
+from postproc.output.home_position import add_home, home_position
 from postproc.xmlio import XAttr
 
 if TYPE_CHECKING:
@@ -76,14 +76,6 @@ def read_fixed_point(code: str, pos: int) -> SiemensFixedPoint | None:
     return SiemensFixedPoint(int(found.group(1) or 1), axes)
 
 
-def home_position(setup: MachineSetup, axis: str, inch: bool) -> float | None:
-    """The set-up's home of ``axis`` (machine coordinates) in program units, None where it gives none."""
-    travel = setup.travel.get(axis)
-    if travel is None or travel.home is None:
-        return None
-    return travel.home * setup.machine.mm() / (MM_PER_INCH if inch else 1.0)
-
-
 def reference_problem(setup: MachineSetup, motion: Motion, inch: bool) -> str | None:
     """Why a reference return cannot be written as ``G75 FP=1``, or None when it can."""
     if motion.mode != "home":
@@ -100,7 +92,7 @@ def reference_problem(setup: MachineSetup, motion: Motion, inch: bool) -> str | 
 def missing_home(axis: str) -> str:
     """The message for an axis whose home the set-up does not give."""
     return (f"a reference return of axis {axis}: SINUMERIK writes it as G75 FP=1, fixed point 1 being the "
-            f"set-up's home position, which it does not give (add <Axes><Axis name=\"{axis}\" home=\"..\"/>)")
+            f"set-up's home position, which it does not give ({add_home(axis)})")
 
 
 def resolve(block: Block, ctx: Context, point: SiemensFixedPoint) -> None:
@@ -115,7 +107,7 @@ def resolve(block: Block, ctx: Context, point: SiemensFixedPoint) -> None:
         value = home_position(ctx.setup, axis, inch)
         if value is None:
             raise ProgramError(f"G75 FP=1 moves axis {axis} to fixed point 1, taken as the set-up's home "
-                               f"position, which it does not give (add <Axes><Axis name=\"{axis}\" home=\"..\"/>)",
+                               f"position, which it does not give ({add_home(axis)})",
                                ctx.at(block, text.find(MACHINE_AXES[axis]) + 1 or 1))
         axes[axis] = value
     block.add(MachineCoordinates())
