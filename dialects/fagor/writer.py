@@ -32,7 +32,7 @@ from postproc.errors import UnsupportedError
 from postproc.event_order import after_motion
 from postproc.expr import Expr
 from postproc.ir import Block, DistanceMode, MachineCoordinates, Motion, Section
-from postproc.output.home_position import add_home, home_position
+from postproc.output.home_position import SECOND_RETURN, reference_problem, reference_target
 from postproc.rs274.codes import CodeTable
 from postproc.rs274.cycle_words import NEUTRAL_CYCLE_WORDS
 from postproc.rs274.writer import WordWriter
@@ -173,18 +173,12 @@ class FagorWriter(WordWriter):
 
     def _reference(self, motion: Motion, block: Block) -> dict[str, float]:
         """The home position of each axis a reference return names, from the set-up, in program units."""
-        if motion.mode != "home":
-            self.unsupported("a return to the second reference position (G30): the set-up has no element for "
-                             "it (only each axis's home)", block)
-        target = {}
-        for axis in motion.axes:
-            home = home_position(self.ctx.setup, axis, self.modal.units == "inch")
-            if home is None:
-                self.unsupported(f"a reference return of axis {axis}: Fagor writes it as a G53 move to the home position, which the set-up does not give "
-                                 f"({add_home(axis)})", block)
-            else:
-                target[axis] = home
-        return target
+        inch = self.modal.units == "inch"
+        problem = reference_problem(self.ctx.setup, motion, inch, "Fagor writes it as a G53 move to the home position",
+                                    SECOND_RETURN + " (G30)")
+        if problem is not None:
+            self.unsupported(problem, block)
+        return reference_target(self.ctx.setup, motion, inch)
 
     # -- tool data (``postproc.isg_family.tool_data`` chose the D) ---------------------------------------
     def tool_length_offset_words(self, s: Any, block: Block) -> list[str]:

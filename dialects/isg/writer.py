@@ -29,7 +29,7 @@ from postproc.errors import UnsupportedError
 from postproc.expr import Expr
 from postproc.event_order import after_motion
 from postproc.ir import Block, Motion, Section
-from postproc.output.home_position import add_home, home_position
+from postproc.output.home_position import SECOND_RETURN, reference_problem, reference_target
 from postproc.rs274.codes import CodeTable
 from postproc.rs274.writer import WordWriter
 from postproc.subprogram_names import NameRule, SubprogramNames
@@ -167,18 +167,13 @@ class IsgWriter(WordWriter):
 
     def _reference(self, motion: Motion, block: Block) -> dict[str, float]:
         """The home position of each axis a reference return names, from the set-up, in program units."""
-        if motion.mode != "home":
-            self.unsupported("a return to the second reference position (G30): the set-up has no element for "
-                             "it (only each axis's home)", block)
-        target = {}
-        for axis in motion.axes:
-            home = home_position(self.ctx.setup, axis, self.modal.units == "inch")
-            if home is None:
-                self.unsupported(f"a reference return of axis {axis}: ISG writes it as a move to the home position in machine coordinates, which the set-up does not give "
-                                 f"({add_home(axis)})", block)
-            else:
-                target[axis] = home
-        return target
+        inch = self.modal.units == "inch"
+        problem = reference_problem(self.ctx.setup, motion, inch,
+                                    "ISG writes it as a move to the home position in machine coordinates",
+                                    SECOND_RETURN + " (G30)")
+        if problem is not None:
+            self.unsupported(problem, block)
+        return reference_target(self.ctx.setup, motion, inch)
 
     def statement_words(self, section: Section, block: Block) -> list[str]:
         try:

@@ -33,7 +33,8 @@ from typing import TYPE_CHECKING
 from postproc.errors import ProgramError
 from postproc.expr import Expr
 from postproc.ir import MachineCoordinates, Motion, Section
-from postproc.output.home_position import add_home, home_position
+from postproc.output.home_position import SECOND_RETURN, add_home, home_position
+from postproc.output.home_position import reference_problem as home_problem
 from postproc.xmlio import XAttr
 
 if TYPE_CHECKING:
@@ -78,21 +79,11 @@ def read_fixed_point(code: str, pos: int) -> SiemensFixedPoint | None:
 
 def reference_problem(setup: MachineSetup, motion: Motion, inch: bool) -> str | None:
     """Why a reference return cannot be written as ``G75 FP=1``, or None when it can."""
-    if motion.mode != "home":
-        return ("a return to the second reference position (G30): the set-up has no element for it (only each "
-                "axis's home, written as fixed point 1)")
     for axis in motion.axes:
         if axis not in MACHINE_AXES:
             return f"a reference return of axis {axis} (G75 is written for X, Y and Z)"
-        if home_position(setup, axis, inch) is None:
-            return missing_home(axis)
-    return None
-
-
-def missing_home(axis: str) -> str:
-    """The message for an axis whose home the set-up does not give."""
-    return (f"a reference return of axis {axis}: SINUMERIK writes it as G75 FP=1, fixed point 1 being the "
-            f"set-up's home position, which it does not give ({add_home(axis)})")
+    return home_problem(setup, motion, inch, "SINUMERIK writes it as G75 FP=1, fixed point 1 being the set-up's "
+                        "home position", SECOND_RETURN + " (G30)")
 
 
 def resolve(block: Block, ctx: Context, point: SiemensFixedPoint) -> None:
