@@ -93,6 +93,13 @@ class NgcWordBlockSyntax(WordBlockSyntax):
     """G codes (``g_key``) the dialect reads itself (``special_g_code``) before its code table does: a
     hook called for these only, so that the other codes of every block stay in the compiled family base
     (an interpreted override of ``_g_code`` cost LinuxCNC's reading ~8k instructions a G word)."""
+    HOOK_DECLARATIONS: ClassVar[dict[str, tuple[str, ...]]] = {
+        "special_g_code": ("SPECIAL_G",),
+        "before_sections": ("OWN_CODES", "OWN_STATE"),
+        "after_sections": ("OWN_CODES", "OWN_STATE", "OWN_MOTION"),
+    }
+    """Hook -> the declarations that make it run: a subclass that overrides a hook and leaves all of them empty
+    has a hook that is never called. The conformance suite checks it (``postproc.testing``)."""
     CUTTER_TAKES_LOADED_TOOL: ClassVar[bool] = False
     """G41/G42 without D takes the radius of the tool in the spindle (LinuxCNC); the reading fills in its
     number as the register, or refuses the block where it is not known. False: the register stays absent."""

@@ -35,8 +35,8 @@ from .. import native
 native.install()  # the compiled hot path, before any of its modules is imported
 
 from .checks import (
-    DialectUnderTest, cross_problems, garbage_problems, generated_problems, invalid_problems, ir_xml_problems,
-    pipeline_problems, read_text, round_trip_problems, targets,
+    DialectUnderTest, cross_problems, garbage_problems, generated_problems, hook_problems, invalid_problems,
+    ir_xml_problems, pipeline_problems, read_text, round_trip_problems, targets,
 )
 from ..errors import PostprocError
 from ..cycles.semantics import SEMANTICS
@@ -120,6 +120,13 @@ class ConformanceTests:
         if dialect.READER is None:
             pytest.skip(f"{case.name} is write-only: it has no reading pipeline")
         _report(pipeline_problems(dialect, case.machine()), case)
+
+    def test_block_syntax_hooks_are_declared(self, postproc_conformance: DialectUnderTest) -> None:
+        case = postproc_conformance
+        dialect = case.cls()
+        if dialect.READER is None:
+            pytest.skip(f"{case.name} is write-only: it has no reading pipeline")
+        _report(hook_problems(dialect, case.machine()), case)
 
     def test_examples_read_back_byte_for_byte(self, postproc_conformance: DialectUnderTest) -> None:
         case = postproc_conformance

@@ -273,6 +273,34 @@ def pipeline_problems(dialect: type[Dialect], machine: MachineSetup | None = Non
     return problems
 
 
+def hook_problems(dialect: type[Dialect], machine: MachineSetup | None = None) -> list[str]:
+    """Hooks of a family base that run only for what a subclass declares (``HOOK_DECLARATIONS`` on the base:
+    hook -> declarations): a step of the dialect's pipeline that overrides such a hook and leaves every one of
+    its declarations empty has a hook that is never called, a reading that silently does not happen."""
+    problems: list[str] = []
+    seen: set[type] = set()
+    for _, setup in pipeline_setups(dialect, machine):
+        try:
+            steps = dialect.file_pipeline(setup).steps
+        except PostprocError:
+            continue  # said by pipeline_problems
+        for step in steps:
+            kind = type(step)
+            if kind in seen:
+                continue
+            seen.add(kind)
+            bases = [cls for cls in kind.__mro__ if "HOOK_DECLARATIONS" in vars(cls)]
+            if not bases:
+                continue
+            family = bases[-1]
+            below = kind.__mro__[:kind.__mro__.index(family)]
+            for hook, names in family.HOOK_DECLARATIONS.items():  # type: ignore[attr-defined]
+                if any(hook in vars(cls) for cls in below) and not any(getattr(kind, n) for n in names):
+                    problems.append(f"{dialect.NAME}: {kind.__qualname__} overrides {hook} but declares none of "
+                                    f"{', '.join(names)}: {family.__qualname__} calls it only for what they name")
+    return problems
+
+
 # -- 5. translations to every other installed dialect --------------------------------------------------
 
 def targets(case: DialectUnderTest) -> list[type[Dialect]]:
