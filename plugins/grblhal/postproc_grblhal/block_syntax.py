@@ -78,24 +78,25 @@ class GrblhalBlockSyntax(GrblFamilyBlockSyntax):
     def g_sections(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],
                    used: set[str], cycle_block: bool) -> None:
         extra = ctx.state.extra
-        kept: dict[str, Any] = {}
+        kept: dict[str, Any] | None = None
         for group, (_, kind, arg, num) in list(codes.items()):
             if kind == "spindle_mode":  # G96 S D / G97 (``postproc.rs274.ngc_lathe``)
                 del codes[group]
                 ngc_lathe.read_spindle_mode(block, ctx, str(arg), num, values, used, GRBLHAL_SAID)
                 extra[CSS] = arg == "css"
             elif arg == THREAD_CYCLE:  # G76: H spring passes, E/L its tapers (``threading``)
-                kept.update((letter, values.pop(letter)) for letter in ("H", "E", "L") if letter in values)
-        g76 = "01" in codes and codes["01"][2] == THREAD_CYCLE
-        if not g76 and ("01" in codes or "09" in codes):
-            extra.pop(IN_FORCE, None)  # another motion mode: grblHAL clears the thread data at G76
+                kept = {letter: values.pop(letter) for letter in ("H", "E", "L") if letter in values}
+        if kept is None and IN_FORCE in extra and ("01" in codes or "09" in codes):
+            del extra[IN_FORCE]  # another motion mode: grblHAL clears the thread data at the next G76
         super().g_sections(block, ctx, codes, values, used, cycle_block)
-        values.update(kept)
+        if kept:
+            values.update(kept)
         motion = block.sections.get("Motion")
-        if isinstance(motion, Motion) and motion.mode == "thread":
-            ngc_lathe.read_thread(block, ctx, motion, values, used, GRBLHAL_SAID)
-        elif isinstance(motion, Motion) and motion.mode == THREAD_CYCLE:
-            read_g76(block, ctx, motion, values, used)
+        if isinstance(motion, Motion):
+            if motion.mode == "thread":
+                ngc_lathe.read_thread(block, ctx, motion, values, used, GRBLHAL_SAID)
+            elif motion.mode == THREAD_CYCLE:
+                read_g76(block, ctx, motion, values, used)
 
     def _check_cycle_words(self, block: Block, ctx: Context, values: dict[str, Any], cycle_block: bool) -> None:
         """A lathe's G76 takes L (its tapers, ``threading``), no repeat count."""
