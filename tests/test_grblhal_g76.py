@@ -183,3 +183,14 @@ def test_g76_is_refused_on_a_mill_set_up() -> None:
     assert errors("G76 P1. Z-10. I-1. J0.4 K0.8\nM2\n", MachineSetup(controller=BUILD)) == [
         "in.nc:1:1: error: grblHAL's G76 threading cycle (mc_thread) is read in lathe mode only: a set-up with "
         "<Input machineType=\"lathe\"/> reads it"]
+
+
+def test_linuxcncs_g76_of_the_same_words_moves_otherwise() -> None:
+    """Why a LinuxCNC G76 reaches grblHAL as G33 passes and not as G76: with the same words LinuxCNC's first move
+    backs away from the drive line by K - J (radius 0.4: X20.8) before going in, grblHAL's goes straight in
+    (``test_the_passes_by_hand``), and LinuxCNC leaves each pass at its own depth's retract."""
+    from tests.test_linuxcnc_lathe_g76 import moves_of
+    text = HEAD + "G0 X20. Z2.\nG76 P1.5 Z-10. I-1. J0.4 K1.2 H1\nM2\n"
+    linuxcnc = [(kind, round(2 * x, 6), z) for kind, x, z in moves_of(text)]
+    assert linuxcnc[1] == ("rapid", 20.8, 2.0)
+    assert moves(text)[1] == ("rapid", 18.6, 2.0, None)
