@@ -176,7 +176,7 @@ def test_a_line_keeps_256_characters() -> None:
     ("G43 H1\n", "3:1: error: this grblHAL build has no tool table"),
     ("G95 G1 X10 F0.1\n", "3:1: error: this grblHAL build runs no feed per revolution"),
     ("G7\n", "3:1: error: grblHAL runs G7 in lathe mode only ($32, error 20 otherwise)"),
-    ("G65 P100\n", "3:1: error: a G65 macro call needs a grblHAL macro plugin"),
+    ("G65 P100\n", "3:1: error: grblHAL's G65 P1-P7 are its inbuilt macros"),
     ("G99 G81 X10 Y10 Z-5 R2 F100\nG98 X20\n", "4:1: error: this grblHAL cycle block moves by rules not modelled"),
     ("#1=5\n", "3:1: error:"),
 ])

@@ -97,3 +97,37 @@ def test_gsk_reads_and_writes_g18_only() -> None:
     with pytest.raises(ErrorList) as caught:
         read_program(io.StringIO("G17\n"), file="in.nc", dialect="gsk", setup=GSK)
     assert [str(e) for e in caught.value.errors] == ["in.nc:1:1: error: unknown G code G17"]
+
+
+HAAS_TNC_ROUGHING = """G00 G18 G20 G40 G80 G99
+T0101
+G50 S2500
+G97 S2000 M03
+G00 G54 X1.6 Z0.1
+G71 P10 Q20 U0.01 W0.005 D0.05 F0.010
+N10 G00 G42 X0.3 Z0.1
+G01 Z0.
+X0.48 Z-0.09
+Z-0.85
+G02 X0.58 Z-0.9 R0.05
+G01 X1.3
+N20 G00 G40 X1.6
+G70 P10 Q20
+M30
+"""
+"""The shape of public Haas lathe programs (enier290188/cnc ``src/lathe/lathe_hp/*.nc``: one-block G71 with
+``G42`` in its first profile block and ``G40`` in its last, then G70 on the same profile), written here."""
+
+
+@pytest.mark.parametrize("target", ["fanuc", "gsk", "linuxcnc"])
+def test_a_haas_roughing_cycle_that_compensates_inside_its_profile_is_refused_where_it_stands(target: str) -> None:
+    """How Haas (or Fanuc T) compensates a roughing cycle's passes is in none of our sources (the Haas manual's
+    "G71 with TNC" example and Fanuc's "multiple repetitive cycle" rules were not found), so the cycle's moves
+    are not known: refused at the profile's first block, with what to program instead."""
+    with pytest.raises(ErrorList) as caught:
+        write(HAAS_TNC_ROUGHING, "fanuc", target)
+    assert str(caught.value.errors[0]) == (
+        "in.nc:7:1: error: G71: the profile block at line 7 turns tool nose radius compensation on or off (as Haas "
+        "programs do in a profile's first and last blocks): how the controller compensates inside the cycle is not "
+        "in our sources, so its moves are not known; turn compensation on before the finishing cycle and off after "
+        "it, outside the profile")

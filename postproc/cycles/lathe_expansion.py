@@ -37,6 +37,12 @@ def profile_segments(blocks: Sequence[Block], start: tuple[float, float], ctx: C
     increments = ctx.increments  # the reading dialect's U/W (``Dialect.INCREMENTAL_AXES``)
     for block in blocks:
         other = [k for k in block.sections if k not in PROFILE_SECTIONS]
+        if other and other[0] == "CutterCompensation":
+            raise ProgramError(f"{code}: the profile block at line {block.line} turns tool nose radius compensation on "
+                               "or off (as Haas programs do in a profile's first and last blocks): how the controller "
+                               "compensates inside the cycle is not in our sources, so its moves are not known; "
+                               "turn compensation on before the finishing cycle and off after it, outside the "
+                               "profile", ctx.at(block))
         if other:
             raise ProgramError(f"{code}: the profile block at line {block.line} holds {_name(other[0])}, which "
                                "a profile may not (only rapid, straight and arc moves and feeds)", ctx.at(block))

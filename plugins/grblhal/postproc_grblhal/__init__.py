@@ -24,8 +24,10 @@ What grblHAL accepts, from its source (github.com/grblHAL/core, stored commit f8
   as grblHAL runs them (``reader``, ``variables``), Fanuc-style subprograms as subs (``subprograms``), named
   subs refused. G65/G66 and M98 need a macro plugin (``grbl.on_macro_execute``): refused.
 * Lathe mode (``$32``): G7/G8, G33 K, G96 S D/G97 read and written on a lathe set-up (``lathe``), with G95 and
-  G43 H as a mill's; its G76 threading cycle and G70-G72 (``LATHE_UVW_OPTION``) are not modelled (refused at
-  their line; another controller's threading cycle is written as G33 passes); G41/G42 only with
+  G43 H as a mill's; its G76 threading cycle read into its moves (``threading``, kept native in a grblHAL
+  program; another controller's threading cycle is written as G33 passes); G70-G72 (``LATHE_UVW_OPTION``) are
+  not in the core (``mc_lathe_cycle`` is a weak stub answering "unsupported command": refused; another
+  controller's roughing cycles are written as their moves); G41/G42 only with
   ``CUTTER_COMP_ENABLE`` (off, experimental): the compensated path is written instead, as for grbl. No G52,
   G44 or M19.
 * ``( )`` and ``;`` comments; ``/`` block delete at the start of a block; a line keeps 256 characters

@@ -19,6 +19,7 @@ ROWS = (
     ("G2", "01", "motion", "cw"),
     ("G3", "01", "motion", "ccw"),
     ("G33", "01", "motion", "thread"),
+    ("G76", "01", "motion", "grblhal_thread_cycle"),
     ("G4", "00", "dwell", None),
     ("G17", "02", "plane", "XY"),
     ("G18", "02", "plane", "ZX"),
@@ -99,19 +100,20 @@ NATIVE_G: dict[str, str] = {
 
 _NOT_RUN = ("grblHAL's parser accepts G85, G86 and G89 but its motion control runs only G73 and G81-G84 "
             "(motion_control.c mc_canned_drill), so the block would not move: refused")
-_G76 = ("grblHAL's G76 threading cycle (mc_thread, its LinuxCNC-like P I J K R Q H E L words) is not modelled by this "
-        "dialect: a translation writes another controller's threading cycle as G33 passes")
+G76_ON_A_MILL = ("grblHAL's G76 threading cycle (mc_thread) is read in lathe mode only: a set-up with <Input "
+                 "machineType=\"lathe\"/> reads it")
 REFUSED_G: dict[str, str] = {
     "84": ("grblHAL's G84 is experimental (a spindle with the at-speed capability reverses at the bottom, "
            "and P is required): not modelled, so a translation expands it"),
     "85": _NOT_RUN, "86": _NOT_RUN, "89": _NOT_RUN,
     "74": "grblHAL has no G74 (left-hand tapping cycle)",
-    "76": _G76,
     "41": "cutter radius compensation (G41/G42) is off in grblHAL builds (CUTTER_COMP_ENABLE, experimental)",
     "42": "cutter radius compensation (G41/G42) is off in grblHAL builds (CUTTER_COMP_ENABLE, experimental)",
     "44": "grblHAL has no G44 (negative tool length offset)",
     "64": "grblHAL has no path control modes but G61 (path blending is off in every build)",
-    "65": "a G65 macro call needs a grblHAL macro plugin: not modelled",
+    "65": ("grblHAL's G65 P1-P7 are its inbuilt macros (a setting, a tool offset, a parameter, the machine state, "
+           "probe selection, spindle delay, Modbus: ngc_params.c), other numbers run a file system plugin's "
+           "P<n>.macro file: a Fanuc macro call has no counterpart in the program (not modelled)"),
     "66": "a G66 modal macro call needs a grblHAL macro plugin: not modelled",
     "67": "a G67 modal macro cancel needs a grblHAL macro plugin: not modelled",
 }

@@ -18,8 +18,11 @@ grblHAL adds or lacks. From ``gcode.c`` (github.com/grblHAL/core, stored commit 
   -1 by default), so a Fanuc T turret index ``T0101`` is written ``T1 M6`` and ``G43 H1`` as for LinuxCNC, on a
   build with a tool table (``<Controller toolTable="true">``); without one the X offset has no word (G43.1's
   X would be halved under G7: not modelled) and the offset is refused (``GrblhalLatheWriter``).
-* ``G76`` (``mc_thread``) is LinuxCNC's cycle with a taper X of its own: not modelled, refused where read;
-  another controller's threading cycle reaches grblHAL as G33 passes (its expansion), as it reaches LinuxCNC.
+* ``G76`` (``mc_thread``): LinuxCNC's words, with its own moves (``threading``): read into them, kept native in a
+  grblHAL program. Another controller's threading cycle reaches grblHAL as G33 passes (its expansion), as it
+  reaches LinuxCNC: no other cycle moves as grblHAL's (LinuxCNC's G76 first retracts from the drive line and
+  leaves each pass at its own depth's retract, grblHAL's goes straight in and leaves at the next pass's; Fanuc T's
+  G76 and G92 return to the start X after every pass).
 """
 
 from __future__ import annotations
