@@ -13,7 +13,7 @@ grblHAL's table.
   source returns to after it (``G0`` alone: grblHAL ends the cycle and moves nothing [V: ``gcode.c``, G0
   without axis words]; a cancel beside an axis command of its own stands alone before it, ``cancels``); a
   cancel with no native cycle in force writes nothing (the cycles before it arrived expanded).
-* G64 writes nothing (path blending is off in every build: grblHAL always blends by junction deviation),
+* G64 writes nothing (path blending is off in every build: grblHAL runs the exact path, its one mode),
   with the tolerance it drops noted; G95 only for a spindle with an encoder (``<Controller spindleSync>``).
 * ``/`` block delete is written: grblHAL skips the block when its switch is on.
 * Parameters, expressions and o-word flow control, for a build with them (``<Controller expressions="true">``,
@@ -153,7 +153,7 @@ class GrblhalWriter(GrblFamilyWriter):
 
     def path_control_words(self, s: Any, block: Block) -> list[str]:
         if not s.one_shot and s.mode == "cutting":
-            self.note_unwritten_tolerance(s, block)  # grblHAL always blends, by its junction deviation setting
+            self.note_unwritten_tolerance(s, block)  # grblHAL runs its one mode, the exact path
             return []
         return super().path_control_words(s, block)
 
