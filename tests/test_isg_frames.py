@@ -140,7 +140,7 @@ def test_rotation_on_is_kept_verbatim_where_its_meaning_is_not_settled() -> None
             _errors(kept)[0], command
 
 
-@pytest.mark.parametrize("target", ["fanuc", "gsk", "siemens", "fagor", "grbl", "grblhal"])
+@pytest.mark.parametrize("target", ["fanuc", "siemens", "fagor", "grbl", "grblhal"])
 def test_rotation_about_an_unsettled_centre_is_refused_by_name_everywhere_but_isg(target: str) -> None:
     """[?] TF5200 "#ROTATION ON/OFF" says only "offset of the first/second main axis relative to the centre of
     rotation" (its sign is in a figure): a non-zero CENTER1/CENTER2 is neither translated nor simulated."""
