@@ -44,6 +44,9 @@ from .control_writing import JumpTargets, expression, label_name, statement
 from .cycle_writing import Call, in_place_moves, moves_in_plane, parameters_writable
 from .fixed_point import g75_line, reference_problem
 
+NAME_LENGTH = 24
+"""The longest program name, without ``_N_`` and ``_MPF`` [K: SINUMERIK ONE programming manual 12/2019 2.2.1
+"Maximum length: 24 characters"; 840D sl 11/2006 "Program names: 24 characters"]."""
 _WITH_DWELL = ("Dwell", "Sequence")
 _ALONE_WITH_DWELL = frozenset((*_WITH_DWELL, "Comments", "BlockDelete"))
 _OWN_TEXT = frozenset((ASSIGN, CONTROL, LABEL, "NativeCode", "ProgramStart", "FrameChange"))
@@ -158,6 +161,9 @@ class SiemensWriter(WordWriter):
             name += "_MPF"
         if not name[:1].isalpha():
             name = "P" + name
+        if len(name) - 4 > NAME_LENGTH:
+            self.unsupported(f"a program name of {len(name) - 4} characters ({name[:-4][:NAME_LENGTH]}...): SINUMERIK "
+                             f"takes {NAME_LENGTH}", block)
         return f"%_N_{name}"
 
     def comment(self, text: str) -> str:
