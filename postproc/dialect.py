@@ -150,8 +150,10 @@ class Dialect:
     TOOL_LENGTH_OFFSET: ClassVar[bool] = True
     """Tool length offset from a table exists (the writer refuses it otherwise)."""
     PATH_CONTROL: ClassVar[str | None] = None
-    """The one path control mode the controller runs in, whatever the program says ("cutting": grbl always
-    blends); None: the program sets it. ``verify`` accepts a source whose every path control is this mode."""
+    """The one path control mode the controller runs in, whatever the program says; None: the program sets
+    it. ``verify`` accepts a source whose every path control is this mode, and with "exact_stop" (grbl's
+    exact path: every programmed point is reached) any source: a blending mode only lets the path leave the
+    programmed points the simulation compares."""
     LENGTH_TOGGLES: ClassVar[bool] = True
     """The tool length offset is turned on and off by code (G43/G49, Fagor's G43/G44); False: it applies
     whenever tool data is selected (ISG's ``D``, ``postproc.isg_family.tool_data``)."""

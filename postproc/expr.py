@@ -259,6 +259,28 @@ MAX_XML_DEPTH = 200
 """Deepest expression read from XML (deeper trees are refused rather than exhausting the stack)."""
 
 
+def nests_deeper(expr: Expr, limit: int = MAX_XML_DEPTH) -> bool:
+    """Whether ``expr`` is more than ``limit`` levels deep, found without recursion. The readers bound their
+    own recursion (brackets, signs), but a chain ``1+1+...+1`` gets one level per operator from a loop, and
+    what evaluates, folds, writes and saves an expression recurses over it: a reader refuses a deeper one
+    at its text (the XML reader takes no deeper one either)."""
+    stack: list[tuple[Expr, int]] = [(expr, 1)]
+    while stack:
+        node, depth = stack.pop()
+        if depth > limit:
+            return True
+        if isinstance(node, Binary):
+            stack.append((node.left, depth + 1))
+            stack.append((node.right, depth + 1))
+        elif isinstance(node, Unary):
+            stack.append((node.operand, depth + 1))
+        elif isinstance(node, Func):
+            stack.extend((arg, depth + 1) for arg in node.args)
+        elif isinstance(node, Var) and node.index is not None:
+            stack.append((node.index, depth + 1))
+    return False
+
+
 def expr_from_xml(el: etree._Element) -> Expr:
     """Read one expression element (and its children). Only expression elements are accepted."""
     depth = 0

@@ -146,6 +146,19 @@ def test_a_call_before_its_definition_is_refused_when_read_and_flattened_when_wr
     assert "before its sub's definition" in warnings[0]
 
 
+def test_a_sub_that_calls_itself_is_read_and_runs_with_its_inherited_argument() -> None:
+    """The defect: a call in its own sub's body was refused as "before its definition", though grblHAL registers
+    the sub when the flow passes ``o100 sub``, before the body first runs. #1 3 is inherited by the first call
+    (``NGCFlowCtrl_Call``), each level counts it down one and calls again while it is above 0: X2, X1, X0."""
+    recursive = ("G21 G17 G90\n#1=3\no100 sub\n#1=[#1-1]\nG1 X#1 F100\no101 if [#1 GT 0]\no100 call\n"
+                 "o101 endif\no100 endsub\no100 call\nM2\n")
+    assert _moves(recursive, "grblhal") == [("feed", 2, 0, 0), ("feed", 1, 0, 0), ("feed", 0, 0, 0)]
+    text, warnings = _translate(recursive, "grblhal")
+    assert text == recursive and warnings == []
+    text, warnings = _translate(recursive, "linuxcnc")  # written as grblHAL's own call, not flattened
+    assert "o100 call" in text and warnings == [] and _moves(text, "grblhal") == _moves(recursive, "linuxcnc")
+
+
 @pytest.mark.parametrize("program, message", [
     ("G21\no100 sub\nG0 X#30\no100 endsub\no100 call" + " [1]" * 29 + "\nM2\n",
      "t.gcode:5:1: error: a grblHAL call with 29 arguments leaves #30 unset"),

@@ -140,6 +140,21 @@ def test_rotation_on_is_kept_verbatim_where_its_meaning_is_not_settled() -> None
             _errors(kept)[0], command
 
 
+@pytest.mark.parametrize("target", ["fanuc", "siemens", "fagor", "grbl", "grblhal"])
+def test_rotation_about_an_unsettled_centre_is_refused_by_name_everywhere_but_isg(target: str) -> None:
+    """[?] TF5200 "#ROTATION ON/OFF" says only "offset of the first/second main axis relative to the centre of
+    rotation" (its sign is in a figure): a non-zero CENTER1/CENTER2 is neither translated nor simulated."""
+    from postproc.plugins import default_registry
+    if target not in default_registry().dialects:
+        pytest.skip(f"the {target} plugin is not installed")
+    command = "#ROTATION ON [ANGLE=30 CENTER1=10 CENTER2=5]"
+    kept = HEAD + command + "\nG01 X10 Y0 F100\n#ROTATION OFF\nM30\n"
+    assert _errors(kept, target)[0] == f"in.nc:2:1: error: #ROTATION ON from isg has no equivalent in {target}"
+    with pytest.raises(ErrorList) as caught:
+        _events(kept)
+    assert [str(e) for e in caught.value.errors] == ["in.nc:2:1: error: #ROTATION ON cannot be simulated"]
+
+
 def test_isg_to_isg_keeps_g68_as_written() -> None:
     text = HEAD + "G68 R30 X1 Y2\nG01 X10 Y0 F100\nG69\nM30\n"
     assert _translate(text, "isg") == text

@@ -98,3 +98,17 @@ def test_a_cycle_example_verifies_under_the_option(name: str, option: str) -> No
                           source="siemens", target="siemens", setup=load_setup(SETUP), allow_ignored=True,
                           transform=parse_transform(options["transform"]) if option == "mirror" else None)
     assert report.ok and report.moves > 10, report.summary() + "\n" + out
+
+
+@pytest.mark.parametrize("options", [{"units": "inch"}, {"transform": "translate 5,0,0"}])
+def test_a_changed_mcall_definition_is_written_where_it_stands(options: dict[str, str]) -> None:
+    """The defect: the ``N110 MCALL CYCLE85(..)`` block, changed by the option, came out as a bare ``N110`` (its
+    call was written later, before the first hole). Now the definition is its block: ``N110 G0`` (G0 stated, as
+    before each written call) and the ``MCALL``, the holes their own position blocks, nothing without words."""
+    out = _translate("cycles.mpf", **options)
+    written = out.splitlines()
+    assert not [line for line in written if line.strip().isalnum() and line.startswith("N")], out
+    for number, name, hole in (("N110", "CYCLE85", "N120 X"), ("N150", "CYCLE89", "N160 X")):
+        at = written.index(f"{number} G0")
+        assert written[at + 1].startswith(f"MCALL {name}(") and written[at + 2].startswith(hole), out
+    assert out.count("MCALL CYCLE85") == 1 and out.count("MCALL CYCLE89") == 1

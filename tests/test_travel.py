@@ -168,12 +168,15 @@ def test_a_g10_tool_length_counts(cli, tmp_path):
     assert result.err_lines == [f"{nc}:3:8: error: Z+50.000 mm beyond the limit 0.000 (machine Z 50.000)"]
 
 
-def test_g53_is_machine_coordinates_and_refused_under_a_tool_length(cli, tmp_path):
-    result, nc = _toolpath(cli, tmp_path, "G90 G54 G0 X0 Y0 Z50\nG53 G0 Z5\nG43 H1 Z50\nG53 G0 Z-10\nM30\n")
+def test_g53_is_machine_coordinates_under_a_tool_length_too(cli, tmp_path):
+    # G53 suppresses the tool length on its axis (Fanuc: the offset vector is cancelled for the move): G53 Z-10
+    # is machine Z -10 under G43 H1, G53 Z3 is 3 beyond; the next absolute Z50 is 50 - 200 + 100 = -50 again
+    result, nc = _toolpath(cli, tmp_path, "G90 G54 G0 X0 Y0 Z50\nG53 G0 Z5\nG43 H1 Z50\nG53 G0 Z-10\n"
+                                          "G53 G0 Z3\nG0 Z50\nZ251\nM30\n")
     assert result.err_lines == [
         f"{nc}:2:8: error: Z+5.000 mm beyond the limit 0.000 (machine Z 5.000)",
-        f"{nc}:4:8: error: the travel of Z cannot be checked: a move in machine coordinates with a tool offset "
-        "in force on the axis (controllers differ on whether it applies)"]
+        f"{nc}:5:8: error: Z+3.000 mm beyond the limit 0.000 (machine Z 3.000)",
+        f"{nc}:7:1: error: Z+151.000 mm beyond the limit 0.000 (machine Z 151.000)"]
 
 
 def test_the_reference_return_needs_a_home(cli, tmp_path):

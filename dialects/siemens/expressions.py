@@ -33,7 +33,7 @@ from __future__ import annotations
 from postproc.errors import UnsupportedError
 from postproc.expr import Binary, Expr, Func, Num, Unary, Var
 from postproc.isg_family.expressions import Unmodelled
-from postproc.rs274.expressions import MAX_DEPTH, ExprSyntaxError
+from postproc.rs274.expressions import MAX_DEPTH, ExprSyntaxError, shallow
 
 R_BASE = 500
 """``R<n>`` is the neutral variable ``R_BASE + n``."""
@@ -98,7 +98,7 @@ def r_number(var: Var) -> int | None:
 
 def parse_expr(text: str, pos: int) -> tuple[int, Expr]:
     """The expression starting at ``pos``: (end offset, expression)."""
-    return _Parser(text).top(pos)
+    return shallow(pos, _Parser(text).top(pos))
 
 
 def parse_variable(text: str, pos: int) -> tuple[int, Var]:

@@ -11,8 +11,8 @@ comments and ``%_N_NAME_MPF`` headers.
   anything else that moves (``cycle_writing``, which says where; every other cycle arrives expanded). The
   return level is in the call's RTP, so G98/G99 write nothing. A cycle read from SINUMERIK arrives here only
   when a program transform changed it (no lowering step expands a cycle back to its own dialect): a call once
-  is written once again, the ``MCALL`` definition writes nothing until its first hole, a ``HOLES1``/``HOLES2``
-  block its moves (``cycle_block``).
+  is written once again, the ``MCALL`` definition as itself where the call can stand there (else nothing until
+  its first hole), a ``HOLES1``/``HOLES2`` block its moves (``cycle_block``).
 * A dwell is ``G4 F<seconds>`` alone in its block (only a block number joins it) [K: 840D Fundamentals,
   "G4 must be programmed in a separate block"]; what acts before it goes in a block before.
 * Tool data: ``D<n>`` selects cutting edge n (its length and radius), ``D0`` none: a Fanuc ``G43 H``/``G41 D``
@@ -44,6 +44,9 @@ from .control_writing import JumpTargets, expression, label_name, statement
 from .cycle_writing import Call, in_place_moves, moves_in_plane, parameters_writable
 from .fixed_point import g75_line, reference_problem
 
+NAME_LENGTH = 24
+"""The longest program name, without ``_N_`` and ``_MPF`` [K: SINUMERIK ONE programming manual 12/2019 2.2.1
+"Maximum length: 24 characters"; 840D sl 11/2006 "Program names: 24 characters"]."""
 _WITH_DWELL = ("Dwell", "Sequence")
 _ALONE_WITH_DWELL = frozenset((*_WITH_DWELL, "Comments", "BlockDelete"))
 _OWN_TEXT = frozenset((ASSIGN, CONTROL, LABEL, "NativeCode", "ProgramStart", "FrameChange"))
@@ -158,6 +161,9 @@ class SiemensWriter(WordWriter):
             name += "_MPF"
         if not name[:1].isalpha():
             name = "P" + name
+        if len(name) - 4 > NAME_LENGTH:
+            self.unsupported(f"a program name of {len(name) - 4} characters ({name[:-4][:NAME_LENGTH]}...): SINUMERIK "
+                             f"takes {NAME_LENGTH}", block)
         return f"%_N_{name}"
 
     def comment(self, text: str) -> str:
@@ -208,8 +214,9 @@ class SiemensWriter(WordWriter):
         here with its record as the reader made it, ``cycles``): a call once (``CYCLE81(..)``: ``call``,
         ``expand``) is written once where its parameters are a call's, a block the reader marked ``expand``
         (a ``HOLES1``/``HOLES2`` call's holes, a call once that is not) as its moves with any active call ended
-        first, the block that only defines the modal call (``MCALL CYCLE81(..)``: repeat 0) as nothing of it
-        (the ``MCALL`` goes before the first hole, ``hole_block``), a hole as ``hole_block`` writes it."""
+        first, the block that only defines the modal call (``MCALL CYCLE81(..)``: repeat 0) as that definition
+        where ``definable`` (else nothing of it: the ``MCALL`` goes before the first hole, ``hole_block``), a
+        hole as ``hole_block`` writes it."""
         compound = block.sections.get("CompoundMotion")
         if cycle.expand:
             if cycle.call and cycle.repeat == 1 and not moves_in_plane(cycle) and parameters_writable(cycle):
@@ -221,12 +228,37 @@ class SiemensWriter(WordWriter):
             self.call = None
             return text + self.compound(_with(block, rest), compound)
         if cycle.repeat == 0:
+            if self.definable(block, cycle):
+                return self.definition_block(block, cycle)
             rest = {k: v for k, v in block.sections.items() if k not in _CYCLE_OWN or k in ("Comments", "Sequence")}
             return self.generate(_with(block, rest)) if rest else ""
         if cycle.repeat != 1 or not parameters_writable(cycle):
             self.unsupported(f"a {cycle.kind.replace('_', ' ')} cycle block that no CYCLE8x call writes "
                              "(its levels, dwell or strokes)", block)
         return self.hole_block(block, cycle)
+
+    def definable(self, block: Block, cycle: CannedCycle) -> bool:
+        """Whether the block that defines the modal call (``MCALL CYCLE81(..)``, changed by a program transform)
+        can be written as that definition where it stands: no call active, G17 G90 in force, nothing else in
+        the block but its number and comments, a straight run of the text, parameters a call writes. Otherwise nothing of it is written, and the first hole writes the call
+        or says why it cannot (``hole_block``)."""
+        return (self.call is None and not self.flowing and self.modal.distance == "absolute" and self.modal.plane == "XY"
+                and all(k in _CYCLE_OWN for k in block.sections) and parameters_writable(cycle))
+
+    def definition_block(self, block: Block, cycle: CannedCycle) -> str:
+        """``N.. G0`` and ``MCALL CYCLE8x(..)``: the call is active from here, so its holes are position blocks
+        (``hole_block`` writes the call again only where it changes). G0 is stated as ``hole_block`` states it:
+        the source had it in force (the reader asks for it), but a cycle written as its moves before may have
+        left the output in G1."""
+        sequence = block.sections.get("Sequence")
+        if sequence is not None:
+            self.targets.mark(f"N{getattr(sequence, 'number')}")
+        self.call = Call.of(cycle)
+        text = self.call.text(lambda value: self.number(value, "Z"), lambda value: self.number(value, "F"))
+        comments = block.sections.get("Comments")
+        if comments is not None:
+            text = " ".join([text, *(self.comment(t) for t in getattr(comments, "texts"))])
+        return self._cycle_text(block, [self.code("motion", "rapid", "rapid motion", block) + "\n", text + "\n"])
 
     def once_block(self, block: Block, cycle: CannedCycle) -> str:
         """``CYCLE8x(..)`` alone: it drills where the tool stands, retracts to RTP (the record's initial level,

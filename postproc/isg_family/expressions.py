@@ -27,7 +27,7 @@ from __future__ import annotations
 
 from postproc.errors import UnsupportedError
 from postproc.expr import Binary, Expr, Func, Num, Unary, Var
-from postproc.rs274.expressions import MAX_DEPTH, ExprSyntaxError
+from postproc.rs274.expressions import MAX_DEPTH, ExprSyntaxError, shallow
 
 class Unmodelled(ExprSyntaxError):
     """A construct ISG has and the IR does not model (an array element): the reader keeps its block
@@ -250,12 +250,12 @@ def expect(text: str, pos: int, char: str) -> int:
 def parse_expr(text: str, pos: int) -> tuple[int, Expr]:
     """A full expression from ``pos`` (a statement's or an assignment's right-hand side); returns its end
     (before any blanks after it) and its tree."""
-    return _Parser(text).expression(pos)
+    return shallow(pos, _Parser(text).expression(pos))
 
 
 def parse_word_value(text: str, pos: int) -> tuple[int, Expr]:
     """What follows an address when it is not a plain number: ``[expr]``, ``P1``, ``-P3``, ``V.L.X``."""
-    return _Parser(text).operand(pos)
+    return shallow(pos, _Parser(text).operand(pos))
 
 
 # ----------------------------------------------------------------------------------------- writing

@@ -39,7 +39,8 @@ from typing import Any, Iterator
 from ..compensation.tool_table import ToolTable
 from ..context import Context
 from ..dialect import Dialect
-from ..errors import PostprocError, UnsupportedError
+from ..control import CONTROL
+from ..errors import Location, PostprocError, UnsupportedError
 from ..expr import Expr
 from ..ir import Block, CutterCompensation, DataSetting, DistanceMode, Motion, ToolLengthOffset, Units
 
@@ -131,6 +132,10 @@ class _Selection:
     """The distance mode in force (ISG applies a new length at an absolute Z only)."""
     pending: bool = False
     """A length changed without a Z move, waiting for the next Z move (which must be absolute: Fagor)."""
+    unapplied: Location | None = None
+    """Where a length changed without a Z move that the source applies at its next move and the target only at
+    an absolute Z: an error at the next block that moves unless it moves Z absolutely, none if nothing moves
+    before the program ends (a ``G49`` before ``M30``)."""
 
 
 def select_tool_data(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
@@ -154,6 +159,14 @@ def _select(blocks: Iterator[Block], ctx: Context, toggles: bool, later_z: bool 
     inch = False
     for block in blocks:
         sections = block.sections
+        if state.unapplied is not None and _moves(block):
+            distance = sections.get("DistanceMode")
+            absolute = distance.mode == "absolute" if isinstance(distance, DistanceMode) else state.absolute
+            motion = sections.get("Motion")
+            if not (_moves_z(block, absolute or toggles) and isinstance(motion, Motion)
+                    and motion.mode not in ("home", "home2")):
+                ctx.diagnostics.error(UnsupportedError(UNAPPLIED).located(state.unapplied))
+            state.unapplied = None
         if state.pending and _z_move(block):
             state.pending = False
             distance = sections.get("DistanceMode")
@@ -178,7 +191,8 @@ def _select(blocks: Iterator[Block], ctx: Context, toggles: bool, later_z: bool 
         if "ToolLengthOffset" in sections or "CutterCompensation" in sections:
             at = ctx.at(block, ctx.column_of(block, "H" if "ToolLengthOffset" in sections else "D"))
             try:
-                _rewrite(block, table, state, toggles, later_z is not None)
+                if _rewrite(block, table, state, toggles, later_z is not None):
+                    state.unapplied = at
             except PostprocError as err:
                 ctx.diagnostics.error(err.located(at))
                 continue
@@ -191,15 +205,16 @@ def _register(value: int | Expr | None, what: str) -> int | None:
     raise UnsupportedError(f"a {what} register that is computed (the D selecting it is chosen from its value)")
 
 
-def _rewrite(block: Block, table: ToolTable, state: _Selection, toggles: bool, later_z: bool) -> None:
-    """The block's length and radius registers as the D (and, with ``toggles``, G43/G44) they need."""
+def _rewrite(block: Block, table: ToolTable, state: _Selection, toggles: bool, later_z: bool) -> bool:
+    """The block's length and radius registers as the D (and, with ``toggles``, G43/G44) they need. True: the
+    new length is left for a later move, which must move Z absolutely (``_Selection.unapplied``)."""
     sections = block.sections
     offset = sections.get("ToolLengthOffset")
     cutter = sections.get("CutterCompensation")
     length_changed = isinstance(offset, ToolLengthOffset)
     if isinstance(offset, ToolLengthOffset):
         if offset.mode == "negative" and cutter is None:
-            return  # left to the writer, which refuses it (with --on-unsupported warn: that word only)
+            return False  # left to the writer, which refuses it (with --on-unsupported warn: that word only)
         if offset.mode not in ("positive", "cancel"):
             raise UnsupportedError(f"a tool length offset '{offset.mode}'")
         state.length = _register(offset.register, "tool length") if offset.mode == "positive" else None
@@ -223,13 +238,12 @@ def _rewrite(block: Block, table: ToolTable, state: _Selection, toggles: bool, l
                 + (f"length of register {state.length} ({wanted_mm:g} mm) in force" if state.length is not None
                    else "zero the program runs with (no length offset)")
                 + f": give register {want} that length in the set-up's <Tools>, or use one register for both")
+    unapplied = False
     if abs(wanted_mm - state.applied) > SAME_MM and not _moves_z(block, state.absolute or toggles):
         if later_z:
             state.pending = True  # both apply it at the next (absolute) Z: checked there
         else:
-            raise UnsupportedError("the new tool length is applied only at a move of Z (ISG: programmed absolutely, "
-                                   "P-CHAN-00100 by default; Fagor: when the axis moves): program the length offset "
-                                   "beside a Z move")
+            unapplied = True  # the source applies it at its next move: checked there
     state.applied = wanted_mm
     sections.pop("ToolLengthOffset", None)
     if toggles:  # Fagor: G43 D<n> / G44, and G41 D<r>
@@ -247,6 +261,21 @@ def _rewrite(block: Block, table: ToolTable, state: _Selection, toggles: bool, l
             sections["ToolLengthOffset"] = ToolLengthOffset("positive", want) if want else ToolLengthOffset("cancel")
             state.written = want
     block.changed()
+    return unapplied
+
+
+UNAPPLIED = ("the new tool length is applied only at a move of Z (ISG: programmed absolutely, P-CHAN-00100 by "
+             "default; Fagor: when the axis moves), the source's at its next move: program the length offset beside "
+             "a Z move")
+
+
+def _moves(block: Block) -> bool:
+    """Whether a block may move an axis (a call or jump runs moves elsewhere: counted as one)."""
+    sections = block.sections
+    motion = sections.get("Motion")
+    if isinstance(motion, Motion) and motion.axes:
+        return True
+    return any(key in sections for key in ("CompoundMotion", "CannedCycle", "CycleCall", CONTROL))
 
 
 def _z_move(block: Block) -> bool:

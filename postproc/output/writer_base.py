@@ -227,7 +227,7 @@ class Writer(abc.ABC):
         return bool(diagnostics.errors or diagnostics.consequences)
 
     def nothing_written(self, block: Block) -> str:
-        """A source block whose words all mean nothing to the target (grbl's G64: it always blends) is
+        """A source block whose words all mean nothing to the target (grbl's G64: it runs one path mode) is
         written as a comment with a warning, never as an empty line (a generated block that writes
         nothing, such as an expansion's cycle cancel for grbl, has no source line to keep)."""
         err = PostprocError(f"nothing in this block has a meaning in {self.target.NAME if self.target else 'the target'}"

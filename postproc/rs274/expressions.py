@@ -17,7 +17,7 @@ from __future__ import annotations
 from dataclasses import field
 
 from ..errors import Location, ParseError, UnsupportedError
-from ..expr import Binary, Expr, Func, Num, Unary, Var
+from ..expr import MAX_XML_DEPTH, Binary, Expr, Func, Num, Unary, Var, nests_deeper
 from ..records import record
 
 MAX_DEPTH = 64
@@ -364,7 +364,7 @@ def parse_expr(text: str, pos: int, spelling: ExprSpelling, brackets: int = 0) -
     """Read a full expression (operators included) starting at ``pos``; returns the end and the tree.
 
     ``brackets`` is the nesting the caller already opened (``IF [`` counts 1 toward Fanuc's 5)."""
-    return _Parser(text, spelling, in_word=False, brackets=brackets).expression(pos)
+    return shallow(pos, _Parser(text, spelling, in_word=False, brackets=brackets).expression(pos))
 
 
 def parse_word_value(text: str, pos: int, spelling: ExprSpelling) -> tuple[int, Expr]:
@@ -374,7 +374,7 @@ def parse_word_value(text: str, pos: int, spelling: ExprSpelling) -> tuple[int, 
     start = _skip(text, pos)
     if start < len(text) and text[start] in _LETTERS and not spelling.functions_as_word_values:
         raise ExprSyntaxError("a value, '#' or '[' expected", start)
-    return p.operand(pos)
+    return shallow(pos, p.operand(pos))
 
 
 def parse_condition(text: str, pos: int, spelling: ExprSpelling) -> tuple[int, Expr]:
@@ -384,9 +384,19 @@ def parse_condition(text: str, pos: int, spelling: ExprSpelling) -> tuple[int, E
         raise ExprSyntaxError("'[' expected", start)
     p = _Parser(text, spelling, in_word=False)
     p.open_bracket(start)
-    end, cond = p.expression(start + 1)
+    end, cond = shallow(start, p.expression(start + 1))
     end = p.expect(end, "]", "']' expected")
     return end, cond
+
+
+def shallow(pos: int, parsed: tuple[int, Expr]) -> tuple[int, Expr]:
+    """``parsed`` (an expression read from ``pos``) if it is at most ``MAX_XML_DEPTH`` levels deep, counting
+    each operator of a chain (``postproc.expr.nests_deeper``); else a located error. Every reader's
+    expressions pass here."""
+    if nests_deeper(parsed[1]):
+        raise ExprSyntaxError(f"expression nested deeper than {MAX_XML_DEPTH} levels (each operator of a chain "
+                              "counts one)", pos)
+    return parsed
 
 
 # ----------------------------------------------------------------------------------------- writing

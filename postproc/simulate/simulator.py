@@ -335,11 +335,11 @@ class Simulator(Moves):
             raise ProgramError(NO_FEED, self._at(block), needs="F")
         machine = "MachineCoordinates" in block.sections
         target = self.target(block, m.axes, absolute or machine, machine)
-        if machine and self.compensating:
-            self._machine_coordinates(block, m, target)
-        if travel is not None and mode not in ("cw", "ccw"):
+        if travel is not None and mode not in ("cw", "ccw"):  # (a machine move's values: machine positions)
             travel.line(block, self.pos, target, self._programmed(m.axes),
                         self.incremental and not (absolute or machine), machine)
+        if machine and self.compensating:
+            self._machine_coordinates(block, m, target)
         if mode == "rapid":
             self.line_move("rapid", target, line, emit)
         elif mode == "linear":

@@ -9,8 +9,11 @@ and the machine, and refuses to guess what it cannot know:
 - the tool offset in force: G43 adds the length of its H register to Z, G44 subtracts it (a G10 L10/L11 in
   the program, else the set-up's ``<Tools>``); on a lathe the offset number of a ``T0101`` word adds the
   tool's ``x``/``z``. An unknown length or offset makes the axis unknown.
-- G53: the programmed value is the machine position; under a tool offset on that axis it is refused
-  (controllers differ on whether the offset still applies).
+- G53: the programmed value is the machine position, under a tool offset too: the simulation moves the
+  controlled point there without the offset (``Simulator._machine_coordinates``: Fanuc cancels the tool
+  length offset vector of the axis for the move [K: Fanuc 0i-MB operator's manual B-63844EN/02 14.1.2];
+  ISG's ``#SUPPRESS OFFSETS`` suppresses every offset; SINUMERIK writes ``SUPA`` only where none is in
+  force, as ``$MN_G53_TOOLCORR`` decides).
 - G28/G30 end at the axis's ``home``; without one the axis is unknown.
 - G50 (lathe coordinate setting) keeps the machine where it is and moves the frame.
 A move on a limited axis whose machine position is unknown is an error once per axis and reason (not
@@ -177,12 +180,7 @@ class TravelCheck:
         new = dict(self.pos)
         for axis, value in end.items():
             if axis in programmed and machine:
-                if self._tool(axis) != 0.0:
-                    new[axis] = None
-                    self._unknown(block, axis, "a move in machine coordinates with a tool offset in force on "
-                                           "the axis (controllers differ on whether it applies)")
-                    continue
-                new[axis] = value
+                new[axis] = value  # the controlled point, without the tool offset (``_machine_coordinates``)
             elif axis in programmed and not incremental:
                 new[axis] = self._machine(axis, value, block)
             else:

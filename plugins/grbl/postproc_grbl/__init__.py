@@ -10,7 +10,7 @@ stored commit 0b5604b) and the "Grbl v1.1 Commands" wiki page (github.com/gnea/g
 
 * G0-G3 (arcs with I/J/K or R), G4 P (dwell in **seconds**), G10 L2/L20, G17-G19, G20/G21,
   G28/G30 (and .1), G38.2-G38.5, G40 only, G43.1/G49 (dynamic tool length offset only), G53,
-  G54-G59, G61 only (accepted, grbl always blends), G80, G90/G91, G91.1, G92/G92.1, G93/G94.
+  G54-G59, G61 only (exact path, grbl's one mode), G80, G90/G91, G91.1, G92/G92.1, G93/G94.
 * M0, M1 (accepted and ignored: "Optional stop not supported"), M2, M30, M3/M4/M5, M8/M9, and M7
   only when built with ENABLE_M7. Every other M code is "Unsupported command" (error 20): **M6** (so
   there is no tool changer: a tool change is written as an M0 pause for a manual change) and **M19**
@@ -102,8 +102,12 @@ class Grbl(GrblFamily):
     (``postproc.lowering.cutter_compensation``); tool change as a pause, G49 before motion, full circles with an end point; a
     moving block's spindle stop and coolant off after it (grbl runs them before the motion:
     ``postproc.rs274.order_of_execution``)."""
-    PATH_CONTROL = "cutting"
-    """grbl always blends (junction deviation); G61 is accepted and changes nothing [V: grbl wiki]."""
+    PATH_CONTROL = "exact_stop"
+    """grbl runs one mode, the exact path (G61, accepted and changing nothing): the tool goes through every
+    programmed point, the junction deviation ($11) only slowing it at a corner [V: grbl ``gcode.h``
+    ``CONTROL_MODE_EXACT_PATH // G61 (Default: Must be zero)``, the only group 13 code ``gcode.c`` accepts;
+    the planner limits the junction speed, it does not round the path]. So a source's cutting mode (G64) and
+    exact stop (G61) both run as programmed (``verify``)."""
     CUTTER_COMPENSATION = False
     """Only G40."""
     TOOL_LENGTH_OFFSET = False

@@ -76,7 +76,7 @@ REFUSED_G: dict[str, str] = {
     "42": "cutter radius compensation (G41/G42) is not supported by grbl",
     "43": "grbl has no tool table: G43 is not supported (grbl's G43.1 takes the offset itself)",
     "44": "grbl has no tool table: G44 is not supported (grbl's G43.1 takes the offset itself)",
-    "64": "grbl has no path control modes but G61 (it always blends)",
+    "64": "grbl has no path control modes but G61 (the exact path, its one mode)",
     "95": "grbl has no feed per revolution (G95)",
 }
 

@@ -10,7 +10,8 @@ pause, G49 before motion, full circles) are the lean-controller lowering steps g
   (a grbl build that has it), ``stop`` a program pause for the operator, ``error`` (default) refuses;
   grbl's M0 leaves the spindle turning, so a pause for the operator (also inside a cycle's
   expansion) stops a running spindle first with M5;
-* G64 (continuous path) writes nothing: grbl always blends; G98/G99 write nothing: grbl runs no cycles
+* G64 (continuous path) writes nothing: grbl runs its one mode, the exact path (which keeps every point a
+  blending mode may leave); G98/G99 write nothing: grbl runs no cycles
   (they arrive expanded), so the retract level has no meaning left; G80 writes nothing either: there is
   no cycle to cancel, and grbl's G80 leaves no motion mode in force, so it would refuse the axis words of
   a following ``G28 Z0.`` (error 31, "axis words exist", even for non-modal commands);
@@ -76,7 +77,7 @@ class GrblWriter(GrblFamilyWriter):
 
     def path_control_words(self, s: Any, block: Block) -> list[str]:
         if not s.one_shot and s.mode == "cutting":
-            self.note_unwritten_tolerance(s, block)  # grbl always blends, by its junction deviation setting
+            self.note_unwritten_tolerance(s, block)  # grbl runs its one mode, the exact path
             return []
         return super().path_control_words(s, block)
 

@@ -154,8 +154,11 @@ class Grblhal(GrblFamily):
     LATHE_TURRET = False
     """A lathe tool is changed with M6 and its offsets applied by ``G43 H`` (``lathe``): ``T0101`` is written
     ``T1 M6`` .. ``G43 H1`` (``postproc.cycles.lathe_lowering``)."""
-    PATH_CONTROL = "cutting"
-    """grblHAL always blends (junction deviation; ``ENABLE_PATH_BLENDING`` is off): G61 changes nothing."""
+    PATH_CONTROL = "exact_stop"
+    """grblHAL runs grbl's one mode, the exact path (G61 changes nothing; ``ENABLE_PATH_BLENDING``, G64, is
+    off in every build): the tool goes through every programmed point, the junction deviation only slowing it
+    at a corner [V: grblHAL core ``gcode.h`` ``control_mode_t``: ``ControlMode_ExactPath`` "G61 - Default"; G61.1 and G64
+    only under ``ENABLE_PATH_BLENDING``]."""
     CUTTER_COMPENSATION = False
     """Only G40 (``CUTTER_COMP_ENABLE`` is off, experimental)."""
     TOOL_LENGTH_OFFSET = False

@@ -13,7 +13,7 @@ grblHAL's table.
   source returns to after it (``G0`` alone: grblHAL ends the cycle and moves nothing [V: ``gcode.c``, G0
   without axis words]; a cancel beside an axis command of its own stands alone before it, ``cancels``); a
   cancel with no native cycle in force writes nothing (the cycles before it arrived expanded).
-* G64 writes nothing (path blending is off in every build: grblHAL always blends by junction deviation),
+* G64 writes nothing (path blending is off in every build: grblHAL runs the exact path, its one mode),
   with the tolerance it drops noted; G95 only for a spindle with an encoder (``<Controller spindleSync>``).
 * ``/`` block delete is written: grblHAL skips the block when its switch is on.
 * Parameters, expressions and o-word flow control, for a build with them (``<Controller expressions="true">``,
@@ -87,6 +87,8 @@ class GrblhalWriter(GrblFamilyWriter):
         """The group-01 mode around the native cycle in force on the controller; None: none in force."""
         self.subs: set[str] = set()
         """The numbered subs whose definition is written (a call finds only those on grblHAL)."""
+        self.body: str | None = None
+        """The sub whose body is being written: registered on grblHAL before it runs, so it may call itself."""
 
     def write_block(self, block: Block) -> str | None:
         motion = block.sections.get("Motion")
@@ -123,8 +125,11 @@ class GrblhalWriter(GrblFamilyWriter):
             return [spell_assignments(section)]
         if isinstance(section, (SubStart, Call)) and not (isinstance(section.name, str) and section.name.isdigit()):
             self.unsupported("a named sub (grblHAL looks o<name> up as the file <name>.macro: not modelled)", block)
+        if isinstance(section, SubStart):
+            self.body = section.name
         if isinstance(section, SubEnd):
             self.subs.add(section.name)
+            self.body = None
         own = self.source_dialect in _SAME_OWORDS or CONVERTED in self.ctx.run_data
         if isinstance(section, _FLOW) and own:
             return [spell_oword(section)]
@@ -136,7 +141,7 @@ class GrblhalWriter(GrblFamilyWriter):
         """``o<n> call [..]`` after its sub's definition; from LinuxCNC with its 30 arguments (module docstring), but
         for the calls of ``M98`` subprograms (``subprograms``: a program that computes nothing)."""
         assert isinstance(call.name, str)
-        if call.name not in self.subs:
+        if call.name not in self.subs and call.name != self.body:
             self.unsupported(f"a call of o{call.name} before its sub's definition (grblHAL finds a sub only once "
                              "the program has passed it)", block)
         if self.source_dialect == "linuxcnc" and CONVERTED not in self.ctx.run_data and len(call.args) < CALL_ARGUMENTS:
@@ -153,7 +158,7 @@ class GrblhalWriter(GrblFamilyWriter):
 
     def path_control_words(self, s: Any, block: Block) -> list[str]:
         if not s.one_shot and s.mode == "cutting":
-            self.note_unwritten_tolerance(s, block)  # grblHAL always blends, by its junction deviation setting
+            self.note_unwritten_tolerance(s, block)  # grblHAL runs its one mode, the exact path
             return []
         return super().path_control_words(s, block)
 
