@@ -30,7 +30,7 @@ class TravelError(ProgramError):
     """A move beyond the machine's travel, or one whose machine position cannot be known."""
 from ..ir import Block
 from ..setup.machine import ROTARY_AXES, AxisTravel
-from .work_offsets import declared_offsets, offset_beyond_frame
+from .work_offsets import offset_beyond_frame
 
 if TYPE_CHECKING:
     from ..context import Context
@@ -48,6 +48,7 @@ class Simulated(Protocol):
     lathe: bool
     diameter: bool
     offsets: dict[int, dict[str, float]]
+    declared: dict[int, dict[str, float]]
 
     def _at(self, block: Block | None = None, word: str | None = None) -> Location: ...
 
@@ -70,8 +71,8 @@ class TravelCheck:
                        for a in sim.axes}
         """Set-up value -> simulator value (mm, lathe X as a radius), per axis."""
         self.travel: dict[str, AxisTravel] = {a: t for a, t in setup.travel.items() if a in self.factor}
-        self.declared = declared_offsets(setup, sim.axes, sim.diameter)
-        """The set-up's work offsets in simulator units, by system number."""
+        self.declared = sim.declared
+        """The set-up's work offsets in simulator units, by system number (``work_offsets.declared_offsets``)."""
         self.checked = tuple(a for a in sim.axes if a in self.travel and self.travel[a].limited())
         self.length_mode = "cancel"
         self.length_register: int | None = None
