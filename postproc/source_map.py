@@ -18,6 +18,10 @@ if TYPE_CHECKING:
     from typing import Callable, TextIO
 
 
+SHOWN = 3
+"""Calls a located error names at each end of a deep call stack (``Origin.note``)."""
+
+
 class CallSite:
     """One level of the call stack: the subprogram entered, where it was called from, which repetition."""
 
@@ -53,9 +57,19 @@ class Origin:
         self._note: str | None = None
 
     def note(self) -> str:
-        """``in O2000, called from main.nc line 12, call 3 of 3; in ...`` (empty outside calls)."""
+        """``in O2000, called from main.nc line 12, call 3 of 3; in ...`` (empty outside calls). A deep stack
+        (a recursion up to the call-depth bound) names its innermost and outermost ``SHOWN`` calls and how
+        many lie between: one line a reader can take in, not sixty-four."""
         if self._note is None:
-            self._note = "; ".join(site.describe() for site in self.stack)
+            stack = self.stack
+            shown = SHOWN
+            if len(stack) > 2 * shown + 1:
+                sites = [site.describe() for site in stack[:shown]]
+                sites.append(f"... {len(stack) - 2 * shown} more")
+                sites.extend(site.describe() for site in stack[-shown:])
+            else:
+                sites = [site.describe() for site in stack]
+            self._note = "; ".join(sites)
         return self._note
 
 

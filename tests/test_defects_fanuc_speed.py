@@ -12,7 +12,7 @@ from pathlib import Path
 import pytest
 
 from postproc.api import translate
-from postproc.errors import Diagnostics
+from postproc.errors import Diagnostics, ErrorList
 from postproc.setup.machine_setup import load_setup
 from postproc.simulate.verify import verify_lines
 
@@ -48,3 +48,35 @@ def test_a_decimal_speed_from_linuxcnc_is_rounded_half_away(speed: str, word: st
                           file_out="out.nc", source="linuxcnc",
                           target="fanuc", tolerance=0.0)
     assert report.ok
+
+
+# -- the reader: a written S takes no decimal point on a Fanuc -------------------------------------------------
+
+def read_errors(text: str, **kw: object) -> list[str]:
+    with pytest.raises(ErrorList) as info:
+        written(text, "fanuc", "linuxcnc", **kw)
+    return [str(e) for e in info.value.errors]
+
+
+@pytest.mark.parametrize("word", ["S1000.5", "S1000.", "S1000.0"])
+def test_a_fanuc_mill_refuses_a_decimal_point_in_s(word: str) -> None:
+    assert read_errors(f"G21 G90\nM03 {word}\nG00 X1. Y2.\nM30\n") == [
+        f"in.nc:2:5: error: address S takes no decimal point ({word})"]
+
+
+def test_a_fanuc_lathe_refuses_it_too_in_a_plain_block_and_in_a_cycle_block() -> None:
+    assert read_errors("%\nO1\nG21 G99\nG97 S1000.5 M03\nM30\n%\n", setup=LATHE) == [
+        "in.nc:4:5: error: address S takes no decimal point (S1000.5)"]
+    profile = "%\nO1\nG21 G99\nG00 X50. Z2.\nG71 U1. R0.5\nG71 P10 Q20 U0.2 W0.1 F0.2 S800.5\nN10 G00 X20.\nN20 G01 Z-20.\nM30\n%\n"
+    assert read_errors(profile, setup=LATHE)[0] == "in.nc:6:28: error: address S takes no decimal point (S800.5)"
+
+
+@pytest.mark.parametrize("value, word", [("1000.5", "S1001"), ("1000.4", "S1000"), ("999.5", "S1000")])
+def test_a_computed_s_runs_rounded_half_away_from_zero(value: str, word: str) -> None:
+    out, _ = written(f"G21 G90\n#1={value}\nM03 S#1\nG00 X1. Y2.\nM30\n", "fanuc", "grbl")
+    assert f"{word} M3" in out.splitlines()
+
+
+def test_linuxcnc_reads_a_decimal_s() -> None:
+    out, warnings = written("G21 G90\nS1000.5 M3\nG0 X1 Y2\nM30\n", "linuxcnc", "linuxcnc")
+    assert "S1000.5 M3" in out and not warnings

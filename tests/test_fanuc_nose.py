@@ -29,14 +29,14 @@ inner corners and for outer corners of 90 degrees or more (Fanuc's offset mode f
 
 The machine positions the imaginary tool tip: the centre plus r times the tip's direction, from the Haas
 lathe manual's table ("Imaginary Tool Tip and Direction": 1 X+Z+, 2 X+Z-, 3 X-Z-, 4 X-Z+, 5 Z+, 6 X+,
-7 Z-, 8 X-, 0 and 9 none), written out below as words, not taken from ``postproc.compensation.nose``.
+7 Z-, 8 X-, 0 and 9 none), written out as words in ``tests/support/nose_tips.py``, not taken from
+``postproc.compensation.nose``.
 """
 
 from __future__ import annotations
 
 import io
 import math
-from pathlib import Path
 from typing import Any
 
 import pytest
@@ -47,9 +47,9 @@ from postproc.setup.machine import ToolData
 from postproc.setup.machine_setup import MachineSetup, load_setup
 from postproc.simulate.toolpath import toolpath_events
 from postproc.simulate.verify import verify_lines
+from tests.support.nose_tips import SETUPS, at_tip, controlled, direction, one_tool
 from tests.support.rs274 import available, run_rs274
 
-SETUPS = Path(__file__).resolve().parents[1] / "examples" / "setups"
 R = 0.8
 MM_PER_INCH = 25.4
 
@@ -69,21 +69,8 @@ G40 G0 X100. Z50.
 M30
 """
 
-MANUAL_TIPS = {0: "", 1: "X+Z+", 2: "X+Z-", 3: "X-Z-", 4: "X-Z+", 5: "Z+", 6: "X+", 7: "Z-", 8: "X-", 9: ""}
-
-
-def _direction(tip: int) -> tuple[float, float]:
-    """(Z, X) signs from the manual's words."""
-    words = MANUAL_TIPS[tip]
-    z = 1.0 if "Z+" in words else -1.0 if "Z-" in words else 0.0
-    x = 1.0 if "X+" in words else -1.0 if "X-" in words else 0.0
-    return z, x
-
-
 def _setup(tip: int | None, name: str = "fanuc_0i_tf.xml") -> MachineSetup:
-    setup = load_setup(str(SETUPS / name))
-    setup.tools = {"2": ToolData(number=2, radius=R, tip=tip)}
-    return setup
+    return one_tool(name, 2, R, tip)
 
 
 def _centres() -> list[tuple[int, str, tuple[float, float], tuple[float, float] | None]]:
@@ -102,26 +89,14 @@ def _centres() -> list[tuple[int, str, tuple[float, float], tuple[float, float] 
 
 def _expected(tip: int | None) -> list[dict[str, Any]]:
     """Every move's controlled point, X a diameter: the tip on the compensated path, the rest programmed."""
-    tz, tx = _direction(tip or 0)
     out: list[dict[str, Any]] = [{"line": 6, "move": "rapid", "x": 62.0, "z": 2.0}]
-    for line, move, (z, x), centre in _centres():
-        point: dict[str, Any] = {"line": line, "move": move, "x": pytest.approx(2 * (x + tx * R), abs=1e-6),
-                                 "z": pytest.approx(z + tz * R, abs=1e-6)}
-        if centre is not None:
-            point["cx"] = pytest.approx(2 * (centre[1] + tx * R), abs=1e-6)
-            point["cz"] = pytest.approx(centre[0] + tz * R, abs=1e-6)
-        out.append(point)
+    out += [at_tip(line, move, end, tip, R, centre) for line, move, end, centre in _centres()]
     out.append({"line": 13, "move": "rapid", "x": 100.0, "z": 50.0})
     return out
 
 
 def _controlled(text: str, dialect: str, setup: MachineSetup, file: str = "t.nc") -> list[dict[str, Any]]:
-    moves = []
-    for ev in toolpath_events(io.StringIO(text), file=file, dialect=dialect, setup=setup):
-        if "move" in ev:
-            point = {**ev, **ev.get("controlled", {})}
-            moves.append({k: point[k] for k in ("line", "move", "x", "z", "cx", "cz") if k in point})
-    return moves
+    return controlled(text, dialect, setup, file)
 
 
 @pytest.mark.parametrize("tip", range(10))
@@ -336,7 +311,7 @@ def test_grbl_gets_the_tip_path_as_moves(tip: int) -> None:
                              .replace("F0.2", "F100."), "fanuc", "grbl", setup)
     assert "G41" not in out and "G42" not in out
     assert report.ok and report.max_deviation < 1e-6, report
-    tz, tx = _direction(tip)
+    tz, tx = direction(tip)
     z, x = _centres()[0][2]
     words = dict((w[0], float(w[1:])) for w in _moves(out)[0].split()[1:] if w[0] in "XZ")
     assert words["X"] == pytest.approx(x + tx * R) and words["Z"] == pytest.approx(z + tz * R)  # a radius

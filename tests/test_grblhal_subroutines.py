@@ -171,6 +171,43 @@ def test_what_grblhal_runs_otherwise_is_a_located_error(program: str, message: s
     assert _errors(program)[0].startswith(message)
 
 
+RECURSION = "G21 G90 F100\no100 sub\no101 if [#1 GT 0]\nG1 X#1\no100 call [#1 - 1]\no101 endif\no100 endsub\no100 call [{n}]\nM2\n"
+"""A sub that calls itself, bounded by its argument: call [n] nests n + 1 calls (the last, with #1 = 0, moves
+nothing). grblHAL registers ``o100 sub`` when the flow passes it, before its body ever runs (``add_sub``), so
+the call in the body finds it; ``ngc_call_push`` runs 10 nested calls (``NGC_MAX_CALL_LEVEL``) and refuses the
+11th ("flow control stack overflow"): call [9] runs, call [10] does not."""
+
+
+def test_a_sub_that_calls_itself_is_read_and_run_to_grblhals_depth() -> None:
+    assert _moves(RECURSION.format(n=9), "grblhal") == [("feed", x, 0, 0) for x in range(9, 0, -1)]
+    assert grblhal_problems(RECURSION.format(n=9)) == []
+    with pytest.raises(ErrorList) as info:
+        _moves(RECURSION.format(n=10), "grblhal")
+    inner = "in o100, called from t line 5"
+    assert [str(e) for e in info.value.errors] == [
+        "t:5:1: error: 'o100 call [#1 - 1]' exceeds the controller's bound of 10 nested calls (it refuses a deeper "
+        f"one) ({inner}; {inner}; {inner}; ... 4 more; {inner}; {inner}; in o100, called from t line 8)"]
+
+LINUXCNC_TOO_DEEP = ("t:5:1: error: 'o100 call [#1 - 1]' exceeds the controller's bound of 9 nested calls (it refuses "
+                     "a deeper one)")
+
+
+def test_linuxcnc_runs_one_nested_call_fewer() -> None:
+    assert _moves(RECURSION.format(n=8), "linuxcnc") == [("feed", x, 0, 0) for x in range(8, 0, -1)]
+    with pytest.raises(ErrorList) as info:
+        _moves(RECURSION.format(n=9), "linuxcnc")
+    assert str(info.value.errors[0]).startswith(LINUXCNC_TOO_DEEP)
+
+
+@pytest.mark.skipif(not rs274.available(), reason="the LinuxCNC interpreter rs274 is not installed")
+def test_rs274_runs_the_recursion_as_simulated_and_refuses_a_tenth_call() -> None:
+    """With its one argument given, the grblHAL text is RS274/NGC that rs274 runs alike, to 9 nested calls."""
+    text = RECURSION.format(n=8)
+    assert _rs274_moves(text) == _moves(text, "grblhal") == _moves(text, "linuxcnc")
+    with pytest.raises(rs274.RS274Error, match="Too many subroutine levels"):
+        rs274.run_rs274(RECURSION.format(n=9))
+
+
 def test_the_checker_refuses_a_call_before_its_sub() -> None:
     assert grblhal_problems("G21\no100 call\no100 sub\no100 endsub\nM2\n") == [
         "2: o100 call before its sub's definition (flow control syntax error)"]

@@ -352,6 +352,32 @@ def test_recursion_hits_the_call_depth_bound():
                        "main.nc line 4; in O0010, called from main.nc line 1)")
 
 
+def test_a_deep_recursion_names_three_calls_at_each_end_of_its_stack():
+    """The default bound, 64: the error stands at the call that overflows, and its chain names the innermost
+    three calls, how many lie between, and the outermost three (the last from the main program)."""
+    p = P()
+    p(control=Call("10", kind="macro"))
+    p(("M", "30"))
+    p(start=10)
+    p(control=Call("10", kind="macro"))
+    inner = "in O0010, called from main.nc line 4"
+    assert error_of(p) == (
+        "main.nc:4:1: error: '(statement 4)' exceeds the set-up's bound of 64 nested calls "
+        f"(<Limits callDepth=\"64\"/>) ({inner}; {inner}; {inner}; ... 58 more; {inner}; {inner}; "
+        "in O0010, called from main.nc line 1)")
+
+
+def test_a_stack_of_seven_calls_is_named_whole():
+    p = P()
+    p(control=Call("10", kind="macro"))
+    p(("M", "30"))
+    p(start=10)
+    p(control=Call("10", kind="macro"))
+    inner = "in O0010, called from main.nc line 4"
+    assert error_of(p, limits=Limits(call_depth=7)).endswith(
+        f"({inner}; {inner}; {inner}; {inner}; {inner}; {inner}; in O0010, called from main.nc line 1)")
+
+
 def test_goto_to_a_missing_label():
     p = P()
     p(control=Goto(Num(70.0)))

@@ -21,7 +21,8 @@ from postproc.api import translate
 from postproc.errors import Diagnostics, ErrorList
 from postproc.simulate.toolpath import toolpath_events
 from postproc.simulate.verify import verify_lines
-from tests.support.rs274 import available, canonical_moves, run_rs274
+from tests.support.frame_programs import centre_arc, radius_arc
+from tests.support.rs274 import assert_same_moves, available, canonical_moves, run_rs274
 
 HEAD = "N1 G71 G90 G17 G00 X0 Y0 Z0\n"
 
@@ -189,15 +190,11 @@ def _program(seed: int) -> str:
         lines.append(f"G01 {a1}{x} {a2}{y} {a3}{rng.randint(-3, 3)} F{rng.randint(50, 500)}")
         kind = rng.choice(["r", "ij", "incremental"])
         if kind == "r":
-            ex, ey = x + rng.randint(-15, 15), y + rng.randint(1, 15)
-            radius = math.hypot(ex - x, ey - y) / 2 * rng.uniform(1.05, 3.0)
+            ex, ey, radius = radius_arc(rng, x, y)
             lines.append(f"G0{rng.choice('23')} {a1}{ex} {a2}{ey} R{radius:.4f}")
         elif kind == "ij":
-            i, j = rng.randint(-9, 9) or 3, rng.randint(-9, 9)
-            turn = math.radians(rng.uniform(20, 300))
-            ex = x + i - i * math.cos(turn) + j * math.sin(turn)
-            ey = y + j - i * math.sin(turn) - j * math.cos(turn)
-            lines.append(f"G0{rng.choice('23')} {a1}{ex:.4f} {a2}{ey:.4f} {i1}{i} {i2}{j}")
+            fx, fy, i, j = centre_arc(rng, x, y)
+            lines.append(f"G0{rng.choice('23')} {a1}{fx:.4f} {a2}{fy:.4f} {i1}{i} {i2}{j}")
         else:
             lines.append(f"G91 G01 {a1}{rng.randint(-5, 5)} {a2}{rng.randint(-5, 5)}\nG90")
     lines += ["G69", "G00 Z50", "M30"]
@@ -210,9 +207,5 @@ def test_a_random_rotated_program_moves_in_rs274_as_its_isg_toolpath(seed: int) 
     text = _program(seed)
     out = _translate(text, "linuxcnc")
     theirs = [e for e in canonical_moves(run_rs274(out), start=(0.0, 0.0, 0.0)) if "move" in e]
-    ours = _events(text)
-    assert len(ours) == len(theirs), f"{len(ours)} moves here, {len(theirs)} in rs274\n{text}\n{out}"
-    for n, (a, b) in enumerate(zip(ours, theirs)):
-        assert a["move"] == b["move"], (n, a, b, text, out)
-        assert max(abs(float(a[k]) - float(b[k])) for k in "xyz") <= 2e-4, (n, a, b, text, out)
+    assert_same_moves(_events(text), theirs, text, out)
     _verify(text, _translate(text, "grbl"), "grbl")

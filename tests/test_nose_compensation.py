@@ -29,11 +29,9 @@ import pytest
 
 from postproc.api import translate
 from postproc.errors import PostprocError
-from postproc.setup.machine import ToolData
 from postproc.setup.machine_setup import MachineSetup, load_setup
-from postproc.simulate.toolpath import toolpath_events
+from tests.support.nose_tips import SETUPS, at_tip, controlled, one_tool
 
-SETUPS = Path(__file__).resolve().parents[1] / "examples" / "setups"
 R = 0.8
 
 PROFILE = """G18 G21 G7 G90 G94 F100
@@ -47,52 +45,22 @@ G40 G0 X100 Z5
 M2
 """
 
-MANUAL_TIPS = {0: "", 1: "X+Z+", 2: "X+Z-", 3: "X-Z-", 4: "X-Z+", 5: "Z+", 6: "X+", 7: "Z-", 8: "X-", 9: ""}
-"""The Haas manual's table, as its words."""
-
-
-def _direction(tip: int) -> tuple[float, float]:
-    """(Z, X) signs from the manual's words."""
-    words = MANUAL_TIPS[tip]
-    z = 1.0 if "Z+" in words else -1.0 if "Z-" in words else 0.0
-    x = 1.0 if "X+" in words else -1.0 if "X-" in words else 0.0
-    return z, x
-
-
 def _lathe(tip: int | None) -> MachineSetup:
-    setup = load_setup(str(SETUPS / "linuxcnc_lathe.xml"))
-    setup.tools = {"1": ToolData(number=1, radius=R, tip=tip)}
-    return setup
+    return one_tool("linuxcnc_lathe.xml", 1, R, tip)
 
 
 def _controlled(text: str, setup: MachineSetup) -> list[dict[str, object]]:
-    moves = []
-    for ev in toolpath_events(io.StringIO(text), file="p.ngc", dialect="linuxcnc", setup=setup):
-        if "move" in ev:
-            point = {**ev, **ev.get("controlled", {})}
-            moves.append({k: point[k] for k in ("line", "move", "x", "z", "cx", "cz") if k in point})
-    return moves
+    return controlled(text, "linuxcnc", setup, "p.ngc")
 
 
 def _expected(tip: int) -> list[dict[str, object]]:
-    tz, tx = _direction(tip)
-    z, x = tz * R, tx * R
-
-    def at(line: int, move: str, zp: float, rp: float, centre: tuple[float, float] | None = None) -> dict[str, object]:
-        """The point (zp, rp) and arc centre of the nose centre, moved to the tip; X a diameter."""
-        point: dict[str, object] = {"line": line, "move": move, "x": pytest.approx(2 * (rp + x), abs=1e-6),
-                                    "z": pytest.approx(zp + z, abs=1e-6)}
-        if centre is not None:
-            point["cx"] = pytest.approx(2 * (centre[1] + x), abs=1e-6)
-            point["cz"] = pytest.approx(centre[0] + z, abs=1e-6)
-        return point
-
+    """The module docstring's nose centre ends (Z, radius), moved to the tip."""
     return [
         {"line": 3, "move": "rapid", "x": 60, "z": 2},
-        at(4, "feed", 2 - R, 20 + R),
-        at(5, "feed", -10, 20 + R),
-        at(6, "cw", -20 + R, 30, (-10, 30)),
-        at(7, "feed", -20 + R, 40),
+        at_tip(4, "feed", (2 - R, 20 + R), tip, R),
+        at_tip(5, "feed", (-10, 20 + R), tip, R),
+        at_tip(6, "cw", (-20 + R, 30), tip, R, (-10, 30)),
+        at_tip(7, "feed", (-20 + R, 40), tip, R),
         {"line": 8, "move": "rapid", "x": 100, "z": 5},
     ]
 
@@ -137,9 +105,7 @@ M30
 
 def _turret_lathe(tip: int = 3) -> MachineSetup:
     """The Fanuc 0i-TF set-up with offset 02 holding a nose radius of ``R`` and ``tip``."""
-    setup = load_setup(str(SETUPS / "fanuc_0i_tf.xml"))
-    setup.tools = {"2": ToolData(number=2, radius=R, tip=tip)}
-    return setup
+    return one_tool("fanuc_0i_tf.xml", 2, R, tip)
 
 
 def _to_linuxcnc(text: str) -> str:

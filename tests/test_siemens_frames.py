@@ -22,7 +22,8 @@ from postproc.errors import Diagnostics, ErrorList
 from postproc.setup.machine_setup import MachineSetup, load_setup
 from postproc.simulate.toolpath import toolpath_events
 from postproc.simulate.verify import verify_lines
-from tests.support.rs274 import available, canonical_moves, run_rs274
+from tests.support.frame_programs import centre_arc, radius_arc
+from tests.support.rs274 import assert_same_moves, available, canonical_moves, run_rs274
 
 ROOT = Path(__file__).resolve().parents[1]
 ZERO_TOOLS = ROOT / "tests" / "support" / "zero_tools.xml"
@@ -225,12 +226,7 @@ def _compare(text: str, file: str) -> None:
     out = _translate(text, "linuxcnc", setup)
     theirs = [e for e in canonical_moves(run_rs274(out, tool_table=TOOL_TABLE), start=(0.0, 0.0, 0.0))
               if "move" in e]
-    ours = _events(text, setup)
-    assert len(ours) == len(theirs), f"{len(ours)} moves here, {len(theirs)} in rs274\n{text}\n{out}"
-    for n, (a, b) in enumerate(zip(ours, theirs)):
-        assert a["move"] == b["move"], (n, a, b, text, out)
-        dev = max(abs(float(a[k]) - float(b[k])) for k in ("x", "y", "z"))
-        assert dev <= 2e-4, (n, a, b, text, out)
+    assert_same_moves(_events(text, setup), theirs, text, out)
 
 
 def _frame(rng: random.Random) -> str:
@@ -256,15 +252,11 @@ def _program(seed: int) -> str:
         lines.append(f"G1 X{x} Y{y} Z{rng.randint(-3, 3)} F{rng.randint(50, 500)}")
         kind = rng.choice(["cr", "ij", "line", "incremental"])
         if kind == "cr":
-            ex, ey = x + rng.randint(-15, 15), y + rng.randint(1, 15)
-            radius = math.hypot(ex - x, ey - y) / 2 * rng.uniform(1.05, 3.0)
+            ex, ey, radius = radius_arc(rng, x, y)
             lines.append(f"G{rng.choice('23')} X{ex} Y{ey} CR={rng.choice(['', '-'])}{radius:.4f}")
         elif kind == "ij":
-            i, j = rng.randint(-9, 9) or 3, rng.randint(-9, 9)
-            turn = math.radians(rng.uniform(20, 300))
-            ex = x + i - i * math.cos(turn) + j * math.sin(turn)
-            ey = y + j - i * math.sin(turn) - j * math.cos(turn)
-            lines.append(f"G{rng.choice('23')} X{ex:.4f} Y{ey:.4f} I{i} J{j}")
+            fx, fy, i, j = centre_arc(rng, x, y)
+            lines.append(f"G{rng.choice('23')} X{fx:.4f} Y{fy:.4f} I{i} J{j}")
         elif kind == "incremental":
             lines.append(f"G91 G1 X{rng.randint(-5, 5)} Y{rng.randint(-5, 5)}\nG90")
         else:

@@ -127,9 +127,10 @@ def test_a_loop_overrun_fails_its_translation_to_a_controller_without_loops(cli,
 # -- machine coordinates -----------------------------------------------------------------------------
 
 def test_the_work_offset_is_added(cli, tmp_path):
-    # G55 X is -100: X-450 is machine X-550, 50 beyond -500; the same point in G54 is inside
-    result, nc = _toolpath(cli, tmp_path, "G90 G54 G0 X-450 Y0 Z50\nG55 G0 X-450\nM30\n")
-    assert result.err_lines == [f"{nc}:2:8: error: X-50.000 mm beyond the limit -500.000 (machine X -550.000)"]
+    # G55 X is -100: X-450 is machine X-550, 50 beyond -500; the same point in G54 is inside (the program gives
+    # G55 the Z the set-up lacks: where the tool stands in G55 is then known on every axis)
+    result, nc = _toolpath(cli, tmp_path, "G90 G54 G0 X-450 Y0 Z50\nG10 L2 P2 Z-200\nG55 G0 X-450\nM30\n")
+    assert result.err_lines == [f"{nc}:3:8: error: X-50.000 mm beyond the limit -500.000 (machine X -550.000)"]
 
 
 def test_a_g10_offset_replaces_the_declared_one(cli, tmp_path):
@@ -139,12 +140,19 @@ def test_a_g10_offset_replaces_the_declared_one(cli, tmp_path):
 
 
 def test_an_offset_the_setup_does_not_give_is_refused_once(cli, tmp_path):
-    # G55 declares no Z; G56 nothing at all
+    # G55 declares no Z; G56 nothing at all (selected after a move: where the tool then stands in G56 is unknown,
+    # which the simulation itself refuses)
     result, nc = _toolpath(cli, tmp_path, "G90 G55 G0 X0 Y0\nZ10\nZ20\nG56 X0\nM30\n")
     assert result.err_lines == [
         f"{nc}:2:1: error: the travel of Z cannot be checked: the set-up gives work system 2 no offset for Z "
         '(<WorkOffsets><Offset number="2" z=...>) and the program sets none',
-        f"{nc}:4:5: error: the travel of X cannot be checked: the set-up gives work system 3 no offset for X "
+        f"{nc}:4:1: error: where the tool stands in the new work coordinates is unknown: the set-up gives work "
+        'system 3 no offset for X (<WorkOffsets><Offset number="3" x=...>) and the program sets none']
+    result, nc = _toolpath(cli, tmp_path, "G90 G56 G0 Y0\nX10\nX20\nM30\n")
+    assert result.err_lines == [
+        f"{nc}:1:12: error: the travel of Y cannot be checked: the set-up gives work system 3 no offset for Y "
+        '(<WorkOffsets><Offset number="3" y=...>) and the program sets none',
+        f"{nc}:2:1: error: the travel of X cannot be checked: the set-up gives work system 3 no offset for X "
         '(<WorkOffsets><Offset number="3" x=...>) and the program sets none']
 
 

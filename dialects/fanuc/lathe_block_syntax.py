@@ -19,6 +19,11 @@ class FanucLatheBlockSyntax(LatheBlockSyntax):
     __slots__ = ()
     DIALECT: ClassVar[str] = "fanuc"
     TITLE: ClassVar[str] = "Fanuc lathe"
+    WHOLE_SPINDLE_SPEED: ClassVar[bool] = True
+    """A decimal point in S is an alarm: the decimal point programming list of addresses that take one is X, Y,
+    Z, U, V, W, A, B, C, I, J, K, R and F [K: Fanuc Series 0i-MB operator's manual B-64114EN/01, 8.3 "Decimal
+    point programming"]; "M03 S1000.0; an illegal statement" [K: after Smid, Fanuc Custom Macros]. Parameter
+    3451#2 (mills only) admits one decimal place, run rounded [?: third-party, not modelled]."""
     CODES: ClassVar[CodeTable] = LATHE_CODES["A"]
 
     def table(self, ctx: Context) -> CodeTable:

@@ -8,6 +8,7 @@ a subprogram ``O2000`` not in the file is looked for in the set-up's and ``--lib
 
 from __future__ import annotations
 
+import math
 from typing import Callable, ClassVar
 
 from postproc.context import Context
@@ -32,6 +33,14 @@ class FanucProgramSyntax(ProgramSyntax):
     """A vacant variable in an address ignores the address, as if the word were absent (``G90 X#1`` with #1
     vacant is ``G90``) [K: Fanuc Custom Macro B, "Undefined variables": the manual's table of
     <vacant> in an address]."""
+
+    def spell_evaluated(self, letter: str, value: float) -> str:
+        """A computed S runs rounded to a whole number, half away from zero (``S[1000.5]`` is S1001) [K: after
+        Smid, Fanuc Custom Macros, "real versus integer values"]: a written S takes no decimal point
+        (``FanucBlockSyntax.WHOLE_SPINDLE_SPEED``)."""
+        if letter == "S":
+            return str(int(math.floor(abs(value) + 0.5)) * (-1 if value < 0 else 1))
+        return super().spell_evaluated(letter, value)
 
     def variables(self, ctx: Context, increment: Callable[[], float]) -> Variables:
         """A Haas mill's variables have the NGC's five-digit numbers too (``variables.HaasVariables``)."""

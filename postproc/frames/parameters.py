@@ -12,7 +12,7 @@ Lengths are in mm, angles in degrees; the family's table converts them to its ow
 
 from __future__ import annotations
 
-from typing import Callable, Iterable
+from typing import Callable, Hashable, Iterable
 
 from ..context import Context
 from ..interp.numbers import COMPUTED, numbered_variables
@@ -61,6 +61,19 @@ class FrameReadings:
         if run is None:
             return None
         return run.g5x.get(index, {}).get(axis)
+
+    def state(self) -> Hashable:
+        """Everything the readings above can answer, as one comparable value (the interpreter's repeated-state
+        check compares it between two passes of a loop head: a loop whose G10 or G92 changes what the
+        program reads is not repeating itself)."""
+        run = self._run()
+        if run is None:
+            return None
+        frame = run.frame
+        g5x = tuple(sorted((n, tuple(sorted(v.items()))) for n, v in run.g5x.items()))
+        if frame is None or frame.rules != "rs274":
+            return (run.work, g5x)
+        return (run.work, g5x, frame.applied, tuple(sorted(frame.saved.items())), tuple(sorted(frame.turns.items())))
 
     def work_rotation(self, index: int) -> float | None:
         """Work system ``index``'s XY rotation where the program set it (``G10 L2 R``)."""

@@ -408,6 +408,10 @@ class Interpreter(RunState):
         if len(self.frames) > self.limits.call_depth:
             raise ProgramError(f"'{source_text(block)}' exceeds the set-up's bound of {self.limits.call_depth} "
                                f"nested calls (<Limits callDepth=\"{self.limits.call_depth}\"/>)")
+        levels = self.rules.call_levels
+        if levels is not None and len(self.frames) > levels:
+            raise ProgramError(f"'{source_text(block)}' exceeds the controller's bound of {levels} nested calls (it "
+                               "refuses a deeper one)")
         self._spend(block, "call")
         program, start, end = found
         caller_file = frame.origin.file if frame.origin is not None else frame.program.file

@@ -34,6 +34,9 @@ class SubprogramRules:
     """The flow passing an ``o<n> sub`` definition skips its body but runs its ``endsub [v]`` as a return
     (rs274: ``o100 sub`` .. ``o100 endsub [6]`` met before any call leaves ``#<_value>`` 6 and
     ``#<_value_returned>`` 1; a plain ``endsub`` leaves both 0)."""
+    call_levels: int | None = None
+    """The controller's own bound on nested calls, where it has one below the set-up's ``callDepth``: a call
+    deeper than that is refused where the controller refuses it (grblHAL: 10). None: only the set-up's."""
 
 
 STORED_PROGRAMS = SubprogramRules(forward_search=False, main_return_words=None)

@@ -85,6 +85,10 @@ class WordBlockSyntax(Syntax):
     FRAME_RULES: ClassVar[str] = ""
     """Whose semantics the table's frame codes (kind ``frame``) have: 'fanuc' or 'rs274'
     (``postproc.frames``); '' where the table has none."""
+    WHOLE_SPINDLE_SPEED: ClassVar[bool] = False
+    """S takes a whole number: a written ``S1000.5`` (or ``S1000.``) is a located error, as the controller's
+    alarm (``Dialect.WHOLE_SPINDLE_SPEED`` of the dialect whose syntax this is); a computed S reaches here
+    already rounded by the interpreter (``ProgramSyntax.spell_evaluated``)."""
     POINTLESS_IN_UNITS: ClassVar[bool] = False
     """A number without a decimal point is in program units whatever the set-up's ``Input`` says
     (DIN 66025 controls such as ISG: ``X10`` is 10 mm), instead of least input increments."""
@@ -182,6 +186,8 @@ class WordBlockSyntax(Syntax):
             elif up == "F":
                 values[up] = float(num)
             elif up == "S":
+                if "." in num and self.WHOLE_SPINDLE_SPEED:
+                    raise ParseError(f"address S takes no decimal point (S{num})", ctx.at(block, ctx.column_of(block, up)))
                 values[up] = float(num) if "." in num else int(num)
             else:
                 raise ParseError(f"address {up} is not used by the {self.TITLE} dialect",

@@ -103,6 +103,8 @@ class LatheBlockSyntax(WordBlockSyntax):
             if up == "F":
                 block.add(Feed(_number(block, ctx, up, num)))
             elif up == "S":
+                if "." in num and self.WHOLE_SPINDLE_SPEED:
+                    raise ParseError(f"address S takes no decimal point (S{num})", ctx.at(block, ctx.column_of(block, up)))
                 block.add(SpindleSpeed(_number(block, ctx, up, num)))
             elif up == "T":
                 if "." in num or num[:1] in "+-":

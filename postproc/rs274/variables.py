@@ -228,13 +228,12 @@ class NgcVariables:
         return self._store(key).get(key)  # type: ignore[arg-type]
 
     def snapshot(self) -> Hashable | None:
-        """The parameters the running level reads (numbered, named and global); None where the run's
-        frame answers the offset parameters (``read_frame``): G10 and G92 change those."""
-        if self.frames is not None:
-            return None
+        """The parameters the running level reads (numbered, named and global), and where the run's frame
+        answers the offset parameters (``read_frame``), all it can answer (G10 and G92 change those)."""
+        frames = None if self.frames is None else self.frames.state()
         return (len(self.numbered), tuple(sorted(self.numbered[-1].items())),
                 tuple(sorted(self.named[-1].items())), tuple(sorted(self.globals_.items(), key=str)),
-                self._increment())
+                self._increment(), frames)
 
     def plain(self, key: VarKey) -> bool:
         """Every parameter up to #5000 and every name but ``#<_value>``/``#<_value_returned>`` (a call's

@@ -27,6 +27,7 @@ from ..lowering.program_end import EndTracker
 from ..state import PLANE_AXES, ModalState
 from .events import LATHE_TOOL_OFFSET, LINEAR_AXES as _LINEAR, TOUCH_OFF, UNEVALUATED, Event, num, start_position
 from .travel import TravelCheck, TravelError
+from .work_offsets import declared_offsets, offset_beyond_frame
 
 LENGTH_AXIS: Final = _AXIS
 LINEAR_AXES: Final = _LINEAR
@@ -55,7 +56,7 @@ class Moves:
         self.home = {axis: t.home * setup.machine.mm() for axis, t in setup.travel.items()
                      if t.home is not None and axis in self.axes and axis in LINEAR_AXES}
         """Where a reference return goes on a mill, mm: the set-up's ``<Axis home>`` (machine coordinates,
-        which are the work coordinates here), else machine zero."""
+        put in the work frame at the move: ``Simulator.machine_to_frame``), else machine zero."""
         self.scale = 1.0
         """mm per program unit (from ``modal.units``)."""
         self.incremental = False
@@ -101,6 +102,15 @@ class Moves:
         """Work offsets a G10 set, mm per axis, by work system (1 = G54; 0 the external offset)."""
         self.shift: dict[str, float] = {}
         """What the active work system adds to an absolute point (empty until a G10 sets an offset)."""
+        self.declared = declared_offsets(setup, self.axes, self.diameter)
+        """The set-up's work offsets (``<WorkOffsets>``), simulator units, by work system: the frame does not
+        hold them, so a machine position is put in it by subtracting them (``postproc.simulate.work_offsets``)."""
+        self.beyond: dict[str, float | None] = self._beyond()
+        """Per axis, machine minus frame position from the set-up's work offsets in force (all zero when the
+        set-up gives none; None: it gives some, not the active system's on that axis)."""
+        self.moved = False
+        """A move has been programmed: until then the start (``<Machine startX>``...) is a point of the work
+        system the program selects first, so selecting one moves no number (``reframe``)."""
         self.travel: TravelCheck | None = None
         """The travel-limit check, when the set-up declares limits (``postproc.simulate.travel``)."""
         self.travel_warn = travel_warn
@@ -183,8 +193,12 @@ class Moves:
             if isinstance(value, Expr):
                 raise ProgramError(UNEVALUATED, self._at(block, axis))
             v = value * self.scale if axis in LINEAR_AXES else value
-            entry[axis] = entry.get(axis, 0.0) + v if setting.incremental else v
+            if setting.incremental:  # added to the offset in force: the program's, else the set-up's
+                v += entry.get(axis, self.declared.get(key, {}).get(axis, 0.0))
+            entry[axis] = v
         self._shift()
+        if self.declared:
+            self.reframe(block)
 
     def touch_off(self, block: Block, setting: DataSetting) -> None:
         """A tool entry measured where the tool stands (LinuxCNC ``G10 L10``/``L11``): the length that makes
@@ -373,6 +387,40 @@ class Moves:
         active = self.offsets.get(self.modal.work_offset, {})
         common = self.offsets.get(0, {})
         self.shift = {a: active.get(a, 0.0) + common.get(a, 0.0) for a in set(active) | set(common)}
+
+    def _beyond(self) -> dict[str, float | None]:
+        if not self.declared:
+            return {a: 0.0 for a in self.axes}
+        return {a: offset_beyond_frame(a, self.modal.work_offset, self.offsets, self.declared)[0] for a in self.axes}
+
+    def reframe(self, block: Block) -> None:
+        """The work system or an offset changed while the set-up gives work offsets: the machine stays, so the
+        present point is given in the new frame ([V] rs274: after ``G55`` an axis not programmed reads the
+        machine position less G55's offset). Where the set-up lacks the old or the new system's offset on an
+        axis, that point is unknown: a located error, never a point off by the missing offset."""
+        new = self._beyond()
+        if not self.moved:
+            self.beyond = new
+            return
+        for axis, after in new.items():
+            before = self.beyond[axis]
+            if before == after:
+                continue
+            if before is None or after is None:
+                system = self.modal.work_offset
+                why = offset_beyond_frame(axis, system, self.offsets, self.declared)[1] if after is None else (
+                    f"the set-up gives the work system left no offset for {axis} and the program set none")
+                raise ProgramError(f"where the tool stands in the new work coordinates is unknown: {why}",
+                                   self._at(block))
+            if self.cutter is not None and self.cutter.side is not None:
+                raise ProgramError("a change of work offset with cutter compensation on cannot be run",
+                                   self._at(block))  # [V] LinuxCNC: "Cannot change coordinate systems with cutter radius compensation on"
+            delta = before - after
+            self.pos[axis] += delta
+            self.rounded[axis] = num(self.pos[axis])
+            if axis in self.crounded:
+                self.crounded[axis] = num(self.crounded[axis] + delta)
+        self.beyond = new
 
     def _coordinate(self, block: Block, axis: str, value: float) -> None:
         """Coordinate setting: the tool's present point gets ``value`` on ``axis``; nothing moves."""

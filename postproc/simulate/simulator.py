@@ -21,6 +21,7 @@ from ..ir import Block, MachineFunction, Motion, Section
 from ..state import MM_PER_INCH, MODAL_KEYS as _MODAL
 from .events import HEADER_LOOKAHEAD, LATHE_TOOL_OFFSET, UNEVALUATED, UNSIMULATED, Event, header, num, _setting_text
 from .moves import Moves
+from .work_offsets import offset_beyond_frame
 
 LENGTH_AXIS: Final = _AXIS
 MODAL_KEYS: Final = _MODAL
@@ -243,8 +244,11 @@ class Simulator(Moves):
         s = sections.get("Feed")
         if s is not None:
             self._set_feed(s.value)  # type: ignore[attr-defined]
-        if self.offsets and "WorkOffset" in sections:
-            self._shift()
+        if "WorkOffset" in sections:
+            if self.offsets:
+                self._shift()
+            if self.declared and self.current is not None:
+                self.reframe(self.current)
 
     def spindle_event(self, line: int, direction: str, emit: Callable[[Event], None]) -> None:
         """A spindle change; stopping a stopped spindle is no event (two programs that differ only
@@ -301,6 +305,8 @@ class Simulator(Moves):
     def motion(self, block: Block, m: Motion, absolute: bool, emit: Callable[[Event], None]) -> None:
         mode, line = m.mode, block.line
         travel = self.travel
+        if m.axes:
+            self.moved = True
         if mode in ("home", "home2"):
             if not m.axes:
                 return
@@ -314,6 +320,7 @@ class Simulator(Moves):
             for axis in m.axes:
                 key = self.increments.get(axis, axis)
                 ref[key] = self.home.get(key, 0.0) if mode == "home" and not self.lathe else 0.0
+            self.machine_to_frame(block, ref, self._programmed(m.axes))
             if self.length.offset and LENGTH_AXIS in m.axes:
                 ref[LENGTH_AXIS] -= self.length.offset  # the reference point is a machine position
             for axis, shift in self.lathe_shift.items():
@@ -340,6 +347,8 @@ class Simulator(Moves):
                         self.incremental and not (absolute or machine), machine)
         if machine and self.compensating:
             self._machine_coordinates(block, m, target)
+        if machine:
+            self.machine_to_frame(block, target, self._programmed(m.axes))
         if mode == "rapid":
             self.line_move("rapid", target, line, emit)
         elif mode == "linear":
@@ -379,6 +388,7 @@ class Simulator(Moves):
         if isinstance(pitch, Expr):
             raise ProgramError(UNEVALUATED, self._at(block, "K"))
         start = dict(self.pos)
+        self.moved = True
         end = self.target(block, tap.axes, absolute)
         if self.travel is not None:
             self.travel.line(block, start, end, self._programmed(tap.axes), self.incremental and not absolute, False)
@@ -403,6 +413,23 @@ class Simulator(Moves):
             self.line_move("tap", start, block.line, emit)
         finally:
             self.sync = None
+
+    def machine_to_frame(self, block: Block, point: dict[str, float], axes: set[str]) -> None:
+        """Machine positions on ``axes`` of ``point`` (a move in machine coordinates, a reference point) put in
+        the work frame: less the work offset the frame does not hold (the set-up's, where the program set
+        none; ``postproc.simulate.work_offsets``), as LinuxCNC gives such a move in program coordinates [V
+        rs274: ``G10 L2 P1 Z10`` then ``G53 G0 Z0`` prints ``STRAIGHT_TRAVERSE(.., -10.0000, ..)``]. A set-up
+        with no ``<WorkOffsets>`` at all takes every offset as zero (documented); one that gives some but not
+        the active system's on an axis is a located error, never a point off by the missing offset."""
+        for axis in axes:
+            if axis not in point:
+                continue
+            beyond = self.beyond[axis]
+            if beyond is None:
+                why = offset_beyond_frame(axis, self.modal.work_offset, self.offsets, self.declared)[1]
+                raise ProgramError(f"a machine position cannot be put in work coordinates: {why}",
+                                   self._at(block, axis if axis in (block.text or "").upper() else None))
+            point[axis] -= beyond
 
     def _machine_coordinates(self, block: Block, m: Motion, target: dict[str, float]) -> None:
         """A move in machine coordinates: its value is where the machine's controlled point goes, without

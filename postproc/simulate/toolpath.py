@@ -6,18 +6,20 @@ Streaming: the simulator keeps the modal state and one position, never the progr
 such a controller first, so cycles arrive expanded as ``CompoundMotion``.
 
 Assumptions (a simulator knows no machine data):
-- Positions are absolute coordinates in mm from the set-up's start position (``Machine startX``...).
-  Every work offset (G54...) is zero until the program sets one (G10 L2: ``DataSetting``), and then
-  shifts the absolute points programmed in that work system.
+- Positions are absolute work coordinates in mm from the set-up's start position (``Machine startX``...).
+  A work offset the program sets (G10 L2: ``DataSetting``) shifts the absolute points programmed in its
+  work system; the set-up's (``<WorkOffsets>``) do not (``postproc.simulate.work_offsets``).
 - Tool length (G43/G44/G49) and, for a dialect with ``CUTTER_RULES``, cutter radius compensation move the
   controlled point (``postproc.compensation``); a move's event keeps the programmed point and carries the
   controlled one beside it (``controlled``) when they differ. Register values come from the program's own
   data settings, else the set-up's ``<Tools>``; a register with neither is a located error.
-- Machine coordinates (G53) are therefore work coordinates until a G10 sets an offset; they are
-  always absolute.
-- A reference return (G28/G30) rapids to the intermediate point, then to the reference point, taken as
-  machine zero = work zero on the axes named in the block; on a mill, G28 goes to the set-up's
-  ``<Axis home>`` where it gives one (machine coordinates, which are work coordinates here).
+- Machine coordinates (G53, always absolute) are put in the work frame less the set-up's offset of the
+  active work system (``Simulator.machine_to_frame``); a change of work system after the first move
+  gives the point the machine stands at in the new system (``Moves.reframe``). Without ``<WorkOffsets>``
+  in the set-up every offset is zero; a set-up that gives some but not the one needed is a located error.
+- A reference return (G28/G30) rapids to the intermediate point, then to the reference point, machine
+  zero on the axes named in the block; on a mill, G28 goes to the set-up's ``<Axis home>`` where it
+  gives one (machine positions, put in the work frame as G53's are).
 - Arc centres ``cx, cy, cz`` are absolute; on the axis normal to the plane the centre carries the arc's
   start value. ``plane`` is the IR's name of the plane: "XY", "ZX" or "YZ".
 - Optional-skip blocks (``/``) are executed, as with the block-delete switch off.

@@ -33,6 +33,7 @@ class TravelError(ProgramError):
     """A move beyond the machine's travel, or one whose machine position cannot be known."""
 from ..ir import Block
 from ..setup.machine import ROTARY_AXES, AxisTravel
+from .work_offsets import offset_beyond_frame
 
 if TYPE_CHECKING:
     from ..context import Context
@@ -50,10 +51,10 @@ class Simulated(Protocol):
     lathe: bool
     diameter: bool
     offsets: dict[int, dict[str, float]]
+    declared: dict[int, dict[str, float]]
 
     def _at(self, block: Block | None = None, word: str | None = None) -> Location: ...
 
-_NONE: dict[str, float] = {}
 _FRAME_KEYS = frozenset(("WorkOffset", "ToolLengthOffset", "ToolSelect", "DataSetting"))
 """Sections that change what lies between the program's frame and the machine."""
 EPSILON = 1e-6
@@ -73,9 +74,8 @@ class TravelCheck:
                        for a in sim.axes}
         """Set-up value -> simulator value (mm, lathe X as a radius), per axis."""
         self.travel: dict[str, AxisTravel] = {a: t for a, t in setup.travel.items() if a in self.factor}
-        self.declared = {int(n): {a: v * self.factor[a] for a, v in o.axes().items() if a in self.factor}
-                         for n, o in setup.work_offsets.items()}
-        """The set-up's work offsets in simulator units, by system number."""
+        self.declared = sim.declared
+        """The set-up's work offsets in simulator units, by system number (``work_offsets.declared_offsets``)."""
         self.checked = tuple(a for a in sim.axes if a in self.travel and self.travel[a].limited())
         self.length_mode = "cancel"
         self.length_register: int | None = None
@@ -217,18 +217,7 @@ class TravelCheck:
 
     def _work_offset(self, axis: str) -> tuple[float | None, str]:
         """What the active work system adds beyond what the simulator already added (a G10's values)."""
-        sim = self.sim
-        system = sim.modal.work_offset
-        total = 0.0
-        for number, required in ((system, True), (0, False)):
-            if axis in sim.offsets.get(number, _NONE):
-                continue  # a G10 set it: the simulator's point already holds it
-            value = self.declared.get(number, _NONE).get(axis)
-            if value is None and required:
-                return None, (f"the set-up gives work system {number} no offset for {axis} (<WorkOffsets><Offset "
-                              f"number=\"{number}\" {axis.lower()}=...>) and the program sets none")
-            total += value or 0.0
-        return total, ""
+        return offset_beyond_frame(axis, self.sim.modal.work_offset, self.sim.offsets, self.declared)
 
     def _tool(self, axis: str) -> float | None:
         """What the tool offset in force adds on ``axis`` (simulator units), or None when unknown."""

@@ -43,6 +43,7 @@ __all__ = [
     "RS274Error",
     "RS274Timeout",
     "RS274Unavailable",
+    "assert_same_moves",
     "available",
     "canonical_moves",
     "motions",
@@ -313,3 +314,11 @@ def motions(events: Iterable[dict[str, Any]]) -> list[dict[str, Any]]:
     return [e for e in events if e.get("move") in _MOTION]
 
 
+def assert_same_moves(ours: list[dict[str, Any]], theirs: list[dict[str, Any]], *context: str,
+                      tolerance: float = 2e-4) -> None:
+    """``ours`` (a toolpath's moves) are ``theirs`` (rs274's): as many, of the same kinds, every end point within
+    ``tolerance`` mm on X, Y and Z (rs274 prints 4 decimals); ``context`` (the programs) goes into a failure."""
+    assert len(ours) == len(theirs), f"{len(ours)} moves here, {len(theirs)} in rs274\n" + "\n".join(context)
+    for n, (a, b) in enumerate(zip(ours, theirs)):
+        assert a["move"] == b["move"], (n, a, b, *context)
+        assert max(abs(float(a[k]) - float(b[k])) for k in "xyz") <= tolerance, (n, a, b, *context)

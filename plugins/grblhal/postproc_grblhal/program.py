@@ -30,6 +30,10 @@ from postproc.rs274.ngc_program import NgcProgramSyntax
 
 from .variables import GrblhalVariables
 
+CALL_LEVELS: Final = 10
+"""Nested calls grblHAL runs: ``ngc_call_push`` refuses a call once ``call_level`` (from -1) reached
+``NGC_MAX_CALL_LEVEL - 1`` (10 - 1), "flow control stack overflow" [V: ngc_params.c, ngc_flowctrl.c
+``stack_push``, stored commit f80fc34]. A sub may call itself, to that depth."""
 GRBLHAL_SPELLING: Final[ExprSpelling] = dataclasses.replace(LINUXCNC_SPELLING, name="grblhal", parameters=(1, 5060))
 """LinuxCNC's operators and functions (``ngc_expr.c``), writable parameters #1-#5060 (``ngc_params.c``)."""
 
@@ -45,4 +49,5 @@ class GrblhalProgramSyntax(NgcProgramSyntax):
     LIBRARY_FILES: ClassVar[tuple[str, ...]] = ("{name}.macro",)
     SUBPROGRAM_RULES: ClassVar[SubprogramRules] = SubprogramRules(forward_search=False,
                                                                   main_return_words=(("M", "2"),),
-                                                                  definition_runs_its_end=False)
+                                                                  definition_runs_its_end=False,
+                                                                  call_levels=CALL_LEVELS)

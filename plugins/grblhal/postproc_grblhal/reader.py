@@ -6,9 +6,10 @@ o-words are read only for a build with them (``<Controller expressions="true">``
 Numbered o-word subroutines are read as grblHAL runs them, from ``ngc_flowctrl.c`` (stored commit f80fc34) [V]:
 the flow registers ``o<n> sub`` when it passes the definition (``add_sub``) and skips its body, and ``o<n> call``
 finds only a registered sub (else "flow control syntax error"): a call stands after its sub's ``endsub`` in the
-text or inside the sub's own body (a recursive call: the sub is registered before its body runs); a located error
-otherwise (stricter than grblHAL for a call inside a sub's body of a sub defined after it, which runs when both
-definitions are passed before the first call). A call's arguments are ``GrblhalVariables``'. What is not modelled is a located
+text, or inside that sub's own body (a recursion: the body runs only once the definition has registered the sub;
+grblHAL bounds the nesting at 10 calls, ``program.CALL_LEVELS``); a located error otherwise (stricter than grblHAL
+for a call inside a sub's body of a sub defined after it, which runs when both definitions are passed before the
+first call). A call's arguments are ``GrblhalVariables``'. What is not modelled is a located
 error: a named sub (``o<name> sub``/``call``: the file ``<name>.macro`` on the controller's file system), a
 call with 29 arguments (``#30`` left unset), and a return outside the body of the sub it names (grblHAL hands
 one in the main program to a G65 macro plugin).
@@ -67,7 +68,7 @@ def _problem(statement: SubStart | SubEnd | Call | Return, defined: set[str], bo
     if not isinstance(name, str) or not name.isdigit():
         return NAMED
     if isinstance(statement, Call):
-        if name not in defined and name != body:  # in its own body: registered when the flow passed o<n> sub
+        if name not in defined and name != body:  # its own body runs only once its definition registered it
             return BEFORE.format(name=name)
         if len(statement.args) == 29:
             return TWENTY_NINE

@@ -10,7 +10,7 @@ M2/M30, integer words within 0.0001) with LinuxCNC's lookup, subprogram rules an
 
 from __future__ import annotations
 
-from typing import Callable, ClassVar
+from typing import Callable, ClassVar, Final
 
 from postproc.context import Context
 from postproc.frames.parameters import FrameReadings
@@ -18,6 +18,12 @@ from postproc.interp.rules import SubprogramRules
 from postproc.interp.variables import Variables
 from postproc.rs274.ngc_program import INTEGER_TOLERANCE, NgcProgramSyntax
 from postproc.rs274.variables import NGC_FRAME_PARAMETERS, NgcVariables
+
+
+CALL_LEVELS: Final = 9
+"""Nested calls LinuxCNC runs: ``enter_context`` raises ``call_level`` (the main program's is 0) and refuses at
+``INTERP_SUB_ROUTINE_LEVELS`` (10), "Too many subroutine levels" [V: interp_o_word.cc, interp_internal.hh; rs274
+runs a sub calling itself 9 deep and refuses the 10th call, tests/test_grblhal_subroutines.py]."""
 
 
 class LinuxcncProgramSyntax(NgcProgramSyntax):
@@ -29,9 +35,10 @@ class LinuxcncProgramSyntax(NgcProgramSyntax):
     LIBRARY_FILES: ClassVar[tuple[str, ...]] = ("{name}.ngc",)
     SUBPROGRAM_RULES: ClassVar[SubprogramRules] = SubprogramRules(forward_search=True,
                                                                   main_return_words=(("M", "2"),),
-                                                                  definition_runs_its_end=True)
+                                                                  definition_runs_its_end=True,
+                                                                  call_levels=CALL_LEVELS)
     """rs274: M98 looks for O<n> from the call on and runs to M99; M99 in the main program is M2; a
-    definition met in the flow runs its endsub."""
+    definition met in the flow runs its endsub; at most 9 nested calls (``CALL_LEVELS``)."""
 
     def variables(self, ctx: Context, increment: Callable[[], float]) -> Variables:
         """The offset parameters (#5210-#5219, a work system's #5221..) read the run's frame, in the

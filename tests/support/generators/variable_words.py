@@ -43,8 +43,8 @@ VALUES: dict[str, tuple[float, ...]] = {
     "E": (1.0, 2.0, 3.0), "ANGLE": (0.0, 90.0), "M": (8.0, 9.0), "G": (0.0, 1.0), "RAD": (2.0, 3.0),
     "DIA": (10.0, 20.0, 30.0), "FR": (0.1, 0.2), "TURRET": (101.0, 202.0), "STEP": (1.0, 2.0),
 }
-WHOLE = frozenset(("H", "D", "T", "M", "G", "E", "K", "MS", "TURRET"))
-"""Placeholders whose words take whole numbers (written without a decimal point)."""
+WHOLE = frozenset(("H", "D", "T", "M", "G", "E", "K", "MS", "TURRET", "S"))
+"""Placeholders whose words take whole numbers (written without a decimal point: a Fanuc S takes none)."""
 
 FANUC = [
     "G0 G43 H{H} Z{Z}", "G49", "G41 D{D} G1 X{X} Y{Y} F{F}\nG40 G1 X{X} Y{Y}", "G42 D{D} G1 X{X} F{F}\nG40 G0 Z{Z}",
