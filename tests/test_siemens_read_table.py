@@ -72,7 +72,7 @@ def test_a_siemens_construct_gets_each_targets_spelling_and_verifies(siemens: st
     ("G599", "cannot express work offset 99"),
     ("G1 X=IC(2) F10", "X=IC(..) (a per-address distance mode"),
     ("G58 X5", "G58 (axial programmable offset)"),
-    ("CYCLE84(10, 0, 2, -20, , 0, 3, , 1.25, 0, 400, 400)", "CYCLE84 (a rigid tap"),
+    ("CYCLE84(10, 0, 2, -20, , 0, 3, , 1.25, 0, 400, 400)", "CYCLE84 with SST 400 other than the S in force"),
     ("G0 X1 TURN=2", "TURN= counts the full circles of a helix"),
 ])
 def test_a_siemens_construct_without_a_spelling_is_refused_by_name(siemens: str, refusal: str) -> None:
