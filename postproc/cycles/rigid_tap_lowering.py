@@ -32,12 +32,15 @@ def _resolve(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> It
     synchronises = target.SYNCHRONISED_TAP
     family = target.family()
     cycle_code = target.RIGID_TAP_CODE
+    own_code = False  # the source writes the target family's rigid-tapping code itself
     for block in blocks:
         sections = block.sections
         if "MachineFunction" not in sections and "RigidTap" not in sections and "CompoundMotion" not in sections:
             yield block  # the common block
             continue
         code = sections.get("MachineFunction")
+        if isinstance(code, MachineFunction) and code.action == RIGID_TAP and code.family == family:
+            own_code = True
         if (synchronises or target.TAP_STROKES) and isinstance(code, MachineFunction) and code.action == RIGID_TAP \
                 and code.family != family:
             _leave_out(block, code)
@@ -66,6 +69,15 @@ def _resolve(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> It
                 yield from as_tap_cycle(block, ctx, target, sections["RigidTap"])  # type: ignore[arg-type]
             except PostprocError as err:
                 ctx.diagnostics.error(err)
+            continue
+        if cycle_code and not synchronises and not own_code and isinstance(compound, CompoundMotion) \
+                and "CannedCycle" not in sections:
+            try:
+                made = list(taps_as_cycles(block, ctx, target, compound))
+            except PostprocError as err:
+                ctx.diagnostics.error(err)
+                continue
+            yield from made
             continue
         why = _refusal(taps, target)
         if why is not None:
@@ -121,11 +133,24 @@ def as_tap_cycle(block: Block, ctx: Context, target: type[Dialect], tap: RigidTa
     end = tap.axes[normal]
     assert not isinstance(end, Expr)  # (refused above)
     bottom = float(end) + (start if incremental else 0.0)
-    rpm, direction, mode = state.spindle_rpm, state.spindle, state.feed_mode
+    del block.sections["RigidTap"]
+    block.changed()
+    yield from _tap_cycle(block, ctx, target, tap, (normal, start, bottom), state.spindle, at)
+
+
+def _tap_cycle(block: Block, ctx: Context, target: type[Dialect], tap: RigidTap, levels: tuple[str, float, float],
+               direction: str | None, at: object) -> Iterator[Block]:
+    """The code block, ``block`` made the tap cycle at the spot from ``levels`` (the drilling axis, the start as
+    R, the bottom) with the spindle turning ``direction``, and the cancel block (``as_tap_cycle``)."""
+    state = ctx.state
+    normal, start, bottom = levels
+    incremental = state.distance == "incremental"
+    rpm, mode = state.spindle_rpm, state.feed_mode
     if direction not in ("cw", "ccw") or not rpm:
-        raise ProgramError("a rigid tap with the spindle stopped or at no speed cannot be run", at)
+        raise ProgramError("a rigid tap with the spindle stopped or at no speed cannot be run", at)  # type: ignore[arg-type]
     if mode not in ("per_min", "per_rev"):
-        raise UnsupportedError(f"a rigid tap in {mode.replace('_', ' ')} feed: no tap cycle feed says its pitch", at)
+        raise UnsupportedError(f"a rigid tap in {mode.replace('_', ' ')} feed: no tap cycle feed says its pitch",
+                               at)  # type: ignore[arg-type]
     pitch = tap.pitch
     assert not isinstance(pitch, Expr)
     code = MachineFunction(target.family(), target.RIGID_TAP_CODE, target.RIGID_TAP_CODE, RIGID_TAP,
@@ -133,8 +158,6 @@ def as_tap_cycle(block: Block, ctx: Context, target: type[Dialect], tap: RigidTa
     head = Block(block.line, None, block.eol or "\n")
     head.sections = {"MachineFunction": code, "SpindleSpeed": SpindleSpeed(float(rpm))}
     yield head
-    del block.sections["RigidTap"]
-    block.changed()
     sections = block.sections
     if incremental:
         sections["DistanceMode"] = DistanceMode("absolute")
@@ -155,6 +178,66 @@ def as_tap_cycle(block: Block, ctx: Context, target: type[Dialect], tap: RigidTa
     if incremental:
         tail.sections["DistanceMode"] = DistanceMode("incremental")
     yield tail
+
+
+def taps_as_cycles(block: Block, ctx: Context, target: type[Dialect], compound: CompoundMotion) -> Iterator[Block]:
+    """An expanded rigid tap cycle of a family whose taps are rigid without a code (SINUMERIK ``CYCLE84``)
+    towards a target that taps rigidly after its code: the moves before each synchronised tap, then the
+    code, the tap cycle at the spot and its cancel (``as_tap_cycle``'s three blocks), then the moves after
+    it; the block's other sections stay with its first part. A tap along anything but the drilling axis
+    alone, or from a level the moves before it do not give, is refused."""
+    if not any(isinstance(item, RigidTap) for item in compound.items):
+        yield block
+        return
+    state = ctx.state
+    at = ctx.at(block)
+    normal = PLANE_AXES[state.plane][2]
+    level: float | None = None
+    direction = state.spindle
+    part: list[Section] = []
+    first = True
+    for item in compound.items:
+        if not isinstance(item, RigidTap):
+            if isinstance(item, SpindleControl):
+                direction = item.direction  # (a left-hand tap cycle turns the spindle counter-clockwise first)
+            if isinstance(item, Motion) and isinstance(item.axes.get(normal), float):
+                level = item.axes[normal]  # type: ignore[assignment]
+            part.append(item)
+            continue
+        end = item.axes.get(normal)
+        if item.dwell or item.stroke is not None or isinstance(item.pitch, Expr) or set(item.axes) != {normal} \
+                or not isinstance(end, float) or level is None:
+            raise UnsupportedError(f"a rigid tap with a dwell, or not along {normal} alone from a level the cycle's "
+                                   f"moves give: no {target.NAME} tap cycle is written for it", at)
+        if first:
+            made = _first_part(block, compound.term, part)
+            if made.sections:
+                yield made
+        else:
+            yield from _later_part(block, part)
+        first, part = False, []
+        tap_block = Block(block.line, None, block.eol or "\n")
+        tap_block.sections = {}
+        yield from _tap_cycle(tap_block, ctx, target, item, (normal, level, end), direction, at)
+    yield from _later_part(block, part)
+
+
+def _first_part(block: Block, term: str, items: list[Section]) -> Block:
+    """The block's first part: its own sections and the moves ``items`` before the first tap."""
+    if items:
+        block.sections["CompoundMotion"] = CompoundMotion(term, items)
+    else:
+        del block.sections["CompoundMotion"]
+    block.changed()
+    return block
+
+
+def _later_part(block: Block, items: list[Section]) -> Iterator[Block]:
+    """What an expansion does after a tap, one block an item (the first part's comment names the source)."""
+    for item in items:
+        part = Block(block.line, None, block.eol or "\n")
+        part.sections = {item.KEY: item}
+        yield part
 
 
 def as_strokes(block: Block, ctx: Context, target: type[Dialect], tap: RigidTap) -> Iterator[Block]:
