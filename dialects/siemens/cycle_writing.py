@@ -33,10 +33,12 @@ from typing import Callable
 from postproc.cycles.section import CannedCycle
 
 NAMES = {"drill": "CYCLE81", "drill_dwell": "CYCLE82", "peck_deep": "CYCLE83", "bore_feed": "CYCLE85",
-         "bore_dwell_feed": "CYCLE89", "bore_manual": "CYCLE88"}
+         "bore_dwell_feed": "CYCLE89", "bore_manual": "CYCLE88", "tap": "CYCLE84", "tap_left": "CYCLE84"}
 """Neutral cycle kind -> the SINUMERIK cycle written for it."""
 SAME = 1e-9
 """Levels closer than this (program units) are the same level."""
+TAPS = frozenset(("tap", "tap_left"))
+"""The kinds written as ``CYCLE84``: rigid taps only (a record with its ``pitch``); a floating tap is expanded."""
 BORING = frozenset(("bore_feed", "bore_dwell_feed"))
 """The kinds written with their feed in and out (``CYCLE85``'s FFR and RFF, ``CYCLE89``'s F in force)."""
 
@@ -121,6 +123,8 @@ def parameters_writable(cycle: CannedCycle) -> bool:
         return False
     if cycle.kind == "peck_deep" and not whole_strokes(cycle):
         return False
+    if cycle.kind in TAPS and (cycle.pitch is None or cycle.pitch <= 0):
+        return False
     return not (cycle.kind in BORING and (cycle.feed is None or cycle.feed <= 0))
 
 
@@ -139,11 +143,20 @@ class Call:
     """A deep hole's anticipation distance (Fanuc's d)."""
     feed: float | None = None
     """A bore that feeds out: the feed in and out (``CYCLE85``'s FFR and RFF)."""
+    pitch: float | None = None
+    """A rigid tap's pitch, signed by the thread's hand (``CYCLE84``'s PIT: negative for ``G74``)."""
+    speed: float | None = None
+    """A rigid tap's spindle speed (``CYCLE84``'s SST and SST1: the S in force, at which Fanuc's taps)."""
 
     @classmethod
-    def of(cls, cycle: CannedCycle) -> "Call":
+    def of(cls, cycle: CannedCycle, rpm: float | None = None) -> "Call":
+        """The call of ``cycle``; ``rpm`` the spindle speed in force (a rigid tap's SST)."""
         assert cycle.r is not None and cycle.bottom is not None and cycle.initial is not None
         rtp = cycle.r if cycle.return_level == "r" else cycle.initial
+        if cycle.kind in TAPS:
+            assert cycle.pitch is not None
+            return cls(NAMES[cycle.kind], rtp, cycle.r, cycle.bottom, cycle.dwell or None,
+                       pitch=cycle.pitch if cycle.kind == "tap" else -cycle.pitch, speed=rpm)
         if cycle.kind == "peck_deep":
             assert cycle.q is not None and cycle.clearance is not None
             return cls(NAMES[cycle.kind], rtp, cycle.r, cycle.bottom, None, min(cycle.q, cycle.r - cycle.bottom),
@@ -164,7 +177,12 @@ class Call:
         leaves no call active (``cycles``: how the reader reads it)."""
         params = [number(self.rtp), number(self.rfp), "0", number(self.dp)]
         dtb = "" if self.dtb is None else _seconds(self.dtb)
-        if self.stroke is not None:
+        if self.pitch is not None:
+            # SDAC the tap's own direction (3: M3 right-hand, 4: M4 left-hand), MPIT empty, PIT, POSS 0, SST = SST1
+            # [K: the Autodesk siemens-840d.cps onCycle writes a tap so; ``tapping`` reads it back]
+            speed = "" if self.speed is None else _speed(self.speed)
+            params += ["", dtb, "3" if self.pitch > 0 else "4", "", number(self.pitch), "0", speed, speed]
+        elif self.stroke is not None:
             params += ["", number(self.rfp - self.stroke), "", "0", "0", "0", "1", "1", "", "", "", "0",
                        number(self.clearance)]
         elif self.name == "CYCLE85":
@@ -175,6 +193,10 @@ class Call:
         elif self.dtb is not None:
             params += ["", dtb]
         return f"{'' if once else 'MCALL '}{self.name}({', '.join(params)})"
+
+
+def _speed(value: float) -> str:
+    return f"{value:.6f}".rstrip("0").rstrip(".")
 
 
 def _seconds(value: float) -> str:

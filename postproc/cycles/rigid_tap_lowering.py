@@ -41,8 +41,8 @@ def _resolve(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> It
         code = sections.get("MachineFunction")
         if isinstance(code, MachineFunction) and code.action == RIGID_TAP and code.family == family:
             own_code = True
-        if (synchronises or target.TAP_STROKES) and isinstance(code, MachineFunction) and code.action == RIGID_TAP \
-                and code.family != family:
+        if (synchronises or target.TAP_STROKES or target.RIGID_TAP_CYCLE) and isinstance(code, MachineFunction) \
+                and code.action == RIGID_TAP and code.family != family:
             _leave_out(block, code)
         taps = rigid_taps(block)
         if not taps:
