@@ -15,11 +15,13 @@ from __future__ import annotations
 
 import io
 import random
+from pathlib import Path
 
 import pytest
 
 from postproc.api import translate
 from postproc.errors import Diagnostics, ErrorList
+from postproc.setup.machine_setup import load_setup
 from postproc.simulate.toolpath import toolpath_events
 from postproc.simulate.verify import verify_lines
 
@@ -210,3 +212,19 @@ def test_random_fanuc_rigid_taps_read_back_from_siemens_to_the_same_toolpath(see
     taps_in = [e for e in _events(text, "fanuc") if e[0] == "tap"]
     taps_out = [e for e in _events(out) if e[0] == "tap"]
     assert taps_in == taps_out and taps_in, (taps_in, taps_out)
+
+
+def test_the_tapping_example_is_fanucs_rigid_tap_cycles_and_refused_by_grbl() -> None:
+    path = Path(__file__).resolve().parents[1] / "examples" / "siemens" / "tapping.mpf"
+    text = path.read_text(encoding="utf-8")
+    setup = load_setup(str(path.parents[1] / "setups" / "siemens_840d_mill.xml"))
+    out = _translate(text, "fanuc", setup=setup)
+    assert out.count("S400 M29\nG99 G84 Z-12. R3. F600.\nG98 G80\n") == 3, out  # F = 1.5 x 400
+    assert out.count("S300 M29\nG99 G74 Z-10. R3. F375.\nG80\n") == 1, out  # F = 1.25 x 300 (G99 in force)
+    report = verify_lines(io.StringIO(text), io.StringIO(out), file_in="a", file_out="b", source="siemens",
+                          target="fanuc", setup=setup, tolerance=0.0)
+    assert report.ok and report.max_deviation == 0 and report.moves >= 20, report.summary()
+    with pytest.raises(ErrorList) as caught:
+        _translate(text, "grbl", setup=setup)
+    assert [str(e).split(": error: ")[0] for e in caught.value.errors] == [f"in.mpf:{n}:1" for n in (13, 14, 15, 20)]
+    assert all("rigid (spindle-synchronised) tap" in str(e) for e in caught.value.errors)
