@@ -129,7 +129,7 @@ def test_a_siemens_tap_reads_back_from_siemens_under_units_inch() -> None:
     ("CYCLE84(20, 0, 2, -10, , , 3, , 1.5, 0, 500, 500, , , , 1, 3, 1)", "CYCLE84 with _VARI other than 0"),
     ("CYCLE84(20, 0, 2, -10, , , 3, , 1.5, 0, 500, 500, , 2)", "CYCLE84 with _PTAB other than 0"),
     ("CYCLE84(20, 0, 2, -10, , , 3, , , 0, 500, 500)", "CYCLE84 without its pitch PIT"),
-    ("CYCLE840(20, 0, 2, -10, , , 4, 3, 1, , 1.5)", "CYCLE840 (its reversal SDR"),
+    ("CYCLE840(20, 0, 2, -10, , , 4, 3, 1, , 1.5)", "CYCLE840 with a lead MPIT/PIT"),
 ])
 def test_an_unconfirmed_tap_is_kept_verbatim_and_refused_elsewhere_by_name(call: str, name: str) -> None:
     text = START + call + "\nM30\n"
@@ -174,12 +174,58 @@ def test_a_rigid_tap_where_the_tool_stands_is_cycle84_called_once() -> None:
     _verify(text, out, "fanuc", "siemens")
 
 
-def test_a_floating_tap_stays_expanded() -> None:
-    """G84 without M29 feeds at F with the spindle reversed at the bottom: no CYCLE84 (which is rigid)."""
-    text = "G21 G90 G17 G94\nG0 X0. Y0. Z20.\nS500 M3\nG99 G84 X10. Y5. Z-10. R2. F750.\nG80\nM30\n"
+def test_a_floating_g99_tap_is_mcall_cycle840_and_a_g98_one_its_moves() -> None:
+    """G84 without M29 feeds at F with the spindle reversed at the bottom: CYCLE840 with ENC 1 (G63 at the F in
+    force), SDR 4 (out counter-clockwise), SDAC 3, RTP = RFP = R 2, DTB 0.2 s. Under G98 the spindle's turning back
+    before or after the rise to RTP is not confirmed: the moves."""
+    text = "G21 G90 G17 G94\nG0 X0. Y0. Z20.\nS500 M3\nG99 G84 X10. Y5. Z-10. R2. P200 F750.\nG80\nM30\n"
     out = _translate(text, "siemens", source="fanuc")
-    assert "CYCLE84" not in out and "M4" in out, out
+    assert "G0\nMCALL CYCLE840(2., 2., 0, -10., , 0.2, 4, 3, 1)\nX10. Y5.\nMCALL\n" in out, out
     _verify(text, out, "fanuc", "siemens")
+    g98 = text.replace("G99", "G98")
+    out = _translate(g98, "siemens", source="fanuc")
+    assert "CYCLE84" not in out and "M4" in out, out
+    _verify(g98, out, "fanuc", "siemens")
+
+
+FLOATING = START + "G1 F450\nG0 X10 Y10 Z2\nMCALL CYCLE840(2, 0, 2, -10, , 0.2, 4, 3, 1)\nX20\nMCALL\nM4\n" \
+    "CYCLE840(2, 0, 2, , 8, , 3, 4, 1)\nM30\n"
+
+
+def test_cycle840_without_encoder_is_a_floating_tap() -> None:
+    """G0 to RFP+SDIS 2, G63 to -10 at the F in force 450, dwell 0.2 s, out reversed (SDR 4) at 450, the spindle
+    back in SDAC 3; the left-hand call once from (10, 10... no: where the tool stands, X20 Y10) in the direction
+    in force M4, out in SDR 3, M4 again; DPR 8 below RFP 0 is -8."""
+    assert _events(FLOATING)[3:] == [
+        ("rapid", 20, 10, 2), ("feed", 20, 10, -10), ("dwell", 0.2), ("spindle", "ccw"), ("feed", 20, 10, 2),
+        ("spindle", "cw"), ("spindle", "ccw"), ("feed", 20, 10, -8), ("spindle", "cw"), ("feed", 20, 10, 2),
+        ("spindle", "ccw")]
+    out = _translate(FLOATING, "fanuc")
+    assert "G99 G84 Z-10. R2. P200 K0\n" in out and "M29" not in out, out
+    _verify(FLOATING, out, "siemens", "fanuc")
+    for target in ("linuxcnc", "grbl"):
+        _verify(FLOATING, _translate(FLOATING, target), "siemens", target)
+
+
+@pytest.mark.parametrize("call, name", [
+    ("CYCLE840(2, 0, 2, -10, , , 4, 3, 0)", "CYCLE840 with ENC other than 1"),
+    ("CYCLE840(2, 0, 2, -10, , , 0, 3, 1)", "CYCLE840 with SDR 0 and SDAC 3"),
+    ("CYCLE840(2, 0, 2, -10, , , 4, 3, 1, 10)", "CYCLE840 with a lead MPIT/PIT"),
+    ("CYCLE840(20, 0, 2, -10, , , 4, 3, 1)", "CYCLE840 with RTP other than RFP+SDIS"),
+    ("CYCLE840(2, 0, 2, -10, , , 3, 4, 1)", "CYCLE840 with the spindle cw, not SDAC's ccw"),
+    ("G95\nCYCLE840(2, 0, 2, -10, , , 4, 3, 1)", "CYCLE840 outside G94"),
+])
+def test_an_unconfirmed_cycle840_is_kept_verbatim_and_refused_elsewhere_by_name(call: str, name: str) -> None:
+    text = START + "G1 F450\nG0\n" + call + "\nM30\n"
+    assert _translate(text, "siemens") == text
+    for target in ("fanuc", "linuxcnc"):
+        assert any(name in e for e in _errors(text, target)), (target, _errors(text, target))
+
+
+def test_a_spindle_code_under_a_modal_tap_is_a_located_error() -> None:
+    text = START + "MCALL CYCLE84(20, 0, 2, -10, , , 3, , 1.5, 0, 500, 500)\nX20 M4\nMCALL\nM30\n"
+    assert any(e.startswith("in.mpf:4:1: error: a spindle code under MCALL CYCLE84/CYCLE840")
+               for e in _errors(text, "fanuc"))
 
 
 def _random_taps(seed: int) -> str:
@@ -194,24 +240,30 @@ def _random_taps(seed: int) -> str:
         level = rng.choice(["G98", "G99"])
         r = rng.choice([1.0, 2.0, 3.0])
         dwell = f" P{rng.choice([100, 250, 500])}" if rng.random() < 0.3 else ""
-        lines.append(f"M29 S{rpm}")
+        rigid = rng.random() < 0.7
+        if rigid:
+            lines.append(f"M29 S{rpm}")
+        else:  # a floating tap: the spindle turning its direction, G99 (CYCLE840), or G98 (its moves)
+            lines.append(f"S{rpm} {'M3' if code == 'G84' else 'M4'}")
         lines.append(f"{level} {code} X{rng.randint(-30, 30)}. Y{rng.randint(-30, 30)}. Z{-rng.randint(3, 15)}. "
                      f"R{r}{dwell} F{feed:.4f}")
         lines += [f"X{rng.randint(-30, 30)}. Y{rng.randint(-30, 30)}." for _ in range(rng.randint(0, 3))]
-        lines += ["G80", "G0 Z30."]
+        lines += ["G80", "G0 Z30."] + ([] if rigid else ["M3"])
     lines.append("M30")
     return "\n".join(lines) + "\n"
 
 
-@pytest.mark.parametrize("seed", range(8))
-def test_random_fanuc_rigid_taps_read_back_from_siemens_to_the_same_toolpath(seed: int) -> None:
+@pytest.mark.parametrize("seed", range(12))
+def test_random_fanuc_taps_read_back_from_siemens_to_the_same_toolpath(seed: int) -> None:
     text = _random_taps(seed)
     out = _translate(text, "siemens", source="fanuc")
-    assert "MCALL CYCLE84(" in out and "M29" not in out.replace(";M29", ""), out
+    assert "M29" not in out.replace(";M29", ""), out
+    if "M29" in text or "G94" in text and "G99" in text:  # a rigid tap, or a floating one under G94 and G99
+        assert "CYCLE84" in out, out
     _verify(text, out, "fanuc", "siemens")
     taps_in = [e for e in _events(text, "fanuc") if e[0] == "tap"]
     taps_out = [e for e in _events(out) if e[0] == "tap"]
-    assert taps_in == taps_out and taps_in, (taps_in, taps_out)
+    assert taps_in == taps_out and bool(taps_in) == ("M29" in text), (taps_in, taps_out)
 
 
 def test_the_tapping_example_is_fanucs_rigid_tap_cycles_and_refused_by_grbl() -> None:

@@ -38,7 +38,8 @@ NAMES = {"drill": "CYCLE81", "drill_dwell": "CYCLE82", "peck_deep": "CYCLE83", "
 SAME = 1e-9
 """Levels closer than this (program units) are the same level."""
 TAPS = frozenset(("tap", "tap_left"))
-"""The kinds written as ``CYCLE84``: rigid taps only (a record with its ``pitch``); a floating tap is expanded."""
+"""The kinds written as ``CYCLE84`` (a rigid tap: a record with its ``pitch``) or ``CYCLE840`` (a floating tap,
+under G99 only, with the spindle turning the tap's direction at the call)."""
 BORING = frozenset(("bore_feed", "bore_dwell_feed"))
 """The kinds written with their feed in and out (``CYCLE85``'s FFR and RFF, ``CYCLE89``'s F in force)."""
 
@@ -70,6 +71,17 @@ def in_place_moves(cycle: CannedCycle, call: "Call") -> list[tuple[str, float]]:
     if call.feed is not None:  # G85/G89: feed out to R [K: Fanuc 0i-MF, "Boring cycle (G85)", "(G89)"]
         moves.append(("linear", call.rfp))
     return moves + [("rapid", call.rtp)]
+
+
+def floating_tap_moves(cycle: CannedCycle, call: "Call") -> list[tuple[str, float | str]]:
+    """The moves of Fanuc's (floating) G84/G74 under G99 at its hole, for a tap that no ``CYCLE840`` writes (feed
+    per revolution: ``tapping``) [K: Fanuc 0i-MF, "Tapping cycle (G84)": rapid to R, feed to Z, dwell P, spindle
+    reversed, feed back to R, the tapping direction again]; ``("spindle", direction)`` for a spindle code."""
+    work, back = ("ccw", "cw") if cycle.kind == "tap_left" else ("cw", "ccw")
+    moves: list[tuple[str, float | str]] = [("rapid", call.rfp), ("linear", call.dp)]
+    if call.dtb:
+        moves.append(("dwell", call.dtb))
+    return moves + [("spindle", back), ("linear", call.rfp), ("rapid", call.rtp), ("spindle", work)]
 
 
 def strokes(depth: float, stroke: float) -> int:
@@ -123,8 +135,9 @@ def parameters_writable(cycle: CannedCycle) -> bool:
         return False
     if cycle.kind == "peck_deep" and not whole_strokes(cycle):
         return False
-    if cycle.kind in TAPS and (cycle.pitch is None or cycle.pitch <= 0):
-        return False
+    if cycle.kind in TAPS and (cycle.pitch is not None and cycle.pitch <= 0 or cycle.pitch is None and (
+            cycle.return_level != "r" or cycle.spindle != ("cw" if cycle.kind == "tap" else "ccw"))):
+        return False  # a floating tap's spindle turns back before or after the G0 to RTP [?]: G99 only
     return not (cycle.kind in BORING and (cycle.feed is None or cycle.feed <= 0))
 
 
@@ -147,12 +160,16 @@ class Call:
     """A rigid tap's pitch, signed by the thread's hand (``CYCLE84``'s PIT: negative for ``G74``)."""
     speed: float | None = None
     """A rigid tap's spindle speed (``CYCLE84``'s SST and SST1: the S in force, at which Fanuc's taps)."""
+    left: bool = False
+    """A floating tap of a left-hand thread (``CYCLE840`` with SDAC 4, SDR 3)."""
 
     @classmethod
     def of(cls, cycle: CannedCycle, rpm: float | None = None) -> "Call":
         """The call of ``cycle``; ``rpm`` the spindle speed in force (a rigid tap's SST)."""
         assert cycle.r is not None and cycle.bottom is not None and cycle.initial is not None
         rtp = cycle.r if cycle.return_level == "r" else cycle.initial
+        if cycle.kind in TAPS and cycle.pitch is None:
+            return cls("CYCLE840", rtp, cycle.r, cycle.bottom, cycle.dwell or None, left=cycle.kind == "tap_left")
         if cycle.kind in TAPS:
             assert cycle.pitch is not None
             return cls(NAMES[cycle.kind], rtp, cycle.r, cycle.bottom, cycle.dwell or None,
@@ -182,6 +199,9 @@ class Call:
             # [K: the Autodesk siemens-840d.cps onCycle writes a tap so; ``tapping`` reads it back]
             speed = "" if self.speed is None else _speed(self.speed)
             params += ["", dtb, "3" if self.pitch > 0 else "4", "", number(self.pitch), "0", speed, speed]
+        elif self.name == "CYCLE840":
+            # SDR the way out reversed, SDAC the tap's own direction, ENC 1: G63 at the F in force (``tapping``)
+            params += ["", dtb, *(("3", "4") if self.left else ("4", "3")), "1"]
         elif self.stroke is not None:
             params += ["", number(self.rfp - self.stroke), "", "0", "0", "0", "1", "1", "", "", "", "0",
                        number(self.clearance)]

@@ -27,8 +27,10 @@ CYCLE84    rigid tap at SST (SST1 out) with pitch MPIT/PIT, spindle    tap / tap
            oriented to POSS, direction SDAC after it [K: 2.1.5]       PIT) with SDAC the tap's own direction, SST
                                                                        the S in force, POSS 0 (``tapping``); else
                                                                        kept verbatim
-CYCLE840   tap with a compensating chuck: reversal SDR, SDAC after,   kept verbatim [?]
-           with or without an encoder (ENC), feed from the pitch
+CYCLE840   tap with a compensating chuck: reversal SDR, SDAC after,   tap / tap_left (G84 / G74 under G99) with
+           with or without an encoder (ENC), feed from the pitch       ENC 1, no lead, SDR the reverse of SDAC,
+           [K: 2.1.6]                                                  RTP = RFP+SDIS (``tapping``); else kept
+                                                                       verbatim
 CYCLE86    oriented stop at POSS, lift-off RPA/RPO/RPAP in three axes  kept verbatim (no neutral kind lifts in
                                                                        three axes) [K]
 =========  ==========================================================  =========================================
@@ -74,7 +76,7 @@ from postproc.syntax import Syntax
 from postproc.xmlio import XAttr
 
 from .deep_hole import Unconfirmed, deep_hole
-from .tapping import rigid_tap
+from .tapping import floating_tap, rigid_tap
 
 if TYPE_CHECKING:
     from postproc.context import Context
@@ -123,9 +125,7 @@ CYCLES: dict[str, CycleSpec] = {
     "CYCLE83": CycleSpec(DEEP_HOLE, "peck_deep"),
     "CYCLE84": CycleSpec((*COMMON, "DTB", "SDAC", "MPIT", "PIT", "POSS", "SST", "SST1", "_AXN", "_PTAB", "_TECHNO",
                           "_VARI", "_DAM", "_VRT"), "tap"),
-    "CYCLE840": CycleSpec((*COMMON, "DTB", "SDR", "SDAC", "ENC", "MPIT", "PIT", "_AXN", "_PTAB", "_TECHNO"),
-                          verbatim="its reversal SDR, direction SDAC and feed from the pitch with or without an "
-                                   "encoder (ENC) are not confirmed against Fanuc's G84 here"),
+    "CYCLE840": CycleSpec((*COMMON, "DTB", "SDR", "SDAC", "ENC", "MPIT", "PIT", "_AXN", "_PTAB", "_TECHNO"), "tap"),
     "CYCLE86": CycleSpec((*COMMON, "DTB", "SDIR", "RPA", "RPO", "RPAP", "POSS"),
                          verbatim="its lift-off RPA/RPO/RPAP in three axes has no neutral cycle"),
 }
@@ -212,11 +212,13 @@ def cycle_words(name: str, params: list[float | None], once: bool = False
                               "Fanuc's G88 restarts the spindle clockwise)")
     words = [("R", _spell(rfp + sdis)), ("Z", _spell(bottom))]
     clearance = pitch = speed = None
-    if name == "CYCLE84":
-        try:
+    try:
+        if name == "CYCLE84":
             kind, pitch, speed = rigid_tap(given)
-        except Unconfirmed as err:
-            raise NotModelled(err.what) from None
+        elif name == "CYCLE840":
+            kind = floating_tap(given)
+    except Unconfirmed as err:
+        raise NotModelled(err.what) from None
     if name == "CYCLE83":
         try:
             stroke, clearance = deep_hole(given, rfp + sdis, bottom)
@@ -276,6 +278,11 @@ class SiemensCycleRules:
             keep_verbatim(block, f"{name} with FFR {levels.feed:g} other than the F in force (Fanuc's G85/G89 "
                                  "feed at it)")
             return None
+        if name == "CYCLE840":
+            why = floating_problem(levels, ctx, block)
+            if why is not None:
+                keep_verbatim(block, f"{name} {why}")
+                return None
         if levels.pitch is not None and not same_speed(levels.speed, state.spindle_rpm):
             keep_verbatim(block, f"{name} with SST {levels.speed:g} other than the S in force "
                                  f"({'none' if state.spindle_rpm is None else f'{state.spindle_rpm:g}'}: SINUMERIK "
@@ -316,6 +323,11 @@ class SiemensCycleRules:
         if "Z" in values:
             raise ProgramError("Z under MCALL: SINUMERIK moves Z before the cycle, Fanuc's Z is the cycle's depth "
                                "(not read)", ctx.at(block, ctx.column_of(block, "Z")))
+        cycle = ctx.state.cycle
+        if cycle is not None and cycle.kind in ("tap", "tap_left") and any(
+                letter in "Mm" and num.isdigit() and int(num) in (3, 4, 5) for letter, num in block.words):
+            raise ProgramError("a spindle code under MCALL CYCLE84/CYCLE840: the cycle sets the spindle's direction "
+                               "after each thread (SDAC), Fanuc's tap cycle at its end (not read)", ctx.at(block))
         tap = ctx.state.extra.get(TAP_KEY)
         if tap is not None:
             rpm = values.get("S", ctx.state.spindle_rpm)
@@ -325,6 +337,22 @@ class SiemensCycleRules:
                                    "force (not read)", ctx.at(block, ctx.column_of(block, "S")))
             if "F" not in values:
                 tap_feed(block, ctx)
+
+
+def floating_problem(levels: CycleLevels, ctx: Context, block: Block) -> str | None:
+    """Why a ``CYCLE840`` call is not Fanuc's floating tap here (``tapping``), or None."""
+    state = ctx.state
+    if abs(levels.retract - levels.r) > LEVEL_TOLERANCE:
+        return "with RTP other than RFP+SDIS (whether the spindle turns back to SDAC before or after the G0 to RTP " \
+               "is not confirmed here)"
+    if state.feed_mode != "per_min":
+        return "outside G94 (whether its G63 runs in feed per revolution is not confirmed here)"
+    cycle = block.sections.get("CycleCall")
+    direction = "cw" if getattr(cycle, "kind", "tap") == "tap" else "ccw"
+    if state.spindle != direction:
+        return (f"with the spindle {state.spindle or 'unknown'}, not SDAC's {direction} (the first thread is tapped in "
+                "the direction in force)")
+    return None
 
 
 def same_speed(speed: float | None, rpm: Any) -> bool:

@@ -39,6 +39,23 @@ after it], when:
   depth: Fanuc's peck rigid tap returns per a machine parameter);
 * DTB is a whole number of milliseconds (``cycles.cycle_words``).
 
+``CYCLE840`` (tapping with a compensating chuck) [K: PGZ 11.02 p.2-86 (manual.onestart.ai) and 11/2006
+2.1.6]: ``RTP, RFP, SDIS, DP, DPR, DTB``, then ``SDR`` the direction of the way out (0: reversed by the cycle,
+with an encoder only), ``SDAC`` the direction for the next threads of a modal call, "the direction of rotation
+programmed before the first call", ``ENC`` 1 to tap without the encoder (``G63``: the feed in force, the chuck
+taking up the difference), ``MPIT``/``PIT`` a lead from which the cycle computes the feed (SW 6.2 on). Without
+an encoder it moves: G0 to RFP+SDIS; G63 to the depth at the F in force; dwell DTB; G63 back to RFP+SDIS with
+the spindle turning SDR; G0 to RTP; the spindle in SDAC again. That is Fanuc's (floating) ``G84``/``G74`` under
+G99 [K: Fanuc 0i-MF, tapping cycle: feed to Z, dwell P, spindle reversed, feed back to R, the spindle turning
+the tapping direction again], read so only where:
+
+* ``ENC`` is 1 and ``MPIT``/``PIT`` are empty (the F in force; a lead's computed feed, and what F is in force
+  after it, are not confirmed here [?]), ``_PTAB``/``_TECHNO`` empty or 0, ``_AXN`` empty or 3;
+* ``SDAC`` is 3 or 4 and ``SDR`` the other (the way out reversed), and the spindle turns SDAC at the call (the
+  first thread is tapped in the direction in force);
+* RTP is RFP+SDIS (whether the spindle turns back to SDAC before or after the G0 to RTP is not confirmed [?]),
+  G94 is in force (whether G63 runs under G95 is not confirmed [?]) (``cycles.SiemensCycleRules``).
+
 The meaning then is a ``CannedCycle`` of kind ``tap``/``tap_left`` with ``pitch`` PIT (``RigidTap`` in every
 expansion: ``postproc.synchronised_tap``), so LinuxCNC gets ``G33.1`` and the Fanuc family its ``M29`` tap
 cycle, and a target that cannot synchronise the spindle (grbl) refuses it by name.
@@ -86,3 +103,28 @@ def rigid_tap(given: dict[str, float | None]) -> tuple[str, float, float]:
             raise Unconfirmed(f"CYCLE84 with {name} other than 0 (read as one pass to the depth: Fanuc's peck rigid "
                               "tap returns per a machine parameter)")
     return kind, abs(float(pit)), float(sst)
+
+
+def floating_tap(given: dict[str, float | None]) -> str:
+    """The kind (``tap`` or ``tap_left``) of ``CYCLE840`` with parameters ``given``, tapping without the
+    encoder at the F in force; ``Unconfirmed`` names what is not read (the module docstring)."""
+    if given.get("ENC") != 1:
+        raise Unconfirmed("CYCLE840 with ENC other than 1 (with the encoder it taps by G33 at a lead, not confirmed "
+                          "against Fanuc's G84 here)")
+    if given.get("MPIT") is not None or given.get("PIT") is not None:
+        raise Unconfirmed("CYCLE840 with a lead MPIT/PIT (its computed feed, and the F in force after it, are not "
+                          "confirmed here)")
+    for name in ("_PTAB", "_TECHNO"):
+        if given.get(name) not in (None, 0):
+            raise Unconfirmed(f"CYCLE840 with {name} other than 0")
+    if given.get("_AXN") not in (None, 3):
+        raise Unconfirmed("CYCLE840 with _AXN other than 3 (read with the tool along Z)")
+    sdac, sdr = given.get("SDAC"), given.get("SDR")
+    if sdac not in (RIGHT, LEFT) or sdr != (LEFT if sdac == RIGHT else RIGHT):
+        raise Unconfirmed(f"CYCLE840 with SDR {_shown(sdr)} and SDAC {_shown(sdac)} (read with SDAC 3 or 4 and SDR the "
+                          "other: the way out reversed)")
+    return "tap" if sdac == RIGHT else "tap_left"
+
+
+def _shown(value: float | None) -> str:
+    return "empty" if value is None else f"{value:g}"

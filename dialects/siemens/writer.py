@@ -36,13 +36,13 @@ from postproc.compensation.tool_table import ToolTable
 from postproc.errors import PostprocError, UnsupportedError
 from postproc.event_order import after_motion
 from postproc.expr import Expr
-from postproc.ir import Block, CompoundMotion, Dwell, Motion, Section
+from postproc.ir import Block, CompoundMotion, Dwell, Motion, Section, SpindleControl
 from postproc.rs274.codes import CodeTable
 from postproc.rs274.writer import WordWriter
 
 from .codes import CODES
 from .control_writing import JumpTargets, expression, label_name, statement
-from .cycle_writing import TAPS, Call, in_place_moves, moves_in_plane, parameters_writable
+from .cycle_writing import TAPS, Call, floating_tap_moves, in_place_moves, moves_in_plane, parameters_writable
 from .fixed_point import g75_line, reference_problem
 
 _WITH_DWELL = ("Dwell", "Sequence")
@@ -275,6 +275,8 @@ class SiemensWriter(WordWriter):
         if head:
             lines.append(self._part(block, head))
         call = self.call_of(cycle, block)
+        if cycle.kind in TAPS and cycle.pitch is None and self.modal.feed_mode != "per_min":
+            return self._cycle_text(block, self.floating_tap(block, cycle, call, lines, tail))
         if not moves_in_plane(cycle):
             if self.call is not None:
                 lines.append("MCALL\n")
@@ -309,6 +311,29 @@ class SiemensWriter(WordWriter):
         if tail:
             lines.append(self._part(block, tail))
         return self._cycle_text(block, lines)
+
+    def floating_tap(self, block: Block, cycle: CannedCycle, call: Call, lines: list[str],
+                     tail: dict[str, Section]) -> list[str]:
+        """A floating tap outside G94 as its moves (whether ``CYCLE840``'s G63 runs in feed per revolution is
+        not confirmed: ``tapping``), any active call ended first."""
+        if self.call is not None:
+            lines.append("MCALL\n")
+            self.call = None
+        if moves_in_plane(cycle):
+            axes: dict[str, float | Expr] = {a: float(cycle.words[a]) for a in ("X", "Y") if a in cycle.words}
+            lines.append(self._part(block, {"Motion": Motion("rapid", axes)}))
+        for kind, value in floating_tap_moves(cycle, call):
+            part: dict[str, Section]
+            if kind == "spindle":
+                part = {"SpindleControl": SpindleControl(str(value))}
+            elif kind == "dwell":
+                part = {"Dwell": Dwell(float(value))}
+            else:
+                part = {"Motion": Motion(kind, {"Z": float(value)})}
+            lines.append(self._part(block, part))
+        if tail:
+            lines.append(self._part(block, tail))
+        return lines
 
     def call_of(self, cycle: CannedCycle, block: Block) -> Call:
         """``Call.of``, a rigid tap's with the spindle speed in force (the block's own first: Fanuc's
