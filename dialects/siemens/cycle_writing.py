@@ -12,9 +12,13 @@ Exactly where the meanings match, which is where the reader (``cycles``) reads t
 * G81 ``CYCLE81``; G82 ``CYCLE82`` (DTB the dwell in seconds, whole milliseconds); G83 ``CYCLE83`` with
   ``FDEP`` the first stroke's depth, ``VARI`` 1, no degression and no dwells, ``_DIS1`` the clearance d, where
   the depth is a whole number of pecks (``deep_hole`` says why); G85 ``CYCLE85`` with FFR = RFF = the feed;
-  G89 ``CYCLE89``; G88 ``CYCLE88`` with SDIR 3 (Fanuc restarts the spindle clockwise). Expanded: G73 (chip
-  breaking retracts at the feed on SINUMERIK), G74/G84 (``CYCLE84``/``CYCLE840`` are not read), G86 and G76
-  (``CYCLE86`` orients the spindle and lifts off in three axes), back boring (G87: no SINUMERIK call, the
+  G89 ``CYCLE89``; G88 ``CYCLE88`` with SDIR 3 (Fanuc restarts the spindle clockwise); a rigid G84/G74 (after
+  ``M29 S..``, which is left out) ``CYCLE84`` with SDAC the tap's direction, PIT the pitch signed by the hand,
+  POSS 0, SST = SST1 = the S in force; a floating G84/G74 under G99 with the spindle turning the tap's way
+  ``CYCLE840`` with ENC 1 (G63 at the F in force), SDR the reverse, SDAC the tap's direction; in feed per
+  revolution its moves (``floating_tap_moves``) (``tapping`` reads both back). Expanded: G73 (chip breaking
+  retracts at the feed on SINUMERIK [K: PGZ 2.1.4], Fanuc's G73 at rapid), a floating tap under G98, G86 and G76
+  (``CYCLE86`` orients the spindle and lifts off, and what it leaves the spindle doing is not confirmed), back boring (G87: no SINUMERIK call, the
   Autodesk post expands it too), and a block that repeats (K/L), has no new position in the plane (G88: its
   moves stop the program, so it is not written outside the call either), is not in G17, programs its levels
   incrementally (G91) or computes a word;
@@ -22,7 +26,8 @@ Exactly where the meanings match, which is where the reader (``cycles``) reads t
   end"], so a hole is a position block with X/Y only, in G0 (written before each ``MCALL``), and anything that
   moves otherwise while the call is active (a motion code, an expansion, the cycle cancel, the program end)
   gets the bare ``MCALL`` first. A hole where the tool already stands is written as the cycle's own moves
-  outside the call (``in_place_moves``), the call taken up again at the next hole.
+  outside the call (``in_place_moves``; a tap as its call once, no plain move taps), the call taken up again
+  at the next hole.
 """
 
 from __future__ import annotations

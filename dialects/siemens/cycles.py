@@ -31,8 +31,11 @@ CYCLE840   tap with a compensating chuck: reversal SDR, SDAC after,   tap / tap_
            with or without an encoder (ENC), feed from the pitch       ENC 1, no lead, SDR the reverse of SDAC,
            [K: 2.1.6]                                                  RTP = RFP+SDIS (``tapping``); else kept
                                                                        verbatim
-CYCLE86    oriented stop at POSS, lift-off RPA/RPO/RPAP in three axes  kept verbatim (no neutral kind lifts in
-                                                                       three axes) [K]
+CYCLE86    G1 to the depth, dwell DTB, oriented stop at POSS, G0       kept verbatim: the spindle's state after
+           lift-off RPA/RPO/RPAP, G0 to RFP+SDIS, G0 to RTP back in    it (Fanuc's G76 ends turning clockwise)
+           the plane [K: 2.1.8, as the Autodesk post writes G76]       and, at RTP above RFP+SDIS, the order of
+                                                                       the rise and the way back in the plane
+                                                                       are not confirmed [?]
 =========  ==========================================================  =========================================
 
 "Kept verbatim" is the reader's ``NativeCode`` named by the cycle: a Siemens program with it is copied byte
@@ -59,6 +62,13 @@ its exact moves and no cycle stays active there either. The cycles are subprogra
 [K: the shipped cycles' ``PROC CYCLE8x(..) SAVE`` lines, as the PGZ quotes them [?]]: the motion mode after
 one is the one before it. A one-shot call while a ``MCALL`` is active is kept verbatim (whether the modal
 call then runs too is not confirmed here [?]).
+
+A tap (``CYCLE84``, ``CYCLE840``: ``tapping`` has the facts) is Fanuc's tap cycle; a rigid one carries the
+pitch PIT (``rigid_tap_pitch``) and is expanded for every other dialect, where the rigid-tap lowering writes a
+synchronised move or the target's own rigid tap cycle. The cycle resolution asks every tap for a feed: a rigid
+tap's block is given PIT x SST for it and loses it again (``tap_feed``), so the F in force stays SINUMERIK's.
+Under a modal tap a hole block with another S than SST, or with a spindle code, is a located error (SINUMERIK
+sets the spindle after each thread itself).
 """
 
 from __future__ import annotations

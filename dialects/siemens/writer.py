@@ -7,12 +7,14 @@ comments and ``%_N_NAME_MPF`` headers.
 * Variables and control flow of another dialect are written where each construct has an exact SINUMERIK
   spelling (``control_writing``: R parameters, ``IF``/``WHILE``/``REPEAT``/``FOR``, ``GOTOF``/``GOTOB`` to
   block numbers and labels), else the program is flattened; a computed word is ``X=<expr>``.
-* Fanuc G81/G82 are ``MCALL CYCLE81``/``CYCLE82`` with the holes as position blocks and a bare ``MCALL`` before
+* Fanuc G81/G82 (and the others ``cycle_writing`` lists) are ``MCALL CYCLE81``/``CYCLE82`` with the holes as position blocks and a bare ``MCALL`` before
   anything else that moves (``cycle_writing``, which says where; every other cycle arrives expanded). The
   return level is in the call's RTP, so G98/G99 write nothing. A cycle read from SINUMERIK arrives here only
   when a program transform changed it (no lowering step expands a cycle back to its own dialect): a call once
   is written once again, the ``MCALL`` definition writes nothing until its first hole, a ``HOLES1``/``HOLES2``
-  block its moves (``cycle_block``).
+  block its moves (``cycle_block``; a hole of a modal ``CYCLE84``, which the reader marks ``expand`` for the
+  other dialects, is a hole, and a pattern of rigid taps is refused: no plain move taps). Fanuc's taps are
+  ``CYCLE84`` (rigid) and ``CYCLE840`` (floating, G99), a floating tap in feed per revolution its moves.
 * A dwell is ``G4 F<seconds>`` alone in its block (only a block number joins it) [K: 840D Fundamentals,
   "G4 must be programmed in a separate block"]; what acts before it goes in a block before.
 * Tool data: ``D<n>`` selects cutting edge n (its length and radius), ``D0`` none: a Fanuc ``G43 H``/``G41 D``
