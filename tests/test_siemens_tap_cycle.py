@@ -280,3 +280,16 @@ def test_the_tapping_example_is_fanucs_rigid_tap_cycles_and_refused_by_grbl() ->
         _translate(text, "grbl", setup=setup)
     assert [str(e).split(": error: ")[0] for e in caught.value.errors] == [f"in.mpf:{n}:1" for n in (13, 14, 15, 20)]
     assert all("rigid (spindle-synchronised) tap" in str(e) for e in caught.value.errors)
+
+
+def test_the_floating_tap_example_is_fanucs_g84_and_the_moves_elsewhere() -> None:
+    path = Path(__file__).resolve().parents[1] / "examples" / "siemens" / "floating_tap.mpf"
+    text = path.read_text(encoding="utf-8")
+    setup = load_setup(str(path.parents[1] / "setups" / "siemens_840d_mill.xml"))
+    out = _translate(text, "fanuc", setup=setup)
+    assert "N80 G99 G84 Z-14. R3. P300 K0\nN90 X35.\nN100 X35. Y35.\nN110 X15. Y35.\nN120 G80\n" in out, out
+    for target in ("fanuc", "linuxcnc", "grbl"):
+        made = out if target == "fanuc" else _translate(text, target, setup=setup)
+        report = verify_lines(io.StringIO(text), io.StringIO(made), file_in="a", file_out="b", source="siemens",
+                              target=target, setup=setup, tolerance=0.0)
+        assert report.ok and report.max_deviation == 0 and report.moves >= 12, report.summary() + "\n" + made
