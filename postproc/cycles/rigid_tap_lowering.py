@@ -193,6 +193,9 @@ def taps_as_cycles(block: Block, ctx: Context, target: type[Dialect], compound: 
     at = ctx.at(block)
     normal = PLANE_AXES[state.plane][2]
     level: float | None = None
+    if not any(isinstance(item, Motion) and normal in item.axes for item in compound.items):
+        known = state.position.get(normal)  # no move along it in the block: the tap starts where the tool stands
+        level = known if isinstance(known, float) else None
     direction = state.spindle
     part: list[Section] = []
     first = True
