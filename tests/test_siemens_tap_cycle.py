@@ -18,6 +18,8 @@ import random
 from pathlib import Path
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from postproc.api import translate
 from postproc.errors import Diagnostics, ErrorList
@@ -293,3 +295,28 @@ def test_the_floating_tap_example_is_fanucs_g84_and_the_moves_elsewhere() -> Non
         report = verify_lines(io.StringIO(text), io.StringIO(made), file_in="a", file_out="b", source="siemens",
                               target=target, setup=setup, tolerance=0.0)
         assert report.ok and report.max_deviation == 0 and report.moves >= 12, report.summary() + "\n" + made
+
+
+_PARAMETER = st.one_of(st.none(), st.sampled_from([0.0, 1.0, 2.0, 3.0, 4.0, 5.0, -1.5, 1.25, 500.0, 20.0, -10.0]))
+
+
+@settings(max_examples=40, deadline=None)
+@given(name=st.sampled_from(["CYCLE84", "CYCLE840"]), params=st.lists(_PARAMETER, min_size=4, max_size=14),
+       modal=st.booleans())
+def test_any_tap_call_is_copied_and_either_translates_exactly_or_is_refused_on_its_line(
+        name: str, params: list[float | None], modal: bool) -> None:
+    """Whatever its parameters: SINUMERIK gets the program back byte for byte (or the located error of a call
+    that cannot run, an empty RTP...); Fanuc gets a translation that verifies at zero deviation, or located errors
+    (never a traceback, never a silent change)."""
+    call = f"{name}({', '.join('' if p is None else f'{p:g}' for p in params)})"
+    text = START + "G1 F450\nG0\n" + (f"MCALL {call}\nX20\nMCALL\n" if modal else f"{call}\n") + "M30\n"
+    try:
+        assert _translate(text, "siemens") == text
+    except ErrorList as err:
+        assert all(str(e).startswith("in.mpf:") for e in err.errors), err.errors
+    try:
+        out = _translate(text, "fanuc")
+    except ErrorList as err:
+        assert all(str(e).startswith("in.mpf:") for e in err.errors), err.errors
+        return
+    _verify(text, out, "siemens", "fanuc")
