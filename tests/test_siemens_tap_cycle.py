@@ -320,3 +320,19 @@ def test_any_tap_call_is_copied_and_either_translates_exactly_or_is_refused_on_i
         assert all(str(e).startswith("in.mpf:") for e in err.errors), err.errors
         return
     _verify(text, out, "siemens", "fanuc")
+
+
+LINUXCNC = "G21 G90 G17 G94\nG0 X10 Y10 Z5\nS400 M3\nG33.1 Z-10 K1.5\nG0 X20\nM4\nG33.1 Z-6 K1\nG0 Z20\nM30\n"
+
+
+def test_linuxcnc_g33_1_is_cycle84_called_once_from_where_the_tool_stands() -> None:
+    """G33.1 taps from the tool's Z 5 to Z and back at K a revolution, the spindle reversed at the bottom and again
+    at the top: CYCLE84 once with RTP = RFP = 5, SDIS 0, SDAC the direction in force (M4: 4, a left-hand thread,
+    PIT -1), SST = SST1 = S 400."""
+    out = _translate(LINUXCNC, "siemens", source="linuxcnc")
+    assert out.splitlines()[3:7] == ["CYCLE84(5., 5., 0, -10., , , 3, , 1.5, 0, 400, 400)", "G0 X20.", "M4",
+                                     "CYCLE84(5., 5., 0, -6., , , 4, , -1., 0, 400, 400)"], out
+    _verify(LINUXCNC, out, "linuxcnc", "siemens")
+    with pytest.raises(ErrorList) as caught:
+        _translate(LINUXCNC.replace("K1.5", "K1.5 I2"), "siemens", source="linuxcnc")
+    assert "in.mpf:4:1: error: a rigid tap with a computed word or a faster way out" in str(caught.value.errors[0])

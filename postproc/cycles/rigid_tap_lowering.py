@@ -79,6 +79,14 @@ def _resolve(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> It
                 continue
             yield from made
             continue
+        if target.RIGID_TAP_CYCLE and isinstance(own, RigidTap) and own.stroke is None and taps == [own]:
+            try:
+                as_cycle_call(block, ctx, own)
+            except PostprocError as err:
+                ctx.diagnostics.error(err)
+                continue
+            yield block
+            continue
         why = _refusal(taps, target)
         if why is not None:
             ctx.diagnostics.error(UnsupportedError(why, ctx.at(block)))
@@ -136,6 +144,41 @@ def as_tap_cycle(block: Block, ctx: Context, target: type[Dialect], tap: RigidTa
     del block.sections["RigidTap"]
     block.changed()
     yield from _tap_cycle(block, ctx, target, tap, (normal, start, bottom), state.spindle, at)
+
+
+def as_cycle_call(block: Block, ctx: Context, tap: RigidTap) -> None:
+    """A synchronised tap as a rigid tap cycle called once at the spot (``Dialect.RIGID_TAP_CYCLE``: SINUMERIK's
+    ``CYCLE84``, whose pitch is a parameter): R at the start, the bottom at the end point, back to R, the
+    spindle's direction in force (a counter-clockwise tap cycle for a counter-clockwise spindle)."""
+    state = ctx.state
+    at = ctx.at(block)
+    normal = PLANE_AXES[state.plane][2]
+    if tap.speedup not in (None, 1.0) or isinstance(tap.pitch, Expr) \
+            or any(isinstance(v, Expr) for v in tap.axes.values()):
+        raise UnsupportedError("a rigid tap with a computed word or a faster way out: no tap cycle is written for it",
+                               at)
+    start = state.position.get(normal)
+    if start is None:
+        raise ProgramError(f"a rigid tap where the tool's {normal} position is unknown: the tap cycle needs its start "
+                           "as the R level (program a move to a known point first)", at)
+    incremental = state.distance == "incremental"
+    for axis, value in tap.axes.items():
+        if axis != normal and (value != 0.0 if incremental else value != state.position.get(axis)):
+            raise UnsupportedError(f"a rigid tap that moves {axis} (an oblique tap): the tap cycle taps along "
+                                   f"{normal} only", at)
+    end = tap.axes.get(normal)
+    if end is None:
+        raise UnsupportedError(f"a rigid tap that does not move {normal}: the tap cycle taps along {normal} only", at)
+    if state.spindle not in ("cw", "ccw"):
+        raise ProgramError("a rigid tap with the spindle stopped cannot be run", at)
+    assert not isinstance(end, Expr) and not isinstance(tap.pitch, Expr)  # (refused above)
+    bottom = float(end) + (start if incremental else 0.0)
+    del block.sections["RigidTap"]
+    block.changed()
+    block.sections["CannedCycle"] = CannedCycle(
+        "tap" if state.spindle == "cw" else "tap_left", call=True, semantics="fanuc", return_level="r",
+        plane=state.plane, initial=start, r=start, bottom=bottom, dwell=tap.dwell, spindle=state.spindle,
+        pitch=float(tap.pitch), words={normal: bottom})
 
 
 def _tap_cycle(block: Block, ctx: Context, target: type[Dialect], tap: RigidTap, levels: tuple[str, float, float],
