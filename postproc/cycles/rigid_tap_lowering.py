@@ -9,7 +9,7 @@ from typing import Iterator
 
 from ..context import Context
 from ..dialect import Dialect
-from ..errors import PostprocError, ProgramError, UnsupportedError
+from ..errors import Location, PostprocError, ProgramError, UnsupportedError
 from ..expr import Expr
 from ..ir import (Block, Comments, CompoundMotion, CycleCancel, DistanceMode, Feed, MachineFunction, Motion,
                   ReturnLevel, Section, SpindleControl, SpindleSpeed)
@@ -182,7 +182,7 @@ def as_cycle_call(block: Block, ctx: Context, tap: RigidTap) -> None:
 
 
 def _tap_cycle(block: Block, ctx: Context, target: type[Dialect], tap: RigidTap, levels: tuple[str, float, float],
-               direction: str | None, at: object) -> Iterator[Block]:
+               direction: str | None, at: Location) -> Iterator[Block]:
     """The code block, ``block`` made the tap cycle at the spot from ``levels`` (the drilling axis, the start as
     R, the bottom) with the spindle turning ``direction``, and the cancel block (``as_tap_cycle``)."""
     state = ctx.state
@@ -190,10 +190,9 @@ def _tap_cycle(block: Block, ctx: Context, target: type[Dialect], tap: RigidTap,
     incremental = state.distance == "incremental"
     rpm, mode = state.spindle_rpm, state.feed_mode
     if direction not in ("cw", "ccw") or not rpm:
-        raise ProgramError("a rigid tap with the spindle stopped or at no speed cannot be run", at)  # type: ignore[arg-type]
+        raise ProgramError("a rigid tap with the spindle stopped or at no speed cannot be run", at)
     if mode not in ("per_min", "per_rev"):
-        raise UnsupportedError(f"a rigid tap in {mode.replace('_', ' ')} feed: no tap cycle feed says its pitch",
-                               at)  # type: ignore[arg-type]
+        raise UnsupportedError(f"a rigid tap in {mode.replace('_', ' ')} feed: no tap cycle feed says its pitch", at)
     pitch = tap.pitch
     assert not isinstance(pitch, Expr)
     code = MachineFunction(target.family(), target.RIGID_TAP_CODE, target.RIGID_TAP_CODE, RIGID_TAP,
@@ -246,8 +245,9 @@ def taps_as_cycles(block: Block, ctx: Context, target: type[Dialect], compound: 
         if not isinstance(item, RigidTap):
             if isinstance(item, SpindleControl):
                 direction = item.direction  # (a left-hand tap cycle turns the spindle counter-clockwise first)
-            if isinstance(item, Motion) and isinstance(item.axes.get(normal), float):
-                level = item.axes[normal]  # type: ignore[assignment]
+            reached = item.axes.get(normal) if isinstance(item, Motion) else None
+            if isinstance(reached, float):
+                level = reached
             part.append(item)
             continue
         end = item.axes.get(normal)
