@@ -15,9 +15,9 @@ Exactly where the meanings match, which is where the reader (``cycles``) reads t
   G89 ``CYCLE89``; G88 ``CYCLE88`` with SDIR 3 (Fanuc restarts the spindle clockwise); a rigid G84/G74 (after
   ``M29 S..``, which is left out) ``CYCLE84`` with SDAC the tap's direction, PIT the pitch signed by the hand,
   POSS 0, SST = SST1 = the S in force; a floating G84/G74 under G99 with the spindle turning the tap's way
-  ``CYCLE840`` with ENC 1 (G63 at the F in force), SDR the reverse, SDAC the tap's direction; in feed per
-  revolution its moves (``floating_tap_moves``) (``tapping`` reads both back). Expanded: G73 (chip breaking
-  retracts at the feed on SINUMERIK [K: PGZ 2.1.4], Fanuc's G73 at rapid), a floating tap under G98, G86 and G76
+  ``CYCLE840`` with ENC 1 (G63 at the F in force), SDR the reverse, SDAC the tap's direction, any other
+  floating tap (G98, feed per revolution) its moves (``floating_call``) (``tapping`` reads both back).
+  Expanded: G73 (chip breaking retracts at the feed on SINUMERIK [K: PGZ 2.1.4], Fanuc's G73 at rapid), G86 and G76
   (``CYCLE86`` orients the spindle and lifts off, and what it leaves the spindle doing is not confirmed), back boring (G87: no SINUMERIK call, the
   Autodesk post expands it too), and a block that repeats (K/L), has no new position in the plane (G88: its
   moves stop the program, so it is not written outside the call either), is not in G17, programs its levels
@@ -44,7 +44,7 @@ SAME = 1e-9
 """Levels closer than this (program units) are the same level."""
 TAPS = frozenset(("tap", "tap_left"))
 """The kinds written as ``CYCLE84`` (a rigid tap: a record with its ``pitch``) or ``CYCLE840`` (a floating tap,
-under G99 only, with the spindle turning the tap's direction at the call)."""
+``floating_call``; another is written as its moves)."""
 BORING = frozenset(("bore_feed", "bore_dwell_feed"))
 """The kinds written with their feed in and out (``CYCLE85``'s FFR and RFF, ``CYCLE89``'s F in force)."""
 
@@ -78,10 +78,19 @@ def in_place_moves(cycle: CannedCycle, call: "Call") -> list[tuple[str, float]]:
     return moves + [("rapid", call.rtp)]
 
 
+def floating_call(cycle: CannedCycle, feed_mode: str) -> bool:
+    """Whether a floating tap is ``CYCLE840``'s (``tapping`` reads it back so): under G99 (whether the spindle
+    turns back before or after the G0 to RTP is not confirmed [?]), in G94, the spindle turning the tap's
+    direction at the call; else the writer writes its moves (``floating_tap_moves``)."""
+    return cycle.return_level == "r" and feed_mode == "per_min" \
+        and cycle.spindle == ("cw" if cycle.kind == "tap" else "ccw")
+
+
 def floating_tap_moves(cycle: CannedCycle, call: "Call") -> list[tuple[str, float | str]]:
-    """The moves of Fanuc's (floating) G84/G74 under G99 at its hole, for a tap that no ``CYCLE840`` writes (feed
-    per revolution: ``tapping``) [K: Fanuc 0i-MF, "Tapping cycle (G84)": rapid to R, feed to Z, dwell P, spindle
-    reversed, feed back to R, the tapping direction again]; ``("spindle", direction)`` for a spindle code."""
+    """The moves of Fanuc's (floating) G84/G74 at its hole, for a tap that no ``CYCLE840`` writes
+    (``floating_call``) [K: Fanuc 0i-MF, "Tapping cycle (G84)": rapid to R, feed to Z, dwell P, spindle reversed,
+    feed back to R, G98 rapid to the initial level, the tapping direction again]; ``("spindle", direction)`` for
+    a spindle code."""
     work, back = ("ccw", "cw") if cycle.kind == "tap_left" else ("cw", "ccw")
     moves: list[tuple[str, float | str]] = [("rapid", call.rfp), ("linear", call.dp)]
     if call.dtb:
@@ -140,9 +149,8 @@ def parameters_writable(cycle: CannedCycle) -> bool:
         return False
     if cycle.kind == "peck_deep" and not whole_strokes(cycle):
         return False
-    if cycle.kind in TAPS and (cycle.pitch is not None and cycle.pitch <= 0 or cycle.pitch is None and (
-            cycle.return_level != "r" or cycle.spindle != ("cw" if cycle.kind == "tap" else "ccw"))):
-        return False  # a floating tap's spindle turns back before or after the G0 to RTP [?]: G99 only
+    if cycle.kind in TAPS and cycle.pitch is not None and cycle.pitch <= 0:
+        return False
     return not (cycle.kind in BORING and (cycle.feed is None or cycle.feed <= 0))
 
 

@@ -44,7 +44,7 @@ from postproc.rs274.writer import WordWriter
 
 from .codes import CODES
 from .control_writing import JumpTargets, expression, label_name, statement
-from .cycle_writing import TAPS, Call, floating_tap_moves, in_place_moves, moves_in_plane, parameters_writable
+from .cycle_writing import TAPS, Call, floating_call, floating_tap_moves, in_place_moves, moves_in_plane, parameters_writable
 from .fixed_point import g75_line, reference_problem
 
 _WITH_DWELL = ("Dwell", "Sequence")
@@ -277,7 +277,7 @@ class SiemensWriter(WordWriter):
         if head:
             lines.append(self._part(block, head))
         call = self.call_of(cycle, block)
-        if cycle.kind in TAPS and cycle.pitch is None and self.modal.feed_mode != "per_min":
+        if cycle.kind in TAPS and cycle.pitch is None and not floating_call(cycle, self.modal.feed_mode):
             return self._cycle_text(block, self.floating_tap(block, cycle, call, lines, tail))
         if not moves_in_plane(cycle):
             if self.call is not None:
@@ -316,11 +316,11 @@ class SiemensWriter(WordWriter):
 
     def floating_tap(self, block: Block, cycle: CannedCycle, call: Call, lines: list[str],
                      tail: dict[str, Section]) -> list[str]:
-        """A floating tap outside G94 as its moves (whether ``CYCLE840``'s G63 runs in feed per revolution is
-        not confirmed: ``tapping``), any active call ended first."""
+        """A floating tap no ``CYCLE840`` writes (``floating_call``) as its moves, any active call ended first."""
         if self.call is not None:
             lines.append("MCALL\n")
             self.call = None
+        lines.append(self.comment_line(f"{cycle.kind} from line {block.line}: {self.source_text(block)}"))
         if moves_in_plane(cycle):
             axes: dict[str, float | Expr] = {a: float(cycle.words[a]) for a in ("X", "Y") if a in cycle.words}
             lines.append(self._part(block, {"Motion": Motion("rapid", axes)}))
@@ -341,7 +341,7 @@ class SiemensWriter(WordWriter):
         """``Call.of``, a rigid tap's with the spindle speed in force (the block's own first: Fanuc's
         ``M29 S..`` may share it), which SINUMERIK's ``CYCLE84`` is given as SST."""
         rpm = None
-        if cycle.kind in TAPS:
+        if cycle.kind in TAPS and cycle.pitch is not None:
             speed = block.sections.get("SpindleSpeed")
             rpm = getattr(speed, "rpm", None) if speed is not None else self.modal.spindle_rpm
             if not isinstance(rpm, (int, float)) or rpm <= 0:
