@@ -136,6 +136,10 @@ class Dialect:
     """The controller programs a rigid tap as two synchronised strokes, in and out with the spindle reversed
     (ISG's ``G331``/``G332``): a synchronised tap of another family is written as the two strokes
     (``postproc.cycles.rigid_tap_lowering``), and only such a controller writes a lone stroke."""
+    RIGID_TAP_CYCLE: ClassVar[bool] = False
+    """The controller's tap cycle is rigid by itself, its pitch a parameter (SINUMERIK ``CYCLE84``): another
+    family's rigid-tapping code is left out (``postproc.cycles.rigid_tap_lowering``), the tap cycles after it
+    written as that cycle or refused."""
     RIGID_TAP_CODE: ClassVar[str] = ""
     """The machine code that makes the tap cycles after it rigid (Fanuc ``M29 S..``): a synchronised tap of
     another family is written as that code and a tap cycle (``postproc.synchronised_tap``); '' for none."""

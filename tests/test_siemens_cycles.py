@@ -169,8 +169,8 @@ def test_mcall_cycles_translate_exactly(target: str) -> None:
 
 @pytest.mark.parametrize("line, name", [
     ("CYCLE83(10, 0, 0, -20, , -5, , 2, 0, 0, 1, 1, , , , , 0.5)", "CYCLE83 with DAM"),
-    ("CYCLE84(10, 0, 2, -20, , 0, 3, , 1.25, 0, 400, 400)", "CYCLE84 (a rigid tap"),
-    ("CYCLE840(10, 0, 2, -20, , 0, 0, 3, 1, , 1.25)", "CYCLE840 (its reversal SDR"),
+    ("CYCLE84(10, 0, 2, -20, , 0, 3, , 1.25, 0, 400, 400)", "CYCLE84 with SST 400 other than the S in force"),
+    ("CYCLE840(10, 0, 2, -20, , 0, 0, 3, 1, , 1.25)", "CYCLE840 with a lead MPIT/PIT"),
     ("CYCLE86(10, 0, 2, -20, , 0, 3, 0.1, 0, 0, 0)", "CYCLE86 (its lift-off RPA/RPO/RPAP"),
     ("MCALL CYCLE83(10, 0, 2, -20, , -5, , 0, 0, 0, 1, 1, , , , , 0.5)", "MCALL CYCLE83 with SDIS other than 0"),
     ("CYCLE87(20, 0, 2, -8, , 4)", "CYCLE87 with SDIR 4"),

@@ -44,6 +44,13 @@ READ_TABLE = [
     ("G1 F100\nG0\nMCALL CYCLE81(0, 0, 0, -5)\nX5\nMCALL", "G01 F100.|G00|G99 G81 Z-5. R0. K0|X5.|G80", None),
     ("G1 F100\nG0\nMCALL CYCLE83(0, 0, 0, -8, , -4, , 0, 0, 0, 1, 1, , , , , 0.5)\nX5\nMCALL",
      "G01 F100.|G00|G99 G83 Z-8. R0. Q4. K0|X5.|G80", None),
+    # a floating tap (CYCLE840, ENC 1) is G84 under G99; a rigid one (CYCLE84) Fanuc's M29 and G84 at each hole,
+    # LinuxCNC's G33.1 (the pitch K 1.5)
+    ("S500 M3\nG1 F100\nG0\nMCALL CYCLE840(0, 0, 0, -5, , , 4, 3, 1)\nX5\nMCALL",
+     "S500 M03|G01 F100.|G00|G99 G84 Z-5. R0. K0|X5.|G80", None),
+    ("S500 M3\nG0\nCYCLE84(0, 0, 0, -5, , , 3, , 1.5, 0, 500, 500)",
+     "S500 M03|G00|G99|S500 M29|G99 G84 Z-5. R0. F750.|G80|G00",
+     "S500 M3|G0|G99|(tap from line 4: R0.0 Z-5.0)|G33.1 Z-5. K1.5|G0"),
 ]
 """LinuxCNC None: the cycle is not compared by its text (checked by ``verify``)."""
 
@@ -72,7 +79,7 @@ def test_a_siemens_construct_gets_each_targets_spelling_and_verifies(siemens: st
     ("G599", "cannot express work offset 99"),
     ("G1 X=IC(2) F10", "X=IC(..) (a per-address distance mode"),
     ("G58 X5", "G58 (axial programmable offset)"),
-    ("CYCLE84(10, 0, 2, -20, , 0, 3, , 1.25, 0, 400, 400)", "CYCLE84 (a rigid tap"),
+    ("CYCLE84(10, 0, 2, -20, , 0, 3, , 1.25, 0, 400, 400)", "CYCLE84 with SST 400 other than the S in force"),
     ("G0 X1 TURN=2", "TURN= counts the full circles of a helix"),
 ])
 def test_a_siemens_construct_without_a_spelling_is_refused_by_name(siemens: str, refusal: str) -> None:

@@ -51,13 +51,19 @@ class Siemens(Dialect):
     WRITER = Lazy[type[Writer]](".writer:SiemensWriter")
     PIPELINE_FILE = "siemens.xml"
     CYCLE_WORDS = CycleWords(names={"drill": "CYCLE81", "drill_dwell": "CYCLE82", "peck_deep": "CYCLE83",
-                                    "bore_feed": "CYCLE85", "bore_manual": "CYCLE88", "bore_dwell_feed": "CYCLE89"},
+                                    "bore_feed": "CYCLE85", "bore_manual": "CYCLE88", "bore_dwell_feed": "CYCLE89",
+                                    "tap": "CYCLE84", "tap_left": "CYCLE84"},
                              return_to_r="RTP=RFP+SDIS", level="R", peck="Q", shift="Q", dwell="P", repeat=("K",))
     """``CYCLE81``/``82``/``83``/``85``/``87``/``88``/``89`` are read as the Fanuc-family words of their meaning
-    (``cycles``: R level, Z depth, Q stroke, P dwell in ms, K0 for the modal call that drills nothing)."""
-    NATIVE_CYCLES = frozenset({"drill", "drill_dwell", "peck_deep", "bore_feed", "bore_dwell_feed", "bore_manual"})
-    """Fanuc G81/G82/G83/G85/G89/G88 are written as ``MCALL CYCLE81``/``82``/``83``/``85``/``89``/``88`` where
-    they move the same (``moves_like``, ``cycle_writing``); every other cycle is expanded for SINUMERIK."""
+    (``cycles``: R level, Z depth, Q stroke, P dwell in ms, K0 for the modal call that drills nothing);
+    ``CYCLE84`` as a rigid ``G84``/``G74`` with its pitch (``tapping``)."""
+    NATIVE_CYCLES = frozenset({"drill", "drill_dwell", "peck_deep", "bore_feed", "bore_dwell_feed", "bore_manual",
+                               "tap", "tap_left"})
+    """Fanuc G81/G82/G83/G85/G89/G88 are written as ``MCALL CYCLE81``/``82``/``83``/``85``/``89``/``88``, a rigid
+    G84/G74 (after ``M29 S..``) as ``MCALL CYCLE84``, where they move the same (``moves_like``,
+    ``cycle_writing``); every other cycle (a floating tap among them) is expanded for SINUMERIK."""
+    RIGID_TAP_CYCLE = True
+    """``CYCLE84`` is rigid by itself: Fanuc's ``M29`` before a tap cycle is left out (``cycle_writing``)."""
     CYCLE_SEMANTICS = "fanuc"
     """The cycles read move by Fanuc's rules (the reading pipeline's ``CannedCycleResolveSyntax("fanuc")``)."""
 

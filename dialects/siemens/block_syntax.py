@@ -28,7 +28,7 @@ from .arcs import CIP_KEY, SiemensArc, SiemensCip, arc_words, cip_words
 from .codes import CODES, GEOMETRY_UNITS
 from .fixed_point import SiemensFixedPoint
 from .fixed_point import resolve as resolve_fixed_point
-from .cycles import DIS1_KEY, MCALL_KEY, CycleLevels, SiemensCycleRules, keep_verbatim
+from .cycles import DIS1_KEY, MCALL_KEY, TAP_KEY, CycleLevels, SiemensCycleRules, keep_verbatim
 from .helix import SiemensTurn
 from .holes import SiemensHoles
 from .holes import resolve as resolve_holes
@@ -87,6 +87,7 @@ class SiemensBlockSyntax(WordBlockSyntax):
         elif "CycleCancel" in block.sections:
             ctx.state.extra.pop(MCALL_KEY, None)
             ctx.state.extra.pop(DIS1_KEY, None)
+            ctx.state.extra.pop(TAP_KEY, None)
         super().build(block, ctx)
         if isinstance(turn, SiemensTurn) and start is not None:
             helix.after(block, ctx, turn, start)

@@ -23,12 +23,19 @@ CYCLE83    deep hole: first depth FDEP/FDPR, degression DAM, dwells    peck_deep
            DTB/DTS, first-pass factor FRF, VARI 0 chip breaking / 1    DAM 0, no dwells, FRF 1, SDIS 0, a whole
            swarf removal, anticipation distance _DIS1 [K: 2.1.4]       number of strokes, d = _DIS1 (``deep_hole``);
                                                                        else kept verbatim
-CYCLE84    rigid tap at SST (SST1 out) with pitch MPIT/PIT, spindle    kept verbatim [?]
-           oriented to POSS, direction SDAC after it
-CYCLE840   tap with a compensating chuck: reversal SDR, SDAC after,   kept verbatim [?]
-           with or without an encoder (ENC), feed from the pitch
-CYCLE86    oriented stop at POSS, lift-off RPA/RPO/RPAP in three axes  kept verbatim (no neutral kind lifts in
-                                                                       three axes) [K]
+CYCLE84    rigid tap at SST (SST1 out) with pitch MPIT/PIT, spindle    tap / tap_left (rigid G84 / G74, the pitch
+           oriented to POSS, direction SDAC after it [K: 2.1.5]       PIT) with SDAC the tap's own direction, SST
+                                                                       the S in force, POSS 0 (``tapping``); else
+                                                                       kept verbatim
+CYCLE840   tap with a compensating chuck: reversal SDR, SDAC after,   tap / tap_left (G84 / G74 under G99) with
+           with or without an encoder (ENC), feed from the pitch       ENC 1, no lead, SDR the reverse of SDAC,
+           [K: 2.1.6]                                                  RTP = RFP+SDIS (``tapping``); else kept
+                                                                       verbatim
+CYCLE86    G1 to the depth, dwell DTB, oriented stop at POSS, G0       kept verbatim: the spindle's state after
+           lift-off RPA/RPO/RPAP, G0 to RFP+SDIS, G0 to RTP back in    it (Fanuc's G76 ends turning clockwise)
+           the plane [K: 2.1.8, as the Autodesk post writes G76]       and, at RTP above RFP+SDIS, the order of
+                                                                       the rise and the way back in the plane
+                                                                       are not confirmed [?]
 =========  ==========================================================  =========================================
 
 "Kept verbatim" is the reader's ``NativeCode`` named by the cycle: a Siemens program with it is copied byte
@@ -55,6 +62,13 @@ its exact moves and no cycle stays active there either. The cycles are subprogra
 [K: the shipped cycles' ``PROC CYCLE8x(..) SAVE`` lines, as the PGZ quotes them [?]]: the motion mode after
 one is the one before it. A one-shot call while a ``MCALL`` is active is kept verbatim (whether the modal
 call then runs too is not confirmed here [?]).
+
+A tap (``CYCLE84``, ``CYCLE840``: ``tapping`` has the facts) is Fanuc's tap cycle; a rigid one carries the
+pitch PIT (``rigid_tap_pitch``) and is expanded for every other dialect, where the rigid-tap lowering writes a
+synchronised move or the target's own rigid tap cycle. The cycle resolution asks every tap for a feed: a rigid
+tap's block is given PIT x SST for it and loses it again (``tap_feed``), so the F in force stays SINUMERIK's.
+Under a modal tap a hole block with another S than SST, or with a spindle code, is a located error (SINUMERIK
+sets the spindle after each thread itself).
 """
 
 from __future__ import annotations
@@ -66,12 +80,13 @@ from postproc.cycles.resolve import ACTIVE_KEY, STATE_KEY, peck_clearance_mm
 from postproc.cycles.rigid_tap import end_rigid_mode
 from postproc.cycles.section import CannedCycle
 from postproc.errors import ProgramError
-from postproc.ir import NativeCode, Section
+from postproc.ir import Feed, NativeCode, Section
 from postproc.state import MM_PER_INCH
 from postproc.syntax import Syntax
 from postproc.xmlio import XAttr
 
 from .deep_hole import Unconfirmed, deep_hole
+from .tapping import floating_tap, rigid_tap
 
 if TYPE_CHECKING:
     from postproc.context import Context
@@ -90,6 +105,11 @@ MCALL_KEY = "siemens_mcall"
 DIS1_KEY = "siemens_dis1"
 """``ctx.state.extra`` key: a deep hole's anticipation distance ``_DIS1`` while its call is active, and whether
 it differs from the set-up's G83 clearance (``SiemensCycleEnd`` gives it to each hole)."""
+TAP_KEY = "siemens_rigid_tap"
+"""``ctx.state.extra`` key: a ``CYCLE84`` call's (pitch, tapping speed SST) while it is active, and
+``TAP_FEED_KEY`` the ``id`` of the block given the tap's feed for the cycle resolution (``SiemensCycleEnd``
+takes it out again: the F in force stays SINUMERIK's)."""
+TAP_FEED_KEY = "siemens_rigid_tap_feed"
 ONCE_KEY = "siemens_cycle_once"
 """``ctx.state.extra`` key: (the ``id`` of the block calling a cycle once, its RTP), from the block syntax to
 ``SiemensCycleEnd``."""
@@ -114,12 +134,8 @@ CYCLES: dict[str, CycleSpec] = {
     "CYCLE89": CycleSpec((*COMMON, "DTB"), "bore_dwell_feed"),
     "CYCLE83": CycleSpec(DEEP_HOLE, "peck_deep"),
     "CYCLE84": CycleSpec((*COMMON, "DTB", "SDAC", "MPIT", "PIT", "POSS", "SST", "SST1", "_AXN", "_PTAB", "_TECHNO",
-                          "_VARI", "_DAM", "_VRT"),
-                         verbatim="a rigid tap at its own speeds SST/SST1 with an oriented start POSS is not "
-                                  "confirmed against Fanuc's rigid G84 here"),
-    "CYCLE840": CycleSpec((*COMMON, "DTB", "SDR", "SDAC", "ENC", "MPIT", "PIT", "_AXN", "_PTAB", "_TECHNO"),
-                          verbatim="its reversal SDR, direction SDAC and feed from the pitch with or without an "
-                                   "encoder (ENC) are not confirmed against Fanuc's G84 here"),
+                          "_VARI", "_DAM", "_VRT"), "tap"),
+    "CYCLE840": CycleSpec((*COMMON, "DTB", "SDR", "SDAC", "ENC", "MPIT", "PIT", "_AXN", "_PTAB", "_TECHNO"), "tap"),
     "CYCLE86": CycleSpec((*COMMON, "DTB", "SDIR", "RPA", "RPO", "RPAP", "POSS"),
                          verbatim="its lift-off RPA/RPO/RPAP in three axes has no neutral cycle"),
 }
@@ -135,28 +151,35 @@ class NotModelled(Exception):
 class CycleLevels(Section):
     """What the block syntax still has to check of a cycle call against the modal state: the levels (the
     return level is the one RTP is), whether the call is once, and the feed it works at (None: the F in
-    force) and a deep hole's anticipation distance (``_DIS1``, which must be the set-up's G83 clearance). It
-    leaves the block there."""
+    force) and a deep hole's anticipation distance (``_DIS1``, which must be the set-up's G83 clearance), a
+    rigid tap's pitch and tapping speed (``CYCLE84``'s PIT and SST, which must be the S in force). It leaves
+    the block there."""
 
     XNAME = KEY = "SiemensCycleLevels"
-    __slots__ = ("retract", "r", "once", "feed", "name", "clearance")
+    __slots__ = ("retract", "r", "once", "feed", "name", "clearance", "pitch", "speed")
     XATTRS = (XAttr("retract", float), XAttr("r", float), XAttr("once", bool, False), XAttr("feed", float, None),
-              XAttr("name", str, "CYCLE81"), XAttr("clearance", float, None))
+              XAttr("name", str, "CYCLE81"), XAttr("clearance", float, None), XAttr("pitch", float, None),
+              XAttr("speed", float, None))
     retract: float
     r: float
     once: bool
     feed: float | None
     name: str
     clearance: float | None
+    pitch: float | None
+    speed: float | None
 
     def __init__(self, retract: float, r: float, once: bool = False, feed: float | None = None,
-                 name: str = "CYCLE81", clearance: float | None = None) -> None:
+                 name: str = "CYCLE81", clearance: float | None = None, pitch: float | None = None,
+                 speed: float | None = None) -> None:
         self.retract = retract
         self.r = r
         self.once = once
         self.feed = feed
         self.name = name
         self.clearance = clearance
+        self.pitch = pitch
+        self.speed = speed
 
 
 def cycle_words(name: str, params: list[float | None], once: bool = False
@@ -198,7 +221,14 @@ def cycle_words(name: str, params: list[float | None], once: bool = False
             raise NotModelled(f"{name} with SDIR {'empty' if sdir is None else f'{sdir:g}'} (read with SDIR=3: "
                               "Fanuc's G88 restarts the spindle clockwise)")
     words = [("R", _spell(rfp + sdis)), ("Z", _spell(bottom))]
-    clearance = None
+    clearance = pitch = speed = None
+    try:
+        if name == "CYCLE84":
+            kind, pitch, speed = rigid_tap(given)
+        elif name == "CYCLE840":
+            kind = floating_tap(given)
+    except Unconfirmed as err:
+        raise NotModelled(err.what) from None
     if name == "CYCLE83":
         try:
             stroke, clearance = deep_hole(given, rfp + sdis, bottom)
@@ -216,7 +246,7 @@ def cycle_words(name: str, params: list[float | None], once: bool = False
             words.append(("P", str(int(round(ms)))))
     if not once:
         words.append(("K", "0"))
-    return kind, words, CycleLevels(rtp, rfp + sdis, once, feed, name, clearance)
+    return kind, words, CycleLevels(rtp, rfp + sdis, once, feed, name, clearance, pitch, speed)
 
 
 def _spell(value: float) -> str:
@@ -258,6 +288,21 @@ class SiemensCycleRules:
             keep_verbatim(block, f"{name} with FFR {levels.feed:g} other than the F in force (Fanuc's G85/G89 "
                                  "feed at it)")
             return None
+        if name == "CYCLE840":
+            why = floating_problem(levels, ctx, block)
+            if why is not None:
+                keep_verbatim(block, f"{name} {why}")
+                return None
+        if levels.pitch is not None and not same_speed(levels.speed, state.spindle_rpm):
+            keep_verbatim(block, f"{name} with SST {levels.speed:g} other than the S in force "
+                                 f"({'none' if state.spindle_rpm is None else f'{state.spindle_rpm:g}'}: SINUMERIK "
+                                 "restores it after the tap, Fanuc's rigid tap runs at it)")
+            return None
+        if levels.pitch is not None:
+            state.extra[TAP_KEY] = (levels.pitch, levels.speed)
+            tap_feed(block, ctx)
+        else:
+            state.extra.pop(TAP_KEY, None)
         if levels.clearance is not None:
             d = peck_clearance_mm("peck_deep", ctx.peck_clearance_mm, ctx.setup.cycles)
             d = d if state.units == "mm" else d / MM_PER_INCH
@@ -288,6 +333,49 @@ class SiemensCycleRules:
         if "Z" in values:
             raise ProgramError("Z under MCALL: SINUMERIK moves Z before the cycle, Fanuc's Z is the cycle's depth "
                                "(not read)", ctx.at(block, ctx.column_of(block, "Z")))
+        cycle = ctx.state.cycle
+        if cycle is not None and cycle.kind in ("tap", "tap_left") and any(
+                letter in "Mm" and num.isdigit() and int(num) in (3, 4, 5) for letter, num in block.words):
+            raise ProgramError("a spindle code under MCALL CYCLE84/CYCLE840: the cycle sets the spindle's direction "
+                               "after each thread (SDAC), Fanuc's tap cycle at its end (not read)", ctx.at(block))
+        tap = ctx.state.extra.get(TAP_KEY)
+        if tap is not None:
+            rpm = values.get("S", ctx.state.spindle_rpm)
+            if not same_speed(tap[1], rpm):
+                raise ProgramError(f"S {rpm} under MCALL CYCLE84 with SST {tap[1]:g}: SINUMERIK taps at SST and "
+                                   "restores the S in force after each hole, Fanuc's rigid tap runs at the S in "
+                                   "force (not read)", ctx.at(block, ctx.column_of(block, "S")))
+            if "F" not in values:
+                tap_feed(block, ctx)
+
+
+def floating_problem(levels: CycleLevels, ctx: Context, block: Block) -> str | None:
+    """Why a ``CYCLE840`` call is not Fanuc's floating tap here (``tapping``), or None."""
+    state = ctx.state
+    if abs(levels.retract - levels.r) > LEVEL_TOLERANCE:
+        return "with RTP other than RFP+SDIS (whether the spindle turns back to SDAC before or after the G0 to RTP " \
+               "is not confirmed here)"
+    if state.feed_mode != "per_min":
+        return "outside G94 (whether its G63 runs in feed per revolution is not confirmed here)"
+    cycle = block.sections.get("CycleCall")
+    direction = "cw" if getattr(cycle, "kind", "tap") == "tap" else "ccw"
+    if state.spindle != direction:
+        return (f"with the spindle {state.spindle or 'unknown'}, not SDAC's {direction} (the first thread is tapped in "
+                "the direction in force)")
+    return None
+
+
+def same_speed(speed: float | None, rpm: Any) -> bool:
+    """Whether a tap's SST is the spindle speed ``rpm`` (None: not known)."""
+    return speed is not None and isinstance(rpm, (int, float)) and abs(speed - float(rpm)) <= 1e-9
+
+
+def tap_feed(block: Block, ctx: Context) -> None:
+    """Give a ``CYCLE84`` block the tap's feed (pitch times SST), which the cycle resolution asks of every
+    tap cycle; ``SiemensCycleEnd`` takes it out again."""
+    pitch, speed = ctx.state.extra[TAP_KEY]
+    block.add(Feed(pitch * speed))
+    ctx.state.extra[TAP_FEED_KEY] = id(block)
 
 
 class SiemensCycleEnd(Syntax):
@@ -301,9 +389,12 @@ class SiemensCycleEnd(Syntax):
         extra = ctx.state.extra
         if DIS1_KEY in extra:
             deep_hole_clearance(block, ctx)
+        if TAP_KEY in extra:
+            rigid_tap_pitch(block, ctx)
         if ONCE_KEY not in extra:
             return
         extra.pop(DIS1_KEY, None)
+        extra.pop(TAP_KEY, None)
         called, retract = extra.pop(ONCE_KEY)
         if called != id(block):
             return  # the call's own block was refused before it came here
@@ -330,3 +421,19 @@ def deep_hole_clearance(block: Block, ctx: Context) -> None:
         if isinstance(cycle, CannedCycle) and cycle.kind == "peck_deep":
             cycle.clearance = dis1
             cycle.expand = cycle.expand or differs
+
+
+def rigid_tap_pitch(block: Block, ctx: Context) -> None:
+    """Give the block's tap (and the active cycle's record, which hole patterns copy) the call's pitch: a
+    rigid tap (``tapping``); it is expanded for every other dialect (``expand``: the Fanuc family's tap cycle
+    is rigid only after its code, which the rigid-tap lowering writes before each hole). The tap's feed goes
+    from the block again (``tap_feed``)."""
+    extra = ctx.state.extra
+    pitch, _ = extra[TAP_KEY]
+    if extra.pop(TAP_FEED_KEY, None) == id(block):
+        block.sections.pop("Feed", None)
+    active = extra.get(ACTIVE_KEY)
+    for cycle in (block.sections.get("CannedCycle"), active[0] if isinstance(active, tuple) else None):
+        if isinstance(cycle, CannedCycle) and cycle.kind in ("tap", "tap_left"):
+            cycle.pitch = pitch
+            cycle.expand = True

@@ -7,12 +7,15 @@ comments and ``%_N_NAME_MPF`` headers.
 * Variables and control flow of another dialect are written where each construct has an exact SINUMERIK
   spelling (``control_writing``: R parameters, ``IF``/``WHILE``/``REPEAT``/``FOR``, ``GOTOF``/``GOTOB`` to
   block numbers and labels), else the program is flattened; a computed word is ``X=<expr>``.
-* Fanuc G81/G82 are ``MCALL CYCLE81``/``CYCLE82`` with the holes as position blocks and a bare ``MCALL`` before
+* Fanuc G81/G82 (and the others ``cycle_writing`` lists) are ``MCALL CYCLE81``/``CYCLE82`` with the holes as position blocks and a bare ``MCALL`` before
   anything else that moves (``cycle_writing``, which says where; every other cycle arrives expanded). The
   return level is in the call's RTP, so G98/G99 write nothing. A cycle read from SINUMERIK arrives here only
   when a program transform changed it (no lowering step expands a cycle back to its own dialect): a call once
   is written once again, the ``MCALL`` definition as itself where the call can stand there (else nothing until
-  its first hole), a ``HOLES1``/``HOLES2`` block its moves (``cycle_block``).
+  its first hole), a ``HOLES1``/``HOLES2`` block its moves (``cycle_block``; a hole of a modal ``CYCLE84``, which
+  the reader marks ``expand`` for the other dialects, is a hole, and a pattern of rigid taps is refused: no plain
+  move taps). Fanuc's taps are ``CYCLE84`` (rigid) and ``CYCLE840`` (floating, G99), a floating tap in feed per
+  revolution its moves.
 * A dwell is ``G4 F<seconds>`` alone in its block (only a block number joins it) [K: 840D Fundamentals,
   "G4 must be programmed in a separate block"]; what acts before it goes in a block before.
 * Tool data: ``D<n>`` selects cutting edge n (its length and radius), ``D0`` none: a Fanuc ``G43 H``/``G41 D``
@@ -30,18 +33,19 @@ from typing import Any, ClassVar
 from postproc.context import Context
 from postproc.control import ASSIGN, CONTROL, LABEL
 from postproc.cycles.section import CannedCycle
+from postproc.synchronised_tap import RigidTap
 from postproc.dialect import Dialect
 from postproc.compensation.tool_table import ToolTable
 from postproc.errors import PostprocError, UnsupportedError
 from postproc.event_order import after_motion
 from postproc.expr import Expr
-from postproc.ir import Block, CompoundMotion, Dwell, Motion, Section
+from postproc.ir import Block, CompoundMotion, Dwell, Motion, Section, SpindleControl
 from postproc.rs274.codes import CodeTable
 from postproc.rs274.writer import WordWriter
 
 from .codes import CODES
 from .control_writing import JumpTargets, expression, label_name, statement
-from .cycle_writing import Call, in_place_moves, moves_in_plane, parameters_writable
+from .cycle_writing import TAPS, Call, floating_call, floating_tap_moves, in_place_moves, moves_in_plane, parameters_writable
 from .fixed_point import g75_line, reference_problem
 
 NAME_LENGTH = 24
@@ -218,11 +222,14 @@ class SiemensWriter(WordWriter):
         where ``definable`` (else nothing of it: the ``MCALL`` goes before the first hole, ``hole_block``), a
         hole as ``hole_block`` writes it."""
         compound = block.sections.get("CompoundMotion")
-        if cycle.expand:
+        if cycle.expand and not _modal_tap(cycle, compound):
             if cycle.call and cycle.repeat == 1 and not moves_in_plane(cycle) and parameters_writable(cycle):
                 return self.once_block(block, cycle)
             if not isinstance(compound, CompoundMotion):
                 self.unsupported(f"a {cycle.kind.replace('_', ' ')} cycle whose moves are not known here", block)
+            if any(isinstance(item, RigidTap) for item in compound.items):
+                self.unsupported("rigid taps of a hole pattern changed by a program transform: SINUMERIK taps only "
+                                 "in CYCLE84, and a call per hole is not written here", block)
             rest = {k: v for k, v in block.sections.items() if k not in ("CannedCycle", "ReturnLevel")}
             text = "MCALL\n" if self.call is not None else ""
             self.call = None
@@ -271,7 +278,7 @@ class SiemensWriter(WordWriter):
         head = {k: v for k, v in sections.items() if k not in _CYCLE_OWN and not after_motion(k, v)}
         tail = {k: v for k, v in sections.items() if k not in _CYCLE_OWN and k not in head}
         lines = [self._part(block, head)] if head else []
-        call = Call.of(cycle)
+        call = self.call_of(cycle, block)
         text = call.text(lambda value: self.number(value, "Z"), lambda value: self.number(value, "F"), once=True)
         comments = sections.get("Comments")
         if comments is not None:
@@ -294,7 +301,6 @@ class SiemensWriter(WordWriter):
             self.unsupported("a drilling cycle after a control statement or label as a modal call (which call is "
                              "active, and the initial level, depend on the run; the text is written in its order)",
                              block)
-        call = Call.of(cycle)
         head = {k: v for k, v in sections.items() if k not in _CYCLE_OWN and not after_motion(k, v)}
         tail = {k: v for k, v in sections.items() if k not in _CYCLE_OWN and k not in head}
         sequence = sections.get("Sequence")
@@ -303,10 +309,19 @@ class SiemensWriter(WordWriter):
             self.targets.mark(f"N{getattr(sequence, 'number')}")
         if head:
             lines.append(self._part(block, head))
+        call = self.call_of(cycle, block)
+        if cycle.kind in TAPS and cycle.pitch is None and not floating_call(cycle, self.modal.feed_mode):
+            return self._cycle_text(block, self.floating_tap(block, cycle, call, lines, tail))
         if not moves_in_plane(cycle):
             if self.call is not None:
                 lines.append("MCALL\n")
                 self.call = None
+            if cycle.kind in TAPS:  # a rigid tap where the tool stands: the call once (no plain move taps)
+                lines.append(call.text(lambda value: self.number(value, "Z"), lambda value: self.number(value, "F"),
+                                       once=True) + "\n")
+                if tail:
+                    lines.append(self._part(block, tail))
+                return self._cycle_text(block, lines)
             for kind, value in in_place_moves(cycle, call):
                 part: dict[str, Section] = ({"Dwell": Dwell(value)} if kind == "dwell"
                                             else {"Motion": Motion(kind, {"Z": value})})
@@ -331,6 +346,40 @@ class SiemensWriter(WordWriter):
         if tail:
             lines.append(self._part(block, tail))
         return self._cycle_text(block, lines)
+
+    def floating_tap(self, block: Block, cycle: CannedCycle, call: Call, lines: list[str],
+                     tail: dict[str, Section]) -> list[str]:
+        """A floating tap no ``CYCLE840`` writes (``floating_call``) as its moves, any active call ended first."""
+        if self.call is not None:
+            lines.append("MCALL\n")
+            self.call = None
+        lines.append(self.comment_line(f"{cycle.kind} from line {block.line}: {self.source_text(block)}"))
+        if moves_in_plane(cycle):
+            axes: dict[str, float | Expr] = {a: float(cycle.words[a]) for a in ("X", "Y") if a in cycle.words}
+            lines.append(self._part(block, {"Motion": Motion("rapid", axes)}))
+        for kind, value in floating_tap_moves(cycle, call):
+            part: dict[str, Section]
+            if kind == "spindle":
+                part = {"SpindleControl": SpindleControl(str(value))}
+            elif kind == "dwell":
+                part = {"Dwell": Dwell(float(value))}
+            else:
+                part = {"Motion": Motion(kind, {"Z": float(value)})}
+            lines.append(self._part(block, part))
+        if tail:
+            lines.append(self._part(block, tail))
+        return lines
+
+    def call_of(self, cycle: CannedCycle, block: Block) -> Call:
+        """``Call.of``, a rigid tap's with the spindle speed in force (the block's own first: Fanuc's
+        ``M29 S..`` may share it), which SINUMERIK's ``CYCLE84`` is given as SST."""
+        rpm = None
+        if cycle.kind in TAPS and cycle.pitch is not None:
+            speed = block.sections.get("SpindleSpeed")
+            rpm = getattr(speed, "rpm", None) if speed is not None else self.modal.spindle_rpm
+            if not isinstance(rpm, (int, float)) or rpm <= 0:
+                self.unsupported("a rigid tap without a known spindle speed (CYCLE84 takes it as SST)", block)
+        return Call.of(cycle, None if rpm is None else float(rpm))
 
     def _cycle_text(self, block: Block, lines: list[str]) -> str:
         """The lines of a cycle block, its block number on the first, its end of line on the last."""
@@ -447,3 +496,15 @@ def _with(block: Block, sections: dict[str, Section]) -> Block:
 def _ends_program(sections: dict[str, Section]) -> bool:
     control = sections.get("ProgramControl")
     return control is not None and getattr(control, "kind", "") in ("end", "end_rewind")
+
+
+def _modal_tap(cycle: CannedCycle, compound: object) -> bool:
+    """Whether ``cycle`` is the definition or one hole of a ``MCALL CYCLE84`` read from SINUMERIK: the reader
+    marks every rigid tap ``expand`` for the other dialects (``cycles.rigid_tap_pitch``), a hole pattern's
+    taps (several in one block) are its moves."""
+    if cycle.kind not in TAPS or cycle.pitch is None:
+        return False
+    if cycle.repeat == 0:
+        return True
+    items = getattr(compound, "items", ())
+    return not cycle.call and sum(isinstance(item, RigidTap) for item in items) == 1

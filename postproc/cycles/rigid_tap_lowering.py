@@ -9,7 +9,7 @@ from typing import Iterator
 
 from ..context import Context
 from ..dialect import Dialect
-from ..errors import PostprocError, ProgramError, UnsupportedError
+from ..errors import Location, PostprocError, ProgramError, UnsupportedError
 from ..expr import Expr
 from ..ir import (Block, Comments, CompoundMotion, CycleCancel, DistanceMode, Feed, MachineFunction, Motion,
                   ReturnLevel, Section, SpindleControl, SpindleSpeed)
@@ -32,14 +32,17 @@ def _resolve(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> It
     synchronises = target.SYNCHRONISED_TAP
     family = target.family()
     cycle_code = target.RIGID_TAP_CODE
+    own_code = False  # the source writes the target family's rigid-tapping code itself
     for block in blocks:
         sections = block.sections
         if "MachineFunction" not in sections and "RigidTap" not in sections and "CompoundMotion" not in sections:
             yield block  # the common block
             continue
         code = sections.get("MachineFunction")
-        if (synchronises or target.TAP_STROKES) and isinstance(code, MachineFunction) and code.action == RIGID_TAP \
-                and code.family != family:
+        if isinstance(code, MachineFunction) and code.action == RIGID_TAP and code.family == family:
+            own_code = True
+        if (synchronises or target.TAP_STROKES or target.RIGID_TAP_CYCLE) and isinstance(code, MachineFunction) \
+                and code.action == RIGID_TAP and code.family != family:
             _leave_out(block, code)
         taps = rigid_taps(block)
         if not taps:
@@ -66,6 +69,23 @@ def _resolve(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> It
                 yield from as_tap_cycle(block, ctx, target, sections["RigidTap"])  # type: ignore[arg-type]
             except PostprocError as err:
                 ctx.diagnostics.error(err)
+            continue
+        if cycle_code and not synchronises and not own_code and isinstance(compound, CompoundMotion) \
+                and "CannedCycle" not in sections:
+            try:
+                made = list(taps_as_cycles(block, ctx, target, compound))
+            except PostprocError as err:
+                ctx.diagnostics.error(err)
+                continue
+            yield from made
+            continue
+        if target.RIGID_TAP_CYCLE and isinstance(own, RigidTap) and own.stroke is None and taps == [own]:
+            try:
+                as_cycle_call(block, ctx, own)
+            except PostprocError as err:
+                ctx.diagnostics.error(err)
+                continue
+            yield block
             continue
         why = _refusal(taps, target)
         if why is not None:
@@ -121,7 +141,54 @@ def as_tap_cycle(block: Block, ctx: Context, target: type[Dialect], tap: RigidTa
     end = tap.axes[normal]
     assert not isinstance(end, Expr)  # (refused above)
     bottom = float(end) + (start if incremental else 0.0)
-    rpm, direction, mode = state.spindle_rpm, state.spindle, state.feed_mode
+    del block.sections["RigidTap"]
+    block.changed()
+    yield from _tap_cycle(block, ctx, target, tap, (normal, start, bottom), state.spindle, at)
+
+
+def as_cycle_call(block: Block, ctx: Context, tap: RigidTap) -> None:
+    """A synchronised tap as a rigid tap cycle called once at the spot (``Dialect.RIGID_TAP_CYCLE``: SINUMERIK's
+    ``CYCLE84``, whose pitch is a parameter): R at the start, the bottom at the end point, back to R, the
+    spindle's direction in force (a counter-clockwise tap cycle for a counter-clockwise spindle)."""
+    state = ctx.state
+    at = ctx.at(block)
+    normal = PLANE_AXES[state.plane][2]
+    if tap.speedup not in (None, 1.0) or isinstance(tap.pitch, Expr) \
+            or any(isinstance(v, Expr) for v in tap.axes.values()):
+        raise UnsupportedError("a rigid tap with a computed word or a faster way out: no tap cycle is written for it",
+                               at)
+    start = state.position.get(normal)
+    if start is None:
+        raise ProgramError(f"a rigid tap where the tool's {normal} position is unknown: the tap cycle needs its start "
+                           "as the R level (program a move to a known point first)", at)
+    incremental = state.distance == "incremental"
+    for axis, value in tap.axes.items():
+        if axis != normal and (value != 0.0 if incremental else value != state.position.get(axis)):
+            raise UnsupportedError(f"a rigid tap that moves {axis} (an oblique tap): the tap cycle taps along "
+                                   f"{normal} only", at)
+    end = tap.axes.get(normal)
+    if end is None:
+        raise UnsupportedError(f"a rigid tap that does not move {normal}: the tap cycle taps along {normal} only", at)
+    if state.spindle not in ("cw", "ccw"):
+        raise ProgramError("a rigid tap with the spindle stopped cannot be run", at)
+    assert not isinstance(end, Expr) and not isinstance(tap.pitch, Expr)  # (refused above)
+    bottom = float(end) + (start if incremental else 0.0)
+    del block.sections["RigidTap"]
+    block.changed()
+    block.sections["CannedCycle"] = CannedCycle(
+        "tap" if state.spindle == "cw" else "tap_left", call=True, semantics="fanuc", return_level="r",
+        plane=state.plane, initial=start, r=start, bottom=bottom, dwell=tap.dwell, spindle=state.spindle,
+        pitch=float(tap.pitch), words={normal: bottom})
+
+
+def _tap_cycle(block: Block, ctx: Context, target: type[Dialect], tap: RigidTap, levels: tuple[str, float, float],
+               direction: str | None, at: Location) -> Iterator[Block]:
+    """The code block, ``block`` made the tap cycle at the spot from ``levels`` (the drilling axis, the start as
+    R, the bottom) with the spindle turning ``direction``, and the cancel block (``as_tap_cycle``)."""
+    state = ctx.state
+    normal, start, bottom = levels
+    incremental = state.distance == "incremental"
+    rpm, mode = state.spindle_rpm, state.feed_mode
     if direction not in ("cw", "ccw") or not rpm:
         raise ProgramError("a rigid tap with the spindle stopped or at no speed cannot be run", at)
     if mode not in ("per_min", "per_rev"):
@@ -133,8 +200,6 @@ def as_tap_cycle(block: Block, ctx: Context, target: type[Dialect], tap: RigidTa
     head = Block(block.line, None, block.eol or "\n")
     head.sections = {"MachineFunction": code, "SpindleSpeed": SpindleSpeed(float(rpm))}
     yield head
-    del block.sections["RigidTap"]
-    block.changed()
     sections = block.sections
     if incremental:
         sections["DistanceMode"] = DistanceMode("absolute")
@@ -155,6 +220,70 @@ def as_tap_cycle(block: Block, ctx: Context, target: type[Dialect], tap: RigidTa
     if incremental:
         tail.sections["DistanceMode"] = DistanceMode("incremental")
     yield tail
+
+
+def taps_as_cycles(block: Block, ctx: Context, target: type[Dialect], compound: CompoundMotion) -> Iterator[Block]:
+    """An expanded rigid tap cycle of a family whose taps are rigid without a code (SINUMERIK ``CYCLE84``)
+    towards a target that taps rigidly after its code: the moves before each synchronised tap, then the
+    code, the tap cycle at the spot and its cancel (``as_tap_cycle``'s three blocks), then the moves after
+    it; the block's other sections stay with its first part. A tap along anything but the drilling axis
+    alone, or from a level the moves before it do not give, is refused."""
+    if not any(isinstance(item, RigidTap) for item in compound.items):
+        yield block
+        return
+    state = ctx.state
+    at = ctx.at(block)
+    normal = PLANE_AXES[state.plane][2]
+    level: float | None = None
+    if not any(isinstance(item, Motion) and normal in item.axes for item in compound.items):
+        known = state.position.get(normal)  # no move along it in the block: the tap starts where the tool stands
+        level = known if isinstance(known, float) else None
+    direction = state.spindle
+    part: list[Section] = []
+    first = True
+    for item in compound.items:
+        if not isinstance(item, RigidTap):
+            if isinstance(item, SpindleControl):
+                direction = item.direction  # (a left-hand tap cycle turns the spindle counter-clockwise first)
+            reached = item.axes.get(normal) if isinstance(item, Motion) else None
+            if isinstance(reached, float):
+                level = reached
+            part.append(item)
+            continue
+        end = item.axes.get(normal)
+        if item.dwell or item.stroke is not None or isinstance(item.pitch, Expr) or set(item.axes) != {normal} \
+                or not isinstance(end, float) or level is None:
+            raise UnsupportedError(f"a rigid tap with a dwell, or not along {normal} alone from a level the cycle's "
+                                   f"moves give: no {target.NAME} tap cycle is written for it", at)
+        if first:
+            made = _first_part(block, compound.term, part)
+            if made.sections:
+                yield made
+        else:
+            yield from _later_part(block, part)
+        first, part = False, []
+        tap_block = Block(block.line, None, block.eol or "\n")
+        tap_block.sections = {}
+        yield from _tap_cycle(tap_block, ctx, target, item, (normal, level, end), direction, at)
+    yield from _later_part(block, part)
+
+
+def _first_part(block: Block, term: str, items: list[Section]) -> Block:
+    """The block's first part: its own sections and the moves ``items`` before the first tap."""
+    if items:
+        block.sections["CompoundMotion"] = CompoundMotion(term, items)
+    else:
+        del block.sections["CompoundMotion"]
+    block.changed()
+    return block
+
+
+def _later_part(block: Block, items: list[Section]) -> Iterator[Block]:
+    """What an expansion does after a tap, one block an item (the first part's comment names the source)."""
+    for item in items:
+        part = Block(block.line, None, block.eol or "\n")
+        part.sections = {item.KEY: item}
+        yield part
 
 
 def as_strokes(block: Block, ctx: Context, target: type[Dialect], tap: RigidTap) -> Iterator[Block]:

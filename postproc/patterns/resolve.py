@@ -120,7 +120,8 @@ def cycle_at(pattern: HolePattern, cycle: CannedCycle, start: dict[str, float], 
         clearance=cycle.clearance, dwell=cycle.dwell, orient=cycle.orient, feed=cycle.feed, repeat=1,
         spindle=cycle.spindle, motion=cycle.motion, start=dict(start), position={first: a, second: b},
         step={first: words[first], second: words[second]} if pattern.incremental else {},
-        shift=None if cycle.shift is None else dict(cycle.shift), words=words)
+        shift=None if cycle.shift is None else dict(cycle.shift), words=words,
+        pitch=cycle.pitch)  # a rigid tap stays rigid at every point (as ``postproc.fast.holes`` has it)
 
 
 def _move(hop: Hop, pos: dict[str, float], first: str, second: str, normal: str) -> Motion:
