@@ -106,7 +106,7 @@ class _Jumps:
             if highest is None:
                 raise UnsupportedError("jumps numbered by the translation (the program's block numbers are not "
                                        "known here)", self.ctx.at(block))
-            self.next = int(highest) + 1
+            self.next = max(int(highest), 0) + 1  # from N1: N0 is no sequence number to jump to [K]
         number = self.next
         if number > MAX_SEQUENCE:
             raise UnsupportedError(f"a jump target numbered above the program's highest block number: N{number} "
@@ -123,7 +123,10 @@ class _Jumps:
                 raise UnsupportedError(f"the label {name!r} on more than one block (Fanuc's GOTO needs one)",
                                        self.ctx.at(block))
             self.placed.add(name)
-            yield _numbered(block, self.labels.setdefault(name, self.number(block)))
+            number = self.labels.get(name)
+            if number is None:
+                number = self.labels[name] = self.number(block)
+            yield _numbered(block, number)
         control = sections.get(CONTROL)
         before: list[int] = []
         after: list[Block] = []

@@ -9,7 +9,12 @@ docs "O Codes"; ``interp_o_word.cc`` has no goto]. What has the shape of one is 
   ``o1 if [not c]`` .. ``o1 endif`` before the target (``o1 if [0]`` for a jump without condition). Several
   jumps to one target close there, innermost first. A target inside a construct opened after the jump,
   a construct closed or branched (``else``) before the target, or no target after the jump (a jump back)
-  has no such shape: an ``UnsupportedError``, so the program is flattened with the usual warning;
+  has no such shape: an ``UnsupportedError``, so the program is flattened with the usual warning; the
+  blocks between a jump and its target are held until the target decides (at most the program's symbolic
+  part, which is in memory anyway);
+* a forward jump from the body of a ``while`` loop (also a counted one) straight to the block after the
+  loop's end (SINUMERIK ``LOOP`` .. ``IF c GOTOF OUT`` .. ``ENDLOOP`` ``OUT:``): ``o2 if [c]`` ``o1 break``
+  ``o2 endif`` [V: LinuxCNC docs "O Codes", break leaves the innermost loop];
 * ``Until c`` (SINUMERIK ``REPEAT`` .. ``UNTIL``, ISG ``$REPEAT``): ``o1 while [not c]`` after ``o1 do``;
 * an exact equality in a condition: LinuxCNC's ``EQ``/``NE`` count values closer than 1e-4 as equal
   (``postproc.evaluation``), its ``LE``/``GE``/``LT``/``GT`` are exact [V: rs274, same module], so
@@ -25,7 +30,7 @@ from typing import Iterator
 from ..conditions import negated
 from ..context import Context
 from ..control import (
-    CONTROL, Case, Default, Do, DoWhile, Else, ElseIf, EndFor, EndIf, EndRepeat, EndSwitch, EndWhile, For, Goto,
+    CONTROL, Break, Case, Default, Do, DoWhile, Else, ElseIf, EndFor, EndIf, EndRepeat, EndSwitch, EndWhile, For, Goto,
     GotoLabel, If, Repeat, SubEnd, SubStart, Switch, Until, While,
 )
 from ..dialect import Dialect
@@ -42,66 +47,171 @@ _EXACT = {"eq": ("and", "le", "ge"), "ne": ("or", "lt", "gt")}
 
 
 def nest_forward_jumps(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
-    """Forward jumps as ``if`` .. ``endif``, ``Until`` as ``do`` .. ``while``, exact equalities as two
-    comparisons (module docstring); every other block as it is."""
-    open_: list[tuple[str, str, Location]] = []
-    """Open constructs and skipped stretches, innermost last: ("", "", where) for a construct,
-    (target, label, where) for the stretch a forward jump skips."""
-    count = 0
-    pending = 0
+    """Forward jumps as ``if`` .. ``endif`` (or ``break``), ``Until`` as ``do`` .. ``while``, exact equalities
+    as two comparisons (module docstring); every other block as it is."""
+    nest = _Nest(ctx)
     for block in blocks:
+        yield from nest.block(block)
+    yield from nest.end()
+
+
+class _Open:
+    """An open construct (``key`` "") or the stretch a forward jump skips (``key``: its target)."""
+
+    __slots__ = ("key", "label", "at", "loop", "cond", "held")
+
+    def __init__(self, key: str, label: str, at: Location, loop: str | None = None, cond: Expr | None = None) -> None:
+        self.key = key
+        self.label = label
+        """A construct's own label; a jump's fresh one (``jump:n``)."""
+        self.at = at
+        self.loop = loop
+        """A construct: its kind when it is a loop a ``break`` leaves (``while``)."""
+        self.cond = cond
+        """A jump's condition (None: always)."""
+        self.held: list[Block] = []
+        """A jump's stretch: the blocks after it, held until its target decides its shape."""
+
+
+class _Nest:
+    def __init__(self, ctx: Context) -> None:
+        self.ctx = ctx
+        self.open: list[_Open] = []
+        self.count = 0
+        self.jumps = 0
+        """Jumps whose target has not come yet."""
+        self.leaving: tuple[_Open, _Open, Block] | None = None
+        """A jump's stretch that ran to its loop's end, the loop, and that end: a ``break`` if the next block
+        is the target."""
+
+    def block(self, block: Block) -> Iterator[Block]:
+        if self.leaving is not None:
+            yield from self.left(block)
         sections = block.sections
-        control = sections.get(CONTROL)
-        if pending and (LABEL in sections or "Sequence" in sections):
+        if self.jumps and (LABEL in sections or "Sequence" in sections):
             names = _names(block)
-            while open_ and open_[-1][0] in names:
-                _, label, _ = open_.pop()
-                pending -= 1
-                mark = Block(block.line, None, "\n")
-                mark.sections = {CONTROL: EndIf(label)}
-                yield mark
-            crossed = next((where for key, _, where in open_ if key in names), None)
+            while self.open and self.open[-1].key in names:
+                yield from self.emit(self.skipped(self.open.pop()))
+            crossed = next((o.at for o in self.open if o.key in names), None)
             if crossed is not None:
                 raise UnsupportedError("a jump into a construct opened after it (LinuxCNC has no GOTO, and the "
                                        "jump has no if shape)", crossed)
+        control = sections.get(CONTROL)
         if control is None:
-            yield block
-            continue
-        at = ctx.at(block)
-        if isinstance(control, _CLOSING + _BRANCHING) and open_ and open_[-1][0]:
+            yield from self.emit([block])
+            return
+        at = self.ctx.at(block)
+        top = self.open[-1] if self.open else None
+        if isinstance(control, _CLOSING + _BRANCHING) and top is not None and top.key:
+            below = self.open[-2] if len(self.open) > 1 else None
+            if isinstance(control, (EndWhile, EndFor)) and below is not None and below.loop is not None \
+                    and below.label == control.label:
+                self.open.pop()
+                self.open.pop()
+                self.leaving = (top, below, self.exact(block, control))
+                return
             raise UnsupportedError("a jump out of a construct or over its branches (LinuxCNC has no GOTO, and "
-                                   "the jump has no if shape)", open_[-1][2])
+                                   "the jump has no if or break shape)", top.at)
         if isinstance(control, (Goto, GotoLabel)):
             key = control.label if isinstance(control, GotoLabel) else _number_key(control.target)
             if key is None:
                 raise UnsupportedError("a jump to a computed block number (LinuxCNC has no GOTO)", at)
-            count += 1
-            label = f"jump:{count}"
-            open_.append((key, label, at))
-            pending += 1
-            control = If(label, Num(0.0) if control.cond is None else negated(control.cond))
+            rest = _without_control(block)
+            if rest is not None:
+                yield from self.emit([rest])
+            self.count += 1
+            self.jumps += 1
+            self.open.append(_Open(key, f"jump:{self.count}", at, cond=control.cond))
+            return
+        if isinstance(control, _OPENING):
+            loop = "while" if isinstance(control, (While, For)) else None
+            self.open.append(_Open("", getattr(control, "label", ""), at, loop))
+        elif isinstance(control, _CLOSING) and self.open:
+            self.open.pop()
+        if isinstance(control, Until):
+            control = DoWhile(control.label, negated(control.cond))
+            block = _with_control(block, control)
+        yield from self.emit([self.exact(block, control)])
+
+    def left(self, block: Block) -> Iterator[Block]:
+        """The block after a loop's end that a jump's stretch ran to: the jump leaves the loop if it is the
+        jump's target (``if [c]`` ``break`` ``endif``), otherwise it has no shape here."""
+        assert self.leaving is not None
+        jump, loop, end = self.leaving
+        self.leaving = None
+        if jump.key not in _names(block):
+            raise UnsupportedError("a jump out of a construct to other than the block after its end (LinuxCNC has "
+                                   "no GOTO, and the jump has no if or break shape)", jump.at)
+        self.jumps -= 1
+        where = jump.held[0] if jump.held else end
+        leave = [_made(where, If(jump.label, Num(1.0) if jump.cond is None else jump.cond)),
+                 _made(where, Break(loop.label)), _made(where, EndIf(jump.label))]
+        yield from self.emit(leave + jump.held + [end])
+
+    def skipped(self, jump: _Open) -> list[Block]:
+        """A jump's stretch, its target reached at its depth: ``if [not c]`` .. ``endif``."""
+        self.jumps -= 1
+        where = jump.held[0] if jump.held else None
+        cond = Num(0.0) if jump.cond is None else negated(jump.cond)
+        head = Block(where.line if where is not None else jump.at.line, None, "\n")
+        head.sections = {CONTROL: self.exact_cond(If(jump.label, cond))}
+        tail = Block(head.line, None, "\n")
+        tail.sections = {CONTROL: EndIf(jump.label)}
+        return [head, *jump.held, tail]
+
+    def emit(self, made: list[Block]) -> Iterator[Block]:
+        """``made`` into the innermost jump's stretch, or out when no jump waits."""
+        holder = next((o for o in reversed(self.open) if o.key), None)
+        if holder is None:
+            yield from made
         else:
-            if isinstance(control, _OPENING):
-                open_.append(("", "", at))
-            elif isinstance(control, _CLOSING) and open_:
-                open_.pop()
-            if isinstance(control, Until):
-                control = DoWhile(control.label, negated(control.cond))
+            holder.held.extend(made)
+
+    def exact(self, block: Block, control: Section) -> Block:
+        spelt = self.exact_cond(control)
+        return block if spelt is control else _with_control(block, spelt)
+
+    def exact_cond(self, control: Section) -> Section:
         cond = getattr(control, "cond", None)
         if isinstance(cond, Expr):
             exact = _exact(cond)
             if exact is not cond:
                 control = copy.copy(control)
                 setattr(control, "cond", exact)
-        if control is not sections[CONTROL]:
-            block = copy.copy(block)
-            block.sections = dict(sections)
-            block.sections[CONTROL] = control
-        yield block
-    if pending:
-        where = next(w for key, _, w in open_ if key)
-        raise UnsupportedError("a jump back, or to a target not after it (LinuxCNC has no GOTO; only a forward "
-                               "jump has an if shape)", where)
+        return control
+
+    def end(self) -> Iterator[Block]:
+        if self.leaving is not None:
+            raise UnsupportedError("a jump out of a loop to the program's end (LinuxCNC has no GOTO)",
+                                   self.leaving[0].at)
+        waiting = next((o for o in self.open if o.key), None)
+        if waiting is not None:
+            raise UnsupportedError("a jump back, or to a target not after it (LinuxCNC has no GOTO; only a "
+                                   "forward jump has an if shape)", waiting.at)
+        return iter(())
+
+
+def _made(where: Block, control: Section) -> Block:
+    made = Block(where.line, None, "\n")
+    made.sections = {CONTROL: control}
+    return made
+
+
+def _with_control(block: Block, control: Section) -> Block:
+    changed = copy.copy(block)
+    changed.sections = dict(block.sections)
+    changed.sections[CONTROL] = control
+    return changed
+
+
+def _without_control(block: Block) -> Block | None:
+    """A jump's block without the jump: what else it holds (a block number, a comment), or None."""
+    rest = {k: v for k, v in block.sections.items() if k != CONTROL}
+    if not rest:
+        return None
+    changed = copy.copy(block)
+    changed.sections = rest
+    return changed
 
 
 def _names(block: Block) -> set[str]:

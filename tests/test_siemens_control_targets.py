@@ -1,0 +1,205 @@
+"""SINUMERIK control flow kept symbolic towards Fanuc Macro B, LinuxCNC o-words and ISG (issue 28, item 2).
+
+* Fanuc: ``IF``/``ELSE``/``ENDIF``, ``REPEAT``/``UNTIL`` and named labels become jumps to block numbers above
+  the program's highest (``postproc.rs274.macro_jumps``); ``WHILE``, ``FOR`` and ``LOOP`` stay ``WHILE .. DOm``.
+  The expected texts are written by hand from that spelling.
+* LinuxCNC: forward jumps become ``o.. if`` .. ``endif`` where they have that shape, ``UNTIL`` an
+  ``o.. do`` .. ``while`` (``postproc.rs274.oword_jumps``); a jump back is flattened with the warning.
+  ``rs274`` runs each translation to the moves of postproc's own SINUMERIK toolpath.
+* A frame command that runs once where the text has it stays in a symbolic program
+  (``postproc.frames.run_order``); in a loop or across a jump back it flattens the program.
+
+Expected points are derived by hand from the source programs; the random differential compares the
+toolpath of each translation with the source's (``verify`` at 0) and LinuxCNC's interpreter with both.
+"""
+
+from __future__ import annotations
+
+import io
+import math
+import random
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+from postproc.api import translate
+from postproc.errors import Diagnostics
+from postproc.setup.machine_setup import load_setup
+from postproc.simulate.toolpath import toolpath_events
+from postproc.simulate.verify import verify_lines
+from tests.support.rs274 import available, canonical_moves, run_rs274
+
+ROOT = Path(__file__).resolve().parents[1]
+SETUP = load_setup(str(ROOT / "tests" / "support" / "zero_tools.xml"))
+TOOL_TABLE = "".join(f"T{n} P{n} Z0 D0\n" for n in range(1, 10))
+"""The tools of ``zero_tools.xml`` as rs274 reads a table."""
+RS274_MM = 2e-4
+"""rs274 prints 4 decimals."""
+
+FLOW = """%_N_FLOW_MPF
+N10 G17 G90 G710 G54
+N20 T1 D1 M6
+N30 S3000 M3
+N40 G0 X0 Y0 Z5
+R1=0
+R2=0
+WHILE R1<3
+R1=R1+1
+G1 Z=-R1 F150
+IF R1==2
+G1 X40
+ELSE
+G1 X0
+ENDIF
+ENDWHILE
+REPEAT
+R2=R2+1
+G1 Y=R2*5
+UNTIL R2>=2
+LOOP
+R2=R2+1
+IF R2>3 GOTOF OUT
+G1 X=R2
+ENDLOOP
+OUT:
+BACK: R1=R1-1
+G1 Z=-R1
+IF R1>1 GOTOB BACK
+N50 G0 Z50
+N70 M30
+"""
+FLOW_MOVES = [("rapid", 0, 0, 5), ("feed", 0, 0, -1), ("feed", 0, 0, -2), ("feed", 40, 0, -2),
+              ("feed", 40, 0, -3), ("feed", 0, 0, -3), ("feed", 0, 5, -3), ("feed", 0, 10, -3), ("feed", 3, 10, -3),
+              ("feed", 3, 10, -2), ("feed", 3, 10, -1), ("rapid", 3, 10, 50)]
+"""By hand: three passes down (X0, X40 on the second, X0), Y5 and Y10 in the REPEAT, X3 in the LOOP before
+R2=4 leaves it, then Z-2 and Z-1 while R1 counts down from 3, and the retract (the toolpath leaves out the
+first pass's X0, which does not move)."""
+FLOW_FORWARD = FLOW.replace("BACK: R1=R1-1\nG1 Z=-R1\nIF R1>1 GOTOB BACK\n", "")
+FORWARD_MOVES = FLOW_MOVES[:9] + [FLOW_MOVES[-1]]
+
+
+def _translate(text: str, target: str) -> tuple[str, str]:
+    """The translation and its warnings."""
+    out, warnings = io.StringIO(newline=""), io.StringIO()
+    translate(io.StringIO(text, newline=""), out, file="in.mpf", source="siemens", target=target, setup=SETUP,
+              diagnostics=Diagnostics(warn_stream=warnings))
+    return out.getvalue(), warnings.getvalue()
+
+
+def _verified(text: str, out: str, target: str) -> None:
+    report = verify_lines(io.StringIO(text, newline=""), io.StringIO(out, newline=""), file_in="in.mpf",
+                          file_out="out", source="siemens", target=target, setup=SETUP, tolerance=0.0)
+    assert report.ok and report.max_deviation == 0, report.summary()
+
+
+def _moves(text: str, dialect: str) -> list[tuple[str, float, float, float]]:
+    return [(e["move"], e["x"], e["y"], e["z"]) for e in
+            toolpath_events(io.StringIO(text, newline=""), file="p", dialect=dialect, setup=SETUP) if "move" in e]
+
+
+def _same_in_rs274(text: str, out: str) -> None:
+    """rs274 runs the LinuxCNC text through the moves of the SINUMERIK toolpath."""
+    theirs = [e for e in canonical_moves(run_rs274(out, tool_table=TOOL_TABLE), start=(0.0, 0.0, 0.0))
+              if "move" in e]
+    ours: list[dict[str, Any]] = [e for e in toolpath_events(io.StringIO(text), file="in.mpf", dialect="siemens",
+                                                             setup=SETUP) if "move" in e]
+    assert len(ours) == len(theirs), f"{len(ours)} moves here, {len(theirs)} in rs274\n{text}\n{out}"
+    for n, (a, b) in enumerate(zip(ours, theirs)):
+        assert a["move"] == b["move"], (n, a, b, text, out)
+        dev = max(abs(float(a[k]) - float(b[k])) for k in ("x", "y", "z"))
+        assert dev <= RS274_MM and not math.isnan(dev), (n, a, b, text, out)
+
+
+def _code(out: str) -> list[str]:
+    return [line for line in out.splitlines() if not line.startswith("(")]
+
+
+# -- Fanuc Macro B ------------------------------------------------------------------------------------------
+
+def test_the_siemens_toolpath_is_the_hand_derived_one() -> None:
+    assert _moves(FLOW, "siemens") == FLOW_MOVES
+    assert _moves(FLOW_FORWARD, "siemens") == FORWARD_MOVES
+
+
+def test_if_else_repeat_loop_and_labels_are_macro_b_jumps_above_the_highest_block_number() -> None:
+    out, warnings = _translate(FLOW, "fanuc")
+    assert "flattened" not in warnings, warnings
+    code = _code(out)
+    start = code.index("WHILE [#501 LT 3.] DO1")
+    assert code[start:] == [
+        "WHILE [#501 LT 3.] DO1", "#501=#501+1.", "G01 Z-#501 F150.",
+        "IF [#501 NE 2.] GOTO 71", "G01 X40.", "GOTO 72", "N71", "G01 X0.", "N72",
+        "END1",
+        "N73", "#502=#502+1.", "G01 Y[#502*5.]", "IF [#502 LT 2.] GOTO 73",
+        "WHILE [1. NE 0.] DO1", "#502=#502+1.", "IF [#502 GT 3.] GOTO 74", "G01 X#502", "END1",
+        "N74",
+        "N75", "#501=#501-1.", "G01 Z-#501", "IF [#501 GT 1.] GOTO 75",
+        "N50 G00 Z50.", "N70 M30"], out
+    _verified(FLOW, out, "fanuc")
+    assert _moves(out, "fanuc") == FLOW_MOVES
+
+
+def test_the_jumps_numbers_start_above_a_block_number_before_the_first_statement() -> None:
+    text = FLOW_FORWARD.replace("N40 G0 X0 Y0 Z5", "N900 G0 X0 Y0 Z5")
+    out, warnings = _translate(text, "fanuc")
+    assert "flattened" not in warnings and "IF [#501 NE 2.] GOTO 901" in out and "\nN904\n" in out, out
+    _verified(text, out, "fanuc")
+
+
+def test_numbers_beyond_fanuc_s_last_block_number_flatten_the_program() -> None:
+    text = FLOW_FORWARD.replace("N70 M30", "N99998 M30")
+    out, warnings = _translate(text, "fanuc")
+    assert "the program is flattened" in warnings and "Fanuc's block numbers end at N99999" in warnings, warnings
+    assert "GOTO" not in "\n".join(_code(out))
+    _verified(text, out, "fanuc")
+
+
+def test_an_else_if_chain_from_linuxcnc_is_jumps_too() -> None:
+    """Another source's ``elseif``: each branch's test jumps past it, a branch taken jumps to the end."""
+    text = ("G21 G90 G17\n#500=3\nG0 X0 Y0 Z5\no1 if [#500 LT 1]\nG1 X1 F100\no1 elseif [#500 LT 5]\nG1 X2 F100\n"
+            "o1 else\nG1 X3 F100\no1 endif\nM2\n")
+    out, warnings = io.StringIO(), io.StringIO()
+    translate(io.StringIO(text), out, file="in.ngc", source="linuxcnc", target="fanuc", setup=SETUP,
+              diagnostics=Diagnostics(warn_stream=warnings))
+    assert "flattened" not in warnings.getvalue()
+    assert _code(out.getvalue())[-11:] == [
+        "IF [#500 GE 1.] GOTO 1", "G01 X1. F100.", "GOTO 2", "N1", "IF [#500 GE 5.] GOTO 3", "G01 X2. F100.",
+        "GOTO 2", "N3", "G01 X3. F100.", "N2", "M02"], out.getvalue()
+    report = verify_lines(io.StringIO(text), io.StringIO(out.getvalue()), file_in="in.ngc", file_out="out.nc",
+                          source="linuxcnc", target="fanuc", setup=SETUP, tolerance=0.0)
+    assert report.ok, report.summary()
+
+
+# -- LinuxCNC o-words ---------------------------------------------------------------------------------------
+
+def test_forward_jumps_and_until_are_o_words_and_move_in_rs274_as_the_siemens_toolpath() -> None:
+    out, warnings = _translate(FLOW_FORWARD, "linuxcnc")
+    assert "flattened" not in warnings, warnings
+    code = _code(out)
+    assert "o2 if [#501 LE 2. AND #501 GE 2.]" in code and "o2 else" in code  # R1==2 exactly: LE and GE
+    assert code[code.index("o3 do"):code.index("o3 do") + 4] == [
+        "o3 do", "#502=[#502+1.]", "G1 Y[#502*5.]", "o3 while [#502 LT 2.]"]
+    assert code[code.index("o4 while [1.]"):] == [  # LOOP .. IF c GOTOF OUT .. ENDLOOP OUT: leaves by break
+        "o4 while [1.]", "#502=[#502+1.]", "o5 if [#502 GT 3.]", "o4 break", "o5 endif", "G1 X#502",
+        "o4 endwhile", "N50 G0 Z50.", "N70 M30"]
+    _verified(FLOW_FORWARD, out, "linuxcnc")
+    assert _moves(out, "linuxcnc") == FORWARD_MOVES
+    if available():
+        _same_in_rs274(FLOW_FORWARD, out)
+
+
+@pytest.mark.parametrize("text, why", [
+    (FLOW, "a jump back"),
+    (FLOW_FORWARD.replace("ENDLOOP\n", "ENDLOOP\nG1 Y0\n"), "a jump out of a construct to other than the block after"),
+    (FLOW_FORWARD.replace("ENDIF\n", "IF R1>5 GOTOF SKIP\nENDIF\nSKIP:\n"), "a jump out of a construct or over"),
+    ("G710 G90 G0 X0 Y0 Z5\nR1=1\nIF R1>0 GOTOF IN\nWHILE R1<3\nIN: R1=R1+1\nG1 X=R1 F100\nENDWHILE\nM30\n",
+     "a jump into a construct"),
+])
+def test_a_jump_without_an_if_shape_flattens_the_linuxcnc_translation(text: str, why: str) -> None:
+    out, warnings = _translate(text, "linuxcnc")
+    assert "the program is flattened" in warnings and why in warnings, warnings
+    assert not any(line.startswith("o") for line in _code(out)), out
+    _verified(text, out, "linuxcnc")
+    if available():
+        _same_in_rs274(text, out)
