@@ -203,3 +203,96 @@ def test_a_jump_without_an_if_shape_flattens_the_linuxcnc_translation(text: str,
     _verified(text, out, "linuxcnc")
     if available():
         _same_in_rs274(text, out)
+
+
+# -- seeded random differential -----------------------------------------------------------------------------
+
+class _Gen:
+    """Small SINUMERIK programs of nested control flow over R1, R2 and counters R10..: IF/ELSE, WHILE, FOR,
+    REPEAT/UNTIL, LOOP left by GOTOF, a forward GOTOF over blocks, and (``back``) a GOTOB loop. Every loop
+    ends by its counter."""
+
+    def __init__(self, seed: int, back: bool) -> None:
+        self.r = random.Random(seed)
+        self.back = back
+        self.counter = 10
+        self.labels = 0
+
+    def value(self) -> str:
+        return self.r.choice(["R1", "R2", "R1+R2", "2*R1-R2", str(self.r.randint(-4, 4))])
+
+    def cond(self) -> str:
+        return f"{self.r.choice(['R1', 'R2'])}{self.r.choice(['<', '>', '<=', '>=', '==', '<>'])}{self.r.randint(-2, 4)}"
+
+    def move(self) -> list[str]:
+        kind = self.r.random()
+        if kind < 0.4:
+            return [f"G1 X={self.value()} Y={self.value()} F{self.r.randint(50, 400)}"]
+        if kind < 0.7:
+            return [f"R{self.r.choice([1, 2])}=R{self.r.choice([1, 2])}+{self.r.randint(-2, 3)}", f"G1 Z=-{self.r.randint(0, 5)}-R1*0.1"]
+        return [f"G0 X{self.r.randint(-20, 20)} Y={self.value()}"]
+
+    def fresh(self) -> str:
+        self.counter += 1
+        return f"R{self.counter}"
+
+    def label(self) -> str:
+        self.labels += 1
+        return f"LBL{self.labels}"
+
+    def body(self, depth: int) -> list[str]:
+        lines: list[str] = []
+        for _ in range(self.r.randint(1, 3)):
+            lines += self.statement(depth)
+        return lines
+
+    def statement(self, depth: int) -> list[str]:
+        kinds = ["move", "move", "if", "skip"] + (["while", "for", "repeat", "loop"] if depth < 2 else [])
+        kind = self.r.choice(kinds + (["back"] if self.back and depth == 0 else []))
+        if kind == "move" or depth > 2:
+            return self.move()
+        if kind == "if":
+            other = ["ELSE", *self.body(depth + 1)] if self.r.random() < 0.6 else []
+            return [f"IF {self.cond()}", *self.body(depth + 1), *other, "ENDIF"]
+        n, c = self.r.randint(1, 3), self.fresh()
+        if kind == "while":
+            return [f"{c}=0", f"WHILE {c}<{n}", f"{c}={c}+1", *self.body(depth + 1), "ENDWHILE"]
+        if kind == "for":
+            return [f"FOR {c}=1 TO {n}", *self.body(depth + 1), "ENDFOR"]
+        if kind == "repeat":
+            return [f"{c}=0", "REPEAT", f"{c}={c}+1", *self.body(depth + 1), f"UNTIL {c}>={n}"]
+        label = self.label()
+        if kind == "loop":
+            return [f"{c}=0", "LOOP", f"{c}={c}+1", f"IF {c}>{n} GOTOF {label}", *self.body(depth + 1), "ENDLOOP",
+                    f"{label}:"]
+        if kind == "skip":
+            return [f"IF {self.cond()} GOTOF {label}", *self.body(depth + 1), f"{label}:"]
+        return [f"{c}=0", f"{label}: {c}={c}+1", *self.body(depth + 1), f"IF {c}<{n} GOTOB {label}"]
+
+    def program(self) -> str:
+        lines = ["%_N_RANDOM_MPF", "N10 G17 G90 G710 G94", "N20 T1 D1 M6", "N30 G0 X0 Y0 Z5 F300",
+                 f"R1={self.r.randint(-2, 3)}", f"R2={self.r.randint(-2, 3)}"]
+        for _ in range(self.r.randint(2, 4)):
+            lines += self.statement(0)
+        return "\n".join(lines + ["G0 Z50", "M30"]) + "\n"
+
+
+@pytest.mark.parametrize("seed", range(12))
+def test_random_control_flow_keeps_the_toolpath_on_fanuc_and_linuxcnc(seed: int) -> None:
+    """Fanuc keeps every construct (the text keeps WHILE/IF/GOTO, no flattening); LinuxCNC keeps what has an
+    o-word shape and flattens a GOTOB loop with the warning. Each translation moves as the source (verify at
+    0), and rs274 runs the LinuxCNC one through the SINUMERIK toolpath's moves."""
+    back = seed % 3 == 2
+    text = _Gen(2800 + seed, back).program()
+    fanuc, warnings = _translate(text, "fanuc")
+    assert "flattened" not in warnings, (text, warnings)
+    assert ("IF [" in fanuc or "WHILE [" in fanuc), (text, fanuc)
+    _verified(text, fanuc, "fanuc")
+    ngc, warnings = _translate(text, "linuxcnc")
+    if "GOTOB" in text:
+        assert "the program is flattened" in warnings and "a jump back" in warnings, (text, warnings)
+    else:
+        assert "flattened" not in warnings, (text, warnings)
+    _verified(text, ngc, "linuxcnc")
+    if available():
+        _same_in_rs274(text, ngc)

@@ -42,7 +42,7 @@ from ..syntaxes.program import HIGHEST_SEQUENCE
 MAX_SEQUENCE = 99999
 """The highest block number Fanuc writes: ``N`` + 5 digits [K: DIALECTS.md 1.1, 8 digits on a 30i only]."""
 LABEL = "Label"
-_BITWISE = {"and": "bitand", "or": "bitor"}
+_BITWISE = {"and": "bitand", "or": "bitor", "xor": "bitxor"}
 _SPELT = (If, ElseIf, Else, EndIf, Do, Until, DoWhile, GotoLabel)
 
 
