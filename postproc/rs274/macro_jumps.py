@@ -16,7 +16,7 @@ step records when it keeps the program), so none meets one of the program's own 
 from the jump, then from the start) finds each on its one block, as the neutral jump does. A number beyond
 ``MAX_SEQUENCE`` is refused. Fanuc wants an operator in every condition [K: Fanuc 0i-MF operator's manual,
 "Conditional expressions" use EQ NE GT GE LT LE]: a bare value ``v`` in a condition this step writes becomes
-``v NE 0``, and ``and``/``or`` of comparisons (1 or 0) Fanuc's ``AND``/``OR``, exact on 0 and 1.
+``v NE 0``, and ``and``/``or``/``xor`` of comparisons (1 or 0) Fanuc's ``AND``/``OR``/``XOR``, exact on 0 and 1.
 Jumping out of a ``WHILE`` loop is allowed, into one is not [K: same manual, "Repetition": "branch from
 inside the loop to the outside"]: every jump written here stays in its construct or leaves it.
 """

@@ -17,7 +17,7 @@ from typing import Callable, ClassVar, Iterator
 from postproc.compensation.rules import ARC_CORNERS
 from postproc.dialect import Dialect, Lazy, Reader
 from postproc.rs274.order_of_execution import stops_after_motion
-from postproc.rs274.oword_jumps import nest_forward_jumps
+from postproc.lowering.structured_jumps import nest_forward_jumps
 from postproc.errors import Diagnostics
 from postproc.hookspecs import hookimpl
 from postproc.ir import Block
@@ -94,7 +94,7 @@ class Linuxcnc(Dialect):
     LOWERING = (nest_forward_jumps, stops_after_motion, _subprogram_layout, _thread_feed_apart)
     """Another dialect's forward jumps as ``o.. if`` .. ``endif`` and ``UNTIL`` as ``o.. do`` .. ``while``
     where they have that shape, exact equalities in conditions as two exact comparisons
-    (``postproc.rs274.oword_jumps``). A moving block's spindle stop and coolant off go in a block of their own after it: LinuxCNC runs
+    (``postproc.lowering.structured_jumps``). A moving block's spindle stop and coolant off go in a block of their own after it: LinuxCNC runs
     them before the motion (``postproc.rs274.order_of_execution``); another dialect's subprograms stand
     after their callers, and a cycle gets the return level its source assumed (``layout``); a thread
     block's F goes on a line before it (``lathe_writer.feed_apart``: G33 refuses F)."""

@@ -1,7 +1,11 @@
-"""Jumps and tests at a loop's end as o-word blocks: a lowering for RS274/NGC targets, which have no GOTO.
+"""Jumps as the nested constructs they have the shape of: a lowering for targets that have no GOTO here.
 
 LinuxCNC's o-words nest (``if``/``else``/``endif``, ``while``, ``do``/``while``) and jump nowhere [V: LinuxCNC
-docs "O Codes"; ``interp_o_word.cc`` has no goto]. What has the shape of one is written as it:
+docs "O Codes"; ``interp_o_word.cc`` has no goto]. ISG has ``$GOTO``, but not to a target inside the loop
+the jump is in ("Jump inside a loop is not allowed ... A loop always can be left completely" [V: Beckhoff
+TF5200 diagnosis ID 21480]) and a block number is a target only as the label ``N<n>:`` [V: TF5200
+programming manual "The $GOTO statement"], which another dialect's numbered block is not: it gets the same
+nested spelling. What has the shape of a construct is written as it:
 
 * a forward jump (``GotoLabel`` to a named ``Label``, ``Goto`` to a block number) whose target is the first
   block after it carrying that label or number (which the neutral jump, searching forward first, takes),
@@ -14,12 +18,16 @@ docs "O Codes"; ``interp_o_word.cc`` has no goto]. What has the shape of one is 
   part, which is in memory anyway);
 * a forward jump from the body of a ``while`` loop (also a counted one) straight to the block after the
   loop's end (SINUMERIK ``LOOP`` .. ``IF c GOTOF OUT`` .. ``ENDLOOP`` ``OUT:``): ``o2 if [c]`` ``o1 break``
-  ``o2 endif`` [V: LinuxCNC docs "O Codes", break leaves the innermost loop];
-* ``Until c`` (SINUMERIK ``REPEAT`` .. ``UNTIL``, ISG ``$REPEAT``): ``o1 while [not c]`` after ``o1 do``;
-* an exact equality in a condition: LinuxCNC's ``EQ``/``NE`` count values closer than 1e-4 as equal
-  (``postproc.evaluation``), its ``LE``/``GE``/``LT``/``GT`` are exact [V: rs274, same module], so
-  ``a == b`` is written ``[a LE b] AND [a GE b]`` and ``a <> b`` ``[a LT b] OR [a GT b]``: the same
-  value for every number.
+  ``o2 endif`` (LinuxCNC's ``break`` and ISG's ``$BREAK`` leave the innermost loop [V: the same manuals]);
+* ``Until c`` (SINUMERIK ``REPEAT`` .. ``UNTIL``): ``o1 while [not c]`` after ``o1 do``;
+* ISG only (``nest_jumps_keeping_equality``): a jump back to a named label, both outside every loop, stays
+  the jump it is (``$GOTO [NAME]``: the label went by, and a label is on one block);
+* LinuxCNC only (``nest_forward_jumps``): an exact equality in a condition. LinuxCNC's ``EQ``/``NE`` count
+  values closer than 1e-4 as equal (``postproc.evaluation``), its ``LE``/``GE``/``LT``/``GT`` are exact [V:
+  rs274, same module], so ``a == b`` is written ``[a LE b] AND [a GE b]`` and ``a <> b``
+  ``[a LT b] OR [a GT b]``: the same value for every number.
+
+Back to the reading dialect itself the stream passes through (its own jumps are its own).
 """
 
 from __future__ import annotations
@@ -48,8 +56,21 @@ _EXACT = {"eq": ("and", "le", "ge"), "ne": ("or", "lt", "gt")}
 
 def nest_forward_jumps(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
     """Forward jumps as ``if`` .. ``endif`` (or ``break``), ``Until`` as ``do`` .. ``while``, exact equalities
-    as two comparisons (module docstring); every other block as it is."""
-    nest = _Nest(ctx)
+    as two comparisons (module docstring: LinuxCNC); every other block as it is."""
+    if ctx.dialect == target.NAME:
+        return blocks
+    return _nested(blocks, _Nest(ctx, f"{target.NAME} has no GOTO", exact=True))
+
+
+def nest_jumps_keeping_equality(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """``nest_forward_jumps`` with the conditions as they are (ISG)."""
+    if ctx.dialect == target.NAME:
+        return blocks
+    return _nested(blocks, _Nest(ctx, f"{target.NAME}'s GOTO may not stay in a loop or reach a numbered block",
+                                 exact=False, back_to_labels=True))
+
+
+def _nested(blocks: Iterator[Block], nest: _Nest) -> Iterator[Block]:
     for block in blocks:
         yield from nest.block(block)
     yield from nest.end()
@@ -58,10 +79,13 @@ def nest_forward_jumps(blocks: Iterator[Block], ctx: Context, target: type[Diale
 class _Open:
     """An open construct (``key`` "") or the stretch a forward jump skips (``key``: its target)."""
 
-    __slots__ = ("key", "label", "at", "loop", "cond", "held")
+    __slots__ = ("key", "label", "at", "loop", "cond", "held", "looping")
 
-    def __init__(self, key: str, label: str, at: Location, loop: str | None = None, cond: Expr | None = None) -> None:
+    def __init__(self, key: str, label: str, at: Location, loop: str | None = None, cond: Expr | None = None,
+                 looping: bool = False) -> None:
         self.key = key
+        self.looping = looping
+        """A construct that repeats its body (a ``while``, ``for``, ``do`` or ``repeat`` loop)."""
         self.label = label
         """A construct's own label; a jump's fresh one (``jump:n``)."""
         self.at = at
@@ -74,8 +98,15 @@ class _Open:
 
 
 class _Nest:
-    def __init__(self, ctx: Context) -> None:
+    def __init__(self, ctx: Context, why: str, exact: bool, back_to_labels: bool = False) -> None:
         self.ctx = ctx
+        self.back_to_labels = back_to_labels
+        """A jump back to a named label outside every loop, from outside every loop, stays a jump (ISG)."""
+        self.labels: dict[str, int] = {}
+        """Named labels that went by -> the loops open there."""
+        self.why = why
+        """Why a jump must have a construct's shape, for the messages."""
+        self.exact_equality = exact
         self.open: list[_Open] = []
         self.count = 0
         self.jumps = 0
@@ -94,8 +125,10 @@ class _Nest:
                 yield from self.emit(self.skipped(self.open.pop()))
             crossed = next((o.at for o in self.open if o.key in names), None)
             if crossed is not None:
-                raise UnsupportedError("a jump into a construct opened after it (LinuxCNC has no GOTO, and the "
-                                       "jump has no if shape)", crossed)
+                raise UnsupportedError(f"a jump into a construct opened after it ({self.why}, and the jump has "
+                                       "no if shape)", crossed)
+        if self.back_to_labels and LABEL in sections:
+            self.labels[str(getattr(sections[LABEL], "name"))] = self.loops()
         control = sections.get(CONTROL)
         if control is None:
             yield from self.emit([block])
@@ -110,12 +143,15 @@ class _Nest:
                 self.open.pop()
                 self.leaving = (top, below, self.exact(block, control))
                 return
-            raise UnsupportedError("a jump out of a construct or over its branches (LinuxCNC has no GOTO, and "
-                                   "the jump has no if or break shape)", top.at)
+            raise UnsupportedError(f"a jump out of a construct or over its branches ({self.why}, and the jump "
+                                   "has no if or break shape)", top.at)
+        if isinstance(control, GotoLabel) and self.labels.get(control.label) == 0 and self.loops() == 0:
+            yield from self.emit([block])  # back to a label outside every loop, from outside every loop
+            return
         if isinstance(control, (Goto, GotoLabel)):
             key = control.label if isinstance(control, GotoLabel) else _number_key(control.target)
             if key is None:
-                raise UnsupportedError("a jump to a computed block number (LinuxCNC has no GOTO)", at)
+                raise UnsupportedError(f"a jump to a computed block number ({self.why})", at)
             rest = _without_control(block)
             if rest is not None:
                 yield from self.emit([rest])
@@ -125,13 +161,18 @@ class _Nest:
             return
         if isinstance(control, _OPENING):
             loop = "while" if isinstance(control, (While, For)) else None
-            self.open.append(_Open("", getattr(control, "label", ""), at, loop))
+            self.open.append(_Open("", getattr(control, "label", ""), at, loop,
+                                   looping=isinstance(control, (While, For, Do, Repeat))))
         elif isinstance(control, _CLOSING) and self.open:
             self.open.pop()
         if isinstance(control, Until):
             control = DoWhile(control.label, negated(control.cond))
             block = _with_control(block, control)
         yield from self.emit([self.exact(block, control)])
+
+    def loops(self) -> int:
+        """The loops open where the stream stands."""
+        return sum(1 for o in self.open if o.looping)
 
     def left(self, block: Block) -> Iterator[Block]:
         """The block after a loop's end that a jump's stretch ran to: the jump leaves the loop if it is the
@@ -140,8 +181,8 @@ class _Nest:
         jump, loop, end = self.leaving
         self.leaving = None
         if jump.key not in _names(block):
-            raise UnsupportedError("a jump out of a construct to other than the block after its end (LinuxCNC has "
-                                   "no GOTO, and the jump has no if or break shape)", jump.at)
+            raise UnsupportedError(f"a jump out of a construct to other than the block after its end ({self.why}, "
+                                   "and the jump has no if or break shape)", jump.at)
         self.jumps -= 1
         where = jump.held[0] if jump.held else end
         leave = [_made(where, If(jump.label, Num(1.0) if jump.cond is None else jump.cond)),
@@ -173,7 +214,7 @@ class _Nest:
 
     def exact_cond(self, control: Section) -> Section:
         cond = getattr(control, "cond", None)
-        if isinstance(cond, Expr):
+        if isinstance(cond, Expr) and self.exact_equality:
             exact = _exact(cond)
             if exact is not cond:
                 control = copy.copy(control)
@@ -182,12 +223,11 @@ class _Nest:
 
     def end(self) -> Iterator[Block]:
         if self.leaving is not None:
-            raise UnsupportedError("a jump out of a loop to the program's end (LinuxCNC has no GOTO)",
-                                   self.leaving[0].at)
+            raise UnsupportedError(f"a jump out of a loop to the program's end ({self.why})", self.leaving[0].at)
         waiting = next((o for o in self.open if o.key), None)
         if waiting is not None:
-            raise UnsupportedError("a jump back, or to a target not after it (LinuxCNC has no GOTO; only a "
-                                   "forward jump has an if shape)", waiting.at)
+            raise UnsupportedError(f"a jump back, or to a target not after it ({self.why}; only a forward jump "
+                                   "has an if shape)", waiting.at)
         return iter(())
 
 
