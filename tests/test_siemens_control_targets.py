@@ -296,3 +296,71 @@ def test_random_control_flow_keeps_the_toolpath_on_fanuc_and_linuxcnc(seed: int)
     _verified(text, ngc, "linuxcnc")
     if available():
         _same_in_rs274(text, ngc)
+
+
+# -- ISG --------------------------------------------------------------------------------------------------
+
+def test_isg_gets_if_else_repeat_a_loop_left_by_break_and_a_goto_back_outside_loops() -> None:
+    """``$GOTO`` may not jump inside a loop (TF5200 ID 21480): the LOOP's exit is ``$IF`` ``$BREAK``; the GOTOB
+    loop at the top level stays a ``$GOTO`` to its label; REPEAT .. UNTIL is ``$DO`` .. ``$ENDDO``."""
+    out, warnings = _translate(FLOW, "isg")
+    assert "flattened" not in warnings, warnings
+    code = _code(out)
+    start = code.index("$WHILE P1 < 3")
+    assert code[start:] == [
+        "$WHILE P1 < 3", "P1=P1+1", "G01 Z-P1 F150.", "$IF P1 == 2", "G01 X40.", "$ELSE", "G01 X0.", "$ENDIF",
+        "$ENDWHILE", "$DO", "P2=P2+1", "G01 Y[P2*5]", "$ENDDO P2 < 2",
+        "$WHILE 1 != 0", "P2=P2+1", "$IF P2 > 3", "$BREAK", "$ENDIF", "G01 XP2", "$ENDWHILE",
+        "[out] ", "[back] P1=P1-1", "G01 Z-P1", "$IF P1 > 1 $GOTO [back]", "N50 G00 Z50.", "N70 M30"], out
+    _verified(FLOW, out, "isg")
+    assert _moves(out, "isg") == FLOW_MOVES
+
+
+def test_an_isg_jump_inside_a_loop_without_an_if_shape_flattens() -> None:
+    text = ("G710 G90 G0 X0 Y0 Z5 F100\nR1=0\nWHILE R1<2\nR1=R1+1\nAGAIN: G1 X=R1\nR2=R1\nIF R2>5 GOTOB AGAIN\n"
+            "ENDWHILE\nM30\n")
+    out, warnings = _translate(text, "isg")
+    assert "the program is flattened" in warnings and "GOTO may not stay in a loop" in warnings, warnings
+    assert "$" not in "\n".join(_code(out))
+    _verified(text, out, "isg")
+
+
+# -- frames in a program kept symbolically ------------------------------------------------------------------
+
+PLATE = (ROOT / "examples" / "siemens" / "plate.mpf").read_text(encoding="utf-8")
+
+
+@pytest.mark.parametrize("target, loop, jump", [("fanuc", "WHILE [#501 LT 2.] DO1", "IF [#501 GE 2.] GOTO 310"),
+                                                ("linuxcnc", "o1 while [#501 LT 2.]", "o3 if [#501 LT 2.]"),
+                                                ("isg", "$WHILE P1 < 2", "$IF P1 < 2")])
+def test_the_plate_keeps_its_loops_and_its_frame_after_them_runs_where_it_stands(target: str, loop: str,
+                                                                                 jump: str) -> None:
+    """TRANS X5 Y5 / AROT RPL=30 after the loops and the jump run once, where the text has them: the
+    program stays symbolic and the rotated move is the hand-derived point (10, 0) turned 30 degrees about
+    the origin, then moved by (5, 5): (5 + 10 cos 30, 5 + 10 sin 30) = (13.660254, 10)."""
+    out, warnings = _translate(PLATE, target)
+    assert "flattened" not in warnings, warnings
+    code = _code(out)
+    assert any(line.endswith(loop) for line in code) and any(line.endswith(jump) for line in code), out
+    assert ("feed", 13.660254, 10.0, -1.0) in [(m, round(x, 6), round(y, 6), z) for m, x, y, z in
+                                                _moves(out, target)]
+    _verified(PLATE, out, target)
+    if target == "linuxcnc" and available():
+        _same_in_rs274(PLATE, out)
+
+
+@pytest.mark.parametrize("text, target", [
+    ("G710 G90 G17 G0 X0 Y0 Z5 F100\nR1=0\nWHILE R1<2\nR1=R1+1\nATRANS X5\nG1 X=R1\nENDWHILE\nTRANS\nG0 X0\nM30\n",
+     "fanuc"),
+    ("G710 G90 G17 G0 X0 Y0 Z5 F100\nR1=0\nBACK: R1=R1+1\nATRANS X5\nG1 X=R1 Y0\nIF R1<2 GOTOB BACK\nTRANS\nM30\n",
+     "fanuc"),
+    ("G710 G90 G17 G0 X0 Y0 Z5 F100\nR1=0\nIF R1>0 GOTOF SKIP\nTRANS X5\nSKIP: G1 X1 Y0\nTRANS\nM30\n",
+     "linuxcnc"),
+])
+def test_a_frame_command_that_a_run_repeats_or_skips_flattens_the_program(text: str, target: str) -> None:
+    """In a loop, after a label a jump comes back to, or over a jump: evaluated once in the text's order it
+    would move otherwise than the run, so the program is flattened with the warning and moves as the source."""
+    out, warnings = _translate(text, target)
+    assert "the program is flattened" in warnings and "a coordinate frame in a program kept symbolically" in warnings, \
+        warnings
+    _verified(text, out, target)
