@@ -71,7 +71,12 @@ def nest_jumps_keeping_equality(blocks: Iterator[Block], ctx: Context, target: t
 
 
 def _nested(blocks: Iterator[Block], nest: _Nest) -> Iterator[Block]:
+    control, label = CONTROL, LABEL
     for block in blocks:
+        sections = block.sections
+        if not nest.jumps and nest.leaving is None and control not in sections and label not in sections:
+            yield block  # the common block: no statement, no label, no jump's stretch to hold it
+            continue
         yield from nest.block(block)
     yield from nest.end()
 
