@@ -74,10 +74,11 @@ def _nested(blocks: Iterator[Block], nest: _Nest) -> Iterator[Block]:
     control, label = CONTROL, LABEL
     for block in blocks:
         sections = block.sections
-        if not nest.jumps and nest.leaving is None and control not in sections and label not in sections:
+        if control not in sections and label not in sections and not nest.busy:
             yield block  # the common block: no statement, no label, no jump's stretch to hold it
             continue
         yield from nest.block(block)
+        nest.busy = bool(nest.jumps) or nest.leaving is not None
     yield from nest.end()
 
 
@@ -112,6 +113,8 @@ class _Nest:
         self.why = why
         """Why a jump must have a construct's shape, for the messages."""
         self.exact_equality = exact
+        self.busy = False
+        """A jump's stretch is held or a loop's end waits for the block after it: every block comes here."""
         self.open: list[_Open] = []
         self.count = 0
         self.jumps = 0

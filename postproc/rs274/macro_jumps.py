@@ -48,13 +48,24 @@ _SPELT = (If, ElseIf, Else, EndIf, Do, Until, DoWhile, GotoLabel)
 
 def number_jumps(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
     """Each ``If``/``ElseIf``/``Else``/``EndIf``, ``Do``/``Until``/``DoWhile``, ``Label`` and ``GotoLabel``
-    as Macro B jumps to block numbers of their own (module docstring); every other block as it is."""
+    as Macro B jumps to block numbers of their own (module docstring); every other block as it is. Back to
+    the reading dialect itself the stream passes through (its own statements are Macro B already)."""
+    if ctx.dialect == target.NAME:
+        return blocks
+    return _numbered_jumps(blocks, ctx)
+
+
+def _numbered_jumps(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
     jumps: _Jumps | None = None
+    control_key, label_key = CONTROL, LABEL
     for block in blocks:
         sections = block.sections
-        control = sections.get(CONTROL)
-        if LABEL not in sections and not isinstance(control, _SPELT):
-            if isinstance(control, (While, Goto)) and ctx.dialect != target.NAME:
+        if control_key not in sections and label_key not in sections:
+            yield block  # the common block: no statement, no label
+            continue
+        control = sections.get(control_key)
+        if label_key not in sections and not isinstance(control, _SPELT):
+            if isinstance(control, (While, Goto)):
                 _own_condition(block, control)
             yield block
             continue

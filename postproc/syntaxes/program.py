@@ -194,8 +194,11 @@ class ProgramSyntax(Syntax):
             sections = block.sections
             if control in sections or assign in sections or (block.values and _computes(block)):
                 break
-            if sequence in sections:
-                highest = max(highest, _number(sections[sequence]))
+            numbered = sections.get(sequence)
+            if numbered is not None:
+                number = _number(numbered)
+                if number > highest:
+                    highest = number
             if start in sections:
                 if check is None:
                     check = self.structure_check(ctx)
