@@ -364,3 +364,18 @@ def test_a_frame_command_that_a_run_repeats_or_skips_flattens_the_program(text: 
     assert "the program is flattened" in warnings and "a coordinate frame in a program kept symbolically" in warnings, \
         warnings
     _verified(text, out, target)
+
+
+@pytest.mark.parametrize("assignments, kept", [("R1=40 R2=30 R3=R4+1", True), ("R1=5 R2=R1", False)])
+def test_assignments_of_one_block_are_fanuc_lines_when_none_reads_what_another_set(assignments: str,
+                                                                                   kept: bool) -> None:
+    """The neutral block reads every right-hand side first: ``R1=5 R2=R1`` sets R2 to the R1 from before (1
+    here), which two Fanuc lines would not: that block flattens the program."""
+    text = f"G710 G90 G0 X0 Y0 Z5 F100\nR1=1\nR4=2\n{assignments}\nWHILE R1>0\nR1=R1-10\nG1 X=R2 Y=R1\nENDWHILE\nM30\n"
+    out, warnings = _translate(text, "fanuc")
+    if kept:
+        assert "flattened" not in warnings and "\n#501=40.\n#502=30.\n#503=#504+1.\n" in out, (warnings, out)
+    else:
+        assert "the program is flattened" in warnings and "reads a variable another sets first" in warnings
+        assert ("feed", 1.0, -5.0, 5.0) in _moves(text, "siemens")
+    _verified(text, out, "fanuc")
