@@ -33,7 +33,9 @@ Back to the reading dialect itself the stream passes through (its own jumps are 
 from __future__ import annotations
 
 import copy
-from typing import Iterator
+from typing import Final, Iterator
+
+from mypy_extensions import mypyc_attr
 
 from ..conditions import negated
 from ..context import Context
@@ -46,11 +48,11 @@ from ..errors import Location, UnsupportedError
 from ..expr import Binary, Expr, Func, Num, Unary
 from ..ir import Block, Section
 
-LABEL = "Label"
-_OPENING = (If, While, Do, For, Repeat, Switch, SubStart)
-_CLOSING = (EndIf, EndWhile, DoWhile, Until, EndFor, EndRepeat, EndSwitch, SubEnd)
-_BRANCHING = (ElseIf, Else, Case, Default)
-_EXACT = {"eq": ("and", "le", "ge"), "ne": ("or", "lt", "gt")}
+LABEL: Final = "Label"
+_OPENING: Final = (If, While, Do, For, Repeat, Switch, SubStart)
+_CLOSING: Final = (EndIf, EndWhile, DoWhile, Until, EndFor, EndRepeat, EndSwitch, SubEnd)
+_BRANCHING: Final = (ElseIf, Else, Case, Default)
+_EXACT: Final = {"eq": ("and", "le", "ge"), "ne": ("or", "lt", "gt")}
 """An exact comparison as two exact ones LinuxCNC has, and the logical operator joining them."""
 
 
@@ -82,10 +84,9 @@ def _nested(blocks: Iterator[Block], nest: _Nest) -> Iterator[Block]:
     yield from nest.end()
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class _Open:
     """An open construct (``key`` "") or the stretch a forward jump skips (``key``: its target)."""
-
-    __slots__ = ("key", "label", "at", "loop", "cond", "held", "looping")
 
     def __init__(self, key: str, label: str, at: Location, loop: str | None = None, cond: Expr | None = None,
                  looping: bool = False) -> None:
@@ -103,7 +104,10 @@ class _Open:
         """A jump's stretch: the blocks after it, held until its target decides its shape."""
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class _Nest:
+    """The constructs open and the jumps waiting for their targets where the stream stands."""
+
     def __init__(self, ctx: Context, why: str, exact: bool, back_to_labels: bool = False) -> None:
         self.ctx = ctx
         self.back_to_labels = back_to_labels

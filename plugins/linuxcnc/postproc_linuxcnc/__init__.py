@@ -92,10 +92,10 @@ class Linuxcnc(Dialect):
     LINE_RULE = Lazy[LineRule](".lines:LINES")
     """rs274 reads at most 252 bytes a line: a longer comment is shortened (``lines.py``)."""
     LOWERING = (nest_forward_jumps, stops_after_motion, _subprogram_layout, _thread_feed_apart)
-    """Another dialect's forward jumps as ``o.. if`` .. ``endif`` and ``UNTIL`` as ``o.. do`` .. ``while``
-    where they have that shape, exact equalities in conditions as two exact comparisons
-    (``postproc.lowering.structured_jumps``). A moving block's spindle stop and coolant off go in a block of their own after it: LinuxCNC runs
-    them before the motion (``postproc.rs274.order_of_execution``); another dialect's subprograms stand
+    """Another dialect's forward jumps as ``o.. if`` .. ``endif`` (or ``break``) and ``UNTIL`` as ``o.. do`` ..
+    ``while`` where they have that shape, exact equalities in conditions as two exact comparisons
+    (``postproc.lowering.structured_jumps``). A moving block's spindle stop and coolant off go in a block of
+    their own after it: LinuxCNC runs them before the motion (``postproc.rs274.order_of_execution``); another dialect's subprograms stand
     after their callers, and a cycle gets the return level its source assumed (``layout``); a thread
     block's F goes on a line before it (``lathe_writer.feed_apart``: G33 refuses F)."""
     CYCLE_SEMANTICS = "rs274"
