@@ -18,7 +18,7 @@ from .lowering.arcs import ArcOption, rewrite_arcs
 from .lowering.lower import lower_for
 from .plugins import Registry, default_registry
 from .reading import gc_paused as gc_paused, read_blocks as read_blocks  # public API names
-from .syntaxes.program import RUN_CHECK, TARGET_OMITS_VACANT, ProgramSyntax
+from .syntaxes.program import HIGHEST_SEQUENCE, RUN_CHECK, TARGET_OMITS_VACANT, ProgramSyntax
 from .lowering.sequences import Sequences
 from .setup.machine_setup import MachineSetup
 from .source_map import OutputMap
@@ -140,6 +140,8 @@ def _keep_check(src: type[Dialect], dst: type[Dialect], ctx: Context, registry: 
         trial.run_data["sequences"] = Sequences(trial, src.NAME, dst, enabled=False)  # a dry run renders none
         trial.run_data[EVALUATE_KEY] = options.transform is not None
         trial.run_data[POINT_BY_POINT_KEY] = options.active()
+        if HIGHEST_SEQUENCE in ctx.run_data:  # the jumps a target numbers itself start above the program's
+            trial.run_data[HIGHEST_SEQUENCE] = ctx.run_data[HIGHEST_SEQUENCE]
         trial.run_data["dry_run"] = True  # what it writes is a part of the program, read back and discarded
         steps = [step for step in src.pipeline(ctx.setup).steps if not isinstance(step, ProgramSyntax)]
         blocks = Pipeline(src.NAME, steps).run(body, trial)

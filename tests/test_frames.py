@@ -303,14 +303,28 @@ def test_a_frame_set_before_a_loop_kept_symbolically_is_carried_as_an_expression
     assert report.ok, report.summary()
 
 
-def test_a_frame_command_in_the_symbolic_part_flattens_the_program() -> None:
-    """Kept symbolically, a frame would be evaluated in the order of the text, not of the run."""
+def test_a_frame_command_in_a_loop_of_the_symbolic_part_flattens_the_program() -> None:
+    """Kept symbolically, a frame command in a loop would be evaluated once, in the order of the text, where
+    the run repeats it (``postproc.frames.run_order``)."""
     out = io.StringIO()
-    diagnostics = translate(io.StringIO(LOCAL_LOOP + "G52 X0.\nM30\n"), out, file="t.nc", source="fanuc",
+    looped = LOCAL_LOOP.replace("#1=#1+1\n", "#1=#1+1\nG52 X[#1*5.]\n")
+    diagnostics = translate(io.StringIO(looped + "G00 X0.\nM30\n"), out, file="t.nc", source="fanuc",
                             target="linuxcnc")
-    assert "while" not in out.getvalue() and "X110." in out.getvalue()
+    assert "o1 while" not in out.getvalue() and "G0 X30. Y0." in out.getvalue() and "G0 X15.\nM30" in out.getvalue()
     assert any("flattened" in w and "a coordinate frame in a program kept symbolically" in w
                for w in map(str, diagnostics.warnings))
+
+
+def test_a_frame_command_after_a_loop_of_the_symbolic_part_is_evaluated_where_it_stands() -> None:
+    """Outside every construct and over no jump, a frame command runs once, where the text has it: the
+    program stays symbolic and moves as the source (the moves after G52 X0. carry no offset)."""
+    text = LOCAL_LOOP + "G52 X0.\nG00 X5. Y5.\nM30\n"
+    out = io.StringIO()
+    translate(io.StringIO(text), out, file="t.nc", source="fanuc", target="linuxcnc")
+    assert "o1 while" in out.getvalue() and "G0 X5. Y5." in out.getvalue()
+    report = verify_lines(io.StringIO(text), io.StringIO(out.getvalue()), file_in="t.nc", file_out="o.ngc",
+                          source="fanuc", target="linuxcnc", tolerance=0.0)
+    assert report.ok, report.summary()
 
 
 # -- LinuxCNC against rs274 -----------------------------------------------------------------------------

@@ -15,6 +15,7 @@ from postproc.hookspecs import hookimpl
 from postproc.rs274.cycle_words import rs274_cycle_words
 from postproc.rs274.lathe_axes import LATHE_INCREMENTS
 from postproc.rs274.order_of_execution import stops_before_motion
+from postproc.rs274.macro_jumps import number_jumps
 from postproc.output.writer_base import Writer
 from postproc.xmlio import XFactory
 
@@ -84,9 +85,10 @@ class Fanuc(Dialect):
     """Cutter compensation C with start-up type A, parameter SUP (5003#0) = 0, the default
     (``postproc.compensation.rules``, where each rule is tagged with its source); type B by the set-up's
     ``<Controller cutterStartup="B">`` (``cutter_rules``)."""
-    LOWERING = (stops_before_motion,)
+    LOWERING = (stops_before_motion, number_jumps)
     """A spindle stop or coolant off that the source made before its block's motion goes in a block of
-    its own before it (Fanuc makes them after the motion)."""
+    its own before it (Fanuc makes them after the motion); another dialect's ``IF .. ELSE``, loop tested at
+    its end and named labels as jumps to block numbers (``postproc.rs274.macro_jumps``)."""
 
     @classmethod
     def cutter_rules(cls, setup: MachineSetup) -> CutterRules | None:

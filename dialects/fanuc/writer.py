@@ -18,7 +18,7 @@ from postproc.control import (
 )
 from postproc.dialect import Dialect
 from postproc.errors import UnsupportedError
-from postproc.expr import Binary, Expr, Num, Var
+from postproc.expr import Binary, Expr, Func, Num, Unary, Var
 from postproc.ir import Block, Section
 from postproc.rs274.codes import CodeTable
 from postproc.rs274.expressions import FANUC_SPELLING, ExprSpelling, spell_word_value
@@ -172,11 +172,27 @@ class FanucWriter(LatheWordWriter):
                 return ["G67"]
             if isinstance(section, Return):
                 return self.return_words(section, block)
+            if isinstance(section, Assign) and len(section.items) > 1:
+                return [self.assignments_apart(section, block)]
             return [spell_statement_fanuc(section)]
         except UnsupportedError as err:
             if err.location is None:
                 err.located(self.ctx.at(block))
             raise
+
+    def assignments_apart(self, section: Assign, block: Block) -> str:
+        """Another dialect's assignments of one block (SINUMERIK ``R1=40 R2=30``), one a line: Fanuc sets one
+        variable a block. The neutral block reads every right-hand side first, so each line must read nothing
+        a line before it set."""
+        done: list[Var] = []
+        lines = []
+        for var, value in section.items:
+            if any(_reads(value, target) or _reads(var, target) for target in done):
+                self.unsupported("assignments of one block where one reads a variable another sets first (Fanuc "
+                                 "sets one variable a block)", block)
+            lines.append(spell_statement_fanuc(Assign([(var, value)])))
+            done.append(var)
+        return (block.eol or "\n").join(lines)
 
     def loop_words(self, section: While | EndWhile | For | EndFor, block: Block) -> list[str]:
         eol = block.eol or "\n"
@@ -259,6 +275,25 @@ def _whole(expr: Expr) -> str:
     if isinstance(expr, Num) and expr.value.is_integer() and expr.value >= 0:
         return str(int(expr.value))
     return spell_word_value(expr, FANUC_SPELLING)
+
+
+def _reads(expr: Expr, var: Var) -> bool:
+    """Whether ``expr`` reads ``var`` (an indirect variable ``#[..]`` may be any)."""
+    stack = [expr]
+    while stack:
+        item = stack.pop()
+        if isinstance(item, Var):
+            if item == var or item.name is None and not isinstance(item.index, Num):
+                return True
+            if isinstance(item.index, Expr):
+                stack.append(item.index)
+        elif isinstance(item, Unary):
+            stack.append(item.operand)
+        elif isinstance(item, Binary):
+            stack.extend((item.left, item.right))
+        elif isinstance(item, Func):
+            stack.extend(item.args)
+    return False
 
 
 def _grown(counter: Var, step: float) -> Binary:

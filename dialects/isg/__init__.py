@@ -14,6 +14,7 @@ from typing import TYPE_CHECKING, Callable, Iterator
 from postproc.comments import CommentSyntax
 from postproc.dialect import Dialect, Lazy, Reader
 from postproc.hookspecs import hookimpl
+from postproc.lowering.structured_jumps import nest_jumps_keeping_equality
 from postproc.rs274.order_of_execution import stops_before_motion
 from postproc.setup.machine_setup import MachineSetup
 from postproc.syntax import Pipeline
@@ -70,12 +71,14 @@ class Isg(Dialect):
     ``#COMMENT BEGIN`` ... ``#COMMENT END`` block is not recognised as commented (refused: the safe side)."""
     PROGRAMS = True
     """P parameters, expressions, $IF/$SWITCH/$FOR/$WHILE/$DO/$REPEAT, $GOTO, %L/LL and L subroutines."""
-    LOWERING = (stops_before_motion, resolve_radius_where_d_cannot, select_tool_data)
+    LOWERING = (nest_jumps_keeping_equality, stops_before_motion, resolve_radius_where_d_cannot, select_tool_data)
     """A spindle stop or coolant off that the source made before its block's motion goes in a block of
     its own before it (ISG acts on M05/M09 after the block's motion, as Fanuc [?]); a G41/G42 whose D
     would bring another length than the one in force becomes the compensated path where the source's
     rules are modelled (``resolve_radius_where_d_cannot``); another family's length and radius
-    registers become the D that selects them (``select_tool_data``)."""
+    registers become the D that selects them (``select_tool_data``); another dialect's jumps become the
+    ``$IF``/``$BREAK`` they have the shape of, or the program is flattened: ``$GOTO`` may not jump inside a
+    loop, and a numbered target needs the label ``N<n>:`` (``postproc.lowering.structured_jumps``)."""
 
     @classmethod
     def python_pipeline(cls, setup: MachineSetup) -> Pipeline:

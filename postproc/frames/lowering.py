@@ -20,7 +20,8 @@ The program position is tracked in program coordinates (mm), None where unknown;
 unknown coordinate (an axis it omits, that the frame mixes into the ones it programs) is a located error.
 
 A program kept symbolically (its loops, jumps and calls written for a target that has them) runs in
-another order than its text: there a frame command, or a move that needs the position the text order
+another order than its text: there a frame command that may not run once where the text has it
+(``run_order``: inside a construct, across a jump), or a move that needs the position the text order
 would give, is an error, which the translation's dry run (``postproc.api``) takes as the reason to
 flatten the program instead; a computed word under a frame set before is carried as an expression
 (``X[#1*10.+100.]``). The dry run starts from the frame and position the real run has reached (kept in
@@ -44,6 +45,7 @@ from ..ir import AXES, Block, Comments, CompoundMotion, CutterCompensation, Data
 from ..state import MM_PER_INCH, ModalState, changes_nothing
 from .affine import EXACT, INDEX, XYZ
 from .frame import PLANE_AXES, Frame, Position, chain_component
+from .run_order import RunOrder
 from .section import FrameChange
 
 LINEAR: Final = frozenset("XYZUVW")
@@ -58,7 +60,7 @@ RUN_KEY: Final = "frames.run"
 class FrameRun:
     """What the evaluation has reached: copied with the reading state into a translation's dry run."""
 
-    __slots__ = ("frame", "p", "g5x", "symbolic", "work")
+    __slots__ = ("frame", "p", "g5x", "symbolic", "work", "order")
 
     def __init__(self, p: Position) -> None:
         self.frame: Frame | None = None
@@ -71,6 +73,8 @@ class FrameRun:
         """A construct (an assignment, a control statement) went by: the program is kept symbolically."""
         self.work: int | None = None
         """The work system the program selected last (1 = G54); None before it selects one (the machine's)."""
+        self.order = RunOrder()
+        """The constructs and jumps of the symbolic part: which frame command runs in the text's order."""
 _SWAPPED: Final = {"left": "right", "right": "left"}
 _TURNED: Final = {"cw": "ccw", "ccw": "cw"}
 
@@ -132,10 +136,14 @@ class FrameEvaluator:
             if self.frame is None and _unwatched(s, watched):
                 m = s.get("Motion")
                 if m is None:
+                    if self.reached.symbolic:
+                        self.targets(s)
                     yield block
                     continue
                 if isinstance(m, Motion) and self.plain_mm and m.mode in moves and not state.symbolic:
                     p.update(m.axes)  # type: ignore[arg-type]  # numbers: nothing is symbolic yet
+                    if self.reached.symbolic:
+                        self.targets(s)
                     yield block
                     continue
             try:
@@ -150,6 +158,11 @@ class FrameEvaluator:
         s = block.sections
         if ASSIGN in s or CONTROL in s:
             self.reached.symbolic = True
+        if self.reached.symbolic:
+            self.targets(s)
+            control = s.get(CONTROL)
+            if control is not None:
+                self.reached.order.control(control, SYMBOLIC)
         frame = self.frame
         changed = False
         if "DataSetting" in s:
@@ -160,7 +173,7 @@ class FrameEvaluator:
         change = s.get("FrameChange")
         if isinstance(change, FrameChange):
             if self.reached.symbolic:
-                raise ProgramError(SYMBOLIC)
+                self.reached.order.command(SYMBOLIC)  # refused unless it runs where the text has it
             self.command(block, change)
             del s["FrameChange"]
             _trace(s, change)
@@ -173,6 +186,16 @@ class FrameEvaluator:
             changed = self.carry(block, s, frame) or changed
         if changed and self.rewrite:
             block.changed()
+
+    def targets(self, s: dict[str, Section]) -> None:
+        """The jump targets a block of the symbolic part carries (``RunOrder``)."""
+        label = s.get("Label")
+        sequence = s.get("Sequence")
+        if label is not None or sequence is not None:
+            names = [] if label is None else [str(getattr(label, "name"))]
+            if sequence is not None:
+                names.append(f"N{getattr(sequence, 'number')}")
+            self.reached.order.target(names)
 
     def settings(self, block: Block, s: dict[str, Section]) -> None:
         """Units, plane, distance mode and work system, as the block leaves them."""

@@ -41,14 +41,15 @@ def truth(cond: Expr) -> Expr:
 
 def untruth(cond: Expr) -> Expr:
     """The ISG condition of a neutral one: ``ABS[c] >= 0.5`` -> ``c``; a comparison as it is; any other
-    condition (true when non-zero) has no exact ISG spelling."""
+    condition ``c`` (true when non-zero, SINUMERIK's ``LOOP`` among them) as the comparison ``c != 0``,
+    which gives 1 exactly then."""
     if isinstance(cond, Binary):
         if (cond.op == "ge" and isinstance(cond.left, Func) and cond.left.name == "abs"
                 and isinstance(cond.right, Num) and cond.right.value == 0.5):
             return cond.left.args[0]
         if cond.op in _COMPARISONS:
             return cond
-    raise UnsupportedError("a condition that is true when non-zero (ISG's is true from 0.5 on)")
+    return Binary("ne", cond, Num(0.0))
 
 
 class Nesting:

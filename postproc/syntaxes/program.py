@@ -44,6 +44,10 @@ RUN_CHECK = "run_check"
 """``ctx.run_data`` key: the reading steps after this one, as a function of the blocks a run yields
 (``RUN_BEFORE_KEEP``): what they refuse in the run (an arc whose computed end is not on its circle) is
 reported at its line, as the flattened program's would be (absent: the run alone is checked)."""
+HIGHEST_SEQUENCE = "highest_sequence"
+"""``ctx.run_data`` key: the highest block number of a program kept symbolically (``ProgramSyntax``, when it
+decides to keep it): a target that spells a construct as jumps to block numbers of its own (Fanuc's
+``IF .. ELSE``, ``postproc.rs274.macro_jumps``) numbers them above it, so they never meet the program's."""
 ARGUMENTS_KEY = "macro_arguments"
 """``ctx.run_data`` key of the locals a program run on its own starts with (``--arg A=30``: {1: 30.0})."""
 """What the step keeps of a streamed block, for a backward jump (``ProgramSyntax._reread``): its text
@@ -184,11 +188,17 @@ class ProgramSyntax(Syntax):
         seen = 0
         check: StreamCheck | None = None
         # locals: a compiled module looks another module's names up per use
-        control, assign, start = CONTROL, ASSIGN, "ProgramStart"
+        control, assign, start, sequence = CONTROL, ASSIGN, "ProgramStart", "Sequence"
+        highest = -1
         for block in blocks:
             sections = block.sections
             if control in sections or assign in sections or (block.values and _computes(block)):
                 break
+            numbered = sections.get(sequence)
+            if numbered is not None:
+                number = _number(numbered)
+                if number > highest:
+                    highest = number
             if start in sections:
                 if check is None:
                     check = self.structure_check(ctx)
@@ -205,6 +215,8 @@ class ProgramSyntax(Syntax):
         if ctx.program_mode == "auto":
             body = [block]
             body.extend(blocks)
+            ctx.run_data[HIGHEST_SEQUENCE] = max([highest] + [_number(b.sections[sequence]) for b in body
+                                                              if sequence in b.sections])
             if not _sound(body, check):
                 return  # its errors are reported: nothing is kept or run
             reason = self._keep_reason(body, ctx, kept)
@@ -409,6 +421,12 @@ def _may_be_vacant(body: list[Block]) -> bool:
         if isinstance(control, (Call, ModalCall)) and (not isinstance(control.name, str) or control.name not in defined):
             return True
     return False
+
+
+def _number(section: object) -> int:
+    """A ``Sequence`` section's block number."""
+    number: int = getattr(section, "number")
+    return number
 
 
 def _computes(block: Block) -> bool:

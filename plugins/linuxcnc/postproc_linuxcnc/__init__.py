@@ -17,6 +17,7 @@ from typing import Callable, ClassVar, Iterator
 from postproc.compensation.rules import ARC_CORNERS
 from postproc.dialect import Dialect, Lazy, Reader
 from postproc.rs274.order_of_execution import stops_after_motion
+from postproc.lowering.structured_jumps import nest_forward_jumps
 from postproc.errors import Diagnostics
 from postproc.hookspecs import hookimpl
 from postproc.ir import Block
@@ -90,9 +91,11 @@ class Linuxcnc(Dialect):
     """``( )`` and ``;`` comments; ``(MSG,`` ``(LOGOPEN,`` ... act (``active_comments.ACTIVE``)."""
     LINE_RULE = Lazy[LineRule](".lines:LINES")
     """rs274 reads at most 252 bytes a line: a longer comment is shortened (``lines.py``)."""
-    LOWERING = (stops_after_motion, _subprogram_layout, _thread_feed_apart)
-    """A moving block's spindle stop and coolant off go in a block of their own after it: LinuxCNC runs
-    them before the motion (``postproc.rs274.order_of_execution``); another dialect's subprograms stand
+    LOWERING = (nest_forward_jumps, stops_after_motion, _subprogram_layout, _thread_feed_apart)
+    """Another dialect's forward jumps as ``o.. if`` .. ``endif`` (or ``break``) and ``UNTIL`` as ``o.. do`` ..
+    ``while`` where they have that shape, exact equalities in conditions as two exact comparisons
+    (``postproc.lowering.structured_jumps``). A moving block's spindle stop and coolant off go in a block of
+    their own after it: LinuxCNC runs them before the motion (``postproc.rs274.order_of_execution``); another dialect's subprograms stand
     after their callers, and a cycle gets the return level its source assumed (``layout``); a thread
     block's F goes on a line before it (``lathe_writer.feed_apart``: G33 refuses F)."""
     CYCLE_SEMANTICS = "rs274"
