@@ -69,6 +69,8 @@ class Moves:
         turning spindle first, as a tool changer does, and stopping a stopped spindle is no event."""
         self.after_tap: str | None = None
         """The spindle direction before a tap's out stroke, until the next spindle code (``Simulator._restates``)."""
+        self.oriented = False
+        """An oriented spindle stop was emitted since ``simulate`` last looked (``prepared_taps``)."""
         self.lathe = ctx.lathe
         self.length_at_axis = ctx.length_at_axis
         """A length change keeps the machine point (``Dialect.LENGTH_AT_PROGRAMMED_AXIS``)."""
