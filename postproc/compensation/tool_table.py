@@ -88,6 +88,10 @@ class ToolTable:
         applies them too ([V] LinuxCNC, ``postproc_linuxcnc.tool_entry``); none but what a program wrote."""
         return {axis: value for axis, value in self.across.get(register, {}).items() if value}
 
+    def set_sideways(self, register: int, axis: str, value: float) -> None:
+        """Write entry ``register``'s offset along ``axis`` (X or Y), mm, as the program's own."""
+        self.across.setdefault(register, {})[axis] = value
+
     def set(self, quantity: str, register: int, value: float) -> None:
         """Write register ``register``'s ``quantity`` ("length" or "radius"), mm, as the program's own."""
         for other in self._sharing(quantity, register):
