@@ -37,7 +37,7 @@ from mypy_extensions import mypyc_attr
 
 from ..context import Context
 from ..dialect import Dialect
-from ..errors import PostprocError, ProgramError
+from ..errors import PostprocError, ProgramError, UnsupportedError
 from ..control import ASSIGN, CONTROL
 from ..expr import Binary, Expr, Num
 from ..ir import AXES, Block, Comments, CompoundMotion, CutterCompensation, DataSetting, Motion, Section
@@ -216,8 +216,8 @@ class FrameEvaluator:
             # the entry is the tool's point in the work system without the tool offset, less the values
             # ([V] LinuxCNC convert_setup_tool): that point under the program's shift or rotation is not
             # worked out here, so no entry is guessed
-            raise ProgramError("a tool entry measured where the tool stands, under a coordinate shift or rotation "
-                               "of the program's own, is not modelled")
+            raise UnsupportedError("a tool entry measured where the tool stands, under a coordinate shift or rotation "
+                                   "of the program's own, is not modelled")
         if not setting.table.startswith("work_offset"):
             return False
         values = setting.values
