@@ -121,7 +121,8 @@ class ToolTable:
 
     def _value(self, quantity: str, register: int) -> float:
         if register == 0:
-            return 0.0  # [K] Fanuc's H00/D00 hold zero; [?] LinuxCNC's tool 0 is "no tool"
+            return 0.0  # [V] Fanuc's D0 "always means 0" (B-63324EN/03, 15i-MA, 14.3 text, cncmanuals.com .../403);
+            # [K] H00 too; [?] LinuxCNC's tool 0 is "no tool"
         key = (quantity, register)
         value = self.written.get(key)
         if value is None:
