@@ -33,7 +33,7 @@ from ..control import ASSIGN, CONTROL
 from ..dialect import Dialect
 from ..errors import UnsupportedError
 from ..expr import Expr
-from ..ir import Block, CompoundMotion, DataSetting, Motion, Section
+from ..ir import Block, Comments, CompoundMotion, DataSetting, Motion, Section
 from ..state import MM_PER_INCH
 from ..synchronised_tap import RigidTap
 
@@ -96,6 +96,9 @@ def _take(block: Block, setting: DataSetting, entries: dict[int, dict[str, float
                                                     setting.incremental, setting.text)
     else:
         del block.sections["DataSetting"]
+        comments = block.sections.get("Comments")
+        note = f"TOOL {setting.index} OFFSETS ACROSS THE SPINDLE: WRITTEN INTO THE PATH"
+        block.sections["Comments"] = Comments(([*comments.texts] if isinstance(comments, Comments) else []) + [note])
     block.changed()
 
 
