@@ -9,7 +9,9 @@ G59.3), simulated as LinuxCNC's interpreter works them out ([V] ``interp_convert
 * Hand-derived: the values of one program worked out from the rule.
 * Under a coordinate shift or rotation of the program's own (``G92``, ``G52``, ``G10 L2 R``) the entry is not
   guessed: a located error.
-* Towards another controller an entry measured where the tool stands is never dropped: refused by name.
+* Towards Fanuc and grbl, ``G10 L10`` is worked out where the translation knows the point and the offset in
+  force (``postproc.lowering.measured_entries``): seeded programs translated move as rs274 and verify;
+  where it does not (``L11``, after a change of work system), a located error: never a dropped entry.
 """
 
 from __future__ import annotations
@@ -26,6 +28,7 @@ from postproc.errors import Diagnostics, ErrorLevel, ErrorList
 from postproc.setup.machine import ToolData
 from postproc.setup.machine_setup import MachineSetup
 from postproc.simulate.toolpath import toolpath_events
+from postproc.simulate.verify import verify_lines
 from tests.support import rs274
 
 PROGRAMS = 40
@@ -51,8 +54,8 @@ def controlled(text: str) -> list[tuple[float, float, float]]:
 
 
 def machine_points(calls: list[str], scale: float) -> list[tuple[float, float, float]]:
-    """rs274's controlled point of each straight move, mm: the canonical point, plus the active work offset and
-    the tool offset in force as it prints them (program units)."""
+    """rs274's controlled point of each straight move that moves, mm: the canonical point, plus the active work
+    offset and the tool offset in force as it prints them (program units)."""
     g5x = tlo = (0.0, 0.0, 0.0)
     out = []
     for call in calls:
@@ -61,11 +64,15 @@ def machine_points(calls: list[str], scale: float) -> list[tuple[float, float, f
         elif m := re.search(r"USE_TOOL_LENGTH_OFFSET\((\S+) (\S+) (\S+),", call):
             tlo = (float(m.group(1)), float(m.group(2)), float(m.group(3)))
         elif m := re.search(r"STRAIGHT_(?:TRAVERSE|FEED)\((\S+), (\S+), (\S+),", call):
-            out.append(tuple((float(m.group(i + 1)) + g5x[i] + tlo[i]) * scale for i in range(3)))
+            point = tuple((float(m.group(i + 1)) + g5x[i] + tlo[i]) * scale for i in range(3))
+            if not out or max(abs(p - q) for p, q in zip(point, out[-1])) > 1e-9:
+                out.append(point)  # (a move to where the tool stands moves nothing: no move of ours)
     return out  # type: ignore[return-value]
 
 
-def _program(rng: random.Random) -> str:
+def _program(rng: random.Random, measured: tuple[int, ...] = (10, 11), systems: bool = True) -> str:
+    """A seeded program; ``measured``: the L numbers it measures entries with; ``systems``: it switches
+    between G54 and G55."""
     inch = rng.random() < 0.25
     u = 1 / 25.4 if inch else 1.0
 
@@ -77,18 +84,20 @@ def _program(rng: random.Random) -> str:
         return " ".join(a + n() for a in chosen)
 
     tool = rng.choice(TOOLS)
-    lines = [f"{'G20' if inch else 'G21'} G90 G17 G94", f"G10 L2 P1 {axes()}", f"G10 L2 P2 {axes()}",
-             f"G10 L2 P9 {axes()}", f"G10 L1 P{tool} {axes()}", f"T{tool} M6", f"G43 H{tool}",
-             f"G0 X{n()} Y{n()} Z{n()}", f"F{200 * u:.4f}"]
+    systems_set = [f"G10 L2 P1 {axes()}", f"G10 L2 P2 {axes()}", f"G10 L2 P9 {axes()}"] if systems else []
+    lines = [f"{'G20' if inch else 'G21'} G90 G17 G94", *systems_set, f"G10 L1 P{tool} {axes()}", f"T{tool} M6",
+             f"G43 H{tool}", f"G0 X{n()} Y{n()} Z{n()}", f"F{200 * u:.4f}"]
+    settle = [] if systems else [f"G0 Z{n()}"]  # (Fanuc applies a length change at its next move, rs274 at the
+    # next Z: a translation refuses a setting between the two, so these programs program Z at once)
     for _ in range(rng.randint(6, 12)):
         kind = rng.random()
         if kind < 0.35:
-            lines.append(f"G10 L{rng.choice((10, 11))} P{rng.choice(TOOLS)} {axes()}")
+            lines.append(f"G10 L{rng.choice(measured)} P{rng.choice(TOOLS)} {axes()}")
             if rng.random() < 0.7:
-                lines.append(f"G43 H{tool}")  # the entry applies where G43 reads it
+                lines += [f"G43 H{tool}", *settle]  # the entry applies where G43 reads it
         elif kind < 0.45:
-            lines.append(rng.choice(["G49", f"G43 H{rng.choice(TOOLS)}"]))
-        elif kind < 0.5:
+            lines += [rng.choice(["G49", f"G43 H{rng.choice(TOOLS)}"]), *settle]
+        elif kind < 0.5 and systems:
             lines.append(rng.choice(["G54", "G55"]))
         elif kind < 0.6:
             lines.append(f"G91 G1 {axes()}")
@@ -132,10 +141,38 @@ def test_under_a_shift_or_rotation_of_the_program_the_entry_is_not_guessed(shift
     assert error.location is not None and error.location.line == 5 and "measured where the tool stands" in str(error)
 
 
+@needs_rs274
+@pytest.mark.parametrize("target", ["fanuc", "grbl"])
+@pytest.mark.parametrize("seed", range(PROGRAMS // 2))
+def test_entries_measured_in_the_active_system_translate_and_move_as_rs274(seed: int, target: str) -> None:
+    text = _program(random.Random(2680 + seed), measured=(10,), systems=False)
+    scale = 25.4 if "G20" in text else 1.0
+    theirs = machine_points(rs274.run_rs274(text, tool_table=TOOL_TABLE), scale)
+    out = io.StringIO(newline="")
+    translate(_lines(text), out, file="t.ngc", source="linuxcnc", target=target, setup=SETUP,
+              diagnostics=Diagnostics(ErrorLevel.RAISE, warn_stream=io.StringIO()))
+    evs = toolpath_events(_lines(out.getvalue()), file="t.nc", dialect=target, setup=SETUP)
+    ours = [(p["x"], p["y"], p["z"]) for e in evs if e.get("move") in ("rapid", "feed") for p in [e.get("controlled", e)]]
+    assert len(ours) == len(theirs), (text, out.getvalue())
+    for a, b in zip(ours, theirs):
+        assert max(abs(p - q) for p, q in zip(a, b)) <= TOLERANCE_MM, (text, out.getvalue(), a, b)
+    report = verify_lines(_lines(text), _lines(out.getvalue()), file_in="t.ngc", file_out="t.nc", source="linuxcnc",
+                          target=target, setup=SETUP)
+    assert report.ok, report.summary()
+
+
+def test_a_measured_length_towards_fanuc_hand_derived() -> None:
+    # tool 1 of length 10 (G10 L1) at Z5: the point without the offset reads 5 + 10 = 15, L10 Z3 sets 12
+    text = "G21 G90\nG10 L1 P1 Z10\nT1 M6\nG43 H1\nG0 X1 Y2 Z5\nG10 L10 P1 Z3\nG43 H1\nG1 X5 Z0 F100\nM2\n"
+    out = io.StringIO(newline="")
+    translate(_lines(text), out, file="t.ngc", source="linuxcnc", target="fanuc", setup=SETUP)
+    assert "\nG10 L10 P1 R12.\n" in out.getvalue(), out.getvalue()
+
+
 @pytest.mark.parametrize("target", ["fanuc", "grbl", "isg", "siemens"])
 @pytest.mark.parametrize("mode", ["error", "warn"])
-def test_towards_another_controller_the_entry_is_refused_by_name(target: str, mode: str) -> None:
-    text = "G21 G90\nT3 M6\nG0 X1 Y1 Z1\nG10 L10 P3 X0 Y0\nG43 H3\nG0 X2\nM2\n"
+def test_an_entry_the_translation_cannot_work_out_is_refused_by_name(target: str, mode: str) -> None:
+    text = "G21 G90\nT3 M6\nG0 X1 Y1 Z1\nG10 L11 P3 X0 Y0\nG43 H3\nG0 X2\nM2\n"
     warnings = io.StringIO()
     out = io.StringIO(newline="")
     try:
