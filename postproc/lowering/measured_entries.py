@@ -47,8 +47,7 @@ def write_measured_entries(blocks: Iterator[Block], ctx: Context, target: type[D
     run = _Run(ctx)
     for block in blocks:
         s = block.sections
-        if not run.pending and not run.homed and "ToolLengthOffset" not in s and "DataSetting" not in s \
-                and "Units" not in s and "DistanceMode" not in s:
+        if not run.pending and not run.homed and s.keys().isdisjoint(_WATCHED):
             m = s.get("Motion")
             if m is None or m.mode not in _HOME:  # type: ignore[attr-defined]
                 yield block  # the common block: the frame evaluation follows its point
@@ -68,6 +67,8 @@ def write_measured_entries(blocks: Iterator[Block], ctx: Context, target: type[D
 
 
 _HOME: Final = ("home", "home2")
+_WATCHED: Final = frozenset(("ToolLengthOffset", "DataSetting", "Units", "DistanceMode"))
+"""Sections ``_Run.follow`` reads in a block that makes no reference return while nothing is pending."""
 
 
 class _Run:
