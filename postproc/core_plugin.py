@@ -8,6 +8,8 @@ from . import cycles, patterns
 from .block_rules import check_blocks
 from .lowering.machine_functions import drop_foreign_machine_functions
 from .lowering.program_end import comment_after_end
+from .lowering.measured_entries import write_measured_entries
+from .lowering.sideways_offsets import write_sideways_offsets
 from .lowering.tool_entries import write_tool_entries
 from .lowering.program_frame import frame_program
 from .control import register_control
@@ -57,6 +59,8 @@ def postproc_register_lowerings(register: Callable[[Lowering], None]) -> None:
     register(resolve_dynamic_cutter_compensation)  # before inverse time: its feeds follow the resolved moves
     register(convert_inverse_time)  # after the expansions: it follows the moves they leave
     register(comment_after_end)
+    register(write_measured_entries)  # after the frames (it reads their point), before the two below
+    register(write_sideways_offsets)  # before the entries: it takes their X and Y into the path
     register(write_tool_entries)  # before the target's steps: grbl's read the registers it writes
     register(resolve_rigid_taps)  # after the cycles: an expanded rigid tap cycle shows its taps
     register(time_length_changes)  # after the cycles: a change is carried to the move that applies it

@@ -146,9 +146,10 @@ def _refusal(text: str, target: str, setup: Any = SETUP) -> str:
     return "\n".join(str(e) for e in info.value.errors)
 
 
-def test_an_offset_across_the_spindle_is_refused_at_the_entry() -> None:
-    message = _refusal("G21\nG10 L1 P1 X1 Z3\nT1 M6\nG43 G0 Z5\nM2\n", "fanuc")
-    assert "t.ngc:2:" in message and "a tool offset along X" in message
+def test_an_offset_across_the_spindle_goes_into_the_path() -> None:
+    # the entry's X goes into the next absolute X under G43 (postproc.lowering.sideways_offsets), its Z into G10 L10
+    out = translated("G21\nG10 L1 P1 X1 Z3\nT1 M6\nG43 G0 Z5\nX2\nM2\n", "fanuc").splitlines()
+    assert out[1] == "G10 L10 P1 R3." and out[-2] == "G00 X3.", out
 
 
 def test_an_entry_of_zero_offsets_across_the_spindle_is_left_out() -> None:

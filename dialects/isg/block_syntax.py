@@ -18,7 +18,10 @@ from postproc.rs274.block_syntax import WordBlockSyntax
 from postproc.rs274.codes import CodeTable
 
 from .codes import CODES
-from .taps import MODES, read_tap_stroke
+
+TAP_CODES = {"in": "G331", "out": "G332"}
+"""The rigid tap strokes' spelling, for the messages of ``read_tap_stroke``."""
+from postproc.isg_family.taps import MODES, read_tap_stroke
 
 
 class IsgBlockSyntax(WordBlockSyntax):
@@ -39,7 +42,7 @@ class IsgBlockSyntax(WordBlockSyntax):
         read_tool_data(block, ctx, values, used, toggles=False, first=0)
         motion = block.sections.get("Motion")
         if isinstance(motion, Motion) and motion.mode in MODES:
-            read_tap_stroke(block, ctx, motion, values, used)
+            read_tap_stroke(block, ctx, motion, values, used, TAP_CODES)
             return
         if "MachineCoordinates" in block.sections and isinstance(motion, Motion):
             mode = ctx.state.motion  # ``#SUPPRESS OFFSETS`` moves in the motion mode in force

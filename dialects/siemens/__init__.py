@@ -43,6 +43,12 @@ def resolve_radius_where_d_cannot(blocks: Iterator[Block], ctx: Context, target:
     return step(blocks, ctx, target)
 
 
+def orient_before_taps(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """``tap_strokes.orient_before_taps``, imported when first used."""
+    from .tap_strokes import orient_before_taps as step
+    return step(blocks, ctx, target)
+
+
 class Siemens(Dialect):
     NAME = "siemens"
     DESCRIPTION = "Siemens SINUMERIK 840D sl / 828D milling: R parameters, DEF variables, IF/WHILE/FOR, GOTOF labels"
@@ -69,8 +75,12 @@ class Siemens(Dialect):
 
     PROGRAM_NUMBERS = True
     """``%_N_NAME_MPF`` names the main program."""
-    SPINDLE_ORIENTATION = False
-    """``SPOS`` is not written yet (M19 is the machine builder's [?])."""
+    SPINDLE_ORIENTATION = True
+    """``SPOS=<angle>`` stops the spindle at the angle under position control (``reader.spindle_position``);
+    M19 is the machine builder's [?]."""
+    TAP_STROKES = True
+    """A rigid tap is the strokes ``G331`` (in) and ``G332`` (out, the spindle reversed), after ``SPOS=``
+    (``tap_strokes``): a synchronised tap of another family is written as them."""
     CUTTER_COMPENSATION = True
     """G40/G41/G42 with the radius of the selected D."""
     TOOL_LENGTH_OFFSET = True
@@ -88,13 +98,14 @@ class Siemens(Dialect):
     """Variables and control flow are read, run and written: another dialect's program that computes is kept
     symbolic where every construct has an exact SINUMERIK spelling (``control_writing``: R parameters,
     IF/WHILE/REPEAT/FOR, GOTOF/GOTOB), else flattened with the usual warning."""
-    LOWERING = (stops_before_motion, resolve_radius_where_d_cannot, select_tool_data)
+    LOWERING = (stops_before_motion, resolve_radius_where_d_cannot, select_tool_data, orient_before_taps)
     """A spindle stop or coolant off that the source made before its block's motion goes in a block of its
     own before it (SINUMERIK acts on M5/M9 after the block's motion, as Fanuc [?]); a G41/G42 whose D would
     bring another length than the one in force (a D carries the edge's length and radius together [K: 840D
     Fundamentals "Tool offsets"]) becomes the compensated path where the source's rules are modelled
     (``resolve_radius_where_d_cannot``, as for ISG); another family's length and radius registers become the
-    D that selects them (``select_tool_data``)."""
+    D that selects them (``select_tool_data``); an in stroke of a rigid tap gets the ``SPOS=`` that puts the
+    spindle under position control before it (``orient_before_taps``)."""
 
     @classmethod
     def moves_like(cls, cycle: ResolvedCycle) -> bool:

@@ -29,7 +29,7 @@ if TYPE_CHECKING:
     from postproc.ir import Block
 
 _ARC_CODES = {"2": "cw", "02": "cw", "3": "ccw", "03": "ccw"}
-_MOTION_CODES = frozenset(("0", "00", "1", "01", "2", "02", "3", "03", "33"))
+_MOTION_CODES = frozenset(("0", "00", "1", "01", "2", "02", "3", "03", "33", "331", "332"))
 
 
 class SiemensArc(Section):

@@ -9,6 +9,7 @@
   is a located error (G700/G710 say it without doubt).
 * ``D<n>`` selects cutting edge n of the tool: its length applies (``D0``: none) and G41/G42 take its
   radius (``postproc.isg_family.tool_data``, as on ISG).
+* ``G331``/``G332`` are the rigid tap's strokes, read as ISG's (``postproc.isg_family.taps``).
 """
 
 from __future__ import annotations
@@ -18,7 +19,8 @@ from typing import Any, ClassVar
 from postproc.context import Context
 from postproc.errors import ProgramError
 from postproc.expr import Expr
-from postproc.ir import Block, Dwell, MachineCoordinates, ReturnLevel
+from postproc.ir import Block, Dwell, MachineCoordinates, Motion, ReturnLevel
+from postproc.isg_family.taps import MODES, read_tap_stroke
 from postproc.isg_family.tool_data import read_tool_data
 from postproc.rs274.block_syntax import WordBlockSyntax, col_of_word
 from postproc.rs274.codes import CodeTable, g_key
@@ -33,8 +35,11 @@ from .helix import SiemensTurn
 from .holes import SiemensHoles
 from .holes import resolve as resolve_holes
 
-_MOTION = frozenset(("", "1", "2", "3", "33"))
-"""Group-1 codes (G0 ... G3, G33; ``lstrip("0")`` of G0 is empty) that end ``CIP``."""
+TAP_CODES = {"in": "G331", "out": "G332"}
+"""The rigid tap strokes' spelling, for the messages of ``read_tap_stroke``."""
+
+_MOTION = frozenset(("", "1", "2", "3", "33", "331", "332"))
+"""Group-1 codes (G0 ... G3, G33, G331, G332; ``lstrip("0")`` of G0 is empty) that end ``CIP``."""
 GEOMETRY_KEY = "siemens_geometry_units"
 """``ctx.state.extra`` key: True while G70/G71 (lengths only) is the units code in force."""
 
@@ -135,6 +140,9 @@ class SiemensBlockSyntax(WordBlockSyntax):
                                    ctx.at(block, ctx.column_of(block, "F")))
         super().g_sections(block, ctx, codes, values, used, cycle_block)
         read_tool_data(block, ctx, values, used, toggles=False, first=0)
+        motion = block.sections.get("Motion")
+        if isinstance(motion, Motion) and motion.mode in MODES:
+            read_tap_stroke(block, ctx, motion, values, used, TAP_CODES)
 
     def _dwell(self, block: Block, ctx: Context, values: dict[str, Any], used: set[str], num: str) -> None:
         """``G4 F<seconds>``; the F is popped so no feed is made of it."""

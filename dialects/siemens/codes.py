@@ -13,7 +13,8 @@ means something else on a Fanuc control, the table is what tells them apart (iss
   work offsets are ``G54``-``G57`` (1-4) and ``G505``-``G599`` (5-99). ``G500`` (deselect, or the base
   frame G500 holds) is kept verbatim [?].
 * ``G4`` takes its time in ``F`` (seconds) or ``S`` (spindle revolutions, not modelled), never a feed.
-* ``G33`` is thread cutting, ``G331``/``G332`` rigid tapping: kept verbatim.
+* ``G33`` is thread cutting: kept verbatim. ``G331``/``G332`` are the rigid tap's strokes, in and out
+  (``postproc.isg_family.taps``, which says the facts), after ``SPOS=`` (an oriented stop: ``reader``).
 * ``G53``/``G153`` suppress the frames for one block (not Fanuc's move in machine coordinates; whether the
   tool offsets stay is machine data ``$MN_G53_TOOLCORR`` [V: 802D sl/840D ISO Milling 04.07, 3.1.1]): the
   block syntax reads them, with ``SUPA``, where that cannot matter (``frame_suppression``), else keeps them
@@ -31,6 +32,8 @@ ROWS = (
     ("G1", "01", "motion", "linear"),
     ("G2", "01", "motion", "cw"),
     ("G3", "01", "motion", "ccw"),
+    ("G331", "01", "motion", "tap_in"),
+    ("G332", "01", "motion", "tap_out"),
     ("G4", "00", "dwell", None),
     ("G9", "00", "path_once", "exact_stop"),
     ("G17", "02", "plane", "XY"),
@@ -77,7 +80,7 @@ CODES = CodeTable(
     ROWS,
     native_g={
         "5": "high-speed grinding", "25": "working area limitation", "26": "working area limitation",
-        "33": "thread cutting", "331": "rigid tapping", "332": "rigid tapping retraction",
+        "33": "thread cutting",
         "58": "axial programmable offset", "59": "axial programmable offset",
         "500": "settable zero offset deselection", "93": "inverse-time feed", "96": "constant cutting speed",
         "97": "constant cutting speed off", "110": "polar pole", "111": "polar pole", "112": "polar pole",

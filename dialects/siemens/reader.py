@@ -34,7 +34,8 @@ file a subprogram; ``RET``/``M17`` return.
 Kept verbatim (``NativeCode`` tagged ``siemens``: round trip byte for byte, refused by every other dialect
 and by the simulator, by name): the frames ``frames`` does not model (``ROTS``, computed values...), the cycles
 ``cycles`` keeps verbatim, other ``MCALL``s, parameters by reference (``VAR``), every other instruction word
-(``SOFT``, ``BRISK``, ``SPOS``...; ``SUPA`` is read: ``frame_suppression``), multi-letter addresses other
+(``SOFT``, ``BRISK``, ``SPOSA``...; ``SUPA`` is read: ``frame_suppression``; ``SPOS=<angle>``:
+``spindle_position``), multi-letter addresses other
 than ``CR``, ``AR``, ``I1=``.. of ``CIP`` (``arcs``) and ``TURN`` (``helix``), strings other than ``T="name"`` (the set-up's tool of that name), array,
 ``CHAR``/``STRING``/``AXIS``/``FRAME`` declarations and the operators the IR lacks (``DIV``, ``B_AND``...).
 
@@ -52,7 +53,7 @@ from postproc.control import (
 from postproc.dialect import Reader
 from postproc.errors import Location, ParseError, PostprocError
 from postproc.expr import Binary, Expr, Func, Num, Var
-from postproc.ir import Block, BlockDelete, Comments, NativeCode, ProgramStart, Section, Sequence
+from postproc.ir import Block, BlockDelete, Comments, NativeCode, ProgramStart, Section, Sequence, SpindleOrientation
 from postproc.isg_family.expressions import Unmodelled
 from postproc.rs274.expressions import ExprSyntaxError
 from postproc.rs274.lexer import split_lines
@@ -76,8 +77,9 @@ SKIP_LEVELS = 9
 _OPENERS = {"IF": "ENDIF", "WHILE": "ENDWHILE", "FOR": "ENDFOR", "REPEAT": "UNTIL", "LOOP": "ENDLOOP"}
 _CLOSERS = {close: open_ for open_, close in _OPENERS.items()}
 _JUMPS = ("GOTOF", "GOTOB", "GOTOC", "GOTO")
-_WORDS_READ = frozenset(("CIP", "SUPA"))
-"""Instruction words that start a block and are read with its words (``arcs``, ``frame_suppression``)."""
+_WORDS_READ = frozenset(("CIP", "SUPA", "SPOS"))
+"""Instruction words that start a block and are read with its words (``arcs``, ``frame_suppression``,
+``spindle_position``)."""
 
 
 class SiemensReader(Reader):
@@ -428,6 +430,9 @@ class _State(CallReading):
             elif upper == "TURN" and assigned:
                 pos = self.turns(block, code, pos, eq + 1)
                 continue
+            elif upper == "SPOS" and assigned:
+                pos = self.spindle_position(block, code, pos, eq + 1)
+                continue
             elif upper == "SUPA" and not assigned:
                 block.add(SiemensSupa())  # frames suppressed in this block (``frame_suppression``)
                 pos = end
@@ -477,6 +482,23 @@ class _State(CallReading):
             raise self.error(block.line, pos + 1, f"TURN={value.value:g}: a whole number of full circles from 0 "
                                                   f"to {MAX_TURNS}")
         block.add(SiemensTurn(int(value.value)))
+        return end
+
+    def spindle_position(self, block: Block, code: str, pos: int, start: int) -> int:
+        """``SPOS=90``: the spindle stops at 90 degrees, under position control: an oriented spindle stop
+        (``SpindleOrientation``), the one a rigid tap's ``G331`` needs before it [K: SINUMERIK 840D sl
+        Fundamentals, "Tapping without compensating chuck (G331, G332)": "the spindle must be switched to
+        the position-controlled mode with SPOS" before G331, as quoted at
+        https://en.cncforum.net/t/siemens-cnc-milling-g331-g332-codes-thread-interpolation/197]. A computed
+        angle is kept as its expression; the positioning modes (``SPOS=DC(..)``, ``ACP(..)``, ``IC(..)``: the
+        way round) and ``SPOS[n]`` (another spindle) are not modelled."""
+        if SpindleOrientation.KEY in block.sections:
+            raise self.error(block.line, pos + 1, "SPOS appears twice in one block")
+        at = skip(code, start)
+        if code[at:at + 3].upper() in ("DC(", "ACP", "ACN", "IC(", "AC("):
+            raise Unmodelled("SPOS= with a positioning mode (DC, ACP, ACN, AC, IC)", pos)
+        end, value = parse_expr(code, at)
+        block.add(SpindleOrientation(value.value if isinstance(value, Num) else value))
         return end
 
     def opening_angle(self, block: Block, code: str, pos: int, start: int) -> int:

@@ -196,6 +196,29 @@ class SiemensWriter(WordWriter):
             words[-1] = "CR" + value if value.startswith("=") else "CR=" + value
         return words
 
+    def spindle_orientation_words(self, s: Any, block: Block) -> list[str]:
+        """``SPOS=<angle>``: the spindle stops at the angle under position control (``reader``)."""
+        if isinstance(s.angle, Expr):
+            return ["SPOS" + self.expression(s.angle, block, "a computed orientation angle")]
+        return ["SPOS=" + (f"{float(s.angle):.6f}".rstrip("0").rstrip(".") or "0")]
+
+    def rigid_tap_words(self, s: Any, block: Block) -> list[str]:
+        """A rigid tap stroke, ``G331 Z.. K.. S..`` in or ``G332 Z.. K..`` out (``tap_strokes``); a whole tap
+        arrives split into strokes (``postproc.cycles.rigid_tap_lowering.as_strokes``), the pitch signed by the
+        spindle's direction."""
+        if s.stroke is None or s.dwell or s.speedup is not None:
+            self.unsupported("a rigid tap as one move in and out (SINUMERIK taps by the strokes G331/G332)", block)
+        words = [self.code("motion", "tap_in" if s.stroke == "in" else "tap_out", "a rigid tap stroke", block)]
+        incremental = self.modal.distance == "incremental"
+        for axis, value in s.axes.items():
+            words.append(axis + (self.expression(value, block) if isinstance(value, Expr)
+                                 else self.position(axis, value, incremental)))
+        words.append("K" + self.length(s.pitch, block, "K"))
+        rpm = self.modal.spindle_rpm
+        if s.stroke == "in" and "SpindleSpeed" not in block.sections and isinstance(rpm, (int, float)) and rpm:
+            words.append("S" + self.speed(rpm))  # G331 is programmed with its S [K]
+        return words
+
     def return_level_words(self, s: Any, block: Block) -> list[str]:
         """Fanuc's G98/G99: the level is the RTP of the ``MCALL`` written for a cycle (``cycle_writing``)."""
         return []

@@ -120,6 +120,24 @@ its source is closed]."""
 #     the figures, which carry no text there: the [K] tags on the figure rules below stay [K].
 # [?] not read in this session: the type B figures for an inner start-up corner and for the cancel move
 #     (refused by name), the less-than-1-degree outer start-up case (simulated as any acute corner).
+# Searched again (issue 26, tool26), text found in the stored pages:
+# [V] that outer corners get no arc: B-62754EN (16/18-C MC) "Corner offset circular interpolation (G39)",
+#     http://www.cncmanuals.com/fanuc/fanuc-series-16-18-160-180-model-c-machining-center-operators-manual.html/298:
+#     an arc of the tool radius round a corner is made by G39, programmed in offset mode, which creates the
+#     new vector and moves along the arc from the old vector to it; so without G39 a corner has none. How
+#     the outer corner is made instead (the intersection, or the radius extensions when acute) is in the
+#     figures only: ``outside_corner="extend"`` stays [K].
+# [V] start-up and cancel ends, Haas mill operator's manual (a Fanuc-compatible control), "Entry and Exit
+#     from Cutter Compensation", https://staging-diy.haascnc.com/entry-and-exit-cutter-compensation-0: the
+#     block that turns compensation on starts at the programmed point and ends offset to the left or right;
+#     the block that turns it off starts offset and ends at the programmed point (the cancel move modelled
+#     below). Which way the start-up's end vector points (square to the next move: type A) is not in that
+#     text: ``entry`` stays [K].
+# [V] a changed radius in offset mode: B-63324EN/03 (15i-MA) 14.3, "Change of the cutter compensation value",
+#     http://www.cncmanuals.com/fanuc/fanuc-series-15i-150i-ma-programming-operators-manual.html/402: the
+#     vector at the end point of the block is calculated with the new value. Not modelled: a G41/G42 while
+#     compensation is on is refused (``CutterRadius.start``), so no path is guessed.
+# Nothing found contradicts a rule below.
 FANUC_A = CutterRules(
     name="Fanuc cutter compensation C",
     register_absent="modal",  # [K] the D register stays in force until another is programmed

@@ -88,6 +88,10 @@ class ToolTable:
         applies them too ([V] LinuxCNC, ``postproc_linuxcnc.tool_entry``); none but what a program wrote."""
         return {axis: value for axis, value in self.across.get(register, {}).items() if value}
 
+    def set_sideways(self, register: int, axis: str, value: float) -> None:
+        """Write entry ``register``'s offset along ``axis`` (X or Y), mm, as the program's own."""
+        self.across.setdefault(register, {})[axis] = value
+
     def set(self, quantity: str, register: int, value: float) -> None:
         """Write register ``register``'s ``quantity`` ("length" or "radius"), mm, as the program's own."""
         for other in self._sharing(quantity, register):
@@ -117,7 +121,8 @@ class ToolTable:
 
     def _value(self, quantity: str, register: int) -> float:
         if register == 0:
-            return 0.0  # [K] Fanuc's H00/D00 hold zero; [?] LinuxCNC's tool 0 is "no tool"
+            return 0.0  # [V] Fanuc's D0 "always means 0" (B-63324EN/03, 15i-MA, 14.3 text, cncmanuals.com .../403);
+            # [K] H00 too; [?] LinuxCNC's tool 0 is "no tool"
         key = (quantity, register)
         value = self.written.get(key)
         if value is None:

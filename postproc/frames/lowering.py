@@ -38,7 +38,7 @@ from mypy_extensions import mypyc_attr
 
 from ..context import Context
 from ..dialect import Dialect
-from ..errors import PostprocError, ProgramError
+from ..errors import PostprocError, ProgramError, UnsupportedError
 from ..control import ASSIGN, CONTROL
 from ..expr import Binary, Expr, Num
 from ..ir import AXES, Block, Comments, CompoundMotion, CutterCompensation, DataSetting, Motion, Section
@@ -54,6 +54,9 @@ SYMBOLIC: Final = ("a coordinate frame in a program kept symbolically (it would 
                    "text, not of the run)")
 RUN_KEY: Final = "frames.run"
 """``ctx.state.extra`` key of the frame and program position the lowering has reached (``FrameRun``)."""
+
+MEASURED_ENTRIES: Final = frozenset(("tool_entry_at_point", "tool_entry_at_point_9"))
+"""Tool table entries a program measures where the tool stands (LinuxCNC's, ``postproc.simulate.moves.touch_off``)."""
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
@@ -232,6 +235,12 @@ class FrameEvaluator:
         the active system moves the program position (the tool stays)."""
         setting = s["DataSetting"]
         assert isinstance(setting, DataSetting)
+        if setting.table in MEASURED_ENTRIES and self.frame is not None and not self.frame.plain():
+            # the entry is the tool's point in the work system without the tool offset, less the values
+            # ([V] LinuxCNC convert_setup_tool): that point under the program's shift or rotation is not
+            # worked out here, so no entry is guessed
+            raise UnsupportedError("a tool entry measured where the tool stands, under a coordinate shift or rotation "
+                                   "of the program's own, is not modelled")
         if not setting.table.startswith("work_offset"):
             return False
         values = setting.values

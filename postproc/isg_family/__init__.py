@@ -6,6 +6,8 @@ dialects share, so neither imports the other (DIALECTS.md 1.3, 1.4).
   ``$`` statement or a ``#`` command starts); a ``Grammar`` says where the dialects differ.
 * ``expressions``: P parameters, ``V.`` variables and bracketed expressions, read and written.
 * ``statements``: the ``$`` control statements, paired with a ``Nesting`` stack.
+* ``taps``: the rigid tap strokes ``G331``/``G332``, which SINUMERIK spells and means as ISG does (its reader
+  takes them from here, as it takes ``tool_data``).
 
 Each dialect keeps its own code table, reader, writer and variables.
 """

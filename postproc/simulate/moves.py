@@ -70,6 +70,8 @@ class Moves:
         turning spindle first, as a tool changer does, and stopping a stopped spindle is no event."""
         self.after_tap: str | None = None
         """The spindle direction before a tap's out stroke, until the next spindle code (``Simulator._restates``)."""
+        self.oriented = False
+        """An oriented spindle stop was emitted since ``simulate`` last looked (``prepared_taps``)."""
         self.lathe = ctx.lathe
         self.length_at_axis = ctx.length_at_axis
         """A length change keeps the machine point (``Dialect.LENGTH_AT_PROGRAMMED_AXIS``)."""
@@ -201,20 +203,28 @@ class Moves:
             self.reframe(block)
 
     def touch_off(self, block: Block, setting: DataSetting) -> None:
-        """A tool entry measured where the tool stands (LinuxCNC ``G10 L10``/``L11``): the length that makes
-        the current point read Z in the active work system (its offset cancels) or in work system 9, with
-        the length in force now; R sets the radius (``postproc_linuxcnc.tool_entry``)."""
+        """A tool entry measured where the tool stands (LinuxCNC ``G10 L10``/``L11``): the offsets that make
+        the current point read the given Z (and X, Y) in the active work system (its offset cancels) or in
+        work system 9, with the offsets in force now; R sets the radius (``postproc_linuxcnc.tool_entry``).
+        [V] LinuxCNC ``interp_convert.cc`` ``convert_setup_tool``: each axis word gives the entry's offset as
+        the point without the tool offset in that system minus the word; X alone keeps the entry's Y, Y
+        alone its X (their rotated components, no rotation being modelled here)."""
         for letter in setting.values:
             if isinstance(setting.values[letter], Expr):
                 raise ProgramError(UNEVALUATED, self._at(block, letter))
-        z = setting.values.get("Z")
-        if isinstance(z, (int, float)):
-            if LENGTH_AXIS not in self.pos:
-                raise ProgramError(f"axis {LENGTH_AXIS} is not on this machine", self._at(block, "Z"))
-            machine = self.pos[LENGTH_AXIS] + self.length.offset
-            system = self.shift.get(LENGTH_AXIS, 0.0) if setting.table == TOUCH_OFF[0] \
-                else self.offsets.get(9, {}).get(LENGTH_AXIS, 0.0)
-            self.tools.set("length", setting.index, machine - (z * self.scale + system))
+        system = self.shift if setting.table == TOUCH_OFF[0] else self.offsets.get(9, {})
+        for axis in ("X", "Y", LENGTH_AXIS):
+            value = setting.values.get(axis)
+            if not isinstance(value, (int, float)):
+                continue
+            if axis not in self.pos:
+                raise ProgramError(f"axis {axis} is not on this machine", self._at(block, axis))
+            in_force = self.length.offset if axis == LENGTH_AXIS else self.lathe_shift.get(axis, 0.0)
+            measured = self.pos[axis] + in_force - (value * self.scale + system.get(axis, 0.0))
+            if axis == LENGTH_AXIS:
+                self.tools.set("length", setting.index, measured)
+            else:
+                self.tools.set_sideways(setting.index, axis, measured)
         r = setting.values.get("R")
         if isinstance(r, (int, float)):
             self.tools.set("radius", setting.index, r * self.scale)

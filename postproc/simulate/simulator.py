@@ -145,6 +145,7 @@ class Simulator(Moves):
             self.spindle_event(line, "stop", emit)
         s = sections.get("SpindleOrientation")
         if s is not None:
+            self.oriented = True
             emit({"line": line, "event": "orient", "angle": num(s.angle)})
         if coolant is not None and after_motion("Coolant", coolant):
             emit({"line": line, "event": "coolant", "on": False})
@@ -279,6 +280,7 @@ class Simulator(Moves):
         elif key == "SpindleControl":
             self.spindle_event(line, item.direction, emit)  # type: ignore[attr-defined]
         elif key == "SpindleOrientation":
+            self.oriented = True
             emit({"line": line, "event": "orient", "angle": num(item.angle)})  # type: ignore[attr-defined]
         elif key == "ProgramControl":
             self.program_control(line, item.kind, emit)  # type: ignore[attr-defined]
@@ -468,6 +470,29 @@ def _mark_programmed(block: Block, sim: Simulator, out: list[Event], programmed:
     return programmed
 
 
+def prepared_taps(out: list[Event], held: Event | None) -> Event | None:
+    """Leave out of ``out`` (a block's events, after ``held``, an orientation the block before ended with)
+    each oriented spindle stop that a rigid tap follows at once: it is the tap's own preparation, the switch
+    to position control a synchronised tap needs (SINUMERIK's ``SPOS`` before ``G331``, as Fanuc's ``M29``
+    before ``G84``, which is no event either; ``dialects/siemens/tap_strokes.py``); the angle a tap starts at
+    does not change the thread it cuts in a hole not yet threaded. Returns the orientation ``out`` ends with,
+    held until the next block shows what follows it."""
+    events = out if held is None else [held, *out]
+    kept: list[Event] = []
+    held = None
+    for ev in events:
+        if held is not None:
+            if ev.get("move") != "tap":
+                kept.append(held)
+            held = None
+        if ev.get("event") == "orient":
+            held = ev
+        else:
+            kept.append(ev)
+    out[:] = kept
+    return held
+
+
 def simulate(blocks: Iterable[Block], ctx: Context, live_after_end: list[int] | None = None,
              unsimulated: list[tuple[int, str, str]] | None = None, travel_warn: bool = False,
              cutter_rules: CutterRules | None = None,
@@ -491,6 +516,7 @@ def simulate(blocks: Iterable[Block], ctx: Context, live_after_end: list[int] | 
     units: str | None = None  # the program's units at its first move, for the header
     out: list[Event] = []
     programmed = ""
+    orientation: Event | None = None  # an oriented stop held until what follows it is known (``prepared_taps``)
     for block in blocks:
         try:
             sim.block(block, out.append)
@@ -498,6 +524,9 @@ def simulate(blocks: Iterable[Block], ctx: Context, live_after_end: list[int] | 
             report(err.located(ctx.at(block)))
             out.clear()
             continue
+        if sim.oriented or orientation is not None and out:
+            sim.oriented = False
+            orientation = prepared_taps(out, orientation)
         if mark_held:
             programmed = _mark_programmed(block, sim, out, programmed)
         if not out:
@@ -523,6 +552,8 @@ def simulate(blocks: Iterable[Block], ctx: Context, live_after_end: list[int] | 
     except PostprocError as err:
         report(err.located(ctx.at(sim.current)) if sim.current is not None else err)
         out.clear()
+    if orientation is not None:
+        out.insert(0, orientation)
     if out and not holding:
         yield from out
     elif out:

@@ -42,6 +42,8 @@ from ..errors import Diagnostics
 from ..lowering.lower import lower_for
 from ..lowering.machine_functions import drop_foreign_machine_functions
 from ..lowering.program_end import comment_after_end
+from ..lowering.measured_entries import write_measured_entries
+from ..lowering.sideways_offsets import write_sideways_offsets
 from ..lowering.tool_entries import write_tool_entries
 from ..plugins import Registry, default_registry
 from ..reading import gc_paused, macro_arguments, read_blocks
@@ -57,7 +59,8 @@ __all__ = ["MOVES_THE_TOOL", "UNSIMULATED", "Event", "Simulator", "ToolpathTarge
            "header", "num", "simulate", "start_position", "toolpath_events"]
 
 TRANSLATE_ONLY = (check_blocks, comment_after_end, drop_foreign_machine_functions, resolve_rigid_taps,
-                  resolve_dynamic_cutter_compensation, time_length_changes, write_tool_entries)
+                  resolve_dynamic_cutter_compensation, time_length_changes, write_tool_entries,
+                  write_sideways_offsets, write_measured_entries)
 """Generic lowering steps a simulation skips: it checks the feed itself, it must see the blocks after
 the program end as they are written (to record the live ones), and it runs machine-specific codes,
 rigid taps and compensation by a diameter (keeping the programmed point beside the controlled one), and

@@ -16,8 +16,10 @@ offset cancels), then at Z6 with that length ``G10 L11 P3 Z2`` sets 9 (machine 6
 G91 changes neither (the values are absolute). On a mill, ``G10 L1`` also sets the entry's X and Y
 offsets, which ``G43`` applies to X and Y as it applies Z [V: rs274 prints ``USE_TOOL_LENGTH_OFFSET(1 2 3,
 ...)`` after ``G10 L1 P1 X1 Y2 Z3`` and ``T1 M6 G43``; after ``G49`` and ``G0 X0`` the canonical point reads
-Y2 Z3: like Z, X and Y keep the machine position until programmed]. The other words (the offsets of the
-other axes, a lathe tool's X and its I, J, Q, and X/Y of L10/L11) are not modelled: such a block is kept
+Y2 Z3: like Z, X and Y keep the machine position until programmed]; ``G10 L10``/``L11`` X and Y are
+measured as Z is, each word alone keeping the entry's other one [V: ``interp_convert.cc``
+``convert_setup_tool``; rs274 with seeded programs, ``tests/test_tool_entry_at_point_26.py``]. The other
+words (the offsets of the other axes, a lathe tool's X and its I, J, Q) are not modelled: such a block is kept
 verbatim (``NativeCode``), which translates to LinuxCNC alone and is refused by the simulation. Like every
 G10 L1, the values are absolute whatever the distance mode.
 """
@@ -39,7 +41,7 @@ L: Final = 1
 MODELLED: Final = frozenset("ZR")
 """The words of G10 L1/L10/L11 the IR models (everywhere)."""
 MILL_ENTRY: Final = frozenset("XYZR")
-"""The words of a mill's G10 L1 the IR models (its X and Y offsets too)."""
+"""The words of a mill's G10 L1/L10/L11 the IR models (its X and Y offsets too)."""
 NOT_VALUES: Final = frozenset("GLPN")
 
 
@@ -48,7 +50,7 @@ def read_tool_entry(block: Block, ctx: Context, number: str, values: dict[str, A
     does not model or its P is computed."""
     words = set(values) - NOT_VALUES
     p = values.get("P")
-    modelled = MILL_ENTRY if ell == L and not ctx.lathe else MODELLED
+    modelled = MODELLED if ctx.lathe else MILL_ENTRY
     if words - modelled or isinstance(p, Expr) or not words:
         return False
     if p is None or isinstance(p, float) and not p.is_integer() or int(p) < 1:

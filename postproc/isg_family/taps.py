@@ -1,5 +1,7 @@
-"""ISG's rigid tap strokes, ``G331 Z.. K.. S..`` (in) and ``G332 Z.. [K..] [S..]`` (out), read into the neutral
-``RigidTap`` with its ``stroke`` (``postproc.synchronised_tap``).
+"""The rigid tap strokes ``G331 Z.. K.. S..`` (in) and ``G332 Z.. [K..] [S..]`` (out) of ISG and SINUMERIK, read
+into the neutral ``RigidTap`` with its ``stroke`` (``postproc.synchronised_tap``). Both spell and mean them
+alike, so both readers share this (the ISG and SINUMERIK code tables map them to the motion modes
+``tap_in``/``tap_out``).
 
 [V] Beckhoff TF5200 programming manual, "Tapping (G331/G332)" (CNC build V3.1.3067.01 on): G331 taps to the
 target point in step with a position-controlled spindle, K the pitch in mm (inch) per revolution, its
@@ -7,6 +9,13 @@ sign the thread's hand (negative: left-hand); G332 retracts to its target point,
 the control; its K is optional (the G331's applies) and must be the G331's; both are modal. The spindle
 speed word in the block is read as every S is. An axis-only block under G331/G332 is another stroke with
 the pitch in force.
+
+[K] SINUMERIK 840D sl Fundamentals, "Tapping without compensating chuck (G331, G332)", as quoted at
+https://en.cncforum.net/t/siemens-cnc-milling-g331-g332-codes-thread-interpolation/197 (its example
+``SPOS=0`` / ``G331 Z-25 K0.8 S600`` / ``G332 Z5 K0.8``): the same strokes, K (I, J for X, Y) the pitch whose
+sign is the spindle's direction (positive as with M3), G332 with the G331's pitch and the direction reversed
+by the control, S without M3/M4; the spindle put into position control by ``SPOS=`` before G331
+(``dialects/siemens``). Only K (tapping along Z) is read here; I and J are not.
 """
 
 from __future__ import annotations
@@ -25,10 +34,12 @@ PITCH: Final = "isg_tap_pitch"
 """``ctx.state.extra`` key: the pitch of the last G331 (signed), for a G332 without K."""
 
 
-def read_tap_stroke(block: Block, ctx: Context, motion: Motion, values: dict[str, Any], used: set[str]) -> None:
-    """Replace the block's ``Motion`` (mode ``tap_in``/``tap_out``) by its ``RigidTap`` stroke; K is taken."""
+def read_tap_stroke(block: Block, ctx: Context, motion: Motion, values: dict[str, Any], used: set[str],
+                    codes: dict[str, str]) -> None:
+    """Replace the block's ``Motion`` (mode ``tap_in``/``tap_out``) by its ``RigidTap`` stroke; K is taken.
+    ``codes``: the stroke ("in", "out") -> its spelling, for messages (the dialect's code table)."""
     stroke = MODES[str(motion.mode)]
-    code = "G331" if stroke == "in" else "G332"
+    code = codes[stroke]
     col = ctx.column_of(block, "G")
     del block.sections["Motion"]  # (first: a refused block leaves no motion the simulation cannot run)
     if not motion.axes:
@@ -50,7 +61,8 @@ def read_tap_stroke(block: Block, ctx: Context, motion: Motion, values: dict[str
     if stroke == "in":
         ctx.state.extra[PITCH] = float(pitch)
     elif PITCH in ctx.state.extra and float(pitch) != ctx.state.extra[PITCH]:
-        raise ProgramError(f"G332 K{float(pitch):g}: the pitch must be the G331's (K{ctx.state.extra[PITCH]:g})",
+        raise ProgramError(f"{code} K{float(pitch):g}: the pitch must be the {codes['in']}'s "
+                           f"(K{ctx.state.extra[PITCH]:g})",
                            ctx.at(block, ctx.column_of(block, "K")))
     block.add(RigidTap(dict(motion.axes), float(pitch), stroke=stroke))
     ctx.state.motion = str(motion.mode)

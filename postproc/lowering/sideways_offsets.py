@@ -1,0 +1,143 @@
+"""A tool's offsets across the spindle (the X and Y of a LinuxCNC tool table entry a program writes, ``G10 L1
+P- X- Y-``), written into the path for a target whose tool length offset moves the spindle axis only.
+
+[V] LinuxCNC (``postproc_linuxcnc.tool_entry``; rs274 prints ``USE_TOOL_LENGTH_OFFSET(x y z, ...)``): on a mill
+``G43`` applies the entry's X and Y as it applies Z, and like Z they move nothing where they change: an
+axis keeps its machine position until it is programmed, then goes to the programmed point plus the offset
+in force. A target without such offsets (Fanuc, grbl, ISG...) moves the same where each absolute X and Y
+in the program's coordinates gets the offset in force added, and nothing else changes: an increment moves
+the machine by itself on both sides, an axis not programmed stays on both, a move in machine coordinates
+is not offset on either. So this step, for an entry of another family than the target's:
+
+* takes the entry's X and Y out of its setting (the length and radius go on to ``write_tool_entries``) and
+  keeps them, in mm, by tool number (absolute, as every ``G10 L1`` value);
+* follows which entry a length offset puts in force (``G43 H n``, the register a tool number) and which
+  none (``G49``, ``G43`` of an entry without them, ``G44``, a dynamic length);
+* adds the offset in force, in the block's units, to each absolute X and Y of a move, of a reference
+  return's intermediate point and of the items of an expanded cycle.
+
+While an offset is in force, what writes a program coordinate this step does not rewrite is a located
+error naming it: a computed coordinate, a cycle kept for the target, a frame command, a coordinate setting,
+a program kept symbolic (its text is not the order it runs in). A program's own ``G92``/``G52`` reach this step
+already evaluated into the coordinates (``postproc.frames``) where the target lacks them. Nothing is dropped: an entry's X or Y is
+either in the path or refused.
+"""
+
+from __future__ import annotations
+
+from typing import Final, Iterator
+
+from ..compensation.tool_table import ENTRY, SIDEWAYS
+from ..context import Context
+from ..control import ASSIGN, CONTROL
+from ..dialect import Dialect
+from ..errors import UnsupportedError
+from ..expr import Expr
+from ..ir import Block, Comments, CompoundMotion, DataSetting, Motion, Section
+from ..state import MM_PER_INCH
+from ..synchronised_tap import RigidTap
+
+_UNREWRITTEN: Final = {"CannedCycle": "a canned cycle kept for the target", "FrameChange": "a frame command",
+                       "CoordinateSet": "a coordinate setting", "HolePattern": "a hole pattern",
+                       "LatheCycle": "a turning cycle", ASSIGN: "a program kept symbolic",
+                       CONTROL: "a program kept symbolic"}
+"""Sections that state program coordinates this step does not rewrite -> what they are, for the error."""
+
+
+def write_sideways_offsets(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """Lowering step (the module docstring)."""
+    family = target.family()
+    entries: dict[int, dict[str, float]] = {}
+    shift: dict[str, float] = {}
+    """The offsets in force, mm (empty: none)."""
+    inch, absolute = False, True  # a program starts as ``ModalState`` does (and the simulation)
+    for block in blocks:
+        sections = block.sections
+        if not entries and "DataSetting" not in sections:
+            yield block  # the common block: no entry with offsets across the spindle yet
+            continue
+        units = sections.get("Units")
+        if units is not None:
+            inch = units.system == "inch"  # type: ignore[attr-defined]
+        distance = sections.get("DistanceMode")
+        if distance is not None:
+            absolute = distance.mode != "incremental"  # type: ignore[attr-defined]
+        setting = sections.get("DataSetting")
+        if isinstance(setting, DataSetting) and setting.table == ENTRY and setting.family != family \
+                and target.WRITER is not None:
+            _take(block, setting, entries, MM_PER_INCH if inch else 1.0)
+        length = sections.get("ToolLengthOffset")
+        if length is not None:
+            register = length.register  # type: ignore[attr-defined]
+            positive = length.mode == "positive" and isinstance(register, int)  # type: ignore[attr-defined]
+            shift = {a: v for a, v in entries.get(register, {}).items() if v} if positive else {}
+        if shift:
+            try:
+                _offset(block, shift, 1.0 / MM_PER_INCH if inch else 1.0, absolute)
+            except UnsupportedError as err:
+                ctx.diagnostics.error(err.located(ctx.at(block)))
+                continue
+        yield block
+
+
+def _take(block: Block, setting: DataSetting, entries: dict[int, dict[str, float]], scale: float) -> None:
+    """Keep the entry's X and Y (mm) and leave the rest of the setting (none left: no setting)."""
+    across = {axis: value for axis, value in setting.values.items() if axis in SIDEWAYS}
+    if not across:
+        return
+    for axis, value in across.items():
+        if isinstance(value, Expr):
+            raise UnsupportedError(f"a computed tool offset along {axis} ({setting.describe()}): its value is "
+                                   "written into the path, which needs the number")
+        entries.setdefault(setting.index, {})[axis] = float(value) * scale
+    rest = {k: v for k, v in setting.values.items() if k not in SIDEWAYS}
+    if rest:
+        block.sections["DataSetting"] = DataSetting(setting.family, setting.table, setting.index, rest,
+                                                    setting.incremental, setting.text)
+    else:
+        del block.sections["DataSetting"]
+        comments = block.sections.get("Comments")
+        note = f"TOOL {setting.index} OFFSETS ACROSS THE SPINDLE: WRITTEN INTO THE PATH"
+        block.sections["Comments"] = Comments(([*comments.texts] if isinstance(comments, Comments) else []) + [note])
+    block.changed()
+
+
+def _offset(block: Block, shift: dict[str, float], per_mm: float, absolute: bool) -> None:
+    """Add the offsets in force (mm; ``per_mm`` program units per mm) to the block's absolute X and Y."""
+    sections = block.sections
+    for key, what in _UNREWRITTEN.items():
+        if key in sections:
+            raise UnsupportedError(f"{what} while a tool offset across the spindle is in force (written into the "
+                                   "path here): its coordinates are not offset")
+    if sections.get("MachineCoordinates") is not None:
+        return  # a move in machine coordinates: no offset on either side
+    changed = False
+    motion = sections.get("Motion")
+    if isinstance(motion, Motion) and absolute:
+        changed = _moved(motion, shift, per_mm) or changed
+    tap = sections.get("RigidTap")
+    if isinstance(tap, RigidTap) and absolute:
+        changed = _moved(tap, shift, per_mm) or changed
+    compound = sections.get("CompoundMotion")
+    if isinstance(compound, CompoundMotion):  # an expansion to be written (a cycle kept is refused above)
+        for item in compound.items:  # absolute, as every item of an expansion
+            if isinstance(item, (Motion, RigidTap)):
+                changed = _moved(item, shift, per_mm) or changed
+    if changed:
+        block.changed()
+
+
+def _moved(section: Section, shift: dict[str, float], per_mm: float) -> bool:
+    """Offset a move's axes (program units) in place; True when one was there."""
+    axes = section.axes  # type: ignore[attr-defined]
+    moved = False
+    for axis, value in shift.items():
+        if axis not in axes:
+            continue
+        word = axes[axis]
+        if isinstance(word, Expr):
+            raise UnsupportedError(f"a computed {axis} while a tool offset across the spindle is in force (written "
+                                   "into the path here): the sum is not written")
+        axes[axis] = float(word) + value * per_mm
+        moved = True
+    return moved
