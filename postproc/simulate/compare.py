@@ -7,7 +7,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 from itertools import chain
-from typing import Final, Iterable, Iterator
+from typing import Any, Final, Iterable, Iterator
 
 from mypy_extensions import mypyc_attr
 
@@ -132,8 +132,11 @@ def _move(ev: Event, start: dict[str, float]) -> Move:
         i, j, _ = PLANE_INDEX[plane]
         ci, cj = CENTRE_KEYS["XYZ"[i]], CENTRE_KEYS["XYZ"[j]]
         s, e = _plane_point(start, plane), _plane_point(end, plane)
-        centre = ev if controlled is None else controlled
-        c = (float(centre.get(ci, ev.get(ci, s[0]))), float(centre.get(cj, ev.get(cj, s[1]))))
+        ui: Any = ev.get(ci, s[0])
+        uj: Any = ev.get(cj, s[1])
+        if controlled is not None:
+            ui, uj = controlled.get(ci, ui), controlled.get(cj, uj)
+        c = (float(ui), float(uj))
         m.plane, m.centre = plane, c
         m.radius = _hypot(s[0] - c[0], s[1] - c[1])
         m.sweep = arc_sweep(s, e, c, kind == "cw")
