@@ -97,6 +97,16 @@ def test_float_text_is_repr(value: float) -> None:
         assert float_text(value) == repr(value)
 
 
+@pytest.mark.parametrize("value", [1500.0, -7.0, 1e-4, -1e-4, 0.0001234, 999.999999, -999.999999, 1000.000001, 1000.5,
+                                   -1000.0, 0.5, 0.001, 0.000001 + 12, 12.000100, 99999999.999999, -99999999.0,
+                                   123.456, 123.4567, 1e8, 1e16, 9.999e-5, 2.5e-7])
+def test_float_text_is_repr_where_its_tables_meet(value: float) -> None:
+    """The pieces ``float_text`` takes from its tables (whole parts below 1000, the first three decimals,
+    the last three) at their edges, and integral floats (``repr`` adds ".0")."""
+    assert float_text(value) == repr(value)
+    assert float_text(num(value) * 1.0) == repr(num(value) * 1.0)
+
+
 def _json(event: dict[object, object]) -> str:
     return json.JSONEncoder(allow_nan=False).encode(event)
 

@@ -295,3 +295,74 @@ def _path(draw: Any) -> list[dict[str, Any]]:
 def test_per_minute_from_first_is_per_minute(path: list[dict[str, Any]], start: dict[str, float] | None) -> None:
     start = start or {"X": 0.0, "Y": 0.0, "Z": 0.0}
     assert list(per_minute_from_first(iter(path), start)) == list(per_minute(path, start))
+
+
+# -- controlled points read in place (``compare._move``) against the path with them resolved first -----------
+
+from postproc.simulate.compare import _controlled  # noqa: E402
+from postproc.simulate.normal_move import Move  # noqa: E402
+
+
+@st.composite
+def _offset_path(draw: Any) -> list[dict[str, Any]]:
+    """A toolpath (``_path``) whose moves may carry a controlled point beside the programmed one, as the
+    simulator writes it under a tool length or cutter compensation: some axes moved, the others the same
+    objects, an arc's centre moved with its end."""
+    events = draw(_path())
+    for ev in events[1:]:
+        if "move" not in ev or not draw(st.booleans()):
+            continue
+        controlled = {k: ev[k] for k in "xyz"}
+        for k in draw(st.lists(st.sampled_from("xyz"), max_size=3, unique=True)):
+            controlled[k] = ev[k] + draw(st.integers(-3, 3)) * 0.25
+        if "cx" in ev:
+            controlled["cx"] = ev["cx"] + controlled["x"] - ev["x"]
+            controlled["cy"] = ev["cy"] + controlled["y"] - ev["y"]
+        ev["controlled"] = controlled
+    return events
+
+
+def _fields(item: Any) -> Any:
+    if isinstance(item, Move):
+        return (item.kind, item.start, item.end, item.f, item.first_line, item.last_line, item.direction, item.centre,
+                item.plane, item.radius, item.sweep, item.length)
+    return item
+
+
+@settings(max_examples=300, deadline=None)
+@given(path=_offset_path())
+def test_normalise_reads_a_controlled_point_as_the_path_resolved_first(path: list[dict[str, Any]]) -> None:
+    start = {"X": 1.0, "Y": -2.0, "Z": 3.0}
+    ours = [_fields(i) for i in normalise(iter(path), start, 0.0005)]
+    assert ours == [_fields(i) for i in normalise(_controlled(iter(path)), start, 0.0005)]
+
+
+@settings(max_examples=300, deadline=None)
+@given(path=_offset_path(), start=st.one_of(st.none(), st.fixed_dictionaries({"X": _COORD, "Y": _COORD, "Z": _COORD})))
+def test_per_minute_from_first_converts_the_controlled_path(path: list[dict[str, Any]],
+                                                            start: dict[str, float] | None) -> None:
+    start = start or {"X": 0.0, "Y": 0.0, "Z": 0.0}
+    ours = list(_controlled(per_minute_from_first(iter(path), start)))
+    assert ours == list(per_minute(_controlled(iter(path)), start))
+
+
+def _report_fields(report: Report) -> Any:
+    return (report.ok, report.moves, report.max_deviation, report.where, report.where_at, report.mismatch,
+            report.mismatch_at, report.ignored)
+
+
+@settings(max_examples=300, deadline=None)
+@given(a=_offset_path(), b=_offset_path(), diameter=st.sampled_from([None, "in", "out", "both"]))
+def test_compare_of_controlled_points_is_compare_of_the_paths_resolved_first(
+        a: list[dict[str, Any]], b: list[dict[str, Any]], diameter: str | None) -> None:
+    """Two random toolpaths, and each against a copy of itself with its controlled points moved a little
+    (a lathe's diameter x on either side too): the same report as the controlled paths given resolved."""
+    for side, path in (("in", a), ("out", b)):
+        if diameter in (side, "both"):
+            path[0]["x_mode"] = "diameter"
+    start = {"X": 0.0, "Y": 0.0, "Z": 0.0}
+    for x, y in ((a, b), (a, [dict(ev) for ev in a])):
+        ours = compare(x, y, start_in=start, start_out=start, tolerance=0.001)
+        resolved = compare(list(_controlled(iter(x))), list(_controlled(iter(y))), start_in=start, start_out=start,
+                           tolerance=0.001)
+        assert _report_fields(ours) == _report_fields(resolved)

@@ -7,7 +7,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 from itertools import chain
-from typing import Final, Iterable, Iterator
+from typing import Any, Final, Iterable, Iterator
 
 from mypy_extensions import mypyc_attr
 
@@ -91,13 +91,19 @@ class Report:
 _AXIS_KEYS: Final = frozenset("xyzabcuvw")
 
 
-def _axes(ev: Event) -> dict[str, float]:
-    """The end point of a move event, in its order (the machine's axes). A float is taken as it is: compiled,
-    ``float(v)`` of a value of unknown type is a call of the builtin through Python (~250 instructions)."""
+def _axes(ev: Event, controlled: Event | None) -> dict[str, float]:
+    """The end point of a move event, in its order (the machine's axes): its controlled point where it has
+    one, as ``_controlled`` gives it (the controlled axes replace the programmed ones in place, any other
+    follows). A float is taken as it is: compiled, ``float(v)`` of a value of unknown type is a call of the
+    builtin through Python (~250 instructions)."""
     end: dict[str, float] = {}
     for k, v in ev.items():
         if k in _AXIS_KEYS:
             end[k] = v if isinstance(v, float) else float(v)
+    if controlled is not None:
+        for k, v in controlled.items():
+            if k in _AXIS_KEYS:
+                end[k] = v if isinstance(v, float) else float(v)
     return end
 
 
@@ -113,24 +119,37 @@ def _plane_point(p: dict[str, float], plane: str) -> tuple[float, float]:
 
 
 def _move(ev: Event, start: dict[str, float]) -> Move:
-    end = _axes(ev)
+    """A move event as a ``Move`` from ``start``, its controlled point the end (``_controlled``, read in place:
+    copying each event that has one was a dictionary a move)."""
+    controlled: Event | None = ev.get("controlled")
+    end = _axes(ev, controlled)
     kind = ev["move"]
     f = ev.get("f")
-    m = Move(kind, start, end, None if f is None else float(f), ev["line"], ev["line"])
-    if kind in ("cw", "ccw"):
+    line = ev["line"]
+    m = Move(kind, start, end, None if f is None else f if isinstance(f, float) else float(f), line, line)
+    if kind == "cw" or kind == "ccw":
         plane = ev.get("plane", "XY")
         i, j, _ = PLANE_INDEX[plane]
-        ci, cj = "XYZ"[i], "XYZ"[j]
+        ci, cj = CENTRE_KEYS["XYZ"[i]], CENTRE_KEYS["XYZ"[j]]
         s, e = _plane_point(start, plane), _plane_point(end, plane)
-        c = (float(ev.get(CENTRE_KEYS[ci], s[0])), float(ev.get(CENTRE_KEYS[cj], s[1])))
+        ui: Any = ev.get(ci, s[0])
+        uj: Any = ev.get(cj, s[1])
+        if controlled is not None:
+            ui, uj = controlled.get(ci, ui), controlled.get(cj, uj)
+        c = (float(ui), float(uj))
         m.plane, m.centre = plane, c
         m.radius = _hypot(s[0] - c[0], s[1] - c[1])
         m.sweep = arc_sweep(s, e, c, kind == "cw")
-    else:
-        steps = {k: v - start.get(k, 0.0) for k, v in end.items()}
-        length = m.length = _hypot(*steps.values())  # _dist(end, start), its differences kept
-        if length > 0:
-            m.direction = {k: step / length for k, step in steps.items()}
+        return m
+    steps: dict[str, float] = {}
+    for k, v in end.items():
+        steps[k] = v - start.get(k, 0.0)
+    length = m.length = _hypot(*steps.values())  # _dist(end, start), its differences kept
+    if length > 0:
+        direction: dict[str, float] = {}
+        for k, step in steps.items():
+            direction[k] = step / length
+        m.direction = direction
     return m
 
 
@@ -139,15 +158,19 @@ def _merge(run: Move, m: Move, eps: float) -> bool:
     if m.kind != run.kind or not _same_feed(run.f, m.f):
         return False
     if run.direction is not None and m.direction is not None:
-        u, s, run_end = run.direction, run.start, run.end
+        u, s, run_end, end = run.direction, run.start, run.end, m.end
         along_old = 0.0
         for k, uk in u.items():
             along_old += (run_end[k] - s.get(k, 0.0)) * uk
-        rel = [(m.end[k] - s.get(k, 0.0), u.get(k, 0.0)) for k in m.end]
+        rel: list[float] = []  # m's end from the run's start, and the direction, axis by axis
         along = 0.0
-        for r, uk in rel:
+        for k, v in end.items():
+            r = v - s.get(k, 0.0)
+            uk = u.get(k, 0.0)
+            rel.append(r)
+            rel.append(uk)
             along += r * uk
-        off = _hypot(*[r - along * uk for r, uk in rel])  # distance from the line
+        off = _hypot(*[rel[i] - along * rel[i + 1] for i in range(0, len(rel), 2)])  # distance from the line
         if off > eps or along <= along_old:
             return False
         run.end, run.last_line = m.end, m.last_line
@@ -177,7 +200,8 @@ def _one_helix(run: Move, m: Move, eps: float) -> bool:
 
 def normalise(events: Iterable[Event], start: dict[str, float], eps: float,
               codes: list[Event] | None = None) -> Iterator[Move | Event]:
-    """Moves merged into runs, machine events as they are; the header is skipped. ``codes``: the events of a
+    """Moves merged into runs, machine events as they are; the header is skipped. A move ends at its
+    controlled point where it has one (``_controlled``, read in place). ``codes``: the events of a
     machine-specific code (they carry ``code``) go there instead: another family has no such code, so they
     are listed, not compared (``compare_machine_codes``)."""
     pos = {k.lower(): v for k, v in start.items()}
@@ -258,8 +282,10 @@ def compare(events_in: Iterable[Event], events_out: Iterable[Event], *, start_in
     ``chord_tolerance``: OUT may cut IN's arcs into chords within it (``postproc.simulate.chords``)."""
     report = Report(tolerance, chord_tolerance=chord_tolerance)
     # feeds compared per minute: an inverse-time program and its translation for a target without G93
-    it_in = per_minute_from_first(_controlled(iter(events_in)), start_in)
-    it_out = per_minute_from_first(_controlled(iter(events_out)), start_out)
+    # the paths compared are the controlled ones (``_controlled``): ``normalise`` reads a move's controlled
+    # point in place, ``per_minute_from_first`` and ``_as_radius`` take it where they change the event
+    it_in = per_minute_from_first(iter(events_in), start_in)
+    it_out = per_minute_from_first(iter(events_out), start_out)
     head_in, head_out = next(it_in, {}), next(it_out, {})
     modes = (head_in.get("x_mode"), head_out.get("x_mode"))
     if modes[0] != modes[1] or (chord_tolerance is not None and "diameter" in modes):
@@ -294,19 +320,21 @@ def per_minute_from_first(events: Iterator[Event], start: dict[str, float]) -> I
     """``per_minute(events, start)``, which converts the path from its first inverse-time feed on: until then
     the events pass as they are (``per_minute`` follows every move's end point, a dict of three floats a
     move, to know where an inverse-time move starts), and from there ``per_minute`` continues from the
-    last move's end, where it would stand. A header in inverse time: ``per_minute`` from the start.
-    ``tests/test_verify.py`` holds this to ``per_minute`` on random paths."""
+    last move's end, where it would stand. A header in inverse time: ``per_minute`` from the start. What
+    ``per_minute`` converts is the controlled path (``_controlled``); the events before pass with their
+    controlled points as they are (``normalise`` reads them). ``tests/test_verify.py`` holds this to
+    ``per_minute(_controlled(events))`` on random paths."""
     head = next(events, None)
     if head is None:
         return
     if head.get("feed_mode") == "inverse_time":
-        yield from per_minute(chain((head,), events), start)
+        yield from per_minute(_controlled(chain((head,), events)), start)
         return
     yield head
     last: Event | None = None
     for ev in events:
         if ev.get("feed_mode") == "inverse_time":
-            rest = per_minute(chain((head, ev), events), start if last is None else last)
+            rest = per_minute(_controlled(chain((head, ev), events)), start if last is None else _resolved(last))
             next(rest)  # the header, already given
             yield from rest
             return
@@ -319,14 +347,18 @@ def _controlled(events: Iterator[Event]) -> Iterator[Event]:
     """The path the machine runs: a move's controlled point (tool length, cutter radius) in place of its
     programmed one, so a program that offsets the tool and one that writes the offset path compare equal."""
     for ev in events:
-        controlled = ev.get("controlled")
-        if controlled is None:
-            yield ev
-        else:
-            moved = dict(ev)  # the keys in their order: the controlled axes replace the programmed ones
-            del moved["controlled"]
-            moved.update(controlled)
-            yield moved
+        yield _resolved(ev)
+
+
+def _resolved(ev: Event) -> Event:
+    """An event with its controlled point in place of its programmed one (``_controlled``)."""
+    controlled = ev.get("controlled")
+    if controlled is None:
+        return ev
+    moved = dict(ev)  # the keys in their order: the controlled axes replace the programmed ones
+    del moved["controlled"]
+    moved.update(controlled)
+    return moved
 
 
 def compare_machine_codes(report: Report, codes_in: list[Event], codes_out: list[Event]) -> None:
@@ -369,11 +401,13 @@ def _values(changes: list[tuple[int, str]], most: int = 4) -> str:
     text = ", ".join(f"{value} (line {line})" for line, value in changes[:most])
     return text + (f", ... {len(changes) - most} more" if len(changes) > most else "")
 def _as_radius(events: Iterator[Event], head: Event) -> Iterator[Event]:
-    """The events of a toolpath whose x is a diameter (``x_mode``), with x and cx as radii."""
+    """The events of a toolpath whose x is a diameter (``x_mode``), with x and cx as radii (of the controlled
+    point: ``_controlled``)."""
     if head.get("x_mode") != "diameter":
         yield from events
         return
     for ev in events:
+        ev = _resolved(ev)
         if "x" in ev or "cx" in ev:
             ev = dict(ev)
             for key in ("x", "cx"):

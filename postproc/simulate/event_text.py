@@ -11,6 +11,10 @@ decimal (at most 14 significant digits below 1e8, and two decimals of at most 15
 same float), which integer arithmetic writes; a float that is not one (``units / 1e6`` differs) or lies
 where ``repr`` writes an exponent goes to ``float.__repr__``. An event holding anything but str keys and
 str, int, bool, None, float or such a dict values is handed whole to ``fallback`` (json's own encoder).
+
+The line is one list of pieces joined once: a key with the separator before it, a number's whole part,
+its first three decimals and the rest from tables (no string is built per number, none per item;
+compiled, building a string costs ~500 instructions, an append ~50).
 """
 
 from __future__ import annotations
@@ -27,103 +31,161 @@ _SMALLEST: Final = 1e-4
 """``float.__repr__`` writes an exponent below this (``9e-05``) and from 1e16 on."""
 _LARGEST: Final = 1e8
 """Below this a whole number of millionths has at most 14 digits (one float per decimal)."""
+_TABLED: Final = 1000
+_FIRST: Final = [f".{n:03d}" for n in range(_TABLED)]
+"""The point and a number's first three decimals, the others following."""
+_ONLY: Final = [f".{n:03d}".rstrip("0") for n in range(_TABLED)]
+"""The point and a number's first three decimals, the last ones (trailing zeros dropped)."""
+_REST: Final = [f"{n:03d}".rstrip("0") for n in range(_TABLED)]
+"""Decimals four to six (trailing zeros dropped; never all zero where used)."""
+_WHOLE: Final = [str(n) for n in range(_TABLED)]
+_NEGATIVE: Final = [f"-{n}" for n in range(_TABLED)]
+"""A number's whole part below 1000 (a CAM coordinate's), with its sign."""
 _KEYS: Final[dict[str, str]] = {}
-"""Key -> its text with the separator (``'"x": '``): a toolpath has a dozen keys."""
+"""Key -> its text as an object's first item (``'"line": '``): a toolpath has a dozen keys."""
+_LATER_KEYS: Final[dict[str, str]] = {}
+"""Key -> its text after another item (``', "x": '``)."""
 _WORDS: Final[dict[str, str]] = {}
 """Short string values (``"feed"``, ``"XY"``, ``"cw"``) -> their text; at most ``_MOST_WORDS`` kept."""
 _MOST_WORDS: Final = 512
-assert _PLACES == PLACES and _UNITS == 10 ** PLACES == _SCALE
+assert _PLACES == PLACES and _UNITS == 10 ** PLACES == _SCALE and _TABLED ** 2 == _UNITS
 # Final: compiled, a constant is a C constant, not a look-up in the module's dictionary (17 a float)
 
 
 def float_text(value: float) -> str:
     """``float.__repr__(value)``; ValueError for a value that is not finite (json's ``allow_nan=False``)."""
+    parts: list[str] = []
+    _float_parts(value, parts)
+    return "".join(parts)
+
+
+def _float_parts(value: float, parts: list[str]) -> None:
+    """Append ``float_text(value)`` to ``parts``, in pieces."""
     if _SMALLEST <= value < _LARGEST or -_LARGEST < value <= -_SMALLEST:
         units = int(value * _SCALE + (0.5 if value > 0.0 else -0.5))
-        magnitude = -units if units < 0 else units
-        whole = magnitude // _UNITS
-        fraction = magnitude - whole * _UNITS
-        if fraction != 0 and units / _SCALE == value:
-            digits = str(fraction + _UNITS)  # "1" and the six digits, leading zeros kept
-            end = _PLACES + 1
-            while fraction % 10 == 0:
-                fraction //= 10
-                end -= 1
-            return f"{'-' if units < 0 else ''}{whole}.{digits[1:end]}"
+        if units / _SCALE == value:
+            magnitude = -units if units < 0 else units
+            whole = magnitude // _UNITS
+            fraction = magnitude - whole * _UNITS
+            if whole < _TABLED:
+                parts.append(_NEGATIVE[whole] if units < 0 else _WHOLE[whole])
+            else:
+                parts.append(str(-whole) if units < 0 else str(whole))
+            if fraction == 0:
+                parts.append(".0")  # an integral float below 1e16: repr writes its digits and ".0"
+                return
+            high = fraction // _TABLED
+            low = fraction - high * _TABLED
+            if low == 0:
+                parts.append(_ONLY[high])
+            else:
+                parts.append(_FIRST[high])
+                parts.append(_REST[low])
+            return
     if value - value != 0.0:  # inf - inf and nan - nan are nan
         raise ValueError(f"Out of range float values are not JSON compliant: {value!r}")
-    return float.__repr__(value)
+    parts.append(float.__repr__(value))
 
 
-def _key_text(key: str) -> str:
-    text = _KEYS.get(key)
+def _key_text(key: str, later: bool) -> str:
+    known = _LATER_KEYS if later else _KEYS
+    text = known.get(key)
     if text is None:
-        text = encode_basestring_ascii(key) + ": "
-        if len(_KEYS) < _MOST_WORDS:
-            _KEYS[key] = text
+        text = (", " if later else "") + encode_basestring_ascii(key) + ": "
+        if len(known) < _MOST_WORDS:
+            known[key] = text
     return text
 
 
-def _value_text(value: object) -> str | None:
-    """A scalar's text, a dict's (the ``controlled`` point), or None: not an event's value. Subclasses
-    as json writes them: a bool before an int, an int or float by its base's ``__repr__``."""
-    if isinstance(value, float):
-        return float_text(value)
+def _word_text(value: str) -> str:
+    text = _WORDS.get(value)
+    if text is None:
+        text = encode_basestring_ascii(value)
+        if len(value) <= 16 and len(_WORDS) < _MOST_WORDS:
+            _WORDS[value] = text
+    return text
+
+
+def _other_text(value: object) -> str | None:
+    """The text of a scalar the loop does not write itself, or None: not an event's value. Subclasses as
+    json writes them: a bool before an int, an int by its base's ``__repr__``."""
     if isinstance(value, bool):
         return "true" if value else "false"
-    if type(value) is int:
-        return str(value)  # int's own spelling, without a method look-up (a line number each event)
     if isinstance(value, int):
         return int.__repr__(value)
-    if isinstance(value, str):
-        text = _WORDS.get(value)
-        if text is None:
-            text = encode_basestring_ascii(value)
-            if len(value) <= 16 and len(_WORDS) < _MOST_WORDS:
-                _WORDS[value] = text
-        return text
     if value is None:
         return "null"
-    if isinstance(value, dict):
-        return _dict_text(value)
     return None
 
 
-def _dict_text(items: dict[Any, Any], written: list[tuple[object, str]] | None = None) -> str | None:
-    """``items`` as JSON. ``written``: the floats of the enclosing event with their texts; a value that is
-    the same object is not spelt again (a controlled point shares the programmed point's floats on the axes
-    its offset does not move: two of a move's six floats under a tool length)."""
-    if not items:
-        return "{}"
-    parts: list[str] = ["{"]  # joined once: no string made per item
-    floats: list[tuple[object, str]] = []
+def _items_parts(items: dict[Any, Any], parts: list[str], spelt: list[object] | None,
+                 spans: list[int] | None) -> bool:
+    """Append the items of ``items`` (without the braces) to ``parts``; False where json must write it.
+    ``spelt``/``spans``: the floats of the enclosing event and where their pieces lie in ``parts``; a
+    value that is the same object is not spelt again (a controlled point shares the programmed point's
+    floats on the axes its offset does not move: two of a move's six floats under a tool length)."""
+    floats: list[object] | None = None
+    ends: list[int] = []
+    later = False
     for key, value in items.items():
+        same: object = value  # the object itself: narrowed to a float, compiled ``value`` is a new box
         if not isinstance(key, str):
-            return None
-        text: str | None = None
-        if written is not None:
-            for prior, prior_text in written:
-                if prior is value:
-                    text = prior_text
+            return False
+        if later:
+            text = _LATER_KEYS.get(key)
+            parts.append(text if text is not None else _key_text(key, True))
+        else:
+            text = _KEYS.get(key)
+            parts.append(text if text is not None else _key_text(key, False))
+            later = True
+        if spelt and spans is not None:
+            i = 0
+            for prior in spelt:
+                if prior is same:
                     break
-        if text is None:
-            if isinstance(value, dict):
-                text = _dict_text(value, floats)
+                i += 1
+            if i < len(spelt):
+                start, end = spans[2 * i], spans[2 * i + 1]
+                while start < end:
+                    parts.append(parts[start])
+                    start += 1
+                continue
+        if isinstance(value, float):
+            start = len(parts)
+            _float_parts(value, parts)
+            if spelt is None:
+                if floats is None:
+                    floats = []
+                floats.append(same)
+                ends.append(start)
+                ends.append(len(parts))
+        elif type(value) is int:
+            parts.append(str(value))  # int's own spelling, without a method look-up (a line number each event)
+        elif isinstance(value, str):
+            text = _WORDS.get(value)
+            parts.append(text if text is not None else _word_text(value))
+        elif isinstance(value, dict):
+            if not value:
+                parts.append("{}")
             else:
-                text = _value_text(value)
-                if text is not None and written is None and isinstance(value, float):
-                    floats.append((value, text))
+                parts.append("{")
+                if not _items_parts(value, parts, floats, ends):
+                    return False
+                parts.append("}")
+        else:
+            text = _other_text(value)
             if text is None:
-                return None
-        if len(parts) > 1:
-            parts.append(", ")
-        parts.append(_key_text(key))
-        parts.append(text)
-    parts.append("}")
-    return "".join(parts)
+                return False
+            parts.append(text)
+    return True
 
 
 def event_text(event: dict[Any, Any], fallback: Callable[[Any], str]) -> str:
     """The JSON text of one event (without its line end)."""
-    text = _dict_text(event)
-    return fallback(event) if text is None else text
+    if not event:
+        return "{}"
+    parts: list[str] = ["{"]
+    if not _items_parts(event, parts, None, None):
+        return fallback(event)
+    parts.append("}")
+    return "".join(parts)
