@@ -47,10 +47,11 @@ def test_g53_under_a_length_offset_translates_to_isg_and_verifies() -> None:
     report = verify_lines(lines(source), lines(out), file_in="in.nc", file_out="out.nc", source="fanuc",
                           target="isg", setup=VMC)
     assert report.ok and report.max_deviation == 0, report.summary()
-    # the ISG program runs within the travel too: its spindle goes to machine Z0, the tip 120 mm below
+    # the ISG program runs within the travel too: its spindle goes to machine Z0, the tip 120 mm below; the
+    # toolpath gives both in the work frame (G54 Z-350, as rs274 gives a machine move): tip 230, spindle 350
     events = list(toolpath_events(lines(out), file="out.nc", dialect="isg", setup=VMC))
     last = [ev for ev in events if "move" in ev][-1]
-    assert (last["z"], last["controlled"]["z"]) == (-120, 0)
+    assert (last["z"], last["controlled"]["z"]) == (-120 + 350, 0 + 350)
 
 
 def test_a_machine_move_beyond_the_travel_under_a_length_offset_is_still_refused() -> None:
