@@ -5,9 +5,10 @@ the spindle under position control ([K] SINUMERIK 840D sl Fundamentals, "Tapping
 ``SPOS=0`` / ``G331 Z-25 K0.8 S600`` / ``G332 Z5 K0.8``).
 
 * LinuxCNC ``G33.1`` (seeded: absolute or incremental, either spindle direction) and Fanuc ``M29`` +
-  ``G84``/``G74`` (seeded) translate to SINUMERIK: one ``SPOS`` and the two strokes per tap, never a feed move
-  in their place, the SINUMERIK text's own simulation moves as rs274 runs the LinuxCNC source, and
-  ``verify`` passes.
+  ``G84``/``G74`` (seeded) translate to SINUMERIK: a ``G33.1`` as ``CYCLE84`` called once where the tool
+  stands (``tests/test_siemens_tap_cycle.py`` derives its parameters), a Fanuc tap cycle as ``MCALL CYCLE84``
+  where it moves alike, else as ``SPOS`` and the two strokes; never a feed move in their place, the SINUMERIK
+  text's own simulation moves as rs274 runs the LinuxCNC source, and ``verify`` passes.
 * ``SPOS=<angle>`` reads back as an oriented spindle stop: an event of its own, except right before a tap,
   where it is the tap's preparation (as Fanuc's ``M29``); SINUMERIK programs with SPOS, G331 and G332 round
   trip byte for byte; what is not modelled is kept verbatim by name.
@@ -57,33 +58,44 @@ def verified(source: str, text: str, siemens: str) -> None:
     assert report.ok and report.max_deviation < 1e-6, report.summary()
 
 
-def test_g33_1_becomes_spos_and_the_two_strokes_hand_derived() -> None:
+def test_g33_1_in_g91_becomes_spos_and_the_two_strokes_hand_derived() -> None:
     text = "G21 G90 G17\nS500 M4\nG0 X1 Y2 Z5 F200\nG91 G33.1 Z-8 K1\nM2\n"
-    # M4: a left-hand thread, K-1; SPOS=0 (the set-up's orientation angle) before G331; in to 8 below the
-    # start Z5 (G90 for the strokes), out to Z5; then G1 with the spindle direction (back to speed control)
-    # and the feed said again, and G91 back
+    # in G91 (CYCLE84's levels are absolute): M4, a left-hand thread, K-1; SPOS=0 (the set-up's orientation
+    # angle) before G331; in to 8 below the start Z5 (G90 for the strokes), out to Z5; then G1 with the spindle
+    # direction (back to speed control) and the feed said again, and G91 back
     assert to("linuxcnc", "siemens", text) == ("G17 G710 G90\nS500 M4\nG0 X1. Y2. Z5. F200.\nSPOS=0\n"
                                                "G90 G331 Z-3. K-1. S500\nG332 Z5. K-1.\nG91 G1 F200. M4\nM2\n")
     verified("linuxcnc", text, to("linuxcnc", "siemens", text))
 
 
+def test_g33_1_in_g90_becomes_cycle84_once_hand_derived() -> None:
+    text = "G21 G90 G17\nS500 M4\nG0 X1 Y2 Z5 F200\nG33.1 Z-3 K1\nM2\n"
+    # from Z5 (RTP = RFP = 5, SDIS 0) to Z-3 (DP); M4: SDAC 4, a left-hand thread, PIT -1; SST = SST1 = S
+    assert to("linuxcnc", "siemens", text) == ("G17 G710 G90\nS500 M4\nG0 X1. Y2. Z5. F200.\n"
+                                               "CYCLE84(5., 5., 0, -3., , , 4, , -1., 0, 500, 500)\nM2\n")
+    verified("linuxcnc", text, to("linuxcnc", "siemens", text))
+
+
 @needs_rs274
 @pytest.mark.parametrize("seed", range(PROGRAMS))
-def test_g33_1_reaches_siemens_as_strokes_and_moves_as_rs274(seed: int) -> None:
+def test_g33_1_reaches_siemens_as_cycle84_and_moves_as_rs274(seed: int) -> None:
     text = _linuxcnc_taps(random.Random(2600 + seed))
     siemens = to("linuxcnc", "siemens", text)
     taps = text.count("G33.1")
-    assert siemens.count("SPOS=0") == siemens.count("G331") == siemens.count("G332") == taps, siemens
+    # CYCLE84 once in G90, the strokes in G91 (the cycle's levels are absolute)
+    assert siemens.count("CYCLE84(") + siemens.count("G331") == taps, siemens
+    assert siemens.count("SPOS=0") == siemens.count("G331") == siemens.count("G332"), siemens
     same_moves(moves(siemens, "siemens"), oracle(text))
     verified("linuxcnc", text, siemens)
 
 
 @pytest.mark.parametrize("seed", range(PROGRAMS))
-def test_a_fanuc_rigid_tap_reaches_siemens_as_strokes(seed: int) -> None:
+def test_a_fanuc_rigid_tap_reaches_siemens_as_cycle84_or_strokes(seed: int) -> None:
     text = _fanuc_rigid_program(random.Random(2700 + seed))
     siemens = to("fanuc", "siemens", text)
-    taps = sum(1 for line in text.splitlines() if line.startswith(("G98", "G99", "X")))
-    assert siemens.count("SPOS=0") == siemens.count("G331") == siemens.count("G332") == taps, siemens
+    assert "CYCLE84(" in siemens or siemens.count("SPOS=0") == siemens.count("G331") == siemens.count("G332") > 0, \
+        siemens
+    assert [m for m in moves(siemens, "siemens") if m["move"] == "tap"] and "G1 Z" not in siemens
     assert "M29" not in siemens.replace(";M29", "")
     assert [m["move"] for m in moves(siemens, "siemens")] == [m["move"] for m in moves(text, "fanuc")]
     verified("fanuc", text, siemens)

@@ -272,8 +272,10 @@ class SiemensWriter(WordWriter):
         can be written as that definition where it stands: no call active, G17 G90 in force, nothing else in
         the block but its number and comments, a straight run of the text, parameters a call writes. Otherwise nothing of it is written, and the first hole writes the call
         or says why it cannot (``hole_block``)."""
+        speed_known = cycle.kind not in TAPS or cycle.pitch is None or (
+            isinstance(self.modal.spindle_rpm, (int, float)) and self.modal.spindle_rpm > 0)
         return (self.call is None and not self.flowing and self.modal.distance == "absolute" and self.modal.plane == "XY"
-                and all(k in _CYCLE_OWN for k in block.sections) and parameters_writable(cycle))
+                and all(k in _CYCLE_OWN for k in block.sections) and parameters_writable(cycle) and speed_known)
 
     def definition_block(self, block: Block, cycle: CannedCycle) -> str:
         """``N.. G0`` and ``MCALL CYCLE8x(..)``: the call is active from here, so its holes are position blocks
@@ -283,7 +285,7 @@ class SiemensWriter(WordWriter):
         sequence = block.sections.get("Sequence")
         if sequence is not None:
             self.targets.mark(f"N{getattr(sequence, 'number')}")
-        self.call = Call.of(cycle)
+        self.call = self.call_of(cycle, block)  # a rigid tap's SST: the speed in force, as its holes write it
         text = self.call.text(lambda value: self.number(value, "Z"), lambda value: self.number(value, "F"))
         comments = block.sections.get("Comments")
         if comments is not None:

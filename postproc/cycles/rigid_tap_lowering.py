@@ -49,6 +49,16 @@ def _resolve(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> It
             yield block
             continue
         own = sections.get("RigidTap")
+        if target.RIGID_TAP_CYCLE and isinstance(own, RigidTap) and own.stroke is None and taps == [own] \
+                and (ctx.state.distance == "absolute" and ctx.state.plane == "XY" or not target.TAP_STROKES):
+            # the cycle where its levels read as written (absolute, the XY plane); elsewhere the strokes
+            try:
+                as_cycle_call(block, ctx, own)
+            except PostprocError as err:
+                ctx.diagnostics.error(err)
+                continue
+            yield block
+            continue
         if target.TAP_STROKES and isinstance(own, RigidTap) and own.stroke is None:
             try:
                 yield from as_strokes(block, ctx, target, own)
@@ -78,14 +88,6 @@ def _resolve(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> It
                 ctx.diagnostics.error(err)
                 continue
             yield from made
-            continue
-        if target.RIGID_TAP_CYCLE and isinstance(own, RigidTap) and own.stroke is None and taps == [own]:
-            try:
-                as_cycle_call(block, ctx, own)
-            except PostprocError as err:
-                ctx.diagnostics.error(err)
-                continue
-            yield block
             continue
         why = _refusal(taps, target)
         if why is not None:
