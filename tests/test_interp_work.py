@@ -84,7 +84,7 @@ HOSTILE = [
      "7:1: error: loop 'END1'"),
     ("linuxcnc", "G90 G0 X0 Y0 Z10\no1 while [#1 GE 0]\nG81 X0 Y0 Z-1 R1 L9999 F100\nG80\n#1=[#1+1]\no1 endwhile\nM2\n",
      "6:1: error: loop 'o1 endwhile'"),
-    ("linuxcnc", "o<w> sub\n#<d>=[#1+1]\no100 if [#<d> LT 40]\no<w> call [#<d>]\no<w> call [#<d>]\no100 endif\n"
+    ("linuxcnc", "o<w> sub\n#<d>=[#1+1]\no100 if [#<d> LT 9]\no<w> call [#<d>]\no<w> call [#<d>]\no100 endif\n"
                  "G0 X1\no<w> endsub\no<w> call [0]\nM2\n",
      ("4:1: error: call 'o<w> call [#<d>]'", "5:1: error: call 'o<w> call [#<d>]'")),
 ]
