@@ -94,17 +94,37 @@ _AXIS_KEYS: Final = frozenset("xyzabcuvw")
 def _axes(ev: Event, controlled: Event | None) -> dict[str, float]:
     """The end point of a move event, in its order (the machine's axes): its controlled point where it has
     one, as ``_controlled`` gives it (the controlled axes replace the programmed ones in place, any other
-    follows). A float is taken as it is: compiled, ``float(v)`` of a value of unknown type is a call of the
-    builtin through Python (~250 instructions)."""
+    follows). A number is converted as its type: compiled, ``float(v)`` of a value of unknown type is a call
+    of the builtin through Python (~250 instructions)."""
     end: dict[str, float] = {}
+    if controlled is None:
+        for k, v in ev.items():
+            if k in _AXIS_KEYS:
+                end[k] = _real(v)
+        return end
+    matched = 0
     for k, v in ev.items():
         if k in _AXIS_KEYS:
-            end[k] = v if isinstance(v, float) else float(v)
-    if controlled is not None:
-        for k, v in controlled.items():
-            if k in _AXIS_KEYS:
-                end[k] = v if isinstance(v, float) else float(v)
+            c = controlled.get(k)
+            if c is None:
+                end[k] = _real(v)
+            else:
+                end[k] = _real(c)
+                matched += 1
+    if matched != len(controlled):  # an arc's centre, or an axis the programmed point does not name
+        for k, c in controlled.items():
+            if k in _AXIS_KEYS and k not in end:
+                end[k] = _real(c)
     return end
+
+
+def _real(v: Any) -> float:
+    """``float(v)`` of a toolpath's number, an int or a float mostly."""
+    if isinstance(v, float):
+        return v
+    if isinstance(v, int):
+        return float(v)
+    return float(v)
 
 
 def _dist(a: dict[str, float], b: dict[str, float]) -> float:
@@ -126,7 +146,7 @@ def _move(ev: Event, start: dict[str, float]) -> Move:
     kind = ev["move"]
     f = ev.get("f")
     line = ev["line"]
-    m = Move(kind, start, end, None if f is None else f if isinstance(f, float) else float(f), line, line)
+    m = Move(kind, start, end, None if f is None else _real(f), line, line)
     if kind == "cw" or kind == "ccw":
         plane = ev.get("plane", "XY")
         i, j, _ = PLANE_INDEX[plane]

@@ -147,6 +147,9 @@ class Moves:
         the machine's, unknown)."""
         self.sync: float | None = None
         """While a rigid tap moves (``rigid_tap``): its pitch in mm per revolution, the ``f`` of its moves."""
+        self.written_feed: float | None = None
+        self.written_f: float | int = 0
+        """The feed ``_feed_into`` last wrote and its ``num`` (the feed of a CAM program changes rarely)."""
 
 
     def target(self, block: Block, axes: dict[str, float | Expr], absolute: bool,
@@ -729,9 +732,13 @@ class Moves:
             if self.header_mode != "per_rev":
                 ev["feed_mode"] = "per_rev"
             return
-        if self.feed is None:
+        feed = self.feed
+        if feed is None:
             raise ProgramError(NO_FEED, self._at(), needs="F")
-        ev["f"] = num(self.feed)
+        if feed != self.written_feed:  # always for nan: ``num`` refuses it at each move, as it did
+            self.written_f = num(feed)
+            self.written_feed = feed
+        ev["f"] = self.written_f
         if self.header_mode is None:
             self.header_mode = self.modal.feed_mode
         elif self.modal.feed_mode != self.header_mode:

@@ -515,11 +515,12 @@ def simulate(blocks: Iterable[Block], ctx: Context, live_after_end: list[int] | 
     holding = True
     units: str | None = None  # the program's units at its first move, for the header
     out: list[Event] = []
+    append = out.append  # one bound method for the run, not one a block
     programmed = ""
     orientation: Event | None = None  # an oriented stop held until what follows it is known (``prepared_taps``)
     for block in blocks:
         try:
-            sim.block(block, out.append)
+            sim.block(block, append)
         except PostprocError as err:
             report(err.located(ctx.at(block)))
             out.clear()
