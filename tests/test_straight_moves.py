@@ -198,6 +198,8 @@ def _no_lane(writer: Writer) -> None:
 @example(program=["G21", "G90", "G1 F100.", "G0 Z5.", "G99 G81 X1. Y2. Z-3. R1. F100.", "X3. Y1.", "G80 G90"])
 @example(program=["G20", "G91", "G0 Z1.", "G98 G83 X0. Y1.5 Z-6. R1. Q2. F80.", "G91 G81 X5. Z-4. R-4. K3 F100.",
                   "G82 X2. Y2. Z-1. R0.5 P500 F60.", "G80 G90"])  # an expansion's moves (``compound``)
+@example(program=["G21 G90", "G0 Z10.", "G1 F100.", "G82 X2. Y2. Z-1. R0.5 P500 F60.", "G0 Z5.",
+                  "G82 X3. Y2. Z-1. R0.5 P500 F60.", "G80"])  # a move on the lane cancels the cycle (Fagor's K)
 def test_the_lane_writes_what_the_general_path_writes(program: list[str], source: str, target: str,
                                                      monkeypatch: pytest.MonkeyPatch) -> None:
     fast = _run(program, target, source)
@@ -212,6 +214,7 @@ def test_the_lane_is_chosen_where_the_base_writes() -> None:
     lane copies takes it; the test above would pass with no lane ever chosen."""
     lanes = {name: _lane("fanuc", name) for name in sorted(default_registry().dialects)}
     assert lanes["grbl"] is StraightLane and lanes["fanuc"] is CopyLane and _lane("linuxcnc", "grbl") is StraightLane
+    assert lanes["isg"] is StraightLane and lanes["fagor"] is StraightLane  # (their splits: ``split_block``)
     assert all(lane in (None, StraightLane, CopyLane) for lane in lanes.values())
 
 

@@ -21,6 +21,8 @@ from ..rs274.writer import WordWriter
 from ..state import PLANE_AXES
 
 AXES: Final = frozenset("XYZABCUVW")
+LANE_MODES: Final = frozenset(("rapid", "linear", "cw", "ccw"))
+"""The motion modes the straight lane writes."""
 STRAIGHT_KEYS: Final = frozenset(("Sequence", "Motion", "Feed"))
 """A block of only these sections (a move, its block number and feed rate) is a straight block."""
 _CENTER_LETTER: Final = {"X": "I", "Y": "J", "Z": "K"}
@@ -94,7 +96,7 @@ class StraightLane:
         codes = writer.codes
         self.codes: dict[str, str] = {}
         """Motion mode -> its code, spelled once: rapid, linear, cw, ccw (what the table has)."""
-        for mode in ("rapid", "linear", "cw", "ccw"):
+        for mode in LANE_MODES:
             code = codes.spell("motion", mode)
             if code is not None:
                 self.codes[mode] = code
@@ -184,6 +186,8 @@ class StraightLane:
                     or values.get(letter) != rate:
                 return None
             writer.modal.feed = rate
+        if writer.after_blocks:
+            writer.after_block(block)  # as ``generate`` (after the block's words: none fails from here)
         eol = block.eol or "\n"
         if coded:
             start = head + 1 if head else 0
