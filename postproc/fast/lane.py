@@ -17,7 +17,7 @@ from typing import Callable, Final
 from ..ir import Block
 from ..rs274.writer import WordWriter
 from ..output.writer_base import Writer
-from .straight import LANE_MODES, STRAIGHT_KEYS, CopyLane, StraightLane
+from .straight import LANE_MODES, STRAIGHT_KEYS, CopyLane, SourceLane, StraightLane
 
 STRAIGHT_METHODS: Final = ("write_block", "words_block", "generate", "unsplit", "_generate", "section_words", "section_writer",
                            "dispatch_table", "sequence_words", "motion_words", "feed_words", "feed_rate_words",
@@ -28,6 +28,8 @@ them: ``split_block``, offered only a block of a ``SPLIT`` section (none is a st
 calls as ``generate`` does (while the writer's ``after_blocks`` is set)."""
 COPY_METHODS: Final = ("write_block", "words_block", "normalized", "_track")
 """What the general path calls to write a straight block normalised back to its own dialect (``CopyLane``)."""
+SOURCE_METHODS: Final = ("write_block", "words_block")
+"""What the general path calls to copy a straight block to its own dialect (``SourceLane``)."""
 
 
 _BASE: Final = frozenset(WordWriter.__mro__)
@@ -60,6 +62,8 @@ def choose(writer: Writer) -> Callable[[Block], str | None] | None:
               and writer.leading_zero and not writer.rounding)  # ``normalized`` copies a canonical block
     if copies and own(cls, COPY_METHODS):
         return CopyLane(writer).write
+    if writer.copy_ok and own(cls, SOURCE_METHODS):
+        return SourceLane(writer).write
     if writer.source_dialect != writer.DIALECT and own(cls, STRAIGHT_METHODS) \
             and STRAIGHT_KEYS.isdisjoint(cls.TRANSFORMS) and LANE_MODES.isdisjoint(writer.split_motions):
         return StraightLane(writer).write
