@@ -22,7 +22,7 @@ import postproc.fast.lane
 from postproc.api import translate
 from postproc.errors import Diagnostics, ErrorList
 from postproc.fast.lane import COPY_METHODS, STRAIGHT_METHODS, choose, own
-from postproc.fast.straight import CopyLane, StraightLane
+from postproc.fast.straight import CopyLane, SourceLane, StraightLane
 from postproc.ir import Block
 from postproc.plugins import default_registry
 from postproc.rs274.writer import WordWriter
@@ -33,12 +33,12 @@ SOURCES = ("fanuc", "linuxcnc")
 """Dialects that read the random programs (Fanuc's words; LinuxCNC reads most of them alike)."""
 
 
-def _lane(source: str, target: str) -> type | None:
-    """The lane a run from ``source`` to ``target`` takes (normalised when it is the same dialect): the
-    class of its shortcut, or None."""
+def _lane(source: str, target: str, normalize: bool = True) -> type | None:
+    """The lane a run from ``source`` to ``target`` takes (normalised when it is the same dialect, unless
+    not ``normalize``): the class of its shortcut, or None."""
     dialect = default_registry().dialect(target)
     setup = MachineSetup()
-    setup.output.normalize = target == source
+    setup.output.normalize = target == source and normalize
     ctx = default_registry().dialect(source).context("p.nc", setup, Diagnostics())
     writer = dialect.WRITER(ctx, source, dialect)  # type: ignore[misc]
     lane = choose(writer)
@@ -167,11 +167,11 @@ def lines(draw: st.DrawFn) -> list[str]:
     return out
 
 
-def _run(program: list[str], target: str, source: str = "fanuc") -> str:
+def _run(program: list[str], target: str, source: str = "fanuc", normalize: bool = True) -> str:
     out = io.StringIO()
     diagnostics = Diagnostics(warn_stream=io.StringIO())
     setup = MachineSetup()
-    setup.output.normalize = target == source
+    setup.output.normalize = target == source and normalize
     try:
         translate([line + "\n" for line in program], out, file="p.nc", source=source, target=target,
                   diagnostics=diagnostics, setup=setup)
@@ -198,6 +198,8 @@ def _no_lane(writer: Writer) -> None:
 @example(program=["G21", "G90", "G1 F100.", "G0 Z5.", "G99 G81 X1. Y2. Z-3. R1. F100.", "X3. Y1.", "G80 G90"])
 @example(program=["G20", "G91", "G0 Z1.", "G98 G83 X0. Y1.5 Z-6. R1. Q2. F80.", "G91 G81 X5. Z-4. R-4. K3 F100.",
                   "G82 X2. Y2. Z-1. R0.5 P500 F60.", "G80 G90"])  # an expansion's moves (``compound``)
+@example(program=["G21 G90", "G0 Z10.", "G1 F100.", "G82 X2. Y2. Z-1. R0.5 P500 F60.", "G0 Z5.",
+                  "G82 X3. Y2. Z-1. R0.5 P500 F60.", "G80"])  # a move on the lane cancels the cycle (Fagor's K)
 def test_the_lane_writes_what_the_general_path_writes(program: list[str], source: str, target: str,
                                                      monkeypatch: pytest.MonkeyPatch) -> None:
     fast = _run(program, target, source)
@@ -207,11 +209,31 @@ def test_the_lane_writes_what_the_general_path_writes(program: list[str], source
     assert fast == slow
 
 
+COPIES = tuple(source for source in SOURCES if _lane(source, source, normalize=False) is not None)
+"""The sources of the random programs whose copy (not normalised) a run writes with a lane."""
+
+
+@pytest.mark.parametrize("source", COPIES)
+@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@given(program=lines())
+@example(program=["G21 G90", "M3", "G95", "G1 X1. F0.1", "X2."])  # feed per revolution, no speed: refused
+@example(program=["G21 G90", "G1 F100.", "N10 X1.5 Y-2.25 F1200.", "X0.0000001", "S1000.5 M3", "X2."])
+def test_the_copy_lane_copies_what_the_general_path_copies(program: list[str], source: str,
+                                                           monkeypatch: pytest.MonkeyPatch) -> None:
+    fast = _run(program, source, source, normalize=False)
+    with monkeypatch.context() as patch:
+        patch.setattr(postproc.fast.lane, "install", _no_lane)
+        slow = _run(program, source, source, normalize=False)
+    assert fast == slow
+
+
 def test_the_lane_is_chosen_where_the_base_writes() -> None:
     """The lanes of the shipped writers: a dialect whose writer class overrides none of the methods a
     lane copies takes it; the test above would pass with no lane ever chosen."""
     lanes = {name: _lane("fanuc", name) for name in sorted(default_registry().dialects)}
     assert lanes["grbl"] is StraightLane and lanes["fanuc"] is CopyLane and _lane("linuxcnc", "grbl") is StraightLane
+    assert lanes["isg"] is StraightLane and lanes["fagor"] is StraightLane  # (their splits: ``split_block``)
+    assert _lane("fanuc", "fanuc", normalize=False) is SourceLane and COPIES == SOURCES
     assert all(lane in (None, StraightLane, CopyLane) for lane in lanes.values())
 
 

@@ -52,6 +52,10 @@ class FagorWriter(WordWriter):
     DWELL_WORD: ClassVar[str] = ""
     MACHINE_MOVES: ClassVar[frozenset[str]] = frozenset(("rapid",))
     """``G53`` is written with ``G00`` only (``codes``: a feed move under G53 is not confirmed [?])."""
+    SPLIT: ClassVar[frozenset[str]] = frozenset(("TapeMark", "MachineCoordinates"))
+    """Another dialect's tape mark, a move in machine coordinates: ``split_block``."""
+    SPLIT_MOTIONS: ClassVar[frozenset[str]] = _REFERENCE
+    """A reference return: ``split_block``."""
 
     dwell_in_force: float | None = None
     """The cycle dwell (seconds) the written program has in force: None before any cycle and after a
@@ -60,7 +64,7 @@ class FagorWriter(WordWriter):
     def target_cycle_words(self) -> CycleWords:
         return cycle_words(self.ctx.setup)
 
-    def generate(self, block: Block) -> str:
+    def split_block(self, block: Block) -> str | None:
         if "TapeMark" in block.sections:
             return ";%" + (block.eol or "\n")  # a tape's start or end: no Fagor block, kept as a trace
         motion = block.sections.get("Motion")
@@ -70,12 +74,16 @@ class FagorWriter(WordWriter):
         if isinstance(motion, Motion) and motion.axes \
                 and (motion.mode in _REFERENCE or "MachineCoordinates" in block.sections):
             return self.machine_move(block, motion)
-        text = super().generate(block)
+        return None
+
+    def after_block(self, block: Block) -> None:
+        """A cycle cancel or a move ends the cycle whose dwell is in force (followed from the cycle on:
+        ``after_blocks``; not after a move in machine coordinates, written by ``split_block``)."""
         sections = block.sections
         motion = sections.get("Motion")
         if "CycleCancel" in sections or (isinstance(motion, Motion) and motion.mode in _CANCELS):
             self.dwell_in_force = None
-        return text
+            self.after_blocks = False
 
     def canned_cycle_words(self, s: Any, block: Block) -> list[str]:
         source, target = self.ctx.cycle_words or NEUTRAL_CYCLE_WORDS, self.target_cycle_words()
@@ -91,6 +99,7 @@ class FagorWriter(WordWriter):
                 and abs(seconds - self.dwell_in_force) > 1e-12:
             words.append(target.dwell + self.cycle_dwell(seconds, target, block))
         self.dwell_in_force = seconds
+        self.after_blocks = True  # until a cancel (``after_block``)
         return words
 
     def hole_pattern_words(self, s: Any, block: Block) -> list[str]:
@@ -169,7 +178,7 @@ class FagorWriter(WordWriter):
     def _part(self, block: Block, sections: dict[str, Section]) -> str:
         part = Block(block.line, None, "\n")
         part.sections = sections
-        return super().generate(part)
+        return self.unsplit(part)
 
     def _reference(self, motion: Motion, block: Block) -> dict[str, float]:
         """The home position of each axis a reference return names, from the set-up, in program units."""

@@ -53,6 +53,10 @@ class IsgWriter(WordWriter):
     DWELL_WORD: ClassVar[str] = "X"
     SUBPROGRAM_NAMES: ClassVar[NameRule] = NameRule(numbers=range(0), spare=range(0), names=True)
     """Local subroutines by name only (DIALECTS.md 1.3 [V])."""
+    SPLIT: ClassVar[frozenset[str]] = frozenset(("MachineCoordinates", "Dwell", "Label"))
+    """A move in machine coordinates, a dwell beside other words, a label: ``split_block``."""
+    SPLIT_MOTIONS: ClassVar[frozenset[str]] = REFERENCE
+    """A reference return: ``split_block`` (``machine_move``)."""
 
     def __init__(self, ctx: Context, source_dialect: str, target: type[Dialect] | None = None) -> None:
         super().__init__(ctx, source_dialect, target)
@@ -97,7 +101,7 @@ class IsgWriter(WordWriter):
                 err.located(self.ctx.at(block))
             raise
 
-    def generate(self, block: Block) -> str:
+    def split_block(self, block: Block) -> str | None:
         motion = block.sections.get("Motion")
         if isinstance(motion, Motion) and ("MachineCoordinates" in block.sections or motion.mode in REFERENCE):
             return self.machine_move(block, motion)
@@ -113,8 +117,8 @@ class IsgWriter(WordWriter):
             return self.around_dwell(block, _WITH_DWELL)
         label = sections.get("Label")
         if label is not None:
-            return f"[{getattr(label, 'name')}] " + super().generate(block)
-        return super().generate(block)
+            return f"[{getattr(label, 'name')}] " + self.unsplit(block)
+        return self.unsplit(block)
 
     def program_start(self, s: Any, block: Block) -> str:
         return "%" + (str(s.number) if s.number is not None else str(s.name))

@@ -21,6 +21,8 @@ from ..rs274.writer import WordWriter
 from ..state import PLANE_AXES
 
 AXES: Final = frozenset("XYZABCUVW")
+LANE_MODES: Final = frozenset(("rapid", "linear", "cw", "ccw"))
+"""The motion modes the straight lane writes."""
 STRAIGHT_KEYS: Final = frozenset(("Sequence", "Motion", "Feed"))
 """A block of only these sections (a move, its block number and feed rate) is a straight block."""
 _CENTER_LETTER: Final = {"X": "I", "Y": "J", "Z": "K"}
@@ -82,6 +84,37 @@ class CopyLane:
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
+class SourceLane:
+    """A straight block copied to its own dialect, not normalised, is its source line and end of line, as
+    ``words_block`` copies a block (installed where the writer copies its dialect's blocks: ``copy_ok``)."""
+
+    def __init__(self, writer: WordWriter) -> None:
+        self.writer = writer
+        self.per_rev_checked = bool(writer.PER_REV_NEEDS_SPEED)
+        """As ``CopyLane.per_rev_checked``."""
+        self.points = bool(writer.rounding or writer.whole_speed)
+        """``words_block`` keeps the block a rounding warning points at."""
+
+    def write(self, block: Block) -> str | None:
+        """The block's source line, or None."""
+        sections = block.sections
+        text = block.text
+        if text is None:
+            return None
+        for key in sections:
+            if key not in STRAIGHT_KEYS:
+                return None
+        writer = self.writer
+        if self.per_rev_checked and writer.modal.feed_mode == "per_rev":
+            return None
+        if self.points:
+            writer.at_block = block
+        if "Feed" in sections:
+            writer.modal.apply(sections)
+        return text + block.eol
+
+
+@mypyc_attr(allow_interpreted_subclasses=True)
 class StraightLane:
     """A canonical block of another dialect that is a rapid, feed or arc move of numbers, maybe with a
     block number and a feed rate, its words in that order, each number the value it reads as and one the
@@ -94,7 +127,7 @@ class StraightLane:
         codes = writer.codes
         self.codes: dict[str, str] = {}
         """Motion mode -> its code, spelled once: rapid, linear, cw, ccw (what the table has)."""
-        for mode in ("rapid", "linear", "cw", "ccw"):
+        for mode in LANE_MODES:
             code = codes.spell("motion", mode)
             if code is not None:
                 self.codes[mode] = code
@@ -184,6 +217,8 @@ class StraightLane:
                     or values.get(letter) != rate:
                 return None
             writer.modal.feed = rate
+        if writer.after_blocks:
+            writer.after_block(block)  # as ``generate`` (after the block's words: none fails from here)
         eol = block.eol or "\n"
         if coded:
             start = head + 1 if head else 0

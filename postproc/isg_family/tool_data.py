@@ -34,7 +34,9 @@ otherwise the translation is a located error naming both registers; the set-up's
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any, Iterator
+from typing import Any, Final, Iterator
+
+from mypy_extensions import mypyc_attr
 
 from ..compensation.tool_table import ToolTable
 from ..context import Context
@@ -44,11 +46,11 @@ from ..errors import Location, PostprocError, UnsupportedError
 from ..expr import Expr
 from ..ir import Block, CutterCompensation, DataSetting, DistanceMode, Motion, ToolLengthOffset, Units
 
-SELECTED_KEY = "isg_family.tool_data"
+SELECTED_KEY: Final = "isg_family.tool_data"
 """``ModalState.extra`` key of the D selected while reading (an int or an expression)."""
-_WATCHED = frozenset(("ToolLengthOffset", "CutterCompensation", "DataSetting", "Units", "DistanceMode"))
-MM_PER_INCH = 25.4
-SAME_MM = 1e-9
+_WATCHED: Final = frozenset(("ToolLengthOffset", "CutterCompensation", "DataSetting", "Units", "DistanceMode"))
+MM_PER_INCH: Final = 25.4
+SAME_MM: Final = 1e-9
 
 
 # -- reading -----------------------------------------------------------------------------------------
@@ -118,6 +120,7 @@ def _d_keeps_the_length(resolver: Any, cc: CutterCompensation) -> bool:
     return abs(have - wanted) <= SAME_MM
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 @dataclass
 class _Selection:
     length: int | None = None
@@ -176,7 +179,7 @@ def _select(blocks: Iterator[Block], ctx: Context, toggles: bool, later_z: bool 
                     "the tool length changed before is applied by this incremental Z move on the target (when "
                     "the axis moves [?]), on the source's controller only at the next absolute Z: program Z "
                     "absolutely here", ctx.at(block, ctx.column_of(block, "Z"))))
-        if _WATCHED.isdisjoint(sections):
+        if _unwatched(sections):
             yield block
             continue
         units = sections.get("Units")
@@ -197,6 +200,15 @@ def _select(blocks: Iterator[Block], ctx: Context, toggles: bool, later_z: bool 
                 ctx.diagnostics.error(err.located(at))
                 continue
         yield block
+
+
+def _unwatched(sections: dict[str, Any]) -> bool:
+    """No section of the block is one ``_select`` follows (most blocks: a move). A loop over the block's
+    few keys: compiled, cheaper than ``_WATCHED.isdisjoint``, a bound method call (``state.changes_nothing``)."""
+    for key in sections:
+        if key in _WATCHED:
+            return False
+    return True
 
 
 def _register(value: int | Expr | None, what: str) -> int | None:

@@ -24,7 +24,7 @@ program writes another, is left out.
 
 from __future__ import annotations
 
-from typing import Iterator
+from typing import Final, Iterator
 
 from ..compensation.tool_table import ENTRY, SIDEWAYS
 from ..context import Context
@@ -32,18 +32,25 @@ from ..dialect import Dialect
 from ..errors import UnsupportedError
 from ..ir import Block, Comments, DataSetting
 
-LENGTH, RADIUS = "Z", "R"
-"""The entry's words for its length and its radius."""
+LENGTH: Final = "Z"
+"""The entry's word for its length."""
+RADIUS: Final = "R"
+"""The entry's word for its radius."""
 
 
 def write_tool_entries(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
     """Lowering step: a ``tool_entry`` setting of another family -> ``tool_length`` and ``cutter_offset``
-    settings (see the module docstring); every other block as it is."""
-    family = target.family()
+    settings (see the module docstring); every other block as it is. Back to the program's own dialect
+    (whose settings are of its family) or to a target without a writer, the stream passes through."""
+    if ctx.dialect == target.NAME or target.WRITER is None:
+        return blocks
+    return _write(blocks, ctx, target.family())
+
+
+def _write(blocks: Iterator[Block], ctx: Context, family: str) -> Iterator[Block]:
     for block in blocks:
         setting = block.sections.get("DataSetting")
-        if not isinstance(setting, DataSetting) or setting.table != ENTRY or setting.family == family \
-                or target.WRITER is None:
+        if not isinstance(setting, DataSetting) or setting.table != ENTRY or setting.family == family:
             yield block
             continue
         try:

@@ -69,6 +69,9 @@ class WordWriter(MotionWords):
     SPLIT: ClassVar[frozenset[str]] = frozenset()
     """Sections that may make the dialect write a block as more than one line in an order of its own
     (LinuxCNC: M19 after the block's other actions): ``generate`` offers such a block to ``split_block``."""
+    SPLIT_MOTIONS: ClassVar[frozenset[str]] = frozenset()
+    """Motion modes ``generate`` offers to ``split_block`` likewise (ISG and Fagor: a reference return, a
+    move to the set-up's home written in lines of its own)."""
     PER_REV_NEEDS_SPEED: ClassVar[str] = ""
     """What the controller cannot express when a feed move in feed per revolution meets no spindle speed
     (rs274 refuses it: "Cannot feed with zero spindle speed in feed per rev mode"), in the dialect's words;
@@ -92,6 +95,11 @@ class WordWriter(MotionWords):
         """Section key -> its writing function: this class's dispatch table (``section_writer``), shared by
         every run that writes this dialect."""
         self.blank_as_trace = self.BLANK_AS_TRACE  # (a field: read for every generated block)
+        self.split_motions: frozenset[str] = self.SPLIT_MOTIONS  # (likewise)
+        self.after_blocks = False
+        """Set by a dialect while it follows what its written blocks do beyond the modal state (Fagor: from
+        a cycle written with its dwell until the move that cancels the cycle): ``generate``, and the fast
+        lane for a straight block, then call ``after_block``."""
         self.expanding = False
         """True while an expansion is written (``compound``): a writer that drops what its controller lacks
         from a block may not drop it from a cycle's motion."""
@@ -215,11 +223,23 @@ class WordWriter(MotionWords):
     def generate(self, block: Block) -> str:
         """Generate a block (and any lines a compound motion adds) from its sections; with
         ``BLANK_AS_TRACE``, a block of source text whose sections write nothing is its source as a comment.
-        A block with a ``SPLIT`` section is the dialect's ``split_block`` where that writes it."""
-        if not self.SPLIT.isdisjoint(block.sections):
+        A block with a ``SPLIT`` section or a move in a ``SPLIT_MOTIONS`` mode is the dialect's
+        ``split_block`` where that writes it; any other is ``unsplit``, then ``after_block`` where the
+        dialect follows its blocks (``after_blocks``)."""
+        sections = block.sections
+        split_motions = self.split_motions
+        if not self.SPLIT.isdisjoint(sections) or split_motions and _moves_in(sections, split_motions):
             split = self.split_block(block)
             if split is not None:
                 return split
+        text = WordWriter.unsplit(self, block)  # (a direct call, not a dispatch)
+        if self.after_blocks:
+            self.after_block(block)
+        return text
+
+    def unsplit(self, block: Block) -> str:
+        """The block as ``generate`` writes it when no ``split_block`` does: its words on one line (and any
+        lines a compound motion adds). A dialect's ``split_block`` writes a part with it."""
         text = WordWriter._generate(self, block)  # (a direct call, not a dispatch)
         if self.blank_as_trace and (not text or text.isspace()) and block.sections:
             if block.text is None:
@@ -228,9 +248,13 @@ class WordWriter(MotionWords):
         return text
 
     def split_block(self, block: Block) -> str | None:
-        """A block with a ``SPLIT`` section as lines in the dialect's order, or None: it is one line (the
-        base splits nothing)."""
+        """A block with a ``SPLIT`` section (or a ``SPLIT_MOTIONS`` move) as lines in the dialect's order, or
+        None: it is one line (the base splits nothing)."""
         return None
+
+    def after_block(self, block: Block) -> None:
+        """What the dialect follows of a block ``generate`` wrote, while ``after_blocks`` is set (the base
+        follows nothing)."""
 
     def _generate(self, block: Block) -> str:
         sections = block.sections
@@ -462,6 +486,12 @@ def _source_text(block: Block) -> str:
     if block.text is not None:
         return one_line(block.text).strip()
     return " ".join(letter + num for letter, num in block.words)
+
+
+def _moves_in(sections: dict[str, Section], modes: frozenset[str]) -> bool:
+    """Whether a block's move is in one of ``modes``."""
+    motion = sections.get("Motion")
+    return isinstance(motion, Motion) and motion.mode in modes
 
 
 def _is_straight(item: Motion) -> bool:
