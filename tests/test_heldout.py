@@ -46,6 +46,13 @@ KNOWN_FAILURES: dict[tuple[str, str], str] = {
         "radii differ from their start radii by 0.001 in (0.0254 mm), past the core's unit-blind 0.01 mm "
         "(postproc/geometry.py ARC_TOLERANCE_MM); LinuxCNC allows 0.002 in in an inch program [K: "
         "interp_internal.hh CENTER_ARC_RADIUS_TOLERANCE_INCH], Mach3's own limit is not known [?]"),
+    ("siemens/cead_arc.mpf", ""): (
+        "a G17 helix written with a K centre word beside I and J (G2 X0 Y0 Z10 I0 J-25 K5): the Siemens reader "
+        "refuses a centre offset outside the plane; whether SINUMERIK ignores that K or alarms is not confirmed [?]"),
+    ("siemens/cead_goto.mpf", ""): (
+        "GOTOC to a missing label (SINUMERIK's GOTOC suppresses alarm 14080 and goes on with the next block [K: "
+        "840D sl Job Planning, program jumps]) and GOTOF to a bare block number (GOTOF 90): both refused by the "
+        "Siemens reader (dialects/siemens, owned elsewhere)"),
     ("haas/enier_lathe_hp_1.nc", ""): _G71_NOSE,
     ("haas/enier_lathe_valve.nc", ""): _G71_NOSE,
     ("haas/enier_lathe_weld_pin.nc", ""): _G71_NOSE,
