@@ -5,7 +5,13 @@ interpreter descends from the NIST RS274/NGC interpreter, so the words, modal gr
 execution are RS274/NGC's; codes are written without leading zeros (``G0``, ``M3``), and read with or
 without them. Canned cycles are read as G73 and G81-G89 with the RS274/NGC words (R, Q, P seconds, L
 repeats). Not in the table, so refused by name when read and never written: M19 (an oriented spindle
-stop is a machine builder's macro on Mach3, not a standard code), G44, G95 and the lathe codes.
+stop is a machine builder's macro on Mach3, not a standard code), G44, G95, G90.1 and the lathe codes.
+G91.1 (incremental I/J/K: offsets from the arc's start) is read as the mode the IR's arcs already have, so it
+leaves no section and is never written; Fusion 360's Mach3 post writes it in its first block
+(``G90 G94 G91.1 G40 G49 G17``). [K] Mach3 Mill manual, G-code table: "G91.1 Incremental IJ mode", "G90.1
+Absolute IJ mode"; Mach3's initial IJ mode is a configuration setting (General Config, "IJ Mode"), which
+this plugin takes as incremental, the mode every arc it reads is given [?]. G90.1 stays unknown: a located
+error, never an arc read with the wrong centre.
 Sources: the Mach3 Mill "Using Mach3Mill" manual (chapter 10, G- and M-code tables) and the NIST
 RS274/NGC interpreter version 3 report the manual follows.
 """
@@ -51,6 +57,7 @@ ROWS = (
     ("G89", "09", "cycle", "bore_dwell_feed"),
     ("G90", "03", "distance", "absolute"),
     ("G91", "03", "distance", "incremental"),
+    ("G91.1", "13", "arc_centres", "incremental"),
     ("G94", "05", "feed_mode", "per_min"),
     ("G98", "10", "return", "initial"),
     ("G99", "10", "return", "r"),
