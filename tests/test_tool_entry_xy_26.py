@@ -79,11 +79,12 @@ def translated(text: str, target: str) -> str:
     return out.getvalue()
 
 
-def test_grbl_refuses_an_entry_offset_across_the_spindle_axis() -> None:
-    with pytest.raises(ErrorList) as info:
-        translated("g21\ng10 l1 p1 x1 z3\nt1 m6 g43\ng0 x0 y0 z0\nm2\n", "grbl")
-    # at the entry (``postproc.lowering.tool_entries``: no target of another family has such a register)
-    assert any(e.location and e.location.line == 2 and "along X" in str(e) for e in info.value.errors), info.value
+def test_grbl_takes_an_entry_offset_across_the_spindle_axis_into_the_path() -> None:
+    # the entry's X1 moves the spindle 1 mm in +X under G43, as its Z3 does in Z (rs274
+    # USE_TOOL_LENGTH_OFFSET(1, 0, 3)): grbl, whose dynamic offset is Z only, gets X0 + 1 written
+    # (``postproc.lowering.sideways_offsets``; it refused the entry before)
+    out = translated("g21\ng10 l1 p1 x1 z3\nt1 m6 g43\ng0 x0 y0 z0\nm2\n", "grbl")
+    assert "G43.1 Z3.\n" in out and "G0 X1. Y0. Z0.\n" in out, out
 
 
 def test_linuxcnc_writes_the_entry_back() -> None:
