@@ -23,6 +23,8 @@ does not know), it is a located error naming what is missing: never a guessed or
 
 from __future__ import annotations
 
+from mypy_extensions import mypyc_attr
+
 from typing import Final, Iterator
 
 from ..compensation.tool_table import ENTRY, SIDEWAYS, ToolTable
@@ -71,6 +73,7 @@ _WATCHED: Final = frozenset(("ToolLengthOffset", "DataSetting", "Units", "Distan
 """Sections ``_Run.follow`` reads in a block that makes no reference return while nothing is pending."""
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class _Run:
     """The offsets in force (mm) and how far the program's current point has moved from the one the frame
     evaluation follows (``postproc.frames.lowering.FrameRun.p``, mm: the points as programmed)."""
