@@ -302,6 +302,29 @@ def test_a_cycle_without_dwell_after_one_with_writes_k0() -> None:
     _verify(program, out, "fanuc", "fagor")
 
 
+def test_the_dwell_is_written_again_after_a_machine_coordinate_move() -> None:
+    """A G53 move ends the cycle (written G53 G00: a rapid cancels it), so the next G81 cannot rely on the
+    K of the cycle before it: the old writer left K out there and the Fagor program lost the 1 s dwell
+    (verify saw it as a rapid where the source dwells)."""
+    program = (PRO["fanuc"] + "S800 M03\nG82 X5. Y5. Z-6. R2. P1000 F50.\nG53 X0. Y0.\n"
+               "G82 X6. Y5. Z-6. R2. P1000 F50.\nG80\nM30\n")
+    out = _translate(program, "fanuc", "fagor")
+    assert out.splitlines()[3:6] == ["G81 X5. Y5. Z2. I-6. K1. F50.", "G53 G00 X0. Y0.",
+                                     "G81 X6. Y5. Z2. I-6. K1. F50."]
+    _verify(program, out, "fanuc", "fagor")
+
+
+def test_every_cycle_call_after_a_dwell_names_its_k() -> None:
+    """Whether the 8070 carries K from G81 to G89, or over a cancel, is not confirmed: once a K was written,
+    each block naming the cycle code writes its own (K0 without a dwell); before that none is needed."""
+    program = (PRO["fanuc"] + "S800 M03\nG81 X4. Y5. Z-6. R2. F50.\nG82 X5. P1000\nG89 X6. P1000\nG80\n"
+               "G81 X7. Y5. Z-6. R2. F50.\nG80\nM30\n")
+    out = _translate(program, "fanuc", "fagor")
+    assert out.splitlines()[3:8] == ["G81 X4. Y5. Z2. I-6. F50.", "G81 X5. K1.", "G89 X6. K1.", "G80",
+                                     "G81 X7. Y5. Z2. I-6. K0. F50."]
+    _verify(program, out, "fanuc", "fagor")
+
+
 def test_a_fanuc_repeat_count_has_no_fagor_word() -> None:
     program = PRO["fanuc"] + "S800 M03\nG91 G81 X5. Z-6. R-2. K3 F50.\nG80\nM30\n"
     assert _errors(program, "fanuc", "fagor") == [

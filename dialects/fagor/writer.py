@@ -5,8 +5,12 @@ comments, ``%name`` headers, and the hole cycles Fagor runs with its own words.
 * Hole cycles: a drilling (Fanuc ``G81``/``G82``) or feed-out boring (``G85``/``G89``) cycle read in
   another dialect is written as Fagor's ``G81``/``G89`` with each word by its role (``R`` -> ``Z``,
   ``Z`` -> ``I``; ``cycle_role_words``); the dwell ``K`` is written from the cycle's seconds in the set-up's
-  unit whenever it differs from the one the written program has in force (``K0`` for a cycle without a
-  dwell after one with), so the dwell never depends on how Fagor carries ``K`` from cycle to cycle.
+  unit. Which cycle parameters the 8070 keeps from one cycle definition to the next, and which a cancel,
+  a ``G53`` or a rapid resets, is not confirmed [?: DIALECTS.md 4.2, the 8070's cycle pages were not
+  reached], so the dwell never depends on it: once a program has written a nonzero ``K``, every block that
+  names the cycle code writes its ``K`` (``K0`` for a cycle without a dwell), and a block repeating the
+  active cycle writes ``K`` when its dwell differs from the one in force. Before any nonzero ``K`` a cycle
+  without a dwell writes none (a controller that has never been given a dwell has none).
   Every other cycle arrives expanded (``Fagor.NATIVE_CYCLES``).
 * Another dialect's tape mark ``%`` is written as the comment ``;%`` (a Fagor ``%`` line is a header).
 * A dwell is ``G04 K`` in the set-up's unit (as the cycle ``K`` [?]).
@@ -58,8 +62,11 @@ class FagorWriter(WordWriter):
     """A reference return: ``split_block``."""
 
     dwell_in_force: float | None = None
-    """The cycle dwell (seconds) the written program has in force: None before any cycle and after a
-    cancel, when a cycle writes its ``K`` explicitly unless it has no dwell."""
+    """The dwell (seconds) of the cycle the written program has active: None before any cycle and after a
+    cancel, a move or a move in machine coordinates."""
+    dwell_written: bool = False
+    """Whether a nonzero ``K`` has been written: from then on every cycle call writes its ``K`` (the module
+    docstring)."""
 
     def target_cycle_words(self) -> CycleWords:
         return cycle_words(self.ctx.setup)
@@ -68,6 +75,8 @@ class FagorWriter(WordWriter):
         if "TapeMark" in block.sections:
             return ";%" + (block.eol or "\n")  # a tape's start or end: no Fagor block, kept as a trace
         motion = block.sections.get("Motion")
+        if isinstance(motion, Motion) and motion.mode in _REFERENCE or "MachineCoordinates" in block.sections:
+            self.dwell_in_force = None  # written as rapids (a cancel): no cycle stays active after it
         if isinstance(motion, Motion) and motion.mode in _REFERENCE and not motion.axes:
             rest = {k: v for k, v in block.sections.items() if k != "Motion"}  # a return of no axis: no move
             return self._part(block, rest)[:-1] + (block.eol or "\n") if rest else ""
@@ -95,9 +104,13 @@ class FagorWriter(WordWriter):
             words.extend(self._code("cycle", kind, f"the {s.kind.replace('_', ' ')} cycle", block))
         words.extend(self.cycle_role_words(s, block, source, target, dwell=False))
         seconds = (s.dwell or 0.0) if kind == s.kind else 0.0
-        if self.dwell_in_force is None and seconds or self.dwell_in_force is not None \
-                and abs(seconds - self.dwell_in_force) > 1e-12:
+        if s.call or self.dwell_in_force is None:
+            explicit = bool(seconds) or self.dwell_written
+        else:
+            explicit = abs(seconds - self.dwell_in_force) > 1e-12
+        if explicit:
             words.append(target.dwell + self.cycle_dwell(seconds, target, block))
+        self.dwell_written = self.dwell_written or bool(seconds)
         self.dwell_in_force = seconds
         self.after_blocks = True  # until a cancel (``after_block``)
         return words
