@@ -72,6 +72,39 @@ def test_a_work_systems_parameters_read_what_g10_set_in_the_program() -> None:
     assert [(e["x"], e["y"], e["z"]) for e in got] == [(14, -6, 30)]
 
 
+INCH_READING = ("G20\nG90 G10 L2 P1 X1. Y0\nG54\no1 if [#5221 LT 1]\nG0 X2. Y0\no1 else\nG0 X3. Y0\no1 endif\n"
+                "M2\n")
+
+
+def test_an_inch_machine_reads_an_offset_as_linuxcnc_stores_it() -> None:
+    """G10 L2 P1 X1 in G20 on an inch machine: LinuxCNC stores PROGRAM_TO_USER_LEN(1) = (1 * 25.4) * (1/25.4),
+    the INI's inch being 1/25.4 mm per unit [V: units.h, inifile.cc, emccanon.cc GET_EXTERNAL_LENGTH_UNITS]:
+    0.9999999999999999, not 1 (what dividing by 25.4 gave). So [#5221 LT 1] holds: X2 in G54 at X1 is 3 in,
+    76.2 mm (the old reading went to X3, 101.6 mm). (A standalone rs274 multiplies by 0.03937007874016 and
+    reads 1.000000000000064 [V: sai/driver.cc]: not the machine's arithmetic.)"""
+    assert 1.0 * 25.4 * (1.0 / 25.4) < 1.0  # the machine's double arithmetic, as its source spells it
+    assert [round(e["x"], 6) for e in moves(INCH_READING, "inch")] == [76.2]
+
+
+SAME_BLOCK = "G21\nG20 G90 G10 L2 P1 X1. Y0\nG54\nG0 X[#5221] Y0\nM2\n"
+
+
+@pytest.mark.parametrize("units, x", [("mm", 25.4 + 25.4 * 25.4), ("inch", 2 * 25.4)])
+def test_a_g10_in_the_block_that_selects_inches_stores_inches(units: str, x: float) -> None:
+    """rs274 sets the units before G10 in one block [V: LinuxCNC order of execution; rs274 prints
+    SET_G5X_OFFSET(1, 1.0000, ..) in inches]: the offset is 1 in, and #5221 reads 25.4 on a mm machine (X25.4
+    in G20: 645.16 mm from the 25.4 mm offset), 1 on an inch machine (2 in). The readback took the X1 as mm
+    (26.4 mm on the inch machine)."""
+    assert [round(e["x"], 6) for e in moves(SAME_BLOCK, units)] == [round(x, 6)]
+
+
+@pytest.mark.skipif(not available(), reason="the LinuxCNC interpreter rs274 is not installed")
+def test_a_g10_in_the_block_that_selects_inches_as_rs274_runs_it() -> None:
+    theirs = [e for e in _machine(run_rs274(SAME_BLOCK)) if e["move"] == "rapid"]  # in inches after G20
+    ours = moves(SAME_BLOCK, "inch")
+    assert [round(e["x"] * 25.4, 6) for e in theirs] == [round(e["x"], 6) for e in ours] == [50.8]
+
+
 WORK_SYSTEM = "G21 G90 G0 X0 Y0\nG59.1\n#1=#5220\nG55\nG0 X#1 Y#5220\nG54\nG0 X#5220\nM2\n"
 
 

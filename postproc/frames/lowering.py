@@ -166,13 +166,13 @@ class FrameEvaluator:
             control = s.get(CONTROL)
             if control is not None:
                 self.reached.order.control(control, SYMBOLIC)
-        frame = self.frame
         changed = False
+        if not changes_nothing(s):
+            self.settings(block, s)  # first: a G10 in a block with G20 gives inches [V: rs274 order of execution]
+        frame = self.frame
         if "DataSetting" in s:
             changed = self.data_setting(block, s)
             frame = self.frame
-        if not changes_nothing(s):
-            self.settings(block, s)
         change = s.get("FrameChange")
         if isinstance(change, FrameChange):
             if self.reached.symbolic:

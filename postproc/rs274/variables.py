@@ -267,9 +267,15 @@ class NgcVariables:
         return None
 
     def _in_machine_units(self, axis: str, mm: float | None) -> float | None:
+        """A length stored from its mm as LinuxCNC stores it: ``TO_EXT_LEN(mm)`` multiplies by the external
+        units, mm -> machine unit, which an inch INI gives as ``1/25.4`` [V: ``units.h``, ``emccanon.cc``
+        ``GET_EXTERNAL_LENGTH_UNITS``, ``inifile.cc``'s units table]. So ``G20 G10 L2 P1 X1`` reads
+        0.9999999999999999 (``25.4 * (1/25.4)``) where ``25.4 / 25.4`` is 1: ``[#5221 LT 1]`` holds on the
+        machine. A standalone rs274 uses 0.03937007874016 instead [V: ``sai/driver.cc``] and reads
+        1.000000000000064."""
         if mm is None or axis in "ABC":
             return mm
-        return mm / self.machine_mm
+        return mm * (1.0 / self.machine_mm)
 
     def exists(self, key: VarKey) -> bool:
         """EXISTS[#<name>]: the name has a value; a numbered parameter always exists (rs274, src)."""
