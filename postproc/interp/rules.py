@@ -37,6 +37,10 @@ class SubprogramRules:
     call_levels: int | None = None
     """The controller's own bound on nested calls, where it has one below the set-up's ``callDepth``: a call
     deeper than that is refused where the controller refuses it (grblHAL: 10). None: only the set-up's."""
+    flow_stack: int | None = None
+    """The controller's stack of open flow constructs, where it has one: each loop, condition and call open
+    where a construct opens is one entry (grblHAL: 20). A construct that would be one more is refused where
+    it stands (``Structure``). None: no bound."""
 
 
 STORED_PROGRAMS = SubprogramRules(forward_search=False, main_return_words=None)

@@ -60,7 +60,8 @@ class Structure:
     """Checks one file's constructs in order. ``index``: keep the matches (``pairs``, ``chains``) for a
     run; else only check (a streamed program)."""
 
-    __slots__ = ("file", "rules", "index", "stack", "pairs", "chains", "subs", "programs", "failed")
+    __slots__ = ("file", "rules", "index", "stack", "pairs", "chains", "subs", "programs", "failed", "uses",
+                 "body_use")
 
     def __init__(self, file: str, rules: SubprogramRules, index: bool = False) -> None:
         self.file = file
@@ -77,6 +78,10 @@ class Structure:
         """Program number -> the line of its ``O`` (``ProgramStart``)."""
         self.failed = False
         """An error was raised: the program is not run."""
+        self.uses: dict[str, int] = {}
+        """Sub name -> the most entries of the flow stack its body opens, with what it calls (``flow_stack``)."""
+        self.body_use: list[int] = []
+        """For each ``o<x> sub`` open, the most entries its body has opened so far."""
 
     def _error(self, block: Block, message: str) -> ProgramError:
         self.failed = True
@@ -99,6 +104,9 @@ class Structure:
 
     def statement(self, control: Section, pos: int, block: Block) -> None:
         """The control statement of the block at ``pos``."""
+        limit = self.rules.flow_stack
+        if limit is not None:
+            self._flow(control, block, limit)
         if isinstance(control, (*LOOPS, If, SubStart, Switch)):
             opened = _Open(control, pos, block)
             self.stack.append(opened)
@@ -134,10 +142,37 @@ class Structure:
         elif kind is SubEnd:
             name = control.name  # type: ignore[attr-defined]
             opened = self._close(SubStart, name, block)
+            if self.body_use:
+                self.uses[str(name)] = self.body_use.pop()
             if name in self.subs:
                 raise self._error(opened.block, f"subprogram {name} is defined twice")
             self.subs[name] = (opened.pos, pos)
             self._pair(opened.pos, pos)
+
+    def _flow(self, control: Section, block: Block, limit: int) -> None:
+        """The controller's flow stack (``SubprogramRules.flow_stack``): a loop, condition or call opens one entry
+        over those open around it in its body; a call adds what its sub's body opens (a sub defined before
+        it: the controller finds no other). Counted where the text nests, so a construct in a branch never
+        taken counts too (stricter than the controller, which opens none in a skipped branch)."""
+        if isinstance(control, SubStart):
+            self.body_use.append(0)
+            return
+        if not isinstance(control, (*LOOPS, If, Switch, Call)):
+            return
+        around = 0
+        for opened in reversed(self.stack):
+            if isinstance(opened.head, SubStart):
+                break
+            around += 1
+        used = around + 1
+        if isinstance(control, Call) and isinstance(control.name, str):
+            used += self.uses.get(control.name, 0)
+        if used > limit:
+            raise self._error(block, f"'{source_text(block)}' would hold entry {used} of the controller's flow "
+                                     f"control stack, which has {limit} (each open loop, condition and call takes "
+                                     "one): it stops there (stack overflow)")
+        if self.body_use:
+            self.body_use[-1] = max(self.body_use[-1], used)
 
     def finish(self) -> None:
         """The end of the file: a construct still open is an error (the innermost one is named)."""

@@ -30,6 +30,10 @@ from postproc.rs274.ngc_program import NgcProgramSyntax
 
 from .variables import GrblhalVariables
 
+FLOW_STACK: Final = 20
+"""Open flow constructs grblHAL holds: ``stack_push`` (if, do, while, repeat, call) refuses one once ``stack_idx``
+(from -1) reached ``NGC_STACK_DEPTH - 1`` (20 - 1), "flow control stack overflow"; elseif, else and a sub's
+definition push nothing [V: ngc_flowctrl.c, stored commit f80fc34]."""
 CALL_LEVELS: Final = 10
 """Nested calls grblHAL runs: ``ngc_call_push`` refuses a call once ``call_level`` (from -1) reached
 ``NGC_MAX_CALL_LEVEL - 1`` (10 - 1), "flow control stack overflow" [V: ngc_params.c, ngc_flowctrl.c
@@ -50,4 +54,5 @@ class GrblhalProgramSyntax(NgcProgramSyntax):
     SUBPROGRAM_RULES: ClassVar[SubprogramRules] = SubprogramRules(forward_search=False,
                                                                   main_return_words=(("M", "2"),),
                                                                   definition_runs_its_end=False,
-                                                                  call_levels=CALL_LEVELS)
+                                                                  call_levels=CALL_LEVELS,
+                                                                  flow_stack=FLOW_STACK)

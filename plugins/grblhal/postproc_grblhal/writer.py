@@ -23,7 +23,9 @@ grblHAL's table.
   (``ngc_flowctrl.c`` [V]): a call after its sub's definition (grblHAL finds no sub it has not passed; rs274
   looks ahead), and from LinuxCNC with all 30 arguments written (``[0]`` for those not given: grblHAL hands
   the callee the caller's ``#k`` for an argument not given, rs274 reads 0: ``variables``). ``M98`` subprograms
-  of a program that computes nothing arrive as subs from the lowering step ``subprograms``.
+  of a program that computes nothing arrive as subs from the lowering step ``subprograms``. The statements
+  written go through the family's ``Structure`` under grblHAL's rules: a construct that would open entry 21 of
+  grblHAL's flow control stack (``program.FLOW_STACK``), with what the subs it calls open, is refused there.
   Everything else that computes is an ``UnsupportedError`` (so the program reaches grblHAL flattened): any
   statement on a build without expressions, a named sub, and another family's control flow (Fanuc's
   ``WHILE .. DO1`` reuses its labels, ISG's ``$FOR``...).
@@ -40,6 +42,7 @@ from postproc.cycles.section import WORD_ORDER
 from postproc.dialect import Dialect
 from postproc.expr import Expr, Num
 from postproc.grbl_family.writer import GrblFamilyWriter
+from postproc.interp.structure import Structure
 from postproc.ir import Block, Motion
 from postproc.rs274.codes import CodeTable
 from postproc.rs274.expressions import ExprSpelling
@@ -47,7 +50,7 @@ from postproc.rs274.oword import spell_assignments, spell_oword
 
 from .cancels import GROUP_01
 from .codes import CODES
-from .program import GRBLHAL_SPELLING
+from .program import GRBLHAL_SPELLING, GrblhalProgramSyntax
 from .subprograms import CONVERTED
 
 _FLOW = (If, ElseIf, Else, EndIf, While, EndWhile, Do, DoWhile, Repeat, EndRepeat, Break, Continue, SubStart, SubEnd,
@@ -89,6 +92,8 @@ class GrblhalWriter(GrblFamilyWriter):
         """The numbered subs whose definition is written (a call finds only those on grblHAL)."""
         self.body: str | None = None
         """The sub whose body is being written: registered on grblHAL before it runs, so it may call itself."""
+        self.flow = Structure(ctx.file, GrblhalProgramSyntax.SUBPROGRAM_RULES)
+        """The o-word statements written, nested as grblHAL nests them (its flow control stack)."""
 
     def write_block(self, block: Block) -> str | None:
         motion = block.sections.get("Motion")
@@ -132,9 +137,12 @@ class GrblhalWriter(GrblFamilyWriter):
             self.body = None
         own = self.source_dialect in _SAME_OWORDS or CONVERTED in self.ctx.run_data
         if isinstance(section, _FLOW) and own:
+            self.flow.statement(section, 0, block)
             return [spell_oword(section)]
         if isinstance(section, Call) and own:
-            return [self.call_words(section, block)]
+            words = self.call_words(section, block)
+            self.flow.statement(section, 0, block)
+            return [words]
         return super().statement_words(section, block)
 
     def call_words(self, call: Call, block: Block) -> str:
@@ -156,11 +164,6 @@ class GrblhalWriter(GrblFamilyWriter):
         return (f"a tool length offset from a table (G43{number}) on a grblHAL build without a tool table: a set-up "
                 "with <Controller toolTable=\"true\"/> has one")
 
-    def path_control_words(self, s: Any, block: Block) -> list[str]:
-        if not s.one_shot and s.mode == "cutting":
-            self.note_unwritten_tolerance(s, block)  # grblHAL runs its one mode, the exact path
-            return []
-        return super().path_control_words(s, block)
 
     def feed_mode_words(self, s: Any, block: Block) -> list[str]:
         if s.mode == "per_rev" and not self.ctx.setup.controller.spindle_sync:
