@@ -17,6 +17,7 @@ from postproc.ir import ToolChange
 from postproc.plugins import default_registry
 from postproc.setup.machine_setup import CycleSettings, MachineSetup
 from postproc.simulate.toolpath import toolpath_events
+from postproc.simulate.verify import verify_lines
 from postproc_grbl import Grbl
 from tests.support.tools import with_tools
 
@@ -124,7 +125,6 @@ def test_a_plain_pause_stays_a_pause() -> None:
     ("/G04 X3.\n", "t.nc:2:1: error: the grbl dialect cannot express block delete '/' (grbl ignores it: the "
                    "block would always run)"),
     ("S500 M03 G95 G01 X5. F0.1\n", "t.nc:2:1: error: the grbl dialect cannot express feed mode per_rev"),
-    ("G09 G01 X5. F100.\n", "t.nc:2:1: error: the grbl dialect cannot express a one-shot exact stop"),
     ("G31 X1.\n", "t.nc:2:1: error: G31 (skip function) from fanuc has no equivalent in grbl"),
 ])
 def test_unsupported_constructs_are_located_errors(fanuc: str, message: str) -> None:
@@ -132,10 +132,24 @@ def test_unsupported_constructs_are_located_errors(fanuc: str, message: str) -> 
 
 
 def test_warn_mode_keeps_the_motion_of_a_block_and_comments_the_original() -> None:
-    text, warnings = to_grbl("N60 G09 G01 X5. F100. M08\n", on_unsupported="warn")
-    assert text == "(UNSUPPORTED LINE 2: N60 G09 G01 X5. F100. M08)\nN60 G1 X5. F100. M8\n"
-    assert warnings == ["t.nc:2:1: warning: the grbl dialect cannot express a one-shot exact stop; dropped; the "
-                        "rest of the block is written"]
+    text, warnings = to_grbl("N60 M19 G01 X5. F100. M08\n", on_unsupported="warn")
+    assert text == "(UNSUPPORTED LINE 2: N60 M19 G01 X5. F100. M08)\nN60 G1 X5. F100. M8\n"
+    assert warnings == ["t.nc:2:1: warning: the grbl dialect cannot express an oriented spindle stop (M19); a set-up "
+                        "with <Cycles orientation=\"stop\"/> pauses for the operator instead; dropped; the rest of the "
+                        "block is written"]
+
+
+@pytest.mark.parametrize("target", ["grbl", "grblhal"])
+def test_a_one_shot_exact_stop_writes_nothing_and_verifies(target: str) -> None:
+    """grbl and grblHAL run one mode, the exact path (gcode.h [V]): a G09 block already ends on its point, so the
+    block is written without it (it was refused) and verify finds the same path: (0,0,5) -> X5 at F100 -> X10."""
+    fanuc = "G21 G90 G00 X0. Y0. Z5.\nN60 G09 G01 X5. F100. M08\nX10.\nM30\n"
+    out = io.StringIO()
+    translate(io.StringIO(fanuc), out, file="t.nc", source="fanuc", target=target)
+    assert out.getvalue().splitlines()[1] == "N60 G1 X5. F100. M8"
+    report = verify_lines(io.StringIO(fanuc), io.StringIO(out.getvalue()), file_in="a.nc", file_out="b.nc",
+                          source="fanuc", target=target, setup=None, target_setup=None, tolerance=0.0)
+    assert report.ok
 
 
 def test_fanuc_cutter_compensation_is_the_compensated_path_in_grbl() -> None:

@@ -10,6 +10,13 @@
   ``<Cycles orientation=...>``: ``m19`` writes M19 anyway (a build with a user M code for it), ``stop`` a
   program pause for the operator, ``error`` (default) refuses. M0 leaves the spindle turning, so a pause for
   the operator (also inside a cycle's expansion) stops a running spindle first with M5.
+* Path control: both run one mode, the exact path (``G61``, group 13's only code without path blending
+  [V: grbl ``gcode.h`` ``CONTROL_MODE_EXACT_PATH // G61 (Default: Must be zero)``; grblHAL core ``gcode.h``
+  ``ControlMode_ExactPath``, G61.1/G64 only under ``ENABLE_PATH_BLENDING``]): every block ends on its programmed
+  point, the junction deviation only slowing the tool at a corner. So a cutting mode (``G64``) writes nothing
+  (its tolerance noted), and so does a one-shot exact stop (Fanuc ``G09``): the block already runs as it asks,
+  its path is the one programmed (verify reads ``G09`` as changing nothing), only the stop at its end may be a
+  slowdown at a corner's junction speed instead [K: the planner's junction speed].
 """
 
 from __future__ import annotations
@@ -52,6 +59,14 @@ class GrblFamilyWriter(WordWriter):
         return line
 
     # -- section words -----------------------------------------------------------------------------
+    def path_control_words(self, s: Any, block: Block) -> list[str]:
+        """Nothing for a cutting mode or a one-shot exact stop: the build's one mode (module docstring)."""
+        if s.one_shot or s.mode == "cutting":
+            if not s.one_shot:
+                self.note_unwritten_tolerance(s, block)
+            return []
+        return super().path_control_words(s, block)
+
     def program_start(self, s: Any, block: Block) -> str:
         """The parser takes no program number: it survives as a comment."""
         name = f"O{int(s.number):04d}" if s.number is not None else str(s.name)

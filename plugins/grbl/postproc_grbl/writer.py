@@ -75,11 +75,6 @@ class GrblWriter(GrblFamilyWriter):
         """No cycle ever runs on grbl (see the module docstring): nothing to cancel."""
         return []
 
-    def path_control_words(self, s: Any, block: Block) -> list[str]:
-        if not s.one_shot and s.mode == "cutting":
-            self.note_unwritten_tolerance(s, block)  # grbl runs its one mode, the exact path
-            return []
-        return super().path_control_words(s, block)
 
     def tool_change_words(self, s: Any, block: Block) -> list[str]:
         """What ``pause_for_tool_change`` leaves: a tool change with no tool selected before it."""
