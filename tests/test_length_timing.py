@@ -99,3 +99,28 @@ def test_a_change_that_changes_nothing_stays_where_it_is() -> None:
     assert _verified(trailing, "linuxcnc", "fanuc")[1:] == ["G43 H01 G00 Z60.", "M02"]
     fanuc = trailing.replace("M2", "M30").replace("Z60", "Z60.")
     assert _verified(fanuc, "fanuc", "linuxcnc")[1:] == ["G43 H01 G0 Z60.", "G49", "M30"]
+
+
+FANUC_END = "G21 G90 G0 X0 Y0 Z50.\nG43 H01 Z50.\nG1 Z10. F100.\nG49\nG91 G28 Z0\nG90\nM30\n"
+"""A common program end. Fanuc (the next-move model): G49 applies at the return's intermediate move, incremental Z0
+from the programmed Z10: the controlled Z goes from 110 to 10, then to the reference point."""
+
+
+def test_a_cancel_before_an_incremental_reference_return_writes_its_point_absolutely() -> None:
+    """It was refused (the next move is a reference return). LinuxCNC's G91 G28 Z0 would pass through where the
+    machine stands (110): its point is written absolutely, Z10, beside the G49, and G91 follows again."""
+    assert _verified(FANUC_END, "fanuc", "linuxcnc")[3:6] == ["G90 G49 G28 Z10.", "G91", "G90"]
+    assert _verified(FANUC_END, "fanuc", "grbl")[4:7] == ["G49", "G90 G28 Z10.", "G91"]
+
+
+def test_a_cancel_before_an_absolute_reference_return_goes_beside_it() -> None:
+    """G90 G28 Z20: both rules take the point Z20 with the new length (none): the change goes there."""
+    text = FANUC_END.replace("G91 G28 Z0", "G28 Z20.")
+    assert _verified(text, "fanuc", "linuxcnc")[3] == "G49 G28 Z20."
+
+
+def test_an_incremental_return_from_an_unknown_z_is_still_refused() -> None:
+    text = "G21 G90 G0 X0 Y0\nG43 H01\nG91 G28 Z0\nG90\nM30\n"
+    with pytest.raises(ErrorList) as caught:
+        _translate(text, "fanuc", "linuxcnc")
+    assert "in.nc:2:5: error: this tool length change applies at the next move" in str(caught.value.errors[0])

@@ -14,6 +14,7 @@ from typing import Any
 
 import pytest
 
+from postproc.api import translate
 from postproc.setup.machine import ToolData
 from postproc.setup.machine_setup import MachineSetup
 from postproc.simulate.toolpath import toolpath_events
@@ -96,3 +97,19 @@ def test_length_changes_equal_rs274(batch: int) -> None:
         text = _program(random.Random(seed))
         ours, theirs = _our_moves(text), _rs274_moves(text)
         assert ours == theirs, f"seed {seed}\n{text}\nours   {ours}\nrs274  {theirs}"
+
+
+def test_a_cancel_before_an_incremental_reference_return_moves_in_rs274_as_in_fanuc() -> None:
+    """Fanuc's G49, then G91 G28 Z0 (the next-move model: the return's intermediate point takes the controlled Z
+    from 10 + 25.4 to 10), translated for LinuxCNC: rs274 runs the written ``G90 G49 G28 Z10.`` through the
+    same controlled Z, 35.4 -> 10, then to its home (machine 0 standalone: Z0 with no length)."""
+    fanuc = "G21 G90 G0 X0 Y0 Z40.\nG43 H01 Z40.\nG1 Z10. F100.\nG49\nG91 G28 Z0\nG90\nM30\n"
+    setup = MachineSetup()
+    setup.tools = {str(n): ToolData(number=n, length=v * 25.4, radius=0.0) for n, v in LENGTHS_INCH.items()}
+    out = io.StringIO()
+    translate(io.StringIO(fanuc), out, file="in.nc", source="fanuc", target="linuxcnc", setup=setup)
+    theirs = [point[3] for point in _rs274_moves(out.getvalue())]
+    assert theirs[-3:] == [35.4, 10.0, 0.0]
+    ours = [round(float(e.get("controlled", e)["z"]), 4)
+            for e in toolpath_events(io.StringIO(fanuc), file="in.nc", dialect="fanuc", setup=setup) if "move" in e]
+    assert ours[2:4] == theirs[-3:-1]

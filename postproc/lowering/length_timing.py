@@ -21,7 +21,12 @@ program that changes the length there (typical posts: ``G43 H1 Z15.``). Otherwis
   which gets the Z the program stands at (absolute, program units) if it has none, so the target moves Z
   there as the source does; where that Z is not known (no absolute Z since the start or a work offset
   change, or the next move is incremental, a reference return, a cycle or a machine-coordinate move) the
-  change is a located error asking for Z beside it, and so is a tool table write between the two.
+  change is a located error asking for Z beside it, and so is a tool table write between the two. A
+  reference return is such a move through its intermediate point: given absolutely, both rules take the
+  point with the new length (the change goes beside it); given incrementally (``G49`` then ``G91 G28 Z0``,
+  a common program end), its point is written absolutely from the known Z (``G49 G90 G28 Z<z>``, then
+  ``G91`` again), so the target moves there as the source does [V: rs274 runs G49 and G90 before G28 in
+  one block, its order of execution].
 
 On a lathe the same holds for X and Z together: a Fanuc T/GSK offset (``T0102``, become LinuxCNC's lathe
 ``G43 H02`` in ``postproc.cycles.lathe_lowering``) applies at the next move of any axis, LinuxCNC's where
@@ -45,6 +50,8 @@ MM_PER_INCH: Final = 25.4
 _WATCHED: Final = frozenset(("ToolLengthOffset", "Motion", "CompoundMotion", "CycleCall", "DistanceMode", "Units",
                              "WorkOffset", "CoordinateSet", "DataSetting", "CutterCompensation", "RigidTap"))
 _PLAIN: Final = frozenset(("rapid", "linear", "cw", "ccw"))
+_RETURNS: Final = frozenset(("home", "home2"))
+"""Reference returns (G28, G30): a move through an intermediate point in work coordinates."""
 _STATE: Final = _WATCHED - {"Motion"} | {"MachineCoordinates"}
 """What a block must lack for ``_complete``'s short way (a plain move or none, nothing else to follow)."""
 
@@ -168,6 +175,7 @@ def _complete(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
     held: list[Block] = []  # the changing block and the blocks after it, while a change waits
     table = ToolTable(ctx.setup)
     pending: tuple[ToolLengthOffset, Location] | None = None  # the waiting change, and where it was written
+    restore = False  # a reference return was written absolutely: G91 again after it
     for block in blocks:
         sections = block.sections
         if pending is None and _plain(sections):  # the common block: at most a plain move
@@ -241,8 +249,15 @@ def _complete(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
             motion = sections.get("Motion")
             moved = pending is not None
             missing = [] if not isinstance(motion, Motion) else [a for a in axes if a not in motion.axes]
-            if _sets_z(block, absolute, axes):
+            if _sets_z(block, absolute, axes) or _returns_through(block, absolute, axes):
                 pass
+            elif _incremental_return(block, absolute, axes, pos):
+                assert isinstance(motion, Motion)
+                for a, value in motion.axes.items():
+                    motion.axes[a] = pos[a] + float(value)  # type: ignore[operator]  # known: tested above
+                sections["DistanceMode"] = DistanceMode("absolute")
+                block.changed()
+                restore = True
             elif (isinstance(motion, Motion) and motion.mode in _PLAIN and absolute
                     and all(pos[a] is not None for a in missing) and all(a in motion.axes or a in missing for a in axes)
                     and "MachineCoordinates" not in sections and "CompoundMotion" not in sections):
@@ -263,8 +278,35 @@ def _complete(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
             pending = None
         _follow(block, pos, absolute, in_force, None if ctx.lathe else table, inch)
         yield block
+        if restore:
+            restore = False
+            yield _incremental_again(block)
     if pending is not None:
         yield from _release(held, pending[0])
+
+
+def _returns_through(block: Block, absolute: bool, axes: tuple[str, ...]) -> bool:
+    """A reference return whose intermediate point names every one of ``axes`` absolutely: both rules apply
+    the new length there."""
+    motion = block.sections.get("Motion")
+    return (isinstance(motion, Motion) and motion.mode in _RETURNS and absolute and all(a in motion.axes for a in axes)
+            and "MachineCoordinates" not in block.sections)
+
+
+def _incremental_return(block: Block, absolute: bool, axes: tuple[str, ...], pos: dict[str, float | None]) -> bool:
+    """A reference return whose intermediate point is given in increments of ``axes`` only, from a known point:
+    it can be written absolutely."""
+    motion = block.sections.get("Motion")
+    return (isinstance(motion, Motion) and motion.mode in _RETURNS and not absolute and bool(motion.axes)
+            and all(a in axes and type(v) is float and pos[a] is not None for a, v in motion.axes.items())
+            and all(a in motion.axes for a in axes) and "MachineCoordinates" not in block.sections)
+
+
+def _incremental_again(block: Block) -> Block:
+    """The block after a reference return written absolutely: incremental distance again."""
+    again = Block(block.line, None, block.eol or "\n")
+    again.sections["DistanceMode"] = DistanceMode("incremental")
+    return again
 
 
 def _release(held: list[Block], keep: ToolLengthOffset | None) -> Iterator[Block]:
