@@ -21,6 +21,7 @@ from postproc.api import read_program, translate
 from postproc.errors import Diagnostics, ErrorList, ErrorLevel
 from tests.support import output_rules
 from tests.support.grbl_rules import grbl_problems
+from tests.support.linuxcnc_rules import linuxcnc_problems
 from tests.support.rs274 import RS274Error, available, run_rs274
 
 # -- the grbl checker --------------------------------------------------------------------------------
@@ -103,6 +104,18 @@ def _ngc_errors(dialect: str, line: str) -> list[str]:
     except ErrorList as errs:
         return [str(e) for e in errs.errors]
     return []
+
+
+@pytest.mark.skipif(not available(), reason="the LinuxCNC interpreter rs274 is not installed")
+@pytest.mark.parametrize("line", ["G10 L1 P2 Z-0.2", "G10 L10 P3 Z1.", "G10 P4 L11 Z2.", "G10L1P5Z0.1"])
+def test_the_linuxcnc_checker_gives_the_machine_the_tool_a_table_write_names(line: str) -> None:
+    """rs274 refuses a tool table write for a tool its table lacks; the set-up's tools are the shop's (the writer
+    refuses a write for a tool the set-up lacks), so the checker's machine holds it, as for a T or an H. The fuzz
+    found G10 L1 P2 refused by a table of tool 1 only."""
+    tool = int(line.split("P")[1][0])
+    with pytest.raises(RS274Error, match=f"Requested tool {tool} not found in the tool table"):
+        run_rs274(NGC_HEAD + line + "\nM2\n", tool_table="T1 P1 Z0 D0\n")
+    assert linuxcnc_problems(NGC_HEAD + line + "\nM2\n") == []
 
 
 @pytest.mark.parametrize("line", ["G80 G0 Z1. M9", "G0 G80 Z1.", "G0 X1 G80 Y1", "G80 G1 X1 F10",

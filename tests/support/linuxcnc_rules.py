@@ -1,9 +1,10 @@
 """LinuxCNC's acceptance rules, as a checker for every LinuxCNC program the suite writes: LinuxCNC's own
 interpreter (``rs274``, see ``rs274.py``) runs the program, and whatever it refuses is a problem.
 
-The machine is given a tool table holding every tool the program names (``T<n>``, ``H<n>``, ``D<n>``, with zero length
-and diameter), and tools 1-99 when it computes one (``H#1``, ``T[#2+1]``): which tools a shop has is not the
-writer's business. Everything else rs274 refuses is the writer's, a program that runs out without an end
+The machine is given a tool table holding every tool the program names (``T<n>``, ``H<n>``, ``D<n>``, and the ``P<n>``
+of a tool table write ``G10 L1``/``L10``/``L11``, which rs274 refuses for a tool its table lacks: "Requested tool 2 not
+found in the tool table" [V: rs274], with zero length and diameter), and tools 1-99 when it computes one (``H#1``,
+``T[#2+1]``, ``G10 L1 P#3``): which tools a shop has is not the writer's business. Everything else rs274 refuses is the writer's, a program that runs out without an end
 ("File ended with no percent sign or program end") too: the writer ends a source without one with M2.
 """
 
@@ -26,12 +27,21 @@ RS274_CACHE = Path(os.environ.get("POSTPROC_RS274_CACHE")
 only about programs no earlier run wrote. Remove the folder to ask again."""
 
 
+_TABLE_WRITE = re.compile(r"(?i)(?=.*(?<![A-Z])G\s*0*10(?![.\d]))(?=.*(?<![A-Z])L\s*0*1[01]?(?![.\d]))")
+"""A line that writes the tool table (``G10 L1``, ``L10``, ``L11``; its ``P`` names the tool)."""
+
+
 def linuxcnc_problems(text: str) -> list[str]:
     """What rs274 refuses in ``text`` (its error message and offending block), or nothing. Answered from
     ``RS274_CACHE`` when the same program, tool table and interpreter were run before."""
     tools = {int(n) for n in re.findall(r"(?i)\b[THD]\s*(\d+)", text)} | {1}
     if re.search(r"(?i)\b[THD]\s*[-+]?\s*[#\[]", text):
         tools |= set(range(1, 100))  # a computed tool or register: any the program may name
+    for line in text.splitlines():
+        if _TABLE_WRITE.search(line):
+            tools |= {int(n) for n in re.findall(r"(?i)(?<![A-Z])P\s*(\d+)", line)}
+            if re.search(r"(?i)(?<![A-Z])P\s*[-+]?\s*[#\[]", line):
+                tools |= set(range(1, 100))
     tools = sorted(tools)
     table = "".join(f"T{n} P{n} Z0 D0\n" for n in tools)
     path = RS274_CACHE / _key(text, table)
