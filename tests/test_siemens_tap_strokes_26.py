@@ -156,3 +156,26 @@ def test_a_lone_siemens_stroke_towards_linuxcnc_is_refused(mode: str) -> None:
         to("siemens", "linuxcnc", SIEMENS_TAPS.replace("SPOS=R1\n", ""), mode)
     assert [e.location.line for e in info.value.errors if e.location][:2] == [5, 6]
     assert all("stroke" in str(e) for e in info.value.errors)
+
+
+ISG_STROKES = "G71 G90 G17\nM03 S500\nG00 X1 Y2 Z10\nG331 Z-10 K1.5\nG332 Z10 K1.5\nM30\n"
+
+
+def test_isg_strokes_reach_siemens_as_its_own_after_spos_hand_derived() -> None:
+    """ISG and SINUMERIK spell and mean G331/G332 alike (``postproc.isg_family.taps``): the strokes were refused
+    towards SINUMERIK (no synchronised tap for it); they are written as read, after SPOS=0 (the set-up's angle)
+    that puts SINUMERIK's spindle under position control."""
+    assert to("isg", "siemens", ISG_STROKES) == ("G17 G710 G90\nS500 M3\nG0 X1. Y2. Z10.\nSPOS=0\n"
+                                                 "G331 Z-10. K1.5 S500\nG332 Z10. K1.5\nM30\n")
+    report = verify_lines(_lines(ISG_STROKES), _lines(to("isg", "siemens", ISG_STROKES)), file_in="t.nc",
+                          file_out="t.mpf", source="isg", target="siemens", setup=MachineSetup())
+    assert report.ok and report.max_deviation == 0.0, report.summary()
+
+
+def test_siemens_strokes_reach_isg_as_its_own() -> None:
+    siemens = to("isg", "siemens", ISG_STROKES)
+    isg = to("siemens", "isg", siemens)
+    assert isg.splitlines()[3:6] == ["M19", "G331 Z-10. K1.5 S500", "G332 Z10. K1.5"]
+    report = verify_lines(_lines(siemens), _lines(isg), file_in="t.mpf", file_out="t.nc", source="siemens",
+                          target="isg", setup=MachineSetup())
+    assert report.ok and report.max_deviation == 0.0, report.summary()

@@ -108,10 +108,13 @@ def _leave_out(block: Block, code: MachineFunction) -> None:
 
 def _refusal(taps: list[RigidTap], target: type[Dialect]) -> str | None:
     """Why ``target`` cannot run these taps exactly, or None."""
-    if any(tap.stroke is not None for tap in taps) and not target.TAP_STROKES:
+    strokes = [tap.stroke is not None for tap in taps]
+    if any(strokes) and not target.TAP_STROKES:
         return (f"one stroke of a rigid tap (in, or out with the spindle reversed): {target.NAME} programs a rigid "
                 "tap as one move in and out, and a stroke is not paired with its other here: refused, even with "
                 "--on-unsupported warn")
+    if all(strokes):
+        return None  # strokes towards a controller that programs them (ISG <-> SINUMERIK G331/G332): written as read
     if not target.SYNCHRONISED_TAP:
         return (f"a rigid (spindle-synchronised) tap: this translation writes no synchronised tap for {target.NAME}, "
                 "and a tap fed without the spindle in step breaks: refused, even with --on-unsupported warn")
