@@ -8,46 +8,21 @@ programming manual, "Tapping (G331/G332)").
   rs274 on the LinuxCNC source, and ``verify`` passes.
 * Hand-derived text for one tap; ISG programs with G331/G332 read into taps at the pitch (the hand from the
   sign of K), G332's K optional, and located errors for what is not modelled; a lone stroke towards
-  LinuxCNC is refused by name in either ``--on-unsupported`` mode.
+  LinuxCNC is refused by name in either ``--on-unsupported`` mode (from ISG and from SINUMERIK, which
+  writes the same strokes: helpers shared in ``tests/support/tap_strokes.py``).
 """
 
 from __future__ import annotations
 
-import io
 import random
-from typing import Any
 
 import pytest
 
-from postproc.api import translate
-from postproc.errors import Diagnostics, ErrorLevel, ErrorList
-from postproc.setup.machine_setup import MachineSetup
-from postproc.simulate.toolpath import toolpath_events
-from postproc.simulate.verify import verify_lines
+from postproc.errors import ErrorList
+from tests.support.tap_strokes import moves, to, verified
 from tests.test_rigid_tapping import _fanuc_rigid_program, _linuxcnc_taps, needs_rs274, oracle, same_moves
 
 PROGRAMS = 12
-
-
-def _lines(text: str) -> list[str]:
-    return io.StringIO(text, newline="").readlines()
-
-
-def to(source: str, target: str, text: str, mode: str = "error") -> str:
-    out = io.StringIO(newline="")
-    translate(_lines(text), out, file="t.nc", source=source, target=target, setup=MachineSetup(),
-              on_unsupported=mode, diagnostics=Diagnostics(ErrorLevel.RAISE, warn_stream=io.StringIO()))
-    return out.getvalue()
-
-
-def moves(text: str, dialect: str) -> list[dict[str, Any]]:
-    return [e for e in toolpath_events(_lines(text), file="t.nc", dialect=dialect, setup=MachineSetup()) if "move" in e]
-
-
-def verified(source: str, text: str, isg: str) -> None:
-    report = verify_lines(_lines(text), _lines(isg), file_in="t.nc", file_out="t.isg", source=source, target="isg",
-                          setup=MachineSetup())
-    assert report.ok and report.max_deviation < 1e-6, report.summary()
 
 
 def test_g33_1_becomes_the_two_strokes_hand_derived() -> None:
@@ -56,7 +31,7 @@ def test_g33_1_becomes_the_two_strokes_hand_derived() -> None:
     # the spindle direction and feed said again, and G91 back
     assert to("linuxcnc", "isg", text) == ("G17 G71 G90\nS500 M04\nG00 X1. Y2. Z5. F200.\n"
                                            "G90 G331 Z-3. K-1. S500\nG332 Z5. K-1.\nG91 G01 F200. M04\nM02\n")
-    verified("linuxcnc", text, to("linuxcnc", "isg", text))
+    verified("linuxcnc", text, to("linuxcnc", "isg", text), "isg")
 
 
 @needs_rs274
@@ -66,7 +41,7 @@ def test_g33_1_reaches_isg_as_strokes_and_moves_as_rs274(seed: int) -> None:
     isg = to("linuxcnc", "isg", text)
     assert isg.count("G331") == isg.count("G332") == text.count("G33.1"), isg
     same_moves(moves(isg, "isg"), oracle(text))
-    verified("linuxcnc", text, isg)
+    verified("linuxcnc", text, isg, "isg")
 
 
 @pytest.mark.parametrize("seed", range(PROGRAMS))
@@ -76,7 +51,7 @@ def test_a_fanuc_rigid_tap_reaches_isg_as_strokes(seed: int) -> None:
     taps = sum(1 for line in text.splitlines() if line.startswith(("G98", "G99", "X")))
     assert isg.count("G331") == isg.count("G332") == taps and "M29" not in isg.replace("(M29", ""), isg
     assert [m["move"] for m in moves(isg, "isg")] == [m["move"] for m in moves(text, "fanuc")]
-    verified("fanuc", text, isg)
+    verified("fanuc", text, isg, "isg")
 
 
 def test_an_isg_program_taps_at_its_pitch_each_stroke_one_move() -> None:
@@ -100,11 +75,15 @@ def test_what_the_strokes_do_not_model_is_a_located_error(text: str, where: tupl
     assert text.splitlines()[line - 1][error.location.col - 1] == letter
 
 
-@pytest.mark.parametrize("mode", ["error", "warn"])
-def test_a_lone_stroke_towards_linuxcnc_is_refused(mode: str) -> None:
-    text = "%t\nG71 G90\nS400 M03\nG00 X10 Y10 Z5\nG331 Z-10 K1.5 S400\nG332 Z5\nM30\n"
-    with pytest.raises(ErrorList) as info:
-        to("isg", "linuxcnc", text, mode)
-    assert [e.location.line for e in info.value.errors if e.location] == [5, 6]
-    assert all("stroke" in str(e) for e in info.value.errors)
+LONE_STROKES = {"isg": "%t\nG71 G90\nS400 M03\nG00 X10 Y10 Z5\nG331 Z-10 K1.5 S400\nG332 Z5\nM30\n",
+                "siemens": "G710 G90\nS400 M3\nG0 X10 Y10 Z5\nSPOS=0\nG331 Z-10 K1.5 S400\nG332 Z5\nM30\n"}
+"""A tap as its two strokes (lines 5 and 6), in each dialect that writes them."""
 
+
+@pytest.mark.parametrize("source", sorted(LONE_STROKES))
+@pytest.mark.parametrize("mode", ["error", "warn"])
+def test_a_lone_stroke_towards_linuxcnc_is_refused(source: str, mode: str) -> None:
+    with pytest.raises(ErrorList) as info:
+        to(source, "linuxcnc", LONE_STROKES[source], mode)
+    assert [e.location.line for e in info.value.errors if e.location][:2] == [5, 6]
+    assert all("stroke" in str(e) for e in info.value.errors)

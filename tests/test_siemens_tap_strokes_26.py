@@ -16,46 +16,17 @@ the spindle under position control ([K] SINUMERIK 840D sl Fundamentals, "Tapping
 
 from __future__ import annotations
 
-import io
 import random
 from typing import Any
 
 import pytest
 
-from postproc.api import translate
-from postproc.errors import Diagnostics, ErrorLevel, ErrorList
-from postproc.setup.machine_setup import MachineSetup
+from postproc.errors import ErrorList
 from postproc.simulate.simulator import prepared_taps
-from postproc.simulate.toolpath import toolpath_events
-from postproc.simulate.verify import verify_lines
+from tests.support.tap_strokes import events, moves, to, verified
 from tests.test_rigid_tapping import _fanuc_rigid_program, _linuxcnc_taps, needs_rs274, oracle, same_moves
 
 PROGRAMS = 8
-
-
-def _lines(text: str) -> list[str]:
-    return io.StringIO(text, newline="").readlines()
-
-
-def to(source: str, target: str, text: str, mode: str = "error") -> str:
-    out = io.StringIO(newline="")
-    translate(_lines(text), out, file="t.nc", source=source, target=target, setup=MachineSetup(),
-              on_unsupported=mode, diagnostics=Diagnostics(ErrorLevel.RAISE, warn_stream=io.StringIO()))
-    return out.getvalue()
-
-
-def events(text: str, dialect: str) -> list[dict[str, Any]]:
-    return list(toolpath_events(_lines(text), file="t.mpf", dialect=dialect, setup=MachineSetup()))[1:]
-
-
-def moves(text: str, dialect: str) -> list[dict[str, Any]]:
-    return [e for e in events(text, dialect) if "move" in e]
-
-
-def verified(source: str, text: str, siemens: str) -> None:
-    report = verify_lines(_lines(text), _lines(siemens), file_in="t.nc", file_out="t.mpf", source=source,
-                          target="siemens", setup=MachineSetup())
-    assert report.ok and report.max_deviation < 1e-6, report.summary()
 
 
 def test_g33_1_in_g91_becomes_spos_and_the_two_strokes_hand_derived() -> None:
@@ -65,7 +36,7 @@ def test_g33_1_in_g91_becomes_spos_and_the_two_strokes_hand_derived() -> None:
     # direction (back to speed control) and the feed said again, and G91 back
     assert to("linuxcnc", "siemens", text) == ("G17 G710 G90\nS500 M4\nG0 X1. Y2. Z5. F200.\nSPOS=0\n"
                                                "G90 G331 Z-3. K-1. S500\nG332 Z5. K-1.\nG91 G1 F200. M4\nM2\n")
-    verified("linuxcnc", text, to("linuxcnc", "siemens", text))
+    verified("linuxcnc", text, to("linuxcnc", "siemens", text), "siemens")
 
 
 def test_g33_1_in_g90_becomes_cycle84_once_hand_derived() -> None:
@@ -73,7 +44,7 @@ def test_g33_1_in_g90_becomes_cycle84_once_hand_derived() -> None:
     # from Z5 (RTP = RFP = 5, SDIS 0) to Z-3 (DP); M4: SDAC 4, a left-hand thread, PIT -1; SST = SST1 = S
     assert to("linuxcnc", "siemens", text) == ("G17 G710 G90\nS500 M4\nG0 X1. Y2. Z5. F200.\n"
                                                "CYCLE84(5., 5., 0, -3., , , 4, , -1., 0, 500, 500)\nM2\n")
-    verified("linuxcnc", text, to("linuxcnc", "siemens", text))
+    verified("linuxcnc", text, to("linuxcnc", "siemens", text), "siemens")
 
 
 @needs_rs274
@@ -86,7 +57,7 @@ def test_g33_1_reaches_siemens_as_cycle84_and_moves_as_rs274(seed: int) -> None:
     assert siemens.count("CYCLE84(") + siemens.count("G331") == taps, siemens
     assert siemens.count("SPOS=0") == siemens.count("G331") == siemens.count("G332"), siemens
     same_moves(moves(siemens, "siemens"), oracle(text))
-    verified("linuxcnc", text, siemens)
+    verified("linuxcnc", text, siemens, "siemens")
 
 
 @pytest.mark.parametrize("seed", range(PROGRAMS))
@@ -98,7 +69,7 @@ def test_a_fanuc_rigid_tap_reaches_siemens_as_cycle84_or_strokes(seed: int) -> N
     assert [m for m in moves(siemens, "siemens") if m["move"] == "tap"] and "G1 Z" not in siemens
     assert "M29" not in siemens.replace(";M29", "")
     assert [m["move"] for m in moves(siemens, "siemens")] == [m["move"] for m in moves(text, "fanuc")]
-    verified("fanuc", text, siemens)
+    verified("fanuc", text, siemens, "siemens")
 
 
 SIEMENS_TAPS = ("G710 G90\nS400 M3\nG0 X10 Y10 Z5\nSPOS=0\nG331 Z-10 K1.5 S400\nG332 Z5\nG331 Z-4 K1.5\n"
@@ -124,7 +95,7 @@ def test_an_oriented_stop_reaches_linuxcnc_and_back() -> None:
     text = "G21 G90\nS400 M3\nG0 X1 Y2 Z5\nM19 R90\nG0 Z20\nM2\n"
     siemens = to("linuxcnc", "siemens", text)
     assert "SPOS=90\n" in siemens
-    verified("linuxcnc", text, siemens)
+    verified("linuxcnc", text, siemens, "siemens")
 
 
 def test_an_orientation_is_held_back_only_while_a_tap_may_follow() -> None:
@@ -150,14 +121,6 @@ def test_a_positioning_mode_or_another_spindle_is_kept_verbatim_by_name(word: st
     assert error.location is not None and error.location.line == 3 and "SPOS" in str(error)
 
 
-@pytest.mark.parametrize("mode", ["error", "warn"])
-def test_a_lone_siemens_stroke_towards_linuxcnc_is_refused(mode: str) -> None:
-    with pytest.raises(ErrorList) as info:
-        to("siemens", "linuxcnc", SIEMENS_TAPS.replace("SPOS=R1\n", ""), mode)
-    assert [e.location.line for e in info.value.errors if e.location][:2] == [5, 6]
-    assert all("stroke" in str(e) for e in info.value.errors)
-
-
 ISG_STROKES = "G71 G90 G17\nM03 S500\nG00 X1 Y2 Z10\nG331 Z-10 K1.5\nG332 Z10 K1.5\nM30\n"
 
 
@@ -167,15 +130,11 @@ def test_isg_strokes_reach_siemens_as_its_own_after_spos_hand_derived() -> None:
     that puts SINUMERIK's spindle under position control."""
     assert to("isg", "siemens", ISG_STROKES) == ("G17 G710 G90\nS500 M3\nG0 X1. Y2. Z10.\nSPOS=0\n"
                                                  "G331 Z-10. K1.5 S500\nG332 Z10. K1.5\nM30\n")
-    report = verify_lines(_lines(ISG_STROKES), _lines(to("isg", "siemens", ISG_STROKES)), file_in="t.nc",
-                          file_out="t.mpf", source="isg", target="siemens", setup=MachineSetup())
-    assert report.ok and report.max_deviation == 0.0, report.summary()
+    verified("isg", ISG_STROKES, to("isg", "siemens", ISG_STROKES), "siemens")
 
 
 def test_siemens_strokes_reach_isg_as_its_own() -> None:
     siemens = to("isg", "siemens", ISG_STROKES)
     isg = to("siemens", "isg", siemens)
     assert isg.splitlines()[3:6] == ["M19", "G331 Z-10. K1.5 S500", "G332 Z10. K1.5"]
-    report = verify_lines(_lines(siemens), _lines(isg), file_in="t.mpf", file_out="t.nc", source="siemens",
-                          target="isg", setup=MachineSetup())
-    assert report.ok and report.max_deviation == 0.0, report.summary()
+    verified("siemens", siemens, isg, "isg")

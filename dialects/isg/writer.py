@@ -31,6 +31,7 @@ from postproc.event_order import after_motion
 from postproc.ir import Block, Motion, Section
 from postproc.output.home_position import SECOND_RETURN, reference_problem, reference_target
 from postproc.rs274.codes import CodeTable
+from postproc.isg_family.taps import stroke_words
 from postproc.rs274.writer import WordWriter
 from postproc.subprogram_names import NameRule, SubprogramNames
 
@@ -211,21 +212,9 @@ class IsgWriter(WordWriter):
         return ["L " + call.name]
 
     def rigid_tap_words(self, s: Any, block: Block) -> list[str]:
-        """A rigid tap stroke, ``G331 Z.. K..`` in or ``G332 Z.. K..`` out (``taps``); a whole tap arrives
-        split into strokes (``postproc.cycles.rigid_tap_lowering.as_strokes``), the pitch signed by the
-        thread's hand."""
-        if s.stroke is None or s.dwell or s.speedup is not None:
-            self.unsupported("a rigid tap as one move in and out (ISG taps by the strokes G331/G332)", block)
-        words = [self.code("motion", "tap_in" if s.stroke == "in" else "tap_out", "a rigid tap stroke", block)]
-        incremental = self.modal.distance == "incremental"
-        for axis, value in s.axes.items():
-            words.append(axis + (self.expression(value, block) if isinstance(value, Expr)
-                                 else self.position(axis, value, incremental)))
-        words.append("K" + self.length(s.pitch, block, "K"))
-        rpm = self.modal.spindle_rpm
-        if s.stroke == "in" and "SpindleSpeed" not in block.sections and isinstance(rpm, (int, float)) and rpm:
-            words.append("S" + self.speed(rpm))  # G331 names the speed it taps at [V]
-        return words
+        """A rigid tap stroke, ``G331`` in or ``G332`` out, as ISG and SINUMERIK write it
+        (``postproc.isg_family.taps.stroke_words``; read by ``taps``)."""
+        return stroke_words(self, s, block, "ISG")
 
     def return_level_words(self, s: Any, block: Block) -> list[str]:
         """Fanuc's G98/G99 steer canned cycles, which reach ISG expanded: nothing to write."""

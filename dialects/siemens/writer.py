@@ -41,6 +41,7 @@ from postproc.event_order import after_motion
 from postproc.expr import Expr
 from postproc.ir import Block, CompoundMotion, Dwell, Motion, Section, SpindleControl
 from postproc.rs274.codes import CodeTable
+from postproc.isg_family.taps import stroke_words
 from postproc.rs274.writer import WordWriter
 
 from .codes import CODES
@@ -203,21 +204,9 @@ class SiemensWriter(WordWriter):
         return ["SPOS=" + (f"{float(s.angle):.6f}".rstrip("0").rstrip(".") or "0")]
 
     def rigid_tap_words(self, s: Any, block: Block) -> list[str]:
-        """A rigid tap stroke, ``G331 Z.. K.. S..`` in or ``G332 Z.. K..`` out (``tap_strokes``); a whole tap
-        arrives split into strokes (``postproc.cycles.rigid_tap_lowering.as_strokes``), the pitch signed by the
-        spindle's direction."""
-        if s.stroke is None or s.dwell or s.speedup is not None:
-            self.unsupported("a rigid tap as one move in and out (SINUMERIK taps by the strokes G331/G332)", block)
-        words = [self.code("motion", "tap_in" if s.stroke == "in" else "tap_out", "a rigid tap stroke", block)]
-        incremental = self.modal.distance == "incremental"
-        for axis, value in s.axes.items():
-            words.append(axis + (self.expression(value, block) if isinstance(value, Expr)
-                                 else self.position(axis, value, incremental)))
-        words.append("K" + self.length(s.pitch, block, "K"))
-        rpm = self.modal.spindle_rpm
-        if s.stroke == "in" and "SpindleSpeed" not in block.sections and isinstance(rpm, (int, float)) and rpm:
-            words.append("S" + self.speed(rpm))  # G331 is programmed with its S [K]
-        return words
+        """A rigid tap stroke, ``G331`` in or ``G332`` out, as ISG and SINUMERIK write it
+        (``postproc.isg_family.taps.stroke_words``; read by ``tap_strokes``)."""
+        return stroke_words(self, s, block, "SINUMERIK")
 
     def return_level_words(self, s: Any, block: Block) -> list[str]:
         """Fanuc's G98/G99: the level is the RTP of the ``MCALL`` written for a cycle (``cycle_writing``)."""

@@ -16,17 +16,24 @@ https://en.cncforum.net/t/siemens-cnc-milling-g331-g332-codes-thread-interpolati
 sign is the spindle's direction (positive as with M3), G332 with the G331's pitch and the direction reversed
 by the control, S without M3/M4; the spindle put into position control by ``SPOS=`` before G331
 (``dialects/siemens``). Only K (tapping along Z) is read here; I and J are not.
+
+Both writers write a stroke alike too (``stroke_words``): the code, the axes, K the signed pitch, and on the in
+stroke the S it taps at when the block sets none (ISG: G331 names the speed it taps at [V, the page above];
+SINUMERIK: G331 is programmed with its S [K, the example above]).
 """
 
 from __future__ import annotations
 
-from typing import Any, Final
+from typing import TYPE_CHECKING, Any, Final
 
 from postproc.context import Context
 from postproc.errors import ProgramError
 from postproc.expr import Expr
 from postproc.ir import Block, Motion
 from postproc.synchronised_tap import RigidTap
+
+if TYPE_CHECKING:
+    from postproc.rs274.writer import WordWriter
 
 MODES: Final = {"tap_in": "in", "tap_out": "out"}
 """The code table's motion modes of G331/G332 -> the stroke."""
@@ -66,3 +73,22 @@ def read_tap_stroke(block: Block, ctx: Context, motion: Motion, values: dict[str
                            ctx.at(block, ctx.column_of(block, "K")))
     block.add(RigidTap(dict(motion.axes), float(pitch), stroke=stroke))
     ctx.state.motion = str(motion.mode)
+
+
+def stroke_words(writer: WordWriter, s: Any, block: Block, controller: str) -> list[str]:
+    """A rigid tap stroke's words, ``G331 Z.. K.. [S..]`` in or ``G332 Z.. K..`` out (the module docstring), for
+    the writer of ``controller`` (named in its refusal); a whole tap arrives split into strokes
+    (``postproc.cycles.rigid_tap_lowering.as_strokes``), the pitch signed (the thread's hand: ISG; the spindle's
+    direction: SINUMERIK, the same sign)."""
+    if s.stroke is None or s.dwell or s.speedup is not None:
+        writer.unsupported(f"a rigid tap as one move in and out ({controller} taps by the strokes G331/G332)", block)
+    words = [writer.code("motion", "tap_in" if s.stroke == "in" else "tap_out", "a rigid tap stroke", block)]
+    incremental = writer.modal.distance == "incremental"
+    for axis, value in s.axes.items():
+        words.append(axis + (writer.expression(value, block) if isinstance(value, Expr)
+                             else writer.position(axis, value, incremental)))
+    words.append("K" + writer.length(s.pitch, block, "K"))
+    rpm = writer.modal.spindle_rpm
+    if s.stroke == "in" and "SpindleSpeed" not in block.sections and isinstance(rpm, (int, float)) and rpm:
+        words.append("S" + writer.speed(rpm))
+    return words
