@@ -254,7 +254,9 @@ def _complete(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
             elif _incremental_return(block, absolute, axes, pos):
                 assert isinstance(motion, Motion)
                 for a, value in motion.axes.items():
-                    motion.axes[a] = pos[a] + float(value)  # type: ignore[operator]  # known: tested above
+                    known = pos[a]
+                    assert known is not None and not isinstance(value, Expr)  # (tested above)
+                    motion.axes[a] = known + float(value)
                 sections["DistanceMode"] = DistanceMode("absolute")
                 block.changed()
                 restore = True
