@@ -298,7 +298,8 @@ def test_a_cycle_without_dwell_after_one_with_writes_k0() -> None:
     """Fanuc G81 after G82 P500 does not dwell: Fagor's G81 gets K0, whatever Fagor carries over."""
     program = PRO["fanuc"] + "S800 M03\nG82 X5. Y5. Z-6. R2. P500 F50.\nG81 X6.\nG89 X7.\nG85 X8.\nG80\nM30\n"
     out = _translate(program, "fanuc", "fagor")
-    assert out.splitlines()[3:7] == ["G81 X5. Y5. Z2. I-6. K0.5 F50.", "G81 X6. K0.", "G89 X7. K0.5", "G89 X8. K0."]
+    assert out.splitlines()[3:7] == ["G81 X5. Y5. Z2. I-6. K0.5 F50.", "G81 X6. Z2. I-6. K0.", "G89 X7. Z2. I-6. K0.5",
+                                    "G89 X8. Z2. I-6. K0."]
     _verify(program, out, "fanuc", "fagor")
 
 
@@ -320,8 +321,18 @@ def test_every_cycle_call_after_a_dwell_names_its_k() -> None:
     program = (PRO["fanuc"] + "S800 M03\nG81 X4. Y5. Z-6. R2. F50.\nG82 X5. P1000\nG89 X6. P1000\nG80\n"
                "G81 X7. Y5. Z-6. R2. F50.\nG80\nM30\n")
     out = _translate(program, "fanuc", "fagor")
-    assert out.splitlines()[3:8] == ["G81 X4. Y5. Z2. I-6. F50.", "G81 X5. K1.", "G89 X6. K1.", "G80",
+    assert out.splitlines()[3:8] == ["G81 X4. Y5. Z2. I-6. F50.", "G81 X5. Z2. I-6. K1.", "G89 X6. Z2. I-6. K1.", "G80",
                                      "G81 X7. Y5. Z2. I-6. K0. F50."]
+    _verify(program, out, "fanuc", "fagor")
+
+
+def test_a_cycle_call_writes_the_levels_its_source_carried_over() -> None:
+    """Fanuc keeps R and Z from cycle to cycle: G82 X30. P500 drills from R2 to the Z-9 of the repeat before it.
+    Whether the 8070 keeps Z and I from one definition to the next is not confirmed, so the call writes them:
+    Z2. I-9. (the depth last written), K0.5."""
+    program = (PRO["fanuc"] + "S800 M03\nG81 X10. Y0 Z-6. R2. F100.\nX20. Z-9.\nG82 X30. P500\nG80\nM30\n")
+    out = _translate(program, "fanuc", "fagor")
+    assert out.splitlines()[3:6] == ["G81 X10. Y0. Z2. I-6. F100.", "X20. I-9.", "G81 X30. Z2. I-9. K0.5"]
     _verify(program, out, "fanuc", "fagor")
 
 

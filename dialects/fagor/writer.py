@@ -10,7 +10,11 @@ comments, ``%name`` headers, and the hole cycles Fagor runs with its own words.
   reached], so the dwell never depends on it: once a program has written a nonzero ``K``, every block that
   names the cycle code writes its ``K`` (``K0`` for a cycle without a dwell), and a block repeating the
   active cycle writes ``K`` when its dwell differs from the one in force. Before any nonzero ``K`` a cycle
-  without a dwell writes none (a controller that has never been given a dwell has none).
+  without a dwell writes none (a controller that has never been given a dwell has none). For the same reason a
+  block that names the cycle code writes the reference plane ``Z`` and depth ``I`` in force where its source
+  carried them over from the cycle before (a Fanuc ``G82 X5. P1000`` after ``G81 .. Z-6. R2.``: ``G81 X5. Z2.
+  I-6. K1.``), as last written [K: Autodesk's post for the Fagor 8037/8055 writes every definition whole, ``G90
+  G8x X Y Z I (K)``].
   Every other cycle arrives expanded (``Fagor.NATIVE_CYCLES``).
 * Another dialect's tape mark ``%`` is written as the comment ``;%`` (a Fagor ``%`` line is a header).
 * A dwell is ``G04 K`` in the set-up's unit (as the cycle ``K`` [?]).
@@ -31,7 +35,10 @@ from __future__ import annotations
 
 from typing import Any, ClassVar
 
+from postproc.context import Context
 from postproc.cycle_words import CycleWords
+from postproc.cycles.section import WORD_ORDER
+from postproc.dialect import Dialect
 from postproc.errors import UnsupportedError
 from postproc.event_order import after_motion
 from postproc.expr import Expr
@@ -40,6 +47,7 @@ from postproc.output.home_position import SECOND_RETURN, reference_problem, refe
 from postproc.rs274.codes import CodeTable
 from postproc.rs274.cycle_words import NEUTRAL_CYCLE_WORDS
 from postproc.rs274.writer import WordWriter
+from postproc.state import PLANE_AXES
 
 from .codes import CODES, CYCLE_ALIASES
 from .cycle_words import cycle_words
@@ -68,6 +76,11 @@ class FagorWriter(WordWriter):
     """Whether a nonzero ``K`` has been written: from then on every cycle call writes its ``K`` (the module
     docstring)."""
 
+    def __init__(self, ctx: Context, source_dialect: str, target: type[Dialect] | None = None) -> None:
+        super().__init__(ctx, source_dialect, target)
+        self.levels_in_force: dict[str, str] = {}
+        """The reference plane and depth words (``Z..``, ``I..``) the active written cycle was given last."""
+
     def target_cycle_words(self) -> CycleWords:
         return cycle_words(self.ctx.setup)
 
@@ -77,6 +90,7 @@ class FagorWriter(WordWriter):
         motion = block.sections.get("Motion")
         if isinstance(motion, Motion) and motion.mode in _REFERENCE or "MachineCoordinates" in block.sections:
             self.dwell_in_force = None  # written as rapids (a cancel): no cycle stays active after it
+            self.levels_in_force = {}
         if isinstance(motion, Motion) and motion.mode in _REFERENCE and not motion.axes:
             rest = {k: v for k, v in block.sections.items() if k != "Motion"}  # a return of no axis: no move
             return self._part(block, rest)[:-1] + (block.eol or "\n") if rest else ""
@@ -92,6 +106,7 @@ class FagorWriter(WordWriter):
         motion = sections.get("Motion")
         if "CycleCancel" in sections or (isinstance(motion, Motion) and motion.mode in _CANCELS):
             self.dwell_in_force = None
+            self.levels_in_force = {}
             self.after_blocks = False
 
     def canned_cycle_words(self, s: Any, block: Block) -> list[str]:
@@ -102,7 +117,8 @@ class FagorWriter(WordWriter):
         words: list[str] = []
         if s.call:
             words.extend(self._code("cycle", kind, f"the {s.kind.replace('_', ' ')} cycle", block))
-        words.extend(self.cycle_role_words(s, block, source, target, dwell=False))
+        roles = self.cycle_role_words(s, block, source, target, dwell=False)
+        words.extend(self._whole_definition(s, target, roles))
         seconds = (s.dwell or 0.0) if kind == s.kind else 0.0
         if s.call or self.dwell_in_force is None:
             explicit = bool(seconds) or self.dwell_written
@@ -114,6 +130,21 @@ class FagorWriter(WordWriter):
         self.dwell_in_force = seconds
         self.after_blocks = True  # until a cancel (``after_block``)
         return words
+
+    def _whole_definition(self, s: Any, target: CycleWords, roles: list[str]) -> list[str]:
+        """A cycle block's words, a call's with the reference plane and depth in force where its source carried
+        them over (the module docstring); the words written are kept for the next call."""
+        letters = (target.level, target.bottom_letter(s.plane, PLANE_AXES[s.plane][2]))
+        written = {word[0] for word in roles}
+        for word in roles:
+            if word[0] in letters:
+                self.levels_in_force[word[0]] = word
+        missing = [self.levels_in_force[letter] for letter in letters
+                   if s.call and letter not in written and letter in self.levels_in_force]
+        if not missing:
+            return roles
+        order = {c: i for i, c in enumerate(WORD_ORDER)}
+        return sorted(roles + missing, key=lambda word: order.get(word[0], 99))
 
     def hole_pattern_words(self, s: Any, block: Block) -> list[str]:
         """A multiple machining block from its ``HolePattern`` (the inverse of the reader's words)."""
