@@ -81,7 +81,8 @@ def stroke_words(writer: WordWriter, s: Any, block: Block, controller: str) -> l
     (``postproc.cycles.rigid_tap_lowering.as_strokes``), the pitch signed (the thread's hand: ISG; the spindle's
     direction: SINUMERIK, the same sign)."""
     if s.stroke is None or s.dwell or s.speedup is not None:
-        writer.unsupported(f"a rigid tap as one move in and out ({controller} taps by the strokes G331/G332)", block)
+        writer.unsupported(f"a rigid tap as one move in and out ({controller} taps by two strokes, in and then out "
+                           "with the spindle reversed)", block)
     words = [writer.code("motion", "tap_in" if s.stroke == "in" else "tap_out", "a rigid tap stroke", block)]
     incremental = writer.modal.distance == "incremental"
     for axis, value in s.axes.items():
