@@ -144,10 +144,17 @@ def test_fanuc_g53_under_a_tool_length_takes_it_out_with_d0_and_selects_it_again
     assert report.ok and report.max_deviation == 0, report.summary() + "\n" + out
 
 
-@pytest.mark.parametrize("lines", ["G41 D2 G1 X10. F100.\nG0\nG53 Z0.", "T2 M6\nG43 H2 Z10.\n/G53 Z0."])
+def test_a_block_skip_goes_on_the_d0_and_d_blocks_too(tmp_path: Path) -> None:
+    """Skipped, none of the three runs: the length stays in force, as on Fanuc where the skipped G53 does not
+    run; not skipped, the three run as above."""
+    setup = _setup(tmp_path)
+    out = _from_fanuc("G21 G90 G17 G0 X5. Y5. Z5.\nT2 M6\nG43 H2 Z10.\n/G53 Z0. M9\nM30\n", setup)
+    assert out.splitlines()[3:6] == ["/ D0", "/ SUPA G0 Z0. M9", "/ D02"], out
+
+
+@pytest.mark.parametrize("lines", ["G41 D2 G1 X10. F100.\nG0\nG53 Z0."])
 def test_fanuc_g53_with_a_tool_offset_in_force_is_refused(lines: str, tmp_path: Path) -> None:
-    """Radius compensation in force (the source cannot run it either), and a block skip on a move whose D0 and D
-    blocks would not be skipped with it."""
+    """Radius compensation in force (the source cannot run it either)."""
     with pytest.raises(ErrorList) as caught:
         _from_fanuc(f"G21 G90 G17 G0 X5. Y5. Z5.\n{lines}\nM30\n", _setup(tmp_path))
     assert any("machine coordinates" in str(e) for e in caught.value.errors), [str(e) for e in caught.value.errors]
