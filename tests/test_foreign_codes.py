@@ -106,6 +106,18 @@ def test_config_check_refuses_a_bad_declaration_at_its_line(body: str, message: 
     assert message in str(caught.value) and ":2:" in str(caught.value), str(caught.value)
 
 
+def test_config_check_refuses_a_family_no_installed_dialect_has_and_dump_writes_it_back(cli, tmp_path: Path) -> None:  # type: ignore[no-untyped-def]
+    path = tmp_path / "m.xml"
+    path.write_text(CANONICAL.replace('family="fanuc" number="33"', 'family="fanucc" number="33"'))
+    result = cli("config", "check", path)
+    assert result.status == 1
+    assert result.err_lines == [f"{path}:9:1: error: <ForeignCodes> family 'fanucc' is no installed dialect's family "
+                                "(the families: fagor, fanuc, grbl, grblhal, gsk, isg, linuxcnc, mach3, siemens)"]
+    path.write_text(CANONICAL)
+    assert cli("config", "check", path).status == 0
+    assert cli("config", "dump", path).out.decode() == CANONICAL
+
+
 # -- translating ----------------------------------------------------------------------------------
 
 @pytest.mark.parametrize("target, comment, move", [

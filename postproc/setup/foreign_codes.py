@@ -97,3 +97,21 @@ def foreign_codes_to_xml(parent: etree._Element, codes: list[ForeignCode]) -> No
 def foreign_table(codes: list[ForeignCode]) -> dict[tuple[str, str], ForeignCode]:
     """``(family, code)`` -> its declaration."""
     return {code.key(): code for code in codes}
+
+
+def unknown_families(codes: list[ForeignCode], families: set[str], file: str) -> list[ConfigError]:
+    """``config check``: a declaration for a family no installed dialect belongs to would never apply; each is
+    located at its element in ``file`` (at the root where a base the file extends declares it)."""
+    unknown = [c for c in codes if c.family not in families]
+    if not unknown:
+        return []
+    from ..errors import Location
+    from ..xmlio import parse_xml_file
+    root = parse_xml_file(file)
+    problems = []
+    for code in unknown:
+        el = next((m for m in root.iter("M") if (up := m.getparent()) is not None and up.tag == TAG
+                   and m.get("family") == code.family), root)
+        problems.append(ConfigError(f"<{TAG}> family {code.family!r} is no installed dialect's family (the "
+                                    f"families: {', '.join(sorted(families))})", Location(file, el.sourceline or 1, 1)))
+    return problems
