@@ -146,6 +146,11 @@ def test_a_mapped_code_is_written_as_the_target_code(target: str, tmp_path: Path
     assert [line for line in lines if "M133" in line] == [("G0" if target == "siemens" else "G00") + " X10. Y10. Z5. M133"]
 
 
+def test_a_code_written_with_a_leading_zero_is_the_same_code(tmp_path: Path) -> None:
+    lines = _translate("siemens", _setup(tmp_path, TO_M133), SOURCE.replace("M33", "M033"))
+    assert "G0 X10. Y10. Z5. M133" in lines, lines
+
+
 def test_towards_linuxcnc_a_user_m_code_the_set_up_declares_is_read_and_simulated(tmp_path: Path) -> None:
     setup = _setup(tmp_path, TO_M133, '<MachineCodes><M number="133" name="conveyor stop"/></MachineCodes>')
     lines = _translate("linuxcnc", setup)

@@ -17,6 +17,7 @@ what the target reads it as: a code its reader takes as anything but a machine-s
 
 from __future__ import annotations
 
+import copy
 import io
 from typing import Iterator
 
@@ -100,7 +101,7 @@ def _apply(block: Block, code: MachineFunction, mapped: ForeignCode, ctx: Contex
         if code.action != "none":
             problem = (f"it acts on the machine ({code.action}): only a code that moves nothing and changes no "
                        "spindle, coolant, feed or tool data may be omitted")
-    elif code.text != code.code:
+    elif len(code.text.split()) > 1:  # (``M031`` alone is the code: its text is as written)
         problem = f"it carries words ({code.text}) a code of {target.NAME} would not take over"
     else:
         section, problem = _target_code(becomes, ctx, target)
@@ -116,7 +117,7 @@ def _apply(block: Block, code: MachineFunction, mapped: ForeignCode, ctx: Contex
                      "out by the set-up (ForeignCodes)")
         return
     del block.sections["MachineFunction"]
-    block.sections[section.KEY] = section
+    block.sections[section.KEY] = copy.copy(section)  # a block's own: later steps may change their block's sections
     block.changed()
 
 
