@@ -63,6 +63,16 @@ TOOL_RADIUS_MM = 0.5
 """Every radius register n holds TOOL_RADIUS_MM + n / 100: small enough that no corpus contour gouges,
 large enough that a cutter compensation lost or applied on the wrong side is seen."""
 
+CHIP_AUGER = (("fanuc", "31"), ("fanuc", "33"))
+"""What every target machine of a Haas program is set up to do with Haas's chip auger (M31 forward, M33 stop
+[K: Haas mill and lathe operator's manuals, M-code lists]): leave it out with a comment
+(``<ForeignCodes><M family="fanuc" number="31" to="omit"/>``). The harness's target machines are generic: none
+is known to have a programmable chip conveyor, and an integrator moving a Haas program to such a machine
+omits the auger, which moves no axis and changes no spindle, coolant, feed or tool data (the operator runs
+the conveyor); a machine with one would map the codes to its own (``to="M.."``). Only programs read under the
+Haas variant get it: on another Fanuc-family machine M31 is the part counter, which the harness does not
+presume about."""
+
 OK, REFUSED, EXCUSED, FAILURE = "ok", "refused", "excused", "FAILURE"
 FAILURE_KINDS = ("internal error", "timeout", "verify failed", "invalid output", "unlocated error",
                  "source refused", "translation refused the source")
@@ -128,7 +138,9 @@ def targets(program: Program) -> list[str]:
 # -- one pair ---------------------------------------------------------------------------------------
 
 def _setup(program: Program) -> MachineSetup:
-    """The program's set-up with a tool table in which every length and radius register has a value."""
+    """The program's set-up with a tool table in which every length and radius register has a value, and for
+    a Haas program what the target machines do with its chip auger (``CHIP_AUGER``). The one set-up serves the
+    translation and both sides of verify, as ``postproc translate --machine`` does."""
     from postproc.setup.machine_setup import MachineSetup, load_setup
     from tests.support.tools import REGISTERS, with_tools
     if program.setup:
@@ -138,8 +150,14 @@ def _setup(program: Program) -> MachineSetup:
         base = load_setup(ROOT / "examples" / "setups" / "fanuc_0i_tf.xml")
     else:
         base = MachineSetup()
-    return with_tools(base, lengths={n: TOOL_LENGTH_MM + n for n in REGISTERS},
-                      radii={n: TOOL_RADIUS_MM + n / 100 for n in REGISTERS})
+    setup = with_tools(base, lengths={n: TOOL_LENGTH_MM + n for n in REGISTERS},
+                       radii={n: TOOL_RADIUS_MM + n / 100 for n in REGISTERS})
+    if setup.controller.variant == "haas":  # the target machines' declaration (CHIP_AUGER)
+        from postproc.setup.foreign_codes import ForeignCode
+        declared = {c.key() for c in setup.foreign_codes}
+        setup.foreign_codes = [*setup.foreign_codes, *(ForeignCode(family=f, number=n, to="omit")
+                                                       for f, n in CHIP_AUGER if (f, "M" + n) not in declared)]
+    return setup
 
 
 def _lines(text: str) -> list[str]:

@@ -1,6 +1,6 @@
 """Defects: ``--on-unsupported warn`` must never write a displaced or invalid program.
 
-A dropped move (a Fanuc lathe G32 for grbl, a LinuxCNC G33, a G53 retract for SINUMERIK) left the tool where
+A dropped move (a Fanuc lathe G32 for grbl, a LinuxCNC G33, a G53 retract for GSK) left the tool where
 that move started, and the next move was written as if it had run: an R arc from the wrong start (grbl
 refuses it: the chord grew past the diameter), or a move along X at the unretracted Z. Now only straight
 moves to absolute points of every displaced axis may follow; anything else fails at its line
@@ -77,13 +77,13 @@ def test_a_straight_move_to_an_absolute_point_puts_the_tool_back_on_the_source_p
 
 
 def test_a_dropped_machine_retract_fails_the_move_along_x_at_the_unretracted_z() -> None:
-    start = "G21 G90 G0 X0 Y0 Z50.\nS1000 M03\nG43 H1 Z50.\nG1 Z1. F100.\n"
-    # (SINUMERIK's SUPA under a tool length offset: whether it suppresses the offset is machine data, so
-    # Fanuc's move in machine coordinates is dropped)
-    setup = with_tools(lengths={1: 100.0})
-    assert refused(start + "G53 G0 Z0.\nG1 X10.\nM30\n", "fanuc", "siemens", setup) == [
-        f"in.nc:6:1: error: {DISPLACED.replace('line 7', 'line 5')}"]
-    assert "G1 X10." in warned(start + "G53 G0 Z0.\nG0 Z50.\nG1 X10.\nM30\n", "fanuc", "siemens", setup)
+    # (GSK has no move in machine coordinates, so Fanuc's G53 retract is dropped. SINUMERIK's SUPA under a tool
+    # length, this test's first vehicle, is now written exactly: D0, SUPA, the D again)
+    start = "%\nO1\nG21 G98\nM03 S500\nG00 X20. Z2.\nG01 Z1. F100.\n"
+    assert refused(start + "G53 G0 Z0.\nG1 X10.\nM30\n%\n", "fanuc", "gsk", LATHE) == [f"in.nc:8:1: error: {DISPLACED}"]
+    assert "G01 X10." in warned(start + "G53 G0 Z0.\nG0 Z50.\nG1 X10.\nM30\n%\n", "fanuc", "gsk", LATHE)
+    mill = "G21 G90 G0 X0 Y0 Z50.\nS1000 M03\nG43 H1 Z50.\nG1 Z1. F100.\nG53 G0 Z0.\nG1 X10.\nM30\n"
+    assert "D0\nSUPA G0 Z0.\nD01\nG1 X10.\n" in warned(mill, "fanuc", "siemens", with_tools(lengths={1: 100.0}))
 
 
 def test_a_dropped_linuxcnc_g33_on_a_mill_is_put_right_by_an_absolute_z() -> None:

@@ -131,7 +131,8 @@ def test_a_machine_code_towards_another_family_is_a_located_error_by_default() -
         to("linuxcnc", "G21 G90\nG00 X1. M88\nM30", "error")
     assert [str(e) for e in info.value.errors] == [
         "t.nc:2:1: error: M88 (through-spindle coolant on), a machine-specific code of the fanuc family, has no "
-        "equivalent in linuxcnc"]
+        "equivalent in linuxcnc (the target machine's set-up can say which of its machine codes it becomes: "
+        '<ForeignCodes><M family="fanuc" number="88" to=".."/></ForeignCodes>)']
 
 
 # -- simulating -------------------------------------------------------------------------------------

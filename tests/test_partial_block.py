@@ -43,23 +43,20 @@ def test_a_refused_tool_length_offset_leaves_its_motion_and_coolant(target: str,
                         "point without the tool's length); the rest of the block is written"]
 
 
-# SUPA under a tool length offset: whether it suppresses the offset is machine data (``$MN_G53_TOOLCORR``)
-SUPA_REFUSED = ("a move in machine coordinates with a tool length or radius compensation in force (whether SUPA "
-           "suppresses them is machine data $MN_G53_TOOLCORR)")
-
-
-def test_a_move_in_machine_coordinates_goes_with_g53_and_the_coolant_stays() -> None:
-    """``Z0.`` without ``G53`` is the work zero, usually the part's top: the rapid is not written."""
+def test_a_move_in_machine_coordinates_under_a_length_keeps_its_coolant() -> None:
+    """SUPA under a tool length was refused (whether it suppresses the length is machine data
+    ``$MN_G53_TOOLCORR``); it is now exact with ``D0`` before it and the D again after it
+    (``dialects/siemens/writer.py`` ``machine_move``), so nothing is dropped and the coolant stays in its block."""
     lines, warnings = warned("G43 H1 Z50.\nG53 G0 Z0. M09\n", "siemens", {1: 100.0})
-    assert lines[1:] == [";UNSUPPORTED LINE 4: G53 G0 Z0. M09", "M9"]
-    assert warnings == [f"t.nc:4:1: warning: the siemens dialect cannot express {SUPA_REFUSED}; dropped, with Z0. (the block's motion), which cannot be written without it; "
-                        "the rest of the block is written"]
+    assert lines[1:] == ["D0", "SUPA G0 Z0. M9", "D01"]
+    assert warnings == []
 
 
 def test_a_block_with_nothing_left_is_a_comment() -> None:
-    lines, warnings = warned("G43 H1 Z50.\nG53 G0 Z0.\n", "siemens", {1: 100.0})
-    assert lines[1:] == [";UNSUPPORTED LINE 4: G53 G0 Z0."]
-    assert warnings == [f"t.nc:4:1: warning: the siemens dialect cannot express {SUPA_REFUSED}; written as a comment"]
+    lines, warnings = warned("G44 H18\n", "isg", {18: 100.0})
+    assert lines == ["(UNSUPPORTED LINE 3: G44 H18)"]
+    assert warnings == [f"t.nc:3:1: warning: the isg dialect cannot express a negative tool length offset (Fanuc "
+                        f"G44): {NEGATIVE['isg']}; written as a comment"]
 
 
 def test_without_warn_the_same_block_is_a_located_error() -> None:

@@ -123,8 +123,38 @@ def test_fanuc_g53_in_g1_is_at_rapid_so_supa_is_written_with_g0(tmp_path: Path) 
     assert report.ok and report.max_deviation == 0, report.summary() + "\n" + out
 
 
-@pytest.mark.parametrize("lines", ["T2 M6\nG43 H2 Z10.\nG53 Z0.", "G41 D2 G1 X10. F100.\nG0\nG53 Z0."])
+def test_fanuc_g53_under_a_tool_length_takes_it_out_with_d0_and_selects_it_again(tmp_path: Path) -> None:
+    """Exact whatever ``$MN_G53_TOOLCORR`` says: ``D0`` before the SUPA block (no length left to suppress), the D
+    again after it (Fanuc's G43 stays in force after G53). By hand: tool 2 is 75 mm long and the set-up has no
+    work offset, so G53 Z0 puts the spindle (the controlled point) at Z0: under D0 the point programmed is the
+    spindle's; G0 Z10. after it puts the tip at Z10, the spindle at 85; ``G53 G49 Z0.`` cancels the length in
+    its own block: D0 alone, and Z5. after it is the spindle's."""
+    setup = _setup(tmp_path)
+    text = ("G21 G90 G17 G0 X5. Y5. Z5.\nT2 M6\nG43 H2 Z10.\nG53 Z0.\nG53 X20. Y20.\nG0 Z10.\n"
+            "G53 G49 Z0. M5\nG0 Z5.\nM30\n")
+    out = _from_fanuc(text, setup)
+    assert out.splitlines()[1:12] == ["T2 M6", "D02 G0 Z10.", "D0", "SUPA G0 Z0.", "D02", "D0", "SUPA G0 X20. Y20.",
+                                      "D02", "G0 Z10.", "D0", "SUPA G0 Z0. M5"], out
+    moves = [(e["x"], e["y"], e["z"], e.get("controlled", {}).get("z"))
+             for e in toolpath_events(io.StringIO(out), file="o.mpf", dialect="siemens", setup=setup) if "move" in e]
+    assert moves[1:] == [(5, 5, 10, 85), (5, 5, 0, None), (20, 20, 0, None), (20, 20, 10, 85), (20, 20, 0, None),
+                         (20, 20, 5, None)], out
+    report = verify_lines(io.StringIO(text), io.StringIO(out), file_in="a", file_out="b", source="fanuc",
+                          target="siemens", setup=setup, tolerance=0.0)
+    assert report.ok and report.max_deviation == 0, report.summary() + "\n" + out
+
+
+def test_a_block_skip_goes_on_the_d0_and_d_blocks_too(tmp_path: Path) -> None:
+    """Skipped, none of the three runs: the length stays in force, as on Fanuc where the skipped G53 does not
+    run; not skipped, the three run as above."""
+    setup = _setup(tmp_path)
+    out = _from_fanuc("G21 G90 G17 G0 X5. Y5. Z5.\nT2 M6\nG43 H2 Z10.\n/G53 Z0. M9\nM30\n", setup)
+    assert out.splitlines()[3:6] == ["/ D0", "/ SUPA G0 Z0. M9", "/ D02"], out
+
+
+@pytest.mark.parametrize("lines", ["G41 D2 G1 X10. F100.\nG0\nG53 Z0."])
 def test_fanuc_g53_with_a_tool_offset_in_force_is_refused(lines: str, tmp_path: Path) -> None:
+    """Radius compensation in force (the source cannot run it either)."""
     with pytest.raises(ErrorList) as caught:
         _from_fanuc(f"G21 G90 G17 G0 X5. Y5. Z5.\n{lines}\nM30\n", _setup(tmp_path))
     assert any("machine coordinates" in str(e) for e in caught.value.errors), [str(e) for e in caught.value.errors]

@@ -39,7 +39,7 @@ from postproc.compensation.tool_table import ToolTable
 from postproc.errors import PostprocError, UnsupportedError
 from postproc.event_order import after_motion
 from postproc.expr import Expr
-from postproc.ir import Block, CompoundMotion, Dwell, Motion, Section, SpindleControl
+from postproc.ir import Block, CompoundMotion, Dwell, Motion, Section, SpindleControl, ToolLengthOffset
 from postproc.rs274.codes import CodeTable
 from postproc.isg_family.taps import stroke_words
 from postproc.rs274.writer import WordWriter
@@ -106,6 +106,9 @@ class SiemensWriter(WordWriter):
         motion = sections.get("Motion")
         if isinstance(motion, Motion) and motion.mode in ("home", "home2"):
             return self.reference_return(block, motion)
+        if "MachineCoordinates" in sections and isinstance(motion, Motion) and motion.axes \
+                and self.length_between(sections):
+            return self.machine_move(block)
         label = sections.get(LABEL)
         sequence = sections.get("Sequence")
         if sequence is not None:
@@ -449,10 +452,51 @@ class SiemensWriter(WordWriter):
     MACHINE_MOVES: ClassVar[frozenset[str]] = frozenset(("rapid",))
     """A block without frames moves in the mode in force; the reader reads it back in G0 only."""
 
+    def length_between(self, sections: dict[str, Section]) -> bool:
+        """Whether a move in machine coordinates has a tool length to take out first: one in force, or the
+        block's own cancel (Haas ``G53 G49 Z0``), which ``machine_move`` writes as ``D0`` in a block before."""
+        offset = sections.get("ToolLengthOffset")
+        if isinstance(offset, ToolLengthOffset):
+            return offset.mode == "cancel"
+        return self.length_register is not None and self.length_register >= 0 and not self.no_length()
+
+    def machine_move(self, block: Block) -> str:
+        """A move in machine coordinates with a tool length in force, exact whatever ``$MN_G53_TOOLCORR`` says:
+        ``D0`` in a block of its own, the ``SUPA`` block with no length to suppress, then the ``D`` in force
+        again in a block of its own (none where the block cancels the length itself, Fanuc ``G49``).
+
+        Why that is the neutral move (``Simulator._machine_coordinates``: the controlled point at the machine
+        position, the length offset still in force for the blocks after):
+        [V: SINUMERIK 840D sl Function Manual Basic logic functions: Tool Offset (W1), 11/2006,
+        6FC5397-0BP10-2BA0, 2.1 p.13 "Activating the tool compensations"] a D change (D0 too) is traversed on
+        the first G0/G1 motion of the axis it acts on, so a ``D`` block without motion moves nothing and the
+        ``SUPA`` block after ``D0`` moves with no length, which the machine datum cannot suppress further;
+        [V: 802D sl/840D ISO Milling 04.07, 3.1.1] with ``$MN_G53_TOOLCORR = 0`` the length would have stayed
+        in force in the ``SUPA`` block, with 1 it is suppressed: after ``D0`` both are the same.
+        [K: Fanuc 0i-MB operator's manual B-63844EN/02 14.1.2] Fanuc's ``G53`` cancels the length for its own
+        block only: the ``D`` written again after it gives the next move of the axis its length back, as on
+        Fanuc. [?] An incremental move of the axis next (G91) is not checked against SINUMERIK's rule for a
+        length change traversed with an incremental dimension; every such program seen moves in G90.
+        A block skip goes on all three blocks: skipped, none of them runs. Radius compensation in force stays
+        refused (``machine_coordinates_words``): the source cannot run it."""
+        sections = block.sections
+        if self.radius_on or "CutterCompensation" in sections:
+            self.unsupported("a move in machine coordinates with radius compensation in force (whether SUPA "
+                             "suppresses it is machine data $MN_G53_TOOLCORR)", block)
+        offset = sections.get("ToolLengthOffset")
+        register = self.length_register
+        skip = {"BlockDelete": sections["BlockDelete"]} if "BlockDelete" in sections else {}  # all three or none
+        text = self._part(block, {**skip, "ToolLengthOffset": offset or ToolLengthOffset("cancel")})
+        rest = {k: v for k, v in sections.items() if k != "ToolLengthOffset"}
+        text += self.generate(_with(block, rest))
+        if offset is None and register is not None:
+            text += self._part(block, {**skip, "ToolLengthOffset": ToolLengthOffset("positive", register)})
+        return text
+
     def machine_coordinates_words(self, s: Any, block: Block) -> list[str]:
         """``SUPA``: the block without any frame or offset, which is what the neutral machine coordinates are,
         where neither a tool length nor radius compensation is in force (whether SUPA suppresses them is machine
-        data ``$MN_G53_TOOLCORR``: ``frame_suppression``)."""
+        data ``$MN_G53_TOOLCORR``: ``frame_suppression``); ``machine_move`` takes a tool length out around it."""
         sections = block.sections
         motion = sections.get("Motion")
         if not isinstance(motion, Motion) or not motion.axes:

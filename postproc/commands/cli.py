@@ -617,6 +617,8 @@ def cmd_config(args: argparse.Namespace) -> int:
         except UsageError as err:  # a set-up naming a missing dialect is a configuration error
             root = parse_xml_file(args.file)
             problems.append(ConfigError(err.message, Location(args.file, root.sourceline or 1, 1)))
+    from ..setup.foreign_codes import unknown_families
+    problems.extend(unknown_families(setup.foreign_codes, {d.family() for d in registry.dialects.values()}, args.file))
     pipeline = setup.pipeline_path()
     if pipeline is not None:
         from ..syntax import load_pipeline

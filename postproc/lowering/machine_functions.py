@@ -8,19 +8,32 @@ after it follow the spindle, and the same cycle fed without the spindle in step 
 target that writes a synchronised tap (LinuxCNC's G33.1) ``postproc.synchronised_tap`` has already taken it
 (its taps carry its meaning); towards any other family it is refused in either mode, by
 ``refused_rigid_tap``'s message.
+
+The set-up's ``<ForeignCodes>`` (``postproc.setup.foreign_codes``) says what a code of another family becomes
+on the target machine, in either mode: left out with a comment in its block (``omit``, only for a code whose
+action is ``none``), or the target's own machine code, read back by the target's reader (one place decides
+what the target reads it as: a code its reader takes as anything but a machine-specific one is refused).
 """
 
 from __future__ import annotations
 
+import copy
+import io
 from typing import Iterator
 
 from ..context import Context
 from ..dialect import Dialect
 from ..errors import UnsupportedError
-from ..ir import Block, Comments, MachineFunction
+from ..ir import Block, Comments, MachineFunction, Section
+from ..setup.foreign_codes import OMIT, ForeignCode, foreign_table
 
 RIGID_TAP = "rigid-tap"
 """The action of a code that makes the following tap cycles spindle-synchronised."""
+_READ_BACK = "foreign_codes_read_back"
+"""``ctx.run_data`` key: target code -> what the target's reader made of it (``_target_code``)."""
+_MACHINE_KEYS = frozenset(("MachineFunction", "NativeCode"))
+"""What a target's reader makes of one of its own machine codes: a machine builder's function, or a code
+kept verbatim for the dialect (LinuxCNC's user M codes)."""
 
 
 def refused_rigid_tap(code: MachineFunction, target: str) -> str:
@@ -30,34 +43,125 @@ def refused_rigid_tap(code: MachineFunction, target: str) -> str:
             "without the spindle in step a tap breaks: refused, even with --on-unsupported warn")
 
 
+def foreign_hint(code: MachineFunction) -> str:
+    """What a refusal of ``code`` adds: the set-up element that would say what it becomes (M codes only;
+    ``omit`` offered only where the code may be left out, its action ``none``)."""
+    letter, number = code.code[:1], code.code[1:]
+    if letter != "M" or not number.isdigit():
+        return ""
+    element = f'<ForeignCodes><{letter} family="{code.family}" number="{number}" to=".."/></ForeignCodes>'
+    if code.action == "none":
+        return (f" (the target machine's set-up can say what it becomes there: {element}, to=\"omit\" leaves it "
+                "out with a comment, or to= a machine code of the target)")
+    return f" (the target machine's set-up can say which of its machine codes it becomes: {element})"
+
+
 def drop_foreign_machine_functions(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
-    """Leave out (with a warning and a comment) each machine-specific code of another family (with
-    ``--on-unsupported warn``; otherwise the writer refuses it, and the blocks pass with no step each)."""
-    if ctx.on_unsupported != "warn":
+    """Apply the set-up's ``<ForeignCodes>`` to each machine-specific code of another family, and leave out
+    (with a warning and a comment) an undeclared one with ``--on-unsupported warn``; otherwise the writer
+    refuses it, and the blocks pass with no step each."""
+    if ctx.on_unsupported != "warn" and not ctx.setup.foreign_codes:
         return blocks
-    return _drop(blocks, ctx, target)
+    return _drop(blocks, ctx, target, foreign_table(ctx.setup.foreign_codes))
 
 
-def _drop(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+def _drop(blocks: Iterator[Block], ctx: Context, target: type[Dialect],
+          declared: dict[tuple[str, str], ForeignCode]) -> Iterator[Block]:
     family = target.family()
+    warn = ctx.on_unsupported == "warn"
     for block in blocks:
         code = block.sections.get("MachineFunction")
-        if isinstance(code, MachineFunction) and code.family != family and code.action == RIGID_TAP:
+        if not isinstance(code, MachineFunction) or code.family == family:
+            yield block
+            continue
+        mapped = declared.get((code.family, code.code))
+        if code.action == RIGID_TAP:
             ctx.diagnostics.error(UnsupportedError(refused_rigid_tap(code, target.NAME),
                                                    ctx.at(block, _column(block, code.code))))
             del block.sections["MachineFunction"]  # refused once, here: the writer would warn of it again
             block.changed()
-        elif isinstance(code, MachineFunction) and code.family != family:
-            note = f"{code.text} NOT WRITTEN: {code.describe()} of the {code.family} family has no equivalent"
+        elif mapped is not None:
+            _apply(block, code, mapped, ctx, target)
+        elif warn:
             ctx.diagnostics.warn(f"{code.describe()}, a machine-specific code of the {code.family} family, has "
-                                 f"no equivalent in {target.NAME}; left out, its block kept",
+                                 f"no equivalent in {target.NAME}; left out, its block kept{foreign_hint(code)}",
                                  ctx.at(block, _column(block, code.code)))
-            del block.sections["MachineFunction"]
-            comments = block.sections.get("Comments")
-            texts = list(comments.texts) if isinstance(comments, Comments) else []
-            block.sections["Comments"] = Comments([*texts, note])
-            block.changed()
+            _note(block, f"{code.text} NOT WRITTEN: {code.describe()} of the {code.family} family has no equivalent")
         yield block
+
+
+def _apply(block: Block, code: MachineFunction, mapped: ForeignCode, ctx: Context, target: type[Dialect]) -> None:
+    """What the set-up says the code becomes: left out with a note, or the target's code (a refusal, located
+    at the code, when the set-up asks for what cannot be)."""
+    becomes = mapped.becomes()
+    where = ctx.at(block, _column(block, code.code))
+    problem: str | None = None
+    section: Section | None = None
+    if becomes == OMIT:
+        if code.action != "none":
+            problem = (f"it acts on the machine ({code.action}): only a code that moves nothing and changes no "
+                       "spindle, coolant, feed or tool data may be omitted")
+    elif len(code.text.split()) > 1:  # (``M031`` alone is the code: its text is as written)
+        problem = f"it carries words ({code.text}) a code of {target.NAME} would not take over"
+    else:
+        section, problem = _target_code(becomes, ctx, target)
+    if problem is not None:
+        ctx.diagnostics.error(UnsupportedError(
+            f"{code.describe()} of the {code.family} family: the set-up's <ForeignCodes> makes it {becomes} on "
+            f"{target.NAME}, but {problem}", where))
+        del block.sections["MachineFunction"]  # refused once, here: the writer would report it again
+        block.changed()
+        return
+    if section is None:
+        _note(block, f"{code.text} omitted: {code.name or 'a machine code'} of the {code.family} family, left "
+                     "out by the set-up (ForeignCodes)")
+        return
+    del block.sections["MachineFunction"]
+    block.sections[section.KEY] = copy.copy(section)  # a block's own: later steps may change their block's sections
+    block.changed()
+
+
+def _target_code(becomes: str, ctx: Context, target: type[Dialect]) -> tuple[Section | None, str | None]:
+    """The section the target's own reader makes of the code ``becomes`` (read once a run), or why it is
+    none of the target's machine-specific codes."""
+    cache: dict[str, tuple[Section | None, str | None]] = ctx.run_data.setdefault(_READ_BACK, {})
+    found = cache.get(becomes)
+    if found is not None:
+        return found
+    from ..errors import Diagnostics, ErrorLevel, ErrorList, PostprocError
+    from ..reading import read_blocks
+    answer: tuple[Section | None, str | None]
+    if target.READER is None:
+        answer = None, f"{target.NAME} cannot be read back to confirm it is a machine code there"
+    else:
+        diagnostics = Diagnostics(ErrorLevel.RAISE, warn_stream=io.StringIO())
+        try:
+            _, blocks = read_blocks([becomes + "\n"], "<ForeignCodes>", target, ctx.setup, diagnostics)
+            sections = [s for b in blocks for s in b.sections.values()]
+            diagnostics.check()
+        except ErrorList as err:
+            first = err.errors[0]
+            answer = None, f"{target.NAME} does not read it: {getattr(first, 'message', str(first))}"
+        except PostprocError as err:
+            answer = None, f"{target.NAME} does not read it: {getattr(err, 'message', str(err))}"
+        else:
+            kept = [s for s in sections if s.KEY in _MACHINE_KEYS]
+            if len(kept) == 1 and len(sections) == 1:
+                answer = kept[0], None
+            else:
+                what = ", ".join(type(s).__name__ for s in sections) or "nothing"
+                answer = None, f"{target.NAME} reads it as {what}, not as a machine-specific code of its own"
+    cache[becomes] = answer
+    return answer
+
+
+def _note(block: Block, note: str) -> None:
+    """Take the code out of the block and say so in the block's comment."""
+    del block.sections["MachineFunction"]
+    comments = block.sections.get("Comments")
+    texts = list(comments.texts) if isinstance(comments, Comments) else []
+    block.sections["Comments"] = Comments([*texts, note])
+    block.changed()
 
 
 def _column(block: Block, code: str) -> int:

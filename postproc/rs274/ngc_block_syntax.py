@@ -433,12 +433,17 @@ class NgcWordBlockSyntax(WordBlockSyntax):
         used.add("P")
         block.add(Dwell(seconds))
 
-    def unknown_m(self, block: Block, ctx: Context, number: int, num: str) -> str:
-        """RS274/NGC controls know their M codes: user M codes are kept verbatim, anything else is an error."""
+    def unknown_m(self, block: Block, ctx: Context, number: int, num: str) -> str | None:
+        """RS274/NGC controls know their M codes: user M codes are kept verbatim, anything else is an error.
+        A user M code the set-up's ``<MachineCodes>`` declares is a machine function (None: ``machine_m``),
+        simulated by its declared action: the program file it runs is the machine's, as a builder's code is
+        (a ``<ForeignCodes>`` mapping writes one, ``postproc.setup.foreign_codes``)."""
         native = self.CODES.native_m.get(number)
         if native is not None:
             return f"M{num} ({native})"
         if number in self.CODES.user_m:
+            if any(code.key() == ("M", str(number)) for code in ctx.setup.machine_codes):
+                return None
             return f"M{num} (user M code)"
         raise ParseError(f"unknown M code M{num}", ctx.at(block, col_of_word(block, "M", num)))
 

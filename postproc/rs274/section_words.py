@@ -17,7 +17,7 @@ from ..dialect import Dialect
 from ..errors import UnsupportedError
 from ..expr import Binary, Expr, Num
 from ..ir import Block, Motion
-from ..lowering.machine_functions import RIGID_TAP, refused_rigid_tap
+from ..lowering.machine_functions import RIGID_TAP, foreign_hint, refused_rigid_tap
 from ..state import MM_PER_INCH
 from .codes import CodeTable
 from .word_numbers import NumberWriter
@@ -348,7 +348,7 @@ class SectionWords(NumberWriter):
             raise UnsupportedError(refused_rigid_tap(s, self.DIALECT), self.ctx.at(block))
         if s.family != family:
             raise UnsupportedError(f"{s.describe()}, a machine-specific code of the {s.family} family, has no "
-                                   f"equivalent in {self.DIALECT}", self.ctx.at(block))
+                                   f"equivalent in {self.DIALECT}{foreign_hint(s)}", self.ctx.at(block))
         return [s.text]
 
     def frame_change_words(self, s: Any, block: Block) -> list[str]:

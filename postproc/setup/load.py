@@ -46,6 +46,7 @@ class Own:
     templates: set[str] = field(default_factory=set)
     library: list[str] = field(default_factory=list)
     codes: set[tuple[str, str]] = field(default_factory=set)
+    foreign: set[tuple[str, str]] = field(default_factory=set)
     calls: set[str] = field(default_factory=set)
     entries: dict[str, dict[str, set[str]]] = field(default_factory=dict)
 
@@ -128,6 +129,8 @@ class Merger:
         """Template name -> (text, file, line)."""
         self.libraries: list[list[str]] = []
         self.codes: dict[tuple[str, str], Any] = {}
+        self.foreign: dict[tuple[str, str], Any] = {}
+        """(family, code) -> ``<ForeignCodes>`` declaration (later files win)."""
         self.calls: dict[str, str] = {}
         self.entries: dict[str, dict[str, dict[str, Any]]] = {c: {} for c in CONTAINERS}
         self.own = Own()
@@ -174,6 +177,12 @@ class Merger:
                         self.codes[declared.key()] = declared
                         if last:
                             self.own.codes.add(declared.key())
+                elif tag == "ForeignCodes":
+                    from .foreign_codes import foreign_codes_from_xml
+                    for mapped in foreign_codes_from_xml(child):
+                        self.foreign[mapped.key()] = mapped
+                        if last:
+                            self.own.foreign.add(mapped.key())
                 elif tag == "CodeCall":
                     code, file = code_call_from_xml(child)
                     if code in calls_here:
@@ -335,6 +344,7 @@ class Merger:
             name=self.root.get("name", "default"), dialect=self.root.get("dialect"),
             pipeline=self.root.get("pipeline"), templates=templates, source=source, library=self.library(),
             machine_codes=list(self.codes.values()), code_calls=dict(self.calls), **kwargs)
+        setup.foreign_codes = list(self.foreign.values())
         setup.extends = self.root.get("extends") if "extends" in self.own.root else None
         setup.extra = dict(sorted(extra.items()))
         setup.travel = self.entry_models("Axes", machine.axes)

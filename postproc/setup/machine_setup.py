@@ -17,6 +17,7 @@ from ..errors import ConfigError, UsageError
 from .record import SetupGroup, setting, values
 from .record import aliases as field_aliases
 from ..xmlio import XFactory, XmlNode, lxml_etree, where
+from .foreign_codes import ForeignCode as ForeignCode, foreign_codes_to_xml
 from .groups import (  # the records, named here as ever
     InputSettings as InputSettings, OutputSettings as OutputSettings, ROUNDED_ADDRESSES as ROUNDED_ADDRESSES,
     parse_address_decimals as parse_address_decimals, CycleSettings as CycleSettings,
@@ -37,7 +38,8 @@ class MachineSetup(XmlNode):
 
     XNAME = "MachineSetup"
     __slots__ = ("name", "dialect", "pipeline", "input", "output", "cycles", "machine", "templates", "source",
-                 "template_lines", "limits", "library", "controller", "machine_codes", "code_calls", "lathe_cycles",
+                 "template_lines", "limits", "library", "controller", "machine_codes", "foreign_codes", "code_calls",
+                 "lathe_cycles",
                  "extends", "extra", "travel", "work_offsets", "tools", "template_files", "own")
 
     def __init__(self, name: str = "default", dialect: str | None = None, pipeline: str | None = None,
@@ -60,6 +62,9 @@ class MachineSetup(XmlNode):
         self.controller = controller or ControllerSettings()
         self.machine_codes = machine_codes if machine_codes is not None else []
         """Machine-specific codes the set-up declares (``<MachineCodes>``), over the family's defaults."""
+        self.foreign_codes: list[ForeignCode] = []
+        """What other families' machine-specific M codes become on this machine (``<ForeignCodes>``,
+        ``postproc.setup.foreign_codes``)."""
         self.lathe_cycles = lathe_cycles or LatheCycleSettings()
         self.library = library if library is not None else []
         """Folders searched for subprograms not in the program's file (``<Library path="..."/>``, relative
@@ -89,7 +94,7 @@ class MachineSetup(XmlNode):
     def _key(self) -> tuple[Any, ...]:
         return (self.name, self.dialect, self.pipeline, self.input, self.output, self.cycles,
                 self.machine, self.templates, self.limits, tuple(self.library), self.controller,
-                tuple(self.machine_codes), tuple(self.code_calls.items()), self.lathe_cycles,
+                tuple(self.machine_codes), tuple(self.foreign_codes), tuple(self.code_calls.items()), self.lathe_cycles,
                 tuple(self.extra.items()), tuple(self.travel.items()), tuple(self.work_offsets.items()),
                 tuple(self.tools.items()))
 
@@ -182,6 +187,7 @@ class MachineSetup(XmlNode):
                 child = etree.SubElement(parent, code.letter)
                 for key, value in values(code, by_alias=True, exclude_defaults=True, exclude={"letter"}).items():
                     child.set(key, str(value))
+        foreign_codes_to_xml(el, [c for c in self.foreign_codes if own is None or c.key() in own.foreign])
         for called, file in self.code_calls.items():
             if own is None or called in own.calls:
                 etree.SubElement(el, "CodeCall", code=called, file=file)

@@ -21,6 +21,8 @@ Point = tuple[float, float, float]
 
 _hypot: Final = math.hypot
 """Compiled, ``math.hypot`` is an attribute look-up on the module each call; a Final is a C static."""
+OMIT: Final = "omit"
+"""A ``<ForeignCodes>`` code left out (``postproc.setup.foreign_codes.OMIT``)."""
 EVENT_TOLERANCE: Final = 1e-6
 """Numbers in machine events (dwell seconds, angles) compare within this."""
 @mypyc_attr(allow_interpreted_subclasses=True)
@@ -297,9 +299,12 @@ def _same_event(a: Event, b: Event) -> bool:
 
 
 def compare(events_in: Iterable[Event], events_out: Iterable[Event], *, start_in: dict[str, float],
-            start_out: dict[str, float], tolerance: float, chord_tolerance: float | None = None) -> Report:
+            start_out: dict[str, float], tolerance: float, chord_tolerance: float | None = None,
+            mapped: dict[str, str] | None = None) -> Report:
     """Walk two toolpaths (each with its header first) and report their largest deviation.
-    ``chord_tolerance``: OUT may cut IN's arcs into chords within it (``postproc.simulate.chords``)."""
+    ``chord_tolerance``: OUT may cut IN's arcs into chords within it (``postproc.simulate.chords``).
+    ``mapped``: IN's machine-specific code -> what the target set-up's ``<ForeignCodes>`` makes of it
+    (``compare_machine_codes``)."""
     report = Report(tolerance, chord_tolerance=chord_tolerance)
     # feeds compared per minute: an inverse-time program and its translation for a target without G93
     # the paths compared are the controlled ones (``_controlled``): ``normalise`` reads a move's controlled
@@ -330,7 +335,7 @@ def compare(events_in: Iterable[Event], events_out: Iterable[Event], *, start_in
         if problem is not None:
             report.mismatch = problem
             report.mismatch_at = (_line(a), _line(b))
-    compare_machine_codes(report, codes_in, codes_out)
+    compare_machine_codes(report, codes_in, codes_out, mapped)
     if head_in.get("x_mode") == "diameter" and report.where_at is not None:  # both diameters: as radii
         report.where_at = tuple((x / 2.0, y, z) for x, y, z in report.where_at)  # type: ignore[assignment]
     return report
@@ -381,16 +386,49 @@ def _resolved(ev: Event) -> Event:
     return moved
 
 
-def compare_machine_codes(report: Report, codes_in: list[Event], codes_out: list[Event]) -> None:
-    """List each machine-specific code of either program: how often each side has it, from which line."""
+def compare_machine_codes(report: Report, codes_in: list[Event], codes_out: list[Event],
+                          mapped: dict[str, str] | None = None) -> None:
+    """List each machine-specific code of either program: how often each side has it, from which line. A code
+    of IN the target set-up maps (``mapped``: code -> the target's code, or ``omit``) is compared instead: the
+    codes it became must be OUT's in the same order (else the structure differs), and an omitted one is listed
+    as omitted by the set-up, never taken as equal."""
+    mapped = mapped or {}
+    expected = [(ev["line"], mapped[ev["code"]]) for ev in codes_in if mapped.get(ev["code"], OMIT) != OMIT]
+    targets = {to for to in mapped.values() if to != OMIT}
+    found = [(ev["line"], str(ev["code"])) for ev in codes_out if ev["code"] in targets]
+    if expected or found:
+        if [to for _, to in expected] != [code for _, code in found]:
+            at = next((n for n in range(min(len(expected), len(found))) if expected[n][1] != found[n][1]),
+                      min(len(expected), len(found)))
+            report.mismatch = report.mismatch or (
+                f"the machine codes the set-up's <ForeignCodes> maps differ: IN's become "
+                f"{_sequence([to for _, to in expected])}, OUT has {_sequence([code for _, code in found])}")
+            if report.mismatch_at == (None, None):
+                report.mismatch_at = (expected[at][0] if at < len(expected) else None,
+                                      found[at][0] if at < len(found) else None)
     seen: dict[str, tuple[str, list[int], list[int]]] = {}
     for side, events in ((1, codes_in), (2, codes_out)):
         for ev in events:
+            if side == 2 and ev["code"] in targets:
+                continue
             name, lines_in, lines_out = seen.setdefault(ev["code"], (ev.get("name", ""), [], []))
             (lines_in if side == 1 else lines_out).append(ev["line"])
     for code, (name, lines_in, lines_out) in seen.items():
         what = f"{code} ({name})" if name else code
-        report.ignored.append(f"{what}, a machine-specific code: {_count(lines_in, 'IN')}, {_count(lines_out, 'OUT')}")
+        to = mapped.get(code)
+        if to == OMIT:
+            report.ignored.append(f"{what}, a machine-specific code omitted by the set-up (<ForeignCodes>): "
+                                  f"{_count(lines_in, 'IN')}, {_count(lines_out, 'OUT')}")
+        elif to is not None:
+            report.notes.append(f"{what} became {to} by the set-up (<ForeignCodes>): compared, "
+                                f"{_count(lines_in, 'IN')}")
+        else:
+            report.ignored.append(f"{what}, a machine-specific code: {_count(lines_in, 'IN')}, "
+                                  f"{_count(lines_out, 'OUT')}")
+
+
+def _sequence(codes: list[str]) -> str:
+    return " ".join(codes[:6]) + (" ..." if len(codes) > 6 else "") if codes else "none"
 
 
 def _count(lines: list[int], side: str) -> str:

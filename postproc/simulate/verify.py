@@ -20,6 +20,8 @@ from typing import Any, Callable, Iterable, Mapping
 
 from ..errors import Diagnostics, ErrorList, PostprocError, UsageError
 from ..plugins import Registry, default_registry
+from ..dialect import Dialect
+from ..setup.foreign_codes import foreign_table
 from ..setup.machine_setup import MachineSetup
 from ..drawing.overlay import Overlay
 from ..transforms.carry import mirrors_xy
@@ -99,8 +101,9 @@ def verify_lines(lines_in: Iterable[str], lines_out: Iterable[str], *, file_in: 
         # the picture shows the paths compared (the controlled points), where the deviation is circled
         events_in = overlay.source_events(_controlled(iter(events_in)))
         events_out = overlay.target_events(_controlled(iter(events_out)))
-    report = compare(events_in, events_out, start_in=start_in,
-                     start_out=start_position(target_setup), tolerance=tolerance, chord_tolerance=chord_tolerance)
+    report = compare(events_in, events_out, start_in=start_in, start_out=start_position(target_setup),
+                     tolerance=tolerance, chord_tolerance=chord_tolerance,
+                     mapped=_mapped_codes(dialects.dialect(source), dialects.dialect(target), target_setup))
     report.allow_ignored = allow_ignored
     compare_after_end(report, after_in, after_out)
     fixed = dialects.dialect(target).PATH_CONTROL
@@ -213,6 +216,16 @@ def _kept_native(lines: Iterable[str], file: str, dialect: str, setup: MachineSe
         pending[0] = next(starts, None)
         return True
     return kept
+
+
+def _mapped_codes(source: type[Dialect], target: type[Dialect], target_setup: MachineSetup) -> dict[str, str]:
+    """The source family's machine codes the target set-up's ``<ForeignCodes>`` maps (code -> what it becomes);
+    none between dialects of one family, where the codes pass as written."""
+    family = source.family()
+    if family == target.family():
+        return {}
+    return {code: mapped.becomes() for (of, code), mapped in foreign_table(target_setup.foreign_codes).items()
+            if of == family}
 
 
 def _same_machine(setup: MachineSetup, source: str, registry: Registry | None) -> MachineSetup:

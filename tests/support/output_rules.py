@@ -24,6 +24,7 @@ directly; nothing here can be switched off by a test.
 
 from __future__ import annotations
 
+import re
 from typing import Any, Callable, Iterable, TextIO
 
 from postproc.setup.machine_setup import MachineSetup
@@ -47,6 +48,13 @@ def _grblhal(text: str, setup: MachineSetup) -> list[str]:
 
 
 def _linuxcnc(text: str, setup: MachineSetup) -> list[str]:
+    """rs274 on the program, with the user M codes (M100-M199) the set-up declares taken out first: those run
+    the machine's own program files, which the standalone interpreter cannot be given (it registers no user
+    M code [V: LinuxCNC src/emc/sai/saicanon.cc, USER_DEFINED_FUNCTION all zero, never added to]), so it
+    refuses every one; an undeclared one stays and is refused as before."""
+    declared = sorted(c.number for c in setup.machine_codes if c.letter == "M" and 100 <= int(c.number) <= 199)
+    if declared:
+        text = re.sub(rf"(?i)\bM0*({'|'.join(declared)})(?![\d.])", "", text)
     return linuxcnc_problems(text)
 
 
@@ -84,7 +92,7 @@ def problems(target: str, text: str, setup: MachineSetup) -> list[str]:
         return []
     controller = setup.controller
     key = (target, text, setup.cycles.orientation, controller.mist_coolant, controller.tool_table,
-           controller.spindle_sync)
+           controller.spindle_sync, tuple(setup.machine_codes))
     found = _seen.get(key)
     if found is None:
         found = _seen[key] = checker(text, setup)
