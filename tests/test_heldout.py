@@ -53,11 +53,6 @@ KNOWN_FAILURES: dict[tuple[str, str], str] = {
     ("haas/stcline_fusion_desktop_mill_trimmed.nc", ""): (
         "G43 Z.. without H (Fusion 360's Haas Desktop Mill post): the Fanuc-family reader asks for H; which "
         "register a Haas control then takes (the tool in the spindle's?) is not confirmed [?]"),
-    ("mach3/sprayer_fusion_face.nc", ""): (
-        "an inch program written with three decimals (Fusion 360, mm-sized numbers under G20): its arcs' end "
-        "radii differ from their start radii by 0.001 in (0.0254 mm), past the core's unit-blind 0.01 mm "
-        "(postproc/geometry.py ARC_TOLERANCE_MM); LinuxCNC allows 0.002 in in an inch program [K: "
-        "interp_internal.hh CENTER_ARC_RADIUS_TOLERANCE_INCH], Mach3's own limit is not known [?]"),
     ("siemens/cead_arc.mpf", ""): (
         "a G17 helix written with a K centre word beside I and J (G2 X0 Y0 Z10 I0 J-25 K5): the Siemens reader "
         "refuses a centre offset outside the plane; whether SINUMERIK ignores that K or alarms is not confirmed [?]"),

@@ -372,7 +372,8 @@ class _Geometry:
         radius = None if m.radius is None else float(m.radius) * mm  # type: ignore[arg-type]  # checked above
         try:
             c = arc_centre((s[0] * mm, s[1] * mm), (e[0] * mm, e[1] * mm), self.plane, radius,
-                           {a: v * mm for a, v in offsets.items()}, m.mode == "cw")
+                           {a: v * mm for a, v in offsets.items()}, m.mode == "cw", self.owner.ctx.arc_end,
+                           mm != 1.0, mm)
         except ArcError as err:
             raise ProgramError(err.message) from None
         if c is None:

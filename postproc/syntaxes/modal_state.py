@@ -224,7 +224,9 @@ def _check_arc(block: Block, ctx: Context, motion: Motion) -> None:
         offsets = {a: v * scale for a, v in center.items() if a == a1 or a == a2} if center else {}
         c1, c2 = s1 + offsets.get(a1, 0.0), s2 + offsets.get(a2, 0.0)
         r0 = hypot(s1 - c1, s2 - c2)
-        if abs(r0 - hypot(e1 - c1, e2 - c2)) <= ARC_TOLERANCE_MM and r0 >= _SMALLEST:
+        rule = ctx.arc_end
+        always = rule.inch * MM_PER_INCH if scale != 1.0 else rule.metric  # accepted whatever the radius
+        if abs(r0 - hypot(e1 - c1, e2 - c2)) <= always and r0 >= _SMALLEST:
             return  # the common arc: its end on its circle, its centre away from its start
     else:
         radius *= scale
@@ -233,7 +235,7 @@ def _check_arc(block: Block, ctx: Context, motion: Motion) -> None:
         if half >= _SMALLEST and abs(radius) - half >= -ARC_TOLERANCE_MM:
             return  # the common R arc: a chord its radius reaches
     try:  # the rare arc: arc_centre says what is wrong with it (or that it is a zero-length no-op)
-        arc_centre((s1, s2), (e1, e2), (a1, a2), radius, offsets, motion.mode == "cw")
+        arc_centre((s1, s2), (e1, e2), (a1, a2), radius, offsets, motion.mode == "cw", ctx.arc_end, scale != 1.0, scale)
     except ArcError as err:
         _refuse(block, ctx, motion, err)
 
