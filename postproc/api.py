@@ -11,6 +11,7 @@ from . import native
 native.install()  # the compiled hot path, before any of its modules is imported
 
 from .block_rules import check_blocks
+from .control import GotoLabel, missing_fallthrough
 from .dialect import Dialect
 from .errors import Diagnostics, ErrorLevel, PostprocError, UsageError
 from .ir import Block
@@ -123,6 +124,10 @@ def _keep_check(src: type[Dialect], dst: type[Dialect], ctx: Context, registry: 
     def reason(body: list[Block]) -> str | None:
         if not dst.PROGRAMS:
             return f"the {dst.NAME} dialect has no variables or control flow"
+        falls = missing_fallthrough(body)
+        if falls is not None:
+            target = falls.label if isinstance(falls, GotoLabel) else falls.target
+            return f"a jump to {target}, which is missing, goes on with the next block ({dst.NAME} would alarm)"
         if frame_evaluated and program is not None and program.FRAME_PARAMETERS:
             read = frame_parameter_read(body, program.FRAME_PARAMETERS.__contains__)
             if read is not None:

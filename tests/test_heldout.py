@@ -54,9 +54,10 @@ KNOWN_FAILURES: dict[tuple[str, str], str] = {
         "a G17 helix written with a K centre word beside I and J (G2 X0 Y0 Z10 I0 J-25 K5): the Siemens reader "
         "refuses a centre offset outside the plane; whether SINUMERIK ignores that K or alarms is not confirmed [?]"),
     ("siemens/cead_goto.mpf", ""): (
-        "GOTOC to a missing label (SINUMERIK's GOTOC suppresses alarm 14080 and goes on with the next block [K: "
-        "840D sl Job Planning, program jumps]) and GOTOF to a bare block number (GOTOF 90): both refused by the "
-        "Siemens reader (dialects/siemens, owned elsewhere)"),
+        "GOTOF MIDDLE jumps to a label after M30 (the file goes on past the program end): the interpreter "
+        "refuses a jump past the end of the running program (postproc/interp/run_state.py), since where a "
+        "controller runs from there is not modelled; whether SINUMERIK's label search reaches blocks after "
+        "M30 is not confirmed [?]. GOTOC to a missing label and GOTOF to a bare block number are read"),
     ("haas/enier_lathe_hp_1.nc", ""): _G71_NOSE,
     ("haas/enier_lathe_valve.nc", ""): _G71_NOSE,
     ("haas/enier_lathe_weld_pin.nc", ""): _G71_NOSE,
