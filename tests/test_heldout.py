@@ -50,9 +50,6 @@ _G71_NOSE = ("G71 with tool nose radius compensation (G42) in its profile's firs
              "programs write it: the Fanuc-family lathe expansion refuses it (postproc/cycles/lathe_expansion.py); "
              "whether and how Haas compensates the G71 profile is not yet confirmed from its manual [?]")
 KNOWN_FAILURES: dict[tuple[str, str], str] = {
-    ("siemens/cead_arc.mpf", ""): (
-        "a G17 helix written with a K centre word beside I and J (G2 X0 Y0 Z10 I0 J-25 K5): the Siemens reader "
-        "refuses a centre offset outside the plane; whether SINUMERIK ignores that K or alarms is not confirmed [?]"),
     ("siemens/cead_goto.mpf", ""): (
         "GOTOF MIDDLE jumps to a label after M30 (the file goes on past the program end): the interpreter "
         "refuses a jump past the end of the running program (postproc/interp/run_state.py), since where a "

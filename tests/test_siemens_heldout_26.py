@@ -1,4 +1,4 @@
-"""SINUMERIK jumps (issue 26, tests/heldout/siemens/cead_goto.mpf): ``GOTOC`` to a missing target goes on
+"""SINUMERIK jumps and arc centres (issue 26, tests/heldout/siemens/cead_goto.mpf, cead_arc.mpf): ``GOTOC`` to a missing target goes on
 with the next block (alarm 14080 suppressed), and a jump destination may be a bare block number (``GOTOF 90``)
 [K: SINUMERIK 840D sl Programming Manual Fundamentals, "Program jumps to jump markers"]. Expected paths are
 worked by hand from the programs below."""
@@ -59,3 +59,24 @@ def test_a_gotoc_whose_target_exists_stays_a_fanuc_jump() -> None:
               target="fanuc")
     lines = out.getvalue().splitlines()
     assert "N30 GOTO 60" in lines and "N80 GOTO 100" in lines
+
+
+# -- a centre word along the plane's normal (tests/heldout/siemens/cead_arc.mpf:11) -----------------------
+def _arcs(text: str) -> list[tuple[float, ...]]:
+    return [(e["x"], e["y"], e["z"], e["cx"], e["cy"]) for e in
+            toolpath_events(io.StringIO(text), file="t.mpf", dialect="siemens") if e.get("move") == "cw"]
+
+
+@pytest.mark.parametrize("extra", ["", " K5", " K=-3"])
+def test_a_k_on_a_g17_helix_moves_nothing(extra: str) -> None:
+    """From (0, 50, 0) about (0, 25), clockwise half a turn to (0, 0), Z rising to 10: the K component of the
+    centre point lies along the helix's axis, so the path is the same with or without it."""
+    text = f"G17 G1 X0 Y50 Z0 F1000\nG2 X0 Y0 Z10 I0 J-25{extra}\nM30\n"
+    assert _arcs(text) == [(0.0, 0.0, 10.0, 0.0, 25.0)]
+
+
+def test_the_fanuc_reader_still_refuses_a_centre_off_the_plane() -> None:
+    with pytest.raises(ErrorList) as info:
+        list(toolpath_events(io.StringIO("G17 G90 G1 X0 Y50 Z0 F1000\nG2 X0 Y0 Z10 I0 J-25 K5\nM30\n"),
+                             file="t.nc", dialect="fanuc"))
+    assert "arc centre offset along Z is outside the XY plane" in str(info.value.errors[0])
