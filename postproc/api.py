@@ -15,7 +15,7 @@ from .control import GotoLabel, missing_fallthrough
 from .dialect import Dialect
 from .errors import Diagnostics, ErrorLevel, PostprocError, UsageError
 from .ir import Block
-from .lowering.arcs import ArcOption, rewrite_arcs
+from .lowering.arcs import ArcOption, rewrite_arcs, settle_arc_ends
 from .lowering.lower import lower_for
 from .plugins import Registry, default_registry
 from .reading import gc_paused as gc_paused, read_blocks as read_blocks  # public API names
@@ -87,6 +87,8 @@ def translate(lines: Iterable[str], out: TextIO, *, file: str, source: str, targ
         lowered = transform_program(lowered, ctx, options)
         if arcs is not None:
             lowered = rewrite_arcs(lowered, ctx, arcs, dst)
+        else:
+            lowered = settle_arc_ends(lowered, ctx, dst)
         writer_class = dst.writer_class(ctx)
         if writer_class is None:
             raise UsageError(f"the {dst.NAME} dialect cannot write this program (it has no writer for it)")

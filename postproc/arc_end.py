@@ -62,6 +62,20 @@ class ArcEndRule:
         return {"mm": self.metric, "inch": self.inch, "relative": self.relative, "ceiling": self.ceiling,
                 "of_start": self.of_start, "runs": self.runs}
 
+    def covers(self, other: "ArcEndRule") -> bool:
+        """Whether every arc ``other`` accepts, in either units, this rule accepts too (sufficient, not
+        necessary: a False only costs a closer look at each arc, ``postproc.lowering.arcs.settle_arc_ends``)."""
+        if self.metric < other.metric or self.inch < other.inch:
+            return False
+        if other.relative <= 0.0:
+            return True
+        if self.relative < other.relative or self.of_start and not other.of_start:
+            return False
+        if self.ceiling <= 0.0:
+            return True
+        return other.ceiling > 0.0 and min(self.ceiling * self.metric - other.ceiling * other.metric,
+                                           self.ceiling * self.inch - other.ceiling * other.inch) >= 0.0
+
     def limit(self, r_start: float, r_end: float, inch: bool) -> float:
         """The largest difference of radii accepted for an arc of these radii (program units)."""
         absolute = self.inch if inch else self.metric
