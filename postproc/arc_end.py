@@ -108,6 +108,11 @@ class ArcEndRule:
         return mid[0] + side * h * nx, mid[1] + side * h * ny
 
 
+TARGET_ARC_END: Final = "target_arc_end"
+"""``ctx.run_data`` key of a translation whose target's rule does not cover the source's
+(``ArcEndRule.covers``): (the target's name, its rule). The reading pipeline's arc check then refuses an arc
+the source's controller runs as a spiral but the target's would refuse (``postproc.syntaxes.modal_state``)."""
+
 NEUTRAL_ARC_END: Final = ArcEndRule(metric=0.01, inch=0.01 / MM_PER_INCH)
 """The rule of a dialect that declares none: 0.01 mm in any units, the path a spiral (the project's
 rule before the controllers' own were modelled: ``postproc.geometry.ARC_TOLERANCE_MM``)."""

@@ -207,7 +207,7 @@ def test_a_spiral_the_target_refuses_is_a_located_error(target: str) -> None:
     with pytest.raises(ErrorList) as info:
         _translate(text, "linuxcnc", target)
     assert [str(e) for e in info.value.errors] == [
-        f"t.nc:4:1: error: the {target} controller refuses this arc: its end radius differs from its start radius "
+        f"t.nc:4:15: error: the {target} controller refuses this arc: its end radius differs from its start radius "
         f"by 0.02 mm, and it accepts 0.01 mm here; the source's controller runs it as a spiral, which no arc of "
         f"the target reproduces (translate with --arcs lines:TOL)"]
     lines = _translate(text, "linuxcnc", target, arcs=parse_arc_option("lines:0.01")).splitlines()

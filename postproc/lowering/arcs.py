@@ -81,12 +81,12 @@ def parse_arc_option(text: str) -> ArcOption:
 
 
 def settle_arc_ends(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
-    """The lowered program with each I/J/K arc written as ``target``'s controller must be given it to run the
-    path the source's controller runs (``postproc.arc_end``): where the source moves the centre (SINUMERIK),
-    the arc is written about that centre; where the source runs a spiral whose end the target refuses, a
-    located error. A pass over the program only where the two rules differ (``ArcEndRule.covers``)."""
-    source = ctx.arc_end
-    if source.runs == SPIRAL and target.ARC_END.covers(source):
+    """The lowered program with each I/J/K arc written about the centre the source's controller turns it
+    about where that controller moves the programmed one (``postproc.arc_end.START_RADIUS``): the target's
+    controller then runs a circle through both ends, the source's path exactly. A pass over the program only
+    for such a source; a spiral source whose arc the target's controller would refuse is refused where it is
+    read (``postproc.syntaxes.modal_state``, ``TARGET_ARC_END``)."""
+    if ctx.arc_end.runs == SPIRAL:
         return blocks
     return rewrite_arcs(blocks, ctx, ArcOption(SETTLE), target)
 
@@ -270,8 +270,7 @@ class _Rewriter:
     def _settle(self, motion: Motion, incremental: bool, machine: bool) -> list[Motion] | None:
         """An I/J/K arc as the target's controller must be given it to run the source controller's path
         (``settle_arc_ends``): with the centre the source turns about where that is not the programmed one
-        (exact: the written arc is then a circle through both ends); refused where the source runs a spiral
-        whose end the target's controller does not accept. Else left as it is."""
+        (exact: the written arc is then a circle through both ends); else left as it is."""
         if motion.radius is not None or machine or not motion.center or self.state.extra.get("polar") or any(
                 isinstance(v, Expr) for v in (*motion.center.values(), *motion.axes.values())):
             self._track(motion, incremental, machine)
@@ -291,16 +290,6 @@ class _Rewriter:
                                       (arc.centre[0] - arc.start[0], arc.centre[1] - arc.start[1]), None)]
             geometry.finish()
             return motions
-        rule = self.target.ARC_END
-        inch = self.state.units == "inch"
-        r0, r1 = arc.radii
-        if not rule.allows(r0, r1, inch):
-            unit = "in" if inch else "mm"
-            raise UnsupportedError(
-                f"the {self.target.NAME} controller refuses this arc: its end radius differs from its start radius "
-                f"by {abs(r0 - r1):.6g} {unit}, and it accepts {rule.limit(r0, r1, inch):.6g} {unit} here; the "
-                f"source's controller runs it as a spiral, which no arc of the target reproduces (translate with "
-                f"--arcs lines:TOL)")
         geometry.finish()
         return None
 
