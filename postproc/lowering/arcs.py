@@ -282,9 +282,8 @@ class _Rewriter:
             self._track(motion, incremental, machine)
             return None
         arc = geometry.arc()
-        offsets = motion.center
-        programmed = (arc.start[0] + float(offsets.get(a1, 0.0)) * (0.5 if geometry.diameter and a1 == "X" else 1.0),
-                      arc.start[1] + float(offsets.get(a2, 0.0)) * (0.5 if geometry.diameter and a2 == "X" else 1.0))
+        offsets = {a: float(v) for a, v in motion.center.items()}  # type: ignore[arg-type]  # numbers, checked above
+        programmed = (arc.start[0] + offsets.get(a1, 0.0), arc.start[1] + offsets.get(a2, 0.0))  # I: a radius
         if math.hypot(arc.centre[0] - programmed[0], arc.centre[1] - programmed[1]) > geometry.quantum:
             motions = [geometry.piece(motion.mode or "cw", arc.end, {a: e for a, (_, e) in arc.along.items()},
                                       (arc.centre[0] - arc.start[0], arc.centre[1] - arc.start[1]), None)]
