@@ -444,13 +444,11 @@ class WordBlockSyntax(Syntax):
         used.add("H")
 
     def _bare_length(self, block: Block, ctx: Context, num: str) -> None:
-        """G43/G44 without H takes the register in force: the H last programmed, the offset number being
-        modal [K: Fanuc 0i-F operator's manual, tool length offset]. At the start of a program that is
-        whatever the machine holds (the previous program's H, or H0 after a reset that clears it: parameter
-        5003#6 LVK [K]). Haas is taken to follow Fanuc; whether its Setting 15 (H & T code agreement)
-        supplies the spindle tool's register instead is not confirmed [?]. This reader does not carry the
-        register over from an earlier block (in a program that jumps, the last H in the text need not be the
-        last one run), so the block is refused either way, saying which case it is."""
+        """G43/G44 without H takes the register in force, the H last programmed (modal) [K: Fanuc 0i-F
+        operator's manual, tool length offset]; at a program's start the machine's (the last program's H, or
+        H0 after a reset that clears it: parameter 5003#6 LVK [K]). Haas taken as Fanuc; whether its Setting
+        15 (H & T code agreement) gives the spindle tool's register is not confirmed [?]. Not carried over
+        here (after a jump the last H in the text need not be the last run): refused, saying which case."""
         at = ctx.at(block, col_of_word(block, "G", num))
         if ctx.run_data.get(_LENGTH_REGISTER):
             raise ProgramError(f"G{num} without an offset register H: it takes the H last programmed, which "
@@ -561,8 +559,7 @@ CUTTER_H_HINT: Final = ("; if the controller takes it from H (Fanuc 0M), set <Co
 """What an error about ``G42 H19`` adds: the set-up option under which it reads."""
 
 
-_LENGTH_REGISTER: Final = "rs274.length_register"
-"""``ctx.run_data`` key: an offset register H has been programmed in this run (``_bare_length``)."""
+_LENGTH_REGISTER: Final = "rs274.length_register"  # ctx.run_data: an H has been programmed (``_bare_length``)
 
 
 def _dwells(codes: dict[str, tuple[str, str, object, str]], cycle_block: bool) -> bool:
