@@ -50,7 +50,8 @@ def _arc(units: str, r0: float, r1: float, turn: float, sweep: float) -> tuple[s
 
 
 # -- LinuxCNC: the interpreter is the oracle --------------------------------------------------------
-COUNT = 200 if os.environ.get("POSTPROC_HELDOUT") == "all" else 40
+COUNT = int(os.environ.get("POSTPROC_DIFFERENTIAL_EXAMPLES", "60")) * 2 // 3
+"""Arcs per run (40 by default; ``POSTPROC_DIFFERENTIAL_EXAMPLES``, as tests/test_differential_rs274.py)."""
 
 
 @pytest.mark.skipif(not available(), reason="the LinuxCNC interpreter rs274 is not installed")
