@@ -10,11 +10,13 @@ from typing import Callable, Iterable, Iterator, TextIO
 from . import native
 native.install()  # the compiled hot path, before any of its modules is imported
 
+from .arc_end import TARGET_ARC_END
 from .block_rules import check_blocks
+from .control import GotoLabel, missing_fallthrough
 from .dialect import Dialect
 from .errors import Diagnostics, ErrorLevel, PostprocError, UsageError
 from .ir import Block
-from .lowering.arcs import ArcOption, rewrite_arcs
+from .lowering.arcs import ArcOption, rewrite_arcs, settle_arc_ends
 from .lowering.lower import lower_for
 from .plugins import Registry, default_registry
 from .reading import gc_paused as gc_paused, read_blocks as read_blocks  # public API names
@@ -66,6 +68,8 @@ def translate(lines: Iterable[str], out: TextIO, *, file: str, source: str, targ
             ctx.run_data[TARGET_OMITS_VACANT] = _omits_vacant_words(dst, setup)
             ctx.run_data[EVALUATE_KEY] = options.transform is not None
             ctx.run_data[POINT_BY_POINT_KEY] = options.active()
+            if arcs is None and not dst.ARC_END.covers(src.ARC_END):
+                ctx.run_data[TARGET_ARC_END] = (dst.NAME, dst.ARC_END)
 
         moved = setup.travel_limited() and options.transform is not None
         if setup.travel_limited() and not moved:
@@ -86,6 +90,8 @@ def translate(lines: Iterable[str], out: TextIO, *, file: str, source: str, targ
         lowered = transform_program(lowered, ctx, options)
         if arcs is not None:
             lowered = rewrite_arcs(lowered, ctx, arcs, dst)
+        else:
+            lowered = settle_arc_ends(lowered, ctx, dst)
         writer_class = dst.writer_class(ctx)
         if writer_class is None:
             raise UsageError(f"the {dst.NAME} dialect cannot write this program (it has no writer for it)")
@@ -123,6 +129,10 @@ def _keep_check(src: type[Dialect], dst: type[Dialect], ctx: Context, registry: 
     def reason(body: list[Block]) -> str | None:
         if not dst.PROGRAMS:
             return f"the {dst.NAME} dialect has no variables or control flow"
+        falls = missing_fallthrough(body)
+        if falls is not None:
+            target = falls.label if isinstance(falls, GotoLabel) else falls.target
+            return f"a jump to {target}, which is missing, goes on with the next block ({dst.NAME} would alarm)"
         if frame_evaluated and program is not None and program.FRAME_PARAMETERS:
             read = frame_parameter_read(body, program.FRAME_PARAMETERS.__contains__)
             if read is not None:

@@ -11,8 +11,8 @@ step, which looks only at the blocks before the first feed rate.
   computes (jumps, loops, subprograms) the order of the text is not the order of execution: from its
   first construct on, ``translate`` leaves both checks to the run (``toolpath``, ``verify``).
 
-* An arc's end point lies on its circle (I/J/K form, within ``ARC_TOLERANCE_MM``), its R reaches the
-  end point, and an R arc is no full circle (``arc_centre``): the simulator checks every arc; the reading
+* An arc's end point lies on its circle (I/J/K form, within the reading controller's rule,
+  ``postproc.arc_end``, in the program's units), its R reaches the end point, and an R arc is no full circle (``arc_centre``): the simulator checks every arc; the reading
   pipeline's modal-state step checks every arc whose start it knows (``translate`` refuses it too).
 """
 
@@ -26,7 +26,8 @@ from .context import Context
 from .control import ASSIGN, CONTROL
 from .dialect import Dialect
 from .errors import ProgramError
-from .geometry import ARC_TOLERANCE_MM, PLACES, centre_from_radius
+from .arc_end import NEUTRAL_ARC_END, ArcEndRule
+from .geometry import PLACES, centre_from_radius
 from .ir import Block
 
 NO_FEED = "a feed move with no feed rate (program F first)"
@@ -133,10 +134,13 @@ _CENTRE_LETTERS = {"X": "I", "Y": "J", "Z": "K"}
 
 
 def arc_centre(s: tuple[float, float], e: tuple[float, float], axes: tuple[str, str], radius: float | None,
-               offsets: dict[str, float], clockwise: bool) -> tuple[float, float] | None:
-    """The centre of an arc from ``s`` to ``e`` in mm (plane axes ``axes``), from its R or its centre
-    offsets (mm); None for a zero-radius arc that does not move (a controller runs it as nothing).
-    Raises ``ArcError`` for an arc no controller runs."""
+               offsets: dict[str, float], clockwise: bool, rule: ArcEndRule = NEUTRAL_ARC_END,
+               inch: bool = False, unit: float = 1.0) -> tuple[float, float] | None:
+    """The centre a controller turns an arc from ``s`` to ``e`` about, in mm (plane axes ``axes``), from its R
+    or its centre offsets (mm); None for a zero-radius arc that does not move (a controller runs it as nothing).
+    An I/J/K arc's end may lie off its circle as far as the controller's ``rule`` allows in the program's
+    units (``inch``: an inch program; ``unit``: one program unit in the numbers given, 25.4 where they are
+    mm of an inch program), and the centre is then the one the rule says the controller runs. Raises ``ArcError`` for an arc no controller runs."""
     if radius is not None:
         try:
             return centre_from_radius(s, e, radius, clockwise)
@@ -147,11 +151,13 @@ def arc_centre(s: tuple[float, float], e: tuple[float, float], axes: tuple[str, 
     r0 = math.hypot(s[0] - c[0], s[1] - c[1])
     r1 = math.hypot(e[0] - c[0], e[1] - c[1])
     letter = next((_CENTRE_LETTERS[a] for a in offsets if a in _CENTRE_LETTERS), "G")
-    if abs(r0 - r1) > ARC_TOLERANCE_MM:
+    if not rule.allows(r0 / unit, r1 / unit, inch):
+        limit = rule.limit(r0 / unit, r1 / unit, inch)
         raise ArcError(f"arc end point is not on the circle: radius {r0:.4f} mm at the start, "
-                       f"{r1:.4f} mm at the end", letter)
+                       f"{r1:.4f} mm at the end (the controller accepts a difference up to "
+                       f"{limit:.6g} {'in' if inch else 'mm'} here)", letter)
     if r0 < 10.0 ** -PLACES:
         if round(e[0], PLACES) == round(s[0], PLACES) and round(e[1], PLACES) == round(s[1], PLACES):
             return None
         raise ArcError("arc centre coincides with its start point", "G")
-    return c
+    return rule.centre(s, e, c)

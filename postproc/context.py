@@ -14,6 +14,7 @@ from typing import Any, Callable, Final, Mapping
 
 from mypy_extensions import mypyc_attr
 
+from .arc_end import NEUTRAL_ARC_END, ArcEndRule
 from .cycle_words import CycleWords
 from .errors import Diagnostics, Location
 from .ir import Block
@@ -63,7 +64,7 @@ class Context:
                  "program_mode", "keep_check", "reader", "stops_before_motion", "feed_before_units", "cutter_rules", "length_at_axis", "lathe_turret",
                  "run_data",
                  "point_mix", "lathe", "increments", "axis_words", "diameter", "one_block", "peck_clearance_mm", "moves_made",
-                 "block_lane", "hole_lane")
+                 "block_lane", "hole_lane", "arc_end")
 
     def __init__(self, file: str, setup: MachineSetup, diagnostics: Diagnostics, dialect: str,
                  cycle_words: CycleWords | None = None) -> None:
@@ -95,6 +96,9 @@ class Context:
         """On a lathe the reading dialect's T indexes the turret with its offset (``Dialect.LATHE_TURRET``)."""
         self.cutter_rules: Any = None
         """The reading dialect's cutter compensation rules (``Dialect.CUTTER_RULES``; None: not modelled)."""
+        self.arc_end: ArcEndRule = NEUTRAL_ARC_END
+        """How far the reading controller lets an I/J/K arc end off its circle, and the path it then runs
+        (``Dialect.ARC_END``, ``postproc.arc_end``)."""
         self.point_mix: Any = NOT_SET
         """A reading step's tracker of words written with and without a decimal point
         (``postproc.rs274.point_mix``): ``NOT_SET`` until it starts, None once it has nothing left to look

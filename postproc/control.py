@@ -24,8 +24,8 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Any, ClassVar, Iterator
 
 from .errors import ConfigError
-from .expr import Expr, Var, expr_from_xml
-from .ir import Section
+from .expr import Expr, Num, Var, expr_from_xml
+from .ir import Block, Section
 from .xmlio import XAttr, XFactory, lxml_etree, where
 
 if TYPE_CHECKING:  # annotations only: lxml is imported where XML is read or written (postproc.xmlio)
@@ -155,31 +155,36 @@ class Assign(Section):
 
 class Goto(ControlSection):
     """``GOTO n`` / ``IF [c] GOTO n``: jump to the block with sequence number ``target`` when ``cond``
-    (if any) is true. Fanuc searches forward from the jump, then from the program start."""
+    (if any) is true. Fanuc searches forward from the jump, then from the program start. ``fallthrough``:
+    a missing target is no error, the run goes on with the next block (SINUMERIK's ``GOTOC``)."""
 
     XNAME = "Goto"
-    __slots__ = ("target", "cond")
+    __slots__ = ("target", "cond", "fallthrough")
+    XATTRS = (XAttr("fallthrough", bool, False),)
     ROLES = ("target", "cond")
     OPTIONAL = frozenset({"cond"})
 
-    def __init__(self, target: Expr, cond: Expr | None = None) -> None:
+    def __init__(self, target: Expr, cond: Expr | None = None, fallthrough: bool = False) -> None:
         self.target = target
         self.cond = cond
+        self.fallthrough = fallthrough
 
 
 class GotoLabel(ControlSection):
     """Jump to the block carrying the named ``Label`` ``label`` when ``cond`` (if any) is true (ISG
-    ``$GOTO [NAME]``); the search runs forward from the jump, then from the program's start."""
+    ``$GOTO [NAME]``); the search runs forward from the jump, then from the program's start.
+    ``fallthrough``: a missing label is no error, the run goes on with the next block (SINUMERIK's ``GOTOC``)."""
 
     XNAME = "GotoLabel"
-    __slots__ = ("label", "cond")
-    XATTRS = (XAttr("label"),)
+    __slots__ = ("label", "cond", "fallthrough")
+    XATTRS = (XAttr("label"), XAttr("fallthrough", bool, False))
     ROLES = ("cond",)
     OPTIONAL = frozenset({"cond"})
 
-    def __init__(self, label: str, cond: Expr | None = None) -> None:
+    def __init__(self, label: str, cond: Expr | None = None, fallthrough: bool = False) -> None:
         self.label = label
         self.cond = cond
+        self.fallthrough = fallthrough
 
 
 class Label(Section):
@@ -555,6 +560,33 @@ class ModalCallCancel(ControlSection):
 
     XNAME = "ModalCallCancel"
     __slots__ = ()
+
+
+def missing_fallthrough(blocks: list[Block]) -> Goto | GotoLabel | None:
+    """The first jump in ``blocks`` whose missing target lets it fall through (SINUMERIK's ``GOTOC``) and
+    whose target is indeed not among them, or None. Such a jump does nothing; a target's spelling of it
+    would jump nowhere (an alarm), so a program holding one is evaluated for the target, not kept."""
+    numbers: set[int] = set()
+    labels: set[str] = set()
+    jumps: list[Goto | GotoLabel] = []
+    for block in blocks:
+        sections = block.sections
+        sequence = sections.get("Sequence")
+        if sequence is not None:
+            numbers.add(getattr(sequence, "number", -1))
+        label = sections.get(LABEL)
+        if label is not None:
+            labels.add(getattr(label, "name", ""))
+        control = sections.get(CONTROL)
+        if isinstance(control, (Goto, GotoLabel)) and control.fallthrough:
+            jumps.append(control)
+    for jump in jumps:
+        if isinstance(jump, GotoLabel):
+            if jump.label not in labels:
+                return jump
+        elif isinstance(jump.target, Num) and int(jump.target.value) not in numbers:
+            return jump
+    return None
 
 
 CONTROL_SECTIONS: tuple[type[Section], ...] = (

@@ -11,6 +11,7 @@ import abc
 from pathlib import Path
 from typing import TYPE_CHECKING, Callable, ClassVar, Generic, Iterable, Iterator, Mapping, Protocol, TypeVar, cast
 
+from .arc_end import NEUTRAL_ARC_END, ArcEndRule
 from .comments import CommentSyntax
 from .errors import Diagnostics
 from .output.line_format import LineRule
@@ -151,6 +152,10 @@ class Dialect:
     CUTTER_RULES: ClassVar[CutterRules | None] = None
     """How the controller compensates the cutter radius (``postproc.compensation.rules``), for the
     simulation; None: compensation is not simulated for this dialect (``verify`` compares the setting)."""
+    ARC_END: ClassVar[ArcEndRule] = NEUTRAL_ARC_END
+    """How far the controller lets an I/J/K arc's end point lie off the circle through its start, in the
+    program's units, and which path it then runs (``postproc.arc_end``): the reading pipeline and the
+    simulator judge each arc by the reading dialect's rule, ``verify`` a translation's by the target's."""
     TOOL_LENGTH_OFFSET: ClassVar[bool] = True
     """Tool length offset from a table exists (the writer refuses it otherwise)."""
     PATH_CONTROL: ClassVar[str | None] = None
@@ -283,6 +288,8 @@ class Dialect:
             for key, value in vars(klass).items():
                 if key == "CUTTER_RULES":
                     table[key] = None if value is None else value.name  # whose rules, by name
+                elif key == "ARC_END":
+                    table[key] = value.describe()
                 elif key.isupper() and key not in skip and not key.startswith("_"):
                     table[key] = sorted(value) if isinstance(value, frozenset) else \
                         dict(value) if isinstance(value, Mapping) else value
@@ -349,6 +356,7 @@ class Dialect:
         ctx.stops_before_motion = cls.STOPS_BEFORE_MOTION
         ctx.feed_before_units = cls.FEED_BEFORE_UNITS
         ctx.cutter_rules = cls.cutter_rules(setup)
+        ctx.arc_end = cls.ARC_END
         ctx.length_at_axis = cls.LENGTH_AT_PROGRAMMED_AXIS
         ctx.lathe_turret = cls.LATHE_TURRET
         ctx.peck_clearance_mm = cls.PECK_CLEARANCE_MM

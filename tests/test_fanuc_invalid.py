@@ -74,7 +74,8 @@ OWN = [
      9),
     ("address_e", "G01 X1. E5.", "address E is not used by the Fanuc milling dialect", 9),
     ("address_without_meaning", "G01 X1. Q2.", "address Q has no meaning in this block", 9),
-    ("g43_without_h", "G43 Z10.", "G43 needs an offset register H", 1),
+    ("g43_without_h", "G43 Z10.", "G43 without an offset register H, and no H programmed before it: the register "
+     "in force is the machine's, known only to it (program G43 H..)", 1),
     ("n_with_point", "N1.5 G00", "block number N1.5 must be a whole number", 1),
     ("closing_parenthesis", "G00 X1. )", "')' without an opening '('", 9),
     ("late_block_delete", "G00 X1. /", "block delete '/' must start the block", 9),

@@ -50,21 +50,11 @@ _G71_NOSE = ("G71 with tool nose radius compensation (G42) in its profile's firs
              "programs write it: the Fanuc-family lathe expansion refuses it (postproc/cycles/lathe_expansion.py); "
              "whether and how Haas compensates the G71 profile is not yet confirmed from its manual [?]")
 KNOWN_FAILURES: dict[tuple[str, str], str] = {
-    ("haas/stcline_fusion_desktop_mill_trimmed.nc", ""): (
-        "G43 Z.. without H (Fusion 360's Haas Desktop Mill post): the Fanuc-family reader asks for H; which "
-        "register a Haas control then takes (the tool in the spindle's?) is not confirmed [?]"),
-    ("mach3/sprayer_fusion_face.nc", ""): (
-        "an inch program written with three decimals (Fusion 360, mm-sized numbers under G20): its arcs' end "
-        "radii differ from their start radii by 0.001 in (0.0254 mm), past the core's unit-blind 0.01 mm "
-        "(postproc/geometry.py ARC_TOLERANCE_MM); LinuxCNC allows 0.002 in in an inch program [K: "
-        "interp_internal.hh CENTER_ARC_RADIUS_TOLERANCE_INCH], Mach3's own limit is not known [?]"),
-    ("siemens/cead_arc.mpf", ""): (
-        "a G17 helix written with a K centre word beside I and J (G2 X0 Y0 Z10 I0 J-25 K5): the Siemens reader "
-        "refuses a centre offset outside the plane; whether SINUMERIK ignores that K or alarms is not confirmed [?]"),
     ("siemens/cead_goto.mpf", ""): (
-        "GOTOC to a missing label (SINUMERIK's GOTOC suppresses alarm 14080 and goes on with the next block [K: "
-        "840D sl Job Planning, program jumps]) and GOTOF to a bare block number (GOTOF 90): both refused by the "
-        "Siemens reader (dialects/siemens, owned elsewhere)"),
+        "GOTOF MIDDLE jumps to a label after M30 (the file goes on past the program end): the interpreter "
+        "refuses a jump past the end of the running program (postproc/interp/run_state.py), since where a "
+        "controller runs from there is not modelled; whether SINUMERIK's label search reaches blocks after "
+        "M30 is not confirmed [?]. GOTOC to a missing label and GOTOF to a bare block number are read"),
     ("haas/enier_lathe_hp_1.nc", ""): _G71_NOSE,
     ("haas/enier_lathe_valve.nc", ""): _G71_NOSE,
     ("haas/enier_lathe_weld_pin.nc", ""): _G71_NOSE,

@@ -13,6 +13,7 @@ from typing import TYPE_CHECKING, Callable, Iterator
 
 from postproc.context import Context
 from postproc.comments import CommentSyntax
+from postproc.arc_end import NEUTRAL_ARC_END
 from postproc.dialect import Dialect, Lazy, Reader
 from postproc.errors import Diagnostics
 from postproc.hookspecs import hookimpl
@@ -43,6 +44,11 @@ def resolve_radius_where_d_cannot(blocks: Iterator[Block], ctx: Context, target:
 
 class Fagor(Dialect):
     NAME = "fagor"
+    ARC_END = NEUTRAL_ARC_END
+    """Not yet Fagor's own: the 8070's power-on G265 corrects the centre within the machine parameters CIRINERR
+    (absolute) or CIRINFACT (relative); G264 runs the start radius about the programmed centre [K: Fagor
+    8070 programming manual, arc centre correction G264/G265]. The parameters' defaults and where G265 puts
+    the centre are not known [?], so the neutral rule (0.01 mm, a spiral) stays until they are."""
     DESCRIPTION = "Fagor CNC 8070 milling: Z/I/K drilling words, G70/G71 units, G159 offsets, P parameters"
     READER = Lazy[type[Reader]](".reader:FagorReader")
     """Imported when a run first reads Fagor (``Lazy``), as are the writer and the syntax objects (with the

@@ -13,6 +13,7 @@ from postproc.setup.machine_setup import MachineSetup
 from postproc.syntax import Pipeline
 from postproc.hookspecs import hookimpl
 from postproc.rs274.cycle_words import rs274_cycle_words
+from postproc.rs274.arc_ends import FANUC_ARC_END
 from postproc.rs274.lathe_axes import LATHE_INCREMENTS
 from postproc.rs274.order_of_execution import stops_before_motion
 from postproc.rs274.macro_jumps import number_jumps
@@ -85,6 +86,8 @@ class Fanuc(Dialect):
     """Cutter compensation C with start-up type A, parameter SUP (5003#0) = 0, the default
     (``postproc.compensation.rules``, where each rule is tagged with its source); type B by the set-up's
     ``<Controller cutterStartup="B">`` (``cutter_rules``)."""
+    ARC_END = FANUC_ARC_END
+    """Parameter 3410 in the program's units, a spiral within it (``postproc.rs274.arc_ends``)."""
     LOWERING = (stops_before_motion, number_jumps)
     """A spindle stop or coolant off that the source made before its block's motion goes in a block of
     its own before it (Fanuc makes them after the motion); another dialect's ``IF .. ELSE``, loop tested at

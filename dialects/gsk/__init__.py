@@ -16,6 +16,7 @@ from postproc.comments import CommentSyntax
 from postproc.compensation.rules import FANUC_T
 from postproc.dialect import Dialect, Lazy, Reader
 from postproc.hookspecs import hookimpl
+from postproc.rs274.arc_ends import FANUC_ARC_END
 from postproc.rs274.lathe_axes import LATHE_INCREMENTS
 from postproc.setup.machine_setup import MachineSetup
 from postproc.syntax import Pipeline
@@ -56,6 +57,8 @@ class Gsk(Dialect):
     CUTTER_RULES = FANUC_T
     """Tool nose radius compensation by Fanuc T's rules, start-up type A, the radius and the imaginary tool
     nose direction from the offset the T code selected (``postproc.compensation.rules``, tagged there)."""
+    ARC_END = FANUC_ARC_END
+    """As Fanuc's parameter 3410 [?] (``postproc.rs274.arc_ends``)."""
 
     @classmethod
     def python_pipeline(cls, setup: MachineSetup) -> Pipeline:

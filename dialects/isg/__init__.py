@@ -12,6 +12,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Callable, Iterator
 
 from postproc.comments import CommentSyntax
+from postproc.arc_end import NEUTRAL_ARC_END
 from postproc.dialect import Dialect, Lazy, Reader
 from postproc.hookspecs import hookimpl
 from postproc.lowering.structured_jumps import nest_jumps_keeping_equality
@@ -41,6 +42,12 @@ def resolve_radius_where_d_cannot(blocks: Iterator[Block], ctx: Context, target:
 
 class Isg(Dialect):
     NAME = "isg"
+    ARC_END = NEUTRAL_ARC_END
+    """Not yet ISG's own: its power-on G165 moves the programmed centre so that a circle runs through both end
+    points, alarming when the move exceeds P-CHAN-00059 (2 mm by default) or P-CHAN-00060 (5 % of the radius)
+    [V: Beckhoff TF5200 programming manual, G164/G165; channel parameters]; under G164 the radius changes
+    linearly within P-CHAN-00171/00172 [V: same]. Where G165 puts the new centre is not stated [?], so the
+    neutral rule (0.01 mm, a spiral) stays until it is."""
     DESCRIPTION = "Beckhoff TwinCAT CNC (ISG kernel) milling: P parameters, $ control flow, %L subroutines"
     READER = Lazy[type[Reader]](".reader:IsgReader")
     """Imported when a run first reads ISG (``Lazy``), as are the writer and the syntax objects."""

@@ -17,10 +17,12 @@ from typing import TYPE_CHECKING, Callable, Iterator
 
 from postproc.comments import CommentSyntax
 from postproc.cycle_words import CycleWords
+from postproc.arc_end import SPIRAL, ArcEndRule
 from postproc.dialect import Dialect, Lazy, Reader, ResolvedCycle
 from postproc.hookspecs import hookimpl
 from postproc.rs274.order_of_execution import stops_before_motion
 from postproc.setup.machine_setup import MachineSetup
+from postproc.state import MM_PER_INCH
 from postproc.syntax import Pipeline
 from postproc.output.writer_base import Writer
 from postproc.xmlio import XFactory
@@ -72,6 +74,18 @@ class Siemens(Dialect):
     """``CYCLE84`` is rigid by itself: Fanuc's ``M29`` before a tap cycle is left out (``cycle_writing``)."""
     CYCLE_SEMANTICS = "fanuc"
     """The cycles read move by Fanuc's rules (the reading pipeline's ``CannedCycleResolveSyntax("fanuc")``)."""
+    ARC_END = ArcEndRule(metric=0.01, inch=0.01 / MM_PER_INCH, relative=0.001, runs=SPIRAL)
+    """Alarm 14040 (error in end point of circle) when the start and end radii differ by more than MD 21000
+    ``CIRCLE_ERROR_CONST`` for small radii, or by more than the radius times MD 21010 ``CIRCLE_ERROR_FACTOR``
+    for large ones, i.e. by more than the larger of the two [K: SINUMERIK 840D sl diagnostics manual, alarm
+    14040]. The machine data are in mm whatever the program's units; their values 0.01 mm and 0.001 are the
+    defaults as remembered, not confirmed from a machine data list [?]. The same alarm text says an accepted
+    circle turns about a new centre on the chord's perpendicular bisector at the start radius (``START_RADIUS``)
+    [K]; that is not applied yet: near half a turn such a centre moves far for a small difference (0.26 mm
+    for the 0.0001 in a four-decimal inch arc carries, tests/corpus/linuxcnc/inside_corners_trimmed.ngc to
+    SINUMERIK), so the writer would first have to write arcs exact enough for it, and the alarm's second
+    check (the centre's direction within sqrt(0.001) rad) would have to be modelled too. Until then the
+    simulation draws the spiral through the programmed centre [?]."""
 
     PROGRAM_NUMBERS = True
     """``%_N_NAME_MPF`` names the main program."""

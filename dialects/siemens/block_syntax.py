@@ -24,6 +24,7 @@ from postproc.isg_family.taps import MODES, read_tap_stroke
 from postproc.isg_family.tool_data import read_tool_data
 from postproc.rs274.block_syntax import WordBlockSyntax, col_of_word
 from postproc.rs274.codes import CodeTable, g_key
+from postproc.state import PLANE_AXES
 
 from . import frame_suppression, helix
 from .arcs import CIP_KEY, SiemensArc, SiemensCip, arc_words, cip_words
@@ -42,6 +43,24 @@ _MOTION = frozenset(("", "1", "2", "3", "33", "331", "332"))
 """Group-1 codes (G0 ... G3, G33, G331, G332; ``lstrip("0")`` of G0 is empty) that end ``CIP``."""
 GEOMETRY_KEY = "siemens_geometry_units"
 """``ctx.state.extra`` key: True while G70/G71 (lengths only) is the units code in force."""
+
+
+def _centre_in_plane(block: Block, ctx: Context) -> None:
+    """An arc's centre offset along the axis normal to its plane (``K`` in G17: ``G2 X0 Y0 Z10 I0 J-25 K5``)
+    is a component of the centre point, which SINUMERIK takes "in Cartesian coordinates" beside I and J
+    [V: SINUMERIK ONE NC programming manual 12/2019 6FC5398-2EP40-0BA0, 2.9.7 "Helical interpolation":
+    ``G2/G3 X... Y... Z... I... J... K... TURN=``, "I J K: circle center point in Cartesian coordinates"].
+    The circle turns in the plane about the centre's projection and the normal axis moves linearly to its end
+    point [V: same, "a vertical linear motion is superimposed"; 2.9.6: start and end apart along the normal
+    make a helix], so that component moves nothing: it leaves the neutral arc, whose centre lies in the plane."""
+    motion = block.sections.get("Motion")
+    if not isinstance(motion, Motion) or motion.mode not in ("cw", "ccw") or not motion.center:
+        return
+    plane = block.sections.get("Plane")
+    name = getattr(plane, "plane", None) or ctx.state.plane
+    normal = PLANE_AXES[name][2]
+    if normal in motion.center:
+        motion.center = {a: v for a, v in motion.center.items() if a != normal}
 
 
 class SiemensBlockSyntax(WordBlockSyntax):
@@ -94,6 +113,7 @@ class SiemensBlockSyntax(WordBlockSyntax):
             ctx.state.extra.pop(DIS1_KEY, None)
             ctx.state.extra.pop(TAP_KEY, None)
         super().build(block, ctx)
+        _centre_in_plane(block, ctx)
         if isinstance(turn, SiemensTurn) and start is not None:
             helix.after(block, ctx, turn, start)
 

@@ -25,7 +25,12 @@ Read into neutral sections:
   ``LOOP``/``ENDLOOP`` (liufang-robot SPEC; Job planning p.107 [K]); ``GOTOF``/``GOTOB``/``GOTO``/``GOTOC``
   to a label or a block number, alone or after ``IF cond``. A label must be unique in its file and a
   ``GOTOF``/``GOTOB`` target must lie in its direction (checked when the file ends): the neutral jump
-  searches forward, then from the start, which is then each of them exactly.
+  searches forward, then from the start, which is then each of them exactly. The block number may be
+  written bare (``GOTOF 90``): the jump destination is "a main block or subblock number (e.g.: 200, N300)"
+  [K: SINUMERIK 840D sl Programming Manual Fundamentals, "Program jumps to jump markers"; main blocks are
+  numbered ``:200``, so the bare form names one; wording recalled, not re-read here]. ``GOTOC`` jumps as
+  ``GOTO`` but suppresses alarm 14080 (jump destination not found): a missing target goes on with the
+  next block [K: same section] (the neutral jump's ``fallthrough``).
 
 Subprograms: ``NAME`` / ``NAME P3`` alone in a block calls ``NAME.SPF`` (3 times), ``NAME(1, R2)`` with
 arguments; ``PROC NAME`` or ``PROC NAME(REAL A, INT B)`` (parameters by value) or an ``_SPF`` header makes the
@@ -329,12 +334,14 @@ class _State(CallReading):
         target = code[at:stop]
         if not target:
             raise self.error(line, at + 1, f"{word} needs a label or a block number")
-        if target[:1] in "Nn" and target[1:].isdigit():
-            key = f"N{int(target[1:])}"
-            section: Section = Goto(Num(float(int(target[1:]))), cond)
+        fallthrough = word == "GOTOC"  # alarm 14080 suppressed: a missing target goes on with the next block
+        digits = target[1:] if target[:1] in "Nn" else target
+        if digits.isdigit():  # N300 or a bare 200: a block number (main block ``:200`` or ``N200``) [K]
+            key = f"N{int(digits)}"
+            section: Section = Goto(Num(float(int(digits))), cond, fallthrough)
         elif target[:1] in _NAME_START:
             key = target.lower()
-            section = GotoLabel(key, cond)
+            section = GotoLabel(key, cond, fallthrough)
         else:
             raise self.error(line, at + 1, f"{word} needs a label or a block number, not {target!r}")
         self.jumps.append(_Jump(word, key, line, at + 1))
@@ -579,6 +586,8 @@ class _State(CallReading):
             if len(lines) > 1:
                 errors.append(self.error(jump.line, jump.col, f"{jump.word} {shown}: the target is on more than "
                                                               f"one line ({', '.join(map(str, lines))})"))
+            elif not lines and jump.word == "GOTOC":
+                continue  # GOTOC: the control suppresses alarm 14080 and goes on with the next block
             elif not lines:
                 errors.append(self.error(jump.line, jump.col, f"{jump.word} {shown}: no such target in this file"))
             elif jump.word == "GOTOF" and lines[0] <= jump.line:

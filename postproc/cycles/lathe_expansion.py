@@ -84,7 +84,8 @@ def profile_segments(blocks: Sequence[Block], start: tuple[float, float], ctx: C
             if isinstance(radius, Expr):
                 raise ProgramError(f"{code}: a computed word in the profile cannot be expanded", ctx.at(block))
             try:
-                centre = arc_centre((z, x), (z1, x1), ("Z", "X"), radius, offsets, motion.mode == "cw")
+                centre = arc_centre((z, x), (z1, x1), ("Z", "X"), radius, offsets, motion.mode == "cw",
+                                    ctx.arc_end, ctx.state.units == "inch")
             except ArcError as err:
                 raise ProgramError(f"{code}: the profile arc at line {block.line}: {err.message}", ctx.at(block)) from None
             if centre is None:

@@ -5,7 +5,9 @@ steps to ask a target. A build of a grbl-family controller chooses its features 
 
 from __future__ import annotations
 
+from postproc.arc_end import SPIRAL, ArcEndRule
 from postproc.dialect import Dialect
+from postproc.state import MM_PER_INCH
 from postproc.setup.machine_setup import MachineSetup
 
 
@@ -17,6 +19,14 @@ class GrblFamily(Dialect):
     a word keeps ``gc_state.position`` (machine), an absolute word adds the offset, an incremental one adds
     to the machine position. [K] grblHAL ``gcode.c``: the same (``gc_get_block_offset`` adds the length to
     absolute words only)."""
+
+    ARC_END = ArcEndRule(metric=0.005, inch=0.005 / MM_PER_INCH, relative=0.001, ceiling=100.0, of_start=True,
+                         runs=SPIRAL)
+    """[V] grbl 1.1 ``gcode.c`` (I/J/K already converted to mm): error 33 (invalid target) when the end radius
+    differs from the start radius by more than 0.005 mm and either more than 0.5 mm or more than 0.001 of
+    the start radius; inch programs are judged in mm. [K] grblHAL ``gcode.c``: the same check. grbl then runs
+    the start radius about the programmed centre and a last segment to the end point (``mc_arc``) [V]; the
+    simulation draws the spiral through the same end points, at most the accepted difference away [?]."""
 
     @classmethod
     def tool_table(cls, setup: MachineSetup) -> bool:

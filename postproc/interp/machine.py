@@ -183,6 +183,9 @@ class Interpreter(RunState):
                 return
             number = self._integer(control.target, "the jump target")
             target = program.find_sequence(number, pos)
+            if target is None and control.fallthrough:
+                frame.pc += 1
+                return
             if target is None:
                 raise ProgramError(self._missing_sequence(program, number, source_text(block)))
             self._within(frame, target, block)
@@ -196,6 +199,9 @@ class Interpreter(RunState):
                 frame.pc += 1
                 return
             found = program.find_label(control.label, pos)
+            if found is None and control.fallthrough:
+                frame.pc += 1
+                return
             if found is None:
                 raise ProgramError(f"'{source_text(block)}': no block labelled {control.label} in {program.file}")
             self._within(frame, found, block)

@@ -29,6 +29,7 @@ import math
 from dataclasses import dataclass
 from typing import Iterator
 
+from ..arc_end import SPIRAL
 from ..context import Context
 from ..dialect import Dialect
 from ..errors import PostprocError, ProgramError, UnsupportedError, UsageError
@@ -40,6 +41,8 @@ from ..state import MM_PER_INCH, PLANE_AXES, ModalState, changes_nothing
 from .arc_geometry import Arc, chord_points, r_centre_error, r_pieces, signed_radius, split
 
 FORMS = ("lines", "ijk", "r")
+SETTLE = "settle"
+"""Not a user's form: ``settle_arc_ends``'s pass (an arc whose end the two controllers judge or run apart)."""
 MIN_TOLERANCE_MM = 1e-4
 """Finest chord tolerance accepted: below it the written numbers' rounding (``EXACT``) is no longer small."""
 R_FORM_TOLERANCE_MM = 0.0005
@@ -77,6 +80,17 @@ def parse_arc_option(text: str) -> ArcOption:
     raise UsageError(f"--arcs takes lines:TOL, ijk or r, got {text!r}")
 
 
+def settle_arc_ends(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """The lowered program with each I/J/K arc written about the centre the source's controller turns it
+    about where that controller moves the programmed one (``postproc.arc_end.START_RADIUS``): the target's
+    controller then runs a circle through both ends, the source's path exactly. A pass over the program only
+    for such a source; a spiral source whose arc the target's controller would refuse is refused where it is
+    read (``postproc.syntaxes.modal_state``, ``TARGET_ARC_END``)."""
+    if ctx.arc_end.runs == SPIRAL:
+        return blocks
+    return rewrite_arcs(blocks, ctx, ArcOption(SETTLE), target)
+
+
 def rewrite_arcs(blocks: Iterator[Block], ctx: Context, option: ArcOption, target: type[Dialect]) -> Iterator[Block]:
     """The program lowered for ``target`` with its arcs rewritten as ``option`` asks (see the module docstring)."""
     rewriter = _Rewriter(ctx, option, target)
@@ -100,6 +114,7 @@ class _Rewriter:
     def __init__(self, ctx: Context, option: ArcOption, target: type[Dialect]) -> None:
         self.ctx = ctx
         self.option = option
+        self.target = target
         self.diameter = ctx.diameter and "lathe" in target.MACHINE_TYPES and target.DIAMETER_PROGRAMMING
         """X words are diameters in the lowered program (a target that programs radii got them halved:
         ``postproc.cycles.lathe_lowering``)."""
@@ -213,6 +228,8 @@ class _Rewriter:
     def _arc(self, block: Block, motion: Motion, incremental: bool, machine: bool) -> list[Motion] | None:
         """The motions that replace the arc, or None when it stays as it is (position tracked)."""
         form = self.option.form
+        if form == SETTLE:
+            return self._settle(motion, incremental, machine)
         if form == "ijk" and motion.radius is None or form == "r" and motion.radius is not None:
             self._track(motion, incremental, machine)
             return None
@@ -249,6 +266,31 @@ class _Rewriter:
             motions = replaced
         geometry.finish()
         return motions
+
+    def _settle(self, motion: Motion, incremental: bool, machine: bool) -> list[Motion] | None:
+        """An I/J/K arc as the target's controller must be given it to run the source controller's path
+        (``settle_arc_ends``): with the centre the source turns about where that is not the programmed one
+        (exact: the written arc is then a circle through both ends); else left as it is."""
+        if motion.radius is not None or machine or not motion.center or self.state.extra.get("polar") or any(
+                isinstance(v, Expr) for v in (*motion.center.values(), *motion.axes.values())):
+            self._track(motion, incremental, machine)
+            return None
+        a1, a2, _ = PLANE_AXES[self.state.plane]
+        try:
+            geometry = _Geometry(self, motion, incremental, (a1, a2))
+        except ProgramError:  # the start is not known here: the arc is judged when the program runs
+            self._track(motion, incremental, machine)
+            return None
+        arc = geometry.arc()
+        offsets = {a: float(v) for a, v in motion.center.items()}  # type: ignore[arg-type]  # numbers, checked above
+        programmed = (arc.start[0] + offsets.get(a1, 0.0), arc.start[1] + offsets.get(a2, 0.0))  # I: a radius
+        if math.hypot(arc.centre[0] - programmed[0], arc.centre[1] - programmed[1]) > geometry.quantum:
+            motions = [geometry.piece(motion.mode or "cw", arc.end, {a: e for a, (_, e) in arc.along.items()},
+                                      (arc.centre[0] - arc.start[0], arc.centre[1] - arc.start[1]), None)]
+            geometry.finish()
+            return motions
+        geometry.finish()
+        return None
 
     def _r_form(self, block: Block, arc: Arc, geometry: "_Geometry", mode: str) -> list[Motion] | None:
         mm = self._mm()
@@ -372,7 +414,8 @@ class _Geometry:
         radius = None if m.radius is None else float(m.radius) * mm  # type: ignore[arg-type]  # checked above
         try:
             c = arc_centre((s[0] * mm, s[1] * mm), (e[0] * mm, e[1] * mm), self.plane, radius,
-                           {a: v * mm for a, v in offsets.items()}, m.mode == "cw")
+                           {a: v * mm for a, v in offsets.items()}, m.mode == "cw", self.owner.ctx.arc_end,
+                           mm != 1.0, mm)
         except ArcError as err:
             raise ProgramError(err.message) from None
         if c is None:

@@ -675,7 +675,8 @@ class _Resolver:
                 raise UnsupportedError("a computed arc under cutter compensation cannot be resolved")
             radius = None if motion.radius is None else motion.radius * self.scale
             try:
-                c = arc_centre(start, (end_1, end_2), (a1, a2), radius, offsets, kind == "cw")
+                c = arc_centre(start, (end_1, end_2), (a1, a2), radius, offsets, kind == "cw",
+                               self.ctx.arc_end, self.scale != 1.0, self.scale)
             except ArcError as err:
                 raise ProgramError(err.message) from None
             if c is None:

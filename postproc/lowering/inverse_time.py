@@ -174,7 +174,8 @@ def _centre(ctx: Context, block: Block, motion: Motion, start: dict[str, float],
         raise _error(ctx, block, "an inverse-time arc with a computed radius")
     try:
         return arc_centre((start[a1], start[a2]), (end[a1], end[a2]), (a1, a2),
-                          None if radius is None else float(radius) * scale, offsets, motion.mode == "cw")
+                          None if radius is None else float(radius) * scale, offsets, motion.mode == "cw",
+                          ctx.arc_end, scale != 1.0, scale)
     except ArcError as err:
         raise UnsupportedError(err.message, ctx.at(block)) from None
 

@@ -359,7 +359,8 @@ class WordBlockSyntax(Syntax):
             elif kind == "length":
                 if arg != "cancel":
                     if "H" not in values:
-                        raise ProgramError(f"G{num} needs an offset register H", ctx.at(block, col_of_word(block, "G", num)))
+                        self._bare_length(block, ctx, num)
+                    ctx.run_data[_LENGTH_REGISTER] = True
                     used.add("H")
                 block.add(ToolLengthOffset(arg, values.get("H") if arg != "cancel" else None))
             elif kind == "dwell":
@@ -429,6 +430,7 @@ class WordBlockSyntax(Syntax):
         the length offset cancelled [K: Fanuc 0i-F operator's manual, offset number 0; Haas mill operator's
         manual, H00]; another register there takes effect only with a later G43/G44 and is refused."""
         register = values["H"]
+        ctx.run_data[_LENGTH_REGISTER] = True
         mode = ctx.state.length
         if mode != "cancel":
             block.add(ToolLengthOffset(mode, register))
@@ -440,6 +442,19 @@ class WordBlockSyntax(Syntax):
                                f"{self.spell('length', 'negative')} (write it in their block)",
                                ctx.at(block, ctx.column_of(block, "H")))
         used.add("H")
+
+    def _bare_length(self, block: Block, ctx: Context, num: str) -> None:
+        """G43/G44 without H takes the register in force, the H last programmed (modal) [K: Fanuc 0i-F
+        operator's manual, tool length offset]; at a program's start the machine's (the last program's H, or
+        H0 after a reset that clears it: parameter 5003#6 LVK [K]). Haas taken as Fanuc; whether its Setting
+        15 (H & T code agreement) gives the spindle tool's register is not confirmed [?]. Not carried over
+        here (after a jump the last H in the text need not be the last run): refused, saying which case."""
+        at = ctx.at(block, col_of_word(block, "G", num))
+        if ctx.run_data.get(_LENGTH_REGISTER):
+            raise ProgramError(f"G{num} without an offset register H: it takes the H last programmed, which "
+                               f"this reader does not carry over (write the H in this block)", at)
+        raise ProgramError(f"G{num} without an offset register H, and no H programmed before it: the register "
+                           f"in force is the machine's, known only to it (program G{num} H..)", at)
 
     def cycle_data_letters(self, ctx: Context) -> str:
         """The addresses a hole cycle takes besides the axes and F (the family's R, Q, P and the repeat
@@ -542,6 +557,9 @@ DWELL_SECONDS_HINT: Final = (": a dwell P counts milliseconds; if it means secon
 CUTTER_H_HINT: Final = ("; if the controller takes it from H (Fanuc 0M), set <Controller cutterRegisterH=\"true\"/> "
                         "(or variant=\"fanuc-0m\") in the machine set-up")
 """What an error about ``G42 H19`` adds: the set-up option under which it reads."""
+
+
+_LENGTH_REGISTER: Final = "rs274.length_register"  # ctx.run_data: an H has been programmed (``_bare_length``)
 
 
 def _dwells(codes: dict[str, tuple[str, str, object, str]], cycle_block: bool) -> bool:

@@ -517,7 +517,8 @@ class Moves:
             raise ProgramError(UNEVALUATED, self._at(block, "R"))
         radius = None if m.radius is None else m.radius * scale
         try:
-            c = arc_centre(s, e, (a1, a2), radius, {a: v * scale for a, v in offsets.items()}, clockwise)
+            c = arc_centre(s, e, (a1, a2), radius, {a: v * scale for a, v in offsets.items()}, clockwise,
+                           self.ctx.arc_end, scale != 1.0, scale)
         except ArcError as err:
             raise err.located(self._at(block, err.letter)) from None
         if self.travel is not None:

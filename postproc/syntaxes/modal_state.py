@@ -18,7 +18,8 @@ from typing import Final, NoReturn
 
 from postproc.block_rules import ZERO_FEED, ArcError, arc_centre, check_values, needs_feed, per_rev_problem
 from postproc.control import ASSIGN, CONTROL
-from postproc.errors import ProgramError
+from postproc.arc_end import TARGET_ARC_END, ArcEndRule
+from postproc.errors import ProgramError, UnsupportedError
 from postproc.event_order import MOVING, after_motion
 from postproc.geometry import ARC_TOLERANCE_MM, PLACES
 from postproc.expr import Expr
@@ -224,8 +225,15 @@ def _check_arc(block: Block, ctx: Context, motion: Motion) -> None:
         offsets = {a: v * scale for a, v in center.items() if a == a1 or a == a2} if center else {}
         c1, c2 = s1 + offsets.get(a1, 0.0), s2 + offsets.get(a2, 0.0)
         r0 = hypot(s1 - c1, s2 - c2)
-        if abs(r0 - hypot(e1 - c1, e2 - c2)) <= ARC_TOLERANCE_MM and r0 >= _SMALLEST:
-            return  # the common arc: its end on its circle, its centre away from its start
+        rule = ctx.arc_end
+        always = rule.inch * MM_PER_INCH if scale != 1.0 else rule.metric  # accepted whatever the radius
+        r1 = hypot(e1 - c1, e2 - c2)
+        if abs(r0 - r1) <= always and r0 >= _SMALLEST:
+            target = ctx.run_data.get(TARGET_ARC_END)
+            if target is None:
+                return  # the common arc: its end on its circle, its centre away from its start
+            _target_accepts(block, ctx, motion, target, r0 / scale, r1 / scale, scale != 1.0)
+            return
     else:
         radius *= scale
         offsets = {}
@@ -233,9 +241,31 @@ def _check_arc(block: Block, ctx: Context, motion: Motion) -> None:
         if half >= _SMALLEST and abs(radius) - half >= -ARC_TOLERANCE_MM:
             return  # the common R arc: a chord its radius reaches
     try:  # the rare arc: arc_centre says what is wrong with it (or that it is a zero-length no-op)
-        arc_centre((s1, s2), (e1, e2), (a1, a2), radius, offsets, motion.mode == "cw")
+        centre = arc_centre((s1, s2), (e1, e2), (a1, a2), radius, offsets, motion.mode == "cw", ctx.arc_end,
+                            scale != 1.0, scale)
     except ArcError as err:
         _refuse(block, ctx, motion, err)
+    target = ctx.run_data.get(TARGET_ARC_END)
+    if target is not None and radius is None and centre is not None:
+        c1, c2 = s1 + offsets.get(a1, 0.0), s2 + offsets.get(a2, 0.0)
+        _target_accepts(block, ctx, motion, target, hypot(s1 - c1, s2 - c2) / scale, hypot(e1 - c1, e2 - c2) / scale,
+                        scale != 1.0)
+
+
+def _target_accepts(block: Block, ctx: Context, motion: Motion, target: tuple[str, ArcEndRule], r0: float,
+                    r1: float, inch: bool) -> None:
+    """Refuse an arc (radii in program units) the translation's target would refuse: the source's controller
+    runs it as a spiral, which no arc of the target's reproduces (``postproc.arc_end.TARGET_ARC_END``)."""
+    name, rule = target
+    if rule.allows(r0, r1, inch):
+        return
+    unit = "in" if inch else "mm"
+    letter = next((_CENTRE_LETTERS[a] for a in motion.center if a in _CENTRE_LETTERS), "G") if motion.center else "G"
+    raise UnsupportedError(
+        f"the {name} controller refuses this arc: its end radius differs from its start radius by "
+        f"{abs(r0 - r1):.6g} {unit}, and it accepts {rule.limit(r0, r1, inch):.6g} {unit} here; the source's "
+        f"controller runs it as a spiral, which no arc of the target reproduces (translate with --arcs lines:TOL)",
+        ctx.at(block, ctx.column_of(block, letter)))
 
 
 _SMALLEST: Final = 10.0 ** -PLACES

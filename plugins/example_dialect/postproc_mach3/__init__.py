@@ -23,6 +23,7 @@ from postproc.dialect import Dialect, Lazy, Reader
 from postproc.expr import Expr
 from postproc.hookspecs import hookimpl
 from postproc.ir import Block, Motion
+from postproc.rs274.arc_ends import RS274NGC_ARC_END
 from postproc.rs274.codes import CodeTable
 from postproc.rs274.cycle_words import rs274_cycle_words
 from postproc.rs274.order_of_execution import stops_after_motion
@@ -121,6 +122,11 @@ class Mach3(Dialect):
     peck cycle from a control with another clearance (LinuxCNC's fixed 0.254 mm) is expanded."""
     CYCLE_SEMANTICS = "rs274"
     """The cycles move by the RS274/NGC rules (``postproc.cycles.semantics``)."""
+    ARC_END = RS274NGC_ARC_END
+    """Taken as LinuxCNC's interpreter's rule [?]: Mach3 descends from the NIST RS274/NGC interpreter, whose
+    own limit was 0.0005 in / 0.005 mm absolute [V: rs274ngc.hh TOLERANCE_INCH/MM as imported into EMC2 in
+    2004], but Mach3's own limit is not published; Fusion 360's Mach3 post writes inch arcs to three
+    decimals (0.001 in of rounding), which that old limit would refuse."""
     COMMENTS = CommentSyntax(parens=True, nested=False, semicolon=True)
     """``( )`` and ``;`` comments, as RS274/NGC [K: Mach3 G-code manual]; a template's values stand only
     inside them (``postproc.output.template_values``)."""

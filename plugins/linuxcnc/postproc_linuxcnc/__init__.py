@@ -17,6 +17,7 @@ from typing import Callable, ClassVar, Iterator
 from postproc.compensation.rules import ARC_CORNERS
 from postproc.dialect import Dialect, Lazy, Reader
 from postproc.rs274.order_of_execution import stops_after_motion
+from postproc.rs274.arc_ends import RS274NGC_ARC_END
 from postproc.lowering.structured_jumps import nest_forward_jumps
 from postproc.errors import Diagnostics
 from postproc.hookspecs import hookimpl
@@ -80,6 +81,8 @@ class Linuxcnc(Dialect):
     ``G91 Z-1`` moves by -1; after ``G49``, ``X3`` again keeps the machine Z]."""
     CUTTER_RULES = ARC_CORNERS
     """rs274's cutter radius compensation: tangent entry, arcs around outside corners."""
+    ARC_END = RS274NGC_ARC_END
+    """The interpreter's arc end tolerance, inch and mm, absolute and relative (``postproc.rs274.arc_ends``)."""
     PROGRAMS = True
     """Numbered and named parameters, expressions, o-word subprograms and control flow."""
     STOPS_BEFORE_MOTION = True
