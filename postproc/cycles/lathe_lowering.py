@@ -20,6 +20,9 @@ and tip columns of the offset the T code selected], LinuxCNC's G41 without D the
 which is not the offset's (``T0102``). A target that is no lathe control gets that register named too: its
 compensation is resolved into moves with the offset's radius and tip (``lowering.cutter_compensation``).
 
+A cycle whose profile turns nose compensation on in its first block and off in its last (the Haas form,
+``NOSE_PROFILE``) is expanded for every other controller: the roughing to the nose's path and the finishing under compensation
+are the source controller's own (another controller's rules for that form are not known).
 A lathe cycle under tool nose radius compensation is refused where its compensated moves are not known:
 towards another controller (Fanuc's type I/II rules for G71/G72 under compensation are not modelled here;
 LinuxCNC refuses G71/G72 with compensation on [V: ``interp_g7x.cc``]), and in the simulation of a
@@ -42,6 +45,11 @@ from postproc.ir import (
 from postproc.lathe_sections import CoordinateSet, LatheCycle
 
 from .lathe_offsets import LatheOffsets
+
+NOSE_PROFILE = "nose_profile"
+"""``LatheCycle.params`` key set by the reader (``postproc.rs274.lathe_cycles``) on a cycle whose profile turns
+tool nose radius compensation on in its first block and off in its last (the Haas form): its moves are
+the source controller's, so it is written expanded for every target, its profile blocks as comments."""
 
 def lathe_tool(number: int) -> int:
     """The tool of a lathe T word: T0101 (tool and offset, four digits) is tool 1; T1 to T99 name the tool."""
@@ -90,12 +98,19 @@ def _lower(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iter
     turning = False
     """The spindle turns before the block (a turret index must not become a tool change then)."""
     nose = _NoseCompensation(ctx, target, turret and ctx.lathe_turret)
+    own_nose: set[int] = set()
+    """Lines of the roughing cycles whose profile turns nose compensation on and off (``NOSE_PROFILE``),
+    expanded."""
+    same_controller = target.NAME == ctx.dialect
+    """Only the source's own controller runs such a cycle natively (the same set-up writes it)."""
+    skip_departure = False
+    """A native G70 over such a profile was written: the block the reader made for its departure goes."""
     for block in blocks:
         sections = block.sections
         nose.block(block)
         profile = sections.get("InProfile")
         if profile is not None:
-            if native:
+            if native and getattr(profile, "cycle", None) not in own_nose:
                 yield block
                 continue
             source = (block.text or " ".join(a + n for a, n in block.words)).strip()
@@ -104,9 +119,20 @@ def _lower(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iter
             yield block
             continue
         cycle = sections.get("LatheCycle")
+        compound = sections.get("CompoundMotion")
+        if skip_departure and cycle is None and isinstance(compound, CompoundMotion) and compound.term == "turn_finish":
+            skip_departure = False  # the native G70 makes its departure itself
+            continue
         if isinstance(cycle, LatheCycle):
-            if cycle.kind in native:
+            flagged = bool(cycle.params.get(NOSE_PROFILE))
+            keep = cycle.kind in native and (not flagged or same_controller)
+            if flagged and not keep:
+                own_nose.add(block.line)
+            if keep:
                 sections.pop("CompoundMotion", None)
+                if flagged and cycle.kind == "turn_finish":
+                    sections.pop("CutterCompensation", None)  # the reader's: the profile's own blocks say it
+                    skip_departure = True
             else:
                 source = (block.text or " ".join(a + n for a, n in block.words)).strip()
                 del sections["LatheCycle"]
