@@ -5,8 +5,7 @@ M24 before G76.
 Expected values are derived by hand below, not by the code under test: the nose centre one radius
 beside each block (right of the motion for G42, looking along it with Z across and X up), cut short at
 an inside corner, rolled on an arc about an outside corner; the imaginary tip the radius away from the
-centre in the direction the Haas manual gives each tip number ("Imaginary Tool Tip and Direction":
-1 X+ Z+, 2 X+ Z-, 3 X- Z-, 4 X- Z+, 5 Z+, 6 X+, 7 Z-, 8 X-, 0 and 9 the centre). The end-to-end test
+centre in the direction the Haas manual gives each tip number (``tests/support/nose_tips.py``). The end-to-end test
 compares the roughing of a compensated profile with the roughing of the same cycle over the tip path
 written out by hand, without compensation.
 """
@@ -27,6 +26,7 @@ from postproc.ir import CompoundMotion, CutterCompensation, Motion
 from postproc.lathe_sections import LatheCycle
 from postproc.setup.machine_setup import load_setup
 from postproc.simulate.verify import verify_lines
+from tests.support.nose_tips import direction
 from tests.support.rs274 import available
 from tests.test_lathe_rs274 import INCH_TOLERANCE, difference, ours, theirs
 
@@ -43,11 +43,6 @@ def _haas(tmp_path: Path):  # type: ignore[no-untyped-def]
     path = tmp_path / "haas.xml"
     path.write_text(HAAS_XML.replace("</MachineSetup>", TOOLS))
     return load_setup(str(path))
-
-
-HAND_TIPS = {1: (1, 1), 2: (1, -1), 3: (-1, -1), 4: (-1, 1), 5: (0, 1), 6: (1, 0), 7: (0, -1), 8: (-1, 0),
-             0: (0, 0), 9: (0, 0)}
-"""The manual's list as (X sign, Z sign) from the nose centre to the imaginary tip."""
 
 
 def _line(x0: float, z0: float, x1: float, z1: float) -> Seg:
@@ -71,11 +66,11 @@ def test_each_tip_direction_moves_the_nose_centre_path(tip: int) -> None:
     runs at X10.8 (radius) to Z-19.2, where the offset blocks meet, then at Z-19.2 up to X15; the tip is
     the centre moved 0.8 in the tip's direction."""
     segs = [_line(10.0, 0.0, 10.0, -20.0), _line(10.0, -20.0, 15.0, -20.0)]
-    sx, sz = HAND_TIPS[tip]
+    sz, sx = direction(tip)  # the Haas manual's words (tests/support/nose_tips.py)
     dx, dz = 0.8 * sx, 0.8 * sz
     centre = [(10.8, 0.0, 10.8, -19.2), (10.8, -19.2, 15.0, -19.2)]
     expected = [tuple(round(v, 9) for v in (a + dx, b + dz, c + dx, d + dz)) for a, b, c, d in centre]
-    assert _points(nose_path(segs, "right", 0.8, (sz, sx), "G71")) == expected
+    assert _points(nose_path(segs, "right", 0.8, (int(sz), int(sx)), "G71")) == expected
 
 
 def test_g41_on_a_bore_runs_below_it_and_an_outside_corner_rolls_on_an_arc() -> None:
