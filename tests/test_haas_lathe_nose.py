@@ -235,3 +235,17 @@ def test_haas_m24_turns_the_g76_pull_out_off_and_m23_back_on() -> None:
     assert any(m.mode == "thread" for m in moves) and pulls == []  # every pass along Z only: a square exit
     with pytest.raises(ErrorList, match="pulls out beyond the start point's X"):
         read_program(io.StringIO(head + "M24\nM23\n" + g76 + "M30\n"), file="in.nc", dialect="fanuc", setup=haas)
+
+
+def test_haas_m24_needs_no_equivalent_elsewhere_the_cycle_carries_it() -> None:
+    """Towards LinuxCNC the G76 after M24 is written without its pull-out, and M24 stays as a comment (another
+    family has no such code, and needs none); back to Haas it stays M24."""
+    haas = load_setup(str(ROOT / "examples" / "setups" / "haas_st10_lathe.xml"))
+    program = "G00 G18 G20 G99\nT0303\nG97 S1000 M03\nG00 X1.5 Z0.1\nG00 X0.6\nM24\n" \
+              "G76 X0.4069 Z-1.57 K0.043075 D0.01076875 F0.07692308\nM05\nM30\n"
+    ngc = _write(program, "linuxcnc", haas)
+    assert "(M24: thread pull-out chamfer off, in the threading cycles' words)" in ngc.splitlines()
+    report = verify_lines(io.StringIO(program), io.StringIO(ngc), file_in="in.nc", file_out="out.ngc",
+                          source="fanuc", target="linuxcnc", setup=haas, tolerance=1e-5)  # G76's depths: 6 decimals
+    assert report.ok, report.summary()
+    assert _write(program, "fanuc", haas) == program

@@ -39,12 +39,16 @@ from postproc.dialect import Dialect
 from postproc.expr import Expr
 from postproc.errors import PostprocError, UnsupportedError
 from postproc.ir import (
-    Block, Comments, CompoundMotion, CutterCompensation, DistanceMode, FeedMode, Motion, Plane, SpindleControl, ToolChange,
-    ToolLengthOffset, ToolSelect,
+    Block, Comments, CompoundMotion, CutterCompensation, DistanceMode, FeedMode, MachineFunction, Motion, Plane,
+    SpindleControl, ToolChange, ToolLengthOffset, ToolSelect,
 )
 from postproc.lathe_sections import CoordinateSet, LatheCycle
 
 from .lathe_offsets import LatheOffsets
+
+THREAD_CHAMFER = "thread-chamfer"
+"""The action the reader gives a code that switches the threading cycles' pull-out chamfer (Haas M23/M24,
+``postproc.rs274.lathe_cycles``): towards another family it becomes a comment (``_chamfer_switch_noted``)."""
 
 NOSE_PROFILE = "nose_profile"
 """``LatheCycle.params`` key set by the reader (``postproc.rs274.lathe_cycles``) on a cycle whose profile turns
@@ -105,8 +109,12 @@ def _lower(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iter
     """Only the source's own controller runs such a cycle natively (the same set-up writes it)."""
     skip_departure = False
     """A native G70 over such a profile was written: the block the reader made for its departure goes."""
+    family = target.family()
     for block in blocks:
         sections = block.sections
+        function = sections.get("MachineFunction")
+        if isinstance(function, MachineFunction) and function.action == THREAD_CHAMFER and function.family != family:
+            _chamfer_switch_noted(block, function)
         nose.block(block)
         profile = sections.get("InProfile")
         if profile is not None:
@@ -213,6 +221,17 @@ class _NoseCompensation:
                 "controller compensates inside it is not modelled (Fanuc's type I/II rules), so its moves are not "
                 "known; cancel compensation before the cycle and turn it on for the finishing cycle",
                 self.ctx.at(block)))
+
+
+def _chamfer_switch_noted(block: Block, function: MachineFunction) -> None:
+    """A code that switches the threading cycles' pull-out chamfer on or off (Haas M23/M24) has no equivalent
+    in another family, and needs none: the cycles after it carry their chamfer in their own words
+    (``LatheCycle`` ``chamfer``), so it becomes a comment where it stood."""
+    del block.sections["MachineFunction"]
+    comments = block.sections.get("Comments")
+    texts = list(comments.texts) if isinstance(comments, Comments) else []
+    block.sections["Comments"] = Comments([*texts, f"{function.text}: {function.name}, in the threading cycles' words"])
+    block.changed()
 
 
 def _turret(block: Block, ctx: Context, turning: bool) -> bool:

@@ -26,7 +26,8 @@ from postproc.cycles.lathe_expansion import (expand, finishing_split, nose_shape
                                              to_sections)
 from postproc.errors import PostprocError, ProgramError
 from postproc.expr import Expr
-from postproc.ir import Block, CompoundMotion, CutterCompensation, CycleCall, Motion, Sequence
+from postproc.cycles.lathe_lowering import THREAD_CHAMFER
+from postproc.ir import Block, CompoundMotion, CutterCompensation, CycleCall, MachineFunction, Motion, Sequence
 from postproc.lathe_sections import InProfile, LatheCycle
 from postproc.syntax import Syntax
 
@@ -246,12 +247,16 @@ class LatheCycleSyntax(Syntax):
 def _thread_chamfer_switch(block: Block, ctx: Context) -> None:
     """Haas M24 turns the thread's angled pull-out off for the G76 cycles after it, M23 back on (Setting 95's
     chamfer size, the set-up's ``threadChamfer``) [K: Haas lathe operator's manual, M-codes: M23 "Angle
-    Out of Thread On", M24 "Angle Out of Thread Off"; the G92 single cycle, which the same codes switch on
-    Haas, is read without a chamfer here either way]."""
+    Out of Thread On", M24 "Angle Out of Thread Off"]. The code is declared with the action ``THREAD_CHAMFER``:
+    another family gets it as a comment, the cycles carrying their chamfer. (The G92 single cycle, which the
+    same codes switch on Haas, is read without a chamfer here either way.)"""
     function = block.sections.get("MachineFunction")
-    code = getattr(function, "code", None)
-    if code in ("M23", "M24"):
-        ctx.state.extra[CHAMFER_OFF_KEY] = code == "M24"
+    if isinstance(function, MachineFunction) and function.code in ("M23", "M24"):
+        off = function.code == "M24"
+        ctx.state.extra[CHAMFER_OFF_KEY] = off
+        block.sections["MachineFunction"] = MachineFunction(
+            function.family, function.code, function.text, THREAD_CHAMFER,
+            "thread pull-out chamfer off" if off else "thread pull-out chamfer on")
 
 
 def _restore(ctx: Context, saved: object) -> None:
