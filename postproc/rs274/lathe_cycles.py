@@ -169,7 +169,7 @@ class LatheCycleSyntax(Syntax):
         block.add(CutterCompensation(mode, register))
         block.add(CompoundMotion(cycle.kind, to_sections(head, start, ctx)))
         end = (head[-1].x, head[-1].z) if head else start
-        after = Block(block.line, block.text, "\n")
+        after = Block(block.line, None, "\n", list(block.words))  # its source, for the expansion's note
         after.add(CutterCompensation("off"))
         after.add(CompoundMotion(cycle.kind, to_sections(tail, end, ctx)))
         after.changed()
