@@ -45,7 +45,7 @@ def profile_segments(blocks: Sequence[Block], start: tuple[float, float], ctx: C
         if other and other[0] == "CutterCompensation":
             raise ProgramError(f"{code}: the profile block at line {block.line} turns tool nose radius compensation on "
                                "or off: this controller's rules for compensation inside the cycle are not in our "
-                               "sources (Fanuc T alarms on G40-G42 inside the profile [K]; the Haas form, on in "
+                               "sources (Fanuc T alarms on compensation inside the profile [K]; the Haas form, on in "
                                "the first block and off in the last, is read for a Haas set-up), so its moves are "
                                "not known; turn compensation on before the finishing cycle and off after it, "
                                "outside the profile", ctx.at(block))

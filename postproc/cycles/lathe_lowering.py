@@ -46,9 +46,10 @@ from postproc.lathe_sections import CoordinateSet, LatheCycle
 
 from .lathe_offsets import LatheOffsets
 
-THREAD_CHAMFER = "thread-chamfer"
-"""The action the reader gives a code that switches the threading cycles' pull-out chamfer (Haas M23/M24,
-``postproc.rs274.lathe_cycles``): towards another family it becomes a comment (``_chamfer_switch_noted``)."""
+THREAD_CHAMFER = ("thread-chamfer-on", "thread-chamfer-off")
+"""The actions of a code that switches the threading cycles' pull-out chamfer on or off (Haas M23/M24, the
+reader applies it: ``postproc.rs274.lathe_cycles``): towards another family it becomes a comment
+(``_chamfer_switch_noted``)."""
 
 NOSE_PROFILE = "nose_profile"
 """``LatheCycle.params`` key set by the reader (``postproc.rs274.lathe_cycles``) on a cycle whose profile turns
@@ -113,7 +114,7 @@ def _lower(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iter
     for block in blocks:
         sections = block.sections
         function = sections.get("MachineFunction")
-        if isinstance(function, MachineFunction) and function.action == THREAD_CHAMFER and function.family != family:
+        if isinstance(function, MachineFunction) and function.action in THREAD_CHAMFER and function.family != family:
             _chamfer_switch_noted(block, function)
         nose.block(block)
         profile = sections.get("InProfile")
@@ -230,7 +231,8 @@ def _chamfer_switch_noted(block: Block, function: MachineFunction) -> None:
     del block.sections["MachineFunction"]
     comments = block.sections.get("Comments")
     texts = list(comments.texts) if isinstance(comments, Comments) else []
-    block.sections["Comments"] = Comments([*texts, f"{function.text}: {function.name}, in the threading cycles' words"])
+    block.sections["Comments"] = Comments([*texts, f"{function.text}: {function.name or function.action}, in the "
+                                                   "threading cycles' words"])
     block.changed()
 
 

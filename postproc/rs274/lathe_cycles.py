@@ -39,7 +39,8 @@ if TYPE_CHECKING:
 PROFILES_KEY = "LatheCycleSyntax.profiles"
 """``ctx.state.extra`` key: (ns, nf) -> the profile segments a roughing cycle read (for a later G70)."""
 CHAMFER_OFF_KEY = "LatheCycleSyntax.chamfer_off"
-"""``ctx.state.extra`` key: True after a Haas M24 (no angled pull-out at a thread's end) until M23."""
+"""``ctx.state.extra`` key: True after a code declared ``thread-chamfer-off`` (no angled pull-out at a thread's
+end) until one declared ``thread-chamfer-on``."""
 NOSE_KEY = "LatheCycleSyntax.nose"
 """``ctx.state.extra`` key: (ns, nf) -> the nose compensation its first block turns on (mode, register)."""
 NOSE_PROFILE = "nose_profile"
@@ -62,9 +63,8 @@ class LatheCycleSyntax(Syntax):
     def process(self, blocks: Iterable[Block], ctx: Context) -> Iterator[Block]:
         report = ctx.diagnostics.error
         stream = iter(blocks)
-        haas = ctx.setup.controller.variant == "haas"
         for block in stream:
-            if haas:
+            if "MachineFunction" in block.sections:
                 _thread_chamfer_switch(block, ctx)
             call = block.sections.get("CycleCall")
             if not isinstance(call, CycleCall) or call.kind not in LatheCycle.CYCLE_KINDS:
@@ -98,7 +98,7 @@ class LatheCycleSyntax(Syntax):
         start = {"X": ctx.state.position.get("X"), "Z": ctx.state.position.get("Z")}
         cycle = read_cycle(kind, block, ctx, code, start)
         if kind == "thread_multi" and ctx.state.extra.get(CHAMFER_OFF_KEY):
-            cycle.params["chamfer"] = 0  # Haas M24: no angle out of the thread
+            cycle.params["chamfer"] = 0  # no angle out of the thread (Haas M24)
         del block.sections["CycleCall"]
         block.add(cycle)
         return cycle, code
@@ -245,18 +245,14 @@ class LatheCycleSyntax(Syntax):
 
 
 def _thread_chamfer_switch(block: Block, ctx: Context) -> None:
-    """Haas M24 turns the thread's angled pull-out off for the G76 cycles after it, M23 back on (Setting 95's
-    chamfer size, the set-up's ``threadChamfer``) [K: Haas lathe operator's manual, M-codes: M23 "Angle
-    Out of Thread On", M24 "Angle Out of Thread Off"]. The code is declared with the action ``THREAD_CHAMFER``:
-    another family gets it as a comment, the cycles carrying their chamfer. (The G92 single cycle, which the
-    same codes switch on Haas, is read without a chamfer here either way.)"""
+    """A code declared ``thread-chamfer-off`` turns the angled pull-out off for the multiple threading cycles
+    after it, ``thread-chamfer-on`` back on with the set-up's ``threadChamfer`` (Haas M24 and M23, the
+    Fanuc dialect's Haas lathe defaults; another family gets the code as a comment, the cycles carrying
+    their chamfer: ``postproc.cycles.lathe_lowering``). The single threading cycle, which the same codes
+    switch on Haas, is read without a chamfer either way."""
     function = block.sections.get("MachineFunction")
-    if isinstance(function, MachineFunction) and function.code in ("M23", "M24"):
-        off = function.code == "M24"
-        ctx.state.extra[CHAMFER_OFF_KEY] = off
-        block.sections["MachineFunction"] = MachineFunction(
-            function.family, function.code, function.text, THREAD_CHAMFER,
-            "thread pull-out chamfer off" if off else "thread pull-out chamfer on")
+    if isinstance(function, MachineFunction) and function.action in THREAD_CHAMFER:
+        ctx.state.extra[CHAMFER_OFF_KEY] = function.action == THREAD_CHAMFER[1]
 
 
 def _restore(ctx: Context, saved: object) -> None:

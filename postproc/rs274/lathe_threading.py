@@ -1,4 +1,4 @@
-"""The reading of a one-block ``G76 P Z I J K R Q H E L`` threading cycle that LinuxCNC and grblHAL share
+"""The reading of a one-block threading cycle ``P Z I J K R Q H E L`` (G76) that LinuxCNC and grblHAL share
 (their plugins' ``threading`` modules): the block's words taken as numbers, the spring passes, where the
 cycle starts, and its moves put on the block as a ``CompoundMotion``. Each controller's own rules (which
 words it needs, what it refuses, the moves it makes) stay in its plugin; this is the glue around them.
@@ -43,30 +43,31 @@ def thread_words(block: Block, motion: Motion, values: dict[str, Any], letters: 
     return words, axes
 
 
-def spring_passes(words: dict[str, float], ctx: Context, refuse: Refusal) -> int:
-    """H, the spring passes: a whole number, 0 or more, that leaves the cycle within ``<Limits movesPerBlock>``."""
+def spring_passes(words: dict[str, float], ctx: Context, refuse: Refusal, code: str) -> int:
+    """H, the spring passes: a whole number, 0 or more, that leaves the cycle within ``<Limits movesPerBlock>``.
+    ``code``: the cycle's code as the dialect spells it, for messages."""
     spring = words.get("H", 0.0)
     if spring != int(spring) or spring < 0:
-        raise refuse("G76 H must be a whole number of spring passes, 0 or more", "H")
+        raise refuse(f"{code} H must be a whole number of spring passes, 0 or more", "H")
     if spring >= ctx.setup.limits.moves_per_block:
-        raise refuse(f"G76 H{spring:g} makes more moves than <Limits movesPerBlock> "
+        raise refuse(f"{code} H{spring:g} makes more moves than <Limits movesPerBlock> "
                      f"({ctx.setup.limits.moves_per_block})", "H")
     return int(spring)
 
 
-def compound_angle(angle: float, refuse: Refusal) -> float:
+def compound_angle(angle: float, refuse: Refusal, code: str) -> float:
     """Q, the compound angle in degrees: within 90 of 0 (a steeper infeed is not modelled)."""
     if not -90.0 < angle < 90.0:
-        raise refuse(f"G76 Q{angle:g}: a compound angle of 90 degrees or more is not modelled", "Q")
+        raise refuse(f"{code} Q{angle:g}: a compound angle of 90 degrees or more is not modelled", "Q")
     return angle
 
 
-def thread_start(block: Block, ctx: Context, refuse: Refusal) -> tuple[tuple[float, float], float, bool]:
+def thread_start(block: Block, ctx: Context, refuse: Refusal, code: str) -> tuple[tuple[float, float], float, bool]:
     """Where the cycle starts as (radius, Z), the factor from a radius to the program's X (2 in diameter mode),
-    and whether its axis words are incremental (the block's own G90/G91, else the mode in force)."""
+    and whether its axis words are incremental (the block's own distance mode, else the mode in force)."""
     x0, z0 = ctx.state.position.get("X"), ctx.state.position.get("Z")
     if x0 is None or z0 is None:
-        raise refuse("G76: the tool's position before the cycle is unknown (program an absolute X and Z first)")
+        raise refuse(f"{code}: the tool's position before the cycle is unknown (program an absolute X and Z first)")
     scale = 2.0 if ctx.diameter else 1.0
     incremental = ctx.state.distance == "incremental"
     distance = block.sections.get("DistanceMode")
@@ -76,17 +77,17 @@ def thread_start(block: Block, ctx: Context, refuse: Refusal) -> tuple[tuple[flo
 
 
 def place_thread_moves(block: Block, ctx: Context, moves: Sequence[TurnMove], start: tuple[float, float],
-                       words: dict[str, float], used: set[str], refuse: Refusal) -> None:
-    """The cycle's moves on the block as its ``CompoundMotion``, the feed rate in force before it said again
-    after them (the cycle sets none); ``words`` count as read."""
+                       words: dict[str, float], used: set[str], refuse: Refusal, code: str) -> None:
+    """The cycle's moves on the block as its ``CompoundMotion`` (named ``code``), the feed rate in force before
+    it said again after them (the cycle sets none); ``words`` count as read."""
     limit = ctx.setup.limits.moves_per_block
     if len(moves) > limit:
-        raise refuse(f"G76 makes {len(moves)} moves, more than <Limits movesPerBlock> ({limit})")
+        raise refuse(f"{code} makes {len(moves)} moves, more than <Limits movesPerBlock> ({limit})")
     items = to_sections(moves, start, ctx)
     feed = block.sections.get("Feed")
     after = feed.value if isinstance(feed, Feed) else ctx.state.feed
     if after is not None:
         items.append(Feed(after))  # the cycle leaves the feed rate as it was
     ctx.moves_made += len(moves)
-    block.add(CompoundMotion("G76", items))
+    block.add(CompoundMotion(code, items))
     used.update(words)

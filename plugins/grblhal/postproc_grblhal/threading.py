@@ -148,8 +148,8 @@ def read_g76(block: Block, ctx: Context, motion: Motion, values: dict[str, Any],
     r = words.get("R", 1.0)
     if r < 1.0:
         raise refuse(f"G76 R{r:g}: grblHAL's degression is 1 or more (error 33)", "R")
-    angle = compound_angle(words.get("Q", 0.0), refuse)
-    spring = spring_passes(words, ctx, refuse)
+    angle = compound_angle(words.get("Q", 0.0), refuse, "G76")
+    spring = spring_passes(words, ctx, refuse, "G76")
     control = block.sections.get("SpindleControl")
     if (getattr(control, "direction", None) or state.spindle) not in ("cw", "ccw"):
         raise refuse("grblHAL's G76 with the spindle stopped (no feed: error 41, spindle not running)")
@@ -157,7 +157,7 @@ def read_g76(block: Block, ctx: Context, motion: Motion, values: dict[str, Any],
     if getattr(mode, "mode", None) == "css" or mode is None and state.extra.get(CSS, False):
         raise refuse("grblHAL's G76 under constant surface speed (G96): it turns G96 off for the cycle, at a "
                      "speed not modelled; program G97 before it")
-    start, scale, incremental = thread_start(block, ctx, refuse)
+    start, scale, incremental = thread_start(block, ctx, refuse, "G76")
     z0 = start[1]
     end_z = z0 + axes["Z"] if incremental else axes["Z"]
     if end_z == z0:
@@ -167,7 +167,7 @@ def read_g76(block: Block, ctx: Context, motion: Motion, values: dict[str, Any],
         raise refuse(f"G76 E{taper:g}: an end taper longer than half the thread (error 33)", "E")
     moves = g76_moves(start, end_z, pitch, i / scale, j / scale, k / scale, r, angle, spring, taper,
                       int(ends), ctx.setup.limits.moves_per_block)
-    place_thread_moves(block, ctx, moves, start, words, used, refuse)
+    place_thread_moves(block, ctx, moves, start, words, used, refuse, "G76")
     state.position["X"] = start[0] * scale
     state.position["Z"] = end_z
     state.motion = None  # G76 stays in force on grblHAL: a block of axis words alone is refused

@@ -137,14 +137,14 @@ def read_g76(block: Block, ctx: Context, motion: Motion, values: dict[str, Any],
     if ends != int(ends) or ends > 3:
         raise refuse("G76 L says which ends are tapered: 0 to 3", "L")
     angle = words.get("Q", -1.0)
-    angle = compound_angle(0.0 if angle == -1.0 else angle, refuse)  # rs274 reads a Q of -1 as none
-    spring = spring_passes(words, ctx, refuse)
+    angle = compound_angle(0.0 if angle == -1.0 else angle, refuse, "G76")  # rs274 reads a Q of -1 as none
+    spring = spring_passes(words, ctx, refuse, "G76")
     r = words.get("R")
     degression = max(r, 1.0) if r is not None else 1.0  # rs274: below 1, or left out, is 1
     turning = _spindle_of(block) or state.spindle  # (LinuxCNC starts or stops the spindle before the motion)
     if turning not in ("cw", "ccw"):
         raise refuse("G76 with the spindle stopped (rs274: \"Chosen spindle (0) not turning in G76\")")
-    start, scale, incremental = thread_start(block, ctx, refuse)
+    start, scale, incremental = thread_start(block, ctx, refuse, "G76")
 
     def end(axis: str, known: float) -> float:
         value = axes.get(axis)
@@ -155,7 +155,7 @@ def read_g76(block: Block, ctx: Context, motion: Motion, values: dict[str, Any],
     finish = (end("X", start[0] * scale) / scale, end("Z", start[1]))
     moves = g76_moves(start, finish, pitch, i / scale, j / scale, k / scale, degression, angle,
                       spring, taper, int(ends), ctx.setup.limits.moves_per_block)
-    place_thread_moves(block, ctx, moves, start, words, used, refuse)
+    place_thread_moves(block, ctx, moves, start, words, used, refuse, "G76")
     state.position["X"] = finish[0] * scale
     state.position["Z"] = finish[1]
     state.motion = None  # G76 stays in force on LinuxCNC: a block of axis words alone is refused
