@@ -21,8 +21,8 @@ which is not the offset's (``T0102``). A target that is no lathe control gets th
 compensation is resolved into moves with the offset's radius and tip (``lowering.cutter_compensation``).
 
 A cycle whose profile turns nose compensation on in its first block and off in its last (the Haas form,
-``NOSE_PROFILE``) is expanded for every other controller: the roughing to the nose's path and the finishing under compensation
-are the source controller's own (another controller's rules for that form are not known).
+``NOSE_PROFILE``) is expanded for every other controller: the roughing to the nose's path and the finishing
+under compensation are the source controller's own (another controller's rules for that form are not known).
 A lathe cycle under tool nose radius compensation is refused where its compensated moves are not known:
 towards another controller (Fanuc's type I/II rules for G71/G72 under compensation are not modelled here;
 LinuxCNC refuses G71/G72 with compensation on [V: ``interp_g7x.cc``]), and in the simulation of a
@@ -54,7 +54,7 @@ reader applies it: ``postproc.rs274.lathe_cycles``): towards another family it b
 NOSE_PROFILE = "nose_profile"
 """``LatheCycle.params`` key set by the reader (``postproc.rs274.lathe_cycles``) on a cycle whose profile turns
 tool nose radius compensation on in its first block and off in its last (the Haas form): its moves are
-the source controller's, so it is written expanded for every target, its profile blocks as comments."""
+the source controller's, so it is written expanded for every other controller, its profile blocks as comments."""
 
 def lathe_tool(number: int) -> int:
     """The tool of a lathe T word: T0101 (tool and offset, four digits) is tool 1; T1 to T99 name the tool."""

@@ -24,9 +24,9 @@ from postproc.compensation.nose import TIPS
 from postproc.compensation.tool_table import ToolTable
 from postproc.cycles.lathe_expansion import (expand, finishing_split, nose_shape, profile_segments, start_point,
                                              to_sections)
+from postproc.cycles.lathe_lowering import NOSE_PROFILE, THREAD_CHAMFER
 from postproc.errors import PostprocError, ProgramError
 from postproc.expr import Expr
-from postproc.cycles.lathe_lowering import THREAD_CHAMFER
 from postproc.ir import Block, CompoundMotion, CutterCompensation, CycleCall, MachineFunction, Motion, Sequence
 from postproc.lathe_sections import InProfile, LatheCycle
 from postproc.syntax import Syntax
@@ -43,10 +43,6 @@ CHAMFER_OFF_KEY = "LatheCycleSyntax.chamfer_off"
 end) until one declared ``thread-chamfer-on``."""
 NOSE_KEY = "LatheCycleSyntax.nose"
 """``ctx.state.extra`` key: (ns, nf) -> the nose compensation its first block turns on (mode, register)."""
-NOSE_PROFILE = "nose_profile"
-"""``LatheCycle.params`` key: 1 when the cycle's profile turns nose compensation on in its first block and
-off in its last (the Haas form, ``_profile_nose``): its moves are this controller's, so it is expanded for
-every target (``postproc.cycles.lathe_lowering``)."""
 ROUGHING = frozenset(("turn_rough", "face_rough", "pattern_repeat"))
 MAX_PROFILE_BLOCKS = 100_000
 """Blocks held at most while looking for a profile's last block."""
