@@ -44,8 +44,10 @@ HAAS_LATHE = (
     m(24, "thread pull-out chamfer off", "thread-chamfer-off"),
     m(31, "chip auger forward"), m(33, "chip auger stop"),
 )
-"""Haas lathes [K: Haas lathe operator's manual, M-code list: M23 "Angle Out of Thread On", M24 "Angle Out of
-Thread Off" (the G76/G92 pull-out of Setting 95), M31 chip auger forward, M33 chip auger stop]."""
+"""Haas lathes [K: Haas lathe operator's manual, M-code list, as known, not re-read here: M23 "Angle Out of
+Thread On", M24 "Angle Out of Thread Off" (the G76/G92 pull-out of Setting 95), M31 chip auger forward, M33
+chip auger stop; the public Haas programs of tests/heldout write M24 before a G76 whose pull-out would
+otherwise leave the start point's X]."""
 
 LATHE_DEFAULTS: Defaults = {"haas": HAAS_LATHE}
 """A Fanuc T lathe's defaults by variant (the mill list's codes are the machine builder's for mills)."""

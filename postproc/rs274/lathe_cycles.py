@@ -148,7 +148,7 @@ class LatheCycleSyntax(Syntax):
                           profile: list[Seg], nose: tuple[str, int | None]) -> Block:
         """G70 over a profile that turns nose compensation on in its first block and off in its last: the
         controller runs the blocks as programmed, compensated [K: Haas, G70 finishes the P..Q path with its
-        G41/G42 and G40]. The cycle's block turns compensation on and makes every move but the last; a block
+        G41/G42 and G40; as known, not re-read here]. The cycle's block turns compensation on and makes every move but the last; a block
         after it turns compensation off and makes the last (the departure) and the return."""
         if "CutterCompensation" in block.sections:
             raise ProgramError(f"{code}: the cycle's block sets tool nose radius compensation and its profile turns "
@@ -264,7 +264,8 @@ def _restore(ctx: Context, saved: object) -> None:
 def _profile_nose(profile: list[Block], ctx: Context, code: str) -> tuple[str, int | None] | None:
     """The nose compensation a profile turns on in its first block and off in its last (the Haas form:
     ``G42`` in the P block, ``G40`` in the Q block, both with a move) [K: Haas lathe operator's manual,
-    TNC with G70-G73: G41/G42 in the P block, G40 in the Q block]; None when the profile has none. Any
+    TNC with G70-G73, as known, not re-read here; the public Haas programs of tests/heldout are written so];
+    None when the profile has none. Any
     other placement, or this form on another controller (Fanuc T alarms on G40-G42 inside ns..nf [K]),
     is left to ``profile_segments`` to refuse by name."""
     found = [(i, b.sections["CutterCompensation"]) for i, b in enumerate(profile)

@@ -3,12 +3,13 @@ path while the nose touches the profile, which the cycle roughs to (plus its fin
 
 A profile that turns tool nose radius compensation on in its first block and off in its last (``G42`` in
 the P block, ``G40`` in the Q block: the Haas form) is a finished shape the tool's round nose must touch.
-The cycle then roughs along the shape offset by the nose, not along the programmed one: it "applies the
-compensation to the finishing shape and roughs along the offset shape" [K: Fanuc 0i-TC B-64114EN / 0i-TF
-B-64604EN, "tool nose radius compensation in multiple repetitive canned cycle", as the issue cites them;
-Haas lathe operator's manual, G71 with G41/G42 in the P block and G40 in the Q block, the common Haas
-form]. What is modelled here, and tagged as assumed [?] because the manuals' figures were not read in
-this session (the search corpora hold none of their text):
+The cycle then roughs along the shape offset by the nose, not along the programmed one: it applies the
+compensation to the finishing shape and roughs along the offset shape [?: Fanuc 0i-TC B-64114EN / 0i-TF
+B-64604EN, "tool nose radius compensation in multiple repetitive canned cycle", as the task that asked
+for this cites them; the manuals' text was not reached in this session (the search corpora hold none of
+it)]. The form itself is the Haas one [K: Haas lathe operator's manual, G71 with TNC: G41/G42 in the P
+block, G40 in the Q block, as known, not re-read here; the public Haas ST programs of tests/heldout,
+enier290188/cnc, are written so]. What is modelled here, each point assumed [?]:
 
 * the nose centre runs one nose radius beside each block between the first and the last (left for G41,
   right for G42, looking along the motion in the ZX plane with Z first: ``cutter_radius``'s convention);
