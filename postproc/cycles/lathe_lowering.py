@@ -44,6 +44,7 @@ from postproc.ir import (
 )
 from postproc.lathe_sections import CoordinateSet, LatheCycle
 
+from ..lowering.machine_functions import comment_out
 from .lathe_offsets import LatheOffsets
 
 THREAD_CHAMFER = ("thread-chamfer-on", "thread-chamfer-off")
@@ -228,12 +229,7 @@ def _chamfer_switch_noted(block: Block, function: MachineFunction) -> None:
     """A code that switches the threading cycles' pull-out chamfer on or off (Haas M23/M24) has no equivalent
     in another family, and needs none: the cycles after it carry their chamfer in their own words
     (``LatheCycle`` ``chamfer``), so it becomes a comment where it stood."""
-    del block.sections["MachineFunction"]
-    comments = block.sections.get("Comments")
-    texts = list(comments.texts) if isinstance(comments, Comments) else []
-    block.sections["Comments"] = Comments([*texts, f"{function.text}: {function.name or function.action}, in the "
-                                                   "threading cycles' words"])
-    block.changed()
+    comment_out(block, f"{function.text}: {function.name or function.action}, in the threading cycles' words")
 
 
 def _turret(block: Block, ctx: Context, turning: bool) -> bool:

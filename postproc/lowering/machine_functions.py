@@ -30,6 +30,15 @@ def refused_rigid_tap(code: MachineFunction, target: str) -> str:
             "without the spindle in step a tap breaks: refused, even with --on-unsupported warn")
 
 
+def comment_out(block: Block, note: str) -> None:
+    """The block's machine-specific code goes; ``note`` joins its comments, saying why or where its meaning went."""
+    del block.sections["MachineFunction"]
+    comments = block.sections.get("Comments")
+    texts = list(comments.texts) if isinstance(comments, Comments) else []
+    block.sections["Comments"] = Comments([*texts, note])
+    block.changed()
+
+
 def drop_foreign_machine_functions(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
     """Leave out (with a warning and a comment) each machine-specific code of another family (with
     ``--on-unsupported warn``; otherwise the writer refuses it, and the blocks pass with no step each)."""
@@ -52,11 +61,7 @@ def _drop(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Itera
             ctx.diagnostics.warn(f"{code.describe()}, a machine-specific code of the {code.family} family, has "
                                  f"no equivalent in {target.NAME}; left out, its block kept",
                                  ctx.at(block, _column(block, code.code)))
-            del block.sections["MachineFunction"]
-            comments = block.sections.get("Comments")
-            texts = list(comments.texts) if isinstance(comments, Comments) else []
-            block.sections["Comments"] = Comments([*texts, note])
-            block.changed()
+            comment_out(block, note)
         yield block
 
 
