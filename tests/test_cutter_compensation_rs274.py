@@ -34,7 +34,8 @@ import pytest
 
 from postproc.setup.machine_setup import MachineSetup
 from postproc.setup.machine import ToolData
-from tests.support.compensation_rs274 import assert_same, calls_before, postproc_path, refused_line
+from tests.support.compensation_rs274 import (assert_same, calls_before, compensated_moves, postproc_path,
+                                              refused_line)
 from tests.support.rs274 import RS274Error, available, run_rs274
 
 pytestmark = pytest.mark.skipif(not available(), reason="the LinuxCNC interpreter rs274 is not installed")
@@ -246,23 +247,8 @@ def generate(seed: int) -> Program:
         on: list[tuple[str, float | None]] = [(side, None)]
         if tool is None or rng.random() < 0.6:
             on.append(("D", float(rng.randint(1, 6))))
-        joined = rng.random() < 0.5  # the entry move in the G41/G42 block, or in the block after it
         p.add(*on)
-        entry = len(p.blocks)
-        if rng.random() < 0.2:
-            _arc(rng, p)
-        else:
-            _line(rng, p, rng.choice(["G1", "G1", "G0"]))
-        if joined:
-            p.blocks[entry - 1].extend(p.blocks.pop(entry))
-        for _ in range(rng.randint(2, 9)):
-            r = rng.random()
-            if r < 0.45:
-                _line(rng, p)
-            elif r < 0.8:
-                _arc(rng, p)
-            else:
-                _other(rng, p)
+        compensated_moves(rng, p, _line, _arc, _other, (2, 9), 0.8)
         target = (_grid(rng, -40, 40), _grid(rng, -40, 40))
         if rng.random() < 0.5:
             p.add(("G40", None))

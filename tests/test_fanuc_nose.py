@@ -47,7 +47,7 @@ from postproc.setup.machine import ToolData
 from postproc.setup.machine_setup import MachineSetup, load_setup
 from postproc.simulate.toolpath import toolpath_events
 from postproc.simulate.verify import verify_lines
-from tests.support.nose_tips import SETUPS, at_tip, controlled, direction, one_tool
+from tests.support.nose_tips import FINISHING_UNDER_G42, SETUPS, at_tip, controlled, direction, one_tool
 from tests.support.rs274 import available, run_rs274
 
 R = 0.8
@@ -139,18 +139,7 @@ def test_g42_takes_the_offset_of_the_t_code() -> None:
 CYCLE = """O2010
 G21 G18 G40 G99 G97 S500 M03
 T0102
-G0 X62. Z2.
-G71 U2. R0.5
-G71 P10 Q20 U0.4 W0.1 F0.25
-N10 G0 X20.
-G1 Z-15.
-X40. Z-25.
-N20 G1 X60.
-G42 G0 X62. Z2.
-G70 P10 Q20
-G40 G0 X100. Z50.
-M30
-"""
+""" + FINISHING_UNDER_G42
 
 
 def test_finishing_cycle_runs_its_profile_compensated_by_hand() -> None:

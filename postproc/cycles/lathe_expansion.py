@@ -26,8 +26,11 @@ PROFILE_SECTIONS = frozenset(("Sequence", "Motion", "Feed", "Comments"))
 speed or a dwell inside ns..nf are refused: the expansion would drop them)."""
 
 
-def profile_segments(blocks: Sequence[Block], start: tuple[float, float], ctx: Context, code: str) -> list[Seg]:
-    """The profile blocks ns..nf as segments from ``start`` (radius, Z); each refusal names its block."""
+def profile_segments(blocks: Sequence[Block], start: tuple[float, float], ctx: Context, code: str,
+                     nose: bool = False) -> list[Seg]:
+    """The profile blocks ns..nf as segments from ``start`` (radius, Z); each refusal names its block.
+    ``nose``: the first block turns tool nose radius compensation on and the last turns it off (checked by
+    the caller, whose controller runs that form: ``nose_shape``); compensation anywhere else is refused."""
     from .turning.profile import Seg
     x, z = start
     feed: float | None = None
@@ -35,14 +38,17 @@ def profile_segments(blocks: Sequence[Block], start: tuple[float, float], ctx: C
     half = 0.5 if ctx.diameter else 1.0
     incremental = ctx.state.distance == "incremental"
     increments = ctx.increments  # the reading dialect's U/W (``Dialect.INCREMENTAL_AXES``)
-    for block in blocks:
-        other = [k for k in block.sections if k not in PROFILE_SECTIONS]
+    last = len(blocks) - 1
+    for i, block in enumerate(blocks):
+        other = [k for k in block.sections if k not in PROFILE_SECTIONS
+                 and not (nose and k == "CutterCompensation" and i in (0, last))]
         if other and other[0] == "CutterCompensation":
             raise ProgramError(f"{code}: the profile block at line {block.line} turns tool nose radius compensation on "
-                               "or off (as Haas programs do in a profile's first and last blocks): how the controller "
-                               "compensates inside the cycle is not in our sources, so its moves are not known; "
-                               "turn compensation on before the finishing cycle and off after it, outside the "
-                               "profile", ctx.at(block))
+                               "or off: this controller's rules for compensation inside the cycle are not in our "
+                               "sources (Fanuc T alarms on compensation inside the profile [K]; the Haas form, on in "
+                               "the first block and off in the last, is read for a Haas set-up), so its moves are "
+                               "not known; turn compensation on before the finishing cycle and off after it, "
+                               "outside the profile", ctx.at(block))
         if other:
             raise ProgramError(f"{code}: the profile block at line {block.line} holds {_name(other[0])}, which "
                                "a profile may not (only rapid, straight and arc moves and feeds)", ctx.at(block))
@@ -95,6 +101,46 @@ def profile_segments(blocks: Sequence[Block], start: tuple[float, float], ctx: C
         segs.append(Seg(kind, x, z, x1, z1, cx, cz, feed, block.line, motion.mode == "rapid"))  # type: ignore[arg-type]
         x, z = x1, z1
     return segs
+
+
+def nose_shape(segs: Sequence[Seg], start: tuple[float, float], side: str, radius: float, tip: tuple[int, int],
+               kind: str, rough_type: str, code: str) -> list[Seg]:
+    """The profile a roughing cycle roughs to when its first block turns nose compensation on and its last
+    turns it off (``turning.nose_path``): the approach from ``start`` to where the tip path begins, then the
+    tip path of the blocks between (the departure block is no part of it). A type I cycle keeps its
+    approach along the infeed axis and reaches the tip path's start along the other (monotonic, as type I
+    must be) [?]."""
+    from .turning.nose_path import nose_path
+    from .turning.profile import Seg
+    if len(segs) < 3:
+        raise ProgramError(f"{code}: a profile that turns tool nose radius compensation on in its first block and "
+                           "off in its last needs blocks between them that move")
+    path = nose_path(segs[1:-1], side, radius, tip, code)
+    ns, first = segs[0], path[0]
+    x0, z0 = start
+    if rough_type == "II":
+        return [Seg("line", x0, z0, first.x0, first.z0, None, None, ns.feed, ns.line, ns.rapid), *path]
+    corner = (first.x0, z0) if kind != "face_rough" else (x0, first.z0)
+    approach = Seg("line", x0, z0, corner[0], corner[1], None, None, ns.feed, ns.line, ns.rapid)
+    if abs(corner[0] - first.x0) <= 1e-12 and abs(corner[1] - first.z0) <= 1e-12:
+        return [approach, *path]
+    bridge = Seg("line", corner[0], corner[1], first.x0, first.z0, None, None, first.feed, first.line, False)
+    return [approach, bridge, *path]
+
+
+def finishing_split(start: tuple[float, float], profile: Sequence[Seg],
+                    feed: float | None) -> tuple[list[TurnMove], list[TurnMove]]:
+    """G70's moves (``turning.finishing``) in two parts: every block but the last, then the last block and the
+    return to ``start``, for a profile whose last block turns nose compensation off as it moves."""
+    from dataclasses import replace
+    from .turning.profile import TurnMove, check_chain, contour_moves, drop_still
+    check_chain(profile, start, "finishing cycle")
+    own = [seg if seg.feed is not None else replace(seg, feed=feed) for seg in profile]
+    head = drop_still(contour_moves(own[:-1], None, "finish"), start)
+    end = (own[-2].x1, own[-2].z1) if len(own) > 1 else start
+    tail = contour_moves(own[-1:], None, "finish")
+    tail.append(TurnMove("rapid", start[0], start[1], note="return"))
+    return head, drop_still(tail, end)
 
 
 def expand(cycle: LatheCycle, start: tuple[float, float], profile: list[Seg] | None, feed: float | None,

@@ -20,6 +20,9 @@ and tip columns of the offset the T code selected], LinuxCNC's G41 without D the
 which is not the offset's (``T0102``). A target that is no lathe control gets that register named too: its
 compensation is resolved into moves with the offset's radius and tip (``lowering.cutter_compensation``).
 
+A cycle whose profile turns nose compensation on in its first block and off in its last (the Haas form,
+``NOSE_PROFILE``) is expanded for every other controller: the roughing to the nose's path and the finishing
+under compensation are the source controller's own (another controller's rules for that form are not known).
 A lathe cycle under tool nose radius compensation is refused where its compensated moves are not known:
 towards another controller (Fanuc's type I/II rules for G71/G72 under compensation are not modelled here;
 LinuxCNC refuses G71/G72 with compensation on [V: ``interp_g7x.cc``]), and in the simulation of a
@@ -36,12 +39,23 @@ from postproc.dialect import Dialect
 from postproc.expr import Expr
 from postproc.errors import PostprocError, UnsupportedError
 from postproc.ir import (
-    Block, Comments, CompoundMotion, CutterCompensation, DistanceMode, FeedMode, Motion, Plane, SpindleControl, ToolChange,
-    ToolLengthOffset, ToolSelect,
+    Block, Comments, CompoundMotion, CutterCompensation, DistanceMode, FeedMode, MachineFunction, Motion, Plane,
+    SpindleControl, ToolChange, ToolLengthOffset, ToolSelect,
 )
 from postproc.lathe_sections import CoordinateSet, LatheCycle
 
+from ..lowering.machine_functions import comment_out
 from .lathe_offsets import LatheOffsets
+
+THREAD_CHAMFER = ("thread-chamfer-on", "thread-chamfer-off")
+"""The actions of a code that switches the threading cycles' pull-out chamfer on or off (Haas M23/M24, the
+reader applies it: ``postproc.rs274.lathe_cycles``): towards another family it becomes a comment
+(``_chamfer_switch_noted``)."""
+
+NOSE_PROFILE = "nose_profile"
+"""``LatheCycle.params`` key set by the reader (``postproc.rs274.lathe_cycles``) on a cycle whose profile turns
+tool nose radius compensation on in its first block and off in its last (the Haas form): its moves are
+the source controller's, so it is written expanded for every other controller, its profile blocks as comments."""
 
 def lathe_tool(number: int) -> int:
     """The tool of a lathe T word: T0101 (tool and offset, four digits) is tool 1; T1 to T99 name the tool."""
@@ -90,12 +104,23 @@ def _lower(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iter
     turning = False
     """The spindle turns before the block (a turret index must not become a tool change then)."""
     nose = _NoseCompensation(ctx, target, turret and ctx.lathe_turret)
+    own_nose: set[int] = set()
+    """Lines of the roughing cycles whose profile turns nose compensation on and off (``NOSE_PROFILE``),
+    expanded."""
+    same_controller = target.NAME == ctx.dialect
+    """Only the source's own controller runs such a cycle natively (the same set-up writes it)."""
+    skip_departure = False
+    """A native G70 over such a profile was written: the block the reader made for its departure goes."""
+    family = target.family()
     for block in blocks:
         sections = block.sections
+        function = sections.get("MachineFunction")
+        if isinstance(function, MachineFunction) and function.action in THREAD_CHAMFER and function.family != family:
+            _chamfer_switch_noted(block, function)
         nose.block(block)
         profile = sections.get("InProfile")
         if profile is not None:
-            if native:
+            if native and getattr(profile, "cycle", None) not in own_nose:
                 yield block
                 continue
             source = (block.text or " ".join(a + n for a, n in block.words)).strip()
@@ -104,9 +129,20 @@ def _lower(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iter
             yield block
             continue
         cycle = sections.get("LatheCycle")
+        compound = sections.get("CompoundMotion")
+        if skip_departure and cycle is None and isinstance(compound, CompoundMotion) and compound.term == "turn_finish":
+            skip_departure = False  # the native G70 makes its departure itself
+            continue
         if isinstance(cycle, LatheCycle):
-            if cycle.kind in native:
+            flagged = bool(cycle.params.get(NOSE_PROFILE))
+            keep = cycle.kind in native and (not flagged or same_controller)
+            if flagged and not keep:
+                own_nose.add(block.line)
+            if keep:
                 sections.pop("CompoundMotion", None)
+                if flagged and cycle.kind == "turn_finish":
+                    sections.pop("CutterCompensation", None)  # the reader's: the profile's own blocks say it
+                    skip_departure = True
             else:
                 source = (block.text or " ".join(a + n for a, n in block.words)).strip()
                 del sections["LatheCycle"]
@@ -187,6 +223,13 @@ class _NoseCompensation:
                 "controller compensates inside it is not modelled (Fanuc's type I/II rules), so its moves are not "
                 "known; cancel compensation before the cycle and turn it on for the finishing cycle",
                 self.ctx.at(block)))
+
+
+def _chamfer_switch_noted(block: Block, function: MachineFunction) -> None:
+    """A code that switches the threading cycles' pull-out chamfer on or off (Haas M23/M24) has no equivalent
+    in another family, and needs none: the cycles after it carry their chamfer in their own words
+    (``LatheCycle`` ``chamfer``), so it becomes a comment where it stood."""
+    comment_out(block, f"{function.text}: {function.name or function.action}, in the threading cycles' words")
 
 
 def _turret(block: Block, ctx: Context, turning: bool) -> bool:

@@ -11,10 +11,10 @@ from ..context import Context
 from ..dialect import Dialect
 from ..errors import Location, PostprocError, ProgramError, UnsupportedError
 from ..expr import Expr
-from ..ir import (Block, Comments, CompoundMotion, CycleCancel, DistanceMode, Feed, MachineFunction, Motion,
+from ..ir import (Block, CompoundMotion, CycleCancel, DistanceMode, Feed, MachineFunction, Motion,
                   ReturnLevel, Section, SpindleControl, SpindleSpeed)
 from ..state import PLANE_AXES
-from ..lowering.machine_functions import RIGID_TAP
+from ..lowering.machine_functions import RIGID_TAP, comment_out
 from ..synchronised_tap import RigidTap, rigid_taps
 from .section import CannedCycle
 
@@ -98,12 +98,7 @@ def _resolve(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> It
 
 def _leave_out(block: Block, code: MachineFunction) -> None:
     """The rigid-tapping code goes; a comment says where its meaning went."""
-    del block.sections["MachineFunction"]
-    comments = block.sections.get("Comments")
-    texts = list(comments.texts) if isinstance(comments, Comments) else []
-    block.sections["Comments"] = Comments([*texts, f"{code.describe()}: the taps after it are written "
-                                                  "spindle-synchronised"])
-    block.changed()
+    comment_out(block, f"{code.describe()}: the taps after it are written spindle-synchronised")
 
 
 def _refusal(taps: list[RigidTap], target: type[Dialect]) -> str | None:

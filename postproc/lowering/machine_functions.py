@@ -56,6 +56,15 @@ def foreign_hint(code: MachineFunction) -> str:
     return f" (the target machine's set-up can say which of its machine codes it becomes: {element})"
 
 
+def comment_out(block: Block, note: str) -> None:
+    """The block's machine-specific code goes; ``note`` joins its comments, saying why or where its meaning went."""
+    del block.sections["MachineFunction"]
+    comments = block.sections.get("Comments")
+    texts = list(comments.texts) if isinstance(comments, Comments) else []
+    block.sections["Comments"] = Comments([*texts, note])
+    block.changed()
+
+
 def drop_foreign_machine_functions(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
     """Apply the set-up's ``<ForeignCodes>`` to each machine-specific code of another family, and leave out
     (with a warning and a comment) an undeclared one with ``--on-unsupported warn``; otherwise the writer
@@ -86,7 +95,7 @@ def _drop(blocks: Iterator[Block], ctx: Context, target: type[Dialect],
             ctx.diagnostics.warn(f"{code.describe()}, a machine-specific code of the {code.family} family, has "
                                  f"no equivalent in {target.NAME}; left out, its block kept{foreign_hint(code)}",
                                  ctx.at(block, _column(block, code.code)))
-            _note(block, f"{code.text} NOT WRITTEN: {code.describe()} of the {code.family} family has no equivalent")
+            comment_out(block, f"{code.text} NOT WRITTEN: {code.describe()} of the {code.family} family has no equivalent")
         yield block
 
 
@@ -113,7 +122,7 @@ def _apply(block: Block, code: MachineFunction, mapped: ForeignCode, ctx: Contex
         block.changed()
         return
     if section is None:
-        _note(block, f"{code.text} omitted: {code.name or 'a machine code'} of the {code.family} family, left "
+        comment_out(block, f"{code.text} omitted: {code.name or 'a machine code'} of the {code.family} family, left "
                      "out by the set-up (ForeignCodes)")
         return
     del block.sections["MachineFunction"]
@@ -153,15 +162,6 @@ def _target_code(becomes: str, ctx: Context, target: type[Dialect]) -> tuple[Sec
                 answer = None, f"{target.NAME} reads it as {what}, not as a machine-specific code of its own"
     cache[becomes] = answer
     return answer
-
-
-def _note(block: Block, note: str) -> None:
-    """Take the code out of the block and say so in the block's comment."""
-    del block.sections["MachineFunction"]
-    comments = block.sections.get("Comments")
-    texts = list(comments.texts) if isinstance(comments, Comments) else []
-    block.sections["Comments"] = Comments([*texts, note])
-    block.changed()
 
 
 def _column(block: Block, code: str) -> int:

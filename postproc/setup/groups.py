@@ -286,7 +286,8 @@ class ControllerSettings(SetupGroup):
 
 
 CodeAction = Literal["none", "stop", "optional-stop", "spindle-cw", "spindle-ccw", "spindle-stop",
-                     "coolant-on", "coolant-off", "gear", "tool-change", "rigid-tap"]
+                     "coolant-on", "coolant-off", "gear", "tool-change", "rigid-tap", "thread-chamfer-on",
+                     "thread-chamfer-off"]
 """What a machine code does in the simulation (``<M action="...">``)."""
 
 

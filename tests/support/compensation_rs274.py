@@ -80,3 +80,27 @@ def assert_same(ours: list[dict[str, Any]], errors: list[int], theirs: list[dict
 
 def _show(path: list[dict[str, Any]]) -> str:
     return "\n".join(str(e) for e in path)
+
+
+def compensated_moves(rng: Any, p: Any, line: Any, arc: Any, other: Any, count: tuple[int, int],
+                      arc_share: float) -> None:
+    """The moves of one compensated stretch of a random program, after its G41/G42 block: the entry move (an
+    arc one time in five, else a G1 or G0), in the G41/G42 block half the time, then ``count`` moves: a line
+    (45 %), an arc (up to ``arc_share``) or something else. ``line(rng, p, code)``, ``arc(rng, p)`` and
+    ``other(rng, p)`` add the test's own blocks to ``p`` (``p.blocks``: the blocks, each a list of words)."""
+    joined = rng.random() < 0.5  # the entry move in the G41/G42 block, or in the block after it
+    entry = len(p.blocks)
+    if rng.random() < 0.2:
+        arc(rng, p)
+    else:
+        line(rng, p, rng.choice(["G1", "G1", "G0"]))
+    if joined:
+        p.blocks[entry - 1].extend(p.blocks.pop(entry))
+    for _ in range(rng.randint(*count)):
+        r = rng.random()
+        if r < 0.45:
+            line(rng, p)
+        elif r < arc_share:
+            arc(rng, p)
+        else:
+            other(rng, p)

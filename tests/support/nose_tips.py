@@ -21,6 +21,21 @@ from postproc.simulate.toolpath import toolpath_events
 
 SETUPS = Path(__file__).resolve().parents[2] / "examples" / "setups"
 
+FINISHING_UNDER_G42 = """G0 X62. Z2.
+G71 U2. R0.5
+G71 P10 Q20 U0.4 W0.1 F0.25
+N10 G0 X20.
+G1 Z-15.
+X40. Z-25.
+N20 G1 X60.
+G42 G0 X62. Z2.
+G70 P10 Q20
+G40 G0 X100. Z50.
+M30
+"""
+"""A Fanuc T program's end after its tool and spindle blocks: G71 (two blocks) over a turn, a taper and a face,
+then G42 before G70 and G40 after it (compensation outside the profile, as Fanuc T wants [K])."""
+
 MANUAL_TIPS = {0: "", 1: "X+Z+", 2: "X+Z-", 3: "X-Z-", 4: "X-Z+", 5: "Z+", 6: "X+", 7: "Z-", 8: "X-", 9: ""}
 """The Haas manual's table, as its words."""
 

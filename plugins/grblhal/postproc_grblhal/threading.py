@@ -38,11 +38,11 @@ import math
 from typing import Any, Final
 
 from postproc.context import Context
-from postproc.cycles.lathe_expansion import to_sections
 from postproc.cycles.turning.profile import TurnMove
 from postproc.errors import ProgramError
-from postproc.expr import Expr
-from postproc.ir import Block, CompoundMotion, Feed, Motion
+from postproc.ir import Block, Motion
+from postproc.rs274.lathe_threading import (compound_angle, place_thread_moves, spring_passes, thread_refusal,
+                                            thread_start, thread_words)
 from postproc.thread_lead import lead_along_major
 
 MODE: Final = "grblhal_thread_cycle"
@@ -110,21 +110,13 @@ def g76_moves(start: tuple[float, float], end_z: float, pitch: float, i: float, 
 def read_g76(block: Block, ctx: Context, motion: Motion, values: dict[str, Any], used: set[str]) -> None:
     """The block's G76 (``motion``, read with the code table's ``MODE``) -> its ``CompoundMotion``; the tool
     where the cycle leaves it, and no motion mode a later block may repeat (module docstring)."""
-    col = ctx.column_of(block, "G")
     state = ctx.state
-    del block.sections["Motion"]  # replaced by the moves; a refused block keeps none
-
-    def refuse(message: str, letter: str | None = None) -> ProgramError:
-        return ProgramError(message, ctx.at(block, ctx.column_of(block, letter) if letter else col))
-
+    refuse = thread_refusal(block, ctx)
     if state.extra.get(IN_FORCE):
+        del block.sections["Motion"]
         raise refuse("G76 right after a G76: grblHAL keeps the last one's H, E, L, R and Q where this one leaves "
                      "them out (not modelled); program G0 or G1 between them")
-    given = {letter: values[letter] for letter in WORDS if letter in values}
-    if any(isinstance(v, Expr) for v in [*given.values(), *motion.axes.values()]):
-        raise refuse("a computed word in grblHAL's G76 is not supported (write the numbers)")
-    words: dict[str, float] = {letter: float(v) for letter, v in given.items()}
-    axes = {axis: float(v) for axis, v in motion.axes.items() if not isinstance(v, Expr)}
+    words, axes = thread_words(block, motion, values, WORDS, "grblHAL's G76", refuse)
     other = next((axis for axis in axes if axis not in ("X", "Z")), None)
     if other is not None:
         raise refuse("grblHAL's G76 takes X and Z only (error 36, unused words)", other)
@@ -156,15 +148,8 @@ def read_g76(block: Block, ctx: Context, motion: Motion, values: dict[str, Any],
     r = words.get("R", 1.0)
     if r < 1.0:
         raise refuse(f"G76 R{r:g}: grblHAL's degression is 1 or more (error 33)", "R")
-    angle = words.get("Q", 0.0)
-    if not -90.0 < angle < 90.0:
-        raise refuse(f"G76 Q{angle:g}: a compound angle of 90 degrees or more is not modelled", "Q")
-    spring = words.get("H", 0.0)
-    if spring != int(spring) or spring < 0:
-        raise refuse("G76 H must be a whole number of spring passes, 0 or more", "H")
-    if spring >= ctx.setup.limits.moves_per_block:
-        raise refuse(f"G76 H{spring:g} makes more moves than <Limits movesPerBlock> "
-                     f"({ctx.setup.limits.moves_per_block})", "H")
+    angle = compound_angle(words.get("Q", 0.0), refuse, "G76")
+    spring = spring_passes(words, ctx, refuse, "G76")
     control = block.sections.get("SpindleControl")
     if (getattr(control, "direction", None) or state.spindle) not in ("cw", "ccw"):
         raise refuse("grblHAL's G76 with the spindle stopped (no feed: error 41, spindle not running)")
@@ -172,35 +157,18 @@ def read_g76(block: Block, ctx: Context, motion: Motion, values: dict[str, Any],
     if getattr(mode, "mode", None) == "css" or mode is None and state.extra.get(CSS, False):
         raise refuse("grblHAL's G76 under constant surface speed (G96): it turns G96 off for the cycle, at a "
                      "speed not modelled; program G97 before it")
-    x0, z0 = state.position.get("X"), state.position.get("Z")
-    if x0 is None or z0 is None:
-        raise refuse("G76: the tool's position before the cycle is unknown (program an absolute X and Z first)")
-    scale = 2.0 if ctx.diameter else 1.0
-    incremental = state.distance == "incremental"
-    distance = block.sections.get("DistanceMode")
-    if distance is not None:
-        incremental = distance.mode == "incremental"  # type: ignore[attr-defined]
-    end_z = float(z0) + axes["Z"] if incremental else axes["Z"]
-    if end_z == float(z0):
+    start, scale, incremental = thread_start(block, ctx, refuse, "G76")
+    z0 = start[1]
+    end_z = z0 + axes["Z"] if incremental else axes["Z"]
+    if end_z == z0:
         raise refuse("grblHAL's G76 ends where the tool stands (Z): no thread", "Z")
     taper = words.get("E", 0.0)
-    if ends and taper > 0.0 and taper > abs(end_z - float(z0)) / 2.0:
+    if ends and taper > 0.0 and taper > abs(end_z - z0) / 2.0:
         raise refuse(f"G76 E{taper:g}: an end taper longer than half the thread (error 33)", "E")
-    start = (float(x0) / scale, float(z0))
-    moves = g76_moves(start, end_z, pitch, i / scale, j / scale, k / scale, r, angle, int(spring), taper,
+    moves = g76_moves(start, end_z, pitch, i / scale, j / scale, k / scale, r, angle, spring, taper,
                       int(ends), ctx.setup.limits.moves_per_block)
-    if len(moves) > ctx.setup.limits.moves_per_block:
-        raise refuse(f"G76 makes {len(moves)} moves, more than <Limits movesPerBlock> "
-                     f"({ctx.setup.limits.moves_per_block})")
-    items = to_sections(moves, start, ctx)
-    feed = block.sections.get("Feed")
-    after = feed.value if isinstance(feed, Feed) else state.feed
-    if after is not None:
-        items.append(Feed(after))  # the cycle leaves the feed rate as it was
-    ctx.moves_made += len(moves)
-    block.add(CompoundMotion("G76", items))
-    used.update(words)
-    state.position["X"] = float(x0)
+    place_thread_moves(block, ctx, moves, start, words, used, refuse, "G76")
+    state.position["X"] = start[0] * scale
     state.position["Z"] = end_z
     state.motion = None  # G76 stays in force on grblHAL: a block of axis words alone is refused
     state.extra[IN_FORCE] = True

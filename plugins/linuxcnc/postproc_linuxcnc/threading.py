@@ -35,11 +35,11 @@ import math
 from typing import Any, Final
 
 from postproc.context import Context
-from postproc.cycles.lathe_expansion import to_sections
 from postproc.cycles.turning.profile import TurnMove
 from postproc.errors import ProgramError
-from postproc.expr import Expr
-from postproc.ir import Block, CompoundMotion, Feed, Motion
+from postproc.ir import Block, Motion
+from postproc.rs274.lathe_threading import (compound_angle, place_thread_moves, spring_passes, thread_refusal,
+                                            thread_start, thread_words)
 from postproc.thread_lead import lead_along_major
 
 from .codes import CODES
@@ -115,18 +115,9 @@ def g76_moves(start: tuple[float, float], end: tuple[float, float], pitch: float
 def read_g76(block: Block, ctx: Context, motion: Motion, values: dict[str, Any], used: set[str]) -> None:
     """The block's G76 (``motion``, read with the code table's ``MODE``) -> its ``CompoundMotion``; the tool
     where the cycle leaves it, and no motion mode a later block may repeat (module docstring)."""
-    col = ctx.column_of(block, "G")
     state = ctx.state
-    del block.sections["Motion"]  # replaced by the moves; a refused block keeps none
-
-    def refuse(message: str, letter: str | None = None) -> ProgramError:
-        return ProgramError(message, ctx.at(block, ctx.column_of(block, letter) if letter else col))
-
-    given = {letter: values[letter] for letter in WORDS if letter in values}
-    if any(isinstance(v, Expr) for v in [*given.values(), *motion.axes.values()]):
-        raise refuse("a computed word in G76 is not supported (write the numbers)")
-    words: dict[str, float] = {letter: float(v) for letter, v in given.items()}
-    axes: dict[str, float] = {axis: float(v) for axis, v in motion.axes.items() if not isinstance(v, Expr)}
+    refuse = thread_refusal(block, ctx)
+    words, axes = thread_words(block, motion, values, WORDS, "G76", refuse)
     if "P" not in words:
         raise refuse("G76 needs P, the thread pitch (rs274: \"P word missing with G76\")")
     for letter in ("I", "J", "K"):
@@ -146,29 +137,14 @@ def read_g76(block: Block, ctx: Context, motion: Motion, values: dict[str, Any],
     if ends != int(ends) or ends > 3:
         raise refuse("G76 L says which ends are tapered: 0 to 3", "L")
     angle = words.get("Q", -1.0)
-    if angle == -1.0:
-        angle = 0.0  # rs274 reads a Q of -1 as none
-    if not -90.0 < angle < 90.0:
-        raise refuse(f"G76 Q{angle:g}: a compound angle of 90 degrees or more is not modelled", "Q")
-    spring = words.get("H", 0.0)
-    if spring != int(spring) or spring < 0:
-        raise refuse("G76 H must be a whole number of spring passes, 0 or more", "H")
-    if spring >= ctx.setup.limits.moves_per_block:
-        raise refuse(f"G76 H{spring:g} makes more moves than <Limits movesPerBlock> "
-                     f"({ctx.setup.limits.moves_per_block})", "H")
+    angle = compound_angle(0.0 if angle == -1.0 else angle, refuse, "G76")  # rs274 reads a Q of -1 as none
+    spring = spring_passes(words, ctx, refuse, "G76")
     r = words.get("R")
     degression = max(r, 1.0) if r is not None else 1.0  # rs274: below 1, or left out, is 1
     turning = _spindle_of(block) or state.spindle  # (LinuxCNC starts or stops the spindle before the motion)
     if turning not in ("cw", "ccw"):
         raise refuse("G76 with the spindle stopped (rs274: \"Chosen spindle (0) not turning in G76\")")
-    x0, z0 = state.position.get("X"), state.position.get("Z")
-    if x0 is None or z0 is None:
-        raise refuse("G76: the tool's position before the cycle is unknown (program an absolute X and Z first)")
-    scale = 2.0 if ctx.diameter else 1.0
-    incremental = state.distance == "incremental"
-    distance = block.sections.get("DistanceMode")
-    if distance is not None:
-        incremental = distance.mode == "incremental"  # type: ignore[attr-defined]
+    start, scale, incremental = thread_start(block, ctx, refuse, "G76")
 
     def end(axis: str, known: float) -> float:
         value = axes.get(axis)
@@ -176,21 +152,10 @@ def read_g76(block: Block, ctx: Context, motion: Motion, values: dict[str, Any],
             return known
         return known + value if incremental else value
 
-    start = (float(x0) / scale, float(z0))
-    finish = (end("X", float(x0)) / scale, end("Z", float(z0)))
+    finish = (end("X", start[0] * scale) / scale, end("Z", start[1]))
     moves = g76_moves(start, finish, pitch, i / scale, j / scale, k / scale, degression, angle,
-                      int(spring), taper, int(ends), ctx.setup.limits.moves_per_block)
-    if len(moves) > ctx.setup.limits.moves_per_block:
-        raise refuse(f"G76 makes {len(moves)} moves, more than <Limits movesPerBlock> "
-                     f"({ctx.setup.limits.moves_per_block})")
-    items = to_sections(moves, start, ctx)
-    feed = block.sections.get("Feed")
-    after = feed.value if isinstance(feed, Feed) else state.feed
-    if after is not None:
-        items.append(Feed(after))  # the cycle leaves the feed rate as it was
-    ctx.moves_made += len(moves)
-    block.add(CompoundMotion("G76", items))
-    used.update(words)
+                      spring, taper, int(ends), ctx.setup.limits.moves_per_block)
+    place_thread_moves(block, ctx, moves, start, words, used, refuse, "G76")
     state.position["X"] = finish[0] * scale
     state.position["Z"] = finish[1]
     state.motion = None  # G76 stays in force on LinuxCNC: a block of axis words alone is refused

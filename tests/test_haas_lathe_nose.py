@@ -1,0 +1,251 @@
+"""Haas lathe roughing cycles under tool nose radius compensation (G42 in the profile's first block, G40 in
+its last: the form of public Haas lathe programs, enier290188/cnc ``src/lathe``), the one-block G75 and
+M24 before G76.
+
+Expected values are derived by hand below, not by the code under test: the nose centre one radius
+beside each block (right of the motion for G42, looking along it with Z across and X up), cut short at
+an inside corner, rolled on an arc about an outside corner; the imaginary tip the radius away from the
+centre in the direction the Haas manual gives each tip number (``tests/support/nose_tips.py``). The end-to-end test
+compares the roughing of a compensated profile with the roughing of the same cycle over the tip path
+written out by hand, without compensation.
+"""
+
+from __future__ import annotations
+
+import io
+import math
+from pathlib import Path
+
+import pytest
+
+from postproc.api import read_program, translate
+from postproc.cycles.turning.nose_path import nose_path
+from postproc.cycles.turning.profile import Seg
+from postproc.errors import ErrorList, ProgramError
+from postproc.ir import CompoundMotion, CutterCompensation, Motion
+from postproc.lathe_sections import LatheCycle
+from postproc.setup.machine_setup import load_setup
+from postproc.simulate.verify import verify_lines
+from tests.support.nose_tips import direction
+from tests.support.rs274 import available
+from tests.test_lathe_rs274 import INCH_TOLERANCE, difference, ours, theirs
+
+ROOT = Path(__file__).resolve().parents[1]
+HAAS_XML = (ROOT / "examples" / "setups" / "haas_st10_lathe.xml").read_text()
+TOOLS = """  <Tools>
+    <Tool number="1" radius="0.8001" tip="3"/>
+  </Tools>
+</MachineSetup>"""
+"""Tool 1 of the Haas programs: nose radius 0.0315 in (0.8001 mm), tip 3 (their header comments)."""
+
+
+def _haas(tmp_path: Path):  # type: ignore[no-untyped-def]
+    path = tmp_path / "haas.xml"
+    path.write_text(HAAS_XML.replace("</MachineSetup>", TOOLS))
+    return load_setup(str(path))
+
+
+def _line(x0: float, z0: float, x1: float, z1: float) -> Seg:
+    return Seg("line", x0, z0, x1, z1)
+
+
+def _points(segs: list[Seg]) -> list[tuple[float, ...]]:
+    out: list[tuple[float, ...]] = []
+    for s in segs:
+        row: tuple[float, ...] = (s.x0, s.z0, s.x1, s.z1)
+        if s.kind != "line":
+            assert s.cx is not None and s.cz is not None
+            row += (s.cx, s.cz)
+        out.append(tuple(round(v, 9) for v in row))
+    return out
+
+
+@pytest.mark.parametrize("tip", range(10))
+def test_each_tip_direction_moves_the_nose_centre_path(tip: int) -> None:
+    """OD turning toward the chuck, then a shoulder up (an inside corner), G42, nose radius 0.8: the centre
+    runs at X10.8 (radius) to Z-19.2, where the offset blocks meet, then at Z-19.2 up to X15; the tip is
+    the centre moved 0.8 in the tip's direction."""
+    segs = [_line(10.0, 0.0, 10.0, -20.0), _line(10.0, -20.0, 15.0, -20.0)]
+    sz, sx = direction(tip)  # the Haas manual's words (tests/support/nose_tips.py)
+    dx, dz = 0.8 * sx, 0.8 * sz
+    centre = [(10.8, 0.0, 10.8, -19.2), (10.8, -19.2, 15.0, -19.2)]
+    expected = [tuple(round(v, 9) for v in (a + dx, b + dz, c + dx, d + dz)) for a, b, c, d in centre]
+    assert _points(nose_path(segs, "right", 0.8, (int(sz), int(sx)), "G71")) == expected
+
+
+def test_g41_on_a_bore_runs_below_it_and_an_outside_corner_rolls_on_an_arc() -> None:
+    """ID boring toward the chuck with G41: the centre is below the bore (X5 - 0.5); the face before it,
+    cut downward at Z0, is an outside corner for G41 (the path turns right, the tool is on its left): the
+    centre rolls on an arc of 0.5 about the programmed corner (5, 0), clockwise, from (5, 0.5) to (4.5, 0)."""
+    segs = [_line(8.0, 0.0, 5.0, 0.0), _line(5.0, 0.0, 5.0, -10.0)]
+    path = nose_path(segs, "left", 0.5, (0, 0), "G71")
+    assert _points(path) == [(8.0, 0.5, 5.0, 0.5), (5.0, 0.5, 4.5, 0.0, 5.0, 0.0), (4.5, 0.0, 4.5, -10.0)]
+    assert path[1].kind == "cw"
+
+
+def test_a_profile_with_arcs() -> None:
+    """X0.48 Z-0.85 (diameters), a G02 fillet R0.05 to X0.58 Z-0.9, a face to X0.836, a G03 round R0.08 to
+    X0.996 Z-0.98, then Z-1.5; radius values, G42, nose 0.0315, tip 3. By hand: the fillet is concave (the
+    nose inside it): centre arc radius 0.05 - 0.0315 = 0.0185 about (0.29, -0.85); the round is convex:
+    0.08 + 0.0315 = 0.1115 about (0.418, -0.98); every join is tangent. The tip is the centre moved
+    (-0.0315, -0.0315)."""
+    r = 0.0315
+    segs = [_line(0.24, 0.1, 0.24, -0.85), Seg("cw", 0.24, -0.85, 0.29, -0.9, 0.29, -0.85),
+            _line(0.29, -0.9, 0.418, -0.9), Seg("ccw", 0.418, -0.9, 0.498, -0.98, 0.418, -0.98),
+            _line(0.498, -0.98, 0.498, -1.5)]
+    path = nose_path(segs, "right", r, (-1, -1), "G71")
+    assert [s.kind for s in path] == ["line", "cw", "line", "ccw", "line"]
+    expected = [(0.24, 0.0685, 0.24, -0.8815), (0.24, -0.8815, 0.2585, -0.9, 0.2585, -0.8815),
+                (0.2585, -0.9, 0.3865, -0.9), (0.3865, -0.9, 0.498, -1.0115, 0.3865, -1.0115),
+                (0.498, -1.0115, 0.498, -1.5315)]
+    assert _points(path) == [tuple(round(v, 9) for v in row) for row in expected]
+    assert math.isclose(math.hypot(path[1].x0 - 0.2585, path[1].z0 + 0.8815), 0.0185, abs_tol=1e-12)
+    with pytest.raises(ProgramError, match="no wider than the tool nose"):
+        nose_path(segs, "right", 0.05, (-1, -1), "G71")  # the fillet's 0.05 leaves the nose no room
+
+
+HAAS_TNC = """G00 G18 G20 G40 G80 G99
+T0101
+G97 S1000 M03
+G00 X1.6 Z0.1
+G71 P10 Q20 U0.01 W0.005 D0.05 F0.010
+N10 G00 G42 X0.48 Z0.1
+G01 Z-0.85
+G02 X0.58 Z-0.9 R0.05
+G01 X0.836
+G03 X0.996 Z-0.98 R0.08
+G01 Z-1.5
+N20 G00 G40 X1.6
+M05
+M30
+"""
+"""The profile of ``test_a_profile_with_arcs`` in the Haas programs' form (written here)."""
+
+HAND_TIP_PATH = """G00 G18 G20 G40 G80 G99
+T0101
+G97 S1000 M03
+G00 X1.6 Z0.1
+G71 P10 Q20 U0.01 W0.005 D0.05 F0.010
+N10 G00 X0.48 Z0.0685
+G01 Z-0.8815
+G02 X0.517 Z-0.9 I0.0185 K0.
+G01 X0.773
+G03 X0.996 Z-1.0115 I0. K-0.1115
+N20 G01 Z-1.5315
+M05
+M30
+"""
+"""The same cycle over the tip path derived by hand (diameters), no compensation: the approach to the path's
+start, the path, no departure."""
+
+
+def _cycle_moves(text: str, setup) -> list[tuple[str, dict[str, float], dict[str, float]]]:  # type: ignore[no-untyped-def]
+    blocks = read_program(io.StringIO(text), file="in.nc", dialect="fanuc", setup=setup)
+    block = [b for b in blocks if isinstance(b.sections.get("LatheCycle"), LatheCycle)][-1]
+    compound = block.sections["CompoundMotion"]
+    assert isinstance(compound, CompoundMotion)
+    return [(m.mode or "", {a: round(float(v), 9) for a, v in m.axes.items()},  # type: ignore[arg-type]
+             {a: round(float(v), 9) for a, v in (m.center or {}).items()})  # type: ignore[arg-type]
+            for m in compound.items if isinstance(m, Motion)]
+
+
+def test_the_roughing_cycle_roughs_to_the_nose_path(tmp_path: Path) -> None:
+    setup = _haas(tmp_path)
+    compensated = _cycle_moves(HAAS_TNC, setup)
+    assert compensated == _cycle_moves(HAND_TIP_PATH, setup)
+    first_level = compensated[1:3]  # after the approach to A': infeed to the first level, cut to the shoulder
+    assert first_level[1][1]["Z"] == round(-1.5315 + 0.005, 9)  # the tip path's end, plus the Z allowance
+
+
+def test_the_finishing_cycle_runs_the_profile_compensated(tmp_path: Path) -> None:
+    """G70 on the profile: compensation on for the blocks, off for the last (the departure), as programmed."""
+    setup = _haas(tmp_path)
+    program = HAAS_TNC.replace("M05\n", "G70 P10 Q20\nM05\n")
+    blocks = read_program(io.StringIO(program), file="in.nc", dialect="fanuc", setup=setup)
+    at = next(i for i, b in enumerate(blocks) if isinstance(b.sections.get("LatheCycle"), LatheCycle)
+              and b.sections["LatheCycle"].kind == "turn_finish")  # type: ignore[attr-defined]
+    g70, departure = blocks[at], blocks[at + 1]
+    on, off = g70.sections["CutterCompensation"], departure.sections["CutterCompensation"]
+    assert isinstance(on, CutterCompensation) and (on.mode, on.register) == ("right", None)
+    assert isinstance(off, CutterCompensation) and off.mode == "off"
+    head = [m.axes for m in g70.sections["CompoundMotion"].items if isinstance(m, Motion)]  # type: ignore[attr-defined]
+    tail = [m.axes for m in departure.sections["CompoundMotion"].items if isinstance(m, Motion)]  # type: ignore[attr-defined]
+    assert head[0] == {"X": 0.48, "Z": 0.1} and head[-1] == {"X": 0.996, "Z": -1.5}
+    assert tail == [{"X": 1.6, "Z": -1.5}, {"X": 1.6, "Z": 0.1}]
+    assert _write(program, "fanuc", setup) == program  # its own controller keeps the cycles
+
+
+def _write(text: str, target: str, setup) -> str:  # type: ignore[no-untyped-def]
+    out = io.StringIO()
+    translate(io.StringIO(text), out, file="in.nc", source="fanuc", target=target, setup=setup)
+    return out.getvalue()
+
+
+@pytest.mark.parametrize("target", ["gsk", "linuxcnc"])
+def test_the_compensated_cycles_translate_expanded_and_verify(tmp_path: Path, target: str) -> None:
+    setup = _haas(tmp_path)
+    program = HAAS_TNC.replace("M05\n", "G70 P10 Q20\nM05\n")
+    out = _write(program, target, setup)
+    lines = out.splitlines()
+    assert not any(line.startswith(("G71", "G70")) for line in lines)  # another controller's rules: expanded
+    assert sum(1 for line in lines if line.startswith(("G42", "G40"))) == 2  # the finishing pass compensated
+    report = verify_lines(io.StringIO(program), io.StringIO(out), file_in="in.nc", file_out="out", source="fanuc",
+                          target=target, setup=setup, tolerance=0.0)
+    assert report.ok and report.max_deviation == 0.0, report.summary()
+
+
+def test_the_expanded_roughing_runs_in_rs274_with_the_same_moves(tmp_path: Path) -> None:
+    if not available():
+        pytest.skip("rs274 is not installed")
+    setup = _haas(tmp_path)
+    ngc = _write(HAAS_TNC, "linuxcnc", setup)
+    assert difference(ours(HAAS_TNC, "fanuc", setup), theirs(ngc), INCH_TOLERANCE) is None
+
+
+def test_haas_one_block_g75_reads_i_as_the_peck() -> None:
+    """``G75 X1.0 I0.1`` (one-block, I the X peck, radius) cuts as the two-block ``G75 R(e)`` then
+    ``G75 X1.0 P(0.1 in least increments)`` with the same retract (the set-up's, 1 mm)."""
+    haas = load_setup(str(ROOT / "examples" / "setups" / "haas_st10_lathe.xml"))
+    fanuc_t = load_setup(str(ROOT / "examples" / "setups" / "fanuc_0i_tf.xml"))
+    head = "G00 G18 G20 G99\nG97 S500 M03\nG00 X1.5 Z-1.\nG01 X1.4 F0.005\n"
+    one = _cycle_moves(head + "G75 X1.0 I0.1\nM30\n", haas)
+    two = _cycle_moves(head + f"G75 R{1.0 / 25.4:.8f}\nG75 X1.0 P1000\nM30\n", fanuc_t)
+    assert [(kind, round(axes["X"], 6)) for kind, axes, _ in one] == [  # by hand: pecks of 0.2 (diameter),
+        ("linear", 1.2), ("rapid", round(1.2 + 2.0 / 25.4, 6)), ("linear", 1.0), ("rapid", 1.4)]  # back 1 mm
+    assert len(one) == len(two)
+    for (kind, axes, _), (kind2, axes2, _) in zip(one, two):  # the R word's inch value rounds at 1e-8
+        assert kind == kind2 and all(math.isclose(axes[a], axes2[a], abs_tol=1e-7) for a in axes), (one, two)
+    with pytest.raises(ErrorList, match="address P has no meaning in G75"):
+        _cycle_moves(head + "G75 X1.0 P1000\nM30\n", haas)
+
+
+def test_haas_m24_turns_the_g76_pull_out_off_and_m23_back_on() -> None:
+    """Haas M24: no angle out of the thread at its end (the weld pin program's G76 after M24 would otherwise
+    pull out beyond its start X, refused); M23 brings the set-up's chamfer back."""
+    haas = load_setup(str(ROOT / "examples" / "setups" / "haas_st10_lathe.xml"))
+    head = "G00 G18 G20 G99\nT0303\nG97 S1000 M03\nG00 X1.5 Z0.1\nG00 X0.6\n"
+    g76 = "G76 X0.4069 Z-1.57 K0.043075 D0.01076875 F0.07692308\n"
+    with pytest.raises(ErrorList, match="pulls out beyond the start point's X"):
+        read_program(io.StringIO(head + g76 + "M30\n"), file="in.nc", dialect="fanuc", setup=haas)
+    blocks = read_program(io.StringIO(head + "M24\n" + g76 + "M30\n"), file="in.nc", dialect="fanuc", setup=haas)
+    cycle = blocks[6].sections["LatheCycle"]
+    assert isinstance(cycle, LatheCycle) and cycle.params["chamfer"] == 0
+    moves = [m for m in blocks[6].sections["CompoundMotion"].items if isinstance(m, Motion)]  # type: ignore[attr-defined]
+    pulls = [m for before, m in zip(moves, moves[1:]) if m.mode == "thread" and m.axes["X"] != before.axes["X"]]
+    assert any(m.mode == "thread" for m in moves) and pulls == []  # every pass along Z only: a square exit
+    with pytest.raises(ErrorList, match="pulls out beyond the start point's X"):
+        read_program(io.StringIO(head + "M24\nM23\n" + g76 + "M30\n"), file="in.nc", dialect="fanuc", setup=haas)
+
+
+def test_haas_m24_needs_no_equivalent_elsewhere_the_cycle_carries_it() -> None:
+    """Towards LinuxCNC the G76 after M24 is written without its pull-out, and M24 stays as a comment (another
+    family has no such code, and needs none); back to Haas it stays M24."""
+    haas = load_setup(str(ROOT / "examples" / "setups" / "haas_st10_lathe.xml"))
+    program = "G00 G18 G20 G99\nT0303\nG97 S1000 M03\nG00 X1.5 Z0.1\nG00 X0.6\nM24\n" \
+              "G76 X0.4069 Z-1.57 K0.043075 D0.01076875 F0.07692308\nM05\nM30\n"
+    ngc = _write(program, "linuxcnc", haas)
+    assert "(M24: thread pull-out chamfer off, in the threading cycles' words)" in ngc.splitlines()
+    report = verify_lines(io.StringIO(program), io.StringIO(ngc), file_in="in.nc", file_out="out.ngc",
+                          source="fanuc", target="linuxcnc", setup=haas, tolerance=1e-5)  # G76's depths: 6 decimals
+    assert report.ok, report.summary()
+    assert _write(program, "fanuc", haas) == program
