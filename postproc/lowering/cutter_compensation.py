@@ -354,6 +354,8 @@ class _Resolver:
     # -- one block -----------------------------------------------------------------------------------
     def block(self, block: Block) -> None:
         sections = block.sections
+        if "ToolChange" in sections:
+            self.cutter.tool_change()  # the simulation's check, before the block's own G40/G41/G42
         self._modal(sections)
         cc = sections.get("CutterCompensation")
         if isinstance(cc, CutterCompensation) and self.keeps is not None and self._idle() \
