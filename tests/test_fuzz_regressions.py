@@ -101,13 +101,18 @@ _M6_UNDER_COMP = ("a tool change (M6) with cutter compensation on (rs274 changes
                   "G40: \"Cannot change tools with cutter radius compensation on\"; program G40 in a block before)")
 
 
+_M6_SOURCE = "t.nc:3:1: error: a tool change with cutter compensation on cannot be run (cancel it first)"
+
+
 @pytest.mark.parametrize("body, message", [
     ("G41 D1 G01 X5. F100.\nG49\n", "t.nc:3:1: error: the linuxcnc dialect cannot express a change of tool length "
                                     "offset with cutter compensation on (rs274 refuses it: program G40 first)"),
     ("G41 D01 G28\n", "t.nc:2:1: error: the linuxcnc dialect cannot express G28/G30 with cutter compensation on "
                   "(rs274: \"Cannot use g28 or g30 with cutter radius comp\")"),
-    ("T1 G41 D01\nM06\n", "t.nc:3:1: error: the linuxcnc dialect cannot express " + _M6_UNDER_COMP),
-    ("T1 G41 D01\nG40 M06\n", "t.nc:3:1: error: the linuxcnc dialect cannot express " + _M6_UNDER_COMP),
+    # the simulation's own refusal first (``CutterRadius.tool_change``, which the lowering runs too since
+    # issue 26's comp26), then the target's
+    ("T1 G41 D01\nM06\n", (_M6_SOURCE, "t.nc:3:1: error: the linuxcnc dialect cannot express " + _M6_UNDER_COMP)),
+    ("T1 G41 D01\nG40 M06\n", (_M6_SOURCE, "t.nc:3:1: error: the linuxcnc dialect cannot express " + _M6_UNDER_COMP)),
     ("G41 D01\nG19\n", ("t.nc:3:1: error: the plane cannot change to YZ while cutter compensation is on (cancel it "
                     "first)",  # Fanuc's own alarm (its rules are modelled), then the target's
                     "t.nc:3:1: error: the linuxcnc dialect cannot express a change to the YZ plane with cutter "

@@ -15,8 +15,11 @@ located error. A source whose rules are not modelled leaves its G41/G42 to the w
 which refuses them.
 
 What the simulation refuses under compensation (a canned cycle, a move in machine coordinates, a
-reference return, a plane the rules do not compensate in, a start point not known) is a located error here
-too. In the ZX plane (G18) the plane's points are (Z, X), as the simulation has them.
+reference return, a plane the rules do not compensate in, a start point not known, a tool change) is a located
+error here too. The exit move in machine coordinates (``G40`` then ``G53 G0 Z0``) takes the plane's axes back
+to the programmed point: they are written as its machine position from the set-up's ``<WorkOffsets>``
+(``_exit_in_machine``). A copy within one dialect keeps its compensation, but its path is computed all the same
+(``_Resolver.check``), so the copy refuses what the simulation refuses. In the ZX plane (G18) the plane's points are (Z, X), as the simulation has them.
 
 On a lathe (the ZX plane) the path is the imaginary tool tip's, as the simulation writes it: the nose
 centre one nose radius beside the programmed path, moved by the radius in the tip's direction
@@ -68,6 +71,7 @@ from ..compensation.nose import TIPS, mirrored
 from ..compensation.geometry_for import cutter_for
 from ..compensation.rules import CutterRules
 from ..compensation.tool_table import ToolTable
+from ..simulate.work_offsets import declared_offsets, offset_beyond_frame
 from ..state import PLANE_AXES
 from .inverse_time import move_length
 from .rule_trial import STAND_IN_RADIUS, STRETCH_LIMIT, RuleTrial
@@ -88,7 +92,7 @@ _MODAL: Final = frozenset(("Units", "DistanceMode", "Plane", "DataSetting", "Wor
                            "ToolChange", "ToolLengthOffset", "FeedMode"))
 """Settings the resolver keeps while no compensation is on (a block with none of them, and no G41/G42, is
 only a move to track, or passes untouched)."""
-_NOT_PLAIN: Final = _MODAL | {"CutterCompensation", "DynamicCutterCompensation"}
+_NOT_PLAIN: Final = _MODAL | {"CutterCompensation", "DynamicCutterCompensation", "CoordinateSet"}
 """A block with one of these goes the general way even while no compensation is on (``_Resolver.block``)."""
 _NOT_TRACKED: Final = frozenset(("MachineCoordinates", "CompoundMotion"))
 """A block with one of these is not a plain move to track (``_Resolver._track`` says where it leaves the tool)."""
@@ -226,6 +230,10 @@ class _Resolver:
         self.absolute = True
         self.plane = "ZX" if ctx.lathe else "XY"
         self.work_offset = 1
+        self.shifted = False
+        """A coordinate setting (G92) was read: a machine position is then not the point plus the work offset."""
+        self.programmed_offsets: dict[int, dict[str, float]] = {}
+        """The work systems and axes whose offset the program set (G10 L2): the set-up's is not in force there."""
         self.selected: int | None = None
         self.spindle_tool: int | None = None
         self.last_register: int | None = None
@@ -523,6 +531,8 @@ class _Resolver:
                                        "compensation cannot be resolved")
 
     def _modal(self, sections: dict[str, Section]) -> None:
+        if "CoordinateSet" in sections:
+            self.shifted = True
         units = sections.get("Units")
         if isinstance(units, Units):
             scale = MM_PER_INCH if units.system == "inch" else 1.0
@@ -541,6 +551,8 @@ class _Resolver:
         if isinstance(setting, DataSetting):
             if setting.table.startswith("work_offset"):
                 self._origin_moved()
+                self.programmed_offsets.setdefault(setting.index, {}).update(
+                    {axis: 0.0 for axis in setting.values})  # (which axes: the values are the frame's now)
             else:
                 self.table.write(setting, self.scale)
         offset = sections.get("WorkOffset")
@@ -719,15 +731,9 @@ class _Resolver:
                                    "on cannot be run")
             # the first move after G40 (the exit move) in machine coordinates: [V] rs274 (LinuxCNC's
             # mmount.ngc, G40 then G53 G0 Z0) runs it straight from the compensated end to the programmed
-            # point, X and Y included; written as it is, it keeps the compensated X and Y, so it passes
-            # only where they are the programmed ones (a machine position for them needs the work offset)
-            u, v = self._in_plane(self.pos)
-            if u is None or v is None or math.dist((u, v), self.at) > 1e-9:
-                a1, a2, _ = self.cutter.axes
-                raise Unresolvable(f"a move in machine coordinates or a reference return as the first move "
-                                       f"after compensation is cancelled cannot be resolved: it also takes {a1} and "
-                                       f"{a2} from the compensated point back to the programmed one, which needs the "
-                                       "work offset (program a move in work coordinates after the cancel first)")
+            # point, X and Y included; written as it is, it keeps the compensated X and Y, so each plane axis
+            # the block does not name is written as the programmed point's machine position (``_exit_in_machine``)
+            self._exit_in_machine(block, motion)
             self.cutter.arc_banned = False
             self._track(block)
             self.out.append(block)
@@ -770,6 +776,50 @@ class _Resolver:
                 self.trial.move(seg, start)
             self.cutter.line(seg, start)
         self.pos = target
+
+    def _exit_in_machine(self, block: Block, motion: Motion) -> None:
+        """The exit move in machine coordinates (``G53 G0 Z0`` after G40): a plane axis the block does not name
+        must still go from the compensated end to the programmed point, so it is written as that point's
+        machine position: the programmed point plus the set-up's offset of the active work system (and the
+        external one), the function the simulation puts machine positions in its frame by
+        (``simulate.work_offsets``). Where that is not known (the program set the offset, the set-up gives
+        none, a reference return's intermediate point, a tool offset across the plane), a located error names
+        what is missing."""
+        names = motion.axes
+        u, v = self._in_plane(self.pos)
+        a1, a2, _ = self.cutter.axes
+        missing = [(axis, programmed) for axis, programmed, at in ((a1, u, self.at[0]), (a2, v, self.at[1]))
+                   if axis not in names and (programmed is None or abs(programmed - at) > 1e-9)]
+        if not missing:
+            return
+        needs = (f"a move in machine coordinates or a reference return as the first move after compensation is "
+                 f"cancelled cannot be resolved: it also takes {' and '.join(a for a, _ in missing)} from the "
+                 "compensated point back to the programmed one")
+        if motion.mode not in ("rapid", "linear") or self.diameters:
+            raise Unresolvable(f"{needs} (program a move in work coordinates after the cancel first)")
+        if any(programmed is None for _, programmed in missing):
+            raise Unresolvable(f"{needs}, which is not known here (program a move in work coordinates after the "
+                               "cancel first)")
+        register = self.length_register
+        if register is not None and (not isinstance(register, int) or self.table.sideways(register)):
+            raise Unresolvable(f"{needs}, in machine coordinates under a tool offset across the plane (program a "
+                               "move in work coordinates after the cancel first)")
+        if self.shifted:
+            raise Unresolvable(f"{needs}, in machine coordinates after a coordinate setting (G92) the frame holds "
+                               "(program a move in work coordinates after the cancel first)")
+        declared = declared_offsets(self.ctx.setup, ("X", "Y", "Z"), False)
+        axes = dict(names)
+        for axis, programmed in missing:
+            offset, why = offset_beyond_frame(axis, self.work_offset, self.programmed_offsets, declared)
+            if offset is None or axis in self.programmed_offsets.get(self.work_offset, {}) \
+                    or axis in self.programmed_offsets.get(0, {}):
+                raise Unresolvable(f"{needs}, which needs the work offset: {why or 'the program sets it'} (or "
+                                   "program a move in work coordinates after the cancel first)")
+            assert programmed is not None
+            axes[axis] = _noise_free((programmed + offset) / self.scale)
+        order = sorted(axes, key=lambda a: "XYZABCUVW".find(a) % 10)
+        block.sections["Motion"] = Motion(motion.mode, {a: axes[a] for a in order}, None, None)
+        block.changed()
 
     def _per_minute(self, block: Block, kind: str, target: dict[str, float | None],
                     centre: tuple[float, float] | None) -> None:
