@@ -125,3 +125,24 @@ def test_a_haas_without_the_radius_names_the_tool_to_add() -> None:
     assert [str(e) for e in caught.value.errors] == [
         't.nc:8:1: error: the set-up gives tool radius register 1 no value: add <Tool number="1" radius=".."/> to '
         "its <Tools>, or write the register in the program"]
+
+
+def test_where_the_rules_are_not_modelled_the_refusal_names_what_is_unknown() -> None:
+    """A Haas lathe's nose compensation (and an ISG program's) towards grbl: not "grbl cannot express it" (a
+    compensated path is what grbl gets where the source's rules are known) but which rules are not known."""
+    lathe = _haas()
+    lathe.input.machine_type = "lathe"
+    text = "G18 G20 G40 G98\nT0101\nG0 X1. Z0.1\nG42 G1 X0.5 Z0. F1.\nZ-1.\nG40 G0 X1.\nM30\n"
+    with pytest.raises(ErrorList) as caught:
+        translate(io.StringIO(text), io.StringIO(), file="t.nc", source="fanuc", target="grbl", setup=lathe,
+                  diagnostics=Diagnostics(warn_stream=io.StringIO()))
+    assert ("t.nc:4:1: error: cutter radius compensation (right) cannot be resolved into moves for grbl, which has "
+            "none: a Haas lathe's tool nose compensation rules are not modelled (its start-up, corner and cancel "
+            "moves: whether its settings follow Fanuc T's start-up types is not in our sources)"
+            in [str(e) for e in caught.value.errors]), caught.value.errors
+    with pytest.raises(ErrorList) as isg:
+        translate(io.StringIO("G17 G90 G0 X0 Y0\nG41 D1 G1 X10 F100\nG40 X0\nM30\n"), io.StringIO(), file="t.nc",
+                  source="isg", target="grbl", setup=with_tools(), diagnostics=Diagnostics(warn_stream=io.StringIO()))
+    assert [str(e) for e in isg.value.errors] == [
+        "t.nc:2:1: error: cutter radius compensation (left) cannot be resolved into moves for grbl, which has none: "
+        "the cutter compensation rules of the isg control are not modelled"]

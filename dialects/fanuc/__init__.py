@@ -106,6 +106,14 @@ class Fanuc(Dialect):
         return FANUC_B if setup.controller.cutter_startup == "B" else FANUC_A
 
     @classmethod
+    def cutter_rules_unknown(cls, setup: MachineSetup) -> str:
+        """A Haas lathe: which rules its tool nose compensation follows is not in our sources."""
+        if setup.controller.variant == "haas" and cls.reads_lathe(setup):
+            return ("a Haas lathe's tool nose compensation rules are not modelled (its start-up, corner and cancel "
+                    "moves: whether its settings follow Fanuc T's start-up types is not in our sources)")
+        return super().cutter_rules_unknown(setup)
+
+    @classmethod
     def pipeline_file(cls, setup: MachineSetup) -> str:
         """The lathe pipeline (profile look-ahead, lathe cycles) for a lathe set-up, else the milling one."""
         return cls.LATHE_PIPELINE_FILE if cls.reads_lathe(setup) else cls.PIPELINE_FILE

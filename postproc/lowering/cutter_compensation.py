@@ -60,7 +60,7 @@ from mypy_extensions import mypyc_attr
 from ..block_rules import ArcError, arc_centre
 from ..context import Context
 from ..control import ASSIGN, CONTROL, LABEL
-from ..dialect import Dialect
+from ..dialect import RULES_UNKNOWN_KEY, Dialect
 from ..errors import PostprocError, ProgramError, UnsupportedError
 from ..expr import Expr
 from ..ir import (Block, CompoundMotion, CutterCompensation, DataSetting, DistanceMode, Feed, FeedMode, Motion, Plane,
@@ -135,9 +135,27 @@ def resolve_cutter_compensation(blocks: Iterator[Block], ctx: Context, target: t
     if ctx.dialect == target.NAME or target.CUTTER_COMPENSATION:
         return blocks
     rules: CutterRules | None = ctx.cutter_rules  # none for a program written from the neutral IR
-    if rules is None or ctx.run_data.get(RESOLVED) is target:
+    if rules is None:
+        why = ctx.run_data.get(RULES_UNKNOWN_KEY)
+        return blocks if why is None else _refuse_unmodelled(blocks, ctx, target, str(why))
+    if ctx.run_data.get(RESOLVED) is target:
         return blocks  # (the generic step already resolved every G41/G42 for this target)
     return _Resolver(ctx, rules, diameters=_takes_diameters(ctx, target)).run(blocks)
+
+
+def _refuse_unmodelled(blocks: Iterator[Block], ctx: Context, target: type[Dialect], why: str) -> Iterator[Block]:
+    """A G41/G42 from a source whose rules are not modelled, towards a target without compensation: a located
+    error naming what is unknown (not that the target cannot express it: it is written as moves where the rules
+    are known); the section goes, so the writer does not refuse it a second time."""
+    for block in blocks:
+        cc = block.sections.get("CutterCompensation")
+        if isinstance(cc, CutterCompensation) and cc.mode != "off":
+            ctx.diagnostics.error(UnsupportedError(
+                f"cutter radius compensation ({cc.mode}) cannot be resolved into moves for {target.NAME}, which has "
+                f"none: {why}", ctx.at(block)))
+            del block.sections["CutterCompensation"]
+            block.changed()
+        yield block
 
 
 def _takes_diameters(ctx: Context, target: type[Dialect]) -> bool:
