@@ -71,7 +71,7 @@ from ..compensation.nose import TIPS, mirrored
 from ..compensation.geometry_for import cutter_for
 from ..compensation.rules import CutterRules
 from ..compensation.tool_table import ToolTable
-from ..simulate.work_offsets import declared_offsets, offset_beyond_frame
+from ..setup.work_offsets import declared_offsets, offset_beyond_frame
 from ..state import PLANE_AXES
 from .inverse_time import move_length
 from .rule_trial import STAND_IN_RADIUS, STRETCH_LIMIT, RuleTrial
@@ -800,7 +800,7 @@ class _Resolver:
         must still go from the compensated end to the programmed point, so it is written as that point's
         machine position: the programmed point plus the set-up's offset of the active work system (and the
         external one), the function the simulation puts machine positions in its frame by
-        (``simulate.work_offsets``). Where that is not known (the program set the offset, the set-up gives
+        (``setup.work_offsets``). Where that is not known (the program set the offset, the set-up gives
         none, a reference return's intermediate point, a tool offset across the plane), a located error names
         what is missing."""
         names = motion.axes
@@ -823,7 +823,7 @@ class _Resolver:
             raise Unresolvable(f"{needs}, in machine coordinates under a tool offset across the plane (program a "
                                "move in work coordinates after the cancel first)")
         if self.shifted:
-            raise Unresolvable(f"{needs}, in machine coordinates after a coordinate setting (G92) the frame holds "
+            raise Unresolvable(f"{needs}, in machine coordinates after a coordinate setting the frame holds "
                                "(program a move in work coordinates after the cancel first)")
         declared = declared_offsets(self.ctx.setup, ("X", "Y", "Z"), False)
         axes = dict(names)
