@@ -273,6 +273,12 @@ class Dialect:
         return cls.CUTTER_RULES
 
     @classmethod
+    def cutter_rules_unknown(cls, setup: MachineSetup) -> str:
+        """Why ``cutter_rules`` gives none under ``setup``: what a refusal to resolve the compensation into
+        moves names as unknown."""
+        return f"the cutter compensation rules of the {cls.NAME} control are not modelled"
+
+    @classmethod
     def reads_lathe(cls, setup: MachineSetup) -> bool:
         """Whether a program is read (and written) with lathe meanings under ``setup``."""
         types = cls.MACHINE_TYPES
@@ -357,6 +363,8 @@ class Dialect:
         ctx.feed_before_units = cls.FEED_BEFORE_UNITS
         ctx.cutter_rules = cls.cutter_rules(setup)
         ctx.arc_end = cls.ARC_END
+        if ctx.cutter_rules is None:
+            ctx.run_data[RULES_UNKNOWN_KEY] = cls.cutter_rules_unknown(setup)
         ctx.length_at_axis = cls.LENGTH_AT_PROGRAMMED_AXIS
         ctx.lathe_turret = cls.LATHE_TURRET
         ctx.peck_clearance_mm = cls.PECK_CLEARANCE_MM
@@ -377,6 +385,9 @@ class Dialect:
 
 INVERSE_TIME_KEY = "inverse_time"
 """``Context.run_data`` key, set when the reading dialect has G93 (``Dialect.INVERSE_TIME_FEED``)."""
+RULES_UNKNOWN_KEY = "cutter_rules_unknown"
+"""``Context.run_data`` key: why the reading dialect's cutter compensation rules are not modelled under the set-up
+(``Dialect.cutter_rules_unknown``), set only then."""
 
 
 def _package_folder(package: str) -> Path | None:

@@ -3,12 +3,15 @@
 program goes on with ``G00 G53 Z0``). [V] rs274 runs that G53 move straight from the compensated end of
 the last move to the programmed point, X and Y included (the exit move): the resolver used to call it "a
 move in machine coordinates with cutter compensation on" (an internal contradiction: compensation was off).
-Written as it is, it would keep the compensated X and Y, so it passes only where they are the programmed
-ones (a zero radius), and is refused by name otherwise, never written to end elsewhere."""
+Written as it is, it would keep the compensated X and Y, so it passes as it is only where they are the programmed
+ones (a zero radius); otherwise each such axis is written as the programmed point's machine position where the
+set-up's ``<WorkOffsets>`` give it (comp26), and the move is refused by name where they do not, never written to
+end elsewhere."""
 
 from __future__ import annotations
 
 import io
+from typing import Any
 
 import pytest
 
@@ -60,3 +63,40 @@ def test_an_exit_in_machine_coordinates_that_moves_only_z_is_written_as_it_is() 
     report = verify_lines(_lines(PROGRAM), _lines(gcode), file_in="t.ngc", file_out="t.gcode", source="linuxcnc",
                           target="grbl", setup=with_tools(lengths={4: 50.0}, radii={4: 0.0}))
     assert report.ok, report.summary()
+
+
+def _with_offsets(radius: float, **offset: float) -> Any:
+    from postproc.setup.machine import WorkOffsetData
+    setup = with_tools(lengths={4: 50.0}, radii={4: radius})
+    setup.work_offsets = {"1": WorkOffsetData(number=1, **offset)}
+    return setup
+
+
+def test_an_exit_in_machine_coordinates_is_written_with_the_set_up_work_offset() -> None:
+    """With the set-up's G54 offset (X -400, Y -250) the exit move is written whole: the last hole (centre (40,
+    20), the tool inside it on the left of a counter-clockwise helix) ends compensated at (40, 23 - 1.5); the G53
+    move goes from there to the programmed point (40, 23): X is already there, Y's machine position is 23 - 250 =
+    -227, at machine Z0."""
+    setup = _with_offsets(1.5, x=-400.0, y=-250.0, z=-300.0)
+    out = io.StringIO(newline="")
+    translate(_lines(PROGRAM), out, file="t.ngc", source="linuxcnc", target="grbl", setup=setup,
+              diagnostics=Diagnostics(ErrorLevel.RAISE, warn_stream=io.StringIO()))
+    gcode = out.getvalue()
+    exit_move = [line for line in gcode.splitlines() if "G53" in line]
+    assert exit_move == ["G53 G0 Y-227. Z0."], gcode
+    report = verify_lines(_lines(PROGRAM), _lines(gcode), file_in="t.ngc", file_out="t.gcode", source="linuxcnc",
+                          target="grbl", setup=setup)
+    assert report.ok, report.summary()
+
+
+def test_an_exit_in_machine_coordinates_without_the_offset_it_needs_names_it() -> None:
+    setup = _with_offsets(1.5, x=-400.0)  # no Y for G54
+    with pytest.raises(ErrorList) as info:
+        translate(_lines(PROGRAM), io.StringIO(), file="t.ngc", source="linuxcnc", target="grbl", setup=setup,
+                  diagnostics=Diagnostics(ErrorLevel.RAISE, warn_stream=io.StringIO()))
+    assert [str(e) for e in info.value.errors] == [
+        "t.ngc:14:1: error: a move in machine coordinates or a reference return as the first move after compensation "
+        "is cancelled cannot be resolved: it also takes Y from the compensated point back to the programmed one, "
+        "which needs the work offset: the set-up gives work system 1 no offset for Y (<WorkOffsets><Offset "
+        "number=\"1\" y=...>) and the program sets none (or program a move in work coordinates after the cancel "
+        "first)"]

@@ -2,8 +2,9 @@
 
 Memory B, Fanuc -> Fanuc: a G41 start-up move along +X followed by a move straight back turns the compensated path
 back on itself. The simulation refuses it at its line (interference) and so does every translation that resolves or
-re-spells the compensation; a copy within Fanuc keeps it native and writes the program unchanged, whose own errors
-verify then reports on both sides (listed in ``tests/support/fuzzing.KNOWN_DEFECTS``: not fixed).
+re-spells the compensation; a copy within Fanuc, which keeps it native, was written unchanged with exit 0 and verify
+then reported the source's own errors on both sides (a known defect until issue 26's comp26): it is refused at its
+line too now, by the same geometry (``lowering.cutter_compensation._Resolver.check``).
 """
 
 from __future__ import annotations
@@ -45,9 +46,41 @@ def test_the_reversal_is_refused_at_its_line_by_other_targets(target: str) -> No
     assert str(caught.value.errors[0]) == INTERFERENCE
 
 
-def test_a_fanuc_copy_keeps_the_program_and_the_fuzz_lists_it_as_known() -> None:
-    assert _translate("fanuc") == REVERSAL
+@pytest.mark.parametrize("target", ["fanuc", "linuxcnc", "grbl", "isg", "siemens"])
+def test_the_reversal_is_refused_at_its_line_by_every_target_the_copy_included(target: str) -> None:
+    if target not in default_registry().dialects:
+        pytest.skip(f"the {target} plugin is not installed")
+    with pytest.raises(ErrorList) as caught:
+        _translate(target)
+    assert [str(e) for e in caught.value.errors] == [INTERFERENCE]
+
+
+def test_the_fuzz_no_longer_lists_the_copy_as_known() -> None:
     message = ("translated, but verify fails: " + INTERFERENCE + "\nout.nc:4:1: error: a move that turns back on "
                "itself under cutter compensation (interference)")
-    assert known_defect("fanuc", message) is not None
-    assert known_defect("fanuc", "translated, but verify fails: " + INTERFERENCE) is None  # only both sides alike
+    assert known_defect("fanuc", message) is None
+
+
+CANCEL_AT_ONCE = "G21 G17 G90 G94\nG0 X0. Y0. Z50.\nG41 D03 G1 X5. Y0. F200.\nG40 X10.\nM30\n"
+"""A cancel right after the start-up move: Fanuc's rules (type A) do not say where that start-up move ends."""
+
+
+def test_a_copy_refuses_what_the_simulation_cannot_simulate_at_the_same_line() -> None:
+    with pytest.raises(ErrorList) as simulated:
+        list(toolpath_events(io.StringIO(CANCEL_AT_ONCE), file="in.nc", dialect="fanuc", setup=memory_setup("B")))
+    with pytest.raises(ErrorList) as copied:
+        translate(io.StringIO(CANCEL_AT_ONCE), io.StringIO(), file="in.nc", source="fanuc", target="fanuc",
+                  setup=memory_setup("B"), diagnostics=Diagnostics(warn_stream=io.StringIO()))
+    assert [str(e) for e in copied.value.errors] == [str(simulated.value.errors[0])]
+    assert str(simulated.value.errors[0]).startswith("in.nc:4:1: error: cutter compensation cancelled right after "
+                                                     "its start-up move cannot be simulated")
+
+
+def test_a_copy_the_check_cannot_follow_passes_unchanged() -> None:
+    """A subprogram call under compensation: the check cannot follow the call (its moves are not in the
+    stream), so it stops without a word and the copy is the program."""
+    text = "G21 G17 G90 G94\nG0 X0. Y0. Z50.\nG41 D03 G1 X5. Y0. F200.\nM98 P100\nX-5.\nG40 G0 X0. Y0.\nM30\n"
+    out = io.StringIO()
+    translate(io.StringIO(text), out, file="in.nc", source="fanuc", target="fanuc", setup=memory_setup("B"),
+              diagnostics=Diagnostics(warn_stream=io.StringIO()))
+    assert out.getvalue() == text

@@ -18,7 +18,7 @@ from hypothesis import strategies as st
 
 from postproc.compensation.cutter_radius import Segment
 from postproc.compensation.geometry_for import cutter_for
-from postproc.compensation.rules import FANUC_A, FANUC_B, FANUC_T, FANUC_T_B
+from postproc.compensation.rules import FANUC_A, FANUC_B, FANUC_T, FANUC_T_B, HAAS_A
 from postproc.errors import ErrorList, ProgramError, UnsupportedError
 from postproc.setup.machine_setup import MachineSetup
 from postproc.simulate.toolpath import toolpath_events
@@ -285,7 +285,7 @@ def test_the_set_up_chooses_start_up_type_b_and_its_unread_cancel_is_refused() -
     assert Fanuc.cutter_rules(lathe) is FANUC_T_B
     haas = with_tools()
     haas.controller.variant = "haas"
-    assert Fanuc.cutter_rules(haas) is None  # Haas: its own settings, not modelled
+    assert Fanuc.cutter_rules(haas) is HAAS_A  # a Haas mill: its settings 43 and 58 (tests/test_haas_cutter_compensation.py)
     text = HEAD.format(x="0", y="0") + "G42 D1 G1 X10. F100.\nX20. Y10.\nX30. Y20.\nG40 X40.\nM30\n"
     with pytest.raises(ErrorList) as info:
         list(toolpath_events(io.StringIO(text), file="t.nc", dialect="fanuc", setup=setup))

@@ -10,6 +10,7 @@ import pytest
 from postproc.api import translate
 from postproc.errors import Diagnostics, ErrorList
 from postproc.setup.machine_setup import InputSettings, MachineSettings, MachineSetup
+from postproc.simulate.toolpath import toolpath_events
 from postproc.simulate.verify import verify_lines
 from tests.support.tools import with_tools
 
@@ -100,13 +101,18 @@ _M6_UNDER_COMP = ("a tool change (M6) with cutter compensation on (rs274 changes
                   "G40: \"Cannot change tools with cutter radius compensation on\"; program G40 in a block before)")
 
 
+_M6_SOURCE = "t.nc:3:1: error: a tool change with cutter compensation on cannot be run (cancel it first)"
+
+
 @pytest.mark.parametrize("body, message", [
     ("G41 D1 G01 X5. F100.\nG49\n", "t.nc:3:1: error: the linuxcnc dialect cannot express a change of tool length "
                                     "offset with cutter compensation on (rs274 refuses it: program G40 first)"),
     ("G41 D01 G28\n", "t.nc:2:1: error: the linuxcnc dialect cannot express G28/G30 with cutter compensation on "
                   "(rs274: \"Cannot use g28 or g30 with cutter radius comp\")"),
-    ("T1 G41 D01\nM06\n", "t.nc:3:1: error: the linuxcnc dialect cannot express " + _M6_UNDER_COMP),
-    ("T1 G41 D01\nG40 M06\n", "t.nc:3:1: error: the linuxcnc dialect cannot express " + _M6_UNDER_COMP),
+    # the simulation's own refusal first (``CutterRadius.tool_change``, which the lowering runs too since
+    # issue 26's comp26), then the target's
+    ("T1 G41 D01\nM06\n", (_M6_SOURCE, "t.nc:3:1: error: the linuxcnc dialect cannot express " + _M6_UNDER_COMP)),
+    ("T1 G41 D01\nG40 M06\n", (_M6_SOURCE, "t.nc:3:1: error: the linuxcnc dialect cannot express " + _M6_UNDER_COMP)),
     ("G41 D01\nG19\n", ("t.nc:3:1: error: the plane cannot change to YZ while cutter compensation is on (cancel it "
                     "first)",  # Fanuc's own alarm (its rules are modelled), then the target's
                     "t.nc:3:1: error: the linuxcnc dialect cannot express a change to the YZ plane with cutter "
@@ -396,16 +402,17 @@ def test_a_source_with_cr_line_ends_reaches_linuxcnc_with_lf() -> None:
 
 
 
-def test_a_copy_that_fails_to_run_as_its_source_does_is_no_failed_translation() -> None:
-    """Hypothesis (mach3 -> mach3): ``G41`` with no register before any tool change is copied as it stands
-    (a copy is not run), and neither side can be simulated (which tool is in the spindle is not known): verify
-    fails the same way at the same place on both sides, which the fuzz test excuses for a copy
-    (``same_run_error``); an output that failed otherwise would not be excused."""
+def test_a_copy_that_fails_to_run_as_its_source_does_is_refused_as_the_simulation_refuses_it() -> None:
+    """Hypothesis (mach3 -> mach3): ``G41`` with no register before any tool change (which tool is in the spindle
+    is not known). A copy keeps compensation native, and was written as it stands while verify then failed the
+    same way on both sides (which the fuzz test excused for a copy, ``same_run_error``); since issue 26's comp26
+    the copy computes the compensated path as the simulation does and refuses it with the simulation's error."""
     from tests.support.fuzzing import check_translation
-    from tests.support.generators.isg_fragments import same_run_error
 
-    program = "G21 G90 G0 X0. Y0. Z10.\nG41\n"
-    with pytest.raises(AssertionError) as caught:
-        check_translation("mach3", "mach3", program, MachineSetup(), False)
-    assert same_run_error("mach3", str(caught.value))
-    assert not same_run_error("mach3", str(caught.value).replace("out.nc:2:1: error: cutter", "out.nc:2:1: error: a"))
+    program = "G21 G90 G0 X0. Y0. Z10.\nG41\nG1 X10. F100.\nM30\n"
+    assert check_translation("mach3", "mach3", program, MachineSetup(), False) == "refused"
+    with pytest.raises(ErrorList) as simulated:
+        list(toolpath_events(io.StringIO(program), file="in.nc", dialect="mach3", setup=MachineSetup()))
+    with pytest.raises(ErrorList) as copied:
+        translate(io.StringIO(program), io.StringIO(), file="in.nc", source="mach3", target="mach3")
+    assert [str(e) for e in copied.value.errors] == [str(simulated.value.errors[0])]

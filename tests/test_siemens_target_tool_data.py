@@ -75,14 +75,27 @@ def test_a_radius_whose_d_brings_the_length_in_force_stays_g41() -> None:
 
 
 def test_a_d_that_cannot_carry_both_registers_names_the_register_to_set() -> None:
-    """A Haas's compensation rules are not modelled (its settings choose among them), so the path cannot be
-    resolved: H1 is 100 mm long, register 19 (the radius) 7 mm, and one D cannot give the length of the one and
-    the radius of the other."""
+    """Fagor's compensation rules are not modelled, so the path cannot be resolved: the program runs with no
+    length offset (Fagor's D brings its length only under G43), register 19 (the radius) is 7 mm long, and one
+    SINUMERIK D cannot give the radius of the one without the length. (A Haas mill, the example here before,
+    has its rules modelled since issue 26's comp26: its path is resolved.)"""
+    with pytest.raises(ErrorList) as caught:
+        _translate("G71 G90\nG42 D19 G01 X0. Y0. F100.\nM30\n", "fagor")
+    assert [str(e) for e in caught.value.errors] == [
+        "in.nc:2:5: error: D19 selects the length and the radius together, and its length (7 mm) is not the zero "
+        "the program runs with (no length offset): give register 19 that length in the set-up's <Tools>, or use one "
+        "register for both"]
+
+
+def test_a_haas_d_that_cannot_carry_both_registers_is_written_as_the_compensated_path() -> None:
+    """The same Haas program from a known start point: H1 is 100 mm long, register 19 (radius 4) 7 mm, so the
+    path is resolved under the Haas rules (start-up type A: the start-up move ends square to the next move,
+    along +X, at its start: 4 mm to its right, (0, -4); the last move ends square to itself at (20, -4)) and
+    verified."""
     haas = _setup()
     haas.controller.variant = "haas"
-    with pytest.raises(ErrorList) as caught:
-        _translate("G21 G90\nG43 H01 Z50.\nG42 D19 G01 X0. Y0. F100.\nM30\n", "fanuc", haas)
-    assert [str(e) for e in caught.value.errors] == [
-        "in.nc:3:5: error: D19 selects the length and the radius together, and its length (7 mm) is not the length "
-        "of register 1 (100 mm) in force: give register 19 that length in the set-up's <Tools>, or use one register "
-        "for both"]
+    text = "G21 G90\nG0 X-20. Y0.\nG43 H01 Z50.\nG42 D19 G01 X0. Y0. F100.\nX20.\nG40 X30.\nM30\n"
+    out = _translate(text, "fanuc", haas)
+    assert "G42" not in out and "X0. Y-4." in out.replace("X0 ", "X0. "), out
+    assert verify_lines(io.StringIO(text), io.StringIO(out), file_in="in.nc", file_out="out", source="fanuc",
+                        target="siemens", setup=haas).ok

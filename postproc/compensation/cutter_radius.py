@@ -153,6 +153,15 @@ class CutterRadius:
         self.axes = PLANE_AXES[plane]
         self.tip = (tip[0] * radius, tip[1] * radius)
 
+    def tool_change(self) -> None:
+        """A tool change (M6) is refused while compensation is on, checked against the compensation in force
+        before the block's own G40/G41/G42: [V] rs274 2.9 changes the tool of ``G41 M6 T1`` and then turns
+        compensation on, and refuses ``G40 M6 T1`` under G41 ("Cannot change tools with cutter radius
+        compensation on": the tool change comes before the compensation in its order of execution). One check
+        for the simulation and for the lowering that resolves compensation into moves."""
+        if self.side is not None:
+            raise ProgramError("a tool change with cutter compensation on cannot be run (cancel it first)")
+
     def release(self, item: Item) -> None:
         """Write a move or an event; a move the compensation made is moved to the imaginary tool tip."""
         tip = self.tip

@@ -24,7 +24,9 @@ The decision waits for the next move in the plane: at most ``CutterRules.look_ah
 motion in the plane may come between (their own position is the corner point); more is refused, as the
 controller then stops looking and the corner it makes is not modelled here.
 
-Sources of the rules and their tags are in ``rules.FANUC_A``. Angles in radians, lengths in mm.
+Sources of the rules and their tags are in ``rules.FANUC_A`` (and ``rules.HAAS_A``: a Haas runs them with
+what its manual leaves out refused, ``CutterRules.startup_arc_known``, ``acute_corner_known``,
+``exit_arc_known``). Angles in radians, lengths in mm.
 """
 
 from __future__ import annotations
@@ -129,12 +131,20 @@ class ExtendedCorners(CutterRadius):
 
     def arc(self, seg: Segment, start: Point) -> None:
         if self.arc_banned:
+            if not self.rules.exit_arc_known:
+                raise UnsupportedError(f"an arc right after cutter compensation is cancelled cannot be simulated "
+                                       f"under the rules of {self.rules.name} (how its control runs one is not in "
+                                       "our sources)")
             raise ProgramError("the move after cutter compensation is cancelled must be straight, not an arc "
                                "(alarm: circular interpolation in the cancel block)")
         if not self.on:
             self.release(seg)
             return
         if self.first:
+            if not self.rules.startup_arc_known:
+                raise UnsupportedError(f"an arc as the start-up move of cutter compensation cannot be simulated "
+                                       f"under the rules of {self.rules.name} (how its control runs one is not in "
+                                       "our sources: start it with a straight move)")
             raise ProgramError("cutter compensation cannot start with an arc (start it with a straight move)")
         assert seg.centre is not None
         e = self.in_plane(seg.end)
@@ -189,6 +199,10 @@ class ExtendedCorners(CutterRadius):
         elif t1[0] * t2[0] + t1[1] * t2[1] >= 0.0:  # outer corner of 90 degrees or more: intersection
             points = [self._meet(prev, self.prev_start, seg, op, e, t1, t2, n1, n2, outer=True)]
         else:  # acute outer corner: extended by the radius along both moves
+            if not self.rules.acute_corner_known:
+                raise UnsupportedError(f"an acute outer corner (over 270 degrees outside) cannot be simulated under "
+                                       f"the rules of {self.rules.name} (its control joins it with an extra straight "
+                                       "move whose ends are not in our sources)")
             points = [_add(op, (r, n1), (r, t1)), _add(op, (r, n2), (-r, t2))]
             if prev.turn != 0:
                 points.insert(0, _add(op, (r, n1)))

@@ -57,6 +57,12 @@ class CutterRules:
     """Blocks without motion in the plane the controller looks past to find the next move (the corner it
     makes past more is not modelled: refused). LinuxCNC's queue has no such bound (``cutter_radius``'s
     ``QUEUE_LIMIT`` bounds the memory)."""
+    startup_arc_known: bool = True
+    """Whether the rules for an arc as the start-up move are known (straight corners, ``extended_corners``:
+    Fanuc's is an alarm); when not, such an arc is refused as not simulated."""
+    acute_corner_known: bool = True
+    """Whether the moves of an acute outer corner are known (straight corners: the radius extensions and the
+    straight move between them); when not, such a corner is refused as not simulated."""
 
 
 ARC_CORNERS = CutterRules(
@@ -208,3 +214,51 @@ FANUC_T_B = CutterRules(
     profile_cycles=frozenset(("turn_finish",)),
 )
 """Fanuc T tool nose radius compensation, start-up type B (parameter SUP = 1)."""
+
+
+# Cutter compensation of a Haas mill (a Fanuc-compatible control), as its operator's manual describes it.
+# [V] Haas mill operator's manual, "Entry and Exit from Cutter Compensation" (stored page,
+#     https://staging-diy.haascnc.com/entry-and-exit-cutter-compensation-0): G41/G42 need a nonzero D; the block
+#     that turns compensation on starts at the programmed point and ends offset, the block with G40 starts
+#     offset and ends at the programmed point; a G41/G42/G40 in a block without an X-Y move takes effect at
+#     the next X or Y move.
+# [K] Haas mill operator's manual, Settings (not in the stored pages, not re-read in this session): Setting 43
+#     "Cutter Comp Type", A or B, chooses how the first compensated stroke begins and how the tool leaves the
+#     part, with figures of Fanuc's start-up types A and B (the set-up's ``cutterStartup``); Setting 58
+#     "Cutter Compensation", FANUC or YASNAC: under FANUC the control joins outside angles of at most 270
+#     degrees with a sharp corner (the offset paths meet: ``outside_corner="extend"``, as Fanuc's) and
+#     alarms where the path would overcut; over 270 degrees (an acute corner) with "an extra linear motion",
+#     whose ends the text does not give (refused: ``acute_corner_known``); under YASNAC a circular motion
+#     joins every outside angle (not modelled). [?] factory settings: 43 = A, 58 = FANUC (the rules below).
+# [?] not found for Haas: an arc as the start-up or the cancel move, more than one block without an X-Y move
+#     between two compensated moves (Fanuc's two blocks read ahead kept): refused as not simulated.
+HAAS_A = CutterRules(
+    name="Haas cutter compensation (setting 58 FANUC, setting 43 A)",
+    register_absent="modal",  # [V] the page above: G41/G42 need a nonzero D ([?] modal, as Fanuc's)
+    entry="perpendicular",  # [K] setting 43 A: Fanuc's type A
+    outside_corner="extend",  # [K] setting 58 FANUC: a sharp corner
+    corner_tolerance=1e-6,
+    arc_after_cancel=False,
+    planes=("XY",),  # [?] the manual's compensation is the X-Y plane's (the page above speaks of X-Y moves only)
+    inside_corner="meet",
+    exit_arc_known=False,
+    look_ahead=1,
+    startup_arc_known=False,
+    acute_corner_known=False,
+)
+"""A Haas mill with settings 43 = A and 58 = FANUC."""
+HAAS_B = CutterRules(
+    name="Haas cutter compensation (setting 58 FANUC, setting 43 B)",
+    register_absent="modal",
+    entry="corner",  # [K] setting 43 B: Fanuc's type B
+    outside_corner="extend",
+    corner_tolerance=1e-6,
+    arc_after_cancel=False,
+    planes=("XY",),
+    inside_corner="meet",
+    exit_arc_known=False,
+    look_ahead=1,
+    startup_arc_known=False,
+    acute_corner_known=False,
+)
+"""A Haas mill with settings 43 = B and 58 = FANUC."""

@@ -15,8 +15,11 @@ located error. A source whose rules are not modelled leaves its G41/G42 to the w
 which refuses them.
 
 What the simulation refuses under compensation (a canned cycle, a move in machine coordinates, a
-reference return, a plane the rules do not compensate in, a start point not known) is a located error here
-too. In the ZX plane (G18) the plane's points are (Z, X), as the simulation has them.
+reference return, a plane the rules do not compensate in, a start point not known, a tool change) is a located
+error here too. The exit move in machine coordinates (``G40`` then ``G53 G0 Z0``) takes the plane's axes back
+to the programmed point: they are written as its machine position from the set-up's ``<WorkOffsets>``
+(``_exit_in_machine``). A copy within one dialect keeps its compensation, but its path is computed all the same
+(``_Resolver.check``), so the copy refuses what the simulation refuses. In the ZX plane (G18) the plane's points are (Z, X), as the simulation has them.
 
 On a lathe (the ZX plane) the path is the imaginary tool tip's, as the simulation writes it: the nose
 centre one nose radius beside the programmed path, moved by the radius in the tip's direction
@@ -56,7 +59,8 @@ from mypy_extensions import mypyc_attr
 
 from ..block_rules import ArcError, arc_centre
 from ..context import Context
-from ..dialect import Dialect
+from ..control import ASSIGN, CONTROL, LABEL
+from ..dialect import RULES_UNKNOWN_KEY, Dialect
 from ..errors import PostprocError, ProgramError, UnsupportedError
 from ..expr import Expr
 from ..ir import (Block, CompoundMotion, CutterCompensation, DataSetting, DistanceMode, Feed, FeedMode, Motion, Plane,
@@ -67,6 +71,7 @@ from ..compensation.nose import TIPS, mirrored
 from ..compensation.geometry_for import cutter_for
 from ..compensation.rules import CutterRules
 from ..compensation.tool_table import ToolTable
+from ..setup.work_offsets import declared_offsets, offset_beyond_frame
 from ..state import PLANE_AXES
 from .inverse_time import move_length
 from .rule_trial import STAND_IN_RADIUS, STRETCH_LIMIT, RuleTrial
@@ -87,7 +92,7 @@ _MODAL: Final = frozenset(("Units", "DistanceMode", "Plane", "DataSetting", "Wor
                            "ToolChange", "ToolLengthOffset", "FeedMode"))
 """Settings the resolver keeps while no compensation is on (a block with none of them, and no G41/G42, is
 only a move to track, or passes untouched)."""
-_NOT_PLAIN: Final = _MODAL | {"CutterCompensation", "DynamicCutterCompensation"}
+_NOT_PLAIN: Final = _MODAL | {"CutterCompensation", "DynamicCutterCompensation", "CoordinateSet"}
 """A block with one of these goes the general way even while no compensation is on (``_Resolver.block``)."""
 _NOT_TRACKED: Final = frozenset(("MachineCoordinates", "CompoundMotion"))
 """A block with one of these is not a plain move to track (``_Resolver._track`` says where it leaves the tool)."""
@@ -105,15 +110,52 @@ _Z: Final = 4
 """The bits of ``_Resolver.noted``: the axes a plain move noted since ``pos`` was last brought up to date."""
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
+class Unresolvable(UnsupportedError):
+    """What the resolver cannot write as moves (a computed position, an axis it does not track...): a refusal of
+    the resolution, not of the program, so a copy's check (``_Resolver.check``) stops there without a word."""
+
+
+@mypyc_attr(allow_interpreted_subclasses=True)
+class UnknownHere(ProgramError):
+    """What the resolver does not know where it stands (a start point, a computed arc's centre...), though the
+    simulation, which runs the program from its start, may: a copy's check stops there without a word."""
+
+
+_UNCHECKED: Final = (Unresolvable, UnknownHere)
+_STOPS_CHECK: Final = frozenset((CONTROL, ASSIGN, LABEL))
+"""A block with one of these leaves the program's text order (a call, a jump, a computation): what follows is not
+what runs next, so a copy's check stops there."""
+_CHECK_GENERAL: Final = _NOT_NOTED | _STOPS_CHECK
+
+
 def resolve_cutter_compensation(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
     """Lowering step: G41/G42 become the compensated path for a target without cutter compensation,
     where the source dialect's rules are modelled (see the module docstring)."""
     if ctx.dialect == target.NAME or target.CUTTER_COMPENSATION:
         return blocks
     rules: CutterRules | None = ctx.cutter_rules  # none for a program written from the neutral IR
-    if rules is None or ctx.run_data.get(RESOLVED) is target:
+    if rules is None:
+        why = ctx.run_data.get(RULES_UNKNOWN_KEY)
+        return blocks if why is None else _refuse_unmodelled(blocks, ctx, target, str(why))
+    if ctx.run_data.get(RESOLVED) is target:
         return blocks  # (the generic step already resolved every G41/G42 for this target)
     return _Resolver(ctx, rules, diameters=_takes_diameters(ctx, target)).run(blocks)
+
+
+def _refuse_unmodelled(blocks: Iterator[Block], ctx: Context, target: type[Dialect], why: str) -> Iterator[Block]:
+    """A G41/G42 from a source whose rules are not modelled, towards a target without compensation: a located
+    error naming what is unknown (not that the target cannot express it: it is written as moves where the rules
+    are known); the section goes, so the writer does not refuse it a second time."""
+    for block in blocks:
+        cc = block.sections.get("CutterCompensation")
+        if isinstance(cc, CutterCompensation) and cc.mode != "off":
+            ctx.diagnostics.error(UnsupportedError(
+                f"cutter radius compensation ({cc.mode}) cannot be resolved into moves for {target.NAME}, which has "
+                f"none: {why}", ctx.at(block)))
+            del block.sections["CutterCompensation"]
+            block.changed()
+        yield block
 
 
 def _takes_diameters(ctx: Context, target: type[Dialect]) -> bool:
@@ -127,8 +169,10 @@ def resolve_dynamic_cutter_compensation(blocks: Iterator[Block], ctx: Context,
     target but the source's own dialect (see the module docstring); a G41/G42 by register is left to the
     target where it has cutter compensation, unless its modelled rules differ from the source's."""
     rules: CutterRules | None = ctx.cutter_rules
-    if ctx.dialect == target.NAME or rules is None:
+    if rules is None:
         return blocks
+    if ctx.dialect == target.NAME:
+        return blocks if ctx.lathe else _Resolver(ctx, rules, checking=True).check(blocks)
     differ = _rules_differ(rules, target, ctx)
     keeps = _native if target.CUTTER_COMPENSATION and not differ else None
     trial = target.cutter_rules(ctx.setup) if target.CUTTER_COMPENSATION and differ else None
@@ -182,8 +226,10 @@ class _Resolver:
     """The compensation state of one translation, and the blocks it has released."""
 
     def __init__(self, ctx: Context, rules: CutterRules, keeps: Keeps | None = None, diameters: bool = False,
-                 trial: CutterRules | None = None) -> None:
+                 trial: CutterRules | None = None, checking: bool = False) -> None:
         self.ctx = ctx
+        self.checking = checking
+        """Only the compensated path's errors are wanted, the blocks pass unchanged (``check``)."""
         self.diameters = diameters
         """X words are diameters in the blocks (read halved, written doubled: see the module docstring)."""
         self.rules = rules
@@ -202,6 +248,10 @@ class _Resolver:
         self.absolute = True
         self.plane = "ZX" if ctx.lathe else "XY"
         self.work_offset = 1
+        self.shifted = False
+        """A coordinate setting (G92) was read: a machine position is then not the point plus the work offset."""
+        self.programmed_offsets: dict[int, dict[str, float]] = {}
+        """The work systems and axes whose offset the program set (G10 L2): the set-up's is not in force there."""
         self.selected: int | None = None
         self.spindle_tool: int | None = None
         self.last_register: int | None = None
@@ -303,6 +353,56 @@ class _Resolver:
             yield from self._tried(True)
         yield from self.out
 
+    def check(self, blocks: Iterator[Block]) -> Iterator[Block]:
+        """A copy within one dialect keeps its compensation native: the blocks pass unchanged, but the path is
+        computed from a copy of each block as for a resolution (the same geometry the simulation runs), so
+        what the simulation refuses (a move turning back on itself, an inside arc smaller than the radius, a
+        tool change under compensation...) is refused here too, at its line. Where the resolver cannot follow
+        the program (``Unresolvable``, ``UnknownHere``, a radius the set-up lacks, a call or a jump), the check
+        stops without a word: the copy is the program, and verify says what it cannot simulate."""
+        stream = iter(blocks)
+        idle = True
+        for block in stream:
+            sections = block.sections
+            if idle:
+                general = False
+                for key in sections:
+                    if key in _CHECK_GENERAL:
+                        general = True
+                        break
+                if not general:
+                    motion = sections.get("Motion")
+                    if isinstance(motion, Motion) and self.absolute and motion.mode in MOVES:
+                        self._note(motion)
+                    elif motion is not None:
+                        self._settle()
+                        self._track(block)
+                    yield block
+                    continue
+            if not _STOPS_CHECK.isdisjoint(sections):
+                yield block
+                yield from stream
+                return
+            self._settle()
+            shadow = Block(block.line, block.text, block.eol, block.words)
+            shadow.sections = dict(sections)  # the resolver rewrites its own dictionary, never a section
+            try:
+                self.block(shadow)
+            except PostprocError as err:
+                if not isinstance(err, _UNCHECKED):
+                    self.ctx.diagnostics.error(err.located(self.ctx.at(block)) if err.location is None else err)
+                yield block
+                yield from stream
+                return
+            self.out.clear()
+            idle = self._idle()
+            yield block
+        try:
+            self.cutter.finish()
+        except PostprocError as err:
+            if not isinstance(err, _UNCHECKED):
+                self.ctx.diagnostics.error(err)
+
     # -- a stretch tried under the target's rules (``rule_trial``) -------------------------------------
     def _try(self, block: Block) -> None:
         """Hold a block of a stretch compensated by register (a stretch by a diameter is always resolved)."""
@@ -342,6 +442,8 @@ class _Resolver:
         try:
             return self.table.radius(register)
         except PostprocError as err:
+            if self.checking:
+                raise UnknownHere(err.message) from None  # the set-up's tool data: verify names it
             if self.trial is None:
                 raise
             self.trial.missing = err.located(self.ctx.at(block)) if err.location is None else err
@@ -354,6 +456,8 @@ class _Resolver:
     # -- one block -----------------------------------------------------------------------------------
     def block(self, block: Block) -> None:
         sections = block.sections
+        if "ToolChange" in sections:
+            self.cutter.tool_change()  # the simulation's check, before the block's own G40/G41/G42
         self._modal(sections)
         cc = sections.get("CutterCompensation")
         if isinstance(cc, CutterCompensation) and self.keeps is not None and self._idle() \
@@ -407,7 +511,7 @@ class _Resolver:
         elif isinstance(motion, Motion) and (motion.axes or _full_circle(motion)):
             self._move(block, motion)
         elif isinstance(motion, Motion) and motion.mode is not None and motion.mode not in MOVES:
-            raise UnsupportedError(f"motion '{motion.mode}' with cutter compensation on cannot be resolved")
+            raise Unresolvable(f"motion '{motion.mode}' with cutter compensation on cannot be resolved")
         else:
             self.cutter.event({"block": block})
             self._mirror(lambda cutter: cutter.event({}))
@@ -441,10 +545,12 @@ class _Resolver:
                     move.sections["Feed"], feed = feed, None
                 self._move(move, item)
             else:
-                raise UnsupportedError(f"a {type(item).__name__} inside a lathe cycle under tool nose radius "
+                raise Unresolvable(f"a {type(item).__name__} inside a lathe cycle under tool nose radius "
                                        "compensation cannot be resolved")
 
     def _modal(self, sections: dict[str, Section]) -> None:
+        if "CoordinateSet" in sections:
+            self.shifted = True
         units = sections.get("Units")
         if isinstance(units, Units):
             scale = MM_PER_INCH if units.system == "inch" else 1.0
@@ -463,6 +569,8 @@ class _Resolver:
         if isinstance(setting, DataSetting):
             if setting.table.startswith("work_offset"):
                 self._origin_moved()
+                self.programmed_offsets.setdefault(setting.index, {}).update(
+                    {axis: 0.0 for axis in setting.values})  # (which axes: the values are the frame's now)
             else:
                 self.table.write(setting, self.scale)
         offset = sections.get("WorkOffset")
@@ -471,7 +579,7 @@ class _Resolver:
             self._origin_moved()
         feed_mode = sections.get("FeedMode")
         if isinstance(feed_mode, FeedMode):
-            self.inverse_time = feed_mode.mode == "inverse_time"
+            self.inverse_time = feed_mode.mode == "inverse_time" and not self.checking  # (a check writes nothing)
         length = sections.get("ToolLengthOffset")
         if isinstance(length, ToolLengthOffset):
             self.length_register = length.register if length.mode == "positive" else None
@@ -483,7 +591,7 @@ class _Resolver:
 
     def _origin_moved(self) -> None:
         if not self._idle():
-            raise UnsupportedError("a change of the work origin with cutter compensation on cannot be resolved")
+            raise Unresolvable("a change of the work origin with cutter compensation on cannot be resolved")
         self.pos = {axis: None for axis in self.pos}
 
     def _nose(self) -> bool:
@@ -492,7 +600,7 @@ class _Resolver:
 
     def _register(self, register: int | Expr | None) -> int:
         if isinstance(register, Expr):
-            raise UnsupportedError("cutter compensation with a computed register cannot be resolved")
+            raise Unresolvable("cutter compensation with a computed register cannot be resolved")
         if register is None and self.rules.register_absent == "offset":  # the lathe lowering names it
             raise ProgramError("tool nose radius compensation takes the radius of the offset the T code selected, "
                                "and none is (program T with its offset number, T0101)")
@@ -582,14 +690,14 @@ class _Resolver:
         target = dict(self.pos)
         for axis, value in motion.axes.items():
             if isinstance(value, Expr):
-                raise UnsupportedError("a computed position under cutter compensation cannot be resolved")
+                raise Unresolvable("a computed position under cutter compensation cannot be resolved")
             if axis not in target:
-                raise UnsupportedError(f"motion of axis {axis} with cutter compensation on cannot be resolved")
+                raise Unresolvable(f"motion of axis {axis} with cutter compensation on cannot be resolved")
             scale = self.scale * 0.5 if axis == "X" and self.diameters else self.scale
             if self.absolute:
                 if axis in self.floating:
                     if not self._idle():
-                        raise ProgramError(f"an absolute {axis} in a compensated stretch of a program that moved by "
+                        raise UnknownHere(f"an absolute {axis} in a compensated stretch of a program that moved by "
                                            "increments from an unknown start point")
                     self.floating.discard(axis)
                 target[axis] = value * scale
@@ -641,28 +749,22 @@ class _Resolver:
                                    "on cannot be run")
             # the first move after G40 (the exit move) in machine coordinates: [V] rs274 (LinuxCNC's
             # mmount.ngc, G40 then G53 G0 Z0) runs it straight from the compensated end to the programmed
-            # point, X and Y included; written as it is, it keeps the compensated X and Y, so it passes
-            # only where they are the programmed ones (a machine position for them needs the work offset)
-            u, v = self._in_plane(self.pos)
-            if u is None or v is None or math.dist((u, v), self.at) > 1e-9:
-                a1, a2, _ = self.cutter.axes
-                raise UnsupportedError(f"a move in machine coordinates or a reference return as the first move "
-                                       f"after compensation is cancelled cannot be resolved: it also takes {a1} and "
-                                       f"{a2} from the compensated point back to the programmed one, which needs the "
-                                       "work offset (program a move in work coordinates after the cancel first)")
+            # point, X and Y included; written as it is, it keeps the compensated X and Y, so each plane axis
+            # the block does not name is written as the programmed point's machine position (``_exit_in_machine``)
+            self._exit_in_machine(block, motion)
             self.cutter.arc_banned = False
             self._track(block)
             self.out.append(block)
             return
         kind = _SEGMENT_KIND.get(motion.mode or "")
         if kind is None:
-            raise UnsupportedError(f"motion '{motion.mode}' with cutter compensation on cannot be resolved")
+            raise Unresolvable(f"motion '{motion.mode}' with cutter compensation on cannot be resolved")
         a1, a2, normal = self.cutter.axes
         start_1, start_2 = self._in_plane(self.pos)
         target = self._target(motion)
         end_1, end_2 = self._in_plane(target)
         if start_1 is None or start_2 is None or end_1 is None or end_2 is None:
-            raise ProgramError(f"the start point of a compensated move is not known (program {a1} and {a2} "
+            raise UnknownHere(f"the start point of a compensated move is not known (program {a1} and {a2} "
                                "absolutely after the origin moved)")
         end = {axis: value for axis, value in target.items() if value is not None}
         seg = Segment(kind, {"line": block.line}, end, self.pos.get(normal) or 0.0)
@@ -672,15 +774,15 @@ class _Resolver:
         if kind in ("cw", "ccw"):
             offsets = {a: v * self.scale for a, v in (motion.center or {}).items() if isinstance(v, (int, float))}
             if isinstance(motion.radius, Expr) or any(isinstance(v, Expr) for v in (motion.center or {}).values()):
-                raise UnsupportedError("a computed arc under cutter compensation cannot be resolved")
+                raise Unresolvable("a computed arc under cutter compensation cannot be resolved")
             radius = None if motion.radius is None else motion.radius * self.scale
             try:
                 c = arc_centre(start, (end_1, end_2), (a1, a2), radius, offsets, kind == "cw",
                                self.ctx.arc_end, self.scale != 1.0, self.scale)
             except ArcError as err:
-                raise ProgramError(err.message) from None
+                raise UnknownHere(err.message) from None
             if c is None:
-                raise ProgramError("a zero-length arc under cutter compensation cannot be resolved")
+                raise UnknownHere("a zero-length arc under cutter compensation cannot be resolved")
             seg.centre = seg.ccentre = c
             seg.turn = 1 if kind == "ccw" else -1
             self._per_minute(block, kind, target, c)
@@ -694,6 +796,50 @@ class _Resolver:
             self.cutter.line(seg, start)
         self.pos = target
 
+    def _exit_in_machine(self, block: Block, motion: Motion) -> None:
+        """The exit move in machine coordinates (``G53 G0 Z0`` after G40): a plane axis the block does not name
+        must still go from the compensated end to the programmed point, so it is written as that point's
+        machine position: the programmed point plus the set-up's offset of the active work system (and the
+        external one), the function the simulation puts machine positions in its frame by
+        (``setup.work_offsets``). Where that is not known (the program set the offset, the set-up gives
+        none, a reference return's intermediate point, a tool offset across the plane), a located error names
+        what is missing."""
+        names = motion.axes
+        u, v = self._in_plane(self.pos)
+        a1, a2, _ = self.cutter.axes
+        missing = [(axis, programmed) for axis, programmed, at in ((a1, u, self.at[0]), (a2, v, self.at[1]))
+                   if axis not in names and (programmed is None or abs(programmed - at) > 1e-9)]
+        if not missing:
+            return
+        needs = (f"a move in machine coordinates or a reference return as the first move after compensation is "
+                 f"cancelled cannot be resolved: it also takes {' and '.join(a for a, _ in missing)} from the "
+                 "compensated point back to the programmed one")
+        if motion.mode not in ("rapid", "linear") or self.diameters:
+            raise Unresolvable(f"{needs} (program a move in work coordinates after the cancel first)")
+        if any(programmed is None for _, programmed in missing):
+            raise Unresolvable(f"{needs}, which is not known here (program a move in work coordinates after the "
+                               "cancel first)")
+        register = self.length_register
+        if register is not None and (not isinstance(register, int) or self.table.sideways(register)):
+            raise Unresolvable(f"{needs}, in machine coordinates under a tool offset across the plane (program a "
+                               "move in work coordinates after the cancel first)")
+        if self.shifted:
+            raise Unresolvable(f"{needs}, in machine coordinates after a coordinate setting the frame holds "
+                               "(program a move in work coordinates after the cancel first)")
+        declared = declared_offsets(self.ctx.setup, ("X", "Y", "Z"), False)
+        axes = dict(names)
+        for axis, programmed in missing:
+            offset, why = offset_beyond_frame(axis, self.work_offset, self.programmed_offsets, declared)
+            if offset is None or axis in self.programmed_offsets.get(self.work_offset, {}) \
+                    or axis in self.programmed_offsets.get(0, {}):
+                raise Unresolvable(f"{needs}, which needs the work offset: {why or 'the program sets it'} (or "
+                                   "program a move in work coordinates after the cancel first)")
+            assert programmed is not None
+            axes[axis] = _noise_free((programmed + offset) / self.scale)
+        order = sorted(axes, key=lambda a: "XYZABCUVW".find(a) % 10)
+        block.sections["Motion"] = Motion(motion.mode, {a: axes[a] for a in order}, None, None)
+        block.changed()
+
     def _per_minute(self, block: Block, kind: str, target: dict[str, float | None],
                     centre: tuple[float, float] | None) -> None:
         """Under G93, the block's feed per minute: F times its programmed length (see the module docstring)."""
@@ -701,11 +847,11 @@ class _Resolver:
             return
         feed = block.sections.get("Feed")
         if not isinstance(feed, Feed) or isinstance(feed.value, Expr):
-            raise ProgramError("an inverse-time move without its F under cutter compensation")
+            raise UnknownHere("an inverse-time move without its F under cutter compensation")
         start = {a: v for a in "XYZ" if (v := self.pos.get(a)) is not None}
         end = {a: v for a in "XYZ" if (v := target.get(a)) is not None}
         if len(start) < 3 or len(end) < 3:
-            raise ProgramError("the start point of a compensated inverse-time move is not known (program X, Y and "
+            raise UnknownHere("the start point of a compensated inverse-time move is not known (program X, Y and "
                                "Z absolutely first)")
         length = move_length(start, end, self.plane, "linear" if kind == "feed" else kind, centre)
         block.sections["Feed"] = Feed(feed.value * length / self.scale)
@@ -766,7 +912,7 @@ class _Resolver:
             cc = seg.ccentre
             off = abs(math.hypot(self.at[0] - cc[0], self.at[1] - cc[1]) - math.hypot(xy[0] - cc[0], xy[1] - cc[1]))
             if off > ARC_OFF_MM and off > ARC_OFF_RATIO * math.hypot(xy[0] - cc[0], xy[1] - cc[1]):
-                raise UnsupportedError(f"the compensated arc starts {off:.4f} mm off its circle (the source controller "
+                raise Unresolvable(f"the compensated arc starts {off:.4f} mm off its circle (the source controller "
                                        "joins it to a nearly tangent move without a corner and runs it so; written as "
                                        "an arc, the target refuses it)", self.ctx.at(block))
             center = {a1: (cc[0] - self.at[0]) / scale, a2: (cc[1] - self.at[1]) / scale}

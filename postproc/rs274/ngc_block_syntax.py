@@ -179,6 +179,7 @@ class NgcWordBlockSyntax(WordBlockSyntax):
             raise ProgramError(f"G{home[3]} with no axis word moves every axis to the position stored on the machine "
                                f"(by G{home[3]}.1 or its settings), which the program does not give: name the axes "
                                "it returns", ctx.at(block, col_of_word(block, "G", home[3])))
+        before = extra.get(_LOADED_KEY, _NONE_LOADED)
         if any(self.CODES.m.get(number, ("", None))[0] == "tool_change" for number, _ in mcodes):
             selected = values["T"] if "T" in values else state.tool
             extra[_LOADED_KEY] = selected if isinstance(selected, (int, Expr)) else None  # M6 runs before G43
@@ -186,7 +187,7 @@ class NgcWordBlockSyntax(WordBlockSyntax):
             self._loaded_tool(block, ctx, values)
         if self.CUTTER_TAKES_LOADED_TOOL and "07" in codes and codes["07"][2] in ("left", "right") \
                 and "D" not in values:
-            self._loaded_cutter(block, ctx, values)
+            self._loaded_cutter(block, ctx, values, before)
         no_motion = extra.get(_STATE_KEY, False)
         if "01" in codes or "09" in codes:
             no_motion = codes.get("09", ("", ""))[1] == "cycle_cancel" and "01" not in codes
@@ -391,11 +392,15 @@ class NgcWordBlockSyntax(WordBlockSyntax):
                                ctx.at(block, ctx.column_of(block, "G")))
         values["H"] = tool
 
-    def _loaded_cutter(self, block: Block, ctx: Context, values: dict[str, Any]) -> None:
+    def _loaded_cutter(self, block: Block, ctx: Context, values: dict[str, Any], before: Any) -> None:
         """Cutter compensation without D takes the radius of the tool in the spindle (``_loaded_tool``): its
-        number becomes the register, so every target and the simulation take the same radius."""
-        tool = _spindle_tool(ctx)
-        if tool is None or (isinstance(tool, int) and tool == 0 and _LOADED_KEY in ctx.state.extra):
+        number becomes the register, so every target and the simulation take the same radius. In the block of a
+        tool change it is the radius of the tool *before* the change (``before``: what ``_LOADED_KEY`` held): [V]
+        rs274 2.9, ``T1 M6`` .. ``G41 M6 T2`` compensates by T1's radius (the tool changes, but G41 reads the
+        radius the interpreter held when the block began), where G43 without H takes the new tool's length."""
+        loaded = before is not _NONE_LOADED
+        tool = before if loaded else ctx.setup.machine.start_tool
+        if tool is None or (isinstance(tool, int) and tool == 0 and loaded):
             known = "not known here (no tool change before it, no startTool in the set-up's <Machine>)" \
                 if tool is None else "tool 0 (a tool change that empties the spindle: rs274 then keeps the last " \
                 "tool's radius)"
@@ -474,6 +479,10 @@ def _word_value(block: Block, ctx: Context, up: str, num: str, real: frozenset[s
         return float(num) if "." in num else int(num)
     raise ParseError(f"address {up} is not used by the {dialect} dialect",
                      ctx.at(block, ctx.column_of(block, up)))
+
+
+_NONE_LOADED: Final = object()
+"""``_LOADED_KEY`` unset: no tool change yet (the set-up's ``startTool`` is in the spindle)."""
 
 
 def _spindle_tool(ctx: Context) -> Any:

@@ -252,7 +252,8 @@ class ControllerSettings(SetupGroup):
     cutter_startup: Literal["A", "B"] = "A"
     """How cutter compensation starts on a Fanuc-family control: start-up type A, the start-up move ends
     square to the next move, or B, it ends as a corner of offset mode would (Fanuc parameter SUP, No.
-    5003#0: 0 type A, the default, 1 type B [K: B-62764EN 15.6.2]); ``postproc.compensation.rules``."""
+    5003#0: 0 type A, the default, 1 type B [K: B-62764EN 15.6.2]; on a Haas mill its setting 43, "Cutter Comp
+    Type" A or B [K: Haas mill operator's manual, settings]); ``postproc.compensation.rules``."""
 
     start_motion: Literal["rapid", "linear"] | None = None
     """The motion mode in force at power-on, before a program programs one, on a controller that has one

@@ -71,6 +71,11 @@ class Simulator(Moves):
             self.apply_modal(sections)
         if self.travel is not None:
             self.travel.settings(block)
+        if kinds & _KIND_EVENT and self.cutter is not None and "ToolChange" in sections:
+            try:  # before the block's own G40/G41/G42 (``CutterRadius.tool_change``)
+                self.cutter.tool_change()
+            except ProgramError as err:
+                raise err.located(self._at(block)) from None
         if kinds & _KIND_SETTING:
             self.record_settings(block)
             setting = sections.get("DataSetting")
@@ -96,9 +101,6 @@ class Simulator(Moves):
                     if isinstance(s.number, int):
                         self.lathe_offset(block, s.number % 100)
             if "ToolChange" in sections:
-                if self.cutter is not None and self.cutter.side is not None:
-                    raise ProgramError("a tool change with cutter compensation on cannot be run (cancel it "
-                                       "first)", self._at(block))
                 self.spindle_tool = self.modal.tool if isinstance(self.modal.tool, int) else None
                 if self.spindle in ("cw", "ccw"):
                     self.spindle_event(line, "stop", emit)
