@@ -33,7 +33,7 @@ grblHAL's table.
 
 from __future__ import annotations
 
-from typing import Any, ClassVar
+from typing import TYPE_CHECKING, Any, ClassVar
 
 from postproc.context import Context
 from postproc.control import Assign, Break, Call, Continue, Do, DoWhile, Else, ElseIf, EndIf, EndRepeat, EndWhile, \
@@ -42,7 +42,6 @@ from postproc.cycles.section import WORD_ORDER
 from postproc.dialect import Dialect
 from postproc.expr import Expr, Num
 from postproc.grbl_family.writer import GrblFamilyWriter
-from postproc.interp.structure import Structure
 from postproc.ir import Block, Motion
 from postproc.rs274.codes import CodeTable
 from postproc.rs274.expressions import ExprSpelling
@@ -52,6 +51,9 @@ from .cancels import GROUP_01
 from .codes import CODES
 from .program import GRBLHAL_SPELLING, GrblhalProgramSyntax
 from .subprograms import CONVERTED
+
+if TYPE_CHECKING:
+    from postproc.interp.structure import Structure
 
 _FLOW = (If, ElseIf, Else, EndIf, While, EndWhile, Do, DoWhile, Repeat, EndRepeat, Break, Continue, SubStart, SubEnd,
          Return)
@@ -92,8 +94,9 @@ class GrblhalWriter(GrblFamilyWriter):
         """The numbered subs whose definition is written (a call finds only those on grblHAL)."""
         self.body: str | None = None
         """The sub whose body is being written: registered on grblHAL before it runs, so it may call itself."""
-        self.flow = Structure(ctx.file, GrblhalProgramSyntax.SUBPROGRAM_RULES)
-        """The o-word statements written, nested as grblHAL nests them (its flow control stack)."""
+        self.flow: Structure | None = None
+        """The o-word statements written, nested as grblHAL nests them (its flow control stack); made at the
+        first (the structure check imports the evaluator, which a program without statements never needs)."""
 
     def write_block(self, block: Block) -> str | None:
         motion = block.sections.get("Motion")
@@ -137,13 +140,20 @@ class GrblhalWriter(GrblFamilyWriter):
             self.body = None
         own = self.source_dialect in _SAME_OWORDS or CONVERTED in self.ctx.run_data
         if isinstance(section, _FLOW) and own:
-            self.flow.statement(section, 0, block)
+            self.nest(section, block)
             return [spell_oword(section)]
         if isinstance(section, Call) and own:
             words = self.call_words(section, block)
-            self.flow.statement(section, 0, block)
+            self.nest(section, block)
             return [words]
         return super().statement_words(section, block)
+
+    def nest(self, section: Any, block: Block) -> None:
+        """An o-word statement written: nested as grblHAL nests it (``program.FLOW_STACK``, module docstring)."""
+        if self.flow is None:
+            from postproc.interp.structure import Structure
+            self.flow = Structure(self.ctx.file, GrblhalProgramSyntax.SUBPROGRAM_RULES)
+        self.flow.statement(section, 0, block)
 
     def call_words(self, call: Call, block: Block) -> str:
         """``o<n> call [..]`` after its sub's definition; from LinuxCNC with its 30 arguments (module docstring), but
