@@ -215,6 +215,16 @@ def test_a_spiral_the_target_refuses_is_a_located_error(target: str) -> None:
     assert not any(line.startswith(("G2", "G02")) for line in lines) and lines[-2].endswith("X-10.02 Y0.")
 
 
+def test_a_refused_spiral_leaves_the_next_arc_alone() -> None:
+    """After the target refuses an arc, the arc that follows it (on its own circle from the refused arc's end)
+    is not reported too: the refusal leaves the tool's place unknown, not at the refused arc's start (a
+    held-out Fusion 360 Mach3 program got a false 'not on the circle' error after each refused arc)."""
+    text = "G21 G17 G90\nG0 X10 Y0\nG1 F100\nG2 X-10.02 Y0 I-10 J0\nG2 X0 Y10.01 I10.01 J0\nM2\n"
+    with pytest.raises(ErrorList) as info:
+        _translate(text, "linuxcnc", "fanuc")
+    assert [str(e).split(": error: ")[0] for e in info.value.errors] == ["t.nc:4:15"]
+
+
 def test_an_arc_both_controllers_accept_is_written_as_it_was() -> None:
     text = "G21 G17 G90\nG0 X10 Y0\nG1 F100\nG2 X-10.005 Y0 I-10 J0\nM2\n"
     assert "G2 X-10.005 Y0. I-10. J0." in _translate(text, "linuxcnc", "grbl").replace("Y0 ", "Y0. ")

@@ -260,6 +260,8 @@ def _target_accepts(block: Block, ctx: Context, motion: Motion, target: tuple[st
     if rule.allows(r0, r1, inch):
         return
     unit = "in" if inch else "mm"
+    for axis in motion.axes:  # the block is refused: after it the tool's place is unknown to later checks
+        ctx.state.position[axis] = None
     letter = next((_CENTRE_LETTERS[a] for a in motion.center if a in _CENTRE_LETTERS), "G") if motion.center else "G"
     raise UnsupportedError(
         f"the {name} controller refuses this arc: its end radius differs from its start radius by "
