@@ -6,7 +6,9 @@ error. Random programs of such blocks, mixed with what must leave the lane (a se
 numbers, I/J/K/R beside a straight move, both arc forms, a repeated address, lower-case letters, under an
 active canned cycle anything but N and axis words), are read twice, with the lane and without it
 (``postproc.fast.reading.block_lane`` answering None): blocks, sections, warnings and errors must be the
-same, for every reading the lane is chosen for (mill and lathe).
+same, for every reading the lane is chosen for (mill and lathe; the RS274/NGC readings take their own lane,
+``postproc.fast.plain_ngc``, with its own rules: a block number first, no motion mode after a cycle cancel, a
+feed rate in force for a feed motion code, the dialect's declared hooks).
 """
 
 from __future__ import annotations
@@ -23,13 +25,14 @@ import postproc.fast.reading as reading
 from postproc.api import read_program
 from postproc.errors import ErrorList
 from postproc.fast.plain import PlainLane, PlainLatheLane
+from postproc.fast.plain_ngc import NgcPlainLane
 from postproc.ir import Block
 from postproc.plugins import default_registry
 from postproc.rs274.block_syntax import WordBlockSyntax
 from postproc.setup.machine_setup import MachineSetup
 
 CANDIDATES = (("fanuc", "mill"), ("fanuc", "lathe"), ("gsk", "lathe"), ("isg", "mill"), ("fagor", "mill"),
-              ("linuxcnc", "mill"))
+              ("linuxcnc", "mill"), ("linuxcnc", "lathe"), ("grbl", "mill"), ("grblhal", "mill"), ("mach3", "mill"))
 
 
 def _setup(machine: str) -> MachineSetup:
@@ -91,11 +94,14 @@ def programs(draw: st.DrawFn) -> list[str]:
            draw(st.sampled_from(["G1 F100.", "G0", "G2", "", "G17", "G18"]))]
     for i in range(draw(st.integers(min_value=1, max_value=10))):
         words: list[str] = []
+        number_last = False
         if draw(st.integers(min_value=0, max_value=3)):
-            words.append(draw(st.sampled_from([f"N{10 * (i + 1)}", f"N0{i + 1}", "N1.5"])))
+            words.append(draw(st.sampled_from([f"N{10 * (i + 1)}", f"N0{i + 1}", "N1.5", f"n{i + 1}"])))
+            number_last = draw(st.integers(min_value=0, max_value=7)) == 0  # RS274/NGC: N first or nowhere
         code = draw(st.sampled_from(["", "", "G1", "G01", "G0", "G00", "G2", "G02", "G3", "G03", "g1", "G4",
                                      "G17", "G90 G1", "G1 G2", "G81", "G80", "G2.5", "G001",
-                                     "G98 G81 Z-2. R1. F50."]))
+                                     "G98 G81 Z-2. R1. F50.", "G90.1", "G91.1", "G64 P0.1", "G61", "G93", "G94",
+                                     "G33 K1.", "G1 F0."]))
         if code:
             words.append(code)
         for letter in draw(st.lists(st.sampled_from("XYZUWAB"), max_size=3, unique=True)):
@@ -105,7 +111,9 @@ def programs(draw: st.DrawFn) -> list[str]:
         extra = draw(st.sampled_from(["", "", "", "F300.", "F250", "X1.", "M3", "R2. Z-3.", "x2.5"]))
         if extra:
             words.append(extra)
-        out.append(" ".join(words))
+        if number_last:
+            words.append(words.pop(0))
+        out.append(draw(st.sampled_from(["", "", "", "", " ", "/"])) + " ".join(words))
     return [line for line in out if line]
 
 
@@ -129,12 +137,16 @@ def test_the_lane_reads_what_the_general_path_reads(program: list[str], dialect:
 
 def test_the_lane_is_chosen_where_the_base_reads() -> None:
     """Fanuc's mill and lathe readings and GSK's take the lane; a reading whose class overrides a method the
-    lane skips (ISG's and Fagor's ``g_sections``) or replaces ``build`` (RS274/NGC) does not: the test above
-    would pass with no lane ever chosen."""
-    assert {("fanuc", "mill"), ("fanuc", "lathe"), ("gsk", "lathe")} <= set(READINGS)
-    assert not {("isg", "mill"), ("fagor", "mill"), ("linuxcnc", "mill")} & set(READINGS)
+    lane skips (ISG's and Fagor's ``g_sections``, grblHAL's ``_g_code``) does not: the test above would pass
+    with no lane ever chosen. LinuxCNC's, grbl's and Mach3's take the RS274/NGC lane: LinuxCNC overrides only
+    hooks its declarations select (``before_sections``, ``after_sections``, ``special_g_code``)."""
+    assert {("fanuc", "mill"), ("fanuc", "lathe"), ("gsk", "lathe"), ("linuxcnc", "mill"), ("grbl", "mill"),
+            ("mach3", "mill")} <= set(READINGS)
+    assert not {("isg", "mill"), ("fagor", "mill"), ("grblhal", "mill")} & set(READINGS)
     lathe = _syntax("fanuc", "lathe")
     assert lathe is not None and type(reading.block_lane(lathe)) is PlainLatheLane
+    ngc = _syntax("linuxcnc", "mill")
+    assert ngc is not None and type(reading.block_lane(ngc)) is NgcPlainLane
 
     class Overriding(type(_syntax("fanuc", "mill"))):  # type: ignore[misc]
         __slots__ = ()
@@ -163,6 +175,34 @@ def test_cam_blocks_take_the_lane() -> None:
     with lanes(Counted):
         read_program([line + "\n" for line in program], file="p.nc", dialect="fanuc")
     assert taken == [2, 3, 4, 5, 6, 7, 8]
+
+
+def test_ngc_cam_blocks_take_the_lane() -> None:
+    """Count the blocks the RS274/NGC lane reads: the plain ones, not a block with an M code, nor one a
+    LinuxCNC hook reads (after ``G90.1`` its arcs' centres are absolute: ``after_sections``, until ``G91.1``),
+    nor a block number that is not the first word (refused by the general path)."""
+    taken: list[int] = []
+
+    class Counted(NgcPlainLane):
+        __slots__ = ()
+
+        def read(self, block: Block, ctx: Any, words: Any) -> bool:
+            took = super().read(block, ctx, words)
+            if took:
+                taken.append(block.line)
+            return took
+
+    program = ["G21 G90 G17", "G0 X0 Y0", "N10 G01 Z-1. F300.", "N20 X10.5 Y2.25", "G02 X12 Y4 R2",
+               "N30 G3 X10 Y6 I-2 J0", "x8 y4 i0 j-2", "G1 X0 Y0 F1200", "G0 Z5 M9", "G90.1", "G2 X2 Y0 I1 J0",
+               "G91.1", "G1 X1 Y1", "Y2 N40"]
+    with lanes(Counted):
+        try:
+            read_program([line + "\n" for line in program], file="p.ngc", dialect="linuxcnc")
+        except ErrorList as err:
+            assert "p.ngc:14:" in str(err)  # the number last: refused by the general path
+        else:
+            raise AssertionError("N last was read")
+    assert taken == [2, 3, 4, 5, 6, 7, 8, 13]
 
 
 def test_modal_arc_without_centre_is_refused_where_it_is() -> None:

@@ -1,19 +1,20 @@
 """How a toolpath writes its numbers and its lines: ``toolpath.num`` against its definition on any float
 (and on the near-ties its integer path hands to ``round``), and the JSON lines encoders of a run
-(``export.event_encoder``, ``event_text.event_text``) against ``json.JSONEncoder(allow_nan=False).encode``,
+(``export.event_encoder``, ``event_text.event_text`` and ``write_lines``) against ``json.JSONEncoder(allow_nan=False).encode``,
 the definition of the format, on any event and on the events a simulation makes."""
 
 from __future__ import annotations
 
 import json
 import math
+from collections.abc import Iterator
 
 import pytest
 from hypothesis import given, settings, strategies as st
 
 from postproc.errors import ProgramError
 from postproc.commands.export import event_encoder
-from postproc.simulate.event_text import event_text, float_text
+from postproc.simulate.event_text import EventValueError, event_text, float_text, write_lines
 from postproc.simulate.toolpath import num
 
 
@@ -152,3 +153,36 @@ def test_event_text_refuses_what_is_not_finite(bad: float) -> None:
         event_text({"line": 3, "move": "feed", "x": bad}, ENCODER)
     with pytest.raises(ValueError):
         event_text({"line": 3, "move": "feed", "controlled": {"x": bad}}, ENCODER)
+
+
+@settings(max_examples=30, deadline=None)
+@given(events=st.lists(st.one_of(MOVES, EVENTS), min_size=0, max_size=40), copies=st.integers(1, 20))
+def test_write_lines_writes_each_event_as_json_does_a_chunk_at_a_time(events: list[dict[object, object]],
+                                                                      copies: int) -> None:
+    """``write_lines`` (``toolpath --format jsonl``) writes a chunk of lines at a time: the text is still json's
+    line by line, over as many chunks as the events fill (up to 800 events: three chunks and a part)."""
+    stream = events * copies
+    written: list[str] = []
+    write_lines(iter(stream), written.append, ENCODER)
+    assert "".join(written) == "".join(_json(ev) + "\n" for ev in stream)
+    assert all(chunk.count("\n") <= 256 for chunk in written)
+
+
+def test_write_lines_writes_the_lines_before_an_error() -> None:
+    """An error of the events' stream (a program error raised at its end) or of a value json refuses: every
+    line before it is written first, as line by line."""
+    def failing() -> Iterator[dict[str, object]]:
+        for i in range(300):
+            yield {"line": i, "move": "feed", "x": i / 8}
+        raise ValueError("the program had errors")
+
+    written: list[str] = []
+    with pytest.raises(ValueError, match="the program had errors"):
+        write_lines(failing(), written.append, ENCODER)
+    assert "".join(written).splitlines() == [_json({"line": i, "move": "feed", "x": i / 8}) for i in range(300)]
+    written.clear()
+    events = [{"line": i, "move": "feed", "x": float(i)} for i in range(270)] + [{"line": 270, "x": math.inf}]
+    with pytest.raises(EventValueError) as err:
+        write_lines(iter(events + [{"line": 271}]), written.append, ENCODER)
+    assert err.value.event["line"] == 270
+    assert "".join(written) == "".join(_json(ev) + "\n" for ev in events[:270])

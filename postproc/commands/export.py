@@ -10,7 +10,7 @@ from ..errors import Diagnostics, Location, ProgramError, UsageError
 from ..setup.machine_setup import MachineSetup
 from ..dialect import Dialect
 from ..drawing.backplot import Backplot
-from ..simulate.event_text import event_text
+from ..simulate.event_text import EventValueError, write_lines
 from ..simulate.toolpath import Event, start_position, toolpath_events
 
 
@@ -67,13 +67,10 @@ def write_jsonl(events: Iterable[Event], out: TextIO, file: str = "<toolpath>") 
     """One JSON object a line; strict JSON (no ``NaN``/``Infinity``): a non-finite value is an error
     at the event's source line. The text is json's (``postproc.simulate.event_text``, which hands what it
     does not write itself to json's encoder)."""
-    write = out.write
-    encode = event_encoder()
-    for ev in events:
-        try:
-            text = event_text(ev, encode)
-        except ValueError:
-            bad = ", ".join(k for k, v in ev.items() if isinstance(v, float) and not math.isfinite(v))
-            raise ProgramError(f"the toolpath has a value beyond the range of a float ({bad})",
-                               Location(file, int(ev.get("line", 1)), 1)) from None
-        write(text + "\n")
+    try:
+        write_lines(events, out.write, event_encoder())
+    except EventValueError as err:
+        ev = err.event
+        bad = ", ".join(k for k, v in ev.items() if isinstance(v, float) and not math.isfinite(v))
+        raise ProgramError(f"the toolpath has a value beyond the range of a float ({bad})",
+                           Location(file, int(ev.get("line", 1)), 1)) from None

@@ -8,8 +8,8 @@ property test. A plugin declares nothing for it.
 * ``lane``: the writer's lane (``install``), ``straight``: its shortcuts (``StraightLane``, ``CopyLane``);
   ``tests/test_straight_moves.py``.
 * ``reading``: the reading lanes (``install_reading``), ``plain``: the plain-block lane of the block syntax
-  (``tests/test_plain_blocks.py``), ``holes``: the next-hole lane of the cycle resolver
-  (``tests/test_cycle_repeat.py``).
+  and ``plain_ngc`` the RS274/NGC one (``tests/test_plain_blocks.py``), ``holes``: the next-hole lane of the
+  cycle resolver (``tests/test_cycle_repeat.py``).
 
 Nothing is imported here: a run imports the lanes it installs, with the modules they copy.
 """

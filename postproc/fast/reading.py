@@ -17,25 +17,35 @@ from ..context import BlockLane, Context, HoleLane
 from ..cycles.resolve import CannedCycleResolveSyntax
 from ..rs274.block_syntax import WordBlockSyntax
 from ..rs274.lathe_block_syntax import LatheBlockSyntax
+from ..rs274.ngc_block_syntax import NgcWordBlockSyntax
 from ..syntax import Pipeline
 from .holes import NextHoleLane
 from .lane import own_in
 from .plain import PlainLane, PlainLatheLane
+from .plain_ngc import NgcPlainLane
 
 BLOCK_METHODS: Final = ("g_sections", "m_sections", "finish_words", "_g_code", "cycle_data_letters")
 """What the block syntax's general path calls to read a block the plain-block lane reads (``PlainLane``)."""
+NGC_BLOCK_METHODS: Final = ("_check_n_first", "_g_code", "_owns", "g_sections", "_check_feed_mode_code", "m_sections",
+                            "finish_words", "cycle_data_letters")
+"""What the RS274/NGC block syntax's general path calls to read a block its lane reads (``NgcPlainLane``). Not
+among them: the dialect's hooks (``before_sections``, ``after_sections``, ``special_g_code``), which that path
+calls only for a block its declarations select, and the lane leaves such a block to it."""
 RESOLVE_METHODS: Final = ("_resolve_or_drop", "_resolve", "_letters", "_holes", "_check", "_levels", "install",
                           "expansion")
 """What the cycle resolver calls to resolve a next-hole block from its words (``NextHoleLane``)."""
 
 _WORD_BASE: Final = frozenset(WordBlockSyntax.__mro__)
 _LATHE_BASE: Final = frozenset(LatheBlockSyntax.__mro__)
+_NGC_BASE: Final = frozenset(NgcWordBlockSyntax.__mro__)
 _RESOLVE_BASE: Final = frozenset(CannedCycleResolveSyntax.__mro__)
 
 
 def block_lane(syntax: WordBlockSyntax) -> BlockLane | None:
     """The plain-block lane for ``syntax``'s run, or None (its general path reads every block)."""
     cls = type(syntax)
+    if isinstance(syntax, NgcWordBlockSyntax):
+        return NgcPlainLane(syntax) if own_in(cls, NGC_BLOCK_METHODS, _NGC_BASE) else None
     if issubclass(cls, LatheBlockSyntax):
         return PlainLatheLane(syntax) if own_in(cls, BLOCK_METHODS, _LATHE_BASE) else None
     return PlainLane(syntax) if own_in(cls, BLOCK_METHODS, _WORD_BASE) else None

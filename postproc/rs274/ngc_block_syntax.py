@@ -115,6 +115,10 @@ class NgcWordBlockSyntax(WordBlockSyntax):
             ctx.state.symbolic = True  # the reader left computed values: a program kept symbolically
             if self._computed_code(block, ctx, exprs):
                 return
+        else:
+            lane = ctx.block_lane  # the run's plain-block lane, where it applies (``postproc.fast.plain_ngc``)
+            if lane is not None and lane.read(block, ctx, words):
+                return
         codes: dict[str, tuple[str, str, object, str]] = {}
         natives: list[str] = []
         raw: dict[str, str] = {}

@@ -101,12 +101,12 @@ def _axes(ev: Event, controlled: Event | None) -> dict[str, float]:
     end: dict[str, float] = {}
     if controlled is None:
         for k, v in ev.items():
-            if k in _AXIS_KEYS:
+            if len(k) == 1 and k in _AXIS_KEYS:  # (the length first: "line", "move"... need no set look-up)
                 end[k] = _real(v)
         return end
     matched = 0
     for k, v in ev.items():
-        if k in _AXIS_KEYS:
+        if len(k) == 1 and k in _AXIS_KEYS:
             c = controlled.get(k)
             if c is None:
                 end[k] = _real(v)
@@ -163,14 +163,16 @@ def _move(ev: Event, start: dict[str, float]) -> Move:
         m.radius = _hypot(s[0] - c[0], s[1] - c[1])
         m.sweep = arc_sweep(s, e, c, kind == "cw")
         return m
-    steps: dict[str, float] = {}
+    steps: list[float] = []  # a list, not a dict's values: compiled, ``*`` of a list is its own tuple (~600 less)
     for k, v in end.items():
-        steps[k] = v - start.get(k, 0.0)
-    length = m.length = _hypot(*steps.values())  # _dist(end, start), its differences kept
+        steps.append(v - start.get(k, 0.0))
+    length = m.length = _hypot(*steps)  # _dist(end, start), its differences kept
     if length > 0:
         direction: dict[str, float] = {}
-        for k, step in steps.items():
-            direction[k] = step / length
+        i = 0
+        for k in end:
+            direction[k] = steps[i] / length
+            i += 1
         m.direction = direction
     return m
 
@@ -490,8 +492,8 @@ def _differ(a: Move | Event | None, b: Move | Event | None, report: Report) -> s
         return f"IN has {describe(a)}, OUT {describe(b)}"
     if not _same_feed(a.f, b.f):
         return f"IN feeds at F{a.f:g}, OUT at F{b.f:g} ({describe(a)})"
-    keys = set(a.end) & set(b.end)
-    dev = _hypot(*[a.end[k] - b.end[k] for k in keys])  # math.dist's norm, one list
+    b_end = b.end
+    dev = _hypot(*[v - b_end[k] for k, v in a.end.items() if k in b_end])  # the axes both have: math.dist's norm
     if a.centre is not None and b.centre is not None:
         dev = max(dev, _hypot(a.centre[0] - b.centre[0], a.centre[1] - b.centre[1]),
                   abs(a.sweep * a.radius - b.sweep * b.radius))

@@ -20,7 +20,9 @@ compiled, building a string costs ~500 instructions, an append ~50).
 from __future__ import annotations
 
 from json.encoder import encode_basestring_ascii
-from typing import Any, Callable, Final
+from typing import Any, Callable, Final, Iterable
+
+from mypy_extensions import mypyc_attr
 
 from ..geometry import PLACES
 
@@ -189,3 +191,54 @@ def event_text(event: dict[Any, Any], fallback: Callable[[Any], str]) -> str:
         return fallback(event)
     parts.append("}")
     return "".join(parts)
+
+
+_CHUNK: Final = 256
+"""Lines joined and written at once by ``write_lines``."""
+
+
+@mypyc_attr(allow_interpreted_subclasses=True)
+class EventValueError(ValueError):
+    """A value of ``event`` that JSON cannot hold (not finite): ``write_lines`` wrote the lines before it."""
+
+    def __init__(self, message: str, event: dict[Any, Any]) -> None:
+        super().__init__(message)
+        self.event = event
+
+
+def write_lines(events: Iterable[dict[Any, Any]], write: Callable[[str], object],
+                fallback: Callable[[Any], str]) -> None:
+    """Write each event as its JSON line (``event_text``) through ``write``, ``_CHUNK`` lines at a time: one join
+    and one write a chunk, not a list, a join, a concatenation and a text file's write a line (~2k
+    instructions a toolpath event). The lines before an error (from ``events`` or an event's value:
+    ``EventValueError``) are written before it propagates, as line by line."""
+    parts: list[str] = []
+    count = 0
+    try:
+        for event in events:
+            mark = len(parts)
+            try:
+                if not event:
+                    parts.append("{}")
+                else:
+                    parts.append("{")
+                    if _items_parts(event, parts, None, None):
+                        parts.append("}")
+                    else:
+                        del parts[mark:]
+                        parts.append(fallback(event))
+            except ValueError as err:
+                del parts[mark:]
+                raise EventValueError(str(err), event) from None
+            parts.append("\n")
+            count += 1
+            if count == _CHUNK:
+                text = "".join(parts)
+                parts.clear()
+                count = 0
+                write(text)
+    finally:
+        if parts:
+            text = "".join(parts)
+            parts.clear()
+            write(text)

@@ -59,7 +59,7 @@ class Simulator(Moves):
             return  # the controller runs a profile block only through its cycle
         self.out = emit
         if self.compensating:
-            emit = self._event
+            emit = self.queued
         native = sections.get("NativeCode")
         if native is not None and not native.inert:
             code = native.what.split(" ", 1)[0]
@@ -84,7 +84,7 @@ class Simulator(Moves):
             if kinds & _KIND_COMPENSATION:
                 self.compensation(block, emit)
                 if self.compensating:
-                    emit = self._event
+                    emit = self.queued
         line = block.line
         before = kinds & _KIND_EVENT != 0
         spindle: Any = None

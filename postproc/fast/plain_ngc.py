@@ -1,0 +1,167 @@
+"""The plain-block lane of the RS274/NGC reading: a CAM program's usual block, ``N.. G1 X.. Y.. F..``, read in one
+pass, as ``postproc.fast.plain`` reads it for the Fanuc family.
+
+A speed-only copy of what ``NgcWordBlockSyntax.build`` reads from such a block (the block number first, the
+words as real numbers as written, ``_check_feed_mode_code``, the family's ``g_sections`` and ``finish_words``).
+Why it pays: the NGC dialects' block syntax classes are interpreted subclasses of the compiled base, so each
+of the base's own method calls on a block goes through mypyc's glue, a Python-level call (~1.2k instructions;
+LinuxCNC's reading cost ~40k a block, ``verify`` reads every translation to LinuxCNC). ``postproc.fast.reading``
+installs it for a run only where the class reads such a block with the base's own methods, and the dialect's
+hooks (``before_sections``, ``after_sections``, ``special_g_code``) would not run for it: the lane reads their
+declarations (``OWN_CODES``, ``OWN_STATE``, ``OWN_MOTION``, ``SPECIAL_G``) and leaves a block they select to
+the general path. ``tests/test_plain_blocks.py`` holds it to the general path on random programs. It answers
+False, leaving the block as it found it, at the first word it does not handle or for a block the general path
+refuses, so that path reads the block and reports its errors.
+"""
+
+from __future__ import annotations
+
+from typing import Final
+
+from mypy_extensions import mypyc_attr
+
+from ..context import BlockLane, Context
+from ..expr import Expr
+from ..ir import Block, Feed, Motion
+from ..rs274.block_syntax import AXIS_LETTERS, CENTER_AXIS
+from ..rs274.codes import g_key
+from ..rs274.ngc_block_syntax import _STATE_KEY as NO_MOTION_KEY, NgcWordBlockSyntax
+
+_AXIS: Final = 1
+_N: Final = 2
+_F: Final = 3
+_G: Final = 4
+_ARC: Final = 5
+_UPPER: Final = {c: c.upper() for c in "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"}
+_KIND: Final = bytes(_AXIS if c in AXIS_LETTERS else _N if c == "N" else _F if c == "F" else _G if c == "G"
+                     else _ARC if c in "IJKR" else 0 for c in "ABCDEFGHIJKLMNOPQRSTUVWXYZ")
+"""What the lane does with each letter A-Z (by ``ord(letter) - 65``)."""
+_MOTION_MODES: Final = frozenset(("rapid", "linear", "cw", "ccw"))
+_FEED_MODES: Final = frozenset(("linear", "cw", "ccw"))
+_MOTION_GROUP: Final = "01"
+"""The motion codes that need a feed rate in force (``NgcWordBlockSyntax._check_feed_mode_code``)."""
+
+
+@mypyc_attr(allow_interpreted_subclasses=True)
+class NgcPlainLane(BlockLane):
+    """N (first), maybe one motion code (G0-G3), axis words, an arc's centre I/J/K or radius R, maybe F; outside
+    an active canned cycle and while a motion mode is in force."""
+
+    __slots__ = ("syntax", "real", "n_first", "codes", "own_codes", "own_state", "own_motion", "special")
+
+    def __init__(self, syntax: NgcWordBlockSyntax) -> None:
+        self.syntax = syntax
+        # the dialect's declarations, read once through the instance (a plugin's class sets them)
+        self.real = syntax.REAL_LETTERS
+        self.n_first = syntax.N_FIRST
+        self.codes = syntax.CODES
+        self.own_codes = syntax.OWN_CODES
+        self.own_state = syntax.OWN_STATE
+        self.own_motion = syntax.OWN_MOTION
+        self.special = syntax.SPECIAL_G
+
+    def read(self, block: Block, ctx: Context, words: list[tuple[str, str]]) -> bool:
+        state = ctx.state
+        extra = state.extra
+        if state.cycle is not None or extra.get(NO_MOTION_KEY, False):
+            return False  # cycle words, or axis words after a cycle cancel: the general path (which alone
+            # sets the no-motion mark; a motion code read here leaves it unset, as the general path's False)
+        for key in self.own_state:
+            if key in extra:
+                return False  # the dialect reads the block further itself (``after_sections``)
+        values = block.values
+        real = self.real
+        axes: dict[str, float | Expr] = {}
+        mode: str | None = None
+        group = ""  # the motion code's modal group, where the block has one
+        arc_words = False
+        seen = 0  # the addresses met, one bit per letter (a repeated one leaves the lane)
+        first = True
+        for letter, num in words:
+            up = _UPPER.get(letter)
+            if up is None:
+                break
+            index = ord(up) - 65
+            bit = 1 << index
+            if seen & bit:
+                break
+            seen |= bit
+            kind = _KIND[index]
+            if kind == _N:
+                if "." in num or self.n_first and not (first and _starts_with_n(block.text or "")):
+                    break  # a fractional N, or one the N-first rule looks at: the general path
+                values["N"] = int(num)
+            elif kind == _G and mode is None:
+                key = g_key(num)
+                if key in self.special or key in self.codes.refused_g:
+                    break
+                entry = self.codes.g.get(key)
+                if entry is None or entry[1] != "motion" or entry[2] not in _MOTION_MODES:
+                    break
+                group, what, arg = str(entry[0]), entry[1], entry[2]
+                own = self.own_codes
+                if group in own or what in own or isinstance(arg, str) and arg in own:
+                    break
+                mode = str(arg)
+            elif up not in real:
+                break
+            elif kind == _AXIS:
+                number: object = float(num)  # boxed once, shared by both dictionaries (compiled)
+                values[up] = axes[up] = number  # type: ignore[assignment]
+            elif kind == _F:
+                values["F"] = float(num)
+            elif kind == _ARC:
+                values[up] = float(num)
+                arc_words = True
+            else:
+                break
+            first = False
+        else:
+            if group == _MOTION_GROUP and mode in _FEED_MODES and not state.symbolic and state.feed_mode != "inverse_time":
+                feed = values["F"] if "F" in values else state.feed
+                if not isinstance(feed, Expr) and not feed:
+                    values.clear()
+                    return False  # no feed rate in force: the general path refuses it
+            if mode is None and axes:
+                mode = state.motion
+                if mode is None:
+                    values.clear()
+                    return False  # the general path explains the error
+            if mode is not None:
+                if mode in self.own_motion:
+                    values.clear()
+                    return False  # the dialect reads the block further itself (``after_sections``)
+                center: dict[str, float | Expr] | None = None
+                radius: float | Expr | None = None
+                if mode == "cw" or mode == "ccw":
+                    if "R" in values:
+                        if "I" in values or "J" in values or "K" in values:
+                            values.clear()
+                            return False  # both forms of an arc: the general path refuses it
+                        radius = values["R"]
+                    else:
+                        center = {CENTER_AXIS[k]: values[k] for k in "IJK" if k in values}
+                        if not center:
+                            values.clear()
+                            return False  # no centre: the general path refuses it
+                elif arc_words:
+                    values.clear()
+                    return False  # I/J/K/R beside a straight move: the general path refuses it
+                block.sections["Motion"] = Motion(mode, axes, center, radius)
+            elif arc_words:
+                values.clear()
+                return False  # I/J/K/R with no motion: the general path refuses it
+            if "F" in values:
+                block.sections["Feed"] = Feed(values["F"])
+            return True
+        values.clear()
+        return False
+
+
+def _starts_with_n(text: str) -> bool:
+    """The block's text starts with its number (after blanks): the N-first rule holds without looking for
+    columns (a block delete ``/`` first is left to the general path)."""
+    for ch in text:
+        if ch != " " and ch != "\t":
+            return ch == "N" or ch == "n"
+    return False
