@@ -56,7 +56,7 @@ test: install
 	if [ -f postproc/_compiled/manifest.txt ]; then \
 	  POSTPROC_PURE=1 $(BIN)/postproc --version && POSTPROC_PURE=1 $(PYTEST); fi
 
-bench: $(NATIVE)
+bench: compile
 	$(BIN)/pip install --quiet -r benchmarks/requirements.txt
 	$(BIN)/python benchmarks/run.py $(BENCH_ARGS)
 

@@ -138,8 +138,7 @@ def test_a_translation_imports_only_its_own_dialects_modules(tmp_path: Path, one
 
 
 def test_listing_the_dialects_loads_no_xml_parser(tmp_path: Path) -> None:
-    """Every module that reads or writes XML imports lxml on first use (each dialect's reader and writer
-    are imported here: the table says whether it has them)."""
+    """Every module that reads or writes XML imports lxml on first use."""
     modules = warm_modules_after(tmp_path, "dialects")
     assert "postproc.xmlio" in modules and "postproc.output.outfile" in modules  # the probe saw them imported
     assert [name for name in NOT_AT_START + ONLY_FOR_XML if loaded(modules, name)] == []
@@ -173,3 +172,13 @@ def test_no_dialect_module_imports_an_xml_parser_at_its_top() -> None:
     modules = done.stdout.splitlines()
     assert "dialects.fagor.multiple_machining" in modules and "postproc_linuxcnc.program" in modules
     assert [name for name in modules if name.split(".")[0] == "lxml"] == []
+
+
+def test_listing_the_dialects_imports_no_reader_or_writer(tmp_path: Path) -> None:
+    """The table says whether each dialect reads and writes from its declarations (``Lazy`` ones
+    unloaded): no dialect's reader or writer module is imported to list them."""
+    modules = warm_modules_after(tmp_path, "dialects")
+    assert "postproc.commands.dialect_table" in modules  # the probe saw the run
+    loaded_io = sorted(name for name in modules if name.startswith(("dialects.", "postproc_"))
+                       and name.rpartition(".")[2] in ("reader", "writer", "lathe_writer"))
+    assert loaded_io == []

@@ -102,7 +102,6 @@ def _expand(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Ite
             continue
         if repeated is None and dry:
             repeated = _run_dependent(block, ctx)
-        source = one_line(block.text or _source(block)).strip()
         del sections["CannedCycle"]
         block.changed()
         compound = sections.get("CompoundMotion")
@@ -114,8 +113,8 @@ def _expand(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Ite
                 continue
             del made
             _restore_motion_mode(compound, cycle.motion)
-            if not can_orient and _orients(compound) \
-                    and not _handle_orientation(block, compound, ctx, cycles.orientation, target, source):
+            if not can_orient and _orients(compound) and not _handle_orientation(
+                    block, compound, ctx, cycles.orientation, target, one_line(block.text or _source(block)).strip()):
                 continue
         yield block
 

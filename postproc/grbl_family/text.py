@@ -27,6 +27,8 @@ import re
 import unicodedata
 from typing import Callable, Final
 
+from mypy_extensions import mypyc_attr
+
 from postproc.comments import CommentSyntax
 
 GRBL_LINE_BUFFER_SIZE: Final = 80
@@ -106,6 +108,7 @@ def shortened(line: str) -> str:
     return "".join(out)
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class GrblLines:
     """The rules of every line written for a controller of the family (``postproc.output.line_format.LineRule``):
     ``name`` and ``controller`` name it in messages (``grbl``, ``grbl 1.1``), ``buffer_size`` is its ``LINE_BUFFER_SIZE`` (the characters kept,

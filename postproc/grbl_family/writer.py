@@ -23,12 +23,15 @@ from __future__ import annotations
 
 from typing import Any
 
+from mypy_extensions import mypyc_attr
+
 from postproc.ir import Block, ProgramControl, Section
 from postproc.rs274.writer import WordWriter
 
 from .dialect import GrblFamily
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class GrblFamilyWriter(WordWriter):
     """What grbl and grblHAL write alike (see the module docstring); each dialect's writer subclasses it."""
 

@@ -26,6 +26,8 @@ from __future__ import annotations
 import re
 from typing import TYPE_CHECKING, Callable, Protocol
 
+from mypy_extensions import mypyc_attr
+
 from ..control import CONTROL
 from ..errors import ConfigError, Location, ProgramError
 from ..ir import Block
@@ -42,6 +44,7 @@ statements and labels, macro assignments stay as written)."""
 _COMMENT = re.compile(r"\([^)]*\)?|;.*")
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class LineRule(Protocol):
     """A controller's rules for every line written to it (``Dialect.LINE_RULE``)."""
 
@@ -53,6 +56,7 @@ class LineRule(Protocol):
         its text, and why the line cannot be sent at all (None: it can)."""
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class LineFormat:
     """One translation's line formatting, wrapped around the writer's ``emit``."""
 
