@@ -22,7 +22,7 @@ point: the machine drills where the source only moved. So the written program ne
 
 from __future__ import annotations
 
-from typing import Iterator
+from typing import Iterator, Mapping
 
 from postproc.context import Context
 from postproc.dialect import Dialect
@@ -66,7 +66,7 @@ def end_cycles_before_moves(blocks: Iterator[Block], ctx: Context, target: type[
         yield block
 
 
-def _moves(sections: dict[str, object]) -> bool:
+def _moves(sections: Mapping[str, object]) -> bool:
     """Whether a block moves outside a cycle: its own hole (``CannedCycle``) and pattern (``HolePattern``)
     are the cycle's, a reference return of no axis moves nothing."""
     if "HolePattern" in sections or "CannedCycle" in sections:
