@@ -26,8 +26,9 @@ from postproc.simulate.verify import verify_lines
 from dialects.fagor import Fagor
 from dialects.fagor.cycle_end import end_cycles_before_moves
 
+HOME = {"X": -400.0, "Y": -250.0, "Z": -12.5}
 SETUP = MachineSetup()
-SETUP.travel = {a: AxisTravel(name=a, home=h) for a, h in {"X": -400.0, "Y": -250.0, "Z": -12.5}.items()}  # type: ignore[arg-type]
+SETUP.travel = {a: AxisTravel(name=a, home=h) for a, h in HOME.items()}  # type: ignore[arg-type]
 START = "G21 G90 G94 G17\nG00 X0. Y0. Z10.\nG98 G81 X5. Y5. Z-3. R2. F100.\n"
 """A Fanuc drilling cycle; Fagor writes it ``G98 G81 X5. Y5. Z2. I-3. F100.``."""
 WRITTEN = ["G17 G71 G90 G94", "G00 X0. Y0. Z10.", "G98 G81 X5. Y5. Z2. I-3. F100."]
@@ -139,7 +140,8 @@ def programs(draw: st.DrawFn) -> str:
         if kind == "native":
             code = draw(st.sampled_from(["G81", "G82", "G85", "G89"]))
             dwell = " P500" if code in ("G82", "G89") else ""
-            lines.append(f"{draw(st.sampled_from(['G98', 'G99']))} {code} X{draw(VALUE)} Y{draw(VALUE)} Z-12. R2.{dwell}")
+            level = draw(st.sampled_from(["G98", "G99"]))
+            lines.append(f"{level} {code} X{draw(VALUE)} Y{draw(VALUE)} Z-12. R2.{dwell}")
         elif kind == "expanded":
             lines.append(f"G98 {draw(st.sampled_from(['G83', 'G73']))} X{draw(VALUE)} Z-8. R2. Q3.")
         elif kind == "hole":
