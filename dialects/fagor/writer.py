@@ -54,6 +54,8 @@ from .codes import CODES, CYCLE_ALIASES
 from .cycle_words import cycle_words
 from .multiple_machining import pattern_words
 
+NATIVE = frozenset(("drill", "drill_dwell", "bore_feed", "bore_dwell_feed"))
+"""``Fagor.NATIVE_CYCLES``."""
 _CANCELS = frozenset(("rapid", "linear", "cw", "ccw"))
 _REFERENCE = frozenset(("home", "home2"))
 """Motion modes of a reference return."""
@@ -99,6 +101,19 @@ class FagorWriter(WordWriter):
                 and (motion.mode in _REFERENCE or "MachineCoordinates" in block.sections):
             return self.machine_move(block, motion)
         return None
+
+    def compound(self, block: Block, compound: Any) -> str:
+        """A hole of a native cycle expanded after the lowering (a hole pattern that ``--units`` or
+        ``--transform`` rewrites), so while the written cycle is active: ``G80`` first, as ``cycle_end``
+        writes before the other moves."""
+        cycle = block.sections.get("CannedCycle")
+        if cycle is None or getattr(cycle, "call", True) or cycle.kind not in NATIVE:  # type: ignore[attr-defined]
+            return super().compound(block, compound)
+        self.dwell_in_force = None
+        self.levels_in_force = {}
+        self.after_blocks = False
+        self.modal.cycle = None
+        return self.code("cycle_cancel", None, "a cycle cancel", block) + "\n" + super().compound(block, compound)
 
     def after_block(self, block: Block) -> None:
         """A cycle cancel or a move ends the cycle whose dwell is in force (followed from the cycle on:
