@@ -304,13 +304,13 @@ def test_a_cycle_without_dwell_after_one_with_writes_k0() -> None:
 
 
 def test_the_dwell_is_written_again_after_a_machine_coordinate_move() -> None:
-    """A G53 move ends the cycle (written G53 G00: a rapid cancels it), so the next G81 cannot rely on the
-    K of the cycle before it: the old writer left K out there and the Fagor program lost the 1 s dwell
-    (verify saw it as a rapid where the source dwells)."""
+    """A G53 move ends the cycle (a G80 before it: ``cycle_end``), so the next G81 cannot rely on the K of
+    the cycle before it: the old writer left K out there and the Fagor program lost the 1 s dwell (verify
+    saw it as a rapid where the source dwells)."""
     program = (PRO["fanuc"] + "S800 M03\nG82 X5. Y5. Z-6. R2. P1000 F50.\nG53 X0. Y0.\n"
                "G82 X6. Y5. Z-6. R2. P1000 F50.\nG80\nM30\n")
     out = _translate(program, "fanuc", "fagor")
-    assert out.splitlines()[3:6] == ["G81 X5. Y5. Z2. I-6. K1. F50.", "G53 G00 X0. Y0.",
+    assert out.splitlines()[3:7] == ["G81 X5. Y5. Z2. I-6. K1. F50.", "G80", "G53 G00 X0. Y0.",
                                      "G81 X6. Y5. Z2. I-6. K1. F50."]
     _verify(program, out, "fanuc", "fagor")
 

@@ -36,6 +36,12 @@ def select_tool_data(blocks: Iterator[Block], ctx: Context, target: type[Dialect
     return step(blocks, ctx, target)
 
 
+def end_cycles_before_moves(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """``cycle_end.end_cycles_before_moves``, imported when a translation first lowers for this dialect."""
+    from .cycle_end import end_cycles_before_moves as step
+    return step(blocks, ctx, target)
+
+
 def resolve_radius_where_d_cannot(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
     """``postproc.isg_family.tool_data.resolve_radius_where_d_cannot``, imported when first used."""
     from postproc.isg_family.tool_data import resolve_radius_where_d_cannot as step
@@ -81,12 +87,14 @@ class Fagor(Dialect):
     PROGRAMS = False
     """P parameters and expressions are read [K]; control flow and subroutines are kept verbatim [?], so a
     program that computes reaches Fagor flattened."""
-    LOWERING = (stops_before_motion, resolve_radius_where_d_cannot, select_tool_data)
+    LOWERING = (stops_before_motion, resolve_radius_where_d_cannot, select_tool_data, end_cycles_before_moves)
     """A spindle stop or coolant off that the source made before its block's motion goes in a block of
     its own before it (Fagor acts on M05/M09 after the block's motion, as Fanuc [?]); a G41/G42 whose D
     would bring another length than the one G43 has on is the compensated path, where the source's rules
     are modelled (``resolve_radius_where_d_cannot``, as for ISG); another family's length and radius
-    registers become the D that selects them (``select_tool_data``)."""
+    registers become the D that selects them (``select_tool_data``); a ``G80`` ends a written cycle before
+    any move outside it, as whether a motion code ends it on the 8070 is not confirmed [?]
+    (``cycle_end``)."""
 
     @classmethod
     def python_pipeline(cls, setup: MachineSetup) -> Pipeline:

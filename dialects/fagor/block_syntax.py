@@ -10,6 +10,8 @@ table and hole-cycle words.
   word, under ``G91`` or with ``G01`` (or another motion than ``G00``) in force is a located error, as what
   the 8070 does then (a zero offset deselection? incremental machine positions? a feed move?) is not
   confirmed [?].
+* A motion code (``G00``-``G03``) while a fixed cycle is active, without ``G80`` in its block, is a located
+  error: whether it ends the cycle on the 8070 is not confirmed [?] (``cycle_end``).
 * ``M19`` only where the set-up says ``<Cycles orientation="m19"/>`` [?].
 * ``G04 K``: a dwell of K in the cycle dwell's unit.
 * ``D<n>`` selects tool offset n (the 8070 takes ``D1`` before any); ``G43`` applies its length, ``G44``
@@ -33,6 +35,7 @@ from postproc.rs274.codes import CodeTable, g_key
 from postproc.isg_family.tool_data import expects_register, read_tool_data
 
 from .codes import CODES, PATTERN_CODES
+from .cycle_end import GROUP_01
 from .cycle_words import cycle_words
 from .multiple_machining import multiple_machining
 
@@ -58,6 +61,15 @@ class FagorBlockSyntax(WordBlockSyntax):
                 self.multiple_machining(block, ctx, f"G{g_key(num)}", num)
                 return
         super().build(block, ctx)
+        sections = block.sections
+        motion = sections.get("Motion")
+        if ctx.state.cycle is not None and isinstance(motion, Motion) and motion.mode in GROUP_01 \
+                and "CycleCancel" not in sections and "CycleCall" not in sections:
+            code = next((num for letter, num in block.words if letter in "Gg" and g_key(num) in CODES.g
+                         and CODES.g[g_key(num)][0] == "01"), "")
+            raise UnsupportedError(f"G{code} while a fixed cycle is active: whether a motion code ends the cycle on "
+                                   "the 8070 is not confirmed (write G80 before it)",
+                                   ctx.at(block, col_of_word(block, "G", code)))
         if "CycleCall" in block.sections:
             plane = block.sections.get("Plane")
             current = getattr(plane, "plane", None) or ctx.state.plane

@@ -15,7 +15,8 @@ comments, ``%name`` headers, and the hole cycles Fagor runs with its own words.
   carried them over from the cycle before (a Fanuc ``G82 X5. P1000`` after ``G81 .. Z-6. R2.``: ``G81 X5. Z2.
   I-6. K1.``), as last written [K: Autodesk's post for the Fagor 8037/8055 writes every definition whole, ``G90
   G8x X Y Z I (K)``].
-  Every other cycle arrives expanded (``Fagor.NATIVE_CYCLES``).
+  Every other cycle arrives expanded (``Fagor.NATIVE_CYCLES``). A ``G80`` ends a written cycle before any
+  move outside it (``cycle_end``: whether a motion code ends a cycle on the 8070 is not confirmed [?]).
 * Another dialect's tape mark ``%`` is written as the comment ``;%`` (a Fagor ``%`` line is a header).
 * A dwell is ``G04 K`` in the set-up's unit (as the cycle ``K`` [?]).
 * No block skip and no oriented spindle stop are written: their 8070 spelling is not confirmed [?] (a
@@ -53,6 +54,8 @@ from .codes import CODES, CYCLE_ALIASES
 from .cycle_words import cycle_words
 from .multiple_machining import pattern_words
 
+NATIVE = frozenset(("drill", "drill_dwell", "bore_feed", "bore_dwell_feed"))
+"""``Fagor.NATIVE_CYCLES``."""
 _CANCELS = frozenset(("rapid", "linear", "cw", "ccw"))
 _REFERENCE = frozenset(("home", "home2"))
 """Motion modes of a reference return."""
@@ -89,7 +92,7 @@ class FagorWriter(WordWriter):
             return ";%" + (block.eol or "\n")  # a tape's start or end: no Fagor block, kept as a trace
         motion = block.sections.get("Motion")
         if isinstance(motion, Motion) and motion.mode in _REFERENCE or "MachineCoordinates" in block.sections:
-            self.dwell_in_force = None  # written as rapids (a cancel): no cycle stays active after it
+            self.dwell_in_force = None  # a G80 comes before it (``cycle_end``): no cycle stays active after it
             self.levels_in_force = {}
         if isinstance(motion, Motion) and motion.mode in _REFERENCE and not motion.axes:
             rest = {k: v for k, v in block.sections.items() if k != "Motion"}  # a return of no axis: no move
@@ -98,6 +101,19 @@ class FagorWriter(WordWriter):
                 and (motion.mode in _REFERENCE or "MachineCoordinates" in block.sections):
             return self.machine_move(block, motion)
         return None
+
+    def compound(self, block: Block, compound: Any) -> str:
+        """A hole of a native cycle expanded after the lowering (a hole pattern that ``--units`` or
+        ``--transform`` rewrites), so while the written cycle is active: ``G80`` first, as ``cycle_end``
+        writes before the other moves."""
+        cycle = block.sections.get("CannedCycle")
+        if cycle is None or getattr(cycle, "call", True) or cycle.kind not in NATIVE:  # type: ignore[attr-defined]
+            return super().compound(block, compound)
+        self.dwell_in_force = None
+        self.levels_in_force = {}
+        self.after_blocks = False
+        self.modal.cycle = None
+        return self.code("cycle_cancel", None, "a cycle cancel", block) + "\n" + super().compound(block, compound)
 
     def after_block(self, block: Block) -> None:
         """A cycle cancel or a move ends the cycle whose dwell is in force (followed from the cycle on:
