@@ -3,8 +3,8 @@
 grbl refuses an R arc whose chord exceeds 2R by any amount (``4R^2 - d^2 < 0``, error 34, in float32 [K: grbl
 ``gcode.c``]): an exact semicircle by R passes or fails by rounding, so the grbl family writes it by I/J about
 the chord's midpoint (``Dialect.R_ARC_FLOAT_SLACK``, ``postproc.lowering.arcs.settle_arc_ends``). LinuxCNC
-takes a chord up to 2R plus 0.0005 mm (0.00005 in) and makes it a semicircle [K: interp_arc.cc
-``arc_data_r``], so R stays there; rs274 itself checks it (``tests/support/linuxcnc_rules.py``).
+takes a half chord up to R plus ``RADIUS_TOLERANCE`` (0.00005 in, 0.00127 mm) and makes it a semicircle [K:
+interp_internal.hh, interp_arc.cc ``arc_data_r``], so R stays there; rs274 itself checks it (``tests/support/linuxcnc_rules.py``).
 
 Expected centres are hand-derived: a semicircle's centre is its chord's midpoint.
 """
@@ -85,7 +85,7 @@ def test_an_arc_short_of_180_degrees_keeps_its_r() -> None:
 @pytest.mark.parametrize("program, units", [(SEMICIRCLE_INCH, None), (SEMICIRCLE_INCH, "mm"),
                                             (SEMICIRCLE_MM, None), (SEMICIRCLE_MM, "inch")])
 def test_linuxcnc_takes_the_semicircle_by_r(program: str, units: str | None) -> None:
-    """LinuxCNC's tolerance on R (0.0005 mm) covers the rounding: R is written, and rs274 runs it."""
+    """LinuxCNC's tolerance on R (0.00127 mm) covers the rounding: R is written, and rs274 runs it."""
     text = written(program, "linuxcnc", units)
     assert output_rules.problems("linuxcnc", text, MachineSetup()) == []
     (arc,) = arc_lines(text)
