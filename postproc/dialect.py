@@ -156,6 +156,12 @@ class Dialect:
     """How far the controller lets an I/J/K arc's end point lie off the circle through its start, in the
     program's units, and which path it then runs (``postproc.arc_end``): the reading pipeline and the
     simulator judge each arc by the reading dialect's rule, ``verify`` a translation's by the target's."""
+    R_ARC_FLOAT_SLACK: ClassVar[float] = 0.0
+    """Where the controller refuses an R arc whose chord exceeds 2R by any amount, reckoned in its own
+    floating point: that precision, relative to R (0: the controller has a tolerance, an R arc is written as
+    it is). An R arc within reach of 180 degrees, whose centre that rounding moves far (an exact semicircle:
+    the chord is 2R), is then written with the centre the source's controller turns about, by I/J/K
+    (``postproc.lowering.arcs.settle_arc_ends``)."""
     TOOL_LENGTH_OFFSET: ClassVar[bool] = True
     """Tool length offset from a table exists (the writer refuses it otherwise)."""
     PATH_CONTROL: ClassVar[str | None] = None

@@ -22,14 +22,15 @@ from __future__ import annotations
 
 from functools import partial
 from itertools import chain, islice
-from typing import Callable, Iterable, Iterator
+from typing import Callable, Final, Iterable, Iterator
 
 from .context import Context
 from .errors import Location, ParseError, character_name
+from .numbers import MAX_DIGITS as NUMBER_DIGITS
 
-MAX_DIGITS = 30
+MAX_DIGITS: Final = NUMBER_DIGITS
 """The most digits read in one number: more than any controller's registers hold, and within a float's
-range and Python's int conversion limit by far."""
+range and Python's int conversion limit by far (``postproc.numbers.MAX_DIGITS``: no writer writes more)."""
 CHUNK = 1024
 """Lines checked at once on the fast path (a chunk is held while checked: a few dozen kilobytes of a
 program, at most ``CHUNK`` pieces of ``PIECE`` characters of anything)."""

@@ -86,6 +86,9 @@ def format_decimal(value: float, places: int, leading_zero: bool = True, exact: 
                            if value == value else "cannot write a value that is not a number (nan)")
     if abs(float(text) - value) > exact:
         text = f"{value:.{max(places, _places_within(exact))}f}"
+    if len(text) > MAX_DIGITS and sum(ch.isdigit() for ch in (text.rstrip("0") if "." in text else text)) > MAX_DIGITS:
+        raise ProgramError(f"cannot write the number {value:.6g}: it takes more than {MAX_DIGITS} digits, more than "
+                           "any controller reads (and than every reader here reads back)")
     if "." in text:
         text = text.rstrip("0")
     else:
@@ -99,6 +102,11 @@ def format_decimal(value: float, places: int, leading_zero: bool = True, exact: 
             return "-" + text[2:]
     return text
 
+
+MAX_DIGITS: Final = 30
+"""The most digits of one number a program may hold (``postproc.lines`` refuses a longer one where it reads
+it): more than any controller's registers hold. ``format_decimal`` refuses to write a longer one, so no
+writer writes a number its own reader (or its controller) refuses."""
 
 _SHORT_RANGE: Final = 1e6
 SHORT_RANGE: Final = _SHORT_RANGE

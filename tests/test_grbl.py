@@ -69,7 +69,7 @@ def test_registered_through_its_entry_point_as_a_grbl_class_controller() -> None
     ("G01 X10. Y5. F200.\n", "G1 X10. Y5. F200.\n"),
     ("G04 X1.5\n", "G4 P1.5\n"),
     ("G04 P250\n", "G4 P0.25\n"),
-    ("G02 X10. Y0. R5. F100.\n", "G2 X10. Y0. R5. F100.\n"),
+    ("G02 X10. Y0. R5. F100.\n", "G2 X10. Y0. I5. J0. F100.\n"),  # a semicircle: by its centre, the midpoint
     ("G91 G28 Z0.\n", "G91 G28 Z0.\n"),
     ("G55 G17 G40 G80\n", "G17 G55 G40\n"),  # grbl's G80 would leave no motion mode; no cycle to cancel
     ("S1200 M04\nM08\nM09 M05\n", "S1200 M4\nM8\nM5 M9\n"),

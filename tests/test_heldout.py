@@ -62,11 +62,6 @@ KNOWN_FAILURES: dict[tuple[str, str], str] = {
     ("linuxcnc/pcb2gcode_outline_tiled.ngc", ""): (
         "pcb2gcode's tiling repeats its o200 subroutine after G92 X[#5420-[2.174016]]: #5420, the current X, is "
         "taken as known only to the machine, though the simulation knows where the subroutine left the tool"),
-    ("fanuc/aed_circular_pocket.nc", "grbl"): (
-        "exact semicircles by R (G2 Y0 X1.05 R0.975 from X-0.9: the chord is 2R): written to grbl as they stand, "
-        "one fails grbl's radius check 4R^2 - d^2 < 0 (error:34, no tolerance [K: grbl gcode.c]) by rounding "
-        "once inches are taken to mm (tests/support/grbl_rules.py); a real grbl's float32 may round either way "
-        "[?]: a semicircle is safe to grbl only by I/J"),
 }
 """(program, target or '' for the source check) -> the defect, as found by the held-out set."""
 _SOURCE_REFUSED = {program for program, target in KNOWN_FAILURES if target == ""}

@@ -16,7 +16,9 @@ from postproc.numbers import EXACT, EXACT_INCH, MAX_PLACES, decimal_value, forma
 from postproc.setup.machine_setup import MachineSetup, OutputSettings
 from postproc.simulate.verify import verify_lines
 
-FINITE = st.floats(allow_nan=False, allow_infinity=False)
+FINITE = st.floats(min_value=-1e29, max_value=1e29)
+"""Numbers a writer may write: at most 29 digits before the point (``MAX_DIGITS``: more is refused,
+``tests/test_isg_long_numbers.py``)."""
 PLACES = st.integers(min_value=0, max_value=7)
 
 

@@ -28,6 +28,12 @@ class GrblFamily(Dialect):
     the start radius about the programmed centre and a last segment to the end point (``mc_arc``) [V]; the
     simulation draws the spiral through the same end points, at most the accepted difference away [?]."""
 
+    R_ARC_FLOAT_SLACK = 4 * 2.0 ** -23
+    """[K] grbl 1.1 ``gcode.c`` (R arcs): ``h_x2_div_d = 4.0*r*r - x*x - y*y``, error 34 (arc radius error)
+    when it is below 0, with no tolerance, in single-precision floats (``float``, 24-bit mantissa) [K: grbl
+    ``nuts_bolts.h``/``gcode.c``]; grblHAL ``gcode.c``: the same check [K]. An exact semicircle by R (the
+    chord 2R) passes or fails by rounding: four float32 steps of R are taken as that rounding [?]."""
+
     @classmethod
     def tool_table(cls, setup: MachineSetup) -> bool:
         """The controller under ``setup`` runs ``G43 H`` from its own tool table (else a length offset from a

@@ -85,8 +85,14 @@ def settle_arc_ends(blocks: Iterator[Block], ctx: Context, target: type[Dialect]
     about where that controller moves the programmed one (``postproc.arc_end.START_RADIUS``): the target's
     controller then runs a circle through both ends, the source's path exactly. A pass over the program only
     for such a source; a spiral source whose arc the target's controller would refuse is refused where it is
-    read (``postproc.syntaxes.modal_state``, ``TARGET_ARC_END``)."""
-    if ctx.arc_end.runs == SPIRAL:
+    read (``postproc.syntaxes.modal_state``, ``TARGET_ARC_END``).
+
+    For a target that refuses an R arc whose chord exceeds 2R by any rounding (``Dialect.R_ARC_FLOAT_SLACK``,
+    grbl), an R arc within rounding reach of 180 degrees is written by I/J/K too, about the centre the
+    source's controller computes: exact, where a larger R would move the centre by the square root of its
+    change (a semicircle of R 25 mm given 0.001 mm more R turns 0.22 mm off), and the target accepts I/J/K
+    within a tolerance of its own."""
+    if ctx.arc_end.runs == SPIRAL and not target.R_ARC_FLOAT_SLACK:
         return blocks
     return rewrite_arcs(blocks, ctx, ArcOption(SETTLE), target)
 
@@ -271,7 +277,9 @@ class _Rewriter:
         """An I/J/K arc as the target's controller must be given it to run the source controller's path
         (``settle_arc_ends``): with the centre the source turns about where that is not the programmed one
         (exact: the written arc is then a circle through both ends); else left as it is."""
-        if motion.radius is not None or machine or not motion.center or self.state.extra.get("polar") or any(
+        if motion.radius is not None:
+            return self._settle_radius(motion, incremental, machine)
+        if self.ctx.arc_end.runs == SPIRAL or machine or not motion.center or self.state.extra.get("polar") or any(
                 isinstance(v, Expr) for v in (*motion.center.values(), *motion.axes.values())):
             self._track(motion, incremental, machine)
             return None
@@ -291,6 +299,32 @@ class _Rewriter:
             return motions
         geometry.finish()
         return None
+
+    def _settle_radius(self, motion: Motion, incremental: bool, machine: bool) -> list[Motion] | None:
+        """An R arc for a target that refuses any chord over 2R (``Dialect.R_ARC_FLOAT_SLACK``): by I/J/K
+        where R rounded by the writer and by the target's floating point moves the centre more than
+        ``R_FORM_TOLERANCE_MM`` (an arc within reach of 180 degrees); else left as it is."""
+        slack_share = self.target.R_ARC_FLOAT_SLACK
+        if not slack_share or machine or self.state.extra.get("polar") or isinstance(motion.radius, Expr) or any(
+                isinstance(v, Expr) for v in motion.axes.values()):
+            self._track(motion, incremental, machine)
+            return None
+        a1, a2, _ = PLANE_AXES[self.state.plane]
+        try:
+            geometry = _Geometry(self, motion, incremental, (a1, a2))
+            arc = geometry.arc()
+        except ProgramError:  # the start is not known here, or the arc cannot be run: judged where it runs
+            self._track(motion, incremental, machine)
+            return None
+        mm = self._mm()
+        slack = WRITE_SLACK_MM / mm + abs(float(motion.radius)) * slack_share  # type: ignore[arg-type]  # a number
+        if r_centre_error(arc, slack) * mm <= R_FORM_TOLERANCE_MM:
+            geometry.finish()
+            return None
+        motions = [geometry.piece(motion.mode or "cw", arc.end, {a: e for a, (_, e) in arc.along.items()},
+                                  (arc.centre[0] - arc.start[0], arc.centre[1] - arc.start[1]), None)]
+        geometry.finish()
+        return motions
 
     def _r_form(self, block: Block, arc: Arc, geometry: "_Geometry", mode: str) -> list[Motion] | None:
         mm = self._mm()
