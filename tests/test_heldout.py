@@ -125,3 +125,41 @@ def test_mach3_reads_g91_1_as_the_arc_centres_it_already_has() -> None:
     assert (arc["x"], arc["y"], arc["cx"], arc["cy"]) == (0, 10, 0, 0)
     with pytest.raises((ErrorList, PostprocError), match=r"p\.nc:1:\d+: error: .*G90\.1"):
         run("G90 G94 G90.1")
+
+
+@pytest.mark.parametrize("target, spelling", [
+    ("isg", ["#SUPPRESS OFFSETS Z0."] * 2 + ["#SUPPRESS OFFSETS X0. Y0."]),
+    ("fagor", ["G53 G90 G00 Z0."] * 2 + ["G53 G90 G00 X0. Y0."]),
+    ("siemens", ["G75 FP=1 Z1=0"] * 2 + ["G75 FP=1 X1=0 Y1=0"]),
+])
+def test_fusion_mach3_reference_returns_reach_the_home_the_setup_gives(target: str, spelling: list[str]) -> None:
+    """The Fusion 360 Mach3 post starts with ``G28 G91 Z0.`` and ends with it, then ``G28 G91 X0. Y0.``: G91 with zeros puts the
+    intermediate point where the tool is, so each is one rapid to the G28 home, machine zero on the set-up
+    ``setups/mach3_router.xml`` (Mach3's default G28 home location [K]), with G54 away from it. Towards ISG
+    (``#SUPPRESS OFFSETS``, TF5200 manual [V]), Fagor (``G53``) and SINUMERIK (``G75 FP=1``, fixed point 1 =
+    the home) each becomes one move in machine coordinates to 0 (the set-up's home, written in the
+    program's inches). verify compares those moves: run on a source machine whose Z home is an inch lower, the source's first
+    return ends 25.4 mm from the written machine-zero move, and verify fails by that much."""
+    import copy
+
+    from postproc.api import translate
+    from postproc.errors import Diagnostics, ErrorLevel
+    from postproc.setup.machine import AxisTravel
+    from postproc.simulate.verify import verify_lines
+
+    (program,) = [p for p in ALL if p.path == "mach3/sprayer_fusion_inch.nc"]
+    setup = harness._setup(program)
+    text = harness._source(program)
+    out = io.StringIO(newline="")
+    translate(io.StringIO(text, newline="").readlines(), out, file=program.path, source="mach3", target=target,
+              setup=setup, on_unsupported="error", diagnostics=Diagnostics(ErrorLevel.RAISE, warn_stream=io.StringIO()))
+    lines = [line.strip() for line in out.getvalue().splitlines()]
+    assert [line for line in lines if line in spelling] == spelling
+    args = dict(file_in=program.path, file_out="out", source="mach3", target=target, target_setup=setup)
+    written = out.getvalue().splitlines(keepends=True)
+    source = io.StringIO(text, newline="").readlines()
+    assert verify_lines(source, written, setup=setup, **args).ok  # type: ignore[arg-type]
+    lower = copy.deepcopy(setup)
+    lower.travel["Z"] = AxisTravel(name="Z", home=-25.4)
+    report = verify_lines(source, written, setup=lower, **args)  # type: ignore[arg-type]
+    assert not report.ok and report.max_deviation == pytest.approx(25.4)
