@@ -163,3 +163,36 @@ def test_fusion_mach3_reference_returns_reach_the_home_the_setup_gives(target: s
     lower.travel["Z"] = AxisTravel(name="Z", home=-25.4)
     report = verify_lines(source, written, setup=lower, **args)  # type: ignore[arg-type]
     assert not report.ok and report.max_deviation == pytest.approx(25.4)
+
+
+def test_fanuc_0m_indexer_code_becomes_the_target_machines_own_and_is_never_left_out() -> None:
+    """The Fanuc 0M program steps its machine builder's M20 (a rotary indexer, ``setups/fanuc_0m_mill.xml``)
+    twice after each cut; it turns the part, so it is not left out: the set-up maps it to the target machines'
+    M120 (LinuxCNC's user M code M100-M199). The LinuxCNC translation writes M120 in the four blocks that had
+    M20 (N190, N200, N270, N280, read from the source), verify passes, and an output that loses one fails
+    verify; grbl, which has no user M codes, refuses each M20 at its line and column."""
+    from postproc.api import translate
+    from postproc.errors import Diagnostics, ErrorLevel, ErrorList
+    from postproc.simulate.verify import verify_lines
+
+    (program,) = [p for p in ALL if p.path == "fanuc/gcodeworkshop_fanuc_0m.nc"]
+    setup = harness._setup(program)
+    source = io.StringIO(harness._source(program), newline="").readlines()
+
+    def run(target: str) -> list[str]:
+        out = io.StringIO(newline="")
+        translate(source, out, file=program.path, source="fanuc", target=target, setup=setup,
+                  on_unsupported="error", diagnostics=Diagnostics(ErrorLevel.RAISE, warn_stream=io.StringIO()))
+        return out.getvalue().splitlines(keepends=True)
+
+    written = run("linuxcnc")
+    assert [line.split()[0] for line in written if "M120" in line] == ["N190", "N200", "N270", "N280"]
+    assert not [line for line in written if "M20" in line.split()]
+    args = dict(file_in=program.path, file_out="out.ngc", source="fanuc", target="linuxcnc", setup=setup)
+    assert verify_lines(source, written, **args).ok  # type: ignore[arg-type]
+    lost = [line for line in written if not line.startswith("N200 ")]
+    assert not verify_lines(source, lost, **args).ok  # type: ignore[arg-type]
+    with pytest.raises(ErrorList) as refused:
+        run("grbl")
+    assert [str(e).split(": error:")[0] for e in refused.value.errors] == [
+        f"{program.path}:{line}:6" for line in (25, 26, 33, 34)]

@@ -118,6 +118,18 @@ def test_the_linuxcnc_checker_gives_the_machine_the_tool_a_table_write_names(lin
     assert linuxcnc_problems(NGC_HEAD + line + "\nM2\n") == []
 
 
+@pytest.mark.skipif(not available(), reason="the LinuxCNC interpreter rs274 is not installed")
+def test_the_linuxcnc_checker_gives_the_machine_the_user_m_code_files_a_program_names() -> None:
+    """A user M code (M100-M199) runs the machine's file of that name, which LinuxCNC's task registers and a
+    standalone rs274 never does: rs274 refuses M120 alone, the checker's machine has the file. A code with P or
+    Q words and a number past M199 are left to rs274, which refuses them."""
+    with pytest.raises(RS274Error, match="Unknown m code used: M120"):
+        run_rs274(NGC_HEAD + "N190 M120 (index)\nM2\n")
+    assert linuxcnc_problems(NGC_HEAD + "N190 M120 (index M121)\nG0 X1 M0120\nM2\n") == []
+    assert "Unknown m code used" in "".join(linuxcnc_problems(NGC_HEAD + "M120 P2\nM2\n"))
+    assert "M-code greater than 199" in "".join(linuxcnc_problems(NGC_HEAD + "M200\nM2\n"))
+
+
 @pytest.mark.parametrize("line", ["G80 G0 Z1. M9", "G0 G80 Z1.", "G0 X1 G80 Y1", "G80 G1 X1 F10",
                                   "G2 G80 X2 R1 F100", "G80 G81 X1 Y1 Z-1 R1 F100", "/N10 G0 X1", "M3 M8 M0",
                                   "M48 M3", "M5 M9", "G1 F10\nG1"])

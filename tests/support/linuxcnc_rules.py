@@ -6,6 +6,13 @@ of a tool table write ``G10 L1``/``L10``/``L11``, which rs274 refuses for a tool
 found in the tool table" [V: rs274], with zero length and diameter), and tools 1-99 when it computes one (``H#1``,
 ``T[#2+1]``, ``G10 L1 P#3``): which tools a shop has is not the writer's business. Everything else rs274 refuses is the writer's, a program that runs out without an end
 ("File ended with no percent sign or program end") too: the writer ends a source without one with M2.
+
+A user M code (M100-M199) runs the machine's program file of that name; LinuxCNC's task registers each
+executable file ``M1nn`` it finds under ``PROGRAM_PREFIX``/``USER_M_PATH`` with the interpreter, and a standalone
+rs274 registers none, whatever its INI says ("Unknown m code used: M120" [V: rs274 with USER_M_PATH and -T;
+saicanon.cc never calls USER_DEFINED_FUNCTION_ADD, emctaskmain.cc's emcTaskInit does]). Like the tools, the
+machine is taken to have the files the program names: such a code alone in its word (no P or Q beside it) is
+written as a comment before rs274 reads the program (``_USER_M``).
 """
 
 from __future__ import annotations
@@ -31,6 +38,22 @@ _TABLE_WRITE = re.compile(r"(?i)(?=.*(?<![A-Z])G\s*0*10(?![.\d]))(?=.*(?<![A-Z])
 """A line that writes the tool table (``G10 L1``, ``L10``, ``L11``; its ``P`` names the tool)."""
 
 
+_USER_M = re.compile(r"(?i)(?<![A-Z#\[])M\s*0*(1\d\d)(?![\d.])")
+"""A user M code word M100-M199 (a literal, not a computed ``M#1``)."""
+
+
+def _user_m_files(text: str) -> str:
+    """``text`` with each user M code on a line without P or Q words written as a comment (the module's
+    docstring: a standalone rs274 knows no user M code; the machine has the file)."""
+    lines = text.splitlines(keepends=True)
+    for i, line in enumerate(lines):
+        end = min((k for k in (line.find("("), line.find(";")) if k >= 0), default=len(line))
+        code = line[:end]
+        if _USER_M.search(code) and not re.search(r"(?i)(?<![A-Z#])[PQ]\s*[-+#\[.\d]", code):
+            lines[i] = _USER_M.sub(lambda m: f"(user M code M{m.group(1)})", code) + line[end:]
+    return "".join(lines)
+
+
 def linuxcnc_problems(text: str) -> list[str]:
     """What rs274 refuses in ``text`` (its error message and offending block), or nothing. Answered from
     ``RS274_CACHE`` when the same program, tool table and interpreter were run before."""
@@ -44,6 +67,7 @@ def linuxcnc_problems(text: str) -> list[str]:
                 tools |= set(range(1, 100))
     tools = sorted(tools)
     table = "".join(f"T{n} P{n} Z0 D0\n" for n in tools)
+    text = _user_m_files(text)
     path = RS274_CACHE / _key(text, table)
     try:
         return [str(p) for p in json.loads(path.read_text(encoding="utf-8"))]

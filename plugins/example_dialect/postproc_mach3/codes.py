@@ -75,9 +75,17 @@ ROWS = (
 )
 """The codes this dialect reads and writes; the writer spells a meaning as its first row."""
 
+USER_M = range(100, 1000)
+"""User macros: an M code Mach3 has no built-in meaning for runs the macro file of that name (``M120.m1s``) in the
+profile's macros folder, which the machine's integrator writes (an indexer, a clamp) [K: Mach3 Mill manual, macros;
+warp9td's M-code FAQ: "M-Code ... allows you to run a Macro"]; read and written verbatim, like LinuxCNC's
+M100-M199. The span: the numbers user macros take beyond the built-in codes, M100-M999 [?: Mach3 runs a macro for
+an unused number below 100 too; those stay refused, a machine builder's meaning this plugin does not know]."""
+
 M_GROUPS: dict[int, str] = {
     **dict.fromkeys((0, 1, 2, 30), "4"), 6: "6", **dict.fromkeys((3, 4, 5), "7"), **dict.fromkeys((7, 8, 9), "8"),
+    **dict.fromkeys(USER_M, "10"),
 }
 """RS274/NGC M-code modal groups: two codes of one group in a block are an error."""
 
-CODES = CodeTable(ROWS)
+CODES = CodeTable(ROWS, user_m=USER_M)
