@@ -161,14 +161,27 @@ def test_towards_linuxcnc_a_user_m_code_the_set_up_declares_is_read_and_simulate
     assert undeclared.get("NativeCode") == NativeCode("linuxcnc", "M133 (user M code)", "M133")
 
 
-@pytest.mark.parametrize("target, why", [
-    ("grbl", "grbl does not read it: unknown M code M133"),
-    ("mach3", "mach3 does not read it: unknown M code M133"),
+@pytest.mark.parametrize("target, to, why", [
+    ("grbl", "M133", "grbl does not read it: unknown M code M133"),
+    ("mach3", "M77", "mach3 does not read it: unknown M code M77"),
 ])
-def test_a_code_the_target_does_not_read_is_refused_at_the_source_code(target: str, why: str, tmp_path: Path) -> None:
-    assert _errors(target, _setup(tmp_path, TO_M133)) == [
-        f"in.nc:4:18: error: M33 (chip auger stop) of the fanuc family: the set-up's <ForeignCodes> makes it M133 on "
+def test_a_code_the_target_does_not_read_is_refused_at_the_source_code(target: str, to: str, why: str,
+                                                                         tmp_path: Path) -> None:
+    assert _errors(target, _setup(tmp_path, TO_M133.replace("M133", to))) == [
+        f"in.nc:4:18: error: M33 (chip auger stop) of the fanuc family: the set-up's <ForeignCodes> makes it {to} on "
         f"{target}, but {why}"]
+
+
+def test_towards_mach3_a_user_macro_the_set_up_declares_is_read_and_simulated(tmp_path: Path) -> None:
+    """Mach3 runs a macro file for an M code it has no built-in for (M133.m1s, the integrator's): M100-M999 are
+    read and written verbatim, and a declared one is the machine's function, as LinuxCNC's user M codes are."""
+    setup = _setup(tmp_path, TO_M133, '<MachineCodes><M number="133" name="conveyor stop"/></MachineCodes>')
+    lines = _translate("mach3", setup)
+    assert "G0 X10.0000 Y10.0000 Z5.0000 M133" in lines, lines  # (Mach3's axis words are fixed-width)
+    block = read_program(["M133\n"], file="o.tap", dialect="mach3", setup=setup)[0]
+    assert block.get("MachineFunction") == MachineFunction("mach3", "M133", "M133", name="conveyor stop")
+    undeclared = read_program(["M133\n"], file="o.tap", dialect="mach3")[0]
+    assert undeclared.get("NativeCode") == NativeCode("mach3", "M133 (user M code)", "M133")
 
 
 def test_a_code_the_target_reads_as_one_of_its_own_functions_is_refused(tmp_path: Path) -> None:
