@@ -96,6 +96,12 @@ class Program:
     ``examples/`` (default: the default set-up, or ``examples/setups/fanuc_0i_tf.xml`` for a lathe)."""
     excused: str = ""
     """Why the source itself cannot run, or ''."""
+    target_setups: tuple[tuple[str, str], ...] = ()
+    """Target -> a set-up file (relative like ``setup``) of the machine under that target's controller: its
+    ``<MachineCodes>`` (the target machine's own codes) and ``<ForeignCodes>`` (what the source's machine codes
+    become there) join the program's set-up for that pair (``_setup``). In the manifest an inline table,
+    ``target_setups = { gsk = "setups/….xml" }``: one machine's codes differ by controller (a gear range is
+    M41 on a GSK, a user M code on LinuxCNC), and one set-up names one code per source code."""
     folder: str = str(CORPUS)
     """The manifest's folder (set when it is read, not written in it)."""
 
@@ -120,7 +126,8 @@ def load_manifest(path: Path = MANIFEST) -> list[Program]:
     with open(path, "rb") as f:
         data = tomllib.load(f)
     fields = set(Program.__dataclass_fields__) - {"folder"}
-    return [Program(**{k: v for k, v in entry.items() if k in fields}, folder=str(path.resolve().parent))
+    return [Program(**{k: tuple(sorted(v.items())) if k == "target_setups" else v for k, v in entry.items()
+                       if k in fields}, folder=str(path.resolve().parent))
             for entry in data["program"]]
 
 
@@ -137,15 +144,22 @@ def targets(program: Program) -> list[str]:
 
 # -- one pair ---------------------------------------------------------------------------------------
 
-def _setup(program: Program) -> MachineSetup:
-    """The program's set-up with a tool table in which every length and radius register has a value, and for
-    a Haas program what the target machines do with its chip auger (``CHIP_AUGER``). The one set-up serves the
+def _load(program: Program, name: str) -> MachineSetup:
+    """A set-up file the manifest names: relative to the manifest's folder, or to the repository for ``examples/``."""
+    from postproc.setup.machine_setup import load_setup
+    folder = ROOT if name.startswith("examples/") else Path(program.folder)
+    return load_setup(folder / name)
+
+
+def _setup(program: Program, target: str = "") -> MachineSetup:
+    """The program's set-up with a tool table in which every length and radius register has a value, for
+    a Haas program what the target machines do with its chip auger (``CHIP_AUGER``), and for ``target`` the
+    codes of the machine under that controller (``Program.target_setups``). The one set-up serves the
     translation and both sides of verify, as ``postproc translate --machine`` does."""
     from postproc.setup.machine_setup import MachineSetup, load_setup
     from tests.support.tools import REGISTERS, with_tools
     if program.setup:
-        folder = ROOT if program.setup.startswith("examples/") else Path(program.folder)
-        base = load_setup(folder / program.setup)
+        base = _load(program, program.setup)
     elif program.machine == "lathe":
         base = load_setup(ROOT / "examples" / "setups" / "fanuc_0i_tf.xml")
     else:
@@ -157,6 +171,13 @@ def _setup(program: Program) -> MachineSetup:
         declared = {c.key() for c in setup.foreign_codes}
         setup.foreign_codes = [*setup.foreign_codes, *(ForeignCode(family=f, number=n, to="omit")
                                                        for f, n in CHIP_AUGER if (f, "M" + n) not in declared)]
+    own = dict(program.target_setups).get(target)
+    if own is not None:  # the target machine's codes, over the source machine's (one code: the target's wins)
+        codes = _load(program, own)
+        mine = {c.key() for c in codes.machine_codes}
+        setup.machine_codes = [*(c for c in setup.machine_codes if c.key() not in mine), *codes.machine_codes]
+        foreign = {c.key() for c in codes.foreign_codes}
+        setup.foreign_codes = [*(c for c in setup.foreign_codes if c.key() not in foreign), *codes.foreign_codes]
     return setup
 
 
@@ -222,7 +243,7 @@ def run_pair(program: Program, target: str) -> Outcome:
     from postproc.api import translate
     from postproc.errors import Diagnostics, ErrorLevel, ErrorList, PostprocError
     from postproc.simulate.verify import verify_lines
-    setup = _setup(program)
+    setup = _setup(program, target)
     text = _source(program)
     out = io.StringIO(newline="")
     try:
