@@ -41,6 +41,7 @@ import time
 import tomllib
 import traceback
 from collections import Counter
+import dataclasses
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Callable, Iterable, cast
@@ -98,8 +99,9 @@ class Program:
     """Why the source itself cannot run, or ''."""
     target_setups: tuple[tuple[str, str], ...] = ()
     """Target -> a set-up file (relative like ``setup``) of the machine under that target's controller: its
-    ``<MachineCodes>`` (the target machine's own codes) and ``<ForeignCodes>`` (what the source's machine codes
-    become there) join the program's set-up for that pair (``_setup``). In the manifest an inline table,
+    ``<MachineCodes>`` (the target machine's own codes), ``<ForeignCodes>`` (what the source's machine codes
+    become there) and ``<Controller toolChangeWithSpindleOn>`` (its tool change) join the program's set-up for
+    that pair (``_setup``). In the manifest an inline table,
     ``target_setups = { gsk = "setups/….xml" }``: one machine's codes differ by controller (a gear range is
     M41 on a GSK, a user M code on LinuxCNC), and one set-up names one code per source code."""
     folder: str = str(CORPUS)
@@ -178,6 +180,8 @@ def _setup(program: Program, target: str = "") -> MachineSetup:
         setup.machine_codes = [*(c for c in setup.machine_codes if c.key() not in mine), *codes.machine_codes]
         foreign = {c.key() for c in codes.foreign_codes}
         setup.foreign_codes = [*(c for c in setup.foreign_codes if c.key() not in foreign), *codes.foreign_codes]
+        if codes.controller.tool_change_with_spindle_on:  # the target machine's tool change (its controller's)
+            setup.controller = dataclasses.replace(setup.controller, tool_change_with_spindle_on=True)
     return setup
 
 

@@ -40,7 +40,39 @@ def test_an_index_with_the_spindle_turning_is_refused_where_it_stands(target: st
         _translate(TURNING, target)
     assert [str(e) for e in caught.value.errors] == [
         "l.nc:5:1: error: a turret index (T0202) with the spindle turning: a mill control changes the tool "
-        "with the spindle stopped, the lathe keeps it turning (stop the spindle before the index)"]
+        "with the spindle stopped, the lathe keeps it turning (stop the spindle before the index, or give a set-up "
+        "whose machine changes tools with the spindle on: <Controller toolChangeWithSpindleOn=\"true\"/>)"]
+
+
+@pytest.mark.skipif(not available(), reason="the LinuxCNC interpreter rs274 is not installed")
+def test_a_machine_that_changes_tools_with_the_spindle_on_takes_the_index_as_its_tool_change() -> None:
+    """LinuxCNC's ``[EMCIO] TOOL_CHANGE_WITH_SPINDLE_ON = 1`` (for lathes) leaves the spindle turning through
+    ``M6``: rs274 run with it prints no STOP_SPINDLE_TURNING, without it one before CHANGE_TOOL. A set-up that
+    says so (``<Controller toolChangeWithSpindleOn="true"/>``) gets the index written as ``T2 M6`` with the
+    spindle on, and verify passes; checked under the set-up without it, the same output stops the spindle
+    at the change, which verify finds."""
+    import dataclasses
+
+    from postproc.setup.groups import ControllerSettings
+
+    keeps = MachineSetup(input=InputSettings(machine_type="lathe"),
+                         controller=ControllerSettings(tool_change_with_spindle_on=True))
+    out = io.StringIO()
+    translate(io.StringIO(TURNING), out, file="l.nc", source="fanuc", target="linuxcnc", setup=keeps)
+    text = out.getvalue()
+    lines = text.splitlines()
+    assert lines.index("S1000 M3") < lines.index("T2 M6") and "M5" not in lines, text
+    table = "T2 P2 X0 Z0 D0\n"
+    with_it = run_rs274(text, tool_table=table, ini="[EMCIO]\nTOOL_CHANGE_WITH_SPINDLE_ON = 1\n")
+    without = run_rs274(text, tool_table=table)
+    assert not any("STOP_SPINDLE_TURNING" in c for c in with_it[:[i for i, c in enumerate(with_it) if "CHANGE_TOOL(" in c][0]])
+    assert any("STOP_SPINDLE_TURNING" in c for c in without[:[i for i, c in enumerate(without) if "CHANGE_TOOL(" in c][0]])
+    args = dict(file_in="l.nc", file_out="l.ngc", source="fanuc", target="linuxcnc", tolerance=0.0)
+    assert verify_lines(io.StringIO(TURNING), io.StringIO(text), setup=keeps, **args).ok  # type: ignore[arg-type]
+    stops = dataclasses.replace(keeps.controller, tool_change_with_spindle_on=False)
+    report = verify_lines(io.StringIO(TURNING), io.StringIO(text), setup=MachineSetup(
+        input=InputSettings(machine_type="lathe"), controller=stops), **args)  # type: ignore[arg-type]
+    assert not report.ok and "spindle stop" in report.summary()
 
 
 def test_with_warn_only_the_t_word_is_left_out() -> None:

@@ -238,17 +238,20 @@ def _turret(block: Block, ctx: Context, turning: bool) -> bool:
     refused: which tool it names is known when it runs (the program is flattened for it). So is an index
     while the spindle turns: the turret indexes with the spindle running [K: Fanuc T, the T code only
     indexes], a mill control's tool change stops it [V: rs274's M6 is STOP_SPINDLE_TURNING then
-    CHANGE_TOOL]. False: the block is refused (reported; with ``--on-unsupported warn`` the T is left
-    out with a note instead)."""
+    CHANGE_TOOL], unless the set-up's machine changes tools with the spindle on (``ControllerSettings.
+    tool_change_with_spindle_on``: LinuxCNC's TOOL_CHANGE_WITH_SPINDLE_ON). False: the block is refused
+    (reported; with ``--on-unsupported warn`` the T is left out with a note instead)."""
     select = block.sections.get("ToolSelect")
     if isinstance(select, ToolSelect) and isinstance(select.number, Expr):
         raise UnsupportedError("a computed lathe T word (the tool and offset it selects are known when the "
                                "program runs)", ctx.at(block))
     if isinstance(select, ToolSelect) and isinstance(select.number, int) and "ToolChange" not in block.sections:
-        if turning:
+        if turning and not ctx.setup.controller.tool_change_with_spindle_on:
             err = UnsupportedError(f"a turret index (T{select.number:04d}) with the spindle turning: a mill "
                                    "control changes the tool with the spindle stopped, the lathe keeps it "
-                                   "turning (stop the spindle before the index)", ctx.at(block))
+                                   "turning (stop the spindle before the index, or give a set-up whose machine "
+                                   "changes tools with the spindle on: <Controller toolChangeWithSpindleOn=\"true\"/>)",
+                                   ctx.at(block))
             if ctx.on_unsupported != "warn":
                 ctx.diagnostics.error(err)
                 return False

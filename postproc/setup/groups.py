@@ -274,6 +274,13 @@ class ControllerSettings(SetupGroup):
     spindle_sync: bool | None = None
     """The controller's spindle reports its position, so feed per revolution runs (grblHAL: a spindle with
     an encoder). None: as the dialect says."""
+    tool_change_with_spindle_on: bool = False
+    """The machine's tool change leaves the spindle turning, as a lathe's turret index does: LinuxCNC's
+    ``[EMCIO] TOOL_CHANGE_WITH_SPINDLE_ON = 1``, "useful for lathes" [V: LinuxCNC ini-config.adoc; its
+    interpreter's convert_tool_change stops every spindle only without it, rs274 run so emits
+    STOP_SPINDLE_TURNING before CHANGE_TOOL]. False: a tool change (M6) stops the spindle, which then stays
+    stopped until the program starts it; a Fanuc T/GSK turret index with the spindle turning is then refused
+    towards a control that changes tools with M6 (``postproc.cycles.lathe_lowering``)."""
     rotation_incremental: bool = False
     """A coordinate rotation's angle R follows G90/G91: under G91 it is added to the angle of the program's
     previous rotation (Fanuc parameter 5400#0 RIN = 1 [V: 0i-A connection manual B-63503EN, 5400];

@@ -68,6 +68,9 @@ class Moves:
         self.spindle: str | None = None
         """Spindle direction of the last spindle event (None before the first): a tool change stops a
         turning spindle first, as a tool changer does, and stopping a stopped spindle is no event."""
+        self.tool_change_keeps_spindle = setup.controller.tool_change_with_spindle_on
+        """The set-up's machine changes tools with the spindle turning (``<Controller toolChangeWithSpindleOn>``):
+        a tool change stops nothing."""
         self.after_tap: str | None = None
         """The spindle direction before a tap's out stroke, until the next spindle code (``Simulator._restates``)."""
         self.oriented = False

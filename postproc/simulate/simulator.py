@@ -102,7 +102,7 @@ class Simulator(Moves):
                         self.lathe_offset(block, s.number % 100)
             if "ToolChange" in sections:
                 self.spindle_tool = self.modal.tool if isinstance(self.modal.tool, int) else None
-                if self.spindle in ("cw", "ccw"):
+                if self.spindle in ("cw", "ccw") and not self.tool_change_keeps_spindle:
                     self.spindle_event(line, "stop", emit)
                 emit({"line": line, "event": "tool", "number": self.modal.tool})
             if spindle is not None and not after_motion("SpindleControl", spindle):

@@ -103,6 +103,7 @@ def run_rs274(
     timeout: float = 20,
     tool_table: str | None = None,
     name: str = "prog.ngc",
+    ini: str | None = None,
 ) -> list[str]:
     """Run ``rs274 -g`` on a program and return its canonical call lines (``N..... NAME(args)``).
 
@@ -112,7 +113,8 @@ def run_rs274(
     errors, wrong Z, "tool not found"). The directory goes when the run ends. stdin is closed.
     The program must end with M2/M30 or ``%``, as LinuxCNC requires ("File ended with no percent sign
     or program end" otherwise). ``tool_table`` is the text of a LinuxCNC tool table (``T1 P1 Z.. D..``
-    lines; lengths in inches as rs274 reads them); without it rs274 uses a built-in table.
+    lines; lengths in inches as rs274 reads them); without it rs274 uses a built-in table. ``ini`` is the text
+    of an INI file rs274 reads (``-i``: the interpreter's settings, e.g. ``[EMCIO] TOOL_CHANGE_WITH_SPINDLE_ON``).
 
     Lines the interpreter prints that are not canonical calls (e.g. ``(print,...)`` output) are left out.
     Raises RS274Unavailable, RS274Error (message = the interpreter's error text and the offending block)
@@ -128,6 +130,9 @@ def run_rs274(
         if tool_table is not None:
             (work / "tool.tbl").write_text(tool_table, encoding="utf-8")
             cmd += ["-t", "tool.tbl"]
+        if ini is not None:
+            (work / "machine.ini").write_text(ini, encoding="utf-8")
+            cmd += ["-i", "machine.ini"]
         cmd += ["-g", name]
         out_path, err_path = work / "stdout.txt", work / "stderr.txt"
         with open(out_path, "wb") as out, open(err_path, "wb") as err:
