@@ -100,8 +100,8 @@ class Program:
     target_setups: tuple[tuple[str, str], ...] = ()
     """Target -> a set-up file (relative like ``setup``) of the machine under that target's controller: its
     ``<MachineCodes>`` (the target machine's own codes), ``<ForeignCodes>`` (what the source's machine codes
-    become there) and ``<Controller toolChangeWithSpindleOn>`` (its tool change) join the program's set-up for
-    that pair (``_setup``). In the manifest an inline table,
+    become there) and the ``<Controller>`` settings of its build (``_TARGET_CONTROLLER``, its tool change) join
+    the program's set-up for that pair (``_setup``). In the manifest an inline table,
     ``target_setups = { gsk = "setups/….xml" }``: one machine's codes differ by controller (a gear range is
     M41 on a GSK, a user M code on LinuxCNC), and one set-up names one code per source code."""
     folder: str = str(CORPUS)
@@ -180,9 +180,16 @@ def _setup(program: Program, target: str = "") -> MachineSetup:
         setup.machine_codes = [*(c for c in setup.machine_codes if c.key() not in mine), *codes.machine_codes]
         foreign = {c.key() for c in codes.foreign_codes}
         setup.foreign_codes = [*(c for c in setup.foreign_codes if c.key() not in foreign), *codes.foreign_codes]
-        if codes.controller.tool_change_with_spindle_on:  # the target machine's tool change (its controller's)
-            setup.controller = dataclasses.replace(setup.controller, tool_change_with_spindle_on=True)
+        said = {name: value for name in _TARGET_CONTROLLER if (value := getattr(codes.controller, name)) is not None}
+        if codes.controller.tool_change_with_spindle_on:
+            said["tool_change_with_spindle_on"] = True
+        setup.controller = dataclasses.replace(setup.controller, **said)  # the target controller's build
     return setup
+
+
+_TARGET_CONTROLLER = ("tool_table", "spindle_sync", "mist_coolant", "expressions")
+"""``<Controller>`` settings of a target set-up that say what the target controller's build has (None: not
+said), taken over for its pairs with ``toolChangeWithSpindleOn``; the source's variant and rules stay."""
 
 
 def _lines(text: str) -> list[str]:
