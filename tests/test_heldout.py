@@ -196,3 +196,20 @@ def test_fanuc_0m_indexer_code_becomes_the_target_machines_own_and_is_never_left
         run("grbl")
     assert [str(e).split(": error:")[0] for e in refused.value.errors] == [
         f"{program.path}:{line}:6" for line in (25, 26, 33, 34)]
+
+
+def test_every_target_set_up_is_that_targets_machine_and_a_target_of_its_program() -> None:
+    """A per-target set-up (``target_setups``) describes the machine under that target's controller: its dialect
+    is the target's, the target is one the program is translated to, and the codes it maps come from the
+    program's family (a mapping for another family would never apply)."""
+    from postproc.plugins import default_registry
+    from postproc.setup.machine_setup import load_setup
+
+    registry = default_registry()
+    given = [(p, target, name) for p in ALL for target, name in p.target_setups]
+    assert given
+    for program, target, name in given:
+        setup = load_setup(HELDOUT / name)
+        assert setup.dialect == target and target in harness.targets(program), (program.path, target)
+        family = registry.dialects[program.dialect].family()
+        assert {code.family for code in setup.foreign_codes} <= {family}, name
