@@ -23,7 +23,8 @@ from . import arc_centres
 from .codes import CODES, M_GROUPS
 from .rigid_tap import MODE as RIGID_TAP, read_rigid_tap
 from .threading import MODE as THREAD_CYCLE, read_g76
-from .lathe_cycles import CODE_OF as G7X_MODES, MODES as G7X_CODES, check_profile_block, read_g7x
+from .lathe_cycles import (CODE_OF as G7X_MODES, MODES as G7X_CODES, check_profile_block, follow_compensation,
+                           read_g7x)
 from .tool_entry import TABLES as TOOL_TABLES, read_tool_entry
 
 RS274_SAID = lathe.Said(s_missing='rs274: "S word missing with G96"',
@@ -123,6 +124,9 @@ class NgcBlockSyntax(NgcWordBlockSyntax):
                 check_profile_block(block, ctx)
             if any(letter in "Gg" and g_key(num) in G7X_CODES for letter, num in block.words):
                 _real_d(block, ctx)
+            super().build(block, ctx)
+            follow_compensation(block, ctx)
+            return
         super().build(block, ctx)
 
     def before_sections(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],

@@ -45,6 +45,8 @@ WORDS: Final = {"70": "QDEP", "71": "QDIR", "72": "QDIR"}
 """The cycle's words besides X and Z [V: g-code.adoc]."""
 PROFILES_KEY: Final = "ngc.g7x_profiles"
 """``ctx.run_data`` key: subprogram name -> its blocks as written (``ProfileCollector``)."""
+COMPENSATING_KEY: Final = "ngc.g7x_compensating"
+"""``ctx.state.extra`` key: cutter (tool nose) compensation is on (``follow_compensation``)."""
 IN_SUB_KEY: Final = "ngc.g7x_in_sub"
 """``ctx.state.extra`` key: a subprogram's definition is being read (keep mode: its blocks pass here)."""
 PROFILE_LETTERS: Final = frozenset("NGXZUWIKRAC")
@@ -105,6 +107,26 @@ def check_profile_block(block: Block, ctx: Context) -> None:
                            ctx.at(block))
 
 
+def follow_compensation(block: Block, ctx: Context) -> None:
+    """Whether compensation is on after the block: G41/G42 (and their dynamic forms) on, G40 off."""
+    sections = block.sections
+    cc = sections.get("CutterCompensation")
+    extra = ctx.state.extra
+    if cc is not None:
+        extra[COMPENSATING_KEY] = cc.mode != "off"  # type: ignore[attr-defined]
+    native = sections.get("NativeCode")
+    if "DynamicCutterCompensation" in sections or native is not None and \
+            str(getattr(native, "what", "")).split(" ", 1)[0] in ("G41.1", "G42.1"):
+        extra[COMPENSATING_KEY] = True
+
+
+def _compensating(block: Block, ctx: Context) -> bool:
+    cc = block.sections.get("CutterCompensation")
+    if cc is not None:
+        return bool(cc.mode != "off")  # type: ignore[attr-defined]
+    return bool(ctx.state.extra.get(COMPENSATING_KEY))
+
+
 def read_g7x(block: Block, ctx: Context, motion: Motion, values: dict[str, Any], used: set[str]) -> None:
     """The block's cycle (``motion``, read with its code table kind ``MODES``) -> its ``CompoundMotion``;
     the tool where the cycle leaves it, and no motion mode a later block may repeat (module docstring)."""
@@ -124,6 +146,15 @@ def read_g7x(block: Block, ctx: Context, motion: Motion, values: dict[str, Any],
     words = {letter: float(v) for letter, v in given.items()}
     if "Q" not in words:
         raise refuse(f"{name} needs Q, the subprogram of its profile (rs274: \"G7x.x requires a Q word\")")
+    if _compensating(block, ctx):
+        if code != "70":
+            raise refuse(f"{name} with cutter compensation on (rs274: \"G{code} cannot be used with cutter "
+                         "compensation enabled\"): cancel it (G40) before the cycle")
+        raise refuse(f"{name} with cutter compensation on is not modelled: LinuxCNC 2.9.0 compensates the cycle "
+                     "from where its profile ends (a move to the profile's end first) [V: rs274 2.9.0~pre1 run "
+                     "here], 2.9.3 and later turn compensation off for each pass's approach (interp_g7x.cc, "
+                     "commits b1f3e7d8 and f648d01c) and are not at hand to check; cancel compensation (G40) "
+                     "before the cycle, or write its profile under G41/G42 as moves")
     if state.plane != "ZX":
         raise refuse(f"{name} runs in the ZX plane only (rs274: \"can only be used in XZ plane (G18)\")")
     if ctx.diameter:
