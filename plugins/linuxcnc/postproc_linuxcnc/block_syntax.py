@@ -120,7 +120,7 @@ class NgcBlockSyntax(NgcWordBlockSyntax):
     def build(self, block: Block, ctx: Context) -> None:
         """A lathe's G70-G72 profile blocks: followed through the subprogram definitions (``lathe_cycles``)."""
         if ctx.lathe:
-            if "Control" in block.sections or "InProfile" in block.sections:
+            if "Control" in block.sections or "NativeCode" in block.sections:
                 check_profile_block(block, ctx)
             if any(letter in "Gg" and g_key(num) in G7X_CODES for letter, num in block.words):
                 _real_d(block, ctx)

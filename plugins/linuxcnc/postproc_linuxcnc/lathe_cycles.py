@@ -27,8 +27,7 @@ from postproc.control import SubEnd, SubStart
 from postproc.cycles.turning.profile import TurnMove
 from postproc.errors import Location, ProgramError
 from postproc.expr import Expr
-from postproc.ir import Block, Motion
-from postproc.lathe_sections import InProfile
+from postproc.ir import Block, Motion, NativeCode
 from postproc.rs274.arc_ends import RS274NGC_ARC_END
 from postproc.rs274.codes import g_key
 from postproc.rs274.lathe_threading import place_thread_moves, thread_refusal
@@ -47,6 +46,9 @@ PROFILES_KEY: Final = "ngc.g7x_profiles"
 """``ctx.run_data`` key: subprogram name -> its blocks as written (``ProfileCollector``)."""
 COMPENSATING_KEY: Final = "ngc.g7x_compensating"
 """``ctx.state.extra`` key: cutter (tool nose) compensation is on (``follow_compensation``)."""
+CORNER_BLOCK: Final = "a G70-G72 profile block with a fillet (A) or chamfer (C)"
+"""What the ``NativeCode`` of such a block says: it travels as written, inert (the controller runs it only
+through its cycle, which reads its words from the subprogram as written)."""
 IN_SUB_KEY: Final = "ngc.g7x_in_sub"
 """``ctx.state.extra`` key: a subprogram's definition is being read (keep mode: its blocks pass here)."""
 PROFILE_LETTERS: Final = frozenset("NGXZUWIKRAC")
@@ -62,8 +64,8 @@ Written = tuple[int, list[tuple[str, str]], dict[str, Any]]
 class ProfileCollector:
     """The reader's bookkeeping: each ``o<n> sub`` .. ``endsub``'s blocks as written, by name, in
     ``ctx.run_data``. A block there with A or C, which this lathe has not as axes, is a fillet or chamfer
-    of a G70-G72 profile: it travels as written (``InProfile``, its words read by the cycle alone), the
-    controller runs it only through its cycle (``check_profile_block``)."""
+    of a G70-G72 profile: it travels as written (an inert ``NativeCode``, ``CORNER_BLOCK``: its words are
+    read by the cycle alone), the controller runs it only through its cycle (``check_profile_block``)."""
 
     __slots__ = ("profiles", "name", "body", "corner")
 
@@ -88,7 +90,7 @@ class ProfileCollector:
             return
         self.body.append((block.line, list(block.words), dict(block.values or {})))
         if self.corner and any(letter.upper() in self.corner for letter, _ in block.words):
-            block.add(InProfile(block.line))
+            block.add(NativeCode("linuxcnc", CORNER_BLOCK, block.text or "", inert=True))
             block.words = []
 
 
@@ -101,7 +103,7 @@ def check_profile_block(block: Block, ctx: Context) -> None:
         extra[IN_SUB_KEY] = True
     elif isinstance(control, SubEnd):
         extra.pop(IN_SUB_KEY, None)
-    elif "InProfile" in block.sections and not extra.get(IN_SUB_KEY):
+    elif _corner_block(block) and not extra.get(IN_SUB_KEY):
         raise ProgramError("a block with A or C (a fillet or chamfer of a G70-G72 profile) run as a move: "
                            "this lathe has no such axis, and only a G70-G72 cycle reads the words so",
                            ctx.at(block))
@@ -125,6 +127,11 @@ def _compensating(block: Block, ctx: Context) -> bool:
     if cc is not None:
         return bool(cc.mode != "off")  # type: ignore[attr-defined]
     return bool(ctx.state.extra.get(COMPENSATING_KEY))
+
+
+def _corner_block(block: Block) -> bool:
+    native = block.sections.get("NativeCode")
+    return native is not None and getattr(native, "what", None) == CORNER_BLOCK
 
 
 def read_g7x(block: Block, ctx: Context, motion: Motion, values: dict[str, Any], used: set[str]) -> None:
