@@ -25,7 +25,7 @@ from typing import Any, Final
 from postproc.context import Context
 from postproc.control import SubEnd, SubStart
 from postproc.cycles.turning.profile import TurnMove
-from postproc.errors import Location, ProgramError
+from postproc.errors import Location, ProgramError, UnsupportedError
 from postproc.expr import Expr
 from postproc.ir import Block, Motion, NativeCode
 from postproc.rs274.arc_ends import RS274NGC_ARC_END
@@ -140,6 +140,11 @@ def read_g7x(block: Block, ctx: Context, motion: Motion, values: dict[str, Any],
     code = CODE_OF[str(motion.mode)]
     name = f"G{code}"
     refuse = thread_refusal(block, ctx)
+
+    def unmodelled(message: str, letter: str | None = None) -> UnsupportedError:
+        """A form the controller may run but this reading does not model."""
+        return UnsupportedError(message, ctx.at(block, ctx.column_of(block, letter or "G")))
+
     del block.sections["Motion"]
     state = ctx.state
     state.motion = None  # (the profile's last code stays in force there: a block of axis words alone is refused)
@@ -147,9 +152,9 @@ def read_g7x(block: Block, ctx: Context, motion: Motion, values: dict[str, Any],
     given = {letter: values[letter] for letter in letters if letter in values}
     extra = sorted(letter for letter in "UW" if letter in values)
     if extra:
-        raise refuse(f"{extra[0]} in {name}: the cycle takes X and Z (U and W belong in its profile)", extra[0])
+        raise unmodelled(f"{extra[0]} in {name}: the cycle takes X and Z (U and W belong in its profile)", extra[0])
     if any(isinstance(v, Expr) for v in [*given.values(), *motion.axes.values()]):
-        raise refuse(f"a computed word in {name} is not supported (write the numbers)")
+        raise unmodelled(f"a computed word in {name} is not supported (write the numbers)")
     words = {letter: float(v) for letter, v in given.items()}
     if "Q" not in words:
         raise refuse(f"{name} needs Q, the subprogram of its profile (rs274: \"G7x.x requires a Q word\")")
@@ -157,7 +162,7 @@ def read_g7x(block: Block, ctx: Context, motion: Motion, values: dict[str, Any],
         if code != "70":
             raise refuse(f"{name} with cutter compensation on (rs274: \"G{code} cannot be used with cutter "
                          "compensation enabled\"): cancel it (G40) before the cycle")
-        raise refuse(f"{name} with cutter compensation on is not modelled: LinuxCNC 2.9.0 compensates the cycle "
+        raise unmodelled(f"{name} with cutter compensation on is not modelled: LinuxCNC 2.9.0 compensates the cycle "
                      "from where its profile ends (a move to the profile's end first) [V: rs274 2.9.0~pre1 run "
                      "here], 2.9.3 and later turn compensation off for each pass's approach (interp_g7x.cc, "
                      "commits b1f3e7d8 and f648d01c) and are not at hand to check; cancel compensation (G40) "
@@ -165,13 +170,13 @@ def read_g7x(block: Block, ctx: Context, motion: Motion, values: dict[str, Any],
     if state.plane != "ZX":
         raise refuse(f"{name} runs in the ZX plane only (rs274: \"can only be used in XZ plane (G18)\")")
     if ctx.diameter:
-        raise refuse(f"{name} in diameter mode (G7) is not modelled: the cycle reads its profile's X as written")
+        raise unmodelled(f"{name} in diameter mode (G7) is not modelled: the cycle reads its profile's X as written")
     incremental = state.distance == "incremental"
     distance = block.sections.get("DistanceMode")
     if distance is not None:
         incremental = distance.mode == "incremental"  # type: ignore[attr-defined]
     if incremental:
-        raise refuse(f"{name} in incremental mode (G91) is not modelled (program it in G90)")
+        raise unmodelled(f"{name} in incremental mode (G91) is not modelled (program it in G90)")
     x0, z0 = state.position.get("X"), state.position.get("Z")
     axes = {axis: float(v) for axis, v in motion.axes.items()}
     x = axes.get("X", x0)
@@ -189,11 +194,11 @@ def read_g7x(block: Block, ctx: Context, motion: Motion, values: dict[str, Any],
     label = str(int(words["Q"])) if words["Q"] == int(words["Q"]) else str(words["Q"])
     written = ctx.run_data.get(PROFILES_KEY, {}).get(label)
     if written is None:
-        raise refuse(f"{name} Q{label}: no subprogram o{label} is defined before the cycle", "Q")
+        raise unmodelled(f"{name} Q{label}: no subprogram o{label} is defined before the cycle", "Q")
     start = complex(float(z), float(x))
     pieces = _profile(written, start, ctx, name, ctx.at(block, ctx.column_of(block, "Q")))
     if code != "70" and len(pieces) > 1:
-        _check_closed(pieces, start, code, name, refuse)
+        _check_closed(pieces, start, code, name, unmodelled)
     try:
         moves = cycle_moves(code, pieces, float(x), float(z), d=words.get("D", 0.0), e=words.get("E", 0.0),
                             i=words.get("I", 1.0), r=words.get("R", 0.5), passes=int(passes),
@@ -211,17 +216,17 @@ def read_g7x(block: Block, ctx: Context, motion: Motion, values: dict[str, Any],
     state.position["Z"] = last.z
 
 
-def _check_closed(pieces: list[Piece], start: complex, code: str, name: str, refuse: Any) -> None:
+def _check_closed(pieces: list[Piece], start: complex, code: str, name: str, unmodelled: Any) -> None:
     """A roughing profile must end back at the cycle's X (G71) or Z (G72) (module docstring)."""
     end = pieces[-1].end
     back = pieces[-1].end - pieces[-1].start
     front = pieces[0].end - pieces[0].start
     if code.startswith("71") and abs(back.real) > 0 and front.imag * (start.imag - end.imag) < 0:
-        raise refuse(f"{name}: the profile ends at X{end.imag:g}, short of the cycle's X{start.imag:g}: LinuxCNC "
-                     "versions cut it differently (before and after 2.9.3); end the profile at the cycle's X")
+        raise unmodelled(f"{name}: the profile ends at X{end.imag:g}, short of the cycle's X{start.imag:g}: LinuxCNC "
+                         "versions cut it differently (before and after 2.9.3); end the profile at the cycle's X")
     if code.startswith("72") and abs(back.imag) > 0 and front.real * (start.real - end.real) < 0:
-        raise refuse(f"{name}: the profile ends at Z{end.real:g}, short of the cycle's Z{start.real:g}: LinuxCNC "
-                     "versions cut it differently (before and after 2.9.3); end the profile at the cycle's Z")
+        raise unmodelled(f"{name}: the profile ends at Z{end.real:g}, short of the cycle's Z{start.real:g}: LinuxCNC "
+                         "versions cut it differently (before and after 2.9.3); end the profile at the cycle's Z")
 
 
 def _profile(written: list[Written], start: complex, ctx: Context, name: str, at: Location) -> list[Piece]:
@@ -235,21 +240,24 @@ def _profile(written: list[Written], start: complex, ctx: Context, name: str, at
         def fail(message: str) -> ProgramError:
             return ProgramError(f"{name}'s profile, line {line}: {message}", at)
 
+        def unmodelled(message: str) -> UnsupportedError:
+            return UnsupportedError(f"{name}'s profile, line {line}: {message}", at)
+
         if values:
-            raise fail("a computed word in a G70-G72 profile is not supported (write the numbers)")
+            raise unmodelled("a computed word in a G70-G72 profile is not supported (write the numbers)")
         got: dict[str, float] = {}
         for letter, num in words:
             up = letter.upper()
             if up == "G":
                 key = g_key(num)
                 if key not in ("0", "1", "2", "3"):
-                    raise fail(f"G{num} in a profile: the cycle reads G0-G3 moves only")
+                    raise unmodelled(f"G{num} in a profile: the cycle reads G0-G3 moves only")
                 mode = key
                 continue
             if up in IGNORED:
-                raise fail(f"{up} in a profile: the controller ignores it there (set it before the cycle)")
+                raise unmodelled(f"{up} in a profile: the controller ignores it there (set it before the cycle)")
             if up not in PROFILE_LETTERS:
-                raise fail(f"{up} in a profile: the cycle reads G0-G3 with X, Z, U, W, I, K, R, A and C only")
+                raise unmodelled(f"{up} in a profile: the cycle reads G0-G3 with X, Z, U, W, I, K, R, A and C only")
             if up in got:
                 raise fail(f"address {up} appears twice in one block")
             got[up] = float(num)
@@ -257,7 +265,7 @@ def _profile(written: list[Written], start: complex, ctx: Context, name: str, at
         if not got:
             continue
         if mode is None:
-            raise fail("a move without its G0-G3 in a profile (write the code)")
+            raise unmodelled("a move without its G0-G3 in a profile (write the code)")
         if "U" in got and "X" in got or "W" in got and "Z" in got:
             raise fail("U beside X or W beside Z (rs274: \"Cannot use U and X in the same block\")")
         end = complex(here.real + got["W"] if "W" in got else got.get("Z", here.real),
