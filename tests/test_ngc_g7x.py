@@ -21,7 +21,7 @@ import pytest
 
 from postproc.api import translate
 from postproc.errors import ErrorList, PostprocError
-from postproc.rs274.ngc_g7x import G7xError, arc_centre_by_radius, cycle_moves
+from postproc.rs274.ngc_g7x import NgcCycleError, arc_centre_by_radius, cycle_moves
 from postproc.rs274.ngc_g7x_segments import Arc, Chamfer, Fillet, Line, Piece
 from postproc.setup.machine_setup import InputSettings, MachineSetup
 from postproc.simulate.toolpath import toolpath_events
@@ -135,7 +135,7 @@ def test_engine_matches_rs274_on_random_profiles(code: str) -> None:
         case = draw(rng, code)
         try:
             moves = engine(case)
-        except G7xError as err:
+        except NgcCycleError as err:
             with pytest.raises(RS274Error):
                 run_rs274(case.program(), tool_table=TOOLS)
             assert str(err)
@@ -159,7 +159,7 @@ def test_reading_matches_rs274_on_random_closed_profiles() -> None:
             continue
         try:
             engine(case)
-        except G7xError:
+        except NgcCycleError:
             continue
         cases.append(case)
     text = batch_program(cases)

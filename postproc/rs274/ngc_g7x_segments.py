@@ -80,7 +80,7 @@ class Piece:
             p.offset(self.finish)
             n.offset(self.finish)
         if (p.end - n.start).real > 1e-2:
-            raise G7xError(f"the corner finish failed at Z{prev.end.real:g} X{prev.end.imag:g}")
+            raise NgcCycleError(f"the corner finish failed at Z{prev.end.real:g} X{prev.end.imag:g}")
         meet(p, n)
         centre = (p.end + n.start) / 2.0
         p.offset(-self.finish)
@@ -112,7 +112,7 @@ class Piece:
         raise NotImplementedError
 
 
-class G7xError(Exception):
+class NgcCycleError(Exception):
     """The controller refuses the profile (its message, ``G7X error: ...``)."""
 
 
@@ -144,7 +144,7 @@ class Line(Piece):
         if self.end.imag + TOLERANCE < self.start.imag:
             return True
         if abs(at[0] - self.start) > TOLERANCE:
-            raise G7xError("How did we get here?")
+            raise NgcCycleError("How did we get here?")
         out("feed", self.end, None)
         at[0] = self.end
         return False
@@ -170,7 +170,7 @@ class Line(Piece):
             return False
         found = self.crossings(x)
         if not found:
-            raise G7xError("x too large in straight dive")
+            raise NgcCycleError("x too large in straight dive")
         at[0] = complex(found[0], x)
         out(kind, at[0], None)
         return False
@@ -379,7 +379,7 @@ def meet(a: Piece, b: Piece) -> None:
     ps = (a.start - b.end) * rot
     pe = (a.end - b.end) * rot
     if (ps - pe).imag == 0:
-        raise G7xError("Cannot intersect parallel lines")
+        raise NgcCycleError("Cannot intersect parallel lines")
     f = ps.imag / (ps - pe).imag
     a.end = b.start = (ps + f * (pe - ps)) / rot + b.end
 

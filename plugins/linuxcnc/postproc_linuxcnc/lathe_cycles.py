@@ -15,7 +15,7 @@ refused: a profile with a computed word or with any word but those (a feed or sp
 said as an error rather than dropped), a subprogram not defined before the cycle, the cycle in
 incremental mode (G91) or in diameter mode (G7), a P of G70 that is no whole number from 1, and a
 roughing profile that is not closed back to the cycle's X (G71) or Z (G72): LinuxCNC 2.9.0 before 2.9.3
-closed it after the offset, later ones before it (``ngc_g7x.LEGACY``), so its cut depends on the version.
+closed it after the offset, later ones before it (``postproc.rs274.ngc_g7x``, ``legacy``), so its cut depends on the version.
 """
 
 from __future__ import annotations
@@ -31,7 +31,7 @@ from postproc.ir import Block, Motion, NativeCode
 from postproc.rs274.arc_ends import RS274NGC_ARC_END
 from postproc.rs274.codes import g_key
 from postproc.rs274.lathe_threading import place_thread_moves, thread_refusal
-from postproc.rs274.ngc_g7x import G7xError, arc_centre_by_radius, cycle_moves
+from postproc.rs274.ngc_g7x import NgcCycleError, arc_centre_by_radius, cycle_moves
 from postproc.rs274.ngc_g7x_segments import Arc, Chamfer, Fillet, Line, Piece
 
 from . import arc_centres
@@ -178,7 +178,7 @@ def read_g7x(block: Block, ctx: Context, motion: Motion, values: dict[str, Any],
     if incremental:
         raise unmodelled(f"{name} in incremental mode (G91) is not modelled (program it in G90)")
     x0, z0 = state.position.get("X"), state.position.get("Z")
-    axes = {axis: float(v) for axis, v in motion.axes.items()}
+    axes = {axis: float(v) for axis, v in motion.axes.items() if not isinstance(v, Expr)}  # (refused above)
     x = axes.get("X", x0)
     z = axes.get("Z", z0)
     if x is None or z is None:
@@ -203,7 +203,7 @@ def read_g7x(block: Block, ctx: Context, motion: Motion, values: dict[str, Any],
         moves = cycle_moves(code, pieces, float(x), float(z), d=words.get("D", 0.0), e=words.get("E", 0.0),
                             i=words.get("I", 1.0), r=words.get("R", 0.5), passes=int(passes),
                             inch=state.units == "inch")
-    except G7xError as err:
+    except NgcCycleError as err:
         raise refuse(f"{name}: {err} (rs274: \"G7X error\")") from None
     turn = [TurnMove("rapid", float(x), float(z))]  # the rapid to the cycle's point
     for kind, end, centre in moves:
@@ -285,7 +285,7 @@ def _profile(written: list[Written], start: complex, ctx: Context, name: str, at
                     raise fail("both R and I or K on an arc (rs274: \"both R and I or K flag used for arc\")")
                 try:
                     centre = arc_centre_by_radius(here, end, got["R"], ccw)
-                except G7xError as err:
+                except NgcCycleError as err:
                     raise fail(str(err)) from None
             else:
                 if "I" not in got and "K" not in got:
