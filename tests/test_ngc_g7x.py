@@ -264,3 +264,53 @@ def test_mill_keeps_the_codes_verbatim() -> None:
     assert out.getvalue() == text
     with pytest.raises((PostprocError, ErrorList), match="cannot be simulated"):
         simulated(text, MachineSetup())
+
+
+# -- another family's cycles towards LinuxCNC ------------------------------------------------------------
+FANUC_G71 = """O0001
+G18 G21 G40 G97 G99
+T0101
+M3 S500
+G0 X12. Z2.
+G71 U1. R0.5
+G71 P10 Q20 U0. W0. F0.2
+N10 G0 X2.
+G1 Z-5.
+X6. Z-8.
+Z-12.
+N20 X12.
+G0 X20. Z5.
+M30
+"""
+LINUXCNC_G71 = """G18 G21 G8 G90 G40
+F100
+O100 SUB
+G0 X1
+G1 Z-5
+G1 X3 Z-8
+G1 Z-12
+G1 X6
+O100 ENDSUB
+G0 X6 Z2
+G71 Q100 X6 Z2 D0 I1 R0.5
+M2
+"""
+
+
+@needs_rs274
+def test_fanuc_g71_is_not_linuxcnc_g71_so_it_stays_expanded() -> None:
+    """The same profile, depth 1 and retract 0.5 (radii): Fanuc T's G71 cuts its first layer one depth below the
+    start and goes back along Z at the retracted X [our Fanuc simulation, itself held to hand-derived paths in
+    tests/test_lathe.py]; LinuxCNC's cuts the first layer at the start's X and goes back diagonally [rs274]. So a
+    Fanuc T or GSK G71 is written to LinuxCNC as its moves, never as LinuxCNC's G71."""
+    from postproc.setup.machine_setup import load_setup
+    fanuc_setup = load_setup(str(ROOT / "examples" / "setups" / "fanuc_0i_tf.xml"))
+    fanuc = [(e["move"], float(e["x"]) / 2.0, float(e["z"])) for e in
+             toolpath_events(io.StringIO(FANUC_G71), file="f.nc", dialect="fanuc", setup=fanuc_setup) if "move" in e]
+    linuxcnc = [(m["move"], m["x"], m["z"]) for m in rs274_moves(LINUXCNC_G71)]
+    assert fanuc[1:4] == [("rapid", 5.0, 2.0), ("feed", 5.0, -12.0), ("rapid", 5.5, -11.5)]
+    assert fanuc[4] == ("rapid", 5.5, 2.0)
+    assert linuxcnc[1:5] == [("feed", 6.0, -12.0), ("rapid", 6.5, -11.5), ("rapid", 6.5, 1.5), ("rapid", 6.0, 2.0)]
+    out = io.StringIO()
+    translate(io.StringIO(FANUC_G71), out, file="f.nc", source="fanuc", target="linuxcnc", setup=fanuc_setup)
+    assert not re.search(r"^\s*(N\d+\s*)?G7[0-2]\b", out.getvalue(), re.M)
