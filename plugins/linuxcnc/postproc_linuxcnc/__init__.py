@@ -113,8 +113,8 @@ class Linuxcnc(Dialect):
     """The retract mode in force at program start (LinuxCNC's interpreter starts in G99)."""
     MACHINE_TYPES = frozenset({"mill", "lathe"})
     """Mills and lathes (the set-up's ``machineType``; mill when it says nothing). A lathe reads G7/G8, G33 K,
-    G96 S D into lathe sections (``postproc.rs274.ngc_lathe``) and G76 into its moves (``threading``); the
-    RS274/NGC lathe cycles G70-G72 stay verbatim."""
+    G96 S D into lathe sections (``postproc.rs274.ngc_lathe``), G76 into its moves (``threading``) and the
+    RS274/NGC lathe cycles G70-G72.2 into theirs (``lathe_cycles``)."""
     DIAMETER_PROGRAMMING = True
     """G7: X is a diameter (G8 a radius), per the set-up's ``xProgramming``; a translation writes the mode
     (and G18) before its first block, as a LinuxCNC lathe's start-up code may say either [K: the
