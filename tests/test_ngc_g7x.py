@@ -314,3 +314,30 @@ def test_fanuc_g71_is_not_linuxcnc_g71_so_it_stays_expanded() -> None:
     out = io.StringIO()
     translate(io.StringIO(FANUC_G71), out, file="f.nc", source="fanuc", target="linuxcnc", setup=fanuc_setup)
     assert not re.search(r"^\s*(N\d+\s*)?G7[0-2]\b", out.getvalue(), re.M)
+
+
+DIAMETER_PROGRAM = """G18 G21 G7 G90 G40
+F100
+O100 SUB
+G0 X2 Z0
+G1 W-5
+G1 U4 W-3
+G3 X8 Z-9 I0 K-1
+G1 Z-12
+G1 X12
+O100 ENDSUB
+G0 X12 Z2
+G71 Q100 X12 Z2 D0.2 I1 R0.5
+G70 Q100 X12 Z2 D0.1 P1
+M2
+"""
+
+
+@needs_rs274
+def test_diameter_mode_reads_x_and_u_as_diameters() -> None:
+    """Under G7 the profile's and the cycle's X and U are diameters, its arc centres, D, I and R radial [rs274]."""
+    setup = MachineSetup(input=InputSettings(machine_type="lathe", x_programming="diameter"))
+    ours = [{k: float(v) / 2.0 if k in ("x", "cx") else v for k, v in e.items()} for e in simulated(DIAMETER_PROGRAM, setup)]
+    theirs = rs274_moves(DIAMETER_PROGRAM)
+    assert len(without_repeats(theirs)) > 30
+    assert difference(ours, theirs) is None

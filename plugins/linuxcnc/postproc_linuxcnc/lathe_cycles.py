@@ -13,7 +13,7 @@ Refused where read, rs274's own refusals: no Q ("G7x.x requires a Q word"), a pl
 above 0, a profile arc given by neither I/K nor R or by both, a profile not monotonic. Not modelled, so
 refused: a profile with a computed word or with any word but those (a feed or speed is ignored there, so
 said as an error rather than dropped), a subprogram not defined before the cycle, the cycle in
-incremental mode (G91) or in diameter mode (G7), a P of G70 that is no whole number from 1, and a
+incremental mode (G91), a P of G70 that is no whole number from 1, and a
 roughing profile that is not closed back to the cycle's X (G71) or Z (G72): LinuxCNC 2.9.0 before 2.9.3
 closed it after the offset, later ones before it (``postproc.rs274.ngc_g7x``, ``legacy``), so its cut depends on the version.
 """
@@ -169,17 +169,19 @@ def read_g7x(block: Block, ctx: Context, motion: Motion, values: dict[str, Any],
                      "before the cycle, or write its profile under G41/G42 as moves")
     if state.plane != "ZX":
         raise refuse(f"{name} runs in the ZX plane only (rs274: \"can only be used in XZ plane (G18)\")")
-    if ctx.diameter:
-        raise unmodelled(f"{name} in diameter mode (G7) is not modelled: the cycle reads its profile's X as written")
     incremental = state.distance == "incremental"
     distance = block.sections.get("DistanceMode")
     if distance is not None:
         incremental = distance.mode == "incremental"  # type: ignore[attr-defined]
     if incremental:
         raise unmodelled(f"{name} in incremental mode (G91) is not modelled (program it in G90)")
+    scale = 2.0 if ctx.diameter else 1.0
+    """In diameter mode (G7) X and U are diameters, everything else radial [V: rs274 2.9.0~pre1 run here: a
+    profile and cycle X doubled under G7 make the moves of G8; I, K, R, D, E and the depth I unchanged]."""
     x0, z0 = state.position.get("X"), state.position.get("Z")
+    x0 = None if x0 is None else float(x0) / scale
     axes = {axis: float(v) for axis, v in motion.axes.items() if not isinstance(v, Expr)}  # (refused above)
-    x = axes.get("X", x0)
+    x = axes["X"] / scale if "X" in axes else x0
     z = axes.get("Z", z0)
     if x is None or z is None:
         raise refuse(f"{name}: the tool's position before the cycle is unknown (give the cycle X and Z)")
@@ -196,7 +198,7 @@ def read_g7x(block: Block, ctx: Context, motion: Motion, values: dict[str, Any],
     if written is None:
         raise unmodelled(f"{name} Q{label}: no subprogram o{label} is defined before the cycle", "Q")
     start = complex(float(z), float(x))
-    pieces = _profile(written, start, ctx, name, ctx.at(block, ctx.column_of(block, "Q")))
+    pieces = _profile(written, start, ctx, name, ctx.at(block, ctx.column_of(block, "Q")), scale)
     if code != "70" and len(pieces) > 1:
         _check_closed(pieces, start, code, name, unmodelled)
     try:
@@ -212,7 +214,7 @@ def read_g7x(block: Block, ctx: Context, motion: Motion, values: dict[str, Any],
     origin = (float(x0) if x0 is not None else float(x), float(z0) if z0 is not None else float(z))
     place_thread_moves(block, ctx, turn, origin, words, used, refuse, name)
     last = turn[-1]
-    state.position["X"] = last.x
+    state.position["X"] = last.x * scale
     state.position["Z"] = last.z
 
 
@@ -229,7 +231,8 @@ def _check_closed(pieces: list[Piece], start: complex, code: str, name: str, unm
                          "versions cut it differently (before and after 2.9.3); end the profile at the cycle's Z")
 
 
-def _profile(written: list[Written], start: complex, ctx: Context, name: str, at: Location) -> list[Piece]:
+def _profile(written: list[Written], start: complex, ctx: Context, name: str, at: Location,
+             scale: float) -> list[Piece]:
     """The cycle's pieces: the approach from ``start``, then the subprogram's moves (module docstring); a
     refusal is located at the cycle's Q and names the profile's line."""
     pieces: list[Piece] = []
@@ -269,7 +272,7 @@ def _profile(written: list[Written], start: complex, ctx: Context, name: str, at
         if "U" in got and "X" in got or "W" in got and "Z" in got:
             raise fail("U beside X or W beside Z (rs274: \"Cannot use U and X in the same block\")")
         end = complex(here.real + got["W"] if "W" in got else got.get("Z", here.real),
-                      here.imag + got["U"] if "U" in got else got.get("X", here.imag))
+                      here.imag + got["U"] / scale if "U" in got else got["X"] / scale if "X" in got else here.imag)
         if "A" in got and "C" in got:
             raise fail("both A and C on a corner (rs274: \"Both A and C parameters on a corner\")")
         if end == here:
