@@ -9,13 +9,17 @@ fillet at its end) or C (a chamfer), U/W as increments of X/Z [V: LinuxCNC ``doc
 ``postproc.rs274.ngc_g7x``'s (the controller's algorithm). Before them, a rapid to the cycle's X and Z; the
 tool stays where the last move ends; the feed rate in force cuts.
 
-Refused where read, rs274's own refusals: no Q ("G7x.x requires a Q word"), a plane other than ZX, I not
-above 0, a profile arc given by neither I/K nor R or by both, a profile not monotonic. Not modelled, so
-refused: a profile with a computed word or with any word but those (a feed or speed is ignored there, so
-said as an error rather than dropped), a subprogram not defined before the cycle, the cycle in
-incremental mode (G91), a P of G70 that is no whole number from 1, and a
-roughing profile that is not closed back to the cycle's X (G71) or Z (G72): LinuxCNC 2.9.0 before 2.9.3
-closed it after the offset, later ones before it (``postproc.rs274.ngc_g7x``, ``legacy``), so its cut depends on the version.
+In diameter mode (G7) the profile's and the cycle's X and U are diameters; arc centres, R, D, E, I (the depth)
+and R (the retract) are radial [V: rs274 2.9.0~pre1, a G7 program with X and U doubled cuts the G8 one's moves].
+
+Refused where read, rs274's own refusals (``ProgramError``): no Q ("G7x.x requires a Q word"), a plane other
+than ZX, I not above 0, G71/G72 under cutter compensation, a profile arc given by neither I/K nor R or by
+both, a profile not monotonic. Not modelled, so refused (``UnsupportedError``): a profile with a computed word
+or with any word but those (a feed or speed is ignored there: said rather than dropped), a subprogram not
+defined before the cycle, the cycle in incremental mode (G91), a P of G70 that is no whole number from 1,
+G70 under cutter compensation (``read_g7x``), and a roughing profile not closed back to the cycle's X (G71) or
+Z (G72): LinuxCNC 2.9.0~pre1 closes it after the offset, later versions before it (``postproc.rs274.ngc_g7x``,
+``legacy``), so its cut depends on the version.
 """
 
 from __future__ import annotations
