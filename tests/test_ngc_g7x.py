@@ -341,3 +341,35 @@ def test_diameter_mode_reads_x_and_u_as_diameters() -> None:
     theirs = rs274_moves(DIAMETER_PROGRAM)
     assert len(without_repeats(theirs)) > 30
     assert difference(ours, theirs) is None
+
+
+# -- properties ----------------------------------------------------------------------------------------------
+from hypothesis import given, settings  # noqa: E402
+from hypothesis import strategies as st  # noqa: E402
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.integers(min_value=0, max_value=2**32))
+def test_g70_without_allowance_follows_the_profile(seed: int) -> None:
+    """G70 with D = E = 0 in one pass is a rapid towards the cycle's point, a rapid to the profile's first point,
+    then the profile itself, piece by piece [K: g-code.adoc "The path given in Q- is followed using the G1
+    and G2/G3 commands"] (profiles without corners: a fillet or chamfer changes the path)."""
+    case = draw(random.Random(seed), "70")
+    for step in case.steps:
+        step.words.pop("A", None)
+        step.words.pop("C", None)
+    case.words = {}
+    try:
+        moves = engine(case)
+    except NgcCycleError:
+        return  # a profile the controller refuses (not monotonic): checked against rs274 above
+    expected = [(s.x, s.z) for s in case.steps]
+    assert [m["move"] for m in moves[:3]] == ["rapid"] * 3  # (the helper's rapid to the cycle's point first)
+    assert (moves[2]["x"], moves[2]["z"]) == pytest.approx(expected[0])  # (the first rapid may stop short of
+    # the cycle's point: the approach is cut back to the profile's start Z, or X for a facing profile)
+    drawn = [(m["x"], m["z"]) for m in moves[3:]]
+    assert len(drawn) == len(expected) - 1
+    for (x, z), (ex, ez) in zip(drawn, expected[1:]):
+        assert x == pytest.approx(ex, abs=1e-9) and z == pytest.approx(ez, abs=1e-9)
+    kinds = [m["move"] for m in moves[3:]]
+    assert kinds == [{0: "feed", 1: "feed", 2: "cw", 3: "ccw"}[s.g] for s in case.steps[1:]]
