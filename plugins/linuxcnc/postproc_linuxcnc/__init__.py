@@ -65,6 +65,8 @@ class Linuxcnc(Dialect):
     LATHE_WRITER = Lazy[type[Writer]](".lathe_writer:LinuxcncLatheWriter")
     """The writer of a lathe program (``writer_class``): its own class, so a mill's keeps the fast lane."""
     PIPELINE_FILE = "linuxcnc.xml"
+    LATHE_PIPELINE_FILE = "linuxcnc_lathe.xml"
+    """A lathe's: its block step follows the G70-G72 cycles' profiles (``block_syntax.NgcLatheBlockSyntax``)."""
     CYCLE_WORDS = rs274_cycle_words(CODES, ("L",))
     """R level, Q peck/shift, P dwell (seconds), L repeats."""
     NATIVE_CYCLES = NATIVE
@@ -132,14 +134,20 @@ class Linuxcnc(Dialect):
 
     @classmethod
     def python_pipeline(cls, setup: MachineSetup) -> Pipeline:
-        """``linuxcnc.xml``, built in Python."""
+        """``linuxcnc.xml`` (a lathe's ``linuxcnc_lathe.xml``), built in Python."""
         from postproc.cycles.resolve import CannedCycleResolveSyntax
         from postproc.syntaxes.modal_state import ModalStateSyntax
-        from .block_syntax import NgcBlockSyntax
+        from .block_syntax import NgcBlockSyntax, NgcLatheBlockSyntax
         from .polar import PolarSyntax
         from .program import LinuxcncProgramSyntax
-        return Pipeline(cls.NAME, [LinuxcncProgramSyntax(), PolarSyntax(), NgcBlockSyntax(),
+        block = NgcLatheBlockSyntax() if cls.reads_lathe(setup) else NgcBlockSyntax()
+        return Pipeline(cls.NAME, [LinuxcncProgramSyntax(), PolarSyntax(), block,
                                    CannedCycleResolveSyntax("rs274"), ModalStateSyntax()])
+
+    @classmethod
+    def pipeline_file(cls, setup: MachineSetup) -> str | None:
+        """``LATHE_PIPELINE_FILE`` on a lathe set-up, else ``PIPELINE_FILE``."""
+        return cls.LATHE_PIPELINE_FILE if cls.reads_lathe(setup) else cls.PIPELINE_FILE
 
     @classmethod
     def writer_class(cls, ctx: Context) -> type[Writer] | None:
@@ -167,6 +175,7 @@ def postproc_register_lowerings(register: Callable[[Lowering], None]) -> None:
 @hookimpl
 def postproc_register_xml(factory: XFactory) -> None:
     factory.register_lazy("NgcBlockSyntax", f"{__name__}.block_syntax:NgcBlockSyntax")
+    factory.register_lazy("NgcLatheBlockSyntax", f"{__name__}.block_syntax:NgcLatheBlockSyntax")
     factory.register_lazy("LinuxcncProgramSyntax", f"{__name__}.program:LinuxcncProgramSyntax")
     factory.register_lazy("PolarSyntax", f"{__name__}.polar:PolarSyntax")
     factory.register_lazy("DynamicCutterCompensation",

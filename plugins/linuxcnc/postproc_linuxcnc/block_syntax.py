@@ -117,18 +117,6 @@ class NgcBlockSyntax(NgcWordBlockSyntax):
     OWN_STATE: ClassVar[frozenset[str]] = frozenset((arc_centres.STATE_KEY,))
     OWN_MOTION: ClassVar[frozenset[str]] = frozenset(("thread", RIGID_TAP, THREAD_CYCLE, *G7X_MODES))
 
-    def build(self, block: Block, ctx: Context) -> None:
-        """A lathe's G70-G72 profile blocks: followed through the subprogram definitions (``lathe_cycles``)."""
-        if ctx.lathe:
-            if "Control" in block.sections or "NativeCode" in block.sections:
-                check_profile_block(block, ctx)
-            if any(letter in "Gg" and g_key(num) in G7X_CODES for letter, num in block.words):
-                _real_d(block, ctx)
-            super().build(block, ctx)
-            follow_compensation(block, ctx)
-            return
-        super().build(block, ctx)
-
     def before_sections(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],
                         used: set[str]) -> dict[str, Any] | None:
         spring: dict[str, Any] = {}
@@ -199,6 +187,27 @@ def _real_d(block: Block, ctx: Context) -> None:
                 raise ProgramError(f"D{num} is not a number", ctx.at(block, ctx.column_of(block, "D"))) from None
             block.words = block.words[:index] + block.words[index + 1:]
             return
+
+
+class NgcLatheBlockSyntax(NgcBlockSyntax):
+    """LinuxCNC's reading of a lathe program's block (``linuxcnc_lathe.xml``): the G70-G72 cycles' D read as a
+    distance, their profile blocks followed through the subprogram definitions and the cutter compensation in
+    force followed for them (``lathe_cycles``). A class of its own: a mill's blocks keep the compiled ``build``
+    with no interpreted step before it."""
+
+    XNAME = "NgcLatheBlockSyntax"
+    __slots__ = ()
+
+    def build(self, block: Block, ctx: Context) -> None:
+        sections = block.sections
+        if "Control" in sections or "NativeCode" in sections:
+            check_profile_block(block, ctx)
+        for letter, num in block.words:
+            if (letter == "G" or letter == "g") and g_key(num) in G7X_CODES:
+                _real_d(block, ctx)
+                break
+        super().build(block, ctx)
+        follow_compensation(block, ctx)
 
 
 def _blending_tolerance(block: Block, ctx: Context, path: PathControl, values: dict[str, Any], used: set[str]) -> None:
