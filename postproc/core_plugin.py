@@ -14,6 +14,7 @@ from .lowering.tool_entries import write_tool_entries
 from .lowering.program_frame import frame_program
 from .control import register_control
 from .cycles.lathe_lowering import expand_lathe_cycles
+from .rs274.lathe_tool_index import index_turret
 from .cycles.lowering import expand_canned_cycles
 from .hookspecs import hookimpl
 from .lowering.inverse_time import convert_inverse_time
@@ -56,6 +57,7 @@ def postproc_register_lowerings(register: Callable[[Lowering], None]) -> None:
     register(evaluate_frames)  # before the cycles: a cycle under a frame is expanded at carried points
     register(expand_canned_cycles)
     register(expand_lathe_cycles)
+    register(index_turret)  # after the lathe cycles: an M6 tool change becomes a turret index (T0202)
     register(resolve_dynamic_cutter_compensation)  # before inverse time: its feeds follow the resolved moves
     register(convert_inverse_time)  # after the expansions: it follows the moves they leave
     register(comment_after_end)

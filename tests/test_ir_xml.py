@@ -223,7 +223,7 @@ SAMPLES: dict[str, list[tuple[Builder, str]]] = {
     **{name: _empty(name) for name in (
         "FanucBlockSyntax", "FanucLatheBlockSyntax", "GskBlockSyntax", "LatheCycleSyntax", "FanucProgramSyntax",
         "ModalStateSyntax", "GrblBlockSyntax", "GrblhalBlockSyntax", "GrblhalCycleRules", "GrblhalProgramSyntax",
-        "NgcBlockSyntax", "Mach3BlockSyntax",
+        "NgcBlockSyntax", "NgcLatheBlockSyntax", "Mach3BlockSyntax",
         "LinuxcncProgramSyntax", "PolarSyntax", "IsgBlockSyntax", "IsgProgramSyntax", "FagorBlockSyntax",
         "FagorProgramSyntax", "SiemensBlockSyntax", "SiemensProgramSyntax", "SiemensCycleEnd", "DrillingSyntax",
         "PeckDrillingSyntax", "GrblhalPeckSyntax", "TappingSyntax", "BoringSyntax", "FineBoringSyntax", "BackBoringSyntax",

@@ -96,7 +96,7 @@ class Simulator(Moves):
             machine = sections.get("MachineFunction")
             s = sections.get("ToolSelect")
             if s is not None:
-                if self.lathe and "ToolChange" not in sections:
+                if self.lathe and self.ctx.lathe_turret and "ToolChange" not in sections:  # (an M6 lathe: only prepared)
                     emit({"line": line, "event": "tool", "number": lathe_tool(s.number)})
                     if isinstance(s.number, int):
                         self.lathe_offset(block, s.number % 100)

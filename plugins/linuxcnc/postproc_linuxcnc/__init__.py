@@ -65,6 +65,8 @@ class Linuxcnc(Dialect):
     LATHE_WRITER = Lazy[type[Writer]](".lathe_writer:LinuxcncLatheWriter")
     """The writer of a lathe program (``writer_class``): its own class, so a mill's keeps the fast lane."""
     PIPELINE_FILE = "linuxcnc.xml"
+    LATHE_PIPELINE_FILE = "linuxcnc_lathe.xml"
+    """A lathe's: its block step follows the G70-G72 cycles' profiles (``block_syntax.NgcLatheBlockSyntax``)."""
     CYCLE_WORDS = rs274_cycle_words(CODES, ("L",))
     """R level, Q peck/shift, P dwell (seconds), L repeats."""
     NATIVE_CYCLES = NATIVE
@@ -113,8 +115,8 @@ class Linuxcnc(Dialect):
     """The retract mode in force at program start (LinuxCNC's interpreter starts in G99)."""
     MACHINE_TYPES = frozenset({"mill", "lathe"})
     """Mills and lathes (the set-up's ``machineType``; mill when it says nothing). A lathe reads G7/G8, G33 K,
-    G96 S D into lathe sections (``postproc.rs274.ngc_lathe``) and G76 into its moves (``threading``); the
-    RS274/NGC lathe cycles G70-G72 stay verbatim."""
+    G96 S D into lathe sections (``postproc.rs274.ngc_lathe``), G76 into its moves (``threading``) and the
+    RS274/NGC lathe cycles G70-G72.2 into theirs (``lathe_cycles``)."""
     DIAMETER_PROGRAMMING = True
     """G7: X is a diameter (G8 a radius), per the set-up's ``xProgramming``; a translation writes the mode
     (and G18) before its first block, as a LinuxCNC lathe's start-up code may say either [K: the
@@ -132,14 +134,20 @@ class Linuxcnc(Dialect):
 
     @classmethod
     def python_pipeline(cls, setup: MachineSetup) -> Pipeline:
-        """``linuxcnc.xml``, built in Python."""
+        """``linuxcnc.xml`` (a lathe's ``linuxcnc_lathe.xml``), built in Python."""
         from postproc.cycles.resolve import CannedCycleResolveSyntax
         from postproc.syntaxes.modal_state import ModalStateSyntax
-        from .block_syntax import NgcBlockSyntax
+        from .block_syntax import NgcBlockSyntax, NgcLatheBlockSyntax
         from .polar import PolarSyntax
         from .program import LinuxcncProgramSyntax
-        return Pipeline(cls.NAME, [LinuxcncProgramSyntax(), PolarSyntax(), NgcBlockSyntax(),
+        block = NgcLatheBlockSyntax() if cls.reads_lathe(setup) else NgcBlockSyntax()
+        return Pipeline(cls.NAME, [LinuxcncProgramSyntax(), PolarSyntax(), block,
                                    CannedCycleResolveSyntax("rs274"), ModalStateSyntax()])
+
+    @classmethod
+    def pipeline_file(cls, setup: MachineSetup) -> str | None:
+        """``LATHE_PIPELINE_FILE`` on a lathe set-up, else ``PIPELINE_FILE``."""
+        return cls.LATHE_PIPELINE_FILE if cls.reads_lathe(setup) else cls.PIPELINE_FILE
 
     @classmethod
     def writer_class(cls, ctx: Context) -> type[Writer] | None:
@@ -167,6 +175,7 @@ def postproc_register_lowerings(register: Callable[[Lowering], None]) -> None:
 @hookimpl
 def postproc_register_xml(factory: XFactory) -> None:
     factory.register_lazy("NgcBlockSyntax", f"{__name__}.block_syntax:NgcBlockSyntax")
+    factory.register_lazy("NgcLatheBlockSyntax", f"{__name__}.block_syntax:NgcLatheBlockSyntax")
     factory.register_lazy("LinuxcncProgramSyntax", f"{__name__}.program:LinuxcncProgramSyntax")
     factory.register_lazy("PolarSyntax", f"{__name__}.polar:PolarSyntax")
     factory.register_lazy("DynamicCutterCompensation",

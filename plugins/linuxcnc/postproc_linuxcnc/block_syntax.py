@@ -23,6 +23,8 @@ from . import arc_centres
 from .codes import CODES, M_GROUPS
 from .rigid_tap import MODE as RIGID_TAP, read_rigid_tap
 from .threading import MODE as THREAD_CYCLE, read_g76
+from .lathe_cycles import (CODE_OF as G7X_MODES, MODES as G7X_CODES, check_profile_block, follow_compensation,
+                           read_g7x)
 from .tool_entry import TABLES as TOOL_TABLES, read_tool_entry
 
 RS274_SAID = lathe.Said(s_missing='rs274: "S word missing with G96"',
@@ -87,8 +89,8 @@ class NgcBlockSyntax(NgcWordBlockSyntax):
         block.add(DynamicCutterCompensation(side, float(diameter),
                                             None if orientation is None else int(orientation)))
 
-    SPECIAL_G: ClassVar[frozenset[str]] = frozenset(lathe.MODES) | lathe.LATHE_ONLY | {"76"}
-    """G7/G8, G33, G96/G97 and G76: read here (``special_g_code``) before the code table."""
+    SPECIAL_G: ClassVar[frozenset[str]] = frozenset(lathe.MODES) | lathe.LATHE_ONLY | {"76"} | frozenset(G7X_CODES)
+    """G7/G8, G33, G96/G97, G76 and G70-G72.2: read here (``special_g_code``) before the code table."""
 
     def special_g_code(self, ctx: Context, block: Block, num: str, key: str, natives: list[str]) -> bool:
         """G7/G8 are read against how X reads (``postproc.rs274.ngc_lathe.read_x_mode``: a lathe's
@@ -97,8 +99,8 @@ class NgcBlockSyntax(NgcWordBlockSyntax):
         if key in lathe.MODES:
             lathe.read_x_mode(block, ctx, num)
             return True
-        if not ctx.lathe and (key in lathe.LATHE_ONLY or key == "76"):
-            natives.append(key)  # G33, G76, G96/G97 on a mill: verbatim, as before the lathe reading
+        if not ctx.lathe and (key in lathe.LATHE_ONLY or key == "76" or key in G7X_CODES):
+            natives.append(key)  # G33, G76, G70-G72, G96/G97 on a mill: verbatim, as before the lathe reading
             return True
         return False
 
@@ -108,11 +110,12 @@ class NgcBlockSyntax(NgcWordBlockSyntax):
             return
         super()._check_cycle_words(block, ctx, values, cycle_block)
 
-    OWN_CODES: ClassVar[frozenset[str]] = frozenset(("spindle_mode", THREAD_CYCLE, arc_centres.GROUP, "path"))
-    """G96/G97, G76, G90.1/G91.1 and G61/G64: read around the family's sections (``before_sections``,
+    OWN_CODES: ClassVar[frozenset[str]] = frozenset(("spindle_mode", THREAD_CYCLE, arc_centres.GROUP, "path",
+                                                     *G7X_MODES))
+    """G96/G97, G76, G70-G72.2, G90.1/G91.1 and G61/G64: read around the family's sections (``before_sections``,
     ``after_sections``)."""
     OWN_STATE: ClassVar[frozenset[str]] = frozenset((arc_centres.STATE_KEY,))
-    OWN_MOTION: ClassVar[frozenset[str]] = frozenset(("thread", RIGID_TAP, THREAD_CYCLE))
+    OWN_MOTION: ClassVar[frozenset[str]] = frozenset(("thread", RIGID_TAP, THREAD_CYCLE, *G7X_MODES))
 
     def before_sections(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],
                         used: set[str]) -> dict[str, Any] | None:
@@ -123,6 +126,10 @@ class NgcBlockSyntax(NgcWordBlockSyntax):
                 lathe.read_spindle_mode(block, ctx, str(arg), num, values, used, RS274_SAID)
             elif arg == THREAD_CYCLE:  # G76: H spring passes, E/L its tapers (``threading``)
                 spring.update((letter, values.pop(letter)) for letter in ("H", "E", "L") if letter in values)
+            elif arg in G7X_MODES:  # G70-G72: their words are the cycle's (``lathe_cycles``), D a real (``_real_d``)
+                spring.update((letter, values.pop(letter)) for letter in "QDEPIRKUW" if letter in values)
+                if _D_KEY in ctx.state.extra:
+                    spring["D"] = ctx.state.extra.pop(_D_KEY)
         return spring
 
     def after_sections(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],
@@ -143,6 +150,8 @@ class NgcBlockSyntax(NgcWordBlockSyntax):
             read_rigid_tap(block, ctx, motion, values, used)  # type: ignore[arg-type]
         elif motion is not None and motion.mode == THREAD_CYCLE:  # type: ignore[attr-defined]
             read_g76(block, ctx, motion, values, used)  # type: ignore[arg-type]
+        elif motion is not None and motion.mode in G7X_MODES:  # type: ignore[attr-defined]
+            read_g7x(block, ctx, motion, values, used)  # type: ignore[arg-type]
 
     def _data_setting(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],
                       used: set[str]) -> bool:
@@ -160,6 +169,45 @@ class NgcBlockSyntax(NgcWordBlockSyntax):
     @staticmethod
     def _path_tolerance(codes: dict[str, Any], natives: list[str], raw: dict[str, str]) -> None:
         """``G64 P Q`` is read into ``PathControl`` (``_blending_tolerance``), not kept verbatim."""
+
+
+_D_KEY = "ngc.g7x_d"
+"""``ctx.state.extra`` key: the D of the block's G70-G72, read as a real (``_real_d``)."""
+
+
+def _real_d(block: Block, ctx: Context) -> None:
+    """D in a G70-G72 block is a distance (a real, rs274 ``read_d``), not the whole tool number the family
+    reads elsewhere: it is taken out of the words and read here."""
+    ctx.state.extra.pop(_D_KEY, None)
+    for index, (letter, num) in enumerate(block.words):
+        if letter in "Dd" and not (block.values and "D" in block.values):
+            try:
+                ctx.state.extra[_D_KEY] = float(num)
+            except ValueError:
+                raise ProgramError(f"D{num} is not a number", ctx.at(block, ctx.column_of(block, "D"))) from None
+            block.words = block.words[:index] + block.words[index + 1:]
+            return
+
+
+class NgcLatheBlockSyntax(NgcBlockSyntax):
+    """LinuxCNC's reading of a lathe program's block (``linuxcnc_lathe.xml``): the G70-G72 cycles' D read as a
+    distance, their profile blocks followed through the subprogram definitions and the cutter compensation in
+    force followed for them (``lathe_cycles``). A class of its own: a mill's blocks keep the compiled ``build``
+    with no interpreted step before it."""
+
+    XNAME = "NgcLatheBlockSyntax"
+    __slots__ = ()
+
+    def build(self, block: Block, ctx: Context) -> None:
+        sections = block.sections
+        if "Control" in sections or "NativeCode" in sections:
+            check_profile_block(block, ctx)
+        for letter, num in block.words:
+            if (letter == "G" or letter == "g") and g_key(num) in G7X_CODES:
+                _real_d(block, ctx)
+                break
+        super().build(block, ctx)
+        follow_compensation(block, ctx)
 
 
 def _blending_tolerance(block: Block, ctx: Context, path: PathControl, values: dict[str, Any], used: set[str]) -> None:

@@ -6,7 +6,7 @@ changed where the same number means something else or does not exist: no G9 or G
 and G87/G88 follow the NIST RS274/NGC words and motion (kept verbatim, see ``NATIVE_G``); G59.1-G59.3,
 G61.1 and G93 are added; on a lathe set-up G33 (spindle-synchronised motion, K the distance per revolution),
 G96 S D/G97 (constant surface speed with its clamp) and G7/G8 read into lathe sections (``lathe``), and G76 (the
-threading cycle) into its moves (``threading``); on a mill they stay verbatim (``NATIVE_G``); G33.1 (rigid tapping) reads into ``RigidTap`` and G90.1/G91.1 (the arc centre
+threading cycle) into its moves (``threading``), as are G70-G72.2 (the lathe cycles, ``lathe_cycles``); on a mill they stay verbatim (``NATIVE_G``); G33.1 (rigid tapping) reads into ``RigidTap`` and G90.1/G91.1 (the arc centre
 mode, kind ``arc_centres``, which no section carries) into offsets from the arc's start (``block_syntax``). G61 (exact path) and G61.1 (exact stop) both read as exact stop (the IR does
 not tell them apart); G61 is written. Sources: LinuxCNC ``docs/src/gcode/g-code.adoc`` and
 ``m-code.adoc``, and DIALECTS.md §2.1 "LinuxCNC / RS274-NGC baseline". G52 and G92-G92.3 are frame
@@ -25,6 +25,13 @@ ROWS = (
     ("G33", "01", "motion", "thread"),
     ("G33.1", "01", "motion", "rigid_tap"),
     ("G76", "01", "motion", "ngc_thread_cycle"),
+    ("G70", "01", "motion", "ngc_g70"),
+    ("G71", "01", "motion", "ngc_g71"),
+    ("G71.1", "01", "motion", "ngc_g71.1"),
+    ("G71.2", "01", "motion", "ngc_g71.2"),
+    ("G72", "01", "motion", "ngc_g72"),
+    ("G72.1", "01", "motion", "ngc_g72.1"),
+    ("G72.2", "01", "motion", "ngc_g72.2"),
     ("G4", "00", "dwell", None),
     ("G17", "02", "plane", "XY"),
     ("G18", "02", "plane", "ZX"),

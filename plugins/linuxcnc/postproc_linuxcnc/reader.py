@@ -1,5 +1,6 @@
 """LinuxCNC reader: the RS274/NGC family reader with o-words, parameters and expressions, naming
-LinuxCNC in its messages."""
+LinuxCNC in its messages. On a lathe set-up it keeps each subprogram's blocks as they were written, for the
+G70-G72 cycles that run one as their profile (``lathe_cycles``)."""
 
 from __future__ import annotations
 
@@ -10,6 +11,7 @@ from postproc.ir import Block
 from postproc.rs274.ngc_lexer import NgcReader
 
 from .calls import read_call
+from .lathe_cycles import ProfileCollector
 
 
 class LinuxcncReader(NgcReader):
@@ -23,8 +25,11 @@ class LinuxcncReader(NgcReader):
         other ("Bad character '%' used"), unless the program has already ended (M2/M30)."""
         opened: bool | None = None  # None until the first line with content
         ended = False
+        profiles = ProfileCollector(self.ctx) if self.ctx.lathe else None
         for block in super().read(lines):
             sections = block.sections
+            if profiles is not None:
+                profiles.see(block)
             if "TapeMark" in sections:
                 if opened is False and not ended:
                     self.ctx.diagnostics.error(ParseError(

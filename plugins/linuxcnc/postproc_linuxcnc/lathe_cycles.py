@@ -1,0 +1,312 @@
+"""LinuxCNC's lathe cycles ``G70 Q X Z D E P`` (finishing) and ``G71``/``G72`` (``.1``, ``.2``) ``Q X Z D I R``
+(roughing), read on a lathe set-up into the moves they make (a ``CompoundMotion``: the simulation runs them,
+another controller gets them written as its own moves; a LinuxCNC program keeps its line).
+
+The profile is the subprogram ``o<Q> sub`` .. ``endsub``, kept as written by the reader
+(``ProfileCollector``); the controller reads its G0-G3 moves alone, G0 as G1, each with an optional A (a
+fillet at its end) or C (a chamfer), U/W as increments of X/Z [V: LinuxCNC ``docs/src/gcode/g-code.adoc``
+"G70", "G71 G72"; ``src/emc/rs274ngc/interp_g7x.cc`` ``convert_g7x``]. The moves are
+``postproc.rs274.ngc_g7x``'s (the controller's algorithm). Before them, a rapid to the cycle's X and Z; the
+tool stays where the last move ends; the feed rate in force cuts.
+
+In diameter mode (G7) the profile's and the cycle's X and U are diameters; arc centres, R, D, E, I (the depth)
+and R (the retract) are radial [V: rs274 2.9.0~pre1, a G7 program with X and U doubled cuts the G8 one's moves].
+
+Refused where read, rs274's own refusals (``ProgramError``): no Q ("G7x.x requires a Q word"), a plane other
+than ZX, I not above 0, G71/G72 under cutter compensation, a profile arc given by neither I/K nor R or by
+both, a profile not monotonic. Not modelled, so refused (``UnsupportedError``): a profile with a computed word
+or with any word but those (a feed or speed is ignored there: said rather than dropped), a subprogram not
+defined before the cycle, the cycle in incremental mode (G91), a P of G70 that is no whole number from 1,
+G70 under cutter compensation (``read_g7x``), and a roughing profile not closed back to the cycle's X (G71) or
+Z (G72): LinuxCNC 2.9.0~pre1 closes it after the offset, later versions before it (``postproc.rs274.ngc_g7x``,
+``legacy``), so its cut depends on the version.
+"""
+
+from __future__ import annotations
+
+from typing import Any, Final
+
+from postproc.context import Context
+from postproc.control import SubEnd, SubStart
+from postproc.cycles.turning.profile import TurnMove
+from postproc.errors import Location, ProgramError, UnsupportedError
+from postproc.expr import Expr
+from postproc.ir import Block, Motion, NativeCode
+from postproc.rs274.arc_ends import RS274NGC_ARC_END
+from postproc.rs274.codes import g_key
+from postproc.rs274.lathe_threading import place_thread_moves, thread_refusal
+from postproc.rs274.ngc_g7x import NgcCycleError, arc_centre_by_radius, cycle_moves
+from postproc.rs274.ngc_g7x_segments import Arc, Chamfer, Fillet, Line, Piece
+
+from . import arc_centres
+
+MODES: Final = {"70": "ngc_g70", "71": "ngc_g71", "71.1": "ngc_g71.1", "71.2": "ngc_g71.2", "72": "ngc_g72",
+                "72.1": "ngc_g72.1", "72.2": "ngc_g72.2"}
+"""Code -> the motion kind the code table gives it on a lathe (replaced by its moves where read)."""
+CODE_OF: Final = {mode: code for code, mode in MODES.items()}
+WORDS: Final = {"70": "QDEP", "71": "QDIR", "72": "QDIR"}
+"""The cycle's words besides X and Z [V: g-code.adoc]."""
+PROFILES_KEY: Final = "ngc.g7x_profiles"
+"""``ctx.run_data`` key: subprogram name -> its blocks as written (``ProfileCollector``)."""
+COMPENSATING_KEY: Final = "ngc.g7x_compensating"
+"""``ctx.state.extra`` key: cutter (tool nose) compensation is on (``follow_compensation``)."""
+CORNER_BLOCK: Final = "a G70-G72 profile block with a fillet (A) or chamfer (C)"
+"""What the ``NativeCode`` of such a block says: it travels as written, inert (the controller runs it only
+through its cycle, which reads its words from the subprogram as written)."""
+IN_SUB_KEY: Final = "ngc.g7x_in_sub"
+"""``ctx.state.extra`` key: a subprogram's definition is being read (keep mode: its blocks pass here)."""
+PROFILE_LETTERS: Final = frozenset("NGXZUWIKRAC")
+IGNORED: Final = frozenset("FS")
+"""Words the controller reads past in a profile [V: g-code.adoc: "All other commands are ignored, including
+feed and speed settings"]: refused here, as a word the translation would drop."""
+
+
+Written = tuple[int, list[tuple[str, str]], dict[str, Any]]
+"""A profile block as written: its line, its words (letter, number text) and its computed values."""
+
+
+class ProfileCollector:
+    """The reader's bookkeeping: each ``o<n> sub`` .. ``endsub``'s blocks as written, by name, in
+    ``ctx.run_data``. A block there with A or C, which this lathe has not as axes, is a fillet or chamfer
+    of a G70-G72 profile: it travels as written (an inert ``NativeCode``, ``CORNER_BLOCK``: its words are
+    read by the cycle alone), the controller runs it only through its cycle (``check_profile_block``)."""
+
+    __slots__ = ("profiles", "name", "body", "corner")
+
+    def __init__(self, ctx: Context) -> None:
+        self.profiles: dict[str, list[Written]] = ctx.run_data.setdefault(PROFILES_KEY, {})
+        self.name: str | None = None
+        self.body: list[Written] = []
+        axes = ctx.setup.machine.axes
+        self.corner = frozenset(letter for letter in "AC" if letter not in axes)
+
+    def see(self, block: Block) -> None:
+        control = block.sections.get("Control")
+        if isinstance(control, SubStart):
+            self.name, self.body = control.name, []
+            return
+        if isinstance(control, SubEnd):
+            if self.name is not None:
+                self.profiles[self.name] = self.body
+            self.name = None
+            return
+        if self.name is None or not block.words:
+            return
+        self.body.append((block.line, list(block.words), dict(block.values or {})))
+        if self.corner and any(letter.upper() in self.corner for letter, _ in block.words):
+            block.add(NativeCode("linuxcnc", CORNER_BLOCK, block.text or "", inert=True))
+            block.words = []
+
+
+def check_profile_block(block: Block, ctx: Context) -> None:
+    """Follow the subprogram definitions through the block syntax (a program kept as written passes them
+    there); a profile block with A or C run outside a definition is refused: only a cycle runs it."""
+    control = block.sections.get("Control")
+    extra = ctx.state.extra
+    if isinstance(control, SubStart):
+        extra[IN_SUB_KEY] = True
+    elif isinstance(control, SubEnd):
+        extra.pop(IN_SUB_KEY, None)
+    elif _corner_block(block) and not extra.get(IN_SUB_KEY):
+        raise ProgramError("a block with A or C (a fillet or chamfer of a G70-G72 profile) run as a move: "
+                           "this lathe has no such axis, and only a G70-G72 cycle reads the words so",
+                           ctx.at(block))
+
+
+def follow_compensation(block: Block, ctx: Context) -> None:
+    """Whether compensation is on after the block: G41/G42 (and their dynamic forms) on, G40 off."""
+    sections = block.sections
+    cc = sections.get("CutterCompensation")
+    extra = ctx.state.extra
+    if cc is not None:
+        extra[COMPENSATING_KEY] = cc.mode != "off"  # type: ignore[attr-defined]
+    native = sections.get("NativeCode")
+    if "DynamicCutterCompensation" in sections or native is not None and \
+            str(getattr(native, "what", "")).split(" ", 1)[0] in ("G41.1", "G42.1"):
+        extra[COMPENSATING_KEY] = True
+
+
+def _compensating(block: Block, ctx: Context) -> bool:
+    cc = block.sections.get("CutterCompensation")
+    if cc is not None:
+        return bool(cc.mode != "off")  # type: ignore[attr-defined]
+    return bool(ctx.state.extra.get(COMPENSATING_KEY))
+
+
+def _corner_block(block: Block) -> bool:
+    native = block.sections.get("NativeCode")
+    return native is not None and getattr(native, "what", None) == CORNER_BLOCK
+
+
+def read_g7x(block: Block, ctx: Context, motion: Motion, values: dict[str, Any], used: set[str]) -> None:
+    """The block's cycle (``motion``, read with its code table kind ``MODES``) -> its ``CompoundMotion``;
+    the tool where the cycle leaves it, and no motion mode a later block may repeat (module docstring)."""
+    code = CODE_OF[str(motion.mode)]
+    name = f"G{code}"
+    refuse = thread_refusal(block, ctx)
+
+    def unmodelled(message: str, letter: str | None = None) -> UnsupportedError:
+        """A form the controller may run but this reading does not model."""
+        return UnsupportedError(message, ctx.at(block, ctx.column_of(block, letter or "G")))
+
+    del block.sections["Motion"]
+    state = ctx.state
+    state.motion = None  # (the profile's last code stays in force there: a block of axis words alone is refused)
+    letters = WORDS[code[:2]]
+    given = {letter: values[letter] for letter in letters if letter in values}
+    extra = sorted(letter for letter in "UW" if letter in values)
+    if extra:
+        raise unmodelled(f"{extra[0]} in {name}: the cycle takes X and Z (U and W belong in its profile)", extra[0])
+    if any(isinstance(v, Expr) for v in [*given.values(), *motion.axes.values()]):
+        raise unmodelled(f"a computed word in {name} is not supported (write the numbers)")
+    words = {letter: float(v) for letter, v in given.items()}
+    if "Q" not in words:
+        raise refuse(f"{name} needs Q, the subprogram of its profile (rs274: \"G7x.x requires a Q word\")")
+    if _compensating(block, ctx):
+        if code != "70":
+            raise refuse(f"{name} with cutter compensation on (rs274: \"G{code} cannot be used with cutter "
+                         "compensation enabled\"): cancel it (G40) before the cycle")
+        raise unmodelled(f"{name} with cutter compensation on is not modelled: LinuxCNC 2.9.0 compensates the cycle "
+                     "from where its profile ends (a move to the profile's end first) [V: rs274 2.9.0~pre1 run "
+                     "here], 2.9.3 and later turn compensation off for each pass's approach (interp_g7x.cc, "
+                     "commits b1f3e7d8 and f648d01c) and are not at hand to check; cancel compensation (G40) "
+                     "before the cycle, or write its profile under G41/G42 as moves")
+    if state.plane != "ZX":
+        raise refuse(f"{name} runs in the ZX plane only (rs274: \"can only be used in XZ plane (G18)\")")
+    incremental = state.distance == "incremental"
+    distance = block.sections.get("DistanceMode")
+    if distance is not None:
+        incremental = distance.mode == "incremental"  # type: ignore[attr-defined]
+    if incremental:
+        raise unmodelled(f"{name} in incremental mode (G91) is not modelled (program it in G90)")
+    scale = 2.0 if ctx.diameter else 1.0
+    """In diameter mode (G7) X and U are diameters, everything else radial [V: rs274 2.9.0~pre1 run here: a
+    profile and cycle X doubled under G7 make the moves of G8; I, K, R, D, E and the depth I unchanged]."""
+    x0, z0 = state.position.get("X"), state.position.get("Z")
+    x0 = None if x0 is None else float(x0) / scale
+    axes = {axis: float(v) for axis, v in motion.axes.items() if not isinstance(v, Expr)}  # (refused above)
+    x = axes["X"] / scale if "X" in axes else x0
+    z = axes.get("Z", z0)
+    if x is None or z is None:
+        raise refuse(f"{name}: the tool's position before the cycle is unknown (give the cycle X and Z)")
+    if code != "70" and words.get("I", 1.0) <= 0:
+        raise refuse(f"{name} I{words['I']:g}: the cut's depth must be above 0 (rs274: \"I must be greater "
+                     "than zero\")", "I")
+    passes = words.get("P", 1.0)
+    if code == "70" and (passes != int(passes) or passes < 1):
+        raise refuse(f"{name} P{passes:g}: the number of passes must be a whole number from 1", "P")
+    if state.feed is None or state.feed <= 0:
+        raise refuse(f"{name} cuts at the feed rate in force, and none is (program F first)")
+    label = str(int(words["Q"])) if words["Q"] == int(words["Q"]) else str(words["Q"])
+    written = ctx.run_data.get(PROFILES_KEY, {}).get(label)
+    if written is None:
+        raise unmodelled(f"{name} Q{label}: no subprogram o{label} is defined before the cycle", "Q")
+    start = complex(float(z), float(x))
+    pieces = _profile(written, start, ctx, name, ctx.at(block, ctx.column_of(block, "Q")), scale)
+    if code != "70" and len(pieces) > 1:
+        _check_closed(pieces, start, code, name, unmodelled)
+    try:
+        moves = cycle_moves(code, pieces, float(x), float(z), d=words.get("D", 0.0), e=words.get("E", 0.0),
+                            i=words.get("I", 1.0), r=words.get("R", 0.5), passes=int(passes),
+                            inch=state.units == "inch")
+    except NgcCycleError as err:
+        raise refuse(f"{name}: {err} (rs274: \"G7X error\")") from None
+    turn = [TurnMove("rapid", float(x), float(z))]  # the rapid to the cycle's point
+    for kind, end, centre in moves:
+        turn.append(TurnMove(kind, end.imag, end.real,  # type: ignore[arg-type]
+                             None if centre is None else centre.imag, None if centre is None else centre.real))
+    origin = (float(x0) if x0 is not None else float(x), float(z0) if z0 is not None else float(z))
+    place_thread_moves(block, ctx, turn, origin, words, used, refuse, name)
+    last = turn[-1]
+    state.position["X"] = last.x * scale
+    state.position["Z"] = last.z
+
+
+def _check_closed(pieces: list[Piece], start: complex, code: str, name: str, unmodelled: Any) -> None:
+    """A roughing profile must end back at the cycle's X (G71) or Z (G72) (module docstring)."""
+    end = pieces[-1].end
+    back = pieces[-1].end - pieces[-1].start
+    front = pieces[0].end - pieces[0].start
+    if code.startswith("71") and abs(back.real) > 0 and front.imag * (start.imag - end.imag) < 0:
+        raise unmodelled(f"{name}: the profile ends at X{end.imag:g}, short of the cycle's X{start.imag:g}: LinuxCNC "
+                         "versions cut it differently (before and after 2.9.3); end the profile at the cycle's X")
+    if code.startswith("72") and abs(back.imag) > 0 and front.real * (start.real - end.real) < 0:
+        raise unmodelled(f"{name}: the profile ends at Z{end.real:g}, short of the cycle's Z{start.real:g}: LinuxCNC "
+                         "versions cut it differently (before and after 2.9.3); end the profile at the cycle's Z")
+
+
+def _profile(written: list[Written], start: complex, ctx: Context, name: str, at: Location,
+             scale: float) -> list[Piece]:
+    """The cycle's pieces: the approach from ``start``, then the subprogram's moves (module docstring); a
+    refusal is located at the cycle's Q and names the profile's line."""
+    pieces: list[Piece] = []
+    mode: str | None = None
+    absolute_centres = arc_centres.STATE_KEY in ctx.state.extra
+    here = start
+    for line, words, values in written:
+        def fail(message: str) -> ProgramError:
+            return ProgramError(f"{name}'s profile, line {line}: {message}", at)
+
+        def unmodelled(message: str) -> UnsupportedError:
+            return UnsupportedError(f"{name}'s profile, line {line}: {message}", at)
+
+        if values:
+            raise unmodelled("a computed word in a G70-G72 profile is not supported (write the numbers)")
+        got: dict[str, float] = {}
+        for letter, num in words:
+            up = letter.upper()
+            if up == "G":
+                key = g_key(num)
+                if key not in ("0", "1", "2", "3"):
+                    raise unmodelled(f"G{num} in a profile: the cycle reads G0-G3 moves only")
+                mode = key
+                continue
+            if up in IGNORED:
+                raise unmodelled(f"{up} in a profile: the controller ignores it there (set it before the cycle)")
+            if up not in PROFILE_LETTERS:
+                raise unmodelled(f"{up} in a profile: the cycle reads G0-G3 with X, Z, U, W, I, K, R, A and C only")
+            if up in got:
+                raise fail(f"address {up} appears twice in one block")
+            got[up] = float(num)
+        got.pop("N", None)
+        if not got:
+            continue
+        if mode is None:
+            raise unmodelled("a move without its G0-G3 in a profile (write the code)")
+        if "U" in got and "X" in got or "W" in got and "Z" in got:
+            raise fail("U beside X or W beside Z (rs274: \"Cannot use U and X in the same block\")")
+        end = complex(here.real + got["W"] if "W" in got else got.get("Z", here.real),
+                      here.imag + got["U"] / scale if "U" in got else got["X"] / scale if "X" in got else here.imag)
+        if "A" in got and "C" in got:
+            raise fail("both A and C on a corner (rs274: \"Both A and C parameters on a corner\")")
+        if end == here:
+            continue
+        if mode in ("0", "1"):
+            if "I" in got or "K" in got or "R" in got:
+                raise fail("I, K or R on a straight move")
+            pieces.append(Line(here, end))
+        else:
+            ccw = mode == "3"
+            if "R" in got:
+                if "I" in got or "K" in got:
+                    raise fail("both R and I or K on an arc (rs274: \"both R and I or K flag used for arc\")")
+                try:
+                    centre = arc_centre_by_radius(here, end, got["R"], ccw)
+                except NgcCycleError as err:
+                    raise fail(str(err)) from None
+            else:
+                if "I" not in got and "K" not in got:
+                    raise fail("an arc without I, K or R (rs274: \"either I or K must be present for arc\")")
+                offset = complex(got.get("K", 0.0), got.get("I", 0.0))
+                centre = offset if absolute_centres else here + offset
+                r_start, r_end = abs(here - centre), abs(end - centre)
+                if not RS274NGC_ARC_END.allows(r_start, r_end, ctx.state.units == "inch"):
+                    raise fail(f"the arc's end is off its circle (radius {r_start:.4f} at its start, {r_end:.4f} "
+                               "at its end)")
+            pieces.append(Arc(ccw, here, centre, end))
+        if "A" in got:
+            pieces.append(Fillet(got["A"], end))
+        if "C" in got:
+            pieces.append(Chamfer(got["C"], end))
+        here = end
+    return pieces

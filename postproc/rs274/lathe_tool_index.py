@@ -1,0 +1,115 @@
+"""index_turret: a lathe program whose controller changes tools as a mill does (LinuxCNC, grblHAL: ``T2 M6``, its
+X and Z offsets applied by the tool length offset code, ``G43``/``G43 H5``, cancelled by ``G49``) written for a
+turret lathe (Fanuc T, GSK: ``Dialect.LATHE_TURRET``), whose T word indexes the turret and selects the offset
+register at once (``T0205``: station 2, offset 5).
+
+Each is a choice of one register of the machine's offset table: LinuxCNC's lathe tool table gives each entry an
+X and a Z offset, ``G43`` applies the loaded tool's, ``G43 H5`` entry 5's [K: LinuxCNC G-code reference, G43 "the
+tool table entry ... X and Z offsets on a lathe"; V: rs274 2.9, lathe ``G43 H2`` prints ``USE_TOOL_LENGTH_OFFSET``
+with entry 2's X and Z]; a Fanuc T offset number selects the geometry (and wear) offset of that number, X and Z
+[K: Fanuc 0i-TF operator's manual, "Tool offset", T code = tool number and offset number]. So the register is
+the same number on both: the translation takes the target's offset n to hold what the source's entry n holds,
+as the reverse translation (``postproc.cycles.lathe_lowering``: ``T0102`` -> ``T1 M6 G43 H2``) does. The
+simulation applies the set-up's ``<Tool>`` X and Z for the register on both sides, so ``verify`` checks it.
+
+* ``T2 M6`` becomes ``T02nn``: nn the register the block's own ``G43 [H]`` selects (00 for ``G49``), else the
+  one in force (M6 changes no offset); the tool change goes.
+* ``G43 [H n]``/``G49`` in a block without the change is refused: its turret form re-indexes the station
+  (``T0205``), which moves nothing on the machine but is a tool change to the simulation, so ``verify`` could
+  not check it.
+* A ``T3`` without ``M6`` only prepares the next change: it goes, noted in a comment (a turret would index).
+
+Refused, located: a change while the spindle turns (the source's M6 stops it first [V: rs274 prints
+``STOP_SPINDLE_TURNING`` before ``CHANGE_TOOL``], the turret indexes with it turning), a computed tool or
+register, a negative offset (``G44`` has no turret form), a station
+or register above 99, and a dynamic length (``G43.1``), which the target has not.
+"""
+
+from __future__ import annotations
+
+from typing import Iterator
+
+from postproc.context import Context
+from postproc.dialect import Dialect
+from postproc.errors import UnsupportedError
+from postproc.ir import Block, Comments, SpindleControl, ToolChange, ToolLengthOffset, ToolSelect
+
+__all__ = ["index_turret"]
+
+
+def index_turret(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """Lowering transform (module docstring); any other program passes untouched."""
+    if not ctx.lathe or ctx.lathe_turret or not target.LATHE_TURRET or "lathe" not in target.MACHINE_TYPES \
+            or target.WRITER is None:
+        return blocks
+    return _index(blocks, ctx)
+
+
+def _index(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
+    selected: int | None = None
+    register = 0
+    turning = False
+    for block in blocks:
+        sections = block.sections
+        try:
+            select = sections.get("ToolSelect")
+            change = sections.get("ToolChange")
+            length = sections.get("ToolLengthOffset")
+            control = sections.get("SpindleControl")
+            if isinstance(select, ToolSelect):
+                if not isinstance(select.number, int):
+                    raise UnsupportedError("a computed tool number on a turret lathe (its station is known when "
+                                           "the program runs)", ctx.at(block))
+                selected = select.number
+            if isinstance(length, ToolLengthOffset):
+                register = _register(block, ctx, length, selected)
+            if isinstance(change, ToolChange):
+                if turning:
+                    raise UnsupportedError("a tool change with the spindle turning: the source's change stops it "
+                                           "first, a turret indexes with it turning (stop the spindle before the "
+                                           "change)", ctx.at(block))
+                if selected is None:
+                    raise UnsupportedError("a tool change with no tool selected", ctx.at(block))
+                _index_here(block, ctx, selected, register)
+                del sections["ToolChange"]
+            elif isinstance(length, ToolLengthOffset):
+                raise UnsupportedError("a tool offset changed without a tool change: a turret lathe selects the "
+                                       "offset with the station's index, which the simulation counts as a tool "
+                                       "change (put the length code in the block of the change)",
+                                       ctx.at(block))
+            elif isinstance(select, ToolSelect):
+                del sections["ToolSelect"]  # prepared for the next change; a turret would index now
+                comments = sections.get("Comments")
+                texts = comments.texts if isinstance(comments, Comments) else []
+                sections["Comments"] = Comments([*texts, f"TOOL {select.number} PREPARED"])
+            if isinstance(control, SpindleControl):
+                turning = control.direction in ("cw", "ccw")
+            if isinstance(change, ToolChange) or isinstance(length, ToolLengthOffset) or isinstance(select, ToolSelect):
+                block.changed()
+        except UnsupportedError as err:
+            ctx.diagnostics.error(err)
+            continue
+        yield block
+
+
+def _register(block: Block, ctx: Context, length: ToolLengthOffset, tool: int | None) -> int:
+    """The offset register the block's length code puts in force (0: cancelled)."""
+    if length.mode == "cancel":
+        return 0
+    if length.mode != "positive":
+        raise UnsupportedError(f"a tool length offset '{length.mode}' on a turret lathe: its T word selects a "
+                               "register of X and Z offsets, added", ctx.at(block))
+    number = length.register if length.register is not None else tool
+    if number is None or not isinstance(number, int):
+        raise UnsupportedError("a computed or unknown offset register on a turret lathe (write H with a number)",
+                               ctx.at(block))
+    return number
+
+
+def _index_here(block: Block, ctx: Context, tool: int, register: int) -> None:
+    """The block indexes station ``tool`` with offset ``register`` (``T0205``); its length code goes."""
+    if not 0 <= tool <= 99 or not 0 <= register <= 99:
+        raise UnsupportedError(f"tool {tool} with offset {register}: a turret's T word takes two digits each",
+                               ctx.at(block))
+    block.sections.pop("ToolLengthOffset", None)
+    block.sections["ToolSelect"] = ToolSelect(tool * 100 + register)

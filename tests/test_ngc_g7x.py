@@ -1,0 +1,375 @@
+"""LinuxCNC's lathe cycles G70, G71, G71.1, G71.2, G72, G72.1, G72.2 (``postproc.rs274.ngc_g7x``, read by the
+LinuxCNC plugin's ``lathe_cycles``), held to the LinuxCNC interpreter.
+
+The oracle is the installed rs274 (LinuxCNC 2.9.0~pre1): every expected move comes from it, none from the code
+under test. Random profiles (``tests.support.g7x_profiles``: monotone and pocketed, lines and arcs by I/K or R,
+fillets A and chamfers C, in all eight orientations, every code and word combination) are run through both
+and their canonical moves compared; a profile rs274 refuses must be refused too. The engine is compared with
+its ``legacy`` switch (the installed version's two differing steps); the reading (the plugin, the default
+version) on closed profiles, where both versions agree, and on LinuxCNC's own demo program.
+"""
+
+from __future__ import annotations
+
+import io
+import random
+import re
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+from postproc.api import translate
+from postproc.errors import ErrorList, PostprocError
+from postproc.rs274.ngc_g7x import NgcCycleError, arc_centre_by_radius, cycle_moves
+from postproc.rs274.ngc_g7x_segments import Arc, Chamfer, Fillet, Line, Piece
+from postproc.setup.machine_setup import InputSettings, MachineSetup
+from postproc.simulate.toolpath import toolpath_events
+from postproc.simulate.verify import verify_lines
+from tests.support.g7x_profiles import CODES, Case, draw
+from tests.support.rs274 import RS274Error, available, canonical_moves, run_rs274
+
+ROOT = Path(__file__).resolve().parents[1]
+DEMO = ROOT / "tests" / "heldout" / "linuxcnc" / "lathe_g70_71_demo.ngc"
+RADIUS = MachineSetup(input=InputSettings(machine_type="lathe", x_programming="radius"))
+TOOLS = "T2 P2 X0 Z0 D0.4\nT10 P10 X0 Z0 D0.4\n"
+TOLERANCE = 2e-3
+"""mm: rs274 prints four decimals."""
+SEED = 20261130
+
+needs_rs274 = pytest.mark.skipif(not available(), reason="rs274 (LinuxCNC's interpreter) is not installed")
+
+
+# -- helpers -----------------------------------------------------------------------------------------
+def pieces_of(case: Case) -> list[Piece]:
+    """The case's profile as the controller builds it (``convert_g7x``: I/K from the move's start)."""
+    here = complex(case.z, case.x)
+    pieces: list[Piece] = []
+    for step in case.steps:
+        end = complex(step.z, step.x)
+        if end == here:
+            continue
+        w = step.words
+        if step.g in (0, 1):
+            pieces.append(Line(here, end))
+        else:
+            centre = (arc_centre_by_radius(here, end, w["R"], step.g == 3) if "R" in w
+                      else here + complex(w.get("K", 0.0), w.get("I", 0.0)))
+            pieces.append(Arc(step.g == 3, here, centre, end))
+        if "A" in w:
+            pieces.append(Fillet(w["A"], end))
+        if "C" in w:
+            pieces.append(Chamfer(w["C"], end))
+        here = end
+    return pieces
+
+
+def engine(case: Case) -> list[dict[str, Any]]:
+    """The engine's moves for ``case`` (as the installed rs274), after the rapid to the cycle's point."""
+    w = case.words
+    moves = cycle_moves(case.code, pieces_of(case), case.x, case.z, d=w.get("D", 0.0), e=w.get("E", 0.0),
+                        i=w.get("I", 1.0), r=w.get("R", 0.5), passes=int(w.get("P", 1)), legacy=True)
+    out: list[dict[str, Any]] = [{"move": "rapid", "x": case.x, "z": case.z}]
+    for kind, end, centre in moves:
+        move = {"move": kind, "x": end.imag, "z": end.real}
+        if centre is not None:
+            move.update(cx=centre.imag, cz=centre.real)
+        out.append(move)
+    return out
+
+
+def batch_program(cases: list[Case]) -> str:
+    """One program running ``cases`` one after the other, each profile its own subprogram."""
+    lines = ["G18 G21 G8 G90 G40", "F400"]
+    for n, case in enumerate(cases):
+        lines += [f"O{101 + n} SUB", *("  " + s.text() for s in case.steps), f"O{101 + n} ENDSUB"]
+    for n, case in enumerate(cases):
+        lines += [f"G0 X{case.x:.4f} Z{case.z:.4f}", case.program().splitlines()[-2].replace("Q100", f"Q{101 + n}")]
+    return "\n".join(lines + ["M2"]) + "\n"
+
+
+def without_repeats(moves: list[dict[str, Any]]) -> list[dict[str, Any]]:
+    """Moves to where the tool already is are no moves (rs274 prints some: its G0 to the cycle's point)."""
+    out: list[dict[str, Any]] = []
+    here: tuple[float, float] | None = None
+    for move in moves:
+        point = (float(move["x"]), float(move["z"]))
+        if move["move"] in ("rapid", "feed") and here is not None and \
+                abs(point[0] - here[0]) < 1e-4 and abs(point[1] - here[1]) < 1e-4:
+            continue
+        out.append(move)
+        here = point
+    return out
+
+
+def difference(ours: list[dict[str, Any]], theirs: list[dict[str, Any]]) -> str | None:
+    ours, theirs = without_repeats(ours), without_repeats(theirs)
+    for n, (a, b) in enumerate(zip(ours, theirs)):
+        keys = ["x", "z"] + (["cx", "cz"] if a["move"] in ("cw", "ccw") else [])
+        if a["move"] != b["move"] or max(abs(float(a[k]) - float(b[k])) for k in keys) > TOLERANCE:
+            return f"move {n}: ours {a}, rs274 {b}"
+    if len(ours) != len(theirs):
+        return f"ours has {len(ours)} moves, rs274 {len(theirs)}"
+    return None
+
+
+def rs274_moves(text: str) -> list[dict[str, Any]]:
+    return [m for m in canonical_moves(run_rs274(text, tool_table=TOOLS)) if "move" in m]
+
+
+def simulated(text: str, setup: MachineSetup = RADIUS) -> list[dict[str, Any]]:
+    return [e for e in toolpath_events(io.StringIO(text), file="prog.ngc", dialect="linuxcnc", setup=setup)
+            if "move" in e]
+
+
+# -- the engine against rs274 ------------------------------------------------------------------------
+@needs_rs274
+@pytest.mark.parametrize("code", CODES)
+def test_engine_matches_rs274_on_random_profiles(code: str) -> None:
+    """Ten random profiles a code: the cases the engine cuts run in one rs274 program, move for move;
+    each case the engine refuses is run alone and rs274 must refuse it too."""
+    rng = random.Random(f"{SEED}-{code}")
+    cut: list[Case] = []
+    expected: list[dict[str, Any]] = []
+    for _ in range(10):
+        case = draw(rng, code)
+        try:
+            moves = engine(case)
+        except NgcCycleError as err:
+            with pytest.raises(RS274Error):
+                run_rs274(case.program(), tool_table=TOOLS)
+            assert str(err)
+            continue
+        cut.append(case)
+        expected.extend(moves)
+    assert len(cut) >= 5, "the generator draws mostly profiles the controller cuts"
+    theirs = rs274_moves(batch_program(cut))
+    assert difference(expected, theirs) is None
+
+
+# -- the reading against rs274 -----------------------------------------------------------------------
+@needs_rs274
+def test_reading_matches_rs274_on_random_closed_profiles() -> None:
+    """The plugin's reading (subprograms, cycle words, the simulation) on closed profiles of every code."""
+    rng = random.Random(SEED)
+    cases: list[Case] = []
+    while len(cases) < 14:
+        case = draw(rng, CODES[len(cases) % len(CODES)])
+        if not _closed_for_reading(case):
+            continue
+        try:
+            engine(case)
+        except NgcCycleError:
+            continue
+        cases.append(case)
+    text = batch_program(cases)
+    assert difference(simulated(text), rs274_moves(text)) is None
+
+
+def _closed_for_reading(case: Case) -> bool:
+    try:
+        simulated(Case(case.code, case.x, case.z, case.steps, case.words).program())
+    except (PostprocError, ErrorList) as err:
+        assert "short of the cycle's" in str(err) or "G7X error" in str(err) or "rs274" in str(err), str(err)
+        return False
+    return True
+
+
+@needs_rs274
+def test_demo_without_its_compensation_matches_rs274() -> None:
+    """LinuxCNC's own nc_files/lathe_g70_71_demo.ngc (G71.1, G71.2, G70 over a profile with arcs and a fillet)
+    with its G42.1 left out: 222 moves, the same as rs274's."""
+    text = DEMO.read_text().replace("G42.1 D0.3 L2", "")
+    ours, theirs = simulated(text), rs274_moves(text)
+    assert len(without_repeats(theirs)) > 200
+    assert difference(ours, theirs) is None
+
+
+def test_demo_refused_where_its_g70_runs_under_compensation() -> None:
+    with pytest.raises((PostprocError, ErrorList)) as err:
+        simulated(DEMO.read_text())
+    assert "G70 with cutter compensation on is not modelled" in str(err.value)
+    assert ":32:" in str(err.value)
+
+
+# -- translations --------------------------------------------------------------------------------------
+def _demo_plain() -> str:
+    """The demo without its compensation and tool changes (a turret lathe's own matter: item 4 of the task)."""
+    text = DEMO.read_text().replace("G42.1 D0.3 L2", "")
+    return "\n".join(line for line in text.splitlines() if "M6" not in line) + "\n"
+
+
+def test_linuxcnc_keeps_its_cycles_byte_for_byte() -> None:
+    text = DEMO.read_text().replace("G42.1 D0.3 L2", "")
+    out = io.StringIO()
+    translate(io.StringIO(text), out, file="demo.ngc", source="linuxcnc", target="linuxcnc", setup=RADIUS)
+    assert out.getvalue() == text
+
+
+@pytest.mark.parametrize("target", ["fanuc", "gsk", "grblhal"])
+def test_cycles_expanded_for_other_controllers_verify(target: str) -> None:
+    """Fanuc T, GSK and grblHAL get the cycles' moves (LinuxCNC's algorithm is none of theirs: see
+    ``postproc.rs274.ngc_g7x``), and the translation cuts the source's path exactly."""
+    text = _demo_plain()
+    out = io.StringIO()
+    translate(io.StringIO(text), out, file="demo.ngc", source="linuxcnc", target=target, setup=RADIUS,
+              on_unsupported="error")
+    written = out.getvalue()
+    assert not re.search(r"^\s*(N\d+\s*)?G7[0-2]\b", written, re.M), "no cycle is left to the target"
+    report = verify_lines(io.StringIO(text), io.StringIO(written), file_in="demo.ngc", file_out="out.nc",
+                          source="linuxcnc", target=target, setup=RADIUS, tolerance=0.0)
+    assert report.ok and report.max_deviation == 0.0, report.summary()
+
+
+# -- refusals --------------------------------------------------------------------------------------------
+PROFILE = "O100 SUB\nG1 X1 Z0\nG1 X3 Z-4\nG1 X5\nO100 ENDSUB\n"
+
+
+@pytest.mark.parametrize("program, message", [
+    ("G18 G8 F100\n" + PROFILE + "G0 X6 Z1\nG71 X6 Z1\nM2\n", "needs Q"),
+    ("G18 G8 F100\n" + PROFILE + "G0 X6 Z1\nG71 Q200 X6 Z1\nM2\n", "no subprogram o200"),
+    ("G17 G8 F100\n" + PROFILE + "G0 X6 Z1\nG71 Q100 X6 Z1\nM2\n", "ZX plane"),
+    ("G18 G8 F100\n" + PROFILE + "G0 X6 Z1\nG71 Q100 X6 Z1 I0\nM2\n", "must be above 0"),
+    ("G18 G8 F100\n" + PROFILE + "G0 X6 Z1\nG91 G71 Q100 X0 Z0\nM2\n", "incremental mode"),
+    ("G18 G8 F100\n" + PROFILE + "G0 X6 Z1\nG42.1 D1\nG71 Q100 X6 Z1\nM2\n", "cutter compensation enabled"),
+    ("G18 G8 F100\n" + PROFILE + "G0 X6 Z1\nG70 Q100 X6 Z1 P1.5\nM2\n", "whole number"),
+    ("G18 G8 F100\nO100 SUB\nG1 X1 Z0 F50\nG1 X5 Z-4\nO100 ENDSUB\nG0 X6 Z1\nG71 Q100 X6 Z1\nM2\n",
+     "ignores it there"),
+    ("G18 G8 F100\nO100 SUB\nG1 X1 Z0\nG1 X[2+3] Z-4\nO100 ENDSUB\nG0 X6 Z1\nG71 Q100 X6 Z1\nM2\n",
+     "computed word"),
+    ("G18 G8 F100\nO100 SUB\nG1 X1 Z0\nG1 X3 Z-4\nO100 ENDSUB\nG0 X6 Z1\nG71 Q100 X6 Z1\nM2\n",
+     "short of the cycle's X"),
+    ("G18 G8 F100\nO100 SUB\nG1 X1 Z0\nG1 X3 Z-4 A0.2 C0.2\nG1 X6\nO100 ENDSUB\nG0 X6 Z1\nG71 Q100 X6 Z1\nM2\n",
+     "both A and C"),
+    ("G18 G8 F100\nO100 SUB\nG1 X1 Z0\nG1 X3 Z-4 A0.2\nG1 X6\nO100 ENDSUB\nG0 X6 Z1\no100 call\nM2\n",
+     "only a G70-G72 cycle"),
+])
+def test_refusals(program: str, message: str) -> None:
+    with pytest.raises((PostprocError, ErrorList)) as err:
+        simulated(program)
+    assert message in str(err.value)
+
+
+@needs_rs274
+def test_refused_g71_under_compensation_is_refused_by_rs274() -> None:
+    with pytest.raises(RS274Error, match="cutter compensation"):
+        run_rs274("G18 G8 F100\n" + PROFILE + "G0 X6 Z1\nG42.1 D1\nG71 Q100 X6 Z1\nM2\n")
+
+
+def test_mill_keeps_the_codes_verbatim() -> None:
+    """On a mill set-up the codes are not read (LinuxCNC runs them on a lathe's XZ plane only)."""
+    text = "G18 F100\n" + PROFILE + "G0 X6 Z1\nG71 Q100 X6 Z1\nM2\n"
+    out = io.StringIO()
+    translate(io.StringIO(text), out, file="m.ngc", source="linuxcnc", target="linuxcnc", setup=MachineSetup())
+    assert out.getvalue() == text
+    with pytest.raises((PostprocError, ErrorList), match="cannot be simulated"):
+        simulated(text, MachineSetup())
+
+
+# -- another family's cycles towards LinuxCNC ------------------------------------------------------------
+FANUC_G71 = """O0001
+G18 G21 G40 G97 G99
+T0101
+M3 S500
+G0 X12. Z2.
+G71 U1. R0.5
+G71 P10 Q20 U0. W0. F0.2
+N10 G0 X2.
+G1 Z-5.
+X6. Z-8.
+Z-12.
+N20 X12.
+G0 X20. Z5.
+M30
+"""
+LINUXCNC_G71 = """G18 G21 G8 G90 G40
+F100
+O100 SUB
+G0 X1
+G1 Z-5
+G1 X3 Z-8
+G1 Z-12
+G1 X6
+O100 ENDSUB
+G0 X6 Z2
+G71 Q100 X6 Z2 D0 I1 R0.5
+M2
+"""
+
+
+@needs_rs274
+def test_fanuc_g71_is_not_linuxcnc_g71_so_it_stays_expanded() -> None:
+    """The same profile, depth 1 and retract 0.5 (radii): Fanuc T's G71 cuts its first layer one depth below the
+    start and goes back along Z at the retracted X [our Fanuc simulation, itself held to hand-derived paths in
+    tests/test_lathe.py]; LinuxCNC's cuts the first layer at the start's X and goes back diagonally [rs274]. So a
+    Fanuc T or GSK G71 is written to LinuxCNC as its moves, never as LinuxCNC's G71."""
+    from postproc.setup.machine_setup import load_setup
+    fanuc_setup = load_setup(str(ROOT / "examples" / "setups" / "fanuc_0i_tf.xml"))
+    fanuc = [(e["move"], float(e["x"]) / 2.0, float(e["z"])) for e in
+             toolpath_events(io.StringIO(FANUC_G71), file="f.nc", dialect="fanuc", setup=fanuc_setup) if "move" in e]
+    linuxcnc = [(m["move"], m["x"], m["z"]) for m in rs274_moves(LINUXCNC_G71)]
+    assert fanuc[1:4] == [("rapid", 5.0, 2.0), ("feed", 5.0, -12.0), ("rapid", 5.5, -11.5)]
+    assert fanuc[4] == ("rapid", 5.5, 2.0)
+    assert linuxcnc[1:5] == [("feed", 6.0, -12.0), ("rapid", 6.5, -11.5), ("rapid", 6.5, 1.5), ("rapid", 6.0, 2.0)]
+    out = io.StringIO()
+    translate(io.StringIO(FANUC_G71), out, file="f.nc", source="fanuc", target="linuxcnc", setup=fanuc_setup)
+    assert not re.search(r"^\s*(N\d+\s*)?G7[0-2]\b", out.getvalue(), re.M)
+
+
+DIAMETER_PROGRAM = """G18 G21 G7 G90 G40
+F100
+O100 SUB
+G0 X2 Z0
+G1 W-5
+G1 U4 W-3
+G3 X8 Z-9 I0 K-1
+G1 Z-12
+G1 X12
+O100 ENDSUB
+G0 X12 Z2
+G71 Q100 X12 Z2 D0.2 I1 R0.5
+G70 Q100 X12 Z2 D0.1 P1
+M2
+"""
+
+
+@needs_rs274
+def test_diameter_mode_reads_x_and_u_as_diameters() -> None:
+    """Under G7 the profile's and the cycle's X and U are diameters, its arc centres, D, I and R radial [rs274]."""
+    setup = MachineSetup(input=InputSettings(machine_type="lathe", x_programming="diameter"))
+    ours = [{k: float(v) / 2.0 if k in ("x", "cx") else v for k, v in e.items()} for e in simulated(DIAMETER_PROGRAM, setup)]
+    theirs = rs274_moves(DIAMETER_PROGRAM)
+    assert len(without_repeats(theirs)) > 30
+    assert difference(ours, theirs) is None
+
+
+# -- properties ----------------------------------------------------------------------------------------------
+from hypothesis import given, settings  # noqa: E402
+from hypothesis import strategies as st  # noqa: E402
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.integers(min_value=0, max_value=2**32))
+def test_g70_without_allowance_follows_the_profile(seed: int) -> None:
+    """G70 with D = E = 0 in one pass is a rapid towards the cycle's point, a rapid to the profile's first point,
+    then the profile itself, piece by piece [K: g-code.adoc "The path given in Q- is followed using the G1
+    and G2/G3 commands"] (profiles without corners: a fillet or chamfer changes the path)."""
+    case = draw(random.Random(seed), "70")
+    for step in case.steps:
+        step.words.pop("A", None)
+        step.words.pop("C", None)
+    case.words = {}
+    try:
+        moves = engine(case)
+    except NgcCycleError:
+        return  # a profile the controller refuses (not monotonic): checked against rs274 above
+    expected = [(s.x, s.z) for s in case.steps]
+    assert [m["move"] for m in moves[:3]] == ["rapid"] * 3  # (the helper's rapid to the cycle's point first)
+    assert (moves[2]["x"], moves[2]["z"]) == pytest.approx(expected[0])  # (the first rapid may stop short of
+    # the cycle's point: the approach is cut back to the profile's start Z, or X for a facing profile)
+    drawn = [(m["x"], m["z"]) for m in moves[3:]]
+    assert len(drawn) == len(expected) - 1
+    for (x, z), (ex, ez) in zip(drawn, expected[1:]):
+        assert x == pytest.approx(ex, abs=1e-9) and z == pytest.approx(ez, abs=1e-9)
+    kinds = [m["move"] for m in moves[3:]]
+    assert kinds == [{0: "feed", 1: "feed", 2: "cw", 3: "ccw"}[s.g] for s in case.steps[1:]]
