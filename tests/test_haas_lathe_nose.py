@@ -3,9 +3,10 @@ its last: the form of public Haas lathe programs, enier290188/cnc ``src/lathe``)
 M24 before G76.
 
 Expected values are derived by hand below, not by the code under test: the nose centre one radius
-beside each block (right of the motion for G42, looking along it with Z across and X up), cut short at
-an inside corner, rolled on an arc about an outside corner; the imaginary tip the radius away from the
-centre in the direction the Haas manual gives each tip number (``tests/support/nose_tips.py``). The end-to-end test
+beside each block (right of the motion for G42, looking along it with Z across and X up), every corner
+where the offset paths cross (Fanuc T's rules, which a Haas lathe follows: ``rules.HAAS_T``), the approach
+and the departure square to the block after and before them (type A); the imaginary tip the radius away
+from the centre in the direction the Haas manual gives each tip number (``tests/support/nose_tips.py``). The end-to-end test
 compares the roughing of a compensated profile with the roughing of the same cycle over the tip path
 written out by hand, without compensation.
 """
