@@ -31,7 +31,8 @@ The nose centre by hand, one r to the right of the motion (right of -Z is +X; of
   block"): (-20, 15 + r); N14 at the programmed (-20, 17).
 
 The machine positions the imaginary tool tip, the centre plus r times the tip's direction from the Haas manual's
-table (``tests/support/nose_tips.py``, its words, not ``postproc.compensation.nose``).
+table (``tests/support/nose_tips.py``, its words, not ``postproc.compensation.nose``). A taper between two turns
+is checked against the Haas manual's own "Tool Radius And Angle Chart" (``HAAS_CHART``).
 """
 
 from __future__ import annotations
@@ -290,3 +291,33 @@ def test_grblhal_gets_the_tip_path_in_diameters() -> None:
         words = _words(line)
         assert words["X"] == point["x"] and words["Z"] == point["z"], line
     assert report.ok and report.max_deviation < 1e-6, report
+
+
+HAAS_CHART = {1: (0.0010, 0.0310), 5: (0.0052, 0.0299), 10: (0.0100, 0.0285), 15: (0.0146, 0.0271),
+              20: (0.0188, 0.0257), 46: (0.0372, 0.0180), 50: (0.0398, 0.0167), 55: (0.0428, 0.0150),
+              60: (0.0458, 0.0132)}
+"""The Haas lathe manual's "Tool Radius And Angle Chart (1/32 RADIUS)" [V: Classic Control lathe operator's
+manual, "Tool Nose Compensation Geometry", https://staging-diy.haascnc.com/tool-nose-compensation-geometry,
+read in this session]: per angle (degrees), Xc (cross, on the part's diameter) and Zc (longitudinal), the
+amounts a programmer without compensation moves a taper by for a 1/32 in nose; some of its rows."""
+
+
+@pytest.mark.parametrize("angle", sorted(HAAS_CHART))
+def test_a_compensated_taper_is_shifted_by_the_haas_chart(angle: int) -> None:
+    """A taper at ``angle`` to the Z axis (rising toward the chuck, G42, tip 3, nose 1/32 in) between a turn
+    before it and a turn after it: both ends of its compensated path lie on the programmed taper moved by the
+    chart's Zc along Z, and by its Xc (a diameter) along X, within one unit of the chart's fourth decimal (its
+    own rounding: at 1 degree the exact Xc is 0.00108, the chart says .0010; at 20 degrees 0.01874, it says
+    .0188)."""
+    r, theta, length = 1.0 / 32.0, math.radians(angle), 0.5
+    end = (-length * math.cos(theta), 0.5 + length * math.sin(theta))  # (Z, X radius), from (0, 0.5)
+    text = (f"G00 G18 G20 G40 G99\nT0101\nG97 S800 M03\nG00 X2. Z0.1\nG42 G01 X1. Z0.1 F0.01\nG01 Z0.\n"
+            f"X{2 * end[1]:.6f} Z{end[0]:.6f}\nZ-1.\nG40 G01 X3.\nM30\n")
+    moves = _controlled(text, one_tool("haas_st10_lathe.xml", 1, r * MM_PER_INCH, 3))
+    taper = [(m["z"] / MM_PER_INCH, m["x"] / MM_PER_INCH / 2.0) for m in moves if m["line"] in (6, 7)]
+    xc, zc = HAAS_CHART[angle]
+    for z, x in taper:  # the ends of the turn before the taper and of the taper: both on the moved taper
+        on_line_z = -(x - 0.5) / math.tan(theta)
+        on_line_x = 0.5 - z * math.tan(theta)
+        assert abs(on_line_z - z) == pytest.approx(zc, abs=1.1e-4), (z, x)
+        assert 2 * abs(on_line_x - x) == pytest.approx(xc, abs=1.1e-4), (z, x)

@@ -285,6 +285,9 @@ HAAS_B = CutterRules(
 # [V] same page: I and K in the G40 block give a vector that decides the compensated end of the block before
 #     it (to keep a departure from overcutting): Haas's own, not Fanuc T's; not modelled, refused where it
 #     stands (``dialects/fanuc/lathe_block_syntax.py``).
+# [V] same page, "Tool Radius And Angle Chart (1/32 RADIUS)": per taper angle, the X (diameter) and Z amounts a
+#     1/32 in nose's compensation moves a taper by; the simulation reproduces its rows to its last digit
+#     (tests/test_haas_nose.py ``HAAS_CHART``): the mode-to-mode offset geometry, tip 3.
 # [V] "Tool Nose Compensation Concept": G41 shifts the tool to the left of the programmed path, G42 to the
 #     right, G40 cancels; OD turning toward the chuck takes G42.
 # [V] "Imaginary Tool Tip and Direction": the tip code 0-9 sits next to the radius on the geometry offsets
