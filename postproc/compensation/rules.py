@@ -285,7 +285,7 @@ HAAS_B = CutterRules(
 # [V] same page: I and K in the G40 block give a vector that decides the compensated end of the block before
 #     it (to keep a departure from overcutting): Haas's own, not Fanuc T's; not modelled, refused where it
 #     stands (``dialects/fanuc/lathe_block_syntax.py``).
-# [V] same page, "Tool Radius And Angle Chart (1/32 RADIUS)": per taper angle, the X (diameter) and Z amounts a
+# [V] "Tool Nose Compensation Geometry" again, its "Tool Radius And Angle Chart (1/32 RADIUS)": per taper angle, the X (diameter) and Z amounts a
 #     1/32 in nose's compensation moves a taper by; the simulation reproduces its rows to its last digit
 #     (tests/test_haas_nose.py ``HAAS_CHART``): the mode-to-mode offset geometry, tip 3.
 # [V] "Tool Nose Compensation Concept": G41 shifts the tool to the left of the programmed path, G42 to the
@@ -293,29 +293,7 @@ HAAS_B = CutterRules(
 # [V] "Imaginary Tool Tip and Direction": the tip code 0-9 sits next to the radius on the geometry offsets
 #     page; directions as ``nose.TIPS`` (which cites it). The T code's offset number selects the offset
 #     (``T0101``) [K: the manual's TNC examples], as on Fanuc T: ``register_absent="offset"``.
-HAAS_T = CutterRules(
-    name="Haas lathe tool nose compensation (type A)",
-    register_absent=FANUC_T.register_absent,
-    entry=FANUC_T.entry,
-    outside_corner=FANUC_T.outside_corner,
-    corner_tolerance=FANUC_T.corner_tolerance,
-    arc_after_cancel=FANUC_T.arc_after_cancel,
-    planes=FANUC_T.planes,
-    inside_corner=FANUC_T.inside_corner,
-    look_ahead=FANUC_T.look_ahead,
-    profile_cycles=FANUC_T.profile_cycles,
-)
+HAAS_T = dataclasses.replace(FANUC_T, name="Haas lathe tool nose compensation (type A)")
 """A Haas lathe, type A (the default): Fanuc T's rules, one algorithm (``extended_corners``)."""
-HAAS_T_B = CutterRules(
-    name="Haas lathe tool nose compensation (type B)",
-    register_absent=FANUC_T_B.register_absent,
-    entry=FANUC_T_B.entry,
-    outside_corner=FANUC_T_B.outside_corner,
-    corner_tolerance=FANUC_T_B.corner_tolerance,
-    arc_after_cancel=FANUC_T_B.arc_after_cancel,
-    planes=FANUC_T_B.planes,
-    inside_corner=FANUC_T_B.inside_corner,
-    look_ahead=FANUC_T_B.look_ahead,
-    profile_cycles=FANUC_T_B.profile_cycles,
-)
+HAAS_T_B = dataclasses.replace(FANUC_T_B, name="Haas lathe tool nose compensation (type B)")
 """A Haas lathe with type B chosen: Fanuc T's type B rules."""
