@@ -16,7 +16,7 @@ import pytest
 
 from dialects.fanuc import Fanuc
 from postproc.api import translate
-from postproc.compensation.rules import HAAS_A, HAAS_B
+from postproc.compensation.rules import HAAS_A, HAAS_B, HAAS_T, HAAS_T_B
 from postproc.errors import Diagnostics, ErrorList
 from postproc.plugins import default_registry
 from postproc.setup.machine_setup import MachineSetup
@@ -64,7 +64,9 @@ def test_the_set_up_chooses_the_haas_rules_by_setting_43() -> None:
     assert Fanuc.cutter_rules(_haas("B")) is HAAS_B
     lathe = _haas()
     lathe.input.machine_type = "lathe"
-    assert Fanuc.cutter_rules(lathe) is None  # a Haas lathe's nose compensation: not in our sources
+    assert Fanuc.cutter_rules(lathe) is HAAS_T  # a Haas lathe: Fanuc T's rules (tests/test_haas_nose.py)
+    lathe.controller.cutter_startup = "B"
+    assert Fanuc.cutter_rules(lathe) is HAAS_T_B
 
 
 def test_the_haas_lap_is_simulated_by_hand() -> None:
@@ -128,18 +130,8 @@ def test_a_haas_without_the_radius_names_the_tool_to_add() -> None:
 
 
 def test_where_the_rules_are_not_modelled_the_refusal_names_what_is_unknown() -> None:
-    """A Haas lathe's nose compensation (and an ISG program's) towards grbl: not "grbl cannot express it" (a
-    compensated path is what grbl gets where the source's rules are known) but which rules are not known."""
-    lathe = _haas()
-    lathe.input.machine_type = "lathe"
-    text = "G18 G20 G40 G98\nT0101\nG0 X1. Z0.1\nG42 G1 X0.5 Z0. F1.\nZ-1.\nG40 G0 X1.\nM30\n"
-    with pytest.raises(ErrorList) as caught:
-        translate(io.StringIO(text), io.StringIO(), file="t.nc", source="fanuc", target="grbl", setup=lathe,
-                  diagnostics=Diagnostics(warn_stream=io.StringIO()))
-    assert ("t.nc:4:1: error: cutter radius compensation (right) cannot be resolved into moves for grbl, which has "
-            "none: a Haas lathe's tool nose compensation rules are not modelled (its start-up, corner and cancel "
-            "moves: whether its settings follow Fanuc T's start-up types is not in our sources)"
-            in [str(e) for e in caught.value.errors]), caught.value.errors
+    """An ISG program's cutter compensation towards grbl: not "grbl cannot express it" (a compensated path is
+    what grbl gets where the source's rules are known) but which rules are not known."""
     with pytest.raises(ErrorList) as isg:
         translate(io.StringIO("G17 G90 G0 X0 Y0\nG41 D1 G1 X10 F100\nG40 X0\nM30\n"), io.StringIO(), file="t.nc",
                   source="isg", target="grbl", setup=with_tools(), diagnostics=Diagnostics(warn_stream=io.StringIO()))

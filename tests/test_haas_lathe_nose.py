@@ -3,9 +3,10 @@ its last: the form of public Haas lathe programs, enier290188/cnc ``src/lathe``)
 M24 before G76.
 
 Expected values are derived by hand below, not by the code under test: the nose centre one radius
-beside each block (right of the motion for G42, looking along it with Z across and X up), cut short at
-an inside corner, rolled on an arc about an outside corner; the imaginary tip the radius away from the
-centre in the direction the Haas manual gives each tip number (``tests/support/nose_tips.py``). The end-to-end test
+beside each block (right of the motion for G42, looking along it with Z across and X up), every corner
+where the offset paths cross (Fanuc T's rules, which a Haas lathe follows: ``rules.HAAS_T``), the approach
+and the departure square to the block after and before them (type A); the imaginary tip the radius away
+from the centre in the direction the Haas manual gives each tip number (``tests/support/nose_tips.py``). The end-to-end test
 compares the roughing of a compensated profile with the roughing of the same cycle over the tip path
 written out by hand, without compensation.
 """
@@ -21,12 +22,13 @@ import pytest
 from postproc.api import read_program, translate
 from postproc.cycles.turning.nose_path import nose_path
 from postproc.cycles.turning.profile import Seg
+from postproc.compensation.rules import HAAS_T
 from postproc.errors import ErrorList, ProgramError
 from postproc.ir import CompoundMotion, CutterCompensation, Motion
 from postproc.lathe_sections import LatheCycle
 from postproc.setup.machine_setup import load_setup
 from postproc.simulate.verify import verify_lines
-from tests.support.nose_tips import direction
+from tests.support.nose_tips import controlled, direction
 from tests.support.rs274 import available
 from tests.test_lathe_rs274 import INCH_TOLERANCE, difference, ours, theirs
 
@@ -63,24 +65,28 @@ def _points(segs: list[Seg]) -> list[tuple[float, ...]]:
 @pytest.mark.parametrize("tip", range(10))
 def test_each_tip_direction_moves_the_nose_centre_path(tip: int) -> None:
     """OD turning toward the chuck, then a shoulder up (an inside corner), G42, nose radius 0.8: the centre
-    runs at X10.8 (radius) to Z-19.2, where the offset blocks meet, then at Z-19.2 up to X15; the tip is
-    the centre moved 0.8 in the tip's direction."""
-    segs = [_line(10.0, 0.0, 10.0, -20.0), _line(10.0, -20.0, 15.0, -20.0)]
+    runs at X10.8 (radius) to Z-19.2, where the offset blocks meet, then at Z-19.2 up to X15, where it ends
+    square to the shoulder (the departure after it, type A); the tip is the centre moved 0.8 in the tip's
+    direction. The approach along -Z and the departure are no part of the path."""
+    segs = [_line(10.0, 2.0, 10.0, 0.0), _line(10.0, 0.0, 10.0, -20.0), _line(10.0, -20.0, 15.0, -20.0),
+            _line(15.0, -20.0, 16.0, -20.0)]
     sz, sx = direction(tip)  # the Haas manual's words (tests/support/nose_tips.py)
     dx, dz = 0.8 * sx, 0.8 * sz
     centre = [(10.8, 0.0, 10.8, -19.2), (10.8, -19.2, 15.0, -19.2)]
     expected = [tuple(round(v, 9) for v in (a + dx, b + dz, c + dx, d + dz)) for a, b, c, d in centre]
-    assert _points(nose_path(segs, "right", 0.8, (int(sz), int(sx)), "G71")) == expected
+    assert _points(nose_path(segs, "right", 0.8, (int(sz), int(sx)), "G71", HAAS_T)) == expected
 
 
-def test_g41_on_a_bore_runs_below_it_and_an_outside_corner_rolls_on_an_arc() -> None:
+def test_g41_on_a_bore_runs_below_it_and_an_outside_corner_meets_where_the_offsets_cross() -> None:
     """ID boring toward the chuck with G41: the centre is below the bore (X5 - 0.5); the face before it,
-    cut downward at Z0, is an outside corner for G41 (the path turns right, the tool is on its left): the
-    centre rolls on an arc of 0.5 about the programmed corner (5, 0), clockwise, from (5, 0.5) to (4.5, 0)."""
-    segs = [_line(8.0, 0.0, 5.0, 0.0), _line(5.0, 0.0, 5.0, -10.0)]
-    path = nose_path(segs, "left", 0.5, (0, 0), "G71")
-    assert _points(path) == [(8.0, 0.5, 5.0, 0.5), (5.0, 0.5, 4.5, 0.0, 5.0, 0.0), (4.5, 0.0, 4.5, -10.0)]
-    assert path[1].kind == "cw"
+    cut downward at Z0, is an outside corner of 90 degrees for G41 (the path turns right, the tool is on its
+    left): under Fanuc T's rules (a Haas lathe's, ``rules.HAAS_T``) the offset face (Z0.5) and the offset
+    bore (X4.5) meet at (4.5, 0.5), no arc. The approach along -Z ends square to the face: (8, 0.5)."""
+    segs = [_line(8.0, 2.0, 8.0, 0.0), _line(8.0, 0.0, 5.0, 0.0), _line(5.0, 0.0, 5.0, -10.0),
+            _line(5.0, -10.0, 4.0, -10.0)]
+    path = nose_path(segs, "left", 0.5, (0, 0), "G71", HAAS_T)
+    assert _points(path) == [(8.0, 0.5, 4.5, 0.5), (4.5, 0.5, 4.5, -10.0)]
+    assert [seg.kind for seg in path] == ["line", "line"]
 
 
 def test_a_profile_with_arcs() -> None:
@@ -90,18 +96,19 @@ def test_a_profile_with_arcs() -> None:
     0.08 + 0.0315 = 0.1115 about (0.418, -0.98); every join is tangent. The tip is the centre moved
     (-0.0315, -0.0315)."""
     r = 0.0315
-    segs = [_line(0.24, 0.1, 0.24, -0.85), Seg("cw", 0.24, -0.85, 0.29, -0.9, 0.29, -0.85),
-            _line(0.29, -0.9, 0.418, -0.9), Seg("ccw", 0.418, -0.9, 0.498, -0.98, 0.418, -0.98),
-            _line(0.498, -0.98, 0.498, -1.5)]
-    path = nose_path(segs, "right", r, (-1, -1), "G71")
+    segs = [_line(0.24, 0.2, 0.24, 0.1), _line(0.24, 0.1, 0.24, -0.85),
+            Seg("cw", 0.24, -0.85, 0.29, -0.9, 0.29, -0.85), _line(0.29, -0.9, 0.418, -0.9),
+            Seg("ccw", 0.418, -0.9, 0.498, -0.98, 0.418, -0.98), _line(0.498, -0.98, 0.498, -1.5),
+            _line(0.498, -1.5, 0.6, -1.5)]
+    path = nose_path(segs, "right", r, (-1, -1), "G71", HAAS_T)
     assert [s.kind for s in path] == ["line", "cw", "line", "ccw", "line"]
     expected = [(0.24, 0.0685, 0.24, -0.8815), (0.24, -0.8815, 0.2585, -0.9, 0.2585, -0.8815),
                 (0.2585, -0.9, 0.3865, -0.9), (0.3865, -0.9, 0.498, -1.0115, 0.3865, -1.0115),
                 (0.498, -1.0115, 0.498, -1.5315)]
     assert _points(path) == [tuple(round(v, 9) for v in row) for row in expected]
     assert math.isclose(math.hypot(path[1].x0 - 0.2585, path[1].z0 + 0.8815), 0.0185, abs_tol=1e-12)
-    with pytest.raises(ProgramError, match="no wider than the tool nose"):
-        nose_path(segs, "right", 0.05, (-1, -1), "G71")  # the fillet's 0.05 leaves the nose no room
+    with pytest.raises(ProgramError, match="G71: the tool radius is not less than the radius of an arc it cuts"):
+        nose_path(segs, "right", 0.05, (-1, -1), "G71", HAAS_T)  # the fillet's 0.05 leaves the nose no room
 
 
 HAAS_TNC = """G00 G18 G20 G40 G80 G99
@@ -188,7 +195,10 @@ def test_the_compensated_cycles_translate_expanded_and_verify(tmp_path: Path, ta
     out = _write(program, target, setup)
     lines = out.splitlines()
     assert not any(line.startswith(("G71", "G70")) for line in lines)  # another controller's rules: expanded
-    assert sum(1 for line in lines if line.startswith(("G42", "G40"))) == 2  # the finishing pass compensated
+    # GSK compensates by Fanuc T's rules, which a Haas lathe follows (rules.HAAS_T): the finishing pass keeps
+    # G42/G40; LinuxCNC's rules differ (an arc round outside corners): the pass is written as the tip's path
+    kept = sum(1 for line in lines if line.startswith(("G42", "G40")))
+    assert kept == (2 if target == "gsk" else 0), out
     report = verify_lines(io.StringIO(program), io.StringIO(out), file_in="in.nc", file_out="out", source="fanuc",
                           target=target, setup=setup, tolerance=0.0)
     assert report.ok and report.max_deviation == 0.0, report.summary()
@@ -249,3 +259,53 @@ def test_haas_m24_needs_no_equivalent_elsewhere_the_cycle_carries_it() -> None:
                           source="fanuc", target="linuxcnc", setup=haas, tolerance=1e-5)  # G76's depths: 6 decimals
     assert report.ok, report.summary()
     assert _write(program, "fanuc", haas) == program
+
+
+R_IN = 0.8001 / 25.4
+"""Tool 1's nose radius in the inch program (``TOOLS``)."""
+
+CHAMFER = """G00 G18 G20 G40 G80 G99
+T0101
+G97 S1000 M03
+G00 X0.8 Z0.1
+G71 P10 Q20 U0.01 W0.005 D0.05 F0.010
+N10 G00 G42 X0.3 Z0.1
+G01 Z0.
+X0.4
+X0.5 Z-0.05
+Z-0.5
+N20 G00 G40 X0.7
+G70 P10 Q20
+M05
+M30
+"""
+"""A face up to a 45 degree chamfer, then a turn: an inside corner, then two outside corners of 135 degrees
+(written here in the Haas programs' form)."""
+
+
+def _chamfer_tip_path() -> list[tuple[float, float]]:
+    """By hand, (Z, X radius), the nose centre r to the right of the motion (right of -Z is +X, of +X is +Z, of
+    the chamfer's (-1, 1)/sqrt2 is (1, 1)/sqrt2), every corner where the offset lines cross (Fanuc T's, a Haas
+    lathe's type A): the approach ends square to the turn at (0.1, 0.15 + r); the turn meets the face's offset
+    Z = r at (r, 0.15 + r); the face meets the chamfer's offset Z + X = 0.2 + r sqrt2 at (r, 0.2 + r (sqrt2 - 1));
+    the chamfer meets the turn's offset X = 0.25 + r at (-0.05 + r (sqrt2 - 1), 0.25 + r); the turn ends square to
+    itself at (-0.5, 0.25 + r). Tip 3 moves each by (-r, -r)."""
+    r, k = R_IN, R_IN * (math.sqrt(2.0) - 1.0)
+    centres = [(0.1, 0.15 + r), (r, 0.15 + r), (r, 0.2 + k), (-0.05 + k, 0.25 + r), (-0.5, 0.25 + r)]
+    return [(z - r, x - r) for z, x in centres]
+
+
+def test_the_roughing_and_the_finishing_take_one_path_at_outside_corners(tmp_path: Path) -> None:
+    """G71 roughs to the hand-derived tip path (its cycle over that path written out without compensation makes
+    the same moves), and G70 over the same profile runs its blocks to the very same points: one compensation
+    (``nose_path`` runs the profile through the rules G70 is simulated with)."""
+    setup = _haas(tmp_path)
+    tip = _chamfer_tip_path()
+    hand = [f"N10 G00 X{2 * tip[0][1]:.10f} Z{tip[0][0]:.10f}", f"G01 X{2 * tip[1][1]:.10f} Z{tip[1][0]:.10f}"]
+    hand += [f"X{2 * x:.10f} Z{z:.10f}" for z, x in tip[2:-1]] + [f"N20 Z{tip[-1][0]:.10f}"]
+    by_hand = CHAMFER.split("N10")[0] + "\n".join(hand) + "\nM05\nM30\n"
+    assert _cycle_moves(CHAMFER.replace("G70 P10 Q20\n", ""), setup) == _cycle_moves(by_hand, setup)
+    finish = [m for m in controlled(CHAMFER, "fanuc", setup, "in.nc") if m["line"] == 12]  # events in mm
+    assert [m["move"] for m in finish] == ["rapid", "feed", "feed", "feed", "feed", "rapid", "rapid"]
+    for move, (z, x) in zip(finish, tip):
+        assert move["z"] / 25.4 == pytest.approx(z, abs=1e-5) and move["x"] / 25.4 == pytest.approx(2 * x, abs=1e-5)

@@ -42,22 +42,39 @@ def test_the_same_compensation_on_both_sides_is_a_note() -> None:
     assert report.summary().splitlines()[1:] == ["not compared:", "  " + report.ignored[0]]
 
 
+ISG = "G71 G90 G17\nG0 X0 Y0 S1000 M3\nG41 D1 G1 X10 F100\nG1 Y10\nG40 G0 X0 Y0\nM30\n"
+ISG_WITHOUT = ISG.replace("G41 D1 ", "").replace("G40 ", "")
+"""An ISG program whose compensation rules are not modelled (a Haas lathe's, this test's earlier example, are
+now: ``rules.HAAS_T``), and the same without its compensation."""
+
+
 def test_compensation_left_out_fails_unless_allowed() -> None:
-    # from a Haas lathe program, whose nose compensation is not simulated: the setting is compared
-    source, out = LATHE, LATHE_WITHOUT
+    # from an ISG program, whose compensation is not simulated: the setting is compared
+    def run(allow: bool) -> Any:
+        return verify_lines(io.StringIO(ISG), io.StringIO(ISG_WITHOUT), file_in="a.nc", file_out="b.nc",
+                            source="isg", target="isg", allow_ignored=allow, setup=with_tools())
+    report = run(False)
+    assert not report.ok and report.left_out_moves and report.max_deviation == 0
+    assert report.ignored == ["cutter compensation differs: IN left D1 (line 3), off (line 5); OUT never set"]
+    assert report.summary().splitlines()[0] == (
+        "max deviation 0.0000 mm over 3 moves (IN:3 / OUT:3): settings that move the tool differ (listed below; "
+        "--allow-ignored accepts them)")
+    allowed = run(True)
+    assert allowed.ok
+    assert allowed.summary().splitlines()[0].endswith(": ok, with settings that move the tool left out (--allow-ignored)")
+
+
+def test_haas_lathe_compensation_left_out_is_a_deviation_not_a_setting() -> None:
+    """A Haas lathe's nose compensation is simulated (Fanuc T's rules, ``rules.HAAS_T``): leaving it out moves
+    the tool by the nose radius as on Fanuc T (tip 3, r 1: X40 Z1 against X40 Z2)."""
+    from postproc.setup.machine import ToolData
     lathe = with_tools()
     lathe.input.machine_type = "lathe"
     lathe.controller.variant = "haas"
-    report = verify(source, out, "fanuc", setup=lathe)
-    assert not report.ok and report.left_out_moves and report.max_deviation == 0
-    assert report.ignored == ["lathe tool offset: not simulated, the same on both sides (offset 1 (line 2))",
-                              "cutter compensation differs: IN right D1 (line 4), off (line 6); OUT never set"]
-    assert report.summary().splitlines()[0] == (
-        "max deviation 0.0000 mm over 4 moves (IN:3 / OUT:3): settings that move the tool differ (listed below; "
-        "--allow-ignored accepts them)")
-    allowed = verify(source, out, "fanuc", allow=True, setup=lathe)
-    assert allowed.ok
-    assert allowed.summary().splitlines()[0].endswith(": ok, with settings that move the tool left out (--allow-ignored)")
+    lathe.tools["1"] = ToolData(number=1, length=0.0, radius=1.0, tip=3)
+    for allow in (False, True):
+        report = verify(LATHE, LATHE_WITHOUT, "fanuc", allow=allow, setup=lathe)
+        assert not report.ok and report.max_deviation == 1 and report.where == (4, 4), report
 
 
 def test_fanuc_mill_compensation_left_out_is_a_deviation_not_a_setting() -> None:
@@ -103,14 +120,15 @@ def test_tool_length_data_is_simulated_where_an_offset_reads_it() -> None:
 
 
 def test_cli_allow_ignored(cli: Any, tmp_path: Path) -> None:
-    a, b = tmp_path / "a.nc", tmp_path / "b.ngc"
-    a.write_text(LATHE)
-    b.write_text(LATHE_WITHOUT)
-    machine = Path(__file__).resolve().parents[1] / "examples" / "setups" / "haas_st10_lathe.xml"
-    plain = cli("verify", a, b, "--from", "fanuc", "--to", "fanuc", "--machine", machine)
+    a, b = tmp_path / "a.nc", tmp_path / "b.nc"
+    a.write_text(ISG)
+    b.write_text(ISG_WITHOUT)
+    machine = tmp_path / "isg.xml"  # D1 selects the tool's length too: tool 1 needs one
+    machine.write_text('<MachineSetup name="ISG mill" dialect="isg"><Tools><Tool number="1" length="50" radius="2"/>'
+                       "</Tools></MachineSetup>")
+    plain = cli("verify", a, b, "--from", "isg", "--to", "isg", "--machine", machine)
     assert plain.status == 1
     assert plain.out.decode().splitlines()[1:] == [
-        "not compared:", "  lathe tool offset: not simulated, the same on both sides (offset 1 (line 2))",
-        "  cutter compensation differs: IN right D1 (line 4), off (line 6); OUT never set"]
-    allowed = cli("verify", a, b, "--from", "fanuc", "--to", "fanuc", "--machine", machine, "--allow-ignored")
+        "not compared:", "  cutter compensation differs: IN left D1 (line 3), off (line 5); OUT never set"]
+    allowed = cli("verify", a, b, "--from", "isg", "--to", "isg", "--machine", machine, "--allow-ignored")
     assert allowed.status == 0 and allowed.out.decode().splitlines()[1:] == plain.out.decode().splitlines()[1:]

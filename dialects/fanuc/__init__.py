@@ -7,7 +7,8 @@ from __future__ import annotations
 from typing import Callable
 
 from postproc.comments import CommentSyntax
-from postproc.compensation.rules import FANUC_A, FANUC_B, FANUC_T, FANUC_T_B, HAAS_A, HAAS_B, CutterRules
+from postproc.compensation.rules import (FANUC_A, FANUC_B, FANUC_T, FANUC_T_B, HAAS_A, HAAS_B, HAAS_T, HAAS_T_B,
+                                        CutterRules)
 from postproc.dialect import Dialect, Lazy, Reader
 from postproc.setup.machine_setup import MachineSetup
 from postproc.syntax import Pipeline
@@ -98,23 +99,15 @@ class Fanuc(Dialect):
         """Fanuc M: cutter compensation C, Fanuc T: tool nose radius compensation, start-up type A or B by
         parameter SUP (the set-up's ``cutterStartup``). A Haas mill: Fanuc's with what its manual leaves out
         refused, start-up type A or B by its setting 43 (the set-up's ``cutterStartup``; setting 58 FANUC,
-        ``postproc.compensation.rules.HAAS_A``). A Haas lathe's tool nose compensation is not simulated: verify
-        compares the setting (``cutter_rules_unknown``)."""
+        ``postproc.compensation.rules.HAAS_A``). A Haas lathe: Fanuc T's rules, type A by default, type B by the
+        set-up's ``cutterStartup`` (``rules.HAAS_T``, where its manual says so)."""
         if setup.controller.variant == "haas":
             if cls.reads_lathe(setup):
-                return None  # [?] which of its settings' rules a Haas lathe's nose compensation follows
+                return HAAS_T_B if setup.controller.cutter_startup == "B" else HAAS_T
             return HAAS_B if setup.controller.cutter_startup == "B" else HAAS_A
         if cls.reads_lathe(setup):
             return FANUC_T_B if setup.controller.cutter_startup == "B" else FANUC_T
         return FANUC_B if setup.controller.cutter_startup == "B" else FANUC_A
-
-    @classmethod
-    def cutter_rules_unknown(cls, setup: MachineSetup) -> str:
-        """A Haas lathe: which rules its tool nose compensation follows is not in our sources."""
-        if setup.controller.variant == "haas" and cls.reads_lathe(setup):
-            return ("a Haas lathe's tool nose compensation rules are not modelled (its start-up, corner and cancel "
-                    "moves: whether its settings follow Fanuc T's start-up types is not in our sources)")
-        return super().cutter_rules_unknown(setup)
 
     @classmethod
     def pipeline_file(cls, setup: MachineSetup) -> str:

@@ -6,7 +6,9 @@ from __future__ import annotations
 from typing import ClassVar
 
 from postproc.context import Context
-from postproc.rs274.codes import CodeTable
+from postproc.errors import UnsupportedError
+from postproc.ir import Block
+from postproc.rs274.codes import CodeTable, g_key
 from postproc.rs274.lathe_block_syntax import LatheBlockSyntax
 from postproc.rs274.machine_codes import Defaults
 
@@ -32,3 +34,21 @@ class FanucLatheBlockSyntax(LatheBlockSyntax):
 
     def table(self, ctx: Context) -> CodeTable:
         return LATHE_CODES[ctx.setup.input.gcode_system]
+
+    def build(self, block: Block, ctx: Context) -> None:
+        """A Haas lathe's G40 with I and K: the vector that decides where the block before it ends compensated
+        (its own departure rule [V: Haas lathe operator's manual, "Approach and Departure Moves For TNC",
+        ``postproc.compensation.rules.HAAS_T``]), which is not modelled: refused by name rather than read as
+        an arc centre or left unexplained. (A wrapper of ``build``: the plain-block lane stays this reading's,
+        ``postproc.fast.reading``; such a block is never plain.)"""
+        if ctx.setup.controller.variant == "haas" and any(letter in "IKik" for letter, _ in block.words):
+            table = self.table(ctx).g
+            entries = [table.get(g_key(num)) for letter, num in block.words if letter in "Gg"]
+            if any(e is not None and e[1] == "cutter" and e[2] == "off" for e in entries) and not any(
+                    e is not None and e[1] == "motion" and e[2] in ("cw", "ccw") for e in entries):
+                up = next(letter.upper() for letter, _ in block.words if letter in "IKik")
+                raise UnsupportedError("I and K in the G40 block (a Haas lathe's departure vector, which sets the "
+                                       "compensated end of the block before it) cannot be simulated: its geometry "
+                                       "is not in our sources; program the departure without them",
+                                       ctx.at(block, ctx.column_of(block, up)))
+        super().build(block, ctx)

@@ -149,7 +149,7 @@ class ExtendedCorners(CutterRadius):
         assert seg.centre is not None
         e = self.in_plane(seg.end)
         radius = math.hypot(e[0] - seg.centre[0], e[1] - seg.centre[1])
-        if self._inside(seg.turn) and radius <= self.radius:
+        if self._inside(seg.turn) and radius <= self.radius + ON_CURVE:  # equal within float noise: no circle left
             raise ProgramError("the tool radius is not less than the radius of an arc it cuts inside "
                                "(interference)")
         seg.sweep = find_turn(start, seg.centre, seg.turn, e)

@@ -8,6 +8,8 @@ Tags as in DIALECTS.md: [V] verified against the controller or its interpreter, 
 
 from __future__ import annotations
 
+import dataclasses
+
 from ..records import record
 
 
@@ -63,6 +65,11 @@ class CutterRules:
     acute_corner_known: bool = True
     """Whether the moves of an acute outer corner are known (straight corners: the radius extensions and the
     straight move between them); when not, such a corner is refused as not simulated."""
+
+    def cuts_like(self, other: "CutterRules") -> bool:
+        """Every rule but the name is the same: the two controllers compensate a program alike (a Haas lathe
+        and Fanuc T, ``HAAS_T``)."""
+        return dataclasses.replace(other, name=self.name) == self
 
 
 ARC_CORNERS = CutterRules(
@@ -262,3 +269,31 @@ HAAS_B = CutterRules(
     acute_corner_known=False,
 )
 """A Haas mill with settings 43 = B and 58 = FANUC."""
+
+
+# Tool nose compensation of a Haas lathe, as its operator's manual describes it (Classic Control lathe
+# operator's manual, the stored pages of https://staging-diy.haascnc.com, read in this session):
+# [V] "Tool Nose Compensation Geometry": "Two FANUC compensation types are supported, Type A and Type B. The
+#     default compensation is Type A"; its figures (approach, mode to mode, departure for line-line,
+#     line-arc, arc-line) are Fanuc's figures: every rule of ``FANUC_T`` (start-up, corners, cancel) holds
+#     [K: the figures themselves carry no text there]. Which setting chooses type B is not in those pages
+#     [?: setting 43 "Cutter Comp Type", as on the Haas mill]: the set-up's ``cutterStartup``.
+# [V] "Approach and Departure Moves For TNC": the approach (the first X or Z motion in the block with G41 or
+#     G42) must be G00 or G01, not compensated at its start, fully compensated at its end; the departure (a
+#     block with G40) must be G00 or G01, starts fully compensated "at a right angle to the last programmed
+#     block" (type A's cancel) and ends uncompensated.
+# [V] same page: I and K in the G40 block give a vector that decides the compensated end of the block before
+#     it (to keep a departure from overcutting): Haas's own, not Fanuc T's; not modelled, refused where it
+#     stands (``dialects/fanuc/lathe_block_syntax.py``).
+# [V] "Tool Nose Compensation Geometry" again, its "Tool Radius And Angle Chart (1/32 RADIUS)": per taper angle, the X (diameter) and Z amounts a
+#     1/32 in nose's compensation moves a taper by; the simulation reproduces its rows to its last digit
+#     (tests/test_haas_nose.py ``HAAS_CHART``): the mode-to-mode offset geometry, tip 3.
+# [V] "Tool Nose Compensation Concept": G41 shifts the tool to the left of the programmed path, G42 to the
+#     right, G40 cancels; OD turning toward the chuck takes G42.
+# [V] "Imaginary Tool Tip and Direction": the tip code 0-9 sits next to the radius on the geometry offsets
+#     page; directions as ``nose.TIPS`` (which cites it). The T code's offset number selects the offset
+#     (``T0101``) [K: the manual's TNC examples], as on Fanuc T: ``register_absent="offset"``.
+HAAS_T = dataclasses.replace(FANUC_T, name="Haas lathe tool nose compensation (type A)")
+"""A Haas lathe, type A (the default): Fanuc T's rules, one algorithm (``extended_corners``)."""
+HAAS_T_B = dataclasses.replace(FANUC_T_B, name="Haas lathe tool nose compensation (type B)")
+"""A Haas lathe with type B chosen: Fanuc T's type B rules."""

@@ -19,6 +19,8 @@ from postproc.ir import Block, Feed, Motion, Section
 from postproc.lathe_sections import LatheCycle
 
 if TYPE_CHECKING:
+    from postproc.compensation.rules import CutterRules
+
     from .turning.profile import Seg, TurnMove
 
 PROFILE_SECTIONS = frozenset(("Sequence", "Motion", "Feed", "Comments"))
@@ -104,18 +106,18 @@ def profile_segments(blocks: Sequence[Block], start: tuple[float, float], ctx: C
 
 
 def nose_shape(segs: Sequence[Seg], start: tuple[float, float], side: str, radius: float, tip: tuple[int, int],
-               kind: str, rough_type: str, code: str) -> list[Seg]:
+               kind: str, rough_type: str, code: str, rules: CutterRules) -> list[Seg]:
     """The profile a roughing cycle roughs to when its first block turns nose compensation on and its last
-    turns it off (``turning.nose_path``): the approach from ``start`` to where the tip path begins, then the
-    tip path of the blocks between (the departure block is no part of it). A type I cycle keeps its
-    approach along the infeed axis and reaches the tip path's start along the other (monotonic, as type I
-    must be) [?]."""
+    turns it off (``turning.nose_path``, under the controller's ``rules``): the approach from ``start`` to
+    where the tip path begins, then the tip path of the blocks between (the departure block is no part of
+    it). A type I cycle keeps its approach along the infeed axis and reaches the tip path's start along the
+    other (monotonic, as type I must be) [?]."""
     from .turning.nose_path import nose_path
     from .turning.profile import Seg
     if len(segs) < 3:
         raise ProgramError(f"{code}: a profile that turns tool nose radius compensation on in its first block and "
                            "off in its last needs blocks between them that move")
-    path = nose_path(segs[1:-1], side, radius, tip, code)
+    path = nose_path(segs, side, radius, tip, code, rules)
     ns, first = segs[0], path[0]
     x0, z0 = start
     if rough_type == "II":

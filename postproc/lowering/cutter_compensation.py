@@ -185,9 +185,10 @@ def _rules_differ(rules: CutterRules, target: type[Dialect], ctx: Context) -> bo
     """The target compensates by rules of its own that are modelled and not the source's (NIST version 3's
     entry move and inside corners against LinuxCNC's, Fanuc's straight outer corners against LinuxCNC's
     arcs): its G41/G42 may cut another path, so each stretch is tried under both (``rule_trial``) and
-    written as the source's compensated moves where the paths differ."""
+    written as the source's compensated moves where the paths differ. Rules that differ only in their name
+    (a Haas lathe's and Fanuc T's) are the same."""
     theirs: CutterRules | None = target.cutter_rules(ctx.setup)
-    return theirs is not None and theirs != rules
+    return theirs is not None and not theirs.cuts_like(rules)
 
 
 def resolve_cutter_compensation_unless(blocks: Iterator[Block], ctx: Context,

@@ -299,7 +299,11 @@ def _nose_shape(segs: list[Seg], start: tuple[float, float], nose: tuple[str, in
     radius = table.radius(register) / (25.4 if ctx.state.units == "inch" else 1.0)
     if radius == 0.0:
         return list(segs[:-1])
-    return nose_shape(segs, start, mode, radius, TIPS[table.tip(register)], cycle.kind, rough_type, code)
+    rules = ctx.cutter_rules
+    if rules is None:
+        raise ProgramError(f"{code}: the profile's tool nose radius compensation cannot be simulated: the "
+                           "controller's compensation rules are not modelled")
+    return nose_shape(segs, start, mode, radius, TIPS[table.tip(register)], cycle.kind, rough_type, code, rules)
 
 
 def _rough_type(profile: list[Block], kind: str) -> str:
