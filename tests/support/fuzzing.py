@@ -132,7 +132,7 @@ translation warns at the turret index that names it and verify lists it (commit 
 
 def _check_output(source: str, target: str, program: str, text: str, setup: MachineSetup, warned: bool,
                   tolerance: float = 0.0) -> str:
-    refused = problems(target, text, setup) if source != target else []
+    refused = problems(target, text, setup, source=source) if source != target else []
     assert not refused, f"the {target} controller refuses the {target} output: {'; '.join(refused)}\n{text}"
     try:
         read_program(io.StringIO(text), file="out.nc", dialect=target, setup=setup)

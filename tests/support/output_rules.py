@@ -24,6 +24,8 @@ directly; nothing here can be switched off by a test.
 
 from __future__ import annotations
 
+import copy
+import dataclasses
 import re
 from typing import Any, Callable, Iterable, TextIO
 
@@ -85,13 +87,21 @@ class _Tee:
         return getattr(self.out, name)
 
 
-def problems(target: str, text: str, setup: MachineSetup) -> list[str]:
-    """What ``target``'s controller refuses in ``text`` (nothing for a target without a checker)."""
+def problems(target: str, text: str, setup: MachineSetup, source: str | None = None) -> list[str]:
+    """What ``target``'s controller refuses in ``text`` (nothing for a target without a checker). ``source``:
+    the dialect ``text`` was translated from; the target runs on the source's machine, so a program a lathe-only
+    dialect read (GSK) is checked in the target's lathe mode whatever type the set-up names, as ``translate``
+    writes it and ``verify`` reads it."""
     checker = CHECKERS.get(target)
     if checker is None:
         return []
+    if source is not None and setup.input.machine_type != "lathe":
+        from postproc.plugins import default_registry
+        if default_registry().dialect(source).reads_lathe(setup):
+            setup = copy.copy(setup)
+            setup.input = dataclasses.replace(setup.input, machine_type="lathe")
     controller = setup.controller
-    key = (target, text, setup.cycles.orientation, controller.mist_coolant, controller.tool_table,
+    key = (target, text, setup.input.machine_type, setup.cycles.orientation, controller.mist_coolant, controller.tool_table,
            controller.spindle_sync, tuple(setup.machine_codes))
     found = _seen.get(key)
     if found is None:

@@ -102,7 +102,7 @@ def check(dialect: str, target: str, text: str) -> str:
                     translate(io.StringIO(text, newline=""), out, file="bad.nc", source=dialect,
                               target=target, setup=setup, diagnostics=Diagnostics(warn_stream=io.StringIO()))
                     if dialect != target:  # (a program copied to its own dialect is the input itself)
-                        bad = problems(target, out.getvalue(), setup)
+                        bad = problems(target, out.getvalue(), setup, source=dialect)
                         assert not bad, f"the {target} controller refuses the output: {'; '.join(bad)}\n{out.getvalue()}"
                 elif run == "toolpath":
                     for _ in toolpath_events(io.StringIO(text, newline=""), file="bad.nc", dialect=dialect,

@@ -147,7 +147,7 @@ def check(source: str, target: str, program: str, units: str | None, how: str | 
     text = out.getvalue()
     bad = NON_FINITE.search(text)
     assert bad is None, f"non-finite number {bad.group(0)!r} in the output:\n{text}"
-    refused = problems(target, text, setup)
+    refused = problems(target, text, setup, source=source)
     assert not refused, f"the {target} controller refuses the {target} output: {'; '.join(refused)}\n{text}"
     with contextlib.redirect_stderr(io.StringIO()):
         try:
