@@ -29,6 +29,8 @@ import math
 from dataclasses import dataclass
 from typing import Iterator
 
+from mypy_extensions import mypyc_attr
+
 from ..arc_end import SPIRAL
 from ..context import Context
 from ..dialect import Dialect
@@ -54,6 +56,7 @@ MOVES = frozenset(("rapid", "linear", "cw", "ccw"))
 COMPENSATION = frozenset(("CutterCompensation", "DynamicCutterCompensation"))
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 @dataclass(frozen=True)
 class ArcOption:
     """What ``--arcs`` asks: ``form`` one of ``FORMS``; ``tolerance`` the chord tolerance in mm (lines)."""
@@ -102,7 +105,7 @@ def rewrite_arcs(blocks: Iterator[Block], ctx: Context, option: ArcOption, targe
     rewriter = _Rewriter(ctx, option, target)
     for block in blocks:
         try:
-            yield from rewriter.block(block)
+            out = rewriter.block(block)
         except PostprocError as err:
             located = err if err.location is not None else err.located(ctx.at(block))
             if isinstance(err, UnsupportedError) and ctx.on_unsupported == "warn":
@@ -111,8 +114,14 @@ def rewrite_arcs(blocks: Iterator[Block], ctx: Context, option: ArcOption, targe
                 ctx.diagnostics.error(located)
             rewriter.unknown()
             yield block
+            continue
+        if len(out) == 1:
+            yield out[0]
+        else:
+            yield from out
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class _Rewriter:
     """Where the program stands (program units, as programmed: a diameter stays a diameter) and the
     settings an arc depends on."""
@@ -141,7 +150,8 @@ class _Rewriter:
             position[axis] = None
 
     # -- one block ----------------------------------------------------------------------------------
-    def block(self, block: Block) -> Iterator[Block]:
+    def block(self, block: Block) -> list[Block]:
+        """The block, or the blocks its arc became."""
         sections = block.sections
         in_profile = "InProfile" in sections
         if in_profile != self.in_profile:
@@ -174,7 +184,7 @@ class _Rewriter:
             self._compound(block, compound)
         if "CannedCycle" in sections or "LatheCycle" in sections and compound is None:
             self.unknown()  # a native cycle ends where its controller's rules say
-        yield from out
+        return out
 
     def _settings(self, sections: dict[str, Section]) -> None:
         self.state.apply(sections)
@@ -381,6 +391,7 @@ class _Rewriter:
         return out
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class _Geometry:
     """One arc's numbers: its plane points in true geometry (a diameter halved), and how to write a
     point back in the arc's own words (absolute or incremental per address, a diameter doubled)."""
