@@ -53,7 +53,6 @@ WRITE_SLACK_MM = 2 * EXACT
 """What the writer's rounding may move a point (``postproc.numbers.EXACT``, at both ends of a chord)."""
 ARCS = frozenset(("cw", "ccw"))
 MOVES = frozenset(("rapid", "linear", "cw", "ccw"))
-COMPENSATION = frozenset(("CutterCompensation", "DynamicCutterCompensation"))
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
@@ -157,7 +156,8 @@ class _Rewriter:
         if in_profile != self.in_profile:
             self.unknown()  # a profile starts where its cycle stood, and after it the cycle's end is not tracked
             self.in_profile = in_profile
-        if not changes_nothing(sections) or not COMPENSATION.isdisjoint(sections):
+        if not changes_nothing(sections) or "CutterCompensation" in sections \
+                or "DynamicCutterCompensation" in sections:  # (not frozenset.isdisjoint: ~800 instructions compiled)
             self._settings(sections)
         coords = sections.get("CoordinateSet")
         if coords is not None:
@@ -226,6 +226,11 @@ class _Rewriter:
             self.unknown(self._real(a) for a in motion.axes)
             return
         increments = self.ctx.increments
+        if not increments and not incremental:  # most moves: each word is where the axis goes
+            for axis, value in motion.axes.items():
+                # a number first: a float test is cheap compiled, one of the interpreted Expr is not
+                position[axis] = value if isinstance(value, float) or not isinstance(value, Expr) else None
+            return
         for axis, value in motion.axes.items():
             real = increments.get(axis) if increments else None
             if isinstance(value, Expr):
