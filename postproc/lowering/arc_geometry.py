@@ -14,6 +14,8 @@ import math
 from dataclasses import dataclass
 from typing import Iterator, Mapping
 
+from mypy_extensions import mypyc_attr
+
 from ..geometry import arc_sweep, centre_from_radius
 
 MAX_CHORDS = 100_000
@@ -27,6 +29,7 @@ a radius off the chord, and a written R moves it at most twice the rounding of R
 Point = tuple[float, float]
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 @dataclass(frozen=True)
 class Arc:
     """One arc in the plane: start, end and centre (plane coordinates), direction, and the other axes'

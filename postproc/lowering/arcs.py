@@ -29,6 +29,8 @@ import math
 from dataclasses import dataclass
 from typing import Iterator
 
+from mypy_extensions import mypyc_attr
+
 from ..arc_end import SPIRAL
 from ..context import Context
 from ..dialect import Dialect
@@ -51,9 +53,9 @@ WRITE_SLACK_MM = 2 * EXACT
 """What the writer's rounding may move a point (``postproc.numbers.EXACT``, at both ends of a chord)."""
 ARCS = frozenset(("cw", "ccw"))
 MOVES = frozenset(("rapid", "linear", "cw", "ccw"))
-COMPENSATION = frozenset(("CutterCompensation", "DynamicCutterCompensation"))
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 @dataclass(frozen=True)
 class ArcOption:
     """What ``--arcs`` asks: ``form`` one of ``FORMS``; ``tolerance`` the chord tolerance in mm (lines)."""
@@ -102,7 +104,7 @@ def rewrite_arcs(blocks: Iterator[Block], ctx: Context, option: ArcOption, targe
     rewriter = _Rewriter(ctx, option, target)
     for block in blocks:
         try:
-            yield from rewriter.block(block)
+            out = rewriter.block(block)
         except PostprocError as err:
             located = err if err.location is not None else err.located(ctx.at(block))
             if isinstance(err, UnsupportedError) and ctx.on_unsupported == "warn":
@@ -111,8 +113,14 @@ def rewrite_arcs(blocks: Iterator[Block], ctx: Context, option: ArcOption, targe
                 ctx.diagnostics.error(located)
             rewriter.unknown()
             yield block
+            continue
+        if len(out) == 1:
+            yield out[0]
+        else:
+            yield from out
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class _Rewriter:
     """Where the program stands (program units, as programmed: a diameter stays a diameter) and the
     settings an arc depends on."""
@@ -141,13 +149,15 @@ class _Rewriter:
             position[axis] = None
 
     # -- one block ----------------------------------------------------------------------------------
-    def block(self, block: Block) -> Iterator[Block]:
+    def block(self, block: Block) -> list[Block]:
+        """The block, or the blocks its arc became."""
         sections = block.sections
         in_profile = "InProfile" in sections
         if in_profile != self.in_profile:
             self.unknown()  # a profile starts where its cycle stood, and after it the cycle's end is not tracked
             self.in_profile = in_profile
-        if not changes_nothing(sections) or not COMPENSATION.isdisjoint(sections):
+        if not changes_nothing(sections) or "CutterCompensation" in sections \
+                or "DynamicCutterCompensation" in sections:  # (not frozenset.isdisjoint: ~800 instructions compiled)
             self._settings(sections)
         coords = sections.get("CoordinateSet")
         if coords is not None:
@@ -174,7 +184,7 @@ class _Rewriter:
             self._compound(block, compound)
         if "CannedCycle" in sections or "LatheCycle" in sections and compound is None:
             self.unknown()  # a native cycle ends where its controller's rules say
-        yield from out
+        return out
 
     def _settings(self, sections: dict[str, Section]) -> None:
         self.state.apply(sections)
@@ -216,6 +226,11 @@ class _Rewriter:
             self.unknown(self._real(a) for a in motion.axes)
             return
         increments = self.ctx.increments
+        if not increments and not incremental:  # most moves: each word is where the axis goes
+            for axis, value in motion.axes.items():
+                # a number first: a float test is cheap compiled, one of the interpreted Expr is not
+                position[axis] = value if isinstance(value, float) or not isinstance(value, Expr) else None
+            return
         for axis, value in motion.axes.items():
             real = increments.get(axis) if increments else None
             if isinstance(value, Expr):
@@ -381,6 +396,7 @@ class _Rewriter:
         return out
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class _Geometry:
     """One arc's numbers: its plane points in true geometry (a diameter halved), and how to write a
     point back in the arc's own words (absolute or incremental per address, a diameter doubled)."""

@@ -23,7 +23,7 @@ planner's distance per revolution along the path]:
 
 from __future__ import annotations
 
-from typing import Any, ClassVar, Iterator
+from typing import TYPE_CHECKING, Any, ClassVar, Iterator
 
 from postproc.context import Context
 from postproc.dialect import Dialect
@@ -163,10 +163,22 @@ def surface_speed(writer: Any, block: Block) -> str:
     return "S" + str(writer.expression(rpm, block) if isinstance(rpm, Expr) else writer.speed(rpm))
 
 
-class NgcLatheWriting(WordWriter):
+if TYPE_CHECKING:
+    _OnWordWriter = WordWriter
+else:
+    _OnWordWriter = object
+
+
+class NgcLatheWriting(_OnWordWriter):
     """The lathe words on a controller's word writer: ``class XLatheWriter(NgcLatheWriting, XWriter)``. The
     mode line before the first block that acts when the program comes from another dialect, G96 with its clamp,
-    G33 with K."""
+    G33 with K.
+
+    A mixin: typed as a ``WordWriter`` but, run, a subclass of ``object`` only, so the controller's writer is
+    the one compiled line of bases the lathe writer has. Over two compiled lines (``WordWriter`` here and
+    ``GrblFamilyWriter`` under grblHAL's writer) an object of the lathe writer was laid out as the first line's
+    class, and the compiled ``GrblFamilyWriter``'s methods crashed on it (a segmentation fault in
+    ``super().write_block``, tests/test_grblhal_lathe.py)."""
 
     IGNORED: ClassVar[frozenset[str]] = frozenset(("ThreadLead",))
     """A thread move's lead is written as its K (``motion_words``)."""
