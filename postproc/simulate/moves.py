@@ -80,6 +80,10 @@ class Moves:
         self.diameter = ctx.diameter
         """X words are diameters: the position is kept as a radius (true geometry, arcs with radius I) and
         written as a diameter."""
+        self.factors: dict[str, float] = {}
+        """Per machine axis, mm of the position per unit of its word (``scale``, a diameter's half): ``target``
+        reads one number an axis word, and a letter not here is no axis of the machine."""
+        self.set_scale(1.0)
         if self.lathe:
             self.modal.plane = "ZX"
             self.modal.feed_mode = ctx.state.feed_mode  # the reading dialect's mode at the start
@@ -125,6 +129,9 @@ class Moves:
         """The lathe tool offset in force (``lathe_offset``): mm added to the programmed X (a radius) and Z."""
         self.cutter = None if cutter_rules is None else cutter_for(cutter_rules, self._release)
         """Cutter radius compensation, when the dialect's rules are known (else it stays a setting)."""
+        self.cutter_started = False
+        """A G41/G42 has started ``cutter`` (before that it is idle: ``_cutter_idle`` reads none of its state, three
+        attributes of an interpreted object a move, ~640 instructions compiled)."""
         self.compensating = False
         """Moves go through ``postproc.compensation`` (an offset is in force, a move waits in the cutter
         queue, or the controlled point has not yet met the programmed one again)."""
@@ -164,6 +171,7 @@ class Moves:
         incremental = self.incremental and not absolute
         shift = self.shift if not machine and not incremental else None
         increments = self.increments  # empty on a mill: one test of an empty dict per word
+        factors = self.factors
         for axis, value in axes.items():
             if not isinstance(value, float) and isinstance(value, Expr):  # a float first: one type test a word
                 raise ProgramError(UNEVALUATED, self._at(block, axis))
@@ -175,15 +183,22 @@ class Moves:
                 v = value * self.scale * (0.5 if self.diameter and real == "X" else 1.0)
                 out[real] = out[real] + v
                 continue
-            if axis not in pos:
+            factor = factors.get(axis)
+            if factor is None:
                 raise ProgramError(f"axis {axis} is not on this machine (axes {''.join(self.axes)})",
                                    self._at(block, axis))
-            v = value * self.scale if axis in LINEAR_AXES else value
-            if self.diameter and axis == "X":
-                v *= 0.5
+            v = value * factor
             out[axis] = pos[axis] + v if incremental else v + shift.get(axis, 0.0) if shift else v
         return out
 
+
+    def set_scale(self, scale: float) -> None:
+        """mm per program unit (the units changed), and with it each axis word's factor (``factors``: a
+        diameter's half times the scale is the scale's half, exactly)."""
+        self.scale = scale
+        diameter = self.diameter
+        self.factors = {a: (scale if a in LINEAR_AXES else 1.0) * (0.5 if diameter and a == "X" else 1.0)
+                        for a in self.axes}
 
     def data_setting(self, block: Block, setting: DataSetting) -> None:
         """G10: a work offset is kept (mm, per axis) and shifts later absolute points in its system; a tool
@@ -248,6 +263,7 @@ class Moves:
                 cutter.cancel()  # recorded as a setting (``record_settings``), as without rules
             elif mode in ("left", "right"):
                 reads = self._cutter_register(block, cc.register)  # type: ignore[attr-defined]
+                self.cutter_started = True
                 try:
                     cutter.start(mode, self._cutter_radius(block, reads), self.modal.plane,
                                  self._nose_tip(block, reads))
@@ -263,6 +279,7 @@ class Moves:
                                        f"{self.ctx.dialect}", self._at(block))
             lathe = self.modal.plane == "ZX" and self.lathe
             tip = TIPS[mirrored(dynamic.orientation or 0)] if lathe else (0, 0)  # type: ignore[attr-defined]
+            self.cutter_started = True
             try:  # D/2, negative: the other side
                 cutter.start(dynamic.mode, dynamic.radius(self.scale), self.modal.plane,  # type: ignore[attr-defined]
                              (float(tip[0]), float(tip[1])))
@@ -535,7 +552,10 @@ class Moves:
             self.line_move("feed", target, block.line, emit)  # zero radius, zero length: dropped
             return
         if self.compensating:
-            self._compensated(m.mode or "cw", target, block.line, c, plane)
+            if self._cutter_idle() and not self.diameter:
+                self._offset_arc(m.mode or "cw", target, block.line, c, plane)
+            else:
+                self._compensated(m.mode or "cw", target, block.line, c, plane)
             return
         rounded = {a: num(v) for a, v in target.items()}
         ev: Event = {"line": block.line, "move": m.mode}
@@ -611,40 +631,89 @@ class Moves:
         """A straight move under a tool length alone (a whole program after its G43): ``_write``'s result,
         the programmed point rounded only on the axes that move (as ``line_move``). One pass over the axes
         builds both points and the event: the values stay the objects ``num`` made (an int stays an int in
-        the JSON line), compared per axis rather than as dictionaries."""
-        pos, old, before = self.pos, self.rounded, self.crounded
+        the JSON line), compared per axis rather than as dictionaries. The rounded programmed point is
+        updated in place (no other holder: every other step that sets it makes a dictionary of its own)."""
+        pos, rounded, before = self.pos, self.rounded, self.crounded
         offset = self.length.offset
         shifts = self.lathe_shift
-        rounded: dict[str, Any] = {}
         crounded: dict[str, Any] = {}
         ev: Event = {"line": line, "move": kind}
         ctrl: Event = {}
         moved = apart = False
-        for axis, key in self.keys:
-            value = target[axis]
-            r: Any = old[axis] if value == pos[axis] else num(value)
-            c: Any = r
-            if axis == LENGTH_AXIS:
-                c = num(value + offset)
-            if shifts:
-                shift = shifts.get(axis)
-                if shift is not None:
-                    c = num(value + shift + (offset if axis == LENGTH_AXIS else 0.0))
-            rounded[axis] = r
-            crounded[axis] = c
-            ev[key] = r
-            ctrl[key] = c
-            if not moved and c != before[axis]:
-                moved = True
-            if not apart and c != r:
-                apart = True
+        try:
+            for axis, key in self.keys:
+                value = target[axis]
+                r: Any
+                if value == pos[axis]:
+                    r = rounded[axis]
+                else:
+                    r = num(value)
+                    rounded[axis] = r
+                c: Any = r
+                if axis == LENGTH_AXIS:
+                    c = num(value + offset)
+                if shifts:
+                    shift = shifts.get(axis)
+                    if shift is not None:
+                        c = num(value + shift + (offset if axis == LENGTH_AXIS else 0.0))
+                crounded[axis] = c
+                ev[key] = r
+                ctrl[key] = c
+                if not moved and c != before[axis]:
+                    moved = True
+                if not apart and c != r:
+                    apart = True
+            if moved and kind != "rapid":
+                self._feed_into(ev)
+        except PostprocError:
+            self.rounded = {a: num(v) for a, v in pos.items()}  # the block fails: its point as it was
+            raise
         if not moved:
-            self.pos, self.rounded = target, rounded
+            self.pos = target
             self._settle()
             return
-        if kind != "rapid":
-            self._feed_into(ev)
         if apart:
+            ev["controlled"] = ctrl
+        self.pos, self.crounded = target, crounded
+        self.out(ev)
+        self._settle()
+
+    def _offset_arc(self, kind: str, target: dict[str, float], line: int, c: tuple[float, float], plane: str) -> None:
+        """An arc under a tool length (and a lathe's tool offset) alone: ``_compensated``'s and ``_write``'s event
+        for it, without the cutter's segment (an interpreted object: ~25k instructions an arc)."""
+        a1, a2, normal = PLANE_AXES[plane]
+        pos = self.pos
+        offset = self.length.offset
+        shifts = self.lathe_shift
+        centre = {a1: c[0], a2: c[1], normal: pos.get(normal, 0.0)}
+        rounded: dict[str, Any] = {}
+        crounded: dict[str, Any] = {}
+        ev: Event = {"line": line, "move": kind}
+        ctrl: Event = {}
+        for axis, key in self.keys:
+            value = target[axis]
+            r = num(value)
+            controlled = value
+            if offset and axis == LENGTH_AXIS:
+                controlled += offset
+            shift = shifts.get(axis) if shifts else None
+            if shift is not None:
+                controlled += shift
+            rounded[axis] = ev[key] = r
+            crounded[axis] = ctrl[key] = num(controlled)
+        for axis in ("X", "Y", "Z"):
+            if axis in pos:
+                at = centre[axis]
+                ev[CENTRE_KEYS[axis]] = num(at)
+                if offset and axis == LENGTH_AXIS:
+                    at += offset
+                shift = shifts.get(axis) if shifts else None
+                if shift is not None:
+                    at += shift
+                ctrl[CENTRE_KEYS[axis]] = num(at)
+        ev["plane"] = plane
+        self._feed_into(ev)
+        if any(ev[key] != value for key, value in ctrl.items()):
             ev["controlled"] = ctrl
         self.pos, self.rounded, self.crounded = target, rounded, crounded
         self.out(ev)
@@ -653,7 +722,8 @@ class Moves:
     def _cutter_idle(self) -> bool:
         """No cutter compensation is on, queued or pending its exit move."""
         cutter = self.cutter
-        return cutter is None or (cutter.side is None and not cutter.queue and not cutter.arc_banned)
+        return cutter is None or not self.cutter_started or (
+            cutter.side is None and not cutter.queue and not cutter.arc_banned)
 
     def _event(self, ev: Event) -> None:
         """A non-motion event while compensating: behind a queued move, if any."""

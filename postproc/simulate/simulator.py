@@ -115,7 +115,7 @@ class Simulator(Moves):
             if s is not None:
                 emit({"line": line, "event": "dwell", "seconds": num(s.seconds)})
         compound = sections.get("CompoundMotion")
-        motion = sections.get("Motion")
+        motion: Motion | None = sections.get("Motion")  # typed: compiled, its fields are read directly
         coords = sections.get("CoordinateSet")
         if coords is not None:
             for axis, value in coords.axes.items():
@@ -240,7 +240,9 @@ class Simulator(Moves):
         converted with the units and feed mode the block leaves in force."""
         modal = self.modal
         modal.apply(sections)
-        self.scale = MM_PER_INCH if modal.units == "inch" else 1.0
+        scale = MM_PER_INCH if modal.units == "inch" else 1.0
+        if scale != self.scale:
+            self.set_scale(scale)
         self.incremental = modal.distance == "incremental"
         if self.cutter is not None:
             self.cutter.sweep_slack = 0.001 if modal.units == "inch" else 0.0254
