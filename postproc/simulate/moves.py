@@ -50,7 +50,11 @@ class Moves:
         self.axes = tuple(setup.machine.axes)
         self.keys = tuple((a, a.lower()) for a in self.axes)
         self.pos = start_position(setup)
-        self.rounded = {a: num(v) for a, v in self.pos.items()}
+        self.index = {a: i for i, a in enumerate(self.axes)}
+        """Machine axis -> its place in ``axes`` (and in the rounded points)."""
+        self.rounded: list[float | int] = [num(self.pos[a]) for a in self.axes]
+        """The programmed point as the events write it (``num``), in the order of ``axes``: a list, where a
+        dictionary cost each move under a tool length ~1.5k instructions in look-ups and writes (compiled)."""
         self.modal = ModalState()
         """The program's modal state (units, plane, distance and feed mode, tool...), in program terms."""
         self.home = {axis: t.home * setup.machine.mm() for axis, t in setup.travel.items()
@@ -135,8 +139,8 @@ class Moves:
         self.compensating = False
         """Moves go through ``postproc.compensation`` (an offset is in force, a move waits in the cutter
         queue, or the controlled point has not yet met the programmed one again)."""
-        self.crounded = dict(self.rounded)
-        """The controlled point of the last move written, rounded (while ``compensating``)."""
+        self.crounded = list(self.rounded)
+        """The controlled point of the last move written, rounded (while ``compensating``), as ``rounded``."""
         self.out: Callable[[Event], None] = _nowhere
         """Where released events go (the ``emit`` of the block being run)."""
         self.queued: Callable[[Event], None] = self._event
@@ -317,8 +321,8 @@ class Moves:
         self._begin()  # the controlled point before the change is the one kept
         self.pos = dict(self.pos)  # the old dict may be a queued segment's end
         self.pos[LENGTH_AXIS] -= change
-        self.rounded = dict(self.rounded)
-        self.rounded[LENGTH_AXIS] = num(self.pos[LENGTH_AXIS])
+        self.rounded = list(self.rounded)
+        self.rounded[self.index[LENGTH_AXIS]] = num(self.pos[LENGTH_AXIS])
         self._settle()
 
     def lathe_offset(self, block: Block, register: object) -> None:
@@ -356,12 +360,12 @@ class Moves:
             return
         if self.length_at_axis:
             self._begin()
-            self.pos, self.rounded = dict(self.pos), dict(self.rounded)
+            self.pos, self.rounded = dict(self.pos), list(self.rounded)
             for axis in sorted(set(new) | set(old)):
                 change = new.get(axis, 0.0) - old.get(axis, 0.0)
                 if change and axis in self.pos:
                     self.pos[axis] -= change
-                    self.rounded[axis] = num(self.pos[axis])
+                    self.rounded[self.index[axis]] = num(self.pos[axis])
         self.lathe_shift = new
         if new:
             self._begin()
@@ -413,7 +417,7 @@ class Moves:
         """Moves from here on go through the compensation."""
         if not self.compensating:
             self.compensating = True
-            self.crounded = dict(self.rounded)
+            self.crounded = list(self.rounded)
 
     def _shift(self) -> None:
         """The offset of the active work system plus the external one (P0), applied to absolute points."""
@@ -450,9 +454,9 @@ class Moves:
                                    self._at(block))  # [V] LinuxCNC: "Cannot change coordinate systems with cutter radius compensation on"
             delta = before - after
             self.pos[axis] += delta
-            self.rounded[axis] = num(self.pos[axis])
-            if axis in self.crounded:
-                self.crounded[axis] = num(self.crounded[axis] + delta)
+            i = self.index[axis]
+            self.rounded[i] = num(self.pos[axis])
+            self.crounded[i] = num(self.crounded[i] + delta)
         self.beyond = new
 
     def _coordinate(self, block: Block, axis: str, value: float) -> None:
@@ -463,7 +467,7 @@ class Moves:
         if self.travel is not None:
             self.travel.coordinate_set(axis, v)
         self.pos[axis] = v
-        self.rounded[axis] = num(v)
+        self.rounded[self.index[axis]] = num(v)
 
     def line_move(self, kind: str, target: dict[str, float], line: int, emit: Callable[[Event], None]) -> None:
         if self.compensating:
@@ -473,16 +477,17 @@ class Moves:
                 self._compensated(kind, target, line, None, None)
             return
         pos = self.pos
-        rounded = self.rounded.copy()
-        for axis, value in target.items():
+        rounded = list(self.rounded)
+        for i, axis in enumerate(self.axes):
+            value = target[axis]
             if value != pos[axis]:
-                rounded[axis] = num(value)
+                rounded[i] = num(value)
         if rounded == self.rounded:
             self.pos = target
             if self.mark_held:  # ``verify --transform`` may move it to somewhere else (``mark_held``)
                 still: Event = {"line": line, "move": kind, "still": True}
-                for axis, key in self.keys:
-                    still[key] = rounded[axis]
+                for i, (axis, key) in enumerate(self.keys):
+                    still[key] = rounded[i]
                 if self.diameter and "x" in still:
                     still["x"] = num(target["X"] * 2.0)
                 if kind != "rapid":
@@ -490,8 +495,8 @@ class Moves:
                 emit(still)
             return
         ev: Event = {"line": line, "move": kind}
-        for axis, key in self.keys:
-            ev[key] = rounded[axis]
+        for i, (axis, key) in enumerate(self.keys):
+            ev[key] = rounded[i]
         if self.diameter and "x" in ev:
             ev["x"] = num(target["X"] * 2.0)
         if kind != "rapid":
@@ -557,10 +562,10 @@ class Moves:
             else:
                 self._compensated(m.mode or "cw", target, block.line, c, plane)
             return
-        rounded = {a: num(v) for a, v in target.items()}
+        rounded = [num(target[a]) for a in self.axes]
         ev: Event = {"line": block.line, "move": m.mode}
-        for axis, key in self.keys:
-            ev[key] = rounded[axis]
+        for i, (axis, key) in enumerate(self.keys):
+            ev[key] = rounded[i]
         centre = {a1: c[0], a2: c[1], normal: pos.get(normal, 0.0)}
         for axis in ("X", "Y", "Z"):
             if axis in pos:
@@ -607,7 +612,7 @@ class Moves:
         else:
             self._write(seg)
         self.pos = target
-        self.rounded = {a: num(v) for a, v in target.items()}
+        self.rounded = [num(target[a]) for a in self.axes]
         self._settle()
 
     def _programmed_rate(self, fields: Event, kind: str, target: dict[str, float],
@@ -632,23 +637,23 @@ class Moves:
         the programmed point rounded only on the axes that move (as ``line_move``). One pass over the axes
         builds both points and the event: the values stay the objects ``num`` made (an int stays an int in
         the JSON line), compared per axis rather than as dictionaries. The rounded programmed point is
-        updated in place (no other holder: every other step that sets it makes a dictionary of its own)."""
+        updated in place (no other holder: every other step that sets it makes a list of its own)."""
         pos, rounded, before = self.pos, self.rounded, self.crounded
         offset = self.length.offset
         shifts = self.lathe_shift
-        crounded: dict[str, Any] = {}
+        crounded: list[float | int] = []
         ev: Event = {"line": line, "move": kind}
         ctrl: Event = {}
         moved = apart = False
         try:
-            for axis, key in self.keys:
+            for i, (axis, key) in enumerate(self.keys):
                 value = target[axis]
                 r: Any
                 if value == pos[axis]:
-                    r = rounded[axis]
+                    r = rounded[i]
                 else:
                     r = num(value)
-                    rounded[axis] = r
+                    rounded[i] = r
                 c: Any = r
                 if axis == LENGTH_AXIS:
                     c = num(value + offset)
@@ -656,17 +661,17 @@ class Moves:
                     shift = shifts.get(axis)
                     if shift is not None:
                         c = num(value + shift + (offset if axis == LENGTH_AXIS else 0.0))
-                crounded[axis] = c
+                crounded.append(c)
                 ev[key] = r
                 ctrl[key] = c
-                if not moved and c != before[axis]:
+                if not moved and c != before[i]:
                     moved = True
                 if not apart and c != r:
                     apart = True
-            if moved and kind != "rapid":
-                self._feed_into(ev)
+            if kind != "rapid":
+                self._feed_into(ev)  # a move it drops fixes the header's feed mode too, as ``_compensated``'s
         except PostprocError:
-            self.rounded = {a: num(v) for a, v in pos.items()}  # the block fails: its point as it was
+            self.rounded = [num(pos[a]) for a in self.axes]  # the block fails: its point as it was
             raise
         if not moved:
             self.pos = target
@@ -686,8 +691,8 @@ class Moves:
         offset = self.length.offset
         shifts = self.lathe_shift
         centre = {a1: c[0], a2: c[1], normal: pos.get(normal, 0.0)}
-        rounded: dict[str, Any] = {}
-        crounded: dict[str, Any] = {}
+        rounded: list[float | int] = []
+        crounded: list[float | int] = []
         ev: Event = {"line": line, "move": kind}
         ctrl: Event = {}
         for axis, key in self.keys:
@@ -699,8 +704,11 @@ class Moves:
             shift = shifts.get(axis) if shifts else None
             if shift is not None:
                 controlled += shift
-            rounded[axis] = ev[key] = r
-            crounded[axis] = ctrl[key] = num(controlled)
+            rounded.append(r)
+            ev[key] = r
+            cr = num(controlled)
+            crounded.append(cr)
+            ctrl[key] = cr
         for axis in ("X", "Y", "Z"):
             if axis in pos:
                 at = centre[axis]
@@ -751,7 +759,7 @@ class Moves:
         for axis, shift in self.lathe_shift.items():
             if axis in control:
                 control[axis] += shift
-        crounded = {a: num(v) for a, v in control.items()}
+        crounded = [num(control[a]) for a in self.axes]
         kind = seg.kind
         if kind in ("rapid", "feed") and crounded == self.crounded:
             return
@@ -759,9 +767,9 @@ class Moves:
         ev: Event = {"line": seg.fields["line"], "move": kind}
         ctrl: Event = {}
         diameter = self.diameter
-        for axis, key in self.keys:
+        for i, (axis, key) in enumerate(self.keys):
             ev[key] = num(end[axis] * 2.0) if diameter and axis == "X" else num(end[axis])
-            ctrl[key] = num(control[axis] * 2.0) if diameter and axis == "X" else crounded[axis]
+            ctrl[key] = num(control[axis] * 2.0) if diameter and axis == "X" else crounded[i]
         if seg.centre is not None:
             plane = self.modal.plane
             a1, a2, normal = PLANE_AXES[plane]
