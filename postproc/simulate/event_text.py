@@ -52,6 +52,17 @@ _LATER_KEYS: Final[dict[str, str]] = {}
 _WORDS: Final[dict[str, str]] = {}
 """Short string values (``"feed"``, ``"XY"``, ``"cw"``) -> their text; at most ``_MOST_WORDS`` kept."""
 _MOST_WORDS: Final = 512
+_PLACES_KEPT: Final = 32
+"""Items of an object whose key texts ``_SEEN_KEYS`` keeps, at each of two depths (an event, its controlled point)."""
+_SEEN_KEYS: Final[list[object]] = [None] * (2 * _PLACES_KEPT)
+"""The key met last at each place (an item's index, plus ``_PLACES_KEPT`` inside a nested object), and in
+``_SEEN_TEXTS`` its text there: the events of a toolpath come in runs of one shape (a CAM program's moves), so
+the key at a place is most often the very string met there before, and one identity test replaces a
+dictionary look-up (~130 instructions compiled, ten an event)."""
+_SEEN_TEXTS: Final[list[str]] = [""] * (2 * _PLACES_KEPT)
+_SEEN_VALUES: Final[list[object]] = [None] * (2 * _PLACES_KEPT)
+"""The int or str value met last at each place, and in ``_SEEN_VALUE_TEXTS`` its text (a move's kind, its feed)."""
+_SEEN_VALUE_TEXTS: Final[list[str]] = [""] * (2 * _PLACES_KEPT)
 assert _PLACES == PLACES and _UNITS == 10 ** PLACES == _SCALE and _TABLED ** 2 == _UNITS
 # Final: compiled, a constant is a C constant, not a look-up in the module's dictionary (17 a float)
 
@@ -122,41 +133,55 @@ def _other_text(value: object) -> str | None:
     return None
 
 
-def _items_parts(items: dict[Any, Any], parts: list[str]) -> bool:
+def _items_parts(items: dict[Any, Any], parts: list[str], place: int) -> bool:
     """Append the object ``items`` to ``parts``, its opening brace with its first key and its items, not its
-    closing brace (``write_lines`` appends it with the line end); False where json must write it. A float
-    of a controlled point that is the programmed point's is spelt again: remembering where each float's
+    closing brace (``write_lines`` appends it with the line end); False where json must write it. ``place``:
+    where the texts of its first item are kept (``_SEEN_KEYS``: 0, or ``_PLACES_KEPT`` for a nested object). A
+    float of a controlled point that is the programmed point's is spelt again: remembering where each float's
     pieces lay cost more than spelling the two again (callgrind, a move under a tool length)."""
-    later = False
+    end = place + _PLACES_KEPT if place < 2 * _PLACES_KEPT else 0  # an object nested deeper keeps none
+    first = place
     for key, value in items.items():
         if not isinstance(key, str):
             return False
-        if later:
-            text = _LATER_KEYS.get(key)
-            parts.append(text if text is not None else _key_text(key, True))
+        kept = place < end
+        if kept and _SEEN_KEYS[place] is key:
+            parts.append(_SEEN_TEXTS[place])
         else:
-            text = _KEYS.get(key)
-            parts.append(text if text is not None else _key_text(key, False))
-            later = True
+            known = _LATER_KEYS.get(key) if place != first else _KEYS.get(key)
+            text = known if known is not None else _key_text(key, place != first)
+            parts.append(text)
+            if kept:
+                _SEEN_KEYS[place] = key
+                _SEEN_TEXTS[place] = text
         if isinstance(value, float):
             _float_parts(value, parts)
-        elif type(value) is int:
-            parts.append(str(value))  # int's own spelling, without a method look-up (a line number each event)
-        elif isinstance(value, str):
-            text = _WORDS.get(value)
-            parts.append(text if text is not None else _word_text(value))
+        elif type(value) is int or isinstance(value, str):
+            if kept and _SEEN_VALUES[place] is value:  # a move's kind, its feed: the object of the event before
+                parts.append(_SEEN_VALUE_TEXTS[place])
+            else:
+                if isinstance(value, str):
+                    word = _WORDS.get(value)
+                    text = word if word is not None else _word_text(value)
+                else:
+                    text = str(value)  # int's own spelling, without a method look-up (a line number each event)
+                parts.append(text)
+                if kept:
+                    _SEEN_VALUES[place] = value
+                    _SEEN_VALUE_TEXTS[place] = text
         elif isinstance(value, dict):
             if not value:
                 parts.append("{}")
             else:
-                if not _items_parts(value, parts):
+                if not _items_parts(value, parts, _PLACES_KEPT if first == 0 else 2 * _PLACES_KEPT):
                     return False
                 parts.append("}")
         else:
-            text = _other_text(value)
-            if text is None:
+            other = _other_text(value)
+            if other is None:
                 return False
-            parts.append(text)
+            parts.append(other)
+        place += 1
     return True
 
 
@@ -165,7 +190,7 @@ def event_text(event: dict[Any, Any], fallback: Callable[[Any], str]) -> str:
     if not event:
         return "{}"
     parts: list[str] = []
-    if not _items_parts(event, parts):
+    if not _items_parts(event, parts, 0):
         return fallback(event)
     parts.append("}")
     return "".join(parts)
@@ -198,7 +223,7 @@ def write_lines(events: Iterable[dict[Any, Any]], write: Callable[[str], object]
             try:
                 if not event:
                     parts.append("{}\n")
-                elif _items_parts(event, parts):
+                elif _items_parts(event, parts, 0):
                     parts.append("}\n")
                 else:
                     del parts[mark:]
