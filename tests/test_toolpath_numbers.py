@@ -138,7 +138,7 @@ def test_event_text_writes_moves_as_json_does(event: dict[object, object]) -> No
 def test_event_text_writes_a_controlled_point_sharing_the_programmed_floats_as_json_does(
         event: dict[str, object], shared: list[str]) -> None:
     """The controlled point holds the very float objects of the programmed one on some axes (as the simulator
-    makes it: ``Moves._offset_line``), which ``event_text`` writes once and repeats."""
+    makes it: ``Moves._offset_line``), which ``event_text`` spells again for it."""
     controlled = {k: event[k] for k in "xyz"}
     for k in "xyz":
         if k not in shared and isinstance(event[k], float):
@@ -186,3 +186,22 @@ def test_write_lines_writes_the_lines_before_an_error() -> None:
         write_lines(iter(events + [{"line": 271}]), written.append, ENCODER)
     assert err.value.event["line"] == 270
     assert "".join(written) == "".join(_json(ev) + "\n" for ev in events[:270])
+
+
+KEYS = st.sampled_from(["line", "move", "x", "y", "f", "controlled", "event", "on"])
+RUN_VALUES = st.one_of(st.sampled_from([1500, 7, "feed", "rapid", True, None, 0.5]), st.integers(-10**9, 10**9),
+                       st.fixed_dictionaries({"x": st.sampled_from([1500, "feed", 2.25])}))
+
+
+@settings(max_examples=300, deadline=None)
+@given(shapes=st.lists(st.lists(st.tuples(KEYS, RUN_VALUES), max_size=6), min_size=1, max_size=4),
+       order=st.lists(st.integers(0, 3), min_size=1, max_size=30))
+def test_write_lines_writes_runs_of_events_of_few_shapes_as_json_does(
+        shapes: list[list[tuple[str, object]]], order: list[int]) -> None:
+    """A toolpath's events come in runs of one shape, whose key texts (and int and str values) ``event_text``
+    keeps by place: the same key and value objects at a place, or others there, an int where a str was, a
+    key moving to another place, nested or not, are written as json writes them."""
+    stream = [dict(shapes[i % len(shapes)]) for i in order]
+    written: list[str] = []
+    write_lines(iter(stream), written.append, ENCODER)
+    assert "".join(written) == "".join(_json(ev) + "\n" for ev in stream)

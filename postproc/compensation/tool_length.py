@@ -12,6 +12,8 @@ the programmed point back from the machine position), so there the programmed po
 
 from __future__ import annotations
 
+from mypy_extensions import mypyc_attr
+
 from ..errors import ProgramError
 from .tool_table import ToolTable
 
@@ -20,6 +22,7 @@ AXIS = "Z"
 SIGNS = {"positive": 1.0, "negative": -1.0, "cancel": 0.0, "dynamic": 1.0}
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class ToolLength:
     """The tool length offset in force, in mm along ``AXIS``."""
 

@@ -12,9 +12,10 @@ same float), which integer arithmetic writes; a float that is not one (``units /
 where ``repr`` writes an exponent goes to ``float.__repr__``. An event holding anything but str keys and
 str, int, bool, None, float or such a dict values is handed whole to ``fallback`` (json's own encoder).
 
-The line is one list of pieces joined once: a key with the separator before it, a number's whole part,
-its first three decimals and the rest from tables (no string is built per number, none per item;
-compiled, building a string costs ~500 instructions, an append ~50).
+The line is one list of pieces joined once: a key with the separator (or the opening brace) before it, a
+number's whole part, its first three decimals and the rest from tables, the closing brace with the line end
+(no string is built per number, none per item; compiled, building a string costs ~500 instructions, an
+append ~50, and each piece ~90 more in the join).
 """
 
 from __future__ import annotations
@@ -44,12 +45,24 @@ _WHOLE: Final = [str(n) for n in range(_TABLED)]
 _NEGATIVE: Final = [f"-{n}" for n in range(_TABLED)]
 """A number's whole part below 1000 (a CAM coordinate's), with its sign."""
 _KEYS: Final[dict[str, str]] = {}
-"""Key -> its text as an object's first item (``'"line": '``): a toolpath has a dozen keys."""
+"""Key -> its text as an object's first item, with the object's opening brace (``'{"line": '``): a toolpath
+has a dozen keys."""
 _LATER_KEYS: Final[dict[str, str]] = {}
 """Key -> its text after another item (``', "x": '``)."""
 _WORDS: Final[dict[str, str]] = {}
 """Short string values (``"feed"``, ``"XY"``, ``"cw"``) -> their text; at most ``_MOST_WORDS`` kept."""
 _MOST_WORDS: Final = 512
+_PLACES_KEPT: Final = 32
+"""Items of an object whose key texts ``_SEEN_KEYS`` keeps, at each of two depths (an event, its controlled point)."""
+_SEEN_KEYS: Final[list[object]] = [None] * (2 * _PLACES_KEPT)
+"""The key met last at each place (an item's index, plus ``_PLACES_KEPT`` inside a nested object), and in
+``_SEEN_TEXTS`` its text there: the events of a toolpath come in runs of one shape (a CAM program's moves), so
+the key at a place is most often the very string met there before, and one identity test replaces a
+dictionary look-up (~130 instructions compiled, ten an event)."""
+_SEEN_TEXTS: Final[list[str]] = [""] * (2 * _PLACES_KEPT)
+_SEEN_VALUES: Final[list[object]] = [None] * (2 * _PLACES_KEPT)
+"""The int or str value met last at each place, and in ``_SEEN_VALUE_TEXTS`` its text (a move's kind, its feed)."""
+_SEEN_VALUE_TEXTS: Final[list[str]] = [""] * (2 * _PLACES_KEPT)
 assert _PLACES == PLACES and _UNITS == 10 ** PLACES == _SCALE and _TABLED ** 2 == _UNITS
 # Final: compiled, a constant is a C constant, not a look-up in the module's dictionary (17 a float)
 
@@ -93,7 +106,7 @@ def _key_text(key: str, later: bool) -> str:
     known = _LATER_KEYS if later else _KEYS
     text = known.get(key)
     if text is None:
-        text = (", " if later else "") + encode_basestring_ascii(key) + ": "
+        text = (", " if later else "{") + encode_basestring_ascii(key) + ": "
         if len(known) < _MOST_WORDS:
             known[key] = text
     return text
@@ -120,65 +133,55 @@ def _other_text(value: object) -> str | None:
     return None
 
 
-def _items_parts(items: dict[Any, Any], parts: list[str], spelt: list[object] | None,
-                 spans: list[int] | None) -> bool:
-    """Append the items of ``items`` (without the braces) to ``parts``; False where json must write it.
-    ``spelt``/``spans``: the floats of the enclosing event and where their pieces lie in ``parts``; a
-    value that is the same object is not spelt again (a controlled point shares the programmed point's
-    floats on the axes its offset does not move: two of a move's six floats under a tool length)."""
-    floats: list[object] | None = None
-    ends: list[int] = []
-    later = False
+def _items_parts(items: dict[Any, Any], parts: list[str], place: int) -> bool:
+    """Append the object ``items`` to ``parts``, its opening brace with its first key and its items, not its
+    closing brace (``write_lines`` appends it with the line end); False where json must write it. ``place``:
+    where the texts of its first item are kept (``_SEEN_KEYS``: 0, or ``_PLACES_KEPT`` for a nested object). A
+    float of a controlled point that is the programmed point's is spelt again: remembering where each float's
+    pieces lay cost more than spelling the two again (callgrind, a move under a tool length)."""
+    end = place + _PLACES_KEPT if place < 2 * _PLACES_KEPT else 0  # an object nested deeper keeps none
+    first = place
     for key, value in items.items():
-        same: object = value  # the object itself: narrowed to a float, compiled ``value`` is a new box
         if not isinstance(key, str):
             return False
-        if later:
-            text = _LATER_KEYS.get(key)
-            parts.append(text if text is not None else _key_text(key, True))
+        kept = place < end
+        if kept and _SEEN_KEYS[place] is key:
+            parts.append(_SEEN_TEXTS[place])
         else:
-            text = _KEYS.get(key)
-            parts.append(text if text is not None else _key_text(key, False))
-            later = True
-        if spelt and spans is not None:
-            i = 0
-            for prior in spelt:
-                if prior is same:
-                    break
-                i += 1
-            if i < len(spelt):
-                start, end = spans[2 * i], spans[2 * i + 1]
-                while start < end:
-                    parts.append(parts[start])
-                    start += 1
-                continue
+            known = _LATER_KEYS.get(key) if place != first else _KEYS.get(key)
+            text = known if known is not None else _key_text(key, place != first)
+            parts.append(text)
+            if kept:
+                _SEEN_KEYS[place] = key
+                _SEEN_TEXTS[place] = text
         if isinstance(value, float):
-            start = len(parts)
             _float_parts(value, parts)
-            if spelt is None:
-                if floats is None:
-                    floats = []
-                floats.append(same)
-                ends.append(start)
-                ends.append(len(parts))
-        elif type(value) is int:
-            parts.append(str(value))  # int's own spelling, without a method look-up (a line number each event)
-        elif isinstance(value, str):
-            text = _WORDS.get(value)
-            parts.append(text if text is not None else _word_text(value))
+        elif type(value) is int or isinstance(value, str):
+            if kept and _SEEN_VALUES[place] is value:  # a move's kind, its feed: the object of the event before
+                parts.append(_SEEN_VALUE_TEXTS[place])
+            else:
+                if isinstance(value, str):
+                    word = _WORDS.get(value)
+                    text = word if word is not None else _word_text(value)
+                else:
+                    text = str(value)  # int's own spelling, without a method look-up (a line number each event)
+                parts.append(text)
+                if kept:
+                    _SEEN_VALUES[place] = value
+                    _SEEN_VALUE_TEXTS[place] = text
         elif isinstance(value, dict):
             if not value:
                 parts.append("{}")
             else:
-                parts.append("{")
-                if not _items_parts(value, parts, floats, ends):
+                if not _items_parts(value, parts, _PLACES_KEPT if first == 0 else 2 * _PLACES_KEPT):
                     return False
                 parts.append("}")
         else:
-            text = _other_text(value)
-            if text is None:
+            other = _other_text(value)
+            if other is None:
                 return False
-            parts.append(text)
+            parts.append(other)
+        place += 1
     return True
 
 
@@ -186,8 +189,8 @@ def event_text(event: dict[Any, Any], fallback: Callable[[Any], str]) -> str:
     """The JSON text of one event (without its line end)."""
     if not event:
         return "{}"
-    parts: list[str] = ["{"]
-    if not _items_parts(event, parts, None, None):
+    parts: list[str] = []
+    if not _items_parts(event, parts, 0):
         return fallback(event)
     parts.append("}")
     return "".join(parts)
@@ -219,18 +222,15 @@ def write_lines(events: Iterable[dict[Any, Any]], write: Callable[[str], object]
             mark = len(parts)
             try:
                 if not event:
-                    parts.append("{}")
+                    parts.append("{}\n")
+                elif _items_parts(event, parts, 0):
+                    parts.append("}\n")
                 else:
-                    parts.append("{")
-                    if _items_parts(event, parts, None, None):
-                        parts.append("}")
-                    else:
-                        del parts[mark:]
-                        parts.append(fallback(event))
+                    del parts[mark:]
+                    parts.append(fallback(event) + "\n")
             except ValueError as err:
                 del parts[mark:]
                 raise EventValueError(str(err), event) from None
-            parts.append("\n")
             count += 1
             if count == _CHUNK:
                 text = "".join(parts)

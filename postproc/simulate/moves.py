@@ -50,7 +50,11 @@ class Moves:
         self.axes = tuple(setup.machine.axes)
         self.keys = tuple((a, a.lower()) for a in self.axes)
         self.pos = start_position(setup)
-        self.rounded = {a: num(v) for a, v in self.pos.items()}
+        self.index = {a: i for i, a in enumerate(self.axes)}
+        """Machine axis -> its place in ``axes`` (and in the rounded points)."""
+        self.rounded: list[float | int] = [num(self.pos[a]) for a in self.axes]
+        """The programmed point as the events write it (``num``), in the order of ``axes``: a list, where a
+        dictionary cost each move under a tool length ~1.5k instructions in look-ups and writes (compiled)."""
         self.modal = ModalState()
         """The program's modal state (units, plane, distance and feed mode, tool...), in program terms."""
         self.home = {axis: t.home * setup.machine.mm() for axis, t in setup.travel.items()
@@ -83,6 +87,10 @@ class Moves:
         self.diameter = ctx.diameter
         """X words are diameters: the position is kept as a radius (true geometry, arcs with radius I) and
         written as a diameter."""
+        self.factors: dict[str, float] = {}
+        """Per machine axis, mm of the position per unit of its word (``scale``, a diameter's half): ``target``
+        reads one number an axis word, and a letter not here is no axis of the machine."""
+        self.set_scale(1.0)
         if self.lathe:
             self.modal.plane = "ZX"
             self.modal.feed_mode = ctx.state.feed_mode  # the reading dialect's mode at the start
@@ -128,11 +136,14 @@ class Moves:
         """The lathe tool offset in force (``lathe_offset``): mm added to the programmed X (a radius) and Z."""
         self.cutter = None if cutter_rules is None else cutter_for(cutter_rules, self._release)
         """Cutter radius compensation, when the dialect's rules are known (else it stays a setting)."""
+        self.cutter_started = False
+        """A G41/G42 has started ``cutter`` (before that it is idle: ``_cutter_idle`` reads none of its state, three
+        attributes of an interpreted object a move, ~640 instructions compiled)."""
         self.compensating = False
         """Moves go through ``postproc.compensation`` (an offset is in force, a move waits in the cutter
         queue, or the controlled point has not yet met the programmed one again)."""
-        self.crounded = dict(self.rounded)
-        """The controlled point of the last move written, rounded (while ``compensating``)."""
+        self.crounded = list(self.rounded)
+        """The controlled point of the last move written, rounded (while ``compensating``), as ``rounded``."""
         self.out: Callable[[Event], None] = _nowhere
         """Where released events go (the ``emit`` of the block being run)."""
         self.queued: Callable[[Event], None] = self._event
@@ -167,6 +178,7 @@ class Moves:
         incremental = self.incremental and not absolute
         shift = self.shift if not machine and not incremental else None
         increments = self.increments  # empty on a mill: one test of an empty dict per word
+        factors = self.factors
         for axis, value in axes.items():
             if not isinstance(value, float) and isinstance(value, Expr):  # a float first: one type test a word
                 raise ProgramError(UNEVALUATED, self._at(block, axis))
@@ -178,15 +190,22 @@ class Moves:
                 v = value * self.scale * (0.5 if self.diameter and real == "X" else 1.0)
                 out[real] = out[real] + v
                 continue
-            if axis not in pos:
+            factor = factors.get(axis)
+            if factor is None:
                 raise ProgramError(f"axis {axis} is not on this machine (axes {''.join(self.axes)})",
                                    self._at(block, axis))
-            v = value * self.scale if axis in LINEAR_AXES else value
-            if self.diameter and axis == "X":
-                v *= 0.5
+            v = value * factor
             out[axis] = pos[axis] + v if incremental else v + shift.get(axis, 0.0) if shift else v
         return out
 
+
+    def set_scale(self, scale: float) -> None:
+        """mm per program unit (the units changed), and with it each axis word's factor (``factors``: a
+        diameter's half times the scale is the scale's half, exactly)."""
+        self.scale = scale
+        diameter = self.diameter
+        self.factors = {a: (scale if a in LINEAR_AXES else 1.0) * (0.5 if diameter and a == "X" else 1.0)
+                        for a in self.axes}
 
     def data_setting(self, block: Block, setting: DataSetting) -> None:
         """G10: a work offset is kept (mm, per axis) and shifts later absolute points in its system; a tool
@@ -251,6 +270,7 @@ class Moves:
                 cutter.cancel()  # recorded as a setting (``record_settings``), as without rules
             elif mode in ("left", "right"):
                 reads = self._cutter_register(block, cc.register)  # type: ignore[attr-defined]
+                self.cutter_started = True
                 try:
                     cutter.start(mode, self._cutter_radius(block, reads), self.modal.plane,
                                  self._nose_tip(block, reads))
@@ -266,6 +286,7 @@ class Moves:
                                        f"{self.ctx.dialect}", self._at(block))
             lathe = self.modal.plane == "ZX" and self.lathe
             tip = TIPS[mirrored(dynamic.orientation or 0)] if lathe else (0, 0)  # type: ignore[attr-defined]
+            self.cutter_started = True
             try:  # D/2, negative: the other side
                 cutter.start(dynamic.mode, dynamic.radius(self.scale), self.modal.plane,  # type: ignore[attr-defined]
                              (float(tip[0]), float(tip[1])))
@@ -303,8 +324,8 @@ class Moves:
         self._begin()  # the controlled point before the change is the one kept
         self.pos = dict(self.pos)  # the old dict may be a queued segment's end
         self.pos[LENGTH_AXIS] -= change
-        self.rounded = dict(self.rounded)
-        self.rounded[LENGTH_AXIS] = num(self.pos[LENGTH_AXIS])
+        self.rounded = list(self.rounded)
+        self.rounded[self.index[LENGTH_AXIS]] = num(self.pos[LENGTH_AXIS])
         self._settle()
 
     def lathe_offset(self, block: Block, register: object) -> None:
@@ -342,12 +363,12 @@ class Moves:
             return
         if self.length_at_axis:
             self._begin()
-            self.pos, self.rounded = dict(self.pos), dict(self.rounded)
+            self.pos, self.rounded = dict(self.pos), list(self.rounded)
             for axis in sorted(set(new) | set(old)):
                 change = new.get(axis, 0.0) - old.get(axis, 0.0)
                 if change and axis in self.pos:
                     self.pos[axis] -= change
-                    self.rounded[axis] = num(self.pos[axis])
+                    self.rounded[self.index[axis]] = num(self.pos[axis])
         self.lathe_shift = new
         if new:
             self._begin()
@@ -399,7 +420,7 @@ class Moves:
         """Moves from here on go through the compensation."""
         if not self.compensating:
             self.compensating = True
-            self.crounded = dict(self.rounded)
+            self.crounded = list(self.rounded)
 
     def _shift(self) -> None:
         """The offset of the active work system plus the external one (P0), applied to absolute points."""
@@ -436,9 +457,9 @@ class Moves:
                                    self._at(block))  # [V] LinuxCNC: "Cannot change coordinate systems with cutter radius compensation on"
             delta = before - after
             self.pos[axis] += delta
-            self.rounded[axis] = num(self.pos[axis])
-            if axis in self.crounded:
-                self.crounded[axis] = num(self.crounded[axis] + delta)
+            i = self.index[axis]
+            self.rounded[i] = num(self.pos[axis])
+            self.crounded[i] = num(self.crounded[i] + delta)
         self.beyond = new
 
     def _coordinate(self, block: Block, axis: str, value: float) -> None:
@@ -449,7 +470,7 @@ class Moves:
         if self.travel is not None:
             self.travel.coordinate_set(axis, v)
         self.pos[axis] = v
-        self.rounded[axis] = num(v)
+        self.rounded[self.index[axis]] = num(v)
 
     def line_move(self, kind: str, target: dict[str, float], line: int, emit: Callable[[Event], None]) -> None:
         if self.compensating:
@@ -459,16 +480,17 @@ class Moves:
                 self._compensated(kind, target, line, None, None)
             return
         pos = self.pos
-        rounded = self.rounded.copy()
-        for axis, value in target.items():
+        rounded = list(self.rounded)
+        for i, axis in enumerate(self.axes):
+            value = target[axis]
             if value != pos[axis]:
-                rounded[axis] = num(value)
+                rounded[i] = num(value)
         if rounded == self.rounded:
             self.pos = target
             if self.mark_held:  # ``verify --transform`` may move it to somewhere else (``mark_held``)
                 still: Event = {"line": line, "move": kind, "still": True}
-                for axis, key in self.keys:
-                    still[key] = rounded[axis]
+                for i, (axis, key) in enumerate(self.keys):
+                    still[key] = rounded[i]
                 if self.diameter and "x" in still:
                     still["x"] = num(target["X"] * 2.0)
                 if kind != "rapid":
@@ -476,8 +498,8 @@ class Moves:
                 emit(still)
             return
         ev: Event = {"line": line, "move": kind}
-        for axis, key in self.keys:
-            ev[key] = rounded[axis]
+        for i, (axis, key) in enumerate(self.keys):
+            ev[key] = rounded[i]
         if self.diameter and "x" in ev:
             ev["x"] = num(target["X"] * 2.0)
         if kind != "rapid":
@@ -538,12 +560,15 @@ class Moves:
             self.line_move("feed", target, block.line, emit)  # zero radius, zero length: dropped
             return
         if self.compensating:
-            self._compensated(m.mode or "cw", target, block.line, c, plane)
+            if self._cutter_idle() and not self.diameter:
+                self._offset_arc(m.mode or "cw", target, block.line, c, plane)
+            else:
+                self._compensated(m.mode or "cw", target, block.line, c, plane)
             return
-        rounded = {a: num(v) for a, v in target.items()}
+        rounded = [num(target[a]) for a in self.axes]
         ev: Event = {"line": block.line, "move": m.mode}
-        for axis, key in self.keys:
-            ev[key] = rounded[axis]
+        for i, (axis, key) in enumerate(self.keys):
+            ev[key] = rounded[i]
         centre = {a1: c[0], a2: c[1], normal: pos.get(normal, 0.0)}
         for axis in ("X", "Y", "Z"):
             if axis in pos:
@@ -590,7 +615,7 @@ class Moves:
         else:
             self._write(seg)
         self.pos = target
-        self.rounded = {a: num(v) for a, v in target.items()}
+        self.rounded = [num(target[a]) for a in self.axes]
         self._settle()
 
     def _programmed_rate(self, fields: Event, kind: str, target: dict[str, float],
@@ -614,40 +639,92 @@ class Moves:
         """A straight move under a tool length alone (a whole program after its G43): ``_write``'s result,
         the programmed point rounded only on the axes that move (as ``line_move``). One pass over the axes
         builds both points and the event: the values stay the objects ``num`` made (an int stays an int in
-        the JSON line), compared per axis rather than as dictionaries."""
-        pos, old, before = self.pos, self.rounded, self.crounded
+        the JSON line), compared per axis rather than as dictionaries. The rounded programmed point is
+        updated in place (no other holder: every other step that sets it makes a list of its own)."""
+        pos, rounded, before = self.pos, self.rounded, self.crounded
         offset = self.length.offset
         shifts = self.lathe_shift
-        rounded: dict[str, Any] = {}
-        crounded: dict[str, Any] = {}
+        crounded: list[float | int] = []
         ev: Event = {"line": line, "move": kind}
         ctrl: Event = {}
         moved = apart = False
-        for axis, key in self.keys:
-            value = target[axis]
-            r: Any = old[axis] if value == pos[axis] else num(value)
-            c: Any = r
-            if axis == LENGTH_AXIS:
-                c = num(value + offset)
-            if shifts:
-                shift = shifts.get(axis)
-                if shift is not None:
-                    c = num(value + shift + (offset if axis == LENGTH_AXIS else 0.0))
-            rounded[axis] = r
-            crounded[axis] = c
-            ev[key] = r
-            ctrl[key] = c
-            if not moved and c != before[axis]:
-                moved = True
-            if not apart and c != r:
-                apart = True
+        try:
+            for i, (axis, key) in enumerate(self.keys):
+                value = target[axis]
+                r: Any
+                if value == pos[axis]:
+                    r = rounded[i]
+                else:
+                    r = num(value)
+                    rounded[i] = r
+                c: Any = r
+                if axis == LENGTH_AXIS:
+                    c = num(value + offset)
+                if shifts:
+                    shift = shifts.get(axis)
+                    if shift is not None:
+                        c = num(value + shift + (offset if axis == LENGTH_AXIS else 0.0))
+                crounded.append(c)
+                ev[key] = r
+                ctrl[key] = c
+                if not moved and c != before[i]:
+                    moved = True
+                if not apart and c != r:
+                    apart = True
+            if kind != "rapid":
+                self._feed_into(ev)  # a move it drops fixes the header's feed mode too, as ``_compensated``'s
+        except PostprocError:
+            self.rounded = [num(pos[a]) for a in self.axes]  # the block fails: its point as it was
+            raise
         if not moved:
-            self.pos, self.rounded = target, rounded
+            self.pos = target
             self._settle()
             return
-        if kind != "rapid":
-            self._feed_into(ev)
         if apart:
+            ev["controlled"] = ctrl
+        self.pos, self.crounded = target, crounded
+        self.out(ev)
+        self._settle()
+
+    def _offset_arc(self, kind: str, target: dict[str, float], line: int, c: tuple[float, float], plane: str) -> None:
+        """An arc under a tool length (and a lathe's tool offset) alone: ``_compensated``'s and ``_write``'s event
+        for it, without the cutter's segment (an interpreted object: ~25k instructions an arc)."""
+        a1, a2, normal = PLANE_AXES[plane]
+        pos = self.pos
+        offset = self.length.offset
+        shifts = self.lathe_shift
+        centre = {a1: c[0], a2: c[1], normal: pos.get(normal, 0.0)}
+        rounded: list[float | int] = []
+        crounded: list[float | int] = []
+        ev: Event = {"line": line, "move": kind}
+        ctrl: Event = {}
+        for axis, key in self.keys:
+            value = target[axis]
+            r = num(value)
+            controlled = value
+            if offset and axis == LENGTH_AXIS:
+                controlled += offset
+            shift = shifts.get(axis) if shifts else None
+            if shift is not None:
+                controlled += shift
+            rounded.append(r)
+            ev[key] = r
+            cr = num(controlled)
+            crounded.append(cr)
+            ctrl[key] = cr
+        for axis in ("X", "Y", "Z"):
+            if axis in pos:
+                at = centre[axis]
+                ev[CENTRE_KEYS[axis]] = num(at)
+                if offset and axis == LENGTH_AXIS:
+                    at += offset
+                shift = shifts.get(axis) if shifts else None
+                if shift is not None:
+                    at += shift
+                ctrl[CENTRE_KEYS[axis]] = num(at)
+        ev["plane"] = plane
+        self._feed_into(ev)
+        if any(ev[key] != value for key, value in ctrl.items()):
             ev["controlled"] = ctrl
         self.pos, self.rounded, self.crounded = target, rounded, crounded
         self.out(ev)
@@ -656,7 +733,8 @@ class Moves:
     def _cutter_idle(self) -> bool:
         """No cutter compensation is on, queued or pending its exit move."""
         cutter = self.cutter
-        return cutter is None or (cutter.side is None and not cutter.queue and not cutter.arc_banned)
+        return cutter is None or not self.cutter_started or (
+            cutter.side is None and not cutter.queue and not cutter.arc_banned)
 
     def _event(self, ev: Event) -> None:
         """A non-motion event while compensating: behind a queued move, if any."""
@@ -684,7 +762,7 @@ class Moves:
         for axis, shift in self.lathe_shift.items():
             if axis in control:
                 control[axis] += shift
-        crounded = {a: num(v) for a, v in control.items()}
+        crounded = [num(control[a]) for a in self.axes]
         kind = seg.kind
         if kind in ("rapid", "feed") and crounded == self.crounded:
             return
@@ -692,9 +770,9 @@ class Moves:
         ev: Event = {"line": seg.fields["line"], "move": kind}
         ctrl: Event = {}
         diameter = self.diameter
-        for axis, key in self.keys:
+        for i, (axis, key) in enumerate(self.keys):
             ev[key] = num(end[axis] * 2.0) if diameter and axis == "X" else num(end[axis])
-            ctrl[key] = num(control[axis] * 2.0) if diameter and axis == "X" else crounded[axis]
+            ctrl[key] = num(control[axis] * 2.0) if diameter and axis == "X" else crounded[i]
         if seg.centre is not None:
             plane = self.modal.plane
             a1, a2, normal = PLANE_AXES[plane]

@@ -34,10 +34,16 @@ _KIND_MODAL: Final = 1
 _KIND_SETTING: Final = 2
 _KIND_COMPENSATION: Final = 4
 _KIND_EVENT: Final = 8
+_KIND_RARE: Final = 16
+_RARE_KEYS: Final = frozenset(("TapeMark", "InProfile", "NativeCode", "CompoundMotion", "CoordinateSet", "RigidTap",
+                               "CycleCall"))
+"""Sections a CAM block has none of, each looked up by ``Simulator.block`` only where the block has one of them
+(a look-up ~130 instructions compiled, seven a block)."""
 _KEY_KINDS: Final[dict[str, int]] = {
     key: (_KIND_MODAL if key in MODAL_KEYS else 0) | (_KIND_SETTING if key in _SETTING_KEYS else 0)
     | (_KIND_COMPENSATION if key in _COMPENSATION_KEYS else 0) | (_KIND_EVENT if key in _EVENT_KEYS else 0)
-    for key in MODAL_KEYS | _SETTING_KEYS | _COMPENSATION_KEYS | _EVENT_KEYS}
+    | (_KIND_RARE if key in _RARE_KEYS else 0)
+    for key in MODAL_KEYS | _SETTING_KEYS | _COMPENSATION_KEYS | _EVENT_KEYS | _RARE_KEYS}
 """Section key -> the kinds of work it asks of ``Simulator.block`` (bits above): one look-up a section, where
 four ``keys().isdisjoint`` tests were four bound method calls a block (~2,700 instructions compiled)."""
 
@@ -51,22 +57,23 @@ class Simulator(Moves):
         sections: dict[str, Any] = block.sections  # each section read by its key: Any
         if not sections:
             return
-        if self.ended or "TapeMark" in sections:
+        kinds = 0
+        for key in sections:
+            kinds |= _KEY_KINDS.get(key, 0)
+        rare = kinds & _KIND_RARE != 0
+        if self.ended or rare and "TapeMark" in sections:
             self._tape_or_after_end(block)
             return
         self.current = block
-        if "InProfile" in sections:
+        if rare and "InProfile" in sections:
             return  # the controller runs a profile block only through its cycle
         self.out = emit
         if self.compensating:
             emit = self.queued
-        native = sections.get("NativeCode")
+        native = sections.get("NativeCode") if rare else None
         if native is not None and not native.inert:
             code = native.what.split(" ", 1)[0]
             raise UnsupportedError(f"{native.what} cannot be simulated", self._at(block, code))
-        kinds = 0
-        for key in sections:
-            kinds |= _KEY_KINDS.get(key, 0)
         if kinds & _KIND_MODAL:
             self.apply_modal(sections)
         if self.travel is not None:
@@ -114,9 +121,9 @@ class Simulator(Moves):
             s = sections.get("Dwell")
             if s is not None:
                 emit({"line": line, "event": "dwell", "seconds": num(s.seconds)})
-        compound = sections.get("CompoundMotion")
-        motion = sections.get("Motion")
-        coords = sections.get("CoordinateSet")
+        compound = sections.get("CompoundMotion") if rare else None
+        motion: Motion | None = sections.get("Motion")  # typed: compiled, its fields are read directly
+        coords = sections.get("CoordinateSet") if rare else None
         if coords is not None:
             for axis, value in coords.axes.items():
                 self._coordinate(block, axis, value)
@@ -135,10 +142,10 @@ class Simulator(Moves):
                                        "resolved to motion", self._at(block))
             if motion.mode is not None:
                 self.motion(block, motion, False, emit)
-        elif "CycleCall" in sections and "CannedCycle" not in sections:
+        elif rare and "CycleCall" in sections and "CannedCycle" not in sections:
             raise UnsupportedError(f"canned cycle '{sections['CycleCall'].kind}' cannot be simulated: it was not "
                                    "resolved to motion", self._at(block))
-        tap = sections.get("RigidTap")
+        tap = sections.get("RigidTap") if rare else None
         if tap is not None:
             self.rigid_tap(block, tap, False, emit)
         if not before:
@@ -240,7 +247,9 @@ class Simulator(Moves):
         converted with the units and feed mode the block leaves in force."""
         modal = self.modal
         modal.apply(sections)
-        self.scale = MM_PER_INCH if modal.units == "inch" else 1.0
+        scale = MM_PER_INCH if modal.units == "inch" else 1.0
+        if scale != self.scale:
+            self.set_scale(scale)
         self.incremental = modal.distance == "incremental"
         if self.cutter is not None:
             self.cutter.sweep_slack = 0.001 if modal.units == "inch" else 0.0254
