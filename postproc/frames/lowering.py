@@ -63,13 +63,22 @@ MEASURED_ENTRIES: Final = frozenset(("tool_entry_at_point", "tool_entry_at_point
 class FrameRun:
     """What the evaluation has reached: copied with the reading state into a translation's dry run."""
 
-    __slots__ = ("frame", "p", "g5x", "symbolic", "work", "order")
+    __slots__ = ("frame", "p", "g5x", "symbolic", "work", "order", "unsettled", "scale", "cutter")
 
     def __init__(self, p: Position) -> None:
         self.frame: Frame | None = None
         """None until the first frame command (or a rotation of a work system)."""
         self.p = p
         """The program position, mm (degrees on rotary axes), None where unknown."""
+        self.unsettled: set[str] = set(p)
+        """Axes whose ``p`` is the simulation's assumption, not what the machine reads as its current point:
+        not programmed absolutely since the start (``p`` is the set-up's start position), or a tool offset
+        changed since (a controller that keeps the machine point then reads a moved current point). A read
+        of the current position there is the machine's (``postproc.frames.parameters``)."""
+        self.scale = 1.0
+        """mm per program length unit where the program stands (G20: 25.4)."""
+        self.cutter = False
+        """Cutter radius compensation is on where the program stands."""
         self.g5x: dict[int, dict[str, float]] = {}
         """Work offsets a G10 in the program set, mm (the rest are unknown here)."""
         self.symbolic = False
@@ -121,7 +130,7 @@ class FrameEvaluator:
         self.frame = run.frame
         self.p = run.p
         self.g5x = run.g5x
-        self.scale = MM_PER_INCH if self.modal.units == "inch" else 1.0
+        self.scale = run.scale = MM_PER_INCH if self.modal.units == "inch" else 1.0
         self.plain_mm = self.scale == 1.0 and self.modal.distance == "absolute"
         """Absolute millimetres: a move's words are its position (``run``'s common case)."""
 
@@ -131,6 +140,7 @@ class FrameEvaluator:
         dialect, frames or not)."""
         report = self.ctx.diagnostics.error
         watched, moves, p, state = _WATCHED, _MOVES, self.p, self.ctx.state
+        unsettled = self.reached.unsettled
         for block in blocks:
             s = block.sections
             if not s:
@@ -145,6 +155,8 @@ class FrameEvaluator:
                     continue
                 if isinstance(m, Motion) and self.plain_mm and m.mode in moves and not state.symbolic:
                     p.update(m.axes)  # type: ignore[arg-type]  # numbers: nothing is symbolic yet
+                    if unsettled:
+                        unsettled.difference_update(m.axes)
                     if self.reached.symbolic:
                         self.targets(s)
                     yield block
@@ -169,6 +181,8 @@ class FrameEvaluator:
         changed = False
         if not changes_nothing(s):
             self.settings(block, s)  # first: a G10 in a block with G20 gives inches [V: rs274 order of execution]
+        if "ToolLengthOffset" in s or "CutterCompensation" in s or "DynamicCutterCompensation" in s:
+            self.current_point_reads(s)
         frame = self.frame
         if "DataSetting" in s:
             changed = self.data_setting(block, s)
@@ -190,6 +204,21 @@ class FrameEvaluator:
         if changed and self.rewrite:
             block.changed()
 
+    def current_point_reads(self, s: dict[str, Section]) -> None:
+        """What a read of the current position (``postproc.frames.parameters``) must know of the block: a
+        tool offset change leaves the programmed point unsettled on X, Y and Z until each is programmed
+        absolutely again (LinuxCNC keeps the machine point, so its current point moves by the change [V:
+        ``interp_convert.cc`` ``convert_tool_length_offset``: ``current_z + old - new``]; not worked out here);
+        cutter compensation on forbids the read (rs274: "Cannot read current position with cutter radius
+        compensation on" [V: ``interp_read.cc`` ``read_integer_parameter``])."""
+        if "ToolLengthOffset" in s:
+            self.reached.unsettled.update(XYZ)  # before the block's motion, which may settle an axis again
+        cc = s.get("CutterCompensation")
+        if cc is not None:
+            self.reached.cutter = getattr(cc, "mode", "off") != "off"
+        if "DynamicCutterCompensation" in s:
+            self.reached.cutter = True
+
     def targets(self, s: dict[str, Section]) -> None:
         """The jump targets a block of the symbolic part carries (``RunOrder``)."""
         label = s.get("Label")
@@ -207,7 +236,7 @@ class FrameEvaluator:
         modal.apply(s)
         if "WorkOffset" in s:
             self.reached.work = modal.work_offset
-        self.scale = MM_PER_INCH if modal.units == "inch" else 1.0
+        self.scale = self.reached.scale = MM_PER_INCH if modal.units == "inch" else 1.0
         self.plain_mm = self.scale == 1.0 and modal.distance == "absolute"
         frame = self.frame
         if modal.plane != plane and frame is not None and frame.rotation is not None:
@@ -327,6 +356,7 @@ class FrameEvaluator:
                 raise ProgramError(f"{change.describe()} while a local coordinate system is in force is not simulated "
                                    "(whether it cancels that system is not settled [?]): cancel it first")
             frame.set_origin(_axes(words), p, change.describe())
+            self.reached.unsettled.difference_update(words)  # the current point now reads the words
         elif kind in ("origin_clear", "origin_suspend"):
             frame.clear_origin(p, kind == "origin_suspend")
         elif kind == "origin_restore":
@@ -467,6 +497,7 @@ class FrameEvaluator:
                 p[axis] = None if here is None else here + v
             else:
                 p[axis] = v
+                self.reached.unsettled.discard(axis)
 
     def carry(self, block: Block, s: dict[str, Section], frame: Frame) -> bool:
         """Rewrite the block's points into work coordinates; True when anything changed."""
@@ -579,6 +610,7 @@ class FrameEvaluator:
                     p[axis] = None
                 else:
                     p[axis] = value
+                    self.reached.unsettled.discard(axis)
         if mode not in ("cw", "ccw"):
             return Motion(mode, out)
         return self.arc(m, out, mode)
@@ -679,7 +711,8 @@ _FANUC_FORBIDDEN: Final = "{what} while coordinate rotation, scaling or a mirror
 
 
 _WATCHED: Final = frozenset(("Units", "Plane", "DistanceMode", "WorkOffset", "DataSetting", "FrameChange", ASSIGN,
-                             CONTROL, "CutterCompensation", "CompoundMotion", "MachineCoordinates"))
+                             CONTROL, "CutterCompensation", "CompoundMotion", "MachineCoordinates",
+                             "ToolLengthOffset", "DynamicCutterCompensation"))
 """Sections that make a block more than a move to follow, before any frame."""
 _MOVES: Final = frozenset(("rapid", "linear", "cw", "ccw"))
 
