@@ -38,10 +38,12 @@ from mypy_extensions import mypyc_attr
 
 from ..context import Context
 from ..dialect import Dialect
+from ..compensation.tool_length import ToolLength
+from ..compensation.tool_table import ENTRY, ToolTable
 from ..errors import PostprocError, ProgramError, UnsupportedError
 from ..control import ASSIGN, CONTROL
 from ..expr import Binary, Expr, Num
-from ..ir import AXES, Block, Comments, CompoundMotion, CutterCompensation, DataSetting, Motion, Section
+from ..ir import AXES, Block, Comments, CompoundMotion, CutterCompensation, DataSetting, Motion, Section, ToolLengthOffset
 from ..state import MM_PER_INCH, ModalState, changes_nothing
 from .affine import EXACT, INDEX, XYZ
 from .frame import PLANE_AXES, Frame, Position, chain_component
@@ -63,7 +65,8 @@ MEASURED_ENTRIES: Final = frozenset(("tool_entry_at_point", "tool_entry_at_point
 class FrameRun:
     """What the evaluation has reached: copied with the reading state into a translation's dry run."""
 
-    __slots__ = ("frame", "p", "g5x", "symbolic", "work", "order", "unsettled", "scale", "cutter")
+    __slots__ = ("frame", "p", "g5x", "symbolic", "work", "order", "unsettled", "scale", "cutter", "tools", "sideways",
+                 "tools_known")
 
     def __init__(self, p: Position) -> None:
         self.frame: Frame | None = None
@@ -71,10 +74,16 @@ class FrameRun:
         self.p = p
         """The program position, mm (degrees on rotary axes), None where unknown."""
         self.unsettled: set[str] = set(p)
-        """Axes whose ``p`` is the simulation's assumption, not what the machine reads as its current point:
-        not programmed absolutely since the start (``p`` is the set-up's start position), or a tool offset
-        changed since (a controller that keeps the machine point then reads a moved current point). A read
-        of the current position there is the machine's (``postproc.frames.parameters``)."""
+        """Axes not programmed absolutely since the start: their ``p`` is the set-up's assumed start, not what
+        the machine reads as its current point (a read of the current position there is the machine's,
+        ``postproc.frames.parameters``)."""
+        self.tools: ToolLength | None = None
+        """The tool length offset in force (made at the first change), on a controller that keeps the machine
+        point at a change (``tool_change``)."""
+        self.sideways: dict[str, float] = {}
+        """The X and Y offsets of the tool entry in force (mm)."""
+        self.tools_known = True
+        """The offsets in force are known (False after a change this evaluation cannot work out)."""
         self.scale = 1.0
         """mm per program length unit where the program stands (G20: 25.4)."""
         self.cutter = False
@@ -205,19 +214,54 @@ class FrameEvaluator:
             block.changed()
 
     def current_point_reads(self, s: dict[str, Section]) -> None:
-        """What a read of the current position (``postproc.frames.parameters``) must know of the block: a
-        tool offset change leaves the programmed point unsettled on X, Y and Z until each is programmed
-        absolutely again (LinuxCNC keeps the machine point, so its current point moves by the change [V:
-        ``interp_convert.cc`` ``convert_tool_length_offset``: ``current_z + old - new``]; not worked out here);
-        cutter compensation on forbids the read (rs274: "Cannot read current position with cutter radius
-        compensation on" [V: ``interp_read.cc`` ``read_integer_parameter``])."""
-        if "ToolLengthOffset" in s:
-            self.reached.unsettled.update(XYZ)  # before the block's motion, which may settle an axis again
+        """What the program position and a read of it (``postproc.frames.parameters``) must know of the
+        block: a tool offset change (``tool_change``); cutter compensation on forbids the read (rs274: "Cannot
+        read current position with cutter radius compensation on" [V: ``interp_read.cc``
+        ``read_integer_parameter``])."""
+        length = s.get("ToolLengthOffset")
+        if isinstance(length, ToolLengthOffset) and self.ctx.length_at_axis:
+            self.tool_change(length)  # before the block's motion [V: rs274 order of execution]
         cc = s.get("CutterCompensation")
         if cc is not None:
             self.reached.cutter = getattr(cc, "mode", "off") != "off"
         if "DynamicCutterCompensation" in s:
             self.reached.cutter = True
+
+    def tool_change(self, length: ToolLengthOffset) -> None:
+        """A tool offset change on a controller that keeps the machine point until the axis is programmed
+        (``Dialect.LENGTH_AT_PROGRAMMED_AXIS``): the program position moves by the change, ``current_z + old -
+        new`` [V: LinuxCNC ``interp_convert.cc`` ``convert_tool_length_offset``, on every axis of the entry;
+        rs274 ``G43 H1`` then ``G92 Z0`` sets the offset from the moved point], as the simulation's
+        programmed point does (``postproc.simulate.moves``). Where the new offset is not known here (a computed
+        register, one the set-up lacks, an entry measured where the tool stands), X, Y and Z are unknown."""
+        run, p = self.reached, self.p
+        if run.tools is None:
+            run.tools = ToolLength(ToolTable(self.ctx.setup))
+        register = length.register
+        old_z, old_side = run.tools.offset, run.sideways
+        try:
+            if isinstance(register, Expr) or isinstance(length.length, Expr):
+                raise ProgramError("a computed tool offset")
+            run.tools.change(length.mode, register, length.length, self.scale)
+            side = run.tools.table.sideways(register) if length.mode == "positive" and isinstance(register, int) \
+                else {}
+        except PostprocError:
+            run.tools_known = False
+            for axis in XYZ:
+                p[axis] = None
+            return
+        if not run.tools_known:
+            run.tools_known = True  # known again from here; the point before stays unknown
+            for axis in XYZ:
+                p[axis] = None
+        changes = {"Z": run.tools.offset - old_z}
+        for axis in set(side) | set(old_side):
+            changes[axis] = changes.get(axis, 0.0) + side.get(axis, 0.0) - old_side.get(axis, 0.0)
+        run.sideways = side
+        for axis, change in changes.items():
+            here = p.get(axis)
+            if change and here is not None:
+                p[axis] = here - change
 
     def targets(self, s: dict[str, Section]) -> None:
         """The jump targets a block of the symbolic part carries (``RunOrder``)."""
@@ -264,6 +308,8 @@ class FrameEvaluator:
         the active system moves the program position (the tool stays)."""
         setting = s["DataSetting"]
         assert isinstance(setting, DataSetting)
+        if self.ctx.length_at_axis and (setting.table == ENTRY or setting.table in MEASURED_ENTRIES):
+            self.tool_entry(setting)
         if setting.table in MEASURED_ENTRIES and self.frame is not None and not self.frame.plain():
             # the entry is the tool's point in the work system without the tool offset, less the values
             # ([V] LinuxCNC convert_setup_tool): that point under the program's shift or rotation is not
@@ -314,6 +360,42 @@ class FrameEvaluator:
             del s["DataSetting"]
             _note(s, f"{setting.text} evaluated")
         return True
+
+    def tool_entry(self, setting: DataSetting) -> None:
+        """A program's tool table entry, which a later offset change reads (``tool_change``). One measured
+        where the tool stands (``G10 L10``) is the current point plus the offset in force, less the word [V:
+        LinuxCNC ``convert_setup_tool``; ``postproc.lowering.measured_entries``]; where that is not known here
+        (work system 9's ``L11``, an unknown point, a computed word), every offset read after it is unknown."""
+        run = self.reached
+        if run.tools is None:
+            run.tools = ToolLength(ToolTable(self.ctx.setup))
+        if setting.table in MEASURED_ENTRIES:
+            setting = self._measured(setting)
+        if any(isinstance(v, Expr) for v in setting.values.values()) or setting.table != ENTRY:
+            run.tools.table = _Unknown(self.ctx.setup)
+            return
+        try:
+            run.tools.table.write(setting, self.scale)
+        except PostprocError:
+            run.tools.table = _Unknown(self.ctx.setup)
+
+    def _measured(self, setting: DataSetting) -> DataSetting:
+        """The whole entry a measured one sets (unchanged where it is not worked out here)."""
+        run = self.reached
+        if setting.table != "tool_entry_at_point" or not run.tools_known or (
+                self.frame is not None and not self.frame.plain()):
+            return setting
+        offsets = {"Z": run.tools.offset if run.tools is not None else 0.0, **run.sideways}
+        values: dict[str, float | Expr] = {}
+        for letter, value in setting.values.items():
+            here = self.p.get(letter)
+            if letter not in XYZ:
+                values[letter] = value
+            elif isinstance(value, Expr) or here is None:
+                return setting
+            else:
+                values[letter] = (here + offsets.get(letter, 0.0)) / self.scale - float(value)
+        return DataSetting(setting.family, ENTRY, setting.index, values, False, setting.text)
 
     def _frame(self, rules: str) -> Frame:
         if self.frame is None:
@@ -724,6 +806,17 @@ def _unwatched(sections: dict[str, Section], watched: frozenset[str]) -> bool:
         if key in watched:
             return False
     return True
+
+
+@mypyc_attr(allow_interpreted_subclasses=True)
+class _Unknown(ToolTable):
+    """A tool table a program changed in a way not worked out here: every offset read from it is unknown."""
+
+    def length(self, register: int) -> float:
+        raise ProgramError(f"tool entry {register} is not known here")
+
+    def write(self, setting: DataSetting, scale: float) -> bool:
+        return True
 
 
 _SHIFTING: Final = frozenset(("fine_bore", "back_bore"))
