@@ -39,7 +39,7 @@ from mypy_extensions import mypyc_attr
 from ..context import Context
 from ..dialect import Dialect
 from ..compensation.tool_length import ToolLength
-from ..compensation.tool_table import ENTRY, ToolTable
+from ..compensation.tool_table import ENTRY, TABLES, ToolTable
 from ..errors import PostprocError, ProgramError, UnsupportedError
 from ..control import ASSIGN, CONTROL
 from ..expr import Binary, Expr, Num
@@ -58,6 +58,8 @@ RUN_KEY: Final = "frames.run"
 """``ctx.state.extra`` key of the frame and program position the lowering has reached (``FrameRun``)."""
 
 MEASURED_ENTRIES: Final = frozenset(("tool_entry_at_point", "tool_entry_at_point_9"))
+TOOL_TABLES: Final = frozenset((ENTRY, *TABLES))
+"""Tool table writes a later tool offset change reads (``FrameEvaluator.tool_entry``)."""
 """Tool table entries a program measures where the tool stands (LinuxCNC's, ``postproc.simulate.moves.touch_off``)."""
 
 
@@ -66,7 +68,7 @@ class FrameRun:
     """What the evaluation has reached: copied with the reading state into a translation's dry run."""
 
     __slots__ = ("frame", "p", "g5x", "symbolic", "work", "order", "unsettled", "scale", "cutter", "tools", "sideways",
-                 "tools_known")
+                 "tools_known", "table_known")
 
     def __init__(self, p: Position) -> None:
         self.frame: Frame | None = None
@@ -84,6 +86,8 @@ class FrameRun:
         """The X and Y offsets of the tool entry in force (mm)."""
         self.tools_known = True
         """The offsets in force are known (False after a change this evaluation cannot work out)."""
+        self.table_known = True
+        """The tool table's entries are known (False after a program's entry not worked out here)."""
         self.scale = 1.0
         """mm per program length unit where the program stands (G20: 25.4)."""
         self.cutter = False
@@ -240,8 +244,9 @@ class FrameEvaluator:
         register = length.register
         old_z, old_side = run.tools.offset, run.sideways
         try:
-            if isinstance(register, Expr) or isinstance(length.length, Expr):
-                raise ProgramError("a computed tool offset")
+            if isinstance(register, Expr) or isinstance(length.length, Expr) or (
+                    not run.table_known and length.mode in ("positive", "negative")):
+                raise ProgramError("a computed tool offset, or an entry not known here")
             run.tools.change(length.mode, register, length.length, self.scale)
             side = run.tools.table.sideways(register) if length.mode == "positive" and isinstance(register, int) \
                 else {}
@@ -308,7 +313,7 @@ class FrameEvaluator:
         the active system moves the program position (the tool stays)."""
         setting = s["DataSetting"]
         assert isinstance(setting, DataSetting)
-        if self.ctx.length_at_axis and (setting.table == ENTRY or setting.table in MEASURED_ENTRIES):
+        if self.ctx.length_at_axis and (setting.table in TOOL_TABLES or setting.table in MEASURED_ENTRIES):
             self.tool_entry(setting)
         if setting.table in MEASURED_ENTRIES and self.frame is not None and not self.frame.plain():
             # the entry is the tool's point in the work system without the tool offset, less the values
@@ -371,13 +376,13 @@ class FrameEvaluator:
             run.tools = ToolLength(ToolTable(self.ctx.setup))
         if setting.table in MEASURED_ENTRIES:
             setting = self._measured(setting)
-        if any(isinstance(v, Expr) for v in setting.values.values()) or setting.table != ENTRY:
-            run.tools.table = _Unknown(self.ctx.setup)
+        if any(isinstance(v, Expr) for v in setting.values.values()) or setting.table in MEASURED_ENTRIES:
+            run.table_known = False
             return
         try:
             run.tools.table.write(setting, self.scale)
         except PostprocError:
-            run.tools.table = _Unknown(self.ctx.setup)
+            run.table_known = False
 
     def _measured(self, setting: DataSetting) -> DataSetting:
         """The whole entry a measured one sets (unchanged where it is not worked out here)."""
@@ -806,17 +811,6 @@ def _unwatched(sections: dict[str, Section], watched: frozenset[str]) -> bool:
         if key in watched:
             return False
     return True
-
-
-@mypyc_attr(allow_interpreted_subclasses=True)
-class _Unknown(ToolTable):
-    """A tool table a program changed in a way not worked out here: every offset read from it is unknown."""
-
-    def length(self, register: int) -> float:
-        raise ProgramError(f"tool entry {register} is not known here")
-
-    def write(self, setting: DataSetting, scale: float) -> bool:
-        return True
 
 
 _SHIFTING: Final = frozenset(("fine_bore", "back_bore"))
