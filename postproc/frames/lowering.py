@@ -17,7 +17,10 @@ Over 600 lines: one class carries the frame through every kind of block, and it 
 for every translation to another dialect); the rules of each command live in ``frame``.
 
 The program position is tracked in program coordinates (mm), None where unknown; a move that needs an
-unknown coordinate (an axis it omits, that the frame mixes into the ones it programs) is a located error.
+unknown coordinate (an axis it omits, that the frame mixes into the ones it programs) is a located error. On
+a controller that keeps the machine point at a tool offset change the position takes the change
+(``tool_change``), so it is the current point the controller reads: what a G92 sets its offset from and
+what a program reads as its position (``postproc.frames.parameters``).
 
 A program kept symbolically (its loops, jumps and calls written for a target that has them) runs in
 another order than its text: there a frame command that may not run once where the text has it
