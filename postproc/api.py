@@ -12,7 +12,7 @@ native.install()  # the compiled hot path, before any of its modules is imported
 
 from .arc_end import TARGET_ARC_END
 from .block_rules import check_blocks
-from .control import GotoLabel, missing_fallthrough
+from .control import GotoLabel, jump_past_end, missing_fallthrough
 from .dialect import Dialect
 from .errors import Diagnostics, ErrorLevel, PostprocError, UsageError
 from .ir import Block
@@ -133,6 +133,11 @@ def _keep_check(src: type[Dialect], dst: type[Dialect], ctx: Context, registry: 
         if falls is not None:
             target = falls.label if isinstance(falls, GotoLabel) else falls.target
             return f"a jump to {target}, which is missing, goes on with the next block ({dst.NAME} would alarm)"
+        past = jump_past_end(body, program.is_program_end) if program is not None and \
+            program.SUBPROGRAM_RULES.jumps_past_end else None
+        if past is not None:
+            target = past.label if isinstance(past, GotoLabel) else past.target
+            return f"a jump to {target}, after the program end, where {dst.NAME}'s program keeps no blocks"
         if frame_evaluated and program is not None and program.FRAME_PARAMETERS:
             read = frame_parameter_read(body, program.FRAME_PARAMETERS.__contains__)
             if read is not None:

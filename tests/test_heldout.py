@@ -50,18 +50,10 @@ every target."""
 PROGRAMS = ALL if os.environ.get("POSTPROC_HELDOUT") == "all" else [p for p in ALL if p.path in QUICK]
 
 KNOWN_FAILURES: dict[tuple[str, str], str] = {
-    ("siemens/cead_goto.mpf", ""): (
-        "GOTOF MIDDLE jumps to a label after M30 (the file goes on past the program end): the interpreter "
-        "refuses a jump past the end of the running program (postproc/interp/run_state.py), since where a "
-        "controller runs from there is not modelled; whether SINUMERIK's label search reaches blocks after "
-        "M30 is not confirmed [?]. GOTOC to a missing label and GOTOF to a bare block number are read"),
     ("linuxcnc/lathe_g70_71_demo.ngc", ""): (
         "LinuxCNC's own lathe cycles G71.1/G71.2 (roughing) and G70 (finishing) on an o-word profile: the "
         "simulator does not expand them ('cannot be simulated'), so the source cannot be checked; every target "
         "refuses the cycles too"),
-    ("linuxcnc/pcb2gcode_outline_tiled.ngc", ""): (
-        "pcb2gcode's tiling repeats its o200 subroutine after G92 X[#5420-[2.174016]]: #5420, the current X, is "
-        "taken as known only to the machine, though the simulation knows where the subroutine left the tool"),
 }
 """(program, target or '' for the source check) -> the defect, as found by the held-out set."""
 _SOURCE_REFUSED = {program for program, target in KNOWN_FAILURES if target == ""}

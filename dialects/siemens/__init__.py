@@ -106,6 +106,11 @@ class Siemens(Dialect):
     the tool compensations": tool length compensation is performed on the first traversing motion of the axis
     it acts on (G0/G1)]. Whether an incremental first motion also takes it, as LinuxCNC's rule here does not,
     is not stated [?]."""
+    MOTION_AT_START = "linear"
+    """G1 before a program programs a motion: the standard reset value of G group 1 (machine data MD20150
+    ``$MC_GCODE_RESET_VALUES``, which a machine builder may set to G0: the set-up's ``<Controller
+    startMotion="rapid"/>``) [V: SINUMERIK ONE NC programming manual 12/2019 6FC5398-2EP40-0BA0 p.1247, "G group
+    1", G1 marked in the STD column]. Its moves need a feed rate, as any G1 (alarm 10860)."""
     COMMENTS = CommentSyntax(parens=False, semicolon=True)
     """``;`` to the end of the block [K: 802D manual p.133]; ``(`` is an expression's."""
     PROGRAMS = True

@@ -27,9 +27,14 @@ class SiemensProgramSyntax(ProgramSyntax):
     VARIABLES: ClassVar[VariablesFactory] = SiemensVariables
     LIBRARY_FILES: ClassVar[tuple[str, ...]] = ("{name}.SPF", "{name}.spf")
     SUBPROGRAM_RULES: ClassVar[SubprogramRules] = SubprogramRules(forward_search=False, main_return_words=None,
-                                                                  main_return_refused=True)
+                                                                  main_return_refused=True, jumps_past_end=True)
     """``RET``/``M17`` end a subprogram; in the main program they are refused [?: the manuals we read do not
-    say what they do there]."""
+    say what they do there]. A jump in the main program may go to a label or block number after its M30/M2
+    and runs on from there to the next end that runs: with jumps, the end of program need not be its last
+    block [K: SINUMERIK ONE NC programming manual 12/2019 4.1.5.2 "Program jumps to jump markers", as cited by
+    CEAD-group/nc-gcode-interpreter (python/tests/test_jumps.py, README "Program Jumps"), whose
+    examples/goto.mpf jumps by GOTOF to a label after M30 and runs it (examples/goto.csv)]. In a subprogram a
+    jump past its M17/RET stays refused [?: the note speaks of M2/M30]."""
     RUN_BEFORE_KEEP: ClassVar[bool] = True
     """An R parameter never set stops the run here but reads vacant (Fanuc) or 0 (LinuxCNC): a program kept
     symbolically must run here first, or the target could move where SINUMERIK stops."""

@@ -17,7 +17,10 @@ Over 600 lines: one class carries the frame through every kind of block, and it 
 for every translation to another dialect); the rules of each command live in ``frame``.
 
 The program position is tracked in program coordinates (mm), None where unknown; a move that needs an
-unknown coordinate (an axis it omits, that the frame mixes into the ones it programs) is a located error.
+unknown coordinate (an axis it omits, that the frame mixes into the ones it programs) is a located error. On
+a controller that keeps the machine point at a tool offset change the position takes the change
+(``tool_change``), so it is the current point the controller reads: what a G92 sets its offset from and
+what a program reads as its position (``postproc.frames.parameters``).
 
 A program kept symbolically (its loops, jumps and calls written for a target that has them) runs in
 another order than its text: there a frame command that may not run once where the text has it
@@ -38,10 +41,12 @@ from mypy_extensions import mypyc_attr
 
 from ..context import Context
 from ..dialect import Dialect
+from ..compensation.tool_length import ToolLength
+from ..compensation.tool_table import ENTRY, TABLES, ToolTable
 from ..errors import PostprocError, ProgramError, UnsupportedError
 from ..control import ASSIGN, CONTROL
 from ..expr import Binary, Expr, Num
-from ..ir import AXES, Block, Comments, CompoundMotion, CutterCompensation, DataSetting, Motion, Section
+from ..ir import AXES, Block, Comments, CompoundMotion, CutterCompensation, DataSetting, Motion, Section, ToolLengthOffset
 from ..state import MM_PER_INCH, ModalState, changes_nothing
 from .affine import EXACT, INDEX, XYZ
 from .frame import PLANE_AXES, Frame, Position, chain_component
@@ -56,6 +61,8 @@ RUN_KEY: Final = "frames.run"
 """``ctx.state.extra`` key of the frame and program position the lowering has reached (``FrameRun``)."""
 
 MEASURED_ENTRIES: Final = frozenset(("tool_entry_at_point", "tool_entry_at_point_9"))
+TOOL_TABLES: Final = frozenset((ENTRY, *TABLES))
+"""Tool table writes a later tool offset change reads (``FrameEvaluator.tool_entry``)."""
 """Tool table entries a program measures where the tool stands (LinuxCNC's, ``postproc.simulate.moves.touch_off``)."""
 
 
@@ -63,13 +70,31 @@ MEASURED_ENTRIES: Final = frozenset(("tool_entry_at_point", "tool_entry_at_point
 class FrameRun:
     """What the evaluation has reached: copied with the reading state into a translation's dry run."""
 
-    __slots__ = ("frame", "p", "g5x", "symbolic", "work", "order")
+    __slots__ = ("frame", "p", "g5x", "symbolic", "work", "order", "unsettled", "scale", "cutter", "tools", "sideways",
+                 "tools_known", "table_known")
 
     def __init__(self, p: Position) -> None:
         self.frame: Frame | None = None
         """None until the first frame command (or a rotation of a work system)."""
         self.p = p
         """The program position, mm (degrees on rotary axes), None where unknown."""
+        self.unsettled: set[str] = set(p)
+        """Axes not programmed absolutely since the start: their ``p`` is the set-up's assumed start, not what
+        the machine reads as its current point (a read of the current position there is the machine's,
+        ``postproc.frames.parameters``)."""
+        self.tools: ToolLength | None = None
+        """The tool length offset in force (made at the first change), on a controller that keeps the machine
+        point at a change (``tool_change``)."""
+        self.sideways: dict[str, float] = {}
+        """The X and Y offsets of the tool entry in force (mm)."""
+        self.tools_known = True
+        """The offsets in force are known (False after a change this evaluation cannot work out)."""
+        self.table_known = True
+        """The tool table's entries are known (False after a program's entry not worked out here)."""
+        self.scale = 1.0
+        """mm per program length unit where the program stands (G20: 25.4)."""
+        self.cutter = False
+        """Cutter radius compensation is on where the program stands."""
         self.g5x: dict[int, dict[str, float]] = {}
         """Work offsets a G10 in the program set, mm (the rest are unknown here)."""
         self.symbolic = False
@@ -121,7 +146,7 @@ class FrameEvaluator:
         self.frame = run.frame
         self.p = run.p
         self.g5x = run.g5x
-        self.scale = MM_PER_INCH if self.modal.units == "inch" else 1.0
+        self.scale = run.scale = MM_PER_INCH if self.modal.units == "inch" else 1.0
         self.plain_mm = self.scale == 1.0 and self.modal.distance == "absolute"
         """Absolute millimetres: a move's words are its position (``run``'s common case)."""
 
@@ -131,6 +156,7 @@ class FrameEvaluator:
         dialect, frames or not)."""
         report = self.ctx.diagnostics.error
         watched, moves, p, state = _WATCHED, _MOVES, self.p, self.ctx.state
+        unsettled = self.reached.unsettled
         for block in blocks:
             s = block.sections
             if not s:
@@ -145,6 +171,8 @@ class FrameEvaluator:
                     continue
                 if isinstance(m, Motion) and self.plain_mm and m.mode in moves and not state.symbolic:
                     p.update(m.axes)  # type: ignore[arg-type]  # numbers: nothing is symbolic yet
+                    if unsettled:
+                        unsettled.difference_update(m.axes)
                     if self.reached.symbolic:
                         self.targets(s)
                     yield block
@@ -169,6 +197,8 @@ class FrameEvaluator:
         changed = False
         if not changes_nothing(s):
             self.settings(block, s)  # first: a G10 in a block with G20 gives inches [V: rs274 order of execution]
+        if "ToolLengthOffset" in s or "CutterCompensation" in s or "DynamicCutterCompensation" in s:
+            self.current_point_reads(s)
         frame = self.frame
         if "DataSetting" in s:
             changed = self.data_setting(block, s)
@@ -190,6 +220,57 @@ class FrameEvaluator:
         if changed and self.rewrite:
             block.changed()
 
+    def current_point_reads(self, s: dict[str, Section]) -> None:
+        """What the program position and a read of it (``postproc.frames.parameters``) must know of the
+        block: a tool offset change (``tool_change``); cutter compensation on forbids the read (rs274: "Cannot
+        read current position with cutter radius compensation on" [V: ``interp_read.cc``
+        ``read_integer_parameter``])."""
+        length = s.get("ToolLengthOffset")
+        if isinstance(length, ToolLengthOffset) and self.ctx.length_at_axis:
+            self.tool_change(length)  # before the block's motion [V: rs274 order of execution]
+        cc = s.get("CutterCompensation")
+        if cc is not None:
+            self.reached.cutter = getattr(cc, "mode", "off") != "off"
+        if "DynamicCutterCompensation" in s:
+            self.reached.cutter = True
+
+    def tool_change(self, length: ToolLengthOffset) -> None:
+        """A tool offset change on a controller that keeps the machine point until the axis is programmed
+        (``Dialect.LENGTH_AT_PROGRAMMED_AXIS``): the program position moves by the change, ``current_z + old -
+        new`` [V: LinuxCNC ``interp_convert.cc`` ``convert_tool_length_offset``, on every axis of the entry;
+        rs274 ``G43 H1`` then ``G92 Z0`` sets the offset from the moved point], as the simulation's
+        programmed point does (``postproc.simulate.moves``). Where the new offset is not known here (a computed
+        register, one the set-up lacks, an entry measured where the tool stands), X, Y and Z are unknown."""
+        run, p = self.reached, self.p
+        if run.tools is None:
+            run.tools = ToolLength(ToolTable(self.ctx.setup))
+        register = length.register
+        old_z, old_side = run.tools.offset, run.sideways
+        try:
+            if isinstance(register, Expr) or isinstance(length.length, Expr) or (
+                    not run.table_known and length.mode in ("positive", "negative")):
+                raise ProgramError("a computed tool offset, or an entry not known here")
+            run.tools.change(length.mode, register, length.length, self.scale)
+            side = run.tools.table.sideways(register) if length.mode == "positive" and isinstance(register, int) \
+                else {}
+        except PostprocError:
+            run.tools_known = False
+            for axis in XYZ:
+                p[axis] = None
+            return
+        if not run.tools_known:
+            run.tools_known = True  # known again from here; the point before stays unknown
+            for axis in XYZ:
+                p[axis] = None
+        changes = {"Z": run.tools.offset - old_z}
+        for axis in set(side) | set(old_side):
+            changes[axis] = changes.get(axis, 0.0) + side.get(axis, 0.0) - old_side.get(axis, 0.0)
+        run.sideways = side
+        for axis, change in changes.items():
+            here = p.get(axis)
+            if change and here is not None:
+                p[axis] = here - change
+
     def targets(self, s: dict[str, Section]) -> None:
         """The jump targets a block of the symbolic part carries (``RunOrder``)."""
         label = s.get("Label")
@@ -207,7 +288,7 @@ class FrameEvaluator:
         modal.apply(s)
         if "WorkOffset" in s:
             self.reached.work = modal.work_offset
-        self.scale = MM_PER_INCH if modal.units == "inch" else 1.0
+        self.scale = self.reached.scale = MM_PER_INCH if modal.units == "inch" else 1.0
         self.plain_mm = self.scale == 1.0 and modal.distance == "absolute"
         frame = self.frame
         if modal.plane != plane and frame is not None and frame.rotation is not None:
@@ -235,6 +316,8 @@ class FrameEvaluator:
         the active system moves the program position (the tool stays)."""
         setting = s["DataSetting"]
         assert isinstance(setting, DataSetting)
+        if self.ctx.length_at_axis and (setting.table in TOOL_TABLES or setting.table in MEASURED_ENTRIES):
+            self.tool_entry(setting)
         if setting.table in MEASURED_ENTRIES and self.frame is not None and not self.frame.plain():
             # the entry is the tool's point in the work system without the tool offset, less the values
             # ([V] LinuxCNC convert_setup_tool): that point under the program's shift or rotation is not
@@ -286,6 +369,42 @@ class FrameEvaluator:
             _note(s, f"{setting.text} evaluated")
         return True
 
+    def tool_entry(self, setting: DataSetting) -> None:
+        """A program's tool table entry, which a later offset change reads (``tool_change``). One measured
+        where the tool stands (``G10 L10``) is the current point plus the offset in force, less the word [V:
+        LinuxCNC ``convert_setup_tool``; ``postproc.lowering.measured_entries``]; where that is not known here
+        (work system 9's ``L11``, an unknown point, a computed word), every offset read after it is unknown."""
+        run = self.reached
+        if run.tools is None:
+            run.tools = ToolLength(ToolTable(self.ctx.setup))
+        if setting.table in MEASURED_ENTRIES:
+            setting = self._measured(setting)
+        if any(isinstance(v, Expr) for v in setting.values.values()) or setting.table in MEASURED_ENTRIES:
+            run.table_known = False
+            return
+        try:
+            run.tools.table.write(setting, self.scale)
+        except PostprocError:
+            run.table_known = False
+
+    def _measured(self, setting: DataSetting) -> DataSetting:
+        """The whole entry a measured one sets (unchanged where it is not worked out here)."""
+        run = self.reached
+        if setting.table != "tool_entry_at_point" or not run.tools_known or (
+                self.frame is not None and not self.frame.plain()):
+            return setting
+        offsets = {"Z": run.tools.offset if run.tools is not None else 0.0, **run.sideways}
+        values: dict[str, float | Expr] = {}
+        for letter, value in setting.values.items():
+            here = self.p.get(letter)
+            if letter not in XYZ:
+                values[letter] = value
+            elif isinstance(value, Expr) or here is None:
+                return setting
+            else:
+                values[letter] = (here + offsets.get(letter, 0.0)) / self.scale - float(value)
+        return DataSetting(setting.family, ENTRY, setting.index, values, False, setting.text)
+
     def _frame(self, rules: str) -> Frame:
         if self.frame is None:
             self.frame = self.reached.frame = Frame(rules)
@@ -327,6 +446,7 @@ class FrameEvaluator:
                 raise ProgramError(f"{change.describe()} while a local coordinate system is in force is not simulated "
                                    "(whether it cancels that system is not settled [?]): cancel it first")
             frame.set_origin(_axes(words), p, change.describe())
+            self.reached.unsettled.difference_update(words)  # the current point now reads the words
         elif kind in ("origin_clear", "origin_suspend"):
             frame.clear_origin(p, kind == "origin_suspend")
         elif kind == "origin_restore":
@@ -467,6 +587,7 @@ class FrameEvaluator:
                 p[axis] = None if here is None else here + v
             else:
                 p[axis] = v
+                self.reached.unsettled.discard(axis)
 
     def carry(self, block: Block, s: dict[str, Section], frame: Frame) -> bool:
         """Rewrite the block's points into work coordinates; True when anything changed."""
@@ -579,6 +700,7 @@ class FrameEvaluator:
                     p[axis] = None
                 else:
                     p[axis] = value
+                    self.reached.unsettled.discard(axis)
         if mode not in ("cw", "ccw"):
             return Motion(mode, out)
         return self.arc(m, out, mode)
@@ -679,7 +801,8 @@ _FANUC_FORBIDDEN: Final = "{what} while coordinate rotation, scaling or a mirror
 
 
 _WATCHED: Final = frozenset(("Units", "Plane", "DistanceMode", "WorkOffset", "DataSetting", "FrameChange", ASSIGN,
-                             CONTROL, "CutterCompensation", "CompoundMotion", "MachineCoordinates"))
+                             CONTROL, "CutterCompensation", "CompoundMotion", "MachineCoordinates",
+                             "ToolLengthOffset", "DynamicCutterCompensation"))
 """Sections that make a block more than a move to follow, before any frame."""
 _MOVES: Final = frozenset(("rapid", "linear", "cw", "ccw"))
 

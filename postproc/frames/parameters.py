@@ -8,6 +8,13 @@ machine), or where the program has not set a value itself (a work offset from th
 value is known only to the machine: ``None``, which the family's table reports by name.
 
 Lengths are in mm, angles in degrees; the family's table converts them to its own units.
+
+The current position (LinuxCNC's ``#5420``-``#5428``) is the program position the frame evaluation follows
+(``FrameRun.p``), in program units where the program stands: a read-only view, no second simulation. It
+is known only where the machine's current point is what the simulation holds: every axis read was
+programmed absolutely since the start (before that, ``p`` is the set-up's assumed start) and since the
+last tool offset change, with no move in machine coordinates, reference return, cycle or change of work
+system after it (those leave ``p`` unknown).
 """
 
 from __future__ import annotations
@@ -62,18 +69,37 @@ class FrameReadings:
             return None
         return run.g5x.get(index, {}).get(axis)
 
+    def position(self, axis: str) -> float | None:
+        """The current point on ``axis`` in program units (degrees on a rotary axis) where the simulation
+        knows it (the module docstring); None where only the machine does."""
+        run = self._run()
+        if run is None or axis in run.unsettled:
+            return None
+        here = run.p.get(axis)
+        if here is None:
+            return None
+        return here / run.scale if axis in "XYZUVW" else here
+
+    def compensating(self) -> bool:
+        """Cutter radius compensation is on where the program stands (False where the frame is not
+        evaluated: the read is then the machine's anyway)."""
+        run = self._run()
+        return run is not None and run.cutter
+
     def state(self) -> Hashable:
         """Everything the readings above can answer, as one comparable value (the interpreter's repeated-state
         check compares it between two passes of a loop head: a loop whose G10 or G92 changes what the
-        program reads is not repeating itself)."""
+        program reads is not repeating itself, nor one whose moves change the current position)."""
         run = self._run()
         if run is None:
             return None
         frame = run.frame
         g5x = tuple(sorted((n, tuple(sorted(v.items()))) for n, v in run.g5x.items()))
+        point = (tuple(sorted(run.p.items())), tuple(sorted(run.unsettled)), run.scale, run.cutter)
         if frame is None or frame.rules != "rs274":
-            return (run.work, g5x)
-        return (run.work, g5x, frame.applied, tuple(sorted(frame.saved.items())), tuple(sorted(frame.turns.items())))
+            return (run.work, g5x, point)
+        return (run.work, g5x, frame.applied, tuple(sorted(frame.saved.items())), tuple(sorted(frame.turns.items())),
+                point)
 
     def work_rotation(self, index: int) -> float | None:
         """Work system ``index``'s XY rotation where the program set it (``G10 L2 R``)."""

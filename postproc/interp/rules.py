@@ -37,6 +37,10 @@ class SubprogramRules:
     call_levels: int | None = None
     """The controller's own bound on nested calls, where it has one below the set-up's ``callDepth``: a call
     deeper than that is refused where the controller refuses it (grblHAL: 10). None: only the set-up's."""
+    jumps_past_end: bool = False
+    """A jump in the main program may land on a block after its end (M30): the run goes on from there, through
+    the rest of the file, until a program end runs (SINUMERIK). False: such a jump is refused, since where
+    the controller runs from there is not modelled."""
     flow_stack: int | None = None
     """The controller's stack of open flow constructs, where it has one: each loop, condition and call open
     where a construct opens is one entry (grblHAL: 20). A construct that would be one more is refused where

@@ -182,17 +182,32 @@ class RunState:
             raise ProgramError(f"{what} '{source_text(block)}' exceeds the set-up's bound of {n} loop iterations, "
                                f"jumps and calls in total (<Limits loopIterations=\"{n}\"/>)")
 
-    @staticmethod
-    def _within(frame: Frame, target: int, block: Block) -> None:
+    def _within(self, frame: Frame, target: int, block: Block) -> None:
         """Refuse a jump past the end of the running program (the main program's M30, a subprogram's
         last block): the run here would end there silently, but a controller that keeps the blocks after
         the end (Fanuc searches its whole program for the number) runs on from the target, and a
-        translation that comments them out (``postproc.lowering.program_end``) jumps nowhere."""
+        translation that comments them out (``postproc.lowering.program_end``) jumps nowhere. Where the
+        dialect's rules say how its controller runs on (``SubprogramRules.jumps_past_end``), the main
+        program's run takes in the blocks up to the next program in the file (or its end): it ends where a
+        program end runs."""
+        if target >= frame.end and self.rules.jumps_past_end and frame is self.frames[0] \
+                and frame.program is self.store.main:
+            frame.end = self._next_program(frame.program, target)
         if target >= frame.end:
             blocks = frame.program.blocks
             raise ProgramError(f"'{source_text(block)}' jumps to line {blocks[target].line}, past the end of the "
                                f"program at line {blocks[frame.end - 1].line}: where a controller runs from "
                                "there is not modelled")
+
+    @staticmethod
+    def _next_program(program: Program, after: int) -> int:
+        """The position of the first program start or tape mark after ``after`` (``len(blocks)``: none)."""
+        blocks = program.blocks
+        for pos in range(after + 1, len(blocks)):
+            sections = blocks[pos].sections
+            if "ProgramStart" in sections or "TapeMark" in sections:
+                return pos
+        return len(blocks)
 
     def _missing_sequence(self, program: Program, number: int, text: str) -> str:
         message = f"'{text}': no block numbered {number} in {program.file}"

@@ -10,9 +10,8 @@ point plus the tool offset in force. This step follows both where the translatio
 
 * the current point: the one the frame evaluation follows (``postproc.frames.lowering.FrameRun.p``: the
   points as programmed, None where unknown: after a move in machine coordinates, a cycle, a change of work
-  system), corrected by what a change of the offset in force moved it since the axis was last programmed
-  absolutely: on a controller that moves nothing at the change (``LENGTH_AT_PROGRAMMED_AXIS``) the machine
-  stays and the current point takes the change, as in the simulation; unknown after a reference return
+  system), which on a controller that moves nothing at an offset change (``LENGTH_AT_PROGRAMMED_AXIS``)
+  takes the change, as in the simulation (``FrameEvaluator.tool_change``); unknown after a reference return
   until the axis is programmed absolutely;
 * the offset in force: ``G43 H n`` reads entry n (the program's own ``G10 L1`` values, else the set-up's
   ``<Tool length>``), ``G49`` none.
@@ -49,7 +48,7 @@ def write_measured_entries(blocks: Iterator[Block], ctx: Context, target: type[D
     run = _Run(ctx)
     for block in blocks:
         s = block.sections
-        if not run.pending and not run.homed and s.keys().isdisjoint(_WATCHED):
+        if not run.homed and s.keys().isdisjoint(_WATCHED):
             m = s.get("Motion")
             if m is None or m.mode not in _HOME:  # type: ignore[attr-defined]
                 yield block  # the common block: the frame evaluation follows its point
@@ -75,8 +74,7 @@ _WATCHED: Final = frozenset(("ToolLengthOffset", "DataSetting", "Units", "Distan
 
 @mypyc_attr(allow_interpreted_subclasses=True)
 class _Run:
-    """The offsets in force (mm) and how far the program's current point has moved from the one the frame
-    evaluation follows (``postproc.frames.lowering.FrameRun.p``, mm: the points as programmed)."""
+    """The offsets in force (mm) and the axes a reference return took home."""
 
     def __init__(self, ctx: Context) -> None:
         self.ctx = ctx
@@ -84,9 +82,6 @@ class _Run:
         self.keeps_machine_point = ctx.length_at_axis
         self.offset: dict[str, float] | None = {}
         """The tool offsets in force along X, Y, Z (mm); None: not known here."""
-        self.pending: dict[str, float] = {}
-        """Per axis, what an offset change since the axis was last programmed absolutely moved the current
-        point by (the machine stays where the offset changes)."""
         self.homed: set[str] = set()
         """Axes a reference return took home: their point is the machine's until programmed absolutely."""
         self.scale = 1.0
@@ -115,8 +110,7 @@ class _Run:
                 raise UnsupportedError(f"{setting.describe()} where the tool's {letter} is not known here (after a "
                                        "reference return, a move in machine coordinates, a cycle or a change of work "
                                        "offset): program a move to a known point first")
-            now = here + self.pending.get(letter, 0.0)
-            values[letter] = (now + self.offset.get(letter, 0.0)) / self.scale - float(value)
+            values[letter] = (here + self.offset.get(letter, 0.0)) / self.scale - float(value)
         return DataSetting(setting.family, ENTRY, setting.index, values, False, setting.text)
 
     def follow(self, block: Block) -> None:
@@ -136,7 +130,6 @@ class _Run:
             self.homed.update(m.axes or AXES)
         elif isinstance(m, Motion) and m.mode is not None and self.absolute and "MachineCoordinates" not in s:
             for axis in m.axes:
-                self.pending.pop(axis, None)
                 self.homed.discard(axis)
         length = s.get("ToolLengthOffset")
         if length is not None:
@@ -151,12 +144,6 @@ class _Run:
                 new = None
         elif mode != "cancel":
             new = None
-        old = self.offset
-        if self.keeps_machine_point and old is not None and new is not None:
-            for axis in AXES:
-                change = old.get(axis, 0.0) - new.get(axis, 0.0)
-                if change:
-                    self.pending[axis] = self.pending.get(axis, 0.0) + change
-        elif self.keeps_machine_point and old != new:
+        if self.keeps_machine_point and self.offset is None:
             new = None  # the point's move at the change is not known
         self.offset = new

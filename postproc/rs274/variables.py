@@ -81,6 +81,17 @@ NGC_WORK_WORDS = 10
 NGC_FRAME_PARAMETERS = range(NGC_ORIGIN_APPLIED,
                              NGC_WORK_FIRST + NGC_WORK_STRIDE * (NGC_WORK_SYSTEMS - 1) + NGC_WORK_WORDS)
 """Every offset parameter (#5210-#5219, #5220, each work system's #5221..#5390)."""
+NGC_POSITION_FIRST = 5420
+"""#5420-#5428: the current position on X Y Z A B C U V W, in the active coordinate system with every offset
+(G5x, G52/G92, tool offset) and in the program's units, set from ``current_x``.. as each block is read; refused
+with cutter compensation on [V: ``interp_parameter_def.hh``, ``rs274ngc_pre.cc`` ``Interp::read``,
+``interp_read.cc`` ``read_integer_parameter``; LinuxCNC docs "Parameters"]."""
+NGC_POSITION = range(NGC_POSITION_FIRST, NGC_POSITION_FIRST + len(NGC_AXES))
+NGC_POSITION_NAMES = {f"_{axis.lower()}": axis for axis in NGC_AXES}
+"""``#<_x>``..``#<_w>``: the same current position, read where the expression is evaluated, without the
+cutter compensation check [V: ``interp_namedparams.cc`` ``NP_X``..: ``_setup.current_x``..]."""
+NGC_MACHINE_READS = frozenset((*NGC_FRAME_PARAMETERS, *NGC_POSITION))
+"""The parameters a run reads from the frame evaluation: its offsets and the current position."""
 
 
 class MacroBVariables:
@@ -225,7 +236,25 @@ class NgcVariables:
             found = self.read_frame(key)
             if found is not None:
                 return found
+        elif isinstance(key, int) and key in NGC_POSITION:
+            return self.read_position(key)
+        elif isinstance(key, str) and key in NGC_POSITION_NAMES:
+            return self.read_position(key)
         return self._store(key).get(key)  # type: ignore[arg-type]
+
+    def read_position(self, key: int | str) -> float:
+        """#5420-#5428 or ``#<_x>``..: the current point where the run's frame evaluation knows it
+        (``FrameReadings.position``), else the machine's (an error naming it)."""
+        axis = NGC_POSITION_NAMES[key] if isinstance(key, str) else NGC_AXES[key - NGC_POSITION_FIRST]
+        frames = self.frames
+        if isinstance(key, int) and frames is not None and frames.compensating():
+            raise EvalError(f"#{key} (current position) cannot be read with cutter radius compensation on "
+                            "(rs274 refuses it)")
+        found = None if frames is None or (isinstance(key, str) and frames.compensating()) \
+            else frames.position(axis)
+        if found is None:
+            raise EvalError(f"{_spell(key)} (current position) {MACHINE_ONLY}: {POSITION_UNKNOWN}")
+        return found
 
     def snapshot(self) -> Hashable | None:
         """The parameters the running level reads (numbered, named and global), and where the run's frame
@@ -309,6 +338,11 @@ class NgcVariables:
     def returned(self, value: Value) -> None:
         self.globals_["_value_returned"] = 0.0 if value is None else 1.0
         self.globals_["_value"] = 0.0 if value is None else value
+
+
+POSITION_UNKNOWN = ("the axis is not programmed absolutely since the start or the last tool offset change, or a "
+                    "move in machine coordinates, a reference return, a cycle or a change of work system left "
+                    "its point unknown here")
 
 
 def _spell(key: VarKey) -> str:

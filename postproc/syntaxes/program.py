@@ -72,9 +72,10 @@ class ProgramSyntax(Syntax):
     """Words that end the program (nothing after them runs), e.g. ``("M", 30)``."""
     MACRO_LOCALS: ClassVar[int] = 0
     """Highest local variable a call argument may set (0: calls pass no numbered arguments)."""
-    FRAME_PARAMETERS: ClassVar[range] = range(0)
-    """The numbers of the family's frame parameters (LinuxCNC #5210-#5390): a program that reads one is
-    flattened where its frame is evaluated (``postproc.frames.parameters``); none here."""
+    FRAME_PARAMETERS: ClassVar[frozenset[int]] = frozenset()
+    """The numbers of the family's parameters read from the frame evaluation (LinuxCNC's offsets #5210-#5390
+    and current position #5420-#5428): a program that reads one is flattened where its frame is evaluated
+    (``postproc.frames.parameters``); none here."""
     VARIABLES: ClassVar[VariablesFactory | None] = None
     """The variable model (and vacancy rules) of the dialect's family, e.g. ``postproc.rs274.variables``'
     ``MacroBVariables``; None: the dialect runs no program that computes (one is a located error)."""

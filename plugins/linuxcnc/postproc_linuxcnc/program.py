@@ -17,7 +17,7 @@ from postproc.frames.parameters import FrameReadings
 from postproc.interp.rules import SubprogramRules
 from postproc.interp.variables import Variables
 from postproc.rs274.ngc_program import INTEGER_TOLERANCE, NgcProgramSyntax
-from postproc.rs274.variables import NGC_FRAME_PARAMETERS, NgcVariables
+from postproc.rs274.variables import NGC_MACHINE_READS, NgcVariables
 
 
 CALL_LEVELS: Final = 9
@@ -31,7 +31,7 @@ class LinuxcncProgramSyntax(NgcProgramSyntax):
 
     XNAME = "LinuxcncProgramSyntax"
     __slots__ = ()
-    FRAME_PARAMETERS: ClassVar[range] = NGC_FRAME_PARAMETERS
+    FRAME_PARAMETERS: ClassVar[frozenset[int]] = NGC_MACHINE_READS
     LIBRARY_FILES: ClassVar[tuple[str, ...]] = ("{name}.ngc",)
     SUBPROGRAM_RULES: ClassVar[SubprogramRules] = SubprogramRules(forward_search=True,
                                                                   main_return_words=(("M", "2"),),
@@ -42,7 +42,7 @@ class LinuxcncProgramSyntax(NgcProgramSyntax):
 
     def variables(self, ctx: Context, increment: Callable[[], float]) -> Variables:
         """The offset parameters (#5210-#5219, a work system's #5221..) read the run's frame, in the
-        machine's length units (``NgcVariables``)."""
+        machine's length units, and the current position (#5420-#5428) its program position (``NgcVariables``)."""
         return NgcVariables(increment, FrameReadings(ctx), ctx.setup.machine.mm())
 
     def spell_evaluated(self, letter: str, value: float) -> str:
