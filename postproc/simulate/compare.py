@@ -93,30 +93,33 @@ class Report:
 _AXIS_KEYS: Final = frozenset("xyzabcuvw")
 
 
-def _axes(ev: Event, controlled: Event | None) -> dict[str, float]:
+def _axes(ev: Event, controlled: Event | None, start: dict[str, float] | None = None,
+          steps: list[float] | None = None) -> dict[str, float]:
     """The end point of a move event, in its order (the machine's axes): its controlled point where it has
     one, as ``_controlled`` gives it (the controlled axes replace the programmed ones in place, any other
     follows). A number is converted as its type: compiled, ``float(v)`` of a value of unknown type is a call
-    of the builtin through Python (~250 instructions)."""
+    of the builtin through Python (~250 instructions). ``steps``: receives ``end - start`` axis by axis in the
+    same pass (a straight move's; an axis ``start`` lacks counts from 0)."""
     end: dict[str, float] = {}
-    if controlled is None:
-        for k, v in ev.items():
-            if len(k) == 1 and k in _AXIS_KEYS:  # (the length first: "line", "move"... need no set look-up)
-                end[k] = _real(v)
-        return end
     matched = 0
     for k, v in ev.items():
-        if len(k) == 1 and k in _AXIS_KEYS:
-            c = controlled.get(k)
+        if len(k) == 1 and k in _AXIS_KEYS:  # (the length first: "line", "move"... need no set look-up)
+            c = None if controlled is None else controlled.get(k)
             if c is None:
-                end[k] = _real(v)
+                x = _real(v)
             else:
-                end[k] = _real(c)
+                x = _real(c)
                 matched += 1
-    if matched != len(controlled):  # an arc's centre, or an axis the programmed point does not name
-        for k, c in controlled.items():
+            end[k] = x
+            if steps is not None:
+                steps.append(x - (0.0 if start is None else start.get(k, 0.0)))
+    if controlled is not None and matched != len(controlled):  # an arc's centre, or an axis the programmed
+        for k, c in controlled.items():                        # point does not name
             if k in _AXIS_KEYS and k not in end:
-                end[k] = _real(c)
+                x = _real(c)
+                end[k] = x
+                if steps is not None:
+                    steps.append(x - (0.0 if start is None else start.get(k, 0.0)))
     return end
 
 
@@ -183,22 +186,14 @@ def _move(ev: Event, start: dict[str, float]) -> Move:
     """A move event as a ``Move`` from ``start``, its controlled point the end (``_controlled``, read in place:
     copying each event that has one was a dictionary a move)."""
     controlled: Event | None = ev.get("controlled")
-    end = _axes(ev, controlled)
     kind = ev["move"]
     f = ev.get("f")
     line = ev["line"]
     if kind == "cw" or kind == "ccw":
-        return _arc(ev, kind, start, end, None if f is None else _real(f), line, controlled)
-    steps = _steps(start, end)
-    return _straight(kind, start, end, None if f is None else _real(f), line, steps, _norm(steps))
-
-
-def _steps(start: dict[str, float], end: dict[str, float]) -> list[float]:
-    """``end - start`` axis by axis, in ``end``'s order (an axis ``start`` lacks counts from 0)."""
+        return _arc(ev, kind, start, _axes(ev, controlled), None if f is None else _real(f), line, controlled)
     steps: list[float] = []
-    for k, v in end.items():
-        steps.append(v - start.get(k, 0.0))
-    return steps
+    end = _axes(ev, controlled, start, steps)
+    return _straight(kind, start, end, None if f is None else _real(f), line, steps, _norm(steps))
 
 
 def _straight(kind: str, start: dict[str, float], end: dict[str, float], f: float | None, line: int, steps: list[float],
@@ -356,8 +351,8 @@ def normalise(events: Iterable[Event], start: dict[str, float], eps: float,
             run = m
             continue
         # a straight move: merged into the run without a ``Move`` of its own where it continues it
-        end = _axes(ev, ev.get("controlled"))
-        steps = _steps(pos, end)
+        steps: list[float] = []
+        end = _axes(ev, ev.get("controlled"), pos, steps)
         square = 0.0
         for step in steps:
             square += step * step
@@ -619,17 +614,28 @@ def _differ(a: Move | Event | None, b: Move | Event | None, report: Report) -> s
     if not _same_feed(a.f, b.f):
         return f"IN feeds at F{a.f:g}, OUT at F{b.f:g} ({describe(a)})"
     b_end = b.end
-    apart: list[float] = []  # the axes both have: math.dist's norm
+    n = 0  # the axes both have (math.dist's norm): the first three in locals, any further one in a list
+    d0 = d1 = d2 = 0.0
+    more: list[float] | None = None
     for k, v in a.end.items():
         w = b_end.get(k)
         if w is not None:
-            apart.append(v - w)
+            if n == 0:
+                d0 = v - w
+            elif n == 1:
+                d1 = v - w
+            elif n == 2:
+                d2 = v - w
+            else:
+                if more is None:
+                    more = []
+                more.append(v - w)
+            n += 1
     report.moves += 1
-    n = len(apart)
-    if report.where is not None and (a.centre is None or b.centre is None) and n <= 3 and not _beyond(
-            apart[0] if n > 0 else 0.0, apart[1] if n > 1 else 0.0, apart[2] if n > 2 else 0.0, n, None,
-            report.max_deviation):
+    if report.where is not None and (a.centre is None or b.centre is None) \
+            and not _beyond(d0, d1, d2, n, more, report.max_deviation):
         return None  # no further apart than the pair furthest apart so far (measured only where it is)
+    apart = [d0, d1, d2][:n] if more is None else [d0, d1, d2, *more]
     dev = _norm(apart)
     if a.centre is not None and b.centre is not None:
         dev = max(dev, _hypot(a.centre[0] - b.centre[0], a.centre[1] - b.centre[1]),
