@@ -12,6 +12,7 @@ import math
 from itertools import zip_longest
 from typing import Any
 
+import pytest
 from hypothesis import given, settings, strategies as st
 
 from postproc.simulate.compare import compare, normalise
@@ -133,3 +134,36 @@ def test_deviation_is_the_largest_pair_apart(path: tuple[dict[str, float], list[
             best = (dev, (a.last_line, b.last_line))
     assert report.moves == len(pairs)
     assert (report.max_deviation, report.where) == (best if best is not None else (0.0, None))
+
+
+def _zigzag(moved: dict[int, float]) -> list[str]:
+    """A Fanuc program of 60 feeds that each turn (no two merge), the Y of the feeds on the lines in
+    ``moved`` (program line -> mm) moved."""
+    text = ["%", "O0001", "G21 G90 G17", "G00 X0. Y0. Z5.", "G01 Z-1. F500."]
+    for n in range(60):
+        line = len(text) + 1
+        y = (n % 2) * 3.0 + moved.get(line, 0.0)
+        text.append(f"X{n + 1}. Y{y:.4f}")
+    text += ["M30", "%"]
+    return [t + "\n" for t in text]
+
+
+def _verify(a: list[str], b: list[str]) -> Any:
+    from postproc.simulate.verify import verify_lines
+    return verify_lines(a, b, file_in="in.nc", file_out="out.nc", source="fanuc", target="fanuc", tolerance=0.001)
+
+
+def test_one_move_moved_deep_in_a_program_fails_there() -> None:
+    """Past many pairs that agree (where the deviation is no longer measured: ``_beyond``), one point moved
+    just beyond the tolerance fails at its lines; just within, it passes; of two equal deviations the first
+    is reported."""
+    same = _zigzag({})
+    report = _verify(same, _zigzag({40: 0.0011}))
+    assert not report.ok and report.mismatch is None and report.where == (40, 40)
+    assert report.max_deviation == pytest.approx(0.0011)
+    assert report.moves == 62  # the plunge, 60 feeds, the rapid before them
+    within = _verify(same, _zigzag({40: 0.0009}))
+    assert within.ok and within.where == (40, 40)
+    twice = _verify(same, _zigzag({30: 0.002, 50: 0.002}))
+    assert not twice.ok and twice.where == (30, 30)
+    assert _verify(same, same).ok and _verify(same, same).where == (4, 4)
