@@ -1,4 +1,4 @@
-"""verify's lean normalising and pairing (``postproc.simulate.compare``: a straight move merged into its run
+"""verify's lean normalising and pairing (``postproc.simulate.runs``: a straight move merged into its run
 without a ``Move`` of its own, the run's extent along its line kept, the first three axes in locals, ``hypot``
 called only where a sum of squares cannot decide) held to the code it replaced (``tests/support/
 reference_normalise.py``, commit 2ecc27b's, unchanged) on random paths made to land on the decisions it

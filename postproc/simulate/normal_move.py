@@ -39,7 +39,7 @@ class Move:
         """A straight move's length (an arc's is not needed: a full circle is not zero-length)."""
         self.along = math.nan
         """How far along ``direction`` a straight run's end lies from its start (the length of its first move,
-        then of its furthest): a move that continues the run must end further along (``compare._extends``).
+        then of its furthest): a move that continues the run must end further along (``runs._extends``).
         Kept rather than measured again at every move (nan: not known, measured from the points)."""
 
     def __repr__(self) -> str:

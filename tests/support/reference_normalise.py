@@ -1,5 +1,5 @@
 """verify's normalising of a toolpath as it was before it was made lean (commit 2ecc27b's
-``postproc.simulate.compare``: ``normalise`` and the helpers it used, unchanged), the reference that
+``postproc.simulate.compare``, now ``postproc.simulate.runs``: ``normalise`` and the helpers it used, unchanged), the reference that
 ``tests/test_normalise_reference.py`` holds today's ``normalise`` to on random paths: the same runs, to the
 bit. Every straight move here is a ``Move`` of its own, with its direction as a dictionary, and a run's
 extent along its line is measured again at every move."""
