@@ -4,6 +4,7 @@ is one."""
 
 from __future__ import annotations
 
+import math
 from typing import Final
 
 from mypy_extensions import mypyc_attr
@@ -36,6 +37,10 @@ class Move:
         self.sweep = sweep
         self.length = length
         """A straight move's length (an arc's is not needed: a full circle is not zero-length)."""
+        self.along = math.nan
+        """How far along ``direction`` a straight run's end lies from its start (the length of its first move,
+        then of its furthest): a move that continues the run must end further along (``runs._extends``).
+        Kept rather than measured again at every move (nan: not known, measured from the points)."""
 
     def __repr__(self) -> str:
         return (f"Move({self.kind!r}, {self.start!r}, {self.end!r}, f={self.f!r}, lines {self.first_line}-"

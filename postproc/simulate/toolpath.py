@@ -56,7 +56,7 @@ from .simulator import Simulator, simulate
 from .travel import TravelError
 
 __all__ = ["MOVES_THE_TOOL", "UNSIMULATED", "Event", "Simulator", "ToolpathTarget", "TRANSLATE_ONLY", "check_travel",
-           "header", "num", "simulate", "start_position", "toolpath_events"]
+           "header", "num", "simulate", "start_position", "toolpath_events", "toolpath_stream"]
 
 TRANSLATE_ONLY = (check_blocks, comment_after_end, drop_foreign_machine_functions, resolve_rigid_taps,
                   resolve_dynamic_cutter_compensation, time_length_changes, write_tool_entries,
@@ -101,23 +101,41 @@ def toolpath_events(lines: Iterable[str], *, file: str, dialect: str | type[Dial
     settings while the others are simulated (``Moves.kept_native``, for ``verify``). ``mark_held``: a reference
     return's move to the reference point names the axes it put at a machine position (``"held": "xz"``;
     ``verify --transform``)."""
-    setup = setup or MachineSetup()
     diagnostics = diagnostics or Diagnostics()
+    with gc_paused():
+        yield from toolpath_stream(lines, file=file, dialect=dialect, setup=setup, registry=registry,
+                                   diagnostics=diagnostics, live_after_end=live_after_end, unsimulated=unsimulated,
+                                   on_unsupported=on_unsupported, compensate=compensate, arguments=arguments,
+                                   kept_native=kept_native, mark_held=mark_held)
+    if check:
+        diagnostics.check()
+
+
+def toolpath_stream(lines: Iterable[str], *, file: str, dialect: str | type[Dialect], diagnostics: Diagnostics,
+                    setup: MachineSetup | None = None, registry: Registry | None = None,
+                    live_after_end: list[int] | None = None,
+                    unsimulated: list[tuple[int, str, str]] | None = None,
+                    on_unsupported: str = "error", compensate: bool = True,
+                    arguments: Mapping[str, float] | None = None,
+                    kept_native: Callable[[str], bool] | None = None, mark_held: bool = False) -> Iterator[Event]:
+    """``toolpath_events`` without its checks: the simulator's own (compiled) event stream, read and lowered
+    as it is pulled, with no Python generator around it (``verify`` pulls every event of two programs: a
+    Python ``yield from`` cost about 1,500 instructions an event there). The caller checks ``diagnostics``
+    at the end and pauses the cyclic collector for the run (``postproc.reading.gc_paused``). The reading
+    starts here, not at the first event."""
+    setup = setup or MachineSetup()
     registry = registry or default_registry()
     if isinstance(dialect, str):
         dialect = registry.dialect(dialect)
     prepare = macro_arguments(dialect, arguments) if arguments else None
-    with gc_paused():
-        # a simulation runs the program's loops, jumps and calls
-        from ..fast.reading import install_reading  # the reading lanes (postproc.fast), as a translation has
-        ctx, blocks = read_blocks(lines, file, dialect, setup, diagnostics, program_mode="execute",
-                                  prepare=prepare, lanes=install_reading)
-        steps = [step for step in registry.lowerings if step not in TRANSLATE_ONLY]
-        lowered = lower_for(blocks, ctx, ToolpathTarget, "error", steps)
-        yield from simulate(lowered, ctx, live_after_end, unsimulated, on_unsupported == "warn",
-                            ctx.cutter_rules if compensate else None, kept_native, mark_held)
-    if check:
-        diagnostics.check()
+    # a simulation runs the program's loops, jumps and calls
+    from ..fast.reading import install_reading  # the reading lanes (postproc.fast), as a translation has
+    ctx, blocks = read_blocks(lines, file, dialect, setup, diagnostics, program_mode="execute",
+                              prepare=prepare, lanes=install_reading)
+    steps = [step for step in registry.lowerings if step not in TRANSLATE_ONLY]
+    lowered = lower_for(blocks, ctx, ToolpathTarget, "error", steps)
+    return simulate(lowered, ctx, live_after_end, unsimulated, on_unsupported == "warn",
+                    ctx.cutter_rules if compensate else None, kept_native, mark_held)
 
 
 def check_travel(lines: Iterable[str], *, file: str, dialect: type[Dialect], setup: MachineSetup,

@@ -1,0 +1,296 @@
+"""verify's normalising of a toolpath as it streams: moves merged into runs (consecutive straight moves of one
+kind and feed that continue one line, arcs on one circle), machine events as they are. Compiled with the
+comparison (``pyproject.toml [tool.postproc] compiled``): it reads every move event of both programs, so a
+straight move that continues its run is merged without a ``Move`` of its own, and the arithmetic keeps the
+first three axes in unboxed locals (``tests/test_normalise_reference.py`` holds it to the code it replaced)."""
+
+from __future__ import annotations
+
+import math
+from typing import Any, Final, Iterable, Iterator
+
+from ..geometry import CENTRE_KEYS, PLANE_INDEX, arc_sweep
+from .events import Event
+from .normal_move import Move, same_feed as _same_feed
+
+_hypot: Final = math.hypot
+"""Compiled, ``math.hypot`` is an attribute look-up on the module each call; a Final is a C static."""
+
+_AXIS_KEYS: Final = frozenset("xyzabcuvw")
+
+
+def _axes(ev: Event, controlled: Event | None, start: dict[str, float] | None = None,
+          steps: list[float] | None = None) -> dict[str, float]:
+    """The end point of a move event, in its order (the machine's axes): its controlled point where it has
+    one, as ``compare._controlled`` gives it (the controlled axes replace the programmed ones in place, any other
+    follows). A number is converted as its type: compiled, ``float(v)`` of a value of unknown type is a call
+    of the builtin through Python (~250 instructions). ``steps``: receives ``end - start`` axis by axis in the
+    same pass (a straight move's; an axis ``start`` lacks counts from 0)."""
+    end: dict[str, float] = {}
+    matched = 0
+    for k, v in ev.items():
+        if len(k) == 1 and k in _AXIS_KEYS:  # (the length first: "line", "move"... need no set look-up)
+            c = None if controlled is None else controlled.get(k)
+            if c is None:
+                x = _real(v)
+            else:
+                x = _real(c)
+                matched += 1
+            end[k] = x
+            if steps is not None:
+                steps.append(x - (0.0 if start is None else start.get(k, 0.0)))
+    if controlled is not None and matched != len(controlled):  # an arc's centre, or an axis the programmed
+        for k, c in controlled.items():                        # point does not name
+            if k in _AXIS_KEYS and k not in end:
+                x = _real(c)
+                end[k] = x
+                if steps is not None:
+                    steps.append(x - (0.0 if start is None else start.get(k, 0.0)))
+    return end
+
+
+def _real(v: Any) -> float:
+    """``float(v)`` of a toolpath's number, an int or a float mostly."""
+    if isinstance(v, float):
+        return v
+    if isinstance(v, int):
+        return float(v)
+    return float(v)
+
+
+def _plane_point(p: dict[str, float], plane: str) -> tuple[float, float]:
+    i, j, _ = PLANE_INDEX[plane]
+    return p.get("xyz"[i], 0.0), p.get("xyz"[j], 0.0)
+
+
+def norm(values: list[float]) -> float:
+    """``math.hypot(*values)`` (it scales: no overflow near the float range). Compiled, a call of a fixed number
+    of arguments is a vector call, where ``*`` of a list builds a tuple and calls through Python (~450
+    instructions more)."""
+    n = len(values)
+    if n == 3:
+        return _hypot(values[0], values[1], values[2])
+    if n == 2:
+        return _hypot(values[0], values[1])
+    return _hypot(*values)
+
+
+def beyond(a: float, b: float, c: float, n: int, rest: list[float] | None, limit: float) -> bool:
+    """``math.hypot(*components) > limit`` of ``n`` components (``a``, ``b``, ``c`` the first three, 0.0 where
+    there are fewer; ``rest`` those after the third), exactly: the plain sum of squares decides where it lies
+    more than a millionth of ``limit``'s square from it (it is within a few ulps of the true square: the
+    answer cannot differ there), ``hypot`` only in between or where the sum overflows, underflows or is not a
+    number (compiled, ``hypot`` is a call through Python, ~850 instructions, where the squares are a few)."""
+    q = a * a + b * b + c * c
+    if rest is not None:
+        for v in rest:
+            q += v * v
+    square = limit * limit
+    if q > square * 1.000001 and q < _INF:
+        return True
+    if q < square * 0.999999 and q > 0.0:
+        return False
+    if rest is not None:
+        return _hypot(a, b, c, *rest) > limit
+    if n == 3:
+        return _hypot(a, b, c) > limit
+    if n == 2:
+        return _hypot(a, b) > limit
+    return (_hypot(a) if n == 1 else 0.0) > limit
+
+
+_INF: Final = math.inf
+
+
+def _move(ev: Event, start: dict[str, float]) -> Move:
+    """A move event as a ``Move`` from ``start``, its controlled point the end (``compare._controlled``, read in place:
+    copying each event that has one was a dictionary a move)."""
+    controlled: Event | None = ev.get("controlled")
+    kind = ev["move"]
+    f = ev.get("f")
+    line = ev["line"]
+    if kind == "cw" or kind == "ccw":
+        return _arc(ev, kind, start, _axes(ev, controlled), None if f is None else _real(f), line, controlled)
+    steps: list[float] = []
+    end = _axes(ev, controlled, start, steps)
+    return _straight(kind, start, end, None if f is None else _real(f), line, steps, norm(steps))
+
+
+def _straight(kind: str, start: dict[str, float], end: dict[str, float], f: float | None, line: int, steps: list[float],
+              length: float) -> Move:
+    """A straight move of ``length`` (``norm(steps)``) as a ``Move``: its direction, and how far along it its end
+    lies (``Move.along``, which a continuing move must pass: ``_extends``)."""
+    m = Move(kind, start, end, f, line, line)
+    m.length = length
+    if length > 0:
+        direction: dict[str, float] = {}
+        along = 0.0
+        i = 0
+        for k in end:
+            step = steps[i]
+            uk = step / length
+            direction[k] = uk
+            along += step * uk
+            i += 1
+        m.direction = direction
+        m.along = along
+    return m
+
+
+def _arc(ev: Event, kind: str, start: dict[str, float], end: dict[str, float], f: float | None, line: int,
+         controlled: Event | None) -> Move:
+    """An arc event as a ``Move``: its plane, centre (the controlled one where it has one), radius and sweep."""
+    m = Move(kind, start, end, f, line, line)
+    plane = ev.get("plane", "XY")
+    i, j, _ = PLANE_INDEX[plane]
+    ci, cj = CENTRE_KEYS["XYZ"[i]], CENTRE_KEYS["XYZ"[j]]
+    s, e = _plane_point(start, plane), _plane_point(end, plane)
+    ui: Any = ev.get(ci, s[0])
+    uj: Any = ev.get(cj, s[1])
+    if controlled is not None:
+        ui, uj = controlled.get(ci, ui), controlled.get(cj, uj)
+    c = (float(ui), float(uj))
+    m.plane, m.centre = plane, c
+    m.radius = _hypot(s[0] - c[0], s[1] - c[1])
+    m.sweep = arc_sweep(s, e, c, kind == "cw")
+    return m
+
+
+def _merge(run: Move, m: Move, eps: float) -> bool:
+    """Extend ``run`` by ``m`` when they are one line or one circle (same kind and feed)."""
+    if m.kind != run.kind or not _same_feed(run.f, m.f):
+        return False
+    if run.direction is not None and m.direction is not None:
+        return _extends(run, m.end, m.last_line, eps)
+    if run.centre is not None and m.centre is not None and run.plane == m.plane:
+        if (_hypot(run.centre[0] - m.centre[0], run.centre[1] - m.centre[1]) > eps
+                or abs(run.radius - m.radius) > eps or not _one_helix(run, m, eps)):
+            return False
+        run.end, run.last_line = m.end, m.last_line
+        run.sweep += m.sweep
+        return True
+    return False
+
+
+def _extends(run: Move, end: dict[str, float], line: int, eps: float) -> bool:
+    """Extend the straight run ``run`` to ``end`` (a straight move of its kind and feed, ending on ``line``) when
+    that lies on its line (within ``eps``) and further along it than the run's end (``Move.along``). The first
+    three axes are held in locals (compiled, unboxed floats: a list boxes each), any further one in a list."""
+    u, s = run.direction, run.start
+    assert u is not None
+    n = 0
+    r0 = r1 = r2 = u0 = u1 = u2 = 0.0
+    more: list[float] | None = None  # (the end from the run's start, the direction) of each axis after the third
+    along = 0.0
+    same = len(end) == len(u)  # the run's own axes (those of every move of a simulation)
+    for k, v in end.items():
+        r = v - s.get(k, 0.0)
+        uk = u.get(k)
+        if uk is None:
+            uk = 0.0
+            same = False
+        along += r * uk
+        if n == 0:
+            r0, u0 = r, uk
+        elif n == 1:
+            r1, u1 = r, uk
+        elif n == 2:
+            r2, u2 = r, uk
+        else:
+            if more is None:
+                more = []
+            more.append(r)
+            more.append(uk)
+        n += 1
+    if along <= _along(run):
+        return False
+    off: list[float] | None = None  # the end from the line, on the axes after the third
+    if more is not None:
+        off = [more[i] - along * more[i + 1] for i in range(0, len(more), 2)]
+    if beyond(r0 - along * u0, r1 - along * u1, r2 - along * u2, n, off, eps):
+        return False
+    run.end, run.last_line = end, line
+    run.along = along if same else math.nan  # (nan: measured again, over the run's axes, when needed)
+    return True
+
+
+def _along(run: Move) -> float:
+    """How far along its direction the straight run's end lies: ``Move.along``, or measured over the
+    direction's axes where the run was extended by a move of other axes."""
+    if run.along == run.along:
+        return run.along
+    u, s, run_end = run.direction, run.start, run.end
+    assert u is not None
+    along = 0.0
+    for k, uk in u.items():
+        along += (run_end[k] - s.get(k, 0.0)) * uk
+    return along
+
+
+def _one_helix(run: Move, m: Move, eps: float) -> bool:
+    """True when the axes outside the plane move in ``m`` at the rate per angle they moved in ``run`` (none:
+    a flat arc; the same: one helix, as an arc split into pieces), so the arcs may be joined."""
+    i, j, _ = PLANE_INDEX[m.plane or "XY"]
+    plane_keys = {"xyz"[i], "xyz"[j]}
+    for k in m.end:
+        if k not in plane_keys:
+            rate = (run.end[k] - run.start.get(k, 0.0)) / run.sweep
+            if abs(m.end[k] - m.start.get(k, 0.0) - rate * m.sweep) > eps:
+                return False
+    return True
+
+
+def normalise(events: Iterable[Event], start: dict[str, float], eps: float,
+              codes: list[Event] | None = None) -> Iterator[Move | Event]:
+    """Moves merged into runs, machine events as they are; the header is skipped. A move ends at its
+    controlled point where it has one (``compare._controlled``, read in place). ``codes``: the events of a
+    machine-specific code (they carry ``code``) go there instead: another family has no such code, so they
+    are listed, not compared (``compare_machine_codes``)."""
+    pos = {k.lower(): v for k, v in start.items()}
+    run: Move | None = None
+    for ev in events:
+        if "toolpath" in ev:
+            continue
+        if codes is not None and "code" in ev:
+            codes.append(ev)
+            continue
+        if "move" not in ev:
+            if run is not None:
+                yield run
+                run = None
+            yield ev
+            continue
+        kind = ev["move"]
+        if kind == "cw" or kind == "ccw":
+            m = _move(ev, pos)
+            pos = m.end
+            if run is not None and _merge(run, m, eps):
+                continue
+            if run is not None:
+                yield run
+            run = m
+            continue
+        # a straight move: merged into the run without a ``Move`` of its own where it continues it
+        steps: list[float] = []
+        end = _axes(ev, ev.get("controlled"), pos, steps)
+        square = 0.0
+        for step in steps:
+            square += step * step
+        length = -1.0  # (not measured yet: a plain sum of squares above 0 and finite says it is above 0)
+        if not (0.0 < square < _INF):
+            length = norm(steps)
+            if length == 0.0:
+                pos = end
+                continue
+        before, pos = pos, end
+        raw_f = ev.get("f")
+        f = None if raw_f is None else _real(raw_f)
+        line = ev["line"]
+        if run is not None and run.direction is not None and (length < 0.0 or length > 0.0) and kind == run.kind \
+                and _same_feed(run.f, f) and _extends(run, end, line, eps):
+            continue
+        if run is not None:
+            yield run
+        run = _straight(kind, before, end, f, line, steps, norm(steps) if length < 0.0 else length)
+    if run is not None:
+        yield run
