@@ -195,3 +195,15 @@ def test_without_the_machine_data_the_refusal_names_the_attribute(tmp_path: Path
         _translate(UNDER_LENGTH, "fanuc", _setup(tmp_path))
     assert 'in.mpf:5:1: error: SUPA (frame suppression) with the length of D2 in force (whether it stays is machine ' \
            'data $MN_G53_TOOLCORR: the set-up\'s <Controller g53ToolCorr="0"/> or "1" says' in str(caught.value.errors[0])
+
+
+def test_a_machine_move_under_g91_is_refused_towards_siemens() -> None:
+    """Found by tests/test_fuzz_all_dialects.py (grbl -> siemens): ``G53 G91 X10.`` was written ``SUPA G91 G0 X10.``,
+    which the SINUMERIK reader then refused (it reads SUPA in G90 only). Machine positions are absolute: a located
+    error now, and under G90 it is written as before."""
+    with pytest.raises(ErrorList) as caught:
+        out = io.StringIO()
+        translate(io.StringIO("G21 G90 G0 X0. Y0. Z10.\nG53 G91 X10.\n"), out, file="in.mpf", source="grbl",
+                  target="siemens", setup=MachineSetup(), diagnostics=Diagnostics(warn_stream=io.StringIO()))
+    assert "in.mpf:2:1: error: the siemens dialect cannot express a move in machine coordinates under G91" in \
+        str(caught.value.errors[0])

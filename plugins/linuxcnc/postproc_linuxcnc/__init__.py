@@ -32,7 +32,6 @@ from postproc.output.writer_base import Writer
 from postproc.xmlio import XFactory
 
 from .codes import CODES
-from .exact_stop import exact_stop_for_one_block
 
 from .active_comments import COMMENTS, warn_active_comments
 
@@ -52,6 +51,12 @@ def _subprogram_layout(blocks: Iterator[Block], ctx: Context, target: type[Diale
     """``layout.subprograms_after_callers``, imported when a translation to LinuxCNC first runs."""
     from .layout import subprograms_after_callers
     return subprograms_after_callers(blocks, ctx, target)
+
+
+def _exact_stop_for_one_block(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """``exact_stop.exact_stop_for_one_block``, imported when a translation to LinuxCNC first runs."""
+    from .exact_stop import exact_stop_for_one_block
+    return exact_stop_for_one_block(blocks, ctx, target)
 
 
 class Linuxcnc(Dialect):
@@ -96,7 +101,7 @@ class Linuxcnc(Dialect):
     LINE_RULE = Lazy[LineRule](".lines:LINES")
     """rs274 reads at most 252 bytes a line: a longer comment is shortened (``lines.py``)."""
     LOWERING = (nest_forward_jumps, stops_after_motion, _subprogram_layout, _thread_feed_apart,
-                exact_stop_for_one_block)
+                _exact_stop_for_one_block)
     """Another dialect's forward jumps as ``o.. if`` .. ``endif`` (or ``break``) and ``UNTIL`` as ``o.. do`` ..
     ``while`` where they have that shape, exact equalities in conditions as two exact comparisons
     (``postproc.lowering.structured_jumps``). A moving block's spindle stop and coolant off go in a block of
