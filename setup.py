@@ -3,8 +3,10 @@
 The modules are listed in ``pyproject.toml`` (``[tool.postproc] compiled``). Their extensions go into
 ``postproc/_compiled/`` (named as the modules they replace), never next to the ``.py`` files, so one
 installation holds both and ``postproc.native`` chooses at start-up (``POSTPROC_PURE=1`` forces pure
-Python). ``manifest.txt`` there records what was compiled from which source (by SHA-256); it is
-written only when every extension was built, so a failed compile (no C compiler) leaves pure Python.
+Python). ``manifest.txt`` there records what was compiled from which source (by SHA-256, size and time,
+taken before mypyc reads the sources: an edit made while the build runs then reads as a changed source,
+never as the one compiled); it is written only when every extension was built, so a failed compile (no C
+compiler) leaves pure Python.
 Nothing is compiled when ``POSTPROC_PURE=1`` at install time or when mypyc cannot type-check.
 
 mypyc writes one C file a module (``multi_file``), and the build compiles them on every core
@@ -41,6 +43,28 @@ def hot_sources() -> list[str]:
         return list(tomllib.load(f)["tool"]["postproc"]["compiled"])
 
 
+SourceRecord = tuple[str, int, int]
+"""A source's SHA-256, size in bytes and modification time in ns, as the manifest records them."""
+
+SOURCES_AT_START: dict[str, SourceRecord] = {}
+"""Each hot source as it was before mypyc read it (``record_sources``): what the manifest says was compiled.
+Hashed when the build ended instead, a source edited during the minutes of a build was recorded as
+compiled while its extension held the text before the edit (a stale compiled module)."""
+
+
+def record_source(path: Path) -> SourceRecord:
+    """``path``'s record: its size and time before its text, so a size and time a start trusts without
+    hashing (``postproc.native``) were the file's before mypyc read it."""
+    st = path.stat()
+    return hashlib.sha256(path.read_bytes()).hexdigest(), st.st_size, st.st_mtime_ns
+
+
+def record_sources(sources: list[str]) -> None:
+    """Records every hot source, before the build reads any."""
+    SOURCES_AT_START.clear()
+    SOURCES_AT_START.update((source, record_source(HERE / source)) for source in sources)
+
+
 def _note(message: str) -> None:
     print(f"postproc build: {message}", file=sys.stderr)
 
@@ -58,6 +82,7 @@ def compiled_extensions() -> list[Any]:
     sources = hot_sources()
     options = ["--config-file", str(HERE / "pyproject.toml"), "--explicit-package-bases"]
     try:
+        record_sources(sources)
         _note(f"type-checking and translating {len(sources)} hot modules to C with mypyc (about a minute)")
         started = time.monotonic()
         extensions = mypycify(options + sources, opt_level="3", group_name=GROUP, multi_file=True,
@@ -158,9 +183,8 @@ class BuildCompiled(build_ext):
             fields = [name, file]
             if name in by_module:
                 source = by_module[name]
-                st = (HERE / source).stat()  # a start compares these first (postproc.native)
-                fields += [source, hashlib.sha256((HERE / source).read_bytes()).hexdigest(), str(st.st_size),
-                           str(st.st_mtime_ns)]
+                sha256, size, mtime_ns = SOURCES_AT_START[source]  # a start compares size and time first
+                fields += [source, sha256, str(size), str(mtime_ns)]
             lines.append("\t".join(fields))
         (tree / "manifest.txt").write_text("\n".join(lines) + "\n", encoding="utf-8")
         _note(f"compiled {len(by_module)} hot modules into {tree}")

@@ -15,13 +15,12 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from postproc.api import translate
-from postproc.errors import Diagnostics, ErrorList
+from postproc.errors import Diagnostics
 from postproc.ir import Block, CycleCall, Motion
 from postproc.cycles.section import CannedCycle
 from postproc.setup.machine import AxisTravel
 from postproc.setup.machine_setup import MachineSetup
-from postproc.simulate.verify import verify_lines
+from tests.support.pair_checks import PairChecks
 
 from dialects.fagor import Fagor
 from dialects.fagor.cycle_end import end_cycles_before_moves
@@ -34,23 +33,8 @@ START = "G21 G90 G94 G17\nG00 X0. Y0. Z10.\nG98 G81 X5. Y5. Z-3. R2. F100.\n"
 WRITTEN = ["G17 G71 G90 G94", "G00 X0. Y0. Z10.", "G98 G81 X5. Y5. Z2. I-3. F100."]
 
 
-def _translate(text: str, source: str, target: str) -> str:
-    out = io.StringIO(newline="")
-    translate(io.StringIO(text, newline=""), out, file="in.nc", source=source, target=target, setup=SETUP,
-              on_unsupported="error", diagnostics=Diagnostics(warn_stream=io.StringIO()))
-    return out.getvalue()
-
-
-def _errors(text: str, source: str, target: str) -> list[str]:
-    with pytest.raises(ErrorList) as caught:
-        _translate(text, source, target)
-    return [str(e) for e in caught.value.errors]
-
-
-def _verify(a: str, b: str, source: str, target: str) -> None:
-    report = verify_lines(io.StringIO(a), io.StringIO(b), file_in="a.nc", file_out="b.nc", source=source,
-                          target=target, tolerance=0.001, setup=SETUP)
-    assert report.ok and report.max_deviation < 1e-9, report.summary() + "\n" + b
+CHECK = PairChecks(SETUP)
+_translate, _errors, _verify = CHECK.translate, CHECK.errors, CHECK.verify
 
 
 @pytest.mark.parametrize(("source", "written"), [

@@ -8,17 +8,12 @@ simulation of the Fanuc source, independent of the Fagor writer.
 
 from __future__ import annotations
 
-import io
-
-import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from postproc.api import translate
-from postproc.errors import Diagnostics, ErrorList
 from postproc.setup.machine import AxisTravel, ToolData
 from postproc.setup.machine_setup import MachineSetup
-from postproc.simulate.verify import verify_lines
+from tests.support.pair_checks import PairChecks
 
 HOME = {"X": -400.0, "Y": -250.0, "Z": -12.5}
 
@@ -33,23 +28,8 @@ def _make_setup() -> MachineSetup:
 SETUP = _make_setup()
 
 
-def _translate(text: str, source: str, target: str) -> str:
-    out = io.StringIO(newline="")
-    translate(io.StringIO(text, newline=""), out, file="in.nc", source=source, target=target, setup=SETUP,
-              on_unsupported="error", diagnostics=Diagnostics(warn_stream=io.StringIO()))
-    return out.getvalue()
-
-
-def _errors(text: str, source: str, target: str) -> list[str]:
-    with pytest.raises(ErrorList) as caught:
-        _translate(text, source, target)
-    return [str(e) for e in caught.value.errors]
-
-
-def _verify(a: str, b: str, source: str, target: str) -> None:
-    report = verify_lines(io.StringIO(a), io.StringIO(b), file_in="a.nc", file_out="b.nc", source=source,
-                          target=target, tolerance=0.001, setup=SETUP)
-    assert report.ok and report.max_deviation < 1e-9, report.summary() + "\n" + b
+CHECK = PairChecks(SETUP)
+_translate, _errors, _verify = CHECK.translate, CHECK.errors, CHECK.verify
 
 
 def test_a_fagor_g53_is_read_only_as_an_absolute_move() -> None:

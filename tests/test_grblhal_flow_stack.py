@@ -66,3 +66,37 @@ def test_a_linuxcnc_program_nesting_deeper_reaches_grblhal_flattened() -> None:
     translate(io.StringIO(_program(20)), out, file="in.ngc", source="linuxcnc", target="grblhal", setup=EXPRESSIONS,
               diagnostics=Diagnostics(warn_stream=io.StringIO()))
     assert "o119 if [#1 GT 0.]" in out.getvalue()
+
+
+RECURSION = ("G21 G90 G0 X0 Y0 Z5\no100 sub\no101 if [#1 GT 0]\no102 if [#1 GT 0]\nG1 X#1 F100.\no100 call [#1 - 1]\n"
+             "o102 endif\no101 endif\no100 endsub\no100 call [{n}]\nM2\n")
+"""A sub that calls itself inside two conditions, called with n from the main program: level k (the main
+program's call is level 1) holds the stack's entry 3k - 2 for its call, 3k - 1 and 3k for its two conditions
+(grblHAL pushes a condition whatever its value, ``ngc_flowctrl.c`` ``NGCFlowCtrl_If``: ``stack_push`` unless
+the branch around it is skipped [V]). The last level (#1 = 0) opens only its first condition, the second being
+in a skipped branch: call [n] reaches entry 3(n + 1) - 1 = 3n + 2, within 20 for n = 6, entry 21 for n = 7 at
+level 7's second condition (line 4). The text nests only 1 + 3 deep: the overflow shows only as the sub runs."""
+
+
+def test_a_sub_calling_itself_overflows_the_stack_as_it_runs() -> None:
+    assert _moves(RECURSION.format(n=6)) == [("rapid", 0)] + [("feed", x) for x in range(6, 0, -1)]
+    with pytest.raises(ErrorList) as caught:
+        _moves(RECURSION.format(n=7))
+    (error,) = caught.value.errors
+    assert str(error).startswith("in.nc:4:1: error: 'o102 if [#1 GT 0]' would hold entry 21 of the controller's "
+                                 "flow control stack, which has 20")
+
+
+
+def test_a_linuxcnc_sub_calling_itself_reaches_grblhal_flattened() -> None:
+    """Kept as o-words, grblHAL would stop at entry 21 (the test above), and how deep a recursion goes shows only
+    as it runs: the sub's body counts as nested to rs274's 9 nested calls, 3 entries a level (its two conditions
+    and its call): 1 + 8 x 3 + 3 = 28 at the main program's call, over 20, so the program is flattened, the moves
+    as the source runs them. A recursion one condition shallower, 1 + 8 x 2 + 2 = 19, stays o-words
+    (tests/test_grblhal_subroutines.py, a sub that calls itself)."""
+    out, warnings = io.StringIO(), io.StringIO()
+    translate(io.StringIO(RECURSION.format(n=7)), out, file="in.ngc", source="linuxcnc", target="grblhal",
+              setup=EXPRESSIONS, diagnostics=Diagnostics(warn_stream=warnings))
+    assert [line for line in out.getvalue().splitlines() if not line.startswith("(")] == (
+        ["G21 G90 G0 X0. Y0. Z5."] + [f"G1 X{x}. F100." for x in range(7, 0, -1)] + ["M2"])
+    assert "line 10: 'o100 call [7]' would hold entry 28 of the controller's flow control stack" in warnings.getvalue()

@@ -14,33 +14,16 @@ valid, except the failures listed below, each a known defect, which must go on f
 
 from __future__ import annotations
 
-import importlib.util
 import io
 import os
-import sys
 from pathlib import Path
-from types import ModuleType
 
 import pytest
 
+from tests.support.corpus_harness import check_program, harness
+
 ROOT = Path(__file__).resolve().parents[1]
 HELDOUT = ROOT / "tests" / "heldout"
-
-def _harness() -> ModuleType:
-    """``benchmarks/corpus.py`` as the module ``corpus_harness``: the one tests/test_corpus.py loaded, where it
-    did (a second copy under that name would make its programs' class unpicklable for the pair processes)."""
-    loaded = sys.modules.get("corpus_harness")
-    if loaded is not None:
-        return loaded
-    spec = importlib.util.spec_from_file_location("corpus_harness", ROOT / "benchmarks" / "corpus.py")
-    assert spec is not None and spec.loader is not None
-    module = importlib.util.module_from_spec(spec)
-    sys.modules["corpus_harness"] = module
-    spec.loader.exec_module(module)
-    return module
-
-
-harness = _harness()
 
 ALL = harness.load_manifest(HELDOUT / "corpus.toml")
 QUICK = ("fanuc/aed_profile.nc", "linuxcnc/pcb2gcode_drill.ngc", "fanuc/gcodeworkshop_fanuc_0t_lathe.nc")
@@ -56,25 +39,13 @@ KNOWN_FAILURES: dict[tuple[str, str], str] = {
         "refuses the cycles too"),
 }
 """(program, target or '' for the source check) -> the defect, as found by the held-out set."""
-_SOURCE_REFUSED = {program for program, target in KNOWN_FAILURES if target == ""}
+_SOURCE_REFUSED = frozenset(program for program, target in KNOWN_FAILURES if target == "")
 """A source the reader refuses fails every one of its pairs too ('translation refused the source')."""
 
 
 @pytest.mark.parametrize("program", PROGRAMS, ids=[p.path for p in PROGRAMS])
 def test_program_translates_or_fails_as_known(program: object) -> None:
-    sources, pairs = harness.run_corpus([program], jobs=1)
-    assert sources[0].kind != harness.EXCUSED or program.excused  # type: ignore[attr-defined]
-    for outcome in sources + pairs:
-        key = (outcome.program, outcome.target)
-        known = key in KNOWN_FAILURES or outcome.program in _SOURCE_REFUSED and (
-            outcome.category == "translation refused the source")
-        assert outcome.category not in ("internal error", "timeout"), outcome.detail
-        if outcome.kind == harness.FAILURE:
-            assert known, f"{key}: {outcome.category}\n{outcome.detail}"
-        else:
-            assert key not in KNOWN_FAILURES, f"{key} no longer fails ({outcome.kind}): remove it from KNOWN_FAILURES"
-        if outcome.kind == harness.REFUSED:
-            assert outcome.detail.count(":") >= 3 and outcome.blockers, outcome.detail  # located, capability named
+    check_program(program, KNOWN_FAILURES, _SOURCE_REFUSED)
 
 
 def test_every_program_is_in_the_manifest_and_its_source_noted() -> None:

@@ -119,8 +119,24 @@ def test_a_cancel_before_an_absolute_reference_return_goes_beside_it() -> None:
     assert _verified(text, "fanuc", "linuxcnc")[3] == "G49 G28 Z20."
 
 
-def test_an_incremental_return_from_an_unknown_z_is_still_refused() -> None:
-    text = "G21 G90 G0 X0 Y0\nG43 H01\nG91 G28 Z0\nG90\nM30\n"
+def test_an_incremental_return_from_an_unknown_z_shifts_its_increment() -> None:
+    """It was refused (no absolute Z known). The source takes the intermediate point at the programmed Z plus the
+    increment with the new length; the target's increment runs from where the machine stands, so it is the
+    source's plus the new length minus the old: G43 H01 (0 -> 100): Z0 becomes Z100; G49 (100 -> 0) with Z2:
+    Z-98. X and Y keep theirs. grbl gets G43.1 Z100. in a block of its own (its axis word)."""
+    text = "G21 G90 G0 X0 Y0\nG91 G43 H01 G28 Z0\nG90 G1 X5. F100.\nG49\nG91 G28 X0 Y0 Z2.\nG90\nM30\n"
+    assert _verified(text, "fanuc", "linuxcnc")[1:4] == [
+        "G91 G43 H01 G28 Z100.", "G90 G1 X5. F100.", "G91 G49 G28 X0. Y0. Z-98."]
+    assert _verified(text, "fanuc", "grbl")[1:6] == [
+        "G43.1 Z100.", "G91 G28 Z100.", "G90 G1 X5. F100.", "G49", "G91 G28 X0. Y0. Z-98."]
+    assert _verified("G21 G90 G0 X0 Y0\nG43 H01\nG91 G28 Z0\nG90\nM30\n", "fanuc", "linuxcnc")[1] == (
+        "G91 G43 H01 G28 Z100.")
+
+
+def test_an_incremental_return_without_z_is_still_refused() -> None:
+    """``G91 G28 X0 Y0`` after G49: the source takes the new length at that move; the target could only by naming
+    Z, which would send Z to the reference point too."""
+    text = "G21 G90 G0 X0 Y0 Z50.\nG43 H01 Z50.\nG49\nG91 G28 X0 Y0\nG90\nM30\n"
     with pytest.raises(ErrorList) as caught:
         _translate(text, "fanuc", "linuxcnc")
-    assert "in.nc:2:5: error: this tool length change applies at the next move" in str(caught.value.errors[0])
+    assert "in.nc:3:1: error: this tool length change applies at the next move" in str(caught.value.errors[0])

@@ -113,3 +113,19 @@ def test_a_cancel_before_an_incremental_reference_return_moves_in_rs274_as_in_fa
     ours = [round(float(e.get("controlled", e)["z"]), 4)
             for e in toolpath_events(io.StringIO(fanuc), file="in.nc", dialect="fanuc", setup=setup) if "move" in e]
     assert ours[2:4] == theirs[-3:-1]
+
+
+def test_an_incremental_return_from_an_unknown_z_moves_in_rs274_as_in_fanuc() -> None:
+    """No absolute Z before the length changes: ``G91 G43 H01 G28 Z0`` is written with Z25.4 (the increment plus
+    the new length minus the old, ``length_timing``), ``G49`` then ``G91 G28 X0 Y0 Z2.`` with Z-23.4. rs274's
+    controlled Z through both returns equals the Fanuc model's: 25.4 then its home (0), -23.4 then 0."""
+    fanuc = "G21 G90 G0 X0 Y0\nG91 G43 H01 G28 Z0\nG90 G1 X5. F100.\nG49\nG91 G28 X0 Y0 Z2.\nG90\nM30\n"
+    setup = MachineSetup()
+    setup.tools = {str(n): ToolData(number=n, length=v * 25.4, radius=0.0) for n, v in LENGTHS_INCH.items()}
+    out = io.StringIO()
+    translate(io.StringIO(fanuc), out, file="in.nc", source="fanuc", target="linuxcnc", setup=setup)
+    assert "G91 G43 H01 G28 Z25.4" in out.getvalue() and "G91 G49 G28 X0. Y0. Z-23.4" in out.getvalue()
+    theirs = [point[3] for point in _rs274_moves(out.getvalue())]
+    ours = [round(float(e.get("controlled", e)["z"]), 4)
+            for e in toolpath_events(io.StringIO(fanuc), file="in.nc", dialect="fanuc", setup=setup) if "move" in e]
+    assert theirs[-5:] == ours[-5:] == [25.4, 0.0, 0.0, -23.4, 0.0]  # (rs274 also prints G0 X0 Y0 from its start)

@@ -351,7 +351,7 @@ def test_fanuc_blocks_in_linuxcnc_spelling(fanuc: str, linuxcnc: str) -> None:
 
 @pytest.mark.parametrize("fanuc, message", [
     ("G44 H01 Z5.\n", "t.ngc:2:1: error: the linuxcnc dialect cannot express tool length offset negative"),
-    ("G09 G01 X5. F100.\n", "t.ngc:2:1: error: the linuxcnc dialect cannot express a one-shot exact stop"),
+    # (G09: written as G61 for its block, tests/test_linuxcnc_exact_stop.py)
     ("/2 G00 X5.\n", "t.ngc:2:1: error: the linuxcnc dialect cannot express block delete level 2 (LinuxCNC has "
                      "one block delete switch)"),
 ])

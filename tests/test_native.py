@@ -9,6 +9,7 @@ import copy
 import hashlib
 import importlib
 import importlib.machinery
+import importlib.util
 import os
 import pickle
 import subprocess
@@ -201,3 +202,33 @@ def test_a_compiled_module_follows_the_rules_mypyc_needs(source: str) -> None:
         for stmt in node.body:
             assert not (isinstance(stmt, ast.Assign) and len(stmt.targets) > 1), \
                 f"{source}:{stmt.lineno}: split the chained assignment (mypyc refuses it in a class body)"
+
+
+def _setup_module(monkeypatch: pytest.MonkeyPatch, root: Path) -> object:
+    """``setup.py`` as a module, its ``setup()`` call a no-op (pure, so mypyc does not run), its checkout ``root``."""
+    import setuptools
+    monkeypatch.setenv("POSTPROC_PURE", "1")
+    monkeypatch.setattr(setuptools, "setup", lambda **kwargs: None)
+    spec = importlib.util.spec_from_file_location("postproc_setup_under_test", ROOT / "setup.py")
+    assert spec is not None and spec.loader is not None
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    monkeypatch.setattr(module, "HERE", root)
+    monkeypatch.setattr(module, "hot_sources", lambda: ["postproc/hot.py"])
+    return module
+
+
+def test_a_source_edited_during_the_build_runs_pure(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """The manifest records each source as it was when the build started: a hot module edited while mypyc and
+    the C compiler ran (minutes) is a changed source at the next start, not taken as the one compiled (the
+    manifest was hashed when the build ended, so the edit read as compiled: a stale compiled module)."""
+    from types import SimpleNamespace
+    root = _tree(tmp_path, "x = 1\n", "x = 1\n")
+    setup = _setup_module(monkeypatch, root)
+    setup.record_sources(["postproc/hot.py"])  # type: ignore[attr-defined]
+    (root / "postproc" / "hot.py").write_text("x = 22\n", encoding="utf-8")  # the edit, mid-build
+    build = SimpleNamespace(extensions=[SimpleNamespace(name=setup.PREFIX + "postproc.hot")])  # type: ignore[attr-defined]
+    setup.BuildCompiled._write_manifest(build, root)  # type: ignore[attr-defined]
+    assert native.plan(root, {}) == ("postproc/hot.py changed since it was compiled (run make install)", {})
+    (root / "postproc" / "hot.py").write_text("x = 1\n", encoding="utf-8")  # the text compiled: fresh again
+    assert native.plan(root, {})[0] == ""

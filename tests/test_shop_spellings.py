@@ -182,6 +182,18 @@ def test_haas_probe_results_are_the_machines() -> None:
         "flattened"]
 
 
+def test_haas_tool_timers_are_not_work_offsets() -> None:
+    """#5401-#6000 are a Haas's per-tool timers and monitors (Haas mill manual's macro variable table [K]), not
+    Fanuc's work offsets: read or written, each is refused naming what it is on the machine the set-up names."""
+    assert errors("G00 X#5401\nM30", HAAS) == [
+        "t.nc:1:5: error: #5401 (tool feed timer) is known only to the machine: the program cannot be simulated or "
+        "flattened"]
+    assert errors("#5550=0\nM30", HAAS)[0].startswith("t.nc:1:1: error: #5550 (total tool timer) is known only")
+    assert errors("G00 X#5999\nM30", HAAS)[0].startswith("t.nc:1:5: error: #5999 (tool load monitor limit) is")
+    assert errors("G00 X#5221\nM30", HAAS)[0].startswith("t.nc:1:5: error: #5221 (work offset) is")
+    assert errors("G00 X#5401\nM30")[0].startswith("t.nc:1:5: error: #5401 (work offset) is")  # a Fanuc's
+
+
 def test_a_haas_program_mixing_both_numberings_is_refused_by_name() -> None:
     (message,) = errors("#100=1.\n#10100=5.\nG00 X#10100\nM30", HAAS)
     assert message.startswith("t.nc:2:1: error: #10100 and #100: a Haas program that uses both")

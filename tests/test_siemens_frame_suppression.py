@@ -10,6 +10,7 @@ takes work offsets as settings, not as positions).
 from __future__ import annotations
 
 import io
+import re
 from pathlib import Path
 
 import pytest
@@ -158,3 +159,51 @@ def test_fanuc_g53_with_a_tool_offset_in_force_is_refused(lines: str, tmp_path: 
     with pytest.raises(ErrorList) as caught:
         _from_fanuc(f"G21 G90 G17 G0 X5. Y5. Z5.\n{lines}\nM30\n", _setup(tmp_path))
     assert any("machine coordinates" in str(e) for e in caught.value.errors), [str(e) for e in caught.value.errors]
+
+
+# -- under a tool length, as the set-up's $MN_G53_TOOLCORR says --------------------------------------------------
+
+def _setup_corr(tmp_path: Path, corr: str) -> MachineSetup:
+    path = tmp_path / f"machine{corr}.xml"
+    path.write_text(f'<MachineSetup name="t"><Controller g53ToolCorr="{corr}"/><Tools>{TOOLS}</Tools></MachineSetup>')
+    return load_setup(path)
+
+
+UNDER_LENGTH = START + "T2 D2 M6\nG0 Z10\nSUPA G0 Z-100\nG0 X1\nM30\n"
+"""D2 is 75 long: G0 Z10 puts the spindle at 85. ``SUPA Z-100`` with ``$MN_G53_TOOLCORR`` 1 suppresses the length
+too: the spindle goes to machine -100 (the tool tip to -175); with 0 the length stays: the tool tip goes to -100,
+the spindle to -25 [V: 802D sl/840D ISO Milling 04.07, 3.1.1]. The next block has the frame again: X 1 + 2."""
+
+
+@pytest.mark.parametrize("corr, spindle", [("1", -100.0), ("0", -25.0)])
+def test_a_block_without_frames_under_a_length_moves_as_the_machine_data_says(corr: str, spindle: float,
+                                                                               tmp_path: Path) -> None:
+    setup = _setup_corr(tmp_path, corr)
+    events = [e for e in toolpath_events(io.StringIO(UNDER_LENGTH), file="in.mpf", dialect="siemens", setup=setup)
+              if "move" in e]
+    assert [(e["x"], e["controlled"]["z"]) for e in events[1:]] == [(5, 85), (5, spindle), (3, spindle)]
+    for target in ("fanuc", "linuxcnc"):
+        out = _translate(UNDER_LENGTH, target, setup)
+        report = verify_lines(io.StringIO(UNDER_LENGTH), io.StringIO(out), file_in="a", file_out="b",
+                              source="siemens", target=target, setup=setup, tolerance=0.0)
+        assert report.ok and report.max_deviation == 0, report.summary() + "\n" + out
+        assert re.search(rf"^(G53 G0?0|G0?0 G53) Z{spindle:g}\.$", out, re.M), out
+
+
+def test_without_the_machine_data_the_refusal_names_the_attribute(tmp_path: Path) -> None:
+    with pytest.raises(ErrorList) as caught:
+        _translate(UNDER_LENGTH, "fanuc", _setup(tmp_path))
+    assert 'in.mpf:5:1: error: SUPA (frame suppression) with the length of D2 in force (whether it stays is machine ' \
+           'data $MN_G53_TOOLCORR: the set-up\'s <Controller g53ToolCorr="0"/> or "1" says' in str(caught.value.errors[0])
+
+
+def test_a_machine_move_under_g91_is_refused_towards_siemens() -> None:
+    """Found by tests/test_fuzz_all_dialects.py (grbl -> siemens): ``G53 G91 X10.`` was written ``SUPA G91 G0 X10.``,
+    which the SINUMERIK reader then refused (it reads SUPA in G90 only). Machine positions are absolute: a located
+    error now, and under G90 it is written as before."""
+    with pytest.raises(ErrorList) as caught:
+        out = io.StringIO()
+        translate(io.StringIO("G21 G90 G0 X0. Y0. Z10.\nG53 G91 X10.\n"), out, file="in.mpf", source="grbl",
+                  target="siemens", setup=MachineSetup(), diagnostics=Diagnostics(warn_stream=io.StringIO()))
+    assert "in.mpf:2:1: error: the siemens dialect cannot express a move in machine coordinates under G91" in \
+        str(caught.value.errors[0])

@@ -7,6 +7,10 @@ discrete inputs [K: Haas NGC system variables table, zappettiniconsulting.com wi
 Variables", reproducing the Haas mill operator's manual]. Whether #10100 and #100 are one variable is
 not settled by that table (it pairs #10000-#10149 with #100-#149 but #10500-#10549 with #500-#549) [?]:
 a program that uses both numberings is refused by name instead of simulated on a guess.
+
+Above Fanuc's work offsets, a Haas numbers its tool timers and monitors (``HAAS_TOOL_DATA``): #5401-#5999 are
+not work offsets there, and a message about them says what they are. Reading them is refused either way (the
+machine's data).
 """
 
 from __future__ import annotations
@@ -26,6 +30,19 @@ HAAS_SYSTEM: tuple[tuple[int, int, str], ...] = (
 )
 """Five-digit numbers the machine sets (what a message calls them); the rest of #10000-#10999 is the
 program's."""
+HAAS_TOOL_DATA: tuple[tuple[int, int, str], ...] = (
+    (5401, 5500, "tool feed timer"),
+    (5501, 5600, "total tool timer"),
+    (5601, 5700, "tool life monitor limit"),
+    (5701, 5800, "tool life monitor counter"),
+    (5801, 5900, "tool load monitor maximum"),
+    (5901, 6000, "tool load monitor limit"),
+)
+"""Haas per-tool timers and monitors, where Fanuc's table goes on with work offsets (``MACRO_B_SYSTEM``'s
+#5201-#5999) [K: Haas mill operator's manual, macro system variables table, as reproduced by third-party
+Haas tooling tables: #5401-#5500 tool feed timers (seconds), #5501-#5600 total tool timers, #5601-#5700 tool
+life limits, #5701-#5800 life counters, #5801-#5900 maximum loads, #5901-#6000 load limits]. #5201-#5206 (G52)
+and #5221-#5326 (G54-G59) are work offsets on both [K]."""
 
 
 def _legacy(key: int) -> bool:
@@ -79,6 +96,13 @@ class HaasVariables(MacroBVariables):
                 raise EvalError(f"#{key} ({what}) {MACHINE_ONLY}")
         self._note("NGC", key)
         return True
+
+    def _unknown(self, key: int) -> EvalError:
+        """A machine-only variable named as a Haas names it (``HAAS_TOOL_DATA``), else as Fanuc does."""
+        for low, high, what in HAAS_TOOL_DATA:
+            if low <= key <= high:
+                return EvalError(f"#{key} ({what}) {MACHINE_ONLY}")
+        return super()._unknown(key)
 
     def _saw(self, key: VarKey) -> None:
         if isinstance(key, int) and _legacy(key):

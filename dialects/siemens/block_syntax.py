@@ -100,6 +100,7 @@ class SiemensBlockSyntax(WordBlockSyntax):
             if why is not None:
                 keep_verbatim(block, f"{suppression} (frame suppression) {why}")
                 return
+            frame_suppression.kept_length(block, ctx)
             block.add(MachineCoordinates())
         frame_suppression.note_cutter(block, ctx)
         levels = block.sections.pop(CycleLevels.KEY, None)

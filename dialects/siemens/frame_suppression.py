@@ -12,8 +12,11 @@ postproc models no basic frame, handwheel or external offset, so all three are i
 neutral ``MachineCoordinates``: the work offset and the programmable frame left out, as Fanuc's ``G53``)
 exactly where the machine data cannot matter and the move is the neutral one (``problem`` says which):
 
-* no tool length (``D0`` selected, or the set-up's tool of the selected D has length 0) and no radius
-  compensation (G40) in force, the block selecting neither;
+* no tool length (``D0`` selected, or the set-up's tool of the selected D has length 0), or one the set-up's
+  ``<Controller g53ToolCorr>`` settles (``$MN_G53_TOOLCORR``): 1 (true) suppresses it, the neutral move; 0
+  (false) keeps it, so the block's Z is the tool tip's and the machine's is that plus the length (``kept_length``:
+  Z is read that much higher, a number only); and no radius compensation (G40) in force, the block selecting
+  neither;
 * G0 in force or in the block (the neutral machine-coordinate move is at rapid);
 * G90 (machine positions are absolute) and the geometry axes X, Y, Z only.
 
@@ -87,10 +90,45 @@ def problem(block: Block, ctx: Context) -> str | None:
             length = ToolTable(ctx.setup).length(int(selected))
         except PostprocError:
             length = None
-        if length != 0.0:
+        suppressed = ctx.setup.controller.g53_tool_corr
+        if length != 0.0 and (suppressed is None or length is None):
             return (f"with the length of D{int(selected)} in force (whether it stays is machine data "
-                    "$MN_G53_TOOLCORR; read with D0 or a tool of length 0)")
+                    "$MN_G53_TOOLCORR: the set-up's <Controller g53ToolCorr=\"0\"/> or \"1\" says; read with D0 or a "
+                    "tool of length 0)")
+        if length and not suppressed and not _plain_z(block):
+            return f"with the length of D{int(selected)} kept in force (g53ToolCorr 0) and a Z not a number"
     return None
+
+
+def _plain_z(block: Block) -> bool:
+    """The block's Z, if any, is a plain number (``Z0``, ``Z-10.5``)."""
+    for letter, num in block.words:
+        if letter in "Zz":
+            try:
+                float(num)
+            except ValueError:
+                return False
+    return True
+
+
+def kept_length(block: Block, ctx: Context) -> None:
+    """Under ``g53ToolCorr`` 0 the length of the selected D stays in force in a block without frames: its Z (the
+    tool tip's, in machine coordinates) is read as the machine's, the length higher (program units), so the
+    neutral machine-coordinate move goes where the machine does. After ``problem`` said None."""
+    if ctx.setup.controller.g53_tool_corr is not False:
+        return
+    selected = ctx.state.extra.get(SELECTED_KEY, 0)
+    if not selected:
+        return
+    length = ToolTable(ctx.setup).length(int(selected))  # (given: ``problem``)
+    if ctx.state.units == "inch":
+        length /= 25.4
+    block.words[:] = [(letter, _number(float(num) + length) if letter in "Zz" else num)
+                      for letter, num in block.words]
+
+
+def _number(value: float) -> str:
+    return repr(round(value, 9))
 
 
 def codes_of(motion: str | None) -> str:

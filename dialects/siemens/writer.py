@@ -39,7 +39,7 @@ from postproc.compensation.tool_table import ToolTable
 from postproc.errors import PostprocError, UnsupportedError
 from postproc.event_order import after_motion
 from postproc.expr import Expr
-from postproc.ir import Block, CompoundMotion, Dwell, Motion, Section, SpindleControl, ToolLengthOffset
+from postproc.ir import Block, CompoundMotion, DistanceMode, Dwell, Motion, Section, SpindleControl, ToolLengthOffset
 from postproc.rs274.codes import CodeTable
 from postproc.isg_family.taps import stroke_words
 from postproc.rs274.writer import WordWriter
@@ -503,6 +503,10 @@ class SiemensWriter(WordWriter):
             return []  # no move to qualify: it does nothing
         if motion.mode not in self.MACHINE_MOVES:
             self.unsupported(f"a {motion.mode} move in machine coordinates (read back in G0 only)", block)
+        distance = sections.get("DistanceMode")
+        if (distance.mode if isinstance(distance, DistanceMode) else self.modal.distance) == "incremental":
+            self.unsupported("a move in machine coordinates under G91 (read back in G90 only: machine positions "
+                             "are absolute)", block)
         if self.radius_on or "CutterCompensation" in sections or "ToolLengthOffset" in sections \
                 or not self.no_length():
             self.unsupported("a move in machine coordinates with a tool length or radius compensation in force "

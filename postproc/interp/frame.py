@@ -12,7 +12,7 @@ class Frame:
     """One running program level: where it runs, how it was called, what it repeats."""
 
     __slots__ = ("program", "pc", "end", "origin", "new_level", "call_block", "remaining", "index", "count",
-                 "args", "start", "repeats", "modal", "site", "needs_return", "fors", "seen", "back")
+                 "args", "start", "repeats", "modal", "site", "needs_return", "fors", "seen", "back", "flow")
 
     def __init__(self, program: Program, start: int, end: int, origin: Origin | None, new_level: bool,
                  call_block: Block | None, index: int, count: int, args: dict[int, Value], modal: bool,
@@ -38,5 +38,7 @@ class Frame:
         """The while loop whose end ran last, until its test runs (-1: none): the test then continues it."""
         self.modal = modal
         self.site = site
+        self.flow = 0
+        """Entries of the controller's flow stack its callers hold, its call among them (``Program.flow_entries``)."""
         self.needs_return = False
         """The body ends only at a return (LinuxCNC's ``O<n>`` ... ``M99``): running off its end is an error."""

@@ -38,6 +38,7 @@ from ..source_map import CallSite, ExecutedBlock, Origin
 from .frame import Frame
 from .host import Interrupt
 from .store import Program, source_text
+from .structure import flow_overflow
 from .run_state import RunState, is_number
 from .variables import ProgramAlarm
 
@@ -177,6 +178,8 @@ class Interpreter(RunState):
         pos = frame.pc
         program = frame.program
         vars_ = self.vars
+        if self.rules.flow_stack is not None and pos in program.flow_entries and not isinstance(control, Call):
+            self._flow(frame.flow + program.flow_entries[pos], block)  # (a call's: ``_enter``)
         if isinstance(control, Goto):
             if control.cond is not None and not _true(evaluate(control.cond, vars_)):
                 frame.pc += 1
@@ -377,6 +380,14 @@ class Interpreter(RunState):
         else:
             raise ProgramError(f"'{source_text(block)}' cannot be executed ({type(control).__name__})")
 
+    def _flow(self, entry: int, block: Block) -> None:
+        """A loop, condition or call that runs holds ``entry`` of the controller's flow stack (its callers'
+        entries and its own body's): past the stack, the controller stops. The text's nesting is checked
+        where it is read (``Structure``); a sub that calls itself nests deeper only as it runs."""
+        limit = self.rules.flow_stack
+        if limit is not None and entry > limit:
+            raise ProgramError(flow_overflow(block, entry, limit))
+
     def _note(self, frame: Frame, block: Block, what: str) -> Iterator[Block]:
         if self.annotate:
             yield self._comment(frame, block, what)
@@ -392,10 +403,11 @@ class Interpreter(RunState):
         name = self._name(call.name)
         args = self._args(call.args)
         count = 1 if call.repeat is None else self._count(call.repeat, "the repeat count")
+        flow = frame.flow + frame.program.flow_entries.get(frame.pc, 0)
         frame.pc += 1
         if count <= 0:
             return
-        yield from self._enter(frame, block, name, args, count, call.kind == "macro", modal=False)
+        yield from self._enter(frame, block, name, args, count, call.kind == "macro", modal=False, flow=flow)
 
     def _modal_call(self, frame: Frame, block: Block) -> Iterator[Block]:
         assert self.modal is not None
@@ -403,7 +415,7 @@ class Interpreter(RunState):
         yield from self._enter(frame, block, self._name(call.name), dict(args), count, True, modal=True)
 
     def _enter(self, frame: Frame, block: Block, name: str, args: dict[int, Value], count: int,
-               new_level: bool, modal: bool, index: int = 1) -> Iterator[Block]:
+               new_level: bool, modal: bool, index: int = 1, flow: int = 0) -> Iterator[Block]:
         label = self.host.program_label(name)
         if self.rules.forward_search:
             found = self._find_forward(frame, block, name, label, new_level)
@@ -418,6 +430,7 @@ class Interpreter(RunState):
         if levels is not None and len(self.frames) > levels:
             raise ProgramError(f"'{source_text(block)}' exceeds the controller's bound of {levels} nested calls (it "
                                "refuses a deeper one)")
+        self._flow(flow, block)
         self._spend(block, "call")
         program, start, end = found
         caller_file = frame.origin.file if frame.origin is not None else frame.program.file
@@ -427,6 +440,7 @@ class Interpreter(RunState):
         callee = Frame(program, start, end, origin, new_level, block, index, count, args,
                         modal or frame.modal, site)
         callee.needs_return = self.rules.forward_search and not new_level
+        callee.flow = flow
         self.vars.enter(args, new_level)
         self.frames.append(callee)
         yield from self._note(frame, block, f"call {index} of {count}" if count > 1 else "call")
@@ -462,6 +476,7 @@ class Interpreter(RunState):
             again.origin = Origin(frame.origin.file, (site,) + frame.origin.stack[1:])
             again.site = site
             again.needs_return = frame.needs_return
+            again.flow = frame.flow
             self.vars.enter(frame.args, frame.new_level)
             frames.append(again)
             return

@@ -28,7 +28,8 @@ class Program:
     """One file's blocks, indexed. ``main_end`` is the position after the main program's end block
     (``len(blocks)`` when it has none); blocks past it run only as subprograms."""
 
-    __slots__ = ("file", "blocks", "sequence", "labels", "pairs", "chains", "subs", "main_end", "first_line", "ran")
+    __slots__ = ("file", "blocks", "sequence", "labels", "pairs", "chains", "flow_entries", "subs", "main_end",
+                 "first_line", "ran")
 
     def __init__(self, file: str, blocks: list[Block], is_end: Callable[[Block], bool],
                  rules: SubprogramRules = STORED_PROGRAMS) -> None:
@@ -42,6 +43,9 @@ class Program:
         self.chains: dict[int, list[int]] = {}
         """Every member of an if-chain -> the chain's positions (if, elseifs, else, endif); a switch ->
         its cases and default, in order."""
+        self.flow_entries: dict[int, int] = {}
+        """Under a controller's flow stack (``SubprogramRules.flow_stack``): a loop's, condition's or call's
+        position -> the entries its body holds in this program or sub (``Structure.entries``)."""
         self.subs: dict[str, tuple[int, int]] = {}
         """Subprogram name -> (position of its first body block, position after its last): an
         ``o<x> sub`` body includes its ``endsub`` (which may return a value); an ``O`` program's runs
@@ -83,6 +87,7 @@ class Program:
         structure.finish()
         self.pairs = structure.pairs
         self.chains = structure.chains
+        self.flow_entries = structure.entries
         for name, (at, end) in structure.subs.items():
             self.subs[name] = (at + 1, end + 1)  # the body runs its endsub: ``o<x> endsub [v]`` returns v
         for i, (name, pos) in enumerate(starts):

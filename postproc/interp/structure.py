@@ -43,6 +43,12 @@ def source_text(block: Block) -> str:
     return text.strip() or type(block.get(CONTROL)).__name__
 
 
+def flow_overflow(block: Block, entry: int, limit: int) -> str:
+    """The message for a construct that would hold entry ``entry`` of a flow stack of ``limit``."""
+    return (f"'{source_text(block)}' would hold entry {entry} of the controller's flow control stack, which has "
+            f"{limit} (each open loop, condition and call takes one): it stops there (stack overflow)")
+
+
 class _Open:
     """An open construct: its head, where it stands, and (for an if or a switch) its members so far."""
 
@@ -61,7 +67,7 @@ class Structure:
     run; else only check (a streamed program)."""
 
     __slots__ = ("file", "rules", "index", "stack", "pairs", "chains", "subs", "programs", "failed", "uses",
-                 "body_use")
+                 "body_use", "entries")
 
     def __init__(self, file: str, rules: SubprogramRules, index: bool = False) -> None:
         self.file = file
@@ -82,6 +88,10 @@ class Structure:
         """Sub name -> the most entries of the flow stack its body opens, with what it calls (``flow_stack``)."""
         self.body_use: list[int] = []
         """For each ``o<x> sub`` open, the most entries its body has opened so far."""
+        self.entries: dict[int, int] = {}
+        """Position of a loop, condition or call -> the entries of the flow stack its body holds once it is open
+        (those open around it in its sub's body, or the main program's, and itself; ``index`` only): a run adds
+        its callers' (``Interpreter``), which reaches what the text cannot show, a sub calling itself."""
 
     def _error(self, block: Block, message: str) -> ProgramError:
         self.failed = True
@@ -106,7 +116,7 @@ class Structure:
         """The control statement of the block at ``pos``."""
         limit = self.rules.flow_stack
         if limit is not None:
-            self._flow(control, block, limit)
+            self._flow(control, pos, block, limit)
         if isinstance(control, (*LOOPS, If, SubStart, Switch)):
             opened = _Open(control, pos, block)
             self.stack.append(opened)
@@ -149,7 +159,7 @@ class Structure:
             self.subs[name] = (opened.pos, pos)
             self._pair(opened.pos, pos)
 
-    def _flow(self, control: Section, block: Block, limit: int) -> None:
+    def _flow(self, control: Section, pos: int, block: Block, limit: int) -> None:
         """The controller's flow stack (``SubprogramRules.flow_stack``): a loop, condition or call opens one entry
         over those open around it in its body; a call adds what its sub's body opens (a sub defined before
         it: the controller finds no other). Counted where the text nests, so a construct in a branch never
@@ -159,20 +169,24 @@ class Structure:
             return
         if not isinstance(control, (*LOOPS, If, Switch, Call)):
             return
+        used = self.held() + 1
+        if self.index:
+            self.entries[pos] = used
+        if isinstance(control, Call) and isinstance(control.name, str):
+            used += self.uses.get(control.name, 0)
+        if used > limit:
+            raise self._error(block, flow_overflow(block, used, limit))
+        if self.body_use:
+            self.body_use[-1] = max(self.body_use[-1], used)
+
+    def held(self) -> int:
+        """The constructs open around the next statement in its sub's body (or the main program's)."""
         around = 0
         for opened in reversed(self.stack):
             if isinstance(opened.head, SubStart):
                 break
             around += 1
-        used = around + 1
-        if isinstance(control, Call) and isinstance(control.name, str):
-            used += self.uses.get(control.name, 0)
-        if used > limit:
-            raise self._error(block, f"'{source_text(block)}' would hold entry {used} of the controller's flow "
-                                     f"control stack, which has {limit} (each open loop, condition and call takes "
-                                     "one): it stops there (stack overflow)")
-        if self.body_use:
-            self.body_use[-1] = max(self.body_use[-1], used)
+        return around
 
     def finish(self) -> None:
         """The end of the file: a construct still open is an error (the innermost one is named)."""

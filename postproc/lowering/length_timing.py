@@ -26,7 +26,12 @@ program that changes the length there (typical posts: ``G43 H1 Z15.``). Otherwis
   point with the new length (the change goes beside it); given incrementally (``G49`` then ``G91 G28 Z0``,
   a common program end), its point is written absolutely from the known Z (``G49 G90 G28 Z<z>``, then
   ``G91`` again), so the target moves there as the source does [V: rs274 runs G49 and G90 before G28 in
-  one block, its order of execution].
+  one block, its order of execution]. From a Z not known, an incremental return naming Z keeps its increments,
+  its Z one plus the new length minus the old (``G49`` from length 100, then ``G91 G28 Z0``: ``G91 G49 G28
+  Z-100.``): the target's increment runs from where its machine stands, still with the old length, to the
+  source's point with the new [V: rs274, tests/test_length_timing_rs274.py; grbl ``gcode.c`` adds an increment
+  to the machine position]. An incremental return that does not name Z stays a located error: naming Z would
+  send Z to the reference point too.
 
 On a lathe the same holds for X and Z together: a Fanuc T/GSK offset (``T0102``, become LinuxCNC's lathe
 ``G43 H02`` in ``postproc.cycles.lathe_lowering``) applies at the next move of any axis, LinuxCNC's where
@@ -172,6 +177,7 @@ def _complete(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
     inch = False
     absolute = True
     in_force: tuple[str, object, object] = ("cancel", None, None)
+    applied = in_force  # the length the machine stands with: the last change that met its move
     held: list[Block] = []  # the changing block and the blocks after it, while a change waits
     table = ToolTable(ctx.setup)
     pending: tuple[ToolLengthOffset, Location] | None = None  # the waiting change, and where it was written
@@ -260,6 +266,9 @@ def _complete(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
                 sections["DistanceMode"] = DistanceMode("absolute")
                 block.changed()
                 restore = True
+            elif not ctx.lathe and _incremental_z_return(block, absolute) and _shifted_return(
+                    block, _length(applied, table, inch), _length(in_force, table, inch)):
+                pass
             elif (isinstance(motion, Motion) and motion.mode in _PLAIN and absolute
                     and all(pos[a] is not None for a in missing) and all(a in motion.axes or a in missing for a in axes)
                     and "MachineCoordinates" not in sections and "CompoundMotion" not in sections):
@@ -278,6 +287,7 @@ def _complete(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
                 sections["ToolLengthOffset"] = pending[0]
                 block.changed()
             pending = None
+            applied = in_force
         _follow(block, pos, absolute, in_force, None if ctx.lathe else table, inch)
         yield block
         if restore:
@@ -302,6 +312,29 @@ def _incremental_return(block: Block, absolute: bool, axes: tuple[str, ...], pos
     return (isinstance(motion, Motion) and motion.mode in _RETURNS and not absolute and bool(motion.axes)
             and all(a in axes and type(v) is float and pos[a] is not None for a, v in motion.axes.items())
             and all(a in motion.axes for a in axes) and "MachineCoordinates" not in block.sections)
+
+
+def _incremental_z_return(block: Block, absolute: bool) -> bool:
+    """A reference return whose intermediate point names Z by a plain increment (``G91 G28 Z0``)."""
+    motion = block.sections.get("Motion")
+    return (isinstance(motion, Motion) and motion.mode in _RETURNS and not absolute
+            and type(motion.axes.get(AXIS)) is float and "MachineCoordinates" not in block.sections)
+
+
+def _shifted_return(block: Block, old: float | None, new: float | None) -> bool:
+    """An incremental return's Z increment for the target, where the programmed Z is not known: the source
+    takes the intermediate point at the programmed Z plus the increment, with the new length (machine Z: z + dz
+    + new); the target first re-expresses where it stands under the new length (program Z: z + old - new, the
+    machine not moving) and adds its increment there, so dz + new - old reaches the same machine Z [V: rs274
+    runs G43/G49 before G28 in one block; ``convert_tool_length_offset`` moves the program's current point,
+    not the machine]. False where the set-up lacks a length."""
+    if old is None or new is None:
+        return False
+    motion = block.sections["Motion"]
+    assert isinstance(motion, Motion)
+    motion.axes[AXIS] = float(motion.axes[AXIS]) + new - old  # type: ignore[arg-type]
+    block.changed()
+    return True
 
 
 def _incremental_again(block: Block) -> Block:

@@ -281,6 +281,11 @@ class ControllerSettings(SetupGroup):
     STOP_SPINDLE_TURNING before CHANGE_TOOL]. False: a tool change (M6) stops the spindle, which then stays
     stopped until the program starts it; a Fanuc T/GSK turret index with the spindle turning is then refused
     towards a control that changes tools with M6 (``postproc.cycles.lathe_lowering``)."""
+    g53_tool_corr: bool | None = None
+    """SINUMERIK machine data ``$MN_G53_TOOLCORR``: whether a block without frames (``G53``, ``G153``, ``SUPA``)
+    keeps the tool length in force (0, false) or suppresses it too (1, true) [V: SINUMERIK 802D sl/840D ISO Milling
+    programming manual 04.07, 3.1.1]. None: not given, and such a block under a tool length is kept verbatim
+    (refused elsewhere, naming this attribute)."""
     rotation_incremental: bool = False
     """A coordinate rotation's angle R follows G90/G91: under G91 it is added to the angle of the program's
     previous rotation (Fanuc parameter 5400#0 RIN = 1 [V: 0i-A connection manual B-63503EN, 5400];

@@ -171,6 +171,9 @@ class Simulator(Moves):
             kind = UNSIMULATED.get(key)
             if kind is None or (key == "CutterCompensation" and self.cutter is not None and self.kept_native is None):
                 continue
+            if key == "PathControl" and section.one_shot:  # type: ignore[attr-defined]
+                self._stop_once(block.line, kind)
+                continue
             value = _setting_text(key, section)
             if key == "CutterCompensation" and self.lathe and value in ("left", "right"):
                 value = self._turret_register(value)
@@ -179,6 +182,16 @@ class Simulator(Moves):
             if value is not None and value != self.settings.get(kind):
                 self.settings[kind] = value
                 self.unsimulated.append((block.line, kind, value))
+
+    def _stop_once(self, line: int, kind: str) -> None:
+        """A one-shot exact stop: exact stop for the block, then the mode before (cutting where none was set:
+        the power-on mode of Fanuc and LinuxCNC [K]), so a target without one that writes the two modes
+        (LinuxCNC's ``exact_stop`` lowering) compares alike; under an exact-stop mode it changes nothing."""
+        before = self.settings.get(kind) or "cutting"
+        if before == "exact stop":
+            return
+        self.unsimulated += [(line, kind, "exact stop"), (line, kind, before)]
+        self.settings[kind] = before
 
     def _kept_native(self, kind: str, value: str | None) -> bool:
         """Whether a compensation change is recorded as a setting while the rules are simulated (``verify``

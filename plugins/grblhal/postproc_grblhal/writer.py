@@ -25,7 +25,10 @@ grblHAL's table.
   the callee the caller's ``#k`` for an argument not given, rs274 reads 0: ``variables``). ``M98`` subprograms
   of a program that computes nothing arrive as subs from the lowering step ``subprograms``. The statements
   written go through the family's ``Structure`` under grblHAL's rules: a construct that would open entry 21 of
-  grblHAL's flow control stack (``program.FLOW_STACK``), with what the subs it calls open, is refused there.
+  grblHAL's flow control stack (``program.FLOW_STACK``), with what the subs it calls open, is refused there. A
+  sub of another dialect's program that calls itself opens the stack again at each level, deeper only as it
+  runs: its body counts as nested to the source's bound of nested calls (``recursion``), so a recursion that
+  could reach entry 21 is refused (the program is flattened) and one that cannot is kept.
   Everything else that computes is an ``UnsupportedError`` (so the program reaches grblHAL flattened): any
   statement on a build without expressions, a named sub, and another family's control flow (Fanuc's
   ``WHILE .. DO1`` reuses its labels, ISG's ``$FOR``...).
@@ -49,7 +52,7 @@ from postproc.rs274.oword import spell_assignments, spell_oword
 
 from .cancels import GROUP_01
 from .codes import CODES
-from .program import GRBLHAL_SPELLING, GrblhalProgramSyntax
+from .program import FLOW_STACK, GRBLHAL_SPELLING, GrblhalProgramSyntax
 from .subprograms import CONVERTED
 
 if TYPE_CHECKING:
@@ -95,6 +98,8 @@ class GrblhalWriter(GrblFamilyWriter):
         self.body: str | None = None
         """The sub whose body is being written: registered on grblHAL before it runs, so it may call itself."""
         self.flow: Structure | None = None
+        self.recursive: dict[str, int] = {}
+        """A sub of another dialect's program that calls itself -> the entries its body holds at that call."""
         """The o-word statements written, nested as grblHAL nests them (its flow control stack); made at the
         first (the structure check imports the evaluator, which a program without statements never needs)."""
 
@@ -141,19 +146,45 @@ class GrblhalWriter(GrblFamilyWriter):
         own = self.source_dialect in _SAME_OWORDS or CONVERTED in self.ctx.run_data
         if isinstance(section, _FLOW) and own:
             self.nest(section, block)
+            if isinstance(section, SubEnd) and section.name in self.recursive:
+                self.recursion(section.name, block)
             return [spell_oword(section)]
         if isinstance(section, Call) and own:
             words = self.call_words(section, block)
+            name = section.name
+            if isinstance(name, str) and name == self.body and self.source_dialect != self.DIALECT:
+                self.recursive[name] = max(self.recursive.get(name, 0), self.structure().held() + 1)
             self.nest(section, block)
             return [words]
         return super().statement_words(section, block)
 
     def nest(self, section: Any, block: Block) -> None:
         """An o-word statement written: nested as grblHAL nests it (``program.FLOW_STACK``, module docstring)."""
+        self.structure().statement(section, 0, block)
+
+    def structure(self) -> Structure:
         if self.flow is None:
             from postproc.interp.structure import Structure
             self.flow = Structure(self.ctx.file, GrblhalProgramSyntax.SUBPROGRAM_RULES)
-        self.flow.statement(section, 0, block)
+        return self.flow
+
+    def recursion(self, name: str, block: Block) -> None:
+        """A sub that calls itself, its body just written: at its deepest, a run nests it to the source's bound
+        of nested calls (rs274: 9), each level holding the entries around its own call again, so its body
+        counts that many times over for every call of it (``Structure.uses``); without a bound, past the stack."""
+        levels = self.source_call_levels()
+        flow = self.structure()
+        extra = FLOW_STACK if levels is None else (levels - 1) * self.recursive[name]
+        flow.uses[name] = flow.uses.get(name, 0) + extra
+
+    def source_call_levels(self) -> int | None:
+        """The source controller's bound of nested calls (``SubprogramRules.call_levels``)."""
+        from postproc.plugins import default_registry
+        from postproc.syntaxes.program import ProgramSyntax
+        for step in default_registry().dialect(self.source_dialect).pipeline(self.ctx.setup).steps:
+            if isinstance(step, ProgramSyntax):
+                return step.SUBPROGRAM_RULES.call_levels
+        return None
 
     def call_words(self, call: Call, block: Block) -> str:
         """``o<n> call [..]`` after its sub's definition; from LinuxCNC with its 30 arguments (module docstring), but

@@ -53,6 +53,12 @@ def _subprogram_layout(blocks: Iterator[Block], ctx: Context, target: type[Diale
     return subprograms_after_callers(blocks, ctx, target)
 
 
+def _exact_stop_for_one_block(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """``exact_stop.exact_stop_for_one_block``, imported when a translation to LinuxCNC first runs."""
+    from .exact_stop import exact_stop_for_one_block
+    return exact_stop_for_one_block(blocks, ctx, target)
+
+
 class Linuxcnc(Dialect):
     NAME = "linuxcnc"
     LOWER_CASE: ClassVar[bool] = True
@@ -96,13 +102,15 @@ class Linuxcnc(Dialect):
     """``( )`` and ``;`` comments; ``(MSG,`` ``(LOGOPEN,`` ... act (``active_comments.ACTIVE``)."""
     LINE_RULE = Lazy[LineRule](".lines:LINES")
     """rs274 reads at most 252 bytes a line: a longer comment is shortened (``lines.py``)."""
-    LOWERING = (nest_forward_jumps, stops_after_motion, _subprogram_layout, _thread_feed_apart)
+    LOWERING = (nest_forward_jumps, stops_after_motion, _subprogram_layout, _thread_feed_apart,
+                _exact_stop_for_one_block)
     """Another dialect's forward jumps as ``o.. if`` .. ``endif`` (or ``break``) and ``UNTIL`` as ``o.. do`` ..
     ``while`` where they have that shape, exact equalities in conditions as two exact comparisons
     (``postproc.lowering.structured_jumps``). A moving block's spindle stop and coolant off go in a block of
     their own after it: LinuxCNC runs them before the motion (``postproc.rs274.order_of_execution``); another dialect's subprograms stand
     after their callers, and a cycle gets the return level its source assumed (``layout``); a thread
-    block's F goes on a line before it (``lathe_writer.feed_apart``: G33 refuses F)."""
+    block's F goes on a line before it (``lathe_writer.feed_apart``: G33 refuses F); a one-shot exact stop is
+    G61 for its block, then the mode before (``exact_stop``: rs274 refuses G9)."""
     CYCLE_SEMANTICS = "rs274"
     """How the native cycles move: start below R rises to R first, G98 returns to the old Z only when
     it is above R, G91 R is measured from the Z at the block's start, G74/G84/G89 feed out to the

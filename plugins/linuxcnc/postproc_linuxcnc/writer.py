@@ -1,7 +1,7 @@
 """LinuxCNC writer: the RS274 word writer spelling every code from LinuxCNC's table (G0, M3, G4 P seconds).
 
 * G4 P and a cycle's P are seconds; the repeat count of a native cycle is L.
-* No G44 and no one-shot exact stop (G9): unsupported. A program number is a comment until the main
+* No G44: unsupported. No one-shot exact stop (G9): the lowering writes G61 for the block (``exact_stop``). A program number is a comment until the main
   program's end (M2/M30) is written, ``O<n>`` after it (a subprogram start, as rs274 reads it); from a
   LinuxCNC source every ``O<n>`` stays one.
 * A subprogram call sharing the caller's locals (``Call(kind="sub")``) is ``M98 P<n> [L<k>]``, alone on
