@@ -302,22 +302,29 @@ def test_an_isg_arc_is_written_about_the_centre_isg_turns_about(target: str) -> 
 
 @pytest.mark.parametrize("target", ["isg", "fagor"])
 def test_a_spiral_a_centre_moving_target_would_run_as_a_circle_is_a_located_error(target: str) -> None:
-    """LinuxCNC runs (10, 0) to (-10.008, 0) about the origin as a spiral; ISG and Fagor accept it (Fagor's
-    0.01 mm too) but move the centre onto x = -0.004: by (10.008^2 - 10^2) / (2 * 20.008) = 0.004 mm, a circle
-    up to 0.008 + 2 * 0.004 mm off the spiral (``SPIRAL_AS_CIRCLE_MM``: 0.0005 mm)."""
+    """LinuxCNC runs (10, 0) to (-10.008, 0) clockwise about the origin as a spiral; ISG and Fagor accept it
+    (Fagor's 0.01 mm too) but move the centre onto x = -0.004, by (10.008^2 - 10^2) / (2 * 20.008) = 0.004 mm,
+    and run the circle of radius 10.004 about it. At a share t of the turn the spiral point (10 + 0.008 t at
+    angle -pi t) lies, to first order, 10 + 0.008 t + 0.004 cos(pi t) from the new centre: off the circle by
+    0.004 (2 t - 1 + cos(pi t)), largest where sin(pi t) = 2 / pi, past ``SPIRAL_AS_CIRCLE_MM`` (0.0005 mm)."""
     text = "G21 G17 G90\nG0 X10 Y0\nG1 F100\nG2 X-10.008 Y0 I-10 J0\nM2\n"
+    t = math.asin(2 / math.pi) / math.pi
+    gap = 0.004 * (2 * t - 1 + math.cos(math.pi * t))
     with pytest.raises(ErrorList) as info:
         _translate(text, "linuxcnc", target)
-    assert [str(e) for e in info.value.errors] == [
-        f"t.nc:4:16: error: the {target} controller runs this arc as a circle about a centre it moves by 0.004 mm: "
-        f"its end radius differs from its start radius by 0.008 mm, and the source's controller runs it as a "
-        f"spiral, which that circle may leave by more than 0.0005 mm (translate with --arcs lines:TOL)"]
+    (message,) = [str(e) for e in info.value.errors]
+    head = (f"t.nc:4:16: error: the {target} controller runs this arc as a circle about a centre it moves by 0.004 "
+            f"mm: its end radius differs from its start radius by 0.008 mm, and the source's controller runs it as "
+            f"a spiral, which that circle leaves by ")
+    tail = " mm (more than 0.0005 mm) (translate with --arcs lines:TOL)"
+    assert message.startswith(head) and message.endswith(tail), message
+    assert float(message[len(head):-len(tail)]) == pytest.approx(gap, rel=1e-3)
 
 
 @pytest.mark.parametrize("target", ["isg", "fagor"])
 def test_a_spiral_within_the_bound_reaches_a_centre_moving_target_and_verifies(target: str) -> None:
     """0.0001 mm off: the target moves the centre by about 0.00005 mm; the circle stays within
-    0.0001 + 2 * 0.00005 mm of the spiral, and verify (0.001 mm) finds the paths the same."""
+    0.00005 * 0.21 mm of the spiral (as above), and verify (0.001 mm) finds the paths the same."""
     from postproc.simulate.verify import verify_lines
     text = "G21 G17 G90\nG0 X10 Y0\nG1 F100\nG2 X-10.0001 Y0 I-10 J0\nM2\n"
     out = _translate(text, "linuxcnc", target)
@@ -327,9 +334,9 @@ def test_a_spiral_within_the_bound_reaches_a_centre_moving_target_and_verifies(t
 
 
 def test_the_circle_about_a_moved_centre_stays_within_its_bound_of_the_spiral() -> None:
-    """``SPIRAL_AS_CIRCLE_MM``'s bound, sampled: for seeded arcs of every sweep, the spiral about the programmed
-    centre lies within |r1 - r0| + 2 * ``centre_move`` of the circle each moving rule runs, and
-    ``centre_move`` is the distance to the centre ``centre`` returns."""
+    """For seeded arcs of every sweep: ``centre_move`` is the distance to the centre ``centre`` returns; the
+    spiral about the programmed centre, sampled densely here, lies within ``spiral_gap`` (to its sampling)
+    and within |r1 - r0| + 2 * ``centre_move`` (the triangle inequality) of the circle each moving rule runs."""
     from postproc.arc_end import NEAREST_CENTRE
     rnd = random.Random(26)
     for runs in (NEAREST_CENTRE, START_RADIUS):
@@ -344,8 +351,12 @@ def test_the_circle_about_a_moved_centre_stays_within_its_bound_of_the_spiral() 
             moved = rule.centre_move(r0, r0 + d, math.hypot(e[0] - s[0], e[1] - s[1]))
             assert math.hypot(*c) == pytest.approx(moved, rel=1e-5, abs=1e-9)
             radius = math.hypot(s[0] - c[0], s[1] - c[1])
-            for i in range(41):
-                t = i / 40
+            worst = 0.0
+            for i in range(1001):
+                t = i / 1000
                 rho, angle = r0 + d * t, a0 + sweep * t
                 off = abs(math.hypot(rho * math.cos(angle) - c[0], rho * math.sin(angle) - c[1]) - radius)
                 assert off <= abs(d) + 2 * moved + 1e-9
+                worst = max(worst, off)
+            gap = rule.spiral_gap(s, e, (0.0, 0.0), clockwise=False)
+            assert 0.99 * worst - 1e-12 <= gap <= 1.001 * worst + 1e-12

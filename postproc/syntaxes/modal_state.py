@@ -236,8 +236,7 @@ def _check_arc(block: Block, ctx: Context, motion: Motion) -> None:
             target = ctx.run_data.get(TARGET_ARC_END)
             if target is None:
                 return  # the common arc: its end on its circle, its centre away from its start
-            _target_accepts(block, ctx, motion, target, r0 / scale, r1 / scale, scale != 1.0,
-                            hypot(e1 - s1, e2 - s2) / scale)
+            _target_accepts(block, ctx, motion, target, (s1, s2), (e1, e2), (c1, c2), scale)
             return
     else:
         radius *= scale
@@ -253,24 +252,31 @@ def _check_arc(block: Block, ctx: Context, motion: Motion) -> None:
     target = ctx.run_data.get(TARGET_ARC_END)
     if target is not None and radius is None and centre is not None:
         c1, c2 = s1 + offsets.get(a1, 0.0), s2 + offsets.get(a2, 0.0)
-        _target_accepts(block, ctx, motion, target, hypot(s1 - c1, s2 - c2) / scale, hypot(e1 - c1, e2 - c2) / scale,
-                        scale != 1.0, hypot(e1 - s1, e2 - s2) / scale)
+        _target_accepts(block, ctx, motion, target, (s1, s2), (e1, e2), (c1, c2), scale)
 
 
-def _target_accepts(block: Block, ctx: Context, motion: Motion, target: tuple[str, ArcEndRule], r0: float,
-                    r1: float, inch: bool, chord: float) -> None:
-    """Refuse an arc (radii and chord in program units) the source's controller runs as a spiral where the
-    translation's target would refuse it, or would run it as a circle about a centre it moves further from
-    that spiral than ``SPIRAL_AS_CIRCLE_MM`` (``postproc.arc_end.TARGET_ARC_END``)."""
+def _target_accepts(block: Block, ctx: Context, motion: Motion, target: tuple[str, ArcEndRule],
+                    s: tuple[float, float], e: tuple[float, float], c: tuple[float, float], scale: float) -> None:
+    """Refuse an arc (start, end, programmed centre in mm; ``scale`` mm per program unit) the source's
+    controller runs as a spiral where the translation's target would refuse it, or would run it as a circle
+    about a centre it moves further from that spiral than ``SPIRAL_AS_CIRCLE_MM``
+    (``postproc.arc_end.TARGET_ARC_END``)."""
     name, rule = target
+    inch = scale != 1.0
     unit = "in" if inch else "mm"
+    r0 = hypot(s[0] - c[0], s[1] - c[1]) / scale
+    r1 = hypot(e[0] - c[0], e[1] - c[1]) / scale
+    chord = hypot(e[0] - s[0], e[1] - s[1]) / scale
     if rule.allows(r0, r1, inch, chord):
-        moved = rule.centre_move(r0, r1, chord)
-        if rule.runs == SPIRAL or (abs(r0 - r1) + 2.0 * moved) * (MM_PER_INCH if inch else 1.0) <= SPIRAL_AS_CIRCLE_MM:
+        if rule.runs == SPIRAL:
             return
-        problem = (f"the {name} controller runs this arc as a circle about a centre it moves by {moved:.6g} {unit}: "
-                   f"its end radius differs from its start radius by {abs(r0 - r1):.6g} {unit}, and the source's "
-                   f"controller runs it as a spiral, which that circle may leave by more than {SPIRAL_AS_CIRCLE_MM:g} mm")
+        gap = rule.spiral_gap(s, e, c, motion.mode == "cw")
+        if gap <= SPIRAL_AS_CIRCLE_MM:
+            return
+        problem = (f"the {name} controller runs this arc as a circle about a centre it moves by "
+                   f"{rule.centre_move(r0, r1, chord):.6g} {unit}: its end radius differs from its start radius by "
+                   f"{abs(r0 - r1):.6g} {unit}, and the source's controller runs it as a spiral, which that circle "
+                   f"leaves by {gap:.6g} mm (more than {SPIRAL_AS_CIRCLE_MM:g} mm)")
     else:
         problem = (f"the {name} controller refuses this arc: its end radius differs from its start radius by "
                    f"{abs(r0 - r1):.6g} {unit}, and it accepts {rule.limit(r0, r1, inch, chord):.6g} {unit} here; "
@@ -283,10 +289,8 @@ def _target_accepts(block: Block, ctx: Context, motion: Motion, target: tuple[st
 
 SPIRAL_AS_CIRCLE_MM: Final = 0.0005
 """How far the circle a target runs about the centre it moves may leave the source's spiral (half of
-``verify``'s default tolerance, as ``postproc.lowering.arcs.R_FORM_TOLERANCE_MM``). Bounded by the triangle
-inequality: a spiral point at distance rho from the programmed centre c lies within |rho - R| + |c - c'| of
-the circle of radius R about c', with |rho - r0| <= |r1 - r0| and |R - r0| <= |c - c'| (R = |s - c'|,
-r0 = |s - c|), so within |r1 - r0| + 2 |c - c'| (tests/test_arc_end.py samples it)."""
+``verify``'s default tolerance, as ``postproc.lowering.arcs.R_FORM_TOLERANCE_MM``), measured by
+``ArcEndRule.spiral_gap``."""
 
 
 _SMALLEST: Final = 10.0 ** -PLACES
