@@ -315,16 +315,17 @@ def test_a_spiral_a_centre_moving_target_would_run_as_a_circle_is_a_located_erro
     (message,) = [str(e) for e in info.value.errors]
     head = (f"t.nc:4:16: error: the {target} controller runs this arc as a circle about a centre it moves by 0.004 "
             f"mm: its end radius differs from its start radius by 0.008 mm, and the source's controller runs it as "
-            f"a spiral, which that circle leaves by ")
-    tail = " mm (more than 0.0005 mm) (translate with --arcs lines:TOL)"
+            f"a spiral about the programmed centre, which that circle leaves by ")
+    tail = " mm (each more than 0.0005 mm is past what verify vouches for) (translate with --arcs lines:TOL)"
     assert message.startswith(head) and message.endswith(tail), message
     assert float(message[len(head):-len(tail)]) == pytest.approx(gap, rel=1e-3)
 
 
 @pytest.mark.parametrize("target", ["isg", "fagor"])
 def test_a_spiral_within_the_bound_reaches_a_centre_moving_target_and_verifies(target: str) -> None:
-    """0.0001 mm off: the target moves the centre by about 0.00005 mm; the circle stays within
-    0.00005 * 0.21 mm of the spiral (as above), and verify (0.001 mm) finds the paths the same."""
+    """0.0001 mm off: the target moves the centre by (10.0001^2 - 10^2) / (2 * 20.0001), about 0.00005 mm; the
+    circle stays within 0.00005 * 0.21 mm of the spiral (as above), and verify (0.001 mm) finds the paths the
+    same."""
     from postproc.simulate.verify import verify_lines
     text = "G21 G17 G90\nG0 X10 Y0\nG1 F100\nG2 X-10.0001 Y0 I-10 J0\nM2\n"
     out = _translate(text, "linuxcnc", target)
@@ -360,3 +361,17 @@ def test_the_circle_about_a_moved_centre_stays_within_its_bound_of_the_spiral() 
                 worst = max(worst, off)
             gap = rule.spiral_gap(s, e, (0.0, 0.0), clockwise=False)
             assert 0.99 * worst - 1e-12 <= gap <= 1.001 * worst + 1e-12
+
+
+def test_a_centre_move_verify_cannot_vouch_for_is_refused_however_close_the_path() -> None:
+    """A quarter turn from (10, 0) to (0, 10.002) about the origin: ISG moves the centre by
+    (10.002^2 - 10^2) / (2 * |(-10, 10.002)|) = 0.0014 mm; verify compares arc centres, so the arc is refused
+    even where the circle stays near the spiral."""
+    text = "G21 G17 G90\nG0 X10 Y0\nG1 F100\nG3 X0 Y10.002 I-10 J0\nM2\n"
+    moved = (10.002 ** 2 - 100) / (2 * math.hypot(10, 10.002))
+    with pytest.raises(ErrorList) as info:
+        _translate(text, "linuxcnc", "isg")
+    (message,) = [str(e) for e in info.value.errors]
+    head = "t.nc:4:15: error: the isg controller runs this arc as a circle about a centre it moves by "
+    assert message.startswith(head), message
+    assert float(message[len(head):].split(" ")[0]) == pytest.approx(moved, rel=1e-5)

@@ -271,12 +271,13 @@ def _target_accepts(block: Block, ctx: Context, motion: Motion, target: tuple[st
         if rule.runs == SPIRAL:
             return
         gap = rule.spiral_gap(s, e, c, motion.mode == "cw")
-        if gap <= SPIRAL_AS_CIRCLE_MM:
+        moved = rule.centre_move(r0, r1, chord)
+        if max(gap, moved * scale) <= SPIRAL_AS_CIRCLE_MM:
             return
-        problem = (f"the {name} controller runs this arc as a circle about a centre it moves by "
-                   f"{rule.centre_move(r0, r1, chord):.6g} {unit}: its end radius differs from its start radius by "
-                   f"{abs(r0 - r1):.6g} {unit}, and the source's controller runs it as a spiral, which that circle "
-                   f"leaves by {gap:.6g} mm (more than {SPIRAL_AS_CIRCLE_MM:g} mm)")
+        problem = (f"the {name} controller runs this arc as a circle about a centre it moves by {moved:.6g} {unit}: "
+                   f"its end radius differs from its start radius by {abs(r0 - r1):.6g} {unit}, and the source's "
+                   f"controller runs it as a spiral about the programmed centre, which that circle leaves by "
+                   f"{gap:.6g} mm (each more than {SPIRAL_AS_CIRCLE_MM:g} mm is past what verify vouches for)")
     else:
         problem = (f"the {name} controller refuses this arc: its end radius differs from its start radius by "
                    f"{abs(r0 - r1):.6g} {unit}, and it accepts {rule.limit(r0, r1, inch, chord):.6g} {unit} here; "
@@ -288,9 +289,10 @@ def _target_accepts(block: Block, ctx: Context, motion: Motion, target: tuple[st
 
 
 SPIRAL_AS_CIRCLE_MM: Final = 0.0005
-"""How far the circle a target runs about the centre it moves may leave the source's spiral (half of
-``verify``'s default tolerance, as ``postproc.lowering.arcs.R_FORM_TOLERANCE_MM``), measured by
-``ArcEndRule.spiral_gap``."""
+"""How far the circle a target runs about the centre it moves may leave the source's spiral
+(``ArcEndRule.spiral_gap``), and how far its centre may move (``ArcEndRule.centre_move``): ``verify``
+compares arc centres too, so each within half its default tolerance (as
+``postproc.lowering.arcs.R_FORM_TOLERANCE_MM``)."""
 
 
 _SMALLEST: Final = 10.0 ** -PLACES
