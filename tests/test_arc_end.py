@@ -375,3 +375,28 @@ def test_a_centre_move_verify_cannot_vouch_for_is_refused_however_close_the_path
     head = "t.nc:4:15: error: the isg controller runs this arc as a circle about a centre it moves by "
     assert message.startswith(head), message
     assert float(message[len(head):].split(" ")[0]) == pytest.approx(moved, rel=1e-5)
+
+
+def test_the_set_up_gives_isg_and_fagor_their_machines_limits(tmp_path: object) -> None:
+    """``<Controller centreShiftLimit centreShiftShare>`` (ISG P-CHAN-00059/00060 in mm and as a share) and
+    ``<Controller arcRadiusError arcRadiusShare>`` (Fagor CIRINERR/CIRINFACT), read from the XML: the 0.1 mm
+    move of I10.1 above is refused under 0.05 mm and 0.1 % of 10 mm; Fagor's 0.2 mm difference of radii is
+    accepted under 0.25 mm, and each limit is its dialect's alone (the other dialect keeps its default)."""
+    from pathlib import Path
+
+    from postproc.setup.machine_setup import load_setup
+    path = Path(str(tmp_path)) / "m.xml"
+    path.write_text('<MachineSetup><Controller centreShiftLimit="0.05" centreShiftShare="0.001" '
+                    'arcRadiusError="0.25"/></MachineSetup>\n')
+    setup = load_setup(path)
+    text = "G1 X0 Y0 F100\nG2 X20 Y0 I10.1 J0\nM30\n"
+
+    def runs(dialect: str) -> bool:
+        try:
+            list(toolpath_events(io.StringIO(text), file="t.nc", dialect=dialect, setup=setup))
+        except ErrorList:
+            return False
+        return True
+
+    assert not runs("isg") and runs("fagor")
+    assert _accepts(text, "isg") and not _accepts(text, "fagor")  # the defaults: 2 mm / 5 %, 0.01 mm

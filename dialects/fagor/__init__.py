@@ -9,6 +9,7 @@ What DIALECTS.md marks uncertain for the 8070 [?] is kept verbatim (``reader``).
 
 from __future__ import annotations
 
+from dataclasses import replace
 from typing import TYPE_CHECKING, Callable, Iterator
 
 from postproc.context import Context
@@ -58,8 +59,21 @@ class Fagor(Dialect):
     CIRINFACT (either suffices), else an error [K: Fagor CNC 8070 programming manual (soft V02.0x) 6.3.6 "Arc
     center correction (G264/G265)"]. The least move, onto the chord's perpendicular bisector
     (``NEAREST_CENTRE``), is taken as that arc [?]. The two parameters' defaults are not in the manuals found
-    [?]: 0.01 mm absolute (the neutral rule) and no relative share are taken, which accepts no more than the
-    machine. G264 (start radius about the programmed centre) is not read."""
+    [?]: 0.01 mm absolute (the neutral rule) and no relative share are taken unless the set-up gives the
+    machine's (``arc_end_rule``). G264 (start radius about the programmed centre) is not read."""
+
+    @classmethod
+    def arc_end_rule(cls, setup: MachineSetup) -> ArcEndRule:
+        """``ARC_END`` with the machine's CIRINERR/CIRINFACT (``<Controller arcRadiusError arcRadiusShare>``, in mm
+        whatever the program's units)."""
+        limit, share = setup.controller.arc_radius_error, setup.controller.arc_radius_share
+        rule = cls.ARC_END
+        if limit is None and share is None:
+            return rule
+        metric = rule.metric if limit is None else limit
+        return replace(rule, metric=metric, inch=metric / MM_PER_INCH,
+                       relative=rule.relative if share is None else share)
+
     DESCRIPTION = "Fagor CNC 8070 milling: Z/I/K drilling words, G70/G71 units, G159 offsets, P parameters"
     READER = Lazy[type[Reader]](".reader:FagorReader")
     """Imported when a run first reads Fagor (``Lazy``), as are the writer and the syntax objects (with the

@@ -9,6 +9,7 @@ numbers collide with Fanuc's are told apart.
 
 from __future__ import annotations
 
+from dataclasses import replace
 from typing import TYPE_CHECKING, Callable, Iterator
 
 from postproc.comments import CommentSyntax
@@ -56,6 +57,19 @@ class Isg(Dialect):
     smaller the move" and "the programmed centre must lie within the permissible move of the corrected one":
     the least move, onto the chord's perpendicular bisector (``NEAREST_CENTRE``), is taken [?]. G164 (a spiral
     within P-CHAN-00171/00172) is not read."""
+
+    @classmethod
+    def arc_end_rule(cls, setup: MachineSetup) -> ArcEndRule:
+        """``ARC_END`` with the machine's P-CHAN-00059/00060 (``<Controller centreShiftLimit centreShiftShare>``,
+        in mm whatever the program's units)."""
+        limit, share = setup.controller.centre_shift_limit, setup.controller.centre_shift_share
+        rule = cls.ARC_END
+        if limit is None and share is None:
+            return rule
+        metric = rule.metric if limit is None else limit
+        return replace(rule, metric=metric, inch=metric / MM_PER_INCH,
+                       relative=rule.relative if share is None else share)
+
     DESCRIPTION = "Beckhoff TwinCAT CNC (ISG kernel) milling: P parameters, $ control flow, %L subroutines"
     READER = Lazy[type[Reader]](".reader:IsgReader")
     """Imported when a run first reads ISG (``Lazy``), as are the writer and the syntax objects."""
