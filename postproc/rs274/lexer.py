@@ -52,10 +52,16 @@ def split_lines(lines: Iterable[str]) -> Iterator[tuple[int, str, str]]:
             yield number, raw, ""
 
 
-def lex_block(file: str, number: int, text: str, eol: str, macro: bool = True) -> Block:
-    """Lex one line into a block with its words and lexical sections (``macro``: Custom Macro B too)."""
+def lex_block(file: str, number: int, text: str, eol: str, macro: bool = True, leader: bool = False) -> Block:
+    """Lex one line into a block with its words and lexical sections (``macro``: Custom Macro B too;
+    ``leader``: the line is the program's first, where a ``%`` may carry a title)."""
     block = Block(number, text, eol)
     code = text
+    if leader and "%" in code:
+        title = _leader_title(code)
+        if title is not None:
+            block.add(TapeMark(title or None))
+            return block
     if "(" in code or ")" in code:
         code = _take_comments(file, block, code)
     if ";" in code:
@@ -97,6 +103,18 @@ def lex_block(file: str, number: int, text: str, eol: str, macro: bool = True) -
                                  Location(file, number, code.find(letter) + 1))
             block.add(Sequence(int(num)))
     return block
+
+
+def _leader_title(code: str) -> str | None:
+    """What follows the ``%`` that opens a program's first line, as written (blanks around it dropped),
+    or None when the line does not start with ``%``. The control reads the ``%`` and skips the rest of the
+    line, the leader, where a title may stand (``%O1200(TOKARKA)``) [V: Fanuc 16i/18i-TB operator's manual
+    B-63524EN/01, memory card file format; Fanuc Data Server manual B-64014EN/03, ``% TITLE ;``]. Only
+    that first line: a later ``%`` with text stays an error (no manual found that allows it) [?]."""
+    stripped = code.strip(" \t")
+    if stripped[:1] != "%":
+        return None
+    return stripped[1:].strip(" \t")
 
 
 _LETTER = frozenset("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz")
