@@ -43,6 +43,9 @@ def _framed(blocks: Iterator[Block], marks: str, number: str | int) -> Iterator[
         sections = block.sections
         if "TapeMark" in sections:
             if marks == "never":
+                title = getattr(sections["TapeMark"], "title", None)
+                if title is not None:  # the % line goes, its title stays (``_title_as_comment``)
+                    yield _comment(block.line, title, block.eol)
                 continue
             if marks == "always" and opened and last is not None and "TapeMark" in last.sections:
                 continue  # one closing mark
@@ -65,9 +68,10 @@ def _framed(blocks: Iterator[Block], marks: str, number: str | int) -> Iterator[
 
 def _title_as_comment(blocks: Iterator[Block]) -> Iterator[Block]:
     """The title of the program's opening ``%`` line (``TapeMark.title``) as a comment line after it, for a
-    target whose control does not skip text on its ``%`` line: never dropped. Only the blocks up to the
-    first that holds anything are looked at, when the run reaches them (a chain after them: no step per
-    block)."""
+    target whose control does not skip text on its ``%`` line (LinuxCNC refuses ``%O1200(TOKARKA)``: "Bad
+    character '%' used" [V: rs274 run here]; the other targets' rules are not at hand [?]): never dropped.
+    Only the blocks up to the first that holds anything are looked at, when the run reaches them (a chain
+    after them: no step per block)."""
     return chain.from_iterable(_opening_then_rest(blocks))
 
 
@@ -79,12 +83,16 @@ def _opening_then_rest(blocks: Iterator[Block]) -> Iterator[Iterable[Block]]:
             title = getattr(block.sections.get("TapeMark"), "title", None)
             if title is not None:
                 head[-1] = _line(block.line, TapeMark(), block.eol)
-                comment = Block(block.line, None, block.eol)
-                comment.add(Comments([title]))
-                head.append(comment)
+                head.append(_comment(block.line, title, block.eol))
             break
     yield head
     yield blocks
+
+
+def _comment(line: int, text: str, eol: str) -> Block:
+    block = Block(line, None, eol)
+    block.add(Comments([text]))
+    return block
 
 
 def _renumbered(block: Block, number: str | int) -> Block:
