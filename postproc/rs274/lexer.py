@@ -1,4 +1,5 @@
-"""ISO 6983 lexical structure of the RS274 family (Fanuc and its kin): ``%``, O-number (and ISO's
+"""ISO 6983 lexical structure of the RS274 family (Fanuc and its kin): ``%`` (on a program's first line
+with the leader's title, for a reader that asks: ``lex_block(leader=...)``), O-number (and ISO's
 ``:``), block delete ``/n``, N, words, ``( )`` comments and ``;`` as end of block; and Custom Macro B:
 a statement after N (``#1=..``, ``IF``, ``GOTO``, ``WHILE``, ``END``) and computed word values
 (``X[#1*2.]``, ``X#1``, ``X-#3``, ``G#10``).
