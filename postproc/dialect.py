@@ -181,6 +181,10 @@ class Dialect:
     ``postproc.isg_family.tool_data``)."""
     TAPE_MARKS: ClassVar[bool] = False
     """A ``%`` line may open and close a program (Fanuc, GSK, LinuxCNC): ``<Output tapeMarks="always">``."""
+    LEADER_TITLE: ClassVar[bool] = False
+    """The control skips what follows the ``%`` of a program's first line (its leader): a title read
+    there (``TapeMark.title``) is written on that line; otherwise it is written as a comment after it
+    (``postproc.lowering.program_frame``)."""
     PROGRAM_NUMBERS: ClassVar[bool] = False
     """The dialect writes a main program's number (Fanuc/GSK ``O``, ISG/Fagor ``%``):
     ``<Output programNumber="1001">``."""

@@ -35,13 +35,9 @@ PROGRAMS = ALL if os.environ.get("POSTPROC_HELDOUT") == "all" else [p for p in A
 KNOWN_FAILURES: dict[tuple[str, str], str] = {
     ("linuxcnc/lathe_g70_71_demo.ngc", ""): (
         "LinuxCNC's own lathe cycles G71.1/G71.2 (roughing) and G70 (finishing) on an o-word profile: the "
-        "simulator does not expand them ('cannot be simulated'), so the source cannot be checked; every target "
-        "refuses the cycles too"),
-    ("fanuc/gcodeworkshop_tokarka_lathe_trimmed.nc", ""): (
-        "its first line is '%O1200(TOKARKA)': a Fanuc skips what follows the leading '%' up to the first LF "
-        "(the leader, where a title may stand) [V: Fanuc 16i/18i-TB operator's manual B-63524EN/01, memory card "
-        "file format; Data Server manual B-64014EN, NC program format '% TITLE ;'], but the Fanuc-family lexer "
-        "refuses text after '%' (postproc/rs274/lexer.py: \"'%' must stand alone on its line\")"),
+        "roughing passes are read, but the source is refused at line 32, its G70 under cutter compensation "
+        "(G42.1 D0.3 L2 on line 31): 'G70 with cutter compensation on is not modelled' (LinuxCNC 2.9.0 and "
+        "2.9.3+ differ there), so the source cannot be checked"),
 }
 """(program, target or '' for the source check) -> the defect, as found by the held-out set."""
 _SOURCE_REFUSED = frozenset(program for program, target in KNOWN_FAILURES if target == "")

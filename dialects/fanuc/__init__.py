@@ -46,6 +46,10 @@ class Fanuc(Dialect):
     """Fanuc's cycle rules (``postproc.cycles.semantics``: initial level, G98/G99, K repeats)."""
     TAPE_MARKS = True
     """``%`` opens and closes a program on tape or DNC."""
+    LEADER_TITLE = True
+    """The control skips what follows the first ``%`` up to the end of its line, where a title may stand
+    [V: Fanuc 16i/18i-TB operator's manual B-63524EN/01, memory card file format; Fanuc Data Server
+    manual B-64014EN/03, ``% TITLE ;``]."""
     PROGRAM_NUMBERS = True
     """``O1001``: the number the control stores the program under."""
     FAMILY = "fanuc"

@@ -86,10 +86,10 @@ class FanucReader(Reader):
                         continue
             try:
                 if EOF_BYTE in text or number == 1 and text[:1] == BOM:
-                    block = lex_block(file, number, lexable(number, text), eol)
+                    block = lex_block(file, number, lexable(number, text), eol, leader=number == 1)
                     block.text = text  # written back as it was
                 else:
-                    block = lex_block(file, number, text, eol)
+                    block = lex_block(file, number, text, eol, leader=number == 1)
                 if "M9" in text or "G6" in text or "m9" in text or "g6" in text:
                     read_call(block, self.ctx)
                 yield block

@@ -49,12 +49,19 @@ class ProgramStart(Section):
 
 @mypyc_attr(allow_interpreted_subclasses=True)
 class TapeMark(Section):
-    """Tape start/end marker line."""
+    """Tape start/end marker line; ``title``: what the program's first ``%`` line holds after the ``%``
+    (its leader, which the control skips up to the end of the line), kept so that a translation does not
+    drop it."""
 
     XNAME = "TapeMark"
 
     KEY = "TapeMark"
-    __slots__ = ()
+    __slots__ = ("title",)
+    XATTRS = (XAttr("title", str, None),)
+    title: str | None
+
+    def __init__(self, title: str | None = None) -> None:
+        self.title = title
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)

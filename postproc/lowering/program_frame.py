@@ -10,17 +10,20 @@ an error of the set-up, found before any block is written.
 
 from __future__ import annotations
 
-from typing import Iterator
+from itertools import chain
+from typing import Iterable, Iterator
 
 from ..context import Context
 from ..dialect import Dialect
 from ..errors import ConfigError, Location
-from ..ir import Block, ProgramStart, TapeMark
+from ..ir import Block, Comments, ProgramStart, TapeMark
 
 
 def frame_program(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
     out = ctx.setup.output
     marks, number = out.tape_marks, out.program_number
+    if not target.LEADER_TITLE:
+        blocks = _title_as_comment(blocks)
     if marks == "keep" and number == "keep":
         return blocks
     where = Location(ctx.setup.source or "<set-up>", 1, 1)
@@ -40,6 +43,9 @@ def _framed(blocks: Iterator[Block], marks: str, number: str | int) -> Iterator[
         sections = block.sections
         if "TapeMark" in sections:
             if marks == "never":
+                title = getattr(sections["TapeMark"], "title", None)
+                if title is not None:  # the % line goes, its title stays (``_title_as_comment``)
+                    yield _comment(block.line, title, block.eol)
                 continue
             if marks == "always" and opened and last is not None and "TapeMark" in last.sections:
                 continue  # one closing mark
@@ -60,6 +66,35 @@ def _framed(blocks: Iterator[Block], marks: str, number: str | int) -> Iterator[
         yield _line(last.line if last is not None else 1, TapeMark())
 
 
+def _title_as_comment(blocks: Iterator[Block]) -> Iterator[Block]:
+    """The title of the program's opening ``%`` line (``TapeMark.title``) as a comment line after it, for a
+    target whose control does not skip text on its ``%`` line (LinuxCNC refuses ``%O1200(TOKARKA)``: "Bad
+    character '%' used" [V: rs274 run here]; the other targets' rules are not at hand [?]): never dropped.
+    Only the blocks up to the first that holds anything are looked at, when the run reaches them (a chain
+    after them: no step per block)."""
+    return chain.from_iterable(_opening_then_rest(blocks))
+
+
+def _opening_then_rest(blocks: Iterator[Block]) -> Iterator[Iterable[Block]]:
+    head: list[Block] = []
+    for block in blocks:
+        head.append(block)
+        if block.sections:
+            title = getattr(block.sections.get("TapeMark"), "title", None)
+            if title is not None:
+                head[-1] = _line(block.line, TapeMark(), block.eol)
+                head.append(_comment(block.line, title, block.eol))
+            break
+    yield head
+    yield blocks
+
+
+def _comment(line: int, text: str, eol: str) -> Block:
+    block = Block(line, None, eol)
+    block.add(Comments([text]))
+    return block
+
+
 def _renumbered(block: Block, number: str | int) -> Block:
     """The main program's own line with the number asked for (a name it had stays, for a writer that
     keeps it as a comment), or without it (its comment stays)."""
@@ -72,7 +107,7 @@ def _renumbered(block: Block, number: str | int) -> Block:
     return block
 
 
-def _line(line: int, section: ProgramStart | TapeMark) -> Block:
-    block = Block(line, None)
+def _line(line: int, section: ProgramStart | TapeMark, eol: str = "\n") -> Block:
+    block = Block(line, None, eol)
     block.add(section)
     return block

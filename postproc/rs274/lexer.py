@@ -1,4 +1,5 @@
-"""ISO 6983 lexical structure of the RS274 family (Fanuc and its kin): ``%``, O-number (and ISO's
+"""ISO 6983 lexical structure of the RS274 family (Fanuc and its kin): ``%`` (on a program's first line
+with the leader's title, for a reader that asks: ``lex_block(leader=...)``), O-number (and ISO's
 ``:``), block delete ``/n``, N, words, ``( )`` comments and ``;`` as end of block; and Custom Macro B:
 a statement after N (``#1=..``, ``IF``, ``GOTO``, ``WHILE``, ``END``) and computed word values
 (``X[#1*2.]``, ``X#1``, ``X-#3``, ``G#10``).
@@ -52,10 +53,16 @@ def split_lines(lines: Iterable[str]) -> Iterator[tuple[int, str, str]]:
             yield number, raw, ""
 
 
-def lex_block(file: str, number: int, text: str, eol: str, macro: bool = True) -> Block:
-    """Lex one line into a block with its words and lexical sections (``macro``: Custom Macro B too)."""
+def lex_block(file: str, number: int, text: str, eol: str, macro: bool = True, leader: bool = False) -> Block:
+    """Lex one line into a block with its words and lexical sections (``macro``: Custom Macro B too;
+    ``leader``: the line is the program's first, where a ``%`` may carry a title)."""
     block = Block(number, text, eol)
     code = text
+    if leader and "%" in code:
+        title = _leader_title(code)
+        if title is not None:
+            block.add(TapeMark(title or None))
+            return block
     if "(" in code or ")" in code:
         code = _take_comments(file, block, code)
     if ";" in code:
@@ -97,6 +104,18 @@ def lex_block(file: str, number: int, text: str, eol: str, macro: bool = True) -
                                  Location(file, number, code.find(letter) + 1))
             block.add(Sequence(int(num)))
     return block
+
+
+def _leader_title(code: str) -> str | None:
+    """What follows the ``%`` that opens a program's first line, as written (blanks around it dropped),
+    or None when the line does not start with ``%``. The control reads the ``%`` and skips the rest of the
+    line, the leader, where a title may stand (``%O1200(TOKARKA)``) [V: Fanuc 16i/18i-TB operator's manual
+    B-63524EN/01, memory card file format; Fanuc Data Server manual B-64014EN/03, ``% TITLE ;``]. Only
+    that first line: a later ``%`` with text stays an error (no manual found that allows it) [?]."""
+    stripped = code.strip(" \t")
+    if stripped[:1] != "%":
+        return None
+    return stripped[1:].strip(" \t")
 
 
 _LETTER = frozenset("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz")

@@ -164,7 +164,7 @@ class WordWriter(MotionWords):
         values = block.values
         sections = block.sections
         if "TapeMark" in sections:
-            return "%"
+            return "%" + (getattr(sections["TapeMark"], "title", None) or "")
         text = block.text
         if (text is not None and not self.renumber and self.leading_zero and not self.rounding
                 and "Comments" not in sections and "BlockDelete" not in sections
@@ -262,7 +262,8 @@ class WordWriter(MotionWords):
         if compound is not None:
             return self.compound(block, compound)  # type: ignore[arg-type]
         if "TapeMark" in sections:
-            return "%" + (block.eol or "\n")
+            title = getattr(sections["TapeMark"], "title", None)  # a target that keeps it (``LEADER_TITLE``)
+            return "%" + (title or "") + (block.eol or "\n")
         motion = sections.get("Motion")
         if "Dwell" in sections and motion is not None and self.DWELL_WORD in getattr(motion, "axes", ()):
             # the dwell's word is also an axis of the move (Fanuc G04 X): the dwell on a line of its own
