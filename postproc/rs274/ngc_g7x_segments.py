@@ -13,6 +13,7 @@ rule was checked against rs274 2.9 by ``tests/test_ngc_g7x.py`` (a seeded random
 
 from __future__ import annotations
 
+import abc
 import math
 from typing import Callable, Final
 
@@ -29,7 +30,7 @@ def _arc(out: Output, ccw: bool, centre: complex, end: complex) -> None:
     out("ccw" if ccw else "cw", end, centre)
 
 
-class Piece:
+class Piece(abc.ABC):
     """A piece of the profile from ``start`` to ``end``; ``finish`` is a corner's size (fillet radius or
     chamfer length) until the corner is made."""
 
@@ -40,12 +41,13 @@ class Piece:
         self.end = end
         self.finish = 0.0
 
+    @abc.abstractmethod
     def copy(self) -> "Piece":
-        raise NotImplementedError
+        """Each kind of piece answers for itself."""
 
+    @abc.abstractmethod
     def length(self) -> float:
         """The size below which the cycle drops a piece (``radius`` there)."""
-        raise NotImplementedError
 
     def monotonic(self) -> bool:
         """The piece never runs towards +Z (with the cycle's tolerance)."""
@@ -90,26 +92,29 @@ class Piece:
         return centre
 
     # -- what each kind answers ----------------------------------------------------------------------
+    @abc.abstractmethod
     def offset(self, distance: float) -> None:
-        raise NotImplementedError
+        """Each kind of piece answers for itself."""
 
+    @abc.abstractmethod
     def crossings(self, x: float) -> list[float]:
         """The Z where the piece crosses the height ``x``, in the controller's order."""
-        raise NotImplementedError
 
+    @abc.abstractmethod
     def climb(self, at: list[complex], out: Output) -> bool:
         """Follow the piece up from ``at[0]``; True when it does not climb (a pocket may start)."""
-        raise NotImplementedError
 
+    @abc.abstractmethod
     def climb_only(self, at: list[complex], out: Output) -> None:
-        raise NotImplementedError
+        """Each kind of piece answers for itself."""
 
+    @abc.abstractmethod
     def dive(self, at: list[complex], x: float, out: Output, fast: bool) -> bool:
         """Follow the piece down from ``at[0]`` to the height ``x``; True when it does not go down."""
-        raise NotImplementedError
 
+    @abc.abstractmethod
     def draw(self, out: Output) -> None:
-        raise NotImplementedError
+        """Each kind of piece answers for itself."""
 
 
 class NgcCycleError(Exception):
