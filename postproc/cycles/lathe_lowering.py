@@ -103,6 +103,8 @@ def _lower(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iter
     mode_set = start_mode == target_mode
     turning = False
     """The spindle turns before the block (a turret index must not become a tool change then)."""
+    station: int | None = None
+    """The turret station at the cutting position (the last index; None: not known, as at the start)."""
     nose = _NoseCompensation(ctx, target, turret and ctx.lathe_turret)
     own_nose: set[int] = set()
     """Lines of the roughing cycles whose profile turns nose compensation on and off (``NOSE_PROFILE``),
@@ -161,12 +163,18 @@ def _lower(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iter
             # program's other errors (raised, it ended the translation with no error list)
             if turret:
                 select = sections.get("ToolSelect")
-                if not _turret(block, ctx, turning):
+                same = _same_station(block, station)
+                if not same and not _turret(block, ctx, turning):
                     continue
-                if not foreign and "ToolSelect" in block.sections:
-                    _select_offset(select, block, ctx)
-                elif offsets is not None and "ToolSelect" in block.sections:
-                    _report(offsets.select, block, ctx, select)
+                if same or "ToolSelect" in block.sections:
+                    if not foreign:
+                        _select_offset(select, block, ctx)
+                    elif offsets is not None:
+                        _report(offsets.select, block, ctx, select)
+                if isinstance(select, ToolSelect) and "ToolChange" in block.sections:
+                    station = lathe_tool(select.number) if isinstance(select.number, int) else None
+                elif isinstance(select, ToolSelect) and not same:
+                    station = None  # the T word was left out (``--on-unsupported warn``): the turret is not known
                 nose.select(select)
                 turning = _turns_after(block, turning)
             if tracker is not None:
@@ -230,6 +238,23 @@ def _chamfer_switch_noted(block: Block, function: MachineFunction) -> None:
     in another family, and needs none: the cycles after it carry their chamfer in their own words
     (``LatheCycle`` ``chamfer``), so it becomes a comment where it stood."""
     comment_out(block, f"{function.text}: {function.name or function.action}, in the threading cycles' words")
+
+
+def _same_station(block: Block, station: int | None) -> bool:
+    """A turret lathe's T naming the station already at the cutting position (``T0200`` after ``T0202``) indexes
+    nothing: it only selects the offset (00 cancels it) [K: Fanuc-style lathe operator's manual (C-KL205608,
+    "Tool indexing and tool offset (T function)"): the first two digits index the turret, the last two select
+    the offset, T..00 cancels it, its example cancels with ``T0100`` after ``T0101``]. A target that changes
+    tools with M6 must not get a tool change for it: LinuxCNC's M6 always runs one, the spindle stopped first
+    [V: LinuxCNC ``interp_convert.cc`` ``convert_tool_change``, no test of the tool in the spindle], grbl's is a
+    pause. So the T word goes, its offset kept (``_select_offset``, ``LatheOffsets.select``)."""
+    select = block.sections.get("ToolSelect")
+    if not isinstance(select, ToolSelect) or not isinstance(select.number, int) or "ToolChange" in block.sections \
+            or station is None or lathe_tool(select.number) != station:
+        return False
+    del block.sections["ToolSelect"]
+    block.changed()
+    return True
 
 
 def _turret(block: Block, ctx: Context, turning: bool) -> bool:

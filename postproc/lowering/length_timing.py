@@ -229,6 +229,10 @@ def _complete(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
             table.write(setting, MM_PER_INCH if inch else 1.0)
         moves = "Motion" in sections or "CompoundMotion" in sections or "RigidTap" in sections
         offset = sections.get("ToolLengthOffset")
+        if isinstance(offset, ToolLengthOffset) and pending is not None and _key(offset) == _key(pending[0]):
+            del sections["ToolLengthOffset"]  # it restates the waiting change (``T0101`` twice): that one still waits
+            block.changed()
+            offset = None
         change = isinstance(offset, ToolLengthOffset) and _key(offset) != in_force
         if isinstance(offset, ToolLengthOffset):
             in_force = _key(offset)

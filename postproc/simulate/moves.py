@@ -150,6 +150,9 @@ class Moves:
         """``_event`` bound once: a block's events while compensating (a bound method made per block cost
         ~340 instructions)."""
         self.spindle_tool: int | None = setup.machine.start_tool
+        self.station: int | None = None
+        """The turret station at the cutting position (a turret lathe's last index; None: not known, as at the
+        start): a T naming it again indexes nothing (``Simulator``: no tool event, its offset applied)."""
         self.cutter_register: int | None = None
         """The cutter compensation register programmed last (a Fanuc G41 without D reads it)."""
         self.kept_native: Callable[[str], bool] | None = None

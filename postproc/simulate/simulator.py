@@ -104,7 +104,10 @@ class Simulator(Moves):
             s = sections.get("ToolSelect")
             if s is not None:
                 if self.lathe and self.ctx.lathe_turret and "ToolChange" not in sections:  # (an M6 lathe: only prepared)
-                    emit({"line": line, "event": "tool", "number": lathe_tool(s.number)})
+                    station = lathe_tool(s.number) if isinstance(s.number, int) else None
+                    if station is None or station != self.station:  # T0200 after T0202: the offset alone
+                        emit({"line": line, "event": "tool", "number": lathe_tool(s.number)})
+                    self.station = station
                     if isinstance(s.number, int):
                         self.lathe_offset(block, s.number % 100)
             if "ToolChange" in sections:
