@@ -239,3 +239,33 @@ def test_config_check_names_a_missing_lathe_value(cli: Any, tmp_path: Any, tool:
     path.write_text(LATHE_SETUP.replace('<Tool number="2" x="4.0" z="-1.5"/>', tool))
     result = cli("config", "check", path)
     assert result.status != 0 and f'lathe.xml:5:1: error: <Tool number="2"> tool 2: {message}' in result.err
+
+
+ONE_BLOCK = "G18 G7 G21 G90\nG0 X100 Z50\nT2 M6 G43\nG0 X60\nG1 Z5 F100\nT3 M6 G43\nG0 X40\nG0 Z20\nM2\n"
+"""``T.. M6 G43`` in one block: M6 runs before G43 (rs274's order of execution), G43 without H takes the tool
+just loaded [V: ``interp_convert.cc`` ``convert_tool_length_offset``, ``toolchange_flag``: the current pocket]."""
+
+
+def test_a_change_and_its_offset_in_one_block_apply_where_each_axis_is_next_programmed() -> None:
+    """By hand, as with the offset in a block of its own: entry 2 (X +5.08 on the diameter, Z +5.08) moves
+    nothing; the X60 traverse keeps machine Z 50 (programmed 44.92) and goes to diameter 65.08; Z5 is
+    machine 10.08. Entry 3 (X -2.54, Z +7.62): the X40 traverse keeps machine Z 10.08 (programmed 2.46) at
+    diameter 37.46; Z20 is machine 27.62."""
+    assert _ours(ONE_BLOCK) == [(100, 50, 100, 50), (60, 44.92, 65.08, 50), (60, 5, 65.08, 10.08),
+                                (40, 2.46, 37.46, 10.08), (40, 20, 37.46, 27.62)]
+    assert _ours(ONE_BLOCK.replace("T2 M6 G43", "T2 M6\nG43").replace("T3 M6 G43", "T3 M6\nG43")) == _ours(ONE_BLOCK)
+
+
+@pytest.mark.skipif(not available(), reason="the LinuxCNC interpreter rs274 is not installed")
+def test_rs274_alone_moves_z_after_a_change_and_its_offset_in_one_block() -> None:
+    """rs274 differs here, and only by its stand-alone canon: after a tool change the interpreter re-reads the
+    position (``toolchange_flag``: ``execute_block`` returns ``INTERP_EXECUTE_FINISH``, the next read
+    synchronises), and ``saicanon.cc``'s ``GET_EXTERNAL_POSITION_Z`` returns the last programmed Z without the
+    tool offset, where the machine's canon subtracts it [V: LinuxCNC 2.9.0~pre1 ``emccanon.cc``
+    ``GET_EXTERNAL_POSITION`` -> ``unoffset_and_unrotate_pos``, ``res -= canon.toolOffset``]. So rs274 takes the
+    X60 traverse to programmed Z 50 (machine 55.08) where LinuxCNC itself keeps machine Z, as it does with G43
+    in the next block (the re-read comes before the offset there, and rs274 agrees: pinned both ways)."""
+    theirs = _rs274(ONE_BLOCK)
+    assert theirs[1] == (60, 50, 65.08, 55.08)  # the stand-alone canon's re-read position
+    split = ONE_BLOCK.replace("T2 M6 G43", "T2 M6\nG43").replace("T3 M6 G43", "T3 M6\nG43")
+    assert _rs274(split)[1:] == _ours(split)[1:] == _ours(ONE_BLOCK)[1:]
