@@ -256,6 +256,29 @@ def test_refused_g71_under_compensation_is_refused_by_rs274() -> None:
         run_rs274("G18 G8 F100\n" + PROFILE + "G0 X6 Z1\nG42.1 D1\nG71 Q100 X6 Z1\nM2\n")
 
 
+UNDER_COMPENSATION = [(on, cycle) for on in ("G41 D1", "G42", "G41.1 D1", "G42.1 D0.5")
+                      for cycle in ("G71", "G71.1", "G71.2", "G72", "G72.1", "G72.2")]
+
+
+@pytest.mark.parametrize("on, cycle", UNDER_COMPENSATION)
+def test_roughing_under_compensation_is_refused_where_and_as_rs274_refuses_it(on: str, cycle: str) -> None:
+    """G71/G72 (each sub-cycle) with compensation on, by a tool's radius or by a diameter, either side:
+    LinuxCNC refuses the block [V: ``interp_g7x.cc`` ``convert_g7x``: "G%d.%d cannot be used with cutter
+    compensation enabled" for every cycle but 70]; so does the reading, quoting rs274's words, at the G word
+    of the cycle's line (10)."""
+    shown = cycle if "." in cycle else cycle + ".0"
+    program = f"G18 G8 G21 F100\n{PROFILE}T1 M6\nG0 X6 Z1\n{on}\n{cycle} Q100 X6 Z1\nG40\nM2\n"
+    with pytest.raises((PostprocError, ErrorList)) as err:
+        simulated(program)
+    assert f":10:1: error: {cycle} with cutter compensation on (rs274: \"{shown} cannot be used with cutter " \
+        "compensation enabled\")" in str(err.value)
+    if available():
+        table = "T1 P1 Z0 D0.04 Q3\n"
+        with pytest.raises(RS274Error) as theirs:
+            run_rs274(program, tool_table=table)
+        assert f"{shown} cannot be used with cutter compensation enabled" in theirs.value.stderr
+
+
 def test_mill_keeps_the_codes_verbatim() -> None:
     """On a mill set-up the codes are not read (LinuxCNC runs them on a lathe's XZ plane only)."""
     text = "G18 F100\n" + PROFILE + "G0 X6 Z1\nG71 Q100 X6 Z1\nM2\n"

@@ -163,8 +163,9 @@ def read_g7x(block: Block, ctx: Context, motion: Motion, values: dict[str, Any],
     if "Q" not in words:
         raise refuse(f"{name} needs Q, the subprogram of its profile (rs274: \"G7x.x requires a Q word\")")
     if _compensating(block, ctx):
-        if code != "70":
-            raise refuse(f"{name} with cutter compensation on (rs274: \"G{code} cannot be used with cutter "
+        if code != "70":  # rs274 names the cycle with its sub-cycle, ".0" included [V: interp_g7x.cc "G%d.%d"]
+            shown = code if "." in code else f"{code}.0"
+            raise refuse(f"{name} with cutter compensation on (rs274: \"G{shown} cannot be used with cutter "
                          "compensation enabled\"): cancel it (G40) before the cycle")
         raise unmodelled(f"{name} with cutter compensation on is not modelled: LinuxCNC 2.9.0 compensates the cycle "
                      "from where its profile ends (a move to the profile's end first) [V: rs274 2.9.0~pre1 run "
