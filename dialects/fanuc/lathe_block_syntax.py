@@ -28,6 +28,8 @@ class FanucLatheBlockSyntax(LatheBlockSyntax):
     Z, U, V, W, A, B, C, I, J, K, R and F [K: Fanuc Series 0i-MB operator's manual B-64114EN/01, 8.3 "Decimal
     point programming"]; "M03 S1000.0; an illegal statement" [K: after Smid, Fanuc Custom Macros]. Parameter
     3451#2 (mills only) admits one decimal place, run rounded [?: third-party, not modelled]."""
+    LATHE_OFFSET_INPUT: ClassVar[bool] = True
+    """``G10 P X Z R Q`` sets a tool offset (``postproc.rs274.lathe_offset_input``, which cites the manual)."""
     CODES: ClassVar[CodeTable] = LATHE_CODES["A"]
     MACHINE_DEFAULTS: ClassVar[Defaults] = LATHE_DEFAULTS
     """Haas lathe codes under ``<Controller variant="haas">`` (``machine_codes.HAAS_LATHE``)."""

@@ -21,6 +21,11 @@ ENTRY = "tool_entry"
 ``Y`` the offsets a mill's length offset applies along X and Y."""
 SIDEWAYS = ("X", "Y")
 """The entry's offsets across the spindle axis (``ToolTable.sideways``)."""
+LATHE_TABLES = {"lathe_offset": False, "lathe_offset_wear": True}
+"""A lathe tool offset's geometry or wear (Fanuc T ``G10 P X Z R Q``, ``postproc.rs274.lathe_offset_input``) ->
+whether it is the wear: X, Z and R (the nose radius) set, U, W and C add to them, Q sets the offset's
+imaginary tool nose direction."""
+_LATHE_WORDS = (("X", "U", "x"), ("Z", "W", "z"), ("R", "C", "radius"))
 
 
 class ToolTable:
@@ -36,12 +41,17 @@ class ToolTable:
         self.wear: dict[tuple[str, int], float] = {}
         self.across: dict[int, dict[str, float]] = {}
         """X and Y offsets a program wrote into an entry (mm), by tool number."""
+        self.tips: dict[int, int] = {}
+        """Imaginary tool nose directions a program wrote (``G10 P.. Q..``), by offset register."""
 
     def write(self, setting: DataSetting, scale: float) -> bool:
         """A programmable data input into a tool table (values in program units, ``scale`` mm per unit);
         False when the setting is not a tool table's."""
         if setting.table == ENTRY:
             self._entry(setting, scale)
+            return True
+        if setting.table in LATHE_TABLES:
+            self._lathe_offset(setting, scale)
             return True
         table = TABLES.get(setting.table)
         if table is None:
@@ -83,6 +93,27 @@ class ToolTable:
             if isinstance(value, (int, float)):
                 self.across.setdefault(setting.index, {})[axis] = value * scale
 
+    def _lathe_offset(self, setting: DataSetting, scale: float) -> None:
+        """A lathe offset's geometry or wear written by the program (see ``LATHE_TABLES``); X as the set-up's
+        ``<Tool x>`` reads (a diameter on a diameter lathe), mm."""
+        wear = LATHE_TABLES[setting.table]
+        register = setting.index
+        store = self.wear if wear else self.written
+        for absolute, increment, quantity in _LATHE_WORDS:
+            key = (quantity, register)
+            value = setting.values.get(absolute)
+            if isinstance(value, (int, float)):
+                store[key] = value * scale
+            step = setting.values.get(increment)
+            if isinstance(step, (int, float)):
+                known = store.get(key)
+                if known is None:
+                    known = self._declared_wear(quantity, register) if wear else self._declared(quantity, register)
+                store[key] = (known or 0.0) + step * scale
+        tip = setting.values.get("Q")
+        if isinstance(tip, (int, float)):
+            self.tips[register] = int(tip)
+
     def sideways(self, register: int) -> dict[str, float]:
         """The X and Y offsets of entry ``register`` that are not zero (mm): a mill's tool length offset
         applies them too ([V] LinuxCNC, ``postproc_linuxcnc.tool_entry``); none but what a program wrote."""
@@ -116,6 +147,9 @@ class ToolTable:
     def tip(self, register: int) -> int:
         """The imaginary tool nose direction of lathe offset ``register`` (``<Tool tip>``, Fanuc's numbers;
         0, the nose centre, when not given)."""
+        written = self.tips.get(register)
+        if written is not None:
+            return written
         tool = self.tools.get(str(register))
         return 0 if tool is None or tool.tip is None else tool.tip
 
@@ -150,8 +184,25 @@ class ToolTable:
         Register 0 is no offset."""
         if register == 0:
             return 0.0, 0.0
-        tool = self.tools.get(str(register))
-        values = None if tool is None else tool.lathe()
-        if values is None:
+        x = self._lathe_axis("x", register)
+        z = self._lathe_axis("z", register)
+        if x is None or z is None:
             return None
-        return values[0] * self.mm * (0.5 if diameter else 1.0), values[1] * self.mm
+        return x * (0.5 if diameter else 1.0), z
+
+    def _lathe_axis(self, quantity: str, register: int) -> float | None:
+        """Lathe offset ``register``'s X or Z (``quantity`` "x" or "z"), geometry plus wear, mm: what the program
+        wrote (``G10 P``), else the set-up's ``<Tool x z xWear zWear>``; None when neither gives the geometry."""
+        key = (quantity, register)
+        tool = self.tools.get(str(register))
+        geometry = self.written.get(key)
+        if geometry is None:
+            declared = None if tool is None or tool.x is None else tool.x if quantity == "x" else tool.z
+            if declared is None:
+                return None
+            geometry = float(declared) * self.mm
+        wear = self.wear.get(key)
+        if wear is None:
+            declared_wear = None if tool is None else tool.x_wear if quantity == "x" else tool.z_wear
+            wear = 0.0 if declared_wear is None else float(declared_wear) * self.mm
+        return geometry + wear

@@ -32,6 +32,7 @@ from postproc.frames.reading import read_frame
 from postproc.syntax import Syntax
 
 from .codes import CodeTable, g_key
+from .lathe_offset_input import lathe_offset_setting
 from .machine_codes import Defaults, machine_table
 from .point_mix import point_mix
 from .word_values import increments_divisor, milliseconds, real, whole, whole_index
@@ -69,6 +70,8 @@ class WordBlockSyntax(Syntax):
     DATA_TABLES: ClassVar[Mapping[int, tuple[str, int, int]]] = {}
     """Programmable data input (G10): L number -> (neutral table, first and last entry P may name); a G10
     with another L is kept verbatim. Empty: every G10 is."""
+    LATHE_OFFSET_INPUT: ClassVar[bool] = False
+    """G10 without L sets a lathe tool offset (Fanuc T ``G10 P X Z R Q``: ``lathe_offset_input``)."""
     DATA_INCREMENTAL: ClassVar[bool] = True
     """A G10 in incremental mode adds to the entry (Fanuc); False: it sets it whatever the mode (LinuxCNC)."""
     DATA_P0_ACTIVE: ClassVar[bool] = False
@@ -135,7 +138,7 @@ class WordBlockSyntax(Syntax):
             else:
                 raw[up] = num
         state = ctx.state
-        data_setting = natives == [DATA_KEY] and bool(self.DATA_TABLES)
+        data_setting = natives == [DATA_KEY] and (bool(self.DATA_TABLES) or self.LATHE_OFFSET_INPUT)
         if natives and not data_setting:
             self._native(block, ctx, natives, raw)
             return
@@ -259,6 +262,13 @@ class WordBlockSyntax(Syntax):
         ell = whole_index(values.get("L"))
         table = None if ell is None else self.DATA_TABLES.get(ell)
         native = f"G{number} ({self.table(ctx).native_g[DATA_KEY]})"
+        if self.LATHE_OFFSET_INPUT and "L" not in values:
+            distance = codes.get("03")
+            lathe = lathe_offset_setting(block, ctx, number, values, used, self.family(), (
+                distance[2] if distance is not None else ctx.state.distance) == "incremental", _UPPER)
+            if lathe is not None:
+                block.add(lathe)
+                return True
         if table is None or isinstance(values.get("P"), Expr):
             block.add(NativeCode(self.DIALECT, native, block.text or ""))
             return False
