@@ -12,7 +12,8 @@ the same added to the offset; Q the imaginary tool nose number. Offsets above 64
 [K]; a T code names at most 99 (two digits), so P 1-99 and 10001-10099 are read.
 
 Kept out, each a located refusal (``ProgramError`` for what the manual forbids, ``UnsupportedError`` for
-what is not modelled): Y/V (a Y-axis offset: the lathe model has X and Z only), X with U or Z with W or R with C
+what is not modelled): a Haas lathe's (``<Controller variant="haas">``: its settings are its own G10 L forms
+[?], kept verbatim as before), Y/V (a Y-axis offset: the lathe model has X and Z only), X with U or Z with W or R with C
 in one block, a Q that is no whole number 0-9, the block in incremental mode (G91: whether X, Z and R then add
 is not in that text [?]), a computed value (the offset it sets is known when the program runs), any other
 word (the form takes these alone). X follows the set-up's ``<Tool x>``: a diameter on a lathe programmed in
@@ -47,6 +48,8 @@ def lathe_offset_setting(block: Block, ctx: Context, number: str, values: dict[s
     def at(letter: str) -> Any:
         return ctx.at(block, ctx.column_of(block, letter, number if letter == "G" else None))
 
+    if ctx.setup.controller.variant == "haas":
+        return None  # [?] a Haas lathe's offset settings are its own G10 L forms: not modelled, kept verbatim
     p = values.get("P")
     if isinstance(p, Expr) or not isinstance(p, (int, float)) or isinstance(p, bool) or not float(p).is_integer():
         return None
