@@ -1,6 +1,6 @@
 """Where a compensated stretch starts: the resolver (``postproc.lowering.cutter_compensation``) notes the
 plain moves before it in three fields and brings them into its programmed point only when a block needs
-it (``_Resolver._note``/``_settle``), so the entry move's start point is built from many blocks: absolute
+it (``ProgrammedPoint._note``/``_settle``, ``lowering.cutter_point``), so the entry move's start point is built from many blocks: absolute
 moves naming some of X, Y, Z, incremental moves, unit switches, work offset changes.
 
 The independent check is the source's own simulation: the program translated from Fanuc to grbl (the path

@@ -4,7 +4,7 @@ Memory B, Fanuc -> Fanuc: a G41 start-up move along +X followed by a move straig
 back on itself. The simulation refuses it at its line (interference) and so does every translation that resolves or
 re-spells the compensation; a copy within Fanuc, which keeps it native, was written unchanged with exit 0 and verify
 then reported the source's own errors on both sides (a known defect until issue 26's comp26): it is refused at its
-line too now, by the same geometry (``lowering.cutter_compensation._Resolver.check``).
+line too now, by the same geometry (``lowering.cutter_resolver.Resolver.check``).
 """
 
 from __future__ import annotations

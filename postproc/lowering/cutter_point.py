@@ -1,0 +1,251 @@
+"""Where a program stands while its cutter compensation is resolved (``cutter_compensation``): the state of one
+resolution, and the programmed point it follows through the blocks run without compensation.
+
+The common block (a plain absolute move while no compensation is on) only notes its X, Y and Z as numbers
+(``ProgrammedPoint._note``); they are brought into the point (``_settle``) before anything reads it. A move by
+increments from an unknown start point makes its axis count from zero in a frame of its own (``floating``: see
+``cutter_compensation``'s docstring). The moves of the compensated stretch and what the compensation releases
+are ``cutter_moves``'s; the blocks and the steps are ``cutter_resolver``'s and ``cutter_compensation``'s.
+"""
+
+from __future__ import annotations
+
+from typing import Callable, Final
+
+from mypy_extensions import mypyc_attr
+
+from ..context import Context
+from ..errors import ProgramError, UnsupportedError
+from ..expr import Expr
+from ..ir import Block, CompoundMotion, Motion
+from ..compensation.cutter_radius import Item
+from ..compensation.geometry_for import cutter_for
+from ..compensation.rules import CutterRules
+from ..compensation.tool_table import ToolTable
+from .rule_trial import RuleTrial
+
+MM_PER_INCH = 25.4
+MOVES: Final = frozenset(("rapid", "linear", "cw", "ccw"))
+_X: Final = 1
+_Y: Final = 2
+_Z: Final = 4
+"""The bits of ``ProgrammedPoint.noted``: the axes a plain move noted since ``pos`` was last brought up to date."""
+
+
+@mypyc_attr(allow_interpreted_subclasses=True)
+class Unresolvable(UnsupportedError):
+    """What the resolver cannot write as moves (a computed position, an axis it does not track...): a refusal of
+    the resolution, not of the program, so a copy's check (``Resolver.check``) stops there without a word."""
+
+
+@mypyc_attr(allow_interpreted_subclasses=True)
+class UnknownHere(ProgramError):
+    """What the resolver does not know where it stands (a start point, a computed arc's centre...), though the
+    simulation, which runs the program from its start, may: a copy's check stops there without a word."""
+
+
+@mypyc_attr(allow_interpreted_subclasses=True)
+class ProgrammedPoint:
+    """The compensation state of one translation, and where its program stands (``pos``, mm)."""
+
+    def __init__(self, ctx: Context, rules: CutterRules, release: Callable[[Item], None], diameters: bool,
+                 checking: bool) -> None:
+        self.ctx = ctx
+        self.checking = checking
+        """Only the compensated path's errors are wanted, the blocks pass unchanged (``check``)."""
+        self.diameters = diameters
+        """X words are diameters in the blocks (read halved, written doubled: see the module docstring)."""
+        self.rules = rules
+        self.inverse_time = False
+        """G93 in force (a compensated move is then written per minute: see the module docstring)."""
+        self.per_minute = False
+        """The output was switched to G94 for a resolved stretch under G93 (G93 is due back)."""
+        self.length_register: int | Expr | None = None
+        """The tool length register in force (None: no length offset)."""
+        self.cutter = cutter_for(rules, release)
+        self.table = ToolTable(ctx.setup)
+        self.scale = 1.0
+        """mm per program unit."""
+        self.absolute = True
+        self.plane = "ZX" if ctx.lathe else "XY"
+        self.work_offset = 1
+        self.shifted = False
+        """A coordinate setting (G92) was read: a machine position is then not the point plus the work offset."""
+        self.programmed_offsets: dict[int, dict[str, float]] = {}
+        """The work systems and axes whose offset the program set (G10 L2): the set-up's is not in force there."""
+        self.selected: int | None = None
+        self.spindle_tool: int | None = None
+        self.last_register: int | None = None
+        """The cutter compensation register programmed last (``register_absent="modal"``)."""
+        self.pos: dict[str, float | None] = {"X": None, "Y": None, "Z": None}
+        """The programmed point, mm (None: not known since the origin moved or a reference return); the axes a
+        plain move noted since (``noted``) are brought into it before anything reads it (``_settle``)."""
+        self.noted = 0
+        """Bits (``_X``, ``_Y``, ``_Z``) of the axes the plain moves since the last ``_settle`` programmed: a
+        plain move, the common block, only notes its numbers (no dictionary written, no number boxed)."""
+        self.unknown = 0
+        """Bits of the noted axes whose last number was computed (an expression): not known."""
+        self.noted_x = 0.0
+        self.noted_y = 0.0
+        self.noted_z = 0.0
+        self.at: tuple[float, float] = (0.0, 0.0)
+        """The controlled point in the plane the last released move ends at, mm."""
+        self.at_normal = 0.0
+        """The programmed point along the plane's normal where the last released move ends, mm."""
+        self.floating: set[str] = set()
+        """Axes whose ``pos`` counts from an unknown start point (see the module docstring)."""
+        self.by_increments = False
+        """The compensated stretch is written by increments (it started with a floating axis)."""
+        self.held: dict[int, tuple[Block, bool]] = {}
+        """A queued move (by ``id``) -> its block, and whether it was written in G91."""
+        self.out: list[Block] = []
+        self.failed = False
+        self.trial: RuleTrial | None = None
+        """The stretch being tried (its blocks held back until it ends)."""
+
+    def _idle(self) -> bool:
+        cutter = self.cutter
+        return cutter.side is None and not cutter.queue and not cutter.arc_banned
+
+    def _origin_moved(self) -> None:
+        if not self._idle():
+            raise Unresolvable("a change of the work origin with cutter compensation on cannot be resolved")
+        self.pos = {axis: None for axis in self.pos}
+
+    def _note(self, motion: Motion) -> None:
+        """A plain absolute move while no compensation is on: its X, Y and Z, in mm, noted for ``_settle``."""
+        axes = motion.axes
+        scale = self.scale
+        x = axes.get("X")
+        if x is not None:
+            self.noted |= _X
+            if type(x) is float:
+                self.noted_x = x * scale
+                self.unknown &= ~_X
+            else:
+                self.unknown |= _X
+        y = axes.get("Y")
+        if y is not None:
+            self.noted |= _Y
+            if type(y) is float:
+                self.noted_y = y * scale
+                self.unknown &= ~_Y
+            else:
+                self.unknown |= _Y
+        z = axes.get("Z")
+        if z is not None:
+            self.noted |= _Z
+            if type(z) is float:
+                self.noted_z = z * scale
+                self.unknown &= ~_Z
+            else:
+                self.unknown |= _Z
+
+    def _settle(self) -> None:
+        """Bring the axes the plain moves noted into ``pos`` (an absolute number also ends an axis's frame of
+        its own, ``floating``)."""
+        noted = self.noted
+        if not noted:
+            return
+        self.noted = 0
+        unknown = self.unknown
+        pos = self.pos
+        if noted & _X:
+            pos["X"] = None if unknown & _X else self.noted_x
+            self.floating.discard("X")
+        if noted & _Y:
+            pos["Y"] = None if unknown & _Y else self.noted_y
+            self.floating.discard("Y")
+        if noted & _Z:
+            pos["Z"] = None if unknown & _Z else self.noted_z
+            self.floating.discard("Z")
+
+    def _in_plane(self, point: dict[str, float | None]) -> tuple[float | None, float | None]:
+        a1, a2, _ = self.cutter.axes
+        return point.get(a1), point.get(a2)
+
+    def _entry_start(self) -> None:
+        """Where the entry move starts: the programmed point, when known; in incremental mode an unknown
+        point is the zero of a frame of its own (``floating``)."""
+        if not self._idle():
+            return
+        if not self.absolute:
+            for axis, value in self.pos.items():
+                if value is None:
+                    self.pos[axis] = 0.0
+                    self.floating.add(axis)
+        self.by_increments = bool(self.floating)
+        u, v = self._in_plane(self.pos)
+        if u is not None and v is not None:
+            self.at = (u, v)
+        self.at_normal = self.pos.get(self.cutter.axes[2]) or 0.0
+
+    def _target(self, motion: Motion) -> dict[str, float | None]:
+        target = dict(self.pos)
+        for axis, value in motion.axes.items():
+            if isinstance(value, Expr):
+                raise Unresolvable("a computed position under cutter compensation cannot be resolved")
+            if axis not in target:
+                raise Unresolvable(f"motion of axis {axis} with cutter compensation on cannot be resolved")
+            scale = self.scale * 0.5 if axis == "X" and self.diameters else self.scale
+            if self.absolute:
+                if axis in self.floating:
+                    if not self._idle():
+                        raise UnknownHere(f"an absolute {axis} in a compensated stretch of a program that moved by "
+                                           "increments from an unknown start point")
+                    self.floating.discard(axis)
+                target[axis] = value * scale
+            else:
+                known = target[axis]
+                target[axis] = None if known is None else known + value * scale
+        return target
+
+    def _track(self, block: Block) -> None:
+        """The programmed point after a block run with no compensation on."""
+        sections = block.sections
+        motion = sections.get("Motion")
+        compound = sections.get("CompoundMotion")
+        if isinstance(compound, CompoundMotion) and "MachineCoordinates" not in sections:
+            self._track_compound(compound)
+        elif "CompoundMotion" in sections or "MachineCoordinates" in sections:
+            self.pos = {axis: None for axis in self.pos}
+        elif isinstance(motion, Motion) and motion.axes:
+            if motion.mode in ("home", "home2"):
+                self.pos = {axis: None for axis in self.pos}
+                return
+            try:
+                self.pos = {axis: value for axis, value in self._target(motion).items()}
+            except UnsupportedError:
+                self.pos = {axis: None for axis in self.pos}
+        u, v = self._in_plane(self.pos)
+        if u is not None and v is not None:
+            self.at = (u, v)
+
+    def _track_compound(self, compound: CompoundMotion) -> None:
+        """Where an expanded cycle (a lathe roughing cycle, before a G42 for its finishing cycle) leaves the
+        tool: its moves are absolute (``CompoundMotion``); anything else makes the point unknown. Every
+        expanded hole of a translation that resolves compensation passes here, so the moves are followed
+        in one dictionary, with ``_target``'s checks of each word (a dictionary a move through ``_target``
+        cost the cycles bench 36k instructions a hole). A refused absolute word of a floating axis
+        leaves the point where the expansion started: the translation has failed, nothing reads it."""
+        pos = dict(self.pos)
+        scale = self.scale
+        x_scale = scale * 0.5 if self.diameters else scale
+        floating = self.floating
+        for item in compound.items:
+            if not isinstance(item, Motion):
+                continue
+            if item.mode not in MOVES:
+                pos = {axis: None for axis in pos}
+                continue
+            for axis, value in item.axes.items():
+                if isinstance(value, Expr) or axis not in pos:  # _target's refusals: the point is not known
+                    self.pos = {axis: None for axis in self.pos}
+                    return
+                if floating and axis in floating:
+                    if not self._idle():
+                        raise ProgramError(f"an absolute {axis} in a compensated stretch of a program that moved "
+                                           "by increments from an unknown start point")
+                    floating.discard(axis)
+                pos[axis] = value * (x_scale if axis == "X" else scale)
+        self.pos = pos
