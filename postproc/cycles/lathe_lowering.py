@@ -13,8 +13,9 @@ located error where it is unknown), and on a diameter program X is halved (such 
 radius: ``Dialect.DIAMETER_PROGRAMMING``), and the set-up's lathe tool offsets are written into its
 coordinates (``postproc.cycles.lathe_offsets``). A lathe target without the source's incremental addresses
 (LinuxCNC, whose U/W are axes) gets absolute X/Z too, and one that changes lathe tools with M6
-(``Dialect.LATHE_TURRET`` False) gets the turret index as a tool change and its offset number as the
-register of its tool length offset code, and of a G41/G42 that names none: a turret lathe's tool nose
+(``Dialect.LATHE_TURRET`` False) gets the turret index as a tool change (a T naming the station already in
+position, ``T0200`` after ``T0202``, indexes nothing: only its offset is written, ``_same_station``) and its
+offset number as the register of its tool length offset code, and of a G41/G42 that names none: a turret lathe's tool nose
 radius compensation takes the nose radius and tip of the offset in force [K: Fanuc T, GSK: the radius
 and tip columns of the offset the T code selected], LinuxCNC's G41 without D the spindle tool's entry,
 which is not the offset's (``T0102``). A target that is no lathe control gets that register named too: its
