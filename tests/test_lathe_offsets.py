@@ -269,3 +269,14 @@ def test_rs274_alone_moves_z_after_a_change_and_its_offset_in_one_block() -> Non
     assert theirs[1] == (60, 50, 65.08, 55.08)  # the stand-alone canon's re-read position
     split = ONE_BLOCK.replace("T2 M6 G43", "T2 M6\nG43").replace("T3 M6 G43", "T3 M6\nG43")
     assert _rs274(split)[1:] == _ours(split)[1:] == _ours(ONE_BLOCK)[1:]
+
+
+def test_grblhal_lathe_mode_applies_the_change_where_each_axis_is_next_programmed() -> None:
+    """grblHAL in lathe mode (a tool table build) follows the same rule ([V] grbl ``gcode.c``: an axis a move
+    does not name keeps its machine position, a named one takes the offset; grblHAL's core keeps it, as
+    ``postproc.lowering.length_timing`` cites): ``T2 M6 G43`` then X60 keeps machine Z 50, by hand as above."""
+    setup = _linuxcnc_setup()
+    setup.controller.tool_table = True
+    text = "G18 G7 G21 G90\nG0 X100 Z50\nT2 M6 G43\nG0 X60\nG1 Z5 F100\nM2\n"
+    assert [tuple(round(float(v), 4) for v in m) for m in _moves(text, "grblhal", setup)] == [
+        (100, 50, 100, 50), (60, 44.92, 65.08, 50), (60, 5, 65.08, 10.08)]
