@@ -23,9 +23,10 @@ from postproc.errors import ParseError
 from postproc.expr import Expr, Num
 from postproc.ir import Section
 from postproc.isg_family.expressions import Unmodelled
+from postproc.rs274.expressions import skip_blanks
 
 from .call_reading import NAME_START
-from .expressions import name_at, parse_expr, parse_variable, skip
+from .expressions import name_at, parse_expr, parse_variable
 
 OPENERS = {"IF": "ENDIF", "WHILE": "ENDWHILE", "FOR": "ENDFOR", "REPEAT": "UNTIL", "LOOP": "ENDLOOP"}
 """The words that open a construct, and the word that closes each."""
@@ -74,7 +75,7 @@ class ControlReading:
         n = len(code)
 
         def done(at: int, section: Section) -> Section:
-            at = skip(code, at)
+            at = skip_blanks(code, at)
             if at < n:
                 raise self.error(line, at + 1, f"unexpected {code[at:].strip()[:20]!r} after {word}")
             return section
@@ -83,7 +84,7 @@ class ControlReading:
             return done(*self.jump(code, end, word, line, None))
         if word == "IF":
             at, cond = parse_expr(code, end)
-            after = skip(code, at)
+            after = skip_blanks(code, at)
             jump_end = name_at(code, after)
             jump = code[after:jump_end].upper()
             if jump in JUMPS:
@@ -105,7 +106,7 @@ class ControlReading:
         if word == "ENDLOOP":
             return done(end, EndWhile(self.close(word, line, col)))
         if word == "REPEAT":
-            if skip(code, end) < n:
+            if skip_blanks(code, end) < n:
                 raise Unmodelled("REPEAT of a program section (REPEAT label P=n)", pos)
             return done(end, Do(self.open(word, line)))
         if word == "UNTIL":
@@ -118,26 +119,26 @@ class ControlReading:
     def for_loop(self, code: str, end: int, line: int) -> Section:
         """``FOR R1=0 TO 10`` / ``FOR I=1 TO R2``: counting up by 1 while the counter is at most the end
         value [K: Job planning "FOR counter loop"; the counter is a variable or an R parameter]."""
-        start = skip(code, end)
+        start = skip_blanks(code, end)
         at, counter = parse_variable(code, start)
         if counter.name is not None and counter.name.startswith("$"):
             raise self.error(line, start + 1, "a FOR counter is an R parameter or a user variable")
-        at = skip(code, at)
+        at = skip_blanks(code, at)
         if code[at:at + 1] != "=":
             raise self.error(line, at + 1, "FOR needs '=': FOR R1=0 TO 10")
         at, first = parse_expr(code, at + 1)
-        to = skip(code, at)
+        to = skip_blanks(code, at)
         if code[to:to + 2].upper() != "TO" or code[to + 2:to + 3] not in ("", " ", "\t", "(", "R", "r") \
                 and code[to + 2:to + 3].isalnum():
             raise self.error(line, to + 1, "FOR needs TO: FOR R1=0 TO 10")
         at, last = parse_expr(code, to + 2)
-        rest = skip(code, at)
+        rest = skip_blanks(code, at)
         if rest < len(code):
             raise self.error(line, rest + 1, f"unexpected {code[rest:].strip()[:20]!r} after FOR")
         return For(self.open("FOR", line), counter, first, last, Num(1.0))
 
     def jump(self, code: str, end: int, word: str, line: int, cond: Expr | None) -> tuple[int, Section]:
-        at = skip(code, end)
+        at = skip_blanks(code, end)
         stop = name_at(code, at)
         target = code[at:stop]
         if not target:

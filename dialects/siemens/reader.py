@@ -50,7 +50,7 @@ from postproc.errors import Location, ParseError, PostprocError
 from postproc.expr import Binary, Expr, Func, Num, Var
 from postproc.ir import Block, BlockDelete, Comments, NativeCode, ProgramStart, Sequence, SpindleOrientation
 from postproc.isg_family.expressions import Unmodelled
-from postproc.rs274.expressions import ExprSyntaxError
+from postproc.rs274.expressions import ExprSyntaxError, skip_blanks
 from postproc.rs274.lexer import split_lines
 
 from .call_reading import ADDRESSES, TYPES, CallReading
@@ -65,7 +65,7 @@ from .frame_suppression import SiemensSupa
 from .helix import MAX_TURNS, SiemensTurn
 from .frames import STATEMENTS as FRAME_STATEMENTS, read_frame
 from .holes import PARAMETERS as HOLES
-from .expressions import name_at, parse_expr, parse_variable, skip
+from .expressions import name_at, parse_expr, parse_variable
 from .keywords import describe
 
 SKIP_LEVELS = 9
@@ -140,7 +140,7 @@ class _State(CallReading, ControlReading):
     def lex(self, block: Block, code: str) -> None:
         line = block.line
         n = len(code)
-        pos = skip(code, 0)
+        pos = skip_blanks(code, 0)
         if pos < n and code[pos] == "%":
             name = self.header(code, pos, line)
             if name.endswith("_SPF"):
@@ -158,7 +158,7 @@ class _State(CallReading, ControlReading):
             if level > SKIP_LEVELS:
                 raise self.error(line, pos + 1, f"block skip level /{level} (levels are /0 to /{SKIP_LEVELS})")
             block.add(BlockDelete(level + 1))
-            pos = skip(code, end)
+            pos = skip_blanks(code, end)
         if pos < n and (code[pos] in "Nn:" and code[pos + 1:pos + 2].isdigit()):
             end = pos + 1
             while end < n and code[end] in _DIGITS:
@@ -169,14 +169,14 @@ class _State(CallReading, ControlReading):
             block.words.append(("N", number))
             block.add(Sequence(int(number)))
             self.labels.setdefault(f"N{int(number)}", []).append(line)
-            pos = skip(code, end)
+            pos = skip_blanks(code, end)
         if pos < n and code[pos] in _NAME_START:
             end = name_at(code, pos)
             if code[end:end + 1] == ":" and code[end + 1:end + 2] != "=":
                 name = code[pos:end].lower()
                 block.add(Label(name))
                 self.labels.setdefault(name, []).append(line)
-                pos = skip(code, end + 1)
+                pos = skip_blanks(code, end + 1)
         if pos >= n:
             return
         point = read_fixed_point(code, pos)
@@ -204,7 +204,7 @@ class _State(CallReading, ControlReading):
             if word == "CIP":
                 block.add(SiemensCip())
                 pos = end
-            if (word in CYCLES or word in HOLES) and code[skip(code, end):skip(code, end) + 1] == "(" \
+            if (word in CYCLES or word in HOLES) and code[skip_blanks(code, end):skip_blanks(code, end) + 1] == "(" \
                     and BlockDelete.KEY not in block.sections:
                 self.cycle(block, code, pos, end, word, once=True)
                 return
@@ -230,7 +230,7 @@ class _State(CallReading, ControlReading):
     # -- declarations and words -------------------------------------------------------------------------
     def declare(self, block: Block, code: str, end: int) -> None:
         """``DEF REAL A, B=2``: each variable gets its value (0 when none is given [K])."""
-        at = skip(code, end)
+        at = skip_blanks(code, end)
         type_end = name_at(code, at)
         kind = code[at:type_end].upper()
         if kind not in TYPES:
@@ -238,7 +238,7 @@ class _State(CallReading, ControlReading):
         items: list[tuple[Var, Expr]] = []
         at = type_end
         while True:
-            at = skip(code, at)
+            at = skip_blanks(code, at)
             name_end = name_at(code, at)
             name = code[at:name_end]
             if not name or code[at] not in _NAME_START:
@@ -246,15 +246,15 @@ class _State(CallReading, ControlReading):
             upper = name.upper()
             if upper[:1] == "R" and upper[1:].isdigit() or len(name) == 1 and upper in ADDRESSES:
                 raise self.error(block.line, at + 1, f"'{name}' is an address or an R parameter, not a variable name")
-            if code[skip(code, name_end):skip(code, name_end) + 1] == "[":
+            if code[skip_blanks(code, name_end):skip_blanks(code, name_end) + 1] == "[":
                 raise Unmodelled("arrays", at)
             var = Var(name=name.lower())
             self.types[name.lower()] = TYPES[kind]
-            at = skip(code, name_end)
+            at = skip_blanks(code, name_end)
             value: Expr = Num(0.0)
             if code[at:at + 1] == "=":
                 at, value = parse_expr(code, at + 1)
-                at = skip(code, at)
+                at = skip_blanks(code, at)
             items.append((var, self.stored(var, value)))
             if code[at:at + 1] == ",":
                 at += 1
@@ -280,7 +280,7 @@ class _State(CallReading, ControlReading):
         modes: list[tuple[str, str, int]] = []
         seen: set[str] = set()
         while True:
-            pos = skip(code, pos)
+            pos = skip_blanks(code, pos)
             if pos >= n:
                 break
             c = code[pos]
@@ -288,7 +288,7 @@ class _State(CallReading, ControlReading):
             if c not in _NAME_START and c != "$":
                 raise self.error(block.line, pos + 1, f"unexpected character {c!r}")
             end = name_at(code, pos)
-            eq = skip(code, end)
+            eq = skip_blanks(code, end)
             assigned = code[eq:eq + 1] == "=" and code[eq + 1:eq + 2] != "="
             name = code[pos:end]
             upper = name.upper()
@@ -381,7 +381,7 @@ class _State(CallReading, ControlReading):
         way round) and ``SPOS[n]`` (another spindle) are not modelled."""
         if SpindleOrientation.KEY in block.sections:
             raise self.error(block.line, pos + 1, "SPOS appears twice in one block")
-        at = skip(code, start)
+        at = skip_blanks(code, start)
         if code[at:at + 3].upper() in ("DC(", "ACP", "ACN", "IC(", "AC("):
             raise Unmodelled("SPOS= with a positioning mode (DC, ACP, ACN, AC, IC)", pos)
         end, value = parse_expr(code, at)
@@ -421,7 +421,7 @@ class _State(CallReading, ControlReading):
               modes: list[tuple[str, str, int]]) -> int:
         """``X=10``, ``X=R1*2``, ``X=AC(10)``; ``T="DRILL"`` (``tool``); any other ``"string"`` is not
         modelled."""
-        at = skip(code, start)
+        at = skip_blanks(code, start)
         if code[at:at + 1] == '"':
             if letter.upper() == "T":
                 return self.tool(block, code, at)
