@@ -69,10 +69,28 @@ def _note(message: str) -> None:
     print(f"postproc build: {message}", file=sys.stderr)
 
 
+METADATA_COMMANDS = frozenset({"egg_info", "dist_info"})
+"""setuptools' commands that only describe the distribution (name, version, entry points)."""
+BUILD_COMMANDS = frozenset({"build", "build_ext", "build_py", "bdist_wheel", "bdist_egg", "editable_wheel",
+                            "develop", "install"})
+
+
+def metadata_only(argv: list[str]) -> bool:
+    """This run of setup.py only writes the metadata: pip asks for it first, in a process of its own
+    (setuptools' ``dist_info``; ``egg_info`` for the build requirements), and then builds in another. The
+    metadata does not depend on the extensions, and mypyc run for it type-checked and translated every hot
+    module once more for nothing (measured in docs/compiled.md)."""
+    words = [a for a in argv if not a.startswith("-")]
+    return bool(words) and words[0] in METADATA_COMMANDS and not BUILD_COMMANDS.intersection(words)
+
+
 def compiled_extensions() -> list[Any]:
-    """mypyc's extensions for the hot modules, renamed into the compiled tree; [] for pure Python."""
+    """mypyc's extensions for the hot modules, renamed into the compiled tree; [] for pure Python (or for a
+    run that only writes the metadata)."""
     if os.environ.get("POSTPROC_PURE", "") not in ("", "0"):
         _note("POSTPROC_PURE is set: installing pure Python")
+        return []
+    if metadata_only(sys.argv[1:]):
         return []
     try:
         from mypyc.build import mypycify

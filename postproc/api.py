@@ -12,10 +12,11 @@ native.install()  # the compiled hot path, before any of its modules is imported
 
 from .arc_end import TARGET_ARC_END
 from .block_rules import check_blocks
-from .control import GotoLabel, jump_past_end, missing_fallthrough
+from .control import GotoLabel
 from .dialect import Dialect
 from .errors import Diagnostics, ErrorLevel, PostprocError, UsageError
 from .ir import Block
+from .jump_targets import jump_past_end, missing_fallthrough
 from .lowering.arcs import ArcOption, rewrite_arcs, settle_arc_ends
 from .lowering.lower import lower_for
 from .plugins import Registry, default_registry

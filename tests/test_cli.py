@@ -11,7 +11,7 @@ from pathlib import Path
 
 import pytest
 
-import postproc.commands.cli
+import postproc.commands.command_line
 import postproc.commands.progress
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -139,7 +139,7 @@ def test_internal_errors_are_reported_briefly(cli, monkeypatch):
     def boom(args):
         raise RuntimeError("boom")
 
-    monkeypatch.setattr(postproc.commands.cli, "cmd_dialects", boom)
+    monkeypatch.setattr(postproc.commands.command_line, "cmd_dialects", boom)
     monkeypatch.delenv("POSTPROC_DEBUG", raising=False)
     result = cli("dialects")
     assert result.status == 1
@@ -150,7 +150,7 @@ def test_postproc_debug_shows_the_traceback(cli, monkeypatch):
     def boom(args):
         raise RuntimeError("boom")
 
-    monkeypatch.setattr(postproc.commands.cli, "cmd_dialects", boom)
+    monkeypatch.setattr(postproc.commands.command_line, "cmd_dialects", boom)
     monkeypatch.setenv("POSTPROC_DEBUG", "1")
     with pytest.raises(RuntimeError, match="boom"):
         cli("dialects")
@@ -238,7 +238,7 @@ def test_output_from_standard_input_is_written_with_the_umask(tmp_path):
 
 @pytest.mark.parametrize("command", ["translate", "toolpath", "verify", "ir", "dialects", "config"])
 def test_help_describes_every_option_and_shows_an_example(cli, command):
-    parser = postproc.commands.cli.build_parser()
+    parser = postproc.commands.command_line.build_parser()
     sub = next(a for a in parser._actions if isinstance(a, argparse._SubParsersAction)).choices[command]
     for action in sub._actions:
         assert action.help, f"{command}: {action.dest} has no description"
@@ -251,16 +251,16 @@ def test_help_describes_every_option_and_shows_an_example(cli, command):
 
 @pytest.mark.parametrize("columns", [None, "", "abc", "0", "-3", "37", "120"])
 def test_help_is_as_wide_as_argparse_would_make_it(monkeypatch, columns):
-    """The formatter sizes itself without shutil (``cli._columns``), as argparse does with it."""
+    """The formatter sizes itself without shutil (``command_line._columns``), as argparse does with it."""
     import shutil
     if columns is None:
         monkeypatch.delenv("COLUMNS", raising=False)
     else:
         monkeypatch.setenv("COLUMNS", columns)
-    assert postproc.commands.cli._columns() == shutil.get_terminal_size().columns
-    ours = postproc.commands.cli.build_parser().format_help()
-    monkeypatch.setattr(postproc.commands.cli, "_Formatter", argparse.RawDescriptionHelpFormatter)
-    assert ours == postproc.commands.cli.build_parser().format_help()
+    assert postproc.commands.command_line._columns() == shutil.get_terminal_size().columns
+    ours = postproc.commands.command_line.build_parser().format_help()
+    monkeypatch.setattr(postproc.commands.command_line, "_Formatter", argparse.RawDescriptionHelpFormatter)
+    assert ours == postproc.commands.command_line.build_parser().format_help()
 
 
 def test_the_console_script_is_installed_beside_the_interpreter():

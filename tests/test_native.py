@@ -232,3 +232,20 @@ def test_a_source_edited_during_the_build_runs_pure(tmp_path: Path, monkeypatch:
     assert native.plan(root, {}) == ("postproc/hot.py changed since it was compiled (run make install)", {})
     (root / "postproc" / "hot.py").write_text("x = 1\n", encoding="utf-8")  # the text compiled: fresh again
     assert native.plan(root, {})[0] == ""
+
+
+@pytest.mark.parametrize("argv,only", [
+    (["dist_info", "--output-dir", "/tmp/meta", "--keep-egg-info"], True),  # pip's metadata step (setuptools)
+    (["egg_info"], True),  # the build requirements
+    (["editable_wheel", "--dist-dir", "/tmp/w"], False),  # pip's build step: compiles
+    (["bdist_wheel"], False),
+    (["build_ext", "--inplace"], False),
+    (["egg_info", "build_ext"], False),  # a build named after the metadata still compiles
+    ([], False),
+])
+def test_only_a_build_runs_mypyc(tmp_path: Path, monkeypatch: pytest.MonkeyPatch, argv: list[str], only: bool) -> None:
+    """pip asks setup.py for the metadata in one process and builds in another: the first must not type-check
+    and translate the hot modules (it doubled mypyc's minutes in a fresh ``make run``), the second must. The
+    argument lists are setuptools' own (``setuptools.build_meta``)."""
+    setup = _setup_module(monkeypatch, tmp_path)
+    assert setup.metadata_only(argv) is only  # type: ignore[attr-defined]

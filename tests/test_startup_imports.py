@@ -5,7 +5,7 @@ toolpath, verify and backplot code; with a set-up file (``--machine``) pydantic 
 Nor the standard modules a plain run has no use for: decimal (an exponent's spelling), threading, json (the
 compiled build's manifest is plain lines: ``postproc.native.MANIFEST``), tempfile
 and shutil with what they import (the temporary output is made with ``os`` alone: ``postproc.output.outfile``;
-argparse's formatter is sized without shutil: ``postproc.commands.cli._Formatter``); and a command that reads and
+argparse's formatter is sized without shutil: ``postproc.commands.command_line._Formatter``); and a command that reads and
 writes no XML does not load lxml (``postproc.xmlio.lxml_etree``): neither ``postproc dialects`` nor a
 translation without a set-up file, whose dialects declare their reading pipelines in Python
 (``Dialect.python_pipeline``). Every installed dialect is registered, but a translation imports the

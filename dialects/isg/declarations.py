@@ -28,7 +28,8 @@ import re
 from dataclasses import dataclass, field
 
 from postproc.expr import Binary, Expr, Func, Num, Unary, Var
-from postproc.isg_family.expressions import Unmodelled, parse_expr, skip
+from postproc.isg_family.expressions import Unmodelled, parse_expr
+from postproc.rs274.expressions import skip_blanks
 from postproc.rs274.expressions import ExprSyntaxError
 
 INTEGER_TYPES: dict[str, tuple[int, int]] = {
@@ -67,22 +68,22 @@ def parse_declaration(code: str) -> Declaration:
     """The declaration in ``code`` (a line of a ``#VAR`` block, comments blanked). Raises
     ``ExprSyntaxError`` (with the offset) when malformed, ``Unmodelled`` for an array or a computed
     STRING length."""
-    pos = skip(code, 0)
+    pos = skip_blanks(code, 0)
     m = _NAME.match(code, pos)
     if m is None:
         raise ExprSyntaxError("a declaration names a self-defined variable: V.P.<name>, V.S.<name>, "
                               "V.L.<name> or V.CYC.<name>", pos)
     name = m.group()
-    pos = skip(code, m.end())
+    pos = skip_blanks(code, m.end())
     if code[pos:pos + 1] == "[":
         raise Unmodelled("V. variable arrays", m.start())
     kind = ""
     if code[pos:pos + 1] == ":":
-        pos, kind = _data_type(code, skip(code, pos + 1))
+        pos, kind = _data_type(code, skip_blanks(code, pos + 1))
     value: Expr | None = None
     string: str | None = None
     if code[pos:pos + 1] == "=":
-        pos = skip(code, pos + 1)
+        pos = skip_blanks(code, pos + 1)
         if kind.startswith("STRING"):
             s = _STRING.match(code, pos)
             if s is None:
@@ -90,7 +91,7 @@ def parse_declaration(code: str) -> Declaration:
             string, pos = s.group(), s.end()
         else:
             pos, value = parse_expr(code, pos)
-    pos = skip(code, pos)
+    pos = skip_blanks(code, pos)
     if pos < len(code.rstrip()):
         raise ExprSyntaxError(f"unexpected {code[pos]!r} after the declaration of {name}", pos)
     return Declaration(name, kind, value, string)
@@ -103,7 +104,7 @@ def _data_type(code: str, pos: int) -> tuple[int, str]:
     kind = t.group().upper()
     end = t.end()
     if kind == "STRING":
-        at = skip(code, end)
+        at = skip_blanks(code, end)
         length = _LENGTH.match(code, at)
         if length is None:
             if code[at:at + 1] == "[":
@@ -111,11 +112,11 @@ def _data_type(code: str, pos: int) -> tuple[int, str]:
             raise ExprSyntaxError("STRING needs its length: STRING[<0..126>]", at)
         if int(length.group(1)) > STRING_LENGTH:
             raise ExprSyntaxError(f"a STRING holds at most {STRING_LENGTH} characters", at)
-        return skip(code, length.end()), f"STRING[{int(length.group(1))}]"
+        return skip_blanks(code, length.end()), f"STRING[{int(length.group(1))}]"
     if kind not in INTEGER_TYPES and kind not in REAL_TYPES:
         raise ExprSyntaxError(f"unknown data type {t.group()!r} (BOOLEAN, SGN08, UNS08, SGN16, UNS16, SGN32, "
                               f"UNS32, REAL64, STRING[i])", pos)
-    return skip(code, end), kind
+    return skip_blanks(code, end), kind
 
 
 def stored(kind: str, value: Expr) -> Expr:

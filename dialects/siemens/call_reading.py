@@ -13,9 +13,10 @@ from postproc.errors import ParseError
 from postproc.expr import Expr, Num, Var
 from postproc.ir import Block, Comments, CycleCall, CycleCancel
 from postproc.isg_family.expressions import Unmodelled
+from postproc.rs274.expressions import skip_blanks
 
 from .cycles import CYCLES, NotModelled, cycle_words
-from .expressions import name_at, parse_expr, skip
+from .expressions import name_at, parse_expr
 from .holes import PARAMETERS as HOLES
 from .holes import read_holes
 
@@ -47,13 +48,13 @@ class CallReading:
     def mcall(self, block: Block, code: str, pos: int, end: int) -> None:
         """``MCALL CYCLE8x(..)`` with number parameters: the cycle's data block (``cycles``); a bare ``MCALL``
         cancels it. Other modal calls are kept verbatim."""
-        at = skip(code, end)
+        at = skip_blanks(code, end)
         if at >= len(code):
             block.add(CycleCancel())
             return
         stop = name_at(code, at)
         name = code[at:stop].upper()
-        if name not in CYCLES or code[skip(code, stop):skip(code, stop) + 1] != "(":
+        if name not in CYCLES or code[skip_blanks(code, stop):skip_blanks(code, stop) + 1] != "(":
             raise Unmodelled(f"MCALL {name or '..'} (a modal subprogram or cycle call)", pos)
         self.cycle(block, code, pos, stop, name, once=False)
 
@@ -62,9 +63,9 @@ class CallReading:
         IR (``cycles``), or kept verbatim."""
         shown = name if once else f"MCALL {name}"
         params: list[float | None] = []
-        at = skip(code, stop) + 1
+        at = skip_blanks(code, stop) + 1
         while True:
-            at = skip(code, at)
+            at = skip_blanks(code, at)
             if code[at:at + 1] in (",", ")"):
                 params.append(None)
             else:
@@ -72,7 +73,7 @@ class CallReading:
                 if not isinstance(value, Num):
                     raise Unmodelled(f"{shown} with computed parameters", pos)
                 params.append(value.value)
-                at = skip(code, at)
+                at = skip_blanks(code, at)
             if len(params) > MAX_PARAMETERS:
                 raise self.error(block.line, at + 1, f"{name}(..) has more than {MAX_PARAMETERS} parameters")
             if code[at:at + 1] == ",":
@@ -81,8 +82,8 @@ class CallReading:
             if code[at:at + 1] != ")":
                 raise self.error(block.line, at + 1, f"',' or ')' expected in {name}(..)")
             break
-        if skip(code, at + 1) < len(code):
-            raise self.error(block.line, skip(code, at + 1) + 1, f"{shown}(..) is alone in its block")
+        if skip_blanks(code, at + 1) < len(code):
+            raise self.error(block.line, skip_blanks(code, at + 1) + 1, f"{shown}(..) is alone in its block")
         if name in HOLES:
             try:
                 block.add(read_holes(name, params))
@@ -109,7 +110,7 @@ class CallReading:
         the subprogram set from the call's argument in its place (``procedure_parameters``). Parameters by
         reference (``VAR``), arrays and the attributes ``SAVE``/``DISPLOF`` are not modelled (kept
         verbatim)."""
-        at = skip(code, end)
+        at = skip_blanks(code, end)
         if word == "RET":
             if at < len(code):
                 raise Unmodelled("RET with a target or a value", at)
@@ -118,7 +119,7 @@ class CallReading:
         stop = name_at(code, at)
         if stop == at or code[at] not in NAME_START:
             raise self.error(block.line, at + 1, "PROC needs a subprogram name")
-        rest = skip(code, stop)
+        rest = skip_blanks(code, stop)
         if code[rest:rest + 1] == "(":
             rest = self.procedure_parameters(block, code, rest)
         if rest < len(code):
@@ -136,7 +137,7 @@ class CallReading:
         out is not read here [?: its default is not confirmed]]."""
         items: list[tuple[Var, Expr]] = []
         while True:
-            at = skip(code, at + 1)
+            at = skip_blanks(code, at + 1)
             if code[at:at + 1] == ")" and not items:
                 break
             type_end = name_at(code, at)
@@ -146,7 +147,7 @@ class CallReading:
             if kind not in TYPES:
                 raise Unmodelled(f"a PROC parameter of type {kind or '..'} (only REAL, INT and BOOL values are "
                                  "modelled)", at)
-            start = skip(code, type_end)
+            start = skip_blanks(code, type_end)
             name_end = name_at(code, start)
             name = code[start:name_end]
             upper = name.upper()
@@ -154,7 +155,7 @@ class CallReading:
                     or len(name) == 1 and upper in ADDRESSES:
                 raise self.error(block.line, start + 1, "a PROC parameter needs a name that is no address or R "
                                                         "parameter")
-            at = skip(code, name_end)
+            at = skip_blanks(code, name_end)
             if code[at:at + 1] == "[":
                 raise Unmodelled("array parameters", start)
             if len(items) >= MAX_PARAMETERS:
@@ -169,7 +170,7 @@ class CallReading:
             break
         if items:
             block.add(Assign([(Var(name=PARAMETER_COUNT), Num(float(len(items)))), *items]))
-        return skip(code, at + 1)
+        return skip_blanks(code, at + 1)
 
     def call(self, block: Block, code: str, pos: int, end: int) -> bool:
         """``NAME`` or ``NAME P3`` alone in its block: a call of subprogram ``NAME`` (file ``NAME.SPF``), run
@@ -179,7 +180,7 @@ class CallReading:
         name = code[pos:end]
         upper = name.upper()
         n = len(code)
-        at = skip(code, end)
+        at = skip_blanks(code, end)
         if upper[:1] == "R" and upper[1:].isdigit() or name.lower() in self.types or upper[:1] == "$" \
                 or len(name) == 1 or upper[:1] in ADDRESSES and upper[1:2] in NUMBER_START \
                 or code[at:at + 1] == "=":
@@ -193,11 +194,11 @@ class CallReading:
                 raise Unmodelled(f"a call of {upper} with arguments and more after them (P repetitions)", pos)
             if code[at] not in "Pp":
                 raise Unmodelled(f"'{name}' (an instruction or a subprogram call)", pos)
-            start = skip(code, at + 1 + (code[skip(code, at + 1):skip(code, at + 1) + 1] == "="))
+            start = skip_blanks(code, at + 1 + (code[skip_blanks(code, at + 1):skip_blanks(code, at + 1) + 1] == "="))
             stop = start
             while stop < n and code[stop] in DIGITS:
                 stop += 1
-            if stop == start or skip(code, stop) < n:
+            if stop == start or skip_blanks(code, stop) < n:
                 raise self.error(block.line, at + 1, f"a call of {upper} repeats a whole number of times: {upper} P3")
             repeat = Num(float(int(code[start:stop])))
         block.add(Call(upper, args, repeat=repeat, kind="macro"))
@@ -206,7 +207,7 @@ class CallReading:
     def arguments(self, block: Block, code: str, at: int, name: str, args: dict[int, Expr]) -> int:
         """``(1, R2*2)`` from its ``(`` into ``args`` (1, 2...); the position after ``)``."""
         while True:
-            at = skip(code, at + 1)
+            at = skip_blanks(code, at + 1)
             if code[at:at + 1] == ")" and not args:
                 break
             if code[at:at + 1] in (",", ")"):
@@ -216,13 +217,13 @@ class CallReading:
                 raise self.error(block.line, at + 1, f"a call of {name} has more than {MAX_PARAMETERS} arguments")
             at, value = parse_expr(code, at)
             args[len(args) + 1] = value
-            at = skip(code, at)
+            at = skip_blanks(code, at)
             if code[at:at + 1] == ",":
                 continue
             if code[at:at + 1] != ")":
                 raise self.error(block.line, at + 1, f"',' or ')' expected in the arguments of {name}")
             break
-        return skip(code, at + 1)
+        return skip_blanks(code, at + 1)
 
     def returns(self, block: Block, code: str) -> None:
         """``M17`` returns from a subprogram; ``M2``/``M30`` in a subprogram file is refused (whether it

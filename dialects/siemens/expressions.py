@@ -33,7 +33,7 @@ from __future__ import annotations
 from postproc.errors import UnsupportedError
 from postproc.expr import Binary, Expr, Func, Num, Unary, Var
 from postproc.isg_family.expressions import Unmodelled
-from postproc.rs274.expressions import MAX_DEPTH, ExprSyntaxError, shallow
+from postproc.rs274.expressions import MAX_DEPTH, ExprSyntaxError, shallow, skip_blanks
 
 R_BASE = 500
 """``R<n>`` is the neutral variable ``R_BASE + n``."""
@@ -61,17 +61,9 @@ _INVERSE_LOGICAL = {op: (word, prec) for word, (op, prec) in LOGICAL.items()}
 _INVERSE_COMPARISONS = {op: word for word, op in COMPARISONS.items()}
 _INVERSE_FUNCTIONS = {name: word for word, name in FUNCTIONS.items()}
 
-_SPACE = frozenset(" \t")
 _DIGITS = frozenset("0123456789")
 _LETTERS = frozenset("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz_$")
 _NAME = frozenset("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_$")
-
-
-def skip(text: str, pos: int) -> int:
-    n = len(text)
-    while pos < n and text[pos] in _SPACE:
-        pos += 1
-    return pos
 
 
 def name_at(text: str, pos: int) -> int:
@@ -125,9 +117,9 @@ class _Parser:
         """A comparison of two logical expressions, or one logical expression."""
         saved = self.joined
         self.joined = False
-        start = skip(self.text, pos)
+        start = skip_blanks(self.text, pos)
         pos, left = self.logical(start)
-        at = skip(self.text, pos)
+        at = skip_blanks(self.text, pos)
         end, word = self.comparison(at)
         if word is None:
             self.joined = saved
@@ -139,7 +131,7 @@ class _Parser:
         if self.joined:
             raise ExprSyntaxError("a comparison before AND/OR/XOR without parentheses: SINUMERIK compares "
                                   "last, so write the comparisons in parentheses: (R1>1) AND (R2<2)", at)
-        after = skip(self.text, pos)
+        after = skip_blanks(self.text, pos)
         if self.comparison(after)[1] is not None:
             raise ExprSyntaxError("a chain of comparisons: write it with parentheses", after)
         self.joined = saved
@@ -159,7 +151,7 @@ class _Parser:
     def logical(self, pos: int, min_prec: int = -1) -> tuple[int, Expr]:
         pos, left = self.arithmetic(pos)
         while True:
-            at = skip(self.text, pos)
+            at = skip_blanks(self.text, pos)
             end, word = self.word_operator(at, LOGICAL)
             if word is None:
                 return pos, left
@@ -182,7 +174,7 @@ class _Parser:
     def arithmetic(self, pos: int, min_prec: int = 2) -> tuple[int, Expr]:
         pos, left = self.operand(pos)
         while True:
-            at = skip(self.text, pos)
+            at = skip_blanks(self.text, pos)
             c = self.text[at:at + 1]
             if c and c in "+-*/":
                 end, word = at + 1, c
@@ -201,7 +193,7 @@ class _Parser:
 
     def operand(self, pos: int) -> tuple[int, Expr]:
         text = self.text
-        pos = skip(text, pos)
+        pos = skip_blanks(text, pos)
         if pos >= len(text):
             raise ExprSyntaxError("expression expected", pos)
         c = text[pos]
@@ -210,7 +202,7 @@ class _Parser:
         if c == "(":
             self.deeper(pos)
             pos, inner = self.top(pos + 1)
-            pos = skip(text, pos)
+            pos = skip_blanks(text, pos)
             if text[pos:pos + 1] != ")":
                 raise ExprSyntaxError("')' expected", pos)
             self.depth -= 1
@@ -232,7 +224,7 @@ class _Parser:
                 return end, Unary("not", inner)
             if word in ("TRUE", "FALSE"):
                 return end, Num(1.0 if word == "TRUE" else 0.0)
-            if word in FUNCTIONS or text[skip(text, end):skip(text, end) + 1] == "(" and word[:1] != "$":
+            if word in FUNCTIONS or text[skip_blanks(text, end):skip_blanks(text, end) + 1] == "(" and word[:1] != "$":
                 return self.function(pos, end, word)
             return self.variable(pos)
         raise ExprSyntaxError(f"unexpected {c!r} in expression", pos)
@@ -266,7 +258,7 @@ class _Parser:
         name = FUNCTIONS.get(word)
         if name is None:
             raise Unmodelled(f"the function {word}", pos)
-        at = skip(self.text, end)
+        at = skip_blanks(self.text, end)
         if self.text[at:at + 1] != "(":
             raise ExprSyntaxError(f"{word} needs its argument in parentheses: {word}(..)", end)
         args: list[Expr] = []
@@ -275,7 +267,7 @@ class _Parser:
         while True:
             at, arg = self.top(at)
             args.append(arg)
-            at = skip(self.text, at)
+            at = skip_blanks(self.text, at)
             c = self.text[at:at + 1]
             if c == ",":
                 at += 1
@@ -295,7 +287,7 @@ class _Parser:
         word = text[pos:end]
         if not word or text[pos] in _DIGITS:
             raise ExprSyntaxError("a variable expected", pos)
-        if text[skip(text, end):skip(text, end) + 1] == "[":
+        if text[skip_blanks(text, end):skip_blanks(text, end) + 1] == "[":
             raise Unmodelled("array elements and indexed system variables", pos)
         up = word.upper()
         if up[0] == "R" and up[1:].isdigit():

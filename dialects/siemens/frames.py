@@ -29,8 +29,9 @@ from postproc.errors import Location, ParseError
 from postproc.expr import Expr, Num
 from postproc.frames.section import FrameChange
 from postproc.isg_family.expressions import Unmodelled
+from postproc.rs274.expressions import skip_blanks
 
-from .expressions import parse_expr, skip
+from .expressions import parse_expr
 
 STATEMENTS: Final = {
     "TRANS": "local", "ATRANS": "local_add", "ROT": "rotate", "AROT": "rotate_add",
@@ -46,7 +47,7 @@ def read_frame(word: str, code: str, pos: int, end: int, file: str, line: int) -
     kind = STATEMENTS[word]
     values: dict[str, float] = {}
     n = len(code)
-    at = skip(code, end)
+    at = skip_blanks(code, end)
     while at < n:
         if code[at:at + 3].upper() == "RPL" and word in ("ROT", "AROT"):
             letter, start = "RPL", at + 3
@@ -56,7 +57,7 @@ def read_frame(word: str, code: str, pos: int, end: int, file: str, line: int) -
                 raise Unmodelled(f"{word} with other than X, Y, Z" + (" or RPL" if kind.startswith("rot") else ""), at)
         if letter in values:
             raise ParseError(f"{letter} appears twice in {word}", Location(file, line, at + 1))
-        equals = skip(code, start)
+        equals = skip_blanks(code, start)
         if code[equals:equals + 1] == "=":
             start = equals
         elif letter == "RPL":
@@ -65,7 +66,7 @@ def read_frame(word: str, code: str, pos: int, end: int, file: str, line: int) -
         if not isinstance(value, Num) or code[start:start + 1] != "=" and not _plain(code[start:stop].strip()):
             raise Unmodelled(f"{word} with computed values", at)
         values[letter] = value.value
-        at = skip(code, stop)
+        at = skip_blanks(code, stop)
     return FrameChange(kind, _words(word, kind, values, pos), "chain", "siemens", code[pos:].strip())
 
 

@@ -21,16 +21,8 @@ Read into neutral sections:
 * ``G75 FP=1 Z1=0`` alone in a block (``fixed_point``: a rapid move in machine coordinates to the set-up's
   home);
 * ``DEF REAL|INT|BOOL NAME[=value], ...`` (an assignment of the value, 0 when none is given [K]);
-* ``IF``/``ELSE``/``ENDIF``, ``WHILE``/``ENDWHILE``, ``FOR``/``TO``/``ENDFOR``, ``REPEAT``/``UNTIL``,
-  ``LOOP``/``ENDLOOP`` (liufang-robot SPEC; Job planning p.107 [K]); ``GOTOF``/``GOTOB``/``GOTO``/``GOTOC``
-  to a label or a block number, alone or after ``IF cond``. A label must be unique in its file and a
-  ``GOTOF``/``GOTOB`` target must lie in its direction (checked when the file ends): the neutral jump
-  searches forward, then from the start, which is then each of them exactly. The block number may be
-  written bare (``GOTOF 90``): the jump destination is "a main block or subblock number (e.g.: 200, N300)"
-  [K: SINUMERIK 840D sl Programming Manual Fundamentals, "Program jumps to jump markers"; main blocks are
-  numbered ``:200``, so the bare form names one; wording recalled, not re-read here]. ``GOTOC`` jumps as
-  ``GOTO`` but suppresses alarm 14080 (jump destination not found): a missing target goes on with the
-  next block [K: same section] (the neutral jump's ``fallthrough``).
+* ``IF``/``ELSE``/``ENDIF``, ``WHILE``, ``FOR``, ``REPEAT``/``UNTIL``, ``LOOP`` and the ``GOTO`` jumps
+  (``control_reading``, with the rules that check them);
 
 Subprograms: ``NAME`` / ``NAME P3`` alone in a block calls ``NAME.SPF`` (3 times), ``NAME(1, R2)`` with
 arguments; ``PROC NAME`` or ``PROC NAME(REAL A, INT B)`` (parameters by value) or an ``_SPF`` header makes the
@@ -52,21 +44,20 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Iterable, Iterator
 
-from postproc.control import (
-    Assign, Do, Else, EndFor, EndIf, EndWhile, For, Goto, GotoLabel, If, Label, Until, While,
-)
+from postproc.control import Assign, Label
 from postproc.dialect import Reader
 from postproc.errors import Location, ParseError, PostprocError
 from postproc.expr import Binary, Expr, Func, Num, Var
-from postproc.ir import Block, BlockDelete, Comments, NativeCode, ProgramStart, Section, Sequence, SpindleOrientation
+from postproc.ir import Block, BlockDelete, Comments, NativeCode, ProgramStart, Sequence, SpindleOrientation
 from postproc.isg_family.expressions import Unmodelled
-from postproc.rs274.expressions import ExprSyntaxError
+from postproc.rs274.expressions import ExprSyntaxError, skip_blanks
 from postproc.rs274.lexer import split_lines
 
 from .call_reading import ADDRESSES, TYPES, CallReading
 from .call_reading import DIGITS as _DIGITS
 from .call_reading import NAME_START as _NAME_START
 from .call_reading import NUMBER_START as _NUMBER_START
+from .control_reading import CLOSERS, JUMPS, OPENERS, ControlReading, Jump
 from .arcs import SiemensArc, SiemensCip
 from .cycles import CYCLES
 from .fixed_point import read_fixed_point
@@ -74,14 +65,11 @@ from .frame_suppression import SiemensSupa
 from .helix import MAX_TURNS, SiemensTurn
 from .frames import STATEMENTS as FRAME_STATEMENTS, read_frame
 from .holes import PARAMETERS as HOLES
-from .expressions import name_at, parse_expr, parse_variable, skip
-from .keywords import INSTRUCTIONS, describe
+from .expressions import name_at, parse_expr, parse_variable
+from .keywords import describe
 
 SKIP_LEVELS = 9
 """Block skip ``/0`` ... ``/9`` [K]."""
-_OPENERS = {"IF": "ENDIF", "WHILE": "ENDWHILE", "FOR": "ENDFOR", "REPEAT": "UNTIL", "LOOP": "ENDLOOP"}
-_CLOSERS = {close: open_ for open_, close in _OPENERS.items()}
-_JUMPS = ("GOTOF", "GOTOB", "GOTOC", "GOTO")
 _WORDS_READ = frozenset(("CIP", "SUPA", "SPOS"))
 """Instruction words that start a block and are read with its words (``arcs``, ``frame_suppression``,
 ``spindle_position``)."""
@@ -106,17 +94,9 @@ class SiemensReader(Reader):
 
 
 @dataclass
-class _Jump:
-    word: str
-    target: str
-    """A label's name (lower case) or ``N<number>``."""
-    line: int
-    col: int
-
-
-@dataclass
-class _State(CallReading):
-    """What reading a file remembers between blocks (calls, cycles and tools: ``CallReading``)."""
+class _State(CallReading, ControlReading):
+    """What reading a file remembers between blocks (calls, cycles and tools: ``CallReading``; loops,
+    conditions and jumps: ``ControlReading``)."""
 
     file: str
     stack: list[tuple[str, str, int]] = field(default_factory=list)
@@ -124,7 +104,7 @@ class _State(CallReading):
     count: int = 0
     labels: dict[str, list[int]] = field(default_factory=dict)
     """Jump label (lower case) or ``N<number>`` -> the lines that carry it."""
-    jumps: list[_Jump] = field(default_factory=list)
+    jumps: list[Jump] = field(default_factory=list)
     types: dict[str, str] = field(default_factory=dict)
     """Declared user variables (lower case) -> their type."""
     tool_names: dict[str, int] = field(default_factory=dict)
@@ -160,7 +140,7 @@ class _State(CallReading):
     def lex(self, block: Block, code: str) -> None:
         line = block.line
         n = len(code)
-        pos = skip(code, 0)
+        pos = skip_blanks(code, 0)
         if pos < n and code[pos] == "%":
             name = self.header(code, pos, line)
             if name.endswith("_SPF"):
@@ -178,7 +158,7 @@ class _State(CallReading):
             if level > SKIP_LEVELS:
                 raise self.error(line, pos + 1, f"block skip level /{level} (levels are /0 to /{SKIP_LEVELS})")
             block.add(BlockDelete(level + 1))
-            pos = skip(code, end)
+            pos = skip_blanks(code, end)
         if pos < n and (code[pos] in "Nn:" and code[pos + 1:pos + 2].isdigit()):
             end = pos + 1
             while end < n and code[end] in _DIGITS:
@@ -189,14 +169,14 @@ class _State(CallReading):
             block.words.append(("N", number))
             block.add(Sequence(int(number)))
             self.labels.setdefault(f"N{int(number)}", []).append(line)
-            pos = skip(code, end)
+            pos = skip_blanks(code, end)
         if pos < n and code[pos] in _NAME_START:
             end = name_at(code, pos)
             if code[end:end + 1] == ":" and code[end + 1:end + 2] != "=":
                 name = code[pos:end].lower()
                 block.add(Label(name))
                 self.labels.setdefault(name, []).append(line)
-                pos = skip(code, end + 1)
+                pos = skip_blanks(code, end + 1)
         if pos >= n:
             return
         point = read_fixed_point(code, pos)
@@ -206,7 +186,7 @@ class _State(CallReading):
         if code[pos] in _NAME_START:
             end = name_at(code, pos)
             word = code[pos:end].upper()
-            if word in _OPENERS or word in _CLOSERS or word in ("ELSE", *_JUMPS):
+            if word in OPENERS or word in CLOSERS or word in ("ELSE", *JUMPS):
                 block.add(self.statement(code, pos, end, word, line))
                 return
             if word == "DEF":
@@ -224,7 +204,7 @@ class _State(CallReading):
             if word == "CIP":
                 block.add(SiemensCip())
                 pos = end
-            if (word in CYCLES or word in HOLES) and code[skip(code, end):skip(code, end) + 1] == "(" \
+            if (word in CYCLES or word in HOLES) and code[skip_blanks(code, end):skip_blanks(code, end) + 1] == "(" \
                     and BlockDelete.KEY not in block.sections:
                 self.cycle(block, code, pos, end, word, once=True)
                 return
@@ -247,110 +227,10 @@ class _State(CallReading):
 
 
     # -- control statements -----------------------------------------------------------------------------
-    def open(self, word: str, line: int) -> str:
-        self.count += 1
-        label = str(self.count)
-        self.stack.append((word, label, line))
-        return label
-
-    def close(self, word: str, line: int, col: int) -> str:
-        opener = _CLOSERS[word]
-        if not self.stack or self.stack[-1][0] != opener:
-            found = f" (the innermost open construct is {self.stack[-1][0]} from line {self.stack[-1][2]})" \
-                if self.stack else ""
-            raise self.error(line, col, f"{word} does not close an open {opener}{found}")
-        return self.stack.pop()[1]
-
-    def statement(self, code: str, pos: int, end: int, word: str, line: int) -> Section:
-        col = pos + 1
-        n = len(code)
-
-        def done(at: int, section: Section) -> Section:
-            at = skip(code, at)
-            if at < n:
-                raise self.error(line, at + 1, f"unexpected {code[at:].strip()[:20]!r} after {word}")
-            return section
-
-        if word in _JUMPS:
-            return done(*self.jump(code, end, word, line, None))
-        if word == "IF":
-            at, cond = parse_expr(code, end)
-            after = skip(code, at)
-            jump_end = name_at(code, after)
-            jump = code[after:jump_end].upper()
-            if jump in _JUMPS:
-                return done(*self.jump(code, jump_end, jump, line, cond))
-            return done(at, If(self.open("IF", line), cond))
-        if word == "ELSE":
-            if not self.stack or self.stack[-1][0] != "IF":
-                raise self.error(line, col, "ELSE outside IF ... ENDIF")
-            return done(end, Else(self.stack[-1][1]))
-        if word == "ENDIF":
-            return done(end, EndIf(self.close(word, line, col)))
-        if word == "WHILE":
-            at, cond = parse_expr(code, end)
-            return done(at, While(self.open(word, line), cond))
-        if word == "ENDWHILE":
-            return done(end, EndWhile(self.close(word, line, col)))
-        if word == "LOOP":
-            return done(end, While(self.open(word, line), Num(1.0)))
-        if word == "ENDLOOP":
-            return done(end, EndWhile(self.close(word, line, col)))
-        if word == "REPEAT":
-            if skip(code, end) < n:
-                raise Unmodelled("REPEAT of a program section (REPEAT label P=n)", pos)
-            return done(end, Do(self.open(word, line)))
-        if word == "UNTIL":
-            at, cond = parse_expr(code, end)
-            return done(at, Until(self.close(word, line, col), cond))
-        if word == "FOR":
-            return self.for_loop(code, end, line)
-        return done(end, EndFor(self.close(word, line, col)))  # ENDFOR
-
-    def for_loop(self, code: str, end: int, line: int) -> Section:
-        """``FOR R1=0 TO 10`` / ``FOR I=1 TO R2``: counting up by 1 while the counter is at most the end
-        value [K: Job planning "FOR counter loop"; the counter is a variable or an R parameter]."""
-        start = skip(code, end)
-        at, counter = parse_variable(code, start)
-        if counter.name is not None and counter.name.startswith("$"):
-            raise self.error(line, start + 1, "a FOR counter is an R parameter or a user variable")
-        at = skip(code, at)
-        if code[at:at + 1] != "=":
-            raise self.error(line, at + 1, "FOR needs '=': FOR R1=0 TO 10")
-        at, first = parse_expr(code, at + 1)
-        to = skip(code, at)
-        if code[to:to + 2].upper() != "TO" or code[to + 2:to + 3] not in ("", " ", "\t", "(", "R", "r") \
-                and code[to + 2:to + 3].isalnum():
-            raise self.error(line, to + 1, "FOR needs TO: FOR R1=0 TO 10")
-        at, last = parse_expr(code, to + 2)
-        rest = skip(code, at)
-        if rest < len(code):
-            raise self.error(line, rest + 1, f"unexpected {code[rest:].strip()[:20]!r} after FOR")
-        return For(self.open("FOR", line), counter, first, last, Num(1.0))
-
-    def jump(self, code: str, end: int, word: str, line: int, cond: Expr | None) -> tuple[int, Section]:
-        at = skip(code, end)
-        stop = name_at(code, at)
-        target = code[at:stop]
-        if not target:
-            raise self.error(line, at + 1, f"{word} needs a label or a block number")
-        fallthrough = word == "GOTOC"  # alarm 14080 suppressed: a missing target goes on with the next block
-        digits = target[1:] if target[:1] in "Nn" else target
-        if digits.isdigit():  # N300 or a bare 200: a block number (main block ``:200`` or ``N200``) [K]
-            key = f"N{int(digits)}"
-            section: Section = Goto(Num(float(int(digits))), cond, fallthrough)
-        elif target[:1] in _NAME_START:
-            key = target.lower()
-            section = GotoLabel(key, cond, fallthrough)
-        else:
-            raise self.error(line, at + 1, f"{word} needs a label or a block number, not {target!r}")
-        self.jumps.append(_Jump(word, key, line, at + 1))
-        return stop, section
-
     # -- declarations and words -------------------------------------------------------------------------
     def declare(self, block: Block, code: str, end: int) -> None:
         """``DEF REAL A, B=2``: each variable gets its value (0 when none is given [K])."""
-        at = skip(code, end)
+        at = skip_blanks(code, end)
         type_end = name_at(code, at)
         kind = code[at:type_end].upper()
         if kind not in TYPES:
@@ -358,7 +238,7 @@ class _State(CallReading):
         items: list[tuple[Var, Expr]] = []
         at = type_end
         while True:
-            at = skip(code, at)
+            at = skip_blanks(code, at)
             name_end = name_at(code, at)
             name = code[at:name_end]
             if not name or code[at] not in _NAME_START:
@@ -366,15 +246,15 @@ class _State(CallReading):
             upper = name.upper()
             if upper[:1] == "R" and upper[1:].isdigit() or len(name) == 1 and upper in ADDRESSES:
                 raise self.error(block.line, at + 1, f"'{name}' is an address or an R parameter, not a variable name")
-            if code[skip(code, name_end):skip(code, name_end) + 1] == "[":
+            if code[skip_blanks(code, name_end):skip_blanks(code, name_end) + 1] == "[":
                 raise Unmodelled("arrays", at)
             var = Var(name=name.lower())
             self.types[name.lower()] = TYPES[kind]
-            at = skip(code, name_end)
+            at = skip_blanks(code, name_end)
             value: Expr = Num(0.0)
             if code[at:at + 1] == "=":
                 at, value = parse_expr(code, at + 1)
-                at = skip(code, at)
+                at = skip_blanks(code, at)
             items.append((var, self.stored(var, value)))
             if code[at:at + 1] == ",":
                 at += 1
@@ -400,7 +280,7 @@ class _State(CallReading):
         modes: list[tuple[str, str, int]] = []
         seen: set[str] = set()
         while True:
-            pos = skip(code, pos)
+            pos = skip_blanks(code, pos)
             if pos >= n:
                 break
             c = code[pos]
@@ -408,7 +288,7 @@ class _State(CallReading):
             if c not in _NAME_START and c != "$":
                 raise self.error(block.line, pos + 1, f"unexpected character {c!r}")
             end = name_at(code, pos)
-            eq = skip(code, end)
+            eq = skip_blanks(code, end)
             assigned = code[eq:eq + 1] == "=" and code[eq + 1:eq + 2] != "="
             name = code[pos:end]
             upper = name.upper()
@@ -501,7 +381,7 @@ class _State(CallReading):
         way round) and ``SPOS[n]`` (another spindle) are not modelled."""
         if SpindleOrientation.KEY in block.sections:
             raise self.error(block.line, pos + 1, "SPOS appears twice in one block")
-        at = skip(code, start)
+        at = skip_blanks(code, start)
         if code[at:at + 3].upper() in ("DC(", "ACP", "ACN", "IC(", "AC("):
             raise Unmodelled("SPOS= with a positioning mode (DC, ACP, ACN, AC, IC)", pos)
         end, value = parse_expr(code, at)
@@ -541,7 +421,7 @@ class _State(CallReading):
               modes: list[tuple[str, str, int]]) -> int:
         """``X=10``, ``X=R1*2``, ``X=AC(10)``; ``T="DRILL"`` (``tool``); any other ``"string"`` is not
         modelled."""
-        at = skip(code, start)
+        at = skip_blanks(code, start)
         if code[at:at + 1] == '"':
             if letter.upper() == "T":
                 return self.tool(block, code, at)
@@ -576,27 +456,6 @@ class _State(CallReading):
                 continue
             raise Unmodelled(f"{letter}={mode}(..) (a per-address distance mode; written plain in a block "
                              f"with the same G90/G91 it is read)", pos)
-
-    def finish(self) -> list[ParseError]:
-        errors = [self.error(line, 1, f"{word} is never closed ({_OPENERS[word]} missing)")
-                  for word, _, line in self.stack]
-        for jump in self.jumps:
-            lines = self.labels.get(jump.target, [])
-            shown = jump.target.upper() if jump.target.startswith("N") else jump.target
-            if len(lines) > 1:
-                errors.append(self.error(jump.line, jump.col, f"{jump.word} {shown}: the target is on more than "
-                                                              f"one line ({', '.join(map(str, lines))})"))
-            elif not lines and jump.word == "GOTOC":
-                continue  # GOTOC: the control suppresses alarm 14080 and goes on with the next block
-            elif not lines:
-                errors.append(self.error(jump.line, jump.col, f"{jump.word} {shown}: no such target in this file"))
-            elif jump.word == "GOTOF" and lines[0] <= jump.line:
-                errors.append(self.error(jump.line, jump.col, f"GOTOF {shown}: the target (line {lines[0]}) is not "
-                                                              f"after the jump (GOTOF searches forward)"))
-            elif jump.word == "GOTOB" and lines[0] > jump.line:
-                errors.append(self.error(jump.line, jump.col, f"GOTOB {shown}: the target (line {lines[0]}) is not "
-                                                              f"before the jump (GOTOB searches backward)"))
-        return errors
 
 
 def _plain(text: str) -> bool:

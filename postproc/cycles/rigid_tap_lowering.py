@@ -123,24 +123,9 @@ def as_tap_cycle(block: Block, ctx: Context, target: type[Dialect], tap: RigidTa
     """A synchronised tap as the target's rigid tap cycle (the module docstring): three blocks."""
     state = ctx.state
     at = ctx.at(block)
-    normal = PLANE_AXES[state.plane][2]
-    if tap.dwell or isinstance(tap.pitch, Expr) or any(isinstance(v, Expr) for v in tap.axes.values()):
-        raise UnsupportedError("a rigid tap with a computed word or a dwell: no tap cycle is written for it", at)
-    incremental = state.distance == "incremental"
-    start = state.position.get(normal)
-    if start is None:
-        raise ProgramError(f"a rigid tap where the tool's {normal} position is unknown: {target.NAME}'s tap cycle "
-                           "needs its start as the R level (program a move to a known point first)", at)
-    for axis, value in tap.axes.items():
-        if axis != normal and (value != 0.0 if incremental else value != state.position.get(axis)):
-            raise UnsupportedError(f"a rigid tap that moves {axis} (an oblique tap): {target.NAME}'s tap cycle "
-                                   f"taps along {normal} only", at)
-    if normal not in tap.axes:
-        raise UnsupportedError(f"a rigid tap that does not move {normal}: {target.NAME}'s tap cycle taps along "
-                               f"{normal} only", at)
-    end = tap.axes[normal]
-    assert not isinstance(end, Expr)  # (refused above)
-    bottom = float(end) + (start if incremental else 0.0)
+    normal, start, bottom = _along_normal(ctx, tap, at, "no tap cycle is written for it",
+                                          f"{target.NAME}'s tap cycle needs its start as the R level",
+                                          f"{target.NAME}'s tap cycle taps")
     del block.sections["RigidTap"]
     block.changed()
     yield from _tap_cycle(block, ctx, target, tap, (normal, start, bottom), state.spindle, at)
@@ -278,6 +263,34 @@ def _first_part(block: Block, term: str, items: list[Section]) -> Block:
     return block
 
 
+def _along_normal(ctx: Context, tap: RigidTap, at: Location, unwritten: str, needs_start: str, taps: str,
+                  same_speed: str | None = None) -> tuple[str, float, float]:
+    """The axis normal to the plane, where the tap starts and its bottom, both absolute, for a target that taps
+    along that axis only (its tap cycle, or its strokes); each phrase names what the target would write, in
+    the error that refuses a tap it cannot: ``unwritten`` (computed words or a dwell), ``needs_start`` (the
+    start unknown), ``taps`` (an oblique tap, or none along the normal) and, where the way out cannot be
+    faster than the way in, ``same_speed``."""
+    state = ctx.state
+    normal = PLANE_AXES[state.plane][2]
+    if tap.dwell or isinstance(tap.pitch, Expr) or any(isinstance(v, Expr) for v in tap.axes.values()):
+        raise UnsupportedError(f"a rigid tap with a computed word or a dwell: {unwritten}", at)
+    if same_speed is not None and tap.speedup is not None and tap.speedup > 1.0:
+        raise UnsupportedError(f"a rigid tap whose way out is faster (by {tap.speedup:g} times): {same_speed}", at)
+    incremental = state.distance == "incremental"
+    start = state.position.get(normal)
+    if start is None:
+        raise ProgramError(f"a rigid tap where the tool's {normal} position is unknown: {needs_start} (program a "
+                           "move to a known point first)", at)
+    for axis, value in tap.axes.items():
+        if axis != normal and (value != 0.0 if incremental else value != state.position.get(axis)):
+            raise UnsupportedError(f"a rigid tap that moves {axis} (an oblique tap): {taps} along {normal} only", at)
+    if normal not in tap.axes:
+        raise UnsupportedError(f"a rigid tap that does not move {normal}: {taps} along {normal} only", at)
+    end = tap.axes[normal]
+    assert not isinstance(end, Expr)  # (refused above)
+    return normal, start, float(end) + (start if incremental else 0.0)
+
+
 def _later_part(block: Block, items: list[Section]) -> Iterator[Block]:
     """What an expansion does after a tap, one block an item (the first part's comment names the source)."""
     for item in items:
@@ -296,28 +309,10 @@ def as_strokes(block: Block, ctx: Context, target: type[Dialect], tap: RigidTap)
     [?], so neither is left to the controller."""
     state = ctx.state
     at = ctx.at(block)
-    normal = PLANE_AXES[state.plane][2]
-    if tap.dwell or isinstance(tap.pitch, Expr) or any(isinstance(v, Expr) for v in tap.axes.values()):
-        raise UnsupportedError(f"a rigid tap with a computed word or a dwell: {target.NAME}'s strokes are not "
-                               "written for it", at)
-    if tap.speedup is not None and tap.speedup > 1.0:
-        raise UnsupportedError(f"a rigid tap whose way out is faster (by {tap.speedup:g} times): {target.NAME}'s "
-                               "retraction stroke runs at the speed of the way in", at)
+    normal, start, bottom = _along_normal(ctx, tap, at, f"{target.NAME}'s strokes are not written for it",
+                                          f"{target.NAME}'s retraction stroke needs it", f"{target.NAME}'s strokes tap",
+                                          f"{target.NAME}'s retraction stroke runs at the speed of the way in")
     incremental = state.distance == "incremental"
-    start = state.position.get(normal)
-    if start is None:
-        raise ProgramError(f"a rigid tap where the tool's {normal} position is unknown: {target.NAME}'s "
-                           "retraction stroke needs it (program a move to a known point first)", at)
-    for axis, value in tap.axes.items():
-        if axis != normal and (value != 0.0 if incremental else value != state.position.get(axis)):
-            raise UnsupportedError(f"a rigid tap that moves {axis} (an oblique tap): {target.NAME}'s strokes tap "
-                                   f"along {normal} only", at)
-    if normal not in tap.axes:
-        raise UnsupportedError(f"a rigid tap that does not move {normal}: {target.NAME}'s strokes tap along "
-                               f"{normal} only", at)
-    end = tap.axes[normal]
-    assert not isinstance(end, Expr)  # (refused above)
-    bottom = float(end) + (start if incremental else 0.0)
     stroke_in, stroke_out, *after = _strokes(ctx, tap, normal, start, bottom, state.spindle, at)
     del block.sections["RigidTap"]
     block.changed()

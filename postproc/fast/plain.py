@@ -25,18 +25,20 @@ from ..rs274.point_mix import point_mix
 
 _UPPER: Final = {c: c.upper() for c in "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"}
 _UPPER[":"] = "O"  # ':' is ISO's spelling of the program number address (as ``WordBlockSyntax`` reads it)
-_ARC_LETTERS: Final = frozenset("IJKR")
-_AXIS: Final = 1
-_N: Final = 2
-_F: Final = 3
-_G: Final = 4
-_ARC: Final = 5
-_KIND: Final = bytes(_AXIS if c in AXIS_LETTERS else _N if c == "N" else _F if c == "F" else _G if c == "G"
-                     else _ARC if c in _ARC_LETTERS else 0 for c in "ABCDEFGHIJKLMNOPQRSTUVWXYZ")
-"""What the lane does with each letter A-Z (by ``ord(letter) - 65``): one byte read instead of set tests."""
+LETTER_AXIS: Final = 1
+LETTER_N: Final = 2
+LETTER_F: Final = 3
+LETTER_G: Final = 4
+LETTER_ARC: Final = 5
+LETTER_KIND: Final = bytes(LETTER_AXIS if c in AXIS_LETTERS else LETTER_N if c == "N" else LETTER_F if c == "F"
+                           else LETTER_G if c == "G" else LETTER_ARC if c in "IJKR" else 0
+                           for c in "ABCDEFGHIJKLMNOPQRSTUVWXYZ")
+"""What a plain-block lane does with each letter A-Z (by ``ord(letter) - 65``): one byte read instead of set
+tests (both lanes: this one and ``plain_ngc.NgcPlainLane``)."""
+MOTION_MODES: Final = frozenset(("rapid", "linear", "cw", "ccw"))
+"""The motion modes a plain block may move in."""
 _MOTION_KEYS: Final = {"0": "0", "00": "0", "1": "1", "01": "1", "2": "2", "02": "2", "3": "3", "03": "3"}
 """The spellings of G0-G3 the lane reads (their ``g_key``); the table says what each means."""
-_MOTION_MODES: Final = frozenset(("rapid", "linear", "cw", "ccw"))
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
@@ -69,24 +71,24 @@ class PlainLane(BlockLane):
             if seen & bit:
                 break
             seen |= bit
-            kind = _KIND[index]
-            if kind == _AXIS and (upper or "." in num):  # canonical: an axis number has its point
+            kind = LETTER_KIND[index]
+            if kind == LETTER_AXIS and (upper or "." in num):  # canonical: an axis number has its point
                 # boxed once, shared by both dictionaries (compiled)
                 number: object = decimal_value(num)
                 values[up] = axes[up] = number  # type: ignore[assignment]
-            elif kind == _N and "." not in num:
+            elif kind == LETTER_N and "." not in num:
                 values["N"] = sequence.number if isinstance(sequence, Sequence) else int(num)
             elif cycle:
                 break  # a code, F or a cycle word under an active cycle: the general path
-            elif kind == _F:
+            elif kind == LETTER_F:
                 values["F"] = decimal_value(num)
-            elif kind == _G and mode is None:
+            elif kind == LETTER_G and mode is None:
                 key = _MOTION_KEYS.get(num)
                 entry = self.syntax.table(ctx).g.get(key) if key is not None else None
-                if entry is None or entry[1] != "motion" or entry[2] not in _MOTION_MODES:
+                if entry is None or entry[1] != "motion" or entry[2] not in MOTION_MODES:
                     break
                 mode = str(entry[2])
-            elif kind == _ARC and (upper or "." in num):
+            elif kind == LETTER_ARC and (upper or "." in num):
                 values[up] = decimal_value(num)
                 arc_words = True
             else:
@@ -103,23 +105,11 @@ class PlainLane(BlockLane):
                     values.clear()
                     return False  # the general path explains the error
             if mode is not None:
-                center: dict[str, float | Expr] | None = None
-                radius: float | Expr | None = None
-                if mode == "cw" or mode == "ccw":
-                    if "R" in values:
-                        if "I" in values or "J" in values or "K" in values:
-                            values.clear()
-                            return False  # both forms of an arc: the general path refuses it
-                        radius = values["R"]
-                    else:
-                        center = {CENTER_AXIS[k]: values[k] for k in "IJK" if k in values}
-                        if not center:
-                            values.clear()
-                            return False  # no centre: the general path refuses it
-                elif arc_words:
+                motion = plain_motion(values, axes, mode, arc_words)
+                if motion is None:
                     values.clear()
-                    return False  # I/J/K/R beside a straight move: the general path refuses it
-                block.sections["Motion"] = Motion(mode, axes, center, radius)
+                    return False
+                block.sections["Motion"] = motion
                 if axes:
                     _saw_pointed(ctx, axes, block.line)
             elif arc_words:
@@ -155,6 +145,28 @@ class PlainLatheLane(PlainLane):
         if x and u or z and w:
             return False  # the absolute and the incremental word of one axis: ``g_sections`` refuses it
         return super().read(block, ctx, words)
+
+
+def plain_motion(values: dict[str, float | Expr], axes: dict[str, float | Expr], mode: str,
+                 arc_words: bool) -> Motion | None:
+    """The ``Motion`` of a plain block in ``mode`` with its axis words (``axes``) and its other words
+    (``values``): a straight move, or an arc by its centre I/J/K or its radius R; None where the general path
+    refuses the words (both forms of an arc, an arc without a centre, I/J/K/R beside a straight move), so
+    that it reports the error. Both lanes (``PlainLane``, ``plain_ngc.NgcPlainLane``) build their moves here."""
+    center: dict[str, float | Expr] | None = None
+    radius: float | Expr | None = None
+    if mode == "cw" or mode == "ccw":
+        if "R" in values:
+            if "I" in values or "J" in values or "K" in values:
+                return None  # both forms of an arc
+            radius = values["R"]
+        else:
+            center = {CENTER_AXIS[k]: values[k] for k in "IJK" if k in values}
+            if not center:
+                return None  # no centre
+    elif arc_words:
+        return None  # I/J/K/R beside a straight move
+    return Motion(mode, axes, center, radius)
 
 
 def _saw_pointed(ctx: Context, axes: dict[str, float | Expr], line: int) -> None:

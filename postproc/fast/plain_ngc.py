@@ -22,21 +22,13 @@ from mypy_extensions import mypyc_attr
 
 from ..context import BlockLane, Context
 from ..expr import Expr
-from ..ir import Block, Feed, Motion
-from ..rs274.block_syntax import AXIS_LETTERS, CENTER_AXIS
+from ..ir import Block, Feed
 from ..rs274.codes import g_key
 from ..rs274.ngc_block_syntax import _STATE_KEY as NO_MOTION_KEY, NgcWordBlockSyntax
+from .plain import (LETTER_ARC, LETTER_AXIS, LETTER_F, LETTER_G, LETTER_KIND, LETTER_N, MOTION_MODES,
+                    plain_motion)
 
-_AXIS: Final = 1
-_N: Final = 2
-_F: Final = 3
-_G: Final = 4
-_ARC: Final = 5
 _UPPER: Final = {c: c.upper() for c in "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"}
-_KIND: Final = bytes(_AXIS if c in AXIS_LETTERS else _N if c == "N" else _F if c == "F" else _G if c == "G"
-                     else _ARC if c in "IJKR" else 0 for c in "ABCDEFGHIJKLMNOPQRSTUVWXYZ")
-"""What the lane does with each letter A-Z (by ``ord(letter) - 65``)."""
-_MOTION_MODES: Final = frozenset(("rapid", "linear", "cw", "ccw"))
 _FEED_MODES: Final = frozenset(("linear", "cw", "ccw"))
 _MOTION_GROUP: Final = "01"
 """The motion codes that need a feed rate in force (``NgcWordBlockSyntax._check_feed_mode_code``)."""
@@ -86,17 +78,17 @@ class NgcPlainLane(BlockLane):
             if seen & bit:
                 break
             seen |= bit
-            kind = _KIND[index]
-            if kind == _N:
+            kind = LETTER_KIND[index]
+            if kind == LETTER_N:
                 if "." in num or self.n_first and not (first and _starts_with_n(block.text or "")):
                     break  # a fractional N, or one the N-first rule looks at: the general path
                 values["N"] = int(num)
-            elif kind == _G and mode is None:
+            elif kind == LETTER_G and mode is None:
                 key = g_key(num)
                 if key in self.special or key in self.codes.refused_g:
                     break
                 entry = self.codes.g.get(key)
-                if entry is None or entry[1] != "motion" or entry[2] not in _MOTION_MODES:
+                if entry is None or entry[1] != "motion" or entry[2] not in MOTION_MODES:
                     break
                 group, what, arg = str(entry[0]), entry[1], entry[2]
                 own = self.own_codes
@@ -105,12 +97,12 @@ class NgcPlainLane(BlockLane):
                 mode = str(arg)
             elif up not in real:
                 break
-            elif kind == _AXIS:
+            elif kind == LETTER_AXIS:
                 number: object = float(num)  # boxed once, shared by both dictionaries (compiled)
                 values[up] = axes[up] = number  # type: ignore[assignment]
-            elif kind == _F:
+            elif kind == LETTER_F:
                 values["F"] = float(num)
-            elif kind == _ARC:
+            elif kind == LETTER_ARC:
                 values[up] = float(num)
                 arc_words = True
             else:
@@ -131,23 +123,11 @@ class NgcPlainLane(BlockLane):
                 if mode in self.own_motion:
                     values.clear()
                     return False  # the dialect reads the block further itself (``after_sections``)
-                center: dict[str, float | Expr] | None = None
-                radius: float | Expr | None = None
-                if mode == "cw" or mode == "ccw":
-                    if "R" in values:
-                        if "I" in values or "J" in values or "K" in values:
-                            values.clear()
-                            return False  # both forms of an arc: the general path refuses it
-                        radius = values["R"]
-                    else:
-                        center = {CENTER_AXIS[k]: values[k] for k in "IJK" if k in values}
-                        if not center:
-                            values.clear()
-                            return False  # no centre: the general path refuses it
-                elif arc_words:
+                motion = plain_motion(values, axes, mode, arc_words)
+                if motion is None:
                     values.clear()
-                    return False  # I/J/K/R beside a straight move: the general path refuses it
-                block.sections["Motion"] = Motion(mode, axes, center, radius)
+                    return False
+                block.sections["Motion"] = motion
             elif arc_words:
                 values.clear()
                 return False  # I/J/K/R with no motion: the general path refuses it

@@ -27,7 +27,7 @@ from __future__ import annotations
 
 from postproc.errors import UnsupportedError
 from postproc.expr import Binary, Expr, Func, Num, Unary, Var
-from postproc.rs274.expressions import MAX_DEPTH, ExprSyntaxError, shallow
+from postproc.rs274.expressions import MAX_DEPTH, ExprSyntaxError, shallow, skip_blanks
 
 class Unmodelled(ExprSyntaxError):
     """A construct ISG has and the IR does not model (an array element): the reader keeps its block
@@ -64,18 +64,10 @@ _INVERSE_BINARY = {op: (word, prec) for word, (op, prec) in BINARY.items()}
 _INVERSE_FUNCTIONS = {name: word for word, name in FUNCTIONS.items()}
 _COMPARE = 1
 
-_SPACE = frozenset(" \t")
 _DIGITS = frozenset("0123456789")
 _LETTERS = frozenset("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz")
 _NAME = frozenset("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_.")
 _HEX = frozenset("0123456789abcdefABCDEF")
-
-
-def skip(text: str, pos: int) -> int:
-    n = len(text)
-    while pos < n and text[pos] in _SPACE:
-        pos += 1
-    return pos
 
 
 def p_variable(number: int) -> Var:
@@ -103,11 +95,11 @@ class _Parser:
             raise ExprSyntaxError(f"expression nested deeper than {MAX_DEPTH} levels", pos)
 
     def expression(self, pos: int, min_prec: int = 0) -> tuple[int, Expr]:
-        start = skip(self.text, pos)
+        start = skip_blanks(self.text, pos)
         signed = self.text[start:start + 1] in ("+", "-")
         pos, left = self.operand(pos)
         while True:
-            pos = skip(self.text, pos)
+            pos = skip_blanks(self.text, pos)
             end, word = self.operator(pos)
             if word is None:
                 return pos, left
@@ -137,7 +129,7 @@ class _Parser:
 
     def operand(self, pos: int) -> tuple[int, Expr]:
         text = self.text
-        pos = skip(text, pos)
+        pos = skip_blanks(text, pos)
         if pos >= len(text):
             raise ExprSyntaxError("expression expected", pos)
         c = text[pos]
@@ -230,7 +222,7 @@ class _Parser:
         neutral = FUNCTIONS.get(word)
         if neutral is None:
             raise ExprSyntaxError(f"unknown function or variable {text[pos:end]!r}", pos)
-        bracket = skip(text, end)
+        bracket = skip_blanks(text, end)
         if bracket >= n or text[bracket] != "[":
             raise ExprSyntaxError(f"'[' expected after {word}", bracket)
         self.deeper(bracket)
@@ -241,7 +233,7 @@ class _Parser:
 
 
 def expect(text: str, pos: int, char: str) -> int:
-    pos = skip(text, pos)
+    pos = skip_blanks(text, pos)
     if pos >= len(text) or text[pos] != char:
         raise ExprSyntaxError(f"'{char}' expected", pos)
     return pos + 1

@@ -13,9 +13,9 @@ from dataclasses import dataclass, field
 
 from postproc.errors import Location, ParseError
 from postproc.expr import Expr, Var
-from postproc.rs274.expressions import ExprSyntaxError
+from postproc.rs274.expressions import ExprSyntaxError, skip_blanks
 
-from .expressions import parse_expr, parse_word_value, skip
+from .expressions import parse_expr, parse_word_value
 
 _DIGITS = frozenset("0123456789")
 _LETTERS = frozenset("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz")
@@ -141,7 +141,7 @@ def _error(file: str, line: int, pos: int, message: str) -> ParseError:
 
 def _lex(file: str, line: int, code: str, lexed: Lexed, grammar: Grammar) -> None:
     n = len(code)
-    pos = skip(code, 0)
+    pos = skip_blanks(code, 0)
     if pos < n and code[pos] == "/":
         end = pos + 1
         while end < n and code[end] in _DIGITS:
@@ -150,7 +150,7 @@ def _lex(file: str, line: int, code: str, lexed: Lexed, grammar: Grammar) -> Non
         if not 1 <= level <= SKIP_LEVELS:
             raise _error(file, line, pos, f"block skip level /{level} (levels are /1 to /{SKIP_LEVELS})")
         lexed.skip = level
-        pos = skip(code, end)
+        pos = skip_blanks(code, end)
     if pos < n and code[pos] == "%":
         _header(file, line, code, pos, lexed)
         return
@@ -162,7 +162,7 @@ def _lex(file: str, line: int, code: str, lexed: Lexed, grammar: Grammar) -> Non
         if not name or any(ch not in _NAME or ch == "." for ch in name):
             raise _error(file, line, pos, "a jump label is [NAME] with letters, digits and _")
         lexed.label_name = name
-        pos = skip(code, end + 1)
+        pos = skip_blanks(code, end + 1)
     if pos < n and code[pos] == "$":
         lexed.statement = pos
         return
@@ -200,11 +200,11 @@ def _lex(file: str, line: int, code: str, lexed: Lexed, grammar: Grammar) -> Non
 
 def _assigned(file: str, line: int, code: str, pos: int, lexed: Lexed) -> int:
     """``G159=3``: the code word just read takes ``=<whole number>`` (blanks allowed around ``=``)."""
-    eq = skip(code, pos)
+    eq = skip_blanks(code, pos)
     letter, number = lexed.words[-1]
     if code[eq:eq + 1] != "=":
         raise _error(file, line, pos - len(number) - 1, f"{letter}{number} needs a value: {letter}{number}=<n>")
-    start = skip(code, eq + 1)
+    start = skip_blanks(code, eq + 1)
     end = start
     while end < len(code) and code[end] in _DIGITS:
         end += 1
@@ -233,7 +233,7 @@ def _header(file: str, line: int, code: str, pos: int, lexed: Lexed) -> None:
 def _number(file: str, line: int, code: str, pos: int, lexed: Lexed) -> int:
     """``N10``, ``N100:`` (a jump label), ``N[10+P30]``."""
     n = len(code)
-    start = skip(code, pos + 1)
+    start = skip_blanks(code, pos + 1)
     if start < n and code[start] == "[":
         end, value = parse_word_value(code, start)
         lexed.number = code[start:end]
@@ -247,13 +247,13 @@ def _number(file: str, line: int, code: str, pos: int, lexed: Lexed) -> int:
         if end < n and code[end] == ".":
             raise _error(file, line, pos, f"block number N{code[start:end]}. must be a whole number")
         lexed.number = code[start:end]
-    after = skip(code, end)
+    after = skip_blanks(code, end)
     if after < n and code[after] == ":":
         if lexed.number_value is not None:
             raise _error(file, line, pos, "a jump label N<number>: takes a whole number here")
         lexed.label = True
         end = after + 1
-    return skip(code, end)
+    return skip_blanks(code, end)
 
 
 def _is_call(code: str, pos: int) -> bool:
@@ -261,7 +261,7 @@ def _is_call(code: str, pos: int) -> bool:
     end = pos + 2 if code[pos + 1:pos + 2] in ("L", "l") else pos + 1
     if code[end:end + 1] not in (" ", "\t"):
         return False
-    first = code[skip(code, end):skip(code, end) + 1]
+    first = code[skip_blanks(code, end):skip_blanks(code, end) + 1]
     return first != "" and first not in _DIGITS and first not in "+-.[Pp"
 
 
@@ -269,7 +269,7 @@ def _call(file: str, line: int, code: str, pos: int, lexed: Lexed) -> int:
     if lexed.call is not None:
         raise _error(file, line, pos, "one subroutine call per block")
     local = code[pos + 1:pos + 2] in ("L", "l")
-    start = skip(code, pos + (2 if local else 1))
+    start = skip_blanks(code, pos + (2 if local else 1))
     end = start
     n = len(code)
     while end < n and code[end] in _FILE_NAME:
@@ -302,7 +302,7 @@ def _word(file: str, line: int, code: str, pos: int, lexed: Lexed, address: str 
     if address is None and (up == "P" and not plain and pos + 1 < n and code[pos + 1] in _DIGITS
                             or up == "V" and code[pos + 1:pos + 2] == "."):
         end, target = parse_word_value(code, pos)
-        eq = skip(code, end)
+        eq = skip_blanks(code, end)
         if eq >= n or code[eq] != "=" or code[eq + 1:eq + 2] == "=":
             raise _error(file, line, pos, f"'{code[pos:end]}' alone: a parameter is set with "
                                           f"{code[pos:end]}=<value> or used as an address's value (X{code[pos:end]})")
@@ -310,9 +310,9 @@ def _word(file: str, line: int, code: str, pos: int, lexed: Lexed, address: str 
         end, value = parse_expr(code, eq + 1)
         lexed.assigns.append((target, value))
         return end
-    start = skip(code, pos + 1)
+    start = skip_blanks(code, pos + 1)
     if start < n and code[start] == "=":
-        start = skip(code, start + 1)  # X=10 is X10
+        start = skip_blanks(code, start + 1)  # X=10 is X10
     end = start
     if end < n and code[end] in "+-":
         end += 1

@@ -19,9 +19,9 @@ from postproc.control import (
 from postproc.errors import Location, ParseError, UnsupportedError
 from postproc.expr import Binary, Expr, Func, Num, Var
 from postproc.ir import Section
-from postproc.rs274.expressions import ExprSyntaxError
+from postproc.rs274.expressions import ExprSyntaxError, skip_blanks
 
-from .expressions import expect, parse_expr, skip, spell_expr
+from .expressions import expect, parse_expr, spell_expr
 
 CASE_TOLERANCE = 0.001
 """``$CASE`` matches when the values differ by less than this (DIALECTS.md 1.3)."""
@@ -103,10 +103,10 @@ def _statement(code: str, pos: int, nesting: Nesting, line: int) -> Section:
         end += 1
     word = code[pos + 1:end].upper()
     col = pos + 1
-    rest = skip(code, end)
+    rest = skip_blanks(code, end)
 
     def done(at: int, section: Section) -> Section:
-        at = skip(code, at)
+        at = skip_blanks(code, at)
         if at < n:
             raise ParseError(f"unexpected {code[at:].strip()[:20]!r} after ${word}", Location(file, line, at + 1))
         return section
@@ -116,7 +116,7 @@ def _statement(code: str, pos: int, nesting: Nesting, line: int) -> Section:
 
     if word == "IF":
         at, cond = condition()
-        goto = skip(code, at)
+        goto = skip_blanks(code, at)
         if code[goto:goto + 5].upper() == "$GOTO":
             target_at, target = _goto_target(code, goto + 5, file, line)
             if isinstance(target, str):
@@ -166,7 +166,7 @@ def _statement(code: str, pos: int, nesting: Nesting, line: int) -> Section:
 
 def _goto_target(code: str, pos: int, file: str, line: int) -> tuple[int, Expr | str]:
     """``N<expr>`` (a number label) or ``[NAME]`` (a named one)."""
-    at = skip(code, pos)
+    at = skip_blanks(code, pos)
     if code[at:at + 1] == "[":
         end = code.find("]", at)
         name = code[at + 1:end].strip() if end > 0 else ""

@@ -141,7 +141,9 @@ _LETTERS = frozenset("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz")
 _NAME_CHARS = frozenset("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_")
 
 
-def _skip(text: str, pos: int) -> int:
+def skip_blanks(text: str, pos: int) -> int:
+    """The first position from ``pos`` that is not a blank (space or tab): the expressions, o-words and
+    Macro B statements of the family read past blanks so."""
     n = len(text)
     while pos < n and text[pos] in _SPACE:
         pos += 1
@@ -183,7 +185,7 @@ class _Parser:
         """Precedence climbing: operands bind to operators at or above ``min_prec``."""
         pos, left = self.operand(pos)
         while True:
-            pos = _skip(self.text, pos)
+            pos = skip_blanks(self.text, pos)
             op_end, word = self.operator(pos)
             if word is None:
                 return pos, left
@@ -217,7 +219,7 @@ class _Parser:
 
     def operand(self, pos: int) -> tuple[int, Expr]:
         text = self.text
-        pos = _skip(text, pos)
+        pos = skip_blanks(text, pos)
         if pos >= len(text):
             raise self.error("expression expected", pos)
         c = text[pos]
@@ -232,7 +234,7 @@ class _Parser:
             self.close_bracket()
             return pos, inner
         if c in "+-":
-            after = _skip(text, pos + 1)
+            after = skip_blanks(text, pos + 1)
             if after < len(text) and text[after] in _NUMBER_START:
                 return self.number(after, -1.0 if c == "-" else 1.0)
             self.deeper(pos)
@@ -244,7 +246,7 @@ class _Parser:
         raise self.error(f"unexpected {c!r} in expression", pos)
 
     def expect(self, pos: int, char: str, message: str) -> int:
-        pos = _skip(self.text, pos)
+        pos = skip_blanks(self.text, pos)
         if pos >= len(self.text) or self.text[pos] != char:
             raise self.error(message, pos)
         return pos + 1
@@ -266,7 +268,7 @@ class _Parser:
     def variable(self, pos: int) -> tuple[int, Expr]:
         text = self.text
         start = pos
-        pos = _skip(text, pos + 1)
+        pos = skip_blanks(text, pos + 1)
         if pos >= len(text):
             raise self.error("variable number expected after '#'", pos)
         c = text[pos]
@@ -303,7 +305,7 @@ class _Parser:
         while end < len(text) and text[end] in _LETTERS:
             end += 1
         word = text[pos:end].upper()
-        bracket = _skip(text, end)
+        bracket = skip_blanks(text, end)
         if bracket >= len(text) or text[bracket] != "[":
             if word in sp.functions or word == "ATAN" or word in sp.binary_functions:
                 raise self.error(f"'[' expected after {word}", bracket)
@@ -337,7 +339,7 @@ class _Parser:
         sp, text = self.sp, self.text
         self.open_bracket(bracket)
         pos, y = self.expression(bracket + 1)
-        pos = _skip(text, pos)
+        pos = skip_blanks(text, pos)
         if pos < len(text) and text[pos] == "," and sp.atan2 and sp.binary_functions:
             pos, x = self.expression(pos + 1)  # Fanuc 30i: ATAN[y,x]
             pos = self.expect(pos, "]", "']' expected")
@@ -345,9 +347,9 @@ class _Parser:
             return pos, Func(sp.atan2, [y, x])
         pos = self.expect(pos, "]", "']' expected")
         self.close_bracket()
-        slash = _skip(text, pos)
+        slash = skip_blanks(text, pos)
         if slash < len(text) and text[slash] == "/" and sp.atan2:
-            br = _skip(text, slash + 1)
+            br = skip_blanks(text, slash + 1)
             if br >= len(text) or text[br] != "[":
                 raise self.error("'[' expected after ATAN[..]/", br)
             self.open_bracket(br)
@@ -371,7 +373,7 @@ def parse_word_value(text: str, pos: int, spelling: ExprSpelling) -> tuple[int, 
     """Read what follows an address: a number, ``#n``, ``-#n``, ``#<name>``, ``[expr]``, ``-[expr]``
     (and, in LinuxCNC, a function such as ``SIN[30]``). No binary operator at the top level."""
     p = _Parser(text, spelling, in_word=True)
-    start = _skip(text, pos)
+    start = skip_blanks(text, pos)
     if start < len(text) and text[start] in _LETTERS and not spelling.functions_as_word_values:
         raise ExprSyntaxError("a value, '#' or '[' expected", start)
     return shallow(pos, p.operand(pos))
@@ -379,7 +381,7 @@ def parse_word_value(text: str, pos: int, spelling: ExprSpelling) -> tuple[int, 
 
 def parse_condition(text: str, pos: int, spelling: ExprSpelling) -> tuple[int, Expr]:
     """Read a bracketed condition ``[expr]`` (``IF [..]``, ``WHILE [..]``); returns the inner tree."""
-    start = _skip(text, pos)
+    start = skip_blanks(text, pos)
     if start >= len(text) or text[start] != "[":
         raise ExprSyntaxError("'[' expected", start)
     p = _Parser(text, spelling, in_word=False)

@@ -15,20 +15,14 @@ from ..errors import UnsupportedError
 from ..expr import Expr, Num, Var
 from ..ir import Section
 from .expressions import (
-    FANUC_SPELLING, ExprSyntaxError, parse_condition, parse_expr, parse_word_value, spell_condition,
-    spell_expr, spell_word_value,
+    FANUC_SPELLING, ExprSyntaxError, parse_condition, parse_expr, parse_word_value, skip_blanks,
+    spell_condition, spell_expr, spell_word_value,
 )
 
 LOOP_IDS = ("1", "2", "3")
 """Fanuc's ``DO``/``END`` identifiers."""
 
 _SP = FANUC_SPELLING
-
-
-def _skip(text: str, pos: int) -> int:
-    while pos < len(text) and text[pos] in " \t":
-        pos += 1
-    return pos
 
 
 def _keyword(text: str, pos: int, word: str) -> int | None:
@@ -38,14 +32,14 @@ def _keyword(text: str, pos: int, word: str) -> int | None:
 
 
 def _end(text: str, pos: int) -> None:
-    pos = _skip(text, pos)
+    pos = skip_blanks(text, pos)
     if pos < len(text):
         raise ExprSyntaxError(f"unexpected {text[pos]!r} after the statement", pos)
 
 
 def parse_statement_fanuc(text: str, pos: int = 0) -> Section:
     """The statement at ``pos``, which must run to the end of ``text`` (comments already removed)."""
-    pos = _skip(text, pos)
+    pos = skip_blanks(text, pos)
     if pos < len(text) and text[pos] == "#":
         end, assign = _assignment(text, pos)
         _end(text, end)
@@ -65,7 +59,7 @@ def parse_statement_fanuc(text: str, pos: int = 0) -> Section:
         _end(text, end)
         return EndWhile(label)
     end, cond = parse_condition(text, after, _SP)
-    then = _skip(text, end)
+    then = skip_blanks(text, end)
     if word == "WHILE":
         after = _keyword(text, then, "DO")
         if after is None:
@@ -81,7 +75,7 @@ def parse_statement_fanuc(text: str, pos: int = 0) -> Section:
     after = _keyword(text, then, "THEN")
     if after is None:
         raise ExprSyntaxError("GOTO or THEN expected after IF [..]", then)
-    end, assign = _assignment(text, _skip(text, after))
+    end, assign = _assignment(text, skip_blanks(text, after))
     _end(text, end)
     return IfThen(cond, assign)
 
@@ -92,7 +86,7 @@ def _assignment(text: str, pos: int) -> tuple[int, Assign]:
     end, var = parse_word_value(text, pos, _SP)
     if not isinstance(var, Var):
         raise ExprSyntaxError("a variable expected before '='", pos)
-    eq = _skip(text, end)
+    eq = skip_blanks(text, end)
     if eq >= len(text) or text[eq] != "=":
         raise ExprSyntaxError("'=' expected", eq)
     end, value = parse_expr(text, eq + 1, _SP)
@@ -100,7 +94,7 @@ def _assignment(text: str, pos: int) -> tuple[int, Assign]:
 
 
 def _target(text: str, pos: int) -> tuple[int, Expr]:
-    start = _skip(text, pos)
+    start = skip_blanks(text, pos)
     if start < len(text) and text[start] in "+-":
         raise ExprSyntaxError("a sequence number, '#' or '[' expected after GOTO", start)
     try:
@@ -112,7 +106,7 @@ def _target(text: str, pos: int) -> tuple[int, Expr]:
 
 
 def _loop_id(text: str, pos: int, word: str) -> tuple[int, str]:
-    start = _skip(text, pos)
+    start = skip_blanks(text, pos)
     end = start
     while end < len(text) and text[end].isdigit():
         end += 1

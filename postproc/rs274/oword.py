@@ -59,7 +59,8 @@ from ..errors import UnsupportedError
 from ..expr import Expr, Num, Var
 from ..ir import ProgramStart, Section
 from .expressions import (
-    LINUXCNC_SPELLING, ExprSyntaxError, parse_condition, parse_word_value, spell_condition, spell_word_value,
+    LINUXCNC_SPELLING, ExprSyntaxError, parse_condition, parse_word_value, skip_blanks, spell_condition,
+    spell_word_value,
 )
 
 MAX_CALL_ARGS = 30
@@ -86,12 +87,6 @@ _OPENERS = frozenset(["if", "while", "do", "repeat"])
 _VALUE_KEYWORDS = {"endsub": SubEnd, "return": Return}
 
 
-def _skip(text: str, pos: int) -> int:
-    while pos < len(text) and text[pos] in _BLANK:
-        pos += 1
-    return pos
-
-
 def _run(text: str, pos: int, chars: frozenset[str]) -> tuple[list[int], str]:
     """Characters of ``chars`` from ``pos``, blanks between them ignored (as rs274 deletes blanks);
     returns the offset after each one, and the characters."""
@@ -99,7 +94,7 @@ def _run(text: str, pos: int, chars: frozenset[str]) -> tuple[list[int], str]:
     ends: list[int] = []
     p = pos
     while True:
-        p = _skip(text, p)
+        p = skip_blanks(text, p)
         if p >= len(text) or text[p] not in chars:
             return ends, "".join(out)
         out.append(text[p])
@@ -130,12 +125,12 @@ def parse_oword_line(text: str, pos: int = 0, do_labels: Container[str] = frozen
 
 def _read_line(text: str, pos: int, do_labels: Container[str]) -> tuple[Section, str, int]:
     """The statement, its keyword and the offset of its label."""
-    start = _skip(text, pos)
+    start = skip_blanks(text, pos)
     if start >= len(text) or text[start] not in "oO":
         raise ExprSyntaxError("o-word expected", start)
-    label_pos = _skip(text, start + 1)
+    label_pos = skip_blanks(text, start + 1)
     after_label, label = _label(text, label_pos)
-    kw_pos = _skip(text, after_label)
+    kw_pos = skip_blanks(text, after_label)
     end, keyword = _keyword(text, kw_pos)
     if end == kw_pos:
         if keyword:
@@ -158,7 +153,7 @@ def _read_line(text: str, pos: int, do_labels: Container[str]) -> tuple[Section,
         node = SubStart(label)
     elif keyword in _VALUE_KEYWORDS:
         value = None
-        if _skip(text, end) < len(text) and text[_skip(text, end)] == "[":
+        if skip_blanks(text, end) < len(text) and text[skip_blanks(text, end)] == "[":
             end, value = _bracketed(text, end, keyword)
         node = SubEnd(label, value) if keyword == "endsub" else Return(label, value)
     elif keyword in _NO_ARGS:
@@ -197,7 +192,7 @@ def _label(text: str, pos: int) -> tuple[int, str | Expr]:
     if not digits:
         raise ExprSyntaxError("o-word number or <name> expected", pos)
     end = ends[-1]
-    dot = _skip(text, end)
+    dot = skip_blanks(text, end)
     if dot < len(text) and text[dot] == ".":
         ends, fraction = _run(text, dot + 1, _DIGITS)
         if fraction.strip("0"):
@@ -207,7 +202,7 @@ def _label(text: str, pos: int) -> tuple[int, str | Expr]:
 
 
 def _bracketed(text: str, pos: int, keyword: str) -> tuple[int, Expr]:
-    start = _skip(text, pos)
+    start = skip_blanks(text, pos)
     if start >= len(text) or text[start] != "[":
         raise ExprSyntaxError(f"'[' expected after {keyword}", start)
     return parse_condition(text, start, _SP)
@@ -216,7 +211,7 @@ def _bracketed(text: str, pos: int, keyword: str) -> tuple[int, Expr]:
 def _call_args(text: str, pos: int) -> tuple[int, dict[int, Expr]]:
     args: dict[int, Expr] = {}
     while True:
-        pos = _skip(text, pos)
+        pos = skip_blanks(text, pos)
         if pos < len(text) and text[pos] == "(":
             pos = _comment(text, pos)
             continue
@@ -241,7 +236,7 @@ def _comment(text: str, pos: int) -> int:
 def _at_end(text: str, pos: int) -> bool:
     """Only blanks and comments from ``pos`` on."""
     while True:
-        pos = _skip(text, pos)
+        pos = skip_blanks(text, pos)
         if pos >= len(text) or text[pos] == ";":
             return True
         if text[pos] != "(":
@@ -251,7 +246,7 @@ def _at_end(text: str, pos: int) -> bool:
 
 def _end(text: str, pos: int) -> None:
     while True:
-        pos = _skip(text, pos)
+        pos = skip_blanks(text, pos)
         if pos >= len(text) or text[pos] == ";":
             return
         if text[pos] != "(":
@@ -321,7 +316,7 @@ def parse_assignments(text: str, pos: int = 0) -> tuple[int, Assign]:
     """The parameter assignments starting at the ``#`` at ``pos`` (``#1=5 #<x>=[#1+1]``, as many as
     follow one another); returns the offset just after the last right-hand side, and the ``Assign``."""
     items: list[tuple[Var, Expr]] = []
-    pos = _skip(text, pos)
+    pos = skip_blanks(text, pos)
     while True:
         if pos >= len(text) or text[pos] != "#":
             raise ExprSyntaxError("'#' expected", pos)
@@ -329,12 +324,12 @@ def parse_assignments(text: str, pos: int = 0) -> tuple[int, Assign]:
         if not isinstance(var, Var):  # parse_word_value at '#' reads a variable; this narrows the type
             raise ExprSyntaxError("a parameter expected before '='", pos)
         _check_target(var, pos)
-        eq = _skip(text, end)
+        eq = skip_blanks(text, end)
         if eq >= len(text) or text[eq] != "=":
             raise ExprSyntaxError("'=' expected", eq)
         end, value = parse_word_value(text, eq + 1, _SP)
         items.append((var, value))
-        pos = _skip(text, end)
+        pos = skip_blanks(text, end)
         if pos < len(text) and text[pos] in "+-*/":
             raise ExprSyntaxError("LinuxCNC reads one value after '=': bracket an expression, #1=[#2+1]", pos)
         if pos >= len(text) or text[pos] != "#":
