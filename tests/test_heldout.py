@@ -39,11 +39,11 @@ KNOWN_FAILURES: dict[tuple[str, str], str] = {
         "(G42.1 D0.3 L2 on line 31): 'G70 with cutter compensation on is not modelled' (LinuxCNC 2.9.0 and "
         "2.9.3+ differ there), so the source cannot be checked"),
     ("linuxcnc/lathe_g7x_quadrants.ngc", ""): (
-        "LinuxCNC's G70/G71/G72 demo in four quadrants: refused at line 16, its first G71, whose profile (o100) "
-        "ends at X-1, short of the cycle's X-5 ('LinuxCNC versions cut it differently (before and after "
-        "2.9.3)'), and at lines 30-32 and 45, whose profiles (o101-o103) compute their Z from a global "
-        "parameter (Z[2+#<_distance>]): 'a computed word in a G70-G72 profile is not supported' (the profile "
-        "is kept as written at its definition; LinuxCNC evaluates it when the cycle runs)"),
+        "LinuxCNC's G70/G71/G72 demo in four quadrants: refused at lines 16, 31, 45 and 61, its G71s, whose "
+        "profiles end short of the cycle's X (o100 at X-1 for the cycle's X-5): 'LinuxCNC versions cut it "
+        "differently (before and after 2.9.3)', so what the source cuts depends on the version. (Its profiles' "
+        "computed words, Z[2+#<_distance>], were refused too until issue 26's progs session: now evaluated where "
+        "the cycle runs, as rs274 does)"),
 }
 """(program, target or '' for the source check) -> the defect, as found by the held-out set."""
 _SOURCE_REFUSED = frozenset(program for program, target in KNOWN_FAILURES if target == "")
