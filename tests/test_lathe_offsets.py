@@ -181,6 +181,27 @@ def test_towards_linuxcnc_the_register_goes_to_the_move_that_applies_it() -> Non
     assert "G43 H02 G0 X50. Z5." in lines and "G43 H03 G0 Z10. X40." in lines and "G49 G0 X70. Z10." in lines
 
 
+TOOL_LINE = "O0001\nG21 G18 G99\nG00 T0102\nM03 S1000\nG00 X50. Z5.\nG01 X40. F0.2\nM30\n"
+"""A Haas/Fanuc lathe's usual tool line ``G00 T0102`` at the program start (issue 26, Haas lathe programs
+seen in public repositories): a motion code without an axis moves nothing, so the offset waits for the X50
+Z5 traverse, which names both axes."""
+
+
+def test_a_tool_line_with_a_motion_code_and_no_axis_moves_nothing() -> None:
+    """Offset 2: X +4 (diameter), Z -1.5; the first move ends at 50 + 4, 5 - 1.5 (hand-derived): the same as
+    with ``T0102`` alone, and ``G00 T0102`` itself makes no move."""
+    setup = _lathe({2: (4.0, -1.5)})
+    assert _moves(TOOL_LINE, "fanuc", setup) == [(50, 5, 54, 3.5), (40, 5, 44, 3.5)]
+    assert _moves(TOOL_LINE, "fanuc", setup) == _moves(TOOL_LINE.replace("G00 T0102", "T0102"), "fanuc", setup)
+
+
+def test_towards_linuxcnc_a_tool_line_with_a_motion_code_gives_the_register_to_the_next_move() -> None:
+    """Was refused ("the programmed X and Z is not known where it applies"): the empty ``G00`` was taken
+    for the move that applies the offset, at a point not known at the program start."""
+    lines = _verified(TOOL_LINE, "linuxcnc", _lathe({2: (4.0, -1.5)}))
+    assert "G43 H02 G0 X50. Z5." in lines
+
+
 def _fanuc_t(rng: random.Random) -> str:
     lines = ["O0001", "G21 G18 G98", "G0 X100. Z50."]
     for _ in range(rng.randint(5, 12)):

@@ -175,6 +175,35 @@ def _closed_for_reading(case: Case) -> bool:
     return True
 
 
+PARAMETRIC = """G18 G8 G21 G90
+F100
+#<_d>=0
+#31=1
+O100 SUB
+G1 X5 Z[0+#<_d>]
+G1 Z[-10+#<_d>]
+G2 X[5+#31] Z[-11+#<_d>] R1
+G1 X12
+O100 ENDSUB
+#<_d>=3
+G0 X12 Z5
+G71 Q100 X12 Z5 D0 I1 R0.5
+G70 Q100 X12 Z5
+M2
+"""
+"""A profile whose words read global parameters (as LinuxCNC's nc_files/lathe_g7x_quadrants.ngc, issue 26's
+held-out set): ``#<_d>`` is 0 where the subprogram is defined and 3 where the cycles run."""
+
+
+@needs_rs274
+def test_a_profile_with_computed_words_takes_the_parameters_where_the_cycle_runs() -> None:
+    """rs274 cuts the profile at Z 3 down to Z -8 (its values at the cycles: -10 + 3 and -11 + 3), not at 0 to
+    -11; the reading cuts the same moves."""
+    ours, theirs = simulated(PARAMETRIC), rs274_moves(PARAMETRIC)
+    assert min(float(m["z"]) for m in theirs) == pytest.approx(-8.0)
+    assert difference(ours, theirs) is None
+
+
 @needs_rs274
 def test_demo_without_its_compensation_matches_rs274() -> None:
     """LinuxCNC's own nc_files/lathe_g70_71_demo.ngc (G71.1, G71.2, G70 over a profile with arcs and a fillet)
@@ -235,8 +264,8 @@ PROFILE = "O100 SUB\nG1 X1 Z0\nG1 X3 Z-4\nG1 X5\nO100 ENDSUB\n"
     ("G18 G8 F100\n" + PROFILE + "G0 X6 Z1\nG70 Q100 X6 Z1 P1.5\nM2\n", "whole number"),
     ("G18 G8 F100\nO100 SUB\nG1 X1 Z0 F50\nG1 X5 Z-4\nO100 ENDSUB\nG0 X6 Z1\nG71 Q100 X6 Z1\nM2\n",
      "ignores it there"),
-    ("G18 G8 F100\nO100 SUB\nG1 X1 Z0\nG1 X[2+3] Z-4\nO100 ENDSUB\nG0 X6 Z1\nG71 Q100 X6 Z1\nM2\n",
-     "computed word"),
+    ("G18 G8 F100\nO100 SUB\nG1 X1 Z0\nG1 X[2+#1] Z-4\nO100 ENDSUB\nG0 X6 Z1\nG71 Q100 X6 Z1\nM2\n",
+     "computed word in a G70-G72 profile reading a local parameter"),
     ("G18 G8 F100\nO100 SUB\nG1 X1 Z0\nG1 X3 Z-4\nO100 ENDSUB\nG0 X6 Z1\nG71 Q100 X6 Z1\nM2\n",
      "short of the cycle's X"),
     ("G18 G8 F100\nO100 SUB\nG1 X1 Z0\nG1 X3 Z-4 A0.2 C0.2\nG1 X6\nO100 ENDSUB\nG0 X6 Z1\nG71 Q100 X6 Z1\nM2\n",

@@ -15,6 +15,11 @@ from ..expr import Arithmetic, EvalError, Vacancy, Value, VarKey
 
 MACHINE_ONLY = "is known only to the machine: the program cannot be simulated or flattened"
 
+RUN_VARIABLES_KEY = "interp.variables"
+"""``ctx.run_data`` key: the running program's ``Variables``, as they stand at the block a later step reads (the
+interpreter's blocks stream through the steps one by one). A step that runs words kept as written (LinuxCNC's
+G70-G72 reading their profile subprogram when the cycle runs) evaluates them there."""
+
 SystemRanges = tuple[tuple[int, int, str], ...]
 """A family's system variables by range ``(first, last, what a message calls them)``; the first match wins."""
 

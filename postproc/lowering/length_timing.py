@@ -55,6 +55,8 @@ MM_PER_INCH: Final = 25.4
 _WATCHED: Final = frozenset(("ToolLengthOffset", "Motion", "CompoundMotion", "CycleCall", "DistanceMode", "Units",
                              "WorkOffset", "CoordinateSet", "DataSetting", "CutterCompensation", "RigidTap"))
 _PLAIN: Final = frozenset(("rapid", "linear", "cw", "ccw"))
+_STRAIGHT: Final = frozenset(("rapid", "linear"))
+"""The modes whose block moves nothing without an axis word (an arc without one is a full circle)."""
 _RETURNS: Final = frozenset(("home", "home2"))
 """Reference returns (G28, G30): a move through an intermediate point in work coordinates."""
 _STATE: Final = _WATCHED - {"Motion"} | {"MachineCoordinates"}
@@ -227,7 +229,7 @@ def _complete(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
         setting = sections.get("DataSetting")
         if isinstance(setting, DataSetting):
             table.write(setting, MM_PER_INCH if inch else 1.0)
-        moves = "Motion" in sections or "CompoundMotion" in sections or "RigidTap" in sections
+        moves = _moves(sections)
         offset = sections.get("ToolLengthOffset")
         if isinstance(offset, ToolLengthOffset) and pending is not None and _key(offset) == _key(pending[0]):
             del sections["ToolLengthOffset"]  # it restates the waiting change (``T0101`` twice): that one still waits
@@ -299,6 +301,19 @@ def _complete(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
             yield _incremental_again(block)
     if pending is not None:
         yield from _release(held, pending[0])
+
+
+def _moves(sections: dict[str, Section]) -> bool:
+    """The block moves an axis: a cycle, a rigid tap, or a motion naming an axis. A motion code alone
+    (``G00 T101``, a lathe program's usual tool line) only sets the modal motion and moves nothing [K: a block
+    moves only the axes it names; ``postproc.simulate.simulator`` makes no move of it either], so a change in
+    it still waits for the next move."""
+    if "CompoundMotion" in sections or "RigidTap" in sections:
+        return True
+    motion = sections.get("Motion")
+    if not isinstance(motion, Motion):
+        return False
+    return bool(motion.axes) or motion.mode not in _STRAIGHT
 
 
 def _returns_through(block: Block, absolute: bool, axes: tuple[str, ...]) -> bool:

@@ -367,6 +367,10 @@ class Simulator(Moves):
             else:
                 self.line_move("rapid", ref, line, emit)
             return
+        if not m.axes and mode in ("rapid", "linear") and (self.cutter is None or self.cutter.side is None):
+            return  # a motion code alone (``G00 T0101``) sets the mode and moves nothing, so a tool offset
+            # changed in its block applies at the next move, as after a T code alone [K: a block moves only
+            # the axes it names]; under cutter compensation the block still goes to the compensation's queue
         if self.feed is None and needs_feed(m):
             raise ProgramError(NO_FEED, self._at(block), needs="F")
         machine = "MachineCoordinates" in block.sections

@@ -29,7 +29,7 @@ from ..syntax import Syntax
 from .kept_lines import Kept, KeptLines
 from ..interp.spelling import spell_integer, spell_number
 from ..interp.rules import STORED_PROGRAMS, SubprogramRules
-from ..interp.variables import Variables, VariablesFactory
+from ..interp.variables import RUN_VARIABLES_KEY, Variables, VariablesFactory
 
 if TYPE_CHECKING:
     from ..interp.host import Reporter
@@ -328,6 +328,7 @@ class ProgramSyntax(Syntax):
         arguments: dict[int, float] | None = ctx.run_data.get(ARGUMENTS_KEY)
         for key, value in (arguments or {}).items():
             variables.write(key, value)  # --arg: the main program run as a macro called with them
+        ctx.run_data[RUN_VARIABLES_KEY] = variables  # a later step evaluates words kept as written there
         interpreter = Interpreter(store, self, variables, ctx.setup.limits, report or ctx.diagnostics.error,
                                   annotate=True, rules=self.SUBPROGRAM_RULES, counts=ctx)
         interpreter.called = arguments is not None

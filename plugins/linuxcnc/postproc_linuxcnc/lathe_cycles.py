@@ -14,8 +14,9 @@ and R (the retract) are radial [V: rs274 2.9.0~pre1, a G7 program with X and U d
 
 Refused where read, rs274's own refusals (``ProgramError``): no Q ("G7x.x requires a Q word"), a plane other
 than ZX, I not above 0, G71/G72 under cutter compensation, a profile arc given by neither I/K nor R or by
-both, a profile not monotonic. Not modelled, so refused (``UnsupportedError``): a profile with a computed word
-or with any word but those (a feed or speed is ignored there: said rather than dropped), a subprogram not
+both, a profile not monotonic. A profile's computed words are evaluated when the cycle runs, with the
+parameters' values then, as LinuxCNC does (``_evaluated``). Not modelled, so refused (``UnsupportedError``): a
+profile word computed from a local parameter (or a computed G code), a profile with any word but those (a feed or speed is ignored there: said rather than dropped), a subprogram not
 defined before the cycle, the cycle in incremental mode (G91), a P of G70 that is no whole number from 1,
 G70 under cutter compensation (``read_g7x``), and a roughing profile not closed back to the cycle's X (G71) or
 Z (G72): LinuxCNC 2.9.0~pre1 closes it after the offset, later versions before it (``postproc.rs274.ngc_g7x``,
@@ -24,13 +25,16 @@ Z (G72): LinuxCNC 2.9.0~pre1 closes it after the offset, later versions before i
 
 from __future__ import annotations
 
-from typing import Any, Final
+from typing import Any, Callable, Final
 
 from postproc.context import Context
 from postproc.control import SubEnd, SubStart
 from postproc.cycles.turning.profile import TurnMove
-from postproc.errors import Location, ProgramError, UnsupportedError
-from postproc.expr import Expr
+from postproc.errors import Location, PostprocError, ProgramError, UnsupportedError
+from postproc.evaluation import evaluate_number
+from postproc.expr import Binary, Expr, Func, Num, Unary, Var
+from postproc.interp.run_state import is_number
+from postproc.interp.variables import RUN_VARIABLES_KEY
 from postproc.ir import Block, Motion, NativeCode
 from postproc.rs274.arc_ends import RS274NGC_ARC_END
 from postproc.rs274.codes import g_key
@@ -236,6 +240,49 @@ def _check_closed(pieces: list[Piece], start: complex, code: str, name: str, unm
                          "versions cut it differently (before and after 2.9.3); end the profile at the cycle's Z")
 
 
+def _evaluated(words: list[tuple[str, str]], values: dict[str, Any], ctx: Context,
+               unmodelled: Callable[[str], UnsupportedError]) -> list[tuple[str, str]]:
+    """A profile block's words with its computed ones evaluated where the cycle runs: LinuxCNC reads the
+    subprogram then, so its expressions take the parameters' values at the cycle, not at the definition [V:
+    rs274 2.9.0~pre1: a global parameter set between the ``o100 sub`` and the ``G71 Q100`` shifts the cut by its
+    new value, tests/test_ngc_g7x.py]. Global parameters only (named with a leading ``_``, numbered above 30 [K:
+    LinuxCNC o-code docs: #1-#30 belong to a subprogram's call]) and numbers; a local one belongs to the
+    subprogram's own call level, which this reading does not keep: refused, as a computed G code."""
+    variables = ctx.run_data.get(RUN_VARIABLES_KEY)
+    out: list[tuple[str, str]] = []
+    for letter, text in words:
+        value = values.get(letter.upper())
+        if not isinstance(value, Expr) or is_number(text):
+            out.append((letter, text))
+            continue
+        if variables is None or letter.upper() == "G" or not _global(value):
+            raise unmodelled(f"{letter}{text}: a computed word in a G70-G72 profile reading a local parameter or "
+                             "giving the G code is not supported (write the numbers, or use global parameters)")
+        try:
+            number = evaluate_number(value, variables, f"{letter}{text}")
+        except PostprocError as err:
+            raise unmodelled(f"{letter}{text}: {err.message}") from None
+        out.append((letter, repr(number)))
+    return out
+
+
+def _global(expr: Expr) -> bool:
+    """``expr`` reads numbers and global parameters only (``_evaluated``)."""
+    if isinstance(expr, Num):
+        return True
+    if isinstance(expr, Var):
+        if expr.name is not None:
+            return expr.name.startswith("_")
+        return isinstance(expr.index, Num) and expr.index.value > 30
+    if isinstance(expr, Binary):
+        return _global(expr.left) and _global(expr.right)
+    if isinstance(expr, Unary):
+        return _global(expr.operand)
+    if isinstance(expr, Func):
+        return all(_global(arg) for arg in expr.args)
+    return False
+
+
 def _profile(written: list[Written], start: complex, ctx: Context, name: str, at: Location,
              scale: float) -> list[Piece]:
     """The cycle's pieces: the approach from ``start``, then the subprogram's moves (module docstring); a
@@ -252,7 +299,7 @@ def _profile(written: list[Written], start: complex, ctx: Context, name: str, at
             return UnsupportedError(f"{name}'s profile, line {line}: {message}", at)
 
         if values:
-            raise unmodelled("a computed word in a G70-G72 profile is not supported (write the numbers)")
+            words = _evaluated(words, values, ctx, unmodelled)
         got: dict[str, float] = {}
         for letter, num in words:
             up = letter.upper()
