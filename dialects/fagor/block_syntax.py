@@ -69,7 +69,7 @@ class FagorBlockSyntax(WordBlockSyntax):
         if ctx.state.cycle is not None and isinstance(motion, Motion) and motion.mode in GROUP_01 \
                 and "CycleCancel" not in sections and "CycleCall" not in sections:
             code = next((num for letter, num in block.words if letter in "Gg" and g_key(num) in CODES.g
-                         and CODES.g[g_key(num)][0] == "01"), None)
+                         and CODES.g[g_key(num)][0] == "01"), "")
             raise UnsupportedError(f"G{code} while a fixed cycle is active: whether a motion code ends the cycle on "
                                    "the 8070 is not confirmed (write G80 before it)",
                                    ctx.at(block, col_of_word(block, "G", code)))
