@@ -61,7 +61,7 @@ class Context:
     reading dialect tells the neutral steps about its words."""
 
     __slots__ = ("file", "setup", "diagnostics", "state", "dialect", "cycle_words", "on_unsupported",
-                 "program_mode", "keep_check", "reader", "stops_before_motion", "feed_before_units", "cutter_rules", "length_at_axis", "lathe_turret",
+                 "program_mode", "keep_check", "reader", "stops_before_motion", "feed_before_units", "cutter_rules", "length_at_axis", "path_at_start", "lathe_turret",
                  "run_data",
                  "point_mix", "lathe", "increments", "axis_words", "diameter", "one_block", "peck_clearance_mm", "moves_made",
                  "block_lane", "hole_lane", "arc_end")
@@ -92,6 +92,8 @@ class Context:
         self.length_at_axis = False
         """A tool length change moves nothing until the length axis is next programmed absolutely
         (``Dialect.LENGTH_AT_PROGRAMMED_AXIS`` of the reading dialect)."""
+        self.path_at_start = "cutting"
+        """The path control mode in force before the program sets one (``Dialect.PATH_CONTROL_AT_START``)."""
         self.lathe_turret = True
         """On a lathe the reading dialect's T indexes the turret with its offset (``Dialect.LATHE_TURRET``)."""
         self.cutter_rules: Any = None

@@ -164,6 +164,11 @@ class Dialect:
     (``postproc.lowering.arcs.settle_arc_ends``)."""
     TOOL_LENGTH_OFFSET: ClassVar[bool] = True
     """Tool length offset from a table exists (the writer refuses it otherwise)."""
+    PATH_CONTROL_AT_START: ClassVar[str] = "cutting"
+    """The path control mode in force before a program programs one ('cutting' or 'exact_stop'): [K] Fanuc and
+    LinuxCNC power on in G64. A translation between two dialects that start differently writes the source's
+    mode before the first move where the program sets none first (``postproc.lowering.path_at_start``), and
+    the simulation counts it from the first move (``Simulator.record_settings``)."""
     PATH_CONTROL: ClassVar[str | None] = None
     """The one path control mode the controller runs in, whatever the program says; None: the program sets
     it. ``verify`` accepts a source whose every path control is this mode, and with "exact_stop" (grbl's
@@ -376,6 +381,7 @@ class Dialect:
         if ctx.cutter_rules is None:
             ctx.run_data[RULES_UNKNOWN_KEY] = cls.cutter_rules_unknown(setup)
         ctx.length_at_axis = cls.LENGTH_AT_PROGRAMMED_AXIS
+        ctx.path_at_start = cls.PATH_CONTROL_AT_START
         ctx.lathe_turret = cls.LATHE_TURRET
         ctx.peck_clearance_mm = cls.PECK_CLEARANCE_MM
         if cls.INVERSE_TIME_FEED:

@@ -236,7 +236,10 @@ def test_verify_compares_a_mapped_code_and_lists_an_omitted_one(tmp_path: Path) 
     report = _verify(_translate("siemens", setup), setup)
     assert report.ok, report.summary()  # type: ignore[attr-defined]
     assert report.ignored == ["M31 (chip auger forward), a machine-specific code omitted by the set-up "  # type: ignore[attr-defined]
-                              "(<ForeignCodes>): IN 1x from line 3, OUT none"]
+                              "(<ForeignCodes>): IN 1x from line 3, OUT none",
+                              # the SINUMERIK's power-on G60 where Fanuc blends (tests/test_defects_siemens_path_start.py)
+                              "path control: the siemens controller starts in exact stop (line 4) where the source's "
+                              "blends, until the program sets a blending mode: every programmed point is reached"]
     assert "M33 (chip auger stop) became M133 by the set-up (<ForeignCodes>): compared, IN 1x from line 4" in \
         report.notes  # type: ignore[attr-defined]
 

@@ -266,7 +266,6 @@ def test_m19_takes_its_angle_from_r() -> None:
     ("G10 L1 P1 A1 Z2", "G10 (set offsets (G10 L))"),  # (X and Y are modelled: an A offset is not)
     ("G76 P0.05 Z-1 I-0.075 J0.008 K0.045", "G76 (threading cycle)"),
     ("G87 X1 Y1 Z-1 R1 I0.5 J0 K0.5 F10", "G87 (RS274/NGC back boring (I/J shift, K top))"),
-    ("G43.1 Z0.5", "G43.1 (dynamic tool length offset)"),
     ("M62 P1", "M62 (digital output on, synchronised)"),
 ])
 def test_codes_without_neutral_meaning_travel_verbatim(text: str, what: str) -> None:

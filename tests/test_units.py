@@ -109,13 +109,20 @@ def test_a_macro_program_is_flattened_where_it_can_be() -> None:
 @pytest.mark.parametrize("text, source, message", [
     ("G21 G90 G00 X0. Y0. Z1.\n#1=#5221\nG01 X[#1+1.] F100.\nM30\n", "fanuc",
      "t.nc:2:1: error: #5221 (work offset) is known only to the machine"),
-    ("G21 G90\nG43.1 Z2.54\nM2\n", "linuxcnc",
-     "t.nc:2:1: error: G43.1 (dynamic tool length offset) is kept as written and cannot be converted"),
 ])
 def test_refused_at_the_line(text: str, source: str, message: str) -> None:
     with pytest.raises(ErrorList) as info:
         run(text, source, source, "inch")
     assert any(str(e).startswith(message) for e in info.value.errors), info.value.errors
+
+
+def test_a_dynamic_tool_length_is_converted() -> None:
+    """LinuxCNC's G43.1 is the neutral dynamic offset (it was kept as written and refused here): 2.54 mm is
+    0.1 in (hand-derived), and the path is the source's."""
+    text = "G21 G90\nG0 X0 Y0 Z5.08\nG43.1 Z2.54\nG1 Z0 F100\nM2\n"
+    out = run(text, "linuxcnc", "linuxcnc", "inch")
+    assert "G43.1 Z0.1" in out.splitlines(), out
+    same_path(text, out, "linuxcnc", "linuxcnc")
 
 
 def test_a_lathe_program_is_converted() -> None:

@@ -11,7 +11,10 @@ table and hole-cycle words.
   the 8070 does then (a zero offset deselection? incremental machine positions? a feed move?) is not
   confirmed [?].
 * A motion code (``G00``-``G03``) while a fixed cycle is active, without ``G80`` in its block, is a located
-  error: whether it ends the cycle on the 8070 is not confirmed [?] (``cycle_end``).
+  error: whether it ends the cycle on the 8070 is not confirmed [?] (``cycle_end``). So is a ``G53`` move
+  there without a motion code (``G53 Z0``): the 8070 programming manual's fixed-cycle and G53 pages were
+  not reached (searched: REF 0809, REF 1901 only by their covers), so whether it ends the cycle, keeps it or
+  drills at the machine position is [?].
 * ``M19`` only where the set-up says ``<Cycles orientation="m19"/>`` [?].
 * ``G04 K``: a dwell of K in the cycle dwell's unit.
 * ``D<n>`` selects tool offset n (the 8070 takes ``D1`` before any); ``G43`` applies its length, ``G44``
@@ -96,6 +99,9 @@ class FagorBlockSyntax(WordBlockSyntax):
         motion = block.sections.get("Motion")
         distance = block.sections.get("DistanceMode")
         at = ctx.at(block, col_of_word(block, "G", "53"))
+        if ctx.state.cycle is not None and "01" not in codes and "CycleCancel" not in block.sections:
+            raise UnsupportedError("G53 while a fixed cycle is active: whether the 8070 ends the cycle, keeps it or "
+                                   "runs it at the machine position is not confirmed (write G80 before it)", at)
         if not isinstance(motion, Motion) or not motion.axes:
             raise UnsupportedError("G53 without an axis word: what it does on the 8070 (a zero offset deselection?) "
                                    "is not confirmed", at)

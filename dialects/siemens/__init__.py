@@ -106,6 +106,14 @@ class Siemens(Dialect):
     the tool compensations": tool length compensation is performed on the first traversing motion of the axis
     it acts on (G0/G1)]. Whether an incremental first motion also takes it, as LinuxCNC's rule here does not,
     is not stated [?]."""
+    PATH_CONTROL_AT_START = "exact_stop"
+    """G60 (exact stop) before a program programs G64: the standard reset value of G group 10 (machine data MD20150
+    ``$MC_GCODE_RESET_VALUES[9]``, which a machine builder may set to G64) [K: the SINUMERIK G-group tables mark G60
+    as the standard setting of group 10; the page of the 12/2019 programming manual with group 10 was not reached
+    here, only its group 1 page (p.1247) and the G60/G9 description (p.293)]. A program read from SINUMERIK that
+    moves before it programs G60/G64 is written with an exact stop mode first for a target that powers on in
+    continuous path mode, and a program for SINUMERIK from such a source gets ``G64`` first: so the written
+    program runs in the source's mode whatever the machine data says (``postproc.lowering.path_at_start``)."""
     MOTION_AT_START = "linear"
     """G1 before a program programs a motion: the standard reset value of G group 1 (machine data MD20150
     ``$MC_GCODE_RESET_VALUES``, which a machine builder may set to G0: the set-up's ``<Controller

@@ -227,6 +227,9 @@ def _rewrite(block: Block, table: ToolTable, state: _Selection, toggles: bool, l
     if isinstance(offset, ToolLengthOffset):
         if offset.mode == "negative" and cutter is None:
             return False  # left to the writer, which refuses it (with --on-unsupported warn: that word only)
+        if offset.mode == "dynamic":
+            raise UnsupportedError("a dynamic tool length offset (a length given in the program, not a register of "
+                                   "the tool table: the target selects a tool's data with D)")
         if offset.mode not in ("positive", "cancel"):
             raise UnsupportedError(f"a tool length offset '{offset.mode}'")
         state.length = _register(offset.register, "tool length") if offset.mode == "positive" else None

@@ -92,9 +92,42 @@ class WordBlockSyntax(Syntax):
     """S takes a whole number: a written ``S1000.5`` (or ``S1000.``) is a located error, as the controller's
     alarm (``Dialect.WHOLE_SPINDLE_SPEED`` of the dialect whose syntax this is); a computed S reaches here
     already rounded by the interpreter (``ProgramSyntax.spell_evaluated``)."""
+    DYNAMIC_LENGTH_BARE: ClassVar[bool] = False
+    """A dynamic tool length offset (``G43.1``) without a Z word keeps the length in force (LinuxCNC: it replaces
+    the offsets of the axes it names only); False: it is an error (grbl)."""
     POINTLESS_IN_UNITS: ClassVar[bool] = False
     """A number without a decimal point is in program units whatever the set-up's ``Input`` says
     (DIN 66025 controls such as ISG: ``X10`` is 10 mm), instead of least input increments."""
+
+    def _dynamic_length(self, block: Block, ctx: Context, num: str, codes: dict[str, Any], values: dict[str, Any],
+                        used: set[str]) -> None:
+        """``G43.1 Z<length>``: every axis word of the block is the offset's, none a move [V: grbl ``gcode.c``
+        "[G43.1 Errors]", an axis word other than Z or a missing Z is ``STATUS_GCODE_G43_DYNAMIC_AXIS_ERROR``;
+        V: rs274 2.9 run here, ``G43.1 X1 Z3`` is ``USE_TOOL_LENGTH_OFFSET(1 0 3, ...)``, and an axis the block
+        does not name keeps its offset: ``G43.1 Z3`` then ``G43.1`` or ``G43.1 X0`` leaves Z at 3]. Only a length
+        along Z is modelled: an offset along another axis is refused by
+        name, never read as a move. A motion or cycle code in the block is refused: rs274 then takes the Z word
+        as the length and as the move's end too (``G91 G43.1 Z4 G1`` moves Z by 4 [V: rs274 2.9 run here]),
+        grbl refuses it (an axis command conflict [V: grbl ``gcode.c``])."""
+        motion = codes.get("01")
+        if motion is not None and motion[1] in ("motion", "cycle"):
+            raise ProgramError(f"G{num} with G{motion[3]} in one block: the Z word would be the tool length and the "
+                               "move's too (write the motion in a block of its own)",
+                               ctx.at(block, col_of_word(block, "G", motion[3])))
+        other = next((letter for letter, _ in block.words if _UPPER.get(letter, "") in AXIS_LETTERS
+                      and _UPPER[letter] != "Z"), None)
+        if other is not None:
+            up = _UPPER[other]
+            raise ProgramError(f"G{num} with an {up} word: only a tool length along Z is modelled (an offset "
+                               f"along {up} is not; the {up} word is the offset's, not a move)",
+                               ctx.at(block, ctx.column_of(block, up)))
+        if "Z" not in values:
+            if not self.DYNAMIC_LENGTH_BARE:
+                raise ProgramError(f"G{num} needs the tool length as its Z word",
+                                   ctx.at(block, col_of_word(block, "G", num)))
+            return  # the offsets in force stay: nothing changes
+        used.add("Z")
+        block.add(ToolLengthOffset("dynamic", None, values["Z"]))
 
     def table(self, ctx: Context) -> CodeTable:
         """The code table a program is read with (a dialect with one table per machine type or G-code
@@ -361,11 +394,7 @@ class WordBlockSyntax(Syntax):
                     register = values["H"]
                 block.add(CutterCompensation(arg, register))
             elif kind == "length" and arg == "dynamic":  # G43.1 Z<length> (grbl, RS274/NGC)
-                if "Z" not in values:
-                    raise ProgramError(f"G{num} needs the tool length as its Z word",
-                                       ctx.at(block, col_of_word(block, "G", num)))
-                used.add("Z")
-                block.add(ToolLengthOffset(arg, None, values["Z"]))
+                self._dynamic_length(block, ctx, num, codes, values, used)
             elif kind == "length":
                 if arg != "cancel":
                     if "H" not in values:

@@ -137,6 +137,10 @@ class SectionWords(NumberWriter):
         return words
 
     def tool_length_offset_words(self, s: Any, block: Block) -> list[str]:
+        if s.mode == "dynamic":  # the length itself in the block (grbl, LinuxCNC ``G43.1 Z..``)
+            code = self._code("length", "dynamic", "a dynamic tool length offset (a length given in the program, "
+                              "not a register of the tool table)", block)
+            return code + ["Z" + self.length(s.length, block, "Z")]
         if s.mode != "cancel" and not self.capable("TOOL_LENGTH_OFFSET"):
             self.unsupported("a tool length offset from a table", block)
         words = self._code("length", s.mode, f"tool length offset {s.mode}", block)

@@ -149,7 +149,8 @@ class WordWriter(MotionWords):
             if not changes_nothing(sections):
                 self.modal.apply(sections)
             return block.text + block.eol
-        if self.normalize and block.text is not None and self.source_dialect == self.DIALECT:
+        if self.normalize and block.text is not None and self.source_dialect == self.DIALECT \
+                and (block.words or "NativeCode" not in sections):  # (a verbatim line of no words: as written)
             if not changes_nothing(sections):
                 self.modal.apply(sections)
             return self.normalized(block) + (block.eol or "\n")

@@ -32,6 +32,8 @@ from .work_offsets import declared_offsets, offset_beyond_frame
 LENGTH_AXIS: Final = _AXIS
 LINEAR_AXES: Final = _LINEAR
 # Final: compiled, a C constant, not a look-up in the module's dictionary (every move reads them)
+PATH_CONTROL: Final = "path control"
+"""The setting a path control mode is recorded as (``postproc.simulate.events.UNSIMULATED``)."""
 _INITIAL_SETTINGS = {"cutter compensation": "off", "work offset": "1", LATHE_TOOL_OFFSET: "cancel"}
 _CENTRE_LETTER = {"X": "I", "Y": "J", "Z": "K"}
 
@@ -109,6 +111,9 @@ class Moves:
         kept, ``"still": True`` (moving the program may move it); ``simulator.simulate`` marks what a block
         programs absolutely (``"programmed"``)."""
         self.settings: dict[str, str] = dict(_INITIAL_SETTINGS)
+        self.path_pending = True
+        """No move yet: a controller that starts in exact stop records it at the first move where the program
+        has set no mode before (``Simulator.path_at_first_move``)."""
         self.undeclared: set[str] = set()
         """Machine-specific codes warned about as undeclared (once each)."""
         self.offsets: dict[int, dict[str, float]] = {}

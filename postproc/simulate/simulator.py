@@ -20,7 +20,7 @@ from ..expr import Expr
 from ..ir import Block, MachineFunction, Motion, Section
 from ..state import MM_PER_INCH, MODAL_KEYS as _MODAL
 from .events import HEADER_LOOKAHEAD, LATHE_TOOL_OFFSET, UNEVALUATED, UNSIMULATED, Event, header, num, _setting_text
-from .moves import Moves
+from .moves import PATH_CONTROL, Moves
 from .work_offsets import offset_beyond_frame
 
 LENGTH_AXIS: Final = _AXIS
@@ -35,6 +35,8 @@ _KIND_SETTING: Final = 2
 _KIND_COMPENSATION: Final = 4
 _KIND_EVENT: Final = 8
 _KIND_RARE: Final = 16
+EXACT: Final = "exact stop"
+"""How an exact stop mode reads as a setting (``postproc.simulate.events._setting_text``)."""
 _RARE_KEYS: Final = frozenset(("TapeMark", "InProfile", "NativeCode", "CompoundMotion", "CoordinateSet", "RigidTap",
                                "CycleCall"))
 """Sections a CAM block has none of, each looked up by ``Simulator.block`` only where the block has one of them
@@ -186,11 +188,22 @@ class Simulator(Moves):
                 self.settings[kind] = value
                 self.unsimulated.append((block.line, kind, value))
 
+    def path_at_first_move(self, line: int) -> None:
+        """The first move (``line``): a program that has set no path control mode runs in its controller's
+        power-on mode. A controller that starts in exact stop (``Dialect.PATH_CONTROL_AT_START``: a SINUMERIK's
+        G60) records it here, as if the program had set it, so its translation for a controller that starts
+        blending, which writes the mode first (``postproc.lowering.path_at_start``), compares alike; one that
+        starts blending records nothing, as before (the changes recorded count from blending)."""
+        self.path_pending = False
+        if self.settings.get(PATH_CONTROL) is None and self.ctx.path_at_start == "exact_stop":
+            self.settings[PATH_CONTROL] = EXACT
+            self.unsimulated.append((line, PATH_CONTROL, EXACT))
+
     def _stop_once(self, line: int, kind: str) -> None:
-        """A one-shot exact stop: exact stop for the block, then the mode before (cutting where none was set:
-        the power-on mode of Fanuc and LinuxCNC [K]), so a target without one that writes the two modes
+        """A one-shot exact stop: exact stop for the block, then the mode before (where none was set, the
+        controller's power-on mode: cutting on Fanuc and LinuxCNC [K], ``Dialect.PATH_CONTROL_AT_START``), so a target without one that writes the two modes
         (LinuxCNC's ``exact_stop`` lowering) compares alike; under an exact-stop mode it changes nothing."""
-        before = self.settings.get(kind) or "cutting"
+        before = self.settings.get(kind) or (EXACT if self.ctx.path_at_start == "exact_stop" else "cutting")
         if before == "exact stop":
             return
         self.unsimulated += [(line, kind, "exact stop"), (line, kind, before)]
@@ -556,6 +569,8 @@ def simulate(blocks: Iterable[Block], ctx: Context, live_after_end: list[int] | 
             report(err.located(ctx.at(block)))
             out.clear()
             continue
+        if sim.path_pending and out and any("move" in ev for ev in out):
+            sim.path_at_first_move(block.line)
         if sim.oriented or orientation is not None and out:
             sim.oriented = False
             orientation = prepared_taps(out, orientation)

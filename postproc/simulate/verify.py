@@ -116,6 +116,8 @@ def verify_lines(lines_in: Iterable[str], lines_out: Iterable[str], *, file_in: 
         settings_in = [s for s in settings_in if s[1] != "path control"]
         settings_out = [s for s in settings_out if s[1] != "path control"]
         report.ignored.append(_one_path_mode(target, fixed))
+    if dialects.dialect(target).PATH_CONTROL_AT_START == "exact_stop" != dialects.dialect(source).PATH_CONTROL_AT_START:
+        settings_in, settings_out = _stricter_start(report, target, settings_in, settings_out)
     if transform is not None and mirrors_xy(transform.map):
         settings_in = [(line, kind, _other_side(value) if kind == "cutter compensation" else value)
                        for line, kind, value in settings_in]
@@ -259,3 +261,35 @@ def _open(path: str) -> Any:
         return open(path, "r", encoding="utf-8", errors="surrogateescape", newline="")
     except OSError as exc:
         raise UsageError(f"cannot read {path}: {exc.strerror}") from None
+
+
+def _stricter_start(report: Report, target: str, settings_in: list[tuple[int, str, str]],
+                    settings_out: list[tuple[int, str, str]]
+                    ) -> tuple[list[tuple[int, str, str]], list[tuple[int, str, str]]]:
+    """Both sides' settings without what precedes the output's first blending mode, where the output's
+    controller starts in exact stop and the source's blends (``Dialect.PATH_CONTROL_AT_START``: a Fanuc program
+    for a SINUMERIK, which powers on in G60) and the two agree from the first blending mode each sets on (or
+    the output never blends). Until then the output stops exactly at every programmed point, which is what
+    the simulation compares; the source's blending only lets the path leave them (grbl's one mode is accepted
+    so: ``_one_path_mode``). A one-shot exact stop (its exact stop, then the mode before, at one line) is no
+    blending mode set. The note says so. Otherwise both are returned as they are, and compared."""
+    ins = [s for s in settings_in if s[1] == "path control"]
+    outs = [s for s in settings_out if s[1] == "path control"]
+    if not outs or outs[0][2] != "exact stop":
+        return settings_in, settings_out
+    i, o = _first_blending(ins), _first_blending(outs)
+    if o < len(outs) and (i == len(ins) or [s[2] for s in ins[i:]] != [s[2] for s in outs[o:]]):
+        return settings_in, settings_out
+    report.ignored.append(f"path control: the {target} controller starts in exact stop (line {outs[0][0]}) where the "
+                          "source's blends, until the program sets a blending mode: every programmed point is reached")
+    gone_in, gone_out = set(ins[:i]), set(outs[:o])
+    return [s for s in settings_in if s not in gone_in], [s for s in settings_out if s not in gone_out]
+
+
+def _first_blending(changes: list[tuple[int, str, str]]) -> int:
+    """The index of the first change to a blending mode that is not the end of a one-shot exact stop (an
+    exact stop and the mode before at one line); ``len(changes)`` where there is none."""
+    for k, (line, _, value) in enumerate(changes):
+        if value != "exact stop" and not (k > 0 and changes[k - 1][0] == line and changes[k - 1][2] == "exact stop"):
+            return k
+    return len(changes)

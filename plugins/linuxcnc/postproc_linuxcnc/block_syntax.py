@@ -63,6 +63,9 @@ class NgcBlockSyntax(NgcWordBlockSyntax):
     DATA_P0_ACTIVE: ClassVar[bool] = True
     DATA_ROTATION: ClassVar[bool] = True
     FRAME_RULES: ClassVar[str] = "rs274"
+    DYNAMIC_LENGTH_BARE: ClassVar[bool] = True
+    """A bare ``G43.1`` keeps the length in force [V: rs274 2.9, ``G43.1 Z3`` then ``G43.1`` prints
+    ``USE_TOOL_LENGTH_OFFSET(0 0 3, ...)`` again]."""
 
     def _native(self, block: Block, ctx: Context, natives: list[str], raw: dict[str, str]) -> None:
         super()._native(block, ctx, natives, raw)
