@@ -75,7 +75,10 @@ class Resolver(CompensatedMoves):
         idle = True
         radii = not self.diameters
         """X is a radius in the blocks: the common block's move is tracked here (else by ``_track``)."""
+        last: Block | None = None
+        """The program's last block: where an error found at its end (``finish``) is located."""
         for block in blocks:
+            last = block
             sections = block.sections
             plain = idle
             odd = False
@@ -130,6 +133,8 @@ class Resolver(CompensatedMoves):
             try:
                 self.cutter.finish()
             except PostprocError as err:
+                if err.location is None and last is not None:
+                    err = err.located(self.ctx.at(last))
                 if self.trial is not None and isinstance(err, UnsupportedError):
                     self._untried(err)
                 else:
