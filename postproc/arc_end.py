@@ -17,6 +17,8 @@ import math
 from dataclasses import dataclass
 from typing import Final
 
+from .arc_paths import ArcPath, deviation
+from .geometry import arc_sweep
 from .state import MM_PER_INCH
 
 SPIRAL: Final = "spiral"
@@ -134,29 +136,16 @@ class ArcEndRule:
         return math.hypot(along, math.sqrt(max(r_start * r_start - quarter, 0.0)) - h)
 
     def spiral_gap(self, s: tuple[float, float], e: tuple[float, float], c: tuple[float, float],
-                   clockwise: bool) -> float:
-        """How far from the circle this rule runs (about ``centre``) a spiral controller's path for the same arc
-        comes: the spiral from ``s`` to ``e`` about ``c`` whose radius changes evenly with the angle. Sampled at
-        ``GAP_SAMPLES`` points (a smooth function of the angle with few extrema); 0 for a ``SPIRAL`` rule."""
+                   clockwise: bool, floor: float = -1.0) -> float:
+        """How far the circle this rule runs (about the centre it moves to) lies from a spiral controller's path for
+        the same arc, the spiral from ``s`` to ``e`` about ``c`` whose radius changes evenly with the angle: the
+        largest distance between the two paths, as ``verify`` measures it (``postproc.arc_paths.deviation``,
+        with its ``floor``); 0 for a ``SPIRAL`` rule."""
         if self.runs == SPIRAL:
             return 0.0
         moved = self.centre(s, e, c)
-        radius = math.hypot(s[0] - moved[0], s[1] - moved[1])
-        r0 = math.hypot(s[0] - c[0], s[1] - c[1])
-        r1 = math.hypot(e[0] - c[0], e[1] - c[1])
-        a0 = math.atan2(s[1] - c[1], s[0] - c[0])
-        turn = (math.atan2(e[1] - c[1], e[0] - c[0]) - a0) % (2.0 * math.pi)
-        if clockwise:
-            turn -= 2.0 * math.pi
-        if turn == 0.0 or turn == -2.0 * math.pi:
-            turn = -2.0 * math.pi if clockwise else 2.0 * math.pi  # end on start: a full turn
-        gap = 0.0
-        for i in range(1, GAP_SAMPLES):
-            t = i / GAP_SAMPLES
-            rho, angle = r0 + (r1 - r0) * t, a0 + turn * t
-            x, y = c[0] + rho * math.cos(angle), c[1] + rho * math.sin(angle)
-            gap = max(gap, abs(math.hypot(x - moved[0], y - moved[1]) - radius))
-        return gap
+        spiral = ArcPath(s, e, c, _turn(s, e, c, clockwise), [], [])
+        return deviation(spiral, ArcPath(s, e, moved, _turn(s, e, moved, clockwise), [], []), floor)
 
     def allows(self, r_start: float, r_end: float, inch: bool, chord: float = 0.0) -> bool:
         """Whether the controller runs an arc with these start and end radii and this chord (program units;
@@ -183,8 +172,10 @@ class ArcEndRule:
         return mid[0] + side * h * nx, mid[1] + side * h * ny
 
 
-GAP_SAMPLES: Final = 64
-"""Points ``ArcEndRule.spiral_gap`` samples a spiral at."""
+def _turn(s: tuple[float, float], e: tuple[float, float], c: tuple[float, float], clockwise: bool) -> float:
+    """How far an arc from ``s`` to ``e`` about ``c`` turns (radians, negative clockwise; end on start: a turn)."""
+    sweep = arc_sweep(s, e, c, clockwise)
+    return -sweep if clockwise else sweep
 
 TARGET_ARC_END: Final = "target_arc_end"
 """``ctx.run_data`` key of a translation whose target's rule does not cover the source's
