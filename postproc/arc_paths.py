@@ -9,28 +9,25 @@ arc differ where their rules differ: one keeps the programmed centre and runs a 
 onto the chord's bisector and runs a circle; the centres then lie apart (a 4-decimal CAM arc: 0.0007 mm) where
 the paths stay within a micron of each other.
 
-``deviation(a, b)`` is the largest of the start points' distance, the end points' distance and the distance
-between the points of ``a`` and ``b`` on one ray from ``b``'s centre, over the angles both cover. That is the
-Hausdorff distance of the two paths, exactly, where ``b`` is a flat circle (the nearest point of a circle to any
-point is on the ray from its centre through it, so the matched distance is ``a``'s distance to ``b``; and every
-point of ``b`` is matched with a point of ``a`` no further away, so ``b``'s distance to ``a`` is no larger; the
-parts one path runs beyond the other's ends are nearest those ends) and neither runs half a turn or more
-beyond the other's end: one that does is measured from the other's end (its far side: ``_Matching.beyond``),
-where the Hausdorff distance would not see a circle cut once more over the other's. Where ``b`` is a spiral it is at most the
-Hausdorff distance divided by the cosine of the spiral's pitch (the angle between its normal and the ray:
-under 1e-7 relative for any arc a controller accepts at a radius of 1 mm); where the axes outside the plane
-differ (two helices) it is the distance at one angle, an upper bound of the Hausdorff distance.
+``deviation(a, b)`` is the largest of the start points' distance, the end points' distance and the Hausdorff
+distance of the two paths (the largest distance of a point of either from the other), computed, not sampled to
+a bound; except that a path running half a turn or more beyond the other's end is measured from that end (its far
+side: ``_Matching.beyond``), where the Hausdorff distance would not see a circle cut once more over the other's.
 
-How it is computed: the point of ``a`` on the ray at angle t from ``b``'s centre is the ray's intersection with
-``a``'s circle of the radius ``a`` has there (closed form; for a spiral, repeated twice with the radius at the
-angle found, a contraction by the spiral's pitch), so the matched distance f(t) is exact at any t. Its largest
-value is found from the closed form of its model: with d the centres' offset, f(t) is d cos(t - angle of d)
-plus a linear function of t (the two radii), within d^2/r of it, so its extremes are at the overlap's ends or
-where the model's derivative is zero. The model's extremes plus that margin bound f from above: a pair whose
-bound is below what the caller already has (``floor``) is decided without more (verify's largest deviation so
-far: most arcs of a program). Otherwise f itself is evaluated at the model's extremes and every eighth of half
-a turn, and each local largest value refined by golden-section search to 1e-6 rad (f's curvature is at most
-about r + d, so the value is then within (r + d) 1.25e-13 mm of the largest).
+How: first a bound. The points of ``a`` and ``b`` on one ray from ``b``'s centre match the two paths over the
+angles both cover (every point of either has a partner), so the largest distance between partners bounds the
+Hausdorff distance from above; for a flat circle ``b`` it is that distance (the nearest point of a circle lies
+on the ray through its centre). With d the centres' offset, the partners' radial distance is d cos(angle -
+angle of d) plus a linear function of the angle (the two radii), within d^2/r: the closed form of that model's
+extremes (the overlap's ends, where its derivative is zero) plus the margin is the bound. A pair whose bound is
+below what the caller already has (``floor``: verify's largest deviation so far, or the centre correction's
+limit) is decided there, as are two flat paths about one centre (no margin; for a spiral within its pitch's
+cosine): most arcs of a program. Otherwise the
+Hausdorff distance itself: each point's distance from the other path is the foot of its perpendicular (Newton's
+method on the squared distance from the ray's partner, which converges in a step or two on paths this close,
+within the path or at its nearest end), taken at every eighth of half a turn of each path and at the model's
+extremes, each local largest value refined by golden-section search to 1e-6 rad (its curvature is at most about
+r + d: the value found is within (r + d) 1.25e-13 mm of the largest).
 
 Paths whose centres lie more than half the smaller radius apart, or that turn opposite ways, are no longer close
 enough for the ray matching: ``deviation`` then gives their Hausdorff distance from ``GROSS_SAMPLES`` points of
@@ -41,17 +38,17 @@ lies far apart, and the value says how far, to the precision of that search.
 from __future__ import annotations
 
 import math
-from typing import Final, Mapping
+from typing import Callable, Final, Mapping
 
 from .geometry import PLANE_INDEX
 
 _TWO_PI: Final = 2.0 * math.pi
 _STEP: Final = math.pi / 8.0
-"""Largest spacing of the samples of f before refinement (f is a sinusoid plus a linear term within d^2/r:
-at most two extremes a turn, each bracketed by samples this close)."""
+"""Largest spacing (rad) of the samples of a point's distance from the other path before refinement (about a
+sinusoid plus a linear term, within d^2/r: at most two extremes a turn, each bracketed by samples this close)."""
 _REFINED: Final = 1e-6
-"""Width of the bracket (rad) golden-section search narrows each largest value to: f's curvature is at most
-about r + d, so the value found is within (r + d) 1.25e-13 mm of the largest."""
+"""Width of the bracket (rad) golden-section search narrows each largest value to: the distance's curvature is at
+most about r + d, so the value found is within (r + d) 1.25e-13 mm of the largest."""
 _GOLD: Final = (math.sqrt(5.0) - 1.0) / 2.0
 GROSS_SAMPLES: Final = 256
 """Points a path is sampled at where the paths are too far apart for the ray matching (``_sampled``)."""
@@ -69,8 +66,9 @@ def _wrap(angle: float) -> float:
 
 class ArcPath:
     """One controller's path for an arc, in mm: plane coordinates of its start, end and centre, how far it turns
-    (radians, positive counter-clockwise, may exceed a turn: a helix of several), and the axes outside the plane
-    at its start and end (one list each, in the same order for both paths compared)."""
+    (radians, positive counter-clockwise, may exceed a turn: a helix of several; made to end at the end's angle),
+    and the axes outside the plane at its start and end (one list each, in the same order for both paths
+    compared)."""
 
     def __init__(self, start: tuple[float, float], end: tuple[float, float], centre: tuple[float, float],
                  turn: float, off_start: list[float], off_end: list[float]) -> None:
@@ -83,6 +81,9 @@ class ArcPath:
         self.r0 = math.hypot(start[0] - centre[0], start[1] - centre[1])
         self.r1 = math.hypot(end[0] - centre[0], end[1] - centre[1])
         self.a0 = math.atan2(start[1] - centre[1], start[0] - centre[0])
+        # the turn made to end at the end's angle (a run of arcs merged about one centre within a tolerance turns
+        # by the sum of its pieces' turns, each about its own centre)
+        self.turn = turn + _wrap(math.atan2(end[1] - centre[1], end[0] - centre[0]) - (self.a0 + turn))
 
     def at(self, t: float) -> tuple[float, float, list[float]]:
         """The point at the fraction ``t`` of the turn: plane coordinates, then the axes outside the plane."""
@@ -220,67 +221,88 @@ class _Matching:
                 t += _TWO_PI
         return found
 
-    def matched(self, t: float) -> float:
-        """The distance between the point of ``a`` and that of ``b`` on the ray at ``t`` (exact)."""
-        a, b = self.a, self.b
-        angle = b.a0 + self.sign * t
-        ux, uy = math.cos(angle), math.sin(angle)
-        along = self.dx * ux + self.dy * uy
-        across = self.dx * uy - self.dy * ux
-        turned = t - self.t_start  # a's own angle, first taken as b's
-        spiral = a.r1 != a.r0
-        rounds = 3 if spiral else (1 if a.off_start else 0)
-        s = 0.0
-        for n in range(rounds + 1):
-            rho = a.r0 + self.k_a * turned
-            s = along + math.sqrt(max(rho * rho - across * across, 0.0))
-            if n == rounds:
-                break
-            px = b.centre[0] + s * ux - a.centre[0]
-            py = b.centre[1] + s * uy - a.centre[1]
-            own = a.a0 + a.turn * (turned / self.span_a)  # the angle about a's centre taken so far
-            turned += self.sign * _wrap(math.atan2(py, px) - own)
-        gap = s - (b.r0 + self.k_b * t)
-        square = gap * gap
-        for k in range(len(a.off_start)):
-            off = self._off_a(k, turned) - self._off_b(k, t)
-            square += off * off
-        return math.sqrt(square)
-
     def largest(self) -> float:
-        """The largest matched distance over [lo, hi]: sampled at the model's extremes and at most ``_STEP``
-        apart, each local largest value refined by golden-section search."""
-        lo, hi = self.lo, self.hi
-        n = max(2, math.ceil((hi - lo) / _STEP))
-        ts = sorted(set([lo + (hi - lo) * q / n for q in range(n + 1)]
-                        + [t for t in self._model_extremes() if lo <= t <= hi]))
-        values = [self.matched(t) for t in ts]
+        """The Hausdorff distance of the two paths: the largest distance of a point of either from the other
+        (``_from``), each sampled at most ``_STEP`` apart (and at the model's extremes), each local largest value
+        refined by golden-section search."""
+        return max(self._largest_from(self.a, self.b, self.t_start, self.span_a, self.span_b),
+                   self._largest_from(self.b, self.a, -self.t_start, self.span_b, self.span_a))
+
+    def _largest_from(self, p: ArcPath, o: ArcPath, start: float, span: float, other_span: float) -> float:
+        """The largest distance of a point of ``p`` from ``o``; ``start``: where ``p`` starts in ``o``'s angles."""
+        n = max(2, math.ceil(span / _STEP))
+        ts = [q / n for q in range(n + 1)]
+        extra = [(t - start) / span for t in self._model_extremes()] if p is self.a else \
+            [t / span for t in self._model_extremes()]
+        ts = sorted(set(ts + [t for t in extra if 0.0 < t < 1.0]))
+
+        def f(t: float) -> float:
+            return _from(p.at(t), o, (start + t * span) / other_span)
+
+        values = [f(t) for t in ts]
         best = max(values)
-        for q in range(len(ts)):
-            left = values[q - 1] if q > 0 else -1.0
-            right = values[q + 1] if q + 1 < len(ts) else -1.0
-            if 0 < q < len(ts) - 1 and values[q] >= left and values[q] >= right:
-                best = max(best, self._golden(ts[q - 1], ts[q + 1]))
+        for q in range(1, len(ts) - 1):
+            if values[q] >= values[q - 1] and values[q] >= values[q + 1]:
+                best = max(best, _golden(f, ts[q - 1], ts[q + 1], _REFINED / span))
         return best
 
-    def _golden(self, lo: float, hi: float) -> float:
-        """The largest matched distance in [lo, hi] about a single local largest value inside."""
-        x1 = hi - _GOLD * (hi - lo)
-        x2 = lo + _GOLD * (hi - lo)
-        f1, f2 = self.matched(x1), self.matched(x2)
-        best = max(f1, f2)
-        while hi - lo > _REFINED:
-            if f1 >= f2:
-                hi, x2, f2 = x2, x1, f1
-                x1 = hi - _GOLD * (hi - lo)
-                f1 = self.matched(x1)
-                best = max(best, f1)
-            else:
-                lo, x1, f1 = x1, x2, f2
-                x2 = lo + _GOLD * (hi - lo)
-                f2 = self.matched(x2)
-                best = max(best, f2)
-        return best
+
+
+def _golden(f: Callable[[float], float], lo: float, hi: float, width: float) -> float:
+    """The largest value of ``f`` in [lo, hi] about a single local largest value inside, to a bracket ``width``."""
+    x1 = hi - _GOLD * (hi - lo)
+    x2 = lo + _GOLD * (hi - lo)
+    f1, f2 = f(x1), f(x2)
+    best = max(f1, f2)
+    while hi - lo > width:
+        if f1 >= f2:
+            hi, x2, f2 = x2, x1, f1
+            x1 = hi - _GOLD * (hi - lo)
+            f1 = f(x1)
+            best = max(best, f1)
+        else:
+            lo, x1, f1 = x1, x2, f2
+            x2 = lo + _GOLD * (hi - lo)
+            f2 = f(x2)
+            best = max(best, f2)
+    return best
+
+
+def _from(point: tuple[float, float, list[float]], o: ArcPath, guess: float) -> float:
+    """The distance of ``point`` from the path ``o``: the foot of the perpendicular found by Newton's method on
+    the squared distance from ``guess`` (a fraction of ``o``'s turn, first moved to the point's angle about
+    ``o``'s centre), kept within the path (its nearest end otherwise)."""
+    x, y, off = point
+    c = o.centre
+    turn = o.turn
+    s = guess + _wrap(math.atan2(y - c[1], x - c[0]) - (o.a0 + turn * guess)) / turn
+    s = min(1.0, max(0.0, s))
+    dr = o.r1 - o.r0
+    deltas = [e - b for b, e in zip(o.off_start, o.off_end)]
+    for _ in range(8):
+        a = o.a0 + turn * s
+        ca, sa = math.cos(a), math.sin(a)
+        rho = o.r0 + dr * s
+        px, py = c[0] + rho * ca - x, c[1] + rho * sa - y  # the path's point less the point
+        vx, vy = dr * ca - rho * turn * sa, dr * sa + rho * turn * ca  # its derivative
+        ax, ay = -2.0 * dr * turn * sa - rho * turn * turn * ca, 2.0 * dr * turn * ca - rho * turn * turn * sa
+        g = px * vx + py * vy
+        h = vx * vx + vy * vy + px * ax + py * ay
+        for k in range(len(deltas)):
+            w = o.off_start[k] + deltas[k] * s - off[k]
+            g += w * deltas[k]
+            h += deltas[k] * deltas[k]
+        if h <= 0.0:
+            break
+        step = g / h
+        s_new = min(1.0, max(0.0, s - step))
+        if s_new == s:
+            break
+        s = s_new
+        if abs(step) * math.sqrt(vx * vx + vy * vy) < 1e-13:
+            break
+    ex, ey, eoff = o.at(s)
+    return _points_apart((x, y), (ex, ey), off, eoff)
 
 
 def _sampled(a: ArcPath, b: ArcPath, floor: float) -> float:
