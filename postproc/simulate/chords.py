@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import math
 from itertools import zip_longest
-from typing import Any, Iterable, Iterator, Protocol
+from typing import Any, Callable, Iterable, Iterator, Protocol
 
 from ..geometry import PLANE_INDEX
 from .normal_move import Move, same_feed
@@ -110,7 +110,8 @@ def _cut(chord: Move, at: dict[str, float]) -> tuple[Move, Move]:
 
 
 def _inside(s: dict[str, float], e: dict[str, float], c: tuple[float, float], pi: str, pj: str, t0: float, t: float,
-            step: float, angle: Any, turn: float, radius_at: Any) -> float:
+            step: float, angle: Callable[[dict[str, float]], float], turn: float,
+            radius_at: Callable[[float], float]) -> float:
     """How far inside the arc the chord ``s``-``e`` (turning ``step`` of it, from the share ``t0`` to ``t``) comes at
     its point nearest the centre: a chord's distance from the centre is least there (its ends may lie off the
     circle unevenly, so that point is not always its middle), and the arc's radius is the one at that point's
