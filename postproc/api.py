@@ -10,7 +10,7 @@ from typing import Callable, Iterable, Iterator, TextIO
 from . import native
 native.install()  # the compiled hot path, before any of its modules is imported
 
-from .arc_end import TARGET_ARC_END
+from .arc_end import SPIRAL, TARGET_ARC_END
 from .block_rules import check_blocks
 from .control import GotoLabel
 from .dialect import Dialect
@@ -69,8 +69,10 @@ def translate(lines: Iterable[str], out: TextIO, *, file: str, source: str, targ
             ctx.run_data[TARGET_OMITS_VACANT] = _omits_vacant_words(dst, setup)
             ctx.run_data[EVALUATE_KEY] = options.transform is not None
             ctx.run_data[POINT_BY_POINT_KEY] = options.active()
-            if arcs is None and not dst.ARC_END.covers(src.ARC_END):
-                ctx.run_data[TARGET_ARC_END] = (dst.NAME, dst.ARC_END)
+            target_rule = dst.arc_end_rule(setup)
+            if arcs is None and ctx.arc_end.runs == SPIRAL and not target_rule.covers(ctx.arc_end):
+                # (a source that moves the centre has its arcs written about the moved one: settle_arc_ends)
+                ctx.run_data[TARGET_ARC_END] = (dst.NAME, target_rule)
 
         moved = setup.travel_limited() and options.transform is not None
         if setup.travel_limited() and not moved:

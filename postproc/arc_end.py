@@ -17,6 +17,8 @@ import math
 from dataclasses import dataclass
 from typing import Final
 
+from .arc_paths import ArcPath, deviation
+from .geometry import arc_sweep
 from .state import MM_PER_INCH
 
 SPIRAL: Final = "spiral"
@@ -25,7 +27,11 @@ the end radius over the sweep (a spiral ending at the programmed end point)."""
 START_RADIUS: Final = "start_radius"
 """The controller moves the centre onto the perpendicular bisector of the chord, at the start radius from
 the start point, on the programmed centre's side: a true circle through both end points."""
-RUNS: Final = (SPIRAL, START_RADIUS)
+NEAREST_CENTRE: Final = "nearest_centre"
+"""The controller moves the centre to the nearest point of the chord's perpendicular bisector (the least move
+that puts both end points on one circle, its radius about the mean of the two) and runs that circle. Well
+conditioned where ``START_RADIUS`` is not: near half a turn the move stays about half the difference of radii."""
+RUNS: Final = (SPIRAL, START_RADIUS, NEAREST_CENTRE)
 
 
 @dataclass(frozen=True)
@@ -38,7 +44,10 @@ class ArcEndRule:
       times the absolute limit (0: no ceiling);
     * anything else is refused.
 
-    ``runs`` says which path an accepted arc takes (``SPIRAL`` or ``START_RADIUS``)."""
+    With ``of_centre_shift`` the same limits bound how far the controller moves the centre (``shift``) instead
+    of the difference of radii, and ``relative`` is a share of the corrected radius.
+
+    ``runs`` says which path an accepted arc takes (one of ``RUNS``)."""
 
     metric: float
     """The absolute limit in a millimetre program (mm)."""
@@ -52,19 +61,26 @@ class ArcEndRule:
     """``relative`` is a share of the start radius (else of the larger of the two radii)."""
     runs: str = SPIRAL
     """The path an accepted arc takes (see ``RUNS``)."""
+    of_centre_shift: bool = False
+    """The limits bound the centre's move onto the bisector (``NEAREST_CENTRE`` only), not the radii's difference."""
 
     def __post_init__(self) -> None:
         if self.runs not in RUNS:
             raise ValueError(f"unknown arc path {self.runs!r} (one of {', '.join(RUNS)})")
+        if self.of_centre_shift and self.runs != NEAREST_CENTRE:
+            raise ValueError("a limit on the centre's move needs the nearest-centre path")
 
     def describe(self) -> dict[str, object]:
         """The rule as plain data (the capability table, ``postproc dialects``)."""
         return {"mm": self.metric, "inch": self.inch, "relative": self.relative, "ceiling": self.ceiling,
-                "of_start": self.of_start, "runs": self.runs}
+                "of_start": self.of_start, "runs": self.runs, "of_centre_shift": self.of_centre_shift}
 
     def covers(self, other: "ArcEndRule") -> bool:
         """Whether every arc ``other`` accepts, in either units, this rule accepts too (sufficient, not
-        necessary: a False only costs a closer look at each arc, ``postproc.lowering.arcs.settle_arc_ends``)."""
+        necessary: a False only costs a closer look at each arc, ``postproc.lowering.arcs.settle_arc_ends``).
+        Never where the two run an accepted arc on different paths, or judge different distances."""
+        if self.runs != other.runs or self.of_centre_shift != other.of_centre_shift:
+            return False
         if self.metric < other.metric or self.inch < other.inch:
             return False
         if other.relative <= 0.0:
@@ -76,20 +92,65 @@ class ArcEndRule:
         return other.ceiling > 0.0 and min(self.ceiling * self.metric - other.ceiling * other.metric,
                                            self.ceiling * self.inch - other.ceiling * other.inch) >= 0.0
 
-    def limit(self, r_start: float, r_end: float, inch: bool) -> float:
-        """The largest difference of radii accepted for an arc of these radii (program units)."""
+    def limit(self, r_start: float, r_end: float, inch: bool, chord: float = 0.0) -> float:
+        """The largest difference of radii (with ``of_centre_shift``: move of the centre) accepted for an arc of
+        these radii and this chord (program units)."""
         absolute = self.inch if inch else self.metric
         if self.relative <= 0.0:
             return absolute
-        radius = r_start if self.of_start else max(r_start, r_end)
+        if self.of_centre_shift:
+            shift = self.shift(r_start, r_end, chord)
+            radius = math.sqrt(max((r_start * r_start + r_end * r_end) / 2.0 - shift * shift, 0.0))
+        else:
+            radius = r_start if self.of_start else max(r_start, r_end)
         share = self.relative * radius
         if self.ceiling > 0.0:
             share = min(share, self.ceiling * absolute)
         return max(absolute, share)
 
-    def allows(self, r_start: float, r_end: float, inch: bool) -> bool:
-        """Whether the controller runs an arc with these start and end radii (program units)."""
-        return abs(r_start - r_end) <= self.limit(r_start, r_end, inch) * (1.0 + 1e-9)
+    def judged(self, r_start: float, r_end: float, chord: float = 0.0) -> float:
+        """What the limits bound for an arc of these radii and this chord: the difference of radii, or (with
+        ``of_centre_shift``) the centre's move."""
+        return self.shift(r_start, r_end, chord) if self.of_centre_shift else abs(r_start - r_end)
+
+    @staticmethod
+    def shift(r_start: float, r_end: float, chord: float) -> float:
+        """How far the centre moves to the nearest point of the chord's perpendicular bisector: the programmed
+        centre's distance from it along the chord, (r_start^2 - r_end^2) / (2 chord) (a full circle: none)."""
+        if chord <= 0.0:
+            return 0.0 if r_start == r_end else math.inf
+        return abs(r_start * r_start - r_end * r_end) / (2.0 * chord)
+
+    def centre_move(self, r_start: float, r_end: float, chord: float) -> float:
+        """How far the controller moves the centre of an accepted arc (program units): none for ``SPIRAL``;
+        with the programmed centre at ``shift`` along the chord and h along the bisector from the chord's middle
+        (r_start^2 + r_end^2 = 2 h^2 + chord^2 / 2 + 2 shift^2), ``shift`` for ``NEAREST_CENTRE`` and the distance
+        to the point at sqrt(r_start^2 - chord^2 / 4) along the bisector for ``START_RADIUS``."""
+        if self.runs == SPIRAL:
+            return 0.0
+        along = self.shift(r_start, r_end, chord)
+        if self.runs == NEAREST_CENTRE or not math.isfinite(along):
+            return along
+        quarter = chord * chord / 4.0
+        h = math.sqrt(max((r_start * r_start + r_end * r_end) / 2.0 - quarter - along * along, 0.0))
+        return math.hypot(along, math.sqrt(max(r_start * r_start - quarter, 0.0)) - h)
+
+    def spiral_gap(self, s: tuple[float, float], e: tuple[float, float], c: tuple[float, float],
+                   clockwise: bool, floor: float = -1.0) -> float:
+        """How far the circle this rule runs (about the centre it moves to) lies from a spiral controller's path for
+        the same arc, the spiral from ``s`` to ``e`` about ``c`` whose radius changes evenly with the angle: the
+        largest distance between the two paths, as ``verify`` measures it (``postproc.arc_paths.deviation``,
+        with its ``floor``); 0 for a ``SPIRAL`` rule."""
+        if self.runs == SPIRAL:
+            return 0.0
+        moved = self.centre(s, e, c)
+        spiral = ArcPath(s, e, c, _turn(s, e, c, clockwise), [], [])
+        return deviation(spiral, ArcPath(s, e, moved, _turn(s, e, moved, clockwise), [], []), floor)
+
+    def allows(self, r_start: float, r_end: float, inch: bool, chord: float = 0.0) -> bool:
+        """Whether the controller runs an arc with these start and end radii and this chord (program units;
+        the chord matters only ``of_centre_shift``)."""
+        return self.judged(r_start, r_end, chord) <= self.limit(r_start, r_end, inch, chord) * (1.0 + 1e-9)
 
     def centre(self, s: tuple[float, float], e: tuple[float, float],
                c: tuple[float, float]) -> tuple[float, float]:
@@ -103,10 +164,18 @@ class ArcEndRule:
             return c  # a full circle: its end is its start, on the circle
         mid = (s[0] + dx / 2.0, s[1] + dy / 2.0)
         nx, ny = -dy / chord, dx / chord  # the bisector's direction
+        if self.runs == NEAREST_CENTRE:
+            along = (c[0] - mid[0]) * nx + (c[1] - mid[1]) * ny
+            return mid[0] + along * nx, mid[1] + along * ny
         side = 1.0 if (c[0] - mid[0]) * nx + (c[1] - mid[1]) * ny >= 0.0 else -1.0
         h = math.sqrt(max(r0 * r0 - chord * chord / 4.0, 0.0))
         return mid[0] + side * h * nx, mid[1] + side * h * ny
 
+
+def _turn(s: tuple[float, float], e: tuple[float, float], c: tuple[float, float], clockwise: bool) -> float:
+    """How far an arc from ``s`` to ``e`` about ``c`` turns (radians, negative clockwise; end on start: a turn)."""
+    sweep = arc_sweep(s, e, c, clockwise)
+    return -sweep if clockwise else sweep
 
 TARGET_ARC_END: Final = "target_arc_end"
 """``ctx.run_data`` key of a translation whose target's rule does not cover the source's

@@ -151,10 +151,12 @@ def arc_centre(s: tuple[float, float], e: tuple[float, float], axes: tuple[str, 
     r0 = math.hypot(s[0] - c[0], s[1] - c[1])
     r1 = math.hypot(e[0] - c[0], e[1] - c[1])
     letter = next((_CENTRE_LETTERS[a] for a in offsets if a in _CENTRE_LETTERS), "G")
-    if not rule.allows(r0 / unit, r1 / unit, inch):
-        limit = rule.limit(r0 / unit, r1 / unit, inch)
+    chord = math.hypot(e[0] - s[0], e[1] - s[1]) / unit
+    if not rule.allows(r0 / unit, r1 / unit, inch, chord):
+        limit = rule.limit(r0 / unit, r1 / unit, inch, chord)
+        accepts = "a move of the centre" if rule.of_centre_shift else "a difference"
         raise ArcError(f"arc end point is not on the circle: radius {r0:.4f} mm at the start, "
-                       f"{r1:.4f} mm at the end (the controller accepts a difference up to "
+                       f"{r1:.4f} mm at the end (the controller accepts {accepts} up to "
                        f"{limit:.6g} {'in' if inch else 'mm'} here)", letter)
     if r0 < 10.0 ** -PLACES:
         if round(e[0], PLACES) == round(s[0], PLACES) and round(e[1], PLACES) == round(s[1], PLACES):

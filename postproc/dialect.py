@@ -371,13 +371,19 @@ class Dialect:
             return load_pipeline(Path(path))
 
     @classmethod
+    def arc_end_rule(cls, setup: MachineSetup) -> ArcEndRule:
+        """``ARC_END`` with what the set-up says of this controller's own parameters (a dialect whose limits
+        are machine parameters overrides this: ISG, Fagor)."""
+        return cls.ARC_END
+
+    @classmethod
     def context(cls, file: str, setup: MachineSetup, diagnostics: Diagnostics) -> Context:
         ctx = Context(file, setup, diagnostics, cls.NAME, cls.CYCLE_WORDS)
         ctx.reader = cls.READER
         ctx.stops_before_motion = cls.STOPS_BEFORE_MOTION
         ctx.feed_before_units = cls.FEED_BEFORE_UNITS
         ctx.cutter_rules = cls.cutter_rules(setup)
-        ctx.arc_end = cls.ARC_END
+        ctx.arc_end = cls.arc_end_rule(setup)
         if ctx.cutter_rules is None:
             ctx.run_data[RULES_UNKNOWN_KEY] = cls.cutter_rules_unknown(setup)
         ctx.length_at_axis = cls.LENGTH_AT_PROGRAMMED_AXIS

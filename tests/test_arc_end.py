@@ -240,3 +240,180 @@ def test_a_rule_that_covers_another_accepts_all_it_accepts(a: str, b: str, r: fl
     d = share * 2 * max(second.limit(r, r, inch), 1e-12)
     if first.covers(second) and second.allows(r, r + d, inch):
         assert first.allows(r, r + d, inch)
+
+
+# -- ISG (G165) and Fagor 8070 (G265): the centre moved onto the chord's bisector ----------------------
+def _arc_centres(text: str, dialect: str) -> list[tuple[float, float]]:
+    return [(float(e["cx"]), float(e["cy"])) for e in _events(text, dialect)  # type: ignore[arg-type]
+            if e["move"] in ("cw", "ccw")]
+
+
+def test_isg_turns_about_the_nearest_point_of_the_bisector() -> None:
+    """From (0, 0) to (20, 0) about I10.1: radii 10.1 and 9.9 (0.2 mm apart, which Fanuc's rule refuses). The
+    chord's bisector is x = 10; the programmed (10.1, 0) moves 0.1 mm onto it, to (10, 0), well within
+    P-CHAN-00059's 2 mm: ISG runs the semicircle of radius 10 about (10, 0)."""
+    text = "G1 X0 Y0 F100\nG2 X20 Y0 I10.1 J0\nM30\n"
+    assert _arc_centres(text, "isg") == [(pytest.approx(10.0, abs=1e-9), pytest.approx(0.0, abs=1e-9))]
+    assert not _accepts(text, "fanuc")
+
+
+def test_isg_accepts_a_centre_move_within_five_percent_of_the_corrected_radius() -> None:
+    """(0, 0) to (200, 0) about I102.5: radii 102.5 and 97.5; the move onto x = 100 is
+    (102.5^2 - 97.5^2) / (2 * 200) = 2.5 mm, past P-CHAN-00059's 2 mm but within P-CHAN-00060's 5 % of the
+    corrected radius sqrt((102.5^2 + 97.5^2) / 2 - 2.5^2) = 100 mm (5 mm): run about (100, 0)."""
+    text = "G1 X0 Y0 F100\nG2 X200 Y0 I102.5 J0\nM30\n"
+    assert _arc_centres(text, "isg") == [(pytest.approx(100.0, abs=1e-9), pytest.approx(0.0, abs=1e-9))]
+
+
+def test_isg_refuses_a_centre_move_past_both_limits() -> None:
+    """(0, 0) to (20, 0) about I12.5: radii 12.5 and 7.5; the move is (12.5^2 - 7.5^2) / 40 = 2.5 mm, past
+    2 mm and past 5 % of the corrected radius sqrt((12.5^2 + 7.5^2) / 2 - 2.5^2) = 10 mm (0.5 mm)."""
+    with pytest.raises(ErrorList) as info:
+        _events("G1 X0 Y0 F100\nG2 X20 Y0 I12.5 J0\nM30\n", "isg")
+    assert [str(e) for e in info.value.errors] == [
+        "t.nc:2:11: error: arc end point is not on the circle: radius 12.5000 mm at the start, 7.5000 mm at the "
+        "end (the controller accepts a move of the centre up to 2 mm here)"]
+
+
+def test_isg_limits_are_in_mm_in_an_inch_program() -> None:
+    """P-CHAN-00059 is in 0.1 um whatever the units: in inches (G70) (0, 0) to (1, 0) about I0.6 moves the centre
+    (0.36 - 0.16) / 2 = 0.1 in = 2.54 mm, past 2 mm and past 5 % of sqrt(0.26 - 0.01) = 0.5 in; about I0.55,
+    (0.3025 - 0.2025) / 2 = 0.05 in = 1.27 mm is within 2 mm, and the centre moves to x = 0.5 in."""
+    assert not _accepts("G70 G1 X0 Y0 F10\nG2 X1 Y0 I0.6 J0\nM30\n", "isg")
+    assert _arc_centres("G70 G1 X0 Y0 F10\nG2 X1 Y0 I0.55 J0\nM30\n", "isg") == [
+        (pytest.approx(0.5 * MM, abs=1e-9), pytest.approx(0.0, abs=1e-9))]
+
+
+def test_fagor_moves_the_centre_within_its_difference_of_radii() -> None:
+    """CIRINERR bounds the difference of radii (0.01 mm taken): I10.004 from (0, 0) to (20, 0) has radii
+    10.004 and 9.996 (0.008 mm apart) and runs about (10, 0); I10.006 (0.012 mm apart) is refused."""
+    assert _arc_centres("G1 X0 Y0 F100\nG2 X20 Y0 I10.004 J0\nM30\n", "fagor") == [
+        (pytest.approx(10.0, abs=1e-9), pytest.approx(0.0, abs=1e-9))]
+    assert not _accepts("G1 X0 Y0 F100\nG2 X20 Y0 I10.006 J0\nM30\n", "fagor")
+
+
+@pytest.mark.parametrize("target", ["fanuc", "linuxcnc"])
+def test_an_isg_arc_is_written_about_the_centre_isg_turns_about(target: str) -> None:
+    """The target is given the circle ISG runs (``settle_arc_ends``): I10 J0, the moved centre, not I10.1."""
+    out = _translate("G1 X0 Y0 F100\nG2 X20 Y0 I10.1 J0\nM30\n", "isg", target)
+    (arc,) = [line for line in out.splitlines() if line.startswith(("G2", "G02"))]
+    assert arc.endswith(("I10. J0.", "I10 J0")), arc
+
+
+@pytest.mark.parametrize("target", ["isg", "fagor"])
+def test_a_spiral_a_centre_moving_target_would_run_as_a_circle_is_a_located_error(target: str) -> None:
+    """LinuxCNC runs (10, 0) to (-10.008, 0) clockwise about the origin as a spiral; ISG and Fagor accept it
+    (Fagor's 0.01 mm too) but move the centre onto x = -0.004, by (10.008^2 - 10^2) / (2 * 20.008) = 0.004 mm,
+    and run the circle of radius 10.004 about it. At a share t of the turn the spiral point (10 + 0.008 t at
+    angle -pi t) lies, to first order, 10 + 0.008 t + 0.004 cos(pi t) from the new centre: off the circle by
+    0.004 (2 t - 1 + cos(pi t)), largest where sin(pi t) = 2 / pi, past ``SPIRAL_AS_CIRCLE_MM`` (0.0005 mm)."""
+    text = "G21 G17 G90\nG0 X10 Y0\nG1 F100\nG2 X-10.008 Y0 I-10 J0\nM2\n"
+    t = math.asin(2 / math.pi) / math.pi
+    gap = 0.004 * (2 * t - 1 + math.cos(math.pi * t))
+    with pytest.raises(ErrorList) as info:
+        _translate(text, "linuxcnc", target)
+    (message,) = [str(e) for e in info.value.errors]
+    head = (f"t.nc:4:16: error: the {target} controller runs this arc as a circle about a centre it moves by 0.004 "
+            f"mm: its end radius differs from its start radius by 0.008 mm, and the source's controller runs it as "
+            f"a spiral about the programmed centre, which that circle leaves by ")
+    tail = " mm (more than 0.0005 mm is past what verify vouches for) (translate with --arcs lines:TOL)"
+    assert message.startswith(head) and message.endswith(tail), message
+    assert float(message[len(head):-len(tail)]) == pytest.approx(gap, rel=1e-3)
+
+
+@pytest.mark.parametrize("target", ["isg", "fagor"])
+def test_a_spiral_within_the_bound_reaches_a_centre_moving_target_and_verifies(target: str) -> None:
+    """0.0001 mm off: the target moves the centre by (10.0001^2 - 10^2) / (2 * 20.0001), about 0.00005 mm; the
+    circle stays within 0.00005 * 0.21 mm of the spiral (as above), and verify (0.001 mm) finds the paths the
+    same."""
+    from postproc.simulate.verify import verify_lines
+    text = "G21 G17 G90\nG0 X10 Y0\nG1 F100\nG2 X-10.0001 Y0 I-10 J0\nM2\n"
+    out = _translate(text, "linuxcnc", target)
+    report = verify_lines(io.StringIO(text), io.StringIO(out), file_in="t.nc", file_out="o.nc", source="linuxcnc",
+                          target=target)
+    assert report.ok, report
+
+
+def test_the_circle_about_a_moved_centre_stays_within_its_bound_of_the_spiral() -> None:
+    """For seeded arcs of every sweep: ``centre_move`` is the distance to the centre ``centre`` returns; the
+    spiral about the programmed centre, sampled densely here, lies within ``spiral_gap`` (to its sampling)
+    and within |r1 - r0| + 2 * ``centre_move`` (the triangle inequality) of the circle each moving rule runs."""
+    from postproc.arc_end import NEAREST_CENTRE
+    rnd = random.Random(26)
+    for runs in (NEAREST_CENTRE, START_RADIUS):
+        rule = ArcEndRule(metric=1.0, inch=1.0, runs=runs)
+        for _ in range(300):
+            r0 = 10 ** rnd.uniform(-1, 3)
+            d = rnd.uniform(-1e-3, 1e-3)
+            a0, sweep = rnd.uniform(0, 2 * math.pi), rnd.uniform(0.01, 2 * math.pi - 0.01)
+            s = (r0 * math.cos(a0), r0 * math.sin(a0))
+            e = ((r0 + d) * math.cos(a0 + sweep), (r0 + d) * math.sin(a0 + sweep))
+            c = rule.centre(s, e, (0.0, 0.0))
+            moved = rule.centre_move(r0, r0 + d, math.hypot(e[0] - s[0], e[1] - s[1]))
+            assert math.hypot(*c) == pytest.approx(moved, rel=1e-5, abs=1e-9)
+            radius = math.hypot(s[0] - c[0], s[1] - c[1])
+            worst = 0.0
+            for i in range(1001):
+                t = i / 1000
+                rho, angle = r0 + d * t, a0 + sweep * t
+                off = abs(math.hypot(rho * math.cos(angle) - c[0], rho * math.sin(angle) - c[1]) - radius)
+                assert off <= abs(d) + 2 * moved + 1e-9
+                worst = max(worst, off)
+            gap = rule.spiral_gap(s, e, (0.0, 0.0), clockwise=False)
+            assert 0.99 * worst - 1e-12 <= gap <= 1.001 * worst + 1e-12
+
+
+def test_a_centre_move_whose_circle_stays_near_the_spiral_translates_and_verifies() -> None:
+    """A quarter turn from (10, 0) to (0, 10.002) about the origin: ISG moves the centre by
+    (10.002^2 - 10^2) / (2 * |(-10, 10.002)|) = 0.0014 mm, past verify's half tolerance, yet its circle stays within
+    0.00005 mm of LinuxCNC's spiral: the arc translates, and verify (which compares the paths, not the
+    centres) gives the largest distance between them, here measured independently on 20,001 points of the spiral
+    against the circle (the nearest point of a circle lies on the ray from its centre)."""
+    from postproc.simulate.verify import verify_lines
+    text = "G21 G17 G90\nG0 X10 Y0\nG1 F100\nG3 X0 Y10.002 I-10 J0\nM2\n"
+    moved = (10.002 ** 2 - 100) / (2 * math.hypot(10, 10.002))
+    out = _translate(text, "linuxcnc", "isg")
+    # the circle: centre on the chord's bisector, ``moved`` from the origin towards the chord's middle's far side
+    chord = (-10.0, 10.002)
+    length = math.hypot(*chord)
+    normal = (-chord[1] / length, chord[0] / length)  # the bisector's direction
+    middle = (5.0, 5.001)
+    along = -middle[0] * normal[0] - middle[1] * normal[1]  # the origin's place along it
+    centre = (middle[0] + along * normal[0], middle[1] + along * normal[1])
+    assert math.hypot(*centre) == pytest.approx(moved, rel=1e-6)
+    radius = math.hypot(10 - centre[0], -centre[1])
+    worst = 0.0
+    for i in range(20001):
+        t = i / 20000
+        rho, angle = 10 + 0.002 * t, math.pi / 2 * t
+        worst = max(worst, abs(math.hypot(rho * math.cos(angle) - centre[0], rho * math.sin(angle) - centre[1]) - radius))
+    assert 1e-5 < worst < 0.0005  # (4.2e-5 mm: 30 times under the centre's move)
+    report = verify_lines(io.StringIO(text), io.StringIO(out), file_in="t.nc", file_out="o.nc", source="linuxcnc",
+                          target="isg")
+    assert report.ok, report
+    assert report.max_deviation == pytest.approx(worst, abs=1e-6)
+
+
+def test_the_set_up_gives_isg_and_fagor_their_machines_limits(tmp_path: object) -> None:
+    """``<Controller centreShiftLimit centreShiftShare>`` (ISG P-CHAN-00059/00060 in mm and as a share) and
+    ``<Controller arcRadiusError arcRadiusShare>`` (Fagor CIRINERR/CIRINFACT), read from the XML: the 0.1 mm
+    move of I10.1 above is refused under 0.05 mm and 0.1 % of 10 mm; Fagor's 0.2 mm difference of radii is
+    accepted under 0.25 mm, and each limit is its dialect's alone (the other dialect keeps its default)."""
+    from pathlib import Path
+
+    from postproc.setup.machine_setup import load_setup
+    path = Path(str(tmp_path)) / "m.xml"
+    path.write_text('<MachineSetup><Controller centreShiftLimit="0.05" centreShiftShare="0.001" '
+                    'arcRadiusError="0.25"/></MachineSetup>\n')
+    setup = load_setup(path)
+    text = "G1 X0 Y0 F100\nG2 X20 Y0 I10.1 J0\nM30\n"
+
+    def runs(dialect: str) -> bool:
+        try:
+            list(toolpath_events(io.StringIO(text), file="t.nc", dialect=dialect, setup=setup))
+        except ErrorList:
+            return False
+        return True
+
+    assert not runs("isg") and runs("fagor")
+    assert _accepts(text, "isg") and not _accepts(text, "fagor")  # the defaults: 2 mm / 5 %, 0.01 mm

@@ -235,10 +235,12 @@ def test_verify_accepts_the_chords_and_refuses_them_without_the_option(tmp_path)
 def test_verify_finds_a_chord_off_its_arc() -> None:
     source = "G21 G90 G17 F100\nG0 X0 Y0\nG2 X10 Y0 R5\nM2\n"
     out = _translate(source, "lines:1.5")
-    bad = out.replace("G1 X5. Y5.", "G1 X5. Y4.6")  # the chords' middles (2.5, 2.3), (7.5, 2.3): 1.603 inside
+    bad = out.replace("G1 X5. Y5.", "G1 X5. Y4.6")  # the chords' middles (2.5, 2.3), (7.5, 2.3): 1.603 inside;
+    # nearer still where the chord from (0, 0) to (5, 4.6) passes nearest the centre (5, 0): |5 * 4.6| / |(5, 4.6)|
+    # = 3.385 from it (by hand: the foot of the perpendicular, at 0.54 of the chord), 1.615 inside the arc
     report = verify_lines(io.StringIO(source), io.StringIO(bad), file_in="a", file_out="b", source="linuxcnc",
                           target="linuxcnc", chord_tolerance=1.5)
-    assert not report.ok and report.chord_deviation == pytest.approx(5 - math.hypot(2.5, 2.3), abs=1e-6)
+    assert not report.ok and report.chord_deviation == pytest.approx(5 - 5 * 4.6 / math.hypot(5, 4.6), abs=1e-6)
     short = out.replace("G1 X10. Y0.", "G1 X9. Y0.")
     report = verify_lines(io.StringIO(source), io.StringIO(short), file_in="a", file_out="b", source="linuxcnc",
                           target="linuxcnc", chord_tolerance=1.5)

@@ -114,6 +114,7 @@ def test_fusion_mach3_reference_returns_reach_the_home_the_setup_gives(target: s
 
     from postproc.api import translate
     from postproc.errors import Diagnostics, ErrorLevel
+    from postproc.lowering.arcs import parse_arc_option
     from postproc.setup.machine import AxisTravel
     from postproc.simulate.verify import verify_lines
 
@@ -121,11 +122,14 @@ def test_fusion_mach3_reference_returns_reach_the_home_the_setup_gives(target: s
     setup = harness._setup(program)
     text = harness._source(program)
     out = io.StringIO(newline="")
+    # the program's 0.0001 in semicircles: ISG and Fagor would move their centres (their arc rule), so as chords
     translate(io.StringIO(text, newline="").readlines(), out, file=program.path, source="mach3", target=target,
-              setup=setup, on_unsupported="error", diagnostics=Diagnostics(ErrorLevel.RAISE, warn_stream=io.StringIO()))
+              setup=setup, on_unsupported="error", diagnostics=Diagnostics(ErrorLevel.RAISE, warn_stream=io.StringIO()),
+              arcs=parse_arc_option("lines:0.001"))
     lines = [line.strip() for line in out.getvalue().splitlines()]
     assert [line for line in lines if line in spelling] == spelling
-    args = dict(file_in=program.path, file_out="out", source="mach3", target=target, target_setup=setup)
+    args = dict(file_in=program.path, file_out="out", source="mach3", target=target, target_setup=setup,
+                chord_tolerance=0.001)
     written = out.getvalue().splitlines(keepends=True)
     source = io.StringIO(text, newline="").readlines()
     assert verify_lines(source, written, setup=setup, **args).ok  # type: ignore[arg-type]

@@ -107,7 +107,10 @@ def test_a_deviation_within_the_tolerance_is_ok() -> None:
 def test_an_arc_the_long_way_round_is_a_deviation() -> None:
     report = check(G90, G90.replace("R10.", "R-10."))
     assert not report.ok and report.where == (10, 10)
-    assert report.max_deviation > 20  # the centre moved by 14.1 mm, the arc is 3x as long
+    # by hand: X50 Y40 to X40 Y50, R10 a quarter turn about (40, 40), R-10 three quarters about (50, 50);
+    # the long way passes (50, 50) + 10 (1, 1)/sqrt(2), 10 sqrt(2) + 10 from (40, 40) on the ray through the
+    # quarter's middle, so 10 sqrt(2) from the quarter (its radius 10 along that ray); the ends are the same
+    assert report.max_deviation == pytest.approx(10.0 * 2 ** 0.5, abs=1e-6)
 
 
 def test_a_different_kind_of_move_is_a_structural_mismatch() -> None:

@@ -9,11 +9,13 @@ What DIALECTS.md marks uncertain for the 8070 [?] is kept verbatim (``reader``).
 
 from __future__ import annotations
 
+from dataclasses import replace
 from typing import TYPE_CHECKING, Callable, Iterator
 
 from postproc.context import Context
 from postproc.comments import CommentSyntax
-from postproc.arc_end import NEUTRAL_ARC_END
+from postproc.arc_end import NEAREST_CENTRE, ArcEndRule
+from postproc.state import MM_PER_INCH
 from postproc.dialect import Dialect, Lazy, Reader
 from postproc.errors import Diagnostics
 from postproc.hookspecs import hookimpl
@@ -50,11 +52,28 @@ def resolve_radius_where_d_cannot(blocks: Iterator[Block], ctx: Context, target:
 
 class Fagor(Dialect):
     NAME = "fagor"
-    ARC_END = NEUTRAL_ARC_END
-    """Not yet Fagor's own: the 8070's power-on G265 corrects the centre within the machine parameters CIRINERR
-    (absolute) or CIRINFACT (relative); G264 runs the start radius about the programmed centre [K: Fagor
-    8070 programming manual, arc centre correction G264/G265]. The parameters' defaults and where G265 puts
-    the centre are not known [?], so the neutral rule (0.01 mm, a spiral) stays until they are."""
+    ARC_END = ArcEndRule(metric=0.01, inch=0.01 / MM_PER_INCH, runs=NEAREST_CENTRE)
+    """G265, the state at power-on, after M02/M30 and after a reset, moves the centre of an arc whose start and
+    end radii differ so that an arc runs between the programmed points "as close as possible to the defined
+    arc", where the difference of radii is within the absolute tolerance CIRINERR or the relative one
+    CIRINFACT (either suffices), else an error [K: Fagor CNC 8070 programming manual (soft V02.0x) 6.3.6 "Arc
+    center correction (G264/G265)"]. The least move, onto the chord's perpendicular bisector
+    (``NEAREST_CENTRE``), is taken as that arc [?]. The two parameters' defaults are not in the manuals found
+    [?]: 0.01 mm absolute (the neutral rule) and no relative share are taken unless the set-up gives the
+    machine's (``arc_end_rule``). G264 (start radius about the programmed centre) is not read."""
+
+    @classmethod
+    def arc_end_rule(cls, setup: MachineSetup) -> ArcEndRule:
+        """``ARC_END`` with the machine's CIRINERR/CIRINFACT (``<Controller arcRadiusError arcRadiusShare>``, in mm
+        whatever the program's units)."""
+        limit, share = setup.controller.arc_radius_error, setup.controller.arc_radius_share
+        rule = cls.ARC_END
+        if limit is None and share is None:
+            return rule
+        metric = rule.metric if limit is None else limit
+        return replace(rule, metric=metric, inch=metric / MM_PER_INCH,
+                       relative=rule.relative if share is None else share)
+
     DESCRIPTION = "Fagor CNC 8070 milling: Z/I/K drilling words, G70/G71 units, G159 offsets, P parameters"
     READER = Lazy[type[Reader]](".reader:FagorReader")
     """Imported when a run first reads Fagor (``Lazy``), as are the writer and the syntax objects (with the

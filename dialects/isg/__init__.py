@@ -9,10 +9,12 @@ numbers collide with Fanuc's are told apart.
 
 from __future__ import annotations
 
+from dataclasses import replace
 from typing import TYPE_CHECKING, Callable, Iterator
 
 from postproc.comments import CommentSyntax
-from postproc.arc_end import NEUTRAL_ARC_END
+from postproc.arc_end import NEAREST_CENTRE, ArcEndRule
+from postproc.state import MM_PER_INCH
 from postproc.dialect import Dialect, Lazy, Reader
 from postproc.hookspecs import hookimpl
 from postproc.lowering.structured_jumps import nest_jumps_keeping_equality
@@ -42,12 +44,32 @@ def resolve_radius_where_d_cannot(blocks: Iterator[Block], ctx: Context, target:
 
 class Isg(Dialect):
     NAME = "isg"
-    ARC_END = NEUTRAL_ARC_END
-    """Not yet ISG's own: its power-on G165 moves the programmed centre so that a circle runs through both end
-    points, alarming when the move exceeds P-CHAN-00059 (2 mm by default) or P-CHAN-00060 (5 % of the radius)
-    [V: Beckhoff TF5200 programming manual, G164/G165; channel parameters]; under G164 the radius changes
-    linearly within P-CHAN-00171/00172 [V: same]. Where G165 puts the new centre is not stated [?], so the
-    neutral rule (0.01 mm, a spiral) stays until it is."""
+    ARC_END = ArcEndRule(metric=2.0, inch=2.0 / MM_PER_INCH, relative=0.05, runs=NEAREST_CENTRE,
+                         of_centre_shift=True)
+    """G165, the power-on state, moves the programmed centre of an I/J/K arc so that a circle runs from the
+    start to the programmed end, and alarms only where the move exceeds both P-CHAN-00059 ``mittelpkt_diff``
+    (in 0.1 um whatever the program's units, default 20000: 2 mm) and P-CHAN-00060 ``mittelpkt_faktor`` (in
+    0.1 %, default 50: 5 %) times the corrected radius; an R arc is never corrected [V: Beckhoff TF5200
+    programming manual "Controlling centre point offset in circle (G164/G165)"; channel parameter pages
+    P-CHAN-00059/00060; ISG kernel "Settings for circle centre point correction"]. That the alarm needs both
+    limits exceeded (the larger of the two applies) is read from "whether ... and whether ... If this is the
+    case" [?]. Where the new centre lies is not stated beyond "the more precise the programmed centre, the
+    smaller the move" and "the programmed centre must lie within the permissible move of the corrected one":
+    the least move, onto the chord's perpendicular bisector (``NEAREST_CENTRE``), is taken [?]. G164 (a spiral
+    within P-CHAN-00171/00172) is not read."""
+
+    @classmethod
+    def arc_end_rule(cls, setup: MachineSetup) -> ArcEndRule:
+        """``ARC_END`` with the machine's P-CHAN-00059/00060 (``<Controller centreShiftLimit centreShiftShare>``,
+        in mm whatever the program's units)."""
+        limit, share = setup.controller.centre_shift_limit, setup.controller.centre_shift_share
+        rule = cls.ARC_END
+        if limit is None and share is None:
+            return rule
+        metric = rule.metric if limit is None else limit
+        return replace(rule, metric=metric, inch=metric / MM_PER_INCH,
+                       relative=rule.relative if share is None else share)
+
     DESCRIPTION = "Beckhoff TwinCAT CNC (ISG kernel) milling: P parameters, $ control flow, %L subroutines"
     READER = Lazy[type[Reader]](".reader:IsgReader")
     """Imported when a run first reads ISG (``Lazy``), as are the writer and the syntax objects."""

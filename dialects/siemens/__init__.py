@@ -78,14 +78,21 @@ class Siemens(Dialect):
     """Alarm 14040 (error in end point of circle) when the start and end radii differ by more than MD 21000
     ``CIRCLE_ERROR_CONST`` for small radii, or by more than the radius times MD 21010 ``CIRCLE_ERROR_FACTOR``
     for large ones, i.e. by more than the larger of the two [K: SINUMERIK 840D sl diagnostics manual, alarm
-    14040]. The machine data are in mm whatever the program's units; their values 0.01 mm and 0.001 are the
-    defaults as remembered, not confirmed from a machine data list [?]. The same alarm text says an accepted
-    circle turns about a new centre on the chord's perpendicular bisector at the start radius (``START_RADIUS``)
-    [K]; that is not applied yet: near half a turn such a centre moves far for a small difference (0.26 mm
-    for the 0.0001 in a four-decimal inch arc carries, tests/corpus/linuxcnc/inside_corners_trimmed.ngc to
-    SINUMERIK), so the writer would first have to write arcs exact enough for it, and the alarm's second
-    check (the centre's direction within sqrt(0.001) rad) would have to be modelled too. Until then the
-    simulation draws the spiral through the programmed centre [?]."""
+    14040, as copied by helmancnc.com]. The machine data are in mm whatever the program's units; their values
+    0.01 mm and 0.001 are the defaults as remembered, not confirmed from a machine data list [?] (the 840C's
+    predecessor datum, MD 7, defaulted to 5 units of the input system [K: 840C installation guide 6.2]).
+
+    Path: the same alarm text says a new centre is computed with the start radius on the chord's
+    perpendicular bisector (``START_RADIUS``), and that the angle at the start between the programmed and the
+    new centre must stay under sqrt(0.001) rad [K]. Not switched on (the simulation draws the spiral through
+    the programmed centre [?]), on this evidence: a start-radius centre is ill-conditioned near half a turn,
+    where its move is sqrt(2 r delta) for a start radius delta over half the chord. A four-decimal inch
+    semicircle (0.0001 in off, tests/corpus/linuxcnc/inside_corners_trimmed.ngc, r 0.2707 in) moves it
+    0.13 mm, and even the writer's own rounding (``postproc.numbers.EXACT``, 5e-7 mm) on an exact semicircle of
+    6.9 mm moves it sqrt(2 * 6.9 * 1e-6) = 0.0037 mm, past verify's 0.001 mm: switched on, every SINUMERIK
+    semicircle this project writes would run elsewhere than it simulates. The cure at the cause is writing
+    arcs within reach of half a turn split into pieces of at most about 120 degrees about the exact centre
+    (as ``--arcs r`` splits), where the start-radius move stays near the rounding; not done yet."""
 
     PROGRAM_NUMBERS = True
     """``%_N_NAME_MPF`` names the main program."""

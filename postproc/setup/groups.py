@@ -286,6 +286,17 @@ class ControllerSettings(SetupGroup):
     keeps the tool length in force (0, false) or suppresses it too (1, true) [V: SINUMERIK 802D sl/840D ISO Milling
     programming manual 04.07, 3.1.1]. None: not given, and such a block under a tool length is kept verbatim
     (refused elsewhere, naming this attribute)."""
+    centre_shift_limit: float | None = setting(None, ge=0)
+    """ISG: how far (mm) G165 may move an arc's centre, P-CHAN-00059 ``mittelpkt_diff`` (0.1 um) / 10000.
+    None: its default, 2 mm (``dialects/isg`` ``ARC_END``)."""
+    centre_shift_share: float | None = setting(None, ge=0)
+    """ISG: the share of the corrected radius G165 may move the centre, P-CHAN-00060 ``mittelpkt_faktor``
+    (0.1 %) / 1000. None: its default, 0.05."""
+    arc_radius_error: float | None = setting(None, ge=0)
+    """Fagor 8070: the difference (mm) of an arc's start and end radii it accepts, CIRINERR. None: 0.01 mm
+    taken (its default is not documented)."""
+    arc_radius_share: float | None = setting(None, ge=0)
+    """Fagor 8070: the same as a share of the radius, CIRINFACT (as a fraction, not %). None: none taken."""
     rotation_incremental: bool = False
     """A coordinate rotation's angle R follows G90/G91: under G91 it is added to the angle of the program's
     previous rotation (Fanuc parameter 5400#0 RIN = 1 [V: 0i-A connection manual B-63503EN, 5400];

@@ -1,7 +1,8 @@
 """``verify --arcs lines:TOL``: an arc of the source against the run of straight feeds its translation
 cut it into (``translate --arcs lines:TOL``), checked on its own terms rather than with the translator's
 arithmetic: every chord end lies on the arc (the radius interpolated along it, as the simulator draws
-an arc whose end radius differs), every chord's middle lies within TOL of it, the axes outside the
+an arc whose end radius differs), every chord's middle and its point nearest the centre lie within TOL of it
+(along the rays from the centre: ``postproc.arc_paths``'s matching of two arcs), the axes outside the
 plane move in proportion to the angle (a helix), each chord turns the arc's way by at most half a turn,
 and together they end where the arc ends, at its feed.
 
@@ -17,7 +18,7 @@ from __future__ import annotations
 
 import math
 from itertools import zip_longest
-from typing import Any, Iterable, Iterator, Protocol
+from typing import Any, Callable, Iterable, Iterator, Protocol
 
 from ..geometry import PLANE_INDEX
 from .normal_move import Move, same_feed
@@ -108,6 +109,25 @@ def _cut(chord: Move, at: dict[str, float]) -> tuple[Move, Move]:
     return head, tail
 
 
+def _inside(s: dict[str, float], e: dict[str, float], c: tuple[float, float], pi: str, pj: str, t0: float, t: float,
+            step: float, angle: Callable[[dict[str, float]], float], turn: float,
+            radius_at: Callable[[float], float]) -> float:
+    """How far inside the arc the chord ``s``-``e`` (turning ``step`` of it, from the share ``t0`` to ``t``) comes at
+    its point nearest the centre: a chord's distance from the centre is least there (its ends may lie off the
+    circle unevenly, so that point is not always its middle), and the arc's radius is the one at that point's
+    angle. Along the rays from the centre, as ``postproc.arc_paths`` matches two arcs."""
+    sx, sy = s.get(pi, 0.0), s.get(pj, 0.0)
+    dx, dy = e.get(pi, 0.0) - sx, e.get(pj, 0.0) - sy
+    length2 = dx * dx + dy * dy
+    if length2 == 0.0 or step <= 0.0:
+        return 0.0
+    u = min(1.0, max(0.0, ((c[0] - sx) * dx + (c[1] - sy) * dy) / length2))
+    p = {pi: sx + u * dx, pj: sy + u * dy}
+    turned = (turn * (angle(p) - angle(s))) % (2.0 * math.pi)
+    share = t0 + (t - t0) * min(turned / step, 1.0)
+    return abs(radius_at(share) - math.hypot(p[pi] - c[0], p[pj] - c[1]))
+
+
 def _chords(arc: Move, first: Move, rest: _Pushback, report: Report) -> Move:
     i, j, _ = PLANE_INDEX[arc.plane or "XY"]
     pi, pj = "xyz"[i], "xyz"[j]
@@ -151,7 +171,8 @@ def _chords(arc: Move, first: Move, rest: _Pushback, report: Report) -> Move:
             break
         mid = {k: (s.get(k, 0.0) + e.get(k, 0.0)) / 2.0 for k in (pi, pj)}
         deviation = max(abs(math.hypot(e.get(pi, 0.0) - c[0], e.get(pj, 0.0) - c[1]) - radius_at(t)),
-                        abs(radius_at((t0 + t) / 2.0) - math.hypot(mid[pi] - c[0], mid[pj] - c[1])))
+                        abs(radius_at((t0 + t) / 2.0) - math.hypot(mid[pi] - c[0], mid[pj] - c[1])),
+                        _inside(s, e, c, pi, pj, t0, t, step, angle, turn, radius_at))
         for k in along:
             expected = arc.start.get(k, 0.0) + (arc.end[k] - arc.start.get(k, 0.0)) * t
             deviation = max(deviation, abs(e.get(k, 0.0) - expected))

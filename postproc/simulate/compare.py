@@ -12,6 +12,7 @@ from typing import Any, Final, Iterable, Iterator
 from mypy_extensions import mypyc_attr
 
 from ..lowering.inverse_time import per_minute
+from .arc_moves import arc_deviation
 from .chords import pair_with_chords
 from .events import MOVES_THE_TOOL, Event
 from .normal_move import FEED_TOLERANCE as FEED_TOLERANCE, Move, same_feed as _same_feed  # (public names here too)
@@ -23,6 +24,7 @@ _hypot: Final = math.hypot
 """Compiled, ``math.hypot`` is an attribute look-up on the module each call; a Final is a C static."""
 OMIT: Final = "omit"
 """A ``<ForeignCodes>`` code left out (``postproc.setup.foreign_codes.OMIT``)."""
+_HALF_TURN: Final = math.pi
 EVENT_TOLERANCE: Final = 1e-6
 """Numbers in machine events (dwell seconds, angles) compare within this."""
 @mypyc_attr(allow_interpreted_subclasses=True)
@@ -357,9 +359,12 @@ def _differ(a: Move | Event | None, b: Move | Event | None, report: Report) -> s
         return None  # no further apart than the pair furthest apart so far (measured only where it is)
     apart = [d0, d1, d2][:n] if more is None else [d0, d1, d2, *more]
     dev = norm(apart)
-    if a.centre is not None and b.centre is not None:
-        dev = max(dev, _hypot(a.centre[0] - b.centre[0], a.centre[1] - b.centre[1]),
-                  abs(a.sweep * a.radius - b.sweep * b.radius))
+    if a.centre is not None and b.centre is not None and (a.centre != b.centre or abs(a.sweep - b.sweep) >= _HALF_TURN):
+        # two controllers' paths for the arc (each centre where its own rule puts it): the largest distance
+        # between them (``postproc.arc_paths``), decided by a bound where it cannot exceed the largest so far;
+        # about one centre, turning within half a turn of each other, the paths lie apart at most as far as
+        # their ends (radii and angles change evenly; the start's distance is the pair before's end's)
+        dev = max(dev, arc_deviation(a, b, report.max_deviation if report.where is not None else -1.0))
     if report.where is None or dev > report.max_deviation:
         report.max_deviation = dev
         report.where = (a.last_line, b.last_line)

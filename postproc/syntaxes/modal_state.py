@@ -18,7 +18,7 @@ from typing import Final, NoReturn
 
 from postproc.block_rules import ZERO_FEED, ArcError, arc_centre, check_values, needs_feed, per_rev_problem
 from postproc.control import ASSIGN, CONTROL
-from postproc.arc_end import TARGET_ARC_END, ArcEndRule
+from postproc.arc_end import SPIRAL, TARGET_ARC_END, ArcEndRule
 from postproc.errors import ProgramError, UnsupportedError
 from postproc.event_order import MOVING, after_motion
 from postproc.geometry import ARC_TOLERANCE_MM, PLACES
@@ -228,11 +228,15 @@ def _check_arc(block: Block, ctx: Context, motion: Motion) -> None:
         rule = ctx.arc_end
         always = rule.inch * MM_PER_INCH if scale != 1.0 else rule.metric  # accepted whatever the radius
         r1 = hypot(e1 - c1, e2 - c2)
-        if abs(r0 - r1) <= always and r0 >= _SMALLEST:
+        if rule.of_centre_shift:  # the move onto the chord's bisector, (r0^2 - r1^2) / (2 chord), within the limit
+            common = abs(r0 * r0 - r1 * r1) <= 2.0 * always * hypot(e1 - s1, e2 - s2)
+        else:
+            common = abs(r0 - r1) <= always
+        if common and r0 >= _SMALLEST:
             target = ctx.run_data.get(TARGET_ARC_END)
             if target is None:
                 return  # the common arc: its end on its circle, its centre away from its start
-            _target_accepts(block, ctx, motion, target, r0 / scale, r1 / scale, scale != 1.0)
+            _target_accepts(block, ctx, motion, target, (s1, s2), (e1, e2), (c1, c2), scale)
             return
     else:
         radius *= scale
@@ -248,26 +252,48 @@ def _check_arc(block: Block, ctx: Context, motion: Motion) -> None:
     target = ctx.run_data.get(TARGET_ARC_END)
     if target is not None and radius is None and centre is not None:
         c1, c2 = s1 + offsets.get(a1, 0.0), s2 + offsets.get(a2, 0.0)
-        _target_accepts(block, ctx, motion, target, hypot(s1 - c1, s2 - c2) / scale, hypot(e1 - c1, e2 - c2) / scale,
-                        scale != 1.0)
+        _target_accepts(block, ctx, motion, target, (s1, s2), (e1, e2), (c1, c2), scale)
 
 
-def _target_accepts(block: Block, ctx: Context, motion: Motion, target: tuple[str, ArcEndRule], r0: float,
-                    r1: float, inch: bool) -> None:
-    """Refuse an arc (radii in program units) the translation's target would refuse: the source's controller
-    runs it as a spiral, which no arc of the target's reproduces (``postproc.arc_end.TARGET_ARC_END``)."""
+def _target_accepts(block: Block, ctx: Context, motion: Motion, target: tuple[str, ArcEndRule],
+                    s: tuple[float, float], e: tuple[float, float], c: tuple[float, float], scale: float) -> None:
+    """Refuse an arc (start, end, programmed centre in mm; ``scale`` mm per program unit) the source's
+    controller runs as a spiral where the translation's target would refuse it, or would run it as a circle
+    about a centre it moves that leaves that spiral by more than ``SPIRAL_AS_CIRCLE_MM``
+    (``postproc.arc_end.TARGET_ARC_END``)."""
     name, rule = target
-    if rule.allows(r0, r1, inch):
-        return
+    inch = scale != 1.0
     unit = "in" if inch else "mm"
+    r0 = hypot(s[0] - c[0], s[1] - c[1]) / scale
+    r1 = hypot(e[0] - c[0], e[1] - c[1]) / scale
+    chord = hypot(e[0] - s[0], e[1] - s[1]) / scale
+    if rule.allows(r0, r1, inch, chord):
+        if rule.runs == SPIRAL:
+            return
+        gap = rule.spiral_gap(s, e, c, motion.mode == "cw", SPIRAL_AS_CIRCLE_MM)
+        if gap <= SPIRAL_AS_CIRCLE_MM:
+            return
+        moved = rule.centre_move(r0, r1, chord)
+        problem = (f"the {name} controller runs this arc as a circle about a centre it moves by {moved:.6g} {unit}: "
+                   f"its end radius differs from its start radius by {abs(r0 - r1):.6g} {unit}, and the source's "
+                   f"controller runs it as a spiral about the programmed centre, which that circle leaves by "
+                   f"{gap:.6g} mm (more than {SPIRAL_AS_CIRCLE_MM:g} mm is past what verify vouches for)")
+    else:
+        problem = (f"the {name} controller refuses this arc: its end radius differs from its start radius by "
+                   f"{abs(r0 - r1):.6g} {unit}, and it accepts {rule.limit(r0, r1, inch, chord):.6g} {unit} here; "
+                   f"the source's controller runs it as a spiral, which no arc of the target reproduces")
     for axis in motion.axes:  # the block is refused: after it the tool's place is unknown to later checks
         ctx.state.position[axis] = None
     letter = next((_CENTRE_LETTERS[a] for a in motion.center if a in _CENTRE_LETTERS), "G") if motion.center else "G"
-    raise UnsupportedError(
-        f"the {name} controller refuses this arc: its end radius differs from its start radius by "
-        f"{abs(r0 - r1):.6g} {unit}, and it accepts {rule.limit(r0, r1, inch):.6g} {unit} here; the source's "
-        f"controller runs it as a spiral, which no arc of the target reproduces (translate with --arcs lines:TOL)",
-        ctx.at(block, ctx.column_of(block, letter)))
+    raise UnsupportedError(f"{problem} (translate with --arcs lines:TOL)", ctx.at(block, ctx.column_of(block, letter)))
+
+
+SPIRAL_AS_CIRCLE_MM: Final = 0.0005
+"""How far the circle a target runs about the centre it moves may leave the source's spiral
+(``ArcEndRule.spiral_gap``, the distance ``verify`` measures between the two paths): half verify's default
+tolerance (as ``postproc.lowering.arcs.R_FORM_TOLERANCE_MM``). How far the centre moves does not matter:
+verify compares the paths, not the centres (a 4-decimal CAM arc's centre moves 0.0007 mm where its circle
+stays within 0.000001 mm of the spiral)."""
 
 
 _SMALLEST: Final = 10.0 ** -PLACES
