@@ -11,7 +11,8 @@ from ..setup.machine_setup import MachineSetup
 from ..dialect import Dialect
 from ..drawing.backplot import Backplot
 from ..simulate.event_text import EventValueError, write_lines
-from ..simulate.toolpath import Event, start_position, toolpath_events
+from ..reading import gc_paused
+from ..simulate.toolpath import Event, start_position, toolpath_stream
 
 
 def export_toolpath(lines: Iterable[str], out: Any, *, file: str, dialect: str | type[Dialect],
@@ -20,18 +21,24 @@ def export_toolpath(lines: Iterable[str], out: Any, *, file: str, dialect: str |
                     arguments: Mapping[str, float] | None = None) -> None:
     """Write a program's toolpath to ``out``: JSON lines or SVG (text streams), PNG (a binary stream).
     ``on_unsupported="warn"``: a move beyond the set-up's travel is a warning. ``arguments``: a macro
-    file's call arguments (``toolpath_events``)."""
+    file's call arguments (``postproc.simulate.toolpath.toolpath_events``)."""
     setup = setup or MachineSetup()
-    events = toolpath_events(lines, file=file, dialect=dialect, setup=setup, diagnostics=diagnostics,
-                             on_unsupported=on_unsupported, arguments=arguments)
-    if fmt == "jsonl":
-        write_jsonl(events, out, file)
-    elif fmt in ("svg", "png"):
-        from ..plugins import default_registry
-        reading = default_registry().dialect(dialect) if isinstance(dialect, str) else dialect
-        write_backplot(events, out, fmt, start_position(setup), reading.reads_lathe(setup))
-    else:
+    if fmt not in ("jsonl", "svg", "png"):
         raise UsageError(f"unknown toolpath format {fmt!r} (jsonl, svg or png)")
+    diagnostics = diagnostics or Diagnostics()
+    # ``toolpath_events`` without its Python generator: the writer pulls the simulator's compiled stream
+    # itself (a ``yield from`` in interpreted code cost ~3,300 instructions an event: callgrind,
+    # ``benchmarks/callgrind.sh fanuc toolpath 0``); its checks are made here, as it makes them at the end
+    with gc_paused():
+        events = toolpath_stream(lines, file=file, dialect=dialect, setup=setup, diagnostics=diagnostics,
+                                 on_unsupported=on_unsupported, arguments=arguments)
+        if fmt == "jsonl":
+            write_jsonl(events, out, file)
+        else:
+            from ..plugins import default_registry
+            reading = default_registry().dialect(dialect) if isinstance(dialect, str) else dialect
+            write_backplot(events, out, fmt, start_position(setup), reading.reads_lathe(setup))
+    diagnostics.check()
 
 
 def write_backplot(events: Iterable[Event], out: Any, fmt: str, start: dict[str, float], lathe: bool) -> None:

@@ -184,7 +184,7 @@ class Moves:
         pos = self.pos
         out = dict(pos)
         incremental = self.incremental and not absolute
-        shift = self.shift if not machine and not incremental else None
+        shift = self.shift if not machine and not incremental and self.shift else None  # (tested once, not a word)
         increments = self.increments  # empty on a mill: one test of an empty dict per word
         factors = self.factors
         for axis, value in axes.items():
@@ -203,7 +203,7 @@ class Moves:
                 raise ProgramError(f"axis {axis} is not on this machine (axes {''.join(self.axes)})",
                                    self._at(block, axis))
             v = value * factor
-            out[axis] = pos[axis] + v if incremental else v + shift.get(axis, 0.0) if shift else v
+            out[axis] = pos[axis] + v if incremental else v + shift.get(axis, 0.0) if shift is not None else v
         return out
 
 
@@ -675,9 +675,11 @@ class Moves:
                 crounded.append(c)
                 ev[key] = r
                 ctrl[key] = c
-                if not moved and c != before[i]:
-                    moved = True
-                if not apart and c != r:
+                if not moved:  # (identity first: an axis that stays keeps its number's object; never a nan)
+                    b = before[i]
+                    if c is not b and c != b:
+                        moved = True
+                if not apart and c is not r and c != r:
                     apart = True
             if kind != "rapid":
                 self._feed_into(ev)  # a move it drops fixes the header's feed mode too, as ``_compensated``'s

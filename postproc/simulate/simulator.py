@@ -591,7 +591,8 @@ def simulate(blocks: Iterable[Block], ctx: Context, live_after_end: list[int] | 
             yield from held
             held, holding = [], False
         else:
-            yield from out
+            for ev in out:  # compiled, a loop over the list's items: ``yield from`` made an iterator a block
+                yield ev
             out.clear()
     try:
         sim.out = out.append

@@ -145,9 +145,10 @@ def check_travel(lines: Iterable[str], *, file: str, dialect: type[Dialect], set
     itself fails (a construct it cannot run), the travel from there on cannot be known: one error says
     so, and nothing after it is checked."""
     private = Diagnostics(max_errors=1_000_000, warn_stream=io.StringIO())
-    for _ in toolpath_events(lines, file=file, dialect=dialect, setup=setup, registry=registry,
-                             diagnostics=private, check=False):
-        pass
+    with gc_paused():  # the compiled stream pulled here, without ``toolpath_events``' Python generator around it
+        for _ in toolpath_stream(lines, file=file, dialect=dialect, setup=setup, registry=registry,
+                                 diagnostics=private):
+            pass
     for err in private.errors:
         stopped = not isinstance(err, TravelError)
         if stopped:
