@@ -47,6 +47,7 @@ from ..errors import PostprocError, ProgramError, UnsupportedError
 from ..control import ASSIGN, CONTROL
 from ..expr import Binary, Expr, Num
 from ..ir import AXES, Block, Comments, CompoundMotion, CutterCompensation, DataSetting, Motion, Section, ToolLengthOffset
+from ..ir.verbatim import STORED_WORK_OFFSET
 from ..state import MM_PER_INCH, ModalState, changes_nothing
 from .affine import EXACT, INDEX, XYZ
 from .frame import PLANE_AXES, Frame, Position, chain_component
@@ -327,8 +328,16 @@ class FrameEvaluator:
         if not setting.table.startswith("work_offset"):
             return False
         values = setting.values
-        active = setting.table == "work_offset" and setting.index == self.modal.work_offset
-        known = self.g5x.setdefault(setting.index, {}) if setting.table == "work_offset" else {}
+        table = setting.table
+        if table == STORED_WORK_OFFSET and setting.index == self.modal.work_offset:
+            for axis in values:  # taken at the next selection: where the tool then stands is not worked out here
+                self.p[axis] = None
+            self.g5x.get(setting.index, {}).clear()
+            return False
+        if table == STORED_WORK_OFFSET:
+            table = "work_offset"  # a system not active: one meaning
+        active = table == "work_offset" and setting.index == self.modal.work_offset
+        known = self.g5x.setdefault(setting.index, {}) if table == "work_offset" else {}
         for axis, value in values.items():
             if axis == "R":
                 continue

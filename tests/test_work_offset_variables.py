@@ -1,0 +1,217 @@
+"""A work offset set from the program (Fanuc/RS274 ``G10 L2``, issue 26) towards every target: native on
+Mach3 (``G10 L2``), the zero offset table's variables on ISG (``V.G.NP[n].V.X=``) and Fagor 8070
+(``V.A.ORGT[n].X=``), which those controllers take at the work system's next selection, so the active system
+is selected again after the setting.
+
+Independent checks: rs274 (the NGC/Fanuc meaning: an active system's new offset acts at once), outputs and
+toolpaths derived by hand from the manuals' rules, seeded programs whose translations must verify against the
+source (the offsets are never zero, so a setting lost or applied at the wrong time moves a point), and
+refusals by name."""
+
+from __future__ import annotations
+
+import io
+import random
+import re
+from typing import Any
+
+import pytest
+
+from postproc.api import translate
+from postproc.errors import Diagnostics, ErrorLevel, ErrorList
+from postproc.simulate.toolpath import toolpath_events
+from postproc.simulate.verify import verify_lines
+from tests.support.rs274 import available, run_rs274
+
+TARGETS = ("isg", "fagor", "mach3", "linuxcnc", "grbl")
+
+
+def _lines(text: str) -> list[str]:
+    return io.StringIO(text, newline="").readlines()
+
+
+def translated(text: str, target: str, source: str = "fanuc") -> str:
+    out = io.StringIO(newline="")
+    translate(_lines(text), out, file="t.nc", source=source, target=target,
+              diagnostics=Diagnostics(ErrorLevel.RAISE, warn_stream=io.StringIO()))
+    return out.getvalue()
+
+
+_CALL = re.compile(r"(SET_G5X_OFFSET|STRAIGHT_TRAVERSE|STRAIGHT_FEED)\(([^)]*)\)")
+
+
+def rs274_points(text: str) -> list[tuple[float, float, float]]:
+    """rs274's moves where the machine goes: its canonical points are program coordinates, each plus the
+    work offset of the last ``SET_G5X_OFFSET`` (no G92, rotation or tool offset in these programs)."""
+    offset = (0.0, 0.0, 0.0)
+    out = []
+    for line in run_rs274(text):
+        m = _CALL.search(line)
+        if m is None:
+            continue
+        args = [float(a) for a in m.group(2).split(",")]
+        if m.group(1) == "SET_G5X_OFFSET":
+            offset = (args[1], args[2], args[3])
+        else:
+            out.append(tuple(round(args[i] + offset[i], 4) for i in range(3)))
+    return out  # type: ignore[return-value]
+
+
+def points(text: str, dialect: str) -> list[tuple[float, float, float]]:
+    events = toolpath_events(io.StringIO(text, newline=""), file="t.nc", dialect=dialect)
+    return [(e["x"], e["y"], e["z"]) for e in events if "move" in e]
+
+
+# The active system's offset changed, then an absolute move: the move lands in the new offset at once.
+ACTIVE = """G21 G90 G17
+G10 L2 P2 X10. Y5. Z-2.
+G55
+G0 X1. Y1. Z5.
+G1 Z0. F100.
+G10 L2 P2 X20.
+G1 X2.
+G54
+G0 X3. Y3.
+M30
+"""
+ACTIVE_POINTS = [(11, 6, 3), (11, 6, -2), (22, 6, -2), (3, 3, -2)]
+"""By hand: G55 is X10 Y5 Z-2, so X1 Y1 Z5 is 11 6 3; the new X20 acts at once: X2 is 22; G54 is zero."""
+
+
+def test_the_fanuc_meaning_is_rs274s() -> None:
+    assert points(ACTIVE, "fanuc") == ACTIVE_POINTS
+    if not available():
+        pytest.skip("rs274 not installed")
+    assert rs274_points(ACTIVE) == [tuple(float(v) for v in p) for p in ACTIVE_POINTS]
+
+
+EXPECTED = {
+    "isg": """G17 G71 G90
+V.G.NP[2].V.X=10. V.G.NP[2].V.Y=5. V.G.NP[2].V.Z=-2.
+G55
+G00 X1. Y1. Z5.
+G01 Z0. F100.
+V.G.NP[2].V.X=20.
+G55
+G01 X2.
+G54
+G00 X3. Y3.
+M30
+""",
+    "fagor": """G17 G71 G90
+V.A.ORGT[2].X=10. V.A.ORGT[2].Y=5. V.A.ORGT[2].Z=-2.
+G55
+G00 X1. Y1. Z5.
+G01 Z0. F100.
+V.A.ORGT[2].X=20.
+G55
+G01 X2.
+G54
+G00 X3. Y3.
+M30
+""",
+    "mach3": """G17 G21 G90
+G10 L2 P2 X10. Y5. Z-2.
+G55
+G0 X1.0000 Y1.0000 Z5.0000
+G1 Z0.0000 F100.
+G10 L2 P2 X20.
+G1 X2.0000
+G54
+G0 X3.0000 Y3.0000
+M30
+""",
+}
+"""By hand from each manual's spelling (the writers' docstrings cite them): ISG and Fagor write the table and
+take it at the selection, so the G55 in force is selected again after the second setting (and the first
+setting's block is followed by the block's own G55 only: the system was not active when it was set)."""
+
+
+@pytest.mark.parametrize("target", sorted(EXPECTED))
+def test_the_hand_derived_translation(target: str) -> None:
+    text = translated(ACTIVE, target)
+    assert text == EXPECTED[target]
+    assert points(text, target) == ACTIVE_POINTS
+
+
+@pytest.mark.parametrize("dialect,setting", [("isg", "V.G.NP[2].V.X=10"), ("fagor", "V.A.ORGT[2].X=10")])
+def test_a_table_entry_of_the_active_system_acts_at_its_next_selection(dialect: str, setting: str) -> None:
+    """By hand, the stored meaning: X1 is still in the old G55 (zero), X2 after G55 again is 12; set for a
+    system not active (G56), the entry is there when it is selected."""
+    program = f"G71 G90\nG55\n{setting}\nG01 X1 Y0 Z0 F100\nG55\nG01 X2\n" \
+              f"{setting.replace('[2]', '[3]').replace('X=10', 'Y=5')}\nG56\nG01 X0 Y1\nM30\n"
+    assert points(program, dialect) == [(1, 0, 0), (12, 0, 0), (0, 6, 0)]
+    assert translated(program, dialect, source=dialect) == program  # read back byte for byte
+
+
+@pytest.mark.parametrize("dialect,setting", [("isg", "V.G.NP[2].V.X=10"), ("fagor", "V.A.ORGT[2].X=10")])
+def test_the_stored_entry_of_the_active_system_is_refused_by_name_towards_g10(dialect: str, setting: str) -> None:
+    """G10 L2 would act at once where the source takes it at the next selection: refused, naming why; set for
+    a system not active, it is G10 L2."""
+    program = f"G71 G90\nG55\n{setting}\nG01 X1 Y0 Z0 F100\nM30\n"
+    with pytest.raises(ErrorList, match="takes it at the work system's next selection"):
+        translated(program, "linuxcnc", source=dialect)
+    program = f"G71 G90\nG54\n{setting}\nG55\nG01 X1 Y0 Z0 F100\nM30\n"
+    assert "G10 L2 P2 X10" in translated(program, "linuxcnc", source=dialect)
+
+
+def test_mach3_reads_g10_l2_and_gives_it_to_linuxcnc() -> None:
+    text = translated(ACTIVE, "mach3")
+    assert points(text, "mach3") == ACTIVE_POINTS
+    back = translated(text, "linuxcnc", source="mach3")
+    assert "G10 L2 P2 X20." in back and points(back, "linuxcnc") == ACTIVE_POINTS
+
+
+@pytest.mark.parametrize("target", ["isg", "fagor", "mach3"])
+@pytest.mark.parametrize("source,setting,why", [
+    ("linuxcnc", "G10 L2 P7 X1.", "its work systems are (P)?1-(P)?6"),  # G59.1: no such entry
+    ("fanuc", "G91 G10 L2 P1 X1.", "sets offsets absolutely only"),  # Fanuc adds to the offset under G91
+    ("fanuc", "G10 L2 P0 X1.", "P0 here is not the offset common to all work systems"),
+])
+def test_what_has_no_spelling_is_refused_by_name(target: str, source: str, setting: str, why: str) -> None:
+    with pytest.raises(ErrorList, match=why):
+        translated(f"G21 G90\n{setting}\nG0 X0 Y0 Z0\nM30\n", target, source=source)
+
+
+def _program(rng: random.Random) -> str:
+    """Work offsets of systems 1-6 set before and while they are active (never zero: a setting lost or
+    applied late moves a point), selections, absolute and incremental moves."""
+    lines = ["G21 G90 G17 G94 F500", "G0 X0. Y0. Z10."]
+    for _ in range(rng.randint(4, 10)):
+        r = rng.random()
+        if r < 0.35:
+            axes = rng.sample("XYZ", rng.randint(1, 3))
+            values = " ".join(f"{a}{rng.choice((-1, 1)) * rng.randint(1, 4000) / 100:.2f}" for a in axes)
+            lines.append(f"G10 L2 P{rng.randint(1, 6)} {values}")
+        elif r < 0.55:
+            lines.append(f"G{rng.randint(54, 59)}")
+        elif r < 0.8:
+            lines.append(f"G90 G1 X{rng.randint(-500, 500) / 10:.1f} Y{rng.randint(-500, 500) / 10:.1f} "
+                         f"Z{rng.randint(-50, 50) / 10:.1f}")
+        else:
+            lines.append(f"G91 G1 X{rng.randint(-100, 100) / 10:.1f} Y{rng.randint(-100, 100) / 10:.1f}")
+            lines.append("G90")
+    lines.append("G90 G0 X0. Y0. Z10.")
+    lines.append("M30")
+    return "\n".join(lines) + "\n"
+
+
+@pytest.mark.parametrize("seed", range(40))
+def test_seeded_programs_verify_on_every_target(seed: int) -> None:
+    program = _program(random.Random(seed))
+    for target in TARGETS:
+        out = translated(program, target)
+        report = verify_lines(_lines(program), _lines(out), file_in="t.nc", file_out="out", source="fanuc",
+                              target=target)
+        assert report.ok, (target, report.summary(), program, out)
+
+
+@pytest.mark.parametrize("seed", range(10))
+def test_seeded_programs_run_as_rs274_runs_them(seed: int) -> None:
+    """The simulator's meaning of G10 L2 (Fanuc and LinuxCNC read it alike in absolute mode) against rs274's."""
+    if not available():
+        pytest.skip("rs274 not installed")
+    program = _program(random.Random(1000 + seed))
+    ours = [(round(x, 4), round(y, 4), round(z, 4)) for x, y, z in points(program, "fanuc")]
+    theirs: list[Any] = rs274_points(program)
+    assert theirs[-len(ours):] == ours, program
