@@ -23,7 +23,7 @@ from postproc.simulate.toolpath import toolpath_events
 from postproc.simulate.verify import verify_lines
 from tests.support.rs274 import available, run_rs274
 
-TARGETS = ("isg", "fagor", "mach3", "linuxcnc", "grbl")
+TARGETS = ("isg", "fagor", "siemens", "mach3", "linuxcnc", "grbl")
 
 
 def _lines(text: str) -> list[str]:
@@ -110,6 +110,18 @@ G54
 G00 X3. Y3.
 M30
 """,
+    "siemens": """G17 G710 G90
+$P_UIFR[2,X,TR]=10. $P_UIFR[2,Y,TR]=5. $P_UIFR[2,Z,TR]=-2.
+G55
+G0 X1. Y1. Z5.
+G1 Z0. F100.
+$P_UIFR[2,X,TR]=20.
+G55
+G1 X2.
+G54
+G0 X3. Y3.
+M30
+""",
     "mach3": """G17 G21 G90
 G10 L2 P2 X10. Y5. Z-2.
 G55
@@ -134,24 +146,29 @@ def test_the_hand_derived_translation(target: str) -> None:
     assert points(text, target) == ACTIVE_POINTS
 
 
-@pytest.mark.parametrize("dialect,setting", [("isg", "V.G.NP[2].V.X=10"), ("fagor", "V.A.ORGT[2].X=10")])
+STORED = [("isg", "V.G.NP[2].V.X=10"), ("fagor", "V.A.ORGT[2].X=10"), ("siemens", "$P_UIFR[2,X,TR]=10")]
+
+
+@pytest.mark.parametrize("dialect,setting", STORED)
 def test_a_table_entry_of_the_active_system_acts_at_its_next_selection(dialect: str, setting: str) -> None:
     """By hand, the stored meaning: X1 is still in the old G55 (zero), X2 after G55 again is 12; set for a
     system not active (G56), the entry is there when it is selected."""
-    program = f"G71 G90\nG55\n{setting}\nG01 X1 Y0 Z0 F100\nG55\nG01 X2\n" \
-              f"{setting.replace('[2]', '[3]').replace('X=10', 'Y=5')}\nG56\nG01 X0 Y1\nM30\n"
+    units, move = ("G710", "G1") if dialect == "siemens" else ("G71", "G01")
+    other = setting.replace("[2]", "[3]").replace("X=10", "Y=5").replace("[2,X,", "[3,Y,").replace("]=10", "]=5")
+    program = f"{units} G90\nG55\n{setting}\n{move} X1 Y0 Z0 F100\nG55\n{move} X2\n{other}\nG56\n{move} X0 Y1\nM30\n"
     assert points(program, dialect) == [(1, 0, 0), (12, 0, 0), (0, 6, 0)]
     assert translated(program, dialect, source=dialect) == program  # read back byte for byte
 
 
-@pytest.mark.parametrize("dialect,setting", [("isg", "V.G.NP[2].V.X=10"), ("fagor", "V.A.ORGT[2].X=10")])
+@pytest.mark.parametrize("dialect,setting", STORED)
 def test_the_stored_entry_of_the_active_system_is_refused_by_name_towards_g10(dialect: str, setting: str) -> None:
     """G10 L2 would act at once where the source takes it at the next selection: refused, naming why; set for
     a system not active, it is G10 L2."""
-    program = f"G71 G90\nG55\n{setting}\nG01 X1 Y0 Z0 F100\nM30\n"
+    units = "G710" if dialect == "siemens" else "G71"
+    program = f"{units} G90\nG55\n{setting}\nG1 X1 Y0 Z0 F100\nM30\n"
     with pytest.raises(ErrorList, match="takes it at the work system's next selection"):
         translated(program, "linuxcnc", source=dialect)
-    program = f"G71 G90\nG54\n{setting}\nG55\nG01 X1 Y0 Z0 F100\nM30\n"
+    program = f"{units} G90\nG54\n{setting}\nG55\nG1 X1 Y0 Z0 F100\nM30\n"
     assert "G10 L2 P2 X10" in translated(program, "linuxcnc", source=dialect)
 
 
@@ -162,13 +179,17 @@ def test_mach3_reads_g10_l2_and_gives_it_to_linuxcnc() -> None:
     assert "G10 L2 P2 X20." in back and points(back, "linuxcnc") == ACTIVE_POINTS
 
 
-@pytest.mark.parametrize("target", ["isg", "fagor", "mach3"])
+@pytest.mark.parametrize("target", ["isg", "fagor", "siemens", "mach3"])
 @pytest.mark.parametrize("source,setting,why", [
-    ("linuxcnc", "G10 L2 P7 X1.", "its work systems are (P)?1-(P)?6"),  # G59.1: no such entry
+    ("linuxcnc", "G10 L2 P7 X1. A3.", "its work systems are (P)?1-(P)?6|it sets axes"),  # G59.1; an A axis
     ("fanuc", "G91 G10 L2 P1 X1.", "sets offsets absolutely only"),  # Fanuc adds to the offset under G91
     ("fanuc", "G10 L2 P0 X1.", "P0 here is not the offset common to all work systems"),
 ])
 def test_what_has_no_spelling_is_refused_by_name(target: str, source: str, setting: str, why: str) -> None:
+    if target == "siemens" and "P7" in setting:  # SINUMERIK has it: work system 7 is G507, $P_UIFR[7]
+        assert "$P_UIFR[7,X,TR]=1. $P_UIFR[7,A,TR]=3." in translated(
+            f"G21 G90\n{setting}\nG0 X0 Y0 Z0\nM30\n", target, source=source)
+        return
     with pytest.raises(ErrorList, match=why):
         translated(f"G21 G90\n{setting}\nG0 X0 Y0 Z0\nM30\n", target, source=source)
 
