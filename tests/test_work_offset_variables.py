@@ -161,15 +161,32 @@ def test_a_table_entry_of_the_active_system_acts_at_its_next_selection(dialect: 
 
 
 @pytest.mark.parametrize("dialect,setting", STORED)
-def test_the_stored_entry_of_the_active_system_is_refused_by_name_towards_g10(dialect: str, setting: str) -> None:
-    """G10 L2 would act at once where the source takes it at the next selection: refused, naming why; set for
-    a system not active, it is G10 L2."""
-    units = "G710" if dialect == "siemens" else "G71"
-    program = f"{units} G90\nG55\n{setting}\nG1 X1 Y0 Z0 F100\nM30\n"
-    with pytest.raises(ErrorList, match="takes it at the work system's next selection"):
-        translated(program, "linuxcnc", source=dialect)
-    program = f"{units} G90\nG54\n{setting}\nG55\nG1 X1 Y0 Z0 F100\nM30\n"
+def test_the_stored_entry_of_the_active_system_waits_for_the_selection_towards_g10(dialect: str, setting: str) -> None:
+    """By hand: G10 L2 would act at once, so it is written right before the next selection (``G55``), where
+    rs274 takes it as the source's controller takes its table entry; a setting of a system not active is
+    G10 L2 where it stands; one never selected again changed nothing and is left out (a comment says so)."""
+    units, move = ("G710", "G1") if dialect == "siemens" else ("G71", "G01")
+    program = f"{units} G90\nG55\n{setting}\n{move} X1 Y0 Z0 F100\nG55\n{move} X2\n{setting}\n{move} X3\nM30\n"
+    out = translated(program, "linuxcnc", source=dialect)
+    assert out == ("G21 G90\nG55\n"
+                   f"({setting}: written before the next work system selection)\n"
+                   "G1 X1. Y0. Z0. F100.\nG10 L2 P2 X10.\nG55\nG1 X2.\n"
+                   f"({setting}: written before the next work system selection)\n"
+                   "G1 X3.\nM30\n")
+    assert points(out, "linuxcnc") == points(program, dialect) == [(1, 0, 0), (12, 0, 0), (13, 0, 0)]
+    for target in ("fanuc", "grbl", "mach3", "isg", "fagor", "siemens"):
+        text = translated(program, target, source=dialect)
+        report = verify_lines(_lines(program), _lines(text), file_in="t", file_out="out", source=dialect,
+                              target=target)
+        assert report.ok, (target, report.summary(), text)
+    program = f"{units} G90\nG54\n{setting}\nG55\n{move} X1 Y0 Z0 F100\nM30\n"
     assert "G10 L2 P2 X10" in translated(program, "linuxcnc", source=dialect)
+
+
+def test_a_units_change_while_a_setting_waits_is_refused_by_name() -> None:
+    program = "G71 G90\nG55\nV.G.NP[2].V.X=10\nG70\nG55\nG01 X1 Y0 Z0 F100\nM30\n"
+    with pytest.raises(ErrorList, match="a units change while a work offset setting waits"):
+        translated(program, "linuxcnc", source="isg")
 
 
 def test_mach3_reads_g10_l2_and_gives_it_to_linuxcnc() -> None:
@@ -236,3 +253,45 @@ def test_seeded_programs_run_as_rs274_runs_them(seed: int) -> None:
     ours = [(round(x, 4), round(y, 4), round(z, 4)) for x, y, z in points(program, "fanuc")]
     theirs: list[Any] = rs274_points(program)
     assert theirs[-len(ours):] == ours, program
+
+
+_SPELLINGS = {"isg": ("G71", "V.G.NP[{n}].V.{a}={v}"), "fagor": ("G71", "V.A.ORGT[{n}].{a}={v}"),
+              "siemens": ("G710", "$P_UIFR[{n},{a},TR]={v}")}
+
+
+def _family_program(rng: random.Random, dialect: str) -> str:
+    """Table entries written for the active system and others (never zero), selections (or none after an
+    entry of the active one), absolute and incremental moves, in the dialect's own spelling."""
+    units, spelling = _SPELLINGS[dialect]
+    lines = [f"{units} G90 G17 G94 F500", "G0 X0 Y0 Z10"]
+    for _ in range(rng.randint(4, 10)):
+        r = rng.random()
+        if r < 0.35:
+            n = rng.randint(1, 6)
+            lines.append(" ".join(spelling.format(n=n, a=a, v=f"{rng.choice((-1, 1)) * rng.randint(1, 4000) / 100:.2f}")
+                                  for a in rng.sample("XYZ", rng.randint(1, 3))))
+        elif r < 0.55:
+            lines.append(f"G{rng.randint(54, 59)}" if dialect != "siemens" else
+                         rng.choice(("G54", "G55", "G56", "G57", "G505", "G506")))
+        elif r < 0.8:
+            lines.append(f"G90 G1 X{rng.randint(-500, 500) / 10:.1f} Y{rng.randint(-500, 500) / 10:.1f} "
+                         f"Z{rng.randint(-50, 50) / 10:.1f}")
+        else:
+            lines.append(f"G91 G1 X{rng.randint(-100, 100) / 10:.1f} Y{rng.randint(-100, 100) / 10:.1f}")
+            lines.append("G90")
+    lines.append("G90 G0 X0 Y0 Z10")
+    lines.append("M30")
+    return "\n".join(lines) + "\n"
+
+
+@pytest.mark.parametrize("dialect", sorted(_SPELLINGS))
+@pytest.mark.parametrize("seed", range(15))
+def test_seeded_table_entry_programs_verify_on_every_target(dialect: str, seed: int) -> None:
+    """The stored meaning read, and written for every target: its own table (no selection added for an entry
+    the source takes at the selection) or G10 L2 moved to the next selection."""
+    program = _family_program(random.Random(seed), dialect)
+    for target in ("linuxcnc", "fanuc", "grbl", "mach3", "isg", "fagor", "siemens"):
+        out = translated(program, target, source=dialect)
+        report = verify_lines(_lines(program), _lines(out), file_in="t", file_out="out", source=dialect,
+                              target=target)
+        assert report.ok, (target, report.summary(), program, out)

@@ -50,6 +50,9 @@ def resolve_radius_where_d_cannot(blocks: Iterator[Block], ctx: Context, target:
 
 class Fagor(Dialect):
     NAME = "fagor"
+    STORED_WORK_OFFSETS = True
+    """Its zero offset variables write the table, taken at the work system's next selection (the reader's
+    ``ZERO_OFFSETS``)."""
     ARC_END = NEUTRAL_ARC_END
     """Not yet Fagor's own: the 8070's power-on G265 corrects the centre within the machine parameters CIRINERR
     (absolute) or CIRINFACT (relative); G264 runs the start radius about the programmed centre [K: Fagor

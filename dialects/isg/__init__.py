@@ -42,6 +42,9 @@ def resolve_radius_where_d_cannot(blocks: Iterator[Block], ctx: Context, target:
 
 class Isg(Dialect):
     NAME = "isg"
+    STORED_WORK_OFFSETS = True
+    """Its zero offset variables write the table, taken at the work system's next selection (the reader's
+    ``ZERO_OFFSETS``)."""
     ARC_END = NEUTRAL_ARC_END
     """Not yet ISG's own: its power-on G165 moves the programmed centre so that a circle runs through both end
     points, alarming when the move exceeds P-CHAN-00059 (2 mm by default) or P-CHAN-00060 (5 % of the radius)

@@ -310,18 +310,20 @@ class SectionWords(NumberWriter):
             return [s.text]
         if s.table in self.TOOL_DATA_SETTINGS:
             return self._register_setting(s, block)
-        why = self.work_offset_problem(s, self.WORK_OFFSET_SETTING, self.WORK_OFFSET_COUNT)
+        why = self.work_offset_problem(s, self.WORK_OFFSET_SETTING, self.WORK_OFFSET_COUNT, False)
         if why:
             self.unsupported(f"{s.describe()}: {why}", block)
         return [*self.WORK_OFFSET_SETTING.split(), f"P{s.index}",
                 *(axis + self.length(value, block, axis) for axis, value in s.values.items())]
 
-    def work_offset_problem(self, s: Any, spelling: str, count: int) -> str:
+    def work_offset_problem(self, s: Any, spelling: str, count: int, stored: bool) -> str:
         """Why a work offset setting cannot be written with the dialect's ``spelling`` for work systems
-        1-``count``; '' when it can. A setting the source's controller takes at the system's next selection
-        (``STORED_WORK_OFFSET``) is the same setting where that system is not the active one."""
+        1-``count``; '' when it can. ``stored``: the spelling writes the table, taken at the system's next
+        selection (``STORED_WORK_OFFSET``), as the source's may; a setting taken at once is the same setting
+        where that system is not the active one (``postproc.lowering.stored_offsets`` moves one that is to the
+        next selection)."""
         table = s.table
-        if table == STORED_WORK_OFFSET and s.index != self.modal.work_offset:
+        if table == STORED_WORK_OFFSET and (stored or s.index != self.modal.work_offset):
             table = "work_offset"
         if table == STORED_WORK_OFFSET and spelling:
             return ("the source's controller takes it at the work system's next selection, the target at once "
@@ -343,9 +345,10 @@ class SectionWords(NumberWriter):
     def work_offset_assignments(self, block: Block, part: Callable[[Block, dict[str, Section]], str]) -> str | None:
         """A work offset setting in the dialect's variables (``WORK_OFFSET_VARIABLE``), on a line of its own
         after the rest of its block (written by ``part``: its settings, a selection among them, act first
-        [K: rs274 order of execution, G10 after the work system's selection]), then the work system's
-        selection again where it is the active one (the controller takes the entry there). None: the setting
-        is the dialect's own family's, written as it was with the rest of the block."""
+        [K: rs274 order of execution, G10 after the work system's selection]), then, where the source's
+        setting acts at once on the active system (``G10 L2``), that system's selection again (the controller
+        takes the entry there); one the source also takes at the next selection is only written. None: the
+        setting is the dialect's own family's, written as it was with the rest of the block."""
         sections = block.sections
         s: Any = sections["DataSetting"]
         family = self.target.family() if self.target is not None else self.DIALECT
@@ -356,14 +359,14 @@ class SectionWords(NumberWriter):
         if before and not before.endswith("\n"):
             before += "\n"
         try:
-            why = self.work_offset_problem(s, self.WORK_OFFSET_VARIABLE, self.WORK_OFFSET_COUNT)
+            why = self.work_offset_problem(s, self.WORK_OFFSET_VARIABLE, self.WORK_OFFSET_COUNT, True)
             if why:
                 self.unsupported(f"{s.describe()}: {why}", block)
             index = int(s.index)
             words = [self.WORK_OFFSET_VARIABLE.format(index=index, axis=axis, value=self.length(value, block, axis))
                      for axis, value in s.values.items()]
             text = before + " ".join(words) + "\n"
-            if index == self.modal.work_offset:
+            if index == self.modal.work_offset and s.table != STORED_WORK_OFFSET:  # the source's acts at once
                 text += self.code("offset", index, f"work system {index}", block) + "\n"
         except UnsupportedError as err:
             if err.section is None:
