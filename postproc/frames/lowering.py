@@ -13,14 +13,16 @@ direction turned over by a mirror, and refused where the frame makes it an ellip
 frame other than offsets is expanded (its holes carried like moves), and a mirror swaps the side of
 cutter compensation. The frame commands themselves leave the block.
 
-Over 600 lines: one class carries the frame through every kind of block, and it is compiled whole (it runs
-for every translation to another dialect); the rules of each command live in ``frame``.
+Over 600 lines (719): one class carries the frame through every kind of block, and it is compiled whole (it
+runs for every translation to another dialect); the rules of each command live in ``frame``, what offset
+changes and data settings do to the program position in ``offset_changes``. The frame commands' handling
+(``command`` to ``isg_rotate``, about 150 lines) is the next part to stand on its own.
 
 The program position is tracked in program coordinates (mm), None where unknown; a move that needs an
 unknown coordinate (an axis it omits, that the frame mixes into the ones it programs) is a located error. On
 a controller that keeps the machine point at a tool offset change the position takes the change
-(``tool_change``), so it is the current point the controller reads: what a G92 sets its offset from and
-what a program reads as its position (``postproc.frames.parameters``).
+(``offset_changes.tool_change``), so it is the current point the controller reads: what a G92 sets its offset
+from and what a program reads as its position (``postproc.frames.parameters``).
 
 A program kept symbolically (its loops, jumps and calls written for a target that has them) runs in
 another order than its text: there a frame command that may not run once where the text has it
@@ -42,29 +44,21 @@ from mypy_extensions import mypyc_attr
 from ..context import Context
 from ..dialect import Dialect
 from ..compensation.tool_length import ToolLength
-from ..compensation.tool_table import ENTRY, TABLES, ToolTable
-from ..errors import PostprocError, ProgramError, UnsupportedError
+from ..errors import PostprocError, ProgramError
 from ..control import ASSIGN, CONTROL
 from ..expr import Binary, Expr, Num
-from ..ir import AXES, Block, Comments, CompoundMotion, CutterCompensation, DataSetting, Motion, Section, ToolLengthOffset
-from ..ir.verbatim import STORED_WORK_OFFSET
+from ..ir import AXES, Block, CompoundMotion, CutterCompensation, Motion, Section
 from ..state import MM_PER_INCH, ModalState, changes_nothing
 from .affine import EXACT, INDEX, XYZ
 from .frame import PLANE_AXES, Frame, Position, chain_component
 from .run_order import RunOrder
 from .section import FrameChange
+from .offset_changes import current_point_reads, data_setting
+from .words import COMPUTED, LINEAR, SYMBOLIC, note as _note
 
-LINEAR: Final = frozenset("XYZUVW")
-COMPUTED: Final = "a computed word under a coordinate frame (the frame is evaluated into the coordinates here)"
-SYMBOLIC: Final = ("a coordinate frame in a program kept symbolically (it would be evaluated in the order of the "
-                   "text, not of the run)")
 RUN_KEY: Final = "frames.run"
 """``ctx.state.extra`` key of the frame and program position the lowering has reached (``FrameRun``)."""
 
-MEASURED_ENTRIES: Final = frozenset(("tool_entry_at_point", "tool_entry_at_point_9"))
-TOOL_TABLES: Final = frozenset((ENTRY, *TABLES))
-"""Tool table writes a later tool offset change reads (``FrameEvaluator.tool_entry``)."""
-"""Tool table entries a program measures where the tool stands (LinuxCNC's, ``postproc.simulate.moves.touch_off``)."""
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
@@ -85,7 +79,7 @@ class FrameRun:
         ``postproc.frames.parameters``)."""
         self.tools: ToolLength | None = None
         """The tool length offset in force (made at the first change), on a controller that keeps the machine
-        point at a change (``tool_change``)."""
+        point at a change (``offset_changes.tool_change``)."""
         self.sideways: dict[str, float] = {}
         """The X and Y offsets of the tool entry in force (mm)."""
         self.tools_known = True
@@ -222,55 +216,8 @@ class FrameEvaluator:
             block.changed()
 
     def current_point_reads(self, s: dict[str, Section]) -> None:
-        """What the program position and a read of it (``postproc.frames.parameters``) must know of the
-        block: a tool offset change (``tool_change``); cutter compensation on forbids the read (rs274: "Cannot
-        read current position with cutter radius compensation on" [V: ``interp_read.cc``
-        ``read_integer_parameter``])."""
-        length = s.get("ToolLengthOffset")
-        if isinstance(length, ToolLengthOffset) and self.ctx.length_at_axis:
-            self.tool_change(length)  # before the block's motion [V: rs274 order of execution]
-        cc = s.get("CutterCompensation")
-        if cc is not None:
-            self.reached.cutter = getattr(cc, "mode", "off") != "off"
-        if "DynamicCutterCompensation" in s:
-            self.reached.cutter = True
-
-    def tool_change(self, length: ToolLengthOffset) -> None:
-        """A tool offset change on a controller that keeps the machine point until the axis is programmed
-        (``Dialect.LENGTH_AT_PROGRAMMED_AXIS``): the program position moves by the change, ``current_z + old -
-        new`` [V: LinuxCNC ``interp_convert.cc`` ``convert_tool_length_offset``, on every axis of the entry;
-        rs274 ``G43 H1`` then ``G92 Z0`` sets the offset from the moved point], as the simulation's
-        programmed point does (``postproc.simulate.moves``). Where the new offset is not known here (a computed
-        register, one the set-up lacks, an entry measured where the tool stands), X, Y and Z are unknown."""
-        run, p = self.reached, self.p
-        if run.tools is None:
-            run.tools = ToolLength(ToolTable(self.ctx.setup))
-        register = length.register
-        old_z, old_side = run.tools.offset, run.sideways
-        try:
-            if isinstance(register, Expr) or isinstance(length.length, Expr) or (
-                    not run.table_known and length.mode in ("positive", "negative")):
-                raise ProgramError("a computed tool offset, or an entry not known here")
-            run.tools.change(length.mode, register, length.length, self.scale)
-            side = run.tools.table.sideways(register) if length.mode == "positive" and isinstance(register, int) \
-                else {}
-        except PostprocError:
-            run.tools_known = False
-            for axis in XYZ:
-                p[axis] = None
-            return
-        if not run.tools_known:
-            run.tools_known = True  # known again from here; the point before stays unknown
-            for axis in XYZ:
-                p[axis] = None
-        changes = {"Z": run.tools.offset - old_z}
-        for axis in set(side) | set(old_side):
-            changes[axis] = changes.get(axis, 0.0) + side.get(axis, 0.0) - old_side.get(axis, 0.0)
-        run.sideways = side
-        for axis, change in changes.items():
-            here = p.get(axis)
-            if change and here is not None:
-                p[axis] = here - change
+        """A tool offset change, cutter compensation on or off (``offset_changes.current_point_reads``)."""
+        current_point_reads(self, s)
 
     def targets(self, s: dict[str, Section]) -> None:
         """The jump targets a block of the symbolic part carries (``RunOrder``)."""
@@ -313,108 +260,11 @@ class FrameEvaluator:
                     frame.pending.update(XYZ)  # SD42440 applies to a settable offset too [K: K2 1.3]
 
     def data_setting(self, block: Block, s: dict[str, Section]) -> bool:
-        """G10 L2: a work system's rotation (R) goes into the frame and out of the setting; an offset of
-        the active system moves the program position (the tool stays)."""
-        setting = s["DataSetting"]
-        assert isinstance(setting, DataSetting)
-        if self.ctx.length_at_axis and (setting.table in TOOL_TABLES or setting.table in MEASURED_ENTRIES):
-            self.tool_entry(setting)
-        if setting.table in MEASURED_ENTRIES and self.frame is not None and not self.frame.plain():
-            # the entry is the tool's point in the work system without the tool offset, less the values
-            # ([V] LinuxCNC convert_setup_tool): that point under the program's shift or rotation is not
-            # worked out here, so no entry is guessed
-            raise UnsupportedError("a tool entry measured where the tool stands, under a coordinate shift or rotation "
-                                   "of the program's own, is not modelled")
-        if not setting.table.startswith("work_offset"):
-            return False
-        values = setting.values
-        table = setting.table
-        if table == STORED_WORK_OFFSET and setting.index == self.modal.work_offset:
-            for axis in values:  # taken at the next selection: where the tool then stands is not worked out here
-                self.p[axis] = None
-            self.g5x.get(setting.index, {}).clear()
-            return False
-        if table == STORED_WORK_OFFSET:
-            table = "work_offset"  # a system not active: one meaning
-        active = table == "work_offset" and setting.index == self.modal.work_offset
-        known = self.g5x.setdefault(setting.index, {}) if table == "work_offset" else {}
-        for axis, value in values.items():
-            if axis == "R":
-                continue
-            if isinstance(value, Expr) or setting.incremental:
-                known.pop(axis, None)
-                if active:
-                    self.p[axis] = None
-                continue
-            new = value * (self.scale if axis in LINEAR else 1.0)
-            old = known.get(axis)
-            here = self.p.get(axis)
-            if active:
-                self.p[axis] = None if here is None or old is None else here + old - new
-            known[axis] = new
-        if "R" not in values:
-            return False
-        turn = values["R"]
-        if isinstance(turn, Expr):
-            raise ProgramError(COMPUTED)
-        if self.reached.symbolic:
-            raise ProgramError(SYMBOLIC)
-        if setting.table != "work_offset":
-            raise ProgramError("a rotation (R) of an extended work system cannot be evaluated")
-        frame = self._frame("rs274")
-        if self.frame is not None and frame.rules != "rs274":
-            raise ProgramError("a work system rotation (R) beside another controller's frame")
-        frame.set_turn(setting.index, float(turn))
-        if active:
-            self.p["X"], self.p["Y"] = None, None  # [V] convert_setup moves the current point into the turned system
-        rest = {k: v for k, v in values.items() if k != "R"}
-        words = setting.text.split()
-        if rest:
-            s["DataSetting"] = DataSetting(setting.family, setting.table, setting.index, rest, setting.incremental,
-                                           " ".join(w for w in words if not w.upper().startswith("R")))
-            _note(s, " ".join(w for w in words if w.upper().startswith("R")) + " evaluated")
-        else:
-            del s["DataSetting"]
-            _note(s, f"{setting.text} evaluated")
-        return True
+        """A G10 (``offset_changes.data_setting``): True where the block changed."""
+        return data_setting(self, block, s)
 
-    def tool_entry(self, setting: DataSetting) -> None:
-        """A program's tool table entry, which a later offset change reads (``tool_change``). One measured
-        where the tool stands (``G10 L10``) is the current point plus the offset in force, less the word [V:
-        LinuxCNC ``convert_setup_tool``; ``postproc.lowering.measured_entries``]; where that is not known here
-        (work system 9's ``L11``, an unknown point, a computed word), every offset read after it is unknown."""
-        run = self.reached
-        if run.tools is None:
-            run.tools = ToolLength(ToolTable(self.ctx.setup))
-        if setting.table in MEASURED_ENTRIES:
-            setting = self._measured(setting)
-        if any(isinstance(v, Expr) for v in setting.values.values()) or setting.table in MEASURED_ENTRIES:
-            run.table_known = False
-            return
-        try:
-            run.tools.table.write(setting, self.scale)
-        except PostprocError:
-            run.table_known = False
-
-    def _measured(self, setting: DataSetting) -> DataSetting:
-        """The whole entry a measured one sets (unchanged where it is not worked out here)."""
-        run = self.reached
-        if setting.table != "tool_entry_at_point" or not run.tools_known or (
-                self.frame is not None and not self.frame.plain()):
-            return setting
-        offsets = {"Z": run.tools.offset if run.tools is not None else 0.0, **run.sideways}
-        values: dict[str, float | Expr] = {}
-        for letter, value in setting.values.items():
-            here = self.p.get(letter)
-            if letter not in XYZ:
-                values[letter] = value
-            elif isinstance(value, Expr) or here is None:
-                return setting
-            else:
-                values[letter] = (here + offsets.get(letter, 0.0)) / self.scale - float(value)
-        return DataSetting(setting.family, ENTRY, setting.index, values, False, setting.text)
-
-    def _frame(self, rules: str) -> Frame:
+    def frame_for(self, rules: str) -> Frame:
+        """The frame, made with ``rules`` at the first frame command."""
         if self.frame is None:
             self.frame = self.reached.frame = Frame(rules)
             self.frame.work = self.modal.work_offset
@@ -422,7 +272,7 @@ class FrameEvaluator:
 
     # -- frame commands ----------------------------------------------------------------------------
     def command(self, block: Block, change: FrameChange) -> None:
-        frame = self._frame(change.rules)
+        frame = self.frame_for(change.rules)
         if frame.rules != change.rules:
             raise ProgramError(f"{change.describe()} beside another controller's frame commands")
         kind, scale, p = change.kind, self.scale, self.p
@@ -862,11 +712,6 @@ def _cos_sin(degrees: float) -> tuple[float, float]:
 def _trace(s: dict[str, Section], change: FrameChange) -> None:
     """The evaluated command stays in the output as a comment (no block vanishes without a trace)."""
     _note(s, f"{change.text} evaluated")
-
-
-def _note(s: dict[str, Section], note: str) -> None:
-    comments = s.get("Comments")
-    s["Comments"] = Comments([*comments.texts, note] if isinstance(comments, Comments) else [note])
 
 
 def _axes(words: dict[str, float]) -> dict[str, float]:
