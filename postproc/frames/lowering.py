@@ -13,10 +13,9 @@ direction turned over by a mirror, and refused where the frame makes it an ellip
 frame other than offsets is expanded (its holes carried like moves), and a mirror swaps the side of
 cutter compensation. The frame commands themselves leave the block.
 
-Over 600 lines (719): one class carries the frame through every kind of block, and it is compiled whole (it
-runs for every translation to another dialect); the rules of each command live in ``frame``, what offset
-changes and data settings do to the program position in ``offset_changes``. The frame commands' handling
-(``command`` to ``isg_rotate``, about 150 lines) is the next part to stand on its own.
+The rules of each command live in ``frame``; the commands' handling in the run (a command into the frame, the
+axes it leaves to be programmed again, the rotations) in ``commands``; what offset changes and data settings
+do to the program position in ``offset_changes``. This module carries the moves through the frame.
 
 The program position is tracked in program coordinates (mm), None where unknown; a move that needs an
 unknown coordinate (an axis it omits, that the frame mixes into the ones it programs) is a located error. On
@@ -47,14 +46,15 @@ from ..compensation.tool_length import ToolLength
 from ..errors import PostprocError, ProgramError
 from ..control import ASSIGN, CONTROL
 from ..expr import Binary, Expr, Num
-from ..ir import AXES, Block, CompoundMotion, CutterCompensation, Motion, Section
+from ..ir import Block, CompoundMotion, CutterCompensation, Motion, Section
 from ..state import MM_PER_INCH, ModalState, changes_nothing
 from .affine import EXACT, INDEX, XYZ
-from .frame import PLANE_AXES, Frame, Position, chain_component
+from .frame import PLANE_AXES, Frame, Position
 from .run_order import RunOrder
 from .section import FrameChange
 from .offset_changes import current_point_reads, data_setting
-from .words import COMPUTED, LINEAR, SYMBOLIC, note as _note
+from .commands import command, pending
+from .words import COMPUTED, FANUC_FORBIDDEN, LINEAR, SWAPPED, SYMBOLIC, note as _note
 
 RUN_KEY: Final = "frames.run"
 """``ctx.state.extra`` key of the frame and program position the lowering has reached (``FrameRun``)."""
@@ -98,7 +98,6 @@ class FrameRun:
         """The work system the program selected last (1 = G54); None before it selects one (the machine's)."""
         self.order = RunOrder()
         """The constructs and jumps of the symbolic part: which frame command runs in the text's order."""
-_SWAPPED: Final = {"left": "right", "right": "left"}
 _TURNED: Final = {"cw": "ccw", "ccw": "cw"}
 
 
@@ -251,7 +250,7 @@ class FrameEvaluator:
                 raise ProgramError("the plane cannot change while coordinate rotation is on")
         if modal.work_offset != work:
             if frame is not None and frame.rules == "fanuc" and frame.linear_active():
-                raise ProgramError(_FANUC_FORBIDDEN.format(what="a work system change"))
+                raise ProgramError(FANUC_FORBIDDEN.format(what="a work system change"))
             for axis in self.p:
                 self.p[axis] = None  # the tool stays; its place in the new system is not known here
             if frame is not None:
@@ -272,151 +271,13 @@ class FrameEvaluator:
 
     # -- frame commands ----------------------------------------------------------------------------
     def command(self, block: Block, change: FrameChange) -> None:
-        frame = self.frame_for(change.rules)
-        if frame.rules != change.rules:
-            raise ProgramError(f"{change.describe()} beside another controller's frame commands")
-        kind, scale, p = change.kind, self.scale, self.p
-        words: dict[str, float] = {}
-        for letter, value in change.words.items():
-            if isinstance(value, Expr):
-                raise ProgramError(COMPUTED)
-            words[letter] = value * scale if letter in LINEAR else value
-        fanuc = frame.rules == "fanuc"
-        if fanuc and kind in ("local", "origin") and frame.linear_active():
-            raise ProgramError(_FANUC_FORBIDDEN.format(what=change.describe()))
-        if fanuc and kind in ("local", "origin") and self.modal.distance == "incremental":
-            raise ProgramError(f"{change.describe()} in incremental mode is not simulated (whether its words are "
-                               "increments is not settled [?]): program it in absolute mode")
-        compensating = self.modal.extra.get("frames.cutter") in _SWAPPED
-        if compensating and (kind in ("local", "origin", "origin_clear", "origin_suspend", "origin_restore")
-                             or frame.rules in ("fanuc", "chain", "isg")):
-            # [V] rs274: "Cannot change axis offsets with cutter radius comp"; [K] Fanuc commands mirror,
-            # scaling and rotation before compensation starts and cancels them after it ends; a SINUMERIK
-            # frame change under G41/G42 is not simulated [?: how the compensated path joins across it]
-            raise ProgramError(f"{change.describe()} with cutter compensation on cannot be run (cancel it first)")
-        if frame.rules == "chain":
-            frame.chain(chain_component(change.kind, words, self.modal.plane, change.describe()),
-                        kind.endswith("_add"), p)
-            return
-        if kind == "local":
-            frame.set_local(_axes(words), p)
-        elif kind == "origin":
-            if fanuc and any(frame.local.values()):
-                raise ProgramError(f"{change.describe()} while a local coordinate system is in force is not simulated "
-                                   "(whether it cancels that system is not settled [?]): cancel it first")
-            frame.set_origin(_axes(words), p, change.describe())
-            self.reached.unsettled.difference_update(words)  # the current point now reads the words
-        elif kind in ("origin_clear", "origin_suspend"):
-            frame.clear_origin(p, kind == "origin_suspend")
-        elif kind == "origin_restore":
-            frame.restore_origin(p)
-        elif kind == "rotate":
-            self.rotate(frame, change, words)
-        elif kind == "rotate_off":
-            frame.unrotate(p)
-        elif kind == "scale":
-            if frame.rotation is not None or frame.scaling is not None:
-                # [K] Fanuc: mirror, then scaling, then rotation; cancelled in reverse
-                raise ProgramError(f"{change.describe()}: scaling is commanded before coordinate rotation, and "
-                                   "not again while it is on")
-            common = words.get("P")
-            factors = tuple(words.get(f, 1.0 if common is None else common) for f in "IJK")
-            centre = tuple(words[a] if a in words else 0.0 if f == 1.0 else self._here(a, change)
-                           for a, f in zip(XYZ, factors))
-            frame.scale(centre, factors, p)  # type: ignore[arg-type]
-        elif kind == "scale_off":
-            if frame.rotation is not None:
-                raise ProgramError("scaling is cancelled after coordinate rotation (cancel the rotation first)")
-            frame.unscale(p)
-        elif kind == "mirror":
-            if frame.rotation is not None or frame.scaling is not None:
-                # [K] Siemens' ISO-dialect manual 3.2, as Fanuc: no mirror command in scaling or rotation mode
-                raise ProgramError(f"{change.describe()} while scaling or coordinate rotation is on cannot be run")
-            frame.set_mirror(_axes(words), p)
-        elif kind == "mirror_off":
-            if frame.rotation is not None or frame.scaling is not None:
-                raise ProgramError(f"{change.describe()} while scaling or coordinate rotation is on cannot be run")
-            frame.clear_mirror(tuple(_axes(words)), p)
-        elif kind == "polar":
-            frame.polar = self.modal.plane
-        elif kind == "polar_off":
-            frame.polar = None
+        """A frame command into the frame (``commands.command``)."""
+        command(self, block, change)
 
     def pending(self, s: dict[str, Section], frame: Frame) -> None:
-        """chain rules: the first incremental move on an axis a frame change moved is refused: whether it
-        also travels that change is setting data SD42440 FRAME_OFFSET_INCR_PROG (1, the default: it does;
-        0: only the increment) [K: 840D Function Manual K2 08/2005 1.3 "Frames with G91"]. An absolute move
-        settles the axis."""
-        m = s.get("Motion")
-        if not isinstance(m, Motion) or m.mode is None or "MachineCoordinates" in s:
-            return
-        if self.modal.distance == "incremental":
-            for axis in m.axes:
-                if axis in frame.pending:
-                    raise ProgramError(f"an incremental {axis} after a frame change: whether it also travels the "
-                                       "change is setting data SD42440 (FRAME_OFFSET_INCR_PROG): program "
-                                       f"{axis} absolutely first")
-            return
-        frame.pending.difference_update(m.axes)
+        """The axes a command left to be programmed again (``commands.pending``)."""
+        pending(self, s, frame)
 
-    def rotate(self, frame: Frame, change: FrameChange, words: dict[str, float]) -> None:
-        if frame.rules == "isg":
-            self.isg_rotate(frame, change, words)
-            return
-        plane = self.modal.plane
-        if plane != "XY":
-            raise ProgramError(f"{change.describe()} in the {plane} plane is not simulated (the sense of a rotation "
-                               "there is not settled [?]): only in the XY plane")
-        if frame.rotation is not None:
-            raise ProgramError(f"{change.describe()} while coordinate rotation is already on (cancel it first)")
-        if "R" not in words:
-            raise ProgramError(f"{change.describe()} without R takes its angle from parameter 5410, not known "
-                               "here: program R")
-        a1, a2, _ = PLANE_AXES[plane]
-        if self.modal.distance == "incremental" and (a1 in words or a2 in words):
-            raise ProgramError(f"{change.describe()} in incremental mode is not simulated (whether its centre words "
-                               "are increments is not settled [?]): program the centre in absolute mode")
-        c1 = words[a1] if a1 in words else self._here(a1, change)
-        c2 = words[a2] if a2 in words else self._here(a2, change)
-        degrees = words["R"]
-        if self.ctx.setup.controller.rotation_incremental and self.modal.distance == "incremental":
-            # [V] Fanuc 0i-A connection manual, parameter 5400#0 RIN = 1: R follows G90/G91; [K] Haas setting
-            # 73: "each G68 command changes the rotation angle by the value in R"
-            if frame.last_angle is None:
-                raise ProgramError(f"{change.describe()}: an incremental angle needs a rotation before it (its "
-                                   "reference at the program's start is not settled [?]): program R absolutely")
-            degrees += frame.last_angle
-        frame.rotate(plane, c1, c2, degrees, self.p)
-
-    def isg_rotate(self, frame: Frame, change: FrameChange, words: dict[str, float]) -> None:
-        """ISG G68 [V: Beckhoff TF5200 programming manual, "Rotate the coordinate system in the plane
-        (G68/G69)"]: R in degrees, absolute (none: 0); the centre's absolute coordinates on the plane's two
-        main axes (G17 X and Y, G18 Z and X, G19 Y and Z; G91 or not), an omitted one the current position; a
-        G68 replaces the rotation in force. The rotation acts on the programmed coordinates before every
-        offset and mirror, which stay in the machine's axis directions: ``w = offsets(R p)``. A positive angle
-        turns from the plane's first main axis toward its second (G17: X toward Y, as the manual's figure
-        draws; G18: Z toward X; G19: Y toward Z), counter-clockwise seen from the third axis, the sense G03
-        runs in that plane [K: the G17 figure and the planes' axis order of "Selection of planes (G17/G18/G19)";
-        the sense in G18/G19 is not drawn]. Refused [?]: an omitted centre while a rotation is on (whether "the
-        current position" is then read turned is not stated)."""
-        plane = self.modal.plane
-        a1, a2, _ = PLANE_AXES[plane]
-        if frame.rotation is not None and (a1 not in words or a2 not in words):
-            raise ProgramError(f"{change.describe()} without its centre while a rotation is on: whether the current "
-                               f"position is read turned is not settled [?]: program {a1} and {a2}")
-        c1 = words[a1] if a1 in words else self._here(a1, change)
-        c2 = words[a2] if a2 in words else self._here(a2, change)
-        frame.rotate(plane, c1, c2, words.get("R", 0.0), self.p)
-
-    def _here(self, axis: str, change: FrameChange) -> float:
-        """The current point as a centre the command omits ([V] Fanuc 15i/16i: the tool position)."""
-        here = self.p.get(axis)
-        if here is None:
-            raise ProgramError(f"{change.describe()} without {axis} takes the current position as its centre, "
-                               f"which is not known here: program {axis}")
-        return here
-
-    # -- moves ---------------------------------------------------------------------------------------
     def track(self, s: dict[str, Section]) -> None:
         """No frame: only the program position follows the block."""
         cc = s.get("CutterCompensation")
@@ -455,8 +316,8 @@ class FrameEvaluator:
         if isinstance(cc, CutterCompensation):
             self.modal.extra["frames.cutter"] = cc.mode
             found = frame.map.arc_factor(PLANE_AXES["XY"])
-            if cc.mode in _SWAPPED and found is not None and found[1]:
-                s["CutterCompensation"] = CutterCompensation(_SWAPPED[cc.mode], cc.register)
+            if cc.mode in SWAPPED and found is not None and found[1]:
+                s["CutterCompensation"] = CutterCompensation(SWAPPED[cc.mode], cc.register)
                 changed = True
         compound = s.get("CompoundMotion")
         m = s.get("Motion")
@@ -509,13 +370,13 @@ class FrameEvaluator:
         p, scale, mode = self.p, self.scale, m.mode
         if "MachineCoordinates" in s and mode not in ("home", "home2"):
             if frame.rules == "fanuc" and frame.linear_active():
-                raise ProgramError(_FANUC_FORBIDDEN.format(what="a move in machine coordinates"))
+                raise ProgramError(FANUC_FORBIDDEN.format(what="a move in machine coordinates"))
             for axis in m.axes:
                 p[axis] = None
             return m
         home = mode in ("home", "home2")
         if home and frame.linear_active():
-            raise ProgramError(_FANUC_FORBIDDEN.format(what="a reference return") if frame.rules == "fanuc" else
+            raise ProgramError(FANUC_FORBIDDEN.format(what="a reference return") if frame.rules == "fanuc" else
                                "a reference return under a rotated work system is not simulated [?: where its "
                                "intermediate point lies]")
         if _computed(m):
@@ -654,11 +515,6 @@ class FrameEvaluator:
         return Motion(_TURNED[mode] if turned else mode, out, centre, radius)
 
 
-_FANUC_FORBIDDEN: Final = "{what} while coordinate rotation, scaling or a mirror image is on cannot be run"
-"""[K] Fanuc 0i-MF and Siemens' ISO-dialect manual 3.2: no reference return and no coordinate system command
-(local, machine or work coordinates, coordinate setting) in these modes."""
-
-
 _WATCHED: Final = frozenset(("Units", "Plane", "DistanceMode", "WorkOffset", "DataSetting", "FrameChange", ASSIGN,
                              CONTROL, "CutterCompensation", "CompoundMotion", "MachineCoordinates",
                              "ToolLengthOffset", "DynamicCutterCompensation"))
@@ -712,8 +568,3 @@ def _cos_sin(degrees: float) -> tuple[float, float]:
 def _trace(s: dict[str, Section], change: FrameChange) -> None:
     """The evaluated command stays in the output as a comment (no block vanishes without a trace)."""
     _note(s, f"{change.text} evaluated")
-
-
-def _axes(words: dict[str, float]) -> dict[str, float]:
-    return {k: v for k, v in words.items() if k in AXES}
-
