@@ -123,6 +123,10 @@ class Dialect:
     """Kinds of hole pattern (``postproc.patterns.HolePattern``: line, parallelogram, grid, circle, arc)
     the controller runs natively, repeating its active canned cycle; a pattern of another kind is
     written as the cycle at every point (``expand_hole_patterns``)."""
+    STORED_WORK_OFFSETS: ClassVar[bool] = False
+    """The dialect's programs may write a work offset into the controller's table, taken at the work system's
+    next selection (``STORED_WORK_OFFSET``: ISG ``V.G.NP[n]``...): a translation from it to a target whose
+    setting acts at once moves such a setting to the next selection (``postproc.lowering.stored_offsets``)."""
     INVERSE_TIME_FEED: ClassVar[bool] = False
     """The controller runs G93 inverse-time feed as RS274/NGC does (a move in 1/F minutes); else a
     translation writes each move's feed per minute (``postproc.lowering.inverse_time``)."""
@@ -390,6 +394,8 @@ class Dialect:
         ctx.path_at_start = cls.PATH_CONTROL_AT_START
         ctx.lathe_turret = cls.LATHE_TURRET
         ctx.peck_clearance_mm = cls.PECK_CLEARANCE_MM
+        if cls.STORED_WORK_OFFSETS:
+            ctx.run_data[STORED_OFFSETS_KEY] = True  # (``postproc.lowering.stored_offsets``)
         if cls.INVERSE_TIME_FEED:
             ctx.run_data[INVERSE_TIME_KEY] = True  # its programs may run in G93 (``postproc.lowering.inverse_time``)
         ctx.lathe = cls.reads_lathe(setup)
@@ -405,6 +411,8 @@ class Dialect:
         return ctx
 
 
+STORED_OFFSETS_KEY = "stored_work_offsets"
+"""``ctx.run_data`` key: the reading dialect has ``STORED_WORK_OFFSETS``."""
 INVERSE_TIME_KEY = "inverse_time"
 """``Context.run_data`` key, set when the reading dialect has G93 (``Dialect.INVERSE_TIME_FEED``)."""
 RULES_UNKNOWN_KEY = "cutter_rules_unknown"

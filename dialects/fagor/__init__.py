@@ -52,6 +52,9 @@ def resolve_radius_where_d_cannot(blocks: Iterator[Block], ctx: Context, target:
 
 class Fagor(Dialect):
     NAME = "fagor"
+    STORED_WORK_OFFSETS = True
+    """Its zero offset variables write the table, taken at the work system's next selection (the reader's
+    ``ZERO_OFFSETS``)."""
     ARC_END = ArcEndRule(metric=0.01, inch=0.01 / MM_PER_INCH, runs=NEAREST_CENTRE)
     """G265, the state at power-on, after M02/M30 and after a reset, moves the centre of an arc whose start and
     end radii differ so that an arc runs between the programmed points "as close as possible to the defined

@@ -33,12 +33,18 @@ from postproc.ir import Block, Comments, NativeCode, ProgramStart, Sequence
 from postproc.isg_family.expressions import Unmodelled
 from postproc.isg_family.lexer import Grammar, Lexed, lex, strip_comments
 from postproc.isg_family.statements import Nesting, parse_statement
+from postproc.isg_family.zero_offsets import ZeroOffsets
 from postproc.rs274.lexer import split_lines
 
 from .codes import PATTERN_CODES
 
 GRAMMAR = Grammar(parens=True, bare_dwell_time=False, assigned_g=frozenset({"159"}), p_words_after=PATTERN_CODES)
 """Parenthesised comments, no bare dwell time, ``G159=n``, ``P`` a plain word after ``G160``-``G165``."""
+
+ZERO_OFFSETS = ZeroOffsets("fagor", r"V\.A\.ORGT\[\s*(?P<index>\d+)\s*\]\.(?P<axis>[A-Z]\w*)\s*=\s*(?P<value>{NUMBER})", 6)
+"""``V.A.ORGT[n].<axis>=<number>``: zero offset n's axis, taken at its next selection (the writer's
+``WORK_OFFSET_VARIABLE`` says the sources [K/?]); n 1-6 (G54-G59, ``G159=1``-``6``). Another form stays an array
+element, not modelled."""
 
 COMMANDS = {
     "#CALL": "subroutine call [?]", "#PCALL": "subroutine call with local parameters [?]",
@@ -91,6 +97,10 @@ class _State:
         code = strip_comments(self.file, number, text, lexed, parens=GRAMMAR.parens)
         if self.sub is not None and not code.lstrip().startswith("%"):
             return self.native(block, f"a block of the local subroutine %L {self.sub[0]} [?]")
+        if "V.A.ORGT[" in code.upper() and ZERO_OFFSETS.read(block, code, self.file):
+            if lexed.comments:
+                block.add(Comments(lexed.comments))
+            return block
         try:
             lex(self.file, number, code, lexed, GRAMMAR)
         except Unmodelled as err:

@@ -67,8 +67,18 @@ class FagorWriter(WordWriter):
     DWELL_WORD: ClassVar[str] = ""
     MACHINE_MOVES: ClassVar[frozenset[str]] = frozenset(("rapid",))
     """``G53`` is written with ``G00`` only (``codes``: a feed move under G53 is not confirmed [?])."""
-    SPLIT: ClassVar[frozenset[str]] = frozenset(("TapeMark", "MachineCoordinates"))
-    """Another dialect's tape mark, a move in machine coordinates: ``split_block``."""
+    SPLIT: ClassVar[frozenset[str]] = frozenset(("TapeMark", "MachineCoordinates", "DataSetting"))
+    """Another dialect's tape mark, a move in machine coordinates, a work offset setting: ``split_block``."""
+    WORK_OFFSET_VARIABLE: ClassVar[str] = "V.A.ORGT[{index}].{axis}={value}"
+    """Another dialect's work offset setting (Fanuc ``G10 L2 P1 X0``) is ``V.A.ORGT[1].X=0``, the zero offset
+    table's entry [K: two independent programs for the 8070 write it so, each then selecting the entry:
+    4DIAC FORTE's L0_8070Service ``V.A.ORGT[n].X=.. V.A.ORGT[n].Y=.. V.A.ORGT[n].Z=.. G159=n``, a CAM post's
+    machine start ``V.A.ORGT[1].Z=190`` ``#FLUSH`` ``G54``; the 8070 programming manual's variable list was not
+    reachable here]. That the table's entry acts only from its next selection is taken from those programs,
+    which all select it after writing it [?]: for the active system the selection is written again after
+    it (``work_offset_assignments``)."""
+    WORK_OFFSET_COUNT: ClassVar[int] = 6
+    """ORGT[1]-[6]: G54-G59 (``G159=1``-``G159=6``, DIALECTS.md 1.4)."""
     SPLIT_MOTIONS: ClassVar[frozenset[str]] = _REFERENCE
     """A reference return: ``split_block``."""
 
@@ -88,6 +98,10 @@ class FagorWriter(WordWriter):
         return cycle_words(self.ctx.setup)
 
     def split_block(self, block: Block) -> str | None:
+        if "DataSetting" in block.sections:
+            setting = self.work_offset_assignments(block, self._part)
+            if setting is not None:
+                return setting
         if "TapeMark" in block.sections:
             return ";%" + (block.eol or "\n")  # a tape's start or end: no Fagor block, kept as a trace
         motion = block.sections.get("Motion")

@@ -44,6 +44,9 @@ def resolve_radius_where_d_cannot(blocks: Iterator[Block], ctx: Context, target:
 
 class Isg(Dialect):
     NAME = "isg"
+    STORED_WORK_OFFSETS = True
+    """Its zero offset variables write the table, taken at the work system's next selection (the reader's
+    ``ZERO_OFFSETS``)."""
     ARC_END = ArcEndRule(metric=2.0, inch=2.0 / MM_PER_INCH, relative=0.05, runs=NEAREST_CENTRE,
                          of_centre_shift=True)
     """G165, the power-on state, moves the programmed centre of an I/J/K arc so that a circle runs from the

@@ -42,6 +42,12 @@ from .declarations import IsgTypes, parse_declaration, stored
 from postproc.isg_family.expressions import Unmodelled
 from postproc.isg_family.lexer import Lexed, lex, strip_comments
 from postproc.isg_family.statements import Nesting, parse_statement
+from postproc.isg_family.zero_offsets import ZeroOffsets
+
+ZERO_OFFSETS = ZeroOffsets("isg", r"V\.G\.NP\[\s*(?P<index>\d+)\s*\]\.V\.(?P<axis>[A-Z]\w*)\s*=\s*(?P<value>{NUMBER})", 6)
+"""``V.G.NP[n].V.<axis>=<number>``: zero offset n's axis, taken at G53+n's next selection (the writer's
+``WORK_OFFSET_VARIABLE`` says the sources); n 1-6 (G54-G59). Another form (a computed value, ``V.G.NP_AKT``)
+stays an array element, not modelled."""
 
 RETURN_CODES = frozenset({17, 29})
 """``M17``/``M29`` end a subroutine."""
@@ -128,6 +134,10 @@ class _State:
         code = strip_comments(self.file, number, code, lexed)
         if self.in_var is not None and code.strip() and "#" not in code and ("=" not in code or ":" in code):
             return self.declare(block, code, lexed.comments)
+        if "V.G.NP[" in code.upper() and ZERO_OFFSETS.read(block, code, self.file):
+            if lexed.comments:
+                block.add(Comments(lexed.comments))
+            return block
         try:
             lex(self.file, number, code, lexed)
         except Unmodelled as err:

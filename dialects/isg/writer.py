@@ -54,8 +54,18 @@ class IsgWriter(WordWriter):
     DWELL_WORD: ClassVar[str] = "X"
     SUBPROGRAM_NAMES: ClassVar[NameRule] = NameRule(numbers=range(0), spare=range(0), names=True)
     """Local subroutines by name only (DIALECTS.md 1.3 [V])."""
-    SPLIT: ClassVar[frozenset[str]] = frozenset(("MachineCoordinates", "Dwell", "Label"))
-    """A move in machine coordinates, a dwell beside other words, a label: ``split_block``."""
+    SPLIT: ClassVar[frozenset[str]] = frozenset(("MachineCoordinates", "Dwell", "Label", "DataSetting"))
+    """A move in machine coordinates, a dwell beside other words, a label, a work offset setting:
+    ``split_block``."""
+    WORK_OFFSET_VARIABLE: ClassVar[str] = "V.G.NP[{index}].V.{axis}={value}"
+    """Another dialect's work offset setting (Fanuc ``G10 L2 P2 X0``) is ``V.G.NP[2].V.X=0`` [V: Beckhoff TF5200
+    programming manual, "Zero offsets (G53/G54/...G59)", example ``V.G.NP[1].V.X=10`` then ``G54`` ("corresponds
+    to group [1]")]: it writes the zero offset list, and the decoder takes a list entry when its G54-G59 is
+    selected [K: same manual, "Enhanced zero offset variables": a write via ``V.G.NP_AKT`` acts on the offset in
+    the decoder only, and the list's values come back when that offset is selected again], so for the active
+    system the selection is written again after it (``work_offset_assignments``)."""
+    WORK_OFFSET_COUNT: ClassVar[int] = 6
+    """V.G.NP[1]-[6]: G54-G59."""
     SPLIT_MOTIONS: ClassVar[frozenset[str]] = REFERENCE
     """A reference return: ``split_block`` (``machine_move``)."""
 
@@ -103,6 +113,10 @@ class IsgWriter(WordWriter):
             raise
 
     def split_block(self, block: Block) -> str | None:
+        if "DataSetting" in block.sections:
+            setting = self.work_offset_assignments(block, self._part)
+            if setting is not None:
+                return setting
         motion = block.sections.get("Motion")
         if isinstance(motion, Motion) and ("MachineCoordinates" in block.sections or motion.mode in REFERENCE):
             return self.machine_move(block, motion)

@@ -53,6 +53,9 @@ def orient_before_taps(blocks: Iterator[Block], ctx: Context, target: type[Diale
 
 class Siemens(Dialect):
     NAME = "siemens"
+    STORED_WORK_OFFSETS = True
+    """Its zero offset variables write the table, taken at the work system's next selection (the reader's
+    ``ZERO_OFFSETS``)."""
     DESCRIPTION = "Siemens SINUMERIK 840D sl / 828D milling: R parameters, DEF variables, IF/WHILE/FOR, GOTOF labels"
     READER = Lazy[type[Reader]](".reader:SiemensReader")
     """Imported when a run first reads SINUMERIK (``Lazy``), as are the writer and the syntax objects."""

@@ -50,6 +50,7 @@ from postproc.errors import Location, ParseError, PostprocError
 from postproc.expr import Binary, Expr, Func, Num, Var
 from postproc.ir import Block, BlockDelete, Comments, NativeCode, ProgramStart, Sequence, SpindleOrientation
 from postproc.isg_family.expressions import Unmodelled
+from postproc.isg_family.zero_offsets import ZeroOffsets
 from postproc.rs274.expressions import ExprSyntaxError, skip_blanks
 from postproc.rs274.lexer import split_lines
 
@@ -74,6 +75,12 @@ _WORDS_READ = frozenset(("CIP", "SUPA", "SPOS"))
 """Instruction words that start a block and are read with its words (``arcs``, ``frame_suppression``,
 ``spindle_position``)."""
 
+
+ZERO_OFFSETS = ZeroOffsets(
+    "siemens", r"\$P_UIFR\[\s*(?P<index>\d+)\s*,\s*(?P<axis>[A-Z]\w*)\s*,\s*TR\s*\]\s*=\s*(?P<value>{NUMBER})", 99)
+"""``$P_UIFR[n,<axis>,TR]=<number>``: the coarse translation of settable frame n, taken at the next selection of
+its G code (the writer's ``WORK_OFFSET_VARIABLE`` says the sources [K]); n 1-99 (G54-G57, G505-G599). Another
+form (a whole frame ``=CTRANS(..)``, a fine offset FI, a computed value) stays a system variable, not modelled."""
 
 class SiemensReader(Reader):
     def read(self, lines: Iterable[str]) -> Iterator[Block]:
@@ -121,6 +128,8 @@ class _State(CallReading, ControlReading):
         code, comment = _strip_comment(text)
         if comment is not None:
             block.add(Comments([comment]))
+        if "$P_UIFR[" in code.upper() and ZERO_OFFSETS.read(block, code, self.file):
+            return block
         try:
             self.lex(block, code)
         except Unmodelled as err:

@@ -91,8 +91,24 @@ class SiemensWriter(WordWriter):
             return text.rstrip()
         return super().normalized(block)
 
+    WORK_OFFSET_VARIABLE: ClassVar[str] = "$P_UIFR[{index},{axis},TR]={value}"
+    """Another dialect's work offset setting (Fanuc ``G10 L2 P1 X0``) is the coarse translation of settable frame
+    n, ``$P_UIFR[1,X,TR]=0`` [K: SINUMERIK 840D sl job planning manual, frame components TR/FI/RT/SC/MI of
+    ``$P_UIFR[n,axis,component]``; Autodesk's SINUMERIK posts write ``$P_UIFR[1,X,TR]=..`` before the program].
+    The control writes the frame into the data management and activates it with the next G54-G57/G505-G599
+    [K: same manual, settable frames: a ``$P_UIFR`` written in the program acts from the next selection of its
+    G code]: for the active system that selection is written again after it (``work_offset_assignments``). A
+    fine offset (FI) the machine holds for that frame stays: the fine offset is a machine datum option
+    (MD18600) the set-up does not describe [?]."""
+    WORK_OFFSET_COUNT: ClassVar[int] = 99
+    """$P_UIFR[1]-[4]: G54-G57; [5]-[99]: G505-G599 (the work systems 5-99 the code table writes so)."""
+
     def generate(self, block: Block) -> str:
         sections = block.sections
+        if "DataSetting" in sections:
+            setting = self.work_offset_assignments(block, self._part)
+            if setting is not None:
+                return setting
         if "TapeMark" in sections:
             return ";%" + (block.eol or "\n")  # another dialect's tape mark: a SINUMERIK % line is a header
         if "Dwell" in sections and any(k not in _ALONE_WITH_DWELL for k in sections) \

@@ -13,14 +13,15 @@ direction turned over by a mirror, and refused where the frame makes it an ellip
 frame other than offsets is expanded (its holes carried like moves), and a mirror swaps the side of
 cutter compensation. The frame commands themselves leave the block.
 
-Over 600 lines: one class carries the frame through every kind of block, and it is compiled whole (it runs
-for every translation to another dialect); the rules of each command live in ``frame``.
+The rules of each command live in ``frame``; the commands' handling in the run (a command into the frame, the
+axes it leaves to be programmed again, the rotations) in ``commands``; what offset changes and data settings
+do to the program position in ``offset_changes``. This module carries the moves through the frame.
 
 The program position is tracked in program coordinates (mm), None where unknown; a move that needs an
 unknown coordinate (an axis it omits, that the frame mixes into the ones it programs) is a located error. On
 a controller that keeps the machine point at a tool offset change the position takes the change
-(``tool_change``), so it is the current point the controller reads: what a G92 sets its offset from and
-what a program reads as its position (``postproc.frames.parameters``).
+(``offset_changes.tool_change``), so it is the current point the controller reads: what a G92 sets its offset
+from and what a program reads as its position (``postproc.frames.parameters``).
 
 A program kept symbolically (its loops, jumps and calls written for a target that has them) runs in
 another order than its text: there a frame command that may not run once where the text has it
@@ -42,28 +43,22 @@ from mypy_extensions import mypyc_attr
 from ..context import Context
 from ..dialect import Dialect
 from ..compensation.tool_length import ToolLength
-from ..compensation.tool_table import ENTRY, TABLES, ToolTable
-from ..errors import PostprocError, ProgramError, UnsupportedError
+from ..errors import PostprocError, ProgramError
 from ..control import ASSIGN, CONTROL
 from ..expr import Binary, Expr, Num
-from ..ir import AXES, Block, Comments, CompoundMotion, CutterCompensation, DataSetting, Motion, Section, ToolLengthOffset
+from ..ir import Block, CompoundMotion, CutterCompensation, Motion, Section
 from ..state import MM_PER_INCH, ModalState, changes_nothing
 from .affine import EXACT, INDEX, XYZ
-from .frame import PLANE_AXES, Frame, Position, chain_component
+from .frame import PLANE_AXES, Frame, Position
 from .run_order import RunOrder
 from .section import FrameChange
+from .offset_changes import current_point_reads, data_setting
+from .commands import command, pending
+from .words import COMPUTED, FANUC_FORBIDDEN, LINEAR, SWAPPED, SYMBOLIC, note as _note
 
-LINEAR: Final = frozenset("XYZUVW")
-COMPUTED: Final = "a computed word under a coordinate frame (the frame is evaluated into the coordinates here)"
-SYMBOLIC: Final = ("a coordinate frame in a program kept symbolically (it would be evaluated in the order of the "
-                   "text, not of the run)")
 RUN_KEY: Final = "frames.run"
 """``ctx.state.extra`` key of the frame and program position the lowering has reached (``FrameRun``)."""
 
-MEASURED_ENTRIES: Final = frozenset(("tool_entry_at_point", "tool_entry_at_point_9"))
-TOOL_TABLES: Final = frozenset((ENTRY, *TABLES))
-"""Tool table writes a later tool offset change reads (``FrameEvaluator.tool_entry``)."""
-"""Tool table entries a program measures where the tool stands (LinuxCNC's, ``postproc.simulate.moves.touch_off``)."""
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
@@ -84,7 +79,7 @@ class FrameRun:
         ``postproc.frames.parameters``)."""
         self.tools: ToolLength | None = None
         """The tool length offset in force (made at the first change), on a controller that keeps the machine
-        point at a change (``tool_change``)."""
+        point at a change (``offset_changes.tool_change``)."""
         self.sideways: dict[str, float] = {}
         """The X and Y offsets of the tool entry in force (mm)."""
         self.tools_known = True
@@ -103,7 +98,6 @@ class FrameRun:
         """The work system the program selected last (1 = G54); None before it selects one (the machine's)."""
         self.order = RunOrder()
         """The constructs and jumps of the symbolic part: which frame command runs in the text's order."""
-_SWAPPED: Final = {"left": "right", "right": "left"}
 _TURNED: Final = {"cw": "ccw", "ccw": "cw"}
 
 
@@ -221,55 +215,8 @@ class FrameEvaluator:
             block.changed()
 
     def current_point_reads(self, s: dict[str, Section]) -> None:
-        """What the program position and a read of it (``postproc.frames.parameters``) must know of the
-        block: a tool offset change (``tool_change``); cutter compensation on forbids the read (rs274: "Cannot
-        read current position with cutter radius compensation on" [V: ``interp_read.cc``
-        ``read_integer_parameter``])."""
-        length = s.get("ToolLengthOffset")
-        if isinstance(length, ToolLengthOffset) and self.ctx.length_at_axis:
-            self.tool_change(length)  # before the block's motion [V: rs274 order of execution]
-        cc = s.get("CutterCompensation")
-        if cc is not None:
-            self.reached.cutter = getattr(cc, "mode", "off") != "off"
-        if "DynamicCutterCompensation" in s:
-            self.reached.cutter = True
-
-    def tool_change(self, length: ToolLengthOffset) -> None:
-        """A tool offset change on a controller that keeps the machine point until the axis is programmed
-        (``Dialect.LENGTH_AT_PROGRAMMED_AXIS``): the program position moves by the change, ``current_z + old -
-        new`` [V: LinuxCNC ``interp_convert.cc`` ``convert_tool_length_offset``, on every axis of the entry;
-        rs274 ``G43 H1`` then ``G92 Z0`` sets the offset from the moved point], as the simulation's
-        programmed point does (``postproc.simulate.moves``). Where the new offset is not known here (a computed
-        register, one the set-up lacks, an entry measured where the tool stands), X, Y and Z are unknown."""
-        run, p = self.reached, self.p
-        if run.tools is None:
-            run.tools = ToolLength(ToolTable(self.ctx.setup))
-        register = length.register
-        old_z, old_side = run.tools.offset, run.sideways
-        try:
-            if isinstance(register, Expr) or isinstance(length.length, Expr) or (
-                    not run.table_known and length.mode in ("positive", "negative")):
-                raise ProgramError("a computed tool offset, or an entry not known here")
-            run.tools.change(length.mode, register, length.length, self.scale)
-            side = run.tools.table.sideways(register) if length.mode == "positive" and isinstance(register, int) \
-                else {}
-        except PostprocError:
-            run.tools_known = False
-            for axis in XYZ:
-                p[axis] = None
-            return
-        if not run.tools_known:
-            run.tools_known = True  # known again from here; the point before stays unknown
-            for axis in XYZ:
-                p[axis] = None
-        changes = {"Z": run.tools.offset - old_z}
-        for axis in set(side) | set(old_side):
-            changes[axis] = changes.get(axis, 0.0) + side.get(axis, 0.0) - old_side.get(axis, 0.0)
-        run.sideways = side
-        for axis, change in changes.items():
-            here = p.get(axis)
-            if change and here is not None:
-                p[axis] = here - change
+        """A tool offset change, cutter compensation on or off (``offset_changes.current_point_reads``)."""
+        current_point_reads(self, s)
 
     def targets(self, s: dict[str, Section]) -> None:
         """The jump targets a block of the symbolic part carries (``RunOrder``)."""
@@ -303,7 +250,7 @@ class FrameEvaluator:
                 raise ProgramError("the plane cannot change while coordinate rotation is on")
         if modal.work_offset != work:
             if frame is not None and frame.rules == "fanuc" and frame.linear_active():
-                raise ProgramError(_FANUC_FORBIDDEN.format(what="a work system change"))
+                raise ProgramError(FANUC_FORBIDDEN.format(what="a work system change"))
             for axis in self.p:
                 self.p[axis] = None  # the tool stays; its place in the new system is not known here
             if frame is not None:
@@ -312,100 +259,11 @@ class FrameEvaluator:
                     frame.pending.update(XYZ)  # SD42440 applies to a settable offset too [K: K2 1.3]
 
     def data_setting(self, block: Block, s: dict[str, Section]) -> bool:
-        """G10 L2: a work system's rotation (R) goes into the frame and out of the setting; an offset of
-        the active system moves the program position (the tool stays)."""
-        setting = s["DataSetting"]
-        assert isinstance(setting, DataSetting)
-        if self.ctx.length_at_axis and (setting.table in TOOL_TABLES or setting.table in MEASURED_ENTRIES):
-            self.tool_entry(setting)
-        if setting.table in MEASURED_ENTRIES and self.frame is not None and not self.frame.plain():
-            # the entry is the tool's point in the work system without the tool offset, less the values
-            # ([V] LinuxCNC convert_setup_tool): that point under the program's shift or rotation is not
-            # worked out here, so no entry is guessed
-            raise UnsupportedError("a tool entry measured where the tool stands, under a coordinate shift or rotation "
-                                   "of the program's own, is not modelled")
-        if not setting.table.startswith("work_offset"):
-            return False
-        values = setting.values
-        active = setting.table == "work_offset" and setting.index == self.modal.work_offset
-        known = self.g5x.setdefault(setting.index, {}) if setting.table == "work_offset" else {}
-        for axis, value in values.items():
-            if axis == "R":
-                continue
-            if isinstance(value, Expr) or setting.incremental:
-                known.pop(axis, None)
-                if active:
-                    self.p[axis] = None
-                continue
-            new = value * (self.scale if axis in LINEAR else 1.0)
-            old = known.get(axis)
-            here = self.p.get(axis)
-            if active:
-                self.p[axis] = None if here is None or old is None else here + old - new
-            known[axis] = new
-        if "R" not in values:
-            return False
-        turn = values["R"]
-        if isinstance(turn, Expr):
-            raise ProgramError(COMPUTED)
-        if self.reached.symbolic:
-            raise ProgramError(SYMBOLIC)
-        if setting.table != "work_offset":
-            raise ProgramError("a rotation (R) of an extended work system cannot be evaluated")
-        frame = self._frame("rs274")
-        if self.frame is not None and frame.rules != "rs274":
-            raise ProgramError("a work system rotation (R) beside another controller's frame")
-        frame.set_turn(setting.index, float(turn))
-        if active:
-            self.p["X"], self.p["Y"] = None, None  # [V] convert_setup moves the current point into the turned system
-        rest = {k: v for k, v in values.items() if k != "R"}
-        words = setting.text.split()
-        if rest:
-            s["DataSetting"] = DataSetting(setting.family, setting.table, setting.index, rest, setting.incremental,
-                                           " ".join(w for w in words if not w.upper().startswith("R")))
-            _note(s, " ".join(w for w in words if w.upper().startswith("R")) + " evaluated")
-        else:
-            del s["DataSetting"]
-            _note(s, f"{setting.text} evaluated")
-        return True
+        """A G10 (``offset_changes.data_setting``): True where the block changed."""
+        return data_setting(self, block, s)
 
-    def tool_entry(self, setting: DataSetting) -> None:
-        """A program's tool table entry, which a later offset change reads (``tool_change``). One measured
-        where the tool stands (``G10 L10``) is the current point plus the offset in force, less the word [V:
-        LinuxCNC ``convert_setup_tool``; ``postproc.lowering.measured_entries``]; where that is not known here
-        (work system 9's ``L11``, an unknown point, a computed word), every offset read after it is unknown."""
-        run = self.reached
-        if run.tools is None:
-            run.tools = ToolLength(ToolTable(self.ctx.setup))
-        if setting.table in MEASURED_ENTRIES:
-            setting = self._measured(setting)
-        if any(isinstance(v, Expr) for v in setting.values.values()) or setting.table in MEASURED_ENTRIES:
-            run.table_known = False
-            return
-        try:
-            run.tools.table.write(setting, self.scale)
-        except PostprocError:
-            run.table_known = False
-
-    def _measured(self, setting: DataSetting) -> DataSetting:
-        """The whole entry a measured one sets (unchanged where it is not worked out here)."""
-        run = self.reached
-        if setting.table != "tool_entry_at_point" or not run.tools_known or (
-                self.frame is not None and not self.frame.plain()):
-            return setting
-        offsets = {"Z": run.tools.offset if run.tools is not None else 0.0, **run.sideways}
-        values: dict[str, float | Expr] = {}
-        for letter, value in setting.values.items():
-            here = self.p.get(letter)
-            if letter not in XYZ:
-                values[letter] = value
-            elif isinstance(value, Expr) or here is None:
-                return setting
-            else:
-                values[letter] = (here + offsets.get(letter, 0.0)) / self.scale - float(value)
-        return DataSetting(setting.family, ENTRY, setting.index, values, False, setting.text)
-
-    def _frame(self, rules: str) -> Frame:
+    def frame_for(self, rules: str) -> Frame:
+        """The frame, made with ``rules`` at the first frame command."""
         if self.frame is None:
             self.frame = self.reached.frame = Frame(rules)
             self.frame.work = self.modal.work_offset
@@ -413,151 +271,13 @@ class FrameEvaluator:
 
     # -- frame commands ----------------------------------------------------------------------------
     def command(self, block: Block, change: FrameChange) -> None:
-        frame = self._frame(change.rules)
-        if frame.rules != change.rules:
-            raise ProgramError(f"{change.describe()} beside another controller's frame commands")
-        kind, scale, p = change.kind, self.scale, self.p
-        words: dict[str, float] = {}
-        for letter, value in change.words.items():
-            if isinstance(value, Expr):
-                raise ProgramError(COMPUTED)
-            words[letter] = value * scale if letter in LINEAR else value
-        fanuc = frame.rules == "fanuc"
-        if fanuc and kind in ("local", "origin") and frame.linear_active():
-            raise ProgramError(_FANUC_FORBIDDEN.format(what=change.describe()))
-        if fanuc and kind in ("local", "origin") and self.modal.distance == "incremental":
-            raise ProgramError(f"{change.describe()} in incremental mode is not simulated (whether its words are "
-                               "increments is not settled [?]): program it in absolute mode")
-        compensating = self.modal.extra.get("frames.cutter") in _SWAPPED
-        if compensating and (kind in ("local", "origin", "origin_clear", "origin_suspend", "origin_restore")
-                             or frame.rules in ("fanuc", "chain", "isg")):
-            # [V] rs274: "Cannot change axis offsets with cutter radius comp"; [K] Fanuc commands mirror,
-            # scaling and rotation before compensation starts and cancels them after it ends; a SINUMERIK
-            # frame change under G41/G42 is not simulated [?: how the compensated path joins across it]
-            raise ProgramError(f"{change.describe()} with cutter compensation on cannot be run (cancel it first)")
-        if frame.rules == "chain":
-            frame.chain(chain_component(change.kind, words, self.modal.plane, change.describe()),
-                        kind.endswith("_add"), p)
-            return
-        if kind == "local":
-            frame.set_local(_axes(words), p)
-        elif kind == "origin":
-            if fanuc and any(frame.local.values()):
-                raise ProgramError(f"{change.describe()} while a local coordinate system is in force is not simulated "
-                                   "(whether it cancels that system is not settled [?]): cancel it first")
-            frame.set_origin(_axes(words), p, change.describe())
-            self.reached.unsettled.difference_update(words)  # the current point now reads the words
-        elif kind in ("origin_clear", "origin_suspend"):
-            frame.clear_origin(p, kind == "origin_suspend")
-        elif kind == "origin_restore":
-            frame.restore_origin(p)
-        elif kind == "rotate":
-            self.rotate(frame, change, words)
-        elif kind == "rotate_off":
-            frame.unrotate(p)
-        elif kind == "scale":
-            if frame.rotation is not None or frame.scaling is not None:
-                # [K] Fanuc: mirror, then scaling, then rotation; cancelled in reverse
-                raise ProgramError(f"{change.describe()}: scaling is commanded before coordinate rotation, and "
-                                   "not again while it is on")
-            common = words.get("P")
-            factors = tuple(words.get(f, 1.0 if common is None else common) for f in "IJK")
-            centre = tuple(words[a] if a in words else 0.0 if f == 1.0 else self._here(a, change)
-                           for a, f in zip(XYZ, factors))
-            frame.scale(centre, factors, p)  # type: ignore[arg-type]
-        elif kind == "scale_off":
-            if frame.rotation is not None:
-                raise ProgramError("scaling is cancelled after coordinate rotation (cancel the rotation first)")
-            frame.unscale(p)
-        elif kind == "mirror":
-            if frame.rotation is not None or frame.scaling is not None:
-                # [K] Siemens' ISO-dialect manual 3.2, as Fanuc: no mirror command in scaling or rotation mode
-                raise ProgramError(f"{change.describe()} while scaling or coordinate rotation is on cannot be run")
-            frame.set_mirror(_axes(words), p)
-        elif kind == "mirror_off":
-            if frame.rotation is not None or frame.scaling is not None:
-                raise ProgramError(f"{change.describe()} while scaling or coordinate rotation is on cannot be run")
-            frame.clear_mirror(tuple(_axes(words)), p)
-        elif kind == "polar":
-            frame.polar = self.modal.plane
-        elif kind == "polar_off":
-            frame.polar = None
+        """A frame command into the frame (``commands.command``)."""
+        command(self, block, change)
 
     def pending(self, s: dict[str, Section], frame: Frame) -> None:
-        """chain rules: the first incremental move on an axis a frame change moved is refused: whether it
-        also travels that change is setting data SD42440 FRAME_OFFSET_INCR_PROG (1, the default: it does;
-        0: only the increment) [K: 840D Function Manual K2 08/2005 1.3 "Frames with G91"]. An absolute move
-        settles the axis."""
-        m = s.get("Motion")
-        if not isinstance(m, Motion) or m.mode is None or "MachineCoordinates" in s:
-            return
-        if self.modal.distance == "incremental":
-            for axis in m.axes:
-                if axis in frame.pending:
-                    raise ProgramError(f"an incremental {axis} after a frame change: whether it also travels the "
-                                       "change is setting data SD42440 (FRAME_OFFSET_INCR_PROG): program "
-                                       f"{axis} absolutely first")
-            return
-        frame.pending.difference_update(m.axes)
+        """The axes a command left to be programmed again (``commands.pending``)."""
+        pending(self, s, frame)
 
-    def rotate(self, frame: Frame, change: FrameChange, words: dict[str, float]) -> None:
-        if frame.rules == "isg":
-            self.isg_rotate(frame, change, words)
-            return
-        plane = self.modal.plane
-        if plane != "XY":
-            raise ProgramError(f"{change.describe()} in the {plane} plane is not simulated (the sense of a rotation "
-                               "there is not settled [?]): only in the XY plane")
-        if frame.rotation is not None:
-            raise ProgramError(f"{change.describe()} while coordinate rotation is already on (cancel it first)")
-        if "R" not in words:
-            raise ProgramError(f"{change.describe()} without R takes its angle from parameter 5410, not known "
-                               "here: program R")
-        a1, a2, _ = PLANE_AXES[plane]
-        if self.modal.distance == "incremental" and (a1 in words or a2 in words):
-            raise ProgramError(f"{change.describe()} in incremental mode is not simulated (whether its centre words "
-                               "are increments is not settled [?]): program the centre in absolute mode")
-        c1 = words[a1] if a1 in words else self._here(a1, change)
-        c2 = words[a2] if a2 in words else self._here(a2, change)
-        degrees = words["R"]
-        if self.ctx.setup.controller.rotation_incremental and self.modal.distance == "incremental":
-            # [V] Fanuc 0i-A connection manual, parameter 5400#0 RIN = 1: R follows G90/G91; [K] Haas setting
-            # 73: "each G68 command changes the rotation angle by the value in R"
-            if frame.last_angle is None:
-                raise ProgramError(f"{change.describe()}: an incremental angle needs a rotation before it (its "
-                                   "reference at the program's start is not settled [?]): program R absolutely")
-            degrees += frame.last_angle
-        frame.rotate(plane, c1, c2, degrees, self.p)
-
-    def isg_rotate(self, frame: Frame, change: FrameChange, words: dict[str, float]) -> None:
-        """ISG G68 [V: Beckhoff TF5200 programming manual, "Rotate the coordinate system in the plane
-        (G68/G69)"]: R in degrees, absolute (none: 0); the centre's absolute coordinates on the plane's two
-        main axes (G17 X and Y, G18 Z and X, G19 Y and Z; G91 or not), an omitted one the current position; a
-        G68 replaces the rotation in force. The rotation acts on the programmed coordinates before every
-        offset and mirror, which stay in the machine's axis directions: ``w = offsets(R p)``. A positive angle
-        turns from the plane's first main axis toward its second (G17: X toward Y, as the manual's figure
-        draws; G18: Z toward X; G19: Y toward Z), counter-clockwise seen from the third axis, the sense G03
-        runs in that plane [K: the G17 figure and the planes' axis order of "Selection of planes (G17/G18/G19)";
-        the sense in G18/G19 is not drawn]. Refused [?]: an omitted centre while a rotation is on (whether "the
-        current position" is then read turned is not stated)."""
-        plane = self.modal.plane
-        a1, a2, _ = PLANE_AXES[plane]
-        if frame.rotation is not None and (a1 not in words or a2 not in words):
-            raise ProgramError(f"{change.describe()} without its centre while a rotation is on: whether the current "
-                               f"position is read turned is not settled [?]: program {a1} and {a2}")
-        c1 = words[a1] if a1 in words else self._here(a1, change)
-        c2 = words[a2] if a2 in words else self._here(a2, change)
-        frame.rotate(plane, c1, c2, words.get("R", 0.0), self.p)
-
-    def _here(self, axis: str, change: FrameChange) -> float:
-        """The current point as a centre the command omits ([V] Fanuc 15i/16i: the tool position)."""
-        here = self.p.get(axis)
-        if here is None:
-            raise ProgramError(f"{change.describe()} without {axis} takes the current position as its centre, "
-                               f"which is not known here: program {axis}")
-        return here
-
-    # -- moves ---------------------------------------------------------------------------------------
     def track(self, s: dict[str, Section]) -> None:
         """No frame: only the program position follows the block."""
         cc = s.get("CutterCompensation")
@@ -596,8 +316,8 @@ class FrameEvaluator:
         if isinstance(cc, CutterCompensation):
             self.modal.extra["frames.cutter"] = cc.mode
             found = frame.map.arc_factor(PLANE_AXES["XY"])
-            if cc.mode in _SWAPPED and found is not None and found[1]:
-                s["CutterCompensation"] = CutterCompensation(_SWAPPED[cc.mode], cc.register)
+            if cc.mode in SWAPPED and found is not None and found[1]:
+                s["CutterCompensation"] = CutterCompensation(SWAPPED[cc.mode], cc.register)
                 changed = True
         compound = s.get("CompoundMotion")
         m = s.get("Motion")
@@ -650,13 +370,13 @@ class FrameEvaluator:
         p, scale, mode = self.p, self.scale, m.mode
         if "MachineCoordinates" in s and mode not in ("home", "home2"):
             if frame.rules == "fanuc" and frame.linear_active():
-                raise ProgramError(_FANUC_FORBIDDEN.format(what="a move in machine coordinates"))
+                raise ProgramError(FANUC_FORBIDDEN.format(what="a move in machine coordinates"))
             for axis in m.axes:
                 p[axis] = None
             return m
         home = mode in ("home", "home2")
         if home and frame.linear_active():
-            raise ProgramError(_FANUC_FORBIDDEN.format(what="a reference return") if frame.rules == "fanuc" else
+            raise ProgramError(FANUC_FORBIDDEN.format(what="a reference return") if frame.rules == "fanuc" else
                                "a reference return under a rotated work system is not simulated [?: where its "
                                "intermediate point lies]")
         if _computed(m):
@@ -795,11 +515,6 @@ class FrameEvaluator:
         return Motion(_TURNED[mode] if turned else mode, out, centre, radius)
 
 
-_FANUC_FORBIDDEN: Final = "{what} while coordinate rotation, scaling or a mirror image is on cannot be run"
-"""[K] Fanuc 0i-MF and Siemens' ISO-dialect manual 3.2: no reference return and no coordinate system command
-(local, machine or work coordinates, coordinate setting) in these modes."""
-
-
 _WATCHED: Final = frozenset(("Units", "Plane", "DistanceMode", "WorkOffset", "DataSetting", "FrameChange", ASSIGN,
                              CONTROL, "CutterCompensation", "CompoundMotion", "MachineCoordinates",
                              "ToolLengthOffset", "DynamicCutterCompensation"))
@@ -853,13 +568,3 @@ def _cos_sin(degrees: float) -> tuple[float, float]:
 def _trace(s: dict[str, Section], change: FrameChange) -> None:
     """The evaluated command stays in the output as a comment (no block vanishes without a trace)."""
     _note(s, f"{change.text} evaluated")
-
-
-def _note(s: dict[str, Section], note: str) -> None:
-    comments = s.get("Comments")
-    s["Comments"] = Comments([*comments.texts, note] if isinstance(comments, Comments) else [note])
-
-
-def _axes(words: dict[str, float]) -> dict[str, float]:
-    return {k: v for k, v in words.items() if k in AXES}
-

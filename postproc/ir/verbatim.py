@@ -6,7 +6,7 @@ from __future__ import annotations
 
 from mypy_extensions import mypyc_attr
 
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, Final
 
 from ..expr import Expr
 from ..xmlio import XAttr, lxml_etree
@@ -72,11 +72,19 @@ class MachineFunction(Section):
         return f"{self.code} ({self.name})" if self.name else self.code
 
 
+STORED_WORK_OFFSET: Final = "work_offset_stored"
+"""``DataSetting.table`` of a work offset the controller writes into its table and takes at the work system's
+next selection (a family's offset variables: ISG ``V.G.NP[n]``...), where ``work_offset`` (G10 L2) acts at once
+on the active system [K: LinuxCNC g-code.adoc "G10 L2": an active system's new offset takes effect at once;
+V: rs274 run here, tests/test_work_offset_variables.py]. Set for a system that is not the active one, the two are one meaning."""
+
+
 @mypyc_attr(allow_interpreted_subclasses=True)
 class DataSetting(Section):
     """Programmable data input (Fanuc ``G10 L2 P1 X.. Y..``): write ``values`` (axis letter or 'R' ->
     value in program units) into entry ``index`` of a controller table. ``table`` is neutral:
-    'work_offset' (index 1 = the first work system, 0 = the offset common to all), 'work_offset_extended',
+    'work_offset' (index 1 = the first work system, 0 = the offset common to all), 'work_offset_stored'
+    (``STORED_WORK_OFFSET``), 'work_offset_extended',
     'tool_length', 'tool_length_wear', 'cutter_offset', 'cutter_offset_wear'. ``incremental``: the values
     are added to the entry. ``text`` is the block's setting as written, passed verbatim within ``family``.
     A value may be an expression (``X[#1+1]``, a program kept symbolically); the table and the entry are

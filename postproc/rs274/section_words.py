@@ -8,7 +8,7 @@ never another dialect's spelling.
 
 from __future__ import annotations
 
-from typing import Any, ClassVar, Final, Mapping
+from typing import Any, Callable, ClassVar, Final, Mapping
 
 from mypy_extensions import mypyc_attr
 
@@ -16,7 +16,8 @@ from ..context import Context
 from ..dialect import Dialect
 from ..errors import UnsupportedError
 from ..expr import Binary, Expr, Num
-from ..ir import Block, Motion
+from ..ir import Block, Motion, Section
+from ..ir.verbatim import STORED_WORK_OFFSET
 from ..lowering.machine_functions import RIGID_TAP, foreign_hint, refused_rigid_tap
 from ..state import MM_PER_INCH
 from .codes import CodeTable
@@ -25,6 +26,7 @@ from .word_numbers import NumberWriter
 UNNAMED_PROGRAM_NUMBER: Final = 1
 """The ``O`` number of a named program when neither the set-up nor the command line gives one."""
 MOTION_GROUP: Final = frozenset({"rapid", "linear", "cw", "ccw"})
+
 """Motion modes written with a code of the motion group (G0-G3)."""
 
 
@@ -296,6 +298,14 @@ class SectionWords(NumberWriter):
     ('G10 L10', the highest register, the value's letter 'R')), then P and the value, absolute; empty when
     it has no such spelling."""
 
+    WORK_OFFSET_VARIABLE: ClassVar[str] = ""
+    """How the dialect sets one axis of a work offset from the program by assigning a variable, a format
+    of ``index`` (1 = the first work system), ``axis`` and ``value`` (ISG ``V.G.NP[{index}].V.{axis}={value}``);
+    '' when it has none. Such a controller writes the table's entry and takes it at the work system's next
+    selection (``STORED_WORK_OFFSET``): setting the active system, the selection is written again after it
+    (``work_offset_assignments``). Its dialect lists ``DataSetting`` in ``SPLIT`` and hands the block to
+    ``work_offset_assignments``."""
+
     def data_setting_words(self, s: Any, block: Block) -> list[str]:
         """A G10 data setting: as written for a controller of its family; else, where exact, the target's
         absolute work offset or offset register setting; anything else has no equivalent here."""
@@ -304,22 +314,70 @@ class SectionWords(NumberWriter):
             return [s.text]
         if s.table in self.TOOL_DATA_SETTINGS:
             return self._register_setting(s, block)
-        why = ""
-        if s.table != "work_offset" or not self.WORK_OFFSET_SETTING:
-            why = "no such table can be set from a program"
-        elif s.incremental:
-            why = "it sets offsets absolutely only (the source adds to the offset in incremental mode)"
-        elif self.SETTING_ADDS_IN_INCREMENTAL and self.modal.distance == "incremental":
-            why = "in incremental mode its setting adds to the offset (program absolute mode first)"
-        elif not 1 <= s.index <= self.WORK_OFFSET_COUNT:
-            why = (f"its work systems are P1-P{self.WORK_OFFSET_COUNT}" if s.index else
-                   "P0 here is not the offset common to all work systems")
-        elif not set(s.values) <= self.SETTING_AXES:
-            why = f"it sets axes {''.join(sorted(self.SETTING_AXES))} only"
+        why = self.work_offset_problem(s, self.WORK_OFFSET_SETTING, self.WORK_OFFSET_COUNT, False)
         if why:
             self.unsupported(f"{s.describe()}: {why}", block)
         return [*self.WORK_OFFSET_SETTING.split(), f"P{s.index}",
                 *(axis + self.length(value, block, axis) for axis, value in s.values.items())]
+
+    def work_offset_problem(self, s: Any, spelling: str, count: int, stored: bool) -> str:
+        """Why a work offset setting cannot be written with the dialect's ``spelling`` for work systems
+        1-``count``; '' when it can. ``stored``: the spelling writes the table, taken at the system's next
+        selection (``STORED_WORK_OFFSET``), as the source's may; a setting taken at once is the same setting
+        where that system is not the active one (``postproc.lowering.stored_offsets`` moves one that is to the
+        next selection)."""
+        table = s.table
+        if table == STORED_WORK_OFFSET and (stored or s.index != self.modal.work_offset):
+            table = "work_offset"
+        if table == STORED_WORK_OFFSET and spelling:
+            return ("the source's controller takes it at the work system's next selection, the target at once "
+                    "(select the work system again right after the setting)")
+        if table != "work_offset" or not spelling:
+            return "no such table can be set from a program"
+        if s.incremental:
+            return "it sets offsets absolutely only (the source adds to the offset in incremental mode)"
+        if self.SETTING_ADDS_IN_INCREMENTAL and self.modal.distance == "incremental":
+            return "in incremental mode its setting adds to the offset (program absolute mode first)"
+        if not 1 <= s.index <= count:
+            p = "P" if spelling == self.WORK_OFFSET_SETTING else ""
+            return (f"its work systems are {p}1-{p}{count}" if s.index else
+                    "P0 here is not the offset common to all work systems")
+        if not set(s.values) <= self.SETTING_AXES:
+            return f"it sets axes {''.join(sorted(self.SETTING_AXES))} only"
+        return ""
+
+    def work_offset_assignments(self, block: Block, part: Callable[[Block, dict[str, Section]], str]) -> str | None:
+        """A work offset setting in the dialect's variables (``WORK_OFFSET_VARIABLE``), on a line of its own
+        after the rest of its block (written by ``part``: its settings, a selection among them, act first
+        [K: rs274 order of execution, G10 after the work system's selection]), then, where the source's
+        setting acts at once on the active system (``G10 L2``), that system's selection again (the controller
+        takes the entry there); one the source also takes at the next selection is only written. None: the
+        setting is the dialect's own family's, written as it was with the rest of the block."""
+        sections = block.sections
+        s: Any = sections["DataSetting"]
+        family = self.target.family() if self.target is not None else self.DIALECT
+        if s.family == family:
+            return None
+        rest = {k: v for k, v in sections.items() if k != "DataSetting"}
+        before = part(block, rest) if rest else ""
+        if before and not before.endswith("\n"):
+            before += "\n"
+        try:
+            why = self.work_offset_problem(s, self.WORK_OFFSET_VARIABLE, self.WORK_OFFSET_COUNT, True)
+            if why:
+                self.unsupported(f"{s.describe()}: {why}", block)
+            index = int(s.index)
+            words = [self.WORK_OFFSET_VARIABLE.format(index=index, axis=axis, value=self.length(value, block, axis))
+                     for axis, value in s.values.items()]
+            text = before + " ".join(words) + "\n"
+            if index == self.modal.work_offset and s.table != STORED_WORK_OFFSET:  # the source's acts at once
+                text += self.code("offset", index, f"work system {index}", block) + "\n"
+        except UnsupportedError as err:
+            if err.section is None:
+                err.section = "DataSetting"  # --on-unsupported warn drops only the setting
+            raise
+        eol = block.eol or "\n"
+        return text[:-1] + eol if eol != "\n" else text
 
     TOOL_DATA_IN_TABLE: ClassVar[bool] = False
     """The controller sets only a register its tool table already holds (LinuxCNC: a tool the set-up's

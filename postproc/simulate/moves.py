@@ -22,6 +22,7 @@ from ..errors import Location, PostprocError, ProgramError, UnsupportedError
 from ..expr import Expr
 from ..geometry import CENTRE_KEYS
 from ..ir import Block, DataSetting, Motion
+from ..ir.verbatim import STORED_WORK_OFFSET
 from ..lowering.inverse_time import move_length
 from ..lowering.program_end import EndTracker
 from ..state import PLANE_AXES, ModalState
@@ -118,6 +119,9 @@ class Moves:
         """Machine-specific codes warned about as undeclared (once each)."""
         self.offsets: dict[int, dict[str, float]] = {}
         """Work offsets a G10 set, mm per axis, by work system (1 = G54; 0 the external offset)."""
+        self.stored: dict[int, dict[str, float]] = {}
+        """Offsets written into the table for the system active then (``STORED_WORK_OFFSET``), mm per axis, by
+        work system: they apply at the next selection (``select``)."""
         self.shift: dict[str, float] = {}
         """What the active work system adds to an absolute point (empty until a G10 sets an offset)."""
         self.declared = declared_offsets(setup, self.axes, self.diameter)
@@ -225,8 +229,12 @@ class Moves:
             if not self.tools.write(setting, self.scale):
                 self.unsimulated.append((block.line, "tool offset data", setting.text))
             return
-        key = setting.index if setting.table == "work_offset" else 100 + setting.index
-        entry = self.offsets.setdefault(key, {})
+        stored = setting.table == STORED_WORK_OFFSET
+        key = setting.index if setting.table == "work_offset" or stored else 100 + setting.index
+        if stored and key == self.modal.work_offset:
+            entry = self.stored.setdefault(key, {})  # the table's entry: taken at the next selection (``select``)
+        else:
+            entry = self.offsets.setdefault(key, {})
         for axis, value in setting.values.items():
             if isinstance(value, Expr):
                 raise ProgramError(UNEVALUATED, self._at(block, axis))
@@ -234,9 +242,21 @@ class Moves:
             if setting.incremental:  # added to the offset in force: the program's, else the set-up's
                 v += entry.get(axis, self.declared.get(key, {}).get(axis, 0.0))
             entry[axis] = v
+        if stored and key == self.modal.work_offset:
+            return
         self._shift()
         if self.declared:
             self.reframe(block)
+
+    def select(self) -> None:
+        """A work system selection: the offsets the program set, those written into the table for the active
+        system (``STORED_WORK_OFFSET``) included, apply from here."""
+        if self.stored:
+            for key, values in self.stored.items():
+                self.offsets.setdefault(key, {}).update(values)
+            self.stored.clear()
+        if self.offsets:
+            self._shift()
 
     def touch_off(self, block: Block, setting: DataSetting) -> None:
         """A tool entry measured where the tool stands (LinuxCNC ``G10 L10``/``L11``): the offsets that make

@@ -286,8 +286,7 @@ class Simulator(Moves):
         if s is not None:
             self._set_feed(s.value)  # type: ignore[attr-defined]
         if "WorkOffset" in sections:
-            if self.offsets:
-                self._shift()
+            self.select()
             if self.declared and self.current is not None:
                 self.reframe(self.current)
 

@@ -50,6 +50,9 @@ class Mach3Writer(WordWriter):
     BARE_FEED_MOTION_NEEDS_FEED: ClassVar[bool] = True
     """A bare ``G1`` with no feed rate in force is refused (RS274/NGC), as this dialect's reader does: the
     code only sets the mode, and every later move writes its own, so it is left out."""
+    WORK_OFFSET_SETTING: ClassVar[str] = "G10 L2"
+    """G10 L2 P1-P6 sets fixture P's origin, absolutely whatever G90/G91 (``codes.NATIVE_G`` [K])."""
+    WORK_OFFSET_COUNT: ClassVar[int] = 6
     AXIS_DECIMALS: ClassVar[int] = 4
     """Axis, centre and radius words carry at least this many decimals (more only where fewer would
     round the value)."""

@@ -88,4 +88,11 @@ M_GROUPS: dict[int, str] = {
 }
 """RS274/NGC M-code modal groups: two codes of one group in a block are an error."""
 
-CODES = CodeTable(ROWS, user_m=USER_M)
+NATIVE_G: dict[str, str] = {"10": "coordinate system data (G10 L2)"}
+"""G10 is read only in its ``L2`` form (``Mach3BlockSyntax.DATA_TABLES``): a work offset set from the program. [K]
+"Using Mach3Mill" (Beta 7.57), chapter 10, "Coordinate system data - G10": ``G10 L2 P~ X~ Y~ Z~ A~ B~ C~`` sets the
+origin of fixture P to the given coordinates, in terms of the absolute (machine) coordinate system, axis words
+optional (the NIST RS274/NGC version 3 rule, section 3.5.5, which the manual copies) [?: not run on a Mach3
+here]. Another L is kept verbatim (this dialect only)."""
+
+CODES = CodeTable(ROWS, native_g=NATIVE_G, user_m=USER_M)
