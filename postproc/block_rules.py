@@ -22,6 +22,8 @@ import math
 from itertools import chain
 from typing import Iterator
 
+from mypy_extensions import mypyc_attr
+
 from .context import Context
 from .control import ASSIGN, CONTROL
 from .dialect import Dialect
@@ -122,6 +124,7 @@ def _until_fed(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
         yield block
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class ArcError(ProgramError):
     """An arc no controller runs; ``letter`` is the word to point at (``R``, ``I``/``J``/``K`` or ``G``)."""
 

@@ -9,13 +9,14 @@ from typing import Callable
 import os
 
 import pytest
-from hypothesis import settings
+from hypothesis import HealthCheck, settings
 
-# No per-example deadline: the suite shares two cores with other work, and a first example that pays for an
+# No per-example deadline nor too-slow health check: the suite shares two cores with other work, and a first example that pays for an
 # import or the plugin registry took over hypothesis's default 200 ms on a loaded machine, a failure that
 # says nothing about the code. Slowness is measured in benchmarks, not asserted in tests.
-settings.register_profile("ci", derandomize=True, print_blob=True, deadline=None)
-settings.register_profile("local", deadline=None)
+SLOW = [HealthCheck.too_slow]  # generating examples on a loaded machine is slow: the same cause
+settings.register_profile("ci", derandomize=True, print_blob=True, deadline=None, suppress_health_check=SLOW)
+settings.register_profile("local", deadline=None, suppress_health_check=SLOW)
 # CI runs the same examples every time: a red CI then always means a change, never luck.
 # Local runs keep exploring new examples.
 settings.load_profile("ci" if os.environ.get("CI") else "local")

@@ -11,4 +11,6 @@ public names they subclass or call. It names no dialect and holds no dialect's c
 * ``ngc_program``: ``NgcProgramSyntax`` (the o-word interpreter step LinuxCNC and grblHAL subclass).
 * ``writer``: ``WordWriter`` (every code spelt from ``CODES``; no table of its own).
 * ``cycle_words``: ``rs274_cycle_words`` (the family's hole-cycle letters, named from a table).
+* ``subprogram_layout``: ``subprograms_after_callers`` (numbered subprograms after their callers, for a
+  reader that finds one only after the call), with ``return_level``'s level a cycle needs.
 """

@@ -11,6 +11,8 @@ from __future__ import annotations
 
 from typing import Iterator
 
+from mypy_extensions import mypyc_attr
+
 from ..context import Context
 from ..dialect import Dialect
 from ..ir import Block, ReturnLevel
@@ -27,6 +29,7 @@ def return_level_in_force(blocks: Iterator[Block], ctx: Context, target: type[Di
         yield block
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class ReturnLevels:
     """The return level in force on the target, block by block: ``see`` adds the return-level word a
     cycle needs (for a target step that fuses it into its own loop, one generator less per block)."""

@@ -9,6 +9,9 @@ the mode both a Fanuc [K: 0i-F G code list, G64 is group 15's power-on state] an
 stop (``postproc.simulate.simulator``). Under an exact-stop mode the block already stops: the one-shot is left
 out. In a program kept with its control flow (o-words), the mode in force at a block depends on the way the
 run took: a one-shot there, with a path mode change anywhere in that flow, is a located error.
+
+The step is the core's ``postproc.lowering.exact_stop`` (compiled: it sees every block), with LinuxCNC's words
+for the refusal.
 """
 
 from __future__ import annotations
@@ -16,57 +19,15 @@ from __future__ import annotations
 from typing import Iterator
 
 from postproc.context import Context
-from postproc.control import CONTROL
 from postproc.dialect import Dialect
-from postproc.errors import UnsupportedError
-from postproc.ir import Block, PathControl
+from postproc.ir import Block
+from postproc.lowering import exact_stop
 
-STOP = "exact_stop"
+REFUSAL = ("a one-shot exact stop in a program whose path mode changes inside its control flow: LinuxCNC has no "
+           "one-shot stop, and the mode to take back to after the block depends on the way the run takes")
 
 
 def exact_stop_for_one_block(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
     """Lowering step: each one-shot exact stop as exact-stop mode for its block, then the mode before (the module
     docstring)."""
-    before: PathControl | None = None
-    """The path mode in force (None: never set, cutting)."""
-    flow = False
-    """A control statement was passed: the program keeps its control flow."""
-    changed_in_flow = stopped_in_flow = False
-    for block in blocks:
-        sections = block.sections
-        if CONTROL in sections:
-            flow = True
-        path = sections.get("PathControl")
-        if not isinstance(path, PathControl):
-            yield block
-            continue
-        if not path.one_shot:
-            before = path
-            changed_in_flow = changed_in_flow or flow
-            if changed_in_flow and stopped_in_flow:
-                _refuse(ctx, block)
-            yield block
-            continue
-        stopped_in_flow = stopped_in_flow or flow
-        if changed_in_flow and stopped_in_flow:
-            _refuse(ctx, block)
-        if before is not None and before.mode == STOP:  # the block stops already
-            del sections["PathControl"]
-            block.changed()
-            if sections:
-                yield block
-            continue
-        sections["PathControl"] = PathControl(STOP)
-        block.changed()
-        yield block
-        after = Block(block.line, None, block.eol or "\n")
-        after.add(PathControl("cutting") if before is None else
-                  PathControl(before.mode, False, before.tolerance, before.naive))
-        yield after
-
-
-def _refuse(ctx: Context, block: Block) -> None:
-    ctx.diagnostics.error(UnsupportedError(
-        "a one-shot exact stop in a program whose path mode changes inside its control flow: LinuxCNC has no "
-        "one-shot stop, and the mode to take back to after the block depends on the way the run takes",
-        ctx.at(block)))
+    return exact_stop.exact_stop_for_one_block(blocks, ctx, REFUSAL)

@@ -29,7 +29,6 @@
 from __future__ import annotations
 
 import copy
-import re
 from typing import Any, ClassVar, Iterable, Mapping, TextIO, cast
 
 from postproc.errors import Location, UnsupportedError
@@ -45,6 +44,7 @@ from postproc.rs274.codes import CodeTable
 from postproc.rs274.expressions import LINUXCNC_SPELLING, ExprSpelling
 from postproc.rs274.oword import spell_assignments, spell_oword
 from postproc.rs274.writer import WordWriter
+from postproc.output.line_feeds import LineFeeds
 from postproc.subprogram_names import NameRule, SubprogramNames
 
 from .active_comments import COMMENTS
@@ -64,27 +64,6 @@ _LABELLED = (*_OPENING, *_CLOSING, ElseIf, Else, Break, Continue)
 NAMES = NameRule(numbers=range(0, 2**31), spare=range(0), names=True, lower_case=True, one_kind=True)
 """o-word numbers and ``<names>`` (rs274 lower-cases a line outside its comments); the kind of call
 fixed by the definition (``postproc.interp.rules``)."""
-
-
-_LONE_CR = re.compile(r"\r(?!\n)")
-
-
-class _LineFeeds:
-    """The output with a source's lone CR line ends (kept as read) written as LF: rs274 ends a line at LF
-    only, so a CR-only file is one long line it refuses ("Command too long") [V: rs274 2.9, found by make
-    fuzz]; CR LF it reads."""
-
-    __slots__ = ("out", "wrote")
-
-    def __init__(self, out: TextIO) -> None:
-        self.out = out
-        self.wrote = False
-        """Text was written: a '%' now is not on the file's first line."""
-
-    def write(self, text: str) -> int:
-        if text:
-            self.wrote = True
-        return self.out.write(_LONE_CR.sub("\n", text) if "\r" in text else text)
 
 
 class LinuxcncWriter(WordWriter):
@@ -139,7 +118,7 @@ class LinuxcncWriter(WordWriter):
         """An orientation split's part is being written: it is one line (``split_block``)."""
         self._closed = False
         """A '%' closed the program opened with one (rs274 then needs no M2/M30)."""
-        self._feeds: _LineFeeds | None = None
+        self._feeds: LineFeeds | None = None
         """The output (``write``); once it ``wrote`` a line (a comment) before any '%', a '%' is no opening
         one: rs274 takes a '%' as the opening one only on the file's first line, and refuses it anywhere
         else ("Bad character '%' used") [V: rs274 2.9, found by make fuzz]. Followed on the output, not in
@@ -372,7 +351,10 @@ class LinuxcncWriter(WordWriter):
                              block)
 
     def write(self, blocks: Iterable[Block], out: TextIO) -> None:
-        self._feeds = _LineFeeds(out)
+        """Through ``LineFeeds``: a source's lone CR line ends (kept as read) are written as LF, as rs274 ends a
+        line at LF only, so a CR-only file is one long line it refuses ("Command too long") [V: rs274 2.9, found
+        by make fuzz]; CR LF it reads."""
+        self._feeds = LineFeeds(out)
         super().write(blocks, cast(TextIO, self._feeds))
 
     def structure_block(self, block: Block) -> str | None:
