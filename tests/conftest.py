@@ -11,9 +11,9 @@ import os
 import pytest
 from hypothesis import HealthCheck, settings
 
-# No per-example deadline nor too-slow health check: the suite shares two cores with other work, and a first example that pays for an
-# import or the plugin registry took over hypothesis's default 200 ms on a loaded machine, a failure that
-# says nothing about the code. Slowness is measured in benchmarks, not asserted in tests.
+# No per-example deadline nor too-slow health check: the suite shares two cores with other work, and a
+# first example that pays for an import or the plugin registry took over hypothesis's default 200 ms on a
+# loaded machine (and generating examples got "too slow"), failures that say nothing about the code. Slowness is measured in benchmarks, not asserted in tests.
 SLOW = [HealthCheck.too_slow]  # generating examples on a loaded machine is slow: the same cause
 settings.register_profile("ci", derandomize=True, print_blob=True, deadline=None, suppress_health_check=SLOW)
 settings.register_profile("local", deadline=None, suppress_health_check=SLOW)
