@@ -18,10 +18,10 @@ from .section import FrameChange
 from .words import COMPUTED, FANUC_FORBIDDEN, LINEAR, SWAPPED, axes_of
 
 if TYPE_CHECKING:
-    from .lowering import FrameEvaluator
+    from .evaluation import Evaluation
 
 
-def command(ev: FrameEvaluator, block: Block, change: FrameChange) -> None:
+def command(ev: Evaluation, block: Block, change: FrameChange) -> None:
     frame = ev.frame_for(change.rules)
     if frame.rules != change.rules:
         raise ProgramError(f"{change.describe()} beside another controller's frame commands")
@@ -93,7 +93,7 @@ def command(ev: FrameEvaluator, block: Block, change: FrameChange) -> None:
         frame.polar = None
 
 
-def pending(ev: FrameEvaluator, s: dict[str, Section], frame: Frame) -> None:
+def pending(ev: Evaluation, s: dict[str, Section], frame: Frame) -> None:
     """chain rules: the first incremental move on an axis a frame change moved is refused: whether it
     also travels that change is setting data SD42440 FRAME_OFFSET_INCR_PROG (1, the default: it does;
     0: only the increment) [K: 840D Function Manual K2 08/2005 1.3 "Frames with G91"]. An absolute move
@@ -111,7 +111,7 @@ def pending(ev: FrameEvaluator, s: dict[str, Section], frame: Frame) -> None:
     frame.pending.difference_update(m.axes)
 
 
-def rotate(ev: FrameEvaluator, frame: Frame, change: FrameChange, words: dict[str, float]) -> None:
+def rotate(ev: Evaluation, frame: Frame, change: FrameChange, words: dict[str, float]) -> None:
     if frame.rules == "isg":
         isg_rotate(ev, frame, change, words)
         return
@@ -141,7 +141,7 @@ def rotate(ev: FrameEvaluator, frame: Frame, change: FrameChange, words: dict[st
     frame.rotate(plane, c1, c2, degrees, ev.p)
 
 
-def isg_rotate(ev: FrameEvaluator, frame: Frame, change: FrameChange, words: dict[str, float]) -> None:
+def isg_rotate(ev: Evaluation, frame: Frame, change: FrameChange, words: dict[str, float]) -> None:
     """ISG G68 [V: Beckhoff TF5200 programming manual, "Rotate the coordinate system in the plane
     (G68/G69)"]: R in degrees, absolute (none: 0); the centre's absolute coordinates on the plane's two
     main axes (G17 X and Y, G18 Z and X, G19 Y and Z; G91 or not), an omitted one the current position; a
@@ -162,7 +162,7 @@ def isg_rotate(ev: FrameEvaluator, frame: Frame, change: FrameChange, words: dic
     frame.rotate(plane, c1, c2, words.get("R", 0.0), ev.p)
 
 
-def _here(ev: FrameEvaluator, axis: str, change: FrameChange) -> float:
+def _here(ev: Evaluation, axis: str, change: FrameChange) -> float:
     """The current point as a centre the command omits ([V] Fanuc 15i/16i: the tool position)."""
     here = ev.p.get(axis)
     if here is None:

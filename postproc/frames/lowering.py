@@ -51,53 +51,12 @@ from ..state import MM_PER_INCH, ModalState, changes_nothing
 from .affine import EXACT, INDEX, XYZ
 from .frame import PLANE_AXES, Frame, Position
 from .run_order import RunOrder
+from .run_state import RUN_KEY, FrameRun
 from .section import FrameChange
 from .offset_changes import current_point_reads, data_setting
 from .commands import command, pending
 from .words import COMPUTED, FANUC_FORBIDDEN, LINEAR, SWAPPED, SYMBOLIC, note as _note
 
-RUN_KEY: Final = "frames.run"
-"""``ctx.state.extra`` key of the frame and program position the lowering has reached (``FrameRun``)."""
-
-
-
-@mypyc_attr(allow_interpreted_subclasses=True)
-class FrameRun:
-    """What the evaluation has reached: copied with the reading state into a translation's dry run."""
-
-    __slots__ = ("frame", "p", "g5x", "symbolic", "work", "order", "unsettled", "scale", "cutter", "tools", "sideways",
-                 "tools_known", "table_known")
-
-    def __init__(self, p: Position) -> None:
-        self.frame: Frame | None = None
-        """None until the first frame command (or a rotation of a work system)."""
-        self.p = p
-        """The program position, mm (degrees on rotary axes), None where unknown."""
-        self.unsettled: set[str] = set(p)
-        """Axes not programmed absolutely since the start: their ``p`` is the set-up's assumed start, not what
-        the machine reads as its current point (a read of the current position there is the machine's,
-        ``postproc.frames.parameters``)."""
-        self.tools: ToolLength | None = None
-        """The tool length offset in force (made at the first change), on a controller that keeps the machine
-        point at a change (``offset_changes.tool_change``)."""
-        self.sideways: dict[str, float] = {}
-        """The X and Y offsets of the tool entry in force (mm)."""
-        self.tools_known = True
-        """The offsets in force are known (False after a change this evaluation cannot work out)."""
-        self.table_known = True
-        """The tool table's entries are known (False after a program's entry not worked out here)."""
-        self.scale = 1.0
-        """mm per program length unit where the program stands (G20: 25.4)."""
-        self.cutter = False
-        """Cutter radius compensation is on where the program stands."""
-        self.g5x: dict[int, dict[str, float]] = {}
-        """Work offsets a G10 in the program set, mm (the rest are unknown here)."""
-        self.symbolic = False
-        """A construct (an assignment, a control statement) went by: the program is kept symbolically."""
-        self.work: int | None = None
-        """The work system the program selected last (1 = G54); None before it selects one (the machine's)."""
-        self.order = RunOrder()
-        """The constructs and jumps of the symbolic part: which frame command runs in the text's order."""
 _TURNED: Final = {"cw": "ccw", "ccw": "cw"}
 
 

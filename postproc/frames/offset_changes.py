@@ -20,7 +20,7 @@ from .affine import XYZ
 from .words import COMPUTED, LINEAR, SYMBOLIC, note
 
 if TYPE_CHECKING:
-    from .lowering import FrameEvaluator
+    from .evaluation import Evaluation
 
 MEASURED_ENTRIES: Final = frozenset(("tool_entry_at_point", "tool_entry_at_point_9"))
 """Tool table entries a program measures where the tool stands (LinuxCNC's, ``postproc.simulate.moves.touch_off``)."""
@@ -28,7 +28,7 @@ TOOL_TABLES: Final = frozenset((ENTRY, *TABLES))
 """Tool table writes a later tool offset change reads (``tool_entry``)."""
 
 
-def current_point_reads(ev: FrameEvaluator, s: dict[str, Section]) -> None:
+def current_point_reads(ev: Evaluation, s: dict[str, Section]) -> None:
     """What the program position and a read of it (``postproc.frames.parameters``) must know of the
     block: a tool offset change (``tool_change``); cutter compensation on forbids the read (rs274: "Cannot
     read current position with cutter radius compensation on" [V: ``interp_read.cc``
@@ -43,7 +43,7 @@ def current_point_reads(ev: FrameEvaluator, s: dict[str, Section]) -> None:
         ev.reached.cutter = True
 
 
-def tool_change(ev: FrameEvaluator, length: ToolLengthOffset) -> None:
+def tool_change(ev: Evaluation, length: ToolLengthOffset) -> None:
     """A tool offset change on a controller that keeps the machine point until the axis is programmed
     (``Dialect.LENGTH_AT_PROGRAMMED_AXIS``): the program position moves by the change, ``current_z + old -
     new`` [V: LinuxCNC ``interp_convert.cc`` ``convert_tool_length_offset``, on every axis of the entry;
@@ -81,7 +81,7 @@ def tool_change(ev: FrameEvaluator, length: ToolLengthOffset) -> None:
             p[axis] = here - change
 
 
-def data_setting(ev: FrameEvaluator, block: Block, s: dict[str, Section]) -> bool:
+def data_setting(ev: Evaluation, block: Block, s: dict[str, Section]) -> bool:
     """G10 L2: a work system's rotation (R) goes into the frame and out of the setting; an offset of
     the active system moves the program position (the tool stays)."""
     setting = s["DataSetting"]
@@ -148,7 +148,7 @@ def data_setting(ev: FrameEvaluator, block: Block, s: dict[str, Section]) -> boo
     return True
 
 
-def tool_entry(ev: FrameEvaluator, setting: DataSetting) -> None:
+def tool_entry(ev: Evaluation, setting: DataSetting) -> None:
     """A program's tool table entry, which a later offset change reads (``tool_change``). One measured
     where the tool stands (``G10 L10``) is the current point plus the offset in force, less the word [V:
     LinuxCNC ``convert_setup_tool``; ``postproc.lowering.measured_entries``]; where that is not known here
@@ -167,7 +167,7 @@ def tool_entry(ev: FrameEvaluator, setting: DataSetting) -> None:
         run.table_known = False
 
 
-def _measured(ev: FrameEvaluator, setting: DataSetting) -> DataSetting:
+def _measured(ev: Evaluation, setting: DataSetting) -> DataSetting:
     """The whole entry a measured one sets (unchanged where it is not worked out here)."""
     run = ev.reached
     if setting.table != "tool_entry_at_point" or not run.tools_known or (

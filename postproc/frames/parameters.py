@@ -24,7 +24,7 @@ from typing import Callable, Hashable, Iterable
 from ..context import Context
 from ..interp.numbers import COMPUTED, numbered_variables
 from ..ir import Block
-from .lowering import RUN_KEY, FrameRun
+from .run_state import RUN_KEY, FrameRun
 
 
 class FrameReadings:

@@ -31,7 +31,7 @@ from ..context import Context
 from ..dialect import Dialect
 from ..errors import PostprocError, UnsupportedError
 from ..expr import Expr
-from ..frames.lowering import RUN_KEY, FrameRun
+from ..frames.run_state import RUN_KEY, FrameRun
 from ..ir import Block, DataSetting, Motion
 from ..state import MM_PER_INCH
 
