@@ -31,9 +31,7 @@ from postproc.context import Context
 from postproc.control import SubEnd, SubStart
 from postproc.cycles.turning.profile import TurnMove
 from postproc.errors import Location, PostprocError, ProgramError, UnsupportedError
-from postproc.evaluation import evaluate_number
 from postproc.expr import Binary, Expr, Func, Num, Unary, Var
-from postproc.interp.run_state import is_number
 from postproc.interp.variables import RUN_VARIABLES_KEY
 from postproc.ir import Block, Motion, NativeCode
 from postproc.rs274.arc_ends import RS274NGC_ARC_END
@@ -248,6 +246,11 @@ def _evaluated(words: list[tuple[str, str]], values: dict[str, Any], ctx: Contex
     new value, tests/test_ngc_g7x.py]. Global parameters only (named with a leading ``_``, numbered above 30 [K:
     LinuxCNC o-code docs: #1-#30 belong to a subprogram's call]) and numbers; a local one belongs to the
     subprogram's own call level, which this reading does not keep: refused, as a computed G code."""
+    # imported here: the interpreter's modules import decimal, which a plain translation to LinuxCNC must not
+    # pay for at start-up (tests/test_startup_imports.py); only a cycle's profile comes here
+    from postproc.evaluation import evaluate_number
+    from postproc.interp.run_state import is_number
+
     variables = ctx.run_data.get(RUN_VARIABLES_KEY)
     out: list[tuple[str, str]] = []
     for letter, text in words:
