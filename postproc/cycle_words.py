@@ -45,6 +45,10 @@ class CycleWords:
     dwell_unit: float | None = None
     """Seconds per unit of the dwell word (Fagor K: 1 or 0.01, from the set-up); None: the cycle
     semantics decide (Fanuc milliseconds, RS274 seconds)."""
+    undwelled: Mapping[str, str] = field(default_factory=dict)
+    """A dwelling cycle kind -> the kind it is when no dwell is in force, for a dialect whose one code
+    drills with or without a dwell (Fagor ``G81``: ``K`` absent or 0 is a plain drill, Fanuc's ``G81``,
+    not a ``G82`` with no dwell time)."""
 
     def bottom_letter(self, plane: str, normal: str) -> str:
         """The hole bottom's letter in ``plane``, whose normal axis is ``normal``."""

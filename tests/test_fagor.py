@@ -114,8 +114,9 @@ VALIDATE_ALL = [
                              "linuxcnc": "error: G159=9 (zero offset 9) from fagor has no equivalent in linuxcnc"}),
     (("fanuc", "G59\n"), {"fagor": "G59\n"}),
     # return levels: the same meaning in both (ISG's G98/G99 are software limits: never written there)
+    # (a G81 without K drills with no dwell, K0 [V: Fagor 8055-M programming manual p.162]: Fanuc's G81)
     (("fagor", "M03 S1000\nG98 G81 X5. Y5. Z2. I-5. F100.\n"),
-     {"fanuc": "S1000 M03\nG98 G82 X5. Y5. Z-5. R2. F100.\n"}),
+     {"fanuc": "S1000 M03\nG98 G81 X5. Y5. Z-5. R2. F100.\n"}),
     (("fanuc", "M03 S1000\nG99 G81 X5. Y5. Z-5. R2. F100.\n"),
      {"fagor": "S1000 M03\nG99 G81 X5. Y5. Z2. I-5. F100.\n"}),
     # Fagor's pockets never reach another dialect; Fanuc's G87/G88 never reach Fagor as G87/G88

@@ -255,9 +255,9 @@ def translated(text: str, target: str, after: tuple[str, ...] = (), prelude: lis
 
 
 def test_a_target_without_patterns_gets_the_modal_cycle_at_every_point():
-    # Fagor's G81 (drilling with a dwell K, none here) is Fanuc's G82 with R, Z
+    # Fagor's G81 without a dwell K drills with none (K0: Fagor 8055-M manual p.162): Fanuc's G81 with R, Z
     out = translated("G163 X-20 K4", "fanuc")
-    assert out.endswith("G98 G82 X20. Y0. Z-5. R2. F100.\nX0. Y20.\nX-20. Y0.\nX0. Y-20.\n"), out
+    assert out.endswith("G98 G81 X20. Y0. Z-5. R2. F100.\nX0. Y20.\nX-20. Y0.\nX0. Y-20.\n"), out
 
 
 def test_incremental_points_are_written_from_point_to_point():
@@ -268,17 +268,17 @@ def test_incremental_points_are_written_from_point_to_point():
 
 def test_arcs_between_points_are_written_as_motion_and_so_is_the_rest_of_the_cycle():
     out = translated("G163 X-20 K4 C3 F500 P3", "fanuc", after=("X50 Y50",))
-    tail = out[out.index("(drill_dwell from line 9"):]
+    tail = out[out.index("(drill from line 9"):]
     assert tail.splitlines() == [
-        "(drill_dwell from line 9: G163 X-20 K4 C3 F500 P3)",
+        "(drill from line 9: G163 X-20 K4 C3 F500 P3)",
         "F500.", "G03 X0. Y20. Z50. I-20. J0.", "F100.",
         "G00 X0. Y20. Z2.", "G01 Z-5.", "G00 Z50.",  # a move names only the axes it changes
-        "(drill_dwell from line 9: G163 X-20 K4 C3 F500 P3)",
+        "(drill from line 9: G163 X-20 K4 C3 F500 P3)",
         # the arc to point 4 passes over the skipped point 3
         "F500.", "G03 X0. Y-20. Z50. I0. J-20.", "F100.",
         "G00 X0. Y-20. Z2.", "G01 Z-5.", "G00 Z50.",
         # the G03 cancelled the cycle on the target: a later hole of the same cycle is motion too
-        "(drill_dwell from line 10: X50 Y50)",
+        "(drill from line 10: X50 Y50)",
         "G00 X50. Y50. Z50.", "G00 Z2.", "G01 Z-5.", "G00 Z50.",
     ], out
 
@@ -293,7 +293,7 @@ def test_arcs_between_points_reach_linuxcnc_and_grbl_as_arcs(target):
 
 def test_grbl_gets_the_motion_of_every_point():
     out = translated("G163 X-20 K2", "grbl")
-    assert out.splitlines()[-5:] == ["(drill_dwell from line 9: G163 X-20 K2)", "G0 X-20. Y0. Z50.",
+    assert out.splitlines()[-5:] == ["(drill from line 9: G163 X-20 K2)", "G0 X-20. Y0. Z50.",
                                      "G0 Z2.", "G1 Z-5.", "G0 Z50."], out
 
 
@@ -330,15 +330,16 @@ def test_a_pattern_block_generated_from_its_section_reads_back_to_the_same_patte
 
 
 def test_a_cycle_the_set_up_expands_takes_its_pattern_with_it():
-    # Fagor to Fagor with <Cycles expand="drill_dwell"/>: the G81 is written as motion, so no cycle is
+    # Fagor to Fagor with <Cycles expand="drill"/> (a G81 without K drills without a dwell: Fagor 8055-M
+    # manual p.162): the G81 is written as motion, so no cycle is
     # active on the controller for a G163 to repeat; the pattern is written as the motion of its holes
     out = io.StringIO()
-    setup = MachineSetup(cycles=CycleSettings(expand="drill_dwell"))
+    setup = MachineSetup(cycles=CycleSettings(expand="drill"))
     translate([line + "\n" for line in [*PRELUDE, "G163 X-20 K2", "G80", "M30"]], out, file="t.nc",
               source="fagor", target="fagor", setup=setup)
     lines = out.getvalue().splitlines()
     assert not any("G163" in line and not line.startswith(";") for line in lines), lines
-    assert lines[-7:] == [";drill_dwell from line 9: G163 X-20 K2", "G00 X-20. Y0. Z50.", "G00 Z2.",
+    assert lines[-7:] == [";drill from line 9: G163 X-20 K2", "G00 X-20. Y0. Z50.", "G00 Z2.",
                           "G01 Z-5.", "G00 Z50.", "G80", "M30"]
 
 

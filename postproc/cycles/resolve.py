@@ -241,6 +241,10 @@ class CannedCycleResolveSyntax(Syntax):
         elif rules.sticky_tap_dwell and kind in TAP and DWELL_KEY in state.extra:
             modal[cw.dwell] = state.extra[DWELL_KEY]
         holes = self._holes(ctx, words, call, plane, repeat_letters, fail)
+        read = kind  # the dialect's cycle, kept in force; ``kind`` from here is what this block does
+        undwelled = cw.undwelled.get(kind)
+        if undwelled is not None and not modal.get(cw.dwell):
+            kind = undwelled
         feed = _modal(sections, "Feed", "value", state.feed)
         return_level = _modal(sections, "ReturnLevel", "level", state.return_level)
         spindle = _modal(sections, "SpindleControl", "direction", state.spindle)
@@ -270,9 +274,9 @@ class CannedCycleResolveSyntax(Syntax):
 
         self.install(block, ctx, cycle, LazyExpansion(expansion, cycle, limit, fail, code, cw.peck, repeat, ctx))
         if active is not None:
-            active.kind, active.words = kind, modal  # the initial level stays while a cycle is active
+            active.kind, active.words = read, modal  # the initial level stays while a cycle is active
         else:
-            state.cycle = CycleState(kind, modal, initial)
+            state.cycle = CycleState(read, modal, initial)
         state.extra[STATE_KEY] = plane
 
     def expansion(self, kind: str) -> CycleExpansion:
