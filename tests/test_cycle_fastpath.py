@@ -25,7 +25,9 @@ coordinate = st.floats(-50.0, 50.0, allow_nan=False).map(lambda v: round(v, 3))
 
 class ReferencePath(ToolPath):
     """The tool path's moves as first written: the position a dictionary, the target a copy of it, every
-    axis checked (but for an unknown level, which is now the same located error as an unknown axis)."""
+    axis checked (but for an unknown level, which is now the same located error as an unknown axis, and a move in
+    the plane alone from an unknown level, which leaves the level unknown: Fanuc's positioning after a reference
+    return in cycle mode)."""
 
     __slots__ = ("pos",)
 
@@ -51,6 +53,10 @@ class ReferencePath(ToolPath):
             if value is not None:
                 target[axis] = value
         missing = [k for k in "XYZ" if k not in target]
+        if missing == [normal] and level is None:  # positioning where the level is unknown: in the plane alone
+            self.add(Motion(mode, {k: target[k] for k in "XYZ" if k != normal}))
+            self.pos = target
+            return
         if not missing and all(k in self.pos and abs(target[k] - self.pos[k]) < EPS for k in "XYZ"):
             return
         if missing:

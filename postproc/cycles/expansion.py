@@ -103,6 +103,13 @@ class ToolPath:
         to_a = was_a if a is None else a
         to_b = was_b if b is None else b
         to_n = was_n if level is None else level
+        if to_n is None and level is None and to_a is not None and to_b is not None:
+            # Fanuc's positioning at the level where the tool stands, not known here (after a reference
+            # return in cycle mode): a move in the plane alone, the normal axis left where it is
+            self.add(Motion(mode, _plane_move(self.axes, to_a, to_b)))
+            self.a = to_a
+            self.b = to_b
+            return
         if to_a is None or to_b is None or to_n is None:
             _unknown(self.axes, to_a, to_b, to_n)
             return
@@ -148,6 +155,12 @@ def _unknown(axes: tuple[str, str, str], a: float | None, b: float | None, n: fl
     raise ProgramError(f"the tool's {missing[0]} position is unknown before the cycle")
 
 
+def _plane_move(axes: tuple[str, str, str], a: float, b: float) -> dict[str, float | Expr]:
+    """The axes of a move in the plane alone, in X, Y, Z order."""
+    first, second, _ = axes
+    return {first: a, second: b} if first < second else {second: b, first: a}
+
+
 def _xyz(first: str, a: float | Expr, b: float | Expr, n: float | Expr) -> dict[str, float | Expr]:
     """The axes of a move in X, Y, Z order from its plane coordinates (first, second, normal). (Typed so
     that compiled code passes the tool path's float objects on as they are, not unboxed and boxed again
@@ -175,7 +188,7 @@ class _Whereabouts(ToolPath):
             self.b = b
         if level is not None:
             self.n = level
-        if self.a is None or self.b is None or self.n is None:
+        if self.a is None or self.b is None or (self.n is None and level is not None):
             _unknown(self.axes, self.a, self.b, self.n)
 
 

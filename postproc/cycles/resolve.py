@@ -381,7 +381,10 @@ class CannedCycleResolveSyntax(Syntax):
         initial = active.initial if active is not None else start
         if initial is None:
             raise fail(f"the initial level of {code} is unknown: {normal} was never positioned absolutely")
-        if start is None:
+        if start is None and (active is None or self._rules.position_at_clear):
+            # Fanuc positions each hole at the tool's current level, whatever it is, then goes to R: a cycle
+            # in force needs no number for it (a G28 Z in cycle mode, group 00, leaves the cycle in force and
+            # the tool at its reference point). RS274 chooses its positioning level by where the tool stands.
             raise fail(f"the {normal} position before {code} is unknown: program {normal} absolutely first")
         r, bottom = float(modal[level]), float(modal[depth])
         if incremental:
