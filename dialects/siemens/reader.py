@@ -288,6 +288,10 @@ class _State(CallReading, ControlReading):
         assigns: list[tuple[Var, Expr]] = []
         modes: list[tuple[str, str, int]] = []
         seen: set[str] = set()
+        # The end of the name scanned last: words written without blanks (``G1G1G1``) are one name, and a word
+        # inside it ends where that name does, found once (scanning and slicing the rest of the line at every
+        # word took time quadratic in the line: minutes for a long one, the fuzz's ``malformed siemens``).
+        run_end = 0
         while True:
             pos = skip_blanks(code, pos)
             if pos >= n:
@@ -296,9 +300,19 @@ class _State(CallReading, ControlReading):
             up = c.upper()
             if c not in _NAME_START and c != "$":
                 raise self.error(block.line, pos + 1, f"unexpected character {c!r}")
-            end = name_at(code, pos)
+            end = run_end if pos < run_end else name_at(code, pos)
+            run_end = end
             eq = skip_blanks(code, end)
             assigned = code[eq:eq + 1] == "=" and code[eq + 1:eq + 2] != "="
+            if not assigned and up in ADDRESSES and code[pos + 1:pos + 2] in _DIGITS:
+                # an address and its number (``G1``, ``X10``): what the branches below decide for it, without
+                # the name (the whole run of letters and digits it starts)
+                key = up
+                if key not in "GM" and key in seen:
+                    raise self.error(block.line, pos + 1, f"address {key} appears twice in one block")
+                seen.add(key)
+                pos = self.number(block, code, pos, c)
+                continue
             name = code[pos:end]
             upper = name.upper()
             if assigned and (upper[:1] == "R" and upper[1:].isdigit() or name.lower() in self.types
