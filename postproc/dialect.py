@@ -168,6 +168,10 @@ class Dialect:
     (``postproc.lowering.arcs.settle_arc_ends``)."""
     TOOL_LENGTH_OFFSET: ClassVar[bool] = True
     """Tool length offset from a table exists (the writer refuses it otherwise)."""
+    DYNAMIC_TOOL_LENGTH: ClassVar[bool] = False
+    """A length given in the program (LinuxCNC's and grbl's ``G43.1 Z..``) can be written; False: the writer
+    refuses it, at its own block (``postproc.lowering.length_timing`` leaves it there, never moves it to the
+    block where the target would apply it)."""
     PATH_CONTROL_AT_START: ClassVar[str] = "cutting"
     """The path control mode in force before a program programs one ('cutting' or 'exact_stop'): [K] Fanuc and
     LinuxCNC power on in G64. A translation between two dialects that start differently writes the source's

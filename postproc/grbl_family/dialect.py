@@ -19,6 +19,8 @@ class GrblFamily(Dialect):
     a word keeps ``gc_state.position`` (machine), an absolute word adds the offset, an incremental one adds
     to the machine position. [K] grblHAL ``gcode.c``: the same (``gc_get_block_offset`` adds the length to
     absolute words only)."""
+    DYNAMIC_TOOL_LENGTH = True
+    """``G43.1 Z..`` [V: grbl 1.1 ``gcode.c``; K: grblHAL ``gcode.c``]."""
 
     ARC_END = ArcEndRule(metric=0.005, inch=0.005 / MM_PER_INCH, relative=0.001, ceiling=100.0, of_start=True,
                          runs=SPIRAL)

@@ -73,7 +73,7 @@ def time_length_changes(blocks: Iterator[Block], ctx: Context, target: type[Dial
         return blocks
     if ctx.lathe:  # Fanuc T/GSK T0102 -> LinuxCNC's lathe G43 H02 (``postproc.cycles.lathe_lowering``)
         return blocks if ctx.length_at_axis else _complete(blocks, ctx)
-    return _defer(blocks, ctx) if ctx.length_at_axis else _complete(blocks, ctx)
+    return _defer(blocks, ctx, target) if ctx.length_at_axis else _complete(blocks, ctx)
 
 
 def _writes_lengths(target: type[Dialect]) -> bool:
@@ -98,7 +98,7 @@ def _distance(block: Block, absolute: bool) -> bool:
     return distance.mode == "absolute" if isinstance(distance, DistanceMode) else absolute
 
 
-def _defer(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
+def _defer(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
     """Towards a target that applies a change at the next move: each change goes to the next absolute Z."""
     pending: ToolLengthOffset | None = None
     written: tuple[str, object, object] = ("cancel", None, None)  # what the target has in force
@@ -119,7 +119,8 @@ def _defer(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
             if same and pending is None:
                 yield block  # changes nothing (a G49 in a start-up line): left where it is
                 continue
-            if _absolute_z(block, absolute):
+            if _absolute_z(block, absolute) or offset.mode == "dynamic" and not target.DYNAMIC_TOOL_LENGTH:
+                # (a length the target cannot write stays at its block, whose writing refuses it there)
                 pending = None
                 written = _key(offset)
                 yield block

@@ -87,6 +87,8 @@ class Linuxcnc(Dialect):
     """[V: rs274 2.9 run here: ``T1 M6`` ``G43`` then ``G0 X1`` keeps the machine Z (the program Z shifts by
     the length, ``STRAIGHT_TRAVERSE(1, 0, 4)`` from Z5 with length 1); the next ``Z2`` ends at 2 + 1; a
     ``G91 Z-1`` moves by -1; after ``G49``, ``X3`` again keeps the machine Z]."""
+    DYNAMIC_TOOL_LENGTH = True
+    """``G43.1 Z..`` (and its other axes) [V: rs274 2.9 runs it]."""
     CUTTER_RULES = ARC_CORNERS
     """rs274's cutter radius compensation: tangent entry, arcs around outside corners."""
     ARC_END = RS274NGC_ARC_END
