@@ -176,4 +176,6 @@ def test_a_grblhal_lathe_program_reaches_linuxcnc_with_the_same_words() -> None:
     text = "G18 G7 G21\nG96 S150 D2200 M3\nG0 X20. Z2.\nG33 X22. Z-2. K1.\nG97 S500\nM2\n"
     setup = MachineSetup(input=InputSettings(machine_type="lathe"), controller=BUILD)
     assert code_lines(write(text, "grblhal", setup, "linuxcnc")) == [
-        "G18 G7", "G18 G21", "G96 D2200 S150 M3", "G0 X20. Z2.", "G33 X22. Z-2. K1.", "G97 S500", "M2"]
+        "G18 G7", "G18 G21", "G96 D2200 S150 M3", "G61 G0 X20. Z2.", "G33 X22. Z-2. K1.", "G97 S500", "M2"]
+    # (G61 before the first move: grblHAL powers on in its one mode, the exact path [V: grblHAL core gcode.h,
+    # ControlMode_ExactPath "G61 - Default"]; LinuxCNC powers on blending, G64)

@@ -108,6 +108,10 @@ class Grbl(GrblFamily):
     ``CONTROL_MODE_EXACT_PATH // G61 (Default: Must be zero)``, the only group 13 code ``gcode.c`` accepts;
     the planner limits the junction speed, it does not round the path]. So a source's cutting mode (G64) and
     exact stop (G61) both run as programmed (``verify``)."""
+    PATH_CONTROL_AT_START = "exact_stop"
+    """It is also the mode in force at power-on (the same ``gcode.h`` default): a program for a controller that
+    powers on blending (Fanuc, LinuxCNC: G64) gets its exact stop before the first move
+    (``postproc.lowering.path_at_start``), so the corners this program reaches are reached there too."""
     CUTTER_COMPENSATION = False
     """Only G40."""
     TOOL_LENGTH_OFFSET = False

@@ -159,6 +159,10 @@ class Grblhal(GrblFamily):
     off in every build): the tool goes through every programmed point, the junction deviation only slowing it
     at a corner [V: grblHAL core ``gcode.h`` ``control_mode_t``: ``ControlMode_ExactPath`` "G61 - Default"; G61.1 and G64
     only under ``ENABLE_PATH_BLENDING``]."""
+    PATH_CONTROL_AT_START = "exact_stop"
+    """It is also the mode in force at power-on (the same ``gcode.h`` default): a program for a controller that
+    powers on blending (Fanuc, LinuxCNC: G64) gets its exact stop before the first move
+    (``postproc.lowering.path_at_start``), so the corners this program reaches are reached there too."""
     CUTTER_COMPENSATION = False
     """Only G40 (``CUTTER_COMP_ENABLE`` is off, experimental)."""
     TOOL_LENGTH_OFFSET = False
