@@ -172,6 +172,8 @@ def _lower(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iter
                         _select_offset(select, block, ctx)
                     elif offsets is not None:
                         _report(offsets.select, block, ctx, select)
+                        if same and not block.sections and isinstance(select, ToolSelect):
+                            _offset_note(block, select)
                 if isinstance(select, ToolSelect) and "ToolChange" in block.sections:
                     station = lathe_tool(select.number) if isinstance(select.number, int) else None
                 elif isinstance(select, ToolSelect) and not same:
@@ -256,6 +258,19 @@ def _same_station(block: Block, station: int | None) -> bool:
     del block.sections["ToolSelect"]
     block.changed()
     return True
+
+
+def _offset_note(block: Block, select: ToolSelect) -> None:
+    """A ``T0200`` that only changed the offset, for a target that gets the offsets in its coordinates
+    (``LatheOffsets``): nothing of the block is left to write, so a note says where it went (an empty line
+    was written, the block gone without a trace). Not its T word: grbl takes ``T`` as a tool number (0-255,
+    stored and nothing else [V: grbl 1.1 ``gcode.c``, ``MAX_TOOL_NUMBER 255``, ``gc_state.tool``]), and the
+    offset number would read as another tool."""
+    number = select.number
+    if not isinstance(number, int):
+        return
+    block.sections["Comments"] = Comments([f"T{number:04d}: offset {number % 100:02d}, in the coordinates"])
+    block.changed()
 
 
 def _turret(block: Block, ctx: Context, turning: bool) -> bool:
