@@ -43,7 +43,7 @@ from postproc.dialect import Dialect
 from postproc.errors import UnsupportedError
 from postproc.event_order import after_motion
 from postproc.expr import Expr
-from postproc.ir import Block, DistanceMode, MachineCoordinates, Motion, Section
+from postproc.ir import Block, Comments, DistanceMode, MachineCoordinates, Motion, Section
 from postproc.output.home_position import SECOND_RETURN, reference_problem, reference_target
 from postproc.rs274.codes import CodeTable
 from postproc.rs274.cycle_words import NEUTRAL_CYCLE_WORDS
@@ -198,6 +198,16 @@ class FagorWriter(WordWriter):
 
     def program_start(self, s: Any, block: Block) -> str:
         return "%" + (str(s.number) if s.number is not None else str(s.name))
+
+    def normalized(self, block: Block) -> str:
+        """The program header has no words to rebuild it from: written from its ``ProgramStart`` (it was taken
+        for a block with no meaning and written as a comment, the header lost, by ``--normalize``)."""
+        start = block.sections.get("ProgramStart")
+        if start is not None and not block.words:
+            comments = block.sections.get("Comments")
+            texts = [self.comment(t) for t in comments.texts] if isinstance(comments, Comments) else []
+            return " ".join([self.program_start(start, block), *texts])
+        return super().normalized(block)
 
     def comment(self, text: str) -> str:
         return ";" + " ".join(text.splitlines())
