@@ -15,8 +15,10 @@ and R (the retract) are radial [V: rs274 2.9.0~pre1, a G7 program with X and U d
 Refused where read, rs274's own refusals (``ProgramError``): no Q ("G7x.x requires a Q word"), a plane other
 than ZX, I not above 0, G71/G72 under cutter compensation, a profile arc given by neither I/K nor R or by
 both, a profile not monotonic. A profile's computed words are evaluated when the cycle runs, with the
-parameters' values then, as LinuxCNC does (``_evaluated``). Not modelled, so refused (``UnsupportedError``): a
-profile word computed from a local parameter (or a computed G code), a profile with any word but those (a feed or speed is ignored there: said rather than dropped), a subprogram not
+parameters' values then, as LinuxCNC does (``_evaluated``; a read of the current position reads the profile's own
+point). Not modelled, so refused (``UnsupportedError``): a profile word computed from a local parameter (or a
+computed G code), a control statement (o-word loop, branch, call) or parameter assignment in a profile (read past
+before issue 26: a loop's moves were taken once), a profile with any word but those (a feed or speed is ignored there: said rather than dropped), a subprogram not
 defined before the cycle, the cycle in incremental mode (G91), a P of G70 that is no whole number from 1,
 G70 under cutter compensation (``read_g7x``), and a roughing profile not closed back to the cycle's X (G71) or
 Z (G72): LinuxCNC 2.9.0~pre1 closes it after the offset, later versions before it (``postproc.rs274.ngc_g7x``,
@@ -28,7 +30,7 @@ from __future__ import annotations
 from typing import Any, Callable, Final
 
 from postproc.context import Context
-from postproc.control import SubEnd, SubStart
+from postproc.control import ASSIGN, SubEnd, SubStart
 from postproc.cycles.turning.profile import TurnMove
 from postproc.errors import Location, PostprocError, ProgramError, UnsupportedError
 from postproc.expr import Binary, Expr, Func, Num, Unary, Var
@@ -65,6 +67,9 @@ feed and speed settings"]: refused here, as a word the translation would drop.""
 
 Written = tuple[int, list[tuple[str, str]], dict[str, Any]]
 """A profile block as written: its line, its words (letter, number text) and its computed values."""
+STATEMENT: Final = "statement"
+"""The one word of a ``Written`` that stands for a control statement (an o-word loop, branch, call or return)
+or a parameter assignment in a subprogram's definition: the cycle refuses it (``_profile``)."""
 
 
 class ProfileCollector:
@@ -92,7 +97,12 @@ class ProfileCollector:
                 self.profiles[self.name] = self.body
             self.name = None
             return
-        if self.name is None or not block.words:
+        if self.name is None:
+            return
+        if control is not None or ASSIGN in block.sections:
+            self.body.append((block.line, [(STATEMENT, (block.text or "").strip())], {}))
+            return
+        if not block.words:
             return
         self.body.append((block.line, list(block.words), dict(block.values or {})))
         if self.corner and any(letter.upper() in self.corner for letter, _ in block.words):
@@ -239,17 +249,35 @@ def _check_closed(pieces: list[Piece], start: complex, code: str, name: str, unm
 
 
 def _evaluated(words: list[tuple[str, str]], values: dict[str, Any], ctx: Context,
-               unmodelled: Callable[[str], UnsupportedError]) -> list[tuple[str, str]]:
+               unmodelled: Callable[[str], UnsupportedError], point: dict[str, float]) -> list[tuple[str, str]]:
     """A profile block's words with its computed ones evaluated where the cycle runs: LinuxCNC reads the
     subprogram then, so its expressions take the parameters' values at the cycle, not at the definition [V:
     rs274 2.9.0~pre1: a global parameter set between the ``o100 sub`` and the ``G71 Q100`` shifts the cut by its
     new value, tests/test_ngc_g7x.py]. Global parameters only (named with a leading ``_``, numbered above 30 [K:
     LinuxCNC o-code docs: #1-#30 belong to a subprogram's call]) and numbers; a local one belongs to the
-    subprogram's own call level, which this reading does not keep: refused, as a computed G code."""
+    subprogram's own call level, which this reading does not keep: refused, as a computed G code.
+
+    The current position (``#<_x>``, ``#<_z>``, #5420, #5422) read there is the profile's own point (``point``, in
+    program units, X a radius): where the profile's moves so far end, from the cycle's X and Z [V: rs274
+    2.9.0~pre1 run here: a profile's first ``X[#<_x>-5] Z[#<_z>-1]`` after ``G0 X40 Z5`` and ``G72 .. X30 Z2`` ends
+    at X25 Z1; under G7 with the cycle's X60 ``X[#<_x>-10]`` ends at the radius 10 (``#<_x>`` reads the radius
+    30); LinuxCNC's ``nc_files/lathe_g7x_face_boring.ngc`` steps its profile by ``#<_x>``, tests/test_ngc_g7x.py].
+    The other axes read as the machine stands (``FrameReadings``)."""
     # imported here: the interpreter's modules import decimal, which a plain translation to LinuxCNC must not
     # pay for at start-up (tests/test_startup_imports.py); only a cycle's profile comes here
     from postproc.evaluation import evaluate_number
     from postproc.interp.run_state import is_number
+
+    from postproc.frames.parameters import FrameReadings
+    from postproc.rs274.variables import NgcVariables
+
+    class ProfileReadings(FrameReadings):
+        """The frame as the profile's words read it: the profile's point on X and Z, the rest as it stands."""
+
+        __slots__ = ()
+
+        def position(self, axis: str) -> float | None:
+            return point[axis] if axis in point else super().position(axis)
 
     variables = ctx.run_data.get(RUN_VARIABLES_KEY)
     out: list[tuple[str, str]] = []
@@ -261,10 +289,16 @@ def _evaluated(words: list[tuple[str, str]], values: dict[str, Any], ctx: Contex
         if variables is None or letter.upper() == "G" or not _global(value):
             raise unmodelled(f"{letter}{text}: a computed word in a G70-G72 profile reading a local parameter or "
                              "giving the G code is not supported (write the numbers, or use global parameters)")
+        frames = variables.frames if isinstance(variables, NgcVariables) else None
+        if isinstance(variables, NgcVariables):
+            variables.frames = ProfileReadings(ctx)
         try:
             number = evaluate_number(value, variables, f"{letter}{text}")
         except PostprocError as err:
             raise unmodelled(f"{letter}{text}: {err.message}") from None
+        finally:
+            if isinstance(variables, NgcVariables):
+                variables.frames = frames
         out.append((letter, repr(number)))
     return out
 
@@ -301,8 +335,11 @@ def _profile(written: list[Written], start: complex, ctx: Context, name: str, at
         def unmodelled(message: str) -> UnsupportedError:
             return UnsupportedError(f"{name}'s profile, line {line}: {message}", at)
 
+        if words and words[0][0] == STATEMENT:
+            raise unmodelled(f"'{words[0][1]}': a control statement or parameter assignment in a profile is not "
+                             "modelled (the controller runs it as it reads the profile: write the moves it makes)")
         if values:
-            words = _evaluated(words, values, ctx, unmodelled)
+            words = _evaluated(words, values, ctx, unmodelled, {"X": here.imag, "Z": here.real})
         got: dict[str, float] = {}
         for letter, num in words:
             up = letter.upper()
