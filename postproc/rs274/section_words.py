@@ -154,11 +154,16 @@ class SectionWords(NumberWriter):
     """The dialect writes a cutting mode's blending tolerances (LinuxCNC's ``P``/``Q``); one that does not
     warns where a program gave them, as the tolerance is left to the machine's own parameters."""
 
+    PATH_CONTROL_LACK: ClassVar[str] = ""
+    """Why the dialect's code table has no modal path control code where it has none (a sentence with its
+    source, added to the refusal); empty: none said."""
+
     def path_control_words(self, s: Any, block: Block) -> list[str]:
         if s.one_shot:
             return self._code("path_once", s.mode, "a one-shot exact stop", block)
         self.note_unwritten_tolerance(s, block)
-        return self._code("path", s.mode, f"path control {s.mode}", block)
+        lack = self.PATH_CONTROL_LACK
+        return self._code("path", s.mode, f"path control {s.mode}" + (f" ({lack})" if lack else ""), block)
 
     def note_unwritten_tolerance(self, s: Any, block: Block) -> None:
         """Warn where a program's blending tolerances are not written (``WRITES_PATH_TOLERANCE``)."""
