@@ -37,6 +37,7 @@ import io
 from typing import Callable, Iterable, Iterator, Mapping
 
 from ..block_rules import check_blocks
+from ..context import ASSUMED_START, Context
 from ..dialect import Dialect
 from ..errors import Diagnostics
 from ..lowering.lower import lower_for
@@ -127,7 +128,14 @@ def toolpath_stream(lines: Iterable[str], *, file: str, dialect: str | type[Dial
     registry = registry or default_registry()
     if isinstance(dialect, str):
         dialect = registry.dialect(dialect)
-    prepare = macro_arguments(dialect, arguments) if arguments else None
+    arguments_prepare = macro_arguments(dialect, arguments) if arguments else None
+
+    def prepare(ctx: Context) -> None:
+        """The run is a simulation: a position read at the start is the simulated start (``ASSUMED_START``)."""
+        ctx.run_data[ASSUMED_START] = True
+        if arguments_prepare is not None:
+            arguments_prepare(ctx)
+
     # a simulation runs the program's loops, jumps and calls
     from ..fast.reading import install_reading  # the reading lanes (postproc.fast), as a translation has
     ctx, blocks = read_blocks(lines, file, dialect, setup, diagnostics, program_mode="execute",
