@@ -14,7 +14,9 @@ The current position (LinuxCNC's ``#5420``-``#5428``) is the program position th
 is known only where the machine's current point is what the simulation holds: every axis read was
 programmed absolutely since the start (before that, ``p`` is the set-up's assumed start) and since the
 last tool offset change, with no move in machine coordinates, reference return, cycle or change of work
-system after it (those leave ``p`` unknown).
+system after it (those leave ``p`` unknown). In a simulation that assumes the machine starts where the set-up
+says (``ASSUMED_START``: ``verify`` runs a translation so), an axis not programmed since the start reads that
+start, as the simulated moves assume (``FrameReadings._at_start`` where no frame is evaluated, on a lathe).
 """
 
 from __future__ import annotations

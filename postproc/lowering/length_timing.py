@@ -19,9 +19,14 @@ program that changes the length there (typical posts: ``G43 H1 Z15.``). Otherwis
   (the two would then differ).
 * towards "at the programmed axis" from "at the next move": the change goes to the next motion block,
   which gets the Z the program stands at (absolute, program units) if it has none, so the target moves Z
-  there as the source does; where that Z is not known (no absolute Z since the start or a work offset
-  change, or the next move is incremental, a reference return, a cycle or a machine-coordinate move) the
-  change is a located error asking for Z beside it, and so is a tool table write between the two. A
+  there as the source does. Where that Z is not known (no absolute Z since the start or a work offset
+  change) and the target reads its current position (``Dialect.POSITION_READS``: LinuxCNC's ``Z#5422``,
+  read when the block is read, before its own ``G43``), the move gets that read instead [V: rs274, tests/
+  test_length_timing_position_read.py], unless cutter compensation is on (rs274 refuses the read then) or a
+  change written alone since moved the target's program point (a change replaced before any move stays
+  where it was written, ``diverged``). Otherwise, or where the next move is incremental, a reference
+  return, a cycle or a machine-coordinate move, the change is a located error asking for Z beside it, and
+  so is a tool table write between the two. A
   reference return is such a move through its intermediate point: given absolutely, both rules take the
   point with the new length (the change goes beside it); given incrementally (``G49`` then ``G91 G28 Z0``,
   a common program end), its point is written absolutely from the known Z (``G49 G90 G28 Z<z>``, then
