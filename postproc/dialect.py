@@ -145,6 +145,9 @@ class Dialect:
     """The controller's tap cycle is rigid by itself, its pitch a parameter (SINUMERIK ``CYCLE84``): another
     family's rigid-tapping code is left out (``postproc.cycles.rigid_tap_lowering``), the tap cycles after it
     written as that cycle or refused."""
+    RIGID_TAP_LACK: ClassVar[str] = ""
+    """Why the controller gets no synchronised tap (with its source), added where one is refused
+    (``postproc.cycles.rigid_tap_lowering``); empty: none said."""
     RIGID_TAP_CODE: ClassVar[str] = ""
     """The machine code that makes the tap cycles after it rigid (Fanuc ``M29 S..``): a synchronised tap of
     another family is written as that code and a tap cycle (``postproc.synchronised_tap``); '' for none."""

@@ -140,6 +140,8 @@ class Mach3(Dialect):
     rigid tap code [V: Dynomotion's Mach3 plugin help, "Mach3 Plugin - Rigid Tapping": a rigid tap there is
     an M84 macro that hands the cycle to the motion card]. A rigid tap of another dialect (LinuxCNC
     ``G33.1``, Fanuc ``M29``+``G84``) is refused by name, never written as a floating tap's feed moves."""
+    RIGID_TAP_LACK = ("its G84 is the floating tap holder's cycle and it has no rigid tap code [V: Dynomotion's "
+                      "Mach3 plugin help, Mach3 Rigid Tapping]")
     STOPS_BEFORE_MOTION = True
     """The RS274/NGC order of execution: M5 and M9 act before the block's motion."""
     FEED_BEFORE_UNITS = True
