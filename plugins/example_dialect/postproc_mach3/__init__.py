@@ -45,6 +45,9 @@ class Mach3Writer(WordWriter):
     """No M19 row: an oriented spindle stop is an unsupported construct here."""
     DWELL_WORD: ClassVar[str] = "P"
     """G4 P<seconds>."""
+    TOOL_TABLE_LACK: ClassVar[str] = (
+        "Mach3's G10 L1 tool table setting and whether it acts on the active tool as LinuxCNC's does are [?]: not "
+        "confirmed from its manual, not written here")
     CYCLE_CANCEL_IS_MOTION: ClassVar[bool] = True
     """G80 and G0 are one modal group (RS274/NGC): a block with a motion code leaves G80 out."""
     BARE_FEED_MOTION_NEEDS_FEED: ClassVar[bool] = True
