@@ -161,3 +161,16 @@ def test_replaced_change_kept_and_verified() -> None:
     report = verify_lines(io.StringIO(text), io.StringIO(out), file_in="p.nc", file_out="p.ngc",
                           source="fanuc", target="linuxcnc", setup=setup)
     assert report.ok, report.summary()
+
+
+@pytest.mark.parametrize("text, line", [
+    ("O0001\nG00 T0202\nG55\nX86.\nZ0.25\nM30\n", 4),  # a work system selected since the start
+    ("O0001\nG00 T0202\nG55 X86.\nZ0.25\nM30\n", 3),  # ... in the moving block itself (LinuxCNC reads before it)
+    ("O0001\nG00 T0202\nG20 X3.\nZ0.25\nM30\n", 3),  # units changed in the moving block
+])
+def test_no_read_where_the_point_was_re_expressed(text: str, line: int) -> None:
+    """The read is the start's point only while nothing but the start placed the axis: a work system or unit
+    change leaves the Fanuc's programmed Z to what the run knows; a located error as before."""
+    messages = _refused(text, _lathe())
+    assert any(m.startswith(("p.nc:2:", f"p.nc:{line}:")) and "not known where it applies" in m
+               for m in messages), messages

@@ -22,9 +22,10 @@ program that changes the length there (typical posts: ``G43 H1 Z15.``). Otherwis
   there as the source does. Where that Z is not known (no absolute Z since the start or a work offset
   change) and the target reads its current position (``Dialect.POSITION_READS``: LinuxCNC's ``Z#5422``,
   read when the block is read, before its own ``G43``), the move gets that read instead [V: rs274, tests/
-  test_length_timing_position_read.py], unless cutter compensation is on (rs274 refuses the read then) or a
-  change written alone since moved the target's program point (a change replaced before any move stays
-  where it was written, ``diverged``). Otherwise, or where the next move is incremental, a reference
+  test_length_timing_position_read.py], for an axis nothing has placed since the start (``unplaced``: no
+  move naming it, no work offset, frame, cycle or machine move), unless cutter compensation is on (rs274
+  refuses the read then) or a change written alone since moved the target's program point (a change replaced
+  before any move stays where it was written, ``diverged``). Otherwise, or where the next move is incremental, a reference
   return, a cycle or a machine-coordinate move, the change is a located error asking for Z beside it, and
   so is a tool table write between the two. A
   reference return is such a move through its intermediate point: given absolutely, both rules take the
@@ -171,6 +172,12 @@ def _clash(sections: dict[str, Section]) -> str | None:
     return None
 
 
+_UNPLACING: Final = frozenset(("WorkOffset", "CoordinateSet", "FrameChange", "CompoundMotion", "CycleCall",
+                                "RigidTap", "MachineCoordinates", "DataSetting"))
+"""What leaves the program's point on an axis other than where the start put it, on the target as on the
+source, without a number here: after it a position read is not written (the simulation's start no longer
+stands for it, ``postproc.frames.parameters``)."""
+
 HELD: Final = 1000
 """Blocks without motion held behind a waiting change at most (then it is refused where it was written)."""
 
@@ -193,6 +200,7 @@ def _complete(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> I
     restore = False  # a reference return was written absolutely: G91 again after it
     compensating = False  # cutter radius compensation is on (the target reads no position then)
     diverged: set[str] = set()  # axes whose program point on the target a change written alone has moved
+    unplaced = set(axes)  # axes nothing has placed or re-expressed since the start: only they are read
     for block in blocks:
         sections = block.sections
         if pending is None and _plain(sections):  # the common block: at most a plain move
@@ -216,6 +224,8 @@ def _complete(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> I
                         pos[axis] = float(value) if absolute else None if known is None else known + value
                 if diverged and plain and absolute:
                     diverged.difference_update(words)
+                if unplaced:
+                    unplaced.difference_update(words)
             yield block
             continue
         if _WATCHED.isdisjoint(sections):
@@ -240,6 +250,8 @@ def _complete(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> I
         if "WorkOffset" in sections or "CoordinateSet" in sections:
             for a in axes:
                 pos[a] = None
+        if unplaced and not _UNPLACING.isdisjoint(sections):
+            unplaced.clear()  # the point moved or was re-expressed by what only the run knows (held blocks too)
         setting = sections.get("DataSetting")
         if isinstance(setting, DataSetting):
             table.write(setting, MM_PER_INCH if inch else 1.0)
@@ -291,8 +303,8 @@ def _complete(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> I
                     block, _length(applied, table, inch), _length(in_force, table, inch)):
                 pass
             elif (isinstance(motion, Motion) and motion.mode in _PLAIN and absolute
-                    and all(pos[a] is not None or (not compensating and a in target.POSITION_READS
-                                                   and a not in diverged) for a in missing)
+                    and all(pos[a] is not None or (not compensating and a in target.POSITION_READS and a in unplaced
+                                                   and a not in diverged and _reads_here(sections)) for a in missing)
                     and "MachineCoordinates" not in sections and "CompoundMotion" not in sections):
                 for a in missing:
                     known = pos[a]
@@ -312,6 +324,10 @@ def _complete(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> I
             pending = None
             applied = in_force
         _follow(block, pos, absolute, in_force, None if ctx.lathe else table, inch)
+        if unplaced:
+            motion = sections.get("Motion")
+            if isinstance(motion, Motion):
+                unplaced.difference_update(motion.axes)
         if diverged:
             motion = sections.get("Motion")
             if (isinstance(motion, Motion) and motion.mode in _PLAIN and absolute
@@ -323,6 +339,12 @@ def _complete(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> I
             yield _incremental_again(block)
     if pending is not None:
         yield from _release(held, pending[0])
+
+
+def _reads_here(sections: dict[str, Section]) -> bool:
+    """A read in this block is the point the source's move starts from: the block changes no work system, frame
+    or units (the target reads before the block's own changes, its words are in the new ones)."""
+    return _UNPLACING.isdisjoint(sections) and "Units" not in sections
 
 
 def _position_read(target: type[Dialect], axis: str, diameter: bool) -> Expr:
