@@ -145,6 +145,7 @@ class Mach3(Dialect):
     ``G33.1``, Fanuc ``M29``+``G84``) is refused by name, never written as a floating tap's feed moves."""
     RIGID_TAP_LACK = ("its G84 is the floating tap holder's cycle and it has no rigid tap code [V: Dynomotion's "
                       "Mach3 plugin help, Mach3 Rigid Tapping]")
+    """Said where a rigid tap of another family is refused (``SYNCHRONISED_TAP``)."""
     STOPS_BEFORE_MOTION = True
     """The RS274/NGC order of execution: M5 and M9 act before the block's motion."""
     FEED_BEFORE_UNITS = True
