@@ -52,6 +52,9 @@ def resolve_radius_where_d_cannot(blocks: Iterator[Block], ctx: Context, target:
 
 class Fagor(Dialect):
     NAME = "fagor"
+    RIGID_TAP_LACK = ("the 8070's G84 R word selecting rigid tapping and its G63 rigid tap are [?]: their words and "
+                      "how the feed follows the pitch are not confirmed from a Fagor manual, DIALECTS.md 2.3")
+    """``codes.py``: a rigid tap is refused by name until the 8070 manual's G84/G63 pages are at hand."""
     STORED_WORK_OFFSETS = True
     """Its zero offset variables write the table, taken at the work system's next selection (the reader's
     ``ZERO_OFFSETS``)."""

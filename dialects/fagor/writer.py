@@ -78,6 +78,9 @@ class FagorWriter(WordWriter):
     which all select it after writing it [?]: for the active system the selection is written again after
     it (``work_offset_assignments``)."""
     WORK_OFFSET_COUNT: ClassVar[int] = 6
+    TOOL_TABLE_LACK: ClassVar[str] = (
+        "the 8070's tool table variables (V.G.TOOL.. / V.A.TOOL.., [?]) and when a written entry acts on the "
+        "active tool are not confirmed from its manual's variable list, which was not reachable: not written here")
     """ORGT[1]-[6]: G54-G59 (``G159=1``-``G159=6``, DIALECTS.md 1.4)."""
     SPLIT_MOTIONS: ClassVar[frozenset[str]] = _REFERENCE
     """A reference return: ``split_block``."""

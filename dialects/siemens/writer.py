@@ -70,6 +70,10 @@ class SiemensWriter(WordWriter):
     DIALECT: ClassVar[str] = "siemens"
     CODES: ClassVar[CodeTable] = CODES
     DWELL_WORD: ClassVar[str] = "F"
+    TOOL_TABLE_LACK: ClassVar[str] = (
+        "SINUMERIK writes a tool's edge data from a program ($TC_DP3[t,d] its length 1, $TC_DP6 its radius, $TC_DP12 "
+        "the length's wear [K: SINUMERIK system variable list]), but which of its tools and edges a register "
+        "number is, and when a written edge acts on the active D, are [?]: not written here")
 
     def __init__(self, ctx: Context, source_dialect: str, target: type[Dialect] | None = None) -> None:
         super().__init__(ctx, source_dialect, target)

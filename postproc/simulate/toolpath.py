@@ -37,6 +37,7 @@ import io
 from typing import Callable, Iterable, Iterator, Mapping
 
 from ..block_rules import check_blocks
+from ..context import ASSUMED_START, Context
 from ..dialect import Dialect
 from ..errors import Diagnostics
 from ..lowering.lower import lower_for
@@ -88,7 +89,8 @@ def toolpath_events(lines: Iterable[str], *, file: str, dialect: str | type[Dial
                     unsimulated: list[tuple[int, str, str]] | None = None,
                     on_unsupported: str = "error", compensate: bool = True,
                     arguments: Mapping[str, float] | None = None,
-                    kept_native: Callable[[str], bool] | None = None, mark_held: bool = False) -> Iterator[Event]:
+                    kept_native: Callable[[str], bool] | None = None, mark_held: bool = False,
+                    assumed_start: bool = False) -> Iterator[Event]:
     """Read a program in ``dialect`` and yield its toolpath (header first). Raises ``ErrorList`` at the
     end when the program had errors (unless ``check`` is False: the caller then checks
     ``diagnostics``); events already yielded then belong to a failed run. ``live_after_end``, if given,
@@ -100,13 +102,16 @@ def toolpath_events(lines: Iterable[str], *, file: str, dialect: str | type[Dial
     (``postproc.reading.macro_arguments``). ``kept_native``: which stretches of cutter compensation stay
     settings while the others are simulated (``Moves.kept_native``, for ``verify``). ``mark_held``: a reference
     return's move to the reference point names the axes it put at a machine position (``"held": "xz"``;
-    ``verify --transform``)."""
+    ``verify --transform``). ``assumed_start``: a read of the current position before the program places the
+    axis is the set-up's start, which the simulation assumes (``verify`` runs a translation so: a translation
+    writes such a read where the source keeps an axis it never placed, ``postproc.lowering.length_timing``);
+    without it that read is the machine's, an error."""
     diagnostics = diagnostics or Diagnostics()
     with gc_paused():
         yield from toolpath_stream(lines, file=file, dialect=dialect, setup=setup, registry=registry,
                                    diagnostics=diagnostics, live_after_end=live_after_end, unsimulated=unsimulated,
                                    on_unsupported=on_unsupported, compensate=compensate, arguments=arguments,
-                                   kept_native=kept_native, mark_held=mark_held)
+                                   kept_native=kept_native, mark_held=mark_held, assumed_start=assumed_start)
     if check:
         diagnostics.check()
 
@@ -117,7 +122,8 @@ def toolpath_stream(lines: Iterable[str], *, file: str, dialect: str | type[Dial
                     unsimulated: list[tuple[int, str, str]] | None = None,
                     on_unsupported: str = "error", compensate: bool = True,
                     arguments: Mapping[str, float] | None = None,
-                    kept_native: Callable[[str], bool] | None = None, mark_held: bool = False) -> Iterator[Event]:
+                    kept_native: Callable[[str], bool] | None = None, mark_held: bool = False,
+                    assumed_start: bool = False) -> Iterator[Event]:
     """``toolpath_events`` without its checks: the simulator's own (compiled) event stream, read and lowered
     as it is pulled, with no Python generator around it (``verify`` pulls every event of two programs: a
     Python ``yield from`` cost about 1,500 instructions an event there). The caller checks ``diagnostics``
@@ -127,7 +133,16 @@ def toolpath_stream(lines: Iterable[str], *, file: str, dialect: str | type[Dial
     registry = registry or default_registry()
     if isinstance(dialect, str):
         dialect = registry.dialect(dialect)
-    prepare = macro_arguments(dialect, arguments) if arguments else None
+    arguments_prepare = macro_arguments(dialect, arguments) if arguments else None
+
+    def prepare(ctx: Context) -> None:
+        """With ``assumed_start``, a position read before the program places an axis is the simulated start
+        (``ASSUMED_START``)."""
+        if assumed_start:
+            ctx.run_data[ASSUMED_START] = True
+        if arguments_prepare is not None:
+            arguments_prepare(ctx)
+
     # a simulation runs the program's loops, jumps and calls
     from ..fast.reading import install_reading  # the reading lanes (postproc.fast), as a translation has
     ctx, blocks = read_blocks(lines, file, dialect, setup, diagnostics, program_mode="execute",

@@ -24,7 +24,7 @@ from postproc.event_order import MOVING, after_motion
 from postproc.geometry import ARC_TOLERANCE_MM, PLACES
 from postproc.expr import Expr
 from postproc.ir import Block, Motion
-from postproc.state import MM_PER_INCH, MODAL_KEYS, PLANE_AXES
+from postproc.state import LEFT_START, MM_PER_INCH, MODAL_KEYS, PLANE_AXES
 from postproc.context import Context
 from postproc.syntax import Syntax
 
@@ -87,6 +87,7 @@ class ModalStateSyntax(Syntax):
         if machine or mode == "home" or mode == "home2":
             for axis in motion.axes:
                 pos[axis] = None
+            state.extra[LEFT_START] = True
             return
         incremental = state.distance == "incremental"
         for axis, value in motion.axes.items():

@@ -87,6 +87,8 @@ class Grbl(GrblFamily):
     """G93: a move in 1/F minutes [K: grbl wiki, "Commands": G93, G94 feed rate modes; its code table reads G93]."""
     SPINDLE_ORIENTATION = False
     """No M19: cycles that need an oriented stop follow the set-up's ``Cycles orientation``."""
+    RIGID_TAP_LACK = "grbl 1.1 reads no spindle position: no G33, G33.1 or tap cycle [K: grbl wiki, Commands]"
+    """Said where a rigid tap of another family is refused (no ``SYNCHRONISED_TAP``)."""
     TOOL_CHANGER = False
     """M6 is rejected: a tool change is written as an M0 pause (``pause_for_tool_change``)."""
     STOPS_BEFORE_MOTION = True

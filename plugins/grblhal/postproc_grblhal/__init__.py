@@ -40,7 +40,7 @@ read where a program is read and written.
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Callable, ClassVar, Iterator
+from typing import Callable, ClassVar, Iterator, Mapping, TYPE_CHECKING
 
 from postproc.comments import CommentSyntax
 from postproc.dialect import Dialect, Lazy, Reader, ResolvedCycle
@@ -170,6 +170,11 @@ class Grblhal(GrblFamily):
     """Parameters, expressions and o-word conditions and loops, on a build with them (``<Controller
     expressions="true">``: ``expressions``); on any other the writer refuses every statement, so a program
     that computes reaches grblHAL flattened."""
+    POSITION_READS: ClassVar[Mapping[str, int]] = {}
+    """None written: a build with expressions reads #5420-#5428 as the steppers' position less the offsets when the
+    block is parsed [V: grblHAL core ``ngc_params.c`` ``work_position``, ``sys.position``], which runs ahead of
+    the planner's queued moves; whether the parser waits for them there is not known [?], so a read is not the
+    previous block's end as LinuxCNC's is (``postproc.lowering.length_timing`` refuses instead)."""
     TAPE_MARKS = False
     """``%`` is no word of grblHAL's parser: written as a comment."""
     COMMENTS = Lazy[CommentSyntax](".text:COMMENTS")

@@ -27,6 +27,7 @@ from postproc.lowering.lower import Lowering
 from postproc.setup.machine_setup import MachineSetup
 from postproc.context import Context
 from postproc.rs274.cycle_words import rs274_cycle_words
+from postproc.rs274.variables import NGC_POSITION_READS
 from postproc.syntax import Pipeline
 from postproc.output.writer_base import Writer
 from postproc.xmlio import XFactory
@@ -87,6 +88,13 @@ class Linuxcnc(Dialect):
     """[V: rs274 2.9 run here: ``T1 M6`` ``G43`` then ``G0 X1`` keeps the machine Z (the program Z shifts by
     the length, ``STRAIGHT_TRAVERSE(1, 0, 4)`` from Z5 with length 1); the next ``Z2`` ends at 2 + 1; a
     ``G91 Z-1`` moves by -1; after ``G49``, ``X3`` again keeps the machine Z]."""
+    POSITION_READS = NGC_POSITION_READS
+    """``#5420``-``#5428``: the current position, set from ``current_x``.. each time a block is read, so a read
+    in a block that changes the tool offset sees the point before the change [V: ``rs274ngc_pre.cc``
+    ``Interp::read``; rs274 2.9.0~pre1 run here: ``G43 H2 X30 Z#5422`` from Z5 moves to program Z5 under the new
+    offset]."""
+    POSITION_READ_RADIUS = True
+    """[V: ``interp_read.cc`` ``read_x`` halves an X word in diameter mode; ``#5420`` is ``current_x``]."""
     CUTTER_RULES = ARC_CORNERS
     """rs274's cutter radius compensation: tangent entry, arcs around outside corners."""
     ARC_END = RS274NGC_ARC_END

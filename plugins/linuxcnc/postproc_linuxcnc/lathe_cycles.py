@@ -179,11 +179,20 @@ def read_g7x(block: Block, ctx: Context, motion: Motion, values: dict[str, Any],
             shown = code if "." in code else f"{code}.0"
             raise refuse(f"{name} with cutter compensation on (rs274: \"G{shown} cannot be used with cutter "
                          "compensation enabled\"): cancel it (G40) before the cycle")
-        raise unmodelled(f"{name} with cutter compensation on is not modelled: LinuxCNC 2.9.0 compensates the cycle "
-                     "from where its profile ends (a move to the profile's end first) [V: rs274 2.9.0~pre1 run "
-                     "here], 2.9.3 and later turn compensation off for each pass's approach (interp_g7x.cc, "
-                     "commits b1f3e7d8 and f648d01c) and are not at hand to check; cancel compensation (G40) "
-                     "before the cycle, or write its profile under G41/G42 as moves")
+        # Three behaviours by version [V: interp_g7x.cc at the tags v2.9.0, v2.9.2, v2.9.3, v2.9.4 of
+        # github:LinuxCNC/linuxcnc]: up to 2.9.2 the cycle's rapids and passes are all compensated, from where the
+        # profile ends [V: rs274 2.9.0~pre1 run here]; 2.9.3 (b1f3e7d8, "Fix unintended move when using G42 for
+        # G70") puts the current point back at the cycle's start before the passes; 2.9.4 (f648d01c and
+        # 0b80d453da) also turns compensation off for the rapid to the cycle's X Z and for each pass's first
+        # rapid. No interpreter after 2.9.0~pre1 is at hand to check the compensated path against, and a set-up
+        # does not name the LinuxCNC version: refused.
+        raise unmodelled(f"{name} with cutter compensation on is not modelled: LinuxCNC up to 2.9.2 compensates the "
+                     "cycle from where its profile ends (a move to the profile's end first) [V: rs274 2.9.0~pre1 "
+                     "run here], 2.9.3 starts its passes from the cycle's start point (interp_g7x.cc, commit "
+                     "b1f3e7d8), 2.9.4 and later also turn compensation off for the approach to the start point "
+                     "and each pass's first rapid (commits f648d01c, 0b80d453da), and those versions are not at "
+                     "hand to check; cancel compensation (G40) before the cycle, or write its profile under "
+                     "G41/G42 as moves")
     if state.plane != "ZX":
         raise refuse(f"{name} runs in the ZX plane only (rs274: \"can only be used in XZ plane (G18)\")")
     incremental = state.distance == "incremental"
@@ -242,10 +251,14 @@ def _check_closed(pieces: list[Piece], start: complex, code: str, name: str, unm
     front = pieces[0].end - pieces[0].start
     if code.startswith("71") and abs(back.real) > 0 and front.imag * (start.imag - end.imag) < 0:
         raise unmodelled(f"{name}: the profile ends at X{end.imag:g}, short of the cycle's X{start.imag:g}: LinuxCNC "
-                         "versions cut it differently (before and after 2.9.3); end the profile at the cycle's X")
+                         "versions cut it differently (interp_g7x.cc adds a move to the cycle's X from 2.9.1, commit "
+                         "03793cc9fa, under another condition from 2.9.4, commit c38c192fdd); end the profile at the "
+                         "cycle's X")
     if code.startswith("72") and abs(back.imag) > 0 and front.real * (start.real - end.real) < 0:
         raise unmodelled(f"{name}: the profile ends at Z{end.real:g}, short of the cycle's Z{start.real:g}: LinuxCNC "
-                         "versions cut it differently (before and after 2.9.3); end the profile at the cycle's Z")
+                         "versions cut it differently (interp_g7x.cc adds a move to the cycle's Z from 2.9.1, commit "
+                         "03793cc9fa, under another condition from 2.9.4, commit c38c192fdd); end the profile at the "
+                         "cycle's Z")
 
 
 def _evaluated(words: list[tuple[str, str]], values: dict[str, Any], ctx: Context,
