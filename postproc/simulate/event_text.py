@@ -194,6 +194,7 @@ _KEY_FEED_MODE: Final = ', "feed_mode": '
 _KEY_CONTROLLED: Final = ', "controlled": '
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class _KeyTexts:
     """The texts of a record's axis keys (``MoveRecord.keys``: one tuple a simulation), kept for the tuple met last."""
 
