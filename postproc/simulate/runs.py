@@ -11,6 +11,7 @@ from typing import Any, Final, Iterable, Iterator
 
 from ..geometry import CENTRE_KEYS, PLANE_INDEX, arc_sweep
 from .events import Event
+from .move_record import MoveRecord
 from .normal_move import Move, same_feed as _same_feed
 
 _hypot: Final = math.hypot
@@ -57,6 +58,22 @@ def _axes(ev: Event, controlled: Event | None, start: dict[str, float] | None = 
                 end[k] = x
                 if steps is not None:
                     steps.append(x - (0.0 if start is None else start.get(k, 0.0)))
+    return end
+
+
+def _record_end(record: MoveRecord, start: dict[str, float], steps: list[float]) -> dict[str, float]:
+    """``_axes`` of a record's event (its controlled point where it has one), read by field: its keys are the
+    machine's axes, each in both points; ``steps`` receives ``end - start`` axis by axis."""
+    end: dict[str, float] = {}
+    keys = record.keys
+    controlled = record.controlled
+    values = record.point if controlled is None else controlled
+    for i in range(len(keys)):
+        k = keys[i]
+        if _is_axis(k):
+            x = _real(values[i])
+            end[k] = x
+            steps.append(x - start.get(k, 0.0))
     return end
 
 
@@ -316,7 +333,7 @@ def _one_helix(run: Move, m: Move, eps: float) -> bool:
     return True
 
 
-def normalise(events: Iterable[Event], start: dict[str, float], eps: float,
+def normalise(events: Iterable[Event | MoveRecord], start: dict[str, float], eps: float,
               codes: list[Event] | None = None) -> Iterator[Move | Event]:
     """Moves merged into runs, machine events as they are; the header is skipped. A move ends at its
     controlled point where it has one (``compare._controlled``, read in place). ``codes``: the events of a
@@ -324,31 +341,40 @@ def normalise(events: Iterable[Event], start: dict[str, float], eps: float,
     are listed, not compared (``compare_machine_codes``)."""
     pos = {k.lower(): v for k, v in start.items()}
     run: Move | None = None
-    for ev in events:
-        if "toolpath" in ev:
-            continue
-        if codes is not None and "code" in ev:
-            codes.append(ev)
-            continue
-        if "move" not in ev:
-            if run is not None:
-                yield run
-                run = None
-            yield ev
-            continue
-        kind = ev["move"]
-        if kind == "cw" or kind == "ccw":
-            m = _move(ev, pos)
-            pos = m.end
-            if run is not None and _merge(run, m, eps):
-                continue
-            if run is not None:
-                yield run
-            run = m
-            continue
-        # a straight move: merged into the run without a ``Move`` of its own where it continues it
+    for item in events:
         steps: list[float] = []
-        end = _axes(ev, ev.get("controlled"), pos, steps)
+        if isinstance(item, MoveRecord):  # a straight move, read by field
+            kind = item.kind
+            end = _record_end(item, pos, steps)
+            raw_f: Any = item.f
+            line = item.line
+        else:
+            ev = item
+            if "toolpath" in ev:
+                continue
+            if codes is not None and "code" in ev:
+                codes.append(ev)
+                continue
+            if "move" not in ev:
+                if run is not None:
+                    yield run
+                    run = None
+                yield ev
+                continue
+            kind = ev["move"]
+            if kind == "cw" or kind == "ccw":
+                m = _move(ev, pos)
+                pos = m.end
+                if run is not None and _merge(run, m, eps):
+                    continue
+                if run is not None:
+                    yield run
+                run = m
+                continue
+            end = _axes(ev, ev.get("controlled"), pos, steps)
+            raw_f = None
+            line = 0
+        # a straight move: merged into the run without a ``Move`` of its own where it continues it
         square = 0.0
         for step in steps:
             square += step * step
@@ -359,9 +385,10 @@ def normalise(events: Iterable[Event], start: dict[str, float], eps: float,
                 pos = end
                 continue
         before, pos = pos, end
-        raw_f = ev.get("f")
+        if not isinstance(item, MoveRecord):  # (read where the move is not dropped, as before the records)
+            raw_f = item.get("f")
+            line = item["line"]
         f = None if raw_f is None else _real(raw_f)
-        line = ev["line"]
         if run is not None and run.direction is not None and (length < 0.0 or length > 0.0) and kind == run.kind \
                 and _same_feed(run.f, f) and _extends(run, end, line, eps):
             continue
@@ -370,3 +397,4 @@ def normalise(events: Iterable[Event], start: dict[str, float], eps: float,
         run = _straight(kind, before, end, f, line, steps, norm(steps) if length < 0.0 else length)
     if run is not None:
         yield run
+

@@ -34,7 +34,7 @@ Assumptions (a simulator knows no machine data):
 from __future__ import annotations
 
 import io
-from typing import Callable, Iterable, Iterator, Mapping
+from typing import Callable, Iterable, Iterator, Mapping, cast
 
 from ..block_rules import check_blocks
 from ..context import ASSUMED_START, Context
@@ -53,6 +53,7 @@ from ..cycles.rigid_tap_lowering import resolve_rigid_taps
 from ..lowering.deferred import resolve_dynamic_cutter_compensation
 from ..lowering.length_timing import time_length_changes
 from .events import MOVES_THE_TOOL, UNSIMULATED, Event, header, num, start_position
+from .move_record import MoveRecord
 from .simulator import Simulator, simulate
 from .travel import TravelError
 
@@ -108,10 +109,11 @@ def toolpath_events(lines: Iterable[str], *, file: str, dialect: str | type[Dial
     without it that read is the machine's, an error."""
     diagnostics = diagnostics or Diagnostics()
     with gc_paused():
-        yield from toolpath_stream(lines, file=file, dialect=dialect, setup=setup, registry=registry,
+        yield from cast(Iterator[Event], toolpath_stream(lines, file=file, dialect=dialect, setup=setup, registry=registry,
                                    diagnostics=diagnostics, live_after_end=live_after_end, unsimulated=unsimulated,
                                    on_unsupported=on_unsupported, compensate=compensate, arguments=arguments,
-                                   kept_native=kept_native, mark_held=mark_held, assumed_start=assumed_start)
+                                   kept_native=kept_native, mark_held=mark_held, assumed_start=assumed_start,
+                                   records=False))  # (no records)
     if check:
         diagnostics.check()
 
@@ -123,12 +125,14 @@ def toolpath_stream(lines: Iterable[str], *, file: str, dialect: str | type[Dial
                     on_unsupported: str = "error", compensate: bool = True,
                     arguments: Mapping[str, float] | None = None,
                     kept_native: Callable[[str], bool] | None = None, mark_held: bool = False,
-                    assumed_start: bool = False) -> Iterator[Event]:
+                    assumed_start: bool = False, records: bool = True) -> Iterator[Event | MoveRecord]:
     """``toolpath_events`` without its checks: the simulator's own (compiled) event stream, read and lowered
     as it is pulled, with no Python generator around it (``verify`` pulls every event of two programs: a
     Python ``yield from`` cost about 1,500 instructions an event there). The caller checks ``diagnostics``
     at the end and pauses the cyclic collector for the run (``postproc.reading.gc_paused``). The reading
-    starts here, not at the first event."""
+    starts here, not at the first event. ``records``: a straight move comes as a ``MoveRecord`` (read by the
+    JSON lines writer and verify's normalising; ``as_events`` gives any other reader the dictionaries), else
+    every event as its dictionary."""
     setup = setup or MachineSetup()
     registry = registry or default_registry()
     if isinstance(dialect, str):
@@ -150,7 +154,7 @@ def toolpath_stream(lines: Iterable[str], *, file: str, dialect: str | type[Dial
     steps = [step for step in registry.lowerings if step not in TRANSLATE_ONLY]
     lowered = lower_for(blocks, ctx, ToolpathTarget, "error", steps)
     return simulate(lowered, ctx, live_after_end, unsimulated, on_unsupported == "warn",
-                    ctx.cutter_rules if compensate else None, kept_native, mark_held)
+                    ctx.cutter_rules if compensate else None, kept_native, mark_held, records)
 
 
 def check_travel(lines: Iterable[str], *, file: str, dialect: type[Dialect], setup: MachineSetup,
