@@ -38,6 +38,7 @@ from ..errors import PostprocError, ProgramError, UnsupportedError, UsageError
 from ..event_order import after_motion
 from ..expr import Expr
 from ..ir import Block, CompoundMotion, Motion, Section
+from ..ir.keys import only_move
 from ..numbers import EXACT
 from ..state import MM_PER_INCH, PLANE_AXES, ModalState, changes_nothing
 from .arc_geometry import Arc, chord_points, r_centre_error, r_pieces, signed_radius, split
@@ -120,21 +121,6 @@ def rewrite_arcs(blocks: Iterator[Block], ctx: Context, option: ArcOption, targe
             yield from out
 
 
-_ROUTINE: Final = frozenset(("Sequence", "Motion"))
-"""The keys of most blocks of a CAM program (a numbered move): none is modal (``state.MODAL_KEYS``), none is
-one ``_Rewriter.block`` looks for besides the move."""
-
-
-def _routine(sections: dict[str, Section]) -> bool:
-    """The block holds at most a block number and a move: one loop over its two keys, where the sections
-    ``_Rewriter.block`` looks for were nine dictionary lookups and ``changes_nothing``'s loop a block (a pass
-    over every block of every translation to grbl, which settles its R arcs: ``settle_arc_ends``)."""
-    for key in sections:
-        if key not in _ROUTINE:
-            return False
-    return True
-
-
 @mypyc_attr(allow_interpreted_subclasses=True)
 class _Rewriter:
     """Where the program stands (program units, as programmed: a diameter stays a diameter) and the
@@ -167,8 +153,10 @@ class _Rewriter:
     def block(self, block: Block) -> list[Block]:
         """The block, or the blocks its arc became."""
         sections = block.sections
-        rare = self.in_profile or not _routine(sections)
-        """A key but a block number and a move (or a profile to leave): the other sections are looked for."""
+        rare = self.in_profile or not only_move(sections)
+        """A key but a block number and a move (or a profile to leave): the other sections are looked for. The
+        common block (``only_move``: neither key is modal, ``state.MODAL_KEYS``) skips their nine look-ups and
+        ``changes_nothing``'s loop (this pass runs over every block of every translation to grbl)."""
         if rare:
             in_profile = "InProfile" in sections
             if in_profile != self.in_profile:

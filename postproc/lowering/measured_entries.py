@@ -33,6 +33,7 @@ from ..errors import PostprocError, UnsupportedError
 from ..expr import Expr
 from ..frames.run_state import RUN_KEY, FrameRun
 from ..ir import Block, DataSetting, Motion, Section
+from ..ir.keys import only_move
 from ..state import MM_PER_INCH
 
 MEASURED: Final = "tool_entry_at_point"
@@ -78,7 +79,10 @@ _WATCHED: Final = frozenset(("ToolLengthOffset", "DataSetting", "Units", "Distan
 def _unwatched(sections: dict[str, Section]) -> bool:
     """No key of the block is in ``_WATCHED``: a loop over its two or three keys (compiled,
     ``sections.keys().isdisjoint(_WATCHED)`` builds a view and makes a bound method call, most of this step's
-    ~1.9k instructions a block; reading ``mode`` of an untyped section was a lookup by name)."""
+    ~1.9k instructions a block; reading ``mode`` of an untyped section was a lookup by name), after the
+    cheaper test of the commonest block (``only_move``)."""
+    if only_move(sections):
+        return True
     for key in sections:
         if key in _WATCHED:
             return False
