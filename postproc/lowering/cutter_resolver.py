@@ -16,6 +16,7 @@ from ..errors import PostprocError, ProgramError, UnsupportedError
 from ..expr import Expr
 from ..ir import (Block, CompoundMotion, CutterCompensation, DataSetting, DistanceMode, Feed, FeedMode, Motion, Plane,
                   ProgramControl, Section, ToolChange, ToolLengthOffset, ToolSelect, Units, WorkOffset)
+from ..ir.keys import only_move
 from ..compensation.cutter_radius import CutterRadius
 from ..compensation.dynamic import DynamicCutterCompensation
 from ..compensation.nose import TIPS, mirrored
@@ -82,7 +83,7 @@ class Resolver(CompensatedMoves):
             sections = block.sections
             plain = idle
             odd = False
-            if plain:  # one look at the keys: none asks for the general way (a G41/G42, a setting)
+            if plain and not only_move(sections):  # one look at the keys: none asks for the general way
                 for key in sections:
                     if key in _NOT_NOTED:
                         odd = True
