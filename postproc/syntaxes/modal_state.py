@@ -14,7 +14,7 @@ from __future__ import annotations
 from mypy_extensions import mypyc_attr
 
 from math import hypot
-from typing import Final, NoReturn
+from typing import Final, NoReturn, cast
 
 from postproc.block_rules import ZERO_FEED, ArcError, arc_centre, check_values, needs_feed, per_rev_problem
 from postproc.control import ASSIGN, CONTROL
@@ -67,8 +67,11 @@ class ModalStateSyntax(Syntax):
             check_values(block, ctx)  # after the state is carried: an error keeps the block's settings
 
     def _move(self, block: Block, ctx: Context, motion: Motion) -> None:
-        if not ctx.axis_words.issuperset(motion.axes):
-            _check_axes(block, ctx, motion)
+        words = ctx.axis_words
+        for letter in motion.axes:  # (not ``issuperset``: with a dict it builds a set per block)
+            if letter not in words:
+                _check_axes(block, ctx, motion)
+                break
         state = ctx.state
         mode = motion.mode
         machine = "MachineCoordinates" in block.sections
@@ -88,15 +91,18 @@ class ModalStateSyntax(Syntax):
             for axis in motion.axes:
                 pos[axis] = None
             return
-        incremental = state.distance == "incremental"
+        if state.distance != "incremental":
+            # The words as the objects they are (compiled: a word narrowed to a float is unboxed and boxed again).
+            known = cast("dict[str, object]", pos)
+            for axis, word in cast("dict[str, object]", motion.axes).items():
+                known[axis] = None if isinstance(word, Expr) else word  # computed: known only when the program runs
+            return
         for axis, value in motion.axes.items():
-            if type(value) is not float and isinstance(value, Expr):  # (a float first: it is cheaper)
-                pos[axis] = None  # computed: known only when the program runs
-            elif incremental:
+            if isinstance(value, Expr):
+                pos[axis] = None
+            else:
                 old = pos.get(axis)
                 pos[axis] = None if old is None else old + value
-            else:
-                pos[axis] = value
 
 
 _FEED_MOTION: Final = frozenset(("linear", "cw", "ccw", "thread"))
