@@ -14,7 +14,7 @@ from __future__ import annotations
 from mypy_extensions import mypyc_attr
 
 from math import hypot
-from typing import Final, NoReturn, cast
+from typing import Final, NoReturn
 
 from postproc.block_rules import ZERO_FEED, ArcError, arc_centre, check_values, needs_feed, per_rev_problem
 from postproc.control import ASSIGN, CONTROL
@@ -91,18 +91,15 @@ class ModalStateSyntax(Syntax):
             for axis in motion.axes:
                 pos[axis] = None
             return
-        if state.distance != "incremental":
-            # The words as the objects they are (compiled: a word narrowed to a float is unboxed and boxed again).
-            known = cast("dict[str, object]", pos)
-            for axis, word in cast("dict[str, object]", motion.axes).items():
-                known[axis] = None if isinstance(word, Expr) else word  # computed: known only when the program runs
-            return
+        incremental = state.distance == "incremental"
         for axis, value in motion.axes.items():
-            if isinstance(value, Expr):
-                pos[axis] = None
-            else:
+            if type(value) is not float and isinstance(value, Expr):  # (a float first: it is cheaper)
+                pos[axis] = None  # computed: known only when the program runs
+            elif incremental:
                 old = pos.get(axis)
                 pos[axis] = None if old is None else old + value
+            else:
+                pos[axis] = value
 
 
 _FEED_MOTION: Final = frozenset(("linear", "cw", "ccw", "thread"))
