@@ -67,8 +67,11 @@ class ModalStateSyntax(Syntax):
             check_values(block, ctx)  # after the state is carried: an error keeps the block's settings
 
     def _move(self, block: Block, ctx: Context, motion: Motion) -> None:
-        if not ctx.axis_words.issuperset(motion.axes):
-            _check_axes(block, ctx, motion)
+        words = ctx.axis_words
+        for letter in motion.axes:  # (not ``issuperset``: with a dict it builds a set per block)
+            if letter not in words:
+                _check_axes(block, ctx, motion)
+                break
         state = ctx.state
         mode = motion.mode
         machine = "MachineCoordinates" in block.sections
