@@ -1,5 +1,5 @@
 """Fagor 8070 writer: DIN words spelt from Fagor's table (G70/G71 units, G54-G59, G98/G99), ``;``
-comments, ``%name`` headers, and the hole cycles Fagor runs with its own words.
+comments (``SemicolonCommentWriter``), ``%name`` headers, and the hole cycles Fagor runs with its own words.
 
 * A block read from Fagor and unchanged is copied byte for byte (``WordWriter``).
 * Hole cycles: a drilling (Fanuc ``G81``/``G82``) or feed-out boring (``G85``/``G89``) cycle read in
@@ -47,7 +47,7 @@ from postproc.ir import Block, DistanceMode, MachineCoordinates, Motion, Section
 from postproc.output.home_position import SECOND_RETURN, reference_problem, reference_target
 from postproc.rs274.codes import CodeTable
 from postproc.rs274.cycle_words import NEUTRAL_CYCLE_WORDS
-from postproc.rs274.writer import WordWriter
+from postproc.rs274.semicolon_comments import SemicolonCommentWriter
 from postproc.state import PLANE_AXES
 
 from .codes import CODES, CYCLE_ALIASES
@@ -61,7 +61,7 @@ _REFERENCE = frozenset(("home", "home2"))
 """Motion modes of a reference return."""
 
 
-class FagorWriter(WordWriter):
+class FagorWriter(SemicolonCommentWriter):
     DIALECT: ClassVar[str] = "fagor"
     CODES: ClassVar[CodeTable] = CODES
     DWELL_WORD: ClassVar[str] = ""
@@ -201,18 +201,6 @@ class FagorWriter(WordWriter):
 
     def program_start(self, s: Any, block: Block) -> str:
         return "%" + (str(s.number) if s.number is not None else str(s.name))
-
-    def comment(self, text: str) -> str:
-        return ";" + " ".join(text.splitlines())
-
-    def comment_out(self, block: Block) -> str:
-        text = " ".join((block.text or " ".join(a + n for a, n in block.words)).split())
-        return f";UNSUPPORTED LINE {block.line}: {text}" + (block.eol or "\n")
-
-    def nothing_written(self, block: Block) -> str:
-        super().nothing_written(block)  # the warning
-        text = " ".join((block.text or " ".join(a + n for a, n in block.words)).split())
-        return f";LINE {block.line}: {text}" + (block.eol or "\n")
 
     def block_delete_words(self, s: Any, block: Block) -> list[str]:
         self.unsupported("a block skip (its 8070 spelling is not confirmed)", block)

@@ -163,18 +163,9 @@ FANUC_A = CutterRules(
     look_ahead=1,  # [K] two blocks read ahead
 )
 """Fanuc cutter compensation C, start-up type A (parameter SUP = 0, the factory setting)."""
-FANUC_B = CutterRules(
-    name="Fanuc cutter compensation C (start-up type B)",
-    register_absent="modal",
-    entry="corner",  # [K] 15.6.2 type B
-    outside_corner="extend",
-    corner_tolerance=1e-6,
-    arc_after_cancel=False,
-    planes=("XY", "ZX", "YZ"),
-    inside_corner="meet",
-    look_ahead=1,
-)
-"""Fanuc cutter compensation C, start-up type B (parameter SUP = 1)."""
+FANUC_B = dataclasses.replace(FANUC_A, name="Fanuc cutter compensation C (start-up type B)",
+                              entry="corner")  # [K] 15.6.2 type B
+"""Fanuc cutter compensation C, start-up type B (parameter SUP = 1): type A's rules but the start-up's end."""
 
 
 # Tool nose radius compensation of Fanuc T (and GSK, which follows Fanuc T's rules), as data: the same
@@ -208,18 +199,8 @@ FANUC_T = CutterRules(
     profile_cycles=frozenset(("turn_finish",)),  # [K] G41/G42 before G70, G40 after it, none in ns..nf
 )
 """Fanuc T (and GSK) tool nose radius compensation, start-up type A (parameter SUP = 0)."""
-FANUC_T_B = CutterRules(
-    name="Fanuc T tool nose radius compensation (start-up type B)",
-    register_absent="offset",
-    entry="corner",  # [K] start-up type B (SUP = 1)
-    outside_corner="extend",
-    corner_tolerance=1e-6,
-    arc_after_cancel=False,
-    planes=("XY", "ZX", "YZ"),
-    inside_corner="meet",
-    look_ahead=1,
-    profile_cycles=frozenset(("turn_finish",)),
-)
+FANUC_T_B = dataclasses.replace(FANUC_T, name="Fanuc T tool nose radius compensation (start-up type B)",
+                                entry="corner")  # [K] start-up type B (SUP = 1)
 """Fanuc T tool nose radius compensation, start-up type B (parameter SUP = 1)."""
 
 

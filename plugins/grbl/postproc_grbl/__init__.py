@@ -43,7 +43,6 @@ from postproc.setup.machine_setup import MachineSetup
 from postproc.syntax import Pipeline
 from postproc.output.writer_base import Writer
 from postproc.xmlio import XFactory
-from postproc.rs274.lean_controller import lower_for_lean_controller
 
 from .codes import CODES
 
@@ -61,6 +60,13 @@ def write_tool_lengths(blocks: Iterator[Block], ctx: Context, target: type[Diale
 def drop_resolved_tool_data(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
     """``postproc.grbl_family.lengths.drop_resolved_tool_data``, imported when a translation first lowers for grbl."""
     from postproc.grbl_family.lengths import drop_resolved_tool_data as step
+    return step(blocks, ctx, target)
+
+
+def lower_for_lean_controller(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """``postproc.rs274.lean_controller.lower_for_lean_controller``, imported when a translation first lowers
+    for grbl."""
+    from postproc.rs274.lean_controller import lower_for_lean_controller as step
     return step(blocks, ctx, target)
 
 

@@ -50,7 +50,6 @@ from postproc.lowering.program_end import comment_numbered_subs_after_end
 from postproc.output.line_format import LineRule
 from postproc.output.writer_base import Writer
 from postproc.rs274.cycle_words import rs274_cycle_words
-from postproc.rs274.lean_controller import close_full_circles
 from postproc.rs274.order_of_execution import stops_after_motion
 from postproc.setup.machine_setup import MachineSetup
 from postproc.syntax import Pipeline
@@ -72,6 +71,13 @@ def write_tool_lengths(blocks: Iterator[Block], ctx: Context, target: type[Diale
 def drop_resolved_tool_data(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
     """``postproc.grbl_family.lengths.drop_resolved_tool_data``, imported when a translation first lowers for grblHAL."""
     from postproc.grbl_family.lengths import drop_resolved_tool_data as step
+    return step(blocks, ctx, target)
+
+
+def close_full_circles(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """``postproc.rs274.lean_controller.close_full_circles``, imported when a translation first lowers for
+    grblHAL."""
+    from postproc.rs274.lean_controller import close_full_circles as step
     return step(blocks, ctx, target)
 
 
