@@ -167,13 +167,14 @@ def test_finishing_cycle_runs_its_profile_compensated_by_hand() -> None:
         assert move["z"] == pytest.approx(z - R, abs=1e-6) and move["x"] == pytest.approx(2 * (x - R), abs=1e-6)
 
 
-def test_roughing_cycle_under_compensation_is_refused() -> None:
-    """How the roughing passes are compensated is not modelled: refused at the cycle, not run uncompensated."""
-    text = CYCLE.replace("G0 X62. Z2.\nG71 U2.", "G42 G0 X62. Z2.\nG71 U2.").replace("G42 G0 X62. Z2.\nG70",
-                                                                                 "G70")
+def test_pattern_repeating_cycle_under_compensation_is_refused() -> None:
+    """G73's passes under compensation are not in our sources [?] (G71/G72 type I are modelled:
+    ``tests/test_fanuc_nose_roughing.py``): refused at the cycle, not run uncompensated."""
+    text = CYCLE.replace("G0 X62. Z2.\nG71 U2. R0.5\nG71 P10 Q20", "G42 G0 X62. Z2.\nG73 U2. W1. R3\nG73 P10 Q20") \
+        .replace("G42 G0 X62. Z2.\nG70", "G70")
     with pytest.raises(PostprocError) as err:
         _controlled(text, "fanuc", _setup(3))
-    assert "t.nc:6:1: error: a lathe cycle (turn rough) under tool nose radius compensation" in str(err.value)
+    assert "t.nc:6:1: error: a lathe cycle (pattern repeat) under tool nose radius compensation" in str(err.value)
 
 
 # -- translations ------------------------------------------------------------------------------------------
