@@ -138,7 +138,9 @@ def _lower(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iter
             skip_departure = False  # the native G70 makes its departure itself
             continue
         if isinstance(cycle, LatheCycle):
-            flagged = bool(cycle.params.get(NOSE_PROFILE))
+            flagged = bool(cycle.params.get(NOSE_PROFILE)) or (
+                cycle.kind == "thread_single" and int(cycle.params.get("chamfer", 0)) > 0)
+            # a chamfered G92 (a Haas lathe's, M23) pulls out so on its own controller only: no word says it
             keep = cycle.kind in native and (not flagged or same_controller)
             if flagged and not keep:
                 own_nose.add(block.line)

@@ -32,7 +32,7 @@ from postproc.ir import (Block, CompoundMotion, CutterCompensation, CycleCall, D
 from postproc.lathe_sections import InProfile, LatheCycle
 from postproc.syntax import Syntax
 
-from .lathe_words import read_cycle
+from .lathe_words import defaults, read_cycle
 
 if TYPE_CHECKING:
     from postproc.cycles.turning.profile import Seg
@@ -105,6 +105,9 @@ class LatheCycleSyntax(Syntax):
         cycle = read_cycle(kind, block, ctx, code, start)
         if kind == "thread_multi" and ctx.state.extra.get(CHAMFER_OFF_KEY):
             cycle.params["chamfer"] = 0  # no angle out of the thread (Haas M24)
+        elif kind == "thread_single" and ctx.setup.controller.variant == "haas" \
+                and not ctx.state.extra.get(CHAMFER_OFF_KEY):
+            cycle.params["chamfer"] = int(defaults(ctx)["thread_chamfer"])  # Haas M23, its default (``_thread_chamfer_switch``)
         del block.sections["CycleCall"]
         block.add(cycle)
         return cycle, code
@@ -257,8 +260,17 @@ def _thread_chamfer_switch(block: Block, ctx: Context) -> None:
     """A code declared ``thread-chamfer-off`` turns the angled pull-out off for the multiple threading cycles
     after it, ``thread-chamfer-on`` back on with the set-up's ``threadChamfer`` (Haas M24 and M23, the
     Fanuc dialect's Haas lathe defaults; another family gets the code as a comment, the cycles carrying
-    their chamfer: ``postproc.cycles.lathe_lowering``). The single threading cycle, which the same codes
-    switch on Haas, is read without a chamfer either way."""
+    their chamfer: ``postproc.cycles.lathe_lowering``). On a Haas lathe the same codes switch the single
+    threading cycle's (G92) pull-out too, and M23 is in force at power-on [K: Haas lathe operator's manual,
+    M23 "Angle Out of Thread On": "M23 commands the control to perform a chamfer at the end of a thread
+    executed by G76 or G92", M24 none, each in force until the other, M23 the default at power-on and reset;
+    Settings 95 and 96 the chamfer's size (in leads) and angle; as known, not re-read here]: a Haas G92 pulls
+    out at 45 degrees over the set-up's ``threadChamfer`` tenths of the lead (Setting 95 = threadChamfer / 10
+    [?: its factory value 1.000 and Setting 96's 45 degrees are from a third-party page,
+    industrialmonitordirect.com "Fixing G76 threading tool pull-off groove on Haas lathe"; another angle is
+    not modelled]), as its G76 does, and square under M24. Fanuc T's own G92 chamfers only on a machine
+    signal [K: 0i-F, "Threading cycle (G92)": "a signal from the machine tool initiates thread chamfering"]:
+    read square."""
     function = block.sections.get("MachineFunction")
     if isinstance(function, MachineFunction) and function.action in THREAD_CHAMFER:
         ctx.state.extra[CHAMFER_OFF_KEY] = function.action == THREAD_CHAMFER[1]
