@@ -238,3 +238,67 @@ def test_a_copy_needs_no_radius_for_the_cycle_but_the_simulation_does() -> None:
     with pytest.raises(PostprocError) as err:
         controlled(G71, "fanuc", setup, "t.nc")
     assert "t.nc:5:" in str(err.value) and "radius register 2 no value" in str(err.value)
+
+
+# -- the finishing cycle under the same rules, towards controllers that write its moves ------------------------
+
+FINISH = """O2010
+G21 G18 G40 G99
+T0102
+G97 S500 M03
+G0 X62. Z2.
+G71 U2. R0.5
+G71 P10 Q20 U0.4 W0.1 F0.25
+N10 G0 X20.
+G1 Z-15.
+X40. Z-25.
+N20 G1 X60.
+G42 G0 X62. Z2.
+G70 P10 Q20
+G40 G0 X100. Z50.
+M30
+"""
+"""G71 without compensation, then G42 (no move: the tool is at A) and G70: its tip path by hand (the module
+docstring's G71 shape without the allowance): (2 - r, 10), (-15 - 2r + r sqrt2, 10), (-25, 20 - 2r + r sqrt2),
+(-25, 30 - r), then A itself."""
+
+
+def _finish_points() -> list[tuple[float, float]]:
+    return [(20.0, 2 - R), (20.0, -15 - 2 * R + R * S2), (2 * (20 - 2 * R + R * S2), -25.0), (2 * (30 - R), -25.0),
+            (62.0, 2.0)]
+
+
+@pytest.mark.parametrize("target", ["linuxcnc", "grblhal"])
+def test_g70_under_compensation_is_written_as_the_tip_path_elsewhere(target: str) -> None:
+    """LinuxCNC's own G42 would not cancel the offset for the return (and grblHAL has none): the stretch is
+    written as Fanuc's moves, which verify compares at zero deviation."""
+    from postproc.setup.groups import ControllerSettings
+    setup = _setup()
+    if target == "grblhal":
+        setup.controller = ControllerSettings(tool_table=True, spindle_sync=True)
+    out = io.StringIO()
+    translate(io.StringIO(FINISH), out, file="t.nc", source="fanuc", target=target, setup=setup)
+    text = out.getvalue()
+    assert "G42" not in text and "G41" not in text
+    lines = text.split("PROFILE LINE 11")[1].splitlines()[2:7]  # after the G42 block's move to A, written plain
+    for line, (x, z) in zip(lines, _finish_points()):
+        words = dict((w[0], float(w[1:])) for w in line.split() if w[0] in "XZ")
+        assert words["X"] == pytest.approx(x, abs=1e-6) and words["Z"] == pytest.approx(z, abs=1e-6), line
+    report = verify_lines(io.StringIO(FINISH), io.StringIO(text), file_in="t.nc", file_out="o.nc", source="fanuc",
+                          target=target, setup=setup)
+    assert report.ok and report.max_deviation == 0.0
+
+
+def test_rs274_runs_the_written_finishing_pass_as_simulated() -> None:
+    from tests.support.rs274 import available
+    from tests.test_lathe_rs274 import difference, theirs
+    if not available():
+        pytest.skip("the LinuxCNC interpreter rs274 is not installed")
+    out = io.StringIO()
+    translate(io.StringIO(FINISH), out, file="t.nc", source="fanuc", target="linuxcnc", setup=_setup())
+    ours = [{**m, "x": m["x"] / 2.0} for m in controlled(FINISH, "fanuc", _setup(), "t.nc")]
+    rs274 = [m for m in theirs(out.getvalue())]
+    for m in ours:
+        m.pop("line", None)
+    problem = difference([dict(m, f=0.0) for m in ours], [dict(m, f=0.0) for m in rs274])
+    assert problem is None, f"{problem}\n\n{out.getvalue()}"

@@ -137,6 +137,12 @@ class LatheCycleSyntax(Syntax):
         except ProgramError as err:
             raise ProgramError(f"{err.message}" if err.message.startswith(code) else f"{code}: {err.message}",
                                ctx.at(block)) from None
+        if cycle.kind == "turn_finish" and MODAL_NOSE_KEY in ctx.state.extra and moves \
+                and (moves[-1].kind != "rapid" or (moves[-1].x, moves[-1].z) != start):
+            raise UnsupportedError(f"{code}: under tool nose radius compensation the offset is temporarily cancelled "
+                                   "on the return to the start point [K], and this profile ends at it (no return): "
+                                   "where the tool then stands is not modelled; end the profile away from the start "
+                                   "point", ctx.at(block))
         if any(move.kind != "rapid" and move.feed == 0.0 for move in moves):
             # a cycle cuts at F as a G01 does: Fanuc alarms on F0 (PS0011 FEED ZERO, Fanuc T manual [K]; GSK
             # 980TDc alike [?]), rs274 and grbl refuse the expanded G1 (block_rules.ZERO_FEED) [V]

@@ -136,6 +136,7 @@ class Simulator(Moves):
         if compound is not None:
             cutter = self.cutter
             held: Suspended | None = None
+            back: Section | None = None
             if cutter is not None and cutter.side is not None:
                 if compound.term in cutter.rules.roughing_cycles and "CannedCycle" not in sections:
                     try:  # its moves are the tip's path to the offset shape (``CutterRules.roughing_cycles``)
@@ -145,9 +146,16 @@ class Simulator(Moves):
                 elif compound.term not in cutter.rules.profile_cycles or "CannedCycle" in sections:
                     raise ProgramError("a canned cycle with cutter compensation on cannot be run (cancel it first)",
                                        self._at(block))  # [V] rs274 "Cannot use canned cycles with cutter compensation on"
+                elif "CutterCompensation" not in sections:  # (the Haas form turns it on in the cycle's own block)
+                    held, back = self._finishing_under_compensation(block, compound.items)
             if motion is not None and motion.mode is not None:
                 self.motion(block, motion, False, emit)
             for item in compound.items:
+                if item is back and cutter is not None:
+                    try:
+                        cutter.cancel()
+                    except PostprocError as err:
+                        raise err.located(self._at(block)) from None
                 self.item(block, item, emit)
             if held is not None and cutter is not None:
                 cutter.resume(held)
@@ -316,6 +324,26 @@ class Simulator(Moves):
         tap that reverses back by itself (LinuxCNC ``G33.1``)."""
         after, self.after_tap = self.after_tap, None
         return after is not None and direction == after == self.spindle
+
+    def _finishing_under_compensation(self, block: Block, items: list[Section]) -> tuple[Suspended | None, Section]:
+        """G70 under the mode (``CutterRules.profile_cycles``): as a roughing cycle, the move to the start point
+        ends there uncompensated and the profile's first block starts compensation up; the offset is
+        temporarily cancelled for the return to the start point (the profile's last block ends square to
+        itself, type A's cancel), and the move after the cycle starts it up again [K: ``rules.FANUC_T``].
+        Returns what to resume after the cycle and its return move (the reader made it the last: a rapid)."""
+        cutter = self.cutter
+        assert cutter is not None
+        back = items[-1] if items else None
+        if not isinstance(back, Motion) or back.mode != "rapid":
+            raise UnsupportedError("a finishing cycle under tool nose radius compensation without its return to the "
+                                   "start point cannot be simulated", self._at(block))
+        try:
+            held = cutter.suspend()
+            if held is not None:
+                cutter.resume(held)
+        except PostprocError as err:
+            raise err.located(self._at(block)) from None
+        return held, back
 
     def item(self, block: Block, item: Section, emit: Callable[[Event], None]) -> None:
         """One item of a compound motion (absolute, program units)."""
