@@ -199,8 +199,7 @@ FANUC_B = CutterRules(
 # [K] Fanuc T multiple repetitive cycles (0i-D, "Stock removal in turning (G71)", its notes on tool nose
 #     radius compensation): G41/G42 is programmed before G70-G73 and G40 outside the finishing shape's
 #     blocks ns..nf (G40/G41/G42 inside them is an alarm); G70 then runs the shape compensated, with the
-#     temporary cancel below on the move to its start point and on its return (``Simulator.
-#     _finishing_under_compensation``, ``Resolver._compound``).
+#     temporary cancel below on the move to its start point and on its return (``compensation.cycle_entry``).
 # [K] Fanuc T 0i-D/0i-F operator's manual (B-64304EN, B-64604EN), the same notes: G71/G72 (and G73) under
 #     the mode rough to the finishing shape with tool nose radius compensation applied to it (the finishing
 #     allowance added to that shape); "the offset is temporarily canceled during movement to the start

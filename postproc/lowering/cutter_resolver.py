@@ -16,7 +16,8 @@ from ..errors import PostprocError, ProgramError, UnsupportedError
 from ..expr import Expr
 from ..ir import (Block, CompoundMotion, CutterCompensation, DataSetting, DistanceMode, Feed, FeedMode, Motion, Plane,
                   ProgramControl, Section, ToolChange, ToolLengthOffset, ToolSelect, Units, WorkOffset)
-from ..compensation.cutter_radius import CutterRadius
+from ..compensation.cutter_radius import CutterRadius, Suspended
+from ..compensation.cycle_entry import finishing_entry
 from ..compensation.dynamic import DynamicCutterCompensation
 from ..compensation.nose import TIPS, mirrored
 from ..compensation.rules import CutterRules
@@ -324,23 +325,21 @@ class Resolver(CompensatedMoves):
         the block without its moves waits as an event, then each move goes through the compensation as a
         block of its own (at the feed the cycle gives it), written as the compensated move. Under the mode
         set before the cycle (not ``own``) the offset is temporarily cancelled on the way to the start point
-        and on the return to it, as the simulation runs it (``Simulator._finishing_under_compensation``)."""
+        and on the return to it, as the simulation runs it (``compensation.cycle_entry``)."""
         del block.sections["CompoundMotion"]
         block.changed()
         if block.sections:
             self.cutter.event({"block": block})
             self._mirror(lambda cutter: cutter.event({}))
         items = compound.items
-        back = items[-1] if items and not own else None
-        held = None
-        if back is not None:
-            if not isinstance(back, Motion) or back.mode != "rapid":
-                raise Unresolvable("a finishing cycle under tool nose radius compensation without its return to the "
-                                   "start point cannot be resolved")
-            held = self.cutter.suspend()
-            if held is not None:
-                self.cutter.resume(held)
-            self._mirror(_suspended)
+        held: Suspended | None = None
+        back: Section | None = None
+        if not own:
+            held, back = finishing_entry(self.cutter, items)
+
+            def enter(cutter: CutterRadius) -> None:
+                finishing_entry(cutter, items)  # the target's rules: the same entry, or the trial's refusal
+            self._mirror(enter)
         feed: Feed | None = None
         for item in items:
             if item is back:
@@ -424,10 +423,3 @@ class Resolver(CompensatedMoves):
         self.last_register = register
         return register
 
-
-def _suspended(cutter: CutterRadius) -> None:
-    """A finishing cycle's start under the target's rules (a trial): the same temporary cancel, or its refusal
-    (rules that do not know it: the stretch is then written as the source's moves)."""
-    held = cutter.suspend()
-    if held is not None:
-        cutter.resume(held)

@@ -11,6 +11,7 @@ from mypy_extensions import mypyc_attr
 
 from ..block_rules import NO_FEED, needs_feed
 from ..compensation.cutter_radius import Suspended
+from ..compensation.cycle_entry import finishing_entry
 from ..compensation.rules import CutterRules
 from ..compensation.tool_length import AXIS as _AXIS
 from ..context import Context
@@ -147,7 +148,10 @@ class Simulator(Moves):
                     raise ProgramError("a canned cycle with cutter compensation on cannot be run (cancel it first)",
                                        self._at(block))  # [V] rs274 "Cannot use canned cycles with cutter compensation on"
                 elif "CutterCompensation" not in sections:  # (the Haas form turns it on in the cycle's own block)
-                    held, back = self._finishing_under_compensation(block, compound.items)
+                    try:
+                        held, back = finishing_entry(cutter, compound.items)
+                    except PostprocError as err:
+                        raise err.located(self._at(block)) from None
             if motion is not None and motion.mode is not None:
                 self.motion(block, motion, False, emit)
             for item in compound.items:
@@ -324,26 +328,6 @@ class Simulator(Moves):
         tap that reverses back by itself (LinuxCNC ``G33.1``)."""
         after, self.after_tap = self.after_tap, None
         return after is not None and direction == after == self.spindle
-
-    def _finishing_under_compensation(self, block: Block, items: list[Section]) -> tuple[Suspended | None, Section]:
-        """G70 under the mode (``CutterRules.profile_cycles``): as a roughing cycle, the move to the start point
-        ends there uncompensated and the profile's first block starts compensation up; the offset is
-        temporarily cancelled for the return to the start point (the profile's last block ends square to
-        itself, type A's cancel), and the move after the cycle starts it up again [K: ``rules.FANUC_T``].
-        Returns what to resume after the cycle and its return move (the reader made it the last: a rapid)."""
-        cutter = self.cutter
-        assert cutter is not None
-        back = items[-1] if items else None
-        if not isinstance(back, Motion) or back.mode != "rapid":
-            raise UnsupportedError("a finishing cycle under tool nose radius compensation without its return to the "
-                                   "start point cannot be simulated", self._at(block))
-        try:
-            held = cutter.suspend()
-            if held is not None:
-                cutter.resume(held)
-        except PostprocError as err:
-            raise err.located(self._at(block)) from None
-        return held, back
 
     def item(self, block: Block, item: Section, emit: Callable[[Event], None]) -> None:
         """One item of a compound motion (absolute, program units)."""
