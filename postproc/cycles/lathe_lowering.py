@@ -246,9 +246,10 @@ class _NoseCompensation:
                 return
             self.ctx.diagnostics.error(UnsupportedError(
                 f"a lathe cycle ({cycle.kind.replace('_', ' ')}) under tool nose radius compensation: how the "
-                "controller compensates inside it is not modelled (Fanuc T's G71/G72 type I are; type II pockets, "
-                "G73 and other controllers' rules are not in our sources), so its moves are not known; cancel "
-                "compensation before the cycle and turn it on for the finishing cycle",
+                "controller compensates inside it is not modelled (Fanuc T's stock removal cycles of type I are; "
+                "type II pockets, the pattern repeating cycle and other controllers' rules are not in our sources), "
+                "so its moves are not known; cancel compensation before the cycle and turn it on for the finishing "
+                "cycle",
                 self.ctx.at(block)))
 
 

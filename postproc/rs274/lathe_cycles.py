@@ -107,7 +107,8 @@ class LatheCycleSyntax(Syntax):
             cycle.params["chamfer"] = 0  # no angle out of the thread (Haas M24)
         elif kind == "thread_single" and ctx.setup.controller.variant == "haas" \
                 and not ctx.state.extra.get(CHAMFER_OFF_KEY):
-            cycle.params["chamfer"] = int(defaults(ctx)["thread_chamfer"])  # Haas M23, its default (``_thread_chamfer_switch``)
+            # Haas M23, its power-on default (``_thread_chamfer_switch``)
+            cycle.params["chamfer"] = int(defaults(ctx)["thread_chamfer"])
         del block.sections["CycleCall"]
         block.add(cycle)
         return cycle, code
