@@ -10,6 +10,8 @@ from typing import Any, Callable, Final, Iterable, Iterator
 from mypy_extensions import mypyc_attr
 
 from ..block_rules import NO_FEED, needs_feed
+from ..compensation.cutter_radius import Suspended
+from ..compensation.cycle_entry import finishing_entry
 from ..compensation.rules import CutterRules
 from ..compensation.tool_length import AXIS as _AXIS
 from ..context import Context
@@ -134,14 +136,35 @@ class Simulator(Moves):
             for axis, value in coords.axes.items():
                 self._coordinate(block, axis, value)
         if compound is not None:
-            if self.cutter is not None and self.cutter.side is not None \
-                    and (compound.term not in self.cutter.rules.profile_cycles or "CannedCycle" in sections):
-                raise ProgramError("a canned cycle with cutter compensation on cannot be run (cancel it first)",
-                                   self._at(block))  # [V] rs274 "Cannot use canned cycles with cutter compensation on"
+            cutter = self.cutter
+            held: Suspended | None = None
+            back: Section | None = None
+            if cutter is not None and cutter.side is not None:
+                if compound.term in cutter.rules.roughing_cycles and "CannedCycle" not in sections:
+                    try:  # its moves are the tip's path to the offset shape (``CutterRules.roughing_cycles``)
+                        held = cutter.suspend()
+                    except PostprocError as err:
+                        raise err.located(self._at(block)) from None
+                elif compound.term not in cutter.rules.profile_cycles or "CannedCycle" in sections:
+                    raise ProgramError("a canned cycle with cutter compensation on cannot be run (cancel it first)",
+                                       self._at(block))  # [V] rs274 "Cannot use canned cycles with cutter compensation on"
+                elif "CutterCompensation" not in sections:  # (the Haas form turns it on in the cycle's own block)
+                    try:
+                        held, back = finishing_entry(cutter, compound.items)
+                    except PostprocError as err:
+                        raise err.located(self._at(block)) from None
             if motion is not None and motion.mode is not None:
                 self.motion(block, motion, False, emit)
             for item in compound.items:
+                if item is back and cutter is not None:
+                    try:
+                        cutter.cancel()
+                    except PostprocError as err:
+                        raise err.located(self._at(block)) from None
                 self.item(block, item, emit)
+            if held is not None and cutter is not None:
+                cutter.resume(held)
+                self._begin()
         elif motion is not None:
             if motion.mode is None and "CannedCycle" not in sections:
                 raise UnsupportedError("a canned-cycle repeat cannot be simulated: the cycle was not "
