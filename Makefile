@@ -16,21 +16,25 @@ NATIVE := $(VENV)/.compiled
 # venv, setuptools' warning that an editable install is editable would print a box per package: silenced.
 BUILD_REQUIRES = $(shell $(PYTHON) -c 'import tomllib; print(" ".join(chr(39) + r + chr(39) for r in tomllib.load(open("pyproject.toml", "rb"))["build-system"]["requires"]))')
 
+# Each step says what it does and, when done, how long it took (wall seconds: on a loaded machine CPU
+# seconds are the figure to compare, docs/compiled.md).
 $(STAMP): pyproject.toml setup.py $(PLUGINS)
-	@echo "make: [1/2] creating $(VENV): postproc, its plugins, their dependencies and the build tools (about a minute)"
-	$(PYTHON) -m venv $(VENV)
-	$(BIN)/pip install --quiet --upgrade pip
-	$(BIN)/pip install --quiet $(BUILD_REQUIRES)
-	POSTPROC_PURE=1 PYTHONWARNINGS=ignore::UserWarning $(BIN)/pip install --quiet --no-build-isolation -e '.[test,render,dask]' $(foreach p,$(PLUGINS),-e $(dir $(p)))
+	@echo "make: [1/3] creating $(VENV): postproc, its plugins, their dependencies and the build tools (about a minute)"
+	@start=$$(date +%s) && set -x && \
+	$(PYTHON) -m venv $(VENV) && \
+	$(BIN)/pip install --quiet --upgrade pip && \
+	$(BIN)/pip install --quiet $(BUILD_REQUIRES) && \
+	POSTPROC_PURE=1 PYTHONWARNINGS=ignore::UserWarning $(BIN)/pip install --quiet --no-build-isolation -e '.[test,render,dask]' $(foreach p,$(PLUGINS),-e $(dir $(p))) && \
+	{ set +x; } 2>/dev/null && echo "make: [1/3] $(VENV) made in $$(( $$(date +%s) - start )) s"
 	touch $(STAMP)
 
 # Compiles the hot path (pure Python where there is no C compiler), again when a hot module is edited
 # (meanwhile postproc runs it as pure Python: postproc --version says which). mypyc type-checks and writes
 # a C file a module (about a minute on one core), then the C compiler runs on every core (setup.py).
 $(NATIVE): $(STAMP) $(HOT)
-	@echo "make: [2/2] compiling the $(words $(HOT)) hot modules with mypyc: type-checking, then C on $$(nproc) cores (a few minutes; postproc already runs, as pure Python)"
+	@echo "make: [2/3] compiling the $(words $(HOT)) hot modules with mypyc: type-checking, then C on $$(nproc) cores (a few minutes; postproc already runs, as pure Python)"
 	@start=$$(date +%s); PYTHONWARNINGS=ignore::UserWarning $(BIN)/pip install --quiet --no-deps --no-build-isolation -e . && \
-	  echo "make: compiled in $$(( $$(date +%s) - start )) s: $$($(BIN)/postproc --version)"
+	  echo "make: [2/3] compiled in $$(( $$(date +%s) - start )) s: $$($(BIN)/postproc --version)"
 	touch $(NATIVE)
 
 # Byte-compile the editable packages (core, dialects, plugins) once, so that a start does not compile
@@ -38,7 +42,9 @@ $(NATIVE): $(STAMP) $(HOT)
 # PYTHONDONTWRITEBYTECODE is set no run writes a .pyc. compileall writes them even then, and skips the
 # files whose .pyc is up to date: cheap to repeat after an edit (make test does).
 compile: $(NATIVE)
-	$(BIN)/python -m compileall -q postproc dialects $(foreach p,$(PLUGINS),$(dir $(p)))
+	@echo "make: [3/3] byte-compiling the core, the dialects and the plugins (what is up to date is skipped)"
+	@start=$$(date +%s) && $(BIN)/python -m compileall -q postproc dialects $(foreach p,$(PLUGINS),$(dir $(p))) && \
+	  echo "make: [3/3] byte code written in $$(( $$(date +%s) - start )) s"
 
 install: compile
 
@@ -48,13 +54,17 @@ run: install
 # The whole suite against the compiled hot path, then against the pure-Python fallback (skipped where
 # nothing was compiled: the first run was pure already). Each run spreads its tests over every core
 # (pytest-xdist; JOBS=1 runs them in one process); a worker idle at the end takes tests from a busy one.
+# A plugin's own suite (plugins/*/tests: the conformance suite with the settings of its pyproject.toml,
+# about 8 s of CPU for the example plugin) runs from its folder, after the core's.
 JOBS ?= auto
-PYTEST := $(BIN)/python -m pytest -n $(JOBS) --dist worksteal
+PYTEST := $(CURDIR)/$(BIN)/python -m pytest -n $(JOBS) --dist worksteal
+PLUGIN_TESTS := $(patsubst %/tests/,%,$(wildcard plugins/*/tests/))
 test: install
 	$(BIN)/postproc --version
-	$(PYTEST)
+	$(PYTEST) && for p in $(PLUGIN_TESTS); do (cd $$p && $(PYTEST)) || exit 1; done
 	if [ -f postproc/_compiled/manifest.txt ]; then \
-	  POSTPROC_PURE=1 $(BIN)/postproc --version && POSTPROC_PURE=1 $(PYTEST); fi
+	  POSTPROC_PURE=1 $(BIN)/postproc --version && POSTPROC_PURE=1 $(PYTEST) && \
+	  for p in $(PLUGIN_TESTS); do (cd $$p && POSTPROC_PURE=1 $(PYTEST)) || exit 1; done; fi
 
 bench: compile
 	$(BIN)/pip install --quiet -r benchmarks/requirements.txt

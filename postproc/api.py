@@ -66,7 +66,7 @@ def translate(lines: Iterable[str], out: TextIO, *, file: str, source: str, targ
             ctx.on_unsupported = on_unsupported
             ctx.keep_check = _keep_check(src, dst, ctx, registry, options)
             ctx.run_data[RUN_CHECK] = _run_check(src, ctx)
-            ctx.run_data[TARGET_OMITS_VACANT] = _omits_vacant_words(dst, setup)
+            ctx.run_data[TARGET_OMITS_VACANT] = _OmitsVacantWords(dst, setup)
             ctx.run_data[EVALUATE_KEY] = options.transform is not None
             ctx.run_data[POINT_BY_POINT_KEY] = options.active()
             target_rule = dst.arc_end_rule(setup)
@@ -126,8 +126,9 @@ def _keep_check(src: type[Dialect], dst: type[Dialect], ctx: Context, registry: 
 
     program = next((step for step in src.pipeline(ctx.setup).steps if isinstance(step, ProgramSyntax)), None)
     frame_evaluated = dst.NAME != src.NAME or options.transform is not None
-    theirs = None if dst.NAME == src.NAME else next(
-        (step for step in dst.pipeline(ctx.setup).steps if isinstance(step, ProgramSyntax)), None)
+    theirs: list[ProgramSyntax | None] = []
+    """The target's program step, found when a program that computes is first judged: building the
+    target's reading pipeline imports its readers and syntax objects, which a plain translation never uses."""
 
     def reason(body: list[Block]) -> str | None:
         if not dst.PROGRAMS:
@@ -146,7 +147,10 @@ def _keep_check(src: type[Dialect], dst: type[Dialect], ctx: Context, registry: 
             if read is not None:
                 return f"it reads its coordinate frame ({read}), which is evaluated into the coordinates here"
         ours_made = None if program is None else type(program).VARIABLES
-        theirs_made = None if theirs is None else type(theirs).VARIABLES
+        if not theirs:
+            theirs.append(None if dst.NAME == src.NAME else next(
+                (step for step in dst.pipeline(ctx.setup).steps if isinstance(step, ProgramSyntax)), None))
+        theirs_made = None if theirs[0] is None else type(theirs[0]).VARIABLES
         if ours_made is not None and theirs_made is not None:
             foreign = foreign_number(body, ours_made, theirs_made, (src.NAME, dst.NAME))
             if foreign is not None:
@@ -218,15 +222,25 @@ def _run_check(src: type[Dialect], ctx: Context) -> Callable[[Iterable[Block]], 
     return later_steps
 
 
-def _omits_vacant_words(dialect: type[Dialect], setup: MachineSetup) -> bool:
+class _OmitsVacantWords:
     """Whether ``dialect``'s controller omits a word whose value is vacant (its interpreter step says
-    so); a dialect without variables never receives one."""
-    if not dialect.PROGRAMS:
-        return True
-    for step in dialect.pipeline(setup).steps:
-        if isinstance(step, ProgramSyntax):
-            return step.OMITS_VACANT_WORDS
-    return False
+    so; a dialect without variables never receives one), as the truth of this object: found when the
+    reading first asks (``TARGET_OMITS_VACANT``: a program that computes a word which may be vacant), since
+    building the target's reading pipeline imports its readers and syntax objects, which a plain
+    translation never uses (tests/test_startup_imports.py)."""
+
+    __slots__ = ("dialect", "setup", "answer")
+
+    def __init__(self, dialect: type[Dialect], setup: MachineSetup) -> None:
+        self.dialect = dialect
+        self.setup = setup
+        self.answer: bool | None = None if dialect.PROGRAMS else True
+
+    def __bool__(self) -> bool:
+        if self.answer is None:
+            self.answer = next((step.OMITS_VACANT_WORDS for step in self.dialect.pipeline(self.setup).steps
+                                if isinstance(step, ProgramSyntax)), False)
+        return self.answer
 
 
 def _first(diagnostics: Diagnostics) -> str:

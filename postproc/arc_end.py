@@ -14,7 +14,7 @@ The facts behind each rule are in the dialect (or family base) that declares it,
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Final
 
 from .arc_paths import ArcPath, deviation
@@ -74,6 +74,16 @@ class ArcEndRule:
         """The rule as plain data (the capability table, ``postproc dialects``)."""
         return {"mm": self.metric, "inch": self.inch, "relative": self.relative, "ceiling": self.ceiling,
                 "of_start": self.of_start, "runs": self.runs, "of_centre_shift": self.of_centre_shift}
+
+    def with_machine(self, limit: float | None, share: float | None) -> "ArcEndRule":
+        """This rule with a machine's own parameters where its set-up gives them (a controller whose limits
+        are machine parameters: ``Dialect.arc_end_rule``): ``limit`` the absolute limit in mm, whatever the
+        program's units (the inch limit follows from it), ``share`` the relative one; None keeps this rule's."""
+        if limit is None and share is None:
+            return self
+        metric = self.metric if limit is None else limit
+        return replace(self, metric=metric, inch=metric / MM_PER_INCH,
+                       relative=self.relative if share is None else share)
 
     def covers(self, other: "ArcEndRule") -> bool:
         """Whether every arc ``other`` accepts, in either units, this rule accepts too (sufficient, not

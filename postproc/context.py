@@ -27,6 +27,13 @@ NOT_SET: Any = object()
 """A ``Context`` attribute a step has not initialised yet."""
 
 
+ASSUMED_START: Final = "simulation.assumed_start"
+"""``Context.run_data`` key, set by a simulation (``postproc.simulate.toolpath``): the run models a machine that
+starts where the set-up says, so a read of the current position before the program places an axis is that
+start, as the simulated moves assume (``postproc.frames.parameters``); a translation leaves it unset (the
+machine's own point is unknown to it)."""
+
+
 @mypyc_attr(allow_interpreted_subclasses=True)
 class BlockLane(abc.ABC):
     """Reads the commonest blocks of a word block syntax, as its general path reads them."""

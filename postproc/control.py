@@ -21,7 +21,7 @@ expression: ``<Goto><Target>E</Target><Cond>E</Cond></Goto>``, ``<While label="1
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any, ClassVar, Iterator
+from typing import TYPE_CHECKING, Any, ClassVar, Final, Iterator
 
 from .errors import ConfigError
 from .expr import Expr, Var, expr_from_xml
@@ -31,11 +31,11 @@ from .xmlio import XAttr, XFactory, lxml_etree, where
 if TYPE_CHECKING:  # annotations only: lxml is imported where XML is read or written (postproc.xmlio)
     from lxml import etree
 
-CONTROL = "Control"
+CONTROL: Final = "Control"
 """Section key of a block's control statement (one per block)."""
-ASSIGN = "Assign"
+ASSIGN: Final = "Assign"
 """Section key of a block's assignments."""
-LABEL = "Label"
+LABEL: Final = "Label"
 """Section key of a block's named jump label."""
 CALL_KINDS = frozenset({"sub", "macro"})
 """``sub``: the subprogram shares the caller's local variables (Fanuc M98); ``macro``: it gets a new

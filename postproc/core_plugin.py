@@ -43,10 +43,12 @@ def postproc_register_xml(factory: XFactory) -> None:
     register_expressions(factory)
     register_frames(factory)
     register_control(factory)
-    from .rs274.lathe_cycles import LatheCycleSyntax
     from .lowering.sequences import GeneratedText
-    for cls in (Pipeline, MachineSetup, ModalStateSyntax, ProgramSyntax, LatheCycleSyntax, GeneratedText, RigidTap):
+    for cls in (Pipeline, MachineSetup, ModalStateSyntax, ProgramSyntax, GeneratedText, RigidTap):
         cls.reg(factory)
+    # A lathe's cycle reader (with the cycles' words and the nose compensation it names), imported when a
+    # pipeline names it: a mill's run never does.
+    factory.register_lazy("LatheCycleSyntax", "postproc.rs274.lathe_cycles:LatheCycleSyntax")
     cycles.register(factory)
     patterns.register(factory)
 

@@ -145,6 +145,9 @@ class Dialect:
     """The controller's tap cycle is rigid by itself, its pitch a parameter (SINUMERIK ``CYCLE84``): another
     family's rigid-tapping code is left out (``postproc.cycles.rigid_tap_lowering``), the tap cycles after it
     written as that cycle or refused."""
+    RIGID_TAP_LACK: ClassVar[str] = ""
+    """Why the controller gets no synchronised tap (with its source), added where one is refused
+    (``postproc.cycles.rigid_tap_lowering``); empty: none said."""
     RIGID_TAP_CODE: ClassVar[str] = ""
     """The machine code that makes the tap cycles after it rigid (Fanuc ``M29 S..``): a synchronised tap of
     another family is written as that code and a tap cycle (``postproc.synchronised_tap``); '' for none."""
@@ -192,6 +195,14 @@ class Dialect:
     False: the new length applies with the next move of any axis (the simulation's Fanuc model); a
     translation across the two rules moves or completes the change (``postproc.lowering.length_timing``,
     ``postproc.isg_family.tool_data``)."""
+    POSITION_READS: ClassVar[Mapping[str, int]] = {}
+    """Per axis, the numbered parameter a block reads the current position of that axis with (program units,
+    every offset applied, read when the block is read: before the block's own tool offset change), which the
+    target's writer spells as a word value (LinuxCNC's ``#5420``-``#5428``). A lowering writes it where a
+    move must keep an axis the program never placed (``postproc.lowering.length_timing``); empty: none."""
+    POSITION_READ_RADIUS: ClassVar[bool] = False
+    """The X read is a radius in diameter mode while an X word is a diameter (LinuxCNC: ``#5420`` is
+    ``current_x``, the radius, and an X word is halved under G7): the read is then doubled."""
     TAPE_MARKS: ClassVar[bool] = False
     """A ``%`` line may open and close a program (Fanuc, GSK, LinuxCNC): ``<Output tapeMarks="always">``."""
     LEADER_TITLE: ClassVar[bool] = False

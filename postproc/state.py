@@ -18,6 +18,9 @@ from mypy_extensions import mypyc_attr
 from .expr import Expr
 
 MM_PER_INCH: Final = 25.4
+LEFT_START: Final = "state.left_start"
+"""``ModalState.extra`` key: a move the reading cannot place (a reference return, a machine-coordinate move)
+has taken the machine from its start (``postproc.frames.parameters``' reads at the start)."""
 
 PLANE_AXES = {"XY": ("X", "Y", "Z"), "ZX": ("Z", "X", "Y"), "YZ": ("Y", "Z", "X")}
 """Per plane: first and second plane axis, then the axis normal to the plane (the drilling axis)."""

@@ -143,37 +143,33 @@ T0102
 
 
 def test_finishing_cycle_runs_its_profile_compensated_by_hand() -> None:
-    """G42 before G70 and G40 after it [K: Fanuc T, see ``rules.FANUC_T``]: G70 runs ns..nf and the rapid back
-    to A = (2, 31) as compensated moves. The G42 block does not move, so the profile's first move (to
-    (2, 10)) starts compensation, ending square to the turn after it: (2, 10 + r). The turn meets the taper
-    as in the module docstring; the taper meets the face (+X, nose centre at Z = -25 + r) at X = -5 + r sqrt2
-    - (-25 + r); the face meets the return to A (direction (27, 1)) at Z = -25 + r, X = 30 - r 27/L
-    + (r + r/L)/27 (L = sqrt(730), the return's offset line through (-25, 30) + r (1, -27)/L); the return
-    ends square to itself at A: A + r (1, -27)/L. Tip 3 moves each by (-r, -r)."""
-    length = math.sqrt(730.0)
-    n = (1.0 / length, -27.0 / length)
-    offset_start = (-25.0 + R * n[0], 30.0 + R * n[1])
-    corner = (-25.0 + R, offset_start[1] + (-25.0 + R - offset_start[0]) / 27.0)
+    """G42 before G70 and G40 after it [K: Fanuc T, see ``rules.FANUC_T``]: G70 runs ns..nf compensated, the
+    offset temporarily cancelled on the return to A = (2, 31). The G42 block does not move, so the profile's
+    first move (to (2, 10)) starts compensation, ending square to the turn after it: (2, 10 + r). The turn
+    meets the taper as in the module docstring; the taper meets the face (+X, nose centre at Z = -25 + r) at
+    X = -5 + r sqrt2 - (-25 + r); the face, the last compensated block, ends square to itself: (-25 + r, 30)
+    (right of +X is +Z). Tip 3 moves each by (-r, -r). The return ends with the tip on A itself (X62 Z2)."""
     centres = [
         (2.0, 10.0 + R),
         (-15.0 - R + R * math.sqrt(2.0), 10.0 + R),
         (-25.0 + R, -5.0 + R * math.sqrt(2.0) + 25.0 - R),
-        corner,
-        (2.0 + R * n[0], 31.0 + R * n[1]),
+        (-25.0 + R, 30.0),
     ]
     moves = [m for m in _controlled(CYCLE, "fanuc", _setup(3)) if m["line"] == 12]
     assert [m["move"] for m in moves] == ["rapid", "feed", "feed", "feed", "rapid"]
     for move, (z, x) in zip(moves, centres):
         assert move["z"] == pytest.approx(z - R, abs=1e-6) and move["x"] == pytest.approx(2 * (x - R), abs=1e-6)
+    assert (moves[-1]["x"], moves[-1]["z"]) == (62, 2)
 
 
-def test_roughing_cycle_under_compensation_is_refused() -> None:
-    """How the roughing passes are compensated is not modelled: refused at the cycle, not run uncompensated."""
-    text = CYCLE.replace("G0 X62. Z2.\nG71 U2.", "G42 G0 X62. Z2.\nG71 U2.").replace("G42 G0 X62. Z2.\nG70",
-                                                                                 "G70")
+def test_pattern_repeating_cycle_under_compensation_is_refused() -> None:
+    """G73's passes under compensation are not in our sources [?] (G71/G72 type I are modelled:
+    ``tests/test_fanuc_nose_roughing.py``): refused at the cycle, not run uncompensated."""
+    text = CYCLE.replace("G0 X62. Z2.\nG71 U2. R0.5\nG71 P10 Q20", "G42 G0 X62. Z2.\nG73 U2. W1. R3\nG73 P10 Q20") \
+        .replace("G42 G0 X62. Z2.\nG70", "G70")
     with pytest.raises(PostprocError) as err:
         _controlled(text, "fanuc", _setup(3))
-    assert "t.nc:6:1: error: a lathe cycle (turn rough) under tool nose radius compensation" in str(err.value)
+    assert "t.nc:6:1: error: a lathe cycle (pattern repeat) under tool nose radius compensation" in str(err.value)
 
 
 # -- translations ------------------------------------------------------------------------------------------

@@ -19,6 +19,7 @@ from postproc.plugins import default_registry
 from postproc.setup.machine_setup import MachineSetup
 from postproc.simulate.verify import verify_lines
 from postproc.rs274.order_of_execution import stops_after_motion
+import postproc_grbl
 from postproc_grbl import Grbl, drop_resolved_tool_data, resolve_cutter_compensation, write_tool_lengths
 from postproc.rs274.lean_controller import (
     cancel_length_offset_first, close_full_circles, lower_for_lean_controller, pause_for_tool_change,
@@ -36,7 +37,7 @@ def fanuc_blocks(text: str) -> tuple[list[Block], Diagnostics]:
 
 def test_grbl_declares_its_steps() -> None:
     assert Grbl.LOWERING == (write_tool_lengths, resolve_cutter_compensation, drop_resolved_tool_data,
-                             lower_for_lean_controller)
+                             postproc_grbl.lower_for_lean_controller)  # lean_controller's, imported when first run
     assert "LOWERING" not in Grbl.capabilities()
 
 

@@ -55,17 +55,14 @@ def test_a_written_radius_replaces_the_set_ups() -> None:
 def test_the_finishing_cycle_takes_the_written_radius() -> None:
     """G42 before G70 over the profile (``test_fanuc_nose.test_finishing_cycle_runs_its_profile_compensated_by_hand``
     derives the nose centres; tip 3 moves each by (-r, -r)), the radius and tip from ``G10 P10002 R0.8 Q3``."""
-    length = math.sqrt(730.0)
-    n = (1.0 / length, -27.0 / length)
-    offset_start = (-25.0 + R * n[0], 30.0 + R * n[1])
-    corner = (-25.0 + R, offset_start[1] + (-25.0 + R - offset_start[0]) / 27.0)
     centres = [(2.0, 10.0 + R), (-15.0 - R + R * math.sqrt(2.0), 10.0 + R),
-               (-25.0 + R, -5.0 + R * math.sqrt(2.0) + 25.0 - R), corner, (2.0 + R * n[0], 31.0 + R * n[1])]
+               (-25.0 + R, -5.0 + R * math.sqrt(2.0) + 25.0 - R), (-25.0 + R, 30.0)]
     text = CYCLE.replace("T0102\n", f"G10 P10002 R{R} Q3\nT0102\n")
     moves = [m for m in controlled(text, "fanuc", _bare(), "t.nc") if m["line"] == 13]
     assert [m["move"] for m in moves] == ["rapid", "feed", "feed", "feed", "rapid"]
     for move, (z, x) in zip(moves, centres):
         assert move["z"] == pytest.approx(z - R, abs=1e-6) and move["x"] == pytest.approx(2 * (x - R), abs=1e-6)
+    assert (moves[-1]["x"], moves[-1]["z"]) == (62, 2)  # the return, the offset temporarily cancelled
 
 
 OFFSETS = "O0001\nG21 G18 G98\nG10 P10002 X4. Z-1.5\nG10 P2 U0.2 W-0.1\nG0 X100. Z50.\nT0202\nG0 X50. Z5.\n" \

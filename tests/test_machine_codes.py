@@ -100,7 +100,17 @@ def test_rigid_tapping_is_refused_towards_another_family_even_with_warn(target: 
         f"this translation writes no spindle-synchronised tap for {target}, and fed without the spindle in step a "
         "tap breaks: refused, even with --on-unsupported warn",
         f"t.nc:3:1: error: a rigid (spindle-synchronised) tap: this translation writes no synchronised tap for "
-        f"{target}, and a tap fed without the spindle in step breaks: refused, even with --on-unsupported warn"]
+        f"{target} ({LACKS[target]}), and a tap fed without the spindle in step breaks: refused, even with "
+        "--on-unsupported warn"]
+
+
+LACKS = {
+    "grbl": "grbl 1.1 reads no spindle position: no G33, G33.1 or tap cycle [K: grbl wiki, Commands]",
+    "fagor": "the 8070's G84 R word selecting rigid tapping and its G63 rigid tap are [?]: their words and how the "
+             "feed follows the pitch are not confirmed from a Fagor manual, DIALECTS.md 2.3",
+    "mach3": "its G84 is the floating tap holder's cycle and it has no rigid tap code [V: Dynomotion's Mach3 plugin "
+             "help, Mach3 Rigid Tapping]"}
+"""Each target's reason, with its source, as the refusal names it (``Dialect.RIGID_TAP_LACK``)."""
 
 
 @pytest.mark.parametrize("mode", ["warn", "error"])

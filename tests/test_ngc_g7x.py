@@ -204,6 +204,62 @@ def test_a_profile_with_computed_words_takes_the_parameters_where_the_cycle_runs
     assert difference(ours, theirs) is None
 
 
+POSITIONAL = """G21 G18 G{mode} G90
+F100
+O100 SUB
+G1 X[#<_x>-{a}] Z[#<_z>-4]
+G1 Z[#<_z>-3]
+G1 X[#<_x>+{b}]
+G1 X[#<_x>+{c}] Z[#5422-4]
+O100 ENDSUB
+G0 X{far} Z9
+G71 Q100 X{x} Z5 D0 I1 R0.5
+G70 Q100 X{x} Z5
+M2
+"""
+"""A profile stepped by the current position (as LinuxCNC's ``nc_files/lathe_g7x_face_boring.ngc``, issue 26's
+held-out set): each word reads the point the profile's moves so far reach, from the cycle's X and Z, not where the
+tool stood before the cycle (X{far} Z9)."""
+
+
+@needs_rs274
+@pytest.mark.parametrize("mode", [8, 7])
+def test_a_profile_reading_the_current_position_reads_its_own_point(mode: int) -> None:
+    """rs274 (2.9.0~pre1) cuts the G8 profile from the cycle's point X12 Z5 to X2 Z1, Z-2, X6, X12 Z-6 (hand-derived
+    from the words, the position read as the profile's point); under G7, where the cycle's X is the diameter 24,
+    ``#<_x>`` reads the radius (12 at the cycle's point), so words that add diameters to the radii read (X[#<_x>-8]
+    is the diameter 4, radius 2) cut the same. The reading cuts rs274's moves in both."""
+    if mode == 8:
+        text = POSITIONAL.format(mode=8, a=10, b=4, c=6, far=40, x=12)
+        setup = RADIUS
+    else:  # the radius 12 read: X[12-8] = 4 (radius 2); 2 read: X[2+4] = 6 (radius 3); 3 read: X[3+21] = 24
+        text = POSITIONAL.format(mode=7, a=8, b=4, c=21, far=80, x=24)
+        setup = MachineSetup(input=InputSettings(machine_type="lathe", x_programming="diameter"))
+    theirs = rs274_moves(text)
+    ours = simulated(text, setup)
+    if mode == 7:
+        ours = [{k: float(v) / 2.0 if k in ("x", "cx") else v for k, v in e.items()} for e in ours]
+    assert min(float(m["z"]) for m in theirs) == pytest.approx(-6.0)
+    assert difference(ours, theirs) is None
+    if mode == 8:
+        assert {(float(m["x"]), float(m["z"])) for m in theirs} >= {(2.0, 1.0), (2.0, -2.0), (6.0, -2.0), (12.0, -6.0)}
+
+
+@pytest.mark.parametrize("statement", ["O101 REPEAT [2]\nG1 X[#<_x>+1] Z[#<_z>-1]\nO101 ENDREPEAT",
+                                       "#<_step> = 1\nG1 X[#<_x>+#<_step>] Z-2",
+                                       "O101 IF [1 GT 0]\nG1 X3 Z-2\nO101 ENDIF"])
+def test_a_control_statement_in_a_profile_is_refused_not_read_past(statement: str) -> None:
+    """LinuxCNC runs a profile's o-word loops, branches and assignments as it reads the profile (rs274 cuts
+    ``nc_files/lathe_g7x_face_boring.ngc``'s REPEAT [3] three times); the reading took a loop's moves once. Now
+    refused, located at the cycle and naming the statement's line."""
+    text = f"G18 G8 F100\nO100 SUB\nG1 X1 Z0\n{statement}\nG1 X6 Z-4\nO100 ENDSUB\nG0 X6 Z1\nG70 Q100 X6 Z1\nM2\n"
+    with pytest.raises((PostprocError, ErrorList)) as err:
+        simulated(text)
+    assert "a control statement or parameter assignment in a profile is not modelled" in str(err.value)
+    cycle_line = 7 + statement.count("\n") + 1
+    assert f"prog.ngc:{cycle_line}:" in str(err.value) and "profile, line 4" in str(err.value)
+
+
 @needs_rs274
 def test_demo_without_its_compensation_matches_rs274() -> None:
     """LinuxCNC's own nc_files/lathe_g70_71_demo.ngc (G71.1, G71.2, G70 over a profile with arcs and a fillet)

@@ -41,6 +41,15 @@ ONLY_FOR_XML = ("lxml",)
 OTHER_DIALECTS = ("dialects.fagor", "dialects.gsk", "dialects.isg", "postproc_grbl", "postproc_grblhal",
                   "postproc_linuxcnc", "postproc_mach3")
 """Every installed dialect but Fanuc (the built-ins and the plugins in plugins/)."""
+NOT_FOR_A_PLAIN_TRANSLATION = ("postproc.transforms.carry", "postproc.transforms.units", "postproc.rs274.lathe_cycles",
+                               "postproc.cycles.turning", "postproc_linuxcnc.block_syntax", "postproc_linuxcnc.program",
+                               "postproc.rs274.macro_jumps", "postproc.rs274.lean_controller")
+"""What a plain mill translation to LinuxCNC has no use for: the program transforms' work (``--transform``,
+``--units``: ``postproc.transforms.apply``), a lathe's cycle reader and turning cycles (``LatheCycleSyntax`` is
+registered lazily), the target's reading side (its block syntax and program step: the keep check and
+``TARGET_OMITS_VACANT`` build the target's pipeline when a program that computes first asks, ``postproc.api``),
+and the lowering steps of other targets that registering their dialects named (Fanuc's ``number_jumps``, grbl's
+and grblHAL's lean-controller steps: each imported when a translation first lowers for that target)."""
 REGISTERED_ONLY = ("codes", "cycle_words", "active_comments")
 """What registering a dialect imports besides its package: its code table and cycle words (the capability
 table names them) and LinuxCNC's generic lowering step."""
@@ -77,6 +86,34 @@ def test_a_one_line_translation_loads_nothing_it_does_not_use(tmp_path: Path, on
     modules = modules_after(tmp_path, "translate", str(one_line), "--from", "fanuc", "--to", "linuxcnc")
     assert "postproc.api" in modules and "postproc_linuxcnc.writer" in modules  # the probe saw the run
     assert [name for name in NEVER_BY_DEFAULT if loaded(modules, name)] == []
+
+
+def test_a_plain_translation_loads_no_transform_lathe_or_target_reader(tmp_path: Path, one_line: Path) -> None:
+    modules = modules_after(tmp_path, "translate", str(one_line), "--from", "fanuc", "--to", "linuxcnc")
+    assert "postproc.api" in modules and "postproc_linuxcnc.writer" in modules  # the probe saw the run
+    assert [name for name in NOT_FOR_A_PLAIN_TRANSLATION if loaded(modules, name)] == []
+
+
+@pytest.mark.parametrize("program, target, options, wanted", [
+    ("#1=2.\nG0 X#1 Y[#1+1]\nM30\n", "linuxcnc", (), ("postproc_linuxcnc.block_syntax", "postproc_linuxcnc.program")),
+    ("G0 X1. Y2.\nM30\n", "linuxcnc", ("--units", "inch"), ("postproc.transforms.units",)),
+    ("G0 X1. Y2.\nM30\n", "linuxcnc", ("--transform", "translate 1,2"), ("postproc.transforms.carry",)),
+    ("G0 X20. Z2. S500 M3\nG1 Z-10. F0.2\nM30\n", "linuxcnc",
+     ("--machine", str(ROOT / "examples/setups/fanuc_0i_tf.xml")), ("postproc.rs274.lathe_cycles",)),
+    ("G0 X1. Y2.\nM30\n", "fanuc", (), ("postproc.rs274.macro_jumps",)),
+    ("G0 X1. Y2.\nM30\n", "grbl", (), ("postproc.rs274.lean_controller",)),
+    ("G0 X1. Y2.\nM30\n", "grblhal", (), ("postproc.rs274.lean_controller",)),
+])
+def test_what_a_plain_translation_leaves_out_is_loaded_where_used(tmp_path: Path, program: str, target: str,
+                                                                   options: tuple[str, ...],
+                                                                   wanted: tuple[str, ...]) -> None:
+    """The other side of ``NOT_FOR_A_PLAIN_TRANSLATION``: a program that computes (kept symbolic for LinuxCNC,
+    so the keep check reads the target's rules), ``--units``, ``--transform``, a lathe set-up and a translation
+    to the target whose lowering step it is load them."""
+    path = tmp_path / "program.nc"
+    path.write_text(program)
+    modules = modules_after(tmp_path, "translate", str(path), "--from", "fanuc", "--to", target, *options)
+    assert [name for name in wanted if name not in modules] == []
 
 
 def test_a_second_run_finds_the_plugins_without_importlib_metadata(tmp_path: Path, one_line: Path) -> None:

@@ -9,7 +9,6 @@ What DIALECTS.md marks uncertain for the 8070 [?] is kept verbatim (``reader``).
 
 from __future__ import annotations
 
-from dataclasses import replace
 from typing import TYPE_CHECKING, Callable, Iterator
 
 from postproc.context import Context
@@ -52,6 +51,9 @@ def resolve_radius_where_d_cannot(blocks: Iterator[Block], ctx: Context, target:
 
 class Fagor(Dialect):
     NAME = "fagor"
+    RIGID_TAP_LACK = ("the 8070's G84 R word selecting rigid tapping and its G63 rigid tap are [?]: their words and "
+                      "how the feed follows the pitch are not confirmed from a Fagor manual, DIALECTS.md 2.3")
+    """``codes.py``: a rigid tap is refused by name until the 8070 manual's G84/G63 pages are at hand."""
     STORED_WORK_OFFSETS = True
     """Its zero offset variables write the table, taken at the work system's next selection (the reader's
     ``ZERO_OFFSETS``)."""
@@ -69,13 +71,7 @@ class Fagor(Dialect):
     def arc_end_rule(cls, setup: MachineSetup) -> ArcEndRule:
         """``ARC_END`` with the machine's CIRINERR/CIRINFACT (``<Controller arcRadiusError arcRadiusShare>``, in mm
         whatever the program's units)."""
-        limit, share = setup.controller.arc_radius_error, setup.controller.arc_radius_share
-        rule = cls.ARC_END
-        if limit is None and share is None:
-            return rule
-        metric = rule.metric if limit is None else limit
-        return replace(rule, metric=metric, inch=metric / MM_PER_INCH,
-                       relative=rule.relative if share is None else share)
+        return cls.ARC_END.with_machine(setup.controller.arc_radius_error, setup.controller.arc_radius_share)
 
     DESCRIPTION = "Fagor CNC 8070 milling: Z/I/K drilling words, G70/G71 units, G159 offsets, P parameters"
     READER = Lazy[type[Reader]](".reader:FagorReader")

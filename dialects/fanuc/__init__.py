@@ -4,7 +4,7 @@ table. The set-up's ``machineType`` picks the machine's code table and pipeline 
 
 from __future__ import annotations
 
-from typing import Callable
+from typing import TYPE_CHECKING, Callable, Iterator
 
 from postproc.comments import CommentSyntax
 from postproc.compensation.rules import (FANUC_A, FANUC_B, FANUC_T, FANUC_T_B, HAAS_A, HAAS_B, HAAS_T, HAAS_T_B,
@@ -17,12 +17,22 @@ from postproc.rs274.cycle_words import rs274_cycle_words
 from postproc.rs274.arc_ends import FANUC_ARC_END
 from postproc.rs274.lathe_axes import LATHE_INCREMENTS
 from postproc.rs274.order_of_execution import stops_before_motion
-from postproc.rs274.macro_jumps import number_jumps
 from postproc.output.writer_base import Writer
 from postproc.xmlio import XFactory
 
 from .arguments import LETTER_LOCALS
 from .codes import CODES
+
+if TYPE_CHECKING:
+    from postproc.context import Context
+    from postproc.ir import Block
+
+
+def number_jumps(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """``postproc.rs274.macro_jumps.number_jumps``, imported when a translation first lowers for Fanuc."""
+    from postproc.rs274.macro_jumps import number_jumps as step
+    return step(blocks, ctx, target)
+
 
 ALL_MILLING_CYCLES = frozenset({
     "drill", "drill_dwell", "peck_chip", "peck_deep", "tap", "tap_left", "bore_feed", "bore_stop",

@@ -7,6 +7,7 @@ from mypy_extensions import mypyc_attr
 
 from typing import Iterable, Iterator, Final
 
+from postproc.context import Context
 from postproc.dialect import Reader
 from postproc.errors import PostprocError
 from postproc.ir import Block, Sequence
@@ -27,72 +28,75 @@ a program number, nor anything that is not an upper-case address)."""
 @mypyc_attr(allow_interpreted_subclasses=True)
 class FanucReader(Reader):
     def read(self, lines: Iterable[str]) -> Iterator[Block]:
-        file = self.ctx.file
-        report = self.ctx.diagnostics.error
-        plain = WORDS_ONLY.fullmatch
-        findall = WORD.findall
+        # The generator only counts lines: the work of a line is ``read_line``'s, a plain function (compiled,
+        # its locals are C variables, not fields of the generator's frame object).
+        ctx = self.ctx
         number = 0
         for raw in lines:
             number += 1
-            size = len(raw)
-            last = raw[size - 1] if size else ""  # (compiled: a one-character string is a cached object)
-            if last == "\n":
-                if size > 1 and raw[size - 2] == "\r":
-                    text, eol = raw[:-2], "\r\n"
-                else:
-                    text, eol = raw[:-1], "\n"
-            elif last == "\r":
-                text, eol = raw[:-1], "\r"
-            else:
-                text, eol = raw, ""
-            # Likeliest first: a block of words only, starting with its N number or (a CAM program's
-            # usual line) with a G code or an axis word; O (a program number) and the rest are lexed.
-            first = text[:1]
-            if first in _FAST_START:
-                # A canonical block (``postproc.rs274.canonical_line``): words only, single spaces, a
-                # digits-only N; a byte scan finds it and tells a CAM line (no G or M word, so no call
-                # to look for) from the rest, and takes upper-case plain words whose numbers are not
-                # canonical too (``X10``).
-                kind, words, sequence = scan_words(text)  # and its words, and its block number
-                if kind:
-                    block = Block(number, text, eol, words)
-                    if kind & CANONICAL:
-                        block.canonical = True
-                    if sequence >= 0:
-                        block.sections["Sequence"] = Sequence(sequence)
-                    if kind & CODES and ("M9" in text or "G6" in text):
-                        try:
-                            read_call(block, self.ctx)
-                        except PostprocError as err:
-                            report(err, text)
-                            block = Block(number, text, eol)
-                    yield block
-                    continue
-                # Otherwise a block of words only, once checked it is.
-                if "(" not in text and ")" not in text and "/" not in text and plain(text):
-                    words = findall(text)
-                    num = words[0][1] if first == "N" else "0"
-                    if "." not in num and num[0] not in "+-":
-                        block = Block(number, text, eol, words)
-                        if first == "N":
-                            block.sections["Sequence"] = Sequence(int(num))
-                        if "M9" in text or "G6" in text or "m9" in text or "g6" in text:
-                            try:
-                                read_call(block, self.ctx)
-                            except PostprocError as err:
-                                report(err, text)
-                                block = Block(number, text, eol)
-                        yield block
-                        continue
-            try:
-                if EOF_BYTE in text or number == 1 and text[:1] == BOM:
-                    block = lex_block(file, number, lexable(number, text), eol, leader=number == 1)
-                    block.text = text  # written back as it was
-                else:
-                    block = lex_block(file, number, text, eol, leader=number == 1)
+            yield read_line(raw, number, ctx)
+
+
+def read_line(raw: str, number: int, ctx: Context) -> Block:
+    """Line ``number`` of the program (``raw``, with its end of line) as a lexed block; a line the reader
+    refuses is reported and kept as text only."""
+    size = len(raw)
+    last = raw[size - 1] if size else ""  # (compiled: a one-character string is a cached object)
+    if last == "\n":
+        if size > 1 and raw[size - 2] == "\r":
+            text, eol = raw[:-2], "\r\n"
+        else:
+            text, eol = raw[:-1], "\n"
+    elif last == "\r":
+        text, eol = raw[:-1], "\r"
+    else:
+        text, eol = raw, ""
+    # Likeliest first: a block of words only, starting with its N number or (a CAM program's
+    # usual line) with a G code or an axis word; O (a program number) and the rest are lexed.
+    first = text[:1]
+    if first in _FAST_START:
+        # A canonical block (``postproc.rs274.canonical_line``): words only, single spaces, a
+        # digits-only N; a byte scan finds it and tells a CAM line (no G or M word, so no call
+        # to look for) from the rest, and takes upper-case plain words whose numbers are not
+        # canonical too (``X10``).
+        kind, words, sequence = scan_words(text)  # and its words, and its block number
+        if kind:
+            block = Block(number, text, eol, words)
+            if kind & CANONICAL:
+                block.canonical = True
+            if sequence >= 0:
+                block.sections["Sequence"] = Sequence(sequence)
+            if kind & CODES and ("M9" in text or "G6" in text):
+                try:
+                    read_call(block, ctx)
+                except PostprocError as err:
+                    ctx.diagnostics.error(err, text)
+                    return Block(number, text, eol)
+            return block
+        # Otherwise a block of words only, once checked it is.
+        if "(" not in text and ")" not in text and "/" not in text and WORDS_ONLY.fullmatch(text):
+            words = WORD.findall(text)
+            num = words[0][1] if first == "N" else "0"
+            if "." not in num and num[0] not in "+-":
+                block = Block(number, text, eol, words)
+                if first == "N":
+                    block.sections["Sequence"] = Sequence(int(num))
                 if "M9" in text or "G6" in text or "m9" in text or "g6" in text:
-                    read_call(block, self.ctx)
-                yield block
-            except PostprocError as err:
-                report(err, text)
-                yield Block(number, text, eol)
+                    try:
+                        read_call(block, ctx)
+                    except PostprocError as err:
+                        ctx.diagnostics.error(err, text)
+                        return Block(number, text, eol)
+                return block
+    try:
+        if EOF_BYTE in text or number == 1 and text[:1] == BOM:
+            block = lex_block(ctx.file, number, lexable(number, text), eol, leader=number == 1)
+            block.text = text  # written back as it was
+        else:
+            block = lex_block(ctx.file, number, text, eol, leader=number == 1)
+        if "M9" in text or "G6" in text or "m9" in text or "g6" in text:
+            read_call(block, ctx)
+        return block
+    except PostprocError as err:
+        ctx.diagnostics.error(err, text)
+        return Block(number, text, eol)

@@ -43,6 +43,12 @@ class FanucWriter(LatheWordWriter):
     SPELLING: ClassVar[ExprSpelling | None] = FANUC_SPELLING
     MACHINE_MOVES: ClassVar[frozenset[str]] = frozenset(("rapid",))
     """Fanuc's G53 always moves at rapid: a feed move in machine coordinates has no spelling."""
+    PATH_CONTROL_LACK: ClassVar[str] = (
+        "the lathe code tables have no G61/G64: whether a Fanuc T control has a cutting mode G64 that blends as "
+        "LinuxCNC's does is [?], not found in a Fanuc T manual here (the lathe G-code lists found, G code system A, "
+        "list neither G61 nor G64): refused by name")
+    """Only a lathe's table lacks the modal path codes (the milling table has G61/G64 [K]), so only a lathe
+    target says this."""
     WORK_OFFSET_SETTING: ClassVar[str] = "G10 L2"
     """G10 L2 P1-P6 sets G54-G59's offset (P0 is the external offset, which other dialects lack)."""
     WORK_OFFSET_COUNT: ClassVar[int] = 6

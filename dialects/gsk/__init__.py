@@ -13,7 +13,7 @@ from __future__ import annotations
 from typing import Callable
 
 from postproc.comments import CommentSyntax
-from postproc.compensation.rules import FANUC_T
+from postproc.compensation.rules import GSK_T
 from postproc.dialect import Dialect, Lazy, Reader
 from postproc.hookspecs import hookimpl
 from postproc.rs274.arc_ends import FANUC_ARC_END
@@ -54,7 +54,7 @@ class Gsk(Dialect):
     """``%`` opens and closes a program, as on Fanuc."""
     PROGRAM_NUMBERS = True
     """``O0001``: the number the control stores the program under."""
-    CUTTER_RULES = FANUC_T
+    CUTTER_RULES = GSK_T
     """Tool nose radius compensation by Fanuc T's rules, start-up type A, the radius and the imaginary tool
     nose direction from the offset the T code selected (``postproc.compensation.rules``, tagged there)."""
     ARC_END = FANUC_ARC_END

@@ -20,3 +20,6 @@ class GskWriter(LatheWordWriter):
     """GSK takes an omitted G71-G76 word from its data parameters: every cycle gets its first block."""
     MONOTONIC_CHECK_WORD: ClassVar[str] = "K"
     """G71/G72 K1: the control checks the profile's monotonicity (the seed's GSK G71)."""
+    PATH_CONTROL_LACK: ClassVar[str] = (
+        "whether the GSK 980TDc has a cutting mode G64 that blends as LinuxCNC's does is [?], not found in a GSK "
+        "manual here; postproc's GSK table (DIALECTS.md) has neither G61 nor G64: refused by name")

@@ -9,7 +9,6 @@ numbers collide with Fanuc's are told apart.
 
 from __future__ import annotations
 
-from dataclasses import replace
 from typing import TYPE_CHECKING, Callable, Iterator
 
 from postproc.comments import CommentSyntax
@@ -65,13 +64,7 @@ class Isg(Dialect):
     def arc_end_rule(cls, setup: MachineSetup) -> ArcEndRule:
         """``ARC_END`` with the machine's P-CHAN-00059/00060 (``<Controller centreShiftLimit centreShiftShare>``,
         in mm whatever the program's units)."""
-        limit, share = setup.controller.centre_shift_limit, setup.controller.centre_shift_share
-        rule = cls.ARC_END
-        if limit is None and share is None:
-            return rule
-        metric = rule.metric if limit is None else limit
-        return replace(rule, metric=metric, inch=metric / MM_PER_INCH,
-                       relative=rule.relative if share is None else share)
+        return cls.ARC_END.with_machine(setup.controller.centre_shift_limit, setup.controller.centre_shift_share)
 
     DESCRIPTION = "Beckhoff TwinCAT CNC (ISG kernel) milling: P parameters, $ control flow, %L subroutines"
     READER = Lazy[type[Reader]](".reader:IsgReader")

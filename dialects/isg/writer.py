@@ -57,6 +57,11 @@ class IsgWriter(WordWriter):
     SPLIT: ClassVar[frozenset[str]] = frozenset(("MachineCoordinates", "Dwell", "Label", "DataSetting"))
     """A move in machine coordinates, a dwell beside other words, a label, a work offset setting:
     ``split_block``."""
+    TOOL_TABLE_LACK: ClassVar[str] = (
+        "ISG writes a tool's length and radius from a program (V.G.WZ[j].L, V.G.WZ[j].R) only with an internal tool "
+        "table, an external tool management's entries being read-only [V: TF5200 external tool management, "
+        "\"Access to tool data in the NC program (V.G.WZ..)\"]; which the machine has, and when a written entry acts "
+        "on the selected D, a set-up does not say [?]: not written here")
     WORK_OFFSET_VARIABLE: ClassVar[str] = "V.G.NP[{index}].V.{axis}={value}"
     """Another dialect's work offset setting (Fanuc ``G10 L2 P2 X0``) is ``V.G.NP[2].V.X=0`` [V: Beckhoff TF5200
     programming manual, "Zero offsets (G53/G54/...G59)", example ``V.G.NP[1].V.X=10`` then ``G54`` ("corresponds

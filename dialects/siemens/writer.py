@@ -1,5 +1,5 @@
 """SINUMERIK writer: words spelt from the 840D table (G710/G700 units, G4 F seconds, ``CR=`` radii), ``;``
-comments and ``%_N_NAME_MPF`` headers.
+comments (``SemicolonCommentWriter``) and ``%_N_NAME_MPF`` headers.
 
 * A block read from SINUMERIK and unchanged is copied byte for byte (``WordWriter``); normalised, a block
   with an ``=`` form, a statement, a label or a main-block number keeps its own text (only plain words are
@@ -42,7 +42,7 @@ from postproc.expr import Expr
 from postproc.ir import Block, CompoundMotion, DistanceMode, Dwell, Motion, Section, SpindleControl, ToolLengthOffset
 from postproc.rs274.codes import CodeTable
 from postproc.isg_family.taps import stroke_words
-from postproc.rs274.writer import WordWriter
+from postproc.rs274.semicolon_comments import SemicolonCommentWriter
 
 from .codes import CODES
 from .control_writing import JumpTargets, expression, label_name, statement
@@ -66,10 +66,14 @@ _ENDS_CALL = frozenset(("Motion", "CompoundMotion", "CycleCancel"))
 the source's cycle."""
 
 
-class SiemensWriter(WordWriter):
+class SiemensWriter(SemicolonCommentWriter):
     DIALECT: ClassVar[str] = "siemens"
     CODES: ClassVar[CodeTable] = CODES
     DWELL_WORD: ClassVar[str] = "F"
+    TOOL_TABLE_LACK: ClassVar[str] = (
+        "SINUMERIK writes a tool's edge data from a program ($TC_DP3[t,d] its length 1, $TC_DP6 its radius, $TC_DP12 "
+        "the length's wear [K: SINUMERIK system variable list]), but which of its tools and edges a register "
+        "number is, and when a written edge acts on the active D, are [?]: not written here")
 
     def __init__(self, ctx: Context, source_dialect: str, target: type[Dialect] | None = None) -> None:
         super().__init__(ctx, source_dialect, target)
@@ -189,18 +193,6 @@ class SiemensWriter(WordWriter):
             self.unsupported(f"a program name of {len(name) - 4} characters ({name[:-4][:NAME_LENGTH]}...): SINUMERIK "
                              f"takes {NAME_LENGTH}", block)
         return f"%_N_{name}"
-
-    def comment(self, text: str) -> str:
-        return ";" + " ".join(text.splitlines())
-
-    def comment_out(self, block: Block) -> str:
-        text = " ".join((block.text or " ".join(a + n for a, n in block.words)).split())
-        return f";UNSUPPORTED LINE {block.line}: {text}" + (block.eol or "\n")
-
-    def nothing_written(self, block: Block) -> str:
-        super().nothing_written(block)  # the warning
-        text = " ".join((block.text or " ".join(a + n for a, n in block.words)).split())
-        return f";LINE {block.line}: {text}" + (block.eol or "\n")
 
     def block_delete_words(self, s: Any, block: Block) -> list[str]:
         """Neutral level k is ``/k-1`` (level 1, Fanuc's ``/``, is SINUMERIK's plain ``/``)."""

@@ -11,6 +11,7 @@ from ..setup.machine_setup import MachineSetup
 from ..dialect import Dialect
 from ..drawing.backplot import Backplot
 from ..simulate.event_text import EventValueError, write_lines
+from ..simulate.move_record import MoveRecord, as_events
 from ..reading import gc_paused
 from ..simulate.toolpath import Event, start_position, toolpath_stream
 
@@ -37,7 +38,7 @@ def export_toolpath(lines: Iterable[str], out: Any, *, file: str, dialect: str |
         else:
             from ..plugins import default_registry
             reading = default_registry().dialect(dialect) if isinstance(dialect, str) else dialect
-            write_backplot(events, out, fmt, start_position(setup), reading.reads_lathe(setup))
+            write_backplot(as_events(events), out, fmt, start_position(setup), reading.reads_lathe(setup))
     diagnostics.check()
 
 
@@ -70,7 +71,7 @@ def event_encoder() -> Callable[[Event], str]:
     return lambda ev: join(chunks(ev, 0))
 
 
-def write_jsonl(events: Iterable[Event], out: TextIO, file: str = "<toolpath>") -> None:
+def write_jsonl(events: Iterable[Event | MoveRecord], out: TextIO, file: str = "<toolpath>") -> None:
     """One JSON object a line; strict JSON (no ``NaN``/``Infinity``): a non-finite value is an error
     at the event's source line. The text is json's (``postproc.simulate.event_text``, which hands what it
     does not write itself to json's encoder)."""

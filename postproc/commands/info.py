@@ -35,6 +35,7 @@ from ..plugins import Registry, default_registry
 from ..reading import gc_paused, read_blocks
 from ..setup.machine import ROTARY_AXES
 from ..setup.machine_setup import MachineSetup
+from ..simulate.move_record import Emitted, as_event
 from ..simulate.toolpath import TRANSLATE_ONLY, Simulator, ToolpathTarget, start_position
 from ..simulate.travel import TravelCheck
 from .info_features import Features
@@ -121,7 +122,7 @@ class ProgramInfo:
             self.rates = self._rates(sim)
             self.pos = {k.lower(): v for k, v in start_position(self.setup).items()}
             self.tally: _Tally | None = None
-            out: list[dict[str, Any]] = []
+            out: list[Emitted] = []  # (dictionaries: this simulator makes no records)
             for block in lowered:
                 mode = block.sections.get("SpindleMode")
                 if mode is not None:
@@ -131,7 +132,7 @@ class ProgramInfo:
                 except PostprocError as err:
                     diagnostics.error(err.located(ctx.at(block)) if err.location is None else err)
                 for ev in out:
-                    self.event(ev, sim)
+                    self.event(as_event(ev), sim)
                 out.clear()
             try:
                 sim.out = out.append
@@ -139,7 +140,7 @@ class ProgramInfo:
             except PostprocError as err:
                 diagnostics.error(err)
             for ev in out:
-                self.event(ev, sim)
+                self.event(as_event(ev), sim)
             self.features.finish(ctx)
         diagnostics.check()
 

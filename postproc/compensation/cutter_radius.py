@@ -39,6 +39,8 @@ from .rules import CutterRules
 
 Point = tuple[float, float]
 Event = dict[str, Any]
+Suspended = tuple[str, float, Point, tuple[str, str, str]]
+"""Compensation held over a roughing cycle: side, radius, tip offset, plane axes (``CutterRadius.suspend``)."""
 TAU = 2.0 * math.pi
 HALF_PI = math.pi / 2.0
 SAME_ANGLE = 1e-9
@@ -184,6 +186,21 @@ class CutterRadius:
             self.arc_banned = not self.rules.arc_after_cancel
         self._flush()
         self.side, self.first = None, True
+
+    def suspend(self) -> Suspended | None:
+        """A roughing cycle under compensation (``CutterRules.roughing_cycles``): the move to the cycle's start
+        point ends there uncompensated, the cycle's own moves run as programmed (the imaginary tip's path:
+        ``postproc.rs274.lathe_cycles``); returns what ``resume`` takes up after the cycle (None: compensation
+        is off). Only the straight-corner rules know it (``ExtendedCorners``)."""
+        if self.side is None:
+            return None
+        raise UnsupportedError(f"a roughing cycle under cutter compensation cannot be simulated under the rules of "
+                               f"{self.rules.name}")
+
+    def resume(self, saved: Suspended) -> None:
+        """After the cycle: compensation is on again as before it, and the next move in the plane starts it up."""
+        self.side, self.radius, self.tip, self.axes = saved
+        self.first, self.arc_banned = True, False
 
     def stop(self) -> None:
         """A program stop or end: everything queued is written, the last move at its compensated end."""

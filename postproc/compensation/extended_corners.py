@@ -35,7 +35,7 @@ import math
 from typing import Any, Callable
 
 from ..errors import ProgramError, UnsupportedError
-from .cutter_radius import CutterRadius, Item, Point, Segment, find_turn
+from .cutter_radius import CutterRadius, Item, Point, Segment, Suspended, find_turn
 from .rules import CutterRules
 from ..state import PLANE_AXES
 
@@ -100,6 +100,30 @@ class ExtendedCorners(CutterRadius):
         else:
             self._flush()
         self.side, self.first = None, True
+
+    def suspend(self) -> Suspended | None:
+        """A roughing cycle under the mode (``CutterRules.roughing_cycles``): "the offset is temporarily canceled
+        during movement to the start point" [K: ``rules.FANUC_T``], so the queued move (the move to the cycle's
+        start point, compensated at its start as any move of the mode) ends with the imaginary tip on its
+        programmed end, and the mode is held, not cancelled: ``resume`` makes the next move a start-up."""
+        if self.side is None:
+            return None
+        saved: Suspended = (self.side, self.radius, self.tip, self.axes)
+        prev = self.prev
+        if prev is not None:
+            if prev.turn != 0:
+                raise UnsupportedError(f"an arc as the move to a roughing cycle's start point under cutter "
+                                       f"compensation cannot be simulated under the rules of {self.rules.name} (its "
+                                       "end cannot be both on the arc's offset and at the programmed point): reach "
+                                       "the start point with a straight move")
+            e = self.in_plane(prev.end)
+            end = (e[0] - self.tip[0], e[1] - self.tip[1])  # the nose centre whose tip is at the programmed end
+            self._finish_prev(end)
+            self.entering = False
+        else:
+            self._flush()
+        self.side, self.first = None, True
+        return saved
 
     def stop(self) -> None:
         """A program stop or end: the queued move ends beside its end point (as before a cancel)."""

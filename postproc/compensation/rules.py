@@ -55,6 +55,12 @@ class CutterRules:
     profile_cycles: frozenset[str] = frozenset()
     """The lathe cycles (``LatheCycle`` kinds) the controller runs under G41/G42, compensating the moves
     of their profile as any others (Fanuc T's G70); any other cycle under compensation is refused."""
+    roughing_cycles: frozenset[str] = frozenset()
+    """The roughing cycles (``LatheCycle`` kinds) the controller runs under G41/G42 by roughing to the
+    finishing shape offset by the compensation (Fanuc T's G71/G72 type I): the move to the cycle's start
+    point ends there uncompensated, the cycle's moves are the imaginary tip's (``CutterRadius.suspend``), and
+    the next move after the cycle starts compensation up again (``resume``). What a controller does there is
+    a matter of its cycles, not of its compensation's geometry: ``cuts_like`` leaves it out."""
     look_ahead: int = 10_000
     """Blocks without motion in the plane the controller looks past to find the next move (the corner it
     makes past more is not modelled: refused). LinuxCNC's queue has no such bound (``cutter_radius``'s
@@ -69,7 +75,7 @@ class CutterRules:
     def cuts_like(self, other: "CutterRules") -> bool:
         """Every rule but the name is the same: the two controllers compensate a program alike (a Haas lathe
         and Fanuc T, ``HAAS_T``)."""
-        return dataclasses.replace(other, name=self.name) == self
+        return dataclasses.replace(other, name=self.name, roughing_cycles=self.roughing_cycles) == self
 
 
 ARC_CORNERS = CutterRules(
@@ -163,18 +169,9 @@ FANUC_A = CutterRules(
     look_ahead=1,  # [K] two blocks read ahead
 )
 """Fanuc cutter compensation C, start-up type A (parameter SUP = 0, the factory setting)."""
-FANUC_B = CutterRules(
-    name="Fanuc cutter compensation C (start-up type B)",
-    register_absent="modal",
-    entry="corner",  # [K] 15.6.2 type B
-    outside_corner="extend",
-    corner_tolerance=1e-6,
-    arc_after_cancel=False,
-    planes=("XY", "ZX", "YZ"),
-    inside_corner="meet",
-    look_ahead=1,
-)
-"""Fanuc cutter compensation C, start-up type B (parameter SUP = 1)."""
+FANUC_B = dataclasses.replace(FANUC_A, name="Fanuc cutter compensation C (start-up type B)",
+                              entry="corner")  # [K] 15.6.2 type B
+"""Fanuc cutter compensation C, start-up type B (parameter SUP = 1): type A's rules but the start-up's end."""
 
 
 # Tool nose radius compensation of Fanuc T (and GSK, which follows Fanuc T's rules), as data: the same
@@ -192,7 +189,17 @@ FANUC_B = CutterRules(
 # [K] Fanuc T: G41/G42 name no register, the offset number of the T code is the register (T0102: 2).
 # [K] Fanuc T multiple repetitive cycles (0i-D, "Stock removal in turning (G71)", its notes on tool nose
 #     radius compensation): G41/G42 is programmed before G70-G73 and G40 outside the finishing shape's
-#     blocks ns..nf (G40/G41/G42 inside them is an alarm); G70 then runs the shape compensated.
+#     blocks ns..nf (G40/G41/G42 inside them is an alarm); G70 then runs the shape compensated, with the
+#     temporary cancel below on the move to its start point and on its return (``compensation.cycle_entry``).
+# [K] Fanuc T 0i-D/0i-F operator's manual (B-64304EN, B-64604EN), the same notes: G71/G72 (and G73) under
+#     the mode rough to the finishing shape with tool nose radius compensation applied to it (the finishing
+#     allowance added to that shape); "the offset is temporarily canceled during movement to the start
+#     point", "start-up is performed at the first block" (ns), the offset "is temporarily canceled at return
+#     to the cycle start point after the termination of the cycle", and "start-up is performed again
+#     according to the next move command"; a G40/G41/G42 in the G70-G73 blocks themselves is alarm PS0325.
+#     As known, not re-read in this session (the search corpora hold none of the text): ``roughing_cycles``
+#     takes G71 and G72 type I only. [?] how a type II cycle (pockets) roughs to the offset shape and G73's
+#     passes under the mode: refused by name (``postproc.rs274.lathe_cycles``, ``cycles.lathe_lowering``).
 # [?] GSK980TDc: the user manual's "tool nose radius compensation" chapter (C type, start-up, offset mode,
 #     cancel; T column 0-9) is assumed to follow Fanuc's type A figures: not read in this session.
 FANUC_T = CutterRules(
@@ -206,20 +213,15 @@ FANUC_T = CutterRules(
     inside_corner="meet",
     look_ahead=1,  # [K] two blocks read ahead
     profile_cycles=frozenset(("turn_finish",)),  # [K] G41/G42 before G70, G40 after it, none in ns..nf
+    roughing_cycles=frozenset(("turn_rough", "face_rough")),  # [K] G71/G72 rough to the offset shape (above)
 )
-"""Fanuc T (and GSK) tool nose radius compensation, start-up type A (parameter SUP = 0)."""
-FANUC_T_B = CutterRules(
-    name="Fanuc T tool nose radius compensation (start-up type B)",
-    register_absent="offset",
-    entry="corner",  # [K] start-up type B (SUP = 1)
-    outside_corner="extend",
-    corner_tolerance=1e-6,
-    arc_after_cancel=False,
-    planes=("XY", "ZX", "YZ"),
-    inside_corner="meet",
-    look_ahead=1,
-    profile_cycles=frozenset(("turn_finish",)),
-)
+"""Fanuc T tool nose radius compensation, start-up type A (parameter SUP = 0)."""
+GSK_T = dataclasses.replace(FANUC_T, roughing_cycles=frozenset())
+"""GSK 980TDc: Fanuc T's rules ([?] above), without its roughing under compensation: what G71/G72 do with
+G41/G42 on is not in our sources [?] (a third-party summary of a Chinese lathe control's rules, blog.csdn.net
+mybirdsky 2078236, says nose compensation does not act in G71-G73 at all): refused by name."""
+FANUC_T_B = dataclasses.replace(FANUC_T, name="Fanuc T tool nose radius compensation (start-up type B)",
+                                entry="corner")  # [K] start-up type B (SUP = 1)
 """Fanuc T tool nose radius compensation, start-up type B (parameter SUP = 1)."""
 
 
@@ -293,7 +295,8 @@ HAAS_B = CutterRules(
 # [V] "Imaginary Tool Tip and Direction": the tip code 0-9 sits next to the radius on the geometry offsets
 #     page; directions as ``nose.TIPS`` (which cites it). The T code's offset number selects the offset
 #     (``T0101``) [K: the manual's TNC examples], as on Fanuc T: ``register_absent="offset"``.
-HAAS_T = dataclasses.replace(FANUC_T, name="Haas lathe tool nose compensation (type A)")
+HAAS_T = dataclasses.replace(FANUC_T, name="Haas lathe tool nose compensation (type A)", roughing_cycles=frozenset())
 """A Haas lathe, type A (the default): Fanuc T's rules, one algorithm (``extended_corners``)."""
-HAAS_T_B = dataclasses.replace(FANUC_T_B, name="Haas lathe tool nose compensation (type B)")
+HAAS_T_B = dataclasses.replace(FANUC_T_B, name="Haas lathe tool nose compensation (type B)",
+                               roughing_cycles=frozenset())
 """A Haas lathe with type B chosen: Fanuc T's type B rules."""

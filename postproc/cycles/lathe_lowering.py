@@ -25,10 +25,11 @@ A cycle whose profile turns nose compensation on in its first block and off in i
 ``NOSE_PROFILE``) is expanded for every other controller: the roughing to the nose's path and the finishing
 under compensation are the source controller's own (another controller's rules for that form are not known).
 A lathe cycle under tool nose radius compensation is refused where its compensated moves are not known:
-towards another controller (Fanuc's type I/II rules for G71/G72 under compensation are not modelled here;
-LinuxCNC refuses G71/G72 with compensation on [V: ``interp_g7x.cc``]), and in the simulation of a
-source whose compensation is simulated (LinuxCNC's). A finishing cycle (G70) is its profile, which
-compensation runs as any other moves: it stays.
+towards another controller (Fanuc T's G71/G72 type I under compensation, ``CutterRules.roughing_cycles``, are
+read and simulated as Fanuc T runs them and kept in a Fanuc T copy, but no other controller is known to rough
+so; LinuxCNC refuses G71/G72 with compensation on [V: ``interp_g7x.cc``]), and in the simulation of a
+source whose compensation is simulated (LinuxCNC's) unless its rules run the cycle. A finishing cycle (G70)
+is its profile, which compensation runs as any other moves: it stays.
 """
 
 from __future__ import annotations
@@ -137,7 +138,9 @@ def _lower(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iter
             skip_departure = False  # the native G70 makes its departure itself
             continue
         if isinstance(cycle, LatheCycle):
-            flagged = bool(cycle.params.get(NOSE_PROFILE))
+            flagged = bool(cycle.params.get(NOSE_PROFILE)) or (
+                cycle.kind == "thread_single" and int(cycle.params.get("chamfer", 0)) > 0)
+            # a chamfered G92 (a Haas lathe's, M23) pulls out so on its own controller only: no word says it
             keep = cycle.kind in native and (not flagged or same_controller)
             if flagged and not keep:
                 own_nose.add(block.line)
@@ -203,7 +206,7 @@ class _NoseCompensation:
     """Tool nose radius compensation through the lowering: the register a G41/G42 without one reads, and
     the lathe cycles it must not run over (see the module docstring)."""
 
-    __slots__ = ("ctx", "on", "offset", "name_register", "refuse_cycles")
+    __slots__ = ("ctx", "on", "offset", "name_register", "refuse_cycles", "own")
 
     def __init__(self, ctx: Context, target: type[Dialect], name_register: bool) -> None:
         self.ctx = ctx
@@ -213,6 +216,9 @@ class _NoseCompensation:
         self.name_register = name_register
         self.refuse_cycles = (target.NAME != ctx.dialect if target.WRITER is not None
                               else ctx.cutter_rules is not None)
+        self.own = target.WRITER is None or target.NAME == ctx.dialect
+        """The source's own controller runs the program (its simulation, or a copy): a roughing cycle its rules
+        run under compensation (``CutterRules.roughing_cycles``) was read as it runs it."""
 
     def select(self, select: object) -> None:
         if isinstance(select, ToolSelect) and isinstance(select.number, int):
@@ -229,10 +235,23 @@ class _NoseCompensation:
         cycle = sections.get("LatheCycle")
         if self.on and self.refuse_cycles and isinstance(cycle, LatheCycle) and cycle.kind != "turn_finish" \
                 and cycle.form != "first":  # reported once, at the block that runs the cycle
+            rules = self.ctx.cutter_rules
+            if rules is not None and cycle.kind in rules.roughing_cycles:
+                if self.own:
+                    return
+                self.ctx.diagnostics.error(UnsupportedError(
+                    f"a lathe cycle ({cycle.kind.replace('_', ' ')}) under tool nose radius compensation: "
+                    f"{self.ctx.dialect} roughs to the compensated shape with the offset temporarily cancelled for "
+                    "the cycle, which no other controller's compensation is known to do (its moves would be written "
+                    "with compensation off and on around them, not modelled here); cancel compensation before the "
+                    "cycle and turn it on for the finishing cycle", self.ctx.at(block)))
+                return
             self.ctx.diagnostics.error(UnsupportedError(
                 f"a lathe cycle ({cycle.kind.replace('_', ' ')}) under tool nose radius compensation: how the "
-                "controller compensates inside it is not modelled (Fanuc's type I/II rules), so its moves are not "
-                "known; cancel compensation before the cycle and turn it on for the finishing cycle",
+                "controller compensates inside it is not modelled (Fanuc T's stock removal cycles of type I are; "
+                "type II pockets, the pattern repeating cycle and other controllers' rules are not in our sources), "
+                "so its moves are not known; cancel compensation before the cycle and turn it on for the finishing "
+                "cycle",
                 self.ctx.at(block)))
 
 

@@ -111,8 +111,9 @@ def _refusal(taps: list[RigidTap], target: type[Dialect]) -> str | None:
     if all(strokes):
         return None  # strokes towards a controller that programs them (ISG <-> SINUMERIK G331/G332): written as read
     if not target.SYNCHRONISED_TAP:
-        return (f"a rigid (spindle-synchronised) tap: this translation writes no synchronised tap for {target.NAME}, "
-                "and a tap fed without the spindle in step breaks: refused, even with --on-unsupported warn")
+        lack = f" ({target.RIGID_TAP_LACK})" if target.RIGID_TAP_LACK else ""
+        return (f"a rigid (spindle-synchronised) tap: this translation writes no synchronised tap for {target.NAME}"
+                f"{lack}, and a tap fed without the spindle in step breaks: refused, even with --on-unsupported warn")
     if any(tap.dwell for tap in taps):
         return (f"a rigid tap with a dwell at the bottom (P): {target.NAME}'s synchronised tap reverses at once "
                 "and has no dwell there: refused, even with --on-unsupported warn")

@@ -76,7 +76,7 @@ class PlainLane(BlockLane):
                 # boxed once, shared by both dictionaries (compiled)
                 number: object = decimal_value(num)
                 values[up] = axes[up] = number  # type: ignore[assignment]
-            elif kind == LETTER_N and "." not in num:
+            elif kind == LETTER_N and (upper or "." not in num):  # (a canonical N is digits only)
                 values["N"] = sequence.number if isinstance(sequence, Sequence) else int(num)
             elif cycle:
                 break  # a code, F or a cycle word under an active cycle: the general path

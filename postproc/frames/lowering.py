@@ -47,6 +47,7 @@ from ..errors import PostprocError, ProgramError
 from ..control import ASSIGN, CONTROL
 from ..expr import Binary, Expr, Num
 from ..ir import Block, CompoundMotion, CutterCompensation, Motion, Section
+from ..ir.keys import only_move
 from ..state import MM_PER_INCH, ModalState, changes_nothing
 from .affine import EXACT, INDEX, XYZ
 from .frame import PLANE_AXES, Frame, Position
@@ -115,7 +116,7 @@ class FrameEvaluator:
             if not s:
                 yield block
                 continue
-            if self.frame is None and _unwatched(s, watched):
+            if self.frame is None and (only_move(s) or _unwatched(s, watched)):
                 m = s.get("Motion")
                 if m is None:
                     if self.reached.symbolic:

@@ -14,15 +14,18 @@ The current position (LinuxCNC's ``#5420``-``#5428``) is the program position th
 is known only where the machine's current point is what the simulation holds: every axis read was
 programmed absolutely since the start (before that, ``p`` is the set-up's assumed start) and since the
 last tool offset change, with no move in machine coordinates, reference return, cycle or change of work
-system after it (those leave ``p`` unknown).
+system after it (those leave ``p`` unknown). In a simulation that assumes the machine starts where the set-up
+says (``ASSUMED_START``: ``verify`` runs a translation so), an axis not programmed since the start reads that
+start, as the simulated moves assume (``FrameReadings._at_start`` where no frame is evaluated, on a lathe).
 """
 
 from __future__ import annotations
 
 from typing import Callable, Hashable, Iterable
 
-from ..context import Context
+from ..context import ASSUMED_START, Context
 from ..interp.numbers import COMPUTED, numbered_variables
+from ..state import LEFT_START, MM_PER_INCH
 from ..ir import Block
 from .run_state import RUN_KEY, FrameRun
 
@@ -71,14 +74,40 @@ class FrameReadings:
 
     def position(self, axis: str) -> float | None:
         """The current point on ``axis`` in program units (degrees on a rotary axis) where the simulation
-        knows it (the module docstring); None where only the machine does."""
+        knows it (the module docstring); None where only the machine does. In a simulation (``ASSUMED_START``)
+        an axis not programmed since the start reads where the simulation starts it (``_at_start``)."""
         run = self._run()
-        if run is None or axis in run.unsettled:
+        if run is None:
+            return self._at_start(axis)
+        if axis in run.unsettled and not self.ctx.run_data.get(ASSUMED_START):
             return None
         here = run.p.get(axis)
         if here is None:
             return None
         return here / run.scale if axis in "XYZUVW" else here
+
+    def _at_start(self, axis: str) -> float | None:
+        """Where no frame is evaluated (a lathe), in a simulation only: an axis still at the simulation's start,
+        in program units, while nothing can have moved it or the program's origin since the start (no axis
+        placed, no reference return or machine-coordinate move, no tool offset or work system but the
+        first, no cycle); X only from a start at 0 (a read X is a radius, a diameter program's X word not).
+        None otherwise: only the machine knows."""
+        ctx = self.ctx
+        state = ctx.state
+        if (not ctx.run_data.get(ASSUMED_START) or state.extra.get(LEFT_START) or state.length != "cancel"
+                or state.work_offset != 1 or state.cycle is not None
+                or any(value is not None for value in state.position.values())):
+            return None
+        machine = ctx.setup.machine
+        if axis not in machine.axes:
+            return None
+        start = {"X": machine.start_x, "Y": machine.start_y, "Z": machine.start_z}.get(axis, 0.0)
+        if axis == "X" and start != 0.0:
+            return None
+        if axis not in "XYZUVW":
+            return float(start)
+        mm = float(start) * machine.mm()
+        return mm / MM_PER_INCH if state.units == "inch" else mm
 
     def compensating(self) -> bool:
         """Cutter radius compensation is on where the program stands (False where the frame is not

@@ -27,7 +27,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Iterator
+from typing import Final, Iterator
 
 from mypy_extensions import mypyc_attr
 
@@ -38,12 +38,13 @@ from ..errors import PostprocError, ProgramError, UnsupportedError, UsageError
 from ..event_order import after_motion
 from ..expr import Expr
 from ..ir import Block, CompoundMotion, Motion, Section
+from ..ir.keys import only_move
 from ..numbers import EXACT
 from ..state import MM_PER_INCH, PLANE_AXES, ModalState, changes_nothing
 from .arc_geometry import Arc, chord_points, r_centre_error, r_pieces, signed_radius, split
 
-FORMS = ("lines", "ijk", "r")
-SETTLE = "settle"
+FORMS: Final = ("lines", "ijk", "r")
+SETTLE: Final = "settle"
 """Not a user's form: ``settle_arc_ends``'s pass (an arc whose end the two controllers judge or run apart)."""
 MIN_TOLERANCE_MM = 1e-4
 """Finest chord tolerance accepted: below it the written numbers' rounding (``EXACT``) is no longer small."""
@@ -51,8 +52,8 @@ R_FORM_TOLERANCE_MM = 0.0005
 """Most an R form may move an arc's centre (half of ``verify``'s default tolerance)."""
 WRITE_SLACK_MM = 2 * EXACT
 """What the writer's rounding may move a point (``postproc.numbers.EXACT``, at both ends of a chord)."""
-ARCS = frozenset(("cw", "ccw"))
-MOVES = frozenset(("rapid", "linear", "cw", "ccw"))
+ARCS: Final = frozenset(("cw", "ccw"))
+MOVES: Final = frozenset(("rapid", "linear", "cw", "ccw"))
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
@@ -152,37 +153,42 @@ class _Rewriter:
     def block(self, block: Block) -> list[Block]:
         """The block, or the blocks its arc became."""
         sections = block.sections
-        in_profile = "InProfile" in sections
-        if in_profile != self.in_profile:
-            self.unknown()  # a profile starts where its cycle stood, and after it the cycle's end is not tracked
-            self.in_profile = in_profile
-        if not changes_nothing(sections) or "CutterCompensation" in sections \
-                or "DynamicCutterCompensation" in sections:  # (not frozenset.isdisjoint: ~800 instructions compiled)
-            self._settings(sections)
-        coords = sections.get("CoordinateSet")
-        if coords is not None:
-            for axis, value in coords.axes.items():  # type: ignore[attr-defined]
-                self.state.position[axis] = None if isinstance(value, Expr) else value
+        rare = self.in_profile or not only_move(sections)
+        """A key but a block number and a move (or a profile to leave): the other sections are looked for. The
+        common block (``only_move``: neither key is modal, ``state.MODAL_KEYS``) skips their nine look-ups and
+        ``changes_nothing``'s loop (this pass runs over every block of every translation to grbl)."""
+        if rare:
+            in_profile = "InProfile" in sections
+            if in_profile != self.in_profile:
+                self.unknown()  # a profile starts where its cycle stood, and after it the cycle's end is not tracked
+                self.in_profile = in_profile
+            if not changes_nothing(sections) or "CutterCompensation" in sections \
+                    or "DynamicCutterCompensation" in sections:  # (not frozenset.isdisjoint: ~800 instructions compiled)
+                self._settings(sections)
+            coords = sections.get("CoordinateSet")
+            if coords is not None:
+                for axis, value in coords.axes.items():  # type: ignore[attr-defined]
+                    self.state.position[axis] = None if isinstance(value, Expr) else value
         motion = sections.get("Motion")
-        compound = sections.get("CompoundMotion")
+        compound = sections.get("CompoundMotion") if rare else None
         out: list[Block] = [block]
         if isinstance(motion, Motion) and motion.mode is not None:
             if self.restate and motion.mode in MOVES:
                 block.changed()
                 block.canonical = False
                 self.restate = False
-            machine = "MachineCoordinates" in sections
+            machine = rare and "MachineCoordinates" in sections
             if motion.mode in ARCS:
                 pieces = self._arc(block, motion, self.state.distance == "incremental", machine)
                 if pieces is not None:
                     out = self._split_block(block, pieces)
             else:
                 self._track(motion, self.state.distance == "incremental", machine)
-        elif isinstance(motion, Motion) or "CannedCycle" in sections:
+        elif isinstance(motion, Motion) or rare and "CannedCycle" in sections:
             self.unknown()  # a native canned cycle (or its repeat) ends where its rules say
         if isinstance(compound, CompoundMotion):
             self._compound(block, compound)
-        if "CannedCycle" in sections or "LatheCycle" in sections and compound is None:
+        if rare and ("CannedCycle" in sections or "LatheCycle" in sections and compound is None):
             self.unknown()  # a native cycle ends where its controller's rules say
         return out
 

@@ -16,7 +16,9 @@ from ..errors import PostprocError, ProgramError, UnsupportedError
 from ..expr import Expr
 from ..ir import (Block, CompoundMotion, CutterCompensation, DataSetting, DistanceMode, Feed, FeedMode, Motion, Plane,
                   ProgramControl, Section, ToolChange, ToolLengthOffset, ToolSelect, Units, WorkOffset)
-from ..compensation.cutter_radius import CutterRadius
+from ..ir.keys import only_move
+from ..compensation.cutter_radius import CutterRadius, Suspended
+from ..compensation.cycle_entry import finishing_entry
 from ..compensation.dynamic import DynamicCutterCompensation
 from ..compensation.nose import TIPS, mirrored
 from ..compensation.rules import CutterRules
@@ -82,7 +84,7 @@ class Resolver(CompensatedMoves):
             sections = block.sections
             plain = idle
             odd = False
-            if plain:  # one look at the keys: none asks for the general way (a G41/G42, a setting)
+            if plain and not only_move(sections):  # one look at the keys: none asks for the general way
                 for key in sections:
                     if key in _NOT_NOTED:
                         odd = True
@@ -248,6 +250,8 @@ class Resolver(CompensatedMoves):
     # -- one block -----------------------------------------------------------------------------------
     def block(self, block: Block) -> None:
         sections = block.sections
+        own = "CutterCompensation" in sections
+        """The block turns compensation on or off itself (a Haas G70's, whose profile holds its G42/G40)."""
         if "ToolChange" in sections:
             self.cutter.tool_change()  # the simulation's check, before the block's own G40/G41/G42
         self._modal(sections)
@@ -299,7 +303,7 @@ class Resolver(CompensatedMoves):
             raise ProgramError("a canned cycle with cutter compensation on cannot be run (cancel it first)")
         motion = sections.get("Motion")
         if isinstance(compound, CompoundMotion):
-            self._compound(block, compound)  # a finishing cycle's profile, compensated move by move
+            self._compound(block, compound, own)  # a finishing cycle's profile, compensated move by move
         elif isinstance(motion, Motion) and (motion.axes or _full_circle(motion)):
             self._move(block, motion)
         elif isinstance(motion, Motion) and motion.mode is not None and motion.mode not in MOVES:
@@ -317,17 +321,31 @@ class Resolver(CompensatedMoves):
                 self.cutter.cancel()
                 self._mirror(_stop_and_cancel)
 
-    def _compound(self, block: Block, compound: CompoundMotion) -> None:
+    def _compound(self, block: Block, compound: CompoundMotion, own: bool) -> None:
         """A lathe finishing cycle the source compensates as its profile (``CutterRules.profile_cycles``):
         the block without its moves waits as an event, then each move goes through the compensation as a
-        block of its own (at the feed the cycle gives it), written as the compensated move."""
+        block of its own (at the feed the cycle gives it), written as the compensated move. Under the mode
+        set before the cycle (not ``own``) the offset is temporarily cancelled on the way to the start point
+        and on the return to it, as the simulation runs it (``compensation.cycle_entry``)."""
         del block.sections["CompoundMotion"]
         block.changed()
         if block.sections:
             self.cutter.event({"block": block})
             self._mirror(lambda cutter: cutter.event({}))
+        items = compound.items
+        held: Suspended | None = None
+        back: Section | None = None
+        if not own:
+            held, back = finishing_entry(self.cutter, items)
+
+            def enter(cutter: CutterRadius) -> None:
+                finishing_entry(cutter, items)  # the target's rules: the same entry, or the trial's refusal
+            self._mirror(enter)
         feed: Feed | None = None
-        for item in compound.items:
+        for item in items:
+            if item is back:
+                self.cutter.cancel()
+                self._mirror(lambda cutter: cutter.cancel())
             if isinstance(item, Feed):
                 feed = item
             elif isinstance(item, Motion) and item.mode in MOVES:
@@ -339,6 +357,8 @@ class Resolver(CompensatedMoves):
             else:
                 raise Unresolvable(f"a {type(item).__name__} inside a lathe cycle under tool nose radius "
                                        "compensation cannot be resolved")
+        if held is not None:
+            self.cutter.resume(held)
 
     def _modal(self, sections: dict[str, Section]) -> None:
         if "CoordinateSet" in sections:
@@ -403,3 +423,4 @@ class Resolver(CompensatedMoves):
             register = self.spindle_tool
         self.last_register = register
         return register
+

@@ -19,9 +19,15 @@ program that changes the length there (typical posts: ``G43 H1 Z15.``). Otherwis
   (the two would then differ).
 * towards "at the programmed axis" from "at the next move": the change goes to the next motion block,
   which gets the Z the program stands at (absolute, program units) if it has none, so the target moves Z
-  there as the source does; where that Z is not known (no absolute Z since the start or a work offset
-  change, or the next move is incremental, a reference return, a cycle or a machine-coordinate move) the
-  change is a located error asking for Z beside it, and so is a tool table write between the two. A
+  there as the source does. Where that Z is not known (no absolute Z since the start or a work offset
+  change) and the target reads its current position (``Dialect.POSITION_READS``: LinuxCNC's ``Z#5422``,
+  read when the block is read, before its own ``G43``), the move gets that read instead [V: rs274, tests/
+  test_length_timing_position_read.py], for an axis nothing has placed since the start (``unplaced``: no
+  move naming it, no work offset, frame, cycle or machine move), unless cutter compensation is on (rs274
+  refuses the read then) or a change written alone since moved the target's program point (a change replaced
+  before any move stays where it was written, ``diverged``). Otherwise, or where the next move is incremental, a reference
+  return, a cycle or a machine-coordinate move, the change is a located error asking for Z beside it, and
+  so is a tool table write between the two. A
   reference return is such a move through its intermediate point: given absolutely, both rules take the
   point with the new length (the change goes beside it); given incrementally (``G49`` then ``G91 G28 Z0``,
   a common program end), its point is written absolutely from the known Z (``G49 G90 G28 Z<z>``, then
@@ -46,8 +52,9 @@ from typing import Final, Iterator
 from ..context import Context
 from ..dialect import Dialect
 from ..errors import Location, PostprocError, UnsupportedError
-from ..expr import Expr
-from ..ir import Block, DataSetting, DistanceMode, Motion, Section, ToolLengthOffset, Units
+from ..expr import Binary, Expr, Num, Var
+from ..ir import Block, CutterCompensation, DataSetting, DistanceMode, Motion, Section, ToolLengthOffset, Units
+from ..ir.keys import only_move
 from ..compensation.tool_table import ToolTable
 
 AXIS: Final = "Z"
@@ -72,8 +79,8 @@ def time_length_changes(blocks: Iterator[Block], ctx: Context, target: type[Dial
     if ctx.length_at_axis == target.LENGTH_AT_PROGRAMMED_AXIS:
         return blocks
     if ctx.lathe:  # Fanuc T/GSK T0102 -> LinuxCNC's lathe G43 H02 (``postproc.cycles.lathe_lowering``)
-        return blocks if ctx.length_at_axis else _complete(blocks, ctx)
-    return _defer(blocks, ctx, target) if ctx.length_at_axis else _complete(blocks, ctx)
+        return blocks if ctx.length_at_axis else _complete(blocks, ctx, target)
+    return _defer(blocks, ctx, target) if ctx.length_at_axis else _complete(blocks, ctx, target)
 
 
 def _writes_lengths(target: type[Dialect]) -> bool:
@@ -149,7 +156,10 @@ def _defer(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iter
 
 def _plain(sections: dict[str, Section]) -> bool:
     """No section of the block is one ``_complete`` follows but a plain move: a loop over the block's two or
-    three keys (compiled, ``_STATE.isdisjoint(sections)`` is a bound method call, ~600 instructions)."""
+    three keys (compiled, ``_STATE.isdisjoint(sections)`` is a bound method call, ~600 instructions), after
+    the cheaper test of the commonest block (``only_move``)."""
+    if only_move(sections):
+        return True
     for key in sections:
         if key in _STATE:
             return False
@@ -167,13 +177,21 @@ def _clash(sections: dict[str, Section]) -> str | None:
     return None
 
 
+_UNPLACING: Final = frozenset(("WorkOffset", "CoordinateSet", "FrameChange", "CompoundMotion", "CycleCall",
+                                "RigidTap", "MachineCoordinates", "DataSetting"))
+"""What leaves the program's point on an axis other than where the start put it, on the target as on the
+source, without a number here: after it a position read is not written (the simulation's start no longer
+stands for it, ``postproc.frames.parameters``)."""
+
 HELD: Final = 1000
 """Blocks without motion held behind a waiting change at most (then it is refused where it was written)."""
 
 
-def _complete(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
+def _complete(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
     """Towards a target that applies a change at the programmed axis: the change goes to the next move,
-    which gets the Z the program stands at. The blocks between are held (at most ``HELD``, else a located
+    which gets the Z the program stands at: its number where it is known, else, on a target that reads its
+    current position (``Dialect.POSITION_READS``) and without cutter compensation (rs274 refuses the read
+    under it), that read (``_position_read``). The blocks between are held (at most ``HELD``, else a located
     error); a change that meets no move (the program ends first) stays where it was written."""
     axes: tuple[str, ...] = ("X", AXIS) if ctx.lathe else (AXIS,)  # a lathe offset moves X and Z (LinuxCNC's lathe G43 H)
     pos: dict[str, float | None] = {a: None for a in axes}  # the programmed point, program units; None: unknown
@@ -185,6 +203,9 @@ def _complete(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
     table = ToolTable(ctx.setup)
     pending: tuple[ToolLengthOffset, Location] | None = None  # the waiting change, and where it was written
     restore = False  # a reference return was written absolutely: G91 again after it
+    compensating = False  # cutter radius compensation is on (the target reads no position then)
+    diverged: set[str] = set()  # axes whose program point on the target a change written alone has moved
+    unplaced = set(axes)  # axes nothing has placed or re-expressed since the start: only they are read
     for block in blocks:
         sections = block.sections
         if pending is None and _plain(sections):  # the common block: at most a plain move
@@ -206,6 +227,10 @@ def _complete(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
                     else:
                         known = pos[axis]
                         pos[axis] = float(value) if absolute else None if known is None else known + value
+                if diverged and plain and absolute:
+                    diverged.difference_update(words)
+                if unplaced:
+                    unplaced.difference_update(words)
             yield block
             continue
         if _WATCHED.isdisjoint(sections):
@@ -224,9 +249,14 @@ def _complete(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
             for a, v in pos.items():
                 pos[a] = None if v is None else v / MM_PER_INCH if inch else v * MM_PER_INCH
         absolute = _distance(block, absolute)
+        cutter = sections.get("CutterCompensation")
+        if isinstance(cutter, CutterCompensation):
+            compensating = cutter.mode != "off"
         if "WorkOffset" in sections or "CoordinateSet" in sections:
             for a in axes:
                 pos[a] = None
+        if unplaced and not _UNPLACING.isdisjoint(sections):
+            unplaced.clear()  # the point moved or was re-expressed by what only the run knows (held blocks too)
         setting = sections.get("DataSetting")
         if isinstance(setting, DataSetting):
             table.write(setting, MM_PER_INCH if inch else 1.0)
@@ -239,9 +269,10 @@ def _complete(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
         change = isinstance(offset, ToolLengthOffset) and _key(offset) != in_force
         if isinstance(offset, ToolLengthOffset):
             in_force = _key(offset)
-            if pending is not None:  # a later change replaces the waiting one
-                yield from _release(held, None)
-                pending = None
+            if pending is not None:  # a later change replaces the waiting one, which stays where it was written:
+                yield from _release(held, pending[0])  # it moves nothing there on the target, and the
+                pending = None  # settings a verify compares keep the source's order; the target's program
+                diverged.update(axes)  # point now differs from the source's until each axis is programmed
             if change and not moves:
                 pending = offset, ctx.at(block, ctx.column_of(block, "H"))
                 held.append(block)
@@ -277,10 +308,12 @@ def _complete(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
                     block, _length(applied, table, inch), _length(in_force, table, inch)):
                 pass
             elif (isinstance(motion, Motion) and motion.mode in _PLAIN and absolute
-                    and all(pos[a] is not None for a in missing) and all(a in motion.axes or a in missing for a in axes)
+                    and all(pos[a] is not None or (not compensating and a in target.POSITION_READS and a in unplaced
+                                                   and a not in diverged and _reads_here(sections)) for a in missing)
                     and "MachineCoordinates" not in sections and "CompoundMotion" not in sections):
                 for a in missing:
-                    motion.axes[a] = pos[a]  # type: ignore[assignment]  # known: tested above
+                    known = pos[a]
+                    motion.axes[a] = _position_read(target, a, ctx.diameter) if known is None else known
                 block.changed()
             else:
                 _refuse(ctx, at, f"the programmed {' and '.join(axes)} is not known where it applies")
@@ -296,12 +329,38 @@ def _complete(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
             pending = None
             applied = in_force
         _follow(block, pos, absolute, in_force, None if ctx.lathe else table, inch)
+        if unplaced:
+            motion = sections.get("Motion")
+            if isinstance(motion, Motion):
+                unplaced.difference_update(motion.axes)
+        if diverged:
+            motion = sections.get("Motion")
+            if (isinstance(motion, Motion) and motion.mode in _PLAIN and absolute
+                    and "MachineCoordinates" not in sections):
+                diverged.difference_update(motion.axes)
         yield block
         if restore:
             restore = False
             yield _incremental_again(block)
     if pending is not None:
         yield from _release(held, pending[0])
+
+
+def _reads_here(sections: dict[str, Section]) -> bool:
+    """A read in this block is the point the source's move starts from: the block changes no work system, frame
+    or units (the target reads before the block's own changes, its words are in the new ones)."""
+    return _UNPLACING.isdisjoint(sections) and "Units" not in sections
+
+
+def _position_read(target: type[Dialect], axis: str, diameter: bool) -> Expr:
+    """The word value that keeps ``axis`` at its current point on ``target``: its position parameter, read
+    when the block is read, so before the block's own offset change (``Dialect.POSITION_READS``); the new
+    offset then applies to that point as the source's controller applies it at its next move. Doubled for a
+    diameter X where the read is a radius (``Dialect.POSITION_READ_RADIUS``)."""
+    read: Expr = Var(index=Num(float(target.POSITION_READS[axis])))
+    if axis == "X" and diameter and target.POSITION_READ_RADIUS:
+        read = Binary("mul", read, Num(2.0))
+    return read
 
 
 def _moves(sections: dict[str, Section]) -> bool:

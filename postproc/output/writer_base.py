@@ -128,7 +128,7 @@ class Writer(abc.ABC):
                 self._emit_template(emit, output_map, line_format, getattr(text_of, "template"), getattr(text_of, "text"))
                 continue
             failed = False
-            if displacement is not None and self._displaced(displacement, block):
+            if displacement is not None and _displaced(self, displacement, block):
                 continue
             try:
                 text = lane(block) if lane is not None and block.canonical else None
@@ -186,23 +186,6 @@ class Writer(abc.ABC):
         found = self.ctx.run_data.get("sequences")
         return found if found is not None else _NO_TEMPLATES
 
-    def _displaced(self, displacement: Displacement, block: Block) -> bool:
-        """Follow the distance mode; True (an error reported) where ``block`` would move displaced by a
-        move dropped before it."""
-        if "DistanceMode" in block.sections:
-            displacement.note(block.sections)
-        lowered = self.ctx.run_data.get(DROPPED_MOVES)
-        if lowered:
-            displacement.lowered(lowered)  # (the block itself is the comment the step left: it moves nothing)
-        if not displacement.axes:
-            return False
-        problem = displacement.problem(block)
-        if problem is None:
-            return False
-        displacement.axes.clear()  # one error says it: the output is discarded
-        self.ctx.diagnostics.error(ProgramError(problem, self.ctx.at(block)))
-        return True
-
     def unsupported_block(self, block: Block, err: UnsupportedError) -> str | None:
         """An error; with ``--on-unsupported warn``, the block without what the target cannot express and
         what depends on it (``postproc.output.partial_block``), or, where nothing can be kept, as a comment;
@@ -248,3 +231,22 @@ class Writer(abc.ABC):
     def finish(self) -> str:
         """Text to append after the last block (e.g. a footer)."""
         return ""
+
+
+def _displaced(writer: Writer, displacement: Displacement, block: Block) -> bool:
+    """Follow the distance mode; True (an error reported) where ``block`` would move displaced by a
+    move dropped before it. A function, not a method: compiled, a method of a class that plugins subclass is
+    called through Python's lookup (~900 instructions a block of every ``--on-unsupported warn`` run)."""
+    if "DistanceMode" in block.sections:
+        displacement.note(block.sections)
+    lowered = writer.ctx.run_data.get(DROPPED_MOVES)
+    if lowered:
+        displacement.lowered(lowered)  # (the block itself is the comment the step left: it moves nothing)
+    if not displacement.axes:
+        return False
+    problem = displacement.problem(block)
+    if problem is None:
+        return False
+    displacement.axes.clear()  # one error says it: the output is discarded
+    writer.ctx.diagnostics.error(ProgramError(problem, writer.ctx.at(block)))
+    return True

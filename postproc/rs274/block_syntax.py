@@ -22,31 +22,30 @@ from typing import Any, ClassVar, Mapping, Final
 from postproc.errors import ParseError, ProgramError
 from postproc.expr import Binary, Expr, Num
 from postproc.ir import (
-    Block, DataSetting, MachineFunction, Coolant, CutterCompensation, CycleCall, CycleCancel, DistanceMode, Dwell, Feed, FeedMode,
+    Block, MachineFunction, Coolant, CutterCompensation, CycleCall, CycleCancel, DistanceMode, Dwell, Feed, FeedMode,
     MachineCoordinates, Motion, NativeCode, PathControl, Plane, ProgramControl, ReturnLevel,
     SpindleControl, SpindleOrientation, SpindleSpeed, ToolChange, ToolLengthOffset, ToolSelect, Units,
     WorkOffset,
 )
-from postproc.context import Context, word_columns
+from postproc.context import Context
 from postproc.frames.reading import read_frame
 from postproc.syntax import Syntax
 
 from .codes import CodeTable, g_key
-from .lathe_offset_input import lathe_offset_setting
 from .machine_codes import Defaults, machine_table
 from .point_mix import point_mix
-from .word_values import increments_divisor, milliseconds, real, whole, whole_index
+from .data_setting import read_data_setting
+from .length_words import LENGTH_REGISTER, bare_length, dynamic_length, length_register
+from .word_values import increments_divisor, milliseconds, real, whole
+from .words import UPPER
+from .words import AXIS_LETTERS as AXIS_LETTERS, DATA_KEY as DATA_KEY  # (the names other modules import here)
+from .words import col_of_word as col_of_word, second_col as second_col
 
-AXIS_LETTERS: Final = frozenset("XYZABCUVW")
 DECIMAL_LETTERS: Final = frozenset("XYZABCUVWIJKRQ")
 """Addresses that follow the decimal-point rule (no point: least input increments)."""
 INTEGER_LETTERS: Final = frozenset("NOTHDLP")
-_UPPER: Final = {c: c.upper() for c in "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"}
-_UPPER[":"] = "O"  # ':' is ISO's spelling of the program number address
+_UPPER: Final = UPPER
 CENTER_AXIS: Final = {"I": "X", "J": "Y", "K": "Z"}
-_ROTATION: Final = frozenset("R")
-DATA_KEY: Final = "10"
-"""The number of the family's programmable data input code (``DataSetting``)."""
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
@@ -101,33 +100,8 @@ class WordBlockSyntax(Syntax):
 
     def _dynamic_length(self, block: Block, ctx: Context, num: str, codes: dict[str, Any], values: dict[str, Any],
                         used: set[str]) -> None:
-        """``G43.1 Z<length>``: every axis word of the block is the offset's, none a move [V: grbl ``gcode.c``
-        "[G43.1 Errors]", an axis word other than Z or a missing Z is ``STATUS_GCODE_G43_DYNAMIC_AXIS_ERROR``;
-        V: rs274 2.9 run here, ``G43.1 X1 Z3`` is ``USE_TOOL_LENGTH_OFFSET(1 0 3, ...)``, and an axis the block
-        does not name keeps its offset: ``G43.1 Z3`` then ``G43.1`` or ``G43.1 X0`` leaves Z at 3]. Only a length
-        along Z is modelled: an offset along another axis is refused by
-        name, never read as a move. A motion or cycle code in the block is refused: rs274 then takes the Z word
-        as the length and as the move's end too (``G91 G43.1 Z4 G1`` moves Z by 4 [V: rs274 2.9 run here]),
-        grbl refuses it (an axis command conflict [V: grbl ``gcode.c``])."""
-        motion = codes.get("01")
-        if motion is not None and motion[1] in ("motion", "cycle"):
-            raise ProgramError(f"G{num} with G{motion[3]} in one block: the Z word would be the tool length and the "
-                               "move's too (write the motion in a block of its own)",
-                               ctx.at(block, col_of_word(block, "G", motion[3])))
-        other = next((letter for letter, _ in block.words if _UPPER.get(letter, "") in AXIS_LETTERS
-                      and _UPPER[letter] != "Z"), None)
-        if other is not None:
-            up = _UPPER[other]
-            raise ProgramError(f"G{num} with an {up} word: only a tool length along Z is modelled (an offset "
-                               f"along {up} is not; the {up} word is the offset's, not a move)",
-                               ctx.at(block, ctx.column_of(block, up)))
-        if "Z" not in values:
-            if not self.DYNAMIC_LENGTH_BARE:
-                raise ProgramError(f"G{num} needs the tool length as its Z word",
-                                   ctx.at(block, col_of_word(block, "G", num)))
-            return  # the offsets in force stay: nothing changes
-        used.add("Z")
-        block.add(ToolLengthOffset("dynamic", None, values["Z"]))
+        """``G43.1 Z<length>`` (``postproc.rs274.length_words.dynamic_length``)."""
+        dynamic_length(self, block, ctx, num, codes, values, used)
 
     def table(self, ctx: Context) -> CodeTable:
         """The code table a program is read with (a dialect with one table per machine type or G-code
@@ -287,50 +261,9 @@ class WordBlockSyntax(Syntax):
 
     def _data_setting(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],
                       used: set[str]) -> bool:
-        """``G10 L2 P1 X.. Y..`` and the tool-offset forms -> ``DataSetting``; False (the block kept as
-        ``NativeCode``) for an L the dialect does not model, or a computed L or P (the table or entry it sets
-        is known only when it runs: the interpreter reads the block again with numbers)."""
-        number = next(n for l, n in block.words if _UPPER[l] == "G" and g_key(n) == DATA_KEY)
-        at = ctx.at(block, col_of_word(block, "G", number))
-        ell = whole_index(values.get("L"))
-        table = None if ell is None else self.DATA_TABLES.get(ell)
-        native = f"G{number} ({self.table(ctx).native_g[DATA_KEY]})"
-        if self.LATHE_OFFSET_INPUT and "L" not in values:
-            distance = codes.get("03")
-            lathe = lathe_offset_setting(block, ctx, number, values, used, self.family(), (
-                distance[2] if distance is not None else ctx.state.distance) == "incremental", _UPPER)
-            if lathe is not None:
-                block.add(lathe)
-                return True
-        if table is None or isinstance(values.get("P"), Expr):
-            block.add(NativeCode(self.DIALECT, native, block.text or ""))
-            return False
-        name, first, last = table
-        code = f"G{number} L{ell}"
-        p = whole_index(values.get("P"))
-        if p is None:
-            raise ProgramError(f"{code} needs the entry it sets, P{first}-P{last}", at)
-        if not first <= p <= last:
-            raise ProgramError(f"{code} P{p}: the entry is P{first}-P{last}", ctx.at(block, ctx.column_of(block, "P")))
-        letters = (AXIS_LETTERS | _ROTATION if self.DATA_ROTATION and name == "work_offset" else AXIS_LETTERS) \
-            if name.startswith("work_offset") else frozenset("R")
-        data = {k: real(v) for k, v in values.items() if k in letters}
-        if set(values) - letters - {"L", "P", "N", "O"}:  # a word the IR does not model (LinuxCNC's R)
-            block.add(NativeCode(self.DIALECT, native, block.text or ""))
-            return False
-        if not data:
-            raise ProgramError(f"{code} P{p} sets nothing (no {'axis word' if 'R' not in letters else 'R'})", at)
-        used.update(("L", "P", *data))
-        distance = codes.get("03")
-        incremental = self.DATA_INCREMENTAL and (
-            distance[2] if distance is not None else ctx.state.distance) == "incremental"
-        if p == 0 and name == "work_offset" and self.DATA_P0_ACTIVE:
-            p = ctx.state.work_offset
-        keep = {"L", "P", *data}
-        text = " ".join(letter + num for letter, num in block.words
-                        if _UPPER[letter] in keep or _UPPER[letter] == "G" and g_key(num) == DATA_KEY)
-        block.add(DataSetting(self.family(), name, p, data, incremental, text))
-        return True
+        """``G10 L2 P1 X.. Y..`` and the tool-offset forms -> ``DataSetting`` (``postproc.rs274.data_setting``);
+        False: the block is kept as ``NativeCode``."""
+        return read_data_setting(self, block, ctx, codes, values, used)
 
     def machine_codes(self, ctx: Context) -> dict[tuple[str, str], Any]:
         """This run's machine-specific codes (the family's defaults for the set-up's variant, then the
@@ -399,7 +332,7 @@ class WordBlockSyntax(Syntax):
                 if arg != "cancel":
                     if "H" not in values:
                         self._bare_length(block, ctx, num)
-                    ctx.run_data[_LENGTH_REGISTER] = True
+                    ctx.run_data[LENGTH_REGISTER] = True
                     used.add("H")
                 block.add(ToolLengthOffset(arg, values.get("H") if arg != "cancel" else None))
             elif kind == "dwell":
@@ -463,37 +396,12 @@ class WordBlockSyntax(Syntax):
         block.add(Motion(mode, {k: real(v) for k, v in axes.items()}, center, radius))
 
     def _length_register(self, block: Block, ctx: Context, values: dict[str, Any], used: set[str]) -> None:
-        """An offset register H without G43/G44/G49 in its block (``G53 G0 Z0 H0``): while a tool length
-        offset is in force it selects that register's offset [V: Fanuc 0i-MB operator's manual 14.1.2,
-        "independent specification of the H command"]; under G49 H0 (whose offset is always zero) leaves
-        the length offset cancelled [K: Fanuc 0i-F operator's manual, offset number 0; Haas mill operator's
-        manual, H00]; another register there takes effect only with a later G43/G44 and is refused."""
-        register = values["H"]
-        ctx.run_data[_LENGTH_REGISTER] = True
-        mode = ctx.state.length
-        if mode != "cancel":
-            block.add(ToolLengthOffset(mode, register))
-        elif not isinstance(register, Expr) and int(register) == 0:
-            block.add(ToolLengthOffset("cancel"))
-        else:
-            raise ProgramError(f"H{self._word_text(block, 'H')} with no tool length offset in force: a register "
-                               f"takes effect with {self.spell('length', 'positive')} or "
-                               f"{self.spell('length', 'negative')} (write it in their block)",
-                               ctx.at(block, ctx.column_of(block, "H")))
-        used.add("H")
+        """An H without G43/G44/G49 in its block (``postproc.rs274.length_words.length_register``)."""
+        length_register(self, block, ctx, values, used)
 
     def _bare_length(self, block: Block, ctx: Context, num: str) -> None:
-        """G43/G44 without H takes the register in force, the H last programmed (modal) [K: Fanuc 0i-F
-        operator's manual, tool length offset]; at a program's start the machine's (the last program's H, or
-        H0 after a reset that clears it: parameter 5003#6 LVK [K]). Haas taken as Fanuc; whether its Setting
-        15 (H & T code agreement) gives the spindle tool's register is not confirmed [?]. Not carried over
-        here (after a jump the last H in the text need not be the last run): refused, saying which case."""
-        at = ctx.at(block, col_of_word(block, "G", num))
-        if ctx.run_data.get(_LENGTH_REGISTER):
-            raise ProgramError(f"G{num} without an offset register H: it takes the H last programmed, which "
-                               f"this reader does not carry over (write the H in this block)", at)
-        raise ProgramError(f"G{num} without an offset register H, and no H programmed before it: the register "
-                           f"in force is the machine's, known only to it (program G{num} H..)", at)
+        """G43/G44 without H (``postproc.rs274.length_words.bare_length``)."""
+        bare_length(block, ctx, num)
 
     def cycle_data_letters(self, ctx: Context) -> str:
         """The addresses a hole cycle takes besides the axes and F (the family's R, Q, P and the repeat
@@ -598,7 +506,6 @@ CUTTER_H_HINT: Final = ("; if the controller takes it from H (Fanuc 0M), set <Co
 """What an error about ``G42 H19`` adds: the set-up option under which it reads."""
 
 
-_LENGTH_REGISTER: Final = "rs274.length_register"  # ctx.run_data: an H has been programmed (``_bare_length``)
 
 
 def _dwells(codes: dict[str, tuple[str, str, object, str]], cycle_block: bool) -> bool:
@@ -616,20 +523,6 @@ def _motion_col(block: Block, ctx: Context, codes: dict[str, Any], axes: dict[st
     if "01" in codes:
         return col_of_word(block, "G", codes["01"][3])
     return ctx.column_of(block, next(iter(axes))) if axes else 1
-
-
-def col_of_word(block: Block, letter: str, num: str) -> int:
-    """Column of the word ``letter``+``num`` as written (comments skipped); 1 when not found."""
-    for col, found, text in word_columns(block.text or ""):
-        if found.upper() == letter.upper() and text == num:
-            return col
-    return 1
-
-
-def second_col(block: Block, letter: str) -> int:
-    """Column of the second word with ``letter`` (the one that repeats an address)."""
-    cols = [col for col, found, _ in word_columns(block.text or "") if found.upper() == letter.upper()]
-    return cols[1] if len(cols) > 1 else 1
 
 
 def _use_present(used: set[str], values: dict[str, Any], letters: str) -> None:

@@ -11,6 +11,8 @@ from __future__ import annotations
 
 from typing import Final
 
+from mypy_extensions import i64
+
 CANONICAL: Final = 1
 """``scan``'s answer for a canonical line without G or M words (a CAM line: N, axes, F)."""
 CODES: Final = 2
@@ -26,6 +28,8 @@ _KIND: Final = bytes(_AXIS if chr(c) in "XYZABCUVWIJRQF" else _CODE if chr(c) in
                      for c in range(256))
 """Per byte: a letter whose number has a decimal point, a letter of a whole number, or neither."""
 _MAX_FRACTION: Final = 6
+_LETTERS: Final[list[str]] = [chr(c) for c in range(128)]
+"""An ASCII byte's character (compiled: a list item, not a one-character slice of the line)."""
 
 
 NO_WORDS: Final[list[tuple[str, str]]] = []
@@ -56,13 +60,15 @@ def scan_words(text: str) -> tuple[int, list[tuple[str, str]], int]:
         b = text.encode("ascii")  # compiled, a C call; ``str.isascii`` would be a method look-up
     except UnicodeEncodeError:
         return 0, NO_WORDS, -1
-    n = len(b)
+    # Positions as i64 (compiled: machine integers, not tagged ones whose every step checks for overflow).
+    n: i64 = len(b)
     kind = _KIND
+    letters = _LETTERS
     canonical = True
     codes = False
     words: list[tuple[str, str]] = []
     sequence = -1
-    i = 0
+    i: i64 = 0
     while True:
         start = i
         c = b[i]
@@ -116,7 +122,7 @@ def scan_words(text: str) -> tuple[int, list[tuple[str, str]], int]:
                 canonical = False  # 'X10': no point
         else:
             return 0, NO_WORDS, -1
-        words.append((text[start], text[start + 1:i]))
+        words.append((letters[c], text[start + 1:i]))
         if i == n:
             return (CANONICAL if canonical else WORDS) | (CODES if codes else 0), words, sequence
         if b[i] != 32:

@@ -25,13 +25,14 @@ from postproc.compensation.tool_table import ToolTable
 from postproc.cycles.lathe_expansion import (expand, finishing_split, nose_shape, profile_segments, start_point,
                                              to_sections)
 from postproc.cycles.lathe_lowering import NOSE_PROFILE, THREAD_CHAMFER
-from postproc.errors import PostprocError, ProgramError
+from postproc.errors import PostprocError, ProgramError, UnsupportedError
 from postproc.expr import Expr
-from postproc.ir import Block, CompoundMotion, CutterCompensation, CycleCall, MachineFunction, Motion, Sequence
+from postproc.ir import (Block, CompoundMotion, CutterCompensation, CycleCall, DataSetting, MachineFunction, Motion,
+                         Sequence)
 from postproc.lathe_sections import InProfile, LatheCycle
 from postproc.syntax import Syntax
 
-from .lathe_words import read_cycle
+from .lathe_words import defaults, read_cycle
 
 if TYPE_CHECKING:
     from postproc.cycles.turning.profile import Seg
@@ -44,6 +45,11 @@ end) until one declared ``thread-chamfer-on``."""
 NOSE_KEY = "LatheCycleSyntax.nose"
 """``ctx.state.extra`` key: (ns, nf) -> the nose compensation its first block turns on (mode, register)."""
 ROUGHING = frozenset(("turn_rough", "face_rough", "pattern_repeat"))
+OFFSETS_KEY = "LatheCycleSyntax.offsets"
+"""``ctx.state.extra`` key: the offset memory once a ``G10`` wrote into it (``_note_offsets``)."""
+MODAL_NOSE_KEY = "LatheCycleSyntax.modal_nose"
+"""``ctx.state.extra`` key: the tool nose radius compensation in force outside the cycles (mode, register), absent
+while none is (``_note_compensation``)."""
 MAX_PROFILE_BLOCKS = 100_000
 """Blocks held at most while looking for a profile's last block."""
 _QUIET = frozenset(("Sequence", "Comments"))
@@ -62,6 +68,10 @@ class LatheCycleSyntax(Syntax):
         for block in stream:
             if "MachineFunction" in block.sections:
                 _thread_chamfer_switch(block, ctx)
+            if "CutterCompensation" in block.sections:
+                _note_compensation(block, ctx)
+            if "DataSetting" in block.sections:
+                _note_offsets(block, ctx)
             call = block.sections.get("CycleCall")
             if not isinstance(call, CycleCall) or call.kind not in LatheCycle.CYCLE_KINDS:
                 yield block
@@ -95,6 +105,10 @@ class LatheCycleSyntax(Syntax):
         cycle = read_cycle(kind, block, ctx, code, start)
         if kind == "thread_multi" and ctx.state.extra.get(CHAMFER_OFF_KEY):
             cycle.params["chamfer"] = 0  # no angle out of the thread (Haas M24)
+        elif kind == "thread_single" and ctx.setup.controller.variant == "haas" \
+                and not ctx.state.extra.get(CHAMFER_OFF_KEY):
+            # Haas M23, its power-on default (``_thread_chamfer_switch``)
+            cycle.params["chamfer"] = int(defaults(ctx)["thread_chamfer"])
         del block.sections["CycleCall"]
         block.add(cycle)
         return cycle, code
@@ -124,6 +138,12 @@ class LatheCycleSyntax(Syntax):
         except ProgramError as err:
             raise ProgramError(f"{err.message}" if err.message.startswith(code) else f"{code}: {err.message}",
                                ctx.at(block)) from None
+        if cycle.kind == "turn_finish" and MODAL_NOSE_KEY in ctx.state.extra and moves \
+                and (moves[-1].kind != "rapid" or (moves[-1].x, moves[-1].z) != start):
+            raise UnsupportedError(f"{code}: under tool nose radius compensation the offset is temporarily cancelled "
+                                   "on the return to the start point [K], and this profile ends at it (no return): "
+                                   "where the tool then stands is not modelled; end the profile away from the start "
+                                   "point", ctx.at(block))
         if any(move.kind != "rapid" and move.feed == 0.0 for move in moves):
             # a cycle cuts at F as a G01 does: Fanuc alarms on F0 (PS0011 FEED ZERO, Fanuc T manual [K]; GSK
             # 980TDc alike [?]), rs274 and grbl refuse the expanded G1 (block_rules.ZERO_FEED) [V]
@@ -227,6 +247,9 @@ class LatheCycleSyntax(Syntax):
                 if nose is not None:
                     shape = _nose_shape(segs, start, nose, cycle, rough_type, ctx, code)
                     cycle.params[NOSE_PROFILE] = 1
+                elif MODAL_NOSE_KEY in ctx.state.extra:
+                    shape = _modal_nose_shape(segs, start, ctx.state.extra[MODAL_NOSE_KEY], cycle, rough_type,
+                                              ctx, code) or segs
                 ctx.state.extra.setdefault(PROFILES_KEY, {})[(ns, nf)] = segs
                 ctx.state.extra.setdefault(NOSE_KEY, {})[(ns, nf)] = nose
                 self._run(block, ctx, cycle, code, shape, rough_type)
@@ -244,8 +267,17 @@ def _thread_chamfer_switch(block: Block, ctx: Context) -> None:
     """A code declared ``thread-chamfer-off`` turns the angled pull-out off for the multiple threading cycles
     after it, ``thread-chamfer-on`` back on with the set-up's ``threadChamfer`` (Haas M24 and M23, the
     Fanuc dialect's Haas lathe defaults; another family gets the code as a comment, the cycles carrying
-    their chamfer: ``postproc.cycles.lathe_lowering``). The single threading cycle, which the same codes
-    switch on Haas, is read without a chamfer either way."""
+    their chamfer: ``postproc.cycles.lathe_lowering``). On a Haas lathe the same codes switch the single
+    threading cycle's (G92) pull-out too, and M23 is in force at power-on [K: Haas lathe operator's manual,
+    M23 "Angle Out of Thread On": "M23 commands the control to perform a chamfer at the end of a thread
+    executed by G76 or G92", M24 none, each in force until the other, M23 the default at power-on and reset;
+    Settings 95 and 96 the chamfer's size (in leads) and angle; as known, not re-read here]: a Haas G92 pulls
+    out at 45 degrees over the set-up's ``threadChamfer`` tenths of the lead (Setting 95 = threadChamfer / 10
+    [?: its factory value 1.000 and Setting 96's 45 degrees are from a third-party page,
+    industrialmonitordirect.com "Fixing G76 threading tool pull-off groove on Haas lathe"; another angle is
+    not modelled]), as its G76 does, and square under M24. Fanuc T's own G92 chamfers only on a machine
+    signal [K: 0i-F, "Threading cycle (G92)": "a signal from the machine tool initiates thread chamfering"]:
+    read square."""
     function = block.sections.get("MachineFunction")
     if isinstance(function, MachineFunction) and function.action in THREAD_CHAMFER:
         ctx.state.extra[CHAMFER_OFF_KEY] = function.action == THREAD_CHAMFER[1]
@@ -289,21 +321,89 @@ def _nose_shape(segs: list[Seg], start: tuple[float, float], nose: tuple[str, in
     """The shape a roughing cycle roughs to under the profile's nose compensation: the radius and tip of
     the offset the T code selected (``T0101``: 1) or the one G41/G42 names, from the set-up's ``<Tool>``."""
     mode, register = nose
-    if register is None:
-        tool = ctx.state.tool
-        register = tool % 100 if isinstance(tool, int) else None
-    if not register:
-        raise ProgramError(f"{code}: the profile's tool nose radius compensation takes the radius of the offset "
-                           "the T code selected, and none is (program T with its offset number, T0101)")
-    table = ToolTable(ctx.setup)
-    radius = table.radius(register) / (25.4 if ctx.state.units == "inch" else 1.0)
+    radius, tip = _nose_offset(register, ctx, code, "the profile's")
     if radius == 0.0:
         return list(segs[:-1])
     rules = ctx.cutter_rules
     if rules is None:
         raise ProgramError(f"{code}: the profile's tool nose radius compensation cannot be simulated: the "
                            "controller's compensation rules are not modelled")
-    return nose_shape(segs, start, mode, radius, TIPS[table.tip(register)], cycle.kind, rough_type, code, rules)
+    return nose_shape(segs, start, mode, radius, tip, cycle.kind, rough_type, code, rules)
+
+
+def _nose_offset(register: int | None, ctx: Context, code: str, whose: str) -> tuple[float, tuple[int, int]]:
+    """The nose radius (program units) and tip direction of the offset G41/G42 names, else of the one the T
+    code selected (``T0101``: 1), from the set-up's ``<Tool>``."""
+    if register is None:
+        tool = ctx.state.tool
+        register = tool % 100 if isinstance(tool, int) else None
+    if not register:
+        raise ProgramError(f"{code}: {whose} tool nose radius compensation takes the radius of the offset "
+                           "the T code selected, and none is (program T with its offset number, T0101)")
+    table = _offsets(ctx)
+    return table.radius(register) / (25.4 if ctx.state.units == "inch" else 1.0), TIPS[table.tip(register)]
+
+
+def _offsets(ctx: Context) -> ToolTable:
+    """The program's offset memory as far as it is read: the set-up's ``<Tool>``s and what a ``G10`` before
+    wrote (``_note_offsets``), as the simulation's compensation reads it."""
+    table = ctx.state.extra.get(OFFSETS_KEY)
+    return table if isinstance(table, ToolTable) else ToolTable(ctx.setup)
+
+
+def _note_offsets(block: Block, ctx: Context) -> None:
+    """A programmable data input into the offset memory (Fanuc T ``G10 P X Z R Q``) is read where it stands."""
+    setting = block.sections["DataSetting"]
+    if isinstance(setting, DataSetting) and not any(isinstance(v, Expr) for v in setting.values.values()):
+        table = _offsets(ctx)
+        if table.write(setting, 25.4 if ctx.state.units == "inch" else 1.0):
+            ctx.state.extra[OFFSETS_KEY] = table
+
+
+def _note_compensation(block: Block, ctx: Context) -> None:
+    """Follow G40/G41/G42 outside the cycles (``MODAL_NOSE_KEY``); one in a cycle's own block is refused by the
+    block syntax (``lathe_block_syntax``: PS0325 on Fanuc T [K: ``rules.FANUC_T``])."""
+    cc = block.sections["CutterCompensation"]
+    if not isinstance(cc, CutterCompensation):
+        return
+    if cc.mode in ("left", "right") and not isinstance(cc.register, Expr):
+        ctx.state.extra[MODAL_NOSE_KEY] = (cc.mode, cc.register if isinstance(cc.register, int) else None)
+    else:
+        ctx.state.extra.pop(MODAL_NOSE_KEY, None)
+
+
+def _modal_nose_shape(segs: list[Seg], start: tuple[float, float], modal: tuple[str, int | None],
+                      cycle: LatheCycle, rough_type: str, ctx: Context, code: str) -> list[Seg] | None:
+    """The shape a roughing cycle roughs to under the compensation in force before it, where the controller's
+    rules run it so (``CutterRules.roughing_cycles``: Fanuc T's G71/G72 [K]): the finishing shape with the
+    compensation applied, started up at its first block from the start point and ending square to its last
+    block (the offset is temporarily cancelled for the return to the start point), as the imaginary tip's path
+    (``turning.nose_path`` over the profile and that return). None where the rules do not say (the lowering
+    refuses the cycle by name)."""
+    rules = ctx.cutter_rules
+    if rules is None or cycle.kind not in rules.roughing_cycles:
+        return None
+    if rough_type == "II":
+        raise UnsupportedError(f"{code}: a type II cycle (its first profile block names both axes) under tool nose "
+                               "radius compensation: how the controller roughs pockets to the compensated shape is "
+                               "not in our sources [?]; cancel compensation before the cycle, or program a type I "
+                               "profile")
+    mode, register = modal
+    try:
+        radius, tip = _nose_offset(register, ctx, code, "the")
+    except ProgramError:
+        # no radius to rough by: a copy for this controller writes the cycle as it is, and the simulation of
+        # the program refuses the G41/G42 before it for want of the same radius (``simulate.moves``)
+        return None
+    if radius == 0.0:
+        return segs
+    if len(segs) < 2:
+        raise ProgramError(f"{code}: the profile under tool nose radius compensation has no block after its first "
+                           "that moves")
+    from postproc.cycles.turning.profile import Seg as Segment
+    last = segs[-1]
+    back = Segment("line", last.x1, last.z1, start[0], start[1], None, None, None, last.line, True)
+    return nose_shape([*segs, back], start, mode, radius, tip, cycle.kind, rough_type, code, rules)
 
 
 def _rough_type(profile: list[Block], kind: str) -> str:

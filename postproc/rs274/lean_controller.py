@@ -36,6 +36,7 @@ from ..ir import (
     Block, Comments, CompoundMotion, DistanceMode, Motion, Plane, ProgramControl, Section, SpindleControl,
     ToolLengthOffset, ToolSelect,
 )
+from ..ir.keys import only_move
 from ..state import PLANE_AXES
 from .order_of_execution import split_stops_after_motion, stops_after_motion
 
@@ -98,10 +99,11 @@ def _lean_controller(blocks: Iterator[Block], ctx: Context, pause: bool) -> Iter
     for block in blocks:
         sections = block.sections
         quiet = True
-        for key in sections:
-            if key in _LEAN_WATCHED:
-                quiet = False
-                break
+        if not only_move(sections):
+            for key in sections:
+                if key in _LEAN_WATCHED:
+                    quiet = False
+                    break
         if quiet:
             arc = sections.get("Motion")
             if not isinstance(arc, Motion) or (arc.mode != "cw" and arc.mode != "ccw"):

@@ -154,11 +154,16 @@ class SectionWords(NumberWriter):
     """The dialect writes a cutting mode's blending tolerances (LinuxCNC's ``P``/``Q``); one that does not
     warns where a program gave them, as the tolerance is left to the machine's own parameters."""
 
+    PATH_CONTROL_LACK: ClassVar[str] = ""
+    """Why the dialect's code table has no modal path control code where it has none (a sentence with its
+    source, added to the refusal); empty: none said."""
+
     def path_control_words(self, s: Any, block: Block) -> list[str]:
         if s.one_shot:
             return self._code("path_once", s.mode, "a one-shot exact stop", block)
         self.note_unwritten_tolerance(s, block)
-        return self._code("path", s.mode, f"path control {s.mode}", block)
+        lack = self.PATH_CONTROL_LACK
+        return self._code("path", s.mode, f"path control {s.mode}" + (f" ({lack})" if lack else ""), block)
 
     def note_unwritten_tolerance(self, s: Any, block: Block) -> None:
         """Warn where a program's blending tolerances are not written (``WRITES_PATH_TOLERANCE``)."""
@@ -298,6 +303,11 @@ class SectionWords(NumberWriter):
     ('G10 L10', the highest register, the value's letter 'R')), then P and the value, absolute; empty when
     it has no such spelling."""
 
+    TOOL_TABLE_LACK: ClassVar[str] = ""
+    """Why a tool or cutter offset setting of another family is not written for the dialect where its controller
+    can write its tool table from a program (what, with its source, and what is not known); empty: the
+    generic reason, no such table."""
+
     WORK_OFFSET_VARIABLE: ClassVar[str] = ""
     """How the dialect sets one axis of a work offset from the program by assigning a variable, a format
     of ``index`` (1 = the first work system), ``axis`` and ``value`` (ISG ``V.G.NP[{index}].V.{axis}={value}``);
@@ -333,6 +343,8 @@ class SectionWords(NumberWriter):
             return ("the source's controller takes it at the work system's next selection, the target at once "
                     "(select the work system again right after the setting)")
         if table != "work_offset" or not spelling:
+            if table.startswith(("tool_length", "cutter_offset")) and self.TOOL_TABLE_LACK:
+                return self.TOOL_TABLE_LACK
             return "no such table can be set from a program"
         if s.incremental:
             return "it sets offsets absolutely only (the source adds to the offset in incremental mode)"

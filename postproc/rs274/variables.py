@@ -11,7 +11,7 @@ Reading or writing a variable only the machine knows is an ``EvalError`` naming 
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Callable, Hashable
+from typing import TYPE_CHECKING, Callable, Final, Hashable
 
 from ..expr import Arithmetic, EvalError, Vacancy, Value, VarKey
 from ..interp.variables import MACHINE_ONLY, ProgramAlarm, SystemRanges, system_variable
@@ -87,6 +87,8 @@ NGC_POSITION_FIRST = 5420
 with cutter compensation on [V: ``interp_parameter_def.hh``, ``rs274ngc_pre.cc`` ``Interp::read``,
 ``interp_read.cc`` ``read_integer_parameter``; LinuxCNC docs "Parameters"]."""
 NGC_POSITION = range(NGC_POSITION_FIRST, NGC_POSITION_FIRST + len(NGC_AXES))
+NGC_POSITION_READS: Final = {axis: NGC_POSITION_FIRST + i for i, axis in enumerate(NGC_AXES)}
+"""Axis -> its current position parameter (``Dialect.POSITION_READS``)."""
 NGC_POSITION_NAMES = {f"_{axis.lower()}": axis for axis in NGC_AXES}
 """``#<_x>``..``#<_w>``: the same current position, read where the expression is evaluated, without the
 cutter compensation check [V: ``interp_namedparams.cc`` ``NP_X``..: ``_setup.current_x``..]."""

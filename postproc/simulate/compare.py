@@ -15,6 +15,7 @@ from ..lowering.inverse_time import per_minute
 from .arc_moves import arc_deviation
 from .chords import pair_with_chords
 from .events import MOVES_THE_TOOL, Event
+from .move_record import MoveRecord
 from .normal_move import FEED_TOLERANCE as FEED_TOLERANCE, Move, same_feed as _same_feed  # (public names here too)
 from .runs import beyond, norm, normalise as normalise
 
@@ -143,7 +144,7 @@ def _same_event(a: Event, b: Event) -> bool:
     return True
 
 
-def compare(events_in: Iterable[Event], events_out: Iterable[Event], *, start_in: dict[str, float],
+def compare(events_in: Iterable[Event | MoveRecord], events_out: Iterable[Event | MoveRecord], *, start_in: dict[str, float],
             start_out: dict[str, float], tolerance: float, chord_tolerance: float | None = None,
             mapped: dict[str, str] | None = None) -> Report:
     """Walk two toolpaths (each with its header first) and report their largest deviation.
@@ -156,7 +157,7 @@ def compare(events_in: Iterable[Event], events_out: Iterable[Event], *, start_in
     # point in place, ``per_minute_from_first`` and ``_as_radius`` take it where they change the event
     it_in = per_minute_from_first(iter(events_in), start_in)
     it_out = per_minute_from_first(iter(events_out), start_out)
-    head_in, head_out = next(it_in, {}), next(it_out, {})
+    head_in, head_out = _event(next(it_in, {})), _event(next(it_out, {}))  # (a header is a dictionary)
     modes = (head_in.get("x_mode"), head_out.get("x_mode"))
     if modes[0] != modes[1] or (chord_tolerance is not None and "diameter" in modes):
         # a diameter program and its radius translation: compare both as radii (true geometry); chords
@@ -186,7 +187,7 @@ def compare(events_in: Iterable[Event], events_out: Iterable[Event], *, start_in
     return report
 
 
-def per_minute_from_first(events: Iterator[Event], start: dict[str, float]) -> Iterator[Event]:
+def per_minute_from_first(events: Iterator[Event | MoveRecord], start: dict[str, float]) -> Iterator[Event | MoveRecord]:
     """``per_minute(events, start)``, which converts the path from its first inverse-time feed on: until then
     the events pass as they are (``per_minute`` follows every move's end point, a dict of three floats a
     move, to know where an inverse-time move starts), and from there ``per_minute`` continues from the
@@ -194,34 +195,46 @@ def per_minute_from_first(events: Iterator[Event], start: dict[str, float]) -> I
     ``per_minute`` converts is the controlled path (``_controlled``); the events before pass with their
     controlled points as they are (``normalise`` reads them). ``tests/test_verify.py`` holds this to
     ``per_minute(_controlled(events))`` on random paths."""
-    head = next(events, None)
-    if head is None:
+    first = next(events, None)
+    if first is None:
         return
+    head = _event(first)
     if head.get("feed_mode") == "inverse_time":
         yield from per_minute(_controlled(chain((head,), events)), start)
         return
     yield head
-    last: Event | None = None
+    last: Event | MoveRecord | None = None
     for ev in events:
-        if ev.get("feed_mode") == "inverse_time":
+        if _feed_mode(ev) == "inverse_time":
             rest = per_minute(_controlled(chain((head, ev), events)), start if last is None else _resolved(last))
             next(rest)  # the header, already given
             yield from rest
             return
-        if "move" in ev:
+        if isinstance(ev, MoveRecord) or "move" in ev:  # (a record is a straight move: ``postproc.simulate.move_record``)
             last = ev
         yield ev
 
 
-def _controlled(events: Iterator[Event]) -> Iterator[Event]:
+def _event(item: Event | MoveRecord) -> Event:
+    """An event as its dictionary (``MoveRecord.event``)."""
+    return item.event() if isinstance(item, MoveRecord) else item
+
+
+def _feed_mode(item: Event | MoveRecord) -> Any:
+    """An event's ``feed_mode`` (None: it states none), a record's by field."""
+    return item.feed_mode if isinstance(item, MoveRecord) else item.get("feed_mode")
+
+
+def _controlled(events: Iterator[Event | MoveRecord]) -> Iterator[Event]:
     """The path the machine runs: a move's controlled point (tool length, cutter radius) in place of its
     programmed one, so a program that offsets the tool and one that writes the offset path compare equal."""
     for ev in events:
         yield _resolved(ev)
 
 
-def _resolved(ev: Event) -> Event:
+def _resolved(item: Event | MoveRecord) -> Event:
     """An event with its controlled point in place of its programmed one (``_controlled``)."""
+    ev = _event(item)
     controlled = ev.get("controlled")
     if controlled is None:
         return ev
@@ -303,7 +316,7 @@ def compare_settings(report: Report, settings_in: list[tuple[int, str, str]],
 def _values(changes: list[tuple[int, str]], most: int = 4) -> str:
     text = ", ".join(f"{value} (line {line})" for line, value in changes[:most])
     return text + (f", ... {len(changes) - most} more" if len(changes) > most else "")
-def _as_radius(events: Iterator[Event], head: Event) -> Iterator[Event]:
+def _as_radius(events: Iterator[Event | MoveRecord], head: Event) -> Iterator[Event | MoveRecord]:
     """The events of a toolpath whose x is a diameter (``x_mode``), with x and cx as radii (of the controlled
     point: ``_controlled``)."""
     if head.get("x_mode") != "diameter":

@@ -26,6 +26,7 @@ from typing import Any, Callable, Final, Iterable
 from mypy_extensions import mypyc_attr
 
 from ..geometry import PLACES
+from .move_record import MoveRecord
 
 _PLACES: Final = 6
 _UNITS: Final = 1_000_000
@@ -185,11 +186,91 @@ def _items_parts(items: dict[Any, Any], parts: list[str], place: int) -> bool:
     return True
 
 
-def event_text(event: dict[Any, Any], fallback: Callable[[Any], str]) -> str:
+# the texts of a record's fixed keys, each after the item before it (the line's first, with the brace)
+_KEYS_LINE: Final = '{"line": '
+_KEY_MOVE: Final = ', "move": '
+_KEY_F: Final = ', "f": '
+_KEY_FEED_MODE: Final = ', "feed_mode": '
+_KEY_CONTROLLED: Final = ', "controlled": '
+
+
+@mypyc_attr(allow_interpreted_subclasses=True)
+class _KeyTexts:
+    """The texts of a record's axis keys (``MoveRecord.keys``: one tuple a simulation), kept for the tuple met last."""
+
+    def __init__(self) -> None:
+        self.keys: tuple[str, ...] = ()
+        self.later: list[str] = []
+        """Each key after another item (``', "x": '``)."""
+        self.first: list[str] = []
+        """Each key as the controlled point's (``'{"x": '`` for the first, as ``later`` for the others)."""
+
+    def update(self, keys: tuple[str, ...]) -> None:
+        self.keys = keys
+        self.later = [_key_text(key, True) for key in keys]
+        self.first = [_key_text(key, i > 0) for i, key in enumerate(keys)]
+
+
+_RECORD_KEYS: Final = _KeyTexts()
+
+
+def _number_parts(value: float | int, parts: list[str]) -> None:
+    """A record's number (``num``'s: an int or a float) as json writes it."""
+    if isinstance(value, float):
+        _float_parts(value, parts)
+    else:
+        parts.append(str(value))
+
+
+def _record_parts(record: MoveRecord, parts: list[str]) -> None:
+    """Append the JSON text of ``record`` (``MoveRecord.event()``'s, without the closing brace): field by field, in the
+    order ``event()`` gives its keys, with no look-up or type test of a key (``tests/test_toolpath_numbers.py``
+    holds it to json's text of ``event()``)."""
+    texts = _RECORD_KEYS
+    keys = record.keys
+    if keys is not texts.keys:
+        texts.update(keys)
+    parts.append(_KEYS_LINE)
+    parts.append(str(record.line))
+    parts.append(_KEY_MOVE)
+    kind = record.kind
+    word = _WORDS.get(kind)
+    parts.append(word if word is not None else _word_text(kind))
+    later = texts.later
+    point = record.point
+    for i in range(len(keys)):
+        parts.append(later[i])
+        _number_parts(point[i], parts)
+    f = record.f
+    if f is not None:
+        parts.append(_KEY_F)
+        _number_parts(f, parts)
+    mode = record.feed_mode
+    if mode is not None:
+        parts.append(_KEY_FEED_MODE)
+        parts.append(_word_text(mode))
+    controlled = record.controlled
+    if controlled is not None:
+        parts.append(_KEY_CONTROLLED)
+        if not keys:
+            parts.append("{}")
+            return
+        first = texts.first
+        for i in range(len(keys)):
+            parts.append(first[i])
+            _number_parts(controlled[i], parts)
+        parts.append("}")
+
+
+def event_text(event: dict[Any, Any] | MoveRecord, fallback: Callable[[Any], str]) -> str:
     """The JSON text of one event (without its line end)."""
+    parts: list[str] = []
+    if isinstance(event, MoveRecord):
+        _record_parts(event, parts)
+        parts.append("}")
+        return "".join(parts)
     if not event:
         return "{}"
-    parts: list[str] = []
     if not _items_parts(event, parts, 0):
         return fallback(event)
     parts.append("}")
@@ -209,7 +290,7 @@ class EventValueError(ValueError):
         self.event = event
 
 
-def write_lines(events: Iterable[dict[Any, Any]], write: Callable[[str], object],
+def write_lines(events: Iterable[dict[Any, Any] | MoveRecord], write: Callable[[str], object],
                 fallback: Callable[[Any], str]) -> None:
     """Write each event as its JSON line (``event_text``) through ``write``, ``_CHUNK`` lines at a time: one join
     and one write a chunk, not a list, a join, a concatenation and a text file's write a line (~2k
@@ -221,7 +302,10 @@ def write_lines(events: Iterable[dict[Any, Any]], write: Callable[[str], object]
         for event in events:
             mark = len(parts)
             try:
-                if not event:
+                if isinstance(event, MoveRecord):
+                    _record_parts(event, parts)
+                    parts.append("}\n")
+                elif not event:
                     parts.append("{}\n")
                 elif _items_parts(event, parts, 0):
                     parts.append("}\n")
@@ -230,7 +314,7 @@ def write_lines(events: Iterable[dict[Any, Any]], write: Callable[[str], object]
                     parts.append(fallback(event) + "\n")
             except ValueError as err:
                 del parts[mark:]
-                raise EventValueError(str(err), event) from None
+                raise EventValueError(str(err), event.event() if isinstance(event, MoveRecord) else event) from None
             count += 1
             if count == _CHUNK:
                 text = "".join(parts)

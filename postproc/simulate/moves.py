@@ -27,6 +27,7 @@ from ..lowering.inverse_time import move_length
 from ..lowering.program_end import EndTracker
 from ..state import PLANE_AXES, ModalState
 from .events import LATHE_TOOL_OFFSET, LINEAR_AXES as _LINEAR, TOUCH_OFF, UNEVALUATED, Event, num, start_position
+from .move_record import Emitted, MoveRecord
 from .travel import TravelCheck, TravelError
 from .work_offsets import declared_offsets, offset_beyond_frame
 
@@ -39,7 +40,7 @@ _INITIAL_SETTINGS = {"cutter compensation": "off", "work offset": "1", LATHE_TOO
 _CENTRE_LETTER = {"X": "I", "Y": "J", "Z": "K"}
 
 
-def _nowhere(ev: Event) -> None:
+def _nowhere(ev: Emitted) -> None:
     raise AssertionError("an event released outside a block")
 
 
@@ -52,12 +53,18 @@ class Moves:
         self.ctx = ctx
         self.axes = tuple(setup.machine.axes)
         self.keys = tuple((a, a.lower()) for a in self.axes)
+        self.key_names = tuple(a.lower() for a in self.axes)
+        """The events' axis keys in the order of ``axes`` (one tuple a run, held by every ``MoveRecord``)."""
+        self.records = False
+        """A straight move is emitted as its ``MoveRecord`` (``toolpath_stream``'s readers take them), else as the
+        record's dictionary (``MoveRecord.event``)."""
         self.pos = start_position(setup)
         self.index = {a: i for i, a in enumerate(self.axes)}
         """Machine axis -> its place in ``axes`` (and in the rounded points)."""
         self.rounded: list[float | int] = [num(self.pos[a]) for a in self.axes]
         """The programmed point as the events write it (``num``), in the order of ``axes``: a list, where a
-        dictionary cost each move under a tool length ~1.5k instructions in look-ups and writes (compiled)."""
+        dictionary cost each move under a tool length ~1.5k instructions in look-ups and writes (compiled). Never
+        changed in place (nor is ``crounded``): a ``MoveRecord`` holds it; a change makes a new list."""
         self.modal = ModalState()
         """The program's modal state (units, plane, distance and feed mode, tool...), in program terms."""
         self.home = {axis: t.home * setup.machine.mm() for axis, t in setup.travel.items()
@@ -153,9 +160,9 @@ class Moves:
         queue, or the controlled point has not yet met the programmed one again)."""
         self.crounded = list(self.rounded)
         """The controlled point of the last move written, rounded (while ``compensating``), as ``rounded``."""
-        self.out: Callable[[Event], None] = _nowhere
+        self.out: Callable[[Emitted], None] = _nowhere
         """Where released events go (the ``emit`` of the block being run)."""
-        self.queued: Callable[[Event], None] = self._event
+        self.queued: Callable[[Emitted], None] = self._event
         """``_event`` bound once: a block's events while compensating (a bound method made per block cost
         ~340 instructions)."""
         self.spindle_tool: int | None = setup.machine.start_tool
@@ -285,7 +292,7 @@ class Moves:
         if isinstance(r, (int, float)):
             self.tools.set("radius", setting.index, r * self.scale)
 
-    def compensation(self, block: Block, emit: Callable[[Event], None]) -> None:
+    def compensation(self, block: Block, emit: Callable[[Emitted], None]) -> None:
         """A block's cutter compensation and tool length changes (before its motion, as the controller
         runs them): compensation ends first, so the move it queued is written with the old setting."""
         get = block.sections.get
@@ -486,6 +493,7 @@ class Moves:
             delta = before - after
             self.pos[axis] += delta
             i = self.index[axis]
+            self.rounded, self.crounded = list(self.rounded), list(self.crounded)  # (a record may hold them)
             self.rounded[i] = num(self.pos[axis])
             self.crounded[i] = num(self.crounded[i] + delta)
         self.beyond = new
@@ -498,9 +506,10 @@ class Moves:
         if self.travel is not None:
             self.travel.coordinate_set(axis, v)
         self.pos[axis] = v
+        self.rounded = list(self.rounded)  # (a record may hold it)
         self.rounded[self.index[axis]] = num(v)
 
-    def line_move(self, kind: str, target: dict[str, float], line: int, emit: Callable[[Event], None]) -> None:
+    def line_move(self, kind: str, target: dict[str, float], line: int, emit: Callable[[Emitted], None]) -> None:
         if self.compensating:
             if self._cutter_idle() and not self.diameter:
                 self._offset_line(kind, target, line)
@@ -525,15 +534,18 @@ class Moves:
                     self._feed_into(still)
                 emit(still)
             return
-        ev: Event = {"line": line, "move": kind}
-        for i, (axis, key) in enumerate(self.keys):
-            ev[key] = rounded[i]
-        if self.diameter and "x" in ev:
-            ev["x"] = num(target["X"] * 2.0)
+        point = rounded
+        if self.diameter and "X" in self.index:  # written as a diameter, kept as a radius
+            point = list(rounded)
+            point[self.index["X"]] = num(target["X"] * 2.0)
+        f: float | int | None = None
+        mode: str | None = None
         if kind != "rapid":
-            self._feed_into(ev)
+            f = self._feed_value()
+            mode = self._stated_mode()
         self.pos, self.rounded = target, rounded
-        emit(ev)
+        record = MoveRecord(line, kind, self.key_names, point, f, mode, None)
+        emit(record if self.records else record.event())
 
     def _programmed(self, axes: dict[str, float | Expr]) -> set[str]:
         """The machine axes a block's axis words name (a lathe's U and W are X and Z)."""
@@ -548,7 +560,7 @@ class Moves:
         else:
             self.ctx.diagnostics.error(err)
 
-    def arc_move(self, block: Block, m: Motion, target: dict[str, float], emit: Callable[[Event], None],
+    def arc_move(self, block: Block, m: Motion, target: dict[str, float], emit: Callable[[Emitted], None],
                  absolute: bool = False) -> None:
         plane = self.modal.plane
         a1, a2, normal = PLANE_AXES[plane]
@@ -666,54 +678,48 @@ class Moves:
     def _offset_line(self, kind: str, target: dict[str, float], line: int) -> None:
         """A straight move under a tool length alone (a whole program after its G43): ``_write``'s result,
         the programmed point rounded only on the axes that move (as ``line_move``). One pass over the axes
-        builds both points and the event: the values stay the objects ``num`` made (an int stays an int in
-        the JSON line), compared per axis rather than as dictionaries. The rounded programmed point is
-        updated in place (no other holder: every other step that sets it makes a list of its own)."""
+        builds both points (the record's lists): the values stay the objects ``num`` made (an int stays an int
+        in the JSON line), compared per axis rather than as dictionaries."""
         pos, rounded, before = self.pos, self.rounded, self.crounded
         offset = self.length.offset
         shifts = self.lathe_shift
+        point: list[float | int] = []
         crounded: list[float | int] = []
-        ev: Event = {"line": line, "move": kind}
-        ctrl: Event = {}
         moved = apart = False
-        try:
-            for i, (axis, key) in enumerate(self.keys):
-                value = target[axis]
-                r: Any
-                if value == pos[axis]:
-                    r = rounded[i]
-                else:
-                    r = num(value)
-                    rounded[i] = r
-                c: Any = r
-                if axis == LENGTH_AXIS:
-                    c = num(value + offset)
-                if shifts:
-                    shift = shifts.get(axis)
-                    if shift is not None:
-                        c = num(value + shift + (offset if axis == LENGTH_AXIS else 0.0))
-                crounded.append(c)
-                ev[key] = r
-                ctrl[key] = c
-                if not moved:  # (identity first: an axis that stays keeps its number's object; never a nan)
-                    b = before[i]
-                    if c is not b and c != b:
-                        moved = True
-                if not apart and c is not r and c != r:
-                    apart = True
-            if kind != "rapid":
-                self._feed_into(ev)  # a move it drops fixes the header's feed mode too, as ``_compensated``'s
-        except PostprocError:
-            self.rounded = [num(pos[a]) for a in self.axes]  # the block fails: its point as it was
-            raise
+        f: float | int | None = None
+        mode: str | None = None
+        for i, axis in enumerate(self.axes):
+            value = target[axis]
+            r: Any
+            if value == pos[axis]:
+                r = rounded[i]
+            else:
+                r = num(value)
+            c: Any = r
+            if axis == LENGTH_AXIS:
+                c = num(value + offset)
+            if shifts:
+                shift = shifts.get(axis)
+                if shift is not None:
+                    c = num(value + shift + (offset if axis == LENGTH_AXIS else 0.0))
+            point.append(r)
+            crounded.append(c)
+            if not moved:  # (identity first: an axis that stays keeps its number's object; never a nan)
+                b = before[i]
+                if c is not b and c != b:
+                    moved = True
+            if not apart and c is not r and c != r:
+                apart = True
+        if kind != "rapid":  # a move it drops fixes the header's feed mode too, as ``_compensated``'s
+            f = self._feed_value()
+            mode = self._stated_mode()
         if not moved:
-            self.pos = target
+            self.pos, self.rounded = target, point
             self._settle()
             return
-        if apart:
-            ev["controlled"] = ctrl
-        self.pos, self.crounded = target, crounded
-        self.out(ev)
+        self.pos, self.rounded, self.crounded = target, point, crounded
+        record = MoveRecord(line, kind, self.key_names, point, f, mode, crounded if apart else None)
+        self.out(record if self.records else record.event())
         self._settle()
 
     def _offset_arc(self, kind: str, target: dict[str, float], line: int, c: tuple[float, float], plane: str) -> None:
@@ -766,10 +772,11 @@ class Moves:
         return cutter is None or not self.cutter_started or (
             cutter.side is None and not cutter.queue and not cutter.arc_banned)
 
-    def _event(self, ev: Event) -> None:
-        """A non-motion event while compensating: behind a queued move, if any."""
+    def _event(self, ev: Emitted) -> None:
+        """A non-motion event while compensating: behind a queued move, if any (a straight move emitted after the
+        block's compensation ended, as its dictionary: the queue holds events)."""
         if self.cutter is not None:
-            self.cutter.event(ev)
+            self.cutter.event(ev.event() if isinstance(ev, MoveRecord) else ev)
         else:
             self.out(ev)
 
@@ -842,22 +849,33 @@ class Moves:
         self.feed = value if self.modal.feed_mode == "inverse_time" else value * self.scale
 
     def _feed_into(self, ev: Event) -> None:
+        """A feed move's ``f`` and, where it differs from the header's, its ``feed_mode``, into its event."""
+        ev["f"] = self._feed_value()
+        mode = self._stated_mode()
+        if mode is not None:
+            ev["feed_mode"] = mode
+
+    def _feed_value(self) -> float | int:
+        """A feed move's ``f`` as written; the first fixes the header's feed mode."""
         if self.sync is not None:  # a rigid tap: its pitch, per revolution whatever the feed mode
-            ev["f"] = num(self.sync)
-            if self.header_mode != "per_rev":
-                ev["feed_mode"] = "per_rev"
-            return
+            return num(self.sync)
         feed = self.feed
         if feed is None:
             raise ProgramError(NO_FEED, self._at(), needs="F")
         if feed != self.written_feed:  # always for nan: ``num`` refuses it at each move, as it did
             self.written_f = num(feed)
             self.written_feed = feed
-        ev["f"] = self.written_f
         if self.header_mode is None:
             self.header_mode = self.modal.feed_mode
-        elif self.modal.feed_mode != self.header_mode:
-            ev["feed_mode"] = self.modal.feed_mode
+        return self.written_f
+
+    def _stated_mode(self) -> str | None:
+        """The ``feed_mode`` a feed move states after ``_feed_value``: its own where it is not the header's (a
+        synchronised move's per revolution), else none."""
+        if self.sync is not None:
+            return None if self.header_mode == "per_rev" else "per_rev"
+        mode = self.modal.feed_mode
+        return None if mode == self.header_mode else mode
 
     # -- locations (computed only for errors) ------------------------------------------------------
     def _at(self, block: Block | None = None, word: str | None = None) -> Location:

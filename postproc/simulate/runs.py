@@ -11,6 +11,7 @@ from typing import Any, Final, Iterable, Iterator
 
 from ..geometry import CENTRE_KEYS, PLANE_INDEX, arc_sweep
 from .events import Event
+from .move_record import MoveRecord
 from .normal_move import Move, same_feed as _same_feed
 
 _hypot: Final = math.hypot
@@ -57,6 +58,22 @@ def _axes(ev: Event, controlled: Event | None, start: dict[str, float] | None = 
                 end[k] = x
                 if steps is not None:
                     steps.append(x - (0.0 if start is None else start.get(k, 0.0)))
+    return end
+
+
+def _record_end(record: MoveRecord, start: dict[str, float], steps: list[float]) -> dict[str, float]:
+    """``_axes`` of a record's event (its controlled point where it has one), read by field: its keys are the
+    machine's axes, each in both points; ``steps`` receives ``end - start`` axis by axis."""
+    end: dict[str, float] = {}
+    keys = record.keys
+    controlled = record.controlled
+    values = record.point if controlled is None else controlled
+    for i in range(len(keys)):
+        k = keys[i]
+        if _is_axis(k):
+            x = _real(values[i])
+            end[k] = x
+            steps.append(x - start.get(k, 0.0))
     return end
 
 
@@ -173,14 +190,79 @@ def _merge(run: Move, m: Move, eps: float) -> bool:
         return False
     if run.direction is not None and m.direction is not None:
         return _extends(run, m.end, m.last_line, eps)
-    if run.centre is not None and m.centre is not None and run.plane == m.plane:
-        if (_hypot(run.centre[0] - m.centre[0], run.centre[1] - m.centre[1]) > eps
-                or abs(run.radius - m.radius) > eps or not _one_helix(run, m, eps)):
+    return merge_arc(run, m, eps)
+
+
+def merge_arc(run: Move, m: Move, eps: float) -> bool:
+    """Extend the arc run ``run`` by the arc ``m`` (same kind and feed: the caller checked) when they are one
+    circle: their centres and start radii within ``eps``, or else the path of the one that sweeps less within
+    ``eps`` of the other's circle (``_off_circle``; a run that sweeps less takes ``m``'s centre); and the axes
+    outside the plane moving at one rate per angle (``_one_helix``). Why the path too: a controller that moves a
+    tiny arc's centre onto its chord's bisector (ISG, Fagor: ``postproc.arc_end``) cuts the other's circle within
+    a micron with a centre a micron or more away, so by centres alone one side of a comparison merged a helix the
+    other split and verify said the structure differs (issue 26: a CamBam helical bore, the 0.012 mm arc where
+    each turn meets the next, towards ISG and Fagor; ``tests/test_verify_arc_runs.py``)."""
+    if run.centre is None or m.centre is None or run.plane != m.plane:
+        return False
+    recentre = False
+    if _hypot(run.centre[0] - m.centre[0], run.centre[1] - m.centre[1]) > eps or abs(run.radius - m.radius) > eps:
+        if m.sweep <= run.sweep:
+            if _off_circle(m, run.centre, run.radius) > eps:
+                return False
+        elif _off_circle(run, m.centre, m.radius) > eps:
             return False
-        run.end, run.last_line = m.end, m.last_line
-        run.sweep += m.sweep
-        return True
-    return False
+        else:
+            recentre = True
+    if not _one_helix(run, m, eps):
+        return False
+    if recentre:
+        _recentre(run, m.centre)
+    run.end, run.last_line = m.end, m.last_line
+    run.sweep += m.sweep
+    return True
+
+
+_TWO_PI: Final = 2.0 * math.pi
+
+
+def _off_circle(a: Move, c: tuple[float, float], r: float) -> float:
+    """How far the arc ``a``'s path (from its start about its centre through its sweep, the radius changing evenly
+    with the angle from the start radius to the end radius, as the simulator draws it) strays from the circle
+    about ``c`` of radius ``r``, in the plane: the largest at its ends and where it points along the line of the
+    two centres (the distance from ``c`` is extreme there, up to the radius's slope: a move within ``eps`` of a
+    circle changes its radius by far less than its centre is off)."""
+    plane = a.plane or "XY"
+    ac = a.centre
+    assert ac is not None
+    s, e = _plane_point(a.start, plane), _plane_point(a.end, plane)
+    worst = max(abs(_hypot(s[0] - c[0], s[1] - c[1]) - r), abs(_hypot(e[0] - c[0], e[1] - c[1]) - r))
+    dx, dy = ac[0] - c[0], ac[1] - c[1]
+    if (dx == 0.0 and dy == 0.0) or a.sweep <= 0.0:
+        return worst
+    r0, r1 = a.radius, _hypot(e[0] - ac[0], e[1] - ac[1])
+    a0 = math.atan2(s[1] - ac[1], s[0] - ac[0])
+    sign = -1.0 if a.kind == "cw" else 1.0
+    phi = math.atan2(dy, dx)
+    for base in (phi, phi + math.pi):
+        t = ((base - a0) * sign) % _TWO_PI  # the angle from the start, the way the arc turns
+        while t < a.sweep:
+            rho = r0 + (r1 - r0) * t / a.sweep
+            theta = a0 + sign * t
+            worst = max(worst, abs(_hypot(ac[0] + rho * math.cos(theta) - c[0],
+                                          ac[1] + rho * math.sin(theta) - c[1]) - r))
+            t += _TWO_PI
+    return worst
+
+
+def _recentre(run: Move, c: tuple[float, float]) -> None:
+    """The run about the centre ``c`` of the arc that continues it: its start radius and its sweep measured about
+    ``c`` (the whole turns it made kept)."""
+    plane = run.plane or "XY"
+    s, e = _plane_point(run.start, plane), _plane_point(run.end, plane)
+    base = arc_sweep(s, e, c, run.kind == "cw")
+    run.sweep = base + round((run.sweep - base) / _TWO_PI) * _TWO_PI
+    run.centre = c
+    run.radius = _hypot(s[0] - c[0], s[1] - c[1])
 
 
 def _extends(run: Move, end: dict[str, float], line: int, eps: float) -> bool:
@@ -251,7 +333,7 @@ def _one_helix(run: Move, m: Move, eps: float) -> bool:
     return True
 
 
-def normalise(events: Iterable[Event], start: dict[str, float], eps: float,
+def normalise(events: Iterable[Event | MoveRecord], start: dict[str, float], eps: float,
               codes: list[Event] | None = None) -> Iterator[Move | Event]:
     """Moves merged into runs, machine events as they are; the header is skipped. A move ends at its
     controlled point where it has one (``compare._controlled``, read in place). ``codes``: the events of a
@@ -259,31 +341,40 @@ def normalise(events: Iterable[Event], start: dict[str, float], eps: float,
     are listed, not compared (``compare_machine_codes``)."""
     pos = {k.lower(): v for k, v in start.items()}
     run: Move | None = None
-    for ev in events:
-        if "toolpath" in ev:
-            continue
-        if codes is not None and "code" in ev:
-            codes.append(ev)
-            continue
-        if "move" not in ev:
-            if run is not None:
-                yield run
-                run = None
-            yield ev
-            continue
-        kind = ev["move"]
-        if kind == "cw" or kind == "ccw":
-            m = _move(ev, pos)
-            pos = m.end
-            if run is not None and _merge(run, m, eps):
-                continue
-            if run is not None:
-                yield run
-            run = m
-            continue
-        # a straight move: merged into the run without a ``Move`` of its own where it continues it
+    for item in events:
         steps: list[float] = []
-        end = _axes(ev, ev.get("controlled"), pos, steps)
+        if isinstance(item, MoveRecord):  # a straight move, read by field
+            kind = item.kind
+            end = _record_end(item, pos, steps)
+            raw_f: Any = item.f
+            line = item.line
+        else:
+            ev = item
+            if "toolpath" in ev:
+                continue
+            if codes is not None and "code" in ev:
+                codes.append(ev)
+                continue
+            if "move" not in ev:
+                if run is not None:
+                    yield run
+                    run = None
+                yield ev
+                continue
+            kind = ev["move"]
+            if kind == "cw" or kind == "ccw":
+                m = _move(ev, pos)
+                pos = m.end
+                if run is not None and _merge(run, m, eps):
+                    continue
+                if run is not None:
+                    yield run
+                run = m
+                continue
+            end = _axes(ev, ev.get("controlled"), pos, steps)
+            raw_f = None
+            line = 0
+        # a straight move: merged into the run without a ``Move`` of its own where it continues it
         square = 0.0
         for step in steps:
             square += step * step
@@ -294,9 +385,10 @@ def normalise(events: Iterable[Event], start: dict[str, float], eps: float,
                 pos = end
                 continue
         before, pos = pos, end
-        raw_f = ev.get("f")
+        if not isinstance(item, MoveRecord):  # (read where the move is not dropped, as before the records)
+            raw_f = item.get("f")
+            line = item["line"]
         f = None if raw_f is None else _real(raw_f)
-        line = ev["line"]
         if run is not None and run.direction is not None and (length < 0.0 or length > 0.0) and kind == run.kind \
                 and _same_feed(run.f, f) and _extends(run, end, line, eps):
             continue
@@ -305,3 +397,4 @@ def normalise(events: Iterable[Event], start: dict[str, float], eps: float,
         run = _straight(kind, before, end, f, line, steps, norm(steps) if length < 0.0 else length)
     if run is not None:
         yield run
+

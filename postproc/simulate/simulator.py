@@ -10,6 +10,8 @@ from typing import Any, Callable, Final, Iterable, Iterator
 from mypy_extensions import mypyc_attr
 
 from ..block_rules import NO_FEED, needs_feed
+from ..compensation.cutter_radius import Suspended
+from ..compensation.cycle_entry import finishing_entry
 from ..compensation.rules import CutterRules
 from ..compensation.tool_length import AXIS as _AXIS
 from ..context import Context
@@ -20,6 +22,7 @@ from ..expr import Expr
 from ..ir import Block, MachineFunction, Motion, Section
 from ..state import MM_PER_INCH, MODAL_KEYS as _MODAL
 from .events import HEADER_LOOKAHEAD, LATHE_TOOL_OFFSET, UNEVALUATED, UNSIMULATED, Event, header, num, _setting_text
+from .move_record import Emitted, MoveRecord, move_kind
 from .moves import PATH_CONTROL, Moves
 from .work_offsets import offset_beyond_frame
 
@@ -55,7 +58,7 @@ class Simulator(Moves):
     """Modal state and position of one program run; ``block`` emits the block's events in order."""
 
     # -- one block ---------------------------------------------------------------------------------
-    def block(self, block: Block, emit: Callable[[Event], None]) -> None:
+    def block(self, block: Block, emit: Callable[[Emitted], None]) -> None:
         sections: dict[str, Any] = block.sections  # each section read by its key: Any
         if not sections:
             return
@@ -133,14 +136,35 @@ class Simulator(Moves):
             for axis, value in coords.axes.items():
                 self._coordinate(block, axis, value)
         if compound is not None:
-            if self.cutter is not None and self.cutter.side is not None \
-                    and (compound.term not in self.cutter.rules.profile_cycles or "CannedCycle" in sections):
-                raise ProgramError("a canned cycle with cutter compensation on cannot be run (cancel it first)",
-                                   self._at(block))  # [V] rs274 "Cannot use canned cycles with cutter compensation on"
+            cutter = self.cutter
+            held: Suspended | None = None
+            back: Section | None = None
+            if cutter is not None and cutter.side is not None:
+                if compound.term in cutter.rules.roughing_cycles and "CannedCycle" not in sections:
+                    try:  # its moves are the tip's path to the offset shape (``CutterRules.roughing_cycles``)
+                        held = cutter.suspend()
+                    except PostprocError as err:
+                        raise err.located(self._at(block)) from None
+                elif compound.term not in cutter.rules.profile_cycles or "CannedCycle" in sections:
+                    raise ProgramError("a canned cycle with cutter compensation on cannot be run (cancel it first)",
+                                       self._at(block))  # [V] rs274 "Cannot use canned cycles with cutter compensation on"
+                elif "CutterCompensation" not in sections:  # (the Haas form turns it on in the cycle's own block)
+                    try:
+                        held, back = finishing_entry(cutter, compound.items)
+                    except PostprocError as err:
+                        raise err.located(self._at(block)) from None
             if motion is not None and motion.mode is not None:
                 self.motion(block, motion, False, emit)
             for item in compound.items:
+                if item is back and cutter is not None:
+                    try:
+                        cutter.cancel()
+                    except PostprocError as err:
+                        raise err.located(self._at(block)) from None
                 self.item(block, item, emit)
+            if held is not None and cutter is not None:
+                cutter.resume(held)
+                self._begin()
         elif motion is not None:
             if motion.mode is None and "CannedCycle" not in sections:
                 raise UnsupportedError("a canned-cycle repeat cannot be simulated: the cycle was not "
@@ -228,7 +252,7 @@ class Simulator(Moves):
         offset = self.settings.get(LATHE_TOOL_OFFSET, "")
         return f"{side} D{offset.split()[1]}" if offset.startswith("offset ") else side
 
-    def machine_function(self, block: Block, code: MachineFunction, emit: Callable[[Event], None]) -> None:
+    def machine_function(self, block: Block, code: MachineFunction, emit: Callable[[Emitted], None]) -> None:
         """A machine-specific code: the event of its declared action, carrying the code (``verify`` lists
         these rather than comparing them: another family has no such code). An undeclared code is
         warned about once and moves nothing."""
@@ -290,7 +314,7 @@ class Simulator(Moves):
             if self.declared and self.current is not None:
                 self.reframe(self.current)
 
-    def spindle_event(self, line: int, direction: str, emit: Callable[[Event], None]) -> None:
+    def spindle_event(self, line: int, direction: str, emit: Callable[[Emitted], None]) -> None:
         """A spindle change; stopping a stopped spindle is no event (two programs that differ only
         there move the machine alike), nor is the direction said again after a tap's out stroke."""
         if direction == "stop" and self.spindle == "stop" or self._restates(direction):
@@ -306,7 +330,7 @@ class Simulator(Moves):
         after, self.after_tap = self.after_tap, None
         return after is not None and direction == after == self.spindle
 
-    def item(self, block: Block, item: Section, emit: Callable[[Event], None]) -> None:
+    def item(self, block: Block, item: Section, emit: Callable[[Emitted], None]) -> None:
         """One item of a compound motion (absolute, program units)."""
         key, line = item.KEY, block.line
         if key == "Motion":
@@ -328,7 +352,7 @@ class Simulator(Moves):
         else:
             raise UnsupportedError(f"{key} inside a compound motion cannot be simulated", self._at(block))
 
-    def program_control(self, line: int, kind: str, emit: Callable[[Event], None]) -> None:
+    def program_control(self, line: int, kind: str, emit: Callable[[Emitted], None]) -> None:
         if kind in ("stop", "optional_stop"):
             if self.cutter is not None:
                 self.cutter.stop()  # a stop writes the queued move at its compensated end [V]
@@ -343,7 +367,7 @@ class Simulator(Moves):
             raise UnsupportedError(f"program control '{kind}' cannot be simulated")
 
     # -- motion ------------------------------------------------------------------------------------
-    def motion(self, block: Block, m: Motion, absolute: bool, emit: Callable[[Event], None]) -> None:
+    def motion(self, block: Block, m: Motion, absolute: bool, emit: Callable[[Emitted], None]) -> None:
         mode, line = m.mode, block.line
         travel = self.travel
         if m.axes:
@@ -370,10 +394,11 @@ class Simulator(Moves):
             if travel is not None:
                 travel.home(block, self._programmed(m.axes))
             if self.mark_held:
-                legs: list[Event] = []
+                legs: list[Emitted] = []
                 self.line_move("rapid", ref, line, legs.append)
                 held = "".join(sorted(self._programmed(m.axes))).lower()
-                for ev in legs:
+                for leg in legs:
+                    ev = leg.event() if isinstance(leg, MoveRecord) else leg  # (a ``mark_held`` run makes none)
                     ev["held"] = held
                     emit(ev)
             else:
@@ -405,7 +430,7 @@ class Simulator(Moves):
         else:
             raise UnsupportedError(f"motion '{mode}' cannot be simulated", self._at(block))
 
-    def thread_move(self, block: Block, target: dict[str, float], emit: Callable[[Event], None]) -> None:
+    def thread_move(self, block: Block, target: dict[str, float], emit: Callable[[Emitted], None]) -> None:
         """A spindle-synchronised thread move: ``f`` is its lead per revolution whatever the feed mode (Fanuc
         ``G32 F``: F is the lead [K]; LinuxCNC ``G33 K``: the block's ``ThreadLead``)."""
         lead = block.sections.get("ThreadLead")
@@ -420,7 +445,7 @@ class Simulator(Moves):
         finally:
             self.sync = None
 
-    def rigid_tap(self, block: Block, tap: Any, absolute: bool, emit: Callable[[Event], None]) -> None:
+    def rigid_tap(self, block: Block, tap: Any, absolute: bool, emit: Callable[[Emitted], None]) -> None:
         """A spindle-synchronised tap (``postproc.synchronised_tap``): a ``tap`` move to the end point and
         one back to the start, ``f`` the pitch in mm/rev; a dwell between them if the tap has one."""
         if self.cutter is not None and self.cutter.side is not None:
@@ -491,7 +516,7 @@ class Simulator(Moves):
                 target[axis] -= shift
 
 
-def _mark_programmed(block: Block, sim: Simulator, out: list[Event], programmed: str) -> str:
+def _mark_programmed(block: Block, sim: Simulator, out: list[Emitted], programmed: str) -> str:
     """``mark_held``: the axes a block programs absolutely in work coordinates (``"programmed": "xy"``) on the
     first move event it makes, or on a later block's where it makes none (a move to where the tool stands):
     ``verify --transform`` moves a held machine position from there (``postproc.transforms.events``). Returns
@@ -507,13 +532,13 @@ def _mark_programmed(block: Block, sim: Simulator, out: list[Event], programmed:
             axes += "".join(a.lower() for a in str(getattr(cycle, "plane", "")) if a in getattr(cycle, "words", ()))
     programmed = "".join(sorted(set(programmed + axes)))
     for ev in out:
-        if "move" in ev and programmed:
+        if isinstance(ev, dict) and "move" in ev and programmed:  # (``mark_held`` runs emit no records)
             ev["programmed"] = programmed
             return ""
     return programmed
 
 
-def prepared_taps(out: list[Event], held: Event | None) -> Event | None:
+def prepared_taps(out: list[Emitted], held: Emitted | None) -> Emitted | None:
     """Leave out of ``out`` (a block's events, after ``held``, an orientation the block before ended with)
     each oriented spindle stop that a rigid tap follows at once: it is the tap's own preparation, the switch
     to position control a synchronised tap needs (SINUMERIK's ``SPOS`` before ``G331``, as Fanuc's ``M29``
@@ -521,14 +546,14 @@ def prepared_taps(out: list[Event], held: Event | None) -> Event | None:
     does not change the thread it cuts in a hole not yet threaded. Returns the orientation ``out`` ends with,
     held until the next block shows what follows it."""
     events = out if held is None else [held, *out]
-    kept: list[Event] = []
+    kept: list[Emitted] = []
     held = None
     for ev in events:
         if held is not None:
-            if ev.get("move") != "tap":
+            if move_kind(ev) != "tap":
                 kept.append(held)
             held = None
-        if ev.get("event") == "orient":
+        if not isinstance(ev, MoveRecord) and ev.get("event") == "orient":
             held = ev
         else:
             kept.append(ev)
@@ -536,11 +561,22 @@ def prepared_taps(out: list[Event], held: Event | None) -> Event | None:
     return held
 
 
+def _has_move(out: list[Emitted]) -> bool:
+    """A block's events hold a move."""
+    for ev in out:
+        if isinstance(ev, MoveRecord) or "move" in ev:
+            return True
+    return False
+
+
 def simulate(blocks: Iterable[Block], ctx: Context, live_after_end: list[int] | None = None,
              unsimulated: list[tuple[int, str, str]] | None = None, travel_warn: bool = False,
              cutter_rules: CutterRules | None = None,
-             kept_native: Callable[[str], bool] | None = None, mark_held: bool = False) -> Iterator[Event]:
+             kept_native: Callable[[str], bool] | None = None, mark_held: bool = False,
+             records: bool = False) -> Iterator[Emitted]:
     """Blocks (already lowered for ``ToolpathTarget``) -> the header, then events in execution order.
+    ``records``: a straight move comes as its ``MoveRecord`` (not with ``mark_held``, which marks dictionaries),
+    else as its dictionary.
 
     Errors are reported to ``ctx.diagnostics`` with the block's location and the block is skipped;
     the caller raises them at the end (``Diagnostics.check``). Events are held back only until the
@@ -553,14 +589,15 @@ def simulate(blocks: Iterable[Block], ctx: Context, live_after_end: list[int] | 
     if unsimulated is not None:
         sim.unsimulated = unsimulated  # so does verify the settings the path does not show
     sim.mark_held = mark_held
+    sim.records = records and not mark_held
     report = ctx.diagnostics.error
-    held: list[Event] = []
+    held: list[Emitted] = []
     holding = True
     units: str | None = None  # the program's units at its first move, for the header
-    out: list[Event] = []
+    out: list[Emitted] = []
     append = out.append  # one bound method for the run, not one a block
     programmed = ""
-    orientation: Event | None = None  # an oriented stop held until what follows it is known (``prepared_taps``)
+    orientation: Emitted | None = None  # an oriented stop held until what follows it is known (``prepared_taps``)
     for block in blocks:
         try:
             sim.block(block, append)
@@ -568,7 +605,7 @@ def simulate(blocks: Iterable[Block], ctx: Context, live_after_end: list[int] | 
             report(err.located(ctx.at(block)))
             out.clear()
             continue
-        if sim.path_pending and out and any("move" in ev for ev in out):
+        if sim.path_pending and out and _has_move(out):
             sim.path_at_first_move(block.line)
         if sim.oriented or orientation is not None and out:
             sim.oriented = False
@@ -578,7 +615,7 @@ def simulate(blocks: Iterable[Block], ctx: Context, live_after_end: list[int] | 
         if not out:
             continue
         if holding:
-            if units is None and any("move" in ev for ev in out):
+            if units is None and _has_move(out):
                 units = sim.modal.units
             held.extend(out)
             out.clear()

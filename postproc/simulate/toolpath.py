@@ -34,9 +34,10 @@ Assumptions (a simulator knows no machine data):
 from __future__ import annotations
 
 import io
-from typing import Callable, Iterable, Iterator, Mapping
+from typing import Callable, Iterable, Iterator, Mapping, cast
 
 from ..block_rules import check_blocks
+from ..context import ASSUMED_START, Context
 from ..dialect import Dialect
 from ..errors import Diagnostics
 from ..lowering.lower import lower_for
@@ -52,6 +53,7 @@ from ..cycles.rigid_tap_lowering import resolve_rigid_taps
 from ..lowering.deferred import resolve_dynamic_cutter_compensation
 from ..lowering.length_timing import time_length_changes
 from .events import MOVES_THE_TOOL, UNSIMULATED, Event, header, num, start_position
+from .move_record import MoveRecord
 from .simulator import Simulator, simulate
 from .travel import TravelError
 
@@ -88,7 +90,8 @@ def toolpath_events(lines: Iterable[str], *, file: str, dialect: str | type[Dial
                     unsimulated: list[tuple[int, str, str]] | None = None,
                     on_unsupported: str = "error", compensate: bool = True,
                     arguments: Mapping[str, float] | None = None,
-                    kept_native: Callable[[str], bool] | None = None, mark_held: bool = False) -> Iterator[Event]:
+                    kept_native: Callable[[str], bool] | None = None, mark_held: bool = False,
+                    assumed_start: bool = False) -> Iterator[Event]:
     """Read a program in ``dialect`` and yield its toolpath (header first). Raises ``ErrorList`` at the
     end when the program had errors (unless ``check`` is False: the caller then checks
     ``diagnostics``); events already yielded then belong to a failed run. ``live_after_end``, if given,
@@ -100,13 +103,17 @@ def toolpath_events(lines: Iterable[str], *, file: str, dialect: str | type[Dial
     (``postproc.reading.macro_arguments``). ``kept_native``: which stretches of cutter compensation stay
     settings while the others are simulated (``Moves.kept_native``, for ``verify``). ``mark_held``: a reference
     return's move to the reference point names the axes it put at a machine position (``"held": "xz"``;
-    ``verify --transform``)."""
+    ``verify --transform``). ``assumed_start``: a read of the current position before the program places the
+    axis is the set-up's start, which the simulation assumes (``verify`` runs a translation so: a translation
+    writes such a read where the source keeps an axis it never placed, ``postproc.lowering.length_timing``);
+    without it that read is the machine's, an error."""
     diagnostics = diagnostics or Diagnostics()
     with gc_paused():
-        yield from toolpath_stream(lines, file=file, dialect=dialect, setup=setup, registry=registry,
+        yield from cast(Iterator[Event], toolpath_stream(lines, file=file, dialect=dialect, setup=setup, registry=registry,
                                    diagnostics=diagnostics, live_after_end=live_after_end, unsimulated=unsimulated,
                                    on_unsupported=on_unsupported, compensate=compensate, arguments=arguments,
-                                   kept_native=kept_native, mark_held=mark_held)
+                                   kept_native=kept_native, mark_held=mark_held, assumed_start=assumed_start,
+                                   records=False))  # (no records)
     if check:
         diagnostics.check()
 
@@ -117,17 +124,29 @@ def toolpath_stream(lines: Iterable[str], *, file: str, dialect: str | type[Dial
                     unsimulated: list[tuple[int, str, str]] | None = None,
                     on_unsupported: str = "error", compensate: bool = True,
                     arguments: Mapping[str, float] | None = None,
-                    kept_native: Callable[[str], bool] | None = None, mark_held: bool = False) -> Iterator[Event]:
+                    kept_native: Callable[[str], bool] | None = None, mark_held: bool = False,
+                    assumed_start: bool = False, records: bool = True) -> Iterator[Event | MoveRecord]:
     """``toolpath_events`` without its checks: the simulator's own (compiled) event stream, read and lowered
     as it is pulled, with no Python generator around it (``verify`` pulls every event of two programs: a
     Python ``yield from`` cost about 1,500 instructions an event there). The caller checks ``diagnostics``
     at the end and pauses the cyclic collector for the run (``postproc.reading.gc_paused``). The reading
-    starts here, not at the first event."""
+    starts here, not at the first event. ``records``: a straight move comes as a ``MoveRecord`` (read by the
+    JSON lines writer and verify's normalising; ``as_events`` gives any other reader the dictionaries), else
+    every event as its dictionary."""
     setup = setup or MachineSetup()
     registry = registry or default_registry()
     if isinstance(dialect, str):
         dialect = registry.dialect(dialect)
-    prepare = macro_arguments(dialect, arguments) if arguments else None
+    arguments_prepare = macro_arguments(dialect, arguments) if arguments else None
+
+    def prepare(ctx: Context) -> None:
+        """With ``assumed_start``, a position read before the program places an axis is the simulated start
+        (``ASSUMED_START``)."""
+        if assumed_start:
+            ctx.run_data[ASSUMED_START] = True
+        if arguments_prepare is not None:
+            arguments_prepare(ctx)
+
     # a simulation runs the program's loops, jumps and calls
     from ..fast.reading import install_reading  # the reading lanes (postproc.fast), as a translation has
     ctx, blocks = read_blocks(lines, file, dialect, setup, diagnostics, program_mode="execute",
@@ -135,7 +154,7 @@ def toolpath_stream(lines: Iterable[str], *, file: str, dialect: str | type[Dial
     steps = [step for step in registry.lowerings if step not in TRANSLATE_ONLY]
     lowered = lower_for(blocks, ctx, ToolpathTarget, "error", steps)
     return simulate(lowered, ctx, live_after_end, unsimulated, on_unsupported == "warn",
-                    ctx.cutter_rules if compensate else None, kept_native, mark_held)
+                    ctx.cutter_rules if compensate else None, kept_native, mark_held, records)
 
 
 def check_travel(lines: Iterable[str], *, file: str, dialect: type[Dialect], setup: MachineSetup,

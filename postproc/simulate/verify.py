@@ -29,6 +29,7 @@ from ..transforms.carry import mirrors_xy
 from ..transforms.events import moved_events
 from ..transforms.spec import ProgramTransform
 from .normal_move import Move
+from .move_record import MoveRecord, as_events
 from .compare import (Report, _controlled, compare, compare_after_end, compare_settings, describe,
                       normalise)
 from ..reading import gc_paused
@@ -89,22 +90,23 @@ def verify_lines(lines_in: Iterable[str], lines_out: Iterable[str], *, file_in: 
                                     _starts(lines_in, file_in, source, setup, dialects, arguments))
         compensate = compensate or kept is not None
     with gc_paused():  # both simulations stream as the comparison pulls them (``toolpath_stream``)
-        events_in: Iterator[Event] = toolpath_stream(
+        events_in: Iterator[Event | MoveRecord] = toolpath_stream(
             lines_in, file=file_in, dialect=source, setup=setup, registry=registry, diagnostics=diag_in,
             live_after_end=after_in, unsimulated=settings_in, compensate=compensate, arguments=arguments,
             kept_native=kept, mark_held=transform is not None)
-        events_out: Iterator[Event] = toolpath_stream(
+        events_out: Iterator[Event | MoveRecord] = toolpath_stream(
             lines_out, file=file_out, dialect=target, setup=target_setup, registry=registry, diagnostics=diag_out,
-            live_after_end=after_out, unsimulated=settings_out, compensate=compensate, arguments=out_arguments)
+            live_after_end=after_out, unsimulated=settings_out, compensate=compensate, arguments=out_arguments,
+            assumed_start=True)  # OUT's reads of an axis the source never placed (``toolpath_stream``)
         start_in = start_position(setup)
         if transform is not None:
-            events_in = moved_events(events_in, transform, start_in)  # (the start is where the machine stands)
+            events_in = moved_events(as_events(events_in), transform, start_in)  # (the start is where the machine stands)
         if overlay is not None:
             reading = dialects.dialect(source)
             overlay.begin(start_position(setup), start_position(target_setup), reading.reads_lathe(setup))
             # the picture shows the paths compared (the controlled points), where the deviation is circled
-            events_in = overlay.source_events(_controlled(iter(events_in)))
-            events_out = overlay.target_events(_controlled(iter(events_out)))
+            events_in = overlay.source_events(_controlled(as_events(events_in)))
+            events_out = overlay.target_events(_controlled(as_events(events_out)))
         report = compare(events_in, events_out, start_in=start_in, start_out=start_position(target_setup),
                          tolerance=tolerance, chord_tolerance=chord_tolerance,
                          mapped=_mapped_codes(dialects.dialect(source), dialects.dialect(target), target_setup))
@@ -180,14 +182,14 @@ def _compensates(lines: Iterable[str], file: str, dialect: str, setup: MachineSe
 
 
 def _starts(lines: Iterable[str], file: str, dialect: str, setup: MachineSetup, registry: Registry,
-            arguments: Mapping[str, float] | None) -> list[str] | None:
+            arguments: Mapping[str, float] | None, assumed_start: bool = False) -> list[str] | None:
     """A program's cutter compensation starts ("left D4", ...) in execution order, compensation not simulated;
     None when its run fails (its own run then says why)."""
     settings: list[tuple[int, str, str]] = []
     diagnostics = Diagnostics(warn_stream=io.StringIO())
     for _ in toolpath_events(lines, file=file, dialect=dialect, setup=setup, registry=registry,
                              diagnostics=diagnostics, check=False, unsimulated=settings, compensate=False,
-                             arguments=arguments):
+                             arguments=arguments, assumed_start=assumed_start):
         pass
     if diagnostics.errors:
         return None
@@ -206,7 +208,7 @@ def _kept_native(lines: Iterable[str], file: str, dialect: str, setup: MachineSe
     controlled points). None too (all compared as settings) where the output keeps every stretch, or turns on
     one the source does not (``source_starts``, the source's in order). ``mirrored``: OUT was written under a transform that mirrors the plane, its sides are
     the other ones. None when the output's run fails (its own run then says why)."""
-    found = _starts(lines, file, dialect, setup, registry, arguments)
+    found = _starts(lines, file, dialect, setup, registry, arguments, assumed_start=True)  # (OUT's)
     if found is None or source_starts is None:
         return None
     out_starts = [_other_side(value) if mirrored else value for value in found]

@@ -24,7 +24,7 @@ from postproc.event_order import MOVING, after_motion
 from postproc.geometry import ARC_TOLERANCE_MM, PLACES
 from postproc.expr import Expr
 from postproc.ir import Block, Motion
-from postproc.state import MM_PER_INCH, MODAL_KEYS, PLANE_AXES
+from postproc.state import LEFT_START, MM_PER_INCH, MODAL_KEYS, PLANE_AXES
 from postproc.context import Context
 from postproc.syntax import Syntax
 
@@ -67,8 +67,11 @@ class ModalStateSyntax(Syntax):
             check_values(block, ctx)  # after the state is carried: an error keeps the block's settings
 
     def _move(self, block: Block, ctx: Context, motion: Motion) -> None:
-        if not ctx.axis_words.issuperset(motion.axes):
-            _check_axes(block, ctx, motion)
+        words = ctx.axis_words
+        for letter in motion.axes:  # (not ``issuperset``: with a dict it builds a set per block)
+            if letter not in words:
+                _check_axes(block, ctx, motion)
+                break
         state = ctx.state
         mode = motion.mode
         machine = "MachineCoordinates" in block.sections
@@ -87,6 +90,7 @@ class ModalStateSyntax(Syntax):
         if machine or mode == "home" or mode == "home2":
             for axis in motion.axes:
                 pos[axis] = None
+            state.extra[LEFT_START] = True
             return
         incremental = state.distance == "incremental"
         for axis, value in motion.axes.items():

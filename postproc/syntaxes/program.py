@@ -23,7 +23,7 @@ from mypy_extensions import mypyc_attr
 from ..control import ASSIGN, CONTROL, Call, ModalCall
 from ..errors import ConfigError, Diagnostics, ErrorLevel, PostprocError
 from ..expr import Expr, Var
-from ..ir import AXES, Block
+from ..ir import AXES, Block, Sequence
 from ..context import Context
 from ..syntax import Syntax
 from .kept_lines import Kept, KeptLines
@@ -170,10 +170,12 @@ class ProgramSyntax(Syntax):
 
     def _checked(self, blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
         check: StreamCheck | None = None
-        control, assign, start = CONTROL, ASSIGN, "ProgramStart"
+        control, assign, start, sequence = CONTROL, ASSIGN, "ProgramStart", "Sequence"
         for block in blocks:
             sections = block.sections
-            if control in sections or start in sections or assign in sections or (
+            size = len(sections)  # (most blocks have no section but their block number: one look-up, not three)
+            if size and (size > 1 or sequence not in sections) and (
+                    control in sections or start in sections or assign in sections) or (
                     block.values and not block.canonical and _computes(block)):
                 if check is None:
                     check = self.structure_check(ctx)
@@ -185,7 +187,6 @@ class ProgramSyntax(Syntax):
     def _execute(self, blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
         limit = ctx.setup.limits.kept_prefix
         kept = KeptLines(limit)  # compact: one string a chunk of lines (postproc.syntaxes.kept_lines)
-        keep = kept.append
         seen = 0
         check: StreamCheck | None = None
         # locals: a compiled module looks another module's names up per use
@@ -193,20 +194,23 @@ class ProgramSyntax(Syntax):
         highest = -1
         for block in blocks:
             sections = block.sections
-            if control in sections or assign in sections or (block.values and _computes(block)):
-                break
             numbered = sections.get(sequence)
+            # (most blocks have no section but their block number, and no value yet: three look-ups saved)
+            others = len(sections) > (0 if numbered is None else 1)
+            if others or block.values:
+                if control in sections or assign in sections or (block.values and _computes(block)):
+                    break
             if numbered is not None:
                 number = _number(numbered)
                 if number > highest:
                     highest = number
-            if start in sections:
+            if others and start in sections:
                 if check is None:
                     check = self.structure_check(ctx)
                 check.see(block)
             text = block.text
             eol = block.eol
-            keep(text if text is None or eol == "\n" else (text, eol))  # mostly the reader's own string
+            kept.append(text if text is None or eol == "\n" else (text, eol))  # mostly the reader's own string
             seen += 1
             yield block
         else:
@@ -427,6 +431,8 @@ def _may_be_vacant(body: list[Block]) -> bool:
 
 def _number(section: object) -> int:
     """A ``Sequence`` section's block number."""
+    if isinstance(section, Sequence):
+        return section.number  # (compiled: a field read, not a look-up by name)
     number: int = getattr(section, "number")
     return number
 

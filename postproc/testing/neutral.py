@@ -25,6 +25,7 @@ from ..lowering.lower import lower_for
 from ..rs274.cycle_words import NEUTRAL_CYCLE_WORDS
 from ..plugins import Registry, default_registry
 from ..setup.machine_setup import MachineSetup
+from ..simulate.move_record import as_events
 from ..simulate.toolpath import TRANSLATE_ONLY, ToolpathTarget, simulate
 
 NEUTRAL = "neutral IR"
@@ -187,6 +188,7 @@ def simulate_neutral(blocks: Iterable[Block], dialect: type[Dialect], setup: Mac
     registry = registry or default_registry()
     ctx = neutral_context(dialect, setup, "neutral.nc")
     steps = [step for step in registry.lowerings if step not in TRANSLATE_ONLY]
-    events = list(simulate(lower_for(iter(blocks), ctx, ToolpathTarget, "error", steps), ctx))
+    events: list[dict[str, object]] = list(as_events(simulate(lower_for(iter(blocks), ctx, ToolpathTarget, "error",
+                                                                      steps), ctx)))  # (dictionaries already)
     ctx.diagnostics.check()
     return events

@@ -18,9 +18,7 @@ from ..context import Context
 from ..errors import UsageError
 from ..ir import Block
 from ..records import record
-from .carry import lathe_refusal, move_program
 from .spec import ProgramTransform, parse_transform
-from .units import convert_units
 
 
 @record(frozen=True, slots=True)
@@ -46,7 +44,12 @@ def program_options(units: str | None = None, transform: str | ProgramTransform 
 
 
 def transform_program(blocks: Iterator[Block], ctx: Context, options: ProgramOptions) -> Iterator[Block]:
-    """The map, then the units (each only when asked for)."""
+    """The map, then the units (each only when asked for: their modules are imported then, not at every
+    start, tests/test_startup_imports.py)."""
+    if not options.active():
+        return blocks
+    from .carry import lathe_refusal, move_program
+    from .units import convert_units
     if options.transform is not None and ctx.lathe:
         refusal = lathe_refusal(options.transform)
         if refusal is not None:

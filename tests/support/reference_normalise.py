@@ -1,5 +1,6 @@
 """verify's normalising of a toolpath as it was before it was made lean (commit 2ecc27b's
-``postproc.simulate.compare``, now ``postproc.simulate.runs``: ``normalise`` and the helpers it used, unchanged), the reference that
+``postproc.simulate.compare``, now ``postproc.simulate.runs``: ``normalise`` and the helpers it used, unchanged but for the merging of arcs, which is the code's own
+``merge_arc`` since issue 26 added a path test to it), the reference that
 ``tests/test_normalise_reference.py`` holds today's ``normalise`` to on random paths: the same runs, to the
 bit. Every straight move here is a ``Move`` of its own, with its direction as a dictionary, and a run's
 extent along its line is measured again at every move."""
@@ -12,6 +13,7 @@ from typing import Any, Iterable, Iterator
 from postproc.geometry import CENTRE_KEYS, PLANE_INDEX, arc_sweep
 from postproc.simulate.events import Event
 from postproc.simulate.normal_move import Move, same_feed as _same_feed
+from postproc.simulate.runs import merge_arc
 
 _hypot = math.hypot
 
@@ -119,27 +121,8 @@ def _merge(run: Move, m: Move, eps: float) -> bool:
             return False
         run.end, run.last_line = m.end, m.last_line
         return True
-    if run.centre is not None and m.centre is not None and run.plane == m.plane:
-        if (_hypot(run.centre[0] - m.centre[0], run.centre[1] - m.centre[1]) > eps
-                or abs(run.radius - m.radius) > eps or not _one_helix(run, m, eps)):
-            return False
-        run.end, run.last_line = m.end, m.last_line
-        run.sweep += m.sweep
-        return True
-    return False
-
-
-def _one_helix(run: Move, m: Move, eps: float) -> bool:
-    """True when the axes outside the plane move in ``m`` at the rate per angle they moved in ``run`` (none:
-    a flat arc; the same: one helix, as an arc split into pieces), so the arcs may be joined."""
-    i, j, _ = PLANE_INDEX[m.plane or "XY"]
-    plane_keys = {"xyz"[i], "xyz"[j]}
-    for k in m.end:
-        if k not in plane_keys:
-            rate = (run.end[k] - run.start.get(k, 0.0)) / run.sweep
-            if abs(m.end[k] - m.start.get(k, 0.0) - rate * m.sweep) > eps:
-                return False
-    return True
+    # arcs: the code's own rule (issue 26 added the path test there; this reference holds the straight runs)
+    return merge_arc(run, m, eps)
 
 
 def normalise(events: Iterable[Event], start: dict[str, float], eps: float,

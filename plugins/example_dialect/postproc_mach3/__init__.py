@@ -45,6 +45,9 @@ class Mach3Writer(WordWriter):
     """No M19 row: an oriented spindle stop is an unsupported construct here."""
     DWELL_WORD: ClassVar[str] = "P"
     """G4 P<seconds>."""
+    TOOL_TABLE_LACK: ClassVar[str] = (
+        "Mach3's G10 L1 tool table setting and whether it acts on the active tool as LinuxCNC's does are [?]: not "
+        "confirmed from its manual, not written here")
     CYCLE_CANCEL_IS_MOTION: ClassVar[bool] = True
     """G80 and G0 are one modal group (RS274/NGC): a block with a motion code leaves G80 out."""
     BARE_FEED_MOTION_NEEDS_FEED: ClassVar[bool] = True
@@ -140,6 +143,9 @@ class Mach3(Dialect):
     rigid tap code [V: Dynomotion's Mach3 plugin help, "Mach3 Plugin - Rigid Tapping": a rigid tap there is
     an M84 macro that hands the cycle to the motion card]. A rigid tap of another dialect (LinuxCNC
     ``G33.1``, Fanuc ``M29``+``G84``) is refused by name, never written as a floating tap's feed moves."""
+    RIGID_TAP_LACK = ("its G84 is the floating tap holder's cycle and it has no rigid tap code [V: Dynomotion's "
+                      "Mach3 plugin help, Mach3 Rigid Tapping]")
+    """Said where a rigid tap of another family is refused (``SYNCHRONISED_TAP``)."""
     STOPS_BEFORE_MOTION = True
     """The RS274/NGC order of execution: M5 and M9 act before the block's motion."""
     FEED_BEFORE_UNITS = True

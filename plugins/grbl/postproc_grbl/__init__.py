@@ -43,7 +43,6 @@ from postproc.setup.machine_setup import MachineSetup
 from postproc.syntax import Pipeline
 from postproc.output.writer_base import Writer
 from postproc.xmlio import XFactory
-from postproc.rs274.lean_controller import lower_for_lean_controller
 
 from .codes import CODES
 
@@ -61,6 +60,13 @@ def write_tool_lengths(blocks: Iterator[Block], ctx: Context, target: type[Diale
 def drop_resolved_tool_data(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
     """``postproc.grbl_family.lengths.drop_resolved_tool_data``, imported when a translation first lowers for grbl."""
     from postproc.grbl_family.lengths import drop_resolved_tool_data as step
+    return step(blocks, ctx, target)
+
+
+def lower_for_lean_controller(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """``postproc.rs274.lean_controller.lower_for_lean_controller``, imported when a translation first lowers
+    for grbl."""
+    from postproc.rs274.lean_controller import lower_for_lean_controller as step
     return step(blocks, ctx, target)
 
 
@@ -87,6 +93,8 @@ class Grbl(GrblFamily):
     """G93: a move in 1/F minutes [K: grbl wiki, "Commands": G93, G94 feed rate modes; its code table reads G93]."""
     SPINDLE_ORIENTATION = False
     """No M19: cycles that need an oriented stop follow the set-up's ``Cycles orientation``."""
+    RIGID_TAP_LACK = "grbl 1.1 reads no spindle position: no G33, G33.1 or tap cycle [K: grbl wiki, Commands]"
+    """Said where a rigid tap of another family is refused (no ``SYNCHRONISED_TAP``)."""
     TOOL_CHANGER = False
     """M6 is rejected: a tool change is written as an M0 pause (``pause_for_tool_change``)."""
     STOPS_BEFORE_MOTION = True

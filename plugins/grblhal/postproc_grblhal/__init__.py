@@ -40,7 +40,7 @@ read where a program is read and written.
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Callable, ClassVar, Iterator
+from typing import Callable, ClassVar, Iterator, Mapping, TYPE_CHECKING
 
 from postproc.comments import CommentSyntax
 from postproc.dialect import Dialect, Lazy, Reader, ResolvedCycle
@@ -50,7 +50,6 @@ from postproc.lowering.program_end import comment_numbered_subs_after_end
 from postproc.output.line_format import LineRule
 from postproc.output.writer_base import Writer
 from postproc.rs274.cycle_words import rs274_cycle_words
-from postproc.rs274.lean_controller import close_full_circles
 from postproc.rs274.order_of_execution import stops_after_motion
 from postproc.setup.machine_setup import MachineSetup
 from postproc.syntax import Pipeline
@@ -72,6 +71,13 @@ def write_tool_lengths(blocks: Iterator[Block], ctx: Context, target: type[Diale
 def drop_resolved_tool_data(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
     """``postproc.grbl_family.lengths.drop_resolved_tool_data``, imported when a translation first lowers for grblHAL."""
     from postproc.grbl_family.lengths import drop_resolved_tool_data as step
+    return step(blocks, ctx, target)
+
+
+def close_full_circles(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """``postproc.rs274.lean_controller.close_full_circles``, imported when a translation first lowers for
+    grblHAL."""
+    from postproc.rs274.lean_controller import close_full_circles as step
     return step(blocks, ctx, target)
 
 
@@ -174,6 +180,11 @@ class Grblhal(GrblFamily):
     """Parameters, expressions and o-word conditions and loops, on a build with them (``<Controller
     expressions="true">``: ``expressions``); on any other the writer refuses every statement, so a program
     that computes reaches grblHAL flattened."""
+    POSITION_READS: ClassVar[Mapping[str, int]] = {}
+    """None written: a build with expressions reads #5420-#5428 as the steppers' position less the offsets when the
+    block is parsed [V: grblHAL core ``ngc_params.c`` ``work_position``, ``sys.position``], which runs ahead of
+    the planner's queued moves; whether the parser waits for them there is not known [?], so a read is not the
+    previous block's end as LinuxCNC's is (``postproc.lowering.length_timing`` refuses instead)."""
     TAPE_MARKS = False
     """``%`` is no word of grblHAL's parser: written as a comment."""
     COMMENTS = Lazy[CommentSyntax](".text:COMMENTS")

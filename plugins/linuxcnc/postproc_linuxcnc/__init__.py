@@ -27,6 +27,7 @@ from postproc.lowering.lower import Lowering
 from postproc.setup.machine_setup import MachineSetup
 from postproc.context import Context
 from postproc.rs274.cycle_words import rs274_cycle_words
+from postproc.rs274.variables import NGC_POSITION_READS
 from postproc.syntax import Pipeline
 from postproc.output.writer_base import Writer
 from postproc.xmlio import XFactory
@@ -89,6 +90,13 @@ class Linuxcnc(Dialect):
     ``G91 Z-1`` moves by -1; after ``G49``, ``X3`` again keeps the machine Z]."""
     DYNAMIC_TOOL_LENGTH = True
     """``G43.1 Z..`` (and its other axes) [V: rs274 2.9 runs it]."""
+    POSITION_READS = NGC_POSITION_READS
+    """``#5420``-``#5428``: the current position, set from ``current_x``.. each time a block is read, so a read
+    in a block that changes the tool offset sees the point before the change [V: ``rs274ngc_pre.cc``
+    ``Interp::read``; rs274 2.9.0~pre1 run here: ``G43 H2 X30 Z#5422`` from Z5 moves to program Z5 under the new
+    offset]."""
+    POSITION_READ_RADIUS = True
+    """[V: ``interp_read.cc`` ``read_x`` halves an X word in diameter mode; ``#5420`` is ``current_x``]."""
     CUTTER_RULES = ARC_CORNERS
     """rs274's cutter radius compensation: tangent entry, arcs around outside corners."""
     ARC_END = RS274NGC_ARC_END

@@ -15,8 +15,10 @@ and R (the retract) are radial [V: rs274 2.9.0~pre1, a G7 program with X and U d
 Refused where read, rs274's own refusals (``ProgramError``): no Q ("G7x.x requires a Q word"), a plane other
 than ZX, I not above 0, G71/G72 under cutter compensation, a profile arc given by neither I/K nor R or by
 both, a profile not monotonic. A profile's computed words are evaluated when the cycle runs, with the
-parameters' values then, as LinuxCNC does (``_evaluated``). Not modelled, so refused (``UnsupportedError``): a
-profile word computed from a local parameter (or a computed G code), a profile with any word but those (a feed or speed is ignored there: said rather than dropped), a subprogram not
+parameters' values then, as LinuxCNC does (``_evaluated``; a read of the current position reads the profile's own
+point). Not modelled, so refused (``UnsupportedError``): a profile word computed from a local parameter (or a
+computed G code), a control statement (o-word loop, branch, call) or parameter assignment in a profile (read past
+before issue 26: a loop's moves were taken once), a profile with any word but those (a feed or speed is ignored there: said rather than dropped), a subprogram not
 defined before the cycle, the cycle in incremental mode (G91), a P of G70 that is no whole number from 1,
 G70 under cutter compensation (``read_g7x``), and a roughing profile not closed back to the cycle's X (G71) or
 Z (G72): LinuxCNC 2.9.0~pre1 closes it after the offset, later versions before it (``postproc.rs274.ngc_g7x``,
@@ -28,7 +30,7 @@ from __future__ import annotations
 from typing import Any, Callable, Final
 
 from postproc.context import Context
-from postproc.control import SubEnd, SubStart
+from postproc.control import ASSIGN, SubEnd, SubStart
 from postproc.cycles.turning.profile import TurnMove
 from postproc.errors import Location, PostprocError, ProgramError, UnsupportedError
 from postproc.expr import Binary, Expr, Func, Num, Unary, Var
@@ -65,6 +67,9 @@ feed and speed settings"]: refused here, as a word the translation would drop.""
 
 Written = tuple[int, list[tuple[str, str]], dict[str, Any]]
 """A profile block as written: its line, its words (letter, number text) and its computed values."""
+STATEMENT: Final = "statement"
+"""The one word of a ``Written`` that stands for a control statement (an o-word loop, branch, call or return)
+or a parameter assignment in a subprogram's definition: the cycle refuses it (``_profile``)."""
 
 
 class ProfileCollector:
@@ -92,7 +97,12 @@ class ProfileCollector:
                 self.profiles[self.name] = self.body
             self.name = None
             return
-        if self.name is None or not block.words:
+        if self.name is None:
+            return
+        if control is not None or ASSIGN in block.sections:
+            self.body.append((block.line, [(STATEMENT, (block.text or "").strip())], {}))
+            return
+        if not block.words:
             return
         self.body.append((block.line, list(block.words), dict(block.values or {})))
         if self.corner and any(letter.upper() in self.corner for letter, _ in block.words):
@@ -169,11 +179,20 @@ def read_g7x(block: Block, ctx: Context, motion: Motion, values: dict[str, Any],
             shown = code if "." in code else f"{code}.0"
             raise refuse(f"{name} with cutter compensation on (rs274: \"G{shown} cannot be used with cutter "
                          "compensation enabled\"): cancel it (G40) before the cycle")
-        raise unmodelled(f"{name} with cutter compensation on is not modelled: LinuxCNC 2.9.0 compensates the cycle "
-                     "from where its profile ends (a move to the profile's end first) [V: rs274 2.9.0~pre1 run "
-                     "here], 2.9.3 and later turn compensation off for each pass's approach (interp_g7x.cc, "
-                     "commits b1f3e7d8 and f648d01c) and are not at hand to check; cancel compensation (G40) "
-                     "before the cycle, or write its profile under G41/G42 as moves")
+        # Three behaviours by version [V: interp_g7x.cc at the tags v2.9.0, v2.9.2, v2.9.3, v2.9.4 of
+        # github:LinuxCNC/linuxcnc]: up to 2.9.2 the cycle's rapids and passes are all compensated, from where the
+        # profile ends [V: rs274 2.9.0~pre1 run here]; 2.9.3 (b1f3e7d8, "Fix unintended move when using G42 for
+        # G70") puts the current point back at the cycle's start before the passes; 2.9.4 (f648d01c and
+        # 0b80d453da) also turns compensation off for the rapid to the cycle's X Z and for each pass's first
+        # rapid. No interpreter after 2.9.0~pre1 is at hand to check the compensated path against, and a set-up
+        # does not name the LinuxCNC version: refused.
+        raise unmodelled(f"{name} with cutter compensation on is not modelled: LinuxCNC up to 2.9.2 compensates the "
+                     "cycle from where its profile ends (a move to the profile's end first) [V: rs274 2.9.0~pre1 "
+                     "run here], 2.9.3 starts its passes from the cycle's start point (interp_g7x.cc, commit "
+                     "b1f3e7d8), 2.9.4 and later also turn compensation off for the approach to the start point "
+                     "and each pass's first rapid (commits f648d01c, 0b80d453da), and those versions are not at "
+                     "hand to check; cancel compensation (G40) before the cycle, or write its profile under "
+                     "G41/G42 as moves")
     if state.plane != "ZX":
         raise refuse(f"{name} runs in the ZX plane only (rs274: \"can only be used in XZ plane (G18)\")")
     incremental = state.distance == "incremental"
@@ -232,24 +251,46 @@ def _check_closed(pieces: list[Piece], start: complex, code: str, name: str, unm
     front = pieces[0].end - pieces[0].start
     if code.startswith("71") and abs(back.real) > 0 and front.imag * (start.imag - end.imag) < 0:
         raise unmodelled(f"{name}: the profile ends at X{end.imag:g}, short of the cycle's X{start.imag:g}: LinuxCNC "
-                         "versions cut it differently (before and after 2.9.3); end the profile at the cycle's X")
+                         "versions cut it differently (interp_g7x.cc adds a move to the cycle's X from 2.9.1, commit "
+                         "03793cc9fa, under another condition from 2.9.4, commit c38c192fdd); end the profile at the "
+                         "cycle's X")
     if code.startswith("72") and abs(back.imag) > 0 and front.real * (start.real - end.real) < 0:
         raise unmodelled(f"{name}: the profile ends at Z{end.real:g}, short of the cycle's Z{start.real:g}: LinuxCNC "
-                         "versions cut it differently (before and after 2.9.3); end the profile at the cycle's Z")
+                         "versions cut it differently (interp_g7x.cc adds a move to the cycle's Z from 2.9.1, commit "
+                         "03793cc9fa, under another condition from 2.9.4, commit c38c192fdd); end the profile at the "
+                         "cycle's Z")
 
 
 def _evaluated(words: list[tuple[str, str]], values: dict[str, Any], ctx: Context,
-               unmodelled: Callable[[str], UnsupportedError]) -> list[tuple[str, str]]:
+               unmodelled: Callable[[str], UnsupportedError], point: dict[str, float]) -> list[tuple[str, str]]:
     """A profile block's words with its computed ones evaluated where the cycle runs: LinuxCNC reads the
     subprogram then, so its expressions take the parameters' values at the cycle, not at the definition [V:
     rs274 2.9.0~pre1: a global parameter set between the ``o100 sub`` and the ``G71 Q100`` shifts the cut by its
     new value, tests/test_ngc_g7x.py]. Global parameters only (named with a leading ``_``, numbered above 30 [K:
     LinuxCNC o-code docs: #1-#30 belong to a subprogram's call]) and numbers; a local one belongs to the
-    subprogram's own call level, which this reading does not keep: refused, as a computed G code."""
+    subprogram's own call level, which this reading does not keep: refused, as a computed G code.
+
+    The current position (``#<_x>``, ``#<_z>``, #5420, #5422) read there is the profile's own point (``point``, in
+    program units, X a radius): where the profile's moves so far end, from the cycle's X and Z [V: rs274
+    2.9.0~pre1 run here: a profile's first ``X[#<_x>-5] Z[#<_z>-1]`` after ``G0 X40 Z5`` and ``G72 .. X30 Z2`` ends
+    at X25 Z1; under G7 with the cycle's X60 ``X[#<_x>-10]`` ends at the radius 10 (``#<_x>`` reads the radius
+    30); LinuxCNC's ``nc_files/lathe_g7x_face_boring.ngc`` steps its profile by ``#<_x>``, tests/test_ngc_g7x.py].
+    The other axes read as the machine stands (``FrameReadings``)."""
     # imported here: the interpreter's modules import decimal, which a plain translation to LinuxCNC must not
     # pay for at start-up (tests/test_startup_imports.py); only a cycle's profile comes here
     from postproc.evaluation import evaluate_number
     from postproc.interp.run_state import is_number
+
+    from postproc.frames.parameters import FrameReadings
+    from postproc.rs274.variables import NgcVariables
+
+    class ProfileReadings(FrameReadings):
+        """The frame as the profile's words read it: the profile's point on X and Z, the rest as it stands."""
+
+        __slots__ = ()
+
+        def position(self, axis: str) -> float | None:
+            return point[axis] if axis in point else super().position(axis)
 
     variables = ctx.run_data.get(RUN_VARIABLES_KEY)
     out: list[tuple[str, str]] = []
@@ -261,10 +302,16 @@ def _evaluated(words: list[tuple[str, str]], values: dict[str, Any], ctx: Contex
         if variables is None or letter.upper() == "G" or not _global(value):
             raise unmodelled(f"{letter}{text}: a computed word in a G70-G72 profile reading a local parameter or "
                              "giving the G code is not supported (write the numbers, or use global parameters)")
+        frames = variables.frames if isinstance(variables, NgcVariables) else None
+        if isinstance(variables, NgcVariables):
+            variables.frames = ProfileReadings(ctx)
         try:
             number = evaluate_number(value, variables, f"{letter}{text}")
         except PostprocError as err:
             raise unmodelled(f"{letter}{text}: {err.message}") from None
+        finally:
+            if isinstance(variables, NgcVariables):
+                variables.frames = frames
         out.append((letter, repr(number)))
     return out
 
@@ -301,8 +348,11 @@ def _profile(written: list[Written], start: complex, ctx: Context, name: str, at
         def unmodelled(message: str) -> UnsupportedError:
             return UnsupportedError(f"{name}'s profile, line {line}: {message}", at)
 
+        if words and words[0][0] == STATEMENT:
+            raise unmodelled(f"'{words[0][1]}': a control statement or parameter assignment in a profile is not "
+                             "modelled (the controller runs it as it reads the profile: write the moves it makes)")
         if values:
-            words = _evaluated(words, values, ctx, unmodelled)
+            words = _evaluated(words, values, ctx, unmodelled, {"X": here.imag, "Z": here.real})
         got: dict[str, float] = {}
         for letter, num in words:
             up = letter.upper()

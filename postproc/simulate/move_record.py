@@ -1,0 +1,88 @@
+"""A straight move of a toolpath as one compiled record: the simulator fills it by field, the JSON lines writer
+(``postproc.simulate.event_text``) and verify's normalising (``postproc.simulate.runs``) read it by field.
+
+A CAM program is almost all straight moves; as a dictionary each was built key by key (two dictionaries under a
+tool length: the event and its controlled point), then taken apart key by key again by the writer and by
+``normalise`` (a type test, a look-up and a boxed number each item). The record holds the same event: its line,
+kind, the axis keys, the programmed point as written, the feed and feed mode where the event has them, and the
+controlled point where it differs. ``event()`` is that event as the dictionary the toolpath format defines
+(docs/toolpath-format.md), its keys in the order the JSON line writes them; every consumer that is not one of the
+two readers above takes that dictionary (``as_events``), so a record never leaves the toolpath's own streams.
+
+The simulator makes a record for a straight move (``Moves.line_move``, ``Moves._offset_line``) only where its run
+asks for them (``Moves.records``: ``toolpath_stream``); otherwise it emits ``event()`` of the same record, so both
+forms come from one computation. The lists a record holds are never changed after it is made (the simulator makes
+new lists where a point changes: ``Moves.reframe``)."""
+
+from __future__ import annotations
+
+from typing import Any, Iterable, Iterator, Union
+
+from mypy_extensions import mypyc_attr
+
+Event = dict[str, Any]
+
+
+@mypyc_attr(allow_interpreted_subclasses=True)
+class MoveRecord:
+    """One straight move event (``"move"``: rapid, feed, tap), by field."""
+
+    def __init__(self, line: int, kind: str, keys: tuple[str, ...], point: list[float | int],
+                 f: float | int | None, feed_mode: str | None, controlled: list[float | int] | None) -> None:
+        self.line = line
+        self.kind = kind
+        """The event's ``move``."""
+        self.keys = keys
+        """The axis keys, in the machine's order (``"x"``, ``"y"``, ``"z"``...): one tuple a run, shared."""
+        self.point = point
+        """The programmed point as written (``num``'s values: an int where integral), one value a key."""
+        self.f = f
+        """``f`` (None: the event has none, a rapid)."""
+        self.feed_mode = feed_mode
+        """``feed_mode`` where the event states one (it differs from the header's)."""
+        self.controlled = controlled
+        """The controlled point as written, one value a key, where it differs from the programmed one (else None)."""
+
+    def event(self) -> Event:
+        """The event as its dictionary: ``line``, ``move``, the axes, ``f``, ``feed_mode``, ``controlled``."""
+        keys, point = self.keys, self.point
+        ev: Event = {"line": self.line, "move": self.kind}
+        for i in range(len(keys)):
+            ev[keys[i]] = point[i]
+        if self.f is not None:
+            ev["f"] = self.f
+        if self.feed_mode is not None:
+            ev["feed_mode"] = self.feed_mode
+        controlled = self.controlled
+        if controlled is not None:
+            ctrl: Event = {}
+            for i in range(len(keys)):
+                ctrl[keys[i]] = controlled[i]
+            ev["controlled"] = ctrl
+        return ev
+
+    def __repr__(self) -> str:
+        return f"MoveRecord({self.event()!r})"
+
+
+Emitted = Union[Event, MoveRecord]
+"""What the simulator emits: an event's dictionary, or a straight move's record."""
+
+
+def as_event(item: Emitted) -> Event:
+    """An event of a toolpath stream as its dictionary (a record's ``event()``, any other as it is)."""
+    return item.event() if isinstance(item, MoveRecord) else item
+
+
+def as_events(items: Iterable[Emitted]) -> Iterator[Event]:
+    """A toolpath stream with each record as its dictionary: for the consumers that read events by key."""
+    for item in items:
+        yield item.event() if isinstance(item, MoveRecord) else item
+
+
+def move_kind(item: Emitted) -> str | None:
+    """An emitted event's ``move`` (None: it is no move)."""
+    if isinstance(item, MoveRecord):
+        return item.kind
+    kind: str | None = item.get("move")
+    return kind
