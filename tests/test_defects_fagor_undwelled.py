@@ -14,6 +14,7 @@ import io
 
 import pytest
 
+from postproc.api import translate
 from postproc.setup.machine_setup import MachineSetup
 from postproc.simulate.toolpath import toolpath_events
 from tests.support import rs274
@@ -69,3 +70,24 @@ def test_towards_linuxcnc_the_drill_runs_in_rs274() -> None:
 def test_a_fagor_copy_keeps_g81_without_k() -> None:
     program = _program("G81 G99 Z5 I-10 F100")
     assert CHECK.translate(program, "fagor", "fagor") == program
+
+
+@pytest.mark.parametrize(("cycle", "code"), [("G81 G99 Z5 I-10 F100", "G81"), ("G89 G99 Z5 I-10 F100", "G89")])
+def test_a_rewritten_fagor_cycle_without_a_dwell_is_its_own_code_again(cycle: str, code: str) -> None:
+    """A Fagor copy that rewrites its blocks (``--units inch``) writes the plain drill/bore from Fagor's code
+    table (``G81``/``G89`` without ``K``: the manual's K0), and reading the result back gives the same holes: the
+    toolpath (millimetres, as the simulation reports it), hand-derived, feeds to the bottom, rapids back to R
+    (G89: feeds back), and dwells nowhere. (Before, the table had no row for the neutral drill/bore: "cannot express the drill
+    cycle".)"""
+    program = _program(cycle)
+    out = io.StringIO()
+    translate(io.StringIO(program), out, file="in.nc", source="fagor", target="fagor", units="inch")
+    line = _cycle_line(out.getvalue())
+    assert code in line.split() and "K" not in line, out.getvalue()
+    events = list(toolpath_events(io.StringIO(out.getvalue()), file="out.nc", dialect="fagor"))
+    assert [e for e in events if e.get("event") == "dwell"] == []
+    moves = [(e["move"], round(e["x"], 5), round(e["z"], 5)) for e in events if "move" in e and e["line"] >= 5]
+    r, bottom, x = 5, -10, 10
+    back = "rapid" if code == "G81" else "feed"  # G89 (Fanuc's G85 without K) feeds out
+    assert moves == [("rapid", 0, r), ("feed", 0, bottom), (back, 0, r),
+                     ("rapid", x, r), ("feed", x, bottom), (back, x, r)], out.getvalue()

@@ -107,8 +107,15 @@ ROWS = (
 )
 """Codes whose meaning the IR models."""
 
+CODES_OF_DWELLING = {str(arg): spelling for spelling, _, kind, arg in ROWS if kind == "cycle"}
+"""The dwelling cycles' codes (``G81``, ``G89``)."""
+
 CYCLE_ALIASES = {"drill": "drill_dwell", "bore_feed": "bore_dwell_feed"}
-"""Neutral cycles Fagor writes as a dwelling cycle with no dwell (``K0`` when one is in force)."""
+"""Neutral cycles Fagor writes as a dwelling cycle with no dwell (``K0`` when one is in force): ``G81``/``G89``
+with ``K`` absent or 0 drill/bore without a dwell [V: Fagor 8055-M programming manual p.162 (G81), "[K5]
+Dwell ... If not programmed, the CNC will take the value of K0"; [K] the same ``K`` for the 8070 and for G89].
+The table writes them with those codes (``aliases``); reading, ``G81``/``G89`` are the dwelling rows and the
+cycle resolution makes them these where no ``K`` is in force (``dialects.fagor.cycle_words.UNDWELLED``)."""
 
 PATTERN_CODES = frozenset({"160", "161", "162", "163", "164", "165"})
 """Multiple machining: G160 line, G161 parallelogram, G162 grid, G163 full circle, G164 arc, G165 chord."""
@@ -127,6 +134,7 @@ CODES = CodeTable(
         **{f"159={n}": f"zero offset {n}" for n in range(7, MAX_OFFSET + 1)},
     },
     native_m={17: "end of a local subroutine [?]", 29: "end of a local subroutine [?]"},
+    aliases={("cycle", plain): CODES_OF_DWELLING[dwelling] for plain, dwelling in CYCLE_ALIASES.items()},
 )
 """Fagor's code table. ``native_g``/``native_m``: kept verbatim (they round-trip to Fagor, are refused
 anywhere else and are never simulated)."""

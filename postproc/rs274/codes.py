@@ -74,15 +74,18 @@ class CodeTable:
 
     Besides the rows whose meaning the IR models, a table holds the codes the dialect keeps verbatim
     (``native_g``/``native_m``: number -> what it does; they round-trip to this dialect only), the codes
-    its reader refuses with a message (``refused_g``/``refused_m``), and the user M codes it keeps
-    verbatim (``user_m``).
+    its reader refuses with a message (``refused_g``/``refused_m``), the user M codes it keeps
+    verbatim (``user_m``), and the meanings it writes with another row's code (``aliases``: Fagor's ``G81``
+    without a dwell is Fanuc's plain drill; the reader reads the row's meaning and the cycle resolution
+    tells the two apart, ``CycleWords.undwelled``).
     """
 
     __slots__ = ("rows", "g", "m", "native_g", "native_m", "refused_g", "refused_m", "user_m", "_spelling")
 
     def __init__(self, rows: Iterable[Row], *, native_g: Mapping[str, str] | None = None,
                  native_m: Mapping[int, str] | None = None, refused_g: Mapping[str, str] | None = None,
-                 refused_m: Mapping[int, str] | None = None, user_m: range = range(0)) -> None:
+                 refused_m: Mapping[int, str] | None = None, user_m: range = range(0),
+                 aliases: Mapping[tuple[str, object], str] | None = None) -> None:
         self.rows: tuple[Row, ...] = tuple(rows)
         self.g: dict[str, tuple[str, str, object]] = {}
         """G number key (``g_key``) -> (modal group, kind, argument)."""
@@ -103,6 +106,11 @@ class CodeTable:
             else:
                 raise ValueError(f"code table: {spelling!r} is neither a G nor an M code")
             self._spelling.setdefault((kind, arg), spelling)
+        spellings = {spelling for spelling, _, _, _ in self.rows}
+        for meaning, spelling in (aliases or {}).items():
+            if spelling not in spellings or meaning in self._spelling:
+                raise ValueError(f"code table: alias {meaning} -> {spelling!r} is not another row's code")
+            self._spelling[meaning] = spelling
         self.native_g: dict[str, str] = {g_key(k): v for k, v in (native_g or {}).items()}
         self.native_m: dict[int, str] = dict(native_m or {})
         self.refused_g: dict[str, str] = {g_key(k): v for k, v in (refused_g or {}).items()}
