@@ -176,14 +176,14 @@ class Dialect:
     refuses it, at its own block (``postproc.lowering.length_timing`` leaves it there, never moves it to the
     block where the target would apply it)."""
     PATH_CONTROL_AT_START: ClassVar[str] = "cutting"
-    """The path control mode in force before a program programs one ('cutting' or 'exact_stop'): [K] Fanuc and
-    LinuxCNC power on in G64. A translation between two dialects that start differently writes the source's
+    """The path control mode in force before a program programs one ('cutting', 'exact_stop', or grbl's
+    'exact_path': ``PathControl``): [K] Fanuc and LinuxCNC power on in G64. A translation between two dialects that start differently writes the source's
     mode before the first move where the program sets none first (``postproc.lowering.path_at_start``), and
     the simulation counts it from the first move (``Simulator.record_settings``)."""
     PATH_CONTROL: ClassVar[str | None] = None
     """The one path control mode the controller runs in, whatever the program says; None: the program sets
-    it. ``verify`` accepts a source whose every path control is this mode, and with "exact_stop" (grbl's
-    exact path: every programmed point is reached) any source: a blending mode only lets the path leave the
+    it. ``verify`` accepts a source whose every path control is this mode, and with an exact mode (grbl's
+    "exact_path": every programmed point is reached) any source: a blending mode only lets the path leave the
     programmed points the simulation compares."""
     LENGTH_TOGGLES: ClassVar[bool] = True
     """The tool length offset is turned on and off by code (G43/G49, Fagor's G43/G44); False: it applies
@@ -290,6 +290,11 @@ class Dialect:
     LATHE_TURRET: ClassVar[bool] = True
     """On a lathe, T indexes the turret with its offset (Fanuc-family ``T0101``); False: the control changes a
     lathe tool as a mill's, with ``M6`` (LinuxCNC), and a turret index is written so."""
+    LATHE_PATH_CONTROL: ClassVar[bool] = True
+    """A lathe program can set a modal path control mode (G61/G64); False where the lathe code table has none
+    (Fanuc T, GSK 980TDc: [?], their writers' ``PATH_CONTROL_LACK``): a mode the program sets is refused there
+    by name, and a source's power-on exact mode, which the program never asked for, is not written, with a
+    warning (``postproc.lowering.path_at_start``)."""
     LATHE_ONE_BLOCK: ClassVar[bool] = False
     """The control reads the one-block forms ``G71 P Q U W D F`` and ``G76 X Z I K D F A P`` (Fanuc
     10/11/15-T) when the set-up's ``latheCycleFormat`` says so; without it every cycle has two blocks."""

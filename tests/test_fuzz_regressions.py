@@ -38,7 +38,8 @@ def test_a_percent_line_is_no_program_end_for_grbl() -> None:
     program = HEAD + "%\nG91 Z5\n"
     out = io.StringIO()
     translate(io.StringIO(program), out, file="t.nc", source="grbl", target="fanuc")
-    assert out.getvalue() == "G21 G90 G00 X0. Y0. Z10.\n(%)\nG91 G00 Z5.\n"
+    # (G61 first: grbl's power-on exact path [V: grbl gcode.h], Fanuc's exact stop [K]; ``path_at_start``)
+    assert out.getvalue() == "G61 G21 G90 G00 X0. Y0. Z10.\n(%)\nG91 G00 Z5.\n"
     report = verify_lines(io.StringIO(program), io.StringIO(out.getvalue()), file_in="a.nc", file_out="b.nc",
                           source="grbl", target="fanuc", tolerance=0.0)
     assert report.ok and report.moves == 1, report.summary()

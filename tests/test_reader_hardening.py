@@ -39,7 +39,9 @@ def test_a_grbl_slash_block_translates_as_a_block_that_always_runs() -> None:
     out = io.StringIO()
     translate(io.StringIO("G21 G0 X0 Y0 Z1\n/G0 X5\n"), out, file="t.gcode", source="grbl", target="fanuc",
               diagnostics=Diagnostics(ErrorLevel.RAISE, warn_stream=io.StringIO()))
-    assert out.getvalue() == "G21 G00 X0. Y0. Z1.\nG00 X5.\n"
+    # (G61 first: grbl runs its one mode, the exact path, from power-on [V: grbl gcode.h CONTROL_MODE_EXACT_PATH
+    # "G61 (Default)"]; Fanuc powers on in the cutting mode G64 [K], and writes it with its exact stop G61 [K])
+    assert out.getvalue() == "G61 G21 G00 X0. Y0. Z1.\nG00 X5.\n"
 
 
 def linuxcnc_to(target: str, text: str) -> tuple[str, list[str]]:

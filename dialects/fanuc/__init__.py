@@ -88,6 +88,8 @@ class Fanuc(Dialect):
     """Fanuc T: U and W are incremental X (a diameter) and Z (``postproc.rs274.lathe_axes``)."""
     LATHE_FEED_AT_START = "per_rev"
     """Fanuc T starts in G99 (feed per revolution; parameter 3402#4 FPM = 0, the default)."""
+    LATHE_PATH_CONTROL = False
+    """The lathe code table has no G61/G64 [?: the writer's ``PATH_CONTROL_LACK``]."""
     LATHE_ONE_BLOCK = True
     """10/11/15-T read ``G71 P Q U W D F`` and ``G76 X Z I K D F A P`` (the set-up's ``latheCycleFormat``)."""
     MACRO_ARGUMENTS = LETTER_LOCALS

@@ -42,6 +42,8 @@ class Gsk(Dialect):
     """U and W are incremental X (a diameter) and Z (``postproc.rs274.lathe_axes``)."""
     LATHE_FEED_AT_START = "per_min"
     """The 980TDc starts in G98 (feed per minute)."""
+    LATHE_PATH_CONTROL = False
+    """The code table has no G61/G64 [?: the writer's ``PATH_CONTROL_LACK``]."""
     SPINDLE_ORIENTATION = False
     """No M19 on the 980TDc."""
     COMMENTS = CommentSyntax(parens=True, nested=False, semicolon=False)

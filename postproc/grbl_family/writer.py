@@ -63,12 +63,14 @@ class GrblFamilyWriter(WordWriter):
 
     # -- section words -----------------------------------------------------------------------------
     def path_control_words(self, s: Any, block: Block) -> list[str]:
-        """Nothing for a cutting mode or a one-shot exact stop: the build's one mode (module docstring)."""
+        """Nothing for a cutting mode or a one-shot exact stop: the build's one mode (module docstring). An
+        exact stop mode is written as that one mode's code, the exact path (G61: the same programmed points;
+        grbl has no G61.1 [V: ``gcode.c``])."""
         if s.one_shot or s.mode == "cutting":
             if not s.one_shot:
                 self.note_unwritten_tolerance(s, block)
             return []
-        return super().path_control_words(s, block)
+        return self._code("path", "exact_path", f"path control {s.mode}", block)
 
     def program_start(self, s: Any, block: Block) -> str:
         """The parser takes no program number: it survives as a comment."""

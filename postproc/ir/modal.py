@@ -303,7 +303,13 @@ class ProgramControl(Section):
 
 @mypyc_attr(allow_interpreted_subclasses=True)
 class PathControl(Section):
-    """'exact_stop' or 'cutting' path control. ``tolerance`` and ``naive``: how far a blended path may
+    """'exact_stop', 'exact_path' or 'cutting' path control. 'exact_stop': the machine stops at the end of each
+    block (Fanuc G61 [K], LinuxCNC G61.1 [V]); 'exact_path': the path runs through every programmed point, the
+    machine slowing at a corner as it must, not necessarily stopping (grbl's G61, its one mode [V: grbl ``gcode.h``
+    ``CONTROL_MODE_EXACT_PATH // G61``, ``gcode.c`` refuses G61.1]; LinuxCNC's G61 [V: ``g-code.adoc``]): the two
+    reach the same programmed points, so a target without an exact path writes its exact stop
+    (``WordWriter.path_control_words``) and ``verify`` takes them as one; 'cutting' may blend (leave the points).
+    ``tolerance`` and ``naive``: how far a blended path may
     leave the programmed one, and how far a run of short moves may be merged (LinuxCNC ``G64 P Q``, program
     units; None: not given). They change no controlled point."""
 

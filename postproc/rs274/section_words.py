@@ -159,11 +159,17 @@ class SectionWords(NumberWriter):
     source, added to the refusal); empty: none said."""
 
     def path_control_words(self, s: Any, block: Block) -> list[str]:
+        """The mode's code; the exact path, where the table has no code for it, as the exact stop (Fanuc's G61
+        [K]): the same programmed points reached, the machine also stopping at each block end
+        (``PathControl``)."""
         if s.one_shot:
             return self._code("path_once", s.mode, "a one-shot exact stop", block)
         self.note_unwritten_tolerance(s, block)
         lack = self.PATH_CONTROL_LACK
-        return self._code("path", s.mode, f"path control {s.mode}" + (f" ({lack})" if lack else ""), block)
+        mode = s.mode
+        if mode == "exact_path" and self.codes.spell("path", mode) is None:
+            mode = "exact_stop"
+        return self._code("path", mode, f"path control {s.mode}" + (f" ({lack})" if lack else ""), block)
 
     def note_unwritten_tolerance(self, s: Any, block: Block) -> None:
         """Warn where a program's blending tolerances are not written (``WRITES_PATH_TOLERANCE``)."""

@@ -40,6 +40,8 @@ _KIND_EVENT: Final = 8
 _KIND_RARE: Final = 16
 EXACT: Final = "exact stop"
 """How an exact stop mode reads as a setting (``postproc.simulate.events._setting_text``)."""
+_EXACT_TEXTS: Final = frozenset((EXACT, "exact path"))
+"""The settings of the modes that reach every programmed point (``PathControl``)."""
 _RARE_KEYS: Final = frozenset(("TapeMark", "InProfile", "NativeCode", "CompoundMotion", "CoordinateSet", "RigidTap",
                                "CycleCall"))
 """Sections a CAM block has none of, each looked up by ``Simulator.block`` only where the block has one of them
@@ -219,16 +221,18 @@ class Simulator(Moves):
         blending, which writes the mode first (``postproc.lowering.path_at_start``), compares alike; one that
         starts blending records nothing, as before (the changes recorded count from blending)."""
         self.path_pending = False
-        if self.settings.get(PATH_CONTROL) is None and self.ctx.path_at_start == "exact_stop":
-            self.settings[PATH_CONTROL] = EXACT
-            self.unsimulated.append((line, PATH_CONTROL, EXACT))
+        start = self.ctx.path_at_start
+        if self.settings.get(PATH_CONTROL) is None and start != "cutting":  # exact stop, or grbl's exact path
+            text = start.replace("_", " ")
+            self.settings[PATH_CONTROL] = text
+            self.unsimulated.append((line, PATH_CONTROL, text))
 
     def _stop_once(self, line: int, kind: str) -> None:
         """A one-shot exact stop: exact stop for the block, then the mode before (where none was set, the
         controller's power-on mode: cutting on Fanuc and LinuxCNC [K], ``Dialect.PATH_CONTROL_AT_START``), so a target without one that writes the two modes
         (LinuxCNC's ``exact_stop`` lowering) compares alike; under an exact-stop mode it changes nothing."""
-        before = self.settings.get(kind) or (EXACT if self.ctx.path_at_start == "exact_stop" else "cutting")
-        if before == "exact stop":
+        before = self.settings.get(kind) or self.ctx.path_at_start.replace("_", " ")
+        if before in _EXACT_TEXTS:  # (under the exact path, the stop changes no point reached either)
             return
         self.unsimulated += [(line, kind, "exact stop"), (line, kind, before)]
         self.settings[kind] = before

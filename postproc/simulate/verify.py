@@ -114,12 +114,17 @@ def verify_lines(lines_in: Iterable[str], lines_out: Iterable[str], *, file_in: 
     compare_after_end(report, after_in, after_out)
     fixed = dialects.dialect(target).PATH_CONTROL
     asked = [value for _, kind, value in settings_in if kind == "path control"]
-    if fixed is not None and asked and (fixed == "exact_stop" or all(value == fixed.replace("_", " ")
-                                                                     for value in asked)):
+    if fixed is not None and (fixed in _EXACT_MODES or asked and all(value == fixed.replace("_", " ")
+                                                                      for value in asked)):
+        # (a target whose one mode reaches every point answers any source: its power-on mode, recorded at the
+        # output's first move, is no difference either)
         settings_in = [s for s in settings_in if s[1] != "path control"]
         settings_out = [s for s in settings_out if s[1] != "path control"]
-        report.ignored.append(_one_path_mode(target, fixed))
-    if dialects.dialect(target).PATH_CONTROL_AT_START == "exact_stop" != dialects.dialect(source).PATH_CONTROL_AT_START:
+        if asked:
+            report.ignored.append(_one_path_mode(target, fixed))
+    settings_in, settings_out = _exact_path_as_stop(report, settings_in, settings_out)
+    if (dialects.dialect(target).PATH_CONTROL_AT_START in _EXACT_MODES
+            and dialects.dialect(source).PATH_CONTROL_AT_START not in _EXACT_MODES):
         settings_in, settings_out = _stricter_start(report, target, settings_in, settings_out)
     if transform is not None and mirrors_xy(transform.map):
         settings_in = [(line, kind, _other_side(value) if kind == "cutter compensation" else value)
@@ -134,10 +139,36 @@ def verify_lines(lines_in: Iterable[str], lines_out: Iterable[str], *, file_in: 
     return report
 
 
+_EXACT_MODES = frozenset(("exact_stop", "exact_path"))
+"""The path control modes that reach every programmed point (``PathControl``)."""
+
+
+def _exact_path_as_stop(report: Report, settings_in: list[tuple[int, str, str]],
+                        settings_out: list[tuple[int, str, str]]
+                        ) -> tuple[list[tuple[int, str, str]], list[tuple[int, str, str]]]:
+    """Both sides' settings with the exact path read as the exact stop, where one side has an exact path and the
+    two then agree: the two reach the same programmed points, which is what the simulation compares; they
+    differ only in whether the machine stops at each block end (grbl's power-on G61 written as Fanuc's G61, an
+    exact stop [K]: ``PathControl``). The note says so. Otherwise both are returned as they are."""
+    def as_stop(settings: list[tuple[int, str, str]]) -> list[tuple[int, str, str]]:
+        return [(line, kind, "exact stop" if kind == "path control" and value == "exact path" else value)
+                for line, kind, value in settings]
+
+    paths = [s for s in settings_in + settings_out if s[1] == "path control" and s[2] == "exact path"]
+    if not paths:
+        return settings_in, settings_out
+    new_in, new_out = as_stop(settings_in), as_stop(settings_out)
+    if [s[2] for s in new_in if s[1] == "path control"] != [s[2] for s in new_out if s[1] == "path control"]:
+        return settings_in, settings_out
+    report.ignored.append("path control: the exact path (line " + str(paths[0][0]) + ") compared as the exact stop: "
+                          "the same programmed points reached, whether the machine stops at each block end not compared")
+    return new_in, new_out
+
+
 def _one_path_mode(target: str, fixed: str) -> str:
     """Why a target's one path control mode answers the source's: an exact path reaches every programmed
     point, which is all the simulation compares (a blending source only lets the path leave them)."""
-    if fixed == "exact_stop":
+    if fixed in _EXACT_MODES:
         return (f"path control: {target} always runs the exact path (every programmed point reached), which "
                 "the source's modes ask for or allow")
     return f"path control: {target} always runs in {fixed.replace('_', ' ')} mode, as the source asks"
@@ -278,7 +309,7 @@ def _stricter_start(report: Report, target: str, settings_in: list[tuple[int, st
     blending mode set. The note says so. Otherwise both are returned as they are, and compared."""
     ins = [s for s in settings_in if s[1] == "path control"]
     outs = [s for s in settings_out if s[1] == "path control"]
-    if not outs or outs[0][2] != "exact stop":
+    if not outs or outs[0][2] not in ("exact stop", "exact path"):
         return settings_in, settings_out
     i, o = _first_blending(ins), _first_blending(outs)
     if o < len(outs) and (i == len(ins) or [s[2] for s in ins[i:]] != [s[2] for s in outs[o:]]):
@@ -293,6 +324,7 @@ def _first_blending(changes: list[tuple[int, str, str]]) -> int:
     """The index of the first change to a blending mode that is not the end of a one-shot exact stop (an
     exact stop and the mode before at one line); ``len(changes)`` where there is none."""
     for k, (line, _, value) in enumerate(changes):
-        if value != "exact stop" and not (k > 0 and changes[k - 1][0] == line and changes[k - 1][2] == "exact stop"):
+        if value not in ("exact stop", "exact path") and not (k > 0 and changes[k - 1][0] == line
+                                                               and changes[k - 1][2] == "exact stop"):
             return k
     return len(changes)

@@ -110,16 +110,19 @@ class Grbl(GrblFamily):
     (``postproc.lowering.cutter_compensation``); tool change as a pause, G49 before motion, full circles with an end point; a
     moving block's spindle stop and coolant off after it (grbl runs them before the motion:
     ``postproc.rs274.order_of_execution``)."""
-    PATH_CONTROL = "exact_stop"
+    PATH_CONTROL = "exact_path"
     """grbl runs one mode, the exact path (G61, accepted and changing nothing): the tool goes through every
     programmed point, the junction deviation ($11) only slowing it at a corner [V: grbl ``gcode.h``
     ``CONTROL_MODE_EXACT_PATH // G61 (Default: Must be zero)``, the only group 13 code ``gcode.c`` accepts;
     the planner limits the junction speed, it does not round the path]. So a source's cutting mode (G64) and
     exact stop (G61) both run as programmed (``verify``)."""
-    PATH_CONTROL_AT_START = "exact_stop"
+    PATH_CONTROL_AT_START = "exact_path"
     """It is also the mode in force at power-on (the same ``gcode.h`` default): a program for a controller that
-    powers on blending (Fanuc, LinuxCNC: G64) gets its exact stop before the first move
-    (``postproc.lowering.path_at_start``), so the corners this program reaches are reached there too."""
+    powers on blending (Fanuc, LinuxCNC: G64) gets that controller's exact path code before the first move
+    (LinuxCNC's G61, the same mode [V: ``g-code.adoc``]; Fanuc's G61, an exact stop [K]: the same points, the
+    machine also stopping), so the corners this program reaches are reached there too
+    (``postproc.lowering.path_at_start``). Towards a lathe whose table has no modal path code (Fanuc/GSK T) it
+    is not written: the program asked for nothing, and refusing it would refuse every grbl lathe program."""
     CUTTER_COMPENSATION = False
     """Only G40."""
     TOOL_LENGTH_OFFSET = False

@@ -34,7 +34,7 @@ ROWS = (
     ("G57", "14", "offset", 4),
     ("G58", "14", "offset", 5),
     ("G59", "14", "offset", 6),
-    ("G61", "15", "path", "exact_stop"),
+    ("G61", "15", "path", "exact_path"),
     ("G80", "09", "cycle_cancel", None),
     ("G90", "03", "distance", "absolute"),
     ("G91", "03", "distance", "incremental"),

@@ -160,15 +160,18 @@ class Grblhal(GrblFamily):
     LATHE_TURRET = False
     """A lathe tool is changed with M6 and its offsets applied by ``G43 H`` (``lathe``): ``T0101`` is written
     ``T1 M6`` .. ``G43 H1`` (``postproc.cycles.lathe_lowering``)."""
-    PATH_CONTROL = "exact_stop"
+    PATH_CONTROL = "exact_path"
     """grblHAL runs grbl's one mode, the exact path (G61 changes nothing; ``ENABLE_PATH_BLENDING``, G64, is
     off in every build): the tool goes through every programmed point, the junction deviation only slowing it
     at a corner [V: grblHAL core ``gcode.h`` ``control_mode_t``: ``ControlMode_ExactPath`` "G61 - Default"; G61.1 and G64
     only under ``ENABLE_PATH_BLENDING``]."""
-    PATH_CONTROL_AT_START = "exact_stop"
+    PATH_CONTROL_AT_START = "exact_path"
     """It is also the mode in force at power-on (the same ``gcode.h`` default): a program for a controller that
-    powers on blending (Fanuc, LinuxCNC: G64) gets its exact stop before the first move
-    (``postproc.lowering.path_at_start``), so the corners this program reaches are reached there too."""
+    powers on blending (Fanuc, LinuxCNC: G64) gets that controller's exact path code before the first move
+    (LinuxCNC's G61, the same mode [V: ``g-code.adoc``]; Fanuc's G61, an exact stop [K]: the same points, the
+    machine also stopping), so the corners this program reaches are reached there too
+    (``postproc.lowering.path_at_start``). Towards a lathe whose table has no modal path code (Fanuc/GSK T) it
+    is not written: the program asked for nothing, and refusing it would refuse every grbl lathe program."""
     CUTTER_COMPENSATION = False
     """Only G40 (``CUTTER_COMP_ENABLE`` is off, experimental)."""
     TOOL_LENGTH_OFFSET = False

@@ -42,7 +42,7 @@ ROWS = (
     ("G59.1", "14", "offset", 7),
     ("G59.2", "14", "offset", 8),
     ("G59.3", "14", "offset", 9),
-    ("G61", "15", "path", "exact_stop"),
+    ("G61", "15", "path", "exact_path"),
     ("G80", "09", "cycle_cancel", None),
     ("G73", "09", "cycle", "peck_chip"),
     ("G81", "09", "cycle", "drill"),

@@ -7,8 +7,10 @@ and G87/G88 follow the NIST RS274/NGC words and motion (kept verbatim, see ``NAT
 G61.1 and G93 are added; on a lathe set-up G33 (spindle-synchronised motion, K the distance per revolution),
 G96 S D/G97 (constant surface speed with its clamp) and G7/G8 read into lathe sections (``lathe``), and G76 (the
 threading cycle) into its moves (``threading``), as are G70-G72.2 (the lathe cycles, ``lathe_cycles``); on a mill they stay verbatim (``NATIVE_G``); G33.1 (rigid tapping) reads into ``RigidTap`` and G90.1/G91.1 (the arc centre
-mode, kind ``arc_centres``, which no section carries) into offsets from the arc's start (``block_syntax``). G61 (exact path) and G61.1 (exact stop) both read as exact stop (the IR does
-not tell them apart); G61 is written. Sources: LinuxCNC ``docs/src/gcode/g-code.adoc`` and
+mode, kind ``arc_centres``, which no section carries) into offsets from the arc's start (``block_syntax``). G61 (exact path) and G61.1 (exact stop) both read as exact stop (a
+reading kept from before the IR told them apart: the same programmed points; G61.1 is not written, so every
+output that has G61 keeps it); G61 is written for both, and for the exact path (grbl's one mode) [V:
+``g-code.adoc`` "G61 Exact Path mode", "G61.1 Exact Stop mode"]. Sources: LinuxCNC ``docs/src/gcode/g-code.adoc`` and
 ``m-code.adoc``, and DIALECTS.md §2.1 "LinuxCNC / RS274-NGC baseline". G52 and G92-G92.3 are frame
 codes (``postproc.frames``, rs274 rules).
 """
@@ -146,5 +148,5 @@ M_GROUPS: dict[int, str] = {
 ``M62 P1 M64 P2`` and ``M0 M60`` are refused, ``M3 M8 M0`` and ``M48 M3`` run)."""
 
 CODES = CodeTable(ROWS, native_g=NATIVE_G, native_m=NATIVE_M, refused_g=REFUSED_G, refused_m=REFUSED_M,
-                  user_m=USER_M)
+                  user_m=USER_M, aliases={("path", "exact_path"): "G61"})
 """LinuxCNC's code table."""
