@@ -417,3 +417,24 @@ def test_a_copy_that_fails_to_run_as_its_source_does_is_refused_as_the_simulatio
     with pytest.raises(ErrorList) as copied:
         translate(io.StringIO(program), io.StringIO(), file="in.nc", source="mach3", target="mach3")
     assert [str(e) for e in copied.value.errors] == [str(simulated.value.errors[0])]
+
+
+def test_the_options_fuzz_spells_an_isg_dwell_with_x() -> None:
+    """make fuzz ('options isg-isg'): the generator's ``G4 P1`` reached ISG as written, where ``P1`` is a parameter
+    (ISG dwells with ``G04 X`` [K: DIALECTS.md, the ISG writer's DWELL_WORD]): verify refused the unset read on both
+    sides, as every evaluating translation does (located). The generator now spells the dwell in ISG's words; the
+    copy of the spelled program verifies, with its one-second dwell (hand-derived)."""
+    from tests.support.generators.program_options import spelled
+
+    program = spelled("isg", "G21 G17 G90 G94\nG0 X0. Y0. Z10.\nG4 P1\nM30\n")
+    assert program == "G71 G17 G90 G94\nG0 X0. Y0. Z10.\nG04 X1\nM30\n"
+    out = io.StringIO()
+    translate(io.StringIO(program), out, file="in.nc", source="isg", target="isg")
+    report = verify_lines(io.StringIO(program), io.StringIO(out.getvalue()), file_in="a.nc", file_out="b.nc",
+                          source="isg", target="isg", tolerance=0.0)
+    assert report.ok, report.summary()
+    dwells = [e for e in toolpath_events(io.StringIO(program), file="in.nc", dialect="isg") if e.get("event") == "dwell"]
+    assert [d.get("seconds") for d in dwells] == [1.0], dwells
+    with pytest.raises(ErrorList, match="in.nc:3:1: error: P1 is read before it is set"):
+        translate(io.StringIO(program.replace("G04 X1", "G4 P1")), io.StringIO(), file="in.nc", source="isg",
+                  target="fanuc")
