@@ -72,6 +72,29 @@ class LoweringStep:
         return blocks if run is None else run_blocks(blocks, [run])
 
 
+class Steps(BlockStep):
+    """Several ``BlockStep``s as one, in order (a ``LoweringStep`` whose work is two rewrites, one after the
+    other): a block that is only a move is its business while it is one of theirs."""
+
+    def __init__(self, steps: list[BlockStep]) -> None:
+        super().__init__()
+        self.steps = steps
+        self.moves = any(step.moves for step in steps)
+
+    def take(self, block: Block) -> list[Block] | None:
+        made = list(_onward(block, self.steps, 0))
+        self.moves = any(step.moves for step in self.steps)
+        return None if len(made) == 1 and made[0] is block else made
+
+    def finish(self) -> list[Block]:
+        steps = self.steps
+        made: list[Block] = []
+        for k in range(len(steps)):
+            for held in steps[k].finish():
+                made.extend(_onward(held, steps, k + 1))
+        return made
+
+
 def register_transform(transform: Lowering) -> Lowering:
     """Add a generic step to ``TRANSFORMS`` (idempotent)."""
     if transform not in TRANSFORMS:
