@@ -62,7 +62,7 @@ from ..errors import UnsupportedError
 from ..ir import Block, CutterCompensation
 from ..compensation.rules import CutterRules
 from .cutter_resolver import Keeps, Resolver, keep_native
-from .lower import BlockStep, LoweringStep
+from .lower import BlockStep, LoweringStep, run_blocks
 
 RESOLVED = "cutter_compensation_resolved"
 """``Context.run_data`` key: the target for which ``resolve_dynamic_cutter_compensation`` resolves every G41/G42
@@ -142,7 +142,13 @@ def resolve_cutter_compensation_unless(blocks: Iterator[Block], ctx: Context,
                                        keeps: Keeps) -> Iterator[Block]:
     """G41/G42 become the compensated path where ``keeps`` says the target cannot write them as they are
     (and the source's rules are modelled: else the target's own step decides); G41.1/G42.1 always."""
+    run = resolution_unless(ctx, keeps)
+    return blocks if run is None else run_blocks(blocks, [run])
+
+
+def resolution_unless(ctx: Context, keeps: Keeps) -> BlockStep | None:
+    """``resolve_cutter_compensation_unless`` as a lowering step's run (None: nothing to resolve)."""
     rules: CutterRules | None = ctx.cutter_rules
     if rules is None:
-        return blocks
-    return Resolver(ctx, rules, keeps).run(blocks)
+        return None
+    return Resolver(ctx, rules, keeps).resolution()
