@@ -9,7 +9,7 @@ What DIALECTS.md marks uncertain for the 8070 [?] is kept verbatim (``reader``).
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Callable, Iterator
+from typing import TYPE_CHECKING, Callable
 
 from postproc.context import Context
 from postproc.comments import CommentSyntax
@@ -18,6 +18,7 @@ from postproc.state import MM_PER_INCH
 from postproc.dialect import Dialect, Lazy, Reader
 from postproc.errors import Diagnostics
 from postproc.hookspecs import hookimpl
+from postproc.lowering.lower import BlockStep, LoweringStep
 from postproc.rs274.order_of_execution import stops_before_motion
 from postproc.setup.machine_setup import MachineSetup
 from postproc.syntax import Pipeline
@@ -30,24 +31,34 @@ if TYPE_CHECKING:
 from .cycle_words import SECONDS, cycle_words
 
 
-def select_tool_data(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+class _SelectToolData(LoweringStep):
     """``postproc.isg_family.tool_data.select_tool_data``, imported when a translation first lowers for
     this dialect."""
-    from postproc.isg_family.tool_data import select_tool_data as step
-    return step(blocks, ctx, target)
+
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        from postproc.isg_family.tool_data import select_tool_data as step
+        return step.start(ctx, target)
 
 
-def end_cycles_before_moves(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+class _EndCyclesBeforeMoves(LoweringStep):
     """``cycle_end.end_cycles_before_moves``, imported when a translation first lowers for this dialect."""
-    from .cycle_end import end_cycles_before_moves as step
-    return step(blocks, ctx, target)
+
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        from .cycle_end import end_cycles_before_moves as step
+        return step.start(ctx, target)
 
 
-def resolve_radius_where_d_cannot(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+class _ResolveRadiusWhereDCannot(LoweringStep):
     """``postproc.isg_family.tool_data.resolve_radius_where_d_cannot``, imported when first used."""
-    from postproc.isg_family.tool_data import resolve_radius_where_d_cannot as step
-    return step(blocks, ctx, target)
 
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        from postproc.isg_family.tool_data import resolve_radius_where_d_cannot as step
+        return step.start(ctx, target)
+
+
+select_tool_data = _SelectToolData()
+end_cycles_before_moves = _EndCyclesBeforeMoves()
+resolve_radius_where_d_cannot = _ResolveRadiusWhereDCannot()
 
 class Fagor(Dialect):
     NAME = "fagor"

@@ -22,12 +22,13 @@ point: the machine drills where the source only moved. So the written program ne
 
 from __future__ import annotations
 
-from typing import Iterator, Mapping
+from typing import Mapping
 
 from postproc.context import Context
 from postproc.dialect import Dialect
 from postproc.errors import UnsupportedError
 from postproc.ir import Block, CycleCancel, Motion
+from postproc.lowering.lower import BlockStep, LoweringStep
 
 GROUP_01 = frozenset(("rapid", "linear", "cw", "ccw"))
 """Motion modes of the motion codes, which end a cycle on Fanuc and maybe not on the 8070 [?]."""
@@ -35,35 +36,58 @@ REFERENCE = frozenset(("home", "home2"))
 """Motion modes of a reference return (group 00: the source's cycle stays in force)."""
 
 
-def end_cycles_before_moves(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+class EndCyclesBeforeMoves(LoweringStep):
     """The blocks, with a ``G80`` block before each move that follows a native cycle (the module docstring)."""
-    active = False
-    """The written program has a native cycle in force."""
-    kept_by_source = False
-    """A ``G80`` was written before a reference return while the source's cycle stays in force."""
-    for block in blocks:
+
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        return _CycleEnds(ctx)
+
+
+end_cycles_before_moves = EndCyclesBeforeMoves()
+
+
+class _CycleEnds(BlockStep):
+    """One run: a move is its business while a written cycle is in force or a ``G80`` was written before a
+    reference return."""
+
+    def __init__(self, ctx: Context) -> None:
+        super().__init__()
+        self.moves = False
+        self.ctx = ctx
+        self.active = False
+        """The written program has a native cycle in force."""
+        self.kept_by_source = False
+        """A ``G80`` was written before a reference return while the source's cycle stays in force."""
+
+    def take(self, block: Block) -> list[Block] | None:
+        made = self._take(block)
+        self.moves = self.active or self.kept_by_source
+        return made
+
+    def _take(self, block: Block) -> list[Block] | None:
         sections = block.sections
         if "CycleCancel" in sections:
-            active = kept_by_source = False
+            self.active = self.kept_by_source = False
         elif "CannedCycle" in sections:
             cycle = sections["CannedCycle"]
-            if kept_by_source and not getattr(cycle, "call", False):
+            if self.kept_by_source and not getattr(cycle, "call", False):
+                ctx = self.ctx
                 ctx.diagnostics.error(UnsupportedError(
                     "a hole of a fixed cycle after a reference return: Fagor ends the cycle with G80 before the "
                     "return (whether a motion ends it on the 8070 is not confirmed), so the hole needs the "
                     "cycle called again", ctx.at(block)))
-            active, kept_by_source = True, False
-        elif active and _moves(sections):
-            yield _cancel(block)
-            active = False
+            self.active, self.kept_by_source = True, False
+        elif self.active and _moves(sections):
+            self.active = False
             motion = sections.get("Motion")
-            kept_by_source = isinstance(motion, Motion) and motion.mode in REFERENCE \
+            self.kept_by_source = isinstance(motion, Motion) and motion.mode in REFERENCE \
                 and "MachineCoordinates" not in sections
-        elif kept_by_source and _moves(sections):
+            return [_cancel(block), block]
+        elif self.kept_by_source and _moves(sections):
             motion = sections.get("Motion")
             if not (isinstance(motion, Motion) and motion.mode in REFERENCE):
-                kept_by_source = False  # (a motion code: the source's cycle ends here too)
-        yield block
+                self.kept_by_source = False  # (a motion code: the source's cycle ends here too)
+        return None
 
 
 def _moves(sections: Mapping[str, object]) -> bool:

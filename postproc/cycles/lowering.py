@@ -26,7 +26,7 @@ executed block (flattened) has no control statements and is exact.
 
 from __future__ import annotations
 
-from typing import Iterator, Final
+from typing import Final
 
 from postproc.dialect import Dialect
 from postproc.errors import PostprocError, UnsupportedError
@@ -41,17 +41,23 @@ from postproc.synchronised_tap import RigidTap
 
 from .resolve import peck_clearance_mm
 from .section import CannedCycle
+from ..lowering.lower import BlockStep, LoweringStep
 from .semantics import PECK
 
 _CANCELS: Final = frozenset(("rapid", "linear", "cw", "ccw"))
 
 
-def expand_canned_cycles(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+class ExpandCannedCycles(LoweringStep):
     """Lowering transform (see the module docstring). Back to its own dialect with nothing forced, every
     cycle stays native and blocks are copied or rewritten from their words: the stream passes through."""
-    if target.NAME == ctx.dialect and not ctx.setup.cycles.expanded():
-        return blocks
-    return _expand(blocks, ctx, target)
+
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        if target.NAME == ctx.dialect and not ctx.setup.cycles.expanded():
+            return None
+        return _Expand(ctx, target)
+
+
+expand_canned_cycles = ExpandCannedCycles()
 
 
 def expands(cycle: CannedCycle, ctx: Context, target: type[Dialect]) -> bool:
@@ -70,38 +76,44 @@ def cancels(sections: dict[str, Section]) -> bool:
     return "CycleCancel" in sections or getattr(sections.get("Motion"), "mode", None) in _CANCELS
 
 
-def _expand(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
-    cycles = ctx.setup.cycles
-    can_orient = target.SPINDLE_ORIENTATION
-    expanding = False  # from the first expanded block of a cycle to its cancel
-    flowing = False  # a control statement or label has passed: the state is the text's, not each run's
-    repeated: UnsupportedError | None = None  # in a dry run, the first expansion's (a later jump may repeat it)
-    dry = bool(ctx.run_data.get("dry_run"))
-    for block in blocks:
+class _Expand(BlockStep):
+    """One run: a block that is only a move is its business while a cycle is expanded (it may cancel it)."""
+
+    def __init__(self, ctx: Context, target: type[Dialect]) -> None:
+        super().__init__()
+        self.moves = False
+        self.ctx = ctx
+        self.target = target
+        self.cycles = ctx.setup.cycles
+        self.can_orient = target.SPINDLE_ORIENTATION
+        self.expanding = False  # from the first expanded block of a cycle to its cancel
+        self.flowing = False  # a control statement or label has passed: the state is the text's, not each run's
+        self.repeated: UnsupportedError | None = None  # in a dry run, the first expansion's (a later jump may repeat it)
+        self.dry = bool(ctx.run_data.get("dry_run"))
+
+    def take(self, block: Block) -> list[Block] | None:
         sections = block.sections
+        ctx = self.ctx
         cycle = sections.get("CannedCycle")
         if cycle is None:
-            if expanding and cancels(sections):
-                expanding = False
-            if not flowing and (CONTROL in sections or LABEL in sections) and not isinstance(block, ExecutedBlock):
-                flowing = True
-                if repeated is not None:
-                    ctx.diagnostics.error(repeated)
-            yield block
-            continue
+            if self.expanding and cancels(sections):
+                self.expanding = self.moves = False
+            if not self.flowing and (CONTROL in sections or LABEL in sections) and not isinstance(block, ExecutedBlock):
+                self.flowing = True
+                if self.repeated is not None:
+                    ctx.diagnostics.error(self.repeated)
+            return None
         if not isinstance(cycle, CannedCycle):
-            yield block
-            continue
-        expanding = expanding or expands(cycle, ctx, target)
-        if not expanding:
+            return None
+        self.expanding = self.moves = self.expanding or expands(cycle, ctx, self.target)
+        if not self.expanding:
             sections.pop("CompoundMotion", None)
-            yield block
-            continue
-        if flowing:
+            return None
+        if self.flowing:
             ctx.diagnostics.error(_run_dependent(block, ctx))
-            continue
-        if repeated is None and dry:
-            repeated = _run_dependent(block, ctx)
+            return []
+        if self.repeated is None and self.dry:
+            self.repeated = _run_dependent(block, ctx)
         del sections["CannedCycle"]
         block.changed()
         compound = sections.get("CompoundMotion")
@@ -110,13 +122,14 @@ def _expand(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Ite
                 made = compound.items  # a lazy expansion is made here, and refused here (e.g. too many moves)
             except PostprocError as err:
                 ctx.diagnostics.error(err)
-                continue
+                return []
             del made
             _restore_motion_mode(compound, cycle.motion)
-            if not can_orient and _orients(compound) and not _handle_orientation(
-                    block, compound, ctx, cycles.orientation, target, one_line(block.text or _source(block)).strip()):
-                continue
-        yield block
+            if not self.can_orient and _orients(compound) and not _handle_orientation(
+                    block, compound, ctx, self.cycles.orientation, self.target,
+                    one_line(block.text or _source(block)).strip()):
+                return []
+        return None
 
 
 def _run_dependent(block: Block, ctx: Context) -> UnsupportedError:

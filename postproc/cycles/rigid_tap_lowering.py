@@ -14,40 +14,55 @@ from ..expr import Expr
 from ..ir import (Block, CompoundMotion, CycleCancel, DistanceMode, Feed, MachineFunction, Motion,
                   ReturnLevel, Section, SpindleControl, SpindleSpeed)
 from ..state import PLANE_AXES
+from ..lowering.lower import BlockStep, LoweringStep
 from ..lowering.machine_functions import RIGID_TAP, comment_out
 from ..synchronised_tap import RigidTap, rigid_taps
 from .section import CannedCycle
 
 
-def resolve_rigid_taps(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+class ResolveRigidTaps(LoweringStep):
     """Lowering step (the module docstring): after ``expand_canned_cycles``, so an expanded rigid tap cycle
     shows its taps. A refused block is reported and not written, whatever ``--on-unsupported`` says. Back to
     its own dialect with no cycle expanded by force, every tap stays as written: the stream passes through."""
-    if target.NAME == ctx.dialect and not ctx.setup.cycles.expanded():
-        return blocks
-    return _resolve(blocks, ctx, target)
+
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        if target.NAME == ctx.dialect and not ctx.setup.cycles.expanded():
+            return None
+        return _Taps(ctx, target)
 
 
-def _resolve(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
-    synchronises = target.SYNCHRONISED_TAP
-    family = target.family()
-    cycle_code = target.RIGID_TAP_CODE
-    own_code = False  # the source writes the target family's rigid-tapping code itself
-    for block in blocks:
+resolve_rigid_taps = ResolveRigidTaps()
+
+
+class _Taps(BlockStep):
+    """One run: only a block with a machine function, a tap or an expansion is its business. A block
+    rewritten into several is made whole before it goes on (a refusal found half-way drops it all)."""
+
+    def __init__(self, ctx: Context, target: type[Dialect]) -> None:
+        super().__init__()
+        self.moves = False
+        self.ctx = ctx
+        self.target = target
+        self.synchronises = target.SYNCHRONISED_TAP
+        self.family = target.family()
+        self.cycle_code = target.RIGID_TAP_CODE
+        self.own_code = False  # the source writes the target family's rigid-tapping code itself
+
+    def take(self, block: Block) -> list[Block] | None:
         sections = block.sections
         if "MachineFunction" not in sections and "RigidTap" not in sections and "CompoundMotion" not in sections:
-            yield block  # the common block
-            continue
+            return None  # the common block
+        ctx, target, family = self.ctx, self.target, self.family
+        synchronises, cycle_code = self.synchronises, self.cycle_code
         code = sections.get("MachineFunction")
         if isinstance(code, MachineFunction) and code.action == RIGID_TAP and code.family == family:
-            own_code = True
+            self.own_code = True
         if (synchronises or target.TAP_STROKES or target.RIGID_TAP_CYCLE) and isinstance(code, MachineFunction) \
                 and code.action == RIGID_TAP and code.family != family:
             _leave_out(block, code)
         taps = rigid_taps(block)
         if not taps:
-            yield block
-            continue
+            return None
         own = sections.get("RigidTap")
         if target.RIGID_TAP_CYCLE and isinstance(own, RigidTap) and own.stroke is None and taps == [own] \
                 and (ctx.state.distance == "absolute" and ctx.state.plane == "XY" or not target.TAP_STROKES):
@@ -56,44 +71,40 @@ def _resolve(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> It
                 as_cycle_call(block, ctx, own)
             except PostprocError as err:
                 ctx.diagnostics.error(err)
-                continue
-            yield block
-            continue
+                return []
+            return None
         if target.TAP_STROKES and isinstance(own, RigidTap) and own.stroke is None:
             try:
-                yield from as_strokes(block, ctx, target, own)
+                return list(as_strokes(block, ctx, target, own))
             except PostprocError as err:
                 ctx.diagnostics.error(err)
-            continue
+            return []
         compound = sections.get("CompoundMotion")
         if target.TAP_STROKES and isinstance(compound, CompoundMotion) and "CannedCycle" not in sections:
             try:
                 _strokes_in_expansion(block, ctx, target, compound)
             except PostprocError as err:
                 ctx.diagnostics.error(err)
-                continue
-            yield block
-            continue
+                return []
+            return None
         if cycle_code and not synchronises and "RigidTap" in sections:
             try:
-                yield from as_tap_cycle(block, ctx, target, sections["RigidTap"])  # type: ignore[arg-type]
+                return list(as_tap_cycle(block, ctx, target, sections["RigidTap"]))  # type: ignore[arg-type]
             except PostprocError as err:
                 ctx.diagnostics.error(err)
-            continue
-        if cycle_code and not synchronises and not own_code and isinstance(compound, CompoundMotion) \
+            return []
+        if cycle_code and not synchronises and not self.own_code and isinstance(compound, CompoundMotion) \
                 and "CannedCycle" not in sections:
             try:
-                made = list(taps_as_cycles(block, ctx, target, compound))
+                return list(taps_as_cycles(block, ctx, target, compound))
             except PostprocError as err:
                 ctx.diagnostics.error(err)
-                continue
-            yield from made
-            continue
+                return []
         why = _refusal(taps, target)
         if why is not None:
             ctx.diagnostics.error(UnsupportedError(why, ctx.at(block)))
-            continue
-        yield block
+            return []
+        return None
 
 
 def _leave_out(block: Block, code: MachineFunction) -> None:

@@ -48,6 +48,7 @@ from ..control import ASSIGN, CONTROL
 from ..expr import Binary, Expr, Num
 from ..ir import Block, CompoundMotion, CutterCompensation, Motion, Section
 from ..ir.keys import only_move
+from ..lowering.lower import BlockStep, LoweringStep, run_blocks
 from ..state import MM_PER_INCH, ModalState, changes_nothing
 from .affine import EXACT, INDEX, XYZ
 from .frame import PLANE_AXES, Frame, Position
@@ -66,18 +67,24 @@ EVALUATE_KEY: Final = "frames.evaluate"
 ``postproc.transforms``, moves the evaluated points)."""
 
 
-def evaluate_frames(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+class EvaluateFrames(LoweringStep):
     """Lowering step (see the module docstring): back to its own dialect the stream passes through."""
-    if target.NAME == ctx.dialect and not ctx.run_data.get(EVALUATE_KEY) or ctx.lathe:
-        return blocks
-    return FrameEvaluator(ctx, target.WRITER is not None).run(blocks)
+
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        if target.NAME == ctx.dialect and not ctx.run_data.get(EVALUATE_KEY) or ctx.lathe:
+            return None
+        return FrameEvaluator(ctx, target.WRITER is not None)
+
+
+evaluate_frames = EvaluateFrames()
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
-class FrameEvaluator:
+class FrameEvaluator(BlockStep):
     """The frame and the program position of one run, and the rewriting of each block."""
 
     def __init__(self, ctx: Context, rewrite: bool = True) -> None:
+        super().__init__()  # every move is its business: it follows the position
         self.ctx = ctx
         self.rewrite = rewrite
         """Mark a rewritten block changed (a writer regenerates it); the simulation, which writes nothing,
@@ -105,38 +112,36 @@ class FrameEvaluator:
         """Absolute millimetres: a move's words are its position (``run``'s common case)."""
 
     def run(self, blocks: Iterator[Block]) -> Iterator[Block]:
-        """Every block; the common one (a move and its feed, no frame yet, absolute millimetres) only
-        updates the position (one ``dict.update``: this step runs for every translation to another
-        dialect, frames or not)."""
-        report = self.ctx.diagnostics.error
-        watched, moves, p, state = _WATCHED, _MOVES, self.p, self.ctx.state
-        unsettled = self.reached.unsettled
-        for block in blocks:
-            s = block.sections
-            if not s:
-                yield block
-                continue
-            if self.frame is None and (only_move(s) or _unwatched(s, watched)):
-                m = s.get("Motion")
-                if m is None:
-                    if self.reached.symbolic:
-                        self.targets(s)
-                    yield block
-                    continue
-                if isinstance(m, Motion) and self.plain_mm and m.mode in moves and not state.symbolic:
-                    p.update(m.axes)  # type: ignore[arg-type]  # numbers: nothing is symbolic yet
-                    if unsettled:
-                        unsettled.difference_update(m.axes)
-                    if self.reached.symbolic:
-                        self.targets(s)
-                    yield block
-                    continue
-            try:
-                self.block(block)
-            except PostprocError as err:
-                report(err.located(self.ctx.at(block)))
-                continue
-            yield block
+        """Every block, as the lowering step takes them (``take``)."""
+        return run_blocks(blocks, [self])
+
+    def take(self, block: Block) -> list[Block] | None:
+        """The common block (a move and its feed, no frame yet, absolute millimetres) only updates the
+        position (one ``dict.update``: this step runs for every translation to another dialect, frames or
+        not)."""
+        s = block.sections
+        if not s:
+            return None
+        if self.frame is None and (only_move(s) or _unwatched(s, _WATCHED)):
+            m = s.get("Motion")
+            if m is None:
+                if self.reached.symbolic:
+                    self.targets(s)
+                return None
+            if isinstance(m, Motion) and self.plain_mm and m.mode in _MOVES and not self.ctx.state.symbolic:
+                self.p.update(m.axes)  # type: ignore[arg-type]  # numbers: nothing is symbolic yet
+                unsettled = self.reached.unsettled
+                if unsettled:
+                    unsettled.difference_update(m.axes)
+                if self.reached.symbolic:
+                    self.targets(s)
+                return None
+        try:
+            self.block(block)
+        except PostprocError as err:
+            self.ctx.diagnostics.error(err.located(self.ctx.at(block)))
+            return []
+        return None
 
     # -- one block ---------------------------------------------------------------------------------
     def block(self, block: Block) -> None:

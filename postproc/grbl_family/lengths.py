@@ -25,7 +25,7 @@ set-up is told to say the build has a tool table.
 
 from __future__ import annotations
 
-from typing import Final, Iterator
+from typing import Final
 
 from postproc.compensation.tool_table import TABLES, ToolTable
 from postproc.context import Context
@@ -34,44 +34,58 @@ from postproc.grbl_family.dialect import GrblFamily
 from postproc.errors import PostprocError, UnsupportedError
 from postproc.ir import Block, Comments, DataSetting, Section, ToolLengthOffset, Units
 from postproc.ir.keys import only_move
+from postproc.lowering.lower import BlockStep, LoweringStep
 
 MM_PER_INCH: Final = 25.4
 _WATCHED: Final = frozenset(("ToolLengthOffset", "DataSetting", "Units"))
 
 
-def write_tool_lengths(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+class WriteToolLengths(LoweringStep):
     """Lowering step: ``G43 H<n>``/``G44 H<n>`` -> ``G43.1 Z<length>`` (see the module docstring)."""
-    if ctx.dialect == target.NAME or target.TOOL_LENGTH_OFFSET:
-        return blocks
-    if issubclass(target, GrblFamily) and target.tool_table(ctx.setup):
-        return _write_tool_lengths(blocks, ctx, ("negative",))  # a table runs G43 H, but the family has no G44
-    return _write_tool_lengths(blocks, ctx, ("positive", "negative"))
+
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        if ctx.dialect == target.NAME or target.TOOL_LENGTH_OFFSET:
+            return None
+        if issubclass(target, GrblFamily) and target.tool_table(ctx.setup):
+            return _Lengths(ctx, ("negative",))  # a table runs G43 H, but the family has no G44
+        return _Lengths(ctx, ("positive", "negative"))
 
 
-def _write_tool_lengths(blocks: Iterator[Block], ctx: Context, modes: tuple[str, ...]) -> Iterator[Block]:
-    table = ToolTable(ctx.setup)
-    inch = False  # every controller here powers on in mm (``ModalState``), as the simulation starts
-    for block in blocks:
+write_tool_lengths = WriteToolLengths()
+
+
+class _Lengths(BlockStep):
+    """One run: only a block with a length offset, a data setting or units is its business."""
+
+    def __init__(self, ctx: Context, modes: tuple[str, ...]) -> None:
+        super().__init__()
+        self.moves = False
+        self.ctx = ctx
+        self.modes = modes
+        self.table = ToolTable(ctx.setup)
+        self.inch = False  # every controller here powers on in mm (``ModalState``), as the simulation starts
+
+    def take(self, block: Block) -> list[Block] | None:
         sections = block.sections
         if _unwatched(sections):
-            yield block
-            continue
-        before = inch
+            return None
+        before = self.inch
         units = sections.get("Units")
         if isinstance(units, Units):
-            inch = units.system == "inch"
+            self.inch = units.system == "inch"
         setting = sections.get("DataSetting")
         if isinstance(setting, DataSetting):
-            table.write(setting, MM_PER_INCH if inch else 1.0)
+            self.table.write(setting, MM_PER_INCH if self.inch else 1.0)
         offset = sections.get("ToolLengthOffset")
-        if not isinstance(offset, ToolLengthOffset) or offset.mode not in modes:
-            yield block
-            continue
+        if not isinstance(offset, ToolLengthOffset) or offset.mode not in self.modes:
+            return None
+        ctx = self.ctx
         at = ctx.at(block, ctx.column_of(block, "H"))  # before the block is rewritten (a rare block)
         try:
-            yield from _dynamic(block, ctx, table, offset, inch, before)
+            return _dynamic(block, ctx, self.table, offset, self.inch, before)
         except PostprocError as err:
             ctx.diagnostics.error(err.located(at))
+            return []
 
 
 def _unwatched(sections: dict[str, Section]) -> bool:
@@ -124,19 +138,30 @@ def _dynamic(block: Block, ctx: Context, table: ToolTable, offset: ToolLengthOff
     return [first, block]
 
 
-def drop_resolved_tool_data(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+class DropResolvedToolData(LoweringStep):
     """Lowering step, after ``write_tool_lengths`` and the cutter compensation's resolution: on a controller
     without a tool table every length and radius a program writes into a register has been read where it
     is used (``G43.1 Z<length>``, the compensated path), so the setting itself is left as a comment
     (``postproc.lowering.tool_entries`` makes them from a tool table entry; a Fanuc ``G10 L10``..``L13``).
     With a tool table the writer refuses it (it would be the machine's own register)."""
-    if ctx.dialect == target.NAME or (issubclass(target, GrblFamily) and target.tool_table(ctx.setup)):
-        return blocks
-    return _drop_resolved(blocks)
+
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        if ctx.dialect == target.NAME or (issubclass(target, GrblFamily) and target.tool_table(ctx.setup)):
+            return None
+        return _DropResolved()
 
 
-def _drop_resolved(blocks: Iterator[Block]) -> Iterator[Block]:
-    for block in blocks:
+drop_resolved_tool_data = DropResolvedToolData()
+
+
+class _DropResolved(BlockStep):
+    """One run: only a block with a data setting is its business."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        self.moves = False
+
+    def take(self, block: Block) -> list[Block] | None:
         setting = block.sections.get("DataSetting")
         if isinstance(setting, DataSetting) and setting.table in TABLES:
             sections = block.sections
@@ -145,7 +170,7 @@ def _drop_resolved(blocks: Iterator[Block]) -> Iterator[Block]:
             note = f"{setting.table.replace('_', ' ').upper()} {setting.index} SET: TAKEN INTO THE PATH"
             comments = sections.get("Comments")
             sections["Comments"] = Comments(([*comments.texts] if isinstance(comments, Comments) else []) + [note])
-        yield block
+        return None
 
 
 def _rest(sections: dict[str, Section]) -> bool:

@@ -34,7 +34,7 @@ otherwise the translation is a located error naming both registers; the set-up's
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any, Final, Iterator
+from typing import Any, Final
 
 from mypy_extensions import mypyc_attr
 
@@ -45,6 +45,7 @@ from ..control import CONTROL
 from ..errors import Location, PostprocError, UnsupportedError
 from ..expr import Expr
 from ..ir import Block, CutterCompensation, DataSetting, DistanceMode, Motion, ToolLengthOffset, Units
+from ..lowering.lower import BlockStep, LoweringStep
 
 SELECTED_KEY: Final = "isg_family.tool_data"
 """``ModalState.extra`` key of the D selected while reading (an int or an expression)."""
@@ -87,15 +88,19 @@ def expects_register(values: dict[str, Any], ctx: Context, first: int) -> None:
 
 # -- writing -----------------------------------------------------------------------------------------
 
-def resolve_radius_where_d_cannot(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+class ResolveRadiusWhereDCannot(LoweringStep):
     """Lowering step for a target whose D brings its length (ISG always; Fagor while ``G43`` is on,
     ``LENGTH_TOGGLES``): a G41/G42 whose register has another length than the one in force becomes the
     compensated path (see the module docstring)."""
-    if ctx.dialect == target.NAME:
-        return blocks
-    from ..lowering.cutter_compensation import resolve_cutter_compensation_unless
-    return resolve_cutter_compensation_unless(blocks, ctx, _d_keeps_the_length_on if target.LENGTH_TOGGLES
-                                              else _d_keeps_the_length)
+
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        if ctx.dialect == target.NAME:
+            return None
+        from ..lowering.cutter_compensation import resolution_unless
+        return resolution_unless(ctx, _d_keeps_the_length_on if target.LENGTH_TOGGLES else _d_keeps_the_length)
+
+
+resolve_radius_where_d_cannot = ResolveRadiusWhereDCannot()
 
 
 def _d_keeps_the_length_on(resolver: Any, cc: CutterCompensation) -> bool:
@@ -141,26 +146,47 @@ class _Selection:
     before the program ends (a ``G49`` before ``M30``)."""
 
 
-def select_tool_data(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+class SelectToolData(LoweringStep):
     """Lowering step for a target that selects tool data with D (see the module docstring): a program
     of another family gets its length and radius registers as the D they need; the target's own
     programs pass. ``target.LENGTH_TOGGLES``: the target turns the length on and off by code (Fagor)."""
-    if ctx.dialect == target.NAME:
-        return blocks
-    from ..plugins import default_registry
-    source = default_registry().dialects.get(ctx.dialect)
-    shifts = source is not None and source.LENGTH_AT_PROGRAMMED_AXIS
-    return _select(blocks, ctx, target.LENGTH_TOGGLES, shifts and not target.LENGTH_AT_PROGRAMMED_AXIS if shifts
-                   else None)
+
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        if ctx.dialect == target.NAME:
+            return None
+        from ..plugins import default_registry
+        source = default_registry().dialects.get(ctx.dialect)
+        shifts = source is not None and source.LENGTH_AT_PROGRAMMED_AXIS
+        return _Select(ctx, target.LENGTH_TOGGLES, shifts and not target.LENGTH_AT_PROGRAMMED_AXIS if shifts
+                       else None)
 
 
-def _select(blocks: Iterator[Block], ctx: Context, toggles: bool, later_z: bool | None) -> Iterator[Block]:
+select_tool_data = SelectToolData()
+
+
+class _Select(BlockStep):
     """``later_z``: a length may change without a Z move (the source applies it at the next Z, as the
-    target does), True where that next Z move must then be absolute; None: it may not."""
-    table = ToolTable(ctx.setup)
-    state = _Selection()
-    inch = False
-    for block in blocks:
+    target does), True where that next Z move must then be absolute; None: it may not. A move is its
+    business only while a changed length waits for one."""
+
+    def __init__(self, ctx: Context, toggles: bool, later_z: bool | None) -> None:
+        super().__init__()
+        self.moves = False
+        self.ctx = ctx
+        self.toggles = toggles
+        self.later_z = later_z
+        self.table = ToolTable(ctx.setup)
+        self.state = _Selection()
+        self.inch = False
+
+    def take(self, block: Block) -> list[Block] | None:
+        made = self._take(block)
+        state = self.state
+        self.moves = state.unapplied is not None or state.pending
+        return made
+
+    def _take(self, block: Block) -> list[Block] | None:
+        ctx, state, toggles, later_z = self.ctx, self.state, self.toggles, self.later_z
         sections = block.sections
         if state.unapplied is not None and _moves(block):
             distance = sections.get("DistanceMode")
@@ -180,26 +206,25 @@ def _select(blocks: Iterator[Block], ctx: Context, toggles: bool, later_z: bool 
                     "the axis moves [?]), on the source's controller only at the next absolute Z: program Z "
                     "absolutely here", ctx.at(block, ctx.column_of(block, "Z"))))
         if _unwatched(sections):
-            yield block
-            continue
+            return None
         units = sections.get("Units")
         if isinstance(units, Units):
-            inch = units.system == "inch"
+            self.inch = units.system == "inch"
         distance = sections.get("DistanceMode")
         if isinstance(distance, DistanceMode):
             state.absolute = distance.mode == "absolute"
         setting = sections.get("DataSetting")
         if isinstance(setting, DataSetting):
-            table.write(setting, MM_PER_INCH if inch else 1.0)
+            self.table.write(setting, MM_PER_INCH if self.inch else 1.0)
         if "ToolLengthOffset" in sections or "CutterCompensation" in sections:
             at = ctx.at(block, ctx.column_of(block, "H" if "ToolLengthOffset" in sections else "D"))
             try:
-                if _rewrite(block, table, state, toggles, later_z is not None):
+                if _rewrite(block, self.table, state, toggles, later_z is not None):
                     state.unapplied = at
             except PostprocError as err:
                 ctx.diagnostics.error(err.located(at))
-                continue
-        yield block
+                return []
+        return None
 
 
 def _unwatched(sections: dict[str, Any]) -> bool:

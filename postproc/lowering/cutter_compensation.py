@@ -62,6 +62,7 @@ from ..errors import UnsupportedError
 from ..ir import Block, CutterCompensation
 from ..compensation.rules import CutterRules
 from .cutter_resolver import Keeps, Resolver, keep_native
+from .lower import BlockStep, LoweringStep, run_blocks
 
 RESOLVED = "cutter_compensation_resolved"
 """``Context.run_data`` key: the target for which ``resolve_dynamic_cutter_compensation`` resolves every G41/G42
@@ -105,22 +106,26 @@ def _takes_diameters(ctx: Context, target: type[Dialect]) -> bool:
     return ctx.diameter and "lathe" in target.MACHINE_TYPES and target.DIAMETER_PROGRAMMING
 
 
-def resolve_dynamic_cutter_compensation(blocks: Iterator[Block], ctx: Context,
-                                        target: type[Dialect]) -> Iterator[Block]:
+class ResolveDynamicCutterCompensation(LoweringStep):
     """Lowering step: G41.1/G42.1 (compensation by a diameter) become the compensated path for every
     target but the source's own dialect (see the module docstring); a G41/G42 by register is left to the
     target where it has cutter compensation, unless its modelled rules differ from the source's."""
-    rules: CutterRules | None = ctx.cutter_rules
-    if rules is None:
-        return blocks
-    if ctx.dialect == target.NAME:
-        return blocks if ctx.lathe else Resolver(ctx, rules, checking=True).check(blocks)
-    differ = _rules_differ(rules, target, ctx)
-    keeps = keep_native if target.CUTTER_COMPENSATION and not differ else None
-    trial = target.cutter_rules(ctx.setup) if target.CUTTER_COMPENSATION and differ else None
-    if keeps is None and trial is None:
-        ctx.run_data[RESOLVED] = target
-    return Resolver(ctx, rules, keeps, _takes_diameters(ctx, target), trial).run(blocks)
+
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        rules: CutterRules | None = ctx.cutter_rules
+        if rules is None:
+            return None
+        if ctx.dialect == target.NAME:
+            return None if ctx.lathe else Resolver(ctx, rules, checking=True).checker()
+        differ = _rules_differ(rules, target, ctx)
+        keeps = keep_native if target.CUTTER_COMPENSATION and not differ else None
+        trial = target.cutter_rules(ctx.setup) if target.CUTTER_COMPENSATION and differ else None
+        if keeps is None and trial is None:
+            ctx.run_data[RESOLVED] = target
+        return Resolver(ctx, rules, keeps, _takes_diameters(ctx, target), trial).resolution()
+
+
+resolve_dynamic_cutter_compensation = ResolveDynamicCutterCompensation()
 
 
 def _rules_differ(rules: CutterRules, target: type[Dialect], ctx: Context) -> bool:
@@ -137,7 +142,13 @@ def resolve_cutter_compensation_unless(blocks: Iterator[Block], ctx: Context,
                                        keeps: Keeps) -> Iterator[Block]:
     """G41/G42 become the compensated path where ``keeps`` says the target cannot write them as they are
     (and the source's rules are modelled: else the target's own step decides); G41.1/G42.1 always."""
+    run = resolution_unless(ctx, keeps)
+    return blocks if run is None else run_blocks(blocks, [run])
+
+
+def resolution_unless(ctx: Context, keeps: Keeps) -> BlockStep | None:
+    """``resolve_cutter_compensation_unless`` as a lowering step's run (None: nothing to resolve)."""
     rules: CutterRules | None = ctx.cutter_rules
     if rules is None:
-        return blocks
-    return Resolver(ctx, rules, keeps).run(blocks)
+        return None
+    return Resolver(ctx, rules, keeps).resolution()

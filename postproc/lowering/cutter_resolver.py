@@ -26,6 +26,7 @@ from ..state import PLANE_AXES
 from .cutter_moves import CompensatedMoves
 from .cutter_point import MM_PER_INCH, MOVES, Unresolvable, UnknownHere
 from .rule_trial import STAND_IN_RADIUS, STRETCH_LIMIT, RuleTrial
+from .lower import BlockStep, run_blocks
 
 Keeps = Callable[["Resolver", CutterCompensation], bool]
 """Whether the target writes a G41/G42 itself (given the resolver, for the tool data it tracks)."""
@@ -74,128 +75,25 @@ class Resolver(CompensatedMoves):
         """The target's own rules, when modelled and not the source's: each stretch is tried under both."""
 
     def run(self, blocks: Iterator[Block]) -> Iterator[Block]:
-        idle = True
-        radii = not self.diameters
-        """X is a radius in the blocks: the common block's move is tracked here (else by ``_track``)."""
-        last: Block | None = None
-        """The program's last block: where an error found at its end (``finish``) is located."""
-        for block in blocks:
-            last = block
-            sections = block.sections
-            plain = idle
-            odd = False
-            if plain and not only_move(sections):  # one look at the keys: none asks for the general way
-                for key in sections:
-                    if key in _NOT_NOTED:
-                        odd = True
-                        break
-                if odd:
-                    for key in sections:
-                        if key in _NOT_PLAIN:
-                            plain = False
-                            break
-            if plain:
-                motion = sections.get("Motion")  # the common block: a move, noted for a later entry move
-                if isinstance(motion, Motion) and self.absolute and motion.mode in MOVES and radii \
-                        and not (odd and "MachineCoordinates" in sections):
-                    self._note(motion)
-                elif motion is not None or odd:
-                    self._settle()
-                    self._track(block)
-                if self.per_minute:
-                    self._back_to_inverse_time(block)
-                yield block
-                continue
-            self._settle()
-            if not self.failed and self.trial_rules is not None:
-                self._try(block)
-            if not self.failed:
-                try:
-                    self.block(block)
-                except PostprocError as err:
-                    located = err.located(self.ctx.at(block)) if err.location is None else err
-                    self.failed = True  # the queue no longer matches the program: nothing more is resolved
-                    if self.trial is not None and isinstance(err, UnsupportedError):
-                        self._untried(located)
-                    else:
-                        self.ctx.diagnostics.error(located)
-                        self.out.append(block)
-            else:
-                self.out.append(block)
-            idle = self.failed or self._idle()
-            if self.trial is not None:
-                self.trial.resolved.extend(self.out)
-                self.out.clear()
-                if idle or len(self.trial.stretch) > STRETCH_LIMIT:
-                    yield from self._tried(idle)
-            if self.out:
-                yield from self.out
-                self.out.clear()
-        if not self.failed:
-            try:
-                self.cutter.finish()
-            except PostprocError as err:
-                if err.location is None and last is not None:
-                    err = err.located(self.ctx.at(last))
-                if self.trial is not None and isinstance(err, UnsupportedError):
-                    self._untried(err)
-                else:
-                    self.ctx.diagnostics.error(err)
-        if self.trial is not None:
-            self.trial.resolved.extend(self.out)
-            self.out.clear()
-            yield from self._tried(True)
-        yield from self.out
+        """The blocks with their compensation resolved (``resolution``, alone over the stream)."""
+        return run_blocks(blocks, [self.resolution()])
+
+    def resolution(self) -> BlockStep:
+        """This resolver as a lowering step's run (``Resolution``)."""
+        return Resolution(self)
 
     def check(self, blocks: Iterator[Block]) -> Iterator[Block]:
+        """The blocks unchanged, checked (``checker``, alone over the stream)."""
+        return run_blocks(blocks, [self.checker()])
+
+    def checker(self) -> BlockStep:
         """A copy within one dialect keeps its compensation native: the blocks pass unchanged, but the path is
         computed from a copy of each block as for a resolution (the same geometry the simulation runs), so
         what the simulation refuses (a move turning back on itself, an inside arc smaller than the radius, a
         tool change under compensation...) is refused here too, at its line. Where the resolver cannot follow
         the program (``Unresolvable``, ``UnknownHere``, a radius the set-up lacks, a call or a jump), the check
         stops without a word: the copy is the program, and verify says what it cannot simulate."""
-        stream = iter(blocks)
-        idle = True
-        for block in stream:
-            sections = block.sections
-            if idle:
-                general = False
-                for key in sections:
-                    if key in _CHECK_GENERAL:
-                        general = True
-                        break
-                if not general:
-                    motion = sections.get("Motion")
-                    if isinstance(motion, Motion) and self.absolute and motion.mode in MOVES:
-                        self._note(motion)
-                    elif motion is not None:
-                        self._settle()
-                        self._track(block)
-                    yield block
-                    continue
-            if not _STOPS_CHECK.isdisjoint(sections):
-                yield block
-                yield from stream
-                return
-            self._settle()
-            shadow = Block(block.line, block.text, block.eol, block.words)
-            shadow.sections = dict(sections)  # the resolver rewrites its own dictionary, never a section
-            try:
-                self.block(shadow)
-            except PostprocError as err:
-                if not isinstance(err, _UNCHECKED):
-                    self.ctx.diagnostics.error(err.located(self.ctx.at(block)) if err.location is None else err)
-                yield block
-                yield from stream
-                return
-            self.out.clear()
-            idle = self._idle()
-            yield block
-        try:
-            self.cutter.finish()
-        except PostprocError as err:
-            if not isinstance(err, _UNCHECKED):
-                self.ctx.diagnostics.error(err)
+        return Checking(self)
 
     # -- a stretch tried under the target's rules (``rule_trial``) -------------------------------------
     def _try(self, block: Block) -> None:
@@ -424,3 +322,154 @@ class Resolver(CompensatedMoves):
         self.last_register = register
         return register
 
+
+
+class Resolution(BlockStep):
+    """A ``Resolver`` taking the blocks one at a time: every move is its business (an idle resolver notes
+    it for a later entry move); a block it holds comes out with the blocks its compensation releases."""
+
+    def __init__(self, resolver: Resolver) -> None:
+        super().__init__()
+        self.resolver = resolver
+        self.idle = True
+        self.radii = not resolver.diameters
+        """X is a radius in the blocks: the common block's move is tracked here (else by ``_track``)."""
+        self.last: Block | None = None
+        """The program's last block: where an error found at its end (``finish``) is located."""
+
+    def take(self, block: Block) -> list[Block] | None:
+        r = self.resolver
+        self.last = block
+        sections = block.sections
+        plain = self.idle
+        odd = False
+        if plain and not only_move(sections):  # one look at the keys: none asks for the general way
+            for key in sections:
+                if key in _NOT_NOTED:
+                    odd = True
+                    break
+            if odd:
+                for key in sections:
+                    if key in _NOT_PLAIN:
+                        plain = False
+                        break
+        if plain:
+            motion = sections.get("Motion")  # the common block: a move, noted for a later entry move
+            if isinstance(motion, Motion) and r.absolute and motion.mode in MOVES and self.radii \
+                    and not (odd and "MachineCoordinates" in sections):
+                r._note(motion)
+            elif motion is not None or odd:
+                r._settle()
+                r._track(block)
+            if r.per_minute:
+                r._back_to_inverse_time(block)
+            return None
+        r._settle()
+        if not r.failed and r.trial_rules is not None:
+            r._try(block)
+        if not r.failed:
+            try:
+                r.block(block)
+            except PostprocError as err:
+                located = err.located(r.ctx.at(block)) if err.location is None else err
+                r.failed = True  # the queue no longer matches the program: nothing more is resolved
+                if r.trial is not None and isinstance(err, UnsupportedError):
+                    r._untried(located)
+                else:
+                    r.ctx.diagnostics.error(located)
+                    r.out.append(block)
+        else:
+            r.out.append(block)
+        idle = self.idle = r.failed or r._idle()
+        made: list[Block] = []
+        trial = r.trial
+        if trial is not None:
+            trial.resolved.extend(r.out)
+            r.out.clear()
+            if idle or len(trial.stretch) > STRETCH_LIMIT:
+                made.extend(r._tried(idle))
+        if r.out:
+            made.extend(r.out)
+            r.out.clear()
+        return made
+
+    def finish(self) -> list[Block]:
+        r = self.resolver
+        if not r.failed:
+            try:
+                r.cutter.finish()
+            except PostprocError as err:
+                last = self.last
+                if err.location is None and last is not None:
+                    err = err.located(r.ctx.at(last))
+                if r.trial is not None and isinstance(err, UnsupportedError):
+                    r._untried(err)
+                else:
+                    r.ctx.diagnostics.error(err)
+        made: list[Block] = []
+        trial = r.trial
+        if trial is not None:
+            trial.resolved.extend(r.out)
+            r.out.clear()
+            made.extend(r._tried(True))
+        made.extend(r.out)
+        return made
+
+
+class Checking(BlockStep):
+    """A ``Resolver`` checking a copy within one dialect (``Resolver.checker``), the blocks one at a time;
+    once it stops, nothing more is its business."""
+
+    def __init__(self, resolver: Resolver) -> None:
+        super().__init__()
+        self.resolver = resolver
+        self.idle = True
+        self.stopped = False
+
+    def take(self, block: Block) -> list[Block] | None:
+        if self.stopped:
+            return None
+        r = self.resolver
+        sections = block.sections
+        if self.idle:
+            general = False
+            for key in sections:
+                if key in _CHECK_GENERAL:
+                    general = True
+                    break
+            if not general:
+                motion = sections.get("Motion")
+                if isinstance(motion, Motion) and r.absolute and motion.mode in MOVES:
+                    r._note(motion)
+                elif motion is not None:
+                    r._settle()
+                    r._track(block)
+                return None
+        if not _STOPS_CHECK.isdisjoint(sections):
+            self.stopped = True
+            self.moves = False
+            return None
+        r._settle()
+        shadow = Block(block.line, block.text, block.eol, block.words)
+        shadow.sections = dict(sections)  # the resolver rewrites its own dictionary, never a section
+        try:
+            r.block(shadow)
+        except PostprocError as err:
+            if not isinstance(err, _UNCHECKED):
+                r.ctx.diagnostics.error(err.located(r.ctx.at(block)) if err.location is None else err)
+            self.stopped = True
+            self.moves = False
+            return None
+        r.out.clear()
+        self.idle = r._idle()
+        return None
+
+    def finish(self) -> list[Block]:
+        if not self.stopped:
+            r = self.resolver
+            try:
+                r.cutter.finish()
+            except PostprocError as err:
+                if not isinstance(err, _UNCHECKED):
+                    r.ctx.diagnostics.error(err)
+        return []

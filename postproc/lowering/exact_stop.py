@@ -15,55 +15,71 @@ dialect (a plugin's step runs interpreted).
 
 from __future__ import annotations
 
-from typing import Final, Iterator
+from typing import Final
 
 from ..context import Context
+from ..dialect import Dialect
 from ..control import CONTROL
 from ..errors import UnsupportedError
 from ..ir import Block, PathControl
+from .lower import BlockStep, LoweringStep
 
 STOP: Final = "exact_stop"
 
 
-def exact_stop_for_one_block(blocks: Iterator[Block], ctx: Context, refusal: str) -> Iterator[Block]:
+class ExactStopForOneBlock(LoweringStep):
     """Each one-shot exact stop as exact-stop mode for its block, then the mode before (the module docstring);
     ``refusal``: the message of a one-shot stop whose mode to take back to depends on the way the run takes."""
-    before: PathControl | None = None
-    """The path mode in force (None: never set, cutting)."""
-    flow = False
-    """A control statement was passed: the program keeps its control flow."""
-    changed_in_flow = stopped_in_flow = False
-    for block in blocks:
+
+    def __init__(self, refusal: str) -> None:
+        self.refusal = refusal
+
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        return _OneShot(ctx, self.refusal)
+
+
+class _OneShot(BlockStep):
+    """One run: only a block with a control statement or a path mode is its business."""
+
+    def __init__(self, ctx: Context, refusal: str) -> None:
+        super().__init__()
+        self.moves = False
+        self.ctx = ctx
+        self.refusal = refusal
+        self.before: PathControl | None = None
+        """The path mode in force (None: never set, cutting)."""
+        self.flow = False
+        """A control statement was passed: the program keeps its control flow."""
+        self.changed_in_flow = False
+        self.stopped_in_flow = False
+
+    def take(self, block: Block) -> list[Block] | None:
         sections = block.sections
         if CONTROL in sections:
-            flow = True
+            self.flow = True
         path = sections.get("PathControl")
         if not isinstance(path, PathControl):
-            yield block
-            continue
+            return None
         if not path.one_shot:
-            before = path
-            changed_in_flow = changed_in_flow or flow
-            if changed_in_flow and stopped_in_flow:
-                _refuse(ctx, block, refusal)
-            yield block
-            continue
-        stopped_in_flow = stopped_in_flow or flow
-        if changed_in_flow and stopped_in_flow:
-            _refuse(ctx, block, refusal)
+            self.before = path
+            self.changed_in_flow = self.changed_in_flow or self.flow
+            if self.changed_in_flow and self.stopped_in_flow:
+                _refuse(self.ctx, block, self.refusal)
+            return None
+        self.stopped_in_flow = self.stopped_in_flow or self.flow
+        if self.changed_in_flow and self.stopped_in_flow:
+            _refuse(self.ctx, block, self.refusal)
+        before = self.before
         if before is not None and before.mode == STOP:  # the block stops already
             del sections["PathControl"]
             block.changed()
-            if sections:
-                yield block
-            continue
+            return None if sections else []
         sections["PathControl"] = PathControl(STOP)
         block.changed()
-        yield block
         after = Block(block.line, None, block.eol or "\n")
         after.add(PathControl("cutting") if before is None else
                   PathControl(before.mode, False, before.tolerance, before.naive))
-        yield after
+        return [block, after]
 
 
 def _refuse(ctx: Context, block: Block, refusal: str) -> None:

@@ -1,22 +1,33 @@
 """Lowering: pure IR-to-IR transforms chosen from the target dialect's capabilities.
 
-Each step is a generator over blocks named with a verb (``expand_canned_cycles``, ...) that runs only
-where the target lacks a feature, as sqlglot's ``preprocess`` does for SQL dialects. Two sources of
-steps, applied in this order:
+Each step is named with a verb (``expand_canned_cycles``, ...) and runs only where the target lacks a
+feature, as sqlglot's ``preprocess`` does for SQL dialects. Two sources of steps, applied in this order:
 
 * generic steps, contributed by plugins through the ``postproc_register_lowerings`` hook (the core
   contributes ``expand_canned_cycles``); each decides from the target's capabilities what to do;
 * the target dialect's own steps (``Dialect.LOWERING``): rewrites only that target needs, such as
   grbl's manual tool change, owned by the dialect that needs them.
+
+A step is a block-stream transform ``step(blocks, ctx, target) -> blocks`` (a function, often a
+generator), or a ``LoweringStep``: an object whose ``start`` gives the run's ``BlockStep``, which takes the
+blocks one at a time. ``lower_for`` runs consecutive ``BlockStep``s as one loop over the stream
+(``run_blocks``) instead of a generator per step, and a block that is only a move (``ir.keys.only_move``,
+most blocks of a CAM program) skips every step whose ``moves`` says such a block is not its business
+there: a step costs a few instructions on it instead of a generator's resumption (~150-250 compiled,
+issue 30). Both forms compute the same: a ``LoweringStep`` called as a function runs its ``BlockStep`` alone
+through the same loop.
 """
 
 from __future__ import annotations
 
 from typing import Callable, Iterator, Sequence
 
+from mypy_extensions import mypyc_attr
+
 from ..context import Context
 from ..dialect import Dialect
 from ..ir import Block
+from ..ir.keys import only_move
 
 Lowering = Callable[[Iterator[Block], Context, type[Dialect]], Iterator[Block]]
 """A lowering step: ``step(blocks, ctx, target)`` -> blocks, a pure block-stream transform."""
@@ -24,6 +35,64 @@ Transform = Lowering
 
 TRANSFORMS: list[Lowering] = []
 """The generic steps of the default registry (``postproc.plugins.default_registry``), in order."""
+
+
+@mypyc_attr(allow_interpreted_subclasses=True)
+class BlockStep:
+    """One run of a ``LoweringStep``: its state, and what it makes of each block.
+
+    ``take`` gets every block the step before it gives, in order, except blocks that are only a move
+    (``only_move``) while ``moves`` is False: the step says so when such a block can neither change its
+    state nor be changed by it (it may set ``moves`` again at any block). ``take`` returns None for the
+    block as it is (perhaps changed in place), or the blocks that replace it (none: dropped or held;
+    several: an expansion, or held blocks given back). ``finish`` gives what is still held at the end."""
+
+    def __init__(self) -> None:
+        self.moves = True
+        """A block that is only a move is this step's business (False: it goes past unseen)."""
+
+    def take(self, block: Block) -> list[Block] | None:
+        raise NotImplementedError
+
+    def finish(self) -> list[Block]:
+        return []
+
+
+@mypyc_attr(allow_interpreted_subclasses=True)
+class LoweringStep:
+    """A lowering step as an object: ``start`` decides from the run (``ctx``) and the target whether it has
+    anything to do, and gives the ``BlockStep`` that does it (None: the stream passes unchanged). Called
+    like a function step, it runs alone over the blocks."""
+
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        raise NotImplementedError
+
+    def __call__(self, blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+        run = self.start(ctx, target)
+        return blocks if run is None else run_blocks(blocks, [run])
+
+
+class Steps(BlockStep):
+    """Several ``BlockStep``s as one, in order (a ``LoweringStep`` whose work is two rewrites, one after the
+    other): a block that is only a move is its business while it is one of theirs."""
+
+    def __init__(self, steps: list[BlockStep]) -> None:
+        super().__init__()
+        self.steps = steps
+        self.moves = any(step.moves for step in steps)
+
+    def take(self, block: Block) -> list[Block] | None:
+        made = list(_onward(block, self.steps, 0))
+        self.moves = any(step.moves for step in self.steps)
+        return None if len(made) == 1 and made[0] is block else made
+
+    def finish(self) -> list[Block]:
+        steps = self.steps
+        made: list[Block] = []
+        for k in range(len(steps)):
+            for held in steps[k].finish():
+                made.extend(_onward(held, steps, k + 1))
+        return made
 
 
 def register_transform(transform: Lowering) -> Lowering:
@@ -35,11 +104,76 @@ def register_transform(transform: Lowering) -> Lowering:
 
 def lower_for(blocks: Iterator[Block], ctx: Context, target: type[Dialect], on_unsupported: str,
               steps: Sequence[Lowering] | None = None) -> Iterator[Block]:
-    """Apply the generic steps (``steps``, by default the default registry's), then the target's own."""
+    """Apply the generic steps (``steps``, by default the default registry's), then the target's own;
+    consecutive ``LoweringStep``s run as one loop (``run_blocks``)."""
     ctx.on_unsupported = on_unsupported
     stream = blocks
-    for transform in TRANSFORMS if steps is None else steps:
+    group: list[BlockStep] = []
+    for transform in [*(TRANSFORMS if steps is None else steps), *target.LOWERING]:
+        if isinstance(transform, LoweringStep):
+            run = transform.start(ctx, target)
+            if run is not None:
+                group.append(run)
+            continue
+        if group:
+            stream = run_blocks(stream, group)
+            group = []
         stream = transform(stream, ctx, target)
-    for transform in target.LOWERING:
-        stream = transform(stream, ctx, target)
+    if group:
+        stream = run_blocks(stream, group)
     return stream
+
+
+def run_blocks(blocks: Iterator[Block], steps: list[BlockStep]) -> Iterator[Block]:
+    """Every block through ``steps`` in order, as the chain of their generators would pass it: a block a
+    step expands goes on, block by block, to the next step before the step's next block; at the end each
+    step's held blocks (``finish``) go through the steps after it, the first step's first."""
+    n = len(steps)
+    for block in blocks:
+        plain = only_move(block.sections)
+        i = 0
+        through = True
+        while i < n:
+            step = steps[i]
+            i += 1
+            if plain and not step.moves:
+                continue
+            out = step.take(block)
+            if out is None:
+                continue
+            if len(out) == 1:
+                block = out[0]
+                plain = only_move(block.sections)
+                continue
+            through = False
+            for made in out:
+                yield from _onward(made, steps, i)
+            break
+        if through:
+            yield block
+    for k in range(n):
+        for made in steps[k].finish():
+            yield from _onward(made, steps, k + 1)
+
+
+def _onward(block: Block, steps: list[BlockStep], start: int) -> Iterator[Block]:
+    """``block``, made by step ``start - 1``, through the steps from ``start`` on (``run_blocks``'s loop)."""
+    n = len(steps)
+    plain = only_move(block.sections)
+    i = start
+    while i < n:
+        step = steps[i]
+        i += 1
+        if plain and not step.moves:
+            continue
+        out = step.take(block)
+        if out is None:
+            continue
+        if len(out) == 1:
+            block = out[0]
+            plain = only_move(block.sections)
+            continue
+        for made in out:
+            yield from _onward(made, steps, i)
+        return
+    yield block

@@ -24,7 +24,7 @@ from __future__ import annotations
 
 from mypy_extensions import mypyc_attr
 
-from typing import Final, Iterator
+from typing import Final
 
 from ..compensation.tool_table import ENTRY, SIDEWAYS, ToolTable
 from ..context import Context
@@ -34,6 +34,7 @@ from ..expr import Expr
 from ..frames.run_state import RUN_KEY, FrameRun
 from ..ir import Block, DataSetting, Motion, Section
 from ..ir.keys import only_move
+from .lower import BlockStep, LoweringStep
 from ..state import MM_PER_INCH
 
 MEASURED: Final = "tool_entry_at_point"
@@ -43,32 +44,48 @@ MEASURED_9: Final = "tool_entry_at_point_9"
 AXES: Final = ("X", "Y", "Z")
 
 
-def write_measured_entries(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+class WriteMeasuredEntries(LoweringStep):
     """Lowering step (the module docstring): a measured entry of another family -> the whole entry it sets."""
-    family = target.family()
-    run = _Run(ctx)
-    for block in blocks:
+
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        return _Entries(ctx, target)
+
+
+write_measured_entries = WriteMeasuredEntries()
+
+
+class _Entries(BlockStep):
+    """One run: a move is its business (a reference return takes axes home), so ``moves`` stays True."""
+
+    def __init__(self, ctx: Context, target: type[Dialect]) -> None:
+        super().__init__()
+        self.ctx = ctx
+        self.target = target
+        self.family = target.family()
+        self.run = _Run(ctx)
+
+    def take(self, block: Block) -> list[Block] | None:
         s = block.sections
+        run = self.run
         if not run.homed and _unwatched(s):
             m = s.get("Motion")
             if m is None or isinstance(m, Motion) and m.mode not in _HOME:
-                yield block  # the common block: the frame evaluation follows its point
-                continue
+                return None  # the common block: the frame evaluation follows its point
             if not isinstance(m, Motion) and m.mode not in _HOME:  # type: ignore[attr-defined]
-                yield block
-                continue
+                return None
         setting = s.get("DataSetting")
         if isinstance(setting, DataSetting) and setting.table in (MEASURED, MEASURED_9) \
-                and setting.family != family and target.WRITER is not None:
+                and setting.family != self.family and self.target.WRITER is not None:
             try:
                 s["DataSetting"] = run.entry(setting)
                 block.changed()
             except PostprocError as err:
                 run.follow(block)
+                ctx = self.ctx
                 ctx.diagnostics.error(err.located(ctx.at(block)))
-                continue
+                return []
         run.follow(block)
-        yield block
+        return None
 
 
 _HOME: Final = ("home", "home2")

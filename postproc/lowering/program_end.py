@@ -14,7 +14,7 @@ compare them.
 
 from __future__ import annotations
 
-from typing import Iterator, Final
+from typing import Final
 
 from mypy_extensions import mypyc_attr
 
@@ -22,6 +22,7 @@ from ..context import Context
 from ..control import CONTROL, SubEnd, SubStart, Return
 from ..dialect import Dialect
 from ..ir import Block, Comments, Section, one_line
+from .lower import BlockStep, LoweringStep
 
 ENDS: Final = frozenset(("end", "end_rewind"))
 """``ProgramControl`` kinds that end the program."""
@@ -73,55 +74,70 @@ class EndTracker:
         return "live"
 
 
-def comment_after_end(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
-    """Lowering step (see the module docstring)."""
-    if target.NAME == ctx.dialect:
-        return blocks
-    return _comment_after_end(blocks, ctx, target.PROGRAMS, True)
+class CommentAfterEnd(LoweringStep):
+    """Lowering step (see the module docstring): ``comment_after_end``. With ``keep_numbered`` False,
+    ``comment_numbered_subs_after_end``: for a target that reads only its own form of subprogram (grblHAL's
+    ``o100 sub``), a numbered definition (``O2000`` .. ``M99``) still after the end once the target's own
+    steps ran (none called it) is written as comments, as any other code there."""
+
+    def __init__(self, keep_numbered: bool) -> None:
+        self.keep_numbered = keep_numbered
+
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        if target.NAME == ctx.dialect:
+            return None
+        return _AfterEnd(ctx, target.PROGRAMS, self.keep_numbered)
 
 
-def comment_numbered_subs_after_end(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
-    """Lowering step for a target that reads only its own form of subprogram (grblHAL's ``o100 sub``): a
-    numbered definition (``O2000`` .. ``M99``) still after the end once the target's own steps ran (none
-    called it) is written as comments, as any other code there."""
-    if target.NAME == ctx.dialect:
-        return blocks
-    return _comment_after_end(blocks, ctx, target.PROGRAMS, False)
+comment_after_end = CommentAfterEnd(True)
+comment_numbered_subs_after_end = CommentAfterEnd(False)
 
 
-def _comment_after_end(blocks: Iterator[Block], ctx: Context, keep_subs: bool,
-                       keep_numbered: bool) -> Iterator[Block]:
-    tracker = EndTracker()
-    started = False
-    for block in blocks:  # before the end: kept cheap, every block of the program passes here
+class _AfterEnd(BlockStep):
+    """One run: before the end it only follows the program (a move once the program has started is none
+    of its business); after it, every block is."""
+
+    def __init__(self, ctx: Context, keep_subs: bool, keep_numbered: bool) -> None:
+        super().__init__()
+        self.ctx = ctx
+        self.keep_subs = keep_subs
+        self.keep_numbered = keep_numbered
+        self.tracker = EndTracker()
+        self.started = False
+        self.ended = False
+        self.warned = False
+        self.numbered = False
+        """The definition being read opened with a program number (``O2000``), not the target's own form."""
+
+    def take(self, block: Block) -> list[Block] | None:
         sections = block.sections
-        if "ProgramControl" in sections or "TapeMark" in sections:
-            tracker.started = started
-            tracker.before_end(sections)
-            yield block
-            if tracker.ended:
-                break
-            started = tracker.started
-            continue
-        if sections:
-            started = True
-        yield block
-    warned = False
-    numbered = False
-    """The definition being read opened with a program number (``O2000``), not the target's own form."""
-    for block in blocks:
-        sections = block.sections
+        tracker = self.tracker
+        if not self.ended:  # before the end: kept cheap, every block of the program passes here
+            if "ProgramControl" in sections or "TapeMark" in sections:
+                tracker.started = self.started
+                tracker.before_end(sections)
+                if tracker.ended:
+                    self.ended = True
+                    self.moves = True
+                else:
+                    self.started = tracker.started
+                    self.moves = not self.started
+                return None
+            if sections:
+                self.started = True
+                self.moves = False
+            return None
         kind = tracker.after_end(sections)
         if kind == "sub" and ("ProgramStart" in sections or isinstance(sections.get(CONTROL), SubStart)):
-            numbered = "ProgramStart" in sections
-        if kind == "inert" or (kind == "sub" and keep_subs and (keep_numbered or not numbered)):
-            yield block
-            continue
-        if not warned:
+            self.numbered = "ProgramStart" in sections
+        if kind == "inert" or (kind == "sub" and self.keep_subs and (self.keep_numbered or not self.numbered)):
+            return None
+        ctx = self.ctx
+        if not self.warned:
             ctx.diagnostics.warn("blocks after the program end are written as comments (a controller that is "
                                  "streamed to would run them)", ctx.at(block))
-            warned = True
+            self.warned = True
         text = one_line(block.text or " ".join(a + n for a, n in block.words)).strip()
         block.sections = {"Comments": Comments([f"AFTER PROGRAM END, LINE {block.line}: {text}"])}
         block.changed()
-        yield block
+        return None

@@ -10,83 +10,113 @@ an error of the set-up, found before any block is written.
 
 from __future__ import annotations
 
-from itertools import chain
-from typing import Iterable, Iterator
-
 from ..context import Context
 from ..dialect import Dialect
 from ..errors import ConfigError, Location
 from ..ir import Block, Comments, ProgramStart, TapeMark
+from .lower import BlockStep, LoweringStep, Steps
 
 
-def frame_program(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
-    out = ctx.setup.output
-    marks, number = out.tape_marks, out.program_number
-    if not target.LEADER_TITLE:
-        blocks = _title_as_comment(blocks)
-    if marks == "keep" and number == "keep":
-        return blocks
-    where = Location(ctx.setup.source or "<set-up>", 1, 1)
-    if marks == "always" and not target.TAPE_MARKS:
-        raise ConfigError(f"<Output tapeMarks=\"always\">: the {target.NAME} dialect has no % lines", where)
-    if isinstance(number, int) and not target.PROGRAM_NUMBERS:
-        raise ConfigError(f"<Output programNumber=\"{number}\">: the {target.NAME} dialect writes no program "
-                          "number", where)
-    return _framed(blocks, marks, number)
+class FrameProgram(LoweringStep):
+    """Lowering step: the program's tape marks and number as the set-up's ``<Output>`` asks (the module
+    docstring), and an opening ``%`` line's title as a comment where the target's control does not skip it."""
+
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        out = ctx.setup.output
+        marks, number = out.tape_marks, out.program_number
+        title = None if target.LEADER_TITLE else _TitleAsComment()
+        if marks == "keep" and number == "keep":
+            return title
+        where = Location(ctx.setup.source or "<set-up>", 1, 1)
+        if marks == "always" and not target.TAPE_MARKS:
+            raise ConfigError(f"<Output tapeMarks=\"always\">: the {target.NAME} dialect has no % lines", where)
+        if isinstance(number, int) and not target.PROGRAM_NUMBERS:
+            raise ConfigError(f"<Output programNumber=\"{number}\">: the {target.NAME} dialect writes no program "
+                              "number", where)
+        framed = _Framed(marks, number)
+        return framed if title is None else Steps([title, framed])
 
 
-def _framed(blocks: Iterator[Block], marks: str, number: str | int) -> Iterator[Block]:
-    opened = False  # a block other than a tape mark went by
-    numbered = number == "keep"  # the main program's number is settled
-    last: Block | None = None
-    for block in blocks:
+frame_program = FrameProgram()
+
+
+class _Framed(BlockStep):
+    """The tape marks and the program number asked for: every block is its business (a closing mark
+    follows the last one)."""
+
+    def __init__(self, marks: str, number: str | int) -> None:
+        super().__init__()
+        self.marks = marks
+        self.number = number
+        self.opened = False  # a block other than a tape mark went by
+        self.numbered = number == "keep"  # the main program's number is settled
+        self.last: Block | None = None
+
+    def take(self, block: Block) -> list[Block] | None:
+        marks, number = self.marks, self.number
+        made: list[Block] = []
         sections = block.sections
         if "TapeMark" in sections:
             if marks == "never":
                 title = getattr(sections["TapeMark"], "title", None)
-                if title is not None:  # the % line goes, its title stays (``_title_as_comment``)
-                    yield _comment(block.line, title, block.eol)
-                continue
-            if marks == "always" and opened and last is not None and "TapeMark" in last.sections:
-                continue  # one closing mark
-        elif not opened:
-            opened = True
-            if marks == "always" and last is None:
-                yield _line(block.line, TapeMark())
-        if not numbered and "TapeMark" not in sections:
-            numbered = True
+                if title is not None:  # the % line goes, its title stays (``_TitleAsComment``)
+                    made.append(_comment(block.line, title, block.eol))
+                return made
+            last = self.last
+            if marks == "always" and self.opened and last is not None and "TapeMark" in last.sections:
+                return made  # one closing mark
+        elif not self.opened:
+            self.opened = True
+            if marks == "always" and self.last is None:
+                made.append(_line(block.line, TapeMark()))
+        if not self.numbered and "TapeMark" not in sections:
+            self.numbered = True
             if "ProgramStart" in sections:
                 block = _renumbered(block, number)
             elif isinstance(number, int):
-                yield _line(block.line, ProgramStart(number))
+                made.append(_line(block.line, ProgramStart(number)))
         if block.sections:
-            last = block
-            yield block
-    if marks == "always" and (last is None or "TapeMark" not in last.sections or not opened):
-        yield _line(last.line if last is not None else 1, TapeMark())
+            self.last = block
+            made.append(block)
+        return made
+
+    def finish(self) -> list[Block]:
+        last = self.last
+        if self.marks == "always" and (last is None or "TapeMark" not in last.sections or not self.opened):
+            return [_line(last.line if last is not None else 1, TapeMark())]
+        return []
 
 
-def _title_as_comment(blocks: Iterator[Block]) -> Iterator[Block]:
+class _TitleAsComment(BlockStep):
     """The title of the program's opening ``%`` line (``TapeMark.title``) as a comment line after it, for a
     target whose control does not skip text on its ``%`` line (LinuxCNC refuses ``%O1200(TOKARKA)``: "Bad
     character '%' used" [V: rs274 run here]; the other targets' rules are not at hand [?]): never dropped.
-    Only the blocks up to the first that holds anything are looked at, when the run reaches them (a chain
-    after them: no step per block)."""
-    return chain.from_iterable(_opening_then_rest(blocks))
+    Only the blocks up to the first that holds anything are looked at (held until it comes); after it,
+    nothing is its business."""
 
+    def __init__(self) -> None:
+        super().__init__()
+        self.head: list[Block] | None = []
 
-def _opening_then_rest(blocks: Iterator[Block]) -> Iterator[Iterable[Block]]:
-    head: list[Block] = []
-    for block in blocks:
+    def take(self, block: Block) -> list[Block] | None:
+        head = self.head
+        if head is None:
+            return None
         head.append(block)
-        if block.sections:
-            title = getattr(block.sections.get("TapeMark"), "title", None)
-            if title is not None:
-                head[-1] = _line(block.line, TapeMark(), block.eol)
-                head.append(_comment(block.line, title, block.eol))
-            break
-    yield head
-    yield blocks
+        if not block.sections:
+            return []
+        title = getattr(block.sections.get("TapeMark"), "title", None)
+        if title is not None:
+            head[-1] = _line(block.line, TapeMark(), block.eol)
+            head.append(_comment(block.line, title, block.eol))
+        self.head = None
+        self.moves = False
+        return head
+
+    def finish(self) -> list[Block]:
+        head = self.head
+        self.head = None
+        return [] if head is None else head
 
 
 def _comment(line: int, text: str, eol: str) -> Block:

@@ -25,7 +25,7 @@ either in the path or refused.
 
 from __future__ import annotations
 
-from typing import Final, Iterator
+from typing import Final
 
 from ..compensation.tool_table import ENTRY, SIDEWAYS
 from ..context import Context
@@ -36,6 +36,7 @@ from ..expr import Expr
 from ..ir import Block, Comments, CompoundMotion, DataSetting, Motion, Section
 from ..state import MM_PER_INCH
 from ..synchronised_tap import RigidTap
+from .lower import BlockStep, LoweringStep
 
 _UNREWRITTEN: Final = {"CannedCycle": "a canned cycle kept for the target", "FrameChange": "a frame command",
                        "CoordinateSet": "a coordinate setting", "HolePattern": "a hole pattern",
@@ -44,40 +45,62 @@ _UNREWRITTEN: Final = {"CannedCycle": "a canned cycle kept for the target", "Fra
 """Sections that state program coordinates this step does not rewrite -> what they are, for the error."""
 
 
-def write_sideways_offsets(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+class WriteSidewaysOffsets(LoweringStep):
     """Lowering step (the module docstring)."""
-    family = target.family()
-    entries: dict[int, dict[str, float]] = {}
-    shift: dict[str, float] = {}
-    """The offsets in force, mm (empty: none)."""
-    inch, absolute = False, True  # a program starts as ``ModalState`` does (and the simulation)
-    for block in blocks:
+
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        return _Sideways(ctx, target)
+
+
+write_sideways_offsets = WriteSidewaysOffsets()
+
+
+class _Sideways(BlockStep):
+    """One run: until an entry with offsets across the spindle, only a block with a ``DataSetting`` is its
+    business; from then on every block."""
+
+    def __init__(self, ctx: Context, target: type[Dialect]) -> None:
+        super().__init__()
+        self.moves = False
+        self.ctx = ctx
+        self.target = target
+        self.family = target.family()
+        self.entries: dict[int, dict[str, float]] = {}
+        self.shift: dict[str, float] = {}
+        """The offsets in force, mm (empty: none)."""
+        self.inch = False  # a program starts as ``ModalState`` does (and the simulation)
+        self.absolute = True
+
+    def take(self, block: Block) -> list[Block] | None:
         sections = block.sections
+        entries = self.entries
         if not entries and "DataSetting" not in sections:
-            yield block  # the common block: no entry with offsets across the spindle yet
-            continue
+            return None  # the common block: no entry with offsets across the spindle yet
         units = sections.get("Units")
         if units is not None:
-            inch = units.system == "inch"  # type: ignore[attr-defined]
+            self.inch = units.system == "inch"  # type: ignore[attr-defined]
         distance = sections.get("DistanceMode")
         if distance is not None:
-            absolute = distance.mode != "incremental"  # type: ignore[attr-defined]
+            self.absolute = distance.mode != "incremental"  # type: ignore[attr-defined]
         setting = sections.get("DataSetting")
-        if isinstance(setting, DataSetting) and setting.table == ENTRY and setting.family != family \
-                and target.WRITER is not None:
-            _take(block, setting, entries, MM_PER_INCH if inch else 1.0)
+        if isinstance(setting, DataSetting) and setting.table == ENTRY and setting.family != self.family \
+                and self.target.WRITER is not None:
+            _take(block, setting, entries, MM_PER_INCH if self.inch else 1.0)
+            self.moves = bool(entries)
         length = sections.get("ToolLengthOffset")
         if length is not None:
             register = length.register  # type: ignore[attr-defined]
             positive = length.mode == "positive" and isinstance(register, int)  # type: ignore[attr-defined]
-            shift = {a: v for a, v in entries.get(register, {}).items() if v} if positive else {}
+            self.shift = {a: v for a, v in entries.get(register, {}).items() if v} if positive else {}
+        shift = self.shift
         if shift:
             try:
-                _offset(block, shift, 1.0 / MM_PER_INCH if inch else 1.0, absolute)
+                _offset(block, shift, 1.0 / MM_PER_INCH if self.inch else 1.0, self.absolute)
             except UnsupportedError as err:
+                ctx = self.ctx
                 ctx.diagnostics.error(err.located(ctx.at(block)))
-                continue
-        yield block
+                return []
+        return None
 
 
 def _take(block: Block, setting: DataSetting, entries: dict[int, dict[str, float]], scale: float) -> None:

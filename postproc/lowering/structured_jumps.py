@@ -47,6 +47,7 @@ from ..dialect import Dialect
 from ..errors import Location, UnsupportedError
 from ..expr import Binary, Expr, Func, Num, Unary
 from ..ir import Block, Section
+from .lower import BlockStep, LoweringStep
 
 LABEL: Final = "Label"
 _OPENING: Final = (If, While, Do, For, Repeat, Switch, SubStart)
@@ -56,32 +57,47 @@ _EXACT: Final = {"eq": ("and", "le", "ge"), "ne": ("or", "lt", "gt")}
 """An exact comparison as two exact ones LinuxCNC has, and the logical operator joining them."""
 
 
-def nest_forward_jumps(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+class NestForwardJumps(LoweringStep):
     """Forward jumps as ``if`` .. ``endif`` (or ``break``), ``Until`` as ``do`` .. ``while``, exact equalities
-    as two comparisons (module docstring: LinuxCNC); every other block as it is."""
-    if ctx.dialect == target.NAME:
-        return blocks
-    return _nested(blocks, _Nest(ctx, f"{target.NAME} has no GOTO", exact=True))
+    as two comparisons (module docstring: LinuxCNC); every other block as it is. With ``keep_equality``:
+    ``nest_jumps_keeping_equality``, the conditions as they are (ISG)."""
 
+    def __init__(self, keep_equality: bool) -> None:
+        self.keep_equality = keep_equality
 
-def nest_jumps_keeping_equality(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
-    """``nest_forward_jumps`` with the conditions as they are (ISG)."""
-    if ctx.dialect == target.NAME:
-        return blocks
-    return _nested(blocks, _Nest(ctx, f"{target.NAME}'s GOTO may not stay in a loop or reach a numbered block",
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        if ctx.dialect == target.NAME:
+            return None
+        if self.keep_equality:
+            return _Nested(_Nest(ctx, f"{target.NAME}'s GOTO may not stay in a loop or reach a numbered block",
                                  exact=False, back_to_labels=True))
+        return _Nested(_Nest(ctx, f"{target.NAME} has no GOTO", exact=True))
 
 
-def _nested(blocks: Iterator[Block], nest: _Nest) -> Iterator[Block]:
-    control, label = CONTROL, LABEL
-    for block in blocks:
+nest_forward_jumps = NestForwardJumps(False)
+nest_jumps_keeping_equality = NestForwardJumps(True)
+
+
+class _Nested(BlockStep):
+    """One run: a block with a statement or a label is its business, and every block while a jump's stretch
+    is held or a loop is being left."""
+
+    def __init__(self, nest: _Nest) -> None:
+        super().__init__()
+        self.moves = False
+        self.nest = nest
+
+    def take(self, block: Block) -> list[Block] | None:
         sections = block.sections
-        if control not in sections and label not in sections and not nest.busy:
-            yield block  # the common block: no statement, no label, no jump's stretch to hold it
-            continue
-        yield from nest.block(block)
-        nest.busy = bool(nest.jumps) or nest.leaving is not None
-    yield from nest.end()
+        nest = self.nest
+        if CONTROL not in sections and LABEL not in sections and not nest.busy:
+            return None  # the common block: no statement, no label, no jump's stretch to hold it
+        made = list(nest.block(block))
+        nest.busy = self.moves = bool(nest.jumps) or nest.leaving is not None
+        return made
+
+    def finish(self) -> list[Block]:
+        return list(self.nest.end())
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)

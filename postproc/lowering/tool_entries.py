@@ -24,13 +24,14 @@ program writes another, is left out.
 
 from __future__ import annotations
 
-from typing import Final, Iterator
+from typing import Final
 
 from ..compensation.tool_table import ENTRY, SIDEWAYS
 from ..context import Context
 from ..dialect import Dialect
 from ..errors import UnsupportedError
 from ..ir import Block, Comments, DataSetting
+from .lower import BlockStep, LoweringStep
 
 LENGTH: Final = "Z"
 """The entry's word for its length."""
@@ -38,28 +39,41 @@ RADIUS: Final = "R"
 """The entry's word for its radius."""
 
 
-def write_tool_entries(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+class WriteToolEntries(LoweringStep):
     """Lowering step: a ``tool_entry`` setting of another family -> ``tool_length`` and ``cutter_offset``
     settings (see the module docstring); every other block as it is. Back to the program's own dialect
     (whose settings are of its family) or to a target without a writer, the stream passes through."""
-    if ctx.dialect == target.NAME or target.WRITER is None:
-        return blocks
-    return _write(blocks, ctx, target.family())
+
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        if ctx.dialect == target.NAME or target.WRITER is None:
+            return None
+        return _Entries(ctx, target.family())
 
 
-def _write(blocks: Iterator[Block], ctx: Context, family: str) -> Iterator[Block]:
-    for block in blocks:
+write_tool_entries = WriteToolEntries()
+
+
+class _Entries(BlockStep):
+    """One run: only a block with a ``DataSetting`` is its business."""
+
+    def __init__(self, ctx: Context, family: str) -> None:
+        super().__init__()
+        self.moves = False
+        self.ctx = ctx
+        self.family = family
+
+    def take(self, block: Block) -> list[Block] | None:
         setting = block.sections.get("DataSetting")
-        if not isinstance(setting, DataSetting) or setting.table != ENTRY or setting.family == family:
-            yield block
-            continue
+        if not isinstance(setting, DataSetting) or setting.table != ENTRY or setting.family == self.family:
+            return None
+        ctx = self.ctx
         try:
-            yield from _registers(block, setting, ctx)
+            return _registers(block, setting, ctx)
         except UnsupportedError as err:
             if ctx.on_unsupported == "warn":
-                yield block  # the writer refuses the entry and comments it out, with its warning
-            else:
-                ctx.diagnostics.error(err.located(ctx.at(block)))
+                return None  # the writer refuses the entry and comments it out, with its warning
+            ctx.diagnostics.error(err.located(ctx.at(block)))
+            return []
 
 
 def _registers(block: Block, setting: DataSetting, ctx: Context) -> list[Block]:

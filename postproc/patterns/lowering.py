@@ -28,6 +28,7 @@ from postproc.ir import Block, Comments, CompoundMotion, Motion, Section
 from .geometry import first_point, pattern_hops
 from .resolve import cycle_at
 from .section import HolePattern
+from ..lowering.lower import BlockStep, LoweringStep
 
 
 POINT_BY_POINT_KEY = "patterns.point_by_point"
@@ -35,35 +36,54 @@ POINT_BY_POINT_KEY = "patterns.point_by_point"
 transform or unit conversion carries each point's cycle exactly; a pattern's own words it does not know)."""
 
 
-def expand_hole_patterns(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+class ExpandHolePatterns(LoweringStep):
     """Lowering transform (see the module docstring)."""
-    native = frozenset() if ctx.run_data.get(POINT_BY_POINT_KEY) else target.HOLE_PATTERNS
-    expanding = False  # the target gets the active cycle as motion (``expand_canned_cycles`` decides alike)
-    for block in blocks:
+
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        return _Patterns(ctx, target)
+
+
+expand_hole_patterns = ExpandHolePatterns()
+
+
+class _Patterns(BlockStep):
+    """One run: a block that is only a move is its business while the active cycle is expanded (it may
+    cancel it)."""
+
+    def __init__(self, ctx: Context, target: type[Dialect]) -> None:
+        super().__init__()
+        self.moves = False
+        self.ctx = ctx
+        self.target = target
+        self.native: frozenset[str] = frozenset() if ctx.run_data.get(POINT_BY_POINT_KEY) else target.HOLE_PATTERNS
+        self.expanding = False  # the target gets the active cycle as motion (``expand_canned_cycles`` decides alike)
+
+    def take(self, block: Block) -> list[Block] | None:
         sections = block.sections
-        if not expanding and "HolePattern" not in sections and "CannedCycle" not in sections:
-            yield block  # most blocks: no pattern, and no cycle to follow or cancel
-            continue
+        if not self.expanding and "HolePattern" not in sections and "CannedCycle" not in sections:
+            return None  # most blocks: no pattern, and no cycle to follow or cancel
+        ctx, target = self.ctx, self.target
         pattern = sections.get("HolePattern")
         if pattern is None or not isinstance(pattern, HolePattern):
             cycle = sections.get("CannedCycle")
             if isinstance(cycle, CannedCycle):
-                expanding = expanding or expands(cycle, ctx, target)
-            elif expanding and cancels(sections):
-                expanding = False
-            yield block
-        elif pattern.kind in native and not (expanding or pattern.cycle is not None
-                                             and expands(pattern.cycle, ctx, target)):
+                self.expanding = self.moves = self.expanding or expands(cycle, ctx, target)
+            elif self.expanding and cancels(sections):
+                self.expanding = self.moves = False
+            return None
+        if pattern.kind in self.native and not (self.expanding or pattern.cycle is not None
+                                                and expands(pattern.cycle, ctx, target)):
             sections.pop("CompoundMotion", None)
-            yield block
-        else:
-            # a native pattern needs its cycle active on the target: where the cycle becomes motion,
-            # so does the pattern
-            for out in point_by_point(block, pattern, ctx):
-                here = out.sections.get("CannedCycle")
-                if isinstance(here, CannedCycle):
-                    expanding = expanding or expands(here, ctx, target)
-                yield out
+            return None
+        # a native pattern needs its cycle active on the target: where the cycle becomes motion,
+        # so does the pattern
+        made: list[Block] = []
+        for out in point_by_point(block, pattern, ctx):
+            here = out.sections.get("CannedCycle")
+            if isinstance(here, CannedCycle):
+                self.expanding = self.moves = self.expanding or expands(here, ctx, target)
+            made.append(out)
+        return made
 
 
 def point_by_point(block: Block, pattern: HolePattern, ctx: Context) -> Iterator[Block]:

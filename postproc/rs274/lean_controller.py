@@ -39,6 +39,7 @@ from ..ir import (
 from ..ir.keys import only_move
 from ..state import PLANE_AXES
 from .order_of_execution import split_stops_after_motion, stops_after_motion
+from ..lowering.lower import BlockStep, LoweringStep
 
 
 def pause_for_tool_change(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
@@ -85,18 +86,28 @@ def _close_full_circles(blocks: Iterator[Block]) -> Iterator[Block]:
             yield back
 
 
-def lower_for_lean_controller(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+class LowerForLeanController(LoweringStep):
     """``pause_for_tool_change``, ``cancel_length_offset_first``, ``close_full_circles`` and
     ``stops_after_motion`` (in that order) in one pass."""
-    if ctx.dialect == target.NAME:
-        return stops_after_motion(blocks, ctx, target)
-    return _lean_controller(blocks, ctx, not target.TOOL_CHANGER)
+
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        if ctx.dialect == target.NAME:
+            return stops_after_motion.start(ctx, target)
+        return _Lean(ctx, not target.TOOL_CHANGER)
 
 
-def _lean_controller(blocks: Iterator[Block], ctx: Context, pause: bool) -> Iterator[Block]:
-    pauses = _ToolChangePauses(ctx) if pause else None
-    circles = _FullCircles()
-    for block in blocks:
+lower_for_lean_controller = LowerForLeanController()
+
+
+class _Lean(BlockStep):
+    """One run of the four: a move is its business (an arc may be a full circle to close)."""
+
+    def __init__(self, ctx: Context, pause: bool) -> None:
+        super().__init__()
+        self.pauses = _ToolChangePauses(ctx) if pause else None
+        self.circles = _FullCircles()
+
+    def take(self, block: Block) -> list[Block] | None:
         sections = block.sections
         quiet = True
         if not only_move(sections):
@@ -104,22 +115,24 @@ def _lean_controller(blocks: Iterator[Block], ctx: Context, pause: bool) -> Iter
                 if key in _LEAN_WATCHED:
                     quiet = False
                     break
+        pauses = self.pauses
         if quiet:
             arc = sections.get("Motion")
             if not isinstance(arc, Motion) or (arc.mode != "cw" and arc.mode != "ccw"):
-                yield block  # a straight move, a block number, a feed rate: no step changes it
-                continue
+                return None  # a straight move, a block number, a feed rate: no step changes it
         elif _expansion_only(sections):  # an expanded hole: only the spindle it leaves is noted
             if pauses is not None:
                 pauses.follow(sections["CompoundMotion"])
-            yield block
-            continue
+            return None
         paused = pauses.split(block) if pauses is not None else [block]
+        made: list[Block] = []
+        circles = self.circles
         for one in paused:
             first = _length_offset_cancel(one)
             if first is not None:
-                yield from _stops_split(first, circles)
-            yield from _stops_split(one, circles)
+                made.extend(_stops_split(first, circles))
+            made.extend(_stops_split(one, circles))
+        return made
 
 
 _EXPANSION_ONLY: Final = frozenset(("CompoundMotion", "Sequence", "Comments"))

@@ -16,12 +16,13 @@ Starting the spindle or the coolant stays in the block: both orders run it befor
 from __future__ import annotations
 
 import copy
-from typing import Iterator, Final
+from typing import Final
 
 from ..context import Context
 from ..dialect import Dialect
 from ..event_order import moves
 from ..ir import Block, Section
+from ..lowering.lower import BlockStep, LoweringStep
 
 _STOPS: Final[tuple[str, ...]] = ("SpindleControl", "Coolant")
 """What a block stops (or starts): most blocks hold neither, tested first with two dict look-ups (measured:
@@ -34,17 +35,29 @@ _TOOL: Final[tuple[str, ...]] = ("ToolSelect", "ToolChange")
 into the block before, so a tool change still precedes a coolant off."""
 
 
-def stops_after_motion(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+class StopsAfterMotion(LoweringStep):
     """Lowering step for RS274/NGC targets (see the module docstring)."""
-    for block in blocks:
+
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        return _StopsAfter()
+
+
+stops_after_motion = StopsAfterMotion()
+
+
+class _StopsAfter(BlockStep):
+    """One run: only a block that stops or starts the spindle or the coolant is its business."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        self.moves = False
+
+    def take(self, block: Block) -> list[Block] | None:
         sections = block.sections
         if "SpindleControl" not in sections and "Coolant" not in sections:
-            yield block
-            continue
+            return None
         after = split_stops_after_motion(block)
-        yield block
-        if after is not None:
-            yield after
+        return None if after is None else [block, after]
 
 
 def split_stops_after_motion(block: Block) -> Block | None:
@@ -69,31 +82,37 @@ def split_stops_after_motion(block: Block) -> Block | None:
     return after
 
 
-def stops_before_motion(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+class StopsBeforeMotion(LoweringStep):
     """Lowering step for targets that stop after the motion (see the module docstring). A source that
     stops after the motion too flags nothing: its blocks pass with no step each."""
-    if not ctx.stops_before_motion:
-        return blocks
-    return _stops_before_motion(blocks)
+
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        return _StopsBefore() if ctx.stops_before_motion else None
 
 
-def _stops_before_motion(blocks: Iterator[Block]) -> Iterator[Block]:
-    for block in blocks:
+stops_before_motion = StopsBeforeMotion()
+
+
+class _StopsBefore(BlockStep):
+    """One run: only a block that stops or starts the spindle or the coolant is its business."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        self.moves = False
+
+    def take(self, block: Block) -> list[Block] | None:
         sections = block.sections
         if "SpindleControl" not in sections and "Coolant" not in sections:
-            yield block  # most blocks: nothing to move before the motion
-            continue
+            return None  # most blocks: nothing to move before the motion
         flagged = [key for key in _STOPS if key in sections and _flagged(sections[key])]
         if not flagged or not moves(sections):
-            yield block
-            continue
+            return None
         # what RS274/NGC runs before those stops goes with them: the tool change, then the spindle (S, M3/M4/M5)
         taken = set(flagged).union(key for key in (*_TOOL, "SpindleSpeed", "SpindleControl") if key in sections)
         before = Block(block.line, None, block.eol or "\n")
         before.sections = {key: _unflagged(sections.pop(key)) for key in list(sections) if key in taken}
         block.changed()
-        yield before
-        yield block
+        return [before, block]
 
 
 def _stops(section: object) -> bool:

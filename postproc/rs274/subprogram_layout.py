@@ -22,6 +22,7 @@ from ..dialect import Dialect
 from ..errors import UnsupportedError
 from ..ir import Block
 from .return_level import ReturnLevels
+from ..lowering.lower import BlockStep, LoweringStep
 
 Group = tuple[str | None, list[Block]]
 """A subprogram's number (None: what stands before the first one) and its blocks, in source order."""
@@ -30,44 +31,65 @@ Refusal = Callable[[str, str, int], str]
 programs are left unordered) -> text."""
 
 
-def subprograms_after_callers(blocks: Iterator[Block], ctx: Context, target: type[Dialect],
-                              refusal: Refusal) -> Iterator[Block]:
+class SubprogramsAfterCallers(LoweringStep):
     """Lowering step (see the module docstring), which also writes the return level a cycle needs as the
-    text comes; a source of the target's own dialect is written as it is."""
-    if ctx.dialect == target.NAME:
-        yield from blocks
-        return
-    see = ReturnLevels(target).see
-    ended = False
-    groups: list[Group] | None = None
-    for block in blocks:
+    text comes; a source of the target's own dialect is written as it is. ``refusal`` words the error."""
+
+    def __init__(self, refusal: Refusal) -> None:
+        self.refusal = refusal
+
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        if ctx.dialect == target.NAME:
+            return None
+        return _Layout(ctx, target, self.refusal)
+
+
+class _Layout(BlockStep):
+    """One run: the main program streams (a block that is only a move is none of its business), the
+    subprograms after its end are held (then every block is)."""
+
+    def __init__(self, ctx: Context, target: type[Dialect], refusal: Refusal) -> None:
+        super().__init__()
+        self.moves = False
+        self.ctx = ctx
+        self.refusal = refusal
+        self.levels = ReturnLevels(target)
+        self.ended = False
+        self.groups: list[Group] | None = None
+
+    def take(self, block: Block) -> list[Block] | None:
         sections = block.sections
         if "CannedCycle" in sections or "ReturnLevel" in sections:  # most blocks have neither: two tests
-            see(block)
+            self.levels.see(block)
+        groups = self.groups
         if groups is None:
             if "ProgramStart" in sections or "ProgramControl" in sections:
                 number = getattr(sections.get("ProgramStart"), "number", None)
-                if ended and number is not None:
-                    groups = [(str(int(number)), [block])]
-                    continue
+                if self.ended and number is not None:
+                    self.groups = [(str(int(number)), [block])]
+                    self.moves = True
+                    return []
                 end = sections.get("ProgramControl")
                 if end is not None and getattr(end, "kind", None) in ("end", "end_rewind"):
-                    ended = True
-            yield block
-            continue
+                    self.ended = True
+            return None
         if "TapeMark" in sections:
-            yield from _ordered(groups, ctx, refusal)
-            groups = None
-            ended = False
-            yield block
-            continue
+            made = list(_ordered(groups, self.ctx, self.refusal))
+            self.groups = None
+            self.moves = False
+            self.ended = False
+            made.append(block)
+            return made
         number = getattr(sections.get("ProgramStart"), "number", None)
         if number is not None:
             groups.append((str(int(number)), [block]))
         else:
             groups[-1][1].append(block)
-    if groups is not None:
-        yield from _ordered(groups, ctx, refusal)
+        return []
+
+    def finish(self) -> list[Block]:
+        groups = self.groups
+        return [] if groups is None else list(_ordered(groups, self.ctx, self.refusal))
 
 
 def _ordered(groups: list[Group], ctx: Context, refusal: Refusal) -> Iterator[Block]:

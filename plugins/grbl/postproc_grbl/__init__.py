@@ -37,6 +37,7 @@ from postproc.comments import CommentSyntax
 from postproc.dialect import Dialect, Lazy, Reader
 from postproc.grbl_family.dialect import GrblFamily
 from postproc.hookspecs import hookimpl
+from postproc.lowering.lower import BlockStep, LoweringStep
 from postproc.output.line_format import LineRule
 from postproc.rs274.cycle_words import rs274_cycle_words
 from postproc.setup.machine_setup import MachineSetup
@@ -51,23 +52,34 @@ if TYPE_CHECKING:
     from postproc.ir import Block
 
 
-def write_tool_lengths(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+class _WriteToolLengths(LoweringStep):
     """``postproc.grbl_family.lengths.write_tool_lengths``, imported when a translation first lowers for grbl."""
-    from postproc.grbl_family.lengths import write_tool_lengths as step
-    return step(blocks, ctx, target)
+
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        from postproc.grbl_family.lengths import write_tool_lengths as step
+        return step.start(ctx, target)
 
 
-def drop_resolved_tool_data(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+class _DropResolvedToolData(LoweringStep):
     """``postproc.grbl_family.lengths.drop_resolved_tool_data``, imported when a translation first lowers for grbl."""
-    from postproc.grbl_family.lengths import drop_resolved_tool_data as step
-    return step(blocks, ctx, target)
+
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        from postproc.grbl_family.lengths import drop_resolved_tool_data as step
+        return step.start(ctx, target)
 
 
-def lower_for_lean_controller(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+class _LowerForLeanController(LoweringStep):
     """``postproc.rs274.lean_controller.lower_for_lean_controller``, imported when a translation first lowers
     for grbl."""
-    from postproc.rs274.lean_controller import lower_for_lean_controller as step
-    return step(blocks, ctx, target)
+
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        from postproc.rs274.lean_controller import lower_for_lean_controller as step
+        return step.start(ctx, target)
+
+
+write_tool_lengths = _WriteToolLengths()
+drop_resolved_tool_data = _DropResolvedToolData()
+lower_for_lean_controller = _LowerForLeanController()
 
 
 def resolve_cutter_compensation(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:

@@ -23,7 +23,7 @@ from postproc.errors import Diagnostics
 from postproc.hookspecs import hookimpl
 from postproc.ir import Block
 from postproc.output.line_format import LineRule
-from postproc.lowering.lower import Lowering
+from postproc.lowering.lower import BlockStep, Lowering, LoweringStep
 from postproc.setup.machine_setup import MachineSetup
 from postproc.context import Context
 from postproc.rs274.cycle_words import rs274_cycle_words
@@ -48,16 +48,24 @@ def _thread_feed_apart(blocks: Iterator[Block], ctx: Context, target: type[Diale
     return feed_apart(blocks, ctx, target)
 
 
-def _subprogram_layout(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+class _SubprogramLayout(LoweringStep):
     """``layout.subprograms_after_callers``, imported when a translation to LinuxCNC first runs."""
-    from .layout import subprograms_after_callers
-    return subprograms_after_callers(blocks, ctx, target)
+
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        from .layout import subprograms_after_callers
+        return subprograms_after_callers.start(ctx, target)
 
 
-def _exact_stop_for_one_block(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+class _ExactStopForOneBlock(LoweringStep):
     """``exact_stop.exact_stop_for_one_block``, imported when a translation to LinuxCNC first runs."""
-    from .exact_stop import exact_stop_for_one_block
-    return exact_stop_for_one_block(blocks, ctx, target)
+
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        from .exact_stop import exact_stop_for_one_block
+        return exact_stop_for_one_block.start(ctx, target)
+
+
+_subprogram_layout = _SubprogramLayout()
+_exact_stop_for_one_block = _ExactStopForOneBlock()
 
 
 class Linuxcnc(Dialect):

@@ -16,18 +16,12 @@ for the refusal.
 
 from __future__ import annotations
 
-from typing import Iterator
-
-from postproc.context import Context
-from postproc.dialect import Dialect
-from postproc.ir import Block
 from postproc.lowering import exact_stop
 
 REFUSAL = ("a one-shot exact stop in a program whose path mode changes inside its control flow: LinuxCNC has no "
            "one-shot stop, and the mode to take back to after the block depends on the way the run takes")
 
 
-def exact_stop_for_one_block(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
-    """Lowering step: each one-shot exact stop as exact-stop mode for its block, then the mode before (the module
-    docstring)."""
-    return exact_stop.exact_stop_for_one_block(blocks, ctx, REFUSAL)
+exact_stop_for_one_block = exact_stop.ExactStopForOneBlock(REFUSAL)
+"""Lowering step: each one-shot exact stop as exact-stop mode for its block, then the mode before (the module
+docstring)."""

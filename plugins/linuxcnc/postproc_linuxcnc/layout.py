@@ -14,11 +14,6 @@ LinuxCNC's words for the refusal.
 
 from __future__ import annotations
 
-from typing import Iterator
-
-from postproc.context import Context
-from postproc.dialect import Dialect
-from postproc.ir import Block
 from postproc.rs274 import subprogram_layout
 
 
@@ -27,8 +22,6 @@ def _refusal(name: str, callee: str, left: int) -> str:
             f"finds an O-number only after the M98 that calls it, so no order of them finds every call")
 
 
-def subprograms_after_callers(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
-    """Lowering step for LinuxCNC (see the module docstring), which also writes the return level a cycle
-    needs as the text comes (``postproc.rs274.return_level``: one loop for both); a LinuxCNC source is
-    written as it is."""
-    return subprogram_layout.subprograms_after_callers(blocks, ctx, target, _refusal)
+subprograms_after_callers = subprogram_layout.SubprogramsAfterCallers(_refusal)
+"""Lowering step for LinuxCNC (see the module docstring), which also writes the return level a cycle needs as
+the text comes (``postproc.rs274.return_level``: one loop for both); a LinuxCNC source is written as it is."""
