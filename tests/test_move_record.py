@@ -1,4 +1,4 @@
-"""The straight move record (``postproc.simulate.move_record``) held to the dictionary events it stands for: its
+"""The move record (``postproc.simulate.move_record``) held to the dictionary events it stands for: its
 event as the toolpath format spells it (a hand-written line), its JSON line as json writes its event (any
 record), verify's normalising and comparison of records as of their events (random paths), and a simulation's
 stream of records as the dictionaries the same simulation makes without them (example and CAM programs)."""
@@ -42,6 +42,12 @@ def test_a_record_is_the_event_the_format_defines() -> None:
                                            '"controlled": {"x": 1, "y": 2.5, "z": 117}}')
     rapid = MoveRecord(3, "rapid", ("x", "z"), [0.000125, -12], None, None, None)
     assert event_text(rapid, ENCODER) == '{"line": 3, "move": "rapid", "x": 0.000125, "z": -12}'
+    arc = MoveRecord(4, "cw", ("x", "y", "z"), [10, 0, -2.5], 800, None, [10, 0, 97.5], ("cx", "cy", "cz"),
+                     [5, 0, -2.5], "XY", [5, 0, 97.5])
+    assert list(arc.event()) == ["line", "move", "x", "y", "z", "cx", "cy", "cz", "plane", "f", "controlled"]
+    assert event_text(arc, ENCODER) == ('{"line": 4, "move": "cw", "x": 10, "y": 0, "z": -2.5, "cx": 5, "cy": 0, '
+                                        '"cz": -2.5, "plane": "XY", "f": 800, "controlled": {"x": 10, "y": 0, '
+                                        '"z": 97.5, "cx": 5, "cy": 0, "cz": 97.5}}')
     tap = MoveRecord(9, "tap", ("x", "y", "z"), [0, 0, -10.5], 1.25, "per_rev", None)
     assert list(tap.event()) == ["line", "move", "x", "y", "z", "f", "feed_mode"]
     assert event_text(tap, ENCODER) == ('{"line": 9, "move": "tap", "x": 0, "y": 0, "z": -10.5, "f": 1.25, '
@@ -58,9 +64,15 @@ def _records(draw: Any) -> MoveRecord:
     keys = draw(KEYS)
     point = [draw(NUMBERS) for _ in keys]
     controlled = [draw(NUMBERS) for _ in keys] if draw(st.booleans()) else None
-    kind = draw(st.sampled_from(["rapid", "feed", "tap"]))
+    kind = draw(st.sampled_from(["rapid", "feed", "tap", "cw", "ccw"]))
     f = None if kind == "rapid" else draw(NUMBERS)
     mode = None if kind == "rapid" else draw(st.sampled_from([None, "per_rev", "inverse_time", "per_min"]))
+    if kind in ("cw", "ccw"):  # an arc: its centre keys are the machine's X, Y, Z, its centre beside its point
+        centre_keys = tuple("c" + k for k in keys if k in "xyz")
+        centre = [draw(NUMBERS) for _ in centre_keys]
+        ccentre = None if controlled is None else [draw(NUMBERS) for _ in centre_keys]
+        return MoveRecord(draw(st.integers(1, 10**7)), kind, keys, point, f, mode, controlled, centre_keys, centre,
+                          draw(st.sampled_from(["XY", "ZX", "YZ"])), ccentre)
     return MoveRecord(draw(st.integers(1, 10**7)), kind, keys, point, f, mode, controlled)
 
 

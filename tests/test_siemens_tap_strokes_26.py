@@ -22,7 +22,7 @@ from typing import Any
 import pytest
 
 from postproc.errors import ErrorList
-from postproc.simulate.simulator import prepared_taps
+from postproc.simulate.stream import prepared_taps
 from tests.support.tap_strokes import events, moves, to, verified
 from tests.test_rigid_tapping import _fanuc_rigid_program, _linuxcnc_taps, needs_rs274, oracle, same_moves
 

@@ -13,7 +13,7 @@ oriented stop or a tap stroke came last, and no spindle code (M3, M4, M5) or too
 
 The angle a tap starts at does not change the thread it cuts in a hole not yet threaded, so the
 simulation takes an oriented stop right before a tap as the tap's own preparation, as Fanuc's ``M29`` is
-(``postproc.simulate.simulator.prepared_taps``).
+(``postproc.simulate.stream.prepared_taps``).
 """
 
 from __future__ import annotations

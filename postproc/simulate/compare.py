@@ -210,7 +210,7 @@ def per_minute_from_first(events: Iterator[Event | MoveRecord], start: dict[str,
             next(rest)  # the header, already given
             yield from rest
             return
-        if isinstance(ev, MoveRecord) or "move" in ev:  # (a record is a straight move: ``postproc.simulate.move_record``)
+        if isinstance(ev, MoveRecord) or "move" in ev:  # (a record is a move: ``postproc.simulate.move_record``)
             last = ev
         yield ev
 

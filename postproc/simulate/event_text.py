@@ -87,20 +87,25 @@ def _float_parts(value: float, parts: list[str]) -> None:
                 parts.append(_NEGATIVE[whole] if units < 0 else _WHOLE[whole])
             else:
                 parts.append(str(-whole) if units < 0 else str(whole))
-            if fraction == 0:
-                parts.append(".0")  # an integral float below 1e16: repr writes its digits and ".0"
-                return
-            high = fraction // _TABLED
-            low = fraction - high * _TABLED
-            if low == 0:
-                parts.append(_ONLY[high])
-            else:
-                parts.append(_FIRST[high])
-                parts.append(_REST[low])
+            _fraction_parts(fraction, parts)
             return
     if value - value != 0.0:  # inf - inf and nan - nan are nan
         raise ValueError(f"Out of range float values are not JSON compliant: {value!r}")
     parts.append(float.__repr__(value))
+
+
+def _fraction_parts(fraction: int, parts: list[str]) -> None:
+    """Append the point and the decimals of ``fraction`` millionths (``_float_parts``' number after its whole part)."""
+    if fraction == 0:
+        parts.append(".0")  # an integral float below 1e16: repr writes its digits and ".0"
+        return
+    high = fraction // _TABLED
+    low = fraction - high * _TABLED
+    if low == 0:
+        parts.append(_ONLY[high])
+    else:
+        parts.append(_FIRST[high])
+        parts.append(_REST[low])
 
 
 def _key_text(key: str, later: bool) -> str:
@@ -191,6 +196,7 @@ _KEYS_LINE: Final = '{"line": '
 _KEY_MOVE: Final = ', "move": '
 _KEY_F: Final = ', "f": '
 _KEY_FEED_MODE: Final = ', "feed_mode": '
+_KEY_PLANE: Final = ', "plane": '
 _KEY_CONTROLLED: Final = ', "controlled": '
 
 
@@ -200,15 +206,39 @@ class _KeyTexts:
 
     def __init__(self) -> None:
         self.keys: tuple[str, ...] = ()
-        self.later: list[str] = []
-        """Each key after another item (``', "x": '``)."""
-        self.first: list[str] = []
+        self.later: list[_KeyedNumbers] = []
+        """Each key after another item (``', "x": '``), with the numbers after it."""
+        self.first: list[_KeyedNumbers] = []
         """Each key as the controlled point's (``'{"x": '`` for the first, as ``later`` for the others)."""
 
     def update(self, keys: tuple[str, ...]) -> None:
         self.keys = keys
-        self.later = [_key_text(key, True) for key in keys]
-        self.first = [_key_text(key, i > 0) for i, key in enumerate(keys)]
+        self.later = [_KeyedNumbers(_key_text(key, True)) for key in keys]
+        self.first = [_KeyedNumbers(_key_text(key, i > 0)) for i, key in enumerate(keys)]
+
+
+@mypyc_attr(allow_interpreted_subclasses=True)
+class _KeyedNumbers:
+    """A record's key text joined with the whole part of the number that follows it (``', "x": 12'``), made the first
+    time that whole part follows the key: one piece where there were two (compiled, each piece of a line costs an
+    append and its share of the join, ~110 instructions; a move writes six numbers under a tool length)."""
+
+    def __init__(self, text: str) -> None:
+        self.text = text
+        """The key's text (``', "x": '``)."""
+        self.wholes: list[str | None] = [None] * _TABLED
+        """Whole part (below ``_TABLED``) -> the key's text with it, where made."""
+        self.negatives: list[str | None] = [None] * _TABLED
+        """The same for a negative number's whole part (``', "x": -0'``)."""
+
+    def whole(self, whole: int, negative: bool) -> str:
+        """The key's text with the whole part ``whole`` (below ``_TABLED``), its sign before it where ``negative``."""
+        table = self.negatives if negative else self.wholes
+        piece = table[whole]
+        if piece is None:
+            piece = self.text + (_NEGATIVE[whole] if negative else _WHOLE[whole])
+            table[whole] = piece
+        return piece
 
 
 _RECORD_KEYS: Final = _KeyTexts()
@@ -219,6 +249,31 @@ def _number_parts(value: float | int, parts: list[str]) -> None:
     if isinstance(value, float):
         _float_parts(value, parts)
     else:
+        parts.append(str(value))
+
+
+def _keyed_number_parts(value: float | int, keyed: _KeyedNumbers, parts: list[str]) -> None:
+    """A record's key and its number as json writes them (``keyed.text``, then ``_number_parts``), the key and the
+    number's whole part in one piece where it is tabled (``_KeyedNumbers``)."""
+    if isinstance(value, float):
+        if _SMALLEST <= value < _LARGEST or -_LARGEST < value <= -_SMALLEST:  # (as ``_float_parts``)
+            units = int(value * _SCALE + (0.5 if value > 0.0 else -0.5))
+            if units / _SCALE == value:
+                magnitude = -units if units < 0 else units
+                whole = magnitude // _UNITS
+                if whole < _TABLED:
+                    parts.append(keyed.whole(whole, units < 0))
+                    _fraction_parts(magnitude - whole * _UNITS, parts)
+                    return
+        parts.append(keyed.text)
+        _float_parts(value, parts)
+        return
+    if 0 <= value < _TABLED:
+        parts.append(keyed.whole(value, False))
+    elif -_TABLED < value < 0:
+        parts.append(keyed.whole(-value, True))
+    else:
+        parts.append(keyed.text)
         parts.append(str(value))
 
 
@@ -239,8 +294,16 @@ def _record_parts(record: MoveRecord, parts: list[str]) -> None:
     later = texts.later
     point = record.point
     for i in range(len(keys)):
-        parts.append(later[i])
-        _number_parts(point[i], parts)
+        _keyed_number_parts(point[i], later[i], parts)
+    centre = record.centre
+    if centre is not None:  # an arc: its centre and plane
+        centre_keys = record.centre_keys
+        for i in range(len(centre_keys)):
+            parts.append(_key_text(centre_keys[i], True))
+            _number_parts(centre[i], parts)
+        parts.append(_KEY_PLANE)
+        plane = record.plane
+        parts.append("null" if plane is None else _word_text(plane))
     f = record.f
     if f is not None:
         parts.append(_KEY_F)
@@ -252,13 +315,18 @@ def _record_parts(record: MoveRecord, parts: list[str]) -> None:
     controlled = record.controlled
     if controlled is not None:
         parts.append(_KEY_CONTROLLED)
-        if not keys:
+        ccentre = record.ccentre
+        if not keys and (ccentre is None or not record.centre_keys):
             parts.append("{}")
             return
         first = texts.first
         for i in range(len(keys)):
-            parts.append(first[i])
-            _number_parts(controlled[i], parts)
+            _keyed_number_parts(controlled[i], first[i], parts)
+        if ccentre is not None:
+            centre_keys = record.centre_keys
+            for i in range(len(centre_keys)):
+                parts.append(_key_text(centre_keys[i], i > 0 or len(keys) > 0))
+                _number_parts(ccentre[i], parts)
         parts.append("}")
 
 

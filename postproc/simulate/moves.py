@@ -55,12 +55,17 @@ class Moves:
         self.keys = tuple((a, a.lower()) for a in self.axes)
         self.key_names = tuple(a.lower() for a in self.axes)
         """The events' axis keys in the order of ``axes`` (one tuple a run, held by every ``MoveRecord``)."""
+        self.centre_axes = tuple(a for a in ("X", "Y", "Z") if a in self.axes)
+        self.centre_keys = tuple(CENTRE_KEYS[a] for a in self.centre_axes)
+        """An arc's centre keys (and their machine axes), held by every arc's ``MoveRecord``."""
         self.records = False
         """A straight move is emitted as its ``MoveRecord`` (``toolpath_stream``'s readers take them), else as the
         record's dictionary (``MoveRecord.event``)."""
         self.pos = start_position(setup)
         self.index = {a: i for i, a in enumerate(self.axes)}
         """Machine axis -> its place in ``axes`` (and in the rounded points)."""
+        self.length_index = self.index.get(LENGTH_AXIS, -1)
+        """The place of the tool length's axis in ``axes`` (-1: the machine has none)."""
         self.rounded: list[float | int] = [num(self.pos[a]) for a in self.axes]
         """The programmed point as the events write it (``num``), in the order of ``axes``: a list, where a
         dictionary cost each move under a tool length ~1.5k instructions in look-ups and writes (compiled). Never
@@ -196,12 +201,12 @@ class Moves:
         out = dict(pos)
         incremental = self.incremental and not absolute
         shift = self.shift if not machine and not incremental and self.shift else None  # (tested once, not a word)
-        increments = self.increments  # empty on a mill: one test of an empty dict per word
+        increments = self.increments if self.increments else None  # empty on a mill: tested once, not a word
         factors = self.factors
         for axis, value in axes.items():
             if not isinstance(value, float) and isinstance(value, Expr):  # a float first: one type test a word
                 raise ProgramError(UNEVALUATED, self._at(block, axis))
-            real = increments.get(axis) if increments else None
+            real = increments.get(axis) if increments is not None else None
             if real is not None:
                 if real not in pos:
                     raise ProgramError(f"axis {real} is not on this machine (axes {''.join(self.axes)})",
@@ -606,20 +611,20 @@ class Moves:
                 self._compensated(m.mode or "cw", target, block.line, c, plane)
             return
         rounded = [num(target[a]) for a in self.axes]
-        ev: Event = {"line": block.line, "move": m.mode}
-        for i, (axis, key) in enumerate(self.keys):
-            ev[key] = rounded[i]
         centre = {a1: c[0], a2: c[1], normal: pos.get(normal, 0.0)}
-        for axis in ("X", "Y", "Z"):
-            if axis in pos:
-                ev[CENTRE_KEYS[axis]] = num(centre[axis])
-        if self.diameter and "x" in ev:
-            ev["x"] = num(target["X"] * 2.0)
-            ev[CENTRE_KEYS["X"]] = num(centre["X"] * 2.0)
-        ev["plane"] = plane
-        self._feed_into(ev)
+        point = rounded
+        written: list[float | int] = []
+        for axis in self.centre_axes:
+            written.append(num(centre[axis] * 2.0) if self.diameter and axis == "X" else num(centre[axis]))
+        if self.diameter and "X" in self.index:  # written as a diameter, kept as a radius
+            point = list(rounded)
+            point[self.index["X"]] = num(target["X"] * 2.0)
+        f = self._feed_value()
+        mode = self._stated_mode()
         self.pos, self.rounded = target, rounded
-        emit(ev)
+        record = MoveRecord(block.line, m.mode or "cw", self.key_names, point, f, mode, None, self.centre_keys,
+                            written, plane)
+        emit(record if self.records else record.event())
 
     # -- compensation -------------------------------------------------------------------------------
     def _compensated(self, kind: str, target: dict[str, float], line: int, centre: tuple[float, float] | None,
@@ -683,27 +688,30 @@ class Moves:
         pos, rounded, before = self.pos, self.rounded, self.crounded
         offset = self.length.offset
         shifts = self.lathe_shift
-        point: list[float | int] = []
-        crounded: list[float | int] = []
+        length_at = self.length_index
+        axes = self.axes
+        point = list(rounded)  # (copies, each place then set: compiled, cheaper than appending to empty lists)
+        crounded = list(rounded)
         moved = apart = False
         f: float | int | None = None
         mode: str | None = None
-        for i, axis in enumerate(self.axes):
+        for i in range(len(axes)):
+            axis = axes[i]
             value = target[axis]
             r: Any
             if value == pos[axis]:
                 r = rounded[i]
             else:
                 r = num(value)
+                point[i] = r
             c: Any = r
-            if axis == LENGTH_AXIS:
+            if i == length_at:
                 c = num(value + offset)
             if shifts:
                 shift = shifts.get(axis)
                 if shift is not None:
-                    c = num(value + shift + (offset if axis == LENGTH_AXIS else 0.0))
-            point.append(r)
-            crounded.append(c)
+                    c = num(value + shift + (offset if i == length_at else 0.0))
+            crounded[i] = c
             if not moved:  # (identity first: an axis that stays keeps its number's object; never a nan)
                 b = before[i]
                 if c is not b and c != b:
@@ -732,9 +740,8 @@ class Moves:
         centre = {a1: c[0], a2: c[1], normal: pos.get(normal, 0.0)}
         rounded: list[float | int] = []
         crounded: list[float | int] = []
-        ev: Event = {"line": line, "move": kind}
-        ctrl: Event = {}
-        for axis, key in self.keys:
+        apart = False
+        for axis in self.axes:
             value = target[axis]
             r = num(value)
             controlled = value
@@ -744,26 +751,31 @@ class Moves:
             if shift is not None:
                 controlled += shift
             rounded.append(r)
-            ev[key] = r
             cr = num(controlled)
             crounded.append(cr)
-            ctrl[key] = cr
-        for axis in ("X", "Y", "Z"):
-            if axis in pos:
-                at = centre[axis]
-                ev[CENTRE_KEYS[axis]] = num(at)
-                if offset and axis == LENGTH_AXIS:
-                    at += offset
-                shift = shifts.get(axis) if shifts else None
-                if shift is not None:
-                    at += shift
-                ctrl[CENTRE_KEYS[axis]] = num(at)
-        ev["plane"] = plane
-        self._feed_into(ev)
-        if any(ev[key] != value for key, value in ctrl.items()):
-            ev["controlled"] = ctrl
+            if cr != r:
+                apart = True
+        written: list[float | int] = []
+        cwritten: list[float | int] = []
+        for axis in self.centre_axes:
+            at = centre[axis]
+            r = num(at)
+            written.append(r)
+            if offset and axis == LENGTH_AXIS:
+                at += offset
+            shift = shifts.get(axis) if shifts else None
+            if shift is not None:
+                at += shift
+            cr = num(at)
+            cwritten.append(cr)
+            if cr != r:
+                apart = True
+        f = self._feed_value()
+        mode = self._stated_mode()
         self.pos, self.rounded, self.crounded = target, rounded, crounded
-        self.out(ev)
+        record = MoveRecord(line, kind, self.key_names, rounded, f, mode, crounded if apart else None,
+                            self.centre_keys, written, plane, cwritten if apart else None)
+        self.out(record if self.records else record.event())
         self._settle()
 
     def _cutter_idle(self) -> bool:

@@ -61,20 +61,30 @@ def _axes(ev: Event, controlled: Event | None, start: dict[str, float] | None = 
     return end
 
 
-def _record_end(record: MoveRecord, start: dict[str, float], steps: list[float]) -> dict[str, float]:
+def _record_end(record: MoveRecord, start: dict[str, float], steps: list[float], all_axes: bool) -> dict[str, float]:
     """``_axes`` of a record's event (its controlled point where it has one), read by field: its keys are the
-    machine's axes, each in both points; ``steps`` receives ``end - start`` axis by axis."""
+    machine's axes, each in both points; ``steps`` receives ``end - start`` axis by axis. ``all_axes``: every key
+    is an axis key (``_all_axes`` of the record's keys, one tuple a simulation: tested once, not a key a move)."""
     end: dict[str, float] = {}
     keys = record.keys
     controlled = record.controlled
     values = record.point if controlled is None else controlled
     for i in range(len(keys)):
         k = keys[i]
-        if _is_axis(k):
-            x = _real(values[i])
+        if all_axes or _is_axis(k):
+            v = values[i]
+            x = v if isinstance(v, float) else _real(v)
             end[k] = x
             steps.append(x - start.get(k, 0.0))
     return end
+
+
+def _all_axes(keys: tuple[str, ...]) -> bool:
+    """Every key of a record's keys is an axis key."""
+    for k in keys:
+        if not _is_axis(k):
+            return False
+    return True
 
 
 def _real(v: Any) -> float:
@@ -341,15 +351,20 @@ def normalise(events: Iterable[Event | MoveRecord], start: dict[str, float], eps
     are listed, not compared (``compare_machine_codes``)."""
     pos = {k.lower(): v for k, v in start.items()}
     run: Move | None = None
+    seen_keys: tuple[str, ...] | None = None  # the records' keys met last (one tuple a simulation) and whether
+    all_axes = False                           # they are all axis keys
     for item in events:
         steps: list[float] = []
-        if isinstance(item, MoveRecord):  # a straight move, read by field
+        if isinstance(item, MoveRecord) and item.centre is None:  # a straight move, read by field
             kind = item.kind
-            end = _record_end(item, pos, steps)
+            keys = item.keys
+            if keys is not seen_keys:
+                seen_keys, all_axes = keys, _all_axes(keys)
+            end = _record_end(item, pos, steps, all_axes)
             raw_f: Any = item.f
             line = item.line
         else:
-            ev = item
+            ev = item.event() if isinstance(item, MoveRecord) else item  # (an arc's record: read as its event)
             if "toolpath" in ev:
                 continue
             if codes is not None and "code" in ev:

@@ -54,7 +54,8 @@ from ..lowering.deferred import resolve_dynamic_cutter_compensation
 from ..lowering.length_timing import time_length_changes
 from .events import MOVES_THE_TOOL, UNSIMULATED, Event, header, num, start_position
 from .move_record import MoveRecord
-from .simulator import Simulator, simulate
+from .simulator import Simulator
+from .stream import simulate
 from .travel import TravelError
 
 __all__ = ["MOVES_THE_TOOL", "UNSIMULATED", "Event", "Simulator", "ToolpathTarget", "TRANSLATE_ONLY", "check_travel",
