@@ -20,9 +20,10 @@ of line, so line numbers stay right and reading goes on to report every bad line
 
 from __future__ import annotations
 
+import io
 from functools import partial
 from itertools import chain, islice
-from typing import Callable, Final, Iterable, Iterator
+from typing import Callable, Final, Generator, Iterable, Iterator, TextIO
 
 from .context import Context
 from .errors import Location, ParseError, character_name
@@ -43,6 +44,9 @@ _NUMBER_CHARS = bytes(1 if chr(i) in "0123456789." else 0 for i in range(256))
 """``bytes.translate`` table: digits and the point to 1, everything else to 0."""
 _LONG_RUN = b"\x01" * (MAX_DIGITS + 1)
 """A candidate for a too-long number (``line_problem`` then counts its digits)."""
+_CHECKED_CHARS = bytes(1 if chr(i) in "0123456789." else 2 if chr(i) in "\v\f\x1c\x1d\x1e" else 0 for i in range(256))
+"""``_NUMBER_CHARS``, and the ASCII characters ``str.splitlines`` ends a line at that a text stream does not, to 2."""
+_SEPARATOR = b"\x02"
 
 
 def pieces(lines: Iterable[str], limit: int) -> Iterable[str]:
@@ -70,12 +74,116 @@ def checked_lines(lines: Iterable[str], ctx: Context, blanks: str = "") -> Itera
     line; only a chunk that fails them is checked line by line. (A regex search per line cost 5 % of a
     copy-through translation.)"""
     limit = ctx.setup.limits.line_length
+    if getattr(lines, "read", None) is not None and getattr(lines, "readline", None) is not None:
+        return chain.from_iterable(_read_chunks(lines, ctx, limit, blanks))  # type: ignore[arg-type]
     read = pieces(lines, limit)
     return chain.from_iterable(_checked_chunks(iter(read), ctx, limit, blanks, read is not lines))
 
 
+class _Resumed:
+    """What is left of a stream after ``_read_chunks`` read ``held`` (the start of a line, with no end of line
+    in it but maybe a CR last) past its last whole line, read as ``readline(size)`` reads it: the pieces
+    ``pieces`` takes (``_checked_chunks`` goes on with them)."""
+
+    def __init__(self, held: str, stream: TextIO) -> None:
+        self.held = held
+        self.stream = stream
+
+    def readline(self, size: int) -> str:
+        held = self.held
+        if not held:
+            return self.stream.readline(size)
+        if len(held) >= size:
+            self.held = held[size:]
+            return held[:size]
+        self.held = ""
+        if held[-1] == "\r":  # the line ends, with a CR LF if an LF follows and the size leaves room for it
+            after = self.stream.read(1)
+            if after == "\n":
+                return held + after
+            self.held = after
+            return held
+        return held + self.stream.readline(size - len(held))
+
+
+def _read_chunks(stream: TextIO, ctx: Context, limit: int, blanks: str) -> Iterator[list[str]]:
+    """``_checked_chunks`` of a text stream, read in pieces of many lines (``read``) and split here: the same
+    lines and errors, without a ``readline`` call a line (~1,000 instructions a CAM line: callgrind).
+
+    Where the stream splits lines as ``str.splitlines`` does on the ASCII text without its other separators
+    (universal newlines: CR, LF, CR LF, which its ``newlines`` shows once a line end was read; not a stream
+    opened with ``newline="\\n"``, nor a ``readline``-only one), its first line is read by ``readline`` and
+    the rest ``fast`` characters at a time: every line after a chunk's first then fits the fast check, and
+    the first (the line a read cut, joined) is measured. A line not ended within ``fast`` characters
+    (longer than the limit, or than ``PIECE``) goes back to ``_checked_chunks`` with the rest of the stream
+    (``_Resumed``), as does a stream that splits lines another way."""
+    piece = piece_size(limit)
+    fast = min(limit, piece - 1)
+    first = stream.readline(piece)
+    if not first:
+        return
+    if first[-1] not in "\r\n" or getattr(stream, "newlines", None) is None:
+        yield from _checked_chunks(chain((first,), iter(partial(stream.readline, piece), "")), ctx, limit, blanks,
+                                   True)
+        return
+    read = stream.read
+    number = 0
+    held = first  # read, and not passed on yet
+    while True:
+        data = read(fast)
+        text = held + data if held else data
+        if data:
+            end = max(text.rfind("\n"), text.rfind("\r")) + 1
+            if end == len(text) and text[-1] == "\r":  # maybe the CR of a CR LF: kept for the next read
+                end = max(text.rfind("\n", 0, end - 1), text.rfind("\r", 0, end - 1)) + 1
+            whole, held = text[:end], text[end:]
+            if len(held) > fast:  # a line this long is read in pieces, and maybe never whole
+                if whole:  # (never: only a line begun in an earlier read can be this long)
+                    number = yield from _checked_text(whole, ctx, limit, blanks, number, fast)
+                yield from _checked_chunks(iter(partial(_Resumed(held, stream).readline, piece), ""), ctx, limit,
+                                           blanks, True, number)
+                return
+            if not whole:
+                continue
+        elif not text:
+            return
+        else:
+            whole, held = text, ""  # the last line, without an end of line
+        number = yield from _checked_text(whole, ctx, limit, blanks, number, fast)
+
+
+def _checked_text(text: str, ctx: Context, limit: int, blanks: str, number: int,
+                  fast: int) -> Generator[list[str], None, int]:
+    """Yield the whole lines ``text`` holds (lines ``number + 1`` on), checked as ``_checked_chunks`` checks
+    them, as one chunk; returns the number of the last. Every line but the first is at most ``fast`` long."""
+    if text.isascii():
+        coded = text.encode("ascii").translate(_CHECKED_CHARS)
+        if _SEPARATOR not in coded:  # ``splitlines`` splits where the stream does
+            lines = text.splitlines(True)
+            if len(lines[0]) <= fast and _LONG_RUN not in coded:
+                yield lines
+                return number + len(lines)
+        else:
+            lines = io.StringIO(text, newline="").readlines()
+    else:
+        lines = io.StringIO(text, newline="").readlines()
+    checked: list[str] = []
+    for line in lines:
+        number += 1
+        bom = number == 1 and line[:1] == BOM
+        problem = line_problem(line[1:] if bom else line, limit, blanks)
+        if problem is None:
+            checked.append(line)
+        else:
+            message, column = problem
+            ctx.diagnostics.error(ParseError(message, Location(ctx.file, number, column + bom)))
+            checked.append(line[len(line.rstrip("\r\n")):])
+    yield checked
+    return number
+
+
 def _checked_chunks(lines: Iterator[str], ctx: Context, limit: int, blanks: str,
-                    streamed: bool) -> Iterator[list[str]]:
+                    streamed: bool, number: int = 0) -> Iterator[list[str]]:
     piece = piece_size(limit)  # a piece this long that does not end its line was cut by ``pieces``
     fast = min(limit, piece - 1)
     # A piece ``pieces`` read holds at most one LF, at its end; where pieces are shorter than the limit
@@ -83,7 +191,6 @@ def _checked_chunks(lines: Iterator[str], ctx: Context, limit: int, blanks: str,
     # pieces holds no cut piece and no long line, which one count finds (``max(map(len, ...))`` cost
     # ~180 instructions a line: callgrind).
     whole_lines_fit = streamed and piece < limit
-    number = 0
     pending: list[str] = []
     while True:
         chunk = pending + list(islice(lines, CHUNK - len(pending)))
@@ -102,11 +209,11 @@ def _checked_chunks(lines: Iterator[str], ctx: Context, limit: int, blanks: str,
             number += 1
             cut = len(line) == piece and not line.endswith("\n")
             if cut:
+                bom = number == 1 and line[:1] == BOM  # not counted in the line's length
                 whole, length, eol, pending, ended = _whole_line(
-                    line, lambda: next(rest, None) or next(lines, None), piece, limit)
+                    line, lambda: next(rest, None) or next(lines, None), piece, limit + bom)
                 pending.extend(rest)
                 if whole is None:
-                    bom = number == 1 and line[:1] == BOM
                     _too_long(ctx, Location(ctx.file, number, limit + 1 + bom), length - bom, limit, ended)
                     yield [eol]
                     if not ended:

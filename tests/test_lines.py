@@ -213,3 +213,75 @@ def test_a_plus_sign_keeps_the_program_as_written_and_writes_the_code_elsewhere(
     out = io.StringIO()
     translate(io.StringIO(PLUS), out, file="p.nc", source="linuxcnc", target=dialect)
     assert ("G+1 X1" in out.getvalue()) == (dialect == "linuxcnc")
+
+
+class _ReadlineOnly(io.TextIOBase):
+    """A stream read only by ``readline`` (the pieces ``postproc.lines.pieces`` takes, line by line)."""
+
+    def __init__(self, stream: io.StringIO) -> None:
+        self.stream = stream
+
+    def readline(self, size: int = -1) -> str:  # type: ignore[override]
+        return self.stream.readline(size)
+
+
+ODD_TEXT = st.lists(st.tuples(st.text(alphabet="GX1. 0123456789(é\v\f\x1c\x1d\x1e\x85\u2028;", max_size=60),
+                              st.sampled_from(["\n", "\r\n", "\r", "\r\r\n", "\n\r"])), max_size=12).map(
+    lambda lines: "".join(text + end for text, end in lines))
+
+
+@given(text=ODD_TEXT, tail=st.text(alphabet="GX1. \r\u2028", max_size=30), limit=st.integers(1, 40),
+       piece=st.sampled_from([4, 7, 16, 4096]), bom=st.booleans(), newline=st.sampled_from(["", None]))
+@settings(max_examples=500, deadline=None)
+def test_a_stream_read_many_lines_at_once_gives_the_lines_and_errors_read_line_by_line(text, tail, limit, piece,
+                                                                                        bom, newline):
+    # ``checked_lines`` reads a stream that splits lines at CR, LF and CR LF in pieces of many lines and splits
+    # them itself (``_read_chunks``): the lines and errors are those of the same stream read a line at a
+    # time, whatever the line ends, line lengths, other separators ``str.splitlines`` knows, non-ASCII
+    # characters and long numbers, with a read ending anywhere (pieces of 4 or 7 characters)
+    import postproc.lines
+    from postproc.context import Context
+    from postproc.errors import Diagnostics, ErrorLevel
+    program = ("\ufeff" if bom else "") + text + tail
+    got = []
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(postproc.lines, "PIECE", piece)
+        for source in (io.StringIO(program, newline=newline), _ReadlineOnly(io.StringIO(program, newline=newline)),
+                       list(io.StringIO(program, newline=newline))):
+            ctx = Context("p.nc", MachineSetup(limits=Limits(line_length=limit)), Diagnostics(ErrorLevel.WARN,
+                          warn_stream=io.StringIO()), "fanuc")
+            lines = list(postproc.lines.checked_lines(source, ctx))
+            got.append((lines, [str(w) for w in ctx.diagnostics.warnings]))
+    assert got[0] == got[1] == got[2]
+
+
+def test_a_stream_that_splits_only_at_lf_is_read_line_by_line() -> None:
+    # a stream opened with newline="\n" keeps a lone CR inside its line: read as it splits
+    import postproc.lines
+    from postproc.context import Context
+    from postproc.errors import Diagnostics
+    ctx = Context("p.nc", MachineSetup(), Diagnostics(), "fanuc")
+    assert list(postproc.lines.checked_lines(io.StringIO("G0 X1.\rG1 X2.\nM30\n"), ctx)) == ["G0 X1.\rG1 X2.\n",
+                                                                                             "M30\n"]
+    ctx = Context("p.nc", MachineSetup(), Diagnostics(), "fanuc")
+    assert list(postproc.lines.checked_lines(io.StringIO("G0 X1.\rG1 X2.\nM30\n", newline=""), ctx)) == [
+        "G0 X1.\r", "G1 X2.\n", "M30\n"]
+
+
+@pytest.mark.parametrize("wrap", [list, _ReadlineOnly, lambda s: s])
+def test_a_byte_order_mark_does_not_count_in_the_line_length(wrap) -> None:
+    # a line of 4 characters after the mark is within a limit of 4 whichever way it is read (it was refused
+    # as "4 characters long, more than the limit of 4" where its piece was as long as a cut one)
+    import postproc.lines
+    from postproc.context import Context
+    from postproc.errors import Diagnostics, ErrorLevel
+    for program in ("\ufeffG1X.\rG1\n", "\ufeffG1X.\r\nG1\n", "\ufeffG1X1.\rG1\n"):
+        ctx = Context("p.nc", MachineSetup(limits=Limits(line_length=4)), Diagnostics(ErrorLevel.WARN,
+                      warn_stream=io.StringIO()), "fanuc")
+        lines = list(postproc.lines.checked_lines(wrap(io.StringIO(program, newline="")), ctx))
+        errors = [str(w) for w in ctx.diagnostics.warnings]
+        if "X1." in program:  # 5 characters: too long, counted without the mark
+            assert errors == ["p.nc:1:6: warning: the line is 5 characters long, more than the limit of 4 (the "
+                              "set-up's <Limits lineLength>)"] and lines == ["\r", "G1\n"]
+        else:
+            assert errors == [] and lines == io.StringIO(program, newline="").readlines()

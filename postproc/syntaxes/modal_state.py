@@ -14,7 +14,7 @@ from __future__ import annotations
 from mypy_extensions import mypyc_attr
 
 from math import hypot
-from typing import Final, NoReturn
+from typing import Final, NoReturn, cast
 
 from postproc.block_rules import ZERO_FEED, ArcError, arc_centre, check_values, needs_feed, per_rev_problem
 from postproc.control import ASSIGN, CONTROL
@@ -93,14 +93,18 @@ class ModalStateSyntax(Syntax):
             state.extra[LEFT_START] = True
             return
         incremental = state.distance == "incremental"
-        for axis, value in motion.axes.items():
+        # As objects: compiled, a float narrowed from the union would be unboxed and boxed again (a new float
+        # an axis word) to be stored.
+        words_read = cast("dict[str, object]", motion.axes)
+        store = cast("dict[str, object]", pos)
+        for axis, value in words_read.items():
             if type(value) is not float and isinstance(value, Expr):  # (a float first: it is cheaper)
-                pos[axis] = None  # computed: known only when the program runs
+                store[axis] = None  # computed: known only when the program runs
             elif incremental:
                 old = pos.get(axis)
-                pos[axis] = None if old is None else old + value
+                pos[axis] = None if old is None else old + cast(float, value)
             else:
-                pos[axis] = value
+                store[axis] = value
 
 
 _FEED_MOTION: Final = frozenset(("linear", "cw", "ccw", "thread"))
