@@ -219,8 +219,8 @@ class NgcLatheWriting(_OnWordWriter):
         if self.lathe.written != 1.0 and block.text is None:
             for key, section in sections.items():
                 if key == "CompoundMotion" or key != "Motion" and "X" in (getattr(section, "axes", None) or ()):
-                    self.unsupported(f"{key} while the program writes X in the mode other than the set-up's "
-                                     "(G7/G8): only a move's X is converted", block)
+                    self.unsupported(f"{key} while the program writes X in the mode other than the set-up's: "
+                                     "only a move's X is converted", block)
         return self.lathe.opening(block, super().write_block(block))
 
     def normalized(self, block: Block) -> str:
