@@ -295,3 +295,23 @@ def test_rs274_reads_the_position_as_a_radius_in_both_modes() -> None:
                       tool_table="T1 P1 X0 Z0 D0\n")
     said = " ".join(line for line in calls if "MESSAGE" in line)
     assert "a=15.000000" in said and "b=20.000000" in said
+
+
+LOOP = ("G18 G7 G21 F100\nG0 X40 Z0\n#1=0\no1 while [#1 lt 2]\nG8 G1 X[10+#1] Z[-1-#1]\nG7\n#1=[#1+1]\no1 endwhile\n"
+        "G8\no2 if [1]\nG1 X5\no2 endif\nM2\n")
+"""Run, a loop body that switches to G8 and back reads each X in the mode it runs in (the interpreter feeds the
+block syntax in execution order). Kept as written (LinuxCNC), the switched computed X and the o-word line under G8
+are refused."""
+
+
+@needs_rs274
+def test_a_loop_that_switches_runs_as_rs274_runs_it_and_flattens_for_fanuc() -> None:
+    setup = _setup(False)
+    source = theirs(LOOP)
+    assert [(m["x"], m["z"]) for m in source] == [(20.0, 0.0), (10.0, -1.0), (11.0, -2.0), (5.0, -2.0)]
+    assert difference(_ours(LOOP, setup), source) is None
+    written = _translate(LOOP, "fanuc", setup)
+    assert difference(_ours(written, setup, "fanuc"), source) is None, written
+    with pytest.raises(ErrorList) as err:
+        _translate(LOOP, "linuxcnc", setup)
+    assert "prog:5:1: error: a computed X while the program writes X as a radius" in str(err.value)
