@@ -1,4 +1,4 @@
-"""LinuxCNC lathe programs that switch between G7 (X a diameter) and G8 (X a radius) inside one program
+"""LinuxCNC (and grblHAL) lathe programs that switch between G7 (X a diameter) and G8 (X a radius) inside one program
 (``postproc.rs274.ngc_lathe.program_x_mode``, the ``XProgramming`` section, ``NgcLatheWriting``).
 
 The oracle is rs274 2.9 (``tests/support/rs274.py``), its lathe mode run on the same text: a seeded random
@@ -279,11 +279,34 @@ def test_a_thread_cycle_rewritten_in_the_switched_mode_is_refused_by_line() -> N
     assert "prog:4:1: error:" in str(err.value) and "CompoundMotion while the program writes X" in str(err.value)
 
 
-def test_grblhal_still_refuses_the_mode_its_set_up_does_not_read() -> None:
-    text = "G18 G7 G21 F100\nG0 X40 Z0\nG8 G1 X20\nM2\n"
-    with pytest.raises(ErrorList) as err:
-        list(toolpath_events(io.StringIO(text), file="prog", dialect="grblhal", setup=_setup(False)))
-    assert "prog:3:1: error: G8 (radius mode) in a program read as diameters" in str(err.value)
+def _grblhal_setup(radius: bool) -> MachineSetup:
+    setup = load_setup(str(ROOT / "tests" / "heldout" / "setups" / "grblhal_lathe.xml"))  # encoder, tool table
+    if radius:
+        setup.input.x_programming = "radius"
+    return setup
+
+
+@needs_rs274
+@pytest.mark.parametrize("seed", range(1, SEEDS, 4))
+def test_grblhal_reads_the_switches_as_rs274_and_linuxcnc_runs_its_translation(seed: int) -> None:
+    """grblHAL's rules are rs274's [V: grblHAL/core f80fc34 ``gcode.c``: the block's G7/G8 sets ``diameter_mode``,
+    then the X word is halved]: the same text (no G76: grblHAL's passes differ) moves as rs274 runs it; the
+    LinuxCNC translation of the grblHAL program, run by rs274, moves alike; a grblHAL copy is the text itself."""
+    text, setup_radius, inch = program(seed, g76=False)
+    setup = _grblhal_setup(setup_radius)
+    tolerance = INCH_TOLERANCE if inch else TOLERANCE
+    source = theirs(text)
+    problem = difference(_ours(text, setup, "grblhal"), source, tolerance)
+    assert problem is None, f"{problem}\n\n{text}"
+    out = io.StringIO()
+    translate(io.StringIO(text), out, file="prog", source="grblhal", target="linuxcnc", setup=setup,
+              on_unsupported="error")
+    problem = difference(theirs(out.getvalue()), source, tolerance)
+    assert problem is None, f"{problem}\n\n{out.getvalue()}"
+    copy = io.StringIO()
+    translate(io.StringIO(text), copy, file="prog", source="grblhal", target="grblhal", setup=setup,
+              on_unsupported="error")
+    assert copy.getvalue() == text
 
 
 @needs_rs274

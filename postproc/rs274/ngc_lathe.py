@@ -104,8 +104,8 @@ def program_x_mode(block: Block, ctx: Context) -> list[tuple[str, str]] | None:
             key = g_key(num)
             if key in MODES:
                 if code is not None:
-                    raise ProgramError(f"G{code} and G{num} in one block (rs274: \"Two g codes used from same modal "
-                                       "group\")", ctx.at(block, _col(block, ctx, num)))
+                    raise ProgramError(f"G{code} and G{num} in one block, one modal group (rs274: \"Two g codes used "
+                                       "from same modal group\"; grblHAL: error 21)", ctx.at(block, _col(block, ctx, num)))
                 code = num
             elif key == "76":
                 thread_cycle = True

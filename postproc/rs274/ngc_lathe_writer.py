@@ -68,13 +68,16 @@ class LatheModes:
     """What the writer keeps of a lathe program: the clamp in force, constant surface speed, where X and Z
     were written last (for a taper thread's K)."""
 
-    __slots__ = ("preamble", "clamp", "css", "x", "z", "diameter", "written")
+    __slots__ = ("preamble", "clamp", "css", "x", "z", "diameter", "written", "said")
 
     def __init__(self, ctx: Context, mode_line: str | None) -> None:
         self.diameter = ctx.diameter
         self.written = 1.0
         """What an X of the IR (the set-up's mode) is multiplied by to be written in the mode the program
         switched to (``XProgramming``): 2 (radius IR, diameter written), 0.5, or 1."""
+        self.said: str | None = ("diameter" if ctx.diameter else "radius") if mode_line is not None else None
+        """The mode the written program last said (the mode line's; None: not known, a copy of the source's
+        own lines), so a switch that repeats it is not written again."""
         self.preamble: str | None = mode_line
         """The mode line, until it is written before the first block that acts."""
         self.clamp: float | None = None
@@ -210,18 +213,24 @@ class NgcLatheWriting(_OnWordWriter):
 
     def write_block(self, block: Block) -> str | None:
         """A lathe program translated here opens with its mode line (``LatheModes.opening``); a switch of how X
-        reads is followed (a copied line included), and a generated block in the switched mode may carry X only
-        on its move."""
-        sections = block.sections
-        switch = sections.get("XProgramming")
-        if switch is not None:
-            self.lathe.switch(switch.mode)  # type: ignore[attr-defined]
-        if self.lathe.written != 1.0 and block.text is None:
-            for key, section in sections.items():
+        reads is followed (a copied line included)."""
+        switch = block.sections.get("XProgramming")
+        if switch is None:
+            return self.lathe.opening(block, super().write_block(block))
+        mode: str = switch.mode  # type: ignore[attr-defined]
+        self.lathe.switch(mode)
+        text = self.lathe.opening(block, super().write_block(block))
+        self.lathe.said = mode
+        return text
+
+    def generate(self, block: Block) -> str:
+        """A block written from its sections: in the switched mode it may carry X only on its move."""
+        if self.lathe.written != 1.0:
+            for key, section in block.sections.items():
                 if key == "CompoundMotion" or key != "Motion" and "X" in (getattr(section, "axes", None) or ()):
                     self.unsupported(f"{key} while the program writes X in the mode other than the set-up's: "
                                      "only a move's X is converted", block)
-        return self.lathe.opening(block, super().write_block(block))
+        return super().generate(block)
 
     def normalized(self, block: Block) -> str:
         """A copied line rewritten from its words' values: in the switched mode those are the set-up's numbers
@@ -239,7 +248,10 @@ class NgcLatheWriting(_OnWordWriter):
             block.values = values
 
     def x_programming_words(self, s: Any, block: Block) -> list[str]:
-        """How X reads from here (``X_MODE_CODES``; followed in ``write_block``)."""
+        """How X reads from here (``X_MODE_CODES``; followed in ``write_block``), where the written program has not
+        said it already."""
+        if s.mode == self.lathe.said:
+            return []
         code = self.X_MODE_CODES.get(s.mode)
         if code is None:
             self.unsupported(f"a switch to X as a {s.mode} inside the program", block)
