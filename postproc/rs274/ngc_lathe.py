@@ -48,6 +48,9 @@ LATHE_ONLY = frozenset(("33", "96", "97"))
 """Codes the table reads into lathe sections on a lathe set-up only; a mill keeps them verbatim."""
 X_MODE_KEY = "ngc.x_mode"
 """``ctx.state.extra`` key: how the program writes X now (G7/G8), while that differs from the set-up's."""
+_MODE_ENDS = frozenset("780.")
+"""The last character of every spelling of G7/G8 (``07``, ``8.0``, ``7.``): most G words are no mode code,
+and this skips their ``g_key`` (every lathe block passes ``program_x_mode``)."""
 X_MODE_WORDS = frozenset("IJK")
 """The words besides X a G76 block reads as diameters in G7 (``threading``)."""
 CLAMP_KEY = "ngc.spindle_clamp"
@@ -98,17 +101,12 @@ def program_x_mode(block: Block, ctx: Context) -> list[tuple[str, str]] | None:
     current = extra.get(X_MODE_KEY)
     setup_mode = "diameter" if ctx.diameter else "radius"
     code: str | None = None
-    thread_cycle = False
     for letter, num in block.words:
-        if letter == "G" or letter == "g":
-            key = g_key(num)
-            if key in MODES:
-                if code is not None:
-                    raise ProgramError(f"G{code} and G{num} in one block, one modal group (rs274: \"Two g codes used "
-                                       "from same modal group\"; grblHAL: error 21)", ctx.at(block, _col(block, ctx, num)))
-                code = num
-            elif key == "76":
-                thread_cycle = True
+        if (letter == "G" or letter == "g") and num[-1:] in _MODE_ENDS and g_key(num) in MODES:
+            if code is not None:
+                raise ProgramError(f"G{code} and G{num} in one block, one modal group (rs274: \"Two g codes used "
+                                   "from same modal group\"; grblHAL: error 21)", ctx.at(block, _col(block, ctx, num)))
+            code = num
     if code is not None:
         mode = MODES[g_key(code)]
         block.add(XProgramming(mode))  # (also where it repeats the mode: a line written again keeps its code)
@@ -124,6 +122,7 @@ def program_x_mode(block: Block, ctx: Context) -> list[tuple[str, str]] | None:
                            f"and the set-up reads {setup_mode}s: a subprogram or loop could run in a mode other than "
                            "the one it is read in; switch back before it", ctx.at(block))
     factor = 2.0 if ctx.diameter else 0.5
+    thread_cycle = any((letter == "G" or letter == "g") and g_key(num) == "76" for letter, num in block.words)
     letters = X_MODE_WORDS | {"X"} if thread_cycle else frozenset("X")
     values = block.values
     written = block.words
