@@ -12,7 +12,8 @@ planner's distance per revolution along the path]:
 * A program that switches how X reads (``XProgramming``, read from LinuxCNC's G7/G8) keeps its switches on a
   controller with ``X_MODE_CODES``: the IR's X (the set-up's mode) is written halved or doubled while the
   program's mode differs, on a move; any other section with an X, and a compound motion (a G76 rewritten),
-  is refused there (``X_MODE_SECTIONS``). A copied line is written as it was.
+  is refused there (``NgcLatheWriting.generate``); a repeated switch is not written again. A copied line is
+  written as it was.
 * ``G96 S.. D..``: the Fanuc-family clamp (``G50 S``) is a state of its own; LinuxCNC clamps only on the
   G96 line, and a G96 without D lifts the clamp. So every G96 gets the clamp in force, and a new clamp
   while constant surface speed is on is written as ``G96 S<the speed in force> D<clamp>`` (a clamp while it
@@ -37,7 +38,6 @@ from postproc.thread_lead import lead_along_path, major_is_z
 
 from .codes import g_key
 from .ngc_lathe import X_MODE_WORDS
-
 from .writer import WordWriter
 
 _QUIET = frozenset(("TapeMark", "ProgramStart", "Comments", "Sequence"))
