@@ -225,6 +225,8 @@ def test_switching_programs_translated_move_as_rs274_runs_the_source(seed: int) 
 # -- by hand -----------------------------------------------------------------------------------------------
 
 def test_hand_program_reads_each_x_in_its_own_mode() -> None:
+    """By hand, as radii: X40 in G7 is 20; G8 on the move's own line: 25; G91 X-2 in G8: 23; G7 X-2 (still G91), a
+    diameter: 22; G90 G8 G2 X24 Z-9 I0 K-2 from (22, -7): centre (22, -9), end 24, 2 from it."""
     text = "G18 G7 G21 G90 G94 F100\nG0 X40 Z0\nG8 G1 X25 Z-5\nG91 X-2 Z-1\nG7 X-2 Z-1\nG90 G8 G2 X24 Z-9 I0 K-2\nM2\n"
     moves = _ours(text, _setup(False))
     assert [(m["move"], m["x"], m["z"]) for m in moves] == [
