@@ -254,6 +254,10 @@ class Dialect:
     DIAMETER_PROGRAMMING: ClassVar[bool] = False
     """Lathe X can be programmed as a diameter (the set-up's ``xProgramming``); without it X is a radius
     and a diameter program's X is halved for it (``postproc.cycles.lathe_lowering``)."""
+    X_MODE_SWITCH: ClassVar[bool] = False
+    """A lathe program may switch how X reads inside it (LinuxCNC's G7/G8, ``XProgramming``): the switches are
+    kept (the writer converts the IR's X where the mode differs); without it they go and every X is written
+    as the set-up's mode (``postproc.cycles.lathe_lowering``)."""
     LATHE_CYCLES: ClassVar[frozenset[str]] = frozenset()
     """Neutral names of the lathe cycles (G70-G76, G90/G92/G94) the controller runs natively with the
     Fanuc system A/GSK words; others are expanded into their moves."""

@@ -93,6 +93,22 @@ class ThreadLead(Section):
         self.lead = lead
 
 
+class XProgramming(Section):
+    """From this block on the program writes X as a ``"diameter"`` or a ``"radius"``: a switch inside one
+    program (LinuxCNC's ``G7``/``G8``). The IR keeps every X as the set-up's ``xProgramming`` says
+    (``Context.diameter``): the reader converts the words it reads in the other mode, so the section only
+    says where the controller's mode changes, for a writer that keeps the switches (``postproc.rs274.
+    ngc_lathe_writer``); every other target drops it (``postproc.cycles.lathe_lowering``)."""
+
+    XNAME = KEY = "XProgramming"
+    __slots__ = ("mode",)
+    XATTRS = (XAttr("mode", str),)
+    mode: str
+
+    def __init__(self, mode: str) -> None:
+        self.mode = mode
+
+
 class InProfile(Section):
     """This block is part of the profile (ns..nf) of the lathe cycle programmed on line ``cycle``: the
     controller runs it only through the cycle, never when the program reaches it."""
@@ -154,7 +170,8 @@ class LatheCycle(Section):
         return f"LatheCycle({self.kind!r}, {self.form!r}, {self.params!r})"
 
 
-LATHE_SECTIONS: tuple[type[Section], ...] = (SpindleMode, SpindleClamp, CoordinateSet, ThreadLead, InProfile, LatheCycle)
+LATHE_SECTIONS: tuple[type[Section], ...] = (SpindleMode, SpindleClamp, CoordinateSet, ThreadLead, XProgramming,
+                                                InProfile, LatheCycle)
 
 
 def register_lathe_sections(factory: XFactory) -> None:

@@ -154,7 +154,8 @@ GRBLHAL_SETUP = MachineSetup(input=InputSettings(machine_type="lathe"), controll
                                   "missing)"),
     ("G18 G7\nS500 M3\nG0 X20. Z2.\nG33 Z-3.\nM2\n", "4:1: error: G33 needs K, the distance per spindle revolution "
                                                      "(grblHAL would take the last G33's K, which this reader does not model)"),
-    ("G18 G8\nM2\n", "1:5: error: G8 (radius mode) in a program read as diameters"),
+    ("G18 G7 G8\nM2\n", "1:8: error: G7 and G8 in one block, one modal group"),  # (a switch alone is read:
+    # tests/test_linuxcnc_x_mode_switch.py)
     ("G76 P2. Z-20. I-1. J0.3 K1.2\nM2\n", "1:1: error: grblHAL's G76 with the spindle stopped"),
 ])
 def test_grblhal_lathe_words_are_read_or_refused_where_they_stand(text: str, message: str) -> None:

@@ -204,6 +204,7 @@ SAMPLES: dict[str, list[tuple[Builder, str]]] = {
     "SpindleMode": [(lambda c: c["SpindleMode"]("css"), '<SpindleMode mode="css"/>')],
     "SpindleClamp": [(lambda c: c["SpindleClamp"](2500.0), '<SpindleClamp rpm="2500.0"/>')],
     "ThreadLead": [(lambda c: c["ThreadLead"](1.5), '<ThreadLead lead="1.5"/>')],
+    "XProgramming": [(lambda c: c["XProgramming"]("radius"), '<XProgramming mode="radius"/>')],
     "CoordinateSet": [(lambda c: c["CoordinateSet"]({"X": 200.0, "Z": 150.0}), '<CoordinateSet X="200.0" Z="150.0"/>')],
     "InProfile": [(lambda c: c["InProfile"](12), '<InProfile cycle="12"/>')],
     "LatheCycle": [

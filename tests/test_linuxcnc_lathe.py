@@ -132,9 +132,9 @@ def test_lathe_words_read_into_sections() -> None:
 
 
 def test_lathe_words_refused_as_rs274_refuses_them() -> None:
-    assert errors("G8\nM2\n") == [
-        'in.ngc:1:1: error: G8 (radius mode) in a program read as diameters: the set-up\'s <Input '
-        'xProgramming="diameter"> decides how X reads (set it to radius; a program that switches mode is not read)']
+    assert errors("G7 G8\nM2\n") == [  # (a switch alone is read: tests/test_linuxcnc_x_mode_switch.py)
+        'in.ngc:1:4: error: G7 and G8 in one block, one modal group (rs274: "Two g codes used from same modal group"; '
+        'grblHAL: error 21)']
     assert errors("G96 D2000 M3\nM2\n") == [
         'in.ngc:1:1: error: G96 needs S, the surface speed (rs274: "S word missing with G96")']
     assert errors("G0 X20. Z2.\nG33 Z-10.\nM2\n") == [

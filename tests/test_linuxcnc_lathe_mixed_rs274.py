@@ -6,8 +6,8 @@ tapered ``G33``, ``G96 S.. D..``/``G97``, ``G95``/``G94`` changes and ``G91`` st
 and inch.
 
 The oracle is rs274 2.9 (``tests/support/rs274.py``), compared as in ``tests/test_lathe_rs274.py`` (end points
-and arc centres as radii, the feed of a feed move, a thread move's lead along its major axis). A program that
-switches G7/G8 mid-way is refused by our reader (the set-up decides how X reads): one case checks the refusal.
+and arc centres as radii, the feed of a feed move, a thread move's lead along its major axis). Programs that
+switch G7/G8 mid-way: ``tests/test_linuxcnc_x_mode_switch.py``.
 """
 
 from __future__ import annotations
@@ -21,7 +21,6 @@ from typing import Any
 
 import pytest
 
-from postproc.errors import ErrorList
 from postproc.setup.machine_setup import MachineSetup, load_setup
 from postproc.simulate.toolpath import toolpath_events
 from tests.support.rs274 import available
@@ -145,10 +144,3 @@ def test_linuxcnc_lathe_programs_move_as_rs274_runs_them(seed: int) -> None:
     text, radius_mode, inch = program(seed)
     problem = difference(_ours(text, _setup(radius_mode)), theirs(text), INCH_TOLERANCE if inch else TOLERANCE)
     assert problem is None, f"{problem}\n\n{text}"
-
-
-def test_a_program_that_switches_between_g7_and_g8_is_refused_where_it_switches() -> None:
-    text = "G18 G7 G21 G90 G95\nS500 M3\nG0 X40. Z2.\nG8\nG1 X15. Z-5. F0.1\nM2\n"
-    with pytest.raises(ErrorList) as err:
-        _ours(text, _setup(False))
-    assert "prog:4:1: error: G8 (radius mode) in a program read as diameters" in str(err.value)

@@ -21,6 +21,9 @@ and tip columns of the offset the T code selected], LinuxCNC's G41 without D the
 which is not the offset's (``T0102``). A target that is no lathe control gets that register named too: its
 compensation is resolved into moves with the offset's radius and tip (``lowering.cutter_compensation``).
 
+A switch of how X reads inside the program (``XProgramming``, LinuxCNC's G7/G8) goes for a target without
+``Dialect.X_MODE_SWITCH``: the reader converted every X to the set-up's mode, which the target writes.
+
 A cycle whose profile turns nose compensation on in its first block and off in its last (the Haas form,
 ``NOSE_PROFILE``) is expanded for every other controller: the roughing to the nose's path and the finishing
 under compensation are the source controller's own (another controller's rules for that form are not known).
@@ -116,8 +119,14 @@ def _lower(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iter
     skip_departure = False
     """A native G70 over such a profile was written: the block the reader made for its departure goes."""
     family = target.family()
+    drop_switches = not target.X_MODE_SWITCH
     for block in blocks:
         sections = block.sections
+        if drop_switches and "XProgramming" in sections:
+            del sections["XProgramming"]  # the IR's X is the set-up's mode: written so
+            block.changed()
+            if not sections:
+                continue
         function = sections.get("MachineFunction")
         if isinstance(function, MachineFunction) and function.action in THREAD_CHAMFER and function.family != family:
             _chamfer_switch_noted(block, function)

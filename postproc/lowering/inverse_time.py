@@ -40,6 +40,7 @@ _KEEPS_POSITION: Final = frozenset((
     "SpindleSpeed", "SpindleMode", "Coolant", "Dwell", "ToolSelect", "ToolChange", "ProgramControl", "PathControl",
     "ReturnLevel", "CycleCancel", "TapeMark", "ProgramStart", "BlockDelete", "CutterCompensation",
     "ToolLengthOffset", "DynamicCutterCompensation", "Motion", "Assign", "Control", "Label", "Generated",
+    "XProgramming",
 ))
 """Sections after which the programmed point is where the moves left it."""
 

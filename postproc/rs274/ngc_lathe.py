@@ -7,9 +7,17 @@ grblHAL's ``gcode.c`` (github.com/grblHAL/core, stored commit f80fc34) reads the
 differences are refused by its plugin, or read here more strictly than grblHAL: a G33 without K, which
 grblHAL takes from the last G33, and an F beside G33, which it accepts):
 
-* ``G7`` (diameter mode) and ``G8`` (radius mode) say how X reads. The reading (and the translation of
-  every other line) follows the set-up's ``xProgramming`` (a mill's: radius), so the one that agrees with
-  it is read and the other is refused at its column: a program that switches mode mid-way is not read.
+* ``G7`` (diameter mode) and ``G8`` (radius mode) say how X reads. The IR keeps X as the set-up's
+  ``xProgramming`` says (a mill's: radius). A controller whose reader passes ``switches`` (LinuxCNC's lathe
+  block syntax, ``program_x_mode``) reads a program that switches mode: the words read in the other mode are
+  converted to the set-up's before the block is read, and the switch becomes an ``XProgramming`` section. Its
+  rules [V: rs274 2.9.0~pre1 run here, tests/test_linuxcnc_x_mode_switch.py]: the mode of a block's own G7/G8
+  applies to that block's X; every X word (absolute or G91) is a diameter in G7; an arc's I and R stay radii;
+  G33's K is a lead (no mode); G76's I, J and K are halved in G7 (``threading``); ``#5420`` reads the radius
+  in either mode. Refused while the program's mode differs from the set-up's: an o-word line (a program kept
+  as written is read in its text's order, not the order it runs in, so a subprogram or loop body could run in
+  a mode other than the one it was read in), a computed X (or G76 I/J/K), and a G70-G72 cycle. Elsewhere
+  (grblHAL) the mode that disagrees with the set-up is refused at its column.
 * ``G96 S.. D..``: constant surface speed S (m/min under G21, ft/min under G20, as Fanuc's G96 S) with
   the spindle clamped at D rpm. G96 needs S ("S word missing with G96"); D is refused beside anything
   but G96 and cutter compensation ("D word with no G41 ... or G96 to use it"); a G96 without D lifts
@@ -30,7 +38,7 @@ from postproc.context import Context
 from postproc.errors import ProgramError
 from postproc.expr import Expr
 from postproc.ir import Block, Motion
-from postproc.lathe_sections import SpindleClamp, SpindleMode, ThreadLead
+from postproc.lathe_sections import SpindleClamp, SpindleMode, ThreadLead, XProgramming
 from postproc.rs274.codes import g_key
 from postproc.thread_lead import lead_along_major
 
@@ -38,6 +46,13 @@ MODES = {"7": "diameter", "8": "radius"}
 """G7/G8 -> how X reads."""
 LATHE_ONLY = frozenset(("33", "96", "97"))
 """Codes the table reads into lathe sections on a lathe set-up only; a mill keeps them verbatim."""
+X_MODE_KEY = "ngc.x_mode"
+"""``ctx.state.extra`` key: how the program writes X now (G7/G8), while that differs from the set-up's."""
+_MODE_ENDS = frozenset("780.")
+"""The last character of every spelling of G7/G8 (``07``, ``8.0``, ``7.``): most G words are no mode code,
+and this skips their ``g_key`` (every lathe block passes ``program_x_mode``)."""
+X_MODE_WORDS = frozenset("IJK")
+"""The words besides X a G76 block reads as diameters in G7 (``threading``)."""
 CLAMP_KEY = "ngc.spindle_clamp"
 """``ctx.state.extra`` key: the clamp of the last G96 (D), while one is in force."""
 
@@ -59,20 +74,77 @@ def _col(block: Block, ctx: Context, num: str) -> int:
     return ctx.column_of(block, "G", num)
 
 
-def read_x_mode(block: Block, ctx: Context, num: str) -> None:
+def read_x_mode(block: Block, ctx: Context, num: str, switches: bool = False) -> None:
     """G7/G8: refused where it disagrees with how X is read (a lathe: the set-up's ``xProgramming``; a
-    mill: radius). Kept verbatim on a mill, a G7 would make the target read every later X as a diameter
-    while the translation and the simulation read radii."""
+    mill: radius) unless the controller's reader ``switches`` (``program_x_mode`` read the block's mode
+    before). Kept verbatim on a mill, a G7 would make the target read every later X as a diameter while the
+    translation and the simulation read radii."""
     mode = MODES[g_key(num)]
     programmed = "diameter" if ctx.diameter else "radius"
     if mode != programmed and not ctx.lathe:
         raise ProgramError(f"G{num} ({mode} mode) on a mill set-up, which reads X as a radius (a lathe set-up "
                            "with <Input xProgramming=\"diameter\"> reads diameters)",
                            ctx.at(block, _col(block, ctx, num)))
-    if mode != programmed:
+    if mode != programmed and not switches:
         raise ProgramError(f"G{num} ({mode} mode) in a program read as {programmed}s: the set-up's "
                            f"<Input xProgramming=\"{programmed}\"> decides how X reads (set it to {mode}; a "
                            "program that switches mode is not read)", ctx.at(block, _col(block, ctx, num)))
+
+
+def program_x_mode(block: Block, ctx: Context) -> list[tuple[str, str]] | None:
+    """Before a lathe block is read (a reader that switches modes): the block's G7/G8 sets how the program
+    writes X (an ``XProgramming`` section), and while it differs from the set-up's the
+    block's X words (and a G76's I, J, K) become the set-up's numbers, halved or doubled (module docstring).
+    Returns the words as written where it changed them (the caller puts them back once the block is read:
+    ``values`` hold the set-up's numbers, ``words`` the text's), else None."""
+    extra = ctx.state.extra
+    current = extra.get(X_MODE_KEY)
+    setup_mode = "diameter" if ctx.diameter else "radius"
+    code: str | None = None
+    for letter, num in block.words:
+        if (letter == "G" or letter == "g") and num[-1:] in _MODE_ENDS and g_key(num) in MODES:
+            if code is not None:
+                raise ProgramError(f"G{code} and G{num} in one block, one modal group (rs274: \"Two g codes used "
+                                   "from same modal group\"; grblHAL: error 21)", ctx.at(block, _col(block, ctx, num)))
+            code = num
+    if code is not None:
+        mode = MODES[g_key(code)]
+        block.add(XProgramming(mode))  # (also where it repeats the mode: a line written again keeps its code)
+        current = None if mode == setup_mode else mode
+        if current is None:
+            extra.pop(X_MODE_KEY, None)
+        else:
+            extra[X_MODE_KEY] = current
+    if current is None:
+        return None
+    if "Control" in block.sections:
+        raise ProgramError(f"an o-word line while the program writes X as a {current} (G{'7' if current == 'diameter' else '8'}) "
+                           f"and the set-up reads {setup_mode}s: a subprogram or loop could run in a mode other than "
+                           "the one it is read in; switch back before it", ctx.at(block))
+    factor = 2.0 if ctx.diameter else 0.5
+    thread_cycle = any((letter == "G" or letter == "g") and g_key(num) == "76" for letter, num in block.words)
+    letters = X_MODE_WORDS | {"X"} if thread_cycle else frozenset("X")
+    values = block.values
+    written = block.words
+    words = list(written)
+    for index, (letter, num) in enumerate(written):
+        up = letter.upper()
+        if up not in letters:
+            continue
+        if values and isinstance(values.get(up), Expr):
+            raise ProgramError(f"a computed {up} while the program writes X as a {current} and the set-up reads "
+                               f"{setup_mode}s is not supported (write the number)",
+                               ctx.at(block, ctx.column_of(block, up)))
+        try:
+            value = float(num)
+        except ValueError:
+            continue  # (the block syntax refuses it)
+        words[index] = (letter, repr(value * factor))
+    if words == written:
+        return None
+    block.words = words
+    block.canonical = False
+    return written
 
 
 def read_spindle_mode(block: Block, ctx: Context, mode: str, num: str, values: dict[str, Any],

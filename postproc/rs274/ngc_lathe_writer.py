@@ -9,6 +9,11 @@ planner's distance per revolution along the path]:
 
 * A translated lathe program starts with ``G18 G7`` (or ``G8`` when it programs radii): a LinuxCNC lathe's
   start-up code may leave either mode, so the program says it (``LatheModes.preamble``).
+* A program that switches how X reads (``XProgramming``, read from LinuxCNC's G7/G8) keeps its switches on a
+  controller with ``X_MODE_CODES``: the IR's X (the set-up's mode) is written halved or doubled while the
+  program's mode differs, on a move; any other section with an X, and a compound motion (a G76 rewritten),
+  is refused there (``NgcLatheWriting.generate``); a repeated switch is not written again. A copied line is
+  written as it was.
 * ``G96 S.. D..``: the Fanuc-family clamp (``G50 S``) is a state of its own; LinuxCNC clamps only on the
   G96 line, and a G96 without D lifts the clamp. So every G96 gets the clamp in force, and a new clamp
   while constant surface speed is on is written as ``G96 S<the speed in force> D<clamp>`` (a clamp while it
@@ -31,6 +36,8 @@ from postproc.expr import Expr
 from postproc.ir import Block, Motion
 from postproc.thread_lead import lead_along_path, major_is_z
 
+from .codes import g_key
+from .ngc_lathe import X_MODE_WORDS
 from .writer import WordWriter
 
 _QUIET = frozenset(("TapeMark", "ProgramStart", "Comments", "Sequence"))
@@ -61,10 +68,16 @@ class LatheModes:
     """What the writer keeps of a lathe program: the clamp in force, constant surface speed, where X and Z
     were written last (for a taper thread's K)."""
 
-    __slots__ = ("preamble", "clamp", "css", "x", "z", "diameter")
+    __slots__ = ("preamble", "clamp", "css", "x", "z", "diameter", "written", "said")
 
     def __init__(self, ctx: Context, mode_line: str | None) -> None:
         self.diameter = ctx.diameter
+        self.written = 1.0
+        """What an X of the IR (the set-up's mode) is multiplied by to be written in the mode the program
+        switched to (``XProgramming``): 2 (radius IR, diameter written), 0.5, or 1."""
+        self.said: str | None = ("diameter" if ctx.diameter else "radius") if mode_line is not None else None
+        """The mode the written program last said (the mode line's; None: not known, a copy of the source's
+        own lines), so a switch that repeats it is not written again."""
         self.preamble: str | None = mode_line
         """The mode line, until it is written before the first block that acts."""
         self.clamp: float | None = None
@@ -78,6 +91,11 @@ class LatheModes:
             return text
         line, self.preamble = self.preamble, None
         return line + "\n" + text
+
+    def switch(self, mode: str) -> None:
+        """The program writes X as ``mode`` ("diameter", "radius") from here (``XProgramming``)."""
+        ir = "diameter" if self.diameter else "radius"
+        self.written = 1.0 if mode == ir else 2.0 if mode == "diameter" else 0.5
 
     def follow(self, s: Motion, incremental: bool) -> None:
         """Where the move leaves X and Z (None where it is not known)."""
@@ -182,6 +200,9 @@ class NgcLatheWriting(_OnWordWriter):
 
     IGNORED: ClassVar[frozenset[str]] = frozenset(("ThreadLead",))
     """A thread move's lead is written as its K (``motion_words``)."""
+    X_MODE_CODES: ClassVar[dict[str, str]] = {}
+    """The controller's code for each way X reads ("diameter", "radius"), where a program may switch
+    (``Dialect.X_MODE_SWITCH``)."""
     MODE_LINES: ClassVar[dict[str, str]]
     """The controller's mode line, by how X reads ("diameter", "radius"): set by each controller's writer."""
 
@@ -191,8 +212,51 @@ class NgcLatheWriting(_OnWordWriter):
         self.lathe = LatheModes(ctx, self.MODE_LINES["diameter" if ctx.diameter else "radius"] if foreign else None)
 
     def write_block(self, block: Block) -> str | None:
-        """A lathe program translated here opens with its mode line (``LatheModes.opening``)."""
-        return self.lathe.opening(block, super().write_block(block))
+        """A lathe program translated here opens with its mode line (``LatheModes.opening``); a switch of how X
+        reads is followed (a copied line included)."""
+        switch = block.sections.get("XProgramming")
+        if switch is None:
+            return self.lathe.opening(block, super().write_block(block))
+        mode: str = switch.mode  # type: ignore[attr-defined]
+        self.lathe.switch(mode)
+        text = self.lathe.opening(block, super().write_block(block))
+        self.lathe.said = mode
+        return text
+
+    def generate(self, block: Block) -> str:
+        """A block written from its sections: in the switched mode it may carry X only on its move."""
+        if self.lathe.written != 1.0:
+            for key, section in block.sections.items():
+                if key == "CompoundMotion" or key != "Motion" and "X" in (getattr(section, "axes", None) or ()):
+                    self.unsupported(f"{key} while the program writes X in the mode other than the set-up's: "
+                                     "only a move's X is converted", block)
+        return super().generate(block)
+
+    def normalized(self, block: Block) -> str:
+        """A copied line rewritten from its words' values: in the switched mode those are the set-up's numbers
+        (``postproc.rs274.ngc_lathe.program_x_mode``), written back as the line's own."""
+        factor = self.lathe.written
+        values = block.values
+        if factor == 1.0:
+            return super().normalized(block)
+        thread_cycle = any(letter in "Gg" and g_key(num) == "76" for letter, num in block.words)
+        letters = X_MODE_WORDS | {"X"} if thread_cycle else frozenset("X")
+        block.values = {k: v * factor if k in letters and isinstance(v, (int, float)) else v for k, v in values.items()}
+        try:
+            return super().normalized(block)
+        finally:
+            block.values = values
+
+    def x_programming_words(self, s: Any, block: Block) -> list[str]:
+        """How X reads from here (``X_MODE_CODES``; followed in ``write_block``), where the written program has not
+        said it already."""
+        if s.mode == self.lathe.said:
+            return []
+        code = self.X_MODE_CODES.get(s.mode)
+        if code is None:
+            self.unsupported(f"a switch to X as a {s.mode} inside the program", block)
+            return []
+        return [code]
 
     def motion_words(self, s: Any, block: Block) -> list[str]:
         """A thread move is ``G33 .. K..`` (``LatheModes.thread_k``); every move is followed."""
@@ -211,7 +275,14 @@ class NgcLatheWriting(_OnWordWriter):
                 self.unsupported(along, block)
                 return []
             k = along
-        words = super().motion_words(s, block)
+        written = s
+        if lathe.written != 1.0 and "X" in s.axes:
+            x = s.axes["X"]
+            if isinstance(x, Expr):
+                self.unsupported("a computed X while the program writes X in the mode other than the set-up's", block)
+                return []
+            written = Motion(s.mode, {**s.axes, "X": float(x) * lathe.written}, s.center, s.radius)
+        words = super().motion_words(written, block)
         lathe.follow(s, incremental)
         if k is not None:
             words.append("K" + self.length(k, block, "K"))

@@ -32,7 +32,7 @@ from .motion_words import MotionWords
 from .word_numbers import _position
 
 SECTION_ORDER = (
-    "BlockDelete", "Sequence", "Assign", "Control", "MachineCoordinates", "PathControl", "Plane", "Units", "DistanceMode",
+    "BlockDelete", "Sequence", "Assign", "Control", "MachineCoordinates", "PathControl", "Plane", "XProgramming", "Units", "DistanceMode",
     "DataSetting", "WorkOffset", "FeedMode", "SpindleMode", "CutterCompensation", "ToolLengthOffset", "ReturnLevel",
     "CycleCancel", "Dwell", "CoordinateSet", "FrameChange", "Motion", "RigidTap", "CannedCycle", "HolePattern", "LatheCycle", "Feed", "SpindleClamp",
     "SpindleSpeed", "ToolSelect", "ToolChange", "SpindleControl", "SpindleOrientation", "Coolant", "MachineFunction",

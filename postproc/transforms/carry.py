@@ -65,9 +65,10 @@ _SWAPPED: Final = {"left": "right", "right": "left"}
 _OWN: Final = frozenset(("Units", "Feed", "ToolLengthOffset", "PathControl"))
 """Sections this step leaves alone although they hold lengths (a feed is a speed, a tool length is the
 tool's); the units step converts them."""
-_LATHE_INERT: Final = frozenset(("SpindleMode", "SpindleClamp", "ThreadLead", "InProfile"))
+_LATHE_INERT: Final = frozenset(("SpindleMode", "SpindleClamp", "ThreadLead", "InProfile", "XProgramming"))
 """A lathe's sections with no point in them (a surface speed, a speed clamp, a thread's lead, the mark of a
-cycle's profile block, whose moves are carried where the cycle is expanded)."""
+cycle's profile block, whose moves are carried where the cycle is expanded, a switch of how X reads: the IR's
+X stays the set-up's mode)."""
 
 
 def move_program(blocks: Iterator[Block], ctx: Context, transform: ProgramTransform) -> Iterator[Block]:

@@ -28,7 +28,7 @@ from ..errors import PostprocError, ProgramError
 from ..expr import Expr
 from ..frames.frame import PLANE_AXES
 from ..frames.section import FrameChange
-from ..lathe_sections import CoordinateSet, InProfile, LatheCycle, SpindleMode, ThreadLead
+from ..lathe_sections import CoordinateSet, InProfile, LatheCycle, SpindleMode, ThreadLead, XProgramming
 from ..ir import (Block, CompoundMotion, DataSetting, Feed, Motion, NativeCode, PathControl, Section, SpindleSpeed,
                   ToolLengthOffset, Units)
 from ..state import MM_PER_INCH
@@ -136,7 +136,7 @@ class UnitConverter:
         if isinstance(section, LatheCycle):
             raise ProgramError(f"a lathe cycle kept for the target ({section.kind.replace('_', ' ')}) cannot be {WHAT}: "
                                "its parameters are not converted (a target that lacks the cycle gets its moves)")
-        if isinstance(section, (SpindleMode, InProfile)):
+        if isinstance(section, (SpindleMode, InProfile, XProgramming)):
             return section
         if k == 1.0:
             return section

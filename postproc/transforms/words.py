@@ -18,7 +18,7 @@ INERT: Final = frozenset((
     "BlockDelete", "ProgramStart", "TapeMark", "Plane", "DistanceMode", "WorkOffset", "FeedMode", "SpindleSpeed",
     "SpindleControl", "SpindleOrientation", "ToolSelect", "ToolChange", "Coolant", "Dwell", "ProgramControl",
     "ReturnLevel", "CycleCancel", "CycleCall", "Sequence", "Comments", "MachineFunction", "Generated",
-    "SpindleClamp",
+    "SpindleClamp", "XProgramming",
 ))
 """Sections with no length and no point in them: both transforms pass them untouched (a dwell's seconds,
 a spindle's speed, a machine function's code)."""

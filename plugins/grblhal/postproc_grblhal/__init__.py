@@ -155,6 +155,8 @@ class Grblhal(GrblFamily):
     DIAMETER_PROGRAMMING = True
     """G7: X is a diameter (G8 a radius), per the set-up's ``xProgramming``; a translation writes ``G18 G7``
     before its first block [V: gcode.c, G7/G8 set ``diameter_mode`` in lathe mode]."""
+    X_MODE_SWITCH = True
+    """G7/G8 inside a lathe program are read and kept (``block_syntax``)."""
     LATHE_FEED_AT_START = "per_min"
     """grblHAL starts in G94 [K: grbl's power-on modes, ``gc_init``]."""
     LATHE_TURRET = False

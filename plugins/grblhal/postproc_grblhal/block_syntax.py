@@ -3,7 +3,10 @@ table, and what a build may lack checked against the set-up where the program is
 table (``<Controller toolTable="true">``), G95 a spindle with an encoder (``spindleSync``) [V: grblHAL core
 ``gcode.c``: G43 needs ``grbl.tool_table.n_tools``, feed per revolution ``spindle->hal->get_data``]. On a lathe
 set-up G7/G8, G33 K and G96 S D/G97 are read as grblHAL's lathe mode runs them (``lathe``), and G76 into its moves
-(``threading``), elsewhere refused."""
+(``threading``), elsewhere refused. A program may switch between G7 and G8 (``postproc.rs274.ngc_lathe``): grblHAL
+halves the X word of a block whose own G7/G8 (or the mode in force) says diameter, and G76's I, J and K, as rs274
+does [V: grblHAL/core f80fc34 ``gcode.c``: ``gc_block.modal.diameter_mode`` set from the block's G7/G8, then
+``values.xyz[X_AXIS] /= 2``; ``thread.peak``, ``initial_depth``, ``depth`` halved]."""
 
 from __future__ import annotations
 
@@ -48,7 +51,10 @@ class GrblhalBlockSyntax(GrblFamilyBlockSyntax):
     """E: G76's taper length (``threading``); anywhere else an unused word."""
 
     def build(self, block: Block, ctx: Context) -> None:
+        written = ngc_lathe.program_x_mode(block, ctx) if ctx.lathe else None
         super().build(block, ctx)
+        if written is not None:
+            block.words = written  # the words as written; their values the set-up's mode
         sections = block.sections
         offset = sections.get("ToolLengthOffset")
         if isinstance(offset, ToolLengthOffset) and offset.mode == "positive" \
@@ -68,8 +74,8 @@ class GrblhalBlockSyntax(GrblFamilyBlockSyntax):
             where = ctx.at(block, col_of_word(block, "G", num))
             if not ctx.lathe:
                 raise ParseError(NOT_LATHE.format(num=num), where)
-            if code in ngc_lathe.MODES:
-                ngc_lathe.read_x_mode(block, ctx, num)
+            if code in ngc_lathe.MODES:  # (a switch: ``program_x_mode`` in ``build``)
+                ngc_lathe.read_x_mode(block, ctx, num, True)
                 return
             if code == "33" and not ctx.setup.controller.spindle_sync:
                 raise ParseError(NO_THREAD_SYNC, where)

@@ -27,6 +27,8 @@ class GrblhalLatheWriter(NgcLatheWriting, GrblhalWriter):
 
     MODE_LINES: ClassVar[dict[str, str]] = {"diameter": "G18 G7", "radius": "G18 G8"}
     """The ZX plane and how X reads, first in a program translated here."""
+    X_MODE_CODES: ClassVar[dict[str, str]] = {"diameter": "G7", "radius": "G8"}
+    """A switch inside the program [V: gcode.c, ``diameter_mode``; ``block_syntax``]."""
 
     def write_block(self, block: Block) -> str | None:
         self.refuse_css_with_spindle_stopped(block)

@@ -147,6 +147,8 @@ class Linuxcnc(Dialect):
     """G7: X is a diameter (G8 a radius), per the set-up's ``xProgramming``; a translation writes the mode
     (and G18) before its first block, as a LinuxCNC lathe's start-up code may say either [K: the
     interpreter starts in G17 and radius mode unless the ini's RS274NGC_STARTUP_CODE says otherwise]."""
+    X_MODE_SWITCH = True
+    """G7/G8 inside a lathe program are read and kept (``postproc.rs274.ngc_lathe``)."""
     LATHE_FEED_AT_START = "per_min"
     """LinuxCNC starts in G94, units per minute [K: RS274/NGC default; V: rs274 resets to
     ``SET_FEED_MODE(0, 0)`` at the program end]."""

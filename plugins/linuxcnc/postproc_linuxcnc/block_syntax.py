@@ -92,6 +92,8 @@ class NgcBlockSyntax(NgcWordBlockSyntax):
         block.add(DynamicCutterCompensation(side, float(diameter),
                                             None if orientation is None else int(orientation)))
 
+    X_MODE_SWITCHES: ClassVar[bool] = False
+    """G7/G8 switching inside a program is read (``postproc.rs274.ngc_lathe.program_x_mode``): the lathe's."""
     SPECIAL_G: ClassVar[frozenset[str]] = frozenset(lathe.MODES) | lathe.LATHE_ONLY | {"76"} | frozenset(G7X_CODES)
     """G7/G8, G33, G96/G97, G76 and G70-G72.2: read here (``special_g_code``) before the code table."""
 
@@ -100,7 +102,7 @@ class NgcBlockSyntax(NgcWordBlockSyntax):
         ``xProgramming``, a mill's radius), G33 and G96/G97 into lathe sections, G76 into its moves
         (``threading``) on a lathe set-up; on a mill those stay verbatim (``toolpath`` and ``verify`` refuse them)."""
         if key in lathe.MODES:
-            lathe.read_x_mode(block, ctx, num)
+            lathe.read_x_mode(block, ctx, num, self.X_MODE_SWITCHES)
             return True
         if not ctx.lathe and (key in lathe.LATHE_ONLY or key == "76" or key in G7X_CODES):
             natives.append(key)  # G33, G76, G70-G72, G96/G97 on a mill: verbatim, as before the lathe reading
@@ -200,16 +202,24 @@ class NgcLatheBlockSyntax(NgcBlockSyntax):
 
     XNAME = "NgcLatheBlockSyntax"
     __slots__ = ()
+    X_MODE_SWITCHES: ClassVar[bool] = True
 
     def build(self, block: Block, ctx: Context) -> None:
         sections = block.sections
         if "Control" in sections or "NativeCode" in sections:
             check_profile_block(block, ctx)
+        written = lathe.program_x_mode(block, ctx)
         for letter, num in block.words:
             if (letter == "G" or letter == "g") and g_key(num) in G7X_CODES:
+                if lathe.X_MODE_KEY in ctx.state.extra:
+                    raise ProgramError(f"G{num} while the program writes X in the mode other than the set-up's "
+                                       "(G7/G8): a G70-G72 cycle is read only in the set-up's mode",
+                                       ctx.at(block, ctx.column_of(block, "G", num)))
                 _real_d(block, ctx)
                 break
         super().build(block, ctx)
+        if written is not None:
+            block.words = written  # the words as written; their values the set-up's mode
         follow_compensation(block, ctx)
 
 

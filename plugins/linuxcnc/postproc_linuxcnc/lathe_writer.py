@@ -31,3 +31,5 @@ class LinuxcncLatheWriter(NgcLatheWriting, LinuxcncWriter):
 
     MODE_LINES: ClassVar[dict[str, str]] = {"diameter": "G18 G7", "radius": "G18 G8"}
     """The ZX plane and how X reads, first in a program translated here."""
+    X_MODE_CODES: ClassVar[dict[str, str]] = {"diameter": "G7", "radius": "G8"}
+    """A switch inside the program [V: rs274 2.9.0~pre1 run here: tests/test_linuxcnc_x_mode_switch.py]."""
