@@ -16,6 +16,8 @@ from typing import Any
 import pytest
 
 from postproc.api import translate
+from postproc.setup.machine import ToolData
+from postproc.setup.machine_setup import MachineSetup
 from postproc.simulate.toolpath import toolpath_events
 from postproc.simulate.verify import verify_lines
 from tests.support.rs274 import available, run_rs274
@@ -31,20 +33,30 @@ PROGRAMS = {
                "g10 l10 p1 x2\ng43\ng1 x0 y0 f100\nm2\n",
     "y_alone": "g21\ng10 l2 p1 x0 y0 z0 r-60\ng54\ng0 x3 y4 z5\ng10 l10 p1 x1 y2 z1\nt1 m6\ng43\ng0 x6\n"
                "g10 l10 p1 y-1 z2\ng43\ng1 x2 y3 z-1 f100\nm2\n",
+    # the shifts this file's predecessor refused (test_tool_entry_at_point_26.py, "not guessed")
+    "g92_x": "G21 G90\nT1 M6\nG0 X1 Y1 Z1\nG92 X1\nG10 L10 P1 X0\nG43 H1\nG0 X2\nM2\n",
+    "g52_y": "G21 G90\nT1 M6\nG0 X1 Y1 Z1\nG52 Y2\nG10 L10 P1 X0\nG43 H1\nG0 X2\nM2\n",
+    "r30": "G21 G90\nT1 M6\nG10 L2 P1 R30\nG0 X1 Y1 Z1\nG10 L10 P1 X0\nG43 H1\nG0 X2\nM2\n",
     "inch_with_g92": "g20\ng10 l2 p1 x0 y0 z0 r45\ng54\ng0 x1 y2 z3\ng92 x0 y0\ng10 l10 p1 x.5 y.25 z.5\n"
                      "t1 m6\ng43\ng0 x1\ng1 y1 f10\nm2\n",
 }
 
 
+SETUP = MachineSetup()
+SETUP.tools = {"1": ToolData(number=1, length=0.0, radius=0.0)}
+TOOL_TABLE = "T1 P1 Z0 D0\n"
+"""Tool 1's entry zero at the start, in the set-up and in rs274's table alike."""
+
+
 def _events(text: str) -> list[dict[str, Any]]:
-    return list(toolpath_events(io.StringIO(text), file="p.ngc", dialect="linuxcnc"))
+    return list(toolpath_events(io.StringIO(text), file="p.ngc", dialect="linuxcnc", setup=SETUP))
 
 
 def _rs274(text: str) -> tuple[list[tuple[float, float, float]], list[tuple[float, float, float]]]:
     """rs274's moves as work points (mm) and the entries G43 takes (mm)."""
     scale, turn, shift = 1.0, 0.0, (0.0, 0.0, 0.0)
     moves, entries = [], []
-    for line in run_rs274(text):
+    for line in run_rs274(text, tool_table=TOOL_TABLE):
         name, _, args = line.split(" ", 1)[1].partition("(")
         if name == "USE_LENGTH_UNITS":
             scale = 25.4 if "INCH" in args else 1.0
@@ -72,7 +84,7 @@ def test_entries_and_moves_as_rs274(name: str) -> None:
     text = PROGRAMS[name]
     theirs, entries = _rs274(text)
     ours = [e for e in _events(text) if "move" in e]
-    tol = 0.51e-4 * (25.4 if text.startswith("g20") else 1.0)  # rs274 prints 4 decimals of its units
+    tol = 0.51e-4 * (25.4 if text.lower().startswith("g20") else 1.0)  # rs274 prints 4 decimals of its units
     assert len(ours) == len(theirs)
     for e, (x, y, z) in zip(ours, theirs):
         assert (e["x"], e["y"], e["z"]) == pytest.approx((x, y, z), abs=tol)
@@ -99,9 +111,9 @@ def test_x_and_y_by_hand() -> None:
 def test_translation_verifies(target: str) -> None:
     text = PROGRAMS["x_alone"]
     out = io.StringIO()
-    translate(io.StringIO(text), out, file="p.ngc", source="linuxcnc", target=target)
+    translate(io.StringIO(text), out, file="p.ngc", source="linuxcnc", target=target, setup=SETUP)
     report = verify_lines(io.StringIO(text), io.StringIO(out.getvalue()), file_in="p.ngc", file_out="o.nc",
-                          source="linuxcnc", target=target, tolerance=1e-3)
+                          source="linuxcnc", target=target, tolerance=1e-3, setup=SETUP)
     assert report.ok, report.summary()
 
 
