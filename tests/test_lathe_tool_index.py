@@ -126,3 +126,19 @@ def test_two_length_codes_before_a_change_refuse_the_first(setup) -> None:  # ty
     with pytest.raises(ErrorList) as info:
         translate(io.StringIO(program), io.StringIO(), file="t.ngc", source="linuxcnc", target="fanuc", setup=setup)
     assert [e.location.line for e in info.value.errors if e.location is not None] == [4]
+
+
+def test_the_first_move_after_an_index_must_name_each_axis_whose_offset_changed(setup) -> None:  # type: ignore[no-untyped-def]
+    """Tool 2's offsets (X 1.5, Z -2.25) after none: LinuxCNC's G43 H2 applies X's only where X is next
+    programmed, the turret's T0202 on both at the next move, so ``G0 Z1`` alone would end 1.5 mm off in X on
+    the target (was translated so, exit 0: only verify saw it). A located error at that move."""
+    program = "G18 G8 G21 F100\nT2 M6\nG43 H2\nG0 Z1\nG0 X1\nM2\n"
+    with pytest.raises(ErrorList, match="leaves X unprogrammed") as info:
+        translate(io.StringIO(program), io.StringIO(), file="t.ngc", source="linuxcnc", target="fanuc", setup=setup)
+    assert [e.location.line for e in info.value.errors if e.location is not None] == [4]
+    both = "G18 G8 G21 F100\nT2 M6\nG43 H2\nG0 X1 Z1\nG0 X2\nM2\n"
+    out = io.StringIO()
+    translate(io.StringIO(both), out, file="t.ngc", source="linuxcnc", target="fanuc", setup=setup)
+    report = verify_lines(io.StringIO(both), io.StringIO(out.getvalue()), file_in="t.ngc", file_out="t.nc",
+                          source="linuxcnc", target="fanuc", setup=setup, tolerance=0.0)
+    assert report.ok, report.summary()

@@ -31,12 +31,13 @@ or register above 99, and a dynamic length (``G43.1``), which the target has not
 
 from __future__ import annotations
 
-from typing import Final, Iterator
+from typing import Final, Iterator, Mapping
 
 from postproc.context import Context
 from postproc.dialect import Dialect
 from postproc.errors import UnsupportedError
-from postproc.ir import Block, Comments, SpindleControl, ToolChange, ToolLengthOffset, ToolSelect
+from postproc.compensation.tool_table import ToolTable
+from postproc.ir import Block, Comments, Motion, SpindleControl, ToolChange, ToolLengthOffset, ToolSelect
 
 __all__ = ["index_turret"]
 
@@ -70,11 +71,30 @@ def _index(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
     """The held index (block, station) a length code after it may still set the register of."""
     lone: Block | None = None
     """A held length code without a change, which a change before the next move takes."""
+    table = ToolTable(ctx.setup)
+    applied: tuple[float, float] | None = (0.0, 0.0)
+    """The X and Z offsets the last index written put in force (None: not known here)."""
+    shifted: set[str] = set()
+    """Axes whose offset the last index changed, until the first move after it (``_moved_after_index``)."""
+    absolute = True
     for block in blocks:
         sections = block.sections
         if held and (not QUIET.issuperset(sections) or len(held) >= HELD):
-            yield from _flush(held, lone, ctx)
+            for out in _flush(held, lone, ctx):
+                index_now = out.sections.get("ToolSelect")
+                if isinstance(index_now, ToolSelect) and isinstance(index_now.number, int):
+                    applied, shifted = _offsets_change(table, applied, index_now.number % 100)
+                yield out
             held, index, lone = [], None, None
+        distance = sections.get("DistanceMode")
+        if distance is not None:
+            absolute = getattr(distance, "mode", "absolute") == "absolute"
+        if shifted and not held and _moves(sections):
+            try:
+                _moved_after_index(block, ctx, shifted, absolute)
+            except UnsupportedError as err:
+                ctx.diagnostics.error(err)
+            shifted = set()
         try:
             select = sections.get("ToolSelect")
             change = sections.get("ToolChange")
@@ -126,6 +146,40 @@ def _index(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
         else:
             yield block
     yield from _flush(held, lone, ctx)
+
+
+_MOVING: Final = frozenset(("Motion", "CompoundMotion", "CycleCall", "CannedCycle", "LatheCycle", "RigidTap"))
+
+
+def _moves(sections: Mapping[str, object]) -> bool:
+    return not _MOVING.isdisjoint(sections)
+
+
+def _offsets_change(table: ToolTable, applied: tuple[float, float] | None,
+                    register: int) -> tuple[tuple[float, float] | None, set[str]]:
+    """The offsets an index of ``register`` puts in force, and the axes on which they differ from ``applied``
+    (none where either is not known here: the simulation then compares the selection, not the path)."""
+    new = table.lathe(register, False)
+    if new is None or applied is None:
+        return new, set()
+    return new, {axis for axis, a, b in (("X", applied[0], new[0]), ("Z", applied[1], new[1])) if abs(a - b) > 1e-12}
+
+
+def _moved_after_index(block: Block, ctx: Context, shifted: set[str], absolute: bool) -> None:
+    """The first move after an index that changed the offsets on ``shifted``: the source's ``G43`` applies each
+    axis's offset where that axis is next programmed [V: LinuxCNC, ``postproc.lowering.length_timing``], the
+    turret's index on every axis at this move [K: Fanuc T]; they agree only where the move programs each such
+    axis absolutely, else a located error (was: translated, the unnamed axis moved by its offset change)."""
+    motion = block.sections.get("Motion")
+    named = set(motion.axes) if isinstance(motion, Motion) and motion.mode in ("rapid", "linear", "cw", "ccw") \
+        and absolute else set()
+    missing = sorted(shifted - named)
+    if missing:
+        raise UnsupportedError(
+            f"the first move after a turret index leaves {' and '.join(missing)} unprogrammed (or is not an absolute "
+            "move): the source applies the new offset on an axis where it is next programmed, the turret's index on "
+            "every axis at this move (program " + " and ".join(sorted(shifted)) + " in the first move after the tool "
+            "change)", ctx.at(block))
 
 
 def _flush(held: list[Block], lone: Block | None, ctx: Context) -> Iterator[Block]:
