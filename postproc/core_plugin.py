@@ -31,6 +31,7 @@ from .cycles.rigid_tap_lowering import resolve_rigid_taps
 from .lowering.deferred import resolve_dynamic_cutter_compensation
 from .lowering.length_timing import time_length_changes
 from .lowering.path_at_start import carry_path_at_start
+from .lowering.units_at_start import write_units_at_start
 from .lowering.stored_offsets import hold_stored_offsets
 from .synchronised_tap import RigidTap
 from .xmlio import XFactory
@@ -71,6 +72,7 @@ def postproc_register_lowerings(register: Callable[[Lowering], None]) -> None:
     register(resolve_rigid_taps)  # after the cycles: an expanded rigid tap cycle shows its taps
     register(time_length_changes)  # after the cycles: a change is carried to the move that applies it
     register(carry_path_at_start)  # after the expansions: it goes before the first block that moves
+    register(write_units_at_start)  # after the expansions: it goes before the first block that reads a length
     register(hold_stored_offsets)  # after the frames (they follow the setting where the source has it)
     register(drop_foreign_machine_functions)
     register(frame_program)  # last: the frame goes around what the steps before made

@@ -18,11 +18,7 @@ ROOT = Path(__file__).resolve().parents[1]
 
 PROGRAMS = harness.load_manifest()
 
-KNOWN_FAILURES: dict[tuple[str, str], str] = {
-    ("linuxcnc/g10_l1_l10.ngc", ""): "G10 L10 tool offsets measured where the tool stands under a G10 L2 R "
-                                     "rotation are not simulated (a located error); G10 L1 X/Y/Z/R and L10/L11 "
-                                     "X/Y/Z/R without a rotation or a G92/G52 shift are",
-}
+KNOWN_FAILURES: dict[tuple[str, str], str] = {}
 """(program, target or '' for the source check) -> the defect, as found by this corpus."""
 
 

@@ -57,10 +57,12 @@ def test_a_reference_return_with_an_intermediate_point_moves_there_first() -> No
 
 
 def test_what_a_reference_return_block_ends_comes_after_the_return() -> None:
-    """Fanuc ends the block's M05 after its motion: after the G53 move (and the G91 restored), not before."""
+    """Fanuc ends the block's M05 after its motion: in the G53 move's block (Fagor, as Fanuc, ends it after the
+    motion: ``stops_before_motion``), not before; the return's zero increment leaves only the G53 move, and the
+    next block's own G90 owes no G91 (``postproc.isg_family.machine_moves``)."""
     text = "G21 G90\nG00 Z5.\nS100 M03\nG91 G28 Z0. M05\nG90\nM30\n"
     out = _translate(text, "fanuc", "fagor")
-    assert out.splitlines()[3:7] == ["G91", "G53 G90 G00 Z-12.5", "G91", "M05"]
+    assert out.splitlines()[3:5] == ["G53 G90 G00 Z-12.5 M05", "G90"]
     _verify(text, out, "fanuc", "fagor")
 
 

@@ -63,7 +63,8 @@ def test_lathe_move_gets_the_z_read() -> None:
 
 def test_mill_move_gets_the_z_read() -> None:
     out = _translate(MILL_PROGRAM, _mill())
-    assert re.search(r"^G43 H01 G0 X10\. Y10\. Z#5422$", out, re.M), out
+    # G21: the units the program was read in are written (tests/test_units_at_start.py)
+    assert re.search(r"^G21 G43 H01 G0 X10\. Y10\. Z#5422$", out, re.M), out
 
 
 @needs_rs274

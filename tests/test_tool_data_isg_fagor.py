@@ -226,9 +226,10 @@ def test_fanuc_g28_and_g53_become_isg_suppress_offsets() -> None:
     out = _translate(REFERENCE, "fanuc", "isg", _setup(home=-12.5))
     assert out.splitlines() == [
         "G71 G90", "D02 G00 Z50.", "G01 X5. F100.",
-        "G91",  # the intermediate point is where the tool is (G91 Z0): no move; then home, absolute, at rapid
-        "G90 G00", "#SUPPRESS OFFSETS Z-12.5", "G91",
-        "G90", "G00", "#SUPPRESS OFFSETS X-10. Y-20.", "M05",
+        # the intermediate point is where the tool is (G91 Z0): no move; then home, absolute, at rapid; the next
+        # block programs its own G90, so no G91 is written back (postproc.isg_family.machine_moves)
+        "G90 G00", "#SUPPRESS OFFSETS Z-12.5",
+        "G90 G00", "#SUPPRESS OFFSETS X-10. Y-20.", "M05",
         "G01 X1.", "M30"]
     report = _verify(REFERENCE, out, "fanuc", "isg", _setup(home=-12.5))
     assert report.ok and report.max_deviation == 0, report.summary()
@@ -254,11 +255,12 @@ def test_a_reference_return_needs_the_home_position() -> None:
 
 def test_fanuc_g28_and_g53_become_fagor_g53_at_rapid_in_absolute_positions() -> None:
     """Hand-derived: the G28's intermediate point is where the tool is (G91 Z0), so only the G53 rapid to the
-    set-up's home (-12.5) is written, with G90 for it and G91 again after; the G53 block gives its own G90."""
+    set-up's home (-12.5) is written, with G90 for it; the next block gives its own G90, so no G91 is written
+    back between them (``postproc.isg_family.machine_moves``)."""
     out = _translate(REFERENCE, "fanuc", "fagor", _setup(home=-12.5))
     assert out.splitlines() == [
         "G71 G90", "G43 D02 G00 Z50.", "G01 X5. F100.",
-        "G91", "G53 G90 G00 Z-12.5", "G91",
+        "G53 G90 G00 Z-12.5",
         "G53 G90 G00 X-10. Y-20. M05",
         "G01 X1.", "M30"]
     report = _verify(REFERENCE, out, "fanuc", "fagor", _setup(home=-12.5))
@@ -267,13 +269,13 @@ def test_fanuc_g28_and_g53_become_fagor_g53_at_rapid_in_absolute_positions() -> 
     # G53 positions the controlled point, whatever tool length D2 (25.5) is in force
     assert [(m["move"], m["controlled"]["x"], m["controlled"]["z"]) for m in moves[2:4]] == [
         ("rapid", 5, -12.5), ("rapid", -10, -12.5)]
-    assert _translate(out, "fagor", "fanuc", _setup(home=-12.5)).splitlines()[6] == "G53 G90 G00 X-10. Y-20. M05"
+    assert _translate(out, "fagor", "fanuc", _setup(home=-12.5)).splitlines()[4] == "G53 G90 G00 X-10. Y-20. M05"
 
 
 def test_fagor_g53_under_g91_is_written_absolute() -> None:
     text = "G21 G91\nG00 X1.\nG53 G00 Z-3.\nX1.\nM30\n"
     out = _translate(text, "fanuc", "fagor")
-    assert out.splitlines()[2:4] == ["G53 G90 G00 Z-3.", "G91"]
+    assert out.splitlines()[2:4] == ["G53 G90 G00 Z-3.", "G91 G00 X1."]  # G91 again where it is next read
     assert _verify(text, out, "fanuc", "fagor").ok
 
 

@@ -7,8 +7,8 @@ G59.3), simulated as LinuxCNC's interpreter works them out ([V] ``interp_convert
   run with the same tool table (``-t``) moves it: its canonical point plus the work offset and the tool offset
   it prints.
 * Hand-derived: the values of one program worked out from the rule.
-* Under a coordinate shift or rotation of the program's own (``G92``, ``G52``, ``G10 L2 R``) the entry is not
-  guessed: a located error.
+* Under a coordinate shift or rotation of the program's own (``G92``, ``G52``, ``G10 L2 R``): checked against
+  rs274 in ``test_measured_entry_rotated.py``.
 * Towards Fanuc and grbl, ``G10 L10`` is worked out where the translation knows the point and the offset in
   force (``postproc.lowering.measured_entries``): seeded programs translated move as rs274 and verify;
   where it does not (``L11``, after a change of work system), a located error: never a dropped entry.
@@ -130,15 +130,6 @@ def test_the_rule_hand_derived() -> None:
             "G0 X5 Y6 Z7\nG10 L10 P3 X2\nG43 H3\nG1 X1 Y1 Z1 F100\nG10 L11 P3 Y3 Z2\nG43 H3\nG0 X0 Y0 Z0\nM2\n")
     points = [v for point in controlled(text) for v in point]
     assert points == pytest.approx([6.5, 8.25, 20, 5.5, 3.25, 14, 4.5, 4.25, 19])
-
-
-@pytest.mark.parametrize("shift", ["G92 X1", "G52 Y2", "G10 L2 P1 R30"])
-def test_under_a_shift_or_rotation_of_the_program_the_entry_is_not_guessed(shift: str) -> None:
-    text = f"G21 G90\nT3 M6\nG0 X1 Y1 Z1\n{shift}\nG10 L10 P3 X0\nG43 H3\nG0 X2\nM2\n"
-    with pytest.raises(ErrorList) as info:
-        controlled(text)
-    error = info.value.errors[0]
-    assert error.location is not None and error.location.line == 5 and "measured where the tool stands" in str(error)
 
 
 @needs_rs274

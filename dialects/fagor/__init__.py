@@ -19,6 +19,7 @@ from postproc.dialect import Dialect, Lazy, Reader
 from postproc.errors import Diagnostics
 from postproc.hookspecs import hookimpl
 from postproc.lowering.lower import BlockStep, LoweringStep
+from postproc.isg_family.machine_moves import absolute_machine_moves
 from postproc.rs274.order_of_execution import stops_before_motion
 from postproc.setup.machine_setup import MachineSetup
 from postproc.syntax import Pipeline
@@ -116,8 +117,10 @@ class Fagor(Dialect):
     PROGRAMS = False
     """P parameters and expressions are read [K]; control flow and subroutines are kept verbatim [?], so a
     program that computes reaches Fagor flattened."""
-    LOWERING = (stops_before_motion, resolve_radius_where_d_cannot, select_tool_data, end_cycles_before_moves)
-    """A spindle stop or coolant off that the source made before its block's motion goes in a block of
+    LOWERING = (stops_before_motion, resolve_radius_where_d_cannot, select_tool_data, end_cycles_before_moves,
+                absolute_machine_moves)
+    """A run of moves in machine coordinates or reference returns under G91 is written after one G90, G91 again
+    where the program next reads it (``postproc.isg_family.machine_moves``). A spindle stop or coolant off that the source made before its block's motion goes in a block of
     its own before it (Fagor acts on M05/M09 after the block's motion, as Fanuc [?]); a G41/G42 whose D
     would bring another length than the one G43 has on is the compensated path, where the source's rules
     are modelled (``resolve_radius_where_d_cannot``, as for ISG); another family's length and radius

@@ -17,6 +17,7 @@ from postproc.state import MM_PER_INCH
 from postproc.dialect import Dialect, Lazy, Reader
 from postproc.hookspecs import hookimpl
 from postproc.lowering.lower import BlockStep, LoweringStep
+from postproc.isg_family.machine_moves import absolute_machine_moves
 from postproc.lowering.structured_jumps import nest_jumps_keeping_equality
 from postproc.rs274.order_of_execution import stops_before_motion
 from postproc.setup.machine_setup import MachineSetup
@@ -105,8 +106,10 @@ class Isg(Dialect):
     ``#COMMENT BEGIN`` ... ``#COMMENT END`` block is not recognised as commented (refused: the safe side)."""
     PROGRAMS = True
     """P parameters, expressions, $IF/$SWITCH/$FOR/$WHILE/$DO/$REPEAT, $GOTO, %L/LL and L subroutines."""
-    LOWERING = (nest_jumps_keeping_equality, stops_before_motion, resolve_radius_where_d_cannot, select_tool_data)
-    """A spindle stop or coolant off that the source made before its block's motion goes in a block of
+    LOWERING = (nest_jumps_keeping_equality, stops_before_motion, resolve_radius_where_d_cannot, select_tool_data,
+                absolute_machine_moves)
+    """A run of moves in machine coordinates or reference returns under G91 is written after one G90, G91 again
+    where the program next reads it (``postproc.isg_family.machine_moves``). A spindle stop or coolant off that the source made before its block's motion goes in a block of
     its own before it (ISG acts on M05/M09 after the block's motion, as Fanuc [?]); a G41/G42 whose D
     would bring another length than the one in force becomes the compensated path where the source's
     rules are modelled (``resolve_radius_where_d_cannot``); another family's length and radius

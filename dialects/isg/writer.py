@@ -28,7 +28,7 @@ from postproc.dialect import Dialect
 from postproc.errors import UnsupportedError
 from postproc.expr import Expr
 from postproc.event_order import after_motion
-from postproc.ir import Block, Motion, Section
+from postproc.ir import Block, DistanceMode, Motion, Section
 from postproc.output.home_position import SECOND_RETURN, reference_problem, reference_target
 from postproc.rs274.codes import CodeTable
 from postproc.isg_family.taps import stroke_words
@@ -157,6 +157,10 @@ class IsgWriter(WordWriter):
         after = {k: v for k, v in sections.items() if k not in moving and k not in before}
         if "Sequence" in sections:
             before = {"Sequence": sections["Sequence"], **before}
+        own = before.get("DistanceMode")
+        say_absolute = isinstance(own, DistanceMode) and own.mode == "absolute" and motion.mode not in REFERENCE
+        if say_absolute:  # (``absolute_machine_moves``' G90 for a run of them): on the line of the modes
+            del before["DistanceMode"]
         text = self._part(block, before)
         if motion.mode in REFERENCE:
             if motion.axes and (self.modal.distance == "absolute" or any(v != 0 for v in motion.axes.values())):
@@ -165,8 +169,11 @@ class IsgWriter(WordWriter):
         else:
             target = dict(motion.axes)
         incremental = self.modal.distance != "absolute"
-        modes = ([self.code("distance", "absolute", "absolute distance mode", block)] if incremental else []) + [
-            self.code("motion", "rapid", "rapid motion", block)]
+        if say_absolute:
+            self.modal.distance = "absolute"
+        rapid = [] if self.modal.motion == "rapid" else [self.code("motion", "rapid", "rapid motion", block)]
+        modes = ([self.code("distance", "absolute", "absolute distance mode", block)]
+                 if incremental or say_absolute else []) + rapid
         words = []
         for axis, value in target.items():
             if not isinstance(value, (int, float)):
@@ -174,7 +181,7 @@ class IsgWriter(WordWriter):
             words.append(axis + self.number(float(value), axis))
             self.carry.pop(axis, None)
         if words:  # a return naming no axis moves none (Fanuc G28 alone): nothing to write for it
-            text += " ".join(modes) + "\n" + "#SUPPRESS OFFSETS " + " ".join(words) + "\n"
+            text += (" ".join(modes) + "\n" if modes else "") + "#SUPPRESS OFFSETS " + " ".join(words) + "\n"
             if incremental:
                 text += self.code("distance", "incremental", "incremental distance mode", block) + "\n"
         text += self._part(block, after)

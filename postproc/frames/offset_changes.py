@@ -8,6 +8,7 @@ own so that neither grows past one job (issue 30).
 
 from __future__ import annotations
 
+import math
 from typing import TYPE_CHECKING, Final
 
 from ..compensation.tool_length import ToolLength
@@ -16,6 +17,7 @@ from ..errors import PostprocError, ProgramError, UnsupportedError
 from ..expr import Expr
 from ..ir import Block, DataSetting, Section, ToolLengthOffset
 from ..ir.verbatim import STORED_WORK_OFFSET
+from ..setup.work_offsets import declared_offsets
 from .affine import XYZ
 from .words import COMPUTED, LINEAR, SYMBOLIC, note
 
@@ -74,6 +76,11 @@ def tool_change(ev: Evaluation, length: ToolLengthOffset) -> None:
     changes = {"Z": run.tools.offset - old_z}
     for axis in set(side) | set(old_side):
         changes[axis] = changes.get(axis, 0.0) + side.get(axis, 0.0) - old_side.get(axis, 0.0)
+    turn = _turn(ev)
+    if turn and ("X" in changes or "Y" in changes):
+        # the offsets are the machine's (unturned); the program point moves by them turned back [V: LinuxCNC
+        # convert_tool_length_offset, ``rotate(&dx, &dy, -settings->rotation_xy)``; rs274 run: g10_l1_l10.ngc]
+        changes["X"], changes["Y"] = _rotate(changes.get("X", 0.0), changes.get("Y", 0.0), -turn)
     run.sideways = side
     for axis, change in changes.items():
         here = p.get(axis)
@@ -86,14 +93,12 @@ def data_setting(ev: Evaluation, block: Block, s: dict[str, Section]) -> bool:
     the active system moves the program position (the tool stays)."""
     setting = s["DataSetting"]
     assert isinstance(setting, DataSetting)
+    if setting.table in MEASURED_ENTRIES and ev.frame is not None and not ev.frame.plain():
+        # the frame leaves the block: the entry it measures is worked out here, under the frame, and goes on
+        # as the whole entry it sets (``G10 L1``), which means the same without the frame
+        s["DataSetting"] = setting = measured_in_frame(ev, setting)
     if ev.ctx.length_at_axis and (setting.table in TOOL_TABLES or setting.table in MEASURED_ENTRIES):
         tool_entry(ev, setting)
-    if setting.table in MEASURED_ENTRIES and ev.frame is not None and not ev.frame.plain():
-        # the entry is the tool's point in the work system without the tool offset, less the values
-        # ([V] LinuxCNC convert_setup_tool): that point under the program's shift or rotation is not
-        # worked out here, so no entry is guessed
-        raise UnsupportedError("a tool entry measured where the tool stands, under a coordinate shift or rotation "
-                               "of the program's own, is not modelled")
     if not setting.table.startswith("work_offset"):
         return False
     values = setting.values
@@ -117,6 +122,8 @@ def data_setting(ev: Evaluation, block: Block, s: dict[str, Section]) -> bool:
             continue
         new = value * (ev.scale if axis in LINEAR else 1.0)
         old = known.get(axis)
+        if old is None and table == "work_offset":
+            old = _declared(ev, setting.index, axis)
         here = ev.p.get(axis)
         if active:
             ev.p[axis] = None if here is None or old is None else here + old - new
@@ -183,4 +190,93 @@ def _measured(ev: Evaluation, setting: DataSetting) -> DataSetting:
             return setting
         else:
             values[letter] = (here + offsets.get(letter, 0.0)) / ev.scale - float(value)
+    return DataSetting(setting.family, ENTRY, setting.index, values, False, setting.text)
+
+
+def _declared(ev: Evaluation, system: int, axis: str) -> float | None:
+    """A work system's offset before the program sets it, as the simulation takes it
+    (``postproc.simulate.moves.Moves._beyond``): the set-up's; every one zero where the set-up gives none; None
+    where it gives others but not this one."""
+    setup = ev.ctx.setup
+    declared = declared_offsets(setup, tuple(setup.machine.axes), False)
+    if not declared:
+        return 0.0
+    return declared.get(system, {}).get(axis)
+
+
+def _turn(ev: Evaluation) -> float:
+    """The active work system's XY rotation (rs274 ``G10 L2 R``, degrees); 0 under other rules."""
+    frame = ev.frame
+    if frame is None or frame.rules != "rs274":
+        return 0.0
+    return frame.turns.get(frame.work, 0.0)
+
+
+def _rotate(x: float, y: float, degrees: float) -> tuple[float, float]:
+    """(x, y) turned by ``degrees`` counter-clockwise (LinuxCNC ``Interp::rotate``)."""
+    t = math.radians(degrees)
+    c, s = math.cos(t), math.sin(t)
+    return x * c - y * s, x * s + y * c
+
+
+def measured_in_frame(ev: Evaluation, setting: DataSetting) -> DataSetting:
+    """A tool entry measured where the tool stands (``G10 L10``) under the program's G92/G52 offset and its
+    work system's rotation: the whole entry it sets (values in program units), as LinuxCNC works it out [V:
+    ``interp_convert.cc`` ``convert_setup_tool`` with ``interp_find.cc`` ``find_current_in_system_without_tlo``;
+    rs274 2.9.0~pre1 run on LinuxCNC's own ``g10_l1_l10.ngc`` here]. With ``t`` the point without the tool
+    offset in the system's unturned axes, ``t = p + R^-1 o`` (``p`` the program's current point, ``o`` the
+    entry in force; the G92 offset cancels), the entry is ``R (t - word)`` with X and Y both given; with X
+    alone ``R (t_x - X, 0)`` plus the old entry's part along the turned Y axis (with Y alone the converse);
+    Z ``t_z - Z``. Refused by name where a value it needs is not known here: work system 9's entry (``L11``),
+    another controller's frame, an unknown point or offset."""
+    if setting.table != "tool_entry_at_point":
+        raise UnsupportedError("a tool entry measured in work system 9 (G10 L11) under a coordinate shift or "
+                               "rotation of the program's own: that system's origin is the machine's, not known here")
+    frame = ev.frame
+    assert frame is not None
+    if frame.rules != "rs274":
+        raise UnsupportedError("a tool entry measured where the tool stands under another controller's frame")
+    run = ev.reached
+    if not run.tools_known or not run.table_known:
+        raise UnsupportedError(f"{setting.describe()}: the tool offset in force or the entry is not known here (a "
+                               "computed register or entry, or one the set-up does not give)")
+    scale = ev.scale
+    turn = _turn(ev)
+    length = run.tools.offset if run.tools is not None else 0.0
+    ox, oy = _rotate(run.sideways.get("X", 0.0), run.sideways.get("Y", 0.0), -turn)
+    words: dict[str, float] = {}
+    for letter, value in setting.values.items():
+        if isinstance(value, Expr):
+            raise UnsupportedError(f"a computed {letter} in {setting.describe()}: the entry is worked out here, "
+                                   "which needs the number")
+        words[letter] = float(value)
+    needed = ("X", "Y") if "X" in words or "Y" in words else ()
+    for axis in (*needed, *(("Z",) if "Z" in words else ())):
+        if ev.p.get(axis) is None:
+            raise UnsupportedError(f"{setting.describe()} where the tool's {axis} is not known here (after a reference "
+                                   "return, a move in machine coordinates, a cycle or a change of work offset): "
+                                   "program a move to a known point first")
+    values: dict[str, float | Expr] = {k: v for k, v in setting.values.items() if k not in XYZ}
+    if needed:
+        px, py = ev.p["X"], ev.p["Y"]
+        assert px is not None and py is not None
+        tx, ty = px + ox, py + oy
+        if "X" in words and "Y" in words:
+            ex, ey = _rotate(tx - words["X"] * scale, ty - words["Y"] * scale, turn)
+        else:
+            table = run.tools.table if run.tools is not None else None
+            old = table.across.get(setting.index, {}) if table is not None else {}
+            kx, ky = _rotate(old.get("X", 0.0), old.get("Y", 0.0), -turn)  # the old entry in the turned axes
+            if "X" in words:
+                kept = _rotate(0.0, ky, turn)
+                ex, ey = _rotate(tx - words["X"] * scale, 0.0, turn)
+            else:
+                kept = _rotate(kx, 0.0, turn)
+                ex, ey = _rotate(0.0, ty - words["Y"] * scale, turn)
+            ex, ey = ex + kept[0], ey + kept[1]
+        values["X"], values["Y"] = ex / scale, ey / scale
+    if "Z" in words:
+        pz = ev.p["Z"]
+        assert pz is not None
+        values["Z"] = (pz + length) / scale - words["Z"]
     return DataSetting(setting.family, ENTRY, setting.index, values, False, setting.text)

@@ -1,0 +1,63 @@
+"""Fanuc reference returns and G53 moves under G91, written for ISG and Fagor as their programmers write them
+(issue 26; ``postproc.isg_family.machine_moves``): one ``G90`` before a run of them, ``G91`` again where the
+program next reads the distance mode, and a zero-increment return (``G91 G28 Z0.``) written as the move to the
+set-up's home alone. Was: ``G91`` / ``G90 G00`` / ``#SUPPRESS OFFSETS Z0.`` / ``G91`` / ``G90 G00`` / ... .
+
+Expected texts are hand-written (home 0 on every axis: the set-up's); the property's oracle is the simulation
+of the Fanuc source (``verify``, deviation 0), independent of both writers.
+"""
+
+from __future__ import annotations
+
+from hypothesis import assume, given, settings
+
+from postproc.errors import ErrorList
+
+from tests.support.pair_checks import PairChecks
+from tests.test_fagor_machine_moves import SETUP, programs
+
+CHECK = PairChecks(SETUP)
+_translate, _verify = CHECK.translate, CHECK.verify
+
+RETURNS = "G21 G90\nG00 X10. Y5. Z5.\nG91 G28 Z0.\nG28 X0. Y0.\nG00 X1.\nG90\nG00 X1.\nM30\n"
+"""Two returns under G91, then an incremental move (the G91 is owed there) and G90."""
+
+
+def test_isg_writes_one_g90_and_g91_where_it_is_read() -> None:
+    out = _translate(RETURNS, "fanuc", "isg")
+    assert out.splitlines() == [
+        "G71 G90", "G00 X10. Y5. Z5.",
+        "G90 G00", "#SUPPRESS OFFSETS Z-12.5",
+        "G00", "#SUPPRESS OFFSETS X-400. Y-250.",
+        "G91 G00 X1.", "G90", "G00 X1.", "M30"]
+    _verify(RETURNS, out, "fanuc", "isg")
+
+
+def test_fagor_writes_one_g90_and_g91_where_it_is_read() -> None:
+    out = _translate(RETURNS, "fanuc", "fagor")
+    assert out.splitlines() == [
+        "G71 G90", "G00 X10. Y5. Z5.",
+        "G53 G90 G00 Z-12.5",
+        "G53 G00 X-400. Y-250.",
+        "G91 G00 X1.", "G90", "G00 X1.", "M30"]
+    _verify(RETURNS, out, "fanuc", "fagor")
+
+
+def test_a_return_with_an_increment_keeps_its_intermediate_move() -> None:
+    text = "G21 G90\nG00 X10. Y5. Z5.\nG91 G28 Z2.\nM30\n"
+    out = _translate(text, "fanuc", "isg")
+    assert out.splitlines()[2:6] == ["G91", "G00 Z2.", "G90 G00", "#SUPPRESS OFFSETS Z-12.5"]
+    _verify(text, out, "fanuc", "isg")
+
+
+@settings(max_examples=40, deadline=None)
+@given(programs())
+def test_machine_moves_and_reference_returns_keep_the_toolpath_to_isg_and_back(program: str) -> None:
+    try:
+        out = _translate(program, "fanuc", "isg")
+    except ErrorList as err:  # ISG applies a length at the next absolute Z: an incremental Z there is refused
+        assume("tool length change applies at the next move" not in str(err))
+        raise
+    _verify(program, out, "fanuc", "isg")
+    back = _translate(out, "isg", "fanuc")
+    _verify(program, back, "fanuc", "fanuc")
