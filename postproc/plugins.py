@@ -32,29 +32,37 @@ RESERVED_SETUP_TAGS = frozenset(("Templates", "Library", "MachineCodes", "CodeCa
 PROJECT = "postproc"
 
 
+def collect_dialects(pm: pluggy.PluginManager) -> dict[str, type[Dialect]]:
+    """Name -> dialect class, from every plugin's ``postproc_register_dialects``: each a named ``Dialect``,
+    no name given to two classes."""
+    dialects: dict[str, type[Dialect]] = {}
+
+    def register(cls: type) -> None:
+        if not (isinstance(cls, type) and issubclass(cls, Dialect) and cls.NAME):
+            raise TypeError(f"{cls!r} is not a named postproc Dialect")
+        known = dialects.get(cls.NAME)
+        if known is not None and known is not cls:
+            raise TypeError(f"dialect {cls.NAME!r} registered twice ({known.__module__}, {cls.__module__})")
+        dialects[cls.NAME] = cls
+
+    pm.hook.postproc_register_dialects(register=register)
+    return dialects
+
+
 class Registry:
     """Dialects and XML node classes contributed by the loaded plugins."""
 
     def __init__(self, pm: pluggy.PluginManager, factory: XFactory) -> None:
         self.pm = pm
         self.factory = factory
-        self.dialects: dict[str, type[Dialect]] = {}
         self.lowerings: list[Lowering] = []
         """Generic lowering steps, in registration order (``postproc_register_lowerings``)."""
         self.setup_groups: dict[str, type[SetupGroup]] = builtin_groups()
         """Element name -> set-up group class: the built-in groups, then the plugins' (``postproc_register_setup_groups``)."""
-        pm.hook.postproc_register_dialects(register=self._register_dialect)
+        self.dialects = collect_dialects(pm)
         pm.hook.postproc_register_xml(factory=factory)
         pm.hook.postproc_register_lowerings(register=self._register_lowering)
         pm.hook.postproc_register_setup_groups(register=self._register_setup_group)
-
-    def _register_dialect(self, cls: type) -> None:
-        if not (isinstance(cls, type) and issubclass(cls, Dialect) and cls.NAME):
-            raise TypeError(f"{cls!r} is not a named postproc Dialect")
-        known = self.dialects.get(cls.NAME)
-        if known is not None and known is not cls:
-            raise TypeError(f"dialect {cls.NAME!r} registered twice ({known.__module__}, {cls.__module__})")
-        self.dialects[cls.NAME] = cls
 
     def _register_lowering(self, step: Lowering) -> None:
         if not callable(step):
@@ -120,6 +128,15 @@ def make_plugin_manager(extra: Iterable[object] = (), entry_points: bool = True)
         pm.register(plugin)
     pm.check_pending()
     return pm
+
+
+def installed_dialects() -> dict[str, type[Dialect]]:
+    """The installed dialects (``postproc dialects``): the default registry's once it is made, else those of
+    the dialect hook alone, which imports the plugins' dialect classes but none of what the registry's
+    other hooks register (the core's syntax objects, cycles, frames and lowering steps: ``core_plugin``)."""
+    if default_registry.cache_info().currsize:
+        return default_registry().dialects
+    return collect_dialects(make_plugin_manager())
 
 
 @functools.cache

@@ -381,3 +381,12 @@ def test_the_managers_scan_finds_what_pluggys_finds():
         for name in dir(module):
             assert ours.parse_hookimpl_opts(module, name) == theirs.parse_hookimpl_opts(module, name), name
     assert ours.parse_hookimpl_opts(toy, "postproc_register_dialect") is not None  # misspelt: still found, refused
+
+
+def test_the_installed_dialects_are_the_registrys():
+    """``installed_dialects`` (the dialect hook alone, for ``postproc dialects``, while no registry is made) names
+    the same classes as the registry, and the registry's once it is made."""
+    from postproc.plugins import collect_dialects, installed_dialects
+    alone = collect_dialects(make_plugin_manager())
+    assert alone == default_registry().dialects and len(alone) >= 9
+    assert installed_dialects() is default_registry().dialects

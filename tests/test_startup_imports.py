@@ -231,3 +231,12 @@ def test_the_version_imports_no_command(tmp_path: Path) -> None:
     assert "postproc.commands.command_line" in modules  # the probe saw the run
     assert [name for name in ("postproc.commands.handlers", "postproc.commands.dialect_table", "postproc.api",
                               "postproc.plugins", "postproc.lowering", "dialects") if loaded(modules, name)] == []
+
+
+def test_listing_the_dialects_runs_only_the_dialect_hook(tmp_path: Path) -> None:
+    """``postproc dialects`` registers the dialects alone (``postproc.plugins.installed_dialects``): the core
+    plugin's syntax objects, cycles, frames and lowering steps are not imported (``postproc.core_plugin``)."""
+    modules = warm_modules_after(tmp_path, "dialects")
+    assert "postproc.core_plugin" in modules and "postproc.commands.dialect_table" in modules  # the probe saw the run
+    assert [name for name in ("postproc.cycles.lowering", "postproc.frames.lowering", "postproc.lowering.sequences",
+                              "postproc.patterns", "postproc.lowering.measured_entries") if loaded(modules, name)] == []

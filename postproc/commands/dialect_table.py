@@ -13,13 +13,13 @@ import sys
 from typing import Any, Mapping
 
 from ..dialect import Dialect, Lazy
-from ..plugins import default_registry
+from ..plugins import installed_dialects
 
 
 
 def cmd_dialects(args: argparse.Namespace) -> int:
     """``postproc dialects [--format table|json]``."""
-    info = dialect_info(default_registry().dialects)
+    info = dialect_info(installed_dialects())
     if args.format == "json":
         import json
         print(json.dumps(info, indent=2))
