@@ -47,7 +47,7 @@ from ..errors import PostprocError, ProgramError
 from ..control import ASSIGN, CONTROL
 from ..expr import Binary, Expr, Num
 from ..ir import Block, CompoundMotion, CutterCompensation, Motion, Section
-from ..ir.keys import only_move
+from ..ir.keys import watches_none
 from ..state import MM_PER_INCH, ModalState, changes_nothing
 from .affine import EXACT, INDEX, XYZ
 from .frame import PLANE_AXES, Frame, Position
@@ -116,7 +116,7 @@ class FrameEvaluator:
             if not s:
                 yield block
                 continue
-            if self.frame is None and (only_move(s) or _unwatched(s, watched)):
+            if self.frame is None and watches_none(s, watched):
                 m = s.get("Motion")
                 if m is None:
                     if self.reached.symbolic:
@@ -480,15 +480,6 @@ _WATCHED: Final = frozenset(("Units", "Plane", "DistanceMode", "WorkOffset", "Da
                              "ToolLengthOffset", "DynamicCutterCompensation"))
 """Sections that make a block more than a move to follow, before any frame."""
 _MOVES: Final = frozenset(("rapid", "linear", "cw", "ccw"))
-
-
-def _unwatched(sections: dict[str, Section], watched: frozenset[str]) -> bool:
-    """No key of the block is in ``watched``: a loop over its two or three keys (compiled,
-    ``watched.isdisjoint(sections)`` is a bound method call, ~800 instructions a block)."""
-    for key in sections:
-        if key in watched:
-            return False
-    return True
 
 
 _SHIFTING: Final = frozenset(("fine_bore", "back_bore"))

@@ -33,7 +33,7 @@ from postproc.dialect import Dialect
 from postproc.grbl_family.dialect import GrblFamily
 from postproc.errors import PostprocError, UnsupportedError
 from postproc.ir import Block, Comments, DataSetting, Section, ToolLengthOffset, Units
-from postproc.ir.keys import only_move
+from postproc.ir.keys import watches_none
 
 MM_PER_INCH: Final = 25.4
 _WATCHED: Final = frozenset(("ToolLengthOffset", "DataSetting", "Units"))
@@ -53,7 +53,7 @@ def _write_tool_lengths(blocks: Iterator[Block], ctx: Context, modes: tuple[str,
     inch = False  # every controller here powers on in mm (``ModalState``), as the simulation starts
     for block in blocks:
         sections = block.sections
-        if _unwatched(sections):
+        if watches_none(sections, _WATCHED):
             yield block
             continue
         before = inch
@@ -72,18 +72,6 @@ def _write_tool_lengths(blocks: Iterator[Block], ctx: Context, modes: tuple[str,
             yield from _dynamic(block, ctx, table, offset, inch, before)
         except PostprocError as err:
             ctx.diagnostics.error(err.located(at))
-
-
-def _unwatched(sections: dict[str, Section]) -> bool:
-    """No key of the block is in ``_WATCHED``: a loop over its two or three keys (compiled,
-    ``_WATCHED.isdisjoint(sections)`` is a bound method call, ~800 instructions a block), after the cheaper
-    test of the commonest block (``only_move``)."""
-    if only_move(sections):
-        return True
-    for key in sections:
-        if key in _WATCHED:
-            return False
-    return True
 
 
 def _dynamic(block: Block, ctx: Context, table: ToolTable, offset: ToolLengthOffset, inch: bool,

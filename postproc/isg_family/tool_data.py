@@ -45,6 +45,7 @@ from ..control import CONTROL
 from ..errors import Location, PostprocError, UnsupportedError
 from ..expr import Expr
 from ..ir import Block, CutterCompensation, DataSetting, DistanceMode, Motion, ToolLengthOffset, Units
+from ..ir.keys import watches_none
 
 SELECTED_KEY: Final = "isg_family.tool_data"
 """``ModalState.extra`` key of the D selected while reading (an int or an expression)."""
@@ -179,7 +180,7 @@ def _select(blocks: Iterator[Block], ctx: Context, toggles: bool, later_z: bool 
                     "the tool length changed before is applied by this incremental Z move on the target (when "
                     "the axis moves [?]), on the source's controller only at the next absolute Z: program Z "
                     "absolutely here", ctx.at(block, ctx.column_of(block, "Z"))))
-        if _unwatched(sections):
+        if watches_none(sections, _WATCHED):
             yield block
             continue
         units = sections.get("Units")
@@ -200,15 +201,6 @@ def _select(blocks: Iterator[Block], ctx: Context, toggles: bool, later_z: bool 
                 ctx.diagnostics.error(err.located(at))
                 continue
         yield block
-
-
-def _unwatched(sections: dict[str, Any]) -> bool:
-    """No section of the block is one ``_select`` follows (most blocks: a move). A loop over the block's
-    few keys: compiled, cheaper than ``_WATCHED.isdisjoint``, a bound method call (``state.changes_nothing``)."""
-    for key in sections:
-        if key in _WATCHED:
-            return False
-    return True
 
 
 def _register(value: int | Expr | None, what: str) -> int | None:

@@ -36,7 +36,7 @@ from ..ir import (
     Block, Comments, CompoundMotion, DistanceMode, Motion, Plane, ProgramControl, Section, SpindleControl,
     ToolLengthOffset, ToolSelect,
 )
-from ..ir.keys import only_move
+from ..ir.keys import watches_none
 from ..state import PLANE_AXES
 from .order_of_execution import split_stops_after_motion, stops_after_motion
 
@@ -98,13 +98,7 @@ def _lean_controller(blocks: Iterator[Block], ctx: Context, pause: bool) -> Iter
     circles = _FullCircles()
     for block in blocks:
         sections = block.sections
-        quiet = True
-        if not only_move(sections):
-            for key in sections:
-                if key in _LEAN_WATCHED:
-                    quiet = False
-                    break
-        if quiet:
+        if watches_none(sections, _LEAN_WATCHED):
             arc = sections.get("Motion")
             if not isinstance(arc, Motion) or (arc.mode != "cw" and arc.mode != "ccw"):
                 yield block  # a straight move, a block number, a feed rate: no step changes it
