@@ -1,4 +1,6 @@
-# Two entry points a fresh machine needs: `make run` and `make test` (see README.md).
+# Two entry points a fresh machine needs: `make run` and `make test` (see README.md). `make run` shows the tool
+# working on the pure-Python build: it does not compile the hot path, three quarters of a fresh install's CPU
+# time (docs/compiled.md); `make install` (and `make test`, `make bench`, which need it) compiles it.
 PYTHON ?= python3
 VENV   := .venv
 BIN    := $(VENV)/bin
@@ -8,7 +10,7 @@ PLUGINS := $(wildcard plugins/*/pyproject.toml)
 HOT    := $(shell sed -n '/^compiled = \[/,/^\]/p' pyproject.toml | grep -o '"[^"]*\.py"' | tr -d '"')
 NATIVE := $(VENV)/.compiled
 
-.PHONY: install compile run test bench typecheck fuzz clean
+.PHONY: install compile bytecode run test bench typecheck fuzz clean
 
 # The build's own requirements (pyproject.toml [build-system] requires: setuptools, the pinned mypy, pydantic),
 # installed into the venv once, so that no pip install below makes a throw-away build environment of its
@@ -19,37 +21,42 @@ BUILD_REQUIRES = $(shell $(PYTHON) -c 'import tomllib; print(" ".join(chr(39) + 
 # Each step says what it does and, when done, how long it took (wall seconds: on a loaded machine CPU
 # seconds are the figure to compare, docs/compiled.md).
 $(STAMP): pyproject.toml setup.py $(PLUGINS)
-	@echo "make: [1/3] creating $(VENV): postproc, its plugins, their dependencies and the build tools (about a minute)"
+	@echo "make: [venv] creating $(VENV): postproc, its plugins, their dependencies and the build tools (about a minute)"
 	@start=$$(date +%s) && set -x && \
 	$(PYTHON) -m venv $(VENV) && \
-	$(BIN)/pip install --quiet --upgrade pip && \
 	$(BIN)/pip install --quiet $(BUILD_REQUIRES) && \
 	POSTPROC_PURE=1 PYTHONWARNINGS=ignore::UserWarning $(BIN)/pip install --quiet --no-build-isolation -e '.[test,render,dask]' $(foreach p,$(PLUGINS),-e $(dir $(p))) && \
-	{ set +x; } 2>/dev/null && echo "make: [1/3] $(VENV) made in $$(( $$(date +%s) - start )) s"
+	{ set +x; } 2>/dev/null && echo "make: [venv] $(VENV) made in $$(( $$(date +%s) - start )) s"
 	touch $(STAMP)
 
 # Compiles the hot path (pure Python where there is no C compiler), again when a hot module is edited
 # (meanwhile postproc runs it as pure Python: postproc --version says which). mypyc type-checks and writes
 # a C file a module (about a minute on one core), then the C compiler runs on every core (setup.py).
 $(NATIVE): $(STAMP) $(HOT)
-	@echo "make: [2/3] compiling the $(words $(HOT)) hot modules with mypyc: type-checking, then C on $$(nproc) cores (a few minutes; postproc already runs, as pure Python)"
+	@echo "make: [compile] compiling the $(words $(HOT)) hot modules with mypyc: type-checking, then C on $$(nproc) cores (a few minutes; postproc already runs, as pure Python)"
 	@start=$$(date +%s); PYTHONWARNINGS=ignore::UserWarning $(BIN)/pip install --quiet --no-deps --no-build-isolation -e . && \
-	  echo "make: [2/3] compiled in $$(( $$(date +%s) - start )) s: $$($(BIN)/postproc --version)"
+	  echo "make: [compile] compiled in $$(( $$(date +%s) - start )) s: $$($(BIN)/postproc --version)"
 	touch $(NATIVE)
 
 # Byte-compile the editable packages (core, dialects, plugins) once, so that a start does not compile
 # them again: pip compiles what it copies into site-packages, not an editable source tree, and where
 # PYTHONDONTWRITEBYTECODE is set no run writes a .pyc. compileall writes them even then, and skips the
-# files whose .pyc is up to date: cheap to repeat after an edit (make test does).
-compile: $(NATIVE)
-	@echo "make: [3/3] byte-compiling the core, the dialects and the plugins (what is up to date is skipped)"
-	@start=$$(date +%s) && $(BIN)/python -m compileall -q postproc dialects $(foreach p,$(PLUGINS),$(dir $(p))) && \
-	  echo "make: [3/3] byte code written in $$(( $$(date +%s) - start )) s"
+# files whose .pyc is up to date: cheap to repeat after an edit (make test does). On every core (-j 0).
+bytecode: $(STAMP)
+	@echo "make: [byte code] byte-compiling the core, the dialects and the plugins (what is up to date is skipped)"
+	@start=$$(date +%s) && $(BIN)/python -m compileall -q -j 0 postproc dialects $(foreach p,$(PLUGINS),$(dir $(p))) && \
+	  echo "make: [byte code] written in $$(( $$(date +%s) - start )) s"
+
+compile: $(NATIVE) bytecode
 
 install: compile
 
-run: install
+# The examples on whichever build is installed: pure Python on a fresh machine (identical results; the
+# compiled hot path only runs faster), compiled once `make install` has run.
+run: bytecode
+	@echo "make: [examples] translating and verifying the bundled examples: $$($(BIN)/postproc --version)"
 	bash examples/run.sh
+	@echo "make: [examples] done; 'make install' compiles the hot path (a few minutes), which 'make test' and 'make bench' do too"
 
 # The whole suite against the compiled hot path, then against the pure-Python fallback (skipped where
 # nothing was compiled: the first run was pure already). Each run spreads its tests over every core

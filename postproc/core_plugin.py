@@ -1,44 +1,35 @@
-"""The core's own plugin: registers the neutral syntax objects and configuration nodes."""
+"""The core's own plugin: registers the neutral syntax objects and configuration nodes, and the lowering steps
+every translation runs.
+
+Each hook imports what it registers when it runs, not this module at its top: the plugin is registered with
+every manager, and ``postproc dialects`` (``postproc.plugins.installed_dialects``) runs no hook of it, so it
+does not import the syntax objects, cycles, frames and lowering steps (about a fifth of its start-up).
+"""
 
 from __future__ import annotations
 
-from typing import Callable
+from typing import TYPE_CHECKING, Callable
 
-from . import cycles, patterns
-from .block_rules import check_blocks
-from .lowering.machine_functions import drop_foreign_machine_functions
-from .lowering.program_end import comment_after_end
-from .lowering.measured_entries import write_measured_entries
-from .lowering.sideways_offsets import write_sideways_offsets
-from .lowering.tool_entries import write_tool_entries
-from .lowering.program_frame import frame_program
-from .control import register_control
-from .cycles.lathe_lowering import expand_lathe_cycles
-from .rs274.lathe_tool_index import index_turret
-from .cycles.lowering import expand_canned_cycles
 from .hookspecs import hookimpl
-from .lowering.inverse_time import convert_inverse_time
-from .syntaxes.program import ProgramSyntax
-from .expr import register_expressions
-from .frames import evaluate_frames, register_frames
-from .ir import register_sections
-from .lathe_sections import register_lathe_sections
-from .lowering.lower import Lowering
-from .setup.machine_setup import MachineSetup
-from .syntax import Pipeline
-from .syntaxes.modal_state import ModalStateSyntax
-from .cycles.rigid_tap_lowering import resolve_rigid_taps
-from .lowering.deferred import resolve_dynamic_cutter_compensation
-from .lowering.length_timing import time_length_changes
-from .lowering.path_at_start import carry_path_at_start
-from .lowering.units_at_start import write_units_at_start
-from .lowering.stored_offsets import hold_stored_offsets
-from .synchronised_tap import RigidTap
-from .xmlio import XFactory
+
+if TYPE_CHECKING:
+    from .lowering.lower import Lowering
+    from .xmlio import XFactory
 
 
 @hookimpl
 def postproc_register_xml(factory: XFactory) -> None:
+    from . import cycles, patterns
+    from .control import register_control
+    from .synchronised_tap import RigidTap
+    from .expr import register_expressions
+    from .frames import register_frames
+    from .ir import register_sections
+    from .lathe_sections import register_lathe_sections
+    from .setup.machine_setup import MachineSetup
+    from .syntax import Pipeline
+    from .syntaxes.modal_state import ModalStateSyntax
+    from .syntaxes.program import ProgramSyntax
     register_sections(factory)
     register_lathe_sections(factory)
     register_expressions(factory)
@@ -57,6 +48,25 @@ def postproc_register_xml(factory: XFactory) -> None:
 
 @hookimpl
 def postproc_register_lowerings(register: Callable[[Lowering], None]) -> None:
+    from . import patterns
+    from .block_rules import check_blocks
+    from .cycles.lathe_lowering import expand_lathe_cycles
+    from .cycles.lowering import expand_canned_cycles
+    from .cycles.rigid_tap_lowering import resolve_rigid_taps
+    from .frames import evaluate_frames
+    from .lowering.deferred import resolve_dynamic_cutter_compensation
+    from .lowering.inverse_time import convert_inverse_time
+    from .lowering.length_timing import time_length_changes
+    from .lowering.machine_functions import drop_foreign_machine_functions
+    from .lowering.measured_entries import write_measured_entries
+    from .lowering.path_at_start import carry_path_at_start
+    from .lowering.program_end import comment_after_end
+    from .lowering.program_frame import frame_program
+    from .lowering.sideways_offsets import write_sideways_offsets
+    from .lowering.stored_offsets import hold_stored_offsets
+    from .lowering.tool_entries import write_tool_entries
+    from .lowering.units_at_start import write_units_at_start
+    from .rs274.lathe_tool_index import index_turret
     register(check_blocks)  # first: it sees every expansion before a native target's are dropped
     register(patterns.expand_hole_patterns)  # before the cycles: it makes a repeat of the cycle per point
     register(evaluate_frames)  # before the cycles: a cycle under a frame is expanded at carried points

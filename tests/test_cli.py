@@ -12,6 +12,7 @@ from pathlib import Path
 import pytest
 
 import postproc.commands.command_line
+import postproc.commands.dialect_table
 import postproc.commands.progress
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -139,7 +140,7 @@ def test_internal_errors_are_reported_briefly(cli, monkeypatch):
     def boom(args):
         raise RuntimeError("boom")
 
-    monkeypatch.setattr(postproc.commands.command_line, "cmd_dialects", boom)
+    monkeypatch.setattr(postproc.commands.dialect_table, "cmd_dialects", boom)
     monkeypatch.delenv("POSTPROC_DEBUG", raising=False)
     result = cli("dialects")
     assert result.status == 1
@@ -150,7 +151,7 @@ def test_postproc_debug_shows_the_traceback(cli, monkeypatch):
     def boom(args):
         raise RuntimeError("boom")
 
-    monkeypatch.setattr(postproc.commands.command_line, "cmd_dialects", boom)
+    monkeypatch.setattr(postproc.commands.dialect_table, "cmd_dialects", boom)
     monkeypatch.setenv("POSTPROC_DEBUG", "1")
     with pytest.raises(RuntimeError, match="boom"):
         cli("dialects")

@@ -355,3 +355,38 @@ def test_example_plugin_reads_its_own_programs(cli):
     result = cli("translate", program, "--from", "mach3", "--to", "mach3")
     assert result.status == 0, result.err
     assert result.out == program.read_bytes()
+
+
+def test_the_managers_scan_finds_what_pluggys_finds():
+    """``postproc.plugins.PluginManager`` cuts pluggy's scan of a module short: on every installed plugin module
+    (and a toy one with a marked function, a misspelt marked one, a static method and a class), for every name,
+    it answers as pluggy's own ``parse_hookimpl_opts``."""
+    import types
+
+    from postproc import core_plugin
+    from postproc.entry_points import entry_points as installed, load
+    from postproc.plugins import PluginManager
+
+    toy = types.ModuleType("toy_plugin")
+    exec("from postproc.hookspecs import hookimpl\n"
+         "@hookimpl\ndef postproc_register_dialects(register): pass\n"
+         "@hookimpl\ndef postproc_register_dialect(register): pass\n"
+         "def helper(): pass\n"
+         "class Thing:\n    pass\n"
+         "marked = staticmethod(postproc_register_dialects)\n", vars(toy))
+    ours, theirs = PluginManager(PROJECT), pluggy.PluginManager(PROJECT)
+    modules = [core_plugin, toy, *(load(value) for _, value in installed(PROJECT))]
+    assert len(modules) > 5
+    for module in modules:
+        for name in dir(module):
+            assert ours.parse_hookimpl_opts(module, name) == theirs.parse_hookimpl_opts(module, name), name
+    assert ours.parse_hookimpl_opts(toy, "postproc_register_dialect") is not None  # misspelt: still found, refused
+
+
+def test_the_installed_dialects_are_the_registrys():
+    """``installed_dialects`` (the dialect hook alone, for ``postproc dialects``, while no registry is made) names
+    the same classes as the registry, and the registry's once it is made."""
+    from postproc.plugins import collect_dialects, installed_dialects
+    alone = collect_dialects(make_plugin_manager())
+    assert alone == default_registry().dialects and len(alone) >= 9
+    assert installed_dialects() is default_registry().dialects

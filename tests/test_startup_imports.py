@@ -177,7 +177,10 @@ def test_a_translation_imports_only_its_own_dialects_modules(tmp_path: Path, one
 def test_listing_the_dialects_loads_no_xml_parser(tmp_path: Path) -> None:
     """Every module that reads or writes XML imports lxml on first use."""
     modules = warm_modules_after(tmp_path, "dialects")
-    assert "postproc.xmlio" in modules and "postproc.output.outfile" in modules  # the probe saw them imported
+    assert "postproc.xmlio" in modules and "postproc.commands.dialect_table" in modules  # the probe saw the run
+    # nor the translating commands' modules (``command_line.handler`` imports the one command's)
+    assert [name for name in ("postproc.commands.handlers", "postproc.api", "postproc.output.outfile")
+            if name in modules] == []
     assert [name for name in NOT_AT_START + ONLY_FOR_XML if loaded(modules, name)] == []
 
 
@@ -219,3 +222,21 @@ def test_listing_the_dialects_imports_no_reader_or_writer(tmp_path: Path) -> Non
     loaded_io = sorted(name for name in modules if name.startswith(("dialects.", "postproc_"))
                        and name.rpartition(".")[2] in ("reader", "writer", "lathe_writer"))
     assert loaded_io == []
+
+
+def test_the_version_imports_no_command(tmp_path: Path) -> None:
+    """``postproc --version`` builds the parser only: no command's handler (``command_line.handler``), so none
+    of the translation's modules, the registry or the plugins."""
+    modules = modules_after(tmp_path, "--version")
+    assert "postproc.commands.command_line" in modules  # the probe saw the run
+    assert [name for name in ("postproc.commands.handlers", "postproc.commands.dialect_table", "postproc.api",
+                              "postproc.plugins", "postproc.lowering", "dialects") if loaded(modules, name)] == []
+
+
+def test_listing_the_dialects_runs_only_the_dialect_hook(tmp_path: Path) -> None:
+    """``postproc dialects`` registers the dialects alone (``postproc.plugins.installed_dialects``): the core
+    plugin's syntax objects, cycles, frames and lowering steps are not imported (``postproc.core_plugin``)."""
+    modules = warm_modules_after(tmp_path, "dialects")
+    assert "postproc.core_plugin" in modules and "postproc.commands.dialect_table" in modules  # the probe saw the run
+    assert [name for name in ("postproc.cycles.lowering", "postproc.frames.lowering", "postproc.lowering.sequences",
+                              "postproc.patterns", "postproc.lowering.measured_entries") if loaded(modules, name)] == []

@@ -68,11 +68,7 @@ def read_line(raw: str, number: int, ctx: Context) -> Block:
             if sequence >= 0:
                 block.sections["Sequence"] = Sequence(sequence)
             if kind & CODES and ("M9" in text or "G6" in text):
-                try:
-                    read_call(block, ctx)
-                except PostprocError as err:
-                    ctx.diagnostics.error(err, text)
-                    return Block(number, text, eol)
+                return _with_call(block, ctx, number, text, eol)
             return block
         # Otherwise a block of words only, once checked it is.
         if "(" not in text and ")" not in text and "/" not in text and WORDS_ONLY.fullmatch(text):
@@ -83,11 +79,7 @@ def read_line(raw: str, number: int, ctx: Context) -> Block:
                 if first == "N":
                     block.sections["Sequence"] = Sequence(int(num))
                 if "M9" in text or "G6" in text or "m9" in text or "g6" in text:
-                    try:
-                        read_call(block, ctx)
-                    except PostprocError as err:
-                        ctx.diagnostics.error(err, text)
-                        return Block(number, text, eol)
+                    return _with_call(block, ctx, number, text, eol)
                 return block
     try:
         if EOF_BYTE in text or number == 1 and text[:1] == BOM:
@@ -101,3 +93,14 @@ def read_line(raw: str, number: int, ctx: Context) -> Block:
     except PostprocError as err:
         ctx.diagnostics.error(err, text)
         return Block(number, text, eol)
+
+
+def _with_call(block: Block, ctx: Context, number: int, text: str, eol: str) -> Block:
+    """``block`` with the macro or subprogram call it makes read (``read_call``: G65, M98, ...); a call the reader
+    refuses is reported and the line kept as text only, as any refused line."""
+    try:
+        read_call(block, ctx)
+    except PostprocError as err:
+        ctx.diagnostics.error(err, text)
+        return Block(number, text, eol)
+    return block

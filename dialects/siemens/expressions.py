@@ -364,3 +364,10 @@ def spell_expr(expr: Expr, outer: int = _TOP) -> str:
         text = f"{left}{sep}{right}"
         return f"({text})" if outer > prec else text
     raise UnsupportedError(f"an expression {type(expr).__name__} has no SINUMERIK spelling")
+
+
+def plain_number(text: str) -> bool:
+    """A number an address takes without ``=`` (``X10``, ``X-2.5``; an expression needs ``X=..``): digits with at
+    most one point, after an optional sign. The reader's words and the frame statements' values read it alike."""
+    body = text[1:] if text[:1] in "+-" else text
+    return bool(body) and body.replace(".", "", 1).isdigit()

@@ -31,7 +31,7 @@ from postproc.frames.section import FrameChange
 from postproc.isg_family.expressions import Unmodelled
 from postproc.rs274.expressions import skip_blanks
 
-from .expressions import parse_expr
+from .expressions import parse_expr, plain_number
 
 STATEMENTS: Final = {
     "TRANS": "local", "ATRANS": "local_add", "ROT": "rotate", "AROT": "rotate_add",
@@ -63,7 +63,7 @@ def read_frame(word: str, code: str, pos: int, end: int, file: str, line: int) -
         elif letter == "RPL":
             raise ParseError("RPL takes '=': RPL=30", Location(file, line, start + 1))
         stop, value = parse_expr(code, start + 1 if code[start:start + 1] == "=" else start)
-        if not isinstance(value, Num) or code[start:start + 1] != "=" and not _plain(code[start:stop].strip()):
+        if not isinstance(value, Num) or code[start:start + 1] != "=" and not plain_number(code[start:stop].strip()):
             raise Unmodelled(f"{word} with computed values", at)
         values[letter] = value.value
         at = skip_blanks(code, stop)
@@ -89,7 +89,3 @@ def _words(word: str, kind: str, values: dict[str, float], pos: int) -> dict[str
     return {_ABOUT[a]: v for a, v in turning.items()}
 
 
-def _plain(text: str) -> bool:
-    """A number as an address takes it without ``=``: ``X10``, ``X-2.5`` (an expression needs ``X=..``)."""
-    body = text[1:] if text[:1] in "+-" else text
-    return bool(body) and body.replace(".", "", 1).isdigit()

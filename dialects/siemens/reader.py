@@ -66,7 +66,7 @@ from .frame_suppression import SiemensSupa
 from .helix import MAX_TURNS, SiemensTurn
 from .frames import STATEMENTS as FRAME_STATEMENTS, read_frame
 from .holes import PARAMETERS as HOLES
-from .expressions import name_at, parse_expr, parse_variable
+from .expressions import name_at, parse_expr, parse_variable, plain_number
 from .keywords import describe
 
 SKIP_LEVELS = 9
@@ -461,7 +461,7 @@ class _State(CallReading, ControlReading):
         text = code[at:end].strip()
         if mode:
             text = text[1:-1].strip() if text.startswith("(") and text.endswith(")") else text
-        if isinstance(value, Num) and _plain(text):
+        if isinstance(value, Num) and plain_number(text):
             block.words.append((letter, text))
         else:
             block.words.append((letter, text))
@@ -479,11 +479,6 @@ class _State(CallReading, ControlReading):
                 continue
             raise Unmodelled(f"{letter}={mode}(..) (a per-address distance mode; written plain in a block "
                              f"with the same G90/G91 it is read)", pos)
-
-
-def _plain(text: str) -> bool:
-    body = text[1:] if text[:1] in "+-" else text
-    return bool(body) and body.replace(".", "", 1).isdigit()
 
 
 def _strip_comment(text: str) -> tuple[str, str | None]:

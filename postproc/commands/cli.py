@@ -14,7 +14,7 @@ from .. import native
 native.install()  # the compiled hot path, before any of its modules is imported
 
 from ..errors import ErrorList, PostprocError, UsageError
-from .command_line import build_parser
+from .command_line import build_parser, handler
 
 EXIT_INTERRUPTED = 128 + signal.SIGINT
 EXIT_TERMINATED = 128 + signal.SIGTERM
@@ -62,11 +62,11 @@ def _signals_raise() -> Iterator[None]:
 def _main(argv: Sequence[str] | None) -> int:
     parser = build_parser()
     args = parser.parse_args(argv)
-    if not getattr(args, "run", None):
+    if not args.command:
         parser.print_help(sys.stderr)
         return 2
     try:
-        return int(args.run(args))
+        return int(handler(args.command)(args))
     except UsageError as err:
         print(f"postproc: {err.message}", file=sys.stderr)
         return 2

@@ -1,18 +1,36 @@
 """The command line's grammar: every command with its options, their help and examples, and the checks of an
-option's text that argparse reports as wrong usage (exit 2). What each command does is in ``handlers``."""
+option's text that argparse reports as wrong usage (exit 2). What each command does is in ``handlers``
+(``postproc dialects``: ``dialect_table``), imported by ``handler`` for the command that runs: building the
+parser imports none of them, so ``postproc dialects`` and ``--version`` do not load the translation's modules
+(``postproc.api``, the lowering steps, frames, cycles), which the handlers and the option checks of
+``--arcs`` and ``--transform`` import."""
 
 from __future__ import annotations
 
 import argparse
+import importlib
 import math
 import os
 import sys
+from typing import TYPE_CHECKING, Callable
 
 from .. import native
-from ..errors import UsageError
-from ..lowering.arcs import ArcOption, parse_arc_option
-from ..transforms.spec import transform_argument
-from .handlers import cmd_config, cmd_dialects, cmd_info, cmd_ir, cmd_toolpath, cmd_translate, cmd_verify
+
+if TYPE_CHECKING:  # imported by the checks that use them (see the module docstring)
+    from ..lowering.arcs import ArcOption
+    from ..transforms.spec import ProgramTransform
+
+HANDLERS = {"translate": "handlers:cmd_translate", "toolpath": "handlers:cmd_toolpath",
+            "verify": "handlers:cmd_verify", "ir": "handlers:cmd_ir", "info": "handlers:cmd_info",
+            "dialects": "dialect_table:cmd_dialects", "config": "handlers:cmd_config"}
+"""Each command's function, as ``module:name`` in ``postproc.commands``."""
+
+
+def handler(command: str) -> Callable[[argparse.Namespace], int]:
+    """The function that runs ``command`` (a key of ``HANDLERS``), its module imported now."""
+    module, _, name = HANDLERS[command].partition(":")
+    found: Callable[[argparse.Namespace], int] = getattr(importlib.import_module(f"{__package__}.{module}"), name)
+    return found
 
 
 EXAMPLES = {
@@ -149,10 +167,9 @@ def build_parser() -> argparse.ArgumentParser:
                         "form (R); a program that computes is flattened (see docs/cli.md)")
     _batch_arguments(t)
     t.add_argument("--units", choices=("mm", "inch"), help="convert the whole program to these units")
-    t.add_argument("--transform", type=transform_argument, metavar="OPS",
+    t.add_argument("--transform", type=_transform, metavar="OPS",
                    help="move the whole program: 'translate DX,DY[,DZ]', 'rotate DEG [about X,Y] [in xy|zx|yz]', "
                         "'mirror x|y|z.. [about V]', 'scale S[,SY,SZ] [about X,Y,Z]', joined by ';' (mm, degrees)")
-    t.set_defaults(run=cmd_translate)
 
     tp = command("toolpath", "simulate a program and export its toolpath",
                  "Simulate a program and write its toolpath: JSON lines (end points in mm, arcs with centres, "
@@ -167,7 +184,6 @@ def build_parser() -> argparse.ArgumentParser:
                     help="jsonl (default), svg or png (png needs -o)")
     tp.add_argument("-o", "--output", metavar="OUT", help=OUTPUT)
     tp.add_argument("--arg", action="append", default=[], metavar="LETTER=VALUE", help=ARG)
-    tp.set_defaults(run=cmd_toolpath)
 
     v = command("verify", "compare the toolpaths of a program and its translation",
                 "Simulate a program and its translation and report the largest deviation between their "
@@ -189,12 +205,11 @@ def build_parser() -> argparse.ArgumentParser:
                         "PNG with the render extra); written whatever the verdict")
     v.add_argument("--arg", action="append", default=[], metavar="LETTER=VALUE", help=ARG)
     v.add_argument("--units", choices=("mm", "inch"), help="OUT was translated with --units (both paths are in mm)")
-    v.add_argument("--transform", type=transform_argument, metavar="OPS",
+    v.add_argument("--transform", type=_transform, metavar="OPS",
                    help="OUT was translated with this --transform: IN's path is moved by it before comparing")
     v.add_argument("--arcs", type=_arcs, metavar="lines:TOL|ijk|r",
                    help="OUT was translated with --arcs: with lines:TOL its chords may lie within TOL mm of IN's "
                         "arcs (each checked against its arc); ijk and r change nothing to compare")
-    v.set_defaults(run=cmd_verify)
 
     i = command("ir", "print a program's IR as XML",
                 "Read a program and write its dialect-neutral IR as XML (one element per block).")
@@ -202,7 +217,6 @@ def build_parser() -> argparse.ArgumentParser:
     i.add_argument("--dialect", required=True, metavar="DIALECT", help="dialect of IN")
     i.add_argument("--machine", metavar="M.xml", help=MACHINE)
     i.add_argument("-o", "--output", metavar="OUT", help=OUTPUT)
-    i.set_defaults(run=cmd_ir)
 
     n = command("info", "report a program's extent, tools, run time, holes, features and targets",
                 "Simulate a program and report what a machinist asks before running it: its extent per axis (in "
@@ -215,14 +229,12 @@ def build_parser() -> argparse.ArgumentParser:
     n.add_argument("--lib", action="append", default=[], metavar="DIR", help=LIB)
     n.add_argument("--format", choices=("text", "json"), default="text",
                    help="text (default, for people) or json (for tools; the schema is in docs/cli.md)")
-    n.set_defaults(run=cmd_info)
 
     d = command("dialects", "list installed dialects and their capabilities",
                 "List the installed dialects: what each reads and writes and its capability table.")
     d.add_argument("--format", choices=("table", "json"), default="table",
                    help="table (default, for people) or json (for tools)")
     d.add_argument("--json", dest="format", action="store_const", const="json", help="the same as --format json")
-    d.set_defaults(run=cmd_dialects)
 
     c = command("config", "check or dump a machine set-up",
                 "Check a machine set-up (every error with its line; templates rendered with sample values) "
@@ -233,7 +245,6 @@ def build_parser() -> argparse.ArgumentParser:
                    help="a variable the templates are checked with (as translate --define)")
     c.add_argument("--flatten", action="store_true",
                    help="dump: write the set-up resolved, without extends (default: extends and the file's own values)")
-    c.set_defaults(run=cmd_config)
     return p
 
 
@@ -288,10 +299,18 @@ def _tolerance(text: str) -> float:
 
 def _arcs(text: str) -> ArcOption:
     """``--arcs lines:TOL|ijk|r`` (argparse turns the error into usage, exit 2)."""
+    from ..errors import UsageError
+    from ..lowering.arcs import parse_arc_option
     try:
         return parse_arc_option(text)
     except UsageError as err:
         raise argparse.ArgumentTypeError(err.message) from None
+
+
+def _transform(text: str) -> ProgramTransform:
+    """``--transform OPS`` (``postproc.transforms.spec.transform_argument``)."""
+    from ..transforms.spec import transform_argument
+    return transform_argument(text)
 
 
 

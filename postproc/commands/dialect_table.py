@@ -8,9 +8,25 @@ its column (the native cycles) is counted there and spelt out below the table.
 
 from __future__ import annotations
 
+import argparse
+import sys
 from typing import Any, Mapping
 
 from ..dialect import Dialect, Lazy
+from ..plugins import installed_dialects
+
+
+
+def cmd_dialects(args: argparse.Namespace) -> int:
+    """``postproc dialects [--format table|json]``."""
+    info = dialect_info(installed_dialects())
+    if args.format == "json":
+        import json
+        print(json.dumps(info, indent=2))
+    else:
+        sys.stdout.write(render_table(info))
+    return 0
+
 
 COLUMN = 16
 """Widest a value may be in its column; a longer list is counted and listed below the table."""

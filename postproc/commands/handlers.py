@@ -225,17 +225,6 @@ def cmd_info(args: argparse.Namespace) -> int:
     return 0
 
 
-def cmd_dialects(args: argparse.Namespace) -> int:
-    from .dialect_table import dialect_info, render_table
-    info = dialect_info(default_registry().dialects)
-    if args.format == "json":
-        import json
-        print(json.dumps(info, indent=2))
-    else:
-        sys.stdout.write(render_table(info))
-    return 0
-
-
 def cmd_config(args: argparse.Namespace) -> int:
     """Every problem of the set-up at once: its values, its dialect, its pipeline, its templates."""
     from ..setup.machine_setup import load_setup_collect

@@ -47,7 +47,7 @@ from ..errors import PostprocError, ProgramError
 from ..control import ASSIGN, CONTROL
 from ..expr import Binary, Expr, Num
 from ..ir import Block, CompoundMotion, CutterCompensation, Motion, Section
-from ..ir.keys import only_move
+from ..ir.keys import watches_none
 from ..lowering.lower import BlockStep, LoweringStep, run_blocks
 from ..state import MM_PER_INCH, ModalState, changes_nothing
 from .affine import EXACT, INDEX, XYZ
@@ -122,7 +122,7 @@ class FrameEvaluator(BlockStep):
         s = block.sections
         if not s:
             return None
-        if self.frame is None and (only_move(s) or _unwatched(s, _WATCHED)):
+        if self.frame is None and watches_none(s, _WATCHED):
             m = s.get("Motion")
             if m is None:
                 if self.reached.symbolic:
@@ -485,15 +485,6 @@ _WATCHED: Final = frozenset(("Units", "Plane", "DistanceMode", "WorkOffset", "Da
                              "ToolLengthOffset", "DynamicCutterCompensation"))
 """Sections that make a block more than a move to follow, before any frame."""
 _MOVES: Final = frozenset(("rapid", "linear", "cw", "ccw"))
-
-
-def _unwatched(sections: dict[str, Section], watched: frozenset[str]) -> bool:
-    """No key of the block is in ``watched``: a loop over its two or three keys (compiled,
-    ``watched.isdisjoint(sections)`` is a bound method call, ~800 instructions a block)."""
-    for key in sections:
-        if key in watched:
-            return False
-    return True
 
 
 _SHIFTING: Final = frozenset(("fine_bore", "back_bore"))

@@ -33,7 +33,7 @@ from postproc.dialect import Dialect
 from postproc.grbl_family.dialect import GrblFamily
 from postproc.errors import PostprocError, UnsupportedError
 from postproc.ir import Block, Comments, DataSetting, Section, ToolLengthOffset, Units
-from postproc.ir.keys import only_move
+from postproc.ir.keys import watches_none
 from postproc.lowering.lower import BlockStep, LoweringStep
 
 MM_PER_INCH: Final = 25.4
@@ -67,7 +67,7 @@ class _Lengths(BlockStep):
 
     def take(self, block: Block) -> list[Block] | None:
         sections = block.sections
-        if _unwatched(sections):
+        if watches_none(sections, _WATCHED):
             return None
         before = self.inch
         units = sections.get("Units")
@@ -86,18 +86,6 @@ class _Lengths(BlockStep):
         except PostprocError as err:
             ctx.diagnostics.error(err.located(at))
             return []
-
-
-def _unwatched(sections: dict[str, Section]) -> bool:
-    """No key of the block is in ``_WATCHED``: a loop over its two or three keys (compiled,
-    ``_WATCHED.isdisjoint(sections)`` is a bound method call, ~800 instructions a block), after the cheaper
-    test of the commonest block (``only_move``)."""
-    if only_move(sections):
-        return True
-    for key in sections:
-        if key in _WATCHED:
-            return False
-    return True
 
 
 def _dynamic(block: Block, ctx: Context, table: ToolTable, offset: ToolLengthOffset, inch: bool,

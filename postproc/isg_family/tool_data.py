@@ -45,6 +45,7 @@ from ..control import CONTROL
 from ..errors import Location, PostprocError, UnsupportedError
 from ..expr import Expr
 from ..ir import Block, CutterCompensation, DataSetting, DistanceMode, Motion, ToolLengthOffset, Units
+from ..ir.keys import watches_none
 from ..lowering.lower import BlockStep, LoweringStep
 
 SELECTED_KEY: Final = "isg_family.tool_data"
@@ -205,7 +206,7 @@ class _Select(BlockStep):
                     "the tool length changed before is applied by this incremental Z move on the target (when "
                     "the axis moves [?]), on the source's controller only at the next absolute Z: program Z "
                     "absolutely here", ctx.at(block, ctx.column_of(block, "Z"))))
-        if _unwatched(sections):
+        if watches_none(sections, _WATCHED):
             return None
         units = sections.get("Units")
         if isinstance(units, Units):
@@ -225,15 +226,6 @@ class _Select(BlockStep):
                 ctx.diagnostics.error(err.located(at))
                 return []
         return None
-
-
-def _unwatched(sections: dict[str, Any]) -> bool:
-    """No section of the block is one ``_select`` follows (most blocks: a move). A loop over the block's
-    few keys: compiled, cheaper than ``_WATCHED.isdisjoint``, a bound method call (``state.changes_nothing``)."""
-    for key in sections:
-        if key in _WATCHED:
-            return False
-    return True
 
 
 def _register(value: int | Expr | None, what: str) -> int | None:

@@ -54,7 +54,7 @@ from ..dialect import Dialect
 from ..errors import Location, PostprocError, UnsupportedError
 from ..expr import Binary, Expr, Num, Var
 from ..ir import Block, CutterCompensation, DataSetting, DistanceMode, Motion, Section, ToolLengthOffset, Units
-from ..ir.keys import only_move
+from ..ir.keys import watches_none
 from ..compensation.tool_table import ToolTable
 
 AXIS: Final = "Z"
@@ -154,18 +154,6 @@ def _defer(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iter
         yield block
 
 
-def _plain(sections: dict[str, Section]) -> bool:
-    """No section of the block is one ``_complete`` follows but a plain move: a loop over the block's two or
-    three keys (compiled, ``_STATE.isdisjoint(sections)`` is a bound method call, ~600 instructions), after
-    the cheaper test of the commonest block (``only_move``)."""
-    if only_move(sections):
-        return True
-    for key in sections:
-        if key in _STATE:
-            return False
-    return True
-
-
 def _clash(sections: dict[str, Section]) -> str | None:
     """What a waiting change cannot be carried past."""
     if "CompoundMotion" in sections or "CycleCall" in sections or "RigidTap" in sections:
@@ -208,7 +196,7 @@ def _complete(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> I
     unplaced = set(axes)  # axes nothing has placed or re-expressed since the start: only they are read
     for block in blocks:
         sections = block.sections
-        if pending is None and _plain(sections):  # the common block: at most a plain move
+        if pending is None and watches_none(sections, _STATE):  # the common block: at most a plain move
             motion = sections.get("Motion")
             if isinstance(motion, Motion):  # (typed: its fields are read natively, not by name)
                 plain = motion.mode in _PLAIN

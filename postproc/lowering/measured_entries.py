@@ -33,7 +33,7 @@ from ..errors import PostprocError, UnsupportedError
 from ..expr import Expr
 from ..frames.run_state import RUN_KEY, FrameRun
 from ..ir import Block, DataSetting, Motion, Section
-from ..ir.keys import only_move
+from ..ir.keys import watches_none
 from .lower import BlockStep, LoweringStep
 from ..state import MM_PER_INCH
 
@@ -67,7 +67,7 @@ class _Entries(BlockStep):
     def take(self, block: Block) -> list[Block] | None:
         s = block.sections
         run = self.run
-        if not run.homed and _unwatched(s):
+        if not run.homed and watches_none(s, _WATCHED):
             m = s.get("Motion")
             if m is None or isinstance(m, Motion) and m.mode not in _HOME:
                 return None  # the common block: the frame evaluation follows its point
@@ -91,19 +91,6 @@ class _Entries(BlockStep):
 _HOME: Final = ("home", "home2")
 _WATCHED: Final = frozenset(("ToolLengthOffset", "DataSetting", "Units", "DistanceMode"))
 """Sections ``_Run.follow`` reads in a block that makes no reference return while nothing is pending."""
-
-
-def _unwatched(sections: dict[str, Section]) -> bool:
-    """No key of the block is in ``_WATCHED``: a loop over its two or three keys (compiled,
-    ``sections.keys().isdisjoint(_WATCHED)`` builds a view and makes a bound method call, most of this step's
-    ~1.9k instructions a block; reading ``mode`` of an untyped section was a lookup by name), after the
-    cheaper test of the commonest block (``only_move``)."""
-    if only_move(sections):
-        return True
-    for key in sections:
-        if key in _WATCHED:
-            return False
-    return True
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)

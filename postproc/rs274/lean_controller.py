@@ -36,7 +36,7 @@ from ..ir import (
     Block, Comments, CompoundMotion, DistanceMode, Motion, Plane, ProgramControl, Section, SpindleControl,
     ToolLengthOffset, ToolSelect,
 )
-from ..ir.keys import only_move
+from ..ir.keys import watches_none
 from ..state import PLANE_AXES
 from .order_of_execution import split_stops_after_motion, stops_after_motion
 from ..lowering.lower import BlockStep, LoweringStep
@@ -109,12 +109,7 @@ class _Lean(BlockStep):
 
     def take(self, block: Block) -> list[Block] | None:
         sections = block.sections
-        quiet = True
-        if not only_move(sections):
-            for key in sections:
-                if key in _LEAN_WATCHED:
-                    quiet = False
-                    break
+        quiet = watches_none(sections, _LEAN_WATCHED)
         pauses = self.pauses
         if quiet:
             arc = sections.get("Motion")
