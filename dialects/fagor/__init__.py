@@ -9,7 +9,7 @@ What DIALECTS.md marks uncertain for the 8070 [?] is kept verbatim (``reader``).
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Callable
+from typing import TYPE_CHECKING, Callable, Iterator
 
 from postproc.context import Context
 from postproc.comments import CommentSyntax
@@ -19,7 +19,6 @@ from postproc.dialect import Dialect, Lazy, Reader
 from postproc.errors import Diagnostics
 from postproc.hookspecs import hookimpl
 from postproc.lowering.lower import BlockStep, LoweringStep
-from postproc.isg_family.machine_moves import absolute_machine_moves
 from postproc.rs274.order_of_execution import stops_before_motion
 from postproc.setup.machine_setup import MachineSetup
 from postproc.syntax import Pipeline
@@ -60,6 +59,12 @@ class _ResolveRadiusWhereDCannot(LoweringStep):
 select_tool_data = _SelectToolData()
 end_cycles_before_moves = _EndCyclesBeforeMoves()
 resolve_radius_where_d_cannot = _ResolveRadiusWhereDCannot()
+
+
+def absolute_machine_moves(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """``postproc.isg_family.machine_moves.absolute_machine_moves``, imported when first used."""
+    from postproc.isg_family.machine_moves import absolute_machine_moves as step
+    return step(blocks, ctx, target)
 
 class Fagor(Dialect):
     NAME = "fagor"

@@ -9,7 +9,7 @@ numbers collide with Fanuc's are told apart.
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Callable
+from typing import TYPE_CHECKING, Callable, Iterator
 
 from postproc.comments import CommentSyntax
 from postproc.arc_end import NEAREST_CENTRE, ArcEndRule
@@ -17,7 +17,6 @@ from postproc.state import MM_PER_INCH
 from postproc.dialect import Dialect, Lazy, Reader
 from postproc.hookspecs import hookimpl
 from postproc.lowering.lower import BlockStep, LoweringStep
-from postproc.isg_family.machine_moves import absolute_machine_moves
 from postproc.lowering.structured_jumps import nest_jumps_keeping_equality
 from postproc.rs274.order_of_execution import stops_before_motion
 from postproc.setup.machine_setup import MachineSetup
@@ -49,6 +48,12 @@ class _ResolveRadiusWhereDCannot(LoweringStep):
 
 select_tool_data = _SelectToolData()
 resolve_radius_where_d_cannot = _ResolveRadiusWhereDCannot()
+
+
+def absolute_machine_moves(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """``postproc.isg_family.machine_moves.absolute_machine_moves``, imported when first used."""
+    from postproc.isg_family.machine_moves import absolute_machine_moves as step
+    return step(blocks, ctx, target)
 
 
 class Isg(Dialect):

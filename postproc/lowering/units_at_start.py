@@ -17,11 +17,12 @@ programs its units there or before needs nothing; a copy to the same dialect pas
 
 from __future__ import annotations
 
-from typing import Final, Iterator
+from typing import Final
 
 from ..context import Context
 from ..dialect import Dialect
 from ..ir import Block, Units
+from .lower import BlockStep, LoweringStep
 from ..state import ModalState
 
 HEADER: Final = frozenset(("ProgramStart", "TapeMark", "Comments", "Sequence"))
@@ -34,30 +35,41 @@ PLAIN: Final = frozenset(("Comments", "Coolant", "CutterCompensation", "CycleCan
 """Sections of a plain block (modal words, motion, a data setting): the units can join them (``G21 G90 G54``)."""
 
 
-def write_units_at_start(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+class WriteUnitsAtStart(LoweringStep):
     """Lowering step: see the module docstring."""
-    if ctx.dialect == target.NAME:
-        return blocks
-    return _carry(blocks, ModalState().units)
+
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        if ctx.dialect == target.NAME:
+            return None
+        return _Units(ModalState().units)
 
 
-def _carry(blocks: Iterator[Block], units: str) -> Iterator[Block]:
-    for block in blocks:
+write_units_at_start = WriteUnitsAtStart()
+
+
+class _Units(BlockStep):
+    """One run: every block until the first that reads a length (or says its units); none after it
+    (``moves`` False: a plain move is then not its business, and ``done`` passes any other block)."""
+
+    def __init__(self, units: str) -> None:
+        super().__init__()
+        self.units = units
+        self.done = False
+
+    def take(self, block: Block) -> list[Block] | None:
+        if self.done:
+            return None
         keys = block.sections.keys()
+        if not keys or ("Units" not in keys and HEADER.issuperset(keys)):
+            return None
+        self.done = True
+        self.moves = False
         if "Units" in keys:
-            yield block  # the program says its units before it reads a length
-            yield from blocks
-            return
-        if not keys or HEADER.issuperset(keys):
-            yield block
-            continue
+            return None  # the program says its units before it reads a length
         if PLAIN.issuperset(keys):
-            block.add(Units(units))
+            block.add(Units(self.units))
             block.changed()
-        else:
-            first = Block(block.line, None, "\n")
-            first.add(Units(units))
-            yield first
-        yield block
-        yield from blocks
-        return
+            return None
+        first = Block(block.line, None, "\n")
+        first.add(Units(self.units))
+        return [first, block]
