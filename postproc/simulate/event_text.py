@@ -256,25 +256,30 @@ def _keyed_number_parts(value: float | int, keyed: _KeyedNumbers, parts: list[st
     """A record's key and its number as json writes them (``keyed.text``, then ``_number_parts``), the key and the
     number's whole part in one piece where it is tabled (``_KeyedNumbers``)."""
     if isinstance(value, float):
-        if _SMALLEST <= value < _LARGEST or -_LARGEST < value <= -_SMALLEST:  # (as ``_float_parts``)
-            units = int(value * _SCALE + (0.5 if value > 0.0 else -0.5))
-            if units / _SCALE == value:
-                magnitude = -units if units < 0 else units
-                whole = magnitude // _UNITS
-                if whole < _TABLED:
-                    parts.append(keyed.whole(whole, units < 0))
-                    _fraction_parts(magnitude - whole * _UNITS, parts)
-                    return
-        parts.append(keyed.text)
-        _float_parts(value, parts)
-        return
-    if 0 <= value < _TABLED:
+        _keyed_float_parts(value, keyed, parts)
+    elif 0 <= value < _TABLED:
         parts.append(keyed.whole(value, False))
     elif -_TABLED < value < 0:
         parts.append(keyed.whole(-value, True))
     else:
         parts.append(keyed.text)
         parts.append(str(value))
+
+
+def _keyed_float_parts(value: float, keyed: _KeyedNumbers, parts: list[str]) -> None:
+    """``_keyed_number_parts`` of a float (a float parameter: compiled, unboxed once, where a union's value was
+    unboxed again at each comparison)."""
+    if _SMALLEST <= value < _LARGEST or -_LARGEST < value <= -_SMALLEST:  # (as ``_float_parts``)
+        units = int(value * _SCALE + (0.5 if value > 0.0 else -0.5))
+        if units / _SCALE == value:
+            magnitude = -units if units < 0 else units
+            whole = magnitude // _UNITS
+            if whole < _TABLED:
+                parts.append(keyed.whole(whole, units < 0))
+                _fraction_parts(magnitude - whole * _UNITS, parts)
+                return
+    parts.append(keyed.text)
+    _float_parts(value, parts)
 
 
 def _record_parts(record: MoveRecord, parts: list[str]) -> None:

@@ -690,8 +690,8 @@ class Moves:
         shifts = self.lathe_shift
         length_at = self.length_index
         axes = self.axes
-        point = list(rounded)  # (copies, each place then set: compiled, cheaper than appending to empty lists)
-        crounded = list(rounded)
+        point: list[float | int] = []
+        crounded: list[float | int] = []
         moved = apart = False
         f: float | int | None = None
         mode: str | None = None
@@ -703,7 +703,6 @@ class Moves:
                 r = rounded[i]
             else:
                 r = num(value)
-                point[i] = r
             c: Any = r
             if i == length_at:
                 c = num(value + offset)
@@ -711,7 +710,8 @@ class Moves:
                 shift = shifts.get(axis)
                 if shift is not None:
                     c = num(value + shift + (offset if i == length_at else 0.0))
-            crounded[i] = c
+            point.append(r)
+            crounded.append(c)
             if not moved:  # (identity first: an axis that stays keeps its number's object; never a nan)
                 b = before[i]
                 if c is not b and c != b:
