@@ -159,13 +159,6 @@ def decimal_value(num: str) -> float:
             return float(num)
     if digits == 0:
         return float(num)
-    return scaled_decimal(mantissa, places if places > 0 else 0, negative)
-
-
-def scaled_decimal(mantissa: i64, places: i64, negative: bool) -> float:
-    """The value of a decimal of at most ``DECIMAL_DIGITS`` digits, ``mantissa`` (its digits as an integer)
-    with ``places`` of them after the point, correctly rounded (``decimal_value``'s last step, shared with
-    the reader's scan, ``postproc.rs274.canonical_line.scan_line``, which reads the digits as it scans)."""
     value = float(mantissa) / _POWERS[places] if places > 0 else float(mantissa)
     return -value if negative else value
 

@@ -10,11 +10,7 @@ from __future__ import annotations
 from hypothesis import given, settings, strategies as st
 
 from postproc.numbers import CANONICAL_BLOCK
-import struct
-
-from postproc.numbers import decimal_value
-from postproc.rs274.canonical_line import (CANONICAL, CODES, NO_NUMBERS, NO_WORDS, WITH_CODES, WORDS, scan,
-                                           scan_line, scan_words)
+from postproc.rs274.canonical_line import CANONICAL, CODES, NO_WORDS, WITH_CODES, WORDS, scan, scan_words
 from postproc.rs274.lexer import WORD, WORDS_ONLY
 
 _LETTERS = "XYZABCUVWIJKRQFGMNOTHDLPSxg(#"
@@ -89,52 +85,3 @@ def test_the_cases_that_matter_by_hand() -> None:
     assert scan_words("X-0. Y1.1234567") == (WORDS, [("X", "-0."), ("Y", "1.1234567")], -1)
     for line in ("N10. X1", "X+1", "X1 ", "X1  Y2", "x1", "X-", "X.", "K1", "T-1", "X1;", "X1\tY2"):
         assert scan_words(line) == (0, NO_WORDS, -1), line
-
-
-_AXIS_TYPE = frozenset("XYZABCUVWIJRQF")
-
-
-def _bits(value: float) -> bytes:
-    return struct.pack("<d", value)
-
-
-@settings(max_examples=3000)
-@given(_line)
-def test_the_scan_reads_each_word_value_as_decimal_value_does(line: str) -> None:
-    # the value the scan reads while it scans a word is decimal_value's, bit for bit (-0. included), for
-    # every line it takes; a code word has none; a line it does not take has no words and no values
-    kind, words, sequence, numbers = scan_line(line)
-    assert (kind, words, sequence) == scan_words(line)
-    if not kind:
-        assert numbers is NO_NUMBERS and not numbers
-        return
-    assert len(numbers) == len(words)
-    for (letter, num), value in zip(words, numbers):
-        if letter in _AXIS_TYPE:
-            assert value is not None and _bits(value) == _bits(decimal_value(num)) == _bits(float(num)), (letter, num)
-        else:
-            assert value is None
-
-
-@settings(max_examples=1000)
-@given(st.lists(st.tuples(st.sampled_from("XYZF"), st.booleans(), st.integers(0, 10 ** 20),
-                          st.integers(0, 8)), min_size=1, max_size=5))
-def test_long_and_short_numbers_read_as_float_reads_them(parts) -> None:
-    # up to 15 digits the scan divides its digits itself; beyond (a 20-digit number) it asks decimal_value,
-    # which asks float: every value is float's, bit for bit
-    words = []
-    for letter, negative, digits, places in parts:
-        text = str(digits).rjust(places + 1, "0")
-        number = ("-" if negative else "") + text[:len(text) - places] + "." + text[len(text) - places:]
-        words.append(letter + number)
-    line = " ".join(words)
-    kind, found, _, numbers = scan_line(line)
-    assert kind
-    assert [_bits(v) for v in numbers] == [_bits(float(w[1:])) for w in words]  # type: ignore[arg-type]
-
-
-def test_values_by_hand() -> None:
-    assert scan_line("N10 G1 X-0.5 Y12.25 F1500.") == (
-        WITH_CODES, [("N", "10"), ("G", "1"), ("X", "-0.5"), ("Y", "12.25"), ("F", "1500.")], 10,
-        [None, None, -0.5, 12.25, 1500.0])
-    assert scan_line("X10 Y.5")[3] == [10.0, 0.5]  # not canonical: the numbers as written, not as the block reads

@@ -14,7 +14,7 @@ from postproc.ir import Block, Sequence
 
 from postproc.lines import BOM, EOF_BYTE, lexable
 
-from postproc.rs274.canonical_line import CANONICAL, CODES, scan_line
+from postproc.rs274.canonical_line import CANONICAL, CODES, scan_words
 from postproc.rs274.lexer import WORDS_ONLY, WORD, lex_block
 
 from .macro import read_call
@@ -59,12 +59,11 @@ def read_line(raw: str, number: int, ctx: Context) -> Block:
         # digits-only N; a byte scan finds it and tells a CAM line (no G or M word, so no call
         # to look for) from the rest, and takes upper-case plain words whose numbers are not
         # canonical too (``X10``).
-        kind, words, sequence, numbers = scan_line(text)  # and its words, their values, its block number
+        kind, words, sequence = scan_words(text)  # and its words, and its block number
         if kind:
             block = Block(number, text, eol, words)
             if kind & CANONICAL:
                 block.canonical = True
-                block.numbers = numbers  # (``read_call`` below clears ``canonical`` if it takes words out)
             if sequence >= 0:
                 block.sections["Sequence"] = Sequence(sequence)
             if kind & CODES and ("M9" in text or "G6" in text):

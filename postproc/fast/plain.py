@@ -11,7 +11,7 @@ reports its errors.
 
 from __future__ import annotations
 
-from typing import Final, cast
+from typing import Final
 
 from mypy_extensions import mypyc_attr
 
@@ -60,14 +60,9 @@ class PlainLane(BlockLane):
         arc_words = False
         upper = block.canonical  # a canonical block's letters are upper-case already (numbers.CANONICAL_BLOCK)
         sequence = block.sections.get("Sequence") if upper else None  # its first word's number, read
-        # its words' values, when the reader read them (``Block.numbers``); as objects: compiled, a float would
-        # be unboxed from the list and boxed again into the dictionaries
-        numbers = cast("list[object] | None", block.numbers) if upper else None
         seen = 0  # the addresses met, one bit per letter (a repeated one leaves the lane)
         cycle = ctx.state.cycle is not None
-        at = -1  # the word's place in ``words``
         for letter, num in words:
-            at += 1
             up = letter if upper else _UPPER[letter]
             index = ord(up) - 65
             if index < 0 or index > 25:
@@ -79,17 +74,14 @@ class PlainLane(BlockLane):
             kind = LETTER_KIND[index]
             if kind == LETTER_AXIS and (upper or "." in num):  # canonical: an axis number has its point
                 # boxed once, shared by both dictionaries (compiled)
-                number: object = None if numbers is None else numbers[at]
-                if number is None:
-                    number = decimal_value(num)
+                number: object = decimal_value(num)
                 values[up] = axes[up] = number  # type: ignore[assignment]
             elif kind == LETTER_N and (upper or "." not in num):  # (a canonical N is digits only)
                 values["N"] = sequence.number if isinstance(sequence, Sequence) else int(num)
             elif cycle:
                 break  # a code, F or a cycle word under an active cycle: the general path
             elif kind == LETTER_F:
-                number = None if numbers is None else numbers[at]
-                values["F"] = decimal_value(num) if number is None else number  # type: ignore[assignment]
+                values["F"] = decimal_value(num)
             elif kind == LETTER_G and mode is None:
                 key = _MOTION_KEYS.get(num)
                 entry = self.syntax.table(ctx).g.get(key) if key is not None else None
@@ -97,8 +89,7 @@ class PlainLane(BlockLane):
                     break
                 mode = str(entry[2])
             elif kind == LETTER_ARC and (upper or "." in num):
-                number = None if numbers is None else numbers[at]
-                values[up] = decimal_value(num) if number is None else number  # type: ignore[assignment]
+                values[up] = decimal_value(num)
                 arc_words = True
             else:
                 break

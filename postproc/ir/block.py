@@ -27,7 +27,7 @@ class Block:
     """
 
     XNAME: ClassVar[str] = "Block"
-    __slots__ = ("line", "text", "eol", "words", "values", "sections", "canonical", "numbers")
+    __slots__ = ("line", "text", "eol", "words", "values", "sections", "canonical")
 
     def __init__(self, line: int, text: str | None, eol: str = "\n",
                  words: list[tuple[str, str]] | None = None) -> None:
@@ -44,11 +44,6 @@ class Block:
         spelling (``postproc.numbers``), so a writer may copy it (``WordWriter.straight_move``); whatever
         takes words out of such a block (a call's words into its section) clears it. Not part of the
         block's value (equality, XML)."""
-        self.numbers: list[float | None] | None = None
-        """A reader's hint beside ``canonical``, read only while that is set: the value of each word's
-        number as written (``postproc.numbers.decimal_value``), None for a code word's, found while the
-        reader scanned the line (``postproc.rs274.canonical_line.scan_line``). None: not given. Not part of
-        the block's value."""
 
     def add(self, section: Section) -> Section:
         self.sections[section.KEY] = section

@@ -13,8 +13,6 @@ from typing import Final
 
 from mypy_extensions import i64
 
-from postproc.numbers import DECIMAL_DIGITS, decimal_value, scaled_decimal
-
 CANONICAL: Final = 1
 """``scan``'s answer for a canonical line without G or M words (a CAM line: N, axes, F)."""
 CODES: Final = 2
@@ -36,11 +34,6 @@ _LETTERS: Final[list[str]] = [chr(c) for c in range(128)]
 
 NO_WORDS: Final[list[tuple[str, str]]] = []
 """``scan_words``'s words for a line that is not canonical (one shared list: never appended to)."""
-NO_NUMBERS: Final[list[float | None]] = []
-"""``scan_line``'s numbers for a line that is not canonical (one shared list: never appended to)."""
-_BOUND: Final = 100_000_000_000_000_000
-"""A mantissa stops growing here (10**17: within an i64 after one more digit); one of more than
-``DECIMAL_DIGITS`` digits is not used anyway."""
 
 
 def scan(text: str) -> int:
@@ -61,22 +54,12 @@ def scan_words(text: str) -> tuple[int, list[tuple[str, str]], int]:
     ``WORDS`` (``| CODES`` with a G or M word), with the words ``WORD.findall`` finds in it: such a line
     (a number without a point, as hand-written Fanuc programs have) then needs no regex either. A block
     number must still be digits only, and a sign only ``-`` on an axis-type letter."""
-    kind, words, sequence, _ = scan_line(text)
-    return kind, words, sequence
-
-
-def scan_line(text: str) -> tuple[int, list[tuple[str, str]], int, list[float | None]]:
-    """``scan_words``'s answer and, from the same pass, the value of each word: of a word with an
-    axis-type letter (``XYZABCUVWIJRQF``) ``decimal_value`` of its number (its digits are read as they are
-    scanned, and ``numbers.scaled_decimal`` divides them as ``decimal_value`` does), None for a word of
-    a code letter (``NO_NUMBERS`` when the answer is 0). A reader keeps them for a canonical block
-    (``Block.numbers``), whose words then need no second pass to be read (``postproc.fast.plain``)."""
     if not text:
-        return 0, NO_WORDS, -1, NO_NUMBERS
+        return 0, NO_WORDS, -1
     try:
         b = text.encode("ascii")  # compiled, a C call; ``str.isascii`` would be a method look-up
     except UnicodeEncodeError:
-        return 0, NO_WORDS, -1, NO_NUMBERS
+        return 0, NO_WORDS, -1
     # Positions as i64 (compiled: machine integers, not tagged ones whose every step checks for overflow).
     n: i64 = len(b)
     kind = _KIND
@@ -84,7 +67,6 @@ def scan_line(text: str) -> tuple[int, list[tuple[str, str]], int, list[float | 
     canonical = True
     codes = False
     words: list[tuple[str, str]] = []
-    numbers: list[float | None] = []
     sequence = -1
     i: i64 = 0
     while True:
@@ -102,12 +84,12 @@ def scan_line(text: str) -> tuple[int, list[tuple[str, str]], int, list[float | 
                     sequence = sequence * 10 + b[i] - 48
                     i += 1
                 if i < n and b[i] == 46:  # 'N10.': the lexer's to judge
-                    return 0, NO_WORDS, -1, NO_NUMBERS
+                    return 0, NO_WORDS, -1
             else:
                 while i < n and 48 <= b[i] <= 57:
                     i += 1
             if i == digits:
-                return 0, NO_WORDS, -1, NO_NUMBERS
+                return 0, NO_WORDS, -1
             if i < n and b[i] == 46:  # 'G43.4': a plain word, not canonical
                 canonical = False
                 i += 1
@@ -118,45 +100,33 @@ def scan_line(text: str) -> tuple[int, list[tuple[str, str]], int, list[float | 
             if negative:
                 i += 1
             digits = i
-            mantissa: i64 = 0
             while i < n and 48 <= b[i] <= 57:
-                if mantissa < _BOUND:
-                    mantissa = mantissa * 10 + (b[i] - 48)
                 i += 1
             whole = i - digits
-            places: i64 = 0
             if i < n and b[i] == 46:  # '.'
                 i += 1
                 fraction = i
                 while i < n and 48 <= b[i] <= 57:
-                    if mantissa < _BOUND:
-                        mantissa = mantissa * 10 + (b[i] - 48)
                     i += 1
                 places = i - fraction
                 if whole == 0:
                     if places == 0:
-                        return 0, NO_WORDS, -1, NO_NUMBERS
+                        return 0, NO_WORDS, -1
                     canonical = False  # '.5'
                 elif (whole > 1 and b[digits] == 48 or places > _MAX_FRACTION
                       or places > 0 and b[i - 1] == 48 or negative and places == 0 and whole == 1 and b[digits] == 48):
                     canonical = False  # '00.5', more than six places, '0.10', '-0.'
             elif whole == 0:
-                return 0, NO_WORDS, -1, NO_NUMBERS
+                return 0, NO_WORDS, -1
             else:
                 canonical = False  # 'X10': no point
-            number = text[start + 1:i]
-            words.append((letters[c], number))
-            numbers.append(scaled_decimal(mantissa, places, negative) if whole + places <= DECIMAL_DIGITS
-                           else decimal_value(number))
         else:
-            return 0, NO_WORDS, -1, NO_NUMBERS
-        if k == _CODE:
-            words.append((letters[c], text[start + 1:i]))
-            numbers.append(None)
+            return 0, NO_WORDS, -1
+        words.append((letters[c], text[start + 1:i]))
         if i == n:
-            return (CANONICAL if canonical else WORDS) | (CODES if codes else 0), words, sequence, numbers
+            return (CANONICAL if canonical else WORDS) | (CODES if codes else 0), words, sequence
         if b[i] != 32:
-            return 0, NO_WORDS, -1, NO_NUMBERS
+            return 0, NO_WORDS, -1
         i += 1
         if i == n:
-            return 0, NO_WORDS, -1, NO_NUMBERS
+            return 0, NO_WORDS, -1
