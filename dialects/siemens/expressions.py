@@ -33,7 +33,7 @@ from __future__ import annotations
 from postproc.errors import UnsupportedError
 from postproc.expr import Binary, Expr, Func, Num, Unary, Var
 from postproc.isg_family.expressions import Unmodelled
-from postproc.rs274.expressions import MAX_DEPTH, ExprSyntaxError, shallow, skip_blanks
+from postproc.rs274.expressions import MAX_DEPTH, ExprSyntaxError, decimal_end, shallow, skip_blanks
 
 R_BASE = 500
 """``R<n>`` is the neutral variable ``R_BASE + n``."""
@@ -231,12 +231,7 @@ class _Parser:
 
     def number(self, pos: int) -> tuple[int, Expr]:
         text, start, n = self.text, pos, len(self.text)
-        while pos < n and text[pos] in _DIGITS:
-            pos += 1
-        if pos < n and text[pos] == ".":
-            pos += 1
-            while pos < n and text[pos] in _DIGITS:
-                pos += 1
+        pos = decimal_end(text, pos)
         mantissa = text[start:pos]
         if mantissa == ".":
             raise ExprSyntaxError("number expected", start)

@@ -51,7 +51,7 @@ from postproc.expr import Binary, Expr, Func, Num, Var
 from postproc.ir import Block, BlockDelete, Comments, NativeCode, ProgramStart, Sequence, SpindleOrientation
 from postproc.isg_family.expressions import Unmodelled
 from postproc.isg_family.zero_offsets import ZeroOffsets
-from postproc.rs274.expressions import ExprSyntaxError, skip_blanks
+from postproc.rs274.expressions import ExprSyntaxError, decimal_end, skip_blanks
 from postproc.rs274.lexer import split_lines
 
 from .call_reading import ADDRESSES, TYPES, CallReading
@@ -428,12 +428,7 @@ class _State(CallReading, ControlReading):
         if end < n and code[end] in "+-":
             end += 1
         digits = end
-        while end < n and code[end] in _DIGITS:
-            end += 1
-        if end < n and code[end] == ".":
-            end += 1
-            while end < n and code[end] in _DIGITS:
-                end += 1
+        end = decimal_end(code, end)
         number = code[start:end]
         if end == digits or number.lstrip("+-") == ".":
             raise self.error(block.line, pos + 1, f"address {letter.upper()} needs a value")

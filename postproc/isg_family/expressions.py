@@ -27,7 +27,7 @@ from __future__ import annotations
 
 from postproc.errors import UnsupportedError
 from postproc.expr import Binary, Expr, Func, Num, Unary, Var
-from postproc.rs274.expressions import MAX_DEPTH, ExprSyntaxError, shallow, skip_blanks
+from postproc.rs274.expressions import MAX_DEPTH, ExprSyntaxError, decimal_end, shallow, skip_blanks
 
 class Unmodelled(ExprSyntaxError):
     """A construct ISG has and the IR does not model (an array element): the reader keeps its block
@@ -155,13 +155,8 @@ class _Parser:
         raise ExprSyntaxError(f"unexpected {c!r} in expression", pos)
 
     def number(self, pos: int) -> tuple[int, Expr]:
-        text, start, n = self.text, pos, len(self.text)
-        while pos < n and text[pos] in _DIGITS:
-            pos += 1
-        if pos < n and text[pos] == ".":
-            pos += 1
-            while pos < n and text[pos] in _DIGITS:
-                pos += 1
+        text, start = self.text, pos
+        pos = decimal_end(text, pos)
         if text[start:pos] == ".":
             raise ExprSyntaxError("number expected", start)
         return pos, Num(float(text[start:pos]))

@@ -13,7 +13,7 @@ from dataclasses import dataclass, field
 
 from postproc.errors import Location, ParseError
 from postproc.expr import Expr, Var
-from postproc.rs274.expressions import ExprSyntaxError, skip_blanks
+from postproc.rs274.expressions import ExprSyntaxError, decimal_end, skip_blanks
 
 from .expressions import parse_expr, parse_word_value
 
@@ -317,12 +317,7 @@ def _word(file: str, line: int, code: str, pos: int, lexed: Lexed, address: str 
     if end < n and code[end] in "+-":
         end += 1
     digits = end
-    while end < n and code[end] in _DIGITS:
-        end += 1
-    if end < n and code[end] == ".":
-        end += 1
-        while end < n and code[end] in _DIGITS:
-            end += 1
+    end = decimal_end(code, end)
     number = code[start:end]
     if end > digits and number not in ("+.", "-.", "."):
         if end < n and code[end] in ".[":

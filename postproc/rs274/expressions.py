@@ -141,6 +141,20 @@ _LETTERS = frozenset("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz")
 _NAME_CHARS = frozenset("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_")
 
 
+def decimal_end(text: str, pos: int) -> int:
+    """Where the unsigned decimal number from ``pos`` ends: digits, then a point and digits (either side may be
+    empty: ``12``, ``1.5``, ``.5``, ``2.``; a lone ``.`` is the caller's to refuse). The expressions and the
+    word readers of every family scan a number so."""
+    n = len(text)
+    while pos < n and text[pos] in _DIGITS:
+        pos += 1
+    if pos < n and text[pos] == ".":
+        pos += 1
+        while pos < n and text[pos] in _DIGITS:
+            pos += 1
+    return pos
+
+
 def skip_blanks(text: str, pos: int) -> int:
     """The first position from ``pos`` that is not a blank (space or tab): the expressions, o-words and
     Macro B statements of the family read past blanks so."""
@@ -253,13 +267,7 @@ class _Parser:
 
     def number(self, pos: int, sign: float) -> tuple[int, Expr]:
         text, start = self.text, pos
-        n = len(text)
-        while pos < n and text[pos] in _DIGITS:
-            pos += 1
-        if pos < n and text[pos] == ".":
-            pos += 1
-            while pos < n and text[pos] in _DIGITS:
-                pos += 1
+        pos = decimal_end(text, pos)
         digits = text[start:pos]
         if digits == ".":
             raise self.error("number expected", start)
