@@ -190,7 +190,7 @@ def test_fagor_m19_only_on_a_machine_the_set_up_says_has_it() -> None:
     assert _errors("M19\n", "fagor", "fagor")[0].startswith(
         "in.nc:1:1: error: M19: an oriented spindle stop is not confirmed on the 8070")
     setup = MachineSetup(cycles=CycleSettings(orientation="m19"))
-    assert _translate("M19\n", "fagor", "fanuc", setup) == "M19\n"
+    assert _translate("M19\n", "fagor", "fanuc", setup) == "G21 M19\n"  # G21: the units the program was read in (tests/test_units_at_start.py)
 
 
 @pytest.mark.parametrize("code, error", [

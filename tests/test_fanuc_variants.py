@@ -73,7 +73,7 @@ def test_haas_dwell_finer_than_a_millisecond_and_fanuc_points_are_refused() -> N
 
 
 def test_haas_dwell_translates_to_linuxcnc_seconds_and_stays_verbatim_for_fanuc() -> None:
-    assert translated("G04 P0.5\n", "linuxcnc", HAAS) == "G4 P0.5\nM2\n"  # (a fragment: no end, M2)
+    assert translated("G04 P0.5\n", "linuxcnc", HAAS) == "G21 G4 P0.5\nM2\n"  # (a fragment: no end, M2; G21: tests/test_units_at_start.py)
     assert translated("G04 P0.5\n", "fanuc", HAAS) == "G04 P0.5\n"
 
 

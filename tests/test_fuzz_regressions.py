@@ -386,7 +386,7 @@ def test_a_percent_after_a_comment_is_no_opening_one_for_linuxcnc() -> None:
     assert report.ok, report.summary()
     out = io.StringIO()  # a '%' on the first line still opens the program
     translate(io.StringIO("%\n(C)\nG0 X1.\nM30\n%\n"), out, file="t.nc", source="fanuc", target="linuxcnc")
-    assert out.getvalue() == "%\n(C)\nG0 X1.\nM30\n%\n"
+    assert out.getvalue() == "%\n(C)\nG21 G0 X1.\nM30\n%\n"  # G21: tests/test_units_at_start.py
 
 
 def test_a_source_with_cr_line_ends_reaches_linuxcnc_with_lf() -> None:

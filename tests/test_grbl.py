@@ -87,7 +87,7 @@ def test_program_number_and_percent_become_comments() -> None:
     out = io.StringIO(newline="")
     translate(io.StringIO("%\nO1001 (PLATE)\nG00 X1.\n%\n", newline=""), out, file="t.nc", source="fanuc",
               target="grbl")
-    assert out.getvalue() == "(%)\n(O1001) (PLATE)\nG0 X1.\n(%)\n"
+    assert out.getvalue() == "(%)\n(O1001) (PLATE)\nG21 G0 X1.\n(%)\n"  # G21: tests/test_units_at_start.py
 
 
 def test_a_full_circle_gets_an_end_point_in_its_plane() -> None:
