@@ -22,6 +22,7 @@ point: the machine drills where the source only moved. So the written program ne
 
 from __future__ import annotations
 
+from mypy_extensions import mypyc_attr
 from typing import Mapping
 
 from postproc.context import Context
@@ -36,6 +37,7 @@ REFERENCE = frozenset(("home", "home2"))
 """Motion modes of a reference return (group 00: the source's cycle stays in force)."""
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class EndCyclesBeforeMoves(LoweringStep):
     """The blocks, with a ``G80`` block before each move that follows a native cycle (the module docstring)."""
 
@@ -46,6 +48,7 @@ class EndCyclesBeforeMoves(LoweringStep):
 end_cycles_before_moves = EndCyclesBeforeMoves()
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class _CycleEnds(BlockStep):
     """One run: a move is its business while a written cycle is in force or a ``G80`` was written before a
     reference return."""

@@ -26,6 +26,7 @@ executed block (flattened) has no control statements and is exact.
 
 from __future__ import annotations
 
+from mypy_extensions import mypyc_attr
 from typing import Final
 
 from postproc.dialect import Dialect
@@ -47,6 +48,7 @@ from .semantics import PECK
 _CANCELS: Final = frozenset(("rapid", "linear", "cw", "ccw"))
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class ExpandCannedCycles(LoweringStep):
     """Lowering transform (see the module docstring). Back to its own dialect with nothing forced, every
     cycle stays native and blocks are copied or rewritten from their words: the stream passes through."""
@@ -76,6 +78,7 @@ def cancels(sections: dict[str, Section]) -> bool:
     return "CycleCancel" in sections or getattr(sections.get("Motion"), "mode", None) in _CANCELS
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class _Expand(BlockStep):
     """One run: a block that is only a move is its business while a cycle is expanded (it may cancel it)."""
 

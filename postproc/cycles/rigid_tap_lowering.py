@@ -5,6 +5,7 @@ reads ``RigidTap``: the section below, the step here."""
 
 from __future__ import annotations
 
+from mypy_extensions import mypyc_attr
 from typing import Iterator
 
 from ..context import Context
@@ -20,6 +21,7 @@ from ..synchronised_tap import RigidTap, rigid_taps
 from .section import CannedCycle
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class ResolveRigidTaps(LoweringStep):
     """Lowering step (the module docstring): after ``expand_canned_cycles``, so an expanded rigid tap cycle
     shows its taps. A refused block is reported and not written, whatever ``--on-unsupported`` says. Back to
@@ -34,6 +36,7 @@ class ResolveRigidTaps(LoweringStep):
 resolve_rigid_taps = ResolveRigidTaps()
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class _Taps(BlockStep):
     """One run: only a block with a machine function, a tap or an expansion is its business. A block
     rewritten into several is made whole before it goes on (a refusal found half-way drops it all)."""

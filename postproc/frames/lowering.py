@@ -67,6 +67,7 @@ EVALUATE_KEY: Final = "frames.evaluate"
 ``postproc.transforms``, moves the evaluated points)."""
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class EvaluateFrames(LoweringStep):
     """Lowering step (see the module docstring): back to its own dialect the stream passes through."""
 

@@ -230,7 +230,7 @@ def measured_in_frame(ev: Evaluation, setting: DataSetting) -> DataSetting:
     Z ``t_z - Z``. Refused by name where a value it needs is not known here: work system 9's entry (``L11``),
     another controller's frame, an unknown point or offset."""
     if setting.table != "tool_entry_at_point":
-        raise UnsupportedError("a tool entry measured in work system 9 (G10 L11) under a coordinate shift or "
+        raise UnsupportedError("a tool entry measured in work system 9 under a coordinate shift or "
                                "rotation of the program's own: that system's origin is the machine's, not known here")
     frame = ev.frame
     assert frame is not None

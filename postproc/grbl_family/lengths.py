@@ -25,6 +25,7 @@ set-up is told to say the build has a tool table.
 
 from __future__ import annotations
 
+from mypy_extensions import mypyc_attr
 from typing import Final
 
 from postproc.compensation.tool_table import TABLES, ToolTable
@@ -40,6 +41,7 @@ MM_PER_INCH: Final = 25.4
 _WATCHED: Final = frozenset(("ToolLengthOffset", "DataSetting", "Units"))
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class WriteToolLengths(LoweringStep):
     """Lowering step: ``G43 H<n>``/``G44 H<n>`` -> ``G43.1 Z<length>`` (see the module docstring)."""
 
@@ -54,6 +56,7 @@ class WriteToolLengths(LoweringStep):
 write_tool_lengths = WriteToolLengths()
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class _Lengths(BlockStep):
     """One run: only a block with a length offset, a data setting or units is its business."""
 
@@ -126,6 +129,7 @@ def _dynamic(block: Block, ctx: Context, table: ToolTable, offset: ToolLengthOff
     return [first, block]
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class DropResolvedToolData(LoweringStep):
     """Lowering step, after ``write_tool_lengths`` and the cutter compensation's resolution: on a controller
     without a tool table every length and radius a program writes into a register has been read where it
@@ -142,6 +146,7 @@ class DropResolvedToolData(LoweringStep):
 drop_resolved_tool_data = DropResolvedToolData()
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class _DropResolved(BlockStep):
     """One run: only a block with a data setting is its business."""
 

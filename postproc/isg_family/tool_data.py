@@ -89,6 +89,7 @@ def expects_register(values: dict[str, Any], ctx: Context, first: int) -> None:
 
 # -- writing -----------------------------------------------------------------------------------------
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class ResolveRadiusWhereDCannot(LoweringStep):
     """Lowering step for a target whose D brings its length (ISG always; Fagor while ``G43`` is on,
     ``LENGTH_TOGGLES``): a G41/G42 whose register has another length than the one in force becomes the
@@ -147,6 +148,7 @@ class _Selection:
     before the program ends (a ``G49`` before ``M30``)."""
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class SelectToolData(LoweringStep):
     """Lowering step for a target that selects tool data with D (see the module docstring): a program
     of another family gets its length and radius registers as the D they need; the target's own
@@ -165,6 +167,7 @@ class SelectToolData(LoweringStep):
 select_tool_data = SelectToolData()
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class _Select(BlockStep):
     """``later_z``: a length may change without a Z move (the source applies it at the next Z, as the
     target does), True where that next Z move must then be absolute; None: it may not. A move is its

@@ -54,6 +54,7 @@ then flattened, each run's diameter a number.
 
 from __future__ import annotations
 
+from mypy_extensions import mypyc_attr
 from typing import Iterator
 
 from ..context import Context
@@ -106,6 +107,7 @@ def _takes_diameters(ctx: Context, target: type[Dialect]) -> bool:
     return ctx.diameter and "lathe" in target.MACHINE_TYPES and target.DIAMETER_PROGRAMMING
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class ResolveDynamicCutterCompensation(LoweringStep):
     """Lowering step: G41.1/G42.1 (compensation by a diameter) become the compensated path for every
     target but the source's own dialect (see the module docstring); a G41/G42 by register is left to the

@@ -324,6 +324,7 @@ class Resolver(CompensatedMoves):
 
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class Resolution(BlockStep):
     """A ``Resolver`` taking the blocks one at a time: every move is its business (an idle resolver notes
     it for a later entry move); a block it holds comes out with the blocks its compensation releases."""
@@ -416,6 +417,7 @@ class Resolution(BlockStep):
         return made
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class Checking(BlockStep):
     """A ``Resolver`` checking a copy within one dialect (``Resolver.checker``), the blocks one at a time;
     once it stops, nothing more is its business."""

@@ -15,6 +15,7 @@ dialect (a plugin's step runs interpreted).
 
 from __future__ import annotations
 
+from mypy_extensions import mypyc_attr
 from typing import Final
 
 from ..context import Context
@@ -27,6 +28,7 @@ from .lower import BlockStep, LoweringStep
 STOP: Final = "exact_stop"
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class ExactStopForOneBlock(LoweringStep):
     """Each one-shot exact stop as exact-stop mode for its block, then the mode before (the module docstring);
     ``refusal``: the message of a one-shot stop whose mode to take back to depends on the way the run takes."""
@@ -38,6 +40,7 @@ class ExactStopForOneBlock(LoweringStep):
         return _OneShot(ctx, self.refusal)
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class _OneShot(BlockStep):
     """One run: only a block with a control statement or a path mode is its business."""
 

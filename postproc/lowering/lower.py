@@ -72,6 +72,7 @@ class LoweringStep:
         return blocks if run is None else run_blocks(blocks, [run])
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class Steps(BlockStep):
     """Several ``BlockStep``s as one, in order (a ``LoweringStep`` whose work is two rewrites, one after the
     other): a block that is only a move is its business while it is one of theirs."""

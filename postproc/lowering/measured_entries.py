@@ -44,6 +44,7 @@ MEASURED_9: Final = "tool_entry_at_point_9"
 AXES: Final = ("X", "Y", "Z")
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class WriteMeasuredEntries(LoweringStep):
     """Lowering step (the module docstring): a measured entry of another family -> the whole entry it sets."""
 
@@ -54,6 +55,7 @@ class WriteMeasuredEntries(LoweringStep):
 write_measured_entries = WriteMeasuredEntries()
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class _Entries(BlockStep):
     """One run: a move is its business (a reference return takes axes home), so ``moves`` stays True."""
 

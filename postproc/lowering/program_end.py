@@ -74,6 +74,7 @@ class EndTracker:
         return "live"
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class CommentAfterEnd(LoweringStep):
     """Lowering step (see the module docstring): ``comment_after_end``. With ``keep_numbered`` False,
     ``comment_numbered_subs_after_end``: for a target that reads only its own form of subprogram (grblHAL's
@@ -93,6 +94,7 @@ comment_after_end = CommentAfterEnd(True)
 comment_numbered_subs_after_end = CommentAfterEnd(False)
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class _AfterEnd(BlockStep):
     """One run: before the end it only follows the program (a move once the program has started is none
     of its business); after it, every block is."""

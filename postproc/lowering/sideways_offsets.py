@@ -25,6 +25,7 @@ either in the path or refused.
 
 from __future__ import annotations
 
+from mypy_extensions import mypyc_attr
 from typing import Final
 
 from ..compensation.tool_table import ENTRY, SIDEWAYS
@@ -45,6 +46,7 @@ _UNREWRITTEN: Final = {"CannedCycle": "a canned cycle kept for the target", "Fra
 """Sections that state program coordinates this step does not rewrite -> what they are, for the error."""
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class WriteSidewaysOffsets(LoweringStep):
     """Lowering step (the module docstring)."""
 
@@ -55,6 +57,7 @@ class WriteSidewaysOffsets(LoweringStep):
 write_sideways_offsets = WriteSidewaysOffsets()
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class _Sideways(BlockStep):
     """One run: until an entry with offsets across the spindle, only a block with a ``DataSetting`` is its
     business; from then on every block."""

@@ -57,6 +57,7 @@ _EXACT: Final = {"eq": ("and", "le", "ge"), "ne": ("or", "lt", "gt")}
 """An exact comparison as two exact ones LinuxCNC has, and the logical operator joining them."""
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class NestForwardJumps(LoweringStep):
     """Forward jumps as ``if`` .. ``endif`` (or ``break``), ``Until`` as ``do`` .. ``while``, exact equalities
     as two comparisons (module docstring: LinuxCNC); every other block as it is. With ``keep_equality``:
@@ -78,6 +79,7 @@ nest_forward_jumps = NestForwardJumps(False)
 nest_jumps_keeping_equality = NestForwardJumps(True)
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class _Nested(BlockStep):
     """One run: a block with a statement or a label is its business, and every block while a jump's stretch
     is held or a loop is being left."""

@@ -24,6 +24,7 @@ program writes another, is left out.
 
 from __future__ import annotations
 
+from mypy_extensions import mypyc_attr
 from typing import Final
 
 from ..compensation.tool_table import ENTRY, SIDEWAYS
@@ -39,6 +40,7 @@ RADIUS: Final = "R"
 """The entry's word for its radius."""
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class WriteToolEntries(LoweringStep):
     """Lowering step: a ``tool_entry`` setting of another family -> ``tool_length`` and ``cutter_offset``
     settings (see the module docstring); every other block as it is. Back to the program's own dialect
@@ -53,6 +55,7 @@ class WriteToolEntries(LoweringStep):
 write_tool_entries = WriteToolEntries()
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class _Entries(BlockStep):
     """One run: only a block with a ``DataSetting`` is its business."""
 

@@ -15,6 +15,7 @@ are marked ``expand`` and written as motion, with the rest of the cycle after th
 
 from __future__ import annotations
 
+from mypy_extensions import mypyc_attr
 from typing import Iterator
 
 from postproc.context import Context
@@ -36,6 +37,7 @@ POINT_BY_POINT_KEY = "patterns.point_by_point"
 transform or unit conversion carries each point's cycle exactly; a pattern's own words it does not know)."""
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class ExpandHolePatterns(LoweringStep):
     """Lowering transform (see the module docstring)."""
 
@@ -46,6 +48,7 @@ class ExpandHolePatterns(LoweringStep):
 expand_hole_patterns = ExpandHolePatterns()
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class _Patterns(BlockStep):
     """One run: a block that is only a move is its business while the active cycle is expanded (it may
     cancel it)."""

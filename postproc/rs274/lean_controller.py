@@ -86,6 +86,7 @@ def _close_full_circles(blocks: Iterator[Block]) -> Iterator[Block]:
             yield back
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class LowerForLeanController(LoweringStep):
     """``pause_for_tool_change``, ``cancel_length_offset_first``, ``close_full_circles`` and
     ``stops_after_motion`` (in that order) in one pass."""
@@ -99,6 +100,7 @@ class LowerForLeanController(LoweringStep):
 lower_for_lean_controller = LowerForLeanController()
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class _Lean(BlockStep):
     """One run of the four: a move is its business (an arc may be a full circle to close)."""
 

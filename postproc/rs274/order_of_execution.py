@@ -15,6 +15,7 @@ Starting the spindle or the coolant stays in the block: both orders run it befor
 
 from __future__ import annotations
 
+from mypy_extensions import mypyc_attr
 import copy
 from typing import Final
 
@@ -35,6 +36,7 @@ _TOOL: Final[tuple[str, ...]] = ("ToolSelect", "ToolChange")
 into the block before, so a tool change still precedes a coolant off."""
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class StopsAfterMotion(LoweringStep):
     """Lowering step for RS274/NGC targets (see the module docstring)."""
 
@@ -45,6 +47,7 @@ class StopsAfterMotion(LoweringStep):
 stops_after_motion = StopsAfterMotion()
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class _StopsAfter(BlockStep):
     """One run: only a block that stops or starts the spindle or the coolant is its business."""
 
@@ -82,6 +85,7 @@ def split_stops_after_motion(block: Block) -> Block | None:
     return after
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class StopsBeforeMotion(LoweringStep):
     """Lowering step for targets that stop after the motion (see the module docstring). A source that
     stops after the motion too flags nothing: its blocks pass with no step each."""
@@ -93,6 +97,7 @@ class StopsBeforeMotion(LoweringStep):
 stops_before_motion = StopsBeforeMotion()
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class _StopsBefore(BlockStep):
     """One run: only a block that stops or starts the spindle or the coolant is its business."""
 

@@ -14,6 +14,7 @@ plugin's step runs interpreted); the dialect's plugin names it in its ``LOWERING
 
 from __future__ import annotations
 
+from mypy_extensions import mypyc_attr
 from typing import Callable, Iterator
 
 from ..context import Context
@@ -31,6 +32,7 @@ Refusal = Callable[[str, str, int], str]
 programs are left unordered) -> text."""
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class SubprogramsAfterCallers(LoweringStep):
     """Lowering step (see the module docstring), which also writes the return level a cycle needs as the
     text comes; a source of the target's own dialect is written as it is. ``refusal`` words the error."""
@@ -44,6 +46,7 @@ class SubprogramsAfterCallers(LoweringStep):
         return _Layout(ctx, target, self.refusal)
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class _Layout(BlockStep):
     """One run: the main program streams (a block that is only a move is none of its business), the
     subprograms after its end are held (then every block is)."""
