@@ -70,9 +70,10 @@ def deviation(source: str, out: str, src: str, dst: str, setup: MachineSetup = L
 
 def test_seed_gsk_to_fanuc_keeps_the_cycles_native() -> None:
     # Fanuc T has no K (the monotonicity check: the translation has made it), every other word stays;
-    # GSK starts in G98 (feed per minute), Fanuc T in G99: the first block says G98
+    # GSK starts in G98 (feed per minute), Fanuc T in G99: the first block says G98 (and the units the
+    # translation read the program in, G21: postproc.lowering.units_at_start)
     assert write(SEED, "gsk", "fanuc") == (
-        "%\nO0001\nG98 G00 X60. Z5.\nG71 U2. R1.\nG71 P10 Q20 U0.5 W0.1 F0.25\nN10 G00 X20.\nG01 Z-20. F0.1\n"
+        "%\nO0001\nG21 G98 G00 X60. Z5.\nG71 U2. R1.\nG71 P10 Q20 U0.5 W0.1 F0.25\nN10 G00 X20.\nG01 Z-20. F0.1\n"
         "G01 X40. Z-30.\nG01 Z-50.\nN20 G01 X56.\nG70 P10 Q20\nG00 X100. Z50.\nM30\n%\n")
 
 
@@ -165,7 +166,7 @@ def test_turning_single_cycle_by_hand() -> None:
 def test_single_cycle_in_fanuc_system_b_is_g77() -> None:
     setup = MachineSetup(input=InputSettings(machine_type="lathe", gcode_system="B"), machine=MachineSettings(axes="XZ"))
     text = write(SINGLE, "gsk", "fanuc", setup)
-    assert text == "G94 G00 X60. Z5.\nG77 X50. Z-30. F0.2\nG77 X40. Z-30. R-2.\nG00 X100.\n"
+    assert text == "G21 G94 G00 X60. Z5.\nG77 X50. Z-30. F0.2\nG77 X40. Z-30. R-2.\nG00 X100.\n"
     assert deviation(SINGLE, text, "gsk", "fanuc", setup) == 0.0
 
 
@@ -190,14 +191,14 @@ def test_coordinate_setting_and_spindle_clamp() -> None:
     assert bs[1].sections["SpindleClamp"].rpm == 2500.0
     assert bs[2].sections["SpindleMode"].mode == "css"
     assert write("G50 X200. Z100.\nG50 S2500\nG96 S180\nG00 X60. Z5.\n", "gsk", "fanuc") == (
-        "G98 G50 X200. Z100.\nG50 S2500\nG96 S180\nG00 X60. Z5.\n")
+        "G21\nG98 G50 X200. Z100.\nG50 S2500\nG96 S180\nG00 X60. Z5.\n")  # units before the setting's lengths
     # G50 X200 declares where the tool is: a move to X60 goes 140 (diameter) down from there
     evs = events("G50 X200. Z100.\nG00 X60. Z5.\n", "gsk")
     assert [(e["x"], e["z"]) for e in evs[1:]] == [(60, 5)]
 
 
 def test_tool_and_offset_word() -> None:
-    assert write("T0101\n", "gsk", "fanuc") == "G98 T0101\n"  # GSK's start in G98 said for Fanuc T
+    assert write("T0101\n", "gsk", "fanuc") == "G21 G98 T0101\n"  # GSK's start in G98 said for Fanuc T
     assert blocks("T0101\n", "gsk")[0].sections["ToolSelect"].number == 101
 
 
@@ -280,7 +281,7 @@ def test_gsk_output_writes_every_word() -> None:
                          lathe_cycles=LatheCycleSettings(rough_depth=1.5, rough_retract=0.4))
     text = write("S500 M03\nG00 X60. Z5.\nG71 P10 Q20 U0.5 W0.1 F0.25\nN10 G00 X20.\nN20 G01 X56. Z-20.\n", "fanuc", "gsk",
                  setup)
-    assert text == ("G99 S500 M03\nG00 X60. Z5.\nG71 U1.5 R0.4\nG71 P10 Q20 U0.5 W0.1 F0.25\nN10 G00 X20.\n"
+    assert text == ("G21 G99 S500 M03\nG00 X60. Z5.\nG71 U1.5 R0.4\nG71 P10 Q20 U0.5 W0.1 F0.25\nN10 G00 X20.\n"
                     "N20 G01 X56. Z-20.\n")
 
 
@@ -444,7 +445,7 @@ def test_each_control_starts_in_its_own_feed_mode() -> None:
     relies on its control's start gets the mode written for a target that starts in another."""
     program = "G97 S500 M03\nG00 X60. Z5.\nG01 X50. F0.2\n"  # a spindle turning: LinuxCNC feeds per rev only then
     assert write(program, "fanuc", "linuxcnc").splitlines()[:2][0] == "G18 G7"  # the LinuxCNC lathe's modes
-    assert write(program, "fanuc", "linuxcnc").splitlines()[1].startswith("G95 ")
+    assert write(program, "fanuc", "linuxcnc").splitlines()[2].startswith("G95 ")  # after the units (G21)
     assert events(program, "fanuc")[0]["feed_mode"] == "per_rev"
     assert "feed_mode" not in events(program, "gsk")[0]
     assert write(program, "fanuc", "fanuc") == program
@@ -531,7 +532,7 @@ def test_data_parameters_are_millimetres_in_an_inch_program() -> None:
 def test_g32_thread_cutting_is_a_synchronised_move() -> None:
     program = "G99 S500 M03 G00 X30. Z5.\nG32 Z-20. F1.5\nG00 X40.\n"
     b_setup = MachineSetup(input=InputSettings(machine_type="lathe", gcode_system="B"))
-    assert write(program, "gsk", "fanuc", b_setup) == "G95 G00 X30. Z5. S500 M03\nG33 Z-20. F1.5\nG00 X40.\n"
+    assert write(program, "gsk", "fanuc", b_setup) == "G21 G95 G00 X30. Z5. S500 M03\nG33 Z-20. F1.5\nG00 X40.\n"
     assert blocks(program, "gsk")[1].sections["Motion"].mode == "thread"
     evs = events(program, "gsk")
     assert evs[3] == {"line": 2, "move": "feed", "x": 30, "z": -20, "f": 1.5}
@@ -543,7 +544,7 @@ def test_system_b_incremental_moves_become_u_w_for_system_a() -> None:
     b_setup = MachineSetup(input=InputSettings(machine_type="lathe", gcode_system="B"))
     program = "G94 G90 G00 X60. Z5.\nG91 G01 X-10. Z-5. F100.\nG02 X10. Z-5. R5.\nG90 G00 X80.\n"
     gsk = write(program, "fanuc", "gsk", b_setup)
-    assert gsk == "G98 G00 X60. Z5.\nG01 U-10. W-5. F100.\nG02 U10. W-5. R5.\nG00 X80.\n"
+    assert gsk == "G21 G98 G00 X60. Z5.\nG01 U-10. W-5. F100.\nG02 U10. W-5. R5.\nG00 X80.\n"
     report = verify_lines(lines(program), lines(gsk), file_in="in.nc", file_out="out.nc", source="fanuc",
                           target="gsk", setup=b_setup, target_setup=LATHE)
     assert report.ok and report.max_deviation == 0.0

@@ -9,7 +9,8 @@ set-up's own lengths): so the target gets those units written before anything th
 machine would run every millimetre as an inch, and verify could not see it (it reads the translation as it
 read the source).
 
-The units go in the first block that has more than a program start, tape mark or comment, beside what it
+A subprogram defined before the main program (LinuxCNC ``o<name> sub``, ISG ``%L``) is passed over: it runs
+where it is called. The units go in the first block that has more than a program start, tape mark or comment, beside what it
 programs (``G21 G90 G54``), or in a block of their own before it where that block may not run (a block-delete
 ``/`` block) or is not a plain block of modal words and motion (a subprogram definition, a loop). A program that
 programs its units there or before needs nothing; a copy to the same dialect passes untouched.
@@ -20,6 +21,7 @@ from __future__ import annotations
 from typing import Final
 
 from ..context import Context
+from ..control import SubEnd, SubStart
 from ..dialect import Dialect
 from ..ir import Block, Units
 from .lower import BlockStep, LoweringStep
@@ -55,9 +57,20 @@ class _Units(BlockStep):
         super().__init__()
         self.units = units
         self.done = False
+        self.depth = 0
+        """Subprogram definitions open around the block (they come before the program that calls them)."""
 
     def take(self, block: Block) -> list[Block] | None:
         if self.done:
+            return None
+        control = block.sections.get("Control")
+        if isinstance(control, SubStart):
+            self.depth += 1  # a definition runs where it is called, not here: its lengths are read later
+            return None
+        if isinstance(control, SubEnd):
+            self.depth -= 1
+            return None
+        if self.depth:
             return None
         keys = block.sections.keys()
         if not keys or ("Units" not in keys and HEADER.issuperset(keys)):
