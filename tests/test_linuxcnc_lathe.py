@@ -71,22 +71,23 @@ def test_done_when_the_bundled_programs_carry_css_feed_per_rev_and_threads() -> 
 
 
 # -- writing, by hand ----------------------------------------------------------------------------------
+# (a program without units gets the millimetres it was read in, G21: postproc.lowering.units_at_start)
 
 def test_a_clamp_while_css_is_on_is_a_new_g96_with_the_speed_in_force() -> None:
     text = write("G96 S180 M03\nG00 X50. Z2.\nG50 S3000\nG01 X40. F0.2\nG97 S800\nG96 S150\n", "fanuc", FANUC_T)
-    assert code_lines(text) == ["G18 G7", "G95 G96 S180 M3", "G0 X50. Z2.", "G96 S180 D3000",
+    assert code_lines(text) == ["G18 G7", "G21", "G95 G96 S180 M3", "G0 X50. Z2.", "G96 S180 D3000",
                                 "G1 X40. F0.2", "G97 S800", "G96 D3000 S150", "M2"]
 
 
 def test_a_clamp_before_css_waits_for_its_g96() -> None:
     text = write("G50 S2000\nG97 S500 M03\nG96 S120\n", "gsk", GSK)
-    assert code_lines(text) == ["G18 G7", "G97 S500 M3", "G96 D2000 S120", "M2"]
+    assert code_lines(text) == ["G18 G7", "G21", "G97 S500 M3", "G96 D2000 S120", "M2"]
     assert "(G50 S2000)" in text  # the block itself wrote nothing: its trace
 
 
 def test_a_straight_thread_is_g33_with_its_lead_and_f_before_it() -> None:
     text = write("G97 S500 M03\nG00 X30. Z5.\nG32 Z-20. F1.5\nG00 X40.\nG01 Z-25.\n", "fanuc", FANUC_T)
-    assert code_lines(text)[3:] == ["F1.5", "G33 Z-20. K1.5", "G0 X40.", "G1 Z-25.", "M2"]  # F stays the lead
+    assert code_lines(text)[4:] == ["F1.5", "G33 Z-20. K1.5", "G0 X40.", "G1 Z-25.", "M2"]  # F stays the lead
 
 
 def test_a_taper_thread_gets_k_along_its_path() -> None:
@@ -106,7 +107,7 @@ def test_a_face_thread_is_refused_at_its_line() -> None:
 
 def test_a_radius_program_gets_g8_and_keeps_its_x() -> None:
     radius = MachineSetup(input=InputSettings(machine_type="lathe", x_programming="radius"))
-    assert code_lines(write("G99 G00 X30. Z5.\n", "fanuc", radius)) == ["G18 G8", "G95 G0 X30. Z5.", "M2"]
+    assert code_lines(write("G99 G00 X30. Z5.\n", "fanuc", radius)) == ["G18 G8", "G21 G95 G0 X30. Z5.", "M2"]
 
 
 # -- reading LinuxCNC lathe programs -----------------------------------------------------------------

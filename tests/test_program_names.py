@@ -83,5 +83,5 @@ def test_a_second_named_start_is_a_comment_not_a_second_o0001() -> None:
     """ISG runs on through a second ``%name`` (the simulation takes it as nothing); two ``O0001`` lines would be
     two programs of one number, which the Fanuc reader (and control) refuse. Found by the suite's fuzzing."""
     text, warnings = written("%A\nG01 X1 F100\n%B\nG01 X2\nM30\n", "isg", "fanuc")
-    assert text.splitlines() == ["O0001 (A)", "G01 X1. F100.", "(B)", "G01 X2.", "M30"]
+    assert text.splitlines() == ["O0001 (A)", "G21 G01 X1. F100.", "(B)", "G01 X2.", "M30"]
     assert warnings.count("warning:") == 1

@@ -64,7 +64,7 @@ def test_a_computed_length_register_before_any_motion_code_round_trips() -> None
 
 
 def test_the_power_on_mode_reaches_a_target_that_needs_a_motion_code() -> None:
-    assert translated("G43 H1 Z1.\nX1.\nM30", "linuxcnc").splitlines()[:2] == ["G43 H01 G0 Z1.", "G0 X1."]
+    assert translated("G43 H1 Z1.\nX1.\nM30", "linuxcnc").splitlines()[:2] == ["G21 G43 H01 G0 Z1.", "G0 X1."]  # G21: the units read in
 
 
 def test_a_dialect_without_a_power_on_mode_still_refuses_axis_words_first() -> None:
@@ -115,7 +115,7 @@ def test_h0_beside_g53_under_g49_cancels_nothing_and_moves_in_machine_coordinate
     assert events("G00 X1. Z10.\nG53 G0 Z0 H0;\nM30") == [{"line": 1, "move": "rapid", "x": 1, "y": 0, "z": 10},
                                                           {"line": 2, "move": "rapid", "x": 1, "y": 0, "z": 0},
                                                           {"line": 3, "event": "end"}]
-    assert translated("G53 G0 Z0 H0;\nM30", "linuxcnc").splitlines()[0] == "G53 G49 G0 Z0."
+    assert translated("G53 G0 Z0 H0;\nM30", "linuxcnc").splitlines()[0] == "G53 G21 G49 G0 Z0."  # G21: the units read in
 
 
 def test_h_alone_under_g43_selects_that_register() -> None:
@@ -200,7 +200,7 @@ def test_a_haas_program_mixing_both_numberings_is_refused_by_name() -> None:
 
 
 def test_a_haas_general_variable_translates_flattened_for_linuxcnc() -> None:
-    assert translated("#10100=5.\nG00 X#10100\nM30", "linuxcnc", HAAS).splitlines()[-2:] == ["G0 X5.", "M30"]
+    assert translated("#10100=5.\nG00 X#10100\nM30", "linuxcnc", HAAS).splitlines()[-2:] == ["G21 G0 X5.", "M30"]  # G21: the units read in
 
 
 # -- a macro file run on its own, with G65-style arguments ------------------------------------------------------
@@ -253,12 +253,12 @@ def test_a_vacant_value_is_flattened_for_linuxcnc_which_has_no_0() -> None:
     # found by the shop-spellings generator: rs274 refuses '#1=#0' ("Parameter number out of range");
     # by hand: #1 vacant, counted as 0 in [#1+1.] (Fanuc vacancy), so the move goes to X1.
     source = "G0 X0 Y0 Z1.\n#1=#0\nG0 X[#1+1.]\nM30"
-    assert translated(source, "linuxcnc") == "G0 X0. Y0. Z1.\nG0 X1.\nM30\n"
+    assert translated(source, "linuxcnc") == "G21 G0 X0. Y0. Z1.\nG0 X1.\nM30\n"  # G21: the units read in
 
 
 def test_a_variable_linuxcnc_lacks_is_never_written_for_it() -> None:
     # found by the shop-spellings generator: 'G1 Z-#10200' reached LinuxCNC, whose parameters end at #5601
-    assert translated("#10100=5.\nG1 Z-#10100 F10.\nM30", "linuxcnc", HAAS) == "G1 Z-5. F10.\nM30\n"
+    assert translated("#10100=5.\nG1 Z-#10100 F10.\nM30", "linuxcnc", HAAS) == "G21 G1 Z-5. F10.\nM30\n"  # G21: the units read in
     with pytest.raises(ErrorList) as info:
         translated("G1 Z-#10100 F10.\nM30", "linuxcnc")
     assert [str(e) for e in info.value.errors] == [

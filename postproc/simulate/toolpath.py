@@ -41,6 +41,7 @@ from ..context import ASSUMED_START, Context
 from ..dialect import Dialect
 from ..errors import Diagnostics
 from ..lowering.lower import lower_for
+from ..lowering.units_at_start import write_units_at_start
 from ..lowering.machine_functions import drop_foreign_machine_functions
 from ..lowering.program_end import comment_after_end
 from ..lowering.measured_entries import write_measured_entries
@@ -63,11 +64,12 @@ __all__ = ["MOVES_THE_TOOL", "UNSIMULATED", "Event", "Simulator", "ToolpathTarge
 
 TRANSLATE_ONLY = (check_blocks, comment_after_end, drop_foreign_machine_functions, resolve_rigid_taps,
                   resolve_dynamic_cutter_compensation, time_length_changes, write_tool_entries,
-                  write_sideways_offsets, write_measured_entries)
+                  write_sideways_offsets, write_measured_entries, write_units_at_start)
 """Generic lowering steps a simulation skips: it checks the feed itself, it must see the blocks after
 the program end as they are written (to record the live ones), and it runs machine-specific codes,
 rigid taps and compensation by a diameter (keeping the programmed point beside the controlled one), and
-it applies a tool length change by the reading dialect's own rule (``time_length_changes``)."""
+it applies a tool length change by the reading dialect's own rule (``time_length_changes``); it starts in the
+units the translation writes for another dialect (``write_units_at_start``)."""
 
 
 class ToolpathTarget(Dialect):
