@@ -58,7 +58,7 @@ def postproc_register_lowerings(register: Callable[[Lowering], None]) -> None:
     from .lowering.inverse_time import convert_inverse_time
     from .lowering.length_timing import time_length_changes
     from .lowering.machine_functions import drop_foreign_machine_functions
-    from .lowering.measured_entries import write_measured_entries
+    from .frames.measured_entries import write_measured_entries
     from .lowering.path_at_start import carry_path_at_start
     from .lowering.program_end import comment_after_end
     from .lowering.program_frame import frame_program

@@ -11,7 +11,7 @@ from postproc.ir import Section
 from postproc.ir.keys import only_move, watches_none
 from postproc.isg_family.tool_data import _WATCHED as ISG_TOOL_DATA
 from postproc.lowering.length_timing import _STATE as LENGTH_TIMING
-from postproc.lowering.measured_entries import _WATCHED as MEASURED
+from postproc.frames.measured_entries import _WATCHED as MEASURED
 
 KEYS = ("Motion", "Sequence", "Units", "DataSetting", "ToolLengthOffset", "Comments", "Coolant", "DistanceMode",
         "CutterCompensation", "FrameChange", "Plane")

@@ -239,4 +239,4 @@ def test_listing_the_dialects_runs_only_the_dialect_hook(tmp_path: Path) -> None
     modules = warm_modules_after(tmp_path, "dialects")
     assert "postproc.core_plugin" in modules and "postproc.commands.dialect_table" in modules  # the probe saw the run
     assert [name for name in ("postproc.cycles.lowering", "postproc.frames.lowering", "postproc.lowering.sequences",
-                              "postproc.patterns", "postproc.lowering.measured_entries") if loaded(modules, name)] == []
+                              "postproc.patterns", "postproc.frames.measured_entries") if loaded(modules, name)] == []

@@ -10,7 +10,7 @@ G59.3), simulated as LinuxCNC's interpreter works them out ([V] ``interp_convert
 * Under a coordinate shift or rotation of the program's own (``G92``, ``G52``, ``G10 L2 R``): checked against
   rs274 in ``test_measured_entry_rotated.py``.
 * Towards Fanuc and grbl, ``G10 L10`` is worked out where the translation knows the point and the offset in
-  force (``postproc.lowering.measured_entries``): seeded programs translated move as rs274 and verify;
+  force (``postproc.frames.measured_entries``): seeded programs translated move as rs274 and verify;
   where it does not (``L11``, after a change of work system), a located error: never a dropped entry.
 """
 

@@ -158,7 +158,7 @@ def data_setting(ev: Evaluation, block: Block, s: dict[str, Section]) -> bool:
 def tool_entry(ev: Evaluation, setting: DataSetting) -> None:
     """A program's tool table entry, which a later offset change reads (``tool_change``). One measured
     where the tool stands (``G10 L10``) is the current point plus the offset in force, less the word [V:
-    LinuxCNC ``convert_setup_tool``; ``postproc.lowering.measured_entries``]; where that is not known here
+    LinuxCNC ``convert_setup_tool``; ``postproc.frames.measured_entries``]; where that is not known here
     (work system 9's ``L11``, an unknown point, a computed word), every offset read after it is unknown."""
     run = ev.reached
     if run.tools is None:

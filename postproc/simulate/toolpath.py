@@ -44,7 +44,7 @@ from ..lowering.lower import lower_for
 from ..lowering.units_at_start import write_units_at_start
 from ..lowering.machine_functions import drop_foreign_machine_functions
 from ..lowering.program_end import comment_after_end
-from ..lowering.measured_entries import write_measured_entries
+from ..frames.measured_entries import write_measured_entries
 from ..lowering.sideways_offsets import write_sideways_offsets
 from ..lowering.tool_entries import write_tool_entries
 from ..plugins import Registry, default_registry

@@ -31,10 +31,10 @@ from ..context import Context
 from ..dialect import Dialect
 from ..errors import PostprocError, UnsupportedError
 from ..expr import Expr
-from ..frames.run_state import RUN_KEY, FrameRun
+from .run_state import RUN_KEY, FrameRun
 from ..ir import Block, DataSetting, Motion, Section
 from ..ir.keys import watches_none
-from .lower import BlockStep, LoweringStep
+from ..lowering.lower import BlockStep, LoweringStep
 from ..state import MM_PER_INCH
 
 MEASURED: Final = "tool_entry_at_point"
