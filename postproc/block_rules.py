@@ -19,8 +19,6 @@ step, which looks only at the blocks before the first feed rate.
 from __future__ import annotations
 
 import math
-from itertools import chain
-from typing import Iterator
 
 from mypy_extensions import mypyc_attr
 
@@ -31,6 +29,7 @@ from .errors import ProgramError
 from .arc_end import NEUTRAL_ARC_END, ArcEndRule
 from .geometry import PLACES, centre_from_radius
 from .ir import Block
+from .lowering.lower import BlockStep, LoweringStep
 
 NO_FEED = "a feed move with no feed rate (program F first)"
 ZERO_FEED = "a feed move at a zero feed rate (F0 is in force: program a feed rate above 0 first)"
@@ -90,38 +89,57 @@ def check_values(block: Block, ctx: Context) -> None:
             raise ProgramError(problem, ctx.at(block, ctx.column_of(block, "S")))
 
 
-def check_blocks(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+@mypyc_attr(allow_interpreted_subclasses=True)
+class CheckBlocks(LoweringStep):
     """Lowering step for ``translate``: a feed move before any feed rate is a located error (the
     simulator makes the same check itself). Once a feed rate is in force nothing is left to check: the
-    rest of the stream passes on with no step per block."""
-    stream = iter(blocks)
-    return chain(_until_fed(stream, ctx), stream)
+    step then looks at no block (``_UntilFed.done``)."""
+
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        return _UntilFed(ctx)
 
 
-def _until_fed(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
-    """The blocks up to the first feed rate (or the first construct of a program that computes)."""
-    report = ctx.diagnostics.error
-    for block in blocks:
+check_blocks = CheckBlocks()
+
+
+@mypyc_attr(allow_interpreted_subclasses=True)
+class _UntilFed(BlockStep):
+    """The blocks up to the first feed rate (or the first construct of a program that computes). A block
+    that is only a move is looked at until then (a feed move in it needs a rate); after it, none."""
+
+    def __init__(self, ctx: Context) -> None:
+        super().__init__()
+        self.ctx = ctx
+        self.done = False
+        """A feed rate (or a construct) went by: every block passes unlooked at."""
+
+    def take(self, block: Block) -> list[Block] | None:
+        if self.done:
+            return None
         sections = block.sections
         if sections.keys().isdisjoint(_KEYS):
-            yield block
-            continue
+            return None
         if CONTROL in sections or ASSIGN in sections or "Feed" in sections:
-            yield block  # from a construct on, execution order is no longer the text's
-            return
+            self._fed()  # from a construct on, execution order is no longer the text's
+            return None
+        ctx = self.ctx
         motion = sections.get("Motion")
         if motion is not None and needs_feed(motion):
-            report(ProgramError(NO_FEED, ctx.at(block), needs="F"))
+            ctx.diagnostics.error(ProgramError(NO_FEED, ctx.at(block), needs="F"))
         compound = sections.get("CompoundMotion")
         if compound is not None:
             for item in compound.items:  # type: ignore[attr-defined]
                 if item.KEY == "Feed":
-                    yield block
-                    return
+                    self._fed()
+                    return None
                 if item.KEY == "Motion" and needs_feed(item):
-                    report(ProgramError(NO_FEED, ctx.at(block), needs="F"))
+                    ctx.diagnostics.error(ProgramError(NO_FEED, ctx.at(block), needs="F"))
                     break
-        yield block
+        return None
+
+    def _fed(self) -> None:
+        self.done = True
+        self.moves = False
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)

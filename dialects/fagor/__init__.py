@@ -9,7 +9,7 @@ What DIALECTS.md marks uncertain for the 8070 [?] is kept verbatim (``reader``).
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Callable, Iterator
+from typing import TYPE_CHECKING, Callable
 
 from postproc.context import Context
 from postproc.comments import CommentSyntax
@@ -61,10 +61,16 @@ end_cycles_before_moves = _EndCyclesBeforeMoves()
 resolve_radius_where_d_cannot = _ResolveRadiusWhereDCannot()
 
 
-def absolute_machine_moves(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+class _AbsoluteMachineMoves(LoweringStep):
     """``postproc.isg_family.machine_moves.absolute_machine_moves``, imported when first used."""
-    from postproc.isg_family.machine_moves import absolute_machine_moves as step
-    return step(blocks, ctx, target)
+
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        from postproc.isg_family.machine_moves import absolute_machine_moves as step
+        return step.start(ctx, target)
+
+
+absolute_machine_moves = _AbsoluteMachineMoves()
+
 
 class Fagor(Dialect):
     NAME = "fagor"

@@ -9,7 +9,7 @@ numbers collide with Fanuc's are told apart.
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Callable, Iterator
+from typing import TYPE_CHECKING, Callable
 
 from postproc.comments import CommentSyntax
 from postproc.arc_end import NEAREST_CENTRE, ArcEndRule
@@ -26,7 +26,6 @@ from postproc.xmlio import XFactory
 
 if TYPE_CHECKING:
     from postproc.context import Context
-    from postproc.ir import Block
 
 
 class _SelectToolData(LoweringStep):
@@ -50,10 +49,15 @@ select_tool_data = _SelectToolData()
 resolve_radius_where_d_cannot = _ResolveRadiusWhereDCannot()
 
 
-def absolute_machine_moves(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+class _AbsoluteMachineMoves(LoweringStep):
     """``postproc.isg_family.machine_moves.absolute_machine_moves``, imported when first used."""
-    from postproc.isg_family.machine_moves import absolute_machine_moves as step
-    return step(blocks, ctx, target)
+
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        from postproc.isg_family.machine_moves import absolute_machine_moves as step
+        return step.start(ctx, target)
+
+
+absolute_machine_moves = _AbsoluteMachineMoves()
 
 
 class Isg(Dialect):

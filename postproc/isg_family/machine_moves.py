@@ -22,11 +22,12 @@ The program's distance mode is unchanged wherever a word reads it: ``verify`` co
 
 from __future__ import annotations
 
-from typing import Final, Iterator
+from typing import Final
 
 from ..context import Context
 from ..dialect import Dialect
 from ..ir import Block, DistanceMode, MachineCoordinates, Motion
+from ..lowering.lower import BlockStep, LoweringStep
 from ..output.home_position import home_position
 from ..state import ModalState
 
@@ -35,36 +36,57 @@ QUIET: Final = frozenset(("Comments", "Sequence"))
 """A block of only these reads no distance mode."""
 
 
-def absolute_machine_moves(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+class AbsoluteMachineMoves(LoweringStep):
     """Lowering step: see the module docstring."""
-    start = ModalState()
-    distance, inch = start.distance, start.units == "inch"
-    absolute_there = False
-    """The target runs absolute where the program is incremental (a ``G91`` is owed)."""
-    for block in blocks:
+
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        return _AbsoluteMachineMoves(ctx)
+
+
+absolute_machine_moves = AbsoluteMachineMoves()
+
+
+class _AbsoluteMachineMoves(BlockStep):
+    """One run: the distance mode and units the program reads, and whether a ``G91`` is owed. A block that
+    is only a move is its business only under incremental distance (it may be a reference return, ``G28 X0.``)
+    or while a ``G91`` is owed (it reads the distance mode)."""
+
+    def __init__(self, ctx: Context) -> None:
+        super().__init__()
+        self.ctx = ctx
+        start = ModalState()
+        self.distance = start.distance
+        self.inch = start.units == "inch"
+        self.absolute_there = False
+        """The target runs absolute where the program is incremental (a ``G91`` is owed)."""
+        self.moves = self.distance == "incremental"
+
+    def take(self, block: Block) -> list[Block] | None:
         s = block.sections
         units = s.get("Units")
         if units is not None:
-            inch = getattr(units, "system", "mm") == "inch"
+            self.inch = getattr(units, "system", "mm") == "inch"
         own = s.get("DistanceMode")
         if own is not None:
-            distance = getattr(own, "mode", distance)
+            self.distance = getattr(own, "mode", self.distance)
         m = s.get("Motion")
         machine = isinstance(m, Motion) and "BlockDelete" not in s and (
             "MachineCoordinates" in s or m.mode in REFERENCE)
-        if machine and distance == "incremental" and isinstance(m, Motion) and _settled(block, m, ctx, inch):
-            if not absolute_there:
+        if machine and self.distance == "incremental" and isinstance(m, Motion) and _settled(block, m, self.ctx,
+                                                                                               self.inch):
+            if not self.absolute_there:
                 block.add(DistanceMode("absolute"))  # (replaces the block's own G91: restored after)
-                absolute_there = True
+                self.absolute_there = True
             elif own is not None:
                 del s["DistanceMode"]
             block.changed()
-        elif absolute_there and not (s.keys() <= QUIET):
-            absolute_there = False
+        elif self.absolute_there and not (s.keys() <= QUIET):
+            self.absolute_there = False
             if own is None:
                 block.add(DistanceMode("incremental"))
                 block.changed()
-        yield block
+        self.moves = self.absolute_there or self.distance == "incremental"
+        return None
 
 
 def _settled(block: Block, motion: Motion, ctx: Context, inch: bool) -> bool:

@@ -47,7 +47,9 @@ each axis is programmed, so the move gets both. ISG and Fagor targets get their 
 
 from __future__ import annotations
 
-from typing import Final, Iterator
+from typing import Final
+
+from mypy_extensions import mypyc_attr
 
 from ..context import Context
 from ..dialect import Dialect
@@ -56,6 +58,7 @@ from ..expr import Binary, Expr, Num, Var
 from ..ir import Block, CutterCompensation, DataSetting, DistanceMode, Motion, Section, ToolLengthOffset, Units
 from ..ir.keys import watches_none
 from ..compensation.tool_table import ToolTable
+from .lower import BlockStep, LoweringStep
 
 AXIS: Final = "Z"
 MM_PER_INCH: Final = 25.4
@@ -70,17 +73,23 @@ _STATE: Final = _WATCHED - {"Motion"} | {"MachineCoordinates"}
 """What a block must lack for ``_complete``'s short way (a plain move or none, nothing else to follow)."""
 
 
-def time_length_changes(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+@mypyc_attr(allow_interpreted_subclasses=True)
+class TimeLengthChanges(LoweringStep):
     """Lowering step: a tool length change placed where the target applies it as the source does (see
     the module docstring); nothing to do between controllers with the same rule. On a lathe only the
     way to a controller that applies it at the programmed axes is taken (Fanuc T/GSK -> LinuxCNC)."""
-    if ctx.dialect == target.NAME or not target.TOOL_LENGTH_OFFSET and not _writes_lengths(target):
-        return blocks
-    if ctx.length_at_axis == target.LENGTH_AT_PROGRAMMED_AXIS:
-        return blocks
-    if ctx.lathe:  # Fanuc T/GSK T0102 -> LinuxCNC's lathe G43 H02 (``postproc.cycles.lathe_lowering``)
-        return blocks if ctx.length_at_axis else _complete(blocks, ctx, target)
-    return _defer(blocks, ctx, target) if ctx.length_at_axis else _complete(blocks, ctx, target)
+
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        if ctx.dialect == target.NAME or not target.TOOL_LENGTH_OFFSET and not _writes_lengths(target):
+            return None
+        if ctx.length_at_axis == target.LENGTH_AT_PROGRAMMED_AXIS:
+            return None
+        if ctx.lathe:  # Fanuc T/GSK T0102 -> LinuxCNC's lathe G43 H02 (``postproc.cycles.lathe_lowering``)
+            return None if ctx.length_at_axis else _Complete(ctx, target)
+        return _Defer(ctx, target) if ctx.length_at_axis else _Complete(ctx, target)
+
+
+time_length_changes = TimeLengthChanges()
 
 
 def _writes_lengths(target: type[Dialect]) -> bool:
@@ -105,53 +114,65 @@ def _distance(block: Block, absolute: bool) -> bool:
     return distance.mode == "absolute" if isinstance(distance, DistanceMode) else absolute
 
 
-def _defer(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
-    """Towards a target that applies a change at the next move: each change goes to the next absolute Z."""
-    pending: ToolLengthOffset | None = None
-    written: tuple[str, object, object] = ("cancel", None, None)  # what the target has in force
-    in_force: tuple[str, object, object] = ("cancel", None, None)  # what the source has programmed
-    absolute = True
-    for block in blocks:
+@mypyc_attr(allow_interpreted_subclasses=True)
+class _Defer(BlockStep):
+    """Towards a target that applies a change at the next move: each change goes to the next absolute Z. A
+    block that is only a move is its business only while a change waits (it may be that Z)."""
+
+    def __init__(self, ctx: Context, target: type[Dialect]) -> None:
+        super().__init__()
+        self.ctx = ctx
+        self.target = target
+        self.pending: ToolLengthOffset | None = None
+        self.written: tuple[str, object, object] = ("cancel", None, None)  # what the target has in force
+        self.in_force: tuple[str, object, object] = ("cancel", None, None)  # what the source has programmed
+        self.absolute = True
+        self.moves = False
+
+    def take(self, block: Block) -> list[Block] | None:
         sections = block.sections
-        if pending is None and "ToolLengthOffset" not in sections:  # nothing to carry: only the distance mode
+        if self.pending is None and "ToolLengthOffset" not in sections:  # nothing to carry: only the distance mode
             if "DistanceMode" in sections:
-                absolute = _distance(block, absolute)
-            yield block
-            continue
-        absolute = _distance(block, absolute)
+                self.absolute = _distance(block, self.absolute)
+            return None
+        absolute = self.absolute = _distance(block, self.absolute)
         offset = sections.get("ToolLengthOffset")
         if isinstance(offset, ToolLengthOffset):
-            same = _key(offset) == in_force
-            in_force = _key(offset)
-            if same and pending is None:
-                yield block  # changes nothing (a G49 in a start-up line): left where it is
-                continue
-            if _absolute_z(block, absolute) or offset.mode == "dynamic" and not target.DYNAMIC_TOOL_LENGTH:
+            same = _key(offset) == self.in_force
+            self.in_force = _key(offset)
+            if same and self.pending is None:
+                return None  # changes nothing (a G49 in a start-up line): left where it is
+            if _absolute_z(block, absolute) or offset.mode == "dynamic" and not self.target.DYNAMIC_TOOL_LENGTH:
                 # (a length the target cannot write stays at its block, whose writing refuses it there)
-                pending = None
-                written = _key(offset)
-                yield block
-                continue
+                self._wait(None)
+                self.written = _key(offset)
+                return None
             del sections["ToolLengthOffset"]
             block.changed()
-            pending = offset
+            self._wait(offset)
             if not sections:
-                continue  # nothing else in the block: the change is written where it applies
+                return []  # nothing else in the block: the change is written where it applies
+        pending = self.pending
         if pending is not None:
             clash = _clash(sections)
             if clash is not None:
-                ctx.diagnostics.error(UnsupportedError(
+                self.ctx.diagnostics.error(UnsupportedError(
                     f"{clash} while a tool length change waits for the next absolute Z (the source applies it "
                     "there, the target at its next move): program Z beside the length change",
-                    ctx.at(block)))
-                pending = None
+                    self.ctx.at(block)))
+                self._wait(None)
             elif _absolute_z(block, absolute):
-                if _key(pending) != written:
+                if _key(pending) != self.written:
                     sections["ToolLengthOffset"] = pending
-                    written = _key(pending)
+                    self.written = _key(pending)
                     block.changed()
-                pending = None
-        yield block
+                self._wait(None)
+        return None
+
+    def _wait(self, pending: ToolLengthOffset | None) -> None:
+        """``pending`` waits for the next absolute Z (None: nothing waits, and a plain move is not looked at)."""
+        self.pending = pending
+        self.moves = pending is not None
 
 
 def _clash(sections: dict[str, Section]) -> str | None:
@@ -175,32 +196,44 @@ HELD: Final = 1000
 """Blocks without motion held behind a waiting change at most (then it is refused where it was written)."""
 
 
-def _complete(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+@mypyc_attr(allow_interpreted_subclasses=True)
+class _Complete(BlockStep):
     """Towards a target that applies a change at the programmed axis: the change goes to the next move,
     which gets the Z the program stands at: its number where it is known, else, on a target that reads its
     current position (``Dialect.POSITION_READS``) and without cutter compensation (rs274 refuses the read
     under it), that read (``_position_read``). The blocks between are held (at most ``HELD``, else a located
-    error); a change that meets no move (the program ends first) stays where it was written."""
-    axes: tuple[str, ...] = ("X", AXIS) if ctx.lathe else (AXIS,)  # a lathe offset moves X and Z (LinuxCNC's lathe G43 H)
-    pos: dict[str, float | None] = {a: None for a in axes}  # the programmed point, program units; None: unknown
-    inch = False
-    absolute = True
-    in_force: tuple[str, object, object] = ("cancel", None, None)
-    applied = in_force  # the length the machine stands with: the last change that met its move
-    held: list[Block] = []  # the changing block and the blocks after it, while a change waits
-    table = ToolTable(ctx.setup)
-    pending: tuple[ToolLengthOffset, Location] | None = None  # the waiting change, and where it was written
-    restore = False  # a reference return was written absolutely: G91 again after it
-    compensating = False  # cutter radius compensation is on (the target reads no position then)
-    diverged: set[str] = set()  # axes whose program point on the target a change written alone has moved
-    unplaced = set(axes)  # axes nothing has placed or re-expressed since the start: only they are read
-    for block in blocks:
+    error); a change that meets no move (the program ends first) stays where it was written. Every move is
+    its business: it follows the programmed point."""
+
+    def __init__(self, ctx: Context, target: type[Dialect]) -> None:
+        super().__init__()
+        self.ctx = ctx
+        self.target = target
+        axes: tuple[str, ...] = ("X", AXIS) if ctx.lathe else (AXIS,)  # a lathe offset moves X and Z (LinuxCNC's lathe G43 H)
+        self.axes = axes
+        self.pos: dict[str, float | None] = {a: None for a in axes}  # the programmed point, program units; None: unknown
+        self.inch = False
+        self.absolute = True
+        self.in_force: tuple[str, object, object] = ("cancel", None, None)
+        self.applied = self.in_force  # the length the machine stands with: the last change that met its move
+        self.held: list[Block] = []  # the changing block and the blocks after it, while a change waits
+        self.table = ToolTable(ctx.setup)
+        self.pending: tuple[ToolLengthOffset, Location] | None = None  # the waiting change, and where it was written
+        self.compensating = False  # cutter radius compensation is on (the target reads no position then)
+        self.diverged: set[str] = set()  # axes whose program point on the target a change written alone has moved
+        self.unplaced = set(axes)  # axes nothing has placed or re-expressed since the start: only they are read
+
+    def take(self, block: Block) -> list[Block] | None:
         sections = block.sections
+        pending = self.pending
+        axes = self.axes
+        pos = self.pos
         if pending is None and watches_none(sections, _STATE):  # the common block: at most a plain move
             motion = sections.get("Motion")
             if isinstance(motion, Motion):  # (typed: its fields are read natively, not by name)
                 plain = motion.mode in _PLAIN
                 words = motion.axes
+                absolute = self.absolute
                 for axis in axes:
                     value = words.get(axis)
                     if value is None:
@@ -215,36 +248,41 @@ def _complete(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> I
                     else:
                         known = pos[axis]
                         pos[axis] = float(value) if absolute else None if known is None else known + value
+                diverged = self.diverged
                 if diverged and plain and absolute:
                     diverged.difference_update(words)
+                unplaced = self.unplaced
                 if unplaced:
                     unplaced.difference_update(words)
-            yield block
-            continue
+            return None
+        ctx = self.ctx
+        held = self.held
         if _WATCHED.isdisjoint(sections):
             if pending is None:
-                yield block
-                continue
+                return None
             held.append(block)
             if len(held) >= HELD:
                 _refuse(ctx, pending[1], f"no move follows it within {HELD} blocks")
-                yield from _release(held, pending[0])
-                pending = None
-            continue
+                self.pending = None
+                return _release(held, pending[0])
+            return []
         units = sections.get("Units")
+        inch = self.inch
         if isinstance(units, Units) and (units.system == "inch") != inch:
-            inch = units.system == "inch"
+            inch = self.inch = units.system == "inch"
             for a, v in pos.items():
                 pos[a] = None if v is None else v / MM_PER_INCH if inch else v * MM_PER_INCH
-        absolute = _distance(block, absolute)
+        absolute = self.absolute = _distance(block, self.absolute)
         cutter = sections.get("CutterCompensation")
         if isinstance(cutter, CutterCompensation):
-            compensating = cutter.mode != "off"
+            self.compensating = cutter.mode != "off"
         if "WorkOffset" in sections or "CoordinateSet" in sections:
             for a in axes:
                 pos[a] = None
+        unplaced = self.unplaced
         if unplaced and not _UNPLACING.isdisjoint(sections):
             unplaced.clear()  # the point moved or was re-expressed by what only the run knows (held blocks too)
+        table = self.table
         setting = sections.get("DataSetting")
         if isinstance(setting, DataSetting):
             table.write(setting, MM_PER_INCH if inch else 1.0)
@@ -254,33 +292,40 @@ def _complete(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> I
             del sections["ToolLengthOffset"]  # it restates the waiting change (``T0101`` twice): that one still waits
             block.changed()
             offset = None
+        in_force = self.in_force
         change = isinstance(offset, ToolLengthOffset) and _key(offset) != in_force
+        out: list[Block] = []
+        lathe = ctx.lathe
         if isinstance(offset, ToolLengthOffset):
-            in_force = _key(offset)
+            in_force = self.in_force = _key(offset)
             if pending is not None:  # a later change replaces the waiting one, which stays where it was written:
-                yield from _release(held, pending[0])  # it moves nothing there on the target, and the
-                pending = None  # settings a verify compares keep the source's order; the target's program
-                diverged.update(axes)  # point now differs from the source's until each axis is programmed
+                out.extend(_release(held, pending[0]))  # it moves nothing there on the target, and the
+                pending = self.pending = None  # settings a verify compares keep the source's order; the target's
+                self.diverged.update(axes)  # program point now differs from the source's until each axis is programmed
             if change and not moves:
-                pending = offset, ctx.at(block, ctx.column_of(block, "H"))
+                self.pending = offset, ctx.at(block, ctx.column_of(block, "H"))
                 held.append(block)
-                continue
+                return out
         elif pending is not None and not moves:
             clash = _clash(sections)
             if clash is not None:
                 _refuse(ctx, pending[1], f"{clash} follows it")
-                yield from _release(held, pending[0])
-                pending = None
-                _follow(block, pos, absolute, in_force, None if ctx.lathe else table, inch)
-                yield block
-                continue
+                out.extend(_release(held, pending[0]))
+                self.pending = None
+                _follow(block, pos, absolute, in_force, None if lathe else table, inch)
+                out.append(block)
+                return out
             held.append(block)
-            continue
+            return []
+        restore = False  # a reference return was written absolutely: G91 again after it
         if moves and (pending is not None or change):
             at = ctx.at(block, ctx.column_of(block, "H")) if pending is None else pending[1]
             motion = sections.get("Motion")
             moved = pending is not None
             missing = [] if not isinstance(motion, Motion) else [a for a in axes if a not in motion.axes]
+            target = self.target
+            compensating = self.compensating
+            diverged = self.diverged
             if _sets_z(block, absolute, axes) or _returns_through(block, absolute, axes):
                 pass
             elif _incremental_return(block, absolute, axes, pos):
@@ -292,8 +337,8 @@ def _complete(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> I
                 sections["DistanceMode"] = DistanceMode("absolute")
                 block.changed()
                 restore = True
-            elif not ctx.lathe and _incremental_z_return(block, absolute) and _shifted_return(
-                    block, _length(applied, table, inch), _length(in_force, table, inch)):
+            elif not lathe and _incremental_z_return(block, absolute) and _shifted_return(
+                    block, _length(self.applied, table, inch), _length(in_force, table, inch)):
                 pass
             elif (isinstance(motion, Motion) and motion.mode in _PLAIN and absolute
                     and all(pos[a] is not None or (not compensating and a in target.POSITION_READS and a in unplaced
@@ -310,28 +355,38 @@ def _complete(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> I
                     del sections["ToolLengthOffset"]
                     block.changed()
             if pending is not None:
-                yield from _release(held, None)
+                out.extend(_release(held, None))
             if moved and pending is not None:
                 sections["ToolLengthOffset"] = pending[0]
                 block.changed()
-            pending = None
-            applied = in_force
-        _follow(block, pos, absolute, in_force, None if ctx.lathe else table, inch)
+            self.pending = None
+            self.applied = in_force
+        _follow(block, pos, absolute, in_force, None if lathe else table, inch)
         if unplaced:
             motion = sections.get("Motion")
             if isinstance(motion, Motion):
                 unplaced.difference_update(motion.axes)
+        diverged = self.diverged
         if diverged:
             motion = sections.get("Motion")
             if (isinstance(motion, Motion) and motion.mode in _PLAIN and absolute
                     and "MachineCoordinates" not in sections):
                 diverged.difference_update(motion.axes)
-        yield block
         if restore:
-            restore = False
-            yield _incremental_again(block)
-    if pending is not None:
-        yield from _release(held, pending[0])
+            out.append(block)
+            out.append(_incremental_again(block))
+            return out
+        if not out:
+            return None
+        out.append(block)
+        return out
+
+    def finish(self) -> list[Block]:
+        pending = self.pending
+        if pending is None:
+            return []
+        self.pending = None
+        return _release(self.held, pending[0])
 
 
 def _reads_here(sections: dict[str, Section]) -> bool:
@@ -411,17 +466,16 @@ def _incremental_again(block: Block) -> Block:
     return again
 
 
-def _release(held: list[Block], keep: ToolLengthOffset | None) -> Iterator[Block]:
+def _release(held: list[Block], keep: ToolLengthOffset | None) -> list[Block]:
     """The held blocks, the first (the changing one) without its change unless ``keep``; a block left
     with nothing is dropped."""
     first = held[0]
     if keep is None:
         del first.sections["ToolLengthOffset"]
         first.changed()
-    for block in held:
-        if block is not first or block.sections:
-            yield block
+    out = [block for block in held if block is not first or block.sections]
     held.clear()
+    return out
 
 
 def _refuse(ctx: Context, at: Location, why: str) -> None:

@@ -19,13 +19,15 @@ from __future__ import annotations
 
 import copy
 import io
-from typing import Iterator
+
+from mypy_extensions import mypyc_attr
 
 from ..context import Context
 from ..dialect import Dialect
 from ..errors import UnsupportedError
 from ..ir import Block, Comments, MachineFunction, Section
 from ..setup.foreign_codes import OMIT, ForeignCode, foreign_table
+from .lower import BlockStep, LoweringStep
 
 RIGID_TAP = "rigid-tap"
 """The action of a code that makes the following tap cycles spindle-synchronised."""
@@ -65,25 +67,40 @@ def comment_out(block: Block, note: str) -> None:
     block.changed()
 
 
-def drop_foreign_machine_functions(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+@mypyc_attr(allow_interpreted_subclasses=True)
+class DropForeignMachineFunctions(LoweringStep):
     """Apply the set-up's ``<ForeignCodes>`` to each machine-specific code of another family, and leave out
     (with a warning and a comment) an undeclared one with ``--on-unsupported warn``; otherwise the writer
     refuses it, and the blocks pass with no step each."""
-    if ctx.on_unsupported != "warn" and not ctx.setup.foreign_codes:
-        return blocks
-    return _drop(blocks, ctx, target, foreign_table(ctx.setup.foreign_codes))
+
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        if ctx.on_unsupported != "warn" and not ctx.setup.foreign_codes:
+            return None
+        return _Drop(ctx, target, foreign_table(ctx.setup.foreign_codes))
 
 
-def _drop(blocks: Iterator[Block], ctx: Context, target: type[Dialect],
-          declared: dict[tuple[str, str], ForeignCode]) -> Iterator[Block]:
-    family = target.family()
-    warn = ctx.on_unsupported == "warn"
-    for block in blocks:
+drop_foreign_machine_functions = DropForeignMachineFunctions()
+
+
+@mypyc_attr(allow_interpreted_subclasses=True)
+class _Drop(BlockStep):
+    """One run of ``drop_foreign_machine_functions``: a block that is only a move holds no machine code."""
+
+    def __init__(self, ctx: Context, target: type[Dialect], declared: dict[tuple[str, str], ForeignCode]) -> None:
+        super().__init__()
+        self.ctx = ctx
+        self.target = target
+        self.declared = declared
+        self.family = target.family()
+        self.warn = ctx.on_unsupported == "warn"
+        self.moves = False
+
+    def take(self, block: Block) -> list[Block] | None:
         code = block.sections.get("MachineFunction")
-        if not isinstance(code, MachineFunction) or code.family == family:
-            yield block
-            continue
-        mapped = declared.get((code.family, code.code))
+        if not isinstance(code, MachineFunction) or code.family == self.family:
+            return None
+        ctx, target = self.ctx, self.target
+        mapped = self.declared.get((code.family, code.code))
         if code.action == RIGID_TAP:
             ctx.diagnostics.error(UnsupportedError(refused_rigid_tap(code, target.NAME),
                                                    ctx.at(block, _column(block, code.code))))
@@ -91,12 +108,12 @@ def _drop(blocks: Iterator[Block], ctx: Context, target: type[Dialect],
             block.changed()
         elif mapped is not None:
             _apply(block, code, mapped, ctx, target)
-        elif warn:
+        elif self.warn:
             ctx.diagnostics.warn(f"{code.describe()}, a machine-specific code of the {code.family} family, has "
                                  f"no equivalent in {target.NAME}; left out, its block kept{foreign_hint(code)}",
                                  ctx.at(block, _column(block, code.code)))
             comment_out(block, f"{code.text} NOT WRITTEN: {code.describe()} of the {code.family} family has no equivalent")
-        yield block
+        return None
 
 
 def _apply(block: Block, code: MachineFunction, mapped: ForeignCode, ctx: Context, target: type[Dialect]) -> None:
