@@ -207,6 +207,16 @@ def test_the_core_steps_are_lowering_steps() -> None:
     from postproc.plugins import default_registry
     registry = default_registry()
     generators = [getattr(s, "__name__", s) for s in registry.lowerings if not isinstance(s, LoweringStep)]
-    assert set(generators) <= {"check_blocks", "expand_lathe_cycles", "index_turret", "convert_inverse_time",
-                                "time_length_changes", "carry_path_at_start", "hold_stored_offsets",
-                                "drop_foreign_machine_functions", "warn_active_comments"}, generators
+    assert set(generators) <= {"expand_lathe_cycles", "index_turret", "convert_inverse_time",
+                                "carry_path_at_start", "hold_stored_offsets", "warn_active_comments"}, generators
+
+
+@pytest.mark.parametrize("target", ["linuxcnc", "grbl", "grblhal", "isg", "fagor", "siemens"])
+def test_the_targets_own_steps_are_lowering_steps(target: str) -> None:
+    """A target's own steps that every translation to it runs take the blocks one at a time too (the
+    built-ins' and the bundled plugins'), but for the few grblHAL steps named here."""
+    from postproc.plugins import default_registry
+    dialect = default_registry().dialect(target)
+    generators = [getattr(s, "__name__", s) for s in dialect.LOWERING if not isinstance(s, LoweringStep)]
+    assert set(generators) <= {"cancel_cycles_alone", "resolve_cutter_compensation", "subprograms_as_subs",
+                                "thread_feed_apart", "_thread_feed_apart"}, generators

@@ -13,13 +13,14 @@ reference, ``AC``/``IC`` against the block's mode...) is kept verbatim, named
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Callable, Iterator
+from typing import TYPE_CHECKING, Callable
 
 from postproc.comments import CommentSyntax
 from postproc.cycle_words import CycleWords
 from postproc.arc_end import SPIRAL, ArcEndRule
 from postproc.dialect import Dialect, Lazy, Reader, ResolvedCycle
 from postproc.hookspecs import hookimpl
+from postproc.lowering.lower import BlockStep, LoweringStep
 from postproc.rs274.order_of_execution import stops_before_motion
 from postproc.setup.machine_setup import MachineSetup
 from postproc.state import MM_PER_INCH
@@ -29,26 +30,36 @@ from postproc.xmlio import XFactory
 
 if TYPE_CHECKING:
     from postproc.context import Context
-    from postproc.ir import Block
 
 
-def select_tool_data(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+class _SelectToolData(LoweringStep):
     """``postproc.isg_family.tool_data.select_tool_data``, imported when a translation first lowers for
     this dialect."""
-    from postproc.isg_family.tool_data import select_tool_data as step
-    return step(blocks, ctx, target)
+
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        from postproc.isg_family.tool_data import select_tool_data as step
+        return step.start(ctx, target)
 
 
-def resolve_radius_where_d_cannot(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+class _ResolveRadiusWhereDCannot(LoweringStep):
     """``postproc.isg_family.tool_data.resolve_radius_where_d_cannot``, imported when first used."""
-    from postproc.isg_family.tool_data import resolve_radius_where_d_cannot as step
-    return step(blocks, ctx, target)
+
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        from postproc.isg_family.tool_data import resolve_radius_where_d_cannot as step
+        return step.start(ctx, target)
 
 
-def orient_before_taps(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+class _OrientBeforeTaps(LoweringStep):
     """``tap_strokes.orient_before_taps``, imported when first used."""
-    from .tap_strokes import orient_before_taps as step
-    return step(blocks, ctx, target)
+
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        from .tap_strokes import orient_before_taps as step
+        return step.start(ctx, target)
+
+
+select_tool_data = _SelectToolData()
+resolve_radius_where_d_cannot = _ResolveRadiusWhereDCannot()
+orient_before_taps = _OrientBeforeTaps()
 
 
 class Siemens(Dialect):

@@ -18,47 +18,64 @@ simulation takes an oriented stop right before a tap as the tap's own preparatio
 
 from __future__ import annotations
 
-from typing import Iterator
-
 from postproc.context import Context
 from postproc.dialect import Dialect
 from postproc.ir import Block, CompoundMotion, Section, SpindleOrientation
+from postproc.lowering.lower import BlockStep, LoweringStep
 from postproc.synchronised_tap import RigidTap
 
 _ENDS_POSITION_CONTROL = frozenset(("SpindleControl", "ToolChange"))
 """Sections after which the spindle runs under speed control again (M3/M4/M5; a tool change)."""
 
 
-def orient_before_taps(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+class OrientBeforeTaps(LoweringStep):
     """Lowering step (the module docstring): an oriented stop before each in stroke that needs one, in a
     block of its own before the stroke's block, or as an item before it in an expansion."""
-    angle = float(ctx.setup.cycles.orient_angle)
-    controlled = False
-    """The spindle is under position control (an oriented stop or a tap stroke came last)."""
-    for block in blocks:
+
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        return _Orient(float(ctx.setup.cycles.orient_angle))
+
+
+orient_before_taps = OrientBeforeTaps()
+
+
+class _Orient(BlockStep):
+    """One run: whether the spindle is under position control. A block that is only a move is none of its
+    business (no tap, no oriented stop, no spindle code)."""
+
+    def __init__(self, angle: float) -> None:
+        super().__init__()
+        self.angle = angle
+        self.controlled = False
+        """The spindle is under position control (an oriented stop or a tap stroke came last)."""
+        self.moves = False
+
+    def take(self, block: Block) -> list[Block] | None:
         sections = block.sections
+        controlled = self.controlled
         if "RigidTap" not in sections and "CompoundMotion" not in sections and "SpindleOrientation" not in sections:
             if not controlled or _ENDS_POSITION_CONTROL.isdisjoint(sections):
-                yield block  # the common block
-                continue
+                return None  # the common block
         if "SpindleControl" in sections or "ToolChange" in sections:
             controlled = False
         if "SpindleOrientation" in sections:
             controlled = True
         compound = sections.get("CompoundMotion")
         if isinstance(compound, CompoundMotion) and "CannedCycle" not in sections:
-            items, controlled = _orient_items(compound.items, controlled, angle)
+            items, controlled = _orient_items(compound.items, controlled, self.angle)
             if len(items) != len(compound.items):
                 sections["CompoundMotion"] = CompoundMotion(compound.term, items)
                 block.changed()
+        made: list[Block] | None = None
         tap = sections.get("RigidTap")
         if isinstance(tap, RigidTap) and tap.stroke is not None:
             if tap.stroke == "in" and not controlled:
                 before = Block(block.line, None, block.eol or "\n")
-                before.sections = {"SpindleOrientation": SpindleOrientation(angle)}
-                yield before
+                before.sections = {"SpindleOrientation": SpindleOrientation(self.angle)}
+                made = [before, block]
             controlled = True
-        yield block
+        self.controlled = controlled
+        return made
 
 
 def _orient_items(items: list[Section], controlled: bool, angle: float) -> tuple[list[Section], bool]:

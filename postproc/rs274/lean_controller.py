@@ -71,19 +71,30 @@ def _cancel_length_offset_first(blocks: Iterator[Block]) -> Iterator[Block]:
         yield block
 
 
-def close_full_circles(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
-    if ctx.dialect == target.NAME:
-        return blocks
-    return _close_full_circles(blocks)
+@mypyc_attr(allow_interpreted_subclasses=True)
+class CloseFullCircles(LoweringStep):
+    """``close_full_circles`` alone (a dialect that lists it without the other three: grblHAL)."""
+
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        if ctx.dialect == target.NAME:
+            return None
+        return _CloseFullCircles()
 
 
-def _close_full_circles(blocks: Iterator[Block]) -> Iterator[Block]:
-    circles = _FullCircles()
-    for block in blocks:
-        back = circles.close(block)  # before the block is yielded: the next step sees it closed
-        yield block
-        if back is not None:
-            yield back
+close_full_circles = CloseFullCircles()
+
+
+@mypyc_attr(allow_interpreted_subclasses=True)
+class _CloseFullCircles(BlockStep):
+    """One run: a move is its business (an arc may be a full circle to close)."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        self.circles = _FullCircles()
+
+    def take(self, block: Block) -> list[Block] | None:
+        back = self.circles.close(block)  # before the block goes on: the next step sees it closed
+        return None if back is None else [block, back]
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)

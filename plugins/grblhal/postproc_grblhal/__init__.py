@@ -46,6 +46,7 @@ from postproc.comments import CommentSyntax
 from postproc.dialect import Dialect, Lazy, Reader, ResolvedCycle
 from postproc.grbl_family.dialect import GrblFamily
 from postproc.hookspecs import hookimpl
+from postproc.lowering.lower import BlockStep, LoweringStep
 from postproc.lowering.program_end import comment_numbered_subs_after_end
 from postproc.output.line_format import LineRule
 from postproc.output.writer_base import Writer
@@ -62,23 +63,34 @@ if TYPE_CHECKING:
     from postproc.ir import Block
 
 
-def write_tool_lengths(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+class _WriteToolLengths(LoweringStep):
     """``postproc.grbl_family.lengths.write_tool_lengths``, imported when a translation first lowers for grblHAL."""
-    from postproc.grbl_family.lengths import write_tool_lengths as step
-    return step(blocks, ctx, target)
+
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        from postproc.grbl_family.lengths import write_tool_lengths as step
+        return step.start(ctx, target)
 
 
-def drop_resolved_tool_data(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+class _DropResolvedToolData(LoweringStep):
     """``postproc.grbl_family.lengths.drop_resolved_tool_data``, imported when a translation first lowers for grblHAL."""
-    from postproc.grbl_family.lengths import drop_resolved_tool_data as step
-    return step(blocks, ctx, target)
+
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        from postproc.grbl_family.lengths import drop_resolved_tool_data as step
+        return step.start(ctx, target)
 
 
-def close_full_circles(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+class _CloseFullCircles(LoweringStep):
     """``postproc.rs274.lean_controller.close_full_circles``, imported when a translation first lowers for
     grblHAL."""
-    from postproc.rs274.lean_controller import close_full_circles as step
-    return step(blocks, ctx, target)
+
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        from postproc.rs274.lean_controller import close_full_circles as step
+        return step.start(ctx, target)
+
+
+write_tool_lengths = _WriteToolLengths()
+drop_resolved_tool_data = _DropResolvedToolData()
+close_full_circles = _CloseFullCircles()
 
 
 def cancel_cycles_alone(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
