@@ -17,7 +17,7 @@ from .dialect import Dialect
 from .errors import Diagnostics, ErrorLevel, PostprocError, UsageError
 from .ir import Block
 from .jump_targets import jump_past_end, missing_fallthrough
-from .lowering.arcs import ArcOption, rewrite_arcs, settle_arc_ends
+from .lowering.arcs import ArcOption, RewriteArcs, settle_arc_ends
 from .lowering.lower import lower_for
 from .plugins import Registry, default_registry
 from .reading import gc_paused as gc_paused, read_blocks as read_blocks  # public API names
@@ -89,12 +89,13 @@ def translate(lines: Iterable[str], out: TextIO, *, file: str, source: str, targ
         ctx.run_data["sequences"] = sequences
         if output_map is not None:
             ctx.run_data["output_map"] = output_map
-        lowered = lower_for(sequences.before_lowering(blocks), ctx, dst, on_unsupported, registry.lowerings)
-        lowered = transform_program(lowered, ctx, options)
-        if arcs is not None:
-            lowered = rewrite_arcs(lowered, ctx, arcs, dst)
-        else:
-            lowered = settle_arc_ends(lowered, ctx, dst)
+        last = settle_arc_ends if arcs is None else RewriteArcs(arcs)  # after every other step (and the map)
+        if options.active():
+            lowered = lower_for(sequences.before_lowering(blocks), ctx, dst, on_unsupported, registry.lowerings)
+            lowered = last(transform_program(lowered, ctx, options), ctx, dst)
+        else:  # (the arc pass in the lowering's loop)
+            lowered = lower_for(sequences.before_lowering(blocks), ctx, dst, on_unsupported, registry.lowerings,
+                                then=(last,))
         writer_class = dst.writer_class(ctx)
         if writer_class is None:
             raise UsageError(f"the {dst.NAME} dialect cannot write this program (it has no writer for it)")

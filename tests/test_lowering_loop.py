@@ -141,12 +141,12 @@ def _every_block(blocks: Iterator[Block], run: BlockStep) -> Iterator[Block]:
 
 
 def _chained(blocks: Iterator[Block], ctx: Context, target: type[Dialect], on_unsupported: str,
-             steps: Sequence[Lowering] | None = None) -> Iterator[Block]:
+             steps: Sequence[Lowering] | None = None, then: Sequence[Lowering] = ()) -> Iterator[Block]:
     """``lower_for`` as the steps ran before the loop: every step a generator over the one before, and every
     block handed to every step (what a step's ``moves`` says it may skip, it is given here)."""
     ctx.on_unsupported = on_unsupported
     stream = blocks
-    for step in [*(lower.TRANSFORMS if steps is None else steps), *target.LOWERING]:
+    for step in [*(lower.TRANSFORMS if steps is None else steps), *target.LOWERING, *then]:
         if isinstance(step, LoweringStep):
             run = step.start(ctx, target)
             if run is not None:

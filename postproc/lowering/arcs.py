@@ -41,6 +41,7 @@ from ..ir import Block, CompoundMotion, Motion, Section
 from ..ir.keys import only_move
 from ..numbers import EXACT
 from ..state import MM_PER_INCH, PLANE_AXES, ModalState, changes_nothing
+from .lower import BlockStep, LoweringStep, run_blocks
 from .arc_geometry import Arc, chord_points, r_centre_error, r_pieces, signed_radius, split
 
 FORMS: Final = ("lines", "ijk", "r")
@@ -83,7 +84,8 @@ def parse_arc_option(text: str) -> ArcOption:
     raise UsageError(f"--arcs takes lines:TOL, ijk or r, got {text!r}")
 
 
-def settle_arc_ends(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+@mypyc_attr(allow_interpreted_subclasses=True)
+class SettleArcEnds(LoweringStep):
     """The lowered program with each I/J/K arc written about the centre the source's controller turns it
     about where that controller moves the programmed one (``postproc.arc_end.START_RADIUS``): the target's
     controller then runs a circle through both ends, the source's path exactly. A pass over the program only
@@ -95,30 +97,57 @@ def settle_arc_ends(blocks: Iterator[Block], ctx: Context, target: type[Dialect]
     source's controller computes: exact, where a larger R would move the centre by the square root of its
     change (a semicircle of R 25 mm given 0.001 mm more R turns 0.22 mm off), and the target accepts I/J/K
     within a tolerance of its own."""
-    if ctx.arc_end.runs == SPIRAL and not target.R_ARC_FLOAT_SLACK:
-        return blocks
-    return rewrite_arcs(blocks, ctx, ArcOption(SETTLE), target)
+
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        if ctx.arc_end.runs == SPIRAL and not target.R_ARC_FLOAT_SLACK:
+            return None
+        return _Arcs(ctx, ArcOption(SETTLE), target)
+
+
+settle_arc_ends = SettleArcEnds()
+
+
+@mypyc_attr(allow_interpreted_subclasses=True)
+class RewriteArcs(LoweringStep):
+    """The program lowered for a target with its arcs rewritten as ``option`` asks (see the module
+    docstring): the last lowering step of ``translate --arcs``."""
+
+    def __init__(self, option: ArcOption) -> None:
+        self.option = option
+
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        return _Arcs(ctx, self.option, target)
 
 
 def rewrite_arcs(blocks: Iterator[Block], ctx: Context, option: ArcOption, target: type[Dialect]) -> Iterator[Block]:
     """The program lowered for ``target`` with its arcs rewritten as ``option`` asks (see the module docstring)."""
-    rewriter = _Rewriter(ctx, option, target)
-    for block in blocks:
+    return run_blocks(blocks, [_Arcs(ctx, option, target)])
+
+
+@mypyc_attr(allow_interpreted_subclasses=True)
+class _Arcs(BlockStep):
+    """One run of the rewriting: every move is its business (it follows the position). A block whose arc
+    cannot be rewritten is an error (a warning with ``--on-unsupported warn``), written as it was."""
+
+    def __init__(self, ctx: Context, option: ArcOption, target: type[Dialect]) -> None:
+        super().__init__()
+        self.ctx = ctx
+        self.rewriter = _Rewriter(ctx, option, target)
+
+    def take(self, block: Block) -> list[Block] | None:
+        rewriter = self.rewriter
         try:
             out = rewriter.block(block)
         except PostprocError as err:
+            ctx = self.ctx
             located = err if err.location is not None else err.located(ctx.at(block))
             if isinstance(err, UnsupportedError) and ctx.on_unsupported == "warn":
                 ctx.diagnostics.warn(f"{err.message} (the arc is written as it was)", located.location)
             else:
                 ctx.diagnostics.error(located)
             rewriter.unknown()
-            yield block
-            continue
-        if len(out) == 1:
-            yield out[0]
-        else:
-            yield from out
+            return None
+        return None if len(out) == 1 and out[0] is block else out
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)

@@ -103,13 +103,14 @@ def register_transform(transform: Lowering) -> Lowering:
 
 
 def lower_for(blocks: Iterator[Block], ctx: Context, target: type[Dialect], on_unsupported: str,
-              steps: Sequence[Lowering] | None = None) -> Iterator[Block]:
-    """Apply the generic steps (``steps``, by default the default registry's), then the target's own;
-    consecutive ``LoweringStep``s run as one loop (``run_blocks``)."""
+              steps: Sequence[Lowering] | None = None, then: Sequence[Lowering] = ()) -> Iterator[Block]:
+    """Apply the generic steps (``steps``, by default the default registry's), then the target's own, then
+    ``then`` (a run's own last steps: ``translate``'s arc pass); consecutive ``LoweringStep``s run as one
+    loop (``run_blocks``)."""
     ctx.on_unsupported = on_unsupported
     stream = blocks
     group: list[BlockStep] = []
-    for transform in [*(TRANSFORMS if steps is None else steps), *target.LOWERING]:
+    for transform in [*(TRANSFORMS if steps is None else steps), *target.LOWERING, *then]:
         if isinstance(transform, LoweringStep):
             run = transform.start(ctx, target)
             if run is not None:
