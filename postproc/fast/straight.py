@@ -192,8 +192,10 @@ class StraightLane:
             letter, number = words[at]
             at += 1
             if letter != axis or letter not in driven or type(value) is not float or not (
-                    -SHORT_RANGE < value < SHORT_RANGE if every else as_written(number, value, most)) \
-                    or values.get(letter) != value:  # the number the word reads as: no step changed it
+                    -SHORT_RANGE < value < SHORT_RANGE if every else as_written(number, value, most)):
+                return None
+            read = values.get(letter)  # the number the word reads as: no step changed it (the reading lane
+            if read is not value and read != value:  # shares one object: no comparison of numbers then)
                 return None
         if arc:
             if center is not None:
@@ -213,8 +215,10 @@ class StraightLane:
             rate = feed.value
             letter, number = words[at]
             if letter != "F" or type(rate) is not float or not (
-                    -SHORT_RANGE < rate < SHORT_RANGE if every else as_written(number, rate, most)) \
-                    or values.get(letter) != rate:
+                    -SHORT_RANGE < rate < SHORT_RANGE if every else as_written(number, rate, most)):
+                return None
+            read = values.get(letter)
+            if read is not rate and read != rate:
                 return None
             writer.modal.feed = rate
         if writer.after_blocks:

@@ -215,7 +215,7 @@ class _Complete(BlockStep):
         self.inch = False
         self.absolute = True
         self.in_force: tuple[str, object, object] = ("cancel", None, None)
-        self.applied = self.in_force  # the length the machine stands with: the last change that met its move
+        self.applied: tuple[str, object, object] = self.in_force  # the length the machine stands with: the last change that met its move
         self.held: list[Block] = []  # the changing block and the blocks after it, while a change waits
         self.table = ToolTable(ctx.setup)
         self.pending: tuple[ToolLengthOffset, Location] | None = None  # the waiting change, and where it was written

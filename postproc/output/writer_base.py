@@ -16,6 +16,7 @@ from ..context import DROPPED_MOVES, Context
 from ..cycle_words import CycleWords
 from ..errors import PostprocError, ProgramError, UnsupportedError
 from ..ir import Block, one_line
+from .line_feeds import Batch
 from .line_format import LineFormat
 from .displacement import Displacement
 from .partial_block import write_without_refused
@@ -94,7 +95,16 @@ class Writer(abc.ABC):
         """Write every block. A block the target cannot express is an error, or with
         ``--on-unsupported warn`` a warning and the source block written as a comment.
         The header goes after an opening tape mark and the footer before the closing one; a block a
-        set-up template wrote (``postproc.lowering.sequences``) is written as it is."""
+        set-up template wrote (``postproc.lowering.sequences``) is written as it is. The texts reach ``out``
+        a batch at a time (``postproc.output.line_feeds.Batch``), all of them by the time this returns or
+        raises."""
+        sink = out if isinstance(out, Batch) else Batch(out)
+        try:
+            self._write(blocks, sink)
+        finally:
+            sink.flush()
+
+    def _write(self, blocks: Iterable[Block], out: Batch) -> None:
         write_block = self.write_block
         lane = self.lane
         sequences = self.sequences()
