@@ -27,7 +27,7 @@ from postproc.ir import Block
 from postproc.plugins import default_registry
 from postproc.rs274.writer import WordWriter
 from postproc.setup.machine_setup import MachineSetup
-from postproc.output.writer_base import Writer
+from postproc.output.writer_base import Lane, Writer
 
 SOURCES = ("fanuc", "linuxcnc")
 """Dialects that read the random programs (Fanuc's words; LinuxCNC reads most of them alike)."""
@@ -42,7 +42,7 @@ def _lane(source: str, target: str, normalize: bool = True) -> type | None:
     ctx = default_registry().dialect(source).context("p.nc", setup, Diagnostics())
     writer = dialect.WRITER(ctx, source, dialect)  # type: ignore[misc]
     lane = choose(writer)
-    return None if lane is None else type(lane.__self__)  # type: ignore[attr-defined]
+    return None if lane is None else type(lane)
 
 
 PAIRS = tuple((source, target) for source in SOURCES for target in sorted(default_registry().dialects)
@@ -248,12 +248,14 @@ def test_cam_blocks_take_the_lane(target: str, monkeypatch: pytest.MonkeyPatch) 
         lane = writer.lane
         assert lane is not None
 
-        def counted(block: Block) -> str | None:
-            text = lane(block)
-            if text is not None:
-                taken.append(text)
-            return text
-        writer.lane = counted
+        class Counted(Lane):
+            def write(self, block: Block) -> str | None:
+                assert lane is not None
+                text = lane.write(block)
+                if text is not None:
+                    taken.append(text)
+                return text
+        writer.lane = Counted()
 
     monkeypatch.setattr(postproc.fast.lane, "install", counting)
     program = ["G21 G90 G17", "G0 X0. Y0.", "N10 G1 Z-1. F300.", "N20 X10.5 Y2.25", "N30 X-3.125 Y0.5 F1200.",

@@ -12,11 +12,10 @@ wraps it keeps the lane, and one that replaces it never consults it.)
 
 from __future__ import annotations
 
-from typing import Callable, Final
+from typing import Final
 
-from ..ir import Block
 from ..rs274.writer import WordWriter
-from ..output.writer_base import Writer
+from ..output.writer_base import Lane, Writer
 from .straight import LANE_MODES, STRAIGHT_KEYS, CopyLane, SourceLane, StraightLane
 
 STRAIGHT_METHODS: Final = ("write_block", "words_block", "generate", "unsplit", "_generate", "section_words", "section_writer",
@@ -51,7 +50,7 @@ def own_in(cls: type, methods: tuple[str, ...], base: frozenset[type]) -> bool:
     return True
 
 
-def choose(writer: Writer) -> Callable[[Block], str | None] | None:
+def choose(writer: Writer) -> Lane | None:
     """The shortcut for ``writer``'s run, or None (the general path writes every block)."""
     if not isinstance(writer, WordWriter):
         return None
@@ -61,12 +60,12 @@ def choose(writer: Writer) -> Callable[[Block], str | None] | None:
     copies = (writer.source_dialect == writer.DIALECT and writer.normalize and not writer.renumber
               and writer.leading_zero and not writer.rounding)  # ``normalized`` copies a canonical block
     if copies and own(cls, COPY_METHODS):
-        return CopyLane(writer).write
+        return CopyLane(writer)
     if writer.copy_ok and own(cls, SOURCE_METHODS):
-        return SourceLane(writer).write
+        return SourceLane(writer)
     if writer.source_dialect != writer.DIALECT and own(cls, STRAIGHT_METHODS) \
             and STRAIGHT_KEYS.isdisjoint(cls.TRANSFORMS) and LANE_MODES.isdisjoint(writer.split_motions):
-        return StraightLane(writer).write
+        return StraightLane(writer)
     return None
 
 

@@ -17,6 +17,7 @@ from mypy_extensions import mypyc_attr
 from ..expr import Expr
 from ..ir import Block, Feed, Motion, Sequence
 from ..numbers import MAX_PLACES, SHORT_RANGE, as_written
+from ..output.writer_base import Lane
 from ..rs274.writer import WordWriter
 from ..state import PLANE_AXES
 
@@ -53,12 +54,13 @@ def _plain_arc(axes: dict[str, float | Expr], center: dict[str, float | Expr] | 
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
-class CopyLane:
+class CopyLane(Lane):
     """A straight block normalised back to its own dialect is its source line, as ``normalized`` writes
     a canonical block (installed where the writer copies canonical numbers: leading zeros, no rounding,
     no renumbering)."""
 
     def __init__(self, writer: WordWriter) -> None:
+        super().__init__()
         self.writer = writer
         self.per_rev_checked = bool(writer.PER_REV_NEEDS_SPEED)
         """The general path checks the spindle speed of a move in feed per revolution: such a move is left
@@ -84,11 +86,12 @@ class CopyLane:
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
-class SourceLane:
+class SourceLane(Lane):
     """A straight block copied to its own dialect, not normalised, is its source line and end of line, as
     ``words_block`` copies a block (installed where the writer copies its dialect's blocks: ``copy_ok``)."""
 
     def __init__(self, writer: WordWriter) -> None:
+        super().__init__()
         self.writer = writer
         self.per_rev_checked = bool(writer.PER_REV_NEEDS_SPEED)
         """As ``CopyLane.per_rev_checked``."""
@@ -115,7 +118,7 @@ class SourceLane:
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
-class StraightLane:
+class StraightLane(Lane):
     """A canonical block of another dialect that is a rapid, feed or arc move of numbers, maybe with a
     block number and a feed rate, its words in that order, each number the value it reads as and one the
     writer writes as written (``WordWriter.source_number``), with nothing carried: its source line with
@@ -123,6 +126,7 @@ class StraightLane:
     feed rate (``ModalState.apply``)."""
 
     def __init__(self, writer: WordWriter) -> None:
+        super().__init__()
         self.writer = writer
         codes = writer.codes
         self.codes: dict[str, str] = {}
