@@ -11,7 +11,7 @@ reports its errors.
 
 from __future__ import annotations
 
-from typing import Final
+from typing import Final, cast
 
 from mypy_extensions import mypyc_attr
 
@@ -54,8 +54,13 @@ class PlainLane(BlockLane):
         """The run's block syntax, whose code table says what G0-G3 mean."""
 
     def read(self, block: Block, ctx: Context, words: list[tuple[str, str]]) -> bool:
-        values = block.values
+        # The words' values are gathered apart (the axes in the motion's dictionary, the rest in locals) and
+        # the block's ``values`` made from them once the lane is sure of the block: a copy of the axes'
+        # dictionary (compiled, one C call cloning its table) and the few other words, instead of a second
+        # insertion per axis word; a block the lane leaves is left untouched.
         axes: dict[str, float | Expr] = {}
+        others: dict[str, float | Expr] | None = None  # I/J/K/R and F, where the block has them (few do)
+        sequence_value: object = None  # N's value (the int the reader's ``Sequence`` holds, shared)
         mode: str | None = None
         arc_words = False
         upper = block.canonical  # a canonical block's letters are upper-case already (numbers.CANONICAL_BLOCK)
@@ -73,15 +78,15 @@ class PlainLane(BlockLane):
             seen |= bit
             kind = LETTER_KIND[index]
             if kind == LETTER_AXIS and (upper or "." in num):  # canonical: an axis number has its point
-                # boxed once, shared by both dictionaries (compiled)
-                number: object = decimal_value(num)
-                values[up] = axes[up] = number  # type: ignore[assignment]
+                axes[up] = decimal_value(num)
             elif kind == LETTER_N and (upper or "." not in num):  # (a canonical N is digits only)
-                values["N"] = sequence.number if isinstance(sequence, Sequence) else int(num)
+                sequence_value = sequence.number if isinstance(sequence, Sequence) else int(num)
             elif cycle:
                 break  # a code, F or a cycle word under an active cycle: the general path
             elif kind == LETTER_F:
-                values["F"] = decimal_value(num)
+                if others is None:
+                    others = {}
+                others["F"] = decimal_value(num)
             elif kind == LETTER_G and mode is None:
                 key = _MOTION_KEYS.get(num)
                 entry = self.syntax.table(ctx).g.get(key) if key is not None else None
@@ -89,12 +94,16 @@ class PlainLane(BlockLane):
                     break
                 mode = str(entry[2])
             elif kind == LETTER_ARC and (upper or "." in num):
-                values[up] = decimal_value(num)
+                if others is None:
+                    others = {}
+                others[up] = decimal_value(num)
                 arc_words = True
             else:
                 break
         else:
+            values = _values(axes, sequence_value, others)
             if cycle:
+                block.values = values
                 if axes:
                     block.sections["Motion"] = Motion(None, axes)
                     _saw_pointed(ctx, axes, block.line)
@@ -102,24 +111,35 @@ class PlainLane(BlockLane):
             if mode is None and axes:
                 mode = ctx.state.motion
                 if mode is None:
-                    values.clear()
                     return False  # the general path explains the error
             if mode is not None:
                 motion = plain_motion(values, axes, mode, arc_words)
                 if motion is None:
-                    values.clear()
                     return False
+                block.values = values
                 block.sections["Motion"] = motion
                 if axes:
                     _saw_pointed(ctx, axes, block.line)
             elif arc_words:
-                values.clear()
                 return False  # I/J/K/R with no motion: the general path refuses it
-            if "F" in values:
-                block.sections["Feed"] = Feed(values["F"])
+            else:
+                block.values = values
+            if others is not None and "F" in others:
+                block.sections["Feed"] = Feed(others["F"])
             return True
-        values.clear()
         return False
+
+
+def _values(axes: dict[str, float | Expr], sequence: object, others: dict[str, float | Expr] | None
+            ) -> dict[str, float | int | Expr]:
+    """A plain block's ``Block.values``: its axis words', its block number's and its other words' (in that
+    order: the general path's is the words', and no reader of ``values`` depends on it)."""
+    values = cast("dict[str, object]", axes.copy())
+    if sequence is not None:
+        values["N"] = sequence
+    if others is not None:
+        values.update(others)
+    return cast("dict[str, float | int | Expr]", values)
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)

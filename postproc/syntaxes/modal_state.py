@@ -24,6 +24,7 @@ from postproc.event_order import MOVING, after_motion
 from postproc.geometry import ARC_TOLERANCE_MM, PLACES
 from postproc.expr import Expr
 from postproc.ir import Block, Motion
+from postproc.ir.keys import only_move
 from postproc.state import LEFT_START, MM_PER_INCH, MODAL_KEYS, PLANE_AXES
 from postproc.context import Context
 from postproc.syntax import Syntax
@@ -47,11 +48,15 @@ class ModalStateSyntax(Syntax):
             return
         state = ctx.state
         spindle = state.spindle
-        quiet = True  # no modal section and no construct (most blocks: a move, a block number)
-        for key in sections:
-            if key in _WATCHED:
-                quiet = False
-                break
+        # no modal section and no construct (most blocks: a move and its block number, ``only_move``'s two
+        # look-ups; any other block one pass over its keys)
+        quiet = only_move(sections)
+        if not quiet:
+            quiet = True
+            for key in sections:
+                if key in _WATCHED:
+                    quiet = False
+                    break
         if not quiet:
             state.apply(sections)  # (which passes a block of constructs only at once)
             if not state.computes and (_CONTROL in sections or _ASSIGN in sections):
@@ -59,7 +64,8 @@ class ModalStateSyntax(Syntax):
         motion = sections.get("Motion")
         if motion is not None:
             self._move(block, ctx, motion)  # type: ignore[arg-type]
-            if state.feed == 0.0 and not state.computes and needs_feed(motion):
+            feed = state.feed
+            if feed is not None and feed == 0.0 and not state.computes and needs_feed(motion):
                 raise ProgramError(ZERO_FEED, ctx.at(block))
             if state.feed_mode == "per_rev":
                 _check_turning(block, ctx, motion, spindle)  # type: ignore[arg-type]
@@ -68,10 +74,17 @@ class ModalStateSyntax(Syntax):
 
     def _move(self, block: Block, ctx: Context, motion: Motion) -> None:
         words = ctx.axis_words
-        for letter in motion.axes:  # (not ``issuperset``: with a dict it builds a set per block)
+        # As objects: compiled, a float narrowed from the union would be unboxed and boxed again (a new float
+        # an axis word) to be stored.
+        words_read = cast("dict[str, object]", motion.axes)
+        numbers = True  # every word a number (none computed): an absolute move's words are the position
+        for letter, value in words_read.items():  # (one pass: the machine's axes, and the words' kinds)
             if letter not in words:
                 _check_axes(block, ctx, motion)
+                numbers = False  # (an increment of an axis of the machine: the general loop below)
                 break
+            if type(value) is not float:
+                numbers = False
         state = ctx.state
         mode = motion.mode
         machine = "MachineCoordinates" in block.sections
@@ -93,10 +106,10 @@ class ModalStateSyntax(Syntax):
             state.extra[LEFT_START] = True
             return
         incremental = state.distance == "incremental"
-        # As objects: compiled, a float narrowed from the union would be unboxed and boxed again (a new float
-        # an axis word) to be stored.
-        words_read = cast("dict[str, object]", motion.axes)
         store = cast("dict[str, object]", pos)
+        if numbers and not incremental:
+            store.update(words_read)  # (one C call: the words, in their order, as the loop below stores them)
+            return
         for axis, value in words_read.items():
             if type(value) is not float and isinstance(value, Expr):  # (a float first: it is cheaper)
                 store[axis] = None  # computed: known only when the program runs
