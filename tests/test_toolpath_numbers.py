@@ -15,6 +15,7 @@ from hypothesis import given, settings, strategies as st
 from postproc.errors import ProgramError
 from postproc.commands.export import event_encoder
 from postproc.simulate.event_text import EventValueError, event_text, float_text, write_lines
+from postproc.simulate.move_record import MoveRecord
 from postproc.simulate.toolpath import num
 
 
@@ -205,3 +206,33 @@ def test_write_lines_writes_runs_of_events_of_few_shapes_as_json_does(
     written: list[str] = []
     write_lines(iter(stream), written.append, ENCODER)
     assert "".join(written) == "".join(_json(ev) + "\n" for ev in stream)
+
+
+@settings(max_examples=500, deadline=None)
+@given(tenths=st.lists(st.integers(-10**12, 10**12), min_size=1, max_size=40))
+def test_numbers_of_at_most_four_decimals_are_written_as_repr(tenths: list[int]) -> None:
+    """A number of at most four decimals (a CAM program's coordinates) takes its point and decimals from a table
+    filled as they are met (``event_text._SHORT``): each is written as ``repr`` writes it, met once or again, as
+    an event's value, a record's point and the controlled point sharing its float objects."""
+    values = [n / 1e4 for n in tenths]
+    for value in values + values:
+        assert float_text(value) == repr(value)
+    keys = ("x", "y", "z")
+    for i in range(0, len(values) - 2, 3):
+        point: list[float | int] = list(values[i:i + 3])
+        controlled: list[float | int] = [point[0], point[1], values[i + 2] + 120.0]
+        record = MoveRecord(i + 1, "feed", keys, point, 1500, None, controlled)
+        assert event_text(record, ENCODER) == _json(record.event())
+
+
+@pytest.mark.parametrize("feeds", [[1500, 1500, 2500.5, float("2500.5"), 1500], [0.25, 0.25, 7, 7, int("7")]])
+def test_a_record_run_writes_each_feed_and_kind_it_holds(feeds: list[float | int]) -> None:
+    """The writer keeps the text of the kind and the feed met last (by identity: the simulator writes one feed object
+    while the feed stays): records that change either, or hold an equal feed as another object, are written as json
+    writes their events."""
+    kinds = ["feed", "rapid", "tap", "feed"]
+    records = [MoveRecord(n, kinds[n % len(kinds)], ("x", "z"), [n / 8, -n], None if kinds[n % len(kinds)] == "rapid"
+                          else f, None, None if n % 2 else [n / 8, 100 - n]) for n, f in enumerate(feeds * 3)]
+    written: list[str] = []
+    write_lines(iter(records), written.append, ENCODER)
+    assert "".join(written) == "".join(_json(r.event()) + "\n" for r in records)

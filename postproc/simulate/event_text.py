@@ -13,9 +13,12 @@ where ``repr`` writes an exponent goes to ``float.__repr__``. An event holding a
 str, int, bool, None, float or such a dict values is handed whole to ``fallback`` (json's own encoder).
 
 The line is one list of pieces joined once: a key with the separator (or the opening brace) before it, a
-number's whole part, its first three decimals and the rest from tables, the closing brace with the line end
-(no string is built per number, none per item; compiled, building a string costs ~500 instructions, an
-append ~50, and each piece ~90 more in the join).
+number's whole part, its decimals from tables (one piece where they are at most four, as a CAM program's are;
+else the first three and the rest), the closing brace with the line end (no string is built per number, none
+per item; compiled, building a string costs ~500 instructions, an append ~50, and each piece ~90 more in the
+join and the list's clearing). A move record's fixed texts are fewer pieces still: its kind with its key, its
+feed with its key (spelt once while the feed stays), the controlled point's key with its first axis, its two
+closing braces with the line end.
 """
 
 from __future__ import annotations
@@ -23,7 +26,7 @@ from __future__ import annotations
 from json.encoder import encode_basestring_ascii
 from typing import Any, Callable, Final, Iterable
 
-from mypy_extensions import mypyc_attr
+from mypy_extensions import i64, mypyc_attr
 
 from ..geometry import PLACES
 from .move_record import MoveRecord
@@ -38,10 +41,18 @@ _LARGEST: Final = 1e8
 _TABLED: Final = 1000
 _FIRST: Final = [f".{n:03d}" for n in range(_TABLED)]
 """The point and a number's first three decimals, the others following."""
-_ONLY: Final = [f".{n:03d}".rstrip("0") for n in range(_TABLED)]
-"""The point and a number's first three decimals, the last ones (trailing zeros dropped)."""
 _REST: Final = [f"{n:03d}".rstrip("0") for n in range(_TABLED)]
 """Decimals four to six (trailing zeros dropped; never all zero where used)."""
+_ONLY: Final = [f".{n:03d}".rstrip("0") for n in range(_TABLED)]
+"""The point and a number's first three decimals, the last ones (trailing zeros dropped; never all zero where used)."""
+_DIGITS: Final = [str(n) for n in range(10)]
+_SHORT_STEP: Final = 100
+_SHORT: Final[list[str | None]] = [".0"] + [None] * (_UNITS // _SHORT_STEP - 1)
+"""A fraction of at most four decimals (a whole number of ``_SHORT_STEP`` millionths, as a CAM program writes its
+coordinates) -> the point and its decimals (``".9596"``; ``".0"`` for none: an integral float below 1e16, which
+repr writes with its digits and ".0"), made the first time it is met: one piece of the line
+where there were two (compiled, each piece costs an append and its share of the join and of the list's clearing,
+~100 instructions), with no division into thousandths."""
 _WHOLE: Final = [str(n) for n in range(_TABLED)]
 _NEGATIVE: Final = [f"-{n}" for n in range(_TABLED)]
 """A number's whole part below 1000 (a CAM coordinate's), with its sign."""
@@ -78,8 +89,8 @@ def float_text(value: float) -> str:
 def _float_parts(value: float, parts: list[str]) -> None:
     """Append ``float_text(value)`` to ``parts``, in pieces."""
     if _SMALLEST <= value < _LARGEST or -_LARGEST < value <= -_SMALLEST:
-        units = int(value * _SCALE + (0.5 if value > 0.0 else -0.5))
-        if units / _SCALE == value:
+        units = i64(value * _SCALE + (0.5 if value > 0.0 else -0.5))  # (|units| < 1e14: exact as a float)
+        if float(units) / _SCALE == value:
             magnitude = -units if units < 0 else units
             whole = magnitude // _UNITS
             fraction = magnitude - whole * _UNITS
@@ -94,18 +105,29 @@ def _float_parts(value: float, parts: list[str]) -> None:
     parts.append(float.__repr__(value))
 
 
-def _fraction_parts(fraction: int, parts: list[str]) -> None:
-    """Append the point and the decimals of ``fraction`` millionths (``_float_parts``' number after its whole part)."""
-    if fraction == 0:
-        parts.append(".0")  # an integral float below 1e16: repr writes its digits and ".0"
+def _fraction_parts(fraction: i64, parts: list[str]) -> None:
+    """Append the point and the decimals of ``fraction`` millionths (``_float_parts``' number after its whole part):
+    one piece where they are at most four (``_SHORT``), else two (the first three decimals and the rest)."""
+    if fraction % _SHORT_STEP == 0:
+        index = fraction // _SHORT_STEP
+        text = _SHORT[index]
+        if text is None:
+            text = _short_text(index)
+        parts.append(text)
         return
     high = fraction // _TABLED
-    low = fraction - high * _TABLED
-    if low == 0:
-        parts.append(_ONLY[high])
-    else:
-        parts.append(_FIRST[high])
-        parts.append(_REST[low])
+    parts.append(_FIRST[high])
+    parts.append(_REST[fraction - high * _TABLED])  # (never 0: the fraction is no multiple of _SHORT_STEP)
+
+
+def _short_text(index: i64) -> str:
+    """The point and the decimals of ``index`` ten-thousandths (not 0), kept in ``_SHORT``: its first three
+    decimals, then its fourth where it is not 0 (trailing zeros dropped)."""
+    high = index // 10
+    digit = index - high * 10
+    text = _ONLY[high] if digit == 0 else _FIRST[high] + _DIGITS[digit]
+    _SHORT[index] = text
+    return text
 
 
 def _key_text(key: str, later: bool) -> str:
@@ -202,19 +224,29 @@ _KEY_CONTROLLED: Final = ', "controlled": '
 
 @mypyc_attr(allow_interpreted_subclasses=True)
 class _KeyTexts:
-    """The texts of a record's axis keys (``MoveRecord.keys``: one tuple a simulation), kept for the tuple met last."""
+    """The texts of a record's axis keys (``MoveRecord.keys``: one tuple a simulation), kept for the tuple met last,
+    and the texts of the kind and feed met last: each a fixed key joined with its value, one piece of the line
+    where there were two (and ``str`` of the feed made once, not at every move)."""
 
     def __init__(self) -> None:
         self.keys: tuple[str, ...] = ()
         self.later: list[_KeyedNumbers] = []
         """Each key after another item (``', "x": '``), with the numbers after it."""
         self.first: list[_KeyedNumbers] = []
-        """Each key as the controlled point's (``'{"x": '`` for the first, as ``later`` for the others)."""
+        """Each key as the controlled point's, the first with the ``controlled`` key and the object's brace before
+        it (``', "controlled": {"x": '``), the others as ``later``."""
+        self.kind: str | None = None
+        self.kind_text = ""
+        """``', "move": "feed"'`` for the kind ``kind``."""
+        self.f: object = None
+        self.f_text = ""
+        """``', "f": 1500'`` for the feed object ``f`` (a feed changes rarely: the simulator writes one object)."""
 
     def update(self, keys: tuple[str, ...]) -> None:
         self.keys = keys
         self.later = [_KeyedNumbers(_key_text(key, True)) for key in keys]
-        self.first = [_KeyedNumbers(_key_text(key, i > 0)) for i, key in enumerate(keys)]
+        self.first = [_KeyedNumbers(_KEY_CONTROLLED + _key_text(key, False) if i == 0 else _key_text(key, True))
+                      for i, key in enumerate(keys)]
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
@@ -268,34 +300,46 @@ def _keyed_number_parts(value: float | int, keyed: _KeyedNumbers, parts: list[st
 
 def _keyed_float_parts(value: float, keyed: _KeyedNumbers, parts: list[str]) -> None:
     """``_keyed_number_parts`` of a float (a float parameter: compiled, unboxed once, where a union's value was
-    unboxed again at each comparison)."""
+    unboxed again at each comparison; the units machine integers, ``i64``, not tagged ones checked at each step)."""
     if _SMALLEST <= value < _LARGEST or -_LARGEST < value <= -_SMALLEST:  # (as ``_float_parts``)
-        units = int(value * _SCALE + (0.5 if value > 0.0 else -0.5))
-        if units / _SCALE == value:
-            magnitude = -units if units < 0 else units
+        units = i64(value * _SCALE + (0.5 if value > 0.0 else -0.5))
+        if float(units) / _SCALE == value:
+            negative = units < 0
+            magnitude = -units if negative else units
             whole = magnitude // _UNITS
             if whole < _TABLED:
-                parts.append(keyed.whole(whole, units < 0))
+                piece = keyed.negatives[whole] if negative else keyed.wholes[whole]
+                parts.append(piece if piece is not None else keyed.whole(whole, negative))
                 _fraction_parts(magnitude - whole * _UNITS, parts)
                 return
     parts.append(keyed.text)
     _float_parts(value, parts)
 
 
-def _record_parts(record: MoveRecord, parts: list[str]) -> None:
-    """Append the JSON text of ``record`` (``MoveRecord.event()``'s, without the closing brace): field by field, in the
-    order ``event()`` gives its keys, with no look-up or type test of a key (``tests/test_toolpath_numbers.py``
-    holds it to json's text of ``event()``)."""
+_CLOSE: Final = "}"
+_CLOSE_LINE: Final = "}\n"
+_CLOSE_BOTH: Final = "}}"
+_CLOSE_BOTH_LINE: Final = "}}\n"
+"""A record's closing text: the event's brace (with the line end where ``write_lines`` writes it), after the
+controlled point's brace where it has one (one piece)."""
+
+
+def _record_parts(record: MoveRecord, parts: list[str], line_end: bool) -> None:
+    """Append the JSON text of ``record`` (``MoveRecord.event()``'s, with its closing brace and, where ``line_end``,
+    the line end): field by field, in the order ``event()`` gives its keys, with no look-up or type test of a key
+    (``tests/test_toolpath_numbers.py`` holds it to json's text of ``event()``)."""
     texts = _RECORD_KEYS
     keys = record.keys
     if keys is not texts.keys:
         texts.update(keys)
     parts.append(_KEYS_LINE)
     parts.append(str(record.line))
-    parts.append(_KEY_MOVE)
     kind = record.kind
-    word = _WORDS.get(kind)
-    parts.append(word if word is not None else _word_text(kind))
+    if kind is not texts.kind:
+        word = _WORDS.get(kind)
+        texts.kind_text = _KEY_MOVE + (word if word is not None else _word_text(kind))
+        texts.kind = kind
+    parts.append(texts.kind_text)
     later = texts.later
     point = record.point
     for i in range(len(keys)):
@@ -311,36 +355,43 @@ def _record_parts(record: MoveRecord, parts: list[str]) -> None:
         parts.append("null" if plane is None else _word_text(plane))
     f = record.f
     if f is not None:
-        parts.append(_KEY_F)
-        _number_parts(f, parts)
+        if f is not texts.f:  # (identity: the same object has the same text; an equal one is spelt again)
+            spelt: list[str] = [_KEY_F]
+            _number_parts(f, spelt)
+            texts.f_text = "".join(spelt)
+            texts.f = f
+        parts.append(texts.f_text)
     mode = record.feed_mode
     if mode is not None:
         parts.append(_KEY_FEED_MODE)
         parts.append(_word_text(mode))
     controlled = record.controlled
-    if controlled is not None:
+    if controlled is None:
+        parts.append(_CLOSE_LINE if line_end else _CLOSE)
+        return
+    ccentre = record.ccentre
+    if not keys:
         parts.append(_KEY_CONTROLLED)
-        ccentre = record.ccentre
-        if not keys and (ccentre is None or not record.centre_keys):
+        if ccentre is None or not record.centre_keys:
             parts.append("{}")
+            parts.append(_CLOSE_LINE if line_end else _CLOSE)
             return
-        first = texts.first
-        for i in range(len(keys)):
-            _keyed_number_parts(controlled[i], first[i], parts)
-        if ccentre is not None:
-            centre_keys = record.centre_keys
-            for i in range(len(centre_keys)):
-                parts.append(_key_text(centre_keys[i], i > 0 or len(keys) > 0))
-                _number_parts(ccentre[i], parts)
-        parts.append("}")
+    first = texts.first
+    for i in range(len(keys)):
+        _keyed_number_parts(controlled[i], first[i], parts)
+    if ccentre is not None:
+        centre_keys = record.centre_keys
+        for i in range(len(centre_keys)):
+            parts.append(_key_text(centre_keys[i], i > 0 or len(keys) > 0))
+            _number_parts(ccentre[i], parts)
+    parts.append(_CLOSE_BOTH_LINE if line_end else _CLOSE_BOTH)
 
 
 def event_text(event: dict[Any, Any] | MoveRecord, fallback: Callable[[Any], str]) -> str:
     """The JSON text of one event (without its line end)."""
     parts: list[str] = []
     if isinstance(event, MoveRecord):
-        _record_parts(event, parts)
-        parts.append("}")
+        _record_parts(event, parts, False)
         return "".join(parts)
     if not event:
         return "{}"
@@ -376,8 +427,7 @@ def write_lines(events: Iterable[dict[Any, Any] | MoveRecord], write: Callable[[
             mark = len(parts)
             try:
                 if isinstance(event, MoveRecord):
-                    _record_parts(event, parts)
-                    parts.append("}\n")
+                    _record_parts(event, parts, True)
                 elif not event:
                     parts.append("{}\n")
                 elif _items_parts(event, parts, 0):
