@@ -167,3 +167,63 @@ def test_one_move_moved_deep_in_a_program_fails_there() -> None:
     twice = _verify(same, _zigzag({30: 0.002, 50: 0.002}))
     assert not twice.ok and twice.where == (30, 30)
     assert _verify(same, same).ok and _verify(same, same).where == (4, 4)
+
+
+# -- points read by key, wherever the key stands (``runs.key_index``) ------------------------------------------
+
+def _shuffled(ev: dict[str, Any], order: list[int]) -> dict[str, Any]:
+    """An event with its axis keys (and its controlled point's) in another order: the other keys stay first."""
+    axes = [k for k in ev if len(k) == 1]
+    moved = [axes[i % len(axes)] for i in order if i < len(axes)]
+    moved += [k for k in axes if k not in moved]
+    out = {k: v for k, v in ev.items() if k not in axes}
+    out.update({k: ev[k] for k in dict.fromkeys(moved)})
+    if "controlled" in ev:
+        ctrl = ev["controlled"]
+        out["controlled"] = {k: ctrl[k] for k in reversed(list(ctrl))}
+    return out
+
+
+@settings(max_examples=300, deadline=None)
+@given(path=_path(), order=st.permutations(range(5)), every=st.integers(1, 3))
+def test_normalise_reads_keys_in_any_order_as_the_reference(path: tuple[dict[str, float], list[dict[str, Any]]],
+                                                            order: list[int], every: int) -> None:
+    """A point whose keys stand in another order than the point before's (the start's, a move's) is read by key:
+    ``normalise`` looks for a key where it stood in the other point first, then anywhere. Every ``every``-th event
+    shuffled, the runs are the reference's of the same events (the reference reads dictionaries by key)."""
+    start, events = path
+    events = [_shuffled(ev, order) if n % every == 0 and "move" in ev and "cx" not in ev else ev
+              for n, ev in enumerate(events)]
+    ours = [_fields(i) for i in normalise(iter(events), start, EPS)]
+    assert ours == [_fields(i) for i in reference_normalise(iter(events), start, EPS)]
+
+
+@settings(max_examples=200, deadline=None)
+@given(path=_path(), order=st.permutations(range(5)), moved=st.sampled_from([0.0, 2e-4, 0.25]))
+def test_compare_pairs_axes_by_key_in_any_order(path: tuple[dict[str, float], list[dict[str, Any]]],
+                                                order: list[int], moved: float) -> None:
+    """OUT's events with their keys in another order than IN's: the comparison pairs the axes by key (the largest
+    deviation, its place, the count and where the structure first differs as with the keys in IN's order; a
+    message names a point's axes in its own order)."""
+    start, events = path
+    events = [ev for ev in events if ev.get("move") in ("feed", "rapid") and "controlled" not in ev]
+    copy = [dict(ev, x=ev["x"] + moved) for ev in events]
+    head = {"toolpath": 1, "units": "mm", "dialect": "fanuc"}
+    same_order = compare([head, *events], [head, *copy], start_in=start, start_out=start, tolerance=0.001)
+    other_order = compare([head, *events], [head, *[_shuffled(ev, order) for ev in copy]], start_in=start,
+                          start_out=start, tolerance=0.001)
+    assert (other_order.moves, other_order.max_deviation, other_order.where, other_order.mismatch_at) == \
+        (same_order.moves, same_order.max_deviation, same_order.where, same_order.mismatch_at)
+    assert (other_order.mismatch is None) == (same_order.mismatch is None)
+
+
+def test_a_normaliser_ends_and_stays_ended() -> None:
+    """After its last run, a pull gives None again (the comparison pulls the shorter side past its end)."""
+    from postproc.simulate.runs import Normaliser
+    start = {"X": 0.0, "Y": 0.0}
+    events = [{"line": 1, "move": "feed", "x": 1.0, "y": 0.0, "f": 100}, {"line": 2, "event": "coolant", "on": True}]
+    ins = Normaliser(iter(events), start, EPS)
+    first, second = ins.pull(), ins.pull()
+    assert isinstance(first, Move) and (first.first_line, first.end) == (1, {"x": 1.0, "y": 0.0})
+    assert second == events[1]
+    assert [ins.pull(), ins.pull()] == [None, None]

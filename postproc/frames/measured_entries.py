@@ -3,7 +3,7 @@ of another family: the entry it sets, as a whole entry written with its values (
 ``tool_entry``), which ``write_sideways_offsets`` and ``write_tool_entries`` then write in the target's
 spelling or into the path.
 
-[V] LinuxCNC ``interp_convert.cc`` ``convert_setup_tool`` (``postproc.simulate.moves.Moves.touch_off``, checked
+[V] LinuxCNC ``interp_convert.cc`` ``convert_setup_tool`` (``postproc.simulate.position.Position.touch_off``, checked
 against rs274): for ``L10`` each axis word's offset is the tool's point without its offset in the active
 work system, less the word; the work system's origin cancels, so that point is the program's current
 point plus the tool offset in force. This step follows both where the translation can know them exactly:

@@ -25,7 +25,7 @@ if TYPE_CHECKING:
     from .evaluation import Evaluation
 
 MEASURED_ENTRIES: Final = frozenset(("tool_entry_at_point", "tool_entry_at_point_9"))
-"""Tool table entries a program measures where the tool stands (LinuxCNC's, ``postproc.simulate.moves.touch_off``)."""
+"""Tool table entries a program measures where the tool stands (LinuxCNC's, ``postproc.simulate.position.Position.touch_off``)."""
 TOOL_TABLES: Final = frozenset((ENTRY, *TABLES))
 """Tool table writes a later tool offset change reads (``tool_entry``)."""
 
@@ -195,7 +195,7 @@ def _measured(ev: Evaluation, setting: DataSetting) -> DataSetting:
 
 def _declared(ev: Evaluation, system: int, axis: str) -> float | None:
     """A work system's offset before the program sets it, as the simulation takes it
-    (``postproc.simulate.moves.Moves._beyond``): the set-up's; every one zero where the set-up gives none; None
+    (``postproc.simulate.position.Position._beyond``): the set-up's; every one zero where the set-up gives none; None
     where it gives others but not this one."""
     setup = ev.ctx.setup
     declared = declared_offsets(setup, tuple(setup.machine.axes), False)

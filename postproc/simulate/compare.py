@@ -17,7 +17,7 @@ from .chords import pair_with_chords
 from .events import MOVES_THE_TOOL, Event
 from .move_record import MoveRecord
 from .normal_move import FEED_TOLERANCE as FEED_TOLERANCE, Move, same_feed as _same_feed  # (public names here too)
-from .runs import beyond, norm, normalise as normalise
+from .runs import Normaliser, beyond, key_index, norm, normalise as normalise, point_value
 
 Point = tuple[float, float, float]
 
@@ -172,15 +172,18 @@ def compare(events_in: Iterable[Event | MoveRecord], events_out: Iterable[Event 
     eps = tolerance / 2.0
     codes_in: list[Event] = []
     codes_out: list[Event] = []
-    pairs = pair_with_chords(normalise(it_in, start_in, eps, codes_in), normalise(it_out, start_out, eps, codes_out),
-                             report)
-    for a, b in pairs:
-        if report.mismatch is not None:
-            continue  # drain both streams: a program error still has to surface
-        problem = _differ(a, b, report)
-        if problem is not None:
-            report.mismatch = problem
-            report.mismatch_at = (_line(a), _line(b))
+    ins, outs = Normaliser(it_in, start_in, eps, codes_in), Normaliser(it_out, start_out, eps, codes_out)
+    if chord_tolerance is None:  # pulled pair by pair: ``zip_longest`` of the two, without a tuple a pair
+        while True:
+            a, b = ins.pull(), outs.pull()
+            if a is None and b is None:
+                break
+            if report.mismatch is None:  # else drain both streams: a program error still has to surface
+                _pair(a, b, report)
+    else:
+        for a, b in pair_with_chords(ins, outs, report):
+            if report.mismatch is None:
+                _pair(a, b, report)
     compare_machine_codes(report, codes_in, codes_out, mapped)
     if head_in.get("x_mode") == "diameter" and report.where_at is not None:  # both diameters: as radii
         report.where_at = tuple((x / 2.0, y, z) for x, y, z in report.where_at)  # type: ignore[assignment]
@@ -194,25 +197,52 @@ def per_minute_from_first(events: Iterator[Event | MoveRecord], start: dict[str,
     last move's end, where it would stand. A header in inverse time: ``per_minute`` from the start. What
     ``per_minute`` converts is the controlled path (``_controlled``); the events before pass with their
     controlled points as they are (``normalise`` reads them). ``tests/test_verify.py`` holds this to
-    ``per_minute(_controlled(events))`` on random paths."""
-    first = next(events, None)
-    if first is None:
-        return
-    head = _event(first)
-    if head.get("feed_mode") == "inverse_time":
-        yield from per_minute(_controlled(chain((head,), events)), start)
-        return
-    yield head
-    last: Event | MoveRecord | None = None
-    for ev in events:
+    ``per_minute(_controlled(events))`` on random paths. An iterator object, not a generator (``PerMinute``)."""
+    return PerMinute(events, start)
+
+
+@mypyc_attr(allow_interpreted_subclasses=True)
+class PerMinute:
+    """``per_minute_from_first``'s iterator: compiled, a generator keeps its locals in an object of its own, read
+    and written at every resume; this keeps three fields."""
+
+    def __init__(self, events: Iterator[Event | MoveRecord], start: dict[str, float]) -> None:
+        self.events = events
+        self.start = start
+        self.head: Event | None = None
+        """The header, until the first inverse-time feed (None before the first event, and after the switch)."""
+        self.rest: Iterator[Event] | None = None
+        """``per_minute``'s stream, from the first inverse-time feed on."""
+        self.last: Event | MoveRecord | None = None
+        """The last move passed as it is."""
+
+    def __iter__(self) -> PerMinute:
+        return self
+
+    def __next__(self) -> Event | MoveRecord:
+        rest = self.rest
+        if rest is not None:
+            return next(rest)
+        head = self.head
+        if head is None:
+            head = _event(next(self.events))
+            if head.get("feed_mode") == "inverse_time":
+                self.rest = per_minute(_controlled(chain((head,), self.events)), self.start)
+                return next(self.rest)
+            self.head = head
+            return head
+        ev = next(self.events)
         if _feed_mode(ev) == "inverse_time":
-            rest = per_minute(_controlled(chain((head, ev), events)), start if last is None else _resolved(last))
-            next(rest)  # the header, already given
-            yield from rest
-            return
+            last = self.last
+            converted: Iterator[Event] = per_minute(_controlled(chain((head, ev), self.events)),
+                                                    self.start if last is None else _resolved(last))
+            next(converted)  # the header, already given
+            self.rest = converted
+            first: Event = next(converted)
+            return first
         if isinstance(ev, MoveRecord) or "move" in ev:  # (a record is a move: ``postproc.simulate.move_record``)
-            last = ev
-        yield ev
+            self.last = ev
+        return ev
 
 
 def _event(item: Event | MoveRecord) -> Event:
@@ -332,6 +362,14 @@ def _as_radius(events: Iterator[Event | MoveRecord], head: Event) -> Iterator[Ev
         yield ev
 
 
+def _pair(a: Move | Event | None, b: Move | Event | None, report: Report) -> None:
+    """Compare a pair (``_differ``); the first structural difference is the report's mismatch."""
+    problem = _differ(a, b, report)
+    if problem is not None:
+        report.mismatch = problem
+        report.mismatch_at = (_line(a), _line(b))
+
+
 def _differ(a: Move | Event | None, b: Move | Event | None, report: Report) -> str | None:
     """Record the deviation of a pair; return a description when they differ in structure."""
     if a is None:
@@ -348,23 +386,24 @@ def _differ(a: Move | Event | None, b: Move | Event | None, report: Report) -> s
         return f"IN has {describe(a)}, OUT {describe(b)}"
     if not _same_feed(a.f, b.f):
         return f"IN feeds at F{a.f:g}, OUT at F{b.f:g} ({describe(a)})"
-    b_end = b.end
+    a_keys, a_end, b_keys, b_end = a.end_keys, a.end_values, b.end_keys, b.end_values
     n = 0  # the axes both have (math.dist's norm): the first three in locals, any further one in a list
     d0 = d1 = d2 = 0.0
     more: list[float] | None = None
-    for k, v in a.end.items():
-        w = b_end.get(k)
-        if w is not None:
+    for i in range(len(a_keys)):
+        j = key_index(b_keys, a_keys[i], i)
+        if j >= 0:
+            d = a_end[i] - b_end[j]
             if n == 0:
-                d0 = v - w
+                d0 = d
             elif n == 1:
-                d1 = v - w
+                d1 = d
             elif n == 2:
-                d2 = v - w
+                d2 = d
             else:
                 if more is None:
                     more = []
-                more.append(v - w)
+                more.append(d)
             n += 1
     report.moves += 1
     if report.where is not None and (a.centre is None or b.centre is None) \
@@ -381,7 +420,7 @@ def _differ(a: Move | Event | None, b: Move | Event | None, report: Report) -> s
     if report.where is None or dev > report.max_deviation:
         report.max_deviation = dev
         report.where = (a.last_line, b.last_line)
-        report.where_at = (_xyz(a.end), _xyz(b.end))
+        report.where_at = (_xyz(a_keys, a_end), _xyz(b_keys, b_end))
     return None
 
 
@@ -390,8 +429,8 @@ def _is_end(item: Move | Event | None) -> bool:
     return not isinstance(item, Move) and item is not None and item.get("event") == "end"
 
 
-def _xyz(p: dict[str, float]) -> Point:
-    return p.get("x", 0.0), p.get("y", 0.0), p.get("z", 0.0)
+def _xyz(keys: tuple[str, ...], values: list[float]) -> Point:
+    return point_value(keys, values, "x", 0), point_value(keys, values, "y", 1), point_value(keys, values, "z", 2)
 
 
 def compare_after_end(report: Report, lines_in: list[int], lines_out: list[int]) -> None:

@@ -1,13 +1,19 @@
 """verify's normalising of a toolpath as it streams: moves merged into runs (consecutive straight moves of one
 kind and feed that continue one line, arcs on one circle), machine events as they are. Compiled with the
 comparison (``pyproject.toml [tool.postproc] compiled``): it reads every move event of both programs, so a
-straight move that continues its run is merged without a ``Move`` of its own, and the arithmetic keeps the
-first three axes in unboxed locals (``tests/test_normalise_reference.py`` holds it to the code it replaced)."""
+straight move that continues its run is merged without a ``Move`` of its own, its point is read by field (a
+``MoveRecord``'s list, kept as it is where its values are floats), a point is a tuple of axis keys and a list of
+floats in their order (``postproc.simulate.normal_move``), and the arithmetic keeps the first three axes in
+unboxed locals (``tests/test_normalise_reference.py`` holds it to the code it replaced). ``Normaliser`` is pulled
+a move at a time (``pull``), not a generator: compiled, a generator keeps every local in an object of its own,
+read and written at each resume."""
 
 from __future__ import annotations
 
 import math
 from typing import Any, Final, Iterable, Iterator
+
+from mypy_extensions import mypyc_attr
 
 from ..geometry import CENTRE_KEYS, PLANE_INDEX, arc_sweep
 from .events import Event
@@ -21,24 +27,72 @@ _AXIS_KEYS: Final = frozenset("xyzabcuvw")
 _AXIS_BITS: Final = 0x3f00007  # bit n: chr(ord("a") + n) is in _AXIS_KEYS (a, b, c, u, v, w, x, y, z)
 assert _AXIS_BITS == sum(1 << (ord(k) - 97) for k in _AXIS_KEYS)
 
+Keys = tuple[str, ...]
+
 
 def _is_axis(k: str) -> bool:
     """``k in _AXIS_KEYS`` by the letter's bit: compiled, ``ord`` and a shift are a few instructions where a
-    frozenset look-up is a call through Python's set (~125 instructions, four an event in ``_axes``)."""
+    frozenset look-up is a call through Python's set (~125 instructions, four an event in ``_event_point``)."""
     if len(k) != 1:
         return False
     n = ord(k) - 97
     return 0 <= n < 26 and (_AXIS_BITS >> n) & 1 == 1
 
 
-def _axes(ev: Event, controlled: Event | None, start: dict[str, float] | None = None,
-          steps: list[float] | None = None) -> dict[str, float]:
+# -- points: axis keys and their values ------------------------------------------------------------
+
+def key_index(keys: Keys, k: str, hint: int) -> int:
+    """Where ``k`` stands in ``keys`` (-1: not there), looked for at ``hint`` first: the points of one simulation
+    share their keys, so a key stands where it stood in the other point."""
+    if hint < len(keys) and keys[hint] == k:
+        return hint
+    for i in range(len(keys)):
+        if keys[i] == k:
+            return i
+    return -1
+
+
+def point_value(keys: Keys, values: list[float], k: str, hint: int) -> float:
+    """The value of ``k`` in a point (0.0 where it has none: an axis a point lacks counts from 0)."""
+    i = key_index(keys, k, hint)
+    return values[i] if i >= 0 else 0.0
+
+
+def _floats(values: list[float | int]) -> list[float]:
+    """A record's values as floats: the list itself where every value is one (a record's lists are never
+    changed: ``postproc.simulate.move_record``), else a copy with each int converted."""
+    for v in values:
+        if not isinstance(v, float):
+            return [_real(x) for x in values]
+    return values
+
+
+def _record_point(record: MoveRecord, all_axes: bool) -> tuple[Keys, list[float]]:
+    """The end point of a straight move's record: its controlled point where it has one, read by field. Its keys are
+    the machine's axes, each in both points. ``all_axes``: every key is an axis key (``_all_axes`` of the record's
+    keys, one tuple a simulation: tested once, not a key a move)."""
+    controlled = record.controlled
+    values = record.point if controlled is None else controlled
+    if all_axes:
+        return record.keys, _floats(values)
+    keys: list[str] = []
+    floats: list[float] = []
+    record_keys = record.keys
+    for i in range(len(record_keys)):
+        k = record_keys[i]
+        if _is_axis(k):
+            keys.append(k)
+            floats.append(_real(values[i]))
+    return tuple(keys), floats
+
+
+def _event_point(ev: Event, controlled: Event | None) -> tuple[Keys, list[float]]:
     """The end point of a move event, in its order (the machine's axes): its controlled point where it has
     one, as ``compare._controlled`` gives it (the controlled axes replace the programmed ones in place, any other
     follows). A number is converted as its type: compiled, ``float(v)`` of a value of unknown type is a call
-    of the builtin through Python (~250 instructions). ``steps``: receives ``end - start`` axis by axis in the
-    same pass (a straight move's; an axis ``start`` lacks counts from 0)."""
-    end: dict[str, float] = {}
+    of the builtin through Python (~250 instructions)."""
+    keys: list[str] = []
+    values: list[float] = []
     matched = 0
     for k, v in ev.items():
         if _is_axis(k):
@@ -48,38 +102,17 @@ def _axes(ev: Event, controlled: Event | None, start: dict[str, float] | None = 
             else:
                 x = _real(c)
                 matched += 1
-            end[k] = x
-            if steps is not None:
-                steps.append(x - (0.0 if start is None else start.get(k, 0.0)))
+            keys.append(k)
+            values.append(x)
     if controlled is not None and matched != len(controlled):  # an arc's centre, or an axis the programmed
         for k, c in controlled.items():                        # point does not name
-            if _is_axis(k) and k not in end:
-                x = _real(c)
-                end[k] = x
-                if steps is not None:
-                    steps.append(x - (0.0 if start is None else start.get(k, 0.0)))
-    return end
+            if _is_axis(k) and k not in keys:
+                keys.append(k)
+                values.append(_real(c))
+    return tuple(keys), values
 
 
-def _record_end(record: MoveRecord, start: dict[str, float], steps: list[float], all_axes: bool) -> dict[str, float]:
-    """``_axes`` of a record's event (its controlled point where it has one), read by field: its keys are the
-    machine's axes, each in both points; ``steps`` receives ``end - start`` axis by axis. ``all_axes``: every key
-    is an axis key (``_all_axes`` of the record's keys, one tuple a simulation: tested once, not a key a move)."""
-    end: dict[str, float] = {}
-    keys = record.keys
-    controlled = record.controlled
-    values = record.point if controlled is None else controlled
-    for i in range(len(keys)):
-        k = keys[i]
-        if all_axes or _is_axis(k):
-            v = values[i]
-            x = v if isinstance(v, float) else _real(v)
-            end[k] = x
-            steps.append(x - start.get(k, 0.0))
-    return end
-
-
-def _all_axes(keys: tuple[str, ...]) -> bool:
+def _all_axes(keys: Keys) -> bool:
     """Every key of a record's keys is an axis key."""
     for k in keys:
         if not _is_axis(k):
@@ -96,9 +129,9 @@ def _real(v: Any) -> float:
     return float(v)
 
 
-def _plane_point(p: dict[str, float], plane: str) -> tuple[float, float]:
+def _plane_point(keys: Keys, values: list[float], plane: str) -> tuple[float, float]:
     i, j, _ = PLANE_INDEX[plane]
-    return p.get("xyz"[i], 0.0), p.get("xyz"[j], 0.0)
+    return point_value(keys, values, "xyz"[i], i), point_value(keys, values, "xyz"[j], j)
 
 
 def norm(values: list[float]) -> float:
@@ -111,6 +144,20 @@ def norm(values: list[float]) -> float:
     if n == 2:
         return _hypot(values[0], values[1])
     return _hypot(*values)
+
+
+def _norm(a: float, b: float, c: float, n: int, rest: list[float] | None) -> float:
+    """``norm`` of ``n`` components held as ``beyond``'s are (``a``, ``b``, ``c`` the first three, ``rest`` those
+    after the third)."""
+    if rest is not None:
+        return _hypot(a, b, c, *rest)
+    if n == 3:
+        return _hypot(a, b, c)
+    if n == 2:
+        return _hypot(a, b)
+    if n == 1:
+        return _hypot(a)
+    return 0.0
 
 
 def beyond(a: float, b: float, c: float, n: int, rest: list[float] | None, limit: float) -> bool:
@@ -140,49 +187,22 @@ def beyond(a: float, b: float, c: float, n: int, rest: list[float] | None, limit
 _INF: Final = math.inf
 
 
-def _move(ev: Event, start: dict[str, float]) -> Move:
-    """A move event as a ``Move`` from ``start``, its controlled point the end (``compare._controlled``, read in place:
-    copying each event that has one was a dictionary a move)."""
+# -- moves -----------------------------------------------------------------------------------------
+
+def _arc(ev: Event, start_keys: Keys, start: list[float]) -> Move:
+    """An arc event as a ``Move`` from ``start``: its end and centre the controlled ones where it has them
+    (``compare._controlled``, read in place), its plane, radius and sweep."""
     controlled: Event | None = ev.get("controlled")
-    kind = ev["move"]
+    kind: str = ev["move"]
     f = ev.get("f")
-    line = ev["line"]
-    if kind == "cw" or kind == "ccw":
-        return _arc(ev, kind, start, _axes(ev, controlled), None if f is None else _real(f), line, controlled)
-    steps: list[float] = []
-    end = _axes(ev, controlled, start, steps)
-    return _straight(kind, start, end, None if f is None else _real(f), line, steps, norm(steps))
-
-
-def _straight(kind: str, start: dict[str, float], end: dict[str, float], f: float | None, line: int, steps: list[float],
-              length: float) -> Move:
-    """A straight move of ``length`` (``norm(steps)``) as a ``Move``: its direction, and how far along it its end
-    lies (``Move.along``, which a continuing move must pass: ``_extends``)."""
-    m = Move(kind, start, end, f, line, line)
-    m.length = length
-    if length > 0:
-        direction: dict[str, float] = {}
-        along = 0.0
-        i = 0
-        for k in end:
-            step = steps[i]
-            uk = step / length
-            direction[k] = uk
-            along += step * uk
-            i += 1
-        m.direction = direction
-        m.along = along
-    return m
-
-
-def _arc(ev: Event, kind: str, start: dict[str, float], end: dict[str, float], f: float | None, line: int,
-         controlled: Event | None) -> Move:
-    """An arc event as a ``Move``: its plane, centre (the controlled one where it has one), radius and sweep."""
-    m = Move(kind, start, end, f, line, line)
+    line: int = ev["line"]
+    keys, end = _event_point(ev, controlled)
+    m = Move(kind, None, None, None if f is None else _real(f), line, line)
+    m.start_keys, m.start_values, m.end_keys, m.end_values = start_keys, start, keys, end
     plane = ev.get("plane", "XY")
     i, j, _ = PLANE_INDEX[plane]
     ci, cj = CENTRE_KEYS["XYZ"[i]], CENTRE_KEYS["XYZ"[j]]
-    s, e = _plane_point(start, plane), _plane_point(end, plane)
+    s, e = _plane_point(start_keys, start, plane), _plane_point(keys, end, plane)
     ui: Any = ev.get(ci, s[0])
     uj: Any = ev.get(cj, s[1])
     if controlled is not None:
@@ -194,12 +214,34 @@ def _arc(ev: Event, kind: str, start: dict[str, float], end: dict[str, float], f
     return m
 
 
+def _straight(kind: str, start_keys: Keys, start: list[float], keys: Keys, end: list[float], f: float | None,
+              line: int, d0: float, d1: float, d2: float, more: list[float] | None, length: float) -> Move:
+    """A straight move of ``length`` (the norm of its steps ``d0``, ``d1``, ``d2`` and ``more``, axis by axis in the
+    order of ``keys``) as a ``Move``: its direction, and how far along it its end lies (``Move.along``, which a
+    continuing move must pass: ``_extends``)."""
+    m = Move(kind, None, None, f, line, line)
+    m.start_keys, m.start_values, m.end_keys, m.end_values = start_keys, start, keys, end
+    m.length = length
+    if length > 0:
+        n = len(keys)
+        unit: list[float] = []
+        along = 0.0
+        for i in range(n):
+            step = d0 if i == 0 else d1 if i == 1 else d2 if i == 2 else more[i - 3]  # type: ignore[index]
+            uk = step / length
+            unit.append(uk)
+            along += step * uk
+        m.unit_keys, m.unit = keys, unit
+        m.along = along
+    return m
+
+
 def _merge(run: Move, m: Move, eps: float) -> bool:
     """Extend ``run`` by ``m`` when they are one line or one circle (same kind and feed)."""
     if m.kind != run.kind or not _same_feed(run.f, m.f):
         return False
-    if run.direction is not None and m.direction is not None:
-        return _extends(run, m.end, m.last_line, eps)
+    if run.unit is not None and m.unit is not None:
+        return _extends(run, m.end_keys, m.end_values, m.last_line, eps)
     return merge_arc(run, m, eps)
 
 
@@ -227,7 +269,7 @@ def merge_arc(run: Move, m: Move, eps: float) -> bool:
         return False
     if recentre:
         _recentre(run, m.centre)
-    run.end, run.last_line = m.end, m.last_line
+    run.end_keys, run.end_values, run.last_line = m.end_keys, m.end_values, m.last_line
     run.sweep += m.sweep
     return True
 
@@ -244,7 +286,7 @@ def _off_circle(a: Move, c: tuple[float, float], r: float) -> float:
     plane = a.plane or "XY"
     ac = a.centre
     assert ac is not None
-    s, e = _plane_point(a.start, plane), _plane_point(a.end, plane)
+    s, e = _plane_point(a.start_keys, a.start_values, plane), _plane_point(a.end_keys, a.end_values, plane)
     worst = max(abs(_hypot(s[0] - c[0], s[1] - c[1]) - r), abs(_hypot(e[0] - c[0], e[1] - c[1]) - r))
     dx, dy = ac[0] - c[0], ac[1] - c[1]
     if (dx == 0.0 and dy == 0.0) or a.sweep <= 0.0:
@@ -268,30 +310,34 @@ def _recentre(run: Move, c: tuple[float, float]) -> None:
     """The run about the centre ``c`` of the arc that continues it: its start radius and its sweep measured about
     ``c`` (the whole turns it made kept)."""
     plane = run.plane or "XY"
-    s, e = _plane_point(run.start, plane), _plane_point(run.end, plane)
+    s, e = _plane_point(run.start_keys, run.start_values, plane), _plane_point(run.end_keys, run.end_values, plane)
     base = arc_sweep(s, e, c, run.kind == "cw")
     run.sweep = base + round((run.sweep - base) / _TWO_PI) * _TWO_PI
     run.centre = c
     run.radius = _hypot(s[0] - c[0], s[1] - c[1])
 
 
-def _extends(run: Move, end: dict[str, float], line: int, eps: float) -> bool:
+def _extends(run: Move, keys: Keys, end: list[float], line: int, eps: float) -> bool:
     """Extend the straight run ``run`` to ``end`` (a straight move of its kind and feed, ending on ``line``) when
     that lies on its line (within ``eps``) and further along it than the run's end (``Move.along``). The first
     three axes are held in locals (compiled, unboxed floats: a list boxes each), any further one in a list."""
-    u, s = run.direction, run.start
+    u, ukeys = run.unit, run.unit_keys
+    s, skeys = run.start_values, run.start_keys
     assert u is not None
     n = 0
     r0 = r1 = r2 = u0 = u1 = u2 = 0.0
     more: list[float] | None = None  # (the end from the run's start, the direction) of each axis after the third
     along = 0.0
-    same = len(end) == len(u)  # the run's own axes (those of every move of a simulation)
-    for k, v in end.items():
-        r = v - s.get(k, 0.0)
-        uk = u.get(k)
-        if uk is None:
+    same = len(keys) == len(ukeys)  # the run's own axes (those of every move of a simulation)
+    for i in range(len(keys)):
+        k = keys[i]
+        r = end[i] - point_value(skeys, s, k, i)
+        j = key_index(ukeys, k, i)
+        if j < 0:
             uk = 0.0
             same = False
+        else:
+            uk = u[j]
         along += r * uk
         if n == 0:
             r0, u0 = r, uk
@@ -312,7 +358,7 @@ def _extends(run: Move, end: dict[str, float], line: int, eps: float) -> bool:
         off = [more[i] - along * more[i + 1] for i in range(0, len(more), 2)]
     if beyond(r0 - along * u0, r1 - along * u1, r2 - along * u2, n, off, eps):
         return False
-    run.end, run.last_line = end, line
+    run.end_keys, run.end_values, run.last_line = keys, end, line
     run.along = along if same else math.nan  # (nan: measured again, over the run's axes, when needed)
     return True
 
@@ -322,11 +368,12 @@ def _along(run: Move) -> float:
     direction's axes where the run was extended by a move of other axes."""
     if run.along == run.along:
         return run.along
-    u, s, run_end = run.direction, run.start, run.end
+    u, ukeys = run.unit, run.unit_keys
     assert u is not None
     along = 0.0
-    for k, uk in u.items():
-        along += (run_end[k] - s.get(k, 0.0)) * uk
+    for i in range(len(ukeys)):
+        k = ukeys[i]
+        along += (point_value(run.end_keys, run.end_values, k, i) - point_value(run.start_keys, run.start_values, k, i)) * u[i]
     return along
 
 
@@ -334,82 +381,148 @@ def _one_helix(run: Move, m: Move, eps: float) -> bool:
     """True when the axes outside the plane move in ``m`` at the rate per angle they moved in ``run`` (none:
     a flat arc; the same: one helix, as an arc split into pieces), so the arcs may be joined."""
     i, j, _ = PLANE_INDEX[m.plane or "XY"]
-    plane_keys = {"xyz"[i], "xyz"[j]}
-    for k in m.end:
-        if k not in plane_keys:
-            rate = (run.end[k] - run.start.get(k, 0.0)) / run.sweep
-            if abs(m.end[k] - m.start.get(k, 0.0) - rate * m.sweep) > eps:
+    a1, a2 = "xyz"[i], "xyz"[j]
+    keys, end = m.end_keys, m.end_values
+    for n in range(len(keys)):
+        k = keys[n]
+        if k != a1 and k != a2:
+            rate = (point_value(run.end_keys, run.end_values, k, n) - point_value(run.start_keys, run.start_values, k, n)) \
+                / run.sweep
+            if abs(end[n] - point_value(m.start_keys, m.start_values, k, n) - rate * m.sweep) > eps:
                 return False
     return True
 
 
+# -- the stream ------------------------------------------------------------------------------------
+
+@mypyc_attr(allow_interpreted_subclasses=True)
+class Normaliser:
+    """A toolpath's moves merged into runs, machine events as they are, pulled one at a time (``pull``; an
+    iterator too); the header is skipped. A move ends at its controlled point where it has one
+    (``compare._controlled``, read in place). ``codes``: the events of a machine-specific code (they carry
+    ``code``) go there instead: another family has no such code, so they are listed, not compared
+    (``compare_machine_codes``)."""
+
+    def __init__(self, events: Iterator[Event | MoveRecord], start: dict[str, float], eps: float,
+                 codes: list[Event] | None = None) -> None:
+        self.events = events
+        self.eps = eps
+        self.codes = codes
+        self.pos_keys: Keys = tuple(k.lower() for k in start)
+        """Where the tool stands (the last move's end): its keys and values."""
+        self.pos_values: list[float] = [float(v) for v in start.values()]
+        self.run: Move | None = None
+        """The run being merged (given when a move or an event does not continue it)."""
+        self.pending: Event | None = None
+        """A machine event met after the run, given at the next pull."""
+        self.seen_keys: Keys | None = None
+        """The records' keys met last (one tuple a simulation), and whether they are all axis keys."""
+        self.all_axes = False
+
+    def __iter__(self) -> Normaliser:
+        return self
+
+    def __next__(self) -> Move | Event:
+        item = self.pull()
+        if item is None:
+            raise StopIteration
+        return item
+
+    def pull(self) -> Move | Event | None:
+        """The next run or machine event; None at the end (and after it)."""
+        pending = self.pending
+        if pending is not None:
+            self.pending = None
+            return pending
+        events = self.events
+        eps = self.eps
+        while True:
+            item = next(events, None)
+            if item is None:
+                run = self.run
+                self.run = None
+                return run
+            if isinstance(item, MoveRecord) and item.centre is None:  # a straight move, read by field
+                kind = item.kind
+                record_keys = item.keys
+                if record_keys is not self.seen_keys:
+                    self.seen_keys, self.all_axes = record_keys, _all_axes(record_keys)
+                keys, end = _record_point(item, self.all_axes)
+                raw_f: Any = item.f
+                line = item.line
+                ev: Event | None = None
+            else:
+                ev = item.event() if isinstance(item, MoveRecord) else item  # (an arc's record: read as its event)
+                if "toolpath" in ev:
+                    continue
+                codes = self.codes
+                if codes is not None and "code" in ev:
+                    codes.append(ev)
+                    continue
+                if "move" not in ev:
+                    run = self.run
+                    if run is not None:
+                        self.run = None
+                        self.pending = ev
+                        return run
+                    return ev
+                kind = ev["move"]
+                if kind == "cw" or kind == "ccw":
+                    m = _arc(ev, self.pos_keys, self.pos_values)
+                    self.pos_keys, self.pos_values = m.end_keys, m.end_values
+                    run = self.run
+                    if run is not None and _merge(run, m, eps):
+                        continue
+                    self.run = m
+                    if run is not None:
+                        return run
+                    continue
+                keys, end = _event_point(ev, ev.get("controlled"))
+                raw_f = None
+                line = 0
+            # a straight move: merged into the run without a ``Move`` of its own where it continues it
+            start_keys, start = self.pos_keys, self.pos_values
+            n = len(keys)
+            d0 = d1 = d2 = 0.0
+            more: list[float] | None = None  # the steps after the third axis
+            for i in range(n):
+                d = end[i] - point_value(start_keys, start, keys[i], i)
+                if i == 0:
+                    d0 = d
+                elif i == 1:
+                    d1 = d
+                elif i == 2:
+                    d2 = d
+                else:
+                    if more is None:
+                        more = []
+                    more.append(d)
+            square = d0 * d0 + d1 * d1 + d2 * d2
+            if more is not None:
+                for d in more:
+                    square += d * d
+            length = -1.0  # (not measured yet: a plain sum of squares above 0 and finite says it is above 0)
+            if not (0.0 < square < _INF):
+                length = _norm(d0, d1, d2, n, more)
+                if length == 0.0:
+                    self.pos_keys, self.pos_values = keys, end
+                    continue
+            self.pos_keys, self.pos_values = keys, end
+            if ev is not None:  # (read where the move is not dropped, as before the records)
+                raw_f = ev.get("f")
+                line = ev["line"]
+            f = None if raw_f is None else _real(raw_f)
+            run = self.run
+            if run is not None and run.unit is not None and (length < 0.0 or length > 0.0) and kind == run.kind \
+                    and _same_feed(run.f, f) and _extends(run, keys, end, line, eps):
+                continue
+            self.run = _straight(kind, start_keys, start, keys, end, f, line, d0, d1, d2, more,
+                                 _norm(d0, d1, d2, n, more) if length < 0.0 else length)
+            if run is not None:
+                return run
+
+
 def normalise(events: Iterable[Event | MoveRecord], start: dict[str, float], eps: float,
               codes: list[Event] | None = None) -> Iterator[Move | Event]:
-    """Moves merged into runs, machine events as they are; the header is skipped. A move ends at its
-    controlled point where it has one (``compare._controlled``, read in place). ``codes``: the events of a
-    machine-specific code (they carry ``code``) go there instead: another family has no such code, so they
-    are listed, not compared (``compare_machine_codes``)."""
-    pos = {k.lower(): v for k, v in start.items()}
-    run: Move | None = None
-    seen_keys: tuple[str, ...] | None = None  # the records' keys met last (one tuple a simulation) and whether
-    all_axes = False                           # they are all axis keys
-    for item in events:
-        steps: list[float] = []
-        if isinstance(item, MoveRecord) and item.centre is None:  # a straight move, read by field
-            kind = item.kind
-            keys = item.keys
-            if keys is not seen_keys:
-                seen_keys, all_axes = keys, _all_axes(keys)
-            end = _record_end(item, pos, steps, all_axes)
-            raw_f: Any = item.f
-            line = item.line
-        else:
-            ev = item.event() if isinstance(item, MoveRecord) else item  # (an arc's record: read as its event)
-            if "toolpath" in ev:
-                continue
-            if codes is not None and "code" in ev:
-                codes.append(ev)
-                continue
-            if "move" not in ev:
-                if run is not None:
-                    yield run
-                    run = None
-                yield ev
-                continue
-            kind = ev["move"]
-            if kind == "cw" or kind == "ccw":
-                m = _move(ev, pos)
-                pos = m.end
-                if run is not None and _merge(run, m, eps):
-                    continue
-                if run is not None:
-                    yield run
-                run = m
-                continue
-            end = _axes(ev, ev.get("controlled"), pos, steps)
-            raw_f = None
-            line = 0
-        # a straight move: merged into the run without a ``Move`` of its own where it continues it
-        square = 0.0
-        for step in steps:
-            square += step * step
-        length = -1.0  # (not measured yet: a plain sum of squares above 0 and finite says it is above 0)
-        if not (0.0 < square < _INF):
-            length = norm(steps)
-            if length == 0.0:
-                pos = end
-                continue
-        before, pos = pos, end
-        if not isinstance(item, MoveRecord):  # (read where the move is not dropped, as before the records)
-            raw_f = item.get("f")
-            line = item["line"]
-        f = None if raw_f is None else _real(raw_f)
-        if run is not None and run.direction is not None and (length < 0.0 or length > 0.0) and kind == run.kind \
-                and _same_feed(run.f, f) and _extends(run, end, line, eps):
-            continue
-        if run is not None:
-            yield run
-        run = _straight(kind, before, end, f, line, steps, norm(steps) if length < 0.0 else length)
-    if run is not None:
-        yield run
-
+    """Moves merged into runs, machine events as they are (``Normaliser``, as an iterator)."""
+    return Normaliser(iter(events), start, eps, codes)
