@@ -18,7 +18,7 @@ from __future__ import annotations
 from typing import Callable
 
 from postproc.comments import CommentSyntax
-from postproc.compensation.rules import NIST_V3
+from postproc.rs274.cutter_rules import NIST_V3
 from postproc.dialect import Dialect, Lazy, Reader, Writer
 from postproc.hookspecs import hookimpl
 from postproc.rs274.arc_ends import RS274NGC_ARC_END
