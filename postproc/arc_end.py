@@ -14,11 +14,12 @@ The facts behind each rule are in the dialect (or family base) that declares it,
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, replace
+from dataclasses import replace
 from typing import Final
 
 from .arc_paths import ArcPath, deviation
 from .geometry import arc_sweep
+from .records import record
 from .state import MM_PER_INCH
 
 SPIRAL: Final = "spiral"
@@ -34,7 +35,7 @@ conditioned where ``START_RADIUS`` is not: near half a turn the move stays about
 RUNS: Final = (SPIRAL, START_RADIUS, NEAREST_CENTRE)
 
 
-@dataclass(frozen=True)
+@record(frozen=True)  # every run makes it (dialect.py): a record's methods are not compiled at start
 class ArcEndRule:
     """What a controller accepts of an arc whose end radius differs from its start radius by ``d``, with
     ``r`` the larger radius (``of_start``: the start radius), in the program's units:

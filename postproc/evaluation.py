@@ -498,11 +498,12 @@ def _describe(expr: Expr, top: bool = False) -> str:
 
 
 class MappingEnv:
-    """An ``Env`` over a plain dict (tests, constant folding): a missing key has no value."""
+    """An ``Env`` over a plain dict (tests): a missing key has no value, read by the vacancy rule the caller
+    names (no family's rule is the default)."""
 
     __slots__ = ("values", "_vacancy", "_increment", "_arithmetic")
 
-    def __init__(self, values: dict[VarKey, float] | None = None, vacancy: Vacancy = Vacancy.FANUC,
+    def __init__(self, values: dict[VarKey, float] | None, vacancy: Vacancy,
                  increment: float = 0.001, arithmetic: Arithmetic = Arithmetic.DOUBLE) -> None:
         self.values: dict[VarKey, float] = dict(values or {})
         self._vacancy = vacancy
@@ -535,5 +536,29 @@ def _division_by_zero(expr: Binary) -> EvalError:
     return EvalError(f"division by zero in {describe(expr)}")
 
 
-_CONSTANTS = MappingEnv()
-"""The environment of a constant part (it reads no variable)."""
+class _Constants:
+    """The environment of a constant part (``_fold``): it reads no variable, so no family's vacancy rule is asked
+    for; one that were would be a folding error, reported as such rather than read by some family's rule."""
+
+    __slots__ = ()
+
+    @property
+    def vacancy(self) -> Vacancy:
+        raise EvalError("a constant part has no variables")
+
+    @property
+    def arithmetic(self) -> Arithmetic:
+        return Arithmetic.DOUBLE
+
+    @property
+    def increment(self) -> float:
+        return 0.001
+
+    def read(self, key: VarKey) -> Value:
+        raise EvalError("a constant part has no variables")
+
+    def exists(self, key: VarKey) -> bool:
+        raise EvalError("a constant part has no variables")
+
+
+_CONSTANTS = _Constants()

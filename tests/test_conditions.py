@@ -9,7 +9,7 @@ from hypothesis import strategies as st
 
 from postproc.conditions import negated, truth
 from postproc.evaluation import MappingEnv, evaluate
-from postproc.expr import Binary, Expr, Num, Unary, Var
+from postproc.expr import Binary, Expr, Num, Unary, Vacancy, Var
 
 _VALUES = st.sampled_from([-2.0, -0.5, 0.0, 0.5, 1.0, 2.0, 3.0])
 """Few values, so that ties (where a flipped comparison would be wrong) come up often."""
@@ -30,7 +30,7 @@ def _cond(depth: int = 0) -> st.SearchStrategy[Expr]:
 
 
 def _holds(cond: Expr, a: float, b: float) -> bool:
-    value = evaluate(cond, MappingEnv({1: a, 2: b}))
+    value = evaluate(cond, MappingEnv({1: a, 2: b}, Vacancy.FANUC))
     return value is not None and value != 0.0
 
 

@@ -1,4 +1,4 @@
-"""Cutter radius compensation under the NIST RS274/NGC version 3 rules (``compensation.rules.NIST_V3``,
+"""Cutter radius compensation under the NIST RS274/NGC version 3 rules (``rs274.cutter_rules.NIST_V3``,
 Mach3's dialect): the expected points are derived by hand from that interpreter's code as EMC2 imported it
 (LinuxCNC commit 6f27a9e96b, interp_convert.cc ``convert_straight_comp1/2``: the entry move ends square to
 the line from its end point that touches the tool's circle about its start; an outside corner gets an arc

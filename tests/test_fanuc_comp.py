@@ -1,4 +1,4 @@
-"""Fanuc cutter compensation C (``compensation.rules.FANUC_A``/``FANUC_B``, ``compensation.extended_corners``).
+"""Fanuc cutter compensation C (``rs274.cutter_rules.FANUC_A``/``FANUC_B``, ``compensation.extended_corners``).
 
 Every expected point is derived by hand from the rules of the operator's manual (B-62764EN 15.6: an inner
 corner at the intersection of the offset paths, an outer one of 90 degrees or more at their intersection,
@@ -18,7 +18,7 @@ from hypothesis import strategies as st
 
 from postproc.compensation.cutter_radius import Segment
 from postproc.compensation.geometry_for import cutter_for
-from postproc.compensation.rules import FANUC_A, FANUC_B, FANUC_T, FANUC_T_B, HAAS_A
+from postproc.rs274.cutter_rules import FANUC_A, FANUC_B, FANUC_T, FANUC_T_B, HAAS_A
 from postproc.errors import ErrorList, ProgramError, UnsupportedError
 from postproc.setup.machine_setup import MachineSetup
 from postproc.simulate.toolpath import toolpath_events

@@ -1,4 +1,4 @@
-"""Tool nose radius compensation of Fanuc T and GSK, by Fanuc's rules (``rules.FANUC_T``: start-up type A,
+"""Tool nose radius compensation of Fanuc T and GSK, by Fanuc's rules (``cutter_rules.FANUC_T``: start-up type A,
 straight corners, type A cancel; the radius and the tip of the offset the T code selected): hand-derived
 toolpaths for every tip direction, the finishing cycle under compensation, and translations that keep it
 native (GSK; LinuxCNC where its own rules cut the same path, run by rs274 as the oracle) or write the
@@ -110,7 +110,7 @@ def test_no_tip_is_the_nose_centre() -> None:
 
 @pytest.mark.parametrize("tip", [2, 3, 8])
 def test_gsk_runs_the_same_rules(tip: int) -> None:
-    """GSK's G42 by the offset of its T code, as Fanuc T's ([?] its manual's figures: see ``rules.FANUC_T``)."""
+    """GSK's G42 by the offset of its T code, as Fanuc T's ([?] its manual's figures: see ``cutter_rules.FANUC_T``)."""
     assert _controlled(PROFILE, "gsk", _setup(tip, "gsk_980tdc.xml")) == _expected(tip)
 
 
@@ -143,7 +143,7 @@ T0102
 
 
 def test_finishing_cycle_runs_its_profile_compensated_by_hand() -> None:
-    """G42 before G70 and G40 after it [K: Fanuc T, see ``rules.FANUC_T``]: G70 runs ns..nf compensated, the
+    """G42 before G70 and G40 after it [K: Fanuc T, see ``cutter_rules.FANUC_T``]: G70 runs ns..nf compensated, the
     offset temporarily cancelled on the return to A = (2, 31). The G42 block does not move, so the profile's
     first move (to (2, 10)) starts compensation, ending square to the turn after it: (2, 10 + r). The turn
     meets the taper as in the module docstring; the taper meets the face (+X, nose centre at Z = -25 + r) at

@@ -1,5 +1,5 @@
 """Fanuc T roughing cycles (G71, G72, type I) under tool nose radius compensation: G41/G42 programmed before
-the cycle, G40 after it, none in ns..nf [K: ``rules.FANUC_T``, the 0i-D/0i-F notes on tool nose radius
+the cycle, G40 after it, none in ns..nf [K: ``cutter_rules.FANUC_T``, the 0i-D/0i-F notes on tool nose radius
 compensation in the multiple repetitive cycles]. The cycle roughs to the finishing shape with the
 compensation applied: started up at the profile's first block from the start point A, every corner by the
 offset mode's rules, the last block ending square to itself (the offset is temporarily cancelled for the
@@ -187,7 +187,7 @@ def test_what_is_not_known_or_an_alarm_is_refused_where_it_stands(text: str, mes
 
 
 def test_gsk_and_a_haas_lathe_refuse_it_by_name() -> None:
-    """GSK 980TDc's roughing under compensation is not in our sources [?] (``rules.GSK_T``); a Haas lathe
+    """GSK 980TDc's roughing under compensation is not in our sources [?] (``cutter_rules.GSK_T``); a Haas lathe
     compensates inside the profile (its own form, ``tests/test_haas_lathe_nose.py``), not before the cycle."""
     with pytest.raises(PostprocError) as err:
         controlled(G71, "gsk", _setup("gsk_980tdc.xml"), "t.nc")

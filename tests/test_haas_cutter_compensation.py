@@ -1,4 +1,4 @@
-"""Cutter compensation of a Haas mill (``compensation.rules.HAAS_A``/``HAAS_B``): Fanuc's straight-corner rules,
+"""Cutter compensation of a Haas mill (``rs274.cutter_rules.HAAS_A``/``HAAS_B``): Fanuc's straight-corner rules,
 with what the Haas manual leaves out refused by name, resolved into moves for grbl and grblHAL.
 
 The program is the first lap of a held-out Haas hand program (``tests/heldout/haas/enier_mill_hp_4.nc``, lines
@@ -16,7 +16,7 @@ import pytest
 
 from dialects.fanuc import Fanuc
 from postproc.api import translate
-from postproc.compensation.rules import HAAS_A, HAAS_B, HAAS_T, HAAS_T_B
+from postproc.rs274.cutter_rules import HAAS_A, HAAS_B, HAAS_T, HAAS_T_B
 from postproc.errors import Diagnostics, ErrorList
 from postproc.plugins import default_registry
 from postproc.setup.machine_setup import MachineSetup

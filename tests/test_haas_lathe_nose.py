@@ -4,7 +4,7 @@ M24 before G76.
 
 Expected values are derived by hand below, not by the code under test: the nose centre one radius
 beside each block (right of the motion for G42, looking along it with Z across and X up), every corner
-where the offset paths cross (Fanuc T's rules, which a Haas lathe follows: ``rules.HAAS_T``), the approach
+where the offset paths cross (Fanuc T's rules, which a Haas lathe follows: ``cutter_rules.HAAS_T``), the approach
 and the departure square to the block after and before them (type A); the imaginary tip the radius away
 from the centre in the direction the Haas manual gives each tip number (``tests/support/nose_tips.py``). The end-to-end test
 compares the roughing of a compensated profile with the roughing of the same cycle over the tip path
@@ -22,7 +22,7 @@ import pytest
 from postproc.api import read_program, translate
 from postproc.cycles.turning.nose_path import nose_path
 from postproc.cycles.turning.profile import Seg
-from postproc.compensation.rules import HAAS_T
+from postproc.rs274.cutter_rules import HAAS_T
 from postproc.errors import ErrorList, ProgramError
 from postproc.ir import CompoundMotion, CutterCompensation, Motion
 from postproc.lathe_sections import LatheCycle
@@ -80,7 +80,7 @@ def test_each_tip_direction_moves_the_nose_centre_path(tip: int) -> None:
 def test_g41_on_a_bore_runs_below_it_and_an_outside_corner_meets_where_the_offsets_cross() -> None:
     """ID boring toward the chuck with G41: the centre is below the bore (X5 - 0.5); the face before it,
     cut downward at Z0, is an outside corner of 90 degrees for G41 (the path turns right, the tool is on its
-    left): under Fanuc T's rules (a Haas lathe's, ``rules.HAAS_T``) the offset face (Z0.5) and the offset
+    left): under Fanuc T's rules (a Haas lathe's, ``cutter_rules.HAAS_T``) the offset face (Z0.5) and the offset
     bore (X4.5) meet at (4.5, 0.5), no arc. The approach along -Z ends square to the face: (8, 0.5)."""
     segs = [_line(8.0, 2.0, 8.0, 0.0), _line(8.0, 0.0, 5.0, 0.0), _line(5.0, 0.0, 5.0, -10.0),
             _line(5.0, -10.0, 4.0, -10.0)]
@@ -195,7 +195,7 @@ def test_the_compensated_cycles_translate_expanded_and_verify(tmp_path: Path, ta
     out = _write(program, target, setup)
     lines = out.splitlines()
     assert not any(line.startswith(("G71", "G70")) for line in lines)  # another controller's rules: expanded
-    # GSK compensates by Fanuc T's rules, which a Haas lathe follows (rules.HAAS_T): the finishing pass keeps
+    # GSK compensates by Fanuc T's rules, which a Haas lathe follows (cutter_rules.HAAS_T): the finishing pass keeps
     # G42/G40; LinuxCNC's rules differ (an arc round outside corners): the pass is written as the tip's path
     kept = sum(1 for line in lines if line.startswith(("G42", "G40")))
     assert kept == (2 if target == "gsk" else 0), out

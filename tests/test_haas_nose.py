@@ -1,4 +1,4 @@
-"""Tool nose compensation of a Haas lathe outside the cycles: Fanuc T's rules (``rules.HAAS_T``: the Haas lathe
+"""Tool nose compensation of a Haas lathe outside the cycles: Fanuc T's rules (``cutter_rules.HAAS_T``: the Haas lathe
 manual's "Two FANUC compensation types are supported, Type A and Type B", type A the default; the approach
 and the departure G00/G01, the departure starting square to the last block), hand-derived toolpaths for every
 tip direction over a profile with a chamfer, a concave fillet and a convex round, and translations: GSK and
@@ -44,7 +44,7 @@ from typing import Any
 import pytest
 
 from postproc.api import translate
-from postproc.compensation.rules import FANUC_T, FANUC_T_B, HAAS_T, HAAS_T_B, ARC_CORNERS
+from postproc.rs274.cutter_rules import FANUC_T, FANUC_T_B, HAAS_T, HAAS_T_B, ARC_CORNERS
 from postproc.errors import PostprocError
 from postproc.setup.machine import ToolData
 from postproc.setup.machine_setup import MachineSetup
@@ -109,7 +109,7 @@ def _controlled(text: str, setup: MachineSetup, dialect: str = "fanuc") -> list[
 
 
 def test_the_haas_lathe_rules_are_fanuc_ts() -> None:
-    """Every rule but the name: the Haas manual's "Two FANUC compensation types are supported" (rules.HAAS_T)."""
+    """Every rule but the name: the Haas manual's "Two FANUC compensation types are supported" (cutter_rules.HAAS_T)."""
     assert HAAS_T.cuts_like(FANUC_T) and HAAS_T_B.cuts_like(FANUC_T_B)
     assert not HAAS_T.cuts_like(FANUC_T_B) and not HAAS_T.cuts_like(ARC_CORNERS)
     assert HAAS_T.entry == "perpendicular" and not HAAS_T.arc_after_cancel  # type A; a straight departure

@@ -45,7 +45,7 @@ def test_the_same_compensation_on_both_sides_is_a_note() -> None:
 ISG = "G71 G90 G17\nG0 X0 Y0 S1000 M3\nG41 D1 G1 X10 F100\nG1 Y10\nG40 G0 X0 Y0\nM30\n"
 ISG_WITHOUT = ISG.replace("G41 D1 ", "").replace("G40 ", "")
 """An ISG program whose compensation rules are not modelled (a Haas lathe's, this test's earlier example, are
-now: ``rules.HAAS_T``), and the same without its compensation."""
+now: ``cutter_rules.HAAS_T``), and the same without its compensation."""
 
 
 def test_compensation_left_out_fails_unless_allowed() -> None:
@@ -65,7 +65,7 @@ def test_compensation_left_out_fails_unless_allowed() -> None:
 
 
 def test_haas_lathe_compensation_left_out_is_a_deviation_not_a_setting() -> None:
-    """A Haas lathe's nose compensation is simulated (Fanuc T's rules, ``rules.HAAS_T``): leaving it out moves
+    """A Haas lathe's nose compensation is simulated (Fanuc T's rules, ``cutter_rules.HAAS_T``): leaving it out moves
     the tool by the nose radius as on Fanuc T (tip 3, r 1: X40 Z1 against X40 Z2)."""
     from postproc.setup.machine import ToolData
     lathe = with_tools()

@@ -7,8 +7,8 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Callable, Iterator
 
 from postproc.comments import CommentSyntax
-from postproc.compensation.rules import (FANUC_A, FANUC_B, FANUC_T, FANUC_T_B, HAAS_A, HAAS_B, HAAS_T, HAAS_T_B,
-                                        CutterRules)
+from postproc.compensation.rules import CutterRules
+from postproc.rs274.cutter_rules import FANUC_A, FANUC_B, FANUC_T, FANUC_T_B, HAAS_A, HAAS_B, HAAS_T, HAAS_T_B
 from postproc.dialect import Dialect, Lazy, Reader
 from postproc.setup.machine_setup import MachineSetup
 from postproc.syntax import Pipeline
@@ -115,8 +115,8 @@ class Fanuc(Dialect):
         """Fanuc M: cutter compensation C, Fanuc T: tool nose radius compensation, start-up type A or B by
         parameter SUP (the set-up's ``cutterStartup``). A Haas mill: Fanuc's with what its manual leaves out
         refused, start-up type A or B by its setting 43 (the set-up's ``cutterStartup``; setting 58 FANUC,
-        ``postproc.compensation.rules.HAAS_A``). A Haas lathe: Fanuc T's rules, type A by default, type B by the
-        set-up's ``cutterStartup`` (``rules.HAAS_T``, where its manual says so)."""
+        ``postproc.rs274.cutter_rules.HAAS_A``). A Haas lathe: Fanuc T's rules, type A by default, type B by the
+        set-up's ``cutterStartup`` (``cutter_rules.HAAS_T``, where its manual says so)."""
         if setup.controller.variant == "haas":
             if cls.reads_lathe(setup):
                 return HAAS_T_B if setup.controller.cutter_startup == "B" else HAAS_T

@@ -40,7 +40,7 @@ class FanucLatheBlockSyntax(LatheBlockSyntax):
     def build(self, block: Block, ctx: Context) -> None:
         """A Haas lathe's G40 with I and K: the vector that decides where the block before it ends compensated
         (its own departure rule [V: Haas lathe operator's manual, "Approach and Departure Moves For TNC",
-        ``postproc.compensation.rules.HAAS_T``]), which is not modelled: refused by name rather than read as
+        ``postproc.rs274.cutter_rules.HAAS_T``]), which is not modelled: refused by name rather than read as
         an arc centre or left unexplained. (A wrapper of ``build``: the plain-block lane stays this reading's,
         ``postproc.fast.reading``; such a block is never plain.)"""
         if ctx.setup.controller.variant == "haas" and any(letter in "IKik" for letter, _ in block.words):

@@ -13,7 +13,7 @@ from __future__ import annotations
 from typing import Callable
 
 from postproc.comments import CommentSyntax
-from postproc.compensation.rules import GSK_T
+from postproc.rs274.cutter_rules import GSK_T
 from postproc.dialect import Dialect, Lazy, Reader
 from postproc.hookspecs import hookimpl
 from postproc.rs274.arc_ends import FANUC_ARC_END

@@ -14,7 +14,7 @@ from .. import native
 native.install()  # the compiled hot path, before any of its modules is imported
 
 from ..errors import ErrorList, PostprocError, UsageError
-from .command_line import build_parser, handler
+from .command_line import COMMANDS, build_parser, handler
 
 EXIT_INTERRUPTED = 128 + signal.SIGINT
 EXIT_TERMINATED = 128 + signal.SIGTERM
@@ -60,7 +60,8 @@ def _signals_raise() -> Iterator[None]:
 
 
 def _main(argv: Sequence[str] | None) -> int:
-    parser = build_parser()
+    given = sys.argv[1:] if argv is None else argv
+    parser = build_parser(given[0] if given and given[0] in COMMANDS else None)  # a run: its command's parser
     args = parser.parse_args(argv)
     if not args.command:
         parser.print_help(sys.stderr)

@@ -120,7 +120,12 @@ def _columns() -> int:
     return columns or 80
 
 
-def build_parser() -> argparse.ArgumentParser:
+def build_parser(only: str | None = None) -> argparse.ArgumentParser:
+    """The command line's parser: every command's, or with ``only`` (a command's name) that command's alone, which
+    parses that command's arguments as the whole parser does. A run names its command first (``cli``), so it builds
+    one subparser instead of seven: argparse makes a formatter for every argument and looks up a translation for
+    every parser's headings (gettext, with a ``stat`` per locale folder), ~16M instructions of every start for
+    the whole parser (cachegrind)."""
     p = argparse.ArgumentParser(
         prog="postproc", formatter_class=_Formatter,
         description="Translate CNC part programs between controller dialects (fanuc, linuxcnc, grbl, ...) "
@@ -136,6 +141,17 @@ def build_parser() -> argparse.ArgumentParser:
         return sub.add_parser(name, help=help, description=description, epilog=examples(name),
                               formatter_class=_Formatter)
 
+    for name, build in COMMANDS.items():
+        if only is None or name == only:
+            build(command)
+    return p
+
+
+Command = Callable[[str, str, str], argparse.ArgumentParser]
+"""``build_parser``'s ``command``: adds a command's subparser (name, help, description)."""
+
+
+def _translate_command(command: Command) -> None:
     t = command("translate", "translate a program from one dialect to another",
                 "Translate a program from one controller dialect to another. Read back in its own dialect a "
                 "program is reproduced byte for byte; what the target cannot express is a located error "
@@ -171,6 +187,8 @@ def build_parser() -> argparse.ArgumentParser:
                    help="move the whole program: 'translate DX,DY[,DZ]', 'rotate DEG [about X,Y] [in xy|zx|yz]', "
                         "'mirror x|y|z.. [about V]', 'scale S[,SY,SZ] [about X,Y,Z]', joined by ';' (mm, degrees)")
 
+
+def _toolpath_command(command: Command) -> None:
     tp = command("toolpath", "simulate a program and export its toolpath",
                  "Simulate a program and write its toolpath: JSON lines (end points in mm, arcs with centres, "
                  "spindle, coolant, tool, dwell and stop events, each with its source line) or a backplot.")
@@ -185,6 +203,8 @@ def build_parser() -> argparse.ArgumentParser:
     tp.add_argument("-o", "--output", metavar="OUT", help=OUTPUT)
     tp.add_argument("--arg", action="append", default=[], metavar="LETTER=VALUE", help=ARG)
 
+
+def _verify_command(command: Command) -> None:
     v = command("verify", "compare the toolpaths of a program and its translation",
                 "Simulate a program and its translation and report the largest deviation between their "
                 "toolpaths and where it happens. Exit 1 above the tolerance or when the moves differ.")
@@ -211,6 +231,8 @@ def build_parser() -> argparse.ArgumentParser:
                    help="OUT was translated with --arcs: with lines:TOL its chords may lie within TOL mm of IN's "
                         "arcs (each checked against its arc); ijk and r change nothing to compare")
 
+
+def _ir_command(command: Command) -> None:
     i = command("ir", "print a program's IR as XML",
                 "Read a program and write its dialect-neutral IR as XML (one element per block).")
     i.add_argument("input", metavar="IN", help=f"the program to read ({STDIO})")
@@ -218,6 +240,8 @@ def build_parser() -> argparse.ArgumentParser:
     i.add_argument("--machine", metavar="M.xml", help=MACHINE)
     i.add_argument("-o", "--output", metavar="OUT", help=OUTPUT)
 
+
+def _info_command(command: Command) -> None:
     n = command("info", "report a program's extent, tools, run time, holes, features and targets",
                 "Simulate a program and report what a machinist asks before running it: its extent per axis (in "
                 "machine coordinates too with --machine), the tools in order with their feed distance and time, the "
@@ -230,12 +254,16 @@ def build_parser() -> argparse.ArgumentParser:
     n.add_argument("--format", choices=("text", "json"), default="text",
                    help="text (default, for people) or json (for tools; the schema is in docs/cli.md)")
 
+
+def _dialects_command(command: Command) -> None:
     d = command("dialects", "list installed dialects and their capabilities",
                 "List the installed dialects: what each reads and writes and its capability table.")
     d.add_argument("--format", choices=("table", "json"), default="table",
                    help="table (default, for people) or json (for tools)")
     d.add_argument("--json", dest="format", action="store_const", const="json", help="the same as --format json")
 
+
+def _config_command(command: Command) -> None:
     c = command("config", "check or dump a machine set-up",
                 "Check a machine set-up (every error with its line; templates rendered with sample values) "
                 "or write it back in canonical form.")
@@ -245,7 +273,18 @@ def build_parser() -> argparse.ArgumentParser:
                    help="a variable the templates are checked with (as translate --define)")
     c.add_argument("--flatten", action="store_true",
                    help="dump: write the set-up resolved, without extends (default: extends and the file's own values)")
-    return p
+
+
+COMMANDS: dict[str, Callable[[Command], None]] = {
+    "translate": _translate_command,
+    "toolpath": _toolpath_command,
+    "verify": _verify_command,
+    "ir": _ir_command,
+    "info": _info_command,
+    "dialects": _dialects_command,
+    "config": _config_command,
+}
+"""Each command's subparser, in the order ``postproc --help`` lists them."""
 
 
 def _batch_arguments(t: argparse.ArgumentParser) -> None:

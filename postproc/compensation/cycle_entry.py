@@ -1,5 +1,5 @@
 """Tool nose radius compensation around a lathe cycle run under it (Fanuc T's notes on the multiple repetitive
-cycles, [K] in ``rules.FANUC_T``): one algorithm for the simulation (``simulate.simulator``) and the resolver
+cycles, [K] in ``cutter_rules.FANUC_T``): one algorithm for the simulation (``simulate.simulator``) and the resolver
 that writes the compensated moves (``lowering.cutter_resolver``).
 
 The offset is temporarily cancelled on the move to the cycle's start point (``CutterRadius.suspend``); a

@@ -24,7 +24,7 @@ The decision waits for the next move in the plane: at most ``CutterRules.look_ah
 motion in the plane may come between (their own position is the corner point); more is refused, as the
 controller then stops looking and the corner it makes is not modelled here.
 
-Sources of the rules and their tags are in ``rules.FANUC_A`` (and ``rules.HAAS_A``: a Haas runs them with
+Sources of the rules and their tags are in ``cutter_rules.FANUC_A`` (and ``cutter_rules.HAAS_A``: a Haas runs them with
 what its manual leaves out refused, ``CutterRules.startup_arc_known``, ``acute_corner_known``,
 ``exit_arc_known``). Angles in radians, lengths in mm.
 """
@@ -103,7 +103,7 @@ class ExtendedCorners(CutterRadius):
 
     def suspend(self) -> Suspended | None:
         """A roughing cycle under the mode (``CutterRules.roughing_cycles``): "the offset is temporarily canceled
-        during movement to the start point" [K: ``rules.FANUC_T``], so the queued move (the move to the cycle's
+        during movement to the start point" [K: ``cutter_rules.FANUC_T``], so the queued move (the move to the cycle's
         start point, compensated at its start as any move of the mode) ends with the imaginary tip on its
         programmed end, and the mode is held, not cancelled: ``resume`` makes the next move a start-up."""
         if self.side is None:

@@ -13,7 +13,7 @@ from mypy_extensions import mypyc_attr
 import abc
 from typing import TYPE_CHECKING, ClassVar, Final, Iterator
 
-from postproc.errors import ProgramError
+from postproc.errors import ConfigError, ProgramError
 from postproc.expr import Expr
 from postproc.ir import Block, CompoundMotion, Dwell, Feed, Motion, ProgramControl, Section, SpindleControl
 from postproc.ir import SpindleOrientation
@@ -22,7 +22,7 @@ from postproc.context import Context
 from postproc.syntax import Syntax
 
 from .section import CannedCycle
-from .semantics import FANUC, SEMANTICS
+from .semantics import SEMANTICS, Semantics
 
 if TYPE_CHECKING:  # annotations only: lxml is imported where XML is read or written (postproc.xmlio)
     from lxml import etree
@@ -32,6 +32,16 @@ EPS: Final = 1e-9
 UNBOUNDED: Final = 1 << 62
 """No bound on the items of one expansion (the callers that read a set-up pass its
 ``<Limits movesPerBlock>``)."""
+
+
+def rules_of(cycle: CannedCycle) -> Semantics:
+    """The family rules the cycle was resolved under (``CannedCycle.semantics``). A name no family has (an IR
+    file's, a plugin's) is an error: the core has no default family whose rules it could move by instead."""
+    rules = SEMANTICS.get(cycle.semantics)
+    if rules is None:
+        raise ConfigError(f"a hole cycle resolved under the rules {cycle.semantics!r}, which are not modelled "
+                          f"(known: {', '.join(SEMANTICS)}): its motion cannot be made")
+    return rules
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
@@ -303,7 +313,7 @@ class CycleExpansion(Syntax):
                                    "(the set-up's <Limits movesPerBlock>)", "peck")
             raise TooManyMoves(f"{cycle.repeat} holes make more than {limit} moves in one block (the set-up's "
                                "<Limits movesPerBlock>)", "repeat")
-        rules = SEMANTICS.get(cycle.semantics, FANUC)
+        rules = rules_of(cycle)
         if rules.rise_to_r and level(cycle, "initial") < level(cycle, "r") - EPS:
             path.rapid(level=cycle.r)
 
@@ -320,7 +330,7 @@ class CycleExpansion(Syntax):
         """Operations 1 and 2: rapid in the plane at the current level, then rapid to R. RS274 keeps
         the current level only while the tool stands above R (a G98 hole after a G99 one with a
         lower R); otherwise it rapids to the hole at the return level in one straight traverse."""
-        if SEMANTICS.get(cycle.semantics, FANUC).position_at_clear and path.level() <= level(cycle, "r") + EPS:
+        if rules_of(cycle).position_at_clear and path.level() <= level(cycle, "r") + EPS:
             path.rapid(a, b, max(path.level(), cls.return_level(cycle)))
         else:
             path.rapid(a, b)
@@ -334,7 +344,7 @@ class CycleExpansion(Syntax):
         if cycle.return_level != "initial":
             return r
         initial = level(cycle, "initial")
-        return max(initial, r) if SEMANTICS.get(cycle.semantics, FANUC).clear_above_r else initial
+        return max(initial, r) if rules_of(cycle).clear_above_r else initial
 
     @classmethod
     def from_xml(cls, el: etree._Element) -> "CycleExpansion":

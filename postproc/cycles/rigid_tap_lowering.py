@@ -71,7 +71,7 @@ class _Taps(BlockStep):
                 and (ctx.state.distance == "absolute" and ctx.state.plane == "XY" or not target.TAP_STROKES):
             # the cycle where its levels read as written (absolute, the XY plane); elsewhere the strokes
             try:
-                as_cycle_call(block, ctx, own)
+                as_cycle_call(block, ctx, target, own)
             except PostprocError as err:
                 ctx.diagnostics.error(err)
                 return []
@@ -146,10 +146,11 @@ def as_tap_cycle(block: Block, ctx: Context, target: type[Dialect], tap: RigidTa
     yield from _tap_cycle(block, ctx, target, tap, (normal, start, bottom), state.spindle, at)
 
 
-def as_cycle_call(block: Block, ctx: Context, tap: RigidTap) -> None:
+def as_cycle_call(block: Block, ctx: Context, target: type[Dialect], tap: RigidTap) -> None:
     """A synchronised tap as a rigid tap cycle called once at the spot (``Dialect.RIGID_TAP_CYCLE``: SINUMERIK's
     ``CYCLE84``, whose pitch is a parameter): R at the start, the bottom at the end point, back to R, the
-    spindle's direction in force (a counter-clockwise tap cycle for a counter-clockwise spindle)."""
+    spindle's direction in force (a counter-clockwise tap cycle for a counter-clockwise spindle). The cycle is the
+    target's own, written natively: it moves by the target's rules (``Dialect.CYCLE_SEMANTICS``)."""
     state = ctx.state
     at = ctx.at(block)
     normal = PLANE_AXES[state.plane][2]
@@ -176,7 +177,8 @@ def as_cycle_call(block: Block, ctx: Context, tap: RigidTap) -> None:
     del block.sections["RigidTap"]
     block.changed()
     block.sections["CannedCycle"] = CannedCycle(
-        "tap" if state.spindle == "cw" else "tap_left", call=True, semantics="fanuc", return_level="r",
+        "tap" if state.spindle == "cw" else "tap_left", call=True, semantics=target.CYCLE_SEMANTICS,
+        return_level="r",
         plane=state.plane, initial=start, r=start, bottom=bottom, dwell=tap.dwell, spindle=state.spindle,
         pitch=float(tap.pitch), words={normal: bottom})
 
@@ -205,7 +207,8 @@ def _tap_cycle(block: Block, ctx: Context, target: type[Dialect], tap: RigidTap,
         sections["DistanceMode"] = DistanceMode("absolute")
     sections["ReturnLevel"] = ReturnLevel("r")
     sections["CannedCycle"] = CannedCycle(
-        "tap" if direction == "cw" else "tap_left", call=True, semantics="fanuc", return_level="r",
+        "tap" if direction == "cw" else "tap_left", call=True, semantics=target.CYCLE_SEMANTICS,
+        return_level="r",
         plane=state.plane, r=start, bottom=bottom, spindle=direction, pitch=pitch,
         words={normal: bottom, ctx.cycle_words.level if ctx.cycle_words is not None else "R": start},
         feed=pitch * float(rpm) if mode == "per_min" else pitch)

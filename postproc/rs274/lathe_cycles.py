@@ -362,7 +362,7 @@ def _note_offsets(block: Block, ctx: Context) -> None:
 
 def _note_compensation(block: Block, ctx: Context) -> None:
     """Follow G40/G41/G42 outside the cycles (``MODAL_NOSE_KEY``); one in a cycle's own block is refused by the
-    block syntax (``lathe_block_syntax``: PS0325 on Fanuc T [K: ``rules.FANUC_T``])."""
+    block syntax (``lathe_block_syntax``: PS0325 on Fanuc T [K: ``cutter_rules.FANUC_T``])."""
     cc = block.sections["CutterCompensation"]
     if not isinstance(cc, CutterCompensation):
         return

@@ -24,7 +24,7 @@ def machine_table(ctx: Context, defaults: Defaults, base: str) -> dict[tuple[str
     table: dict[tuple[str, str], MachineCode] | None = ctx.run_data.get(_KEY)
     if table is None:
         table = {}
-        variant = ctx.setup.controller.variant
+        variant = ctx.setup.controller.variant or base  # None: the dialect's own controller, the family's base
         for source in (defaults.get(base, ()), defaults.get(variant, ()) if variant != base else (),
                        ctx.setup.machine_codes):
             for code in source:

@@ -239,9 +239,11 @@ class ControllerSettings(SetupGroup):
     default machine codes and the variant's word rules (each rule may be set on its own)."""
 
     TAG = "Controller"
-    variant: Literal["fanuc", "haas", "fanuc-0m"] = "fanuc"
-    """'fanuc' (0i/30i), 'haas' (dwell P with a decimal point in seconds; G103, G187 and Haas M
-    codes), 'fanuc-0m' (cutter compensation may take its register from H)."""
+    variant: Literal["fanuc", "haas", "fanuc-0m"] | None = None
+    """Which controller of its family the dialect's machine is: None, the one the dialect describes
+    (``postproc dialects``; the core has no default family); for the Fanuc family 'fanuc' (0i/30i, as
+    None), 'haas' (dwell P with a decimal point in seconds; G103, G187 and Haas M codes), 'fanuc-0m'
+    (cutter compensation may take its register from H)."""
     dwell_seconds: bool | None = None
     """A dwell P written with a decimal point is in seconds (G04 P0.5, G82 ... P0.5); without a point it
     stays milliseconds. None: as the variant does (Haas: yes)."""

@@ -9,9 +9,9 @@ overrides one entry, or one attribute of one entry, without repeating the rest.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from typing import Any, ClassVar, Literal
 
+from ..records import record
 from .record import MAX_COORDINATE, pydantic_config, setting, values
 
 __all__ = ["MAX_COORDINATE", "AxisTravel", "WorkOffsetData", "ToolData", "CONTAINERS", "entry_values"]
@@ -25,10 +25,12 @@ def coordinate(alias: str | None = None) -> Any:
     return setting(None, ge=-MAX_COORDINATE, le=MAX_COORDINATE, alias=alias)
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class Entry:
     """One keyed entry, stored as the attributes of one element (a plain record: see
-    ``postproc.setup.record``)."""
+    ``postproc.setup.record``). The entries are records (``postproc.records``), not ``@dataclass(frozen=True)``:
+    every run imports this module, and the four classes' generated methods cost ~22M instructions of its
+    start-up (cachegrind, ``import postproc.setup.machine`` after the command line)."""
 
     __pydantic_config__: ClassVar[dict[str, Any]] = pydantic_config(None)
     TAG: ClassVar[str] = ""
@@ -39,7 +41,7 @@ class Entry:
         return str(getattr(self, self.KEY))
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class AxisTravel(Entry):
     """``<Axis name="X" min="-762.0" max="0.0" home="0.0"/>``: the axis's travel in machine coordinates
     and its reference (home) position, where G28 goes."""
@@ -71,7 +73,7 @@ class AxisTravel(Entry):
         return self.minimum is not None or self.maximum is not None
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class WorkOffsetData(Entry):
     """``<Offset number="1" x="-400.0" y="-250.0" z="-500.0"/>``: where a work system's zero is in machine
     coordinates, as the operator set it (1 = G54 ... 6 = G59; 0 = the external offset added to all)."""
@@ -94,7 +96,7 @@ class WorkOffsetData(Entry):
         return {a: v for a in AXIS_LETTERS if (v := getattr(self, a.lower())) is not None}
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class ToolData(Entry):
     """``<Tool number="1" length="152.4" radius="5.0"/>`` (a mill's length register H1 and radius register
     D1) or ``<Tool number="1" x="-2.5" z="-1.2"/>`` (a lathe's offset 01 of ``T0101``): what the controller adds to the programmed

@@ -14,7 +14,7 @@ from __future__ import annotations
 
 from typing import Callable, ClassVar, Iterator
 
-from postproc.compensation.rules import ARC_CORNERS
+from postproc.rs274.cutter_rules import ARC_CORNERS
 from postproc.dialect import Dialect, Lazy, Reader
 from postproc.rs274.order_of_execution import stops_after_motion
 from postproc.rs274.arc_ends import RS274NGC_ARC_END

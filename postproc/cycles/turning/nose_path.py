@@ -13,7 +13,7 @@ block, G40 in the Q block, as known, not re-read here].
 
 The offset shape is the path the controller's own compensation makes of the profile, by one algorithm:
 the profile's blocks run through the compensation the simulation runs G70 with (``CutterRules``, a Haas
-lathe's ``rules.HAAS_T``: Fanuc T's start-up, corners and cancel; ``compensation.extended_corners``), so
+lathe's ``cutter_rules.HAAS_T``: Fanuc T's start-up, corners and cancel; ``compensation.extended_corners``), so
 the roughing leaves the allowance beside the very path the finishing pass takes. Of that path the shape
 is the part between the approach (the first block, whose end the start-up rule places) and the departure
 (the last block, no part of the shape): every point the imaginary tool tip, the nose centre moved by the
