@@ -27,6 +27,7 @@ from postproc.ir import Block, Motion
 from postproc.state import LEFT_START, MM_PER_INCH, MODAL_KEYS, PLANE_AXES
 from postproc.context import Context
 from postproc.syntax import Syntax
+from postproc.syntaxes.power_on_units import KEY as _POWER_ON_UNITS, take_power_on_units
 
 _CONTROL: Final = CONTROL
 _ASSIGN: Final = ASSIGN
@@ -46,6 +47,8 @@ class ModalStateSyntax(Syntax):
         if not sections:
             return
         state = ctx.state
+        if state.extra and _POWER_ON_UNITS in state.extra:
+            take_power_on_units(block, ctx)
         spindle = state.spindle
         quiet = True  # no modal section and no construct (most blocks: a move, a block number)
         for key in sections:
