@@ -211,3 +211,27 @@ def test_gsk_refuses_the_machine_coordinate_return_and_verifies_without_it(name:
     report = verify_lines(io.StringIO(text), io.StringIO(gsk), file_in="in.nc", file_out="out.nc", source="fanuc",
                           target="gsk", setup=setup(name, "gsk"), tolerance=1e-5)
     assert report.ok, report.summary()
+
+
+def test_o58214_type_2_roughing_by_hand() -> None:
+    """``G71 P45 Q49 U0.01 W0 D0.025 F0.02`` from X2.0 Z0.1 over N45 ``G00 X1.250 Z0.100`` (X and Z in the P block:
+    Haas type 2 [V]), Z0., X1.0, Z-5.2, X1.25. The finishing allowance U0.01 (a diameter) moves the profile and the
+    levels' top 0.01 out: levels from X2.01, 0.05 apart; the 15 above the profile's top (X1.26 with the allowance)
+    cut from Z0.1 to its end Z-5.2 as a type 1 cycle would, retracted 45 degrees by e. The last pass runs the profile
+    0.01 out (X1.26 Z0.1, Z0., X1.01, Z-5.2, X1.26) and the tool returns to the start. (How the levels inside the
+    profile's step are entered is the engine's, ``postproc.cycles.turning.roughing``, not derived here.) The tailstock
+    waits ``G04 P3.``: 3 seconds on a Haas (P with a decimal point)."""
+    name = "cadekiely_o58214_bored_lathe.nc"
+    text = source(name, G70_O58214)
+    got = moves(text, name, 14)
+    expected: list[tuple[str, float, float]] = [("rapid", 2.01, 0.1)]
+    for k in range(1, 16):
+        d = 2.01 - 0.05 * k
+        if k > 1:  # back to the start's Z at the retracted X of the pass before
+            expected.append(("rapid", d + 0.05 + 2 * R, 0.1))
+        expected += [("rapid", d, 0.1), ("feed", d, -5.2), ("rapid", d + 2 * R, -5.2 + R)]
+    close(got[:len(expected)], expected)
+    close(got[-8:], [("rapid", 1.26, 0.1), ("feed", 1.26, 0.0), ("feed", 1.01, 0.0), ("feed", 1.01, -5.2),
+                     ("feed", 1.26, -5.2), ("rapid", 2.01, -5.2), ("rapid", 2.01, 0.1), ("rapid", 2.0, 0.1)])
+    events = list(toolpath_events(io.StringIO(text), file="in.nc", dialect="fanuc", setup=setup(name)))
+    assert {"line": 11, "event": "dwell", "seconds": 3} in events
