@@ -31,8 +31,8 @@ class WriteUnitsAtStart(LoweringStep):
     """Lowering step: see the module docstring."""
 
     def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
-        if ctx.dialect == target.NAME:
-            return None
+        if ctx.dialect == target.NAME or ctx.setup.controller.start_units is not None:
+            return None  # (the reading put the set-up's power-on units where the program first reads a length)
         return _Units(ModalState().units)
 
 

@@ -17,7 +17,7 @@ from __future__ import annotations
 from typing import Final
 
 from postproc.context import Context
-from postproc.control import ASSIGN, CONTROL
+from postproc.control import ASSIGN, CONTROL, SubStart
 from postproc.errors import UnsupportedError
 from postproc.ir import Block, Units
 
@@ -34,17 +34,22 @@ PLAIN: Final = frozenset(("Comments", "Coolant", "CutterCompensation", "CycleCan
 
 
 def take_power_on_units(block: Block, ctx: Context) -> None:
-    """Give ``block`` the power-on units if it is the first to read a length (see the module docstring). A first
-    such block that is a control statement or an assignment (a subprogram definition, a loop) is refused by name:
-    the units would have to be a block of their own before it, which a copy for the controller must not gain."""
+    """Give ``block`` the power-on units if it is the first to read a length (see the module docstring). A control
+    statement or an assignment before it reads no length (``#100=1.``, ``WHILE``): the units wait for the block
+    after it that does, in the order the blocks are read, which for a program kept as written is its text's and for
+    a run its execution's (the same block, both times, unless a jump skips it). A subprogram defined before the
+    program (LinuxCNC ``o<name> sub``) is refused by name: its blocks run only where it is called, after the
+    program's own first moves."""
     keys = block.sections.keys()
     if not keys or ("Units" not in keys and HEADER.issuperset(keys)):
         return
+    if "Units" not in keys and (CONTROL in keys or ASSIGN in keys):
+        if isinstance(block.sections.get(CONTROL), SubStart):
+            raise UnsupportedError(f"the machine's power-on units (<Controller startUnits=\"{ctx.state.extra[KEY]}\">) "
+                                   "would go into a subprogram defined before the program, which runs where it is "
+                                   "called: program the units before it", ctx.at(block))
+        return  # a statement reads no length itself: the units go with the next block that does
     units = ctx.state.extra.pop(KEY)
     if "Units" in keys:
         return
-    if CONTROL in keys or ASSIGN in keys:
-        raise UnsupportedError(f"the machine's power-on units (<Controller startUnits=\"{units}\">) would go into "
-                               "this block, a control statement or an assignment: program the units before it",
-                               ctx.at(block))
     block.add(Units(str(units)))
