@@ -20,6 +20,7 @@ from .setup.machine_setup import MachineSetup
 from .context import Context
 from .cycle_words import CycleWords
 from .syntax import Pipeline, load_pipeline
+from .syntaxes.power_on_units import KEY as POWER_ON_UNITS
 from .output.writer_base import Writer as Writer
 
 if TYPE_CHECKING:
@@ -429,6 +430,9 @@ class Dialect:
             ctx.increments = cls.INCREMENTAL_AXES
         if cls.MOTION_AT_START is not None:
             ctx.state.motion = setup.controller.start_motion or cls.MOTION_AT_START
+        if setup.controller.start_units is not None:
+            ctx.state.units = setup.controller.start_units  # (``postproc.syntaxes.power_on_units``)
+            ctx.state.extra[POWER_ON_UNITS] = setup.controller.start_units
         if ctx.lathe:
             ctx.state.plane = "ZX"  # a lathe turns in the ZX plane (G18) from the start
             ctx.state.feed_mode = cls.LATHE_FEED_AT_START

@@ -40,11 +40,14 @@ DEFAULTS: Defaults = {"fanuc": FANUC, "haas": HAAS}
 """Controller variant -> its machine codes ('fanuc' is the family's base; 'fanuc-0m' has no others)."""
 
 HAAS_LATHE = (
+    m(21, "tailstock advance"), m(22, "tailstock retract"),
     m(23, "thread pull-out chamfer on", "thread-chamfer-on"),
     m(24, "thread pull-out chamfer off", "thread-chamfer-off"),
     m(31, "chip auger forward"), m(33, "chip auger stop"),
 )
-"""Haas lathes [K: Haas lathe operator's manual, M-code list, as known, not re-read here: M23 "Angle Out of
+"""Haas lathes [K: Haas lathe operator's manual, M-code list, as known, not re-read here: M21 tailstock advance
+and M22 tailstock retract (the public Haas programs of tests/heldout write M21 then G04 P3. "WAIT FOR TAILSTOCK",
+and M22 at the end), M23 "Angle Out of
 Thread On", M24 "Angle Out of Thread Off" (the G76/G92 pull-out of Setting 95), M31 chip auger forward, M33
 chip auger stop; the public Haas programs of tests/heldout write M24 before a G76 whose pull-out would
 otherwise leave the start point's X]."""

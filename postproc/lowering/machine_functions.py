@@ -163,7 +163,9 @@ def _target_code(becomes: str, ctx: Context, target: type[Dialect]) -> tuple[Sec
         diagnostics = Diagnostics(ErrorLevel.RAISE, warn_stream=io.StringIO())
         try:
             _, blocks = read_blocks([becomes + "\n"], "<ForeignCodes>", target, ctx.setup, diagnostics)
-            sections = [s for b in blocks for s in b.sections.values()]
+            # read alone at a program's start, the code also carries the set-up's power-on units
+            # (``postproc.syntaxes.power_on_units``), which are no part of it
+            sections = [s for b in blocks for s in b.sections.values() if s.KEY != "Units"]
             diagnostics.check()
         except ErrorList as err:
             first = err.errors[0]

@@ -18,31 +18,21 @@ programs its units there or before needs nothing; a copy to the same dialect pas
 
 from __future__ import annotations
 
-from typing import Final
-
 from ..context import Context
 from ..control import SubEnd, SubStart
 from ..dialect import Dialect
 from ..ir import Block, Units
 from .lower import BlockStep, LoweringStep
 from ..state import ModalState
-
-HEADER: Final = frozenset(("ProgramStart", "TapeMark", "Comments", "Sequence"))
-"""Sections of a block that read no length: the units may come after them."""
-PLAIN: Final = frozenset(("Comments", "Coolant", "CutterCompensation", "CycleCancel", "DistanceMode", "Dwell", "Feed",
-                          "FeedMode", "MachineCoordinates", "MachineFunction", "Motion", "PathControl", "Plane",
-                          "ProgramControl", "ReturnLevel", "Sequence", "SpindleControl", "SpindleOrientation",
-                          "SpindleSpeed", "ToolChange", "ToolLengthOffset", "ToolSelect", "WorkOffset", "DataSetting",
-                          "CycleCall", "CompoundMotion"))
-"""Sections of a plain block (modal words, motion, a data setting): the units can join them (``G21 G90 G54``)."""
+from ..syntaxes.power_on_units import HEADER, PLAIN
 
 
 class WriteUnitsAtStart(LoweringStep):
     """Lowering step: see the module docstring."""
 
     def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
-        if ctx.dialect == target.NAME:
-            return None
+        if ctx.dialect == target.NAME or ctx.setup.controller.start_units is not None:
+            return None  # (the reading put the set-up's power-on units where the program first reads a length)
         return _Units(ModalState().units)
 
 

@@ -28,7 +28,7 @@ from postproc.cycles.lathe_lowering import NOSE_PROFILE, THREAD_CHAMFER
 from postproc.errors import PostprocError, ProgramError, UnsupportedError
 from postproc.expr import Expr
 from postproc.ir import (Block, CompoundMotion, CutterCompensation, CycleCall, DataSetting, MachineFunction, Motion,
-                         Sequence)
+                         NativeCode, Sequence)
 from postproc.lathe_sections import InProfile, LatheCycle
 from postproc.syntax import Syntax
 
@@ -39,6 +39,9 @@ if TYPE_CHECKING:
 
 PROFILES_KEY = "LatheCycleSyntax.profiles"
 """``ctx.state.extra`` key: (ns, nf) -> the profile segments a roughing cycle read (for a later G70)."""
+PROFILE_BLOCKS_KEY = "LatheCycleSyntax.profile_blocks"
+"""``ctx.run_data`` key: (ns, nf) -> the profile's blocks, for a G70 that starts elsewhere than the roughing cycle
+did (``_finishing_profile``); in the run's data, not the modal state, which is copied at every roughing cycle."""
 CHAMFER_OFF_KEY = "LatheCycleSyntax.chamfer_off"
 """``ctx.state.extra`` key: True after a code declared ``thread-chamfer-off`` (no angled pull-out at a thread's
 end) until one declared ``thread-chamfer-on``."""
@@ -74,6 +77,9 @@ class LatheCycleSyntax(Syntax):
                 _note_offsets(block, ctx)
             call = block.sections.get("CycleCall")
             if not isinstance(call, CycleCall) or call.kind not in LatheCycle.CYCLE_KINDS:
+                yield block
+                continue
+            if _haas_finishing_extras(block, ctx, call.kind):
                 yield block
                 continue
             try:
@@ -131,6 +137,7 @@ class LatheCycleSyntax(Syntax):
                 raise ProgramError(f"{code} P{key[0]} Q{key[1]}: no roughing cycle before it read the profile "
                                    f"N{key[0]}..N{key[1]}", ctx.at(block))
             nose = ctx.state.extra.get(NOSE_KEY, {}).get(key)
+            profile = _finishing_profile(profile, key, start, ctx, code, nose is not None)
             if nose is not None:
                 return self._finish_with_nose(block, ctx, cycle, code, start, profile, nose)
         try:
@@ -251,6 +258,8 @@ class LatheCycleSyntax(Syntax):
                     shape = _modal_nose_shape(segs, start, ctx.state.extra[MODAL_NOSE_KEY], cycle, rough_type,
                                               ctx, code) or segs
                 ctx.state.extra.setdefault(PROFILES_KEY, {})[(ns, nf)] = segs
+                # a copy: the blocks go on down the stream, where later steps rewrite them
+                ctx.run_data.setdefault(PROFILE_BLOCKS_KEY, {})[(ns, nf)] = copy.deepcopy(profile)
                 ctx.state.extra.setdefault(NOSE_KEY, {})[(ns, nf)] = nose
                 self._run(block, ctx, cycle, code, shape, rough_type)
             except PostprocError as err:
@@ -261,6 +270,49 @@ class LatheCycleSyntax(Syntax):
             later.add(InProfile(block.line))
         yield block
         yield from held
+
+
+def _finishing_profile(segs: list[Seg], key: tuple[int, int], start: tuple[float, float], ctx: Context, code: str,
+                       nose: bool) -> list[Seg]:
+    """The profile a finishing cycle runs: the blocks ns..nf run from where the tool stands at the G70, as a
+    subprogram would, which need not be where the roughing cycle started (the tool may have moved between them:
+    tests/heldout/haas/cadekiely_l5_lathe.nc chamfers with ``U.1 W-.1`` and starts its G70 at Z-0.1, its G71 at
+    Z0.1) [K: Fanuc T and Haas G70, the blocks ns..nf executed from the start point, then a rapid back to it;
+    GSK's manual alike]. The segments the roughing cycle read are kept where they start there; otherwise the
+    blocks are read again from this start."""
+    if not segs or (abs(segs[0].x0 - start[0]) <= 1e-9 and abs(segs[0].z0 - start[1]) <= 1e-9):
+        return segs
+    blocks = ctx.run_data.get(PROFILE_BLOCKS_KEY, {}).get(key)
+    if blocks is None:
+        return segs  # (read elsewhere: the chain check names the gap)
+    return profile_segments(blocks, start, ctx, code, nose)
+
+
+HAAS_FINISHING_WORDS = "UWD"
+"""Letters a Haas lathe's G70 is written with in public programs (``G70 P45 Q49 U0.009 D0.01 F0.005``, copied from
+the G71 block before it: tests/heldout/haas/cadekiely_*) whose meaning there is not in our sources [?]."""
+
+
+def _haas_finishing_extras(block: Block, ctx: Context, kind: str) -> bool:
+    """A Haas lathe's finishing cycle written with U, W or D: kept verbatim for its own dialect (``NativeCode``), so
+    a copy for a Haas runs what the machine runs, and refused by name everywhere else (the simulation stops there).
+    Haas documents G70 with P and Q (the profile's first and last blocks), the F, S and T inside the profile in
+    effect and a rapid back to the start point after the Q block [K: Haas lathe operator's manual, "G70 Finishing
+    Cycle", as known, not re-read here]; U, W and D are G71's finishing allowances and depth of cut [V: Haas G71
+    page, staging-diy.haascnc.com, "G71 Address Relationships"]. What the control does with them on a G70 (ignore
+    them, leave the allowances, alarm) is not in our sources [?], so no toolpath is guessed for the block. Fanuc
+    T reads no such words in G70 (an address error, ``lathe_words.SECOND_WORDS``)."""
+    if kind != "turn_finish" or ctx.setup.controller.variant != "haas":
+        return False
+    letters = sorted({letter.upper() for letter, _ in block.words if letter.upper() in HAAS_FINISHING_WORDS})
+    if not letters:
+        return False
+    del block.sections["CycleCall"]
+    block.add(NativeCode(ctx.dialect, f"a Haas finishing cycle with {', '.join(letters)} (the roughing cycle's "
+                         "finishing allowances and depth of cut: what the Haas does with them in a finishing cycle "
+                         "is not in our sources [?])",
+                         block.text or ""))
+    return True
 
 
 def _thread_chamfer_switch(block: Block, ctx: Context) -> None:
@@ -407,7 +459,9 @@ def _modal_nose_shape(segs: list[Seg], start: tuple[float, float], modal: tuple[
 
 
 def _rough_type(profile: list[Block], kind: str) -> str:
-    """Type II when the ns block names both axes (``W0`` counts), type I when only the infeed axis."""
+    """Type II when the ns block names both axes (``W0`` counts), type I when only the infeed axis (Haas: "If the P
+    block contains only an X-Axis position, then Type 1 roughing is assumed. If the P block contains both an X-Axis
+    and Z-Axis position, then Type 2 roughing is assumed" [V: Haas lathe G71 page, staging-diy.haascnc.com])."""
     motion = next((b.sections["Motion"] for b in profile if isinstance(b.sections.get("Motion"), Motion)), None)
     if not isinstance(motion, Motion):
         return "I"

@@ -262,6 +262,11 @@ class ControllerSettings(SetupGroup):
     (``Dialect.MOTION_AT_START``; Fanuc: G00 or G01 by parameter 3402#0 G01). None: the dialect's
     default. A dialect without a power-on mode (axis words need a motion code first) ignores it."""
 
+    start_units: Literal["mm", "inch"] | None = None
+    """The units in force at power-on, before a program programs G20/G21 (Fanuc parameter 0000#2 INI [K], Haas
+    Setting 9 [K]): the reading starts in them and the first block that reads a length carries them
+    (``postproc.syntaxes.power_on_units``). None: not given, such a program is read in millimetres."""
+
     mist_coolant: bool | None = None
     """The controller's build runs mist coolant. None: as the dialect says (``Dialect.MIST_COOLANT``: every
     build but grbl's, where it takes ENABLE_M7)."""

@@ -28,6 +28,7 @@ from postproc.ir.keys import only_move
 from postproc.state import LEFT_START, MM_PER_INCH, MODAL_KEYS, PLANE_AXES
 from postproc.context import Context
 from postproc.syntax import Syntax
+from postproc.syntaxes.power_on_units import KEY as _POWER_ON_UNITS, take_power_on_units
 
 _CONTROL: Final = CONTROL
 _ASSIGN: Final = ASSIGN
@@ -47,6 +48,8 @@ class ModalStateSyntax(Syntax):
         if not sections:
             return
         state = ctx.state
+        if state.extra and _POWER_ON_UNITS in state.extra:
+            take_power_on_units(block, ctx)
         spindle = state.spindle
         # no modal section and no construct (most blocks: a move and its block number, ``only_move``'s two
         # look-ups; any other block one pass over its keys)
