@@ -66,3 +66,12 @@ def test_after_a_g92_the_translation_evaluates_the_move_is_in_the_targets_frame(
     shifted = PROGRAM.replace("G53 Z0.\n", "G0 X0 Y0 Z10.\nG92 Z0.\nG53 Z0.\n")
     lines = _translate(shifted, "linuxcnc", _setup())
     assert "G43 H01 G0 X-1.25 Y-0.25 Z250." in lines and "G0 Z11." in lines
+
+
+def test_a_change_of_work_system_after_the_machine_move_reads_the_z_in_the_new_system() -> None:
+    """G53 Z0. under G54 (Z offset -350 mm: work Z 350), then ``G55 G00 X Y`` beside the waiting length: the machine
+    stays, so the Z the move must name is machine Z0 less G55's -250 mm: 250 (hand-derived)."""
+    setup = _setup()
+    setup.work_offsets["1"] = WorkOffsetData(number=1, x=-400.0, y=-250.0, z=-350.0)
+    program = PROGRAM.replace("G21 G90 G55\n", "G21 G90 G54\n").replace("G00 X-1.25", "G55 G00 X-1.25")
+    assert "G55 G43 H01 G0 X-1.25 Y-0.25 Z250." in _translate(program, "linuxcnc", setup)

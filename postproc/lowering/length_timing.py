@@ -225,6 +225,7 @@ def _complete(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> I
                     unplaced.difference_update(words)
             yield block
             continue
+        before = frame.beyond(False) if "WorkOffset" in sections else None  # mm
         frame.follow(sections)
         if _WATCHED.isdisjoint(sections):
             if pending is None:
@@ -246,8 +247,14 @@ def _complete(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> I
         if isinstance(cutter, CutterCompensation):
             compensating = cutter.mode != "off"
         if "WorkOffset" in sections or "CoordinateSet" in sections:
+            after = frame.beyond(False)
             for a in axes:
-                pos[a] = None
+                known = pos[a]
+                # a change of work system keeps the machine where it stands: the programmed Z reads in the new
+                # system, the two systems' set-up offsets apart (as the simulation has it); else not known
+                pos[a] = (known + (before - after) / (MM_PER_INCH if inch else 1.0)
+                          if a == AXIS and not ctx.lathe and known is not None and before is not None
+                          and after is not None and "CoordinateSet" not in sections else None)
         if unplaced and not _UNPLACING.isdisjoint(sections):
             unplaced.clear()  # the point moved or was re-expressed by what only the run knows (held blocks too)
         setting = sections.get("DataSetting")
