@@ -10,7 +10,7 @@ PLUGINS := $(wildcard plugins/*/pyproject.toml)
 HOT    := $(shell sed -n '/^compiled = \[/,/^\]/p' pyproject.toml | grep -o '"[^"]*\.py"' | tr -d '"')
 NATIVE := $(VENV)/.compiled
 
-.PHONY: install compile bytecode run test bench typecheck fuzz clean
+.PHONY: install compile bytecode run test bench typecheck fuzz differential clean
 
 # The build's own requirements (pyproject.toml [build-system] requires: setuptools, the pinned mypy, pydantic),
 # installed into the venv once, so that no pip install below makes a throw-away build environment of its
@@ -76,6 +76,14 @@ test: install
 bench: compile
 	$(BIN)/pip install --quiet -r benchmarks/requirements.txt
 	$(BIN)/python benchmarks/run.py $(BENCH_ARGS)
+
+# The seeded differentials against LinuxCNC's rs274 at the full run's size (issue 26: 2,000 programs each, 200 in
+# `make test`): cutter and tool length compensation (and its grbl lowering), frames. Not in CI (about ten times
+# the make-test share of those files); PROGRAMS=n sets another count. Skips with its reason where rs274 is absent.
+PROGRAMS ?= 2000
+differential: $(STAMP)
+	POSTPROC_COMPENSATION_PROGRAMS=$(PROGRAMS) POSTPROC_FRAME_PROGRAMS=$(PROGRAMS) $(BIN)/python -m pytest -n $(JOBS) \
+	  tests/test_cutter_compensation_rs274.py tests/test_cutter_compensation_grbl.py tests/test_frames.py
 
 fuzz: $(STAMP)
 	$(BIN)/python -m tests.support.fuzz_main --minutes $(or $(MINUTES),10) --out fuzz-failures

@@ -118,6 +118,14 @@ NO_END = "p.nc:{}:1: warning: the program has no end (M2/M30): M2 written after 
     ("%\nG21 G90\nG0 X1.\n%\n", "%\nG21 G90\nG0 X1.\n%\n", None),
     ("G21 G90\nG0 X1.\nM02\n", "G21 G90\nG0 X1.\nM2\n", None),
     ("G21 G90\nG0 X1.\nM30\n%\n", "G21 G90\nG0 X1.\nM30\n%\n", None),
+    # a Fanuc's opening '%' after a blank line (read so by the Fanuc reader: the program runs from it) opens the
+    # program, it does not end it (issue 26: CadeKiely's Haas programs start with a blank line, then '%'); off
+    # rs274's first line it can only be a comment, and the closing '%' then closes nothing
+    ("\n%\nG21 G90\nG0 X1.\nM30\n%\n", "\n(%)\nG21 G90\nG0 X1.\nM30\n%\n", None),
+    ("\n%\nG21 G0 X1.\n%\n", "\n(%)\nG21 G0 X1.\nM2\n(%)\n",
+     "p.nc:4:1: warning: the program ends with '%' and no M2/M30, without an opening '%': LinuxCNC refuses a "
+     "lone '%': M2 written for it, the '%' as a comment"),
+    ("\n%\nG21 G0 X1.\n", "\n(%)\nG21 G0 X1.\nM2\n", NO_END.format(3)),
 ])
 def test_linuxcnc_gets_an_end_where_the_source_has_none(program: str, expected: str, warning: str | None) -> None:
     """rs274 refuses a file that runs out with neither M2/M30 nor a closing '%' after an opening one ("File

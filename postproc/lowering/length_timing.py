@@ -55,9 +55,12 @@ from ..context import Context
 from ..dialect import Dialect
 from ..errors import Location, PostprocError, UnsupportedError
 from ..expr import Binary, Expr, Num, Var
-from ..ir import Block, CutterCompensation, DataSetting, DistanceMode, Motion, Section, ToolLengthOffset, Units
+from ..ir import (Block, CutterCompensation, DataSetting, DistanceMode, Motion, Section, ToolLengthOffset, Units,
+                  WorkOffset)
 from ..ir.keys import watches_none
 from ..compensation.tool_table import ToolTable
+from ..setup.machine_setup import MachineSetup
+from ..setup.work_offsets import declared_offsets, offset_beyond_frame
 from .lower import BlockStep, LoweringStep
 
 AXIS: Final = "Z"
@@ -69,7 +72,7 @@ _STRAIGHT: Final = frozenset(("rapid", "linear"))
 """The modes whose block moves nothing without an axis word (an arc without one is a full circle)."""
 _RETURNS: Final = frozenset(("home", "home2"))
 """Reference returns (G28, G30): a move through an intermediate point in work coordinates."""
-_STATE: Final = _WATCHED - {"Motion"} | {"MachineCoordinates"}
+_STATE: Final = _WATCHED - {"Motion"} | {"MachineCoordinates", "FrameChange"}
 """What a block must lack for ``_complete``'s short way (a plain move or none, nothing else to follow)."""
 
 
@@ -222,6 +225,7 @@ class _Complete(BlockStep):
         self.compensating = False  # cutter radius compensation is on (the target reads no position then)
         self.diverged: set[str] = set()  # axes whose program point on the target a change written alone has moved
         self.unplaced = set(axes)  # axes nothing has placed or re-expressed since the start: only they are read
+        self.frame = _Frame(ctx.setup)  # what puts a machine-coordinate Z in the program's frame
 
     def take(self, block: Block) -> list[Block] | None:
         sections = block.sections
@@ -257,6 +261,9 @@ class _Complete(BlockStep):
             return None
         ctx = self.ctx
         held = self.held
+        frame = self.frame
+        before = frame.beyond(False) if "WorkOffset" in sections else None  # mm
+        frame.follow(sections)
         if _WATCHED.isdisjoint(sections):
             if pending is None:
                 return None
@@ -277,8 +284,14 @@ class _Complete(BlockStep):
         if isinstance(cutter, CutterCompensation):
             self.compensating = cutter.mode != "off"
         if "WorkOffset" in sections or "CoordinateSet" in sections:
+            after = frame.beyond(False)
             for a in axes:
-                pos[a] = None
+                known = pos[a]
+                # a change of work system keeps the machine where it stands: the programmed Z reads in the new
+                # system, the two systems' set-up offsets apart (as the simulation has it); else not known
+                pos[a] = (known + (before - after) / (MM_PER_INCH if inch else 1.0)
+                          if a == AXIS and not ctx.lathe and known is not None and before is not None
+                          and after is not None and "CoordinateSet" not in sections else None)
         unplaced = self.unplaced
         if unplaced and not _UNPLACING.isdisjoint(sections):
             unplaced.clear()  # the point moved or was re-expressed by what only the run knows (held blocks too)
@@ -312,7 +325,7 @@ class _Complete(BlockStep):
                 _refuse(ctx, pending[1], f"{clash} follows it")
                 out.extend(_release(held, pending[0]))
                 self.pending = None
-                _follow(block, pos, absolute, in_force, None if lathe else table, inch)
+                _follow(block, pos, absolute, in_force, None if lathe else table, inch, frame.beyond(inch))
                 out.append(block)
                 return out
             held.append(block)
@@ -349,7 +362,7 @@ class _Complete(BlockStep):
                     motion.axes[a] = _position_read(target, a, ctx.diameter) if known is None else known
                 block.changed()
             else:
-                _refuse(ctx, at, f"the programmed {' and '.join(axes)} is not known where it applies")
+                _refuse(ctx, at, f"the programmed {' and '.join(axes)} is not known where it applies{frame.why()}")
                 moved = False  # refused once: taken out, so no later step refuses it again
                 if pending is None:
                     del sections["ToolLengthOffset"]
@@ -361,7 +374,8 @@ class _Complete(BlockStep):
                 block.changed()
             self.pending = None
             self.applied = in_force
-        _follow(block, pos, absolute, in_force, None if lathe else table, inch)
+        _follow(block, pos, absolute, in_force, None if lathe else table, inch, frame.beyond(inch))
+        frame.placed(sections, pos.get(AXIS) is not None)
         if unplaced:
             motion = sections.get("Motion")
             if isinstance(motion, Motion):
@@ -485,10 +499,10 @@ def _refuse(ctx: Context, at: Location, why: str) -> None:
 
 
 def _follow(block: Block, pos: dict[str, float | None], absolute: bool, in_force: tuple[str, object, object],
-            table: ToolTable | None, inch: bool) -> None:
+            table: ToolTable | None, inch: bool, beyond: float | None) -> None:
     """Move ``pos`` (program units) to the point after the block's motion, None where it is not known. A
-    machine-coordinate Z is the programmed Z plus the mill's length in force (``in_force`` read in
-    ``table``; None on a lathe: not followed)."""
+    machine-coordinate Z is the programmed Z plus the work offset in force (``beyond``, ``_Frame``) plus the
+    mill's length in force (``in_force`` read in ``table``; None on a lathe: not followed)."""
     sections = block.sections
     if "CompoundMotion" in sections or "RigidTap" in sections or "CycleCall" in sections:
         for axis in pos:
@@ -506,12 +520,61 @@ def _follow(block: Block, pos: dict[str, float | None], absolute: bool, in_force
             pos[axis] = None
         elif "MachineCoordinates" in sections:
             length = None if table is None or axis != AXIS else _length(in_force, table, inch)
-            pos[axis] = None if length is None else float(value) - length
+            pos[axis] = None if length is None or beyond is None else float(value) - beyond - length
         elif absolute:
             pos[axis] = float(value)
         else:
             known = pos[axis]
             pos[axis] = None if known is None else known + float(value)
+
+
+@mypyc_attr(allow_interpreted_subclasses=True)
+class _Frame:
+    """What lies between a machine-coordinate Z and the programmed one (besides the length): the set-up's offset of
+    the active work system and the external one (``postproc.setup.work_offsets``, as the simulation subtracts it).
+    Only a declared offset counts: where the set-up gives the active system none (or no ``<WorkOffsets>`` at all,
+    which the simulation takes as zero on both sides of ``verify``, so it could not see a wrong guess), or after a
+    G10 work offset, G92/G52 or a frame change (values only the run knows here), the programmed Z after a machine
+    move is not known, and a length change that needs it is a located error (issue 26: writing the machine's Z0
+    as the program's Z0 sent a Haas program's first rapid down to the part's zero)."""
+
+    def __init__(self, setup: MachineSetup) -> None:
+        self.declared = declared_offsets(setup, (AXIS,), False)
+        self.system = 1  # G54 (or the dialect's first system) at power-on [K: DIALECTS.md, modal defaults]
+        self.known = True
+        self.machine_z = False
+        """The programmed Z is unknown since a machine-coordinate move whose offset is not known."""
+
+    def follow(self, sections: dict[str, Section]) -> None:
+        work = sections.get("WorkOffset")
+        if isinstance(work, WorkOffset):
+            self.system = work.index
+        setting = sections.get("DataSetting")
+        if "CoordinateSet" in sections or "FrameChange" in sections or (
+                isinstance(setting, DataSetting) and setting.table.startswith("work_offset")):
+            self.known = False
+
+    def placed(self, sections: dict[str, Section], known: bool) -> None:
+        if known:
+            self.machine_z = False
+        elif "MachineCoordinates" in sections:
+            self.machine_z = True
+
+    def why(self) -> str:
+        """What the located error adds where a machine move left the programmed Z unknown."""
+        if not self.machine_z:
+            return ""
+        if not self.known:
+            return " (a move in machine coordinates after a work offset, G92/G52 or frame set in the program)"
+        return (f" (a move in machine coordinates: {offset_beyond_frame(AXIS, self.system, {}, self.declared)[1]}"
+                f" to put it in work coordinates)")
+
+    def beyond(self, inch: bool) -> float | None:
+        """The offset in program units; None where it is not known."""
+        if not self.known:
+            return None
+        value = offset_beyond_frame(AXIS, self.system, {}, self.declared)[0]
+        return None if value is None else value / MM_PER_INCH if inch else value
 
 
 def _length(key: tuple[str, object, object], table: ToolTable, inch: bool) -> float | None:

@@ -118,6 +118,10 @@ class LinuxcncWriter(WordWriter):
         """An orientation split's part is being written: it is one line (``split_block``)."""
         self._closed = False
         """A '%' closed the program opened with one (rs274 then needs no M2/M30)."""
+        self._opened_late = False
+        """The source's opening '%' came after a blank line (the Fanuc reader runs the program from it, issue 26:
+        hand-written Haas programs start so) and was written as a comment: rs274 takes a '%' as the opening one
+        only on the file's first line, so a later '%' closes nothing."""
         self._feeds: LineFeeds | None = None
         """The output (``write``); once it ``wrote`` a line (a comment) before any '%', a '%' is no opening
         one: rs274 takes a '%' as the opening one only on the file's first line, and refuses it anywhere
@@ -364,7 +368,13 @@ class LinuxcncWriter(WordWriter):
             return ended + (self.write_block(block) or "")
         if "TapeMark" in sections:
             lines_before = self._feeds is not None and self._feeds.wrote
-            if (self.opening is False or self.opening is None and lines_before) and not self._ended:
+            if self.opening is None and lines_before and not self._ended and self.source_dialect != self.DIALECT:
+                # Another dialect's opening '%' after a blank line: it opens the program
+                # there, so it is no end; rs274 would refuse it off the first line, so it becomes a comment.
+                self._opened_late = True
+                return self.comment("%") + (block.eol or "\n")
+            if (self.opening is False or self._opened_late or self.opening is None and lines_before) \
+                    and not self._ended:
                 return self._lone_tape_mark(block)
             self._closed = self.opening is True  # a '%' after the opening one
         text = super().structure_block(block)
@@ -393,7 +403,7 @@ class LinuxcncWriter(WordWriter):
             return closing
         self.ctx.diagnostics.warn("the program has no end (M2/M30): M2 written after its last block, as LinuxCNC "
                                   "refuses a program that runs out", Location(self.ctx.file, max(self.last_line, 1)))
-        return closing + self._end(self.last_line) + ("%\n" if self.opening else "")
+        return closing + self._end(self.last_line) + ("%\n" if self.opening and not self._opened_late else "")
 
     def _end(self, line: int) -> str:
         """The program end a source without one gets (M2: an end that does not rewind)."""
