@@ -565,7 +565,7 @@ class _Frame:
         if not self.machine_z:
             return ""
         if not self.known:
-            return " (a move in machine coordinates after a work offset, G92/G52 or frame set in the program)"
+            return " (a move in machine coordinates after a work offset, a coordinate shift or a frame set in the program)"
         return (f" (a move in machine coordinates: {offset_beyond_frame(AXIS, self.system, {}, self.declared)[1]}"
                 f" to put it in work coordinates)")
 
