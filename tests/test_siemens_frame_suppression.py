@@ -207,3 +207,16 @@ def test_a_machine_move_under_g91_is_refused_towards_siemens() -> None:
                   target="siemens", setup=MachineSetup(), diagnostics=Diagnostics(warn_stream=io.StringIO()))
     assert "in.mpf:2:1: error: the siemens dialect cannot express a move in machine coordinates under G91" in \
         str(caught.value.errors[0])
+
+
+def test_fanuc_g53_of_a_rotary_axis_is_refused_for_siemens_at_its_line(tmp_path: Path) -> None:
+    """``G53 Y0. A0.`` (a Haas program's end, issue 26 audit26) was written ``SUPA G0 Y0. A0.``, which the SINUMERIK
+    reading keeps verbatim and cannot simulate (the test above: a block without frames with an axis other than
+    X, Y, Z): an output verify cannot read back. It is a located error instead, naming the axis."""
+    setup = load_setup_plain()
+    setup.machine.axes = "XYZA"
+    text = "G21 G90 G17 G0 X5. Y5. Z5.\nG53 Y0. A0.\nM30\n"
+    with pytest.raises(ErrorList, match=r"in\.nc:2:\d+: error: the siemens dialect cannot express a move in machine "
+                                        r"coordinates of axis A"):
+        translate(io.StringIO(text), io.StringIO(), file="in.nc", source="fanuc", target="siemens", setup=setup,
+                  diagnostics=Diagnostics(warn_stream=io.StringIO()))
