@@ -37,6 +37,7 @@ _KIND_SETTING: Final = 2
 _KIND_COMPENSATION: Final = 4
 _KIND_EVENT: Final = 8
 _KIND_RARE: Final = 16
+_KIND_MACHINE: Final = 32
 EXACT: Final = "exact stop"
 """How an exact stop mode reads as a setting (``postproc.simulate.events._setting_text``)."""
 _EXACT_TEXTS: Final = frozenset((EXACT, "exact path"))
@@ -48,10 +49,11 @@ _RARE_KEYS: Final = frozenset(("TapeMark", "InProfile", "NativeCode", "CompoundM
 _KEY_KINDS: Final[dict[str, int]] = {
     key: (_KIND_MODAL if key in MODAL_KEYS else 0) | (_KIND_SETTING if key in _SETTING_KEYS else 0)
     | (_KIND_COMPENSATION if key in _COMPENSATION_KEYS else 0) | (_KIND_EVENT if key in _EVENT_KEYS else 0)
-    | (_KIND_RARE if key in _RARE_KEYS else 0)
-    for key in MODAL_KEYS | _SETTING_KEYS | _COMPENSATION_KEYS | _EVENT_KEYS | _RARE_KEYS}
+    | (_KIND_RARE if key in _RARE_KEYS else 0) | (_KIND_MACHINE if key == "MachineCoordinates" else 0)
+    for key in MODAL_KEYS | _SETTING_KEYS | _COMPENSATION_KEYS | _EVENT_KEYS | _RARE_KEYS | {"MachineCoordinates"}}
 """Section key -> the kinds of work it asks of ``Simulator.block`` (bits above): one look-up a section, where
-four ``keys().isdisjoint`` tests were four bound method calls a block (~2,700 instructions compiled)."""
+four ``keys().isdisjoint`` tests were four bound method calls a block (~2,700 instructions compiled). A block's
+``Motion`` and ``Sequence`` are in none: ``Simulator.block`` takes the motion as it passes and looks up neither."""
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
@@ -64,8 +66,12 @@ class Simulator(Moves):
         if not sections:
             return
         kinds = 0
-        for key in sections:
-            kinds |= _KEY_KINDS.get(key, 0)
+        motion: Motion | None = None  # typed: compiled, its fields are read directly
+        for key, value in sections.items():  # (a string comparison a key: ~130 instructions less than a look-up)
+            if key == "Motion":
+                motion = value
+            elif key != "Sequence":
+                kinds |= _KEY_KINDS.get(key, 0)
         rare = kinds & _KIND_RARE != 0
         if self.ended or rare and "TapeMark" in sections:
             self._tape_or_after_end(block)
@@ -131,7 +137,7 @@ class Simulator(Moves):
             if s is not None:
                 emit({"line": line, "event": "dwell", "seconds": num(s.seconds)})
         compound = sections.get("CompoundMotion") if rare else None
-        motion: Motion | None = sections.get("Motion")  # typed: compiled, its fields are read directly
+        machine_coordinates = kinds & _KIND_MACHINE != 0
         coords = sections.get("CoordinateSet") if rare else None
         if coords is not None:
             for axis, value in coords.axes.items():
@@ -155,7 +161,7 @@ class Simulator(Moves):
                     except PostprocError as err:
                         raise err.located(self._at(block)) from None
             if motion is not None and motion.mode is not None:
-                self.motion(block, motion, False, emit)
+                self.motion(block, motion, False, emit, machine_coordinates)
             for item in compound.items:
                 if item is back and cutter is not None:
                     try:
@@ -171,7 +177,7 @@ class Simulator(Moves):
                 raise UnsupportedError("a canned-cycle repeat cannot be simulated: the cycle was not "
                                        "resolved to motion", self._at(block))
             if motion.mode is not None:
-                self.motion(block, motion, False, emit)
+                self.motion(block, motion, False, emit, machine_coordinates)
         elif rare and "CycleCall" in sections and "CannedCycle" not in sections:
             raise UnsupportedError(f"canned cycle '{sections['CycleCall'].kind}' cannot be simulated: it was not "
                                    "resolved to motion", self._at(block))
@@ -370,7 +376,10 @@ class Simulator(Moves):
             raise UnsupportedError(f"program control '{kind}' cannot be simulated")
 
     # -- motion ------------------------------------------------------------------------------------
-    def motion(self, block: Block, m: Motion, absolute: bool, emit: Callable[[Emitted], None]) -> None:
+    def motion(self, block: Block, m: Motion, absolute: bool, emit: Callable[[Emitted], None],
+               machine_coordinates: bool | None = None) -> None:
+        """One motion of ``block`` (its own, or an item of its compound motion: ``absolute``). ``machine_coordinates``:
+        whether the block has a ``MachineCoordinates`` section (``block`` knows it from its keys; None: looked up)."""
         mode, line = m.mode, block.line
         travel = self.travel
         if m.axes:
@@ -413,7 +422,7 @@ class Simulator(Moves):
             # the axes it names]; under cutter compensation the block still goes to the compensation's queue
         if self.feed is None and needs_feed(m):
             raise ProgramError(NO_FEED, self._at(block), needs="F")
-        machine = "MachineCoordinates" in block.sections
+        machine = ("MachineCoordinates" in block.sections if machine_coordinates is None else machine_coordinates)
         target = self.target(block, m.axes, absolute or machine, machine)
         if travel is not None and mode not in ("cw", "ccw"):  # (a machine move's values: machine positions)
             travel.line(block, self.pos, target, self._programmed(m.axes),
