@@ -83,7 +83,7 @@ class Steps(BlockStep):
         self.moves = any(step.moves for step in steps)
 
     def take(self, block: Block) -> list[Block] | None:
-        made = list(_loop(iter((block,)), self.steps, 0, False))
+        made = list(_onward(block, self.steps, 0))
         self.moves = any(step.moves for step in self.steps)
         return None if len(made) == 1 and made[0] is block else made
 
@@ -91,7 +91,8 @@ class Steps(BlockStep):
         steps = self.steps
         made: list[Block] = []
         for k in range(len(steps)):
-            made.extend(_loop(iter(steps[k].finish()), steps, k + 1, False))
+            for held in steps[k].finish():
+                made.extend(_onward(held, steps, k + 1))
         return made
 
 
@@ -128,36 +129,14 @@ def lower_for(blocks: Iterator[Block], ctx: Context, target: type[Dialect], on_u
 def run_blocks(blocks: Iterator[Block], steps: list[BlockStep]) -> Iterator[Block]:
     """Every block through ``steps`` in order, as the chain of their generators would pass it: a block a
     step expands goes on, block by block, to the next step before the step's next block; at the end each
-    step's held blocks (``finish``) go through the steps after it, the first step's first."""
-    return _loop(blocks, steps, 0, True)
-
-
-def _loop(blocks: Iterator[Block], steps: list[BlockStep], first: int, finish: bool) -> Iterator[Block]:
-    """The one loop of ``run_blocks`` (and of ``Steps``): each of ``blocks`` through the steps from ``first``
-    on, then (``finish``) what each step still holds through the steps after it. What a step makes of a
-    block (several blocks, or held ones given back) waits on ``pending`` with the step it goes on to, the
-    first made on top: each goes through the later steps, and what those make of it, before the next."""
+    step's held blocks (``finish``) go through the steps after it, the first step's first. (``_onward`` repeats
+    this loop for a made block: one loop over a stack of made blocks, fed by ``next(blocks, None)``, measured
+    ~1.9k instructions a block more compiled, ``fanuc linuxcnc 0``: mypyc calls ``next`` as a builtin looked up
+    by name, where a ``for`` loop steps the iterator natively.)"""
     n = len(steps)
-    pending: list[tuple[Block, int]] = []
-    done = 0  # the steps whose ``finish`` has been taken (``finish``), or all of them
-    if not finish:
-        done = n
-    while True:
-        if pending:
-            block, i = pending.pop()
-        else:
-            came = next(blocks, None)
-            if came is None:
-                if done >= n:
-                    return
-                held = steps[done].finish()
-                done += 1
-                for k in range(len(held) - 1, -1, -1):
-                    pending.append((held[k], done))
-                continue
-            block = came
-            i = first
+    for block in blocks:
         plain = only_move(block.sections)
+        i = 0
         through = True
         while i < n:
             step = steps[i]
@@ -172,8 +151,34 @@ def _loop(blocks: Iterator[Block], steps: list[BlockStep], first: int, finish: b
                 plain = only_move(block.sections)
                 continue
             through = False
-            for k in range(len(out) - 1, -1, -1):
-                pending.append((out[k], i))
+            for made in out:
+                yield from _onward(made, steps, i)
             break
         if through:
             yield block
+    for k in range(n):
+        for made in steps[k].finish():
+            yield from _onward(made, steps, k + 1)
+
+
+def _onward(block: Block, steps: list[BlockStep], start: int) -> Iterator[Block]:
+    """``block``, made by step ``start - 1``, through the steps from ``start`` on (``run_blocks``'s loop)."""
+    n = len(steps)
+    plain = only_move(block.sections)
+    i = start
+    while i < n:
+        step = steps[i]
+        i += 1
+        if plain and not step.moves:
+            continue
+        out = step.take(block)
+        if out is None:
+            continue
+        if len(out) == 1:
+            block = out[0]
+            plain = only_move(block.sections)
+            continue
+        for made in out:
+            yield from _onward(made, steps, i)
+        return
+    yield block
