@@ -1,5 +1,5 @@
 """Whether a line is already in canonical spelling (``postproc.numbers.CANONICAL_BLOCK``), by one scan
-over its characters.
+over its bytes.
 
 Compiled (mypyc), the scan costs a fifth of the regex, which was the largest single cost of reading a
 CAM line (~8,500 instructions a line). The pure-Python build runs the same scan (there it is slower than
@@ -56,10 +56,12 @@ def scan_words(text: str) -> tuple[int, list[tuple[str, str]], int]:
     number must still be digits only, and a sign only ``-`` on an axis-type letter."""
     if not text:
         return 0, NO_WORDS, -1
-    # The characters are read from the string itself (compiled, ``ord(text[i])`` is an inline read of its
-    # buffer): no ASCII copy of the line to make and free. A character past ASCII is no word's.
+    try:
+        b = text.encode("ascii")  # compiled, a C call; ``str.isascii`` would be a method look-up
+    except UnicodeEncodeError:
+        return 0, NO_WORDS, -1
     # Positions as i64 (compiled: machine integers, not tagged ones whose every step checks for overflow).
-    n: i64 = len(text)
+    n: i64 = len(b)
     kind = _KIND
     letters = _LETTERS
     canonical = True
@@ -69,9 +71,7 @@ def scan_words(text: str) -> tuple[int, list[tuple[str, str]], int]:
     i: i64 = 0
     while True:
         start = i
-        c: i64 = ord(text[i])
-        if c >= 128:
-            return 0, NO_WORDS, -1
+        c = b[i]
         k = kind[c]
         i += 1
         if k == _CODE:
@@ -80,42 +80,41 @@ def scan_words(text: str) -> tuple[int, list[tuple[str, str]], int]:
             digits = i
             if start == 0 and c == 78:  # 'N' first: its number is the block's
                 sequence = 0
-                while i < n and 48 <= ord(text[i]) <= 57:
-                    sequence = sequence * 10 + ord(text[i]) - 48
+                while i < n and 48 <= b[i] <= 57:
+                    sequence = sequence * 10 + b[i] - 48
                     i += 1
-                if i < n and ord(text[i]) == 46:  # 'N10.': the lexer's to judge
+                if i < n and b[i] == 46:  # 'N10.': the lexer's to judge
                     return 0, NO_WORDS, -1
             else:
-                while i < n and 48 <= ord(text[i]) <= 57:
+                while i < n and 48 <= b[i] <= 57:
                     i += 1
             if i == digits:
                 return 0, NO_WORDS, -1
-            if i < n and ord(text[i]) == 46:  # 'G43.4': a plain word, not canonical
+            if i < n and b[i] == 46:  # 'G43.4': a plain word, not canonical
                 canonical = False
                 i += 1
-                while i < n and 48 <= ord(text[i]) <= 57:
+                while i < n and 48 <= b[i] <= 57:
                     i += 1
         elif k == _AXIS:
-            negative = i < n and ord(text[i]) == 45  # '-'
+            negative = i < n and b[i] == 45  # '-'
             if negative:
                 i += 1
             digits = i
-            while i < n and 48 <= ord(text[i]) <= 57:
+            while i < n and 48 <= b[i] <= 57:
                 i += 1
             whole = i - digits
-            if i < n and ord(text[i]) == 46:  # '.'
+            if i < n and b[i] == 46:  # '.'
                 i += 1
                 fraction = i
-                while i < n and 48 <= ord(text[i]) <= 57:
+                while i < n and 48 <= b[i] <= 57:
                     i += 1
                 places = i - fraction
                 if whole == 0:
                     if places == 0:
                         return 0, NO_WORDS, -1
                     canonical = False  # '.5'
-                elif (whole > 1 and ord(text[digits]) == 48 or places > _MAX_FRACTION
-                      or places > 0 and ord(text[i - 1]) == 48
-                      or negative and places == 0 and whole == 1 and ord(text[digits]) == 48):
+                elif (whole > 1 and b[digits] == 48 or places > _MAX_FRACTION
+                      or places > 0 and b[i - 1] == 48 or negative and places == 0 and whole == 1 and b[digits] == 48):
                     canonical = False  # '00.5', more than six places, '0.10', '-0.'
             elif whole == 0:
                 return 0, NO_WORDS, -1
@@ -126,7 +125,7 @@ def scan_words(text: str) -> tuple[int, list[tuple[str, str]], int]:
         words.append((letters[c], text[start + 1:i]))
         if i == n:
             return (CANONICAL if canonical else WORDS) | (CODES if codes else 0), words, sequence
-        if ord(text[i]) != 32:
+        if b[i] != 32:
             return 0, NO_WORDS, -1
         i += 1
         if i == n:
