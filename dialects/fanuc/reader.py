@@ -53,7 +53,7 @@ def read_line(raw: str, number: int, ctx: Context) -> Block:
         text, eol = raw, ""
     # Likeliest first: a block of words only, starting with its N number or (a CAM program's
     # usual line) with a G code or an axis word; O (a program number) and the rest are lexed.
-    first = text[:1]
+    first = text[0] if text else ""  # (compiled: a cached one-character string, where a slice is a call)
     if first in _FAST_START:
         # A canonical block (``postproc.rs274.canonical_line``): words only, single spaces, a
         # digits-only N; a byte scan finds it and tells a CAM line (no G or M word, so no call

@@ -101,7 +101,7 @@ class PlainLane(BlockLane):
             else:
                 break
         else:
-            values = _values(axes, sequence_value, others)
+            values = values_of(axes, sequence_value, others)
             if cycle:
                 block.values = values
                 if axes:
@@ -130,7 +130,7 @@ class PlainLane(BlockLane):
         return False
 
 
-def _values(axes: dict[str, float | Expr], sequence: object, others: dict[str, float | Expr] | None
+def values_of(axes: dict[str, float | Expr], sequence: object, others: dict[str, float | Expr] | None
             ) -> dict[str, float | int | Expr]:
     """A plain block's ``Block.values``: its axis words', its block number's and its other words' (in that
     order: the general path's is the words', and no reader of ``values`` depends on it)."""

@@ -26,7 +26,7 @@ from ..ir import Block, Feed
 from ..rs274.codes import g_key
 from ..rs274.ngc_block_syntax import _STATE_KEY as NO_MOTION_KEY, NgcWordBlockSyntax
 from .plain import (LETTER_ARC, LETTER_AXIS, LETTER_F, LETTER_G, LETTER_KIND, LETTER_N, MOTION_MODES,
-                    plain_motion)
+                    plain_motion, values_of)
 
 _UPPER: Final = {c: c.upper() for c in "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"}
 _FEED_MODES: Final = frozenset(("linear", "cw", "ccw"))
@@ -61,9 +61,12 @@ class NgcPlainLane(BlockLane):
         for key in self.own_state:
             if key in extra:
                 return False  # the dialect reads the block further itself (``after_sections``)
-        values = block.values
         real = self.real
+        # The words' values gathered apart and the block's ``values`` made once the lane is sure of the block
+        # (``postproc.fast.plain``'s ``PlainLane.read`` says why).
         axes: dict[str, float | Expr] = {}
+        others: dict[str, float | Expr] | None = None  # I/J/K/R and F, where the block has them
+        sequence: object = None  # N's value
         mode: str | None = None
         group = ""  # the motion code's modal group, where the block has one
         arc_words = False
@@ -82,7 +85,7 @@ class NgcPlainLane(BlockLane):
             if kind == LETTER_N:
                 if "." in num or self.n_first and not (first and _starts_with_n(block.text or "")):
                     break  # a fractional N, or one the N-first rule looks at: the general path
-                values["N"] = int(num)
+                sequence = int(num)
             elif kind == LETTER_G and mode is None:
                 key = g_key(num)
                 if key in self.special or key in self.codes.refused_g:
@@ -98,43 +101,43 @@ class NgcPlainLane(BlockLane):
             elif up not in real:
                 break
             elif kind == LETTER_AXIS:
-                number: object = float(num)  # boxed once, shared by both dictionaries (compiled)
-                values[up] = axes[up] = number  # type: ignore[assignment]
+                axes[up] = float(num)
             elif kind == LETTER_F:
-                values["F"] = float(num)
+                if others is None:
+                    others = {}
+                others["F"] = float(num)
             elif kind == LETTER_ARC:
-                values[up] = float(num)
+                if others is None:
+                    others = {}
+                others[up] = float(num)
                 arc_words = True
             else:
                 break
             first = False
         else:
+            fed = others is not None and "F" in others
             if group == _MOTION_GROUP and mode in _FEED_MODES and not state.symbolic and state.feed_mode != "inverse_time":
-                feed = values["F"] if "F" in values else state.feed
+                feed = others["F"] if others is not None and fed else state.feed
                 if not isinstance(feed, Expr) and not feed:
-                    values.clear()
                     return False  # no feed rate in force: the general path refuses it
             if mode is None and axes:
                 mode = state.motion
                 if mode is None:
-                    values.clear()
                     return False  # the general path explains the error
+            values = values_of(axes, sequence, others)
             if mode is not None:
                 if mode in self.own_motion:
-                    values.clear()
                     return False  # the dialect reads the block further itself (``after_sections``)
                 motion = plain_motion(values, axes, mode, arc_words)
                 if motion is None:
-                    values.clear()
                     return False
                 block.sections["Motion"] = motion
             elif arc_words:
-                values.clear()
                 return False  # I/J/K/R with no motion: the general path refuses it
-            if "F" in values:
-                block.sections["Feed"] = Feed(values["F"])
+            block.values = values
+            if others is not None and fed:
+                block.sections["Feed"] = Feed(others["F"])
             return True
-        values.clear()
         return False
 
 

@@ -24,6 +24,7 @@ from ..control import ASSIGN, CONTROL, Call, ModalCall
 from ..errors import ConfigError, Diagnostics, ErrorLevel, PostprocError
 from ..expr import Expr, Var
 from ..ir import AXES, Block, Sequence
+from ..ir.keys import only_move
 from ..context import Context
 from ..syntax import Syntax
 from .kept_lines import Kept, KeptLines
@@ -173,8 +174,9 @@ class ProgramSyntax(Syntax):
         control, assign, start, sequence = CONTROL, ASSIGN, "ProgramStart", "Sequence"
         for block in blocks:
             sections = block.sections
-            size = len(sections)  # (most blocks have no section but their block number: one look-up, not three)
-            if size and (size > 1 or sequence not in sections) and (
+            size = len(sections)  # (most blocks have no section but their block number: one look-up, not three;
+            # most others a move and that number, ``only_move``: two)
+            if size and (size > 1 or sequence not in sections) and not only_move(sections) and (
                     control in sections or start in sections or assign in sections) or (
                     block.values and not block.canonical and _computes(block)):
                 if check is None:
