@@ -11,7 +11,7 @@ from . import native
 native.install()  # the compiled hot path, before any of its modules is imported
 
 from .arc_end import SPIRAL, TARGET_ARC_END
-from .block_rules import check_blocks
+from .lowering.feed_first import check_blocks
 from .control import GotoLabel
 from .dialect import Dialect
 from .errors import Diagnostics, ErrorLevel, PostprocError, UsageError

@@ -2,7 +2,7 @@
 and ``translate``, so ``translate``, ``toolpath`` and ``verify`` never disagree about the same block.
 A negative F or S is refused by the reading pipeline's modal-state step (every reading passes there);
 a feed move with no feed rate by the simulator and, for ``translate``, the ``check_blocks`` lowering
-step, which looks only at the blocks before the first feed rate.
+step (``postproc.lowering.feed_first``), which looks only at the blocks before the first feed rate.
 
 * A feed rate ``F`` or a spindle speed ``S`` cannot be negative.
 * A feed move (straight or arc) with axis words or an arc centre needs a feed rate programmed before
@@ -23,20 +23,16 @@ import math
 from mypy_extensions import mypyc_attr
 
 from .context import Context
-from .control import ASSIGN, CONTROL
-from .dialect import Dialect
 from .errors import ProgramError
 from .arc_end import NEUTRAL_ARC_END, ArcEndRule
 from .geometry import PLACES, centre_from_radius
 from .ir import Block
-from .lowering.lower import BlockStep, LoweringStep
 
 NO_FEED = "a feed move with no feed rate (program F first)"
 ZERO_FEED = "a feed move at a zero feed rate (F0 is in force: program a feed rate above 0 first)"
 """Fanuc alarms (FEED ZERO), rs274 refuses ("Cannot do g1 with zero feed rate"), grbl too (error 22)."""
 FEED_MOVES = frozenset(("linear", "cw", "ccw"))
 """Motion modes that move at the feed rate."""
-_KEYS = frozenset(("Feed", "Motion", "CompoundMotion", CONTROL, ASSIGN))
 
 
 def feed_problem(value: object) -> str | None:
@@ -87,59 +83,6 @@ def check_values(block: Block, ctx: Context) -> None:
         problem = speed_problem(speed.rpm)  # type: ignore[attr-defined]
         if problem is not None:
             raise ProgramError(problem, ctx.at(block, ctx.column_of(block, "S")))
-
-
-@mypyc_attr(allow_interpreted_subclasses=True)
-class CheckBlocks(LoweringStep):
-    """Lowering step for ``translate``: a feed move before any feed rate is a located error (the
-    simulator makes the same check itself). Once a feed rate is in force nothing is left to check: the
-    step then looks at no block (``_UntilFed.done``)."""
-
-    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
-        return _UntilFed(ctx)
-
-
-check_blocks = CheckBlocks()
-
-
-@mypyc_attr(allow_interpreted_subclasses=True)
-class _UntilFed(BlockStep):
-    """The blocks up to the first feed rate (or the first construct of a program that computes). A block
-    that is only a move is looked at until then (a feed move in it needs a rate); after it, none."""
-
-    def __init__(self, ctx: Context) -> None:
-        super().__init__()
-        self.ctx = ctx
-        self.done = False
-        """A feed rate (or a construct) went by: every block passes unlooked at."""
-
-    def take(self, block: Block) -> list[Block] | None:
-        if self.done:
-            return None
-        sections = block.sections
-        if sections.keys().isdisjoint(_KEYS):
-            return None
-        if CONTROL in sections or ASSIGN in sections or "Feed" in sections:
-            self._fed()  # from a construct on, execution order is no longer the text's
-            return None
-        ctx = self.ctx
-        motion = sections.get("Motion")
-        if motion is not None and needs_feed(motion):
-            ctx.diagnostics.error(ProgramError(NO_FEED, ctx.at(block), needs="F"))
-        compound = sections.get("CompoundMotion")
-        if compound is not None:
-            for item in compound.items:  # type: ignore[attr-defined]
-                if item.KEY == "Feed":
-                    self._fed()
-                    return None
-                if item.KEY == "Motion" and needs_feed(item):
-                    ctx.diagnostics.error(ProgramError(NO_FEED, ctx.at(block), needs="F"))
-                    break
-        return None
-
-    def _fed(self) -> None:
-        self.done = True
-        self.moves = False
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)

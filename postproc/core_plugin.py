@@ -49,7 +49,7 @@ def postproc_register_xml(factory: XFactory) -> None:
 @hookimpl
 def postproc_register_lowerings(register: Callable[[Lowering], None]) -> None:
     from . import patterns
-    from .block_rules import check_blocks
+    from .lowering.feed_first import check_blocks
     from .cycles.lathe_lowering import expand_lathe_cycles
     from .cycles.lowering import expand_canned_cycles
     from .cycles.rigid_tap_lowering import resolve_rigid_taps

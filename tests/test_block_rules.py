@@ -91,7 +91,7 @@ def test_a_program_that_computes_leaves_the_feed_order_to_the_run() -> None:
     from postproc.dialect import Dialect
     from postproc.errors import Diagnostics
     from postproc.ir import Block, Feed, Motion
-    from postproc.block_rules import check_blocks
+    from postproc.lowering.feed_first import check_blocks
     from postproc.setup.machine_setup import MachineSetup
 
     def block(line: int, *sections: object) -> Block:

@@ -36,7 +36,7 @@ from __future__ import annotations
 import io
 from typing import Callable, Iterable, Iterator, Mapping, cast
 
-from ..block_rules import check_blocks
+from ..lowering.feed_first import check_blocks
 from ..context import ASSUMED_START, Context
 from ..dialect import Dialect
 from ..errors import Diagnostics
