@@ -23,7 +23,7 @@ PLUGIN = ROOT / "plugins" / "example_dialect"
 
 DEFECTS: dict[str, list[tuple[str, str, str]]] = {
     # name: (file, text, replacement), each text must occur in the copy
-    "dropy": [("__init__.py", "for axis, value in s.axes.items())", "for axis, value in s.axes.items() if axis != \"Y\")")],
+    "dropy": [("writer.py", "for axis, value in s.axes.items())", "for axis, value in s.axes.items() if axis != \"Y\")")],
     "lies": [("__init__.py", "SPINDLE_ORIENTATION = False", "SPINDLE_ORIENTATION = True")],
     "notap": [("__init__.py", 'NATIVE_CYCLES = frozenset({"drill", "peck_chip", "peck_deep"})',
                'NATIVE_CYCLES = frozenset({"drill", "peck_chip", "peck_deep", "tap"})')],

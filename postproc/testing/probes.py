@@ -25,7 +25,7 @@ from ..ir import (
     ToolLengthOffset, ToolSelect,
 )
 from ..setup.machine_setup import MachineSetup
-from .neutral import NeutralProgram, Op, drill_cycle, write_neutral
+from .neutral import NeutralProgram, Op, cycle_rules, drill_cycle, write_neutral
 
 PROBE_LINE = 3
 """The probe's block: after the prologue (units, plane, distance mode) and the first rapid."""
@@ -77,7 +77,7 @@ def _cycle(kind: str) -> Callable[[type[Dialect]], list[Op]]:
         extra = CYCLE_KINDS.get(kind, {})
         dwell = 1.0 if kind in SPELT_DWELL else extra.get("dwell")
         cycle = drill_cycle(kind, START, (10.0, 10.0), bottom=-5.0, r=2.0, feed=100.0,
-                            semantics=dialect.CYCLE_SEMANTICS, q=extra.get("q"), dwell=dwell)
+                            semantics=cycle_rules(dialect), q=extra.get("q"), dwell=dwell)
         turning = TURNING.get(kind)
         if turning is None:
             return [("cycle", cycle)]

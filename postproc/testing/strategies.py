@@ -14,7 +14,7 @@ from typing import Sequence
 from hypothesis import strategies as st
 
 from ..dialect import Dialect
-from .neutral import NeutralProgram, Op, drill_cycle
+from .neutral import NeutralProgram, Op, cycle_rules, drill_cycle
 
 GRID = 1000
 """Coordinates are whole multiples of 1/GRID mm."""
@@ -60,7 +60,7 @@ def _mill_ops(draw: st.DrawFn, dialect: type[Dialect], cycles: bool) -> tuple[di
             bottom = -draw(coordinate(1, 15))
             hole = (draw(coordinate(-50, 50)), draw(coordinate(-50, 50)))
             ops.append(("cycle", drill_cycle("drill", pos, hole, bottom=bottom, r=r, feed=draw(FEEDS),
-                                             semantics=dialect.CYCLE_SEMANTICS)))
+                                             semantics=cycle_rules(dialect))))
             pos.update({"X": hole[0], "Y": hole[1]})
         else:
             ops.append(_common(draw, choice, dialect))
