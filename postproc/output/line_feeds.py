@@ -52,14 +52,18 @@ class Batch:
 @mypyc_attr(allow_interpreted_subclasses=True)
 class LineFeeds(Batch):
     """``out`` with lone CR line ends written as LF, and whether any text was written (``wrote``: at once,
-    not when the batch reaches ``out``)."""
+    not when the batch reaches ``out``) and whether any of it was more than blank lines (``content``)."""
 
     def __init__(self, out: TextIO) -> None:
         super().__init__(out)
         self.wrote = False
         """Text was written."""
+        self.content = False
+        """Text other than blank lines was written (a comment counts: the program has begun)."""
 
     def write(self, text: str) -> int:
         if text:
             self.wrote = True
+            if not self.content and text.strip():
+                self.content = True
         return super().write(_LONE_CR.sub("\n", text) if "\r" in text else text)

@@ -368,8 +368,10 @@ class LinuxcncWriter(WordWriter):
             return ended + (self.write_block(block) or "")
         if "TapeMark" in sections:
             lines_before = self._feeds is not None and self._feeds.wrote
-            if self.opening is None and lines_before and not self._ended and self.source_dialect != self.DIALECT:
-                # Another dialect's opening '%' after a blank line: it opens the program
+            blank_before = lines_before and self._feeds is not None and not self._feeds.content
+            if self.opening is None and blank_before and not self._ended and self.source_dialect != self.DIALECT:
+                # Another dialect's opening '%' after blank lines only (a comment before it begins the program,
+                # and the '%' then ends it, as the simulation has it): it opens the program
                 # there, so it is no end; rs274 would refuse it off the first line, so it becomes a comment.
                 self._opened_late = True
                 return self.comment("%") + (block.eol or "\n")
