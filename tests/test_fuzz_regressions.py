@@ -438,3 +438,19 @@ def test_the_options_fuzz_spells_an_isg_dwell_with_x() -> None:
     with pytest.raises(ErrorList, match="in.nc:3:1: error: P1 is read before it is set"):
         translate(io.StringIO(program.replace("G04 X1", "G4 P1")), io.StringIO(), file="in.nc", source="isg",
                   target="fanuc")
+
+
+def test_an_arc_below_rs274s_smallest_radius_is_refused_for_linuxcnc() -> None:
+    """make fuzz (fagor patterns, a G163 of radius 0.001 mm): LinuxCNC got G2 .. I0.001 J0., which rs274 refuses
+    ("Zero-radius arc": a radius below MIN_CENTER_ARC_RADIUS_TOLERANCE_MM, 0.001, interp_internal.hh [V]); now a
+    located error. Its inch twin: 0.00004 in."""
+    for units, arc in (("G21", "G2 X20.001 Y0.001 I0.001 J0."), ("G20", "G2 X20.00004 Y0.00004 I0.00004 J0.")):
+        program = f"G17 {units} G90\nG0 X20. Y0. Z50.\nF100.\n{arc}\nM30\n"
+        with pytest.raises(ErrorList) as exc:
+            translate(io.StringIO(program), io.StringIO(), file="t.nc", source="fanuc", target="linuxcnc",
+                      diagnostics=Diagnostics(warn_stream=io.StringIO()))
+        assert str(exc.value.errors[0]).startswith("t.nc:4:1: error: the linuxcnc dialect cannot express an arc of zero")
+    out = io.StringIO()  # twice the smallest radius runs (rs274 accepts I0.002: above its tolerance)
+    translate(io.StringIO("G17 G21 G90\nG0 X20. Y0. Z50.\nF100.\nG2 X20.002 Y0.002 I0.002 J0.\nM30\n"), out,
+              file="t.nc", source="fanuc", target="linuxcnc", diagnostics=Diagnostics(warn_stream=io.StringIO()))
+    assert "I0.002" in out.getvalue()

@@ -11,6 +11,7 @@ import pytest
 
 from postproc.api import translate
 from postproc.errors import Diagnostics, ErrorList, ErrorLevel
+from postproc.setup.machine import WorkOffsetData
 from postproc.setup.machine_setup import ControllerSettings, MachineSetup, load_setup
 from postproc.simulate.toolpath import toolpath_events
 from tests.support.tools import with_tools
@@ -119,9 +120,16 @@ def test_h0_beside_g53_under_g49_cancels_nothing_and_moves_in_machine_coordinate
 
 
 def test_h_alone_under_g43_selects_that_register() -> None:
-    out = translated("G43 H1 Z10.\nG53 G0 Z0 H0\nG00 X1. H2\nM30", "linuxcnc").splitlines()
-    # the X move applies H2 on Fanuc: LinuxCNC gets the Z it stands at (machine Z0, H0 in force: Z0)
-    assert out[1:3] == ["G53 G43 H00 G0 Z0.", "G43 H02 G0 X1. Z0."]
+    setup = MachineSetup()
+    setup.work_offsets = {"1": WorkOffsetData(number=1, x=0.0, y=0.0, z=-100.0)}
+    out = translated("G43 H1 Z10.\nG53 G0 Z0 H0\nG00 X1. H2\nM30", "linuxcnc", setup).splitlines()
+    # the X move applies H2 on Fanuc: LinuxCNC gets the Z it stands at: machine Z0, G54's Z offset -100, H0 (no
+    # length) in force: work Z = 0 - (-100) - 0 = 100 (by hand)
+    assert out[1:3] == ["G53 G43 H00 G0 Z0.", "G43 H02 G0 X1. Z100."]
+    # without G54 in the set-up the machine Z0 is no known work Z (issue 26: it was written as work Z0)
+    with pytest.raises(ErrorList) as info:
+        translated("G43 H1 Z10.\nG53 G0 Z0 H0\nG00 X1. H2\nM30", "linuxcnc")
+    assert str(info.value.errors[0]).startswith("t.nc:3:9: error: ")
 
 
 def test_h_alone_under_g49_is_refused_naming_g43() -> None:

@@ -18,6 +18,7 @@ from ..expr import Expr
 from ..ir import Block, Feed, Motion, Sequence
 from ..numbers import MAX_PLACES, SHORT_RANGE, as_written
 from ..output.writer_base import Lane
+from ..rs274.motion_words import tiny_arc
 from ..rs274.writer import WordWriter
 from ..state import PLANE_AXES
 
@@ -162,7 +163,8 @@ class StraightLane(Lane):
         radius = motion.radius
         arc = 0
         if center is not None or radius is not None:
-            if mode != "cw" and mode != "ccw" or not _plain_arc(axes, center, writer.modal.plane):
+            if mode != "cw" and mode != "ccw" or not _plain_arc(axes, center, writer.modal.plane) \
+                    or center is not None and tiny_arc(center, writer.MIN_ARC_RADIUS[writer.modal.units == "inch"]):
                 return None
             arc = len(center) if center is not None else 1
         elif mode != "rapid" and mode != "linear":

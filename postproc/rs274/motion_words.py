@@ -8,6 +8,8 @@ cycle's words are written by their role where the target's letters differ from t
 
 from __future__ import annotations
 
+import math
+
 from typing import Any, ClassVar, Final
 
 from mypy_extensions import mypyc_attr
@@ -44,6 +46,9 @@ class MotionWords(SectionWords):
 
     ZERO_RADIUS_ARC: ClassVar[str] = ""
     """How the controller refuses an arc whose centre is its start ('': it runs it, doing nothing)."""
+    MIN_ARC_RADIUS: ClassVar[tuple[float, float]] = (0.0, 0.0)
+    """The radius (mm, inch) at or below which the controller refuses a centre-form arc as of zero radius
+    (``ZERO_RADIUS_ARC``); (0, 0): only a centre at the start."""
     FULL_CIRCLE_HELIX: ClassVar[bool] = True
     """An arc whose end point names neither axis of its plane (a helical full circle, which the lowering
     could not close) runs; False: the controller refuses it (grbl)."""
@@ -80,8 +85,11 @@ class MotionWords(SectionWords):
             if not s.axes:
                 return []  # a return naming no axis moves none (Fanuc); a bare code would move every axis (LinuxCNC)
         elif self.ZERO_RADIUS_ARC and (s.mode == "cw" or s.mode == "ccw") and s.radius is None \
-                and s.center is not None and _at_start(s.center):
-            self.unsupported(f"an arc of zero radius (a controller that runs it does nothing; {self.ZERO_RADIUS_ARC})",
+                and s.center is not None and tiny_arc(s.center, self.MIN_ARC_RADIUS[self.modal.units == "inch"]):
+            self.unsupported(f"an arc of zero radius (a controller that runs it does nothing; {self.ZERO_RADIUS_ARC})"
+                             if tiny_arc(s.center, 0.0) else
+                             f"an arc of zero radius by the controller's measure (its radius is at most "
+                             f"{self.MIN_ARC_RADIUS[self.modal.units == 'inch']} {self.modal.units}; {self.ZERO_RADIUS_ARC})",
                              block)
         if s.mode is None:
             self.unsupported("a canned-cycle repetition without its cycle", block)
@@ -244,9 +252,14 @@ def _listed(axes: frozenset[str]) -> str:
     return letters[0] if len(letters) == 1 else ", ".join(letters[:-1]) + " and " + letters[-1]
 
 
-def _at_start(center: dict[str, float | Expr]) -> bool:
-    """An arc's centre offsets are all zero: its centre is its start."""
+def tiny_arc(center: dict[str, float | Expr], limit: float) -> bool:
+    """An arc whose centre offsets put its centre at its start, or within ``limit`` of it (a hair over, for the
+    controller's own sums of the offsets: rs274 found 20.001 - 20.0 below 0.001)."""
+    squares = 0.0
     for offset in center.values():
-        if type(offset) is not float or offset != 0.0:
+        if type(offset) is not float:
             return False
-    return True
+        squares += offset * offset
+    return squares == 0.0 or math.sqrt(squares) <= limit * (1.0 + 1e-6)
+
+

@@ -95,6 +95,9 @@ class LinuxcncWriter(WordWriter):
     PER_REV_NEEDS_SPEED: ClassVar[str] = ("a feed move in feed per revolution (G95) with no spindle speed (rs274: \"Cannot "
                                           "feed with zero spindle speed in feed per rev mode\"; program S first)")
     ZERO_RADIUS_ARC: ClassVar[str] = "rs274 refuses it: \"Zero-radius arc\""
+    MIN_ARC_RADIUS: ClassVar[tuple[float, float]] = (0.001, 0.00004)
+    """rs274 refuses a centre-form arc whose radius to its start or end is below MIN_CENTER_ARC_RADIUS_TOLERANCE
+    (0.001 mm, 0.00004 in) [V: interp_internal.hh, interp_arc.cc arc_data_ijk; a fuzz case: I0.001 refused]."""
 
     def __init__(self, ctx: Context, source_dialect: str, target: type[Dialect] | None = None) -> None:
         super().__init__(ctx, source_dialect, target)
