@@ -196,6 +196,11 @@ class Dialect:
     False: the new length applies with the next move of any axis (the simulation's Fanuc model); a
     translation across the two rules moves or completes the change (``postproc.lowering.length_timing``,
     ``postproc.isg_family.tool_data``)."""
+    LENGTH_AT_AXIS_MOVE: ClassVar[bool] = False
+    """With ``LENGTH_AT_PROGRAMMED_AXIS`` False: a change applies only when the length axis itself next moves,
+    absolutely or incrementally (Fagor), not with a move of another axis. From a source that applies it at the
+    next move of any axis, the change goes beside the next move, which gets the Z the program stands at, as
+    towards a target that applies it at the programmed axis (``postproc.lowering.length_timing``)."""
     POSITION_READS: ClassVar[Mapping[str, int]] = {}
     """Per axis, the numbered parameter a block reads the current position of that axis with (program units,
     every offset applied, read when the block is read: before the block's own tool offset change), which the

@@ -41,11 +41,24 @@ def test_a_length_cancelled_where_nothing_or_z_moves_next_translates_and_verifie
     assert report.ok and report.max_deviation == 0, report.summary() + "\n" + out
 
 
-def test_a_length_cancelled_before_a_move_without_z_is_still_refused_at_the_change() -> None:
-    """Fanuc applies the cancel at the X move (the simulation's model), Fagor only when Z moves."""
+def test_a_length_cancelled_before_a_move_without_z_gets_the_z_it_stands_at_towards_fagor() -> None:
+    """Fanuc applies the cancel at the X move (the simulation's model), Fagor only when Z moves [V: Fagor 8055
+    programming manual 8.2]: the X move gets the Z the program stands at (50, from ``G00 Z50.`` in HEAD), so the
+    Fagor's Z moves there and applies it (``Fagor.LENGTH_AT_AXIS_MOVE``). Until issue 26 (held26) this was refused."""
+    source = HEAD + "G49\nG00 X10.\nM30\n%\n"
+    out = _translate(source, "fagor")
+    assert "G44 G00 X10. Z50." in out.splitlines(), out
+    report = verify_lines(io.StringIO(source), io.StringIO(out), file_in="in.nc", file_out="out.nc",
+                          source="fanuc", target="fagor", setup=VMC)
+    assert report.ok and report.max_deviation == 0, report.summary() + "\n" + out
+
+
+def test_a_length_cancelled_before_a_move_without_z_is_refused_where_z_is_not_known() -> None:
+    """A length change before any Z was programmed: the programmed Z is not known, so no Z can be written beside
+    the X move that applies it on Fanuc: a located error at the change."""
     with pytest.raises(ErrorList) as caught:
-        _translate(HEAD + "G49\nG00 X10.\nM30\n%\n", "fagor")
+        _translate("%\nO1000\nG21 G90 G49\nG54\nT1 M06\nG43 H1\nG00 X0. Y0.\nM30\n%\n", "fagor")
     assert [str(e) for e in caught.value.errors] == [
-        "in.nc:10:1: error: the new tool length is applied only at a move of Z (ISG: programmed absolutely, "
-        "P-CHAN-00100 by default; Fagor: when the axis moves), the source's at its next move: program the length "
-        "offset beside a Z move"]
+        "in.nc:6:5: error: this tool length change applies at the next move on the source's controller and only "
+        "when Z next moves on the target's, and the programmed Z is not known where it applies: program Z beside "
+        "the length change"]

@@ -125,6 +125,13 @@ class Fagor(Dialect):
     TOOL_LENGTH_OFFSET = True
     """``G43 D<n>`` applies tool offset n's length, ``G44`` cancels it (``postproc.isg_family.tool_data``):
     a Fanuc ``G43 H``/``G41 D`` is written with the D it needs; Fanuc's G44 (a negative offset) is refused."""
+    LENGTH_AT_AXIS_MOVE = True
+    """"Function G43 only indicates that a longitudinal compensation is to be applied. The CNC starts applying it
+    when the longitudinal (perpendicular) axis starts moving" [V: Fagor CNC 8055/8055i programming manual (M & EN
+    models, soft V02.2x) 8.2 "Tool length compensation (G43, G44, G15)"; the 8070 taken to keep its family's
+    rule [K]: its manual's tool-length page was not at hand]. A Fanuc change without a Z move
+    (``G43 H07`` then ``G00 X.. Y..``, which Fanuc applies at that move) is written beside that move with the Z
+    the program stands at (``postproc.lowering.length_timing``): the Fagor applies it there too."""
     PROGRAMS = False
     """P parameters and expressions are read [K]; control flow and subroutines are kept verbatim [?], so a
     program that computes reaches Fagor flattened."""

@@ -39,6 +39,10 @@ program that changes the length there (typical posts: ``G43 H1 Z15.``). Otherwis
   to the machine position]. An incremental return that does not name Z stays a located error: naming Z would
   send Z to the reference point too.
 
+A target that applies a change only when the length axis moves (Fagor, ``Dialect.LENGTH_AT_AXIS_MOVE``) gets,
+from a source that applies it at the next move of any axis, the change beside the next move with the Z the program
+stands at, as a target of the first rule: a move of Z to where it is takes the new length on both.
+
 On a lathe the same holds for X and Z together: a Fanuc T/GSK offset (``T0102``, become LinuxCNC's lathe
 ``G43 H02`` in ``postproc.cycles.lathe_lowering``) applies at the next move of any axis, LinuxCNC's where
 each axis is programmed, so the move gets both. ISG and Fagor targets get their D words from
@@ -85,6 +89,8 @@ class TimeLengthChanges(LoweringStep):
     def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
         if ctx.dialect == target.NAME or not target.TOOL_LENGTH_OFFSET and not _writes_lengths(target):
             return None
+        if not ctx.length_at_axis and target.LENGTH_AT_AXIS_MOVE and not ctx.lathe:
+            return _Complete(ctx, target)  # (Fagor) the next move gets Z, which applies the change there as the source's move does
         if ctx.length_at_axis == target.LENGTH_AT_PROGRAMMED_AXIS:
             return None
         if ctx.lathe:  # Fanuc T/GSK T0102 -> LinuxCNC's lathe G43 H02 (``postproc.cycles.lathe_lowering``)
@@ -269,7 +275,7 @@ class _Complete(BlockStep):
                 return None
             held.append(block)
             if len(held) >= HELD:
-                _refuse(ctx, pending[1], f"no move follows it within {HELD} blocks")
+                _refuse(ctx, self.target, pending[1], f"no move follows it within {HELD} blocks")
                 self.pending = None
                 return _release(held, pending[0])
             return []
@@ -322,7 +328,7 @@ class _Complete(BlockStep):
         elif pending is not None and not moves:
             clash = _clash(sections)
             if clash is not None:
-                _refuse(ctx, pending[1], f"{clash} follows it")
+                _refuse(ctx, self.target, pending[1], f"{clash} follows it")
                 out.extend(_release(held, pending[0]))
                 self.pending = None
                 _follow(block, pos, absolute, in_force, None if lathe else table, inch, frame.beyond(inch))
@@ -331,7 +337,9 @@ class _Complete(BlockStep):
             held.append(block)
             return []
         restore = False  # a reference return was written absolutely: G91 again after it
-        if moves and (pending is not None or change):
+        if moves and (pending is not None or change and not self.target.LENGTH_AT_AXIS_MOVE):
+            # (towards Fagor a change beside a move is left where it is: it applies there if the move moves Z,
+            # which ``postproc.isg_family.tool_data`` checks; only a change written alone is carried)
             at = ctx.at(block, ctx.column_of(block, "H")) if pending is None else pending[1]
             motion = sections.get("Motion")
             moved = pending is not None
@@ -339,9 +347,11 @@ class _Complete(BlockStep):
             target = self.target
             compensating = self.compensating
             diverged = self.diverged
-            if _sets_z(block, absolute, axes) or _returns_through(block, absolute, axes):
+            returns = not target.LENGTH_AT_AXIS_MOVE  # (a Fagor return is written in machine coordinates)
+            if _sets_z(block, absolute, axes) or (_returns_through(block, absolute, axes) if returns
+                                                   else _moves_named(block, axes)):
                 pass
-            elif _incremental_return(block, absolute, axes, pos):
+            elif returns and _incremental_return(block, absolute, axes, pos):
                 assert isinstance(motion, Motion)
                 for a, value in motion.axes.items():
                     known = pos[a]
@@ -350,7 +360,7 @@ class _Complete(BlockStep):
                 sections["DistanceMode"] = DistanceMode("absolute")
                 block.changed()
                 restore = True
-            elif not lathe and _incremental_z_return(block, absolute) and _shifted_return(
+            elif returns and not lathe and _incremental_z_return(block, absolute) and _shifted_return(
                     block, _length(self.applied, table, inch), _length(in_force, table, inch)):
                 pass
             elif (isinstance(motion, Motion) and motion.mode in _PLAIN and absolute
@@ -361,8 +371,13 @@ class _Complete(BlockStep):
                     known = pos[a]
                     motion.axes[a] = _position_read(target, a, ctx.diameter) if known is None else known
                 block.changed()
+            elif not returns and isinstance(motion, Motion) and motion.mode in _RETURNS:
+                _refuse(ctx, target, at, "the next move is a reference return, which the target makes in machine "
+                        "coordinates")
+                moved = False
             else:
-                _refuse(ctx, at, f"the programmed {' and '.join(axes)} is not known where it applies{frame.why()}")
+                _refuse(ctx, target, at,
+                        f"the programmed {' and '.join(axes)} is not known where it applies{frame.why()}")
                 moved = False  # refused once: taken out, so no later step refuses it again
                 if pending is None:
                     del sections["ToolLengthOffset"]
@@ -492,10 +507,11 @@ def _release(held: list[Block], keep: ToolLengthOffset | None) -> list[Block]:
     return out
 
 
-def _refuse(ctx: Context, at: Location, why: str) -> None:
+def _refuse(ctx: Context, target: type[Dialect], at: Location, why: str) -> None:
+    where = "when Z next moves" if target.LENGTH_AT_AXIS_MOVE else "at the next absolute Z"
     ctx.diagnostics.error(UnsupportedError(
-        f"this tool length change applies at the next move on the source's controller and only at the next "
-        f"absolute Z on the target's, and {why}: program Z beside the length change", at))
+        f"this tool length change applies at the next move on the source's controller and only {where} on the "
+        f"target's, and {why}: program Z beside the length change", at))
 
 
 def _follow(block: Block, pos: dict[str, float | None], absolute: bool, in_force: tuple[str, object, object],
@@ -592,6 +608,13 @@ def _length(key: tuple[str, object, object], table: ToolTable, inch: bool) -> fl
     except PostprocError:
         return None
     return (value if mode == "positive" else -value) / scale
+
+
+def _moves_named(block: Block, axes: tuple[str, ...]) -> bool:
+    """The block's move names every one of ``axes``, absolutely or by an increment: a target that applies a
+    change when the axis moves (``Dialect.LENGTH_AT_AXIS_MOVE``) applies it in that move, as the source does."""
+    motion = block.sections.get("Motion")
+    return isinstance(motion, Motion) and motion.mode in _PLAIN and all(a in motion.axes for a in axes)
 
 
 def _sets_z(block: Block, absolute: bool, axes: tuple[str, ...]) -> bool:
