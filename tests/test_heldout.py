@@ -59,9 +59,6 @@ KNOWN_FAILURES: dict[tuple[str, str], str] = {
         "a hand-written Haas program (issue 26, audit26): refused at line 12, 'address S takes no decimal point "
         "(S5000.)': a Fanuc alarm [K: B-64114EN/01 8.3]; whether a Haas control takes S with a point is not "
         "confirmed here [?]"),
-    ("haas/cadekiely_text.ngc", ""): (
-        "a text generator's output in CadeKiely's Haas folder (issue 26, audit26): refused at line 3, 'unknown "
-        "G code G91.1' under the Haas reading (whether a Haas reads G91.1 is not confirmed here [?])"),
 }
 """(program, target or '' for the source check) -> the defect, as found by the held-out set."""
 _SOURCE_REFUSED = frozenset(program for program, target in KNOWN_FAILURES if target == "")
