@@ -50,15 +50,6 @@ KNOWN_FAILURES: dict[tuple[str, str], str] = {
         "(the loop's moves were taken once until issue 26's progs session; the position reads, #<_x> and #<_z>, "
         "now read the profile's own point as rs274 does). Unrolled, its G72 profile would still end at Z-1, short "
         "of the cycle's Z1, which LinuxCNC versions cut differently (as lathe_g7x_quadrants.ngc's G71)"),
-    ("haas/cadekiely_o78244_4x3_block.nc", ""): (
-        "a hand-written Haas program (issue 26, audit26): refused at line 113, 'G82 needs an R level R' (its "
-        "G82 Z-0.12 F10. gives none: what a Haas takes for the R level then is not confirmed here [?]), and its "
-        "'G91 X.480 L6' rows read L, Haas's loop count, as no word of the block (the set-up's "
-        "<Input repeatAddress='K+L'/> reads it; not given: the R level fails first)"),
-    ("haas/cadekiely_step_part.nc", ""): (
-        "a hand-written Haas program (issue 26, audit26): refused at line 12, 'address S takes no decimal point "
-        "(S5000.)': a Fanuc alarm [K: B-64114EN/01 8.3]; whether a Haas control takes S with a point is not "
-        "confirmed here [?]"),
 }
 """(program, target or '' for the source check) -> the defect, as found by the held-out set."""
 _SOURCE_REFUSED = frozenset(program for program, target in KNOWN_FAILURES if target == "")
