@@ -17,11 +17,13 @@ The facts:
   (T and D); here ``D<n>`` is the set-up's ``<Tool number="n">``, as on the 8055's offset table.
 
 When the new length applies: ISG takes it at the next absolute position of Z (P-CHAN-00100 = 0, its
-default; see ``Dialect.LENGTH_AT_PROGRAMMED_AXIS``), Fagor when the axis moves [V: 8055 manual 8.2, ``Fagor.LENGTH_AT_AXIS_MOVE``]. A source with the
-same rule (LinuxCNC: a change moves nothing, the next programmed Z applies it) may change the length in
-a block without Z: towards ISG as it is, towards Fagor while the next Z move is absolute (an incremental
-one, where the two may differ, is a located error). A source without that rule (Fanuc: by its parameters
-the axis may move at the change) must change the length beside an absolute Z move.
+default; see ``Dialect.LENGTH_AT_PROGRAMMED_AXIS``), Fagor when the axis moves [V: 8055 manual 8.2,
+``Fagor.LENGTH_AT_AXIS_MOVE``]. A source with the same rule (LinuxCNC: a change moves nothing, the next
+programmed Z applies it) may change the length in a block without Z: towards ISG as it is, towards Fagor
+while the next Z move is absolute (an incremental one, where the two may differ, is a located error). A
+source without that rule (Fanuc: by its parameters the axis may move at the change) must change the length
+beside an absolute Z move; towards Fagor one written alone is given that move first
+(``postproc.lowering.length_timing``).
 
 Writing from separate registers: one D carries both values, so the D written is the radius register
 while radius compensation is on, else the length register (ISG: D0 without a length). Where that D would

@@ -90,7 +90,7 @@ class TimeLengthChanges(LoweringStep):
         if ctx.dialect == target.NAME or not target.TOOL_LENGTH_OFFSET and not _writes_lengths(target):
             return None
         if not ctx.length_at_axis and target.LENGTH_AT_AXIS_MOVE and not ctx.lathe:
-            return _Complete(ctx, target)  # (Fagor) the next move gets Z, which applies the change there as the source's move does
+            return _Complete(ctx, target)  # (Fagor) the next move gets Z: that applies it there, as on the source
         if ctx.length_at_axis == target.LENGTH_AT_PROGRAMMED_AXIS:
             return None
         if ctx.lathe:  # Fanuc T/GSK T0102 -> LinuxCNC's lathe G43 H02 (``postproc.cycles.lathe_lowering``)
