@@ -155,6 +155,10 @@ class Dialect:
     DWELL_UNIT: ClassVar[str] = "seconds"
     """Unit of the dwell time the writer emits: "seconds" (a decimal number) or "milliseconds" (a whole
     number)."""
+    LENGTH_REGISTER_ADDRESS: ClassVar[str] = "H"
+    """The address a program names a tool length register by, for messages (``verify``'s account of lost tool
+    data, ``postproc.simulate.lost_tool_data``): H on Fanuc-style controllers; D where a D selects the tool's
+    length and radius together (ISG, Fagor 8070, SINUMERIK)."""
     CUTTER_COMPENSATION: ClassVar[bool] = True
     """Cutter radius compensation (left/right) exists (the writer refuses it otherwise)."""
     CUTTER_RULES: ClassVar[CutterRules | None] = None

@@ -128,7 +128,12 @@ def test_cli_allow_ignored(cli: Any, tmp_path: Path) -> None:
                        "</Tools></MachineSetup>")
     plain = cli("verify", a, b, "--from", "isg", "--to", "isg", "--machine", machine)
     assert plain.status == 1
+    # OUT lost ISG's D1 of line 3 with its G41: tool 1's length 50 and radius 2 (the set-up's) are not in force
+    # there (issue 26: verify says which tool data was lost)
     assert plain.out.decode().splitlines()[1:] == [
+        f"lost: tool length D1 (50 mm) in force in the source from {a}:3 is not in the translation",
+        f"lost: cutter radius compensation left D1 (radius 2 mm) in force in the source from {a}:3 is not in the "
+        "translation",
         "not compared:", "  cutter compensation differs: IN left D1 (line 3), off (line 5); OUT never set"]
     allowed = cli("verify", a, b, "--from", "isg", "--to", "isg", "--machine", machine, "--allow-ignored")
     assert allowed.status == 0 and allowed.out.decode().splitlines()[1:] == plain.out.decode().splitlines()[1:]

@@ -74,6 +74,7 @@ absolute_machine_moves = _AbsoluteMachineMoves()
 
 class Fagor(Dialect):
     NAME = "fagor"
+    LENGTH_REGISTER_ADDRESS = "D"  # D selects the tool data, length and radius together [K] (postproc.isg_family.tool_data)
     RIGID_TAP_LACK = ("the 8070's G84 R word selecting rigid tapping and its G63 rigid tap are [?]: their words and "
                       "how the feed follows the pitch are not confirmed from a Fagor manual, DIALECTS.md 2.3")
     """``codes.py``: a rigid tap is refused by name until the 8070 manual's G84/G63 pages are at hand."""

@@ -62,6 +62,7 @@ absolute_machine_moves = _AbsoluteMachineMoves()
 
 class Isg(Dialect):
     NAME = "isg"
+    LENGTH_REGISTER_ADDRESS = "D"  # D selects the tool data, length and radius together [K] (postproc.isg_family.tool_data)
     STORED_WORK_OFFSETS = True
     """Its zero offset variables write the table, taken at the work system's next selection (the reader's
     ``ZERO_OFFSETS``)."""
