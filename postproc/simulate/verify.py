@@ -133,6 +133,8 @@ def verify_lines(lines_in: Iterable[str], lines_out: Iterable[str], *, file_in: 
         settings_in = [(line, kind, _other_side(value) if kind == "cutter compensation" else value)
                        for line, kind, value in settings_in]
     compare_settings(report, settings_in, settings_out)
+    if any(kind == "cutter compensation" for _, kind, _ in settings_in + settings_out):
+        _why_a_setting(report, ((dialects.dialect(source), setup), (dialects.dialect(target), target_setup)))
     if setup.machine.tool_lengths == "touched_off":
         report.ignored.append("tool lengths: zero on both sides, the set-up's tools are touched off at their "
                               "change (<Machine toolLengths=\"touched_off\">)")
@@ -180,6 +182,19 @@ def _one_path_mode(target: str, fixed: str) -> str:
         return (f"path control: {target} always runs the exact path (every programmed point reached), which "
                 "the source's modes ask for or allow")
     return f"path control: {target} always runs in {fixed.replace('_', ' ')} mode, as the source asks"
+
+
+def _why_a_setting(report: Report, sides: tuple[tuple[type[Dialect], MachineSetup], ...]) -> None:
+    """Cutter compensation compared as a setting: say why for each dialect whose rules are not simulated and that
+    says why (``Dialect.CUTTER_RULES_LACK``: ISG's and the Fagor 8070's start-up and cancel moves are in their
+    manuals' figures only), so the note is no silent gap."""
+    named: set[str] = set()
+    for dialect, machine in sides:
+        if dialect.NAME in named or dialect.cutter_rules(machine) is not None or not dialect.CUTTER_RULES_LACK:
+            continue
+        named.add(dialect.NAME)
+        report.ignored.append(f"cutter compensation under {dialect.NAME}'s rules: compared as a setting, not as a "
+                              f"path: {dialect.CUTTER_RULES_LACK}")
 
 
 def _other_side(value: str) -> str:
