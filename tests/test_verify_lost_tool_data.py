@@ -122,7 +122,13 @@ def test_translations_that_keep_the_tool_data_verify() -> None:
     linuxcnc = SOURCE.replace("O1000\n", "").replace("M06", "M6")  # G43 H18 and G41 D18 are LinuxCNC's too
     grbl = SOURCE.replace("O1000\n", "").replace("T18 M06", "T18 M0").replace("G43 H18 Z10.", "G43.1 Z25.4\nZ10.")
     grbl = grbl.replace("G49 G80", "G49").replace("G49 Z100.", "G49\nZ100.")
-    for text, to in ((SOURCE, "fanuc"), (linuxcnc, "linuxcnc"), (grbl, "grbl")):
+    # ISG selects tool 18's data (its length) with D18, D0 deselects it; Fagor's G43 D18 applies its length, G44
+    # cancels it (postproc.isg_family.tool_data)
+    isg = ("%1000\nG17 G71 G90 G40 D0\nT18 M06\nG54 G00 X0 Y0\nD18 G00 Z10. M08\nG01 Z-1. F100.\nX20.\n"
+           "G00 Z10.\nD0 G00 Z100.\nM30\n")
+    fagor = ("%1000\nG17 G71 G90 G40 G44\nT18 M06\nG54 G00 X0 Y0\nG43 D18 G00 Z10. M08\nG01 Z-1. F100.\nX20.\n"
+             "G00 Z10.\nG44 G00 Z100.\nM30\n")
+    for text, to in ((SOURCE, "fanuc"), (linuxcnc, "linuxcnc"), (grbl, "grbl"), (isg, "isg"), (fagor, "fagor")):
         report = verify(SOURCE, text, to)
         assert report.ok, (to, report.summary())
         assert report.lost == []
