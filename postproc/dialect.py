@@ -155,8 +155,16 @@ class Dialect:
     DWELL_UNIT: ClassVar[str] = "seconds"
     """Unit of the dwell time the writer emits: "seconds" (a decimal number) or "milliseconds" (a whole
     number)."""
+    LENGTH_REGISTER_ADDRESS: ClassVar[str] = "H"
+    """The address a program names a tool length register by, for messages (``verify``'s account of lost tool
+    data, ``postproc.simulate.lost_tool_data``): H on Fanuc-style controllers; D where a D selects the tool's
+    length and radius together (ISG, Fagor 8070, SINUMERIK)."""
     CUTTER_COMPENSATION: ClassVar[bool] = True
     """Cutter radius compensation (left/right) exists (the writer refuses it otherwise)."""
+    CUTTER_RULES_LACK: ClassVar[str] = ""
+    """Why the controller's cutter compensation is not simulated where ``CUTTER_RULES`` is None (its rules not
+    confirmed, with the source), said in the verify report beside the compensation compared as a setting; '' for
+    none said."""
     CUTTER_RULES: ClassVar[CutterRules | None] = None
     """How the controller compensates the cutter radius (``postproc.compensation.rules``), for the
     simulation; None: compensation is not simulated for this dialect (``verify`` compares the setting)."""

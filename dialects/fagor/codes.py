@@ -131,6 +131,10 @@ CODES = CodeTable(
         "87": "rectangular pocket", "88": "circular pocket",
         "50": "controlled corner rounding",
         "61": "corner rounding for one block",
+        # radius compensation's modes (cutter_rules.py: their constructions are in figures only [?])
+        "136": "circular transitions between radius-compensated paths",
+        "137": "linear transitions between radius-compensated paths",
+        "138": "direct start and end of radius compensation", "139": "indirect start and end of radius compensation",
         **{f"159={n}": f"zero offset {n}" for n in range(7, MAX_OFFSET + 1)},
     },
     native_m={17: "end of a local subroutine [?]", 29: "end of a local subroutine [?]"},

@@ -23,6 +23,7 @@ from postproc.setup.machine_setup import MachineSetup
 from postproc.syntax import Pipeline
 from postproc.output.writer_base import Writer
 from postproc.xmlio import XFactory
+from .cutter_rules import LACK as CUTTER_LACK
 
 if TYPE_CHECKING:
     from postproc.context import Context
@@ -62,6 +63,11 @@ absolute_machine_moves = _AbsoluteMachineMoves()
 
 class Isg(Dialect):
     NAME = "isg"
+    LENGTH_REGISTER_ADDRESS = "D"
+    """D selects the tool data, length and radius together [K] (postproc.isg_family.tool_data)."""
+    CUTTER_RULES_LACK = CUTTER_LACK
+    """Why its compensation is a setting, not a path (``cutter_rules``: the start-up and cancel moves are in the
+    manual's figures only [?])."""
     STORED_WORK_OFFSETS = True
     """Its zero offset variables write the table, taken at the work system's next selection (the reader's
     ``ZERO_OFFSETS``)."""

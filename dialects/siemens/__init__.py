@@ -64,6 +64,8 @@ orient_before_taps = _OrientBeforeTaps()
 
 class Siemens(Dialect):
     NAME = "siemens"
+    LENGTH_REGISTER_ADDRESS = "D"
+    """D selects the cutting edge, its length and radius together [K: 840D sl Fundamentals, "Tool offset D"]."""
     STORED_WORK_OFFSETS = True
     """Its zero offset variables write the table, taken at the work system's next selection (the reader's
     ``ZERO_OFFSETS``)."""

@@ -49,6 +49,8 @@ class Own:
     foreign: set[tuple[str, str]] = field(default_factory=set)
     calls: set[str] = field(default_factory=set)
     entries: dict[str, dict[str, set[str]]] = field(default_factory=dict)
+    tool_table: bool = False
+    """The file names a LinuxCNC tool table (``<Tools table>``)."""
 
 
 def resolve_chain(path: str | Path) -> list[etree._Element]:
@@ -133,6 +135,10 @@ class Merger:
         """(family, code) -> ``<ForeignCodes>`` declaration (later files win)."""
         self.calls: dict[str, str] = {}
         self.entries: dict[str, dict[str, dict[str, Any]]] = {c: {} for c in CONTAINERS}
+        self.tool_table: str | None = None
+        """The LinuxCNC tool table ``<Tools table>`` names, relative to the last file's folder."""
+        self.table_tools: dict[str, Any] = {}
+        """Tool number -> the ``ToolData`` the table gives (``postproc.rs274.tool_table_file``)."""
         self.own = Own()
 
     def problem(self, message: str, el: etree._Element) -> None:
@@ -252,8 +258,12 @@ class Merger:
 
     def read_entries(self, el: etree._Element, last: bool) -> None:
         kind = CONTAINERS[el.tag]
-        if el.attrib:
+        if el.tag == "Tools" and set(el.attrib) - {"table"}:
+            self.problem("<Tools> takes only the attribute table (a LinuxCNC tool table file), and <Tool> elements", el)
+        elif el.tag != "Tools" and el.attrib:
             self.problem(f"<{el.tag}> takes no attributes, only <{kind.TAG}> elements", el)
+        if el.tag == "Tools" and el.get("table") is not None:
+            self.read_tool_table(el, last)
         entries = self.entries[el.tag]
         here: set[str] = set()
         for child in el:
@@ -280,6 +290,40 @@ class Merger:
                 self.origin[(el.tag, key, attr)] = child
             if last:
                 self.own.entries.setdefault(el.tag, {}).setdefault(key, set()).update(child.attrib)
+
+    def read_tool_table(self, el: etree._Element, last: bool) -> None:
+        """``<Tools table="tool.tbl">``: the tools of a LinuxCNC tool table file (relative to this file's folder,
+        in the machine's units, ``postproc.rs274.tool_table_file``), each a whole entry, under the ``<Tool>``
+        elements of the same ``<Tools>`` (they override it) and over the bases'."""
+        from ..rs274.tool_table_file import read_tool_table
+        from .machine import entry_values
+        name = el.get("table") or ""
+        root = el.getroottree().getroot()
+        problem = irregular(name, root) if name.strip() else "the file name is empty"
+        if problem is not None:
+            self.problem(f"<Tools table>: {problem}", el)
+            return
+        file = root.getroottree().docinfo.URL
+        path = Path(file).parent / name if file and not os.path.isabs(name) else Path(name)
+        try:
+            found = read_tool_table(path)
+        except ErrorList as errors:
+            self.problems.extend(e for e in errors.errors if isinstance(e, ConfigError))
+            return
+        except ConfigError as err:
+            self.problems.append(err if err.location is not None else ConfigError(f"<Tools table>: {err.message}",
+                                                                                   where(el)))
+            return
+        entries = self.entries["Tools"]
+        self.table_tools = {}
+        for _, tool in found:
+            key = tool.key()
+            entries[key] = dict(entry_values(tool))  # the table's line is the whole tool
+            self.origin[("Tools", key)] = el
+            self.table_tools[key] = tool
+        self.tool_table = self.rebase(name, root)
+        if last:
+            self.own.tool_table = True
 
     # -- validating the merged values -------------------------------------------------------------------
     def group(self, cls: type["SetupGroup"]) -> "SetupGroup | None":
@@ -317,6 +361,18 @@ class Merger:
             models[model.key()] = model
         return models
 
+    def check_pockets(self, tools: dict[str, Any]) -> None:
+        """A pocket holds one tool [V: LinuxCNC ``tool_parse.cc`` files a random tool changer's table by pocket, a
+        second tool in a pocket replacing the first]."""
+        holders: dict[int, str] = {}
+        for key, tool in tools.items():
+            if tool.pocket is None:
+                continue
+            first = holders.setdefault(tool.pocket, key)
+            if first != key:
+                self.problem(f"<Tool number=\"{key}\">: pocket {tool.pocket} holds tool {first} too (a pocket holds one "
+                             "tool)", self.origin[("Tools", key)])
+
     def library(self) -> list[str]:
         """The last file's folders first, then its base's, and so on (each once)."""
         out: list[str] = []
@@ -350,6 +406,9 @@ class Merger:
         setup.travel = self.entry_models("Axes", machine.axes)
         setup.work_offsets = self.entry_models("WorkOffsets", machine.axes)
         setup.tools = self.entry_models("Tools", machine.axes)
+        setup.tool_table = self.tool_table
+        setup.table_tools = dict(self.table_tools)
+        self.check_pockets(setup.tools)
         setup.template_lines = {name: line for name, (_, _, line) in self.templates.items()}
         setup.template_files = {name: file for name, (_, file, _) in self.templates.items()}
         setup.own = self.own

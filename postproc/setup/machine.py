@@ -117,6 +117,15 @@ class ToolData(Entry):
     name: str | None = setting(None, pattern=r'^[^"\x00-\x1f]{1,32}$')
     """The tool's name, which SINUMERIK selects it by (``T="DRILL_8"``) [K: 840D sl Fundamentals, "Tool change
     with T": tool management addresses a tool by its name; [?] the 32-character bound]. None: no name."""
+    pocket: int | None = setting(None, ge=0, le=1000)
+    """The tool changer's pocket holding the tool (a LinuxCNC tool table's ``P``) [K: LinuxCNC docs, "Tool
+    Compensation", 2.1 "Tool Table Format": "The maximum pocket number is 1000"; 0 is the spindle of a random
+    tool changer]. The program names a tool by its number (``T``), never by its pocket: the pocket is the
+    machine's, written into the tool table a LinuxCNC machine or rs274 reads (``postproc.rs274.tool_table_file``).
+    None: not given (a table written for LinuxCNC puts the tool in the pocket of its number)."""
+    comment: str | None = setting(None, pattern=r"^[^\x00-\x1f]{1,250}$")
+    """What the tool is, as a LinuxCNC tool table's remark after ``;`` says it (kept through an import, a
+    ``config dump`` and the table written back). None: no remark."""
     length: float | None = coordinate()
     """G43/G44 tool length: G43 adds it to Z, G44 subtracts it."""
     radius: float | None = coordinate()

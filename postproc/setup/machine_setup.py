@@ -40,7 +40,8 @@ class MachineSetup(XmlNode):
     __slots__ = ("name", "dialect", "pipeline", "input", "output", "cycles", "machine", "templates", "source",
                  "template_lines", "limits", "library", "controller", "machine_codes", "foreign_codes", "code_calls",
                  "lathe_cycles",
-                 "extends", "extra", "travel", "work_offsets", "tools", "template_files", "own")
+                 "extends", "extra", "travel", "work_offsets", "tools", "tool_table", "table_tools", "template_files",
+                 "own")
 
     def __init__(self, name: str = "default", dialect: str | None = None, pipeline: str | None = None,
                  input: InputSettings | None = None, output: OutputSettings | None = None,
@@ -88,6 +89,12 @@ class MachineSetup(XmlNode):
         """Work-system number ('0'-'6') -> its offset as the operator set it (``<WorkOffsets>``)."""
         self.tools: dict[str, ToolData] = {}
         """Tool offset number -> its length or lathe offsets (``<Tools>``)."""
+        self.tool_table: str | None = None
+        """The LinuxCNC tool table file ``<Tools table>`` names, relative to the set-up file's folder: its tools are
+        in ``tools`` (``postproc.rs274.tool_table_file``)."""
+        self.table_tools: dict[str, ToolData] = {}
+        """The tools as the table gives them, before the ``<Tool>`` elements override them (``config dump`` writes
+        the table's name and only what the elements change)."""
         self.own: Any = None
         """What the set-up's own file wrote (``setup_load.Own``), when it extends a base."""
 
@@ -96,7 +103,7 @@ class MachineSetup(XmlNode):
                 self.machine, self.templates, self.limits, tuple(self.library), self.controller,
                 tuple(self.machine_codes), tuple(self.foreign_codes), tuple(self.code_calls.items()), self.lathe_cycles,
                 tuple(self.extra.items()), tuple(self.travel.items()), tuple(self.work_offsets.items()),
-                tuple(self.tools.items()))
+                tuple(self.tools.items()), self.tool_table)
 
     def group(self, cls: type[SetupGroup]) -> SetupGroup:
         """A plugin's group (its defaults when the set-up does not write it)."""
@@ -164,13 +171,27 @@ class MachineSetup(XmlNode):
         for container, entries in (("Axes", self.travel), ("WorkOffsets", self.work_offsets),
                                    ("Tools", self.tools)):
             mine = None if own is None else own.entries.get(container)
-            if not entries or (own is not None and not mine):
+            table = container == "Tools" and not flatten and self.tool_table is not None and (
+                own is None or own.tool_table)
+            if not table and (not entries or (own is not None and not mine)):
                 continue
             parent = etree.SubElement(el, container)
+            if table:
+                parent.set("table", self.tool_table or "")
+                if own is not None:
+                    mine = mine or {}  # the file's own <Tool> elements only
             for key, entry in entries.items():
                 if mine is None or key in mine:
+                    written = entry_values(entry, None if mine is None else mine[key])
+                    if table and own is None:  # only what the <Tool> elements change in the table's entry
+                        given = self.table_tools.get(key)
+                        if given is not None:
+                            base = entry_values(given)
+                            written = {a: v for a, v in written.items() if a == entry.KEY or base.get(a) != v}
+                            if len(written) == 1:
+                                continue
                     child = etree.SubElement(parent, entry.TAG)
-                    for attr, value in entry_values(entry, None if mine is None else mine[key]).items():
+                    for attr, value in written.items():
                         child.set(attr, _attr_text(value))
         texts = [(tag, getattr(self.templates, f)) for tag, f in Templates.TAGS.items()
                  if getattr(self.templates, f) is not None and (own is None or f in own.templates)]

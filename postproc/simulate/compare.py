@@ -52,6 +52,9 @@ class Report:
     differs between the programs: the paths compared are not the paths cut."""
     allow_ignored: bool = False
     """``--allow-ignored``: such a difference does not fail the comparison."""
+    lost: list[str] = field(default_factory=list)
+    """Tool data in force in IN that OUT lacks, one line each (``postproc.simulate.lost_tool_data``): what
+    explains a comparison that fails."""
     chord_tolerance: float | None = None
     """``--arcs lines:TOL``: OUT may cut an arc of IN into chords within TOL mm of it (``postproc.simulate.chords``)."""
     chord_deviation: float = 0.0
@@ -86,6 +89,8 @@ class Report:
             a, b = self.mismatch_at
             text += (f"\nfirst difference at IN:{'-' if a is None else a} / OUT:{'-' if b is None else b}: "
                      f"{self.mismatch}")
+        for line in self.lost:
+            text += f"\nlost: {line}"
         if self.ignored:
             text += "\nnot compared:\n" + "\n".join(f"  {line}" for line in self.ignored)
         return text
@@ -116,7 +121,8 @@ def describe(item: Move | Event) -> str:
     if kind == "orient":
         return f"a spindle orientation to {item.get('angle')} deg"
     if kind == "tool":
-        return f"tool change to T{item.get('number')}"
+        number = item.get("number")
+        return "a tool change with no tool selected" if number is None else f"tool change to T{number}"
     if kind == "coolant":
         return f"coolant {'on' if item.get('on') else 'off'}"
     if kind == "stop":

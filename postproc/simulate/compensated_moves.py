@@ -18,7 +18,7 @@ from ..geometry import CENTRE_KEYS
 from ..ir import Block
 from ..lowering.inverse_time import move_length
 from ..state import PLANE_AXES
-from .events import LATHE_TOOL_OFFSET, Event, num
+from .events import CUTTER_RADIUS, LATHE_TOOL_OFFSET, TOOL_LENGTH, Event, num
 from .move_record import Emitted, MoveRecord
 from .position import LENGTH_AXIS, Position
 
@@ -41,16 +41,18 @@ class CompensatedMoves(Position):
             mode = cc.mode  # type: ignore[attr-defined]
             if mode == "off":
                 cutter.cancel()
+                self.note_tool_data(block.line, CUTTER_RADIUS, "off", 0.0)
             elif mode in ("left", "right") and self.native_stretch:
                 cutter.cancel()  # recorded as a setting (``record_settings``), as without rules
             elif mode in ("left", "right"):
                 reads = self._cutter_register(block, cc.register)  # type: ignore[attr-defined]
                 self.cutter_started = True
+                radius = self._cutter_radius(block, reads)
                 try:
-                    cutter.start(mode, self._cutter_radius(block, reads), self.modal.plane,
-                                 self._nose_tip(block, reads))
+                    cutter.start(mode, radius, self.modal.plane, self._nose_tip(block, reads))
                 except PostprocError as err:
                     raise err.located(self._at(block)) from None
+                self.note_tool_data(block.line, CUTTER_RADIUS, f"{mode} D{reads}", radius)
                 self._begin()
             else:
                 raise UnsupportedError(f"cutter compensation '{mode}' cannot be simulated", self._at(block))
@@ -67,6 +69,8 @@ class CompensatedMoves(Position):
                              (float(tip[0]), float(tip[1])))
             except PostprocError as err:
                 raise err.located(self._at(block)) from None
+            self.note_tool_data(block.line, CUTTER_RADIUS, f"{dynamic.mode} (its diameter in the block)",  # type: ignore[attr-defined]
+                                abs(dynamic.radius(self.scale)))  # type: ignore[attr-defined]
             self._begin()
         tl = get("ToolLengthOffset")
         if tl is not None and self.lathe and tl.mode in ("positive", "cancel"):  # type: ignore[attr-defined]
@@ -83,6 +87,8 @@ class CompensatedMoves(Position):
             elif self.length.offset:
                 self._begin()
             register = tl.register  # type: ignore[attr-defined]
+            self.note_tool_data(block.line, TOOL_LENGTH, _length_name(tl.mode, register),  # type: ignore[attr-defined]
+                                self.length.offset)
             across = self.tools.sideways(register) if tl.mode == "positive" and isinstance(register, int) else {}  # type: ignore[attr-defined]
             if across or self.lathe_shift:
                 self._tool_shift(across)  # the entry's X and Y offsets (LinuxCNC ``G10 L1 X.. Y..``)
@@ -426,3 +432,14 @@ class CompensatedMoves(Position):
         """The end of the input: a move still waiting in the cutter queue is written as it stands."""
         if self.cutter is not None:
             self.cutter.finish()
+
+
+def _length_name(mode: str, register: object) -> str:
+    """A tool length offset as ``Position.tool_data`` records it, in no dialect's spelling: ``positive 18``
+    (added), ``negative 18`` (subtracted), ``dynamic`` (its length given in the block), ``off``
+    (``postproc.simulate.lost_tool_data`` spells it for the report)."""
+    if mode == "cancel":
+        return "off"
+    if mode == "dynamic":
+        return "dynamic"
+    return f"{mode} {register}" if register is not None else mode

@@ -103,6 +103,10 @@ recorded although a G10's values are applied (the set-up's are not: the path sta
 coordinates)."""
 LATHE_TOOL_OFFSET: Final = "lathe tool offset"
 """The setting a lathe's tool offset selection is recorded as (``Moves.lathe_offset``)."""
+TOOL_LENGTH: Final = "tool length"
+CUTTER_RADIUS: Final = "cutter radius"
+TOOL_SELECTION: Final = "tool selection"
+"""The kinds of tool data a simulation records as they change (``Position.tool_data``)."""
 MOVES_THE_TOOL = frozenset(("cutter compensation", "work offset", "path control", "tool offset data",
                             LATHE_TOOL_OFFSET))
 

@@ -120,6 +120,11 @@ class Position:
         point carries ``"held"``, the axes it put at a machine position; a straight move that goes nowhere is
         kept, ``"still": True`` (moving the program may move it); ``simulator.simulate`` marks what a block
         programs absolutely (``"programmed"``)."""
+        self.tool_data: list[tuple[int, str, str, float]] = []
+        """(line, kind, what, mm) each time the tool data in force changes: ``TOOL_LENGTH`` (``positive 18``,
+        ``negative 18``, ``dynamic``, ``off``; the length), ``CUTTER_RADIUS`` (``left D18``, ``off``; the radius, nan where the set-up gives
+        none), ``TOOL_SELECTION`` (``T5``; the number): ``verify`` names what a translation lost from it
+        (``postproc.simulate.lost_tool_data``). A block that changes tool data is rare: nothing a move."""
         self.settings: dict[str, str] = dict(_INITIAL_SETTINGS)
         self.path_pending = True
         """No move yet: a controller that starts in exact stop records it at the first move where the program
@@ -227,6 +232,16 @@ class Position:
         diameter = self.diameter
         self.factors = {a: (scale if a in LINEAR_AXES else 1.0) * (0.5 if diameter and a == "X" else 1.0)
                         for a in self.axes}
+
+    def note_tool_data(self, line: int, kind: str, what: str, value: float) -> None:
+        """Record a change of the tool data in force (``tool_data``); the same value again is no change."""
+        data = self.tool_data
+        for k in range(len(data) - 1, -1, -1):
+            if data[k][1] == kind:
+                if data[k][2] == what and (data[k][3] == value or value != value and data[k][3] != data[k][3]):
+                    return
+                break
+        data.append((line, kind, what, value))
 
     def data_setting(self, block: Block, setting: DataSetting) -> None:
         """G10: a work offset is kept (mm, per axis) and shifts later absolute points in its system; a tool

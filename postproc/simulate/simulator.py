@@ -5,6 +5,7 @@ lowered block stream (``postproc.simulate.toolpath`` assembles the reading and l
 
 from __future__ import annotations
 
+import math
 from typing import Any, Callable, Final
 
 from mypy_extensions import mypyc_attr
@@ -20,7 +21,8 @@ from ..event_order import after_motion
 from ..expr import Expr
 from ..ir import Block, MachineFunction, Motion, Section
 from ..state import MM_PER_INCH, MODAL_KEYS as _MODAL
-from .events import LATHE_TOOL_OFFSET, UNEVALUATED, UNSIMULATED, Event, num, _setting_text
+from .events import (CUTTER_RADIUS, LATHE_TOOL_OFFSET, TOOL_SELECTION, UNEVALUATED, UNSIMULATED, Event, num,
+                     _setting_text)
 from .move_record import Emitted, MoveRecord
 from .moves import PATH_CONTROL, Moves
 from .work_offsets import offset_beyond_frame
@@ -115,6 +117,8 @@ class Simulator(Moves):
             machine = sections.get("MachineFunction")
             s = sections.get("ToolSelect")
             if s is not None:
+                if isinstance(s.number, int):
+                    self.note_tool_data(line, TOOL_SELECTION, f"T{s.number}", float(s.number))
                 if self.lathe and self.ctx.lathe_turret and "ToolChange" not in sections:  # (an M6 lathe: only prepared)
                     station = lathe_tool(s.number) if isinstance(s.number, int) else None
                     if station is None or station != self.station:  # T0200 after T0202: the offset alone
@@ -218,6 +222,21 @@ class Simulator(Moves):
             if value is not None and value != self.settings.get(kind):
                 self.settings[kind] = value
                 self.unsimulated.append((block.line, kind, value))
+                if key == "CutterCompensation":
+                    self._note_radius(block, value, section.register)  # type: ignore[attr-defined]
+
+    def _note_radius(self, block: Block, value: str, register: object) -> None:
+        """Cutter compensation kept as a setting (its rules not simulated): the radius it would put in force, for
+        ``verify``'s account of lost tool data (``tool_data``); nan where the set-up gives the register none."""
+        radius = 0.0
+        if value != "off":
+            radius = math.nan
+            if isinstance(register, int):
+                try:
+                    radius = self.tools.radius(register)
+                except PostprocError:
+                    pass
+        self.note_tool_data(block.line, CUTTER_RADIUS, value, radius)
 
     def path_at_first_move(self, line: int) -> None:
         """The first move (``line``): a program that has set no path control mode runs in its controller's

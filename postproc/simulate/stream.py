@@ -74,10 +74,10 @@ def simulate(blocks: Iterable[Block], ctx: Context, live_after_end: list[int] | 
              unsimulated: list[tuple[int, str, str]] | None = None, travel_warn: bool = False,
              cutter_rules: CutterRules | None = None,
              kept_native: Callable[[str], bool] | None = None, mark_held: bool = False,
-             records: bool = False) -> Iterator[Emitted]:
+             records: bool = False, tool_data: list[tuple[int, str, str, float]] | None = None) -> Iterator[Emitted]:
     """Blocks (already lowered for ``ToolpathTarget``) -> the header, then events in execution order.
     ``records``: a straight move comes as its ``MoveRecord`` (not with ``mark_held``, which marks dictionaries),
-    else as its dictionary.
+    else as its dictionary. ``tool_data``: receives the changes of the tool data in force (``Position.tool_data``).
 
     Errors are reported to ``ctx.diagnostics`` with the block's location and the block is skipped;
     the caller raises them at the end (``Diagnostics.check``). Events are held back only until the
@@ -89,6 +89,8 @@ def simulate(blocks: Iterable[Block], ctx: Context, live_after_end: list[int] | 
         sim.live_after_end = live_after_end  # the caller reads the lines recorded there
     if unsimulated is not None:
         sim.unsimulated = unsimulated  # so does verify the settings the path does not show
+    if tool_data is not None:
+        sim.tool_data = tool_data  # and the tool data in force, to name what a translation lost
     sim.mark_held = mark_held
     sim.records = records and not mark_held
     report = ctx.diagnostics.error

@@ -128,14 +128,16 @@ def toolpath_stream(lines: Iterable[str], *, file: str, dialect: str | type[Dial
                     on_unsupported: str = "error", compensate: bool = True,
                     arguments: Mapping[str, float] | None = None,
                     kept_native: Callable[[str], bool] | None = None, mark_held: bool = False,
-                    assumed_start: bool = False, records: bool = True) -> Iterator[Event | MoveRecord]:
+                    assumed_start: bool = False, records: bool = True,
+                    tool_data: list[tuple[int, str, str, float]] | None = None) -> Iterator[Event | MoveRecord]:
     """``toolpath_events`` without its checks: the simulator's own (compiled) event stream, read and lowered
     as it is pulled, with no Python generator around it (``verify`` pulls every event of two programs: a
     Python ``yield from`` cost about 1,500 instructions an event there). The caller checks ``diagnostics``
     at the end and pauses the cyclic collector for the run (``postproc.reading.gc_paused``). The reading
     starts here, not at the first event. ``records``: a straight move comes as a ``MoveRecord`` (read by the
     JSON lines writer and verify's normalising; ``as_events`` gives any other reader the dictionaries), else
-    every event as its dictionary."""
+    every event as its dictionary. ``tool_data`` receives the changes of the tool data in force
+    (``Position.tool_data``: ``verify`` names what a translation lost)."""
     setup = setup or MachineSetup()
     registry = registry or default_registry()
     if isinstance(dialect, str):
@@ -157,7 +159,7 @@ def toolpath_stream(lines: Iterable[str], *, file: str, dialect: str | type[Dial
     steps = [step for step in registry.lowerings if step not in TRANSLATE_ONLY]
     lowered = lower_for(blocks, ctx, ToolpathTarget, "error", steps)
     return simulate(lowered, ctx, live_after_end, unsimulated, on_unsupported == "warn",
-                    ctx.cutter_rules if compensate else None, kept_native, mark_held, records)
+                    ctx.cutter_rules if compensate else None, kept_native, mark_held, records, tool_data)
 
 
 def check_travel(lines: Iterable[str], *, file: str, dialect: type[Dialect], setup: MachineSetup,
