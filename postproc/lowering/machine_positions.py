@@ -30,6 +30,7 @@ from ..compensation.tool_table import ToolTable
 from ..context import Context
 from ..dialect import Dialect
 from ..errors import UnsupportedError
+from ..expr import Expr
 from ..ir import Block, DataSetting, DistanceMode, Motion, ToolSelect, Units, WorkOffset
 from ..setup.work_offsets import declared_offsets, offset_beyond_frame
 from ..state import MM_PER_INCH
@@ -117,24 +118,24 @@ class _Resolve(BlockStep):
             raise UnsupportedError(f"{lead} under incremental distance", where)
         if self.unknown:
             raise UnsupportedError(f"{lead} after {self.unknown} (its values are the run's)", where)
-        beyond: dict[str, float] = {}
+        beyond: dict[str, tuple[float, float]] = {}
         for axis, value in motion.axes.items():
             if not isinstance(value, (int, float)):
                 raise UnsupportedError(f"{lead}: its {axis} is computed", where)
             offset, why = offset_beyond_frame(axis, self.system, {}, self.declared)
             if offset is None:
                 raise UnsupportedError(f"{lead}: {why}", where)
-            beyond[axis] = offset
+            beyond[axis] = float(value), offset
         shift = self._tool_shift()
         if isinstance(shift, str):
             raise UnsupportedError(f"{lead}: {shift}", where)
         scale = MM_PER_INCH if self.inch else 1.0
-        axes = dict(motion.axes)
-        for axis, value in motion.axes.items():
-            mm = beyond[axis] + shift.get(axis, 0.0)  # radius on a diameter lathe's X
+        axes: dict[str, float | Expr] = {}
+        for axis, (value, offset) in beyond.items():
+            mm = offset + shift.get(axis, 0.0)  # radius on a diameter lathe's X
             if axis == "X" and self.ctx.diameter:
                 mm *= 2.0
-            axes[axis] = _tidy(float(value) - mm / scale)
+            axes[axis] = _tidy(value - mm / scale)
         block.sections["Motion"] = Motion(motion.mode, axes, motion.center, motion.radius)
         del block.sections["MachineCoordinates"]
         block.changed()
