@@ -59,6 +59,21 @@ def test_g50_coordinate_setting_is_written_as_g92(source: str) -> None:
 
 
 @pytest.mark.skipif(not available(), reason="the LinuxCNC interpreter rs274 is not installed")
+def test_grblhal_gets_the_same_g92() -> None:
+    """grblHAL halves every X axis word in diameter mode before it runs the block's command, G92 included, and
+    its G92 is grbl's (the offset that makes the current point read the words given) [V: grblHAL core
+    ``gcode.c``, ``if(gc_state.modal.diameter_mode && bit_istrue(axis_words.mask, bit(X_AXIS)))``]."""
+    out = io.StringIO()
+    machine = load_setup(SETUP)
+    translate(io.StringIO(PROGRAM), out, file="in.nc", source="fanuc", target="grblhal", setup=machine)
+    lines = [line.strip() for line in out.getvalue().splitlines()]
+    assert "G92 X100. Z50." in lines and "G92 X60." in lines, out.getvalue()
+    report = verify_lines(io.StringIO(PROGRAM), io.StringIO(out.getvalue()), file_in="in.nc", file_out="out.nc",
+                          source="fanuc", target="grblhal", setup=machine, tolerance=0.0)
+    assert report.ok and report.max_deviation == 0.0, report.summary()
+
+
+@pytest.mark.skipif(not available(), reason="the LinuxCNC interpreter rs274 is not installed")
 def test_rs274_moves_the_machine_where_g50_would() -> None:
     calls = run_rs274(linuxcnc(PROGRAM), tool_table="".join(f"T{t} P{t} X0 Z0 D0 ;\n" for t in range(1, 10)))
     offset = (0.0, 0.0)
