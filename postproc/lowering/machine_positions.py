@@ -31,7 +31,7 @@ from ..context import Context
 from ..dialect import Dialect
 from ..errors import UnsupportedError
 from ..expr import Expr
-from ..ir import Block, DataSetting, DistanceMode, Motion, ToolSelect, Units, WorkOffset
+from ..ir import Block, DataSetting, DistanceMode, Motion, ToolLengthOffset, ToolSelect, Units, WorkOffset
 from ..setup.work_offsets import declared_offsets, offset_beyond_frame
 from ..state import MM_PER_INCH
 from .lower import BlockStep, LoweringStep
@@ -40,6 +40,7 @@ FRAME_UNKNOWN: Final = frozenset(("CoordinateSet", "FrameChange"))
 """Sections after which the frame holds values only the run knows."""
 AXES: Final = ("X", "Y", "Z", "A", "B", "C")
 WATCHED: Final = frozenset(("MachineCoordinates", "Units", "WorkOffset", "DistanceMode", "ToolSelect", "ToolChange",
+                            "ToolLengthOffset",
                             "DataSetting", *FRAME_UNKNOWN))
 
 
@@ -47,7 +48,7 @@ class ResolveMachineMoves(LoweringStep):
     """Lowering step: see the module docstring."""
 
     def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
-        return _Resolve(ctx, target.NAME)
+        return _Resolve(ctx, target.NAME, not target.TOOL_CHANGER)
 
 
 resolve_machine_moves = ResolveMachineMoves()
@@ -58,8 +59,12 @@ class _Resolve(BlockStep):
     """One run: the units, distance mode, work system and lathe tool offset register in force, and whether the
     frame is still the set-up's. A block that is only a move changes none of them and is no machine move."""
 
-    def __init__(self, ctx: Context, target: str) -> None:
+    def __init__(self, ctx: Context, target: str, turret: bool) -> None:
         super().__init__()
+        self.turret = turret and ctx.lathe
+        """The target indexes a turret lathe's tool with its offset (GSK ``T0202``): the stream reaching this step is
+        written for it, so a T word there selects offset register ``T % 100`` whatever the source did (a LinuxCNC
+        ``T2 M6 G43 H2`` has become ``T0202`` before this step)."""
         self.moves = False
         self.ctx = ctx
         self.target = target
@@ -68,8 +73,12 @@ class _Resolve(BlockStep):
         self.inch = False
         self.absolute = True
         self.system = 1  # G54 (or the dialect's first system) at power-on [K: DIALECTS.md, modal defaults]
-        self.register: int | None = 0
-        """The lathe tool offset register in force (0: none; None: a computed one)."""
+        self.register: int | str = 0
+        """The lathe tool offset register in force (0: none), or why it is not known."""
+        self.selected: int | None = None
+        """The tool the last T word selected (an M6 lathe's next tool), None where computed or none."""
+        self.spindle_tool: int | None = None
+        """The tool an M6 put in the spindle (what ``G43`` without H offsets by)."""
         self.unknown = ""
         """Why the frame is no longer the set-up's ('' while it is)."""
 
@@ -87,8 +96,21 @@ class _Resolve(BlockStep):
         if isinstance(work, WorkOffset):
             self.system = work.index
         tool = s.get("ToolSelect")
-        if isinstance(tool, ToolSelect) and self.ctx.lathe and self.ctx.lathe_turret and "ToolChange" not in s:
-            self.register = tool.number % 100 if isinstance(tool.number, int) else None
+        if isinstance(tool, ToolSelect):
+            self.selected = tool.number if isinstance(tool.number, int) else None
+            if self.turret:  # T0101: the offset with it
+                self.register = tool.number % 100 if isinstance(tool.number, int) else "computed"
+        if "ToolChange" in s:
+            self.spindle_tool = self.selected
+        length = s.get("ToolLengthOffset")
+        if isinstance(length, ToolLengthOffset) and self.ctx.lathe:  # LinuxCNC's lathe G43 H2: X and Z (simulator)
+            if length.mode == "cancel":
+                self.register = 0
+            elif length.mode != "positive":
+                self.register = f"a tool offset set by {length.mode} length compensation"
+            else:
+                register = length.register if length.register is not None else self.spindle_tool
+                self.register = register if isinstance(register, int) else "computed"
         setting = s.get("DataSetting")
         if isinstance(setting, DataSetting):
             if setting.table.startswith("work_offset"):
@@ -145,8 +167,10 @@ class _Resolve(BlockStep):
         register = self.register
         if not self.ctx.lathe or register == 0:
             return {}
-        if register is None:
+        if register == "computed":
             return "the tool offset register in force is computed"
+        if isinstance(register, str):
+            return f"{register} is not followed here"
         values = self.table.lathe(register, self.ctx.diameter)
         if values is None:
             return (f"the set-up gives tool offset {register} no X and Z (<Tools><Tool number=\"{register}\" x=... "
