@@ -39,9 +39,10 @@ from .lower import BlockStep, LoweringStep
 FRAME_UNKNOWN: Final = frozenset(("CoordinateSet", "FrameChange"))
 """Sections after which the frame holds values only the run knows."""
 AXES: Final = ("X", "Y", "Z", "A", "B", "C")
+"""The axes whose declared offsets are read (a machine move names no other)."""
 WATCHED: Final = frozenset(("MachineCoordinates", "Units", "WorkOffset", "DistanceMode", "ToolSelect", "ToolChange",
-                            "ToolLengthOffset",
-                            "DataSetting", *FRAME_UNKNOWN))
+                            "ToolLengthOffset", "DataSetting", *FRAME_UNKNOWN))
+"""The sections this step reads; a block with none of them passes untouched."""
 
 
 class ResolveMachineMoves(LoweringStep):
