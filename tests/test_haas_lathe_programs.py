@@ -194,23 +194,74 @@ def test_the_linuxcnc_translation_verifies_and_rs274_moves_as_the_source(name: s
                           INCH_TOLERANCE) is None
 
 
+def placed(machine: Any) -> Any:
+    """The set-up with the Haas's work offset 1 and tool offsets 1 and 2 declared (mm, X a diameter): G54 X-254.
+    Z-508. (-10 and -20 inches), T0101 X-50.8 Z-127. (-2 and -5 inches), T0202 X-101.6 Z-76.2 (-4 and -3 inches)."""
+    from dataclasses import replace
+    from postproc.setup.machine import ToolData, WorkOffsetData
+    machine.work_offsets = {**machine.work_offsets, "1": WorkOffsetData(number=1, x=-254.0, z=-508.0)}
+    tools = dict(machine.tools)
+    for number, x, z in ((1, -50.8, -127.0), (2, -101.6, -76.2)):
+        tool = tools.get(str(number))
+        tools[str(number)] = ToolData(number=number, x=x, z=z) if tool is None else replace(tool, x=x, z=z)
+    machine.tools = tools
+    return machine
+
+
+def write_placed(text: str, name: str, target: str) -> str:
+    out = io.StringIO(newline="")
+    translate(io.StringIO(text, newline=""), out, file="in.nc", source="fanuc", target=target,
+              setup=placed(setup(name, target)))
+    return out.getvalue()
+
+
+WORK_HOME = {"cadekiely_l8_ex1_lathe.nc": (14.0, 23.0), "cadekiely_l5_lathe.nc": (12.0, 25.0),
+             "cadekiely_o58214_bored_lathe.nc": (14.0, 21.0)}
+"""Each program's ``G00 G53 X0 Z..`` return in work coordinates, by hand (``placed``): machine minus work offset
+minus the tool offset in force. L5 (T0101, G53 X0 Z0): X 0 + 10 + 2 = 12, Z 0 + 20 + 5 = 25; L8 (T0202 last, G53
+X0 Z0): X 0 + 10 + 4 = 14, Z 0 + 20 + 3 = 23; O58214 (T0202 last, G53 X0 Z-2.): X 14, Z -2 + 23 = 21."""
+
+
 @pytest.mark.parametrize("name, edits", RUNNABLE, ids=[n for n, _ in RUNNABLE])
-def test_gsk_refuses_the_machine_coordinate_return_and_verifies_without_it(name: str, edits: tuple[Any, ...]) -> None:
-    """The GSK dialect has no G53 (the 980TDc G-code list was not reached [?]): refused at the program's
-    ``G00 G53 X0 Z..`` line; the rest translates (G71 one block -> two, G75 native, the tailstock M21/M22) and
-    verifies, shown by taking that line's G53 out."""
+def test_gsk_writes_the_machine_coordinate_return_in_work_coordinates(name: str, edits: tuple[Any, ...]) -> None:
+    """The GSK dialect has no G53 (the 980TDc G-code list was not reached [?]): the program's ``G00 G53 X0 Z..``
+    return is written as the same move in work coordinates, machine minus work offset minus the tool offset in
+    force (``WORK_HOME``, by hand). Where the set-up does not say where G54 is (the shipped Haas set-up), the line is a located error naming
+    the ``<Offset>`` to declare, never the machine's zero taken as the part's. The rest translates (G71 one block
+    -> two, G75 native, the tailstock M21/M22) and verifies against the source with its G53."""
     text = source(name, *edits)
     line = next(i for i, t in enumerate(text.splitlines(), 1) if "G53" in t)
     with pytest.raises(ErrorList) as caught:
         write(text, name, "gsk")
     assert [str(e) for e in caught.value.errors] == [
-        f"in.nc:{line}:1: error: the gsk dialect cannot express motion in machine coordinates"]
-    text = text.replace(" G53 X0", " X0")
-    gsk = write(text, name, "gsk")
+        f"in.nc:{line}:1: error: the gsk dialect has no motion in machine coordinates, and this move cannot be put "
+        "in work coordinates: the set-up gives work system 1 no offset for X (<WorkOffsets><Offset number=\"1\" "
+        "x=...>) and the program sets none"]
+    gsk = write_placed(text, name, "gsk")
+    number = text.splitlines()[line - 1].split()[0]
+    written = next(t for t in gsk.splitlines() if t.startswith(number + " ")).split("(")[0].split()
+    assert "G53" not in written and written[-3] == "G00", written
+    x, z = WORK_HOME[name]
+    assert written[-2][0] == "X" and float(written[-2][1:]) == pytest.approx(x, abs=1e-12)
+    assert written[-1][0] == "Z" and float(written[-1][1:]) == pytest.approx(z, abs=1e-12)
     assert any("G71 P" in t for t in gsk.splitlines()) and "G20" in gsk
     report = verify_lines(io.StringIO(text), io.StringIO(gsk), file_in="in.nc", file_out="out.nc", source="fanuc",
-                          target="gsk", setup=setup(name, "gsk"), tolerance=1e-5)
+                          target="gsk", setup=placed(setup(name, "gsk")), tolerance=1e-5)
     assert report.ok, report.summary()
+
+
+def test_gsk_refuses_the_machine_coordinate_return_without_the_tool_offset() -> None:
+    """G54 declared but not tool offset 2, which T202 put in force: the offset the machine's point carries is not
+    known, so neither is the work position of G53 X0 Z0."""
+    name = "cadekiely_l8_ex1_lathe.nc"
+    text = source(name)
+    machine = placed(setup(name, "gsk"))
+    machine.tools = {k: v for k, v in machine.tools.items() if k != "2"}
+    with pytest.raises(ErrorList) as caught:
+        translate(io.StringIO(text), io.StringIO(), file="in.nc", source="fanuc", target="gsk", setup=machine)
+    assert [str(e) for e in caught.value.errors] == [
+        "in.nc:49:1: error: the gsk dialect has no motion in machine coordinates, and this move cannot be put in work "
+        "coordinates: the set-up gives tool offset 2 no X and Z (<Tools><Tool number=\"2\" x=... z=...>)"]
 
 
 def test_o58214_type_2_roughing_by_hand() -> None:

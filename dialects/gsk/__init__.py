@@ -10,9 +10,10 @@ GSK's macro language (``G65 H``) is kept verbatim, not executed.
 
 from __future__ import annotations
 
-from typing import Callable
+from typing import TYPE_CHECKING, Callable
 
 from postproc.comments import CommentSyntax
+from postproc.lowering.lower import BlockStep, LoweringStep
 from postproc.rs274.cutter_rules import GSK_T
 from postproc.dialect import Dialect, Lazy, Reader
 from postproc.hookspecs import hookimpl
@@ -22,6 +23,20 @@ from postproc.setup.machine_setup import MachineSetup
 from postproc.syntax import Pipeline
 from postproc.output.writer_base import Writer
 from postproc.xmlio import XFactory
+
+if TYPE_CHECKING:
+    from postproc.context import Context
+
+
+class _ResolveMachineMoves(LoweringStep):
+    """``postproc.lowering.machine_positions.resolve_machine_moves``, imported when first used."""
+
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        from postproc.lowering.machine_positions import resolve_machine_moves as step
+        return step.start(ctx, target)
+
+
+resolve_machine_moves = _ResolveMachineMoves()
 
 
 class Gsk(Dialect):
@@ -61,6 +76,11 @@ class Gsk(Dialect):
     nose direction from the offset the T code selected (``postproc.compensation.rules``, tagged there)."""
     ARC_END = FANUC_ARC_END
     """As Fanuc's parameter 3410 [?] (``postproc.rs274.arc_ends``)."""
+    LOWERING = (resolve_machine_moves,)
+    """The code table has no machine-coordinate move (G53) [?: the 980TDc G-code list was not reached; the
+    980TDi pages read (DIALECTS.md 1.2) show none]: a source's ``G53`` move is written in work coordinates from
+    the set-up's work and tool offsets, or refused naming the one to declare
+    (``postproc.lowering.machine_positions``)."""
 
     @classmethod
     def python_pipeline(cls, setup: MachineSetup) -> Pipeline:

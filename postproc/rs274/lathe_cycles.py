@@ -300,7 +300,9 @@ def _haas_finishing_extras(block: Block, ctx: Context, kind: str) -> bool:
     effect and a rapid back to the start point after the Q block [K: Haas lathe operator's manual, "G70 Finishing
     Cycle", as known, not re-read here]; U, W and D are G71's finishing allowances and depth of cut [V: Haas G71
     page, staging-diy.haascnc.com, "G71 Address Relationships"]. What the control does with them on a G70 (ignore
-    them, leave the allowances, alarm) is not in our sources [?], so no toolpath is guessed for the block. Fanuc
+    them, leave the allowances, alarm) is not in our sources [?], so no toolpath is guessed for the block (issue 29,
+    searched again: the docs, pages and code corpora hold Haas's G71 and TNC pages and the Productivity/Haas lathe
+    workbooks' covers, not the G70 page's text; the third-party G70 summaries reached give P Q F S only). Fanuc
     T reads no such words in G70 (an address error, ``lathe_words.SECOND_WORDS``)."""
     if kind != "turn_finish" or ctx.setup.controller.variant != "haas":
         return False

@@ -247,6 +247,22 @@ class NgcLatheWriting(_OnWordWriter):
         finally:
             block.values = values
 
+    def coordinate_set_words(self, s: Any, block: Block) -> list[str]:
+        """A Fanuc T or GSK coordinate setting (``G50 X.. Z..``, the ``CoordinateSet`` section): the tool's present
+        point gets these coordinates, the tool does not move. RS274/NGC's ``G92`` does the same: the offset it sets
+        makes the current point read the words given, an axis it does not name keeps its offset, a second one sets
+        the offset again from the current point rather than adding to it, and X is a diameter in G7 [V: rs274
+        2.9.0~pre1 run here, lathe G7 at X40 Z2: ``G92 X100 Z50`` prints ``SET_G92_OFFSET(-30, 0, -48)``, then at
+        X90 Z40 ``G92 X60`` prints ``SET_G92_OFFSET(-15, 0, -48)``; tests/test_lathe_coordinate_set.py]; grblHAL
+        halves every X word in diameter mode before the block's command, G92's included, and its G92 is grbl's
+        [V: grblHAL core ``gcode.c``]. Its one
+        offset applies in every work system, as a Fanuc coordinate setting shifts every workpiece coordinate system
+        [K: Fanuc 0i-TF operator's manual, "Setting a workpiece coordinate system" by G50]. A source's own frame
+        command (``FrameChange``) never reaches a lathe target of another family (``frame_change_words`` refuses
+        it), so the G92 offset is not shared with a G52 the source meant apart."""
+        code = self.code("frame", "origin", "a coordinate setting", block)
+        return [code, *(axis + self.length(value, block, axis) for axis, value in s.axes.items())]
+
     def x_programming_words(self, s: Any, block: Block) -> list[str]:
         """How X reads from here (``X_MODE_CODES``; followed in ``write_block``), where the written program has not
         said it already."""

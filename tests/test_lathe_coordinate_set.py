@@ -1,0 +1,109 @@
+"""Issue 29: a Fanuc T or GSK coordinate setting (``G50 X.. Z..``) translated to LinuxCNC as ``G92 X.. Z..``
+(``postproc.rs274.ngc_lathe_writer.NgcLatheWriting.coordinate_set_words``).
+
+Independent of the tool: the machine positions are derived here by hand from the rule "the tool's present point
+gets the given coordinates, the tool does not move" (DIALECTS.md 1.1/1.2, G50 coordinate setting), and rs274 runs
+the translation: its program coordinates plus the ``SET_G92_OFFSET`` in force must be those machine positions
+(X as a radius, as rs274 prints it in G7).
+"""
+
+from __future__ import annotations
+
+import io
+import re
+from pathlib import Path
+
+import pytest
+
+from postproc.api import translate
+from postproc.setup.machine_setup import load_setup
+from postproc.simulate.verify import verify_lines
+from tests.support.rs274 import available, run_rs274
+
+ROOT = Path(__file__).resolve().parents[1]
+SETUP = ROOT / "examples" / "setups" / "fanuc_0i_tf.xml"
+
+PROGRAM = """O1000
+G21 G98
+M03 S500
+G00 X40. Z2.
+G50 X100. Z50.
+G01 X90. Z40. F100.
+G50 X60.
+G01 X50. Z30.
+G00 X100. Z50.
+M30
+"""
+MACHINE = [(20.0, 2.0), (15.0, -8.0), (10.0, -18.0), (35.0, 2.0)]
+"""By hand, radii (mm), the work offset zero: the rapid to X40 Z2 stands at (20, 2); G50 X100 Z50 names that point
+(50, 50), so the frame is the machine less (-30, -48); X90 Z40 is (45 - 30, 40 - 48) = (15, -8); G50 X60 names
+X 30 there, the X shift becoming 15 - 30 = -15 (Z's stays); X50 Z30 is (25 - 15, 30 - 48) = (10, -18); X100 Z50 is
+(50 - 15, 50 - 48) = (35, 2)."""
+
+
+def linuxcnc(text: str, source: str = "fanuc") -> str:
+    out = io.StringIO()
+    translate(io.StringIO(text), out, file="in.nc", source=source, target="linuxcnc", setup=load_setup(SETUP))
+    return out.getvalue()
+
+
+@pytest.mark.parametrize("source", ["fanuc", "gsk"])
+def test_g50_coordinate_setting_is_written_as_g92(source: str) -> None:
+    ngc = linuxcnc(PROGRAM, source)
+    lines = [line.strip() for line in ngc.splitlines()]
+    assert "G92 X100. Z50." in lines and "G92 X60." in lines, ngc
+    assert any(line.startswith("G18 G7") for line in lines)  # X is a diameter there, as in the source
+    report = verify_lines(io.StringIO(PROGRAM), io.StringIO(ngc), file_in="in.nc", file_out="out.ngc", source=source,
+                          target="linuxcnc", setup=load_setup(SETUP), tolerance=0.0)
+    assert report.ok and report.max_deviation == 0.0, report.summary()
+
+
+@pytest.mark.skipif(not available(), reason="the LinuxCNC interpreter rs274 is not installed")
+def test_grblhal_gets_the_same_g92() -> None:
+    """grblHAL halves every X axis word in diameter mode before it runs the block's command, G92 included, and
+    its G92 is grbl's (the offset that makes the current point read the words given) [V: grblHAL core
+    ``gcode.c``, ``if(gc_state.modal.diameter_mode && bit_istrue(axis_words.mask, bit(X_AXIS)))``]."""
+    out = io.StringIO()
+    machine = load_setup(SETUP)
+    translate(io.StringIO(PROGRAM), out, file="in.nc", source="fanuc", target="grblhal", setup=machine)
+    lines = [line.strip() for line in out.getvalue().splitlines()]
+    assert "G92 X100. Z50." in lines and "G92 X60." in lines, out.getvalue()
+    report = verify_lines(io.StringIO(PROGRAM), io.StringIO(out.getvalue()), file_in="in.nc", file_out="out.nc",
+                          source="fanuc", target="grblhal", setup=machine, tolerance=0.0)
+    assert report.ok and report.max_deviation == 0.0, report.summary()
+
+
+@pytest.mark.skipif(not available(), reason="the LinuxCNC interpreter rs274 is not installed")
+def test_rs274_moves_the_machine_where_g50_would() -> None:
+    calls = run_rs274(linuxcnc(PROGRAM), tool_table="".join(f"T{t} P{t} X0 Z0 D0 ;\n" for t in range(1, 10)))
+    offset = (0.0, 0.0)
+    machine: list[tuple[float, float]] = []
+    for call in calls:
+        name, _, args = call.partition("(")
+        numbers = [float(v) for v in re.findall(r"-?\d+\.\d+", args)]
+        if name.endswith("SET_G92_OFFSET"):
+            offset = (numbers[0], numbers[2])
+        elif name.endswith("STRAIGHT_TRAVERSE") or name.endswith("STRAIGHT_FEED"):
+            machine.append((numbers[0] + offset[0], numbers[2] + offset[1]))
+    assert len(machine) == len(MACHINE), machine
+    for got, expected in zip(machine, MACHINE):
+        assert got == pytest.approx(expected, abs=1e-4), machine
+
+
+def test_a_coordinate_setting_before_a_machine_move_leaves_the_gsk_resolution_refused() -> None:
+    """After a G50 the frame holds a shift only the run knows (where the tool stood): a G53 move cannot be put
+    in work coordinates from the set-up's offsets (``postproc.lowering.machine_positions``)."""
+    text = "O1000\nG21 G98\nG00 X40. Z2.\nG50 X100. Z50.\nG00 G53 X0 Z0\nM30\n"
+    machine = load_setup(SETUP)
+    from postproc.setup.machine import WorkOffsetData
+    machine.work_offsets = {"1": WorkOffsetData(number=1, x=-200.0, z=-300.0)}
+    from postproc.errors import ErrorList
+    with pytest.raises(ErrorList) as caught:
+        translate(io.StringIO(text), io.StringIO(), file="in.nc", source="fanuc", target="gsk", setup=machine)
+    assert [str(e) for e in caught.value.errors] == [
+        "in.nc:5:1: error: the gsk dialect has no motion in machine coordinates, and this move cannot be put in work "
+        "coordinates after a coordinate setting or a frame change in the program (its values are the run's)"]
+    out = io.StringIO()
+    translate(io.StringIO(text.replace("G50 X100. Z50.\n", "")), out, file="in.nc", source="fanuc", target="gsk",
+              setup=machine)
+    assert "G00 X200. Z300." in out.getvalue()  # 0 - (-200) (X a diameter), 0 - (-300): by hand
