@@ -29,7 +29,6 @@ if TYPE_CHECKING:
     from postproc.ir import Block
 
 from .cycle_words import SECONDS, cycle_words
-from .cutter_rules import LACK as CUTTER_LACK
 
 
 class _SelectToolData(LoweringStep):
@@ -77,9 +76,10 @@ class Fagor(Dialect):
     NAME = "fagor"
     LENGTH_REGISTER_ADDRESS = "D"
     """D selects the tool data, length and radius together [K] (postproc.isg_family.tool_data)."""
-    CUTTER_RULES_LACK = CUTTER_LACK
-    """Why its compensation is a setting, not a path (``cutter_rules``: the start, corner and cancel constructions are
-    in the manual's figures only [?])."""
+    CUTTER_RULES_LACK = ("its start, corner and cancel constructions (G136/G137, G138/G139) are given by figures "
+                         "only in the 8070 programming manual [?]: dialects/fagor/cutter_rules.py")
+    """Why its compensation is a setting, not a path: the research, tagged, is ``dialects/fagor/cutter_rules.py``'s
+    docstring (a module no run imports)."""
     RIGID_TAP_LACK = ("the 8070's G84 R word selecting rigid tapping and its G63 rigid tap are [?]: their words and "
                       "how the feed follows the pitch are not confirmed from a Fagor manual, DIALECTS.md 2.3")
     """``codes.py``: a rigid tap is refused by name until the 8070 manual's G84/G63 pages are at hand."""

@@ -1,5 +1,5 @@
 """The Fagor 8070's cutter radius compensation, as far as its manual's text says it: why it is not simulated
-(``Fagor.CUTTER_RULES`` stays None; ``CUTTER_RULES_LACK`` says why in the verify report), so that a ``G41``/``G42``
+(``Fagor.CUTTER_RULES`` stays None; ``Fagor.CUTTER_RULES_LACK`` says why in the verify report), so that a ``G41``/``G42``
 towards or from the 8070 is compared as a setting, not as a path (docs/verify.md). Researched for issue 26
 (tool26); tags as in DIALECTS.md. ISG's, researched alike: ``dialects/isg/cutter_rules.py``.
 
@@ -14,11 +14,3 @@ the stored text):
 * [?] every construction (start, corner, cancel) is a figure without text in the stored pages, and which of
   G136/G137 and G138/G139 the machine starts in is an OEM parameter not read here.
 """
-
-from __future__ import annotations
-
-from typing import Final
-
-LACK: Final = ("its start, corner and cancel constructions (G136/G137, G138/G139) are given by figures only in the "
-               "8070 programming manual [?]: dialects/fagor/cutter_rules.py")
-"""Why the Fagor 8070's compensation is compared as a setting (``Dialect.CUTTER_RULES_LACK``)."""

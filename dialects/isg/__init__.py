@@ -23,7 +23,6 @@ from postproc.setup.machine_setup import MachineSetup
 from postproc.syntax import Pipeline
 from postproc.output.writer_base import Writer
 from postproc.xmlio import XFactory
-from .cutter_rules import LACK as CUTTER_LACK
 
 if TYPE_CHECKING:
     from postproc.context import Context
@@ -65,9 +64,10 @@ class Isg(Dialect):
     NAME = "isg"
     LENGTH_REGISTER_ADDRESS = "D"
     """D selects the tool data, length and radius together [K] (postproc.isg_family.tool_data)."""
-    CUTTER_RULES_LACK = CUTTER_LACK
-    """Why its compensation is a setting, not a path (``cutter_rules``: the start-up and cancel moves are in the
-    manual's figures only [?])."""
+    CUTTER_RULES_LACK = ("its start-up and cancel moves (the selection methods G139, its initial state, and G138) "
+                         "are given by figures only in the TF5200 programming manual [?]: dialects/isg/cutter_rules.py")
+    """Why its compensation is a setting, not a path: the research, tagged, is ``dialects/isg/cutter_rules.py``'s
+    docstring (a module no run imports)."""
     STORED_WORK_OFFSETS = True
     """Its zero offset variables write the table, taken at the work system's next selection (the reader's
     ``ZERO_OFFSETS``)."""

@@ -1,5 +1,5 @@
 """ISG's (Beckhoff TwinCAT CNC) cutter radius compensation, as far as its manual's text says it: why it is not
-simulated (``Isg.CUTTER_RULES`` stays None; ``CUTTER_RULES_LACK`` says why in the verify report), so that a
+simulated (``Isg.CUTTER_RULES`` stays None; ``Isg.CUTTER_RULES_LACK`` says why in the verify report), so that a
 ``G41``/``G42`` towards or from ISG is compared as a setting, not as a path (docs/verify.md). Researched for
 issue 26 (tool26); tags as in DIALECTS.md.
 
@@ -31,11 +31,3 @@ families (``G41`` ``D``), resolved into the path only from a source whose rules 
 towards a target without compensation, and ISG's ``G25``/``G26``/``G138``/``G139``/``G236``-``G239``/``G05`` and
 Fagor's ``G136``-``G139`` are kept verbatim (round-trip, refused elsewhere by name, not simulated).
 """
-
-from __future__ import annotations
-
-from typing import Final
-
-LACK: Final = ("its start-up and cancel moves (the selection methods G139, its initial state, and G138) are given by "
-               "figures only in the TF5200 programming manual [?]: dialects/isg/cutter_rules.py")
-"""Why ISG's compensation is compared as a setting (``Dialect.CUTTER_RULES_LACK``)."""
