@@ -67,10 +67,10 @@ ACOS and ATAN agree bit for bit with the packaged rs274 and glibc; TAN is the co
 ``tanl``, which glibc's misses by one unit in the last place in about 1 case in 20,000 (TAN[271] among
 them: ``tests/test_long_double.py``).
 
-Vacancy (``Vacancy.FANUC``): a ``Var`` evaluates to None when vacant (so ``#2=#1`` copies vacancy, and
+Vacancy (``Vacancy.NULL``): a ``Var`` evaluates to None when vacant (so ``#2=#1`` copies vacancy, and
 a word whose value is None is omitted); every operator and function reads None as 0 (``#1*5``,
 ``#1+#1`` and ``-#1`` are 0), except ``eq``/``ne``, which tell vacant from 0 (``#1 EQ #0`` is true,
-``#1 EQ 0`` false). ``Vacancy.LINUXCNC``: an unset numbered parameter reads 0, an unset named one is
+``#1 EQ 0`` false). ``Vacancy.ZERO``: an unset numbered parameter reads 0, an unset named one is
 an error. Results are never None except for a bare variable; NaN and infinities are refused.
 """
 
@@ -131,7 +131,7 @@ def var_key(var: Var, env: Env) -> VarKey:
     value = evaluate(var.index, env)
     if value is None:
         raise EvalError(f"the variable number in {describe(var)} is vacant")
-    if env.vacancy is Vacancy.FANUC:
+    if env.vacancy is Vacancy.NULL:
         return int(_round_half_away(value))
     nearest = round(value)
     if abs(value - nearest) > INTEGER_TOLERANCE:
@@ -142,7 +142,7 @@ def var_key(var: Var, env: Env) -> VarKey:
 def _read(var: Var, env: Env) -> Value:
     key = var_key(var, env)
     value = env.read(key)
-    if value is None and env.vacancy is Vacancy.LINUXCNC:
+    if value is None and env.vacancy is Vacancy.ZERO:
         if isinstance(key, str):
             raise EvalError(f"named parameter #<{key}> is not defined")
         return 0.0
@@ -523,7 +523,7 @@ class MappingEnv:
         return self._increment
 
     def read(self, key: VarKey) -> Value:
-        if key == 0 and self._vacancy is Vacancy.FANUC:
+        if key == 0 and self._vacancy is Vacancy.NULL:
             return None  # #0 is always vacant
         return self.values.get(key)
 

@@ -318,13 +318,16 @@ def register_expressions(factory: XFactory | None = None) -> None:
 
 
 class Vacancy(enum.Enum):
-    """How a variable without a value reads: the dialect family's rule."""
+    """How a variable without a value reads: named after the behaviour, a family base's ``Env`` chooses it
+    (the RS274 family's: ``postproc.rs274.variables``, Macro B ``NULL``, RS274/NGC ``ZERO``)."""
 
-    FANUC = "fanuc"
+    NULL = "null"
     """Vacant is a value of its own (``#0``, unset locals and commons): ``Var`` evaluates to None;
-    arithmetic, functions and ``GT GE LT LE`` treat it as 0; ``EQ``/``NE`` tell it from 0."""
-    LINUXCNC = "linuxcnc"
-    """No vacancy: an unset numbered parameter reads 0, an unset named parameter is an error."""
+    arithmetic, functions and ``GT GE LT LE`` treat it as 0; ``EQ``/``NE`` tell it from 0. A computed
+    variable number is rounded to the nearest integer."""
+    ZERO = "zero"
+    """No vacancy: an unset numbered parameter reads 0, an unset named parameter is an error. A computed
+    variable number must be an integer."""
 
 
 class Arithmetic(enum.Enum):

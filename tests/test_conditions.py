@@ -30,7 +30,7 @@ def _cond(depth: int = 0) -> st.SearchStrategy[Expr]:
 
 
 def _holds(cond: Expr, a: float, b: float) -> bool:
-    value = evaluate(cond, MappingEnv({1: a, 2: b}, Vacancy.FANUC))
+    value = evaluate(cond, MappingEnv({1: a, 2: b}, Vacancy.NULL))
     return value is not None and value != 0.0
 
 

@@ -15,7 +15,7 @@ from postproc.isg_family.expressions import BINARY, FUNCTIONS, P_BASE, parse_exp
     parse_word_value
 
 P = {P_BASE + n: float(n) for n in range(1, 10)}  # P1 = 1, ..., P9 = 9
-ENV = MappingEnv(dict(P), Vacancy.FANUC)  # as the default was: ISG reads no vacant value (isg/variables.py)
+ENV = MappingEnv(dict(P), Vacancy.NULL)  # as the default was: ISG reads no vacant value (isg/variables.py)
 
 
 @pytest.mark.parametrize("text, value", [

@@ -25,7 +25,7 @@ class FagorVariables:
 
     @property
     def vacancy(self) -> Vacancy:
-        return Vacancy.FANUC  # never consulted for a vacant value: an unset parameter is an error here
+        return Vacancy.NULL  # never consulted for a vacant value: an unset parameter is an error here
 
     @property
     def arithmetic(self) -> Arithmetic:

@@ -29,7 +29,7 @@ class SiemensVariables:
 
     @property
     def vacancy(self) -> Vacancy:
-        return Vacancy.FANUC  # never consulted for a vacant value: an unset variable is an error here
+        return Vacancy.NULL  # never consulted for a vacant value: an unset variable is an error here
 
     @property
     def arithmetic(self) -> Arithmetic:

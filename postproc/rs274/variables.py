@@ -97,7 +97,7 @@ NGC_MACHINE_READS = frozenset((*NGC_FRAME_PARAMETERS, *NGC_POSITION))
 
 
 class MacroBVariables:
-    """Custom Macro B variables (Fanuc, Haas; vacancy: ``Vacancy.FANUC``)."""
+    """Custom Macro B variables (Fanuc, Haas; vacancy: ``Vacancy.NULL``)."""
 
     __slots__ = ("levels", "commons", "_increment")
     LOCALS = 33
@@ -109,7 +109,7 @@ class MacroBVariables:
 
     @property
     def vacancy(self) -> Vacancy:
-        return Vacancy.FANUC
+        return Vacancy.NULL
 
     @property
     def arithmetic(self) -> Arithmetic:
@@ -210,7 +210,7 @@ class NgcVariables:
 
     @property
     def vacancy(self) -> Vacancy:
-        return Vacancy.LINUXCNC
+        return Vacancy.ZERO
 
     @property
     def arithmetic(self) -> Arithmetic:
