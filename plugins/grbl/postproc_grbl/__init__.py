@@ -31,7 +31,7 @@ fail unless the set-up's ``<Cycles orientation="stop"|"m19">`` says how to stand
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Callable, ClassVar, Iterator
+from typing import TYPE_CHECKING, Callable, ClassVar
 
 from postproc.comments import CommentSyntax
 from postproc.dialect import Dialect, Lazy, Reader
@@ -49,7 +49,6 @@ from .codes import CODES
 
 if TYPE_CHECKING:
     from postproc.context import Context
-    from postproc.ir import Block
 
 
 class _WriteToolLengths(LoweringStep):
@@ -82,10 +81,15 @@ drop_resolved_tool_data = _DropResolvedToolData()
 lower_for_lean_controller = _LowerForLeanController()
 
 
-def resolve_cutter_compensation(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+class _ResolveCutterCompensation(LoweringStep):
     """``postproc.lowering.cutter_compensation.resolve_cutter_compensation``, imported when first used."""
-    from postproc.lowering.cutter_compensation import resolve_cutter_compensation as step
-    return step(blocks, ctx, target)
+
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        from postproc.lowering.cutter_compensation import resolve_cutter_compensation as step
+        return step.start(ctx, target)
+
+
+resolve_cutter_compensation = _ResolveCutterCompensation()
 
 
 class Grbl(GrblFamily):
