@@ -240,8 +240,8 @@ class Dialect:
     """The controller family whose machine-specific codes (``MachineFunction``: builders' M codes,
     machine G codes) this dialect writes verbatim; '' is a family of its own (the dialect's NAME)."""
     CYCLE_SEMANTICS: ClassVar[str] = ""
-    """How the controller moves through its native canned cycles ('fanuc' or 'rs274', see
-    ``postproc.cycles.semantics``): a cycle resolved under other rules is expanded for it. Each dialect
+    """How the controller moves through its native canned cycles: the name of rules a family base registered
+    (``postproc.cycles.semantics``; the RS274 family's 'fanuc' and 'rs274'): a cycle resolved under other rules is expanded for it. Each dialect
     with ``NATIVE_CYCLES`` names its own ('' where it has none: every cycle is expanded for it)."""
     PECK_CLEARANCE_MM: ClassVar[float | None] = None
     """The G73 retract and G83 re-approach clearance of the native peck cycles, mm, where the controller

@@ -15,7 +15,7 @@ import io
 import pytest
 
 from postproc.api import read_program, translate
-from postproc.cycles.semantics import FANUC, RS274
+from postproc.rs274.cycle_semantics import FANUC, RS274
 from postproc.errors import Diagnostics, ErrorList
 from postproc.ir import Block
 from postproc.simulate.toolpath import toolpath_events

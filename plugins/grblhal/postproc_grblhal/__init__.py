@@ -40,10 +40,11 @@ read where a program is read and written.
 
 from __future__ import annotations
 
-from typing import Callable, ClassVar, Iterator, Mapping, TYPE_CHECKING
+from typing import Callable, ClassVar, Mapping, TYPE_CHECKING
 
 from postproc.comments import CommentSyntax
 from postproc.dialect import Dialect, Lazy, Reader, ResolvedCycle
+from postproc.rs274.cycle_semantics import RS274 as RS274_CYCLES
 from postproc.grbl_family.dialect import GrblFamily
 from postproc.hookspecs import hookimpl
 from postproc.lowering.lower import BlockStep, LoweringStep
@@ -60,7 +61,6 @@ from .codes import CODES
 
 if TYPE_CHECKING:
     from postproc.context import Context
-    from postproc.ir import Block
 
 
 class _WriteToolLengths(LoweringStep):
@@ -93,28 +93,42 @@ drop_resolved_tool_data = _DropResolvedToolData()
 close_full_circles = _CloseFullCircles()
 
 
-def cancel_cycles_alone(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+class _CancelCyclesAlone(LoweringStep):
     """``cancels.cancel_cycles_alone``, imported when a translation first lowers for grblHAL."""
-    from .cancels import cancel_cycles_alone as step
-    return step(blocks, ctx, target)
+
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        from .cancels import cancel_cycles_alone as step
+        return step.start(ctx, target)
 
 
-def resolve_cutter_compensation(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+class _ResolveCutterCompensation(LoweringStep):
     """``postproc.lowering.cutter_compensation.resolve_cutter_compensation``, imported when first used."""
-    from postproc.lowering.cutter_compensation import resolve_cutter_compensation as step
-    return step(blocks, ctx, target)
+
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        from postproc.lowering.cutter_compensation import resolve_cutter_compensation as step
+        return step.start(ctx, target)
 
 
-def thread_feed_apart(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+class _ThreadFeedApart(LoweringStep):
     """``postproc.rs274.ngc_lathe_writer.feed_apart``, imported when a translation first lowers for grblHAL."""
-    from postproc.rs274.ngc_lathe_writer import feed_apart
-    return feed_apart(blocks, ctx, target)
+
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        from postproc.rs274.ngc_lathe_writer import feed_apart as step
+        return step.start(ctx, target)
 
 
-def subprograms_as_subs(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+class _SubprogramsAsSubs(LoweringStep):
     """``subprograms.subprograms_as_subs``, imported when a translation first lowers for grblHAL."""
-    from .subprograms import subprograms_as_subs as step
-    return step(blocks, ctx, target)
+
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        from .subprograms import subprograms_as_subs as step
+        return step.start(ctx, target)
+
+
+cancel_cycles_alone = _CancelCyclesAlone()
+resolve_cutter_compensation = _ResolveCutterCompensation()
+thread_feed_apart = _ThreadFeedApart()
+subprograms_as_subs = _SubprogramsAsSubs()
 
 
 class Grblhal(GrblFamily):
@@ -137,7 +151,7 @@ class Grblhal(GrblFamily):
     PECK_CLEARANCE_MM = 0.1
     """G73's retract after each peck: the setting ``$73``, 0.1 mm by default [V: ``config.h``
     ``DEFAULT_G73_RETRACT``; a build whose ``$73`` differs is not modelled]. G83 has no clearance (``pecking``)."""
-    CYCLE_SEMANTICS = "rs274"
+    CYCLE_SEMANTICS = RS274_CYCLES.name
     """grblHAL's G81/G82 are read under RS274/NGC rules (``cycles``: a block where grblHAL's G98 differs is
     refused when read, expanded when written)."""
     INVERSE_TIME_FEED = True

@@ -12,16 +12,16 @@ run as rs274 runs them (``postproc.interp.rules``).
 
 from __future__ import annotations
 
-from typing import Callable, ClassVar, Iterator
+from typing import Callable, ClassVar
 
 from postproc.rs274.cutter_rules import ARC_CORNERS
 from postproc.dialect import Dialect, Lazy, Reader
+from postproc.rs274.cycle_semantics import RS274 as RS274_CYCLES
 from postproc.rs274.order_of_execution import stops_after_motion
 from postproc.rs274.arc_ends import RS274NGC_ARC_END
 from postproc.lowering.structured_jumps import nest_forward_jumps
 from postproc.errors import Diagnostics
 from postproc.hookspecs import hookimpl
-from postproc.ir import Block
 from postproc.output.line_format import LineRule
 from postproc.lowering.lower import BlockStep, Lowering, LoweringStep
 from postproc.setup.machine_setup import MachineSetup
@@ -42,10 +42,15 @@ NATIVE = frozenset({
 })
 
 
-def _thread_feed_apart(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+class _ThreadFeedApart(LoweringStep):
     """``lathe_writer.feed_apart``, imported when a translation to LinuxCNC first runs."""
-    from .lathe_writer import feed_apart
-    return feed_apart(blocks, ctx, target)
+
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        from .lathe_writer import feed_apart as step
+        return step.start(ctx, target)
+
+
+_thread_feed_apart = _ThreadFeedApart()
 
 
 class _SubprogramLayout(LoweringStep):
@@ -129,7 +134,7 @@ class Linuxcnc(Dialect):
     after their callers, and a cycle gets the return level its source assumed (``layout``); a thread
     block's F goes on a line before it (``lathe_writer.feed_apart``: G33 refuses F); a one-shot exact stop is
     G61 for its block, then the mode before (``exact_stop``: rs274 refuses G9)."""
-    CYCLE_SEMANTICS = "rs274"
+    CYCLE_SEMANTICS = RS274_CYCLES.name
     """How the native cycles move: start below R rises to R first, G98 returns to the old Z only when
     it is above R, G91 R is measured from the Z at the block's start, G74/G84/G89 feed out to the
     clear level, G73/G83 clearances are fixed (0.254 mm / 0.010 in)."""
