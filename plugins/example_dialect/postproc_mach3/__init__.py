@@ -20,7 +20,6 @@ from typing import Callable
 from postproc.comments import CommentSyntax
 from postproc.rs274.cutter_rules import NIST_V3
 from postproc.dialect import Dialect, Lazy, Reader, Writer
-from postproc.rs274.cycle_semantics import RS274 as RS274_CYCLES
 from postproc.hookspecs import hookimpl
 from postproc.rs274.arc_ends import RS274NGC_ARC_END
 from postproc.rs274.cycle_words import rs274_cycle_words
@@ -49,7 +48,7 @@ class Mach3(Dialect):
     retract and G83 clearance are machine settings (Mach4's #5114/#5115), taken from the set-up's
     ``<Cycles peckRetract peckClearance>`` like Fanuc's parameters (``PECK_CLEARANCE_MM`` stays None): a
     peck cycle from a control with another clearance (LinuxCNC's fixed 0.254 mm) is expanded."""
-    CYCLE_SEMANTICS = RS274_CYCLES.name
+    CYCLE_SEMANTICS = "rs274"
     """The cycles move by the RS274/NGC rules (``postproc.cycles.semantics``)."""
     ARC_END = RS274NGC_ARC_END
     """Taken as LinuxCNC's interpreter's rule [?]: Mach3 descends from the NIST RS274/NGC interpreter, whose
