@@ -12,11 +12,11 @@ native.install()  # the compiled hot path, before any of its modules is imported
 
 from .arc_end import SPIRAL, TARGET_ARC_END
 from .lowering.feed_first import check_blocks
-from .control import GotoLabel
+from .interp.control import GotoLabel
 from .dialect import Dialect
 from .errors import Diagnostics, ErrorLevel, PostprocError, UsageError
 from .ir import Block
-from .jump_targets import jump_past_end, missing_fallthrough
+from .interp.jump_targets import jump_past_end, missing_fallthrough
 from .lowering.arcs import ArcOption, RewriteArcs, settle_arc_ends
 from .lowering.lower import lower_for
 from .plugins import Registry, default_registry

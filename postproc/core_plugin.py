@@ -20,7 +20,7 @@ if TYPE_CHECKING:
 @hookimpl
 def postproc_register_xml(factory: XFactory) -> None:
     from . import cycles, patterns
-    from .control import register_control
+    from .interp.control import register_control
     from .synchronised_tap import RigidTap
     from .expr import register_expressions
     from .frames import register_frames

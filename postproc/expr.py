@@ -333,7 +333,7 @@ class Vacancy(enum.Enum):
 class Arithmetic(enum.Enum):
     """How the controller computes the neutral functions: the dialect family's rule, as vacancy is.
     Both mean the same functions (``SIN`` is the sine of degrees); they differ in the last bits, which
-    ``FIX``, ``FUP`` and the comparisons turn into whole units (``postproc.evaluation``)."""
+    ``FIX``, ``FUP`` and the comparisons turn into whole units (``postproc.interp.evaluation``)."""
 
     DOUBLE = "double"
     """IEEE double throughout; an angle in degrees becomes radians as ``x * pi / 180`` in double, so
@@ -341,7 +341,7 @@ class Arithmetic(enum.Enum):
     X86_64_C = "x86_64_c"
     """What C computes on x86-64 Linux where the interpreter scales angles with ``M_PIl`` in ``long double``
     and stores the result in a double (LinuxCNC's ``rs274``): ``SIN[180]`` is -5.0166e-20 and ``COS[90]``
-    -2.5083e-20 (``postproc.long_double``); ``ROUND`` converts through a C ``int``."""
+    -2.5083e-20 (``postproc.interp.long_double``); ``ROUND`` converts through a C ``int``."""
 
 
 class Env(Protocol):

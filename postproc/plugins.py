@@ -15,7 +15,7 @@ from . import native
 native.install()  # the compiled hot path, before any of its modules is imported
 
 from . import hookspecs
-from .control import register_control
+from .interp.control import register_control
 from .dialect import Dialect
 from .entry_points import entry_points as installed_entry_points
 from .entry_points import load as load_entry_point

@@ -1,4 +1,4 @@
-"""``postproc.conditions``: the negation a jump needs holds exactly when the condition does not, and a
+"""``postproc.interp.conditions``: the negation a jump needs holds exactly when the condition does not, and a
 condition given an operator holds exactly when it did (checked by evaluating both on random values,
 ties included: the comparisons are exact)."""
 
@@ -7,8 +7,8 @@ from __future__ import annotations
 from hypothesis import given
 from hypothesis import strategies as st
 
-from postproc.conditions import negated, truth
-from postproc.evaluation import MappingEnv, evaluate
+from postproc.interp.conditions import negated, truth
+from postproc.interp.evaluation import MappingEnv, evaluate
 from postproc.expr import Binary, Expr, Num, Unary, Vacancy, Var
 
 _VALUES = st.sampled_from([-2.0, -0.5, 0.0, 0.5, 1.0, 2.0, 3.0])

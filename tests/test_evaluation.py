@@ -8,8 +8,8 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from postproc.evaluation import MappingEnv, TOLERANCE_EQUAL, certain_failure, describe, evaluate_number, var_key
-from postproc.evaluation import evaluate
+from postproc.interp.evaluation import MappingEnv, TOLERANCE_EQUAL, certain_failure, describe, evaluate_number, var_key
+from postproc.interp.evaluation import evaluate
 from postproc.expr import (
     BINARY_OPS, FUNCTIONS, Binary, EvalError, Expr, Func, Num, Unary, Vacancy, Var,
 )

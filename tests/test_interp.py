@@ -12,7 +12,7 @@ from typing import Any, Iterable, Iterator
 
 import pytest
 
-from postproc.control import (
+from postproc.interp.control import (
     Assign, Break, Call, Continue, EndIf, EndWhile, Goto, If, IfThen, ModalCall, ModalCallCancel, Return,
     SubEnd, SubStart, While,
 )

@@ -15,7 +15,7 @@ import io
 import pytest
 
 from postproc.api import translate
-from postproc.control import EndWhile, While
+from postproc.interp.control import EndWhile, While
 from postproc.errors import Diagnostics, ErrorList
 from postproc.expr import Binary, Num, Var
 from postproc.setup.machine_setup import Limits, MachineSetup

@@ -7,7 +7,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from postproc.errors import UnsupportedError
-from postproc.evaluation import MappingEnv, evaluate
+from postproc.interp.evaluation import MappingEnv, evaluate
 from postproc.expr import Binary, Expr, Func, Num, Unary, Vacancy, Var
 from postproc.rs274.expressions import ExprSyntaxError
 

@@ -1,7 +1,7 @@
 """LinuxCNC's trigonometry at exact angles: rs274 scales degrees with ``M_PIl`` in ``long double``.
 
 Three kinds of evidence: values pinned from runs of the packaged rs274 (they hold without it),
-``postproc.long_double`` against glibc's own ``sinl``/``cosl``/``tanl`` through ctypes on x86-64, and a
+``postproc.interp.long_double`` against glibc's own ``sinl``/``cosl``/``tanl`` through ctypes on x86-64, and a
 seeded random differential against rs274 that reads every bit of each result (skipped without it).
 """
 
@@ -17,9 +17,9 @@ import re
 
 import pytest
 
-from postproc import long_double
+from postproc.interp import long_double
 from postproc.errors import ErrorList
-from postproc.evaluation import MappingEnv, evaluate_number
+from postproc.interp.evaluation import MappingEnv, evaluate_number
 from postproc.expr import Arithmetic, Vacancy
 from postproc.rs274.expressions import LINUXCNC_SPELLING, parse_expr
 from postproc.simulate.toolpath import toolpath_events

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from postproc.control import Assign, EndWhile, Goto, IfThen, While
+from postproc.interp.control import Assign, EndWhile, Goto, IfThen, While
 from postproc.errors import UnsupportedError
 from postproc.expr import Binary, Func, Num, Var
 from postproc.ir import Section

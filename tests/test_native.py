@@ -20,7 +20,7 @@ from pathlib import Path
 import pytest
 
 from postproc import native
-from postproc.control import While
+from postproc.interp.control import While
 from postproc.expr import Num
 from postproc.ir import Motion
 from postproc.source_map import ExecutedBlock

@@ -10,8 +10,8 @@ from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
 from postproc.errors import UnsupportedError
-from postproc.evaluation import MappingEnv
-from postproc.evaluation import evaluate
+from postproc.interp.evaluation import MappingEnv
+from postproc.interp.evaluation import evaluate
 from postproc.expr import Binary, EvalError, Expr, Func, Num, Unary, Vacancy, Var
 from postproc.rs274.expressions import (
     FANUC_SPELLING, LINUXCNC_SPELLING, ExprSpelling, ExprSyntaxError, parse_condition, parse_expr,

@@ -16,7 +16,7 @@ Choices where the manuals leave room (documented, tested):
 from __future__ import annotations
 
 from postproc.context import Context
-from postproc.control import CONTROL, Call, ModalCall, ModalCallCancel, Return
+from postproc.interp.control import CONTROL, Call, ModalCall, ModalCallCancel, Return
 from postproc.errors import ParseError
 from postproc.expr import Expr, Num
 from postproc.ir import Block, Section

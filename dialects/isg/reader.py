@@ -27,7 +27,7 @@ from __future__ import annotations
 
 from typing import Callable, ClassVar, Iterable, Iterator
 
-from postproc.control import CONTROL, Assign, Call, Label, Return, SubEnd, SubStart
+from postproc.interp.control import CONTROL, Assign, Call, Label, Return, SubEnd, SubStart
 from postproc.dialect import Reader
 from postproc.errors import Location, ParseError, PostprocError
 from postproc.ir import BlockDelete, Block, Comments, MachineCoordinates, NativeCode, ProgramStart, Sequence, TapeMark

@@ -23,7 +23,7 @@ from __future__ import annotations
 from typing import Any, ClassVar
 
 from postproc.context import Context
-from postproc.control import Assign, Call, Return, SubEnd, SubStart
+from postproc.interp.control import Assign, Call, Return, SubEnd, SubStart
 from postproc.dialect import Dialect
 from postproc.errors import UnsupportedError
 from postproc.expr import Expr
@@ -33,7 +33,7 @@ from postproc.output.home_position import SECOND_RETURN, reference_problem, refe
 from postproc.rs274.codes import CodeTable
 from postproc.isg_family.taps import stroke_words
 from postproc.rs274.writer import WordWriter
-from postproc.subprogram_names import NameRule, SubprogramNames
+from postproc.interp.subprogram_names import NameRule, SubprogramNames
 
 from .codes import CODES
 from .commands import OPENING, command_line

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from postproc.control import CONTROL, Assign, Call, Return
+from postproc.interp.control import CONTROL, Assign, Call, Return
 from postproc.errors import ParseError
 from postproc.expr import Expr, Num, Var
 from postproc.ir import Block, Comments, CycleCall, CycleCancel

@@ -24,7 +24,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from postproc.control import (
+from postproc.interp.control import (
     Assign, Do, DoWhile, Else, EndFor, EndIf, EndWhile, For, Goto, GotoLabel, If, Until, While,
 )
 from postproc.errors import Location, UnsupportedError

@@ -44,7 +44,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Iterable, Iterator
 
-from postproc.control import Assign, Label
+from postproc.interp.control import Assign, Label
 from postproc.dialect import Reader
 from postproc.errors import Location, ParseError, PostprocError
 from postproc.expr import Binary, Expr, Func, Num, Var

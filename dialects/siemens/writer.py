@@ -31,7 +31,7 @@ from __future__ import annotations
 from typing import Any, ClassVar
 
 from postproc.context import Context
-from postproc.control import ASSIGN, CONTROL, LABEL
+from postproc.interp.control import ASSIGN, CONTROL, LABEL
 from postproc.cycles.section import CannedCycle
 from postproc.synchronised_tap import RigidTap
 from postproc.dialect import Dialect

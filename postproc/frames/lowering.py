@@ -44,7 +44,7 @@ from ..context import Context
 from ..dialect import Dialect
 from ..compensation.tool_length import ToolLength
 from ..errors import PostprocError, ProgramError
-from ..control import ASSIGN, CONTROL
+from ..interp.control import ASSIGN, CONTROL
 from ..expr import Binary, Expr, Num
 from ..ir import Block, CompoundMotion, CutterCompensation, Motion, Section
 from ..ir.keys import watches_none

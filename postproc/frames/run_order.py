@@ -13,7 +13,7 @@ streamed before the first construct) is not seen here.
 
 from __future__ import annotations
 
-from ..control import (
+from ..interp.control import (
     Do, DoWhile, EndFor, EndIf, EndRepeat, EndSwitch, EndWhile, For, Goto, GotoLabel, If, Repeat, SubEnd, SubStart,
     Switch, Until, While,
 )

@@ -5,9 +5,9 @@ module has one job."""
 
 from __future__ import annotations
 
-from ..control import ModalCall
+from .control import ModalCall
 from ..errors import Location, PostprocError, ProgramError
-from ..evaluation import evaluate, evaluate_number
+from .evaluation import evaluate, evaluate_number
 from ..expr import EvalError, Expr, Value
 from ..ir import Block
 from ..setup.machine_setup import Limits

@@ -12,7 +12,7 @@ which is what it means, and which ``untruth`` reads back.
 
 from __future__ import annotations
 
-from postproc.control import (
+from postproc.interp.control import (
     Break, Case, Continue, Default, Do, DoWhile, Else, ElseIf, EndFor, EndIf, EndSwitch, EndWhile, For, Goto,
     GotoLabel, If, Switch, Until, While,
 )

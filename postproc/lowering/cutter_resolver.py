@@ -11,7 +11,7 @@ from typing import Callable, Final, Iterator
 from mypy_extensions import mypyc_attr
 
 from ..context import Context
-from ..control import ASSIGN, CONTROL, LABEL
+from ..interp.control import ASSIGN, CONTROL, LABEL
 from ..errors import PostprocError, ProgramError, UnsupportedError
 from ..expr import Expr
 from ..ir import (Block, CompoundMotion, CutterCompensation, DataSetting, DistanceMode, Feed, FeedMode, Motion, Plane,

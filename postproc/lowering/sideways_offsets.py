@@ -30,7 +30,7 @@ from typing import Final
 
 from ..compensation.tool_table import ENTRY, SIDEWAYS
 from ..context import Context
-from ..control import ASSIGN, CONTROL
+from ..interp.control import ASSIGN, CONTROL
 from ..dialect import Dialect
 from ..errors import UnsupportedError
 from ..expr import Expr

@@ -27,9 +27,9 @@ import copy
 from dataclasses import dataclass, field
 from typing import Iterator
 
-from ..conditions import negated, truth
+from ..interp.conditions import negated, truth
 from ..context import Context
-from ..control import (
+from ..interp.control import (
     CONTROL, Do, DoWhile, Else, ElseIf, EndIf, Goto, GotoLabel, If, Until, While,
 )
 from ..dialect import Dialect

@@ -51,7 +51,7 @@ from __future__ import annotations
 
 from typing import Callable, Container
 
-from ..control import (
+from ..interp.control import (
     Assign, Break, Call, Continue, Do, DoWhile, Else, ElseIf, EndIf, EndRepeat, EndWhile, If, Repeat,
     Return, SubEnd, SubStart, While,
 )

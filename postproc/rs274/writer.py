@@ -20,7 +20,7 @@ from mypy_extensions import mypyc_attr
 
 from ..block_rules import per_rev_problem
 from ..context import Context
-from ..control import ASSIGN, CONTROL
+from ..interp.control import ASSIGN, CONTROL
 from ..dialect import Dialect
 from ..errors import ProgramError, UnsupportedError
 from ..event_order import after_motion

@@ -17,7 +17,7 @@ from math import hypot
 from typing import Final, NoReturn, cast
 
 from postproc.block_rules import ZERO_FEED, ArcError, arc_centre, check_values, needs_feed, per_rev_problem
-from postproc.control import ASSIGN, CONTROL
+from postproc.interp.control import ASSIGN, CONTROL
 from postproc.arc_end import SPIRAL, TARGET_ARC_END, ArcEndRule
 from postproc.errors import ProgramError, UnsupportedError
 from postproc.event_order import MOVING, after_motion

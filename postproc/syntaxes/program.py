@@ -20,7 +20,7 @@ from typing import TYPE_CHECKING, Callable, ClassVar, Iterable, Iterator
 
 from mypy_extensions import mypyc_attr
 
-from ..control import ASSIGN, CONTROL, Call, ModalCall
+from ..interp.control import ASSIGN, CONTROL, Call, ModalCall
 from ..errors import ConfigError, Diagnostics, ErrorLevel, PostprocError
 from ..expr import Expr, Var
 from ..ir import AXES, Block, Sequence

@@ -15,7 +15,7 @@ from dataclasses import dataclass
 from typing import Any, Callable
 
 from ..api import read_program
-from ..control import Assign
+from ..interp.control import Assign
 from ..cycles.section import CannedCycle
 from ..dialect import Dialect
 from ..errors import ErrorList

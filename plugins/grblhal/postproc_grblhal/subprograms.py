@@ -22,7 +22,7 @@ from __future__ import annotations
 from typing import Iterator
 
 from postproc.context import Context
-from postproc.control import ASSIGN, CONTROL, Call, EndRepeat, Repeat, Return, SubEnd, SubStart
+from postproc.interp.control import ASSIGN, CONTROL, Call, EndRepeat, Repeat, Return, SubEnd, SubStart
 from postproc.dialect import Dialect
 from postproc.errors import UnsupportedError
 from postproc.expr import Expr, Num

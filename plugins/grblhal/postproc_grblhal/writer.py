@@ -39,7 +39,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Any, ClassVar
 
 from postproc.context import Context
-from postproc.control import Assign, Break, Call, Continue, Do, DoWhile, Else, ElseIf, EndIf, EndRepeat, EndWhile, \
+from postproc.interp.control import Assign, Break, Call, Continue, Do, DoWhile, Else, ElseIf, EndIf, EndRepeat, EndWhile, \
     If, Repeat, Return, SubEnd, SubStart, While
 from postproc.cycles.section import WORD_ORDER
 from postproc.dialect import Dialect

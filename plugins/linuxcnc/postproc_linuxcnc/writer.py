@@ -35,7 +35,7 @@ from postproc.errors import Location, UnsupportedError
 from postproc.ir import Block, ProgramControl, Section
 from postproc.context import Context
 from postproc.dialect import Dialect
-from postproc.control import (
+from postproc.interp.control import (
     Assign, Break, Call, Continue, Do, DoWhile, Else, ElseIf, EndFor, EndIf, EndRepeat, EndWhile, For, If, Repeat,
     Return, SubEnd, SubStart, While,
 )
@@ -45,7 +45,7 @@ from postproc.rs274.expressions import LINUXCNC_SPELLING, ExprSpelling
 from postproc.rs274.oword import spell_assignments, spell_oword
 from postproc.rs274.writer import WordWriter
 from postproc.output.line_feeds import LineFeeds
-from postproc.subprogram_names import NameRule, SubprogramNames
+from postproc.interp.subprogram_names import NameRule, SubprogramNames
 
 from .active_comments import COMMENTS
 from .codes import CODES

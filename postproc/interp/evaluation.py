@@ -61,7 +61,7 @@ Arithmetic (``Env.arithmetic``, the dialect family's): ``DOUBLE`` computes ``sin
 ``asin(x) * 180 / pi`` in IEEE double (Fanuc [K]: IEEE double with the trigonometric functions'
 absolute error guaranteed, not their relative error; ISG and Fagor [?]: not published, chosen so).
 ``X86_64_C`` is rs274's C on x86-64: ``sin((x * M_PIl) / 180.0)`` with the argument in ``long double``,
-the inverse functions' double result times 180.0 divided by ``M_PIl`` (src; ``postproc.long_double``),
+the inverse functions' double result times 180.0 divided by ``M_PIl`` (src; ``postproc.interp.long_double``),
 so ``SIN[180]`` is -5.0e-20 (``FIX[SIN[180]]`` = -1) and ``COS[90] LT 0`` is 1 (rs274). SIN, COS, ASIN,
 ACOS and ATAN agree bit for bit with the packaged rs274 and glibc; TAN is the correctly rounded
 ``tanl``, which glibc's misses by one unit in the last place in about 1 case in 20,000 (TAN[271] among
@@ -81,7 +81,7 @@ from decimal import ROUND_HALF_UP, Decimal
 from typing import Callable
 
 from . import long_double
-from .expr import Arithmetic, Binary, Env, EvalError, Expr, Func, Num, Unary, Vacancy, Value, Var, VarKey
+from ..expr import Arithmetic, Binary, Env, EvalError, Expr, Func, Num, Unary, Vacancy, Value, Var, VarKey
 
 TOLERANCE_EQUAL = 1e-4
 """LinuxCNC 2.9.0's tolerance for EQ/NE (``eq_tol``/``ne_tol``)."""
