@@ -24,7 +24,7 @@ from .reading import gc_paused as gc_paused, read_blocks as read_blocks  # publi
 from .syntaxes.program import HIGHEST_SEQUENCE, RUN_CHECK, TARGET_OMITS_VACANT, ProgramSyntax
 from .lowering.sequences import Sequences
 from .setup.machine_setup import MachineSetup
-from .source_map import OutputMap
+from .ir.source_map import OutputMap
 from .syntax import Pipeline
 from .context import Context
 from .frames.lowering import EVALUATE_KEY

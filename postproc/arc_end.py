@@ -20,7 +20,7 @@ from typing import Final
 from .arc_paths import ArcPath, deviation
 from .geometry import arc_sweep
 from .records import record
-from .state import MM_PER_INCH
+from .ir.state import MM_PER_INCH
 
 SPIRAL: Final = "spiral"
 """The controller keeps the programmed centre and lets the radius change evenly from the start radius to

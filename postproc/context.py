@@ -19,8 +19,8 @@ from .cycle_words import CycleWords
 from .errors import Diagnostics, Location
 from .ir import Block
 from .setup.machine_setup import MachineSetup
-from .source_map import locate
-from .state import ModalState
+from .ir.source_map import locate
+from .ir.state import ModalState
 
 
 NOT_SET: Any = object()

@@ -234,7 +234,7 @@ class Dialect:
     to the nearest whole one, as the controller rounds a computed S, and warns (``NumberWriter.speed``)."""
     STOPS_BEFORE_MOTION: ClassVar[bool] = False
     """The controller stops the spindle and the coolant before the block's motion (the RS274/NGC order
-    of execution), and its reader flags such stops ``before_motion`` (``postproc.event_order``). A
+    of execution), and its reader flags such stops ``before_motion`` (``postproc.ir.event_order``). A
     target that stops after the motion moves them ahead only when the source reads so."""
     FAMILY: ClassVar[str] = ""
     """The controller family whose machine-specific codes (``MachineFunction``: builders' M codes,

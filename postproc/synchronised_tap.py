@@ -34,7 +34,7 @@ from typing import TYPE_CHECKING, Any
 
 from mypy_extensions import mypyc_attr
 
-from .expr import Expr
+from .ir.expr import Expr
 from .ir import Block, CompoundMotion, Section, axes_from_xml, axes_to_xml
 from .xmlio import computed_value, lxml_etree
 

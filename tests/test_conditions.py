@@ -9,7 +9,7 @@ from hypothesis import strategies as st
 
 from postproc.interp.conditions import negated, truth
 from postproc.interp.evaluation import MappingEnv, evaluate
-from postproc.expr import Binary, Expr, Num, Unary, Vacancy, Var
+from postproc.ir.expr import Binary, Expr, Num, Unary, Vacancy, Var
 
 _VALUES = st.sampled_from([-2.0, -0.5, 0.0, 0.5, 1.0, 2.0, 3.0])
 """Few values, so that ties (where a flipped comparison would be wrong) come up often."""

@@ -6,7 +6,7 @@ import pytest
 
 from postproc.interp.control import ASSIGN, CONTROL, Assign, Call, Goto, While, register_control
 from postproc.errors import ConfigError
-from postproc.expr import Num, Var, register_expressions
+from postproc.ir.expr import Num, Var, register_expressions
 from postproc.ir import Block
 from postproc.xmlio import XFactory, parse_xml_bytes
 

@@ -10,7 +10,7 @@ from hypothesis import strategies as st
 
 from postproc.interp.evaluation import MappingEnv, TOLERANCE_EQUAL, certain_failure, describe, evaluate_number, var_key
 from postproc.interp.evaluation import evaluate
-from postproc.expr import (
+from postproc.ir.expr import (
     BINARY_OPS, FUNCTIONS, Binary, EvalError, Expr, Func, Num, Unary, Vacancy, Var,
 )
 from postproc.rs274.expressions import FANUC_SPELLING, LINUXCNC_SPELLING

@@ -17,7 +17,7 @@ import pytest
 from postproc.api import translate
 from postproc.interp.control import EndWhile, While
 from postproc.errors import Diagnostics, ErrorList
-from postproc.expr import Binary, Num, Var
+from postproc.ir.expr import Binary, Num, Var
 from postproc.setup.machine_setup import Limits, MachineSetup
 from postproc.simulate.toolpath import toolpath_events
 from tests.test_interp import P, error_of, run, v, words

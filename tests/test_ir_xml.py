@@ -15,7 +15,7 @@ import pytest
 
 from postproc.compensation.dynamic import DynamicCutterCompensation
 from postproc.api import read_program
-from postproc.expr import Binary, Func, Num, Unary, Var
+from postproc.ir.expr import Binary, Func, Num, Unary, Var
 from postproc.errors import ConfigError
 from postproc.ir import (
     Block, BlockDelete, Comments, CompoundMotion, Coolant, CutterCompensation, CycleCall, CycleCancel,

@@ -8,7 +8,7 @@ from hypothesis import strategies as st
 
 from postproc.errors import UnsupportedError
 from postproc.interp.evaluation import MappingEnv, evaluate
-from postproc.expr import Binary, Expr, Func, Num, Unary, Vacancy, Var
+from postproc.ir.expr import Binary, Expr, Func, Num, Unary, Vacancy, Var
 from postproc.rs274.expressions import ExprSyntaxError
 
 from postproc.isg_family.expressions import BINARY, FUNCTIONS, P_BASE, parse_expr, spell_expr, spell_word_value, \

@@ -19,7 +19,7 @@ import pytest
 from postproc.api import translate
 from postproc.errors import ErrorList
 from postproc.ir import NativeCode
-from postproc.lathe_sections import SpindleClamp, SpindleMode, ThreadLead
+from postproc.ir.lathe_sections import SpindleClamp, SpindleMode, ThreadLead
 from postproc.setup.machine_setup import InputSettings, MachineSetup, load_setup
 from postproc.simulate.verify import verify_lines
 from postproc.api import read_program

@@ -20,7 +20,7 @@ import pytest
 from postproc.interp import long_double
 from postproc.errors import ErrorList
 from postproc.interp.evaluation import MappingEnv, evaluate_number
-from postproc.expr import Arithmetic, Vacancy
+from postproc.ir.expr import Arithmetic, Vacancy
 from postproc.rs274.expressions import LINUXCNC_SPELLING, parse_expr
 from postproc.simulate.toolpath import toolpath_events
 from tests.support.rs274 import available, run_rs274

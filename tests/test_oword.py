@@ -13,7 +13,7 @@ from postproc.interp.control import (
     Return, SubEnd, SubStart, While,
 )
 from postproc.errors import UnsupportedError
-from postproc.expr import Binary, Expr, Func, Num, Unary, Var
+from postproc.ir.expr import Binary, Expr, Func, Num, Unary, Var
 from postproc.ir import ProgramStart, Section
 from postproc.rs274.expressions import LINUXCNC_SPELLING, ExprSyntaxError
 from postproc.rs274.oword import (

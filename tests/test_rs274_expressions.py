@@ -12,7 +12,7 @@ from hypothesis import strategies as st
 from postproc.errors import UnsupportedError
 from postproc.interp.evaluation import MappingEnv
 from postproc.interp.evaluation import evaluate
-from postproc.expr import Binary, EvalError, Expr, Func, Num, Unary, Vacancy, Var
+from postproc.ir.expr import Binary, EvalError, Expr, Func, Num, Unary, Vacancy, Var
 from postproc.rs274.expressions import (
     FANUC_SPELLING, LINUXCNC_SPELLING, ExprSpelling, ExprSyntaxError, parse_condition, parse_expr,
     parse_word_value, spell_condition, spell_expr, spell_word_value,

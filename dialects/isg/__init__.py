@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING, Callable
 
 from postproc.comments import CommentSyntax
 from postproc.arc_end import NEAREST_CENTRE, ArcEndRule
-from postproc.state import MM_PER_INCH
+from postproc.ir.state import MM_PER_INCH
 from postproc.dialect import Dialect, Lazy, Reader
 from postproc.hookspecs import hookimpl
 from postproc.lowering.lower import BlockStep, LoweringStep

@@ -26,8 +26,8 @@ from postproc.context import Context
 from postproc.interp.control import Assign, Call, Return, SubEnd, SubStart
 from postproc.dialect import Dialect
 from postproc.errors import UnsupportedError
-from postproc.expr import Expr
-from postproc.event_order import after_motion
+from postproc.ir.expr import Expr
+from postproc.ir.event_order import after_motion
 from postproc.ir import Block, DistanceMode, Motion, Section
 from postproc.output.home_position import SECOND_RETURN, reference_problem, reference_target
 from postproc.rs274.codes import CodeTable
@@ -129,7 +129,7 @@ class IsgWriter(WordWriter):
 
     def generate_words(self, block: Block) -> str:
         """A dwell is alone in its ISG block (only a block number may join it), in the block's order of
-        events (``postproc.event_order``): what acts before the dwell (settings, tool, spindle start, coolant
+        events (``postproc.ir.event_order``): what acts before the dwell (settings, tool, spindle start, coolant
         on) in a block before it, the motion and what ends the block after it."""
         sections = block.sections
         if "Dwell" in sections and any(k not in _ALONE_WITH_DWELL for k in sections) \

@@ -24,7 +24,7 @@ from postproc.hookspecs import hookimpl
 from postproc.lowering.lower import BlockStep, LoweringStep
 from postproc.rs274.order_of_execution import stops_before_motion
 from postproc.setup.machine_setup import MachineSetup
-from postproc.state import MM_PER_INCH
+from postproc.ir.state import MM_PER_INCH
 from postproc.syntax import Pipeline
 from postproc.output.writer_base import Writer
 from postproc.xmlio import XFactory

@@ -26,7 +26,7 @@ from __future__ import annotations
 from typing import Final
 
 from postproc.errors import Location, ParseError
-from postproc.expr import Expr, Num
+from postproc.ir.expr import Expr, Num
 from postproc.frames.section import CHAIN, FrameChange
 from postproc.isg_family.expressions import Unmodelled
 from postproc.rs274.expressions import skip_blanks

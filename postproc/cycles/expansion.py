@@ -14,10 +14,10 @@ import abc
 from typing import TYPE_CHECKING, ClassVar, Final, Iterator
 
 from postproc.errors import ConfigError, ProgramError
-from postproc.expr import Expr
+from postproc.ir.expr import Expr
 from postproc.ir import Block, CompoundMotion, Dwell, Feed, Motion, ProgramControl, Section, SpindleControl
 from postproc.ir import SpindleOrientation
-from postproc.state import PLANE_AXES
+from postproc.ir.state import PLANE_AXES
 from postproc.context import Context
 from postproc.syntax import Syntax
 

@@ -36,7 +36,7 @@ from postproc.ir import (
 )
 from postproc.context import DROPPED_MOVES, Context
 from postproc.interp.control import CONTROL, LABEL
-from postproc.source_map import ExecutedBlock
+from postproc.ir.source_map import ExecutedBlock
 
 from postproc.synchronised_tap import RigidTap
 

@@ -22,11 +22,11 @@ from mypy_extensions import mypyc_attr
 
 from postproc.cycle_words import CycleWords
 from postproc.errors import ConfigError, Location, PostprocError, ProgramError, UnsupportedError
-from postproc.expr import Expr
+from postproc.ir.expr import Expr
 from postproc.ir import Block, CompoundMotion, NativeCode, Section
 from postproc.setup.machine_setup import CycleSettings
-from postproc.source_map import ExecutedBlock
-from postproc.state import MM_PER_INCH, PLANE_AXES, CycleState, ModalState
+from postproc.ir.source_map import ExecutedBlock
+from postproc.ir.state import MM_PER_INCH, PLANE_AXES, CycleState, ModalState
 from postproc.context import Context
 from postproc.syntax import Syntax
 from postproc.xmlio import DEFAULT, lxml_etree

@@ -11,10 +11,10 @@ from typing import Iterator
 from ..context import Context
 from ..dialect import Dialect
 from ..errors import Location, PostprocError, ProgramError, UnsupportedError
-from ..expr import Expr
+from ..ir.expr import Expr
 from ..ir import (Block, CompoundMotion, CycleCancel, DistanceMode, Feed, MachineFunction, Motion,
                   ReturnLevel, Section, SpindleControl, SpindleSpeed)
-from ..state import PLANE_AXES
+from ..ir.state import PLANE_AXES
 from ..lowering.lower import BlockStep, LoweringStep
 from ..lowering.machine_functions import RIGID_TAP, comment_out
 from ..synchronised_tap import RigidTap, rigid_taps

@@ -5,7 +5,7 @@ from __future__ import annotations
 from mypy_extensions import mypyc_attr
 
 from postproc.ir import SpindleControl
-from postproc.state import PLANE_AXES
+from postproc.ir.state import PLANE_AXES
 from postproc.synchronised_tap import RigidTap
 
 from .expansion import CycleExpansion, ToolPath, rules_of

@@ -10,7 +10,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from ..errors import ProgramError
-from ..expr import Expr
+from ..ir.expr import Expr
 from ..ir import Block, Motion, Section
 from .affine import XYZ
 from .frame import PLANE_AXES, Frame, chain_component

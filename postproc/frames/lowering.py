@@ -45,11 +45,11 @@ from ..dialect import Dialect
 from ..compensation.tool_length import ToolLength
 from ..errors import PostprocError, ProgramError
 from ..interp.control import ASSIGN, CONTROL
-from ..expr import Binary, Expr, Num
+from ..ir.expr import Binary, Expr, Num
 from ..ir import Block, CompoundMotion, CutterCompensation, Motion, Section
 from ..ir.keys import watches_none
 from ..lowering.lower import BlockStep, LoweringStep, run_blocks
-from ..state import MM_PER_INCH, ModalState, changes_nothing
+from ..ir.state import MM_PER_INCH, ModalState, changes_nothing
 from .affine import EXACT, INDEX, XYZ
 from .frame import PLANE_AXES, Frame, Position
 from .run_order import RunOrder

@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING, Final
 from ..compensation.tool_length import ToolLength
 from ..compensation.tool_table import ENTRY, TABLES, ToolTable
 from ..errors import PostprocError, ProgramError, UnsupportedError
-from ..expr import Expr
+from ..ir.expr import Expr
 from ..ir import Block, DataSetting, Section, ToolLengthOffset
 from ..ir.verbatim import STORED_WORK_OFFSET
 from ..setup.work_offsets import declared_offsets

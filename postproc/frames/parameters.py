@@ -25,7 +25,7 @@ from typing import Callable, Hashable, Iterable
 
 from ..context import ASSUMED_START, Context
 from ..interp.numbers import COMPUTED, numbered_variables
-from ..state import LEFT_START, MM_PER_INCH
+from ..ir.state import LEFT_START, MM_PER_INCH
 from ..ir import Block
 from .run_state import RUN_KEY, FrameRun
 

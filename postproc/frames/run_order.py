@@ -18,7 +18,7 @@ from ..interp.control import (
     Switch, Until, While,
 )
 from ..errors import ProgramError
-from ..expr import Num
+from ..ir.expr import Num
 from ..ir import Section
 
 _OPENING = (If, While, Do, For, Repeat, Switch, SubStart)

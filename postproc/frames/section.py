@@ -28,7 +28,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any, Final
 
-from ..expr import Expr
+from ..ir.expr import Expr
 from ..ir import Section
 from ..xmlio import XFactory, computed_value, lxml_etree
 

@@ -7,7 +7,7 @@ from __future__ import annotations
 
 from postproc.arc_end import SPIRAL, ArcEndRule
 from postproc.dialect import Dialect
-from postproc.state import MM_PER_INCH
+from postproc.ir.state import MM_PER_INCH
 from postproc.setup.machine_setup import MachineSetup
 
 

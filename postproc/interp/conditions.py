@@ -10,7 +10,7 @@ De Morgan, and any other value ``v`` becomes ``v == 0``.
 
 from __future__ import annotations
 
-from ..expr import Binary, Expr, Num, Unary
+from ..ir.expr import Binary, Expr, Num, Unary
 
 _FLIPPED = {"eq": "ne", "ne": "eq", "gt": "le", "le": "gt", "ge": "lt", "lt": "ge",
             "eq_tol": "ne_tol", "ne_tol": "eq_tol"}

@@ -24,7 +24,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Any, ClassVar, Final, Iterator
 
 from ..errors import ConfigError
-from ..expr import Expr, Var, expr_from_xml
+from ..ir.expr import Expr, Var, expr_from_xml
 from ..ir import Section
 from ..xmlio import XAttr, XFactory, lxml_etree, where
 

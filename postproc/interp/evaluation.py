@@ -1,6 +1,6 @@
 """Evaluation of expression trees, with the vacancy rules of each dialect family.
 
-Every neutral operator and function has one semantics (``postproc.expr``); this module is where it is
+Every neutral operator and function has one semantics (``postproc.ir.expr``); this module is where it is
 defined. What was verified, and how ("rs274" = run through ``/usr/bin/rs274``, LinuxCNC 2.9.0~pre1 as
 packaged in Debian 12, with ``(DEBUG, #1)``, pinned in ``tests/test_evaluate.py``; "src" = LinuxCNC
 source ``interp_execute.cc``/``interp_read.cc``/``interp_internal.cc``; "[K]" = Fanuc manual facts from
@@ -81,7 +81,7 @@ from decimal import ROUND_HALF_UP, Decimal
 from typing import Callable
 
 from . import long_double
-from ..expr import Arithmetic, Binary, Env, EvalError, Expr, Func, Num, Unary, Vacancy, Value, Var, VarKey
+from ..ir.expr import Arithmetic, Binary, Env, EvalError, Expr, Func, Num, Unary, Vacancy, Value, Var, VarKey
 
 TOLERANCE_EQUAL = 1e-4
 """LinuxCNC 2.9.0's tolerance for EQ/NE (``eq_tol``/``ne_tol``)."""

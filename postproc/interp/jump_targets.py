@@ -6,7 +6,7 @@ from __future__ import annotations
 from typing import Callable, Iterable
 
 from .control import CONTROL, LABEL, Goto, GotoLabel
-from ..expr import Num
+from ..ir.expr import Num
 from ..ir import Block
 
 

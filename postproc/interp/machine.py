@@ -31,10 +31,10 @@ from .control import (
 )
 from ..errors import PostprocError, ProgramError
 from .evaluation import evaluate, evaluate_number
-from ..expr import EvalError, Expr, Value
+from ..ir.expr import EvalError, Expr, Value
 from .evaluation import var_key
 from ..ir import Block, Comments
-from ..source_map import CallSite, ExecutedBlock, Origin
+from ..ir.source_map import CallSite, ExecutedBlock, Origin
 from .frame import Frame
 from .host import Interrupt
 from .store import Program, source_text

@@ -8,7 +8,7 @@ from __future__ import annotations
 from .control import ModalCall
 from ..errors import Location, PostprocError, ProgramError
 from .evaluation import evaluate, evaluate_number
-from ..expr import EvalError, Expr, Value
+from ..ir.expr import EvalError, Expr, Value
 from ..ir import Block
 from ..setup.machine_setup import Limits
 from .frame import Frame

@@ -17,7 +17,7 @@ from typing import Callable
 from .control import CONTROL, LABEL
 from ..errors import ProgramError
 from ..ir import Block
-from ..source_map import locate
+from ..ir.source_map import locate
 from .rules import STORED_PROGRAMS, SubprogramRules
 from .structure import Structure, source_text
 

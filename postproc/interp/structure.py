@@ -26,9 +26,9 @@ from .control import (
 )
 from ..errors import Location, PostprocError, ProgramError
 from .evaluation import certain_failure
-from ..expr import Expr
+from ..ir.expr import Expr
 from ..ir import Block, Section, one_line
-from ..source_map import locate
+from ..ir.source_map import locate
 from .rules import SubprogramRules
 
 _HEADS: dict[type[Section], type[Section]] = {EndWhile: While, DoWhile: Do, EndRepeat: Repeat, EndFor: For,

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from typing import Callable, Hashable, Protocol, runtime_checkable
 
-from ..expr import Arithmetic, EvalError, Vacancy, Value, VarKey
+from ..ir.expr import Arithmetic, EvalError, Vacancy, Value, VarKey
 
 MACHINE_ONLY = "is known only to the machine: the program cannot be simulated or flattened"
 

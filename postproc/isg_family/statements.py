@@ -17,7 +17,7 @@ from postproc.interp.control import (
     GotoLabel, If, Switch, Until, While,
 )
 from postproc.errors import Location, ParseError, UnsupportedError
-from postproc.expr import Binary, Expr, Func, Num, Var
+from postproc.ir.expr import Binary, Expr, Func, Num, Var
 from postproc.ir import Section
 from postproc.rs274.expressions import ExprSyntaxError, skip_blanks
 

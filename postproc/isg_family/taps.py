@@ -28,7 +28,7 @@ from typing import TYPE_CHECKING, Any, Final
 
 from postproc.context import Context
 from postproc.errors import ProgramError
-from postproc.expr import Expr
+from postproc.ir.expr import Expr
 from postproc.ir import Block, Motion
 from postproc.synchronised_tap import RigidTap
 

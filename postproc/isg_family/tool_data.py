@@ -43,7 +43,7 @@ from ..context import Context
 from ..dialect import Dialect
 from ..interp.control import CONTROL
 from ..errors import Location, PostprocError, UnsupportedError
-from ..expr import Expr
+from ..ir.expr import Expr
 from ..ir import Block, CutterCompensation, DataSetting, DistanceMode, Motion, ToolLengthOffset, Units
 from ..ir.keys import watches_none
 from ..lowering.lower import BlockStep, LoweringStep

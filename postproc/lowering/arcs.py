@@ -35,12 +35,12 @@ from ..arc_end import SPIRAL
 from ..context import Context
 from ..dialect import Dialect
 from ..errors import PostprocError, ProgramError, UnsupportedError, UsageError
-from ..event_order import after_motion
-from ..expr import Expr
+from ..ir.event_order import after_motion
+from ..ir.expr import Expr
 from ..ir import Block, CompoundMotion, Motion, Section
 from ..ir.keys import only_move
 from ..numbers import EXACT
-from ..state import MM_PER_INCH, PLANE_AXES, ModalState, changes_nothing
+from ..ir.state import MM_PER_INCH, PLANE_AXES, ModalState, changes_nothing
 from .lower import BlockStep, LoweringStep, run_blocks
 from .arc_geometry import Arc, chord_points, r_centre_error, r_pieces, signed_radius, split
 

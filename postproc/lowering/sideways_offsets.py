@@ -33,9 +33,9 @@ from ..context import Context
 from ..interp.control import ASSIGN, CONTROL
 from ..dialect import Dialect
 from ..errors import UnsupportedError
-from ..expr import Expr
+from ..ir.expr import Expr
 from ..ir import Block, Comments, CompoundMotion, DataSetting, Motion, Section
-from ..state import MM_PER_INCH
+from ..ir.state import MM_PER_INCH
 from ..synchronised_tap import RigidTap
 from .lower import BlockStep, LoweringStep
 

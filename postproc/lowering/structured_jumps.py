@@ -45,7 +45,7 @@ from ..interp.control import (
 )
 from ..dialect import Dialect
 from ..errors import Location, UnsupportedError
-from ..expr import Binary, Expr, Func, Num, Unary
+from ..ir.expr import Binary, Expr, Func, Num, Unary
 from ..ir import Block, Section
 from .lower import BlockStep, LoweringStep
 

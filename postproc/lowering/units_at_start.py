@@ -23,7 +23,7 @@ from ..interp.control import SubEnd, SubStart
 from ..dialect import Dialect
 from ..ir import Block, Units
 from .lower import BlockStep, LoweringStep
-from ..state import ModalState
+from ..ir.state import ModalState
 from ..syntaxes.power_on_units import HEADER, PLAIN
 
 

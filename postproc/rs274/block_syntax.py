@@ -20,7 +20,7 @@ from mypy_extensions import mypyc_attr
 from typing import Any, ClassVar, Mapping, Final
 
 from postproc.errors import ParseError, ProgramError
-from postproc.expr import Binary, Expr, Num
+from postproc.ir.expr import Binary, Expr, Num
 from postproc.ir import (
     Block, MachineFunction, Coolant, CutterCompensation, CycleCall, CycleCancel, DistanceMode, Dwell, Feed, FeedMode,
     MachineCoordinates, Motion, NativeCode, PathControl, Plane, ProgramControl, ReturnLevel,

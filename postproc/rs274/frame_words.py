@@ -18,7 +18,7 @@ from typing import Any, Final
 
 from ..context import Context
 from ..errors import ProgramError
-from ..expr import Expr
+from ..ir.expr import Expr
 from ..ir import AXES, Block
 from ..frames.section import LAYERED, ROTATE_FIRST, FrameChange
 

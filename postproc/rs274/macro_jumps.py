@@ -34,7 +34,7 @@ from ..interp.control import (
 )
 from ..dialect import Dialect
 from ..errors import UnsupportedError
-from ..expr import Binary, Expr, Num
+from ..ir.expr import Binary, Expr, Num
 from ..ir import Block, Section
 from ..ir.modal import Sequence
 from ..syntaxes.program import HIGHEST_SEQUENCE

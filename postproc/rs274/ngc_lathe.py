@@ -36,9 +36,9 @@ from typing import Any
 
 from postproc.context import Context
 from postproc.errors import ProgramError
-from postproc.expr import Expr
+from postproc.ir.expr import Expr
 from postproc.ir import Block, Motion
-from postproc.lathe_sections import SpindleClamp, SpindleMode, ThreadLead, XProgramming
+from postproc.ir.lathe_sections import SpindleClamp, SpindleMode, ThreadLead, XProgramming
 from postproc.rs274.codes import g_key
 from postproc.thread_lead import lead_along_major
 

@@ -32,7 +32,7 @@ from typing import TYPE_CHECKING, Any, ClassVar
 
 from postproc.context import Context
 from postproc.dialect import Dialect
-from postproc.expr import Expr
+from postproc.ir.expr import Expr
 from postproc.ir import Block, Motion
 from postproc.thread_lead import lead_along_path, major_is_z
 

@@ -56,7 +56,7 @@ from ..interp.control import (
     Return, SubEnd, SubStart, While,
 )
 from ..errors import UnsupportedError
-from ..expr import Expr, Num, Var
+from ..ir.expr import Expr, Num, Var
 from ..ir import ProgramStart, Section
 from .expressions import (
     LINUXCNC_SPELLING, ExprSyntaxError, parse_condition, parse_word_value, skip_blanks, spell_condition,

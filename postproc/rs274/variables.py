@@ -13,7 +13,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Callable, Final, Hashable
 
-from ..expr import Arithmetic, EvalError, Vacancy, Value, VarKey
+from ..ir.expr import Arithmetic, EvalError, Vacancy, Value, VarKey
 from ..interp.variables import MACHINE_ONLY, ProgramAlarm, SystemRanges, system_variable
 
 if TYPE_CHECKING:  # an annotation only: the frames are loaded where a run evaluates them

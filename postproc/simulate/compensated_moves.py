@@ -17,7 +17,7 @@ from ..errors import PostprocError, ProgramError, UnsupportedError
 from ..geometry import CENTRE_KEYS
 from ..ir import Block
 from ..lowering.inverse_time import move_length
-from ..state import PLANE_AXES
+from ..ir.state import PLANE_AXES
 from .events import LATHE_TOOL_OFFSET, Event, num
 from .move_record import Emitted, MoveRecord
 from .position import LENGTH_AXIS, Position

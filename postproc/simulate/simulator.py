@@ -16,10 +16,10 @@ from ..compensation.tool_length import AXIS as _AXIS
 from ..context import Context
 from ..cycles.lathe_lowering import lathe_tool
 from ..errors import PostprocError, ProgramError, UnsupportedError
-from ..event_order import after_motion
-from ..expr import Expr
+from ..ir.event_order import after_motion
+from ..ir.expr import Expr
 from ..ir import Block, MachineFunction, Motion, Section
-from ..state import MM_PER_INCH, MODAL_KEYS as _MODAL
+from ..ir.state import MM_PER_INCH, MODAL_KEYS as _MODAL
 from .events import LATHE_TOOL_OFFSET, UNEVALUATED, UNSIMULATED, Event, num, _setting_text
 from .move_record import Emitted, MoveRecord
 from .moves import PATH_CONTROL, Moves

@@ -20,12 +20,12 @@ from postproc.block_rules import ZERO_FEED, ArcError, arc_centre, check_values, 
 from postproc.interp.control import ASSIGN, CONTROL
 from postproc.arc_end import SPIRAL, TARGET_ARC_END, ArcEndRule
 from postproc.errors import ProgramError, UnsupportedError
-from postproc.event_order import MOVING, after_motion
+from postproc.ir.event_order import MOVING, after_motion
 from postproc.geometry import ARC_TOLERANCE_MM, PLACES
-from postproc.expr import Expr
+from postproc.ir.expr import Expr
 from postproc.ir import Block, Motion
 from postproc.ir.keys import only_move
-from postproc.state import LEFT_START, MM_PER_INCH, MODAL_KEYS, PLANE_AXES
+from postproc.ir.state import LEFT_START, MM_PER_INCH, MODAL_KEYS, PLANE_AXES
 from postproc.context import Context
 from postproc.syntax import Syntax
 from postproc.syntaxes.power_on_units import KEY as _POWER_ON_UNITS, take_power_on_units

@@ -22,7 +22,7 @@ from mypy_extensions import mypyc_attr
 
 from ..interp.control import ASSIGN, CONTROL, Call, ModalCall
 from ..errors import ConfigError, Diagnostics, ErrorLevel, PostprocError
-from ..expr import Expr, Var
+from ..ir.expr import Expr, Var
 from ..ir import AXES, Block, Sequence
 from ..ir.keys import only_move
 from ..context import Context

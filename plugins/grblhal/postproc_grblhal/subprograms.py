@@ -25,7 +25,7 @@ from postproc.context import Context
 from postproc.interp.control import ASSIGN, CONTROL, Call, EndRepeat, Repeat, Return, SubEnd, SubStart
 from postproc.dialect import Dialect
 from postproc.errors import UnsupportedError
-from postproc.expr import Expr, Num
+from postproc.ir.expr import Expr, Num
 from postproc.ir import Block
 from postproc.lowering.lower import BlockStep, LoweringStep
 

@@ -43,7 +43,7 @@ from postproc.interp.control import Assign, Break, Call, Continue, Do, DoWhile, 
     If, Repeat, Return, SubEnd, SubStart, While
 from postproc.cycles.section import WORD_ORDER
 from postproc.dialect import Dialect
-from postproc.expr import Expr, Num
+from postproc.ir.expr import Expr, Num
 from postproc.grbl_family.writer import GrblFamilyWriter
 from postproc.ir import Block, Motion
 from postproc.rs274.codes import CodeTable

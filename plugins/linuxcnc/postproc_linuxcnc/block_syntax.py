@@ -13,7 +13,7 @@ from typing import Any, ClassVar, Mapping
 from postproc.compensation.dynamic import DynamicCutterCompensation
 from postproc.context import Context
 from postproc.errors import ProgramError
-from postproc.expr import Expr
+from postproc.ir.expr import Expr
 from postproc.ir import Block, NativeCode, PathControl
 from postproc.rs274.codes import CodeTable, g_key
 from postproc.rs274 import ngc_lathe as lathe

@@ -21,7 +21,7 @@ from __future__ import annotations
 
 from postproc.interp.control import Call, Return
 from postproc.errors import Location, ParseError
-from postproc.expr import Expr, Num
+from postproc.ir.expr import Expr, Num
 from postproc.ir import Block
 
 INTEGER_TOLERANCE = 0.0001

@@ -17,7 +17,7 @@ from typing import Any
 
 from postproc.context import Context
 from postproc.errors import ProgramError
-from postproc.expr import Expr
+from postproc.ir.expr import Expr
 from postproc.ir import Block, Motion
 from postproc.rs274.codes import g_key
 from postproc.synchronised_tap import RigidTap

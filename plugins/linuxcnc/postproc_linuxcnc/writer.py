@@ -39,7 +39,7 @@ from postproc.interp.control import (
     Assign, Break, Call, Continue, Do, DoWhile, Else, ElseIf, EndFor, EndIf, EndRepeat, EndWhile, For, If, Repeat,
     Return, SubEnd, SubStart, While,
 )
-from postproc.expr import Binary, Expr, Num, Var
+from postproc.ir.expr import Binary, Expr, Num, Var
 from postproc.rs274.codes import CodeTable
 from postproc.rs274.expressions import LINUXCNC_SPELLING, ExprSpelling
 from postproc.rs274.oword import spell_assignments, spell_oword

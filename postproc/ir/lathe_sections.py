@@ -11,8 +11,8 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Any, ClassVar
 
 from .expr import Expr
-from .ir import Section
-from .xmlio import XAttr, XFactory, computed_value, decode, encode, lxml_etree
+from . import Section
+from ..xmlio import XAttr, XFactory, computed_value, decode, encode, lxml_etree
 
 if TYPE_CHECKING:  # annotations only: lxml is imported where XML is read or written (postproc.xmlio)
     from lxml import etree

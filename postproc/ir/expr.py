@@ -15,8 +15,8 @@ from __future__ import annotations
 import enum
 from typing import TYPE_CHECKING, Any, Protocol, Union
 
-from .errors import ConfigError, ProgramError
-from .xmlio import register_computed_value_reader, XFactory, XmlNode, where, lxml_etree
+from ..errors import ConfigError, ProgramError
+from ..xmlio import register_computed_value_reader, XFactory, XmlNode, where, lxml_etree
 
 if TYPE_CHECKING:  # annotations only: lxml is imported where XML is read or written (postproc.xmlio)
     from lxml import etree
