@@ -10,7 +10,7 @@ from typing import Callable, Iterable, Iterator, TextIO
 from . import native
 native.install()  # the compiled hot path, before any of its modules is imported
 
-from .arc_end import SPIRAL, TARGET_ARC_END
+from .geometry.arc_end import SPIRAL, TARGET_ARC_END
 from .lowering.feed_first import check_blocks
 from .interp.control import GotoLabel
 from .dialect import Dialect

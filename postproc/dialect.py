@@ -11,7 +11,7 @@ import abc
 from pathlib import Path
 from typing import TYPE_CHECKING, Callable, ClassVar, Generic, Iterable, Iterator, Mapping, Protocol, TypeVar, cast
 
-from .arc_end import NEUTRAL_ARC_END, ArcEndRule
+from .geometry.arc_end import NEUTRAL_ARC_END, ArcEndRule
 from .comments import CommentSyntax
 from .errors import Diagnostics
 from .output.line_format import LineRule
@@ -162,7 +162,7 @@ class Dialect:
     simulation; None: compensation is not simulated for this dialect (``verify`` compares the setting)."""
     ARC_END: ClassVar[ArcEndRule] = NEUTRAL_ARC_END
     """How far the controller lets an I/J/K arc's end point lie off the circle through its start, in the
-    program's units, and which path it then runs (``postproc.arc_end``): the reading pipeline and the
+    program's units, and which path it then runs (``postproc.geometry.arc_end``): the reading pipeline and the
     simulator judge each arc by the reading dialect's rule, ``verify`` a translation's by the target's."""
     R_ARC_FLOAT_SLACK: ClassVar[float] = 0.0
     """Where the controller refuses an R arc whose chord exceeds 2R by any amount, reckoned in its own

@@ -11,7 +11,7 @@ import pytest
 from postproc.errors import ConfigError, ErrorList, ProgramError
 from postproc.setup.machine_setup import load_setup
 from postproc.commands.export import write_jsonl
-from postproc.geometry import MAX_ARC_POINTS, arc_points, centre_from_radius
+from postproc.geometry.arcs import MAX_ARC_POINTS, arc_points, centre_from_radius
 from postproc.simulate.toolpath import toolpath_events
 from postproc.simulate.verify import verify_lines
 

@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING, Callable
 
 from postproc.context import Context
 from postproc.comments import CommentSyntax
-from postproc.arc_end import NEAREST_CENTRE, ArcEndRule
+from postproc.geometry.arc_end import NEAREST_CENTRE, ArcEndRule
 from postproc.ir.state import MM_PER_INCH
 from postproc.dialect import Dialect, Lazy, Reader
 from postproc.rs274.cycle_semantics import FANUC as FANUC_CYCLES

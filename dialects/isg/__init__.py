@@ -12,7 +12,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Callable
 
 from postproc.comments import CommentSyntax
-from postproc.arc_end import NEAREST_CENTRE, ArcEndRule
+from postproc.geometry.arc_end import NEAREST_CENTRE, ArcEndRule
 from postproc.ir.state import MM_PER_INCH
 from postproc.dialect import Dialect, Lazy, Reader
 from postproc.hookspecs import hookimpl

@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING, Callable
 
 from postproc.comments import CommentSyntax
 from postproc.cycle_words import CycleWords
-from postproc.arc_end import SPIRAL, ArcEndRule
+from postproc.geometry.arc_end import SPIRAL, ArcEndRule
 from postproc.dialect import Dialect, Lazy, Reader, ResolvedCycle
 from postproc.rs274.cycle_semantics import FANUC as FANUC_CYCLES
 from postproc.hookspecs import hookimpl

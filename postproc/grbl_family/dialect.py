@@ -5,7 +5,7 @@ steps to ask a target. A build of a grbl-family controller chooses its features 
 
 from __future__ import annotations
 
-from postproc.arc_end import SPIRAL, ArcEndRule
+from postproc.geometry.arc_end import SPIRAL, ArcEndRule
 from postproc.dialect import Dialect
 from postproc.ir.state import MM_PER_INCH
 from postproc.setup.machine_setup import MachineSetup

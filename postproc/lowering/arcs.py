@@ -31,7 +31,7 @@ from typing import Final, Iterator
 
 from mypy_extensions import mypyc_attr
 
-from ..arc_end import SPIRAL
+from ..geometry.arc_end import SPIRAL
 from ..context import Context
 from ..dialect import Dialect
 from ..errors import PostprocError, ProgramError, UnsupportedError, UsageError
@@ -87,7 +87,7 @@ def parse_arc_option(text: str) -> ArcOption:
 @mypyc_attr(allow_interpreted_subclasses=True)
 class SettleArcEnds(LoweringStep):
     """The lowered program with each I/J/K arc written about the centre the source's controller turns it
-    about where that controller moves the programmed one (``postproc.arc_end.START_RADIUS``): the target's
+    about where that controller moves the programmed one (``postproc.geometry.arc_end.START_RADIUS``): the target's
     controller then runs a circle through both ends, the source's path exactly. A pass over the program only
     for such a source; a spiral source whose arc the target's controller would refuse is refused where it is
     read (``postproc.syntaxes.modal_state``, ``TARGET_ARC_END``).

@@ -28,7 +28,7 @@ from ..context import Context
 from ..dialect import INVERSE_TIME_KEY, Dialect
 from ..errors import UnsupportedError
 from ..ir.expr import Expr
-from ..geometry import arc_sweep
+from ..geometry.arcs import arc_sweep
 from ..ir import Block, Feed, FeedMode, Motion
 from ..ir.state import MM_PER_INCH, PLANE_AXES
 

@@ -20,7 +20,7 @@ planner's distance per revolution along the path]:
   is off waits for the next G96). G96 needs S: the surface speed in force is written where the block has
   none.
 * A thread move is ``G33 X.. Z.. K..``, K the distance per revolution along the path
-  (``postproc.thread_lead``). G33 refuses an F beside it, so a thread block's F goes on a line of its own
+  (``postproc.geometry.thread_lead``). G33 refuses an F beside it, so a thread block's F goes on a line of its own
   before it (``feed_apart``, a lowering step); F is then the lead, as the source's F is. A thread whose
   major axis is X (a face thread) is refused: LinuxCNC's K along such a path in diameter mode is not in
   our sources [?].
@@ -34,7 +34,7 @@ from postproc.context import Context
 from postproc.dialect import Dialect
 from postproc.ir.expr import Expr
 from postproc.ir import Block, Motion
-from postproc.thread_lead import lead_along_path, major_is_z
+from postproc.geometry.thread_lead import lead_along_path, major_is_z
 
 from postproc.lowering.lower import BlockStep, LoweringStep
 

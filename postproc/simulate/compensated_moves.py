@@ -14,7 +14,7 @@ from ..compensation.geometry_for import cutter_for
 from ..compensation.rules import CutterRules
 from ..context import Context
 from ..errors import PostprocError, ProgramError, UnsupportedError
-from ..geometry import CENTRE_KEYS
+from ..geometry.arcs import CENTRE_KEYS
 from ..ir import Block
 from ..lowering.inverse_time import move_length
 from ..ir.state import PLANE_AXES

@@ -17,7 +17,7 @@ from ..compensation.tool_table import ToolTable
 from ..context import Context
 from ..errors import Location, ProgramError
 from ..ir.expr import Expr
-from ..geometry import CENTRE_KEYS
+from ..geometry.arcs import CENTRE_KEYS
 from ..ir import Block, DataSetting
 from ..ir.verbatim import STORED_WORK_OFFSET
 from ..lowering.program_end import EndTracker

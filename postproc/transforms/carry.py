@@ -47,7 +47,7 @@ from ..cycles.section import CannedCycle
 from ..cycles.semantics import PECK
 from ..errors import PostprocError, ProgramError
 from ..ir.expr import Expr
-from ..geometry import centre_from_radius
+from ..geometry.arcs import centre_from_radius
 from ..frames.affine import EXACT, INDEX, XYZ, Affine
 from ..frames.frame import PLANE_AXES
 from ..frames.section import FrameChange

@@ -32,7 +32,7 @@ from postproc.errors import Location, ProgramError
 from postproc.ir.expr import Expr
 from postproc.interp import spell_number
 from postproc.ir import Block
-from postproc.polar import clean as _clean, polar_absolute as _absolute, polar_turned as _turned
+from postproc.geometry.polar import clean as _clean, polar_absolute as _absolute, polar_turned as _turned
 from postproc.syntax import Syntax
 
 POLAR: Final = ("@", "^")
