@@ -25,7 +25,7 @@ from .syntaxes.program import HIGHEST_SEQUENCE, RUN_CHECK, TARGET_OMITS_VACANT, 
 from .lowering.sequences import Sequences
 from .setup.machine_setup import MachineSetup
 from .ir.source_map import OutputMap
-from .syntax import Pipeline
+from .syntaxes.syntax import Pipeline
 from .context import Context
 from .frames.lowering import EVALUATE_KEY
 from .frames.parameters import frame_parameter_read

@@ -28,7 +28,7 @@ def postproc_register_xml(factory: XFactory) -> None:
     from .ir.lathe_sections import register_lathe_sections
     from .rs274 import cycle_semantics as cycle_semantics  # registers the family's hole-cycle rules by name (an IR file names them)
     from .setup.machine_setup import MachineSetup
-    from .syntax import Pipeline
+    from .syntaxes.syntax import Pipeline
     from .syntaxes.modal_state import ModalStateSyntax
     from .syntaxes.program import ProgramSyntax
     register_sections(factory)

@@ -12,14 +12,14 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Callable, ClassVar, Generic, Iterable, Iterator, Mapping, Protocol, TypeVar, cast
 
 from .geometry.arc_end import NEUTRAL_ARC_END, ArcEndRule
-from .comments import CommentSyntax
+from .syntaxes.comments import CommentSyntax
 from .errors import Diagnostics
 from .output.line_format import LineRule
 from .ir import Block
 from .setup.machine_setup import MachineSetup
 from .context import Context
 from .cycle_words import CycleWords
-from .syntax import Pipeline, load_pipeline
+from .syntaxes.syntax import Pipeline, load_pipeline
 from .syntaxes.power_on_units import KEY as POWER_ON_UNITS
 from .output.writer_base import Writer as Writer
 
@@ -40,7 +40,7 @@ class Reader(abc.ABC):
 
     BLANKS: ClassVar[str] = ""
     """Characters outside ASCII that this reader reads as blanks (ISG: the no-break space of programs
-    copied from web pages). The line check (``postproc.lines``) lets them through; the reader says so."""
+    copied from web pages). The line check (``postproc.syntaxes.lines``) lets them through; the reader says so."""
 
     def __init__(self, ctx: Context) -> None:
         self.ctx = ctx
@@ -285,7 +285,7 @@ class Dialect:
     """The reader takes lower-case addresses (``g1 x10``): the set-up's ``<Output case="lower">`` is
     refused otherwise."""
     COMMENTS: ClassVar[CommentSyntax] = CommentSyntax(parens=False)
-    """How the controller writes comments (``postproc.comments``): what text is safe inside one, and where
+    """How the controller writes comments (``postproc.syntaxes.comments``): what text is safe inside one, and where
     a line's comments are. The values a set-up template writes stand only inside a comment
     (``postproc.output.template_values``); the default knows no comment, so a dialect that declares none has
     every such value refused."""

@@ -37,7 +37,7 @@ def test_setup_floats_must_be_finite(tmp_path: Path, element: str, value: str) -
 def test_a_coordinate_beyond_the_float_range_cannot_be_simulated() -> None:
     with pytest.raises(ErrorList) as exc:
         list(toolpath_events(io.StringIO(f"G21 G90\nG0 X{BEYOND}\n"), file="big.nc", dialect="fanuc"))
-    # refused before it is read: no number of more than 30 digits reaches the simulator (postproc.lines)
+    # refused before it is read: no number of more than 30 digits reaches the simulator (postproc.syntaxes.lines)
     assert [str(e) for e in exc.value.errors] == [
         "big.nc:2:5: error: a number with more than 30 digits cannot be read"]
 

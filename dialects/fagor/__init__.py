@@ -12,7 +12,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Callable
 
 from postproc.context import Context
-from postproc.comments import CommentSyntax
+from postproc.syntaxes.comments import CommentSyntax
 from postproc.geometry.arc_end import NEAREST_CENTRE, ArcEndRule
 from postproc.ir.state import MM_PER_INCH
 from postproc.dialect import Dialect, Lazy, Reader
@@ -22,7 +22,7 @@ from postproc.hookspecs import hookimpl
 from postproc.lowering.lower import BlockStep, LoweringStep
 from postproc.rs274.order_of_execution import stops_before_motion
 from postproc.setup.machine_setup import MachineSetup
-from postproc.syntax import Pipeline
+from postproc.syntaxes.syntax import Pipeline
 from postproc.output.writer_base import Writer
 from postproc.xmlio import XFactory
 

@@ -82,7 +82,7 @@ from postproc.cycles.section import CannedCycle
 from postproc.errors import ProgramError
 from postproc.ir import Feed, NativeCode, Section
 from postproc.ir.state import MM_PER_INCH
-from postproc.syntax import Syntax
+from postproc.syntaxes.syntax import Syntax
 from postproc.xmlio import XAttr
 
 from .deep_hole import Unconfirmed, deep_hole

@@ -19,7 +19,7 @@ from postproc.ir import Block, CompoundMotion, Dwell, Feed, Motion, ProgramContr
 from postproc.ir import SpindleOrientation
 from postproc.ir.state import PLANE_AXES
 from postproc.context import Context
-from postproc.syntax import Syntax
+from postproc.syntaxes.syntax import Syntax
 
 from .section import CannedCycle
 from .semantics import Semantics, semantics_named, semantics_names

@@ -28,7 +28,7 @@ from postproc.setup.machine_setup import CycleSettings
 from postproc.ir.source_map import ExecutedBlock
 from postproc.ir.state import MM_PER_INCH, PLANE_AXES, CycleState, ModalState
 from postproc.context import Context
-from postproc.syntax import Syntax
+from postproc.syntaxes.syntax import Syntax
 from postproc.xmlio import DEFAULT, lxml_etree
 
 from .back_boring import BackBoringExpansion

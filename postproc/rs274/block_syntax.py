@@ -29,7 +29,7 @@ from postproc.ir import (
 )
 from postproc.context import Context
 from .frame_words import read_frame
-from postproc.syntax import Syntax
+from postproc.syntaxes.syntax import Syntax
 
 from .codes import CodeTable, g_key
 from .machine_codes import Defaults, machine_table

@@ -30,7 +30,7 @@ from postproc.ir.expr import Expr
 from postproc.ir import (Block, CompoundMotion, CutterCompensation, CycleCall, DataSetting, MachineFunction, Motion,
                          NativeCode, Sequence)
 from postproc.ir.lathe_sections import InProfile, LatheCycle
-from postproc.syntax import Syntax
+from postproc.syntaxes.syntax import Syntax
 
 from .lathe_words import defaults, read_cycle
 

@@ -27,7 +27,7 @@ from postproc.ir import Block, Motion
 from postproc.ir.keys import only_move
 from postproc.ir.state import LEFT_START, MM_PER_INCH, MODAL_KEYS, PLANE_AXES
 from postproc.context import Context
-from postproc.syntax import Syntax
+from postproc.syntaxes.syntax import Syntax
 from postproc.syntaxes.power_on_units import KEY as _POWER_ON_UNITS, take_power_on_units
 
 _CONTROL: Final = CONTROL

@@ -42,7 +42,7 @@ from __future__ import annotations
 
 from typing import Callable, ClassVar, Mapping, TYPE_CHECKING
 
-from postproc.comments import CommentSyntax
+from postproc.syntaxes.comments import CommentSyntax
 from postproc.dialect import Dialect, Lazy, Reader, ResolvedCycle
 from postproc.rs274.cycle_semantics import RS274 as RS274_CYCLES
 from postproc.grbl_family.dialect import GrblFamily
@@ -54,7 +54,7 @@ from postproc.output.writer_base import Writer
 from postproc.rs274.cycle_words import rs274_cycle_words
 from postproc.rs274.order_of_execution import stops_after_motion
 from postproc.setup.machine_setup import MachineSetup
-from postproc.syntax import Pipeline
+from postproc.syntaxes.syntax import Pipeline
 from postproc.xmlio import XFactory
 
 from .codes import CODES

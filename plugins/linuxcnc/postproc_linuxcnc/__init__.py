@@ -28,7 +28,7 @@ from postproc.setup.machine_setup import MachineSetup
 from postproc.context import Context
 from postproc.rs274.cycle_words import rs274_cycle_words
 from postproc.rs274.variables import NGC_POSITION_READS
-from postproc.syntax import Pipeline
+from postproc.syntaxes.syntax import Pipeline
 from postproc.output.writer_base import Writer
 from postproc.xmlio import XFactory
 

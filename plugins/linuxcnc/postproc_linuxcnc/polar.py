@@ -33,7 +33,7 @@ from postproc.ir.expr import Expr
 from postproc.interp import spell_number
 from postproc.ir import Block
 from postproc.geometry.polar import clean as _clean, polar_absolute as _absolute, polar_turned as _turned
-from postproc.syntax import Syntax
+from postproc.syntaxes.syntax import Syntax
 
 POLAR: Final = ("@", "^")
 """The polar addresses: radius, angle."""
