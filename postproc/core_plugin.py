@@ -21,7 +21,7 @@ if TYPE_CHECKING:
 def postproc_register_xml(factory: XFactory) -> None:
     from . import cycles, patterns
     from .interp.control import register_control
-    from .synchronised_tap import RigidTap
+    from .lowering.synchronised_tap import RigidTap
     from .ir.expr import register_expressions
     from .frames import register_frames
     from .ir import register_sections

@@ -136,7 +136,7 @@ class Dialect:
     ``Cycles orientation`` otherwise)."""
     SYNCHRONISED_TAP: ClassVar[bool] = False
     """The controller writes a rigid tap as one spindle-synchronised move (LinuxCNC's G33.1,
-    ``postproc.synchronised_tap``): a rigid tap cycle of another family is written with it; without it such
+    ``postproc.lowering.synchronised_tap``): a rigid tap cycle of another family is written with it; without it such
     a tap is refused."""
     TAP_STROKES: ClassVar[bool] = False
     """The controller programs a rigid tap as two synchronised strokes, in and out with the spindle reversed
@@ -151,7 +151,7 @@ class Dialect:
     (``postproc.cycles.rigid_tap_lowering``); empty: none said."""
     RIGID_TAP_CODE: ClassVar[str] = ""
     """The machine code that makes the tap cycles after it rigid (Fanuc ``M29 S..``): a synchronised tap of
-    another family is written as that code and a tap cycle (``postproc.synchronised_tap``); '' for none."""
+    another family is written as that code and a tap cycle (``postproc.lowering.synchronised_tap``); '' for none."""
     DWELL_UNIT: ClassVar[str] = "seconds"
     """Unit of the dwell time the writer emits: "seconds" (a decimal number) or "milliseconds" (a whole
     number)."""

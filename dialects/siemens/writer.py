@@ -33,7 +33,7 @@ from typing import Any, ClassVar
 from postproc.context import Context
 from postproc.interp.control import ASSIGN, CONTROL, LABEL
 from postproc.cycles.section import CannedCycle
-from postproc.synchronised_tap import RigidTap
+from postproc.lowering.synchronised_tap import RigidTap
 from postproc.dialect import Dialect
 from postproc.compensation.tool_table import ToolTable
 from postproc.errors import PostprocError, UnsupportedError

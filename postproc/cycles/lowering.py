@@ -38,7 +38,7 @@ from postproc.context import DROPPED_MOVES, Context
 from postproc.interp.control import CONTROL, LABEL
 from postproc.ir.source_map import ExecutedBlock
 
-from postproc.synchronised_tap import RigidTap
+from postproc.lowering.synchronised_tap import RigidTap
 
 from .resolve import peck_clearance_mm
 from .section import CannedCycle

@@ -6,7 +6,7 @@ from mypy_extensions import mypyc_attr
 
 from postproc.ir import SpindleControl
 from postproc.ir.state import PLANE_AXES
-from postproc.synchronised_tap import RigidTap
+from postproc.lowering.synchronised_tap import RigidTap
 
 from .expansion import CycleExpansion, ToolPath, rules_of
 from .section import CannedCycle

@@ -36,7 +36,7 @@ from ..errors import UnsupportedError
 from ..ir.expr import Expr
 from ..ir import Block, Comments, CompoundMotion, DataSetting, Motion, Section
 from ..ir.state import MM_PER_INCH
-from ..synchronised_tap import RigidTap
+from .synchronised_tap import RigidTap
 from .lower import BlockStep, LoweringStep
 
 _UNREWRITTEN: Final = {"CannedCycle": "a canned cycle kept for the target", "FrameChange": "a frame command",

@@ -458,7 +458,7 @@ class Simulator(Moves):
             self.sync = None
 
     def rigid_tap(self, block: Block, tap: Any, absolute: bool, emit: Callable[[Emitted], None]) -> None:
-        """A spindle-synchronised tap (``postproc.synchronised_tap``): a ``tap`` move to the end point and
+        """A spindle-synchronised tap (``postproc.lowering.synchronised_tap``): a ``tap`` move to the end point and
         one back to the start, ``f`` the pitch in mm/rev; a dwell between them if the tap has one."""
         if self.cutter is not None and self.cutter.side is not None:
             raise ProgramError("a rigid tap with cutter compensation on cannot be run (cancel it first)",

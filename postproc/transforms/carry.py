@@ -54,7 +54,7 @@ from ..frames.section import FrameChange
 from ..ir import Block, CompoundMotion, CutterCompensation, DataSetting, Motion, Section
 from ..ir.lathe_sections import CoordinateSet, LatheCycle
 from ..ir.state import MM_PER_INCH, ModalState
-from ..synchronised_tap import RigidTap
+from ..lowering.synchronised_tap import RigidTap
 from .spec import ProgramTransform
 from .words import COMPUTED, COMPUTES, INERT, SYMBOLIC, cycle_roles, named
 

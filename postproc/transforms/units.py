@@ -32,7 +32,7 @@ from ..ir.lathe_sections import CoordinateSet, InProfile, LatheCycle, SpindleMod
 from ..ir import (Block, CompoundMotion, DataSetting, Feed, Motion, NativeCode, PathControl, Section, SpindleSpeed,
                   ToolLengthOffset, Units)
 from ..ir.state import MM_PER_INCH
-from ..synchronised_tap import RigidTap
+from ..lowering.synchronised_tap import RigidTap
 from .carry import native
 from .words import COMPUTED, COMPUTES, INERT, SYMBOLIC, cycle_roles, named, respell
 

@@ -20,7 +20,7 @@ from postproc.errors import ProgramError
 from postproc.ir.expr import Expr
 from postproc.ir import Block, Motion
 from postproc.rs274.codes import g_key
-from postproc.synchronised_tap import RigidTap
+from postproc.lowering.synchronised_tap import RigidTap
 
 MODE = "rigid_tap"
 """The motion mode of the code table's G33.1 row (never left in the IR: ``read_rigid_tap`` replaces it)."""

@@ -198,7 +198,7 @@ class LinuxcncWriter(WordWriter):
         return words
 
     def rigid_tap_words(self, s: Any, block: Block) -> list[str]:
-        """``G33.1 Z.. K..`` (``postproc.synchronised_tap``): the end point, K the pitch, I the way out's
+        """``G33.1 Z.. K..`` (``postproc.lowering.synchronised_tap``): the end point, K the pitch, I the way out's
         speed factor. Inside an expansion the end point is absolute (G90 first, when incremental). G33.1 has
         no dwell at the bottom [V: g-code.adoc, the tap reverses on reaching the end point]."""
         if s.dwell:
