@@ -37,7 +37,7 @@ from postproc.syntaxes.comments import CommentSyntax
 from postproc.dialect import Dialect, Lazy, Reader
 from postproc.grbl_family.dialect import GrblFamily
 from postproc.hookspecs import hookimpl
-from postproc.lowering.lower import BlockStep, LoweringStep
+from postproc.lowering.lazy_step import LazyStep
 from postproc.output.line_format import LineRule
 from postproc.rs274.cycle_words import rs274_cycle_words
 from postproc.setup.machine_setup import MachineSetup
@@ -51,45 +51,12 @@ if TYPE_CHECKING:
     from postproc.context import Context
 
 
-class _WriteToolLengths(LoweringStep):
-    """``postproc.grbl_family.lengths.write_tool_lengths``, imported when a translation first lowers for grbl."""
-
-    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
-        from postproc.grbl_family.lengths import write_tool_lengths as step
-        return step.start(ctx, target)
+write_tool_lengths = LazyStep("postproc.grbl_family.lengths:write_tool_lengths")
+drop_resolved_tool_data = LazyStep("postproc.grbl_family.lengths:drop_resolved_tool_data")
+lower_for_lean_controller = LazyStep("postproc.rs274.lean_controller:lower_for_lean_controller")
 
 
-class _DropResolvedToolData(LoweringStep):
-    """``postproc.grbl_family.lengths.drop_resolved_tool_data``, imported when a translation first lowers for grbl."""
-
-    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
-        from postproc.grbl_family.lengths import drop_resolved_tool_data as step
-        return step.start(ctx, target)
-
-
-class _LowerForLeanController(LoweringStep):
-    """``postproc.rs274.lean_controller.lower_for_lean_controller``, imported when a translation first lowers
-    for grbl."""
-
-    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
-        from postproc.rs274.lean_controller import lower_for_lean_controller as step
-        return step.start(ctx, target)
-
-
-write_tool_lengths = _WriteToolLengths()
-drop_resolved_tool_data = _DropResolvedToolData()
-lower_for_lean_controller = _LowerForLeanController()
-
-
-class _ResolveCutterCompensation(LoweringStep):
-    """``postproc.lowering.cutter_compensation.resolve_cutter_compensation``, imported when first used."""
-
-    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
-        from postproc.lowering.cutter_compensation import resolve_cutter_compensation as step
-        return step.start(ctx, target)
-
-
-resolve_cutter_compensation = _ResolveCutterCompensation()
+resolve_cutter_compensation = LazyStep("postproc.lowering.cutter_compensation:resolve_cutter_compensation")
 
 
 class Grbl(GrblFamily):

@@ -47,7 +47,7 @@ from postproc.dialect import Dialect, Lazy, Reader, ResolvedCycle
 from postproc.rs274.cycle_semantics import RS274 as RS274_CYCLES
 from postproc.grbl_family.dialect import GrblFamily
 from postproc.hookspecs import hookimpl
-from postproc.lowering.lower import BlockStep, LoweringStep
+from postproc.lowering.lazy_step import LazyStep
 from postproc.lowering.program_end import comment_numbered_subs_after_end
 from postproc.output.line_format import LineRule
 from postproc.output.writer_base import Writer
@@ -63,72 +63,15 @@ if TYPE_CHECKING:
     from postproc.context import Context
 
 
-class _WriteToolLengths(LoweringStep):
-    """``postproc.grbl_family.lengths.write_tool_lengths``, imported when a translation first lowers for grblHAL."""
-
-    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
-        from postproc.grbl_family.lengths import write_tool_lengths as step
-        return step.start(ctx, target)
+write_tool_lengths = LazyStep("postproc.grbl_family.lengths:write_tool_lengths")
+drop_resolved_tool_data = LazyStep("postproc.grbl_family.lengths:drop_resolved_tool_data")
+close_full_circles = LazyStep("postproc.rs274.lean_controller:close_full_circles")
 
 
-class _DropResolvedToolData(LoweringStep):
-    """``postproc.grbl_family.lengths.drop_resolved_tool_data``, imported when a translation first lowers for grblHAL."""
-
-    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
-        from postproc.grbl_family.lengths import drop_resolved_tool_data as step
-        return step.start(ctx, target)
-
-
-class _CloseFullCircles(LoweringStep):
-    """``postproc.rs274.lean_controller.close_full_circles``, imported when a translation first lowers for
-    grblHAL."""
-
-    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
-        from postproc.rs274.lean_controller import close_full_circles as step
-        return step.start(ctx, target)
-
-
-write_tool_lengths = _WriteToolLengths()
-drop_resolved_tool_data = _DropResolvedToolData()
-close_full_circles = _CloseFullCircles()
-
-
-class _CancelCyclesAlone(LoweringStep):
-    """``cancels.cancel_cycles_alone``, imported when a translation first lowers for grblHAL."""
-
-    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
-        from .cancels import cancel_cycles_alone as step
-        return step.start(ctx, target)
-
-
-class _ResolveCutterCompensation(LoweringStep):
-    """``postproc.lowering.cutter_compensation.resolve_cutter_compensation``, imported when first used."""
-
-    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
-        from postproc.lowering.cutter_compensation import resolve_cutter_compensation as step
-        return step.start(ctx, target)
-
-
-class _ThreadFeedApart(LoweringStep):
-    """``postproc.rs274.ngc_lathe_writer.feed_apart``, imported when a translation first lowers for grblHAL."""
-
-    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
-        from postproc.rs274.ngc_lathe_writer import feed_apart as step
-        return step.start(ctx, target)
-
-
-class _SubprogramsAsSubs(LoweringStep):
-    """``subprograms.subprograms_as_subs``, imported when a translation first lowers for grblHAL."""
-
-    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
-        from .subprograms import subprograms_as_subs as step
-        return step.start(ctx, target)
-
-
-cancel_cycles_alone = _CancelCyclesAlone()
-resolve_cutter_compensation = _ResolveCutterCompensation()
-thread_feed_apart = _ThreadFeedApart()
-subprograms_as_subs = _SubprogramsAsSubs()
+cancel_cycles_alone = LazyStep(f"{__name__}.cancels:cancel_cycles_alone")
+resolve_cutter_compensation = LazyStep("postproc.lowering.cutter_compensation:resolve_cutter_compensation")
+thread_feed_apart = LazyStep("postproc.rs274.ngc_lathe_writer:feed_apart")
+subprograms_as_subs = LazyStep(f"{__name__}.subprograms:subprograms_as_subs")
 
 
 class Grblhal(GrblFamily):

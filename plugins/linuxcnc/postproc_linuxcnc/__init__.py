@@ -23,7 +23,8 @@ from postproc.lowering.structured_jumps import nest_forward_jumps
 from postproc.errors import Diagnostics
 from postproc.hookspecs import hookimpl
 from postproc.output.line_format import LineRule
-from postproc.lowering.lower import BlockStep, Lowering, LoweringStep
+from postproc.lowering.lazy_step import LazyStep
+from postproc.lowering.lower import Lowering
 from postproc.setup.machine_setup import MachineSetup
 from postproc.context import Context
 from postproc.rs274.cycle_words import rs274_cycle_words
@@ -42,35 +43,11 @@ NATIVE = frozenset({
 })
 
 
-class _ThreadFeedApart(LoweringStep):
-    """``lathe_writer.feed_apart``, imported when a translation to LinuxCNC first runs."""
-
-    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
-        from .lathe_writer import feed_apart as step
-        return step.start(ctx, target)
+_thread_feed_apart = LazyStep(f"{__name__}.lathe_writer:feed_apart")
 
 
-_thread_feed_apart = _ThreadFeedApart()
-
-
-class _SubprogramLayout(LoweringStep):
-    """``layout.subprograms_after_callers``, imported when a translation to LinuxCNC first runs."""
-
-    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
-        from .layout import subprograms_after_callers
-        return subprograms_after_callers.start(ctx, target)
-
-
-class _ExactStopForOneBlock(LoweringStep):
-    """``exact_stop.exact_stop_for_one_block``, imported when a translation to LinuxCNC first runs."""
-
-    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
-        from .exact_stop import exact_stop_for_one_block
-        return exact_stop_for_one_block.start(ctx, target)
-
-
-_subprogram_layout = _SubprogramLayout()
-_exact_stop_for_one_block = _ExactStopForOneBlock()
+_subprogram_layout = LazyStep(f"{__name__}.layout:subprograms_after_callers")
+_exact_stop_for_one_block = LazyStep(f"{__name__}.exact_stop:exact_stop_for_one_block")
 
 
 class Linuxcnc(Dialect):
